@@ -1,0 +1,1 @@
+//! c-backend (to be written).

@@ -1,0 +1,81 @@
+//! Diagnostics shared by every ladderc stage.
+//!
+//! Input: spans into files registered in a [`SourceMap`], stable [`Code`]s (one explanation file each under
+//! `explanations/`), messages and hints produced by the stages.
+//! Output: three renderings of a [`Diagnostic`] list: human (source excerpt with labels and a hint), short
+//! (`file:line:col: error[CODE]: message`, one line, for IDE problem matchers) and JSON lines.
+//! Invariants: a span always refers to a file of the source map and lies on UTF-8 boundaries of its text;
+//! line and column are 1-based, columns count characters (not bytes).
+
+mod codes;
+mod diagnostic;
+mod render;
+mod source;
+mod span;
+
+pub use codes::{all as all_codes, explain, lookup, Code, CodeInfo};
+pub use diagnostic::{Diagnostic, Label, Severity, XmlContext};
+pub use render::{render, render_human, render_json_line, render_short, MessageFormat};
+pub use source::{SourceFile, SourceMap};
+pub use span::{FileId, Span};
+
+/// All codes as constants (`diagnostics::code::E0001`), generated from `explanations/`.
+pub mod code {
+    pub use crate::codes::generated::*;
+}
+
+/// A sink that stages push diagnostics into; keeps the count of errors so a stage can stop before codegen.
+#[derive(Debug, Default, Clone)]
+pub struct Diagnostics {
+    list: Vec<Diagnostic>,
+}
+
+impl Diagnostics {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    pub fn push(&mut self, d: Diagnostic) {
+        self.list.push(d);
+    }
+    pub fn extend(&mut self, ds: impl IntoIterator<Item = Diagnostic>) {
+        self.list.extend(ds);
+    }
+    pub fn has_errors(&self) -> bool {
+        self.list.iter().any(|d| d.severity == Severity::Error)
+    }
+    pub fn error_count(&self) -> usize {
+        self.list
+            .iter()
+            .filter(|d| d.severity == Severity::Error)
+            .count()
+    }
+    pub fn iter(&self) -> std::slice::Iter<'_, Diagnostic> {
+        self.list.iter()
+    }
+    pub fn len(&self) -> usize {
+        self.list.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.list.is_empty()
+    }
+    /// Sorted by file, then position, then code: stable output for IDEs and snapshots.
+    pub fn into_sorted(mut self) -> Vec<Diagnostic> {
+        self.list.sort_by(|a, b| {
+            let ka = a.span.map(|s| (s.file.0, s.start, s.end));
+            let kb = b.span.map(|s| (s.file.0, s.start, s.end));
+            ka.cmp(&kb).then_with(|| a.code.0.cmp(b.code.0))
+        });
+        self.list
+    }
+    pub fn into_vec(self) -> Vec<Diagnostic> {
+        self.list
+    }
+}
+
+impl IntoIterator for Diagnostics {
+    type Item = Diagnostic;
+    type IntoIter = std::vec::IntoIter<Diagnostic>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.list.into_iter()
+    }
+}

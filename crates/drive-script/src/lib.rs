@@ -1,0 +1,1 @@
+//! drive-script (to be written).

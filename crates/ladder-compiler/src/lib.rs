@@ -1,0 +1,1 @@
+//! ladder-compiler (to be written).

@@ -1,0 +1,1 @@
+//! motion-lib (to be written).

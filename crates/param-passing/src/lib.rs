@@ -1,0 +1,1 @@
+//! param-passing (to be written).

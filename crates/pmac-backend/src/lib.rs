@@ -1,0 +1,1 @@
+//! pmac-backend (to be written).
