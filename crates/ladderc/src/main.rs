@@ -1,1 +1,9 @@
-fn main() {}
+//! The `ladderc` command line. Input: arguments; output: files, diagnostics on stderr, an exit code
+//! (0 success, 1 diagnostics errors, 2 usage or I/O errors). All work is done by the library crates.
+
+mod cli;
+mod output;
+
+fn main() {
+    std::process::exit(cli::main());
+}
