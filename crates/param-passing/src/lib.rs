@@ -1,1 +1,15 @@
-//! param-passing (to be written).
+//! Parameter passing for PLCopen blocks (paper A): every call of a PLCopen block, from IL or from a ladder
+//! block, is lowered by one of two strategies.
+//!
+//! - IL-instruction method: input transfer into the TM area by IL, one `FUNC Name()`, output transfer back;
+//!   the C function is a complete static-library function that reads and writes only the TM area.
+//! - Parameter-template method: one `FUNC Name()`; its C function is synthesised from an XML template
+//!   (generated head + library body + generated feedback tail).
+//!
+//! Stages here: `xml` (element tree with spans) -> `template` (schema, validation) -> `tm` (slot layout).
+
+pub mod template;
+pub mod tm;
+mod xml;
+
+pub use template::{Direction, Param, Template, TypeClass};

@@ -1,0 +1,326 @@
+//! The parameter templates: one XML file per PLCopen block (schema in `templates/README.md`).
+//!
+//! Input: a template file's text. Output: a validated [`Template`] or diagnostics (E40xx) that point into the
+//! template file. Invariants of a returned template: parameter names and abbreviations are unique
+//! (case-insensitively for names), abbreviations are C identifiers that are not C keywords, every class
+//! agrees with its IEC type, and body/feedback texts keep their byte offsets in the file.
+
+use crate::xml::{self, Element};
+use diagnostics::{code, Diagnostic, Diagnostics, FileId, Span};
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Direction {
+    Input,
+    Output,
+    InOut,
+}
+
+/// Paper A's parameter classes, refined by size: they fix the TM slot size and the transfer instructions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TypeClass {
+    Bool,
+    Byte,
+    Word,
+    Dword,
+    Real,
+    Lreal,
+    /// Passed as a base address (an axis or group reference: its index in the motion engine).
+    Struct,
+}
+
+impl TypeClass {
+    /// Bytes a parameter of this class takes in the TM area.
+    pub fn tm_bytes(self) -> u32 {
+        match self {
+            TypeClass::Bool | TypeClass::Byte => 1,
+            TypeClass::Word => 2,
+            TypeClass::Dword | TypeClass::Real | TypeClass::Struct => 4,
+            TypeClass::Lreal => 8,
+        }
+    }
+    fn parse(s: &str) -> Option<Self> {
+        Some(match s {
+            "bool" => TypeClass::Bool,
+            "byte" => TypeClass::Byte,
+            "word" => TypeClass::Word,
+            "dword" => TypeClass::Dword,
+            "real" => TypeClass::Real,
+            "lreal" => TypeClass::Lreal,
+            "struct" => TypeClass::Struct,
+            _ => return None,
+        })
+    }
+}
+
+/// The IEC types a class admits, with the C type a head local gets.
+pub fn c_type_of(iec_type: &str, class: TypeClass) -> Option<&'static str> {
+    let t = iec_type.to_ascii_uppercase();
+    let c = match (class, t.as_str()) {
+        (TypeClass::Bool, "BOOL") => "uint8_t",
+        (TypeClass::Byte, "BYTE" | "USINT") => "uint8_t",
+        (TypeClass::Byte, "SINT") => "int8_t",
+        (TypeClass::Byte, "MC_BUFFER_MODE" | "MC_DIRECTION" | "MC_TRANSITION_MODE" | "MC_CIRC_MODE") => "uint8_t",
+        (TypeClass::Byte, "MC_CIRC_PATHCHOICE" | "MC_COORD_SYSTEM" | "MC_EXECUTION_MODE" | "MC_START_MODE") => {
+            "uint8_t"
+        }
+        (TypeClass::Word, "WORD" | "UINT") => "uint16_t",
+        (TypeClass::Word, "INT") => "int16_t",
+        (TypeClass::Dword, "DWORD" | "UDINT") => "uint32_t",
+        (TypeClass::Dword, "DINT") => "int32_t",
+        (TypeClass::Real, "REAL") => "float",
+        (TypeClass::Lreal, "LREAL") => "double",
+        (TypeClass::Struct, "AXIS_REF" | "AXES_GROUP_REF" | "MC_CAM_REF" | "MC_CAM_ID") => "uint32_t",
+        _ => return None,
+    };
+    Some(c)
+}
+
+#[derive(Debug, Clone)]
+pub struct Param {
+    pub name: String,
+    pub abbr: String,
+    pub direction: Direction,
+    pub class: TypeClass,
+    pub iec_type: String,
+    pub required: bool,
+    /// Default value as an IEC literal text (`FALSE`, `0.0`, `0`), used when an optional input is not bound.
+    pub default: Option<String>,
+    pub span: Span,
+}
+
+impl Param {
+    pub fn c_type(&self) -> &'static str {
+        c_type_of(&self.iec_type, self.class).unwrap_or("uint8_t")
+    }
+}
+
+/// A local the body declares through the template (`<local name="cmd" ctype="double"/>`).
+#[derive(Debug, Clone)]
+pub struct Local {
+    pub name: String,
+    pub c_type: String,
+    pub span: Span,
+}
+
+/// C text from the template with the file offset of its first byte (for mapping errors back).
+#[derive(Debug, Clone)]
+pub struct CText {
+    pub text: String,
+    pub span: Span,
+    /// `span.start + i` is the file offset of `text[i]` (a CDATA section).
+    pub verbatim: bool,
+}
+
+#[derive(Debug, Clone)]
+pub struct Template {
+    /// Block type name, as in IEC (`MC_MoveAbsolute`).
+    pub block: String,
+    /// The number the generated head assigns to `FuncNum` (paper A).
+    pub func_num: u32,
+    pub params: Vec<Param>,
+    pub locals: Vec<Local>,
+    pub body: CText,
+    pub file: FileId,
+    pub span: Span,
+}
+
+impl Template {
+    pub fn param(&self, name: &str) -> Option<&Param> {
+        self.params.iter().find(|p| p.name.eq_ignore_ascii_case(name))
+    }
+    pub fn inputs(&self) -> impl Iterator<Item = &Param> {
+        self.params.iter().filter(|p| p.direction != Direction::Output)
+    }
+    pub fn outputs(&self) -> impl Iterator<Item = &Param> {
+        self.params.iter().filter(|p| p.direction == Direction::Output)
+    }
+}
+
+pub const C_KEYWORDS: &[&str] = &[
+    "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum", "extern",
+    "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return", "short", "signed",
+    "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void", "volatile", "while", "_Bool",
+];
+
+pub fn is_c_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+fn need_attr<'a>(el: &'a Element, name: &str, diags: &mut Diagnostics) -> Option<&'a xml::Attr> {
+    let a = el.attr(name);
+    if a.is_none() {
+        diags.push(
+            Diagnostic::error(code::E4003, format!("<{}> lacks the attribute `{name}`", el.name))
+                .at(el.span)
+                .with_hint(format!("add {name}=\"...\" (see templates/README.md for the schema)")),
+        );
+    }
+    a
+}
+
+fn bad_value(attr: &xml::Attr, expected: &str) -> Diagnostic {
+    Diagnostic::error(code::E4004, format!("`{}` is not a valid value for `{}`", attr.value, attr.name))
+        .at(attr.span)
+        .with_hint(format!("use {expected}"))
+}
+
+/// Loads and validates one template. Diagnostics go to `diags`; `None` when the file is unusable.
+pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Template> {
+    let root = match xml::parse(file, text) {
+        Ok(r) => r,
+        Err(d) => {
+            diags.push(d);
+            return None;
+        }
+    };
+    if root.name != "blockTemplate" {
+        diags.push(
+            Diagnostic::error(code::E4002, format!("the root element is <{}>, not <blockTemplate>", root.name))
+                .at(root.span)
+                .with_hint("a template file holds one <blockTemplate name=\"MC_...\" funcNum=\"N\"> element"),
+        );
+        return None;
+    }
+    let errors_before = diags.error_count();
+    let block = need_attr(&root, "name", diags).map(|a| a.value.clone());
+    let func_num = need_attr(&root, "funcNum", diags).and_then(|a| match a.value.parse::<u32>() {
+        Ok(n) => Some(n),
+        Err(_) => {
+            diags.push(bad_value(a, "a non-negative integer"));
+            None
+        }
+    });
+    let mut params: Vec<Param> = Vec::new();
+    if let Some(ps) = root.child("parameters") {
+        for p in ps.children_named("param") {
+            if let Some(param) = load_param(p, diags) {
+                if let Some(prev) = params.iter().find(|q| q.name.eq_ignore_ascii_case(&param.name)) {
+                    diags.push(
+                        Diagnostic::error(code::E4005, format!("parameter `{}` is declared twice", param.name))
+                            .at(param.span)
+                            .with_label(prev.span, "first declared here")
+                            .with_hint("remove one of the declarations"),
+                    );
+                } else if let Some(prev) = params.iter().find(|q| q.abbr == param.abbr) {
+                    diags.push(
+                        Diagnostic::error(code::E4005, format!("abbreviation `{}` is used twice", param.abbr))
+                            .at(param.span)
+                            .with_label(prev.span, "first used here")
+                            .with_hint("each parameter needs its own abbreviation: it names the C local"),
+                    );
+                } else {
+                    params.push(param);
+                }
+            }
+        }
+    } else {
+        diags.push(
+            Diagnostic::error(code::E4003, "<blockTemplate> has no <parameters> element")
+                .at(root.span)
+                .with_hint("list the block's parameters in <parameters><param .../></parameters>"),
+        );
+    }
+    let mut locals = Vec::new();
+    for l in root.children_named("local") {
+        let (Some(n), Some(t)) = (need_attr(l, "name", diags), need_attr(l, "ctype", diags)) else { continue };
+        if !is_c_identifier(&n.value) || C_KEYWORDS.contains(&n.value.as_str()) {
+            diags.push(bad_value(n, "a C identifier that is not a C keyword"));
+            continue;
+        }
+        locals.push(Local { name: n.value.clone(), c_type: t.value.clone(), span: l.span });
+    }
+    let body = match root.child("body") {
+        Some(b) => ctext(b),
+        None => {
+            diags.push(
+                Diagnostic::error(code::E4003, "<blockTemplate> has no <body> element")
+                    .at(root.span)
+                    .with_hint("put the library body (C that uses the abbreviations) in <body><![CDATA[ ... ]]></body>"),
+            );
+            None
+        }
+    };
+    if diags.error_count() > errors_before {
+        return None;
+    }
+    Some(Template { block: block?, func_num: func_num?, params, locals, body: body?, file, span: root.span })
+}
+
+fn ctext(el: &Element) -> Option<CText> {
+    match el.significant_segment() {
+        Some(seg) => Some(CText {
+            text: seg.text.clone(),
+            span: Span::new(el.span.file, seg.offset, seg.offset + seg.text.len()),
+            verbatim: seg.verbatim,
+        }),
+        None => Some(CText { text: el.text(), span: el.span, verbatim: false }),
+    }
+}
+
+fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
+    let name = need_attr(p, "name", diags);
+    let abbr = need_attr(p, "abbr", diags);
+    let dir = need_attr(p, "direction", diags);
+    let class = need_attr(p, "class", diags);
+    let ty = need_attr(p, "type", diags);
+    let (name, abbr, dir, class, ty) = (name?, abbr?, dir?, class?, ty?);
+    let direction = match dir.value.as_str() {
+        "input" => Direction::Input,
+        "output" => Direction::Output,
+        "inout" => Direction::InOut,
+        _ => {
+            diags.push(bad_value(dir, "input, output or inout"));
+            return None;
+        }
+    };
+    let Some(class_v) = TypeClass::parse(&class.value) else {
+        diags.push(bad_value(class, "bool, byte, word, dword, real, lreal or struct"));
+        return None;
+    };
+    if !is_c_identifier(&abbr.value) || C_KEYWORDS.contains(&abbr.value.as_str()) {
+        diags.push(bad_value(abbr, "a C identifier that is not a C keyword (it names the C local)"));
+        return None;
+    }
+    if c_type_of(&ty.value, class_v).is_none() {
+        diags.push(
+            Diagnostic::error(
+                code::E4006,
+                format!("type `{}` does not belong to class `{}`", ty.value, class.value),
+            )
+            .at(ty.span)
+            .with_label(class.span, "class given here")
+            .with_hint("bool: BOOL; byte: BYTE/USINT/SINT/MC_* enums; word: WORD/INT/UINT; dword: DWORD/DINT/UDINT; real: REAL; lreal: LREAL; struct: AXIS_REF/AXES_GROUP_REF"),
+        );
+        return None;
+    }
+    let required = match p.attr("required").map(|a| a.value.as_str()) {
+        None | Some("false") => false,
+        Some("true") => true,
+        Some(_) => {
+            diags.push(bad_value(p.attr("required").unwrap(), "true or false"));
+            return None;
+        }
+    };
+    let default = p.attr("default").map(|a| a.value.clone());
+    if direction == Direction::Output && (required || default.is_some()) {
+        let a = p.attr("required").or(p.attr("default")).unwrap();
+        diags.push(
+            Diagnostic::error(code::E4004, format!("output `{}` cannot be required or have a default", name.value))
+                .at(a.span)
+                .with_hint("outputs are always optional variables; remove the attribute"),
+        );
+        return None;
+    }
+    Some(Param {
+        name: name.value.clone(),
+        abbr: abbr.value.clone(),
+        direction,
+        class: class_v,
+        iec_type: ty.value.clone(),
+        required,
+        default,
+        span: p.span,
+    })
+}

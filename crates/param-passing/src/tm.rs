@@ -1,0 +1,47 @@
+//! The TM (temporary) area layout of the IL-instruction method.
+//!
+//! Input: a template's parameters and the TM size of the target profile. Output: one slot per parameter,
+//! contiguous, in declaration order, sized by class (no padding: the area is byte-addressed and moves into it
+//! are byte-wise). Invariant: the slots tile `0..total` exactly; a block that does not fit is an error naming the
+//! block, the bytes it needs and the bytes available.
+
+use crate::template::{Param, Template};
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Slot {
+    /// Parameter name as declared in the template.
+    pub param: String,
+    pub offset: u32,
+    pub bytes: u32,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TmLayout {
+    pub slots: Vec<Slot>,
+    pub total: u32,
+}
+
+impl TmLayout {
+    pub fn slot(&self, param: &str) -> Option<&Slot> {
+        self.slots.iter().find(|s| s.param.eq_ignore_ascii_case(param))
+    }
+}
+
+/// Lays out the parameters of `template`. `Err((needed, available))` when the block does not fit.
+pub fn layout(template: &Template, tm_size: u32) -> Result<TmLayout, (u32, u32)> {
+    layout_params(&template.params, tm_size)
+}
+
+pub fn layout_params(params: &[Param], tm_size: u32) -> Result<TmLayout, (u32, u32)> {
+    let mut offset = 0u32;
+    let mut slots = Vec::with_capacity(params.len());
+    for p in params {
+        let bytes = p.class.tm_bytes();
+        slots.push(Slot { param: p.name.clone(), offset, bytes });
+        offset += bytes;
+    }
+    if offset > tm_size {
+        return Err((offset, tm_size));
+    }
+    Ok(TmLayout { slots, total: offset })
+}
