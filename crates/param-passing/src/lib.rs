@@ -8,6 +8,7 @@
 //!
 //! Stages here: `xml` (element tree with spans) -> `template` (schema, validation) -> `tm` (slot layout).
 
+pub mod cbody;
 pub mod template;
 pub mod tm;
 mod xml;

@@ -59,17 +59,23 @@ pub fn c_type_of(iec_type: &str, class: TypeClass) -> Option<&'static str> {
         (TypeClass::Bool, "BOOL") => "uint8_t",
         (TypeClass::Byte, "BYTE" | "USINT") => "uint8_t",
         (TypeClass::Byte, "SINT") => "int8_t",
-        (TypeClass::Byte, "MC_BUFFER_MODE" | "MC_DIRECTION" | "MC_TRANSITION_MODE" | "MC_CIRC_MODE") => "uint8_t",
-        (TypeClass::Byte, "MC_CIRC_PATHCHOICE" | "MC_COORD_SYSTEM" | "MC_EXECUTION_MODE" | "MC_START_MODE") => {
-            "uint8_t"
-        }
+        (
+            TypeClass::Byte,
+            "MC_BUFFER_MODE" | "MC_DIRECTION" | "MC_TRANSITION_MODE" | "MC_CIRC_MODE",
+        ) => "uint8_t",
+        (
+            TypeClass::Byte,
+            "MC_CIRC_PATHCHOICE" | "MC_COORD_SYSTEM" | "MC_EXECUTION_MODE" | "MC_START_MODE",
+        ) => "uint8_t",
         (TypeClass::Word, "WORD" | "UINT") => "uint16_t",
         (TypeClass::Word, "INT") => "int16_t",
         (TypeClass::Dword, "DWORD" | "UDINT") => "uint32_t",
         (TypeClass::Dword, "DINT") => "int32_t",
         (TypeClass::Real, "REAL") => "float",
         (TypeClass::Lreal, "LREAL") => "double",
-        (TypeClass::Struct, "AXIS_REF" | "AXES_GROUP_REF" | "MC_CAM_REF" | "MC_CAM_ID") => "uint32_t",
+        (TypeClass::Struct, "AXIS_REF" | "AXES_GROUP_REF" | "MC_CAM_REF" | "MC_CAM_ID") => {
+            "uint32_t"
+        }
         _ => return None,
     };
     Some(c)
@@ -126,20 +132,27 @@ pub struct Template {
 
 impl Template {
     pub fn param(&self, name: &str) -> Option<&Param> {
-        self.params.iter().find(|p| p.name.eq_ignore_ascii_case(name))
+        self.params
+            .iter()
+            .find(|p| p.name.eq_ignore_ascii_case(name))
     }
     pub fn inputs(&self) -> impl Iterator<Item = &Param> {
-        self.params.iter().filter(|p| p.direction != Direction::Output)
+        self.params
+            .iter()
+            .filter(|p| p.direction != Direction::Output)
     }
     pub fn outputs(&self) -> impl Iterator<Item = &Param> {
-        self.params.iter().filter(|p| p.direction == Direction::Output)
+        self.params
+            .iter()
+            .filter(|p| p.direction == Direction::Output)
     }
 }
 
 pub const C_KEYWORDS: &[&str] = &[
-    "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else", "enum", "extern",
-    "float", "for", "goto", "if", "inline", "int", "long", "register", "restrict", "return", "short", "signed",
-    "sizeof", "static", "struct", "switch", "typedef", "union", "unsigned", "void", "volatile", "while", "_Bool",
+    "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else",
+    "enum", "extern", "float", "for", "goto", "if", "inline", "int", "long", "register",
+    "restrict", "return", "short", "signed", "sizeof", "static", "struct", "switch", "typedef",
+    "union", "unsigned", "void", "volatile", "while", "_Bool",
 ];
 
 pub fn is_c_identifier(s: &str) -> bool {
@@ -152,18 +165,26 @@ fn need_attr<'a>(el: &'a Element, name: &str, diags: &mut Diagnostics) -> Option
     let a = el.attr(name);
     if a.is_none() {
         diags.push(
-            Diagnostic::error(code::E4003, format!("<{}> lacks the attribute `{name}`", el.name))
-                .at(el.span)
-                .with_hint(format!("add {name}=\"...\" (see templates/README.md for the schema)")),
+            Diagnostic::error(
+                code::E4003,
+                format!("<{}> lacks the attribute `{name}`", el.name),
+            )
+            .at(el.span)
+            .with_hint(format!(
+                "add {name}=\"...\" (see templates/README.md for the schema)"
+            )),
         );
     }
     a
 }
 
 fn bad_value(attr: &xml::Attr, expected: &str) -> Diagnostic {
-    Diagnostic::error(code::E4004, format!("`{}` is not a valid value for `{}`", attr.value, attr.name))
-        .at(attr.span)
-        .with_hint(format!("use {expected}"))
+    Diagnostic::error(
+        code::E4004,
+        format!("`{}` is not a valid value for `{}`", attr.value, attr.name),
+    )
+    .at(attr.span)
+    .with_hint(format!("use {expected}"))
 }
 
 /// Loads and validates one template. Diagnostics go to `diags`; `None` when the file is unusable.
@@ -177,9 +198,14 @@ pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Templat
     };
     if root.name != "blockTemplate" {
         diags.push(
-            Diagnostic::error(code::E4002, format!("the root element is <{}>, not <blockTemplate>", root.name))
-                .at(root.span)
-                .with_hint("a template file holds one <blockTemplate name=\"MC_...\" funcNum=\"N\"> element"),
+            Diagnostic::error(
+                code::E4002,
+                format!("the root element is <{}>, not <blockTemplate>", root.name),
+            )
+            .at(root.span)
+            .with_hint(
+                "a template file holds one <blockTemplate name=\"MC_...\" funcNum=\"N\"> element",
+            ),
         );
         return None;
     }
@@ -196,19 +222,30 @@ pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Templat
     if let Some(ps) = root.child("parameters") {
         for p in ps.children_named("param") {
             if let Some(param) = load_param(p, diags) {
-                if let Some(prev) = params.iter().find(|q| q.name.eq_ignore_ascii_case(&param.name)) {
+                if let Some(prev) = params
+                    .iter()
+                    .find(|q| q.name.eq_ignore_ascii_case(&param.name))
+                {
                     diags.push(
-                        Diagnostic::error(code::E4005, format!("parameter `{}` is declared twice", param.name))
-                            .at(param.span)
-                            .with_label(prev.span, "first declared here")
-                            .with_hint("remove one of the declarations"),
+                        Diagnostic::error(
+                            code::E4005,
+                            format!("parameter `{}` is declared twice", param.name),
+                        )
+                        .at(param.span)
+                        .with_label(prev.span, "first declared here")
+                        .with_hint("remove one of the declarations"),
                     );
                 } else if let Some(prev) = params.iter().find(|q| q.abbr == param.abbr) {
                     diags.push(
-                        Diagnostic::error(code::E4005, format!("abbreviation `{}` is used twice", param.abbr))
-                            .at(param.span)
-                            .with_label(prev.span, "first used here")
-                            .with_hint("each parameter needs its own abbreviation: it names the C local"),
+                        Diagnostic::error(
+                            code::E4005,
+                            format!("abbreviation `{}` is used twice", param.abbr),
+                        )
+                        .at(param.span)
+                        .with_label(prev.span, "first used here")
+                        .with_hint(
+                            "each parameter needs its own abbreviation: it names the C local",
+                        ),
                     );
                 } else {
                     params.push(param);
@@ -224,12 +261,18 @@ pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Templat
     }
     let mut locals = Vec::new();
     for l in root.children_named("local") {
-        let (Some(n), Some(t)) = (need_attr(l, "name", diags), need_attr(l, "ctype", diags)) else { continue };
+        let (Some(n), Some(t)) = (need_attr(l, "name", diags), need_attr(l, "ctype", diags)) else {
+            continue;
+        };
         if !is_c_identifier(&n.value) || C_KEYWORDS.contains(&n.value.as_str()) {
             diags.push(bad_value(n, "a C identifier that is not a C keyword"));
             continue;
         }
-        locals.push(Local { name: n.value.clone(), c_type: t.value.clone(), span: l.span });
+        locals.push(Local {
+            name: n.value.clone(),
+            c_type: t.value.clone(),
+            span: l.span,
+        });
     }
     let body = match root.child("body") {
         Some(b) => ctext(b),
@@ -245,7 +288,15 @@ pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Templat
     if diags.error_count() > errors_before {
         return None;
     }
-    Some(Template { block: block?, func_num: func_num?, params, locals, body: body?, file, span: root.span })
+    Some(Template {
+        block: block?,
+        func_num: func_num?,
+        params,
+        locals,
+        body: body?,
+        file,
+        span: root.span,
+    })
 }
 
 fn ctext(el: &Element) -> Option<CText> {
@@ -255,7 +306,11 @@ fn ctext(el: &Element) -> Option<CText> {
             span: Span::new(el.span.file, seg.offset, seg.offset + seg.text.len()),
             verbatim: seg.verbatim,
         }),
-        None => Some(CText { text: el.text(), span: el.span, verbatim: false }),
+        None => Some(CText {
+            text: el.text(),
+            span: el.span,
+            verbatim: false,
+        }),
     }
 }
 
@@ -276,11 +331,17 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
         }
     };
     let Some(class_v) = TypeClass::parse(&class.value) else {
-        diags.push(bad_value(class, "bool, byte, word, dword, real, lreal or struct"));
+        diags.push(bad_value(
+            class,
+            "bool, byte, word, dword, real, lreal or struct",
+        ));
         return None;
     };
     if !is_c_identifier(&abbr.value) || C_KEYWORDS.contains(&abbr.value.as_str()) {
-        diags.push(bad_value(abbr, "a C identifier that is not a C keyword (it names the C local)"));
+        diags.push(bad_value(
+            abbr,
+            "a C identifier that is not a C keyword (it names the C local)",
+        ));
         return None;
     }
     if c_type_of(&ty.value, class_v).is_none() {
@@ -307,9 +368,15 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
     if direction == Direction::Output && (required || default.is_some()) {
         let a = p.attr("required").or(p.attr("default")).unwrap();
         diags.push(
-            Diagnostic::error(code::E4004, format!("output `{}` cannot be required or have a default", name.value))
-                .at(a.span)
-                .with_hint("outputs are always optional variables; remove the attribute"),
+            Diagnostic::error(
+                code::E4004,
+                format!(
+                    "output `{}` cannot be required or have a default",
+                    name.value
+                ),
+            )
+            .at(a.span)
+            .with_hint("outputs are always optional variables; remove the attribute"),
         );
         return None;
     }

@@ -23,7 +23,9 @@ pub struct TmLayout {
 
 impl TmLayout {
     pub fn slot(&self, param: &str) -> Option<&Slot> {
-        self.slots.iter().find(|s| s.param.eq_ignore_ascii_case(param))
+        self.slots
+            .iter()
+            .find(|s| s.param.eq_ignore_ascii_case(param))
     }
 }
 
@@ -37,11 +39,18 @@ pub fn layout_params(params: &[Param], tm_size: u32) -> Result<TmLayout, (u32, u
     let mut slots = Vec::with_capacity(params.len());
     for p in params {
         let bytes = p.class.tm_bytes();
-        slots.push(Slot { param: p.name.clone(), offset, bytes });
+        slots.push(Slot {
+            param: p.name.clone(),
+            offset,
+            bytes,
+        });
         offset += bytes;
     }
     if offset > tm_size {
         return Err((offset, tm_size));
     }
-    Ok(TmLayout { slots, total: offset })
+    Ok(TmLayout {
+        slots,
+        total: offset,
+    })
 }

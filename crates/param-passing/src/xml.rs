@@ -67,7 +67,9 @@ fn local_name(raw: &[u8]) -> String {
 fn malformed(file: FileId, at: usize, len: usize, msg: impl std::fmt::Display) -> Diagnostic {
     Diagnostic::error(code::E4001, format!("malformed XML: {msg}"))
         .at(Span::new(file, at, at + len))
-        .with_hint("fix the XML syntax of the template file (elements must be closed and properly nested)")
+        .with_hint(
+            "fix the XML syntax of the template file (elements must be closed and properly nested)",
+        )
 }
 
 /// Parses `text` into an element tree.
@@ -120,7 +122,9 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Diagnostic> {
                 }
             }
             Event::End(_) => {
-                let mut el = stack.pop().ok_or_else(|| malformed(file, before, after - before, "unexpected end tag"))?;
+                let mut el = stack
+                    .pop()
+                    .ok_or_else(|| malformed(file, before, after - before, "unexpected end tag"))?;
                 el.span.end = after as u32;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(el),
@@ -129,14 +133,24 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Diagnostic> {
             }
             Event::Text(t) => {
                 if let Some(el) = stack.last_mut() {
-                    let s = t.decode().map_err(|err| malformed(file, before, after - before, err))?;
-                    el.segments.push(TextSegment { text: s.into_owned(), offset: before, verbatim: true });
+                    let s = t
+                        .decode()
+                        .map_err(|err| malformed(file, before, after - before, err))?;
+                    el.segments.push(TextSegment {
+                        text: s.into_owned(),
+                        offset: before,
+                        verbatim: true,
+                    });
                 }
             }
             Event::CData(t) => {
                 if let Some(el) = stack.last_mut() {
                     let s = String::from_utf8_lossy(t.as_ref()).into_owned();
-                    el.segments.push(TextSegment { text: s, offset: before + "<![CDATA[".len(), verbatim: true });
+                    el.segments.push(TextSegment {
+                        text: s,
+                        offset: before + "<![CDATA[".len(),
+                        verbatim: true,
+                    });
                 }
             }
             Event::GeneralRef(r) => {
@@ -156,11 +170,29 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Diagnostic> {
                             };
                             num.and_then(char::from_u32)
                                 .map(String::from)
-                                .ok_or_else(|| malformed(file, before, after - before, "bad character reference"))?
+                                .ok_or_else(|| {
+                                    malformed(
+                                        file,
+                                        before,
+                                        after - before,
+                                        "bad character reference",
+                                    )
+                                })?
                         }
-                        _ => return Err(malformed(file, before, after - before, format!("unknown entity `&{name};`"))),
+                        _ => {
+                            return Err(malformed(
+                                file,
+                                before,
+                                after - before,
+                                format!("unknown entity `&{name};`"),
+                            ))
+                        }
                     };
-                    el.segments.push(TextSegment { text: ch, offset: before, verbatim: false });
+                    el.segments.push(TextSegment {
+                        text: ch,
+                        offset: before,
+                        verbatim: false,
+                    });
                 }
             }
             Event::Eof => break,
@@ -168,7 +200,12 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Diagnostic> {
         }
     }
     if let Some(open) = stack.last() {
-        return Err(malformed(file, open.span.start as usize, open.span.len(), format!("element <{}> is not closed", open.name)));
+        return Err(malformed(
+            file,
+            open.span.start as usize,
+            open.span.len(),
+            format!("element <{}> is not closed", open.name),
+        ));
     }
     root.ok_or_else(|| malformed(file, 0, 0, "the file has no root element"))
 }

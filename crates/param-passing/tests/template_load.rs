@@ -41,7 +41,11 @@ fn a_good_template_loads_with_its_parameters_in_order() {
     let t = t.unwrap();
     assert_eq!(t.block, "MC_Demo");
     assert_eq!(t.func_num, 7);
-    let names: Vec<_> = t.params.iter().map(|p| (p.abbr.as_str(), p.direction, p.class)).collect();
+    let names: Vec<_> = t
+        .params
+        .iter()
+        .map(|p| (p.abbr.as_str(), p.direction, p.class))
+        .collect();
     assert_eq!(
         names,
         vec![
@@ -67,10 +71,21 @@ fn tm_slots_are_contiguous_and_sized_by_class() {
     let (_, t, _) = load(GOOD);
     let t = t.unwrap();
     let l = tm::layout(&t, 64).unwrap();
-    let slots: Vec<_> = l.slots.iter().map(|s| (s.param.as_str(), s.offset, s.bytes)).collect();
+    let slots: Vec<_> = l
+        .slots
+        .iter()
+        .map(|s| (s.param.as_str(), s.offset, s.bytes))
+        .collect();
     assert_eq!(
         slots,
-        vec![("Axis", 0, 4), ("Execute", 4, 1), ("Position", 5, 8), ("BufferMode", 13, 1), ("Done", 14, 1), ("ErrorID", 15, 2)]
+        vec![
+            ("Axis", 0, 4),
+            ("Execute", 4, 1),
+            ("Position", 5, 8),
+            ("BufferMode", 13, 1),
+            ("Done", 14, 1),
+            ("ErrorID", 15, 2)
+        ]
     );
     assert_eq!(l.total, 17);
     assert_eq!(tm::layout(&t, 16), Err((17, 16)));
@@ -78,7 +93,8 @@ fn tm_slots_are_contiguous_and_sized_by_class() {
 
 #[test]
 fn malformed_xml_points_at_the_problem() {
-    let (map, t, diags) = load("<blockTemplate name=\"X\" funcNum=\"1\">\n  <parameters>\n</blockTemplate>\n");
+    let (map, t, diags) =
+        load("<blockTemplate name=\"X\" funcNum=\"1\">\n  <parameters>\n</blockTemplate>\n");
     assert!(t.is_none());
     insta::assert_snapshot!(short(&map, diags));
 }
