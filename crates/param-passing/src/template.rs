@@ -192,7 +192,7 @@ pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Templat
     let root = match xml::parse(file, text) {
         Ok(r) => r,
         Err(d) => {
-            diags.push(d);
+            diags.push(*d);
             return None;
         }
     };

@@ -64,16 +64,16 @@ fn local_name(raw: &[u8]) -> String {
     }
 }
 
-fn malformed(file: FileId, at: usize, len: usize, msg: impl std::fmt::Display) -> Diagnostic {
-    Diagnostic::error(code::E4001, format!("malformed XML: {msg}"))
+fn malformed(file: FileId, at: usize, len: usize, msg: impl std::fmt::Display) -> Box<Diagnostic> {
+    Box::new(Diagnostic::error(code::E4001, format!("malformed XML: {msg}"))
         .at(Span::new(file, at, at + len))
         .with_hint(
             "fix the XML syntax of the template file (elements must be closed and properly nested)",
-        )
+        ))
 }
 
 /// Parses `text` into an element tree.
-pub fn parse(file: FileId, text: &str) -> Result<Element, Diagnostic> {
+pub fn parse(file: FileId, text: &str) -> Result<Element, Box<Diagnostic>> {
     let body = text.strip_prefix('\u{feff}').unwrap_or(text);
     let bom = text.len() - body.len();
     let mut reader = Reader::from_str(body);
