@@ -9,6 +9,9 @@
 //! Stages here: `xml` (element tree with spans) -> `template` (schema, validation) -> `tm` (slot layout).
 
 pub mod cbody;
+pub mod library;
+pub mod lower;
+pub mod prelude;
 pub mod template;
 pub mod tm;
 mod xml;

@@ -1,0 +1,72 @@
+//! The block library: the built-in templates (`templates/*.xml` of the repository, compiled in) plus a user
+//! directory (`--templates DIR`), whose files replace built-ins of the same block name.
+//!
+//! Input: template files. Output: a [`Library`] of validated templates, looked up case-insensitively by block
+//! name; every problem is a diagnostic in the template file. Invariant: block names are unique in a library.
+
+use crate::template::{self, Template};
+use diagnostics::{code, Diagnostic, Diagnostics, SourceMap};
+use std::path::Path;
+
+/// The built-in templates: (file name, text).
+pub const BUILTIN: &[(&str, &str)] = &[];
+
+#[derive(Debug, Default, Clone)]
+pub struct Library {
+    templates: Vec<Template>,
+}
+
+impl Library {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    /// Loads the built-in templates.
+    pub fn builtin(map: &mut SourceMap, diags: &mut Diagnostics) -> Self {
+        let mut lib = Library::new();
+        for (name, text) in BUILTIN {
+            lib.add_text(map, &format!("templates/{name}"), text, diags);
+        }
+        lib
+    }
+    /// Loads every `*.xml` of `dir` (sorted by name); they replace built-ins of the same block name.
+    pub fn add_dir(&mut self, dir: &Path, map: &mut SourceMap, diags: &mut Diagnostics) {
+        let entries = match std::fs::read_dir(dir) {
+            Ok(e) => e,
+            Err(e) => {
+                diags.push(
+                    Diagnostic::error(code::E9001, format!("cannot read the template directory {}: {e}", dir.display()))
+                        .with_hint("pass an existing directory of template files to --templates"),
+                );
+                return;
+            }
+        };
+        let mut paths: Vec<_> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")))
+            .collect();
+        paths.sort();
+        for p in paths {
+            match std::fs::read_to_string(&p) {
+                Ok(text) => self.add_text(map, &p.display().to_string(), &text, diags),
+                Err(e) => diags.push(
+                    Diagnostic::error(code::E9001, format!("cannot read {}: {e}", p.display()))
+                        .with_hint("template files must be readable UTF-8"),
+                ),
+            }
+        }
+    }
+    /// Adds one template file's text (replacing a template of the same block name).
+    pub fn add_text(&mut self, map: &mut SourceMap, name: &str, text: &str, diags: &mut Diagnostics) {
+        let file = map.add(name, text);
+        if let Some(t) = template::load(file, text, diags) {
+            self.templates.retain(|old| !old.block.eq_ignore_ascii_case(&t.block));
+            self.templates.push(t);
+        }
+    }
+    pub fn get(&self, block: &str) -> Option<&Template> {
+        self.templates.iter().find(|t| t.block.eq_ignore_ascii_case(block))
+    }
+    pub fn templates(&self) -> &[Template] {
+        &self.templates
+    }
+}

@@ -1,0 +1,635 @@
+//! Lowering of PLCopen block calls (paper A). Runs after the semantic check of the user's program (which
+//! typed every `CAL` against the block prelude) and before C generation.
+//!
+//! Input: compilation units whose POUs declare instances of template blocks and `CAL` them; the library;
+//! the TM window; a strategy. Output: the units with every such `CAL` replaced, the hidden TM views declared,
+//! the instance types turned into plain structs (see `prelude`), plus the C of the embedded functions and a
+//! per-block report. Invariants: with the IL method a call becomes input transfer + one `FUNC Name()` +
+//! output transfer; with the template method exactly one `FUNC Name_n()` (behind a `JMPC`/`JMPCN` around it
+//! for `CALC`/`CALCN`); nothing is generated for a call that failed the legality checks.
+
+use crate::library::Library;
+use crate::template::{Direction, Param, Template, TypeClass};
+use crate::tm::{self, TmLayout};
+use diagnostics::{code, Diagnostic, Diagnostics, Span};
+use il_frontend::ast::*;
+use std::collections::{BTreeMap, HashMap};
+
+/// How block calls are lowered.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Strategy {
+    /// Paper A method 1: TM transfers + a static-library function.
+    Il,
+    /// Paper A method 2: one FUNC; the function synthesised from the template.
+    Template,
+    /// Per block type: the IL method when the block fits the TM area and is called at
+    /// [`AUTO_IL_MIN_CALLS`] or more sites (one shared static function is then smaller than that many
+    /// synthesised ones); the template method otherwise.
+    Auto,
+}
+
+/// See [`Strategy::Auto`].
+pub const AUTO_IL_MIN_CALLS: usize = 3;
+
+/// Where the TM area lies in the %M area, and how %M addresses count.
+#[derive(Debug, Clone, Copy)]
+pub struct TmWindow {
+    /// Byte offset of the TM area in %M (must be a multiple of 8).
+    pub offset: u32,
+    pub bytes: u32,
+    /// `true`: `%MD5` is the sixth double word (bytes 20..24); `false`: `%MD5` starts at byte 5.
+    pub element_addressing: bool,
+}
+
+/// Name of the hidden instance field that holds the motion engine's handle of a block instance.
+pub const HANDLE_FIELD: &str = "EngineHandle";
+
+/// The chosen method for one block type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    Il,
+    Template,
+}
+
+/// One head local of a synthesised function: `c_type local = <value of source>;`.
+#[derive(Debug, Clone)]
+pub struct HeadLocal {
+    pub c_type: &'static str,
+    pub local: String,
+    pub class: TypeClass,
+    /// The operand the local is initialised from (a bound argument, or the instance's own field).
+    pub source: Operand,
+}
+
+/// One feedback assignment of a synthesised function's tail: `<target> = local;`.
+#[derive(Debug, Clone)]
+pub struct Feedback {
+    pub target: Operand,
+    pub local: String,
+    pub class: TypeClass,
+    /// `NOT Done => x`.
+    pub negated: bool,
+}
+
+/// A template-method function: head + library body + tail, to be rendered inside its POU's context (the
+/// head reads and the tail writes the POU's own variables).
+#[derive(Debug, Clone)]
+pub struct Synthesized {
+    pub name: String,
+    pub pou: String,
+    pub func_num: u32,
+    pub head: Vec<HeadLocal>,
+    pub locals: Vec<(String, String)>,
+    /// The library body with every abbreviation renamed to its head local.
+    pub body: String,
+    pub tail: Vec<Feedback>,
+    pub call_span: Span,
+}
+
+/// What one block type cost, for `--report`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct BlockReport {
+    pub block: String,
+    pub method: Method,
+    pub calls: usize,
+    /// TM bytes of the block's layout (IL method; 0 for the template method).
+    pub tm_bytes: u32,
+    /// IL instructions the calls of this block lowered to, in total.
+    pub il_instructions: usize,
+}
+
+#[derive(Debug, Default)]
+pub struct Lowered {
+    pub units: Vec<CompilationUnit>,
+    /// Static-library functions (IL method), by block name, with their TM layouts.
+    pub static_functions: BTreeMap<String, TmLayout>,
+    pub synthesized: Vec<Synthesized>,
+    pub reports: Vec<BlockReport>,
+}
+
+/// The name of a block type's TM view of one parameter (a hidden located variable).
+pub fn tm_view_name(block: &str, param: &str) -> String {
+    format!("TM__{block}__{param}")
+}
+
+/// The TM layout of a block for the IL method: the template's parameters plus the instance handle, ordered
+/// by slot size (largest first) so that every slot is aligned to its size while the area stays contiguous.
+pub fn il_layout(t: &Template, window: &TmWindow) -> Result<TmLayout, (u32, u32)> {
+    let mut params: Vec<Param> = t.params.clone();
+    params.push(handle_param(t.span));
+    params.sort_by_key(|p| std::cmp::Reverse(p.class.tm_bytes()));
+    tm::layout_params(&params, window.bytes)
+}
+
+fn handle_param(span: Span) -> Param {
+    Param {
+        name: HANDLE_FIELD.into(),
+        abbr: "Handle".into(),
+        direction: Direction::InOut,
+        class: TypeClass::Dword,
+        iec_type: "UDINT".into(),
+        required: false,
+        default: None,
+        span,
+    }
+}
+
+/// The IEC type of a TM slot of `p` (bool class: the 0/1 byte).
+fn slot_type(p: &Param) -> &'static str {
+    match (p.class, p.iec_type.to_ascii_uppercase().as_str()) {
+        (TypeClass::Bool, _) => "BYTE",
+        (TypeClass::Byte, "SINT") => "SINT",
+        (TypeClass::Byte, "BYTE") => "BYTE",
+        (TypeClass::Byte, _) => "USINT",
+        (TypeClass::Word, "INT") => "INT",
+        (TypeClass::Word, "UINT") => "UINT",
+        (TypeClass::Word, _) => "WORD",
+        (TypeClass::Dword, "DINT") => "DINT",
+        (TypeClass::Dword, "DWORD") => "DWORD",
+        (TypeClass::Dword, _) => "UDINT",
+        (TypeClass::Real, _) => "REAL",
+        (TypeClass::Lreal, _) => "LREAL",
+        (TypeClass::Struct, _) => "UDINT",
+    }
+}
+
+fn address(window: &TmWindow, offset: u32, class: TypeClass, span: Span) -> DirectAddress {
+    let bytes = class.tm_bytes();
+    let size = match bytes {
+        1 => AddressSize::Byte,
+        2 => AddressSize::Word,
+        4 => AddressSize::DWord,
+        _ => AddressSize::LWord,
+    };
+    let byte = window.offset + offset;
+    let index = if window.element_addressing { byte / bytes } else { byte };
+    DirectAddress { area: Area::Memory, size, path: vec![index], span }
+}
+
+// ------------------------------------------------------------------ small AST builders
+
+fn id(name: &str, span: Span) -> Ident {
+    Ident::new(name, span)
+}
+
+fn var(name: &str, span: Span) -> Operand {
+    Operand::Var(VarRef { base: id(name, span), accessors: vec![], span })
+}
+
+fn field(inst: &VarRef, name: &str) -> Operand {
+    let mut r = inst.clone();
+    r.accessors.push(Accessor::Field(id(name, inst.span)));
+    Operand::Var(r)
+}
+
+fn int_lit(v: i128, span: Span) -> Operand {
+    Operand::Literal(Literal { kind: LiteralKind::Int(v), type_prefix: None, span })
+}
+
+fn instr(kind: InstrKind, span: Span) -> IlStmt {
+    IlStmt::Instr(Instruction { kind, span })
+}
+
+fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt {
+    instr(InstrKind::Simple { op, negate, operand }, span)
+}
+
+// ------------------------------------------------------------------ the pass
+
+struct BlockUse<'a> {
+    template: &'a Template,
+    calls: usize,
+}
+
+/// Instances of template blocks declared in a POU (and in global blocks): variable key -> block name.
+fn instances(unit_globals: &HashMap<String, String>, pou: &Pou, lib: &Library) -> HashMap<String, String> {
+    let mut m = unit_globals.clone();
+    for b in &pou.var_blocks {
+        for v in &b.vars {
+            if let TypeRef::Named(t) = &v.ty {
+                if let Some(tpl) = lib.get(&t.name) {
+                    m.insert(v.name.key(), tpl.block.clone());
+                }
+            }
+        }
+    }
+    m
+}
+
+fn calls_in<'a>(body: &'a [IlStmt], out: &mut Vec<&'a Instruction>) {
+    for s in body {
+        if let IlStmt::Instr(i) = s {
+            match &i.kind {
+                InstrKind::Call { .. } => out.push(i),
+                InstrKind::Deferred { body, .. } => calls_in(body, out),
+                _ => {}
+            }
+        }
+    }
+}
+
+/// Lowers every block call of `units`.
+pub fn lower(
+    units: &[CompilationUnit],
+    lib: &Library,
+    strategy: Strategy,
+    window: &TmWindow,
+    diags: &mut Diagnostics,
+) -> Lowered {
+    // Globals that are block instances.
+    let mut globals = HashMap::new();
+    for u in units {
+        for item in &u.items {
+            let blocks: Vec<&VarBlock> = match item {
+                LibraryElement::GlobalVars(b) => vec![b],
+                LibraryElement::Configuration(c) => {
+                    c.globals.iter().chain(c.resources.iter().flat_map(|r| r.globals.iter())).collect()
+                }
+                _ => vec![],
+            };
+            for b in blocks {
+                for v in &b.vars {
+                    if let TypeRef::Named(t) = &v.ty {
+                        if let Some(tpl) = lib.get(&t.name) {
+                            globals.insert(v.name.key(), tpl.block.clone());
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // Count call sites per block type (for Auto) and check legality of every call first.
+    let mut uses: BTreeMap<String, BlockUse> = BTreeMap::new();
+    let errors_before = diags.error_count();
+    for u in units {
+        for item in &u.items {
+            let LibraryElement::Pou(pou) = item else { continue };
+            let inst = instances(&globals, pou, lib);
+            let mut calls = Vec::new();
+            calls_in(&pou.body, &mut calls);
+            for c in calls {
+                let InstrKind::Call { instance, args, .. } = &c.kind else { continue };
+                if !instance.accessors.is_empty() {
+                    continue;
+                }
+                let Some(block) = inst.get(&instance.base.key()) else { continue };
+                let t = lib.get(block).expect("instances come from the library");
+                check_call(t, pou, instance, args, c.span, diags);
+                uses.entry(t.block.clone()).or_insert(BlockUse { template: t, calls: 0 }).calls += 1;
+            }
+        }
+    }
+    let mut out = Lowered::default();
+    if diags.error_count() > errors_before {
+        return out;
+    }
+    // Choose the method per block type and lay out the TM area.
+    let mut methods: HashMap<String, (Method, Option<TmLayout>)> = HashMap::new();
+    for (name, u) in &uses {
+        let layout = il_layout(u.template, window);
+        let method = match strategy {
+            Strategy::Il => Method::Il,
+            Strategy::Template => Method::Template,
+            Strategy::Auto if layout.is_ok() && u.calls >= AUTO_IL_MIN_CALLS => Method::Il,
+            Strategy::Auto => Method::Template,
+        };
+        match (method, layout) {
+            (Method::Il, Err((needed, available))) => {
+                diags.push(
+                    Diagnostic::error(
+                        code::E4020,
+                        format!("block `{name}` needs {needed} bytes of TM area, but the target has {available}"),
+                    )
+                    .at(u.template.span)
+                    .with_hint("enlarge `tm_bytes` in the target profile, or use --strategy template (no TM area)"),
+                );
+            }
+            (Method::Il, Ok(l)) => {
+                out.static_functions.insert(name.clone(), l.clone());
+                methods.insert(name.to_ascii_uppercase(), (Method::Il, Some(l)));
+            }
+            (Method::Template, _) => {
+                methods.insert(name.to_ascii_uppercase(), (Method::Template, None));
+            }
+        }
+        out.reports.push(BlockReport {
+            block: name.clone(),
+            method,
+            calls: u.calls,
+            tm_bytes: methods.get(&name.to_ascii_uppercase()).and_then(|m| m.1.as_ref()).map_or(0, |l| l.total),
+            il_instructions: 0,
+        });
+    }
+    if diags.error_count() > errors_before {
+        return out;
+    }
+    let mut site = 0usize;
+    for u in units {
+        let mut unit = u.clone();
+        for item in &mut unit.items {
+            let LibraryElement::Pou(pou) = item else { continue };
+            let inst = instances(&globals, pou, lib);
+            let mut cx = PouLowering {
+                lib,
+                window,
+                methods: &methods,
+                instances: &inst,
+                pou_name: pou.name.name.clone(),
+                used_views: BTreeMap::new(),
+                site: &mut site,
+                synthesized: &mut out.synthesized,
+                counts: HashMap::new(),
+            };
+            let body = std::mem::take(&mut pou.body);
+            pou.body = cx.lower_body(body);
+            let views = std::mem::take(&mut cx.used_views);
+            for (block, n) in cx.counts {
+                if let Some(r) = out.reports.iter_mut().find(|r| r.block.eq_ignore_ascii_case(&block)) {
+                    r.il_instructions += n;
+                }
+            }
+            if !views.is_empty() {
+                let span = pou.name.span;
+                let vars = views
+                    .into_values()
+                    .map(|(name, addr, ty)| VarDecl {
+                        name: id(&name, span),
+                        location: Some(addr),
+                        ty: TypeRef::Named(id(ty, span)),
+                        init: None,
+                        span,
+                    })
+                    .collect();
+                pou.var_blocks.push(VarBlock { kind: VarKind::Local, constant: false, retain: false, vars, span });
+            }
+        }
+        out.units.push(unit);
+    }
+    out
+}
+
+/// Legality of one call, before any code is generated.
+fn check_call(t: &Template, pou: &Pou, instance: &VarRef, args: &CallArgs, span: Span, diags: &mut Diagnostics) {
+    let formal: &[FormalArg] = match args {
+        CallArgs::Formal(f) => f,
+        CallArgs::None => &[],
+        CallArgs::NonFormal(a) => {
+            diags.push(
+                Diagnostic::error(code::E4021, format!("`{}` is called with positional arguments", instance.base.name))
+                    .at(a.first().map_or(span, |o| o.span()))
+                    .with_hint(format!("PLCopen blocks take formal arguments: CAL {}(Axis := ..., Execute := ...)", instance.base.name)),
+            );
+            return;
+        }
+    };
+    for a in formal {
+        let Some(p) = t.param(&a.name.name) else { continue }; // unknown names: sema reports them
+        if matches!(a.dir, ArgDir::Output { .. }) && !matches!(a.value, Operand::Var(_) | Operand::Address(_)) {
+            diags.push(
+                Diagnostic::error(code::E4022, format!("a constant is bound to the output `{}` of `{}`", p.name, t.block))
+                    .at(a.value.span())
+                    .with_hint("bind outputs to variables: `Done => done_flag`"),
+            );
+        }
+        if p.direction == Direction::InOut && !matches!(a.value, Operand::Var(_)) {
+            diags.push(
+                Diagnostic::error(code::E4022, format!("`{}` of `{}` needs a variable, not a constant", p.name, t.block))
+                    .at(a.value.span())
+                    .with_hint("bind VAR_IN_OUT parameters such as Axis to a variable (an AXIS_REF)"),
+            );
+        }
+    }
+    // A required input must be bound in the call or stored into the instance beforehand (`ST mv.Position`).
+    let stored = stored_fields(&pou.body, &instance.base);
+    for p in t.params.iter().filter(|p| p.required) {
+        let bound = formal.iter().any(|a| a.name.is(&p.name));
+        if !bound && !stored.iter().any(|f| f.eq_ignore_ascii_case(&p.name)) {
+            diags.push(
+                Diagnostic::error(
+                    code::E4023,
+                    format!("required input `{}` of `{}` (instance `{}`) is not bound", p.name, t.block, instance.base.name),
+                )
+                .at(span)
+                .with_hint(format!("add `{} := ...` to the call", p.name)),
+            );
+        }
+    }
+}
+
+fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
+    let mut out = Vec::new();
+    for s in body {
+        let IlStmt::Instr(i) = s else { continue };
+        match &i.kind {
+            InstrKind::Simple { op: Op::St | Op::S | Op::R, operand: Some(Operand::Var(v)), .. }
+                if v.base == *inst && v.accessors.len() == 1 =>
+            {
+                if let Accessor::Field(f) = &v.accessors[0] {
+                    out.push(f.name.clone());
+                }
+            }
+            InstrKind::Deferred { body, .. } => out.extend(stored_fields(body, inst)),
+            _ => {}
+        }
+    }
+    out
+}
+
+struct PouLowering<'a> {
+    lib: &'a Library,
+    window: &'a TmWindow,
+    methods: &'a HashMap<String, (Method, Option<TmLayout>)>,
+    instances: &'a HashMap<String, String>,
+    pou_name: String,
+    /// TM views used in this POU: key -> (name, address, type).
+    used_views: BTreeMap<String, (String, DirectAddress, &'static str)>,
+    site: &'a mut usize,
+    synthesized: &'a mut Vec<Synthesized>,
+    counts: HashMap<String, usize>,
+}
+
+impl PouLowering<'_> {
+    fn lower_body(&mut self, body: Vec<IlStmt>) -> Vec<IlStmt> {
+        let mut out = Vec::with_capacity(body.len());
+        for s in body {
+            match s {
+                IlStmt::Instr(Instruction { kind: InstrKind::Call { cond, instance, args }, span })
+                    if instance.accessors.is_empty() && self.instances.contains_key(&instance.base.key()) =>
+                {
+                    let block = self.instances[&instance.base.key()].clone();
+                    let t = self.lib.get(&block).expect("known block");
+                    let (method, layout) = self.methods[&block.to_ascii_uppercase()].clone();
+                    *self.site += 1;
+                    let skip = format!("SKIP__{}", *self.site);
+                    let guarded = cond != Condition::Always;
+                    let start = out.len();
+                    if guarded {
+                        let c = if cond == Condition::IfTrue { Condition::IfFalse } else { Condition::IfTrue };
+                        out.push(instr(InstrKind::Jump { cond: c, label: id(&skip, span) }, span));
+                    }
+                    match method {
+                        Method::Il => self.il_call(t, layout.as_ref().expect("IL layout"), &instance, &args, span, &mut out),
+                        Method::Template => self.template_call(t, &instance, &args, span, &mut out),
+                    }
+                    if guarded {
+                        out.push(IlStmt::Label(id(&skip, span)));
+                    }
+                    let n = out[start..].iter().filter(|s| matches!(s, IlStmt::Instr(_))).count();
+                    *self.counts.entry(t.block.clone()).or_default() += n;
+                }
+                IlStmt::Instr(Instruction { kind: InstrKind::Deferred { op, negate, operand, body, close }, span }) => {
+                    let body = self.lower_body(body);
+                    out.push(instr(InstrKind::Deferred { op, negate, operand, body, close }, span));
+                }
+                other => out.push(other),
+            }
+        }
+        out
+    }
+
+    fn view(&mut self, t: &Template, layout: &TmLayout, p: &Param, span: Span) -> Operand {
+        let slot = layout.slot(&p.name).expect("every parameter has a slot");
+        let name = tm_view_name(&t.block, &p.name);
+        let addr = address(self.window, slot.offset, p.class, span);
+        self.used_views.entry(name.to_ascii_uppercase()).or_insert_with(|| (name.clone(), addr, slot_type(p)));
+        var(&name, span)
+    }
+
+    /// The operand an input is taken from: the bound argument, else the instance's own field.
+    fn input_source(p: &Param, instance: &VarRef, args: &CallArgs) -> Operand {
+        if let CallArgs::Formal(f) = args {
+            if let Some(a) = f.iter().find(|a| a.name.is(&p.name) && a.dir == ArgDir::Input) {
+                return a.value.clone();
+            }
+        }
+        field(instance, &p.name)
+    }
+
+    fn il_call(&mut self, t: &Template, layout: &TmLayout, instance: &VarRef, args: &CallArgs, span: Span, out: &mut Vec<IlStmt>) {
+        let handle = handle_param(span);
+        // 1. input transfer (and the instance handle)
+        for p in t.inputs().chain(std::iter::once(&handle)) {
+            let src = if p.name == HANDLE_FIELD { field(instance, HANDLE_FIELD) } else { Self::input_source(p, instance, args) };
+            let src = match (&src, p.class) {
+                (Operand::Var(v), TypeClass::Struct) => {
+                    let mut v = v.clone();
+                    v.accessors.push(Accessor::Field(id(crate::prelude::index_field(&p.iec_type), v.span)));
+                    Operand::Var(v)
+                }
+                _ => src,
+            };
+            let dst = self.view(t, layout, p, span);
+            match (p.class, &src) {
+                (TypeClass::Bool, Operand::Literal(l)) => {
+                    let v = matches!(l.kind, LiteralKind::Bool(true)) || matches!(l.kind, LiteralKind::Int(1));
+                    out.push(simple(Op::Ld, false, Some(int_lit(v as i128, span)), span));
+                }
+                (TypeClass::Bool, _) => {
+                    out.push(simple(Op::Ld, false, Some(src.clone()), span));
+                    out.push(simple(Op::Eq, false, Some(Operand::Literal(Literal { kind: LiteralKind::Bool(true), type_prefix: None, span })), span));
+                    out.push(instr(InstrKind::FunctionCall { name: id("BOOL_TO_BYTE", span), args: CallArgs::None }, span));
+                }
+                _ => out.push(simple(Op::Ld, false, Some(src.clone()), span)),
+            }
+            out.push(simple(Op::St, false, Some(dst), span));
+        }
+        // 2. the call
+        out.push(instr(InstrKind::EmbeddedC { name: id(&t.block, span) }, span));
+        // 3. output transfer: into the instance, then into the `=>` targets
+        for p in t.outputs().chain(std::iter::once(&handle)) {
+            let src = self.view(t, layout, p, span);
+            let inst_field = field(instance, &p.name);
+            out.push(simple(Op::Ld, false, Some(src), span));
+            if p.class == TypeClass::Bool {
+                out.push(simple(Op::Eq, false, Some(int_lit(1, span)), span));
+                out.push(simple(Op::S, false, Some(inst_field.clone()), span));
+                out.push(simple(Op::Not, false, None, span));
+                out.push(simple(Op::R, false, Some(inst_field.clone()), span));
+            } else {
+                out.push(simple(Op::St, false, Some(inst_field.clone()), span));
+            }
+            if let CallArgs::Formal(f) = args {
+                for a in f.iter().filter(|a| a.name.is(&p.name)) {
+                    if let ArgDir::Output { negated } = a.dir {
+                        out.push(simple(Op::Ld, negated, Some(inst_field.clone()), span));
+                        out.push(simple(Op::St, false, Some(a.value.clone()), span));
+                    }
+                }
+            }
+        }
+    }
+
+    fn template_call(&mut self, t: &Template, instance: &VarRef, args: &CallArgs, span: Span, out: &mut Vec<IlStmt>) {
+        let n = *self.site;
+        let name = format!("{}_{n}", t.block);
+        let handle = handle_param(span);
+        let mut head = Vec::new();
+        let mut tail = Vec::new();
+        for p in t.params.iter().chain(std::iter::once(&handle)) {
+            let local = format!("{}_{n}", p.abbr);
+            let source = if p.direction == Direction::Output || p.name == HANDLE_FIELD {
+                field(instance, &p.name)
+            } else {
+                Self::input_source(p, instance, args)
+            };
+            let source = match (&source, p.class) {
+                (Operand::Var(v), TypeClass::Struct) => {
+                    let mut v = v.clone();
+                    v.accessors.push(Accessor::Field(id(crate::prelude::index_field(&p.iec_type), v.span)));
+                    Operand::Var(v)
+                }
+                _ => source,
+            };
+            head.push(HeadLocal { c_type: if p.name == HANDLE_FIELD { "uint32_t" } else { p.c_type() }, local: local.clone(), class: p.class, source });
+            if p.direction == Direction::Output || p.name == HANDLE_FIELD {
+                tail.push(Feedback { target: field(instance, &p.name), local: local.clone(), class: p.class, negated: false });
+                if let CallArgs::Formal(f) = args {
+                    for a in f.iter().filter(|a| a.name.is(&p.name)) {
+                        if let ArgDir::Output { negated } = a.dir {
+                            tail.push(Feedback { target: a.value.clone(), local: local.clone(), class: p.class, negated });
+                        }
+                    }
+                }
+            }
+        }
+        let renames: HashMap<&str, String> =
+            t.params.iter().chain(std::iter::once(&handle)).map(|p| (p.abbr.as_str(), format!("{}_{n}", p.abbr))).collect();
+        let body = rename_identifiers(&t.body.text, &renames);
+        self.synthesized.push(Synthesized {
+            name: name.clone(),
+            pou: self.pou_name.clone(),
+            func_num: t.func_num,
+            head,
+            locals: t.locals.iter().map(|l| (l.c_type.clone(), l.name.clone())).collect(),
+            body,
+            tail,
+            call_span: span,
+        });
+        out.push(instr(InstrKind::EmbeddedC { name: id(&name, span) }, span));
+    }
+}
+
+/// Renames free identifiers of C text (not members after `.`/`->`, not inside literals or comments).
+pub fn rename_identifiers(text: &str, renames: &HashMap<&str, String>) -> String {
+    let (toks, _) = crate::cbody::tokens(text);
+    let mut out = String::with_capacity(text.len() + 16);
+    let mut last = 0;
+    for (k, t) in toks.iter().enumerate() {
+        if t.kind != crate::cbody::Tok::Ident {
+            continue;
+        }
+        let member = k > 0
+            && (toks[k - 1].kind == crate::cbody::Tok::Punct(b'.')
+                || (toks[k - 1].kind == crate::cbody::Tok::Punct(b'>') && k > 1 && toks[k - 2].kind == crate::cbody::Tok::Punct(b'-')));
+        if member {
+            continue;
+        }
+        if let Some(new) = renames.get(&text[t.start..t.end]) {
+            out.push_str(&text[last..t.start]);
+            out.push_str(new);
+            last = t.end;
+        }
+    }
+    out.push_str(&text[last..]);
+    out
+}

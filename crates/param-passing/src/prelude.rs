@@ -1,0 +1,112 @@
+//! The IL declarations that make PLCopen blocks known to the semantic checks.
+//!
+//! Input: the library (and which blocks a program uses). Output: IL source text, parsed like a user file:
+//! the reference types (`AXIS_REF` ...), the PLCopen enumeration constants (`mcAborting` ... as USINT
+//! constants), and for each block either a `FUNCTION_BLOCK` declaration with the block's interface (before
+//! lowering: the user's calls are type-checked against it) or a `STRUCT` of the same name (after lowering:
+//! the instance keeps its inputs' defaults, its outputs and the engine handle as plain fields).
+//! Invariant: the text only contains names from templates, which the loader validated as identifiers.
+
+use crate::library::Library;
+use crate::lower::HANDLE_FIELD;
+use crate::template::{Direction, Param, Template, TypeClass};
+use std::fmt::Write as _;
+
+/// The reference types and the field that holds their index in the motion engine.
+pub const REFERENCE_TYPES: &[(&str, &str)] =
+    &[("AXIS_REF", "AxisNo"), ("AXES_GROUP_REF", "GroupNo"), ("MC_CAM_REF", "CamNo"), ("MC_CAM_ID", "CamId")];
+
+/// PLCopen enumeration values, as USINT constants.
+pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
+    ("mcAborting", 0),
+    ("mcBuffered", 1),
+    ("mcBlendingLow", 2),
+    ("mcBlendingPrevious", 3),
+    ("mcBlendingNext", 4),
+    ("mcBlendingHigh", 5),
+    ("mcPositiveDirection", 0),
+    ("mcShortestWay", 1),
+    ("mcNegativeDirection", 2),
+    ("mcCurrentDirection", 3),
+    ("TMNone", 0),
+    ("TMStartVelocity", 1),
+    ("TMConstantVelocity", 2),
+    ("TMCornerDistance", 3),
+    ("TMMaxCornerDeviation", 4),
+];
+
+/// The field of a reference type that carries the engine index (`AXIS_REF` -> `AxisNo`).
+pub fn index_field(iec_type: &str) -> &'static str {
+    REFERENCE_TYPES.iter().find(|(t, _)| t.eq_ignore_ascii_case(iec_type)).map_or("AxisNo", |(_, f)| f)
+}
+
+/// The IEC type a parameter has in the declarations (MC_* enumerations are USINT).
+fn declared_type(p: &Param) -> String {
+    if p.class == TypeClass::Byte && p.iec_type.to_ascii_uppercase().starts_with("MC_") {
+        "USINT".into()
+    } else {
+        p.iec_type.to_ascii_uppercase()
+    }
+}
+
+fn init(p: &Param) -> String {
+    match &p.default {
+        Some(d) => format!(" := {d}"),
+        None => String::new(),
+    }
+}
+
+fn common(out: &mut String) {
+    out.push_str("TYPE\n");
+    for (t, f) in REFERENCE_TYPES {
+        let _ = writeln!(out, "    {t} : STRUCT {f} : UDINT; END_STRUCT;");
+    }
+    out.push_str("END_TYPE\n\nVAR_GLOBAL CONSTANT\n");
+    for (n, v) in ENUM_CONSTANTS {
+        let _ = writeln!(out, "    {n} : USINT := {v};");
+    }
+    out.push_str("END_VAR\n\n");
+}
+
+/// The declarations checked against before lowering: one FUNCTION_BLOCK per template.
+pub fn before_lowering(lib: &Library) -> String {
+    let mut out = String::from("(* PLCopen blocks as the programs see them (generated from the templates) *)\n");
+    common(&mut out);
+    for t in lib.templates() {
+        fb_declaration(t, &mut out);
+    }
+    out
+}
+
+fn fb_declaration(t: &Template, out: &mut String) {
+    let _ = writeln!(out, "FUNCTION_BLOCK {}", t.block);
+    for (dir, kw) in [(Direction::InOut, "VAR_IN_OUT"), (Direction::Input, "VAR_INPUT"), (Direction::Output, "VAR_OUTPUT")] {
+        let ps: Vec<&Param> = t.params.iter().filter(|p| p.direction == dir).collect();
+        if ps.is_empty() {
+            continue;
+        }
+        let _ = writeln!(out, "{kw}");
+        for p in ps {
+            let _ = writeln!(out, "    {} : {}{};", p.name, declared_type(p), init(p));
+        }
+        out.push_str("END_VAR\n");
+    }
+    out.push_str("END_FUNCTION_BLOCK\n\n");
+}
+
+/// The declarations after lowering: one STRUCT per template (inputs with defaults, outputs, engine handle).
+pub fn after_lowering(lib: &Library) -> String {
+    let mut out = String::from("(* PLCopen block instances after lowering (generated from the templates) *)\n");
+    common(&mut out);
+    out.push_str("TYPE\n");
+    for t in lib.templates() {
+        let _ = writeln!(out, "    {} : STRUCT", t.block);
+        for p in t.params.iter().filter(|p| p.direction != Direction::InOut) {
+            let _ = writeln!(out, "        {} : {}{};", p.name, declared_type(p), init(p));
+        }
+        let _ = writeln!(out, "        {HANDLE_FIELD} : UDINT;");
+        out.push_str("    END_STRUCT;\n");
+    }
+    out.push_str("END_TYPE\n");
+    out
+}
