@@ -165,6 +165,19 @@ void ladderc_string_concat(IEC_STRING *dst, const IEC_STRING *a, const IEC_STRIN
     memcpy(buf + a->len, b->data, b->len);
     ladderc_string_set(dst, buf, (size_t)a->len + b->len, cap);
 }
+IEC_STRING ladderc_str_lit(const char *bytes, size_t len) {
+    IEC_STRING s;
+    memset(&s, 0, sizeof s);
+    ladderc_string_set(&s, bytes, len, LADDERC_STRING_CAP);
+    return s;
+}
+IEC_STRING ladderc_str_cap(IEC_STRING s, unsigned cap) {
+    IEC_STRING r;
+    memset(&r, 0, sizeof r);
+    ladderc_string_set(&r, s.data, s.len, cap);
+    return r;
+}
+int ladderc_str_cmpv(IEC_STRING a, IEC_STRING b) { return ladderc_string_cmp(&a, &b); }
 void ladderc_wstring_set(IEC_WSTRING *dst, const uint16_t *src, size_t len, unsigned cap) {
     if (cap > LADDERC_STRING_CAP) cap = LADDERC_STRING_CAP;
     if (len > cap) {

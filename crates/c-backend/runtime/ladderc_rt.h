@@ -177,6 +177,21 @@ static inline uint64_t ladderc_real_to_uint(double x, uint64_t hi) {
 /* REAL_TO_TIME and friends: x is in milliseconds. */
 static inline IEC_TIME ladderc_ms_to_time(double ms) { return (IEC_TIME)ladderc_real_to_int(ms * 1e6, INT64_MIN, INT64_MAX); }
 
+/* The next due time of a cyclic task: the first multiple of `iv` after `due` that is later than `now`. */
+static inline IEC_TIME ladderc_next_due(IEC_TIME due, IEC_TIME now, IEC_TIME iv) {
+    IEC_LINT late = ladderc_sub_IEC_LINT(now, due);
+    IEC_LINT steps = late < 0 ? 1 : ladderc_add_IEC_LINT(ladderc_div_IEC_LINT(late, iv), 1);
+    return ladderc_add_IEC_LINT(due, ladderc_mul_IEC_LINT(steps, iv));
+}
+
+/* DT_TO_DATE / DT_TO_TOD: the day part and the time-of-day part (floor division, no overflow). */
+#define LADDERC_NS_PER_DAY INT64_C(86400000000000)
+static inline IEC_TOD ladderc_dt_to_tod(IEC_DT dt) {
+    int64_t r = dt % LADDERC_NS_PER_DAY;
+    return r < 0 ? r + LADDERC_NS_PER_DAY : r;
+}
+static inline IEC_DATE ladderc_dt_to_date(IEC_DT dt) { return ladderc_sub_IEC_LINT(dt, ladderc_dt_to_tod(dt)); }
+
 /* BCD: invalid digits (> 9) give 0 and LADDERC_ERR_RANGE. */
 static inline uint64_t ladderc_bcd_to_uint(uint64_t bcd) {
     uint64_t v = 0, mul = 1;
@@ -207,6 +222,41 @@ static inline uint64_t ladderc_uint_to_bcd(uint64_t v) {
 #define LADDERC_LIMIT(mn, in, mx) ((in) < (mn) ? (mn) : ((in) > (mx) ? (mx) : (in)))
 #define LADDERC_SEL(g, in0, in1) ((g) ? (in1) : (in0))
 
+/* Comparisons and ordering as functions, so that comparing an unsigned value with a constant 0 never
+ * trips -Wtype-limits in generated code. */
+#define LADDERC_ORDERED(T)                                                                         \
+    static inline IEC_BOOL ladderc_gt_##T(T a, T b) { return a > b; }                              \
+    static inline IEC_BOOL ladderc_ge_##T(T a, T b) { return a >= b; }                            \
+    static inline IEC_BOOL ladderc_eq_##T(T a, T b) { return a == b; }                            \
+    static inline IEC_BOOL ladderc_ne_##T(T a, T b) { return a != b; }                            \
+    static inline IEC_BOOL ladderc_le_##T(T a, T b) { return a <= b; }                            \
+    static inline IEC_BOOL ladderc_lt_##T(T a, T b) { return a < b; }                              \
+    static inline T ladderc_max_##T(T a, T b) { return a > b ? a : b; }                            \
+    static inline T ladderc_min_##T(T a, T b) { return a < b ? a : b; }                            \
+    static inline T ladderc_limit_##T(T mn, T in, T mx) { return in < mn ? mn : (in > mx ? mx : in); }
+LADDERC_ORDERED(IEC_SINT)
+LADDERC_ORDERED(IEC_INT)
+LADDERC_ORDERED(IEC_DINT)
+LADDERC_ORDERED(IEC_LINT)
+LADDERC_ORDERED(IEC_USINT)
+LADDERC_ORDERED(IEC_UINT)
+LADDERC_ORDERED(IEC_UDINT)
+LADDERC_ORDERED(IEC_ULINT)
+LADDERC_ORDERED(IEC_REAL)
+LADDERC_ORDERED(IEC_LREAL)
+
+/* ABS on signed integers wraps like the type (ABS of the most negative value is itself). */
+static inline IEC_SINT ladderc_abs_IEC_SINT(IEC_SINT a) { return a < 0 ? ladderc_neg_IEC_SINT(a) : a; }
+static inline IEC_INT ladderc_abs_IEC_INT(IEC_INT a) { return a < 0 ? ladderc_neg_IEC_INT(a) : a; }
+static inline IEC_DINT ladderc_abs_IEC_DINT(IEC_DINT a) { return a < 0 ? ladderc_neg_IEC_DINT(a) : a; }
+static inline IEC_LINT ladderc_abs_IEC_LINT(IEC_LINT a) { return a < 0 ? ladderc_neg_IEC_LINT(a) : a; }
+
+/* The zero-based offset of index i in lo..hi; out of range gives 0 and sets LADDERC_ERR_BOUNDS. */
+static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi) {
+    if (i < lo || i > hi) { ladderc_errors |= LADDERC_ERR_BOUNDS; return 0; }
+    return (size_t)((uint64_t)i - (uint64_t)lo);
+}
+
 /* ------------------------------------------------------------------ strings */
 void ladderc_string_set(IEC_STRING *dst, const char *src, size_t len, unsigned cap);
 void ladderc_string_copy(IEC_STRING *dst, const IEC_STRING *src, unsigned cap);
@@ -214,6 +264,10 @@ int ladderc_string_cmp(const IEC_STRING *a, const IEC_STRING *b);
 void ladderc_string_concat(IEC_STRING *dst, const IEC_STRING *a, const IEC_STRING *b, unsigned cap);
 void ladderc_wstring_set(IEC_WSTRING *dst, const uint16_t *src, size_t len, unsigned cap);
 int ladderc_wstring_cmp(const IEC_WSTRING *a, const IEC_WSTRING *b);
+/* A string value from a literal (bytes, length), and value-based helpers for generated code. */
+IEC_STRING ladderc_str_lit(const char *bytes, size_t len);
+IEC_STRING ladderc_str_cap(IEC_STRING s, unsigned cap);
+int ladderc_str_cmpv(IEC_STRING a, IEC_STRING b);
 
 /* ------------------------------------------------------------------ process image access */
 /* Byte order from the profile: LADDERC_BIG_ENDIAN is 0 (little) or 1 (big). Loads and stores go byte by
