@@ -19,7 +19,14 @@ pub(super) struct ReadOnly {
     code: Code,
     message: String,
     decl: Option<(Span, String)>,
+    hint: &'static str,
 }
+
+const HINT_CONST: &str = "write another variable, or drop CONSTANT from its declaration";
+const HINT_INPUT: &str = "write a local copy, or declare the variable VAR_IN_OUT / VAR_OUTPUT";
+const HINT_FB_OUTPUT: &str =
+    "outputs of an FB instance are written by the instance itself; read them with LD";
+const HINT_ENUM: &str = "store into a variable";
 
 /// A resolved variable access.
 #[derive(Debug, Clone)]
@@ -122,12 +129,7 @@ impl Body<'_, '_> {
                     if let Some((span, m)) = ro.decl {
                         d = d.also(span, m);
                     }
-                    let hint = if ro.code == code::E1014 {
-                        "write another variable, or drop CONSTANT from its declaration"
-                    } else {
-                        "write a local copy, or declare the variable VAR_IN_OUT / VAR_OUTPUT"
-                    };
-                    drop(d.hint(hint));
+                    drop(d.hint(ro.hint));
                 }
                 p.ty
             }
@@ -331,6 +333,7 @@ impl Body<'_, '_> {
                     code: code::E1014,
                     message: format!("`{}` is a constant", var.name),
                     decl: Some((var.span, "declared CONSTANT here".into())),
+                    hint: HINT_CONST,
                 })
             } else if var.kind == VarKind::Input {
                 Some(ReadOnly {
@@ -340,6 +343,7 @@ impl Body<'_, '_> {
                         var.name
                     ),
                     decl: Some((var.span, "declared VAR_INPUT here".into())),
+                    hint: HINT_INPUT,
                 })
             } else {
                 None
@@ -360,6 +364,7 @@ impl Body<'_, '_> {
                 code: code::E1015,
                 message: format!("`EN` is an input of `{pou_name}`, read-only inside it"),
                 decl: None,
+                hint: HINT_INPUT,
             });
             return Some(Place {
                 ty: Type::BOOL,
@@ -372,6 +377,7 @@ impl Body<'_, '_> {
                 code: code::E1014,
                 message: format!("`{}` is a constant", g.name),
                 decl: Some((g.span, "declared CONSTANT here".into())),
+                hint: HINT_CONST,
             });
             return Some(Place {
                 ty: g.ty,
@@ -403,6 +409,7 @@ impl Body<'_, '_> {
                     code: code::E1026,
                     message: format!("`{}` is an enumerated value, not a variable", base.name),
                     decl: None,
+                    hint: HINT_ENUM,
                 });
                 return Some(Place {
                     ty: Type::Enum(found[0].0),
@@ -474,6 +481,7 @@ impl Body<'_, '_> {
                                 code: code::E1015,
                                 message: format!("`{name}` is an output of FB instance `{path}`"),
                                 decl: None,
+                                hint: HINT_FB_OUTPUT,
                             }),
                             ParamDir::Input | ParamDir::InOut => place.read_only.clone(),
                             ParamDir::Internal => {
