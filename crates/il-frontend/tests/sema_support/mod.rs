@@ -274,6 +274,11 @@ impl Reader<'_> {
         while !lines[i][0].text.eq_ignore_ascii_case("END_VAR") {
             // `a, b : INT;` declares two.
             let l = &lines[i];
+            if l[1].text.eq_ignore_ascii_case("AT") {
+                vars.push(self.var_decl(l));
+                i += 1;
+                continue;
+            }
             let colon = l
                 .iter()
                 .position(|t| t.text == ":")
@@ -308,7 +313,7 @@ impl Reader<'_> {
                 Operand::Address(a) => Some(a),
                 _ => None,
             };
-            k = 4;
+            k = 4; // name AT %addr : type
         }
         let (ty, rest) = self.type_ref(&l[k..]);
         let init = rest.iter().position(|t| t.text == ":=").map(|p| {
