@@ -91,10 +91,10 @@ fn tokenize(line: &str, base: usize) -> Vec<Tok> {
                 i += 1;
             }
             i += 1;
-        } else if c == ':' && b.get(i + 1) == Some(&b'=') || c == '=' && b.get(i + 1) == Some(&b'>')
-        {
-            i += 2;
-        } else if c == '.' && b.get(i + 1) == Some(&b'.') {
+        } else if matches!(
+            (c, b.get(i + 1)),
+            (':', Some(b'=')) | ('=', Some(b'>')) | ('.', Some(b'.'))
+        ) {
             i += 2;
         } else if "(),;:[]".contains(c) {
             i += 1;
