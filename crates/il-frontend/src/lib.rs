@@ -4,5 +4,6 @@
 //! -> `sema` (symbols, types, current-result typing, labels). Every node carries a byte [`Span`].
 
 pub mod ast;
+pub mod sema;
 
 pub use diagnostics::{FileId, Span};

@@ -1,0 +1,353 @@
+/* ladderc scan harness: runs the generated program for N scan cycles with a fixed cycle time.
+ *
+ *   prog [--cycles N] [--cycle-ms X] [--stimulus FILE] [--trace FILE|-] [--watch a,b,%QX0.1] [--list]
+ *
+ * Input: the stimulus CSV (`cycle,variable,value` rows; the values are written just before that cycle
+ * runs; an optional `cycle,variable,value` header, blank lines and `#` comment lines are ignored).
+ * Output: the trace CSV (`cycle,time_ms,VAR...`, one row per cycle with the watched variables after it).
+ * Cycle k runs with the scan clock at k * cycle time (cycle 0 at 0 ms); time_ms is that clock.
+ * Exit status: 0 on success, 2 on bad usage or a bad stimulus row (with `file:line: message` on stderr).
+ * Runtime error flags (division by zero, saturated conversions) are reported on stderr at the end. */
+#include "ladderc_rt.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <ctype.h>
+#include <errno.h>
+
+typedef union {
+    IEC_LINT i;
+    IEC_ULINT u;
+    IEC_LREAL d;
+    IEC_STRING s;
+} any_value;
+
+typedef struct {
+    uint64_t cycle;
+    ladderc_var var;
+    any_value value;
+} stimulus_row;
+
+/* Heap blocks live in file-scope pointers so that early error exits leave nothing unreachable. */
+static stimulus_row *rows;
+static ladderc_var *watch;
+static char *watch_copy;
+
+static void usage(FILE *f) {
+    fprintf(f,
+            "usage: prog [--cycles N] [--cycle-ms X] [--stimulus FILE] [--trace FILE|-] [--watch a,b,%%QX0.1] "
+            "[--list]\n"
+            "  --cycles N       scan cycles to run (default 1)\n"
+            "  --cycle-ms X     cycle time in milliseconds, may be fractional (default 10)\n"
+            "  --stimulus FILE  CSV rows `cycle,variable,value` applied before that cycle\n"
+            "  --trace FILE     CSV trace `cycle,time_ms,VAR...` after each cycle (default: standard output)\n"
+            "  --watch LIST     comma-separated variables or addresses to trace (default: every variable)\n"
+            "  --list           print the watchable variables with their types and exit\n");
+}
+
+static int ieq(const char *a, const char *b) {
+    while (*a && *b) {
+        if (toupper((unsigned char)*a) != toupper((unsigned char)*b)) return 0;
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+/* A variable of the table or a direct address; names compare case-insensitively. */
+static int resolve(const char *name, ladderc_var *out, char *err, size_t errlen) {
+    size_t i;
+    if (name[0] == '%') return ladderc_resolve_address(name, out, err, errlen);
+    for (i = 0; i < ladderc_var_count; i++) {
+        if (ieq(ladderc_vars[i].name, name)) {
+            *out = ladderc_vars[i];
+            return 0;
+        }
+    }
+    snprintf(err, errlen, "unknown variable `%s` (use --list to see the watchable variables)", name);
+    return -1;
+}
+
+static char *trim(char *s) {
+    char *e;
+    while (*s && isspace((unsigned char)*s)) s++;
+    e = s + strlen(s);
+    while (e > s && isspace((unsigned char)e[-1])) *--e = '\0';
+    return s;
+}
+
+static char *read_file(const char *path, size_t *len_out) {
+    FILE *f = fopen(path, "rb");
+    char *buf = NULL;
+    size_t len = 0, cap = 0;
+    if (!f) return NULL;
+    for (;;) {
+        size_t n;
+        if (cap - len < 4096) {
+            char *nb;
+            cap = cap ? cap * 2 : 8192;
+            nb = (char *)realloc(buf, cap + 1);
+            if (!nb) {
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
+            buf = nb;
+        }
+        n = fread(buf + len, 1, cap - len, f);
+        len += n;
+        if (n == 0) break;
+    }
+    fclose(f);
+    buf[len] = '\0';
+    *len_out = len;
+    return buf;
+}
+
+/* Parses the stimulus file into rows sorted by cycle (file order within a cycle). Returns -1 on error. */
+static int load_stimulus(const char *path, stimulus_row **rows_out, size_t *count_out) {
+    size_t len, count = 0, cap = 0, lineno = 0;
+    char *text = read_file(path, &len), *line, *next;
+    stimulus_row *rows = NULL;
+    char err[512];
+    if (!text) {
+        fprintf(stderr, "%s: cannot read the stimulus file: %s\n", path, strerror(errno));
+        return -1;
+    }
+    if (len >= 3 && (unsigned char)text[0] == 0xEF && (unsigned char)text[1] == 0xBB && (unsigned char)text[2] == 0xBF)
+        memmove(text, text + 3, len - 2);
+    for (line = text; line; line = next) {
+        char *c1, *c2, *cycle_s, *name, *value, *end;
+        unsigned long long cycle;
+        stimulus_row row;
+        next = strchr(line, '\n');
+        if (next) *next++ = '\0';
+        lineno++;
+        if (strlen(line) && line[strlen(line) - 1] == '\r') line[strlen(line) - 1] = '\0';
+        if (*trim(line) == '\0' || *trim(line) == '#') continue;
+        c1 = strchr(line, ',');
+        c2 = c1 ? strchr(c1 + 1, ',') : NULL;
+        if (!c2) {
+            fprintf(stderr, "%s:%lu: expected `cycle,variable,value`\n", path, (unsigned long)lineno);
+            goto bad;
+        }
+        *c1 = '\0';
+        *c2 = '\0';
+        cycle_s = trim(line);
+        name = trim(c1 + 1);
+        value = trim(c2 + 1);
+        if (ieq(cycle_s, "cycle") && ieq(name, "variable")) continue; /* header */
+        errno = 0;
+        cycle = strtoull(cycle_s, &end, 10);
+        if (!*cycle_s || *end || errno || cycle_s[0] == '-') {
+            fprintf(stderr, "%s:%lu: the cycle `%s` is not a non-negative integer\n", path, (unsigned long)lineno,
+                    cycle_s);
+            goto bad;
+        }
+        memset(&row, 0, sizeof row);
+        row.cycle = cycle;
+        if (resolve(name, &row.var, err, sizeof err)) {
+            fprintf(stderr, "%s:%lu: %s\n", path, (unsigned long)lineno, err);
+            goto bad;
+        }
+        if (ladderc_parse_value(row.var.type, value, &row.value, err, sizeof err)) {
+            fprintf(stderr, "%s:%lu: %s (variable `%s` is %s)\n", path, (unsigned long)lineno, err, name,
+                    ladderc_type_name(row.var.type));
+            goto bad;
+        }
+        if (count == cap) {
+            stimulus_row *nr;
+            cap = cap ? cap * 2 : 16;
+            nr = (stimulus_row *)realloc(rows, cap * sizeof *rows);
+            if (!nr) {
+                fprintf(stderr, "%s: out of memory\n", path);
+                goto bad;
+            }
+            rows = nr;
+        }
+        rows[count++] = row;
+    }
+    free(text);
+    /* Rows apply in cycle order, file order within a cycle: a stable insertion sort, skipped when the
+     * file is already ordered (the usual case), so loading stays linear. */
+    {
+        size_t i;
+        int sorted = 1;
+        for (i = 1; i < count; i++)
+            if (rows[i].cycle < rows[i - 1].cycle) sorted = 0;
+        if (!sorted) {
+            for (i = 1; i < count; i++) {
+                stimulus_row r = rows[i];
+                size_t j = i;
+                while (j > 0 && rows[j - 1].cycle > r.cycle) {
+                    rows[j] = rows[j - 1];
+                    j--;
+                }
+                rows[j] = r;
+            }
+        }
+    }
+    *rows_out = rows;
+    *count_out = count;
+    return 0;
+bad:
+    free(text);
+    free(rows);
+    return -1;
+}
+
+static int parse_cycle_ms(const char *s, int64_t *ns) {
+    char *end;
+    double ms;
+    errno = 0;
+    ms = strtod(s, &end);
+    if (end == s || *end || errno || !(ms > 0) || ms > 1e9) return -1;
+    *ns = (int64_t)llround(ms * 1e6);
+    return *ns > 0 ? 0 : -1;
+}
+
+static void print_time_ms(FILE *f, int64_t ns) {
+    if (ns % 1000000 == 0) fprintf(f, "%lld", (long long)(ns / 1000000));
+    else {
+        char buf[64];
+        int n = snprintf(buf, sizeof buf, "%lld.%06lld", (long long)(ns / 1000000), (long long)(ns % 1000000));
+        while (n > 0 && buf[n - 1] == '0') buf[--n] = '\0';
+        fputs(buf, f);
+    }
+}
+
+int main(int argc, char **argv) {
+    unsigned long long cycles = 1;
+    int64_t cycle_ns = 10000000;
+    const char *stimulus_path = NULL, *trace_path = NULL, *watch_list = NULL;
+    int list = 0, i;
+    size_t row_count = 0, next_row = 0, watch_count = 0, w;
+    FILE *trace = stdout;
+    char err[512];
+    static char value_text[2 * LADDERC_STRING_CAP + 16];
+
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout);
+            return 0;
+        } else if (!strcmp(a, "--list")) {
+            list = 1;
+            continue;
+        }
+        if (!v) {
+            fprintf(stderr, "error: `%s` needs a value (or is unknown)\n", a);
+            usage(stderr);
+            return 2;
+        }
+        if (!strcmp(a, "--cycles")) {
+            char *end;
+            errno = 0;
+            cycles = strtoull(v, &end, 10);
+            if (!*v || *end || errno || v[0] == '-') {
+                fprintf(stderr, "error: --cycles expects a non-negative integer, got `%s`\n", v);
+                return 2;
+            }
+        } else if (!strcmp(a, "--cycle-ms")) {
+            if (parse_cycle_ms(v, &cycle_ns)) {
+                fprintf(stderr, "error: --cycle-ms expects a positive number of milliseconds, got `%s`\n", v);
+                return 2;
+            }
+        } else if (!strcmp(a, "--stimulus")) stimulus_path = v;
+        else if (!strcmp(a, "--trace")) trace_path = v;
+        else if (!strcmp(a, "--watch")) watch_list = v;
+        else {
+            fprintf(stderr, "error: unknown option `%s`\n", a);
+            usage(stderr);
+            return 2;
+        }
+        i++;
+    }
+
+    if (list) {
+        size_t k;
+        for (k = 0; k < ladderc_var_count; k++)
+            printf("%s : %s\n", ladderc_vars[k].name, ladderc_type_name(ladderc_vars[k].type));
+        return 0;
+    }
+
+    if (watch_list) {
+        char *copy = (char *)malloc(strlen(watch_list) + 1), *tok, *save;
+        watch_copy = copy;
+        size_t n = 1;
+        const char *p;
+        for (p = watch_list; *p; p++) n += *p == ',';
+        watch = (ladderc_var *)calloc(n, sizeof *watch);
+        if (!copy || !watch) return 2;
+        strcpy(copy, watch_list);
+        for (tok = copy; tok; tok = save) {
+            char *name;
+            save = strchr(tok, ',');
+            if (save) *save++ = '\0';
+            name = trim(tok);
+            if (!*name) continue;
+            if (resolve(name, &watch[watch_count], err, sizeof err)) {
+                fprintf(stderr, "error: --watch: %s\n", err);
+                return 2;
+            }
+            /* the header shows the name as the user wrote it; `name` lives in watch_copy */
+            watch[watch_count].name = name;
+            watch_count++;
+        }
+    } else {
+        watch = (ladderc_var *)calloc(ladderc_var_count + 1, sizeof *watch);
+        if (!watch) return 2;
+        for (w = 0; w < ladderc_var_count; w++) watch[w] = ladderc_vars[w];
+        watch_count = ladderc_var_count;
+    }
+
+    if (stimulus_path && load_stimulus(stimulus_path, &rows, &row_count)) return 2;
+
+    if (trace_path && strcmp(trace_path, "-")) {
+        trace = fopen(trace_path, "w");
+        if (!trace) {
+            fprintf(stderr, "%s: cannot write the trace file: %s\n", trace_path, strerror(errno));
+            return 2;
+        }
+    }
+
+    fputs("cycle,time_ms", trace);
+    for (w = 0; w < watch_count; w++) fprintf(trace, ",%s", watch[w].name);
+    fputc('\n', trace);
+
+    ladderc_now = 0;
+    ladderc_program_init();
+    {
+        unsigned long long k;
+        for (k = 0; k < cycles; k++) {
+            ladderc_cycle = k;
+            ladderc_now = (IEC_TIME)(k * (uint64_t)cycle_ns);
+            while (next_row < row_count && rows[next_row].cycle < k) next_row++;
+            while (next_row < row_count && rows[next_row].cycle == k) {
+                ladderc_write_var(&rows[next_row].var, &rows[next_row].value);
+                next_row++;
+            }
+            ladderc_program_scan();
+            fprintf(trace, "%llu,", k);
+            print_time_ms(trace, ladderc_now);
+            for (w = 0; w < watch_count; w++) {
+                any_value v;
+                ladderc_read_var(&watch[w], &v);
+                ladderc_format_value(watch[w].type, &v, value_text, sizeof value_text);
+                fprintf(trace, ",%s", value_text);
+            }
+            fputc('\n', trace);
+        }
+    }
+    if (trace != stdout) fclose(trace);
+    else fflush(stdout);
+    free(rows);
+    free(watch);
+    free(watch_copy);
+    if (ladderc_errors & LADDERC_ERR_DIV_ZERO) fprintf(stderr, "runtime: integer division by zero (result 0)\n");
+    if (ladderc_errors & LADDERC_ERR_RANGE) fprintf(stderr, "runtime: conversion out of range (saturated)\n");
+    if (ladderc_errors & LADDERC_ERR_BOUNDS) fprintf(stderr, "runtime: array index out of range\n");
+    if (ladderc_errors & LADDERC_ERR_STRING) fprintf(stderr, "runtime: string truncated\n");
+    return 0;
+}

@@ -1,0 +1,658 @@
+/* ladderc runtime: standard function blocks, strings, and the value parsing/formatting the harness uses.
+ * Input: the FB instance structs, the scan clock ladderc_now. Output: FB outputs per IEC 61131-3
+ * (2nd/3rd edition semantics). Invariants: no undefined behaviour for any input value. */
+#include "ladderc_rt.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <ctype.h>
+#include <errno.h>
+
+uint32_t ladderc_errors = 0;
+IEC_TIME ladderc_now = 0;
+uint64_t ladderc_cycle = 0;
+
+/* ------------------------------------------------------------------ edge detection and bistables */
+void ladderc_R_TRIG_init(ladderc_R_TRIG *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_R_TRIG_body(ladderc_R_TRIG *fb) {
+    fb->Q = (IEC_BOOL)(fb->CLK && !fb->m);
+    fb->m = fb->CLK ? 1u : 0u;
+}
+void ladderc_F_TRIG_init(ladderc_F_TRIG *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_F_TRIG_body(ladderc_F_TRIG *fb) {
+    /* IEC: Q := NOT CLK AND NOT M; M := NOT CLK. */
+    fb->Q = (IEC_BOOL)(!fb->CLK && !fb->m);
+    fb->m = fb->CLK ? 0u : 1u;
+}
+void ladderc_SR_init(ladderc_SR *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_SR_body(ladderc_SR *fb) { fb->Q1 = (IEC_BOOL)(fb->S1 || (!fb->R && fb->Q1)); }
+void ladderc_RS_init(ladderc_RS *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_RS_body(ladderc_RS *fb) { fb->Q1 = (IEC_BOOL)(!fb->R1 && (fb->S || fb->Q1)); }
+
+/* ------------------------------------------------------------------ timers */
+static IEC_TIME elapsed_since(IEC_TIME start) { return ladderc_sub_IEC_LINT(ladderc_now, start); }
+
+void ladderc_TON_init(ladderc_TON *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_TON_body(ladderc_TON *fb) {
+    IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
+    if (!fb->IN) {
+        fb->Q = 0;
+        fb->ET = 0;
+        fb->running = 0;
+        return;
+    }
+    if (!fb->running) {
+        fb->running = 1;
+        fb->start = ladderc_now;
+    }
+    {
+        IEC_TIME et = elapsed_since(fb->start);
+        if (et >= pt) {
+            fb->ET = pt;
+            fb->Q = 1;
+        } else {
+            fb->ET = et;
+            fb->Q = 0;
+        }
+    }
+}
+
+void ladderc_TOF_init(ladderc_TOF *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_TOF_body(ladderc_TOF *fb) {
+    IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
+    if (fb->IN) {
+        fb->Q = 1;
+        fb->ET = 0;
+        fb->running = 0;
+        return;
+    }
+    if (!fb->Q) return; /* idle: ET keeps its value (PT after a completed delay) */
+    if (!fb->running) {
+        fb->running = 1;
+        fb->start = ladderc_now;
+    }
+    {
+        IEC_TIME et = elapsed_since(fb->start);
+        if (et >= pt) {
+            fb->ET = pt;
+            fb->Q = 0;
+            fb->running = 0;
+        } else {
+            fb->ET = et;
+        }
+    }
+}
+
+void ladderc_TP_init(ladderc_TP *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_TP_body(ladderc_TP *fb) {
+    IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
+    IEC_BOOL edge = (IEC_BOOL)(fb->IN && !fb->in_m);
+    fb->in_m = fb->IN ? 1u : 0u;
+    if (!fb->running && edge && pt > 0) {
+        fb->running = 1;
+        fb->start = ladderc_now;
+    }
+    if (fb->running) {
+        IEC_TIME et = elapsed_since(fb->start);
+        if (et >= pt) {
+            fb->running = 0;
+            fb->Q = 0;
+            fb->ET = pt;
+        } else {
+            fb->Q = 1;
+            fb->ET = et;
+        }
+    }
+    if (!fb->running && !fb->IN) fb->ET = 0;
+}
+
+/* ------------------------------------------------------------------ counters */
+void ladderc_CTU_init(ladderc_CTU *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_CTU_body(ladderc_CTU *fb) {
+    IEC_BOOL edge = (IEC_BOOL)(fb->CU && !fb->cu_m);
+    fb->cu_m = fb->CU ? 1u : 0u;
+    if (fb->R) fb->CV = 0;
+    else if (edge && fb->CV < INT16_MAX) fb->CV = (IEC_INT)(fb->CV + 1);
+    fb->Q = (IEC_BOOL)(fb->CV >= fb->PV);
+}
+void ladderc_CTD_init(ladderc_CTD *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_CTD_body(ladderc_CTD *fb) {
+    IEC_BOOL edge = (IEC_BOOL)(fb->CD && !fb->cd_m);
+    fb->cd_m = fb->CD ? 1u : 0u;
+    if (fb->LD) fb->CV = fb->PV;
+    else if (edge && fb->CV > INT16_MIN) fb->CV = (IEC_INT)(fb->CV - 1);
+    fb->Q = (IEC_BOOL)(fb->CV <= 0);
+}
+void ladderc_CTUD_init(ladderc_CTUD *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_CTUD_body(ladderc_CTUD *fb) {
+    IEC_BOOL up = (IEC_BOOL)(fb->CU && !fb->cu_m);
+    IEC_BOOL down = (IEC_BOOL)(fb->CD && !fb->cd_m);
+    fb->cu_m = fb->CU ? 1u : 0u;
+    fb->cd_m = fb->CD ? 1u : 0u;
+    if (fb->R) fb->CV = 0;
+    else if (fb->LD) fb->CV = fb->PV;
+    else if (!(up && down)) {
+        if (up && fb->CV < INT16_MAX) fb->CV = (IEC_INT)(fb->CV + 1);
+        else if (down && fb->CV > INT16_MIN) fb->CV = (IEC_INT)(fb->CV - 1);
+    }
+    fb->QU = (IEC_BOOL)(fb->CV >= fb->PV);
+    fb->QD = (IEC_BOOL)(fb->CV <= 0);
+}
+
+/* ------------------------------------------------------------------ strings */
+void ladderc_string_set(IEC_STRING *dst, const char *src, size_t len, unsigned cap) {
+    if (cap > LADDERC_STRING_CAP) cap = LADDERC_STRING_CAP;
+    if (len > cap) {
+        len = cap;
+        ladderc_errors |= LADDERC_ERR_STRING;
+    }
+    memmove(dst->data, src, len);
+    dst->data[len] = '\0';
+    dst->len = (uint16_t)len;
+}
+void ladderc_string_copy(IEC_STRING *dst, const IEC_STRING *src, unsigned cap) {
+    ladderc_string_set(dst, src->data, src->len, cap);
+}
+int ladderc_string_cmp(const IEC_STRING *a, const IEC_STRING *b) {
+    size_t n = a->len < b->len ? a->len : b->len;
+    int c = memcmp(a->data, b->data, n);
+    if (c != 0) return c < 0 ? -1 : 1;
+    return a->len == b->len ? 0 : (a->len < b->len ? -1 : 1);
+}
+void ladderc_string_concat(IEC_STRING *dst, const IEC_STRING *a, const IEC_STRING *b, unsigned cap) {
+    char buf[2 * LADDERC_STRING_CAP + 2];
+    memcpy(buf, a->data, a->len);
+    memcpy(buf + a->len, b->data, b->len);
+    ladderc_string_set(dst, buf, (size_t)a->len + b->len, cap);
+}
+IEC_STRING ladderc_str_lit(const char *bytes, size_t len) {
+    IEC_STRING s;
+    memset(&s, 0, sizeof s);
+    ladderc_string_set(&s, bytes, len, LADDERC_STRING_CAP);
+    return s;
+}
+IEC_STRING ladderc_str_cap(IEC_STRING s, unsigned cap) {
+    IEC_STRING r;
+    memset(&r, 0, sizeof r);
+    ladderc_string_set(&r, s.data, s.len, cap);
+    return r;
+}
+int ladderc_str_cmpv(IEC_STRING a, IEC_STRING b) { return ladderc_string_cmp(&a, &b); }
+void ladderc_wstring_set(IEC_WSTRING *dst, const uint16_t *src, size_t len, unsigned cap) {
+    if (cap > LADDERC_STRING_CAP) cap = LADDERC_STRING_CAP;
+    if (len > cap) {
+        len = cap;
+        ladderc_errors |= LADDERC_ERR_STRING;
+    }
+    memmove(dst->data, src, len * sizeof(uint16_t));
+    dst->data[len] = 0;
+    dst->len = (uint16_t)len;
+}
+int ladderc_wstring_cmp(const IEC_WSTRING *a, const IEC_WSTRING *b) {
+    size_t n = a->len < b->len ? a->len : b->len, i;
+    for (i = 0; i < n; i++)
+        if (a->data[i] != b->data[i]) return a->data[i] < b->data[i] ? -1 : 1;
+    return a->len == b->len ? 0 : (a->len < b->len ? -1 : 1);
+}
+
+/* ------------------------------------------------------------------ values as text (harness) */
+static const char *const type_names[] = {
+    "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD",
+    "DWORD", "LWORD", "REAL", "LREAL", "TIME", "LTIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME", "STRING"};
+
+const char *ladderc_type_name(ladderc_type t) {
+    return (unsigned)t < sizeof type_names / sizeof type_names[0] ? type_names[t] : "?";
+}
+
+static int fail(char *err, size_t errlen, const char *msg, const char *text) {
+    if (err && errlen) snprintf(err, errlen, "%s: `%s`", msg, text);
+    return -1;
+}
+
+static int fail_type(char *err, size_t errlen, const char *msg, ladderc_type t, const char *text) {
+    if (err && errlen) snprintf(err, errlen, "%s %s: `%s`", msg, ladderc_type_name(t), text);
+    return -1;
+}
+
+static int ieq_prefix(const char *s, const char *prefix) {
+    while (*prefix) {
+        if (toupper((unsigned char)*s) != toupper((unsigned char)*prefix)) return 0;
+        s++;
+        prefix++;
+    }
+    return 1;
+}
+
+/* Skips `NAME#` when NAME is one of the given prefixes (case-insensitive). */
+static const char *skip_prefix(const char *s, const char *const *prefixes) {
+    for (; *prefixes; prefixes++) {
+        size_t n = strlen(*prefixes);
+        if (ieq_prefix(s, *prefixes) && s[n] == '#') return s + n + 1;
+    }
+    return s;
+}
+
+/* IEC integer literal: [+-] digits | 2#.. | 8#.. | 16#.., underscores between digits. */
+static int parse_integer(const char *s, int *neg, uint64_t *mag) {
+    unsigned base = 10;
+    uint64_t v = 0;
+    int digits = 0;
+    *neg = 0;
+    if (*s == '+' || *s == '-') {
+        *neg = *s == '-';
+        s++;
+    }
+    if (s[0] == '2' && s[1] == '#') { base = 2; s += 2; }
+    else if (s[0] == '8' && s[1] == '#') { base = 8; s += 2; }
+    else if (s[0] == '1' && s[1] == '6' && s[2] == '#') { base = 16; s += 3; }
+    for (; *s; s++) {
+        unsigned d;
+        if (*s == '_' && digits) continue;
+        if (*s >= '0' && *s <= '9') d = (unsigned)(*s - '0');
+        else if (*s >= 'a' && *s <= 'f') d = (unsigned)(*s - 'a' + 10);
+        else if (*s >= 'A' && *s <= 'F') d = (unsigned)(*s - 'A' + 10);
+        else return -1;
+        if (d >= base) return -1;
+        if (v > (UINT64_MAX - d) / base) return -1;
+        v = v * base + d;
+        digits++;
+    }
+    if (!digits) return -1;
+    *mag = v;
+    return 0;
+}
+
+/* Duration `T#1h2m3s4ms5us6ns`, `TIME#-1.5s`, `LTIME#...`, `T#1d_2h`. */
+int ladderc_parse_duration(const char *text, IEC_TIME *out) {
+    static const char *const prefixes[] = {"LTIME", "TIME", "LT", "T", NULL};
+    const char *s = skip_prefix(text, prefixes);
+    double total = 0;
+    int neg = 0, parts = 0;
+    if (s == text) return -1;
+    if (*s == '-' || *s == '+') {
+        neg = *s == '-';
+        s++;
+    }
+    while (*s) {
+        char *end;
+        double v, unit;
+        if (*s == '_') { s++; continue; }
+        if (!isdigit((unsigned char)*s)) return -1;
+        errno = 0;
+        v = strtod(s, &end);
+        if (end == s || errno) return -1;
+        s = end;
+        if (ieq_prefix(s, "ms")) { unit = 1e6; s += 2; }
+        else if (ieq_prefix(s, "us")) { unit = 1e3; s += 2; }
+        else if (ieq_prefix(s, "ns")) { unit = 1; s += 2; }
+        else if (ieq_prefix(s, "d")) { unit = 86400e9; s += 1; }
+        else if (ieq_prefix(s, "h")) { unit = 3600e9; s += 1; }
+        else if (ieq_prefix(s, "m")) { unit = 60e9; s += 1; }
+        else if (ieq_prefix(s, "s")) { unit = 1e9; s += 1; }
+        else return -1;
+        total += v * unit;
+        parts++;
+    }
+    if (!parts || total > 9.2e18) return -1;
+    *out = (IEC_TIME)llround(neg ? -total : total);
+    return 0;
+}
+
+/* Days since 1970-01-01 from a civil date (H. Hinnant's algorithm). */
+static int64_t days_from_civil(int64_t y, unsigned m, unsigned d) {
+    int64_t era;
+    unsigned yoe, doy, doe;
+    y -= m <= 2;
+    era = (y >= 0 ? y : y - 399) / 400;
+    yoe = (unsigned)(y - era * 400);
+    doy = (153 * (m + (m > 2 ? (unsigned)-3 : 9)) + 2) / 5 + d - 1;
+    doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    return era * 146097 + (int64_t)doe - 719468;
+}
+static void civil_from_days(int64_t z, int64_t *y, unsigned *m, unsigned *d) {
+    int64_t era;
+    unsigned doe, yoe, doy, mp;
+    z += 719468;
+    era = (z >= 0 ? z : z - 146096) / 146097;
+    doe = (unsigned)(z - era * 146097);
+    yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    *y = (int64_t)yoe + era * 400;
+    doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    mp = (5 * doy + 2) / 153;
+    *d = doy - (153 * mp + 2) / 5 + 1;
+    *m = mp < 10 ? mp + 3 : mp - 9;
+    *y += *m <= 2;
+}
+
+static int parse_date(const char **sp, int64_t *days) {
+    int y, m, d, n = 0;
+    if (sscanf(*sp, "%4d-%2d-%2d%n", &y, &m, &d, &n) != 3 || m < 1 || m > 12 || d < 1 || d > 31) return -1;
+    *days = days_from_civil(y, (unsigned)m, (unsigned)d);
+    *sp += n;
+    return 0;
+}
+static int parse_tod(const char *s, IEC_TOD *out) {
+    int h, mi, n = 0;
+    double sec;
+    char *end;
+    if (sscanf(s, "%2d:%2d:%n", &h, &mi, &n) != 2 || !n || h > 23 || mi > 59 || h < 0 || mi < 0) return -1;
+    sec = strtod(s + n, &end);
+    if (end == s + n || *end || sec < 0 || sec >= 60) return -1;
+    *out = (IEC_TOD)llround(((double)h * 3600 + mi * 60 + sec) * 1e9);
+    return 0;
+}
+
+static int parse_unsigned_in(const char *s, uint64_t max, uint64_t *out) {
+    int neg;
+    uint64_t mag;
+    if (parse_integer(s, &neg, &mag) || (neg && mag) || mag > max) return -1;
+    *out = mag;
+    return 0;
+}
+static int parse_signed_in(const char *s, int64_t min, int64_t max, int64_t *out) {
+    int neg;
+    uint64_t mag;
+    if (parse_integer(s, &neg, &mag)) return -1;
+    if (neg) {
+        if (mag > (uint64_t)max + 1u || (min == 0 && mag)) return -1;
+        *out = mag == (uint64_t)max + 1u ? min : -(int64_t)mag;
+        if (*out < min) return -1;
+    } else {
+        if (mag > (uint64_t)max) return -1;
+        *out = (int64_t)mag;
+    }
+    return 0;
+}
+
+int ladderc_parse_value(ladderc_type t, const char *text, void *out, char *err, size_t errlen) {
+    static const char *const int_prefixes[] = {"SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT",
+                                               "ULINT", "BYTE", "WORD", "DWORD", "LWORD", NULL};
+    static const char *const real_prefixes[] = {"REAL", "LREAL", NULL};
+    const char *s = text;
+    int64_t sv = 0;
+    uint64_t uv = 0;
+    switch (t) {
+    case LADDERC_T_BOOL: {
+        static const char *const p[] = {"BOOL", NULL};
+        s = skip_prefix(text, p);
+        if (!strcmp(s, "1") || (ieq_prefix(s, "TRUE") && strlen(s) == 4)) *(IEC_BOOL *)out = 1;
+        else if (!strcmp(s, "0") || (ieq_prefix(s, "FALSE") && strlen(s) == 5)) *(IEC_BOOL *)out = 0;
+        else return fail(err, errlen, "expected TRUE, FALSE, 1 or 0 for a BOOL", text);
+        return 0;
+    }
+#define SIGNED_CASE(TAG, CT, MIN, MAX)                                                             \
+    case TAG:                                                                                     \
+        if (parse_signed_in(skip_prefix(text, int_prefixes), MIN, MAX, &sv))                      \
+            return fail_type(err, errlen, "expected an integer in the range of", TAG, text);      \
+        *(CT *)out = (CT)sv;                                                                      \
+        return 0;
+#define UNSIGNED_CASE(TAG, CT, MAX)                                                                \
+    case TAG:                                                                                     \
+        if (parse_unsigned_in(skip_prefix(text, int_prefixes), MAX, &uv))                         \
+            return fail_type(err, errlen, "expected an integer in the range of", TAG, text);      \
+        *(CT *)out = (CT)uv;                                                                      \
+        return 0;
+        SIGNED_CASE(LADDERC_T_SINT, IEC_SINT, INT8_MIN, INT8_MAX)
+        SIGNED_CASE(LADDERC_T_INT, IEC_INT, INT16_MIN, INT16_MAX)
+        SIGNED_CASE(LADDERC_T_DINT, IEC_DINT, INT32_MIN, INT32_MAX)
+        SIGNED_CASE(LADDERC_T_LINT, IEC_LINT, INT64_MIN, INT64_MAX)
+        UNSIGNED_CASE(LADDERC_T_USINT, IEC_USINT, UINT8_MAX)
+        UNSIGNED_CASE(LADDERC_T_UINT, IEC_UINT, UINT16_MAX)
+        UNSIGNED_CASE(LADDERC_T_UDINT, IEC_UDINT, UINT32_MAX)
+        UNSIGNED_CASE(LADDERC_T_ULINT, IEC_ULINT, UINT64_MAX)
+        UNSIGNED_CASE(LADDERC_T_BYTE, IEC_BYTE, UINT8_MAX)
+        UNSIGNED_CASE(LADDERC_T_WORD, IEC_WORD, UINT16_MAX)
+        UNSIGNED_CASE(LADDERC_T_DWORD, IEC_DWORD, UINT32_MAX)
+        UNSIGNED_CASE(LADDERC_T_LWORD, IEC_LWORD, UINT64_MAX)
+#undef SIGNED_CASE
+#undef UNSIGNED_CASE
+    case LADDERC_T_REAL:
+    case LADDERC_T_LREAL: {
+        char *end;
+        double d;
+        s = skip_prefix(text, real_prefixes);
+        errno = 0;
+        d = strtod(s, &end);
+        if (end == s || *end || isspace((unsigned char)*s))
+            return fail(err, errlen, "expected a number for a REAL", text);
+        if (t == LADDERC_T_REAL) *(IEC_REAL *)out = (IEC_REAL)d;
+        else *(IEC_LREAL *)out = d;
+        return 0;
+    }
+    case LADDERC_T_TIME:
+    case LADDERC_T_LTIME:
+        if (ladderc_parse_duration(text, (IEC_TIME *)out))
+            return fail(err, errlen, "expected a duration like T#1s500ms", text);
+        return 0;
+    case LADDERC_T_DATE: {
+        static const char *const p[] = {"DATE", "D", NULL};
+        int64_t days;
+        s = skip_prefix(text, p);
+        if (s == text || parse_date(&s, &days) || *s)
+            return fail(err, errlen, "expected a date like D#2024-01-31", text);
+        *(IEC_DATE *)out = days * 86400 * (int64_t)1000000000;
+        return 0;
+    }
+    case LADDERC_T_TOD: {
+        static const char *const p[] = {"TIME_OF_DAY", "TOD", NULL};
+        s = skip_prefix(text, p);
+        if (s == text || parse_tod(s, (IEC_TOD *)out))
+            return fail(err, errlen, "expected a time of day like TOD#12:30:00", text);
+        return 0;
+    }
+    case LADDERC_T_DT: {
+        static const char *const p[] = {"DATE_AND_TIME", "DT", NULL};
+        int64_t days;
+        IEC_TOD tod;
+        s = skip_prefix(text, p);
+        if (s == text || parse_date(&s, &days) || *s != '-' || parse_tod(s + 1, &tod))
+            return fail(err, errlen, "expected a date and time like DT#2024-01-31-12:30:00", text);
+        *(IEC_DT *)out = days * 86400 * (int64_t)1000000000 + tod;
+        return 0;
+    }
+    case LADDERC_T_STRING: {
+        size_t len = strlen(text);
+        if (len >= 2 && (text[0] == '\'' || text[0] == '"') && text[len - 1] == text[0]) {
+            text++;
+            len -= 2;
+        }
+        if (len > LADDERC_STRING_CAP) return fail(err, errlen, "string longer than 254 bytes", text);
+        ladderc_string_set((IEC_STRING *)out, text, len, LADDERC_STRING_CAP);
+        return 0;
+    }
+    }
+    return fail(err, errlen, "unsupported type", text);
+}
+
+/* `%IX3.6`, `%QW2`, `%MD4`, `%I0.1` (no size letter: a bit). */
+int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_t errlen) {
+    const char *s = text;
+    uint8_t *area;
+    uint32_t size, nbytes = 1, offset;
+    unsigned long idx, bit = 0;
+    int is_bit = 0;
+    char *end;
+    if (*s++ != '%') return fail(err, errlen, "not an address", text);
+    switch (toupper((unsigned char)*s++)) {
+    case 'I': area = ladderc_I; size = LADDERC_I_SIZE; break;
+    case 'Q': area = ladderc_Q; size = LADDERC_Q_SIZE; break;
+    case 'M': area = ladderc_M; size = LADDERC_M_SIZE; break;
+    default: return fail(err, errlen, "unknown area (expected %I, %Q or %M)", text);
+    }
+    switch (toupper((unsigned char)*s)) {
+    case 'X': is_bit = 1; s++; break;
+    case 'B': nbytes = 1; out->type = LADDERC_T_BYTE; s++; break;
+    case 'W': nbytes = 2; out->type = LADDERC_T_WORD; s++; break;
+    case 'D': nbytes = 4; out->type = LADDERC_T_DWORD; s++; break;
+    case 'L': nbytes = 8; out->type = LADDERC_T_LWORD; s++; break;
+    default: is_bit = 1; break;
+    }
+    if (!isdigit((unsigned char)*s)) return fail(err, errlen, "expected a number in the address", text);
+    errno = 0;
+    idx = strtoul(s, &end, 10);
+    if (errno || idx > 0xFFFFFFFFul) return fail(err, errlen, "address out of range", text);
+    s = end;
+    if (is_bit) {
+        if (*s != '.' || !isdigit((unsigned char)s[1]))
+            return fail(err, errlen, "a bit address needs byte.bit", text);
+        bit = strtoul(s + 1, &end, 10);
+        s = end;
+        if (bit > 7) return fail(err, errlen, "bit number above 7", text);
+        out->type = LADDERC_T_BOOL;
+    }
+    if (*s) return fail(err, errlen, "unexpected text after the address", text);
+    offset = (uint32_t)(LADDERC_ADDR_BYTE_OFFSET ? idx : idx * nbytes);
+    if ((unsigned long)offset != (LADDERC_ADDR_BYTE_OFFSET ? idx : idx * nbytes) || offset >= size ||
+        size - offset < nbytes)
+        return fail(err, errlen, "address outside the area's size in the target profile", text);
+    out->name = text;
+    out->ptr = NULL;
+    out->area = area;
+    out->offset = offset;
+    out->bit = (uint8_t)bit;
+    return 0;
+}
+
+static unsigned type_bytes(ladderc_type t) {
+    switch (t) {
+    case LADDERC_T_BOOL: case LADDERC_T_SINT: case LADDERC_T_USINT: case LADDERC_T_BYTE: return 1;
+    case LADDERC_T_INT: case LADDERC_T_UINT: case LADDERC_T_WORD: return 2;
+    case LADDERC_T_DINT: case LADDERC_T_UDINT: case LADDERC_T_DWORD: case LADDERC_T_REAL: return 4;
+    case LADDERC_T_STRING: return sizeof(IEC_STRING);
+    default: return 8;
+    }
+}
+
+/* Reads a watchable variable into `out` (a value of its C type). */
+void ladderc_read_var(const ladderc_var *v, void *out) {
+    if (!v->area) {
+        memcpy(out, v->ptr, type_bytes(v->type));
+        return;
+    }
+    if (v->type == LADDERC_T_BOOL) {
+        *(IEC_BOOL *)out = ladderc_load_bit(v->area, v->offset, v->bit);
+        return;
+    }
+    {
+        unsigned n = type_bytes(v->type);
+        uint64_t raw = ladderc_load(v->area, v->offset, n);
+        uint8_t u8 = (uint8_t)raw;
+        uint16_t u16 = (uint16_t)raw;
+        uint32_t u32 = (uint32_t)raw;
+        switch (n) {
+        case 1: memcpy(out, &u8, 1); break;
+        case 2: memcpy(out, &u16, 2); break;
+        case 4: memcpy(out, &u32, 4); break;
+        default: memcpy(out, &raw, 8); break;
+        }
+    }
+}
+
+void ladderc_write_var(const ladderc_var *v, const void *in) {
+    if (!v->area) {
+        memcpy(v->ptr, in, type_bytes(v->type));
+        return;
+    }
+    if (v->type == LADDERC_T_BOOL) {
+        ladderc_store_bit(v->area, v->offset, v->bit, *(const IEC_BOOL *)in);
+        return;
+    }
+    {
+        unsigned n = type_bytes(v->type);
+        uint8_t u8;
+        uint16_t u16;
+        uint32_t u32;
+        uint64_t raw;
+        switch (n) {
+        case 1: memcpy(&u8, in, 1); raw = u8; break;
+        case 2: memcpy(&u16, in, 2); raw = u16; break;
+        case 4: memcpy(&u32, in, 4); raw = u32; break;
+        default: memcpy(&raw, in, 8); break;
+        }
+        ladderc_store(v->area, v->offset, n, raw);
+    }
+}
+
+static void format_duration(IEC_TIME ns, char *buf, size_t len) {
+    const char *sign = ns < 0 ? "-" : "";
+    uint64_t mag = ns < 0 ? (uint64_t)0 - (uint64_t)ns : (uint64_t)ns;
+    if (mag % 1000000u == 0) snprintf(buf, len, "T#%s%llums", sign, (unsigned long long)(mag / 1000000u));
+    else if (mag % 1000u == 0) snprintf(buf, len, "T#%s%lluus", sign, (unsigned long long)(mag / 1000u));
+    else snprintf(buf, len, "T#%s%lluns", sign, (unsigned long long)mag);
+}
+
+static void format_clock(int64_t ns_of_day, char *buf, size_t len) {
+    int64_t s = ns_of_day / 1000000000, frac = ns_of_day % 1000000000;
+    if (frac == 0)
+        snprintf(buf, len, "%02d:%02d:%02d", (int)(s / 3600), (int)(s / 60 % 60), (int)(s % 60));
+    else {
+        int n;
+        n = snprintf(buf, len, "%02d:%02d:%02d.%09lld", (int)(s / 3600), (int)(s / 60 % 60), (int)(s % 60),
+                     (long long)frac);
+        while (n > 0 && (size_t)n < len && buf[n - 1] == '0') buf[--n] = '\0';
+    }
+}
+
+static void format_datetime(const char *prefix, int64_t ns, int with_time, char *buf, size_t len) {
+    int64_t day = ns >= 0 ? ns / 86400000000000LL : -((-(ns + 1)) / 86400000000000LL) - 1;
+    int64_t rem = ns - day * 86400000000000LL, y;
+    unsigned m, d;
+    char clock[32];
+    civil_from_days(day, &y, &m, &d);
+    if (!with_time) {
+        snprintf(buf, len, "%s#%04lld-%02u-%02u", prefix, (long long)y, m, d);
+        return;
+    }
+    format_clock(rem, clock, sizeof clock);
+    snprintf(buf, len, "%s#%04lld-%02u-%02u-%s", prefix, (long long)y, m, d, clock);
+}
+
+/* The shortest %g rendering that reads back to the same value. */
+static void format_real(double v, int is_float, char *buf, size_t len) {
+    int p;
+    for (p = is_float ? 6 : 15; p <= (is_float ? 9 : 17); p++) {
+        snprintf(buf, len, "%.*g", p, v);
+        if (is_float ? (float)strtod(buf, NULL) == (float)v : strtod(buf, NULL) == v) return;
+    }
+}
+
+void ladderc_format_value(ladderc_type t, const void *value, char *buf, size_t len) {
+    switch (t) {
+    case LADDERC_T_BOOL: snprintf(buf, len, "%d", *(const IEC_BOOL *)value ? 1 : 0); break;
+    case LADDERC_T_SINT: snprintf(buf, len, "%d", (int)*(const IEC_SINT *)value); break;
+    case LADDERC_T_INT: snprintf(buf, len, "%d", (int)*(const IEC_INT *)value); break;
+    case LADDERC_T_DINT: snprintf(buf, len, "%ld", (long)*(const IEC_DINT *)value); break;
+    case LADDERC_T_LINT: snprintf(buf, len, "%lld", (long long)*(const IEC_LINT *)value); break;
+    case LADDERC_T_USINT: case LADDERC_T_BYTE: snprintf(buf, len, "%u", (unsigned)*(const uint8_t *)value); break;
+    case LADDERC_T_UINT: case LADDERC_T_WORD: snprintf(buf, len, "%u", (unsigned)*(const uint16_t *)value); break;
+    case LADDERC_T_UDINT: case LADDERC_T_DWORD: snprintf(buf, len, "%lu", (unsigned long)*(const uint32_t *)value); break;
+    case LADDERC_T_ULINT: case LADDERC_T_LWORD: snprintf(buf, len, "%llu", (unsigned long long)*(const uint64_t *)value); break;
+    case LADDERC_T_REAL: format_real(*(const IEC_REAL *)value, 1, buf, len); break;
+    case LADDERC_T_LREAL: format_real(*(const IEC_LREAL *)value, 0, buf, len); break;
+    case LADDERC_T_TIME: case LADDERC_T_LTIME: format_duration(*(const IEC_TIME *)value, buf, len); break;
+    case LADDERC_T_DATE: format_datetime("D", *(const IEC_DATE *)value, 0, buf, len); break;
+    case LADDERC_T_DT: format_datetime("DT", *(const IEC_DT *)value, 1, buf, len); break;
+    case LADDERC_T_TOD: {
+        char clock[32];
+        int64_t ns = *(const IEC_TOD *)value;
+        format_clock(ns < 0 ? 0 : ns, clock, sizeof clock);
+        snprintf(buf, len, "TOD#%s", clock);
+        break;
+    }
+    case LADDERC_T_STRING: {
+        /* CSV field: always quoted, quotes doubled. */
+        const IEC_STRING *s = (const IEC_STRING *)value;
+        size_t o = 0, i;
+        if (len < 3) { if (len) buf[0] = '\0'; break; }
+        buf[o++] = '"';
+        for (i = 0; i < s->len && o + 3 < len; i++) {
+            if (s->data[i] == '"') buf[o++] = '"';
+            buf[o++] = s->data[i];
+        }
+        buf[o++] = '"';
+        buf[o] = '\0';
+        break;
+    }
+    default: snprintf(buf, len, "?"); break;
+    }
+}

@@ -1,0 +1,372 @@
+/* ladderc runtime: IEC 61131-3 elementary types, standard function blocks, standard-function helpers,
+ * the process image (%I/%Q/%M byte areas with byte-order-aware load/store) and the scan clock.
+ *
+ * C99, no undefined behaviour for any input: integer arithmetic wraps like the IEC type's width
+ * (computed in unsigned arithmetic, converted back without implementation-defined casts), division and
+ * modulo by zero give 0 and set LADDERC_ERR_DIV_ZERO in ladderc_errors, REAL to integer conversions
+ * round to nearest and saturate (NaN gives 0) and set LADDERC_ERR_RANGE when they saturate.
+ *
+ * The generated program supplies ladderc_config.h (the target profile as macros) and the definitions of
+ * the areas, the variable table, ladderc_program_init() and ladderc_program_scan().
+ */
+#ifndef LADDERC_RT_H
+#define LADDERC_RT_H
+
+#include <stdint.h>
+#include <stddef.h>
+#include <string.h>
+#include <math.h>
+
+#include "ladderc_config.h"
+
+#ifndef LADDERC_I_SIZE
+#error "ladderc_config.h must define LADDERC_I_SIZE"
+#endif
+
+/* ------------------------------------------------------------------ elementary types */
+typedef uint8_t IEC_BOOL; /* always 0 or 1 */
+typedef int8_t IEC_SINT;
+typedef int16_t IEC_INT;
+typedef int32_t IEC_DINT;
+typedef int64_t IEC_LINT;
+typedef uint8_t IEC_USINT;
+typedef uint16_t IEC_UINT;
+typedef uint32_t IEC_UDINT;
+typedef uint64_t IEC_ULINT;
+typedef uint8_t IEC_BYTE;
+typedef uint16_t IEC_WORD;
+typedef uint32_t IEC_DWORD;
+typedef uint64_t IEC_LWORD;
+typedef float IEC_REAL;
+typedef double IEC_LREAL;
+typedef int64_t IEC_TIME;  /* nanoseconds */
+typedef int64_t IEC_LTIME; /* nanoseconds */
+typedef int64_t IEC_DATE;  /* nanoseconds since 1970-01-01 (always a whole day) */
+typedef int64_t IEC_TOD;   /* nanoseconds since midnight */
+typedef int64_t IEC_DT;    /* nanoseconds since 1970-01-01T00:00:00 */
+
+#define LADDERC_STRING_CAP 254
+typedef struct {
+    uint16_t len;
+    char data[LADDERC_STRING_CAP + 1]; /* always NUL-terminated */
+} IEC_STRING;
+typedef struct {
+    uint16_t len;
+    uint16_t data[LADDERC_STRING_CAP + 1];
+} IEC_WSTRING;
+
+/* ------------------------------------------------------------------ runtime state */
+#define LADDERC_ERR_DIV_ZERO 1u /* integer DIV or MOD by zero: result 0 */
+#define LADDERC_ERR_RANGE 2u    /* REAL to integer conversion out of range or NaN: saturated */
+#define LADDERC_ERR_BOUNDS 4u   /* array index out of its declared range: element 0 used instead */
+#define LADDERC_ERR_STRING 8u   /* string truncated to its capacity */
+
+extern uint32_t ladderc_errors;  /* sticky error flags, LADDERC_ERR_* */
+extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set before each cycle */
+extern uint64_t ladderc_cycle;   /* the current cycle number, from 0 */
+
+/* The process image (defined by the generated program, sizes from the target profile). */
+extern uint8_t ladderc_I[LADDERC_I_SIZE];
+extern uint8_t ladderc_Q[LADDERC_Q_SIZE];
+extern uint8_t ladderc_M[LADDERC_M_SIZE];
+/* The TM (temporary) area for parameter passing: a window of the %M area. */
+#define LADDERC_TM (ladderc_M + LADDERC_TM_OFFSET)
+
+/* ------------------------------------------------------------------ integer helpers (no UB) */
+static inline int8_t ladderc_wrap_i8(uint64_t u) {
+    u &= 0xFFu;
+    return u <= 0x7Fu ? (int8_t)u : (int8_t)((int)u - 256);
+}
+static inline int16_t ladderc_wrap_i16(uint64_t u) {
+    u &= 0xFFFFu;
+    return u <= 0x7FFFu ? (int16_t)u : (int16_t)((int32_t)u - 65536);
+}
+static inline int32_t ladderc_wrap_i32(uint64_t u) {
+    u &= 0xFFFFFFFFu;
+    return u <= 0x7FFFFFFFu ? (int32_t)u : (int32_t)((int64_t)u - 4294967296LL);
+}
+static inline int64_t ladderc_wrap_i64(uint64_t u) {
+    return u <= (uint64_t)INT64_MAX ? (int64_t)u : -(int64_t)(~u) - 1;
+}
+
+#define LADDERC_ARITH_SIGNED(T, W)                                                                 \
+    static inline T ladderc_add_##T(T a, T b) { return ladderc_wrap_##W((uint64_t)a + (uint64_t)b); } \
+    static inline T ladderc_sub_##T(T a, T b) { return ladderc_wrap_##W((uint64_t)a - (uint64_t)b); } \
+    static inline T ladderc_mul_##T(T a, T b) { return ladderc_wrap_##W((uint64_t)a * (uint64_t)b); } \
+    static inline T ladderc_neg_##T(T a) { return ladderc_wrap_##W(0u - (uint64_t)a); }              \
+    static inline T ladderc_div_##T(T a, T b) {                                                   \
+        if (b == 0) { ladderc_errors |= LADDERC_ERR_DIV_ZERO; return 0; }                         \
+        if (b == -1) return ladderc_neg_##T(a);                                                   \
+        return (T)(a / b);                                                                        \
+    }                                                                                             \
+    static inline T ladderc_mod_##T(T a, T b) {                                                   \
+        if (b == 0) { ladderc_errors |= LADDERC_ERR_DIV_ZERO; return 0; }                         \
+        if (b == -1) return 0;                                                                    \
+        return (T)(a % b);                                                                        \
+    }
+#define LADDERC_ARITH_UNSIGNED(T, MASK)                                                            \
+    static inline T ladderc_add_##T(T a, T b) { return (T)(((uint64_t)a + (uint64_t)b) & MASK); }  \
+    static inline T ladderc_sub_##T(T a, T b) { return (T)(((uint64_t)a - (uint64_t)b) & MASK); }  \
+    static inline T ladderc_mul_##T(T a, T b) { return (T)(((uint64_t)a * (uint64_t)b) & MASK); }  \
+    static inline T ladderc_neg_##T(T a) { return (T)((0u - (uint64_t)a) & MASK); }                \
+    static inline T ladderc_div_##T(T a, T b) {                                                   \
+        if (b == 0) { ladderc_errors |= LADDERC_ERR_DIV_ZERO; return 0; }                         \
+        return (T)(a / b);                                                                        \
+    }                                                                                             \
+    static inline T ladderc_mod_##T(T a, T b) {                                                   \
+        if (b == 0) { ladderc_errors |= LADDERC_ERR_DIV_ZERO; return 0; }                         \
+        return (T)(a % b);                                                                        \
+    }
+
+LADDERC_ARITH_SIGNED(IEC_SINT, i8)
+LADDERC_ARITH_SIGNED(IEC_INT, i16)
+LADDERC_ARITH_SIGNED(IEC_DINT, i32)
+LADDERC_ARITH_SIGNED(IEC_LINT, i64)
+LADDERC_ARITH_UNSIGNED(IEC_USINT, 0xFFu)
+LADDERC_ARITH_UNSIGNED(IEC_UINT, 0xFFFFu)
+LADDERC_ARITH_UNSIGNED(IEC_UDINT, 0xFFFFFFFFu)
+LADDERC_ARITH_UNSIGNED(IEC_ULINT, 0xFFFFFFFFFFFFFFFFu)
+
+/* REAL arithmetic is plain IEEE 754; MOD on REAL is not IEC. ABS/EXPT etc. below. */
+static inline IEC_REAL ladderc_div_IEC_REAL(IEC_REAL a, IEC_REAL b) { return a / b; }
+static inline IEC_LREAL ladderc_div_IEC_LREAL(IEC_LREAL a, IEC_LREAL b) { return a / b; }
+
+/* Shifts and rotates on bit strings: a shift by the width or more gives 0; a negative count gives the
+ * value unchanged; rotates take the count modulo the width. */
+#define LADDERC_SHIFTS(T, BITS)                                                                    \
+    static inline T ladderc_shl_##T(T v, int64_t n) {                                             \
+        if (n < 0) return v;                                                                      \
+        return n >= BITS ? (T)0 : (T)(((uint64_t)v << n) & (T)~(T)0);                             \
+    }                                                                                             \
+    static inline T ladderc_shr_##T(T v, int64_t n) {                                             \
+        if (n < 0) return v;                                                                      \
+        return n >= BITS ? (T)0 : (T)((uint64_t)v >> n);                                          \
+    }                                                                                             \
+    static inline T ladderc_rol_##T(T v, int64_t n) {                                             \
+        unsigned s = (unsigned)(((n % BITS) + BITS) % BITS);                                       \
+        if (s == 0) return v;                                                                     \
+        return (T)((((uint64_t)v << s) | ((uint64_t)v >> (BITS - s))) & (T)~(T)0);                \
+    }                                                                                             \
+    static inline T ladderc_ror_##T(T v, int64_t n) {                                             \
+        unsigned s = (unsigned)(((n % BITS) + BITS) % BITS);                                       \
+        if (s == 0) return v;                                                                     \
+        return (T)((((uint64_t)v >> s) | ((uint64_t)v << (BITS - s))) & (T)~(T)0);                \
+    }
+LADDERC_SHIFTS(IEC_BYTE, 8)
+LADDERC_SHIFTS(IEC_WORD, 16)
+LADDERC_SHIFTS(IEC_DWORD, 32)
+LADDERC_SHIFTS(IEC_LWORD, 64)
+
+/* REAL -> integer: round half away from zero, saturate, NaN -> 0 (flags LADDERC_ERR_RANGE). */
+static inline int64_t ladderc_real_to_int(double x, int64_t lo, int64_t hi) {
+    double r;
+    if (x != x) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    r = x < 0 ? -floor(-x + 0.5) : floor(x + 0.5);
+    if (r <= (double)lo) { if (r < (double)lo) ladderc_errors |= LADDERC_ERR_RANGE; return lo; }
+    if (r >= (double)hi) { if (r > (double)hi) ladderc_errors |= LADDERC_ERR_RANGE; return hi; }
+    return (int64_t)r;
+}
+static inline uint64_t ladderc_real_to_uint(double x, uint64_t hi) {
+    double r;
+    if (x != x) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    r = floor(x + 0.5);
+    if (r <= 0.0) { if (r < 0.0) ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    if (r >= (double)hi) { if (r > (double)hi) ladderc_errors |= LADDERC_ERR_RANGE; return hi; }
+    return (uint64_t)r;
+}
+/* REAL_TO_TIME and friends: x is in milliseconds. */
+static inline IEC_TIME ladderc_ms_to_time(double ms) { return (IEC_TIME)ladderc_real_to_int(ms * 1e6, INT64_MIN, INT64_MAX); }
+
+/* The next due time of a cyclic task: the first multiple of `iv` after `due` that is later than `now`. */
+static inline IEC_TIME ladderc_next_due(IEC_TIME due, IEC_TIME now, IEC_TIME iv) {
+    IEC_LINT late = ladderc_sub_IEC_LINT(now, due);
+    IEC_LINT steps = late < 0 ? 1 : ladderc_add_IEC_LINT(ladderc_div_IEC_LINT(late, iv), 1);
+    return ladderc_add_IEC_LINT(due, ladderc_mul_IEC_LINT(steps, iv));
+}
+
+/* DT_TO_DATE / DT_TO_TOD: the day part and the time-of-day part (floor division, no overflow). */
+#define LADDERC_NS_PER_DAY INT64_C(86400000000000)
+static inline IEC_TOD ladderc_dt_to_tod(IEC_DT dt) {
+    int64_t r = dt % LADDERC_NS_PER_DAY;
+    return r < 0 ? r + LADDERC_NS_PER_DAY : r;
+}
+static inline IEC_DATE ladderc_dt_to_date(IEC_DT dt) { return ladderc_sub_IEC_LINT(dt, ladderc_dt_to_tod(dt)); }
+
+/* BCD: invalid digits (> 9) give 0 and LADDERC_ERR_RANGE. */
+static inline uint64_t ladderc_bcd_to_uint(uint64_t bcd) {
+    uint64_t v = 0, mul = 1;
+    while (bcd) {
+        uint64_t d = bcd & 0xFu;
+        if (d > 9) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+        v += d * mul;
+        mul *= 10;
+        bcd >>= 4;
+    }
+    return v;
+}
+static inline uint64_t ladderc_uint_to_bcd(uint64_t v) {
+    uint64_t bcd = 0;
+    unsigned shift = 0;
+    while (v && shift < 64) {
+        bcd |= (v % 10) << shift;
+        v /= 10;
+        shift += 4;
+    }
+    return bcd;
+}
+
+/* Standard functions that take any numeric type are emitted by the generator as these macros; every
+ * argument is a plain C value (a local or a constant), so double evaluation is harmless. */
+#define LADDERC_MAX(a, b) ((a) > (b) ? (a) : (b))
+#define LADDERC_MIN(a, b) ((a) < (b) ? (a) : (b))
+#define LADDERC_LIMIT(mn, in, mx) ((in) < (mn) ? (mn) : ((in) > (mx) ? (mx) : (in)))
+#define LADDERC_SEL(g, in0, in1) ((g) ? (in1) : (in0))
+
+/* Comparisons and ordering as functions, so that comparing an unsigned value with a constant 0 never
+ * trips -Wtype-limits in generated code. */
+#define LADDERC_ORDERED(T)                                                                         \
+    static inline IEC_BOOL ladderc_gt_##T(T a, T b) { return a > b; }                              \
+    static inline IEC_BOOL ladderc_ge_##T(T a, T b) { return a >= b; }                            \
+    static inline IEC_BOOL ladderc_eq_##T(T a, T b) { return a == b; }                            \
+    static inline IEC_BOOL ladderc_ne_##T(T a, T b) { return a != b; }                            \
+    static inline IEC_BOOL ladderc_le_##T(T a, T b) { return a <= b; }                            \
+    static inline IEC_BOOL ladderc_lt_##T(T a, T b) { return a < b; }                              \
+    static inline T ladderc_max_##T(T a, T b) { return a > b ? a : b; }                            \
+    static inline T ladderc_min_##T(T a, T b) { return a < b ? a : b; }                            \
+    static inline T ladderc_limit_##T(T mn, T in, T mx) { return in < mn ? mn : (in > mx ? mx : in); }
+LADDERC_ORDERED(IEC_SINT)
+LADDERC_ORDERED(IEC_INT)
+LADDERC_ORDERED(IEC_DINT)
+LADDERC_ORDERED(IEC_LINT)
+LADDERC_ORDERED(IEC_USINT)
+LADDERC_ORDERED(IEC_UINT)
+LADDERC_ORDERED(IEC_UDINT)
+LADDERC_ORDERED(IEC_ULINT)
+LADDERC_ORDERED(IEC_REAL)
+LADDERC_ORDERED(IEC_LREAL)
+
+/* ABS on signed integers wraps like the type (ABS of the most negative value is itself). */
+static inline IEC_SINT ladderc_abs_IEC_SINT(IEC_SINT a) { return a < 0 ? ladderc_neg_IEC_SINT(a) : a; }
+static inline IEC_INT ladderc_abs_IEC_INT(IEC_INT a) { return a < 0 ? ladderc_neg_IEC_INT(a) : a; }
+static inline IEC_DINT ladderc_abs_IEC_DINT(IEC_DINT a) { return a < 0 ? ladderc_neg_IEC_DINT(a) : a; }
+static inline IEC_LINT ladderc_abs_IEC_LINT(IEC_LINT a) { return a < 0 ? ladderc_neg_IEC_LINT(a) : a; }
+
+/* The zero-based offset of index i in lo..hi; out of range gives 0 and sets LADDERC_ERR_BOUNDS. */
+static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi) {
+    if (i < lo || i > hi) { ladderc_errors |= LADDERC_ERR_BOUNDS; return 0; }
+    return (size_t)((uint64_t)i - (uint64_t)lo);
+}
+
+/* ------------------------------------------------------------------ strings */
+void ladderc_string_set(IEC_STRING *dst, const char *src, size_t len, unsigned cap);
+void ladderc_string_copy(IEC_STRING *dst, const IEC_STRING *src, unsigned cap);
+int ladderc_string_cmp(const IEC_STRING *a, const IEC_STRING *b);
+void ladderc_string_concat(IEC_STRING *dst, const IEC_STRING *a, const IEC_STRING *b, unsigned cap);
+void ladderc_wstring_set(IEC_WSTRING *dst, const uint16_t *src, size_t len, unsigned cap);
+int ladderc_wstring_cmp(const IEC_WSTRING *a, const IEC_WSTRING *b);
+/* A string value from a literal (bytes, length), and value-based helpers for generated code. */
+IEC_STRING ladderc_str_lit(const char *bytes, size_t len);
+IEC_STRING ladderc_str_cap(IEC_STRING s, unsigned cap);
+int ladderc_str_cmpv(IEC_STRING a, IEC_STRING b);
+
+/* ------------------------------------------------------------------ process image access */
+/* Byte order from the profile: LADDERC_BIG_ENDIAN is 0 (little) or 1 (big). Loads and stores go byte by
+ * byte, never through an unaligned pointer cast. Offsets are checked by the generator (E2xxx), so they
+ * are always inside the area. */
+static inline uint64_t ladderc_load(const uint8_t *area, uint32_t offset, unsigned nbytes) {
+    uint64_t v = 0;
+    unsigned i;
+    for (i = 0; i < nbytes; i++) {
+        unsigned idx = LADDERC_BIG_ENDIAN ? i : nbytes - 1 - i;
+        v = (v << 8) | area[offset + idx];
+    }
+    return v;
+}
+static inline void ladderc_store(uint8_t *area, uint32_t offset, unsigned nbytes, uint64_t v) {
+    unsigned i;
+    for (i = 0; i < nbytes; i++) {
+        unsigned idx = LADDERC_BIG_ENDIAN ? nbytes - 1 - i : i;
+        area[offset + idx] = (uint8_t)(v & 0xFFu);
+        v >>= 8;
+    }
+}
+/* Bit `bit` of byte `offset` (bit 0 is the least significant unless LADDERC_BIT_MSB0). */
+#if LADDERC_BIT_MSB0
+#define LADDERC_BITMASK(bit) ((uint8_t)(0x80u >> (bit)))
+#else
+#define LADDERC_BITMASK(bit) ((uint8_t)(1u << (bit)))
+#endif
+static inline IEC_BOOL ladderc_load_bit(const uint8_t *area, uint32_t offset, unsigned bit) {
+    return (area[offset] & LADDERC_BITMASK(bit)) ? 1u : 0u;
+}
+static inline void ladderc_store_bit(uint8_t *area, uint32_t offset, unsigned bit, IEC_BOOL v) {
+    if (v) area[offset] = (uint8_t)(area[offset] | LADDERC_BITMASK(bit));
+    else area[offset] = (uint8_t)(area[offset] & (uint8_t)~LADDERC_BITMASK(bit));
+}
+static inline float ladderc_bits_to_real(uint32_t u) { float f; memcpy(&f, &u, sizeof f); return f; }
+static inline uint32_t ladderc_real_to_bits(float f) { uint32_t u; memcpy(&u, &f, sizeof u); return u; }
+static inline double ladderc_bits_to_lreal(uint64_t u) { double f; memcpy(&f, &u, sizeof f); return f; }
+static inline uint64_t ladderc_lreal_to_bits(double f) { uint64_t u; memcpy(&u, &f, sizeof u); return u; }
+
+/* ------------------------------------------------------------------ standard function blocks */
+/* Field names are the IEC parameter names; hidden state is lower-case. Each FB has _init (the IEC
+ * initial values, all zero) and _body (one execution with the current inputs). Timers read ladderc_now. */
+typedef struct { IEC_BOOL CLK, Q, m; } ladderc_R_TRIG;
+typedef struct { IEC_BOOL CLK, Q, m; } ladderc_F_TRIG;
+typedef struct { IEC_BOOL S1, R, Q1; } ladderc_SR;
+typedef struct { IEC_BOOL S, R1, Q1; } ladderc_RS;
+typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; } ladderc_TON;
+typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; } ladderc_TOF;
+typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; IEC_BOOL in_m; } ladderc_TP;
+typedef struct { IEC_BOOL CU, R; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cu_m; } ladderc_CTU;
+typedef struct { IEC_BOOL CD, LD; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cd_m; } ladderc_CTD;
+typedef struct { IEC_BOOL CU, CD, R, LD; IEC_INT PV; IEC_BOOL QU, QD; IEC_INT CV; IEC_BOOL cu_m, cd_m; } ladderc_CTUD;
+
+#define LADDERC_FB_DECL(N)                                                                         \
+    void ladderc_##N##_init(ladderc_##N *fb);                                                     \
+    void ladderc_##N##_body(ladderc_##N *fb);
+LADDERC_FB_DECL(R_TRIG)
+LADDERC_FB_DECL(F_TRIG)
+LADDERC_FB_DECL(SR)
+LADDERC_FB_DECL(RS)
+LADDERC_FB_DECL(TON)
+LADDERC_FB_DECL(TOF)
+LADDERC_FB_DECL(TP)
+LADDERC_FB_DECL(CTU)
+LADDERC_FB_DECL(CTD)
+LADDERC_FB_DECL(CTUD)
+
+/* ------------------------------------------------------------------ the harness contract */
+typedef enum {
+    LADDERC_T_BOOL, LADDERC_T_SINT, LADDERC_T_INT, LADDERC_T_DINT, LADDERC_T_LINT,
+    LADDERC_T_USINT, LADDERC_T_UINT, LADDERC_T_UDINT, LADDERC_T_ULINT,
+    LADDERC_T_BYTE, LADDERC_T_WORD, LADDERC_T_DWORD, LADDERC_T_LWORD,
+    LADDERC_T_REAL, LADDERC_T_LREAL, LADDERC_T_TIME, LADDERC_T_LTIME,
+    LADDERC_T_DATE, LADDERC_T_TOD, LADDERC_T_DT, LADDERC_T_STRING
+} ladderc_type;
+
+/* A watchable variable: either in memory (ptr) or located in an area (area != NULL: offset, bit). */
+typedef struct {
+    const char *name; /* `main.count`, `inst.count`, `%QX0.1` */
+    ladderc_type type;
+    void *ptr;
+    uint8_t *area;
+    uint32_t offset;
+    uint8_t bit;
+} ladderc_var;
+
+extern const ladderc_var ladderc_vars[];
+extern const size_t ladderc_var_count;
+void ladderc_program_init(void);
+void ladderc_program_scan(void);
+
+/* Harness helpers (ladderc_rt.c), also usable by tests. Return 0 on success, -1 with a message in err. */
+int ladderc_parse_value(ladderc_type t, const char *text, void *out, char *err, size_t errlen);
+int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_t errlen);
+void ladderc_read_var(const ladderc_var *v, void *out);
+void ladderc_write_var(const ladderc_var *v, const void *in);
+void ladderc_format_value(ladderc_type t, const void *value, char *buf, size_t len);
+int ladderc_parse_duration(const char *text, IEC_TIME *out);
+const char *ladderc_type_name(ladderc_type t);
+
+#endif

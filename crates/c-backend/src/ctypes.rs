@@ -1,0 +1,337 @@
+//! C spellings of IEC types and constant values.
+//!
+//! Input: resolved [`Type`]s and [`ConstValue`]s from the sema model. Output: C type names, declarators,
+//! literal expressions of an exact C type. Invariants: every literal is emitted with an explicit cast or
+//! suffix of its IEC type's C type, integer literals never overflow their C spelling (the most negative
+//! values are written as `(-MAX - 1)`), reals are written in round-trip precision.
+
+use crate::mangle;
+use il_frontend::sema::{ConstValue, Elementary, FbType, Model, StdFb, Type};
+
+use Elementary as E;
+
+/// The runtime typedef of an elementary type.
+pub fn elementary(e: Elementary) -> &'static str {
+    match e {
+        E::Bool => "IEC_BOOL",
+        E::Sint => "IEC_SINT",
+        E::Int => "IEC_INT",
+        E::Dint => "IEC_DINT",
+        E::Lint => "IEC_LINT",
+        E::Usint => "IEC_USINT",
+        E::Uint => "IEC_UINT",
+        E::Udint => "IEC_UDINT",
+        E::Ulint => "IEC_ULINT",
+        E::Byte => "IEC_BYTE",
+        E::Word => "IEC_WORD",
+        E::Dword => "IEC_DWORD",
+        E::Lword => "IEC_LWORD",
+        E::Real => "IEC_REAL",
+        E::Lreal => "IEC_LREAL",
+        E::Time => "IEC_TIME",
+        E::Ltime => "IEC_LTIME",
+        E::Date => "IEC_DATE",
+        E::Tod => "IEC_TOD",
+        E::Dt => "IEC_DT",
+    }
+}
+
+/// The harness's type tag (`LADDERC_T_INT`).
+pub fn type_tag(e: Elementary) -> &'static str {
+    match e {
+        E::Bool => "LADDERC_T_BOOL",
+        E::Sint => "LADDERC_T_SINT",
+        E::Int => "LADDERC_T_INT",
+        E::Dint => "LADDERC_T_DINT",
+        E::Lint => "LADDERC_T_LINT",
+        E::Usint => "LADDERC_T_USINT",
+        E::Uint => "LADDERC_T_UINT",
+        E::Udint => "LADDERC_T_UDINT",
+        E::Ulint => "LADDERC_T_ULINT",
+        E::Byte => "LADDERC_T_BYTE",
+        E::Word => "LADDERC_T_WORD",
+        E::Dword => "LADDERC_T_DWORD",
+        E::Lword => "LADDERC_T_LWORD",
+        E::Real => "LADDERC_T_REAL",
+        E::Lreal => "LADDERC_T_LREAL",
+        E::Time => "LADDERC_T_TIME",
+        E::Ltime => "LADDERC_T_LTIME",
+        E::Date => "LADDERC_T_DATE",
+        E::Tod => "LADDERC_T_TOD",
+        E::Dt => "LADDERC_T_DT",
+    }
+}
+
+/// The runtime type whose ordering helpers (`ladderc_gt_<T>`) compare values of `e`.
+pub fn ordered_helper_type(e: Elementary) -> &'static str {
+    match e {
+        E::Bool | E::Usint | E::Byte => "IEC_USINT",
+        E::Uint | E::Word => "IEC_UINT",
+        E::Udint | E::Dword => "IEC_UDINT",
+        E::Ulint | E::Lword => "IEC_ULINT",
+        E::Sint => "IEC_SINT",
+        E::Int => "IEC_INT",
+        E::Dint => "IEC_DINT",
+        E::Real => "IEC_REAL",
+        E::Lreal => "IEC_LREAL",
+        E::Lint | E::Time | E::Ltime | E::Date | E::Tod | E::Dt => "IEC_LINT",
+    }
+}
+
+/// The runtime type whose wrapping arithmetic (`ladderc_add_<T>`) applies to `e` (None: plain C operators,
+/// for REAL/LREAL).
+pub fn arith_helper_type(e: Elementary) -> Option<&'static str> {
+    match e {
+        E::Real | E::Lreal => None,
+        E::Bool | E::Usint | E::Byte => Some("IEC_USINT"),
+        E::Uint | E::Word => Some("IEC_UINT"),
+        E::Udint | E::Dword => Some("IEC_UDINT"),
+        E::Ulint | E::Lword => Some("IEC_ULINT"),
+        E::Sint => Some("IEC_SINT"),
+        E::Int => Some("IEC_INT"),
+        E::Dint => Some("IEC_DINT"),
+        E::Lint | E::Time | E::Ltime | E::Date | E::Tod | E::Dt => Some("IEC_LINT"),
+    }
+}
+
+/// A standard FB's runtime struct and its public parameters `(name, type, is_input)` in IEC order.
+pub fn std_fb(fb: StdFb) -> (&'static str, &'static [(&'static str, Elementary, bool)]) {
+    const TRIG: &[(&str, E, bool)] = &[("CLK", E::Bool, true), ("Q", E::Bool, false)];
+    const TIMER: &[(&str, E, bool)] = &[
+        ("IN", E::Bool, true),
+        ("PT", E::Time, true),
+        ("Q", E::Bool, false),
+        ("ET", E::Time, false),
+    ];
+    match fb {
+        StdFb::RTrig => ("ladderc_R_TRIG", TRIG),
+        StdFb::FTrig => ("ladderc_F_TRIG", TRIG),
+        StdFb::Sr => (
+            "ladderc_SR",
+            &[
+                ("S1", E::Bool, true),
+                ("R", E::Bool, true),
+                ("Q1", E::Bool, false),
+            ],
+        ),
+        StdFb::Rs => (
+            "ladderc_RS",
+            &[
+                ("S", E::Bool, true),
+                ("R1", E::Bool, true),
+                ("Q1", E::Bool, false),
+            ],
+        ),
+        StdFb::Ton => ("ladderc_TON", TIMER),
+        StdFb::Tof => ("ladderc_TOF", TIMER),
+        StdFb::Tp => ("ladderc_TP", TIMER),
+        StdFb::Ctu => (
+            "ladderc_CTU",
+            &[
+                ("CU", E::Bool, true),
+                ("R", E::Bool, true),
+                ("PV", E::Int, true),
+                ("Q", E::Bool, false),
+                ("CV", E::Int, false),
+            ],
+        ),
+        StdFb::Ctd => (
+            "ladderc_CTD",
+            &[
+                ("CD", E::Bool, true),
+                ("LD", E::Bool, true),
+                ("PV", E::Int, true),
+                ("Q", E::Bool, false),
+                ("CV", E::Int, false),
+            ],
+        ),
+        StdFb::Ctud => (
+            "ladderc_CTUD",
+            &[
+                ("CU", E::Bool, true),
+                ("CD", E::Bool, true),
+                ("R", E::Bool, true),
+                ("LD", E::Bool, true),
+                ("PV", E::Int, true),
+                ("QU", E::Bool, false),
+                ("QD", E::Bool, false),
+                ("CV", E::Int, false),
+            ],
+        ),
+    }
+}
+
+/// The C base type of `ty` (arrays: the element's), or `None` for `Type::Error`.
+pub fn base(model: &Model, ty: &Type) -> Option<String> {
+    Some(match ty {
+        Type::Elementary(e) | Type::Subrange { base: e, .. } => elementary(*e).to_string(),
+        Type::String { wide: false, .. } => "IEC_STRING".into(),
+        Type::String { wide: true, .. } => "IEC_WSTRING".into(),
+        Type::Array { element, .. } => return base(model, element),
+        Type::Struct(id) => mangle::user_type(&model.user_type(*id).name),
+        Type::Enum(_) => "IEC_DINT".into(),
+        Type::Fb(FbType::Standard(f)) => std_fb(*f).0.to_string(),
+        Type::Fb(FbType::User(id)) => mangle::fb(&model.pou(*id).name),
+        Type::Error => return None,
+    })
+}
+
+/// `[n1][n2]` for arrays (nested arrays flatten into more dimensions), empty otherwise.
+pub fn dims(ty: &Type) -> String {
+    let mut s = String::new();
+    let mut t = ty;
+    while let Type::Array { dims, element } = t {
+        for d in dims {
+            s.push_str(&format!("[{}]", d.len().max(1)));
+        }
+        t = element;
+    }
+    s
+}
+
+/// A declaration `T name[dims]` (without the semicolon).
+pub fn declare(model: &Model, ty: &Type, name: &str) -> Option<String> {
+    Some(format!("{} {name}{}", base(model, ty)?, dims(ty)))
+}
+
+/// An integer constant as a C expression of type `e` (wrapped into the type's range).
+pub fn int_literal(e: Elementary, v: i128) -> String {
+    let ct = elementary(e);
+    match e {
+        E::Bool => (if v != 0 { "1" } else { "0" }).to_string(),
+        E::Real => format!("((IEC_REAL){v}.0)"),
+        E::Lreal => format!("((IEC_LREAL){v}.0)"),
+        E::Usint | E::Uint | E::Udint | E::Ulint | E::Byte | E::Word | E::Dword | E::Lword => {
+            let bits = e.bit_width();
+            let masked = (v as u128)
+                & if bits >= 64 {
+                    u64::MAX as u128
+                } else {
+                    (1u128 << bits) - 1
+                };
+            format!("(({ct})UINT64_C({masked}))")
+        }
+        _ => {
+            let bits = e.bit_width().min(64);
+            let m = (v as u128)
+                & if bits >= 64 {
+                    u64::MAX as u128
+                } else {
+                    (1u128 << bits) - 1
+                };
+            // sign-extend from `bits`
+            let sv = if bits < 128 && m >> (bits - 1) & 1 == 1 {
+                m as i128 - (1i128 << bits)
+            } else {
+                m as i128
+            };
+            if sv == i64::MIN as i128 {
+                format!("(({ct})(-INT64_C(9223372036854775807) - 1))")
+            } else if sv < 0 {
+                format!("(({ct})-INT64_C({}))", -sv)
+            } else {
+                format!("(({ct})INT64_C({sv}))")
+            }
+        }
+    }
+}
+
+/// A real constant of type `e` (REAL or LREAL; other types get the value converted like a literal).
+pub fn real_literal(e: Elementary, v: f64) -> String {
+    let text = if v.is_finite() {
+        let t = format!("{v:?}");
+        if t.contains(['.', 'e', 'E']) {
+            t
+        } else {
+            format!("{t}.0")
+        }
+    } else if v.is_nan() {
+        "(0.0/0.0)".into()
+    } else if v > 0.0 {
+        "HUGE_VAL".into()
+    } else {
+        "(-HUGE_VAL)".into()
+    };
+    match e {
+        E::Real => format!("((IEC_REAL){text})"),
+        E::Lreal => format!("((IEC_LREAL){text})"),
+        _ if e.is_integer() || e.is_bit() => int_literal(e, v.round() as i128),
+        _ => format!("(({}){text})", elementary(e)),
+    }
+}
+
+/// A constant as a C expression of elementary type `e` (None when the value does not fit such a type).
+pub fn const_elementary(model: &Model, e: Elementary, v: &ConstValue) -> Option<String> {
+    Some(match v {
+        ConstValue::Bool(b) => int_literal(e, i128::from(*b)),
+        ConstValue::Int(i) => {
+            if e.is_real() {
+                real_literal(e, *i as f64)
+            } else if e.is_duration() {
+                // an integer written for a TIME: milliseconds (as the conversions do)
+                int_literal(E::Lint, i.saturating_mul(1_000_000))
+            } else {
+                int_literal(e, *i)
+            }
+        }
+        ConstValue::Real(r) => real_literal(e, *r),
+        ConstValue::Duration(ns) | ConstValue::DateAndTime(ns) => int_literal(e, *ns),
+        ConstValue::TimeOfDay(ns) => int_literal(e, i128::from(*ns)),
+        ConstValue::Date(days) => int_literal(e, i128::from(*days) * 86_400_000_000_000),
+        ConstValue::Enum { ty, index } => {
+            let value = enum_value(model, *ty, *index)?;
+            int_literal(e, value)
+        }
+        ConstValue::String { .. } | ConstValue::Array(_) | ConstValue::Struct(_) => return None,
+    })
+}
+
+/// The integer value of the `index`-th enumerator of enum type `ty`.
+pub fn enum_value(model: &Model, ty: il_frontend::sema::TypeId, index: usize) -> Option<i128> {
+    match &model.types.get(ty.0 as usize)?.def {
+        il_frontend::sema::UserTypeDef::Enum { values, .. } => values.get(index).map(|v| v.1),
+        _ => None,
+    }
+}
+
+/// A string literal as an `IEC_STRING` value expression.
+pub fn string_value(value: &str) -> String {
+    format!(
+        "ladderc_str_lit({}, {})",
+        mangle::c_string(value.as_bytes()),
+        value.len()
+    )
+}
+
+/// The capacity of a string type (bytes), capped at the runtime's.
+pub fn string_cap(ty: &Type) -> u32 {
+    match ty {
+        Type::String { len, .. } => (*len).clamp(1, 254),
+        _ => 254,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn integer_literals_wrap_and_never_overflow_c() {
+        assert_eq!(int_literal(E::Int, 5), "((IEC_INT)INT64_C(5))");
+        assert_eq!(int_literal(E::Int, 32768), "((IEC_INT)-INT64_C(32768))");
+        assert_eq!(int_literal(E::Int, -32768), "((IEC_INT)-INT64_C(32768))");
+        assert_eq!(
+            int_literal(E::Lint, i64::MIN as i128),
+            "((IEC_LINT)(-INT64_C(9223372036854775807) - 1))"
+        );
+        assert_eq!(int_literal(E::Word, -1), "((IEC_WORD)UINT64_C(65535))");
+        assert_eq!(int_literal(E::Bool, 7), "1");
+    }
+
+    #[test]
+    fn real_literals_round_trip() {
+        assert_eq!(real_literal(E::Lreal, 23.6), "((IEC_LREAL)23.6)");
+        assert_eq!(real_literal(E::Real, 1.0), "((IEC_REAL)1.0)");
+        assert_eq!(real_literal(E::Lreal, -12e-5), "((IEC_LREAL)-0.00012)");
+    }
+}

@@ -1,0 +1,197 @@
+//! Initial values: C statements that give a zeroed variable its IEC initial value.
+//!
+//! Input: a C lvalue (already zeroed by `memset` or static storage), its type, the declared initial value.
+//! Output: assignments for the non-zero parts only (element-wise for arrays, field-wise for structs, the
+//! INIT function plus parameter values for FB instances). Invariants: output size is proportional to the
+//! declared initialisers and the number of FB/struct elements needing non-zero defaults.
+
+use super::Gen;
+use crate::{ctypes, mangle};
+use diagnostics::Span;
+use il_frontend::sema::{ConstValue, FbType, Type, UserTypeDef};
+use std::fmt::Write as _;
+
+impl Gen<'_> {
+    /// Whether a zeroed value of `ty` differs from its IEC default.
+    pub fn needs_default_init(&self, ty: &Type) -> bool {
+        match ty {
+            Type::Array { element, .. } => self.needs_default_init(element),
+            Type::Struct(id) => match &self.model.user_type(*id).def {
+                UserTypeDef::Struct { fields } => fields
+                    .iter()
+                    .any(|f| f.init.is_some() || self.needs_default_init(&f.ty)),
+                _ => false,
+            },
+            Type::Enum(id) => match &self.model.user_type(*id).def {
+                UserTypeDef::Enum { values, default } => {
+                    values.get(*default).is_some_and(|v| v.1 != 0)
+                }
+                _ => false,
+            },
+            Type::Subrange { lower, upper, .. } => *lower > 0 || *upper < 0,
+            Type::Fb(FbType::User(_)) => true,
+            _ => false,
+        }
+    }
+
+    pub fn init_value(
+        &mut self,
+        out: &mut String,
+        indent: usize,
+        lv: &str,
+        ty: &Type,
+        init: Option<&ConstValue>,
+        span: Span,
+    ) {
+        let pad = "    ".repeat(indent);
+        match (ty, init) {
+            (Type::Fb(fb), init) => {
+                match fb {
+                    FbType::Standard(f) => {
+                        let _ = writeln!(out, "{pad}{}_init(&{lv});", ctypes::std_fb(*f).0);
+                    }
+                    FbType::User(id) => {
+                        let _ = writeln!(
+                            out,
+                            "{pad}{}_INIT(&{lv});",
+                            mangle::fb(&self.model.pou(*id).name)
+                        );
+                    }
+                }
+                if let Some(ConstValue::Struct(params)) = init {
+                    for (name, v) in params {
+                        let (field, fty) = match fb {
+                            FbType::Standard(f) => {
+                                match ctypes::std_fb(*f)
+                                    .1
+                                    .iter()
+                                    .find(|p| p.0.eq_ignore_ascii_case(name))
+                                {
+                                    Some(p) => (format!("{lv}.{}", p.0), Type::Elementary(p.1)),
+                                    None => continue,
+                                }
+                            }
+                            FbType::User(id) => match self.model.pou(*id).var(name) {
+                                Some(var) => {
+                                    (format!("{lv}.{}", mangle::var(&var.name)), var.ty.clone())
+                                }
+                                None => continue,
+                            },
+                        };
+                        self.init_value(out, indent, &field, &fty, Some(v), span);
+                    }
+                }
+            }
+            (Type::Struct(id), init) => {
+                let UserTypeDef::Struct { fields } = self.model.user_type(*id).def.clone() else {
+                    return;
+                };
+                let given: &[(String, ConstValue)] = match init {
+                    Some(ConstValue::Struct(v)) => v,
+                    _ => &[],
+                };
+                for f in &fields {
+                    let v = given
+                        .iter()
+                        .find(|(n, _)| n.eq_ignore_ascii_case(&f.name))
+                        .map(|x| &x.1)
+                        .or(f.init.as_ref());
+                    if v.is_none() && !self.needs_default_init(&f.ty) {
+                        continue;
+                    }
+                    let field = format!("{lv}.{}", mangle::var(&f.name));
+                    self.init_value(out, indent, &field, &f.ty, v, span);
+                }
+            }
+            (Type::Array { dims, element }, init) => {
+                let lens: Vec<u128> = dims.iter().map(|d| d.len().max(1)).collect();
+                if self.needs_default_init(element) {
+                    // a loop nest giving every element its default
+                    let mut e = lv.to_string();
+                    let _ = writeln!(out, "{pad}{{");
+                    for d in 0..lens.len() {
+                        let _ = writeln!(out, "{pad}    size_t i_{indent}_{d};");
+                        let _ = write!(e, "[i_{indent}_{d}]");
+                    }
+                    for (d, len) in lens.iter().enumerate() {
+                        let _ = writeln!(
+                            out,
+                            "{pad}    for (i_{indent}_{d} = 0; i_{indent}_{d} < {len}u; i_{indent}_{d}++)"
+                        );
+                    }
+                    let mut inner = String::new();
+                    self.init_value(&mut inner, indent + 2, &e, element, None, span);
+                    let _ = writeln!(out, "{pad}    {{\n{inner}{pad}    }}");
+                    let _ = writeln!(out, "{pad}}}");
+                }
+                if let Some(ConstValue::Array(elems)) = init {
+                    for (k, v) in elems.iter().enumerate() {
+                        // row-major index decomposition
+                        let mut rest = k as u128;
+                        let mut idx = vec![0u128; lens.len()];
+                        for (d, len) in lens.iter().enumerate().rev() {
+                            idx[d] = rest % len;
+                            rest /= len;
+                        }
+                        if rest > 0 {
+                            break; // more values than elements (sema reports it)
+                        }
+                        let mut el = lv.to_string();
+                        for i in &idx {
+                            let _ = write!(el, "[{i}]");
+                        }
+                        self.init_value(out, indent, &el, element, Some(v), span);
+                    }
+                }
+            }
+            (Type::String { wide: false, .. }, Some(ConstValue::String { value, .. })) => {
+                let _ = writeln!(
+                    out,
+                    "{pad}ladderc_string_set(&{lv}, {}, {}, {});",
+                    mangle::c_string(value.as_bytes()),
+                    value.len(),
+                    ctypes::string_cap(ty)
+                );
+            }
+            (Type::String { .. }, _) => {}
+            (Type::Enum(id), v) => {
+                let value = match v {
+                    Some(ConstValue::Enum { ty, index }) => {
+                        ctypes::enum_value(self.model, *ty, *index)
+                    }
+                    Some(ConstValue::Int(i)) => Some(*i),
+                    _ => match &self.model.user_type(*id).def {
+                        UserTypeDef::Enum { values, default } => values.get(*default).map(|x| x.1),
+                        _ => None,
+                    },
+                };
+                if let Some(v) = value.filter(|v| *v != 0) {
+                    let _ = writeln!(
+                        out,
+                        "{pad}{lv} = {};",
+                        ctypes::int_literal(il_frontend::sema::Elementary::Dint, v)
+                    );
+                }
+            }
+            (t, v) => {
+                let Some(e) = t.elementary() else { return };
+                let v = match (v, t) {
+                    (Some(v), _) => ctypes::const_elementary(self.model, e, v),
+                    (None, Type::Subrange { lower, upper, .. }) if *lower > 0 || *upper < 0 => {
+                        Some(ctypes::int_literal(e, *lower))
+                    }
+                    _ => None,
+                };
+                match v {
+                    Some(v) => {
+                        let _ = writeln!(out, "{pad}{lv} = {v};");
+                    }
+                    None if init.is_some() => {
+                        self.unsupported(span, "this initial value");
+                    }
+                    None => {}
+                }
+            }
+        }
+    }
+}

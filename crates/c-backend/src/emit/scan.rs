@@ -1,0 +1,494 @@
+//! The scan entry point and the watchable-variable table.
+//!
+//! Input: the model's configurations (tasks, program instances) or, without a configuration, its
+//! PROGRAMs; the AST configurations (program instance arguments, task interval/single operands).
+//! Output: `ladderc_program_init`, `ladderc_program_scan` and `ladderc_vars[]` in `program.c`.
+//! Invariants: each cycle runs every task whose interval has elapsed on the scan clock (a task due at
+//! 0, I, 2I ...; a task slower than the cycle runs on the first cycle at or after its due time), in
+//! priority order (lower number first, then declaration order), then the program instances without a
+//! task; SINGLE tasks run once per rising edge of their variable; without a configuration, every
+//! PROGRAM runs each cycle in source order. Table names: `<instance>.<var>[.<field>|[i]]...`, globals by
+//! their own name, located variables alias the process image.
+
+use super::scope::{area_array, Place, Scope};
+use super::Gen;
+use crate::{ctypes, mangle};
+use il_frontend::ast::{ArgDir, CompilationUnit, LibraryElement, PouKind, VarKind};
+use il_frontend::sema::{FbType, PouId, Type, UserTypeDef, Variable};
+use std::fmt::Write as _;
+
+/// Arrays with more elements than this are left out of the table (they stay usable in the program).
+const MAX_WATCHED_ARRAY: u128 = 1024;
+/// Upper bound of table entries, so that a huge instance tree cannot make the table unbounded.
+const MAX_ENTRIES: usize = 1_000_000;
+
+/// A program instance to run.
+struct Instance {
+    /// C variable name.
+    c_name: String,
+    /// Table prefix (as written).
+    watch_name: String,
+    pou: PouId,
+    /// (config, resource, index in resource.programs) for configured instances.
+    configured: Option<(usize, usize, usize)>,
+}
+
+impl Gen<'_> {
+    fn instances(&self) -> Vec<Instance> {
+        let mut v = Vec::new();
+        if self.model.configurations.is_empty() {
+            for (i, p) in self.model.pous.iter().enumerate() {
+                if p.kind == PouKind::Program {
+                    v.push(Instance {
+                        c_name: mangle::implicit_instance(&p.name),
+                        watch_name: p.name.clone(),
+                        pou: PouId(i as u32),
+                        configured: None,
+                    });
+                }
+            }
+        } else {
+            for (ci, cfg) in self.model.configurations.iter().enumerate() {
+                for (ri, r) in cfg.resources.iter().enumerate() {
+                    for (pi, p) in r.programs.iter().enumerate() {
+                        v.push(Instance {
+                            c_name: mangle::program_instance(ci, ri, &p.name),
+                            watch_name: p.name.clone(),
+                            pou: p.pou,
+                            configured: Some((ci, ri, pi)),
+                        });
+                    }
+                }
+            }
+        }
+        v
+    }
+
+    pub fn scan(&mut self, units: &[CompilationUnit], c: &mut String) {
+        let ast_configs: Vec<&il_frontend::ast::Configuration> = units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .filter_map(|i| match i {
+                LibraryElement::Configuration(c) => Some(c),
+                _ => None,
+            })
+            .collect();
+        let instances = self.instances();
+        for inst in &instances {
+            let s = match self.model.pou(inst.pou).kind {
+                PouKind::Program => mangle::program(&self.model.pou(inst.pou).name),
+                _ => mangle::fb(&self.model.pou(inst.pou).name),
+            };
+            let _ = writeln!(c, "{s} {};", inst.c_name);
+        }
+        // tasks, flattened over configurations and resources
+        let mut tasks = Vec::new();
+        for (ci, cfg) in self.model.configurations.iter().enumerate() {
+            for (ri, r) in cfg.resources.iter().enumerate() {
+                for (ti, t) in r.tasks.iter().enumerate() {
+                    tasks.push((ci, ri, ti, t.priority));
+                }
+            }
+        }
+        tasks.sort_by_key(|t| t.3);
+        let n_tasks = tasks.len();
+        if n_tasks > 0 {
+            let _ = writeln!(
+                c,
+                "static IEC_TIME ladderc_task_due[{n_tasks}];\nstatic IEC_BOOL ladderc_task_trig[{n_tasks}];"
+            );
+        }
+        // init
+        c.push_str("\nvoid ladderc_program_init(void) {\n");
+        for i in 0..self.model.globals.len() {
+            let v = self.model.globals[i].clone();
+            self.init_global(c, &v, mangle::global_free(&v.name));
+        }
+        for ci in 0..self.model.configurations.len() {
+            let cfg = self.model.configurations[ci].clone();
+            for v in &cfg.globals {
+                self.init_global(c, v, mangle::global_config(ci, &v.name));
+            }
+            for (ri, r) in cfg.resources.iter().enumerate() {
+                for v in &r.globals {
+                    self.init_global(c, v, mangle::global_resource(ci, ri, &v.name));
+                }
+            }
+        }
+        for inst in &instances {
+            let s = self.instance_struct(inst.pou);
+            let _ = writeln!(c, "    {s}_INIT(&{});", inst.c_name);
+        }
+        if n_tasks > 0 {
+            c.push_str("    memset(ladderc_task_due, 0, sizeof ladderc_task_due);\n");
+            c.push_str("    memset(ladderc_task_trig, 0, sizeof ladderc_task_trig);\n");
+        }
+        c.push_str("}\n\nvoid ladderc_program_scan(void) {\n");
+        for (k, &(ci, ri, ti, _)) in tasks.iter().enumerate() {
+            let task = self.model.configurations[ci].resources[ri].tasks[ti].clone();
+            let ast_task = ast_configs
+                .get(ci)
+                .and_then(|c| c.resources.get(ri))
+                .and_then(|r| r.tasks.get(ti));
+            let scope = Scope::for_config(ci, ri);
+            let _ = writeln!(c, "    /* task {k} */\n    {{");
+            let single = ast_task.and_then(|t| t.single.as_ref());
+            let guard = if let Some(op) = single {
+                let v = self
+                    .value(&scope, op, &Type::BOOL)
+                    .unwrap_or_else(|| "0".into());
+                let _ = writeln!(c, "        IEC_BOOL trig = {v};");
+                let _ = writeln!(
+                    c,
+                    "        IEC_BOOL run = (IEC_BOOL)(trig && !ladderc_task_trig[{k}]);"
+                );
+                let _ = writeln!(c, "        ladderc_task_trig[{k}] = trig;");
+                "run".to_string()
+            } else {
+                let iv = match (task.interval_ns, ast_task.and_then(|t| t.interval.as_ref())) {
+                    (Some(ns), _) => {
+                        ctypes::int_literal(il_frontend::sema::Elementary::Lint, ns as i128)
+                    }
+                    (None, Some(op)) => self
+                        .value(&scope, op, &Type::TIME)
+                        .unwrap_or_else(|| "0".into()),
+                    (None, None) => "0".into(),
+                };
+                let _ = writeln!(c, "        IEC_TIME iv = {iv};");
+                let _ = writeln!(
+                    c,
+                    "        IEC_BOOL run = (IEC_BOOL)(iv <= 0 || ladderc_now >= ladderc_task_due[{k}]);"
+                );
+                let _ = writeln!(
+                    c,
+                    "        if (run && iv > 0) ladderc_task_due[{k}] = ladderc_next_due(ladderc_task_due[{k}], ladderc_now, iv);"
+                );
+                "run".to_string()
+            };
+            let _ = writeln!(c, "        if ({guard}) {{");
+            for inst in &instances {
+                if let Some((ici, iri, ipi)) = inst.configured {
+                    let p = &self.model.configurations[ici].resources[iri].programs[ipi];
+                    if ici == ci && iri == ri && p.task == Some(ti) {
+                        self.run_instance(c, inst, &ast_configs, 3);
+                    }
+                }
+            }
+            c.push_str("        }\n    }\n");
+        }
+        for inst in &instances {
+            let background = match inst.configured {
+                None => true,
+                Some((ci, ri, pi)) => self.model.configurations[ci].resources[ri].programs[pi]
+                    .task
+                    .is_none(),
+            };
+            if background {
+                self.run_instance(c, inst, &ast_configs, 1);
+            }
+        }
+        c.push_str("}\n\n");
+        self.var_table(c, &instances);
+    }
+
+    fn instance_struct(&self, pou: PouId) -> String {
+        let p = self.model.pou(pou);
+        match p.kind {
+            PouKind::Program => mangle::program(&p.name),
+            _ => mangle::fb(&p.name),
+        }
+    }
+
+    fn init_global(&mut self, c: &mut String, v: &Variable, name: String) {
+        if v.location.is_some() {
+            // located globals start from the (zeroed) process image; an initial value is written there
+            if let Some(init) = &v.init {
+                if let Some(e) = v.ty.elementary() {
+                    if let Some(val) = ctypes::const_elementary(self.model, e, init) {
+                        if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
+                            let _ =
+                                writeln!(c, "    {}", super::scope::store_expr(&loc, &ty, &val));
+                        }
+                    }
+                }
+            }
+            return;
+        }
+        self.init_value(c, 1, &name, &v.ty, v.init.as_ref(), v.span);
+    }
+
+    fn located_global(&mut self, v: &Variable) -> Option<Place> {
+        let loc = v.location.as_ref()?;
+        let addr = il_frontend::ast::DirectAddress {
+            area: loc.area,
+            size: loc.size,
+            path: loc.path.clone(),
+            span: v.span,
+        };
+        let bytes = if v.ty.is_bool() {
+            None
+        } else {
+            super::scope::access_bytes(&v.ty)
+        };
+        match self.profile.locate(&addr, bytes) {
+            Ok(l) => Some(Place::Loc {
+                loc: l,
+                ty: v.ty.clone(),
+            }),
+            Err(d) => {
+                self.report_once(*d);
+                None
+            }
+        }
+    }
+
+    /// Runs one program instance: argument inputs, body, argument outputs.
+    fn run_instance(
+        &mut self,
+        c: &mut String,
+        inst: &Instance,
+        ast_configs: &[&il_frontend::ast::Configuration],
+        indent: usize,
+    ) {
+        let pad = "    ".repeat(indent);
+        let s = self.instance_struct(inst.pou);
+        let args = inst.configured.and_then(|(ci, ri, pi)| {
+            ast_configs
+                .get(ci)
+                .and_then(|c| c.resources.get(ri))
+                .and_then(|r| r.programs.get(pi))
+                .map(|p| (ci, ri, p.args.clone()))
+        });
+        let pou = self.model.pou(inst.pou).clone();
+        if let Some((ci, ri, args)) = &args {
+            let scope = Scope::for_config(*ci, *ri);
+            for a in args {
+                let Some(param) = pou.var(&a.name.name) else {
+                    self.unsupported(a.span, "an argument that is not a parameter of the program");
+                    continue;
+                };
+                let field = Place::Mem {
+                    lv: format!("{}.{}", inst.c_name, mangle::var(&param.name)),
+                    ty: param.ty.clone(),
+                };
+                match a.dir {
+                    ArgDir::Input => {
+                        if let Some(v) = self.value(&scope, &a.value, &param.ty) {
+                            let st = self.store(&field, &v);
+                            let _ = writeln!(c, "{pad}{st}");
+                        }
+                    }
+                    ArgDir::Output { .. } => {}
+                }
+            }
+        }
+        let _ = writeln!(c, "{pad}{s}_BODY(&{});", inst.c_name);
+        if let Some((ci, ri, args)) = &args {
+            let scope = Scope::for_config(*ci, *ri);
+            for a in args {
+                let ArgDir::Output { negated } = a.dir else {
+                    continue;
+                };
+                let Some(param) = pou.var(&a.name.name) else {
+                    continue;
+                };
+                let il_frontend::ast::Operand::Var(r) = &a.value else {
+                    self.unsupported(
+                        a.span,
+                        "a program output bound to something other than a variable",
+                    );
+                    continue;
+                };
+                let Some(target) = self.place(&scope, r) else {
+                    continue;
+                };
+                let src = format!("{}.{}", inst.c_name, mangle::var(&param.name));
+                let src = if negated {
+                    super::body::negated(&src, &param.ty)
+                } else {
+                    src
+                };
+                let v = super::scope::convert(&src, &param.ty, target.ty());
+                let st = self.store(&target, &v);
+                let _ = writeln!(c, "{pad}{st}");
+            }
+        }
+    }
+
+    fn var_table(&mut self, c: &mut String, instances: &[Instance]) {
+        let mut entries = Vec::new();
+        for i in 0..self.model.globals.len() {
+            let v = self.model.globals[i].clone();
+            self.watch_var(
+                &v,
+                v.name.clone(),
+                mangle::global_free(&v.name),
+                &mut entries,
+            );
+        }
+        for ci in 0..self.model.configurations.len() {
+            let cfg = self.model.configurations[ci].clone();
+            for v in &cfg.globals {
+                self.watch_var(
+                    v,
+                    v.name.clone(),
+                    mangle::global_config(ci, &v.name),
+                    &mut entries,
+                );
+            }
+            for (ri, r) in cfg.resources.iter().enumerate() {
+                for v in &r.globals {
+                    self.watch_var(
+                        v,
+                        v.name.clone(),
+                        mangle::global_resource(ci, ri, &v.name),
+                        &mut entries,
+                    );
+                }
+            }
+        }
+        for inst in instances {
+            let pou = self.model.pou(inst.pou).clone();
+            for v in &pou.vars {
+                if matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp) {
+                    continue;
+                }
+                let name = format!("{}.{}", inst.watch_name, v.name);
+                let lv = format!("{}.{}", inst.c_name, mangle::var(&v.name));
+                self.watch_var(v, name, lv, &mut entries);
+            }
+        }
+        c.push_str("const ladderc_var ladderc_vars[] = {\n");
+        if entries.is_empty() {
+            c.push_str("    { NULL, LADDERC_T_BOOL, NULL, NULL, 0, 0 }\n");
+        }
+        for e in &entries {
+            let _ = writeln!(c, "    {e},");
+        }
+        let _ = writeln!(
+            c,
+            "}};\nconst size_t ladderc_var_count = {};",
+            entries.len()
+        );
+    }
+
+    fn watch_var(&mut self, v: &Variable, name: String, lv: String, out: &mut Vec<String>) {
+        if v.location.is_some() {
+            if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
+                let tag = match ty {
+                    Type::Enum(_) => "LADDERC_T_DINT",
+                    ref t => match t.elementary() {
+                        Some(e) => ctypes::type_tag(e),
+                        None => return,
+                    },
+                };
+                out.push(format!(
+                    "{{ {}, {tag}, NULL, {}, {}, {} }}",
+                    mangle::c_string(name.as_bytes()),
+                    area_array(loc.area),
+                    loc.offset,
+                    loc.bit.unwrap_or(0)
+                ));
+            }
+            return;
+        }
+        self.watch_value(&name, &lv, &v.ty.clone(), 0, out);
+    }
+
+    fn watch_value(
+        &mut self,
+        name: &str,
+        lv: &str,
+        ty: &Type,
+        depth: usize,
+        out: &mut Vec<String>,
+    ) {
+        if out.len() >= MAX_ENTRIES || depth > 16 {
+            return;
+        }
+        let cname = mangle::c_string(name.as_bytes());
+        match ty {
+            Type::Enum(_) => out.push(format!(
+                "{{ {cname}, LADDERC_T_DINT, (void *)&{lv}, NULL, 0, 0 }}"
+            )),
+            Type::Elementary(_) | Type::Subrange { .. } => {
+                if let Some(e) = ty.elementary() {
+                    out.push(format!(
+                        "{{ {cname}, {}, (void *)&{lv}, NULL, 0, 0 }}",
+                        ctypes::type_tag(e)
+                    ));
+                }
+            }
+            Type::String { wide: false, .. } => out.push(format!(
+                "{{ {cname}, LADDERC_T_STRING, (void *)&{lv}, NULL, 0, 0 }}"
+            )),
+            Type::Struct(id) => {
+                if let UserTypeDef::Struct { fields } = self.model.user_type(*id).def.clone() {
+                    for f in &fields {
+                        self.watch_value(
+                            &format!("{name}.{}", f.name),
+                            &format!("{lv}.{}", mangle::var(&f.name)),
+                            &f.ty,
+                            depth + 1,
+                            out,
+                        );
+                    }
+                }
+            }
+            Type::Fb(FbType::Standard(f)) => {
+                for (p, e, _) in ctypes::std_fb(*f).1 {
+                    out.push(format!(
+                        "{{ {}, {}, (void *)&{lv}.{p}, NULL, 0, 0 }}",
+                        mangle::c_string(format!("{name}.{p}").as_bytes()),
+                        ctypes::type_tag(*e)
+                    ));
+                }
+            }
+            Type::Fb(FbType::User(id)) => {
+                let pou = self.model.pou(*id).clone();
+                for v in &pou.vars {
+                    if v.location.is_some()
+                        || matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp)
+                    {
+                        continue;
+                    }
+                    self.watch_value(
+                        &format!("{name}.{}", v.name),
+                        &format!("{lv}.{}", mangle::var(&v.name)),
+                        &v.ty,
+                        depth + 1,
+                        out,
+                    );
+                }
+            }
+            Type::Array { dims, element } => {
+                let total: u128 = dims.iter().map(|d| d.len()).product();
+                if total == 0 || total > MAX_WATCHED_ARRAY {
+                    return;
+                }
+                for k in 0..total {
+                    let mut rest = k;
+                    let mut idx = vec![0u128; dims.len()];
+                    for (d, dim) in dims.iter().enumerate().rev() {
+                        idx[d] = rest % dim.len();
+                        rest /= dim.len();
+                    }
+                    let iec: Vec<String> = idx
+                        .iter()
+                        .zip(dims)
+                        .map(|(i, d)| (d.lower + *i as i128).to_string())
+                        .collect();
+                    let c_idx: String = idx.iter().map(|i| format!("[{i}]")).collect();
+                    self.watch_value(
+                        &format!("{name}[{}]", iec.join(",")),
+                        &format!("{lv}{c_idx}"),
+                        element,
+                        depth + 1,
+                        out,
+                    );
+                }
+            }
+            _ => {}
+        }
+    }
+}

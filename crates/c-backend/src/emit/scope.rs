@@ -1,0 +1,722 @@
+//! Name resolution and value access inside one POU (or a configuration): IEC operands to C expressions.
+//!
+//! Input: an operand (variable reference, direct address, literal, enum value) and the POU's resolved
+//! variables. Output: a [`Place`] (a C lvalue, or a located process-image access) and C value expressions
+//! of a requested IEC type. Invariants: reads and writes of located data go through the byte-order-aware
+//! runtime helpers; array indexes go through `ladderc_index` (out-of-range: element 0 and an error flag);
+//! every produced expression is fully parenthesised.
+
+use super::Gen;
+use crate::ctypes;
+use crate::mangle;
+use crate::profile::Located;
+use diagnostics::{code, Diagnostic, Span};
+use il_frontend::ast::{Accessor, Area, Literal, LiteralKind, Operand, PouKind, VarKind, VarRef};
+use il_frontend::sema::{Elementary, FbType, GlobalRef, Pou, PouId, Type, UserTypeDef, Variable};
+use std::collections::HashMap;
+
+use Elementary as E;
+
+/// Where a value lives.
+#[derive(Debug, Clone)]
+pub enum Place {
+    /// A C lvalue (`self->v_x`, `(*v_io)`, `g_x`, `self->v_t.Q`).
+    Mem { lv: String, ty: Type },
+    /// A located variable or a direct address in the process image.
+    Loc { loc: Located, ty: Type },
+}
+
+impl Place {
+    pub fn ty(&self) -> &Type {
+        match self {
+            Place::Mem { ty, .. } | Place::Loc { ty, .. } => ty,
+        }
+    }
+}
+
+/// The variables visible in a body: a POU's own, or (for configuration code) none.
+pub struct Scope<'m> {
+    pub pou: Option<(&'m Pou, PouId)>,
+    vars: HashMap<String, usize>,
+    externals: HashMap<usize, GlobalRef>,
+    /// Configuration code (task intervals, program instance arguments): its configuration index.
+    pub config: Option<(usize, usize)>,
+    /// Set when the body reads or writes the implicit `EN` / `ENO`.
+    pub uses_en: std::cell::Cell<bool>,
+}
+
+impl<'m> Scope<'m> {
+    pub fn for_pou(pou: &'m Pou, id: PouId) -> Self {
+        let vars = pou
+            .vars
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (v.name.to_ascii_uppercase(), i))
+            .collect();
+        Scope {
+            pou: Some((pou, id)),
+            vars,
+            externals: pou.externals.iter().copied().collect(),
+            config: None,
+            uses_en: std::cell::Cell::new(false),
+        }
+    }
+    pub fn for_config(config: usize, resource: usize) -> Self {
+        Scope {
+            pou: None,
+            vars: HashMap::new(),
+            externals: HashMap::new(),
+            config: Some((config, resource)),
+            uses_en: std::cell::Cell::new(false),
+        }
+    }
+}
+
+/// The C lvalue of POU variable `v` seen from its own body.
+pub fn own_var_lvalue(kind: PouKind, v: &Variable) -> String {
+    let name = mangle::var(&v.name);
+    match (kind, v.kind) {
+        (PouKind::Function, VarKind::Output | VarKind::InOut) => format!("(*{name})"),
+        (PouKind::Function, _) => name,
+        (_, VarKind::InOut) => format!("(*self->{name})"),
+        _ => format!("self->{name}"),
+    }
+}
+
+/// Size in bytes used to access a located variable of type `ty` (None: not an elementary type).
+pub fn access_bytes(ty: &Type) -> Option<u32> {
+    let e = match ty {
+        Type::Enum(_) => return Some(4),
+        _ => ty.elementary()?,
+    };
+    Some(e.size_bytes())
+}
+
+pub fn area_array(area: Area) -> &'static str {
+    match area {
+        Area::Input => "ladderc_I",
+        Area::Output => "ladderc_Q",
+        Area::Memory => "ladderc_M",
+    }
+}
+
+impl Gen<'_> {
+    /// A construct this backend does not translate (E2005).
+    pub fn unsupported(&mut self, span: Span, what: impl Into<String>) {
+        let what = what.into();
+        self.report_once(
+            Diagnostic::error(
+                code::E2005,
+                format!("the C backend does not support {what}"),
+            )
+            .at(span)
+            .with_primary_label("not supported here"),
+        );
+    }
+
+    /// The C name of a global variable.
+    pub fn global_name(&self, r: GlobalRef) -> String {
+        let v = self.model.global(r);
+        match r {
+            GlobalRef::Free(_) => mangle::global_free(&v.name),
+            GlobalRef::Configuration { config, .. } => mangle::global_config(config, &v.name),
+            GlobalRef::Resource {
+                config, resource, ..
+            } => mangle::global_resource(config, resource, &v.name),
+        }
+    }
+
+    /// The place of a global (located globals alias the process image).
+    pub fn global_place(&mut self, r: GlobalRef, span: Span) -> Option<Place> {
+        let v = self.model.global(r).clone();
+        if let Some(loc) = &v.location {
+            return self.locate_var(&v, loc, span);
+        }
+        Some(Place::Mem {
+            lv: self.global_name(r),
+            ty: v.ty.clone(),
+        })
+    }
+
+    fn locate_var(
+        &mut self,
+        v: &Variable,
+        loc: &il_frontend::sema::Location,
+        span: Span,
+    ) -> Option<Place> {
+        let Some(bytes) = access_bytes(&v.ty) else {
+            self.unsupported(span, "a located variable of a non-elementary type");
+            return None;
+        };
+        let addr = il_frontend::ast::DirectAddress {
+            area: loc.area,
+            size: loc.size,
+            path: loc.path.clone(),
+            span: v.span,
+        };
+        let bytes = if v.ty.is_bool() { None } else { Some(bytes) };
+        match self.profile.locate(&addr, bytes) {
+            Ok(l) => Some(Place::Loc {
+                loc: l,
+                ty: v.ty.clone(),
+            }),
+            Err(d) => {
+                self.report_once(*d);
+                None
+            }
+        }
+    }
+
+    /// Reports a diagnostic unless the same code was already reported at the same span, or the
+    /// generator is only probing (`quiet`).
+    pub fn report_once(&mut self, d: Diagnostic) {
+        if self.quiet > 0 {
+            return;
+        }
+        let key = (d.code.0, d.span);
+        if self.reported.insert(key) {
+            self.diags.push(d);
+        }
+    }
+
+    /// Resolves the base name of a variable reference.
+    fn base_place(&mut self, scope: &Scope, name: &il_frontend::ast::Ident) -> Option<Place> {
+        let key = name.key();
+        if let Some((pou, _)) = scope.pou {
+            if let Some(&i) = scope.vars.get(&key) {
+                let v = &pou.vars[i];
+                if v.kind == VarKind::External {
+                    if let Some(&g) = scope.externals.get(&i) {
+                        return self.global_place(g, name.span);
+                    }
+                }
+                if let Some(loc) = &v.location {
+                    let v = v.clone();
+                    let loc = loc.clone();
+                    return self.locate_var(&v, &loc, name.span);
+                }
+                return Some(Place::Mem {
+                    lv: own_var_lvalue(pou.kind, v),
+                    ty: v.ty.clone(),
+                });
+            }
+            if pou.kind == PouKind::Function && pou.name.eq_ignore_ascii_case(&name.name) {
+                if let Some(rt) = &pou.return_type {
+                    return Some(Place::Mem {
+                        lv: mangle::var(&pou.name),
+                        ty: rt.clone(),
+                    });
+                }
+            }
+            if key == "EN" || key == "ENO" {
+                scope.uses_en.set(true);
+                return Some(Place::Mem {
+                    lv: mangle::var(&key),
+                    ty: Type::BOOL,
+                });
+            }
+        }
+        if let Some((c, r)) = scope.config {
+            let cfg = &self.model.configurations[c];
+            if let Some(index) = cfg.resources[r]
+                .globals
+                .iter()
+                .position(|g| g.is(&name.name))
+            {
+                return self.global_place(
+                    GlobalRef::Resource {
+                        config: c,
+                        resource: r,
+                        index,
+                    },
+                    name.span,
+                );
+            }
+            if let Some(index) = cfg.globals.iter().position(|g| g.is(&name.name)) {
+                return self.global_place(GlobalRef::Configuration { config: c, index }, name.span);
+            }
+        }
+        if let Some(&i) = self.free_globals.get(&key) {
+            return self.global_place(GlobalRef::Free(i), name.span);
+        }
+        None
+    }
+
+    /// The place a variable reference denotes (None: an error was reported, or it is not a variable).
+    pub fn place(&mut self, scope: &Scope, r: &VarRef) -> Option<Place> {
+        let Some(mut place) = self.base_place(scope, &r.base) else {
+            self.report_once(
+                Diagnostic::error(
+                    code::E2005,
+                    format!(
+                        "the C backend cannot resolve `{}` (no variable of that name)",
+                        r.base.name
+                    ),
+                )
+                .at(r.base.span),
+            );
+            return None;
+        };
+        for acc in &r.accessors {
+            let (lv, ty) = match place {
+                Place::Mem { lv, ty } => (lv, ty),
+                Place::Loc { .. } => {
+                    self.unsupported(r.span, "fields or indexes of a located variable");
+                    return None;
+                }
+            };
+            place = match acc {
+                Accessor::Field(f) => self.field(&lv, &ty, f)?,
+                Accessor::Index(idx) => self.index(scope, &lv, &ty, idx, r.span)?,
+            };
+        }
+        Some(place)
+    }
+
+    fn field(&mut self, lv: &str, ty: &Type, f: &il_frontend::ast::Ident) -> Option<Place> {
+        match ty {
+            Type::Struct(id) => {
+                if let UserTypeDef::Struct { fields } = &self.model.user_type(*id).def {
+                    if let Some(v) = fields.iter().find(|v| v.is(&f.name)) {
+                        return Some(Place::Mem {
+                            lv: format!("{lv}.{}", mangle::var(&v.name)),
+                            ty: v.ty.clone(),
+                        });
+                    }
+                }
+            }
+            Type::Fb(FbType::Standard(fb)) => {
+                let (_, params) = ctypes::std_fb(*fb);
+                if let Some((n, e, _)) = params.iter().find(|p| p.0.eq_ignore_ascii_case(&f.name)) {
+                    return Some(Place::Mem {
+                        lv: format!("{lv}.{n}"),
+                        ty: Type::Elementary(*e),
+                    });
+                }
+            }
+            Type::Fb(FbType::User(id)) => {
+                if let Some(v) = self.model.pou(*id).var(&f.name) {
+                    let name = mangle::var(&v.name);
+                    let lv = if v.kind == VarKind::InOut {
+                        format!("(*{lv}.{name})")
+                    } else {
+                        format!("{lv}.{name}")
+                    };
+                    return Some(Place::Mem {
+                        lv,
+                        ty: v.ty.clone(),
+                    });
+                }
+            }
+            _ => {}
+        }
+        self.report_once(
+            Diagnostic::error(
+                code::E2005,
+                format!(
+                    "the C backend cannot resolve the field `{}` of a value of type {}",
+                    f.name,
+                    self.model.type_name(ty)
+                ),
+            )
+            .at(f.span),
+        );
+        None
+    }
+
+    fn index(
+        &mut self,
+        scope: &Scope,
+        lv: &str,
+        ty: &Type,
+        idx: &[Operand],
+        span: Span,
+    ) -> Option<Place> {
+        let mut lv = lv.to_string();
+        let mut ty = ty.clone();
+        let mut rest = idx;
+        while !rest.is_empty() {
+            let Type::Array { dims, element } = ty.clone() else {
+                self.unsupported(span, "an index on a value that is not an array");
+                return None;
+            };
+            for d in &dims {
+                let Some((op, tail)) = rest.split_first() else {
+                    self.unsupported(span, "a partially indexed multi-dimensional array");
+                    return None;
+                };
+                let v = self.value(scope, op, &Type::Elementary(E::Lint))?;
+                lv = format!(
+                    "{lv}[ladderc_index({v}, {}, {})]",
+                    clamp64(d.lower),
+                    clamp64(d.upper)
+                );
+                rest = tail;
+            }
+            ty = *element;
+        }
+        Some(Place::Mem { lv, ty })
+    }
+
+    /// The type an operand has by itself (literals: their prefix, else the given context type).
+    pub fn operand_type(&mut self, scope: &Scope, op: &Operand, context: Option<&Type>) -> Type {
+        match op {
+            Operand::Var(r) => {
+                if r.accessors.is_empty() && self.enum_of_name(scope, &r.base, context).is_some() {
+                    return self
+                        .enum_of_name(scope, &r.base, context)
+                        .map(|(t, _)| Type::Enum(t))
+                        .unwrap_or(Type::Error);
+                }
+                self.quiet += 1;
+                let t = self.place(scope, r).map(|p| p.ty().clone());
+                self.quiet -= 1;
+                t.unwrap_or(Type::Error)
+            }
+            Operand::Address(a) => {
+                Type::Elementary(il_frontend::sema::Location::of(a).elementary())
+            }
+            Operand::EnumValue { type_name, .. } => self
+                .model
+                .type_by_name(&type_name.name)
+                .map(Type::Enum)
+                .unwrap_or(Type::Error),
+            Operand::Literal(l) => {
+                if let Some(p) = &l.type_prefix {
+                    if let Some(e) = Elementary::from_name(&p.name) {
+                        return Type::Elementary(e);
+                    }
+                }
+                if let Some(c) = context {
+                    return c.clone();
+                }
+                match &l.kind {
+                    LiteralKind::Int(_) => Type::DINT,
+                    LiteralKind::Real(_) => Type::LREAL,
+                    LiteralKind::Bool(_) => Type::BOOL,
+                    LiteralKind::Duration(_) => Type::TIME,
+                    LiteralKind::Date(_) => Type::Elementary(E::Date),
+                    LiteralKind::TimeOfDay(_) => Type::Elementary(E::Tod),
+                    LiteralKind::DateAndTime(_) => Type::Elementary(E::Dt),
+                    LiteralKind::String { wide, value } => Type::String {
+                        wide: *wide,
+                        len: value.len().max(1) as u32,
+                    },
+                }
+            }
+        }
+    }
+
+    /// `red` used as a value: (enum type, value index), when it is not a variable in scope.
+    fn enum_of_name(
+        &self,
+        scope: &Scope,
+        name: &il_frontend::ast::Ident,
+        context: Option<&Type>,
+    ) -> Option<(il_frontend::sema::TypeId, usize)> {
+        let key = name.key();
+        if scope.vars.contains_key(&key) || self.free_globals.contains_key(&key) {
+            return None;
+        }
+        let find = |id: il_frontend::sema::TypeId| match &self.model.user_type(id).def {
+            UserTypeDef::Enum { values, .. } => values
+                .iter()
+                .position(|(n, _)| n.eq_ignore_ascii_case(&name.name))
+                .map(|i| (id, i)),
+            _ => None,
+        };
+        if let Some(Type::Enum(id)) = context {
+            if let Some(r) = find(*id) {
+                return Some(r);
+            }
+        }
+        (0..self.model.types.len())
+            .map(|i| il_frontend::sema::TypeId(i as u32))
+            .find_map(find)
+    }
+
+    /// Reads a place as a value of type `want`.
+    pub fn read(&self, place: &Place, want: &Type) -> String {
+        match place {
+            Place::Mem { lv, ty } => convert(lv, ty, want),
+            Place::Loc { loc, ty } => convert(&load_expr(loc, ty), ty, want),
+        }
+    }
+
+    /// A statement storing `value` (a C expression of the place's type) into `place`.
+    pub fn store(&self, place: &Place, value: &str) -> String {
+        match place {
+            Place::Mem { lv, ty } => match ty {
+                Type::String { wide: false, .. } => {
+                    format!(
+                        "{lv} = ladderc_str_cap({value}, {});",
+                        ctypes::string_cap(ty)
+                    )
+                }
+                _ => format!("{lv} = {value};"),
+            },
+            Place::Loc { loc, ty } => store_expr(loc, ty, value),
+        }
+    }
+
+    /// An operand's value as a C expression of type `want`.
+    pub fn value(&mut self, scope: &Scope, op: &Operand, want: &Type) -> Option<String> {
+        match op {
+            Operand::Literal(l) => self.literal(l, want),
+            Operand::Address(a) => {
+                let e = il_frontend::sema::Location::of(a).elementary();
+                match self.profile.locate(a, None) {
+                    Ok(loc) => Some(convert(
+                        &load_expr(&loc, &Type::Elementary(e)),
+                        &Type::Elementary(e),
+                        want,
+                    )),
+                    Err(d) => {
+                        self.report_once(*d);
+                        None
+                    }
+                }
+            }
+            Operand::EnumValue {
+                type_name, value, ..
+            } => {
+                let id = self.model.type_by_name(&type_name.name);
+                let v = id.and_then(|id| match &self.model.user_type(id).def {
+                    UserTypeDef::Enum { values, .. } => values
+                        .iter()
+                        .find(|(n, _)| n.eq_ignore_ascii_case(&value.name))
+                        .map(|v| v.1),
+                    _ => None,
+                });
+                match v {
+                    Some(v) => Some(ctypes::int_literal(E::Dint, v)),
+                    None => {
+                        self.unsupported(
+                            value.span,
+                            "this enumerated value (unknown type or value)",
+                        );
+                        None
+                    }
+                }
+            }
+            Operand::Var(r) => {
+                if r.accessors.is_empty() {
+                    if let Some((id, i)) = self.enum_of_name(scope, &r.base, Some(want)) {
+                        let v = ctypes::enum_value(self.model, id, i).unwrap_or(0);
+                        return Some(ctypes::int_literal(E::Dint, v));
+                    }
+                }
+                let p = self.place(scope, r)?;
+                Some(self.read(&p, want))
+            }
+        }
+    }
+
+    /// A literal as a C expression of type `want`.
+    pub fn literal(&mut self, l: &Literal, want: &Type) -> Option<String> {
+        let e = match want {
+            Type::Enum(_) => E::Dint,
+            Type::String { .. } => {
+                return match &l.kind {
+                    LiteralKind::String { wide: false, value } => Some(ctypes::string_value(value)),
+                    _ => {
+                        self.unsupported(l.span, "this literal as a STRING (or a WSTRING literal)");
+                        None
+                    }
+                };
+            }
+            t => match t.elementary() {
+                Some(e) => e,
+                None => {
+                    self.unsupported(l.span, "a literal of this type");
+                    return None;
+                }
+            },
+        };
+        let c = match &l.kind {
+            LiteralKind::Int(i) => {
+                if e.is_real() {
+                    ctypes::real_literal(e, *i as f64)
+                } else {
+                    ctypes::int_literal(e, *i)
+                }
+            }
+            LiteralKind::Real(r) => ctypes::real_literal(e, *r),
+            LiteralKind::Bool(b) => ctypes::int_literal(e, i128::from(*b)),
+            LiteralKind::Duration(ns) | LiteralKind::DateAndTime(ns) => {
+                if e.is_real() {
+                    ctypes::real_literal(e, *ns as f64 / 1e6)
+                } else {
+                    ctypes::int_literal(e, *ns)
+                }
+            }
+            LiteralKind::TimeOfDay(ns) => ctypes::int_literal(e, i128::from(*ns)),
+            LiteralKind::Date(days) => {
+                ctypes::int_literal(e, i128::from(*days) * 86_400_000_000_000)
+            }
+            LiteralKind::String { .. } => {
+                self.unsupported(l.span, "a string literal where a number is expected");
+                return None;
+            }
+        };
+        Some(c)
+    }
+}
+
+fn clamp64(v: i128) -> String {
+    let v = v.clamp(i64::MIN as i128 + 1, i64::MAX as i128);
+    if v < 0 {
+        format!("-INT64_C({})", -v)
+    } else {
+        format!("INT64_C({v})")
+    }
+}
+
+/// Converts a C expression of IEC type `from` to IEC type `to` (implicit conversions: widening, BOOL).
+pub fn convert(expr: &str, from: &Type, to: &Type) -> String {
+    if from == to {
+        return expr.to_string();
+    }
+    let fe = match from {
+        Type::Enum(_) => Some(E::Dint),
+        t => t.elementary(),
+    };
+    let te = match to {
+        Type::Enum(_) => Some(E::Dint),
+        t => t.elementary(),
+    };
+    match (fe, te) {
+        (Some(f), Some(t)) => convert_elementary(expr, f, t),
+        (_, Some(_)) | (Some(_), _) => expr.to_string(),
+        (None, None) => match to {
+            Type::String { wide: false, .. } if from.is_string() => {
+                format!("ladderc_str_cap({expr}, {})", ctypes::string_cap(to))
+            }
+            _ => expr.to_string(),
+        },
+    }
+}
+
+/// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest and
+/// saturates, TIME to/from numbers counts milliseconds, anything to BOOL is `<> 0`.
+pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
+    if f == t {
+        return x.to_string();
+    }
+    let ct = ctypes::elementary(t);
+    let time_like = |e: Elementary| e.is_duration() || e.is_date();
+    if t == E::Bool {
+        return format!("((IEC_BOOL)(({x}) != 0))");
+    }
+    if f.is_real() {
+        if t.is_real() {
+            return format!("(({ct})({x}))");
+        }
+        if time_like(t) {
+            return format!("(({ct})ladderc_ms_to_time((double)({x})))");
+        }
+        return real_to_int(&format!("(double)({x})"), t);
+    }
+    if time_like(f) {
+        if time_like(t) {
+            return match (f, t) {
+                (E::Dt, E::Date) => format!("ladderc_dt_to_date({x})"),
+                (E::Dt, E::Tod) => format!("ladderc_dt_to_tod({x})"),
+                _ => format!("(({ct})({x}))"),
+            };
+        }
+        if t.is_real() {
+            return format!("(({ct})((double)({x}) / 1e6))");
+        }
+        return int_to_int(&format!("(({x}) / INT64_C(1000000))"), t);
+    }
+    // f is an integer, a bit string or BOOL
+    if t.is_real() {
+        return format!("(({ct})({x}))");
+    }
+    if time_like(t) {
+        return format!("(({ct})ladderc_mul_IEC_LINT((IEC_LINT)({x}), INT64_C(1000000)))");
+    }
+    int_to_int(x, t)
+}
+
+fn int_to_int(x: &str, t: Elementary) -> String {
+    let ct = ctypes::elementary(t);
+    match t.bit_width() {
+        8 if t.is_signed() => format!("ladderc_wrap_i8((uint64_t)({x}))"),
+        16 if t.is_signed() => format!("ladderc_wrap_i16((uint64_t)({x}))"),
+        32 if t.is_signed() => format!("ladderc_wrap_i32((uint64_t)({x}))"),
+        64 if t.is_signed() => format!("ladderc_wrap_i64((uint64_t)({x}))"),
+        _ => format!("(({ct})(uint64_t)({x}))"),
+    }
+}
+
+/// A double expression to an integer or bit-string type (rounded to nearest, saturated).
+pub fn real_to_int(d: &str, t: Elementary) -> String {
+    let ct = ctypes::elementary(t);
+    if t.is_signed_integer() {
+        let (lo, hi) = match t.bit_width() {
+            8 => ("INT8_MIN", "INT8_MAX"),
+            16 => ("INT16_MIN", "INT16_MAX"),
+            32 => ("INT32_MIN", "INT32_MAX"),
+            _ => ("INT64_MIN", "INT64_MAX"),
+        };
+        format!("(({ct})ladderc_real_to_int({d}, {lo}, {hi}))")
+    } else {
+        let hi = match t.bit_width() {
+            1 => "1",
+            8 => "UINT8_MAX",
+            16 => "UINT16_MAX",
+            32 => "UINT32_MAX",
+            _ => "UINT64_MAX",
+        };
+        format!("(({ct})ladderc_real_to_uint({d}, {hi}))")
+    }
+}
+
+/// Loads a located value of type `ty`.
+pub fn load_expr(loc: &Located, ty: &Type) -> String {
+    let area = area_array(loc.area);
+    if let Some(bit) = loc.bit {
+        let v = format!("ladderc_load_bit({area}, {}, {bit})", loc.offset);
+        return if ty.is_bool() {
+            v
+        } else {
+            convert(&v, &Type::BOOL, ty)
+        };
+    }
+    let raw = format!("ladderc_load({area}, {}, {})", loc.offset, loc.bytes);
+    let e = match ty {
+        Type::Enum(_) => E::Dint,
+        t => t.elementary().unwrap_or(E::Lword),
+    };
+    match e {
+        E::Bool => format!("((IEC_BOOL)({raw} != 0))"),
+        E::Real => format!("ladderc_bits_to_real((uint32_t){raw})"),
+        E::Lreal => format!("ladderc_bits_to_lreal({raw})"),
+        _ => int_to_int(&raw, e),
+    }
+}
+
+/// Stores `value` (of type `ty`) into a located place.
+pub fn store_expr(loc: &Located, ty: &Type, value: &str) -> String {
+    let area = area_array(loc.area);
+    if let Some(bit) = loc.bit {
+        let v = if ty.is_bool() {
+            value.to_string()
+        } else {
+            format!("((IEC_BOOL)(({value}) != 0))")
+        };
+        return format!("ladderc_store_bit({area}, {}, {bit}, {v});", loc.offset);
+    }
+    let e = ty.elementary().unwrap_or(E::Dint);
+    let raw = match e {
+        E::Real => format!("(uint64_t)ladderc_real_to_bits({value})"),
+        E::Lreal => format!("ladderc_lreal_to_bits({value})"),
+        _ => format!("(uint64_t)({value})"),
+    };
+    format!(
+        "ladderc_store({area}, {}, {}, {raw});",
+        loc.offset, loc.bytes
+    )
+}

@@ -1,0 +1,210 @@
+//! Mangling of IEC names into C identifiers, and C literals for user data.
+//!
+//! Input: user identifiers (any text the parser accepted) and literal values. Output: C identifiers and
+//! C literal text. Invariants: two IEC names map to the same C identifier iff they are equal ignoring ASCII
+//! case; every mangled identifier starts with a generator prefix (`v_`, `FB_`, ...) so it is never a C
+//! keyword nor a runtime name (`ladderc_`, `LADDERC_`, `IEC_`); string literals are emitted byte-wise with
+//! octal escapes for everything but letters, digits and spaces, so no user text can end a C literal or
+//! comment; user comments are never copied.
+
+use std::fmt::Write as _;
+
+/// The case-insensitive core of an identifier: lower-case letters, digits and `_` for ordinary IEC names;
+/// for anything else, `X` followed by the upper-case hex of the upper-cased UTF-8 bytes. Plain cores never
+/// contain upper-case letters, so the two forms cannot collide.
+pub fn core(name: &str) -> String {
+    if !name.is_empty() && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+        name.to_ascii_lowercase()
+    } else {
+        let mut s = String::with_capacity(1 + 2 * name.len());
+        s.push('X');
+        for b in name.to_ascii_uppercase().bytes() {
+            let _ = write!(s, "{b:02X}");
+        }
+        s
+    }
+}
+
+/// A variable, parameter or struct field.
+pub fn var(name: &str) -> String {
+    format!("v_{}", core(name))
+}
+/// A user function block's instance struct (`FB_x`), its init (`FB_x_INIT`) and body (`FB_x_BODY`).
+pub fn fb(name: &str) -> String {
+    format!("FB_{}", core(name))
+}
+/// A program's instance struct.
+pub fn program(name: &str) -> String {
+    format!("P_{}", core(name))
+}
+/// A user function.
+pub fn function(name: &str) -> String {
+    format!("F_{}", core(name))
+}
+/// A user data type.
+pub fn user_type(name: &str) -> String {
+    format!("T_{}", core(name))
+}
+/// A jump label.
+pub fn label(name: &str) -> String {
+    format!("L_{}", core(name))
+}
+/// A global variable: free globals `g_x`, configuration globals `gc<c>_x`, resource globals `gr<c>_<r>_x`.
+pub fn global_free(name: &str) -> String {
+    format!("g_{}", core(name))
+}
+pub fn global_config(config: usize, name: &str) -> String {
+    format!("gc{config}_{}", core(name))
+}
+pub fn global_resource(config: usize, resource: usize, name: &str) -> String {
+    format!("gr{config}_{resource}_{}", core(name))
+}
+/// A configured program instance (`pi<c>_<r>_name`) or the implicit instance of a program (`pi_name`).
+pub fn program_instance(config: usize, resource: usize, name: &str) -> String {
+    format!("pi{config}_{resource}_{}", core(name))
+}
+pub fn implicit_instance(name: &str) -> String {
+    format!("pi_{}", core(name))
+}
+
+/// C keywords (C99 and later) and names the generated code or the runtime reserve for themselves.
+const C_KEYWORDS: &[&str] = &[
+    "auto",
+    "break",
+    "case",
+    "char",
+    "const",
+    "continue",
+    "default",
+    "do",
+    "double",
+    "else",
+    "enum",
+    "extern",
+    "float",
+    "for",
+    "goto",
+    "if",
+    "inline",
+    "int",
+    "long",
+    "register",
+    "restrict",
+    "return",
+    "short",
+    "signed",
+    "sizeof",
+    "static",
+    "struct",
+    "switch",
+    "typedef",
+    "union",
+    "unsigned",
+    "void",
+    "volatile",
+    "while",
+    "_Bool",
+    "_Complex",
+    "_Imaginary",
+    "_Alignas",
+    "_Alignof",
+    "_Atomic",
+    "_Generic",
+    "_Noreturn",
+    "_Static_assert",
+    "_Thread_local",
+    "main",
+    "bool",
+    "true",
+    "false",
+    "self",
+];
+
+/// Whether `name` may be used verbatim as the C name of an embedded function.
+pub fn is_valid_embedded_name(name: &str) -> bool {
+    let mut bytes = name.bytes();
+    let Some(first) = bytes.next() else {
+        return false;
+    };
+    if !(first.is_ascii_alphabetic() || first == b'_') {
+        return false;
+    }
+    if !name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+        return false;
+    }
+    if C_KEYWORDS.contains(&name) || name.starts_with("__") {
+        return false;
+    }
+    let reserved = [
+        "ladderc_", "LADDERC_", "IEC_", "v_", "FB_", "F_", "P_", "T_", "L_", "g_", "pi_", "cr_",
+        "d_", "t_",
+    ];
+    let numbered = ["pi", "gc", "gr"].iter().any(|p| {
+        name.strip_prefix(p)
+            .is_some_and(|rest| rest.starts_with(|c: char| c.is_ascii_digit()))
+    });
+    !numbered && !reserved.iter().any(|p| name.starts_with(p))
+}
+
+/// A C string literal holding exactly `bytes` (letters, digits and spaces verbatim, all else `\ooo`).
+pub fn c_string(bytes: &[u8]) -> String {
+    let mut s = String::with_capacity(bytes.len() * 2 + 2);
+    s.push('"');
+    for &b in bytes {
+        if b.is_ascii_alphanumeric() || b == b' ' {
+            s.push(b as char);
+        } else {
+            let _ = write!(s, "\\{b:03o}");
+        }
+    }
+    s.push('"');
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_fold_case_and_get_prefixes() {
+        assert_eq!(var("Count"), "v_count");
+        assert_eq!(var("COUNT"), var("count"));
+        assert_eq!(var("int"), "v_int");
+        assert_eq!(fb("main"), "FB_main");
+        assert_eq!(label("end"), "L_end");
+    }
+
+    #[test]
+    fn unusual_names_are_hex_and_cannot_collide_with_plain_ones() {
+        assert_eq!(core("a-b"), "X412D42");
+        assert_ne!(core("x412d42"), core("a-b"));
+        assert!(core("*/ system(\"rm\")").starts_with('X'));
+        assert!(core("")
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'_'));
+    }
+
+    #[test]
+    fn string_literals_escape_everything_that_could_end_them() {
+        let s = c_string(b"\"*/ system(\"rm -rf /\"); /*\\\n??/");
+        assert!(!s[1..s.len() - 1].contains('"'));
+        assert!(!s.contains("*/"));
+        assert!(!s.contains('\n'));
+        assert!(!s.contains("??"));
+        assert_eq!(c_string(b"ab 1"), "\"ab 1\"");
+        assert_eq!(c_string(b"a\"b"), "\"a\\042b\"");
+    }
+
+    #[test]
+    fn embedded_names_must_be_plain_and_unreserved() {
+        assert!(is_valid_embedded_name("MC_MoveAbsolute"));
+        assert!(!is_valid_embedded_name("int"));
+        assert!(!is_valid_embedded_name("main"));
+        assert!(!is_valid_embedded_name("ladderc_now"));
+        assert!(!is_valid_embedded_name("move-abs"));
+        assert!(!is_valid_embedded_name("1abc"));
+        assert!(!is_valid_embedded_name(""));
+        assert!(!is_valid_embedded_name("pi0_1_x"));
+        assert!(is_valid_embedded_name("PID_step"));
+    }
+}

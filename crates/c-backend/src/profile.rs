@@ -1,0 +1,307 @@
+//! The target profile: the memory model of the controller the C program is built for.
+//!
+//! Input: JSON (the embedded default `profiles/default.json`, or a user file). Output: a validated
+//! [`TargetProfile`] and, per direct address, its [`Located`] byte offset and bit in the %I/%Q/%M areas.
+//! Invariants: a validated profile has non-empty areas, the TM window inside %M, a power-of-two alignment;
+//! [`TargetProfile::locate`] only returns locations whose bytes lie inside their area.
+
+use diagnostics::{code, Diagnostic, Diagnostics};
+use il_frontend::ast::{AddressSize, Area, DirectAddress};
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// The default profile as shipped (documented in the crate README).
+pub const DEFAULT_PROFILE_JSON: &str = include_str!("../profiles/default.json");
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ByteOrder {
+    Little,
+    Big,
+}
+
+/// Which bit of a byte `%IX3.0` names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum BitNumbering {
+    /// Bit 0 is the least significant bit (IEC common practice).
+    Lsb0,
+    /// Bit 0 is the most significant bit.
+    Msb0,
+}
+
+/// What the number of `%IW2` counts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum AddressUnit {
+    /// `%IW2` is the third word: bytes 4..6 (CODESYS style; %IB, %IW, %ID, %IL overlap).
+    Element,
+    /// `%IW2` starts at byte 2 (Siemens style).
+    Byte,
+}
+
+/// Sizes and layout of the process image and the TM area.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TargetProfile {
+    pub name: String,
+    /// Size of the %I area in bytes.
+    pub input_bytes: u32,
+    /// Size of the %Q area in bytes.
+    pub output_bytes: u32,
+    /// Size of the %M area in bytes (the TM window included).
+    pub memory_bytes: u32,
+    /// Byte order of multi-byte addresses (%IW, %QD, %ML ...).
+    pub byte_order: ByteOrder,
+    pub bit_numbering: BitNumbering,
+    pub address_unit: AddressUnit,
+    /// The TM (temporary) area for parameter passing: bytes `tm_offset..tm_offset + tm_bytes` of %M.
+    pub tm_offset: u32,
+    pub tm_bytes: u32,
+    /// A multi-byte address must start at a multiple of `min(alignment, its size)` bytes (1: no rule).
+    pub alignment: u32,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum ProfileError {
+    #[error("cannot read the target profile `{path}`: {message}")]
+    Io { path: String, message: String },
+    #[error("the target profile is not valid JSON for a profile: {0}")]
+    Json(String),
+    #[error("the target profile is inconsistent: {0}")]
+    Invalid(String),
+}
+
+impl Default for TargetProfile {
+    fn default() -> Self {
+        // The embedded file is ours and covered by a test; fall back to the same values if it ever breaks.
+        TargetProfile::from_json(DEFAULT_PROFILE_JSON).unwrap_or(TargetProfile {
+            name: "default".into(),
+            input_bytes: 256,
+            output_bytes: 256,
+            memory_bytes: 4096,
+            byte_order: ByteOrder::Little,
+            bit_numbering: BitNumbering::Lsb0,
+            address_unit: AddressUnit::Element,
+            tm_offset: 3840,
+            tm_bytes: 256,
+            alignment: 1,
+        })
+    }
+}
+
+/// Where a direct address (or an AT-located variable) lives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Located {
+    pub area: Area,
+    /// Byte offset in the area.
+    pub offset: u32,
+    /// The bit (0..=7) for `X` addresses.
+    pub bit: Option<u8>,
+    /// Bytes accessed (1 for bits).
+    pub bytes: u32,
+}
+
+/// Largest area the profile accepts (the C arrays are static; 64 MiB keeps `offset + size` in `u32`).
+const MAX_AREA: u32 = 64 * 1024 * 1024;
+
+impl TargetProfile {
+    pub fn from_json(text: &str) -> Result<Self, ProfileError> {
+        let p: TargetProfile =
+            serde_json::from_str(text).map_err(|e| ProfileError::Json(e.to_string()))?;
+        p.validate()?;
+        Ok(p)
+    }
+
+    pub fn load(path: &Path) -> Result<Self, ProfileError> {
+        let text = std::fs::read_to_string(path).map_err(|e| ProfileError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        Self::from_json(&text)
+    }
+
+    /// Loads a profile file, reporting a problem as E2003.
+    pub fn load_or_report(path: &Path, diags: &mut Diagnostics) -> Option<Self> {
+        match Self::load(path) {
+            Ok(p) => Some(p),
+            Err(e) => {
+                diags.push(
+                    Diagnostic::error(code::E2003, e.to_string())
+                        .with_hint("see the memory model section of the c-backend README"),
+                );
+                None
+            }
+        }
+    }
+
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_default()
+    }
+
+    pub fn validate(&self) -> Result<(), ProfileError> {
+        let bad = |m: String| Err(ProfileError::Invalid(m));
+        for (name, size) in [
+            ("input_bytes", self.input_bytes),
+            ("output_bytes", self.output_bytes),
+            ("memory_bytes", self.memory_bytes),
+        ] {
+            if size == 0 || size > MAX_AREA {
+                return bad(format!(
+                    "{name} must be between 1 and {MAX_AREA}, got {size}"
+                ));
+            }
+        }
+        if self.tm_bytes == 0 {
+            return bad("tm_bytes must be at least 1".into());
+        }
+        if u64::from(self.tm_offset) + u64::from(self.tm_bytes) > u64::from(self.memory_bytes) {
+            return bad(format!(
+                "the TM area (tm_offset {} + tm_bytes {}) does not fit in memory_bytes {}",
+                self.tm_offset, self.tm_bytes, self.memory_bytes
+            ));
+        }
+        if self.alignment == 0 || !self.alignment.is_power_of_two() || self.alignment > 8 {
+            return bad(format!(
+                "alignment must be 1, 2, 4 or 8, got {}",
+                self.alignment
+            ));
+        }
+        if self.name.is_empty() {
+            return bad("name must not be empty".into());
+        }
+        Ok(())
+    }
+
+    pub fn area_size(&self, area: Area) -> u32 {
+        match area {
+            Area::Input => self.input_bytes,
+            Area::Output => self.output_bytes,
+            Area::Memory => self.memory_bytes,
+        }
+    }
+
+    /// Locates a direct address accessed with `access_bytes` bytes (the located variable's type size;
+    /// `None`: the address's own size). Errors: E2002 (form), E2001 (outside the area), E2006 (alignment).
+    pub fn locate(
+        &self,
+        addr: &DirectAddress,
+        access_bytes: Option<u32>,
+    ) -> Result<Located, Box<Diagnostic>> {
+        let text = address_text(addr);
+        let size_bytes = match addr.size {
+            AddressSize::Bit => 1,
+            AddressSize::Byte => 1,
+            AddressSize::Word => 2,
+            AddressSize::DWord => 4,
+            AddressSize::LWord => 8,
+        };
+        let form = |msg: &str| {
+            Box::new(
+                Diagnostic::error(code::E2002, format!("unsupported address `{text}`: {msg}"))
+                    .at(addr.span)
+                    .with_primary_label("this address"),
+            )
+        };
+        let (index, bit) = match (addr.size, addr.path.as_slice()) {
+            (_, []) => {
+                return Err(form(
+                    "a `*` address must be given a location before it can be compiled",
+                ))
+            }
+            (AddressSize::Bit, [byte, bit]) => {
+                if *bit > 7 {
+                    return Err(form("the bit number must be 0 to 7"));
+                }
+                (*byte, Some(*bit as u8))
+            }
+            (AddressSize::Bit, [_]) => return Err(form("a bit address is written byte.bit")),
+            (_, [index]) => (*index, None),
+            _ => {
+                return Err(form(
+                    "hierarchical addresses (more than byte.bit) are not supported",
+                ))
+            }
+        };
+        let offset = match self.address_unit {
+            AddressUnit::Byte => u64::from(index),
+            AddressUnit::Element => u64::from(index) * u64::from(size_bytes),
+        };
+        let bytes = if bit.is_some() {
+            1
+        } else {
+            access_bytes.unwrap_or(size_bytes).max(1)
+        };
+        let area_size = self.area_size(addr.area);
+        if offset + u64::from(bytes) > u64::from(area_size) {
+            return Err(Box::new(
+                Diagnostic::error(
+                    code::E2001,
+                    format!(
+                        "address `{text}` is outside the {} area ({} bytes in target profile `{}`)",
+                        area_name(addr.area),
+                        area_size,
+                        self.name
+                    ),
+                )
+                .at(addr.span)
+                .with_primary_label(format!(
+                    "needs bytes {}..{}",
+                    offset,
+                    offset + u64::from(bytes)
+                ))
+                .with_hint("use a smaller address or a target profile with a larger area"),
+            ));
+        }
+        let offset = offset as u32;
+        let align = self.alignment.min(bytes);
+        if bit.is_none() && align > 1 && offset % align != 0 {
+            return Err(Box::new(
+                Diagnostic::error(
+                    code::E2006,
+                    format!(
+                        "address `{text}` starts at byte {offset}, not a multiple of {align} as target profile `{}` requires",
+                        self.name
+                    ),
+                )
+                .at(addr.span)
+                .with_primary_label("misaligned"),
+            ));
+        }
+        Ok(Located {
+            area: addr.area,
+            offset,
+            bit,
+            bytes,
+        })
+    }
+}
+
+pub fn area_name(area: Area) -> &'static str {
+    match area {
+        Area::Input => "%I",
+        Area::Output => "%Q",
+        Area::Memory => "%M",
+    }
+}
+
+/// The address as IEC text (`%IX0.1`, `%QW3`, `%I*`).
+pub fn address_text(addr: &DirectAddress) -> String {
+    let size = match addr.size {
+        AddressSize::Bit => "X",
+        AddressSize::Byte => "B",
+        AddressSize::Word => "W",
+        AddressSize::DWord => "D",
+        AddressSize::LWord => "L",
+    };
+    let path = if addr.path.is_empty() {
+        "*".to_string()
+    } else {
+        addr.path
+            .iter()
+            .map(u32::to_string)
+            .collect::<Vec<_>>()
+            .join(".")
+    };
+    format!("{}{size}{path}", area_name(addr.area))
+}

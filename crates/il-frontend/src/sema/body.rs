@@ -1,0 +1,715 @@
+//! The IL body checker: the type of the current result (CR) at every instruction, labels and jumps,
+//! simple and deferred operators, stores, `S`/`R`, unused results and unreachable code.
+//!
+//! Input: one POU's body and its variable table (from `decls`). Output: [`InstrInfo`] per instruction
+//! span in `Model::instrs`, diagnostics. Invariants: the body is walked twice: a silent first pass
+//! records the CR types that backward jumps bring to their labels, the second pass (which reports) joins
+//! at each label the fall-through, the forward jumps and those recorded backward jumps; untyped literals
+//! are type variables ([`LitVars`]) resolved once the whole body is seen.
+//! Calls are in `calls.rs`, operands and variable access in `places.rs`.
+
+use super::model::*;
+use super::typing::LitVars;
+use super::Analyzer;
+use crate::ast::{self, Condition, IlStmt, InstrKind, Op};
+use crate::Span;
+use diagnostics::code;
+use std::collections::HashMap;
+
+/// A current-result type during the walk: a resolved type or an untyped literal's type variable.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum Ty {
+    Known(Type),
+    Lit(usize),
+}
+
+impl Ty {
+    pub(super) const ERROR: Ty = Ty::Known(Type::Error);
+    pub(super) fn is_error(&self) -> bool {
+        matches!(self, Ty::Known(Type::Error))
+    }
+}
+
+/// The current result at a point of the body.
+#[derive(Debug, Clone)]
+pub(super) struct Cr {
+    /// `None`: undefined (nothing loaded yet).
+    pub(super) ty: Option<Ty>,
+    /// The instruction that computed the value if no instruction has used it yet.
+    pub(super) fresh: Option<Span>,
+}
+
+/// The walk state: reachability and current result.
+#[derive(Debug, Clone)]
+pub(super) struct State {
+    pub(super) reach: bool,
+    pub(super) cr: Cr,
+    /// The last instruction walked (the source of a fall-through into a label).
+    pub(super) last: Option<Span>,
+    /// An unreachable-code warning was given since the last reachable point.
+    pub(super) warned_unreachable: bool,
+}
+
+/// A recorded instruction (types may still be literal variables).
+#[derive(Debug, Clone, Default)]
+pub(super) struct Rec {
+    pub(super) cr_before: Option<Ty>,
+    pub(super) cr_after: Option<Ty>,
+    pub(super) operand: Option<Ty>,
+    pub(super) callee: Option<Callee>,
+    /// For generic callees: the instantiated type and the result type (patched into `callee`).
+    pub(super) callee_tys: Option<(Ty, Ty)>,
+    pub(super) args: Vec<(ArgBinding, Ty)>,
+}
+
+struct LabelDef {
+    span: Span,
+    /// Position in walk order.
+    pos: usize,
+}
+
+/// A jump into a label as seen in a walk.
+#[derive(Debug, Clone)]
+struct Edge {
+    from: Span,
+    pos: usize,
+    ty: Option<Ty>,
+}
+
+/// The checker of one body.
+pub(super) struct Body<'a, 'd> {
+    pub(super) a: &'a mut Analyzer<'d>,
+    pub(super) pou: PouId,
+    pub(super) lits: LitVars,
+    pub(super) recs: Vec<(Span, Rec)>,
+    labels: HashMap<String, LabelDef>,
+    /// Jumps seen in this pass, by upper-case label.
+    edges: HashMap<String, Vec<Edge>>,
+    /// Backward jumps of the previous pass, resolved: (from, type) by upper-case label.
+    backward: HashMap<String, Vec<(Span, Option<Type>)>>,
+    /// Position counter (statements in walk order).
+    pos: usize,
+}
+
+impl Analyzer<'_> {
+    /// Checks one POU body and stores its instruction infos in the model.
+    pub(crate) fn check_body(&mut self, id: PouId, pou: &ast::Pou) {
+        let mut labels = HashMap::new();
+        let mut pos = 0;
+        self.collect_labels(&pou.body, &mut labels, &mut pos);
+        let mut b = Body {
+            a: self,
+            pou: id,
+            lits: LitVars::default(),
+            recs: Vec::new(),
+            labels,
+            edges: HashMap::new(),
+            backward: HashMap::new(),
+            pos: 0,
+        };
+        // Pass 1, silent: what the backward jumps bring.
+        b.a.silent = true;
+        b.walk_top(&pou.body);
+        b.a.silent = false;
+        let mut backward: HashMap<String, Vec<(Span, Option<Type>)>> = HashMap::new();
+        let edges = std::mem::take(&mut b.edges);
+        for (label, es) in edges {
+            let Some(def) = b.labels.get(&label) else {
+                continue;
+            };
+            let lpos = def.pos;
+            for e in es.into_iter().filter(|e| e.pos >= lpos) {
+                let ty = e.ty.map(|t| b.resolve(&t));
+                backward
+                    .entry(label.clone())
+                    .or_default()
+                    .push((e.from, ty));
+            }
+        }
+        // Pass 2, reporting.
+        b.backward = backward;
+        b.lits = LitVars::default();
+        b.recs.clear();
+        b.pos = 0;
+        b.walk_top(&pou.body);
+        let recs = std::mem::take(&mut b.recs);
+        for (span, r) in recs {
+            let info = b.finish(r);
+            b.a.model.instrs.insert(span, info);
+        }
+    }
+
+    fn collect_labels(
+        &mut self,
+        stmts: &[IlStmt],
+        labels: &mut HashMap<String, LabelDef>,
+        pos: &mut usize,
+    ) {
+        for s in stmts {
+            *pos += 1;
+            match s {
+                IlStmt::Label(l) => {
+                    if let Some(prev) = labels.get(&l.key()) {
+                        let first = prev.span;
+                        self.error(
+                            code::E1010,
+                            l.span,
+                            format!("label `{}` is defined twice", l.name),
+                        )
+                        .label("defined again here")
+                        .also(first, "first defined here")
+                        .hint("rename one of the labels; jumps go to the first one");
+                        continue;
+                    }
+                    labels.insert(
+                        l.key(),
+                        LabelDef {
+                            span: l.span,
+                            pos: *pos,
+                        },
+                    );
+                }
+                IlStmt::Instr(i) => {
+                    if let InstrKind::Deferred { body, .. } = &i.kind {
+                        self.collect_labels(body, labels, pos);
+                    }
+                }
+            }
+        }
+    }
+}
+
+impl Body<'_, '_> {
+    pub(super) fn pou(&self) -> &Pou {
+        &self.a.model.pous[self.pou.0 as usize]
+    }
+
+    fn walk_top(&mut self, stmts: &[IlStmt]) {
+        let mut st = State {
+            reach: true,
+            cr: Cr {
+                ty: None,
+                fresh: None,
+            },
+            last: None,
+            warned_unreachable: false,
+        };
+        self.walk(stmts, &mut st);
+    }
+
+    pub(super) fn walk(&mut self, stmts: &[IlStmt], st: &mut State) {
+        for s in stmts {
+            self.pos += 1;
+            match s {
+                IlStmt::Label(l) => self.enter_label(l, st),
+                IlStmt::Instr(i) => {
+                    if !st.reach {
+                        if !st.warned_unreachable {
+                            self.a
+                                .warning(code::W1002, i.span, "unreachable instruction")
+                                .label("no jump or fall-through reaches this")
+                                .hint("add a label that a jump targets, or remove the instruction");
+                            st.warned_unreachable = true;
+                        }
+                        // Checked with an unknown current result, so that only names are reported.
+                        st.reach = true;
+                        st.cr = Cr {
+                            ty: Some(Ty::ERROR),
+                            fresh: None,
+                        };
+                    }
+                    self.instr(i, st);
+                    st.last = Some(i.span);
+                }
+            }
+        }
+    }
+
+    /// The CR at a label: the join of the fall-through and every jump to it.
+    fn enter_label(&mut self, l: &ast::Ident, st: &mut State) {
+        let key = l.key();
+        // Only the first definition of a duplicated label is a jump target.
+        let is_target = self.labels.get(&key).is_some_and(|d| d.span == l.span);
+        let mut incoming: Vec<(Span, &'static str, Option<Ty>)> = Vec::new();
+        if st.reach {
+            if let Some(last) = st.last {
+                incoming.push((last, "falls through from here", st.cr.ty.clone()));
+            } else {
+                incoming.push((l.span, "start of the body", st.cr.ty.clone()));
+            }
+        }
+        if is_target {
+            for e in self.edges.get(&key).cloned().unwrap_or_default() {
+                incoming.push((e.from, "jump from here", e.ty));
+            }
+            for (from, ty) in self.backward.get(&key).cloned().unwrap_or_default() {
+                incoming.push((from, "jump from here", ty.map(Ty::Known)));
+            }
+        }
+        st.reach = true;
+        st.warned_unreachable = false;
+        st.cr.fresh = None;
+        if incoming.is_empty() {
+            // Dead code after the label: silence it.
+            st.cr.ty = Some(Ty::ERROR);
+            return;
+        }
+        if incoming.iter().any(|(_, _, t)| t.is_none()) {
+            st.cr.ty = None;
+            return;
+        }
+        let mut acc: (Span, &'static str, Ty) = {
+            let (s, w, t) = incoming[0].clone();
+            (s, w, t.unwrap_or(Ty::ERROR))
+        };
+        for (span, what, ty) in incoming.into_iter().skip(1) {
+            let ty = ty.unwrap_or(Ty::ERROR);
+            match self.join(&acc.2, &ty) {
+                Some(j) => acc.2 = j,
+                None => {
+                    let (ta, tb) = (self.describe(&acc.2), self.describe(&ty));
+                    self.a
+                        .error(
+                            code::E1008,
+                            l.span,
+                            format!("the current result at `{}` is {ta} on one path and {tb} on another", l.name),
+                        )
+                        .label("paths meet here")
+                        .also(acc.0, format!("{ta}: {}", acc.1))
+                        .also(span, format!("{tb}: {what}"))
+                        .hint("load a value after the label, or make every path bring the same type");
+                    acc.2 = Ty::ERROR;
+                    break;
+                }
+            }
+        }
+        st.cr.ty = Some(acc.2);
+    }
+
+    /// The join of two CR types at a label (`None`: a clash).
+    fn join(&mut self, a: &Ty, b: &Ty) -> Option<Ty> {
+        let a = self.norm(a);
+        let b = self.norm(b);
+        match (&a, &b) {
+            (Ty::Known(Type::Error), _) | (_, Ty::Known(Type::Error)) => Some(Ty::ERROR),
+            (Ty::Known(x), Ty::Known(y)) => (x == y).then(|| a.clone()),
+            (Ty::Lit(v), Ty::Known(t)) | (Ty::Known(t), Ty::Lit(v)) => {
+                self.lits.bind(*v, t).ok().map(|_| Ty::Known(t.clone()))
+            }
+            (Ty::Lit(x), Ty::Lit(y)) => Some(Ty::Lit(self.lits.unify(*x, *y))),
+        }
+    }
+
+    /// A literal variable that was bound becomes its type.
+    pub(super) fn norm(&mut self, t: &Ty) -> Ty {
+        match t {
+            Ty::Lit(v) => match self.lits.bound(*v) {
+                Some(b) => Ty::Known(b),
+                None => Ty::Lit(self.lits.find(*v)),
+            },
+            k => k.clone(),
+        }
+    }
+
+    /// The final type (unbound literals get their default).
+    pub(super) fn resolve(&mut self, t: &Ty) -> Type {
+        match t {
+            Ty::Known(k) => k.clone(),
+            Ty::Lit(v) => self.lits.resolve(*v),
+        }
+    }
+
+    pub(super) fn describe(&mut self, t: &Ty) -> String {
+        match self.norm(t) {
+            Ty::Known(k) => self.a.type_name(&k),
+            Ty::Lit(v) => self.lits.describe(v).to_string(),
+        }
+    }
+
+    fn finish(&mut self, r: Rec) -> InstrInfo {
+        let cr_before = r.cr_before.map(|t| self.resolve(&t));
+        let cr_after = r.cr_after.map(|t| self.resolve(&t));
+        let operand = r.operand.map(|t| self.resolve(&t));
+        let mut callee = r.callee;
+        if let Some((t, res)) = r.callee_tys {
+            let (t, res) = (self.resolve(&t), self.resolve(&res));
+            match &mut callee {
+                Some(Callee::Std { ty, result, .. }) => {
+                    *ty = t;
+                    *result = res;
+                }
+                Some(Callee::Conversion { from, to, .. }) => {
+                    *from = t;
+                    *to = res;
+                }
+                _ => {}
+            }
+        }
+        let args = r
+            .args
+            .into_iter()
+            .map(|(mut b, t)| {
+                b.ty = self.resolve(&t);
+                b
+            })
+            .collect();
+        InstrInfo {
+            cr_before,
+            cr_after,
+            operand,
+            callee,
+            args,
+        }
+    }
+
+    /// Reads the CR (reports an undefined one); marks the value used.
+    pub(super) fn use_cr(&mut self, st: &mut State, at: Span, what: &str) -> Ty {
+        st.cr.fresh = None;
+        match &st.cr.ty {
+            Some(t) => t.clone(),
+            None => {
+                self.a
+                    .error(
+                        code::E1007,
+                        at,
+                        format!("{what} reads the current result, but none is defined here"),
+                    )
+                    .label("no value loaded before this")
+                    .hint("load a value first (LD x)");
+                st.cr.ty = Some(Ty::ERROR);
+                Ty::ERROR
+            }
+        }
+    }
+
+    /// Replaces the CR by a new value (warns when the old one was never used).
+    pub(super) fn load(&mut self, st: &mut State, ty: Ty, at: Span) {
+        if let Some(f) = st.cr.fresh {
+            self.a
+                .warning(code::W1001, f, "this result is never used")
+                .label("computed here")
+                .also(at, "replaced here before any use")
+                .hint("store it (ST x) or remove the instructions computing it");
+        }
+        st.cr.ty = Some(ty);
+        st.cr.fresh = Some(at);
+    }
+
+    /// The CR must be BOOL (conditions, S, R).
+    pub(super) fn check_bool(&mut self, ty: &Ty, at: Span, what: &str) {
+        let n = self.norm(ty);
+        match n {
+            Ty::Known(Type::Error) => {}
+            Ty::Known(t) if t.is_bool() => {}
+            Ty::Lit(v) if self.lits.bind(v, &Type::BOOL).is_ok() => {}
+            other => {
+                let d = self.describe(&other);
+                self.a
+                    .error(
+                        code::E1023,
+                        at,
+                        format!("{what} needs a BOOL current result, not {d}"),
+                    )
+                    .label(format!("the current result is {d}"))
+                    .hint("compare first (GT, EQ ...) to get a BOOL");
+            }
+        }
+    }
+
+    fn instr(&mut self, i: &ast::Instruction, st: &mut State) {
+        let mut rec = Rec {
+            cr_before: st.cr.ty.clone(),
+            ..Rec::default()
+        };
+        match &i.kind {
+            InstrKind::Simple {
+                op,
+                negate,
+                operand,
+            } => self.simple(i.span, *op, *negate, operand.as_ref(), st, &mut rec),
+            InstrKind::Deferred {
+                op,
+                negate,
+                operand,
+                body,
+                close,
+            } => {
+                let outer = if *op == Op::Ld {
+                    None
+                } else {
+                    Some(self.use_cr(st, i.span, op_name(*op)))
+                };
+                let mut inner = State {
+                    reach: true,
+                    cr: Cr {
+                        ty: None,
+                        fresh: None,
+                    },
+                    last: None,
+                    warned_unreachable: false,
+                };
+                if let Some(o) = operand {
+                    let t = self.read_operand(o);
+                    inner.cr.ty = Some(t);
+                }
+                self.walk(body, &mut inner);
+                let value = self.use_cr(&mut inner, *close, "`)`");
+                rec.operand = Some(value.clone());
+                match outer {
+                    None => self.load(st, value, i.span),
+                    Some(cr) => {
+                        let res = self.operator(*op, *negate, cr, value, *close, i.span, &mut rec);
+                        st.cr.ty = Some(res);
+                        st.cr.fresh = Some(i.span);
+                    }
+                }
+            }
+            InstrKind::Jump { cond, label } => {
+                if *cond != Condition::Always {
+                    let cr = self.use_cr(st, i.span, "a conditional jump");
+                    self.check_bool(&cr, i.span, "a conditional jump");
+                }
+                match self.labels.get(&label.key()) {
+                    None => {
+                        self.a
+                            .error(
+                                code::E1009,
+                                label.span,
+                                format!("no label `{}` in `{}`", label.name, self.pou().name),
+                            )
+                            .label("undefined label")
+                            .hint(
+                                "define the label (`name:` before an instruction) or fix the name",
+                            );
+                    }
+                    Some(_) => {
+                        self.edges.entry(label.key()).or_default().push(Edge {
+                            from: i.span,
+                            pos: self.pos,
+                            ty: st.cr.ty.clone(),
+                        });
+                    }
+                }
+                st.cr.fresh = None;
+                if *cond == Condition::Always {
+                    st.reach = false;
+                    st.warned_unreachable = false;
+                }
+            }
+            InstrKind::Return { cond } => {
+                if *cond != Condition::Always {
+                    let cr = self.use_cr(st, i.span, "a conditional return");
+                    self.check_bool(&cr, i.span, "a conditional return");
+                } else {
+                    st.reach = false;
+                    st.warned_unreachable = false;
+                }
+                st.cr.fresh = None;
+            }
+            InstrKind::Call {
+                cond,
+                instance,
+                args,
+            } => self.cal(i.span, *cond, instance, args, st, &mut rec),
+            InstrKind::FunctionCall { name, args } => {
+                self.function_call(i.span, name, args, false, st, &mut rec)
+            }
+            InstrKind::FbInput { op, instance } => {
+                let cr = self.use_cr(st, i.span, op.input_name());
+                self.fb_input(i.span, op.input_name(), instance, cr, &mut rec);
+            }
+            InstrKind::EmbeddedC { name } => {
+                rec.callee = Some(Callee::Embedded {
+                    name: name.name.clone(),
+                });
+            }
+        }
+        rec.cr_after = if st.reach { st.cr.ty.clone() } else { None };
+        self.recs.push((i.span, rec));
+    }
+
+    fn simple(
+        &mut self,
+        span: Span,
+        op: Op,
+        negate: bool,
+        operand: Option<&ast::Operand>,
+        st: &mut State,
+        rec: &mut Rec,
+    ) {
+        match op {
+            Op::Ld => {
+                let Some(o) = operand else {
+                    self.a
+                        .error(code::E1007, span, "LD needs an operand")
+                        .label("nothing to load")
+                        .hint("write LD x");
+                    self.load(st, Ty::ERROR, span);
+                    return;
+                };
+                let t = self.read_operand(o);
+                if negate {
+                    self.check_class_bit(&t, o.span(), "LDN");
+                }
+                rec.operand = Some(t.clone());
+                self.load(st, t, span);
+            }
+            Op::St => {
+                let cr = self.use_cr(st, span, if negate { "STN" } else { "ST" });
+                let Some(o) = operand else {
+                    self.a
+                        .error(code::E1026, span, "ST needs an operand")
+                        .label("nothing to store into")
+                        .hint("write ST x");
+                    return;
+                };
+                if negate {
+                    self.check_class_bit(&cr, span, "STN");
+                }
+                let place = self.write_place(o, "ST");
+                rec.operand = Some(Ty::Known(place.clone()));
+                self.coerce_store(&cr, &place, o.span(), span);
+            }
+            Op::S | Op::R => {
+                let name = if op == Op::S { "S" } else { "R" };
+                let Some(o) = operand else {
+                    self.a
+                        .error(code::E1016, span, format!("{name} without operand"))
+                        .label(format!("{name} needs the variable to {}", if op == Op::S { "set" } else { "reset" }))
+                        .hint(format!("write {name} x (x: BOOL), or {name} inst for an FB instance with a `{name}` input"));
+                    st.cr.fresh = None;
+                    return;
+                };
+                let cr = self.use_cr(st, span, name);
+                if let Some(fb) = self.fb_instance_operand(o) {
+                    self.fb_input_resolved(span, name, fb, o, cr, rec);
+                    return;
+                }
+                self.check_bool(&cr, span, name);
+                let place = self.write_place(o, name);
+                rec.operand = Some(Ty::Known(place.clone()));
+                if !place.is_error() && !place.is_bool() {
+                    let t = self.a.type_name(&place);
+                    self.a
+                        .error(
+                            code::E1006,
+                            o.span(),
+                            format!("{name} sets or resets a BOOL, not {t}"),
+                        )
+                        .label(format!("this is {t}"))
+                        .hint("use ST to store other types");
+                }
+            }
+            Op::Not => {
+                let cr = self.use_cr(st, span, "NOT");
+                if let Some(o) = operand {
+                    // `NOT x` is not IEC IL; treat as reading the operand.
+                    let _ = self.read_operand(o);
+                }
+                self.check_class_bit(&cr, span, "NOT");
+                rec.callee = Some(Callee::Std {
+                    name: "NOT",
+                    ty: Type::Error,
+                    result: Type::Error,
+                });
+                rec.callee_tys = Some((cr.clone(), cr.clone()));
+                st.cr.ty = Some(cr);
+                st.cr.fresh = Some(span);
+            }
+            _ => {
+                let cr = self.use_cr(st, span, op_name(op));
+                let Some(o) = operand else {
+                    self.a
+                        .error(
+                            code::E1020,
+                            span,
+                            format!("{} needs an operand", op_name(op)),
+                        )
+                        .label("missing operand")
+                        .hint(format!(
+                            "write {} x, or {}( ... ) for a nested expression",
+                            op_name(op),
+                            op_name(op)
+                        ));
+                    st.cr.ty = Some(Ty::ERROR);
+                    return;
+                };
+                let t = self.read_operand(o);
+                rec.operand = Some(t.clone());
+                let res = self.operator(op, negate, cr, t, o.span(), span, rec);
+                st.cr.ty = Some(res);
+                st.cr.fresh = Some(span);
+            }
+        }
+    }
+
+    /// Checks that `t` is ANY_BIT (N modifier, NOT, STN).
+    fn check_class_bit(&mut self, t: &Ty, at: Span, what: &str) {
+        let n = self.norm(t);
+        match &n {
+            Ty::Known(k) if k.is_error() || k.is_bit() => {}
+            Ty::Lit(v) if !self.lits.is_real(*v) => {}
+            _ => {
+                let d = self.describe(&n);
+                self.a
+                    .error(code::E1004, at, format!("{what} is not defined for {d}"))
+                    .label(format!("this is {d}"))
+                    .hint("negation needs a bit string (BOOL, BYTE, WORD, DWORD, LWORD)");
+            }
+        }
+    }
+
+    /// A binary operator (simple or deferred): CR `op` operand.
+    #[allow(clippy::too_many_arguments)]
+    fn operator(
+        &mut self,
+        op: Op,
+        negate: bool,
+        cr: Ty,
+        operand: Ty,
+        operand_span: Span,
+        span: Span,
+        rec: &mut Rec,
+    ) -> Ty {
+        let name = op_name(op);
+        let Some(f) = super::stdlib::function(name) else {
+            return Ty::ERROR;
+        };
+        if negate {
+            self.check_class_bit(&operand, operand_span, &format!("{name}N"));
+        }
+        let inst = self.instantiate(f, &[(cr, span), (operand, operand_span)], span);
+        rec.callee = Some(Callee::Std {
+            name: inst.name,
+            ty: Type::Error,
+            result: Type::Error,
+        });
+        rec.callee_tys = Some((inst.t.clone(), inst.result.clone()));
+        inst.result
+    }
+}
+
+/// The IEC name of a simple operator (as a standard function where there is one).
+pub(super) fn op_name(op: Op) -> &'static str {
+    match op {
+        Op::Ld => "LD",
+        Op::St => "ST",
+        Op::S => "S",
+        Op::R => "R",
+        Op::And => "AND",
+        Op::Or => "OR",
+        Op::Xor => "XOR",
+        Op::Not => "NOT",
+        Op::Add => "ADD",
+        Op::Sub => "SUB",
+        Op::Mul => "MUL",
+        Op::Div => "DIV",
+        Op::Mod => "MOD",
+        Op::Gt => "GT",
+        Op::Ge => "GE",
+        Op::Eq => "EQ",
+        Op::Ne => "NE",
+        Op::Le => "LE",
+        Op::Lt => "LT",
+    }
+}

@@ -1,0 +1,1080 @@
+//! Calls inside a body: standard functions (generic instantiation), conversions, user functions, FB calls
+//! (`CAL`), FB input operators (`S1`, `PT`, `IN` ... and `S`/`R` with an instance operand).
+//!
+//! Input: the call instructions and the current result. Output: the callee and argument bindings in the
+//! instruction's record, the new current result, diagnostics. Invariants: in the IL operator form the
+//! current result is the first input; a formal call (or `CAL` of a function) does not read it and
+//! replaces it with the result; all generic inputs of one call share one type (the common type they
+//! widen to); an unknown callee is reported once and its arguments are still name-checked.
+
+use super::body::{Body, Rec, State, Ty};
+use super::model::*;
+use super::places::{conversion_hint, fb_param_list, ParamDir};
+use super::stdlib::{self, bcd_of_width, Class, ConvTarget, ParamTy, Ret, StdFunction};
+use super::typing::common_type;
+use crate::ast::{self, ArgDir, CallArgs, Condition, Operand, PouKind, VarKind, VarRef};
+use crate::Span;
+use diagnostics::code;
+
+/// A generic instantiation: the overload's name, the generic type, the result type.
+pub(super) struct Inst {
+    pub(super) name: &'static str,
+    pub(super) t: Ty,
+    pub(super) result: Ty,
+}
+
+impl Body<'_, '_> {
+    /// Instantiates a standard function for its inputs `args` (type and where it comes from).
+    pub(super) fn instantiate(&mut self, f: &StdFunction, args: &[(Ty, Span)], at: Span) -> Inst {
+        let fixed_result = |t: Ty| match f.result {
+            Ret::T => t,
+            Ret::Fixed(e) => Ty::Known(Type::Elementary(e)),
+        };
+        // Time and date arithmetic.
+        if f.time_arith {
+            if let Some(Ty::Known(first)) = args.first().map(|a| self.norm(&a.0)) {
+                if let Some(e) = first
+                    .elementary()
+                    .filter(|e| e.is_duration() || e.is_date())
+                {
+                    return self.time_arith(f, e, args, at);
+                }
+            }
+        }
+        let mut known: Vec<(Type, Span)> = Vec::new();
+        let mut lit_args: Vec<(usize, Span)> = Vec::new();
+        let mut error = false;
+        let mut class = Class::Any;
+        for (i, (ty, span)) in args.iter().enumerate() {
+            match f.param_ty(i) {
+                Some(ParamTy::T(c)) => {
+                    class = c;
+                    match self.norm(ty) {
+                        Ty::Known(Type::Error) => error = true,
+                        Ty::Known(t) => known.push((t, *span)),
+                        Ty::Lit(v) => lit_args.push((v, *span)),
+                    }
+                }
+                Some(ParamTy::Own(c)) => {
+                    let n = self.norm(ty);
+                    let ok = match &n {
+                        Ty::Known(t) => c.contains(t),
+                        Ty::Lit(v) => {
+                            if self.lits.is_real(*v) {
+                                c.accepts_real_literal()
+                            } else {
+                                c.accepts_int_literal()
+                            }
+                        }
+                    };
+                    if !ok {
+                        let d = self.describe(&n);
+                        self.a
+                            .error(
+                                code::E1004,
+                                *span,
+                                format!(
+                                    "input {} of {} must be {}, not {d}",
+                                    f.param_name(i),
+                                    f.name,
+                                    c.name()
+                                ),
+                            )
+                            .label(format!("this is {d}"))
+                            .hint(format!("pass a value of class {}", c.name()));
+                    }
+                }
+                Some(ParamTy::Fixed(e)) => {
+                    let pname = f.param_name(i);
+                    let want = Type::Elementary(e);
+                    self.coerce(ty, &want, *span, |b, from, to| {
+                        b.a.error(
+                            code::E1012,
+                            *span,
+                            format!("input {pname} of {} must be {to}, not {from}", f.name),
+                        )
+                        .label(format!("this is {from}"))
+                        .hint(conversion_hint(from, to));
+                    });
+                }
+                None => {}
+            }
+        }
+        if error {
+            return Inst {
+                name: f.name,
+                t: Ty::ERROR,
+                result: fixed_result(Ty::ERROR),
+            };
+        }
+        let t = if !known.is_empty() {
+            let types: Vec<Type> = known.iter().map(|k| k.0.clone()).collect();
+            match common_type(&types) {
+                Some(t) => {
+                    if !class.contains(&t) {
+                        let tn = self.a.type_name(&t);
+                        let span = known
+                            .iter()
+                            .find(|k| !class.contains(&k.0))
+                            .map_or(at, |k| k.1);
+                        self.a
+                            .error(
+                                code::E1004,
+                                span,
+                                format!("{} is not defined for {tn}", f.name),
+                            )
+                            .label(format!("this is {tn}"))
+                            .hint(format!(
+                                "{} needs {}; convert the value first",
+                                f.name,
+                                class.name()
+                            ));
+                        return Inst {
+                            name: f.name,
+                            t: Ty::ERROR,
+                            result: fixed_result(Ty::ERROR),
+                        };
+                    }
+                    for (v, span) in &lit_args {
+                        let name = f.name;
+                        self.coerce(&Ty::Lit(*v), &t, *span, |b, from, to| {
+                            b.a.error(code::E1005, *span, format!("{name} of {to} with {from}"))
+                                .label(format!("this is {from}"))
+                                .hint(format!("use a {to} value"));
+                        });
+                    }
+                    Ty::Known(t)
+                }
+                None => {
+                    let (a, sa) = known[0].clone();
+                    let (b, sb) = known
+                        .iter()
+                        .find(|k| common_type(&[a.clone(), k.0.clone()]).is_none())
+                        .cloned()
+                        .unwrap_or_else(|| known[known.len() - 1].clone());
+                    let (an, bn) = (self.a.type_name(&a), self.a.type_name(&b));
+                    let (first, second) = if sa == at {
+                        ("the current result", "the operand")
+                    } else {
+                        ("the first input", "this input")
+                    };
+                    self.a
+                        .error(
+                            code::E1005,
+                            sb,
+                            format!(
+                                "{} of {an} and {bn}: {second} does not match {first}",
+                                f.name
+                            ),
+                        )
+                        .label(format!("this is {bn}"))
+                        .also(sa, format!("{first} is {an}"))
+                        .hint(format!(
+                            "convert one side explicitly ({})",
+                            conversion_hint(&bn, &an)
+                                .trim_start_matches("convert explicitly with ")
+                        ));
+                    return Inst {
+                        name: f.name,
+                        t: Ty::ERROR,
+                        result: fixed_result(Ty::ERROR),
+                    };
+                }
+            }
+        } else if let Some((first, span)) = lit_args.first().cloned() {
+            let mut root = first;
+            for (v, _) in &lit_args[1..] {
+                root = self.lits.unify(root, *v);
+            }
+            let real = self.lits.is_real(root);
+            if class == Class::AnyReal {
+                let _ = self.lits.bind(root, &Type::LREAL);
+                Ty::Known(Type::LREAL)
+            } else if real && !class.accepts_real_literal() {
+                self.a
+                    .error(
+                        code::E1004,
+                        span,
+                        format!("{} is not defined for real numbers", f.name),
+                    )
+                    .label("a real literal")
+                    .hint(format!("{} needs {}", f.name, class.name()));
+                Ty::ERROR
+            } else {
+                Ty::Lit(root)
+            }
+        } else {
+            Ty::ERROR
+        };
+        Inst {
+            name: f.name,
+            t: t.clone(),
+            result: fixed_result(t),
+        }
+    }
+
+    fn time_arith(
+        &mut self,
+        f: &StdFunction,
+        e: Elementary,
+        args: &[(Ty, Span)],
+        at: Span,
+    ) -> Inst {
+        let second = args.get(1).cloned();
+        let overloads: Vec<_> = stdlib::time_overloads(f.name, e).cloned().collect();
+        let err = Inst {
+            name: f.name,
+            t: Ty::ERROR,
+            result: Ty::ERROR,
+        };
+        if overloads.is_empty() {
+            self.a
+                .error(code::E1004, at, format!("{} is not defined for {}", f.name, e.name()))
+                .label(format!("this is {}", e.name()))
+                .hint("time arithmetic: ADD/SUB of durations, TOD/DT +- TIME, SUB of two dates, MUL/DIV of a duration by a number");
+            return err;
+        }
+        let Some((ty2, span2)) = second else {
+            return err;
+        };
+        let n2 = self.norm(&ty2);
+        if n2.is_error() {
+            return err;
+        }
+        for (name, _, _, in2, out) in &overloads {
+            let fits = match (in2, &n2) {
+                (Some(t2), Ty::Known(k)) => k.elementary() == Some(*t2),
+                (Some(_), Ty::Lit(_)) => false,
+                (None, Ty::Known(k)) => k.is_numeric(),
+                (None, Ty::Lit(_)) => true,
+            };
+            if fits {
+                return Inst {
+                    name,
+                    t: Ty::Known(Type::Elementary(e)),
+                    result: Ty::Known(Type::Elementary(*out)),
+                };
+            }
+        }
+        let d = self.describe(&n2);
+        let allowed: Vec<String> = overloads
+            .iter()
+            .map(|o| o.3.map_or("a number".to_string(), |t| t.name().to_string()))
+            .collect();
+        self.a
+            .error(
+                code::E1005,
+                span2,
+                format!("{} of {} with {d}", f.name, e.name()),
+            )
+            .label(format!("this is {d}"))
+            .also(at, format!("the current result is {}", e.name()))
+            .hint(format!(
+                "{} of {} takes {}",
+                f.name,
+                e.name(),
+                allowed.join(" or ")
+            ));
+        err
+    }
+
+    /// A function call instruction (`SEL x, y`, `LIMIT(MN := 0, ...)`, or `CAL` of a function).
+    pub(super) fn function_call(
+        &mut self,
+        span: Span,
+        name: &ast::Ident,
+        args: &CallArgs,
+        via_cal: bool,
+        st: &mut State,
+        rec: &mut Rec,
+    ) {
+        let formal = via_cal || matches!(args, CallArgs::Formal(_));
+        let user_fn = self
+            .a
+            .pou_names
+            .get(&name.key())
+            .copied()
+            .filter(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Function);
+        let result = if let Some(conv) = stdlib::conversion(&name.name) {
+            self.conversion_call(span, name, conv, args, formal, st, rec)
+        } else if let Some(f) = stdlib::function(&name.name) {
+            self.std_call(span, f, args, formal, st, rec)
+        } else if let Some(id) = user_fn {
+            self.user_call(span, id, args, formal, st, rec)
+        } else {
+            let is_fb = self.a.pou_names.contains_key(&name.key())
+                || self.pou().var(&name.name).is_some_and(|v| v.ty.is_fb());
+            if is_fb {
+                self.a
+                    .error(
+                        code::E1018,
+                        name.span,
+                        format!("`{}` is not a function", name.name),
+                    )
+                    .label("a function block, program or FB instance")
+                    .hint("call FB instances with CAL inst(...)");
+            } else {
+                self.a
+                    .error(code::E1019, name.span, format!("unknown function `{}`", name.name))
+                    .label("no such function")
+                    .hint("use an IEC standard function, a conversion X_TO_Y, or declare the FUNCTION");
+            }
+            self.args_unchecked(args);
+            st.cr.fresh = None;
+            Ty::ERROR
+        };
+        if formal {
+            self.load(st, result, span);
+        } else {
+            st.cr.ty = Some(result);
+            st.cr.fresh = Some(span);
+        }
+    }
+
+    /// The inputs of a call: (type, span, source), `None` where a formal call leaves a gap.
+    fn collect_inputs(
+        &mut self,
+        span: Span,
+        args: &CallArgs,
+        formal: bool,
+        st: &mut State,
+        what: &str,
+    ) -> Vec<(Ty, Span, ArgSource)> {
+        let mut out = Vec::new();
+        if !formal {
+            out.push((self.use_cr(st, span, what), span, ArgSource::CurrentResult));
+        }
+        if let CallArgs::NonFormal(ops) = args {
+            for (k, o) in ops.iter().enumerate() {
+                out.push((self.read_operand(o), o.span(), ArgSource::Written(k)));
+            }
+        }
+        out
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn conversion_call(
+        &mut self,
+        span: Span,
+        name: &ast::Ident,
+        conv: stdlib::Conversion,
+        args: &CallArgs,
+        formal: bool,
+        st: &mut State,
+        rec: &mut Rec,
+    ) -> Ty {
+        let cname = name.name.to_ascii_uppercase();
+        let (input, ispan, source) = match args {
+            CallArgs::Formal(fargs) => {
+                let mut input = None;
+                for (k, fa) in fargs.iter().enumerate() {
+                    if fa.dir == ArgDir::Input && fa.name.is("IN") {
+                        input = Some((
+                            self.read_operand(&fa.value),
+                            fa.value.span(),
+                            ArgSource::Written(k),
+                        ));
+                    } else {
+                        self.unknown_param(&fa.name, &cname, &["IN".to_string()]);
+                    }
+                }
+                match input {
+                    Some(i) => i,
+                    None => {
+                        self.a
+                            .error(code::E1020, span, format!("{cname} needs its input IN"))
+                            .label("missing IN := value")
+                            .hint(format!("write {cname}(IN := value)"));
+                        return Ty::ERROR;
+                    }
+                }
+            }
+            _ => {
+                let ins = self.collect_inputs(span, args, formal, st, &cname);
+                if ins.len() != 1 {
+                    self.a
+                        .error(
+                            code::E1020,
+                            span,
+                            format!(
+                                "{cname} takes one input (the current result), {} given",
+                                ins.len()
+                            ),
+                        )
+                        .label("wrong number of inputs")
+                        .hint(format!("write LD value then {cname} with no operand"));
+                    return Ty::ERROR;
+                }
+                ins.into_iter()
+                    .next()
+                    .unwrap_or((Ty::ERROR, span, ArgSource::CurrentResult))
+            }
+        };
+        let from = match &conv.from {
+            Some(t) => {
+                let ok = self.coerce(&input, t, ispan, |b, f, t| {
+                    b.a.error(
+                        code::E1012,
+                        ispan,
+                        format!("{cname} converts from {t}, not {f}"),
+                    )
+                    .label(format!("this is {f}"))
+                    .hint(format!("use {f}_TO_... for a {f} value"));
+                });
+                if ok {
+                    Ty::Known(t.clone())
+                } else {
+                    Ty::ERROR
+                }
+            }
+            None => match self.norm(&input) {
+                Ty::Known(t) if conv.from_class.contains(&t) => Ty::Known(t),
+                Ty::Lit(v) => {
+                    let t = if conv.from_class == Class::AnyReal {
+                        Type::LREAL
+                    } else {
+                        Type::Elementary(Elementary::Dword)
+                    };
+                    if self.lits.bind(v, &t).is_ok() {
+                        Ty::Known(t)
+                    } else {
+                        Ty::ERROR
+                    }
+                }
+                Ty::Known(t) => {
+                    let tn = self.a.type_name(&t);
+                    self.a
+                        .error(
+                            code::E1004,
+                            ispan,
+                            format!("{cname} is not defined for {tn}"),
+                        )
+                        .label(format!("this is {tn}"))
+                        .hint(format!("{cname} needs {}", conv.from_class.name()));
+                    Ty::ERROR
+                }
+            },
+        };
+        let to = match (&conv.to, self.norm(&from)) {
+            (_, Ty::Known(Type::Error)) => Ty::ERROR,
+            (ConvTarget::Fixed(t), _) => Ty::Known(t.clone()),
+            (ConvTarget::BcdOfWidth, Ty::Known(t)) => Ty::Known(Type::Elementary(bcd_of_width(
+                t.elementary().unwrap_or(Elementary::Int),
+            ))),
+            (ConvTarget::BcdOfWidth, Ty::Lit(_)) => Ty::Known(Type::Elementary(Elementary::Word)),
+        };
+        rec.callee = Some(Callee::Conversion {
+            name: cname,
+            kind: conv.kind,
+            from: Type::Error,
+            to: Type::Error,
+        });
+        rec.callee_tys = Some((from.clone(), to.clone()));
+        rec.args.push((
+            ArgBinding {
+                param: "IN".into(),
+                output: false,
+                ty: Type::Error,
+                source,
+            },
+            from,
+        ));
+        to
+    }
+
+    fn std_call(
+        &mut self,
+        span: Span,
+        f: &'static StdFunction,
+        args: &CallArgs,
+        formal: bool,
+        st: &mut State,
+        rec: &mut Rec,
+    ) -> Ty {
+        let inputs: Vec<(Ty, Span, ArgSource)> = match args {
+            CallArgs::Formal(fargs) => {
+                let mut slots: Vec<Option<(Ty, Span, ArgSource)>> = Vec::new();
+                for (k, fa) in fargs.iter().enumerate() {
+                    if fa.name.is("ENO") && matches!(fa.dir, ArgDir::Output { .. }) {
+                        let t = self.write_place(&fa.value, "=>");
+                        self.coerce_store(&Ty::Known(Type::BOOL), &t, fa.value.span(), fa.span);
+                        continue;
+                    }
+                    if fa.name.is("EN") && fa.dir == ArgDir::Input {
+                        let t = self.read_operand(&fa.value);
+                        self.check_bool(&t, fa.value.span(), "EN");
+                        continue;
+                    }
+                    let Some(idx) = f.param_index(&fa.name.name) else {
+                        let names: Vec<String> =
+                            (0..f.params.len()).map(|i| f.param_name(i)).collect();
+                        self.unknown_param(&fa.name, f.name, &names);
+                        self.arg_unchecked(fa);
+                        continue;
+                    };
+                    if let ArgDir::Output { .. } = fa.dir {
+                        self.a
+                            .error(
+                                code::E1013,
+                                fa.span,
+                                format!("`{}` is an input of {}", fa.name.name, f.name),
+                            )
+                            .label("=> receives outputs")
+                            .hint(format!("write {} := value", fa.name.name));
+                        continue;
+                    }
+                    let t = self.read_operand(&fa.value);
+                    if slots.len() <= idx {
+                        slots.resize(idx + 1, None);
+                    }
+                    slots[idx] = Some((t, fa.value.span(), ArgSource::Written(k)));
+                }
+                let needed = f.params.len().max(slots.len());
+                let missing: Vec<String> = (0..needed)
+                    .filter(|&i| slots.get(i).is_none_or(|s| s.is_none()))
+                    .map(|i| f.param_name(i))
+                    .collect();
+                if !missing.is_empty() {
+                    self.a
+                        .error(
+                            code::E1020,
+                            span,
+                            format!("{} needs input(s) {}", f.name, missing.join(", ")),
+                        )
+                        .label("missing inputs")
+                        .hint(format!(
+                            "give every input: {}",
+                            (0..needed)
+                                .map(|i| format!("{} := ...", f.param_name(i)))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ));
+                    return Ty::ERROR;
+                }
+                slots.into_iter().flatten().collect()
+            }
+            _ => {
+                let ins = self.collect_inputs(span, args, formal, st, f.name);
+                let n = f.params.len();
+                let bad = if f.extensible {
+                    ins.len() < n
+                } else {
+                    ins.len() != n
+                };
+                if bad {
+                    let cr_note = if formal {
+                        ""
+                    } else {
+                        " (the current result is the first)"
+                    };
+                    self.a
+                        .error(
+                            code::E1020,
+                            span,
+                            format!(
+                                "{} takes {}{n} inputs{cr_note}, {} given",
+                                f.name,
+                                if f.extensible { "at least " } else { "" },
+                                ins.len()
+                            ),
+                        )
+                        .label("wrong number of inputs")
+                        .hint(format!(
+                            "inputs: {}",
+                            (0..n)
+                                .map(|i| f.param_name(i))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ));
+                    return Ty::ERROR;
+                }
+                ins
+            }
+        };
+        let typed: Vec<(Ty, Span)> = inputs.iter().map(|(t, s, _)| (t.clone(), *s)).collect();
+        let inst = self.instantiate(f, &typed, span);
+        for (i, (t, _, source)) in inputs.into_iter().enumerate() {
+            let pty = match f.param_ty(i) {
+                Some(ParamTy::T(_)) => inst.t.clone(),
+                Some(ParamTy::Fixed(e)) => Ty::Known(Type::Elementary(e)),
+                _ => t,
+            };
+            rec.args.push((
+                ArgBinding {
+                    param: f.param_name(i),
+                    output: false,
+                    ty: Type::Error,
+                    source,
+                },
+                pty,
+            ));
+        }
+        rec.callee = Some(Callee::Std {
+            name: inst.name,
+            ty: Type::Error,
+            result: Type::Error,
+        });
+        rec.callee_tys = Some((inst.t.clone(), inst.result.clone()));
+        inst.result
+    }
+
+    fn user_call(
+        &mut self,
+        span: Span,
+        id: PouId,
+        args: &CallArgs,
+        formal: bool,
+        st: &mut State,
+        rec: &mut Rec,
+    ) -> Ty {
+        let pou = self.a.model.pous[id.0 as usize].clone();
+        let inputs: Vec<&Variable> = pou
+            .vars
+            .iter()
+            .filter(|v| matches!(v.kind, VarKind::Input | VarKind::InOut))
+            .collect();
+        rec.callee = Some(Callee::UserFunction(id));
+        let result = Ty::Known(pou.return_type.clone().unwrap_or(Type::Error));
+        match args {
+            CallArgs::Formal(fargs) => {
+                for (k, fa) in fargs.iter().enumerate() {
+                    self.formal_arg(k, fa, &pou.name, &fb_like_params(&pou), rec);
+                }
+            }
+            _ => {
+                let ins = self.collect_inputs(span, args, formal, st, &pou.name);
+                if ins.len() != inputs.len() {
+                    let cr_note = if formal {
+                        ""
+                    } else {
+                        " (the current result is the first)"
+                    };
+                    self.a
+                        .error(
+                            code::E1020,
+                            span,
+                            format!(
+                                "{} takes {} inputs{cr_note}, {} given",
+                                pou.name,
+                                inputs.len(),
+                                ins.len()
+                            ),
+                        )
+                        .label("wrong number of inputs")
+                        .also(pou.span, "function declared here")
+                        .hint(format!(
+                            "inputs: {}",
+                            inputs
+                                .iter()
+                                .map(|v| v.name.clone())
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ));
+                    return result;
+                }
+                for ((t, s, source), p) in ins.into_iter().zip(inputs) {
+                    let pname = p.name.clone();
+                    let fname = pou.name.clone();
+                    self.coerce(&t, &p.ty, s, |b, from, to| {
+                        b.a.error(
+                            code::E1012,
+                            s,
+                            format!("input {pname} of {fname} is {to}, not {from}"),
+                        )
+                        .label(format!("this is {from}"))
+                        .hint(conversion_hint(from, to));
+                    });
+                    rec.args.push((
+                        ArgBinding {
+                            param: p.name.clone(),
+                            output: false,
+                            ty: Type::Error,
+                            source,
+                        },
+                        Ty::Known(p.ty.clone()),
+                    ));
+                }
+            }
+        }
+        result
+    }
+
+    /// `CAL inst(...)`, `CALC inst`, and `CAL f(...)` of a function (accepted as in IEC Annex F).
+    pub(super) fn cal(
+        &mut self,
+        span: Span,
+        cond: Condition,
+        instance: &VarRef,
+        args: &CallArgs,
+        st: &mut State,
+        rec: &mut Rec,
+    ) {
+        if cond != Condition::Always {
+            let cr = self.use_cr(st, span, "a conditional CAL");
+            self.check_bool(&cr, span, "a conditional CAL");
+        }
+        if instance.accessors.is_empty() && self.pou().var(&instance.base.name).is_none() {
+            let n = &instance.base;
+            let is_fn =
+                stdlib::conversion(&n.name).is_some()
+                    || stdlib::function(&n.name).is_some()
+                    || self.a.pou_names.get(&n.key()).is_some_and(|id| {
+                        self.a.model.pous[id.0 as usize].kind == PouKind::Function
+                    });
+            if is_fn {
+                self.function_call(span, n, args, true, st, rec);
+                return;
+            }
+        }
+        let place = self.resolve_var(instance);
+        match place.ty {
+            Type::Fb(fb) => {
+                rec.callee = Some(Callee::FbInstance { fb, input: None });
+                rec.operand = Some(Ty::Known(Type::Fb(fb)));
+                self.fb_args(fb, args, rec);
+            }
+            Type::Error => self.args_unchecked(args),
+            other => {
+                let t = self.a.type_name(&other);
+                self.a
+                    .error(
+                        code::E1018,
+                        instance.span,
+                        format!("`{}` is {t}, not an FB instance", instance.base.name),
+                    )
+                    .label("CAL needs an FB instance")
+                    .hint("declare an instance (VAR t : TON; END_VAR) and call it");
+                self.args_unchecked(args);
+            }
+        }
+    }
+
+    fn fb_args(&mut self, fb: FbType, args: &CallArgs, rec: &mut Rec) {
+        let params = fb_param_list(&self.a.model, fb);
+        let tname = self.a.type_name(&Type::Fb(fb));
+        match args {
+            CallArgs::None => {}
+            CallArgs::NonFormal(ops) => {
+                let inputs: Vec<_> = params
+                    .iter()
+                    .filter(|p| matches!(p.1, ParamDir::Input | ParamDir::InOut))
+                    .cloned()
+                    .collect();
+                if ops.len() > inputs.len() {
+                    self.a
+                        .error(
+                            code::E1020,
+                            ops[inputs.len()].span(),
+                            format!("{tname} has {} inputs, {} given", inputs.len(), ops.len()),
+                        )
+                        .label("one argument too many")
+                        .hint(format!(
+                            "inputs: {}",
+                            inputs
+                                .iter()
+                                .map(|p| p.0.clone())
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ));
+                }
+                for (k, (o, p)) in ops
+                    .iter()
+                    .zip(inputs.iter().chain(std::iter::repeat(&(
+                        String::new(),
+                        ParamDir::Internal,
+                        Type::Error,
+                    ))))
+                    .enumerate()
+                {
+                    let t = self.read_operand(o);
+                    let s = o.span();
+                    let (pname, tn) = (p.0.clone(), tname.clone());
+                    self.coerce(&t, &p.2, s, |b, from, to| {
+                        b.a.error(
+                            code::E1012,
+                            s,
+                            format!("input {pname} of {tn} is {to}, not {from}"),
+                        )
+                        .label(format!("this is {from}"))
+                        .hint(conversion_hint(from, to));
+                    });
+                    if !p.0.is_empty() {
+                        rec.args.push((
+                            ArgBinding {
+                                param: p.0.clone(),
+                                output: false,
+                                ty: Type::Error,
+                                source: ArgSource::Written(k),
+                            },
+                            Ty::Known(p.2.clone()),
+                        ));
+                    }
+                }
+            }
+            CallArgs::Formal(fargs) => {
+                for (k, fa) in fargs.iter().enumerate() {
+                    self.formal_arg(k, fa, &tname, &params, rec);
+                }
+            }
+        }
+    }
+
+    /// One `name := value` / `name => var` of a call to an FB or user function.
+    fn formal_arg(
+        &mut self,
+        k: usize,
+        fa: &ast::FormalArg,
+        callee: &str,
+        params: &[(String, ParamDir, Type)],
+        rec: &mut Rec,
+    ) {
+        let found = params
+            .iter()
+            .find(|p| fa.name.is(&p.0) && p.1 != ParamDir::Internal)
+            .cloned()
+            .or_else(|| {
+                if fa.name.is("EN") {
+                    Some(("EN".into(), ParamDir::Input, Type::BOOL))
+                } else if fa.name.is("ENO") {
+                    Some(("ENO".into(), ParamDir::Output, Type::BOOL))
+                } else {
+                    None
+                }
+            });
+        let Some((pname, pdir, pty)) = found else {
+            let names: Vec<String> = params
+                .iter()
+                .filter(|p| p.1 != ParamDir::Internal)
+                .map(|p| p.0.clone())
+                .collect();
+            self.unknown_param(&fa.name, callee, &names);
+            self.arg_unchecked(fa);
+            return;
+        };
+        match (fa.dir, pdir) {
+            (ArgDir::Input, ParamDir::Input | ParamDir::InOut) => {
+                let t = self.read_operand(&fa.value);
+                let s = fa.value.span();
+                let (pn, cn) = (pname.clone(), callee.to_string());
+                self.coerce(&t, &pty, s, |b, from, to| {
+                    b.a.error(code::E1012, s, format!("{pn} of {cn} is {to}, not {from}"))
+                        .label(format!("this is {from}"))
+                        .hint(conversion_hint(from, to));
+                });
+                rec.args.push((
+                    ArgBinding {
+                        param: pname,
+                        output: false,
+                        ty: Type::Error,
+                        source: ArgSource::Written(k),
+                    },
+                    Ty::Known(pty),
+                ));
+            }
+            (ArgDir::Output { negated }, ParamDir::Output) => {
+                let target = self.write_place(&fa.value, "=>");
+                let s = fa.value.span();
+                if negated && !pty.is_bool() && !pty.is_error() {
+                    self.a
+                        .error(
+                            code::E1004,
+                            fa.span,
+                            format!("NOT {pname}: {pname} is not BOOL"),
+                        )
+                        .label("only BOOL outputs can be negated")
+                        .hint(format!("write {pname} => var"));
+                }
+                if !super::typing::assignable(&pty, &target) {
+                    let (from, to) = (self.a.type_name(&pty), self.a.type_name(&target));
+                    self.a
+                        .error(
+                            code::E1012,
+                            s,
+                            format!(
+                                "output {pname} of {callee} is {from}, cannot be stored into {to}"
+                            ),
+                        )
+                        .label(format!("this is {to}"))
+                        .hint(conversion_hint(&from, &to));
+                }
+                rec.args.push((
+                    ArgBinding {
+                        param: pname,
+                        output: true,
+                        ty: Type::Error,
+                        source: ArgSource::Written(k),
+                    },
+                    Ty::Known(pty),
+                ));
+            }
+            (ArgDir::Input, _) => {
+                self.a
+                    .error(
+                        code::E1013,
+                        fa.span,
+                        format!("`{pname}` is an output of {callee}"),
+                    )
+                    .label(":= passes inputs")
+                    .hint(format!("write {pname} => variable to receive it"));
+                self.arg_unchecked(fa);
+            }
+            (ArgDir::Output { .. }, _) => {
+                self.a
+                    .error(
+                        code::E1013,
+                        fa.span,
+                        format!("`{pname}` is an input of {callee}"),
+                    )
+                    .label("=> receives outputs")
+                    .hint(format!("write {pname} := value to pass it"));
+                self.arg_unchecked(fa);
+            }
+        }
+    }
+
+    fn unknown_param(&mut self, name: &ast::Ident, callee: &str, params: &[String]) {
+        self.a
+            .error(
+                code::E1011,
+                name.span,
+                format!("{callee} has no parameter `{}`", name.name),
+            )
+            .label("unknown parameter")
+            .hint(format!("parameters of {callee}: {}", params.join(", ")));
+    }
+
+    /// Name-checks the operands of arguments that cannot be type-checked.
+    fn args_unchecked(&mut self, args: &CallArgs) {
+        match args {
+            CallArgs::None => {}
+            CallArgs::NonFormal(ops) => {
+                for o in ops {
+                    self.read_operand(o);
+                }
+            }
+            CallArgs::Formal(fargs) => {
+                for fa in fargs {
+                    self.arg_unchecked(fa);
+                }
+            }
+        }
+    }
+
+    fn arg_unchecked(&mut self, fa: &ast::FormalArg) {
+        match fa.dir {
+            ArgDir::Input => {
+                self.read_operand(&fa.value);
+            }
+            ArgDir::Output { .. } => {
+                self.write_place(&fa.value, "=>");
+            }
+        }
+    }
+
+    /// An FB input operator (`PT tmr`, `IN tmr` ...) on a variable reference.
+    pub(super) fn fb_input(
+        &mut self,
+        span: Span,
+        input: &str,
+        instance: &VarRef,
+        cr: Ty,
+        rec: &mut Rec,
+    ) {
+        let place = self.resolve_var(instance);
+        match place.ty {
+            Type::Fb(fb) => self.fb_input_core(span, input, fb, instance.span, cr, rec),
+            Type::Error => {}
+            other => {
+                let t = self.a.type_name(&other);
+                self.a
+                    .error(
+                        code::E1018,
+                        instance.span,
+                        format!("`{}` is {t}, not an FB instance", instance.base.name),
+                    )
+                    .label(format!("{input} needs an FB instance with input {input}"))
+                    .hint("declare an FB instance (VAR t : TON; END_VAR)");
+            }
+        }
+    }
+
+    /// `S inst` / `R inst`: the FB input operators S and R.
+    pub(super) fn fb_input_resolved(
+        &mut self,
+        span: Span,
+        input: &str,
+        fb: FbType,
+        o: &Operand,
+        cr: Ty,
+        rec: &mut Rec,
+    ) {
+        if let Operand::Var(v) = o {
+            let _ = self.resolve_var(v);
+        }
+        self.fb_input_core(span, input, fb, o.span(), cr, rec);
+    }
+
+    fn fb_input_core(
+        &mut self,
+        span: Span,
+        input: &str,
+        fb: FbType,
+        inst_span: Span,
+        cr: Ty,
+        rec: &mut Rec,
+    ) {
+        let params = fb_param_list(&self.a.model, fb);
+        let tname = self.a.type_name(&Type::Fb(fb));
+        rec.operand = Some(Ty::Known(Type::Fb(fb)));
+        let Some((pname, _, pty)) = params
+            .iter()
+            .find(|p| {
+                p.0.eq_ignore_ascii_case(input) && matches!(p.1, ParamDir::Input | ParamDir::InOut)
+            })
+            .cloned()
+        else {
+            let names: Vec<String> = params
+                .iter()
+                .filter(|p| p.1 == ParamDir::Input)
+                .map(|p| p.0.clone())
+                .collect();
+            self.a
+                .error(code::E1011, span, format!("{tname} has no input `{input}`"))
+                .label(format!("{input} stores into input {input}"))
+                .also(inst_span, format!("this is a {tname}"))
+                .hint(format!("inputs of {tname}: {}", names.join(", ")));
+            return;
+        };
+        let tn = tname.clone();
+        let pn = pname.clone();
+        self.coerce(&cr, &pty, span, |b, from, to| {
+            b.a.error(
+                code::E1012,
+                span,
+                format!("input {pn} of {tn} is {to}, but the current result is {from}"),
+            )
+            .label(format!("stores the current result ({from}) into {pn}"))
+            .hint(conversion_hint(from, to));
+        });
+        rec.callee = Some(Callee::FbInstance {
+            fb,
+            input: Some(pname),
+        });
+    }
+}
+
+/// A user function's parameters in the FB parameter format.
+fn fb_like_params(pou: &Pou) -> Vec<(String, ParamDir, Type)> {
+    pou.vars
+        .iter()
+        .map(|v| {
+            let d = match v.kind {
+                VarKind::Input => ParamDir::Input,
+                VarKind::InOut => ParamDir::InOut,
+                VarKind::Output => ParamDir::Output,
+                _ => ParamDir::Internal,
+            };
+            (v.name.clone(), d, v.ty.clone())
+        })
+        .collect()
+}

@@ -1,0 +1,882 @@
+//! Declarations: user data types, POUs and their variables, global variables, configurations.
+//!
+//! Input: the compilation units. Output: the declaration part of the [`Model`] (types, POU variable
+//! tables, globals, configurations) and the list of POU bodies to check. Invariants: every name is
+//! registered once (duplicates are reported and the first declaration kept); types are resolved on first
+//! use, so declaration order does not matter; an unknown type becomes `Type::Error` after one diagnostic.
+
+use super::model::*;
+use super::typing::{literal_fits, literal_type, literal_value, FitError, LitType};
+use super::Analyzer;
+use crate::ast::{
+    self, CompilationUnit, Initializer, LibraryElement, Operand, TypeRef, VarBlock, VarKind,
+};
+use crate::Span;
+use diagnostics::code;
+use std::collections::HashMap;
+
+/// Constants visible to an initial value: upper-case name -> (type, value).
+pub(crate) type Consts = HashMap<String, (Type, ConstValue)>;
+
+impl Analyzer<'_> {
+    /// Runs the declaration stage; returns the POUs whose bodies are to be checked.
+    pub(crate) fn declare<'u>(
+        &mut self,
+        units: &'u [CompilationUnit],
+    ) -> Vec<(PouId, &'u ast::Pou)> {
+        let mut pous = Vec::new();
+        let mut first_decl: HashMap<String, Span> = HashMap::new();
+        // Names first: POUs and types may be used before they are declared.
+        for unit in units {
+            for item in &unit.items {
+                match item {
+                    LibraryElement::DataTypes(decls) => {
+                        for d in decls {
+                            if !self.unique_global_name(&d.name, &mut first_decl) {
+                                continue;
+                            }
+                            self.register_type(d);
+                        }
+                    }
+                    LibraryElement::Pou(p) => {
+                        if !self.unique_global_name(&p.name, &mut first_decl) {
+                            continue;
+                        }
+                        let id = PouId(self.model.pous.len() as u32);
+                        self.pou_names.insert(p.name.key(), id);
+                        self.model.pous.push(Pou {
+                            name: p.name.name.clone(),
+                            span: p.span,
+                            kind: p.kind,
+                            return_type: None,
+                            vars: Vec::new(),
+                            externals: Vec::new(),
+                        });
+                        pous.push((id, p));
+                    }
+                    _ => {}
+                }
+            }
+        }
+        // Type bodies (structs; aliases are resolved on demand).
+        let ids: Vec<TypeId> = (0..self.model.types.len() as u32).map(TypeId).collect();
+        for id in ids {
+            self.resolve_user_type(id);
+        }
+        for unit in units {
+            for item in &unit.items {
+                if let LibraryElement::DataTypes(decls) = item {
+                    for d in decls {
+                        if let ast::TypeDef::Struct { fields } = &d.def {
+                            let Some(&id) = self.type_names.get(&d.name.key()) else {
+                                continue;
+                            };
+                            if self.model.types[id.0 as usize].span != d.span {
+                                continue; // a duplicate
+                            }
+                            let blocks = [VarBlock {
+                                kind: VarKind::Local,
+                                constant: false,
+                                retain: false,
+                                vars: fields.clone(),
+                                span: d.span,
+                            }];
+                            let vars = self.declare_vars(&blocks, &Consts::new());
+                            self.model.types[id.0 as usize].def =
+                                UserTypeDef::Struct { fields: vars };
+                        }
+                    }
+                }
+            }
+        }
+        // Globals outside configurations.
+        let mut global_consts = Consts::new();
+        for unit in units {
+            for item in &unit.items {
+                if let LibraryElement::GlobalVars(block) = item {
+                    let vars = self.declare_vars(std::slice::from_ref(block), &global_consts);
+                    for v in vars {
+                        let key = v.name.to_ascii_uppercase();
+                        if let Some(&i) = self.free_globals.get(&key) {
+                            let first = self.model.globals[i].span;
+                            self.error(
+                                code::E1002,
+                                v.span,
+                                format!("global variable `{}` is declared twice", v.name),
+                            )
+                            .label("declared again here")
+                            .also(first, "first declared here")
+                            .hint("rename or remove one of the declarations");
+                            continue;
+                        }
+                        if v.constant {
+                            if let Some(val) = &v.init {
+                                global_consts.insert(key.clone(), (v.ty.clone(), val.clone()));
+                            }
+                        }
+                        self.free_globals.insert(key, self.model.globals.len());
+                        self.model.globals.push(v);
+                    }
+                }
+            }
+        }
+        // Configuration globals (needed by VAR_EXTERNAL).
+        let mut configs = Vec::new();
+        for unit in units {
+            for item in &unit.items {
+                if let LibraryElement::Configuration(c) = item {
+                    let globals = self.declare_vars(&c.globals, &global_consts);
+                    let resources = c
+                        .resources
+                        .iter()
+                        .map(|r| Resource {
+                            name: r.name.name.clone(),
+                            span: r.span,
+                            globals: self.declare_vars(&r.globals, &global_consts),
+                            tasks: Vec::new(),
+                            programs: Vec::new(),
+                        })
+                        .collect();
+                    self.model.configurations.push(Configuration {
+                        name: c.name.name.clone(),
+                        span: c.span,
+                        globals,
+                        resources,
+                    });
+                    configs.push(c);
+                }
+            }
+        }
+        // POU variables.
+        for (id, p) in &pous {
+            self.declare_pou(*id, p, &global_consts);
+        }
+        // Tasks and program instances.
+        for (ci, c) in configs.iter().enumerate() {
+            for (ri, r) in c.resources.iter().enumerate() {
+                self.declare_resource(ci, ri, r);
+            }
+        }
+        pous
+    }
+
+    /// Registers a POU or type name; reports a duplicate (returns false).
+    fn unique_global_name(&mut self, name: &ast::Ident, first: &mut HashMap<String, Span>) -> bool {
+        if let Some(&prev) = first.get(&name.key()) {
+            self.error(
+                code::E1002,
+                name.span,
+                format!("`{}` is declared twice", name.name),
+            )
+            .label("declared again here")
+            .also(prev, "first declared here")
+            .hint("POUs and data types share one namespace; rename one of them");
+            return false;
+        }
+        first.insert(name.key(), name.span);
+        true
+    }
+
+    fn register_type(&mut self, d: &ast::TypeDecl) {
+        let id = TypeId(self.model.types.len() as u32);
+        let def = match &d.def {
+            ast::TypeDef::Struct { .. } => UserTypeDef::Struct { fields: Vec::new() },
+            ast::TypeDef::Enum { values, init } => {
+                let (vals, default) = self.enum_values_of(id, values, init.as_ref());
+                UserTypeDef::Enum {
+                    values: vals,
+                    default,
+                }
+            }
+            ast::TypeDef::Alias { .. } => {
+                self.pending_aliases.insert(id, d.clone());
+                UserTypeDef::Alias {
+                    target: Type::Error,
+                    init: None,
+                }
+            }
+        };
+        self.type_names.insert(d.name.key(), id);
+        self.model.types.push(UserType {
+            name: d.name.name.clone(),
+            span: d.span,
+            def,
+        });
+    }
+
+    /// The values of an enumeration (implicit values count on from the previous one) and its default.
+    fn enum_values_of(
+        &mut self,
+        id: TypeId,
+        values: &[ast::EnumValue],
+        init: Option<&ast::Ident>,
+    ) -> (Vec<(String, i128)>, usize) {
+        let mut out: Vec<(String, i128)> = Vec::new();
+        let mut next = 0i128;
+        for v in values {
+            if let Some(prev) = out
+                .iter()
+                .position(|(n, _)| n.eq_ignore_ascii_case(&v.name.name))
+            {
+                let _ = prev;
+                self.error(
+                    code::E1002,
+                    v.name.span,
+                    format!("enumerated value `{}` is declared twice", v.name.name),
+                )
+                .label("declared again here")
+                .hint("each value of an enumeration needs its own name");
+                continue;
+            }
+            let value = v.value.unwrap_or(next);
+            next = value + 1;
+            self.enum_values
+                .entry(v.name.key())
+                .or_default()
+                .push((id, out.len()));
+            out.push((v.name.name.clone(), value));
+        }
+        let default = match init {
+            Some(i) => match out.iter().position(|(n, _)| i.is(n)) {
+                Some(p) => p,
+                None => {
+                    self.error(
+                        code::E1025,
+                        i.span,
+                        format!("`{}` is not a value of this enumeration", i.name),
+                    )
+                    .label("not one of the listed values")
+                    .hint("the initial value must be one of the enumeration's values");
+                    0
+                }
+            },
+            None => 0,
+        };
+        (out, default)
+    }
+
+    /// Resolves an alias on first use (reports cycles as unknown types).
+    fn resolve_user_type(&mut self, id: TypeId) {
+        let Some(d) = self.pending_aliases.remove(&id) else {
+            return;
+        };
+        let ast::TypeDef::Alias { ty, init } = &d.def else {
+            return;
+        };
+        let target = self.resolve_type(ty);
+        let init = init
+            .as_ref()
+            .and_then(|i| self.const_init(i, &target, &Consts::new()));
+        self.model.types[id.0 as usize].def = UserTypeDef::Alias { target, init };
+    }
+
+    /// Resolves a type as written.
+    pub(crate) fn resolve_type(&mut self, tr: &TypeRef) -> Type {
+        match tr {
+            TypeRef::Named(n) => self.resolve_named_type(n),
+            TypeRef::String { wide, length, .. } => Type::String {
+                wide: *wide,
+                len: length.unwrap_or(DEFAULT_STRING_LEN),
+            },
+            TypeRef::Array { dims, element, .. } => {
+                let element = self.resolve_type(element);
+                for d in dims {
+                    if d.upper < d.lower {
+                        self.error(
+                            code::E1003,
+                            d.span,
+                            format!("empty array range {}..{}", d.lower, d.upper),
+                        )
+                        .label("the upper bound is below the lower bound")
+                        .hint("write the bounds as lower..upper");
+                    }
+                }
+                let dims = dims
+                    .iter()
+                    .map(|d| Dim {
+                        lower: d.lower,
+                        upper: d.upper,
+                    })
+                    .collect();
+                if element.is_error() {
+                    return Type::Error;
+                }
+                Type::Array {
+                    dims,
+                    element: Box::new(element),
+                }
+            }
+            TypeRef::Subrange {
+                base,
+                lower,
+                upper,
+                span,
+            } => match Elementary::from_name(&base.name) {
+                Some(e) if e.is_integer() => {
+                    let (lo, hi) = e.int_range().unwrap_or((*lower, *upper));
+                    if lower > upper || *lower < lo || *upper > hi {
+                        self.error(
+                            code::E1003,
+                            *span,
+                            format!("invalid subrange {lower}..{upper} of {}", e.name()),
+                        )
+                        .label("bounds out of order or outside the base type")
+                        .hint(format!("{} holds {lo}..{hi}", e.name()));
+                        return Type::Error;
+                    }
+                    Type::Subrange {
+                        base: e,
+                        lower: *lower,
+                        upper: *upper,
+                    }
+                }
+                _ => {
+                    self.error(
+                        code::E1003,
+                        base.span,
+                        format!("a subrange needs an integer base type, not `{}`", base.name),
+                    )
+                    .label("not an integer type")
+                    .hint("use SINT, INT, DINT, LINT or an unsigned integer type");
+                    Type::Error
+                }
+            },
+            TypeRef::Enum { values, span } => {
+                let id = TypeId(self.model.types.len() as u32);
+                self.enum_counter += 1;
+                let vals: Vec<ast::EnumValue> = values
+                    .iter()
+                    .map(|v| ast::EnumValue {
+                        name: v.clone(),
+                        value: None,
+                    })
+                    .collect();
+                let (values, default) = self.enum_values_of(id, &vals, None);
+                self.model.types.push(UserType {
+                    name: format!("__ENUM_{}", self.enum_counter),
+                    span: *span,
+                    def: UserTypeDef::Enum { values, default },
+                });
+                Type::Enum(id)
+            }
+        }
+    }
+
+    fn resolve_named_type(&mut self, n: &ast::Ident) -> Type {
+        if let Some(e) = Elementary::from_name(&n.name) {
+            return Type::Elementary(e);
+        }
+        if n.is("STRING") || n.is("WSTRING") {
+            return Type::String {
+                wide: n.is("WSTRING"),
+                len: DEFAULT_STRING_LEN,
+            };
+        }
+        if let Some(&id) = self.type_names.get(&n.key()) {
+            if self.pending_aliases.contains_key(&id) {
+                self.resolve_user_type(id);
+            }
+            return match &self.model.types[id.0 as usize].def {
+                UserTypeDef::Struct { .. } => Type::Struct(id),
+                UserTypeDef::Enum { .. } => Type::Enum(id),
+                UserTypeDef::Alias { target, .. } => target.clone(),
+            };
+        }
+        if let Some(&id) = self.pou_names.get(&n.key()) {
+            let kind = self.model.pous[id.0 as usize].kind;
+            if kind == ast::PouKind::FunctionBlock {
+                return Type::Fb(FbType::User(id));
+            }
+            let what = if kind == ast::PouKind::Program {
+                "program"
+            } else {
+                "function"
+            };
+            self.error(
+                code::E1003,
+                n.span,
+                format!("`{}` is a {what}, not a type", n.name),
+            )
+            .label("not a type")
+            .hint("variables can have elementary, user-defined or function block types");
+            return Type::Error;
+        }
+        if let Some(fb) = StdFb::from_name(&n.name) {
+            return Type::Fb(FbType::Standard(fb));
+        }
+        self.error(code::E1003, n.span, format!("unknown type `{}`", n.name))
+            .label("no such type")
+            .hint("declare it in a TYPE block or as a FUNCTION_BLOCK, or use an elementary type");
+        Type::Error
+    }
+
+    /// Declares the variables of `blocks`; reports duplicates within them.
+    pub(crate) fn declare_vars(&mut self, blocks: &[VarBlock], consts: &Consts) -> Vec<Variable> {
+        let mut out: Vec<Variable> = Vec::new();
+        let mut consts = consts.clone();
+        for b in blocks {
+            for d in &b.vars {
+                let ty = self.resolve_type(&d.ty);
+                let init = match &d.init {
+                    Some(i) => self.const_init(i, &ty, &consts),
+                    None => self.type_default_init(&d.ty),
+                };
+                if let Some(prev) = out.iter().find(|v| v.is(&d.name.name)) {
+                    let first = prev.span;
+                    self.error(
+                        code::E1002,
+                        d.name.span,
+                        format!("`{}` is declared twice", d.name.name),
+                    )
+                    .label("declared again here")
+                    .also(first, "first declared here")
+                    .hint("each variable of a POU needs its own name (names are case-insensitive)");
+                    continue;
+                }
+                if b.constant {
+                    if let Some(v) = &init {
+                        consts.insert(d.name.key(), (ty.clone(), v.clone()));
+                    }
+                }
+                out.push(Variable {
+                    name: d.name.name.clone(),
+                    span: d.name.span,
+                    kind: b.kind,
+                    ty,
+                    constant: b.constant,
+                    retain: b.retain,
+                    location: d.location.as_ref().map(Location::of),
+                    init,
+                });
+            }
+        }
+        out
+    }
+
+    /// The initial value a named alias type gives (`TYPE T : INT := 5`).
+    fn type_default_init(&mut self, tr: &TypeRef) -> Option<ConstValue> {
+        if let TypeRef::Named(n) = tr {
+            if let Some(&id) = self.type_names.get(&n.key()) {
+                if let UserTypeDef::Alias { init, .. } = &self.model.types[id.0 as usize].def {
+                    return init.clone();
+                }
+            }
+        }
+        None
+    }
+
+    fn declare_pou(&mut self, id: PouId, p: &ast::Pou, global_consts: &Consts) {
+        let return_type = p.return_type.as_ref().map(|t| self.resolve_type(t));
+        if p.kind == ast::PouKind::Function && return_type.is_none() {
+            self.error(
+                code::E1003,
+                p.name.span,
+                format!("function `{}` has no result type", p.name.name),
+            )
+            .label("missing `: type`")
+            .hint("write FUNCTION name : type");
+        }
+        let vars = self.declare_vars(&p.var_blocks, global_consts);
+        let mut externals = Vec::new();
+        for (i, v) in vars.iter().enumerate() {
+            if v.kind == VarKind::External {
+                if let Some(r) = self.bind_external(v) {
+                    externals.push((i, r));
+                }
+            }
+            if p.kind == ast::PouKind::Function && v.is(&p.name.name) {
+                self.error(
+                    code::E1002,
+                    v.span,
+                    format!("`{}` is the name of the function's result", v.name),
+                )
+                .label("declared again here")
+                .also(p.name.span, "the function's name is its result variable")
+                .hint("rename the variable");
+            }
+        }
+        let pou = &mut self.model.pous[id.0 as usize];
+        pou.return_type = return_type;
+        pou.vars = vars;
+        pou.externals = externals;
+    }
+
+    /// Finds the global a `VAR_EXTERNAL` refers to and checks the declarations agree.
+    fn bind_external(&mut self, v: &Variable) -> Option<GlobalRef> {
+        let key = v.name.to_ascii_uppercase();
+        let mut found = self.free_globals.get(&key).map(|&i| GlobalRef::Free(i));
+        if found.is_none() {
+            'search: for (ci, c) in self.model.configurations.iter().enumerate() {
+                if let Some(i) = c.globals.iter().position(|g| g.is(&v.name)) {
+                    found = Some(GlobalRef::Configuration {
+                        config: ci,
+                        index: i,
+                    });
+                    break;
+                }
+                for (ri, r) in c.resources.iter().enumerate() {
+                    if let Some(i) = r.globals.iter().position(|g| g.is(&v.name)) {
+                        found = Some(GlobalRef::Resource {
+                            config: ci,
+                            resource: ri,
+                            index: i,
+                        });
+                        break 'search;
+                    }
+                }
+            }
+        }
+        let Some(r) = found else {
+            self.error(code::E1022, v.span, format!("no global variable `{}`", v.name))
+                .label("declared VAR_EXTERNAL here")
+                .hint("declare it in a VAR_GLOBAL block of the configuration (or outside any configuration)");
+            return None;
+        };
+        let g = self.model.global(r).clone();
+        if !v.ty.is_error() && !g.ty.is_error() && g.ty != v.ty {
+            let (gt, vt) = (self.type_name(&g.ty), self.type_name(&v.ty));
+            self.error(
+                code::E1022,
+                v.span,
+                format!("external `{}` is {vt} but the global is {gt}", v.name),
+            )
+            .label(format!("declared {vt} here"))
+            .also(g.span, format!("global declared {gt} here"))
+            .hint("declare the external with the global's type");
+        } else if g.constant && !v.constant {
+            self.error(
+                code::E1022,
+                v.span,
+                format!("global `{}` is CONSTANT but its external is not", v.name),
+            )
+            .label("declare this block VAR_EXTERNAL CONSTANT")
+            .also(g.span, "constant global declared here")
+            .hint("write VAR_EXTERNAL CONSTANT");
+        }
+        Some(r)
+    }
+
+    fn declare_resource(&mut self, ci: usize, ri: usize, r: &ast::Resource) {
+        let mut tasks: Vec<Task> = Vec::new();
+        for t in &r.tasks {
+            let interval_ns = match &t.interval {
+                Some(Operand::Literal(ast::Literal {
+                    kind: ast::LiteralKind::Duration(ns),
+                    ..
+                })) if *ns > 0 => u64::try_from(*ns).ok(),
+                Some(Operand::Var(_)) | None => None,
+                Some(other) => {
+                    self.error(
+                        code::E1024,
+                        other.span(),
+                        "a task INTERVAL must be a positive duration",
+                    )
+                    .label("not a duration")
+                    .hint("write INTERVAL := T#10ms");
+                    None
+                }
+            };
+            let single = match &t.single {
+                Some(Operand::Var(v)) => Some(v.base.name.clone()),
+                _ => None,
+            };
+            tasks.push(Task {
+                name: t.name.name.clone(),
+                span: t.span,
+                interval_ns,
+                single,
+                priority: t.priority.unwrap_or(0),
+            });
+        }
+        let mut programs = Vec::new();
+        for p in &r.programs {
+            let task = match &p.task {
+                Some(tn) => {
+                    match tasks.iter().position(|t| tn.is(&t.name)) {
+                        Some(i) => Some(i),
+                        None => {
+                            self.error(code::E1024, tn.span, format!("no task `{}` in resource `{}`", tn.name, r.name.name))
+                            .label("unknown task")
+                            .hint("declare the task with TASK name (INTERVAL := ..., PRIORITY := ...)");
+                            None
+                        }
+                    }
+                }
+                None => None,
+            };
+            let pou = match self.pou_names.get(&p.type_name.key()) {
+                Some(&id) if self.model.pous[id.0 as usize].kind == ast::PouKind::Program => id,
+                Some(_) => {
+                    self.error(
+                        code::E1024,
+                        p.type_name.span,
+                        format!("`{}` is not a PROGRAM", p.type_name.name),
+                    )
+                    .label("a function or function block")
+                    .hint("only programs are instantiated in a resource");
+                    continue;
+                }
+                None => {
+                    self.error(
+                        code::E1024,
+                        p.type_name.span,
+                        format!("unknown program `{}`", p.type_name.name),
+                    )
+                    .label("no such PROGRAM")
+                    .hint("declare it with PROGRAM ... END_PROGRAM");
+                    continue;
+                }
+            };
+            programs.push(ProgramInstance {
+                name: p.name.name.clone(),
+                span: p.span,
+                retain: p.retain,
+                task,
+                pou,
+            });
+        }
+        let res = &mut self.model.configurations[ci].resources[ri];
+        res.tasks = tasks;
+        res.programs = programs;
+    }
+
+    /// Evaluates an initial value against the declared type.
+    pub(crate) fn const_init(
+        &mut self,
+        init: &Initializer,
+        ty: &Type,
+        consts: &Consts,
+    ) -> Option<ConstValue> {
+        if ty.is_error() {
+            return None;
+        }
+        match init {
+            Initializer::Value(op) => self.const_value(op, ty, consts),
+            Initializer::Array(elems, span) => {
+                let Type::Array { dims, element } = ty else {
+                    let t = self.type_name(ty);
+                    self.error(
+                        code::E1025,
+                        *span,
+                        format!("an array initializer for a {t}"),
+                    )
+                    .label("not an array")
+                    .hint("give a single value");
+                    return None;
+                };
+                let total: u128 = dims.iter().map(|d| d.len()).product();
+                let mut out = Vec::new();
+                for e in elems {
+                    let v = self.const_init(&e.value, element, consts)?;
+                    for _ in 0..e.repeat.unwrap_or(1) {
+                        if out.len() as u128 >= total {
+                            self.error(
+                                code::E1025,
+                                *span,
+                                format!("too many initial values: the array has {total} elements"),
+                            )
+                            .label("initializer too long")
+                            .hint("give at most one value per element");
+                            return None;
+                        }
+                        out.push(v.clone());
+                    }
+                }
+                Some(ConstValue::Array(out))
+            }
+            Initializer::Struct(fields, span) => {
+                let mut out = Vec::new();
+                for (name, value) in fields {
+                    let field_ty = match ty {
+                        Type::Struct(id) => match &self.model.types[id.0 as usize].def {
+                            UserTypeDef::Struct { fields } => fields
+                                .iter()
+                                .find(|f| name.is(&f.name))
+                                .map(|f| f.ty.clone()),
+                            _ => None,
+                        },
+                        Type::Fb(FbType::Standard(fb)) => super::stdlib::fb_params(*fb)
+                            .iter()
+                            .find(|p| name.is(p.name) && p.dir == super::stdlib::Dir::Input)
+                            .map(|p| Type::Elementary(p.ty)),
+                        Type::Fb(FbType::User(id)) => self.model.pous[id.0 as usize]
+                            .vars
+                            .iter()
+                            .find(|v| {
+                                v.is(&name.name)
+                                    && matches!(
+                                        v.kind,
+                                        VarKind::Input | VarKind::Local | VarKind::Output
+                                    )
+                            })
+                            .map(|v| v.ty.clone()),
+                        _ => {
+                            let t = self.type_name(ty);
+                            self.error(
+                                code::E1025,
+                                *span,
+                                format!("a structure initializer for a {t}"),
+                            )
+                            .label("not a structure or FB")
+                            .hint("give a single value");
+                            return None;
+                        }
+                    };
+                    let Some(field_ty) = field_ty else {
+                        let t = self.type_name(ty);
+                        self.error(
+                            code::E1025,
+                            name.span,
+                            format!("{t} has no field or input `{}`", name.name),
+                        )
+                        .label("unknown field")
+                        .hint("initialize the fields the type declares");
+                        continue;
+                    };
+                    if let Some(v) = self.const_init(value, &field_ty, consts) {
+                        out.push((name.name.clone(), v));
+                    }
+                }
+                Some(ConstValue::Struct(out))
+            }
+        }
+    }
+
+    fn const_value(&mut self, op: &Operand, ty: &Type, consts: &Consts) -> Option<ConstValue> {
+        let tn = self.type_name(ty);
+        match op {
+            Operand::Literal(lit) => {
+                let lt = match literal_type(lit) {
+                    Ok(t) => t,
+                    Err(e) => {
+                        self.error(code::E1017, lit.span, e.message)
+                            .label("out of range")
+                            .hint(e.hint);
+                        return None;
+                    }
+                };
+                let ok = match &lt {
+                    LitType::Known(t) => super::typing::assignable(t, ty),
+                    LitType::Int(v) => match literal_fits(*v, *v, false, ty) {
+                        Ok(()) => true,
+                        Err(FitError::Range(v)) => {
+                            self.error(
+                                code::E1017,
+                                lit.span,
+                                format!("initial value {v} does not fit {tn}"),
+                            )
+                            .label("out of range")
+                            .hint(format!("use a value in the range of {tn} or a wider type"));
+                            return None;
+                        }
+                        Err(FitError::Kind) => false,
+                    },
+                    LitType::Real => literal_fits(0, 0, true, ty).is_ok(),
+                };
+                if !ok {
+                    self.error(
+                        code::E1025,
+                        lit.span,
+                        format!("this initial value is not a {tn}"),
+                    )
+                    .label(format!("expected {tn}"))
+                    .hint("give a literal of the declared type");
+                    return None;
+                }
+                Some(literal_value(lit, ty))
+            }
+            Operand::EnumValue {
+                type_name,
+                value,
+                span,
+            } => {
+                let Type::Enum(id) = ty else {
+                    self.error(
+                        code::E1025,
+                        *span,
+                        format!("an enumerated value for a {tn}"),
+                    )
+                    .label(format!("expected {tn}"))
+                    .hint("give a literal of the declared type");
+                    return None;
+                };
+                let ut = &self.model.types[id.0 as usize];
+                if !type_name.is(&ut.name) {
+                    self.error(
+                        code::E1025,
+                        *span,
+                        format!("`{}` is not of type {tn}", type_name.name),
+                    )
+                    .label(format!("expected {tn}"))
+                    .hint("use a value of the declared enumeration");
+                    return None;
+                }
+                self.enum_index(*id, value)
+            }
+            Operand::Var(v) if v.accessors.is_empty() => {
+                if let Type::Enum(id) = ty {
+                    if let Some(c) = self.enum_index_quiet(*id, &v.base.name) {
+                        return Some(c);
+                    }
+                }
+                match consts.get(&v.base.key()) {
+                    Some((cty, val)) if super::typing::assignable(cty, ty) => Some(val.clone()),
+                    Some((cty, _)) => {
+                        let ct = self.type_name(cty);
+                        self.error(
+                            code::E1025,
+                            v.span,
+                            format!("constant `{}` is {ct}, not {tn}", v.base.name),
+                        )
+                        .label(format!("expected {tn}"))
+                        .hint("use a constant of the declared type");
+                        None
+                    }
+                    None => {
+                        self.error(code::E1025, v.span, format!("`{}` is not a constant known here", v.base.name))
+                            .label("not a constant")
+                            .hint("initial values are literals, enumerated values, or constants declared before");
+                        None
+                    }
+                }
+            }
+            other => {
+                self.error(
+                    code::E1025,
+                    other.span(),
+                    "an initial value must be a constant",
+                )
+                .label("not a constant")
+                .hint(
+                    "initial values are literals, enumerated values, or constants declared before",
+                );
+                None
+            }
+        }
+    }
+
+    fn enum_index_quiet(&self, id: TypeId, value: &str) -> Option<ConstValue> {
+        match &self.model.types[id.0 as usize].def {
+            UserTypeDef::Enum { values, .. } => values
+                .iter()
+                .position(|(n, _)| n.eq_ignore_ascii_case(value))
+                .map(|index| ConstValue::Enum { ty: id, index }),
+            _ => None,
+        }
+    }
+
+    fn enum_index(&mut self, id: TypeId, value: &ast::Ident) -> Option<ConstValue> {
+        let r = self.enum_index_quiet(id, &value.name);
+        if r.is_none() {
+            let t = self.model.types[id.0 as usize].name.clone();
+            self.error(
+                code::E1001,
+                value.span,
+                format!("`{}` is not a value of {t}", value.name),
+            )
+            .label("unknown enumerated value")
+            .hint(format!("use one of the values declared for {t}"));
+        }
+        r
+    }
+}

@@ -1,0 +1,120 @@
+//! Semantic analysis of IL: symbols, types, current-result typing, labels, calls.
+//!
+//! Input: the parsed [`crate::ast::CompilationUnit`]s of one program (one namespace of POUs and types).
+//! Output: the resolved [`model::Model`] and diagnostics (codes E1xxx/W1xxx).
+//! Invariants: one mistake gives one diagnostic: an unresolvable name gives the `Error` type, which
+//! silences every check that would follow from it. The rules implemented are in `README_sema.md`.
+//!
+//! Stages: [`decls`] (types, POU variables, globals, configurations) then [`body`] (each POU's IL body).
+
+mod body;
+mod calls;
+mod decls;
+pub mod model;
+mod places;
+pub mod stdlib;
+pub mod typing;
+
+pub use model::*;
+
+use crate::ast::CompilationUnit;
+use diagnostics::{Code, Diagnostic, Diagnostics};
+use std::collections::HashMap;
+
+/// Analyses `units` together and returns the resolved model; problems go to `diags`.
+pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
+    let mut a = Analyzer {
+        diags,
+        model: Model::default(),
+        type_names: HashMap::new(),
+        pou_names: HashMap::new(),
+        enum_values: HashMap::new(),
+        free_globals: HashMap::new(),
+        pending_aliases: HashMap::new(),
+        silent: false,
+        enum_counter: 0,
+    };
+    let pous = a.declare(units);
+    for (id, pou) in pous {
+        a.check_body(id, pou);
+    }
+    a.model
+}
+
+/// The analysis state shared by the stages.
+pub(crate) struct Analyzer<'d> {
+    pub(crate) diags: &'d mut Diagnostics,
+    pub(crate) model: Model,
+    /// Upper-case name -> user type.
+    pub(crate) type_names: HashMap<String, TypeId>,
+    /// Upper-case name -> POU.
+    pub(crate) pou_names: HashMap<String, PouId>,
+    /// Upper-case enumerated value -> the enumerations declaring it, with the value's index.
+    pub(crate) enum_values: HashMap<String, Vec<(TypeId, usize)>>,
+    /// Upper-case name -> index in `Model::globals` (VAR_GLOBAL blocks outside configurations).
+    pub(crate) free_globals: HashMap<String, usize>,
+    /// Aliases declared but not yet resolved (resolved on first use, so order does not matter).
+    pub(crate) pending_aliases: HashMap<TypeId, crate::ast::TypeDecl>,
+    /// While set, diagnostics are dropped (first pass over a body).
+    pub(crate) silent: bool,
+    pub(crate) enum_counter: u32,
+}
+
+impl Analyzer<'_> {
+    pub(crate) fn error(
+        &mut self,
+        code: Code,
+        span: crate::Span,
+        message: impl Into<String>,
+    ) -> Diag<'_> {
+        let d = (!self.silent).then(|| Diagnostic::error(code, message).at(span));
+        Diag {
+            sink: self.diags,
+            d,
+        }
+    }
+    pub(crate) fn warning(
+        &mut self,
+        code: Code,
+        span: crate::Span,
+        message: impl Into<String>,
+    ) -> Diag<'_> {
+        let d = (!self.silent).then(|| Diagnostic::warning(code, message).at(span));
+        Diag {
+            sink: self.diags,
+            d,
+        }
+    }
+    pub(crate) fn type_name(&self, ty: &Type) -> String {
+        self.model.type_name(ty)
+    }
+}
+
+/// A diagnostic under construction; pushed when dropped.
+pub(crate) struct Diag<'a> {
+    sink: &'a mut Diagnostics,
+    d: Option<Diagnostic>,
+}
+
+impl Diag<'_> {
+    pub(crate) fn label(mut self, m: impl Into<String>) -> Self {
+        self.d = self.d.take().map(|d| d.with_primary_label(m));
+        self
+    }
+    pub(crate) fn also(mut self, span: crate::Span, m: impl Into<String>) -> Self {
+        self.d = self.d.take().map(|d| d.with_label(span, m));
+        self
+    }
+    pub(crate) fn hint(mut self, m: impl Into<String>) -> Self {
+        self.d = self.d.take().map(|d| d.with_hint(m));
+        self
+    }
+}
+
+impl Drop for Diag<'_> {
+    fn drop(&mut self) {
+        if let Some(d) = self.d.take() {
+            self.sink.push(d);
+        }
+    }
+}

@@ -1,0 +1,721 @@
+//! The resolved model that `sema` produces: the contract read by the C backend and the other back ends.
+//!
+//! Input: nothing (plain data). Output: [`Model`]: user types, POUs with their resolved variables,
+//! configurations, global variables, and per-instruction typing/resolution keyed by the instruction's span.
+//! Invariants: a [`PouId`] indexes `Model::pous` (source order over all units); a [`TypeId`] indexes
+//! `Model::types`; aliases are resolved (no `Type` names an alias); when the analysis reported no error, no
+//! `Type` in the model is [`Type::Error`] and every current-result type is concrete (untyped literals were
+//! given the type their context fixed, else the default `DINT`/`LREAL`, see README_sema.md).
+
+use crate::ast::{AddressSize, Area, DirectAddress, PouKind, VarKind};
+use crate::Span;
+use serde::Serialize;
+use std::collections::HashMap;
+
+/// Index of a POU in [`Model::pous`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub struct PouId(pub u32);
+
+/// Index of a user data type in [`Model::types`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub struct TypeId(pub u32);
+
+/// The elementary types of IEC 61131-3.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub enum Elementary {
+    Bool,
+    Sint,
+    Int,
+    Dint,
+    Lint,
+    Usint,
+    Uint,
+    Udint,
+    Ulint,
+    Byte,
+    Word,
+    Dword,
+    Lword,
+    Real,
+    Lreal,
+    Time,
+    Ltime,
+    Date,
+    Tod,
+    Dt,
+}
+
+use Elementary as E;
+
+impl Elementary {
+    pub const ALL: [Elementary; 20] = [
+        E::Bool,
+        E::Sint,
+        E::Int,
+        E::Dint,
+        E::Lint,
+        E::Usint,
+        E::Uint,
+        E::Udint,
+        E::Ulint,
+        E::Byte,
+        E::Word,
+        E::Dword,
+        E::Lword,
+        E::Real,
+        E::Lreal,
+        E::Time,
+        E::Ltime,
+        E::Date,
+        E::Tod,
+        E::Dt,
+    ];
+
+    /// The canonical IEC name (`TOD`, `DT`: the short forms).
+    pub fn name(self) -> &'static str {
+        match self {
+            E::Bool => "BOOL",
+            E::Sint => "SINT",
+            E::Int => "INT",
+            E::Dint => "DINT",
+            E::Lint => "LINT",
+            E::Usint => "USINT",
+            E::Uint => "UINT",
+            E::Udint => "UDINT",
+            E::Ulint => "ULINT",
+            E::Byte => "BYTE",
+            E::Word => "WORD",
+            E::Dword => "DWORD",
+            E::Lword => "LWORD",
+            E::Real => "REAL",
+            E::Lreal => "LREAL",
+            E::Time => "TIME",
+            E::Ltime => "LTIME",
+            E::Date => "DATE",
+            E::Tod => "TOD",
+            E::Dt => "DT",
+        }
+    }
+
+    /// Looks up a type name, case-insensitively; accepts the long forms `TIME_OF_DAY`, `DATE_AND_TIME`.
+    pub fn from_name(name: &str) -> Option<Elementary> {
+        let up = name.to_ascii_uppercase();
+        match up.as_str() {
+            "TIME_OF_DAY" => return Some(E::Tod),
+            "DATE_AND_TIME" => return Some(E::Dt),
+            _ => {}
+        }
+        Elementary::ALL.into_iter().find(|e| e.name() == up)
+    }
+
+    /// Storage size in bits (BOOL: 1; TIME: 64 (nanoseconds); DATE/TOD/DT: 64).
+    pub fn bit_width(self) -> u32 {
+        match self {
+            E::Bool => 1,
+            E::Sint | E::Usint | E::Byte => 8,
+            E::Int | E::Uint | E::Word => 16,
+            E::Dint | E::Udint | E::Dword | E::Real => 32,
+            E::Lint | E::Ulint | E::Lword | E::Lreal => 64,
+            E::Time | E::Ltime | E::Date | E::Tod | E::Dt => 64,
+        }
+    }
+    /// Storage size in bytes (BOOL: 1).
+    pub fn size_bytes(self) -> u32 {
+        self.bit_width().div_ceil(8)
+    }
+    /// SINT INT DINT LINT (and REAL LREAL TIME LTIME, which are signed too).
+    pub fn is_signed(self) -> bool {
+        matches!(
+            self,
+            E::Sint | E::Int | E::Dint | E::Lint | E::Real | E::Lreal | E::Time | E::Ltime
+        )
+    }
+    /// ANY_INT: signed and unsigned integers.
+    pub fn is_integer(self) -> bool {
+        matches!(
+            self,
+            E::Sint | E::Int | E::Dint | E::Lint | E::Usint | E::Uint | E::Udint | E::Ulint
+        )
+    }
+    pub fn is_signed_integer(self) -> bool {
+        matches!(self, E::Sint | E::Int | E::Dint | E::Lint)
+    }
+    pub fn is_unsigned_integer(self) -> bool {
+        matches!(self, E::Usint | E::Uint | E::Udint | E::Ulint)
+    }
+    /// ANY_REAL.
+    pub fn is_real(self) -> bool {
+        matches!(self, E::Real | E::Lreal)
+    }
+    /// ANY_NUM = ANY_INT + ANY_REAL.
+    pub fn is_numeric(self) -> bool {
+        self.is_integer() || self.is_real()
+    }
+    /// ANY_BIT = BOOL BYTE WORD DWORD LWORD.
+    pub fn is_bit(self) -> bool {
+        matches!(self, E::Bool | E::Byte | E::Word | E::Dword | E::Lword)
+    }
+    /// ANY_DURATION = TIME LTIME.
+    pub fn is_duration(self) -> bool {
+        matches!(self, E::Time | E::Ltime)
+    }
+    /// ANY_DATE = DATE TOD DT.
+    pub fn is_date(self) -> bool {
+        matches!(self, E::Date | E::Tod | E::Dt)
+    }
+    /// The value range of an integer type (`None` for other types); BYTE..LWORD give their unsigned range.
+    pub fn int_range(self) -> Option<(i128, i128)> {
+        Some(match self {
+            E::Sint => (i8::MIN as i128, i8::MAX as i128),
+            E::Int => (i16::MIN as i128, i16::MAX as i128),
+            E::Dint => (i32::MIN as i128, i32::MAX as i128),
+            E::Lint => (i64::MIN as i128, i64::MAX as i128),
+            E::Usint | E::Byte => (0, u8::MAX as i128),
+            E::Uint | E::Word => (0, u16::MAX as i128),
+            E::Udint | E::Dword => (0, u32::MAX as i128),
+            E::Ulint | E::Lword => (0, u64::MAX as i128),
+            E::Bool => (0, 1),
+            _ => return None,
+        })
+    }
+}
+
+impl std::fmt::Display for Elementary {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The IEC standard function blocks (see `stdlib::fb_params` for their inputs and outputs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum StdFb {
+    RTrig,
+    FTrig,
+    Sr,
+    Rs,
+    Ton,
+    Tof,
+    Tp,
+    /// CTU (counter on INT, PV: INT, CV: INT).
+    Ctu,
+    Ctd,
+    Ctud,
+}
+
+impl StdFb {
+    pub const ALL: [StdFb; 10] = [
+        StdFb::RTrig,
+        StdFb::FTrig,
+        StdFb::Sr,
+        StdFb::Rs,
+        StdFb::Ton,
+        StdFb::Tof,
+        StdFb::Tp,
+        StdFb::Ctu,
+        StdFb::Ctd,
+        StdFb::Ctud,
+    ];
+    pub fn name(self) -> &'static str {
+        match self {
+            StdFb::RTrig => "R_TRIG",
+            StdFb::FTrig => "F_TRIG",
+            StdFb::Sr => "SR",
+            StdFb::Rs => "RS",
+            StdFb::Ton => "TON",
+            StdFb::Tof => "TOF",
+            StdFb::Tp => "TP",
+            StdFb::Ctu => "CTU",
+            StdFb::Ctd => "CTD",
+            StdFb::Ctud => "CTUD",
+        }
+    }
+    /// Case-insensitive lookup; `CTU_INT` etc. map to the INT counters.
+    pub fn from_name(name: &str) -> Option<StdFb> {
+        let up = name.to_ascii_uppercase();
+        let up = match up.as_str() {
+            "CTU_INT" => "CTU",
+            "CTD_INT" => "CTD",
+            "CTUD_INT" => "CTUD",
+            u => u,
+        };
+        StdFb::ALL.into_iter().find(|f| f.name() == up)
+    }
+}
+
+/// The type of an FB instance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum FbType {
+    Standard(StdFb),
+    User(PouId),
+}
+
+/// A resolved type.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum Type {
+    Elementary(Elementary),
+    /// `STRING[len]` / `WSTRING[len]`; an unsized declaration has `len` 254 (the IEC default).
+    String {
+        wide: bool,
+        len: u32,
+    },
+    /// `ARRAY [l..u, ...] OF element`.
+    Array {
+        dims: Vec<Dim>,
+        element: Box<Type>,
+    },
+    /// A user structure (`Model::types[id]` is a `UserTypeDef::Struct`).
+    Struct(TypeId),
+    /// A user enumeration (named, or an inline `(a, b)` given a synthetic entry in `Model::types`).
+    Enum(TypeId),
+    /// `INT (0..100)`: a subrange of an integer type (named subranges are resolved to this).
+    Subrange {
+        base: Elementary,
+        lower: i128,
+        upper: i128,
+    },
+    /// An FB instance.
+    Fb(FbType),
+    /// Stands for a type sema could not determine (a diagnostic was reported); silences follow-on errors.
+    Error,
+}
+
+/// One array dimension `lower..upper` (inclusive).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct Dim {
+    pub lower: i128,
+    pub upper: i128,
+}
+
+impl Dim {
+    pub fn len(self) -> u128 {
+        if self.upper < self.lower {
+            0
+        } else {
+            (self.upper - self.lower) as u128 + 1
+        }
+    }
+    pub fn is_empty(self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// The default length of an unsized `STRING`.
+pub const DEFAULT_STRING_LEN: u32 = 254;
+
+impl Type {
+    pub const BOOL: Type = Type::Elementary(E::Bool);
+    pub const INT: Type = Type::Elementary(E::Int);
+    pub const DINT: Type = Type::Elementary(E::Dint);
+    pub const REAL: Type = Type::Elementary(E::Real);
+    pub const LREAL: Type = Type::Elementary(E::Lreal);
+    pub const TIME: Type = Type::Elementary(E::Time);
+
+    pub fn elem(e: Elementary) -> Type {
+        Type::Elementary(e)
+    }
+
+    /// The elementary type, looking through subranges (a subrange behaves as its base in expressions).
+    pub fn elementary(&self) -> Option<Elementary> {
+        match self {
+            Type::Elementary(e) => Some(*e),
+            Type::Subrange { base, .. } => Some(*base),
+            _ => None,
+        }
+    }
+    pub fn is_error(&self) -> bool {
+        matches!(self, Type::Error)
+    }
+    pub fn is_bool(&self) -> bool {
+        self.elementary() == Some(E::Bool)
+    }
+    pub fn is_integer(&self) -> bool {
+        self.elementary().is_some_and(Elementary::is_integer)
+    }
+    pub fn is_real(&self) -> bool {
+        self.elementary().is_some_and(Elementary::is_real)
+    }
+    pub fn is_numeric(&self) -> bool {
+        self.elementary().is_some_and(Elementary::is_numeric)
+    }
+    pub fn is_bit(&self) -> bool {
+        self.elementary().is_some_and(Elementary::is_bit)
+    }
+    pub fn is_signed(&self) -> bool {
+        self.elementary().is_some_and(Elementary::is_signed)
+    }
+    pub fn is_string(&self) -> bool {
+        matches!(self, Type::String { .. })
+    }
+    pub fn is_fb(&self) -> bool {
+        matches!(self, Type::Fb(_))
+    }
+    /// Bit width of an elementary type or subrange (`None` for strings, arrays, structs, FBs; enums: 32).
+    pub fn bit_width(&self) -> Option<u32> {
+        match self {
+            Type::Enum(_) => Some(32),
+            _ => self.elementary().map(Elementary::bit_width),
+        }
+    }
+
+    /// How the type is written in IEC source (user types need the model for their names: see
+    /// [`Model::type_name`]).
+    pub fn describe(&self, model: &Model) -> String {
+        model.type_name(self)
+    }
+}
+
+/// A constant value (initial values, enum values, literal operands after typing).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum ConstValue {
+    Bool(bool),
+    /// Any integer or bit-string value.
+    Int(i128),
+    Real(f64),
+    /// TIME/LTIME in nanoseconds.
+    Duration(i128),
+    /// Days since 1970-01-01.
+    Date(i64),
+    /// Nanoseconds since midnight.
+    TimeOfDay(i64),
+    /// Nanoseconds since 1970-01-01T00:00:00.
+    DateAndTime(i128),
+    String {
+        wide: bool,
+        value: String,
+    },
+    /// The `index`-th value of enumeration `ty` (its integer value is `Model::types[ty]`'s).
+    Enum {
+        ty: TypeId,
+        index: usize,
+    },
+    /// Array elements in row-major order, repeats expanded (may be shorter than the array: rest is default).
+    Array(Vec<ConstValue>),
+    /// Struct fields or FB instance parameters by name as written (`(PT := T#1s)`).
+    Struct(Vec<(String, ConstValue)>),
+}
+
+/// A direct address `%IX0.1` / `%QW3` / `%MD10` (`path` empty for `%I*`).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
+pub struct Location {
+    pub area: Area,
+    pub size: AddressSize,
+    pub path: Vec<u32>,
+}
+
+impl Location {
+    pub fn of(a: &DirectAddress) -> Location {
+        Location {
+            area: a.area,
+            size: a.size,
+            path: a.path.clone(),
+        }
+    }
+    /// The elementary type the address holds (`X`: BOOL, `B`: BYTE, `W`: WORD, `D`: DWORD, `L`: LWORD).
+    pub fn elementary(&self) -> Elementary {
+        match self.size {
+            AddressSize::Bit => E::Bool,
+            AddressSize::Byte => E::Byte,
+            AddressSize::Word => E::Word,
+            AddressSize::DWord => E::Dword,
+            AddressSize::LWord => E::Lword,
+        }
+    }
+}
+
+/// A declared variable (POU variable, struct field, or global).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Variable {
+    /// As written.
+    pub name: String,
+    pub span: Span,
+    pub kind: VarKind,
+    pub ty: Type,
+    pub constant: bool,
+    pub retain: bool,
+    /// `AT %IX0.1`.
+    pub location: Option<Location>,
+    /// The declared initial value (after a user type's own default when the declaration gives none:
+    /// `None` means the type's default, zero/FALSE/first enum value/empty string).
+    pub init: Option<ConstValue>,
+}
+
+impl Variable {
+    pub fn is(&self, name: &str) -> bool {
+        self.name.eq_ignore_ascii_case(name)
+    }
+}
+
+/// A user data type.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct UserType {
+    /// As written (inline enums get `__ENUM_<n>`).
+    pub name: String,
+    pub span: Span,
+    pub def: UserTypeDef,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum UserTypeDef {
+    /// Fields are `Variable`s of kind `Local`.
+    Struct { fields: Vec<Variable> },
+    /// Values as written with their integer values (implicit ones count on from the previous);
+    /// `default` indexes `values`.
+    Enum {
+        values: Vec<(String, i128)>,
+        default: usize,
+    },
+    /// `TYPE T : INT := 5;`: the resolved target (uses of `T` are replaced by it) and its initial value.
+    Alias {
+        target: Type,
+        init: Option<ConstValue>,
+    },
+}
+
+/// A program, function block or function.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Pou {
+    pub name: String,
+    pub span: Span,
+    pub kind: PouKind,
+    /// A FUNCTION's result type.
+    pub return_type: Option<Type>,
+    /// All declared variables in declaration order (inputs, outputs, in-outs, locals, temps, externals).
+    /// A FUNCTION's implicit result variable is not listed (it is `return_type`); `EN`/`ENO` are implicit
+    /// BOOLs not listed either (see README_sema.md).
+    pub vars: Vec<Variable>,
+    /// For each `VAR_EXTERNAL` (index into `vars`), the global it is bound to.
+    pub externals: Vec<(usize, GlobalRef)>,
+}
+
+impl Pou {
+    pub fn var(&self, name: &str) -> Option<&Variable> {
+        self.vars.iter().find(|v| v.is(name))
+    }
+    pub fn inputs(&self) -> impl Iterator<Item = &Variable> {
+        self.vars.iter().filter(|v| v.kind == VarKind::Input)
+    }
+    pub fn outputs(&self) -> impl Iterator<Item = &Variable> {
+        self.vars.iter().filter(|v| v.kind == VarKind::Output)
+    }
+    pub fn in_outs(&self) -> impl Iterator<Item = &Variable> {
+        self.vars.iter().filter(|v| v.kind == VarKind::InOut)
+    }
+}
+
+/// Where a global variable lives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum GlobalRef {
+    /// `Model::globals[i]` (a `VAR_GLOBAL` block outside any configuration).
+    Free(usize),
+    /// `Model::configurations[c].globals[i]`.
+    Configuration { config: usize, index: usize },
+    /// `Model::configurations[c].resources[r].globals[i]`.
+    Resource {
+        config: usize,
+        resource: usize,
+        index: usize,
+    },
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Configuration {
+    pub name: String,
+    pub span: Span,
+    pub globals: Vec<Variable>,
+    pub resources: Vec<Resource>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Resource {
+    pub name: String,
+    pub span: Span,
+    pub globals: Vec<Variable>,
+    pub tasks: Vec<Task>,
+    pub programs: Vec<ProgramInstance>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Task {
+    pub name: String,
+    pub span: Span,
+    /// `INTERVAL := T#10ms` in nanoseconds (a literal; `None` when absent or given by a variable).
+    pub interval_ns: Option<u64>,
+    /// `SINGLE := var` (event task): the variable's name as written.
+    pub single: Option<String>,
+    /// `PRIORITY := n` (0 when absent).
+    pub priority: u32,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ProgramInstance {
+    pub name: String,
+    pub span: Span,
+    pub retain: bool,
+    /// Index into the resource's `tasks`; `None` when no `WITH` (runs in the background).
+    pub task: Option<usize>,
+    pub pou: PouId,
+}
+
+/// What an instruction calls.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum Callee {
+    /// A standard function (`ADD`, `SEL`, `LIMIT` ...) or a simple operator mapped onto one (the operator
+    /// `ADD x` is `Std { name: "ADD", ty: INT, .. }`); `ty` is the type the generic parameters were
+    /// instantiated with, `result` the function's result type (BOOL for comparisons).
+    Std {
+        name: &'static str,
+        ty: Type,
+        result: Type,
+    },
+    /// `X_TO_Y`, `TRUNC`, `BCD_TO_*`, `*_TO_BCD`.
+    Conversion {
+        name: String,
+        kind: ConversionKind,
+        from: Type,
+        to: Type,
+    },
+    UserFunction(PouId),
+    /// `CAL inst`, `S1 inst`, `IN tmr`, and `S`/`R` with an FB instance operand: `input` is the input the
+    /// operator writes (`None` for `CAL`).
+    FbInstance {
+        fb: FbType,
+        input: Option<String>,
+    },
+    /// `FUNC Name()`: an embedded C function; the current result is unchanged.
+    Embedded {
+        name: String,
+    },
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum ConversionKind {
+    /// `INT_TO_REAL`, `REAL_TO_INT` (rounds to nearest, IEC), `DINT_TO_INT` (truncates bits) ...
+    Plain,
+    /// `TRUNC` / `REAL_TO_INT` written as `TRUNC`: toward zero.
+    Trunc,
+    /// `BCD_TO_INT`, `WORD_BCD_TO_INT`: decode binary-coded decimal.
+    FromBcd,
+    /// `INT_TO_BCD`: encode to binary-coded decimal.
+    ToBcd,
+}
+
+/// Where a call argument's value comes from.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum ArgSource {
+    /// The current result (first input of a function called as an IL operator).
+    CurrentResult,
+    /// The `i`-th written argument (in `CallArgs::NonFormal` or `CallArgs::Formal`).
+    Written(usize),
+}
+
+/// One call argument bound to its formal parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ArgBinding {
+    /// The formal parameter's canonical name (`IN`, `MN`, `IN0` ...).
+    pub param: String,
+    /// `true` for `=>` outputs.
+    pub output: bool,
+    /// The formal parameter's type (instantiated for generic standard functions).
+    pub ty: Type,
+    pub source: ArgSource,
+}
+
+/// What sema knows about one instruction (`Model::instrs[&instruction.span]`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InstrInfo {
+    /// The current result before the instruction (`None`: undefined, e.g. at the start of a body).
+    pub cr_before: Option<Type>,
+    /// The current result after it (`None`: undefined, e.g. after an unconditional `JMP`/`RET`).
+    pub cr_after: Option<Type>,
+    /// The operand's type (for a deferred operator, the nested list's value); for an untyped literal
+    /// operand, the type its context fixed.
+    pub operand: Option<Type>,
+    pub callee: Option<Callee>,
+    /// Call arguments bound to parameters, in evaluation order (function calls, `CAL` with arguments).
+    pub args: Vec<ArgBinding>,
+}
+
+/// Everything sema resolved.
+#[derive(Debug, Clone, Default, Serialize)]
+pub struct Model {
+    pub types: Vec<UserType>,
+    pub pous: Vec<Pou>,
+    pub configurations: Vec<Configuration>,
+    /// `VAR_GLOBAL` blocks outside configurations.
+    pub globals: Vec<Variable>,
+    /// Keyed by `ast::Instruction::span`.
+    pub instrs: HashMap<Span, InstrInfo>,
+}
+
+impl Model {
+    pub fn pou(&self, id: PouId) -> &Pou {
+        &self.pous[id.0 as usize]
+    }
+    pub fn pou_by_name(&self, name: &str) -> Option<PouId> {
+        self.pous
+            .iter()
+            .position(|p| p.name.eq_ignore_ascii_case(name))
+            .map(|i| PouId(i as u32))
+    }
+    pub fn user_type(&self, id: TypeId) -> &UserType {
+        &self.types[id.0 as usize]
+    }
+    pub fn type_by_name(&self, name: &str) -> Option<TypeId> {
+        self.types
+            .iter()
+            .position(|t| t.name.eq_ignore_ascii_case(name))
+            .map(|i| TypeId(i as u32))
+    }
+    /// The info of an instruction, by its span.
+    pub fn instr(&self, span: Span) -> Option<&InstrInfo> {
+        self.instrs.get(&span)
+    }
+    /// A global by reference.
+    pub fn global(&self, r: GlobalRef) -> &Variable {
+        match r {
+            GlobalRef::Free(i) => &self.globals[i],
+            GlobalRef::Configuration { config, index } => {
+                &self.configurations[config].globals[index]
+            }
+            GlobalRef::Resource {
+                config,
+                resource,
+                index,
+            } => &self.configurations[config].resources[resource].globals[index],
+        }
+    }
+    /// The IEC spelling of a type (`INT`, `STRING[20]`, `ARRAY [0..9] OF INT`, `TON`, a user type's name).
+    pub fn type_name(&self, ty: &Type) -> String {
+        match ty {
+            Type::Elementary(e) => e.name().to_string(),
+            Type::String { wide, len } => {
+                let kw = if *wide { "WSTRING" } else { "STRING" };
+                if *len == DEFAULT_STRING_LEN {
+                    kw.to_string()
+                } else {
+                    format!("{kw}[{len}]")
+                }
+            }
+            Type::Array { dims, element } => {
+                let d: Vec<String> = dims
+                    .iter()
+                    .map(|d| format!("{}..{}", d.lower, d.upper))
+                    .collect();
+                format!("ARRAY [{}] OF {}", d.join(", "), self.type_name(element))
+            }
+            Type::Struct(id) | Type::Enum(id) => self
+                .types
+                .get(id.0 as usize)
+                .map(|t| t.name.clone())
+                .unwrap_or_else(|| "?".into()),
+            Type::Subrange { base, lower, upper } => format!("{base} ({lower}..{upper})"),
+            Type::Fb(FbType::Standard(f)) => f.name().to_string(),
+            Type::Fb(FbType::User(id)) => self
+                .pous
+                .get(id.0 as usize)
+                .map(|p| p.name.clone())
+                .unwrap_or_else(|| "?".into()),
+            Type::Error => "<error>".into(),
+        }
+    }
+}

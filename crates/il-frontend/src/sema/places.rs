@@ -1,0 +1,597 @@
+//! Operands and variable access inside a body: name lookup (POU variables, the function's result, EN/ENO,
+//! globals, enumerated values), field and index access, literal typing, writability, stores.
+//!
+//! Input: AST operands. Output: their types (literal variables for untyped literals) and diagnostics.
+//! Invariants: each unresolvable name gives one E1001 and the type `Error`; a write to a constant, an
+//! input of the POU, an FB instance's output, or a literal is reported once at the operand.
+
+use super::body::{Body, Ty};
+use super::model::*;
+use super::stdlib::{fb_params, Dir};
+use super::typing::{assignable, literal_type, BindError, LitType};
+use crate::ast::{self, Accessor, Area, Operand, PouKind, VarKind, VarRef};
+use crate::Span;
+use diagnostics::{code, Code};
+
+/// Why a variable cannot be written (code, message, the declaration to point at).
+#[derive(Debug, Clone)]
+pub(super) struct ReadOnly {
+    code: Code,
+    message: String,
+    decl: Option<(Span, String)>,
+    hint: &'static str,
+}
+
+const HINT_CONST: &str = "write another variable, or drop CONSTANT from its declaration";
+const HINT_INPUT: &str = "write a local copy, or declare the variable VAR_IN_OUT / VAR_OUTPUT";
+const HINT_FB_OUTPUT: &str =
+    "outputs of an FB instance are written by the instance itself; read them with LD";
+const HINT_ENUM: &str = "store into a variable";
+
+/// A resolved variable access.
+#[derive(Debug, Clone)]
+pub(super) struct Place {
+    pub(super) ty: Type,
+    pub(super) read_only: Option<ReadOnly>,
+}
+
+impl Place {
+    fn error() -> Place {
+        Place {
+            ty: Type::Error,
+            read_only: None,
+        }
+    }
+}
+
+impl Body<'_, '_> {
+    /// The type of an operand that is read.
+    pub(super) fn read_operand(&mut self, o: &Operand) -> Ty {
+        match o {
+            Operand::Literal(l) => self.literal(l),
+            Operand::Var(v) => Ty::Known(self.resolve_var(v).ty),
+            Operand::Address(a) => Ty::Known(Type::Elementary(Location::of(a).elementary())),
+            Operand::EnumValue {
+                type_name, value, ..
+            } => Ty::Known(self.enum_value(type_name, value)),
+        }
+    }
+
+    fn literal(&mut self, l: &ast::Literal) -> Ty {
+        match literal_type(l) {
+            Ok(LitType::Known(t)) => Ty::Known(t),
+            Ok(LitType::Int(v)) => Ty::Lit(self.lits.new_int(v, l.span)),
+            Ok(LitType::Real) => Ty::Lit(self.lits.new_real(l.span)),
+            Err(e) => {
+                self.a
+                    .error(code::E1017, l.span, e.message)
+                    .label("out of range")
+                    .hint(e.hint);
+                Ty::ERROR
+            }
+        }
+    }
+
+    fn enum_value(&mut self, type_name: &ast::Ident, value: &ast::Ident) -> Type {
+        let Some(&id) = self.a.type_names.get(&type_name.key()) else {
+            self.a
+                .error(
+                    code::E1001,
+                    type_name.span,
+                    format!("unknown enumeration `{}`", type_name.name),
+                )
+                .label("no such type")
+                .hint("declare it in a TYPE block");
+            return Type::Error;
+        };
+        match &self.a.model.types[id.0 as usize].def {
+            UserTypeDef::Enum { values, .. } if values.iter().any(|(n, _)| value.is(n)) => {
+                Type::Enum(id)
+            }
+            UserTypeDef::Enum { .. } => {
+                self.a
+                    .error(
+                        code::E1001,
+                        value.span,
+                        format!("`{}` is not a value of {}", value.name, type_name.name),
+                    )
+                    .label("unknown enumerated value")
+                    .hint(format!(
+                        "use one of the values declared for {}",
+                        type_name.name
+                    ));
+                Type::Error
+            }
+            _ => {
+                self.a
+                    .error(
+                        code::E1001,
+                        type_name.span,
+                        format!("`{}` is not an enumeration", type_name.name),
+                    )
+                    .label("not an enumerated type")
+                    .hint("Type#value needs an enumerated type");
+                Type::Error
+            }
+        }
+    }
+
+    /// The type of an operand that is written; reports literals, constants and read-only variables.
+    pub(super) fn write_place(&mut self, o: &Operand, what: &str) -> Type {
+        match o {
+            Operand::Var(v) => {
+                let p = self.resolve_var(v);
+                if let Some(ro) = p.read_only {
+                    let mut d = self
+                        .a
+                        .error(ro.code, v.span, ro.message)
+                        .label(format!("{what} writes it here"));
+                    if let Some((span, m)) = ro.decl {
+                        d = d.also(span, m);
+                    }
+                    drop(d.hint(ro.hint));
+                }
+                p.ty
+            }
+            Operand::Address(a) => {
+                if a.area == Area::Input {
+                    self.a
+                        .error(
+                            code::E1026,
+                            a.span,
+                            format!("{what} cannot write an input address"),
+                        )
+                        .label("%I is read-only")
+                        .hint("write an output (%Q) or memory (%M) address");
+                }
+                Type::Elementary(Location::of(a).elementary())
+            }
+            Operand::Literal(_) | Operand::EnumValue { .. } => {
+                self.a
+                    .error(
+                        code::E1026,
+                        o.span(),
+                        format!("{what} cannot write a constant value"),
+                    )
+                    .label("not a variable")
+                    .hint("store into a variable");
+                Type::Error
+            }
+        }
+    }
+
+    /// Stores (or passes) a value of type `from` into `to`; binds untyped literals.
+    pub(super) fn coerce_store(&mut self, from: &Ty, to: &Type, target: Span, at: Span) -> bool {
+        self.coerce(from, to, at, |b, f, t| {
+            b.a.error(code::E1006, at, format!("cannot store {f} into {t}"))
+                .label(format!("the current result is {f}"))
+                .also(target, format!("this is {t}"))
+                .hint(conversion_hint(f, t));
+        })
+    }
+
+    /// Checks `from` against `to`; calls `mismatch(from, to)` to report a type mismatch.
+    pub(super) fn coerce(
+        &mut self,
+        from: &Ty,
+        to: &Type,
+        at: Span,
+        mismatch: impl FnOnce(&mut Self, &str, &str),
+    ) -> bool {
+        let n = self.norm(from);
+        match n {
+            Ty::Known(t) => {
+                if assignable(&t, to) {
+                    return true;
+                }
+                let (f, tt) = (self.a.type_name(&t), self.a.type_name(to));
+                mismatch(self, &f, &tt);
+                false
+            }
+            Ty::Lit(v) => match self.lits.bind(v, to) {
+                Ok(()) => true,
+                Err(BindError::Range { value, span }) => {
+                    let t = self.a.type_name(to);
+                    let range = to
+                        .elementary()
+                        .and_then(|e| e.int_range())
+                        .map(|(lo, hi)| format!("{t} holds {lo}..{hi}"))
+                        .unwrap_or_else(|| format!("the value must fit {t}"));
+                    let _ = at;
+                    self.a
+                        .error(
+                            code::E1017,
+                            span,
+                            format!("literal {value} does not fit {t}"),
+                        )
+                        .label(format!("used as {t}"))
+                        .hint(format!("{range}; use a wider type or a value in range"));
+                    false
+                }
+                Err(BindError::Kind { .. }) => {
+                    let (f, t) = (self.lits.describe(v), self.a.type_name(to));
+                    mismatch(self, f, &t);
+                    false
+                }
+            },
+        }
+    }
+
+    /// If the operand is an FB instance, its type (without reporting anything else).
+    pub(super) fn fb_instance_operand(&mut self, o: &Operand) -> Option<FbType> {
+        let Operand::Var(v) = o else {
+            return None;
+        };
+        let was = self.a.silent;
+        self.a.silent = true;
+        let p = self.resolve_var(v);
+        self.a.silent = was;
+        match p.ty {
+            Type::Fb(fb) => Some(fb),
+            _ => None,
+        }
+    }
+
+    /// Resolves a variable access (reports undeclared names and invalid accesses once).
+    pub(super) fn resolve_var(&mut self, v: &VarRef) -> Place {
+        let Some(mut place) = self.lookup_base(&v.base, v.accessors.is_empty()) else {
+            return Place::error();
+        };
+        let mut path = v.base.name.clone();
+        for acc in &v.accessors {
+            if place.ty.is_error() {
+                return Place::error();
+            }
+            match acc {
+                Accessor::Field(f) => {
+                    place = match self.field(&place, &path, f) {
+                        Some(p) => p,
+                        None => return Place::error(),
+                    };
+                    path = format!("{path}.{}", f.name);
+                }
+                Accessor::Index(ixs) => {
+                    let Type::Array { dims, element } = &place.ty else {
+                        let t = self.a.type_name(&place.ty);
+                        self.a
+                            .error(
+                                code::E1021,
+                                v.span,
+                                format!("`{path}` is {t}, not an array"),
+                            )
+                            .label("indexed here")
+                            .hint("only arrays take [index]");
+                        return Place::error();
+                    };
+                    let (dims, element) = (dims.clone(), (**element).clone());
+                    if dims.len() != ixs.len() {
+                        self.a
+                            .error(
+                                code::E1021,
+                                v.span,
+                                format!(
+                                    "`{path}` has {} dimension(s) but {} index(es) are given",
+                                    dims.len(),
+                                    ixs.len()
+                                ),
+                            )
+                            .label("wrong number of indexes")
+                            .hint("give one index per dimension: a[i, j]");
+                        return Place::error();
+                    }
+                    for ix in ixs {
+                        let t = self.read_operand(ix);
+                        let n = self.norm(&t);
+                        match n {
+                            Ty::Known(k) if k.is_error() || k.is_integer() => {}
+                            Ty::Lit(var) => {
+                                // An index literal is a DINT unless it does not fit.
+                                if self.lits.bind(var, &Type::DINT).is_err() {
+                                    self.a
+                                        .error(
+                                            code::E1021,
+                                            ix.span(),
+                                            "an array index must be an integer",
+                                        )
+                                        .label("not an integer")
+                                        .hint("index with an integer variable or literal");
+                                }
+                            }
+                            other => {
+                                let d = self.describe(&other);
+                                self.a
+                                    .error(
+                                        code::E1021,
+                                        ix.span(),
+                                        format!("an array index must be an integer, not {d}"),
+                                    )
+                                    .label(format!("this is {d}"))
+                                    .hint("convert the index (REAL_TO_DINT ...)");
+                            }
+                        }
+                    }
+                    place = Place {
+                        ty: element,
+                        read_only: place.read_only,
+                    };
+                    path = format!("{path}[..]");
+                }
+            }
+        }
+        place
+    }
+
+    /// The variable a name refers to in this POU.
+    fn lookup_base(&mut self, base: &ast::Ident, plain: bool) -> Option<Place> {
+        let (pou_name, kind) = {
+            let p = self.pou();
+            (p.name.clone(), p.kind)
+        };
+        if let Some(var) = self.pou().var(&base.name).cloned() {
+            let read_only = if var.constant {
+                Some(ReadOnly {
+                    code: code::E1014,
+                    message: format!("`{}` is a constant", var.name),
+                    decl: Some((var.span, "declared CONSTANT here".into())),
+                    hint: HINT_CONST,
+                })
+            } else if var.kind == VarKind::Input {
+                Some(ReadOnly {
+                    code: code::E1015,
+                    message: format!(
+                        "`{}` is an input of `{pou_name}`, read-only inside it",
+                        var.name
+                    ),
+                    decl: Some((var.span, "declared VAR_INPUT here".into())),
+                    hint: HINT_INPUT,
+                })
+            } else {
+                None
+            };
+            return Some(Place {
+                ty: var.ty,
+                read_only,
+            });
+        }
+        if kind == PouKind::Function && base.is(&pou_name) {
+            return Some(Place {
+                ty: self.pou().return_type.clone().unwrap_or(Type::Error),
+                read_only: None,
+            });
+        }
+        if kind != PouKind::Program && (base.is("EN") || base.is("ENO")) {
+            let read_only = base.is("EN").then(|| ReadOnly {
+                code: code::E1015,
+                message: format!("`EN` is an input of `{pou_name}`, read-only inside it"),
+                decl: None,
+                hint: HINT_INPUT,
+            });
+            return Some(Place {
+                ty: Type::BOOL,
+                read_only,
+            });
+        }
+        if let Some(&i) = self.a.free_globals.get(&base.key()) {
+            let g = self.a.model.globals[i].clone();
+            let read_only = g.constant.then(|| ReadOnly {
+                code: code::E1014,
+                message: format!("`{}` is a constant", g.name),
+                decl: Some((g.span, "declared CONSTANT here".into())),
+                hint: HINT_CONST,
+            });
+            return Some(Place {
+                ty: g.ty,
+                read_only,
+            });
+        }
+        if plain {
+            if let Some(found) = self.a.enum_values.get(&base.key()).cloned() {
+                if found.len() > 1 {
+                    let names: Vec<String> = found
+                        .iter()
+                        .map(|(id, _)| self.a.model.types[id.0 as usize].name.clone())
+                        .collect();
+                    self.a
+                        .error(
+                            code::E1001,
+                            base.span,
+                            format!("`{}` is a value of several enumerations", base.name),
+                        )
+                        .label("ambiguous")
+                        .hint(format!(
+                            "write Type#{} with one of: {}",
+                            base.name,
+                            names.join(", ")
+                        ));
+                    return None;
+                }
+                let read_only = Some(ReadOnly {
+                    code: code::E1026,
+                    message: format!("`{}` is an enumerated value, not a variable", base.name),
+                    decl: None,
+                    hint: HINT_ENUM,
+                });
+                return Some(Place {
+                    ty: Type::Enum(found[0].0),
+                    read_only,
+                });
+            }
+        }
+        let hint = self.similar_name(&base.name);
+        self.a
+            .error(
+                code::E1001,
+                base.span,
+                format!("undeclared name `{}`", base.name),
+            )
+            .label("not declared in this POU")
+            .hint(hint);
+        None
+    }
+
+    /// A hint naming a declared variable with a similar spelling, or how to declare.
+    fn similar_name(&self, name: &str) -> String {
+        let up = name.to_ascii_uppercase();
+        let best = self
+            .pou()
+            .vars
+            .iter()
+            .map(|v| v.name.clone())
+            .chain(self.a.model.globals.iter().map(|g| g.name.clone()))
+            .filter(|n| edit_distance(&n.to_ascii_uppercase(), &up) <= 2.max(up.len() / 4))
+            .min_by_key(|n| edit_distance(&n.to_ascii_uppercase(), &up));
+        match best {
+            Some(b) => format!("did you mean `{b}`? otherwise declare `{name}` in a VAR block"),
+            None => format!("declare `{name}` in a VAR block (or VAR_EXTERNAL for a global)"),
+        }
+    }
+
+    /// `.field` of a structure or FB instance.
+    fn field(&mut self, place: &Place, path: &str, f: &ast::Ident) -> Option<Place> {
+        match &place.ty {
+            Type::Struct(id) => {
+                let UserTypeDef::Struct { fields } = &self.a.model.types[id.0 as usize].def else {
+                    return None;
+                };
+                if let Some(fv) = fields.iter().find(|x| x.is(&f.name)) {
+                    return Some(Place {
+                        ty: fv.ty.clone(),
+                        read_only: place.read_only.clone(),
+                    });
+                }
+                let t = self.a.model.types[id.0 as usize].name.clone();
+                let names: Vec<String> = fields.iter().map(|x| x.name.clone()).collect();
+                self.a
+                    .error(
+                        code::E1021,
+                        f.span,
+                        format!("{t} has no field `{}`", f.name),
+                    )
+                    .label("unknown field")
+                    .hint(format!("fields of {t}: {}", names.join(", ")));
+                None
+            }
+            Type::Fb(fb) => {
+                let params = fb_param_list(&self.a.model, *fb);
+                let tname = self.a.type_name(&place.ty);
+                match params.iter().find(|p| f.is(&p.0)) {
+                    Some((name, dir, ty)) => {
+                        let read_only = match dir {
+                            ParamDir::Output => Some(ReadOnly {
+                                code: code::E1015,
+                                message: format!("`{name}` is an output of FB instance `{path}`"),
+                                decl: None,
+                                hint: HINT_FB_OUTPUT,
+                            }),
+                            ParamDir::Input | ParamDir::InOut => place.read_only.clone(),
+                            ParamDir::Internal => {
+                                self.a
+                                    .error(code::E1021, f.span, format!("`{}` is internal to {tname}", f.name))
+                                    .label("not an input or output")
+                                    .hint("only the inputs and outputs of an FB instance are accessible from outside");
+                                return None;
+                            }
+                        };
+                        Some(Place {
+                            ty: ty.clone(),
+                            read_only,
+                        })
+                    }
+                    None => {
+                        let names: Vec<String> = params
+                            .iter()
+                            .filter(|p| p.1 != ParamDir::Internal)
+                            .map(|p| p.0.clone())
+                            .collect();
+                        self.a
+                            .error(
+                                code::E1011,
+                                f.span,
+                                format!("{tname} has no input or output `{}`", f.name),
+                            )
+                            .label("unknown parameter")
+                            .hint(format!("parameters of {tname}: {}", names.join(", ")));
+                        None
+                    }
+                }
+            }
+            other => {
+                let t = self.a.type_name(other);
+                self.a
+                    .error(
+                        code::E1021,
+                        f.span,
+                        format!("`{path}` is {t}, which has no fields"),
+                    )
+                    .label("field access here")
+                    .hint("fields belong to structures and FB instances");
+                None
+            }
+        }
+    }
+}
+
+/// How a parameter of an FB is passed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum ParamDir {
+    Input,
+    InOut,
+    Output,
+    /// A local variable of a user FB (not a parameter).
+    Internal,
+}
+
+/// The parameters of an FB type: (name, direction, type), inputs first as declared.
+pub(super) fn fb_param_list(model: &Model, fb: FbType) -> Vec<(String, ParamDir, Type)> {
+    match fb {
+        FbType::Standard(s) => fb_params(s)
+            .iter()
+            .map(|p| {
+                let d = if p.dir == Dir::Input {
+                    ParamDir::Input
+                } else {
+                    ParamDir::Output
+                };
+                (p.name.to_string(), d, Type::Elementary(p.ty))
+            })
+            .collect(),
+        FbType::User(id) => model.pous[id.0 as usize]
+            .vars
+            .iter()
+            .map(|v| {
+                let d = match v.kind {
+                    VarKind::Input => ParamDir::Input,
+                    VarKind::InOut => ParamDir::InOut,
+                    VarKind::Output => ParamDir::Output,
+                    _ => ParamDir::Internal,
+                };
+                (v.name.clone(), d, v.ty.clone())
+            })
+            .collect(),
+    }
+}
+
+/// A hint for a type mismatch: the conversion function to use where there is one.
+pub(super) fn conversion_hint(from: &str, to: &str) -> String {
+    let plain = |s: &str| s.chars().all(|c| c.is_ascii_uppercase() || c == '_');
+    if plain(from) && plain(to) && super::stdlib::conversion(&format!("{from}_TO_{to}")).is_some() {
+        format!("convert explicitly with {from}_TO_{to}")
+    } else {
+        format!("use a value of type {to}")
+    }
+}
+
+/// Levenshtein distance (for "did you mean").
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev[j] + usize::from(ca != *cb);
+            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}

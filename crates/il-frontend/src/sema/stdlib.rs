@@ -1,0 +1,491 @@
+//! The IEC 61131-3 standard library catalogue: standard functions with their generic signatures, the
+//! type-conversion functions, and the standard function blocks with their inputs and outputs.
+//!
+//! Input: names as written (case-insensitive). Output: static descriptions ([`StdFunction`],
+//! [`Conversion`], [`FbParam`] lists). Invariants: one table ([`FUNCTIONS`]) lists every standard
+//! function; the parameters marked [`ParamTy::T`] of one function share one type (the function's generic
+//! type, instantiated per call by `sema`); time arithmetic (`ADD_TIME` ...) is the table [`TIME_ARITH`].
+
+use super::model::{Elementary, StdFb, Type};
+use Elementary as E;
+
+/// A generic type class of IEC 61131-3 (Figure 5 of edition 2 / Figure 11 of edition 3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Class {
+    /// Every type (SEL, MUX, MOVE).
+    Any,
+    /// Elementary types, strings, enumerations (comparisons, LIMIT, MAX, MIN).
+    AnyElementary,
+    AnyNum,
+    AnyReal,
+    AnyInt,
+    AnyBit,
+}
+
+impl Class {
+    pub fn name(self) -> &'static str {
+        match self {
+            Class::Any => "ANY",
+            Class::AnyElementary => "ANY_ELEMENTARY",
+            Class::AnyNum => "ANY_NUM",
+            Class::AnyReal => "ANY_REAL",
+            Class::AnyInt => "ANY_INT",
+            Class::AnyBit => "ANY_BIT",
+        }
+    }
+    /// Whether `ty` belongs to the class (`Type::Error` belongs to every class).
+    pub fn contains(self, ty: &Type) -> bool {
+        if ty.is_error() {
+            return true;
+        }
+        match self {
+            Class::Any => true,
+            Class::AnyElementary => matches!(
+                ty,
+                Type::Elementary(_) | Type::Subrange { .. } | Type::String { .. } | Type::Enum(_)
+            ),
+            Class::AnyNum => ty.is_numeric(),
+            Class::AnyReal => ty.is_real(),
+            Class::AnyInt => ty.is_integer(),
+            Class::AnyBit => ty.is_bit(),
+        }
+    }
+    /// Whether an untyped integer literal may take a type of this class (it can be any ANY_NUM or ANY_BIT).
+    pub fn accepts_int_literal(self) -> bool {
+        !matches!(self, Class::AnyReal)
+    }
+    /// Whether an untyped real literal may take a type of this class.
+    pub fn accepts_real_literal(self) -> bool {
+        matches!(
+            self,
+            Class::Any | Class::AnyElementary | Class::AnyNum | Class::AnyReal
+        )
+    }
+}
+
+/// The type of a standard function parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ParamTy {
+    /// The function's generic type `T`, which must belong to the class (all `T` parameters share it).
+    T(Class),
+    /// A parameter with its own, independent generic type of the class (`N` of SHL, `K` of MUX).
+    Own(Class),
+    /// A fixed type (`G : BOOL` of SEL).
+    Fixed(Elementary),
+}
+
+/// The result type of a standard function.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ret {
+    /// The generic type `T`.
+    T,
+    Fixed(Elementary),
+}
+
+#[derive(Debug, Clone, Copy)]
+pub struct Param {
+    pub name: &'static str,
+    pub ty: ParamTy,
+}
+
+/// A standard function.
+#[derive(Debug, Clone, Copy)]
+pub struct StdFunction {
+    pub name: &'static str,
+    /// The inputs in order; in IL the current result is the first one.
+    pub params: &'static [Param],
+    /// Extensible: the last parameter repeats (`IN1, IN2, IN3 ...` for ADD; `IN0, IN1, IN2 ...` for MUX);
+    /// repeated names count on from the last one's number.
+    pub extensible: bool,
+    pub result: Ret,
+    /// Whether `TIME_ARITH` overloads apply (ADD, SUB, MUL, DIV).
+    pub time_arith: bool,
+    pub doc: &'static str,
+}
+
+const fn p(name: &'static str, ty: ParamTy) -> Param {
+    Param { name, ty }
+}
+
+use Class::*;
+use ParamTy::{Fixed, Own, T};
+
+const NUM2: &[Param] = &[p("IN1", T(AnyNum)), p("IN2", T(AnyNum))];
+const INT2: &[Param] = &[p("IN1", T(AnyInt)), p("IN2", T(AnyInt))];
+const BIT2: &[Param] = &[p("IN1", T(AnyBit)), p("IN2", T(AnyBit))];
+const ELEM2: &[Param] = &[p("IN1", T(AnyElementary)), p("IN2", T(AnyElementary))];
+const NUM1: &[Param] = &[p("IN", T(AnyNum))];
+const REAL1: &[Param] = &[p("IN", T(AnyReal))];
+const SHIFT: &[Param] = &[p("IN", T(AnyBit)), p("N", Own(AnyInt))];
+
+const fn f(
+    name: &'static str,
+    params: &'static [Param],
+    extensible: bool,
+    result: Ret,
+    doc: &'static str,
+) -> StdFunction {
+    StdFunction {
+        name,
+        params,
+        extensible,
+        result,
+        time_arith: false,
+        doc,
+    }
+}
+
+const fn ft(
+    name: &'static str,
+    params: &'static [Param],
+    extensible: bool,
+    doc: &'static str,
+) -> StdFunction {
+    StdFunction {
+        name,
+        params,
+        extensible,
+        result: Ret::T,
+        time_arith: true,
+        doc,
+    }
+}
+
+/// Every standard function except the conversions (see [`conversion`]).
+pub static FUNCTIONS: &[StdFunction] = &[
+    // arithmetic
+    ft("ADD", NUM2, true, "IN1 + IN2 + ...; also ADD_TIME, ADD_TOD_TIME, ADD_DT_TIME"),
+    ft("SUB", NUM2, false, "IN1 - IN2; also SUB_TIME, SUB_DATE_DATE, SUB_TOD_TIME, SUB_TOD_TOD, SUB_DT_TIME, SUB_DT_DT"),
+    ft("MUL", NUM2, true, "IN1 * IN2 * ...; also MUL_TIME (TIME * ANY_NUM)"),
+    ft("DIV", NUM2, false, "IN1 / IN2 (integers: truncated toward zero); also DIV_TIME (TIME / ANY_NUM)"),
+    f("MOD", INT2, false, Ret::T, "IN1 modulo IN2 (0 when IN2 = 0)"),
+    f("EXPT", &[p("IN1", T(AnyReal)), p("IN2", Own(AnyNum))], false, Ret::T, "IN1 ** IN2"),
+    f("MOVE", &[p("IN", T(Any))], false, Ret::T, "the input unchanged"),
+    // numeric functions
+    f("ABS", NUM1, false, Ret::T, "absolute value"),
+    f("SQRT", REAL1, false, Ret::T, "square root"),
+    f("LN", REAL1, false, Ret::T, "natural logarithm"),
+    f("LOG", REAL1, false, Ret::T, "logarithm base 10"),
+    f("EXP", REAL1, false, Ret::T, "natural exponential"),
+    f("SIN", REAL1, false, Ret::T, "sine (radians)"),
+    f("COS", REAL1, false, Ret::T, "cosine (radians)"),
+    f("TAN", REAL1, false, Ret::T, "tangent (radians)"),
+    f("ASIN", REAL1, false, Ret::T, "arc sine"),
+    f("ACOS", REAL1, false, Ret::T, "arc cosine"),
+    f("ATAN", REAL1, false, Ret::T, "arc tangent"),
+    // comparisons (extensible: IN1 > IN2 AND IN2 > IN3 ...)
+    f("GT", ELEM2, true, Ret::Fixed(E::Bool), "IN1 > IN2 > ..."),
+    f("GE", ELEM2, true, Ret::Fixed(E::Bool), "IN1 >= IN2 >= ..."),
+    f("EQ", ELEM2, true, Ret::Fixed(E::Bool), "IN1 = IN2 = ..."),
+    f("NE", ELEM2, false, Ret::Fixed(E::Bool), "IN1 <> IN2"),
+    f("LE", ELEM2, true, Ret::Fixed(E::Bool), "IN1 <= IN2 <= ..."),
+    f("LT", ELEM2, true, Ret::Fixed(E::Bool), "IN1 < IN2 < ..."),
+    // bitwise / boolean
+    f("AND", BIT2, true, Ret::T, "bitwise AND"),
+    f("OR", BIT2, true, Ret::T, "bitwise OR"),
+    f("XOR", BIT2, true, Ret::T, "bitwise exclusive OR"),
+    f("NOT", &[p("IN", T(AnyBit))], false, Ret::T, "bitwise complement"),
+    // bit shifts
+    f("SHL", SHIFT, false, Ret::T, "shift left by N bits, zero fill"),
+    f("SHR", SHIFT, false, Ret::T, "shift right by N bits, zero fill"),
+    f("ROL", SHIFT, false, Ret::T, "rotate left by N bits"),
+    f("ROR", SHIFT, false, Ret::T, "rotate right by N bits"),
+    // selection
+    f("SEL", &[p("G", Fixed(E::Bool)), p("IN0", T(Any)), p("IN1", T(Any))], false, Ret::T, "IN0 if G is FALSE, else IN1"),
+    f("MAX", ELEM2, true, Ret::T, "the largest input"),
+    f("MIN", ELEM2, true, Ret::T, "the smallest input"),
+    f(
+        "LIMIT",
+        &[p("MN", T(AnyElementary)), p("IN", T(AnyElementary)), p("MX", T(AnyElementary))],
+        false,
+        Ret::T,
+        "IN bounded to MN..MX",
+    ),
+    f("MUX", &[p("K", Own(AnyInt)), p("IN0", T(Any)), p("IN1", T(Any))], true, Ret::T, "the K-th of IN0, IN1, ..."),
+];
+
+/// Looks up a standard function (not a conversion) by name, case-insensitively.
+pub fn function(name: &str) -> Option<&'static StdFunction> {
+    FUNCTIONS.iter().find(|f| f.name.eq_ignore_ascii_case(name))
+}
+
+impl StdFunction {
+    /// The name of the `i`-th input (extensible functions number on: `IN3`, `IN4` ...).
+    pub fn param_name(&self, i: usize) -> String {
+        if let Some(p) = self.params.get(i) {
+            return p.name.to_string();
+        }
+        let last = self.params.last().map(|p| p.name).unwrap_or("IN");
+        let digits = last.trim_start_matches(|c: char| !c.is_ascii_digit());
+        let stem = &last[..last.len() - digits.len()];
+        let n: usize = digits.parse().unwrap_or(0);
+        format!("{stem}{}", n + (i + 1 - self.params.len()))
+    }
+    /// The type of the `i`-th input (repeats the last for extensible functions); `None` past the end.
+    pub fn param_ty(&self, i: usize) -> Option<ParamTy> {
+        match self.params.get(i) {
+            Some(p) => Some(p.ty),
+            None if self.extensible => self.params.last().map(|p| p.ty),
+            None => None,
+        }
+    }
+    /// The index of a formal input name (`IN3` of an extensible function too).
+    pub fn param_index(&self, name: &str) -> Option<usize> {
+        if let Some(i) = self
+            .params
+            .iter()
+            .position(|p| p.name.eq_ignore_ascii_case(name))
+        {
+            return Some(i);
+        }
+        if !self.extensible {
+            return None;
+        }
+        (self.params.len()..self.params.len() + 64)
+            .find(|&i| self.param_name(i).eq_ignore_ascii_case(name))
+    }
+}
+
+/// An overload of ADD/SUB/MUL/DIV on times and dates: `(name, operator, IN1, IN2, result)`; `None` for
+/// IN2 means any ANY_NUM (MUL_TIME, DIV_TIME).
+pub static TIME_ARITH: &[(&str, &str, E, Option<E>, E)] = &[
+    ("ADD_TIME", "ADD", E::Time, Some(E::Time), E::Time),
+    ("ADD_LTIME", "ADD", E::Ltime, Some(E::Ltime), E::Ltime),
+    ("ADD_TOD_TIME", "ADD", E::Tod, Some(E::Time), E::Tod),
+    ("ADD_DT_TIME", "ADD", E::Dt, Some(E::Time), E::Dt),
+    ("SUB_TIME", "SUB", E::Time, Some(E::Time), E::Time),
+    ("SUB_LTIME", "SUB", E::Ltime, Some(E::Ltime), E::Ltime),
+    ("SUB_DATE_DATE", "SUB", E::Date, Some(E::Date), E::Time),
+    ("SUB_TOD_TIME", "SUB", E::Tod, Some(E::Time), E::Tod),
+    ("SUB_TOD_TOD", "SUB", E::Tod, Some(E::Tod), E::Time),
+    ("SUB_DT_TIME", "SUB", E::Dt, Some(E::Time), E::Dt),
+    ("SUB_DT_DT", "SUB", E::Dt, Some(E::Dt), E::Time),
+    ("MUL_TIME", "MUL", E::Time, None, E::Time),
+    ("MUL_LTIME", "MUL", E::Ltime, None, E::Ltime),
+    ("DIV_TIME", "DIV", E::Time, None, E::Time),
+    ("DIV_LTIME", "DIV", E::Ltime, None, E::Ltime),
+];
+
+/// The time/date overload of `op` for a first input of type `in1`, if any.
+pub fn time_overloads(
+    op: &str,
+    in1: Elementary,
+) -> impl Iterator<Item = &'static (&'static str, &'static str, E, Option<E>, E)> + '_ {
+    TIME_ARITH
+        .iter()
+        .filter(move |t| t.1.eq_ignore_ascii_case(op) && t.2 == in1)
+}
+
+/// A conversion function: `INT_TO_REAL`, `TRUNC`, `BCD_TO_INT`, `INT_TO_BCD`, `WORD_BCD_TO_INT` ...
+#[derive(Debug, Clone, PartialEq)]
+pub struct Conversion {
+    /// The input type: `Some` for `X_TO_Y`; `None` when generic (TRUNC: ANY_REAL, BCD_TO_INT: ANY_BIT).
+    pub from: Option<Type>,
+    pub from_class: Class,
+    pub to: ConvTarget,
+    pub kind: super::model::ConversionKind,
+}
+
+/// The output of a conversion.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ConvTarget {
+    Fixed(Type),
+    /// `*_TO_BCD` written without the bit-string type: BYTE/WORD/DWORD/LWORD by the input's width.
+    BcdOfWidth,
+}
+
+fn conv_type(name: &str) -> Option<Type> {
+    match name {
+        "STRING" => Some(Type::String {
+            wide: false,
+            len: super::model::DEFAULT_STRING_LEN,
+        }),
+        "WSTRING" => Some(Type::String {
+            wide: true,
+            len: super::model::DEFAULT_STRING_LEN,
+        }),
+        n => Elementary::from_name(n).map(Type::Elementary),
+    }
+}
+
+/// Whether `X_TO_Y` exists: numbers, bit strings and BOOL convert among themselves; TIME/LTIME convert
+/// with each other and with integers and reals; DT converts to DATE and TOD; everything elementary
+/// converts to and from STRING/WSTRING.
+pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
+    let (f, t) = (from.elementary(), to.elementary());
+    match (f, t) {
+        (None, None) => from.is_string() && to.is_string(),
+        (None, Some(_)) => from.is_string(),
+        (Some(_), None) => to.is_string(),
+        (Some(f), Some(t)) => {
+            let plain = |e: E| e.is_numeric() || e.is_bit();
+            (plain(f) && plain(t))
+                || (f.is_duration() && (t.is_duration() || t.is_numeric()))
+                || (t.is_duration() && f.is_numeric())
+                || (f == E::Dt && matches!(t, E::Date | E::Tod | E::Dt))
+                || (f == t)
+        }
+    }
+}
+
+/// Parses a conversion function name.
+pub fn conversion(name: &str) -> Option<Conversion> {
+    use super::model::ConversionKind as K;
+    let up = name.to_ascii_uppercase();
+    if up == "TRUNC" {
+        return Some(Conversion {
+            from: None,
+            from_class: AnyReal,
+            to: ConvTarget::Fixed(Type::DINT),
+            kind: K::Trunc,
+        });
+    }
+    let (a, b) = up.split_once("_TO_")?;
+    // BCD_TO_INT, WORD_BCD_TO_INT
+    if a == "BCD" || a.ends_with("_BCD") {
+        let to = conv_type(b).filter(|t| t.is_integer())?;
+        let from = if a == "BCD" {
+            None
+        } else {
+            Some(conv_type(&a[..a.len() - 4]).filter(|t| t.is_bit() && !t.is_bool())?)
+        };
+        return Some(Conversion {
+            from,
+            from_class: AnyBit,
+            to: ConvTarget::Fixed(to),
+            kind: K::FromBcd,
+        });
+    }
+    // INT_TO_BCD, INT_TO_BCD_WORD
+    if b == "BCD" || b.starts_with("BCD_") {
+        let from = conv_type(a).filter(|t| t.is_integer())?;
+        let to = if b == "BCD" {
+            ConvTarget::BcdOfWidth
+        } else {
+            ConvTarget::Fixed(conv_type(&b[4..]).filter(|t| t.is_bit() && !t.is_bool())?)
+        };
+        return Some(Conversion {
+            from: Some(from),
+            from_class: AnyInt,
+            to,
+            kind: K::ToBcd,
+        });
+    }
+    // REAL_TRUNC_INT is spelled TRUNC_INT in edition 3: accept `REAL_TO_INT` family only here.
+    let from = conv_type(a)?;
+    let to = conv_type(b)?;
+    if !conversion_allowed(&from, &to) {
+        return None;
+    }
+    Some(Conversion {
+        from: Some(from),
+        from_class: Any,
+        to: ConvTarget::Fixed(to),
+        kind: K::Plain,
+    })
+}
+
+/// The bit string of the same width as an integer type (`INT_TO_BCD` gives WORD).
+pub fn bcd_of_width(int: Elementary) -> Elementary {
+    match int.bit_width() {
+        8 => E::Byte,
+        16 => E::Word,
+        32 => E::Dword,
+        _ => E::Lword,
+    }
+}
+
+/// Direction of a standard FB parameter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dir {
+    Input,
+    Output,
+}
+
+/// A standard FB parameter.
+#[derive(Debug, Clone, Copy)]
+pub struct FbParam {
+    pub name: &'static str,
+    pub dir: Dir,
+    pub ty: Elementary,
+}
+
+const fn i(name: &'static str, ty: Elementary) -> FbParam {
+    FbParam {
+        name,
+        dir: Dir::Input,
+        ty,
+    }
+}
+const fn o(name: &'static str, ty: Elementary) -> FbParam {
+    FbParam {
+        name,
+        dir: Dir::Output,
+        ty,
+    }
+}
+
+const TRIG: &[FbParam] = &[i("CLK", E::Bool), o("Q", E::Bool)];
+const SR: &[FbParam] = &[i("S1", E::Bool), i("R", E::Bool), o("Q1", E::Bool)];
+const RS: &[FbParam] = &[i("S", E::Bool), i("R1", E::Bool), o("Q1", E::Bool)];
+const TIMER: &[FbParam] = &[
+    i("IN", E::Bool),
+    i("PT", E::Time),
+    o("Q", E::Bool),
+    o("ET", E::Time),
+];
+const CTU: &[FbParam] = &[
+    i("CU", E::Bool),
+    i("R", E::Bool),
+    i("PV", E::Int),
+    o("Q", E::Bool),
+    o("CV", E::Int),
+];
+const CTD: &[FbParam] = &[
+    i("CD", E::Bool),
+    i("LD", E::Bool),
+    i("PV", E::Int),
+    o("Q", E::Bool),
+    o("CV", E::Int),
+];
+const CTUD: &[FbParam] = &[
+    i("CU", E::Bool),
+    i("CD", E::Bool),
+    i("R", E::Bool),
+    i("LD", E::Bool),
+    i("PV", E::Int),
+    o("QU", E::Bool),
+    o("QD", E::Bool),
+    o("CV", E::Int),
+];
+
+/// The inputs and outputs of a standard FB, in IEC order (inputs first).
+pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
+    match fb {
+        StdFb::RTrig | StdFb::FTrig => TRIG,
+        StdFb::Sr => SR,
+        StdFb::Rs => RS,
+        StdFb::Ton | StdFb::Tof | StdFb::Tp => TIMER,
+        StdFb::Ctu => CTU,
+        StdFb::Ctd => CTD,
+        StdFb::Ctud => CTUD,
+    }
+}
+
+/// Documentation of a standard FB (one line).
+pub fn fb_doc(fb: StdFb) -> &'static str {
+    match fb {
+        StdFb::RTrig => "Q is TRUE for one call on a rising edge of CLK",
+        StdFb::FTrig => "Q is TRUE for one call on a falling edge of CLK",
+        StdFb::Sr => "set-dominant bistable: Q1 := S1 OR (NOT R AND Q1)",
+        StdFb::Rs => "reset-dominant bistable: Q1 := NOT R1 AND (S OR Q1)",
+        StdFb::Ton => "on-delay timer: Q goes TRUE when IN has been TRUE for PT",
+        StdFb::Tof => "off-delay timer: Q stays TRUE for PT after IN goes FALSE",
+        StdFb::Tp => "pulse timer: Q is TRUE for PT from a rising edge of IN",
+        StdFb::Ctu => "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets",
+        StdFb::Ctd => {
+            "down counter: CV counts down on rising edges of CD, Q := CV <= 0, LD loads PV"
+        }
+        StdFb::Ctud => "up/down counter: QU := CV >= PV, QD := CV <= 0",
+    }
+}

@@ -1,0 +1,395 @@
+//! IEC typing rules: implicit widening, assignability, the common type of generic inputs, literal typing,
+//! and the untyped-literal type variables (integer literals are untyped until their context fixes a type).
+//!
+//! Input: resolved [`Type`]s and AST literals. Output: yes/no answers, common types, literal types.
+//! Invariants: `Type::Error` is compatible with everything (it silences follow-on errors); widening never
+//! loses information (edition 3, Figure 11): no implicit narrowing.
+
+use super::model::{ConstValue, Elementary, Type};
+use crate::ast::{Literal, LiteralKind};
+use crate::Span;
+use Elementary as E;
+
+/// Whether a value of `from` converts implicitly (without loss) to `to`.
+pub fn widens(from: Elementary, to: Elementary) -> bool {
+    if from == to {
+        return true;
+    }
+    match from {
+        E::Sint => matches!(to, E::Int | E::Dint | E::Lint | E::Real | E::Lreal),
+        E::Int => matches!(to, E::Dint | E::Lint | E::Real | E::Lreal),
+        E::Dint => matches!(to, E::Lint | E::Lreal),
+        E::Usint => matches!(
+            to,
+            E::Uint | E::Udint | E::Ulint | E::Int | E::Dint | E::Lint | E::Real | E::Lreal
+        ),
+        E::Uint => matches!(
+            to,
+            E::Udint | E::Ulint | E::Dint | E::Lint | E::Real | E::Lreal
+        ),
+        E::Udint => matches!(to, E::Ulint | E::Lint | E::Lreal),
+        E::Real => to == E::Lreal,
+        E::Bool => matches!(to, E::Byte | E::Word | E::Dword | E::Lword),
+        E::Byte => matches!(to, E::Word | E::Dword | E::Lword),
+        E::Word => matches!(to, E::Dword | E::Lword),
+        E::Dword => to == E::Lword,
+        E::Time => to == E::Ltime,
+        _ => false,
+    }
+}
+
+/// Whether a value of type `from` may be stored into (or passed as) `to`.
+pub fn assignable(from: &Type, to: &Type) -> bool {
+    if from.is_error() || to.is_error() || from == to {
+        return true;
+    }
+    match (from, to) {
+        (Type::String { wide: a, .. }, Type::String { wide: b, .. }) => a == b,
+        (
+            Type::Array {
+                dims: da,
+                element: ea,
+            },
+            Type::Array {
+                dims: db,
+                element: eb,
+            },
+        ) => da.len() == db.len() && da.iter().zip(db).all(|(a, b)| a.len() == b.len()) && ea == eb,
+        _ => match (from.elementary(), to.elementary()) {
+            (Some(f), Some(t)) => widens(f, t),
+            _ => false,
+        },
+    }
+}
+
+/// The type all `types` widen to, if one of them is that type (`INT` and `DINT` give `DINT`).
+pub fn common_type(types: &[Type]) -> Option<Type> {
+    let first = types.iter().find(|t| !t.is_error())?;
+    // Subranges count as their base.
+    let norm = |t: &Type| match t.elementary() {
+        Some(e) if !t.is_string() => Type::Elementary(e),
+        _ => t.clone(),
+    };
+    let norms: Vec<Type> = types.iter().filter(|t| !t.is_error()).map(norm).collect();
+    if norms.iter().all(|t| *t == norm(first)) {
+        return Some(
+            if types.iter().filter(|t| !t.is_error()).all(|t| t == first) {
+                first.clone()
+            } else {
+                norm(first)
+            },
+        );
+    }
+    norms
+        .iter()
+        .find(|cand| norms.iter().all(|t| assignable(t, cand)))
+        .cloned()
+}
+
+/// What a literal's type is before context.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LitType {
+    Known(Type),
+    /// An untyped integer literal with its value.
+    Int(i128),
+    /// An untyped real literal.
+    Real,
+}
+
+/// A problem with a typed literal.
+pub struct LitError {
+    pub message: String,
+    pub hint: String,
+}
+
+/// Types a literal; checks typed literals (`INT#40000`) against their type's range.
+pub fn literal_type(lit: &Literal) -> Result<LitType, LitError> {
+    let prefix = lit
+        .type_prefix
+        .as_ref()
+        .map(|p| (p.name.clone(), Elementary::from_name(&p.name)));
+    match (&lit.kind, prefix) {
+        (LiteralKind::Int(v), None) => Ok(LitType::Int(*v)),
+        (LiteralKind::Int(v), Some((_, Some(e)))) if e.is_real() => {
+            let _ = v;
+            Ok(LitType::Known(Type::Elementary(e)))
+        }
+        (LiteralKind::Int(v), Some((name, Some(e)))) => match e.int_range() {
+            Some((lo, hi)) if *v >= lo && *v <= hi => Ok(LitType::Known(Type::Elementary(e))),
+            Some((lo, hi)) => Err(LitError {
+                message: format!("literal {v} does not fit {}", e.name()),
+                hint: format!(
+                    "{} holds {lo}..{hi}; use a wider type such as {}",
+                    name.to_ascii_uppercase(),
+                    wider_for(*v)
+                ),
+            }),
+            None => Err(LitError {
+                message: format!("an integer literal cannot have type {}", e.name()),
+                hint: "write the literal in the type's own syntax (T#5s, D#2024-01-01 ...)".into(),
+            }),
+        },
+        (LiteralKind::Real(_), None) => Ok(LitType::Real),
+        (LiteralKind::Real(_), Some((_, Some(e)))) if e.is_real() => {
+            Ok(LitType::Known(Type::Elementary(e)))
+        }
+        (LiteralKind::Real(_), Some((_, Some(e)))) => Err(LitError {
+            message: format!("a real literal cannot have type {}", e.name()),
+            hint: "use REAL# or LREAL#, or an integer literal".into(),
+        }),
+        (LiteralKind::Bool(_), _) => Ok(LitType::Known(Type::BOOL)),
+        (LiteralKind::Duration(_), p) => Ok(LitType::Known(Type::Elementary(
+            if p.is_some_and(|(n, _)| {
+                n.eq_ignore_ascii_case("LTIME") || n.eq_ignore_ascii_case("LT")
+            }) {
+                E::Ltime
+            } else {
+                E::Time
+            },
+        ))),
+        (LiteralKind::Date(_), _) => Ok(LitType::Known(Type::Elementary(E::Date))),
+        (LiteralKind::TimeOfDay(_), _) => Ok(LitType::Known(Type::Elementary(E::Tod))),
+        (LiteralKind::DateAndTime(_), _) => Ok(LitType::Known(Type::Elementary(E::Dt))),
+        (LiteralKind::String { wide, value }, _) => Ok(LitType::Known(Type::String {
+            wide: *wide,
+            len: value.chars().count().max(1) as u32,
+        })),
+        (_, Some((name, None))) => Err(LitError {
+            message: format!("unknown literal type prefix `{name}#`"),
+            hint: "use an elementary type name such as INT#, REAL#, BOOL#".into(),
+        }),
+    }
+}
+
+/// The smallest signed (or unsigned) type holding `v`, for hints.
+pub fn wider_for(v: i128) -> &'static str {
+    for e in [E::Sint, E::Int, E::Dint, E::Lint, E::Ulint] {
+        if let Some((lo, hi)) = e.int_range() {
+            if v >= lo && v <= hi {
+                return e.name();
+            }
+        }
+    }
+    "LREAL"
+}
+
+/// The constant value of a literal, converted to `ty` where the literal is an untyped number.
+pub fn literal_value(lit: &Literal, ty: &Type) -> ConstValue {
+    match &lit.kind {
+        LiteralKind::Int(v) if ty.is_real() => ConstValue::Real(*v as f64),
+        LiteralKind::Int(v) if ty.is_bool() => ConstValue::Bool(*v != 0),
+        LiteralKind::Int(v) => ConstValue::Int(*v),
+        LiteralKind::Real(r) => ConstValue::Real(*r),
+        LiteralKind::Bool(b) => ConstValue::Bool(*b),
+        LiteralKind::Duration(d) => ConstValue::Duration(*d),
+        LiteralKind::Date(d) => ConstValue::Date(*d),
+        LiteralKind::TimeOfDay(t) => ConstValue::TimeOfDay(*t),
+        LiteralKind::DateAndTime(t) => ConstValue::DateAndTime(*t),
+        LiteralKind::String { wide, value } => ConstValue::String {
+            wide: *wide,
+            value: value.clone(),
+        },
+    }
+}
+
+/// Why an untyped literal cannot take a type.
+pub enum FitError {
+    /// Wrong kind of type (a real literal for INT, an integer literal for TIME).
+    Kind,
+    /// Right kind, value out of range: the offending value.
+    Range(i128),
+}
+
+/// Whether untyped integer literals with values `min..=max` (or a real literal) can take type `ty`.
+/// Integer literals take any ANY_INT/ANY_BIT type holding the value (BOOL: 0 and 1) and any ANY_REAL.
+pub fn literal_fits(min: i128, max: i128, real: bool, ty: &Type) -> Result<(), FitError> {
+    if ty.is_error() {
+        return Ok(());
+    }
+    if let Type::Subrange { lower, upper, .. } = ty {
+        if real {
+            return Err(FitError::Kind);
+        }
+        return if min < *lower {
+            Err(FitError::Range(min))
+        } else if max > *upper {
+            Err(FitError::Range(max))
+        } else {
+            Ok(())
+        };
+    }
+    let Some(e) = ty.elementary() else {
+        return Err(FitError::Kind);
+    };
+    if e.is_real() {
+        return Ok(());
+    }
+    if real {
+        return Err(FitError::Kind);
+    }
+    match e.int_range() {
+        Some((lo, hi)) => {
+            if min < lo {
+                Err(FitError::Range(min))
+            } else if max > hi {
+                Err(FitError::Range(max))
+            } else {
+                Ok(())
+            }
+        }
+        None => Err(FitError::Kind),
+    }
+}
+
+/// The default type of an untyped literal that no context fixed: DINT (LINT, ULINT if too big), LREAL.
+pub fn literal_default(min: i128, max: i128, real: bool) -> Type {
+    if real {
+        return Type::LREAL;
+    }
+    for e in [E::Dint, E::Lint, E::Ulint] {
+        if literal_fits(min, max, false, &Type::Elementary(e)).is_ok() {
+            return Type::Elementary(e);
+        }
+    }
+    Type::Elementary(E::Lint)
+}
+
+/// Untyped-literal type variables: a union-find over literal occurrences whose type a context fixes.
+#[derive(Debug, Default)]
+pub struct LitVars {
+    parent: Vec<usize>,
+    info: Vec<LitInfo>,
+}
+
+#[derive(Debug, Clone)]
+struct LitInfo {
+    min: i128,
+    max: i128,
+    real: bool,
+    bound: Option<Type>,
+    /// The literals holding the smallest and the largest value, for diagnostics.
+    min_span: Span,
+    max_span: Span,
+}
+
+/// Result of trying to fix a literal variable's type.
+pub enum BindError {
+    Kind { span: Span },
+    Range { value: i128, span: Span },
+}
+
+impl LitVars {
+    pub fn new_int(&mut self, v: i128, span: Span) -> usize {
+        self.push(LitInfo {
+            min: v,
+            max: v,
+            real: false,
+            bound: None,
+            min_span: span,
+            max_span: span,
+        })
+    }
+    pub fn new_real(&mut self, span: Span) -> usize {
+        self.push(LitInfo {
+            min: 0,
+            max: 0,
+            real: true,
+            bound: None,
+            min_span: span,
+            max_span: span,
+        })
+    }
+    fn push(&mut self, i: LitInfo) -> usize {
+        self.parent.push(self.parent.len());
+        self.info.push(i);
+        self.parent.len() - 1
+    }
+    pub fn find(&mut self, v: usize) -> usize {
+        let mut r = v;
+        while self.parent[r] != r {
+            r = self.parent[r];
+        }
+        let mut c = v;
+        while self.parent[c] != r {
+            let n = self.parent[c];
+            self.parent[c] = r;
+            c = n;
+        }
+        r
+    }
+    /// The type the variable was bound to.
+    pub fn bound(&mut self, v: usize) -> Option<Type> {
+        let r = self.find(v);
+        self.info[r].bound.clone()
+    }
+    pub fn is_real(&mut self, v: usize) -> bool {
+        let r = self.find(v);
+        self.info[r].real
+    }
+    /// Fixes the type of an unbound variable (checks that every literal of the class fits).
+    pub fn bind(&mut self, v: usize, ty: &Type) -> Result<(), BindError> {
+        let r = self.find(v);
+        let i = &self.info[r];
+        if let Some(b) = &i.bound {
+            return if assignable(b, ty) {
+                Ok(())
+            } else {
+                Err(BindError::Kind { span: i.min_span })
+            };
+        }
+        match literal_fits(i.min, i.max, i.real, ty) {
+            Ok(()) => {
+                self.info[r].bound = Some(ty.clone());
+                Ok(())
+            }
+            Err(FitError::Kind) => Err(BindError::Kind { span: i.min_span }),
+            Err(FitError::Range(value)) => Err(BindError::Range {
+                value,
+                span: if value == i.min {
+                    i.min_span
+                } else {
+                    i.max_span
+                },
+            }),
+        }
+    }
+    /// Merges two unbound classes (a real literal makes the class real).
+    pub fn unify(&mut self, a: usize, b: usize) -> usize {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra == rb {
+            return ra;
+        }
+        let ib = self.info[rb].clone();
+        let ia = &mut self.info[ra];
+        if ib.min < ia.min {
+            ia.min = ib.min;
+            ia.min_span = ib.min_span;
+        }
+        if ib.max > ia.max {
+            ia.max = ib.max;
+            ia.max_span = ib.max_span;
+        }
+        ia.real |= ib.real;
+        if ia.bound.is_none() {
+            ia.bound = ib.bound;
+        }
+        self.parent[rb] = ra;
+        ra
+    }
+    /// The final type: the bound one or the default.
+    pub fn resolve(&mut self, v: usize) -> Type {
+        let r = self.find(v);
+        let i = &self.info[r];
+        i.bound
+            .clone()
+            .unwrap_or_else(|| literal_default(i.min, i.max, i.real))
+    }
+    /// Human description ("an integer literal").
+    pub fn describe(&mut self, v: usize) -> &'static str {
+        if self.is_real(v) {
+            "a real literal"
+        } else {
+            "an integer literal"
+        }
+    }
+}

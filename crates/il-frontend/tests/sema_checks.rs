@@ -1,0 +1,374 @@
+//! One snapshot per semantic check: the source and the diagnostics it gets, rendered for humans.
+
+mod sema_support;
+use sema_support::{check, codes};
+
+#[test]
+fn clean_program_has_no_diagnostics() {
+    let src = "PROGRAM Main
+VAR
+  a, b : BOOL;
+  n : INT;
+  t : TON;
+END_VAR
+  LD a
+  ANDN b
+  ST t.IN
+  LD T#5s
+  PT t
+  LD t.Q
+  ST b
+  LD n
+  ADD 1
+  ST n
+END_PROGRAM
+";
+    assert_eq!(codes(src), Vec::<String>::new(), "{}", check(src));
+}
+
+#[test]
+fn undeclared_name_is_reported_once_and_silences_follow_on_errors() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  n : INT;
+  b : BOOL;
+END_VAR
+  LD speed
+  ADD 1
+  ST b
+  LD n
+  ST spede
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn duplicate_declarations() {
+    insta::assert_snapshot!(check(
+        "FUNCTION_BLOCK Motor
+VAR_INPUT
+  speed : INT;
+END_VAR
+VAR
+  SPEED : REAL;
+END_VAR
+  LD speed
+  ST speed
+END_FUNCTION_BLOCK
+"
+    ));
+}
+
+#[test]
+fn operator_not_defined_for_type() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  b : BOOL;
+  r : REAL;
+  i : INT;
+END_VAR
+  LD b
+  ADD 1
+  ST i
+  LD r
+  AND r
+  ST r
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn operand_type_differs_from_current_result() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  i : INT;
+  w : WORD;
+  r : REAL;
+  d : DINT;
+END_VAR
+  LD i
+  ADD w
+  ST i
+  LD d
+  MUL r
+  ST r
+  LD i
+  ADD d
+  ST d
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn store_of_wrong_type() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  i : INT;
+  b : BOOL;
+  d : DINT;
+END_VAR
+  LD i
+  ST b
+  LD d
+  ST i
+  LD i
+  ST d
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn type_clash_where_jumps_meet_names_both_jumps() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  go : BOOL;
+  n : INT;
+  out : BOOL;
+END_VAR
+  LD go
+  JMPC done
+  LD n
+done:
+  ST out
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn undefined_and_duplicate_labels() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  go : BOOL;
+END_VAR
+  LD go
+  JMPC nowhere
+again: LD go
+again: ST go
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn call_arguments_are_checked() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  t : TON;
+  go : BOOL;
+  n : INT;
+  done : BOOL;
+END_VAR
+  CAL t(IN := go, TIME := T#5s)
+  CAL t(IN := go, PT := n)
+  CAL t(IN := go, Q := done)
+  CAL t(PT => n)
+  CAL t(IN := go, PT := T#1s, Q => done)
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn writes_to_constants_and_inputs() {
+    insta::assert_snapshot!(check(
+        "FUNCTION_BLOCK Fb
+VAR_INPUT
+  start : BOOL;
+END_VAR
+VAR CONSTANT
+  max : INT := 10;
+END_VAR
+VAR
+  t : TON;
+END_VAR
+  LD 5
+  ST max
+  LD FALSE
+  ST start
+  S start
+  LD t.Q
+  ST t.Q
+END_FUNCTION_BLOCK
+"
+    ));
+}
+
+#[test]
+fn result_computed_and_never_used_is_a_warning() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  a, b, c : INT;
+END_VAR
+  LD a
+  ADD 1
+  LD b
+  ST c
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn s_and_r_without_operand() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  go : BOOL;
+END_VAR
+  LD go
+  S
+  R go
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn typed_literal_out_of_range_and_untyped_literal_adapting() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  i : INT;
+  b : BOOL;
+END_VAR
+  LD INT#40000
+  ST i
+  LD 40000
+  ST i
+  LD 2
+  ST b
+  LD 1
+  ST b
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn conditions_must_be_bool() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  n : INT;
+END_VAR
+  LD n
+  JMPC done
+  RETC
+done:
+  LD n
+  ST n
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn unreachable_code_and_missing_current_result() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  x : INT;
+END_VAR
+  ST x
+  JMP done
+  LD x
+  ST x
+done:
+  LD x
+  ST x
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn unknown_function_and_wrong_arity() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  x, y : INT;
+  g : BOOL;
+END_VAR
+  LD x
+  CLAMP 0, 10
+  ST x
+  LD g
+  SEL x
+  ST x
+  LD g
+  SEL x, y
+  ST x
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn fb_input_operators_and_s_r_on_instances() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  ff : SR;
+  c : CTU;
+  n : INT;
+  go : BOOL;
+END_VAR
+  LD go
+  S1 ff
+  R ff
+  S ff
+  PT c
+  LD n
+  PV c
+  CU c
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn external_variables_are_bound_to_globals() {
+    insta::assert_snapshot!(check(
+        "VAR_GLOBAL
+  speed : REAL;
+END_VAR
+PROGRAM Main
+VAR_EXTERNAL
+  speed : INT;
+  missing : BOOL;
+END_VAR
+  LD speed
+  ST speed
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn unknown_type_gives_one_error() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  t : TIMER;
+  b : BOOL;
+END_VAR
+  LD t.Q
+  ST b
+  CAL t(IN := b)
+END_PROGRAM
+"
+    ));
+}

@@ -1,0 +1,589 @@
+//! The resolved model: per-instruction current-result types, callees and argument bindings, POU
+//! variables, configurations.
+
+mod sema_support;
+use il_frontend::ast::{self, PouKind, VarKind};
+use il_frontend::sema::*;
+use sema_support::analyze_src;
+
+/// The info of the instruction that starts at the `n`-th occurrence (0-based) of `text` in `src`.
+fn info_at<'m>(model: &'m Model, src: &str, text: &str, n: usize) -> &'m InstrInfo {
+    let start = src
+        .match_indices(text)
+        .nth(n)
+        .unwrap_or_else(|| panic!("`{text}` #{n} not in source"))
+        .0 as u32;
+    model
+        .instrs
+        .iter()
+        .find(|(s, _)| s.start == start)
+        .map(|(_, i)| i)
+        .unwrap_or_else(|| panic!("no instruction at `{text}`"))
+}
+
+fn ok(src: &str) -> Model {
+    let (m, d) = analyze_src(src);
+    assert!(d.is_empty(), "unexpected diagnostics:\n{d}");
+    m
+}
+
+const INT: Type = Type::INT;
+
+#[test]
+fn integer_literal_takes_the_type_of_the_other_operand() {
+    let src = "PROGRAM P
+VAR
+  x : INT;
+END_VAR
+  LD 5
+  ADD x
+  ST x
+END_PROGRAM
+";
+    let m = ok(src);
+    let ld = info_at(&m, src, "LD 5", 0);
+    assert_eq!(ld.cr_before, None);
+    assert_eq!(ld.cr_after, Some(INT));
+    assert_eq!(ld.operand, Some(INT));
+    let add = info_at(&m, src, "ADD x", 0);
+    assert_eq!(add.cr_before, Some(INT));
+    assert_eq!(add.cr_after, Some(INT));
+    assert_eq!(
+        add.callee,
+        Some(Callee::Std {
+            name: "ADD",
+            ty: INT,
+            result: INT
+        })
+    );
+}
+
+#[test]
+fn widening_gives_the_wider_type_and_comparisons_give_bool() {
+    let src = "PROGRAM P
+VAR
+  i : INT;
+  d : DINT;
+  b : BOOL;
+END_VAR
+  LD i
+  ADD d
+  GT 100
+  ST b
+END_PROGRAM
+";
+    let m = ok(src);
+    let add = info_at(&m, src, "ADD d", 0);
+    assert_eq!(add.cr_after, Some(Type::DINT));
+    let gt = info_at(&m, src, "GT 100", 0);
+    assert_eq!(gt.operand, Some(Type::DINT));
+    assert_eq!(gt.cr_after, Some(Type::BOOL));
+    assert_eq!(
+        gt.callee,
+        Some(Callee::Std {
+            name: "GT",
+            ty: Type::DINT,
+            result: Type::BOOL
+        })
+    );
+}
+
+#[test]
+fn unconstrained_literals_default_to_dint_and_lreal() {
+    let src = "PROGRAM P
+VAR
+  b : BOOL;
+END_VAR
+  LD 5
+  EQ 3
+  ST b
+  LD 2.5
+  GT 1.0
+  ST b
+END_PROGRAM
+";
+    let m = ok(src);
+    assert_eq!(info_at(&m, src, "LD 5", 0).cr_after, Some(Type::DINT));
+    assert_eq!(info_at(&m, src, "LD 2.5", 0).cr_after, Some(Type::LREAL));
+}
+
+#[test]
+fn literal_on_one_path_takes_the_type_brought_by_a_jump() {
+    // The end of STACK_INT (IEC 61131-3 Annex F): `ZRO_OUT: LD 0` falls through into a label that a jump
+    // reaches with an INT.
+    let src = "FUNCTION_BLOCK F
+VAR_INPUT
+  go : BOOL;
+END_VAR
+VAR_OUTPUT
+  OUT : INT;
+END_VAR
+VAR
+  v : INT;
+END_VAR
+  LD go
+  JMPC ZRO_OUT
+  LD v
+  JMP SET_OUT
+ZRO_OUT: LD 0
+SET_OUT: ST OUT
+END_FUNCTION_BLOCK
+";
+    let m = ok(src);
+    assert_eq!(info_at(&m, src, "LD 0", 0).cr_after, Some(INT));
+    assert_eq!(info_at(&m, src, "ST OUT", 0).cr_before, Some(INT));
+    // After an unconditional jump the current result is undefined.
+    assert_eq!(info_at(&m, src, "JMP SET_OUT", 0).cr_after, None);
+}
+
+#[test]
+fn backward_jump_brings_its_type_to_the_label() {
+    let src = "PROGRAM P
+VAR
+  n : INT;
+  b : BOOL;
+END_VAR
+  JMP first
+again:
+  ST b
+  LD n
+  ST n
+first:
+  LD n
+  GT 10
+  JMPC again
+END_PROGRAM
+";
+    let m = ok(src);
+    assert_eq!(info_at(&m, src, "ST b", 0).cr_before, Some(Type::BOOL));
+}
+
+#[test]
+fn function_call_binds_the_current_result_to_the_first_input() {
+    let src = "PROGRAM P
+VAR
+  g : BOOL;
+  a, b : INT;
+END_VAR
+  LD g
+  SEL a, b
+  ST a
+  LD a
+  LIMIT 0, 10
+  ST a
+  LIMIT(MN := 0, IN := b, MX := 5)
+  ST b
+END_PROGRAM
+";
+    let m = ok(src);
+    let sel = info_at(&m, src, "SEL a, b", 0);
+    assert_eq!(sel.cr_after, Some(INT));
+    let params: Vec<(&str, &Type, &ArgSource)> = sel
+        .args
+        .iter()
+        .map(|a| (a.param.as_str(), &a.ty, &a.source))
+        .collect();
+    assert_eq!(
+        params,
+        vec![
+            ("G", &Type::BOOL, &ArgSource::CurrentResult),
+            ("IN0", &INT, &ArgSource::Written(0)),
+            ("IN1", &INT, &ArgSource::Written(1)),
+        ]
+    );
+    let lim = info_at(&m, src, "LIMIT 0, 10", 0);
+    assert_eq!(lim.args.len(), 3);
+    assert!(lim.args.iter().all(|a| a.ty == INT));
+    let formal = info_at(&m, src, "LIMIT(MN", 0);
+    assert_eq!(formal.cr_after, Some(INT));
+    assert_eq!(
+        formal
+            .args
+            .iter()
+            .map(|a| a.param.as_str())
+            .collect::<Vec<_>>(),
+        vec!["MN", "IN", "MX"]
+    );
+    assert!(formal
+        .args
+        .iter()
+        .all(|a| matches!(a.source, ArgSource::Written(_))));
+}
+
+#[test]
+fn conversions_bcd_and_time_arithmetic() {
+    let src = "FUNCTION WEIGH : WORD
+VAR_INPUT
+  gross : WORD;
+  tare : INT;
+  t : TIME;
+END_VAR
+  LD gross
+  BCD_TO_INT
+  SUB tare
+  INT_TO_BCD
+  ST WEIGH
+  LD t
+  ADD T#1s
+  MUL 2
+  TIME_TO_DINT
+  INT_TO_REAL
+END_FUNCTION
+";
+    let (m, d) = analyze_src(src);
+    // INT_TO_REAL of a DINT is the only error.
+    assert_eq!(d.matches("error[").count(), 1, "{d}");
+    assert!(d.contains("INT_TO_REAL converts from INT, not DINT"), "{d}");
+    assert_eq!(
+        info_at(&m, src, "BCD_TO_INT", 0).callee,
+        Some(Callee::Conversion {
+            name: "BCD_TO_INT".into(),
+            kind: ConversionKind::FromBcd,
+            from: Type::Elementary(Elementary::Word),
+            to: INT
+        })
+    );
+    let to_bcd = info_at(&m, src, "INT_TO_BCD", 0);
+    assert_eq!(to_bcd.cr_after, Some(Type::Elementary(Elementary::Word)));
+    let add = info_at(&m, src, "ADD T#1s", 0);
+    assert_eq!(
+        add.callee,
+        Some(Callee::Std {
+            name: "ADD_TIME",
+            ty: Type::TIME,
+            result: Type::TIME
+        })
+    );
+    assert_eq!(info_at(&m, src, "MUL 2", 0).cr_after, Some(Type::TIME));
+    assert_eq!(
+        info_at(&m, src, "TIME_TO_DINT", 0).cr_after,
+        Some(Type::DINT)
+    );
+}
+
+#[test]
+fn fb_calls_input_operators_and_s_r_on_instances() {
+    let src = "PROGRAM P
+VAR
+  t : TON;
+  ff : SR;
+  go, q : BOOL;
+END_VAR
+  CAL t(IN := go, PT := T#2s, Q => q)
+  LD go
+  S1 ff
+  R ff
+  IN t
+  FUNC Helper()
+  ST q
+END_PROGRAM
+";
+    let m = ok(src);
+    let cal = info_at(&m, src, "CAL t", 0);
+    assert_eq!(
+        cal.callee,
+        Some(Callee::FbInstance {
+            fb: FbType::Standard(StdFb::Ton),
+            input: None
+        })
+    );
+    let args: Vec<(&str, bool)> = cal
+        .args
+        .iter()
+        .map(|a| (a.param.as_str(), a.output))
+        .collect();
+    assert_eq!(args, vec![("IN", false), ("PT", false), ("Q", true)]);
+    assert_eq!(
+        info_at(&m, src, "R ff", 0).callee,
+        Some(Callee::FbInstance {
+            fb: FbType::Standard(StdFb::Sr),
+            input: Some("R".into())
+        })
+    );
+    assert_eq!(
+        info_at(&m, src, "S1 ff", 0).callee,
+        Some(Callee::FbInstance {
+            fb: FbType::Standard(StdFb::Sr),
+            input: Some("S1".into())
+        })
+    );
+    let func = info_at(&m, src, "FUNC Helper", 0);
+    assert_eq!(
+        func.callee,
+        Some(Callee::Embedded {
+            name: "Helper".into()
+        })
+    );
+    assert_eq!(func.cr_after, Some(Type::BOOL));
+}
+
+#[test]
+fn user_function_and_user_fb_are_resolved() {
+    let src = "FUNCTION Twice : INT
+VAR_INPUT
+  v : INT;
+END_VAR
+  LD v
+  MUL 2
+  ST Twice
+END_FUNCTION
+FUNCTION_BLOCK Cnt
+VAR_INPUT
+  up : BOOL;
+END_VAR
+VAR_OUTPUT
+  n : INT;
+END_VAR
+VAR
+  internal : INT;
+END_VAR
+  LD n
+  Twice
+  ST n
+END_FUNCTION_BLOCK
+PROGRAM P
+VAR
+  c : Cnt;
+  k : INT;
+END_VAR
+  CAL c(up := TRUE, n => k)
+  LD c.n
+  ST k
+END_PROGRAM
+";
+    let m = ok(src);
+    assert_eq!(m.pous.len(), 3);
+    assert_eq!(m.pou(PouId(0)).kind, PouKind::Function);
+    assert_eq!(m.pou(PouId(0)).return_type, Some(INT));
+    let tw = info_at(&m, src, "Twice\n", 1);
+    assert_eq!(tw.callee, Some(Callee::UserFunction(PouId(0))));
+    assert_eq!(tw.cr_after, Some(INT));
+    let prog = m.pou(PouId(2));
+    assert_eq!(prog.var("c").unwrap().ty, Type::Fb(FbType::User(PouId(1))));
+    let cal = info_at(&m, src, "CAL c", 0);
+    assert_eq!(
+        cal.callee,
+        Some(Callee::FbInstance {
+            fb: FbType::User(PouId(1)),
+            input: None
+        })
+    );
+}
+
+#[test]
+fn variables_keep_kind_type_init_location_and_flags() {
+    let src = "TYPE
+  Color : (red, green, blue);
+  Percent : INT (0..100);
+END_TYPE
+PROGRAM P
+VAR_INPUT
+  start : BOOL;
+END_VAR
+VAR CONSTANT
+  limit : INT := 42;
+END_VAR
+VAR RETAIN
+  count : DINT := -7;
+  lamp AT %QX0.1 : BOOL;
+  buf : ARRAY [0..3] OF INT := [1, 2, 3];
+  name : STRING[10] := 'abc';
+  col : Color := green;
+  pct : Percent;
+  t : TON := (PT := T#1s);
+END_VAR
+  LD start
+  ST lamp
+END_PROGRAM
+";
+    let m = ok(src);
+    let p = m.pou(PouId(0));
+    let names: Vec<(&str, VarKind)> = p.vars.iter().map(|v| (v.name.as_str(), v.kind)).collect();
+    assert_eq!(names[0], ("start", VarKind::Input));
+    let limit = p.var("LIMIT").unwrap();
+    assert!(limit.constant);
+    assert_eq!(limit.init, Some(ConstValue::Int(42)));
+    let count = p.var("count").unwrap();
+    assert!(count.retain);
+    assert_eq!(count.init, Some(ConstValue::Int(-7)));
+    let lamp = p.var("lamp").unwrap();
+    assert_eq!(
+        lamp.location,
+        Some(Location {
+            area: ast::Area::Output,
+            size: ast::AddressSize::Bit,
+            path: vec![0, 1]
+        })
+    );
+    assert_eq!(
+        p.var("buf").unwrap().ty,
+        Type::Array {
+            dims: vec![Dim { lower: 0, upper: 3 }],
+            element: Box::new(INT)
+        }
+    );
+    assert_eq!(
+        p.var("buf").unwrap().init,
+        Some(ConstValue::Array(vec![
+            ConstValue::Int(1),
+            ConstValue::Int(2),
+            ConstValue::Int(3)
+        ]))
+    );
+    assert_eq!(
+        p.var("name").unwrap().ty,
+        Type::String {
+            wide: false,
+            len: 10
+        }
+    );
+    let color = m.type_by_name("color").unwrap();
+    assert_eq!(
+        p.var("col").unwrap().init,
+        Some(ConstValue::Enum {
+            ty: color,
+            index: 1
+        })
+    );
+    assert_eq!(
+        p.var("pct").unwrap().ty,
+        Type::Subrange {
+            base: Elementary::Int,
+            lower: 0,
+            upper: 100
+        }
+    );
+    assert_eq!(
+        p.var("t").unwrap().init,
+        Some(ConstValue::Struct(vec![(
+            "PT".into(),
+            ConstValue::Duration(1_000_000_000)
+        )]))
+    );
+}
+
+#[test]
+fn configuration_tasks_and_program_instances() {
+    use il_frontend::Span;
+    let s = Span::default;
+    let id = |n: &str| ast::Ident::new(n, s());
+    let prog = ast::Pou {
+        kind: PouKind::Program,
+        name: id("Main"),
+        return_type: None,
+        var_blocks: vec![ast::VarBlock {
+            kind: VarKind::External,
+            constant: false,
+            retain: false,
+            vars: vec![ast::VarDecl {
+                name: id("speed"),
+                location: None,
+                ty: ast::TypeRef::Named(id("REAL")),
+                init: None,
+                span: s(),
+            }],
+            span: s(),
+        }],
+        body: vec![],
+        span: s(),
+    };
+    let config = ast::Configuration {
+        name: id("Cell"),
+        globals: vec![ast::VarBlock {
+            kind: VarKind::Global,
+            constant: false,
+            retain: false,
+            vars: vec![ast::VarDecl {
+                name: id("speed"),
+                location: None,
+                ty: ast::TypeRef::Named(id("REAL")),
+                init: None,
+                span: s(),
+            }],
+            span: s(),
+        }],
+        resources: vec![ast::Resource {
+            name: id("Cpu"),
+            on: None,
+            globals: vec![],
+            tasks: vec![ast::Task {
+                name: id("Fast"),
+                interval: Some(ast::Operand::Literal(ast::Literal {
+                    kind: ast::LiteralKind::Duration(10_000_000),
+                    type_prefix: None,
+                    span: s(),
+                })),
+                single: None,
+                priority: Some(1),
+                span: s(),
+            }],
+            programs: vec![ast::ProgramInstance {
+                name: id("main1"),
+                retain: false,
+                task: Some(id("fast")),
+                type_name: id("MAIN"),
+                args: vec![],
+                span: s(),
+            }],
+            span: s(),
+        }],
+        span: s(),
+    };
+    let units = [ast::CompilationUnit {
+        items: vec![
+            ast::LibraryElement::Pou(prog),
+            ast::LibraryElement::Configuration(config),
+        ],
+    }];
+    let mut diags = diagnostics::Diagnostics::new();
+    let m = analyze(&units, &mut diags);
+    assert!(diags.is_empty(), "{:?}", diags);
+    let r = &m.configurations[0].resources[0];
+    assert_eq!(r.tasks[0].interval_ns, Some(10_000_000));
+    assert_eq!(r.tasks[0].priority, 1);
+    assert_eq!(r.programs[0].pou, PouId(0));
+    assert_eq!(r.programs[0].task, Some(0));
+    assert_eq!(
+        m.pou(PouId(0)).externals,
+        vec![(
+            0,
+            GlobalRef::Configuration {
+                config: 0,
+                index: 0
+            }
+        )]
+    );
+}
+
+#[test]
+fn several_units_share_one_namespace() {
+    let a = "FUNCTION_BLOCK Helper
+VAR_OUTPUT
+  q : BOOL;
+END_VAR
+  LD TRUE
+  ST q
+END_FUNCTION_BLOCK
+";
+    let b = "PROGRAM P
+VAR
+  h : Helper;
+  x : BOOL;
+END_VAR
+  CAL h
+  LD h.q
+  ST x
+END_PROGRAM
+";
+    let mut map = diagnostics::SourceMap::new();
+    let fa = map.add("a.il", a);
+    let fb = map.add("b.il", b);
+    let units = [sema_support::read(fa, a), sema_support::read(fb, b)];
+    let mut diags = diagnostics::Diagnostics::new();
+    let m = analyze(&units, &mut diags);
+    assert!(diags.is_empty(), "{:?}", diags);
+    assert_eq!(
+        m.pou(PouId(1)).var("h").unwrap().ty,
+        Type::Fb(FbType::User(PouId(0)))
+    );
+}
