@@ -13,3 +13,12 @@ pub mod program;
 
 pub use compiler::{compile, compile_str, Compiled, DebugInfo, EventLines};
 pub use program::*;
+pub mod debugger;
+pub mod drive;
+pub mod image;
+pub mod interpreter;
+
+pub use debugger::{Breakpoint, BreakpointError, Breakpoints, Location, Phase};
+pub use drive::{Drive, MotionState, SimDrive};
+pub use image::{decode, encode, ImageError};
+pub use interpreter::{CycleResult, Interpreter, Snapshot};

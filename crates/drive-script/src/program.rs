@@ -460,3 +460,135 @@ impl fmt::Display for Program {
         Ok(())
     }
 }
+
+impl Program {
+    /// Checks every invariant the interpreter relies on (see the module header). The compiler's output
+    /// always passes; the image decoder and [`crate::Interpreter::new`] call this on foreign data.
+    pub fn validate(&self) -> Result<(), String> {
+        use crate::limits::*;
+        if self.motions.is_empty() {
+            return Err("the Motion pool is empty".into());
+        }
+        if self.motions.len() > MAX_MOTIONS {
+            return Err(format!(
+                "{} Motions exceed the pool capacity {MAX_MOTIONS}",
+                self.motions.len()
+            ));
+        }
+        if self.events.len() > MAX_EVENTS {
+            return Err(format!(
+                "{} Events exceed the pool capacity {MAX_EVENTS}",
+                self.events.len()
+            ));
+        }
+        let s = &self.settings;
+        if s.events_per_cycle == 0 || s.events_per_cycle > MAX_EVENTS_PER_CYCLE {
+            return Err(format!(
+                "EventsPerCycle {} is outside 1..={MAX_EVENTS_PER_CYCLE}",
+                s.events_per_cycle
+            ));
+        }
+        let mut next = 0usize;
+        for (m, motion) in self.motions.iter().enumerate() {
+            if motion.first_event as usize != next {
+                return Err(format!(
+                    "Motion {m} starts at Event pool entry {} instead of {next}",
+                    motion.first_event
+                ));
+            }
+            if motion.event_count == 0 {
+                return Err(format!("Motion {m} has no Event"));
+            }
+            next += motion.event_count as usize;
+        }
+        if next != self.events.len() {
+            return Err(format!(
+                "the Motions cover {next} Events but the Event pool holds {}",
+                self.events.len()
+            ));
+        }
+        let operand_ok = |o: &Operand| -> bool {
+            let i = o.arg;
+            let lim = |n: usize| i >= 0 && (i as usize) < n;
+            match o.source {
+                Source::Const => true,
+                Source::Param => lim(PARAMS),
+                Source::Mem => lim(MEMORY_WORDS),
+                Source::DigitalIn => lim(DIGITAL_INPUTS),
+                Source::DigitalOut => lim(DIGITAL_OUTPUTS),
+                Source::TimerDone => lim(TIMERS),
+                _ => i == 0,
+            }
+        };
+        let value_ok = |v: &Value| {
+            operand_ok(&v.a)
+                && operand_ok(&v.b)
+                && (v.op != ArithOp::None || v.b == Operand::default())
+        };
+        for (m, motion) in self.motions.iter().enumerate() {
+            for e in 0..motion.event_count as usize {
+                let ev = &self.events[motion.first_event as usize + e];
+                let at = format!("Motion {m} Event {e}");
+                if ev.cond_count == 0 || ev.cond_count as usize > MAX_CONDITIONS {
+                    return Err(format!(
+                        "{at}: {} conditions (1..={MAX_CONDITIONS} allowed)",
+                        ev.cond_count
+                    ));
+                }
+                if ev.act_count == 0 || ev.act_count as usize > MAX_ACTIONS {
+                    return Err(format!(
+                        "{at}: {} actions (1..={MAX_ACTIONS} allowed)",
+                        ev.act_count
+                    ));
+                }
+                if ev.conditions[ev.cond_count as usize..]
+                    .iter()
+                    .any(|c| *c != Condition::default())
+                    || ev.actions[ev.act_count as usize..]
+                        .iter()
+                        .any(|a| *a != Action::default())
+                {
+                    return Err(format!(
+                        "{at}: unused condition or action slots are not empty"
+                    ));
+                }
+                for c in ev.conditions() {
+                    if !value_ok(&c.lhs) || !value_ok(&c.rhs) {
+                        return Err(format!("{at}: condition `{c}` reads out of range"));
+                    }
+                }
+                for a in ev.actions() {
+                    if !value_ok(&a.value) {
+                        return Err(format!("{at}: action `{a}` reads out of range"));
+                    }
+                    let i = a.index as usize;
+                    let ok = match a.kind {
+                        ActionKind::WriteMem => i < MEMORY_WORDS,
+                        ActionKind::WriteOutput => i < DIGITAL_OUTPUTS,
+                        ActionKind::TimerSet => i < TIMERS,
+                        ActionKind::NextMotion => {
+                            i < self.motions.len() && a.value == Value::default()
+                        }
+                        ActionKind::Jump => {
+                            i < motion.event_count as usize && a.value == Value::default()
+                        }
+                        ActionKind::Loop => {
+                            i < MEMORY_WORDS
+                                && a.value.op == ArithOp::None
+                                && a.value.a.source == Source::Const
+                                && (0..motion.event_count as i32).contains(&a.value.a.arg)
+                        }
+                        ActionKind::Stop => i == 0 && a.value == Value::default(),
+                        _ => i == 0,
+                    };
+                    if !ok {
+                        return Err(format!(
+                            "{at}: action `{a}` has an index or target out of range"
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
