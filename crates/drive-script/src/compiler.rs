@@ -49,6 +49,7 @@ pub fn compile(map: &SourceMap, file: FileId) -> Result<Compiled, Diagnostics> {
         motion_targets: Vec::new(),
         event_targets: Vec::new(),
         text_len: text.len(),
+        skipping: Skip::No,
     };
     let toks = lex(text);
     for stmt in split_statements(&toks, file, &mut c.diags) {
@@ -196,6 +197,16 @@ struct Compiler {
     /// (Motion, target Event, span) of every Jump and Loop.
     event_targets: Vec<(usize, usize, Span)>,
     text_len: usize,
+    /// After a rejected MOTION (or EVENT) header, its statements are skipped up to the next header, so one
+    /// mistake gives one diagnostic rather than a cascade.
+    skipping: Skip,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Skip {
+    No,
+    Motion,
+    Event,
 }
 
 type PResult<T> = Result<T, Box<Diagnostic>>;
@@ -462,7 +473,31 @@ impl Compiler {
             file: self.file,
             whole: stmt.whole,
         };
+        let header = match cur.peek() {
+            Some(Token {
+                tok: Tok::Ident(w), ..
+            }) => {
+                if w.eq_ignore_ascii_case("motion") {
+                    Some(Skip::Motion)
+                } else if w.eq_ignore_ascii_case("event") {
+                    Some(Skip::Event)
+                } else {
+                    None
+                }
+            }
+            _ => None,
+        };
+        match (self.skipping, header) {
+            (Skip::Motion, Some(Skip::Motion)) | (Skip::Event, Some(_)) => self.skipping = Skip::No,
+            (Skip::No, _) => {}
+            _ => return,
+        }
         if let Err(d) = self.statement_inner(&mut cur, stmt.whole) {
+            if let Some(h) = header {
+                self.skipping = h;
+                // The Event before a rejected header is still checked for completeness.
+                self.close_event();
+            }
             self.err(*d);
         }
     }

@@ -28,7 +28,11 @@ fn paper_statement_sets_do0_and_moves_plus_10000_pulses() {
     let mut i = Interpreter::new(p).unwrap();
     let mut d = SimDrive::new(1);
     assert_eq!(i.cycle(&mut d), CycleResult::EndOfPass);
-    assert_eq!(d.digital_outputs() & 1, 1, "DO_0 is HIGH right after the Event");
+    assert_eq!(
+        d.digital_outputs() & 1,
+        1,
+        "DO_0 is HIGH right after the Event"
+    );
     assert_eq!(d.motion_state(), MotionState::Moving);
     run(&mut i, &mut d, 1000);
     assert_eq!(d.actual_position(), 10000);
@@ -58,7 +62,9 @@ fn conditions_read_the_snapshot_taken_at_the_start_of_the_pass() {
 fn a_slice_evaluates_at_most_events_per_cycle_events() {
     let mut text = String::from("S:: INIT; S:: EventsPerCycle = 3; S:: MOTION 0;\n");
     for e in 0..7 {
-        text.push_str(&format!("S:: EVENT {e}; S:: IF TRUE; S:: THEN MD{e} = MD{e} + 1;\n"));
+        text.push_str(&format!(
+            "S:: EVENT {e}; S:: IF TRUE; S:: THEN MD{e} = MD{e} + 1;\n"
+        ));
     }
     let mut i = Interpreter::new(program(&text)).unwrap();
     let mut d = SimDrive::new(1);
@@ -185,15 +191,20 @@ fn jog_homing_set_position_absolute_move_and_settings_reach_the_drive() {
 
 #[test]
 fn three_motion_script_indexes_three_times_and_returns_home() {
-    let text =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/scripts/three_motions.ds"))
-            .unwrap();
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/scripts/three_motions.ds"
+    ))
+    .unwrap();
     let mut i = Interpreter::new(program(&text)).unwrap();
     let mut d = SimDrive::new(1);
     let mut max_pos = 0;
     let mut motions_seen = Vec::new();
     for _ in 0..5000 {
-        if i.cycle(&mut d) == CycleResult::EndOfPass && i.location().motion == 0 && i.memory(0) == Some(2) {
+        if i.cycle(&mut d) == CycleResult::EndOfPass
+            && i.location().motion == 0
+            && i.memory(0) == Some(2)
+        {
             d.set_input(0, true);
         }
         if motions_seen.last() != Some(&i.location().motion) {
@@ -206,14 +217,20 @@ fn three_motion_script_indexes_three_times_and_returns_home() {
     assert_eq!(max_pos, 30000, "three index moves of P0 = 10000");
     assert_eq!(i.memory(0), Some(30));
     assert_eq!(d.actual_position(), 0);
-    assert_eq!(d.digital_outputs(), 0b110, "DO_0 low after the last index; DO_1 and DO_2 high");
+    assert_eq!(
+        d.digital_outputs(),
+        0b110,
+        "DO_0 low after the last index; DO_1 and DO_2 high"
+    );
 }
 
 #[test]
 fn interpreter_rejects_a_program_that_breaks_the_pool_invariants() {
     let mut p = program("S:: MOTION 0; S:: EVENT 0; S:: IF TRUE; S:: THEN MD0 = 1;");
     p.events[0].actions[0].index = 50;
-    assert!(Interpreter::new(p.clone()).unwrap_err().contains("out of range"));
+    assert!(Interpreter::new(p.clone())
+        .unwrap_err()
+        .contains("out of range"));
     p.events[0].actions[0].index = 0;
     p.motions[0].event_count = 2;
     assert!(Interpreter::new(p).is_err());
