@@ -6,6 +6,7 @@
 //! Invariants: no function panics on bad input (script or image); the interpreter never blocks: each
 //! [`Interpreter::cycle`] call evaluates at most `EventsPerCycle` Events.
 
+pub mod cli;
 pub mod compiler;
 pub mod lexer;
 pub mod limits;
