@@ -245,6 +245,8 @@ pub struct DebugSession {
     pub drive: SimDrive,
     pub cycles: u64,
     source: Option<(SourceMap, DebugInfo)>,
+    /// Names printed after every stop (`watch NAME`).
+    watches: Vec<String>,
 }
 
 impl DebugSession {
@@ -257,6 +259,7 @@ impl DebugSession {
             drive: SimDrive::new(1),
             cycles: 0,
             source,
+            watches: Vec::new(),
         })
     }
 
@@ -347,6 +350,27 @@ impl DebugSession {
                 }
             }
             "print" | "p" => self.cmd_print(&words[1..]),
+            "watch" | "w" => match words.get(1) {
+                None => Ok(self.watch_lines()),
+                Some(name) => self.cmd_print(&words[1..2]).map(|now| {
+                    if !self.watches.iter().any(|w| w.eq_ignore_ascii_case(name)) {
+                        self.watches.push(name.to_string());
+                    }
+                    format!("watching {name}: {now}")
+                }),
+            },
+            "unwatch" => match words.get(1) {
+                Some(name) => {
+                    let before = self.watches.len();
+                    self.watches.retain(|w| !w.eq_ignore_ascii_case(name));
+                    if self.watches.len() < before {
+                        Ok(format!("no longer watching {name}"))
+                    } else {
+                        Err(format!("`{name}` is not watched"))
+                    }
+                }
+                None => Err("usage: unwatch NAME".into()),
+            },
             "set" => self.cmd_set(&words[1..]),
             other => Err(format!("unknown command `{other}` (type `help`)")),
         };
@@ -357,7 +381,24 @@ impl DebugSession {
         true
     }
 
+    fn watch_lines(&self) -> String {
+        self.watches
+            .iter()
+            .map(|w| format!("  {}", self.cmd_print(&[w.as_str()]).unwrap_or_else(|e| e)))
+            .collect::<Vec<_>>()
+            .join("\n")
+    }
+
     fn after_run(&mut self, max: u64) -> String {
+        let mut s = self.after_run_inner(max);
+        if !self.watches.is_empty() {
+            s.push('\n');
+            s.push_str(&self.watch_lines());
+        }
+        s
+    }
+
+    fn after_run_inner(&mut self, max: u64) -> String {
         let before = self.cycles;
         match self.run_cycles(max) {
             Some(at) => format!(
@@ -544,6 +585,8 @@ commands (names are case-insensitive):
   print NAME            MDn, Pn, DI_n, DO_n, ActualPosition, ActualVelocity, ActualCurrent, MathError,
                         where, md (all MD words), params (all parameters)
   set NAME = VALUE      write MDn, Pn, DI_n (simulated input) or DO_n; VALUE: integer, 0x hex, HIGH, LOW
+  watch NAME            print NAME after every run, step and pause (`watch` alone: print them now)
+  unwatch NAME          stop watching NAME
   help                  this text
   quit                  leave the debugger";
 

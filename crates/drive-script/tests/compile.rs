@@ -99,3 +99,43 @@ fn disassembly_compiles_back_to_the_same_program() {
     let text = p.to_string();
     assert_eq!(ok(&text), p);
 }
+
+#[test]
+fn compiler_never_panics_on_mutated_scripts() {
+    let base = script("three_motions.ds");
+    let chars: Vec<char> = base.chars().collect();
+    let mut rejected = 0;
+    for i in (0..chars.len()).step_by(3) {
+        for m in 0..4 {
+            let mut c = chars.clone();
+            match m {
+                0 => {
+                    c.remove(i);
+                }
+                1 => c.insert(i, ';'),
+                2 => c[i] = '9',
+                _ => c.insert(i, 'S'),
+            }
+            let text: String = c.into_iter().collect();
+            let (_, r) = compile_str("m.ds", &text);
+            if let Err(d) = r {
+                rejected += 1;
+                assert!(
+                    d.iter().all(|d| d.span.is_some()),
+                    "every compile error has a position"
+                );
+            }
+        }
+    }
+    assert!(rejected > 100, "mutations are mostly rejected: {rejected}");
+}
+
+#[test]
+fn every_e6_code_used_by_the_crate_has_an_explanation() {
+    for n in (6001..=6015).chain(6020..=6023) {
+        let code = format!("E{n}");
+        let info =
+            diagnostics::lookup(&code).unwrap_or_else(|| panic!("{code} has no explanation"));
+        assert!(info.explanation.contains("## How to fix"), "{code}");
+    }
+}

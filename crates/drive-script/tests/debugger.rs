@@ -271,6 +271,8 @@ break 0 1
 break 1 0 then
 break 1 0
 list
+watch MD0
+watch DO_0
 run
 print where
 step
@@ -289,6 +291,8 @@ delete 2
 run 50
 print MD2
 pause
+unwatch DO_0
+watch
 help
 quit
 print MD0
@@ -306,4 +310,30 @@ print MD0
         .unwrap()
         .replace(&dir.path().display().to_string(), "DIR");
     insta::assert_snapshot!(text);
+}
+
+#[test]
+fn inputs_changed_while_stopped_before_a_pass_are_seen_after_resuming() {
+    let p = compile_str(
+        "t.ds",
+        "S:: MOTION 0; S:: EVENT 0; S:: IF DI_4 = HIGH; S:: THEN MD0 = ActualPosition;",
+    )
+    .1
+    .unwrap()
+    .program;
+    let (mut i, mut d) = (Interpreter::new(p).unwrap(), SimDrive::new(1));
+    i.add_breakpoint(at(0, 0, Phase::BeforeIf)).unwrap();
+    assert_eq!(
+        i.cycle(&mut d),
+        CycleResult::Stopped(at(0, 0, Phase::BeforeIf))
+    );
+    d.set_input(4, true);
+    d.set_position(777);
+    i.resume();
+    assert_eq!(i.cycle(&mut d), CycleResult::EndOfPass);
+    assert_eq!(
+        i.memory(0),
+        Some(777),
+        "the pass snapshot is taken when the pass really starts"
+    );
 }
