@@ -317,6 +317,8 @@ struct Cursor<'t> {
     file: FileId,
     /// Span of the statement (for "missing X at end" errors).
     whole: Span,
+    /// Parsing an IF (OR/NOT are E6009 there) rather than a THEN.
+    in_if: bool,
 }
 
 impl<'t> Cursor<'t> {
@@ -472,6 +474,7 @@ impl Compiler {
             pos: 0,
             file: self.file,
             whole: stmt.whole,
+            in_if: false,
         };
         let header = match cur.peek() {
             Some(Token {
@@ -677,6 +680,7 @@ impl Compiler {
                 }
                 let idx = self.program.events.len() - 1;
                 let motion = self.program.motions.len() - 1;
+                cur.in_if = is_if;
                 if is_if {
                     self.debug.events[idx].if_stmt = whole;
                     let conds = self.conditions(cur)?;
@@ -856,6 +860,11 @@ impl Compiler {
             if cur.peek_keyword("and") {
                 cur.next();
                 continue;
+            }
+            for word in ["or", "xor", "not"] {
+                if cur.peek_keyword(word) {
+                    return Err(keyword_operator(cur.here(), word));
+                }
             }
             return Err(cur.syntax(
                 format!("expected AND or `;`, found {}", cur.found()),
@@ -1085,6 +1094,27 @@ fn and_only(span: Span, word: &str) -> Box<Diagnostic> {
     )
 }
 
+/// `OR`/`XOR`/`NOT` used as an operator in a THEN value.
+fn keyword_operator(span: Span, word: &str) -> Box<Diagnostic> {
+    let upper = word.to_ascii_uppercase();
+    let symbol = match upper.as_str() {
+        "OR" => "|",
+        "XOR" => "^",
+        _ => "~",
+    };
+    Box::new(
+        Diagnostic::error(
+            code::E6010,
+            format!("`{upper}` is not an operator in a value: write `{symbol}`"),
+        )
+        .at(span)
+        .with_primary_label(format!("use `{symbol}`"))
+        .with_hint(
+            "in values the bitwise operators are `&`, `|`, `^`, `~`; the keyword AND joins actions",
+        ),
+    )
+}
+
 fn unknown_name(name: &str, span: Span) -> Box<Diagnostic> {
     Box::new(
         Diagnostic::error(code::E6003, format!("unknown instruction or name `{name}`"))
@@ -1238,8 +1268,14 @@ fn operand(cur: &mut Cursor<'_>) -> PResult<Operand> {
                             .with_hint("readable drive values: ActualPosition, ActualVelocity, ActualCurrent, MotionState, MotionDone, Homed, TimerDone_n"),
                     ))
                 }
-                Name::Keyword if name.eq_ignore_ascii_case("or") || name.eq_ignore_ascii_case("not") => {
-                    Err(and_only(span, &name.to_ascii_uppercase()))
+                Name::Keyword
+                    if name.eq_ignore_ascii_case("or") || name.eq_ignore_ascii_case("not") =>
+                {
+                    if cur.in_if {
+                        Err(and_only(span, &name.to_ascii_uppercase()))
+                    } else {
+                        Err(keyword_operator(span, name))
+                    }
                 }
                 Name::Stop | Name::Loop | Name::Keyword | Name::Unknown => Err(unknown_name(name, span)),
             }

@@ -102,7 +102,7 @@ fn e6009_or_and_not_in_a_condition() {
 #[test]
 fn e6010_syntax_errors() {
     insta::assert_snapshot!(diags(&format!(
-        "{HEAD}S:: IF TRUE;\nS:: THEN MD0 = MD1 + MD2 * 2;\nS:: EVENT 1;\nS:: IF MD0 > ;\nS:: THEN MD0 = 1 MD1 = 2;\nS:: EVENT 2;\nS:: IF @;\nS:: ;\n"
+        "{HEAD}S:: IF TRUE;\nS:: THEN MD0 = MD1 + MD2 * 2;\nS:: EVENT 1;\nS:: IF MD0 > ;\nS:: THEN MD0 = 1 MD1 = 2;\nS:: EVENT 2;\nS:: IF @;\nS:: ;\nS:: EVENT 3;\nS:: IF TRUE;\nS:: THEN MD0 = MD1 OR MD2;\nS:: EVENT 4;\nS:: IF TRUE;\nS:: THEN MD0 = NOT MD1;\n"
     )));
 }
 
