@@ -1000,9 +1000,8 @@ impl Compiler {
                 .program
                 .motions
                 .last()
-                .map(|m| m.event_count as usize)
-                .unwrap_or(1)
-                - 1;
+                .map(|m| (m.event_count as usize).saturating_sub(1))
+                .unwrap_or(0);
             self.err(
                 Diagnostic::error(code::E6005, format!("Event {e} of Motion {m} {missing}"))
                     .at(open.span)

@@ -139,3 +139,17 @@ fn every_e6_code_used_by_the_crate_has_an_explanation() {
         assert!(info.explanation.contains("## How to fix"), "{code}");
     }
 }
+
+#[test]
+fn missing_semicolon_at_end_of_file_points_after_the_last_token() {
+    let (map, r) = compile_str(
+        "t.ds",
+        "S:: MOTION 0;\nS:: EVENT 0;\nS:: IF TRUE;\nS:: THEN Stop",
+    );
+    let d = r.unwrap_err().into_sorted();
+    assert_eq!(d.len(), 1);
+    assert_eq!(
+        diagnostics::render_short(&map, &d[0]),
+        "t.ds:4:14: error[E6002]: statement is not terminated by `;` (hint: end every statement with `;`)"
+    );
+}
