@@ -2,6 +2,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use diagnostics::{render, Diagnostic, MessageFormat, SourceMap};
+use std::path::PathBuf;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -36,11 +37,41 @@ impl From<Format> for MessageFormat {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
+    /// Drive scripts (paper C): compile, run on a simulated drive, debug.
+    #[command(subcommand)]
+    Drive(DriveCommand),
     /// Print the explanation of a diagnostic code (e.g. `ladderc explain E1001`), or list every code.
     Explain {
         /// The code; omit it to list all codes with their titles.
         code: Option<String>,
     },
+}
+
+#[derive(Subcommand, Debug)]
+pub enum DriveCommand {
+    /// Compile a drive script into its binary image (Motion and Event pools).
+    Build {
+        script: PathBuf,
+        #[arg(short = 'o', long = "output")]
+        output: PathBuf,
+    },
+    /// Run a script (or an image) on the simulated drive.
+    Run {
+        script: PathBuf,
+        #[arg(long, default_value_t = 1000)]
+        cycles: u64,
+        /// CSV trace, one row per main-loop cycle.
+        #[arg(long)]
+        trace: Option<PathBuf>,
+        /// Main-loop period in milliseconds.
+        #[arg(long, default_value_t = 1)]
+        cycle_ms: u32,
+        /// Digital inputs of the simulated drive (bit n = DI_n).
+        #[arg(long, default_value_t = 0)]
+        inputs: u32,
+    },
+    /// Interactive breakpoint debugger (commands from standard input; `help` lists them).
+    Debug { script: PathBuf },
 }
 
 /// Exit codes.
@@ -58,6 +89,50 @@ pub fn main() -> i32 {
     };
     match cli.command {
         Command::Explain { code } => explain(code.as_deref()),
+        Command::Drive(cmd) => drive(cmd, cli.message_format.into()),
+    }
+}
+
+fn drive(cmd: DriveCommand, format: MessageFormat) -> i32 {
+    use drive_script::cli;
+    let (mut out, mut err) = (std::io::stdout(), std::io::stderr());
+    match cmd {
+        DriveCommand::Build { script, output } => cli::build(
+            &cli::BuildArgs {
+                script,
+                output,
+                format,
+            },
+            &mut out,
+            &mut err,
+        ),
+        DriveCommand::Run {
+            script,
+            cycles,
+            trace,
+            cycle_ms,
+            inputs,
+        } => cli::run(
+            &cli::RunArgs {
+                script,
+                cycles,
+                trace,
+                cycle_ms,
+                inputs,
+                format,
+            },
+            &mut out,
+            &mut err,
+        ),
+        DriveCommand::Debug { script } => {
+            let stdin = std::io::stdin();
+            cli::debug(
+                &cli::DebugArgs { script, format },
+                &mut stdin.lock(),
+                &mut out,
+                &mut err,
+            )
+        }
     }
 }
 

@@ -34,8 +34,11 @@ impl Library {
             Ok(e) => e,
             Err(e) => {
                 diags.push(
-                    Diagnostic::error(code::E9001, format!("cannot read the template directory {}: {e}", dir.display()))
-                        .with_hint("pass an existing directory of template files to --templates"),
+                    Diagnostic::error(
+                        code::E9001,
+                        format!("cannot read the template directory {}: {e}", dir.display()),
+                    )
+                    .with_hint("pass an existing directory of template files to --templates"),
                 );
                 return;
             }
@@ -56,15 +59,24 @@ impl Library {
         }
     }
     /// Adds one template file's text (replacing a template of the same block name).
-    pub fn add_text(&mut self, map: &mut SourceMap, name: &str, text: &str, diags: &mut Diagnostics) {
+    pub fn add_text(
+        &mut self,
+        map: &mut SourceMap,
+        name: &str,
+        text: &str,
+        diags: &mut Diagnostics,
+    ) {
         let file = map.add(name, text);
         if let Some(t) = template::load(file, text, diags) {
-            self.templates.retain(|old| !old.block.eq_ignore_ascii_case(&t.block));
+            self.templates
+                .retain(|old| !old.block.eq_ignore_ascii_case(&t.block));
             self.templates.push(t);
         }
     }
     pub fn get(&self, block: &str) -> Option<&Template> {
-        self.templates.iter().find(|t| t.block.eq_ignore_ascii_case(block))
+        self.templates
+            .iter()
+            .find(|t| t.block.eq_ignore_ascii_case(block))
     }
     pub fn templates(&self) -> &[Template] {
         &self.templates

@@ -162,8 +162,17 @@ fn address(window: &TmWindow, offset: u32, class: TypeClass, span: Span) -> Dire
         _ => AddressSize::LWord,
     };
     let byte = window.offset + offset;
-    let index = if window.element_addressing { byte / bytes } else { byte };
-    DirectAddress { area: Area::Memory, size, path: vec![index], span }
+    let index = if window.element_addressing {
+        byte / bytes
+    } else {
+        byte
+    };
+    DirectAddress {
+        area: Area::Memory,
+        size,
+        path: vec![index],
+        span,
+    }
 }
 
 // ------------------------------------------------------------------ small AST builders
@@ -173,7 +182,11 @@ fn id(name: &str, span: Span) -> Ident {
 }
 
 fn var(name: &str, span: Span) -> Operand {
-    Operand::Var(VarRef { base: id(name, span), accessors: vec![], span })
+    Operand::Var(VarRef {
+        base: id(name, span),
+        accessors: vec![],
+        span,
+    })
 }
 
 fn field(inst: &VarRef, name: &str) -> Operand {
@@ -183,7 +196,11 @@ fn field(inst: &VarRef, name: &str) -> Operand {
 }
 
 fn int_lit(v: i128, span: Span) -> Operand {
-    Operand::Literal(Literal { kind: LiteralKind::Int(v), type_prefix: None, span })
+    Operand::Literal(Literal {
+        kind: LiteralKind::Int(v),
+        type_prefix: None,
+        span,
+    })
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -191,7 +208,14 @@ fn instr(kind: InstrKind, span: Span) -> IlStmt {
 }
 
 fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt {
-    instr(InstrKind::Simple { op, negate, operand }, span)
+    instr(
+        InstrKind::Simple {
+            op,
+            negate,
+            operand,
+        },
+        span,
+    )
 }
 
 // ------------------------------------------------------------------ the pass
@@ -202,7 +226,11 @@ struct BlockUse<'a> {
 }
 
 /// Instances of template blocks declared in a POU (and in global blocks): variable key -> block name.
-fn instances(unit_globals: &HashMap<String, String>, pou: &Pou, lib: &Library) -> HashMap<String, String> {
+fn instances(
+    unit_globals: &HashMap<String, String>,
+    pou: &Pou,
+    lib: &Library,
+) -> HashMap<String, String> {
     let mut m = unit_globals.clone();
     for b in &pou.var_blocks {
         for v in &b.vars {
@@ -242,9 +270,11 @@ pub fn lower(
         for item in &u.items {
             let blocks: Vec<&VarBlock> = match item {
                 LibraryElement::GlobalVars(b) => vec![b],
-                LibraryElement::Configuration(c) => {
-                    c.globals.iter().chain(c.resources.iter().flat_map(|r| r.globals.iter())).collect()
-                }
+                LibraryElement::Configuration(c) => c
+                    .globals
+                    .iter()
+                    .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+                    .collect(),
                 _ => vec![],
             };
             for b in blocks {
@@ -263,19 +293,30 @@ pub fn lower(
     let errors_before = diags.error_count();
     for u in units {
         for item in &u.items {
-            let LibraryElement::Pou(pou) = item else { continue };
+            let LibraryElement::Pou(pou) = item else {
+                continue;
+            };
             let inst = instances(&globals, pou, lib);
             let mut calls = Vec::new();
             calls_in(&pou.body, &mut calls);
             for c in calls {
-                let InstrKind::Call { instance, args, .. } = &c.kind else { continue };
+                let InstrKind::Call { instance, args, .. } = &c.kind else {
+                    continue;
+                };
                 if !instance.accessors.is_empty() {
                     continue;
                 }
-                let Some(block) = inst.get(&instance.base.key()) else { continue };
+                let Some(block) = inst.get(&instance.base.key()) else {
+                    continue;
+                };
                 let t = lib.get(block).expect("instances come from the library");
                 check_call(t, pou, instance, args, c.span, diags);
-                uses.entry(t.block.clone()).or_insert(BlockUse { template: t, calls: 0 }).calls += 1;
+                uses.entry(t.block.clone())
+                    .or_insert(BlockUse {
+                        template: t,
+                        calls: 0,
+                    })
+                    .calls += 1;
             }
         }
     }
@@ -316,7 +357,10 @@ pub fn lower(
             block: name.clone(),
             method,
             calls: u.calls,
-            tm_bytes: methods.get(&name.to_ascii_uppercase()).and_then(|m| m.1.as_ref()).map_or(0, |l| l.total),
+            tm_bytes: methods
+                .get(&name.to_ascii_uppercase())
+                .and_then(|m| m.1.as_ref())
+                .map_or(0, |l| l.total),
             il_instructions: 0,
         });
     }
@@ -327,7 +371,9 @@ pub fn lower(
     for u in units {
         let mut unit = u.clone();
         for item in &mut unit.items {
-            let LibraryElement::Pou(pou) = item else { continue };
+            let LibraryElement::Pou(pou) = item else {
+                continue;
+            };
             let inst = instances(&globals, pou, lib);
             let mut cx = PouLowering {
                 lib,
@@ -344,7 +390,11 @@ pub fn lower(
             pou.body = cx.lower_body(body);
             let views = std::mem::take(&mut cx.used_views);
             for (block, n) in cx.counts {
-                if let Some(r) = out.reports.iter_mut().find(|r| r.block.eq_ignore_ascii_case(&block)) {
+                if let Some(r) = out
+                    .reports
+                    .iter_mut()
+                    .find(|r| r.block.eq_ignore_ascii_case(&block))
+                {
                     r.il_instructions += n;
                 }
             }
@@ -360,7 +410,13 @@ pub fn lower(
                         span,
                     })
                     .collect();
-                pou.var_blocks.push(VarBlock { kind: VarKind::Local, constant: false, retain: false, vars, span });
+                pou.var_blocks.push(VarBlock {
+                    kind: VarKind::Local,
+                    constant: false,
+                    retain: false,
+                    vars,
+                    span,
+                });
             }
         }
         out.units.push(unit);
@@ -369,33 +425,65 @@ pub fn lower(
 }
 
 /// Legality of one call, before any code is generated.
-fn check_call(t: &Template, pou: &Pou, instance: &VarRef, args: &CallArgs, span: Span, diags: &mut Diagnostics) {
+fn check_call(
+    t: &Template,
+    pou: &Pou,
+    instance: &VarRef,
+    args: &CallArgs,
+    span: Span,
+    diags: &mut Diagnostics,
+) {
     let formal: &[FormalArg] = match args {
         CallArgs::Formal(f) => f,
         CallArgs::None => &[],
         CallArgs::NonFormal(a) => {
             diags.push(
-                Diagnostic::error(code::E4021, format!("`{}` is called with positional arguments", instance.base.name))
-                    .at(a.first().map_or(span, |o| o.span()))
-                    .with_hint(format!("PLCopen blocks take formal arguments: CAL {}(Axis := ..., Execute := ...)", instance.base.name)),
+                Diagnostic::error(
+                    code::E4021,
+                    format!(
+                        "`{}` is called with positional arguments",
+                        instance.base.name
+                    ),
+                )
+                .at(a.first().map_or(span, |o| o.span()))
+                .with_hint(format!(
+                    "PLCopen blocks take formal arguments: CAL {}(Axis := ..., Execute := ...)",
+                    instance.base.name
+                )),
             );
             return;
         }
     };
     for a in formal {
-        let Some(p) = t.param(&a.name.name) else { continue }; // unknown names: sema reports them
-        if matches!(a.dir, ArgDir::Output { .. }) && !matches!(a.value, Operand::Var(_) | Operand::Address(_)) {
+        let Some(p) = t.param(&a.name.name) else {
+            continue;
+        }; // unknown names: sema reports them
+        if matches!(a.dir, ArgDir::Output { .. })
+            && !matches!(a.value, Operand::Var(_) | Operand::Address(_))
+        {
             diags.push(
-                Diagnostic::error(code::E4022, format!("a constant is bound to the output `{}` of `{}`", p.name, t.block))
-                    .at(a.value.span())
-                    .with_hint("bind outputs to variables: `Done => done_flag`"),
+                Diagnostic::error(
+                    code::E4022,
+                    format!(
+                        "a constant is bound to the output `{}` of `{}`",
+                        p.name, t.block
+                    ),
+                )
+                .at(a.value.span())
+                .with_hint("bind outputs to variables: `Done => done_flag`"),
             );
         }
         if p.direction == Direction::InOut && !matches!(a.value, Operand::Var(_)) {
             diags.push(
-                Diagnostic::error(code::E4022, format!("`{}` of `{}` needs a variable, not a constant", p.name, t.block))
-                    .at(a.value.span())
-                    .with_hint("bind VAR_IN_OUT parameters such as Axis to a variable (an AXIS_REF)"),
+                Diagnostic::error(
+                    code::E4022,
+                    format!(
+                        "`{}` of `{}` needs a variable, not a constant",
+                        p.name, t.block
+                    ),
+                )
+                .at(a.value.span())
+                .with_hint("bind VAR_IN_OUT parameters such as Axis to a variable (an AXIS_REF)"),
             );
         }
     }
@@ -407,7 +495,10 @@ fn check_call(t: &Template, pou: &Pou, instance: &VarRef, args: &CallArgs, span:
             diags.push(
                 Diagnostic::error(
                     code::E4023,
-                    format!("required input `{}` of `{}` (instance `{}`) is not bound", p.name, t.block, instance.base.name),
+                    format!(
+                        "required input `{}` of `{}` (instance `{}`) is not bound",
+                        p.name, t.block, instance.base.name
+                    ),
                 )
                 .at(span)
                 .with_hint(format!("add `{} := ...` to the call", p.name)),
@@ -421,9 +512,11 @@ fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
     for s in body {
         let IlStmt::Instr(i) = s else { continue };
         match &i.kind {
-            InstrKind::Simple { op: Op::St | Op::S | Op::R, operand: Some(Operand::Var(v)), .. }
-                if v.base == *inst && v.accessors.len() == 1 =>
-            {
+            InstrKind::Simple {
+                op: Op::St | Op::S | Op::R,
+                operand: Some(Operand::Var(v)),
+                ..
+            } if v.base == *inst && v.accessors.len() == 1 => {
                 if let Accessor::Field(f) = &v.accessors[0] {
                     out.push(f.name.clone());
                 }
@@ -453,8 +546,16 @@ impl PouLowering<'_> {
         let mut out = Vec::with_capacity(body.len());
         for s in body {
             match s {
-                IlStmt::Instr(Instruction { kind: InstrKind::Call { cond, instance, args }, span })
-                    if instance.accessors.is_empty() && self.instances.contains_key(&instance.base.key()) =>
+                IlStmt::Instr(Instruction {
+                    kind:
+                        InstrKind::Call {
+                            cond,
+                            instance,
+                            args,
+                        },
+                    span,
+                }) if instance.accessors.is_empty()
+                    && self.instances.contains_key(&instance.base.key()) =>
                 {
                     let block = self.instances[&instance.base.key()].clone();
                     let t = self.lib.get(&block).expect("known block");
@@ -464,22 +565,61 @@ impl PouLowering<'_> {
                     let guarded = cond != Condition::Always;
                     let start = out.len();
                     if guarded {
-                        let c = if cond == Condition::IfTrue { Condition::IfFalse } else { Condition::IfTrue };
-                        out.push(instr(InstrKind::Jump { cond: c, label: id(&skip, span) }, span));
+                        let c = if cond == Condition::IfTrue {
+                            Condition::IfFalse
+                        } else {
+                            Condition::IfTrue
+                        };
+                        out.push(instr(
+                            InstrKind::Jump {
+                                cond: c,
+                                label: id(&skip, span),
+                            },
+                            span,
+                        ));
                     }
                     match method {
-                        Method::Il => self.il_call(t, layout.as_ref().expect("IL layout"), &instance, &args, span, &mut out),
+                        Method::Il => self.il_call(
+                            t,
+                            layout.as_ref().expect("IL layout"),
+                            &instance,
+                            &args,
+                            span,
+                            &mut out,
+                        ),
                         Method::Template => self.template_call(t, &instance, &args, span, &mut out),
                     }
                     if guarded {
                         out.push(IlStmt::Label(id(&skip, span)));
                     }
-                    let n = out[start..].iter().filter(|s| matches!(s, IlStmt::Instr(_))).count();
+                    let n = out[start..]
+                        .iter()
+                        .filter(|s| matches!(s, IlStmt::Instr(_)))
+                        .count();
                     *self.counts.entry(t.block.clone()).or_default() += n;
                 }
-                IlStmt::Instr(Instruction { kind: InstrKind::Deferred { op, negate, operand, body, close }, span }) => {
+                IlStmt::Instr(Instruction {
+                    kind:
+                        InstrKind::Deferred {
+                            op,
+                            negate,
+                            operand,
+                            body,
+                            close,
+                        },
+                    span,
+                }) => {
                     let body = self.lower_body(body);
-                    out.push(instr(InstrKind::Deferred { op, negate, operand, body, close }, span));
+                    out.push(instr(
+                        InstrKind::Deferred {
+                            op,
+                            negate,
+                            operand,
+                            body,
+                            close,
+                        },
+                        span,
+                    ));
                 }
                 other => out.push(other),
             }
@@ -491,29 +631,49 @@ impl PouLowering<'_> {
         let slot = layout.slot(&p.name).expect("every parameter has a slot");
         let name = tm_view_name(&t.block, &p.name);
         let addr = address(self.window, slot.offset, p.class, span);
-        self.used_views.entry(name.to_ascii_uppercase()).or_insert_with(|| (name.clone(), addr, slot_type(p)));
+        self.used_views
+            .entry(name.to_ascii_uppercase())
+            .or_insert_with(|| (name.clone(), addr, slot_type(p)));
         var(&name, span)
     }
 
     /// The operand an input is taken from: the bound argument, else the instance's own field.
     fn input_source(p: &Param, instance: &VarRef, args: &CallArgs) -> Operand {
         if let CallArgs::Formal(f) = args {
-            if let Some(a) = f.iter().find(|a| a.name.is(&p.name) && a.dir == ArgDir::Input) {
+            if let Some(a) = f
+                .iter()
+                .find(|a| a.name.is(&p.name) && a.dir == ArgDir::Input)
+            {
                 return a.value.clone();
             }
         }
         field(instance, &p.name)
     }
 
-    fn il_call(&mut self, t: &Template, layout: &TmLayout, instance: &VarRef, args: &CallArgs, span: Span, out: &mut Vec<IlStmt>) {
+    fn il_call(
+        &mut self,
+        t: &Template,
+        layout: &TmLayout,
+        instance: &VarRef,
+        args: &CallArgs,
+        span: Span,
+        out: &mut Vec<IlStmt>,
+    ) {
         let handle = handle_param(span);
         // 1. input transfer (and the instance handle)
         for p in t.inputs().chain(std::iter::once(&handle)) {
-            let src = if p.name == HANDLE_FIELD { field(instance, HANDLE_FIELD) } else { Self::input_source(p, instance, args) };
+            let src = if p.name == HANDLE_FIELD {
+                field(instance, HANDLE_FIELD)
+            } else {
+                Self::input_source(p, instance, args)
+            };
             let src = match (&src, p.class) {
                 (Operand::Var(v), TypeClass::Struct) => {
                     let mut v = v.clone();
-                    v.accessors.push(Accessor::Field(id(crate::prelude::index_field(&p.iec_type), v.span)));
+                    v.accessors.push(Accessor::Field(id(
+                        crate::prelude::index_field(&p.iec_type),
+                        v.span,
+                    )));
                     Operand::Var(v)
                 }
                 _ => src,
@@ -521,20 +681,41 @@ impl PouLowering<'_> {
             let dst = self.view(t, layout, p, span);
             match (p.class, &src) {
                 (TypeClass::Bool, Operand::Literal(l)) => {
-                    let v = matches!(l.kind, LiteralKind::Bool(true)) || matches!(l.kind, LiteralKind::Int(1));
+                    let v = matches!(l.kind, LiteralKind::Bool(true))
+                        || matches!(l.kind, LiteralKind::Int(1));
                     out.push(simple(Op::Ld, false, Some(int_lit(v as i128, span)), span));
                 }
                 (TypeClass::Bool, _) => {
                     out.push(simple(Op::Ld, false, Some(src.clone()), span));
-                    out.push(simple(Op::Eq, false, Some(Operand::Literal(Literal { kind: LiteralKind::Bool(true), type_prefix: None, span })), span));
-                    out.push(instr(InstrKind::FunctionCall { name: id("BOOL_TO_BYTE", span), args: CallArgs::None }, span));
+                    out.push(simple(
+                        Op::Eq,
+                        false,
+                        Some(Operand::Literal(Literal {
+                            kind: LiteralKind::Bool(true),
+                            type_prefix: None,
+                            span,
+                        })),
+                        span,
+                    ));
+                    out.push(instr(
+                        InstrKind::FunctionCall {
+                            name: id("BOOL_TO_BYTE", span),
+                            args: CallArgs::None,
+                        },
+                        span,
+                    ));
                 }
                 _ => out.push(simple(Op::Ld, false, Some(src.clone()), span)),
             }
             out.push(simple(Op::St, false, Some(dst), span));
         }
         // 2. the call
-        out.push(instr(InstrKind::EmbeddedC { name: id(&t.block, span) }, span));
+        out.push(instr(
+            InstrKind::EmbeddedC {
+                name: id(&t.block, span),
+            },
+            span,
+        ));
         // 3. output transfer: into the instance, then into the `=>` targets
         for p in t.outputs().chain(std::iter::once(&handle)) {
             let src = self.view(t, layout, p, span);
@@ -559,7 +740,14 @@ impl PouLowering<'_> {
         }
     }
 
-    fn template_call(&mut self, t: &Template, instance: &VarRef, args: &CallArgs, span: Span, out: &mut Vec<IlStmt>) {
+    fn template_call(
+        &mut self,
+        t: &Template,
+        instance: &VarRef,
+        args: &CallArgs,
+        span: Span,
+        out: &mut Vec<IlStmt>,
+    ) {
         let n = *self.site;
         let name = format!("{}_{n}", t.block);
         let handle = handle_param(span);
@@ -575,37 +763,72 @@ impl PouLowering<'_> {
             let source = match (&source, p.class) {
                 (Operand::Var(v), TypeClass::Struct) => {
                     let mut v = v.clone();
-                    v.accessors.push(Accessor::Field(id(crate::prelude::index_field(&p.iec_type), v.span)));
+                    v.accessors.push(Accessor::Field(id(
+                        crate::prelude::index_field(&p.iec_type),
+                        v.span,
+                    )));
                     Operand::Var(v)
                 }
                 _ => source,
             };
-            head.push(HeadLocal { c_type: if p.name == HANDLE_FIELD { "uint32_t" } else { p.c_type() }, local: local.clone(), class: p.class, source });
+            head.push(HeadLocal {
+                c_type: if p.name == HANDLE_FIELD {
+                    "uint32_t"
+                } else {
+                    p.c_type()
+                },
+                local: local.clone(),
+                class: p.class,
+                source,
+            });
             if p.direction == Direction::Output || p.name == HANDLE_FIELD {
-                tail.push(Feedback { target: field(instance, &p.name), local: local.clone(), class: p.class, negated: false });
+                tail.push(Feedback {
+                    target: field(instance, &p.name),
+                    local: local.clone(),
+                    class: p.class,
+                    negated: false,
+                });
                 if let CallArgs::Formal(f) = args {
                     for a in f.iter().filter(|a| a.name.is(&p.name)) {
                         if let ArgDir::Output { negated } = a.dir {
-                            tail.push(Feedback { target: a.value.clone(), local: local.clone(), class: p.class, negated });
+                            tail.push(Feedback {
+                                target: a.value.clone(),
+                                local: local.clone(),
+                                class: p.class,
+                                negated,
+                            });
                         }
                     }
                 }
             }
         }
-        let renames: HashMap<&str, String> =
-            t.params.iter().chain(std::iter::once(&handle)).map(|p| (p.abbr.as_str(), format!("{}_{n}", p.abbr))).collect();
+        let renames: HashMap<&str, String> = t
+            .params
+            .iter()
+            .chain(std::iter::once(&handle))
+            .map(|p| (p.abbr.as_str(), format!("{}_{n}", p.abbr)))
+            .collect();
         let body = rename_identifiers(&t.body.text, &renames);
         self.synthesized.push(Synthesized {
             name: name.clone(),
             pou: self.pou_name.clone(),
             func_num: t.func_num,
             head,
-            locals: t.locals.iter().map(|l| (l.c_type.clone(), l.name.clone())).collect(),
+            locals: t
+                .locals
+                .iter()
+                .map(|l| (l.c_type.clone(), l.name.clone()))
+                .collect(),
             body,
             tail,
             call_span: span,
         });
-        out.push(instr(InstrKind::EmbeddedC { name: id(&name, span) }, span));
+        out.push(instr(
+            InstrKind::EmbeddedC {
+                name: id(&name, span),
+            },
+            span,
+        ));
     }
 }
 
@@ -620,7 +843,9 @@ pub fn rename_identifiers(text: &str, renames: &HashMap<&str, String>) -> String
         }
         let member = k > 0
             && (toks[k - 1].kind == crate::cbody::Tok::Punct(b'.')
-                || (toks[k - 1].kind == crate::cbody::Tok::Punct(b'>') && k > 1 && toks[k - 2].kind == crate::cbody::Tok::Punct(b'-')));
+                || (toks[k - 1].kind == crate::cbody::Tok::Punct(b'>')
+                    && k > 1
+                    && toks[k - 2].kind == crate::cbody::Tok::Punct(b'-')));
         if member {
             continue;
         }

@@ -13,8 +13,12 @@ use crate::template::{Direction, Param, Template, TypeClass};
 use std::fmt::Write as _;
 
 /// The reference types and the field that holds their index in the motion engine.
-pub const REFERENCE_TYPES: &[(&str, &str)] =
-    &[("AXIS_REF", "AxisNo"), ("AXES_GROUP_REF", "GroupNo"), ("MC_CAM_REF", "CamNo"), ("MC_CAM_ID", "CamId")];
+pub const REFERENCE_TYPES: &[(&str, &str)] = &[
+    ("AXIS_REF", "AxisNo"),
+    ("AXES_GROUP_REF", "GroupNo"),
+    ("MC_CAM_REF", "CamNo"),
+    ("MC_CAM_ID", "CamId"),
+];
 
 /// PLCopen enumeration values, as USINT constants.
 pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
@@ -37,7 +41,10 @@ pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
 
 /// The field of a reference type that carries the engine index (`AXIS_REF` -> `AxisNo`).
 pub fn index_field(iec_type: &str) -> &'static str {
-    REFERENCE_TYPES.iter().find(|(t, _)| t.eq_ignore_ascii_case(iec_type)).map_or("AxisNo", |(_, f)| f)
+    REFERENCE_TYPES
+        .iter()
+        .find(|(t, _)| t.eq_ignore_ascii_case(iec_type))
+        .map_or("AxisNo", |(_, f)| f)
 }
 
 /// The IEC type a parameter has in the declarations (MC_* enumerations are USINT).
@@ -70,7 +77,9 @@ fn common(out: &mut String) {
 
 /// The declarations checked against before lowering: one FUNCTION_BLOCK per template.
 pub fn before_lowering(lib: &Library) -> String {
-    let mut out = String::from("(* PLCopen blocks as the programs see them (generated from the templates) *)\n");
+    let mut out = String::from(
+        "(* PLCopen blocks as the programs see them (generated from the templates) *)\n",
+    );
     common(&mut out);
     for t in lib.templates() {
         fb_declaration(t, &mut out);
@@ -80,7 +89,11 @@ pub fn before_lowering(lib: &Library) -> String {
 
 fn fb_declaration(t: &Template, out: &mut String) {
     let _ = writeln!(out, "FUNCTION_BLOCK {}", t.block);
-    for (dir, kw) in [(Direction::InOut, "VAR_IN_OUT"), (Direction::Input, "VAR_INPUT"), (Direction::Output, "VAR_OUTPUT")] {
+    for (dir, kw) in [
+        (Direction::InOut, "VAR_IN_OUT"),
+        (Direction::Input, "VAR_INPUT"),
+        (Direction::Output, "VAR_OUTPUT"),
+    ] {
         let ps: Vec<&Param> = t.params.iter().filter(|p| p.direction == dir).collect();
         if ps.is_empty() {
             continue;
@@ -96,7 +109,9 @@ fn fb_declaration(t: &Template, out: &mut String) {
 
 /// The declarations after lowering: one STRUCT per template (inputs with defaults, outputs, engine handle).
 pub fn after_lowering(lib: &Library) -> String {
-    let mut out = String::from("(* PLCopen block instances after lowering (generated from the templates) *)\n");
+    let mut out = String::from(
+        "(* PLCopen block instances after lowering (generated from the templates) *)\n",
+    );
     common(&mut out);
     out.push_str("TYPE\n");
     for t in lib.templates() {
