@@ -4,5 +4,7 @@
 //! -> `sema` (symbols, types, current-result typing, labels). Every node carries a byte [`Span`].
 
 pub mod ast;
+pub mod lexer;
+pub mod literal;
 
 pub use diagnostics::{FileId, Span};
