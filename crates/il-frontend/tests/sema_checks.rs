@@ -372,3 +372,50 @@ END_PROGRAM
 "
     ));
 }
+
+#[test]
+fn deferred_operators_type_their_nested_list() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  a, b, c, x : BOOL;
+  i, j : INT;
+  r : REAL;
+END_VAR
+  LD a
+  AND( b
+  OR c
+  )
+  ST x
+  LD i
+  ADD( j
+  MUL r
+  )
+  ST i
+  LD a
+  OR(
+  LD i
+  )
+  ST x
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn fb_instances_are_not_values() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  t, u : TON;
+  n : INT;
+END_VAR
+  LD t
+  ST u
+  CAL n
+  LD n
+  IN n
+END_PROGRAM
+"
+    ));
+}

@@ -587,3 +587,27 @@ END_PROGRAM
         Type::Fb(FbType::User(PouId(0)))
     );
 }
+
+#[test]
+fn pou_instrs_are_in_source_pre_order() {
+    let src = "PROGRAM P
+VAR
+  a, b, c, x : BOOL;
+END_VAR
+  LD a
+  AND( b
+  OR c
+  )
+  ST x
+END_PROGRAM
+";
+    let m = ok(src);
+    let p = m.pou(PouId(0));
+    assert_eq!(p.instrs.len(), 5);
+    let deferred = info_at(&m, src, "AND(", 0);
+    assert_eq!(&p.instrs[1], deferred);
+    assert_eq!(deferred.operand, Some(Type::BOOL));
+    assert_eq!(&p.instrs[3], info_at(&m, src, "OR c", 0));
+    // The nested list starts with its operand as current result.
+    assert_eq!(info_at(&m, src, "OR c", 0).cr_before, Some(Type::BOOL));
+}

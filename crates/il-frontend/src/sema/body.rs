@@ -133,10 +133,13 @@ impl Analyzer<'_> {
         b.pos = 0;
         b.walk_top(&pou.body);
         let recs = std::mem::take(&mut b.recs);
+        let mut infos = Vec::with_capacity(recs.len());
         for (span, r) in recs {
             let info = b.finish(r);
-            b.a.model.instrs.insert(span, info);
+            b.a.model.instrs.insert(span, info.clone());
+            infos.push(info);
         }
+        b.a.model.pous[id.0 as usize].instrs = infos;
     }
 
     fn collect_labels(
@@ -421,6 +424,9 @@ impl Body<'_, '_> {
             cr_before: st.cr.ty.clone(),
             ..Rec::default()
         };
+        // Reserve the slot: pre-order (a deferred instruction before its nested list).
+        let slot = self.recs.len();
+        self.recs.push((i.span, Rec::default()));
         match &i.kind {
             InstrKind::Simple {
                 op,
@@ -458,7 +464,14 @@ impl Body<'_, '_> {
                 match outer {
                     None => self.load(st, value, i.span),
                     Some(cr) => {
-                        let res = self.operator(*op, *negate, cr, value, *close, i.span, &mut rec);
+                        // Point at `OP(` for the outer current result.
+                        let kw = op_name(*op).len() + usize::from(*negate) + 1;
+                        let head = Span::new(
+                            i.span.file,
+                            i.span.start as usize,
+                            (i.span.start as usize + kw).min(i.span.end as usize),
+                        );
+                        let res = self.operator(*op, *negate, cr, value, *close, head, &mut rec);
                         st.cr.ty = Some(res);
                         st.cr.fresh = Some(i.span);
                     }
@@ -525,7 +538,7 @@ impl Body<'_, '_> {
             }
         }
         rec.cr_after = if st.reach { st.cr.ty.clone() } else { None };
-        self.recs.push((i.span, rec));
+        self.recs[slot].1 = rec;
     }
 
     fn simple(
@@ -547,9 +560,13 @@ impl Body<'_, '_> {
                     self.load(st, Ty::ERROR, span);
                     return;
                 };
-                let t = self.read_operand(o);
+                let mut t = self.read_operand(o);
                 if negate {
                     self.check_class_bit(&t, o.span(), "LDN");
+                }
+                if let Ty::Known(Type::Fb(_)) = t {
+                    self.not_a_value(o);
+                    t = Ty::ERROR;
                 }
                 rec.operand = Some(t.clone());
                 self.load(st, t, span);
@@ -566,7 +583,11 @@ impl Body<'_, '_> {
                 if negate {
                     self.check_class_bit(&cr, span, "STN");
                 }
-                let place = self.write_place(o, "ST");
+                let mut place = self.write_place(o, "ST");
+                if place.is_fb() {
+                    self.not_a_value(o);
+                    place = Type::Error;
+                }
                 rec.operand = Some(Ty::Known(place.clone()));
                 self.coerce_store(&cr, &place, o.span(), span);
             }
@@ -641,6 +662,13 @@ impl Body<'_, '_> {
                 st.cr.fresh = Some(span);
             }
         }
+    }
+
+    fn not_a_value(&mut self, o: &ast::Operand) {
+        self.a
+            .error(code::E1021, o.span(), "an FB instance is not a value")
+            .label("a function block instance")
+            .hint("read or write its inputs and outputs (inst.Q), or call it with CAL");
     }
 
     /// Checks that `t` is ANY_BIT (N modifier, NOT, STN).

@@ -51,6 +51,7 @@ impl Analyzer<'_> {
                             return_type: None,
                             vars: Vec::new(),
                             externals: Vec::new(),
+                            instrs: Vec::new(),
                         });
                         pous.push((id, p));
                     }
@@ -664,7 +665,7 @@ impl Analyzer<'_> {
                     .hint("give a single value");
                     return None;
                 };
-                let total: u128 = dims.iter().map(|d| d.len()).product();
+                let total: u128 = dims.iter().fold(1u128, |n, d| n.saturating_mul(d.len()));
                 let mut out = Vec::new();
                 for e in elems {
                     let v = self.const_init(&e.value, element, consts)?;

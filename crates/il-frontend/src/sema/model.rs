@@ -287,11 +287,12 @@ pub struct Dim {
 }
 
 impl Dim {
+    /// The number of elements (saturating).
     pub fn len(self) -> u128 {
         if self.upper < self.lower {
             0
         } else {
-            (self.upper - self.lower) as u128 + 1
+            self.upper.abs_diff(self.lower).saturating_add(1)
         }
     }
     pub fn is_empty(self) -> bool {
@@ -485,6 +486,10 @@ pub struct Pou {
     pub vars: Vec<Variable>,
     /// For each `VAR_EXTERNAL` (index into `vars`), the global it is bound to.
     pub externals: Vec<(usize, GlobalRef)>,
+    /// The infos of the body's instructions in source pre-order (a deferred `AND( ... )` before the
+    /// instructions of its nested list): the same values as `Model::instrs`, usable when several
+    /// instructions share a span (as lowered ladder may).
+    pub instrs: Vec<InstrInfo>,
 }
 
 impl Pou {
