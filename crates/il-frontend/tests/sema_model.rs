@@ -611,3 +611,44 @@ END_PROGRAM
     // The nested list starts with its operand as current result.
     assert_eq!(info_at(&m, src, "OR c", 0).cr_before, Some(Type::BOOL));
 }
+
+#[test]
+fn names_in_bodies_are_resolved() {
+    let src = "TYPE
+  Color : (red, green);
+END_TYPE
+VAR_GLOBAL
+  total : INT;
+END_VAR
+FUNCTION F : Color
+VAR_INPUT
+  go : BOOL;
+END_VAR
+  LD go
+  ST ENO
+  LD total
+  ADD 1
+  ST total
+  LD green
+  ST F
+END_FUNCTION
+";
+    let m = ok(src);
+    let at = |text: &str, n: usize| {
+        let start = src.match_indices(text).nth(n).unwrap().0 as u32;
+        *m.names.iter().find(|(s, _)| s.start == start).unwrap().1
+    };
+    assert_eq!(at("go\n", 0), NameRef::Var(0));
+    assert_eq!(at("ENO", 0), NameRef::Eno);
+    assert_eq!(at("total\n", 1), NameRef::Global(GlobalRef::Free(0)));
+    let color = m.type_by_name("Color").unwrap();
+    assert_eq!(
+        at("green\n", 0),
+        NameRef::EnumValue {
+            ty: color,
+            index: 1
+        }
+    );
+    assert_eq!(at("F\nEND", 0), NameRef::FunctionResult);
+    assert_eq!(m.pou(PouId(0)).return_type, Some(Type::Enum(color)));
+}

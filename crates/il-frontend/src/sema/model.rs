@@ -640,6 +640,26 @@ pub struct InstrInfo {
     pub args: Vec<ArgBinding>,
 }
 
+/// What a name used in a body refers to (`Model::names[&var_ref.base.span]`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum NameRef {
+    /// `Model::pous[pou].vars[index]` of the POU the body belongs to (a `VAR_EXTERNAL` too: see
+    /// `Pou::externals` for its global).
+    Var(usize),
+    /// The function's own name used as its result variable (`ST WEIGH` in FUNCTION WEIGH).
+    FunctionResult,
+    /// The implicit `EN` input / `ENO` output of a function or FB.
+    En,
+    Eno,
+    /// A `VAR_GLOBAL` outside any configuration, used directly.
+    Global(GlobalRef),
+    /// An enumerated value written without its type (`red`).
+    EnumValue {
+        ty: TypeId,
+        index: usize,
+    },
+}
+
 /// Everything sema resolved.
 #[derive(Debug, Clone, Default, Serialize)]
 pub struct Model {
@@ -650,6 +670,9 @@ pub struct Model {
     pub globals: Vec<Variable>,
     /// Keyed by `ast::Instruction::span`.
     pub instrs: HashMap<Span, InstrInfo>,
+    /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
+    /// call arguments, indexes, CAL instances).
+    pub names: HashMap<Span, NameRef>,
 }
 
 impl Model {

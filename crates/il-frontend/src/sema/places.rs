@@ -327,7 +327,9 @@ impl Body<'_, '_> {
             let p = self.pou();
             (p.name.clone(), p.kind)
         };
-        if let Some(var) = self.pou().var(&base.name).cloned() {
+        if let Some(index) = self.pou().vars.iter().position(|v| v.is(&base.name)) {
+            self.a.model.names.insert(base.span, NameRef::Var(index));
+            let var = self.pou().vars[index].clone();
             let read_only = if var.constant {
                 Some(ReadOnly {
                     code: code::E1014,
@@ -354,12 +356,22 @@ impl Body<'_, '_> {
             });
         }
         if kind == PouKind::Function && base.is(&pou_name) {
+            self.a
+                .model
+                .names
+                .insert(base.span, NameRef::FunctionResult);
             return Some(Place {
                 ty: self.pou().return_type.clone().unwrap_or(Type::Error),
                 read_only: None,
             });
         }
         if kind != PouKind::Program && (base.is("EN") || base.is("ENO")) {
+            let r = if base.is("EN") {
+                NameRef::En
+            } else {
+                NameRef::Eno
+            };
+            self.a.model.names.insert(base.span, r);
             let read_only = base.is("EN").then(|| ReadOnly {
                 code: code::E1015,
                 message: format!("`EN` is an input of `{pou_name}`, read-only inside it"),
@@ -372,6 +384,10 @@ impl Body<'_, '_> {
             });
         }
         if let Some(&i) = self.a.free_globals.get(&base.key()) {
+            self.a
+                .model
+                .names
+                .insert(base.span, NameRef::Global(GlobalRef::Free(i)));
             let g = self.a.model.globals[i].clone();
             let read_only = g.constant.then(|| ReadOnly {
                 code: code::E1014,
@@ -405,6 +421,13 @@ impl Body<'_, '_> {
                         ));
                     return None;
                 }
+                self.a.model.names.insert(
+                    base.span,
+                    NameRef::EnumValue {
+                        ty: found[0].0,
+                        index: found[0].1,
+                    },
+                );
                 let read_only = Some(ReadOnly {
                     code: code::E1026,
                     message: format!("`{}` is an enumerated value, not a variable", base.name),
