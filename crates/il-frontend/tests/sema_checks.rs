@@ -139,6 +139,12 @@ END_VAR
   LD n
 done:
   ST out
+  LD go
+  JMPC reload
+  LD n
+reload:
+  LD n
+  ST n
 END_PROGRAM
 "
     ));

@@ -37,6 +37,18 @@ pub(super) struct Cr {
     pub(super) ty: Option<Ty>,
     /// The instruction that computed the value if no instruction has used it yet.
     pub(super) fresh: Option<Span>,
+    /// Paths of different types met at a label: reported when the value is read (an `LD` right after
+    /// the label makes the clash harmless).
+    pub(super) clash: Option<Box<Clash>>,
+}
+
+/// Two paths bringing different types to a label.
+#[derive(Debug, Clone)]
+pub(super) struct Clash {
+    label: ast::Ident,
+    a: (Span, String),
+    b: (Span, String),
+    types: (String, String),
 }
 
 /// The walk state: reachability and current result.
@@ -193,6 +205,7 @@ impl Body<'_, '_> {
             cr: Cr {
                 ty: None,
                 fresh: None,
+                clash: None,
             },
             last: None,
             warned_unreachable: false,
@@ -219,6 +232,7 @@ impl Body<'_, '_> {
                         st.cr = Cr {
                             ty: Some(Ty::ERROR),
                             fresh: None,
+                            clash: None,
                         };
                     }
                     self.instr(i, st);
@@ -252,6 +266,7 @@ impl Body<'_, '_> {
         st.reach = true;
         st.warned_unreachable = false;
         st.cr.fresh = None;
+        st.cr.clash = None;
         if incoming.is_empty() {
             // Dead code after the label: silence it.
             st.cr.ty = Some(Ty::ERROR);
@@ -271,16 +286,12 @@ impl Body<'_, '_> {
                 Some(j) => acc.2 = j,
                 None => {
                     let (ta, tb) = (self.describe(&acc.2), self.describe(&ty));
-                    self.a
-                        .error(
-                            code::E1008,
-                            l.span,
-                            format!("the current result at `{}` is {ta} on one path and {tb} on another", l.name),
-                        )
-                        .label("paths meet here")
-                        .also(acc.0, format!("{ta}: {}", acc.1))
-                        .also(span, format!("{tb}: {what}"))
-                        .hint("load a value after the label, or make every path bring the same type");
+                    st.cr.clash = Some(Box::new(Clash {
+                        label: l.clone(),
+                        a: (acc.0, format!("{ta}: {}", acc.1)),
+                        b: (span, format!("{tb}: {what}")),
+                        types: (ta, tb),
+                    }));
                     acc.2 = Ty::ERROR;
                     break;
                 }
@@ -368,6 +379,23 @@ impl Body<'_, '_> {
     /// Reads the CR (reports an undefined one); marks the value used.
     pub(super) fn use_cr(&mut self, st: &mut State, at: Span, what: &str) -> Ty {
         st.cr.fresh = None;
+        if let Some(c) = st.cr.clash.take() {
+            let (ta, tb) = &c.types;
+            self.a
+                .error(
+                    code::E1008,
+                    c.label.span,
+                    format!(
+                        "the current result at `{}` is {ta} on one path and {tb} on another",
+                        c.label.name
+                    ),
+                )
+                .label("paths meet here")
+                .also(c.a.0, c.a.1)
+                .also(c.b.0, c.b.1)
+                .also(at, format!("{what} reads it here"))
+                .hint("load a value after the label, or make every path bring the same type");
+        }
         match &st.cr.ty {
             Some(t) => t.clone(),
             None => {
@@ -396,6 +424,7 @@ impl Body<'_, '_> {
         }
         st.cr.ty = Some(ty);
         st.cr.fresh = Some(at);
+        st.cr.clash = None;
     }
 
     /// The CR must be BOOL (conditions, S, R).
@@ -450,6 +479,7 @@ impl Body<'_, '_> {
                     cr: Cr {
                         ty: None,
                         fresh: None,
+                        clash: None,
                     },
                     last: None,
                     warned_unreachable: false,
