@@ -425,3 +425,63 @@ END_PROGRAM
 "
     ));
 }
+
+#[test]
+fn configuration_elements_are_checked() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR_INPUT
+  sp : REAL;
+END_VAR
+VAR_OUTPUT
+  q : BOOL;
+END_VAR
+VAR_EXTERNAL
+  lamp : BOOL;
+END_VAR
+  LD sp
+  GT 1.5
+  ST q
+  ST lamp
+END_PROGRAM
+FUNCTION_BLOCK NotAProgram
+  LD TRUE
+  RET
+END_FUNCTION_BLOCK
+CONFIGURATION Cell
+VAR_GLOBAL
+  speed : REAL;
+  count : INT;
+  lamp : BOOL;
+END_VAR
+RESOURCE Cpu
+TASK Fast(INTERVAL := T#10ms, PRIORITY := 1);
+TASK Slow(INTERVAL := 5, PRIORITY := 2);
+PROGRAM m1 WITH Fast : Main (sp := speed, q => lamp);
+PROGRAM m2 WITH Medium : Main (sp := count, q := lamp, zz := speed);
+PROGRAM m3 : NotAProgram;
+PROGRAM m4 : Nowhere;
+END_RESOURCE
+END_CONFIGURATION
+"
+    ));
+}
+
+#[test]
+fn alias_cycles_and_fb_type_names_used_as_instances() {
+    insta::assert_snapshot!(check(
+        "TYPE
+  A : B;
+  B : A;
+END_TYPE
+PROGRAM Main
+VAR
+  x : A;
+END_VAR
+  CAL TON
+  LD x
+  ST x
+END_PROGRAM
+"
+    ));
+}

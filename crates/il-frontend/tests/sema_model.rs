@@ -652,3 +652,62 @@ END_FUNCTION
     assert_eq!(at("F\nEND", 0), NameRef::FunctionResult);
     assert_eq!(m.pou(PouId(0)).return_type, Some(Type::Enum(color)));
 }
+
+#[test]
+fn program_instance_arguments_are_bound_to_globals_and_addresses() {
+    let src = "PROGRAM Main
+VAR_INPUT
+  sp : REAL;
+  n : INT;
+END_VAR
+VAR_OUTPUT
+  q : BOOL;
+END_VAR
+  LD sp
+  GT 1.5
+  ST q
+END_PROGRAM
+CONFIGURATION Cell
+VAR_GLOBAL
+  speed : REAL;
+END_VAR
+RESOURCE Cpu
+TASK Fast(INTERVAL := T#10ms, PRIORITY := 3);
+PROGRAM m1 WITH Fast : Main (sp := speed, n := 7, q => %QX0.1);
+END_RESOURCE
+END_CONFIGURATION
+";
+    let m = ok(src);
+    let r = &m.configurations[0].resources[0];
+    assert_eq!(r.tasks[0].interval_ns, Some(10_000_000));
+    assert_eq!(r.tasks[0].priority, 3);
+    let p = &r.programs[0];
+    assert_eq!((p.pou, p.task), (PouId(0), Some(0)));
+    assert_eq!(
+        p.args,
+        vec![
+            ProgramArg {
+                param: 0,
+                output: false,
+                value: ProgramArgValue::Global(GlobalRef::Configuration {
+                    config: 0,
+                    index: 0
+                })
+            },
+            ProgramArg {
+                param: 1,
+                output: false,
+                value: ProgramArgValue::Const(ConstValue::Int(7))
+            },
+            ProgramArg {
+                param: 2,
+                output: true,
+                value: ProgramArgValue::Address(Location {
+                    area: ast::Area::Output,
+                    size: ast::AddressSize::Bit,
+                    path: vec![0, 1]
+                })
+            },
+        ]
+    );
+}

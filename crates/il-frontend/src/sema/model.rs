@@ -559,6 +559,25 @@ pub struct ProgramInstance {
     /// Index into the resource's `tasks`; `None` when no `WITH` (runs in the background).
     pub task: Option<usize>,
     pub pou: PouId,
+    /// `(in := x, out => y)` bound to the program's parameters.
+    pub args: Vec<ProgramArg>,
+}
+
+/// One argument of a program instance.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ProgramArg {
+    /// The program's parameter (index into its `vars`).
+    pub param: usize,
+    /// `=>`: the program's output is copied to the value (a global or an address).
+    pub output: bool,
+    pub value: ProgramArgValue,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum ProgramArgValue {
+    Global(GlobalRef),
+    Address(Location),
+    Const(ConstValue),
 }
 
 /// What an instruction calls.

@@ -455,6 +455,17 @@ impl Body<'_, '_> {
     /// A hint naming a declared variable with a similar spelling, or how to declare.
     fn similar_name(&self, name: &str) -> String {
         let up = name.to_ascii_uppercase();
+        let is_fb_type = StdFb::from_name(name).is_some()
+            || self
+                .a
+                .pou_names
+                .get(&up)
+                .is_some_and(|id| self.a.model.pous[id.0 as usize].kind != PouKind::Function);
+        if is_fb_type {
+            return format!(
+                "`{name}` is a type: declare an instance (VAR inst : {name}; END_VAR) and use that"
+            );
+        }
         let best = self
             .pou()
             .vars
