@@ -485,3 +485,18 @@ END_PROGRAM
 "
     ));
 }
+
+#[test]
+fn operators_with_a_missing_or_extra_operand() {
+    let src = "PROGRAM Main
+VAR
+  b : BOOL;
+END_VAR
+  LD b
+  NOT b
+  ST b
+  ADD
+END_PROGRAM
+";
+    assert_eq!(codes(src), vec!["E1020", "E1020"], "{}", check(src));
+}

@@ -584,7 +584,7 @@ impl Body<'_, '_> {
             Op::Ld => {
                 let Some(o) = operand else {
                     self.a
-                        .error(code::E1007, span, "LD needs an operand")
+                        .error(code::E1020, span, "LD needs an operand")
                         .label("nothing to load")
                         .hint("write LD x");
                     self.load(st, Ty::ERROR, span);
@@ -605,7 +605,7 @@ impl Body<'_, '_> {
                 let cr = self.use_cr(st, span, if negate { "STN" } else { "ST" });
                 let Some(o) = operand else {
                     self.a
-                        .error(code::E1026, span, "ST needs an operand")
+                        .error(code::E1020, span, "ST needs an operand")
                         .label("nothing to store into")
                         .hint("write ST x");
                     return;
@@ -654,8 +654,14 @@ impl Body<'_, '_> {
             Op::Not => {
                 let cr = self.use_cr(st, span, "NOT");
                 if let Some(o) = operand {
-                    // `NOT x` is not IEC IL; treat as reading the operand.
-                    let _ = self.read_operand(o);
+                    self.a
+                        .error(
+                            code::E1020,
+                            o.span(),
+                            "NOT takes no operand: it inverts the current result",
+                        )
+                        .label("unexpected operand")
+                        .hint("write LDN x (or LD x, NOT) to load an inverted value");
                 }
                 self.check_class_bit(&cr, span, "NOT");
                 rec.callee = Some(Callee::Std {
