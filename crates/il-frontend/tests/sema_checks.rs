@@ -500,3 +500,17 @@ END_PROGRAM
 ";
     assert_eq!(codes(src), vec!["E1020", "E1020"], "{}", check(src));
 }
+
+#[test]
+fn function_that_never_sets_its_result() {
+    insta::assert_snapshot!(check(
+        "FUNCTION Twice : INT
+VAR_INPUT
+  v : INT;
+END_VAR
+  LD v
+  MUL 2
+END_FUNCTION
+"
+    ));
+}

@@ -92,6 +92,8 @@ struct Edge {
 pub(super) struct Body<'a, 'd> {
     pub(super) a: &'a mut Analyzer<'d>,
     pub(super) pou: PouId,
+    /// A FUNCTION's result variable was written (ST/S/R/=> into its name).
+    pub(super) result_written: bool,
     pub(super) lits: LitVars,
     pub(super) recs: Vec<(Span, Rec)>,
     labels: HashMap<String, LabelDef>,
@@ -118,6 +120,7 @@ impl Analyzer<'_> {
             edges: HashMap::new(),
             backward: HashMap::new(),
             pos: 0,
+            result_written: false,
         };
         // Pass 1, silent: what the backward jumps bring.
         b.a.silent = true;
@@ -152,6 +155,18 @@ impl Analyzer<'_> {
             infos.push(info);
         }
         b.a.model.pous[id.0 as usize].instrs = infos;
+        if pou.kind == ast::PouKind::Function && !b.result_written && !pou.body.is_empty() {
+            self.warning(
+                code::W1003,
+                pou.name.span,
+                format!("function `{}` never sets its result", pou.name.name),
+            )
+            .label("no ST into the function's name in its body")
+            .hint(format!(
+                "store the result with ST {} (it is 0/FALSE/empty otherwise)",
+                pou.name.name
+            ));
+        }
     }
 
     fn collect_labels(

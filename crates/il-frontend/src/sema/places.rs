@@ -121,6 +121,9 @@ impl Body<'_, '_> {
         match o {
             Operand::Var(v) => {
                 let p = self.resolve_var(v);
+                if self.a.model.names.get(&v.base.span) == Some(&NameRef::FunctionResult) {
+                    self.result_written = true;
+                }
                 if let Some(ro) = p.read_only {
                     let mut d = self
                         .a
