@@ -188,6 +188,41 @@ pub trait TrajectorySource {
     fn duration(&self) -> f64;
     /// (position, velocity) of every axis at `t`, `0 <= t <= duration()`.
     fn state(&self, t: f64) -> Vec<(f64, f64)>;
+    /// The sample period if the source is sampled (PVT segment ends must then fall on samples).
+    fn sample_period(&self) -> Option<f64> {
+        None
+    }
+    /// Checks the source before use (E7003).
+    fn check(&self) -> Result<(), PmacError> {
+        Ok(())
+    }
+}
+
+/// A trajectory given by a function of time, e.g. an adapter around a motion-library profile.
+pub struct FnSource<F: Fn(f64) -> Vec<(f64, f64)>> {
+    pub axes: usize,
+    pub duration: f64,
+    pub state: F,
+}
+
+impl<F: Fn(f64) -> Vec<(f64, f64)>> TrajectorySource for FnSource<F> {
+    fn axis_count(&self) -> usize {
+        self.axes
+    }
+    fn duration(&self) -> f64 {
+        self.duration
+    }
+    fn state(&self, t: f64) -> Vec<(f64, f64)> {
+        (self.state)(t)
+    }
+    fn check(&self) -> Result<(), PmacError> {
+        if !(self.duration.is_finite() && self.duration > 0.0) || self.axes == 0 {
+            return Err(PmacError::trajectory(
+                "a trajectory needs at least one axis and a positive duration",
+            ));
+        }
+        Ok(())
+    }
 }
 
 /// A trajectory sampled every `cycle_s` seconds; `axes[k][i]` is axis k at `i * cycle_s`.
@@ -266,6 +301,12 @@ impl TrajectorySource for Trajectory {
             .iter()
             .map(|ax| quintic(ax[i], ax[i + 1], h, u))
             .collect()
+    }
+    fn sample_period(&self) -> Option<f64> {
+        Some(self.cycle_s)
+    }
+    fn check(&self) -> Result<(), PmacError> {
+        self.validate()
     }
 }
 

@@ -127,6 +127,14 @@ impl RestToRest {
     pub fn duration(&self) -> f64 {
         self.accel.time + self.cruise_time() + self.decel.time
     }
+    /// Path acceleration at `t`.
+    pub fn acceleration(&self, t: f64) -> f64 {
+        let v = self.peak_velocity;
+        let td = self.decel.time;
+        let stop = self.duration();
+        v * (s_ramp_acc(self.accel.time, self.accel.ts, t)
+            - s_ramp_acc(td, self.decel.ts, t - (stop - td)))
+    }
     /// Path position and speed at `t` (clamped to the move).
     pub fn eval(&self, t: f64) -> (f64, f64) {
         let v = self.peak_velocity;
@@ -181,6 +189,24 @@ pub fn s_ramp(time: f64, ts: f64, x: f64) -> (f64, f64) {
         let y = time - x;
         let (vy, iy) = rising(y);
         (1.0 - vy, time / 2.0 - (y - iy))
+    }
+}
+
+/// Acceleration of the normalised S ramp (derivative of `s_ramp`'s value).
+pub fn s_ramp_acc(time: f64, ts: f64, x: f64) -> f64 {
+    let time = time.max(2.0 * ts);
+    if x <= 0.0 || x >= time || time <= 0.0 {
+        return 0.0;
+    }
+    let y = x.min(time - x);
+    if ts <= 0.0 {
+        return 1.0 / time;
+    }
+    let peak = 1.0 / (time - ts);
+    if y <= ts {
+        peak * y / ts
+    } else {
+        peak
     }
 }
 

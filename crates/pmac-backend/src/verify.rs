@@ -13,7 +13,7 @@
 
 use crate::error::PmacError;
 use crate::model::{Sample, Trajectory, TrajectorySource};
-use crate::scurve::s_ramp;
+use crate::scurve::{s_ramp, s_ramp_acc};
 
 /// One move of a parsed program.
 #[derive(Debug, Clone, PartialEq)]
@@ -305,24 +305,6 @@ pub fn reconstruct_program(
         }
     }
     Ok(Trajectory { cycle_s, axes })
-}
-
-/// Acceleration of the normalised S ramp (derivative of `s_ramp`'s value).
-fn s_ramp_acc(time: f64, ts: f64, x: f64) -> f64 {
-    let time = time.max(2.0 * ts);
-    if x <= 0.0 || x >= time || time <= 0.0 {
-        return 0.0;
-    }
-    let y = x.min(time - x);
-    if ts <= 0.0 {
-        return 1.0 / time;
-    }
-    let peak = 1.0 / (time - ts);
-    if y <= ts {
-        peak * y / ts
-    } else {
-        peak
-    }
 }
 
 fn program_state(tl: &ProgramTimeline, origin: &[f64], t: f64) -> Vec<Sample> {
