@@ -52,6 +52,13 @@ impl PmacError {
     pub fn transport(message: impl Into<String>) -> Self {
         Self::new(Diagnostic::error(code::E7005, message))
     }
+    /// E7006: program or PVT text outside what the checker reads.
+    pub fn unreadable(line: usize, message: impl Into<String>) -> Self {
+        Self::new(Diagnostic::error(
+            code::E7006,
+            format!("line {line}: {}", message.into()),
+        ))
+    }
     pub fn diagnostic(&self) -> &Diagnostic {
         &self.diagnostic
     }

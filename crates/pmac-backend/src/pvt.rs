@@ -342,7 +342,45 @@ fn run_stream(
     Ok(report)
 }
 
+/// Writes the whole rotary-buffer script for `src` (set-up, PVT lines, run, close) to the file at `path`:
+/// what `ladderc run --pmac-pvt out.pmc` needs.
+pub fn write_file<S: TrajectorySource + ?Sized>(
+    cs: &CoordSystem,
+    src: &S,
+    opts: &PvtOptions,
+    path: &std::path::Path,
+) -> Result<StreamReport, PmacError> {
+    let segs = segments(src, opts.segment_ms / 1000.0)?;
+    let mut t = crate::transport::FileTransport::create(path)?;
+    stream(cs, &segs, opts, &StreamOptions::default(), &mut t)
+}
+
 fn poll(t: &mut dyn Transport, report: &mut StreamReport) -> Result<usize, PmacError> {
     report.polls += 1;
     t.lines_remaining()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::verify::hermite;
+
+    #[test]
+    fn hermite_bound_is_reached_by_a_jerk_jump_mid_segment() {
+        // p(t) = j/6 * (t - T/2)^3 for t > T/2: one jump of the jerk by j in the middle of the segment.
+        let (j, h) = (3.0, 0.02);
+        let p = |t: f64| j / 6.0 * (t - h / 2.0).max(0.0).powi(3);
+        let v = |t: f64| j / 2.0 * (t - h / 2.0).max(0.0).powi(2);
+        let worst = (0..=1000)
+            .map(|i| {
+                let u = i as f64 / 1000.0;
+                (hermite(p(0.0), v(0.0), p(h), v(h), h, u).0 - p(u * h)).abs()
+            })
+            .fold(0.0, f64::max);
+        let bound = hermite_error_bound(j, h);
+        assert!(
+            worst <= bound * (1.0 + 1e-9) && worst > 0.9 * bound,
+            "{worst} vs {bound}"
+        );
+    }
 }

@@ -71,6 +71,34 @@ impl ProgramTimeline {
         }
         out
     }
+    /// The commanded vector speed (over all axes) where each move meets the next: `None` after an exact stop,
+    /// `|V_i + V_(i+1)| / 2` in a blend (the blend's S ramp is half way at the corner). This is what the PMAC
+    /// does instead of a PLCopen junction velocity; compare the two to see how far LINEAR blending is from
+    /// the plan.
+    pub fn corner_speeds(&self) -> Vec<Option<f64>> {
+        let mut out = Vec::new();
+        for ch in &self.chains {
+            let vel = |m: &ProgMove| -> Vec<f64> {
+                m.end
+                    .iter()
+                    .zip(&m.start)
+                    .map(|(e, s)| (e - s) / m.tm)
+                    .collect()
+            };
+            for w in ch.moves.windows(2) {
+                let (a, b) = (vel(&w[0]), vel(&w[1]));
+                let speed = a
+                    .iter()
+                    .zip(&b)
+                    .map(|(x, y)| ((x + y) / 2.0).powi(2))
+                    .sum::<f64>()
+                    .sqrt();
+                out.push(Some(speed));
+            }
+            out.push(None);
+        }
+        out
+    }
     /// Total duration of the program's motion.
     pub fn duration(&self) -> f64 {
         self.chains.last().map_or(0.0, Chain::end_time)
@@ -83,7 +111,7 @@ fn parse_num(s: &str, line: usize) -> Result<f64, PmacError> {
         .parse::<f64>()
         .ok()
         .filter(|x| x.is_finite())
-        .ok_or_else(|| PmacError::transport(format!("program line {line}: `{s}` is not a number")))
+        .ok_or_else(|| PmacError::unreadable(line, format!("`{s}` is not a number")))
 }
 
 /// Parses a LINEAR program; `start` is the axis position when it begins (default 0).
@@ -163,11 +191,7 @@ pub fn parse_program(text: &str, start: Option<&[f64]>) -> Result<ProgramTimelin
             let mut t = match tm {
                 Some(t) => t,
                 None if f > 0.0 => dist / f,
-                None => {
-                    return Err(PmacError::transport(format!(
-                        "program line {lineno}: move without a feedrate"
-                    )))
-                }
+                None => return Err(PmacError::unreadable(lineno, "move without a feedrate")),
             };
             t = t.max(ta_eff);
             let mut ramp_in = (ta_eff, ts);
@@ -252,9 +276,10 @@ pub fn parse_program(text: &str, start: Option<&[f64]>) -> Result<ProgramTimelin
                     has_move = true;
                 }
                 _ => {
-                    return Err(PmacError::transport(format!(
-                    "program line {lineno}: `{w}` is not in the LINEAR subset this checker reads"
-                )))
+                    return Err(PmacError::unreadable(
+                        lineno,
+                        format!("`{w}` is not in the LINEAR subset this checker reads"),
+                    ))
                 }
             }
         }
@@ -463,9 +488,8 @@ pub fn reconstruct_pvt(
             any = true;
         }
         if any {
-            let h = seg_s.ok_or_else(|| {
-                PmacError::trajectory(format!("PVT line {} before any PVT time", i + 1))
-            })?;
+            let h = seg_s
+                .ok_or_else(|| PmacError::unreadable(i + 1, "PVT line before any PVT time"))?;
             segments.push((t, h, prev.clone(), end.clone()));
             t += h;
             prev = end;
@@ -539,6 +563,13 @@ mod tests {
     #[test]
     fn unknown_words_are_reported() {
         let e = program_move_times("OPEN PROG 1\nCIRCLE1 X1\nCLOSE\n").unwrap_err();
-        assert_eq!(e.code(), "E7005");
+        assert_eq!(e.code(), "E7006");
+        assert!(e.diagnostic().message.starts_with("line 2:"), "{e}");
+        let e = program_move_times("OPEN PROG 1\nX1\nCLOSE\n").unwrap_err();
+        assert_eq!(e.code(), "E7006");
+        let e = program_move_times("OPEN PROG 1\nF1 X1y\nCLOSE\n").unwrap_err();
+        assert_eq!(e.code(), "E7006");
+        let e = reconstruct_pvt("X1:2", &['X'], &[0.0], 1000.0).unwrap_err();
+        assert_eq!(e.code(), "E7006");
     }
 }

@@ -325,3 +325,26 @@ fn file_transport_reports_unwritable_paths() {
         .unwrap();
     assert_eq!(err.code(), "E7005");
 }
+
+#[test]
+fn write_file_is_the_streamed_script() {
+    let input = sampled(&[stop_move(vec![0.2, 0.1], 1.0, 10.0, 100.0)], 0.001);
+    let c = cs(&['X', 'Y']);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("pvt.pmc");
+    let report = pvt::write_file(&c, &input, &PvtOptions::default(), &path).unwrap();
+    let mut mem = FileTransport::new(Vec::new());
+    pvt::stream(
+        &c,
+        &short_segments(),
+        &PvtOptions::default(),
+        &StreamOptions::default(),
+        &mut mem,
+    )
+    .unwrap();
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        String::from_utf8(mem.into_inner()).unwrap()
+    );
+    assert_eq!(report.lines_sent, 42);
+}
