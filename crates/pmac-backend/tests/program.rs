@@ -194,6 +194,7 @@ fn rest_to_rest_matches_ruckig_through_the_program() {
         }],
     };
     let mut checked = 0;
+    let mut worst: f64 = 0.0;
     for line in text.lines() {
         let o: serde_json::Value = serde_json::from_str(line).unwrap();
         if o["kind"] != "rest" {
@@ -222,8 +223,10 @@ fn rest_to_rest_matches_ruckig_through_the_program() {
             (got - f("duration")).abs() <= 1e-3,
             "{line}: program gives {got}"
         );
+        worst = worst.max((got - f("duration")).abs());
         checked += 1;
     }
+    eprintln!("{checked} rest problems, worst move-time difference {worst:e} s");
     assert!(checked >= 100, "only {checked} rest problems");
 }
 
@@ -232,6 +235,7 @@ fn line_projection_matches_ruckig() {
     // Three axes, per-axis limits projected onto the line: same duration as ruckig's optimum along the line.
     let text = shared("oracle/ruckig-profiles.jsonl");
     let mut checked = 0;
+    let mut worst: f64 = 0.0;
     for line in text.lines() {
         let o: serde_json::Value = serde_json::from_str(line).unwrap();
         if o["kind"] != "line3" {
@@ -264,8 +268,10 @@ fn line_projection_matches_ruckig() {
             "{line}: {}",
             r.duration()
         );
+        worst = worst.max((r.duration() - want).abs() / want);
         checked += 1;
     }
+    eprintln!("{checked} line3 problems, worst relative duration difference {worst:e}");
     assert!(checked >= 100);
 }
 
