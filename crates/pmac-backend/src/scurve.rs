@@ -50,6 +50,18 @@ pub fn project(
     Some((length, lim))
 }
 
+/// The per-axis limit that gives `path_limit` on the line `delta` after projection: `path_limit * max |u_k|`.
+/// Use it when a planner gives path limits (PLCopen MC_MoveLinear* velocity is along the path) and the move
+/// is to be written as a [`crate::LinearMove`], whose limits are per axis. `None` for a zero-length line.
+pub fn axis_limit_for_path(delta: &[f64], path_limit: f64) -> Option<f64> {
+    let length = delta.iter().map(|d| d * d).sum::<f64>().sqrt();
+    if !(length > 0.0 && length.is_finite()) {
+        return None;
+    }
+    let dominant = delta.iter().map(|d| d.abs()).fold(0.0, f64::max) / length;
+    Some(path_limit * dominant)
+}
+
 /// A speed change of `dv` from or to rest, as the PMAC times it: total time `time` (TA or TD) with S-curve
 /// time `ts`, reaching `peak_acceleration`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -228,6 +240,15 @@ mod tests {
         assert!((lim.velocity - 40.0 * len / 1600.0).abs() < 1e-9);
         assert!((lim.jerk - 2.0 * len / 1600.0).abs() < 1e-9);
         assert!(project(&[0.0, 0.0], &[1.0; 2], &[1.0; 2], &[1.0; 2], &[1.0; 2]).is_none());
+    }
+
+    #[test]
+    fn path_limits_round_trip_through_axis_limits() {
+        let delta = [600.0, 2600.0, 4200.0];
+        let axis = axis_limit_for_path(&delta, 55.0).unwrap();
+        let (_, lim) = project(&delta, &[axis; 3], &[axis; 3], &[axis; 3], &[axis; 3]).unwrap();
+        assert!((lim.velocity - 55.0).abs() < 1e-12);
+        assert!(axis_limit_for_path(&[0.0, 0.0], 1.0).is_none());
     }
 
     #[test]

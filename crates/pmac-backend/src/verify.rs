@@ -466,7 +466,11 @@ pub fn reconstruct_pvt(
         let mut any = false;
         for w in line.split_whitespace() {
             if let Some(ms) = w.strip_prefix("PVT") {
-                seg_s = Some(parse_num(ms, i + 1)? / 1000.0);
+                let ms = parse_num(ms, i + 1)?;
+                if ms <= 0.0 {
+                    return Err(PmacError::unreadable(i + 1, "PVT time must be positive"));
+                }
+                seg_s = Some(ms / 1000.0);
                 continue;
             }
             match w {
@@ -570,6 +574,8 @@ mod tests {
         let e = program_move_times("OPEN PROG 1\nF1 X1y\nCLOSE\n").unwrap_err();
         assert_eq!(e.code(), "E7006");
         let e = reconstruct_pvt("X1:2", &['X'], &[0.0], 1000.0).unwrap_err();
+        assert_eq!(e.code(), "E7006");
+        let e = reconstruct_pvt("PVT0\nX1:2", &['X'], &[0.0], 1000.0).unwrap_err();
         assert_eq!(e.code(), "E7006");
     }
 }
