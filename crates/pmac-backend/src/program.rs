@@ -98,7 +98,7 @@ pub fn plan(
         length: f64,
         speed: f64,
         unit: Vec<f64>,
-        rest: Option<RestToRest>,
+        rest: RestToRest,
     }
     let mut legs: Vec<Leg> = Vec::new();
     for (i, m) in moves.iter().enumerate() {
@@ -125,7 +125,7 @@ pub fn plan(
             length,
             speed: lim.velocity,
             unit,
-            rest: Some(RestToRest::plan(length, &lim)),
+            rest: RestToRest::plan(length, &lim),
         });
         pos = end;
     }
@@ -140,7 +140,7 @@ pub fn plan(
         }
         let chain = &legs[chain_start..=idx];
         if chain.len() == 1 {
-            let r = chain[0].rest.expect("planned above");
+            let r = chain[0].rest;
             out.push((r.peak_velocity, r.accel, r.decel, true));
         } else {
             // Blended chain: each move at its path speed limit; each transition is the fastest ramp for the

@@ -507,12 +507,15 @@ pub fn reconstruct_pvt(
 }
 
 /// Largest |position difference| between two motions over all axes, checked every `step` seconds up to the
-/// longer duration (each motion holds its end point after it ends).
+/// longer duration (each motion holds its end point after it ends). Infinite if `step` is not positive.
 pub fn max_deviation<A, B>(a: &A, b: &B, step: f64) -> f64
 where
     A: TrajectorySource + ?Sized,
     B: TrajectorySource + ?Sized,
 {
+    if !(step.is_finite() && step > 0.0) {
+        return f64::INFINITY;
+    }
     let end = a.duration().max(b.duration());
     let steps = (end / step).ceil() as usize;
     let mut worst: f64 = 0.0;
