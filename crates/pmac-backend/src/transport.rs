@@ -212,3 +212,171 @@ impl Transport for GpasciiTcp {
         self.writer.flush().map_err(|e| io_err("send", e))
     }
 }
+
+/// Request types and codes of the Turbo PMAC Ethernet protocol (ETHERNETCMD, 8-byte header).
+pub mod turbo_eth {
+    /// Host to controller.
+    pub const VR_DOWNLOAD: u8 = 0x40;
+    /// Controller to host.
+    pub const VR_UPLOAD: u8 = 0xC0;
+    /// Send a command line and get its response.
+    pub const VR_PMAC_GETRESPONSE: u8 = 0xBF;
+    /// Flush the controller's response queue (answered by one byte).
+    pub const VR_PMAC_FLUSH: u8 = 0xB3;
+    /// Largest data part of one packet.
+    pub const MAX_DATA: usize = 1492;
+    /// ACK ends a normal response.
+    pub const ACK: u8 = 0x06;
+    /// BELL starts an error response `<BELL>ERRnnn<CR>`.
+    pub const BELL: u8 = 0x07;
+    /// STX starts a `<STX>data<CR>` response.
+    pub const STX: u8 = 0x02;
+
+    /// The 8-byte header followed by `data`; 16-bit fields in network byte order (as `htons` in host code).
+    pub fn packet(request_type: u8, request: u8, data: &[u8]) -> Vec<u8> {
+        let mut p = Vec::with_capacity(8 + data.len());
+        p.push(request_type);
+        p.push(request);
+        p.extend_from_slice(&0u16.to_be_bytes()); // wValue
+        p.extend_from_slice(&0u16.to_be_bytes()); // wIndex
+        p.extend_from_slice(&(data.len() as u16).to_be_bytes()); // wLength
+        p.extend_from_slice(data);
+        p
+    }
+}
+
+/// Settings of the Turbo PMAC Ethernet transport.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TurboEthernetOptions {
+    /// Rotary buffer capacity in lines.
+    pub capacity_lines: usize,
+    /// Read timeout for each response.
+    pub timeout: Duration,
+    /// Pause between polls of a full buffer.
+    pub poll_interval: Duration,
+    /// Longest response accepted, in bytes.
+    pub max_response: usize,
+}
+
+impl Default for TurboEthernetOptions {
+    fn default() -> Self {
+        TurboEthernetOptions {
+            capacity_lines: 256,
+            timeout: Duration::from_secs(5),
+            poll_interval: Duration::from_millis(20),
+            max_response: 64 * 1024,
+        }
+    }
+}
+
+/// A Turbo PMAC over Ethernet (TCP port 1025): every line is sent as a `VR_PMAC_GETRESPONSE` packet and its
+/// response is read at once (`data<CR>...<ACK>` normally, `<BELL>ERRnnn<CR>` on error, which is reported as
+/// E7004), so an error stops the stream at the offending line. Needs I3=2 and I6=1 (ACK handshake, errors
+/// reported) on the controller.
+pub struct TurboEthernet {
+    stream: TcpStream,
+    opts: TurboEthernetOptions,
+}
+
+impl TurboEthernet {
+    /// Connects and flushes the controller's response queue.
+    pub fn connect(
+        addr: impl ToSocketAddrs,
+        opts: TurboEthernetOptions,
+    ) -> Result<Self, PmacError> {
+        let first = addr
+            .to_socket_addrs()
+            .map_err(|e| io_err("resolve address", e))?
+            .next()
+            .ok_or_else(|| PmacError::transport("no address to connect to"))?;
+        let stream = TcpStream::connect_timeout(&first, opts.timeout)
+            .map_err(|e| io_err(&format!("connect {first}"), e))?;
+        stream
+            .set_read_timeout(Some(opts.timeout))
+            .and_then(|()| stream.set_write_timeout(Some(opts.timeout)))
+            .and_then(|()| stream.set_nodelay(true))
+            .map_err(|e| io_err("configure socket", e))?;
+        let mut me = TurboEthernet { stream, opts };
+        me.write_packet(turbo_eth::VR_DOWNLOAD, turbo_eth::VR_PMAC_FLUSH, &[])?;
+        let mut ack = [0u8; 1];
+        std::io::Read::read_exact(&mut me.stream, &mut ack).map_err(|e| io_err("flush", e))?;
+        Ok(me)
+    }
+
+    fn write_packet(&mut self, rt: u8, req: u8, data: &[u8]) -> Result<(), PmacError> {
+        self.stream
+            .write_all(&turbo_eth::packet(rt, req, data))
+            .map_err(|e| io_err("send", e))
+    }
+
+    /// Sends one command line and returns its response text (lines joined by `\n`, without ACK).
+    pub fn request(&mut self, line: &str) -> Result<String, PmacError> {
+        let mut data = line.as_bytes().to_vec();
+        data.push(b'\r');
+        if data.len() > turbo_eth::MAX_DATA {
+            return Err(PmacError::transport(format!(
+                "line of {} bytes is longer than a packet ({} bytes)",
+                data.len(),
+                turbo_eth::MAX_DATA
+            )));
+        }
+        self.write_packet(
+            turbo_eth::VR_DOWNLOAD,
+            turbo_eth::VR_PMAC_GETRESPONSE,
+            &data,
+        )?;
+        let mut resp: Vec<u8> = Vec::new();
+        let mut byte = [0u8; 1];
+        let mut flagged = false;
+        loop {
+            std::io::Read::read_exact(&mut self.stream, &mut byte)
+                .map_err(|e| io_err(&format!("response to `{line}`"), e))?;
+            match byte[0] {
+                turbo_eth::ACK => break,
+                turbo_eth::BELL | turbo_eth::STX if resp.is_empty() => flagged = true,
+                b'\r' if flagged => break,
+                b => resp.push(b),
+            }
+            if resp.len() > self.opts.max_response {
+                return Err(PmacError::transport(format!(
+                    "response to `{line}` is longer than {} bytes",
+                    self.opts.max_response
+                )));
+            }
+        }
+        let text = String::from_utf8_lossy(&resp)
+            .split('\r')
+            .map(str::trim)
+            .filter(|s| !s.is_empty())
+            .collect::<Vec<_>>()
+            .join("\n");
+        if (flagged && text.to_ascii_uppercase().starts_with("ERR"))
+            || text.to_ascii_lowercase().contains("error")
+        {
+            return Err(PmacError::controller(&format!("{text} (after `{line}`)")));
+        }
+        Ok(text)
+    }
+}
+
+impl Transport for TurboEthernet {
+    fn send(&mut self, line: &str) -> Result<(), PmacError> {
+        self.request(line).map(|_| ())
+    }
+    fn capacity(&self) -> Option<usize> {
+        Some(self.opts.capacity_lines)
+    }
+    fn lines_remaining(&mut self) -> Result<usize, PmacError> {
+        let text = self.request("PR")?;
+        text.lines()
+            .rev()
+            .find_map(|l| l.trim().parse::<usize>().ok())
+            .ok_or_else(|| PmacError::transport(format!("no number in reply to `PR`: {text:?}")))
+    }
+    fn wait(&mut self) {
+        std::thread::sleep(self.opts.poll_interval);
+    }
+    fn flush(&mut self) -> Result<(), PmacError> {
+        Ok(())
+    }
+}
