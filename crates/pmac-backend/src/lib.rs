@@ -6,6 +6,7 @@
 //! Output: motion-program text ([`program::write`]), PVT segments and their text ([`pvt::segments`],
 //! [`pvt::to_lines`]), streaming of that text through a [`transport::Transport`] ([`pvt::stream`]), and checks
 //! that the emitted text reproduces the input motion ([`verify`]).
+//! Transports: a file, a `gpascii`-style TCP line protocol (Power PMAC) and the Turbo PMAC Ethernet protocol.
 //! Invariants: nothing here panics on bad input; invalid input gives a [`diagnostics::Diagnostic`] with an
 //! `E7xxx` code. No real controller was available while this was written: the protocol follows the manuals and
 //! is tested against a loopback simulator.

@@ -17,6 +17,20 @@ pub enum Dialect {
     Power,
 }
 
+impl std::str::FromStr for Dialect {
+    type Err = String;
+    /// `turbo` (also `pmac`, `turbo-pmac`) or `power` (also `power-pmac`, `ppmac`), any case.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s.trim().to_ascii_lowercase().as_str() {
+            "turbo" | "pmac" | "turbo-pmac" => Ok(Dialect::Turbo),
+            "power" | "power-pmac" | "ppmac" => Ok(Dialect::Power),
+            other => Err(format!(
+                "unknown PMAC dialect `{other}` (expected `turbo` or `power`)"
+            )),
+        }
+    }
+}
+
 /// One axis of a coordinate system: `#motor->counts_per_unit name`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AxisDef {
@@ -356,6 +370,13 @@ mod tests {
                 },
             ],
         }
+    }
+
+    #[test]
+    fn dialect_names() {
+        assert_eq!("Turbo".parse::<Dialect>(), Ok(Dialect::Turbo));
+        assert_eq!("ppmac".parse::<Dialect>(), Ok(Dialect::Power));
+        assert!("umac".parse::<Dialect>().unwrap_err().contains("umac"));
     }
 
     #[test]

@@ -74,6 +74,19 @@ pub fn write_with(
     Ok(render(cs, &planned, opts))
 }
 
+/// Writes the program to `out` (e.g. the file of `ladderc run --pmac out.pmc`); write failures are E7005.
+pub fn write_to(
+    out: &mut dyn std::io::Write,
+    cs: &CoordSystem,
+    moves: &[LinearMove],
+    opts: &ProgramOptions,
+) -> Result<(), PmacError> {
+    let text = write_with(cs, moves, opts)?;
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| PmacError::transport(format!("cannot write the PMAC program: {e}")))
+}
+
 /// Validates and plans every move: distances, path limits, feedrates and ramps.
 pub fn plan(
     cs: &CoordSystem,

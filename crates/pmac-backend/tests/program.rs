@@ -382,3 +382,26 @@ fn zero_length_moves_are_skipped() {
     let text = program::write(&xyz(), &moves, Dialect::Turbo).unwrap();
     assert_eq!(program_move_times(&text).unwrap().len(), 3);
 }
+
+#[test]
+fn write_to_writes_the_same_text() {
+    let moves = paper_b([40.0, 55.0, 70.0], STOPS);
+    let mut out = Vec::new();
+    program::write_to(&mut out, &xyz(), &moves, &ProgramOptions::default()).unwrap();
+    assert_eq!(
+        String::from_utf8(out).unwrap(),
+        program::write(&xyz(), &moves, Dialect::Turbo).unwrap()
+    );
+    struct Broken;
+    impl std::io::Write for Broken {
+        fn write(&mut self, _: &[u8]) -> std::io::Result<usize> {
+            Err(std::io::Error::other("disk full"))
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+    let e = program::write_to(&mut Broken, &xyz(), &moves, &ProgramOptions::default()).unwrap_err();
+    assert_eq!(e.code(), "E7005");
+    assert!(e.diagnostic().message.contains("disk full"));
+}
