@@ -177,6 +177,7 @@ fn program_motion_follows_the_jerk_limited_plan() {
         }
         // Within what 1 ms of travel at the highest axis speed covers (F is rounded to 3 decimals).
         let dev = max_deviation(&pmac, &plan, 0.05);
+        eprintln!("speeds {speeds:?}: program vs plan, max deviation {dev:e}");
         assert!(dev < 70.0 * 1e-3, "deviation {dev} for {speeds:?}");
     }
 }
