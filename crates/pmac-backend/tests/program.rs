@@ -160,9 +160,13 @@ fn planned(moves: &[LinearMove]) -> Planned {
 
 #[test]
 fn program_motion_follows_the_jerk_limited_plan() {
-    for speeds in [[40.0, 70.0, 40.0], [40.0, 55.0, 70.0]] {
+    for (speeds, dialect) in [
+        ([40.0, 70.0, 40.0], Dialect::Turbo),
+        ([40.0, 55.0, 70.0], Dialect::Turbo),
+        ([40.0, 55.0, 70.0], Dialect::Power),
+    ] {
         let moves = paper_b(speeds, STOPS);
-        let text = program::write(&xyz(), &moves, Dialect::Turbo).unwrap();
+        let text = program::write(&xyz(), &moves, dialect).unwrap();
         let pmac = reconstruct_program(&text, None, 0.01).unwrap();
         let plan = planned(&moves);
         // Move by move, the program's times equal the plan's to 1 ms.
@@ -405,4 +409,36 @@ fn write_to_writes_the_same_text() {
     let e = program::write_to(&mut Broken, &xyz(), &moves, &ProgramOptions::default()).unwrap_err();
     assert_eq!(e.code(), "E7005");
     assert!(e.diagnostic().message.contains("disk full"));
+}
+
+#[test]
+fn blended_program_respects_axis_limits() {
+    // Every axis stays within its speed (up to F's rounding) and acceleration limits through the blends.
+    let blend = |v| Transition::Blend {
+        junction_velocity: v,
+    };
+    let moves = paper_b(
+        [40.0, 55.0, 70.0],
+        [blend(40.0), blend(70.0), Transition::ExactStop],
+    );
+    for dialect in [Dialect::Turbo, Dialect::Power] {
+        let text = program::write(&xyz(), &moves, dialect).unwrap();
+        let tr = reconstruct_program(&text, None, 0.01).unwrap();
+        let (mut vmax, mut amax): (f64, f64) = (0.0, 0.0);
+        for axis in &tr.axes {
+            for s in axis {
+                vmax = vmax.max(s.v.abs());
+                amax = amax.max(s.a.abs());
+            }
+        }
+        assert!(vmax <= 70.0 * (1.0 + 1e-5), "{dialect:?}: speed {vmax}");
+        assert!(
+            amax <= 5.0 * (1.0 + 1e-5),
+            "{dialect:?}: acceleration {amax}"
+        );
+        assert!(
+            amax > 4.99,
+            "{dialect:?}: some blend uses the full acceleration ({amax})"
+        );
+    }
 }
