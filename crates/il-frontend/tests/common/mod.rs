@@ -46,7 +46,9 @@ impl Parsed {
 pub fn shape<T: serde::Serialize>(t: &T) -> serde_json::Value {
     fn strip(v: &mut serde_json::Value) {
         match v {
-            serde_json::Value::Object(m) if m.len() == 3 && m.contains_key("file") && m.contains_key("start") => {
+            serde_json::Value::Object(m)
+                if m.len() == 3 && m.contains_key("file") && m.contains_key("start") =>
+            {
                 *v = serde_json::Value::Null;
             }
             serde_json::Value::Object(m) => {
@@ -69,11 +71,14 @@ pub fn shape<T: serde::Serialize>(t: &T) -> serde_json::Value {
 pub fn corpus_il() -> Vec<std::path::PathBuf> {
     let root = env!("CARGO_MANIFEST_DIR");
     // `shared/` sits beside the repository (CI) or beside the worktree folder (local worktrees).
-    let dir = ["/../../../shared/corpus/il", "/../../../../shared/corpus/il"]
-        .iter()
-        .map(|d| std::path::PathBuf::from(format!("{root}{d}")))
-        .find(|d| d.is_dir())
-        .expect("shared/corpus/il beside the repository");
+    let dir = [
+        "/../../../shared/corpus/il",
+        "/../../../../shared/corpus/il",
+    ]
+    .iter()
+    .map(|d| std::path::PathBuf::from(format!("{root}{d}")))
+    .find(|d| d.is_dir())
+    .expect("shared/corpus/il beside the repository");
     let mut files: Vec<_> = std::fs::read_dir(dir)
         .expect("corpus dir")
         .map(|e| e.expect("entry").path())
@@ -97,10 +102,19 @@ pub fn assert_round_trip(name: &str, src: &str) -> String {
         serde_json::to_string_pretty(&shape(&first.unit)).unwrap(),
         serde_json::to_string_pretty(&shape(&second.unit)).unwrap(),
     );
-    if let Some((n, (x, y))) = a.lines().zip(b.lines()).enumerate().find(|(_, (x, y))| x != y) {
+    if let Some((n, (x, y))) = a
+        .lines()
+        .zip(b.lines())
+        .enumerate()
+        .find(|(_, (x, y))| x != y)
+    {
         panic!("tree changed for {name} at line {n} of its JSON: {x} != {y}\n{printed}");
     }
-    assert_eq!(a.lines().count(), b.lines().count(), "tree changed for {name}");
+    assert_eq!(
+        a.lines().count(),
+        b.lines().count(),
+        "tree changed for {name}"
+    );
     let again = il_frontend::print::unit(&second.unit);
     assert_eq!(printed, again, "printing is not a fixed point for {name}");
     printed
