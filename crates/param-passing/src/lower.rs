@@ -223,6 +223,7 @@ fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt 
 struct BlockUse<'a> {
     template: &'a Template,
     calls: usize,
+    first_call: Span,
 }
 
 /// Instances of template blocks declared in a POU (and in global blocks): variable key -> block name.
@@ -315,6 +316,7 @@ pub fn lower(
                     .or_insert(BlockUse {
                         template: t,
                         calls: 0,
+                        first_call: c.span,
                     })
                     .calls += 1;
             }
@@ -341,7 +343,8 @@ pub fn lower(
                         code::E4020,
                         format!("block `{name}` needs {needed} bytes of TM area, but the target has {available}"),
                     )
-                    .at(u.template.span)
+                    .at(u.first_call)
+                    .with_label(u.template.span, "parameters declared in this template")
                     .with_hint("enlarge `tm_bytes` in the target profile, or use --strategy template (no TM area)"),
                 );
             }
