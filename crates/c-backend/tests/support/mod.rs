@@ -13,9 +13,18 @@ use std::path::PathBuf;
 
 /// Parses (test reader until the real parser lands) and analyses; panics on front-end errors.
 pub fn frontend(src: &str) -> (Vec<CompilationUnit>, Model, SourceMap) {
+    frontend_with(src, |_, _| {})
+}
+
+/// Like [`frontend`], letting the test add elements (configurations) to the parsed unit.
+pub fn frontend_with(
+    src: &str,
+    edit: impl FnOnce(&mut CompilationUnit, diagnostics::FileId),
+) -> (Vec<CompilationUnit>, Model, SourceMap) {
     let mut map = SourceMap::new();
     let file = map.add("test.il", src.to_string());
-    let unit = sema_support::read(file, src);
+    let mut unit = sema_support::read(file, src);
+    edit(&mut unit, file);
     let mut diags = Diagnostics::new();
     let units = vec![unit];
     let model = analyze(&units, &mut diags);
