@@ -27,7 +27,12 @@ fn task(file: diagnostics::FileId, name: &str, interval_ms: Option<i128>, priori
     }
 }
 
-fn instance(file: diagnostics::FileId, name: &str, task: Option<&str>, ty: &str) -> ProgramInstance {
+fn instance(
+    file: diagnostics::FileId,
+    name: &str,
+    task: Option<&str>,
+    ty: &str,
+) -> ProgramInstance {
     ProgramInstance {
         name: ident(file, name),
         retain: false,
@@ -38,7 +43,12 @@ fn instance(file: diagnostics::FileId, name: &str, task: Option<&str>, ty: &str)
     }
 }
 
-fn configuration(file: diagnostics::FileId, tasks: Vec<Task>, programs: Vec<ProgramInstance>, globals: Vec<VarBlock>) -> LibraryElement {
+fn configuration(
+    file: diagnostics::FileId,
+    tasks: Vec<Task>,
+    programs: Vec<ProgramInstance>,
+    globals: Vec<VarBlock>,
+) -> LibraryElement {
     let sp = diagnostics::Span::new(file, 0, 0);
     LibraryElement::Configuration(Configuration {
         name: ident(file, "cfg"),
@@ -79,16 +89,37 @@ fn a_task_of_interval_20ms_at_cycle_10ms_runs_every_second_cycle() {
             Vec::new(),
         ))
     });
-    let p = generate_with(&units, &model, &map, &TargetProfile::default(), &Options::default());
+    let p = generate_with(
+        &units,
+        &model,
+        &map,
+        &TargetProfile::default(),
+        &Options::default(),
+    );
     let b = build_program(p);
     let rows = run(&b, 8, 10.0, "", &["a.n", "b.n", "c.n"]);
-    assert_eq!(column(&rows, "a.n"), ["1", "1", "2", "2", "3", "3", "4", "4"]);
-    assert_eq!(column(&rows, "b.n"), ["1", "2", "3", "4", "5", "6", "7", "8"]);
-    assert_eq!(column(&rows, "c.n"), ["1", "2", "3", "4", "5", "6", "7", "8"]);
+    assert_eq!(
+        column(&rows, "a.n"),
+        ["1", "1", "2", "2", "3", "3", "4", "4"]
+    );
+    assert_eq!(
+        column(&rows, "b.n"),
+        ["1", "2", "3", "4", "5", "6", "7", "8"]
+    );
+    assert_eq!(
+        column(&rows, "c.n"),
+        ["1", "2", "3", "4", "5", "6", "7", "8"]
+    );
     // with a 5 ms cycle the 20 ms task runs every fourth cycle and the 10 ms task every second
     let rows = run(&b, 8, 5.0, "", &["a.n", "b.n"]);
-    assert_eq!(column(&rows, "a.n"), ["1", "1", "1", "1", "2", "2", "2", "2"]);
-    assert_eq!(column(&rows, "b.n"), ["1", "1", "2", "2", "3", "3", "4", "4"]);
+    assert_eq!(
+        column(&rows, "a.n"),
+        ["1", "1", "1", "1", "2", "2", "2", "2"]
+    );
+    assert_eq!(
+        column(&rows, "b.n"),
+        ["1", "1", "2", "2", "3", "3", "4", "4"]
+    );
     // with a 30 ms cycle (slower than both tasks) every task runs every cycle
     let rows = run(&b, 3, 30.0, "", &["a.n", "b.n"]);
     assert_eq!(column(&rows, "a.n"), ["1", "2", "3"]);
@@ -132,7 +163,10 @@ END_PROGRAM
         }];
         u.items.push(configuration(
             f,
-            vec![task(f, "t_low", Some(10), 5), task(f, "t_high", Some(10), 0)],
+            vec![
+                task(f, "t_low", Some(10), 5),
+                task(f, "t_high", Some(10), 0),
+            ],
             vec![
                 instance(f, "p1", Some("t_low"), "first"),
                 instance(f, "p2", Some("t_high"), "second"),
@@ -140,7 +174,13 @@ END_PROGRAM
             globals,
         ))
     });
-    let p = generate_with(&units, &model, &map, &TargetProfile::default(), &Options::default());
+    let p = generate_with(
+        &units,
+        &model,
+        &map,
+        &TargetProfile::default(),
+        &Options::default(),
+    );
     let b = build_program(p);
     let rows = run(&b, 2, 10.0, "", &["log"]);
     // priority 0 (second, +2) before priority 5 (first, +1)

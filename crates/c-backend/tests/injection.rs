@@ -43,7 +43,20 @@ END_PROGRAM
     let b = build_src(src);
     let c = b.program.file("program.c").unwrap();
     assert!(c.contains("FB_main_BODY(&self->v_self)"), "{c}");
-    let rows = run(&b, 2, 10.0, "", &["printf.exit", "printf.ladderc_now", "printf.int_", "printf._Bool", "printf.int", "printf.char"]);
+    let rows = run(
+        &b,
+        2,
+        10.0,
+        "",
+        &[
+            "printf.exit",
+            "printf.ladderc_now",
+            "printf.int_",
+            "printf._Bool",
+            "printf.int",
+            "printf.char",
+        ],
+    );
     assert_eq!(column(&rows, "printf.exit"), ["42", "42"]);
     assert_eq!(column(&rows, "printf.ladderc_now"), ["42", "42"]);
     assert_eq!(column(&rows, "printf._Bool"), ["1", "1"]);
@@ -69,7 +82,10 @@ END_PROGRAM
     let b = build_src(src);
     for (name, text) in &b.program.files {
         if name.starts_with("program") {
-            assert!(!text.contains("system(\""), "{name} holds user text verbatim");
+            assert!(
+                !text.contains("system(\""),
+                "{name} holds user text verbatim"
+            );
             assert!(!text.contains("exit(3)"), "{name} holds user text verbatim");
         }
     }
@@ -77,7 +93,13 @@ END_PROGRAM
     // the trace quotes strings CSV-style (quotes doubled); split on ',' is naive, so rejoin the row
     let raw: Vec<String> = rows[1].clone();
     let line = raw.join(",");
-    assert!(line.contains("\"\"\"*/ system(\"\"echo INJECTED\"\"); /*\""), "{line}");
-    assert!(line.contains("\"*/ exit(3); /* \"\" \\\\ ??/ %s\""), "{line}");
+    assert!(
+        line.contains("\"\"\"*/ system(\"\"echo INJECTED\"\"); /*\""),
+        "{line}"
+    );
+    assert!(
+        line.contains("\"*/ exit(3); /* \"\" \\\\ ??/ %s\""),
+        "{line}"
+    );
     assert!(line.ends_with(",0"), "{line}");
 }

@@ -10,7 +10,11 @@ fn run_c_tests(profile: &TargetProfile, expect_big: bool) {
     for (name, text) in runtime::files() {
         std::fs::write(d.join(name), text).unwrap();
     }
-    std::fs::write(d.join("ladderc_config.h"), c_backend::config_header(profile)).unwrap();
+    std::fs::write(
+        d.join("ladderc_config.h"),
+        c_backend::config_header(profile),
+    )
+    .unwrap();
     let test = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/c/rt_test.c");
     let exe = d.join("rt_test");
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
