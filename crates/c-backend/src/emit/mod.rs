@@ -42,7 +42,7 @@ pub struct Gen<'a> {
 /// Records the address span of every located declaration in the units.
 fn collect_address_spans(units: &[CompilationUnit]) -> HashMap<Span, Span> {
     let mut map = HashMap::new();
-    let mut block = |b: &il_frontend::ast::VarBlock, map: &mut HashMap<Span, Span>| {
+    let block = |b: &il_frontend::ast::VarBlock, map: &mut HashMap<Span, Span>| {
         for d in &b.vars {
             if let Some(a) = &d.location {
                 map.insert(d.name.span, a.span);
