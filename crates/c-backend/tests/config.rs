@@ -209,3 +209,123 @@ END_PROGRAM
     let rows = run(&b, 2, 10.0, "", &["trace"]);
     assert_eq!(column(&rows, "trace"), ["12", "1212"]);
 }
+
+fn global(f: diagnostics::FileId, name: &str, ty: &str, init: Option<i128>) -> VarDecl {
+    let sp = diagnostics::Span::new(f, 0, 0);
+    VarDecl {
+        name: ident(f, name),
+        location: None,
+        ty: TypeRef::Named(ident(f, ty)),
+        init: init.map(|v| {
+            Initializer::Value(Operand::Literal(Literal {
+                kind: LiteralKind::Int(v),
+                type_prefix: None,
+                span: sp,
+            }))
+        }),
+        span: sp,
+    }
+}
+
+fn globals(f: diagnostics::FileId, vars: Vec<VarDecl>) -> Vec<VarBlock> {
+    vec![VarBlock {
+        kind: VarKind::Global,
+        constant: false,
+        retain: false,
+        vars,
+        span: diagnostics::Span::new(f, 0, 0),
+    }]
+}
+
+fn var_operand(f: diagnostics::FileId, name: &str) -> Operand {
+    Operand::Var(VarRef {
+        base: ident(f, name),
+        accessors: Vec::new(),
+        span: diagnostics::Span::new(f, 0, 0),
+    })
+}
+
+#[test]
+fn a_single_task_runs_once_per_rising_edge_of_its_variable() {
+    let (units, model, map) = frontend_with(COUNTER, |u, f| {
+        let mut t = task(f, "on_event", None, 1);
+        t.single = Some(var_operand(f, "trig"));
+        u.items.push(configuration(
+            f,
+            vec![t],
+            vec![instance(f, "e", Some("on_event"), "counter")],
+            globals(f, vec![global(f, "trig", "BOOL", None)]),
+        ))
+    });
+    let p = generate_with(
+        &units,
+        &model,
+        &map,
+        &TargetProfile::default(),
+        &Options::default(),
+    );
+    let b = build_program(p);
+    let stim = "1,trig,1\n3,trig,0\n4,trig,1\n5,trig,0\n6,trig,1\n";
+    let rows = run(&b, 8, 10.0, stim, &["e.n"]);
+    assert_eq!(
+        column(&rows, "e.n"),
+        ["0", "1", "1", "1", "2", "2", "3", "3"]
+    );
+}
+
+#[test]
+fn program_instance_arguments_are_copied_in_and_out() {
+    let src = "PROGRAM double
+VAR_INPUT
+  a : INT;
+END_VAR
+VAR_OUTPUT
+  b : INT;
+END_VAR
+  LD a
+  MUL 2
+  ST b
+END_PROGRAM
+";
+    let (units, model, map) = frontend_with(src, |u, f| {
+        let sp = diagnostics::Span::new(f, 0, 0);
+        let mut inst = instance(f, "d", None, "double");
+        inst.args = vec![
+            FormalArg {
+                name: ident(f, "a"),
+                dir: ArgDir::Input,
+                value: var_operand(f, "src"),
+                span: sp,
+            },
+            FormalArg {
+                name: ident(f, "b"),
+                dir: ArgDir::Output { negated: false },
+                value: var_operand(f, "dst"),
+                span: sp,
+            },
+        ];
+        u.items.push(configuration(
+            f,
+            Vec::new(),
+            vec![inst],
+            globals(
+                f,
+                vec![
+                    global(f, "src", "INT", Some(5)),
+                    global(f, "dst", "INT", None),
+                ],
+            ),
+        ))
+    });
+    let p = generate_with(
+        &units,
+        &model,
+        &map,
+        &TargetProfile::default(),
+        &Options::default(),
+    );
+    let b = build_program(p);
+    let rows = run(&b, 3, 10.0, "2,src,-4\n", &["dst", "d.a"]);
+    assert_eq!(column(&rows, "dst"), ["10", "10", "-8"]);
+    assert_eq!(column(&rows, "d.a"), ["5", "5", "-4"]);
+}
