@@ -139,6 +139,12 @@ END_VAR
   LD n
 done:
   ST out
+  LD go
+  JMPC reload
+  LD n
+reload:
+  LD n
+  ST n
 END_PROGRAM
 "
     ));
@@ -369,6 +375,142 @@ END_VAR
   ST b
   CAL t(IN := b)
 END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn deferred_operators_type_their_nested_list() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  a, b, c, x : BOOL;
+  i, j : INT;
+  r : REAL;
+END_VAR
+  LD a
+  AND( b
+  OR c
+  )
+  ST x
+  LD i
+  ADD( j
+  MUL r
+  )
+  ST i
+  LD a
+  OR(
+  LD i
+  )
+  ST x
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn fb_instances_are_not_values() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  t, u : TON;
+  n : INT;
+END_VAR
+  LD t
+  ST u
+  CAL n
+  LD n
+  IN n
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn configuration_elements_are_checked() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR_INPUT
+  sp : REAL;
+END_VAR
+VAR_OUTPUT
+  q : BOOL;
+END_VAR
+VAR_EXTERNAL
+  lamp : BOOL;
+END_VAR
+  LD sp
+  GT 1.5
+  ST q
+  ST lamp
+END_PROGRAM
+FUNCTION_BLOCK NotAProgram
+  LD TRUE
+  RET
+END_FUNCTION_BLOCK
+CONFIGURATION Cell
+VAR_GLOBAL
+  speed : REAL;
+  count : INT;
+  lamp : BOOL;
+END_VAR
+RESOURCE Cpu
+TASK Fast(INTERVAL := T#10ms, PRIORITY := 1);
+TASK Slow(INTERVAL := 5, PRIORITY := 2);
+PROGRAM m1 WITH Fast : Main (sp := speed, q => lamp);
+PROGRAM m2 WITH Medium : Main (sp := count, q := lamp, zz := speed);
+PROGRAM m3 : NotAProgram;
+PROGRAM m4 : Nowhere;
+END_RESOURCE
+END_CONFIGURATION
+"
+    ));
+}
+
+#[test]
+fn alias_cycles_and_fb_type_names_used_as_instances() {
+    insta::assert_snapshot!(check(
+        "TYPE
+  A : B;
+  B : A;
+END_TYPE
+PROGRAM Main
+VAR
+  x : A;
+END_VAR
+  CAL TON
+  LD x
+  ST x
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn operators_with_a_missing_or_extra_operand() {
+    let src = "PROGRAM Main
+VAR
+  b : BOOL;
+END_VAR
+  LD b
+  NOT b
+  ST b
+  ADD
+END_PROGRAM
+";
+    assert_eq!(codes(src), vec!["E1020", "E1020"], "{}", check(src));
+}
+
+#[test]
+fn function_that_never_sets_its_result() {
+    insta::assert_snapshot!(check(
+        "FUNCTION Twice : INT
+VAR_INPUT
+  v : INT;
+END_VAR
+  LD v
+  MUL 2
+END_FUNCTION
 "
     ));
 }

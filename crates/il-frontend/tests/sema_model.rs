@@ -587,3 +587,127 @@ END_PROGRAM
         Type::Fb(FbType::User(PouId(0)))
     );
 }
+
+#[test]
+fn pou_instrs_are_in_source_pre_order() {
+    let src = "PROGRAM P
+VAR
+  a, b, c, x : BOOL;
+END_VAR
+  LD a
+  AND( b
+  OR c
+  )
+  ST x
+END_PROGRAM
+";
+    let m = ok(src);
+    let p = m.pou(PouId(0));
+    assert_eq!(p.instrs.len(), 4);
+    let deferred = info_at(&m, src, "AND(", 0);
+    assert_eq!(&p.instrs[1], deferred);
+    assert_eq!(deferred.operand, Some(Type::BOOL));
+    assert_eq!(&p.instrs[2], info_at(&m, src, "OR c", 0));
+    // The nested list starts with its operand as current result.
+    assert_eq!(info_at(&m, src, "OR c", 0).cr_before, Some(Type::BOOL));
+}
+
+#[test]
+fn names_in_bodies_are_resolved() {
+    let src = "TYPE
+  Color : (red, green);
+END_TYPE
+VAR_GLOBAL
+  total : INT;
+END_VAR
+FUNCTION F : Color
+VAR_INPUT
+  go : BOOL;
+END_VAR
+  LD go
+  ST ENO
+  LD total
+  ADD 1
+  ST total
+  LD green
+  ST F
+END_FUNCTION
+";
+    let m = ok(src);
+    let at = |text: &str, n: usize| {
+        let start = src.match_indices(text).nth(n).unwrap().0 as u32;
+        *m.names.iter().find(|(s, _)| s.start == start).unwrap().1
+    };
+    assert_eq!(at("go\n", 0), NameRef::Var(0));
+    assert_eq!(at("ENO", 0), NameRef::Eno);
+    assert_eq!(at("total\n", 1), NameRef::Global(GlobalRef::Free(0)));
+    let color = m.type_by_name("Color").unwrap();
+    assert_eq!(
+        at("green\n", 0),
+        NameRef::EnumValue {
+            ty: color,
+            index: 1
+        }
+    );
+    assert_eq!(at("F\nEND", 0), NameRef::FunctionResult);
+    assert_eq!(m.pou(PouId(0)).return_type, Some(Type::Enum(color)));
+}
+
+#[test]
+fn program_instance_arguments_are_bound_to_globals_and_addresses() {
+    let src = "PROGRAM Main
+VAR_INPUT
+  sp : REAL;
+  n : INT;
+END_VAR
+VAR_OUTPUT
+  q : BOOL;
+END_VAR
+  LD sp
+  GT 1.5
+  ST q
+END_PROGRAM
+CONFIGURATION Cell
+VAR_GLOBAL
+  speed : REAL;
+END_VAR
+RESOURCE Cpu
+TASK Fast(INTERVAL := T#10ms, PRIORITY := 3);
+PROGRAM m1 WITH Fast : Main (sp := speed, n := 7, q => %QX0.1);
+END_RESOURCE
+END_CONFIGURATION
+";
+    let m = ok(src);
+    let r = &m.configurations[0].resources[0];
+    assert_eq!(r.tasks[0].interval_ns, Some(10_000_000));
+    assert_eq!(r.tasks[0].priority, 3);
+    let p = &r.programs[0];
+    assert_eq!((p.pou, p.task), (PouId(0), Some(0)));
+    assert_eq!(
+        p.args,
+        vec![
+            ProgramArg {
+                param: 0,
+                output: false,
+                value: ProgramArgValue::Global(GlobalRef::Configuration {
+                    config: 0,
+                    index: 0
+                })
+            },
+            ProgramArg {
+                param: 1,
+                output: false,
+                value: ProgramArgValue::Const(ConstValue::Int(7))
+            },
+            ProgramArg {
+                param: 2,
+                output: true,
+                value: ProgramArgValue::Address(Location {
+                    area: ast::Area::Output,
+                    size: ast::AddressSize::Bit,
+                    path: vec![0, 1]
+                })
+            },
+        ]
+    );
+}

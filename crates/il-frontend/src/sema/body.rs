@@ -37,6 +37,18 @@ pub(super) struct Cr {
     pub(super) ty: Option<Ty>,
     /// The instruction that computed the value if no instruction has used it yet.
     pub(super) fresh: Option<Span>,
+    /// Paths of different types met at a label: reported when the value is read (an `LD` right after
+    /// the label makes the clash harmless).
+    pub(super) clash: Option<Box<Clash>>,
+}
+
+/// Two paths bringing different types to a label.
+#[derive(Debug, Clone)]
+pub(super) struct Clash {
+    label: ast::Ident,
+    a: (Span, String),
+    b: (Span, String),
+    types: (String, String),
 }
 
 /// The walk state: reachability and current result.
@@ -80,6 +92,8 @@ struct Edge {
 pub(super) struct Body<'a, 'd> {
     pub(super) a: &'a mut Analyzer<'d>,
     pub(super) pou: PouId,
+    /// A FUNCTION's result variable was written (ST/S/R/=> into its name).
+    pub(super) result_written: bool,
     pub(super) lits: LitVars,
     pub(super) recs: Vec<(Span, Rec)>,
     labels: HashMap<String, LabelDef>,
@@ -106,6 +120,7 @@ impl Analyzer<'_> {
             edges: HashMap::new(),
             backward: HashMap::new(),
             pos: 0,
+            result_written: false,
         };
         // Pass 1, silent: what the backward jumps bring.
         b.a.silent = true;
@@ -133,9 +148,24 @@ impl Analyzer<'_> {
         b.pos = 0;
         b.walk_top(&pou.body);
         let recs = std::mem::take(&mut b.recs);
+        let mut infos = Vec::with_capacity(recs.len());
         for (span, r) in recs {
             let info = b.finish(r);
-            b.a.model.instrs.insert(span, info);
+            b.a.model.instrs.insert(span, info.clone());
+            infos.push(info);
+        }
+        b.a.model.pous[id.0 as usize].instrs = infos;
+        if pou.kind == ast::PouKind::Function && !b.result_written && !pou.body.is_empty() {
+            self.warning(
+                code::W1003,
+                pou.name.span,
+                format!("function `{}` never sets its result", pou.name.name),
+            )
+            .label("no ST into the function's name in its body")
+            .hint(format!(
+                "store the result with ST {} (it is 0/FALSE/empty otherwise)",
+                pou.name.name
+            ));
         }
     }
 
@@ -190,6 +220,7 @@ impl Body<'_, '_> {
             cr: Cr {
                 ty: None,
                 fresh: None,
+                clash: None,
             },
             last: None,
             warned_unreachable: false,
@@ -216,6 +247,7 @@ impl Body<'_, '_> {
                         st.cr = Cr {
                             ty: Some(Ty::ERROR),
                             fresh: None,
+                            clash: None,
                         };
                     }
                     self.instr(i, st);
@@ -249,6 +281,7 @@ impl Body<'_, '_> {
         st.reach = true;
         st.warned_unreachable = false;
         st.cr.fresh = None;
+        st.cr.clash = None;
         if incoming.is_empty() {
             // Dead code after the label: silence it.
             st.cr.ty = Some(Ty::ERROR);
@@ -268,16 +301,12 @@ impl Body<'_, '_> {
                 Some(j) => acc.2 = j,
                 None => {
                     let (ta, tb) = (self.describe(&acc.2), self.describe(&ty));
-                    self.a
-                        .error(
-                            code::E1008,
-                            l.span,
-                            format!("the current result at `{}` is {ta} on one path and {tb} on another", l.name),
-                        )
-                        .label("paths meet here")
-                        .also(acc.0, format!("{ta}: {}", acc.1))
-                        .also(span, format!("{tb}: {what}"))
-                        .hint("load a value after the label, or make every path bring the same type");
+                    st.cr.clash = Some(Box::new(Clash {
+                        label: l.clone(),
+                        a: (acc.0, format!("{ta}: {}", acc.1)),
+                        b: (span, format!("{tb}: {what}")),
+                        types: (ta, tb),
+                    }));
                     acc.2 = Ty::ERROR;
                     break;
                 }
@@ -365,6 +394,23 @@ impl Body<'_, '_> {
     /// Reads the CR (reports an undefined one); marks the value used.
     pub(super) fn use_cr(&mut self, st: &mut State, at: Span, what: &str) -> Ty {
         st.cr.fresh = None;
+        if let Some(c) = st.cr.clash.take() {
+            let (ta, tb) = &c.types;
+            self.a
+                .error(
+                    code::E1008,
+                    c.label.span,
+                    format!(
+                        "the current result at `{}` is {ta} on one path and {tb} on another",
+                        c.label.name
+                    ),
+                )
+                .label("paths meet here")
+                .also(c.a.0, c.a.1)
+                .also(c.b.0, c.b.1)
+                .also(at, format!("{what} reads it here"))
+                .hint("load a value after the label, or make every path bring the same type");
+        }
         match &st.cr.ty {
             Some(t) => t.clone(),
             None => {
@@ -393,6 +439,7 @@ impl Body<'_, '_> {
         }
         st.cr.ty = Some(ty);
         st.cr.fresh = Some(at);
+        st.cr.clash = None;
     }
 
     /// The CR must be BOOL (conditions, S, R).
@@ -421,6 +468,9 @@ impl Body<'_, '_> {
             cr_before: st.cr.ty.clone(),
             ..Rec::default()
         };
+        // Reserve the slot: pre-order (a deferred instruction before its nested list).
+        let slot = self.recs.len();
+        self.recs.push((i.span, Rec::default()));
         match &i.kind {
             InstrKind::Simple {
                 op,
@@ -444,6 +494,7 @@ impl Body<'_, '_> {
                     cr: Cr {
                         ty: None,
                         fresh: None,
+                        clash: None,
                     },
                     last: None,
                     warned_unreachable: false,
@@ -458,7 +509,14 @@ impl Body<'_, '_> {
                 match outer {
                     None => self.load(st, value, i.span),
                     Some(cr) => {
-                        let res = self.operator(*op, *negate, cr, value, *close, i.span, &mut rec);
+                        // Point at `OP(` for the outer current result.
+                        let kw = op_name(*op).len() + usize::from(*negate) + 1;
+                        let head = Span::new(
+                            i.span.file,
+                            i.span.start as usize,
+                            (i.span.start as usize + kw).min(i.span.end as usize),
+                        );
+                        let res = self.operator(*op, *negate, cr, value, *close, head, &mut rec);
                         st.cr.ty = Some(res);
                         st.cr.fresh = Some(i.span);
                     }
@@ -525,7 +583,7 @@ impl Body<'_, '_> {
             }
         }
         rec.cr_after = if st.reach { st.cr.ty.clone() } else { None };
-        self.recs.push((i.span, rec));
+        self.recs[slot].1 = rec;
     }
 
     fn simple(
@@ -541,15 +599,19 @@ impl Body<'_, '_> {
             Op::Ld => {
                 let Some(o) = operand else {
                     self.a
-                        .error(code::E1007, span, "LD needs an operand")
+                        .error(code::E1020, span, "LD needs an operand")
                         .label("nothing to load")
                         .hint("write LD x");
                     self.load(st, Ty::ERROR, span);
                     return;
                 };
-                let t = self.read_operand(o);
+                let mut t = self.read_operand(o);
                 if negate {
                     self.check_class_bit(&t, o.span(), "LDN");
+                }
+                if let Ty::Known(Type::Fb(_)) = t {
+                    self.not_a_value(o);
+                    t = Ty::ERROR;
                 }
                 rec.operand = Some(t.clone());
                 self.load(st, t, span);
@@ -558,7 +620,7 @@ impl Body<'_, '_> {
                 let cr = self.use_cr(st, span, if negate { "STN" } else { "ST" });
                 let Some(o) = operand else {
                     self.a
-                        .error(code::E1026, span, "ST needs an operand")
+                        .error(code::E1020, span, "ST needs an operand")
                         .label("nothing to store into")
                         .hint("write ST x");
                     return;
@@ -566,7 +628,11 @@ impl Body<'_, '_> {
                 if negate {
                     self.check_class_bit(&cr, span, "STN");
                 }
-                let place = self.write_place(o, "ST");
+                let mut place = self.write_place(o, "ST");
+                if place.is_fb() {
+                    self.not_a_value(o);
+                    place = Type::Error;
+                }
                 rec.operand = Some(Ty::Known(place.clone()));
                 self.coerce_store(&cr, &place, o.span(), span);
             }
@@ -603,8 +669,14 @@ impl Body<'_, '_> {
             Op::Not => {
                 let cr = self.use_cr(st, span, "NOT");
                 if let Some(o) = operand {
-                    // `NOT x` is not IEC IL; treat as reading the operand.
-                    let _ = self.read_operand(o);
+                    self.a
+                        .error(
+                            code::E1020,
+                            o.span(),
+                            "NOT takes no operand: it inverts the current result",
+                        )
+                        .label("unexpected operand")
+                        .hint("write LDN x (or LD x, NOT) to load an inverted value");
                 }
                 self.check_class_bit(&cr, span, "NOT");
                 rec.callee = Some(Callee::Std {
@@ -641,6 +713,13 @@ impl Body<'_, '_> {
                 st.cr.fresh = Some(span);
             }
         }
+    }
+
+    fn not_a_value(&mut self, o: &ast::Operand) {
+        self.a
+            .error(code::E1021, o.span(), "an FB instance is not a value")
+            .label("a function block instance")
+            .hint("read or write its inputs and outputs (inst.Q), or call it with CAL");
     }
 
     /// Checks that `t` is ANY_BIT (N modifier, NOT, STN).

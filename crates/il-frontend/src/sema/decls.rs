@@ -51,6 +51,7 @@ impl Analyzer<'_> {
                             return_type: None,
                             vars: Vec::new(),
                             externals: Vec::new(),
+                            instrs: Vec::new(),
                         });
                         pous.push((id, p));
                     }
@@ -263,7 +264,9 @@ impl Analyzer<'_> {
         let ast::TypeDef::Alias { ty, init } = &d.def else {
             return;
         };
+        self.resolving.push(id);
         let target = self.resolve_type(ty);
+        self.resolving.retain(|r| *r != id);
         let init = init
             .as_ref()
             .and_then(|i| self.const_init(i, &target, &Consts::new()));
@@ -373,6 +376,16 @@ impl Analyzer<'_> {
             };
         }
         if let Some(&id) = self.type_names.get(&n.key()) {
+            if self.resolving.contains(&id) {
+                self.error(
+                    code::E1003,
+                    n.span,
+                    format!("type `{}` is defined in terms of itself", n.name),
+                )
+                .label("refers back to the type being defined")
+                .hint("an alias must end at an elementary, structured or FB type");
+                return Type::Error;
+            }
             if self.pending_aliases.contains_key(&id) {
                 self.resolve_user_type(id);
             }
@@ -627,17 +640,155 @@ impl Analyzer<'_> {
                     continue;
                 }
             };
+            let args = self.program_args(ci, ri, pou, &p.args);
             programs.push(ProgramInstance {
                 name: p.name.name.clone(),
                 span: p.span,
                 retain: p.retain,
                 task,
                 pou,
+                args,
             });
         }
         let res = &mut self.model.configurations[ci].resources[ri];
         res.tasks = tasks;
         res.programs = programs;
+    }
+
+    /// Binds `PROGRAM inst : P (in := g, out => h)` arguments to globals of the configuration/resource,
+    /// direct addresses, or constants.
+    fn program_args(
+        &mut self,
+        ci: usize,
+        ri: usize,
+        pou: PouId,
+        args: &[ast::FormalArg],
+    ) -> Vec<ProgramArg> {
+        let mut out = Vec::new();
+        let prog = self.model.pous[pou.0 as usize].clone();
+        for a in args {
+            let Some(param) = prog.vars.iter().position(|v| {
+                a.name.is(&v.name)
+                    && matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut)
+            }) else {
+                let names: Vec<String> = prog
+                    .vars
+                    .iter()
+                    .filter(|v| matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut))
+                    .map(|v| v.name.clone())
+                    .collect();
+                self.error(
+                    code::E1011,
+                    a.name.span,
+                    format!("program {} has no parameter `{}`", prog.name, a.name.name),
+                )
+                .label("unknown parameter")
+                .hint(format!("parameters of {}: {}", prog.name, names.join(", ")));
+                continue;
+            };
+            let pvar = &prog.vars[param];
+            let output = matches!(a.dir, ast::ArgDir::Output { .. });
+            if output != (pvar.kind == VarKind::Output) {
+                let (what, fix) = if output {
+                    ("an input", ":=")
+                } else {
+                    ("an output", "=>")
+                };
+                self.error(
+                    code::E1013,
+                    a.span,
+                    format!("`{}` is {what} of program {}", pvar.name, prog.name),
+                )
+                .label("wrong direction")
+                .hint(format!("write {} {fix} ...", pvar.name));
+                continue;
+            }
+            let (value, vty) = match &a.value {
+                Operand::Var(v) if v.accessors.is_empty() => {
+                    let c = &self.model.configurations[ci];
+                    let r = c
+                        .globals
+                        .iter()
+                        .position(|g| v.base.is(&g.name))
+                        .map(|index| GlobalRef::Configuration { config: ci, index });
+                    let r = r.or_else(|| {
+                        c.resources[ri]
+                            .globals
+                            .iter()
+                            .position(|g| v.base.is(&g.name))
+                            .map(|index| GlobalRef::Resource {
+                                config: ci,
+                                resource: ri,
+                                index,
+                            })
+                    });
+                    let r = r.or_else(|| {
+                        self.free_globals
+                            .get(&v.base.key())
+                            .map(|&i| GlobalRef::Free(i))
+                    });
+                    match r {
+                        Some(r) => {
+                            let ty = self.model.global(r).ty.clone();
+                            (ProgramArgValue::Global(r), ty)
+                        }
+                        None => {
+                            self.error(
+                                code::E1001,
+                                v.span,
+                                format!("no global variable `{}`", v.base.name),
+                            )
+                            .label("not a global of this configuration")
+                            .hint(
+                                "declare it in the configuration's or resource's VAR_GLOBAL block",
+                            );
+                            continue;
+                        }
+                    }
+                }
+                Operand::Address(ad) => {
+                    let l = Location::of(ad);
+                    let ty = Type::Elementary(l.elementary());
+                    (ProgramArgValue::Address(l), ty)
+                }
+                other if !output => match self.const_value(other, &pvar.ty, &Consts::new()) {
+                    Some(c) => (ProgramArgValue::Const(c), pvar.ty.clone()),
+                    None => continue,
+                },
+                other => {
+                    self.error(
+                        code::E1026,
+                        other.span(),
+                        "an output argument needs a global variable or an address",
+                    )
+                    .label("not writable")
+                    .hint("write out => a global variable");
+                    continue;
+                }
+            };
+            let ok = if output {
+                super::typing::assignable(&pvar.ty, &vty)
+            } else {
+                super::typing::assignable(&vty, &pvar.ty)
+            };
+            if !ok {
+                let (pt, vt) = (self.type_name(&pvar.ty), self.type_name(&vty));
+                self.error(
+                    code::E1012,
+                    a.value.span(),
+                    format!("`{}` of program {} is {pt}, not {vt}", pvar.name, prog.name),
+                )
+                .label(format!("this is {vt}"))
+                .hint("connect a global of the parameter's type");
+                continue;
+            }
+            out.push(ProgramArg {
+                param,
+                output,
+                value,
+            });
+        }
+        out
     }
 
     /// Evaluates an initial value against the declared type.
@@ -664,7 +815,7 @@ impl Analyzer<'_> {
                     .hint("give a single value");
                     return None;
                 };
-                let total: u128 = dims.iter().map(|d| d.len()).product();
+                let total: u128 = dims.iter().fold(1u128, |n, d| n.saturating_mul(d.len()));
                 let mut out = Vec::new();
                 for e in elems {
                     let v = self.const_init(&e.value, element, consts)?;

@@ -31,6 +31,7 @@ pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
         enum_values: HashMap::new(),
         free_globals: HashMap::new(),
         pending_aliases: HashMap::new(),
+        resolving: Vec::new(),
         silent: false,
         enum_counter: 0,
     };
@@ -55,6 +56,8 @@ pub(crate) struct Analyzer<'d> {
     pub(crate) free_globals: HashMap<String, usize>,
     /// Aliases declared but not yet resolved (resolved on first use, so order does not matter).
     pub(crate) pending_aliases: HashMap<TypeId, crate::ast::TypeDecl>,
+    /// Aliases being resolved (to report cycles).
+    pub(crate) resolving: Vec<TypeId>,
     /// While set, diagnostics are dropped (first pass over a body).
     pub(crate) silent: bool,
     pub(crate) enum_counter: u32,

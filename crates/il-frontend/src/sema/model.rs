@@ -287,11 +287,12 @@ pub struct Dim {
 }
 
 impl Dim {
+    /// The number of elements (saturating).
     pub fn len(self) -> u128 {
         if self.upper < self.lower {
             0
         } else {
-            (self.upper - self.lower) as u128 + 1
+            self.upper.abs_diff(self.lower).saturating_add(1)
         }
     }
     pub fn is_empty(self) -> bool {
@@ -485,6 +486,10 @@ pub struct Pou {
     pub vars: Vec<Variable>,
     /// For each `VAR_EXTERNAL` (index into `vars`), the global it is bound to.
     pub externals: Vec<(usize, GlobalRef)>,
+    /// The infos of the body's instructions in source pre-order (a deferred `AND( ... )` before the
+    /// instructions of its nested list): the same values as `Model::instrs`, usable when several
+    /// instructions share a span (as lowered ladder may).
+    pub instrs: Vec<InstrInfo>,
 }
 
 impl Pou {
@@ -554,6 +559,25 @@ pub struct ProgramInstance {
     /// Index into the resource's `tasks`; `None` when no `WITH` (runs in the background).
     pub task: Option<usize>,
     pub pou: PouId,
+    /// `(in := x, out => y)` bound to the program's parameters.
+    pub args: Vec<ProgramArg>,
+}
+
+/// One argument of a program instance.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ProgramArg {
+    /// The program's parameter (index into its `vars`).
+    pub param: usize,
+    /// `=>`: the program's output is copied to the value (a global or an address).
+    pub output: bool,
+    pub value: ProgramArgValue,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum ProgramArgValue {
+    Global(GlobalRef),
+    Address(Location),
+    Const(ConstValue),
 }
 
 /// What an instruction calls.
@@ -635,6 +659,26 @@ pub struct InstrInfo {
     pub args: Vec<ArgBinding>,
 }
 
+/// What a name used in a body refers to (`Model::names[&var_ref.base.span]`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum NameRef {
+    /// `Model::pous[pou].vars[index]` of the POU the body belongs to (a `VAR_EXTERNAL` too: see
+    /// `Pou::externals` for its global).
+    Var(usize),
+    /// The function's own name used as its result variable (`ST WEIGH` in FUNCTION WEIGH).
+    FunctionResult,
+    /// The implicit `EN` input / `ENO` output of a function or FB.
+    En,
+    Eno,
+    /// A `VAR_GLOBAL` outside any configuration, used directly.
+    Global(GlobalRef),
+    /// An enumerated value written without its type (`red`).
+    EnumValue {
+        ty: TypeId,
+        index: usize,
+    },
+}
+
 /// Everything sema resolved.
 #[derive(Debug, Clone, Default, Serialize)]
 pub struct Model {
@@ -645,6 +689,9 @@ pub struct Model {
     pub globals: Vec<Variable>,
     /// Keyed by `ast::Instruction::span`.
     pub instrs: HashMap<Span, InstrInfo>,
+    /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
+    /// call arguments, indexes, CAL instances).
+    pub names: HashMap<Span, NameRef>,
 }
 
 impl Model {

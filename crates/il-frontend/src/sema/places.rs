@@ -121,6 +121,9 @@ impl Body<'_, '_> {
         match o {
             Operand::Var(v) => {
                 let p = self.resolve_var(v);
+                if self.a.model.names.get(&v.base.span) == Some(&NameRef::FunctionResult) {
+                    self.result_written = true;
+                }
                 if let Some(ro) = p.read_only {
                     let mut d = self
                         .a
@@ -327,7 +330,9 @@ impl Body<'_, '_> {
             let p = self.pou();
             (p.name.clone(), p.kind)
         };
-        if let Some(var) = self.pou().var(&base.name).cloned() {
+        if let Some(index) = self.pou().vars.iter().position(|v| v.is(&base.name)) {
+            self.a.model.names.insert(base.span, NameRef::Var(index));
+            let var = self.pou().vars[index].clone();
             let read_only = if var.constant {
                 Some(ReadOnly {
                     code: code::E1014,
@@ -354,12 +359,22 @@ impl Body<'_, '_> {
             });
         }
         if kind == PouKind::Function && base.is(&pou_name) {
+            self.a
+                .model
+                .names
+                .insert(base.span, NameRef::FunctionResult);
             return Some(Place {
                 ty: self.pou().return_type.clone().unwrap_or(Type::Error),
                 read_only: None,
             });
         }
         if kind != PouKind::Program && (base.is("EN") || base.is("ENO")) {
+            let r = if base.is("EN") {
+                NameRef::En
+            } else {
+                NameRef::Eno
+            };
+            self.a.model.names.insert(base.span, r);
             let read_only = base.is("EN").then(|| ReadOnly {
                 code: code::E1015,
                 message: format!("`EN` is an input of `{pou_name}`, read-only inside it"),
@@ -372,6 +387,10 @@ impl Body<'_, '_> {
             });
         }
         if let Some(&i) = self.a.free_globals.get(&base.key()) {
+            self.a
+                .model
+                .names
+                .insert(base.span, NameRef::Global(GlobalRef::Free(i)));
             let g = self.a.model.globals[i].clone();
             let read_only = g.constant.then(|| ReadOnly {
                 code: code::E1014,
@@ -405,6 +424,13 @@ impl Body<'_, '_> {
                         ));
                     return None;
                 }
+                self.a.model.names.insert(
+                    base.span,
+                    NameRef::EnumValue {
+                        ty: found[0].0,
+                        index: found[0].1,
+                    },
+                );
                 let read_only = Some(ReadOnly {
                     code: code::E1026,
                     message: format!("`{}` is an enumerated value, not a variable", base.name),
@@ -432,6 +458,17 @@ impl Body<'_, '_> {
     /// A hint naming a declared variable with a similar spelling, or how to declare.
     fn similar_name(&self, name: &str) -> String {
         let up = name.to_ascii_uppercase();
+        let is_fb_type = StdFb::from_name(name).is_some()
+            || self
+                .a
+                .pou_names
+                .get(&up)
+                .is_some_and(|id| self.a.model.pous[id.0 as usize].kind != PouKind::Function);
+        if is_fb_type {
+            return format!(
+                "`{name}` is a type: declare an instance (VAR inst : {name}; END_VAR) and use that"
+            );
+        }
         let best = self
             .pou()
             .vars

@@ -210,10 +210,105 @@ impl Reader<'_> {
                     items.push(LibraryElement::GlobalVars(b));
                     i = next;
                 }
+                "CONFIGURATION" => {
+                    let (c, next) = self.configuration(&lines, i);
+                    items.push(LibraryElement::Configuration(c));
+                    i = next;
+                }
                 _ => panic!("test reader: unexpected line starting {kw}"),
             }
         }
         CompilationUnit { items }
+    }
+
+    /// `CONFIGURATION` with `VAR_GLOBAL` blocks and `RESOURCE`s holding `TASK name(INTERVAL := T#.., PRIORITY := n);`
+    /// and `PROGRAM inst [WITH task] : Type [(a := x, b => y)];` lines.
+    fn configuration(&self, lines: &[Vec<Tok>], mut i: usize) -> (Configuration, usize) {
+        let name = self.ident(&lines[i][1]);
+        let start = lines[i][0].start;
+        i += 1;
+        let mut globals = Vec::new();
+        let mut resources = Vec::new();
+        while !lines[i][0].text.eq_ignore_ascii_case("END_CONFIGURATION") {
+            let kw = lines[i][0].text.to_ascii_uppercase();
+            if kw == "VAR_GLOBAL" {
+                let (b, next) = self.var_block(lines, i);
+                globals.push(b);
+                i = next;
+                continue;
+            }
+            assert_eq!(kw, "RESOURCE", "test reader: configuration line");
+            let rname = self.ident(&lines[i][1]);
+            let rstart = lines[i][0].start;
+            i += 1;
+            let mut tasks = Vec::new();
+            let mut programs = Vec::new();
+            let mut rglobals = Vec::new();
+            while !lines[i][0].text.eq_ignore_ascii_case("END_RESOURCE") {
+                let l = &lines[i];
+                let span = self.span(l[0].start, l[l.len() - 1].end);
+                match l[0].text.to_ascii_uppercase().as_str() {
+                    "VAR_GLOBAL" => {
+                        let (b, next) = self.var_block(lines, i);
+                        rglobals.push(b);
+                        i = next;
+                        continue;
+                    }
+                    "TASK" => {
+                        let find = |k: &str| {
+                            l.iter()
+                                .position(|t| t.text.eq_ignore_ascii_case(k))
+                                .map(|p| &l[p + 2])
+                        };
+                        tasks.push(Task {
+                            name: self.ident(&l[1]),
+                            interval: find("INTERVAL")
+                                .map(|t| self.operand(std::slice::from_ref(t))),
+                            single: find("SINGLE").map(|t| self.operand(std::slice::from_ref(t))),
+                            priority: find("PRIORITY").and_then(|t| t.text.parse().ok()),
+                            span,
+                        });
+                    }
+                    _ => {
+                        let task =
+                            (l[2].text.eq_ignore_ascii_case("WITH")).then(|| self.ident(&l[3]));
+                        let colon = l.iter().position(|t| t.text == ":").unwrap();
+                        let args = match self.args(&l[colon + 2..l.len() - 1]) {
+                            CallArgs::Formal(a) => a,
+                            _ => Vec::new(),
+                        };
+                        programs.push(ProgramInstance {
+                            name: self.ident(&l[1]),
+                            retain: false,
+                            task,
+                            type_name: self.ident(&l[colon + 1]),
+                            args,
+                            span,
+                        });
+                    }
+                }
+                i += 1;
+            }
+            resources.push(Resource {
+                name: rname,
+                on: None,
+                globals: rglobals,
+                tasks,
+                programs,
+                span: self.span(rstart, lines[i][0].end),
+            });
+            i += 1;
+        }
+        let end = lines[i][0].end;
+        (
+            Configuration {
+                name,
+                globals,
+                resources,
+                span: self.span(start, end),
+            },
+            i + 1,
+        )
     }
 
     fn pou(&self, lines: &[Vec<Tok>], mut i: usize) -> (Pou, usize) {
