@@ -329,3 +329,41 @@ END_PROGRAM
     assert_eq!(column(&rows, "dst"), ["10", "10", "-8"]);
     assert_eq!(column(&rows, "d.a"), ["5", "5", "-4"]);
 }
+
+#[test]
+fn a_configuration_written_in_il_source() {
+    let src = "PROGRAM counter
+VAR_INPUT
+  step : INT;
+END_VAR
+VAR_OUTPUT
+  n : INT;
+END_VAR
+  LD n
+  ADD step
+  ST n
+END_PROGRAM
+CONFIGURATION plant
+  VAR_GLOBAL
+    total AT %MW10 : INT;
+  END_VAR
+  RESOURCE cpu ON PLC
+    TASK slow (INTERVAL := T#20ms, PRIORITY := 1);
+    PROGRAM fast_one : counter (step := 1, n => total);
+    PROGRAM slow_one WITH slow : counter (step := 10);
+  END_RESOURCE
+END_CONFIGURATION
+";
+    let b = build_src(src);
+    let rows = run(
+        &b,
+        4,
+        10.0,
+        "",
+        &["fast_one.n", "slow_one.n", "total", "%MW10"],
+    );
+    assert_eq!(column(&rows, "fast_one.n"), ["1", "2", "3", "4"]);
+    assert_eq!(column(&rows, "slow_one.n"), ["10", "10", "20", "20"]);
+    assert_eq!(column(&rows, "total"), ["1", "2", "3", "4"]);
+    assert_eq!(column(&rows, "%MW10"), ["1", "2", "3", "4"]);
+}

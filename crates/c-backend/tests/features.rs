@@ -49,7 +49,7 @@ VAR
   y : INT;
   y0 : INT;
   t : INT;
-  on : BOOL;
+  lit : BOOL;
   n : INT;
 END_VAR
   LD %IW0
@@ -57,7 +57,7 @@ END_VAR
   ST y0
   scale(x := y0, k := 5, twice => t)
   ST y
-  CAL l(set := %IX2.0, reset := %IX2.1, q => on)
+  CAL l(set := %IX2.0, reset := %IX2.1, q => lit)
   LD l.hits
   ST n
 END_PROGRAM
@@ -69,11 +69,11 @@ END_PROGRAM
         5,
         10.0,
         stim,
-        &["main.y", "main.t", "main.on", "main.n"],
+        &["main.y", "main.t", "main.lit", "main.n"],
     );
     assert_eq!(column(&rows, "main.y"), ["35", "35", "35", "35", "35"]);
     assert_eq!(column(&rows, "main.t"), ["14", "14", "14", "14", "14"]);
-    assert_eq!(column(&rows, "main.on"), ["0", "1", "1", "0", "0"]);
+    assert_eq!(column(&rows, "main.lit"), ["0", "1", "1", "0", "0"]);
     assert_eq!(column(&rows, "main.n"), ["0", "1", "1", "1", "1"]);
 }
 
@@ -185,7 +185,7 @@ fn structures_arrays_enumerations_and_strings() {
   point : STRUCT
     x : INT := 4;
     y : INT;
-  END_STRUCT
+  END_STRUCT;
 END_TYPE
 PROGRAM main
 VAR

@@ -2,16 +2,13 @@
 //! -Werror and the address/undefined sanitizers) -> run with a stimulus -> trace rows.
 #![allow(dead_code)]
 
-#[path = "../../../il-frontend/tests/sema_support/mod.rs"]
-mod sema_support;
-
 use c_backend::{BuildOptions, CProgram, Options, RunOptions, TargetProfile};
 use diagnostics::{render_short, Diagnostics, SourceMap};
 use il_frontend::ast::CompilationUnit;
 use il_frontend::sema::{analyze, Model};
 use std::path::PathBuf;
 
-/// Parses (test reader until the real parser lands) and analyses; panics on front-end errors.
+/// Parses and analyses; panics on front-end errors.
 pub fn frontend(src: &str) -> (Vec<CompilationUnit>, Model, SourceMap) {
     frontend_with(src, |_, _| {})
 }
@@ -23,9 +20,9 @@ pub fn frontend_with(
 ) -> (Vec<CompilationUnit>, Model, SourceMap) {
     let mut map = SourceMap::new();
     let file = map.add("test.il", src.to_string());
-    let mut unit = sema_support::read(file, src);
-    edit(&mut unit, file);
     let mut diags = Diagnostics::new();
+    let mut unit = il_frontend::parse(file, src, &mut diags);
+    edit(&mut unit, file);
     let units = vec![unit];
     let model = analyze(&units, &mut diags);
     let list = diags.into_sorted();
