@@ -10,6 +10,7 @@
 
 pub mod ctypes;
 mod emit;
+pub use emit::config_header;
 pub mod mangle;
 pub mod profile;
 pub mod runtime;

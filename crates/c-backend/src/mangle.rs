@@ -4,7 +4,7 @@
 //! C literal text. Invariants: two IEC names map to the same C identifier iff they are equal ignoring ASCII
 //! case; every mangled identifier starts with a generator prefix (`v_`, `FB_`, ...) so it is never a C
 //! keyword nor a runtime name (`ladderc_`, `LADDERC_`, `IEC_`); string literals are emitted byte-wise with
-//! octal escapes for everything but letters, digits and spaces, so no user text can end a C literal or
+//! octal escapes for everything but letters, digits and a few harmless punctuation marks, so no user text can end a C literal or
 //! comment; user comments are never copied.
 
 use std::fmt::Write as _;
@@ -146,12 +146,13 @@ pub fn is_valid_embedded_name(name: &str) -> bool {
     !numbered && !reserved.iter().any(|p| name.starts_with(p))
 }
 
-/// A C string literal holding exactly `bytes` (letters, digits and spaces verbatim, all else `\ooo`).
+/// A C string literal holding exactly `bytes` (letters, digits and ` ._,[]%#:-+=` verbatim, all else
+/// `\ooo`: no quote, backslash, `?` (trigraphs), newline or `*/` can appear).
 pub fn c_string(bytes: &[u8]) -> String {
     let mut s = String::with_capacity(bytes.len() * 2 + 2);
     s.push('"');
     for &b in bytes {
-        if b.is_ascii_alphanumeric() || b == b' ' {
+        if b.is_ascii_alphanumeric() || b" ._,[]%#:-+=".contains(&b) {
             s.push(b as char);
         } else {
             let _ = write!(s, "\\{b:03o}");

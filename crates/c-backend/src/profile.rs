@@ -255,7 +255,7 @@ impl TargetProfile {
         }
         let offset = offset as u32;
         let align = self.alignment.min(bytes);
-        if bit.is_none() && align > 1 && offset % align != 0 {
+        if bit.is_none() && align > 1 && !offset.is_multiple_of(align) {
             return Err(Box::new(
                 Diagnostic::error(
                     code::E2006,

@@ -584,7 +584,7 @@ impl Gen<'_> {
     }
 
     /// The written operand of argument `i`.
-    fn written_arg<'a>(args: &'a CallArgs, i: usize) -> Option<(&'a Operand, bool)> {
+    fn written_arg(args: &CallArgs, i: usize) -> Option<(&Operand, bool)> {
         match args {
             CallArgs::None => None,
             CallArgs::NonFormal(v) => v.get(i).map(|o| (o, false)),

@@ -34,6 +34,38 @@ pub struct Gen<'a> {
     pub reported: HashSet<(&'static str, Option<Span>)>,
     /// While > 0, diagnostics are suppressed (type probing).
     pub quiet: u32,
+    /// The span of the `AT %...` address of each located declaration, by the declaration's name span
+    /// and whole span (the model keeps the variable's span only).
+    pub address_spans: HashMap<Span, Span>,
+}
+
+/// Records the address span of every located declaration in the units.
+fn collect_address_spans(units: &[CompilationUnit]) -> HashMap<Span, Span> {
+    let mut map = HashMap::new();
+    let block = |b: &il_frontend::ast::VarBlock, map: &mut HashMap<Span, Span>| {
+        for d in &b.vars {
+            if let Some(a) = &d.location {
+                map.insert(d.name.span, a.span);
+                map.insert(d.span, a.span);
+            }
+        }
+    };
+    for u in units {
+        for item in &u.items {
+            match item {
+                LibraryElement::Pou(p) => p.var_blocks.iter().for_each(|b| block(b, &mut map)),
+                LibraryElement::GlobalVars(b) => block(b, &mut map),
+                LibraryElement::Configuration(c) => {
+                    c.globals.iter().for_each(|b| block(b, &mut map));
+                    for r in &c.resources {
+                        r.globals.iter().for_each(|b| block(b, &mut map));
+                    }
+                }
+                LibraryElement::DataTypes(_) => {}
+            }
+        }
+    }
+    map
 }
 
 pub fn generate(
@@ -56,6 +88,7 @@ pub fn generate(
             .collect(),
         reported: HashSet::new(),
         quiet: 0,
+        address_spans: collect_address_spans(units),
     };
     g.check_embedded(opts);
 

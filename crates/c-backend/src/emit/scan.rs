@@ -223,7 +223,7 @@ impl Gen<'_> {
             area: loc.area,
             size: loc.size,
             path: loc.path.clone(),
-            span: v.span,
+            span: self.address_spans.get(&v.span).copied().unwrap_or(v.span),
         };
         let bytes = if v.ty.is_bool() {
             None

@@ -152,7 +152,7 @@ impl Gen<'_> {
             area: loc.area,
             size: loc.size,
             path: loc.path.clone(),
-            span: v.span,
+            span: self.address_spans.get(&v.span).copied().unwrap_or(v.span),
         };
         let bytes = if v.ty.is_bool() { None } else { Some(bytes) };
         match self.profile.locate(&addr, bytes) {
@@ -179,41 +179,46 @@ impl Gen<'_> {
         }
     }
 
-    /// Resolves the base name of a variable reference.
-    fn base_place(&mut self, scope: &Scope, name: &il_frontend::ast::Ident) -> Option<Place> {
+    /// Resolves the base name of a variable reference: `None` when no such name is visible,
+    /// `Some(None)` when it is but its place could not be computed (a diagnostic was reported).
+    fn base_place(
+        &mut self,
+        scope: &Scope,
+        name: &il_frontend::ast::Ident,
+    ) -> Option<Option<Place>> {
         let key = name.key();
         if let Some((pou, _)) = scope.pou {
             if let Some(&i) = scope.vars.get(&key) {
                 let v = &pou.vars[i];
                 if v.kind == VarKind::External {
                     if let Some(&g) = scope.externals.get(&i) {
-                        return self.global_place(g, name.span);
+                        return Some(self.global_place(g, name.span));
                     }
                 }
                 if let Some(loc) = &v.location {
                     let v = v.clone();
                     let loc = loc.clone();
-                    return self.locate_var(&v, &loc, name.span);
+                    return Some(self.locate_var(&v, &loc, name.span));
                 }
-                return Some(Place::Mem {
+                return Some(Some(Place::Mem {
                     lv: own_var_lvalue(pou.kind, v),
                     ty: v.ty.clone(),
-                });
+                }));
             }
             if pou.kind == PouKind::Function && pou.name.eq_ignore_ascii_case(&name.name) {
                 if let Some(rt) = &pou.return_type {
-                    return Some(Place::Mem {
+                    return Some(Some(Place::Mem {
                         lv: mangle::var(&pou.name),
                         ty: rt.clone(),
-                    });
+                    }));
                 }
             }
             if key == "EN" || key == "ENO" {
                 scope.uses_en.set(true);
-                return Some(Place::Mem {
+                return Some(Some(Place::Mem {
                     lv: mangle::var(&key),
                     ty: Type::BOOL,
-                });
+                }));
             }
         }
         if let Some((c, r)) = scope.config {
@@ -223,28 +228,31 @@ impl Gen<'_> {
                 .iter()
                 .position(|g| g.is(&name.name))
             {
-                return self.global_place(
+                return Some(self.global_place(
                     GlobalRef::Resource {
                         config: c,
                         resource: r,
                         index,
                     },
                     name.span,
-                );
+                ));
             }
             if let Some(index) = cfg.globals.iter().position(|g| g.is(&name.name)) {
-                return self.global_place(GlobalRef::Configuration { config: c, index }, name.span);
+                return Some(
+                    self.global_place(GlobalRef::Configuration { config: c, index }, name.span),
+                );
             }
         }
         if let Some(&i) = self.free_globals.get(&key) {
-            return self.global_place(GlobalRef::Free(i), name.span);
+            return Some(self.global_place(GlobalRef::Free(i), name.span));
         }
         None
     }
 
     /// The place a variable reference denotes (None: an error was reported, or it is not a variable).
     pub fn place(&mut self, scope: &Scope, r: &VarRef) -> Option<Place> {
-        let Some(mut place) = self.base_place(scope, &r.base) else {
+        let base = self.base_place(scope, &r.base);
+        let Some(base) = base else {
             self.report_once(
                 Diagnostic::error(
                     code::E2005,
@@ -257,6 +265,7 @@ impl Gen<'_> {
             );
             return None;
         };
+        let mut place = base?;
         for acc in &r.accessors {
             let (lv, ty) = match place {
                 Place::Mem { lv, ty } => (lv, ty),
