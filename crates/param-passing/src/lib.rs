@@ -12,6 +12,7 @@ pub mod cbody;
 pub mod library;
 pub mod lower;
 pub mod prelude;
+pub mod static_lib;
 pub mod template;
 pub mod tm;
 mod xml;

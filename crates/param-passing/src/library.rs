@@ -9,7 +9,24 @@ use diagnostics::{code, Diagnostic, Diagnostics, SourceMap};
 use std::path::Path;
 
 /// The built-in templates: (file name, text).
-pub const BUILTIN: &[(&str, &str)] = &[];
+pub const BUILTIN: &[(&str, &str)] = &[
+    ("MC_GearIn.xml", include_str!("../../../templates/MC_GearIn.xml")),
+    ("MC_Halt.xml", include_str!("../../../templates/MC_Halt.xml")),
+    ("MC_Home.xml", include_str!("../../../templates/MC_Home.xml")),
+    ("MC_MoveAbsolute.xml", include_str!("../../../templates/MC_MoveAbsolute.xml")),
+    ("MC_MoveAdditive.xml", include_str!("../../../templates/MC_MoveAdditive.xml")),
+    ("MC_MoveRelative.xml", include_str!("../../../templates/MC_MoveRelative.xml")),
+    ("MC_MoveVelocity.xml", include_str!("../../../templates/MC_MoveVelocity.xml")),
+    ("MC_Power.xml", include_str!("../../../templates/MC_Power.xml")),
+    ("MC_ReadActualPosition.xml", include_str!("../../../templates/MC_ReadActualPosition.xml")),
+    ("MC_ReadActualVelocity.xml", include_str!("../../../templates/MC_ReadActualVelocity.xml")),
+    ("MC_ReadAxisError.xml", include_str!("../../../templates/MC_ReadAxisError.xml")),
+    ("MC_ReadStatus.xml", include_str!("../../../templates/MC_ReadStatus.xml")),
+    ("MC_Reset.xml", include_str!("../../../templates/MC_Reset.xml")),
+    ("MC_SetOverride.xml", include_str!("../../../templates/MC_SetOverride.xml")),
+    ("MC_SetPosition.xml", include_str!("../../../templates/MC_SetPosition.xml")),
+    ("MC_Stop.xml", include_str!("../../../templates/MC_Stop.xml")),
+];
 
 #[derive(Debug, Default, Clone)]
 pub struct Library {

@@ -41,9 +41,6 @@ pub struct TmWindow {
     pub element_addressing: bool,
 }
 
-/// Name of the hidden instance field that holds the motion engine's handle of a block instance.
-pub const HANDLE_FIELD: &str = "EngineHandle";
-
 /// The chosen method for one block type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Method {
@@ -112,26 +109,12 @@ pub fn tm_view_name(block: &str, param: &str) -> String {
     format!("TM__{block}__{param}")
 }
 
-/// The TM layout of a block for the IL method: the template's parameters plus the instance handle, ordered
-/// by slot size (largest first) so that every slot is aligned to its size while the area stays contiguous.
+/// The TM layout of a block for the IL method: the template's parameters ordered by slot size (largest
+/// first, stable) so that every slot is aligned to its size while the area stays contiguous.
 pub fn il_layout(t: &Template, window: &TmWindow) -> Result<TmLayout, (u32, u32)> {
     let mut params: Vec<Param> = t.params.clone();
-    params.push(handle_param(t.span));
     params.sort_by_key(|p| std::cmp::Reverse(p.class.tm_bytes()));
     tm::layout_params(&params, window.bytes)
-}
-
-fn handle_param(span: Span) -> Param {
-    Param {
-        name: HANDLE_FIELD.into(),
-        abbr: "Handle".into(),
-        direction: Direction::InOut,
-        class: TypeClass::Dword,
-        iec_type: "UDINT".into(),
-        required: false,
-        default: None,
-        span,
-    }
 }
 
 /// The IEC type of a TM slot of `p` (bool class: the 0/1 byte).
@@ -149,6 +132,7 @@ fn slot_type(p: &Param) -> &'static str {
         (TypeClass::Dword, _) => "UDINT",
         (TypeClass::Real, _) => "REAL",
         (TypeClass::Lreal, _) => "LREAL",
+        (TypeClass::Lword, _) => "LWORD",
         (TypeClass::Struct, _) => "UDINT",
     }
 }
@@ -653,6 +637,25 @@ impl PouLowering<'_> {
         field(instance, &p.name)
     }
 
+    /// The operand a parameter's value comes from before the call: a bound argument for inputs, else the
+    /// instance's own field (inputs' stored values, outputs' and state's previous values). A reference
+    /// (struct class) passes its engine index field.
+    fn source(p: &Param, instance: &VarRef, args: &CallArgs) -> Operand {
+        let src = if matches!(p.direction, Direction::Input | Direction::InOut) {
+            Self::input_source(p, instance, args)
+        } else {
+            field(instance, &p.name)
+        };
+        match (&src, p.class) {
+            (Operand::Var(v), TypeClass::Struct) => {
+                let mut v = v.clone();
+                v.accessors.push(Accessor::Field(id(crate::prelude::index_field(&p.iec_type), v.span)));
+                Operand::Var(v)
+            }
+            _ => src,
+        }
+    }
+
     fn il_call(
         &mut self,
         t: &Template,
@@ -662,65 +665,29 @@ impl PouLowering<'_> {
         span: Span,
         out: &mut Vec<IlStmt>,
     ) {
-        let handle = handle_param(span);
-        // 1. input transfer (and the instance handle)
-        for p in t.inputs().chain(std::iter::once(&handle)) {
-            let src = if p.name == HANDLE_FIELD {
-                field(instance, HANDLE_FIELD)
-            } else {
-                Self::input_source(p, instance, args)
-            };
-            let src = match (&src, p.class) {
-                (Operand::Var(v), TypeClass::Struct) => {
-                    let mut v = v.clone();
-                    v.accessors.push(Accessor::Field(id(
-                        crate::prelude::index_field(&p.iec_type),
-                        v.span,
-                    )));
-                    Operand::Var(v)
-                }
-                _ => src,
-            };
+        // 1. transfer into TM: inputs, then what the library reads back (previous outputs, state)
+        for p in t.inputs().chain(t.carried()) {
+            let src = Self::source(p, instance, args);
             let dst = self.view(t, layout, p, span);
             match (p.class, &src) {
                 (TypeClass::Bool, Operand::Literal(l)) => {
-                    let v = matches!(l.kind, LiteralKind::Bool(true))
-                        || matches!(l.kind, LiteralKind::Int(1));
+                    let v = matches!(l.kind, LiteralKind::Bool(true) | LiteralKind::Int(1));
                     out.push(simple(Op::Ld, false, Some(int_lit(v as i128, span)), span));
                 }
                 (TypeClass::Bool, _) => {
+                    let t = Operand::Literal(Literal { kind: LiteralKind::Bool(true), type_prefix: None, span });
                     out.push(simple(Op::Ld, false, Some(src.clone()), span));
-                    out.push(simple(
-                        Op::Eq,
-                        false,
-                        Some(Operand::Literal(Literal {
-                            kind: LiteralKind::Bool(true),
-                            type_prefix: None,
-                            span,
-                        })),
-                        span,
-                    ));
-                    out.push(instr(
-                        InstrKind::FunctionCall {
-                            name: id("BOOL_TO_BYTE", span),
-                            args: CallArgs::None,
-                        },
-                        span,
-                    ));
+                    out.push(simple(Op::Eq, false, Some(t), span));
+                    out.push(instr(InstrKind::FunctionCall { name: id("BOOL_TO_BYTE", span), args: CallArgs::None }, span));
                 }
                 _ => out.push(simple(Op::Ld, false, Some(src.clone()), span)),
             }
             out.push(simple(Op::St, false, Some(dst), span));
         }
-        // 2. the call
-        out.push(instr(
-            InstrKind::EmbeddedC {
-                name: id(&t.block, span),
-            },
-            span,
-        ));
-        // 3. output transfer: into the instance, then into the `=>` targets
-        for p in t.outputs().chain(std::iter::once(&handle)) {
+        // 2. the call of the static-library function
+        out.push(instr(InstrKind::EmbeddedC { name: id(&t.block, span) }, span));
+        // 3. transfer out of TM: into the instance, then into the `=>` targets
+        for p in t.carried() {
             let src = self.view(t, layout, p, span);
             let inst_field = field(instance, &p.name);
             out.push(simple(Op::Ld, false, Some(src), span));
@@ -732,13 +699,9 @@ impl PouLowering<'_> {
             } else {
                 out.push(simple(Op::St, false, Some(inst_field.clone()), span));
             }
-            if let CallArgs::Formal(f) = args {
-                for a in f.iter().filter(|a| a.name.is(&p.name)) {
-                    if let ArgDir::Output { negated } = a.dir {
-                        out.push(simple(Op::Ld, negated, Some(inst_field.clone()), span));
-                        out.push(simple(Op::St, false, Some(a.value.clone()), span));
-                    }
-                }
+            for (target, negated) in output_targets(p, args) {
+                out.push(simple(Op::Ld, negated, Some(inst_field.clone()), span));
+                out.push(simple(Op::St, false, Some(target), span));
             }
         }
     }
@@ -753,86 +716,44 @@ impl PouLowering<'_> {
     ) {
         let n = *self.site;
         let name = format!("{}_{n}", t.block);
-        let handle = handle_param(span);
         let mut head = Vec::new();
         let mut tail = Vec::new();
-        for p in t.params.iter().chain(std::iter::once(&handle)) {
+        for p in &t.params {
             let local = format!("{}_{n}", p.abbr);
-            let source = if p.direction == Direction::Output || p.name == HANDLE_FIELD {
-                field(instance, &p.name)
-            } else {
-                Self::input_source(p, instance, args)
-            };
-            let source = match (&source, p.class) {
-                (Operand::Var(v), TypeClass::Struct) => {
-                    let mut v = v.clone();
-                    v.accessors.push(Accessor::Field(id(
-                        crate::prelude::index_field(&p.iec_type),
-                        v.span,
-                    )));
-                    Operand::Var(v)
-                }
-                _ => source,
-            };
-            head.push(HeadLocal {
-                c_type: if p.name == HANDLE_FIELD {
-                    "uint32_t"
-                } else {
-                    p.c_type()
-                },
-                local: local.clone(),
-                class: p.class,
-                source,
-            });
-            if p.direction == Direction::Output || p.name == HANDLE_FIELD {
-                tail.push(Feedback {
-                    target: field(instance, &p.name),
-                    local: local.clone(),
-                    class: p.class,
-                    negated: false,
-                });
-                if let CallArgs::Formal(f) = args {
-                    for a in f.iter().filter(|a| a.name.is(&p.name)) {
-                        if let ArgDir::Output { negated } = a.dir {
-                            tail.push(Feedback {
-                                target: a.value.clone(),
-                                local: local.clone(),
-                                class: p.class,
-                                negated,
-                            });
-                        }
-                    }
+            head.push(HeadLocal { c_type: p.c_type(), local: local.clone(), class: p.class, source: Self::source(p, instance, args) });
+            if matches!(p.direction, Direction::Output | Direction::State) {
+                tail.push(Feedback { target: field(instance, &p.name), local: local.clone(), class: p.class, negated: false });
+                for (target, negated) in output_targets(p, args) {
+                    tail.push(Feedback { target, local: local.clone(), class: p.class, negated });
                 }
             }
         }
-        let renames: HashMap<&str, String> = t
-            .params
-            .iter()
-            .chain(std::iter::once(&handle))
-            .map(|p| (p.abbr.as_str(), format!("{}_{n}", p.abbr)))
-            .collect();
+        let renames: HashMap<&str, String> = t.params.iter().map(|p| (p.abbr.as_str(), format!("{}_{n}", p.abbr))).collect();
         let body = rename_identifiers(&t.body.text, &renames);
         self.synthesized.push(Synthesized {
             name: name.clone(),
             pou: self.pou_name.clone(),
             func_num: t.func_num,
             head,
-            locals: t
-                .locals
-                .iter()
-                .map(|l| (l.c_type.clone(), l.name.clone()))
-                .collect(),
+            locals: t.locals.iter().map(|l| (l.c_type.clone(), l.name.clone())).collect(),
             body,
             tail,
             call_span: span,
         });
-        out.push(instr(
-            InstrKind::EmbeddedC {
-                name: id(&name, span),
-            },
-            span,
-        ));
+        out.push(instr(InstrKind::EmbeddedC { name: id(&name, span) }, span));
     }
+}
+
+/// The `=>` targets a call binds to output `p`, with their `NOT`.
+fn output_targets(p: &Param, args: &CallArgs) -> Vec<(Operand, bool)> {
+    let CallArgs::Formal(f) = args else { return Vec::new() };
+    f.iter()
+        .filter(|a| a.name.is(&p.name))
+        .filter_map(|a| match a.dir {
+            ArgDir::Output { negated } => Some((a.value.clone(), negated)),
+            ArgDir::Input => None,
+        })
+        .collect()
 }
 
 /// Renames free identifiers of C text (not members after `.`/`->`, not inside literals or comments).

@@ -4,11 +4,10 @@
 //! the reference types (`AXIS_REF` ...), the PLCopen enumeration constants (`mcAborting` ... as USINT
 //! constants), and for each block either a `FUNCTION_BLOCK` declaration with the block's interface (before
 //! lowering: the user's calls are type-checked against it) or a `STRUCT` of the same name (after lowering:
-//! the instance keeps its inputs' defaults, its outputs and the engine handle as plain fields).
+//! the instance keeps its inputs' defaults, its outputs and its state words as plain fields).
 //! Invariant: the text only contains names from templates, which the loader validated as identifiers.
 
 use crate::library::Library;
-use crate::lower::HANDLE_FIELD;
 use crate::template::{Direction, Param, Template, TypeClass};
 use std::fmt::Write as _;
 
@@ -107,7 +106,7 @@ fn fb_declaration(t: &Template, out: &mut String) {
     out.push_str("END_FUNCTION_BLOCK\n\n");
 }
 
-/// The declarations after lowering: one STRUCT per template (inputs with defaults, outputs, engine handle).
+/// The declarations after lowering: one STRUCT per template (inputs with defaults, outputs, state).
 pub fn after_lowering(lib: &Library) -> String {
     let mut out = String::from(
         "(* PLCopen block instances after lowering (generated from the templates) *)\n",
@@ -119,7 +118,6 @@ pub fn after_lowering(lib: &Library) -> String {
         for p in t.params.iter().filter(|p| p.direction != Direction::InOut) {
             let _ = writeln!(out, "        {} : {}{};", p.name, declared_type(p), init(p));
         }
-        let _ = writeln!(out, "        {HANDLE_FIELD} : UDINT;");
         out.push_str("    END_STRUCT;\n");
     }
     out.push_str("END_TYPE\n");

@@ -13,6 +13,8 @@ pub enum Direction {
     Input,
     Output,
     InOut,
+    /// Hidden per-instance state the library keeps between scans (not visible to programs).
+    State,
 }
 
 /// Paper A's parameter classes, refined by size: they fix the TM slot size and the transfer instructions.
@@ -24,6 +26,8 @@ pub enum TypeClass {
     Dword,
     Real,
     Lreal,
+    /// 64-bit state words.
+    Lword,
     /// Passed as a base address (an axis or group reference: its index in the motion engine).
     Struct,
 }
@@ -35,7 +39,7 @@ impl TypeClass {
             TypeClass::Bool | TypeClass::Byte => 1,
             TypeClass::Word => 2,
             TypeClass::Dword | TypeClass::Real | TypeClass::Struct => 4,
-            TypeClass::Lreal => 8,
+            TypeClass::Lreal | TypeClass::Lword => 8,
         }
     }
     fn parse(s: &str) -> Option<Self> {
@@ -46,6 +50,7 @@ impl TypeClass {
             "dword" => TypeClass::Dword,
             "real" => TypeClass::Real,
             "lreal" => TypeClass::Lreal,
+            "lword" => TypeClass::Lword,
             "struct" => TypeClass::Struct,
             _ => return None,
         })
@@ -73,6 +78,7 @@ pub fn c_type_of(iec_type: &str, class: TypeClass) -> Option<&'static str> {
         (TypeClass::Dword, "DINT") => "int32_t",
         (TypeClass::Real, "REAL") => "float",
         (TypeClass::Lreal, "LREAL") => "double",
+        (TypeClass::Lword, "LWORD" | "ULINT") => "uint64_t",
         (TypeClass::Struct, "AXIS_REF" | "AXES_GROUP_REF" | "MC_CAM_REF" | "MC_CAM_ID") => {
             "uint32_t"
         }
@@ -136,15 +142,16 @@ impl Template {
             .iter()
             .find(|p| p.name.eq_ignore_ascii_case(name))
     }
+    /// Inputs and in-outs: what a program binds with `:=`.
     pub fn inputs(&self) -> impl Iterator<Item = &Param> {
-        self.params
-            .iter()
-            .filter(|p| p.direction != Direction::Output)
+        self.params.iter().filter(|p| matches!(p.direction, Direction::Input | Direction::InOut))
     }
     pub fn outputs(&self) -> impl Iterator<Item = &Param> {
-        self.params
-            .iter()
-            .filter(|p| p.direction == Direction::Output)
+        self.params.iter().filter(|p| p.direction == Direction::Output)
+    }
+    /// Outputs and state: what the instance keeps between scans and the library reads back.
+    pub fn carried(&self) -> impl Iterator<Item = &Param> {
+        self.params.iter().filter(|p| matches!(p.direction, Direction::Output | Direction::State))
     }
 }
 
@@ -325,8 +332,9 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
         "input" => Direction::Input,
         "output" => Direction::Output,
         "inout" => Direction::InOut,
+        "state" => Direction::State,
         _ => {
-            diags.push(bad_value(dir, "input, output or inout"));
+            diags.push(bad_value(dir, "input, output, inout or state"));
             return None;
         }
     };
@@ -365,7 +373,7 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
         }
     };
     let default = p.attr("default").map(|a| a.value.clone());
-    if direction == Direction::Output && (required || default.is_some()) {
+    if matches!(direction, Direction::Output | Direction::State) && (required || default.is_some()) {
         let a = p.attr("required").or(p.attr("default")).unwrap();
         diags.push(
             Diagnostic::error(
