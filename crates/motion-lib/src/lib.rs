@@ -4,5 +4,21 @@
 //! trajectories. Modules:
 //! - [`profile`]: time-optimal jerk-limited 1-D profiles and straight lines in N axes
 //!   (the mathematics, with no PLC interface).
+//! - [`axis`], [`fsm`], [`buffer`], [`cmd`], [`engine`], [`sync`], [`path`], [`group`]:
+//!   the runtime (axes, state machines, buffers, interpolation).
+//! - [`blocks`], [`group_blocks`]: the PLCopen function blocks, called once per scan.
+//! - [`ffi`]: the C ABI (the only `unsafe` code of the project).
 
 pub mod profile;
+
+pub mod axis;
+pub mod blocks;
+pub mod buffer;
+pub mod cmd;
+pub mod engine;
+pub mod error;
+pub mod fsm;
+pub mod group;
+pub mod group_blocks;
+pub mod path;
+pub mod sync;
