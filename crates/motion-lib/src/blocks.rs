@@ -18,8 +18,10 @@ use crate::sync::SyncParams;
 /// The common output logic of Execute-type blocks.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ExecCore {
-    prev_execute: bool,
-    cmd: Option<CmdId>,
+    #[doc(hidden)]
+    pub prev_execute: bool,
+    #[doc(hidden)]
+    pub cmd: Option<CmdId>,
     pub done: bool,
     pub busy: bool,
     pub active: bool,
@@ -183,7 +185,8 @@ pub struct McMoveAbsolute {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McMoveAbsolute {
@@ -222,7 +225,8 @@ pub struct McMoveRelative {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McMoveRelative {
@@ -255,7 +259,8 @@ pub struct McMoveAdditive {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McMoveAdditive {
@@ -288,7 +293,8 @@ pub struct McMoveVelocity {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McMoveVelocity {
@@ -327,7 +333,8 @@ pub struct McHalt {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McHalt {
@@ -355,8 +362,10 @@ pub struct McStop {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    prev_execute: bool,
-    cmd: Option<CmdId>,
+    #[doc(hidden)]
+    pub prev_execute: bool,
+    #[doc(hidden)]
+    pub cmd: Option<CmdId>,
 }
 
 impl McStop {
@@ -431,7 +440,8 @@ pub struct McHome {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McHome {
@@ -453,7 +463,8 @@ impl McHome {
 /// Execute is TRUE and for at least one call after it falls.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ImmediateCore {
-    prev_execute: bool,
+    #[doc(hidden)]
+    pub prev_execute: bool,
     pub done: bool,
     pub busy: bool,
     pub error: bool,
@@ -495,7 +506,8 @@ pub struct McReset {
     pub busy: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ImmediateCore,
+    #[doc(hidden)]
+    pub core: ImmediateCore,
 }
 
 impl McReset {
@@ -518,7 +530,8 @@ pub struct McSetPosition {
     pub busy: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ImmediateCore,
+    #[doc(hidden)]
+    pub core: ImmediateCore,
 }
 
 impl McSetPosition {
@@ -734,7 +747,8 @@ pub struct McGearIn {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McGearIn {
@@ -766,7 +780,8 @@ pub struct McSyncOut {
     pub busy: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 /// MC_GearOut.
@@ -813,7 +828,8 @@ pub struct McCamTableSelect {
     pub error: bool,
     pub error_id: ErrorId,
     pub cam_table_id: usize,
-    core: ImmediateCore,
+    #[doc(hidden)]
+    pub core: ImmediateCore,
 }
 
 impl McCamTableSelect {
@@ -856,7 +872,8 @@ pub struct McCamIn {
     pub error: bool,
     pub error_id: ErrorId,
     pub end_of_profile: bool,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McCamIn {

@@ -24,7 +24,8 @@ macro_rules! immediate_block {
             pub busy: bool,
             pub error: bool,
             pub error_id: ErrorId,
-            core: ImmediateCore,
+            #[doc(hidden)]
+            pub core: ImmediateCore,
         }
         impl $name {
             pub fn call(&mut self, $eng: &mut Engine, $g: usize) {
@@ -92,7 +93,8 @@ macro_rules! motion_block {
             pub command_aborted: bool,
             pub error: bool,
             pub error_id: ErrorId,
-            core: ExecCore,
+            #[doc(hidden)]
+            pub core: ExecCore,
         }
         impl $name {
             pub fn call(&mut self, eng: &mut Engine, group: usize) {
@@ -182,7 +184,8 @@ pub struct McGroupHalt {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    core: ExecCore,
+    #[doc(hidden)]
+    pub core: ExecCore,
 }
 
 impl McGroupHalt {
@@ -221,8 +224,10 @@ pub struct McGroupStop {
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    prev_execute: bool,
-    cmd: Option<CmdId>,
+    #[doc(hidden)]
+    pub prev_execute: bool,
+    #[doc(hidden)]
+    pub cmd: Option<CmdId>,
 }
 
 impl McGroupStop {
