@@ -195,13 +195,21 @@ impl McMoveAbsolute {
             position: self.position,
             direction: self.direction,
         };
-        let d = dynamics(self.velocity, self.acceleration, self.deceleration, self.jerk);
+        let d = dynamics(
+            self.velocity,
+            self.acceleration,
+            self.deceleration,
+            self.jerk,
+        );
         let bm = self.buffer_mode;
         let mut upd = |e: &mut Engine, id: CmdId| {
             let _ = e.update(axis, id, cmd, d);
         };
-        let update: Option<&mut dyn FnMut(&mut Engine, CmdId)> =
-            if self.continuous_update { Some(&mut upd) } else { None };
+        let update: Option<&mut dyn FnMut(&mut Engine, CmdId)> = if self.continuous_update {
+            Some(&mut upd)
+        } else {
+            None
+        };
         self.core
             .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), update);
         outputs_from_core!(self);
@@ -234,7 +242,12 @@ impl McMoveRelative {
         let cmd = AxisCommand::MoveRelative {
             distance: self.distance,
         };
-        let d = dynamics(self.velocity, self.acceleration, self.deceleration, self.jerk);
+        let d = dynamics(
+            self.velocity,
+            self.acceleration,
+            self.deceleration,
+            self.jerk,
+        );
         let bm = self.buffer_mode;
         self.core
             .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), None);
@@ -268,7 +281,12 @@ impl McMoveAdditive {
         let cmd = AxisCommand::MoveAdditive {
             distance: self.distance,
         };
-        let d = dynamics(self.velocity, self.acceleration, self.deceleration, self.jerk);
+        let d = dynamics(
+            self.velocity,
+            self.acceleration,
+            self.deceleration,
+            self.jerk,
+        );
         let bm = self.buffer_mode;
         self.core
             .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), None);
@@ -302,13 +320,21 @@ impl McMoveVelocity {
         let cmd = AxisCommand::MoveVelocity {
             direction: self.direction,
         };
-        let d = dynamics(self.velocity, self.acceleration, self.deceleration, self.jerk);
+        let d = dynamics(
+            self.velocity,
+            self.acceleration,
+            self.deceleration,
+            self.jerk,
+        );
         let bm = self.buffer_mode;
         let mut upd = |e: &mut Engine, id: CmdId| {
             let _ = e.update(axis, id, cmd, d);
         };
-        let update: Option<&mut dyn FnMut(&mut Engine, CmdId)> =
-            if self.continuous_update { Some(&mut upd) } else { None };
+        let update: Option<&mut dyn FnMut(&mut Engine, CmdId)> = if self.continuous_update {
+            Some(&mut upd)
+        } else {
+            None
+        };
         self.core
             .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), update);
         self.in_velocity = self.core.in_target && self.core.active;
@@ -537,7 +563,8 @@ pub struct McSetPosition {
 impl McSetPosition {
     pub fn call(&mut self, eng: &mut Engine, axis: usize) {
         let (p, r) = (self.position, self.relative);
-        self.core.cycle(self.execute, || eng.set_position(axis, p, r));
+        self.core
+            .cycle(self.execute, || eng.set_position(axis, p, r));
         self.done = self.core.done;
         self.busy = self.core.busy;
         self.error = self.core.error;
@@ -887,8 +914,16 @@ impl McCamIn {
             slave_absolute: self.slave_absolute,
             master_offset: self.master_offset,
             slave_offset: self.slave_offset,
-            master_scaling: if self.master_scaling == 0.0 { 1.0 } else { self.master_scaling },
-            slave_scaling: if self.slave_scaling == 0.0 { 1.0 } else { self.slave_scaling },
+            master_scaling: if self.master_scaling == 0.0 {
+                1.0
+            } else {
+                self.master_scaling
+            },
+            slave_scaling: if self.slave_scaling == 0.0 {
+                1.0
+            } else {
+                self.slave_scaling
+            },
             ..SyncParams::default()
         };
         let cmd = AxisCommand::CamIn { master, params };

@@ -36,7 +36,10 @@ pub enum CmdStatus {
 impl CmdStatus {
     /// True for Done, Aborted and Error.
     pub fn is_final(self) -> bool {
-        matches!(self, CmdStatus::Done | CmdStatus::Aborted | CmdStatus::Error(_))
+        matches!(
+            self,
+            CmdStatus::Done | CmdStatus::Aborted | CmdStatus::Error(_)
+        )
     }
 }
 

@@ -172,13 +172,28 @@ impl Active {
     }
 }
 
+/// Profile::position, standing still when the start already is the target.
+pub(crate) fn plan_position(
+    start: State,
+    target: f64,
+    end_v: f64,
+    lim: &Limits,
+) -> Result<Profile, crate::profile::PlanError> {
+    if start.p == target && start.v == end_v && start.a == 0.0 && end_v == 0.0 {
+        return Ok(standing(target));
+    }
+    Profile::position(start, target, end_v, lim)
+}
+
 /// A zero-length profile standing at `p`.
 pub(crate) fn standing(p: f64) -> Profile {
     let at = State { p, v: 0.0, a: 0.0 };
     match Profile::velocity(at, 0.0, &UNIT) {
         Ok(prof) => prof,
         // Only a non-finite position fails: stand at 0 instead.
-        Err(_) => Profile::velocity(State::default(), 0.0, &UNIT).unwrap_or_else(|_| unreachable!()),
+        Err(_) => {
+            Profile::velocity(State::default(), 0.0, &UNIT).unwrap_or_else(|_| unreachable!())
+        }
     }
 }
 
@@ -564,7 +579,12 @@ impl Engine {
 
     /// MC_SetPosition: shifts the axis coordinate so that the set position becomes
     /// `position` (or moves by `position` when `relative`). Motion continues unchanged.
-    pub fn set_position(&mut self, axis: usize, position: f64, relative: bool) -> Result<(), ErrorId> {
+    pub fn set_position(
+        &mut self,
+        axis: usize,
+        position: f64,
+        relative: bool,
+    ) -> Result<(), ErrorId> {
         self.axis(axis)?;
         if !finite(position) {
             return Err(ErrorId::InvalidPosition);
@@ -717,7 +737,11 @@ impl Engine {
                                 }
                             }
                             Direction::Current => {
-                                let s = if aborting { ax.set.v.signum() } else { dir_hint };
+                                let s = if aborting {
+                                    ax.set.v.signum()
+                                } else {
+                                    dir_hint
+                                };
                                 if s < 0.0 {
                                     back
                                 } else {
@@ -869,7 +893,10 @@ impl Engine {
         let probe = CmdId { index: 0, gen: 0 };
         let pending = self.resolve(axis, &cmd, &dynamics, buffer, probe, None)?;
         let idle = self.axes[axis].active.kind == Kind::Idle;
-        if buffer != BufferMode::Aborting && !idle && self.queues[axis].len() >= self.queues[axis].depth() {
+        if buffer != BufferMode::Aborting
+            && !idle
+            && self.queues[axis].len() >= self.queues[axis].depth()
+        {
             return Err(ErrorId::QueueFull);
         }
         let id = self.cmds.alloc(CmdStatus::Queued);
@@ -901,7 +928,10 @@ impl Engine {
         if self.axes[axis].active.id == Some(id) && st == CmdStatus::Active {
             let buffer = BufferMode::Aborting;
             let mut p = self.resolve(axis, &cmd, &dynamics, buffer, id, None)?;
-            if matches!(cmd, AxisCommand::MoveAdditive { .. } | AxisCommand::MoveRelative { .. }) {
+            if matches!(
+                cmd,
+                AxisCommand::MoveAdditive { .. } | AxisCommand::MoveRelative { .. }
+            ) {
                 // The target of a relative move does not move with the axis.
                 return Ok(());
             }
@@ -953,7 +983,10 @@ impl Engine {
             None => {
                 let q = &self.queues[axis];
                 if q.len() >= 2 {
-                    q.iter().nth(q.len() - 2).map(|p| p.target).unwrap_or(pred_target)
+                    q.iter()
+                        .nth(q.len() - 2)
+                        .map(|p| p.target)
+                        .unwrap_or(pred_target)
                 } else {
                     self.axes[axis].active.target
                 }
@@ -996,7 +1029,7 @@ impl Engine {
         let mut lim = p.lim;
         lim.vmax = lim.vmax.max(p.end_v.abs());
         let prof = match p.kind {
-            Kind::Position => Profile::position(start, p.target, p.end_v, &lim),
+            Kind::Position => plan_position(start, p.target, p.end_v, &lim),
             Kind::Velocity => Profile::velocity(start, p.target, &lim),
             Kind::Halt | Kind::Stop => Profile::velocity(start, 0.0, &lim),
             Kind::Gear | Kind::Cam => Ok(self.axes[axis].active.prof),
@@ -1125,7 +1158,9 @@ impl Engine {
                 ax.act_v = ax.set.v;
                 if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop {
                     let u = ax.set.p + ax.origin;
-                    if ax.cfg.period().is_none() && (u > ax.cfg.sw_limit_pos || u < ax.cfg.sw_limit_neg) {
+                    if ax.cfg.period().is_none()
+                        && (u > ax.cfg.sw_limit_pos || u < ax.cfg.sw_limit_neg)
+                    {
                         self.events.push(i as u32);
                     }
                 }
@@ -1156,7 +1191,8 @@ impl Engine {
             ax.act_v = s.v;
         }
         let ax = &self.axes[i];
-        if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop && ax.cfg.period().is_none() {
+        if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop && ax.cfg.period().is_none()
+        {
             let u = ax.set.p + ax.origin;
             if u > ax.cfg.sw_limit_pos {
                 let _ = self.raise_axis_error(i, ErrorId::SoftwareLimitPositive);
@@ -1175,7 +1211,12 @@ impl Engine {
         if powered {
             d.write(s.p, s.v, s.a);
         }
-        let (p, v, en, fault) = (d.actual_position(), d.actual_velocity(), d.enabled(), d.fault());
+        let (p, v, en, fault) = (
+            d.actual_position(),
+            d.actual_velocity(),
+            d.enabled(),
+            d.fault(),
+        );
         let ax = &mut self.axes[i];
         ax.act_p = p;
         ax.act_v = v;
@@ -1197,7 +1238,10 @@ impl Engine {
             self.poll_power(i);
         }
         let ax = &self.axes[i];
-        if ax.cfg.following_error_limit > 0.0 && ax.powered && (s.p - p).abs() > ax.cfg.following_error_limit {
+        if ax.cfg.following_error_limit > 0.0
+            && ax.powered
+            && (s.p - p).abs() > ax.cfg.following_error_limit
+        {
             let _ = self.raise_axis_error(i, ErrorId::FollowingError);
             return;
         }
@@ -1258,7 +1302,11 @@ impl Engine {
                     Kind::Stop => {
                         let ax = &mut self.axes[i];
                         let end = a.prof.end();
-                        ax.set = State { p: end.p, v: 0.0, a: 0.0 };
+                        ax.set = State {
+                            p: end.p,
+                            v: 0.0,
+                            a: 0.0,
+                        };
                         ax.active = Active::idle(ax.set);
                         if let Some(id) = a.id {
                             self.cmds.set(id, CmdStatus::Done);
@@ -1267,7 +1315,11 @@ impl Engine {
                     Kind::Brake => {
                         let ax = &mut self.axes[i];
                         let end = a.prof.end();
-                        ax.set = State { p: end.p, v: 0.0, a: 0.0 };
+                        ax.set = State {
+                            p: end.p,
+                            v: 0.0,
+                            a: 0.0,
+                        };
                         ax.active = Active::idle(ax.set);
                     }
                     _ => {
@@ -1284,7 +1336,11 @@ impl Engine {
                             ax.set.v = 0.0;
                         } else {
                             // The successor starts from the junction state.
-                            ax.set = State { p: end.p, v: a.end_v, a: 0.0 };
+                            ax.set = State {
+                                p: end.p,
+                                v: a.end_v,
+                                a: 0.0,
+                            };
                             self.start_next(i, leftover);
                         }
                     }

@@ -112,16 +112,12 @@ pub fn check_group(state: GroupState, cmd: GroupCmd) -> Result<GroupState, Error
     match (cmd, state) {
         (GroupCmd::Configure, GroupDisabled) => Ok(GroupDisabled),
         (GroupCmd::Configure, _) => Err(ErrorId::GroupNotDisabled),
-        (GroupCmd::Ungroup, GroupMoving | GroupHoming | GroupStopping) => {
-            Err(ErrorId::GroupMoving)
-        }
+        (GroupCmd::Ungroup, GroupMoving | GroupHoming | GroupStopping) => Err(ErrorId::GroupMoving),
         (GroupCmd::Ungroup, _) => Ok(GroupDisabled),
         (GroupCmd::Enable, GroupDisabled | GroupStandby) => Ok(GroupStandby),
         (GroupCmd::Enable, GroupErrorStop) => Err(ErrorId::GroupErrorStop),
         (GroupCmd::Enable, _) => Ok(state),
-        (GroupCmd::Disable, GroupMoving | GroupHoming | GroupStopping) => {
-            Err(ErrorId::GroupMoving)
-        }
+        (GroupCmd::Disable, GroupMoving | GroupHoming | GroupStopping) => Err(ErrorId::GroupMoving),
         (GroupCmd::Disable, _) => Ok(GroupDisabled),
         (GroupCmd::Motion, GroupStandby | GroupMoving) => Ok(GroupMoving),
         (GroupCmd::Motion, GroupDisabled) => Err(ErrorId::GroupDisabled),

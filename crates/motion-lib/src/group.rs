@@ -106,7 +106,10 @@ pub(crate) struct GroupRt {
 
 impl GroupRt {
     fn n(&self) -> usize {
-        self.axes.iter().rposition(|a| a.is_some()).map_or(0, |i| i + 1)
+        self.axes
+            .iter()
+            .rposition(|a| a.is_some())
+            .map_or(0, |i| i + 1)
     }
 }
 
@@ -138,7 +141,13 @@ impl Engine {
 
     /// The axis with identity `ident` in the group.
     pub fn group_axis(&self, g: usize, ident: usize) -> Result<Option<usize>, ErrorId> {
-        Ok(self.grp(g)?.axes.get(ident).copied().flatten().map(|a| a as usize))
+        Ok(self
+            .grp(g)?
+            .axes
+            .get(ident)
+            .copied()
+            .flatten()
+            .map(|a| a as usize))
     }
 
     /// Commands waiting in the group's buffer.
@@ -147,7 +156,12 @@ impl Engine {
     }
 
     /// MC_AddAxisToGroup.
-    pub fn add_axis_to_group(&mut self, g: usize, axis: usize, ident: usize) -> Result<(), ErrorId> {
+    pub fn add_axis_to_group(
+        &mut self,
+        g: usize,
+        axis: usize,
+        ident: usize,
+    ) -> Result<(), ErrorId> {
         let gr = self.grp(g)?;
         check_group(gr.state, GroupCmd::Configure)?;
         let ax = self.axis(axis)?;
@@ -166,7 +180,12 @@ impl Engine {
     pub fn remove_axis_from_group(&mut self, g: usize, ident: usize) -> Result<(), ErrorId> {
         let gr = self.grp(g)?;
         check_group(gr.state, GroupCmd::Configure)?;
-        let a = gr.axes.get(ident).copied().flatten().ok_or(ErrorId::AxisNotInGroup)?;
+        let a = gr
+            .axes
+            .get(ident)
+            .copied()
+            .flatten()
+            .ok_or(ErrorId::AxisNotInGroup)?;
         self.groups[g].axes[ident] = None;
         self.axes[a as usize].group = None;
         Ok(())
@@ -191,9 +210,10 @@ impl Engine {
         let st = check_group(gr.state, GroupCmd::Enable)?;
         let members: Vec<u32> = gr.axes.iter().flatten().copied().collect();
         if members.is_empty()
-            || members
-                .iter()
-                .any(|&a| !self.axes[a as usize].powered || self.axes[a as usize].state != AxisState::Standstill)
+            || members.iter().any(|&a| {
+                !self.axes[a as usize].powered
+                    || self.axes[a as usize].state != AxisState::Standstill
+            })
         {
             return Err(ErrorId::GroupAxesNotReady);
         }
@@ -323,7 +343,12 @@ impl Engine {
     }
 
     /// Gives a motion command to a group. Returns its handle or the ErrorID.
-    pub fn submit_group(&mut self, g: usize, motion: GroupMotion, inputs: PathInputs) -> Result<CmdId, ErrorId> {
+    pub fn submit_group(
+        &mut self,
+        g: usize,
+        motion: GroupMotion,
+        inputs: PathInputs,
+    ) -> Result<CmdId, ErrorId> {
         let gr = self.grp(g)?;
         let class = match motion {
             GroupMotion::Stop => GroupCmd::Stop,
@@ -336,7 +361,8 @@ impl Engine {
             }
         }
         let n = gr.n();
-        let origin = |eng: &Engine, i: usize| gr.axes[i].map_or(0.0, |a| eng.axes[a as usize].origin);
+        let origin =
+            |eng: &Engine, i: usize| gr.axes[i].map_or(0.0, |a| eng.axes[a as usize].origin);
         let mut buffer = inputs.buffer;
         let kind = match motion {
             GroupMotion::Stop => {
@@ -347,7 +373,11 @@ impl Engine {
             GroupMotion::DirectAbsolute { .. } => GKind::Direct,
             _ => GKind::Path,
         };
-        let from = if buffer == BufferMode::Aborting { self.raw_now(g) } else { self.group_last_target(g) };
+        let from = if buffer == BufferMode::Aborting {
+            self.raw_now(g)
+        } else {
+            self.group_last_target(g)
+        };
         let check = |v: &Vecn| -> Result<(), ErrorId> {
             if v[..n].iter().all(|x| x.is_finite()) {
                 Ok(())
@@ -373,15 +403,29 @@ impl Engine {
                     }
                 }
             }
-            GroupMotion::Circular { end, aux, relative, mode, ccw } => {
+            GroupMotion::Circular {
+                end,
+                aux,
+                relative,
+                mode,
+                ccw,
+            } => {
                 check(&end)?;
                 check(&aux)?;
                 let mut e = from;
                 let mut x = from;
                 for i in 0..n {
                     if gr.axes[i].is_some() {
-                        e[i] = if relative { from[i] + end[i] } else { end[i] - origin(self, i) };
-                        x[i] = if relative { from[i] + aux[i] } else { aux[i] - origin(self, i) };
+                        e[i] = if relative {
+                            from[i] + end[i]
+                        } else {
+                            end[i] - origin(self, i)
+                        };
+                        x[i] = if relative {
+                            from[i] + aux[i]
+                        } else {
+                            aux[i] - origin(self, i)
+                        };
                     }
                 }
                 Geometry::arc(&from, &x, &e, mode, ccw).ok_or(ErrorId::InvalidCircle)?;
@@ -435,11 +479,22 @@ impl Engine {
 
     fn geometry_for(&self, g: usize, from: &Vecn, target: &Vecn, motion: &GroupMotion) -> Geometry {
         let n = self.groups[g].n();
-        if let GroupMotion::Circular { aux, relative, mode, ccw, .. } = motion {
+        if let GroupMotion::Circular {
+            aux,
+            relative,
+            mode,
+            ccw,
+            ..
+        } = motion
+        {
             let mut x = *from;
             for i in 0..n {
                 if let Some(a) = self.groups[g].axes[i] {
-                    x[i] = if *relative { from[i] + aux[i] } else { aux[i] - self.axes[a as usize].origin };
+                    x[i] = if *relative {
+                        from[i] + aux[i]
+                    } else {
+                        aux[i] - self.axes[a as usize].origin
+                    };
                 }
             }
             if let Some(geo) = Geometry::arc(from, &x, target, *mode, *ccw) {
@@ -457,10 +512,15 @@ impl Engine {
         let n = self.groups[g].n();
         let gr = &self.groups[g];
         // Predecessor: the queue's back, else the active move.
-        let (pred_from, pred_target, pred_speed, pred_kind, pred_is_active) = match gr.queue.back() {
+        let (pred_from, pred_target, pred_speed, pred_kind, pred_is_active) = match gr.queue.back()
+        {
             Some(b) => {
                 let from = if gr.queue.len() >= 2 {
-                    gr.queue.iter().nth(gr.queue.len() - 2).map(|p| p.target).unwrap_or(b.target)
+                    gr.queue
+                        .iter()
+                        .nth(gr.queue.len() - 2)
+                        .map(|p| p.target)
+                        .unwrap_or(b.target)
                 } else {
                     gr.active.as_ref().map_or(b.target, |a| a.target)
                 };
@@ -496,7 +556,11 @@ impl Engine {
             && matches!(pred_geom, Geometry::Line { .. })
             && matches!(next_geom, Geometry::Line { .. })
         {
-            let mut d = next.inputs.transition_parameter.min(pred_geom.len() / 2.0).min(next_geom.len() / 2.0);
+            let mut d = next
+                .inputs
+                .transition_parameter
+                .min(pred_geom.len() / 2.0)
+                .min(next_geom.len() / 2.0);
             if pred_is_active {
                 if let Some(a) = &gr.active {
                     let s_now = a.prof.at(a.t - a.prefix_end).p;
@@ -522,7 +586,11 @@ impl Engine {
                     .map(|&a| self.axes[a as usize].cfg.limits.amax)
                     .fold(f64::INFINITY, f64::min)
                     .min(next.inputs.acceleration);
-                let vmax_curve = if kmax > 0.0 { (amin / kmax).sqrt() } else { f64::INFINITY };
+                let vmax_curve = if kmax > 0.0 {
+                    (amin / kmax).sqrt()
+                } else {
+                    f64::INFINITY
+                };
                 vj = vj.min(vmax_curve);
                 next.prefix = Some((blend, vj));
                 new_pred_target = pa;
@@ -569,7 +637,14 @@ impl Engine {
     fn path_state(a: &GActive) -> (Geometry, State) {
         if a.t < a.prefix_end {
             if let Some((geo, v)) = a.prefix {
-                return (geo, State { p: v * a.t, v, a: 0.0 });
+                return (
+                    geo,
+                    State {
+                        p: v * a.t,
+                        v,
+                        a: 0.0,
+                    },
+                );
             }
         }
         (a.geom, a.prof.at(a.t - a.prefix_end))
@@ -587,7 +662,10 @@ impl Engine {
                 acc[i] = self.axes[*a as usize].set.a;
             }
         }
-        let running = self.groups[g].active.as_ref().map(|a| (Self::path_state(a), a.lim));
+        let running = self.groups[g]
+            .active
+            .as_ref()
+            .map(|a| (Self::path_state(a), a.lim));
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
             GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
@@ -625,8 +703,17 @@ impl Engine {
                     }
                 };
                 lim.vmax = lim.vmax.max(p.end_v);
-                let prof = Profile::position(State { p: 0.0, v: v0, a: a0 }, geo.len(), p.end_v, &lim)
-                    .map_err(|_| ErrorId::PlanningFailed)?;
+                let prof = crate::engine::plan_position(
+                    State {
+                        p: 0.0,
+                        v: v0,
+                        a: a0,
+                    },
+                    geo.len(),
+                    p.end_v,
+                    &lim,
+                )
+                .map_err(|_| ErrorId::PlanningFailed)?;
                 (geo, prof, lim, None, pe)
             }
             GKind::Direct => {
@@ -639,16 +726,34 @@ impl Engine {
                             vmax: al.vmax.min(p.inputs.velocity),
                             amax: al.amax.min(p.inputs.acceleration),
                             dmax: al.dmax.min(p.inputs.deceleration),
-                            jmax: if p.inputs.jerk > 0.0 { p.inputs.jerk } else { al.jmax },
+                            jmax: if p.inputs.jerk > 0.0 {
+                                p.inputs.jerk
+                            } else {
+                                al.jmax
+                            },
                         };
-                        let st = State { p: now[i], v: vel[i], a: acc[i] };
-                        profs[i] = Profile::position(st, p.target[i], 0.0, &l).map_err(|_| ErrorId::PlanningFailed)?;
+                        let st = State {
+                            p: now[i],
+                            v: vel[i],
+                            a: acc[i],
+                        };
+                        profs[i] = crate::engine::plan_position(st, p.target[i], 0.0, &l)
+                            .map_err(|_| ErrorId::PlanningFailed)?;
                         longest = longest.max(profs[i].duration());
                     }
                 }
                 let geo = Geometry::line(&now, &p.target);
-                let prof = Profile::velocity(State::default(), 0.0, &Limits { vmax: 1.0, amax: 1.0, dmax: 1.0, jmax: 0.0 })
-                    .map_err(|_| ErrorId::PlanningFailed)?;
+                let prof = Profile::velocity(
+                    State::default(),
+                    0.0,
+                    &Limits {
+                        vmax: 1.0,
+                        amax: 1.0,
+                        dmax: 1.0,
+                        jmax: 0.0,
+                    },
+                )
+                .map_err(|_| ErrorId::PlanningFailed)?;
                 let _ = longest;
                 (geo, prof, Limits::default(), Some(profs), 0.0)
             }
@@ -693,7 +798,9 @@ impl Engine {
     /// An axis of the group failed (or lost power): GroupErrorStop, buffered moves fail,
     /// the path brakes.
     pub(crate) fn group_axis_fault(&mut self, g: usize) {
-        if self.groups[g].state == GroupState::GroupErrorStop || self.groups[g].state == GroupState::GroupDisabled {
+        if self.groups[g].state == GroupState::GroupErrorStop
+            || self.groups[g].state == GroupState::GroupDisabled
+        {
             return;
         }
         self.group_abort_all(g, CmdStatus::Error(ErrorId::GroupAxisError));
@@ -761,7 +868,9 @@ impl Engine {
     /// One cycle of every group with a running move.
     pub(crate) fn step_groups(&mut self, dt: f64) {
         for g in 0..self.groups.len() {
-            let Some(mut a) = self.groups[g].active.take() else { continue };
+            let Some(mut a) = self.groups[g].active.take() else {
+                continue;
+            };
             let n = self.groups[g].n();
             a.t += dt;
             let (mut pos, mut d1, mut d2) = self.groups[g].scratch;
@@ -814,7 +923,10 @@ impl Engine {
                     let mut started = false;
                     while let Some(mut p) = self.groups[g].queue.pop() {
                         if let Some(nx) = self.groups[g].queue.front() {
-                            if nx.inputs.buffer.is_blending() && p.end_v == 0.0 && p.kind == GKind::Path {
+                            if nx.inputs.buffer.is_blending()
+                                && p.end_v == 0.0
+                                && p.kind == GKind::Path
+                            {
                                 p.end_v = nx.inputs.buffer.junction_speed(p.speed, nx.speed);
                             }
                         }
@@ -840,5 +952,9 @@ impl Engine {
 }
 
 fn dist(a: &Vecn, b: &Vecn) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y) * (x - y)).sum::<f64>().sqrt()
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y) * (x - y))
+        .sum::<f64>()
+        .sqrt()
 }

@@ -297,11 +297,22 @@ impl McGroupStop {
 }
 
 /// MC_GroupReadActualPosition / Velocity and MC_GroupReadStatus share these outputs.
-fn enable_outputs(enable: bool, ok: Result<(), ErrorId>, valid: &mut bool, busy: &mut bool, error: &mut bool, id: &mut ErrorId) {
+fn enable_outputs(
+    enable: bool,
+    ok: Result<(), ErrorId>,
+    valid: &mut bool,
+    busy: &mut bool,
+    error: &mut bool,
+    id: &mut ErrorId,
+) {
     *valid = enable && ok.is_ok();
     *busy = enable && ok.is_ok();
     *error = enable && ok.is_err();
-    *id = if enable { ok.err().unwrap_or_default() } else { ErrorId::None };
+    *id = if enable {
+        ok.err().unwrap_or_default()
+    } else {
+        ErrorId::None
+    };
 }
 
 /// MC_GroupReadActualPosition (set positions; the simulated drives follow exactly).
@@ -320,7 +331,14 @@ impl McGroupReadActualPosition {
     pub fn call(&mut self, eng: &mut Engine, group: usize) {
         let r = eng.group_position(group);
         self.position = *r.as_ref().unwrap_or(&[0.0; MAX_AXES]);
-        enable_outputs(self.enable, r.map(|_| ()), &mut self.valid, &mut self.busy, &mut self.error, &mut self.error_id);
+        enable_outputs(
+            self.enable,
+            r.map(|_| ()),
+            &mut self.valid,
+            &mut self.busy,
+            &mut self.error,
+            &mut self.error_id,
+        );
     }
 }
 
@@ -343,7 +361,14 @@ impl McGroupReadActualVelocity {
         let (v, pv) = *r.as_ref().unwrap_or(&([0.0; MAX_AXES], 0.0));
         self.velocity = v;
         self.path_velocity = pv;
-        enable_outputs(self.enable, r.map(|_| ()), &mut self.valid, &mut self.busy, &mut self.error, &mut self.error_id);
+        enable_outputs(
+            self.enable,
+            r.map(|_| ()),
+            &mut self.valid,
+            &mut self.busy,
+            &mut self.error,
+            &mut self.error_id,
+        );
     }
 }
 
@@ -373,6 +398,13 @@ impl McGroupReadStatus {
         self.group_standby = st == Some(GroupState::GroupStandby);
         self.group_stopping = st == Some(GroupState::GroupStopping);
         self.group_disabled = st == Some(GroupState::GroupDisabled);
-        enable_outputs(self.enable, r.map(|_| ()), &mut self.valid, &mut self.busy, &mut self.error, &mut self.error_id);
+        enable_outputs(
+            self.enable,
+            r.map(|_| ()),
+            &mut self.valid,
+            &mut self.busy,
+            &mut self.error,
+            &mut self.error_id,
+        );
     }
 }

@@ -154,7 +154,11 @@ impl Geometry {
                     return None;
                 }
                 let e1 = unit3(rs)?;
-                let nz = if ccw { [0.0, 0.0, 1.0] } else { [0.0, 0.0, -1.0] };
+                let nz = if ccw {
+                    [0.0, 0.0, 1.0]
+                } else {
+                    [0.0, 0.0, -1.0]
+                };
                 let e2 = cross(&nz, &e1);
                 let mut ang = dot3(&re, &e2).atan2(dot3(&re, &e1));
                 if ang <= 1e-12 {
@@ -222,7 +226,9 @@ impl Geometry {
     /// Arc length.
     pub fn len(&self) -> f64 {
         match self {
-            Geometry::Line { len, .. } | Geometry::Arc { len, .. } | Geometry::Blend { len, .. } => *len,
+            Geometry::Line { len, .. }
+            | Geometry::Arc { len, .. }
+            | Geometry::Blend { len, .. } => *len,
         }
     }
 
@@ -252,7 +258,10 @@ impl Geometry {
                 let (sn, cs) = phi.sin_cos();
                 for i in 0..n {
                     if i < 3 {
-                        pos[i] = center[i] + r * (cs * e1[i] + sn * e2[i]) + start[i] + delta[i] * s / len;
+                        pos[i] = center[i]
+                            + r * (cs * e1[i] + sn * e2[i])
+                            + start[i]
+                            + delta[i] * s / len;
                         d1[i] = r * k * (-sn * e1[i] + cs * e2[i]) + delta[i] / len;
                         d2[i] = -r * k * k * (cs * e1[i] + sn * e2[i]);
                     } else {
@@ -322,7 +331,12 @@ impl Geometry {
 
     /// Unit tangent at the start and at the end.
     pub fn tangents(&self, n: usize) -> (Vecn, Vecn) {
-        let (mut p, mut a, mut b, mut d2) = ([0.0; MAX_AXES], [0.0; MAX_AXES], [0.0; MAX_AXES], [0.0; MAX_AXES]);
+        let (mut p, mut a, mut b, mut d2) = (
+            [0.0; MAX_AXES],
+            [0.0; MAX_AXES],
+            [0.0; MAX_AXES],
+            [0.0; MAX_AXES],
+        );
         self.eval(0.0, n, &mut p, &mut a, &mut d2);
         self.eval(self.len(), n, &mut p, &mut b, &mut d2);
         (a, b)

@@ -7,8 +7,8 @@
 //! Invariants: the slave set point is continuous in position and velocity at coupling;
 //! a cam table's master positions are strictly increasing; evaluation allocates nothing.
 
-use crate::engine::{Engine, Kind, MasterSource};
 use crate::cmd::CmdStatus;
+use crate::engine::{Engine, Kind, MasterSource};
 use crate::error::ErrorId;
 use crate::profile::{Profile, State};
 
@@ -193,8 +193,16 @@ impl Engine {
             (x, 0, x >= x1)
         };
         let (y, dy) = table.eval(xw);
-        let rise = if sp.periodic { table.slave_rise() * k as f64 } else { 0.0 };
-        let dy = if !sp.periodic && (x >= x1 || x <= x0) { 0.0 } else { dy };
+        let rise = if sp.periodic {
+            table.slave_rise() * k as f64
+        } else {
+            0.0
+        };
+        let dy = if !sp.periodic && (x >= x1 || x <= x0) {
+            0.0
+        } else {
+            dy
+        };
         let user = sp.slave_scaling * (y + rise) + sp.slave_offset;
         let raw = if sp.slave_absolute {
             user - self.axes[slave].origin
@@ -230,7 +238,7 @@ impl Engine {
                     v: s.v - cv,
                     a: s.a,
                 };
-                Profile::position(e, 0.0, 0.0, &lim)
+                crate::engine::plan_position(e, 0.0, 0.0, &lim)
             }
         };
         let a = &mut self.axes[axis].active;

@@ -10,30 +10,57 @@ use motion_lib::group_blocks::{McAddAxisToGroup, McGroupEnable, McMoveLinearAbso
 use motion_lib::profile::Limits;
 
 fn setup(cycle: f64) -> (Engine, usize, [usize; 3]) {
-    let mut eng = Engine::new(EngineConfig { cycle, queue_depth: 4 }).unwrap();
+    let mut eng = Engine::new(EngineConfig {
+        cycle,
+        queue_depth: 4,
+    })
+    .unwrap();
     let cfg = AxisConfig {
-        limits: Limits { vmax: 500.0, amax: 100.0, dmax: 100.0, jmax: 100.0 },
+        limits: Limits {
+            vmax: 500.0,
+            amax: 100.0,
+            dmax: 100.0,
+            jmax: 100.0,
+        },
         ..AxisConfig::default()
     };
-    let axes = [eng.add_axis(cfg).unwrap(), eng.add_axis(cfg).unwrap(), eng.add_axis(cfg).unwrap()];
+    let axes = [
+        eng.add_axis(cfg).unwrap(),
+        eng.add_axis(cfg).unwrap(),
+        eng.add_axis(cfg).unwrap(),
+    ];
     let g = eng.add_group();
     let mut pw = [McPower::default(); 3];
     for (i, a) in axes.iter().enumerate() {
         pw[i].enable = true;
         pw[i].call(&mut eng, *a);
         assert!(pw[i].status);
-        let mut add = McAddAxisToGroup { execute: true, axis: *a, ident_in_group: i, ..Default::default() };
+        let mut add = McAddAxisToGroup {
+            execute: true,
+            axis: *a,
+            ident_in_group: i,
+            ..Default::default()
+        };
         add.call(&mut eng, g);
         assert!(add.done, "{:?}", add.error_id);
     }
-    let mut en = McGroupEnable { execute: true, ..Default::default() };
+    let mut en = McGroupEnable {
+        execute: true,
+        ..Default::default()
+    };
     en.call(&mut eng, g);
     assert!(en.done);
     assert_eq!(eng.group_state(g).unwrap(), GroupState::GroupStandby);
     (eng, g, axes)
 }
 
-fn block(target: [f64; 3], v: f64, bm: BufferMode, tm: TransitionMode, d: f64) -> McMoveLinearAbsolute {
+fn block(
+    target: [f64; 3],
+    v: f64,
+    bm: BufferMode,
+    tm: TransitionMode,
+    d: f64,
+) -> McMoveLinearAbsolute {
     let mut position = [0.0; 16];
     position[..3].copy_from_slice(&target);
     McMoveLinearAbsolute {
@@ -64,8 +91,20 @@ fn run(tm: TransitionMode, d: f64) -> Trace {
     let (mut eng, g, axes) = setup(dt);
     let mut b = [
         block([1600.0, 1200.0, 800.0], 40.0, BufferMode::Aborting, tm, d),
-        block([2200.0, 3800.0, 5000.0], 55.0, BufferMode::BlendingLow, tm, d),
-        block([4500.0, 4200.0, 4800.0], 70.0, BufferMode::BlendingHigh, tm, d),
+        block(
+            [2200.0, 3800.0, 5000.0],
+            55.0,
+            BufferMode::BlendingLow,
+            tm,
+            d,
+        ),
+        block(
+            [4500.0, 4200.0, 4800.0],
+            70.0,
+            BufferMode::BlendingHigh,
+            tm,
+            d,
+        ),
     ];
     for blk in b.iter_mut() {
         blk.call(&mut eng, g);
@@ -88,7 +127,10 @@ fn run(tm: TransitionMode, d: f64) -> Trace {
         for (k, blk) in b.iter_mut().enumerate() {
             blk.call(&mut eng, g);
             // Busy, Done, Error, CommandAborted exclusive.
-            let n = [blk.busy, blk.done, blk.error, blk.command_aborted].iter().filter(|x| **x).count();
+            let n = [blk.busy, blk.done, blk.error, blk.command_aborted]
+                .iter()
+                .filter(|x| **x)
+                .count();
             assert_eq!(n, 1);
             if blk.done && !was_done[k] {
                 was_done[k] = true;
@@ -104,7 +146,13 @@ fn run(tm: TransitionMode, d: f64) -> Trace {
     }
     assert_eq!(eng.group_state(g).unwrap(), GroupState::GroupStandby);
     let p = eng.group_position(g).unwrap();
-    Trace { junction, end: [p[0], p[1], p[2]], max_speed, max_jump, cycles: eng.cycles() }
+    Trace {
+        junction,
+        end: [p[0], p[1], p[2]],
+        max_speed,
+        max_jump,
+        cycles: eng.cycles(),
+    }
 }
 
 #[test]
