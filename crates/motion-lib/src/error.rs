@@ -170,3 +170,14 @@ impl ErrorId {
         ErrorId::ExternalError,
     ];
 }
+
+impl ErrorId {
+    /// The error with WORD value `code` (unknown values map to `ExternalError`).
+    pub fn from_code(code: u16) -> ErrorId {
+        ErrorId::ALL
+            .iter()
+            .copied()
+            .find(|e| e.code() == code)
+            .unwrap_or(ErrorId::ExternalError)
+    }
+}

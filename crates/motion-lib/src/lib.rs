@@ -17,6 +17,7 @@ pub mod buffer;
 pub mod cmd;
 pub mod engine;
 pub mod error;
+pub mod ffi;
 pub mod fsm;
 pub mod group;
 pub mod group_blocks;
