@@ -80,20 +80,21 @@ impl TransitionMode {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Direction {
     #[default]
-    Positive = 1,
-    Shortest = 2,
-    Negative = 3,
-    Current = 4,
+    Positive = 0,
+    Shortest = 1,
+    Negative = 2,
+    Current = 3,
 }
 
 impl Direction {
-    /// From the PLCopen integer value (1 positive, 2 shortest, 3 negative, 4 current).
+    /// From the integer value (0 positive, 1 shortest, 2 negative, 3 current: the order
+    /// of MC_DIRECTION in the PLCopen specification).
     pub fn from_u8(v: u8) -> Result<Direction, ErrorId> {
         Ok(match v {
-            1 => Direction::Positive,
-            2 => Direction::Shortest,
-            3 => Direction::Negative,
-            4 => Direction::Current,
+            0 => Direction::Positive,
+            1 => Direction::Shortest,
+            2 => Direction::Negative,
+            3 => Direction::Current,
             _ => return Err(ErrorId::InvalidDirection),
         })
     }
