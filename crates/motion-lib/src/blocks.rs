@@ -15,6 +15,9 @@ use crate::error::ErrorId;
 use crate::fsm::AxisState;
 use crate::sync::SyncParams;
 
+/// ContinuousUpdate callback: re-sends the block's inputs for a Busy command.
+pub type UpdateFn<'a> = Option<&'a mut dyn FnMut(&mut Engine, CmdId)>;
+
 /// The common output logic of Execute-type blocks.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ExecCore {
@@ -42,7 +45,7 @@ impl ExecCore {
         eng: &mut Engine,
         execute: bool,
         issue: impl FnOnce(&mut Engine) -> Result<CmdId, ErrorId>,
-        update: Option<&mut dyn FnMut(&mut Engine, CmdId)>,
+        update: UpdateFn<'_>,
     ) {
         let was_final = self.done || self.error || self.command_aborted;
         let rising = execute && !self.prev_execute;
@@ -205,7 +208,7 @@ impl McMoveAbsolute {
         let mut upd = |e: &mut Engine, id: CmdId| {
             let _ = e.update(axis, id, cmd, d);
         };
-        let update: Option<&mut dyn FnMut(&mut Engine, CmdId)> = if self.continuous_update {
+        let update: UpdateFn<'_> = if self.continuous_update {
             Some(&mut upd)
         } else {
             None
@@ -330,7 +333,7 @@ impl McMoveVelocity {
         let mut upd = |e: &mut Engine, id: CmdId| {
             let _ = e.update(axis, id, cmd, d);
         };
-        let update: Option<&mut dyn FnMut(&mut Engine, CmdId)> = if self.continuous_update {
+        let update: UpdateFn<'_> = if self.continuous_update {
             Some(&mut upd)
         } else {
             None

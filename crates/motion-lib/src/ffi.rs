@@ -13,7 +13,14 @@
 //!
 //! Lifetime: `mc_engine_create` returns an owned engine; free it with
 //! `mc_engine_destroy`. Block structs are owned by C (static or stack memory).
-#![allow(non_snake_case, non_camel_case_types, clippy::missing_safety_doc)]
+#![allow(
+    non_snake_case,
+    non_camel_case_types,
+    clippy::field_reassign_with_default
+)]
+// Safety contract of every function taking pointers: `engine` is NULL or a live handle from
+// `mc_engine_create`; `fb`/`config` are NULL or point to a valid, writable struct of the
+// declared type; arrays hold the stated number of elements. NULL pointers are ignored.
 
 use crate::axis::{AxisConfig, AxisKind};
 use crate::blocks::*;
@@ -49,8 +56,10 @@ pub struct MC_AxisConfig_C {
 
 /// Creates an engine with cycle time `cycle_seconds` (e.g. 0.001) and per-axis/group
 /// buffer depth `queue_depth`. Returns NULL on a bad configuration.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_engine_create(cycle_seconds: f64, queue_depth: u32) -> *mut McEngine {
+pub unsafe extern "C" fn mc_engine_create(cycle_seconds: f64, queue_depth: u32) -> *mut McEngine {
     match Engine::new(EngineConfig {
         cycle: cycle_seconds,
         queue_depth: queue_depth as usize,
@@ -61,6 +70,8 @@ pub extern "C" fn mc_engine_create(cycle_seconds: f64, queue_depth: u32) -> *mut
 }
 
 /// Destroys an engine created by `mc_engine_create` (NULL is ignored).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_destroy(engine: *mut McEngine) {
     if !engine.is_null() {
@@ -70,29 +81,40 @@ pub unsafe extern "C" fn mc_engine_destroy(engine: *mut McEngine) {
     }
 }
 
-fn eng<'a>(engine: *mut McEngine) -> Option<&'a mut Engine> {
+unsafe fn eng<'a>(engine: *mut McEngine) -> Option<&'a mut Engine> {
     // SAFETY: a non-null handle points to a live McEngine (caller contract).
     unsafe { engine.as_mut() }.map(|e| &mut e.engine)
 }
 
 /// Advances the engine by one cycle.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_engine_step(engine: *mut McEngine) {
-    if let Some(e) = eng(engine) {
+pub unsafe extern "C" fn mc_engine_step(engine: *mut McEngine) {
+    if let Some(e) = unsafe { eng(engine) } {
         e.step();
     }
 }
 
 /// Cycles stepped so far (0 for NULL).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_engine_cycles(engine: *mut McEngine) -> u64 {
-    eng(engine).map_or(0, |e| e.cycles())
+pub unsafe extern "C" fn mc_engine_cycles(engine: *mut McEngine) -> u64 {
+    unsafe { eng(engine) }.map_or(0, |e| e.cycles())
 }
 
 /// Adds an axis with a simulated drive. Returns its index, or -1 on a bad configuration.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_engine_add_axis(engine: *mut McEngine, config: *const MC_AxisConfig_C) -> i32 {
-    let Some(e) = eng(engine) else { return -1 };
+pub unsafe extern "C" fn mc_engine_add_axis(
+    engine: *mut McEngine,
+    config: *const MC_AxisConfig_C,
+) -> i32 {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return -1;
+    };
     // SAFETY: a non-null config points to a readable MC_AxisConfig_C (caller contract).
     let Some(c) = (unsafe { config.as_ref() }) else {
         return -1;
@@ -120,13 +142,17 @@ pub extern "C" fn mc_engine_add_axis(engine: *mut McEngine, config: *const MC_Ax
 }
 
 /// Adds an empty axes group. Returns its index (-1 for NULL).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_engine_add_group(engine: *mut McEngine) -> i32 {
-    eng(engine).map_or(-1, |e| e.add_group() as i32)
+pub unsafe extern "C" fn mc_engine_add_group(engine: *mut McEngine) -> i32 {
+    unsafe { eng(engine) }.map_or(-1, |e| e.add_group() as i32)
 }
 
 /// Registers a cam table of `n` points (master strictly increasing). Returns its
 /// CamTable reference for MC_CamTableSelect, or -1.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_add_cam_table(
     engine: *mut McEngine,
@@ -134,7 +160,9 @@ pub unsafe extern "C" fn mc_engine_add_cam_table(
     slave: *const f64,
     n: u32,
 ) -> i32 {
-    let Some(e) = eng(engine) else { return -1 };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return -1;
+    };
     if master.is_null() || slave.is_null() {
         return -1;
     }
@@ -153,25 +181,31 @@ pub unsafe extern "C" fn mc_engine_add_cam_table(
 }
 
 /// PLCopen state of an axis (0 Disabled .. 7 ErrorStop), -1 for a bad index.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_axis_state(engine: *mut McEngine, axis: u32) -> i32 {
-    eng(engine)
+pub unsafe extern "C" fn mc_axis_state(engine: *mut McEngine, axis: u32) -> i32 {
+    unsafe { eng(engine) }
         .and_then(|e| e.axis_state(axis as usize).ok())
         .map_or(-1, |s| s as i32)
 }
 
 /// Set position of an axis (user units; 0 for a bad index).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_axis_set_position(engine: *mut McEngine, axis: u32) -> f64 {
-    eng(engine)
+pub unsafe extern "C" fn mc_axis_set_position(engine: *mut McEngine, axis: u32) -> f64 {
+    unsafe { eng(engine) }
         .and_then(|e| e.set_position_of(axis as usize).ok())
         .unwrap_or(0.0)
 }
 
 /// State of a group (0 GroupDisabled .. 5 GroupErrorStop), -1 for a bad index.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_state(engine: *mut McEngine, group: u32) -> i32 {
-    eng(engine)
+pub unsafe extern "C" fn mc_group_state(engine: *mut McEngine, group: u32) -> i32 {
+    unsafe { eng(engine) }
         .and_then(|e| e.group_state(group as usize).ok())
         .map_or(-1, |s| s as i32)
 }
@@ -236,9 +270,13 @@ pub struct MC_Power_C {
 }
 
 /// Calls MC_Power once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_power(engine: *mut McEngine, axis: u32, fb: *mut MC_Power_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_power(engine: *mut McEngine, axis: u32, fb: *mut MC_Power_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -276,9 +314,13 @@ pub struct MC_Home_C {
 }
 
 /// Calls MC_Home once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_home(engine: *mut McEngine, axis: u32, fb: *mut MC_Home_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_home(engine: *mut McEngine, axis: u32, fb: *mut MC_Home_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -336,9 +378,13 @@ pub struct MC_Stop_C {
 }
 
 /// Calls MC_Stop once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_stop(engine: *mut McEngine, axis: u32, fb: *mut MC_Stop_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_stop(engine: *mut McEngine, axis: u32, fb: *mut MC_Stop_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -383,9 +429,13 @@ pub struct MC_Halt_C {
 }
 
 /// Calls MC_Halt once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_halt(engine: *mut McEngine, axis: u32, fb: *mut MC_Halt_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_halt(engine: *mut McEngine, axis: u32, fb: *mut MC_Halt_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -451,9 +501,17 @@ pub struct MC_MoveAbsolute_C {
 }
 
 /// Calls MC_MoveAbsolute once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_absolute(engine: *mut McEngine, axis: u32, fb: *mut MC_MoveAbsolute_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_move_absolute(
+    engine: *mut McEngine,
+    axis: u32,
+    fb: *mut MC_MoveAbsolute_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -530,9 +588,17 @@ pub struct MC_MoveRelative_C {
 }
 
 /// Calls MC_MoveRelative once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_relative(engine: *mut McEngine, axis: u32, fb: *mut MC_MoveRelative_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_move_relative(
+    engine: *mut McEngine,
+    axis: u32,
+    fb: *mut MC_MoveRelative_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -601,9 +667,17 @@ pub struct MC_MoveAdditive_C {
 }
 
 /// Calls MC_MoveAdditive once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_additive(engine: *mut McEngine, axis: u32, fb: *mut MC_MoveAdditive_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_move_additive(
+    engine: *mut McEngine,
+    axis: u32,
+    fb: *mut MC_MoveAdditive_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -672,9 +746,17 @@ pub struct MC_MoveVelocity_C {
 }
 
 /// Calls MC_MoveVelocity once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_velocity(engine: *mut McEngine, axis: u32, fb: *mut MC_MoveVelocity_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_move_velocity(
+    engine: *mut McEngine,
+    axis: u32,
+    fb: *mut MC_MoveVelocity_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -741,9 +823,13 @@ pub struct MC_Reset_C {
 }
 
 /// Calls MC_Reset once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_reset(engine: *mut McEngine, axis: u32, fb: *mut MC_Reset_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_reset(engine: *mut McEngine, axis: u32, fb: *mut MC_Reset_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -780,13 +866,17 @@ pub struct MC_ReadActualPosition_C {
 }
 
 /// Calls MC_ReadActualPosition once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_read_actual_position(
+pub unsafe extern "C" fn mc_read_actual_position(
     engine: *mut McEngine,
     axis: u32,
     fb: *mut MC_ReadActualPosition_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -819,13 +909,17 @@ pub struct MC_ReadActualVelocity_C {
 }
 
 /// Calls MC_ReadActualVelocity once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_read_actual_velocity(
+pub unsafe extern "C" fn mc_read_actual_velocity(
     engine: *mut McEngine,
     axis: u32,
     fb: *mut MC_ReadActualVelocity_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -865,9 +959,17 @@ pub struct MC_ReadStatus_C {
 }
 
 /// Calls MC_ReadStatus once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_read_status(engine: *mut McEngine, axis: u32, fb: *mut MC_ReadStatus_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_read_status(
+    engine: *mut McEngine,
+    axis: u32,
+    fb: *mut MC_ReadStatus_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -914,13 +1016,17 @@ pub struct MC_ReadAxisError_C {
 }
 
 /// Calls MC_ReadAxisError once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_read_axis_error(
+pub unsafe extern "C" fn mc_read_axis_error(
     engine: *mut McEngine,
     axis: u32,
     fb: *mut MC_ReadAxisError_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -956,9 +1062,17 @@ pub struct MC_SetPosition_C {
 }
 
 /// Calls MC_SetPosition once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_set_position(engine: *mut McEngine, axis: u32, fb: *mut MC_SetPosition_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_set_position(
+    engine: *mut McEngine,
+    axis: u32,
+    fb: *mut MC_SetPosition_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -999,9 +1113,17 @@ pub struct MC_SetOverride_C {
 }
 
 /// Calls MC_SetOverride once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_set_override(engine: *mut McEngine, axis: u32, fb: *mut MC_SetOverride_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_set_override(
+    engine: *mut McEngine,
+    axis: u32,
+    fb: *mut MC_SetOverride_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1046,9 +1168,18 @@ pub struct MC_GearIn_C {
 }
 
 /// Calls MC_GearIn once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_gear_in(engine: *mut McEngine, master: u32, slave: u32, fb: *mut MC_GearIn_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_gear_in(
+    engine: *mut McEngine,
+    master: u32,
+    slave: u32,
+    fb: *mut MC_GearIn_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1116,9 +1247,13 @@ pub struct MC_GearOut_C {
 }
 
 /// Calls MC_GearOut once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_gear_out(engine: *mut McEngine, slave: u32, fb: *mut MC_GearOut_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_gear_out(engine: *mut McEngine, slave: u32, fb: *mut MC_GearOut_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1158,9 +1293,13 @@ pub struct MC_CamOut_C {
 }
 
 /// Calls MC_CamOut once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_cam_out(engine: *mut McEngine, slave: u32, fb: *mut MC_CamOut_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_cam_out(engine: *mut McEngine, slave: u32, fb: *mut MC_CamOut_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1205,14 +1344,18 @@ pub struct MC_CamTableSelect_C {
 }
 
 /// Calls MC_CamTableSelect once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_cam_table_select(
+pub unsafe extern "C" fn mc_cam_table_select(
     engine: *mut McEngine,
     master: u32,
     slave: u32,
     fb: *mut MC_CamTableSelect_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1270,9 +1413,18 @@ pub struct MC_CamIn_C {
 }
 
 /// Calls MC_CamIn once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_cam_in(engine: *mut McEngine, master: u32, slave: u32, fb: *mut MC_CamIn_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_cam_in(
+    engine: *mut McEngine,
+    master: u32,
+    slave: u32,
+    fb: *mut MC_CamIn_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1348,13 +1500,17 @@ pub struct MC_AddAxisToGroup_C {
 }
 
 /// Calls MC_AddAxisToGroup once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_add_axis_to_group(
+pub unsafe extern "C" fn mc_add_axis_to_group(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_AddAxisToGroup_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1395,13 +1551,17 @@ pub struct MC_RemoveAxisFromGroup_C {
 }
 
 /// Calls MC_RemoveAxisFromGroup once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_remove_axis_from_group(
+pub unsafe extern "C" fn mc_remove_axis_from_group(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_RemoveAxisFromGroup_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1440,13 +1600,17 @@ pub struct MC_UngroupAllAxes_C {
 }
 
 /// Calls MC_UngroupAllAxes once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_ungroup_all_axes(
+pub unsafe extern "C" fn mc_ungroup_all_axes(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_UngroupAllAxes_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1484,9 +1648,17 @@ pub struct MC_GroupEnable_C {
 }
 
 /// Calls MC_GroupEnable once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_enable(engine: *mut McEngine, group: u32, fb: *mut MC_GroupEnable_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_group_enable(
+    engine: *mut McEngine,
+    group: u32,
+    fb: *mut MC_GroupEnable_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1524,9 +1696,17 @@ pub struct MC_GroupDisable_C {
 }
 
 /// Calls MC_GroupDisable once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_disable(engine: *mut McEngine, group: u32, fb: *mut MC_GroupDisable_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_group_disable(
+    engine: *mut McEngine,
+    group: u32,
+    fb: *mut MC_GroupDisable_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1564,9 +1744,17 @@ pub struct MC_GroupReset_C {
 }
 
 /// Calls MC_GroupReset once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_reset(engine: *mut McEngine, group: u32, fb: *mut MC_GroupReset_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_group_reset(
+    engine: *mut McEngine,
+    group: u32,
+    fb: *mut MC_GroupReset_C,
+) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1607,9 +1795,13 @@ pub struct MC_GroupStop_C {
 }
 
 /// Calls MC_GroupStop once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_stop(engine: *mut McEngine, group: u32, fb: *mut MC_GroupStop_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_group_stop(engine: *mut McEngine, group: u32, fb: *mut MC_GroupStop_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1654,9 +1846,13 @@ pub struct MC_GroupHalt_C {
 }
 
 /// Calls MC_GroupHalt once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_halt(engine: *mut McEngine, group: u32, fb: *mut MC_GroupHalt_C) {
-    let Some(e) = eng(engine) else { return };
+pub unsafe extern "C" fn mc_group_halt(engine: *mut McEngine, group: u32, fb: *mut MC_GroupHalt_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1723,13 +1919,17 @@ pub struct MC_MoveLinearAbsolute_C {
 }
 
 /// Calls MC_MoveLinearAbsolute once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_linear_absolute(
+pub unsafe extern "C" fn mc_move_linear_absolute(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_MoveLinearAbsolute_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1809,13 +2009,17 @@ pub struct MC_MoveLinearRelative_C {
 }
 
 /// Calls MC_MoveLinearRelative once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_linear_relative(
+pub unsafe extern "C" fn mc_move_linear_relative(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_MoveLinearRelative_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1895,13 +2099,17 @@ pub struct MC_MoveDirectAbsolute_C {
 }
 
 /// Calls MC_MoveDirectAbsolute once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_direct_absolute(
+pub unsafe extern "C" fn mc_move_direct_absolute(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_MoveDirectAbsolute_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -1984,13 +2192,17 @@ pub struct MC_MoveCircularAbsolute_C {
 }
 
 /// Calls MC_MoveCircularAbsolute once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_circular_absolute(
+pub unsafe extern "C" fn mc_move_circular_absolute(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_MoveCircularAbsolute_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -2090,13 +2302,17 @@ pub struct MC_MoveCircularRelative_C {
 }
 
 /// Calls MC_MoveCircularRelative once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_move_circular_relative(
+pub unsafe extern "C" fn mc_move_circular_relative(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_MoveCircularRelative_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -2182,13 +2398,17 @@ pub struct MC_GroupReadActualPosition_C {
 }
 
 /// Calls MC_GroupReadActualPosition once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_read_actual_position(
+pub unsafe extern "C" fn mc_group_read_actual_position(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_GroupReadActualPosition_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -2224,13 +2444,17 @@ pub struct MC_GroupReadActualVelocity_C {
 }
 
 /// Calls MC_GroupReadActualVelocity once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_read_actual_velocity(
+pub unsafe extern "C" fn mc_group_read_actual_velocity(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_GroupReadActualVelocity_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;
@@ -2271,13 +2495,17 @@ pub struct MC_GroupReadStatus_C {
 }
 
 /// Calls MC_GroupReadStatus once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub extern "C" fn mc_group_read_status(
+pub unsafe extern "C" fn mc_group_read_status(
     engine: *mut McEngine,
     group: u32,
     fb: *mut MC_GroupReadStatus_C,
 ) {
-    let Some(e) = eng(engine) else { return };
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
     let Some(c) = (unsafe { fb.as_mut() }) else {
         return;

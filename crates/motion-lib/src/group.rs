@@ -355,10 +355,10 @@ impl Engine {
             _ => GroupCmd::Motion,
         };
         check_group(gr.state, class)?;
-        if inputs.buffer.is_blending() || inputs.transition != TransitionMode::None {
-            if !(inputs.transition_parameter.is_finite() && inputs.transition_parameter >= 0.0) {
-                return Err(ErrorId::InvalidTransitionMode);
-            }
+        if (inputs.buffer.is_blending() || inputs.transition != TransitionMode::None)
+            && !(inputs.transition_parameter.is_finite() && inputs.transition_parameter >= 0.0)
+        {
+            return Err(ErrorId::InvalidTransitionMode);
         }
         let n = gr.n();
         let origin =

@@ -549,8 +549,7 @@ fn modulo_directions() {
         ..Default::default()
     }
     .call(&mut e, a);
-    let mut go = |e: &mut Engine, pos: f64, dir: Direction| -> f64 {
-        let start_v_sign;
+    let go = |e: &mut Engine, pos: f64, dir: Direction| -> f64 {
         let mut m = McMoveAbsolute {
             direction: dir,
             velocity: 500.0,
@@ -558,7 +557,7 @@ fn modulo_directions() {
         };
         m.call(e, a);
         e.step();
-        start_v_sign = e.set_velocity_of(a).unwrap().signum();
+        let start_v_sign = e.set_velocity_of(a).unwrap().signum();
         run_until(e, 10000, |e| {
             m.call(e, a);
             m.done
