@@ -1025,37 +1025,51 @@ extern "C" {
 /**
  * Creates an engine with cycle time `cycle_seconds` (e.g. 0.001) and per-axis/group
  * buffer depth `queue_depth`. Returns NULL on a bad configuration.
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 struct McEngine *mc_engine_create(double cycle_seconds, uint32_t queue_depth);
 
 /**
  * Destroys an engine created by `mc_engine_create` (NULL is ignored).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_engine_destroy(struct McEngine *engine);
 
 /**
  * Advances the engine by one cycle.
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_engine_step(struct McEngine *engine);
 
 /**
  * Cycles stepped so far (0 for NULL).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 uint64_t mc_engine_cycles(struct McEngine *engine);
 
 /**
  * Adds an axis with a simulated drive. Returns its index, or -1 on a bad configuration.
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 int32_t mc_engine_add_axis(struct McEngine *engine, const struct MC_AxisConfig_C *config);
 
 /**
  * Adds an empty axes group. Returns its index (-1 for NULL).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 int32_t mc_engine_add_group(struct McEngine *engine);
 
 /**
  * Registers a cam table of `n` points (master strictly increasing). Returns its
  * CamTable reference for MC_CamTableSelect, or -1.
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 int32_t mc_engine_add_cam_table(struct McEngine *engine,
                                 const double *master,
@@ -1064,66 +1078,92 @@ int32_t mc_engine_add_cam_table(struct McEngine *engine,
 
 /**
  * PLCopen state of an axis (0 Disabled .. 7 ErrorStop), -1 for a bad index.
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 int32_t mc_axis_state(struct McEngine *engine, uint32_t axis);
 
 /**
  * Set position of an axis (user units; 0 for a bad index).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 double mc_axis_set_position(struct McEngine *engine, uint32_t axis);
 
 /**
  * State of a group (0 GroupDisabled .. 5 GroupErrorStop), -1 for a bad index.
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 int32_t mc_group_state(struct McEngine *engine, uint32_t group);
 
 /**
  * Calls MC_Power once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_power(struct McEngine *engine, uint32_t axis, struct MC_Power_C *fb);
 
 /**
  * Calls MC_Home once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_home(struct McEngine *engine, uint32_t axis, struct MC_Home_C *fb);
 
 /**
  * Calls MC_Stop once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_stop(struct McEngine *engine, uint32_t axis, struct MC_Stop_C *fb);
 
 /**
  * Calls MC_Halt once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_halt(struct McEngine *engine, uint32_t axis, struct MC_Halt_C *fb);
 
 /**
  * Calls MC_MoveAbsolute once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_absolute(struct McEngine *engine, uint32_t axis, struct MC_MoveAbsolute_C *fb);
 
 /**
  * Calls MC_MoveRelative once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_relative(struct McEngine *engine, uint32_t axis, struct MC_MoveRelative_C *fb);
 
 /**
  * Calls MC_MoveAdditive once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_additive(struct McEngine *engine, uint32_t axis, struct MC_MoveAdditive_C *fb);
 
 /**
  * Calls MC_MoveVelocity once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_velocity(struct McEngine *engine, uint32_t axis, struct MC_MoveVelocity_C *fb);
 
 /**
  * Calls MC_Reset once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_reset(struct McEngine *engine, uint32_t axis, struct MC_Reset_C *fb);
 
 /**
  * Calls MC_ReadActualPosition once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_read_actual_position(struct McEngine *engine,
                              uint32_t axis,
@@ -1131,6 +1171,8 @@ void mc_read_actual_position(struct McEngine *engine,
 
 /**
  * Calls MC_ReadActualVelocity once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_read_actual_velocity(struct McEngine *engine,
                              uint32_t axis,
@@ -1138,41 +1180,57 @@ void mc_read_actual_velocity(struct McEngine *engine,
 
 /**
  * Calls MC_ReadStatus once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_read_status(struct McEngine *engine, uint32_t axis, struct MC_ReadStatus_C *fb);
 
 /**
  * Calls MC_ReadAxisError once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_read_axis_error(struct McEngine *engine, uint32_t axis, struct MC_ReadAxisError_C *fb);
 
 /**
  * Calls MC_SetPosition once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_set_position(struct McEngine *engine, uint32_t axis, struct MC_SetPosition_C *fb);
 
 /**
  * Calls MC_SetOverride once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_set_override(struct McEngine *engine, uint32_t axis, struct MC_SetOverride_C *fb);
 
 /**
  * Calls MC_GearIn once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_gear_in(struct McEngine *engine, uint32_t master, uint32_t slave, struct MC_GearIn_C *fb);
 
 /**
  * Calls MC_GearOut once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_gear_out(struct McEngine *engine, uint32_t slave, struct MC_GearOut_C *fb);
 
 /**
  * Calls MC_CamOut once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_cam_out(struct McEngine *engine, uint32_t slave, struct MC_CamOut_C *fb);
 
 /**
  * Calls MC_CamTableSelect once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_cam_table_select(struct McEngine *engine,
                          uint32_t master,
@@ -1181,16 +1239,22 @@ void mc_cam_table_select(struct McEngine *engine,
 
 /**
  * Calls MC_CamIn once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_cam_in(struct McEngine *engine, uint32_t master, uint32_t slave, struct MC_CamIn_C *fb);
 
 /**
  * Calls MC_AddAxisToGroup once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_add_axis_to_group(struct McEngine *engine, uint32_t group, struct MC_AddAxisToGroup_C *fb);
 
 /**
  * Calls MC_RemoveAxisFromGroup once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_remove_axis_from_group(struct McEngine *engine,
                                uint32_t group,
@@ -1198,36 +1262,50 @@ void mc_remove_axis_from_group(struct McEngine *engine,
 
 /**
  * Calls MC_UngroupAllAxes once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_ungroup_all_axes(struct McEngine *engine, uint32_t group, struct MC_UngroupAllAxes_C *fb);
 
 /**
  * Calls MC_GroupEnable once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_group_enable(struct McEngine *engine, uint32_t group, struct MC_GroupEnable_C *fb);
 
 /**
  * Calls MC_GroupDisable once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_group_disable(struct McEngine *engine, uint32_t group, struct MC_GroupDisable_C *fb);
 
 /**
  * Calls MC_GroupReset once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_group_reset(struct McEngine *engine, uint32_t group, struct MC_GroupReset_C *fb);
 
 /**
  * Calls MC_GroupStop once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_group_stop(struct McEngine *engine, uint32_t group, struct MC_GroupStop_C *fb);
 
 /**
  * Calls MC_GroupHalt once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_group_halt(struct McEngine *engine, uint32_t group, struct MC_GroupHalt_C *fb);
 
 /**
  * Calls MC_MoveLinearAbsolute once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_linear_absolute(struct McEngine *engine,
                              uint32_t group,
@@ -1235,6 +1313,8 @@ void mc_move_linear_absolute(struct McEngine *engine,
 
 /**
  * Calls MC_MoveLinearRelative once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_linear_relative(struct McEngine *engine,
                              uint32_t group,
@@ -1242,6 +1322,8 @@ void mc_move_linear_relative(struct McEngine *engine,
 
 /**
  * Calls MC_MoveDirectAbsolute once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_direct_absolute(struct McEngine *engine,
                              uint32_t group,
@@ -1249,6 +1331,8 @@ void mc_move_direct_absolute(struct McEngine *engine,
 
 /**
  * Calls MC_MoveCircularAbsolute once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_circular_absolute(struct McEngine *engine,
                                uint32_t group,
@@ -1256,6 +1340,8 @@ void mc_move_circular_absolute(struct McEngine *engine,
 
 /**
  * Calls MC_MoveCircularRelative once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_move_circular_relative(struct McEngine *engine,
                                uint32_t group,
@@ -1263,6 +1349,8 @@ void mc_move_circular_relative(struct McEngine *engine,
 
 /**
  * Calls MC_GroupReadActualPosition once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_group_read_actual_position(struct McEngine *engine,
                                    uint32_t group,
@@ -1270,6 +1358,8 @@ void mc_group_read_actual_position(struct McEngine *engine,
 
 /**
  * Calls MC_GroupReadActualVelocity once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_group_read_actual_velocity(struct McEngine *engine,
                                    uint32_t group,
@@ -1277,6 +1367,8 @@ void mc_group_read_actual_velocity(struct McEngine *engine,
 
 /**
  * Calls MC_GroupReadStatus once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
  */
 void mc_group_read_status(struct McEngine *engine, uint32_t group, struct MC_GroupReadStatus_C *fb);
 
