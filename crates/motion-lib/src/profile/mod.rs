@@ -18,6 +18,7 @@
 //! generation with arbitrary target states", RSS 2021): see `README_profile.md`.
 
 mod jsonl;
+mod kernel;
 pub mod line;
 mod velocity;
 
@@ -123,6 +124,7 @@ pub enum PlanError {
 /// A planned motion: the start state, phases of constant jerk, then constant velocity.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Profile {
+    start: State,
     count: usize,
     phases: [Phase; MAX_PHASES],
     /// State at the start of each phase; `starts[count]` is the end state. For a
@@ -136,6 +138,7 @@ impl Profile {
     /// An empty profile standing at `start` (duration 0).
     pub(crate) fn new(start: State) -> Profile {
         Profile {
+            start,
             count: 0,
             phases: [Phase::default(); MAX_PHASES],
             starts: [start; MAX_PHASES + 1],
@@ -173,7 +176,12 @@ impl Profile {
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
         check_inputs(&start, target_p, target_v, lim)?;
-        velocity::position_simple(start, target_p, target_v, lim)
+        let sol = Solved::new(start, target_p, target_v, lim).ok_or(PlanError::NoSolution {
+            start,
+            target_p,
+            target_v,
+        })?;
+        Ok(sol.build(&sol.block.p_min))
     }
 
     /// Time-optimal profile from `start` to velocity `target_v` with acceleration 0
@@ -187,6 +195,10 @@ impl Profile {
 
     /// Profile reaching the same target as [`Profile::position`] at exactly time `t`
     /// (`t` >= the minimal duration), for synchronising axes and blending.
+    ///
+    /// Some durations above the minimum are impossible (ruckig's blocked intervals, e.g.
+    /// a start velocity towards the target that cannot be slowed down enough without
+    /// reversing): they give [`PlanError::DurationUnreachable`].
     pub fn with_duration(
         start: State,
         target_p: f64,
@@ -194,23 +206,40 @@ impl Profile {
         lim: &Limits,
         t: f64,
     ) -> Result<Profile, PlanError> {
-        let fastest = Profile::position(start, target_p, target_v, lim)?;
+        check_inputs(&start, target_p, target_v, lim)?;
+        let sol = Solved::new(start, target_p, target_v, lim).ok_or(PlanError::NoSolution {
+            start,
+            target_p,
+            target_v,
+        })?;
+        let fastest = sol.build(&sol.block.p_min);
         let minimal = fastest.duration();
-        if t.is_nan() || t < minimal * (1.0 - 1e-12) - 1e-12 {
+        let eps = 1e-12 * minimal.max(1.0);
+        if t.is_nan() || t < minimal - eps {
             return Err(PlanError::DurationTooShort {
                 requested: t,
                 minimal,
             });
         }
-        if t <= minimal * (1.0 + 1e-12) + 1e-12 {
+        if t <= minimal + eps {
             return Ok(fastest);
         }
-        velocity::with_duration_simple(start, target_p, target_v, lim, t).ok_or(
-            PlanError::DurationUnreachable {
-                requested: t,
-                minimal,
-            },
-        )
+        let unreachable = PlanError::DurationUnreachable {
+            requested: t,
+            minimal,
+        };
+        let t_profile = t - sol.brake.duration;
+        for iv in [sol.block.a, sol.block.b].into_iter().flatten() {
+            if (t_profile - iv.right).abs() <= eps {
+                return Ok(sol.build(&iv.profile));
+            }
+        }
+        if sol.block.is_blocked(t_profile) || !t.is_finite() {
+            return Err(unreachable);
+        }
+        sol.with_duration(t_profile)
+            .map(|k| sol.build(&k))
+            .ok_or(unreachable)
     }
 
     /// Total duration of the phases (s).
@@ -237,8 +266,8 @@ impl Profile {
                 a: 0.0,
             };
         }
-        if t <= 0.0 {
-            return self.starts[0];
+        if t < 0.0 {
+            return self.start;
         }
         let mut i = 0;
         while i + 1 < n && t >= self.ends[i] {
@@ -261,7 +290,7 @@ impl Profile {
 
     /// The start state.
     pub fn start(&self) -> State {
-        self.starts[0]
+        self.start
     }
 
     /// The end state (acceleration 0).
@@ -272,6 +301,111 @@ impl Profile {
             v: e.v,
             a: 0.0,
         }
+    }
+}
+
+/// A position problem solved by the kernel in a frame where the move goes towards +p
+/// (so that `amax` bounds the acceleration in the direction of travel, `dmax` the
+/// deceleration): brake pre-phase and step-1 block.
+struct Solved {
+    start: State,
+    /// +1 or -1: the frame's direction.
+    s: f64,
+    trapezoidal: bool,
+    /// Frame limits: v in [-vmax, vmax], a in [a_min, a_max], |j| <= jmax.
+    vmax: f64,
+    a_max: f64,
+    a_min: f64,
+    jmax: f64,
+    /// Frame target.
+    pf: f64,
+    vf: f64,
+    brake: kernel::brake::BrakeProfile,
+    /// State after the brake pre-phase (frame).
+    after_brake: (f64, f64, f64),
+    block: kernel::Block,
+}
+
+impl Solved {
+    fn new(start: State, target_p: f64, target_v: f64, lim: &Limits) -> Option<Solved> {
+        let s = if target_p >= start.p { 1.0 } else { -1.0 };
+        let trapezoidal = lim.is_trapezoidal();
+        let (p0, v0, a0) = (s * start.p, s * start.v, s * start.a);
+        let (pf, vf) = (s * target_p, s * target_v);
+        let (vmax, a_max, a_min, jmax) = (lim.vmax, lim.amax, -lim.dmax, lim.jmax);
+        let mut brake = kernel::brake::BrakeProfile::new();
+        let (mut ps, mut vs, mut as_) = (p0, v0, a0);
+        let mut input = kernel::kprofile::Profile::default();
+        let mut block = kernel::Block::default();
+        let found = if trapezoidal {
+            brake.get_second_order_position_brake_trajectory(v0, vmax, -vmax, a_max, a_min);
+            brake.finalize_second_order(&mut ps, &mut vs, &mut as_);
+            as_ = 0.0;
+            input.set_boundary(ps, vs, 0.0, pf, vf, 0.0);
+            kernel::pos2::PositionSecondOrderStep1::new(ps, vs, pf, vf, vmax, -vmax, a_max, a_min)
+                .get_profile(&input, &mut block)
+        } else {
+            brake.get_position_brake_trajectory(v0, a0, vmax, -vmax, a_max, a_min, jmax);
+            brake.finalize(&mut ps, &mut vs, &mut as_);
+            input.set_boundary(ps, vs, as_, pf, vf, 0.0);
+            let mut step1 = kernel::pos3::PositionThirdOrderStep1::default();
+            step1.reset(ps, vs, as_, pf, vf, 0.0, vmax, -vmax, a_max, a_min, jmax);
+            step1.get_profile(&input, &mut block)
+        };
+        found.then_some(Solved {
+            start,
+            s,
+            trapezoidal,
+            vmax,
+            a_max,
+            a_min,
+            jmax,
+            pf,
+            vf,
+            brake,
+            after_brake: (ps, vs, as_),
+            block,
+        })
+    }
+
+    /// Step 2: a kernel profile of duration `tf` (after the brake pre-phase).
+    fn with_duration(&self, tf: f64) -> Option<kernel::kprofile::Profile> {
+        let (ps, vs, as_) = self.after_brake;
+        let mut k = kernel::kprofile::Profile::default();
+        k.set_boundary(ps, vs, as_, self.pf, self.vf, 0.0);
+        let found = if self.trapezoidal {
+            kernel::pos2_duration::PositionSecondOrderStep2::new(
+                tf, ps, vs, self.pf, self.vf, self.vmax, -self.vmax, self.a_max, self.a_min,
+            )
+            .get_profile(&mut k)
+        } else {
+            kernel::pos3_duration::PositionThirdOrderStep2::new(
+                tf, ps, vs, as_, self.pf, self.vf, 0.0, self.vmax, -self.vmax, self.a_max,
+                self.a_min, self.jmax,
+            )
+            .get_profile(&mut k)
+        };
+        found.then_some(k)
+    }
+
+    /// The public profile: brake pre-phase then the kernel profile `k`, mirrored back.
+    fn build(&self, k: &kernel::kprofile::Profile) -> Profile {
+        let s = self.s;
+        let mut prof = Profile::new(self.start);
+        if self.trapezoidal {
+            prof.push_accel(self.brake.t[0], s * self.brake.a[0]);
+            for i in 0..7 {
+                prof.push_accel(k.t[i], s * k.a[i]);
+            }
+        } else {
+            for i in 0..2 {
+                prof.push_jerk(self.brake.t[i], s * self.brake.j[i]);
+            }
+            for i in 0..7 {
+                prof.push_jerk(k.t[i], s * k.j[i]);
+            }
+        }
+        prof
     }
 }
 

@@ -1,4 +1,4 @@
-//! Closed-form velocity changes and the "change, cruise, change" family of profiles.
+//! Closed-form time-optimal velocity changes (MoveVelocity, Halt, Stop).
 //!
 //! Input: a start velocity/acceleration, a target velocity (reached with acceleration 0),
 //! acceleration bounds `[-a_lo, a_hi]` and a jerk bound. Output: at most 3 phases of
@@ -7,7 +7,7 @@
 //! velocity interface with target acceleration 0), acceleration never leaves
 //! `[-a_lo, a_hi]` except to come back from a start acceleration beyond it.
 
-use super::{Limits, PlanError, Profile, State};
+use super::{Limits, Profile, State};
 
 /// A phase in the planning frame: duration, and jerk (or acceleration when trapezoidal).
 #[derive(Clone, Copy, Debug, Default)]
@@ -132,155 +132,4 @@ pub(crate) fn push_velocity_change(prof: &mut Profile, vt: f64, lim: &Limits, _h
     let a0 = if j.is_infinite() { 0.0 } else { cur.a };
     let c = change(dir * cur.v, dir * a0, dir * vt, lim.amax, lim.dmax, j);
     push_pieces(prof, &c.pieces[..c.n], dir, j.is_infinite());
-}
-
-/// Planning frame of a position problem: mirrored so that the move is in +p.
-struct Frame {
-    s: f64,
-    v0: f64,
-    a0: f64,
-    dist: f64,
-    vt: f64,
-    j: f64,
-}
-
-impl Frame {
-    fn new(start: State, target_p: f64, target_v: f64, lim: &Limits) -> Frame {
-        let s = if target_p > start.p || (target_p == start.p && target_v + start.v >= 0.0) {
-            1.0
-        } else {
-            -1.0
-        };
-        let j = jerk_bound(lim);
-        Frame {
-            s,
-            v0: s * start.v,
-            a0: if j.is_infinite() { 0.0 } else { s * start.a },
-            dist: s * (target_p - start.p),
-            vt: s * target_v,
-            j,
-        }
-    }
-
-    fn halves(&self, vp: f64, lim: &Limits) -> (Change, Change) {
-        (
-            change(self.v0, self.a0, vp, lim.amax, lim.dmax, self.j),
-            change(vp, 0.0, self.vt, lim.amax, lim.dmax, self.j),
-        )
-    }
-
-    fn build(&self, start: State, c1: &Change, cruise: f64, vp: f64, c2: &Change) -> Profile {
-        let mut prof = Profile::new(start);
-        let trap = self.j.is_infinite();
-        push_pieces(&mut prof, &c1.pieces[..c1.n], self.s, trap);
-        if cruise > 0.0 {
-            if trap {
-                prof.push_accel(cruise, 0.0);
-            } else {
-                // Snap the acceleration to exactly 0 at the cruise velocity.
-                let i = prof.count;
-                prof.starts[i].a = 0.0;
-                prof.starts[i].v = self.s * vp;
-                prof.push_jerk(cruise, 0.0);
-            }
-        }
-        push_pieces(&mut prof, &c2.pieces[..c2.n], self.s, trap);
-        prof
-    }
-}
-
-/// A valid (not always time-optimal) profile: velocity change to a peak velocity `vp`,
-/// cruise, velocity change to the target velocity; `vp` found by bisection.
-pub(crate) fn position_simple(
-    start: State,
-    target_p: f64,
-    target_v: f64,
-    lim: &Limits,
-) -> Result<Profile, PlanError> {
-    let f = Frame::new(start, target_p, target_v, lim);
-    let (c1, c2) = f.halves(lim.vmax, lim);
-    let d = c1.dist + c2.dist;
-    if d <= f.dist {
-        let cruise = (f.dist - d) / lim.vmax;
-        return Ok(f.build(start, &c1, cruise, lim.vmax, &c2));
-    }
-    let (mut lo, mut hi) = (-lim.vmax, lim.vmax);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        let (a, b) = f.halves(mid, lim);
-        if a.dist + b.dist > f.dist {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-        if hi - lo <= 1e-15 * lim.vmax {
-            break;
-        }
-    }
-    let (a, b) = f.halves(lo, lim);
-    let rest = f.dist - a.dist - b.dist;
-    if lo.abs() > 0.0 && rest / lo >= 0.0 {
-        return Ok(f.build(start, &a, rest / lo, lo, &b));
-    }
-    Err(PlanError::NoSolution {
-        start,
-        target_p,
-        target_v,
-    })
-}
-
-/// A profile of duration exactly `t` from the same family, with a lower peak velocity.
-pub(crate) fn with_duration_simple(
-    start: State,
-    target_p: f64,
-    target_v: f64,
-    lim: &Limits,
-    t: f64,
-) -> Option<Profile> {
-    let f = Frame::new(start, target_p, target_v, lim);
-    // Total time with peak velocity vp (None when the distance is overshot).
-    let total = |vp: f64| -> Option<(f64, Change, Change, f64)> {
-        let (a, b) = f.halves(vp, lim);
-        let rest = f.dist - a.dist - b.dist;
-        if vp <= 0.0 || rest < -1e-12 * f.dist.abs().max(1.0) {
-            return None;
-        }
-        let cruise = rest.max(0.0) / vp;
-        Some((a.time + b.time + cruise, a, b, cruise))
-    };
-    let mut hi = lim.vmax;
-    let mut lo = 0.0;
-    // Find the fastest feasible vp (largest) by bisection on feasibility.
-    if total(hi).is_none() {
-        let (mut l, mut h) = (0.0, lim.vmax);
-        for _ in 0..200 {
-            let m = 0.5 * (l + h);
-            if total(m).is_some() {
-                l = m;
-            } else {
-                h = m;
-            }
-        }
-        hi = l;
-    }
-    let (t_hi, ..) = total(hi)?;
-    if t_hi > t {
-        return None;
-    }
-    for _ in 0..200 {
-        let m = 0.5 * (lo + hi);
-        match total(m) {
-            Some((tm, ..)) if tm <= t => hi = m,
-            _ => lo = m,
-        }
-        if hi - lo <= 1e-15 * lim.vmax {
-            break;
-        }
-    }
-    let (tt, a, b, cruise) = total(hi)?;
-    let cruise = cruise + (t - tt).max(0.0) * 0.0;
-    if (tt - t).abs() > 1e-9 * t.max(1.0) {
-        return None;
-    }
-    Some(f.build(start, &a, cruise, hi, &b))
 }
