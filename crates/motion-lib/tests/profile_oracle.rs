@@ -80,4 +80,3 @@ fn oracle_durations_match_ruckig() {
     }
     assert!(bad.is_empty(), "{} mismatches", bad.len());
 }
-

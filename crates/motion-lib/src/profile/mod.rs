@@ -176,6 +176,9 @@ impl Profile {
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
         check_inputs(&start, target_p, target_v, lim)?;
+        if let Some(prof) = velocity::position_cruising(start, target_p, target_v, lim) {
+            return Ok(prof);
+        }
         let sol = Solved::new(start, target_p, target_v, lim).ok_or(PlanError::NoSolution {
             start,
             target_p,
@@ -212,7 +215,8 @@ impl Profile {
             target_p,
             target_v,
         })?;
-        let fastest = sol.build(&sol.block.p_min);
+        let fastest = velocity::position_cruising(start, target_p, target_v, lim)
+            .unwrap_or_else(|| sol.build(&sol.block.p_min));
         let minimal = fastest.duration();
         let eps = 1e-12 * minimal.max(1.0);
         if t.is_nan() || t < minimal - eps {
@@ -304,6 +308,11 @@ impl Profile {
     }
 }
 
+thread_local! {
+    static STEP1: std::cell::RefCell<kernel::pos3::PositionThirdOrderStep1> =
+        std::cell::RefCell::new(kernel::pos3::PositionThirdOrderStep1::default());
+}
+
 /// A position problem solved by the kernel in a frame where the move goes towards +p
 /// (so that `amax` bounds the acceleration in the direction of travel, `dmax` the
 /// deceleration): brake pre-phase and step-1 block.
@@ -348,9 +357,12 @@ impl Solved {
             brake.get_position_brake_trajectory(v0, a0, vmax, -vmax, a_max, a_min, jmax);
             brake.finalize(&mut ps, &mut vs, &mut as_);
             input.set_boundary(ps, vs, as_, pf, vf, 0.0);
-            let mut step1 = kernel::pos3::PositionThirdOrderStep1::default();
-            step1.reset(ps, vs, as_, pf, vf, 0.0, vmax, -vmax, a_max, a_min, jmax);
-            step1.get_profile(&input, &mut block)
+            // The solver's candidate buffer is reused per thread (no re-zeroing).
+            STEP1.with(|cell| {
+                let mut step1 = cell.borrow_mut();
+                step1.reset(ps, vs, as_, pf, vf, 0.0, vmax, -vmax, a_max, a_min, jmax);
+                step1.get_profile(&input, &mut block)
+            })
         };
         found.then_some(Solved {
             start,

@@ -1,4 +1,5 @@
-//! Closed-form time-optimal velocity changes (MoveVelocity, Halt, Stop).
+//! Closed-form time-optimal velocity changes (MoveVelocity, Halt, Stop), and the fast
+//! path of position profiles that cruise at vmax.
 //!
 //! Input: a start velocity/acceleration, a target velocity (reached with acceleration 0),
 //! acceleration bounds `[-a_lo, a_hi]` and a jerk bound. Output: at most 3 phases of
@@ -132,4 +133,46 @@ pub(crate) fn push_velocity_change(prof: &mut Profile, vt: f64, lim: &Limits, _h
     let a0 = if j.is_infinite() { 0.0 } else { cur.a };
     let c = change(dir * cur.v, dir * a0, dir * vt, lim.amax, lim.dmax, j);
     push_pieces(prof, &c.pieces[..c.n], dir, j.is_infinite());
+}
+
+/// Fast path of [`Profile::position`]: when the start is inside the limits and the
+/// distance leaves room for a cruise at vmax, the time-optimal profile is the
+/// time-optimal change to vmax, the cruise, and the time-optimal change to the target
+/// velocity (ruckig's velocity-limited profile families). None otherwise (the kernel
+/// then enumerates every family).
+pub(crate) fn position_cruising(
+    start: State,
+    target_p: f64,
+    target_v: f64,
+    lim: &Limits,
+) -> Option<Profile> {
+    if lim.is_trapezoidal() {
+        return None;
+    }
+    let s = if target_p >= start.p { 1.0 } else { -1.0 };
+    let (v0, a0, vf, j) = (s * start.v, s * start.a, s * target_v, lim.jmax);
+    let v_zero = v0 + a0 * a0.abs() / (2.0 * j);
+    if v0.abs() > lim.vmax
+        || a0 > lim.amax
+        || a0 < -lim.dmax
+        || v_zero.abs() > lim.vmax
+        || vf.abs() > lim.vmax
+    {
+        return None;
+    }
+    let c1 = change(v0, a0, lim.vmax, lim.amax, lim.dmax, j);
+    let c2 = change(lim.vmax, 0.0, vf, lim.amax, lim.dmax, j);
+    let cruise = (s * (target_p - start.p) - c1.dist - c2.dist) / lim.vmax;
+    if !(cruise > 0.0) {
+        return None;
+    }
+    let mut prof = Profile::new(start);
+    push_pieces(&mut prof, &c1.pieces[..c1.n], s, false);
+    // Snap to exactly vmax, acceleration 0, for the cruise.
+    let i = prof.count;
+    prof.starts[i].a = 0.0;
+    prof.starts[i].v = s * lim.vmax;
+    prof.push_jerk(cruise, 0.0);
+    push_pieces(&mut prof, &c2.pieces[..c2.n], s, false);
+    Some(prof)
 }
