@@ -163,7 +163,7 @@ pub(crate) fn position_cruising(
     let c1 = change(v0, a0, lim.vmax, lim.amax, lim.dmax, j);
     let c2 = change(lim.vmax, 0.0, vf, lim.amax, lim.dmax, j);
     let cruise = (s * (target_p - start.p) - c1.dist - c2.dist) / lim.vmax;
-    if !(cruise > 0.0) {
+    if cruise.is_nan() || cruise <= 0.0 {
         return None;
     }
     let mut prof = Profile::new(start);
