@@ -26,8 +26,8 @@ pub use jsonl::plan_jsonl;
 
 use thiserror::Error;
 
-/// Most phases a profile can hold: 2 brake phases + 7 profile phases + slack.
-pub const MAX_PHASES: usize = 12;
+/// Most phases a profile can hold: 2 brake phases + 7 profile phases.
+pub const MAX_PHASES: usize = 9;
 
 /// Kinematic limits of one axis (or of the path of a straight line).
 ///
@@ -82,8 +82,8 @@ impl State {
     #[inline]
     pub fn integrate(&self, t: f64, jerk: f64) -> State {
         State {
-            p: self.p + t * (self.v + t * (self.a / 2.0 + t * jerk / 6.0)),
-            v: self.v + t * (self.a + t * jerk / 2.0),
+            p: self.p + t * (self.v + t * (0.5 * self.a + t * jerk * (1.0 / 6.0))),
+            v: self.v + t * (self.a + 0.5 * t * jerk),
             a: self.a + t * jerk,
         }
     }
@@ -127,44 +127,78 @@ pub struct Profile {
     start: State,
     count: usize,
     phases: [Phase; MAX_PHASES],
-    /// State at the start of each phase; `starts[count]` is the end state. For a
-    /// trapezoidal phase `starts[i].a` is the phase's constant acceleration.
-    starts: [State; MAX_PHASES + 1],
+    /// State at the start of each phase. For a trapezoidal phase `starts[i].a` is the
+    /// phase's constant acceleration.
+    starts: [State; MAX_PHASES],
     /// Time at the end of each phase.
     ends: [f64; MAX_PHASES],
+    /// State at the end of the last phase.
+    last: State,
+    /// Total duration.
+    total: f64,
 }
 
 impl Profile {
     /// An empty profile standing at `start` (duration 0).
+    #[inline]
     pub(crate) fn new(start: State) -> Profile {
         Profile {
             start,
             count: 0,
             phases: [Phase::default(); MAX_PHASES],
-            starts: [start; MAX_PHASES + 1],
+            starts: [State::default(); MAX_PHASES],
             ends: [0.0; MAX_PHASES],
+            last: start,
+            total: 0.0,
         }
     }
 
-    /// Appends a phase of constant jerk (phases of zero or negative duration are skipped).
-    pub(crate) fn push_jerk(&mut self, duration: f64, jerk: f64) {
-        if duration > 0.0 && self.count < MAX_PHASES {
-            let i = self.count;
-            let s = self.starts[i];
-            self.phases[i] = Phase { duration, jerk };
-            self.starts[i + 1] = s.integrate(duration, jerk);
-            self.ends[i] = self.duration() + duration;
-            self.count += 1;
+    /// The profile of `items` = (duration, jerk) from `start` (or (duration,
+    /// acceleration) when `trapezoidal`); items of zero or negative duration are skipped.
+    /// `snap` = (k, v): the state before item k is snapped to velocity v, acceleration 0
+    /// (the start of a cruise, removing rounding).
+    #[inline]
+    pub(crate) fn build(
+        start: State,
+        items: &[(f64, f64)],
+        trapezoidal: bool,
+        snap: Option<(usize, f64)>,
+    ) -> Profile {
+        let mut prof = Profile::new(start);
+        // The running state stays in registers: arrays are only written.
+        let mut s = start;
+        let mut total = 0.0;
+        let mut n = 0;
+        for (k, &(duration, x)) in items.iter().enumerate() {
+            if let Some((ks, v)) = snap {
+                if ks == k {
+                    s.v = v;
+                    s.a = 0.0;
+                }
+            }
+            if !(duration > 0.0) || n == MAX_PHASES {
+                continue;
+            }
+            let jerk = if trapezoidal {
+                s.a = x;
+                0.0
+            } else {
+                x
+            };
+            prof.phases[n] = Phase { duration, jerk };
+            prof.starts[n] = s;
+            s = s.integrate(duration, jerk);
+            if trapezoidal {
+                s.a = 0.0;
+            }
+            total += duration;
+            prof.ends[n] = total;
+            n += 1;
         }
-    }
-
-    /// Appends a trapezoidal phase of constant acceleration `accel` (jerk 0).
-    pub(crate) fn push_accel(&mut self, duration: f64, accel: f64) {
-        if duration > 0.0 && self.count < MAX_PHASES {
-            self.starts[self.count].a = accel;
-            self.push_jerk(duration, 0.0);
-            self.starts[self.count].a = 0.0;
-        }
+        prof.count = n;
+        prof.last = s;
+        prof.total = total;
+        prof
     }
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
@@ -179,21 +213,22 @@ impl Profile {
         if let Some(prof) = velocity::position_cruising(start, target_p, target_v, lim) {
             return Ok(prof);
         }
-        let sol = Solved::new(start, target_p, target_v, lim).ok_or(PlanError::NoSolution {
-            start,
-            target_p,
-            target_v,
-        })?;
-        Ok(sol.build(&sol.block.p_min))
+        let mut block = kernel::Block::default();
+        match Solved::new(start, target_p, target_v, lim, &mut block) {
+            Some(sol) => Ok(sol.build(&block.p_min)),
+            None => Err(PlanError::NoSolution {
+                start,
+                target_p,
+                target_v,
+            }),
+        }
     }
 
     /// Time-optimal profile from `start` to velocity `target_v` with acceleration 0
     /// (MoveVelocity; Halt/Stop with `target_v = 0`). The position is free.
     pub fn velocity(start: State, target_v: f64, lim: &Limits) -> Result<Profile, PlanError> {
         check_inputs(&start, 0.0, target_v, lim)?;
-        let mut prof = Profile::new(start);
-        velocity::push_velocity_change(&mut prof, target_v, lim, 1.0);
-        Ok(prof)
+        Ok(velocity::velocity_change(start, target_v, lim))
     }
 
     /// Profile reaching the same target as [`Profile::position`] at exactly time `t`
@@ -210,13 +245,16 @@ impl Profile {
         t: f64,
     ) -> Result<Profile, PlanError> {
         check_inputs(&start, target_p, target_v, lim)?;
-        let sol = Solved::new(start, target_p, target_v, lim).ok_or(PlanError::NoSolution {
-            start,
-            target_p,
-            target_v,
-        })?;
+        let mut block = kernel::Block::default();
+        let sol = Solved::new(start, target_p, target_v, lim, &mut block).ok_or(
+            PlanError::NoSolution {
+                start,
+                target_p,
+                target_v,
+            },
+        )?;
         let fastest = velocity::position_cruising(start, target_p, target_v, lim)
-            .unwrap_or_else(|| sol.build(&sol.block.p_min));
+            .unwrap_or_else(|| sol.build(&block.p_min));
         let minimal = fastest.duration();
         let eps = 1e-12 * minimal.max(1.0);
         if t.is_nan() || t < minimal - eps {
@@ -233,12 +271,12 @@ impl Profile {
             minimal,
         };
         let t_profile = t - sol.brake.duration;
-        for iv in [sol.block.a, sol.block.b].into_iter().flatten() {
+        for iv in [block.a, block.b].into_iter().flatten() {
             if (t_profile - iv.right).abs() <= eps {
                 return Ok(sol.build(&iv.profile));
             }
         }
-        if sol.block.is_blocked(t_profile) || !t.is_finite() {
+        if block.is_blocked(t_profile) || !t.is_finite() {
             return Err(unreachable);
         }
         sol.with_duration(t_profile)
@@ -249,11 +287,7 @@ impl Profile {
     /// Total duration of the phases (s).
     #[inline]
     pub fn duration(&self) -> f64 {
-        if self.count == 0 {
-            0.0
-        } else {
-            self.ends[self.count - 1]
-        }
+        self.total
     }
 
     /// The state at time `t`: `t < 0` clamps to the start; after [`Profile::duration`]
@@ -277,7 +311,7 @@ impl Profile {
         while i + 1 < n && t >= self.ends[i] {
             i += 1;
         }
-        let t0 = self.ends[i] - self.phases[i].duration;
+        let t0 = if i == 0 { 0.0 } else { self.ends[i - 1] };
         self.starts[i].integrate(t - t0, self.phases[i].jerk)
     }
 
@@ -299,7 +333,7 @@ impl Profile {
 
     /// The end state (acceleration 0).
     pub fn end(&self) -> State {
-        let e = self.starts[self.count];
+        let e = self.last;
         State {
             p: e.p,
             v: e.v,
@@ -332,11 +366,17 @@ struct Solved {
     brake: kernel::brake::BrakeProfile,
     /// State after the brake pre-phase (frame).
     after_brake: (f64, f64, f64),
-    block: kernel::Block,
 }
 
 impl Solved {
-    fn new(start: State, target_p: f64, target_v: f64, lim: &Limits) -> Option<Solved> {
+    /// Solves the problem; the step-1 result goes to `block`.
+    fn new(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+        block: &mut kernel::Block,
+    ) -> Option<Solved> {
         let s = if target_p >= start.p { 1.0 } else { -1.0 };
         let trapezoidal = lim.is_trapezoidal();
         let (p0, v0, a0) = (s * start.p, s * start.v, s * start.a);
@@ -345,14 +385,13 @@ impl Solved {
         let mut brake = kernel::brake::BrakeProfile::new();
         let (mut ps, mut vs, mut as_) = (p0, v0, a0);
         let mut input = kernel::kprofile::Profile::default();
-        let mut block = kernel::Block::default();
         let found = if trapezoidal {
             brake.get_second_order_position_brake_trajectory(v0, vmax, -vmax, a_max, a_min);
             brake.finalize_second_order(&mut ps, &mut vs, &mut as_);
             as_ = 0.0;
             input.set_boundary(ps, vs, 0.0, pf, vf, 0.0);
             kernel::pos2::PositionSecondOrderStep1::new(ps, vs, pf, vf, vmax, -vmax, a_max, a_min)
-                .get_profile(&input, &mut block)
+                .get_profile(&input, block)
         } else {
             brake.get_position_brake_trajectory(v0, a0, vmax, -vmax, a_max, a_min, jmax);
             brake.finalize(&mut ps, &mut vs, &mut as_);
@@ -361,7 +400,7 @@ impl Solved {
             STEP1.with(|cell| {
                 let mut step1 = cell.borrow_mut();
                 step1.reset(ps, vs, as_, pf, vf, 0.0, vmax, -vmax, a_max, a_min, jmax);
-                step1.get_profile(&input, &mut block)
+                step1.get_profile(&input, block)
             })
         };
         found.then_some(Solved {
@@ -376,7 +415,6 @@ impl Solved {
             vf,
             brake,
             after_brake: (ps, vs, as_),
-            block,
         })
     }
 
@@ -400,24 +438,26 @@ impl Solved {
         found.then_some(k)
     }
 
+    #[inline]
     /// The public profile: brake pre-phase then the kernel profile `k`, mirrored back.
     fn build(&self, k: &kernel::kprofile::Profile) -> Profile {
         let s = self.s;
-        let mut prof = Profile::new(self.start);
+        let b = &self.brake;
+        let mut items = [(0.0, 0.0); MAX_PHASES];
         if self.trapezoidal {
-            prof.push_accel(self.brake.t[0], s * self.brake.a[0]);
+            items[0] = (b.t[0], s * b.a[0]);
+            items[1] = (0.0, 0.0);
             for i in 0..7 {
-                prof.push_accel(k.t[i], s * k.a[i]);
+                items[2 + i] = (k.t[i], s * k.a[i]);
             }
         } else {
-            for i in 0..2 {
-                prof.push_jerk(self.brake.t[i], s * self.brake.j[i]);
-            }
+            items[0] = (b.t[0], s * b.j[0]);
+            items[1] = (b.t[1], s * b.j[1]);
             for i in 0..7 {
-                prof.push_jerk(k.t[i], s * k.j[i]);
+                items[2 + i] = (k.t[i], s * k.j[i]);
             }
         }
-        prof
+        Profile::build(self.start, &items, self.trapezoidal, None)
     }
 }
 

@@ -29,6 +29,7 @@ pub(crate) struct Change {
 }
 
 impl Change {
+    #[inline]
     fn push(&mut self, t: f64, x: f64) {
         if t > 0.0 {
             self.pieces[self.n] = Piece { t, x };
@@ -39,6 +40,7 @@ impl Change {
 
 /// Time-optimal change from (`v0`, `a0`) to (`vt`, 0) with a in `[-a_lo, a_hi]`, |jerk| <= `j`
 /// (`j` infinite: trapezoidal, `a0` ignored).
+#[inline]
 pub(crate) fn change(v0: f64, a0: f64, vt: f64, a_hi: f64, a_lo: f64, j: f64) -> Change {
     let mut c = Change::default();
     if j.is_infinite() {
@@ -106,22 +108,10 @@ pub(crate) fn jerk_bound(lim: &Limits) -> f64 {
     }
 }
 
-/// Appends the pieces (planned in a frame mirrored by `s` = ±1) to `prof`.
-pub(crate) fn push_pieces(prof: &mut Profile, pieces: &[Piece], s: f64, trapezoidal: bool) {
-    for p in pieces {
-        if trapezoidal {
-            prof.push_accel(p.t, s * p.x);
-        } else {
-            prof.push_jerk(p.t, s * p.x);
-        }
-    }
-}
-
-/// Appends the time-optimal velocity change from the profile's current end to `vt`.
+/// The time-optimal velocity change from `cur` to `vt` (acceleration 0).
 /// The travel direction is that of `vt` (or of the current velocity when `vt` = 0):
 /// `amax` bounds the acceleration in that direction, `dmax` the deceleration.
-pub(crate) fn push_velocity_change(prof: &mut Profile, vt: f64, lim: &Limits, _hint: f64) {
-    let cur = prof.starts[prof.count];
+pub(crate) fn velocity_change(cur: State, vt: f64, lim: &Limits) -> Profile {
     let dir = if vt != 0.0 {
         vt.signum()
     } else if cur.v != 0.0 {
@@ -132,7 +122,11 @@ pub(crate) fn push_velocity_change(prof: &mut Profile, vt: f64, lim: &Limits, _h
     let j = jerk_bound(lim);
     let a0 = if j.is_infinite() { 0.0 } else { cur.a };
     let c = change(dir * cur.v, dir * a0, dir * vt, lim.amax, lim.dmax, j);
-    push_pieces(prof, &c.pieces[..c.n], dir, j.is_infinite());
+    let mut items = [(0.0, 0.0); 3];
+    for (it, p) in items.iter_mut().zip(&c.pieces[..c.n]) {
+        *it = (p.t, dir * p.x);
+    }
+    Profile::build(cur, &items[..c.n], j.is_infinite(), None)
 }
 
 /// Fast path of [`Profile::position`]: when the start is inside the limits and the
@@ -140,6 +134,7 @@ pub(crate) fn push_velocity_change(prof: &mut Profile, vt: f64, lim: &Limits, _h
 /// time-optimal change to vmax, the cruise, and the time-optimal change to the target
 /// velocity (ruckig's velocity-limited profile families). None otherwise (the kernel
 /// then enumerates every family).
+#[inline]
 pub(crate) fn position_cruising(
     start: State,
     target_p: f64,
@@ -166,13 +161,20 @@ pub(crate) fn position_cruising(
     if cruise.is_nan() || cruise <= 0.0 {
         return None;
     }
-    let mut prof = Profile::new(start);
-    push_pieces(&mut prof, &c1.pieces[..c1.n], s, false);
+    let mut items = [(0.0, 0.0); 7];
+    for (it, p) in items.iter_mut().zip(&c1.pieces[..c1.n]) {
+        *it = (p.t, s * p.x);
+    }
+    items[c1.n] = (cruise, 0.0);
+    for (it, p) in items[c1.n + 1..].iter_mut().zip(&c2.pieces[..c2.n]) {
+        *it = (p.t, s * p.x);
+    }
     // Snap to exactly vmax, acceleration 0, for the cruise.
-    let i = prof.count;
-    prof.starts[i].a = 0.0;
-    prof.starts[i].v = s * lim.vmax;
-    prof.push_jerk(cruise, 0.0);
-    push_pieces(&mut prof, &c2.pieces[..c2.n], s, false);
-    Some(prof)
+    let n = c1.n + 1 + c2.n;
+    Some(Profile::build(
+        start,
+        &items[..n],
+        false,
+        Some((c1.n, s * lim.vmax)),
+    ))
 }
