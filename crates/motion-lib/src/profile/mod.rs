@@ -176,7 +176,7 @@ impl Profile {
                     s.a = 0.0;
                 }
             }
-            if !(duration > 0.0) || n == MAX_PHASES {
+            if duration.is_nan() || duration <= 0.0 || n == MAX_PHASES {
                 continue;
             }
             let jerk = if trapezoidal {
