@@ -58,6 +58,24 @@ fn main() {
         .unwrap()
         .duration())
     );
+    println!(
+        "velocity: {:.1} ns",
+        best(
+            || Profile::velocity(black_box(start), black_box(20.0), black_box(&lim))
+                .unwrap()
+                .duration()
+        )
+    );
+    println!(
+        "100 dependent mul+add: {:.1} ns",
+        best(|| {
+            let mut x = black_box(1.0f64);
+            for _ in 0..100 {
+                x = x * 0.999 + 0.001;
+            }
+            x
+        })
+    );
     let s0 = State::default();
     println!(
         "kernel rest: {:.1} ns",

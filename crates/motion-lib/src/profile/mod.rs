@@ -153,11 +153,22 @@ impl Profile {
         }
     }
 
+    /// The profile of the fast path's phases (cruise fourth, snapped to exactly vmax).
+    #[inline(always)]
+    fn cruising(start: State, target_p: f64, items: &[(f64, f64); 7], lim: &Limits) -> Profile {
+        let v = if target_p >= start.p {
+            lim.vmax
+        } else {
+            -lim.vmax
+        };
+        Profile::build(start, items, false, Some((3, v)))
+    }
+
     /// The profile of `items` = (duration, jerk) from `start` (or (duration,
     /// acceleration) when `trapezoidal`); items of zero or negative duration are skipped.
     /// `snap` = (k, v): the state before item k is snapped to velocity v, acceleration 0
     /// (the start of a cruise, removing rounding).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn build(
         start: State,
         items: &[(f64, f64)],
@@ -165,36 +176,38 @@ impl Profile {
         snap: Option<(usize, f64)>,
     ) -> Profile {
         let mut prof = Profile::new(start);
-        // The running state stays in registers: arrays are only written.
-        let mut s = start;
+        // The running state is kept in scalar locals (registers): the arrays are only
+        // written, never read back (no store-to-load forwarding stalls).
+        let (mut p, mut v, mut a) = (start.p, start.v, start.a);
         let mut total = 0.0;
         let mut n = 0;
         for (k, &(duration, x)) in items.iter().enumerate() {
-            if let Some((ks, v)) = snap {
+            if let Some((ks, vs)) = snap {
                 if ks == k {
-                    s.v = v;
-                    s.a = 0.0;
+                    v = vs;
+                    a = 0.0;
                 }
             }
             if duration.is_nan() || duration <= 0.0 || n == MAX_PHASES {
                 continue;
             }
             let jerk = if trapezoidal {
-                s.a = x;
+                a = x;
                 0.0
             } else {
                 x
             };
             prof.phases[n] = Phase { duration, jerk };
-            prof.starts[n] = s;
-            s = s.integrate(duration, jerk);
-            if trapezoidal {
-                s.a = 0.0;
-            }
+            prof.starts[n] = State { p, v, a };
+            let t = duration;
+            p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
+            v += t * (a + 0.5 * t * jerk);
+            a = if trapezoidal { 0.0 } else { a + t * jerk };
             total += duration;
             prof.ends[n] = total;
             n += 1;
         }
+        let s = State { p, v, a };
         prof.count = n;
         prof.last = s;
         prof.total = total;
@@ -210,8 +223,8 @@ impl Profile {
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
         check_inputs(&start, target_p, target_v, lim)?;
-        if let Some(prof) = velocity::position_cruising(start, target_p, target_v, lim) {
-            return Ok(prof);
+        if let Some(items) = velocity::position_cruising(start, target_p, target_v, lim) {
+            return Ok(Profile::cruising(start, target_p, &items, lim));
         }
         let mut block = kernel::Block::default();
         match Solved::new(start, target_p, target_v, lim, &mut block) {
@@ -253,8 +266,10 @@ impl Profile {
                 target_v,
             },
         )?;
-        let fastest = velocity::position_cruising(start, target_p, target_v, lim)
-            .unwrap_or_else(|| sol.build(&block.p_min));
+        let fastest = match velocity::position_cruising(start, target_p, target_v, lim) {
+            Some(items) => Profile::cruising(start, target_p, &items, lim),
+            None => sol.build(&block.p_min),
+        };
         let minimal = fastest.duration();
         let eps = 1e-12 * minimal.max(1.0);
         if t.is_nan() || t < minimal - eps {

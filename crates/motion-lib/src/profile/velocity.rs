@@ -10,93 +10,67 @@
 
 use super::{Limits, Profile, State};
 
-/// A phase in the planning frame: duration, and jerk (or acceleration when trapezoidal).
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Piece {
-    pub t: f64,
-    pub x: f64,
-}
-
-/// Up to 3 pieces of one velocity change, plus its duration and distance.
+/// One velocity change: three pieces (duration, jerk; or duration, acceleration when
+/// trapezoidal), some possibly of zero duration, with the distance covered.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Change {
-    pub pieces: [Piece; 3],
-    pub n: usize,
-    pub time: f64,
+    pub t: [f64; 3],
+    pub x: [f64; 3],
     pub dist: f64,
-    /// Velocity and acceleration reached (the target velocity, acceleration 0).
-    pub v_end: f64,
-}
-
-impl Change {
-    #[inline]
-    fn push(&mut self, t: f64, x: f64) {
-        if t > 0.0 {
-            self.pieces[self.n] = Piece { t, x };
-            self.n += 1;
-        }
-    }
 }
 
 /// Time-optimal change from (`v0`, `a0`) to (`vt`, 0) with a in `[-a_lo, a_hi]`, |jerk| <= `j`
-/// (`j` infinite: trapezoidal, `a0` ignored).
-#[inline]
+/// (`j` infinite: trapezoidal, `a0` ignored). Closed form, scalars only.
+#[inline(always)]
 pub(crate) fn change(v0: f64, a0: f64, vt: f64, a_hi: f64, a_lo: f64, j: f64) -> Change {
-    let mut c = Change::default();
     if j.is_infinite() {
-        if vt > v0 {
-            c.push((vt - v0) / a_hi, a_hi);
+        let (t, acc) = if vt > v0 {
+            ((vt - v0) / a_hi, a_hi)
         } else if vt < v0 {
-            c.push((v0 - vt) / a_lo, -a_lo);
-        }
-        let dv = vt - v0;
-        c.time = c.pieces[..c.n].iter().map(|p| p.t).sum();
-        c.dist = if c.n == 0 {
-            0.0
+            ((v0 - vt) / a_lo, -a_lo)
         } else {
-            (v0 + dv / 2.0) * c.time
+            (0.0, 0.0)
         };
-        c.v_end = vt;
-        return c;
+        return Change {
+            t: [t, 0.0, 0.0],
+            x: [acc, 0.0, 0.0],
+            dist: 0.5 * (v0 + vt) * t,
+        };
     }
-    let v_zero = v0 + a0 * a0.abs() / (2.0 * j);
+    let inv_j = 1.0 / j;
+    let v_zero = v0 + 0.5 * a0 * a0.abs() * inv_j;
     let (s, v0m, a0m, vtm, hi) = if vt >= v_zero {
         (1.0, v0, a0, vt, a_hi)
     } else {
         (-1.0, -v0, -a0, -vt, a_lo)
     };
-    // Upward change in the mirrored frame.
-    if a0m > hi {
-        let vz = v0m + a0m * a0m / (2.0 * j);
-        c.push((a0m - hi) / j, -s * j);
-        c.push(((vtm - vz) / hi).max(0.0), 0.0);
-        c.push(hi / j, -s * j);
+    // Upward change in the mirrored frame: jerk j1 to the peak acceleration `ap`, hold
+    // it for t2, jerk -j back to 0.
+    let (t1, j1, t2, ap) = if a0m > hi {
+        let vz = v0m + 0.5 * a0m * a0m * inv_j;
+        ((a0m - hi) * inv_j, -j, ((vtm - vz) / hi).max(0.0), hi)
     } else {
-        let ap = (j * (vtm - v0m) + a0m * a0m / 2.0).max(0.0).sqrt();
+        let ap = (j * (vtm - v0m) + 0.5 * a0m * a0m).max(0.0).sqrt();
         if ap <= hi {
-            c.push((ap - a0m).max(0.0) / j, s * j);
-            c.push(ap / j, -s * j);
+            ((ap - a0m).max(0.0) * inv_j, j, 0.0, ap)
         } else {
-            c.push((hi - a0m) / j, s * j);
-            c.push(
-                ((vtm - v0m - (2.0 * hi * hi - a0m * a0m) / (2.0 * j)) / hi).max(0.0),
-                0.0,
-            );
-            c.push(hi / j, -s * j);
+            let t2 = ((vtm - v0m - (hi * hi - 0.5 * a0m * a0m) * inv_j) / hi).max(0.0);
+            ((hi - a0m) * inv_j, j, t2, hi)
         }
-    }
-    let mut st = State {
-        p: 0.0,
-        v: v0,
-        a: a0,
     };
-    for p in &c.pieces[..c.n] {
-        st = st.integrate(p.t, p.x);
-        c.time += p.t;
+    let t3 = ap * inv_j;
+    // Distance in the mirrored frame, piece by piece.
+    const SIXTH: f64 = 1.0 / 6.0;
+    let d1 = t1 * (v0m + t1 * (0.5 * a0m + t1 * j1 * SIXTH));
+    let v1 = v0m + t1 * (a0m + 0.5 * t1 * j1);
+    let d2 = t2 * (v1 + 0.5 * ap * t2);
+    let v2 = v1 + ap * t2;
+    let d3 = t3 * (v2 + t3 * (0.5 * ap - t3 * j * SIXTH));
+    Change {
+        t: [t1, t2, t3],
+        x: [s * j1, 0.0, -s * j],
+        dist: s * (d1 + d2 + d3),
     }
-    c.dist = st.p;
-    c.v_end = vt;
-    c
 }
 
 /// Jerk bound used by the planners: infinite for trapezoidal limits.
@@ -122,25 +96,23 @@ pub(crate) fn velocity_change(cur: State, vt: f64, lim: &Limits) -> Profile {
     let j = jerk_bound(lim);
     let a0 = if j.is_infinite() { 0.0 } else { cur.a };
     let c = change(dir * cur.v, dir * a0, dir * vt, lim.amax, lim.dmax, j);
-    let mut items = [(0.0, 0.0); 3];
-    for (it, p) in items.iter_mut().zip(&c.pieces[..c.n]) {
-        *it = (p.t, dir * p.x);
-    }
-    Profile::build(cur, &items[..c.n], j.is_infinite(), None)
+    let items = [0, 1, 2].map(|i| (c.t[i], dir * c.x[i]));
+    Profile::build(cur, &items, j.is_infinite(), None)
 }
 
 /// Fast path of [`Profile::position`]: when the start is inside the limits and the
 /// distance leaves room for a cruise at vmax, the time-optimal profile is the
 /// time-optimal change to vmax, the cruise, and the time-optimal change to the target
-/// velocity (ruckig's velocity-limited profile families). None otherwise (the kernel
-/// then enumerates every family).
-#[inline]
+/// velocity (ruckig's velocity-limited profile families). Returns the phases
+/// (duration, jerk), the cruise being the fourth, at velocity `sign(target_p - start.p)
+/// * vmax`. None otherwise (the kernel then enumerates every family).
+#[inline(always)]
 pub(crate) fn position_cruising(
     start: State,
     target_p: f64,
     target_v: f64,
     lim: &Limits,
-) -> Option<Profile> {
+) -> Option<[(f64, f64); 7]> {
     if lim.is_trapezoidal() {
         return None;
     }
@@ -161,20 +133,14 @@ pub(crate) fn position_cruising(
     if cruise.is_nan() || cruise <= 0.0 {
         return None;
     }
-    let mut items = [(0.0, 0.0); 7];
-    for (it, p) in items.iter_mut().zip(&c1.pieces[..c1.n]) {
-        *it = (p.t, s * p.x);
-    }
-    items[c1.n] = (cruise, 0.0);
-    for (it, p) in items[c1.n + 1..].iter_mut().zip(&c2.pieces[..c2.n]) {
-        *it = (p.t, s * p.x);
-    }
-    // Snap to exactly vmax, acceleration 0, for the cruise.
-    let n = c1.n + 1 + c2.n;
-    Some(Profile::build(
-        start,
-        &items[..n],
-        false,
-        Some((c1.n, s * lim.vmax)),
-    ))
+    let items = [
+        (c1.t[0], s * c1.x[0]),
+        (c1.t[1], s * c1.x[1]),
+        (c1.t[2], s * c1.x[2]),
+        (cruise, 0.0),
+        (c2.t[0], s * c2.x[0]),
+        (c2.t[1], s * c2.x[1]),
+        (c2.t[2], s * c2.x[2]),
+    ];
+    Some(items)
 }
