@@ -147,23 +147,24 @@ fn main() {
         let input = ruckig_input(pb);
         let ours = if let Some((s, e, axes)) = &pb.line {
             time_ns(|| {
-                black_box(Line::plan(black_box(s), black_box(e), black_box(axes)).ok());
+                let line = Line::plan(black_box(s), black_box(e), black_box(axes));
+                black_box(&line);
             })
         } else {
             time_ns(|| {
-                black_box(
-                    Profile::position(
-                        black_box(pb.start),
-                        black_box(pb.target_p),
-                        black_box(pb.target_v),
-                        black_box(&pb.lim),
-                    )
-                    .ok(),
+                let prof = Profile::position(
+                    black_box(pb.start),
+                    black_box(pb.target_p),
+                    black_box(pb.target_v),
+                    black_box(&pb.lim),
                 );
+                black_box(&prof);
             })
         };
         let theirs = time_ns(|| {
-            black_box(otg.calculate(black_box(&input), &mut traj).ok());
+            let result = otg.calculate(black_box(&input), &mut traj);
+            black_box(&result);
+            black_box(&traj);
         });
         let d_ours = Profile::position(pb.start, pb.target_p, pb.target_v, &pb.lim)
             .map(|p| p.duration())
