@@ -13,8 +13,8 @@ use super::{Limits, PlanError, Profile, State};
 /// A planned straight line: path profile plus geometry.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Line {
-    start: Vec<f64>,
-    unit: Vec<f64>,
+    /// Start positions then unit direction (one allocation).
+    geometry: Vec<f64>,
     length: f64,
     limits: Limits,
     profile: Profile,
@@ -72,18 +72,19 @@ impl Line {
         if start.iter().chain(end).any(|x| !x.is_finite()) {
             return Err(PlanError::Line("non-finite coordinate".into()));
         }
-        let delta: Vec<f64> = start.iter().zip(end).map(|(a, b)| b - a).collect();
-        let length = delta.iter().map(|d| d * d).sum::<f64>().sqrt();
-        let unit: Vec<f64> = if length > 0.0 {
-            delta.iter().map(|d| d / length).collect()
-        } else {
-            vec![0.0; delta.len()]
-        };
-        let limits = path_limits(&unit, axes)?;
+        let n = start.len();
+        let mut geometry = Vec::with_capacity(2 * n);
+        geometry.extend_from_slice(start);
+        geometry.extend(start.iter().zip(end).map(|(a, b)| b - a));
+        let length = geometry[n..].iter().map(|d| d * d).sum::<f64>().sqrt();
+        let inv = if length > 0.0 { 1.0 / length } else { 0.0 };
+        for d in &mut geometry[n..] {
+            *d *= inv;
+        }
+        let limits = path_limits(&geometry[n..], axes)?;
         let profile = Profile::position(State::default(), length, 0.0, &limits)?;
         Ok(Line {
-            start: start.to_vec(),
-            unit,
+            geometry,
             length,
             limits,
             profile,
@@ -112,7 +113,12 @@ impl Line {
 
     /// Unit direction of the line.
     pub fn unit(&self) -> &[f64] {
-        &self.unit
+        &self.geometry[self.geometry.len() / 2..]
+    }
+
+    /// Start positions of the axes.
+    pub fn start(&self) -> &[f64] {
+        &self.geometry[..self.geometry.len() / 2]
     }
 
     /// Path state at `t`, and the axis positions written to `positions`
@@ -120,7 +126,7 @@ impl Line {
     pub fn at(&self, t: f64, positions: &mut [f64]) -> State {
         let s = self.profile.at(t);
         let p = s.p.min(self.length);
-        for ((out, x0), u) in positions.iter_mut().zip(&self.start).zip(&self.unit) {
+        for ((out, x0), u) in positions.iter_mut().zip(self.start()).zip(self.unit()) {
             *out = x0 + p * u;
         }
         s

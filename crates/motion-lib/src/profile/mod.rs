@@ -18,6 +18,7 @@
 //! generation with arbitrary target states", RSS 2021): see `README_profile.md`.
 
 mod jsonl;
+mod kernel;
 pub mod line;
 mod velocity;
 
@@ -25,8 +26,8 @@ pub use jsonl::plan_jsonl;
 
 use thiserror::Error;
 
-/// Most phases a profile can hold: 2 brake phases + 7 profile phases + slack.
-pub const MAX_PHASES: usize = 12;
+/// Most phases a profile can hold: 2 brake phases + 7 profile phases.
+pub const MAX_PHASES: usize = 9;
 
 /// Kinematic limits of one axis (or of the path of a straight line).
 ///
@@ -81,8 +82,8 @@ impl State {
     #[inline]
     pub fn integrate(&self, t: f64, jerk: f64) -> State {
         State {
-            p: self.p + t * (self.v + t * (self.a / 2.0 + t * jerk / 6.0)),
-            v: self.v + t * (self.a + t * jerk / 2.0),
+            p: self.p + t * (self.v + t * (0.5 * self.a + t * jerk * (1.0 / 6.0))),
+            v: self.v + t * (self.a + 0.5 * t * jerk),
             a: self.a + t * jerk,
         }
     }
@@ -123,45 +124,94 @@ pub enum PlanError {
 /// A planned motion: the start state, phases of constant jerk, then constant velocity.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Profile {
+    start: State,
     count: usize,
     phases: [Phase; MAX_PHASES],
-    /// State at the start of each phase; `starts[count]` is the end state. For a
-    /// trapezoidal phase `starts[i].a` is the phase's constant acceleration.
-    starts: [State; MAX_PHASES + 1],
+    /// State at the start of each phase. For a trapezoidal phase `starts[i].a` is the
+    /// phase's constant acceleration.
+    starts: [State; MAX_PHASES],
     /// Time at the end of each phase.
     ends: [f64; MAX_PHASES],
+    /// State at the end of the last phase.
+    last: State,
+    /// Total duration.
+    total: f64,
 }
 
 impl Profile {
     /// An empty profile standing at `start` (duration 0).
+    #[inline]
     pub(crate) fn new(start: State) -> Profile {
         Profile {
+            start,
             count: 0,
             phases: [Phase::default(); MAX_PHASES],
-            starts: [start; MAX_PHASES + 1],
+            starts: [State::default(); MAX_PHASES],
             ends: [0.0; MAX_PHASES],
+            last: start,
+            total: 0.0,
         }
     }
 
-    /// Appends a phase of constant jerk (phases of zero or negative duration are skipped).
-    pub(crate) fn push_jerk(&mut self, duration: f64, jerk: f64) {
-        if duration > 0.0 && self.count < MAX_PHASES {
-            let i = self.count;
-            let s = self.starts[i];
-            self.phases[i] = Phase { duration, jerk };
-            self.starts[i + 1] = s.integrate(duration, jerk);
-            self.ends[i] = self.duration() + duration;
-            self.count += 1;
-        }
+    /// The profile of the fast path's phases (cruise fourth, snapped to exactly vmax).
+    #[inline(always)]
+    fn cruising(start: State, target_p: f64, items: &[(f64, f64); 7], lim: &Limits) -> Profile {
+        let v = if target_p >= start.p {
+            lim.vmax
+        } else {
+            -lim.vmax
+        };
+        Profile::build(start, items, false, Some((3, v)))
     }
 
-    /// Appends a trapezoidal phase of constant acceleration `accel` (jerk 0).
-    pub(crate) fn push_accel(&mut self, duration: f64, accel: f64) {
-        if duration > 0.0 && self.count < MAX_PHASES {
-            self.starts[self.count].a = accel;
-            self.push_jerk(duration, 0.0);
-            self.starts[self.count].a = 0.0;
+    /// The profile of `items` = (duration, jerk) from `start` (or (duration,
+    /// acceleration) when `trapezoidal`); items of zero or negative duration are skipped.
+    /// `snap` = (k, v): the state before item k is snapped to velocity v, acceleration 0
+    /// (the start of a cruise, removing rounding).
+    #[inline(always)]
+    pub(crate) fn build(
+        start: State,
+        items: &[(f64, f64)],
+        trapezoidal: bool,
+        snap: Option<(usize, f64)>,
+    ) -> Profile {
+        let mut prof = Profile::new(start);
+        // The running state is kept in scalar locals (registers): the arrays are only
+        // written, never read back (no store-to-load forwarding stalls).
+        let (mut p, mut v, mut a) = (start.p, start.v, start.a);
+        let mut total = 0.0;
+        let mut n = 0;
+        for (k, &(duration, x)) in items.iter().enumerate() {
+            if let Some((ks, vs)) = snap {
+                if ks == k {
+                    v = vs;
+                    a = 0.0;
+                }
+            }
+            if duration.is_nan() || duration <= 0.0 || n == MAX_PHASES {
+                continue;
+            }
+            let jerk = if trapezoidal {
+                a = x;
+                0.0
+            } else {
+                x
+            };
+            prof.phases[n] = Phase { duration, jerk };
+            prof.starts[n] = State { p, v, a };
+            let t = duration;
+            p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
+            v += t * (a + 0.5 * t * jerk);
+            a = if trapezoidal { 0.0 } else { a + t * jerk };
+            total += duration;
+            prof.ends[n] = total;
+            n += 1;
         }
+        let s = State { p, v, a };
+        prof.count = n;
+        prof.last = s;
+        prof.total = total;
+        prof
     }
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
@@ -173,20 +223,33 @@ impl Profile {
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
         check_inputs(&start, target_p, target_v, lim)?;
-        velocity::position_simple(start, target_p, target_v, lim)
+        if let Some(items) = velocity::position_cruising(start, target_p, target_v, lim) {
+            return Ok(Profile::cruising(start, target_p, &items, lim));
+        }
+        let mut block = kernel::Block::default();
+        match Solved::new(start, target_p, target_v, lim, &mut block) {
+            Some(sol) => Ok(sol.build(&block.p_min)),
+            None => Err(PlanError::NoSolution {
+                start,
+                target_p,
+                target_v,
+            }),
+        }
     }
 
     /// Time-optimal profile from `start` to velocity `target_v` with acceleration 0
     /// (MoveVelocity; Halt/Stop with `target_v = 0`). The position is free.
     pub fn velocity(start: State, target_v: f64, lim: &Limits) -> Result<Profile, PlanError> {
         check_inputs(&start, 0.0, target_v, lim)?;
-        let mut prof = Profile::new(start);
-        velocity::push_velocity_change(&mut prof, target_v, lim, 1.0);
-        Ok(prof)
+        Ok(velocity::velocity_change(start, target_v, lim))
     }
 
     /// Profile reaching the same target as [`Profile::position`] at exactly time `t`
     /// (`t` >= the minimal duration), for synchronising axes and blending.
+    ///
+    /// Some durations above the minimum are impossible (ruckig's blocked intervals, e.g.
+    /// a start velocity towards the target that cannot be slowed down enough without
+    /// reversing): they give [`PlanError::DurationUnreachable`].
     pub fn with_duration(
         start: State,
         target_p: f64,
@@ -194,33 +257,52 @@ impl Profile {
         lim: &Limits,
         t: f64,
     ) -> Result<Profile, PlanError> {
-        let fastest = Profile::position(start, target_p, target_v, lim)?;
+        check_inputs(&start, target_p, target_v, lim)?;
+        let mut block = kernel::Block::default();
+        let sol = Solved::new(start, target_p, target_v, lim, &mut block).ok_or(
+            PlanError::NoSolution {
+                start,
+                target_p,
+                target_v,
+            },
+        )?;
+        let fastest = match velocity::position_cruising(start, target_p, target_v, lim) {
+            Some(items) => Profile::cruising(start, target_p, &items, lim),
+            None => sol.build(&block.p_min),
+        };
         let minimal = fastest.duration();
-        if t.is_nan() || t < minimal * (1.0 - 1e-12) - 1e-12 {
+        let eps = 1e-12 * minimal.max(1.0);
+        if t.is_nan() || t < minimal - eps {
             return Err(PlanError::DurationTooShort {
                 requested: t,
                 minimal,
             });
         }
-        if t <= minimal * (1.0 + 1e-12) + 1e-12 {
+        if t <= minimal + eps {
             return Ok(fastest);
         }
-        velocity::with_duration_simple(start, target_p, target_v, lim, t).ok_or(
-            PlanError::DurationUnreachable {
-                requested: t,
-                minimal,
-            },
-        )
+        let unreachable = PlanError::DurationUnreachable {
+            requested: t,
+            minimal,
+        };
+        let t_profile = t - sol.brake.duration;
+        for iv in [block.a, block.b].into_iter().flatten() {
+            if (t_profile - iv.right).abs() <= eps {
+                return Ok(sol.build(&iv.profile));
+            }
+        }
+        if block.is_blocked(t_profile) || !t.is_finite() {
+            return Err(unreachable);
+        }
+        sol.with_duration(t_profile)
+            .map(|k| sol.build(&k))
+            .ok_or(unreachable)
     }
 
     /// Total duration of the phases (s).
     #[inline]
     pub fn duration(&self) -> f64 {
-        if self.count == 0 {
-            0.0
-        } else {
-            self.ends[self.count - 1]
-        }
+        self.total
     }
 
     /// The state at time `t`: `t < 0` clamps to the start; after [`Profile::duration`]
@@ -237,14 +319,14 @@ impl Profile {
                 a: 0.0,
             };
         }
-        if t <= 0.0 {
-            return self.starts[0];
+        if t < 0.0 {
+            return self.start;
         }
         let mut i = 0;
         while i + 1 < n && t >= self.ends[i] {
             i += 1;
         }
-        let t0 = self.ends[i] - self.phases[i].duration;
+        let t0 = if i == 0 { 0.0 } else { self.ends[i - 1] };
         self.starts[i].integrate(t - t0, self.phases[i].jerk)
     }
 
@@ -261,17 +343,136 @@ impl Profile {
 
     /// The start state.
     pub fn start(&self) -> State {
-        self.starts[0]
+        self.start
     }
 
     /// The end state (acceleration 0).
     pub fn end(&self) -> State {
-        let e = self.starts[self.count];
+        let e = self.last;
         State {
             p: e.p,
             v: e.v,
             a: 0.0,
         }
+    }
+}
+
+thread_local! {
+    static STEP1: std::cell::RefCell<kernel::pos3::PositionThirdOrderStep1> =
+        std::cell::RefCell::new(kernel::pos3::PositionThirdOrderStep1::default());
+}
+
+/// A position problem solved by the kernel in a frame where the move goes towards +p
+/// (so that `amax` bounds the acceleration in the direction of travel, `dmax` the
+/// deceleration): brake pre-phase and step-1 block.
+struct Solved {
+    start: State,
+    /// +1 or -1: the frame's direction.
+    s: f64,
+    trapezoidal: bool,
+    /// Frame limits: v in [-vmax, vmax], a in [a_min, a_max], |j| <= jmax.
+    vmax: f64,
+    a_max: f64,
+    a_min: f64,
+    jmax: f64,
+    /// Frame target.
+    pf: f64,
+    vf: f64,
+    brake: kernel::brake::BrakeProfile,
+    /// State after the brake pre-phase (frame).
+    after_brake: (f64, f64, f64),
+}
+
+impl Solved {
+    /// Solves the problem; the step-1 result goes to `block`.
+    fn new(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+        block: &mut kernel::Block,
+    ) -> Option<Solved> {
+        let s = if target_p >= start.p { 1.0 } else { -1.0 };
+        let trapezoidal = lim.is_trapezoidal();
+        let (p0, v0, a0) = (s * start.p, s * start.v, s * start.a);
+        let (pf, vf) = (s * target_p, s * target_v);
+        let (vmax, a_max, a_min, jmax) = (lim.vmax, lim.amax, -lim.dmax, lim.jmax);
+        let mut brake = kernel::brake::BrakeProfile::new();
+        let (mut ps, mut vs, mut as_) = (p0, v0, a0);
+        let mut input = kernel::kprofile::Profile::default();
+        let found = if trapezoidal {
+            brake.get_second_order_position_brake_trajectory(v0, vmax, -vmax, a_max, a_min);
+            brake.finalize_second_order(&mut ps, &mut vs, &mut as_);
+            as_ = 0.0;
+            input.set_boundary(ps, vs, 0.0, pf, vf, 0.0);
+            kernel::pos2::PositionSecondOrderStep1::new(ps, vs, pf, vf, vmax, -vmax, a_max, a_min)
+                .get_profile(&input, block)
+        } else {
+            brake.get_position_brake_trajectory(v0, a0, vmax, -vmax, a_max, a_min, jmax);
+            brake.finalize(&mut ps, &mut vs, &mut as_);
+            input.set_boundary(ps, vs, as_, pf, vf, 0.0);
+            // The solver's candidate buffer is reused per thread (no re-zeroing).
+            STEP1.with(|cell| {
+                let mut step1 = cell.borrow_mut();
+                step1.reset(ps, vs, as_, pf, vf, 0.0, vmax, -vmax, a_max, a_min, jmax);
+                step1.get_profile(&input, block)
+            })
+        };
+        found.then_some(Solved {
+            start,
+            s,
+            trapezoidal,
+            vmax,
+            a_max,
+            a_min,
+            jmax,
+            pf,
+            vf,
+            brake,
+            after_brake: (ps, vs, as_),
+        })
+    }
+
+    /// Step 2: a kernel profile of duration `tf` (after the brake pre-phase).
+    fn with_duration(&self, tf: f64) -> Option<kernel::kprofile::Profile> {
+        let (ps, vs, as_) = self.after_brake;
+        let mut k = kernel::kprofile::Profile::default();
+        k.set_boundary(ps, vs, as_, self.pf, self.vf, 0.0);
+        let found = if self.trapezoidal {
+            kernel::pos2_duration::PositionSecondOrderStep2::new(
+                tf, ps, vs, self.pf, self.vf, self.vmax, -self.vmax, self.a_max, self.a_min,
+            )
+            .get_profile(&mut k)
+        } else {
+            kernel::pos3_duration::PositionThirdOrderStep2::new(
+                tf, ps, vs, as_, self.pf, self.vf, 0.0, self.vmax, -self.vmax, self.a_max,
+                self.a_min, self.jmax,
+            )
+            .get_profile(&mut k)
+        };
+        found.then_some(k)
+    }
+
+    #[inline]
+    /// The public profile: brake pre-phase then the kernel profile `k`, mirrored back.
+    fn build(&self, k: &kernel::kprofile::Profile) -> Profile {
+        let s = self.s;
+        let b = &self.brake;
+        let mut items = [(0.0, 0.0); MAX_PHASES];
+        if self.trapezoidal {
+            items[0] = (b.t[0], s * b.a[0]);
+            items[1] = (0.0, 0.0);
+            for i in 0..7 {
+                items[2 + i] = (k.t[i], s * k.a[i]);
+            }
+        } else {
+            items[0] = (b.t[0], s * b.j[0]);
+            items[1] = (b.t[1], s * b.j[1]);
+            for i in 0..7 {
+                items[2 + i] = (k.t[i], s * k.j[i]);
+            }
+        }
+        Profile::build(self.start, &items, self.trapezoidal, None)
     }
 }
 

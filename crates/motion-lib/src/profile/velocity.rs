@@ -1,4 +1,5 @@
-//! Closed-form velocity changes and the "change, cruise, change" family of profiles.
+//! Closed-form time-optimal velocity changes (MoveVelocity, Halt, Stop), and the fast
+//! path of position profiles that cruise at vmax.
 //!
 //! Input: a start velocity/acceleration, a target velocity (reached with acceleration 0),
 //! acceleration bounds `[-a_lo, a_hi]` and a jerk bound. Output: at most 3 phases of
@@ -7,93 +8,69 @@
 //! velocity interface with target acceleration 0), acceleration never leaves
 //! `[-a_lo, a_hi]` except to come back from a start acceleration beyond it.
 
-use super::{Limits, PlanError, Profile, State};
+use super::{Limits, Profile, State};
 
-/// A phase in the planning frame: duration, and jerk (or acceleration when trapezoidal).
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Piece {
-    pub t: f64,
-    pub x: f64,
-}
-
-/// Up to 3 pieces of one velocity change, plus its duration and distance.
+/// One velocity change: three pieces (duration, jerk; or duration, acceleration when
+/// trapezoidal), some possibly of zero duration, with the distance covered.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Change {
-    pub pieces: [Piece; 3],
-    pub n: usize,
-    pub time: f64,
+    pub t: [f64; 3],
+    pub x: [f64; 3],
     pub dist: f64,
-    /// Velocity and acceleration reached (the target velocity, acceleration 0).
-    pub v_end: f64,
-}
-
-impl Change {
-    fn push(&mut self, t: f64, x: f64) {
-        if t > 0.0 {
-            self.pieces[self.n] = Piece { t, x };
-            self.n += 1;
-        }
-    }
 }
 
 /// Time-optimal change from (`v0`, `a0`) to (`vt`, 0) with a in `[-a_lo, a_hi]`, |jerk| <= `j`
-/// (`j` infinite: trapezoidal, `a0` ignored).
+/// (`j` infinite: trapezoidal, `a0` ignored). Closed form, scalars only.
+#[inline(always)]
 pub(crate) fn change(v0: f64, a0: f64, vt: f64, a_hi: f64, a_lo: f64, j: f64) -> Change {
-    let mut c = Change::default();
     if j.is_infinite() {
-        if vt > v0 {
-            c.push((vt - v0) / a_hi, a_hi);
+        let (t, acc) = if vt > v0 {
+            ((vt - v0) / a_hi, a_hi)
         } else if vt < v0 {
-            c.push((v0 - vt) / a_lo, -a_lo);
-        }
-        let dv = vt - v0;
-        c.time = c.pieces[..c.n].iter().map(|p| p.t).sum();
-        c.dist = if c.n == 0 {
-            0.0
+            ((v0 - vt) / a_lo, -a_lo)
         } else {
-            (v0 + dv / 2.0) * c.time
+            (0.0, 0.0)
         };
-        c.v_end = vt;
-        return c;
+        return Change {
+            t: [t, 0.0, 0.0],
+            x: [acc, 0.0, 0.0],
+            dist: 0.5 * (v0 + vt) * t,
+        };
     }
-    let v_zero = v0 + a0 * a0.abs() / (2.0 * j);
+    let inv_j = 1.0 / j;
+    let v_zero = v0 + 0.5 * a0 * a0.abs() * inv_j;
     let (s, v0m, a0m, vtm, hi) = if vt >= v_zero {
         (1.0, v0, a0, vt, a_hi)
     } else {
         (-1.0, -v0, -a0, -vt, a_lo)
     };
-    // Upward change in the mirrored frame.
-    if a0m > hi {
-        let vz = v0m + a0m * a0m / (2.0 * j);
-        c.push((a0m - hi) / j, -s * j);
-        c.push(((vtm - vz) / hi).max(0.0), 0.0);
-        c.push(hi / j, -s * j);
+    // Upward change in the mirrored frame: jerk j1 to the peak acceleration `ap`, hold
+    // it for t2, jerk -j back to 0.
+    let (t1, j1, t2, ap) = if a0m > hi {
+        let vz = v0m + 0.5 * a0m * a0m * inv_j;
+        ((a0m - hi) * inv_j, -j, ((vtm - vz) / hi).max(0.0), hi)
     } else {
-        let ap = (j * (vtm - v0m) + a0m * a0m / 2.0).max(0.0).sqrt();
+        let ap = (j * (vtm - v0m) + 0.5 * a0m * a0m).max(0.0).sqrt();
         if ap <= hi {
-            c.push((ap - a0m).max(0.0) / j, s * j);
-            c.push(ap / j, -s * j);
+            ((ap - a0m).max(0.0) * inv_j, j, 0.0, ap)
         } else {
-            c.push((hi - a0m) / j, s * j);
-            c.push(
-                ((vtm - v0m - (2.0 * hi * hi - a0m * a0m) / (2.0 * j)) / hi).max(0.0),
-                0.0,
-            );
-            c.push(hi / j, -s * j);
+            let t2 = ((vtm - v0m - (hi * hi - 0.5 * a0m * a0m) * inv_j) / hi).max(0.0);
+            ((hi - a0m) * inv_j, j, t2, hi)
         }
-    }
-    let mut st = State {
-        p: 0.0,
-        v: v0,
-        a: a0,
     };
-    for p in &c.pieces[..c.n] {
-        st = st.integrate(p.t, p.x);
-        c.time += p.t;
+    let t3 = ap * inv_j;
+    // Distance in the mirrored frame, piece by piece.
+    const SIXTH: f64 = 1.0 / 6.0;
+    let d1 = t1 * (v0m + t1 * (0.5 * a0m + t1 * j1 * SIXTH));
+    let v1 = v0m + t1 * (a0m + 0.5 * t1 * j1);
+    let d2 = t2 * (v1 + 0.5 * ap * t2);
+    let v2 = v1 + ap * t2;
+    let d3 = t3 * (v2 + t3 * (0.5 * ap - t3 * j * SIXTH));
+    Change {
+        t: [t1, t2, t3],
+        x: [s * j1, 0.0, -s * j],
+        dist: s * (d1 + d2 + d3),
     }
-    c.dist = st.p;
-    c.v_end = vt;
-    c
 }
 
 /// Jerk bound used by the planners: infinite for trapezoidal limits.
@@ -105,22 +82,10 @@ pub(crate) fn jerk_bound(lim: &Limits) -> f64 {
     }
 }
 
-/// Appends the pieces (planned in a frame mirrored by `s` = ±1) to `prof`.
-pub(crate) fn push_pieces(prof: &mut Profile, pieces: &[Piece], s: f64, trapezoidal: bool) {
-    for p in pieces {
-        if trapezoidal {
-            prof.push_accel(p.t, s * p.x);
-        } else {
-            prof.push_jerk(p.t, s * p.x);
-        }
-    }
-}
-
-/// Appends the time-optimal velocity change from the profile's current end to `vt`.
+/// The time-optimal velocity change from `cur` to `vt` (acceleration 0).
 /// The travel direction is that of `vt` (or of the current velocity when `vt` = 0):
 /// `amax` bounds the acceleration in that direction, `dmax` the deceleration.
-pub(crate) fn push_velocity_change(prof: &mut Profile, vt: f64, lim: &Limits, _hint: f64) {
-    let cur = prof.starts[prof.count];
+pub(crate) fn velocity_change(cur: State, vt: f64, lim: &Limits) -> Profile {
     let dir = if vt != 0.0 {
         vt.signum()
     } else if cur.v != 0.0 {
@@ -131,156 +96,51 @@ pub(crate) fn push_velocity_change(prof: &mut Profile, vt: f64, lim: &Limits, _h
     let j = jerk_bound(lim);
     let a0 = if j.is_infinite() { 0.0 } else { cur.a };
     let c = change(dir * cur.v, dir * a0, dir * vt, lim.amax, lim.dmax, j);
-    push_pieces(prof, &c.pieces[..c.n], dir, j.is_infinite());
+    let items = [0, 1, 2].map(|i| (c.t[i], dir * c.x[i]));
+    Profile::build(cur, &items, j.is_infinite(), None)
 }
 
-/// Planning frame of a position problem: mirrored so that the move is in +p.
-struct Frame {
-    s: f64,
-    v0: f64,
-    a0: f64,
-    dist: f64,
-    vt: f64,
-    j: f64,
-}
-
-impl Frame {
-    fn new(start: State, target_p: f64, target_v: f64, lim: &Limits) -> Frame {
-        let s = if target_p > start.p || (target_p == start.p && target_v + start.v >= 0.0) {
-            1.0
-        } else {
-            -1.0
-        };
-        let j = jerk_bound(lim);
-        Frame {
-            s,
-            v0: s * start.v,
-            a0: if j.is_infinite() { 0.0 } else { s * start.a },
-            dist: s * (target_p - start.p),
-            vt: s * target_v,
-            j,
-        }
-    }
-
-    fn halves(&self, vp: f64, lim: &Limits) -> (Change, Change) {
-        (
-            change(self.v0, self.a0, vp, lim.amax, lim.dmax, self.j),
-            change(vp, 0.0, self.vt, lim.amax, lim.dmax, self.j),
-        )
-    }
-
-    fn build(&self, start: State, c1: &Change, cruise: f64, vp: f64, c2: &Change) -> Profile {
-        let mut prof = Profile::new(start);
-        let trap = self.j.is_infinite();
-        push_pieces(&mut prof, &c1.pieces[..c1.n], self.s, trap);
-        if cruise > 0.0 {
-            if trap {
-                prof.push_accel(cruise, 0.0);
-            } else {
-                // Snap the acceleration to exactly 0 at the cruise velocity.
-                let i = prof.count;
-                prof.starts[i].a = 0.0;
-                prof.starts[i].v = self.s * vp;
-                prof.push_jerk(cruise, 0.0);
-            }
-        }
-        push_pieces(&mut prof, &c2.pieces[..c2.n], self.s, trap);
-        prof
-    }
-}
-
-/// A valid (not always time-optimal) profile: velocity change to a peak velocity `vp`,
-/// cruise, velocity change to the target velocity; `vp` found by bisection.
-pub(crate) fn position_simple(
+/// Fast path of [`Profile::position`]: when the start is inside the limits and the
+/// distance leaves room for a cruise at vmax, the time-optimal profile is the
+/// time-optimal change to vmax, the cruise, and the time-optimal change to the target
+/// velocity (ruckig's velocity-limited profile families). Returns the phases
+/// (duration, jerk), the cruise being the fourth, at velocity `sign(target_p - start.p)
+/// * vmax`. None otherwise (the kernel then enumerates every family).
+#[inline(always)]
+pub(crate) fn position_cruising(
     start: State,
     target_p: f64,
     target_v: f64,
     lim: &Limits,
-) -> Result<Profile, PlanError> {
-    let f = Frame::new(start, target_p, target_v, lim);
-    let (c1, c2) = f.halves(lim.vmax, lim);
-    let d = c1.dist + c2.dist;
-    if d <= f.dist {
-        let cruise = (f.dist - d) / lim.vmax;
-        return Ok(f.build(start, &c1, cruise, lim.vmax, &c2));
-    }
-    let (mut lo, mut hi) = (-lim.vmax, lim.vmax);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        let (a, b) = f.halves(mid, lim);
-        if a.dist + b.dist > f.dist {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-        if hi - lo <= 1e-15 * lim.vmax {
-            break;
-        }
-    }
-    let (a, b) = f.halves(lo, lim);
-    let rest = f.dist - a.dist - b.dist;
-    if lo.abs() > 0.0 && rest / lo >= 0.0 {
-        return Ok(f.build(start, &a, rest / lo, lo, &b));
-    }
-    Err(PlanError::NoSolution {
-        start,
-        target_p,
-        target_v,
-    })
-}
-
-/// A profile of duration exactly `t` from the same family, with a lower peak velocity.
-pub(crate) fn with_duration_simple(
-    start: State,
-    target_p: f64,
-    target_v: f64,
-    lim: &Limits,
-    t: f64,
-) -> Option<Profile> {
-    let f = Frame::new(start, target_p, target_v, lim);
-    // Total time with peak velocity vp (None when the distance is overshot).
-    let total = |vp: f64| -> Option<(f64, Change, Change, f64)> {
-        let (a, b) = f.halves(vp, lim);
-        let rest = f.dist - a.dist - b.dist;
-        if vp <= 0.0 || rest < -1e-12 * f.dist.abs().max(1.0) {
-            return None;
-        }
-        let cruise = rest.max(0.0) / vp;
-        Some((a.time + b.time + cruise, a, b, cruise))
-    };
-    let mut hi = lim.vmax;
-    let mut lo = 0.0;
-    // Find the fastest feasible vp (largest) by bisection on feasibility.
-    if total(hi).is_none() {
-        let (mut l, mut h) = (0.0, lim.vmax);
-        for _ in 0..200 {
-            let m = 0.5 * (l + h);
-            if total(m).is_some() {
-                l = m;
-            } else {
-                h = m;
-            }
-        }
-        hi = l;
-    }
-    let (t_hi, ..) = total(hi)?;
-    if t_hi > t {
+) -> Option<[(f64, f64); 7]> {
+    if lim.is_trapezoidal() {
         return None;
     }
-    for _ in 0..200 {
-        let m = 0.5 * (lo + hi);
-        match total(m) {
-            Some((tm, ..)) if tm <= t => hi = m,
-            _ => lo = m,
-        }
-        if hi - lo <= 1e-15 * lim.vmax {
-            break;
-        }
-    }
-    let (tt, a, b, cruise) = total(hi)?;
-    let cruise = cruise + (t - tt).max(0.0) * 0.0;
-    if (tt - t).abs() > 1e-9 * t.max(1.0) {
+    let s = if target_p >= start.p { 1.0 } else { -1.0 };
+    let (v0, a0, vf, j) = (s * start.v, s * start.a, s * target_v, lim.jmax);
+    let v_zero = v0 + a0 * a0.abs() / (2.0 * j);
+    if v0.abs() > lim.vmax
+        || a0 > lim.amax
+        || a0 < -lim.dmax
+        || v_zero.abs() > lim.vmax
+        || vf.abs() > lim.vmax
+    {
         return None;
     }
-    Some(f.build(start, &a, cruise, hi, &b))
+    let c1 = change(v0, a0, lim.vmax, lim.amax, lim.dmax, j);
+    let c2 = change(lim.vmax, 0.0, vf, lim.amax, lim.dmax, j);
+    let cruise = (s * (target_p - start.p) - c1.dist - c2.dist) / lim.vmax;
+    if cruise.is_nan() || cruise <= 0.0 {
+        return None;
+    }
+    let items = [
+        (c1.t[0], s * c1.x[0]),
+        (c1.t[1], s * c1.x[1]),
+        (c1.t[2], s * c1.x[2]),
+        (cruise, 0.0),
+        (c2.t[0], s * c2.x[0]),
+        (c2.t[1], s * c2.x[1]),
+        (c2.t[2], s * c2.x[2]),
+    ];
+    Some(items)
 }
