@@ -911,6 +911,20 @@ impl Engine {
             if let Some(id) = id {
                 self.cmds.set(id, CmdStatus::Done);
             }
+            if matches!(kind, GKind::Path | GKind::Direct) && end_v == 0.0 {
+                // Land exactly on the commanded end point.
+                let target = self.groups[g].active.as_ref().map(|a| a.target);
+                if let Some(target) = target {
+                    for i in 0..n {
+                        if let Some(ax) = self.groups[g].axes[i] {
+                            let s = &mut self.axes[ax as usize].set;
+                            s.p = target[i];
+                            s.v = 0.0;
+                            s.a = 0.0;
+                        }
+                    }
+                }
+            }
             match kind {
                 GKind::Stop | GKind::Brake => {
                     self.finish_group(g);
