@@ -935,8 +935,13 @@ impl Engine {
                 // The target of a relative move does not move with the axis.
                 return Ok(());
             }
-            p.end_v = self.axes[axis].active.end_v;
-            let released = self.axes[axis].active.released;
+            let cur = &self.axes[axis].active;
+            if cur.kind == p.kind && cur.target == p.target && cur.lim == p.lim {
+                // Inputs unchanged: keep the running profile.
+                return Ok(());
+            }
+            p.end_v = cur.end_v;
+            let released = cur.released;
             self.activate(axis, p, 0.0)?;
             if p.kind == Kind::Velocity && released {
                 self.cmds.set_in_target(id, false);
