@@ -7,6 +7,7 @@
 //! - [`axis`], [`fsm`], [`buffer`], [`cmd`], [`engine`], [`sync`], [`path`], [`group`]:
 //!   the runtime (axes, state machines, buffers, interpolation).
 //! - [`blocks`], [`group_blocks`]: the PLCopen function blocks, called once per scan.
+//! - [`remote`]: the engine on its own thread with a lock-free hand-over to the scan.
 //! - [`ffi`]: the C ABI (the only `unsafe` code of the project).
 
 pub mod profile;
@@ -22,4 +23,5 @@ pub mod fsm;
 pub mod group;
 pub mod group_blocks;
 pub mod path;
+pub mod remote;
 pub mod sync;
