@@ -915,10 +915,10 @@ impl Engine {
                 // Land exactly on the commanded end point.
                 let target = self.groups[g].active.as_ref().map(|a| a.target);
                 if let Some(target) = target {
-                    for i in 0..n {
+                    for (i, t) in target.iter().enumerate().take(n) {
                         if let Some(ax) = self.groups[g].axes[i] {
                             let s = &mut self.axes[ax as usize].set;
-                            s.p = target[i];
+                            s.p = *t;
                             s.v = 0.0;
                             s.a = 0.0;
                         }
