@@ -357,3 +357,47 @@ fn real_drive_follows_the_set_point() {
     assert!((e.actual_position(a).unwrap() - 6.0).abs() < 1e-9);
     assert_eq!(e.drive_fault_code(a).unwrap(), 0);
 }
+
+#[test]
+fn bad_configurations_are_refused_with_their_codes() {
+    use motion_lib::axis::{AxisKind, ConfigError};
+    use motion_lib::profile::Limits;
+    let mut e = Engine::new(EngineConfig::default()).unwrap();
+    let bad_limits = AxisConfig {
+        limits: Limits {
+            vmax: 0.0,
+            amax: 1.0,
+            dmax: 1.0,
+            jmax: 0.0,
+        },
+        ..AxisConfig::default()
+    };
+    assert_eq!(e.add_axis(bad_limits), Err(ConfigError::InvalidLimits));
+    let bad_sw = AxisConfig {
+        sw_limits_enabled: true,
+        sw_limit_neg: 1.0,
+        sw_limit_pos: -1.0,
+        ..AxisConfig::default()
+    };
+    assert_eq!(e.add_axis(bad_sw).unwrap_err().code(), "E5002");
+    let bad_mod = AxisConfig {
+        kind: AxisKind::Modulo { period: 0.0 },
+        ..AxisConfig::default()
+    };
+    assert_eq!(e.add_axis(bad_mod).unwrap_err().code(), "E5003");
+    let bad_fe = AxisConfig {
+        following_error_limit: f64::NAN,
+        ..AxisConfig::default()
+    };
+    assert_eq!(e.add_axis(bad_fe).unwrap_err().code(), "E5004");
+    assert_eq!(
+        Engine::new(EngineConfig {
+            cycle: 0.0,
+            queue_depth: 1
+        })
+        .err()
+        .map(|c| c.code()),
+        Some("E5005")
+    );
+    assert_eq!(e.axis_count(), 0);
+}
