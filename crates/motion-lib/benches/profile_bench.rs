@@ -1,0 +1,215 @@
+//! Plan time of `motion_lib::profile` against rsruckig on the oracle problems, side by
+//! side in one run, and the per-cycle sampling cost of `Profile::at`.
+//!
+//! Run: `cargo bench -p motion-lib --bench profile_bench`. For each oracle problem
+//! (rest, blend, abort: one axis; line3: the path-length problem with the projected
+//! limits) both planners run the same problem `REPS` times; the report gives the median
+//! per-problem time of each and the median of the per-problem ratios (ours / rsruckig).
+
+use motion_lib::profile::line::{path_limits, Line};
+use motion_lib::profile::{Limits, Profile, State};
+use rsruckig::prelude::*;
+use serde_json::Value;
+use std::hint::black_box;
+use std::time::Instant;
+
+const REPS: u32 = 200;
+
+struct Problem {
+    kind: String,
+    start: State,
+    target_p: f64,
+    target_v: f64,
+    lim: Limits,
+    line: Option<(Vec<f64>, Vec<f64>, Vec<Limits>)>,
+}
+
+fn oracle() -> String {
+    let dir = env!("CARGO_MANIFEST_DIR");
+    ["/../../../shared", "/../../../../shared"]
+        .iter()
+        .find_map(|up| {
+            std::fs::read_to_string(format!("{dir}{up}/oracle/ruckig-profiles.jsonl")).ok()
+        })
+        .expect("oracle file /work/shared/oracle/ruckig-profiles.jsonl readable")
+}
+
+fn f(v: &Value, k: &str) -> f64 {
+    v[k].as_f64().unwrap_or(0.0)
+}
+
+fn fs(v: &Value, k: &str) -> Vec<f64> {
+    v[k].as_array()
+        .map(|a| a.iter().filter_map(Value::as_f64).collect())
+        .unwrap_or_default()
+}
+
+fn problems() -> Vec<Problem> {
+    oracle()
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let v: Value = serde_json::from_str(l).expect("oracle line is JSON");
+            let kind = v["kind"].as_str().unwrap_or("").to_string();
+            if kind == "line3" {
+                let (s, e) = (fs(&v, "start"), fs(&v, "end"));
+                let axes: Vec<Limits> = (0..3)
+                    .map(|i| Limits {
+                        vmax: fs(&v, "vmax")[i],
+                        amax: fs(&v, "amax")[i],
+                        dmax: fs(&v, "amax")[i],
+                        jmax: fs(&v, "jmax")[i],
+                    })
+                    .collect();
+                let d: Vec<f64> = s.iter().zip(&e).map(|(a, b)| b - a).collect();
+                let len = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+                let unit: Vec<f64> = d.iter().map(|x| x / len).collect();
+                let lim = path_limits(&unit, &axes).expect("valid limits");
+                Problem {
+                    kind,
+                    start: State::default(),
+                    target_p: len,
+                    target_v: 0.0,
+                    lim,
+                    line: Some((s, e, axes)),
+                }
+            } else {
+                Problem {
+                    kind,
+                    start: State {
+                        p: f(&v, "p0"),
+                        v: f(&v, "v0"),
+                        a: f(&v, "a0"),
+                    },
+                    target_p: f(&v, "p1"),
+                    target_v: f(&v, "v1"),
+                    lim: Limits {
+                        vmax: f(&v, "vmax"),
+                        amax: f(&v, "amax"),
+                        dmax: f(&v, "dmax"),
+                        jmax: f(&v, "jmax"),
+                    },
+                    line: None,
+                }
+            }
+        })
+        .collect()
+}
+
+fn ruckig_input(pb: &Problem) -> InputParameter<1> {
+    let mut input = InputParameter::new(None);
+    let (amax, amin) = if pb.target_p >= pb.start.p {
+        (pb.lim.amax, -pb.lim.dmax)
+    } else {
+        (pb.lim.dmax, -pb.lim.amax)
+    };
+    input.current_position[0] = pb.start.p;
+    input.current_velocity[0] = pb.start.v;
+    input.current_acceleration[0] = pb.start.a;
+    input.target_position[0] = pb.target_p;
+    input.target_velocity[0] = pb.target_v;
+    input.max_velocity[0] = pb.lim.vmax;
+    input.max_acceleration[0] = amax;
+    input.min_acceleration = Some(daov_stack![amin]);
+    input.max_jerk[0] = pb.lim.jmax;
+    input
+}
+
+/// Nanoseconds per call of `f`, best of 3 batches of `REPS` calls.
+fn time_ns(mut f: impl FnMut()) -> f64 {
+    (0..3)
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..REPS {
+                f();
+            }
+            t.elapsed().as_nanos() as f64 / REPS as f64
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    if v.is_empty() {
+        f64::NAN
+    } else {
+        v[v.len() / 2]
+    }
+}
+
+fn main() {
+    let problems = problems();
+    let mut otg = Ruckig::<1, IgnoreErrorHandler>::new(None, 0.001);
+    let mut traj = Trajectory::new(None);
+    let mut rows: Vec<(String, f64, f64)> = Vec::new();
+    let mut max_dev: f64 = 0.0;
+    for pb in &problems {
+        let input = ruckig_input(pb);
+        let ours = if let Some((s, e, axes)) = &pb.line {
+            time_ns(|| {
+                let line = Line::plan(black_box(s), black_box(e), black_box(axes));
+                black_box(&line);
+            })
+        } else {
+            time_ns(|| {
+                let prof = Profile::position(
+                    black_box(pb.start),
+                    black_box(pb.target_p),
+                    black_box(pb.target_v),
+                    black_box(&pb.lim),
+                );
+                black_box(&prof);
+            })
+        };
+        let theirs = time_ns(|| {
+            let result = otg.calculate(black_box(&input), &mut traj);
+            black_box(&result);
+            black_box(&traj);
+        });
+        let d_ours = Profile::position(pb.start, pb.target_p, pb.target_v, &pb.lim)
+            .map(|p| p.duration())
+            .unwrap_or(f64::NAN);
+        max_dev = max_dev.max((d_ours - traj.get_duration()).abs() / traj.get_duration());
+        rows.push((pb.kind.clone(), ours, theirs));
+    }
+    println!(
+        "profile_bench: {} oracle problems, {REPS} plans each per planner (best of 3)",
+        rows.len()
+    );
+    println!(
+        "{:<6} {:>6} {:>14} {:>14} {:>14}",
+        "kind", "count", "ours ns", "rsruckig ns", "median ratio"
+    );
+    for kind in ["rest", "blend", "abort", "line3", "all"] {
+        let sel: Vec<&(String, f64, f64)> = rows
+            .iter()
+            .filter(|r| kind == "all" || r.0 == kind)
+            .collect();
+        println!(
+            "{:<6} {:>6} {:>14.0} {:>14.0} {:>14.3}",
+            kind,
+            sel.len(),
+            median(sel.iter().map(|r| r.1).collect()),
+            median(sel.iter().map(|r| r.2).collect()),
+            median(sel.iter().map(|r| r.1 / r.2).collect()),
+        );
+    }
+    println!("max relative duration difference to rsruckig: {max_dev:.3e}");
+
+    // Per-cycle sampling cost: `at(t)` over a profile, one sample per 1 ms cycle.
+    let pb = &problems[problems.len() / 3];
+    let prof = Profile::position(pb.start, pb.target_p, pb.target_v, &pb.lim).expect("plans");
+    let n = 1_000_000u32;
+    let dt = prof.duration() * 1.2 / n as f64;
+    let t0 = Instant::now();
+    let mut acc = 0.0;
+    for i in 0..n {
+        acc += prof.at(black_box(i as f64 * dt)).p;
+    }
+    let at_ns = t0.elapsed().as_nanos() as f64 / n as f64;
+    black_box(acc);
+    println!(
+        "Profile::at: {at_ns:.1} ns per sample ({} phases, {n} samples over 1.2 x duration)",
+        prof.phases().len()
+    );
+}

@@ -1,0 +1,1409 @@
+//! The interpolation engine: axes, their command buffers and the fixed-cycle step.
+//!
+//! Input: axis configurations (at setup), commands from the blocks (between cycles) and
+//! [`Engine::step`] once per cycle. Output: per axis a set point (position, velocity,
+//! acceleration) each cycle, the PLCopen state, and the status of every command.
+//! Invariants: deterministic (same calls, same set points); `step` allocates nothing
+//! (flat arrays sized at setup; queues reserved at their depth); an axis error always
+//! ends in ErrorStop with every buffered command failed and the queue empty.
+
+use crate::axis::{AxisConfig, AxisKind, ConfigError, Drive, HomingStatus};
+use crate::buffer::{BufferMode, Direction, Queue};
+use crate::cmd::{CmdId, CmdStatus, CmdTable};
+use crate::error::ErrorId;
+use crate::fsm::{check_axis, AxisCmd, AxisState, GroupState};
+use crate::group::GroupRt;
+use crate::profile::{Limits, Profile, State};
+use crate::sync::{CamTable, SyncParams};
+
+/// Engine settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EngineConfig {
+    /// Cycle time in seconds (default 1 ms).
+    pub cycle: f64,
+    /// Commands each axis and each group can buffer besides the active one.
+    pub queue_depth: usize,
+}
+
+impl Default for EngineConfig {
+    fn default() -> Self {
+        EngineConfig {
+            cycle: 0.001,
+            queue_depth: 8,
+        }
+    }
+}
+
+/// Dynamics inputs of a move (PLCopen Velocity, Acceleration, Deceleration, Jerk).
+/// Jerk 0 means "the axis's jerk limit".
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Dynamics {
+    pub velocity: f64,
+    pub acceleration: f64,
+    pub deceleration: f64,
+    pub jerk: f64,
+}
+
+/// Source of a master's value for gearing and camming.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum MasterSource {
+    #[default]
+    SetValue,
+    ActualValue,
+}
+
+/// A single-axis command.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AxisCommand {
+    MoveAbsolute {
+        position: f64,
+        direction: Direction,
+    },
+    MoveRelative {
+        distance: f64,
+    },
+    MoveAdditive {
+        distance: f64,
+    },
+    /// `dynamics.velocity` is the speed; the sign comes from `direction` (a negative
+    /// velocity reverses it).
+    MoveVelocity {
+        direction: Direction,
+    },
+    Halt,
+    Stop,
+    Home {
+        position: f64,
+    },
+    GearIn {
+        master: usize,
+        numerator: f64,
+        denominator: f64,
+        source: MasterSource,
+    },
+    GearOut,
+    CamIn {
+        master: usize,
+        params: SyncParams,
+    },
+    CamOut,
+}
+
+impl AxisCommand {
+    fn class(&self) -> AxisCmd {
+        match self {
+            AxisCommand::MoveAbsolute { .. }
+            | AxisCommand::MoveRelative { .. }
+            | AxisCommand::MoveAdditive { .. }
+            | AxisCommand::Halt => AxisCmd::Discrete,
+            AxisCommand::MoveVelocity { .. } => AxisCmd::Continuous,
+            AxisCommand::Stop => AxisCmd::Stop,
+            AxisCommand::Home { .. } => AxisCmd::Home,
+            AxisCommand::GearIn { .. } | AxisCommand::CamIn { .. } => AxisCmd::Synchronized,
+            AxisCommand::GearOut | AxisCommand::CamOut => AxisCmd::SyncOut,
+        }
+    }
+}
+
+/// What the axis is doing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub(crate) enum Kind {
+    #[default]
+    Idle,
+    Position,
+    Velocity,
+    Halt,
+    Stop,
+    Home,
+    Gear,
+    Cam,
+    /// Set point written by the axis's group.
+    Group,
+    /// Error braking (no command).
+    Brake,
+}
+
+/// A resolved command waiting in an axis queue (or running).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Pending {
+    pub id: CmdId,
+    pub kind: Kind,
+    /// Raw target position (Position), signed velocity (Velocity), home position (Home).
+    pub target: f64,
+    /// Commanded speed magnitude (for blending).
+    pub speed: f64,
+    pub lim: Limits,
+    pub buffer: BufferMode,
+    /// Signed velocity at the end of the move (set by a blending successor).
+    pub end_v: f64,
+    pub sync: SyncParams,
+}
+
+/// The running motion of an axis.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Active {
+    pub kind: Kind,
+    pub id: Option<CmdId>,
+    pub prof: Profile,
+    pub t: f64,
+    pub target: f64,
+    pub speed: f64,
+    pub lim: Limits,
+    /// Release given (InVelocity / InGear / InSync reached).
+    pub released: bool,
+    pub end_v: f64,
+    pub sync: SyncParams,
+}
+
+impl Active {
+    pub(crate) fn idle(at: State) -> Active {
+        Active {
+            kind: Kind::Idle,
+            id: None,
+            prof: standing(at.p),
+            t: 0.0,
+            target: at.p,
+            speed: 0.0,
+            lim: UNIT,
+            released: true,
+            end_v: 0.0,
+            sync: SyncParams::default(),
+        }
+    }
+}
+
+/// Profile::position, standing still when the start already is the target.
+pub(crate) fn plan_position(
+    start: State,
+    target: f64,
+    end_v: f64,
+    lim: &Limits,
+) -> Result<Profile, crate::profile::PlanError> {
+    if start.p == target && start.v == end_v && start.a == 0.0 && end_v == 0.0 {
+        return Ok(standing(target));
+    }
+    Profile::position(start, target, end_v, lim)
+}
+
+/// A zero-length profile standing at `p`.
+pub(crate) fn standing(p: f64) -> Profile {
+    let at = State { p, v: 0.0, a: 0.0 };
+    match Profile::velocity(at, 0.0, &UNIT) {
+        Ok(prof) => prof,
+        // Only a non-finite position fails: stand at 0 instead.
+        Err(_) => {
+            Profile::velocity(State::default(), 0.0, &UNIT).unwrap_or_else(|_| unreachable!())
+        }
+    }
+}
+
+const UNIT: Limits = Limits {
+    vmax: 1.0,
+    amax: 1.0,
+    dmax: 1.0,
+    jmax: 0.0,
+};
+
+/// Runtime of one axis (flat, no heap).
+#[derive(Clone, Debug)]
+pub(crate) struct AxisRt {
+    pub cfg: AxisConfig,
+    pub state: AxisState,
+    /// Set point in raw (unwrapped) units.
+    pub set: State,
+    pub act_p: f64,
+    pub act_v: f64,
+    /// User position = raw + origin (then wrapped on modulo axes).
+    pub origin: f64,
+    pub power_req: bool,
+    pub powered: bool,
+    pub axis_error: ErrorId,
+    pub drive_code: u16,
+    pub override_target: f64,
+    pub override_now: f64,
+    pub group: Option<u16>,
+    pub stop_owner: Option<CmdId>,
+    pub active: Active,
+    pub has_drive: bool,
+}
+
+/// The motion engine.
+pub struct Engine {
+    pub(crate) cfg: EngineConfig,
+    pub(crate) axes: Vec<AxisRt>,
+    pub(crate) drives: Vec<Option<Box<dyn Drive>>>,
+    pub(crate) queues: Vec<Queue<Pending>>,
+    pub(crate) groups: Vec<GroupRt>,
+    pub(crate) cmds: CmdTable,
+    pub(crate) cams: Vec<CamTable>,
+    pub(crate) events: Vec<u32>,
+    pub(crate) synced: Vec<u32>,
+    pub(crate) cycles: u64,
+}
+
+fn finite(x: f64) -> bool {
+    x.is_finite()
+}
+
+impl Engine {
+    /// An engine with no axes.
+    pub fn new(cfg: EngineConfig) -> Result<Engine, ConfigError> {
+        if !(cfg.cycle.is_finite() && cfg.cycle > 0.0) {
+            return Err(ConfigError::InvalidEngineConfig);
+        }
+        Ok(Engine {
+            cfg,
+            axes: Vec::new(),
+            drives: Vec::new(),
+            queues: Vec::new(),
+            groups: Vec::new(),
+            cmds: CmdTable::with_capacity(64),
+            cams: Vec::new(),
+            events: Vec::new(),
+            synced: Vec::new(),
+            cycles: 0,
+        })
+    }
+
+    /// The engine's configuration.
+    pub fn config(&self) -> &EngineConfig {
+        &self.cfg
+    }
+
+    /// Adds an axis with a simulated drive; returns its index.
+    pub fn add_axis(&mut self, cfg: AxisConfig) -> Result<usize, ConfigError> {
+        cfg.validate()?;
+        self.axes.push(AxisRt {
+            cfg,
+            state: AxisState::Disabled,
+            set: State::default(),
+            act_p: 0.0,
+            act_v: 0.0,
+            origin: 0.0,
+            power_req: false,
+            powered: false,
+            axis_error: ErrorId::None,
+            drive_code: 0,
+            override_target: 1.0,
+            override_now: 1.0,
+            group: None,
+            stop_owner: None,
+            active: Active::idle(State::default()),
+            has_drive: false,
+        });
+        self.drives.push(None);
+        self.queues.push(Queue::new(self.cfg.queue_depth));
+        let n = self.axes.len();
+        self.events.reserve(3 * n);
+        self.synced.reserve(n);
+        Ok(self.axes.len() - 1)
+    }
+
+    /// Adds an axis driven by a real drive.
+    pub fn add_axis_with_drive(
+        &mut self,
+        cfg: AxisConfig,
+        drive: Box<dyn Drive>,
+    ) -> Result<usize, ConfigError> {
+        let i = self.add_axis(cfg)?;
+        let p = drive.actual_position();
+        self.axes[i].set.p = p;
+        self.axes[i].act_p = p;
+        self.axes[i].has_drive = true;
+        self.drives[i] = Some(drive);
+        Ok(i)
+    }
+
+    /// Replaces an axis's configuration (allowed while Disabled or Standstill).
+    pub fn configure_axis(&mut self, axis: usize, cfg: AxisConfig) -> Result<(), ErrorId> {
+        cfg.validate().map_err(|_| ErrorId::InvalidMode)?;
+        let ax = self.axes.get_mut(axis).ok_or(ErrorId::InvalidAxis)?;
+        if !matches!(ax.state, AxisState::Disabled | AxisState::Standstill) {
+            return Err(ErrorId::NotStandstill);
+        }
+        ax.cfg = cfg;
+        Ok(())
+    }
+
+    /// Number of axes.
+    pub fn axis_count(&self) -> usize {
+        self.axes.len()
+    }
+
+    /// Cycles stepped so far.
+    pub fn cycles(&self) -> u64 {
+        self.cycles
+    }
+
+    /// Engine time in seconds (cycles * cycle time).
+    pub fn time(&self) -> f64 {
+        self.cycles as f64 * self.cfg.cycle
+    }
+
+    pub(crate) fn axis(&self, axis: usize) -> Result<&AxisRt, ErrorId> {
+        self.axes.get(axis).ok_or(ErrorId::InvalidAxis)
+    }
+
+    // ------------------------------------------------------------------ reads
+
+    /// PLCopen state of the axis.
+    pub fn axis_state(&self, axis: usize) -> Result<AxisState, ErrorId> {
+        Ok(self.axis(axis)?.state)
+    }
+
+    fn to_user(ax: &AxisRt, raw: f64) -> f64 {
+        let p = raw + ax.origin;
+        match ax.cfg.kind {
+            AxisKind::Linear => p,
+            AxisKind::Modulo { period } => p.rem_euclid(period),
+        }
+    }
+
+    /// Set position in user units (wrapped on modulo axes).
+    pub fn set_position_of(&self, axis: usize) -> Result<f64, ErrorId> {
+        let ax = self.axis(axis)?;
+        Ok(Self::to_user(ax, ax.set.p))
+    }
+
+    /// Set velocity (includes the override).
+    pub fn set_velocity_of(&self, axis: usize) -> Result<f64, ErrorId> {
+        Ok(self.axis(axis)?.set.v)
+    }
+
+    /// Set acceleration.
+    pub fn set_acceleration_of(&self, axis: usize) -> Result<f64, ErrorId> {
+        Ok(self.axis(axis)?.set.a)
+    }
+
+    /// Actual position in user units.
+    pub fn actual_position(&self, axis: usize) -> Result<f64, ErrorId> {
+        let ax = self.axis(axis)?;
+        Ok(Self::to_user(ax, ax.act_p))
+    }
+
+    /// Actual velocity.
+    pub fn actual_velocity(&self, axis: usize) -> Result<f64, ErrorId> {
+        Ok(self.axis(axis)?.act_v)
+    }
+
+    /// The axis error (AxisErrorID), `ErrorId::None` when the axis has none.
+    pub fn axis_error(&self, axis: usize) -> Result<ErrorId, ErrorId> {
+        Ok(self.axis(axis)?.axis_error)
+    }
+
+    /// The drive's own fault code of the last drive fault.
+    pub fn drive_fault_code(&self, axis: usize) -> Result<u16, ErrorId> {
+        Ok(self.axis(axis)?.drive_code)
+    }
+
+    /// MC_Power.Status: the drive is enabled.
+    pub fn power_status(&self, axis: usize) -> Result<bool, ErrorId> {
+        Ok(self.axis(axis)?.powered)
+    }
+
+    /// Number of commands waiting in the axis's buffer (not counting the active one).
+    pub fn queued(&self, axis: usize) -> Result<usize, ErrorId> {
+        self.axis(axis)?;
+        Ok(self.queues[axis].len())
+    }
+
+    /// Group the axis belongs to.
+    pub fn group_of(&self, axis: usize) -> Result<Option<usize>, ErrorId> {
+        Ok(self.axis(axis)?.group.map(usize::from))
+    }
+
+    // --------------------------------------------------------------- commands
+
+    /// Status of a command.
+    pub fn status(&self, id: CmdId) -> CmdStatus {
+        self.cmds.status(id)
+    }
+
+    /// InVelocity / InGear / InSync of a command (on the set value).
+    pub fn in_target(&self, id: CmdId) -> bool {
+        self.cmds.in_target(id)
+    }
+
+    /// EndOfProfile of a CamIn command.
+    pub fn end_of_profile(&self, id: CmdId) -> bool {
+        self.cmds.end_of_profile(id)
+    }
+
+    /// Forgets a finished command (its block has read the final status).
+    pub fn release(&mut self, id: CmdId) {
+        if self.cmds.status(id).is_final() {
+            self.cmds.release(id);
+        }
+    }
+
+    /// MC_Stop's Execute fell after Done: the axis leaves Stopping for Standstill.
+    pub fn release_stop(&mut self, axis: usize, id: CmdId) {
+        if let Some(ax) = self.axes.get_mut(axis) {
+            if ax.stop_owner == Some(id) && ax.active.kind != Kind::Stop {
+                ax.stop_owner = None;
+                if ax.state == AxisState::Stopping {
+                    ax.state = AxisState::Standstill;
+                }
+            }
+        }
+    }
+
+    /// MC_Power: switches the drive on or off. Returns MC_Power.Status.
+    pub fn power(&mut self, axis: usize, enable: bool) -> Result<bool, ErrorId> {
+        self.axis(axis)?;
+        let ax = &mut self.axes[axis];
+        if enable == ax.power_req {
+            self.poll_power(axis);
+            return Ok(self.axes[axis].powered);
+        }
+        ax.power_req = enable;
+        if let Some(d) = self.drives[axis].as_mut() {
+            d.set_enable(enable);
+        }
+        if !enable {
+            self.abort_all(axis, CmdStatus::Aborted);
+            let ax = &mut self.axes[axis];
+            ax.powered = false;
+            ax.set.v = 0.0;
+            ax.set.a = 0.0;
+            ax.set.p = ax.act_p;
+            ax.active = Active::idle(ax.set);
+            ax.stop_owner = None;
+            if ax.state != AxisState::ErrorStop {
+                ax.state = AxisState::Disabled;
+            }
+            if let Some(g) = ax.group {
+                self.group_axis_fault(g as usize);
+            }
+        }
+        self.poll_power(axis);
+        Ok(self.axes[axis].powered)
+    }
+
+    /// Reads the drive's enable feedback; Disabled -> Standstill once enabled.
+    fn poll_power(&mut self, axis: usize) {
+        let ax = &mut self.axes[axis];
+        if ax.power_req {
+            let en = match self.drives[axis].as_ref() {
+                Some(d) => d.enabled(),
+                None => true,
+            };
+            if en && !ax.powered {
+                ax.powered = true;
+                ax.set = State {
+                    p: ax.act_p,
+                    v: 0.0,
+                    a: 0.0,
+                };
+                ax.active = Active::idle(ax.set);
+            }
+            if en && ax.state == AxisState::Disabled {
+                ax.state = AxisState::Standstill;
+            }
+        }
+    }
+
+    /// MC_Reset: ErrorStop -> Standstill (powered) or Disabled. In other states nothing
+    /// happens (Done).
+    pub fn reset(&mut self, axis: usize) -> Result<(), ErrorId> {
+        self.axis(axis)?;
+        if self.axes[axis].state != AxisState::ErrorStop {
+            return Ok(());
+        }
+        if self.axes[axis].active.kind == Kind::Brake
+            || (self.axes[axis].active.kind == Kind::Group)
+        {
+            return Err(ErrorId::AxisStillMoving);
+        }
+        if let Some(d) = self.drives[axis].as_mut() {
+            d.reset_fault();
+            if d.fault().is_some() {
+                return Err(ErrorId::DriveFaultActive);
+            }
+        }
+        let ax = &mut self.axes[axis];
+        ax.axis_error = ErrorId::None;
+        ax.drive_code = 0;
+        ax.state = if ax.powered {
+            AxisState::Standstill
+        } else {
+            AxisState::Disabled
+        };
+        Ok(())
+    }
+
+    /// Puts the axis into ErrorStop with `error` (AxisErrorID): the active and every
+    /// buffered command fail with that error, the queue is cleared and the axis brakes
+    /// with its own deceleration and jerk limits.
+    pub fn raise_axis_error(&mut self, axis: usize, error: ErrorId) -> Result<(), ErrorId> {
+        self.axis(axis)?;
+        if self.axes[axis].state == AxisState::ErrorStop {
+            return Ok(());
+        }
+        self.abort_all(axis, CmdStatus::Error(error));
+        let ax = &mut self.axes[axis];
+        ax.state = AxisState::ErrorStop;
+        ax.axis_error = error;
+        ax.stop_owner = None;
+        if ax.active.kind == Kind::Group {
+            // The group brakes along its path (it drives this axis's set point).
+            let g = ax.group.map(usize::from);
+            if let Some(g) = g {
+                self.group_axis_fault(g);
+            }
+            return Ok(());
+        }
+        if ax.powered {
+            let lim = ax.cfg.limits;
+            let start = ax.set;
+            ax.active = Active::idle(start);
+            if let Ok(p) = Profile::velocity(start, 0.0, &lim) {
+                ax.active.prof = p;
+                ax.active.kind = Kind::Brake;
+                ax.active.released = false;
+            }
+        }
+        Ok(())
+    }
+
+    /// Aborts the active and every queued command of the axis with `status`.
+    fn abort_all(&mut self, axis: usize, status: CmdStatus) {
+        let ax = &mut self.axes[axis];
+        if let Some(id) = ax.active.id.take() {
+            self.cmds.set(id, status);
+            self.cmds.set_in_target(id, false);
+        }
+        let cmds = &mut self.cmds;
+        self.queues[axis].drain_with(|p| cmds.set(p.id, status));
+    }
+
+    /// MC_SetPosition: shifts the axis coordinate so that the set position becomes
+    /// `position` (or moves by `position` when `relative`). Motion continues unchanged.
+    pub fn set_position(
+        &mut self,
+        axis: usize,
+        position: f64,
+        relative: bool,
+    ) -> Result<(), ErrorId> {
+        self.axis(axis)?;
+        if !finite(position) {
+            return Err(ErrorId::InvalidPosition);
+        }
+        let ax = &mut self.axes[axis];
+        if matches!(ax.state, AxisState::Homing | AxisState::ErrorStop) {
+            return Err(check_state_err(ax.state));
+        }
+        if relative {
+            ax.origin += position;
+        } else {
+            ax.origin = position - ax.set.p;
+        }
+        Ok(())
+    }
+
+    /// MC_SetOverride: velocity factor (time scaling), ramped at 10 per second.
+    pub fn set_override(&mut self, axis: usize, factor: f64) -> Result<(), ErrorId> {
+        self.axis(axis)?;
+        if !(finite(factor) && factor >= 0.0) {
+            return Err(ErrorId::InvalidOverride);
+        }
+        self.axes[axis].override_target = factor;
+        Ok(())
+    }
+
+    /// Registers a cam table; returns its CamTableID.
+    pub fn add_cam_table(&mut self, table: CamTable) -> usize {
+        self.cams.push(table);
+        self.cams.len() - 1
+    }
+
+    /// Checks a CamTableID.
+    pub fn cam_table(&self, id: usize) -> Result<&CamTable, ErrorId> {
+        self.cams.get(id).ok_or(ErrorId::InvalidCamTable)
+    }
+
+    /// Effective limits of a move on `axis` from the block's dynamics inputs.
+    fn move_limits(cfg: &AxisConfig, d: &Dynamics, need_velocity: bool) -> Result<Limits, ErrorId> {
+        let al = cfg.limits;
+        if need_velocity && !(finite(d.velocity) && d.velocity != 0.0) {
+            return Err(ErrorId::InvalidVelocity);
+        }
+        if !(finite(d.acceleration) && d.acceleration > 0.0) {
+            return Err(ErrorId::InvalidAcceleration);
+        }
+        if !(finite(d.deceleration) && d.deceleration > 0.0) {
+            return Err(ErrorId::InvalidDeceleration);
+        }
+        if !(finite(d.jerk) && d.jerk >= 0.0) {
+            return Err(ErrorId::InvalidJerk);
+        }
+        let jerk = if d.jerk == 0.0 {
+            al.jmax
+        } else if al.jmax == 0.0 || al.jmax.is_infinite() {
+            d.jerk
+        } else {
+            d.jerk.min(al.jmax)
+        };
+        let vmax = if need_velocity {
+            d.velocity.abs().min(al.vmax)
+        } else {
+            al.vmax
+        };
+        Ok(Limits {
+            vmax,
+            amax: d.acceleration.min(al.amax),
+            dmax: d.deceleration.min(al.dmax),
+            jmax: jerk,
+        })
+    }
+
+    /// Raw position the next command in the buffer starts from, and its direction.
+    fn last_commanded(&self, axis: usize) -> (f64, f64) {
+        let ax = &self.axes[axis];
+        if let Some(p) = self.queues[axis].back() {
+            match p.kind {
+                Kind::Position => return (p.target, 0.0),
+                Kind::Velocity => return (ax.set.p, p.target.signum()),
+                _ => {}
+            }
+        }
+        match ax.active.kind {
+            Kind::Position => (ax.active.target, 0.0),
+            _ => (ax.set.p, ax.set.v.signum()),
+        }
+    }
+
+    fn check_target(ax: &AxisRt, raw: f64) -> Result<(), ErrorId> {
+        if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
+            let u = raw + ax.origin;
+            if u > ax.cfg.sw_limit_pos || u < ax.cfg.sw_limit_neg {
+                return Err(ErrorId::TargetBeyondSoftwareLimit);
+            }
+        }
+        Ok(())
+    }
+
+    /// Resolves a command into a [`Pending`] (targets in raw units).
+    fn resolve(
+        &self,
+        axis: usize,
+        cmd: &AxisCommand,
+        d: &Dynamics,
+        buffer: BufferMode,
+        id: CmdId,
+        additive_base: Option<f64>,
+    ) -> Result<Pending, ErrorId> {
+        let ax = &self.axes[axis];
+        let aborting = buffer == BufferMode::Aborting;
+        let (from, dir_hint) = if aborting {
+            (ax.set.p, ax.set.v.signum())
+        } else {
+            self.last_commanded(axis)
+        };
+        let mut p = Pending {
+            id,
+            kind: Kind::Position,
+            target: 0.0,
+            speed: d.velocity.abs(),
+            lim: Limits::default(),
+            buffer,
+            end_v: 0.0,
+            sync: SyncParams::default(),
+        };
+        match *cmd {
+            AxisCommand::MoveAbsolute {
+                position,
+                direction,
+            } => {
+                if !finite(position) {
+                    return Err(ErrorId::InvalidPosition);
+                }
+                p.lim = Self::move_limits(&ax.cfg, d, true)?;
+                p.target = match ax.cfg.period() {
+                    None => position - ax.origin,
+                    Some(period) => {
+                        let cur = (from + ax.origin).rem_euclid(period);
+                        let goal = position.rem_euclid(period);
+                        let fwd = (goal - cur).rem_euclid(period);
+                        let back = if fwd == 0.0 { 0.0 } else { fwd - period };
+                        let delta = match direction {
+                            Direction::Positive => fwd,
+                            Direction::Negative => back,
+                            Direction::Shortest => {
+                                if fwd <= -back {
+                                    fwd
+                                } else {
+                                    back
+                                }
+                            }
+                            Direction::Current => {
+                                let s = if aborting {
+                                    ax.set.v.signum()
+                                } else {
+                                    dir_hint
+                                };
+                                if s < 0.0 {
+                                    back
+                                } else {
+                                    fwd
+                                }
+                            }
+                        };
+                        from + delta
+                    }
+                };
+            }
+            AxisCommand::MoveRelative { distance } => {
+                if !finite(distance) {
+                    return Err(ErrorId::InvalidPosition);
+                }
+                p.lim = Self::move_limits(&ax.cfg, d, true)?;
+                p.target = ax.set.p + distance;
+            }
+            AxisCommand::MoveAdditive { distance } => {
+                if !finite(distance) {
+                    return Err(ErrorId::InvalidPosition);
+                }
+                p.lim = Self::move_limits(&ax.cfg, d, true)?;
+                let base = additive_base.unwrap_or_else(|| self.last_commanded(axis).0);
+                p.target = base + distance;
+            }
+            AxisCommand::MoveVelocity { direction } => {
+                p.lim = Self::move_limits(&ax.cfg, d, true)?;
+                let sign = match direction {
+                    Direction::Positive => 1.0,
+                    Direction::Negative => -1.0,
+                    Direction::Current => {
+                        if ax.set.v < 0.0 {
+                            -1.0
+                        } else {
+                            1.0
+                        }
+                    }
+                    Direction::Shortest => return Err(ErrorId::InvalidDirection),
+                };
+                p.kind = Kind::Velocity;
+                p.target = sign * d.velocity.signum() * p.lim.vmax;
+            }
+            AxisCommand::Halt | AxisCommand::Stop => {
+                if !(finite(d.deceleration) && d.deceleration > 0.0) {
+                    return Err(ErrorId::InvalidDeceleration);
+                }
+                if !(finite(d.jerk) && d.jerk >= 0.0) {
+                    return Err(ErrorId::InvalidJerk);
+                }
+                let dd = Dynamics {
+                    velocity: ax.cfg.limits.vmax,
+                    acceleration: d.deceleration,
+                    deceleration: d.deceleration,
+                    jerk: d.jerk,
+                };
+                p.lim = Self::move_limits(&ax.cfg, &dd, false)?;
+                p.lim.amax = p.lim.amax.max(p.lim.dmax);
+                p.kind = if matches!(cmd, AxisCommand::Halt) {
+                    Kind::Halt
+                } else {
+                    Kind::Stop
+                };
+                p.speed = 0.0;
+            }
+            AxisCommand::Home { position } => {
+                if !finite(position) {
+                    return Err(ErrorId::InvalidPosition);
+                }
+                p.kind = Kind::Home;
+                p.target = position;
+                p.speed = 0.0;
+            }
+            AxisCommand::GearIn {
+                master,
+                numerator,
+                denominator,
+                source,
+            } => {
+                self.axis(master)?;
+                if master == axis {
+                    return Err(ErrorId::InvalidAxis);
+                }
+                if !(finite(numerator) && finite(denominator) && denominator != 0.0) {
+                    return Err(ErrorId::InvalidRatio);
+                }
+                let dd = Dynamics {
+                    velocity: ax.cfg.limits.vmax,
+                    ..*d
+                };
+                p.lim = Self::move_limits(&ax.cfg, &dd, false)?;
+                p.kind = Kind::Gear;
+                p.sync = SyncParams::gear(master, numerator / denominator, source);
+                p.speed = 0.0;
+            }
+            AxisCommand::CamIn { master, params } => {
+                self.axis(master)?;
+                if master == axis {
+                    return Err(ErrorId::InvalidAxis);
+                }
+                self.cam_table(params.table)?;
+                params.validate()?;
+                let dd = Dynamics {
+                    velocity: ax.cfg.limits.vmax,
+                    acceleration: ax.cfg.limits.amax,
+                    deceleration: ax.cfg.limits.dmax,
+                    jerk: 0.0,
+                };
+                p.lim = Self::move_limits(&ax.cfg, &dd, false)?;
+                p.kind = Kind::Cam;
+                p.sync = SyncParams { master, ..params };
+                p.speed = 0.0;
+            }
+            AxisCommand::GearOut | AxisCommand::CamOut => {}
+        }
+        if p.kind == Kind::Position {
+            Self::check_target(ax, p.target)?;
+        }
+        Ok(p)
+    }
+
+    /// Gives a command to an axis (a block's rising Execute). Returns its handle, or the
+    /// ErrorID when the command is illegal in the axis state, its inputs are invalid or
+    /// the buffer is full.
+    pub fn submit(
+        &mut self,
+        axis: usize,
+        cmd: AxisCommand,
+        dynamics: Dynamics,
+        buffer: BufferMode,
+    ) -> Result<CmdId, ErrorId> {
+        let ax = self.axis(axis)?;
+        if let Some(g) = ax.group {
+            if self.groups[g as usize].state != GroupState::GroupDisabled {
+                return Err(ErrorId::AxisInGroup);
+            }
+        }
+        check_axis(ax.state, cmd.class())?;
+        match cmd {
+            AxisCommand::GearOut => return self.sync_out(axis, Kind::Gear),
+            AxisCommand::CamOut => return self.sync_out(axis, Kind::Cam),
+            _ => {}
+        }
+        let buffer = match cmd {
+            AxisCommand::Stop | AxisCommand::Home { .. } => BufferMode::Aborting,
+            _ => buffer,
+        };
+        // Check the inputs before allocating a handle.
+        let probe = CmdId { index: 0, gen: 0 };
+        let pending = self.resolve(axis, &cmd, &dynamics, buffer, probe, None)?;
+        let idle = self.axes[axis].active.kind == Kind::Idle;
+        if buffer != BufferMode::Aborting
+            && !idle
+            && self.queues[axis].len() >= self.queues[axis].depth()
+        {
+            return Err(ErrorId::QueueFull);
+        }
+        let id = self.cmds.alloc(CmdStatus::Queued);
+        let pending = Pending { id, ..pending };
+        if buffer == BufferMode::Aborting || idle {
+            self.abort_all(axis, CmdStatus::Aborted);
+            if let Err(e) = self.activate(axis, pending, 0.0) {
+                self.cmds.set(id, CmdStatus::Error(e));
+            }
+        } else {
+            self.link_successor(axis, &pending);
+            if let Err((e, p)) = self.queues[axis].push(pending) {
+                self.cmds.set(p.id, CmdStatus::Error(e));
+            }
+        }
+        Ok(id)
+    }
+
+    /// ContinuousUpdate: new inputs for a command that is still Busy.
+    pub fn update(
+        &mut self,
+        axis: usize,
+        id: CmdId,
+        cmd: AxisCommand,
+        dynamics: Dynamics,
+    ) -> Result<(), ErrorId> {
+        self.axis(axis)?;
+        let st = self.cmds.status(id);
+        if self.axes[axis].active.id == Some(id) && st == CmdStatus::Active {
+            let buffer = BufferMode::Aborting;
+            let mut p = self.resolve(axis, &cmd, &dynamics, buffer, id, None)?;
+            if matches!(
+                cmd,
+                AxisCommand::MoveAdditive { .. } | AxisCommand::MoveRelative { .. }
+            ) {
+                // The target of a relative move does not move with the axis.
+                return Ok(());
+            }
+            let cur = &self.axes[axis].active;
+            if cur.kind == p.kind && cur.target == p.target && cur.lim == p.lim {
+                // Inputs unchanged: keep the running profile.
+                return Ok(());
+            }
+            p.end_v = cur.end_v;
+            let released = cur.released;
+            self.activate(axis, p, 0.0)?;
+            if p.kind == Kind::Velocity && released {
+                self.cmds.set_in_target(id, false);
+            }
+        } else if st == CmdStatus::Queued {
+            let p = {
+                let q = self.queues[axis].iter().find(|p| p.id == id).copied();
+                match q {
+                    Some(q) => {
+                        let mut n = self.resolve(axis, &cmd, &dynamics, q.buffer, id, None)?;
+                        n.end_v = q.end_v;
+                        n
+                    }
+                    None => return Ok(()),
+                }
+            };
+            for q in self.queues[axis].iter_mut() {
+                if q.id == id {
+                    *q = p;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// A blending successor joins the last command: set its end velocity.
+    fn link_successor(&mut self, axis: usize, next: &Pending) {
+        if !next.buffer.is_blending() {
+            return;
+        }
+        let (pred_kind, pred_target, pred_speed, pred_from) = match self.queues[axis].back() {
+            Some(b) => (b.kind, b.target, b.speed, None),
+            None => {
+                let a = &self.axes[axis].active;
+                (a.kind, a.target, a.speed, Some(self.axes[axis].set))
+            }
+        };
+        if pred_kind != Kind::Position {
+            return;
+        }
+        // Direction of the predecessor at its end and of the successor at its start.
+        let start_p = match pred_from {
+            Some(_) => self.axes[axis].active.prof.start().p,
+            None => {
+                let q = &self.queues[axis];
+                if q.len() >= 2 {
+                    q.iter()
+                        .nth(q.len() - 2)
+                        .map(|p| p.target)
+                        .unwrap_or(pred_target)
+                } else {
+                    self.axes[axis].active.target
+                }
+            }
+        };
+        let d1 = (pred_target - start_p).signum();
+        let d2 = match next.kind {
+            Kind::Position => (next.target - pred_target).signum(),
+            Kind::Velocity => next.target.signum(),
+            _ => 0.0,
+        };
+        let vj = if d1 != 0.0 && d1 == d2 {
+            d1 * next.buffer.junction_speed(pred_speed, next.speed)
+        } else {
+            0.0
+        };
+        match pred_from {
+            None => {
+                if let Some(b) = self.queues[axis].back_mut() {
+                    b.end_v = vj;
+                }
+            }
+            Some(now) => {
+                let a = &mut self.axes[axis].active;
+                let mut lim = a.lim;
+                lim.vmax = lim.vmax.max(vj.abs());
+                if let Ok(p) = Profile::position(now, a.target, vj, &lim) {
+                    a.prof = p;
+                    a.t = 0.0;
+                    a.end_v = vj;
+                }
+            }
+        }
+    }
+
+    /// Makes `p` the active command of the axis, starting from the current set point
+    /// advanced by `t0` seconds into its profile.
+    fn activate(&mut self, axis: usize, p: Pending, t0: f64) -> Result<(), ErrorId> {
+        let start = self.axes[axis].set;
+        let mut lim = p.lim;
+        lim.vmax = lim.vmax.max(p.end_v.abs());
+        let prof = match p.kind {
+            Kind::Position => plan_position(start, p.target, p.end_v, &lim),
+            Kind::Velocity => Profile::velocity(start, p.target, &lim),
+            Kind::Halt | Kind::Stop => Profile::velocity(start, 0.0, &lim),
+            Kind::Gear | Kind::Cam => Ok(self.axes[axis].active.prof),
+            _ => Ok(Active::idle(start).prof),
+        }
+        .map_err(|_| ErrorId::PlanningFailed)?;
+        let ax = &mut self.axes[axis];
+        let class = match p.kind {
+            Kind::Position | Kind::Halt => AxisState::DiscreteMotion,
+            Kind::Velocity => AxisState::ContinuousMotion,
+            Kind::Stop => AxisState::Stopping,
+            Kind::Home => AxisState::Homing,
+            Kind::Gear | Kind::Cam => AxisState::SynchronizedMotion,
+            _ => ax.state,
+        };
+        ax.state = class;
+        ax.active = Active {
+            kind: p.kind,
+            id: Some(p.id),
+            prof,
+            t: t0,
+            target: p.target,
+            speed: p.speed,
+            lim,
+            released: false,
+            end_v: p.end_v,
+            sync: p.sync,
+        };
+        if p.kind == Kind::Stop {
+            ax.stop_owner = Some(p.id);
+        }
+        self.cmds.set(p.id, CmdStatus::Active);
+        match p.kind {
+            Kind::Home => {
+                if let Some(d) = self.drives[axis].as_mut() {
+                    d.start_homing();
+                }
+            }
+            Kind::Gear | Kind::Cam => {
+                self.start_sync(axis);
+            }
+            _ => {
+                let a = &self.axes[axis].active;
+                if t0 > 0.0 {
+                    let s = a.prof.at(t0);
+                    self.axes[axis].set = s;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// GearOut / CamOut: the slave keeps its current velocity (ContinuousMotion).
+    fn sync_out(&mut self, axis: usize, kind: Kind) -> Result<CmdId, ErrorId> {
+        if self.axes[axis].active.kind != kind {
+            return Err(ErrorId::NotSynchronized);
+        }
+        self.abort_all(axis, CmdStatus::Aborted);
+        let ax = &mut self.axes[axis];
+        let start = ax.set;
+        let mut lim = ax.cfg.limits;
+        lim.vmax = lim.vmax.max(start.v.abs());
+        let prof = Profile::velocity(start, start.v, &lim).map_err(|_| ErrorId::PlanningFailed)?;
+        ax.active = Active {
+            kind: Kind::Velocity,
+            id: None,
+            prof,
+            t: 0.0,
+            target: start.v,
+            speed: start.v.abs(),
+            lim,
+            released: true,
+            end_v: 0.0,
+            sync: SyncParams::default(),
+        };
+        ax.state = AxisState::ContinuousMotion;
+        let id = self.cmds.alloc(CmdStatus::Done);
+        Ok(id)
+    }
+
+    // ------------------------------------------------------------------- step
+
+    /// Advances every axis and group by one cycle.
+    pub fn step(&mut self) {
+        let dt = self.cfg.cycle;
+        self.cycles += 1;
+        self.step_groups(dt);
+        self.events.clear();
+        self.synced.clear();
+        for (i, ax) in self.axes.iter_mut().enumerate() {
+            if ax.override_now != ax.override_target {
+                let r = 10.0 * dt;
+                let d = (ax.override_target - ax.override_now).clamp(-r, r);
+                ax.override_now += d;
+            }
+            let a = &mut ax.active;
+            match a.kind {
+                Kind::Idle => {
+                    ax.set.v = 0.0;
+                    ax.set.a = 0.0;
+                }
+                Kind::Group => {}
+                Kind::Gear | Kind::Cam => {
+                    self.synced.push(i as u32);
+                    continue;
+                }
+                Kind::Home => {
+                    self.events.push(i as u32);
+                }
+                _ => {
+                    let k = ax.override_now;
+                    a.t += dt * k;
+                    let s = a.prof.at(a.t);
+                    ax.set = State {
+                        p: s.p,
+                        v: s.v * k,
+                        a: s.a * k * k,
+                    };
+                    if a.t >= a.prof.duration() && !a.released {
+                        self.events.push(i as u32);
+                    }
+                }
+            }
+            if !ax.has_drive {
+                ax.act_p = ax.set.p;
+                ax.act_v = ax.set.v;
+                if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop {
+                    let u = ax.set.p + ax.origin;
+                    if ax.cfg.period().is_none()
+                        && (u > ax.cfg.sw_limit_pos || u < ax.cfg.sw_limit_neg)
+                    {
+                        self.events.push(i as u32);
+                    }
+                }
+            }
+        }
+        for k in 0..self.synced.len() {
+            let i = self.synced[k] as usize;
+            self.step_sync(i, dt);
+        }
+        for i in 0..self.axes.len() {
+            if self.axes[i].has_drive {
+                self.exchange_drive(i);
+            }
+        }
+        for k in 0..self.events.len() {
+            let i = self.events[k] as usize;
+            self.axis_event(i);
+        }
+    }
+
+    /// Checks after the sync pass (software limits of slaves).
+    pub(crate) fn check_limits(&mut self, i: usize) {
+        let ax = &self.axes[i];
+        if !ax.has_drive {
+            let s = ax.set;
+            let ax = &mut self.axes[i];
+            ax.act_p = s.p;
+            ax.act_v = s.v;
+        }
+        let ax = &self.axes[i];
+        if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop && ax.cfg.period().is_none()
+        {
+            let u = ax.set.p + ax.origin;
+            if u > ax.cfg.sw_limit_pos {
+                let _ = self.raise_axis_error(i, ErrorId::SoftwareLimitPositive);
+            } else if u < ax.cfg.sw_limit_neg {
+                let _ = self.raise_axis_error(i, ErrorId::SoftwareLimitNegative);
+            }
+        }
+    }
+
+    fn exchange_drive(&mut self, i: usize) {
+        let s = self.axes[i].set;
+        let powered = self.axes[i].powered;
+        let Some(d) = self.drives[i].as_mut() else {
+            return;
+        };
+        if powered {
+            d.write(s.p, s.v, s.a);
+        }
+        let (p, v, en, fault) = (
+            d.actual_position(),
+            d.actual_velocity(),
+            d.enabled(),
+            d.fault(),
+        );
+        let ax = &mut self.axes[i];
+        ax.act_p = p;
+        ax.act_v = v;
+        if !powered {
+            ax.set.p = p;
+        }
+        if let Some(code) = fault {
+            if ax.state != AxisState::ErrorStop {
+                ax.drive_code = code;
+                let _ = self.raise_axis_error(i, ErrorId::DriveFault);
+            }
+            return;
+        }
+        if ax.power_req && ax.powered && !en {
+            let _ = self.raise_axis_error(i, ErrorId::DriveDisabled);
+            return;
+        }
+        if ax.power_req && !ax.powered {
+            self.poll_power(i);
+        }
+        let ax = &self.axes[i];
+        if ax.cfg.following_error_limit > 0.0
+            && ax.powered
+            && (s.p - p).abs() > ax.cfg.following_error_limit
+        {
+            let _ = self.raise_axis_error(i, ErrorId::FollowingError);
+            return;
+        }
+        self.check_limits(i);
+    }
+
+    /// Rare per-axis work: a profile ended, homing progressed, a limit was hit.
+    fn axis_event(&mut self, i: usize) {
+        {
+            let ax = &self.axes[i];
+            if ax.cfg.sw_limits_enabled && !ax.has_drive {
+                self.check_limits(i);
+            }
+        }
+        let a = self.axes[i].active;
+        match a.kind {
+            Kind::Home => {
+                let st = match self.drives[i].as_mut() {
+                    Some(d) => d.homing_status(),
+                    None => HomingStatus::Done,
+                };
+                match st {
+                    HomingStatus::Busy => {}
+                    HomingStatus::Done => {
+                        let ax = &mut self.axes[i];
+                        ax.origin = a.target - ax.set.p;
+                        ax.active = Active::idle(ax.set);
+                        ax.state = AxisState::Standstill;
+                        if let Some(id) = a.id {
+                            self.cmds.set(id, CmdStatus::Done);
+                        }
+                        self.start_next(i, 0.0);
+                    }
+                    HomingStatus::Failed => {
+                        let _ = self.raise_axis_error(i, ErrorId::HomingFailed);
+                    }
+                }
+            }
+            Kind::Position | Kind::Halt | Kind::Velocity | Kind::Stop | Kind::Brake => {
+                if a.released || a.t < a.prof.duration() {
+                    return;
+                }
+                let leftover = (a.t - a.prof.duration()) / self.axes[i].override_now.max(1e-12);
+                match a.kind {
+                    Kind::Velocity => {
+                        self.axes[i].active.released = true;
+                        if let Some(id) = a.id {
+                            self.cmds.set_in_target(id, true);
+                        }
+                        if !self.queues[i].is_empty() {
+                            if let Some(id) = a.id {
+                                self.cmds.set(id, CmdStatus::Aborted);
+                                self.cmds.set_in_target(id, false);
+                            }
+                            self.start_next(i, 0.0);
+                        }
+                    }
+                    Kind::Stop => {
+                        let ax = &mut self.axes[i];
+                        let end = a.prof.end();
+                        ax.set = State {
+                            p: end.p,
+                            v: 0.0,
+                            a: 0.0,
+                        };
+                        ax.active = Active::idle(ax.set);
+                        if let Some(id) = a.id {
+                            self.cmds.set(id, CmdStatus::Done);
+                        }
+                    }
+                    Kind::Brake => {
+                        let ax = &mut self.axes[i];
+                        let end = a.prof.end();
+                        ax.set = State {
+                            p: end.p,
+                            v: 0.0,
+                            a: 0.0,
+                        };
+                        ax.active = Active::idle(ax.set);
+                    }
+                    _ => {
+                        let end = a.prof.end();
+                        let ax = &mut self.axes[i];
+                        ax.set = end;
+                        if let Some(id) = a.id {
+                            self.cmds.set(id, CmdStatus::Done);
+                        }
+                        ax.active = Active::idle(ax.set);
+                        ax.active.released = true;
+                        if self.queues[i].is_empty() {
+                            ax.state = AxisState::Standstill;
+                            ax.set.v = 0.0;
+                        } else {
+                            // The successor starts from the junction state.
+                            ax.set = State {
+                                p: end.p,
+                                v: a.end_v,
+                                a: 0.0,
+                            };
+                            self.start_next(i, leftover);
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// Starts the next buffered command, if any.
+    pub(crate) fn start_next(&mut self, axis: usize, t0: f64) {
+        while let Some(p) = self.queues[axis].pop() {
+            // Its own successor may blend with it: compute its end velocity.
+            let mut p = p;
+            if let Some(n) = self.queues[axis].front().copied() {
+                p.end_v = self.junction_after(axis, &p, &n);
+            }
+            match self.activate(axis, p, t0) {
+                Ok(()) => return,
+                Err(e) => {
+                    // Only the active block failed: the next buffered block starts.
+                    self.cmds.set(p.id, CmdStatus::Error(e));
+                }
+            }
+        }
+        let ax = &mut self.axes[axis];
+        if ax.active.kind == Kind::Idle && ax.state != AxisState::ErrorStop {
+            ax.state = AxisState::Standstill;
+            ax.set.v = 0.0;
+            ax.set.a = 0.0;
+        }
+    }
+
+    fn junction_after(&self, axis: usize, p: &Pending, n: &Pending) -> f64 {
+        if p.kind != Kind::Position || !n.buffer.is_blending() {
+            return 0.0;
+        }
+        let from = self.axes[axis].set.p;
+        let d1 = (p.target - from).signum();
+        let d2 = match n.kind {
+            Kind::Position => (n.target - p.target).signum(),
+            Kind::Velocity => n.target.signum(),
+            _ => 0.0,
+        };
+        if d1 != 0.0 && d1 == d2 {
+            d1 * n.buffer.junction_speed(p.speed, n.speed)
+        } else {
+            0.0
+        }
+    }
+}
+
+fn check_state_err(s: AxisState) -> ErrorId {
+    match s {
+        AxisState::Homing => ErrorId::AxisHoming,
+        AxisState::ErrorStop => ErrorId::AxisErrorStop,
+        AxisState::Disabled => ErrorId::AxisDisabled,
+        AxisState::Stopping => ErrorId::AxisStopping,
+        _ => ErrorId::None,
+    }
+}

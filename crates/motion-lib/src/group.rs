@@ -1,0 +1,974 @@
+//! Axes groups (PLCopen Part 4): membership, the group state machine, the group command
+//! buffer and path interpolation.
+//!
+//! Input: group commands (enable, motion, stop, ...) and [`Engine::step`]. Output: each
+//! cycle the set points of the group's axes along the path. Invariants: a group has at
+//! most [`MAX_AXES`] axes, one per identity; while the group moves its axes are in
+//! SynchronizedMotion and only the group writes their set points; an axis error puts
+//! the group into GroupErrorStop, fails every buffered group command and clears the queue.
+
+use crate::buffer::{BufferMode, Queue, TransitionMode};
+use crate::cmd::{CmdId, CmdStatus};
+use crate::engine::{standing, Active, Engine, Kind};
+use crate::error::ErrorId;
+use crate::fsm::{check_group, AxisState, GroupCmd, GroupState};
+use crate::path::{CircMode, Geometry, Vecn, MAX_AXES};
+use crate::profile::line::path_limits;
+use crate::profile::{Limits, Profile, State};
+
+/// A group motion command.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum GroupMotion {
+    /// MC_MoveLinearAbsolute (positions per identity; entries of absent identities ignored).
+    LinearAbsolute { position: Vecn },
+    /// MC_MoveLinearRelative.
+    LinearRelative { distance: Vecn },
+    /// MC_MoveCircularAbsolute / Relative (relative: aux and end relative to the start).
+    Circular {
+        mode: CircMode,
+        aux: Vecn,
+        end: Vecn,
+        ccw: bool,
+        relative: bool,
+    },
+    /// MC_MoveDirectAbsolute: each axis to its target on its own profile.
+    DirectAbsolute { position: Vecn },
+    /// MC_GroupHalt.
+    Halt,
+    /// MC_GroupStop.
+    Stop,
+}
+
+/// Path dynamics and blending inputs of a group move.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct PathInputs {
+    pub velocity: f64,
+    pub acceleration: f64,
+    pub deceleration: f64,
+    /// 0 = the axes' jerk limits.
+    pub jerk: f64,
+    pub buffer: BufferMode,
+    pub transition: TransitionMode,
+    /// Corner distance for TMCornerDistance.
+    pub transition_parameter: f64,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum GKind {
+    Path,
+    Direct,
+    Halt,
+    Stop,
+    Brake,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct GPending {
+    id: CmdId,
+    kind: GKind,
+    motion: GroupMotion,
+    /// Absolute raw end point.
+    target: Vecn,
+    inputs: PathInputs,
+    speed: f64,
+    end_v: f64,
+    /// Corner blend run before this move (geometry, constant path speed).
+    prefix: Option<(Geometry, f64)>,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct GActive {
+    kind: GKind,
+    id: Option<CmdId>,
+    geom: Geometry,
+    prof: Profile,
+    t: f64,
+    prefix: Option<(Geometry, f64)>,
+    prefix_end: f64,
+    target: Vecn,
+    speed: f64,
+    lim: Limits,
+    end_v: f64,
+    direct: Option<Box<[Profile; MAX_AXES]>>,
+}
+
+/// Runtime of one group.
+#[derive(Clone, Debug)]
+pub(crate) struct GroupRt {
+    pub state: GroupState,
+    pub axes: [Option<u32>; MAX_AXES],
+    queue: Queue<GPending>,
+    active: Option<GActive>,
+    stop_owner: Option<CmdId>,
+    pub error: ErrorId,
+    scratch: (Vecn, Vecn, Vecn),
+}
+
+impl GroupRt {
+    fn n(&self) -> usize {
+        self.axes
+            .iter()
+            .rposition(|a| a.is_some())
+            .map_or(0, |i| i + 1)
+    }
+}
+
+const ZERO: Vecn = [0.0; MAX_AXES];
+
+impl Engine {
+    /// Adds an empty group; returns its index.
+    pub fn add_group(&mut self) -> usize {
+        self.groups.push(GroupRt {
+            state: GroupState::GroupDisabled,
+            axes: [None; MAX_AXES],
+            queue: Queue::new(self.cfg.queue_depth),
+            active: None,
+            stop_owner: None,
+            error: ErrorId::None,
+            scratch: (ZERO, ZERO, ZERO),
+        });
+        self.groups.len() - 1
+    }
+
+    fn grp(&self, g: usize) -> Result<&GroupRt, ErrorId> {
+        self.groups.get(g).ok_or(ErrorId::InvalidGroup)
+    }
+
+    /// Group state.
+    pub fn group_state(&self, g: usize) -> Result<GroupState, ErrorId> {
+        Ok(self.grp(g)?.state)
+    }
+
+    /// The axis with identity `ident` in the group.
+    pub fn group_axis(&self, g: usize, ident: usize) -> Result<Option<usize>, ErrorId> {
+        Ok(self
+            .grp(g)?
+            .axes
+            .get(ident)
+            .copied()
+            .flatten()
+            .map(|a| a as usize))
+    }
+
+    /// Commands waiting in the group's buffer.
+    pub fn group_queued(&self, g: usize) -> Result<usize, ErrorId> {
+        Ok(self.grp(g)?.queue.len())
+    }
+
+    /// MC_AddAxisToGroup.
+    pub fn add_axis_to_group(
+        &mut self,
+        g: usize,
+        axis: usize,
+        ident: usize,
+    ) -> Result<(), ErrorId> {
+        let gr = self.grp(g)?;
+        check_group(gr.state, GroupCmd::Configure)?;
+        let ax = self.axis(axis)?;
+        if ident >= MAX_AXES || gr.axes[ident].is_some() {
+            return Err(ErrorId::InvalidIdentInGroup);
+        }
+        if ax.group.is_some() {
+            return Err(ErrorId::AxisAlreadyInGroup);
+        }
+        self.groups[g].axes[ident] = Some(axis as u32);
+        self.axes[axis].group = Some(g as u16);
+        Ok(())
+    }
+
+    /// MC_RemoveAxisFromGroup (by identity).
+    pub fn remove_axis_from_group(&mut self, g: usize, ident: usize) -> Result<(), ErrorId> {
+        let gr = self.grp(g)?;
+        check_group(gr.state, GroupCmd::Configure)?;
+        let a = gr
+            .axes
+            .get(ident)
+            .copied()
+            .flatten()
+            .ok_or(ErrorId::AxisNotInGroup)?;
+        self.groups[g].axes[ident] = None;
+        self.axes[a as usize].group = None;
+        Ok(())
+    }
+
+    /// MC_UngroupAllAxes: removes every axis; the group is GroupDisabled.
+    pub fn ungroup_all(&mut self, g: usize) -> Result<(), ErrorId> {
+        let gr = self.grp(g)?;
+        let st = check_group(gr.state, GroupCmd::Ungroup)?;
+        for i in 0..MAX_AXES {
+            if let Some(a) = self.groups[g].axes[i].take() {
+                self.axes[a as usize].group = None;
+            }
+        }
+        self.groups[g].state = st;
+        Ok(())
+    }
+
+    /// MC_GroupEnable: every axis powered and in Standstill.
+    pub fn group_enable(&mut self, g: usize) -> Result<(), ErrorId> {
+        let gr = self.grp(g)?;
+        let st = check_group(gr.state, GroupCmd::Enable)?;
+        let members: Vec<u32> = gr.axes.iter().flatten().copied().collect();
+        if members.is_empty()
+            || members.iter().any(|&a| {
+                !self.axes[a as usize].powered
+                    || self.axes[a as usize].state != AxisState::Standstill
+            })
+        {
+            return Err(ErrorId::GroupAxesNotReady);
+        }
+        self.groups[g].state = st;
+        Ok(())
+    }
+
+    /// MC_GroupDisable.
+    pub fn group_disable(&mut self, g: usize) -> Result<(), ErrorId> {
+        let gr = self.grp(g)?;
+        let st = check_group(gr.state, GroupCmd::Disable)?;
+        self.groups[g].state = st;
+        Ok(())
+    }
+
+    /// MC_GroupReset: GroupErrorStop -> GroupStandby, resetting the axes' errors.
+    pub fn group_reset(&mut self, g: usize) -> Result<(), ErrorId> {
+        let gr = self.grp(g)?;
+        if gr.state != GroupState::GroupErrorStop {
+            return Ok(());
+        }
+        if gr.active.is_some() {
+            return Err(ErrorId::AxisStillMoving);
+        }
+        let members: Vec<u32> = gr.axes.iter().flatten().copied().collect();
+        for a in members {
+            self.reset(a as usize)?;
+        }
+        let st = check_group(GroupState::GroupErrorStop, GroupCmd::Reset)?;
+        self.groups[g].state = st;
+        self.groups[g].error = ErrorId::None;
+        Ok(())
+    }
+
+    /// The group's error (GroupErrorStop reason).
+    pub fn group_error(&self, g: usize) -> Result<ErrorId, ErrorId> {
+        Ok(self.grp(g)?.error)
+    }
+
+    /// Set positions of the group's axes (user units) by identity; absent identities 0.
+    pub fn group_position(&self, g: usize) -> Result<Vecn, ErrorId> {
+        let gr = self.grp(g)?;
+        let mut r = ZERO;
+        for (i, a) in gr.axes.iter().enumerate() {
+            if let Some(a) = a {
+                r[i] = self.set_position_of(*a as usize)?;
+            }
+        }
+        Ok(r)
+    }
+
+    /// Set velocities of the group's axes by identity, and the path velocity (norm).
+    pub fn group_velocity(&self, g: usize) -> Result<(Vecn, f64), ErrorId> {
+        let gr = self.grp(g)?;
+        let mut r = ZERO;
+        for (i, a) in gr.axes.iter().enumerate() {
+            if let Some(a) = a {
+                r[i] = self.axes[*a as usize].set.v;
+            }
+        }
+        let n = r.iter().map(|x| x * x).sum::<f64>().sqrt();
+        Ok((r, n))
+    }
+
+    fn raw_now(&self, g: usize) -> Vecn {
+        let mut r = ZERO;
+        for (i, a) in self.groups[g].axes.iter().enumerate() {
+            if let Some(a) = a {
+                r[i] = self.axes[*a as usize].set.p;
+            }
+        }
+        r
+    }
+
+    /// End point (raw) the next buffered group move starts from.
+    fn group_last_target(&self, g: usize) -> Vecn {
+        let gr = &self.groups[g];
+        if let Some(b) = gr.queue.back() {
+            if matches!(b.kind, GKind::Path | GKind::Direct) {
+                return b.target;
+            }
+        }
+        match &gr.active {
+            Some(a) if matches!(a.kind, GKind::Path | GKind::Direct) => a.target,
+            _ => self.raw_now(g),
+        }
+    }
+
+    fn path_lims(&self, g: usize, unit: &Vecn, inp: &PathInputs) -> Result<Limits, ErrorId> {
+        let gr = &self.groups[g];
+        let mut us = Vec::with_capacity(MAX_AXES);
+        let mut ls = Vec::with_capacity(MAX_AXES);
+        for (i, a) in gr.axes.iter().enumerate() {
+            if let Some(a) = a {
+                us.push(unit[i]);
+                ls.push(self.axes[*a as usize].cfg.limits);
+            }
+        }
+        let mut l = path_limits(&us, &ls).map_err(|_| ErrorId::PlanningFailed)?;
+        let pos = |x: f64| x.is_finite() && x > 0.0;
+        if !pos(inp.velocity) {
+            return Err(ErrorId::InvalidVelocity);
+        }
+        if !pos(inp.acceleration) {
+            return Err(ErrorId::InvalidAcceleration);
+        }
+        if !pos(inp.deceleration) {
+            return Err(ErrorId::InvalidDeceleration);
+        }
+        if !(inp.jerk.is_finite() && inp.jerk >= 0.0) {
+            return Err(ErrorId::InvalidJerk);
+        }
+        l.vmax = l.vmax.min(inp.velocity);
+        l.amax = l.amax.min(inp.acceleration);
+        l.dmax = l.dmax.min(inp.deceleration);
+        if inp.jerk > 0.0 {
+            l.jmax = if l.jmax.is_infinite() || l.jmax == 0.0 {
+                inp.jerk
+            } else {
+                l.jmax.min(inp.jerk)
+            };
+        }
+        if l.jmax.is_infinite() {
+            l.jmax = 0.0;
+        }
+        Ok(l)
+    }
+
+    /// Gives a motion command to a group. Returns its handle or the ErrorID.
+    pub fn submit_group(
+        &mut self,
+        g: usize,
+        motion: GroupMotion,
+        inputs: PathInputs,
+    ) -> Result<CmdId, ErrorId> {
+        let gr = self.grp(g)?;
+        let class = match motion {
+            GroupMotion::Stop => GroupCmd::Stop,
+            _ => GroupCmd::Motion,
+        };
+        check_group(gr.state, class)?;
+        if (inputs.buffer.is_blending() || inputs.transition != TransitionMode::None)
+            && !(inputs.transition_parameter.is_finite() && inputs.transition_parameter >= 0.0)
+        {
+            return Err(ErrorId::InvalidTransitionMode);
+        }
+        let n = gr.n();
+        let origin =
+            |eng: &Engine, i: usize| gr.axes[i].map_or(0.0, |a| eng.axes[a as usize].origin);
+        let mut buffer = inputs.buffer;
+        let kind = match motion {
+            GroupMotion::Stop => {
+                buffer = BufferMode::Aborting;
+                GKind::Stop
+            }
+            GroupMotion::Halt => GKind::Halt,
+            GroupMotion::DirectAbsolute { .. } => GKind::Direct,
+            _ => GKind::Path,
+        };
+        let from = if buffer == BufferMode::Aborting {
+            self.raw_now(g)
+        } else {
+            self.group_last_target(g)
+        };
+        let check = |v: &Vecn| -> Result<(), ErrorId> {
+            if v[..n].iter().all(|x| x.is_finite()) {
+                Ok(())
+            } else {
+                Err(ErrorId::InvalidPosition)
+            }
+        };
+        let mut target = from;
+        match motion {
+            GroupMotion::LinearAbsolute { position } | GroupMotion::DirectAbsolute { position } => {
+                check(&position)?;
+                for i in 0..n {
+                    if gr.axes[i].is_some() {
+                        target[i] = position[i] - origin(self, i);
+                    }
+                }
+            }
+            GroupMotion::LinearRelative { distance } => {
+                check(&distance)?;
+                for i in 0..n {
+                    if gr.axes[i].is_some() {
+                        target[i] = from[i] + distance[i];
+                    }
+                }
+            }
+            GroupMotion::Circular {
+                end,
+                aux,
+                relative,
+                mode,
+                ccw,
+            } => {
+                check(&end)?;
+                check(&aux)?;
+                let mut e = from;
+                let mut x = from;
+                for i in 0..n {
+                    if gr.axes[i].is_some() {
+                        e[i] = if relative {
+                            from[i] + end[i]
+                        } else {
+                            end[i] - origin(self, i)
+                        };
+                        x[i] = if relative {
+                            from[i] + aux[i]
+                        } else {
+                            aux[i] - origin(self, i)
+                        };
+                    }
+                }
+                Geometry::arc(&from, &x, &e, mode, ccw).ok_or(ErrorId::InvalidCircle)?;
+                target = e;
+            }
+            GroupMotion::Halt | GroupMotion::Stop => {}
+        }
+        // Validate the dynamics against the move's direction.
+        let geom = self.geometry_for(g, &from, &target, &motion);
+        let (t0, _) = geom.tangents(n);
+        let lim = match kind {
+            GKind::Halt | GKind::Stop => {
+                let mut i2 = inputs;
+                i2.velocity = f64::MAX;
+                i2.acceleration = inputs.deceleration;
+                self.path_lims(g, &t0, &i2)?
+            }
+            _ => self.path_lims(g, &t0, &inputs)?,
+        };
+        let _ = lim;
+        let gr = &self.groups[g];
+        let idle = gr.active.is_none();
+        if buffer != BufferMode::Aborting && !idle && gr.queue.len() >= gr.queue.depth() {
+            return Err(ErrorId::QueueFull);
+        }
+        let id = self.cmds.alloc(CmdStatus::Queued);
+        let p = GPending {
+            id,
+            kind,
+            motion,
+            target,
+            inputs: PathInputs { buffer, ..inputs },
+            speed: inputs.velocity.abs(),
+            end_v: 0.0,
+            prefix: None,
+        };
+        if buffer == BufferMode::Aborting || idle {
+            self.group_abort_all(g, CmdStatus::Aborted);
+            if let Err(e) = self.group_activate(g, p, 0.0) {
+                self.cmds.set(id, CmdStatus::Error(e));
+            }
+        } else {
+            let mut p = p;
+            self.group_link(g, &mut p);
+            if let Err((e, p)) = self.groups[g].queue.push(p) {
+                self.cmds.set(p.id, CmdStatus::Error(e));
+            }
+        }
+        Ok(id)
+    }
+
+    fn geometry_for(&self, g: usize, from: &Vecn, target: &Vecn, motion: &GroupMotion) -> Geometry {
+        let n = self.groups[g].n();
+        if let GroupMotion::Circular {
+            aux,
+            relative,
+            mode,
+            ccw,
+            ..
+        } = motion
+        {
+            let mut x = *from;
+            for i in 0..n {
+                if let Some(a) = self.groups[g].axes[i] {
+                    x[i] = if *relative {
+                        from[i] + aux[i]
+                    } else {
+                        aux[i] - self.axes[a as usize].origin
+                    };
+                }
+            }
+            if let Some(geo) = Geometry::arc(from, &x, target, *mode, *ccw) {
+                return geo;
+            }
+        }
+        Geometry::line(from, target)
+    }
+
+    /// A blending successor joins the group's last move.
+    fn group_link(&mut self, g: usize, next: &mut GPending) {
+        if !next.inputs.buffer.is_blending() || next.kind != GKind::Path {
+            return;
+        }
+        let n = self.groups[g].n();
+        let gr = &self.groups[g];
+        // Predecessor: the queue's back, else the active move.
+        let (pred_from, pred_target, pred_speed, pred_kind, pred_is_active) = match gr.queue.back()
+        {
+            Some(b) => {
+                let from = if gr.queue.len() >= 2 {
+                    gr.queue
+                        .iter()
+                        .nth(gr.queue.len() - 2)
+                        .map(|p| p.target)
+                        .unwrap_or(b.target)
+                } else {
+                    gr.active.as_ref().map_or(b.target, |a| a.target)
+                };
+                (from, b.target, b.speed, b.kind, false)
+            }
+            None => match &gr.active {
+                Some(a) => {
+                    let mut st = ZERO;
+                    if let Geometry::Line { start, .. } = a.geom {
+                        st = start;
+                    }
+                    (st, a.target, a.speed, a.kind, true)
+                }
+                None => return,
+            },
+        };
+        if pred_kind != GKind::Path {
+            return;
+        }
+        let pred_geom = match (&gr.active, pred_is_active) {
+            (Some(a), true) => a.geom,
+            _ => Geometry::line(&pred_from, &pred_target),
+        };
+        let next_geom = self.geometry_for(g, &pred_target, &next.target, &next.motion);
+        let (_, u1) = pred_geom.tangents(n);
+        let (u2, _) = next_geom.tangents(n);
+        let mut vj = next.inputs.buffer.junction_speed(pred_speed, next.speed);
+        // Corner blend.
+        let mut new_pred_target = pred_target;
+        if next.inputs.transition == TransitionMode::CornerDistance
+            && next.inputs.transition_parameter > 0.0
+            && vj > 0.0
+            && matches!(pred_geom, Geometry::Line { .. })
+            && matches!(next_geom, Geometry::Line { .. })
+        {
+            let mut d = next
+                .inputs
+                .transition_parameter
+                .min(pred_geom.len() / 2.0)
+                .min(next_geom.len() / 2.0);
+            if pred_is_active {
+                if let Some(a) = &gr.active {
+                    let s_now = a.prof.at(a.t - a.prefix_end).p;
+                    let remaining = pred_geom.len() - s_now;
+                    // Leave room to reach the junction speed before the blend.
+                    d = d.min(remaining * 0.5);
+                }
+            }
+            let cos = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>();
+            if d > 1e-9 && cos < 1.0 - 1e-12 {
+                let mut pa = pred_target;
+                let mut pb = pred_target;
+                for i in 0..n {
+                    pa[i] -= u1[i] * d;
+                    pb[i] += u2[i] * d;
+                }
+                let blend = Geometry::blend(&pa, &pred_target, &pb);
+                let kmax = blend.max_curvature(n);
+                let amin = gr
+                    .axes
+                    .iter()
+                    .flatten()
+                    .map(|&a| self.axes[a as usize].cfg.limits.amax)
+                    .fold(f64::INFINITY, f64::min)
+                    .min(next.inputs.acceleration);
+                let vmax_curve = if kmax > 0.0 {
+                    (amin / kmax).sqrt()
+                } else {
+                    f64::INFINITY
+                };
+                vj = vj.min(vmax_curve);
+                next.prefix = Some((blend, vj));
+                new_pred_target = pa;
+            }
+        }
+        let gr = &mut self.groups[g];
+        if pred_is_active {
+            if let Some(a) = gr.active.as_mut() {
+                // Re-plan the running move to end at the junction (speed vj).
+                let s_now = a.prof.at(a.t - a.prefix_end);
+                if a.t < a.prefix_end {
+                    return;
+                }
+                let new_len = a.geom.len() - dist(&pred_target, &new_pred_target);
+                let mut lim = a.lim;
+                lim.vmax = lim.vmax.max(vj);
+                if let Ok(p) = Profile::position(s_now, new_len, vj, &lim) {
+                    a.prof = p;
+                    a.t = a.prefix_end;
+                    a.end_v = vj;
+                    a.target = new_pred_target;
+                } else {
+                    next.prefix = None;
+                }
+            }
+        } else if let Some(b) = gr.queue.back_mut() {
+            b.end_v = vj;
+            b.target = new_pred_target;
+        }
+    }
+
+    fn group_abort_all(&mut self, g: usize, status: CmdStatus) {
+        let gr = &mut self.groups[g];
+        if let Some(a) = gr.active.as_mut() {
+            if let Some(id) = a.id.take() {
+                self.cmds.set(id, status);
+            }
+        }
+        let cmds = &mut self.cmds;
+        gr.queue.drain_with(|p| cmds.set(p.id, status));
+    }
+
+    /// Current path state of the running group move (s, ds/dt, d2s/dt2) and its geometry.
+    fn path_state(a: &GActive) -> (Geometry, State) {
+        if a.t < a.prefix_end {
+            if let Some((geo, v)) = a.prefix {
+                return (
+                    geo,
+                    State {
+                        p: v * a.t,
+                        v,
+                        a: 0.0,
+                    },
+                );
+            }
+        }
+        (a.geom, a.prof.at(a.t - a.prefix_end))
+    }
+
+    fn group_activate(&mut self, g: usize, p: GPending, t0: f64) -> Result<(), ErrorId> {
+        let n = self.groups[g].n();
+        let now = self.raw_now(g);
+        // Current axis velocities/accelerations by identity.
+        let mut vel = ZERO;
+        let mut acc = ZERO;
+        for (i, a) in self.groups[g].axes.iter().enumerate() {
+            if let Some(a) = a {
+                vel[i] = self.axes[*a as usize].set.v;
+                acc[i] = self.axes[*a as usize].set.a;
+            }
+        }
+        let running = self.groups[g]
+            .active
+            .as_ref()
+            .map(|a| (Self::path_state(a), a.lim));
+        let (geom, prof, lim, direct, prefix_end) = match p.kind {
+            GKind::Halt | GKind::Stop | GKind::Brake => {
+                let ((geo, s), _) = running.unwrap_or((
+                    (Geometry::line(&now, &now), State::default()),
+                    Limits::default(),
+                ));
+                let mut i2 = p.inputs;
+                i2.velocity = f64::MAX;
+                i2.acceleration = p.inputs.deceleration;
+                let (u, _) = geo.tangents(n);
+                let mut lim = self.path_lims(g, &u, &i2)?;
+                lim.amax = lim.amax.max(lim.dmax);
+                lim.vmax = lim.vmax.max(s.v.abs());
+                let prof = Profile::velocity(s, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)?;
+                (geo, prof, lim, None, 0.0)
+            }
+            GKind::Path => {
+                let start = match &p.prefix {
+                    Some((geo, _)) => {
+                        let (mut q, mut d1, mut d2) = (ZERO, ZERO, ZERO);
+                        geo.eval(geo.len(), n, &mut q, &mut d1, &mut d2);
+                        q
+                    }
+                    None => now,
+                };
+                let geo = self.geometry_for(g, &start, &p.target, &p.motion);
+                let (u, _) = geo.tangents(n);
+                let mut lim = self.path_lims(g, &u, &p.inputs)?;
+                let (v0, a0, pe) = match &p.prefix {
+                    Some((b, v)) => (*v, 0.0, if *v > 0.0 { b.len() / v } else { 0.0 }),
+                    None => {
+                        let v0: f64 = (0..n).map(|i| vel[i] * u[i]).sum();
+                        let a0: f64 = (0..n).map(|i| acc[i] * u[i]).sum();
+                        (v0, a0, 0.0)
+                    }
+                };
+                lim.vmax = lim.vmax.max(p.end_v);
+                let prof = crate::engine::plan_position(
+                    State {
+                        p: 0.0,
+                        v: v0,
+                        a: a0,
+                    },
+                    geo.len(),
+                    p.end_v,
+                    &lim,
+                )
+                .map_err(|_| ErrorId::PlanningFailed)?;
+                (geo, prof, lim, None, pe)
+            }
+            GKind::Direct => {
+                let mut profs = Box::new([standing(0.0); MAX_AXES]);
+                let mut longest: f64 = 0.0;
+                for i in 0..n {
+                    if let Some(a) = self.groups[g].axes[i] {
+                        let al = self.axes[a as usize].cfg.limits;
+                        let l = Limits {
+                            vmax: al.vmax.min(p.inputs.velocity),
+                            amax: al.amax.min(p.inputs.acceleration),
+                            dmax: al.dmax.min(p.inputs.deceleration),
+                            jmax: if p.inputs.jerk > 0.0 {
+                                p.inputs.jerk
+                            } else {
+                                al.jmax
+                            },
+                        };
+                        let st = State {
+                            p: now[i],
+                            v: vel[i],
+                            a: acc[i],
+                        };
+                        profs[i] = crate::engine::plan_position(st, p.target[i], 0.0, &l)
+                            .map_err(|_| ErrorId::PlanningFailed)?;
+                        longest = longest.max(profs[i].duration());
+                    }
+                }
+                let geo = Geometry::line(&now, &p.target);
+                let prof = Profile::velocity(
+                    State::default(),
+                    0.0,
+                    &Limits {
+                        vmax: 1.0,
+                        amax: 1.0,
+                        dmax: 1.0,
+                        jmax: 0.0,
+                    },
+                )
+                .map_err(|_| ErrorId::PlanningFailed)?;
+                let _ = longest;
+                (geo, prof, Limits::default(), Some(profs), 0.0)
+            }
+        };
+        let gr = &mut self.groups[g];
+        gr.active = Some(GActive {
+            kind: p.kind,
+            id: Some(p.id),
+            geom,
+            prof,
+            t: t0,
+            prefix: p.prefix,
+            prefix_end,
+            target: p.target,
+            speed: p.speed,
+            lim,
+            end_v: p.end_v,
+            direct,
+        });
+        gr.state = if p.kind == GKind::Stop {
+            gr.stop_owner = Some(p.id);
+            GroupState::GroupStopping
+        } else if p.kind == GKind::Brake {
+            GroupState::GroupErrorStop
+        } else {
+            GroupState::GroupMoving
+        };
+        self.cmds.set(p.id, CmdStatus::Active);
+        for a in self.groups[g].axes.iter().flatten() {
+            let ax = &mut self.axes[*a as usize];
+            ax.active = Active {
+                kind: Kind::Group,
+                ..Active::idle(ax.set)
+            };
+            if ax.state != AxisState::ErrorStop {
+                ax.state = AxisState::SynchronizedMotion;
+            }
+        }
+        Ok(())
+    }
+
+    /// An axis of the group failed (or lost power): GroupErrorStop, buffered moves fail,
+    /// the path brakes.
+    pub(crate) fn group_axis_fault(&mut self, g: usize) {
+        if self.groups[g].state == GroupState::GroupErrorStop
+            || self.groups[g].state == GroupState::GroupDisabled
+        {
+            return;
+        }
+        self.group_abort_all(g, CmdStatus::Error(ErrorId::GroupAxisError));
+        self.groups[g].error = ErrorId::GroupAxisError;
+        self.groups[g].state = GroupState::GroupErrorStop;
+        self.groups[g].stop_owner = None;
+        if self.groups[g].active.is_some() {
+            // Brake along the path with the axes' deceleration.
+            let inputs = PathInputs {
+                velocity: f64::MAX,
+                acceleration: f64::MAX,
+                deceleration: f64::MAX,
+                jerk: 0.0,
+                ..PathInputs::default()
+            };
+            let id = self.cmds.alloc(CmdStatus::Queued);
+            let p = GPending {
+                id,
+                kind: GKind::Brake,
+                motion: GroupMotion::Halt,
+                target: ZERO,
+                inputs,
+                speed: 0.0,
+                end_v: 0.0,
+                prefix: None,
+            };
+            if self.group_activate(g, p, 0.0).is_err() {
+                self.finish_group(g);
+            }
+            if let Some(a) = self.groups[g].active.as_mut() {
+                a.id = None;
+            }
+            self.cmds.set(id, CmdStatus::Done);
+            self.cmds.release(id);
+        }
+    }
+
+    /// MC_GroupStop's Execute fell after Done: GroupStopping -> GroupStandby.
+    pub fn release_group_stop(&mut self, g: usize, id: CmdId) {
+        if let Some(gr) = self.groups.get_mut(g) {
+            let running = gr.active.as_ref().is_some_and(|a| a.kind == GKind::Stop);
+            if gr.stop_owner == Some(id) && !running {
+                gr.stop_owner = None;
+                if gr.state == GroupState::GroupStopping {
+                    gr.state = GroupState::GroupStandby;
+                }
+            }
+        }
+    }
+
+    /// The group's motion ended: axes stand still.
+    fn finish_group(&mut self, g: usize) {
+        self.groups[g].active = None;
+        for a in self.groups[g].axes.iter().flatten() {
+            let ax = &mut self.axes[*a as usize];
+            ax.set.v = 0.0;
+            ax.set.a = 0.0;
+            ax.active = Active::idle(ax.set);
+            if ax.state == AxisState::SynchronizedMotion {
+                ax.state = AxisState::Standstill;
+            }
+        }
+    }
+
+    /// One cycle of every group with a running move.
+    pub(crate) fn step_groups(&mut self, dt: f64) {
+        for g in 0..self.groups.len() {
+            let Some(mut a) = self.groups[g].active.take() else {
+                continue;
+            };
+            let n = self.groups[g].n();
+            a.t += dt;
+            let (mut pos, mut d1, mut d2) = self.groups[g].scratch;
+            let ended;
+            if let Some(profs) = &a.direct {
+                let mut done = true;
+                for i in 0..n {
+                    if let Some(ax) = self.groups[g].axes[i] {
+                        let s = profs[i].at(a.t);
+                        self.axes[ax as usize].set = s;
+                        done &= a.t >= profs[i].duration();
+                    }
+                }
+                ended = done;
+            } else {
+                let (geo, s) = Self::path_state(&a);
+                geo.eval(s.p, n, &mut pos, &mut d1, &mut d2);
+                for i in 0..n {
+                    if let Some(ax) = self.groups[g].axes[i] {
+                        self.axes[ax as usize].set = State {
+                            p: pos[i],
+                            v: d1[i] * s.v,
+                            a: d1[i] * s.a + d2[i] * s.v * s.v,
+                        };
+                    }
+                }
+                ended = a.t >= a.prefix_end + a.prof.duration();
+            }
+            self.groups[g].scratch = (pos, d1, d2);
+            let kind = a.kind;
+            let id = a.id;
+            let leftover = a.t - a.prefix_end - a.prof.duration();
+            let end_v = a.end_v;
+            self.groups[g].active = Some(a);
+            if !ended {
+                continue;
+            }
+            if let Some(id) = id {
+                self.cmds.set(id, CmdStatus::Done);
+            }
+            if matches!(kind, GKind::Path | GKind::Direct) && end_v == 0.0 {
+                // Land exactly on the commanded end point.
+                let target = self.groups[g].active.as_ref().map(|a| a.target);
+                if let Some(target) = target {
+                    for (i, t) in target.iter().enumerate().take(n) {
+                        if let Some(ax) = self.groups[g].axes[i] {
+                            let s = &mut self.axes[ax as usize].set;
+                            s.p = *t;
+                            s.v = 0.0;
+                            s.a = 0.0;
+                        }
+                    }
+                }
+            }
+            match kind {
+                GKind::Stop | GKind::Brake => {
+                    self.finish_group(g);
+                    if kind == GKind::Brake {
+                        self.groups[g].state = GroupState::GroupErrorStop;
+                    }
+                }
+                _ => {
+                    // Next buffered move starts from the junction.
+                    let mut started = false;
+                    while let Some(mut p) = self.groups[g].queue.pop() {
+                        if let Some(nx) = self.groups[g].queue.front() {
+                            if nx.inputs.buffer.is_blending()
+                                && p.end_v == 0.0
+                                && p.kind == GKind::Path
+                            {
+                                p.end_v = nx.inputs.buffer.junction_speed(p.speed, nx.speed);
+                            }
+                        }
+                        let t0 = if end_v > 0.0 { leftover.max(0.0) } else { 0.0 };
+                        match self.group_activate(g, p, t0) {
+                            Ok(()) => {
+                                started = true;
+                                break;
+                            }
+                            Err(e) => self.cmds.set(p.id, CmdStatus::Error(e)),
+                        }
+                    }
+                    if !started {
+                        self.finish_group(g);
+                        if self.groups[g].state == GroupState::GroupMoving {
+                            self.groups[g].state = GroupState::GroupStandby;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+fn dist(a: &Vecn, b: &Vecn) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y) * (x - y))
+        .sum::<f64>()
+        .sqrt()
+}

@@ -1,0 +1,134 @@
+//! Straight-line planning for N axes.
+//!
+//! Input: start and end positions of N axes and each axis's [`Limits`]. Output: a
+//! [`Line`]: a 1-D [`Profile`] of the path length s (0 to the line's length) and the
+//! unit direction that maps s to axis positions (`start + s * unit`).
+//! Invariant: the path limits are the minimum over axes of `axis limit / |unit_i|`
+//! (axes not moving do not limit the path), so no axis ever exceeds its own limits.
+//! An axis with `jmax` 0 or infinite does not limit the path jerk; when every axis is
+//! trapezoidal, the path profile is trapezoidal.
+
+use super::{Limits, PlanError, Profile, State};
+
+/// A planned straight line: path profile plus geometry.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Line {
+    /// Start positions then unit direction (one allocation).
+    geometry: Vec<f64>,
+    length: f64,
+    limits: Limits,
+    profile: Profile,
+}
+
+/// The path limits of a line with direction `unit` (a unit vector) through axes `axes`.
+pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
+    if unit.len() != axes.len() {
+        return Err(PlanError::Line(format!(
+            "{} direction components but {} axis limits",
+            unit.len(),
+            axes.len()
+        )));
+    }
+    let mut l = Limits {
+        vmax: f64::INFINITY,
+        amax: f64::INFINITY,
+        dmax: f64::INFINITY,
+        jmax: f64::INFINITY,
+    };
+    for (u, ax) in unit.iter().zip(axes) {
+        ax.validate()?;
+        let u = u.abs();
+        if u > 0.0 {
+            l.vmax = l.vmax.min(ax.vmax / u);
+            l.amax = l.amax.min(ax.amax / u);
+            l.dmax = l.dmax.min(ax.dmax / u);
+            if !ax.is_trapezoidal() {
+                l.jmax = l.jmax.min(ax.jmax / u);
+            }
+        }
+    }
+    if !l.vmax.is_finite() {
+        // No axis moves: any finite limits will do.
+        l = Limits {
+            vmax: 1.0,
+            amax: 1.0,
+            dmax: 1.0,
+            jmax: 1.0,
+        };
+    }
+    Ok(l)
+}
+
+impl Line {
+    /// Time-optimal rest-to-rest straight line from `start` to `end`.
+    pub fn plan(start: &[f64], end: &[f64], axes: &[Limits]) -> Result<Line, PlanError> {
+        if start.len() != end.len() {
+            return Err(PlanError::Line(format!(
+                "start has {} axes but end has {}",
+                start.len(),
+                end.len()
+            )));
+        }
+        if start.iter().chain(end).any(|x| !x.is_finite()) {
+            return Err(PlanError::Line("non-finite coordinate".into()));
+        }
+        let n = start.len();
+        let mut geometry = Vec::with_capacity(2 * n);
+        geometry.extend_from_slice(start);
+        geometry.extend(start.iter().zip(end).map(|(a, b)| b - a));
+        let length = geometry[n..].iter().map(|d| d * d).sum::<f64>().sqrt();
+        let inv = if length > 0.0 { 1.0 / length } else { 0.0 };
+        for d in &mut geometry[n..] {
+            *d *= inv;
+        }
+        let limits = path_limits(&geometry[n..], axes)?;
+        let profile = Profile::position(State::default(), length, 0.0, &limits)?;
+        Ok(Line {
+            geometry,
+            length,
+            limits,
+            profile,
+        })
+    }
+
+    /// Duration of the line (s).
+    pub fn duration(&self) -> f64 {
+        self.profile.duration()
+    }
+
+    /// Length of the line.
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// The path limits used.
+    pub fn limits(&self) -> &Limits {
+        &self.limits
+    }
+
+    /// The 1-D profile of the path length.
+    pub fn profile(&self) -> &Profile {
+        &self.profile
+    }
+
+    /// Unit direction of the line.
+    pub fn unit(&self) -> &[f64] {
+        &self.geometry[self.geometry.len() / 2..]
+    }
+
+    /// Start positions of the axes.
+    pub fn start(&self) -> &[f64] {
+        &self.geometry[..self.geometry.len() / 2]
+    }
+
+    /// Path state at `t`, and the axis positions written to `positions`
+    /// (its length must be the number of axes; extra entries are left alone).
+    pub fn at(&self, t: f64, positions: &mut [f64]) -> State {
+        let s = self.profile.at(t);
+        let p = s.p.min(self.length);
+        for ((out, x0), u) in positions.iter_mut().zip(self.start()).zip(self.unit()) {
+            *out = x0 + p * u;
+        }
+        s
+    }
+}

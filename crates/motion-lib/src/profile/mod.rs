@@ -1,0 +1,493 @@
+//! Time-optimal jerk-limited motion profiles (the mathematics, with no PLC interface).
+//!
+//! Input: a start [`State`] (position, velocity, acceleration: anywhere, even beyond the
+//! limits), a target (position and velocity, or velocity alone) and [`Limits`].
+//! Output: a [`Profile`], i.e. the start state and at most [`MAX_PHASES`] phases of
+//! piecewise-constant jerk, followed after [`Profile::duration`] by an endless
+//! constant-velocity continuation at the target velocity.
+//!
+//! Invariants of every profile returned by a planner here:
+//! - position, velocity and acceleration are continuous (jerk-limited profiles; a
+//!   trapezoidal profile, `jmax` = 0 or infinite, has piecewise-constant acceleration);
+//! - |jerk| <= jmax, acceleration in [-dmax, amax] (mirrored for a move in the negative
+//!   direction) and |v| <= vmax, except while braking a start state that is already
+//!   beyond a limit back inside it (then the limit is approached monotonically);
+//! - the end state is the target (to 1e-8 relative), with acceleration 0.
+//!
+//! The planners follow ruckig (Berscheid & Kröger, "Jerk-limited real-time trajectory
+//! generation with arbitrary target states", RSS 2021): see `README_profile.md`.
+
+mod jsonl;
+mod kernel;
+pub mod line;
+mod velocity;
+
+pub use jsonl::plan_jsonl;
+
+use thiserror::Error;
+
+/// Most phases a profile can hold: 2 brake phases + 7 profile phases.
+pub const MAX_PHASES: usize = 9;
+
+/// Kinematic limits of one axis (or of the path of a straight line).
+///
+/// `amax` applies while accelerating in the direction of travel, `dmax` while
+/// decelerating (ruckig's `max_acceleration = amax`, `min_acceleration = -dmax` for a
+/// move in the positive direction; mirrored for the negative direction).
+///
+/// `jmax = 0` or `jmax = f64::INFINITY` means "no jerk limit": the profile is then
+/// trapezoidal (acceleration steps between `amax`, 0 and `-dmax`), and the start
+/// acceleration is ignored.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Limits {
+    pub vmax: f64,
+    pub amax: f64,
+    pub dmax: f64,
+    pub jmax: f64,
+}
+
+impl Limits {
+    /// True when there is no jerk limit (`jmax` is 0 or infinite): trapezoidal profiles.
+    pub fn is_trapezoidal(&self) -> bool {
+        self.jmax == 0.0 || self.jmax.is_infinite()
+    }
+
+    /// Checks that the limits are usable: `vmax`, `amax`, `dmax` finite and > 0, `jmax`
+    /// >= 0 (0 or +infinity meaning trapezoidal) and not NaN.
+    pub fn validate(&self) -> Result<(), PlanError> {
+        let pos = |x: f64| x.is_finite() && x > 0.0;
+        if pos(self.vmax)
+            && pos(self.amax)
+            && pos(self.dmax)
+            && !self.jmax.is_nan()
+            && self.jmax >= 0.0
+        {
+            Ok(())
+        } else {
+            Err(PlanError::InvalidLimits)
+        }
+    }
+}
+
+/// Kinematic state of one axis: position, velocity, acceleration.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct State {
+    pub p: f64,
+    pub v: f64,
+    pub a: f64,
+}
+
+impl State {
+    /// The state after `t` seconds of constant `jerk` from `self`.
+    #[inline]
+    pub fn integrate(&self, t: f64, jerk: f64) -> State {
+        State {
+            p: self.p + t * (self.v + t * (0.5 * self.a + t * jerk * (1.0 / 6.0))),
+            v: self.v + t * (self.a + 0.5 * t * jerk),
+            a: self.a + t * jerk,
+        }
+    }
+}
+
+/// One phase of a profile: `duration` seconds of constant `jerk`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Phase {
+    pub duration: f64,
+    pub jerk: f64,
+}
+
+/// Why a profile could not be planned.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum PlanError {
+    #[error("invalid limits: vmax, amax and dmax must be finite and > 0, jmax >= 0 (0 or infinite = trapezoidal)")]
+    InvalidLimits,
+    #[error("invalid start state: position, velocity and acceleration must be finite")]
+    InvalidState,
+    #[error("invalid target: the position must be finite and the velocity finite with |v| <= vmax ({vmax})")]
+    InvalidTarget { vmax: f64 },
+    #[error("requested duration {requested} s is shorter than the minimal duration {minimal} s")]
+    DurationTooShort { requested: f64, minimal: f64 },
+    #[error(
+        "no profile reaches the target in exactly {requested} s (minimal duration {minimal} s)"
+    )]
+    DurationUnreachable { requested: f64, minimal: f64 },
+    #[error("line: {0}")]
+    Line(String),
+    #[error("no valid profile found (numerical failure) for start {start:?}, target p = {target_p}, v = {target_v}")]
+    NoSolution {
+        start: State,
+        target_p: f64,
+        target_v: f64,
+    },
+}
+
+/// A planned motion: the start state, phases of constant jerk, then constant velocity.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Profile {
+    start: State,
+    count: usize,
+    phases: [Phase; MAX_PHASES],
+    /// State at the start of each phase. For a trapezoidal phase `starts[i].a` is the
+    /// phase's constant acceleration.
+    starts: [State; MAX_PHASES],
+    /// Time at the end of each phase.
+    ends: [f64; MAX_PHASES],
+    /// State at the end of the last phase.
+    last: State,
+    /// Total duration.
+    total: f64,
+}
+
+impl Profile {
+    /// An empty profile standing at `start` (duration 0).
+    #[inline]
+    pub(crate) fn new(start: State) -> Profile {
+        Profile {
+            start,
+            count: 0,
+            phases: [Phase::default(); MAX_PHASES],
+            starts: [State::default(); MAX_PHASES],
+            ends: [0.0; MAX_PHASES],
+            last: start,
+            total: 0.0,
+        }
+    }
+
+    /// The profile of the fast path's phases (cruise fourth, snapped to exactly vmax).
+    #[inline(always)]
+    fn cruising(start: State, target_p: f64, items: &[(f64, f64); 7], lim: &Limits) -> Profile {
+        let v = if target_p >= start.p {
+            lim.vmax
+        } else {
+            -lim.vmax
+        };
+        Profile::build(start, items, false, Some((3, v)))
+    }
+
+    /// The profile of `items` = (duration, jerk) from `start` (or (duration,
+    /// acceleration) when `trapezoidal`); items of zero or negative duration are skipped.
+    /// `snap` = (k, v): the state before item k is snapped to velocity v, acceleration 0
+    /// (the start of a cruise, removing rounding).
+    #[inline(always)]
+    pub(crate) fn build(
+        start: State,
+        items: &[(f64, f64)],
+        trapezoidal: bool,
+        snap: Option<(usize, f64)>,
+    ) -> Profile {
+        let mut prof = Profile::new(start);
+        // The running state is kept in scalar locals (registers): the arrays are only
+        // written, never read back (no store-to-load forwarding stalls).
+        let (mut p, mut v, mut a) = (start.p, start.v, start.a);
+        let mut total = 0.0;
+        let mut n = 0;
+        for (k, &(duration, x)) in items.iter().enumerate() {
+            if let Some((ks, vs)) = snap {
+                if ks == k {
+                    v = vs;
+                    a = 0.0;
+                }
+            }
+            if duration.is_nan() || duration <= 0.0 || n == MAX_PHASES {
+                continue;
+            }
+            let jerk = if trapezoidal {
+                a = x;
+                0.0
+            } else {
+                x
+            };
+            prof.phases[n] = Phase { duration, jerk };
+            prof.starts[n] = State { p, v, a };
+            let t = duration;
+            p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
+            v += t * (a + 0.5 * t * jerk);
+            a = if trapezoidal { 0.0 } else { a + t * jerk };
+            total += duration;
+            prof.ends[n] = total;
+            n += 1;
+        }
+        let s = State { p, v, a };
+        prof.count = n;
+        prof.last = s;
+        prof.total = total;
+        prof
+    }
+
+    /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
+    /// and acceleration 0.
+    pub fn position(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> Result<Profile, PlanError> {
+        check_inputs(&start, target_p, target_v, lim)?;
+        if let Some(items) = velocity::position_cruising(start, target_p, target_v, lim) {
+            return Ok(Profile::cruising(start, target_p, &items, lim));
+        }
+        let mut block = kernel::Block::default();
+        match Solved::new(start, target_p, target_v, lim, &mut block) {
+            Some(sol) => Ok(sol.build(&block.p_min)),
+            None => Err(PlanError::NoSolution {
+                start,
+                target_p,
+                target_v,
+            }),
+        }
+    }
+
+    /// Time-optimal profile from `start` to velocity `target_v` with acceleration 0
+    /// (MoveVelocity; Halt/Stop with `target_v = 0`). The position is free.
+    pub fn velocity(start: State, target_v: f64, lim: &Limits) -> Result<Profile, PlanError> {
+        check_inputs(&start, 0.0, target_v, lim)?;
+        Ok(velocity::velocity_change(start, target_v, lim))
+    }
+
+    /// Profile reaching the same target as [`Profile::position`] at exactly time `t`
+    /// (`t` >= the minimal duration), for synchronising axes and blending.
+    ///
+    /// Some durations above the minimum are impossible (ruckig's blocked intervals, e.g.
+    /// a start velocity towards the target that cannot be slowed down enough without
+    /// reversing): they give [`PlanError::DurationUnreachable`].
+    pub fn with_duration(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+        t: f64,
+    ) -> Result<Profile, PlanError> {
+        check_inputs(&start, target_p, target_v, lim)?;
+        let mut block = kernel::Block::default();
+        let sol = Solved::new(start, target_p, target_v, lim, &mut block).ok_or(
+            PlanError::NoSolution {
+                start,
+                target_p,
+                target_v,
+            },
+        )?;
+        let fastest = match velocity::position_cruising(start, target_p, target_v, lim) {
+            Some(items) => Profile::cruising(start, target_p, &items, lim),
+            None => sol.build(&block.p_min),
+        };
+        let minimal = fastest.duration();
+        let eps = 1e-12 * minimal.max(1.0);
+        if t.is_nan() || t < minimal - eps {
+            return Err(PlanError::DurationTooShort {
+                requested: t,
+                minimal,
+            });
+        }
+        if t <= minimal + eps {
+            return Ok(fastest);
+        }
+        let unreachable = PlanError::DurationUnreachable {
+            requested: t,
+            minimal,
+        };
+        let t_profile = t - sol.brake.duration;
+        for iv in [block.a, block.b].into_iter().flatten() {
+            if (t_profile - iv.right).abs() <= eps {
+                return Ok(sol.build(&iv.profile));
+            }
+        }
+        if block.is_blocked(t_profile) || !t.is_finite() {
+            return Err(unreachable);
+        }
+        sol.with_duration(t_profile)
+            .map(|k| sol.build(&k))
+            .ok_or(unreachable)
+    }
+
+    /// Total duration of the phases (s).
+    #[inline]
+    pub fn duration(&self) -> f64 {
+        self.total
+    }
+
+    /// The state at time `t`: `t < 0` clamps to the start; after [`Profile::duration`]
+    /// the motion continues at the final velocity with acceleration 0.
+    #[inline]
+    pub fn at(&self, t: f64) -> State {
+        let n = self.count;
+        if t >= self.duration() {
+            let e = self.end();
+            let dt = t - self.duration();
+            return State {
+                p: e.p + e.v * dt,
+                v: e.v,
+                a: 0.0,
+            };
+        }
+        if t < 0.0 {
+            return self.start;
+        }
+        let mut i = 0;
+        while i + 1 < n && t >= self.ends[i] {
+            i += 1;
+        }
+        let t0 = if i == 0 { 0.0 } else { self.ends[i - 1] };
+        self.starts[i].integrate(t - t0, self.phases[i].jerk)
+    }
+
+    /// The phases (constant jerk each).
+    pub fn phases(&self) -> &[Phase] {
+        &self.phases[..self.count]
+    }
+
+    /// The state at the start of each phase (for a trapezoidal phase, `a` is the
+    /// phase's constant acceleration).
+    pub fn phase_starts(&self) -> &[State] {
+        &self.starts[..self.count]
+    }
+
+    /// The start state.
+    pub fn start(&self) -> State {
+        self.start
+    }
+
+    /// The end state (acceleration 0).
+    pub fn end(&self) -> State {
+        let e = self.last;
+        State {
+            p: e.p,
+            v: e.v,
+            a: 0.0,
+        }
+    }
+}
+
+thread_local! {
+    static STEP1: std::cell::RefCell<kernel::pos3::PositionThirdOrderStep1> =
+        std::cell::RefCell::new(kernel::pos3::PositionThirdOrderStep1::default());
+}
+
+/// A position problem solved by the kernel in a frame where the move goes towards +p
+/// (so that `amax` bounds the acceleration in the direction of travel, `dmax` the
+/// deceleration): brake pre-phase and step-1 block.
+struct Solved {
+    start: State,
+    /// +1 or -1: the frame's direction.
+    s: f64,
+    trapezoidal: bool,
+    /// Frame limits: v in [-vmax, vmax], a in [a_min, a_max], |j| <= jmax.
+    vmax: f64,
+    a_max: f64,
+    a_min: f64,
+    jmax: f64,
+    /// Frame target.
+    pf: f64,
+    vf: f64,
+    brake: kernel::brake::BrakeProfile,
+    /// State after the brake pre-phase (frame).
+    after_brake: (f64, f64, f64),
+}
+
+impl Solved {
+    /// Solves the problem; the step-1 result goes to `block`.
+    fn new(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+        block: &mut kernel::Block,
+    ) -> Option<Solved> {
+        let s = if target_p >= start.p { 1.0 } else { -1.0 };
+        let trapezoidal = lim.is_trapezoidal();
+        let (p0, v0, a0) = (s * start.p, s * start.v, s * start.a);
+        let (pf, vf) = (s * target_p, s * target_v);
+        let (vmax, a_max, a_min, jmax) = (lim.vmax, lim.amax, -lim.dmax, lim.jmax);
+        let mut brake = kernel::brake::BrakeProfile::new();
+        let (mut ps, mut vs, mut as_) = (p0, v0, a0);
+        let mut input = kernel::kprofile::Profile::default();
+        let found = if trapezoidal {
+            brake.get_second_order_position_brake_trajectory(v0, vmax, -vmax, a_max, a_min);
+            brake.finalize_second_order(&mut ps, &mut vs, &mut as_);
+            as_ = 0.0;
+            input.set_boundary(ps, vs, 0.0, pf, vf, 0.0);
+            kernel::pos2::PositionSecondOrderStep1::new(ps, vs, pf, vf, vmax, -vmax, a_max, a_min)
+                .get_profile(&input, block)
+        } else {
+            brake.get_position_brake_trajectory(v0, a0, vmax, -vmax, a_max, a_min, jmax);
+            brake.finalize(&mut ps, &mut vs, &mut as_);
+            input.set_boundary(ps, vs, as_, pf, vf, 0.0);
+            // The solver's candidate buffer is reused per thread (no re-zeroing).
+            STEP1.with(|cell| {
+                let mut step1 = cell.borrow_mut();
+                step1.reset(ps, vs, as_, pf, vf, 0.0, vmax, -vmax, a_max, a_min, jmax);
+                step1.get_profile(&input, block)
+            })
+        };
+        found.then_some(Solved {
+            start,
+            s,
+            trapezoidal,
+            vmax,
+            a_max,
+            a_min,
+            jmax,
+            pf,
+            vf,
+            brake,
+            after_brake: (ps, vs, as_),
+        })
+    }
+
+    /// Step 2: a kernel profile of duration `tf` (after the brake pre-phase).
+    fn with_duration(&self, tf: f64) -> Option<kernel::kprofile::Profile> {
+        let (ps, vs, as_) = self.after_brake;
+        let mut k = kernel::kprofile::Profile::default();
+        k.set_boundary(ps, vs, as_, self.pf, self.vf, 0.0);
+        let found = if self.trapezoidal {
+            kernel::pos2_duration::PositionSecondOrderStep2::new(
+                tf, ps, vs, self.pf, self.vf, self.vmax, -self.vmax, self.a_max, self.a_min,
+            )
+            .get_profile(&mut k)
+        } else {
+            kernel::pos3_duration::PositionThirdOrderStep2::new(
+                tf, ps, vs, as_, self.pf, self.vf, 0.0, self.vmax, -self.vmax, self.a_max,
+                self.a_min, self.jmax,
+            )
+            .get_profile(&mut k)
+        };
+        found.then_some(k)
+    }
+
+    #[inline]
+    /// The public profile: brake pre-phase then the kernel profile `k`, mirrored back.
+    fn build(&self, k: &kernel::kprofile::Profile) -> Profile {
+        let s = self.s;
+        let b = &self.brake;
+        let mut items = [(0.0, 0.0); MAX_PHASES];
+        if self.trapezoidal {
+            items[0] = (b.t[0], s * b.a[0]);
+            items[1] = (0.0, 0.0);
+            for i in 0..7 {
+                items[2 + i] = (k.t[i], s * k.a[i]);
+            }
+        } else {
+            items[0] = (b.t[0], s * b.j[0]);
+            items[1] = (b.t[1], s * b.j[1]);
+            for i in 0..7 {
+                items[2 + i] = (k.t[i], s * k.j[i]);
+            }
+        }
+        Profile::build(self.start, &items, self.trapezoidal, None)
+    }
+}
+
+fn check_inputs(
+    start: &State,
+    target_p: f64,
+    target_v: f64,
+    lim: &Limits,
+) -> Result<(), PlanError> {
+    lim.validate()?;
+    if !(start.p.is_finite() && start.v.is_finite() && start.a.is_finite()) {
+        return Err(PlanError::InvalidState);
+    }
+    if !(target_p.is_finite() && target_v.is_finite() && target_v.abs() <= lim.vmax) {
+        return Err(PlanError::InvalidTarget { vmax: lim.vmax });
+    }
+    Ok(())
+}

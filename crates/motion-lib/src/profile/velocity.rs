@@ -1,0 +1,146 @@
+//! Closed-form time-optimal velocity changes (MoveVelocity, Halt, Stop), and the fast
+//! path of position profiles that cruise at vmax.
+//!
+//! Input: a start velocity/acceleration, a target velocity (reached with acceleration 0),
+//! acceleration bounds `[-a_lo, a_hi]` and a jerk bound. Output: at most 3 phases of
+//! constant jerk (or of constant acceleration when the profile is trapezoidal).
+//! Invariant: the change is time-optimal for a free end position (ruckig's third-order
+//! velocity interface with target acceleration 0), acceleration never leaves
+//! `[-a_lo, a_hi]` except to come back from a start acceleration beyond it.
+
+use super::{Limits, Profile, State};
+
+/// One velocity change: three pieces (duration, jerk; or duration, acceleration when
+/// trapezoidal), some possibly of zero duration, with the distance covered.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Change {
+    pub t: [f64; 3],
+    pub x: [f64; 3],
+    pub dist: f64,
+}
+
+/// Time-optimal change from (`v0`, `a0`) to (`vt`, 0) with a in `[-a_lo, a_hi]`, |jerk| <= `j`
+/// (`j` infinite: trapezoidal, `a0` ignored). Closed form, scalars only.
+#[inline(always)]
+pub(crate) fn change(v0: f64, a0: f64, vt: f64, a_hi: f64, a_lo: f64, j: f64) -> Change {
+    if j.is_infinite() {
+        let (t, acc) = if vt > v0 {
+            ((vt - v0) / a_hi, a_hi)
+        } else if vt < v0 {
+            ((v0 - vt) / a_lo, -a_lo)
+        } else {
+            (0.0, 0.0)
+        };
+        return Change {
+            t: [t, 0.0, 0.0],
+            x: [acc, 0.0, 0.0],
+            dist: 0.5 * (v0 + vt) * t,
+        };
+    }
+    let inv_j = 1.0 / j;
+    let v_zero = v0 + 0.5 * a0 * a0.abs() * inv_j;
+    let (s, v0m, a0m, vtm, hi) = if vt >= v_zero {
+        (1.0, v0, a0, vt, a_hi)
+    } else {
+        (-1.0, -v0, -a0, -vt, a_lo)
+    };
+    // Upward change in the mirrored frame: jerk j1 to the peak acceleration `ap`, hold
+    // it for t2, jerk -j back to 0.
+    let (t1, j1, t2, ap) = if a0m > hi {
+        let vz = v0m + 0.5 * a0m * a0m * inv_j;
+        ((a0m - hi) * inv_j, -j, ((vtm - vz) / hi).max(0.0), hi)
+    } else {
+        let ap = (j * (vtm - v0m) + 0.5 * a0m * a0m).max(0.0).sqrt();
+        if ap <= hi {
+            ((ap - a0m).max(0.0) * inv_j, j, 0.0, ap)
+        } else {
+            let t2 = ((vtm - v0m - (hi * hi - 0.5 * a0m * a0m) * inv_j) / hi).max(0.0);
+            ((hi - a0m) * inv_j, j, t2, hi)
+        }
+    };
+    let t3 = ap * inv_j;
+    // Distance in the mirrored frame, piece by piece.
+    const SIXTH: f64 = 1.0 / 6.0;
+    let d1 = t1 * (v0m + t1 * (0.5 * a0m + t1 * j1 * SIXTH));
+    let v1 = v0m + t1 * (a0m + 0.5 * t1 * j1);
+    let d2 = t2 * (v1 + 0.5 * ap * t2);
+    let v2 = v1 + ap * t2;
+    let d3 = t3 * (v2 + t3 * (0.5 * ap - t3 * j * SIXTH));
+    Change {
+        t: [t1, t2, t3],
+        x: [s * j1, 0.0, -s * j],
+        dist: s * (d1 + d2 + d3),
+    }
+}
+
+/// Jerk bound used by the planners: infinite for trapezoidal limits.
+pub(crate) fn jerk_bound(lim: &Limits) -> f64 {
+    if lim.is_trapezoidal() {
+        f64::INFINITY
+    } else {
+        lim.jmax
+    }
+}
+
+/// The time-optimal velocity change from `cur` to `vt` (acceleration 0).
+/// The travel direction is that of `vt` (or of the current velocity when `vt` = 0):
+/// `amax` bounds the acceleration in that direction, `dmax` the deceleration.
+pub(crate) fn velocity_change(cur: State, vt: f64, lim: &Limits) -> Profile {
+    let dir = if vt != 0.0 {
+        vt.signum()
+    } else if cur.v != 0.0 {
+        cur.v.signum()
+    } else {
+        1.0
+    };
+    let j = jerk_bound(lim);
+    let a0 = if j.is_infinite() { 0.0 } else { cur.a };
+    let c = change(dir * cur.v, dir * a0, dir * vt, lim.amax, lim.dmax, j);
+    let items = [0, 1, 2].map(|i| (c.t[i], dir * c.x[i]));
+    Profile::build(cur, &items, j.is_infinite(), None)
+}
+
+/// Fast path of [`Profile::position`]: when the start is inside the limits and the
+/// distance leaves room for a cruise at vmax, the time-optimal profile is the
+/// time-optimal change to vmax, the cruise, and the time-optimal change to the target
+/// velocity (ruckig's velocity-limited profile families). Returns the phases
+/// (duration, jerk), the cruise being the fourth, at velocity `sign(target_p - start.p)
+/// * vmax`. None otherwise (the kernel then enumerates every family).
+#[inline(always)]
+pub(crate) fn position_cruising(
+    start: State,
+    target_p: f64,
+    target_v: f64,
+    lim: &Limits,
+) -> Option<[(f64, f64); 7]> {
+    if lim.is_trapezoidal() {
+        return None;
+    }
+    let s = if target_p >= start.p { 1.0 } else { -1.0 };
+    let (v0, a0, vf, j) = (s * start.v, s * start.a, s * target_v, lim.jmax);
+    let v_zero = v0 + a0 * a0.abs() / (2.0 * j);
+    if v0.abs() > lim.vmax
+        || a0 > lim.amax
+        || a0 < -lim.dmax
+        || v_zero.abs() > lim.vmax
+        || vf.abs() > lim.vmax
+    {
+        return None;
+    }
+    let c1 = change(v0, a0, lim.vmax, lim.amax, lim.dmax, j);
+    let c2 = change(lim.vmax, 0.0, vf, lim.amax, lim.dmax, j);
+    let cruise = (s * (target_p - start.p) - c1.dist - c2.dist) / lim.vmax;
+    if cruise.is_nan() || cruise <= 0.0 {
+        return None;
+    }
+    let items = [
+        (c1.t[0], s * c1.x[0]),
+        (c1.t[1], s * c1.x[1]),
+        (c1.t[2], s * c1.x[2]),
+        (cruise, 0.0),
+        (c2.t[0], s * c2.x[0]),
+        (c2.t[1], s * c2.x[1]),
+        (c2.t[2], s * c2.x[2]),
+    ];
+    Some(items)
+}

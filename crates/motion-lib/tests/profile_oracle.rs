@@ -1,0 +1,160 @@
+//! Oracle test: every problem of /work/shared/oracle/ruckig-profiles.jsonl (ruckig 0.19.4
+//! durations) must be planned with the same duration (1e-6 relative).
+
+use motion_lib::profile::line::Line;
+use motion_lib::profile::{Limits, Profile, State};
+use serde_json::Value;
+
+fn oracle() -> String {
+    // The main repo sits at /work/main, worktrees at /work/wt/<name>: try both depths.
+    let dir = env!("CARGO_MANIFEST_DIR");
+    ["/../../../shared", "/../../../../shared"]
+        .iter()
+        .find_map(|up| {
+            std::fs::read_to_string(format!("{dir}{up}/oracle/ruckig-profiles.jsonl")).ok()
+        })
+        .expect("oracle file /work/shared/oracle/ruckig-profiles.jsonl readable")
+}
+
+fn f(v: &Value, k: &str) -> f64 {
+    v[k].as_f64().unwrap()
+}
+
+fn fs(v: &Value, k: &str) -> Vec<f64> {
+    v[k].as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect()
+}
+
+/// Plans one oracle problem; returns (kind, planned duration, oracle duration).
+fn plan(v: &Value) -> (String, f64, f64) {
+    let kind = v["kind"].as_str().unwrap().to_string();
+    let want = f(v, "duration");
+    let got = if kind == "line3" {
+        let axes: Vec<Limits> = (0..3)
+            .map(|i| Limits {
+                vmax: fs(v, "vmax")[i],
+                amax: fs(v, "amax")[i],
+                dmax: fs(v, "amax")[i],
+                jmax: fs(v, "jmax")[i],
+            })
+            .collect();
+        Line::plan(&fs(v, "start"), &fs(v, "end"), &axes).map_or(f64::NAN, |l| l.duration())
+    } else {
+        let start = State {
+            p: f(v, "p0"),
+            v: f(v, "v0"),
+            a: f(v, "a0"),
+        };
+        let lim = Limits {
+            vmax: f(v, "vmax"),
+            amax: f(v, "amax"),
+            dmax: f(v, "dmax"),
+            jmax: f(v, "jmax"),
+        };
+        Profile::position(start, f(v, "p1"), f(v, "v1"), &lim).map_or(f64::NAN, |p| p.duration())
+    };
+    (kind, got, want)
+}
+
+#[test]
+fn oracle_durations_match_ruckig() {
+    let text = oracle();
+    let mut total = 0;
+    let mut bad = Vec::new();
+    for line in text.lines().filter(|l| !l.trim().is_empty()) {
+        let v: Value = serde_json::from_str(line).unwrap();
+        let (kind, got, want) = plan(&v);
+        total += 1;
+        let ok = (got - want).abs() <= 1e-6 * want.abs().max(1e-9);
+        if !ok {
+            bad.push(format!("{kind}: got {got}, want {want}: {line}"));
+        }
+    }
+    assert_eq!(total, 2000, "the oracle holds 2000 problems");
+    eprintln!("oracle: {} of {total} durations match", total - bad.len());
+    for b in bad.iter().take(10) {
+        eprintln!("{b}");
+    }
+    assert!(bad.is_empty(), "{} mismatches", bad.len());
+}
+
+/// How far the profile leaves the segment from `p0` to `p1` (beyond the target, or behind
+/// the start), checked at the phase boundaries and at the position extrema inside phases
+/// (v = 0).
+fn excursion(prof: &Profile, p0: f64, p1: f64) -> f64 {
+    let dir = if p1 >= p0 { 1.0 } else { -1.0 };
+    let mut worst = f64::NEG_INFINITY;
+    let mut t0 = 0.0;
+    for ph in prof.phases() {
+        let s = prof.at(t0);
+        let mut ps = vec![s.p, prof.at(t0 + ph.duration).p];
+        // v(t) = v + a t + j t^2 / 2 = 0 inside the phase.
+        let (a2, b, c) = (0.5 * ph.jerk, s.a, s.v);
+        let roots: Vec<f64> = if a2 == 0.0 {
+            if b != 0.0 {
+                vec![-c / b]
+            } else {
+                vec![]
+            }
+        } else {
+            let d = b * b - 4.0 * a2 * c;
+            if d < 0.0 {
+                vec![]
+            } else {
+                vec![(-b + d.sqrt()) / (2.0 * a2), (-b - d.sqrt()) / (2.0 * a2)]
+            }
+        };
+        for tz in roots {
+            if tz > 0.0 && tz < ph.duration {
+                ps.push(s.integrate(tz, ph.jerk).p);
+            }
+        }
+        for p in ps {
+            worst = worst.max(dir * (p - p1)).max(dir * (p0 - p));
+        }
+        t0 += ph.duration;
+    }
+    worst
+}
+
+/// The overshoot policy is ruckig's: the time-optimal profile, which for the oracle's
+/// `monotone: false` problems leaves the segment from start to target (overshoots the
+/// target and comes back, or first backs away behind the start), and for
+/// `monotone: true` problems stays within it.
+#[test]
+fn non_monotone_oracle_problems_overshoot_like_ruckig() {
+    let text = oracle();
+    let (mut overshooting, mut monotone) = (0, 0);
+    for line in text.lines().filter(|l| !l.trim().is_empty()) {
+        let v: Value = serde_json::from_str(line).unwrap();
+        let Some(mono) = v["monotone"].as_bool() else {
+            continue;
+        };
+        let start = State {
+            p: f(&v, "p0"),
+            v: f(&v, "v0"),
+            a: f(&v, "a0"),
+        };
+        let lim = Limits {
+            vmax: f(&v, "vmax"),
+            amax: f(&v, "amax"),
+            dmax: f(&v, "dmax"),
+            jmax: f(&v, "jmax"),
+        };
+        let (p0, p1) = (start.p, f(&v, "p1"));
+        let prof = Profile::position(start, p1, f(&v, "v1"), &lim).unwrap();
+        let over = excursion(&prof, p0, p1);
+        let tol = 1e-9 * (p1.abs() + p0.abs()).max(1.0);
+        assert_eq!(over > tol, !mono, "{line}: excursion {over}");
+        if mono {
+            monotone += 1;
+        } else {
+            overshooting += 1;
+        }
+    }
+    eprintln!("{overshooting} overshooting and {monotone} monotone problems, as labelled");
+    assert!(overshooting > 100 && monotone > 100);
+}
