@@ -4,28 +4,78 @@
 //! Input: template files. Output: a [`Library`] of validated templates, looked up case-insensitively by block
 //! name; every problem is a diagnostic in the template file. Invariant: block names are unique in a library.
 
+use crate::cbody::{self, Scope};
 use crate::template::{self, Template};
 use diagnostics::{code, Diagnostic, Diagnostics, SourceMap};
+use std::collections::BTreeSet;
 use std::path::Path;
 
 /// The built-in templates: (file name, text).
 pub const BUILTIN: &[(&str, &str)] = &[
-    ("MC_GearIn.xml", include_str!("../../../templates/MC_GearIn.xml")),
-    ("MC_Halt.xml", include_str!("../../../templates/MC_Halt.xml")),
-    ("MC_Home.xml", include_str!("../../../templates/MC_Home.xml")),
-    ("MC_MoveAbsolute.xml", include_str!("../../../templates/MC_MoveAbsolute.xml")),
-    ("MC_MoveAdditive.xml", include_str!("../../../templates/MC_MoveAdditive.xml")),
-    ("MC_MoveRelative.xml", include_str!("../../../templates/MC_MoveRelative.xml")),
-    ("MC_MoveVelocity.xml", include_str!("../../../templates/MC_MoveVelocity.xml")),
-    ("MC_Power.xml", include_str!("../../../templates/MC_Power.xml")),
-    ("MC_ReadActualPosition.xml", include_str!("../../../templates/MC_ReadActualPosition.xml")),
-    ("MC_ReadActualVelocity.xml", include_str!("../../../templates/MC_ReadActualVelocity.xml")),
-    ("MC_ReadAxisError.xml", include_str!("../../../templates/MC_ReadAxisError.xml")),
-    ("MC_ReadStatus.xml", include_str!("../../../templates/MC_ReadStatus.xml")),
-    ("MC_Reset.xml", include_str!("../../../templates/MC_Reset.xml")),
-    ("MC_SetOverride.xml", include_str!("../../../templates/MC_SetOverride.xml")),
-    ("MC_SetPosition.xml", include_str!("../../../templates/MC_SetPosition.xml")),
-    ("MC_Stop.xml", include_str!("../../../templates/MC_Stop.xml")),
+    (
+        "MC_GearIn.xml",
+        include_str!("../../../templates/MC_GearIn.xml"),
+    ),
+    (
+        "MC_Halt.xml",
+        include_str!("../../../templates/MC_Halt.xml"),
+    ),
+    (
+        "MC_Home.xml",
+        include_str!("../../../templates/MC_Home.xml"),
+    ),
+    (
+        "MC_MoveAbsolute.xml",
+        include_str!("../../../templates/MC_MoveAbsolute.xml"),
+    ),
+    (
+        "MC_MoveAdditive.xml",
+        include_str!("../../../templates/MC_MoveAdditive.xml"),
+    ),
+    (
+        "MC_MoveRelative.xml",
+        include_str!("../../../templates/MC_MoveRelative.xml"),
+    ),
+    (
+        "MC_MoveVelocity.xml",
+        include_str!("../../../templates/MC_MoveVelocity.xml"),
+    ),
+    (
+        "MC_Power.xml",
+        include_str!("../../../templates/MC_Power.xml"),
+    ),
+    (
+        "MC_ReadActualPosition.xml",
+        include_str!("../../../templates/MC_ReadActualPosition.xml"),
+    ),
+    (
+        "MC_ReadActualVelocity.xml",
+        include_str!("../../../templates/MC_ReadActualVelocity.xml"),
+    ),
+    (
+        "MC_ReadAxisError.xml",
+        include_str!("../../../templates/MC_ReadAxisError.xml"),
+    ),
+    (
+        "MC_ReadStatus.xml",
+        include_str!("../../../templates/MC_ReadStatus.xml"),
+    ),
+    (
+        "MC_Reset.xml",
+        include_str!("../../../templates/MC_Reset.xml"),
+    ),
+    (
+        "MC_SetOverride.xml",
+        include_str!("../../../templates/MC_SetOverride.xml"),
+    ),
+    (
+        "MC_SetPosition.xml",
+        include_str!("../../../templates/MC_SetPosition.xml"),
+    ),
+    (
+        "MC_Stop.xml",
+        include_str!("../../../templates/MC_Stop.xml"),
+    ),
 ];
 
 #[derive(Debug, Default, Clone)]
@@ -98,4 +148,40 @@ impl Library {
     pub fn templates(&self) -> &[Template] {
         &self.templates
     }
+    /// Checks every body against its head and the runtime symbols (see [`crate::cbody`]).
+    pub fn check_bodies(&self, runtime: &BTreeSet<String>, diags: &mut Diagnostics) -> bool {
+        let embedded: BTreeSet<String> = self.templates.iter().map(|t| t.block.clone()).collect();
+        let mut clean = true;
+        for t in &self.templates {
+            let mut declared: BTreeSet<String> = t.params.iter().map(|p| p.abbr.clone()).collect();
+            declared.insert("FuncNum".into());
+            declared.extend(t.locals.iter().map(|l| l.name.clone()));
+            let scope = Scope {
+                declared,
+                runtime,
+                embedded_functions: &embedded,
+            };
+            clean &= cbody::check(&t.body, &scope, &t.block, diags);
+        }
+        clean
+    }
 }
+
+/// The identifiers a C header declares (functions, types, macros): what template bodies may call.
+pub fn header_symbols(header: &str) -> BTreeSet<String> {
+    let (toks, _) = cbody::tokens(header);
+    toks.iter()
+        .filter(|t| t.kind == cbody::Tok::Ident)
+        .map(|t| header[t.start..t.end].to_string())
+        .collect()
+}
+
+/// The symbols template bodies may use: the motion library's header and the runtime's engine accessor.
+pub fn runtime_symbols() -> BTreeSet<String> {
+    let mut s = header_symbols(MOTION_HEADER);
+    s.insert("ladderc_motion_engine".into());
+    s
+}
+
+/// The motion library's C header (generated by cbindgen, committed in crates/motion-lib/include).
+pub const MOTION_HEADER: &str = include_str!("../../motion-lib/include/motion_lib.h");

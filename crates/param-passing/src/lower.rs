@@ -649,7 +649,10 @@ impl PouLowering<'_> {
         match (&src, p.class) {
             (Operand::Var(v), TypeClass::Struct) => {
                 let mut v = v.clone();
-                v.accessors.push(Accessor::Field(id(crate::prelude::index_field(&p.iec_type), v.span)));
+                v.accessors.push(Accessor::Field(id(
+                    crate::prelude::index_field(&p.iec_type),
+                    v.span,
+                )));
                 Operand::Var(v)
             }
             _ => src,
@@ -675,17 +678,32 @@ impl PouLowering<'_> {
                     out.push(simple(Op::Ld, false, Some(int_lit(v as i128, span)), span));
                 }
                 (TypeClass::Bool, _) => {
-                    let t = Operand::Literal(Literal { kind: LiteralKind::Bool(true), type_prefix: None, span });
+                    let t = Operand::Literal(Literal {
+                        kind: LiteralKind::Bool(true),
+                        type_prefix: None,
+                        span,
+                    });
                     out.push(simple(Op::Ld, false, Some(src.clone()), span));
                     out.push(simple(Op::Eq, false, Some(t), span));
-                    out.push(instr(InstrKind::FunctionCall { name: id("BOOL_TO_BYTE", span), args: CallArgs::None }, span));
+                    out.push(instr(
+                        InstrKind::FunctionCall {
+                            name: id("BOOL_TO_BYTE", span),
+                            args: CallArgs::None,
+                        },
+                        span,
+                    ));
                 }
                 _ => out.push(simple(Op::Ld, false, Some(src.clone()), span)),
             }
             out.push(simple(Op::St, false, Some(dst), span));
         }
         // 2. the call of the static-library function
-        out.push(instr(InstrKind::EmbeddedC { name: id(&t.block, span) }, span));
+        out.push(instr(
+            InstrKind::EmbeddedC {
+                name: id(&t.block, span),
+            },
+            span,
+        ));
         // 3. transfer out of TM: into the instance, then into the `=>` targets
         for p in t.carried() {
             let src = self.view(t, layout, p, span);
@@ -720,33 +738,63 @@ impl PouLowering<'_> {
         let mut tail = Vec::new();
         for p in &t.params {
             let local = format!("{}_{n}", p.abbr);
-            head.push(HeadLocal { c_type: p.c_type(), local: local.clone(), class: p.class, source: Self::source(p, instance, args) });
+            head.push(HeadLocal {
+                c_type: p.c_type(),
+                local: local.clone(),
+                class: p.class,
+                source: Self::source(p, instance, args),
+            });
             if matches!(p.direction, Direction::Output | Direction::State) {
-                tail.push(Feedback { target: field(instance, &p.name), local: local.clone(), class: p.class, negated: false });
+                tail.push(Feedback {
+                    target: field(instance, &p.name),
+                    local: local.clone(),
+                    class: p.class,
+                    negated: false,
+                });
                 for (target, negated) in output_targets(p, args) {
-                    tail.push(Feedback { target, local: local.clone(), class: p.class, negated });
+                    tail.push(Feedback {
+                        target,
+                        local: local.clone(),
+                        class: p.class,
+                        negated,
+                    });
                 }
             }
         }
-        let renames: HashMap<&str, String> = t.params.iter().map(|p| (p.abbr.as_str(), format!("{}_{n}", p.abbr))).collect();
+        let renames: HashMap<&str, String> = t
+            .params
+            .iter()
+            .map(|p| (p.abbr.as_str(), format!("{}_{n}", p.abbr)))
+            .collect();
         let body = rename_identifiers(&t.body.text, &renames);
         self.synthesized.push(Synthesized {
             name: name.clone(),
             pou: self.pou_name.clone(),
             func_num: t.func_num,
             head,
-            locals: t.locals.iter().map(|l| (l.c_type.clone(), l.name.clone())).collect(),
+            locals: t
+                .locals
+                .iter()
+                .map(|l| (l.c_type.clone(), l.name.clone()))
+                .collect(),
             body,
             tail,
             call_span: span,
         });
-        out.push(instr(InstrKind::EmbeddedC { name: id(&name, span) }, span));
+        out.push(instr(
+            InstrKind::EmbeddedC {
+                name: id(&name, span),
+            },
+            span,
+        ));
     }
 }
 
 /// The `=>` targets a call binds to output `p`, with their `NOT`.
 fn output_targets(p: &Param, args: &CallArgs) -> Vec<(Operand, bool)> {
-    let CallArgs::Formal(f) = args else { return Vec::new() };
+    let CallArgs::Formal(f) = args else {
+        return Vec::new();
+    };
     f.iter()
         .filter(|a| a.name.is(&p.name))
         .filter_map(|a| match a.dir {

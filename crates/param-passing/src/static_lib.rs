@@ -56,7 +56,13 @@ pub fn function_c(t: &Template, layout: &TmLayout) -> String {
     let _ = writeln!(c, "    int FuncNum = {};", t.func_num);
     for p in &t.params {
         let slot = layout.slot(&p.name).expect("every parameter has a slot");
-        let _ = writeln!(c, "    {} {} = {};", p.c_type(), p.abbr, load_expr(p, slot.offset));
+        let _ = writeln!(
+            c,
+            "    {} {} = {};",
+            p.c_type(),
+            p.abbr,
+            load_expr(p, slot.offset)
+        );
     }
     for l in &t.locals {
         let _ = writeln!(c, "    {} {};", l.c_type, l.name);
@@ -79,7 +85,10 @@ pub fn function_c(t: &Template, layout: &TmLayout) -> String {
 
 /// The static library: the float helpers, then every block's guarded function, with the guards of `used`
 /// defined first (only those functions are compiled).
-pub fn library_c<'a>(all: impl IntoIterator<Item = (&'a Template, &'a TmLayout)>, used: &[&str]) -> String {
+pub fn library_c<'a>(
+    all: impl IntoIterator<Item = (&'a Template, &'a TmLayout)>,
+    used: &[&str],
+) -> String {
     let mut c = String::from(
         "/* Static library of the IL-instruction method (generated from templates/). */\n\
          #include \"ladderc_rt.h\"\n#include \"motion_lib.h\"\n\n",

@@ -144,14 +144,20 @@ impl Template {
     }
     /// Inputs and in-outs: what a program binds with `:=`.
     pub fn inputs(&self) -> impl Iterator<Item = &Param> {
-        self.params.iter().filter(|p| matches!(p.direction, Direction::Input | Direction::InOut))
+        self.params
+            .iter()
+            .filter(|p| matches!(p.direction, Direction::Input | Direction::InOut))
     }
     pub fn outputs(&self) -> impl Iterator<Item = &Param> {
-        self.params.iter().filter(|p| p.direction == Direction::Output)
+        self.params
+            .iter()
+            .filter(|p| p.direction == Direction::Output)
     }
     /// Outputs and state: what the instance keeps between scans and the library reads back.
     pub fn carried(&self) -> impl Iterator<Item = &Param> {
-        self.params.iter().filter(|p| matches!(p.direction, Direction::Output | Direction::State))
+        self.params
+            .iter()
+            .filter(|p| matches!(p.direction, Direction::Output | Direction::State))
     }
 }
 
@@ -373,7 +379,8 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
         }
     };
     let default = p.attr("default").map(|a| a.value.clone());
-    if matches!(direction, Direction::Output | Direction::State) && (required || default.is_some()) {
+    if matches!(direction, Direction::Output | Direction::State) && (required || default.is_some())
+    {
         let a = p.attr("required").or(p.attr("default")).unwrap();
         diags.push(
             Diagnostic::error(

@@ -15,11 +15,12 @@ const TEMPLATE: &str = r#"<blockTemplate name="MC_Demo" funcNum="7">
     <param name="BufferMode" abbr="BM" direction="input" class="byte" type="MC_BUFFER_MODE" default="0"/>
     <param name="Done" abbr="Dn" direction="output" class="bool" type="BOOL"/>
     <param name="ErrorID" abbr="EID" direction="output" class="word" type="WORD"/>
+    <param name="State0" abbr="St0" direction="state" class="lword" type="LWORD"/>
   </parameters>
   <body><![CDATA[
     Dn = (uint8_t)(Ex && Pos > 0.0 && Ax == 1u && BM == 0);
     EID = 0;
-    Handle = (uint32_t)FuncNum;
+    St0 = (uint64_t)FuncNum;
   ]]></body>
 </blockTemplate>"#;
 
@@ -112,8 +113,8 @@ fn il_method_emits_input_transfer_one_func_and_output_transfer() {
     let (il, lowered) = lower_and_print(Strategy::Il);
     insta::assert_snapshot!(il);
     assert_eq!(lowered.reports[0].method, Method::Il);
-    // 8 (LREAL) + 4 (axis) + 4 (handle) + 1 + 1 + 1 (bytes) + 2 (word) = 21.
-    assert_eq!(lowered.reports[0].tm_bytes, 21);
+    // 8 (LREAL) + 8 (state) + 4 (axis) + 2 (word) + 1 + 1 + 1 (bytes) = 25.
+    assert_eq!(lowered.reports[0].tm_bytes, 25);
     assert_eq!(il.matches("FUNC MC_Demo()").count(), 1);
 }
 
@@ -131,7 +132,15 @@ fn template_method_emits_exactly_one_func_per_call() {
         "{}",
         f.body
     );
-    assert!(f.body.contains("Handle_1 = (uint32_t)FuncNum;"));
+    assert!(f.body.contains("St0_1 = (uint64_t)FuncNum;"));
+    // The head reads outputs and state back from the instance; the tail writes them (and `=>` targets).
+    let heads: Vec<&str> = f.head.iter().map(|h| h.local.as_str()).collect();
+    assert_eq!(
+        heads,
+        ["Ax_1", "Ex_1", "Pos_1", "BM_1", "Dn_1", "EID_1", "St0_1"]
+    );
+    let tails: Vec<&str> = f.tail.iter().map(|t| t.local.as_str()).collect();
+    assert_eq!(tails, ["Dn_1", "Dn_1", "EID_1", "EID_1", "St0_1"]);
     assert_eq!(lowered.reports[0].il_instructions, 1);
 }
 
