@@ -1,1 +1,3 @@
-//! ladder-compiler (to be written).
+//! wip
+pub mod values;
+pub mod xml;
