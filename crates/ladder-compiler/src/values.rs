@@ -395,7 +395,10 @@ mod tests {
         let k = |t: &str| literal(t, sp()).map(|l| l.kind);
         assert_eq!(k("T#4s"), Some(LiteralKind::Duration(4_000_000_000)));
         assert_eq!(k("T#0.5ms"), Some(LiteralKind::Duration(500_000)));
-        assert_eq!(k("TIME#1h2m"), Some(LiteralKind::Duration(3_720_000_000_000)));
+        assert_eq!(
+            k("TIME#1h2m"),
+            Some(LiteralKind::Duration(3_720_000_000_000))
+        );
         assert_eq!(k("2240.0"), Some(LiteralKind::Real(2240.0)));
         assert_eq!(k("-17"), Some(LiteralKind::Int(-17)));
         assert_eq!(k("16#FF"), Some(LiteralKind::Int(255)));
@@ -408,7 +411,10 @@ mod tests {
                 value: "a'b".into()
             })
         );
-        assert_eq!(literal("INT#5", sp()).unwrap().type_prefix.unwrap().name, "INT");
+        assert_eq!(
+            literal("INT#5", sp()).unwrap().type_prefix.unwrap().name,
+            "INT"
+        );
         assert!(literal("abc", sp()).is_none());
         assert_eq!(duration("00:00:00.100000"), Some(100_000_000));
     }
@@ -427,9 +433,15 @@ mod tests {
         let Some(Operand::Address(a)) = operand("%QX0.1", sp()) else {
             panic!()
         };
-        assert_eq!((a.area, a.size, a.path), (Area::Output, AddressSize::Bit, vec![0, 1]));
+        assert_eq!(
+            (a.area, a.size, a.path),
+            (Area::Output, AddressSize::Bit, vec![0, 1])
+        );
         assert!(operand("a +", sp()).is_none());
         assert!(operand("", sp()).is_none());
-        assert!(matches!(operand("Color#red", sp()), Some(Operand::EnumValue { .. })));
+        assert!(matches!(
+            operand("Color#red", sp()),
+            Some(Operand::EnumValue { .. })
+        ));
     }
 }

@@ -127,7 +127,10 @@ fn decode_attr_value(raw: &str) -> String {
     while let Some(i) = rest.find('&') {
         out.push_str(&rest[..i]);
         let after = &rest[i + 1..];
-        match after.find(';').and_then(|j| decode_entity(&after[..j]).map(|d| (j, d))) {
+        match after
+            .find(';')
+            .and_then(|j| decode_entity(&after[..j]).map(|d| (j, d)))
+        {
             Some((j, d)) => {
                 out.push_str(&d);
                 rest = &after[j + 1..];
