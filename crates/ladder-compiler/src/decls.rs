@@ -157,16 +157,33 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
 }
 
 /// `<initialValue>`: simpleValue, arrayValue, structValue.
-pub fn initial_value(ctx: &mut Ctx, holder: &Element) -> Option<Initializer> {
+/// `ty` is the declared type: a string variable's initial value written without quotes (as v1.0
+/// exports do) is taken as the string itself.
+pub fn initial_value(ctx: &mut Ctx, holder: &Element, ty: Option<&TypeRef>) -> Option<Initializer> {
     let v = holder.children.first()?;
-    value_element(ctx, v)
+    value_element(ctx, v, ty)
 }
 
-fn value_element(ctx: &mut Ctx, v: &Element) -> Option<Initializer> {
+fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Initializer> {
     match v.name.as_str() {
         "simpleValue" => {
             let text = v.attr("value").unwrap_or_default();
             let span = ctx.attr_span(v, "value");
+            if let Some(TypeRef::String { wide, .. }) = ty {
+                let t = text.trim();
+                if !(t.starts_with('\'') || t.starts_with('"')) {
+                    return Some(Initializer::Value(il_frontend::ast::Operand::Literal(
+                        il_frontend::ast::Literal {
+                            kind: il_frontend::ast::LiteralKind::String {
+                                wide: *wide,
+                                value: text.to_string(),
+                            },
+                            type_prefix: None,
+                            span,
+                        },
+                    )));
+                }
+            }
             match values::operand(text, span) {
                 Some(op) => Some(Initializer::Value(op)),
                 None => {
@@ -183,7 +200,10 @@ fn value_element(ctx: &mut Ctx, v: &Element) -> Option<Initializer> {
             let mut elems = Vec::new();
             for e in v.children_named("value") {
                 let repeat = e.attr("repeatCount").and_then(|r| r.trim().parse().ok());
-                let inner = e.children.first().and_then(|c| value_element(ctx, c))?;
+                let inner = e
+                    .children
+                    .first()
+                    .and_then(|c| value_element(ctx, c, None))?;
                 elems.push(ArrayInitElement {
                     repeat,
                     value: inner,
@@ -196,7 +216,10 @@ fn value_element(ctx: &mut Ctx, v: &Element) -> Option<Initializer> {
             for e in v.children_named("value") {
                 let name = e.attr("member").unwrap_or_default();
                 let span = ctx.attr_span(e, "member");
-                let inner = e.children.first().and_then(|c| value_element(ctx, c))?;
+                let inner = e
+                    .children
+                    .first()
+                    .and_then(|c| value_element(ctx, c, None))?;
                 fields.push((Ident::new(name, span), inner));
             }
             Some(Initializer::Struct(fields, ctx.tag(v)))
@@ -246,7 +269,9 @@ pub fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
         }
         None => None,
     };
-    let init = v.child("initialValue").and_then(|i| initial_value(ctx, i));
+    let init = v
+        .child("initialValue")
+        .and_then(|i| initial_value(ctx, i, Some(&ty)));
     Some(VarDecl {
         name,
         location,
@@ -309,7 +334,9 @@ pub fn data_type(ctx: &mut Ctx, d: &Element) -> Option<TypeDecl> {
         );
         return None;
     };
-    let init = d.child("initialValue").and_then(|i| initial_value(ctx, i));
+    let init = d
+        .child("initialValue")
+        .and_then(|i| initial_value(ctx, i, None));
     let def = match base.name.as_str() {
         "struct" => TypeDef::Struct {
             fields: base

@@ -174,6 +174,11 @@ impl<'i> BodyLowering<'i> {
 
     fn declare_trig(&mut self, name: &str, falling: bool, span: Span) {
         if self.hidden_names.insert(name.to_string()) {
+            let ty = if falling { "F_TRIG" } else { "R_TRIG" };
+            self.vars.insert(
+                name.to_ascii_uppercase(),
+                TypeRef::Named(Ident::new(ty, span)),
+            );
             self.hidden.push(VarDecl {
                 name: Ident::new(name, span),
                 location: None,
@@ -396,47 +401,45 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             }
             deps.insert(i, d);
         }
-        // Loops through an in-out variable read the variable's previous value: cut them there.
-        for comp in graph::cycles(net, &deps) {
-            let set: HashSet<usize> = comp.iter().copied().collect();
-            for &i in &comp {
-                if let Some(d) = deps.get_mut(&i) {
-                    d.retain(|s| {
-                        !(set.contains(s) && matches!(g.nodes[*s].kind, Kind::InOutVar { .. }))
-                    });
+        // A loop is cut at a wire leaving a variable or a function block instance: the reader then
+        // sees the value from the previous scan. Variables are preferred, then the wire that runs
+        // furthest backwards (right to left), as drawn feedback wires do.
+        loop {
+            let comps = graph::cycles(net, &deps);
+            if comps.is_empty() {
+                break;
+            }
+            for comp in comps {
+                let set: HashSet<usize> = comp.iter().copied().collect();
+                let mut best: Option<((u8, i64, i64), usize, usize)> = None;
+                for &t in &comp {
+                    for &s in deps.get(&t).map(Vec::as_slice).unwrap_or(&[]) {
+                        if !set.contains(&s) {
+                            continue;
+                        }
+                        let rank = match &g.nodes[s].kind {
+                            Kind::InOutVar { .. } => 2,
+                            Kind::Block { type_name, .. } if self.is_fb_block(type_name) => 1,
+                            _ => continue,
+                        };
+                        let key = (rank, g.nodes[s].x - g.nodes[t].x, -(g.nodes[s].y));
+                        if best.as_ref().is_none_or(|(k, _, _)| key > *k) {
+                            best = Some((key, t, s));
+                        }
+                    }
+                }
+                match best {
+                    Some((_, t, s)) => {
+                        if let Some(d) = deps.get_mut(&t) {
+                            d.retain(|x| *x != s);
+                        }
+                    }
+                    None => {
+                        self.report_loop(ctx, comp);
+                        return None;
+                    }
                 }
             }
-        }
-        let remaining = graph::cycles(net, &deps);
-        if let Some(comp) = remaining.first() {
-            let mut comp = comp.clone();
-            comp.sort_by_key(|&i| g.nodes[i].order_key());
-            let names: Vec<String> = comp
-                .iter()
-                .map(|&i| match &g.nodes[i].kind {
-                    Kind::Block { type_name, .. } => {
-                        format!("{type_name} (localId {})", g.nodes[i].id)
-                    }
-                    _ => format!("localId {}", g.nodes[i].id),
-                })
-                .collect();
-            let first = comp[0];
-            let mut d = self
-                .diag(
-                    ctx,
-                    code::E3010,
-                    first,
-                    g.nodes[first].span,
-                    format!("feedback loop without a variable: {}", names.join(" -> ")),
-                )
-                .with_hint(
-                    "route the loop through an in-out variable; it then reads the previous value",
-                );
-            for &i in &comp[1..] {
-                d = d.with_label(g.nodes[i].span, "part of the loop");
-            }
-            ctx.report(d);
-            return None;
         }
         // Kahn's algorithm, ties broken by the documented order key.
         let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
@@ -468,6 +471,41 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             }
         }
         Some(order)
+    }
+
+    fn is_fb_block(&self, type_name: &str) -> bool {
+        matches!(
+            self.block_type(type_name),
+            Some(BlockType::UserFb(_) | BlockType::StdFb(_) | BlockType::Motion)
+        )
+    }
+
+    fn report_loop(&mut self, ctx: &mut Ctx, mut comp: Vec<usize>) {
+        let g = self.g;
+        comp.sort_by_key(|&i| g.nodes[i].order_key());
+        let names: Vec<String> = comp
+            .iter()
+            .map(|&i| match &g.nodes[i].kind {
+                Kind::Block { type_name, .. } => format!("{type_name} (localId {})", g.nodes[i].id),
+                _ => format!("localId {}", g.nodes[i].id),
+            })
+            .collect();
+        let first = comp[0];
+        let mut d = self
+            .diag(
+                ctx,
+                code::E3010,
+                first,
+                g.nodes[first].span,
+                format!("feedback loop without a variable: {}", names.join(" -> ")),
+            )
+            .with_hint(
+                "route the loop through an in-out variable; it then reads the previous value",
+            );
+        for &i in &comp[1..] {
+            d = d.with_label(g.nodes[i].span, "part of the loop");
+        }
+        ctx.report(d);
     }
 
     // ------------------------------------------------------------ values
@@ -533,15 +571,29 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             return None;
         }
         if !self.built.contains(&w.from) {
-            // Only a loop cut at an in-out variable gets here: read the variable's previous value.
-            if let Kind::InOutVar {
-                expr, expr_span, ..
-            } = &src.kind
-            {
-                let op = values::operand(expr, *expr_span)?;
-                return Some(self.val(Val::Leaf { op, neg: false }, src.span));
+            // Only a cut loop gets here: read the previous value of the variable or instance output.
+            match &src.kind {
+                Kind::InOutVar {
+                    expr, expr_span, ..
+                } => {
+                    let op = values::operand(expr, *expr_span)?;
+                    return Some(self.val(Val::Leaf { op, neg: false }, src.span));
+                }
+                Kind::Block {
+                    instance: Some((inst, inst_span)),
+                    outputs,
+                    ..
+                } => {
+                    let inst = values::var_ref(inst, *inst_span)?;
+                    let pin = match &w.pin {
+                        Some(p) => p.clone(),
+                        None => outputs.first()?.name.clone(),
+                    };
+                    let op = field_operand(&inst, &pin, w.span);
+                    return Some(self.val(Val::Leaf { op, neg: false }, src.span));
+                }
+                _ => return None,
             }
-            return None;
         }
         let key = match &src.kind {
             Kind::Block { outputs, .. } => match &w.pin {
@@ -673,6 +725,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         let count = *n;
         let entry = self.pou.pools.entry(key).or_insert_with(|| (ty.clone(), 0));
         entry.1 = entry.1.max(count);
+        self.pou.vars.insert(name.to_ascii_uppercase(), ty.clone());
         var_operand(&name, self.pou.body_span)
     }
 
@@ -1028,6 +1081,11 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         for pin in inputs {
             let v = self.input_val(ctx, &pin.wires, i);
             let Some(mut v) = v else {
+                if !pin.wires.is_empty() {
+                    // Fed only by elements that could not be lowered (already reported).
+                    self.poisoned.insert(i);
+                    return;
+                }
                 if !pin.name.eq_ignore_ascii_case("EN") {
                     unconnected.push(pin);
                 }
