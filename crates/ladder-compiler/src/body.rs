@@ -41,7 +41,7 @@ pub fn lower_pou_body(
             let mut low = BodyLowering::new(index, pou, span);
             let stmts = low.lower(ctx, &g);
             let hidden = low.hidden_vars();
-            let block = (!hidden.is_empty()).then(|| VarBlock {
+            let block = (!hidden.is_empty()).then_some(VarBlock {
                 kind: VarKind::Local,
                 constant: false,
                 retain: false,

@@ -120,6 +120,8 @@ pub struct Node {
     pub input: Vec<Wire>,
     /// Whether the element has a `<connectionPointIn>` at all.
     pub has_input: bool,
+    /// Whether that point holds at least one `<connection>` (even a dangling one).
+    pub wired: bool,
 }
 
 impl Node {
@@ -368,7 +370,9 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
         };
         let point = e.child("connectionPointIn");
         ids.insert(id.to_string(), nodes.len());
-        raw_inputs.push(raw_wires(ctx, point));
+        let raws = raw_wires(ctx, point);
+        let wired = !raws.is_empty();
+        raw_inputs.push(raws);
         raw_pins.push(pin_wires);
         nodes.push(Node {
             id: id.to_string(),
@@ -381,6 +385,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
             y: coord("y"),
             input: Vec::new(),
             has_input: point.is_some(),
+            wired,
         });
     }
     // Resolve wires.

@@ -13,6 +13,7 @@
 //!    write of the same network changes is captured in phase 1, so every contact sees the value the
 //!    variable had before the rung.
 //! 3. Jumps and returns come last, with the same capture rule.
+//!
 //! Feedback loops must pass through an in-out variable (it reads the previous value); other loops are
 //! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot.
 
@@ -755,7 +756,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 edge,
             } => {
                 let input = self.input_val(ctx, &node.input, i);
-                if input.is_none() && node.input.is_empty() {
+                if input.is_none() && !node.wired {
                     let d = self
                         .diag(
                             ctx,
@@ -804,7 +805,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             } => {
                 let input = self.input_val(ctx, &node.input, i);
                 let Some(v) = input else {
-                    if node.input.is_empty() {
+                    if !node.wired {
                         let d = self
                             .diag(
                                 ctx,
@@ -862,7 +863,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 negated,
             } => {
                 let Some(v) = self.input_val(ctx, &node.input, i) else {
-                    if node.input.is_empty() {
+                    if !node.wired {
                         let d = Diagnostic::warning(
                             code::W3003,
                             format!("output variable `{expr}` has nothing connected and is never written"),
@@ -1050,8 +1051,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 .pou
                 .index
                 .pous
-                .get(&type_name.to_ascii_uppercase())
-                .is_some();
+                .contains_key(&type_name.to_ascii_uppercase());
             let d = if is_program {
                 self.diag(
                     ctx,
