@@ -25,7 +25,7 @@ pub fn lower_pou_body(
     let Some(lang) = body
         .children
         .iter()
-        .find(|c| !matches!(c.name.as_str(), "documentation" | "addData"))
+        .find(|c| !matches!(c.name, "documentation" | "addData"))
     else {
         return (Vec::new(), None);
     };
@@ -35,7 +35,7 @@ pub fn lower_pou_body(
         pou: Some(name.clone()),
         ..Default::default()
     };
-    match lang.name.as_str() {
+    match lang.name {
         "LD" | "FBD" => {
             let g = graph::read(ctx, lang, name);
             let mut low = BodyLowering::new(index, pou, span);

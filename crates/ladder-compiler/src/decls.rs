@@ -60,7 +60,7 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
     if let Some(n) = elementary(&t.name) {
         return Some(TypeRef::Named(Ident::new(n, span)));
     }
-    match t.name.as_str() {
+    match t.name {
         "string" | "wstring" => Some(TypeRef::String {
             wide: t.name == "wstring",
             length: t.attr("length").and_then(|l| l.trim().parse().ok()),
@@ -165,7 +165,7 @@ pub fn initial_value(ctx: &mut Ctx, holder: &Element, ty: Option<&TypeRef>) -> O
 }
 
 fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Initializer> {
-    match v.name.as_str() {
+    match v.name {
         "simpleValue" => {
             let text = v.attr("value").unwrap_or_default();
             let span = ctx.attr_span(v, "value");
@@ -337,7 +337,7 @@ pub fn data_type(ctx: &mut Ctx, d: &Element) -> Option<TypeDecl> {
     let init = d
         .child("initialValue")
         .and_then(|i| initial_value(ctx, i, None));
-    let def = match base.name.as_str() {
+    let def = match base.name {
         "struct" => TypeDef::Struct {
             fields: base
                 .children_named("variable")

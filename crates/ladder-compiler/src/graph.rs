@@ -133,13 +133,13 @@ impl Node {
         }
         out
     }
-    pub fn order_key(&self) -> (u32, i64, i64, u64, String) {
+    /// Execution order key: non-zero `executionOrderId`, then y, then x, then the numeric localId.
+    pub fn order_key(&self) -> (u32, i64, i64, u64) {
         (
             self.exec_order.filter(|o| *o > 0).unwrap_or(u32::MAX),
             self.y,
             self.x,
             self.id.parse().unwrap_or(u64::MAX),
-            self.id.clone(),
         )
     }
 }
@@ -204,7 +204,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     for e in &body.children {
         let span = ctx.tag(e);
         let mut pin_wires = Vec::new();
-        let kind = match e.name.as_str() {
+        let kind = match e.name {
             "comment" | "addData" | "vendorElement" | "documentation" => continue,
             "leftPowerRail" => Kind::LeftRail,
             "rightPowerRail" => Kind::RightRail,

@@ -17,7 +17,7 @@ pub struct EmbeddedText {
 
 /// The element that holds the body's text: the first one (the `<IL>` itself or a descendant) with
 /// non-blank character data.
-fn holder(e: &Element) -> Option<&Element> {
+fn holder<'e, 'a>(e: &'e Element<'a>) -> Option<&'e Element<'a>> {
     if e.text.iter().any(|s| !s.text.trim().is_empty()) {
         return Some(e);
     }

@@ -29,16 +29,17 @@ pub fn generate(rungs: usize) -> String {
         );
         match r % 4 {
             0 => {
-                let (c1, c2, k1, k2, rr) = (next(), next(), next(), next(), next());
+                let (c1, c3, c2, k1, k2, rr) = (next(), next(), next(), next(), next(), next());
                 let _ = writeln!(
                     vars,
                     "            <variable name=\"p{r}\"><type><BOOL/></type></variable>"
                 );
                 let _ = write!(
                     body,
-                    "          {}\n          {}\n          {}\n          {}\n          {}\n",
+                    "          {}\n          {}\n          {}\n          {}\n          {}\n          {}\n",
                     contact(c1, 40, y, &[rail], &format!("a{r}"), false),
-                    contact(c2, 80, y, &[c1, rail], &format!("b{r}"), true),
+                    contact(c3, 40, y + 30, &[rail], &format!("p{r}"), false),
+                    contact(c2, 80, y, &[c1, c3], &format!("b{r}"), true),
                     coil(k1, 120, y, c2, &format!("q{r}")),
                     coil(k2, 120, y + 30, c2, &format!("p{r}")),
                     right_rail(rr, 160, y, &[k1, k2]),

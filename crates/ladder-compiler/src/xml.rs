@@ -9,12 +9,13 @@
 
 use quick_xml::events::Event;
 use quick_xml::Reader;
+use std::borrow::Cow;
 
 /// One attribute: local name, decoded value, byte range of the raw value.
 #[derive(Debug, Clone)]
-pub struct Attr {
-    pub name: String,
-    pub value: String,
+pub struct Attr<'a> {
+    pub name: &'a str,
+    pub value: Cow<'a, str>,
     pub start: usize,
     pub end: usize,
 }
@@ -32,21 +33,21 @@ pub enum SegKind {
 
 /// A piece of character data: decoded text and the raw byte range it came from.
 #[derive(Debug, Clone)]
-pub struct TextSeg {
-    pub text: String,
+pub struct TextSeg<'a> {
+    pub text: Cow<'a, str>,
     pub start: usize,
     pub end: usize,
     pub kind: SegKind,
 }
 
 #[derive(Debug, Clone, Default)]
-pub struct Element {
-    /// Local name (`xhtml:p` -> `p`).
-    pub name: String,
-    pub attrs: Vec<Attr>,
-    pub children: Vec<Element>,
-    /// Direct character data, in order.
-    pub text: Vec<TextSeg>,
+pub struct Element<'a> {
+    /// Local name (`xhtml:p` -> `p`), borrowed from the text.
+    pub name: &'a str,
+    pub attrs: Vec<Attr<'a>>,
+    pub children: Vec<Element<'a>>,
+    /// Direct character data, in order (leading whitespace-only pieces are dropped).
+    pub text: Vec<TextSeg<'a>>,
     /// Byte range of the start tag (`<contact ...>`).
     pub tag_start: usize,
     pub tag_end: usize,
@@ -61,27 +62,27 @@ pub struct XmlError {
     pub pos: usize,
 }
 
-impl Element {
+impl<'a> Element<'a> {
     pub fn attr(&self, name: &str) -> Option<&str> {
-        self.attr_full(name).map(|a| a.value.as_str())
+        self.attr_full(name).map(|a| a.value.as_ref())
     }
-    pub fn attr_full(&self, name: &str) -> Option<&Attr> {
+    pub fn attr_full(&self, name: &str) -> Option<&Attr<'a>> {
         self.attrs.iter().find(|a| a.name == name)
     }
-    pub fn child(&self, name: &str) -> Option<&Element> {
+    pub fn child(&self, name: &str) -> Option<&Element<'a>> {
         self.children.iter().find(|c| c.name == name)
     }
-    pub fn children_named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Element> + 'a {
+    pub fn children_named<'s>(&'s self, name: &'s str) -> impl Iterator<Item = &'s Element<'a>> + 's {
         self.children.iter().filter(move |c| c.name == name)
     }
     /// The decoded direct text, all segments joined.
     pub fn text(&self) -> String {
-        self.text.iter().map(|s| s.text.as_str()).collect()
+        self.text.iter().map(|s| s.text.as_ref()).collect()
     }
     /// Every descendant (depth first, self excluded).
-    pub fn descendants(&self) -> Vec<&Element> {
+    pub fn descendants(&self) -> Vec<&Element<'a>> {
         let mut out = Vec::new();
-        let mut stack: Vec<&Element> = self.children.iter().rev().collect();
+        let mut stack: Vec<&Element<'a>> = self.children.iter().rev().collect();
         while let Some(e) = stack.pop() {
             out.push(e);
             stack.extend(e.children.iter().rev());
@@ -90,12 +91,20 @@ impl Element {
     }
 }
 
-fn local(name: &[u8]) -> String {
-    let s = String::from_utf8_lossy(name);
-    match s.rfind(':') {
-        Some(i) => s[i + 1..].to_string(),
-        None => s.into_owned(),
+/// The local part of a qualified name (`xhtml:p` -> `p`).
+fn local(name: &str) -> &str {
+    match name.rfind(':') {
+        Some(i) => &name[i + 1..],
+        None => name,
     }
+}
+
+/// The element name at the start of a raw tag (`contact localId="1"` -> `contact`).
+fn tag_name(raw: &str) -> &str {
+    let end = raw
+        .find(|c: char| c.is_ascii_whitespace() || c == '/')
+        .unwrap_or(raw.len());
+    local(&raw[..end])
 }
 
 /// Decodes the five predefined entities and character references; `None` for anything else.
@@ -118,9 +127,9 @@ pub fn decode_entity(name: &str) -> Option<String> {
 }
 
 /// Decodes entities inside an attribute value (quick-xml leaves them escaped).
-fn decode_attr_value(raw: &str) -> String {
+fn decode_attr_value(raw: &str) -> Cow<'_, str> {
     if !raw.contains('&') {
-        return raw.to_string();
+        return Cow::Borrowed(raw);
     }
     let mut out = String::with_capacity(raw.len());
     let mut rest = raw;
@@ -142,11 +151,11 @@ fn decode_attr_value(raw: &str) -> String {
         }
     }
     out.push_str(rest);
-    out
+    Cow::Owned(out)
 }
 
 /// Attributes of a start tag whose raw text (between `<` and `>`) begins at `tag_pos + 1`.
-fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr> {
+fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
     // A small scanner: name, optional spaces, '=', spaces, quoted value. Positions come for free.
     let bytes = raw_tag.as_bytes();
     let mut i = raw_tag
@@ -164,7 +173,7 @@ fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr> {
         if name_start == i {
             break;
         }
-        let name = local(&bytes[name_start..i]);
+        let name = local(&raw_tag[name_start..i]);
         while i < bytes.len() && bytes[i].is_ascii_whitespace() {
             i += 1;
         }
@@ -197,7 +206,7 @@ fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr> {
 }
 
 /// Parses the document; returns the root element (if any start tag was read) and the first error.
-pub fn parse(xml: &str) -> (Option<Element>, Option<XmlError>) {
+pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
     let base = if xml.starts_with('\u{feff}') { 3 } else { 0 };
     let body = &xml[base..];
     let mut reader = Reader::from_str(body);
@@ -221,10 +230,11 @@ pub fn parse(xml: &str) -> (Option<Element>, Option<XmlError>) {
         };
         let after = reader.buffer_position() as usize;
         match ev {
-            Event::Start(ref s) | Event::Empty(ref s) => {
+            Event::Start(_) | Event::Empty(_) => {
                 let raw = &body[pos + 1..after.saturating_sub(1).max(pos + 1)];
+                let raw = raw.strip_suffix('/').unwrap_or(raw);
                 let el = Element {
-                    name: local(s.name().as_ref()),
+                    name: tag_name(raw),
                     attrs: read_attrs(raw, base + pos),
                     children: Vec::new(),
                     text: Vec::new(),
@@ -244,22 +254,26 @@ pub fn parse(xml: &str) -> (Option<Element>, Option<XmlError>) {
                     attach(&mut stack, &mut root, el);
                 }
             }
-            Event::Text(t) => {
-                if let Some(top) = stack.last_mut() {
-                    let text = String::from_utf8_lossy(t.as_ref()).into_owned();
+            Event::Text(_) => {
+                let raw = &body[pos..after];
+                // Indentation between elements is dropped; whitespace after the first text of an
+                // element is kept (it belongs to an embedded body).
+                if let Some(top) = stack
+                    .last_mut()
+                    .filter(|t| !t.text.is_empty() || !raw.trim().is_empty())
+                {
                     top.text.push(TextSeg {
-                        text,
+                        text: Cow::Borrowed(&body[pos..after]),
                         start: base + pos,
                         end: base + after,
                         kind: SegKind::Text,
                     });
                 }
             }
-            Event::CData(t) => {
+            Event::CData(_) => {
                 if let Some(top) = stack.last_mut() {
-                    let text = String::from_utf8_lossy(t.as_ref()).into_owned();
                     top.text.push(TextSeg {
-                        text,
+                        text: Cow::Borrowed(&body[pos + 9..after - 3]),
                         start: base + pos + 9,
                         end: base + after - 3,
                         kind: SegKind::CData,
@@ -271,7 +285,7 @@ pub fn parse(xml: &str) -> (Option<Element>, Option<XmlError>) {
                     let name = String::from_utf8_lossy(r.as_ref()).into_owned();
                     let text = decode_entity(&name).unwrap_or_else(|| format!("&{name};"));
                     top.text.push(TextSeg {
-                        text,
+                        text: Cow::Owned(text),
                         start: base + pos,
                         end: base + after,
                         kind: SegKind::Entity,
@@ -282,7 +296,7 @@ pub fn parse(xml: &str) -> (Option<Element>, Option<XmlError>) {
             _ => {}
         }
     }
-    let unclosed = stack.last().map(|e| (e.name.clone(), e.tag_start));
+    let unclosed = stack.last().map(|e| (e.name.to_string(), e.tag_start));
     while let Some(e) = stack.pop() {
         attach(&mut stack, &mut root, e);
     }
@@ -293,7 +307,7 @@ pub fn parse(xml: &str) -> (Option<Element>, Option<XmlError>) {
     (root, err)
 }
 
-fn attach(stack: &mut [Element], root: &mut Option<Element>, el: Element) {
+fn attach<'a>(stack: &mut [Element<'a>], root: &mut Option<Element<'a>>, el: Element<'a>) {
     match stack.last_mut() {
         Some(parent) => parent.children.push(el),
         None => {
