@@ -135,12 +135,13 @@ fn version(ctx: &mut Ctx, root: &Element) -> Version {
         Version::V1
     } else {
         let span = ctx.attr_span(root, "xmlns");
+        let what = if ns.is_empty() {
+            "no PLCopen namespace".to_string()
+        } else {
+            format!("unknown PLCopen namespace `{ns}`")
+        };
         ctx.report(
-            Diagnostic::warning(
-                code::W3001,
-                format!("unknown PLCopen namespace `{ns}`; reading it as tc6_0201"),
-            )
-            .at(span),
+            Diagnostic::warning(code::W3001, format!("{what}; reading it as tc6_0201")).at(span),
         );
         Version::V201
     }

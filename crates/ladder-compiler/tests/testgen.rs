@@ -3,7 +3,7 @@
 
 mod common;
 
-use ladder_compiler::ast::{InstrKind, IlStmt, LibraryElement, Op, Operand};
+use ladder_compiler::ast::{IlStmt, InstrKind, LibraryElement, Op, Operand};
 
 fn coil_writes(unit: &ladder_compiler::ast::CompilationUnit) -> usize {
     let LibraryElement::Pou(main) = &unit.items[0] else {
@@ -38,7 +38,14 @@ fn lower_generated(rungs: usize) {
     };
     // Temporaries are reused from rung to rung: the hidden block stays small.
     let hidden = main.var_blocks.last().unwrap();
-    assert!(hidden.vars.iter().filter(|v| v.name.name.starts_with("__tmp")).count() <= 4);
+    assert!(
+        hidden
+            .vars
+            .iter()
+            .filter(|v| v.name.name.starts_with("__tmp"))
+            .count()
+            <= 4
+    );
 }
 
 /// The benchmark's size. Unoptimised builds take several seconds for it (the XML alone is 22 MB), so
