@@ -57,7 +57,7 @@ pub fn type_ref(ctx: &mut Ctx, holder: &Element) -> Option<TypeRef> {
 
 fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
     let span = ctx.tag(t);
-    if let Some(n) = elementary(&t.name) {
+    if let Some(n) = elementary(t.name) {
         return Some(TypeRef::Named(Ident::new(n, span)));
     }
     match t.name {
@@ -127,7 +127,7 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 .and_then(|r| r.attr("upper"))
                 .and_then(|v| v.trim().parse().ok());
             let base = t.child("baseType").and_then(|b| b.children.first());
-            let base = base.and_then(|b| elementary(&b.name).map(|n| Ident::new(n, ctx.tag(b))));
+            let base = base.and_then(|b| elementary(b.name).map(|n| Ident::new(n, ctx.tag(b))));
             match (lo, hi, base) {
                 (Some(lower), Some(upper), Some(base)) => Some(TypeRef::Subrange {
                     base,

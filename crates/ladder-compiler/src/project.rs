@@ -215,7 +215,7 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
         for list in &iface.children {
             if list.name == "returnType" {
                 return_type = decls::type_ref(ctx, list);
-            } else if let Some(k) = decls::var_kind(&list.name) {
+            } else if let Some(k) = decls::var_kind(list.name) {
                 var_blocks.push(decls::var_block(ctx, list, k));
             } else if list.name == "accessVars" {
                 ctx.error(
