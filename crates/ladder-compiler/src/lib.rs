@@ -13,6 +13,7 @@ pub mod body;
 pub mod catalogue;
 pub mod context;
 pub mod decls;
+pub mod emit;
 pub mod graph;
 pub mod il_body;
 pub mod lower;
@@ -52,4 +53,9 @@ pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::Com
             ast::CompilationUnit::default()
         }
     }
+}
+
+/// The unit as readable IL text (TYPE, POUs, CONFIGURATION).
+pub fn emit_il(unit: &ast::CompilationUnit) -> String {
+    emit::unit(unit)
 }

@@ -103,9 +103,9 @@ fn c15_v1_std_test_fbd_lowers_all_85_standard_function_blocks() {
     // 82 function blocks, each result stored once in a typed temporary, and 3 user FB calls.
     let stores = il
         .lines()
-        .filter(|l| l.trim().starts_with("St __tmp_"))
+        .filter(|l| l.trim().starts_with("ST __tmp_"))
         .count();
-    let calls = il.lines().filter(|l| l.trim().starts_with("CAL")).count();
+    let calls = il.lines().filter(|l| l.trim().starts_with("CAL ")).count();
     assert_eq!((stores, calls), (82, 3), "{il}");
 }
 

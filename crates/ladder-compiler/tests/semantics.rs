@@ -23,17 +23,17 @@ fn parallel_coils_share_one_evaluation_and_contacts_see_old_values() {
     let il = dump_unit(&unit);
     let ls = lines(&il);
     // The rung's logic is evaluated exactly once ...
-    assert_eq!(ls.iter().filter(|l| **l == "Ld Start").count(), 1, "{il}");
+    assert_eq!(ls.iter().filter(|l| **l == "LD Start").count(), 1, "{il}");
     // ... and both coils store that one current result, one after the other.
-    let st_motor = pos(&ls, "St Motor");
-    assert_eq!(ls[st_motor + 1], "St Lamp", "{il}");
-    assert_eq!(ls[st_motor - 1], "AndN Stop", "{il}");
+    let st_motor = pos(&ls, "ST Motor");
+    assert_eq!(ls[st_motor + 1], "ST Lamp", "{il}");
+    assert_eq!(ls[st_motor - 1], "ANDN Stop", "{il}");
     // The branch that reads Motor was captured before Motor was written.
-    let capture = pos(&ls, "Ld Motor");
+    let capture = pos(&ls, "LD Motor");
     assert!(capture < st_motor, "{il}");
-    assert!(ls[capture + 1].starts_with("St __tmp_BOOL_"), "{il}");
-    let was = pos(&ls, "St WasRunning");
-    assert_eq!(ls[was - 1], format!("Ld {}", &ls[capture + 1][3..]), "{il}");
+    assert!(ls[capture + 1].starts_with("ST __tmp_BOOL_"), "{il}");
+    let was = pos(&ls, "ST WasRunning");
+    assert_eq!(ls[was - 1], format!("LD {}", &ls[capture + 1][3..]), "{il}");
     insta::assert_snapshot!(il);
 }
 
@@ -48,10 +48,10 @@ fn a_block_runs_before_its_readers_whatever_the_drawing_order() {
     let ls = lines(&il);
     let call = ls
         .iter()
-        .position(|l| l.starts_with("CALAlways T1("))
+        .position(|l| l.starts_with("CAL T1("))
         .expect("T1 called");
-    assert!(call < pos(&ls, "Ld T1.Q"), "{il}");
-    assert!(call < pos(&ls, "Ld T1.ET"), "{il}");
+    assert!(call < pos(&ls, "LD T1.Q"), "{il}");
+    assert!(call < pos(&ls, "LD T1.ET"), "{il}");
     insta::assert_snapshot!(il);
 }
 
@@ -61,13 +61,10 @@ fn chained_blocks_run_in_data_flow_order() {
     assert_eq!(diags, "");
     let il = dump_unit(&unit);
     let ls = lines(&il);
-    let add = pos(&ls, "Add B");
-    let mul = pos(&ls, "Mul Int(3)");
-    let gt = pos(&ls, "Gt Limit");
-    let ctu = ls
-        .iter()
-        .position(|l| l.starts_with("CALAlways C1("))
-        .unwrap();
+    let add = pos(&ls, "ADD B");
+    let mul = pos(&ls, "MUL 3");
+    let gt = pos(&ls, "GT Limit");
+    let ctu = ls.iter().position(|l| l.starts_with("CAL C1(")).unwrap();
     assert!(add < mul && mul < gt && gt < ctu, "{il}");
     insta::assert_snapshot!(il);
 }
@@ -79,18 +76,18 @@ fn edges_storage_connectors_en_eno_jumps_and_returns() {
     let il = dump_unit(&unit);
     // Hidden edge detectors are declared with names no IEC identifier can have.
     for v in [
-        "var __trig_2 : \"R_TRIG\"",
-        "var __trig_4 : \"F_TRIG\"",
-        "var __trig_7 : \"F_TRIG\"",
-        "var __trig_10 : \"R_TRIG\"",
+        "__trig_2 : R_TRIG;",
+        "__trig_4 : F_TRIG;",
+        "__trig_7 : F_TRIG;",
+        "__trig_10 : R_TRIG;",
     ] {
         assert!(il.contains(v), "{v} missing in\n{il}");
     }
     let ls = lines(&il);
-    assert!(ls.contains(&"S Latch") && ls.contains(&"R Latch") && ls.contains(&"StN NotBtn"));
-    assert!(pos(&ls, "JMPIfTrue Tail") < pos(&ls, "Tail:"));
-    assert!(pos(&ls, "JMPIfFalse __skip_33") < pos(&ls, "__skip_33:"));
-    assert_eq!(ls.last(), Some(&"RETAlways"));
+    assert!(ls.contains(&"S Latch") && ls.contains(&"R Latch") && ls.contains(&"STN NotBtn"));
+    assert!(pos(&ls, "JMPC Tail") < pos(&ls, "Tail:"));
+    assert!(pos(&ls, "JMPCN __skip_33") < pos(&ls, "__skip_33:"));
+    assert_eq!(ls[ls.len() - 2..], ["RET", "END_PROGRAM"]);
     insta::assert_snapshot!(il);
 }
 
@@ -108,8 +105,8 @@ fn loops_through_a_variable_or_an_instance_read_the_previous_value() {
     // CounterFBD of corpus file 01: ADD -> SEL -> Cnt (in-out variable) -> ADD.
     let (unit, _) = compile("01.xml", &common::corpus("01_beremiz_first_steps.xml"));
     let il = dump_unit(&unit);
-    let fbd = il.split("POU CounterFBD").nth(1).unwrap();
-    let fbd = fbd.split("POU ").next().unwrap();
+    let fbd = il.split("FUNCTION_BLOCK CounterFBD").nth(1).unwrap();
+    let fbd = fbd.split("END_FUNCTION_BLOCK").next().unwrap();
     let ls = lines(fbd);
-    assert!(pos(&ls, "Add Cnt") < pos(&ls, "St Cnt"), "{fbd}");
+    assert!(pos(&ls, "ADD Cnt") < pos(&ls, "ST Cnt"), "{fbd}");
 }
