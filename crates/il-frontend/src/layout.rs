@@ -44,7 +44,11 @@ impl Frame {
     fn is_decl(self) -> bool {
         matches!(
             self,
-            Frame::Var(..) | Frame::Type(..) | Frame::Struct(..) | Frame::Config(..) | Frame::Resource(..)
+            Frame::Var(..)
+                | Frame::Type(..)
+                | Frame::Struct(..)
+                | Frame::Config(..)
+                | Frame::Resource(..)
         )
     }
 }
@@ -163,7 +167,11 @@ impl<'s> Layout<'s> {
             Frame::Pou(kind, s, e) => {
                 let end = kind.pou_end().unwrap_or(Word::EndProgram);
                 self.ensure_eol(at);
-                let d = missing(end.spelling(), self.span(s, e), &format!("`{}`", kind.spelling()));
+                let d = missing(
+                    end.spelling(),
+                    self.span(s, e),
+                    &format!("`{}`", kind.spelling()),
+                );
                 self.diags.push(d);
                 self.emit(at, Tok::Word(end), at);
             }
@@ -385,11 +393,14 @@ impl<'s> Layout<'s> {
                     .at(self.span(s, e))
                     .with_hint("see the literal forms in `ladderc explain E0005`")
             }
-            LexError::BadAddress(why) => {
-                Diagnostic::error(code::E0006, format!("invalid direct address: {why}"))
-                    .at(self.span(s, e))
-                    .with_hint("write %I, %Q or %M, an optional size X, B, W, D or L, and a location like 0.1")
-            }
+            LexError::BadAddress(why) => Diagnostic::error(
+                code::E0006,
+                format!("invalid direct address: {why}"),
+            )
+            .at(self.span(s, e))
+            .with_hint(
+                "write %I, %Q or %M, an optional size X, B, W, D or L, and a location like 0.1",
+            ),
         };
         self.diags.push(d);
     }
@@ -460,17 +471,16 @@ impl<'s> Layout<'s> {
                 }
             };
             self.resolve_eol(Some(&tok));
-            let tok = match tok {
-                Tok::Word(w @ (Word::EndProgram | Word::EndFunction | Word::EndFunctionBlock))
-                    if !self.in_configuration() =>
-                {
-                    self.pou_end(s, w, e)
-                }
-                other => {
-                    self.structure(s, &other, e);
-                    other
-                }
-            };
+            let tok =
+                match tok {
+                    Tok::Word(
+                        w @ (Word::EndProgram | Word::EndFunction | Word::EndFunctionBlock),
+                    ) if !self.in_configuration() => self.pou_end(s, w, e),
+                    other => {
+                        self.structure(s, &other, e);
+                        other
+                    }
+                };
             self.emit(s, tok, e);
         }
     }
@@ -531,7 +541,10 @@ mod tests {
         }
         (
             out.join(" "),
-            l.diags.iter().map(|d| format!("{} {}", d.code, d.message)).collect(),
+            l.diags
+                .iter()
+                .map(|d| format!("{} {}", d.code, d.message))
+                .collect(),
         )
     }
 
@@ -545,7 +558,10 @@ mod tests {
     #[test]
     fn declarations_ignore_line_ends() {
         let (s, _) = stream("PROGRAM p\nVAR\n a :\n INT;\nEND_VAR\nLD a\nEND_PROGRAM\n");
-        assert_eq!(s, "PROGRAM p / VAR a : INT ; END_VAR / LD a / END_PROGRAM /");
+        assert_eq!(
+            s,
+            "PROGRAM p / VAR a : INT ; END_VAR / LD a / END_PROGRAM /"
+        );
     }
 
     #[test]
@@ -573,7 +589,10 @@ mod tests {
             s,
             "PROGRAM p / VAR a : INT ; LD a AND ( b OR c <END_VAR> / <END_PROGRAM> /"
         );
-        assert_eq!(d, vec!["E0008 missing `END_VAR`", "E0008 missing `END_PROGRAM`"]);
+        assert_eq!(
+            d,
+            vec!["E0008 missing `END_VAR`", "E0008 missing `END_PROGRAM`"]
+        );
         let (s, d) = stream("PROGRAM p\nAND( b\nOR c\nPROGRAM q\nEND_PROGRAM");
         assert_eq!(
             s,
@@ -581,7 +600,10 @@ mod tests {
         );
         assert_eq!(
             d,
-            vec!["E0009 missing `)` of a deferred operator", "E0008 missing `END_PROGRAM`"]
+            vec![
+                "E0009 missing `)` of a deferred operator",
+                "E0008 missing `END_PROGRAM`"
+            ]
         );
     }
 

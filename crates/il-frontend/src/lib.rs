@@ -47,13 +47,17 @@ pub fn parse_named(
         let end = Span::new(file, src.len(), src.len());
         let pou = Pou {
             kind: PouKind::Program,
-            name: Ident::new(implicit_name, Span::new(file, first.start as usize, first.start as usize)),
+            name: Ident::new(
+                implicit_name,
+                Span::new(file, first.start as usize, first.start as usize),
+            ),
             return_type: None,
             var_blocks: vars,
             body,
             span: first.to(end),
         };
-        top.items.insert(at.min(top.items.len()), LibraryElement::Pou(pou));
+        top.items
+            .insert(at.min(top.items.len()), LibraryElement::Pou(pou));
     }
     CompilationUnit { items: top.items }
 }

@@ -14,7 +14,13 @@ use crate::lexer::{TimeValue, Tok, Word};
 use diagnostics::{code, Code, Diagnostic, Diagnostics, FileId, Severity, Span};
 use lalrpop_util::{ErrorRecovery, ParseError};
 
-#[allow(clippy::all, clippy::pedantic, unused_parens, unused_imports, dead_code)]
+#[allow(
+    clippy::all,
+    clippy::pedantic,
+    unused_parens,
+    unused_imports,
+    dead_code
+)]
 mod grammar {
     include!(concat!(env!("OUT_DIR"), "/grammar.rs"));
 }
@@ -335,10 +341,19 @@ impl<'s> Ctx<'s> {
         let hash = self.src[l..r].find('#').map_or(l, |i| l + i);
         let long = |name: &str| Some(Ident::new(name, self.span(l, hash)));
         let (kind, prefix) = match t {
-            TimeValue::Duration(v, lg) => (LiteralKind::Duration(v), lg.then(|| long("LTIME")).flatten()),
+            TimeValue::Duration(v, lg) => (
+                LiteralKind::Duration(v),
+                lg.then(|| long("LTIME")).flatten(),
+            ),
             TimeValue::Date(v, lg) => (LiteralKind::Date(v), lg.then(|| long("LDATE")).flatten()),
-            TimeValue::TimeOfDay(v, lg) => (LiteralKind::TimeOfDay(v), lg.then(|| long("LTOD")).flatten()),
-            TimeValue::DateAndTime(v, lg) => (LiteralKind::DateAndTime(v), lg.then(|| long("LDT")).flatten()),
+            TimeValue::TimeOfDay(v, lg) => (
+                LiteralKind::TimeOfDay(v),
+                lg.then(|| long("LTOD")).flatten(),
+            ),
+            TimeValue::DateAndTime(v, lg) => (
+                LiteralKind::DateAndTime(v),
+                lg.then(|| long("LDT")).flatten(),
+            ),
         };
         self.literal(kind, prefix, l, r)
     }
@@ -361,7 +376,10 @@ impl<'s> Ctx<'s> {
                 format!("function `{}` has no result type", name.name),
                 s,
                 e,
-                &format!("write the result type after the name, e.g. `FUNCTION {} : INT`", name.name),
+                &format!(
+                    "write the result type after the name, e.g. `FUNCTION {} : INT`",
+                    name.name
+                ),
             );
         }
         if kind != PouKind::Function {
@@ -379,7 +397,11 @@ impl<'s> Ctx<'s> {
         Pou {
             kind,
             name,
-            return_type: if kind == PouKind::Function { return_type } else { None },
+            return_type: if kind == PouKind::Function {
+                return_type
+            } else {
+                None
+            },
             var_blocks: parts.vars,
             body: parts.body,
             span: self.span(l, r),
@@ -628,7 +650,9 @@ impl<'s> Ctx<'s> {
             ParseError::UnrecognizedEof { location, expected } => {
                 (location, Tok::Eol, location, expected)
             }
-            ParseError::ExtraToken { token: (s, tok, end) } => (s, tok, end, Vec::new()),
+            ParseError::ExtraToken {
+                token: (s, tok, end),
+            } => (s, tok, end, Vec::new()),
             ParseError::InvalidToken { location } => (location, Tok::Error, location, Vec::new()),
             ParseError::User { .. } => return,
         };
@@ -668,10 +692,7 @@ impl<'s> Ctx<'s> {
                     .to_string(),
             )
         } else {
-            (
-                format!("unexpected {found}"),
-                format!("expected {expect}"),
-            )
+            (format!("unexpected {found}"), format!("expected {expect}"))
         };
         let (s, end) = if tok == Tok::Eol { (s, s) } else { (s, end) };
         self.hint(code::E0011, msg, s, end, &hint);
@@ -704,7 +725,9 @@ fn summarize_expected(expected: &[String]) -> String {
     for x in expected {
         let t = x.trim_matches('"');
         if x.starts_with('"') && !parts.iter().any(|p| p.contains(t)) {
-            let name_like = t.chars().all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
+            let name_like = t
+                .chars()
+                .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
                 && crate::lexer::classify(t).is_name();
             if (operand || has("IDENT")) && name_like {
                 continue;
@@ -768,7 +791,9 @@ pub(crate) fn implicit_program_warning(at: Span, name: &str) -> Diagnostic {
         "instructions outside any POU".to_string(),
     )
     .at(at)
-    .with_primary_label(format!("accepted as the body of an implicit `PROGRAM {name}`"))
+    .with_primary_label(format!(
+        "accepted as the body of an implicit `PROGRAM {name}`"
+    ))
     .with_hint(format!(
         "wrap the instructions in `PROGRAM {name}` ... `END_PROGRAM` to silence this warning"
     ))

@@ -66,16 +66,7 @@ pub fn embedded_text(e: &Element) -> EmbeddedText {
 /// Parses the IL body in place (spans point into the XML file).
 pub fn parse(ctx: &mut crate::context::Ctx, e: &Element) -> Vec<il_frontend::ast::IlStmt> {
     let t = embedded_text(e);
-    // Until the IL parser lands on this branch, an IL body is reported instead of parsed.
-    let _ = t;
-    ctx.report(
-        diagnostics::Diagnostic::error(
-            diagnostics::code::E3012,
-            "IL bodies inside XML need the IL parser (not merged yet)",
-        )
-        .at(ctx.tag(e)),
-    );
-    Vec::new()
+    il_frontend::parse_body(ctx.file, &t.text, t.base, ctx.diags)
 }
 
 #[cfg(test)]

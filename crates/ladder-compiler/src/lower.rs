@@ -213,11 +213,10 @@ impl<'i> BodyLowering<'i> {
                 .iter()
                 .chain(fb.outputs.iter())
                 .find(|(p, _)| field.is(p))
-                .map(|(_, t)| TypeRef::Named(Ident::new(*t, span)));
+                .map(|(_, t)| named_type(t, span));
         }
         if catalogue::is_motion_block(&n.name) {
-            return catalogue::motion_pin_type(&field.name)
-                .map(|t| TypeRef::Named(Ident::new(t, span)));
+            return catalogue::motion_pin_type(&field.name).map(|t| named_type(t, span));
         }
         if let Some(sig) = self.index.pous.get(&n.key()) {
             return sig
@@ -1018,10 +1017,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 .inputs
                 .iter()
                 .find(|(p, _)| p.eq_ignore_ascii_case(pin))
-                .map(|(_, t)| Some(TypeRef::Named(Ident::new(*t, span)))),
-            BlockType::Motion => {
-                Some(catalogue::motion_pin_type(pin).map(|t| TypeRef::Named(Ident::new(t, span))))
-            }
+                .map(|(_, t)| Some(named_type(t, span))),
+            BlockType::Motion => Some(catalogue::motion_pin_type(pin).map(|t| named_type(t, span))),
             BlockType::StdFn(_) => Some(None),
         }
     }
@@ -1241,7 +1238,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                             None => FuncForm::NonFormal,
                         };
                         let ty = match f.rule {
-                            ResultRule::Fixed(t) => Some(TypeRef::Named(Ident::new(t, span))),
+                            ResultRule::Fixed(t) => Some(named_type(t, span)),
                             ResultRule::SameAsInputs => self.common_type(&args, f.selectors, span),
                         };
                         (form, ty)
@@ -1776,5 +1773,17 @@ fn emit_function(
                 span,
             ));
         }
+    }
+}
+
+/// A type from the catalogue as the IL parser would read it (`STRING` is not a plain name there).
+fn named_type(name: &str, span: Span) -> TypeRef {
+    match name {
+        "STRING" | "WSTRING" => TypeRef::String {
+            wide: name == "WSTRING",
+            length: None,
+            span,
+        },
+        _ => TypeRef::Named(Ident::new(name, span)),
     }
 }

@@ -13,7 +13,7 @@ fn v1_file_with_bom_reads_types_pous_and_configuration() {
     // Only the ST function is reported, by name; the FBD program that calls it is lowered.
     assert_eq!(diags.matches("error[").count(), 1, "{diags}");
     assert!(
-        diags.contains("E3003") && diags.contains("POU `Calc`"),
+        diags.contains("E3003") && diags.contains("POU `Twice`"),
         "{diags}"
     );
     let LibraryElement::DataTypes(types) = &unit.items[0] else {
@@ -51,10 +51,10 @@ fn v1_file_with_bom_reads_types_pous_and_configuration() {
     // The span of a declaration points at its XML element.
     let color = &types[0];
     assert_eq!(&xml[color.name.span.range()], "Color");
-    let LibraryElement::Pou(calc) = &unit.items[1] else {
+    let LibraryElement::Pou(twice) = &unit.items[1] else {
         panic!()
     };
-    assert_eq!((calc.kind, calc.body.len()), (PouKind::Function, 0));
+    assert_eq!((twice.kind, twice.body.len()), (PouKind::Function, 0));
     let LibraryElement::Pou(main) = &unit.items[2] else {
         panic!()
     };
