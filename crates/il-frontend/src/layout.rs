@@ -78,6 +78,10 @@ pub struct Layout<'s> {
     prev2: Last,
     start: Option<Tok>,
     finished: bool,
+    /// The last token emitted ends a declaration or opens a `VAR` block: a new declaration may start.
+    decl_start: bool,
+    /// An unterminated comment swallowed the rest of the file: blocks it leaves open are not reported.
+    swallowed: bool,
 }
 
 impl<'s> Layout<'s> {
@@ -96,6 +100,8 @@ impl<'s> Layout<'s> {
             prev2: Last::Start,
             start: Some(start),
             finished: false,
+            decl_start: false,
+            swallowed: false,
         }
     }
 
@@ -114,9 +120,25 @@ impl<'s> Layout<'s> {
             Tok::LParen => Last::LParen,
             Tok::Comma => Last::Comma,
             Tok::Amp | Tok::AmpN => Last::Deferrable,
-            Tok::Word(w) if w.is_deferrable() => Last::Deferrable,
+            Tok::Word(w) if w.is_simple_op() => Last::Deferrable,
             _ => Last::Other,
         };
+        self.decl_start = matches!(
+            tok,
+            Tok::Semi
+                | Tok::Word(
+                    Word::Var
+                        | Word::VarInput
+                        | Word::VarOutput
+                        | Word::VarInOut
+                        | Word::VarTemp
+                        | Word::VarGlobal
+                        | Word::VarExternal
+                        | Word::Constant
+                        | Word::Retain
+                        | Word::NonRetain
+                )
+        );
         self.prev2 = self.prev;
         self.prev = last;
         self.out.push_back((start, tok, end));
@@ -155,6 +177,14 @@ impl<'s> Layout<'s> {
         let Some(frame) = self.stack.pop() else {
             return;
         };
+        let before = self.diags.len();
+        self.close_frame(frame, at);
+        if self.swallowed {
+            self.diags.truncate(before);
+        }
+    }
+
+    fn close_frame(&mut self, frame: Frame, at: usize) {
         let here = self.span(at, at);
         let missing = |what: &str, open: Span, opened: &str| {
             Diagnostic::error(code::E0008, format!("missing `{what}`"))
@@ -242,15 +272,14 @@ impl<'s> Layout<'s> {
         let decl = self.in_decl();
         match tok {
             Tok::Word(w) => match w {
+                Word::VarAccess | Word::VarConfig => {}
                 Word::Var
                 | Word::VarInput
                 | Word::VarOutput
                 | Word::VarInOut
                 | Word::VarTemp
                 | Word::VarGlobal
-                | Word::VarExternal
-                | Word::VarAccess
-                | Word::VarConfig => {
+                | Word::VarExternal => {
                     if matches!(self.stack.last(), Some(Frame::Var(..))) {
                         self.close_top(s);
                     }
@@ -267,10 +296,8 @@ impl<'s> Layout<'s> {
                     self.close_all(s);
                     self.stack.push(Frame::Type(s, e));
                 }
-                Word::EndType => {
-                    if self.close_until(s, |f| matches!(f, Frame::Type(..))) {
-                        self.stack.pop();
-                    }
+                Word::EndType if self.close_until(s, |f| matches!(f, Frame::Type(..))) => {
+                    self.stack.pop();
                 }
                 Word::Struct if decl => self.stack.push(Frame::Struct(s, e)),
                 Word::EndStruct => {
@@ -282,19 +309,17 @@ impl<'s> Layout<'s> {
                     self.close_all(s);
                     self.stack.push(Frame::Config(s, e));
                 }
-                Word::EndConfiguration => {
-                    if self.close_until(s, |f| matches!(f, Frame::Config(..))) {
-                        self.stack.pop();
-                    }
+                Word::EndConfiguration
+                    if self.close_until(s, |f| matches!(f, Frame::Config(..))) =>
+                {
+                    self.stack.pop();
                 }
                 Word::Resource if self.in_configuration() => {
                     self.close_until(s, |f| matches!(f, Frame::Config(..)));
                     self.stack.push(Frame::Resource(s, e));
                 }
-                Word::EndResource => {
-                    if self.close_until(s, |f| matches!(f, Frame::Resource(..))) {
-                        self.stack.pop();
-                    }
+                Word::EndResource if self.close_until(s, |f| matches!(f, Frame::Resource(..))) => {
+                    self.stack.pop();
                 }
                 Word::Program | Word::Function | Word::FunctionBlock
                     if !self.in_configuration() =>
@@ -466,11 +491,21 @@ impl<'s> Layout<'s> {
                 }
                 Some(Ok(raw)) => self.convert(raw, s, e),
                 Some(Err(err)) => {
+                    self.swallowed |= err == LexError::UnterminatedComment;
                     self.report_lex_error(err, s, e);
                     Tok::Error
                 }
             };
             self.resolve_eol(Some(&tok));
+            if let Tok::Word(w @ (Word::VarAccess | Word::VarConfig)) = tok {
+                self.skip_unsupported_block(w, s, e);
+                continue;
+            }
+            if let Tok::Word(w) = tok {
+                if w != Word::Ident && w.is_name() && self.instruction_in_declarations() {
+                    self.close_top(s);
+                }
+            }
             let tok =
                 match tok {
                     Tok::Word(
@@ -482,6 +517,39 @@ impl<'s> Layout<'s> {
                     }
                 };
             self.emit(s, tok, e);
+        }
+    }
+
+    /// `VAR_ACCESS` / `VAR_CONFIG` ... `END_VAR`: reported once, skipped whole.
+    fn skip_unsupported_block(&mut self, w: Word, s: usize, e: usize) {
+        self.diags.push(
+            Diagnostic::error(
+                code::E0019,
+                format!("`{}` blocks are not supported", w.spelling()),
+            )
+            .at(self.span(s, e))
+            .with_primary_label("this block is skipped up to its END_VAR")
+            .with_hint("remove the block; declare the variables in VAR_GLOBAL or VAR_EXTERNAL"),
+        );
+        while let Some(t) = self.lex.next() {
+            if t == Ok(RawToken::Word) && crate::lexer::classify(self.lex.slice()) == Word::EndVar {
+                break;
+            }
+        }
+        self.lex.extras.clear();
+    }
+
+    /// At the start of a declaration in a `VAR` block, an IL operator not followed by `:`, `,` or `AT`
+    /// starts an instruction: the block lacks its `END_VAR`.
+    fn instruction_in_declarations(&self) -> bool {
+        if !self.decl_start || !matches!(self.stack.last(), Some(Frame::Var(..))) {
+            return false;
+        }
+        let mut ahead = self.lex.clone();
+        match ahead.next() {
+            Some(Ok(RawToken::Colon | RawToken::Comma)) | None => false,
+            Some(Ok(RawToken::Word)) => crate::lexer::classify(ahead.slice()) != Word::At,
+            _ => true,
         }
     }
 
@@ -587,11 +655,15 @@ mod tests {
         let (s, d) = stream("PROGRAM p\nVAR a : INT;\nLD a\nAND( b\nOR c\n");
         assert_eq!(
             s,
-            "PROGRAM p / VAR a : INT ; LD a AND ( b OR c <END_VAR> / <END_PROGRAM> /"
+            "PROGRAM p / VAR a : INT ; <END_VAR> LD a / AND ( b / OR c / <)> / <END_PROGRAM> /"
         );
         assert_eq!(
             d,
-            vec!["E0008 missing `END_VAR`", "E0008 missing `END_PROGRAM`"]
+            vec![
+                "E0008 missing `END_VAR`",
+                "E0009 missing `)` of a deferred operator",
+                "E0008 missing `END_PROGRAM`"
+            ]
         );
         let (s, d) = stream("PROGRAM p\nAND( b\nOR c\nPROGRAM q\nEND_PROGRAM");
         assert_eq!(

@@ -464,6 +464,11 @@ impl Word {
                 | Lt
         )
     }
+    /// The simple operators `LD` ... `LT` (a `(` after one at the start of an instruction opens a
+    /// nested list; only [`Word::is_deferrable`] ones may, the parser reports the others).
+    pub fn is_simple_op(self) -> bool {
+        (Word::Ld as u8..=Word::Lt as u8).contains(&(self as u8))
+    }
     /// The `END_*` keyword that closes a POU opened by this keyword.
     pub fn pou_end(self) -> Option<Word> {
         match self {

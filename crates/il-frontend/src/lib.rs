@@ -42,6 +42,7 @@ pub fn parse_named(
         return CompilationUnit::default();
     };
     if let Some((at, vars, body)) = top.implicit.take() {
+        let implicit_name = &implicit_program_name(implicit_name);
         let first = top.first_bare.unwrap_or(Span::new(file, 0, 0));
         diags.push(parser::implicit_program_warning(first, implicit_name));
         let end = Span::new(file, src.len(), src.len());
@@ -60,6 +61,19 @@ pub fn parse_named(
             .insert(at.min(top.items.len()), LibraryElement::Pou(pou));
     }
     CompilationUnit { items: top.items }
+}
+
+/// A valid IEC identifier made from a file stem: other characters become `_`, a leading digit gets a `_`
+/// prefix (`19_il-test` -> `_19_il_test`).
+pub fn implicit_program_name(stem: &str) -> String {
+    let mut name: String = stem
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if name.is_empty() || name.starts_with(|c: char| c.is_ascii_digit()) {
+        name.insert(0, '_');
+    }
+    name
 }
 
 /// Parses an instruction list alone (e.g. the text of a PLCopen XML `<IL>` element). `base_offset` is the

@@ -495,9 +495,9 @@ impl<'s> Ctx<'s> {
             .collect()
     }
 
-    pub fn int_in<T: TryFrom<i128>>(&mut self, v: i128, what: &str, l: usize, r: usize) -> T
+    pub fn int_in<T>(&mut self, v: i128, what: &str, l: usize, r: usize) -> T
     where
-        T: Default,
+        T: TryFrom<i128> + Default,
     {
         T::try_from(v).unwrap_or_else(|_| {
             self.hint(
@@ -668,19 +668,15 @@ impl<'s> Ctx<'s> {
         } else {
             tok.describe(text)
         };
-        if let Tok::Word(w @ (Word::VarAccess | Word::VarConfig)) = tok {
-            self.hint(
-                code::E0019,
-                format!("`{}` blocks are not supported", w.spelling()),
-                s,
-                end,
-                "remove the block; declare the variables in VAR_GLOBAL or VAR_EXTERNAL",
-            );
-            return;
-        }
         let expect = summarize_expected(&expected);
         let eol_expected = expected.iter().any(|x| x == "EOL");
-        let (msg, hint) = if tok == Tok::Eol {
+        let semi_expected = expected.iter().any(|x| x == "\";\"");
+        let (msg, hint) = if semi_expected && !eol_expected && tok != Tok::Semi {
+            (
+                format!("expected `;` before {found}"),
+                "end each declaration with `;`".to_string(),
+            )
+        } else if tok == Tok::Eol {
             (
                 format!("unexpected end of line; expected {expect}"),
                 "complete the instruction or declaration on this line".to_string(),
@@ -732,7 +728,7 @@ fn summarize_expected(expected: &[String]) -> String {
             if (operand || has("IDENT")) && name_like {
                 continue;
             }
-            if operand && matches!(t, "TRUE" | "FALSE") {
+            if matches!(t, "R_EDGE" | "F_EDGE") || (operand && matches!(t, "TRUE" | "FALSE")) {
                 continue;
             }
             parts.push(format!("`{t}`"));
