@@ -13,7 +13,6 @@ pub mod body;
 pub mod catalogue;
 pub mod context;
 pub mod decls;
-pub mod emit;
 pub mod graph;
 pub mod il_body;
 pub mod lower;
@@ -55,7 +54,7 @@ pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::Com
     }
 }
 
-/// The unit as readable IL text (TYPE, POUs, CONFIGURATION).
+/// The unit as readable IL text (TYPE, POUs, CONFIGURATION), printed by `il_frontend::print`.
 pub fn emit_il(unit: &ast::CompilationUnit) -> String {
-    emit::unit(unit)
+    il_frontend::print::unit(unit)
 }
