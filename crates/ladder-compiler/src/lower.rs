@@ -145,6 +145,7 @@ impl<'i> BodyLowering<'i> {
 
     /// Lowers every network of the graph, in order.
     pub fn lower(&mut self, ctx: &mut Ctx, g: &Graph) -> Vec<IlStmt> {
+        self.check_jumps(ctx, g);
         let mut out = Vec::new();
         for (n, net) in g.networks.iter().enumerate() {
             let mut nl = NetLowering::new(self, g, n + 1);
@@ -154,6 +155,39 @@ impl<'i> BodyLowering<'i> {
             }
         }
         out
+    }
+
+    /// E3015 for every jump whose label no `<label>` of the body defines.
+    fn check_jumps(&self, ctx: &mut Ctx, g: &Graph) {
+        let labels: HashSet<String> = g
+            .nodes
+            .iter()
+            .filter_map(|n| match &n.kind {
+                Kind::Label { label, .. } => Some(label.to_ascii_uppercase()),
+                _ => None,
+            })
+            .collect();
+        for (net, nodes) in g.networks.iter().enumerate() {
+            for &i in nodes {
+                if let Kind::Jump { label, label_span } = &g.nodes[i].kind {
+                    if !labels.contains(&label.to_ascii_uppercase()) {
+                        let at = Where {
+                            pou: self.pou.clone(),
+                            network: Some(net + 1),
+                            local_id: Some(g.nodes[i].id.clone()),
+                        };
+                        ctx.report(
+                            Diagnostic::error(
+                                code::E3015,
+                                format!("jump to label `{label}`, which this body does not define"),
+                            )
+                            .at(*label_span)
+                            .with_xml(at.xml()),
+                        );
+                    }
+                }
+            }
+        }
     }
 
     /// The hidden declarations (edge detectors first, then temporaries by type).
