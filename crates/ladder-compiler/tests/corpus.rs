@@ -34,6 +34,21 @@ fn c02_traffic_light_names_the_missing_hmi_type() {
 }
 
 #[test]
+fn c04_motion_blocks_are_called_like_any_fb_in_data_flow_order() {
+    let (unit, _) = check("04_beremiz_ethercat_wago_higen_MC.xml");
+    let il = dump_unit(&unit);
+    let at = |needle: &str| {
+        il.find(needle)
+            .unwrap_or_else(|| panic!("`{needle}` missing in\n{il}"))
+    };
+    let power = at("CAL switch(Axis := Axis, Enable := __tmp_BOOL_");
+    let set = at("CAL MC_SetPosition0(Axis := Axis, Execute := switch.Status");
+    let mv = at("CAL move1(Axis := Axis, Execute := MC_SetPosition0.Done");
+    let vel = at("CAL MC_MoveVelocity0(Axis := Axis, Execute := move1.Done");
+    assert!(power < set && set < mv && mv < vel);
+}
+
+#[test]
 fn c04_c05_motion_fbd_reports_only_the_st_program() {
     for f in [
         "04_beremiz_ethercat_wago_higen_MC.xml",
