@@ -1,0 +1,92 @@
+//! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
+//! [`crate::lower`]; IL is parsed in place by the IL front end; ST and SFC get one precise diagnostic
+//! (E3003/E3004) naming the POU, and the POU keeps an empty body.
+//!
+//! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
+//! temporaries), one extra `VAR` block holding them.
+
+use crate::context::Ctx;
+use crate::graph;
+use crate::lower::BodyLowering;
+use crate::project::Index;
+use crate::xml::Element;
+use diagnostics::{code, Diagnostic, XmlContext};
+use il_frontend::ast::{IlStmt, Pou, VarBlock, VarKind};
+
+pub fn lower_pou_body(
+    ctx: &mut Ctx,
+    index: &Index,
+    pou_el: &Element,
+    pou: &Pou,
+) -> (Vec<IlStmt>, Option<VarBlock>) {
+    let Some(body) = pou_el.child("body") else {
+        return (Vec::new(), None);
+    };
+    let Some(lang) = body
+        .children
+        .iter()
+        .find(|c| !matches!(c.name, "documentation" | "addData"))
+    else {
+        return (Vec::new(), None);
+    };
+    let span = ctx.tag(lang);
+    let name = &pou.name.name;
+    let xml_ctx = XmlContext {
+        pou: Some(name.clone()),
+        ..Default::default()
+    };
+    match lang.name {
+        "LD" | "FBD" => {
+            let g = graph::read(ctx, lang, name);
+            let mut low = BodyLowering::new(index, pou, span);
+            let stmts = low.lower(ctx, &g);
+            let hidden = low.hidden_vars();
+            let block = (!hidden.is_empty()).then_some(VarBlock {
+                kind: VarKind::Local,
+                constant: false,
+                retain: false,
+                vars: hidden,
+                span,
+            });
+            (stmts, block)
+        }
+        "IL" => (crate::il_body::parse(ctx, lang), None),
+        "ST" => {
+            ctx.report(
+                Diagnostic::error(
+                    code::E3003,
+                    format!("ST bodies are not supported yet: POU `{name}` is written in ST"),
+                )
+                .at(span)
+                .with_primary_label("Structured Text body")
+                .with_hint("rewrite the POU in IL, LD or FBD; its interface is still checked")
+                .with_xml(xml_ctx),
+            );
+            (Vec::new(), None)
+        }
+        "SFC" => {
+            ctx.report(
+                Diagnostic::error(
+                    code::E3004,
+                    format!("SFC bodies are not supported yet: POU `{name}` is a sequential function chart"),
+                )
+                .at(span)
+                .with_primary_label("SFC body")
+                .with_hint("rewrite the sequence in LD or IL; its interface is still checked")
+                .with_xml(xml_ctx),
+            );
+            (Vec::new(), None)
+        }
+        other => {
+            ctx.report(
+                Diagnostic::error(
+                    code::E3012,
+                    format!("body language <{other}> of POU `{name}` is not supported"),
+                )
+                .at(span)
+                .with_xml(xml_ctx),
+            );
+            (Vec::new(), None)
+        }
+    }
+}

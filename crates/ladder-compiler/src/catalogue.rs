@@ -1,0 +1,336 @@
+//! What ladderc knows about blocks it did not read from the project: the IEC 61131-3 standard function
+//! blocks and functions, the PLCopen motion (MC_*) blocks, and the elementary types.
+//!
+//! Input: a block or type name (case-insensitive). Output: its kind, pins and pin types, and the rule
+//! that gives a function's result type. Invariants: names are compared upper-cased; a motion block
+//! accepts any pin (their exact pin lists belong to the motion library), with types for the usual ones.
+
+/// A standard function block: input and output pins with their types.
+pub struct StdFb {
+    pub name: &'static str,
+    pub inputs: &'static [(&'static str, &'static str)],
+    pub outputs: &'static [(&'static str, &'static str)],
+}
+
+const TIMER_IN: &[(&str, &str)] = &[("IN", "BOOL"), ("PT", "TIME")];
+const TIMER_OUT: &[(&str, &str)] = &[("Q", "BOOL"), ("ET", "TIME")];
+
+pub static STD_FBS: &[StdFb] = &[
+    StdFb {
+        name: "SR",
+        inputs: &[("S1", "BOOL"), ("R", "BOOL")],
+        outputs: &[("Q1", "BOOL")],
+    },
+    StdFb {
+        name: "RS",
+        inputs: &[("S", "BOOL"), ("R1", "BOOL")],
+        outputs: &[("Q1", "BOOL")],
+    },
+    StdFb {
+        name: "R_TRIG",
+        inputs: &[("CLK", "BOOL")],
+        outputs: &[("Q", "BOOL")],
+    },
+    StdFb {
+        name: "F_TRIG",
+        inputs: &[("CLK", "BOOL")],
+        outputs: &[("Q", "BOOL")],
+    },
+    StdFb {
+        name: "CTU",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "INT")],
+        outputs: &[("Q", "BOOL"), ("CV", "INT")],
+    },
+    StdFb {
+        name: "CTD",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "INT")],
+        outputs: &[("Q", "BOOL"), ("CV", "INT")],
+    },
+    StdFb {
+        name: "CTUD",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "INT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "INT")],
+    },
+    StdFb {
+        name: "TP",
+        inputs: TIMER_IN,
+        outputs: TIMER_OUT,
+    },
+    StdFb {
+        name: "TON",
+        inputs: TIMER_IN,
+        outputs: TIMER_OUT,
+    },
+    StdFb {
+        name: "TOF",
+        inputs: TIMER_IN,
+        outputs: TIMER_OUT,
+    },
+];
+
+pub fn std_fb(name: &str) -> Option<&'static StdFb> {
+    STD_FBS.iter().find(|f| f.name.eq_ignore_ascii_case(name))
+}
+
+/// PLCopen motion blocks (Part 1 and Part 4 names start with `MC_`).
+pub fn is_motion_block(name: &str) -> bool {
+    name.len() > 3 && name[..3].eq_ignore_ascii_case("MC_")
+}
+
+/// Pin types of motion blocks that are the same in every PLCopen block.
+pub fn motion_pin_type(pin: &str) -> Option<&'static str> {
+    let p = pin.to_ascii_uppercase();
+    Some(match p.as_str() {
+        "EXECUTE" | "ENABLE" | "DONE" | "BUSY" | "ACTIVE" | "COMMANDABORTED" | "ERROR"
+        | "VALID" | "STATUS" | "INVELOCITY" | "INGEAR" | "INSYNC" | "ENABLEPOSITIVE"
+        | "ENABLENEGATIVE" | "CONTINUOUSUPDATE" => "BOOL",
+        "ERRORID" => "WORD",
+        "POSITION" | "VELOCITY" | "ACCELERATION" | "DECELERATION" | "JERK" | "DISTANCE" => "LREAL",
+        "AXIS" | "MASTER" | "SLAVE" => "AXIS_REF",
+        _ => return None,
+    })
+}
+
+/// Types that may appear in declarations without being defined in the project.
+pub fn is_library_type(name: &str) -> bool {
+    let u = name.to_ascii_uppercase();
+    is_elementary(&u)
+        || std_fb(&u).is_some()
+        || is_motion_block(&u)
+        || matches!(
+            u.as_str(),
+            "AXIS_REF"
+                | "AXES_GROUP_REF"
+                | "MC_BUFFER_MODE"
+                | "MC_DIRECTION"
+                | "MC_TRANSITION_MODE"
+        )
+}
+
+pub fn is_elementary(u: &str) -> bool {
+    matches!(
+        u,
+        "BOOL"
+            | "SINT"
+            | "INT"
+            | "DINT"
+            | "LINT"
+            | "USINT"
+            | "UINT"
+            | "UDINT"
+            | "ULINT"
+            | "REAL"
+            | "LREAL"
+            | "TIME"
+            | "LTIME"
+            | "DATE"
+            | "TIME_OF_DAY"
+            | "TOD"
+            | "DATE_AND_TIME"
+            | "DT"
+            | "STRING"
+            | "WSTRING"
+            | "BYTE"
+            | "WORD"
+            | "DWORD"
+            | "LWORD"
+    )
+}
+
+/// How a standard function's result type follows from its inputs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ResultRule {
+    /// The type of the inputs (the first typed one), skipping selector inputs (`G`, `K`).
+    SameAsInputs,
+    Fixed(&'static str),
+}
+
+/// IL operators that a two-input block lowers to directly (`LD IN1` / `ADD IN2`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OperatorBlock {
+    Arith(il_frontend::ast::Op),
+    Compare(il_frontend::ast::Op),
+    Logic(il_frontend::ast::Op),
+    Not,
+    Move,
+}
+
+pub struct StdFunction {
+    pub rule: ResultRule,
+    pub operator: Option<OperatorBlock>,
+    /// Leading selector inputs that do not take part in the result type.
+    pub selectors: usize,
+}
+
+/// A standard function by name, or `None`.
+pub fn std_function(name: &str) -> Option<StdFunction> {
+    use il_frontend::ast::Op;
+    let u = name.to_ascii_uppercase();
+    let f = |rule, operator, selectors| {
+        Some(StdFunction {
+            rule,
+            operator,
+            selectors,
+        })
+    };
+    let same = ResultRule::SameAsInputs;
+    match u.as_str() {
+        "ADD" => f(same, Some(OperatorBlock::Arith(Op::Add)), 0),
+        "SUB" => f(same, Some(OperatorBlock::Arith(Op::Sub)), 0),
+        "MUL" => f(same, Some(OperatorBlock::Arith(Op::Mul)), 0),
+        "DIV" => f(same, Some(OperatorBlock::Arith(Op::Div)), 0),
+        "MOD" => f(same, Some(OperatorBlock::Arith(Op::Mod)), 0),
+        "GT" => f(
+            ResultRule::Fixed("BOOL"),
+            Some(OperatorBlock::Compare(Op::Gt)),
+            0,
+        ),
+        "GE" => f(
+            ResultRule::Fixed("BOOL"),
+            Some(OperatorBlock::Compare(Op::Ge)),
+            0,
+        ),
+        "EQ" => f(
+            ResultRule::Fixed("BOOL"),
+            Some(OperatorBlock::Compare(Op::Eq)),
+            0,
+        ),
+        "NE" => f(
+            ResultRule::Fixed("BOOL"),
+            Some(OperatorBlock::Compare(Op::Ne)),
+            0,
+        ),
+        "LE" => f(
+            ResultRule::Fixed("BOOL"),
+            Some(OperatorBlock::Compare(Op::Le)),
+            0,
+        ),
+        "LT" => f(
+            ResultRule::Fixed("BOOL"),
+            Some(OperatorBlock::Compare(Op::Lt)),
+            0,
+        ),
+        "AND" => f(same, Some(OperatorBlock::Logic(Op::And)), 0),
+        "OR" => f(same, Some(OperatorBlock::Logic(Op::Or)), 0),
+        "XOR" => f(same, Some(OperatorBlock::Logic(Op::Xor)), 0),
+        "NOT" => f(same, Some(OperatorBlock::Not), 0),
+        "MOVE" => f(same, Some(OperatorBlock::Move), 0),
+        "EXPT" | "ABS" | "SQRT" | "LN" | "LOG" | "EXP" | "SIN" | "COS" | "TAN" | "ASIN"
+        | "ACOS" | "ATAN" | "MAX" | "MIN" | "SHL" | "SHR" | "ROL" | "ROR" | "LIMIT" => {
+            f(same, None, 0)
+        }
+        "SEL" => f(same, None, 1),
+        "MUX" => f(same, None, 1),
+        "TRUNC" => f(ResultRule::Fixed("DINT"), None, 0),
+        "LEN" | "FIND" => f(ResultRule::Fixed("INT"), None, 0),
+        "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE" => {
+            f(ResultRule::Fixed("STRING"), None, 0)
+        }
+        _ => {
+            // Conversions: X_TO_Y, and the BCD conversions.
+            let (_, target) = u.split_once("_TO_")?;
+            let target = target.strip_prefix("BCD_").unwrap_or(target);
+            if is_elementary(target) {
+                Some(StdFunction {
+                    rule: ResultRule::Fixed(static_name(target)?),
+                    operator: None,
+                    selectors: 0,
+                })
+            } else {
+                None
+            }
+        }
+    }
+}
+
+fn static_name(u: &str) -> Option<&'static str> {
+    const NAMES: &[&str] = &[
+        "BOOL",
+        "SINT",
+        "INT",
+        "DINT",
+        "LINT",
+        "USINT",
+        "UINT",
+        "UDINT",
+        "ULINT",
+        "REAL",
+        "LREAL",
+        "TIME",
+        "LTIME",
+        "DATE",
+        "TIME_OF_DAY",
+        "TOD",
+        "DATE_AND_TIME",
+        "DT",
+        "STRING",
+        "WSTRING",
+        "BYTE",
+        "WORD",
+        "DWORD",
+        "LWORD",
+    ];
+    NAMES.iter().copied().find(|n| *n == u)
+}
+
+/// Broad type families for connection checks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Family {
+    Bool,
+    Int,
+    Real,
+    Bits,
+    Time,
+    Date,
+    String,
+}
+
+pub fn family(type_name: &str) -> Option<Family> {
+    Some(match type_name.to_ascii_uppercase().as_str() {
+        "BOOL" => Family::Bool,
+        "SINT" | "INT" | "DINT" | "LINT" | "USINT" | "UINT" | "UDINT" | "ULINT" => Family::Int,
+        "REAL" | "LREAL" => Family::Real,
+        "BYTE" | "WORD" | "DWORD" | "LWORD" => Family::Bits,
+        "TIME" | "LTIME" => Family::Time,
+        "DATE" | "TIME_OF_DAY" | "TOD" | "DATE_AND_TIME" | "DT" => Family::Date,
+        "STRING" | "WSTRING" => Family::String,
+        _ => return None,
+    })
+}
+
+/// Whether a value of family `from` may drive an input of family `to` (IEC 61131-3 ed. 3 implicit
+/// conversions: integers widen to reals; bit strings and integers mix in practice).
+pub fn compatible(from: Family, to: Family) -> bool {
+    from == to
+        || matches!(
+            (from, to),
+            (Family::Int, Family::Real) | (Family::Int, Family::Bits) | (Family::Bits, Family::Int)
+        )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn knows_standard_blocks() {
+        assert_eq!(std_fb("ton").unwrap().outputs[1], ("ET", "TIME"));
+        assert!(std_function("GT").unwrap().operator.is_some());
+        assert_eq!(
+            std_function("UINT_TO_REAL").unwrap().rule,
+            ResultRule::Fixed("REAL")
+        );
+        assert!(std_function("FOO_TO_BAR").is_none());
+        assert!(is_motion_block("MC_MoveAbsolute"));
+        assert!(!is_library_type("HMI_BOOL"));
+        assert!(is_library_type("axis_ref"));
+        assert!(!compatible(Family::Bool, Family::Int));
+        assert!(compatible(Family::Int, Family::Real));
+    }
+}

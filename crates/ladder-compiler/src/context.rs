@@ -1,0 +1,73 @@
+//! The compilation context shared by the readers: file id, XML text, diagnostics sink, and helpers that
+//! turn byte offsets and XML elements into spans and engineer-facing locations.
+//!
+//! Invariants: every span produced here lies inside the XML text; diagnostics about a graphical element
+//! carry an [`XmlContext`] naming the POU, the network (rung) and the element's localId.
+
+use crate::xml::Element;
+use diagnostics::{Code, Diagnostic, Diagnostics, FileId, Span, XmlContext};
+
+pub struct Ctx<'a> {
+    pub file: FileId,
+    pub xml: &'a str,
+    pub diags: &'a mut Diagnostics,
+}
+
+impl Ctx<'_> {
+    pub fn span(&self, start: usize, end: usize) -> Span {
+        let end = end.min(self.xml.len());
+        Span::new(self.file, start.min(end), end)
+    }
+    /// The span of an element's start tag: what diagnostics and lowered nodes point at.
+    pub fn tag(&self, e: &Element) -> Span {
+        self.span(e.tag_start, e.tag_end)
+    }
+    /// The span of an attribute's value, or of the start tag when the attribute is absent.
+    pub fn attr_span(&self, e: &Element, name: &str) -> Span {
+        match e.attr_full(name) {
+            Some(a) => self.span(a.start, a.end),
+            None => self.tag(e),
+        }
+    }
+    /// The span of an element's text content (first to last segment), or its start tag when empty.
+    pub fn text_span(&self, e: &Element) -> Span {
+        match (e.text.first(), e.text.last()) {
+            (Some(f), Some(l)) => {
+                // Trim surrounding whitespace so the excerpt underlines the words.
+                let raw = &self.xml[f.start..l.end];
+                let lead = raw.len() - raw.trim_start().len();
+                let trail = raw.len() - raw.trim_end().len();
+                if lead + trail >= raw.len() {
+                    self.tag(e)
+                } else {
+                    self.span(f.start + lead, l.end - trail)
+                }
+            }
+            _ => self.tag(e),
+        }
+    }
+    pub fn report(&mut self, d: Diagnostic) {
+        self.diags.push(d);
+    }
+    pub fn error(&mut self, code: Code, span: Span, msg: impl Into<String>) {
+        self.diags.push(Diagnostic::error(code, msg).at(span));
+    }
+}
+
+/// Where in the project a graphical element sits.
+#[derive(Debug, Clone, Default)]
+pub struct Where {
+    pub pou: String,
+    pub network: Option<usize>,
+    pub local_id: Option<String>,
+}
+
+impl Where {
+    pub fn xml(&self) -> XmlContext {
+        XmlContext {
+            pou: Some(self.pou.clone()),
+            local_id: self.local_id.clone(),
+            network: self.network.map(|n| n.to_string()),
+        }
+    }
+}

@@ -1,0 +1,377 @@
+//! Declarations: `<dataType>`, `<type>`, `<variable>`, `<initialValue>` and the interface variable lists
+//! of a POU, turned into [`ast::TypeDecl`], [`ast::TypeRef`], [`ast::VarDecl`] and [`ast::VarBlock`].
+//!
+//! Input: elements of the `types` and `interface` parts (tc6_0201, tc6_0200 and v1.0 spell them alike).
+//! Output: syntax-tree declarations whose spans point at the `<variable>`/`<dataType>` start tags and
+//! whose names point at the `name` attribute. Invariants: a declaration that cannot be read is reported
+//! (E3011/E3012/E3013) and left out; the rest of the list is still returned.
+
+use crate::context::Ctx;
+use crate::values;
+use crate::xml::Element;
+use diagnostics::code;
+use il_frontend::ast::{
+    ArrayDim, ArrayInitElement, EnumValue, Ident, Initializer, TypeDecl, TypeDef, TypeRef,
+    VarBlock, VarDecl, VarKind,
+};
+
+/// Elementary type element names of the schema and the IEC name they stand for.
+fn elementary(name: &str) -> Option<&'static str> {
+    Some(match name {
+        "BOOL" => "BOOL",
+        "BYTE" => "BYTE",
+        "WORD" => "WORD",
+        "DWORD" => "DWORD",
+        "LWORD" => "LWORD",
+        "SINT" => "SINT",
+        "INT" => "INT",
+        "DINT" => "DINT",
+        "LINT" => "LINT",
+        "USINT" => "USINT",
+        "UINT" => "UINT",
+        "UDINT" => "UDINT",
+        "ULINT" => "ULINT",
+        "REAL" => "REAL",
+        "LREAL" => "LREAL",
+        "TIME" => "TIME",
+        "LTIME" => "LTIME",
+        "DATE" => "DATE",
+        "DT" => "DT",
+        "TOD" => "TOD",
+        _ => return None,
+    })
+}
+
+/// Reads the single type element inside `<type>`, `<baseType>` or `<returnType>`.
+pub fn type_ref(ctx: &mut Ctx, holder: &Element) -> Option<TypeRef> {
+    let Some(t) = holder.children.first() else {
+        ctx.error(
+            code::E3013,
+            ctx.tag(holder),
+            format!("<{}> has no type inside", holder.name),
+        );
+        return None;
+    };
+    type_element(ctx, t)
+}
+
+fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
+    let span = ctx.tag(t);
+    if let Some(n) = elementary(t.name) {
+        return Some(TypeRef::Named(Ident::new(n, span)));
+    }
+    match t.name {
+        "string" | "wstring" => Some(TypeRef::String {
+            wide: t.name == "wstring",
+            length: t.attr("length").and_then(|l| l.trim().parse().ok()),
+            span,
+        }),
+        "derived" => match t.attr("name") {
+            Some(n) if values::is_ident(n.trim()) => Some(TypeRef::Named(Ident::new(
+                n.trim(),
+                ctx.attr_span(t, "name"),
+            ))),
+            _ => {
+                ctx.error(code::E3013, span, "<derived> type without a valid `name`");
+                None
+            }
+        },
+        "array" => {
+            let mut dims = Vec::new();
+            for d in t.children_named("dimension") {
+                let lo = d.attr("lower").and_then(|v| v.trim().parse().ok());
+                let hi = d.attr("upper").and_then(|v| v.trim().parse().ok());
+                match (lo, hi) {
+                    (Some(lower), Some(upper)) => dims.push(ArrayDim {
+                        lower,
+                        upper,
+                        span: ctx.tag(d),
+                    }),
+                    _ => {
+                        ctx.error(
+                            code::E3011,
+                            ctx.tag(d),
+                            "array dimension bounds must be integer literals",
+                        );
+                        return None;
+                    }
+                }
+            }
+            let element = type_ref(ctx, t.child("baseType")?)?;
+            Some(TypeRef::Array {
+                dims,
+                element: Box::new(element),
+                span,
+            })
+        }
+        "enum" => {
+            let values = t
+                .child("values")
+                .map(|v| {
+                    v.children_named("value")
+                        .filter_map(|e| {
+                            e.attr("name")
+                                .map(|n| Ident::new(n, ctx.attr_span(e, "name")))
+                        })
+                        .collect()
+                })
+                .unwrap_or_default();
+            Some(TypeRef::Enum { values, span })
+        }
+        "subrangeSigned" | "subrangeUnsigned" => {
+            let range = t.child("range");
+            let lo = range
+                .and_then(|r| r.attr("lower"))
+                .and_then(|v| v.trim().parse().ok());
+            let hi = range
+                .and_then(|r| r.attr("upper"))
+                .and_then(|v| v.trim().parse().ok());
+            let base = t.child("baseType").and_then(|b| b.children.first());
+            let base = base.and_then(|b| elementary(b.name).map(|n| Ident::new(n, ctx.tag(b))));
+            match (lo, hi, base) {
+                (Some(lower), Some(upper), Some(base)) => Some(TypeRef::Subrange {
+                    base,
+                    lower,
+                    upper,
+                    span,
+                }),
+                _ => {
+                    ctx.error(
+                        code::E3011,
+                        span,
+                        "subrange needs integer bounds and an elementary base type",
+                    );
+                    None
+                }
+            }
+        }
+        other => {
+            ctx.error(
+                code::E3012,
+                span,
+                format!("type <{other}> is not supported here"),
+            );
+            None
+        }
+    }
+}
+
+/// `<initialValue>`: simpleValue, arrayValue, structValue.
+/// `ty` is the declared type: a string variable's initial value written without quotes (as v1.0
+/// exports do) is taken as the string itself.
+pub fn initial_value(ctx: &mut Ctx, holder: &Element, ty: Option<&TypeRef>) -> Option<Initializer> {
+    let v = holder.children.first()?;
+    value_element(ctx, v, ty)
+}
+
+fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Initializer> {
+    match v.name {
+        "simpleValue" => {
+            let text = v.attr("value").unwrap_or_default();
+            let span = ctx.attr_span(v, "value");
+            if let Some(TypeRef::String { wide, .. }) = ty {
+                let t = text.trim();
+                if !(t.starts_with('\'') || t.starts_with('"')) {
+                    return Some(Initializer::Value(il_frontend::ast::Operand::Literal(
+                        il_frontend::ast::Literal {
+                            kind: il_frontend::ast::LiteralKind::String {
+                                wide: *wide,
+                                value: text.to_string(),
+                            },
+                            type_prefix: None,
+                            span,
+                        },
+                    )));
+                }
+            }
+            match values::operand(text, span) {
+                Some(op) => Some(Initializer::Value(op)),
+                None => {
+                    ctx.error(
+                        code::E3011,
+                        span,
+                        format!("initial value `{text}` is not a literal or a constant name"),
+                    );
+                    None
+                }
+            }
+        }
+        "arrayValue" => {
+            let mut elems = Vec::new();
+            for e in v.children_named("value") {
+                let repeat = e.attr("repeatCount").and_then(|r| r.trim().parse().ok());
+                let inner = e
+                    .children
+                    .first()
+                    .and_then(|c| value_element(ctx, c, None))?;
+                elems.push(ArrayInitElement {
+                    repeat,
+                    value: inner,
+                });
+            }
+            Some(Initializer::Array(elems, ctx.tag(v)))
+        }
+        "structValue" => {
+            let mut fields = Vec::new();
+            for e in v.children_named("value") {
+                let name = e.attr("member").unwrap_or_default();
+                let span = ctx.attr_span(e, "member");
+                let inner = e
+                    .children
+                    .first()
+                    .and_then(|c| value_element(ctx, c, None))?;
+                fields.push((Ident::new(name, span), inner));
+            }
+            Some(Initializer::Struct(fields, ctx.tag(v)))
+        }
+        other => {
+            ctx.error(
+                code::E3012,
+                ctx.tag(v),
+                format!("value <{other}> is not supported"),
+            );
+            None
+        }
+    }
+}
+
+/// One `<variable>` of an interface list, a struct, or a global list.
+pub fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
+    let span = ctx.tag(v);
+    let Some(name) = v
+        .attr("name")
+        .map(str::trim)
+        .filter(|n| values::is_ident(n))
+    else {
+        ctx.error(code::E3013, span, "variable without a valid `name`");
+        return None;
+    };
+    let name = Ident::new(name, ctx.attr_span(v, "name"));
+    let Some(ty_el) = v.child("type") else {
+        ctx.error(
+            code::E3013,
+            span,
+            format!("variable `{}` has no <type>", name.name),
+        );
+        return None;
+    };
+    let ty = type_ref(ctx, ty_el)?;
+    let location = match v.attr("address") {
+        Some(a) => {
+            let aspan = ctx.attr_span(v, "address");
+            match values::address(a.trim(), aspan) {
+                Some(addr) => Some(addr),
+                None => {
+                    ctx.error(code::E3011, aspan, format!("`{a}` is not a direct address"));
+                    None
+                }
+            }
+        }
+        None => None,
+    };
+    let init = v
+        .child("initialValue")
+        .and_then(|i| initial_value(ctx, i, Some(&ty)));
+    Some(VarDecl {
+        name,
+        location,
+        ty,
+        init,
+        span,
+    })
+}
+
+/// The interface list element names and the variable kind they declare.
+pub fn var_kind(list: &str) -> Option<VarKind> {
+    Some(match list {
+        "inputVars" => VarKind::Input,
+        "outputVars" => VarKind::Output,
+        "inOutVars" => VarKind::InOut,
+        "localVars" => VarKind::Local,
+        "tempVars" => VarKind::Temp,
+        "externalVars" => VarKind::External,
+        "globalVars" => VarKind::Global,
+        _ => return None,
+    })
+}
+
+/// A variable list element (`<localVars constant="true">...`) as a [`VarBlock`].
+pub fn var_block(ctx: &mut Ctx, list: &Element, kind: VarKind) -> VarBlock {
+    let flag = |n: &str| {
+        list.attr(n)
+            .is_some_and(|v| v.trim() == "true" || v.trim() == "1")
+    };
+    let vars = list
+        .children_named("variable")
+        .filter_map(|v| variable(ctx, v))
+        .collect();
+    VarBlock {
+        kind,
+        constant: flag("constant"),
+        retain: flag("retain") || flag("persistent"),
+        vars,
+        span: ctx.tag(list),
+    }
+}
+
+/// `<dataType name="...">` with its `<baseType>` and optional `<initialValue>`.
+pub fn data_type(ctx: &mut Ctx, d: &Element) -> Option<TypeDecl> {
+    let span = ctx.tag(d);
+    let Some(name) = d
+        .attr("name")
+        .map(str::trim)
+        .filter(|n| values::is_ident(n))
+    else {
+        ctx.error(code::E3013, span, "data type without a valid `name`");
+        return None;
+    };
+    let name = Ident::new(name, ctx.attr_span(d, "name"));
+    let Some(base) = d.child("baseType").and_then(|b| b.children.first()) else {
+        ctx.error(
+            code::E3013,
+            span,
+            format!("data type `{}` has no <baseType>", name.name),
+        );
+        return None;
+    };
+    let init = d
+        .child("initialValue")
+        .and_then(|i| initial_value(ctx, i, None));
+    let def = match base.name {
+        "struct" => TypeDef::Struct {
+            fields: base
+                .children_named("variable")
+                .filter_map(|v| variable(ctx, v))
+                .collect(),
+        },
+        "enum" => {
+            let values = base
+                .child("values")
+                .map(|vs| {
+                    vs.children_named("value")
+                        .filter_map(|e| {
+                            let n = e.attr("name")?;
+                            Some(EnumValue {
+                                name: Ident::new(n, ctx.attr_span(e, "name")),
+                                value: e.attr("value").and_then(|x| x.trim().parse().ok()),
+                            })
+                        })
+                        .collect()
+                })
+                .unwrap_or_default();
+            let init = match init {
+                Some(Initializer::Value(il_frontend::ast::Operand::Var(v))) => Some(v.base),
+                Some(Initializer::Value(il_frontend::ast::Operand::EnumValue {
+                    value, ..
+                })) => Some(value),
+                _ => None,
+            };
+            TypeDef::Enum { values, init }
+        }
+        _ => TypeDef::Alias {
+            ty: type_element(ctx, base)?,
+            init,
+        },
+    };
+    Some(TypeDecl { name, def, span })
+}

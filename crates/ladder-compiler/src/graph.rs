@@ -1,0 +1,602 @@
+//! The graphical body (LD or FBD) as a graph: nodes by localId, wires, networks, evaluation order.
+//!
+//! Input: the `<LD>` or `<FBD>` element. Output: [`Graph`] with one [`Node`] per element (comments
+//! dropped), every wire resolved to a node index (dangling ones reported as E3006), networks (connected
+//! components, connectors joined to their continuations by name) in execution order.
+//! Order (documented in the README): networks by the smallest non-zero `executionOrderId` of their
+//! elements, networks without one after them by the top-most then left-most element position (y, then x);
+//! inside a network, data flow first, ties broken the same way, then by localId.
+
+use crate::context::Ctx;
+use crate::xml::Element;
+use diagnostics::{code, Diagnostic, Span};
+use std::collections::HashMap;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Edge {
+    None,
+    Rising,
+    Falling,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Storage {
+    None,
+    Set,
+    Reset,
+}
+
+/// One wire end: the source node and, for blocks, the source output pin.
+#[derive(Debug, Clone)]
+pub struct Wire {
+    pub from: usize,
+    pub pin: Option<String>,
+    pub span: Span,
+}
+
+/// A block input (or in-out) pin.
+#[derive(Debug, Clone)]
+pub struct InPin {
+    pub name: String,
+    pub negated: bool,
+    pub edge: Edge,
+    pub wires: Vec<Wire>,
+    pub span: Span,
+    pub in_out: bool,
+}
+
+#[derive(Debug, Clone)]
+pub struct OutPin {
+    pub name: String,
+    pub negated: bool,
+}
+
+#[derive(Debug, Clone)]
+pub enum Kind {
+    LeftRail,
+    RightRail,
+    Contact {
+        var: String,
+        var_span: Span,
+        negated: bool,
+        edge: Edge,
+    },
+    Coil {
+        var: String,
+        var_span: Span,
+        negated: bool,
+        storage: Storage,
+        edge: Edge,
+    },
+    Block {
+        type_name: String,
+        type_span: Span,
+        instance: Option<(String, Span)>,
+        inputs: Vec<InPin>,
+        outputs: Vec<OutPin>,
+    },
+    InVar {
+        expr: String,
+        expr_span: Span,
+        negated: bool,
+    },
+    OutVar {
+        expr: String,
+        expr_span: Span,
+        negated: bool,
+    },
+    InOutVar {
+        expr: String,
+        expr_span: Span,
+        negated_in: bool,
+        negated_out: bool,
+    },
+    Connector {
+        name: String,
+    },
+    Continuation {
+        name: String,
+    },
+    Jump {
+        label: String,
+        label_span: Span,
+    },
+    Label {
+        label: String,
+        label_span: Span,
+    },
+    Return,
+}
+
+#[derive(Debug, Clone)]
+pub struct Node {
+    pub id: String,
+    pub kind: Kind,
+    pub span: Span,
+    pub exec_order: Option<u32>,
+    pub x: i64,
+    pub y: i64,
+    /// Wires into the single input of non-block elements (OR-combined when several).
+    pub input: Vec<Wire>,
+    /// Whether the element has a `<connectionPointIn>` at all.
+    pub has_input: bool,
+    /// Whether that point holds at least one `<connection>` (even a dangling one).
+    pub wired: bool,
+}
+
+impl Node {
+    /// Every wire into this node (block pins included).
+    pub fn all_wires(&self) -> Vec<&Wire> {
+        let mut out: Vec<&Wire> = self.input.iter().collect();
+        if let Kind::Block { inputs, .. } = &self.kind {
+            out.extend(inputs.iter().flat_map(|p| p.wires.iter()));
+        }
+        out
+    }
+    /// Execution order key: non-zero `executionOrderId`, then y, then x, then the numeric localId.
+    pub fn order_key(&self) -> (u32, i64, i64, u64) {
+        (
+            self.exec_order.filter(|o| *o > 0).unwrap_or(u32::MAX),
+            self.y,
+            self.x,
+            self.id.parse().unwrap_or(u64::MAX),
+        )
+    }
+}
+
+pub struct Graph {
+    pub nodes: Vec<Node>,
+    /// Networks in execution order; each lists its node indexes.
+    pub networks: Vec<Vec<usize>>,
+    /// For each continuation node, the connector nodes of the same name.
+    pub continuation_sources: HashMap<usize, Vec<usize>>,
+}
+
+fn bool_attr(e: &Element, name: &str) -> bool {
+    e.attr(name)
+        .is_some_and(|v| v.trim() == "true" || v.trim() == "1")
+}
+
+fn edge_attr(e: &Element) -> Edge {
+    match e.attr("edge").map(str::trim) {
+        Some("rising") => Edge::Rising,
+        Some("falling") => Edge::Falling,
+        _ => Edge::None,
+    }
+}
+
+struct RawWire {
+    ref_id: String,
+    pin: Option<String>,
+    span: Span,
+}
+
+fn raw_wires(ctx: &Ctx, point: Option<&Element>) -> Vec<RawWire> {
+    point
+        .map(|p| {
+            p.children_named("connection")
+                .map(|c| RawWire {
+                    ref_id: c.attr("refLocalId").unwrap_or_default().trim().to_string(),
+                    pin: c
+                        .attr("formalParameter")
+                        .map(|s| s.trim().to_string())
+                        .filter(|s| !s.is_empty()),
+                    span: ctx.tag(c),
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+fn text_of(ctx: &Ctx, e: &Element, child: &str) -> (String, Span) {
+    match e.child(child) {
+        Some(c) => (c.text().trim().to_string(), ctx.text_span(c)),
+        None => (String::new(), ctx.tag(e)),
+    }
+}
+
+/// Reads the body's elements. `pou` names the POU in diagnostics.
+pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
+    let mut nodes = Vec::new();
+    let mut raw_inputs: Vec<Vec<RawWire>> = Vec::new();
+    let mut raw_pins: Vec<Vec<Vec<RawWire>>> = Vec::new();
+    let mut ids: HashMap<String, usize> = HashMap::new();
+    for e in &body.children {
+        let span = ctx.tag(e);
+        let mut pin_wires = Vec::new();
+        let kind = match e.name {
+            "comment" | "addData" | "vendorElement" | "documentation" => continue,
+            "leftPowerRail" => Kind::LeftRail,
+            "rightPowerRail" => Kind::RightRail,
+            "contact" => {
+                let (var, var_span) = text_of(ctx, e, "variable");
+                Kind::Contact {
+                    var,
+                    var_span,
+                    negated: bool_attr(e, "negated"),
+                    edge: edge_attr(e),
+                }
+            }
+            "coil" => {
+                let (var, var_span) = text_of(ctx, e, "variable");
+                Kind::Coil {
+                    var,
+                    var_span,
+                    negated: bool_attr(e, "negated"),
+                    storage: match e.attr("storage").map(str::trim) {
+                        Some("set") => Storage::Set,
+                        Some("reset") => Storage::Reset,
+                        _ => Storage::None,
+                    },
+                    edge: edge_attr(e),
+                }
+            }
+            "inVariable" => {
+                let (expr, expr_span) = text_of(ctx, e, "expression");
+                Kind::InVar {
+                    expr,
+                    expr_span,
+                    negated: bool_attr(e, "negated"),
+                }
+            }
+            "outVariable" => {
+                let (expr, expr_span) = text_of(ctx, e, "expression");
+                Kind::OutVar {
+                    expr,
+                    expr_span,
+                    negated: bool_attr(e, "negated"),
+                }
+            }
+            "inOutVariable" => {
+                let (expr, expr_span) = text_of(ctx, e, "expression");
+                Kind::InOutVar {
+                    expr,
+                    expr_span,
+                    negated_in: bool_attr(e, "negatedIn"),
+                    negated_out: bool_attr(e, "negatedOut"),
+                }
+            }
+            "connector" => Kind::Connector {
+                name: e.attr("name").unwrap_or_default().trim().to_string(),
+            },
+            "continuation" => Kind::Continuation {
+                name: e.attr("name").unwrap_or_default().trim().to_string(),
+            },
+            "jump" => Kind::Jump {
+                label: e.attr("label").unwrap_or_default().trim().to_string(),
+                label_span: ctx.attr_span(e, "label"),
+            },
+            "label" => Kind::Label {
+                label: e.attr("label").unwrap_or_default().trim().to_string(),
+                label_span: ctx.attr_span(e, "label"),
+            },
+            "return" => Kind::Return,
+            "block" => {
+                let mut inputs = Vec::new();
+                let mut outputs = Vec::new();
+                for (list, in_out) in [("inputVariables", false), ("inOutVariables", true)] {
+                    for v in e
+                        .child(list)
+                        .into_iter()
+                        .flat_map(|l| l.children_named("variable"))
+                    {
+                        let point = v.child("connectionPointIn");
+                        pin_wires.push(raw_wires(ctx, point));
+                        inputs.push(InPin {
+                            name: v
+                                .attr("formalParameter")
+                                .unwrap_or_default()
+                                .trim()
+                                .to_string(),
+                            negated: bool_attr(v, "negated"),
+                            edge: edge_attr(v),
+                            wires: Vec::new(),
+                            span: ctx.tag(v),
+                            in_out,
+                        });
+                    }
+                }
+                for v in e
+                    .child("outputVariables")
+                    .into_iter()
+                    .flat_map(|l| l.children_named("variable"))
+                {
+                    outputs.push(OutPin {
+                        name: v
+                            .attr("formalParameter")
+                            .unwrap_or_default()
+                            .trim()
+                            .to_string(),
+                        negated: bool_attr(v, "negated"),
+                    });
+                }
+                let instance = e
+                    .attr("instanceName")
+                    .map(str::trim)
+                    .filter(|s| !s.is_empty())
+                    .map(|s| (s.to_string(), ctx.attr_span(e, "instanceName")));
+                Kind::Block {
+                    type_name: e.attr("typeName").unwrap_or_default().trim().to_string(),
+                    type_span: ctx.attr_span(e, "typeName"),
+                    instance,
+                    inputs,
+                    outputs,
+                }
+            }
+            other => {
+                ctx.report(
+                    Diagnostic::error(
+                        code::E3012,
+                        format!("element <{other}> is not supported in a graphical body"),
+                    )
+                    .at(span)
+                    .with_xml(diagnostics::XmlContext {
+                        pou: Some(pou.to_string()),
+                        local_id: e.attr("localId").map(str::to_string),
+                        network: None,
+                    }),
+                );
+                continue;
+            }
+        };
+        let Some(id) = e.attr("localId").map(str::trim).filter(|s| !s.is_empty()) else {
+            ctx.error(code::E3013, span, format!("<{}> without a localId", e.name));
+            continue;
+        };
+        if let Some(&prev) = ids.get(id) {
+            let prev_span: Span = nodes
+                .iter()
+                .map(|n: &Node| n.span)
+                .nth(prev)
+                .unwrap_or(span);
+            ctx.report(
+                Diagnostic::error(code::E3014, format!("localId {id} is used twice"))
+                    .at(span)
+                    .with_label(prev_span, "first used here")
+                    .with_xml(diagnostics::XmlContext {
+                        pou: Some(pou.to_string()),
+                        local_id: Some(id.to_string()),
+                        network: None,
+                    }),
+            );
+            continue;
+        }
+        let pos = e.child("position");
+        let coord = |n: &str| {
+            pos.and_then(|p| p.attr(n))
+                .and_then(|v| v.trim().parse::<f64>().ok())
+                .map(|v| v as i64)
+                .unwrap_or(0)
+        };
+        let point = e.child("connectionPointIn");
+        ids.insert(id.to_string(), nodes.len());
+        let raws = raw_wires(ctx, point);
+        let wired = !raws.is_empty();
+        raw_inputs.push(raws);
+        raw_pins.push(pin_wires);
+        nodes.push(Node {
+            id: id.to_string(),
+            kind,
+            span,
+            exec_order: e
+                .attr("executionOrderId")
+                .and_then(|v| v.trim().parse().ok()),
+            x: coord("x"),
+            y: coord("y"),
+            input: Vec::new(),
+            has_input: point.is_some(),
+            wired,
+        });
+    }
+    // Resolve wires.
+    let resolve = |ctx: &mut Ctx, raws: Vec<RawWire>, node: &Node| -> Vec<Wire> {
+        let mut out = Vec::new();
+        for r in raws {
+            match ids.get(&r.ref_id) {
+                Some(&from) => out.push(Wire {
+                    from,
+                    pin: r.pin,
+                    span: r.span,
+                }),
+                None => ctx.report(
+                    Diagnostic::error(
+                        code::E3006,
+                        format!("connection to localId {} which does not exist", r.ref_id),
+                    )
+                    .at(r.span)
+                    .with_primary_label("dangling wire")
+                    .with_xml(diagnostics::XmlContext {
+                        pou: Some(pou.to_string()),
+                        local_id: Some(node.id.clone()),
+                        network: None,
+                    }),
+                ),
+            }
+        }
+        out
+    };
+    for (i, (raws, pins)) in raw_inputs.into_iter().zip(raw_pins).enumerate() {
+        let wires = resolve(ctx, raws, &nodes[i]);
+        nodes[i].input = wires;
+        let mut resolved = Vec::new();
+        for p in pins {
+            resolved.push(resolve(ctx, p, &nodes[i]));
+        }
+        if let Kind::Block { inputs, .. } = &mut nodes[i].kind {
+            for (pin, w) in inputs.iter_mut().zip(resolved) {
+                pin.wires = w;
+            }
+        }
+    }
+    // Connectors and continuations.
+    let mut connectors: HashMap<String, Vec<usize>> = HashMap::new();
+    for (i, n) in nodes.iter().enumerate() {
+        if let Kind::Connector { name } = &n.kind {
+            connectors
+                .entry(name.to_ascii_uppercase())
+                .or_default()
+                .push(i);
+        }
+    }
+    let mut continuation_sources = HashMap::new();
+    for (i, n) in nodes.iter().enumerate() {
+        if let Kind::Continuation { name } = &n.kind {
+            match connectors.get(&name.to_ascii_uppercase()) {
+                Some(c) => {
+                    continuation_sources.insert(i, c.clone());
+                }
+                None => ctx.report(
+                    Diagnostic::error(
+                        code::E3006,
+                        format!("continuation `{name}` has no connector of that name"),
+                    )
+                    .at(n.span)
+                    .with_xml(diagnostics::XmlContext {
+                        pou: Some(pou.to_string()),
+                        local_id: Some(n.id.clone()),
+                        network: None,
+                    }),
+                ),
+            }
+        }
+    }
+    let networks = networks(&nodes, &continuation_sources);
+    Graph {
+        nodes,
+        networks,
+        continuation_sources,
+    }
+}
+
+fn find(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
+}
+
+fn networks(nodes: &[Node], conts: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize>> {
+    let mut parent: Vec<usize> = (0..nodes.len()).collect();
+    let union = |a: usize, b: usize, parent: &mut Vec<usize>| {
+        let (ra, rb) = (find(parent, a), find(parent, b));
+        if ra != rb {
+            parent[ra.max(rb)] = ra.min(rb);
+        }
+    };
+    for (i, n) in nodes.iter().enumerate() {
+        for w in n.all_wires() {
+            union(i, w.from, &mut parent);
+        }
+    }
+    for (c, srcs) in conts {
+        for s in srcs {
+            union(*c, *s, &mut parent);
+        }
+    }
+    let mut groups: HashMap<usize, Vec<usize>> = HashMap::new();
+    for i in 0..nodes.len() {
+        let r = find(&mut parent, i);
+        groups.entry(r).or_default().push(i);
+    }
+    let mut nets: Vec<Vec<usize>> = groups.into_values().collect();
+    let key = |net: &Vec<usize>| {
+        let exec = net
+            .iter()
+            .filter_map(|&i| nodes[i].exec_order.filter(|o| *o > 0))
+            .min()
+            .unwrap_or(u32::MAX);
+        let top = net
+            .iter()
+            .map(|&i| (nodes[i].y, nodes[i].x))
+            .min()
+            .unwrap_or((0, 0));
+        (exec, top.0, top.1, net[0])
+    };
+    nets.sort_by_key(key);
+    nets
+}
+
+/// Strongly connected components (iterative Tarjan) of the subgraph `net` with edges `deps[i]`
+/// (i depends on each of deps[i]). Returns the components with more than one node or a self-loop.
+pub fn cycles(net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize>> {
+    let mut index: HashMap<usize, usize> = HashMap::new();
+    let mut low: HashMap<usize, usize> = HashMap::new();
+    let mut on_stack: HashMap<usize, bool> = HashMap::new();
+    let mut stack: Vec<usize> = Vec::new();
+    let mut out = Vec::new();
+    let mut counter = 0;
+    let empty = Vec::new();
+    for &root in net {
+        if index.contains_key(&root) {
+            continue;
+        }
+        let mut work: Vec<(usize, usize)> = vec![(root, 0)];
+        while let Some(&(v, child)) = work.last() {
+            if child == 0 && !index.contains_key(&v) {
+                index.insert(v, counter);
+                low.insert(v, counter);
+                counter += 1;
+                stack.push(v);
+                on_stack.insert(v, true);
+            }
+            let succ = deps.get(&v).unwrap_or(&empty);
+            if child < succ.len() {
+                let w = succ[child];
+                if let Some(top) = work.last_mut() {
+                    top.1 += 1;
+                }
+                if !index.contains_key(&w) {
+                    work.push((w, 0));
+                } else if on_stack.get(&w).copied().unwrap_or(false) {
+                    let lw = index[&w];
+                    let lv = low[&v];
+                    low.insert(v, lv.min(lw));
+                }
+                continue;
+            }
+            work.pop();
+            if let Some(&(parent, _)) = work.last() {
+                let lv = low[&v];
+                let lp = low[&parent];
+                low.insert(parent, lp.min(lv));
+            }
+            if low[&v] == index[&v] {
+                let mut comp = Vec::new();
+                while let Some(w) = stack.pop() {
+                    on_stack.insert(w, false);
+                    comp.push(w);
+                    if w == v {
+                        break;
+                    }
+                }
+                let self_loop = comp.len() == 1 && succ.contains(&v);
+                if comp.len() > 1 || self_loop {
+                    out.push(comp);
+                }
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_cycles_only_where_they_are() {
+        let mut deps = HashMap::new();
+        deps.insert(1, vec![2]);
+        deps.insert(2, vec![3]);
+        deps.insert(3, vec![1]);
+        deps.insert(4, vec![1]);
+        deps.insert(5, vec![5]);
+        let mut c = cycles(&[1, 2, 3, 4, 5, 6], &deps);
+        for comp in &mut c {
+            comp.sort();
+        }
+        c.sort();
+        assert_eq!(c, vec![vec![1, 2, 3], vec![5]]);
+    }
+}

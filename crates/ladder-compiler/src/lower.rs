@@ -1,0 +1,1823 @@
+//! Lowering one graphical body (LD or FBD) to IL statements.
+//!
+//! Input: the [`Graph`] of a body, the POU's variable types and the project [`Index`].
+//! Output: IL statements (network after network) and the hidden variables they need (edge-detection
+//! instances, temporaries), declared in one extra `VAR` block by the caller.
+//!
+//! Semantics, per network (the rules users expect of a PLC, which naive LD-to-ST converters break):
+//! 1. Phase 1 evaluates the network: blocks run in data-flow order (a block before anything that reads
+//!    its outputs; chained blocks in order), edge detectors are called, and every value used more than
+//!    once is stored in a temporary, so it is computed exactly once.
+//! 2. Phase 2 writes coils and output variables. Parallel coils fed by one power flow share a single
+//!    evaluation (`LD ...` then `ST a`, `ST b`). A write whose value reads a variable that an earlier
+//!    write of the same network changes is captured in phase 1, so every contact sees the value the
+//!    variable had before the rung.
+//! 3. Jumps and returns come last, with the same capture rule.
+//!
+//! Feedback loops must pass through an in-out variable (it reads the previous value); other loops are
+//! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot.
+
+use crate::catalogue::{self, Family, OperatorBlock, ResultRule};
+use crate::context::{Ctx, Where};
+use crate::graph::{self, Edge, Graph, InPin, Kind, Storage, Wire};
+use crate::project::{Index, PouSig};
+use crate::values;
+use diagnostics::{code, Code, Diagnostic, Span};
+use il_frontend::ast::{
+    Accessor, AddressSize, ArgDir, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind,
+    Instruction, Literal, LiteralKind, Op, Operand, PouKind, TypeDef, TypeRef, VarDecl, VarKind,
+    VarRef,
+};
+use std::collections::{BTreeMap, BinaryHeap, HashMap, HashSet};
+
+type ValId = usize;
+
+#[derive(Debug, Clone)]
+enum Val {
+    Const(bool),
+    Leaf { op: Operand, neg: bool },
+    And(ValId, ValId),
+    Or(Vec<ValId>),
+    Not(ValId),
+}
+
+#[derive(Debug, Clone)]
+enum Ty {
+    Known(TypeRef),
+    WeakInt,
+    WeakReal,
+    Unknown,
+}
+
+enum WriteKind {
+    St { neg: bool },
+    Set,
+    Reset,
+}
+
+struct Write {
+    target: Operand,
+    kind: WriteKind,
+    val: ValId,
+    span: Span,
+}
+
+enum Control {
+    Jump(Ident, ValId, Span),
+    Return(ValId, Span),
+}
+
+enum FuncForm {
+    Operator(OperatorBlock),
+    NonFormal,
+    Formal,
+}
+
+enum Action {
+    Trig {
+        inst: String,
+        clk: ValId,
+        span: Span,
+    },
+    Fb {
+        inst: VarRef,
+        args: Vec<(Ident, ValId)>,
+        en: Option<ValId>,
+        span: Span,
+    },
+    Func {
+        name: Ident,
+        form: FuncForm,
+        args: Vec<(Ident, ValId)>,
+        en: Option<ValId>,
+        result: Operand,
+        skip_label: String,
+        span: Span,
+    },
+    Label(Ident),
+}
+
+/// What a block's typeName refers to.
+enum BlockType<'a> {
+    UserFb(&'a PouSig),
+    UserFn(&'a PouSig),
+    StdFb(&'static catalogue::StdFb),
+    Motion,
+    StdFn(catalogue::StdFunction),
+}
+
+/// The POU-level lowering state: variable types, hidden declarations, temporary pools.
+pub struct BodyLowering<'i> {
+    index: &'i Index,
+    pou: String,
+    vars: HashMap<String, TypeRef>,
+    body_span: Span,
+    hidden: Vec<VarDecl>,
+    hidden_names: HashSet<String>,
+    /// Type key -> (type, highest count used by one network).
+    pools: BTreeMap<String, (TypeRef, usize)>,
+}
+
+impl<'i> BodyLowering<'i> {
+    pub fn new(index: &'i Index, pou: &il_frontend::ast::Pou, body_span: Span) -> BodyLowering<'i> {
+        let mut vars = HashMap::new();
+        for (k, t) in &index.globals {
+            vars.insert(k.clone(), t.clone());
+        }
+        for b in &pou.var_blocks {
+            for v in &b.vars {
+                vars.insert(v.name.key(), v.ty.clone());
+            }
+        }
+        if let Some(r) = &pou.return_type {
+            vars.insert(pou.name.key(), r.clone());
+        }
+        BodyLowering {
+            index,
+            pou: pou.name.name.clone(),
+            vars,
+            body_span,
+            hidden: Vec::new(),
+            hidden_names: HashSet::new(),
+            pools: BTreeMap::new(),
+        }
+    }
+
+    /// Lowers every network of the graph, in order.
+    pub fn lower(&mut self, ctx: &mut Ctx, g: &Graph) -> Vec<IlStmt> {
+        self.check_jumps(ctx, g);
+        let mut out = Vec::new();
+        for (n, net) in g.networks.iter().enumerate() {
+            let mut nl = NetLowering::new(self, g, n + 1);
+            if let Some(order) = nl.order(ctx, net) {
+                nl.build(ctx, &order);
+                nl.emit(&mut out);
+            }
+        }
+        out
+    }
+
+    /// E3015 for every jump whose label no `<label>` of the body defines.
+    fn check_jumps(&self, ctx: &mut Ctx, g: &Graph) {
+        let labels: HashSet<String> = g
+            .nodes
+            .iter()
+            .filter_map(|n| match &n.kind {
+                Kind::Label { label, .. } => Some(label.to_ascii_uppercase()),
+                _ => None,
+            })
+            .collect();
+        for (net, nodes) in g.networks.iter().enumerate() {
+            for &i in nodes {
+                if let Kind::Jump { label, label_span } = &g.nodes[i].kind {
+                    if !labels.contains(&label.to_ascii_uppercase()) {
+                        let at = Where {
+                            pou: self.pou.clone(),
+                            network: Some(net + 1),
+                            local_id: Some(g.nodes[i].id.clone()),
+                        };
+                        ctx.report(
+                            Diagnostic::error(
+                                code::E3015,
+                                format!("jump to label `{label}`, which this body does not define"),
+                            )
+                            .at(*label_span)
+                            .with_xml(at.xml()),
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// The hidden declarations (edge detectors first, then temporaries by type).
+    pub fn hidden_vars(mut self) -> Vec<VarDecl> {
+        let span = self.body_span;
+        for (key, (ty, count)) in std::mem::take(&mut self.pools) {
+            for i in 0..count {
+                self.hidden.push(VarDecl {
+                    name: Ident::new(temp_name(&key, i), span),
+                    location: None,
+                    ty: ty.clone(),
+                    init: None,
+                    span,
+                });
+            }
+        }
+        self.hidden
+    }
+
+    fn declare_trig(&mut self, name: &str, falling: bool, span: Span) {
+        if self.hidden_names.insert(name.to_string()) {
+            let ty = if falling { "F_TRIG" } else { "R_TRIG" };
+            self.vars.insert(
+                name.to_ascii_uppercase(),
+                TypeRef::Named(Ident::new(ty, span)),
+            );
+            self.hidden.push(VarDecl {
+                name: Ident::new(name, span),
+                location: None,
+                ty: TypeRef::Named(Ident::new(if falling { "F_TRIG" } else { "R_TRIG" }, span)),
+                init: None,
+                span,
+            });
+        }
+    }
+
+    fn var_type(&self, v: &VarRef) -> Option<TypeRef> {
+        let mut ty = self.vars.get(&v.base.key())?.clone();
+        for acc in &v.accessors {
+            ty = match acc {
+                Accessor::Index(_) => match ty {
+                    TypeRef::Array { element, .. } => *element,
+                    _ => return None,
+                },
+                Accessor::Field(f) => self.field_type(&ty, f)?,
+            };
+        }
+        Some(ty)
+    }
+
+    fn field_type(&self, ty: &TypeRef, field: &Ident) -> Option<TypeRef> {
+        let TypeRef::Named(n) = ty else { return None };
+        let span = field.span;
+        if let Some(fb) = catalogue::std_fb(&n.name) {
+            return fb
+                .inputs
+                .iter()
+                .chain(fb.outputs.iter())
+                .find(|(p, _)| field.is(p))
+                .map(|(_, t)| named_type(t, span));
+        }
+        if catalogue::is_motion_block(&n.name) {
+            return catalogue::motion_pin_type(&field.name).map(|t| named_type(t, span));
+        }
+        if let Some(sig) = self.index.pous.get(&n.key()) {
+            return sig
+                .pins
+                .iter()
+                .find(|(p, _, _)| field.is(p))
+                .map(|(_, _, t)| t.clone());
+        }
+        match self.index.types.get(&n.key()).map(|d| &d.def) {
+            Some(TypeDef::Struct { fields }) => fields
+                .iter()
+                .find(|f| f.name == *field)
+                .map(|f| f.ty.clone()),
+            Some(TypeDef::Alias { ty, .. }) => self.field_type(ty, field),
+            _ => None,
+        }
+    }
+
+    fn is_fb_type(&self, ty: &TypeRef) -> bool {
+        let TypeRef::Named(n) = ty else { return false };
+        catalogue::std_fb(&n.name).is_some()
+            || catalogue::is_motion_block(&n.name)
+            || self
+                .index
+                .pous
+                .get(&n.key())
+                .is_some_and(|p| p.kind == PouKind::FunctionBlock)
+    }
+}
+
+fn type_key(ty: &TypeRef) -> String {
+    match ty {
+        TypeRef::Named(n) => n.key(),
+        TypeRef::String { wide, length, .. } => format!(
+            "{}{}",
+            if *wide { "WSTRING" } else { "STRING" },
+            length.map(|l| l.to_string()).unwrap_or_default()
+        ),
+        _ => "T".to_string(),
+    }
+}
+
+fn temp_name(key: &str, i: usize) -> String {
+    format!("__tmp_{key}_{i}")
+}
+
+fn sanitize(id: &str) -> String {
+    id.chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect()
+}
+
+fn bool_ty(span: Span) -> TypeRef {
+    TypeRef::Named(Ident::new("BOOL", span))
+}
+
+fn family_of(ty: &Ty) -> Option<Family> {
+    match ty {
+        Ty::Known(TypeRef::Named(n)) => catalogue::family(&n.name),
+        Ty::Known(TypeRef::String { .. }) => Some(Family::String),
+        Ty::Known(TypeRef::Subrange { base, .. }) => catalogue::family(&base.name),
+        Ty::WeakInt => Some(Family::Int),
+        Ty::WeakReal => Some(Family::Real),
+        _ => None,
+    }
+}
+
+fn type_text(ty: &Ty) -> String {
+    match ty {
+        Ty::Known(TypeRef::Named(n)) => n.name.clone(),
+        Ty::Known(TypeRef::String { wide, .. }) => if *wide { "WSTRING" } else { "STRING" }.into(),
+        Ty::Known(_) => "a structured type".into(),
+        Ty::WeakInt => "an integer literal".into(),
+        Ty::WeakReal => "a real literal".into(),
+        Ty::Unknown => "an unknown type".into(),
+    }
+}
+
+fn instr(kind: InstrKind, span: Span) -> IlStmt {
+    IlStmt::Instr(Instruction { kind, span })
+}
+
+fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt {
+    instr(
+        InstrKind::Simple {
+            op,
+            negate,
+            operand,
+        },
+        span,
+    )
+}
+
+fn var_operand(name: &str, span: Span) -> Operand {
+    Operand::Var(VarRef {
+        base: Ident::new(name, span),
+        accessors: Vec::new(),
+        span,
+    })
+}
+
+fn field_operand(base: &VarRef, field: &str, span: Span) -> Operand {
+    let mut v = base.clone();
+    v.accessors.push(Accessor::Field(Ident::new(field, span)));
+    v.span = span;
+    Operand::Var(v)
+}
+
+fn bool_lit(b: bool, span: Span) -> Operand {
+    Operand::Literal(Literal {
+        kind: LiteralKind::Bool(b),
+        type_prefix: None,
+        span,
+    })
+}
+
+/// One network being lowered.
+struct NetLowering<'a, 'i> {
+    pou: &'a mut BodyLowering<'i>,
+    g: &'a Graph,
+    network: usize,
+    vals: Vec<Val>,
+    spans: Vec<Span>,
+    temps: Vec<Option<Operand>>,
+    uses: Vec<u32>,
+    pin_vals: HashMap<(usize, String), ValId>,
+    built: HashSet<usize>,
+    poisoned: HashSet<usize>,
+    actions: Vec<Action>,
+    writes: Vec<Write>,
+    controls: Vec<Control>,
+    /// Temporaries used by this network, per type key.
+    used: HashMap<String, usize>,
+}
+
+impl<'a, 'i> NetLowering<'a, 'i> {
+    fn new(pou: &'a mut BodyLowering<'i>, g: &'a Graph, network: usize) -> Self {
+        NetLowering {
+            pou,
+            g,
+            network,
+            vals: Vec::new(),
+            spans: Vec::new(),
+            temps: Vec::new(),
+            uses: Vec::new(),
+            pin_vals: HashMap::new(),
+            built: HashSet::new(),
+            poisoned: HashSet::new(),
+            actions: Vec::new(),
+            writes: Vec::new(),
+            controls: Vec::new(),
+            used: HashMap::new(),
+        }
+    }
+
+    fn at(&self, node: usize) -> Where {
+        Where {
+            pou: self.pou.pou.clone(),
+            network: Some(self.network),
+            local_id: Some(self.g.nodes[node].id.clone()),
+        }
+    }
+
+    fn diag(&self, ctx: &mut Ctx, code: Code, node: usize, span: Span, msg: String) -> Diagnostic {
+        let _ = ctx;
+        Diagnostic::error(code, msg)
+            .at(span)
+            .with_xml(self.at(node).xml())
+    }
+
+    // ------------------------------------------------------------ ordering
+
+    /// The evaluation order of the network's nodes, or `None` (E3010 reported) for a loop without a
+    /// variable.
+    fn order(&mut self, ctx: &mut Ctx, net: &[usize]) -> Option<Vec<usize>> {
+        let g = self.g;
+        let mut deps: HashMap<usize, Vec<usize>> = HashMap::new();
+        for &i in net {
+            let mut d: Vec<usize> = g.nodes[i].all_wires().iter().map(|w| w.from).collect();
+            if let Some(srcs) = g.continuation_sources.get(&i) {
+                d.extend(srcs);
+            }
+            deps.insert(i, d);
+        }
+        // A loop is cut at a wire leaving a variable or a function block instance: the reader then
+        // sees the value from the previous scan. Variables are preferred, then the wire that runs
+        // furthest backwards (right to left), as drawn feedback wires do.
+        loop {
+            let comps = graph::cycles(net, &deps);
+            if comps.is_empty() {
+                break;
+            }
+            for comp in comps {
+                let set: HashSet<usize> = comp.iter().copied().collect();
+                let mut best: Option<((u8, i64, i64), usize, usize)> = None;
+                for &t in &comp {
+                    for &s in deps.get(&t).map(Vec::as_slice).unwrap_or(&[]) {
+                        if !set.contains(&s) {
+                            continue;
+                        }
+                        let rank = match &g.nodes[s].kind {
+                            Kind::InOutVar { .. } => 2,
+                            Kind::Block { type_name, .. } if self.is_fb_block(type_name) => 1,
+                            _ => continue,
+                        };
+                        let key = (rank, g.nodes[s].x - g.nodes[t].x, -(g.nodes[s].y));
+                        if best.as_ref().is_none_or(|(k, _, _)| key > *k) {
+                            best = Some((key, t, s));
+                        }
+                    }
+                }
+                match best {
+                    Some((_, t, s)) => {
+                        if let Some(d) = deps.get_mut(&t) {
+                            d.retain(|x| *x != s);
+                        }
+                    }
+                    None => {
+                        self.report_loop(ctx, comp);
+                        return None;
+                    }
+                }
+            }
+        }
+        // Kahn's algorithm, ties broken by the documented order key.
+        let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
+        let mut users: HashMap<usize, Vec<usize>> = HashMap::new();
+        for (&i, d) in &deps {
+            for &s in d {
+                if indeg.contains_key(&s) {
+                    *indeg.get_mut(&i).unwrap_or(&mut 0) += 1;
+                    users.entry(s).or_default().push(i);
+                }
+            }
+        }
+        let mut heap = BinaryHeap::new();
+        for (&i, &d) in &indeg {
+            if d == 0 {
+                heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
+            }
+        }
+        let mut order = Vec::with_capacity(net.len());
+        while let Some(std::cmp::Reverse((_, i))) = heap.pop() {
+            order.push(i);
+            for &u in users.get(&i).map(Vec::as_slice).unwrap_or(&[]) {
+                if let Some(d) = indeg.get_mut(&u) {
+                    *d -= 1;
+                    if *d == 0 {
+                        heap.push(std::cmp::Reverse((g.nodes[u].order_key(), u)));
+                    }
+                }
+            }
+        }
+        Some(order)
+    }
+
+    fn is_fb_block(&self, type_name: &str) -> bool {
+        matches!(
+            self.block_type(type_name),
+            Some(BlockType::UserFb(_) | BlockType::StdFb(_) | BlockType::Motion)
+        )
+    }
+
+    fn report_loop(&mut self, ctx: &mut Ctx, mut comp: Vec<usize>) {
+        let g = self.g;
+        comp.sort_by_key(|&i| g.nodes[i].order_key());
+        let names: Vec<String> = comp
+            .iter()
+            .map(|&i| match &g.nodes[i].kind {
+                Kind::Block { type_name, .. } => format!("{type_name} (localId {})", g.nodes[i].id),
+                _ => format!("localId {}", g.nodes[i].id),
+            })
+            .collect();
+        let first = comp[0];
+        let mut d = self
+            .diag(
+                ctx,
+                code::E3010,
+                first,
+                g.nodes[first].span,
+                format!("feedback loop without a variable: {}", names.join(" -> ")),
+            )
+            .with_hint(
+                "route the loop through an in-out variable; it then reads the previous value",
+            );
+        for &i in &comp[1..] {
+            d = d.with_label(g.nodes[i].span, "part of the loop");
+        }
+        ctx.report(d);
+    }
+
+    // ------------------------------------------------------------ values
+
+    fn val(&mut self, v: Val, span: Span) -> ValId {
+        self.vals.push(v);
+        self.spans.push(span);
+        self.temps.push(None);
+        self.uses.push(0);
+        self.vals.len() - 1
+    }
+
+    fn ty(&self, v: ValId) -> Ty {
+        match &self.vals[v] {
+            Val::Const(_) | Val::And(..) | Val::Or(_) => Ty::Known(bool_ty(self.spans[v])),
+            Val::Not(a) => self.ty(*a),
+            Val::Leaf { op, .. } => self.operand_ty(op),
+        }
+    }
+
+    fn operand_ty(&self, op: &Operand) -> Ty {
+        match op {
+            Operand::Literal(l) => {
+                if let Some(p) = &l.type_prefix {
+                    return Ty::Known(TypeRef::Named(p.clone()));
+                }
+                let named = |n: &str| Ty::Known(TypeRef::Named(Ident::new(n, l.span)));
+                match &l.kind {
+                    LiteralKind::Int(_) => Ty::WeakInt,
+                    LiteralKind::Real(_) => Ty::WeakReal,
+                    LiteralKind::Bool(_) => named("BOOL"),
+                    LiteralKind::Duration(_) => named("TIME"),
+                    LiteralKind::Date(_) => named("DATE"),
+                    LiteralKind::TimeOfDay(_) => named("TOD"),
+                    LiteralKind::DateAndTime(_) => named("DT"),
+                    LiteralKind::String { wide, .. } => Ty::Known(TypeRef::String {
+                        wide: *wide,
+                        length: None,
+                        span: l.span,
+                    }),
+                }
+            }
+            Operand::Var(v) => self.pou.var_type(v).map(Ty::Known).unwrap_or(Ty::Unknown),
+            Operand::Address(a) => Ty::Known(TypeRef::Named(Ident::new(
+                match a.size {
+                    AddressSize::Bit => "BOOL",
+                    AddressSize::Byte => "BYTE",
+                    AddressSize::Word => "WORD",
+                    AddressSize::DWord => "DWORD",
+                    AddressSize::LWord => "LWORD",
+                },
+                a.span,
+            ))),
+            Operand::EnumValue { type_name, .. } => Ty::Known(TypeRef::Named(type_name.clone())),
+        }
+    }
+
+    /// The value flowing out of `wire`'s source; `consumer` is the reading node (for diagnostics).
+    fn wire_val(&mut self, ctx: &mut Ctx, w: &Wire, consumer: usize) -> Option<ValId> {
+        let g = self.g;
+        let src = &g.nodes[w.from];
+        if self.poisoned.contains(&w.from) {
+            return None;
+        }
+        if !self.built.contains(&w.from) {
+            // Only a cut loop gets here: read the previous value of the variable or instance output.
+            match &src.kind {
+                Kind::InOutVar {
+                    expr, expr_span, ..
+                } => {
+                    let op = values::operand(expr, *expr_span)?;
+                    return Some(self.val(Val::Leaf { op, neg: false }, src.span));
+                }
+                Kind::Block {
+                    instance: Some((inst, inst_span)),
+                    outputs,
+                    ..
+                } => {
+                    let inst = values::var_ref(inst, *inst_span)?;
+                    let pin = match &w.pin {
+                        Some(p) => p.clone(),
+                        None => outputs.first()?.name.clone(),
+                    };
+                    let op = field_operand(&inst, &pin, w.span);
+                    return Some(self.val(Val::Leaf { op, neg: false }, src.span));
+                }
+                _ => return None,
+            }
+        }
+        let key = match &src.kind {
+            Kind::Block { outputs, .. } => match &w.pin {
+                Some(p) => p.to_ascii_uppercase(),
+                None if outputs.len() == 1 => outputs[0].name.to_ascii_uppercase(),
+                None => String::new(),
+            },
+            _ => String::new(),
+        };
+        match self.pin_vals.get(&(w.from, key.clone())) {
+            Some(&v) => Some(v),
+            None => {
+                let msg = match (&src.kind, &w.pin) {
+                    (Kind::Block { type_name, .. }, Some(p)) => {
+                        format!("block {type_name} (localId {}) has no output `{p}`", src.id)
+                    }
+                    _ => format!("localId {} has no output to connect", src.id),
+                };
+                let d = self.diag(ctx, code::E3018, consumer, w.span, msg);
+                ctx.report(d);
+                None
+            }
+        }
+    }
+
+    /// The OR of every wire into one input; `None` when nothing (usable) is connected.
+    fn input_val(&mut self, ctx: &mut Ctx, wires: &[Wire], consumer: usize) -> Option<ValId> {
+        let mut vs = Vec::new();
+        for w in wires {
+            if let Some(v) = self.wire_val(ctx, w, consumer) {
+                vs.push(v);
+            }
+        }
+        match vs.len() {
+            0 => None,
+            1 => Some(vs[0]),
+            _ => {
+                if vs.iter().any(|v| matches!(self.vals[*v], Val::Const(true))) {
+                    return Some(self.val(Val::Const(true), self.g.nodes[consumer].span));
+                }
+                Some(self.val(Val::Or(vs), self.g.nodes[consumer].span))
+            }
+        }
+    }
+
+    fn parse_var(&mut self, ctx: &mut Ctx, node: usize, text: &str, span: Span) -> Option<Operand> {
+        match values::operand(text, span) {
+            Some(op) => Some(op),
+            None => {
+                let what = if text.is_empty() {
+                    "(empty)".to_string()
+                } else {
+                    format!("`{text}`")
+                };
+                let d = self.diag(
+                    ctx,
+                    code::E3011,
+                    node,
+                    span,
+                    format!("{what} is not a variable, direct address or literal"),
+                );
+                ctx.report(d);
+                None
+            }
+        }
+    }
+
+    fn check_bool(&mut self, ctx: &mut Ctx, node: usize, v: ValId, span: Span, what: &str) {
+        let ty = self.ty(v);
+        if let Some(f) = family_of(&ty) {
+            if f != Family::Bool {
+                let d = self.diag(
+                    ctx,
+                    code::E3008,
+                    node,
+                    span,
+                    format!(
+                        "{what} needs BOOL power flow, but is driven by {}",
+                        type_text(&ty)
+                    ),
+                );
+                ctx.report(d);
+            }
+        }
+    }
+
+    fn check_var_bool(&mut self, ctx: &mut Ctx, node: usize, op: &Operand, span: Span, what: &str) {
+        let ty = self.operand_ty(op);
+        if let Some(f) = family_of(&ty) {
+            if f != Family::Bool {
+                let d = self.diag(
+                    ctx,
+                    code::E3008,
+                    node,
+                    span,
+                    format!("{what} variable has type {}, not BOOL", type_text(&ty)),
+                );
+                ctx.report(d);
+            }
+        }
+    }
+
+    fn trig(&mut self, name: String, falling: bool, clk: ValId, span: Span) -> ValId {
+        self.pou.declare_trig(&name, falling, span);
+        self.actions.push(Action::Trig {
+            inst: name.clone(),
+            clk,
+            span,
+        });
+        let inst = VarRef {
+            base: Ident::new(&name, span),
+            accessors: Vec::new(),
+            span,
+        };
+        self.val(
+            Val::Leaf {
+                op: field_operand(&inst, "Q", span),
+                neg: false,
+            },
+            span,
+        )
+    }
+
+    fn alloc_temp(&mut self, ty: &TypeRef) -> Operand {
+        let key = type_key(ty);
+        let n = self.used.entry(key.clone()).or_insert(0);
+        let name = temp_name(&key, *n);
+        *n += 1;
+        let count = *n;
+        let entry = self.pou.pools.entry(key).or_insert_with(|| (ty.clone(), 0));
+        entry.1 = entry.1.max(count);
+        self.pou.vars.insert(name.to_ascii_uppercase(), ty.clone());
+        var_operand(&name, self.pou.body_span)
+    }
+
+    // ------------------------------------------------------------ building
+
+    fn build(&mut self, ctx: &mut Ctx, order: &[usize]) {
+        for &i in order {
+            self.build_node(ctx, i);
+            self.built.insert(i);
+        }
+    }
+
+    fn build_node(&mut self, ctx: &mut Ctx, i: usize) {
+        let g = self.g;
+        let node = &g.nodes[i];
+        let span = node.span;
+        match &node.kind {
+            Kind::LeftRail => {
+                let v = self.val(Val::Const(true), span);
+                self.pin_vals.insert((i, String::new()), v);
+            }
+            Kind::RightRail => {}
+            Kind::Contact {
+                var,
+                var_span,
+                negated,
+                edge,
+            } => {
+                let input = self.input_val(ctx, &node.input, i);
+                if input.is_none() && !node.wired {
+                    let d = self
+                        .diag(
+                            ctx,
+                            code::E3005,
+                            i,
+                            span,
+                            format!("contact `{var}` is not connected on its left side"),
+                        )
+                        .with_primary_label("no power can reach this contact");
+                    ctx.report(d);
+                }
+                if let Some(v) = input {
+                    self.check_bool(ctx, i, v, span, &format!("contact `{var}`"));
+                }
+                let Some(op) = self.parse_var(ctx, i, var, *var_span) else {
+                    self.poisoned.insert(i);
+                    return;
+                };
+                self.check_var_bool(ctx, i, &op, *var_span, &format!("contact `{var}`:"));
+                let leaf = match edge {
+                    Edge::None => self.val(Val::Leaf { op, neg: *negated }, span),
+                    e => {
+                        let read = self.val(Val::Leaf { op, neg: false }, span);
+                        let name = format!("__trig_{}", sanitize(&node.id));
+                        let q = self.trig(name, *e == Edge::Falling, read, span);
+                        if *negated {
+                            self.val(Val::Not(q), span)
+                        } else {
+                            q
+                        }
+                    }
+                };
+                let v = match input.map(|v| (v, &self.vals[v])) {
+                    Some((_, Val::Const(true))) => leaf,
+                    Some((v, _)) => self.val(Val::And(v, leaf), span),
+                    None => self.val(Val::Const(false), span),
+                };
+                self.pin_vals.insert((i, String::new()), v);
+            }
+            Kind::Coil {
+                var,
+                var_span,
+                negated,
+                storage,
+                edge,
+            } => {
+                let input = self.input_val(ctx, &node.input, i);
+                let Some(v) = input else {
+                    if !node.wired {
+                        let d = self
+                            .diag(
+                                ctx,
+                                code::E3005,
+                                i,
+                                span,
+                                format!("coil `{var}` is not connected on its left side"),
+                            )
+                            .with_primary_label("this coil is never written");
+                        ctx.report(d);
+                    }
+                    self.poisoned.insert(i);
+                    return;
+                };
+                self.check_bool(ctx, i, v, span, &format!("coil `{var}`"));
+                self.pin_vals.insert((i, String::new()), v);
+                let Some(target) = self.parse_var(ctx, i, var, *var_span) else {
+                    return;
+                };
+                self.check_var_bool(ctx, i, &target, *var_span, &format!("coil `{var}`:"));
+                let val = match edge {
+                    Edge::None => v,
+                    e => {
+                        let name = format!("__trig_{}", sanitize(&node.id));
+                        self.trig(name, *e == Edge::Falling, v, span)
+                    }
+                };
+                let kind = match storage {
+                    Storage::Set => WriteKind::Set,
+                    Storage::Reset => WriteKind::Reset,
+                    Storage::None => WriteKind::St { neg: *negated },
+                };
+                self.writes.push(Write {
+                    target,
+                    kind,
+                    val,
+                    span,
+                });
+            }
+            Kind::InVar {
+                expr,
+                expr_span,
+                negated,
+            } => {
+                let Some(op) = self.parse_var(ctx, i, expr, *expr_span) else {
+                    self.poisoned.insert(i);
+                    return;
+                };
+                let v = self.val(Val::Leaf { op, neg: *negated }, span);
+                self.pin_vals.insert((i, String::new()), v);
+            }
+            Kind::OutVar {
+                expr,
+                expr_span,
+                negated,
+            } => {
+                let Some(v) = self.input_val(ctx, &node.input, i) else {
+                    if !node.wired {
+                        let d = Diagnostic::warning(
+                            code::W3003,
+                            format!("output variable `{expr}` has nothing connected and is never written"),
+                        )
+                        .at(span)
+                        .with_xml(self.at(i).xml());
+                        ctx.report(d);
+                    }
+                    return;
+                };
+                let Some(target) = self.parse_var(ctx, i, expr, *expr_span) else {
+                    return;
+                };
+                self.check_assign(ctx, i, v, &target, span);
+                self.writes.push(Write {
+                    target,
+                    kind: WriteKind::St { neg: *negated },
+                    val: v,
+                    span,
+                });
+            }
+            Kind::InOutVar {
+                expr,
+                expr_span,
+                negated_in,
+                negated_out,
+            } => {
+                let Some(op) = self.parse_var(ctx, i, expr, *expr_span) else {
+                    self.poisoned.insert(i);
+                    return;
+                };
+                let out = match self.input_val(ctx, &node.input, i) {
+                    Some(v) => {
+                        self.check_assign(ctx, i, v, &op, span);
+                        self.writes.push(Write {
+                            target: op.clone(),
+                            kind: WriteKind::St { neg: *negated_in },
+                            val: v,
+                            span,
+                        });
+                        if *negated_in {
+                            self.val(Val::Not(v), span)
+                        } else {
+                            v
+                        }
+                    }
+                    None => self.val(Val::Leaf { op, neg: false }, span),
+                };
+                let out = if *negated_out {
+                    self.val(Val::Not(out), span)
+                } else {
+                    out
+                };
+                self.pin_vals.insert((i, String::new()), out);
+            }
+            Kind::Connector { .. } => {
+                if let Some(v) = self.input_val(ctx, &node.input, i) {
+                    self.pin_vals.insert((i, String::new()), v);
+                } else {
+                    self.poisoned.insert(i);
+                }
+            }
+            Kind::Continuation { .. } => {
+                let srcs = g.continuation_sources.get(&i).cloned().unwrap_or_default();
+                let wires: Vec<Wire> = srcs
+                    .iter()
+                    .map(|&s| Wire {
+                        from: s,
+                        pin: None,
+                        span,
+                    })
+                    .collect();
+                match self.input_val(ctx, &wires, i) {
+                    Some(v) => {
+                        self.pin_vals.insert((i, String::new()), v);
+                    }
+                    None => {
+                        self.poisoned.insert(i);
+                    }
+                }
+            }
+            Kind::Jump { label, label_span } => {
+                let v = self
+                    .input_val(ctx, &node.input, i)
+                    .unwrap_or_else(|| self.val(Val::Const(!node.has_input), span));
+                self.controls
+                    .push(Control::Jump(Ident::new(label, *label_span), v, span));
+            }
+            Kind::Return => {
+                let v = self
+                    .input_val(ctx, &node.input, i)
+                    .unwrap_or_else(|| self.val(Val::Const(!node.has_input), span));
+                self.controls.push(Control::Return(v, span));
+            }
+            Kind::Label { label, label_span } => {
+                self.actions
+                    .push(Action::Label(Ident::new(label, *label_span)));
+            }
+            Kind::Block { .. } => self.build_block(ctx, i),
+        }
+    }
+
+    /// E3008 for an assignment of `v` to `target` when both types are known and incompatible.
+    fn check_assign(&mut self, ctx: &mut Ctx, node: usize, v: ValId, target: &Operand, span: Span) {
+        let from = self.ty(v);
+        let to = self.operand_ty(target);
+        if let (Some(f), Some(t)) = (family_of(&from), family_of(&to)) {
+            if !catalogue::compatible(f, t) {
+                let d = self.diag(
+                    ctx,
+                    code::E3008,
+                    node,
+                    span,
+                    format!(
+                        "{} value written to a variable of type {}",
+                        type_text(&from),
+                        type_text(&to)
+                    ),
+                );
+                ctx.report(d);
+            }
+        }
+    }
+
+    fn block_type(&self, name: &str) -> Option<BlockType<'i>> {
+        let index: &'i Index = self.pou.index;
+        if let Some(sig) = index.pous.get(&name.to_ascii_uppercase()) {
+            return match sig.kind {
+                PouKind::FunctionBlock => Some(BlockType::UserFb(sig)),
+                PouKind::Function => Some(BlockType::UserFn(sig)),
+                PouKind::Program => None,
+            };
+        }
+        if let Some(fb) = catalogue::std_fb(name) {
+            return Some(BlockType::StdFb(fb));
+        }
+        if catalogue::is_motion_block(name) {
+            return Some(BlockType::Motion);
+        }
+        catalogue::std_function(name).map(BlockType::StdFn)
+    }
+
+    fn pin_type(bt: &BlockType, pin: &str, span: Span) -> Option<Option<TypeRef>> {
+        // Some(None): pin exists, type unknown; None: no such pin.
+        match bt {
+            BlockType::UserFb(sig) | BlockType::UserFn(sig) => sig
+                .pins
+                .iter()
+                .find(|(p, k, _)| p.eq_ignore_ascii_case(pin) && *k != VarKind::Output)
+                .map(|(_, _, t)| Some(t.clone())),
+            BlockType::StdFb(fb) => fb
+                .inputs
+                .iter()
+                .find(|(p, _)| p.eq_ignore_ascii_case(pin))
+                .map(|(_, t)| Some(named_type(t, span))),
+            BlockType::Motion => Some(catalogue::motion_pin_type(pin).map(|t| named_type(t, span))),
+            BlockType::StdFn(_) => Some(None),
+        }
+    }
+
+    fn build_block(&mut self, ctx: &mut Ctx, i: usize) {
+        let g = self.g;
+        let node = &g.nodes[i];
+        let span = node.span;
+        let Kind::Block {
+            type_name,
+            type_span,
+            instance,
+            inputs,
+            outputs,
+        } = &node.kind
+        else {
+            return;
+        };
+        if type_name.is_empty() {
+            let d = self.diag(ctx, code::E3013, i, span, "block without a typeName".into());
+            ctx.report(d);
+            self.poisoned.insert(i);
+            return;
+        }
+        let Some(bt) = self.block_type(type_name) else {
+            let is_program = self
+                .pou
+                .index
+                .pous
+                .contains_key(&type_name.to_ascii_uppercase());
+            let d = if is_program {
+                self.diag(
+                    ctx,
+                    code::E3012,
+                    i,
+                    *type_span,
+                    format!("program `{type_name}` cannot be called as a block"),
+                )
+            } else {
+                self.diag(
+                    ctx,
+                    code::E3007,
+                    i,
+                    *type_span,
+                    format!("unknown block type `{type_name}`"),
+                )
+                .with_hint("not a standard function or function block, not MC_*, not a POU of this project")
+            };
+            ctx.report(d);
+            self.poisoned.insert(i);
+            return;
+        };
+        // Inputs.
+        let mut en = None;
+        let mut args: Vec<(Ident, ValId)> = Vec::new();
+        let mut unconnected: Vec<&InPin> = Vec::new();
+        for pin in inputs {
+            let v = self.input_val(ctx, &pin.wires, i);
+            let Some(mut v) = v else {
+                if !pin.wires.is_empty() {
+                    // Fed only by elements that could not be lowered (already reported).
+                    self.poisoned.insert(i);
+                    return;
+                }
+                if !pin.name.eq_ignore_ascii_case("EN") {
+                    unconnected.push(pin);
+                }
+                continue;
+            };
+            if pin.negated {
+                v = self.val(Val::Not(v), pin.span);
+            }
+            if pin.edge != Edge::None {
+                let name = format!("__trig_{}_{}", sanitize(&node.id), sanitize(&pin.name));
+                v = self.trig(name, pin.edge == Edge::Falling, v, pin.span);
+            }
+            if pin.name.eq_ignore_ascii_case("EN") {
+                self.check_bool(ctx, i, v, pin.span, "EN input");
+                en = Some(v);
+                continue;
+            }
+            match Self::pin_type(&bt, &pin.name, pin.span) {
+                None => {
+                    let d = self.diag(
+                        ctx,
+                        code::E3018,
+                        i,
+                        pin.span,
+                        format!("{type_name} has no input `{}`", pin.name),
+                    );
+                    ctx.report(d);
+                    continue;
+                }
+                Some(Some(expected)) => {
+                    let from = self.ty(v);
+                    let to = Ty::Known(expected);
+                    if let (Some(f), Some(t)) = (family_of(&from), family_of(&to)) {
+                        if !catalogue::compatible(f, t) {
+                            let d = self.diag(
+                                ctx,
+                                code::E3008,
+                                i,
+                                pin.span,
+                                format!(
+                                    "input `{}` of {type_name} is {}, but is driven by {}",
+                                    pin.name,
+                                    type_text(&to),
+                                    type_text(&from)
+                                ),
+                            );
+                            ctx.report(d);
+                        }
+                    }
+                }
+                Some(None) => {}
+            }
+            args.push((Ident::new(&pin.name, pin.span), v));
+        }
+        let eno = match en {
+            Some(e) => e,
+            None => self.val(Val::Const(true), span),
+        };
+        match bt {
+            BlockType::UserFb(_) | BlockType::StdFb(_) | BlockType::Motion => {
+                let Some((inst_name, inst_span)) = instance else {
+                    let d = self.diag(
+                        ctx,
+                        code::E3016,
+                        i,
+                        span,
+                        format!("function block {type_name} has no instance name"),
+                    );
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                };
+                let inst = match values::var_ref(inst_name, *inst_span) {
+                    Some(r)
+                        if self
+                            .pou
+                            .var_type(&r)
+                            .is_some_and(|t| self.pou.is_fb_type(&t)) =>
+                    {
+                        r
+                    }
+                    _ => {
+                        let d = self
+                            .diag(
+                                ctx,
+                                code::E3016,
+                                i,
+                                *inst_span,
+                                format!(
+                                    "instance `{inst_name}` of {type_name} is not declared in `{}`",
+                                    self.pou.pou
+                                ),
+                            )
+                            .with_hint(format!(
+                                "declare `{inst_name} : {type_name};` in the POU's variables"
+                            ));
+                        ctx.report(d);
+                        self.poisoned.insert(i);
+                        return;
+                    }
+                };
+                self.actions.push(Action::Fb {
+                    inst: inst.clone(),
+                    args: args.clone(),
+                    en,
+                    span,
+                });
+                for out in outputs {
+                    let key = out.name.to_ascii_uppercase();
+                    let v = if key == "ENO" {
+                        eno
+                    } else if let Some((_, v)) = args.iter().find(|(n, _)| n.is(&out.name)) {
+                        // The output side of an in-out pin carries the connected variable.
+                        *v
+                    } else {
+                        self.val(
+                            Val::Leaf {
+                                op: field_operand(&inst, &out.name, span),
+                                neg: false,
+                            },
+                            span,
+                        )
+                    };
+                    let v = if out.negated {
+                        self.val(Val::Not(v), span)
+                    } else {
+                        v
+                    };
+                    self.pin_vals.insert((i, key), v);
+                }
+            }
+            BlockType::UserFn(_) | BlockType::StdFn(_) => {
+                if let Some(pin) = unconnected.first() {
+                    let d = self.diag(
+                        ctx,
+                        code::E3013,
+                        i,
+                        pin.span,
+                        format!(
+                            "input `{}` of function {type_name} is not connected",
+                            pin.name
+                        ),
+                    );
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                }
+                let (form, result_ty) = match &bt {
+                    BlockType::UserFn(sig) => (FuncForm::Formal, sig.ret.clone()),
+                    BlockType::StdFn(f) => {
+                        let form = match f.operator {
+                            Some(op) => FuncForm::Operator(op),
+                            None => FuncForm::NonFormal,
+                        };
+                        let ty = match f.rule {
+                            ResultRule::Fixed(t) => Some(named_type(t, span)),
+                            ResultRule::SameAsInputs => self.common_type(&args, f.selectors, span),
+                        };
+                        (form, ty)
+                    }
+                    _ => (FuncForm::Formal, None),
+                };
+                let arity_ok = match &form {
+                    FuncForm::Operator(OperatorBlock::Compare(_)) => args.len() == 2,
+                    FuncForm::Operator(OperatorBlock::Not | OperatorBlock::Move) => args.len() == 1,
+                    FuncForm::Operator(_) => args.len() >= 2,
+                    _ => true,
+                };
+                if !arity_ok {
+                    let d = self.diag(
+                        ctx,
+                        code::E3012,
+                        i,
+                        span,
+                        format!("{type_name} with {} inputs is not supported", args.len()),
+                    );
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                }
+                let Some(result_ty) = result_ty else {
+                    let d = self.diag(
+                        ctx,
+                        code::E3017,
+                        i,
+                        span,
+                        format!(
+                            "cannot tell the result type of {type_name}: no input has a known type"
+                        ),
+                    );
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                };
+                let result = self.alloc_temp(&result_ty);
+                self.actions.push(Action::Func {
+                    name: Ident::new(type_name, *type_span),
+                    form,
+                    args,
+                    en,
+                    result: result.clone(),
+                    skip_label: format!("__skip_{}", sanitize(&node.id)),
+                    span,
+                });
+                let rv = self.val(
+                    Val::Leaf {
+                        op: result,
+                        neg: false,
+                    },
+                    span,
+                );
+                for out in outputs {
+                    let key = out.name.to_ascii_uppercase();
+                    let v = if key == "ENO" { eno } else { rv };
+                    let v = if out.negated {
+                        self.val(Val::Not(v), span)
+                    } else {
+                        v
+                    };
+                    self.pin_vals.insert((i, key), v);
+                }
+                if outputs.is_empty() {
+                    self.pin_vals.insert((i, String::new()), rv);
+                }
+            }
+        }
+    }
+
+    /// The result type of a generic function: the first input with a known type, else the literal kind.
+    fn common_type(&self, args: &[(Ident, ValId)], skip: usize, span: Span) -> Option<TypeRef> {
+        let tys: Vec<Ty> = args.iter().skip(skip).map(|(_, v)| self.ty(*v)).collect();
+        if let Some(Ty::Known(t)) = tys.iter().find(|t| matches!(t, Ty::Known(_))) {
+            return Some(t.clone());
+        }
+        if tys.iter().any(|t| matches!(t, Ty::WeakReal)) {
+            return Some(TypeRef::Named(Ident::new("LREAL", span)));
+        }
+        if tys.iter().any(|t| matches!(t, Ty::WeakInt)) {
+            return Some(TypeRef::Named(Ident::new("DINT", span)));
+        }
+        None
+    }
+
+    // ------------------------------------------------------------ emission
+
+    fn children(&self, v: ValId) -> Vec<ValId> {
+        match &self.vals[v] {
+            Val::And(a, b) => vec![*a, *b],
+            Val::Or(vs) => vs.clone(),
+            Val::Not(a) => vec![*a],
+            _ => Vec::new(),
+        }
+    }
+
+    fn count_uses(&mut self) {
+        let add = |uses: &mut Vec<u32>, v: ValId| uses[v] += 1;
+        let mut uses = std::mem::take(&mut self.uses);
+        for v in 0..self.vals.len() {
+            for c in self.children(v) {
+                add(&mut uses, c);
+            }
+        }
+        for a in &self.actions {
+            match a {
+                Action::Trig { clk, .. } => add(&mut uses, *clk),
+                Action::Fb { args, en, .. } | Action::Func { args, en, .. } => {
+                    for (_, v) in args {
+                        add(&mut uses, *v);
+                    }
+                    if let Some(e) = en {
+                        add(&mut uses, *e);
+                    }
+                }
+                Action::Label(_) => {}
+            }
+        }
+        for (_, val) in self.write_groups() {
+            add(&mut uses, val);
+        }
+        for c in &self.controls {
+            match c {
+                Control::Jump(_, v, _) | Control::Return(v, _) => add(&mut uses, *v),
+            }
+        }
+        self.uses = uses;
+    }
+
+    /// Consecutive writes of one value form a group: one evaluation, several stores.
+    fn write_groups(&self) -> Vec<(std::ops::Range<usize>, ValId)> {
+        let mut out: Vec<(std::ops::Range<usize>, ValId)> = Vec::new();
+        for (i, w) in self.writes.iter().enumerate() {
+            match out.last_mut() {
+                Some((r, v)) if *v == w.val => r.end = i + 1,
+                _ => out.push((i..i + 1, w.val)),
+            }
+        }
+        out
+    }
+
+    /// A value that can be used as an operand without evaluating anything.
+    fn direct(&self, v: ValId) -> Option<(Operand, bool)> {
+        if let Some(t) = &self.temps[v] {
+            return Some((t.clone(), false));
+        }
+        match &self.vals[v] {
+            Val::Const(b) => Some((bool_lit(*b, self.spans[v]), false)),
+            Val::Leaf { op, neg } => Some((op.clone(), *neg)),
+            _ => None,
+        }
+    }
+
+    fn is_trivial(&self, v: ValId) -> bool {
+        matches!(self.direct(v), Some((_, false)))
+    }
+
+    /// Stores the shared sub-values of `v` (used more than once) into temporaries, innermost first.
+    fn prepare(&mut self, v: ValId, out: &mut Vec<IlStmt>) {
+        for c in self.children(v) {
+            self.prepare(c, out);
+            if self.uses[c] > 1 && !self.is_trivial(c) {
+                self.materialise(c, out);
+            }
+        }
+    }
+
+    /// Evaluates `v` once into a temporary; later uses read the temporary.
+    fn materialise(&mut self, v: ValId, out: &mut Vec<IlStmt>) {
+        if self.temps[v].is_some() {
+            return;
+        }
+        self.prepare(v, out);
+        let ty = match self.ty(v) {
+            Ty::Known(t) => t,
+            _ => bool_ty(self.spans[v]),
+        };
+        let t = self.alloc_temp(&ty);
+        self.eval(v, out);
+        out.push(simple(Op::St, false, Some(t.clone()), self.spans[v]));
+        self.temps[v] = Some(t);
+    }
+
+    /// An operand holding `v` (stored in a temporary first when it is an expression).
+    fn operand(&mut self, v: ValId, out: &mut Vec<IlStmt>) -> Operand {
+        match self.direct(v) {
+            Some((op, false)) => op,
+            _ => {
+                self.materialise(v, out);
+                self.temps[v]
+                    .clone()
+                    .unwrap_or_else(|| bool_lit(false, self.spans[v]))
+            }
+        }
+    }
+
+    /// Loads `v` into the current result (shared sub-values must already be prepared).
+    fn eval(&self, v: ValId, out: &mut Vec<IlStmt>) {
+        let span = self.spans[v];
+        if let Some((op, neg)) = self.direct(v) {
+            out.push(simple(Op::Ld, neg, Some(op), span));
+            return;
+        }
+        match &self.vals[v] {
+            Val::And(a, b) => {
+                self.eval(*a, out);
+                self.apply(Op::And, *b, out);
+            }
+            Val::Or(vs) => {
+                self.eval(vs[0], out);
+                for x in &vs[1..] {
+                    self.apply(Op::Or, *x, out);
+                }
+            }
+            Val::Not(a) => {
+                self.eval(*a, out);
+                out.push(simple(Op::Not, false, None, span));
+            }
+            Val::Const(_) | Val::Leaf { .. } => {}
+        }
+    }
+
+    /// `AND x` / `ANDN x` / `AND( ... )`.
+    fn apply(&self, op: Op, v: ValId, out: &mut Vec<IlStmt>) {
+        let span = self.spans[v];
+        if let Some((operand, neg)) = self.direct(v) {
+            out.push(simple(op, neg, Some(operand), span));
+            return;
+        }
+        let mut body = Vec::new();
+        self.eval(v, &mut body);
+        // Hoist the nested list's first load onto the opening line: `AND( a` ... `)`.
+        let mut operand = None;
+        if let Some(IlStmt::Instr(Instruction {
+            kind:
+                InstrKind::Simple {
+                    op: Op::Ld,
+                    negate,
+                    operand: Some(o),
+                },
+            span: s,
+        })) = body.first().cloned()
+        {
+            body.remove(0);
+            if negate {
+                body.insert(0, simple(Op::Not, false, None, s));
+            }
+            operand = Some(o);
+        }
+        out.push(instr(
+            InstrKind::Deferred {
+                op,
+                negate: false,
+                operand,
+                body,
+                close: span,
+            },
+            span,
+        ));
+    }
+
+    /// Variables (base names, upper-cased) that evaluating `v` reads, stopping at stored values.
+    fn reads(&self, v: ValId, acc: &mut HashSet<String>) {
+        if self.temps[v].is_some() {
+            return;
+        }
+        match &self.vals[v] {
+            Val::Leaf {
+                op: Operand::Var(r),
+                ..
+            } => {
+                acc.insert(r.base.key());
+            }
+            Val::Leaf {
+                op: Operand::Address(a),
+                ..
+            } => {
+                acc.insert(address_key(a));
+            }
+            _ => {
+                for c in self.children(v) {
+                    self.reads(c, acc);
+                }
+            }
+        }
+    }
+
+    fn emit(&mut self, out: &mut Vec<IlStmt>) {
+        self.count_uses();
+        let actions = std::mem::take(&mut self.actions);
+        // Phase 1: evaluate.
+        for a in &actions {
+            match a {
+                Action::Label(l) => out.push(IlStmt::Label(l.clone())),
+                Action::Trig { inst, clk, span } => {
+                    let clk_op = self.operand(*clk, out);
+                    let inst = VarRef {
+                        base: Ident::new(inst, *span),
+                        accessors: Vec::new(),
+                        span: *span,
+                    };
+                    out.push(call(
+                        Condition::Always,
+                        inst,
+                        vec![("CLK".into(), clk_op)],
+                        *span,
+                    ));
+                }
+                Action::Fb {
+                    inst,
+                    args,
+                    en,
+                    span,
+                } => {
+                    let mut ops = Vec::new();
+                    for (n, v) in args {
+                        ops.push((n.name.clone(), self.operand(*v, out)));
+                    }
+                    let cond = match en {
+                        Some(e) => {
+                            self.prepare(*e, out);
+                            self.eval(*e, out);
+                            Condition::IfTrue
+                        }
+                        None => Condition::Always,
+                    };
+                    out.push(call(cond, inst.clone(), ops, *span));
+                }
+                Action::Func {
+                    name,
+                    form,
+                    args,
+                    en,
+                    result,
+                    skip_label,
+                    span,
+                } => {
+                    let mut ops = Vec::new();
+                    for (n, v) in args {
+                        ops.push((n.clone(), self.operand(*v, out)));
+                    }
+                    if let Some(e) = en {
+                        self.prepare(*e, out);
+                        self.eval(*e, out);
+                        out.push(instr(
+                            InstrKind::Jump {
+                                cond: Condition::IfFalse,
+                                label: Ident::new(skip_label, *span),
+                            },
+                            *span,
+                        ));
+                    }
+                    emit_function(name, form, ops, *span, out);
+                    out.push(simple(Op::St, false, Some(result.clone()), *span));
+                    if en.is_some() {
+                        out.push(IlStmt::Label(Ident::new(skip_label, *span)));
+                    }
+                }
+            }
+        }
+        // Shared values and captured writes are evaluated before the first write.
+        let groups = self.write_groups();
+        let mut finals: Vec<ValId> = groups.iter().map(|(_, v)| *v).collect();
+        for c in &self.controls {
+            match c {
+                Control::Jump(_, v, _) | Control::Return(v, _) => finals.push(*v),
+            }
+        }
+        for &v in &finals {
+            self.prepare(v, out);
+            if self.uses[v] > 1 && !self.is_trivial(v) {
+                self.materialise(v, out);
+            }
+        }
+        let mut written: HashSet<String> = HashSet::new();
+        let mut stage_targets: Vec<HashSet<String>> = Vec::new();
+        for (r, _) in &groups {
+            stage_targets.push(
+                self.writes[r.clone()]
+                    .iter()
+                    .map(|w| target_key(&w.target))
+                    .collect(),
+            );
+        }
+        for (gi, &v) in finals.iter().enumerate() {
+            let mut rd = HashSet::new();
+            self.reads(v, &mut rd);
+            if !rd.is_disjoint(&written) {
+                self.materialise(v, out);
+            }
+            if let Some(t) = stage_targets.get(gi) {
+                written.extend(t.iter().cloned());
+            }
+        }
+        // Phase 2: write.
+        for (r, v) in &groups {
+            self.eval(*v, out);
+            for w in &self.writes[r.clone()] {
+                let (op, neg) = match w.kind {
+                    WriteKind::St { neg } => (Op::St, neg),
+                    WriteKind::Set => (Op::S, false),
+                    WriteKind::Reset => (Op::R, false),
+                };
+                out.push(simple(op, neg, Some(w.target.clone()), w.span));
+            }
+        }
+        // Phase 3: jumps and returns.
+        for c in &self.controls {
+            match c {
+                Control::Jump(label, v, span) => {
+                    let cond = self.cond(*v, out);
+                    out.push(instr(
+                        InstrKind::Jump {
+                            cond,
+                            label: label.clone(),
+                        },
+                        *span,
+                    ));
+                }
+                Control::Return(v, span) => {
+                    let cond = self.cond(*v, out);
+                    out.push(instr(InstrKind::Return { cond }, *span));
+                }
+            }
+        }
+    }
+
+    fn cond(&self, v: ValId, out: &mut Vec<IlStmt>) -> Condition {
+        if matches!(self.vals[v], Val::Const(true)) && self.temps[v].is_none() {
+            return Condition::Always;
+        }
+        self.eval(v, out);
+        Condition::IfTrue
+    }
+}
+
+fn address_key(a: &il_frontend::ast::DirectAddress) -> String {
+    format!("%{:?}{:?}{:?}", a.area, a.size, a.path)
+}
+
+fn target_key(op: &Operand) -> String {
+    match op {
+        Operand::Var(r) => r.base.key(),
+        Operand::Address(a) => address_key(a),
+        _ => String::new(),
+    }
+}
+
+fn call(cond: Condition, inst: VarRef, args: Vec<(String, Operand)>, span: Span) -> IlStmt {
+    let args = if args.is_empty() {
+        CallArgs::None
+    } else {
+        CallArgs::Formal(
+            args.into_iter()
+                .map(|(n, v)| FormalArg {
+                    name: Ident::new(n, span),
+                    dir: ArgDir::Input,
+                    span: v.span(),
+                    value: v,
+                })
+                .collect(),
+        )
+    };
+    instr(
+        InstrKind::Call {
+            cond,
+            instance: inst,
+            args,
+        },
+        span,
+    )
+}
+
+fn emit_function(
+    name: &Ident,
+    form: &FuncForm,
+    args: Vec<(Ident, Operand)>,
+    span: Span,
+    out: &mut Vec<IlStmt>,
+) {
+    match form {
+        FuncForm::Operator(op) => {
+            let mut it = args.into_iter();
+            if let Some((_, first)) = it.next() {
+                out.push(simple(Op::Ld, false, Some(first), span));
+            }
+            match op {
+                OperatorBlock::Not => out.push(simple(Op::Not, false, None, span)),
+                OperatorBlock::Move => {}
+                OperatorBlock::Arith(o) | OperatorBlock::Compare(o) | OperatorBlock::Logic(o) => {
+                    for (_, a) in it {
+                        out.push(simple(*o, false, Some(a), span));
+                    }
+                }
+            }
+        }
+        FuncForm::NonFormal => {
+            let mut it = args.into_iter();
+            if let Some((_, first)) = it.next() {
+                out.push(simple(Op::Ld, false, Some(first), span));
+            }
+            let rest: Vec<Operand> = it.map(|(_, a)| a).collect();
+            out.push(instr(
+                InstrKind::FunctionCall {
+                    name: name.clone(),
+                    args: if rest.is_empty() {
+                        CallArgs::None
+                    } else {
+                        CallArgs::NonFormal(rest)
+                    },
+                },
+                span,
+            ));
+        }
+        FuncForm::Formal => {
+            out.push(instr(
+                InstrKind::FunctionCall {
+                    name: name.clone(),
+                    args: CallArgs::Formal(
+                        args.into_iter()
+                            .map(|(n, v)| FormalArg {
+                                name: n,
+                                dir: ArgDir::Input,
+                                span: v.span(),
+                                value: v,
+                            })
+                            .collect(),
+                    ),
+                },
+                span,
+            ));
+        }
+    }
+}
+
+/// A type from the catalogue as the IL parser would read it (`STRING` is not a plain name there).
+fn named_type(name: &str, span: Span) -> TypeRef {
+    match name {
+        "STRING" | "WSTRING" => TypeRef::String {
+            wide: name == "WSTRING",
+            length: None,
+            span,
+        },
+        _ => TypeRef::Named(Ident::new(name, span)),
+    }
+}

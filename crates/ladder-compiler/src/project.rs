@@ -1,0 +1,508 @@
+//! The project level: `<project>` -> [`ast::CompilationUnit`].
+//!
+//! Input: the element tree of a TC6 project (tc6_0201, tc6_0200, or v1.0 `tc6.xsd`, read leniently).
+//! Output: one `DataTypes` item for `<dataTypes>`, one `Pou` per `<pou>` (bodies lowered by
+//! [`crate::body`]), one `Configuration` per `<configuration>`; diagnostics for what cannot be read.
+//! Invariants: POUs keep their interface even when the body cannot be lowered (E3003/E3004), so callers
+//! are still checked; vendor data (`addData`, vendor elements) is skipped with one W3002 per file.
+
+use crate::body;
+use crate::catalogue;
+use crate::context::Ctx;
+use crate::decls;
+use crate::values;
+use crate::xml::Element;
+use diagnostics::{code, Diagnostic};
+use il_frontend::ast::{
+    CompilationUnit, Configuration, Ident, LibraryElement, Literal, LiteralKind, Operand, Pou,
+    PouKind, ProgramInstance, Resource, Task, TypeDecl, TypeRef, VarBlock, VarKind,
+};
+use std::collections::HashMap;
+
+/// Schema version of the file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Version {
+    V201,
+    V200,
+    V1,
+}
+
+/// The interface of a POU, as blocks that call it see it.
+#[derive(Debug, Clone)]
+pub struct PouSig {
+    pub kind: PouKind,
+    pub name: String,
+    /// Inputs, outputs and in-outs with their types, in declaration order.
+    pub pins: Vec<(String, VarKind, TypeRef)>,
+    pub ret: Option<TypeRef>,
+}
+
+/// Everything a body lowering needs to know about the rest of the project.
+#[derive(Default)]
+pub struct Index {
+    pub pous: HashMap<String, PouSig>,
+    pub types: HashMap<String, TypeDecl>,
+    pub globals: HashMap<String, TypeRef>,
+}
+
+pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
+    let mut unit = CompilationUnit::default();
+    if root.name != "project" {
+        ctx.error(
+            code::E3002,
+            ctx.tag(root),
+            format!(
+                "root element is <{}>, expected a PLCopen <project>",
+                root.name
+            ),
+        );
+        return unit;
+    }
+    let _version = version(ctx, root);
+    vendor_data(ctx, root);
+
+    let types_el = root.child("types");
+    let data_types: Vec<TypeDecl> = types_el
+        .and_then(|t| t.child("dataTypes"))
+        .map(|d| {
+            d.children_named("dataType")
+                .filter_map(|e| decls::data_type(ctx, e))
+                .collect()
+        })
+        .unwrap_or_default();
+
+    // Interfaces first: bodies call each other in any order.
+    let pou_els: Vec<&Element> = types_el
+        .and_then(|t| t.child("pous"))
+        .map(|p| p.children_named("pou").collect())
+        .unwrap_or_default();
+    let mut headers = Vec::new();
+    let mut index = Index::default();
+    for d in &data_types {
+        index.types.insert(d.name.key(), d.clone());
+    }
+    for p in &pou_els {
+        if let Some(h) = pou_header(ctx, p) {
+            index.pous.insert(h.name.key(), signature(&h));
+            headers.push((*p, h));
+        }
+    }
+    let configs: Vec<Configuration> = root
+        .child("instances")
+        .and_then(|i| i.child("configurations"))
+        .map(|c| {
+            c.children_named("configuration")
+                .filter_map(|e| configuration(ctx, e))
+                .collect()
+        })
+        .unwrap_or_default();
+    for c in &configs {
+        let blocks = c
+            .globals
+            .iter()
+            .chain(c.resources.iter().flat_map(|r| r.globals.iter()));
+        for b in blocks {
+            for v in &b.vars {
+                index.globals.insert(v.name.key(), v.ty.clone());
+            }
+        }
+    }
+    check_types(ctx, &index, &data_types, &headers, &configs);
+
+    if !data_types.is_empty() {
+        unit.items.push(LibraryElement::DataTypes(data_types));
+    }
+    for (el, mut pou) in headers {
+        let (stmts, hidden) = body::lower_pou_body(ctx, &index, el, &pou);
+        pou.body = stmts;
+        if let Some(h) = hidden {
+            pou.var_blocks.push(h);
+        }
+        unit.items.push(LibraryElement::Pou(pou));
+    }
+    unit.items
+        .extend(configs.into_iter().map(LibraryElement::Configuration));
+    unit
+}
+
+fn version(ctx: &mut Ctx, root: &Element) -> Version {
+    let ns = root.attr("xmlns").unwrap_or_default();
+    if ns.contains("tc6_0201") {
+        Version::V201
+    } else if ns.contains("tc6_0200") {
+        Version::V200
+    } else if ns.contains("tc6.xsd") || ns.ends_with("/tc6") {
+        Version::V1
+    } else {
+        let span = ctx.attr_span(root, "xmlns");
+        let what = if ns.is_empty() {
+            "no PLCopen namespace".to_string()
+        } else {
+            format!("unknown PLCopen namespace `{ns}`")
+        };
+        ctx.report(
+            Diagnostic::warning(code::W3001, format!("{what}; reading it as tc6_0201")).at(span),
+        );
+        Version::V201
+    }
+}
+
+/// One W3002 for all `addData` / vendor elements of the file.
+fn vendor_data(ctx: &mut Ctx, root: &Element) {
+    let mut found: Vec<&Element> = Vec::new();
+    let mut stack = vec![root];
+    while let Some(e) = stack.pop() {
+        for c in &e.children {
+            if c.name == "addData" || c.name == "vendorElement" {
+                found.push(c);
+            } else {
+                stack.push(c);
+            }
+        }
+    }
+    found.sort_by_key(|e| e.tag_start);
+    if let Some(first) = found.first() {
+        let mut d = Diagnostic::warning(
+            code::W3002,
+            format!(
+                "vendor data ignored ({} <{}> block{})",
+                found.len(),
+                first.name,
+                if found.len() == 1 { "" } else { "s" }
+            ),
+        )
+        .at(ctx.tag(first))
+        .with_primary_label("tool-specific data, not part of the program");
+        if let Some(name) = first.child("data").and_then(|d| d.attr("name")) {
+            d = d.with_note(format!("first block: {name}"));
+        }
+        ctx.report(d);
+    }
+}
+
+/// A POU with its interface read and its body still empty.
+fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
+    let span = ctx.tag(p);
+    let Some(name) = p
+        .attr("name")
+        .map(str::trim)
+        .filter(|n| values::is_ident(n))
+    else {
+        ctx.error(code::E3013, span, "POU without a valid `name`");
+        return None;
+    };
+    let name = Ident::new(name, ctx.attr_span(p, "name"));
+    let kind = match p.attr("pouType").map(str::trim) {
+        Some("program") => PouKind::Program,
+        Some("functionBlock") => PouKind::FunctionBlock,
+        Some("function") => PouKind::Function,
+        other => {
+            ctx.error(
+                code::E3013,
+                ctx.attr_span(p, "pouType"),
+                format!(
+                    "POU `{}` has pouType `{}`; expected program, functionBlock or function",
+                    name.name,
+                    other.unwrap_or("")
+                ),
+            );
+            return None;
+        }
+    };
+    let mut var_blocks = Vec::new();
+    let mut return_type = None;
+    if let Some(iface) = p.child("interface") {
+        for list in &iface.children {
+            if list.name == "returnType" {
+                return_type = decls::type_ref(ctx, list);
+            } else if let Some(k) = decls::var_kind(list.name) {
+                var_blocks.push(decls::var_block(ctx, list, k));
+            } else if list.name == "accessVars" {
+                ctx.error(
+                    code::E3012,
+                    ctx.tag(list),
+                    "VAR_ACCESS lists are not supported",
+                );
+            }
+        }
+    }
+    if kind == PouKind::Function && return_type.is_none() {
+        ctx.error(
+            code::E3013,
+            span,
+            format!("function `{}` has no <returnType>", name.name),
+        );
+    }
+    Some(Pou {
+        kind,
+        name,
+        return_type,
+        var_blocks,
+        body: Vec::new(),
+        span,
+    })
+}
+
+fn signature(p: &Pou) -> PouSig {
+    let pins = p
+        .var_blocks
+        .iter()
+        .filter(|b| matches!(b.kind, VarKind::Input | VarKind::Output | VarKind::InOut))
+        .flat_map(|b| {
+            b.vars
+                .iter()
+                .map(move |v| (v.name.name.clone(), b.kind, v.ty.clone()))
+        })
+        .collect();
+    PouSig {
+        kind: p.kind,
+        name: p.name.name.clone(),
+        pins,
+        ret: p.return_type.clone(),
+    }
+}
+
+/// E3009: derived types that nothing defines (one diagnostic per missing type, labels on its uses).
+fn check_types(
+    ctx: &mut Ctx,
+    index: &Index,
+    data_types: &[TypeDecl],
+    pous: &[(&Element, Pou)],
+    configs: &[Configuration],
+) {
+    let mut uses: Vec<(String, il_frontend::Span, String)> = Vec::new();
+    let visit = |ty: &TypeRef, owner: &str, uses: &mut Vec<_>| {
+        let mut t = ty;
+        while let TypeRef::Array { element, .. } = t {
+            t = element;
+        }
+        if let TypeRef::Named(n) = t {
+            if !catalogue::is_library_type(&n.name)
+                && !index.types.contains_key(&n.key())
+                && !index.pous.contains_key(&n.key())
+            {
+                uses.push((n.name.clone(), n.span, owner.to_string()));
+            }
+        }
+    };
+    for d in data_types {
+        match &d.def {
+            il_frontend::ast::TypeDef::Alias { ty, .. } => visit(ty, &d.name.name, &mut uses),
+            il_frontend::ast::TypeDef::Struct { fields } => {
+                for f in fields {
+                    visit(&f.ty, &d.name.name, &mut uses)
+                }
+            }
+            il_frontend::ast::TypeDef::Enum { .. } => {}
+        }
+    }
+    let blocks = pous
+        .iter()
+        .flat_map(|(_, p)| p.var_blocks.iter().map(move |b| (p.name.name.clone(), b)))
+        .chain(configs.iter().flat_map(|c| {
+            c.globals
+                .iter()
+                .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+                .map(move |b| (c.name.name.clone(), b))
+        }));
+    for (owner, b) in blocks {
+        for v in &b.vars {
+            visit(&v.ty, &owner, &mut uses);
+        }
+    }
+    for (_, p) in pous {
+        if let Some(r) = &p.return_type {
+            visit(r, &p.name.name, &mut uses);
+        }
+    }
+    let mut order: Vec<String> = Vec::new();
+    let mut by_name: HashMap<String, Vec<(il_frontend::Span, String)>> = HashMap::new();
+    for (name, span, owner) in uses {
+        let key = name.to_ascii_uppercase();
+        if !by_name.contains_key(&key) {
+            order.push(name.clone());
+        }
+        by_name.entry(key).or_default().push((span, owner));
+    }
+    for name in order {
+        let list = &by_name[&name.to_ascii_uppercase()];
+        let (first, owner) = &list[0];
+        let mut d = Diagnostic::error(
+            code::E3009,
+            format!(
+                "type `{name}` is not defined in this project ({} use{})",
+                list.len(),
+                if list.len() == 1 { "" } else { "s" }
+            ),
+        )
+        .at(*first)
+        .with_primary_label("unknown type")
+        .with_hint(
+            "the type probably comes from a library of the editing tool that is not in this file",
+        )
+        .with_xml(diagnostics::XmlContext {
+            pou: Some(owner.clone()),
+            ..Default::default()
+        });
+        for (s, _) in list.iter().skip(1) {
+            d = d.with_label(*s, "also used here");
+        }
+        ctx.report(d);
+    }
+}
+
+fn configuration(ctx: &mut Ctx, c: &Element) -> Option<Configuration> {
+    let span = ctx.tag(c);
+    let Some(name) = c
+        .attr("name")
+        .map(str::trim)
+        .filter(|n| values::is_ident(n))
+    else {
+        ctx.error(code::E3013, span, "configuration without a valid `name`");
+        return None;
+    };
+    let globals = c
+        .children_named("globalVars")
+        .map(|g| decls::var_block(ctx, g, VarKind::Global))
+        .collect();
+    let resources = c
+        .children_named("resource")
+        .filter_map(|r| resource(ctx, r))
+        .collect();
+    Some(Configuration {
+        name: Ident::new(name, ctx.attr_span(c, "name")),
+        globals,
+        resources,
+        span,
+    })
+}
+
+fn resource(ctx: &mut Ctx, r: &Element) -> Option<Resource> {
+    let span = ctx.tag(r);
+    let Some(name) = r
+        .attr("name")
+        .map(str::trim)
+        .filter(|n| values::is_ident(n))
+    else {
+        ctx.error(code::E3013, span, "resource without a valid `name`");
+        return None;
+    };
+    let globals: Vec<VarBlock> = r
+        .children_named("globalVars")
+        .map(|g| decls::var_block(ctx, g, VarKind::Global))
+        .collect();
+    let mut tasks = Vec::new();
+    let mut programs = Vec::new();
+    for t in r.children_named("task") {
+        let Some(task) = task(ctx, t) else { continue };
+        for pi in t.children_named("pouInstance") {
+            if let Some(p) = program_instance(ctx, pi, Some(&task.name)) {
+                programs.push(p);
+            }
+        }
+        tasks.push(task);
+    }
+    for pi in r.children_named("pouInstance") {
+        if let Some(p) = program_instance(ctx, pi, None) {
+            programs.push(p);
+        }
+    }
+    Some(Resource {
+        name: Ident::new(name, ctx.attr_span(r, "name")),
+        on: None,
+        globals,
+        tasks,
+        programs,
+        span,
+    })
+}
+
+fn task(ctx: &mut Ctx, t: &Element) -> Option<Task> {
+    let span = ctx.tag(t);
+    let Some(name) = t
+        .attr("name")
+        .map(str::trim)
+        .filter(|n| values::is_ident(n))
+    else {
+        ctx.error(code::E3013, span, "task without a valid `name`");
+        return None;
+    };
+    let interval = t.attr("interval").and_then(|iv| {
+        let s = ctx.attr_span(t, "interval");
+        let parsed = values::literal(iv, s).or_else(|| {
+            values::duration(iv).map(|d| Literal {
+                kind: LiteralKind::Duration(d),
+                type_prefix: None,
+                span: s,
+            })
+        });
+        match parsed {
+            Some(l) => Some(Operand::Literal(l)),
+            None => match values::operand(iv, s) {
+                Some(op @ Operand::Var(_)) => Some(op),
+                _ => {
+                    ctx.error(
+                        code::E3011,
+                        s,
+                        format!("task interval `{iv}` is not a duration"),
+                    );
+                    None
+                }
+            },
+        }
+    });
+    let single = t.attr("single").and_then(|sg| {
+        let s = ctx.attr_span(t, "single");
+        let op = values::operand(sg, s);
+        if op.is_none() {
+            ctx.error(
+                code::E3011,
+                s,
+                format!("task trigger `{sg}` is not a variable"),
+            );
+        }
+        op
+    });
+    let priority = t.attr("priority").and_then(|p| p.trim().parse().ok());
+    Some(Task {
+        name: Ident::new(name, ctx.attr_span(t, "name")),
+        interval,
+        single,
+        priority,
+        span,
+    })
+}
+
+fn program_instance(ctx: &mut Ctx, pi: &Element, task: Option<&Ident>) -> Option<ProgramInstance> {
+    let span = ctx.tag(pi);
+    let name = pi
+        .attr("name")
+        .map(str::trim)
+        .filter(|n| values::is_ident(n));
+    // tc6_0201/0200 say `typeName`; v1.0 says `type`.
+    let ty_attr = if pi.attr("typeName").is_some() {
+        "typeName"
+    } else {
+        "type"
+    };
+    let ty = pi
+        .attr(ty_attr)
+        .map(str::trim)
+        .filter(|n| values::is_ident(n));
+    let (Some(name), Some(ty)) = (name, ty) else {
+        ctx.error(
+            code::E3013,
+            span,
+            "program instance needs a `name` and a `typeName`",
+        );
+        return None;
+    };
+    Some(ProgramInstance {
+        name: Ident::new(name, ctx.attr_span(pi, "name")),
+        retain: false,
+        task: task.cloned(),
+        type_name: Ident::new(ty, ctx.attr_span(pi, ty_attr)),
+        args: Vec::new(),
+        span,
+    })
+}

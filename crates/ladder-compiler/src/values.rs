@@ -1,0 +1,447 @@
+//! Reading the small pieces of IEC text that PLCopen XML keeps in attributes and `<expression>` elements:
+//! variable accesses, direct addresses, literals (with type prefixes, durations, v1.0 `hh:mm:ss.ffffff`
+//! intervals).
+//!
+//! Input: the decoded text and the span it came from. Output: [`ast::Operand`]s whose spans all equal
+//! the given span (the XML element or attribute), or `None` when the text is not a single operand (the
+//! caller reports E3011). Invariants: no panics on any input; integers out of range give `None`.
+
+use il_frontend::ast::{
+    Accessor, AddressSize, Area, DirectAddress, Ident, Literal, LiteralKind, Operand, VarRef,
+};
+use il_frontend::Span;
+
+/// Parses one operand: literal, direct address, `Type#value` enum value, or variable access.
+pub fn operand(text: &str, span: Span) -> Option<Operand> {
+    let t = text.trim();
+    if t.is_empty() {
+        return None;
+    }
+    if let Some(l) = literal(t, span) {
+        return Some(Operand::Literal(l));
+    }
+    if t.starts_with('%') {
+        return address(t, span).map(Operand::Address);
+    }
+    if let Some((ty, val)) = t.split_once('#') {
+        if is_ident(ty) && is_ident(val) {
+            return Some(Operand::EnumValue {
+                type_name: Ident::new(ty, span),
+                value: Ident::new(val, span),
+                span,
+            });
+        }
+        return None;
+    }
+    var_ref(t, span).map(Operand::Var)
+}
+
+pub fn is_ident(s: &str) -> bool {
+    let mut chars = s.chars();
+    matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+/// `a`, `a.b`, `a[1, i].c` (indexes are operands themselves).
+pub fn var_ref(t: &str, span: Span) -> Option<VarRef> {
+    let t = t.trim();
+    let end = t
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(t.len());
+    let base = &t[..end];
+    if !is_ident(base) {
+        return None;
+    }
+    let mut rest = t[end..].trim_start();
+    let mut accessors = Vec::new();
+    while !rest.is_empty() {
+        if let Some(r) = rest.strip_prefix('.') {
+            let r = r.trim_start();
+            let e = r
+                .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                .unwrap_or(r.len());
+            if !is_ident(&r[..e]) {
+                return None;
+            }
+            accessors.push(Accessor::Field(Ident::new(&r[..e], span)));
+            rest = r[e..].trim_start();
+        } else if let Some(r) = rest.strip_prefix('[') {
+            let close = matching_bracket(r)?;
+            let mut idx = Vec::new();
+            for part in split_top(&r[..close]) {
+                idx.push(operand(part, span)?);
+            }
+            accessors.push(Accessor::Index(idx));
+            rest = r[close + 1..].trim_start();
+        } else {
+            return None;
+        }
+    }
+    Some(VarRef {
+        base: Ident::new(base, span),
+        accessors,
+        span,
+    })
+}
+
+fn matching_bracket(s: &str) -> Option<usize> {
+    let mut depth = 0usize;
+    for (i, c) in s.char_indices() {
+        match c {
+            '[' => depth += 1,
+            ']' if depth == 0 => return Some(i),
+            ']' => depth -= 1,
+            _ => {}
+        }
+    }
+    None
+}
+
+fn split_top(s: &str) -> Vec<&str> {
+    let mut out = Vec::new();
+    let mut depth = 0usize;
+    let mut start = 0;
+    for (i, c) in s.char_indices() {
+        match c {
+            '[' => depth += 1,
+            ']' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 => {
+                out.push(&s[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    out.push(&s[start..]);
+    out
+}
+
+/// `%IX0.1`, `%QW3`, `%MD10`, `%I*`.
+pub fn address(t: &str, span: Span) -> Option<DirectAddress> {
+    let rest = t.strip_prefix('%')?;
+    let mut chars = rest.chars();
+    let area = match chars.next()?.to_ascii_uppercase() {
+        'I' => Area::Input,
+        'Q' => Area::Output,
+        'M' => Area::Memory,
+        _ => return None,
+    };
+    let rest = &rest[1..];
+    let (size, rest) = match rest.chars().next().map(|c| c.to_ascii_uppercase()) {
+        Some('X') => (AddressSize::Bit, &rest[1..]),
+        Some('B') => (AddressSize::Byte, &rest[1..]),
+        Some('W') => (AddressSize::Word, &rest[1..]),
+        Some('D') => (AddressSize::DWord, &rest[1..]),
+        Some('L') => (AddressSize::LWord, &rest[1..]),
+        _ => (AddressSize::Bit, rest),
+    };
+    let path = if rest == "*" {
+        Vec::new()
+    } else {
+        rest.split('.')
+            .map(|p| p.parse::<u32>().ok())
+            .collect::<Option<Vec<_>>>()?
+    };
+    Some(DirectAddress {
+        area,
+        size,
+        path,
+        span,
+    })
+}
+
+fn lit(kind: LiteralKind, prefix: Option<&str>, span: Span) -> Literal {
+    Literal {
+        kind,
+        type_prefix: prefix.map(|p| Ident::new(p, span)),
+        span,
+    }
+}
+
+/// A literal in IEC syntax, or `None`.
+pub fn literal(t: &str, span: Span) -> Option<Literal> {
+    let t = t.trim();
+    let upper = t.to_ascii_uppercase();
+    if upper == "TRUE" || upper == "FALSE" {
+        return Some(lit(LiteralKind::Bool(upper == "TRUE"), None, span));
+    }
+    if let Some((prefix, value)) = t.split_once('#') {
+        let p = prefix.to_ascii_uppercase();
+        match p.as_str() {
+            "T" | "TIME" | "LTIME" | "LT" => {
+                return duration(value).map(|d| lit(LiteralKind::Duration(d), None, span))
+            }
+            "D" | "DATE" => return date(value).map(|d| lit(LiteralKind::Date(d), None, span)),
+            "TOD" | "TIME_OF_DAY" => {
+                return time_of_day(value).map(|n| lit(LiteralKind::TimeOfDay(n), None, span))
+            }
+            "DT" | "DATE_AND_TIME" => {
+                let (d, tod) = value.rsplit_once('-')?;
+                let days = date(d)?;
+                let ns = time_of_day(tod)?;
+                return Some(lit(
+                    LiteralKind::DateAndTime(days as i128 * 86_400_000_000_000 + ns as i128),
+                    None,
+                    span,
+                ));
+            }
+            "2" | "8" | "16" => {
+                let radix = p.parse().ok()?;
+                let v = i128::from_str_radix(&value.replace('_', ""), radix).ok()?;
+                return Some(lit(LiteralKind::Int(v), None, span));
+            }
+            _ if is_type_prefix(&p) => {
+                let mut inner = literal(value, span)?;
+                if p == "BOOL" {
+                    if let LiteralKind::Int(v @ (0 | 1)) = inner.kind {
+                        inner.kind = LiteralKind::Bool(v == 1);
+                    }
+                }
+                inner.type_prefix = Some(Ident::new(prefix, span));
+                return Some(inner);
+            }
+            _ => return None,
+        }
+    }
+    if let Some(s) = t.strip_prefix('\'').and_then(|s| s.strip_suffix('\'')) {
+        return Some(lit(
+            LiteralKind::String {
+                wide: false,
+                value: unescape_string(s)?,
+            },
+            None,
+            span,
+        ));
+    }
+    if let Some(s) = t.strip_prefix('"').and_then(|s| s.strip_suffix('"')) {
+        return Some(lit(
+            LiteralKind::String {
+                wide: true,
+                value: unescape_string(s)?,
+            },
+            None,
+            span,
+        ));
+    }
+    number(t).map(|k| lit(k, None, span))
+}
+
+fn is_type_prefix(p: &str) -> bool {
+    matches!(
+        p,
+        "BOOL"
+            | "SINT"
+            | "INT"
+            | "DINT"
+            | "LINT"
+            | "USINT"
+            | "UINT"
+            | "UDINT"
+            | "ULINT"
+            | "REAL"
+            | "LREAL"
+            | "BYTE"
+            | "WORD"
+            | "DWORD"
+            | "LWORD"
+    )
+}
+
+fn number(t: &str) -> Option<LiteralKind> {
+    let (neg, digits) = match t.as_bytes().first()? {
+        b'-' => (true, &t[1..]),
+        b'+' => (false, &t[1..]),
+        _ => (false, t),
+    };
+    if !digits.as_bytes().first()?.is_ascii_digit() {
+        return None;
+    }
+    let clean = digits.replace('_', "");
+    if clean.bytes().all(|b| b.is_ascii_digit()) {
+        let v: i128 = clean.parse().ok()?;
+        return Some(LiteralKind::Int(if neg { -v } else { v }));
+    }
+    if clean
+        .bytes()
+        .all(|b| b.is_ascii_digit() || matches!(b, b'.' | b'e' | b'E' | b'+' | b'-'))
+    {
+        let v: f64 = clean.parse().ok()?;
+        return Some(LiteralKind::Real(if neg { -v } else { v }));
+    }
+    None
+}
+
+fn unescape_string(s: &str) -> Option<String> {
+    let mut out = String::new();
+    let mut chars = s.chars();
+    while let Some(c) = chars.next() {
+        if c != '$' {
+            out.push(c);
+            continue;
+        }
+        match chars.next()? {
+            'L' | 'l' | 'N' | 'n' => out.push('\n'),
+            'R' | 'r' => out.push('\r'),
+            'T' | 't' => out.push('\t'),
+            'P' | 'p' => out.push('\x0c'),
+            '$' => out.push('$'),
+            '\'' => out.push('\''),
+            '"' => out.push('"'),
+            h1 => {
+                let h2 = chars.next()?;
+                let v = u32::from_str_radix(&format!("{h1}{h2}"), 16).ok()?;
+                out.push(char::from_u32(v)?);
+            }
+        }
+    }
+    Some(out)
+}
+
+/// `1h2m3s4ms`, `0.5ms`, `-5s`, `1d_2h` -> nanoseconds; also the v1.0 `hh:mm:ss.ffffff` form.
+pub fn duration(t: &str) -> Option<i128> {
+    let t = t.trim();
+    if t.contains(':') {
+        return clock_duration(t);
+    }
+    let (neg, mut rest) = match t.strip_prefix('-') {
+        Some(r) => (true, r),
+        None => (false, t.strip_prefix('+').unwrap_or(t)),
+    };
+    let mut total: f64 = 0.0;
+    let mut any = false;
+    while !rest.is_empty() {
+        rest = rest.trim_start_matches('_');
+        if rest.is_empty() {
+            break;
+        }
+        let num_end = rest
+            .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '_'))
+            .unwrap_or(rest.len());
+        if num_end == 0 {
+            return None;
+        }
+        let value: f64 = rest[..num_end].replace('_', "").parse().ok()?;
+        rest = &rest[num_end..];
+        let unit_end = rest
+            .find(|c: char| !c.is_ascii_alphabetic())
+            .unwrap_or(rest.len());
+        let unit = rest[..unit_end].to_ascii_lowercase();
+        rest = &rest[unit_end..];
+        let scale = match unit.as_str() {
+            "d" => 86_400e9,
+            "h" => 3_600e9,
+            "m" => 60e9,
+            "s" => 1e9,
+            "ms" => 1e6,
+            "us" => 1e3,
+            "ns" => 1.0,
+            _ => return None,
+        };
+        total += value * scale;
+        any = true;
+    }
+    if !any {
+        return None;
+    }
+    let ns = total.round() as i128;
+    Some(if neg { -ns } else { ns })
+}
+
+/// `00:00:00.100000` (the v1.0 schema's xsd:time intervals).
+fn clock_duration(t: &str) -> Option<i128> {
+    let parts: Vec<&str> = t.split(':').collect();
+    if parts.len() != 3 {
+        return None;
+    }
+    let h: i128 = parts[0].parse().ok()?;
+    let m: i128 = parts[1].parse().ok()?;
+    let s: f64 = parts[2].parse().ok()?;
+    Some((h * 3600 + m * 60) * 1_000_000_000 + (s * 1e9).round() as i128)
+}
+
+fn date(t: &str) -> Option<i64> {
+    let mut it = t.split('-');
+    let y: i64 = it.next()?.parse().ok()?;
+    let m: i64 = it.next()?.parse().ok()?;
+    let d: i64 = it.next()?.parse().ok()?;
+    if it.next().is_some() || !(1..=12).contains(&m) || !(1..=31).contains(&d) {
+        return None;
+    }
+    // Days from civil (Howard Hinnant's algorithm).
+    let y = if m <= 2 { y - 1 } else { y };
+    let era = y.div_euclid(400);
+    let yoe = y - era * 400;
+    let mp = (m + 9) % 12;
+    let doy = (153 * mp + 2) / 5 + d - 1;
+    let doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    Some(era * 146_097 + doe - 719_468)
+}
+
+fn time_of_day(t: &str) -> Option<i64> {
+    let d = clock_duration(t)?;
+    i64::try_from(d).ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sp() -> Span {
+        Span::default()
+    }
+
+    #[test]
+    fn reads_literals() {
+        let k = |t: &str| literal(t, sp()).map(|l| l.kind);
+        assert_eq!(k("T#4s"), Some(LiteralKind::Duration(4_000_000_000)));
+        assert_eq!(k("T#0.5ms"), Some(LiteralKind::Duration(500_000)));
+        assert_eq!(
+            k("TIME#1h2m"),
+            Some(LiteralKind::Duration(3_720_000_000_000))
+        );
+        assert_eq!(k("2240.0"), Some(LiteralKind::Real(2240.0)));
+        assert_eq!(k("-17"), Some(LiteralKind::Int(-17)));
+        assert_eq!(k("16#FF"), Some(LiteralKind::Int(255)));
+        assert_eq!(k("FALSE"), Some(LiteralKind::Bool(false)));
+        assert_eq!(k("D#1970-01-02"), Some(LiteralKind::Date(1)));
+        assert_eq!(
+            k("'a$'b'"),
+            Some(LiteralKind::String {
+                wide: false,
+                value: "a'b".into()
+            })
+        );
+        assert_eq!(
+            literal("INT#5", sp()).unwrap().type_prefix.unwrap().name,
+            "INT"
+        );
+        assert!(literal("abc", sp()).is_none());
+        assert_eq!(duration("00:00:00.100000"), Some(100_000_000));
+    }
+
+    #[test]
+    fn reads_variables_and_addresses() {
+        let Some(Operand::Var(v)) = operand("Tmr.Q", sp()) else {
+            panic!()
+        };
+        assert_eq!(v.base.name, "Tmr");
+        assert_eq!(v.accessors.len(), 1);
+        let Some(Operand::Var(v)) = operand("a[1, i].b", sp()) else {
+            panic!()
+        };
+        assert_eq!(v.accessors.len(), 2);
+        let Some(Operand::Address(a)) = operand("%QX0.1", sp()) else {
+            panic!()
+        };
+        assert_eq!(
+            (a.area, a.size, a.path),
+            (Area::Output, AddressSize::Bit, vec![0, 1])
+        );
+        assert!(operand("a +", sp()).is_none());
+        assert!(operand("", sp()).is_none());
+        assert!(matches!(
+            operand("Color#red", sp()),
+            Some(Operand::EnumValue { .. })
+        ));
+    }
+}

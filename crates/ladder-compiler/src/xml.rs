@@ -1,0 +1,353 @@
+//! A small element tree over the XML text, with byte positions kept.
+//!
+//! Input: the XML text (a leading UTF-8 byte-order mark is skipped, positions still count it).
+//! Output: [`Element`]s with local names (namespace prefixes dropped), decoded attribute values and text
+//! segments; every element knows the byte range of its start tag and of its whole extent.
+//! Invariants: all offsets are byte offsets into the original text (BOM included); text segments keep
+//! their raw position so that bodies embedded in the XML can be mapped back (see [`Element::text`]).
+//! A malformed document yields the tree read so far plus the error position: the caller reports it.
+
+use quick_xml::events::Event;
+use quick_xml::Reader;
+use std::borrow::Cow;
+
+/// One attribute: local name, decoded value, byte range of the raw value.
+#[derive(Debug, Clone)]
+pub struct Attr<'a> {
+    pub name: &'a str,
+    pub value: Cow<'a, str>,
+    pub start: usize,
+    pub end: usize,
+}
+
+/// How a piece of text was written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SegKind {
+    /// Plain character data (no entity inside: entities are separate segments).
+    Text,
+    /// The content of a `<![CDATA[ ... ]]>` section.
+    CData,
+    /// An entity or character reference such as `&lt;` (decoded into `text`).
+    Entity,
+}
+
+/// A piece of character data: decoded text and the raw byte range it came from.
+#[derive(Debug, Clone)]
+pub struct TextSeg<'a> {
+    pub text: Cow<'a, str>,
+    pub start: usize,
+    pub end: usize,
+    pub kind: SegKind,
+}
+
+#[derive(Debug, Clone, Default)]
+pub struct Element<'a> {
+    /// Local name (`xhtml:p` -> `p`), borrowed from the text.
+    pub name: &'a str,
+    pub attrs: Vec<Attr<'a>>,
+    pub children: Vec<Element<'a>>,
+    /// Direct character data, in order (leading whitespace-only pieces are dropped).
+    pub text: Vec<TextSeg<'a>>,
+    /// Byte range of the start tag (`<contact ...>`).
+    pub tag_start: usize,
+    pub tag_end: usize,
+    /// Byte offset just after the end tag (or the empty tag).
+    pub end: usize,
+}
+
+/// A parse failure: message and byte position.
+#[derive(Debug, Clone)]
+pub struct XmlError {
+    pub message: String,
+    pub pos: usize,
+}
+
+impl<'a> Element<'a> {
+    pub fn attr(&self, name: &str) -> Option<&str> {
+        self.attr_full(name).map(|a| a.value.as_ref())
+    }
+    pub fn attr_full(&self, name: &str) -> Option<&Attr<'a>> {
+        self.attrs.iter().find(|a| a.name == name)
+    }
+    pub fn child(&self, name: &str) -> Option<&Element<'a>> {
+        self.children.iter().find(|c| c.name == name)
+    }
+    pub fn children_named<'s>(
+        &'s self,
+        name: &'s str,
+    ) -> impl Iterator<Item = &'s Element<'a>> + 's {
+        self.children.iter().filter(move |c| c.name == name)
+    }
+    /// The decoded direct text, all segments joined.
+    pub fn text(&self) -> String {
+        self.text.iter().map(|s| s.text.as_ref()).collect()
+    }
+    /// Every descendant (depth first, self excluded).
+    pub fn descendants(&self) -> Vec<&Element<'a>> {
+        let mut out = Vec::new();
+        let mut stack: Vec<&Element<'a>> = self.children.iter().rev().collect();
+        while let Some(e) = stack.pop() {
+            out.push(e);
+            stack.extend(e.children.iter().rev());
+        }
+        out
+    }
+}
+
+/// The local part of a qualified name (`xhtml:p` -> `p`).
+fn local(name: &str) -> &str {
+    match name.rfind(':') {
+        Some(i) => &name[i + 1..],
+        None => name,
+    }
+}
+
+/// The element name at the start of a raw tag (`contact localId="1"` -> `contact`).
+fn tag_name(raw: &str) -> &str {
+    let end = raw
+        .find(|c: char| c.is_ascii_whitespace() || c == '/')
+        .unwrap_or(raw.len());
+    local(&raw[..end])
+}
+
+/// Decodes the five predefined entities and character references; `None` for anything else.
+pub fn decode_entity(name: &str) -> Option<String> {
+    Some(match name {
+        "lt" => "<".into(),
+        "gt" => ">".into(),
+        "amp" => "&".into(),
+        "quot" => "\"".into(),
+        "apos" => "'".into(),
+        _ => {
+            let num = name.strip_prefix('#')?;
+            let code = match num.strip_prefix('x').or_else(|| num.strip_prefix('X')) {
+                Some(hex) => u32::from_str_radix(hex, 16).ok()?,
+                None => num.parse().ok()?,
+            };
+            char::from_u32(code)?.to_string()
+        }
+    })
+}
+
+/// Decodes entities inside an attribute value (quick-xml leaves them escaped).
+fn decode_attr_value(raw: &str) -> Cow<'_, str> {
+    if !raw.contains('&') {
+        return Cow::Borrowed(raw);
+    }
+    let mut out = String::with_capacity(raw.len());
+    let mut rest = raw;
+    while let Some(i) = rest.find('&') {
+        out.push_str(&rest[..i]);
+        let after = &rest[i + 1..];
+        match after
+            .find(';')
+            .and_then(|j| decode_entity(&after[..j]).map(|d| (j, d)))
+        {
+            Some((j, d)) => {
+                out.push_str(&d);
+                rest = &after[j + 1..];
+            }
+            None => {
+                out.push('&');
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    Cow::Owned(out)
+}
+
+/// Attributes of a start tag whose raw text (between `<` and `>`) begins at `tag_pos + 1`.
+fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
+    // A small scanner: name, optional spaces, '=', spaces, quoted value. Positions come for free.
+    let bytes = raw_tag.as_bytes();
+    let mut i = raw_tag
+        .find(|c: char| c.is_whitespace() || c == '/')
+        .unwrap_or(raw_tag.len());
+    let mut out = Vec::new();
+    while i < bytes.len() {
+        while i < bytes.len() && (bytes[i].is_ascii_whitespace() || bytes[i] == b'/') {
+            i += 1;
+        }
+        let name_start = i;
+        while i < bytes.len() && !bytes[i].is_ascii_whitespace() && bytes[i] != b'=' {
+            i += 1;
+        }
+        if name_start == i {
+            break;
+        }
+        let name = local(&raw_tag[name_start..i]);
+        while i < bytes.len() && bytes[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        if i >= bytes.len() || bytes[i] != b'=' {
+            continue;
+        }
+        i += 1;
+        while i < bytes.len() && bytes[i].is_ascii_whitespace() {
+            i += 1;
+        }
+        if i >= bytes.len() || (bytes[i] != b'"' && bytes[i] != b'\'') {
+            break;
+        }
+        let quote = bytes[i];
+        i += 1;
+        let vstart = i;
+        while i < bytes.len() && bytes[i] != quote {
+            i += 1;
+        }
+        let value = decode_attr_value(&raw_tag[vstart..i.min(bytes.len())]);
+        out.push(Attr {
+            name,
+            value,
+            start: tag_pos + 1 + vstart,
+            end: tag_pos + 1 + i,
+        });
+        i += 1;
+    }
+    out
+}
+
+/// Parses the document; returns the root element (if any start tag was read) and the first error.
+pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
+    let base = if xml.starts_with('\u{feff}') { 3 } else { 0 };
+    let body = &xml[base..];
+    let mut reader = Reader::from_str(body);
+    reader.config_mut().trim_text(false);
+    let mut stack: Vec<Element> = Vec::new();
+    let mut root: Option<Element> = None;
+    loop {
+        let pos = reader.buffer_position() as usize;
+        let ev = match reader.read_event() {
+            Ok(ev) => ev,
+            Err(e) => {
+                let err = XmlError {
+                    message: e.to_string(),
+                    pos: base + reader.error_position() as usize,
+                };
+                while let Some(e) = stack.pop() {
+                    attach(&mut stack, &mut root, e);
+                }
+                return (root, Some(err));
+            }
+        };
+        let after = reader.buffer_position() as usize;
+        match ev {
+            Event::Start(_) | Event::Empty(_) => {
+                let raw = &body[pos + 1..after.saturating_sub(1).max(pos + 1)];
+                let raw = raw.strip_suffix('/').unwrap_or(raw);
+                let el = Element {
+                    name: tag_name(raw),
+                    attrs: read_attrs(raw, base + pos),
+                    children: Vec::new(),
+                    text: Vec::new(),
+                    tag_start: base + pos,
+                    tag_end: base + after,
+                    end: base + after,
+                };
+                if matches!(ev, Event::Start(_)) {
+                    stack.push(el);
+                } else {
+                    attach(&mut stack, &mut root, el);
+                }
+            }
+            Event::End(_) => {
+                if let Some(mut el) = stack.pop() {
+                    el.end = base + after;
+                    attach(&mut stack, &mut root, el);
+                }
+            }
+            Event::Text(_) => {
+                let raw = &body[pos..after];
+                // Indentation between elements is dropped; whitespace after the first text of an
+                // element is kept (it belongs to an embedded body).
+                if let Some(top) = stack
+                    .last_mut()
+                    .filter(|t| !t.text.is_empty() || !raw.trim().is_empty())
+                {
+                    top.text.push(TextSeg {
+                        text: Cow::Borrowed(&body[pos..after]),
+                        start: base + pos,
+                        end: base + after,
+                        kind: SegKind::Text,
+                    });
+                }
+            }
+            Event::CData(_) => {
+                if let Some(top) = stack.last_mut() {
+                    top.text.push(TextSeg {
+                        text: Cow::Borrowed(&body[pos + 9..after - 3]),
+                        start: base + pos + 9,
+                        end: base + after - 3,
+                        kind: SegKind::CData,
+                    });
+                }
+            }
+            Event::GeneralRef(r) => {
+                if let Some(top) = stack.last_mut() {
+                    let name = String::from_utf8_lossy(r.as_ref()).into_owned();
+                    let text = decode_entity(&name).unwrap_or_else(|| format!("&{name};"));
+                    top.text.push(TextSeg {
+                        text: Cow::Owned(text),
+                        start: base + pos,
+                        end: base + after,
+                        kind: SegKind::Entity,
+                    });
+                }
+            }
+            Event::Eof => break,
+            _ => {}
+        }
+    }
+    let unclosed = stack.last().map(|e| (e.name.to_string(), e.tag_start));
+    while let Some(e) = stack.pop() {
+        attach(&mut stack, &mut root, e);
+    }
+    let err = unclosed.map(|(name, pos)| XmlError {
+        message: format!("element <{name}> is never closed"),
+        pos,
+    });
+    (root, err)
+}
+
+fn attach<'a>(stack: &mut [Element<'a>], root: &mut Option<Element<'a>>, el: Element<'a>) {
+    match stack.last_mut() {
+        Some(parent) => parent.children.push(el),
+        None => {
+            if root.is_none() {
+                *root = Some(el);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keeps_positions_of_tags_attributes_cdata_and_entities() {
+        let xml = "\u{feff}<a x=\"1&amp;2\"><b:p>LD x&lt;<![CDATA[ST y]]></b:p></a>";
+        let (root, err) = parse(xml);
+        assert!(err.is_none());
+        let a = root.unwrap();
+        assert_eq!(a.name, "a");
+        assert_eq!(a.tag_start, 3);
+        let x = a.attr_full("x").unwrap();
+        assert_eq!(x.value, "1&2");
+        assert_eq!(&xml[x.start..x.end], "1&amp;2");
+        let p = a.child("p").unwrap();
+        assert_eq!(p.text(), "LD x<ST y");
+        let segs: Vec<_> = p.text.iter().map(|s| &xml[s.start..s.end]).collect();
+        assert_eq!(segs, ["LD x", "&lt;", "ST y"]);
+        assert_eq!(p.text[2].kind, SegKind::CData);
+    }
+
+    #[test]
+    fn reports_malformed_documents_with_position() {
+        let (root, err) = parse("<a><b></a>");
+        assert!(root.is_some());
+        let err = err.unwrap();
+        assert!(err.pos > 0, "{err:?}");
+    }
+}

@@ -1,0 +1,115 @@
+//! The bugs users report against LD-to-ST converters, each through a small hand-written TC6 file:
+//! parallel coils share one evaluation of the rung, a block runs before anything reads its outputs,
+//! chained blocks run in data-flow order. Plus the other LD/FBD elements and their diagnostics.
+
+mod common;
+
+use common::{compile, dump_unit, fixture};
+
+fn lines(text: &str) -> Vec<&str> {
+    text.lines().map(str::trim).collect()
+}
+
+fn pos(ls: &[&str], line: &str) -> usize {
+    ls.iter()
+        .position(|l| *l == line)
+        .unwrap_or_else(|| panic!("`{line}` not in:\n{}", ls.join("\n")))
+}
+
+#[test]
+fn parallel_coils_share_one_evaluation_and_contacts_see_old_values() {
+    let (unit, diags) = compile("parallel_coils.xml", &fixture("parallel_coils.xml"));
+    assert_eq!(diags, "");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    // The rung's logic is evaluated exactly once ...
+    assert_eq!(ls.iter().filter(|l| **l == "LD Start").count(), 1, "{il}");
+    // ... and both coils store that one current result, one after the other.
+    let st_motor = pos(&ls, "ST Motor");
+    assert_eq!(ls[st_motor + 1], "ST Lamp", "{il}");
+    assert_eq!(ls[st_motor - 1], "ANDN Stop", "{il}");
+    // The branch that reads Motor was captured before Motor was written.
+    let capture = pos(&ls, "LD Motor");
+    assert!(capture < st_motor, "{il}");
+    assert!(ls[capture + 1].starts_with("ST __tmp_BOOL_"), "{il}");
+    let was = pos(&ls, "ST WasRunning");
+    assert_eq!(ls[was - 1], format!("LD {}", &ls[capture + 1][3..]), "{il}");
+    insta::assert_snapshot!(il);
+}
+
+#[test]
+fn a_block_runs_before_its_readers_whatever_the_drawing_order() {
+    let (unit, diags) = compile(
+        "block_before_readers.xml",
+        &fixture("block_before_readers.xml"),
+    );
+    assert_eq!(diags, "");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    let call = ls
+        .iter()
+        .position(|l| l.starts_with("CAL T1("))
+        .expect("T1 called");
+    assert!(call < pos(&ls, "LD T1.Q"), "{il}");
+    assert!(call < pos(&ls, "LD T1.ET"), "{il}");
+    insta::assert_snapshot!(il);
+}
+
+#[test]
+fn chained_blocks_run_in_data_flow_order() {
+    let (unit, diags) = compile("chained_blocks.xml", &fixture("chained_blocks.xml"));
+    assert_eq!(diags, "");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    let add = pos(&ls, "ADD B");
+    let mul = pos(&ls, "MUL 3");
+    let gt = pos(&ls, "GT Limit");
+    let ctu = ls.iter().position(|l| l.starts_with("CAL C1(")).unwrap();
+    assert!(add < mul && mul < gt && gt < ctu, "{il}");
+    insta::assert_snapshot!(il);
+}
+
+#[test]
+fn edges_storage_connectors_en_eno_jumps_and_returns() {
+    let (unit, diags) = compile("features.xml", &fixture("features.xml"));
+    assert_eq!(diags, "");
+    let il = dump_unit(&unit);
+    // Hidden edge detectors are declared with names no IEC identifier can have.
+    for v in [
+        "__trig_2 : R_TRIG;",
+        "__trig_4 : F_TRIG;",
+        "__trig_7 : F_TRIG;",
+        "__trig_10 : R_TRIG;",
+    ] {
+        assert!(il.contains(v), "{v} missing in\n{il}");
+    }
+    let ls = lines(&il);
+    assert!(ls.contains(&"S Latch") && ls.contains(&"R Latch") && ls.contains(&"STN NotBtn"));
+    assert!(pos(&ls, "JMPC Tail") < pos(&ls, "Tail:"));
+    assert!(pos(&ls, "JMPCN __skip_33") < pos(&ls, "__skip_33:"));
+    assert_eq!(ls[ls.len() - 2..], ["RET", "END_PROGRAM"]);
+    insta::assert_snapshot!(il);
+}
+
+#[test]
+fn graph_mistakes_are_reported_in_the_engineers_terms() {
+    let (_, diags) = compile("errors.xml", &fixture("errors.xml"));
+    for code in [
+        "W3002", "W3003", "E3005", "E3006", "E3007", "E3008", "E3010", "E3011", "E3013", "E3014",
+        "E3015", "E3016", "E3017", "E3018",
+    ] {
+        assert!(diags.contains(code), "{code} missing in\n{diags}");
+    }
+    insta::assert_snapshot!(diags);
+}
+
+#[test]
+fn loops_through_a_variable_or_an_instance_read_the_previous_value() {
+    // CounterFBD of corpus file 01: ADD -> SEL -> Cnt (in-out variable) -> ADD.
+    let (unit, _) = compile("01.xml", &common::corpus("01_beremiz_first_steps.xml"));
+    let il = dump_unit(&unit);
+    let fbd = il.split("FUNCTION_BLOCK CounterFBD").nth(1).unwrap();
+    let fbd = fbd.split("END_FUNCTION_BLOCK").next().unwrap();
+    let ls = lines(fbd);
+    assert!(pos(&ls, "ADD Cnt") < pos(&ls, "ST Cnt"), "{fbd}");
+}
