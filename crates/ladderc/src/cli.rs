@@ -1,7 +1,9 @@
 //! Argument parsing (clap) and dispatch to the library crates.
 
+use crate::{output, pipeline};
 use clap::{Parser, Subcommand, ValueEnum};
 use diagnostics::{render, Diagnostic, MessageFormat, SourceMap};
+use param_passing::lower::Strategy;
 use std::path::PathBuf;
 
 #[derive(Parser, Debug)]
@@ -35,8 +37,80 @@ impl From<Format> for MessageFormat {
     }
 }
 
+#[derive(clap::Args, Debug, Clone)]
+pub struct CompileArgs {
+    /// Input files: IL sources, or PLCopen TC6 XML projects (`.xml`).
+    #[arg(required = true)]
+    pub inputs: Vec<PathBuf>,
+    /// Target profile (memory model) as JSON; the default profile when absent.
+    #[arg(long)]
+    pub profile: Option<PathBuf>,
+    /// How PLCopen block calls are lowered (paper A).
+    #[arg(long, value_enum, default_value_t = StrategyArg::Template)]
+    pub strategy: StrategyArg,
+    /// A directory of extra parameter templates (`*.xml`); they replace built-ins of the same name.
+    #[arg(long)]
+    pub templates: Option<PathBuf>,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
+pub enum StrategyArg {
+    /// IL-instruction method: TM transfers + one FUNC of a static-library function.
+    Il,
+    /// Parameter-template method: one FUNC of a function synthesised from the template.
+    Template,
+    /// Per block: IL when it fits the TM area and is called at 3 or more sites, template otherwise.
+    Auto,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
+pub enum Emit {
+    /// The C project (default): written to the output directory.
+    C,
+    /// The lowered IL, printed on standard output.
+    Il,
+}
+
 #[derive(Subcommand, Debug)]
 pub enum Command {
+    /// Check sources: parse and run the semantic checks, print diagnostics.
+    Check {
+        #[arg(required = true)]
+        inputs: Vec<PathBuf>,
+    },
+    /// Compile to a C project (sources, header, runtime, Makefile) in a directory.
+    Build {
+        #[command(flatten)]
+        compile: CompileArgs,
+        /// Output directory (replaced atomically).
+        #[arg(short = 'o', long = "output")]
+        output: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Emit::C)]
+        emit: Emit,
+    },
+    /// Build with the system C compiler and run scan cycles.
+    Run {
+        #[command(flatten)]
+        compile: CompileArgs,
+        /// Number of scan cycles.
+        #[arg(long, default_value_t = 10)]
+        cycles: u64,
+        /// Cycle time in milliseconds.
+        #[arg(long, default_value_t = 10.0)]
+        cycle_ms: f64,
+        /// CSV rows `cycle,variable,value`, applied before that cycle.
+        #[arg(long)]
+        stimulus: Option<PathBuf>,
+        /// CSV trace: `cycle,time_ms,VAR...`, one row per cycle after the cycle.
+        #[arg(long)]
+        trace: Option<PathBuf>,
+        /// Variables to trace (`main.count`, `inst.count`, `%QX0.1`), comma-separated.
+        #[arg(long, value_delimiter = ',')]
+        watch: Vec<String>,
+        /// Build with -fsanitize=address,undefined.
+        #[arg(long)]
+        sanitize: bool,
+    },
     /// Drive scripts (paper C): compile, run on a simulated drive, debug.
     #[command(subcommand)]
     Drive(DriveCommand),
@@ -90,6 +164,30 @@ pub fn main() -> i32 {
     match cli.command {
         Command::Explain { code } => explain(code.as_deref()),
         Command::Drive(cmd) => drive(cmd, cli.message_format.into()),
+        Command::Check { inputs } => check(&inputs, cli.message_format),
+        Command::Build {
+            compile,
+            output,
+            emit,
+        } => build(&compile, output.as_deref(), emit, cli.message_format),
+        Command::Run {
+            compile,
+            cycles,
+            cycle_ms,
+            stimulus,
+            trace,
+            watch,
+            sanitize,
+        } => {
+            let run = c_backend::RunOptions {
+                cycles,
+                cycle_ms,
+                stimulus,
+                trace,
+                watch,
+            };
+            run_program(&compile, run, sanitize, cli.message_format)
+        }
     }
 }
 
@@ -136,6 +234,171 @@ fn drive(cmd: DriveCommand, format: MessageFormat) -> i32 {
     }
 }
 
+fn options(c: &CompileArgs) -> pipeline::Options {
+    pipeline::Options {
+        profile: c.profile.clone(),
+        strategy: match c.strategy {
+            StrategyArg::Il => Strategy::Il,
+            StrategyArg::Template => Strategy::Template,
+            StrategyArg::Auto => Strategy::Auto,
+        },
+        templates: c.templates.clone(),
+    }
+}
+
+/// Prints the session's diagnostics; the exit code for them (0 when there is no error).
+fn finish(s: pipeline::Session, format: Format) -> i32 {
+    let has_errors = s.diags.has_errors();
+    emit(&s.map, &s.diags.into_sorted(), format);
+    if has_errors {
+        EXIT_DIAGNOSTICS
+    } else {
+        EXIT_OK
+    }
+}
+
+fn io_error(message: String, hint: &str, format: Format) -> i32 {
+    let d = Diagnostic::error(diagnostics::code::E9002, message).with_hint(hint);
+    emit(&SourceMap::new(), &[d], format);
+    EXIT_USAGE
+}
+
+fn check(inputs: &[PathBuf], format: Format) -> i32 {
+    let mut s = pipeline::Session::new();
+    let c = CompileArgs {
+        inputs: inputs.to_vec(),
+        profile: None,
+        strategy: StrategyArg::Template,
+        templates: None,
+    };
+    let _ = s.lower(inputs, &options(&c));
+    finish(s, format)
+}
+
+fn build(
+    c: &CompileArgs,
+    output: Option<&std::path::Path>,
+    emit_kind: Emit,
+    format: Format,
+) -> i32 {
+    let mut s = pipeline::Session::new();
+    match emit_kind {
+        Emit::Il => {
+            let lowered = s.lower(&c.inputs, &options(c));
+            let code = finish(s, format);
+            if let Some(l) = lowered {
+                for u in &l.units {
+                    print!("{}", il_frontend::print::unit(u));
+                }
+            }
+            code
+        }
+        Emit::C => {
+            let Some(dir) = output else {
+                eprintln!("error: `build` needs `-o DIR` (or `--emit il`)");
+                return EXIT_USAGE;
+            };
+            let compiled = s.compile(&c.inputs, &options(c));
+            let code = finish(s, format);
+            let Some((_, program)) = compiled else {
+                return code;
+            };
+            let files: Vec<(String, Vec<u8>)> = program
+                .files
+                .iter()
+                .map(|(p, c)| (p.clone(), c.clone().into_bytes()))
+                .collect();
+            if let Err(e) = output::write_dir_atomically(dir, &files) {
+                return io_error(
+                    format!("cannot write {}: {e}", dir.display()),
+                    "check that the directory can be written",
+                    format,
+                );
+            }
+            code
+        }
+    }
+}
+
+fn run_program(
+    c: &CompileArgs,
+    mut run: c_backend::RunOptions,
+    sanitize: bool,
+    format: Format,
+) -> i32 {
+    let mut s = pipeline::Session::new();
+    let compiled = s.compile(&c.inputs, &options(c));
+    let code = finish(s, format);
+    let Some((_, program)) = compiled else {
+        return code;
+    };
+    let work = match tempfile::Builder::new().prefix("ladderc-run-").tempdir() {
+        Ok(w) => w,
+        Err(e) => {
+            return io_error(
+                format!("cannot create a build directory: {e}"),
+                "check TMPDIR",
+                format,
+            )
+        }
+    };
+    let mut bopts = c_backend::BuildOptions::default();
+    if sanitize {
+        bopts.extra_flags = vec![
+            "-fsanitize=address,undefined".into(),
+            "-fno-sanitize-recover=all".into(),
+            "-g".into(),
+        ];
+    }
+    let exe = match c_backend::build_with(&program, work.path(), &bopts) {
+        Ok(e) => e,
+        Err(e) => {
+            return io_error(
+                format!("building the generated C failed: {e}"),
+                "this is a bug in ladderc if the C compiler works; please report it",
+                format,
+            )
+        }
+    };
+    // The trace is written beside its destination and moved into place only when the run succeeded.
+    let final_trace = run.trace.clone();
+    if let Some(t) = &final_trace {
+        run.trace = Some(pipeline::staging_path(t));
+    }
+    let out = match c_backend::run(&exe, &run) {
+        Ok(o) => o,
+        Err(e) => {
+            return io_error(
+                format!("running the program failed: {e}"),
+                "check the stimulus and trace paths",
+                format,
+            )
+        }
+    };
+    print!("{}", out.stdout);
+    eprint!("{}", out.stderr);
+    match (out.success(), &final_trace, &run.trace) {
+        (true, Some(dst), Some(tmp)) => {
+            if let Err(e) = std::fs::rename(tmp, dst) {
+                let _ = std::fs::remove_file(tmp);
+                return io_error(
+                    format!("cannot write {}: {e}", dst.display()),
+                    "check that the directory can be written",
+                    format,
+                );
+            }
+            EXIT_OK
+        }
+        (true, _, _) => EXIT_OK,
+        (false, _, tmp) => {
+            if let Some(tmp) = tmp {
+                let _ = std::fs::remove_file(tmp);
+            }
+            EXIT_DIAGNOSTICS
+        }
+    }
+}
+
 fn explain(code: Option<&str>) -> i32 {
     match code {
         None => {
@@ -160,7 +423,6 @@ fn explain(code: Option<&str>) -> i32 {
 }
 
 /// Prints diagnostics in the chosen format on stderr.
-#[allow(dead_code)]
 pub fn emit(map: &SourceMap, diags: &[Diagnostic], format: Format) {
     eprint!("{}", render(map, diags, format.into()));
 }
