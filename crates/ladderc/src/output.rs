@@ -40,19 +40,6 @@ pub fn write_dir_atomically(dir: &Path, files: &[(String, Vec<u8>)]) -> std::io:
     Ok(())
 }
 
-/// Writes one file atomically (a temporary file in the same directory, then a rename).
-pub fn write_file_atomically(path: &Path, contents: &[u8]) -> std::io::Result<()> {
-    let parent = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    std::fs::create_dir_all(&parent)?;
-    let mut tmp = tempfile::NamedTempFile::new_in(&parent)?;
-    std::io::Write::write_all(&mut tmp, contents)?;
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -78,13 +65,5 @@ mod tests {
             .map(|e| e.unwrap().file_name())
             .collect();
         assert_eq!(leftovers, vec![std::ffi::OsString::from("out")]);
-    }
-
-    #[test]
-    fn single_file_written() {
-        let root = tempfile::tempdir().unwrap();
-        let p = root.path().join("x/trace.csv");
-        write_file_atomically(&p, b"cycle\n").unwrap();
-        assert_eq!(std::fs::read(&p).unwrap(), b"cycle\n");
     }
 }

@@ -169,10 +169,7 @@ impl Session {
             return None;
         }
         let embedded = embedded_functions(&lowered);
-        let copts = c_backend::Options {
-            embedded,
-            ..Default::default()
-        };
+        let copts = c_backend::Options { embedded };
         let program = c_backend::generate(
             &lowered.all_units,
             &model,
