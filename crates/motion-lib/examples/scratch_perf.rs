@@ -79,7 +79,13 @@ fn main() {
     let prof = Profile::position(start, -344.71613673501633, 0.0, &lim).unwrap();
     let d = prof.duration();
     let mut k = 0u32;
-    println!("at: {:.1} ns", best(|| { k = k.wrapping_add(7919); prof.at(black_box((k % 1000) as f64 * d / 900.0)).p }));
+    println!(
+        "at: {:.1} ns",
+        best(|| {
+            k = k.wrapping_add(7919);
+            prof.at(black_box((k % 1000) as f64 * d / 900.0)).p
+        })
+    );
     let n = 1_000_000u32;
     let dt = d * 1.2 / n as f64;
     let t0 = Instant::now();
@@ -87,7 +93,10 @@ fn main() {
     for i in 0..n {
         acc += prof.at(black_box(i as f64 * dt)).p;
     }
-    println!("at sequential: {:.1} ns {acc}", t0.elapsed().as_nanos() as f64 / n as f64);
+    println!(
+        "at sequential: {:.1} ns {acc}",
+        t0.elapsed().as_nanos() as f64 / n as f64
+    );
     let s0 = State::default();
     println!(
         "kernel rest: {:.1} ns",

@@ -39,11 +39,12 @@ pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
         ax.validate()?;
         let u = u.abs();
         if u > 0.0 {
-            l.vmax = l.vmax.min(ax.vmax / u);
-            l.amax = l.amax.min(ax.amax / u);
-            l.dmax = l.dmax.min(ax.dmax / u);
+            let inv = 1.0 / u;
+            l.vmax = l.vmax.min(ax.vmax * inv);
+            l.amax = l.amax.min(ax.amax * inv);
+            l.dmax = l.dmax.min(ax.dmax * inv);
             if !ax.is_trapezoidal() {
-                l.jmax = l.jmax.min(ax.jmax / u);
+                l.jmax = l.jmax.min(ax.jmax * inv);
             }
         }
     }

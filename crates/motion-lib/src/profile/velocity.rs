@@ -23,6 +23,22 @@ pub(crate) struct Change {
 /// (`j` infinite: trapezoidal, `a0` ignored). Closed form, scalars only.
 #[inline(always)]
 pub(crate) fn change(v0: f64, a0: f64, vt: f64, a_hi: f64, a_lo: f64, j: f64) -> Change {
+    change_with(v0, a0, vt, a_hi, a_lo, j, [1.0 / j, 1.0 / a_hi, 1.0 / a_lo])
+}
+
+/// [`change`] with `inv` = [1 / `j`, 1 / `a_hi`, 1 / `a_lo`] precomputed (off the
+/// critical path of the square root).
+#[inline(always)]
+pub(crate) fn change_with(
+    v0: f64,
+    a0: f64,
+    vt: f64,
+    a_hi: f64,
+    a_lo: f64,
+    j: f64,
+    inv: [f64; 3],
+) -> Change {
+    let inv_j = inv[0];
     if j.is_infinite() {
         let (t, acc) = if vt > v0 {
             ((vt - v0) / a_hi, a_hi)
@@ -37,24 +53,23 @@ pub(crate) fn change(v0: f64, a0: f64, vt: f64, a_hi: f64, a_lo: f64, j: f64) ->
             dist: 0.5 * (v0 + vt) * t,
         };
     }
-    let inv_j = 1.0 / j;
     let v_zero = v0 + 0.5 * a0 * a0.abs() * inv_j;
-    let (s, v0m, a0m, vtm, hi) = if vt >= v_zero {
-        (1.0, v0, a0, vt, a_hi)
+    let (s, v0m, a0m, vtm, hi, inv_hi) = if vt >= v_zero {
+        (1.0, v0, a0, vt, a_hi, inv[1])
     } else {
-        (-1.0, -v0, -a0, -vt, a_lo)
+        (-1.0, -v0, -a0, -vt, a_lo, inv[2])
     };
     // Upward change in the mirrored frame: jerk j1 to the peak acceleration `ap`, hold
     // it for t2, jerk -j back to 0.
     let (t1, j1, t2, ap) = if a0m > hi {
         let vz = v0m + 0.5 * a0m * a0m * inv_j;
-        ((a0m - hi) * inv_j, -j, ((vtm - vz) / hi).max(0.0), hi)
+        ((a0m - hi) * inv_j, -j, ((vtm - vz) * inv_hi).max(0.0), hi)
     } else {
         let ap = (j * (vtm - v0m) + 0.5 * a0m * a0m).max(0.0).sqrt();
         if ap <= hi {
             ((ap - a0m).max(0.0) * inv_j, j, 0.0, ap)
         } else {
-            let t2 = ((vtm - v0m - (hi * hi - 0.5 * a0m * a0m) * inv_j) / hi).max(0.0);
+            let t2 = ((vtm - v0m - (hi * hi - 0.5 * a0m * a0m) * inv_j) * inv_hi).max(0.0);
             ((hi - a0m) * inv_j, j, t2, hi)
         }
     };
@@ -118,7 +133,8 @@ pub(crate) fn position_cruising(
     }
     let s = if target_p >= start.p { 1.0 } else { -1.0 };
     let (v0, a0, vf, j) = (s * start.v, s * start.a, s * target_v, lim.jmax);
-    let v_zero = v0 + a0 * a0.abs() / (2.0 * j);
+    let inv_j = 1.0 / j;
+    let v_zero = v0 + 0.5 * a0 * a0.abs() * inv_j;
     if v0.abs() > lim.vmax
         || a0 > lim.amax
         || a0 < -lim.dmax
@@ -127,9 +143,11 @@ pub(crate) fn position_cruising(
     {
         return None;
     }
-    let c1 = change(v0, a0, lim.vmax, lim.amax, lim.dmax, j);
-    let c2 = change(lim.vmax, 0.0, vf, lim.amax, lim.dmax, j);
-    let cruise = (s * (target_p - start.p) - c1.dist - c2.dist) / lim.vmax;
+    let inv = [inv_j, 1.0 / lim.amax, 1.0 / lim.dmax];
+    let inv_vmax = 1.0 / lim.vmax;
+    let c1 = change_with(v0, a0, lim.vmax, lim.amax, lim.dmax, j, inv);
+    let c2 = change_with(lim.vmax, 0.0, vf, lim.amax, lim.dmax, j, inv);
+    let cruise = (s * (target_p - start.p) - c1.dist - c2.dist) * inv_vmax;
     if cruise.is_nan() || cruise <= 0.0 {
         return None;
     }
