@@ -119,3 +119,58 @@ fn with_duration_agrees_with_rsruckig_minimum_duration() {
     eprintln!("with_duration vs rsruckig: {equal} equal, {blocked} blocked");
     assert!(equal > 3_000);
 }
+
+/// Velocity profiles against rsruckig's velocity interface (same acceleration bounds:
+/// `amax` in the direction of the target velocity, `dmax` against it).
+#[test]
+fn velocity_durations_equal_rsruckig() {
+    let mut otg = Ruckig::<1, IgnoreErrorHandler>::new(None, 0.001);
+    let mut rng = Rng(15);
+    let mut both = 0;
+    for i in 0..10_000 {
+        let pb = random_problem(&mut rng, i % 2 == 0, i % 7 == 0);
+        let lim = &pb.lim;
+        let dir = if pb.target_v != 0.0 {
+            pb.target_v.signum()
+        } else if pb.start.v != 0.0 {
+            pb.start.v.signum()
+        } else {
+            1.0
+        };
+        let (amax, amin) = if dir > 0.0 {
+            (lim.amax, -lim.dmax)
+        } else {
+            (lim.dmax, -lim.amax)
+        };
+        let mut input = InputParameter::new(None);
+        input.control_interface = ControlInterface::Velocity;
+        input.current_position[0] = pb.start.p;
+        input.current_velocity[0] = pb.start.v;
+        input.current_acceleration[0] = pb.start.a;
+        input.target_velocity[0] = pb.target_v;
+        input.max_velocity[0] = lim.vmax.max(pb.start.v.abs());
+        input.max_acceleration[0] = amax;
+        input.min_acceleration = Some(daov_stack![amin]);
+        input.max_jerk[0] = if lim.is_trapezoidal() {
+            f64::INFINITY
+        } else {
+            lim.jmax
+        };
+        let mut traj = Trajectory::new(None);
+        let Ok(RuckigResult::Working | RuckigResult::Finished) = otg.calculate(&input, &mut traj)
+        else {
+            continue;
+        };
+        let want = traj.get_duration();
+        let got = Profile::velocity(pb.start, pb.target_v, lim)
+            .unwrap_or_else(|e| panic!("{pb:?}: {e}"))
+            .duration();
+        assert!(
+            (got - want).abs() <= 1e-6 * want.max(1e-3),
+            "{pb:?}: duration {got}, rsruckig {want}"
+        );
+        both += 1;
+    }
+    eprintln!("velocity: {both} durations equal to rsruckig's");
+    assert!(both > 9_000);
+}
