@@ -336,3 +336,19 @@ fn extreme_and_invalid_inputs_give_errors_not_panics() {
         Err(PlanError::InvalidTarget { .. })
     ));
 }
+
+#[test]
+fn rest_to_rest_profiles_of_every_length() {
+    let mut rng = Rng(8);
+    for i in 0..20_000 {
+        let mut pb = random_problem(&mut rng, false, i % 10 == 0);
+        pb.start.v = 0.0;
+        pb.start.a = 0.0;
+        pb.target_v = 0.0;
+        let dist = 10f64.powf(rng.range(-6.0, 4.0));
+        pb.target_p = pb.start.p + if i % 2 == 0 { dist } else { -dist };
+        let prof = Profile::position(pb.start, pb.target_p, 0.0, &pb.lim).unwrap();
+        let dir = if pb.target_p >= pb.start.p { 1.0 } else { -1.0 };
+        check_profile(&pb, &prof, dir, Some(pb.target_p));
+    }
+}

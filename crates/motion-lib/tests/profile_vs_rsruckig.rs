@@ -174,3 +174,40 @@ fn velocity_durations_equal_rsruckig() {
     eprintln!("velocity: {both} durations equal to rsruckig's");
     assert!(both > 9_000);
 }
+
+/// Rest-to-rest moves of every length (short triangular, trapezoidal, mixed, cruising),
+/// asymmetric acceleration limits.
+#[test]
+fn rest_to_rest_durations_equal_rsruckig() {
+    use motion_lib::profile::{Limits, State};
+    let mut otg = Ruckig::<1, IgnoreErrorHandler>::new(None, 0.001);
+    let mut rng = Rng(16);
+    for _ in 0..10_000 {
+        let lim = Limits {
+            vmax: rng.range(0.5, 100.0),
+            amax: rng.range(0.2, 20.0),
+            dmax: rng.range(0.2, 20.0),
+            jmax: rng.range(0.1, 100.0),
+        };
+        let start = State {
+            p: rng.range(-100.0, 100.0),
+            v: 0.0,
+            a: 0.0,
+        };
+        let dist = 10f64.powf(rng.range(-6.0, 4.0)) * if rng.chance(0.5) { 1.0 } else { -1.0 };
+        let pb = Problem {
+            start,
+            target_p: start.p + dist,
+            target_v: 0.0,
+            lim,
+        };
+        let want = ruckig_duration(&mut otg, &pb).expect("rsruckig plans rest to rest");
+        let got = Profile::position(pb.start, pb.target_p, 0.0, &lim)
+            .unwrap()
+            .duration();
+        assert!(
+            (got - want).abs() <= 1e-9 * want.max(1e-3),
+            "{pb:?}: duration {got}, rsruckig {want}"
+        );
+    }
+}

@@ -115,6 +115,76 @@ pub(crate) fn velocity_change(cur: State, vt: f64, lim: &Limits) -> Profile {
     Profile::build(cur, &items, j.is_infinite(), None)
 }
 
+/// Fast paths of [`Profile::position`]: phases (duration, jerk), the fourth being a
+/// cruise (possibly empty), and the signed peak velocity at its start. None when the
+/// problem needs the kernel's enumeration of every profile family.
+#[inline(always)]
+pub(crate) fn fast_path(
+    start: State,
+    target_p: f64,
+    target_v: f64,
+    lim: &Limits,
+) -> Option<([(f64, f64); 7], f64)> {
+    if lim.is_trapezoidal() {
+        return None;
+    }
+    if let Some(items) = position_cruising(start, target_p, target_v, lim) {
+        let s = if target_p >= start.p { 1.0 } else { -1.0 };
+        return Some((items, s * lim.vmax));
+    }
+    if start.v == 0.0 && start.a == 0.0 && target_v == 0.0 {
+        return position_rest_to_rest(start, target_p, lim);
+    }
+    None
+}
+
+/// Rest-to-rest move too short to cruise at vmax: accelerate to a peak velocity `vp`
+/// and decelerate, each half a time-optimal velocity change (triangular when
+/// `vp <= limit^2 / j`, else trapezoidal). The distance D(vp) = vp/2 (T_up + T_down) is
+/// increasing in `vp`; both halves triangular or both trapezoidal give closed forms.
+/// The mixed case (quartic) is left to the kernel.
+#[inline(always)]
+fn position_rest_to_rest(
+    start: State,
+    target_p: f64,
+    lim: &Limits,
+) -> Option<([(f64, f64); 7], f64)> {
+    let s = if target_p >= start.p { 1.0 } else { -1.0 };
+    let dist = s * (target_p - start.p);
+    let j = lim.jmax;
+    let (va, vd) = (lim.amax * lim.amax / j, lim.dmax * lim.dmax / j);
+    // Both triangular: D = 2 vp^(3/2) / sqrt(j).
+    let tri = (0.5 * dist * j.sqrt()).powf(2.0 / 3.0);
+    let vp = if tri <= va.min(vd) {
+        tri
+    } else {
+        // Both trapezoidal: (1/amax + 1/dmax)/2 vp^2 + (amax + dmax)/(2j) vp - dist = 0.
+        let qa = 0.5 * (1.0 / lim.amax + 1.0 / lim.dmax);
+        let qb = 0.5 * (lim.amax + lim.dmax) / j;
+        let vp = 2.0 * dist / (qb + (qb * qb + 4.0 * qa * dist).sqrt());
+        if vp >= va.max(vd) {
+            vp
+        } else {
+            return None;
+        }
+    };
+    if !(vp > 0.0 && vp <= lim.vmax && vp.is_finite()) {
+        return None;
+    }
+    let c1 = change(0.0, 0.0, vp, lim.amax, lim.dmax, j);
+    let c2 = change(vp, 0.0, 0.0, lim.amax, lim.dmax, j);
+    let items = [
+        (c1.t[0], s * c1.x[0]),
+        (c1.t[1], s * c1.x[1]),
+        (c1.t[2], s * c1.x[2]),
+        (0.0, 0.0),
+        (c2.t[0], s * c2.x[0]),
+        (c2.t[1], s * c2.x[1]),
+        (c2.t[2], s * c2.x[2]),
+    ];
+    Some((items, s * vp))
+}
+
 /// Fast path of [`Profile::position`]: when the start is inside the limits and the
 /// distance leaves room for a cruise at vmax, the time-optimal profile is the
 /// time-optimal change to vmax, the cruise, and the time-optimal change to the target
@@ -128,9 +198,6 @@ pub(crate) fn position_cruising(
     target_v: f64,
     lim: &Limits,
 ) -> Option<[(f64, f64); 7]> {
-    if lim.is_trapezoidal() {
-        return None;
-    }
     let s = if target_p >= start.p { 1.0 } else { -1.0 };
     let (v0, a0, vf, j) = (s * start.v, s * start.a, s * target_v, lim.jmax);
     let inv_j = 1.0 / j;
