@@ -15,7 +15,9 @@
 //! - the end state is the target (to 1e-8 relative), with acceleration 0.
 //!
 //! The planners follow ruckig (Berscheid & Kröger, "Jerk-limited real-time trajectory
-//! generation with arbitrary target states", RSS 2021): see `README_profile.md`.
+//! generation with arbitrary target states", RSS 2021): closed-form fast paths
+//! (`velocity`: cruise at vmax, short rest-to-rest moves) and otherwise the enumeration
+//! of every profile family (`kernel`, adapted from rsruckig). See `README_profile.md`.
 
 mod jsonl;
 mod kernel;
