@@ -111,6 +111,9 @@ pub enum Command {
         #[arg(long)]
         sanitize: bool,
     },
+    /// Motion planning tools.
+    #[command(subcommand)]
+    Motion(MotionCommand),
     /// Drive scripts (paper C): compile, run on a simulated drive, debug.
     #[command(subcommand)]
     Drive(DriveCommand),
@@ -119,6 +122,13 @@ pub enum Command {
         /// The code; omit it to list all codes with their titles.
         code: Option<String>,
     },
+}
+
+#[derive(Subcommand, Debug)]
+pub enum MotionCommand {
+    /// Plan jerk-limited profiles for problems in the oracle's JSON-lines format; prints each problem back
+    /// with its time-optimal `duration` and `phases` ([duration, jerk] pairs).
+    Plan { file: PathBuf },
 }
 
 #[derive(Subcommand, Debug)]
@@ -164,6 +174,7 @@ pub fn main() -> i32 {
     match cli.command {
         Command::Explain { code } => explain(code.as_deref()),
         Command::Drive(cmd) => drive(cmd, cli.message_format.into()),
+        Command::Motion(MotionCommand::Plan { file }) => motion_plan(&file),
         Command::Check { inputs } => check(&inputs, cli.message_format),
         Command::Build {
             compile,
@@ -394,6 +405,26 @@ fn run_program(
             if let Some(tmp) = tmp {
                 let _ = std::fs::remove_file(tmp);
             }
+            EXIT_DIAGNOSTICS
+        }
+    }
+}
+
+fn motion_plan(file: &std::path::Path) -> i32 {
+    let text = match std::fs::read_to_string(file) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("error[E9001]: cannot read {}: {e}", file.display());
+            return EXIT_USAGE;
+        }
+    };
+    match motion_lib::profile::plan_jsonl(&text) {
+        Ok(out) => {
+            print!("{out}");
+            EXIT_OK
+        }
+        Err(e) => {
+            eprintln!("{}: error[E9003]: {e}", file.display());
             EXIT_DIAGNOSTICS
         }
     }

@@ -40,3 +40,35 @@ fn unknown_code_and_bad_usage_exit_2() {
         Some(2)
     );
 }
+
+#[test]
+fn motion_plan_recomputes_oracle_durations() {
+    let oracle = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/oracle/ruckig-profiles.jsonl"
+    );
+    let Ok(text) = std::fs::read_to_string(oracle) else {
+        panic!("the oracle file is expected beside the repository at {oracle}");
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let sample: String = text.lines().take(40).map(|l| format!("{l}\n")).collect();
+    let input = dir.path().join("p.jsonl");
+    std::fs::write(&input, &sample).unwrap();
+    let out = ladderc()
+        .args(["motion", "plan"])
+        .arg(&input)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let planned = String::from_utf8(out.stdout).unwrap();
+    for (want, got) in sample.lines().zip(planned.lines()) {
+        let w: serde_json::Value = serde_json::from_str(want).unwrap();
+        let g: serde_json::Value = serde_json::from_str(got).unwrap();
+        let (w, g) = (
+            w["duration"].as_f64().unwrap(),
+            g["duration"].as_f64().unwrap(),
+        );
+        assert!((w - g).abs() <= 1e-6 * w, "{w} vs {g}");
+    }
+    assert_eq!(planned.lines().count(), 40);
+}
