@@ -171,6 +171,8 @@ impl<'s> Ctx<'s> {
             }
             _ => {}
         }
+        // `NOT x` was reported: the tree keeps the recovered `NOT` (no second report downstream).
+        let operand = if op == Op::Not { None } else { operand };
         Some(Instruction {
             kind: InstrKind::Simple {
                 op,
