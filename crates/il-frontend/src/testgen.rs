@@ -136,7 +136,11 @@ mod tests {
         // Each POU: header, VAR, 28 declarations, END_VAR, 100 body lines, END_PROGRAM.
         assert_eq!(text.lines().count(), 3 * (1 + 1 + 28 + 1 + 100 + 1));
         for lines in [0, 1, 2, 5, 7] {
-            assert_eq!(generate(lines, 1).lines().count(), 32 + lines, "{lines} lines");
+            assert_eq!(
+                generate(lines, 1).lines().count(),
+                32 + lines,
+                "{lines} lines"
+            );
         }
         for kw in ["AND(", "JMPC L", "CAL t", "MUL n", "ORN b", "GT "] {
             assert!(text.contains(kw), "missing {kw}");
