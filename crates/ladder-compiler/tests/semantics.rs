@@ -113,3 +113,18 @@ fn loops_through_a_variable_or_an_instance_read_the_previous_value() {
     let ls = lines(fbd);
     assert!(pos(&ls, "ADD Cnt") < pos(&ls, "ST Cnt"), "{fbd}");
 }
+
+#[test]
+fn human_diagnostics_show_the_xml_excerpt_and_the_element() {
+    let xml = fixture("errors.xml");
+    let mut map = diagnostics::SourceMap::new();
+    let file = map.add("errors.xml", xml.as_str());
+    let mut diags = diagnostics::Diagnostics::new();
+    ladder_compiler::compile_xml(file, &xml, &mut diags);
+    let e3005: Vec<_> = diags
+        .into_sorted()
+        .into_iter()
+        .filter(|d| d.code.0 == "E3005")
+        .collect();
+    insta::assert_snapshot!(diagnostics::render_human(&map, &e3005));
+}
