@@ -208,6 +208,9 @@ fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
     out
 }
 
+/// Deeper documents are refused (no PLCopen file comes close; the limit keeps recursion bounded).
+pub const MAX_DEPTH: usize = 256;
+
 /// Parses the document; returns the root element (if any start tag was read) and the first error.
 pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
     let base = if xml.starts_with('\u{feff}') { 3 } else { 0 };
@@ -246,6 +249,16 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                     end: base + after,
                 };
                 if matches!(ev, Event::Start(_)) {
+                    if stack.len() >= MAX_DEPTH {
+                        let err = XmlError {
+                            message: format!("elements nested deeper than {MAX_DEPTH} levels"),
+                            pos: base + pos,
+                        };
+                        while let Some(e) = stack.pop() {
+                            attach(&mut stack, &mut root, e);
+                        }
+                        return (root, Some(err));
+                    }
                     stack.push(el);
                 } else {
                     attach(&mut stack, &mut root, el);
@@ -341,6 +354,14 @@ mod tests {
         let segs: Vec<_> = p.text.iter().map(|s| &xml[s.start..s.end]).collect();
         assert_eq!(segs, ["LD x", "&lt;", "ST y"]);
         assert_eq!(p.text[2].kind, SegKind::CData);
+    }
+
+    #[test]
+    fn refuses_absurd_nesting() {
+        let xml = "<a>".repeat(MAX_DEPTH + 10);
+        let (root, err) = parse(&xml);
+        assert!(root.is_some());
+        assert!(err.unwrap().message.contains("nested deeper"));
     }
 
     #[test]
