@@ -50,7 +50,7 @@ pub fn lower_pou_body(
             });
             (stmts, block)
         }
-        "IL" => (crate::il_body::parse(ctx, lang), None),
+        "IL" => (crate::il_body::parse(ctx, lang, name), None),
         "ST" => {
             ctx.report(
                 Diagnostic::error(

@@ -11,7 +11,12 @@ use ladder_compiler::ast::{IlStmt, LibraryElement};
 fn embedded_il_spans_point_into_the_xml() {
     let xml = fixture("il_bodies.xml");
     let (unit, diags) = compile("il_bodies.xml", &xml);
-    assert_eq!(diags, "");
+    // The broken body's syntax error points into the XML and names its POU.
+    assert_eq!(diags.lines().count(), 1, "{diags}");
+    assert!(
+        diags.starts_with("il_bodies.xml:30:") && diags.contains("[POU `Broken`]"),
+        "{diags}"
+    );
     let pous: Vec<_> = unit
         .items
         .iter()
@@ -20,7 +25,7 @@ fn embedded_il_spans_point_into_the_xml() {
             _ => None,
         })
         .collect();
-    assert_eq!(pous.len(), 3);
+    assert_eq!(pous.len(), 4);
     for (p, expected) in pous.iter().zip([
         ["LD a", "GT 5", "ST c"],
         ["LD a", "LT 5", "ST c"],
