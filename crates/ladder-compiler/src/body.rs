@@ -1,6 +1,7 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
 //! [`crate::lower`]; IL is parsed in place by the IL front end; ST and SFC get one precise diagnostic
-//! (E3003/E3004) naming the POU, and the POU keeps an empty body.
+//! (E3003/E3004) naming the POU, and the POU keeps an empty body; an ST/SFC POU that no program instance
+//! reaches only gets warning W3004.
 //!
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
 //! temporaries), one extra `VAR` block holding them.
@@ -18,6 +19,7 @@ pub fn lower_pou_body(
     index: &Index,
     pou_el: &Element,
     pou: &Pou,
+    used: bool,
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
     let Some(body) = pou_el.child("body") else {
         return (Vec::new(), None);
@@ -51,6 +53,20 @@ pub fn lower_pou_body(
             (stmts, block)
         }
         "IL" => (crate::il_body::parse(ctx, lang, name), None),
+        "ST" | "SFC" if !used => {
+            ctx.report(
+                Diagnostic::warning(
+                    code::W3004,
+                    format!(
+                        "POU `{name}` ({}) is not used by any program instance and is skipped",
+                        if lang.name == "ST" { "ST" } else { "SFC" }
+                    ),
+                )
+                .at(span)
+                .with_xml(xml_ctx),
+            );
+            (Vec::new(), None)
+        }
         "ST" => {
             ctx.report(
                 Diagnostic::error(
