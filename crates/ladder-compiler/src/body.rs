@@ -4,7 +4,7 @@
 //! reaches only gets warning W3004.
 //!
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
-//! temporaries), one extra `VAR` block holding them.
+//! temporaries), one extra `VAR` block holding them; `None` for an unused ST/SFC POU, which is left out.
 
 use crate::context::Ctx;
 use crate::graph;
@@ -20,16 +20,16 @@ pub fn lower_pou_body(
     pou_el: &Element,
     pou: &Pou,
     used: bool,
-) -> (Vec<IlStmt>, Option<VarBlock>) {
+) -> Option<(Vec<IlStmt>, Option<VarBlock>)> {
     let Some(body) = pou_el.child("body") else {
-        return (Vec::new(), None);
+        return Some((Vec::new(), None));
     };
     let Some(lang) = body
         .children
         .iter()
         .find(|c| !matches!(c.name, "documentation" | "addData"))
     else {
-        return (Vec::new(), None);
+        return Some((Vec::new(), None));
     };
     let span = ctx.tag(lang);
     let name = &pou.name.name;
@@ -50,9 +50,9 @@ pub fn lower_pou_body(
                 vars: hidden,
                 span,
             });
-            (stmts, block)
+            Some((stmts, block))
         }
-        "IL" => (crate::il_body::parse(ctx, lang, name), None),
+        "IL" => Some((crate::il_body::parse(ctx, lang, name), None)),
         "ST" | "SFC" if !used => {
             ctx.report(
                 Diagnostic::warning(
@@ -65,7 +65,7 @@ pub fn lower_pou_body(
                 .at(span)
                 .with_xml(xml_ctx),
             );
-            (Vec::new(), None)
+            None
         }
         "ST" => {
             ctx.report(
@@ -78,7 +78,7 @@ pub fn lower_pou_body(
                 .with_hint("rewrite the POU in IL, LD or FBD; its interface is still checked")
                 .with_xml(xml_ctx),
             );
-            (Vec::new(), None)
+            Some((Vec::new(), None))
         }
         "SFC" => {
             ctx.report(
@@ -91,7 +91,7 @@ pub fn lower_pou_body(
                 .with_hint("rewrite the sequence in LD or IL; its interface is still checked")
                 .with_xml(xml_ctx),
             );
-            (Vec::new(), None)
+            Some((Vec::new(), None))
         }
         other => {
             ctx.report(
@@ -102,7 +102,7 @@ pub fn lower_pou_body(
                 .at(span)
                 .with_xml(xml_ctx),
             );
-            (Vec::new(), None)
+            Some((Vec::new(), None))
         }
     }
 }

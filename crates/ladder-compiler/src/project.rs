@@ -115,7 +115,9 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     let used = used_pous(&headers, &configs);
     for (el, mut pou) in headers {
         let is_used = used.as_ref().is_none_or(|u| u.contains(&pou.name.key()));
-        let (stmts, hidden) = body::lower_pou_body(ctx, &index, el, &pou, is_used);
+        let Some((stmts, hidden)) = body::lower_pou_body(ctx, &index, el, &pou, is_used) else {
+            continue;
+        };
         pou.body = stmts;
         if let Some(h) = hidden {
             pou.var_blocks.push(h);
