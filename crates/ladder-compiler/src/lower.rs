@@ -435,6 +435,11 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             }
             deps.insert(i, d);
         }
+        // Most networks have no loop: try the plain topological order first.
+        let order = kahn(g, net, &deps);
+        if order.len() == net.len() {
+            return Some(order);
+        }
         // A loop is cut at a wire leaving a variable or a function block instance: the reader then
         // sees the value from the previous scan. Variables are preferred, then the wire that runs
         // furthest backwards (right to left), as drawn feedback wires do.
@@ -475,36 +480,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 }
             }
         }
-        // Kahn's algorithm, ties broken by the documented order key.
-        let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
-        let mut users: HashMap<usize, Vec<usize>> = HashMap::new();
-        for (&i, d) in &deps {
-            for &s in d {
-                if indeg.contains_key(&s) {
-                    *indeg.get_mut(&i).unwrap_or(&mut 0) += 1;
-                    users.entry(s).or_default().push(i);
-                }
-            }
-        }
-        let mut heap = BinaryHeap::new();
-        for (&i, &d) in &indeg {
-            if d == 0 {
-                heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
-            }
-        }
-        let mut order = Vec::with_capacity(net.len());
-        while let Some(std::cmp::Reverse((_, i))) = heap.pop() {
-            order.push(i);
-            for &u in users.get(&i).map(Vec::as_slice).unwrap_or(&[]) {
-                if let Some(d) = indeg.get_mut(&u) {
-                    *d -= 1;
-                    if *d == 0 {
-                        heap.push(std::cmp::Reverse((g.nodes[u].order_key(), u)));
-                    }
-                }
-            }
-        }
-        Some(order)
+        Some(kahn(g, net, &deps))
     }
 
     fn is_fb_block(&self, type_name: &str) -> bool {
@@ -1820,4 +1796,37 @@ fn named_type(name: &str, span: Span) -> TypeRef {
         },
         _ => TypeRef::Named(Ident::new(name, span)),
     }
+}
+
+/// Kahn's algorithm over `net`, ties broken by the documented order key; nodes on a loop are left out.
+fn kahn(g: &Graph, net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<usize> {
+    let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
+    let mut users: HashMap<usize, Vec<usize>> = HashMap::new();
+    for (&i, d) in deps {
+        for &s in d {
+            if indeg.contains_key(&s) {
+                *indeg.get_mut(&i).unwrap_or(&mut 0) += 1;
+                users.entry(s).or_default().push(i);
+            }
+        }
+    }
+    let mut heap = BinaryHeap::new();
+    for (&i, &d) in &indeg {
+        if d == 0 {
+            heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
+        }
+    }
+    let mut order = Vec::with_capacity(net.len());
+    while let Some(std::cmp::Reverse((_, i))) = heap.pop() {
+        order.push(i);
+        for &u in users.get(&i).map(Vec::as_slice).unwrap_or(&[]) {
+            if let Some(d) = indeg.get_mut(&u) {
+                *d -= 1;
+                if *d == 0 {
+                    heap.push(std::cmp::Reverse((g.nodes[u].order_key(), u)));
+                }
+            }
+        }
+    }
+    order
 }
