@@ -15,7 +15,9 @@
 //! 3. Jumps and returns come last, with the same capture rule.
 //!
 //! Feedback loops must pass through an in-out variable (it reads the previous value); other loops are
-//! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot.
+//! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot:
+//! `__trig_<localId>` edge detectors, `__tmp_<TYPE>_<n>` temporaries (reused from network to network),
+//! `__out_<localId>` results of functions called under EN, `__skip_<localId>` EN labels.
 
 use crate::catalogue::{self, Family, OperatorBlock, ResultRule};
 use crate::context::{Ctx, Where};
@@ -205,6 +207,19 @@ impl<'i> BodyLowering<'i> {
             }
         }
         self.hidden
+    }
+
+    fn declare_hidden(&mut self, name: &str, ty: TypeRef, span: Span) {
+        if self.hidden_names.insert(name.to_string()) {
+            self.vars.insert(name.to_ascii_uppercase(), ty.clone());
+            self.hidden.push(VarDecl {
+                name: Ident::new(name, span),
+                location: None,
+                ty,
+                init: None,
+                span,
+            });
+        }
     }
 
     fn declare_trig(&mut self, name: &str, falling: bool, span: Span) {
@@ -1287,7 +1302,15 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     self.poisoned.insert(i);
                     return;
                 };
-                let result = self.alloc_temp(&result_ty);
+                // With EN, a skipped call must leave this block's previous result, so the result
+                // gets its own variable instead of a temporary shared with other networks.
+                let result = if en.is_some() {
+                    let name = format!("__out_{}", sanitize(&node.id));
+                    self.pou.declare_hidden(&name, result_ty.clone(), span);
+                    var_operand(&name, span)
+                } else {
+                    self.alloc_temp(&result_ty)
+                };
                 self.actions.push(Action::Func {
                     name: Ident::new(type_name, *type_span),
                     form,
