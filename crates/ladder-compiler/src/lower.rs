@@ -749,8 +749,11 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         *n += 1;
         let count = *n;
         let entry = self.pou.pools.entry(key).or_insert_with(|| (ty.clone(), 0));
-        entry.1 = entry.1.max(count);
-        self.pou.vars.insert(name.to_ascii_uppercase(), ty.clone());
+        if count > entry.1 {
+            // A new temporary: make its type known to later lookups.
+            entry.1 = count;
+            self.pou.vars.insert(name.to_ascii_uppercase(), ty.clone());
+        }
         var_operand(&name, self.pou.body_span)
     }
 
