@@ -678,7 +678,14 @@ impl<'s> Ctx<'s> {
         let at_line_start = before.is_empty() || before.ends_with(':');
         let only_assign =
             !expected.is_empty() && expected.iter().all(|x| x == "\":=\"" || x == "\"=>\"");
-        let (msg, hint) = if only_assign {
+        let type_expected = expected.iter().any(|x| x == "\"ARRAY\"");
+        let (msg, hint) = if type_expected {
+            (
+                format!("expected a type, found {found}"),
+                "write a type such as INT, BOOL, TIME, STRING[10], ARRAY [1..10] OF INT or a declared type"
+                    .to_string(),
+            )
+        } else if only_assign {
             (
                 format!("expected `:=` or `=>` before {found}"),
                 "the arguments of a call are all formal (`IN := x, Q => y`) or all non-formal (`x, y`)"

@@ -130,3 +130,16 @@ fn operands_of_every_literal_form() {
         ]
     );
 }
+
+#[test]
+fn non_ascii_text_is_reported_on_character_boundaries() {
+    let src = "PROGRAM p\n    LD ü\n    ST é€\n    LD 'grüße'\nEND_PROGRAM\n";
+    let p = common::parse("u.il", src);
+    let spans: Vec<&str> = p
+        .diags
+        .iter()
+        .map(|d| &src[d.span.unwrap().range()])
+        .collect();
+    assert_eq!(spans, vec!["ü", "é", "€"], "{}", p.short());
+    assert!(p.diags.iter().all(|d| d.code.0 == "E0001"));
+}

@@ -57,3 +57,20 @@ fn generated_programs_round_trip() {
     assert_eq!(p.unit.items.len(), 3);
     common::assert_round_trip("gen.il", &src);
 }
+
+#[test]
+fn deeply_nested_deferred_operators_parse_and_print() {
+    let depth = 2_000;
+    let mut src = String::from("PROGRAM deep\n    LD a\n");
+    for _ in 0..depth {
+        src.push_str("    AND( a\n");
+    }
+    for _ in 0..depth {
+        src.push_str("    )\n");
+    }
+    src.push_str("    ST a\nEND_PROGRAM\n");
+    let p = common::parse("deep.il", &src);
+    assert_eq!(p.short(), "");
+    let printed = il_frontend::print::unit(&p.unit);
+    assert_eq!(printed.matches("AND(").count(), depth);
+}
