@@ -450,6 +450,38 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             }
             deps.insert(i, d);
         }
+        // A contact or input variable that names an output of a block instance of this network
+        // (`T1.Q`) reads it after the block runs, like a wire would.
+        let mut implicit: HashSet<(usize, usize)> = HashSet::new();
+        let instances: HashMap<String, usize> = net
+            .iter()
+            .filter_map(|&i| match &g.nodes[i].kind {
+                Kind::Block {
+                    instance: Some((name, _)),
+                    type_name,
+                    ..
+                } if self.is_fb_block(type_name) => Some((name.to_ascii_uppercase(), i)),
+                _ => None,
+            })
+            .collect();
+        if !instances.is_empty() {
+            for &i in net {
+                let text = match &g.nodes[i].kind {
+                    Kind::Contact { var, .. } => var,
+                    Kind::InVar { expr, .. } => expr,
+                    _ => continue,
+                };
+                let Some((base, _)) = text.split_once('.') else {
+                    continue;
+                };
+                if let Some(&b) = instances.get(&base.trim().to_ascii_uppercase()) {
+                    if b != i {
+                        deps.entry(i).or_default().push(b);
+                        implicit.insert((i, b));
+                    }
+                }
+            }
+        }
         // Most networks have no loop: try the plain topological order first.
         let order = kahn(g, net, &deps);
         if order.len() == net.len() {
@@ -472,6 +504,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                             continue;
                         }
                         let rank = match &g.nodes[s].kind {
+                            _ if implicit.contains(&(t, s)) => 3,
                             Kind::InOutVar { .. } => 2,
                             Kind::Block { type_name, .. } if self.is_fb_block(type_name) => 1,
                             _ => continue,

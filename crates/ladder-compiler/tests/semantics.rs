@@ -56,6 +56,20 @@ fn a_block_runs_before_its_readers_whatever_the_drawing_order() {
 }
 
 #[test]
+fn contacts_naming_a_block_output_read_it_after_the_block() {
+    let (unit, diags) = compile("named_outputs.xml", &fixture("named_outputs.xml"));
+    assert_eq!(diags, "");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    let t1 = ls.iter().position(|l| l.starts_with("CAL T1(")).unwrap();
+    assert!(t1 < pos(&ls, "CAL C1(CU := T1.Q)"), "{il}");
+    // The self-resetting pulse reads P1.Q before calling P1: the previous scan's value.
+    let p1 = ls.iter().position(|l| l.starts_with("CAL P1(")).unwrap();
+    assert!(pos(&ls, "LDN P1.Q") < p1, "{il}");
+    insta::assert_snapshot!(il);
+}
+
+#[test]
 fn chained_blocks_run_in_data_flow_order() {
     let (unit, diags) = compile("chained_blocks.xml", &fixture("chained_blocks.xml"));
     assert_eq!(diags, "");
