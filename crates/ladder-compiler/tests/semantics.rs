@@ -142,3 +142,21 @@ fn human_diagnostics_show_the_xml_excerpt_and_the_element() {
         .collect();
     insta::assert_snapshot!(diagnostics::render_human(&map, &e3005));
 }
+
+#[test]
+fn networks_run_by_execution_order_then_top_to_bottom() {
+    let (unit, diags) = compile("network_order.xml", &fixture("network_order.xml"));
+    assert!(
+        diags.contains("W3002") && diags.contains("<vendorElement>"),
+        "{diags}"
+    );
+    assert!(!diags.contains("error"), "{diags}");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    let (first, second, third) = (
+        pos(&ls, "ST First"),
+        pos(&ls, "ST Second"),
+        pos(&ls, "ST Third"),
+    );
+    assert!(first < second && second < third, "{il}");
+}
