@@ -1,9 +1,10 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
 //! [`crate::lower`]; IL is parsed in place by the IL front end; ST and SFC get one precise diagnostic
-//! (E3003/E3004) naming the POU, and the POU keeps an empty body.
+//! (E3003/E3004) naming the POU, and the POU keeps an empty body; an ST/SFC POU that no program instance
+//! reaches only gets warning W3004.
 //!
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
-//! temporaries), one extra `VAR` block holding them.
+//! temporaries), one extra `VAR` block holding them; `None` for an unused ST/SFC POU, which is left out.
 
 use crate::context::Ctx;
 use crate::graph;
@@ -18,16 +19,17 @@ pub fn lower_pou_body(
     index: &Index,
     pou_el: &Element,
     pou: &Pou,
-) -> (Vec<IlStmt>, Option<VarBlock>) {
+    used: bool,
+) -> Option<(Vec<IlStmt>, Option<VarBlock>)> {
     let Some(body) = pou_el.child("body") else {
-        return (Vec::new(), None);
+        return Some((Vec::new(), None));
     };
     let Some(lang) = body
         .children
         .iter()
         .find(|c| !matches!(c.name, "documentation" | "addData"))
     else {
-        return (Vec::new(), None);
+        return Some((Vec::new(), None));
     };
     let span = ctx.tag(lang);
     let name = &pou.name.name;
@@ -48,9 +50,23 @@ pub fn lower_pou_body(
                 vars: hidden,
                 span,
             });
-            (stmts, block)
+            Some((stmts, block))
         }
-        "IL" => (crate::il_body::parse(ctx, lang), None),
+        "IL" => Some((crate::il_body::parse(ctx, lang, name), None)),
+        "ST" | "SFC" if !used => {
+            ctx.report(
+                Diagnostic::warning(
+                    code::W3004,
+                    format!(
+                        "POU `{name}` ({}) is not used by any program instance and is skipped",
+                        if lang.name == "ST" { "ST" } else { "SFC" }
+                    ),
+                )
+                .at(span)
+                .with_xml(xml_ctx),
+            );
+            None
+        }
         "ST" => {
             ctx.report(
                 Diagnostic::error(
@@ -62,7 +78,7 @@ pub fn lower_pou_body(
                 .with_hint("rewrite the POU in IL, LD or FBD; its interface is still checked")
                 .with_xml(xml_ctx),
             );
-            (Vec::new(), None)
+            Some((Vec::new(), None))
         }
         "SFC" => {
             ctx.report(
@@ -75,7 +91,7 @@ pub fn lower_pou_body(
                 .with_hint("rewrite the sequence in LD or IL; its interface is still checked")
                 .with_xml(xml_ctx),
             );
-            (Vec::new(), None)
+            Some((Vec::new(), None))
         }
         other => {
             ctx.report(
@@ -86,7 +102,7 @@ pub fn lower_pou_body(
                 .at(span)
                 .with_xml(xml_ctx),
             );
-            (Vec::new(), None)
+            Some((Vec::new(), None))
         }
     }
 }

@@ -24,8 +24,8 @@ impl Ctx<'_> {
     }
     /// The span of an attribute's value, or of the start tag when the attribute is absent.
     pub fn attr_span(&self, e: &Element, name: &str) -> Span {
-        match e.attr_full(name) {
-            Some(a) => self.span(a.start, a.end),
+        match e.attr_range(name) {
+            Some((start, end)) => self.span(start, end),
             None => self.tag(e),
         }
     }

@@ -111,6 +111,8 @@ pub enum Kind {
 #[derive(Debug, Clone)]
 pub struct Node {
     pub id: String,
+    /// The localId as a number (`u64::MAX` when it is not one), for ordering.
+    pub num: u64,
     pub kind: Kind,
     pub span: Span,
     pub exec_order: Option<u32>,
@@ -139,7 +141,7 @@ impl Node {
             self.exec_order.filter(|o| *o > 0).unwrap_or(u32::MAX),
             self.y,
             self.x,
-            self.id.parse().unwrap_or(u64::MAX),
+            self.num,
         )
     }
 }
@@ -376,6 +378,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
         raw_pins.push(pin_wires);
         nodes.push(Node {
             id: id.to_string(),
+            num: id.parse().unwrap_or(u64::MAX),
             kind,
             span,
             exec_order: e

@@ -63,10 +63,27 @@ pub fn embedded_text(e: &Element) -> EmbeddedText {
     EmbeddedText { text, base }
 }
 
-/// Parses the IL body in place (spans point into the XML file).
-pub fn parse(ctx: &mut crate::context::Ctx, e: &Element) -> Vec<il_frontend::ast::IlStmt> {
+/// Parses the IL body in place (spans point into the XML file); the parser's diagnostics name the POU.
+pub fn parse(
+    ctx: &mut crate::context::Ctx,
+    e: &Element,
+    pou: &str,
+) -> Vec<il_frontend::ast::IlStmt> {
     let t = embedded_text(e);
-    il_frontend::parse_body(ctx.file, &t.text, t.base, ctx.diags)
+    let mut local = diagnostics::Diagnostics::new();
+    let body = il_frontend::parse_body(ctx.file, &t.text, t.base, &mut local);
+    for d in local {
+        let d = if d.xml.is_none() {
+            d.with_xml(diagnostics::XmlContext {
+                pou: Some(pou.to_string()),
+                ..Default::default()
+            })
+        } else {
+            d
+        };
+        ctx.report(d);
+    }
+    body
 }
 
 #[cfg(test)]

@@ -15,7 +15,9 @@
 //! 3. Jumps and returns come last, with the same capture rule.
 //!
 //! Feedback loops must pass through an in-out variable (it reads the previous value); other loops are
-//! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot.
+//! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot:
+//! `__trig_<localId>` edge detectors, `__tmp_<TYPE>_<n>` temporaries (reused from network to network),
+//! `__out_<localId>` results of functions called under EN, `__skip_<localId>` EN labels.
 
 use crate::catalogue::{self, Family, OperatorBlock, ResultRule};
 use crate::context::{Ctx, Where};
@@ -205,6 +207,19 @@ impl<'i> BodyLowering<'i> {
             }
         }
         self.hidden
+    }
+
+    fn declare_hidden(&mut self, name: &str, ty: TypeRef, span: Span) {
+        if self.hidden_names.insert(name.to_string()) {
+            self.vars.insert(name.to_ascii_uppercase(), ty.clone());
+            self.hidden.push(VarDecl {
+                name: Ident::new(name, span),
+                location: None,
+                ty,
+                init: None,
+                span,
+            });
+        }
     }
 
     fn declare_trig(&mut self, name: &str, falling: bool, span: Span) {
@@ -435,6 +450,43 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             }
             deps.insert(i, d);
         }
+        // A contact or input variable that names an output of a block instance of this network
+        // (`T1.Q`) reads it after the block runs, like a wire would.
+        let mut implicit: HashSet<(usize, usize)> = HashSet::new();
+        let instances: HashMap<String, usize> = net
+            .iter()
+            .filter_map(|&i| match &g.nodes[i].kind {
+                Kind::Block {
+                    instance: Some((name, _)),
+                    type_name,
+                    ..
+                } if self.is_fb_block(type_name) => Some((name.to_ascii_uppercase(), i)),
+                _ => None,
+            })
+            .collect();
+        if !instances.is_empty() {
+            for &i in net {
+                let text = match &g.nodes[i].kind {
+                    Kind::Contact { var, .. } => var,
+                    Kind::InVar { expr, .. } => expr,
+                    _ => continue,
+                };
+                let Some((base, _)) = text.split_once('.') else {
+                    continue;
+                };
+                if let Some(&b) = instances.get(&base.trim().to_ascii_uppercase()) {
+                    if b != i {
+                        deps.entry(i).or_default().push(b);
+                        implicit.insert((i, b));
+                    }
+                }
+            }
+        }
+        // Most networks have no loop: try the plain topological order first.
+        let order = kahn(g, net, &deps);
+        if order.len() == net.len() {
+            return Some(order);
+        }
         // A loop is cut at a wire leaving a variable or a function block instance: the reader then
         // sees the value from the previous scan. Variables are preferred, then the wire that runs
         // furthest backwards (right to left), as drawn feedback wires do.
@@ -452,6 +504,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                             continue;
                         }
                         let rank = match &g.nodes[s].kind {
+                            _ if implicit.contains(&(t, s)) => 3,
                             Kind::InOutVar { .. } => 2,
                             Kind::Block { type_name, .. } if self.is_fb_block(type_name) => 1,
                             _ => continue,
@@ -475,36 +528,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 }
             }
         }
-        // Kahn's algorithm, ties broken by the documented order key.
-        let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
-        let mut users: HashMap<usize, Vec<usize>> = HashMap::new();
-        for (&i, d) in &deps {
-            for &s in d {
-                if indeg.contains_key(&s) {
-                    *indeg.get_mut(&i).unwrap_or(&mut 0) += 1;
-                    users.entry(s).or_default().push(i);
-                }
-            }
-        }
-        let mut heap = BinaryHeap::new();
-        for (&i, &d) in &indeg {
-            if d == 0 {
-                heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
-            }
-        }
-        let mut order = Vec::with_capacity(net.len());
-        while let Some(std::cmp::Reverse((_, i))) = heap.pop() {
-            order.push(i);
-            for &u in users.get(&i).map(Vec::as_slice).unwrap_or(&[]) {
-                if let Some(d) = indeg.get_mut(&u) {
-                    *d -= 1;
-                    if *d == 0 {
-                        heap.push(std::cmp::Reverse((g.nodes[u].order_key(), u)));
-                    }
-                }
-            }
-        }
-        Some(order)
+        Some(kahn(g, net, &deps))
     }
 
     fn is_fb_block(&self, type_name: &str) -> bool {
@@ -758,8 +782,11 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         *n += 1;
         let count = *n;
         let entry = self.pou.pools.entry(key).or_insert_with(|| (ty.clone(), 0));
-        entry.1 = entry.1.max(count);
-        self.pou.vars.insert(name.to_ascii_uppercase(), ty.clone());
+        if count > entry.1 {
+            // A new temporary: make its type known to later lookups.
+            entry.1 = count;
+            self.pou.vars.insert(name.to_ascii_uppercase(), ty.clone());
+        }
         var_operand(&name, self.pou.body_span)
     }
 
@@ -1311,7 +1338,15 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     self.poisoned.insert(i);
                     return;
                 };
-                let result = self.alloc_temp(&result_ty);
+                // With EN, a skipped call must leave this block's previous result, so the result
+                // gets its own variable instead of a temporary shared with other networks.
+                let result = if en.is_some() {
+                    let name = format!("__out_{}", sanitize(&node.id));
+                    self.pou.declare_hidden(&name, result_ty.clone(), span);
+                    var_operand(&name, span)
+                } else {
+                    self.alloc_temp(&result_ty)
+                };
                 self.actions.push(Action::Func {
                     name: Ident::new(type_name, *type_span),
                     form,
@@ -1820,4 +1855,37 @@ fn named_type(name: &str, span: Span) -> TypeRef {
         },
         _ => TypeRef::Named(Ident::new(name, span)),
     }
+}
+
+/// Kahn's algorithm over `net`, ties broken by the documented order key; nodes on a loop are left out.
+fn kahn(g: &Graph, net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<usize> {
+    let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
+    let mut users: HashMap<usize, Vec<usize>> = HashMap::new();
+    for (&i, d) in deps {
+        for &s in d {
+            if indeg.contains_key(&s) {
+                *indeg.get_mut(&i).unwrap_or(&mut 0) += 1;
+                users.entry(s).or_default().push(i);
+            }
+        }
+    }
+    let mut heap = BinaryHeap::new();
+    for (&i, &d) in &indeg {
+        if d == 0 {
+            heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
+        }
+    }
+    let mut order = Vec::with_capacity(net.len());
+    while let Some(std::cmp::Reverse((_, i))) = heap.pop() {
+        order.push(i);
+        for &u in users.get(&i).map(Vec::as_slice).unwrap_or(&[]) {
+            if let Some(d) = indeg.get_mut(&u) {
+                *d -= 1;
+                if *d == 0 {
+                    heap.push(std::cmp::Reverse((g.nodes[u].order_key(), u)));
+                }
+            }
+        }
+    }
+    order
 }

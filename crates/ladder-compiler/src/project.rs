@@ -17,7 +17,7 @@ use il_frontend::ast::{
     CompilationUnit, Configuration, Ident, LibraryElement, Literal, LiteralKind, Operand, Pou,
     PouKind, ProgramInstance, Resource, Task, TypeDecl, TypeRef, VarBlock, VarKind,
 };
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// Schema version of the file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -112,8 +112,12 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     if !data_types.is_empty() {
         unit.items.push(LibraryElement::DataTypes(data_types));
     }
+    let used = used_pous(&headers, &configs);
     for (el, mut pou) in headers {
-        let (stmts, hidden) = body::lower_pou_body(ctx, &index, el, &pou);
+        let is_used = used.as_ref().is_none_or(|u| u.contains(&pou.name.key()));
+        let Some((stmts, hidden)) = body::lower_pou_body(ctx, &index, el, &pou, is_used) else {
+            continue;
+        };
         pou.body = stmts;
         if let Some(h) = hidden {
             pou.var_blocks.push(h);
@@ -123,6 +127,66 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     unit.items
         .extend(configs.into_iter().map(LibraryElement::Configuration));
     unit
+}
+
+/// The POUs reachable from the configurations' program instances (upper-cased names), or `None` when
+/// the project instantiates no program (then every POU counts as used). A POU references another by
+/// declaring a variable of its type, by a block of its type, or by naming it in its body text.
+fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<HashSet<String>> {
+    let roots: Vec<String> = configs
+        .iter()
+        .flat_map(|c| c.resources.iter())
+        .flat_map(|r| r.programs.iter())
+        .map(|p| p.type_name.key())
+        .collect();
+    if roots.is_empty() {
+        return None;
+    }
+    let names: HashSet<String> = pous.iter().map(|(_, p)| p.name.key()).collect();
+    let mut refs: HashMap<String, Vec<String>> = HashMap::new();
+    for (el, p) in pous {
+        let mut out: Vec<String> = Vec::new();
+        for b in &p.var_blocks {
+            for v in &b.vars {
+                let mut t = &v.ty;
+                while let TypeRef::Array { element, .. } = t {
+                    t = element;
+                }
+                if let TypeRef::Named(n) = t {
+                    out.push(n.key());
+                }
+            }
+        }
+        if let Some(body) = el.child("body") {
+            for d in body.descendants() {
+                if d.name == "block" {
+                    if let Some(t) = d.attr("typeName") {
+                        out.push(t.trim().to_ascii_uppercase());
+                    }
+                }
+                for seg in &d.text {
+                    for word in seg
+                        .text
+                        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                    {
+                        let w = word.to_ascii_uppercase();
+                        if names.contains(&w) {
+                            out.push(w);
+                        }
+                    }
+                }
+            }
+        }
+        refs.insert(p.name.key(), out);
+    }
+    let mut used: HashSet<String> = HashSet::new();
+    let mut todo = roots;
+    while let Some(n) = todo.pop() {
+        if used.insert(n.clone()) {
+            todo.extend(refs.get(&n).into_iter().flatten().cloned());
+        }
+    }
+    Some(used)
 }
 
 fn version(ctx: &mut Ctx, root: &Element) -> Version {

@@ -44,7 +44,10 @@ pub struct TextSeg<'a> {
 pub struct Element<'a> {
     /// Local name (`xhtml:p` -> `p`), borrowed from the text.
     pub name: &'a str,
-    pub attrs: Vec<Attr<'a>>,
+    /// The raw start tag between `<` and `>`: attributes are read from it on demand.
+    pub raw_tag: &'a str,
+    /// The attributes whose values hold entities, decoded once (usually none: no allocation).
+    pub decoded_attrs: Vec<Attr<'a>>,
     pub children: Vec<Element<'a>>,
     /// Direct character data, in order (leading whitespace-only pieces are dropped).
     pub text: Vec<TextSeg<'a>>,
@@ -63,11 +66,22 @@ pub struct XmlError {
 }
 
 impl<'a> Element<'a> {
+    /// An attribute's value (entities decoded), by local name.
     pub fn attr(&self, name: &str) -> Option<&str> {
-        self.attr_full(name).map(|a| a.value.as_ref())
+        let raw = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
+        let value = &self.raw_tag[raw.1..raw.2];
+        if !value.contains('&') {
+            return Some(value);
+        }
+        self.decoded_attrs
+            .iter()
+            .find(|a| a.name == name)
+            .map(|a| a.value.as_ref())
     }
-    pub fn attr_full(&self, name: &str) -> Option<&Attr<'a>> {
-        self.attrs.iter().find(|a| a.name == name)
+    /// The byte range of an attribute's raw value in the document.
+    pub fn attr_range(&self, name: &str) -> Option<(usize, usize)> {
+        let (_, start, end) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
+        Some((self.tag_start + 1 + start, self.tag_start + 1 + end))
     }
     pub fn child(&self, name: &str) -> Option<&Element<'a>> {
         self.children.iter().find(|c| c.name == name)
@@ -157,15 +171,13 @@ fn decode_attr_value(raw: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
-/// Attributes of a start tag whose raw text (between `<` and `>`) begins at `tag_pos + 1`.
-fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
-    // A small scanner: name, optional spaces, '=', spaces, quoted value. Positions come for free.
+/// The attributes of a raw start tag: local name and the byte range of the raw value inside the tag.
+fn scan_attrs(raw_tag: &str) -> impl Iterator<Item = (&str, usize, usize)> {
     let bytes = raw_tag.as_bytes();
     let mut i = raw_tag
         .find(|c: char| c.is_whitespace() || c == '/')
         .unwrap_or(raw_tag.len());
-    let mut out = Vec::new();
-    while i < bytes.len() {
+    std::iter::from_fn(move || loop {
         while i < bytes.len() && (bytes[i].is_ascii_whitespace() || bytes[i] == b'/') {
             i += 1;
         }
@@ -174,7 +186,7 @@ fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
             i += 1;
         }
         if name_start == i {
-            break;
+            return None;
         }
         let name = local(&raw_tag[name_start..i]);
         while i < bytes.len() && bytes[i].is_ascii_whitespace() {
@@ -188,7 +200,7 @@ fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
             i += 1;
         }
         if i >= bytes.len() || (bytes[i] != b'"' && bytes[i] != b'\'') {
-            break;
+            return None;
         }
         let quote = bytes[i];
         i += 1;
@@ -196,17 +208,30 @@ fn read_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
         while i < bytes.len() && bytes[i] != quote {
             i += 1;
         }
-        let value = decode_attr_value(&raw_tag[vstart..i.min(bytes.len())]);
-        out.push(Attr {
-            name,
-            value,
-            start: tag_pos + 1 + vstart,
-            end: tag_pos + 1 + i,
-        });
+        let vend = i.min(bytes.len());
         i += 1;
-    }
-    out
+        return Some((name, vstart, vend));
+    })
 }
+
+/// The attributes with entities in their value, decoded.
+fn decoded_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
+    if !raw_tag.contains('&') {
+        return Vec::new();
+    }
+    scan_attrs(raw_tag)
+        .filter(|(_, s, e)| raw_tag[*s..*e].contains('&'))
+        .map(|(name, s, e)| Attr {
+            name,
+            value: decode_attr_value(&raw_tag[s..e]),
+            start: tag_pos + 1 + s,
+            end: tag_pos + 1 + e,
+        })
+        .collect()
+}
+
+/// Deeper documents are refused (no PLCopen file comes close; the limit keeps recursion bounded).
+pub const MAX_DEPTH: usize = 256;
 
 /// Parses the document; returns the root element (if any start tag was read) and the first error.
 pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
@@ -238,7 +263,8 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 let raw = raw.strip_suffix('/').unwrap_or(raw);
                 let el = Element {
                     name: tag_name(raw),
-                    attrs: read_attrs(raw, base + pos),
+                    raw_tag: raw,
+                    decoded_attrs: decoded_attrs(raw, base + pos),
                     children: Vec::new(),
                     text: Vec::new(),
                     tag_start: base + pos,
@@ -246,6 +272,16 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                     end: base + after,
                 };
                 if matches!(ev, Event::Start(_)) {
+                    if stack.len() >= MAX_DEPTH {
+                        let err = XmlError {
+                            message: format!("elements nested deeper than {MAX_DEPTH} levels"),
+                            pos: base + pos,
+                        };
+                        while let Some(e) = stack.pop() {
+                            attach(&mut stack, &mut root, e);
+                        }
+                        return (root, Some(err));
+                    }
                     stack.push(el);
                 } else {
                     attach(&mut stack, &mut root, el);
@@ -333,14 +369,22 @@ mod tests {
         let a = root.unwrap();
         assert_eq!(a.name, "a");
         assert_eq!(a.tag_start, 3);
-        let x = a.attr_full("x").unwrap();
-        assert_eq!(x.value, "1&2");
-        assert_eq!(&xml[x.start..x.end], "1&amp;2");
+        assert_eq!(a.attr("x"), Some("1&2"));
+        let (s, e) = a.attr_range("x").unwrap();
+        assert_eq!(&xml[s..e], "1&amp;2");
         let p = a.child("p").unwrap();
         assert_eq!(p.text(), "LD x<ST y");
         let segs: Vec<_> = p.text.iter().map(|s| &xml[s.start..s.end]).collect();
         assert_eq!(segs, ["LD x", "&lt;", "ST y"]);
         assert_eq!(p.text[2].kind, SegKind::CData);
+    }
+
+    #[test]
+    fn refuses_absurd_nesting() {
+        let xml = "<a>".repeat(MAX_DEPTH + 10);
+        let (root, err) = parse(&xml);
+        assert!(root.is_some());
+        assert!(err.unwrap().message.contains("nested deeper"));
     }
 
     #[test]

@@ -11,7 +11,12 @@ use ladder_compiler::ast::{IlStmt, LibraryElement};
 fn embedded_il_spans_point_into_the_xml() {
     let xml = fixture("il_bodies.xml");
     let (unit, diags) = compile("il_bodies.xml", &xml);
-    assert_eq!(diags, "");
+    // The broken body's syntax error points into the XML and names its POU.
+    assert_eq!(diags.lines().count(), 1, "{diags}");
+    assert!(
+        diags.starts_with("il_bodies.xml:30:") && diags.contains("[POU `Broken`]"),
+        "{diags}"
+    );
     let pous: Vec<_> = unit
         .items
         .iter()
@@ -20,7 +25,7 @@ fn embedded_il_spans_point_into_the_xml() {
             _ => None,
         })
         .collect();
-    assert_eq!(pous.len(), 3);
+    assert_eq!(pous.len(), 4);
     for (p, expected) in pous.iter().zip([
         ["LD a", "GT 5", "ST c"],
         ["LD a", "LT 5", "ST c"],
@@ -142,10 +147,16 @@ fn emitted_il_parses_back_to_the_same_tree() {
     }
     for f in [
         "01_beremiz_first_steps.xml",
+        "02_beremiz_svghmi_traffic_light.xml",
+        "04_beremiz_ethercat_wago_higen_MC.xml",
+        "05_beremiz_ethercat_wago_sanyo_MC.xml",
         "08_openplc_samples_OpenSWat.xml",
         "09_openplc_samples_vc999v3.xml",
         "10_openplc_samples_esp8266celsius.xml",
+        "11_openplc_samples_PT_Motor_PID_Wave_fbd.xml",
+        "14_matiec_LD_TEST_tc6v1.xml",
         "15_matiec_STD_TEST_tc6v1_fbd.xml",
+        "24_feecat_S7RTT_codesys_st_motion.xml",
     ] {
         round_trip(f, &corpus(f));
     }

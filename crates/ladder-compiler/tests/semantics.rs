@@ -56,6 +56,20 @@ fn a_block_runs_before_its_readers_whatever_the_drawing_order() {
 }
 
 #[test]
+fn contacts_naming_a_block_output_read_it_after_the_block() {
+    let (unit, diags) = compile("named_outputs.xml", &fixture("named_outputs.xml"));
+    assert_eq!(diags, "");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    let t1 = ls.iter().position(|l| l.starts_with("CAL T1(")).unwrap();
+    assert!(t1 < pos(&ls, "CAL C1(CU := T1.Q)"), "{il}");
+    // The self-resetting pulse reads P1.Q before calling P1: the previous scan's value.
+    let p1 = ls.iter().position(|l| l.starts_with("CAL P1(")).unwrap();
+    assert!(pos(&ls, "LDN P1.Q") < p1, "{il}");
+    insta::assert_snapshot!(il);
+}
+
+#[test]
 fn chained_blocks_run_in_data_flow_order() {
     let (unit, diags) = compile("chained_blocks.xml", &fixture("chained_blocks.xml"));
     assert_eq!(diags, "");
@@ -112,4 +126,37 @@ fn loops_through_a_variable_or_an_instance_read_the_previous_value() {
     let fbd = fbd.split("END_FUNCTION_BLOCK").next().unwrap();
     let ls = lines(fbd);
     assert!(pos(&ls, "ADD Cnt") < pos(&ls, "ST Cnt"), "{fbd}");
+}
+
+#[test]
+fn human_diagnostics_show_the_xml_excerpt_and_the_element() {
+    let xml = fixture("errors.xml");
+    let mut map = diagnostics::SourceMap::new();
+    let file = map.add("errors.xml", xml.as_str());
+    let mut diags = diagnostics::Diagnostics::new();
+    ladder_compiler::compile_xml(file, &xml, &mut diags);
+    let e3005: Vec<_> = diags
+        .into_sorted()
+        .into_iter()
+        .filter(|d| d.code.0 == "E3005")
+        .collect();
+    insta::assert_snapshot!(diagnostics::render_human(&map, &e3005));
+}
+
+#[test]
+fn networks_run_by_execution_order_then_top_to_bottom() {
+    let (unit, diags) = compile("network_order.xml", &fixture("network_order.xml"));
+    assert!(
+        diags.contains("W3002") && diags.contains("<vendorElement>"),
+        "{diags}"
+    );
+    assert!(!diags.contains("error"), "{diags}");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    let (first, second, third) = (
+        pos(&ls, "ST First"),
+        pos(&ls, "ST Second"),
+        pos(&ls, "ST Third"),
+    );
+    assert!(first < second && second < third, "{il}");
 }
