@@ -92,6 +92,8 @@ pub(crate) struct GActive {
     lim: Limits,
     end_v: f64,
     direct: Option<Box<[Profile; MAX_AXES]>>,
+    /// Velocity-change tail after `prof` (see `engine::plan_to`).
+    tail: Option<Profile>,
 }
 
 /// Runtime of one group.
@@ -612,10 +614,9 @@ impl Engine {
                     a.prof.at(a.t - a.prefix_end)
                 };
                 let new_len = a.geom.len() - dist(&pred_target, &new_pred_target);
-                let mut lim = a.lim;
-                lim.vmax = lim.vmax.max(vj);
-                if let Ok(p) = Profile::position(s_now, new_len, vj, &lim) {
+                if let Ok((p, tail)) = crate::engine::plan_to(s_now, new_len, vj, &a.lim) {
                     a.prof = p;
+                    a.tail = tail;
                     if !in_prefix {
                         a.t = a.prefix_end;
                     }
@@ -675,6 +676,7 @@ impl Engine {
             .active
             .as_ref()
             .map(|a| (Self::path_state(a), a.lim));
+        let mut tail = None;
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
             GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
@@ -702,7 +704,7 @@ impl Engine {
                 };
                 let geo = self.geometry_for(g, &start, &p.target, &p.motion);
                 let (u, _) = geo.tangents(n);
-                let mut lim = self.path_lims(g, &u, &p.inputs)?;
+                let lim = self.path_lims(g, &u, &p.inputs)?;
                 let (v0, a0, pe) = match &p.prefix {
                     Some((b, v)) => (*v, 0.0, if *v > 0.0 { b.len() / v } else { 0.0 }),
                     None if p.start_v.is_some() => (p.start_v.unwrap_or(0.0), 0.0, 0.0),
@@ -713,8 +715,7 @@ impl Engine {
                         (v0, a0, 0.0)
                     }
                 };
-                lim.vmax = lim.vmax.max(p.end_v);
-                let prof = crate::engine::plan_position(
+                let (prof, t) = crate::engine::plan_to(
                     State {
                         p: 0.0,
                         v: v0,
@@ -725,6 +726,7 @@ impl Engine {
                     &lim,
                 )
                 .map_err(|_| ErrorId::PlanningFailed)?;
+                tail = t;
                 (geo, prof, lim, None, pe)
             }
             GKind::Direct => {
@@ -783,6 +785,7 @@ impl Engine {
             lim,
             end_v: p.end_v,
             direct,
+            tail,
         });
         gr.state = if p.kind == GKind::Stop {
             gr.stop_owner = Some(p.id);
@@ -918,7 +921,15 @@ impl Engine {
                         };
                     }
                 }
-                ended = a.t >= a.prefix_end + a.prof.duration();
+                ended = a.t >= a.prefix_end + a.prof.duration() && a.tail.is_none();
+                if let Some(tail) = a.tail {
+                    if a.t >= a.prefix_end + a.prof.duration() {
+                        // Main part done: the velocity-change tail follows (next cycle).
+                        a.prefix_end += a.prof.duration();
+                        a.prof = tail;
+                        a.tail = None;
+                    }
+                }
             }
             self.groups[g].scratch = (pos, d1, d2);
             let kind = a.kind;

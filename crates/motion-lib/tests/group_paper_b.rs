@@ -85,6 +85,8 @@ struct Trace {
     max_jump: f64,
     /// Largest change of the path speed in one cycle.
     max_speed_step: f64,
+    /// Path speeds while block 2 was active.
+    block2: Vec<f64>,
     cycles: u64,
 }
 
@@ -119,6 +121,7 @@ fn run(tm: TransitionMode, d: f64) -> Trace {
     let mut max_jump: f64 = 0.0;
     let mut prev_v = [0.0; 3];
     let mut prev_speed = 0.0;
+    let mut block2 = Vec::new();
     let mut max_speed_step: f64 = 0.0;
     for _ in 0..200_000 {
         eng.step();
@@ -129,6 +132,9 @@ fn run(tm: TransitionMode, d: f64) -> Trace {
         for i in 0..3 {
             max_jump = max_jump.max((v[i] - prev_v[i]).abs());
             prev_v[i] = v[i];
+        }
+        if b[1].active {
+            block2.push(speed);
         }
         for (k, blk) in b.iter_mut().enumerate() {
             blk.call(&mut eng, g);
@@ -158,6 +164,7 @@ fn run(tm: TransitionMode, d: f64) -> Trace {
         max_speed,
         max_jump,
         max_speed_step,
+        block2,
         cycles: eng.cycles(),
     }
 }
