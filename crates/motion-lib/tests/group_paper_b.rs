@@ -185,6 +185,16 @@ fn paper_b_junction_speeds_40_then_70_then_stop() {
         "{}",
         t.max_speed_step
     );
+    // Block 2 cruises at its own velocity 55 and speeds up to 70 only at its end
+    // (55 -> 70 at a = 5, j = 2 takes 5.5 s).
+    let at_55 = t
+        .block2
+        .iter()
+        .filter(|v| (**v - 55.0).abs() < 1e-6)
+        .count();
+    let above = t.block2.iter().filter(|v| **v > 55.0 + 1e-6).count();
+    assert!(at_55 * 2 > t.block2.len(), "{at_55} of {}", t.block2.len());
+    assert!((above as f64) * 0.01 < 6.0, "{above} cycles above 55");
     for (e, w) in t.end.iter().zip([4500.0, 4200.0, 4800.0]) {
         assert!((e - w).abs() < 1e-6, "end {e} vs {w}");
     }
