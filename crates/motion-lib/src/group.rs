@@ -308,15 +308,18 @@ impl Engine {
 
     fn path_lims(&self, g: usize, unit: &Vecn, inp: &PathInputs) -> Result<Limits, ErrorId> {
         let gr = &self.groups[g];
-        let mut us = Vec::with_capacity(MAX_AXES);
-        let mut ls = Vec::with_capacity(MAX_AXES);
+        // Fixed arrays: this runs inside the cycle on an error brake, so no allocation.
+        let mut us = [0.0; MAX_AXES];
+        let mut ls = [Limits::default(); MAX_AXES];
+        let mut k = 0;
         for (i, a) in gr.axes.iter().enumerate() {
             if let Some(a) = a {
-                us.push(unit[i]);
-                ls.push(self.axes[*a as usize].cfg.limits);
+                us[k] = unit[i];
+                ls[k] = self.axes[*a as usize].cfg.limits;
+                k += 1;
             }
         }
-        let mut l = path_limits(&us, &ls).map_err(|_| ErrorId::PlanningFailed)?;
+        let mut l = path_limits(&us[..k], &ls[..k]).map_err(|_| ErrorId::PlanningFailed)?;
         let pos = |x: f64| x.is_finite() && x > 0.0;
         if !pos(inp.velocity) {
             return Err(ErrorId::InvalidVelocity);
