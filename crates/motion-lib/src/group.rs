@@ -55,6 +55,7 @@ pub struct PathInputs {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum GKind {
+    Home,
     Path,
     Direct,
     Halt,
@@ -681,7 +682,7 @@ impl Engine {
             .map(|a| (Self::path_state(a), a.lim));
         let mut tail = None;
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
-            GKind::Halt | GKind::Stop | GKind::Brake => {
+            GKind::Home | GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
                     (Geometry::line(&now, &now), State::default()),
                     Limits::default(),
@@ -859,6 +860,91 @@ impl Engine {
         }
     }
 
+    /// MC_GroupHome: homes every axis of the group (simulated drives: on the spot, the
+    /// set positions become `position` by identity); GroupStandby -> GroupHoming ->
+    /// GroupStandby when every drive reports its homing done.
+    pub fn group_home(&mut self, g: usize, position: Vecn) -> Result<CmdId, ErrorId> {
+        let gr = self.grp(g)?;
+        let st = check_group(gr.state, GroupCmd::Home)?;
+        let n = gr.n();
+        if position[..n].iter().any(|x| !x.is_finite()) {
+            return Err(ErrorId::InvalidPosition);
+        }
+        let now = self.raw_now(g);
+        let id = self.cmds.alloc(CmdStatus::Active);
+        let members = self.groups[g].axes;
+        for a in members.iter().flatten() {
+            let a = *a as usize;
+            let ax = &mut self.axes[a];
+            ax.active = Active {
+                kind: Kind::Group,
+                ..Active::idle(ax.set)
+            };
+            ax.state = AxisState::Homing;
+            if let Some(d) = self.drives[a].as_mut() {
+                d.start_homing();
+            }
+        }
+        let gr = &mut self.groups[g];
+        gr.active = Some(GActive {
+            kind: GKind::Home,
+            id: Some(id),
+            geom: Geometry::line(&now, &now),
+            prof: standing(0.0),
+            t: 0.0,
+            prefix: None,
+            prefix_end: 0.0,
+            target: position,
+            speed: 0.0,
+            lim: Limits::default(),
+            end_v: 0.0,
+            direct: None,
+            tail: None,
+        });
+        gr.state = st;
+        Ok(id)
+    }
+
+    /// One cycle of a group homing: poll the drives.
+    fn step_group_home(&mut self, g: usize, a: GActive) {
+        let members = self.groups[g].axes;
+        let mut all = true;
+        let mut failed = None;
+        for ax in members.iter().flatten() {
+            let ax = *ax as usize;
+            let st = match self.drives[ax].as_mut() {
+                Some(d) => d.homing_status(),
+                None => crate::axis::HomingStatus::Done,
+            };
+            match st {
+                crate::axis::HomingStatus::Busy => all = false,
+                crate::axis::HomingStatus::Failed => failed = Some(ax),
+                crate::axis::HomingStatus::Done => {}
+            }
+        }
+        let id = a.id;
+        let target = a.target;
+        self.groups[g].active = Some(a);
+        if let Some(ax) = failed {
+            let _ = self.raise_axis_error(ax, ErrorId::HomingFailed);
+            return;
+        }
+        if !all {
+            return;
+        }
+        for (i, ax) in members.iter().enumerate() {
+            if let Some(ax) = ax {
+                let ax = &mut self.axes[*ax as usize];
+                ax.origin = target[i] - ax.set.p;
+            }
+        }
+        if let Some(id) = id {
+            self.cmds.set(id, CmdStatus::Done);
+        }
+        self.finish_group(g);
+        self.groups[g].state = GroupState::GroupStandby;
+    }
+
     /// MC_GroupStop's Execute fell after Done: GroupStopping -> GroupStandby.
     pub fn release_group_stop(&mut self, g: usize, id: CmdId) {
         if let Some(gr) = self.groups.get_mut(g) {
@@ -880,7 +966,7 @@ impl Engine {
             ax.set.v = 0.0;
             ax.set.a = 0.0;
             ax.active = Active::idle(ax.set);
-            if ax.state == AxisState::SynchronizedMotion {
+            if matches!(ax.state, AxisState::SynchronizedMotion | AxisState::Homing) {
                 ax.state = AxisState::Standstill;
             }
         }
@@ -892,6 +978,10 @@ impl Engine {
             let Some(mut a) = self.groups[g].active.take() else {
                 continue;
             };
+            if a.kind == GKind::Home {
+                self.step_group_home(g, a);
+                continue;
+            }
             let n = self.groups[g].n();
             a.t += dt;
             let (mut pos, mut d1, mut d2) = self.groups[g].scratch;

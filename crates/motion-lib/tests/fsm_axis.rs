@@ -393,6 +393,16 @@ fn state_tables_reject_each_illegal_command() {
     );
     assert_eq!(check_group(GroupMoving, GroupCmd::Stop), Ok(GroupStopping));
     assert_eq!(check_group(GroupStandby, GroupCmd::Motion), Ok(GroupMoving));
+    assert_eq!(check_group(GroupStandby, GroupCmd::Home), Ok(GroupHoming));
+    assert_eq!(check_group(GroupHoming, GroupCmd::Stop), Ok(GroupStopping));
+    assert_eq!(
+        check_group(GroupHoming, GroupCmd::Motion),
+        Err(ErrorId::GroupHoming)
+    );
+    assert_eq!(
+        check_group(GroupDisabled, GroupCmd::Home),
+        Err(ErrorId::GroupDisabled)
+    );
 }
 
 #[test]

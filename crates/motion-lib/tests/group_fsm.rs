@@ -135,6 +135,31 @@ fn group_transitions_and_rejections() {
     };
     single.call(&mut e, ax[0]);
     assert_eq!(single.error_id, ErrorId::AxisInGroup);
+    // Standby -> Homing -> Standby; motion rejected while homing.
+    let mut home = McGroupHome {
+        execute: true,
+        position: vecn(&[1.0, 2.0]),
+        ..Default::default()
+    };
+    home.call(&mut e, g);
+    assert!(home.busy && home.active, "{:?}", home.error_id);
+    assert_eq!(st(&e), GroupState::GroupHoming);
+    assert_eq!(e.axis_state(ax[0]).unwrap(), AxisState::Homing);
+    let mut m = lin(&[10.0, 10.0], BufferMode::Aborting);
+    m.call(&mut e, g);
+    assert_eq!(m.error_id, ErrorId::GroupHoming);
+    let mut home2 = McGroupHome {
+        execute: true,
+        ..Default::default()
+    };
+    home2.call(&mut e, g);
+    assert_eq!(home2.error_id, ErrorId::GroupHoming);
+    e.step();
+    home.call(&mut e, g);
+    assert!(home.done);
+    assert_eq!(st(&e), GroupState::GroupStandby);
+    assert_eq!(e.axis_state(ax[1]).unwrap(), AxisState::Standstill);
+    assert_eq!(e.group_position(g).unwrap()[..2], [1.0, 2.0]);
     // Standby -> Moving (axes SynchronizedMotion) -> Standby.
     let mut m = lin(&[10.0, 20.0], BufferMode::Aborting);
     m.call(&mut e, g);
@@ -147,6 +172,12 @@ fn group_transitions_and_rejections() {
     };
     dis.call(&mut e, g);
     assert_eq!(dis.error_id, ErrorId::GroupMoving);
+    let mut home3 = McGroupHome {
+        execute: true,
+        ..Default::default()
+    };
+    home3.call(&mut e, g);
+    assert_eq!(home3.error_id, ErrorId::GroupMoving);
     step_until(&mut e, 5000, |e| {
         m.call(e, g);
         m.done
