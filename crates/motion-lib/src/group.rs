@@ -77,6 +77,8 @@ pub(crate) struct GPending {
     prefix: Option<(Geometry, f64)>,
     /// Path speed at the start when the predecessor ended at a blending junction.
     start_v: Option<f64>,
+    /// The corner this move starts from as commanded (before any corner blend).
+    start_corner: Vecn,
 }
 
 #[derive(Clone, Debug)]
@@ -470,6 +472,7 @@ impl Engine {
             end_v: 0.0,
             prefix: None,
             start_v: None,
+            start_corner: from,
         };
         if buffer == BufferMode::Aborting || idle {
             self.group_abort_all(g, CmdStatus::Aborted);
@@ -521,38 +524,27 @@ impl Engine {
         let n = self.groups[g].n();
         let gr = &self.groups[g];
         // Predecessor: the queue's back, else the active move.
-        let (pred_from, pred_target, pred_speed, pred_kind, pred_is_active) = match gr.queue.back()
+        // Predecessor: the queue's back (its geometry from its original start corner: its
+        // own predecessor may since have been shortened by a corner blend), else the
+        // active move.
+        let (pred_target, pred_speed, pred_kind, pred_is_active, pred_geom) = match gr.queue.back()
         {
-            Some(b) => {
-                let from = if gr.queue.len() >= 2 {
-                    gr.queue
-                        .iter()
-                        .nth(gr.queue.len() - 2)
-                        .map(|p| p.target)
-                        .unwrap_or(b.target)
-                } else {
-                    gr.active.as_ref().map_or(b.target, |a| a.target)
-                };
-                (from, b.target, b.speed, b.kind, false)
-            }
+            Some(b) => (
+                b.target,
+                b.speed,
+                b.kind,
+                false,
+                self.geometry_for(g, &b.start_corner, &b.target, &b.motion),
+            ),
             None => match &gr.active {
-                Some(a) => {
-                    let mut st = ZERO;
-                    if let Geometry::Line { start, .. } = a.geom {
-                        st = start;
-                    }
-                    (st, a.target, a.speed, a.kind, true)
-                }
+                Some(a) => (a.target, a.speed, a.kind, true, a.geom),
                 None => return,
             },
         };
         if pred_kind != GKind::Path {
             return;
         }
-        let pred_geom = match (&gr.active, pred_is_active) {
-            (Some(a), true) => a.geom,
-            _ => Geometry::line(&pred_from, &pred_target),
-        };
+        let gr = &self.groups[g];
         let next_geom = self.geometry_for(g, &pred_target, &next.target, &next.motion);
         let (_, u1) = pred_geom.tangents(n);
         let (u2, _) = next_geom.tangents(n);
@@ -848,6 +840,7 @@ impl Engine {
                 end_v: 0.0,
                 prefix: None,
                 start_v: None,
+                start_corner: ZERO,
             };
             if self.group_activate(g, p, 0.0).is_err() {
                 self.finish_group(g);
