@@ -352,6 +352,37 @@ impl Engine {
         Ok(l)
     }
 
+    /// Arc path limits: the tangent turns, so every axis's limits bound the path, and
+    /// the axes' acceleration is shared between the path (tangential) and the turn
+    /// (normal, v^2 * curvature): each gets half.
+    fn arc_limits(&self, g: usize, geo: &Geometry, lim: &mut Limits) {
+        let n = self.groups[g].n();
+        let mut vmax = f64::INFINITY;
+        let mut amin = f64::INFINITY;
+        let mut jmin = f64::INFINITY;
+        for a in self.groups[g].axes.iter().flatten() {
+            let l = self.axes[*a as usize].cfg.limits;
+            vmax = vmax.min(l.vmax);
+            amin = amin.min(l.amax).min(l.dmax);
+            if l.jmax > 0.0 {
+                jmin = jmin.min(l.jmax);
+            }
+        }
+        let half = amin.min(lim.amax).min(lim.dmax) / 2.0;
+        let k = geo.max_curvature(n);
+        let v_turn = if k > 0.0 {
+            (half / k).sqrt()
+        } else {
+            f64::INFINITY
+        };
+        lim.vmax = lim.vmax.min(vmax).min(v_turn);
+        lim.amax = lim.amax.min(half);
+        lim.dmax = lim.dmax.min(half);
+        if jmin.is_finite() && lim.jmax > 0.0 {
+            lim.jmax = lim.jmax.min(jmin / 2.0);
+        }
+    }
+
     /// Gives a motion command to a group. Returns its handle or the ErrorID.
     pub fn submit_group(
         &mut self,
@@ -700,7 +731,10 @@ impl Engine {
                 };
                 let geo = self.geometry_for(g, &start, &p.target, &p.motion);
                 let (u, _) = geo.tangents(n);
-                let lim = self.path_lims(g, &u, &p.inputs)?;
+                let mut lim = self.path_lims(g, &u, &p.inputs)?;
+                if let Geometry::Arc { .. } = geo {
+                    self.arc_limits(g, &geo, &mut lim);
+                }
                 let (v0, a0, pe) = match &p.prefix {
                     Some((b, v)) => (*v, 0.0, if *v > 0.0 { b.len() / v } else { 0.0 }),
                     None if p.start_v.is_some() => (p.start_v.unwrap_or(0.0), 0.0, 0.0),

@@ -376,6 +376,32 @@ fn circular_move_stays_on_the_circle() {
         b.done
     });
     assert!((min_x + 10.0).abs() < 1e-3, "{min_x}");
+    // A tight circle asked for too much speed: the turn limits it so no axis exceeds
+    // its acceleration limit (2000).
+    let mut tight = McMoveCircularRelative {
+        execute: true,
+        circ_mode_center: true,
+        aux_point: vecn(&[0.0, 1.0]),
+        end_point: vecn(&[0.0, 2.0]),
+        path_choice_ccw: true,
+        velocity: 190.0,
+        acceleration: 2000.0,
+        deceleration: 2000.0,
+        ..Default::default()
+    };
+    tight.call(&mut e, g);
+    assert!(tight.busy, "{:?}", tight.error_id);
+    let mut max_a: f64 = 0.0;
+    let mut max_v: f64 = 0.0;
+    step_until(&mut e, 10000, |e| {
+        max_a = max_a.max(e.set_acceleration_of(_ax[0]).unwrap().abs());
+        max_a = max_a.max(e.set_acceleration_of(_ax[1]).unwrap().abs());
+        max_v = max_v.max(e.group_velocity(g).unwrap().1);
+        tight.call(e, g);
+        tight.done
+    });
+    assert!(max_a <= 2000.0 * (1.0 + 1e-9), "{max_a}");
+    assert!(max_v < 190.0 * 0.5, "speed limited by the turn: {max_v}");
     // An end point off the circle is rejected.
     let mut bad = McMoveCircularAbsolute {
         execute: true,
