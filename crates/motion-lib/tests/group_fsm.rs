@@ -485,3 +485,33 @@ fn power_off_of_a_member_stops_the_group_in_error() {
     assert_eq!(e.axis_state(ax[0]).unwrap(), AxisState::Disabled);
     assert_eq!(e.axis_state(ax[1]).unwrap(), AxisState::Standstill);
 }
+
+#[test]
+fn full_group_queue_rejects_and_runs_the_rest() {
+    let (mut e, _ax, g) = enabled_group(2);
+    // Depth 4: one active + 4 buffered; the sixth is refused.
+    let mut blocks: Vec<McMoveLinearAbsolute> = (0..6)
+        .map(|i| {
+            let bm = if i == 0 {
+                BufferMode::Aborting
+            } else {
+                BufferMode::Buffered
+            };
+            lin(&[i as f64 + 1.0, 0.0], bm)
+        })
+        .collect();
+    for b in blocks.iter_mut() {
+        b.call(&mut e, g);
+    }
+    assert!(blocks[..5].iter().all(|b| b.busy));
+    assert!(blocks[5].error && blocks[5].error_id == ErrorId::QueueFull);
+    assert_eq!(e.group_queued(g).unwrap(), 4);
+    step_until(&mut e, 20000, |e| {
+        for b in blocks.iter_mut() {
+            b.call(e, g);
+        }
+        blocks[4].done
+    });
+    assert!(blocks[..5].iter().all(|b| b.done));
+    assert_eq!(e.group_position(g).unwrap()[0], 5.0);
+}
