@@ -26,10 +26,12 @@ struct Problem {
 
 fn oracle() -> String {
     let dir = env!("CARGO_MANIFEST_DIR");
-    ["/../../../shared", "/../../../../shared"]
-        .iter()
-        .find_map(|up| {
-            std::fs::read_to_string(format!("{dir}{up}/oracle/ruckig-profiles.jsonl")).ok()
+    // LADDERC_SHARED overrides the location of the shared directory.
+    let over = std::env::var("LADDERC_SHARED").ok();
+    over.into_iter()
+        .chain(["/../../../shared", "/../../../../shared"].map(|up| format!("{dir}{up}")))
+        .find_map(|shared| {
+            std::fs::read_to_string(format!("{shared}/oracle/ruckig-profiles.jsonl")).ok()
         })
         .expect("oracle file /work/shared/oracle/ruckig-profiles.jsonl readable")
 }

@@ -266,3 +266,89 @@ fn with_duration_rejects_durations_below_the_minimum() {
     assert!((prof.duration() - 2.0 * t_min).abs() < 1e-9);
     assert!((prof.end().p - 100.0).abs() < 1e-9);
 }
+
+#[test]
+fn extreme_and_invalid_inputs_give_errors_not_panics() {
+    let mut rng = Rng(7);
+    let scale = |rng: &mut Rng| 10f64.powf(rng.range(-8.0, 8.0));
+    for _ in 0..20_000 {
+        let lim = Limits {
+            vmax: scale(&mut rng),
+            amax: scale(&mut rng),
+            dmax: scale(&mut rng),
+            jmax: scale(&mut rng),
+        };
+        let start = State {
+            p: rng.range(-1.0, 1.0) * scale(&mut rng),
+            v: rng.range(-1.0, 1.0) * lim.vmax,
+            a: rng.range(-1.0, 1.0) * lim.amax.min(lim.dmax),
+        };
+        let target = rng.range(-1.0, 1.0) * scale(&mut rng);
+        let tv = rng.range(-1.0, 1.0) * lim.vmax;
+        if let Ok(p) = Profile::position(start, target, tv, &lim) {
+            assert!(p.duration().is_finite() && p.duration() >= 0.0);
+            let _ = p.at(0.5 * p.duration());
+        }
+        if let Ok(p) = Profile::velocity(start, tv, &lim) {
+            assert!(p.duration().is_finite());
+        }
+        let _ = Profile::with_duration(start, target, tv, &lim, rng.range(0.0, 100.0));
+    }
+    let good = Limits {
+        vmax: 1.0,
+        amax: 1.0,
+        dmax: 1.0,
+        jmax: 1.0,
+    };
+    for bad in [
+        Limits { vmax: 0.0, ..good },
+        Limits { amax: -1.0, ..good },
+        Limits {
+            dmax: f64::NAN,
+            ..good
+        },
+        Limits { jmax: -1.0, ..good },
+        Limits {
+            vmax: f64::INFINITY,
+            ..good
+        },
+    ] {
+        assert_eq!(
+            Profile::position(State::default(), 1.0, 0.0, &bad),
+            Err(PlanError::InvalidLimits)
+        );
+    }
+    let nan = State {
+        p: f64::NAN,
+        v: 0.0,
+        a: 0.0,
+    };
+    assert_eq!(
+        Profile::position(nan, 1.0, 0.0, &good),
+        Err(PlanError::InvalidState)
+    );
+    assert!(matches!(
+        Profile::position(State::default(), 1.0, 2.0, &good),
+        Err(PlanError::InvalidTarget { .. })
+    ));
+    assert!(matches!(
+        Profile::velocity(State::default(), f64::NAN, &good),
+        Err(PlanError::InvalidTarget { .. })
+    ));
+}
+
+#[test]
+fn rest_to_rest_profiles_of_every_length() {
+    let mut rng = Rng(8);
+    for i in 0..20_000 {
+        let mut pb = random_problem(&mut rng, false, i % 10 == 0);
+        pb.start.v = 0.0;
+        pb.start.a = 0.0;
+        pb.target_v = 0.0;
+        let dist = 10f64.powf(rng.range(-6.0, 4.0));
+        pb.target_p = pb.start.p + if i % 2 == 0 { dist } else { -dist };
+        let prof = Profile::position(pb.start, pb.target_p, 0.0, &pb.lim).unwrap();
+        let dir = if pb.target_p >= pb.start.p { 1.0 } else { -1.0 };
+        check_profile(&pb, &prof, dir, Some(pb.target_p));
+    }
+}

@@ -119,3 +119,95 @@ fn with_duration_agrees_with_rsruckig_minimum_duration() {
     eprintln!("with_duration vs rsruckig: {equal} equal, {blocked} blocked");
     assert!(equal > 3_000);
 }
+
+/// Velocity profiles against rsruckig's velocity interface (same acceleration bounds:
+/// `amax` in the direction of the target velocity, `dmax` against it).
+#[test]
+fn velocity_durations_equal_rsruckig() {
+    let mut otg = Ruckig::<1, IgnoreErrorHandler>::new(None, 0.001);
+    let mut rng = Rng(15);
+    let mut both = 0;
+    for i in 0..10_000 {
+        let pb = random_problem(&mut rng, i % 2 == 0, i % 7 == 0);
+        let lim = &pb.lim;
+        let dir = if pb.target_v != 0.0 {
+            pb.target_v.signum()
+        } else if pb.start.v != 0.0 {
+            pb.start.v.signum()
+        } else {
+            1.0
+        };
+        let (amax, amin) = if dir > 0.0 {
+            (lim.amax, -lim.dmax)
+        } else {
+            (lim.dmax, -lim.amax)
+        };
+        let mut input = InputParameter::new(None);
+        input.control_interface = ControlInterface::Velocity;
+        input.current_position[0] = pb.start.p;
+        input.current_velocity[0] = pb.start.v;
+        input.current_acceleration[0] = pb.start.a;
+        input.target_velocity[0] = pb.target_v;
+        input.max_velocity[0] = lim.vmax.max(pb.start.v.abs());
+        input.max_acceleration[0] = amax;
+        input.min_acceleration = Some(daov_stack![amin]);
+        input.max_jerk[0] = if lim.is_trapezoidal() {
+            f64::INFINITY
+        } else {
+            lim.jmax
+        };
+        let mut traj = Trajectory::new(None);
+        let Ok(RuckigResult::Working | RuckigResult::Finished) = otg.calculate(&input, &mut traj)
+        else {
+            continue;
+        };
+        let want = traj.get_duration();
+        let got = Profile::velocity(pb.start, pb.target_v, lim)
+            .unwrap_or_else(|e| panic!("{pb:?}: {e}"))
+            .duration();
+        assert!(
+            (got - want).abs() <= 1e-6 * want.max(1e-3),
+            "{pb:?}: duration {got}, rsruckig {want}"
+        );
+        both += 1;
+    }
+    eprintln!("velocity: {both} durations equal to rsruckig's");
+    assert!(both > 9_000);
+}
+
+/// Rest-to-rest moves of every length (short triangular, trapezoidal, mixed, cruising),
+/// asymmetric acceleration limits.
+#[test]
+fn rest_to_rest_durations_equal_rsruckig() {
+    use motion_lib::profile::{Limits, State};
+    let mut otg = Ruckig::<1, IgnoreErrorHandler>::new(None, 0.001);
+    let mut rng = Rng(16);
+    for _ in 0..10_000 {
+        let lim = Limits {
+            vmax: rng.range(0.5, 100.0),
+            amax: rng.range(0.2, 20.0),
+            dmax: rng.range(0.2, 20.0),
+            jmax: rng.range(0.1, 100.0),
+        };
+        let start = State {
+            p: rng.range(-100.0, 100.0),
+            v: 0.0,
+            a: 0.0,
+        };
+        let dist = 10f64.powf(rng.range(-6.0, 4.0)) * if rng.chance(0.5) { 1.0 } else { -1.0 };
+        let pb = Problem {
+            start,
+            target_p: start.p + dist,
+            target_v: 0.0,
+            lim,
+        };
+        let want = ruckig_duration(&mut otg, &pb).expect("rsruckig plans rest to rest");
+        let got = Profile::position(pb.start, pb.target_p, 0.0, &lim)
+            .unwrap()
+            .duration();
+        assert!(
+            (got - want).abs() <= 1e-9 * want.max(1e-3),
+            "{pb:?}: duration {got}, rsruckig {want}"
+        );
+    }
+}

@@ -10,11 +10,44 @@
 
 use super::{Limits, PlanError, Profile, State};
 
+/// Axes whose geometry is stored inline (no allocation).
+const INLINE_AXES: usize = 6;
+
+/// Start positions then unit direction: inline for up to [`INLINE_AXES`] axes.
+#[derive(Clone, Debug, PartialEq)]
+enum Geometry {
+    Inline(usize, [f64; 2 * INLINE_AXES]),
+    Heap(Vec<f64>),
+}
+
+impl Geometry {
+    fn zeroed(n: usize) -> Geometry {
+        if n <= INLINE_AXES {
+            Geometry::Inline(2 * n, [0.0; 2 * INLINE_AXES])
+        } else {
+            Geometry::Heap(vec![0.0; 2 * n])
+        }
+    }
+
+    fn as_slice(&self) -> &[f64] {
+        match self {
+            Geometry::Inline(len, data) => &data[..*len],
+            Geometry::Heap(v) => v,
+        }
+    }
+
+    fn as_mut_slice(&mut self) -> &mut [f64] {
+        match self {
+            Geometry::Inline(len, data) => &mut data[..*len],
+            Geometry::Heap(v) => v,
+        }
+    }
+}
+
 /// A planned straight line: path profile plus geometry.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Line {
-    /// Start positions then unit direction (one allocation).
-    geometry: Vec<f64>,
+    geometry: Geometry,
     length: f64,
     limits: Limits,
     profile: Profile,
@@ -39,11 +72,12 @@ pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
         ax.validate()?;
         let u = u.abs();
         if u > 0.0 {
-            l.vmax = l.vmax.min(ax.vmax / u);
-            l.amax = l.amax.min(ax.amax / u);
-            l.dmax = l.dmax.min(ax.dmax / u);
+            let inv = 1.0 / u;
+            l.vmax = l.vmax.min(ax.vmax * inv);
+            l.amax = l.amax.min(ax.amax * inv);
+            l.dmax = l.dmax.min(ax.dmax * inv);
             if !ax.is_trapezoidal() {
-                l.jmax = l.jmax.min(ax.jmax / u);
+                l.jmax = l.jmax.min(ax.jmax * inv);
             }
         }
     }
@@ -73,15 +107,18 @@ impl Line {
             return Err(PlanError::Line("non-finite coordinate".into()));
         }
         let n = start.len();
-        let mut geometry = Vec::with_capacity(2 * n);
-        geometry.extend_from_slice(start);
-        geometry.extend(start.iter().zip(end).map(|(a, b)| b - a));
-        let length = geometry[n..].iter().map(|d| d * d).sum::<f64>().sqrt();
+        let mut geometry = Geometry::zeroed(n);
+        let g = geometry.as_mut_slice();
+        g[..n].copy_from_slice(start);
+        for ((d, a), b) in g[n..].iter_mut().zip(start).zip(end) {
+            *d = b - a;
+        }
+        let length = g[n..].iter().map(|d| d * d).sum::<f64>().sqrt();
         let inv = if length > 0.0 { 1.0 / length } else { 0.0 };
-        for d in &mut geometry[n..] {
+        for d in &mut g[n..] {
             *d *= inv;
         }
-        let limits = path_limits(&geometry[n..], axes)?;
+        let limits = path_limits(&g[n..], axes)?;
         let profile = Profile::position(State::default(), length, 0.0, &limits)?;
         Ok(Line {
             geometry,
@@ -113,12 +150,14 @@ impl Line {
 
     /// Unit direction of the line.
     pub fn unit(&self) -> &[f64] {
-        &self.geometry[self.geometry.len() / 2..]
+        let g = self.geometry.as_slice();
+        &g[g.len() / 2..]
     }
 
     /// Start positions of the axes.
     pub fn start(&self) -> &[f64] {
-        &self.geometry[..self.geometry.len() / 2]
+        let g = self.geometry.as_slice();
+        &g[..g.len() / 2]
     }
 
     /// Path state at `t`, and the axis positions written to `positions`

@@ -15,7 +15,9 @@
 //! - the end state is the target (to 1e-8 relative), with acceleration 0.
 //!
 //! The planners follow ruckig (Berscheid & Kröger, "Jerk-limited real-time trajectory
-//! generation with arbitrary target states", RSS 2021): see `README_profile.md`.
+//! generation with arbitrary target states", RSS 2021): closed-form fast paths
+//! (`velocity`: cruise at vmax, short rest-to-rest moves) and otherwise the enumeration
+//! of every profile family (`kernel`, adapted from rsruckig). See `README_profile.md`.
 
 mod jsonl;
 mod kernel;
@@ -153,15 +155,11 @@ impl Profile {
         }
     }
 
-    /// The profile of the fast path's phases (cruise fourth, snapped to exactly vmax).
+    /// The profile of a fast path's phases (the fourth item is the cruise, at the start
+    /// of which the state is snapped to velocity `v_peak`, acceleration 0).
     #[inline(always)]
-    fn cruising(start: State, target_p: f64, items: &[(f64, f64); 7], lim: &Limits) -> Profile {
-        let v = if target_p >= start.p {
-            lim.vmax
-        } else {
-            -lim.vmax
-        };
-        Profile::build(start, items, false, Some((3, v)))
+    fn fast(start: State, items: &[(f64, f64); 7], v_peak: f64) -> Profile {
+        Profile::build(start, items, false, Some((3, v_peak)))
     }
 
     /// The profile of `items` = (duration, jerk) from `start` (or (duration,
@@ -223,8 +221,8 @@ impl Profile {
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
         check_inputs(&start, target_p, target_v, lim)?;
-        if let Some(items) = velocity::position_cruising(start, target_p, target_v, lim) {
-            return Ok(Profile::cruising(start, target_p, &items, lim));
+        if let Some((items, v_peak)) = velocity::fast_path(start, target_p, target_v, lim) {
+            return Ok(Profile::fast(start, &items, v_peak));
         }
         let mut block = kernel::Block::default();
         match Solved::new(start, target_p, target_v, lim, &mut block) {
@@ -266,8 +264,8 @@ impl Profile {
                 target_v,
             },
         )?;
-        let fastest = match velocity::position_cruising(start, target_p, target_v, lim) {
-            Some(items) => Profile::cruising(start, target_p, &items, lim),
+        let fastest = match velocity::fast_path(start, target_p, target_v, lim) {
+            Some((items, v_peak)) => Profile::fast(start, &items, v_peak),
             None => sol.build(&block.p_min),
         };
         let minimal = fastest.duration();

@@ -23,6 +23,22 @@ pub(crate) struct Change {
 /// (`j` infinite: trapezoidal, `a0` ignored). Closed form, scalars only.
 #[inline(always)]
 pub(crate) fn change(v0: f64, a0: f64, vt: f64, a_hi: f64, a_lo: f64, j: f64) -> Change {
+    change_with(v0, a0, vt, a_hi, a_lo, j, [1.0 / j, 1.0 / a_hi, 1.0 / a_lo])
+}
+
+/// [`change`] with `inv` = [1 / `j`, 1 / `a_hi`, 1 / `a_lo`] precomputed (off the
+/// critical path of the square root).
+#[inline(always)]
+pub(crate) fn change_with(
+    v0: f64,
+    a0: f64,
+    vt: f64,
+    a_hi: f64,
+    a_lo: f64,
+    j: f64,
+    inv: [f64; 3],
+) -> Change {
+    let inv_j = inv[0];
     if j.is_infinite() {
         let (t, acc) = if vt > v0 {
             ((vt - v0) / a_hi, a_hi)
@@ -37,24 +53,23 @@ pub(crate) fn change(v0: f64, a0: f64, vt: f64, a_hi: f64, a_lo: f64, j: f64) ->
             dist: 0.5 * (v0 + vt) * t,
         };
     }
-    let inv_j = 1.0 / j;
     let v_zero = v0 + 0.5 * a0 * a0.abs() * inv_j;
-    let (s, v0m, a0m, vtm, hi) = if vt >= v_zero {
-        (1.0, v0, a0, vt, a_hi)
+    let (s, v0m, a0m, vtm, hi, inv_hi) = if vt >= v_zero {
+        (1.0, v0, a0, vt, a_hi, inv[1])
     } else {
-        (-1.0, -v0, -a0, -vt, a_lo)
+        (-1.0, -v0, -a0, -vt, a_lo, inv[2])
     };
     // Upward change in the mirrored frame: jerk j1 to the peak acceleration `ap`, hold
     // it for t2, jerk -j back to 0.
     let (t1, j1, t2, ap) = if a0m > hi {
         let vz = v0m + 0.5 * a0m * a0m * inv_j;
-        ((a0m - hi) * inv_j, -j, ((vtm - vz) / hi).max(0.0), hi)
+        ((a0m - hi) * inv_j, -j, ((vtm - vz) * inv_hi).max(0.0), hi)
     } else {
         let ap = (j * (vtm - v0m) + 0.5 * a0m * a0m).max(0.0).sqrt();
         if ap <= hi {
             ((ap - a0m).max(0.0) * inv_j, j, 0.0, ap)
         } else {
-            let t2 = ((vtm - v0m - (hi * hi - 0.5 * a0m * a0m) * inv_j) / hi).max(0.0);
+            let t2 = ((vtm - v0m - (hi * hi - 0.5 * a0m * a0m) * inv_j) * inv_hi).max(0.0);
             ((hi - a0m) * inv_j, j, t2, hi)
         }
     };
@@ -100,6 +115,76 @@ pub(crate) fn velocity_change(cur: State, vt: f64, lim: &Limits) -> Profile {
     Profile::build(cur, &items, j.is_infinite(), None)
 }
 
+/// Fast paths of [`Profile::position`]: phases (duration, jerk), the fourth being a
+/// cruise (possibly empty), and the signed peak velocity at its start. None when the
+/// problem needs the kernel's enumeration of every profile family.
+#[inline(always)]
+pub(crate) fn fast_path(
+    start: State,
+    target_p: f64,
+    target_v: f64,
+    lim: &Limits,
+) -> Option<([(f64, f64); 7], f64)> {
+    if lim.is_trapezoidal() {
+        return None;
+    }
+    if let Some(items) = position_cruising(start, target_p, target_v, lim) {
+        let s = if target_p >= start.p { 1.0 } else { -1.0 };
+        return Some((items, s * lim.vmax));
+    }
+    if start.v == 0.0 && start.a == 0.0 && target_v == 0.0 {
+        return position_rest_to_rest(start, target_p, lim);
+    }
+    None
+}
+
+/// Rest-to-rest move too short to cruise at vmax: accelerate to a peak velocity `vp`
+/// and decelerate, each half a time-optimal velocity change (triangular when
+/// `vp <= limit^2 / j`, else trapezoidal). The distance D(vp) = vp/2 (T_up + T_down) is
+/// increasing in `vp`; both halves triangular or both trapezoidal give closed forms.
+/// The mixed case (quartic) is left to the kernel.
+#[inline(always)]
+fn position_rest_to_rest(
+    start: State,
+    target_p: f64,
+    lim: &Limits,
+) -> Option<([(f64, f64); 7], f64)> {
+    let s = if target_p >= start.p { 1.0 } else { -1.0 };
+    let dist = s * (target_p - start.p);
+    let j = lim.jmax;
+    let (va, vd) = (lim.amax * lim.amax / j, lim.dmax * lim.dmax / j);
+    // Both triangular: D = 2 vp^(3/2) / sqrt(j).
+    let tri = (0.5 * dist * j.sqrt()).powf(2.0 / 3.0);
+    let vp = if tri <= va.min(vd) {
+        tri
+    } else {
+        // Both trapezoidal: (1/amax + 1/dmax)/2 vp^2 + (amax + dmax)/(2j) vp - dist = 0.
+        let qa = 0.5 * (1.0 / lim.amax + 1.0 / lim.dmax);
+        let qb = 0.5 * (lim.amax + lim.dmax) / j;
+        let vp = 2.0 * dist / (qb + (qb * qb + 4.0 * qa * dist).sqrt());
+        if vp >= va.max(vd) {
+            vp
+        } else {
+            return None;
+        }
+    };
+    if !(vp > 0.0 && vp <= lim.vmax && vp.is_finite()) {
+        return None;
+    }
+    let c1 = change(0.0, 0.0, vp, lim.amax, lim.dmax, j);
+    let c2 = change(vp, 0.0, 0.0, lim.amax, lim.dmax, j);
+    let items = [
+        (c1.t[0], s * c1.x[0]),
+        (c1.t[1], s * c1.x[1]),
+        (c1.t[2], s * c1.x[2]),
+        (0.0, 0.0),
+        (c2.t[0], s * c2.x[0]),
+        (c2.t[1], s * c2.x[1]),
+        (c2.t[2], s * c2.x[2]),
+    ];
+    Some((items, s * vp))
+}
+
 /// Fast path of [`Profile::position`]: when the start is inside the limits and the
 /// distance leaves room for a cruise at vmax, the time-optimal profile is the
 /// time-optimal change to vmax, the cruise, and the time-optimal change to the target
@@ -113,12 +198,10 @@ pub(crate) fn position_cruising(
     target_v: f64,
     lim: &Limits,
 ) -> Option<[(f64, f64); 7]> {
-    if lim.is_trapezoidal() {
-        return None;
-    }
     let s = if target_p >= start.p { 1.0 } else { -1.0 };
     let (v0, a0, vf, j) = (s * start.v, s * start.a, s * target_v, lim.jmax);
-    let v_zero = v0 + a0 * a0.abs() / (2.0 * j);
+    let inv_j = 1.0 / j;
+    let v_zero = v0 + 0.5 * a0 * a0.abs() * inv_j;
     if v0.abs() > lim.vmax
         || a0 > lim.amax
         || a0 < -lim.dmax
@@ -127,9 +210,11 @@ pub(crate) fn position_cruising(
     {
         return None;
     }
-    let c1 = change(v0, a0, lim.vmax, lim.amax, lim.dmax, j);
-    let c2 = change(lim.vmax, 0.0, vf, lim.amax, lim.dmax, j);
-    let cruise = (s * (target_p - start.p) - c1.dist - c2.dist) / lim.vmax;
+    let inv = [inv_j, 1.0 / lim.amax, 1.0 / lim.dmax];
+    let inv_vmax = 1.0 / lim.vmax;
+    let c1 = change_with(v0, a0, lim.vmax, lim.amax, lim.dmax, j, inv);
+    let c2 = change_with(lim.vmax, 0.0, vf, lim.amax, lim.dmax, j, inv);
+    let cruise = (s * (target_p - start.p) - c1.dist - c2.dist) * inv_vmax;
     if cruise.is_nan() || cruise <= 0.0 {
         return None;
     }
