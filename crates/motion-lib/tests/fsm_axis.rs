@@ -393,6 +393,16 @@ fn state_tables_reject_each_illegal_command() {
     );
     assert_eq!(check_group(GroupMoving, GroupCmd::Stop), Ok(GroupStopping));
     assert_eq!(check_group(GroupStandby, GroupCmd::Motion), Ok(GroupMoving));
+    assert_eq!(check_group(GroupStandby, GroupCmd::Home), Ok(GroupHoming));
+    assert_eq!(check_group(GroupHoming, GroupCmd::Stop), Ok(GroupStopping));
+    assert_eq!(
+        check_group(GroupHoming, GroupCmd::Motion),
+        Err(ErrorId::GroupHoming)
+    );
+    assert_eq!(
+        check_group(GroupDisabled, GroupCmd::Home),
+        Err(ErrorId::GroupDisabled)
+    );
 }
 
 #[test]
@@ -501,9 +511,13 @@ fn blending_and_buffered_single_axis() {
     m1.call(&mut e, a);
     m2.call(&mut e, a);
     let mut at_done = None;
+    let mut max_v1: f64 = 0.0;
     run_until(&mut e, 10000, |e| {
         m1.call(e, a);
         m2.call(e, a);
+        if m1.active && e.set_position_of(a).unwrap() < 80.0 {
+            max_v1 = max_v1.max(e.set_velocity_of(a).unwrap());
+        }
         if m1.done && at_done.is_none() {
             at_done = Some(e.set_velocity_of(a).unwrap());
             assert!(m2.active);
@@ -512,6 +526,8 @@ fn blending_and_buffered_single_axis() {
     });
     let v = at_done.unwrap();
     assert!((v - 80.0).abs() < 0.5, "junction {v}");
+    // The first move cruises at its own velocity and speeds up only near its end.
+    assert!((max_v1 - 50.0).abs() < 1e-9, "{max_v1}");
     // Buffered: successor starts at standstill.
     let mut m1 = McMoveAbsolute {
         velocity: 50.0,
@@ -641,4 +657,58 @@ fn cam_follows_table() {
     };
     out.call_cam_out(&mut e, slave);
     assert!(out.done);
+}
+
+#[test]
+fn command_aborted_after_falling_execute_shows_one_cycle() {
+    let (mut e, a) = engine();
+    McPower {
+        enable: true,
+        ..Default::default()
+    }
+    .call(&mut e, a);
+    let mut m1 = mv(100.0);
+    m1.call(&mut e, a);
+    m1.execute = false;
+    e.step();
+    m1.call(&mut e, a);
+    assert!(
+        m1.busy && m1.active,
+        "a falling Execute does not stop the motion"
+    );
+    // A second block takes over: m1 shows CommandAborted for exactly one call.
+    let mut m2 = mv(-100.0);
+    m2.call(&mut e, a);
+    e.step();
+    m1.call(&mut e, a);
+    assert!(m1.command_aborted && !m1.busy && !m1.active && !m1.done && !m1.error);
+    e.step();
+    m1.call(&mut e, a);
+    assert!(!m1.command_aborted && !m1.busy);
+    // With Execute held, CommandAborted stays until Execute falls.
+    let mut m3 = mv(50.0);
+    m3.call(&mut e, a);
+    let mut m4 = mv(60.0);
+    m4.call(&mut e, a);
+    for _ in 0..3 {
+        e.step();
+        m3.call(&mut e, a);
+        assert!(m3.command_aborted);
+    }
+    m3.execute = false;
+    m3.call(&mut e, a);
+    assert!(!m3.command_aborted);
+    // Buffered block: Busy without Active while waiting.
+    let mut m5 = McMoveAbsolute {
+        buffer_mode: BufferMode::Buffered,
+        ..mv(70.0)
+    };
+    m5.call(&mut e, a);
+    assert!(m5.busy && !m5.active);
+    run_until(&mut e, 10000, |e| {
+        m4.call(e, a);
+        m5.call(e, a);
+        m5.active
+    });
+    assert!(m4.done && !m4.busy);
 }
