@@ -1,17 +1,17 @@
 //! Running the engine on its own thread, with a lock-free hand-over to the PLC scan.
 //!
 //! Input: the PLC scan's blocks (copied, inputs and block state) sent through a bounded
-//! channel; the engine thread applies each received block call, then steps one cycle.
-//! Output: the updated blocks (outputs and state) sent back through a second channel.
-//! Invariants: the hand-over is `std::sync::mpsc::sync_channel`, a bounded array queue
-//! (lock-free `try_send`/`try_recv`, no allocation per message: one producer, one consumer
-//! per direction); a block has at most one call in flight, so no call is ever dropped or
+//! queue; the engine thread applies each received block call, then steps one cycle.
+//! Output: the updated blocks (outputs and state) sent back through a second queue.
+//! Invariants: the hand-over is two `crossbeam_queue::ArrayQueue`s (bounded, lock-free push
+//! and pop, no allocation per message; one producer and one consumer per direction, so
+//! neither side ever blocks the other); a block has at most one call in flight, so no call is ever dropped or
 //! reordered; the engine thread owns the [`Engine`] and gives it back on `stop`.
 //! In scan mode (calling `Engine::step` from the scan) everything is deterministic; here
 //! a call takes effect at the first cycle boundary after it arrives.
 
+use crossbeam_queue::ArrayQueue;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::sync::mpsc::{sync_channel, Receiver, SyncSender, TryRecvError};
 use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
@@ -109,8 +109,8 @@ struct Response {
 /// indexed by slot; each scan it calls [`ScanLink::receive`] (outputs of finished calls),
 /// runs its logic (reads outputs, writes inputs), then [`ScanLink::call`] per block.
 pub struct ScanLink {
-    tx: SyncSender<Request>,
-    rx: Receiver<Response>,
+    tx: Arc<ArrayQueue<Request>>,
+    rx: Arc<ArrayQueue<Response>>,
     in_flight: Vec<bool>,
     stop: Arc<AtomicBool>,
     cycles: Arc<AtomicU64>,
@@ -125,7 +125,7 @@ impl ScanLink {
         if slot >= self.in_flight.len() || self.in_flight[slot] {
             return false;
         }
-        match self.tx.try_send(Request {
+        match self.tx.push(Request {
             slot,
             block: *block,
             target,
@@ -140,17 +140,12 @@ impl ScanLink {
 
     /// Copies every answered call back into `blocks[slot]` (outputs and block state).
     pub fn receive(&mut self, blocks: &mut [AnyBlock]) {
-        loop {
-            match self.rx.try_recv() {
-                Ok(r) => {
-                    if let Some(b) = blocks.get_mut(r.slot) {
-                        *b = r.block;
-                    }
-                    if let Some(f) = self.in_flight.get_mut(r.slot) {
-                        *f = false;
-                    }
-                }
-                Err(TryRecvError::Empty) | Err(TryRecvError::Disconnected) => return,
+        while let Some(r) = self.rx.pop() {
+            if let Some(b) = blocks.get_mut(r.slot) {
+                *b = r.block;
+            }
+            if let Some(f) = self.in_flight.get_mut(r.slot) {
+                *f = false;
             }
         }
     }
@@ -171,8 +166,9 @@ impl ScanLink {
 /// `slots` is the number of block instances the scan uses.
 pub fn spawn(mut engine: Engine, slots: usize) -> ScanLink {
     let depth = slots.max(1);
-    let (req_tx, req_rx) = sync_channel::<Request>(depth);
-    let (resp_tx, resp_rx) = sync_channel::<Response>(depth);
+    let requests = Arc::new(ArrayQueue::<Request>::new(depth));
+    let responses = Arc::new(ArrayQueue::<Response>::new(depth));
+    let (req_rx, resp_tx) = (requests.clone(), responses.clone());
     let stop = Arc::new(AtomicBool::new(false));
     let cycles = Arc::new(AtomicU64::new(0));
     let (stop2, cycles2) = (stop.clone(), cycles.clone());
@@ -181,10 +177,10 @@ pub fn spawn(mut engine: Engine, slots: usize) -> ScanLink {
         let mut next = Instant::now() + period;
         while !stop2.load(Ordering::Acquire) {
             // At most one call per slot is in flight, so the answer channel (depth =
-            // slots) always has room: try_send never fails for lack of space.
-            while let Ok(mut r) = req_rx.try_recv() {
+            // slots) always has room: push never fails for lack of space.
+            while let Some(mut r) = req_rx.pop() {
                 r.block.call(&mut engine, r.target);
-                let _ = resp_tx.try_send(Response {
+                let _ = resp_tx.push(Response {
                     slot: r.slot,
                     block: r.block,
                 });
@@ -200,8 +196,8 @@ pub fn spawn(mut engine: Engine, slots: usize) -> ScanLink {
         engine
     });
     ScanLink {
-        tx: req_tx,
-        rx: resp_rx,
+        tx: requests,
+        rx: responses,
         in_flight: vec![false; slots],
         stop,
         cycles,
