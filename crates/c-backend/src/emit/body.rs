@@ -746,9 +746,7 @@ impl Gen<'_> {
         match fb {
             FbType::Standard(_) => false,
             FbType::User(id) => self
-                .model
-                .pou(id)
-                .var(param)
+                .pou_var(id, param)
                 .is_some_and(|v| v.kind == VarKind::InOut),
         }
     }
@@ -808,7 +806,7 @@ impl Gen<'_> {
                 .iter()
                 .find(|p| p.0.eq_ignore_ascii_case(input))
                 .map(|p| Type::Elementary(p.1)),
-            FbType::User(id) => self.model.pou(id).var(input).map(|v| v.ty.clone()),
+            FbType::User(id) => self.pou_var(id, input).map(|v| v.ty.clone()),
         };
         let Some(pty) = pty else {
             self.unsupported(instance.span, format!("the FB input `{input}`"));
