@@ -387,3 +387,31 @@ END_PROGRAM
         out.stderr
     );
 }
+
+#[test]
+fn big_endian_byte_addressed_msb0_profile() {
+    let profile = c_backend::TargetProfile {
+        byte_order: c_backend::ByteOrder::Big,
+        bit_numbering: c_backend::BitNumbering::Msb0,
+        address_unit: c_backend::AddressUnit::Byte,
+        ..Default::default()
+    };
+    let (units, model, map) = frontend(
+        "PROGRAM main
+VAR
+  w AT %QW1 : WORD;
+END_VAR
+  LD 16#1234
+  ST w
+  LD TRUE
+  ST %QX0.0
+END_PROGRAM
+",
+    );
+    let p = generate_with(&units, &model, &map, &profile, &Default::default());
+    assert!(p.file("ladderc_config.h").unwrap().contains("#define LADDERC_BIG_ENDIAN 1"));
+    let b = build_program(p);
+    let rows = run(&b, 1, 10.0, "", &["%QB0", "%QB1", "%QB2", "%QW1"]);
+    // %QW1 starts at byte 1 (byte addressing), most significant byte first; %QX0.0 is the top bit
+    assert_eq!(rows[1][2..].join(","), "128,18,52,4660");
+}
