@@ -633,3 +633,21 @@ END_PROGRAM
         "1,2,7,7,3,101,100,10,5,T#20ms,0,0,1,T#4500ms,T#750ms,13,11,0,99,1,3,1,2"
     );
 }
+
+#[test]
+fn non_formal_cal_and_negated_outputs() {
+    let src = "PROGRAM main
+VAR
+  tmr : TON;
+  not_q : BOOL;
+  q : BOOL;
+END_VAR
+  CAL tmr(%IX0.0, T#20ms)
+  CAL tmr(IN := %IX0.0, NOT Q => not_q, Q => q)
+END_PROGRAM
+";
+    let b = build_src(src);
+    let rows = run(&b, 4, 10.0, "1,%IX0.0,1\n", &["main.q", "main.not_q"]);
+    assert_eq!(column(&rows, "main.q"), ["0", "0", "0", "1"]);
+    assert_eq!(column(&rows, "main.not_q"), ["1", "1", "1", "0"]);
+}
