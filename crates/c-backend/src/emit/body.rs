@@ -64,16 +64,31 @@ impl<'s, 'm> Body<'s, 'm> {
     }
 }
 
+/// An open deferred operator, waiting for its nested list.
+struct Deferred {
+    span: Span,
+    info: InstrInfo,
+    op: Op,
+    negate: bool,
+    /// The outer current result's type (`None` for `LD(`).
+    outer: Option<Type>,
+    /// The block-scoped local holding the outer result.
+    saved: String,
+}
+
 /// Collects the labels targeted by jumps (nested lists included).
 pub fn jump_targets(stmts: &[IlStmt], into: &mut HashSet<String>) {
-    for s in stmts {
-        if let IlStmt::Instr(i) = s {
-            match &i.kind {
-                InstrKind::Jump { label, .. } => {
-                    into.insert(label.key());
+    let mut lists = vec![stmts];
+    while let Some(list) = lists.pop() {
+        for s in list {
+            if let IlStmt::Instr(i) = s {
+                match &i.kind {
+                    InstrKind::Jump { label, .. } => {
+                        into.insert(label.key());
+                    }
+                    InstrKind::Deferred { body, .. } => lists.push(body),
+                    _ => {}
                 }
-                InstrKind::Deferred { body, .. } => jump_targets(body, into),
-                _ => {}
             }
         }
     }
@@ -129,8 +144,27 @@ impl Gen<'_> {
         }
     }
 
+    /// Translates a statement list. Nested lists of deferred operators are walked with an explicit
+    /// stack, so nesting depth is bounded by memory, not by the call stack.
     pub fn stmts(&mut self, b: &mut Body, stmts: &[IlStmt]) {
-        for s in stmts {
+        enum Work<'a> {
+            List(&'a [IlStmt]),
+            Close(Option<Deferred>),
+        }
+        let mut stack = vec![Work::List(stmts)];
+        while let Some(work) = stack.pop() {
+            let list = match work {
+                Work::Close(Some(d)) => {
+                    self.deferred_close(b, d);
+                    continue;
+                }
+                Work::Close(None) => continue,
+                Work::List(list) => list,
+            };
+            let Some((s, rest)) = list.split_first() else {
+                continue;
+            };
+            stack.push(Work::List(rest));
             match s {
                 IlStmt::Label(l) => {
                     if b.targets.contains(&l.key()) {
@@ -140,7 +174,24 @@ impl Gen<'_> {
                         b.indent = ind;
                     }
                 }
-                IlStmt::Instr(i) => self.instr(b, i),
+                IlStmt::Instr(i) => {
+                    if let InstrKind::Deferred {
+                        op,
+                        negate,
+                        operand,
+                        body,
+                        ..
+                    } = &i.kind
+                    {
+                        let d = self.deferred_open(b, i, *op, *negate, operand.as_ref(), body);
+                        if d.is_some() {
+                            stack.push(Work::Close(d));
+                            stack.push(Work::List(body));
+                        }
+                    } else {
+                        self.instr(b, i);
+                    }
+                }
             }
         }
     }
@@ -182,13 +233,6 @@ impl Gen<'_> {
                         negate,
                         operand,
                     } => self.simple(b, i, &info, *op, *negate, operand.as_ref()),
-                    InstrKind::Deferred {
-                        op,
-                        negate,
-                        operand,
-                        body,
-                        close,
-                    } => self.deferred(b, i, &info, *op, *negate, operand.as_ref(), body, *close),
                     InstrKind::Call {
                         cond,
                         instance,
@@ -509,19 +553,20 @@ impl Gen<'_> {
         }
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn deferred(
+    /// Opens a deferred operator's block: saves the outer result, loads the implicit operand. Returns
+    /// what [`Gen::deferred_close`] needs, or `None` (block already closed) when the outer result is
+    /// unusable.
+    fn deferred_open(
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
         op: Op,
         negate: bool,
         operand: Option<&Operand>,
         body: &[IlStmt],
-        _close: Span,
-    ) {
+    ) -> Option<Deferred> {
         let span = i.span;
+        let info = self.info(i)?;
         b.depth += 1;
         let d = format!("d_{}", b.depth);
         b.line("{");
@@ -529,23 +574,20 @@ impl Gen<'_> {
         let outer = if op == Op::Ld {
             None
         } else {
-            let Some(before) = info.cr_before.clone() else {
+            let saved = info
+                .cr_before
+                .clone()
+                .and_then(|before| self.cr(b, &before, span).map(|cr| (before, cr)));
+            let Some((before, cr)) = saved else {
                 b.indent -= 1;
                 b.line("}");
                 b.depth -= 1;
-                return;
-            };
-            let Some(cr) = self.cr(b, &before, span) else {
-                b.indent -= 1;
-                b.line("}");
-                b.depth -= 1;
-                return;
+                return None;
             };
             let decl = ctypes::declare(self.model, &before, &d).unwrap_or_default();
             b.line(&format!("{decl} = {cr};"));
             Some(before)
         };
-        let nested_ty = info.operand.clone();
         if let Some(o) = operand {
             // the implicit LD that starts the nested list, typed as the first instruction expects
             let first = body.iter().find_map(|s| match s {
@@ -553,24 +595,36 @@ impl Gen<'_> {
                 _ => None,
             });
             let ty = first
-                .or_else(|| nested_ty.clone())
+                .or_else(|| info.operand.clone())
                 .unwrap_or_else(|| self.operand_type(b.scope, o, None));
             if let (Some(cr), Some(v)) = (self.cr(b, &ty, o.span()), self.value(b.scope, o, &ty)) {
                 b.line(&format!("{cr} = {v};"));
             }
         }
-        self.stmts(b, body);
-        if let (Some(vt), Some(after)) = (nested_ty, info.cr_after.clone()) {
+        Some(Deferred {
+            span,
+            info,
+            op,
+            negate,
+            outer,
+            saved: d,
+        })
+    }
+
+    /// Combines the saved outer result with the nested list's value and closes the block.
+    fn deferred_close(&mut self, b: &mut Body, d: Deferred) {
+        let span = d.span;
+        if let (Some(vt), Some(after)) = (d.info.operand.clone(), d.info.cr_after.clone()) {
             if let Some(vcr) = self.cr(b, &vt, span) {
-                let v = if negate { negated(&vcr, &vt) } else { vcr };
-                let res = match &outer {
+                let v = if d.negate { negated(&vcr, &vt) } else { vcr };
+                let res = match &d.outer {
                     None => Some(convert(&v, &vt, &after)),
                     Some(before) => {
-                        let common = std_common_type(info, before);
-                        let a = convert(&d, before, &common);
-                        let vty = self.operand_ty_for(info, &common, op);
+                        let common = std_common_type(&d.info, before);
+                        let a = convert(&d.saved, before, &common);
+                        let vty = self.operand_ty_for(&d.info, &common, d.op);
                         let v = convert(&v, &vt, &vty);
-                        self.binary(span, op, &a, &common, &v, &vty, &after)
+                        self.binary(span, d.op, &a, &common, &v, &vty, &after)
                     }
                 };
                 if let (Some(res), Some(cr)) = (res, self.cr(b, &after, span)) {
