@@ -149,13 +149,13 @@ impl Gen<'_> {
     pub fn stmts(&mut self, b: &mut Body, stmts: &[IlStmt]) {
         enum Work<'a> {
             List(&'a [IlStmt]),
-            Close(Option<Deferred>),
+            Close(Option<Box<Deferred>>),
         }
         let mut stack = vec![Work::List(stmts)];
         while let Some(work) = stack.pop() {
             let list = match work {
                 Work::Close(Some(d)) => {
-                    self.deferred_close(b, d);
+                    self.deferred_close(b, *d);
                     continue;
                 }
                 Work::Close(None) => continue,
@@ -185,7 +185,7 @@ impl Gen<'_> {
                     {
                         let d = self.deferred_open(b, i, *op, *negate, operand.as_ref(), body);
                         if d.is_some() {
-                            stack.push(Work::Close(d));
+                            stack.push(Work::Close(d.map(Box::new)));
                             stack.push(Work::List(body));
                         }
                     } else {
