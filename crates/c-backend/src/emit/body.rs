@@ -94,7 +94,7 @@ pub fn jump_targets(stmts: &[IlStmt], into: &mut HashSet<String>) {
     }
 }
 
-impl Gen<'_> {
+impl<'a> Gen<'a> {
     /// The current-result local for values of `ty` (declared on first use).
     fn cr(&mut self, b: &mut Body, ty: &Type, span: Span) -> Option<String> {
         let base = match ty {
@@ -127,9 +127,10 @@ impl Gen<'_> {
         Some(name)
     }
 
-    fn info(&mut self, i: &Instruction) -> Option<InstrInfo> {
-        match self.model.instr(i.span) {
-            Some(info) => Some(info.clone()),
+    fn info(&mut self, i: &Instruction) -> Option<&'a InstrInfo> {
+        let model: &'a il_frontend::sema::Model = self.model;
+        match model.instr(i.span) {
+            Some(info) => Some(info),
             None => {
                 self.report_once(
                     Diagnostic::error(
@@ -232,15 +233,15 @@ impl Gen<'_> {
                         op,
                         negate,
                         operand,
-                    } => self.simple(b, i, &info, *op, *negate, operand.as_ref()),
+                    } => self.simple(b, i, info, *op, *negate, operand.as_ref()),
                     InstrKind::Call {
                         cond,
                         instance,
                         args,
-                    } => self.cal(b, i, &info, *cond, instance, args),
-                    InstrKind::FunctionCall { args, .. } => self.function_call(b, i, &info, args),
+                    } => self.cal(b, i, info, *cond, instance, args),
+                    InstrKind::FunctionCall { args, .. } => self.function_call(b, i, info, args),
                     InstrKind::FbInput { op, instance } => {
-                        self.fb_input(b, i, &info, fb_input_name(*op), instance)
+                        self.fb_input(b, i, info, fb_input_name(*op), instance)
                     }
                     _ => {}
                 }
@@ -603,7 +604,7 @@ impl Gen<'_> {
         }
         Some(Deferred {
             span,
-            info,
+            info: info.clone(),
             op,
             negate,
             outer,
