@@ -1,9 +1,92 @@
 //! The IL front end: IEC 61131-3 instruction list source in, a typed syntax tree and diagnostics out.
 //!
-//! Stages: `lexer` (logos, case-insensitive keywords) -> `parser` (lalrpop, with error recovery) -> [`ast`]
-//! -> `sema` (symbols, types, current-result typing, labels). Every node carries a byte [`Span`].
+//! Stages: [`lexer`] (logos, one case-insensitive keyword table) -> [`layout`] (significant line ends,
+//! repair of unclosed blocks) -> [`parser`] (lalrpop grammar with error recovery) -> [`ast`] -> `sema`
+//! (symbols, types, current-result typing, labels). Every node carries a byte [`Span`].
+//! [`print`] writes a tree back as IL; [`testgen`] generates large valid programs for tests and benches.
 
 pub mod ast;
+pub mod layout;
+pub mod lexer;
+pub mod literal;
+pub mod parser;
+pub mod print;
 pub mod sema;
+pub mod testgen;
 
 pub use diagnostics::{FileId, Span};
+
+use ast::{CompilationUnit, Ident, IlStmt, LibraryElement, Pou, PouKind};
+use diagnostics::Diagnostics;
+use lexer::Tok;
+use parser::Parsed;
+
+/// The name of the implicit program that [`parse`] gives to instructions outside any POU.
+pub const DEFAULT_IMPLICIT_PROGRAM: &str = "main";
+
+/// Parses one IL source file. Instructions outside any POU become an implicit `PROGRAM main`
+/// (warning W0001); use [`parse_named`] to name it after the file.
+pub fn parse(file: FileId, src: &str, diags: &mut Diagnostics) -> CompilationUnit {
+    parse_named(file, src, DEFAULT_IMPLICIT_PROGRAM, diags)
+}
+
+/// Parses one IL source file; instructions and non-global `VAR` blocks outside any POU (as in bare test
+/// files) are collected, in order, into one implicit `PROGRAM implicit_name` placed where the first of
+/// them appears, with warning W0001.
+pub fn parse_named(
+    file: FileId,
+    src: &str,
+    implicit_name: &str,
+    diags: &mut Diagnostics,
+) -> CompilationUnit {
+    let Some(Parsed::Unit(mut top)) = parser::run(file, src, 0, Tok::UnitStart, diags) else {
+        return CompilationUnit::default();
+    };
+    if let Some((at, vars, body)) = top.implicit.take() {
+        let implicit_name = &implicit_program_name(implicit_name);
+        let first = top.first_bare.unwrap_or(Span::new(file, 0, 0));
+        diags.push(parser::implicit_program_warning(first, implicit_name));
+        let end = Span::new(file, src.len(), src.len());
+        let pou = Pou {
+            kind: PouKind::Program,
+            name: Ident::new(
+                implicit_name,
+                Span::new(file, first.start as usize, first.start as usize),
+            ),
+            return_type: None,
+            var_blocks: vars,
+            body,
+            span: first.to(end),
+        };
+        top.items
+            .insert(at.min(top.items.len()), LibraryElement::Pou(pou));
+    }
+    CompilationUnit { items: top.items }
+}
+
+/// A valid IEC identifier made from a file stem: other characters become `_`, a leading digit gets a `_`
+/// prefix (`19_il-test` -> `_19_il_test`).
+pub fn implicit_program_name(stem: &str) -> String {
+    let mut name: String = stem
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if name.is_empty() || name.starts_with(|c: char| c.is_ascii_digit()) {
+        name.insert(0, '_');
+    }
+    name
+}
+
+/// Parses an instruction list alone (e.g. the text of a PLCopen XML `<IL>` element). `base_offset` is the
+/// byte offset of `src` in the file `file`, so that spans point into that file.
+pub fn parse_body(
+    file: FileId,
+    src: &str,
+    base_offset: usize,
+    diags: &mut Diagnostics,
+) -> Vec<IlStmt> {
+    match parser::run(file, src, base_offset, Tok::BodyStart, diags) {
+        Some(Parsed::Body(body)) => body,
+        _ => Vec::new(),
+    }
+}

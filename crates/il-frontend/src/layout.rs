@@ -1,0 +1,701 @@
+//! The layout pass between lexer and grammar: decides which line ends matter and repairs unclosed blocks.
+//!
+//! Input: the raw tokens of [`crate::lexer`]. Output: the [`Tok`] stream the grammar reads, with byte
+//! positions (local to the text; diagnostics add `base`), plus the lexical diagnostics.
+//! Invariants:
+//! - IL is line-oriented: in instruction lists a line end is one [`Tok::Eol`] (blank and comment-only lines
+//!   collapse); inside declarations (`VAR`..`END_VAR`, `TYPE`, `CONFIGURATION`) line ends are blanks.
+//! - Inside the argument list of a call (`CAL f(` / `LIMIT(`), a line end next to `(`, `,` or `)` is a blank,
+//!   so arguments may span lines; a deferred operator's `(` (`AND(` at the start of an instruction) keeps
+//!   line ends, its nested list is line-oriented.
+//! - A `;` in an instruction list is the non-standard end-of-line comment: reported, skipped to line end.
+//! - A block left open (missing `END_VAR`, `END_PROGRAM`, `)` of a deferred operator) is reported once and
+//!   closed with a zero-width synthetic token, so the grammar sees a well-nested stream and one mistake
+//!   does not cascade into the rest of the file.
+//! - Lexer errors are reported here and passed on as [`Tok::Error`], which the grammar recovers from
+//!   without reporting again.
+
+use crate::lexer::{LexError, RawToken, Tok, Word};
+use diagnostics::{code, Diagnostic, FileId, Span};
+use logos::Logos;
+use std::collections::VecDeque;
+
+/// A token with its local byte range.
+pub type Spanned = (usize, Tok, usize);
+
+/// An open block, innermost last.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Frame {
+    /// A POU opened by `PROGRAM`/`FUNCTION`/`FUNCTION_BLOCK` at this position.
+    Pou(Word, usize, usize),
+    /// A `VAR*` block opened at this position.
+    Var(usize, usize),
+    Type(usize, usize),
+    Struct(usize, usize),
+    Config(usize, usize),
+    Resource(usize, usize),
+    /// `AND(` ... `)`: line ends matter inside.
+    Deferred(usize, usize),
+    /// A call's argument list: line ends next to separators are blanks.
+    Args,
+}
+
+impl Frame {
+    fn is_decl(self) -> bool {
+        matches!(
+            self,
+            Frame::Var(..)
+                | Frame::Type(..)
+                | Frame::Struct(..)
+                | Frame::Config(..)
+                | Frame::Resource(..)
+        )
+    }
+}
+
+/// What the last emitted token was, as far as layout decisions care.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Last {
+    Start,
+    Eol,
+    Colon,
+    LParen,
+    Comma,
+    Deferrable,
+    Other,
+}
+
+pub struct Layout<'s> {
+    src: &'s str,
+    lex: logos::Lexer<'s, RawToken>,
+    file: FileId,
+    base: usize,
+    pub diags: Vec<Diagnostic>,
+    out: VecDeque<Spanned>,
+    stack: Vec<Frame>,
+    pending_eol: Option<usize>,
+    prev: Last,
+    prev2: Last,
+    start: Option<Tok>,
+    finished: bool,
+    /// The last token emitted ends a declaration or opens a `VAR` block: a new declaration may start.
+    decl_start: bool,
+    /// An unterminated comment swallowed the rest of the file: blocks it leaves open are not reported.
+    swallowed: bool,
+}
+
+impl<'s> Layout<'s> {
+    /// `start` is [`Tok::UnitStart`] or [`Tok::BodyStart`]: which grammar entry to use.
+    pub fn new(file: FileId, src: &'s str, base: usize, start: Tok) -> Self {
+        Layout {
+            src,
+            lex: RawToken::lexer(src),
+            file,
+            base,
+            diags: Vec::new(),
+            out: VecDeque::new(),
+            stack: Vec::new(),
+            pending_eol: None,
+            prev: Last::Start,
+            prev2: Last::Start,
+            start: Some(start),
+            finished: false,
+            decl_start: false,
+            swallowed: false,
+        }
+    }
+
+    fn span(&self, start: usize, end: usize) -> Span {
+        Span::new(self.file, self.base + start, self.base + end)
+    }
+
+    fn in_decl(&self) -> bool {
+        self.stack.last().is_some_and(|f| f.is_decl())
+    }
+
+    fn emit(&mut self, start: usize, tok: Tok, end: usize) {
+        let last = match &tok {
+            Tok::Eol | Tok::UnitStart | Tok::BodyStart => Last::Eol,
+            Tok::Colon => Last::Colon,
+            Tok::LParen => Last::LParen,
+            Tok::Comma => Last::Comma,
+            Tok::Amp | Tok::AmpN => Last::Deferrable,
+            Tok::Word(w) if w.is_simple_op() => Last::Deferrable,
+            _ => Last::Other,
+        };
+        self.decl_start = matches!(
+            tok,
+            Tok::Semi
+                | Tok::Word(
+                    Word::Var
+                        | Word::VarInput
+                        | Word::VarOutput
+                        | Word::VarInOut
+                        | Word::VarTemp
+                        | Word::VarGlobal
+                        | Word::VarExternal
+                        | Word::Constant
+                        | Word::Retain
+                        | Word::NonRetain
+                )
+        );
+        self.prev2 = self.prev;
+        self.prev = last;
+        self.out.push_back((start, tok, end));
+    }
+
+    /// Emits a pending line end before `next`, unless it is a blank (see module doc).
+    fn resolve_eol(&mut self, next: Option<&Tok>) {
+        let Some(pos) = self.pending_eol.take() else {
+            return;
+        };
+        if matches!(self.prev, Last::Start | Last::Eol) {
+            return;
+        }
+        if self.stack.last() == Some(&Frame::Args) {
+            if matches!(self.prev, Last::LParen | Last::Comma)
+                || matches!(next, Some(Tok::RParen | Tok::Comma))
+            {
+                return;
+            }
+            // The argument list was not closed on this line: it is over.
+            while self.stack.last() == Some(&Frame::Args) {
+                self.stack.pop();
+            }
+        }
+        self.emit(pos, Tok::Eol, pos + 1);
+    }
+
+    fn ensure_eol(&mut self, at: usize) {
+        if !matches!(self.prev, Last::Start | Last::Eol) {
+            self.emit(at, Tok::Eol, at);
+        }
+    }
+
+    /// Closes the innermost frame with synthetic tokens at `at`, reporting what was missing.
+    fn close_top(&mut self, at: usize) {
+        let Some(frame) = self.stack.pop() else {
+            return;
+        };
+        let before = self.diags.len();
+        self.close_frame(frame, at);
+        if self.swallowed {
+            self.diags.truncate(before);
+        }
+    }
+
+    fn close_frame(&mut self, frame: Frame, at: usize) {
+        let here = self.span(at, at);
+        let missing = |what: &str, open: Span, opened: &str| {
+            Diagnostic::error(code::E0008, format!("missing `{what}`"))
+                .at(here)
+                .with_primary_label(format!("`{what}` expected before this"))
+                .with_label(open, format!("{opened} opened here"))
+                .with_hint(format!("close the block with `{what}`"))
+        };
+        match frame {
+            Frame::Pou(kind, s, e) => {
+                let end = kind.pou_end().unwrap_or(Word::EndProgram);
+                self.ensure_eol(at);
+                let d = missing(
+                    end.spelling(),
+                    self.span(s, e),
+                    &format!("`{}`", kind.spelling()),
+                );
+                self.diags.push(d);
+                self.emit(at, Tok::Word(end), at);
+            }
+            Frame::Var(s, e) => {
+                let d = missing("END_VAR", self.span(s, e), "the declaration block");
+                self.diags.push(d);
+                self.emit(at, Tok::Word(Word::EndVar), at);
+            }
+            Frame::Type(s, e) => {
+                let d = missing("END_TYPE", self.span(s, e), "`TYPE`");
+                self.diags.push(d);
+                self.emit(at, Tok::Word(Word::EndType), at);
+            }
+            Frame::Struct(s, e) => {
+                let d = missing("END_STRUCT", self.span(s, e), "`STRUCT`");
+                self.diags.push(d);
+                self.emit(at, Tok::Word(Word::EndStruct), at);
+                self.emit(at, Tok::Semi, at);
+            }
+            Frame::Config(s, e) => {
+                let d = missing("END_CONFIGURATION", self.span(s, e), "`CONFIGURATION`");
+                self.diags.push(d);
+                self.emit(at, Tok::Word(Word::EndConfiguration), at);
+            }
+            Frame::Resource(s, e) => {
+                let d = missing("END_RESOURCE", self.span(s, e), "`RESOURCE`");
+                self.diags.push(d);
+                self.emit(at, Tok::Word(Word::EndResource), at);
+            }
+            Frame::Deferred(s, e) => {
+                self.ensure_eol(at);
+                self.diags.push(
+                    Diagnostic::error(code::E0009, "missing `)` of a deferred operator")
+                        .at(here)
+                        .with_primary_label("`)` expected on a line before this")
+                        .with_label(self.span(s, e), "parenthesis opened here")
+                        .with_hint("close the nested instruction list with `)` on its own line"),
+                );
+                self.emit(at, Tok::RParen, at);
+                self.emit(at, Tok::Eol, at);
+            }
+            Frame::Args => {}
+        }
+    }
+
+    /// Closes frames down to (not including) the innermost one that `keep` accepts; returns whether found.
+    fn close_until(&mut self, at: usize, keep: impl Fn(&Frame) -> bool) -> bool {
+        if !self.stack.iter().any(&keep) {
+            return false;
+        }
+        while let Some(top) = self.stack.last() {
+            if keep(top) {
+                return true;
+            }
+            self.close_top(at);
+        }
+        false
+    }
+
+    fn in_configuration(&self) -> bool {
+        self.stack
+            .iter()
+            .any(|f| matches!(f, Frame::Config(..) | Frame::Resource(..)))
+    }
+
+    /// Block structure bookkeeping for one token; may emit synthetic tokens before it.
+    fn structure(&mut self, s: usize, tok: &Tok, e: usize) {
+        let decl = self.in_decl();
+        match tok {
+            Tok::Word(w) => match w {
+                Word::VarAccess | Word::VarConfig => {}
+                Word::Var
+                | Word::VarInput
+                | Word::VarOutput
+                | Word::VarInOut
+                | Word::VarTemp
+                | Word::VarGlobal
+                | Word::VarExternal => {
+                    if matches!(self.stack.last(), Some(Frame::Var(..))) {
+                        self.close_top(s);
+                    }
+                    self.drop_parens();
+                    self.stack.push(Frame::Var(s, e));
+                }
+                Word::EndVar => {
+                    self.close_until(s, |f| matches!(f, Frame::Var(..)));
+                    if matches!(self.stack.last(), Some(Frame::Var(..))) {
+                        self.stack.pop();
+                    }
+                }
+                Word::Type if !self.in_configuration() => {
+                    self.close_all(s);
+                    self.stack.push(Frame::Type(s, e));
+                }
+                Word::EndType if self.close_until(s, |f| matches!(f, Frame::Type(..))) => {
+                    self.stack.pop();
+                }
+                Word::Struct if decl => self.stack.push(Frame::Struct(s, e)),
+                Word::EndStruct => {
+                    if matches!(self.stack.last(), Some(Frame::Struct(..))) {
+                        self.stack.pop();
+                    }
+                }
+                Word::Configuration => {
+                    self.close_all(s);
+                    self.stack.push(Frame::Config(s, e));
+                }
+                Word::EndConfiguration
+                    if self.close_until(s, |f| matches!(f, Frame::Config(..))) =>
+                {
+                    self.stack.pop();
+                }
+                Word::Resource if self.in_configuration() => {
+                    self.close_until(s, |f| matches!(f, Frame::Config(..)));
+                    self.stack.push(Frame::Resource(s, e));
+                }
+                Word::EndResource if self.close_until(s, |f| matches!(f, Frame::Resource(..))) => {
+                    self.stack.pop();
+                }
+                Word::Program | Word::Function | Word::FunctionBlock
+                    if !self.in_configuration() =>
+                {
+                    self.close_all(s);
+                    self.stack.push(Frame::Pou(*w, s, e));
+                }
+                _ => {}
+            },
+            Tok::LParen if !decl => {
+                let deferred = self.prev == Last::Deferrable
+                    && matches!(self.prev2, Last::Start | Last::Eol | Last::Colon);
+                self.stack.push(if deferred {
+                    Frame::Deferred(s, e)
+                } else {
+                    Frame::Args
+                });
+            }
+            Tok::RParen if !decl => {
+                if matches!(self.stack.last(), Some(Frame::Args | Frame::Deferred(..))) {
+                    self.stack.pop();
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// `END_PROGRAM` & co.: closes what is open inside the POU; a mismatched keyword is reported and
+    /// replaced by the right one. Returns the token to emit.
+    fn pou_end(&mut self, s: usize, w: Word, e: usize) -> Tok {
+        if !self.close_until(s, |f| matches!(f, Frame::Pou(..))) {
+            return Tok::Word(w);
+        }
+        let Some(Frame::Pou(kind, ps, pe)) = self.stack.pop() else {
+            return Tok::Word(w);
+        };
+        let want = kind.pou_end().unwrap_or(w);
+        if want != w {
+            self.diags.push(
+                Diagnostic::error(
+                    code::E0010,
+                    format!("`{}` closes a {}", w.spelling(), kind.spelling()),
+                )
+                .at(self.span(s, e))
+                .with_primary_label(format!("expected `{}`", want.spelling()))
+                .with_label(self.span(ps, pe), "opened here")
+                .with_hint(format!("write `{}`", want.spelling())),
+            );
+        }
+        Tok::Word(want)
+    }
+
+    fn close_all(&mut self, at: usize) {
+        while !self.stack.is_empty() {
+            self.close_top(at);
+        }
+    }
+
+    fn drop_parens(&mut self) {
+        while matches!(self.stack.last(), Some(Frame::Args)) {
+            self.stack.pop();
+        }
+    }
+
+    fn report_lex_error(&mut self, err: LexError, s: usize, e: usize) {
+        let text = &self.src[s..e];
+        let d = match err {
+            LexError::UnexpectedChar => {
+                let hint = match text {
+                    "=" | "<" | ">" | "+" | "-" | "*" | "/" | "<>" | "<=" | ">=" => {
+                        "IL has no infix operators: use EQ, NE, LT, LE, GT, GE, ADD, SUB, MUL or DIV"
+                    }
+                    "{" | "}" => "comments are written (* ... *)",
+                    _ => "remove it, or put it in a (* comment *)",
+                };
+                Diagnostic::error(code::E0001, format!("unexpected character `{text}`"))
+                    .at(self.span(s, e))
+                    .with_hint(hint)
+            }
+            LexError::UnterminatedComment => {
+                Diagnostic::error(code::E0002, "comment is not closed")
+                    .at(self.span(s, s + 2))
+                    .with_primary_label("this comment runs to the end of the file")
+                    .with_hint("close it with `*)`")
+            }
+            LexError::UnterminatedString => {
+                Diagnostic::error(code::E0003, "string is not closed on its line")
+                    .at(self.span(s, e))
+                    .with_hint(format!(
+                        "close it with `{}`; write a line break inside a string as $N",
+                        &text[..1]
+                    ))
+            }
+            LexError::BadLiteral(why) => {
+                Diagnostic::error(code::E0005, format!("invalid literal: {why}"))
+                    .at(self.span(s, e))
+                    .with_hint("see the literal forms in `ladderc explain E0005`")
+            }
+            LexError::BadAddress(why) => Diagnostic::error(
+                code::E0006,
+                format!("invalid direct address: {why}"),
+            )
+            .at(self.span(s, e))
+            .with_hint(
+                "write %I, %Q or %M, an optional size X, B, W, D or L, and a location like 0.1",
+            ),
+        };
+        self.diags.push(d);
+    }
+
+    fn convert(&self, raw: RawToken, s: usize, e: usize) -> Tok {
+        match raw {
+            RawToken::Word => Tok::Word(crate::lexer::classify(&self.src[s..e])),
+            RawToken::Prefixed(None) => Tok::TypePrefix,
+            RawToken::Prefixed(Some(t)) => Tok::Time(t),
+            RawToken::Int(v) => Tok::Int(v),
+            RawToken::Real(v) => Tok::Real(v),
+            RawToken::Str((wide, v)) => Tok::Str(wide, v),
+            RawToken::Address((a, sz, p)) => Tok::Address(a, sz, p),
+            RawToken::LParen => Tok::LParen,
+            RawToken::RParen => Tok::RParen,
+            RawToken::LBracket => Tok::LBracket,
+            RawToken::RBracket => Tok::RBracket,
+            RawToken::Comma => Tok::Comma,
+            RawToken::Colon => Tok::Colon,
+            RawToken::Semi => Tok::Semi,
+            RawToken::Assign => Tok::Assign,
+            RawToken::Arrow => Tok::Arrow,
+            RawToken::DotDot => Tok::DotDot,
+            RawToken::Dot => Tok::Dot,
+            RawToken::Amp => Tok::Amp,
+            RawToken::AmpN => Tok::AmpN,
+            // Newlines and comments are handled before conversion.
+            RawToken::Newline | RawToken::CommentNewline | RawToken::LineComment => Tok::Eol,
+        }
+    }
+
+    /// Reads raw tokens until at least one output token is queued (or the input is exhausted).
+    fn fill(&mut self) {
+        if let Some(start) = self.start.take() {
+            self.emit(0, start, 0);
+            return;
+        }
+        while self.out.is_empty() && !self.finished {
+            let next = self.lex.next();
+            for (range, why) in std::mem::take(&mut self.lex.extras) {
+                self.diags.push(
+                    Diagnostic::error(code::E0004, format!("invalid string escape: {why}"))
+                        .at(self.span(range.start, range.end))
+                        .with_hint("write a dollar sign as `$$`"),
+                );
+            }
+            let range = self.lex.span();
+            let (s, e) = (range.start, range.end);
+            let tok = match next {
+                None => {
+                    self.finish();
+                    return;
+                }
+                Some(Ok(RawToken::Newline | RawToken::CommentNewline)) => {
+                    if !self.in_decl() && self.pending_eol.is_none() {
+                        self.pending_eol = Some(s);
+                    }
+                    continue;
+                }
+                Some(Ok(RawToken::Semi)) if !self.in_decl() => {
+                    self.semicolon_comment(s);
+                    continue;
+                }
+                Some(Ok(raw)) => self.convert(raw, s, e),
+                Some(Err(err)) => {
+                    self.swallowed |= err == LexError::UnterminatedComment;
+                    self.report_lex_error(err, s, e);
+                    Tok::Error
+                }
+            };
+            self.resolve_eol(Some(&tok));
+            if let Tok::Word(w @ (Word::VarAccess | Word::VarConfig)) = tok {
+                self.skip_unsupported_block(w, s, e);
+                continue;
+            }
+            if let Tok::Word(w) = tok {
+                if w != Word::Ident && w.is_name() && self.instruction_in_declarations() {
+                    self.close_top(s);
+                }
+            }
+            let tok =
+                match tok {
+                    Tok::Word(
+                        w @ (Word::EndProgram | Word::EndFunction | Word::EndFunctionBlock),
+                    ) if !self.in_configuration() => self.pou_end(s, w, e),
+                    other => {
+                        self.structure(s, &other, e);
+                        other
+                    }
+                };
+            self.emit(s, tok, e);
+        }
+    }
+
+    /// `VAR_ACCESS` / `VAR_CONFIG` ... `END_VAR`: reported once, skipped whole.
+    fn skip_unsupported_block(&mut self, w: Word, s: usize, e: usize) {
+        self.diags.push(
+            Diagnostic::error(
+                code::E0019,
+                format!("`{}` blocks are not supported", w.spelling()),
+            )
+            .at(self.span(s, e))
+            .with_primary_label("this block is skipped up to its END_VAR")
+            .with_hint("remove the block; declare the variables in VAR_GLOBAL or VAR_EXTERNAL"),
+        );
+        while let Some(t) = self.lex.next() {
+            if t == Ok(RawToken::Word) && crate::lexer::classify(self.lex.slice()) == Word::EndVar {
+                break;
+            }
+        }
+        self.lex.extras.clear();
+    }
+
+    /// At the start of a declaration in a `VAR` block, an IL operator not followed by `:`, `,` or `AT`
+    /// starts an instruction: the block lacks its `END_VAR`.
+    fn instruction_in_declarations(&self) -> bool {
+        if !self.decl_start || !matches!(self.stack.last(), Some(Frame::Var(..))) {
+            return false;
+        }
+        let mut ahead = self.lex.clone();
+        match ahead.next() {
+            Some(Ok(RawToken::Colon | RawToken::Comma)) | None => false,
+            Some(Ok(RawToken::Word)) => crate::lexer::classify(ahead.slice()) != Word::At,
+            _ => true,
+        }
+    }
+
+    /// `; text` in an instruction list: reported, skipped to the end of the line.
+    fn semicolon_comment(&mut self, s: usize) {
+        let rest = self.lex.remainder();
+        let n = rest.find('\n').unwrap_or(rest.len());
+        self.lex.bump(n);
+        let end = s + 1 + rest[..n].trim_end().len();
+        self.diags.push(
+            Diagnostic::error(code::E0007, "`;` comments are not IEC 61131-3; use (* *)")
+                .at(self.span(s, end))
+                .with_primary_label("end-of-line comment of another dialect")
+                .with_hint("write the comment as (* ... *); the rest of the line was skipped"),
+        );
+    }
+
+    fn finish(&mut self) {
+        self.finished = true;
+        let end = self.src.len();
+        self.resolve_eol(None);
+        if !self.in_decl() {
+            self.ensure_eol(end);
+        }
+        self.close_all(end);
+        self.ensure_eol(end);
+    }
+}
+
+impl Iterator for Layout<'_> {
+    type Item = Result<Spanned, ()>;
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.out.is_empty() {
+            self.fill();
+        }
+        self.out.pop_front().map(Ok)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The token stream in a compact notation: words by spelling, `;` for Eol.
+    fn stream(src: &str) -> (String, Vec<String>) {
+        let mut l = Layout::new(FileId(0), src, 0, Tok::UnitStart);
+        let mut out = Vec::new();
+        for t in l.by_ref() {
+            let (s, tok, e) = t.unwrap();
+            out.push(match tok {
+                Tok::UnitStart => continue,
+                Tok::Eol => "/".to_string(),
+                Tok::Word(w) if s == e => format!("<{}>", w.spelling()),
+                Tok::RParen if s == e => "<)>".to_string(),
+                _ => src[s..e].to_string(),
+            });
+        }
+        (
+            out.join(" "),
+            l.diags
+                .iter()
+                .map(|d| format!("{} {}", d.code, d.message))
+                .collect(),
+        )
+    }
+
+    #[test]
+    fn line_ends_collapse_and_comments_vanish() {
+        let (s, d) = stream("\n\nLD a (* c *)\n\n(* only *)\n  ST b");
+        assert_eq!(s, "LD a / ST b /");
+        assert!(d.is_empty());
+    }
+
+    #[test]
+    fn declarations_ignore_line_ends() {
+        let (s, _) = stream("PROGRAM p\nVAR\n a :\n INT;\nEND_VAR\nLD a\nEND_PROGRAM\n");
+        assert_eq!(
+            s,
+            "PROGRAM p / VAR a : INT ; END_VAR / LD a / END_PROGRAM /"
+        );
+    }
+
+    #[test]
+    fn call_arguments_span_lines_but_deferred_lists_do_not() {
+        let (s, _) = stream("CAL f(\n a := 1,\n b => c\n)\nAND( x\nOR y\n)\n");
+        assert_eq!(s, "CAL f ( a := 1 , b => c ) / AND ( x / OR y / ) /");
+        let (s, _) = stream("CAL f(a := 1\nLD x\n");
+        assert_eq!(s, "CAL f ( a := 1 / LD x /");
+    }
+
+    #[test]
+    fn semicolon_comment_is_reported_and_skipped() {
+        let (s, d) = stream("LD a ; it's a comment\nST b");
+        assert_eq!(s, "LD a / ST b /");
+        assert_eq!(d, vec!["E0007 `;` comments are not IEC 61131-3; use (* *)"]);
+        let (s, d) = stream("VAR a : INT; END_VAR");
+        assert_eq!(s, "VAR a : INT ; END_VAR /");
+        assert!(d.is_empty());
+    }
+
+    #[test]
+    fn unclosed_blocks_are_closed_and_reported_once() {
+        let (s, d) = stream("PROGRAM p\nVAR a : INT;\nLD a\nAND( b\nOR c\n");
+        assert_eq!(
+            s,
+            "PROGRAM p / VAR a : INT ; <END_VAR> LD a / AND ( b / OR c / <)> / <END_PROGRAM> /"
+        );
+        assert_eq!(
+            d,
+            vec![
+                "E0008 missing `END_VAR`",
+                "E0009 missing `)` of a deferred operator",
+                "E0008 missing `END_PROGRAM`"
+            ]
+        );
+        let (s, d) = stream("PROGRAM p\nAND( b\nOR c\nPROGRAM q\nEND_PROGRAM");
+        assert_eq!(
+            s,
+            "PROGRAM p / AND ( b / OR c / <)> / <END_PROGRAM> PROGRAM q / END_PROGRAM /"
+        );
+        assert_eq!(
+            d,
+            vec![
+                "E0009 missing `)` of a deferred operator",
+                "E0008 missing `END_PROGRAM`"
+            ]
+        );
+    }
+
+    #[test]
+    fn mismatched_pou_end_is_replaced() {
+        let (s, d) = stream("FUNCTION_BLOCK f\nEND_FUNCTION\n");
+        assert_eq!(s, "FUNCTION_BLOCK f / END_FUNCTION /");
+        assert_eq!(d, vec!["E0010 `END_FUNCTION` closes a FUNCTION_BLOCK"]);
+    }
+
+    #[test]
+    fn lexer_errors_become_error_tokens() {
+        let (s, d) = stream("LD 2#12\nST ?");
+        assert_eq!(s, "LD 2#12 / ST ? /");
+        assert_eq!(
+            d,
+            vec![
+                "E0005 invalid literal: `2` is not a base-2 digit",
+                "E0001 unexpected character `?`"
+            ]
+        );
+    }
+}

@@ -1,0 +1,826 @@
+//! The IL lexer: source text in, tokens with byte ranges out (a logos state machine plus value decoding).
+//!
+//! Input: UTF-8 source. Output: [`RawToken`]s (newlines included, comments and blanks skipped) with
+//! their byte ranges; [`crate::layout`] turns them into the parser's [`Tok`] stream.
+//! Invariants: every word goes through ONE keyword table ([`classify`]), case-insensitively; a word that
+//! spells an IL operator (`LD`, `IN`, `S1`, ...) is still usable as a name, the grammar decides by
+//! position. Literal values are decoded here; an invalid literal becomes [`LexError`] with a reason.
+
+use crate::ast::{AddressSize, Area};
+use crate::literal;
+use logos::{FilterResult, Logos};
+
+/// Why the lexer could not make a token of some text.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum LexError {
+    /// A character that starts no token.
+    #[default]
+    UnexpectedChar,
+    UnterminatedComment,
+    UnterminatedString,
+    /// A numeric, duration or date literal with no valid value; the reason.
+    BadLiteral(String),
+    /// `%` not followed by `I`, `Q` or `M` and a location.
+    BadAddress(String),
+}
+
+/// A problem inside an otherwise usable token (an invalid `$` escape): byte range and reason.
+pub type LexWarning = (std::ops::Range<usize>, String);
+
+/// Decoded value of a `T#`/`D#`/`TOD#`/`DT#` literal; `long` is the `L` form (`LTIME#`, `LDT#` ...).
+#[derive(Debug, Clone, PartialEq)]
+pub enum TimeValue {
+    Duration(i128, bool),
+    Date(i64, bool),
+    TimeOfDay(i64, bool),
+    DateAndTime(i128, bool),
+}
+
+/// The tokens of the logos state machine.
+#[derive(Logos, Debug, Clone, PartialEq)]
+#[logos(error = LexError)]
+#[logos(extras = Vec<LexWarning>)]
+#[logos(skip r"[ \t\r\f\u{FEFF}]+")]
+pub enum RawToken {
+    #[token("\n")]
+    Newline,
+    /// A `(* *)` comment that spans lines: it ends the line like a newline does.
+    #[token("(*", block_comment)]
+    CommentNewline,
+    #[regex(r"//[^\n]*", logos::skip, allow_greedy = true)]
+    LineComment,
+    #[regex(r"[A-Za-z_][A-Za-z0-9_]*")]
+    Word,
+    /// `INT#`, `BOOL#`, `Color#` (a typed literal or enum value follows) or a whole `T#1s`, `D#...`.
+    #[regex(r"[A-Za-z_][A-Za-z0-9_]*#", prefixed)]
+    Prefixed(Option<TimeValue>),
+    #[regex(r"[+-]?[0-9][0-9_]*", |l| literal::decimal_int(l.slice()).map_err(LexError::BadLiteral))]
+    #[regex(r"[0-9]+#[0-9A-Za-z_]*", |l| literal::based_int(l.slice()).map_err(LexError::BadLiteral))]
+    Int(i128),
+    #[regex(r"[+-]?[0-9][0-9_]*\.[0-9][0-9_]*([eE][+-]?[0-9]+)?", |l| literal::real(l.slice()).map_err(LexError::BadLiteral))]
+    #[regex(r"[+-]?[0-9][0-9_]*[eE][+-]?[0-9]+", |l| literal::real(l.slice()).map_err(LexError::BadLiteral))]
+    Real(f64),
+    #[token("'", |l| string(l, false))]
+    #[token("\"", |l| string(l, true))]
+    Str((bool, String)),
+    #[regex(r"%[A-Za-z0-9_.*]*", address)]
+    Address((Area, AddressSize, Vec<u32>)),
+    #[token("(")]
+    LParen,
+    #[token(")")]
+    RParen,
+    #[token("[")]
+    LBracket,
+    #[token("]")]
+    RBracket,
+    #[token(",")]
+    Comma,
+    #[token(":")]
+    Colon,
+    #[token(";")]
+    Semi,
+    #[token(":=")]
+    Assign,
+    #[token("=>")]
+    Arrow,
+    #[token("..")]
+    DotDot,
+    #[token(".")]
+    Dot,
+    #[token("&")]
+    Amp,
+    #[regex("&[Nn]")]
+    AmpN,
+}
+
+/// Skips a possibly nested `(* ... *)` comment; reports whether it spanned a line break.
+fn block_comment(lex: &mut logos::Lexer<RawToken>) -> FilterResult<(), LexError> {
+    let rest = lex.remainder().as_bytes();
+    let mut depth = 1usize;
+    let mut i = 0;
+    let mut newline = false;
+    while i < rest.len() {
+        match (rest[i], rest.get(i + 1)) {
+            (b'(', Some(b'*')) => {
+                depth += 1;
+                i += 2;
+            }
+            (b'*', Some(b')')) => {
+                depth -= 1;
+                i += 2;
+                if depth == 0 {
+                    lex.bump(i);
+                    return if newline {
+                        FilterResult::Emit(())
+                    } else {
+                        FilterResult::Skip
+                    };
+                }
+            }
+            (b'\n', _) => {
+                newline = true;
+                i += 1;
+            }
+            _ => i += 1,
+        }
+    }
+    lex.bump(rest.len());
+    FilterResult::Error(LexError::UnterminatedComment)
+}
+
+/// Scans a string body after its opening quote, decoding `$` escapes (invalid ones go to `extras`).
+fn string(lex: &mut logos::Lexer<RawToken>, wide: bool) -> Result<(bool, String), LexError> {
+    let quote = if wide { b'"' } else { b'\'' };
+    let rest = lex.remainder();
+    let bytes = rest.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'$' if i + 1 < bytes.len() && bytes[i + 1] != b'\n' => {
+                // Skip the escaped character (may be multi-byte UTF-8).
+                let ch_len = rest[i + 1..].chars().next().map_or(1, char::len_utf8);
+                i += 1 + ch_len;
+            }
+            b'\n' => break,
+            c if c == quote => {
+                let body_start = lex.span().end;
+                let (value, errors) = literal::unescape(&rest[..i], wide);
+                for (s, e, why) in errors {
+                    lex.extras.push((body_start + s..body_start + e, why));
+                }
+                lex.bump(i + 1);
+                return Ok((wide, value));
+            }
+            _ => i += 1,
+        }
+    }
+    lex.bump(i);
+    Err(LexError::UnterminatedString)
+}
+
+/// `%IX0.1`, `%QW3`, `%MD10`, `%i0.0`, `%I*`.
+fn address(lex: &mut logos::Lexer<RawToken>) -> Result<(Area, AddressSize, Vec<u32>), LexError> {
+    let text = lex.slice();
+    let bad = |why: &str| LexError::BadAddress(format!("`{text}` {why}"));
+    let mut chars = text[1..].chars().peekable();
+    let area = match chars.next().map(|c| c.to_ascii_uppercase()) {
+        Some('I') => Area::Input,
+        Some('Q') => Area::Output,
+        Some('M') => Area::Memory,
+        _ => return Err(bad("is not a direct address: the area must be I, Q or M")),
+    };
+    let size = match chars.peek().map(|c| c.to_ascii_uppercase()) {
+        Some('X') => Some(AddressSize::Bit),
+        Some('B') => Some(AddressSize::Byte),
+        Some('W') => Some(AddressSize::Word),
+        Some('D') => Some(AddressSize::DWord),
+        Some('L') => Some(AddressSize::LWord),
+        _ => None,
+    };
+    if size.is_some() {
+        chars.next();
+    }
+    let size = size.unwrap_or(AddressSize::Bit);
+    let rest: String = chars.collect();
+    if rest == "*" {
+        return Ok((area, size, Vec::new()));
+    }
+    let mut path = Vec::new();
+    for part in rest.split('.') {
+        if part.is_empty() || !part.bytes().all(|b| b.is_ascii_digit()) {
+            return Err(bad(
+                "is not a valid location: expected numbers separated by dots (e.g. %IX0.1)",
+            ));
+        }
+        path.push(
+            part.parse::<u32>()
+                .map_err(|_| bad("has a location number that is too large"))?,
+        );
+    }
+    Ok((area, size, path))
+}
+
+/// `INT#`, `T#1h`, `DATE#2001-04-09` ...: decodes the date/time families right away (their bodies
+/// contain `:` `-` `.` that are other tokens elsewhere); other prefixes stay prefixes.
+fn prefixed(lex: &mut logos::Lexer<RawToken>) -> Result<Option<TimeValue>, LexError> {
+    let prefix = lex.slice().trim_end_matches('#').to_ascii_uppercase();
+    #[derive(Clone, Copy)]
+    enum Fam {
+        Dur,
+        Date,
+        Tod,
+        Dt,
+    }
+    let (fam, long) = match prefix.as_str() {
+        "T" | "TIME" => (Fam::Dur, false),
+        "LT" | "LTIME" => (Fam::Dur, true),
+        "D" | "DATE" => (Fam::Date, false),
+        "LD" | "LDATE" => (Fam::Date, true),
+        "TOD" | "TIME_OF_DAY" => (Fam::Tod, false),
+        "LTOD" | "LTIME_OF_DAY" => (Fam::Tod, true),
+        "DT" | "DATE_AND_TIME" => (Fam::Dt, false),
+        "LDT" | "LDATE_AND_TIME" => (Fam::Dt, true),
+        _ => return Ok(None),
+    };
+    let rest = lex.remainder().as_bytes();
+    let allowed = |i: usize, c: u8| match fam {
+        Fam::Dur => {
+            c.is_ascii_alphanumeric()
+                || c == b'_'
+                || c == b'.'
+                || (i == 0 && (c == b'-' || c == b'+'))
+        }
+        Fam::Date => c.is_ascii_digit() || c == b'-',
+        Fam::Tod => c.is_ascii_digit() || c == b':' || c == b'.',
+        Fam::Dt => c.is_ascii_digit() || c == b'-' || c == b':' || c == b'.',
+    };
+    let n = rest
+        .iter()
+        .enumerate()
+        .take_while(|&(i, &c)| allowed(i, c))
+        .count();
+    let body = &lex.remainder()[..n];
+    let value = match fam {
+        Fam::Dur => literal::duration(body).map(|v| TimeValue::Duration(v, long)),
+        Fam::Date => literal::date(body).map(|v| TimeValue::Date(v, long)),
+        Fam::Tod => literal::time_of_day(body).map(|v| TimeValue::TimeOfDay(v, long)),
+        Fam::Dt => literal::date_and_time(body).map(|v| TimeValue::DateAndTime(v, long)),
+    };
+    lex.bump(n);
+    value.map(Some).map_err(LexError::BadLiteral)
+}
+
+/// The class of a word: a plain identifier or one of the keywords. Classified by [`classify`] only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Word {
+    Ident,
+    // IL operators: also usable as names (`IN := x`, `tmr.PT`, a variable named `R1`).
+    Ld,
+    Ldn,
+    St,
+    Stn,
+    S,
+    R,
+    And,
+    Andn,
+    Or,
+    Orn,
+    Xor,
+    Xorn,
+    Not,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    Le,
+    Lt,
+    Jmp,
+    Jmpc,
+    Jmpcn,
+    Cal,
+    Calc,
+    Calcn,
+    Ret,
+    Retc,
+    Retcn,
+    S1,
+    R1,
+    Clk,
+    Cu,
+    Cd,
+    Pv,
+    In,
+    Pt,
+    /// The `FUNC Name()` embedded-C extension.
+    Func,
+    // Reserved words: never names.
+    Program,
+    EndProgram,
+    Function,
+    EndFunction,
+    FunctionBlock,
+    EndFunctionBlock,
+    Var,
+    VarInput,
+    VarOutput,
+    VarInOut,
+    VarTemp,
+    VarGlobal,
+    VarExternal,
+    VarAccess,
+    VarConfig,
+    EndVar,
+    Constant,
+    Retain,
+    NonRetain,
+    At,
+    Type,
+    EndType,
+    Struct,
+    EndStruct,
+    Array,
+    Of,
+    String,
+    WString,
+    Configuration,
+    EndConfiguration,
+    Resource,
+    EndResource,
+    On,
+    Task,
+    With,
+    True,
+    False,
+    REdge,
+    FEdge,
+}
+
+/// THE keyword table: every word of the source is classified here, case-insensitively.
+pub fn classify(word: &str) -> Word {
+    let mut buf = [0u8; 20];
+    if word.len() > buf.len() {
+        return Word::Ident;
+    }
+    let up = &mut buf[..word.len()];
+    up.copy_from_slice(word.as_bytes());
+    up.make_ascii_uppercase();
+    use Word::*;
+    match &*up {
+        b"LD" => Ld,
+        b"LDN" => Ldn,
+        b"ST" => St,
+        b"STN" => Stn,
+        b"S" => S,
+        b"R" => R,
+        b"AND" => And,
+        b"ANDN" => Andn,
+        b"OR" => Or,
+        b"ORN" => Orn,
+        b"XOR" => Xor,
+        b"XORN" => Xorn,
+        b"NOT" => Not,
+        b"ADD" => Add,
+        b"SUB" => Sub,
+        b"MUL" => Mul,
+        b"DIV" => Div,
+        b"MOD" => Mod,
+        b"GT" => Gt,
+        b"GE" => Ge,
+        b"EQ" => Eq,
+        b"NE" => Ne,
+        b"LE" => Le,
+        b"LT" => Lt,
+        b"JMP" => Jmp,
+        b"JMPC" => Jmpc,
+        b"JMPCN" | b"JMPNC" => Jmpcn,
+        b"CAL" => Cal,
+        b"CALC" => Calc,
+        b"CALCN" | b"CALNC" => Calcn,
+        b"RET" => Ret,
+        b"RETC" => Retc,
+        b"RETCN" | b"RETNC" => Retcn,
+        b"S1" => S1,
+        b"R1" => R1,
+        b"CLK" => Clk,
+        b"CU" => Cu,
+        b"CD" => Cd,
+        b"PV" => Pv,
+        b"IN" => In,
+        b"PT" => Pt,
+        b"FUNC" => Func,
+        b"PROGRAM" => Program,
+        b"END_PROGRAM" => EndProgram,
+        b"FUNCTION" => Function,
+        b"END_FUNCTION" => EndFunction,
+        b"FUNCTION_BLOCK" => FunctionBlock,
+        b"END_FUNCTION_BLOCK" => EndFunctionBlock,
+        b"VAR" => Var,
+        b"VAR_INPUT" => VarInput,
+        b"VAR_OUTPUT" => VarOutput,
+        b"VAR_IN_OUT" => VarInOut,
+        b"VAR_TEMP" => VarTemp,
+        b"VAR_GLOBAL" => VarGlobal,
+        b"VAR_EXTERNAL" => VarExternal,
+        b"VAR_ACCESS" => VarAccess,
+        b"VAR_CONFIG" => VarConfig,
+        b"END_VAR" => EndVar,
+        b"CONSTANT" => Constant,
+        b"RETAIN" => Retain,
+        b"NON_RETAIN" => NonRetain,
+        b"AT" => At,
+        b"TYPE" => Type,
+        b"END_TYPE" => EndType,
+        b"STRUCT" => Struct,
+        b"END_STRUCT" => EndStruct,
+        b"ARRAY" => Array,
+        b"OF" => Of,
+        b"STRING" => String,
+        b"WSTRING" => WString,
+        b"CONFIGURATION" => Configuration,
+        b"END_CONFIGURATION" => EndConfiguration,
+        b"RESOURCE" => Resource,
+        b"END_RESOURCE" => EndResource,
+        b"ON" => On,
+        b"TASK" => Task,
+        b"WITH" => With,
+        b"TRUE" => True,
+        b"FALSE" => False,
+        b"R_EDGE" => REdge,
+        b"F_EDGE" => FEdge,
+        _ => Ident,
+    }
+}
+
+impl Word {
+    /// IL operator words (and `FUNC`) may also be used as names.
+    pub fn is_name(self) -> bool {
+        (self as u8) <= (Word::Func as u8)
+    }
+    /// Operators that take a parenthesised deferred operand: `AND(`, `ADD(`, `GT(` ...
+    pub fn is_deferrable(self) -> bool {
+        use Word::*;
+        matches!(
+            self,
+            And | Andn
+                | Or
+                | Orn
+                | Xor
+                | Xorn
+                | Add
+                | Sub
+                | Mul
+                | Div
+                | Mod
+                | Gt
+                | Ge
+                | Eq
+                | Ne
+                | Le
+                | Lt
+        )
+    }
+    /// The simple operators `LD` ... `LT` (a `(` after one at the start of an instruction opens a
+    /// nested list; only [`Word::is_deferrable`] ones may, the parser reports the others).
+    pub fn is_simple_op(self) -> bool {
+        (Word::Ld as u8..=Word::Lt as u8).contains(&(self as u8))
+    }
+    /// The `END_*` keyword that closes a POU opened by this keyword.
+    pub fn pou_end(self) -> Option<Word> {
+        match self {
+            Word::Program => Some(Word::EndProgram),
+            Word::Function => Some(Word::EndFunction),
+            Word::FunctionBlock => Some(Word::EndFunctionBlock),
+            _ => None,
+        }
+    }
+    /// The canonical upper-case spelling (for messages).
+    pub fn spelling(self) -> &'static str {
+        use Word::*;
+        match self {
+            Ident => "identifier",
+            Ld => "LD",
+            Ldn => "LDN",
+            St => "ST",
+            Stn => "STN",
+            S => "S",
+            R => "R",
+            And => "AND",
+            Andn => "ANDN",
+            Or => "OR",
+            Orn => "ORN",
+            Xor => "XOR",
+            Xorn => "XORN",
+            Not => "NOT",
+            Add => "ADD",
+            Sub => "SUB",
+            Mul => "MUL",
+            Div => "DIV",
+            Mod => "MOD",
+            Gt => "GT",
+            Ge => "GE",
+            Eq => "EQ",
+            Ne => "NE",
+            Le => "LE",
+            Lt => "LT",
+            Jmp => "JMP",
+            Jmpc => "JMPC",
+            Jmpcn => "JMPCN",
+            Cal => "CAL",
+            Calc => "CALC",
+            Calcn => "CALCN",
+            Ret => "RET",
+            Retc => "RETC",
+            Retcn => "RETCN",
+            S1 => "S1",
+            R1 => "R1",
+            Clk => "CLK",
+            Cu => "CU",
+            Cd => "CD",
+            Pv => "PV",
+            In => "IN",
+            Pt => "PT",
+            Func => "FUNC",
+            Program => "PROGRAM",
+            EndProgram => "END_PROGRAM",
+            Function => "FUNCTION",
+            EndFunction => "END_FUNCTION",
+            FunctionBlock => "FUNCTION_BLOCK",
+            EndFunctionBlock => "END_FUNCTION_BLOCK",
+            Var => "VAR",
+            VarInput => "VAR_INPUT",
+            VarOutput => "VAR_OUTPUT",
+            VarInOut => "VAR_IN_OUT",
+            VarTemp => "VAR_TEMP",
+            VarGlobal => "VAR_GLOBAL",
+            VarExternal => "VAR_EXTERNAL",
+            VarAccess => "VAR_ACCESS",
+            VarConfig => "VAR_CONFIG",
+            EndVar => "END_VAR",
+            Constant => "CONSTANT",
+            Retain => "RETAIN",
+            NonRetain => "NON_RETAIN",
+            At => "AT",
+            Type => "TYPE",
+            EndType => "END_TYPE",
+            Struct => "STRUCT",
+            EndStruct => "END_STRUCT",
+            Array => "ARRAY",
+            Of => "OF",
+            String => "STRING",
+            WString => "WSTRING",
+            Configuration => "CONFIGURATION",
+            EndConfiguration => "END_CONFIGURATION",
+            Resource => "RESOURCE",
+            EndResource => "END_RESOURCE",
+            On => "ON",
+            Task => "TASK",
+            With => "WITH",
+            True => "TRUE",
+            False => "FALSE",
+            REdge => "R_EDGE",
+            FEdge => "F_EDGE",
+        }
+    }
+}
+
+/// The parser's tokens (what [`crate::layout`] hands to the grammar).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Tok {
+    /// Synthetic first token: parse a whole compilation unit.
+    UnitStart,
+    /// Synthetic first token: parse an instruction list alone.
+    BodyStart,
+    /// End of an IL line (consecutive line ends collapse into one).
+    Eol,
+    Word(Word),
+    /// `&` and `&N` (AND, AND NOT).
+    Amp,
+    AmpN,
+    Int(i128),
+    Real(f64),
+    Time(TimeValue),
+    Str(bool, String),
+    /// `INT#`, `Color#`: the name is the token text without `#`.
+    TypePrefix,
+    Address(Area, AddressSize, Vec<u32>),
+    LParen,
+    RParen,
+    LBracket,
+    RBracket,
+    Comma,
+    Colon,
+    Semi,
+    Assign,
+    Arrow,
+    DotDot,
+    Dot,
+    /// Text the lexer could not make a token of (already reported).
+    Error,
+}
+
+impl Tok {
+    /// How the token reads in a message: "`LD`", "end of line", "integer literal".
+    pub fn describe(&self, text: &str) -> String {
+        match self {
+            Tok::UnitStart | Tok::BodyStart => "start of file".into(),
+            Tok::Eol => "end of line".into(),
+            Tok::Word(_) | Tok::Amp | Tok::AmpN => format!("`{text}`"),
+            Tok::Int(_) | Tok::Real(_) | Tok::Time(_) | Tok::Str(..) => {
+                format!("literal `{text}`")
+            }
+            Tok::TypePrefix => format!("`{text}`"),
+            Tok::Address(..) => format!("address `{text}`"),
+            Tok::Error => "invalid text".into(),
+            _ if text.is_empty() => "end of file".into(),
+            _ => format!("`{text}`"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lex(src: &str) -> Vec<Result<RawToken, LexError>> {
+        RawToken::lexer(src).collect()
+    }
+
+    #[test]
+    fn keyword_table_is_case_insensitive_and_keeps_names_usable() {
+        assert_eq!(classify("ld"), Word::Ld);
+        assert_eq!(classify("JmpNC"), Word::Jmpcn);
+        assert_eq!(classify("end_function_block"), Word::EndFunctionBlock);
+        assert_eq!(classify("In"), Word::In);
+        assert_eq!(classify("x_1"), Word::Ident);
+        assert_eq!(classify("a_very_long_identifier_name"), Word::Ident);
+        assert!(Word::In.is_name() && Word::Func.is_name() && Word::S.is_name());
+        assert!(!Word::Program.is_name() && !Word::True.is_name());
+    }
+
+    #[test]
+    fn comments_and_newlines() {
+        use RawToken::*;
+        assert_eq!(
+            lex("LD x (* a (* nested *) b *)\n// line\nST y"),
+            vec![
+                Ok(Word),
+                Ok(Word),
+                Ok(Newline),
+                Ok(Newline),
+                Ok(Word),
+                Ok(Word)
+            ]
+        );
+        assert_eq!(
+            lex("a (* x\n y *) b"),
+            vec![Ok(Word), Ok(CommentNewline), Ok(Word)]
+        );
+        assert_eq!(
+            lex("a (* open"),
+            vec![Ok(Word), Err(LexError::UnterminatedComment)]
+        );
+    }
+
+    #[test]
+    fn numbers() {
+        use RawToken::*;
+        assert_eq!(
+            lex("1_000 -12 +3"),
+            vec![Ok(Int(1000)), Ok(Int(-12)), Ok(Int(3))]
+        );
+        assert_eq!(
+            lex("2#1010 8#17 16#a5 16#FF_FF"),
+            vec![Ok(Int(10)), Ok(Int(15)), Ok(Int(0xa5)), Ok(Int(0xffff))]
+        );
+        assert_eq!(
+            lex("23.6 -12e-5 1.5E3 -12e6"),
+            vec![
+                Ok(Real(23.6)),
+                Ok(Real(-12e-5)),
+                Ok(Real(1.5e3)),
+                Ok(Real(-12e6))
+            ]
+        );
+        assert_eq!(lex("0..127"), vec![Ok(Int(0)), Ok(DotDot), Ok(Int(127))]);
+        assert!(matches!(lex("2#102")[0], Err(LexError::BadLiteral(_))));
+    }
+
+    #[test]
+    fn typed_and_time_literals() {
+        use RawToken::*;
+        let s = literal::NS_PER_S;
+        assert_eq!(lex("INT#5"), vec![Ok(Prefixed(None)), Ok(Int(5))]);
+        assert_eq!(lex("REAL#1.5"), vec![Ok(Prefixed(None)), Ok(Real(1.5))]);
+        assert_eq!(lex("BOOL#TRUE"), vec![Ok(Prefixed(None)), Ok(Word)]);
+        assert_eq!(lex("UINT#16#a5"), vec![Ok(Prefixed(None)), Ok(Int(0xa5))]);
+        assert_eq!(
+            lex("T#1h2m3.5s"),
+            vec![Ok(Prefixed(Some(TimeValue::Duration(
+                3723 * s + s / 2,
+                false
+            ))))]
+        );
+        assert_eq!(
+            lex("TIME#1h_15m_30s_60ms"),
+            vec![Ok(Prefixed(Some(TimeValue::Duration(
+                4530 * s + 60_000_000,
+                false
+            ))))]
+        );
+        assert_eq!(
+            lex("t#-5s"),
+            vec![Ok(Prefixed(Some(TimeValue::Duration(-5 * s, false))))]
+        );
+        assert_eq!(
+            lex("LTIME#1ns"),
+            vec![Ok(Prefixed(Some(TimeValue::Duration(1, true))))]
+        );
+        assert_eq!(
+            lex("D#2001-04-09 DATE#1970-01-02"),
+            vec![
+                Ok(Prefixed(Some(TimeValue::Date(11_421, false)))),
+                Ok(Prefixed(Some(TimeValue::Date(1, false))))
+            ]
+        );
+        assert_eq!(
+            lex("TOD#11:36:15.20 TIME_OF_DAY#00:00:01"),
+            vec![
+                Ok(Prefixed(Some(TimeValue::TimeOfDay(
+                    41_775_200_000_000,
+                    false
+                )))),
+                Ok(Prefixed(Some(TimeValue::TimeOfDay(1_000_000_000, false))))
+            ]
+        );
+        assert_eq!(
+            lex("DT#1970-01-02-00:00:01 DATE_AND_TIME#2001-04-09-11:36:15.20"),
+            vec![
+                Ok(Prefixed(Some(TimeValue::DateAndTime(
+                    literal::NS_PER_DAY + s,
+                    false
+                )))),
+                Ok(Prefixed(Some(TimeValue::DateAndTime(
+                    11_421 * literal::NS_PER_DAY + 41_775_200_000_000,
+                    false
+                ))))
+            ]
+        );
+        // `DT` without `#` is a plain word (a formal argument name in the corpus).
+        assert_eq!(lex("DT:=1"), vec![Ok(Word), Ok(Assign), Ok(Int(1))]);
+        assert!(matches!(lex("T#5x")[0], Err(LexError::BadLiteral(_))));
+    }
+
+    #[test]
+    fn strings() {
+        use RawToken::*;
+        assert_eq!(
+            lex(r#"'a$'b$$' "x$"y" 'it' ''"#),
+            vec![
+                Ok(Str((false, "a'b$".into()))),
+                Ok(Str((true, "x\"y".into()))),
+                Ok(Str((false, "it".into()))),
+                Ok(Str((false, "".into())))
+            ]
+        );
+        assert_eq!(
+            lex("'$N$L$P$R$T$41'"),
+            vec![Ok(Str((false, "\n\n\u{c}\r\tA".into())))]
+        );
+        assert_eq!(
+            lex("'open\nLD"),
+            vec![Err(LexError::UnterminatedString), Ok(Newline), Ok(Word)]
+        );
+        let mut l = RawToken::lexer("'a$qb'");
+        assert_eq!(l.next(), Some(Ok(Str((false, "a$qb".into())))));
+        assert_eq!(l.extras.len(), 1);
+        assert_eq!(l.extras[0].0, 2..4);
+    }
+
+    #[test]
+    fn addresses() {
+        use AddressSize::*;
+        use RawToken::*;
+        assert_eq!(
+            lex("%IX0.1 %QW3 %MD10 %i0.0 %md4.23 %I*"),
+            vec![
+                Ok(Address((Area::Input, Bit, vec![0, 1]))),
+                Ok(Address((Area::Output, AddressSize::Word, vec![3]))),
+                Ok(Address((Area::Memory, DWord, vec![10]))),
+                Ok(Address((Area::Input, Bit, vec![0, 0]))),
+                Ok(Address((Area::Memory, DWord, vec![4, 23]))),
+                Ok(Address((Area::Input, Bit, vec![]))),
+            ]
+        );
+        assert!(matches!(lex("%Z1")[0], Err(LexError::BadAddress(_))));
+        assert!(matches!(lex("%IX")[0], Err(LexError::BadAddress(_))));
+    }
+
+    #[test]
+    fn punctuation() {
+        use RawToken::*;
+        assert_eq!(
+            lex("( ) [ ] , : ; := => .. . & &N"),
+            vec![
+                Ok(LParen),
+                Ok(RParen),
+                Ok(LBracket),
+                Ok(RBracket),
+                Ok(Comma),
+                Ok(Colon),
+                Ok(Semi),
+                Ok(Assign),
+                Ok(Arrow),
+                Ok(DotDot),
+                Ok(Dot),
+                Ok(Amp),
+                Ok(AmpN)
+            ]
+        );
+        assert_eq!(lex("?"), vec![Err(LexError::UnexpectedChar)]);
+    }
+}

@@ -1,0 +1,796 @@
+//! The IL parser: runs [`crate::layout`] and the lalrpop grammar (`grammar.lalrpop`), builds the
+//! [`crate::ast`] and turns syntax errors into E0xxx diagnostics.
+//!
+//! Input: source text (a whole file, or an instruction list alone with the offset of its first byte in
+//! the file it comes from). Output: the syntax tree; every problem is a diagnostic, never a panic.
+//! Invariants: spans are `base + local offset`; each syntax error is reported once (the grammar skips to
+//! the end of the line, the `;` of a declaration, or the `END_*` of a block, then continues); the grammar
+//! is lenient where a precise message helps (an operator without its operand parses, then is reported
+//! here as "expected an operand after `LD`").
+
+use crate::ast::*;
+use crate::layout::Layout;
+use crate::lexer::{TimeValue, Tok, Word};
+use diagnostics::{code, Code, Diagnostic, Diagnostics, FileId, Severity, Span};
+use lalrpop_util::{ErrorRecovery, ParseError};
+
+#[allow(
+    clippy::all,
+    clippy::pedantic,
+    unused_parens,
+    unused_imports,
+    dead_code
+)]
+mod grammar {
+    include!(concat!(env!("OUT_DIR"), "/grammar.rs"));
+}
+
+/// What the grammar's start rule produces.
+pub enum Parsed {
+    Unit(TopParts),
+    Body(Vec<IlStmt>),
+}
+
+/// One top-level item while collecting a compilation unit.
+pub enum TopItem {
+    Nothing,
+    Element(LibraryElement),
+    Vars(VarBlock),
+    Stmt(IlStmt),
+}
+
+/// The compilation unit being collected; bare instructions and non-global `VAR` blocks go to the
+/// implicit program (see [`crate::parse_named`]).
+#[derive(Default)]
+pub struct TopParts {
+    pub items: Vec<LibraryElement>,
+    /// Index in `items` where the implicit program goes, with its parts.
+    pub implicit: Option<(usize, Vec<VarBlock>, Vec<IlStmt>)>,
+    pub first_bare: Option<Span>,
+}
+
+impl TopParts {
+    pub fn add(&mut self, item: TopItem) {
+        let at = self.items.len();
+        match item {
+            TopItem::Nothing => {}
+            TopItem::Element(e) => self.items.push(e),
+            TopItem::Vars(v) if v.kind == VarKind::Global => {
+                self.items.push(LibraryElement::GlobalVars(v))
+            }
+            TopItem::Vars(v) => {
+                self.first_bare.get_or_insert(v.span);
+                self.implicit
+                    .get_or_insert_with(|| (at, Vec::new(), Vec::new()))
+                    .1
+                    .push(v)
+            }
+            TopItem::Stmt(s) => {
+                let span = match &s {
+                    IlStmt::Label(i) => i.span,
+                    IlStmt::Instr(i) => i.span,
+                };
+                self.first_bare.get_or_insert(span);
+                self.implicit
+                    .get_or_insert_with(|| (at, Vec::new(), Vec::new()))
+                    .2
+                    .push(s)
+            }
+        }
+    }
+}
+
+/// One item of a POU while collecting it.
+pub enum PouItem {
+    Stmt(Option<IlStmt>),
+    Vars(VarBlock),
+}
+
+#[derive(Default)]
+pub struct PouParts {
+    pub vars: Vec<VarBlock>,
+    pub body: Vec<IlStmt>,
+}
+
+/// One item of a configuration or resource.
+pub enum ConfigItem {
+    Vars(VarBlock),
+    Resource(Resource),
+    Task(Task),
+    Program(ProgramInstance),
+    Nothing,
+}
+
+/// Simple operator as written: the operator, its `N` modifier, the keyword (for messages).
+pub type SimpleOp = (Op, bool, Word);
+
+/// Parser state shared by the grammar actions.
+pub struct Ctx<'s> {
+    pub file: FileId,
+    pub src: &'s str,
+    pub base: usize,
+    pub diags: Vec<Diagnostic>,
+}
+
+impl<'s> Ctx<'s> {
+    pub fn span(&self, l: usize, r: usize) -> Span {
+        Span::new(self.file, self.base + l, self.base + r)
+    }
+    pub fn text(&self, l: usize, r: usize) -> &'s str {
+        &self.src[l..r]
+    }
+    pub fn ident(&self, l: usize, r: usize) -> Ident {
+        Ident::new(&self.src[l..r], self.span(l, r))
+    }
+    fn error(&mut self, code: Code, msg: impl Into<String>, l: usize, r: usize) -> &mut Diagnostic {
+        let d = Diagnostic::error(code, msg).at(self.span(l, r));
+        self.diags.push(d);
+        self.diags.last_mut().expect("just pushed")
+    }
+    fn hint(&mut self, code: Code, msg: impl Into<String>, l: usize, r: usize, hint: &str) {
+        let d = self.error(code, msg, l, r);
+        d.hint = Some(hint.to_string());
+    }
+
+    // ------------------------------------------------------------ instructions
+
+    pub fn simple(
+        &mut self,
+        (op, negate, _word): SimpleOp,
+        operand: Option<Operand>,
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        let kw = self.text(l, l + word_len(self.src, l));
+        match (op, &operand) {
+            (Op::Not, Some(o)) => {
+                let (os, oe) = self.local(o.span());
+                self.hint(
+                    code::E0013,
+                    "`NOT` takes no operand",
+                    os,
+                    oe,
+                    "`NOT` inverts the current result; to load an inverted value write `LDN`",
+                );
+            }
+            (Op::Not | Op::S | Op::R, None) => {}
+            (_, None) => {
+                let what = if op == Op::St {
+                    "a variable or address"
+                } else {
+                    "an operand"
+                };
+                self.hint(
+                    code::E0012,
+                    format!("expected {what} after `{kw}`"),
+                    l,
+                    r,
+                    &format!("write what `{kw}` works on on the same line, e.g. `{kw} x`"),
+                );
+                return None;
+            }
+            _ => {}
+        }
+        Some(Instruction {
+            kind: InstrKind::Simple {
+                op,
+                negate,
+                operand,
+            },
+            span: self.span(l, r),
+        })
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    pub fn deferred(
+        &mut self,
+        (op, negate, word): SimpleOp,
+        operand: Option<Operand>,
+        body: Vec<IlStmt>,
+        close: (usize, usize),
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        if !word.is_deferrable() && !matches!(word, Word::Ident) {
+            let kw = self.text(l, l + word_len(self.src, l)).to_string();
+            self.hint(
+                code::E0021,
+                format!("`{kw}` cannot take a parenthesised operand"),
+                l,
+                r.min(l + kw.len() + 1),
+                "only AND, OR, XOR (and their N forms), &, ADD, SUB, MUL, DIV, MOD and the comparisons can be deferred",
+            );
+            return None;
+        }
+        Some(Instruction {
+            kind: InstrKind::Deferred {
+                op,
+                negate,
+                operand,
+                body,
+                close: self.span(close.0, close.1),
+            },
+            span: self.span(l, r),
+        })
+    }
+
+    pub fn jump(
+        &mut self,
+        cond: Condition,
+        label: Option<Ident>,
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        let Some(label) = label else {
+            let kw = self.text(l, r).to_string();
+            self.hint(
+                code::E0014,
+                format!("expected a label after `{kw}`"),
+                l,
+                r,
+                &format!("write the label to jump to, e.g. `{kw} done`"),
+            );
+            return None;
+        };
+        Some(Instruction {
+            kind: InstrKind::Jump { cond, label },
+            span: self.span(l, r),
+        })
+    }
+
+    pub fn ret(
+        &mut self,
+        cond: Condition,
+        operand: Option<Operand>,
+        l: usize,
+        _r: usize,
+    ) -> Option<Instruction> {
+        let kw_end = l + word_len(self.src, l);
+        if let Some(o) = operand {
+            let (os, oe) = self.local(o.span());
+            let kw = self.text(l, kw_end).to_string();
+            self.hint(
+                code::E0013,
+                format!("`{kw}` takes no operand"),
+                os,
+                oe,
+                "remove the operand; the function result is the variable named like the function",
+            );
+        }
+        Some(Instruction {
+            kind: InstrKind::Return { cond },
+            span: self.span(l, kw_end),
+        })
+    }
+
+    pub fn call(
+        &mut self,
+        cond: Condition,
+        instance: Option<VarRef>,
+        args: CallArgs,
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        let Some(instance) = instance else {
+            let kw = self.text(l, l + word_len(self.src, l)).to_string();
+            self.hint(
+                code::E0012,
+                format!("expected a function block instance after `{kw}`"),
+                l,
+                r,
+                &format!("write the instance to call, e.g. `{kw} timer1(IN := start, PT := T#5s)`"),
+            );
+            return None;
+        };
+        Some(Instruction {
+            kind: InstrKind::Call {
+                cond,
+                instance,
+                args,
+            },
+            span: self.span(l, r),
+        })
+    }
+
+    pub fn fb_input(
+        &mut self,
+        op: FbInputOp,
+        instance: Option<VarRef>,
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        let Some(instance) = instance else {
+            let kw = self.text(l, r).to_string();
+            self.hint(
+                code::E0012,
+                format!("expected a function block instance after `{kw}`"),
+                l,
+                r,
+                &format!(
+                    "`{kw}` stores the current result into input {} of an instance and calls it, e.g. `{kw} timer1`",
+                    op.input_name()
+                ),
+            );
+            return None;
+        };
+        Some(Instruction {
+            kind: InstrKind::FbInput { op, instance },
+            span: self.span(l, r),
+        })
+    }
+
+    pub fn instr(&self, kind: InstrKind, l: usize, r: usize) -> Option<Instruction> {
+        Some(Instruction {
+            kind,
+            span: self.span(l, r),
+        })
+    }
+
+    // ------------------------------------------------------------ literals
+
+    pub fn literal(&self, kind: LiteralKind, prefix: Option<Ident>, l: usize, r: usize) -> Literal {
+        Literal {
+            kind,
+            type_prefix: prefix,
+            span: self.span(l, r),
+        }
+    }
+
+    /// `T#..`, `D#..`, ...: no prefix, except the long (`L`) forms, whose prefix is the canonical name.
+    pub fn time_literal(&self, t: TimeValue, l: usize, r: usize) -> Literal {
+        let hash = self.src[l..r].find('#').map_or(l, |i| l + i);
+        let long = |name: &str| Some(Ident::new(name, self.span(l, hash)));
+        let (kind, prefix) = match t {
+            TimeValue::Duration(v, lg) => (
+                LiteralKind::Duration(v),
+                lg.then(|| long("LTIME")).flatten(),
+            ),
+            TimeValue::Date(v, lg) => (LiteralKind::Date(v), lg.then(|| long("LDATE")).flatten()),
+            TimeValue::TimeOfDay(v, lg) => (
+                LiteralKind::TimeOfDay(v),
+                lg.then(|| long("LTOD")).flatten(),
+            ),
+            TimeValue::DateAndTime(v, lg) => (
+                LiteralKind::DateAndTime(v),
+                lg.then(|| long("LDT")).flatten(),
+            ),
+        };
+        self.literal(kind, prefix, l, r)
+    }
+
+    // ------------------------------------------------------------ declarations
+
+    pub fn pou(
+        &mut self,
+        kind: PouKind,
+        name: Ident,
+        return_type: Option<TypeRef>,
+        parts: PouParts,
+        l: usize,
+        r: usize,
+    ) -> Pou {
+        if kind == PouKind::Function && return_type.is_none() {
+            let (s, e) = self.local(name.span);
+            self.hint(
+                code::E0018,
+                format!("function `{}` has no result type", name.name),
+                s,
+                e,
+                &format!(
+                    "write the result type after the name, e.g. `FUNCTION {} : INT`",
+                    name.name
+                ),
+            );
+        }
+        if kind != PouKind::Function {
+            if let Some(t) = &return_type {
+                let (s, e) = self.local(t.span());
+                self.hint(
+                    code::E0011,
+                    "only a FUNCTION has a result type",
+                    s,
+                    e,
+                    "remove `: type` after the name",
+                );
+            }
+        }
+        Pou {
+            kind,
+            name,
+            return_type: if kind == PouKind::Function {
+                return_type
+            } else {
+                None
+            },
+            var_blocks: parts.vars,
+            body: parts.body,
+            span: self.span(l, r),
+        }
+    }
+
+    pub fn pou_item(&mut self, mut parts: PouParts, item: PouItem) -> PouParts {
+        match item {
+            PouItem::Stmt(Some(s)) => parts.body.push(s),
+            PouItem::Stmt(None) => {}
+            PouItem::Vars(v) => {
+                if let Some(first) = parts.body.first() {
+                    let first = match first {
+                        IlStmt::Label(i) => i.span,
+                        IlStmt::Instr(i) => i.span,
+                    };
+                    let (s, e) = self.local(v.span);
+                    let s_end = (s + word_len(self.src, s)).min(e);
+                    let d = self.error(code::E0015, "declarations after instructions", s, s_end);
+                    d.primary_label = "this block follows the instruction list".into();
+                    d.labels.push(diagnostics::Label {
+                        span: first,
+                        message: "the instruction list starts here".into(),
+                    });
+                    d.hint = Some("move the declaration block before the first instruction".into());
+                }
+                parts.vars.push(v);
+            }
+        }
+        parts
+    }
+
+    pub fn var_block(
+        &mut self,
+        kind: VarKind,
+        quals: Vec<Word>,
+        vars: Vec<VarDecl>,
+        l: usize,
+        r: usize,
+    ) -> VarBlock {
+        VarBlock {
+            kind,
+            constant: quals.contains(&Word::Constant),
+            retain: quals.contains(&Word::Retain),
+            vars,
+            span: self.span(l, r),
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    pub fn var_decls(
+        &mut self,
+        names: Vec<Ident>,
+        location: Option<DirectAddress>,
+        ty: TypeRef,
+        edge: Option<(usize, usize)>,
+        init: Option<Initializer>,
+        l: usize,
+        r: usize,
+    ) -> Vec<VarDecl> {
+        if let Some((s, e)) = edge {
+            let kw = self.text(s, e).to_ascii_uppercase();
+            self.hint(
+                code::E0016,
+                format!("edge-triggered inputs (`{kw}`) are not supported"),
+                s,
+                e,
+                "declare a plain BOOL input and detect the edge with an R_TRIG or F_TRIG instance",
+            );
+        }
+        if location.is_some() && names.len() > 1 {
+            let (s, e) = self.local(names[1].span);
+            self.hint(
+                code::E0017,
+                "one location (`AT`) for several names",
+                s,
+                e,
+                "declare each located variable on its own line",
+            );
+        }
+        let span = self.span(l, r);
+        names
+            .into_iter()
+            .map(|name| VarDecl {
+                name,
+                location: location.clone(),
+                ty: ty.clone(),
+                init: init.clone(),
+                span,
+            })
+            .collect()
+    }
+
+    pub fn int_in<T>(&mut self, v: i128, what: &str, l: usize, r: usize) -> T
+    where
+        T: TryFrom<i128> + Default,
+    {
+        T::try_from(v).unwrap_or_else(|_| {
+            self.hint(
+                code::E0005,
+                format!("{what} `{v}` is out of range"),
+                l,
+                r,
+                &format!("write a non-negative {what} that fits the target"),
+            );
+            T::default()
+        })
+    }
+
+    // ------------------------------------------------------------ configurations
+
+    pub fn configuration(
+        &mut self,
+        name: Ident,
+        items: Vec<ConfigItem>,
+        l: usize,
+        r: usize,
+    ) -> Configuration {
+        let mut globals = Vec::new();
+        let mut resources = Vec::new();
+        let mut loose = Resource {
+            name: name.clone(),
+            on: None,
+            globals: Vec::new(),
+            tasks: Vec::new(),
+            programs: Vec::new(),
+            span: self.span(l, r),
+        };
+        for item in items {
+            match item {
+                ConfigItem::Vars(v) => globals.push(v),
+                ConfigItem::Resource(res) => resources.push(res),
+                ConfigItem::Task(t) => loose.tasks.push(t),
+                ConfigItem::Program(p) => loose.programs.push(p),
+                ConfigItem::Nothing => {}
+            }
+        }
+        if !loose.tasks.is_empty() || !loose.programs.is_empty() || resources.is_empty() {
+            resources.push(loose);
+        }
+        Configuration {
+            name,
+            globals,
+            resources,
+            span: self.span(l, r),
+        }
+    }
+
+    pub fn resource(
+        &mut self,
+        name: Ident,
+        on: Option<Ident>,
+        items: Vec<ConfigItem>,
+        l: usize,
+        r: usize,
+    ) -> Resource {
+        let mut res = Resource {
+            name,
+            on,
+            globals: Vec::new(),
+            tasks: Vec::new(),
+            programs: Vec::new(),
+            span: self.span(l, r),
+        };
+        for item in items {
+            match item {
+                ConfigItem::Vars(v) => res.globals.push(v),
+                ConfigItem::Task(t) => res.tasks.push(t),
+                ConfigItem::Program(p) => res.programs.push(p),
+                ConfigItem::Resource(inner) => {
+                    let (s, e) = self.local(inner.name.span);
+                    self.hint(
+                        code::E0011,
+                        "a RESOURCE cannot contain another RESOURCE",
+                        s,
+                        e,
+                        "close the first resource with END_RESOURCE",
+                    );
+                }
+                ConfigItem::Nothing => {}
+            }
+        }
+        res
+    }
+
+    pub fn task(
+        &mut self,
+        name: Ident,
+        settings: Vec<(Ident, Operand)>,
+        l: usize,
+        r: usize,
+    ) -> Task {
+        let mut task = Task {
+            name,
+            interval: None,
+            single: None,
+            priority: None,
+            span: self.span(l, r),
+        };
+        for (key, value) in settings {
+            let (s, e) = self.local(key.span.to(value.span()));
+            match key.key().as_str() {
+                "INTERVAL" => task.interval = Some(value),
+                "SINGLE" => task.single = Some(value),
+                "PRIORITY" => match &value {
+                    Operand::Literal(Literal {
+                        kind: LiteralKind::Int(p),
+                        ..
+                    }) if u32::try_from(*p).is_ok() => task.priority = Some(*p as u32),
+                    _ => self.hint(
+                        code::E0020,
+                        "task priority must be a non-negative integer",
+                        s,
+                        e,
+                        "write e.g. `PRIORITY := 1` (0 is the highest priority)",
+                    ),
+                },
+                _ => self.hint(
+                    code::E0020,
+                    format!("`{}` is not a task setting", key.name),
+                    s,
+                    e,
+                    "a TASK takes INTERVAL, SINGLE and PRIORITY",
+                ),
+            }
+        }
+        task
+    }
+
+    // ------------------------------------------------------------ errors
+
+    fn local(&self, span: Span) -> (usize, usize) {
+        (
+            (span.start as usize).saturating_sub(self.base),
+            (span.end as usize).saturating_sub(self.base),
+        )
+    }
+
+    /// Reports a syntax error the grammar recovered from (lexer error tokens were reported already).
+    pub fn recover(&mut self, e: ErrorRecovery<usize, Tok, ()>) {
+        let (s, tok, end, expected) = match e.error {
+            ParseError::UnrecognizedToken {
+                token: (s, tok, end),
+                expected,
+            } => (s, tok, end, expected),
+            ParseError::UnrecognizedEof { location, expected } => {
+                (location, Tok::Eol, location, expected)
+            }
+            ParseError::ExtraToken {
+                token: (s, tok, end),
+            } => (s, tok, end, Vec::new()),
+            ParseError::InvalidToken { location } => (location, Tok::Error, location, Vec::new()),
+            ParseError::User { .. } => return,
+        };
+        if tok == Tok::Error {
+            return;
+        }
+        let text = self.text(s, end);
+        let found = if end == s && tok != Tok::Eol {
+            match &tok {
+                Tok::Word(w) => format!("`{}`", w.spelling()),
+                _ => "end of block".to_string(),
+            }
+        } else {
+            tok.describe(text)
+        };
+        let expect = summarize_expected(&expected);
+        let eol_expected = expected.iter().any(|x| x == "EOL");
+        let semi_expected = expected.iter().any(|x| x == "\";\"");
+        let (msg, hint) = if semi_expected && !eol_expected && tok != Tok::Semi {
+            (
+                format!("expected `;` before {found}"),
+                "end each declaration with `;`".to_string(),
+            )
+        } else if tok == Tok::Eol {
+            (
+                format!("unexpected end of line; expected {expect}"),
+                "complete the instruction or declaration on this line".to_string(),
+            )
+        } else if eol_expected {
+            (
+                format!("unexpected {found} after the instruction"),
+                "an instruction ends at the end of its line: one operator and at most one operand per line"
+                    .to_string(),
+            )
+        } else {
+            (format!("unexpected {found}"), format!("expected {expect}"))
+        };
+        let (s, end) = if tok == Tok::Eol { (s, s) } else { (s, end) };
+        self.hint(code::E0011, msg, s, end, &hint);
+    }
+}
+
+/// Byte length of the word starting at `at` (an operator keyword).
+fn word_len(src: &str, at: usize) -> usize {
+    src[at..]
+        .bytes()
+        .take_while(|b| b.is_ascii_alphanumeric() || *b == b'_' || *b == b'&')
+        .count()
+}
+
+/// The expected-token list of a syntax error in words (names and operands grouped).
+fn summarize_expected(expected: &[String]) -> String {
+    let has = |t: &str| expected.iter().any(|x| x == t);
+    let mut parts: Vec<String> = Vec::new();
+    let operand = has("IDENT") && has("INT");
+    if operand {
+        parts.push("an operand".into());
+    } else if has("IDENT") {
+        parts.push("a name".into());
+    } else if has("INT") {
+        parts.push("a number".into());
+    }
+    if has("EOL") {
+        parts.push("end of line".into());
+    }
+    for x in expected {
+        let t = x.trim_matches('"');
+        if x.starts_with('"') && !parts.iter().any(|p| p.contains(t)) {
+            let name_like = t
+                .chars()
+                .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
+                && crate::lexer::classify(t).is_name();
+            if (operand || has("IDENT")) && name_like {
+                continue;
+            }
+            if matches!(t, "R_EDGE" | "F_EDGE") || (operand && matches!(t, "TRUE" | "FALSE")) {
+                continue;
+            }
+            parts.push(format!("`{t}`"));
+        }
+    }
+    if parts.is_empty() {
+        return "something else".into();
+    }
+    if parts.len() > 6 {
+        parts.truncate(6);
+        parts.push("...".into());
+    }
+    parts.join(", ")
+}
+
+/// Parses `src` as tokens of `start` kind; diagnostics (lexer, layout, grammar) go to `diags`.
+pub(crate) fn run(
+    file: FileId,
+    src: &str,
+    base: usize,
+    start: Tok,
+    diags: &mut Diagnostics,
+) -> Option<Parsed> {
+    let mut layout = Layout::new(file, src, base, start);
+    let mut ctx = Ctx {
+        file,
+        src,
+        base,
+        diags: Vec::new(),
+    };
+    let result = grammar::StartParser::new().parse(&mut ctx, &mut layout);
+    let mut all = std::mem::take(&mut layout.diags);
+    all.append(&mut ctx.diags);
+    let parsed = match result {
+        Ok(p) => Some(p),
+        Err(e) => {
+            ctx.recover(ErrorRecovery {
+                error: e,
+                dropped_tokens: Vec::new(),
+            });
+            all.append(&mut ctx.diags);
+            None
+        }
+    };
+    // Lexer/layout diagnostics and grammar diagnostics interleave by position.
+    all.sort_by_key(|d| d.span.map(|s| (s.start, s.end)));
+    diags.extend(all);
+    parsed
+}
+
+/// The implicit program's warning (W0001).
+pub(crate) fn implicit_program_warning(at: Span, name: &str) -> Diagnostic {
+    Diagnostic::new(
+        code::W0001,
+        Severity::Warning,
+        "instructions outside any POU".to_string(),
+    )
+    .at(at)
+    .with_primary_label(format!(
+        "accepted as the body of an implicit `PROGRAM {name}`"
+    ))
+    .with_hint(format!(
+        "wrap the instructions in `PROGRAM {name}` ... `END_PROGRAM` to silence this warning"
+    ))
+}
