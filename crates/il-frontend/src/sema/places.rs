@@ -475,7 +475,7 @@ impl Body<'_, '_> {
             .iter()
             .map(|v| v.name.clone())
             .chain(self.a.model.globals.iter().map(|g| g.name.clone()))
-            .filter(|n| edit_distance(&n.to_ascii_uppercase(), &up) <= 2.max(up.len() / 4))
+            .filter(|n| edit_distance(&n.to_ascii_uppercase(), &up) <= (up.len() / 3).clamp(1, 2))
             .min_by_key(|n| edit_distance(&n.to_ascii_uppercase(), &up));
         match best {
             Some(b) => format!("did you mean `{b}`? otherwise declare `{name}` in a VAR block"),
@@ -618,17 +618,28 @@ pub(super) fn conversion_hint(from: &str, to: &str) -> String {
     }
 }
 
-/// Levenshtein distance (for "did you mean").
+/// Edit distance with adjacent transpositions (optimal string alignment), for "did you mean".
 fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
     let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let sub = prev[j] + usize::from(ca != *cb);
-            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
-        }
-        prev = cur;
+    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
     }
-    prev[b.len()]
+    for j in 0..=b.len() {
+        d[0][j] = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            let mut v = (d[i - 1][j] + 1)
+                .min(d[i][j - 1] + 1)
+                .min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                v = v.min(d[i - 2][j - 2] + 1);
+            }
+            d[i][j] = v;
+        }
+    }
+    d[a.len()][b.len()]
 }
