@@ -141,7 +141,10 @@ impl Analyzer<'_> {
                     .push((e.from, ty));
             }
         }
-        // Pass 2, reporting.
+        // Pass 2, reporting (about one name per instruction).
+        let n = b.recs.len();
+        b.a.model.names.reserve(n);
+        b.a.model.instrs.reserve(n);
         b.backward = backward;
         b.lits = LitVars::default();
         b.recs.clear();
