@@ -195,6 +195,7 @@ VAR_INPUT
 END_VAR
 VAR CONSTANT
   max : INT := 10;
+  locked : BOOL := TRUE;
 END_VAR
 VAR
   t : TON;
@@ -206,6 +207,8 @@ END_VAR
   S start
   LD t.Q
   ST t.Q
+  CAL t(IN := FALSE, Q => start)
+  R locked
 END_FUNCTION_BLOCK
 "
     ));
