@@ -556,3 +556,40 @@ END_FUNCTION
 "
     ));
 }
+
+#[test]
+fn invalid_initial_values() {
+    insta::assert_snapshot!(check(
+        "TYPE
+  Color : (red, green);
+END_TYPE
+PROGRAM Main
+VAR
+  b : BOOL := 5;
+  a : ARRAY [0..1] OF INT := [1, 2, 3];
+  c : Color := blue;
+  t : TON := (PT := T#1s, XX := 1);
+  n : INT := other;
+END_VAR
+  LD b
+  ST b
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn stores_into_what_cannot_be_written() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  x : BOOL;
+END_VAR
+  LD x
+  ST 5
+  ST %IX0.1
+  ST %QX0.1
+END_PROGRAM
+"
+    ));
+}
