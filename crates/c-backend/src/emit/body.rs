@@ -64,22 +64,37 @@ impl<'s, 'm> Body<'s, 'm> {
     }
 }
 
+/// An open deferred operator, waiting for its nested list.
+struct Deferred {
+    span: Span,
+    info: InstrInfo,
+    op: Op,
+    negate: bool,
+    /// The outer current result's type (`None` for `LD(`).
+    outer: Option<Type>,
+    /// The block-scoped local holding the outer result.
+    saved: String,
+}
+
 /// Collects the labels targeted by jumps (nested lists included).
 pub fn jump_targets(stmts: &[IlStmt], into: &mut HashSet<String>) {
-    for s in stmts {
-        if let IlStmt::Instr(i) = s {
-            match &i.kind {
-                InstrKind::Jump { label, .. } => {
-                    into.insert(label.key());
+    let mut lists = vec![stmts];
+    while let Some(list) = lists.pop() {
+        for s in list {
+            if let IlStmt::Instr(i) = s {
+                match &i.kind {
+                    InstrKind::Jump { label, .. } => {
+                        into.insert(label.key());
+                    }
+                    InstrKind::Deferred { body, .. } => lists.push(body),
+                    _ => {}
                 }
-                InstrKind::Deferred { body, .. } => jump_targets(body, into),
-                _ => {}
             }
         }
     }
 }
 
-impl Gen<'_> {
+impl<'a> Gen<'a> {
     /// The current-result local for values of `ty` (declared on first use).
     fn cr(&mut self, b: &mut Body, ty: &Type, span: Span) -> Option<String> {
         let base = match ty {
@@ -112,9 +127,10 @@ impl Gen<'_> {
         Some(name)
     }
 
-    fn info(&mut self, i: &Instruction) -> Option<InstrInfo> {
-        match self.model.instr(i.span) {
-            Some(info) => Some(info.clone()),
+    fn info(&mut self, i: &Instruction) -> Option<&'a InstrInfo> {
+        let model: &'a il_frontend::sema::Model = self.model;
+        match model.instr(i.span) {
+            Some(info) => Some(info),
             None => {
                 self.report_once(
                     Diagnostic::error(
@@ -129,8 +145,27 @@ impl Gen<'_> {
         }
     }
 
+    /// Translates a statement list. Nested lists of deferred operators are walked with an explicit
+    /// stack, so nesting depth is bounded by memory, not by the call stack.
     pub fn stmts(&mut self, b: &mut Body, stmts: &[IlStmt]) {
-        for s in stmts {
+        enum Work<'a> {
+            List(&'a [IlStmt]),
+            Close(Option<Box<Deferred>>),
+        }
+        let mut stack = vec![Work::List(stmts)];
+        while let Some(work) = stack.pop() {
+            let list = match work {
+                Work::Close(Some(d)) => {
+                    self.deferred_close(b, *d);
+                    continue;
+                }
+                Work::Close(None) => continue,
+                Work::List(list) => list,
+            };
+            let Some((s, rest)) = list.split_first() else {
+                continue;
+            };
+            stack.push(Work::List(rest));
             match s {
                 IlStmt::Label(l) => {
                     if b.targets.contains(&l.key()) {
@@ -140,7 +175,24 @@ impl Gen<'_> {
                         b.indent = ind;
                     }
                 }
-                IlStmt::Instr(i) => self.instr(b, i),
+                IlStmt::Instr(i) => {
+                    if let InstrKind::Deferred {
+                        op,
+                        negate,
+                        operand,
+                        body,
+                        ..
+                    } = &i.kind
+                    {
+                        let d = self.deferred_open(b, i, *op, *negate, operand.as_ref(), body);
+                        if d.is_some() {
+                            stack.push(Work::Close(d.map(Box::new)));
+                            stack.push(Work::List(body));
+                        }
+                    } else {
+                        self.instr(b, i);
+                    }
+                }
             }
         }
     }
@@ -181,22 +233,15 @@ impl Gen<'_> {
                         op,
                         negate,
                         operand,
-                    } => self.simple(b, i, &info, *op, *negate, operand.as_ref()),
-                    InstrKind::Deferred {
-                        op,
-                        negate,
-                        operand,
-                        body,
-                        close,
-                    } => self.deferred(b, i, &info, *op, *negate, operand.as_ref(), body, *close),
+                    } => self.simple(b, i, info, *op, *negate, operand.as_ref()),
                     InstrKind::Call {
                         cond,
                         instance,
                         args,
-                    } => self.cal(b, i, &info, *cond, instance, args),
-                    InstrKind::FunctionCall { args, .. } => self.function_call(b, i, &info, args),
+                    } => self.cal(b, i, info, *cond, instance, args),
+                    InstrKind::FunctionCall { args, .. } => self.function_call(b, i, info, args),
                     InstrKind::FbInput { op, instance } => {
-                        self.fb_input(b, i, &info, fb_input_name(*op), instance)
+                        self.fb_input(b, i, info, fb_input_name(*op), instance)
                     }
                     _ => {}
                 }
@@ -509,19 +554,20 @@ impl Gen<'_> {
         }
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn deferred(
+    /// Opens a deferred operator's block: saves the outer result, loads the implicit operand. Returns
+    /// what [`Gen::deferred_close`] needs, or `None` (block already closed) when the outer result is
+    /// unusable.
+    fn deferred_open(
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
         op: Op,
         negate: bool,
         operand: Option<&Operand>,
         body: &[IlStmt],
-        _close: Span,
-    ) {
+    ) -> Option<Deferred> {
         let span = i.span;
+        let info = self.info(i)?;
         b.depth += 1;
         let d = format!("d_{}", b.depth);
         b.line("{");
@@ -529,23 +575,20 @@ impl Gen<'_> {
         let outer = if op == Op::Ld {
             None
         } else {
-            let Some(before) = info.cr_before.clone() else {
+            let saved = info
+                .cr_before
+                .clone()
+                .and_then(|before| self.cr(b, &before, span).map(|cr| (before, cr)));
+            let Some((before, cr)) = saved else {
                 b.indent -= 1;
                 b.line("}");
                 b.depth -= 1;
-                return;
-            };
-            let Some(cr) = self.cr(b, &before, span) else {
-                b.indent -= 1;
-                b.line("}");
-                b.depth -= 1;
-                return;
+                return None;
             };
             let decl = ctypes::declare(self.model, &before, &d).unwrap_or_default();
             b.line(&format!("{decl} = {cr};"));
             Some(before)
         };
-        let nested_ty = info.operand.clone();
         if let Some(o) = operand {
             // the implicit LD that starts the nested list, typed as the first instruction expects
             let first = body.iter().find_map(|s| match s {
@@ -553,24 +596,36 @@ impl Gen<'_> {
                 _ => None,
             });
             let ty = first
-                .or_else(|| nested_ty.clone())
+                .or_else(|| info.operand.clone())
                 .unwrap_or_else(|| self.operand_type(b.scope, o, None));
             if let (Some(cr), Some(v)) = (self.cr(b, &ty, o.span()), self.value(b.scope, o, &ty)) {
                 b.line(&format!("{cr} = {v};"));
             }
         }
-        self.stmts(b, body);
-        if let (Some(vt), Some(after)) = (nested_ty, info.cr_after.clone()) {
+        Some(Deferred {
+            span,
+            info: info.clone(),
+            op,
+            negate,
+            outer,
+            saved: d,
+        })
+    }
+
+    /// Combines the saved outer result with the nested list's value and closes the block.
+    fn deferred_close(&mut self, b: &mut Body, d: Deferred) {
+        let span = d.span;
+        if let (Some(vt), Some(after)) = (d.info.operand.clone(), d.info.cr_after.clone()) {
             if let Some(vcr) = self.cr(b, &vt, span) {
-                let v = if negate { negated(&vcr, &vt) } else { vcr };
-                let res = match &outer {
+                let v = if d.negate { negated(&vcr, &vt) } else { vcr };
+                let res = match &d.outer {
                     None => Some(convert(&v, &vt, &after)),
                     Some(before) => {
-                        let common = std_common_type(info, before);
-                        let a = convert(&d, before, &common);
-                        let vty = self.operand_ty_for(info, &common, op);
+                        let common = std_common_type(&d.info, before);
+                        let a = convert(&d.saved, before, &common);
+                        let vty = self.operand_ty_for(&d.info, &common, d.op);
                         let v = convert(&v, &vt, &vty);
-                        self.binary(span, op, &a, &common, &v, &vty, &after)
+                        self.binary(span, d.op, &a, &common, &v, &vty, &after)
                     }
                 };
                 if let (Some(res), Some(cr)) = (res, self.cr(b, &after, span)) {
@@ -746,9 +801,7 @@ impl Gen<'_> {
         match fb {
             FbType::Standard(_) => false,
             FbType::User(id) => self
-                .model
-                .pou(id)
-                .var(param)
+                .pou_var(id, param)
                 .is_some_and(|v| v.kind == VarKind::InOut),
         }
     }
@@ -808,7 +861,7 @@ impl Gen<'_> {
                 .iter()
                 .find(|p| p.0.eq_ignore_ascii_case(input))
                 .map(|p| Type::Elementary(p.1)),
-            FbType::User(id) => self.model.pou(id).var(input).map(|v| v.ty.clone()),
+            FbType::User(id) => self.pou_var(id, input).map(|v| v.ty.clone()),
         };
         let Some(pty) = pty else {
             self.unsupported(instance.span, format!("the FB input `{input}`"));
@@ -1162,9 +1215,51 @@ impl Gen<'_> {
         from: &Type,
         to: &Type,
     ) -> Option<String> {
-        let (Some(f), Some(t)) = (from.elementary(), to.elementary()) else {
-            self.unsupported(span, "conversions to or from strings");
-            return None;
+        let (f, t) = match (from.elementary(), to.elementary()) {
+            (Some(f), Some(t)) => (f, t),
+            (Some(f), None) if matches!(to, Type::String { wide: false, .. }) => {
+                let ct = ctypes::elementary(f);
+                return Some(format!(
+                    "ladderc_str_of({}, &({ct}){{{v}}})",
+                    ctypes::type_tag(f)
+                ));
+            }
+            (None, Some(t)) if matches!(from, Type::String { wide: false, .. }) => {
+                return Some(match t {
+                    E::Bool => format!("ladderc_str_to_bool({v})"),
+                    E::Real | E::Lreal => {
+                        format!("(({})ladderc_str_to_real({v}))", ctypes::elementary(t))
+                    }
+                    E::Time | E::Ltime => format!("ladderc_str_to_time({v})"),
+                    _ if t.is_signed_integer() => {
+                        convert_elementary(&format!("ladderc_str_to_int({v})"), E::Lint, t)
+                    }
+                    _ if t.is_integer() || t.is_bit() => {
+                        convert_elementary(&format!("ladderc_str_to_uint({v})"), E::Ulint, t)
+                    }
+                    _ => {
+                        self.unsupported(span, "converting a STRING to a date or time of day");
+                        return None;
+                    }
+                });
+            }
+            (None, None) if from.is_string() && to.is_string() && !to.is_error() => {
+                if matches!(
+                    (from, to),
+                    (
+                        Type::String { wide: false, .. },
+                        Type::String { wide: false, .. }
+                    )
+                ) {
+                    return Some(convert(v, from, to));
+                }
+                self.unsupported(span, "WSTRING conversions");
+                return None;
+            }
+            _ => {
+                self.unsupported(span, "this conversion");
+                return None;
+            }
         };
         Some(match kind {
             ConversionKind::Plain => convert_elementary(v, f, t),

@@ -72,12 +72,14 @@ impl<'m> Scope<'m> {
     }
 }
 
-/// The C lvalue of POU variable `v` seen from its own body.
+/// The C lvalue of POU variable `v` seen from its own body (VAR_TEMP and FUNCTION variables are C
+/// locals, the rest instance members).
 pub fn own_var_lvalue(kind: PouKind, v: &Variable) -> String {
     let name = mangle::var(&v.name);
     match (kind, v.kind) {
         (PouKind::Function, VarKind::Output | VarKind::InOut) => format!("(*{name})"),
         (PouKind::Function, _) => name,
+        (_, VarKind::Temp) => name,
         (_, VarKind::InOut) => format!("(*self->{name})"),
         _ => format!("self->{name}"),
     }
@@ -285,13 +287,11 @@ impl Gen<'_> {
     fn field(&mut self, lv: &str, ty: &Type, f: &il_frontend::ast::Ident) -> Option<Place> {
         match ty {
             Type::Struct(id) => {
-                if let UserTypeDef::Struct { fields } = &self.model.user_type(*id).def {
-                    if let Some(v) = fields.iter().find(|v| v.is(&f.name)) {
-                        return Some(Place::Mem {
-                            lv: format!("{lv}.{}", mangle::var(&v.name)),
-                            ty: v.ty.clone(),
-                        });
-                    }
+                if let Some(v) = self.struct_field(*id, &f.name) {
+                    return Some(Place::Mem {
+                        lv: format!("{lv}.{}", mangle::var(&v.name)),
+                        ty: v.ty.clone(),
+                    });
                 }
             }
             Type::Fb(FbType::Standard(fb)) => {
@@ -304,7 +304,7 @@ impl Gen<'_> {
                 }
             }
             Type::Fb(FbType::User(id)) => {
-                if let Some(v) = self.model.pou(*id).var(&f.name) {
+                if let Some(v) = self.pou_var(*id, &f.name) {
                     let name = mangle::var(&v.name);
                     let lv = if v.kind == VarKind::InOut {
                         format!("(*{lv}.{name})")
