@@ -252,6 +252,12 @@ impl MotionLibDrive {
         &self.engine
     }
 
+    /// The motion engine, mutable: for tests and tools (e.g. `raise_axis_error` to simulate a drive fault).
+    /// Commands given here bypass the adapter's blocks; the adapter sees their effect on the axis state.
+    pub fn engine_mut(&mut self) -> &mut Engine {
+        &mut self.engine
+    }
+
     /// The axis index in [`Self::engine`].
     pub fn axis(&self) -> usize {
         self.axis
