@@ -503,10 +503,12 @@ impl Drive for MotionLibDrive {
     fn relative_move(&mut self, distance: i32) {
         // From the running target when a positioning move is active (MC_MoveAdditive), else from the
         // set position (MC_MoveRelative).
-        let running_move = self.homing == HomingPhase::Idle
-            && self.axis_state() == AxisState::DiscreteMotion
-            && (self.relative.any_busy() || self.additive.any_busy() || self.absolute.any_busy());
+        let was_homing = self.homing != HomingPhase::Idle;
         self.command(|d| {
+            // Block statuses are fresh here (`command` refreshed them).
+            let running_move = !was_homing
+                && d.axis_state() == AxisState::DiscreteMotion
+                && (d.relative.any_busy() || d.additive.any_busy() || d.absolute.any_busy());
             let (v, acc, dec) = (d.velocity, d.acceleration, d.deceleration);
             let (e, a) = (&mut d.engine, d.axis);
             if running_move {

@@ -200,7 +200,8 @@ fn debug_runs_the_script_on_a_motion_lib_axis_by_default() {
         script,
         format: MessageFormat::Short,
     };
-    let commands = "run 1\nprint ActualVelocity\nrun 400\nprint ActualPosition\nquit\n";
+    let commands =
+        "run 1\nprint ActualVelocity\nrun 400\nprint ActualPosition\nset DI_3 = HIGH\nprint DI_3\nquit\n";
     let mut answers = Vec::new();
     for kind in [None, Some(DriveKind::Sim)] {
         let (mut out, mut err) = (Vec::new(), Vec::new());
@@ -211,6 +212,7 @@ fn debug_runs_the_script_on_a_motion_lib_axis_by_default() {
         assert_eq!(code, EXIT_OK);
         let out = text(out);
         assert!(out.contains("ActualPosition = 10000"), "{out}");
+        assert!(out.contains("(ds) DI_3 = 1\n(ds) DI_3 = 1\n"), "{out}");
         answers.push(
             out.lines()
                 .find_map(|l| l.strip_prefix("(ds) ActualVelocity = "))

@@ -191,6 +191,13 @@ fn relative_move_during_a_move_adds_to_the_running_target() {
         d.tick();
     }
     close(d.position(), -5_000.0);
+    // Two relative moves in one THEN: the second adds to the first's target.
+    d.relative_move(1000);
+    d.relative_move(500);
+    for _ in 0..1000 {
+        d.tick();
+    }
+    close(d.position(), -3_500.0);
     d.absolute_move(7);
     for _ in 0..1000 {
         d.tick();
@@ -330,6 +337,12 @@ fn velocity_move_runs_at_a_signed_velocity_and_zero_halts() {
         d.tick();
     }
     assert_eq!(d.actual_velocity(), -30_000);
+    // A second command of the same kind while the first is Busy takes the other block instance.
+    d.velocity_move(30_000);
+    for _ in 0..200 {
+        d.tick();
+    }
+    assert_eq!(d.actual_velocity(), 30_000);
     d.velocity_move(0);
     for _ in 0..200 {
         d.tick();
