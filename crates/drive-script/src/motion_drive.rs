@@ -12,7 +12,9 @@
 //! * each block type has two instances used in turn, because a PLCopen block ignores a rising Execute while
 //!   Busy: a new command of the same kind takes the free instance and aborts the other one's command;
 //! * a refused command (e.g. `Velocity = 0` then a move) leaves the axis as it was and makes `motion_state()`
-//!   report `Fault` until the next accepted command; no method panics for any argument.
+//!   report `Fault` until the next accepted command; no method panics for any argument;
+//! * a positioning command the engine cannot plan from the moving axis's state (`PlanningFailed`) is
+//!   deferred, reported as moving, and given again after every engine step (see [`tick`]).
 //!
 //! Units: the axis unit is one pulse, so positions are pulses, velocities pulses/s, accelerations
 //! pulses/s²; the axis config's limits cap the script's settings (the engine uses the smaller value).
@@ -116,6 +118,17 @@ enum HomingPhase {
     Reference,
 }
 
+/// A positioning command of the script, kept to be given again (see [`MotionLibDrive::tick`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum PositionMove {
+    /// `MC_MoveRelative` (from the set position).
+    Relative(f64),
+    /// `MC_MoveAdditive` (from the running target).
+    Additive(f64),
+    /// `MC_MoveAbsolute`.
+    Absolute(f64),
+}
+
 /// Default axis limits of the adapter (pulses): well above the script defaults (10 000 p/s,
 /// 100 000 p/s²) so that the script's settings decide, with a jerk limit giving 10 ms ramps of the
 /// acceleration at 1 000 000 p/s².
@@ -152,6 +165,8 @@ pub struct MotionLibDrive {
     homing: HomingPhase,
     homed: bool,
     command_error: Option<ErrorId>,
+    /// A positioning command motion-lib could not plan from the moving axis's state, given again each tick.
+    deferred: Option<PositionMove>,
     /// Position of the reference mark that homing methods ≠ 0 run to, in the axis's current coordinates
     /// (pulses, default 0). `MC_Home` then makes that point position 0.
     pub reference_mark: f64,
@@ -172,6 +187,7 @@ impl std::fmt::Debug for MotionLibDrive {
             .field("velocity", &self.read_velocity.velocity)
             .field("homing", &self.homing)
             .field("command_error", &self.command_error)
+            .field("deferred", &self.deferred)
             .finish()
     }
 }
@@ -237,6 +253,7 @@ impl MotionLibDrive {
             homing: HomingPhase::Idle,
             homed: false,
             command_error: None,
+            deferred: None,
             reference_mark: 0.0,
             inputs: 0,
             outputs: 0,
@@ -301,12 +318,24 @@ impl MotionLibDrive {
     }
 
     /// Advances one main-loop cycle: one engine step, then every block is called and the readings
-    /// refreshed; a homing sequence moves on when its phase has finished.
+    /// refreshed; a homing sequence moves on when its phase has finished; a deferred positioning command
+    /// is given again.
+    ///
+    /// Deferred commands: motion-lib's profile kernel finds no solution from a few states at the very end
+    /// of a braking ramp (velocity and deceleration both just about to reach 0; the engine answers
+    /// `PlanningFailed`). A positioning command refused that way while the axis moves is kept, reported as
+    /// moving, and given again after each engine step until it is accepted (at the latest at standstill,
+    /// a few cycles later); its target is the same (an additive move still adds to the running target).
     pub fn tick(&mut self) {
         self.time_ms = self.time_ms.wrapping_add(self.cycle_ms);
         self.engine.step();
         self.power.call(&mut self.engine, self.axis);
         self.refresh();
+        self.read();
+        if let Some(m) = self.deferred.take() {
+            let r = self.position_move(m);
+            self.outcome(r);
+        }
         if self.homing == HomingPhase::Approach {
             match self.axis_state() {
                 AxisState::Standstill => {
@@ -364,11 +393,13 @@ impl MotionLibDrive {
         }
     }
 
-    /// Common frame of a script command: refresh, cancel a homing sequence, run, record, read.
+    /// Common frame of a script command: refresh, cancel a homing sequence and a deferred command, run,
+    /// record, read.
     fn command(&mut self, run: impl FnOnce(&mut MotionLibDrive) -> Result<(), ErrorId>) {
         self.refresh();
         self.read();
         self.homing = HomingPhase::Idle;
+        self.deferred = None;
         let r = run(self);
         self.outcome(r);
         self.read();
@@ -407,6 +438,33 @@ impl MotionLibDrive {
                 Direction::Positive
             };
         })
+    }
+
+    /// A script positioning command at the profile velocity; deferred when it cannot be planned from the
+    /// moving axis's state (see [`Self::tick`]).
+    fn position_move(&mut self, m: PositionMove) -> Result<(), ErrorId> {
+        let (v, acc, dec) = (self.velocity, self.acceleration, self.deceleration);
+        let (e, a) = (&mut self.engine, self.axis);
+        let r = match m {
+            PositionMove::Absolute(target) => self.move_absolute(target, v),
+            PositionMove::Relative(distance) => self.relative.issue(e, a, |b| {
+                b.distance = distance;
+                b.velocity = v;
+                b.acceleration = acc;
+                b.deceleration = dec;
+            }),
+            PositionMove::Additive(distance) => self.additive.issue(e, a, |b| {
+                b.distance = distance;
+                b.velocity = v;
+                b.acceleration = acc;
+                b.deceleration = dec;
+            }),
+        };
+        if r == Err(ErrorId::PlanningFailed) && self.moving() {
+            self.deferred = Some(m);
+            return Ok(());
+        }
+        r
     }
 
     fn move_absolute(&mut self, target: f64, velocity: f64) -> Result<(), ErrorId> {
@@ -460,6 +518,7 @@ impl Drive for MotionLibDrive {
         match self.axis_state() {
             AxisState::ErrorStop | AxisState::Disabled => MotionState::Fault,
             _ if self.homing != HomingPhase::Idle => MotionState::Homing,
+            _ if self.deferred.is_some() => MotionState::Moving,
             AxisState::Homing => MotionState::Homing,
             AxisState::Standstill => MotionState::Standstill,
             _ => MotionState::Moving,
@@ -509,27 +568,16 @@ impl Drive for MotionLibDrive {
             let running_move = !was_homing
                 && d.axis_state() == AxisState::DiscreteMotion
                 && (d.relative.any_busy() || d.additive.any_busy() || d.absolute.any_busy());
-            let (v, acc, dec) = (d.velocity, d.acceleration, d.deceleration);
-            let (e, a) = (&mut d.engine, d.axis);
-            if running_move {
-                d.additive.issue(e, a, |b| {
-                    b.distance = distance as f64;
-                    b.velocity = v;
-                    b.acceleration = acc;
-                    b.deceleration = dec;
-                })
+            let distance = distance as f64;
+            d.position_move(if running_move {
+                PositionMove::Additive(distance)
             } else {
-                d.relative.issue(e, a, |b| {
-                    b.distance = distance as f64;
-                    b.velocity = v;
-                    b.acceleration = acc;
-                    b.deceleration = dec;
-                })
-            }
+                PositionMove::Relative(distance)
+            })
         });
     }
     fn absolute_move(&mut self, target: i32) {
-        self.command(|d| d.move_absolute(target as f64, d.velocity));
+        self.command(|d| d.position_move(PositionMove::Absolute(target as f64)));
     }
     fn jog(&mut self, direction: i32) {
         self.command(|d| d.move_velocity(direction.signum() as f64 * d.jog_velocity));

@@ -415,3 +415,77 @@ fn the_clock_and_outputs_follow_the_main_loop() {
     d.set_input_bit(2, true);
     assert_eq!(d.digital_inputs(), 0b100);
 }
+
+#[test]
+fn the_three_motion_acceptance_script_runs_on_a_motion_lib_axis() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/scripts/three_motions.ds"
+    ))
+    .unwrap();
+    let mut i = Interpreter::new(program(&text)).unwrap();
+    let mut d = MotionLibDrive::new(1);
+    let mut max_pos = 0;
+    let mut motions_seen = Vec::new();
+    let mut dwell_at_first_index = 0;
+    for _ in 0..5000 {
+        i.cycle(&mut d);
+        if i.memory(0) == Some(2) {
+            d.set_input_bit(0, true); // start button
+        }
+        if motions_seen.last() != Some(&i.location().motion) {
+            motions_seen.push(i.location().motion);
+        }
+        d.tick();
+        max_pos = max_pos.max(d.actual_position());
+        if d.actual_position() == 10_000 && d.actual_velocity() == 0 {
+            dwell_at_first_index += 1;
+        }
+        assert!(d.command_error().is_none(), "{d:?} at {}", i.location());
+    }
+    assert!(d.homed());
+    assert_eq!(motions_seen, vec![0, 1, 2]);
+    assert_eq!(max_pos, 30000, "three index moves of P0 = 10000");
+    assert!(
+        (200..210).contains(&dwell_at_first_index),
+        "the P2 = 200 ms dwell starts when the move is done: {dwell_at_first_index}"
+    );
+    assert_eq!(i.memory(0), Some(30));
+    assert_eq!(d.actual_position(), 0);
+    assert_eq!(d.digital_outputs(), 0b110);
+}
+
+#[test]
+fn a_move_commanded_at_the_end_of_a_braking_ramp_is_deferred_not_refused() {
+    // After 201 cycles the paper's move is in its last jerk phase (v ≈ 4278 p/s, a ≈ -925000 p/s²), a
+    // state from which motion-lib's profile kernel finds no plan to a target further on (PlanningFailed).
+    for (cycles, additive) in [(201, true), (204, false), (150, true)] {
+        let mut d = MotionLibDrive::new(1);
+        d.set_velocity(100_000);
+        d.set_acceleration(1_000_000);
+        d.set_deceleration(1_000_000);
+        d.relative_move(10_000);
+        for _ in 0..cycles {
+            d.tick();
+        }
+        assert_eq!(d.motion_state(), MotionState::Moving);
+        if additive {
+            d.relative_move(10_000);
+        } else {
+            d.absolute_move(20_000);
+        }
+        assert_eq!(d.command_error(), None, "after {cycles} cycles");
+        assert_eq!(d.motion_state(), MotionState::Moving);
+        let mut standstill_before_end = false;
+        for _ in 0..1000 {
+            d.tick();
+            assert_eq!(d.command_error(), None);
+            if d.motion_state() == MotionState::Standstill && d.actual_position() != 20_000 {
+                standstill_before_end = true;
+            }
+        }
+        assert!(!standstill_before_end, "MotionDone only at the new target");
+        close(d.position(), 20_000.0);
+        assert_eq!(d.motion_state(), MotionState::Standstill);
+    }
+}
