@@ -489,3 +489,74 @@ fn a_move_commanded_at_the_end_of_a_braking_ramp_is_deferred_not_refused() {
         assert_eq!(d.motion_state(), MotionState::Standstill);
     }
 }
+
+#[test]
+fn random_commands_with_extreme_arguments_never_panic_and_keep_the_axis_limits() {
+    let lim = Limits {
+        vmax: 200_000.0,
+        amax: 2_000_000.0,
+        dmax: 2_000_000.0,
+        jmax: 50_000_000.0,
+    };
+    let values = [
+        0,
+        1,
+        -1,
+        7,
+        1000,
+        -25_000,
+        100_000,
+        i32::MAX,
+        i32::MIN,
+        i32::MIN + 1,
+    ];
+    let mut seed = 0x2545_F491_4F6C_DD1Du64;
+    let mut next = |n: usize| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % n as u64) as usize
+    };
+    let mut d = axis(lim);
+    let mut refused = 0;
+    let mut seen = [0u32; 4];
+    for cycle in 0..4000 {
+        if next(4) == 0 {
+            let v = values[next(values.len())];
+            match next(13) {
+                0 => d.set_velocity(v),
+                1 => d.set_acceleration(v),
+                2 => d.set_deceleration(v),
+                3 => d.set_jog_velocity(v),
+                4 => d.set_position(v),
+                5 => d.velocity_move(v),
+                6 => d.relative_move(v),
+                7 => d.absolute_move(v),
+                8 => d.jog(v),
+                9 => d.home(v),
+                10 => d.stop(),
+                11 => d.set_digital_output((v & 0xFF) as u8, v != 0),
+                _ if next(4) == 0 => {
+                    let a = d.axis();
+                    let _ = d.engine_mut().raise_axis_error(a, ErrorId::DriveFault);
+                }
+                _ => d.stop(),
+            }
+            refused += d.command_error().is_some() as u32;
+        }
+        d.tick();
+        let (_, v, a) = set_point(&d);
+        assert!(v.abs() <= lim.vmax * (1.0 + 1e-9), "cycle {cycle}: v {v}");
+        assert!(a.abs() <= lim.amax * (1.0 + 1e-9), "cycle {cycle}: a {a}");
+        let st = d.motion_state();
+        seen[st as usize] += 1;
+        if d.command_error().is_some() || d.axis_state() == AxisState::ErrorStop {
+            assert_eq!(st, MotionState::Fault);
+        } else if d.axis_state() != AxisState::Standstill {
+            assert_ne!(st, MotionState::Standstill, "cycle {cycle}");
+        }
+    }
+    assert!(refused > 0, "some commands were refused");
+    // Every motion state occurred (the sequence exercises moves, homing and faults).
+    assert!(seen.iter().all(|&n| n > 0), "{seen:?}");
+}
