@@ -164,4 +164,28 @@ fn main() {
     println!("interpreter, simulated drive, IF true, THEN runs 2 actions: {ns:.1} ns per Event");
     let (ns, _) = ns_per_event(three, &mut SimDrive::new(1));
     println!("interpreter, three_motions.ds on the simulated drive (idle in Motion 0): {ns:.1} ns per Event");
+
+    // The motion-lib adapter: one main-loop tick during a move (engine step, block calls, reads) and one
+    // move command (block call with a jerk-limited plan).
+    let mut axis = MotionLibDrive::new(1);
+    axis.set_velocity(1000);
+    axis.relative_move(i32::MAX);
+    let ticks = 200_000u32;
+    let t = Instant::now();
+    for _ in 0..ticks {
+        axis.tick();
+    }
+    let ns = t.elapsed().as_nanos() as f64 / ticks as f64;
+    black_box(axis.actual_position());
+    println!("MotionLibDrive: {ns:.0} ns per tick while moving");
+    let commands = 50_000i32;
+    let t = Instant::now();
+    for k in 0..commands {
+        axis.absolute_move(black_box(k % 2) * 1000);
+    }
+    let ns = t.elapsed().as_nanos() as f64 / commands as f64;
+    black_box(axis.motion_state());
+    println!(
+        "MotionLibDrive: {ns:.0} ns per move command (MC_MoveAbsolute aborting a running move)"
+    );
 }

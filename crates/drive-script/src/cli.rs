@@ -8,10 +8,11 @@
 
 use crate::compiler::{compile, DebugInfo};
 use crate::debugger::{Location, Phase};
-use crate::drive::{Drive, SimDrive};
+use crate::drive::{CycleDrive, SimDrive};
 use crate::image::{decode, encode, MAGIC};
 use crate::interpreter::{CycleResult, Interpreter};
 use crate::limits::*;
+use crate::motion_drive::MotionLibDrive;
 use crate::program::Program;
 use diagnostics::{code, render, Diagnostic, MessageFormat, SourceMap};
 use std::io::{BufRead, Write};
@@ -53,6 +54,35 @@ impl RunArgs {
             cycle_ms: 1,
             inputs: 0,
             format: MessageFormat::Human,
+        }
+    }
+}
+
+/// Which simulated drive `run` and `debug` use (`--drive motion-lib|sim`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum DriveKind {
+    /// A motion-lib axis commanded by PLCopen blocks ([`MotionLibDrive`]): jerk-limited profiles. Default.
+    #[default]
+    MotionLib,
+    /// The crate's own trapezoidal simulation ([`SimDrive`]).
+    Sim,
+}
+
+impl DriveKind {
+    /// Parses the `--drive` option value: `motion-lib` (also `motionlib`, `axis`) or `sim`.
+    pub fn parse(s: &str) -> Option<DriveKind> {
+        match s.to_ascii_lowercase().as_str() {
+            "motion-lib" | "motionlib" | "motion_lib" | "axis" => Some(DriveKind::MotionLib),
+            "sim" | "simdrive" => Some(DriveKind::Sim),
+            _ => None,
+        }
+    }
+
+    /// A fresh drive of this kind with a `cycle_ms` main-loop period.
+    pub fn make(self, cycle_ms: u32) -> Box<dyn CycleDrive> {
+        match self {
+            DriveKind::MotionLib => Box::new(MotionLibDrive::new(cycle_ms)),
+            DriveKind::Sim => Box::new(SimDrive::new(cycle_ms)),
         }
     }
 }
@@ -160,9 +190,20 @@ pub fn build(args: &BuildArgs, out: &mut dyn Write, err: &mut dyn Write) -> i32 
 
 const TRACE_MD: usize = 8;
 
-/// Runs a script (or image) on the simulated drive for `cycles` main-loop cycles; optionally writes a CSV
-/// trace with one row per cycle: `cycle,time_ms,motion,event,phase,position,velocity,current,di,do,md0..md7`.
+/// Runs a script (or image) on a motion-lib axis ([`DriveKind::MotionLib`]) for `cycles` main-loop cycles;
+/// optionally writes a CSV trace with one row per cycle:
+/// `cycle,time_ms,motion,event,phase,position,velocity,current,di,do,md0..md7`.
 pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> i32 {
+    run_with_drive(args, DriveKind::MotionLib, out, err)
+}
+
+/// [`run`] on the chosen drive (`ladderc drive run ... --drive sim`).
+pub fn run_with_drive(
+    args: &RunArgs,
+    kind: DriveKind,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> i32 {
     let loaded = match load(&args.script, args.format, err) {
         Ok(l) => l,
         Err(code) => return code,
@@ -175,8 +216,8 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> i32 {
             return EXIT_REJECTED;
         }
     };
-    let mut drive = SimDrive::new(args.cycle_ms);
-    drive.inputs = args.inputs;
+    let mut drive = kind.make(args.cycle_ms);
+    drive.set_inputs(args.inputs);
     let mut trace = String::new();
     if args.trace.is_some() {
         trace.push_str("cycle,time_ms,motion,event,phase,position,velocity,current,di,do");
@@ -186,7 +227,7 @@ pub fn run(args: &RunArgs, out: &mut dyn Write, err: &mut dyn Write) -> i32 {
         trace.push('\n');
     }
     for n in 0..args.cycles {
-        interp.cycle(&mut drive);
+        interp.cycle(drive.as_mut());
         drive.tick();
         if args.trace.is_some() {
             let at = interp.location();
@@ -242,7 +283,7 @@ pub const DEBUG_RUN_CYCLES: u64 = 10_000;
 /// A debugging session: interpreter, simulated drive and (when loaded from source) line information.
 pub struct DebugSession {
     pub interp: Interpreter,
-    pub drive: SimDrive,
+    pub drive: Box<dyn CycleDrive>,
     pub cycles: u64,
     source: Option<(SourceMap, DebugInfo)>,
     /// Names printed after every stop (`watch NAME`).
@@ -250,13 +291,23 @@ pub struct DebugSession {
 }
 
 impl DebugSession {
+    /// A session on a motion-lib axis with a 1 ms cycle.
     pub fn new(
         program: Program,
         source: Option<(SourceMap, DebugInfo)>,
     ) -> Result<DebugSession, String> {
+        DebugSession::with_drive(program, source, DriveKind::MotionLib)
+    }
+
+    /// A session on the chosen drive with a 1 ms cycle.
+    pub fn with_drive(
+        program: Program,
+        source: Option<(SourceMap, DebugInfo)>,
+        kind: DriveKind,
+    ) -> Result<DebugSession, String> {
         Ok(DebugSession {
             interp: Interpreter::new(program)?,
-            drive: SimDrive::new(1),
+            drive: kind.make(1),
             cycles: 0,
             source,
             watches: Vec::new(),
@@ -266,7 +317,7 @@ impl DebugSession {
     /// Runs main-loop cycles (the drive ticks after each) until the interpreter stops or `max` cycles pass.
     pub fn run_cycles(&mut self, max: u64) -> Option<Location> {
         for _ in 0..max {
-            if let CycleResult::Stopped(at) = self.interp.cycle(&mut self.drive) {
+            if let CycleResult::Stopped(at) = self.interp.cycle(self.drive.as_mut()) {
                 return Some(at);
             }
             self.drive.tick();
@@ -519,7 +570,7 @@ impl DebugSession {
                 Ok(format!("P{n} = {v}"))
             }
             Some(Register::Di(n)) => {
-                self.drive.set_input(n as u8, v != 0);
+                self.drive.set_input_bit(n as u8, v != 0);
                 Ok(format!("DI_{n} = {}", (v != 0) as i32))
             }
             Some(Register::Do(n)) => {
@@ -590,10 +641,21 @@ commands (names are case-insensitive):
   help                  this text
   quit                  leave the debugger";
 
-/// The interactive debugger: reads command lines from `input` until `quit` or end of input; writes a
-/// `(ds) ` prompt and each answer to `out`.
+/// The interactive debugger on a motion-lib axis: reads command lines from `input` until `quit` or end of
+/// input; writes a `(ds) ` prompt and each answer to `out`.
 pub fn debug(
     args: &DebugArgs,
+    input: &mut dyn BufRead,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> i32 {
+    debug_with_drive(args, DriveKind::MotionLib, input, out, err)
+}
+
+/// [`debug`] on the chosen drive (`ladderc drive debug SCRIPT --drive sim`).
+pub fn debug_with_drive(
+    args: &DebugArgs,
+    kind: DriveKind,
     input: &mut dyn BufRead,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -610,7 +672,7 @@ pub fn debug(
         p.events.len(),
         Location::START
     );
-    let mut session = match DebugSession::new(loaded.program, loaded.source) {
+    let mut session = match DebugSession::with_drive(loaded.program, loaded.source, kind) {
         Ok(s) => s,
         Err(m) => {
             let d = Diagnostic::error(code::E6023, format!("malformed program: {m}"));

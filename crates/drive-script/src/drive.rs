@@ -18,8 +18,8 @@ pub enum MotionState {
     Fault = 3,
 }
 
-/// The servo-drive interface the interpreter uses. Implemented by [`SimDrive`] here; the motion library's
-/// axis gets an adapter (see the crate README).
+/// The servo-drive interface the interpreter uses. Implemented by [`SimDrive`] (exact trapezoidal
+/// simulation) and by [`crate::MotionLibDrive`] (a motion-lib axis driven by PLCopen blocks).
 pub trait Drive {
     fn actual_position(&self) -> i32;
     fn actual_velocity(&self) -> i32;
@@ -46,6 +46,32 @@ pub trait Drive {
     fn jog(&mut self, direction: i32);
     fn home(&mut self, method: i32);
     fn stop(&mut self);
+}
+
+/// A drive whose time advances one main-loop cycle per [`CycleDrive::tick`] (the simulations the CLI and
+/// the debugger run: [`SimDrive`] and [`crate::MotionLibDrive`]).
+pub trait CycleDrive: Drive {
+    /// Advances by one main-loop cycle.
+    fn tick(&mut self);
+    /// Sets the digital inputs (bit n = `DI_n`).
+    fn set_inputs(&mut self, bits: u32);
+    /// Sets one digital input; indices from 32 on are ignored.
+    fn set_input_bit(&mut self, index: u8, high: bool) {
+        if index < 32 {
+            let bits = self.digital_inputs();
+            let mask = 1u32 << index;
+            self.set_inputs(if high { bits | mask } else { bits & !mask });
+        }
+    }
+}
+
+impl CycleDrive for SimDrive {
+    fn tick(&mut self) {
+        SimDrive::tick(self);
+    }
+    fn set_inputs(&mut self, bits: u32) {
+        self.inputs = bits;
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]

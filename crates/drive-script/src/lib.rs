@@ -18,8 +18,10 @@ pub mod debugger;
 pub mod drive;
 pub mod image;
 pub mod interpreter;
+pub mod motion_drive;
 
 pub use debugger::{Breakpoint, BreakpointError, Breakpoints, Location, Phase};
-pub use drive::{Drive, MotionState, SimDrive};
+pub use drive::{CycleDrive, Drive, MotionState, SimDrive};
 pub use image::{decode, encode, ImageError};
 pub use interpreter::{CycleResult, Interpreter, Snapshot};
+pub use motion_drive::MotionLibDrive;

@@ -235,7 +235,7 @@ pub enum ActionKind {
     NextMotion = 14,
     /// `Jump = <index>`: after this Event, continue at Event `index` of this Motion.
     Jump = 15,
-    /// `Loop(MD<index>) = value`: decrement MD<index>; if still > 0, continue at Event `value` after this Event.
+    /// `Loop(MD<index>) = value`: decrement `MD<index>`; if still > 0, continue at Event `value` after this Event.
     Loop = 16,
     /// `MathError = value`: write the sticky math-error flag (0 clears it).
     WriteMathError = 17,

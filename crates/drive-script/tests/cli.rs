@@ -1,7 +1,10 @@
 //! `build` and `run` library entry points: image file, CSV trace, run from an image, error exits.
 
 use diagnostics::MessageFormat;
-use drive_script::cli::{build, run, BuildArgs, RunArgs, EXIT_IO, EXIT_OK, EXIT_REJECTED};
+use drive_script::cli::{
+    build, debug, debug_with_drive, run, run_with_drive, BuildArgs, DebugArgs, DriveKind, RunArgs,
+    EXIT_IO, EXIT_OK, EXIT_REJECTED,
+};
 
 const PAPER: &str = "\
 S:: INIT;
@@ -140,4 +143,82 @@ fn corrupt_image_is_rejected_with_e6022() {
         e.starts_with("error[E6022]: drive script image is corrupt: CRC-32 mismatch"),
         "{e}"
     );
+}
+
+/// Velocity column of CSV row `row` (1 = first cycle).
+fn trace_velocity(csv: &str, row: usize) -> String {
+    csv.lines()
+        .nth(row)
+        .unwrap()
+        .split(',')
+        .nth(6)
+        .unwrap()
+        .to_string()
+}
+
+#[test]
+fn run_drives_a_motion_lib_axis_by_default_and_the_simulated_drive_on_request() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("paper.ds");
+    std::fs::write(&script, PAPER).unwrap();
+    let mut velocities = Vec::new();
+    for kind in [None, Some(DriveKind::MotionLib), Some(DriveKind::Sim)] {
+        let trace = dir.path().join("t.csv");
+        let mut args = RunArgs::new(script.clone(), 400);
+        args.trace = Some(trace.clone());
+        let (mut out, mut err) = (Vec::new(), Vec::new());
+        let code = match kind {
+            None => run(&args, &mut out, &mut err),
+            Some(k) => run_with_drive(&args, k, &mut out, &mut err),
+        };
+        assert_eq!(code, EXIT_OK, "{}", text(err));
+        assert!(
+            text(out).contains("position 10000, velocity 0, DO 0x0001"),
+            "{kind:?}"
+        );
+        velocities.push(trace_velocity(&std::fs::read_to_string(&trace).unwrap(), 1));
+    }
+    // First cycle of the move: motion-lib's jerk-limited start (j t²/2 = 1e8 · 1e-6 / 2 = 50 p/s)
+    // against SimDrive's trapezoid (a t = 1e6 · 1e-3 = 1000 p/s).
+    assert_eq!(velocities, ["50", "50", "1000"]);
+}
+
+#[test]
+fn drive_kind_option_values() {
+    assert_eq!(DriveKind::parse("motion-lib"), Some(DriveKind::MotionLib));
+    assert_eq!(DriveKind::parse("Sim"), Some(DriveKind::Sim));
+    assert_eq!(DriveKind::parse("pmac"), None);
+    assert_eq!(DriveKind::default(), DriveKind::MotionLib);
+}
+
+#[test]
+fn debug_runs_the_script_on_a_motion_lib_axis_by_default() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("paper.ds");
+    std::fs::write(&script, PAPER).unwrap();
+    let args = DebugArgs {
+        script,
+        format: MessageFormat::Short,
+    };
+    let commands =
+        "run 1\nprint ActualVelocity\nrun 400\nprint ActualPosition\nset DI_3 = HIGH\nprint DI_3\nquit\n";
+    let mut answers = Vec::new();
+    for kind in [None, Some(DriveKind::Sim)] {
+        let (mut out, mut err) = (Vec::new(), Vec::new());
+        let code = match kind {
+            None => debug(&args, &mut commands.as_bytes(), &mut out, &mut err),
+            Some(k) => debug_with_drive(&args, k, &mut commands.as_bytes(), &mut out, &mut err),
+        };
+        assert_eq!(code, EXIT_OK);
+        let out = text(out);
+        assert!(out.contains("ActualPosition = 10000"), "{out}");
+        assert!(out.contains("(ds) DI_3 = 1\n(ds) DI_3 = 1\n"), "{out}");
+        answers.push(
+            out.lines()
+                .find_map(|l| l.strip_prefix("(ds) ActualVelocity = "))
+                .unwrap()
+                .to_string(),
+        );
+    }
+    assert_eq!(answers, ["50", "1000"]);
 }
