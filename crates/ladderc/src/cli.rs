@@ -153,9 +153,31 @@ pub enum DriveCommand {
         /// Digital inputs of the simulated drive (bit n = DI_n).
         #[arg(long, default_value_t = 0)]
         inputs: u32,
+        /// The drive: a motion-lib axis (jerk-limited, PLCopen blocks) or the simple simulation.
+        #[arg(long, value_enum, default_value_t = DriveArg::MotionLib)]
+        drive: DriveArg,
     },
     /// Interactive breakpoint debugger (commands from standard input; `help` lists them).
-    Debug { script: PathBuf },
+    Debug {
+        script: PathBuf,
+        #[arg(long, value_enum, default_value_t = DriveArg::MotionLib)]
+        drive: DriveArg,
+    },
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
+pub enum DriveArg {
+    MotionLib,
+    Sim,
+}
+
+impl From<DriveArg> for drive_script::cli::DriveKind {
+    fn from(d: DriveArg) -> Self {
+        match d {
+            DriveArg::MotionLib => drive_script::cli::DriveKind::MotionLib,
+            DriveArg::Sim => drive_script::cli::DriveKind::Sim,
+        }
+    }
 }
 
 /// Exit codes.
@@ -221,7 +243,8 @@ fn drive(cmd: DriveCommand, format: MessageFormat) -> i32 {
             trace,
             cycle_ms,
             inputs,
-        } => cli::run(
+            drive,
+        } => cli::run_with_drive(
             &cli::RunArgs {
                 script,
                 cycles,
@@ -230,13 +253,15 @@ fn drive(cmd: DriveCommand, format: MessageFormat) -> i32 {
                 inputs,
                 format,
             },
+            drive.into(),
             &mut out,
             &mut err,
         ),
-        DriveCommand::Debug { script } => {
+        DriveCommand::Debug { script, drive } => {
             let stdin = std::io::stdin();
-            cli::debug(
+            cli::debug_with_drive(
                 &cli::DebugArgs { script, format },
+                drive.into(),
                 &mut stdin.lock(),
                 &mut out,
                 &mut err,

@@ -88,3 +88,30 @@ fn a_bad_script_exits_1_with_a_json_diagnostic() {
     assert!(v["code"].as_str().unwrap().starts_with("E6"));
     assert!(!dir.path().join("x.img").exists());
 }
+
+#[test]
+fn the_drive_option_selects_the_motion_lib_axis_or_the_simple_simulation() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("paper.ds");
+    std::fs::write(
+        &script,
+        "S:: MOTION 0;\nS:: EVENT 0;\nS:: IF MD0 = 0;\nS:: THEN DO_0=HIGH AND RelativeTargetPosition=10000 AND MD0 = 1;\n",
+    )
+    .unwrap();
+    let mut second_rows = Vec::new();
+    for drive in ["motion-lib", "sim"] {
+        let trace = dir.path().join(format!("{drive}.csv"));
+        let out = ladderc()
+            .args(["drive", "run"])
+            .arg(&script)
+            .args(["--cycles", "3", "--drive", drive, "--trace"])
+            .arg(&trace)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        let text = std::fs::read_to_string(&trace).unwrap();
+        second_rows.push(text.lines().nth(2).unwrap().to_string());
+    }
+    // A jerk-limited axis starts slower than the trapezoidal simulation: the traces differ.
+    assert_ne!(second_rows[0], second_rows[1]);
+}
