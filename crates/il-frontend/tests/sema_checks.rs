@@ -126,6 +126,24 @@ END_PROGRAM
 }
 
 #[test]
+fn unreachable_code_does_not_fall_through_into_a_label() {
+    // `LD x` is dead (after JMP): the clash at `both` is between the two jumps (BOOL and REAL).
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR x : INT; b : BOOL; r : REAL; END_VAR
+  LD b
+  JMPC both
+  LD r
+  JMP both
+  LD x
+both:
+  ST x
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
 fn type_clash_where_jumps_meet_names_both_jumps() {
     insta::assert_snapshot!(check(
         "PROGRAM Main

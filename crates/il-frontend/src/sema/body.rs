@@ -384,7 +384,8 @@ impl Body<'_, '_> {
         // Only the first definition of a duplicated label is a jump target.
         let is_target = self.labels.get(&key).is_some_and(|d| d.span == l.span);
         let mut incoming: Vec<(Span, &'static str, Option<Ty>)> = Vec::new();
-        if st.reach {
+        // Unreachable code before the label does not fall through into it.
+        if st.reach && !st.warned_unreachable {
             if let Some(last) = st.last {
                 incoming.push((last, "falls through from here", st.cr.ty.clone()));
             } else {
