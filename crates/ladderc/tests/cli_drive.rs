@@ -108,7 +108,12 @@ fn the_drive_option_selects_the_motion_lib_axis_or_the_simple_simulation() {
             .arg(&trace)
             .output()
             .unwrap();
-        assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let text = std::fs::read_to_string(&trace).unwrap();
         second_rows.push(text.lines().nth(2).unwrap().to_string());
     }

@@ -227,12 +227,47 @@ impl Profile {
         let mut block = kernel::Block::default();
         match Solved::new(start, target_p, target_v, lim, &mut block) {
             Some(sol) => Ok(sol.build(&block.p_min)),
-            None => Err(PlanError::NoSolution {
-                start,
-                target_p,
-                target_v,
-            }),
+            None => Self::position_after_zero_acceleration(start, target_p, target_v, lim),
         }
+    }
+
+    /// Fallback for the rare start states where the kernel finds no profile (inherited from
+    /// ruckig's numerics, e.g. the last cycles of a braking ramp): ramp the acceleration to zero
+    /// at full jerk, then plan from there. The result is valid and within the limits, but may be
+    /// slightly slower than the time optimum.
+    fn position_after_zero_acceleration(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> Result<Profile, PlanError> {
+        let no_solution = PlanError::NoSolution {
+            start,
+            target_p,
+            target_v,
+        };
+        if start.a == 0.0 || lim.is_trapezoidal() {
+            return Err(no_solution);
+        }
+        let t0 = start.a.abs() / lim.jmax;
+        let jerk = -start.a.signum() * lim.jmax;
+        let mut mid = start.integrate(t0, jerk);
+        mid.a = 0.0;
+        let rest = Self::position(mid, target_p, target_v, lim).map_err(|_| no_solution.clone())?;
+        if rest.phases().len() + 1 > MAX_PHASES {
+            return Err(no_solution);
+        }
+        let mut items = [(0.0, 0.0); MAX_PHASES];
+        items[0] = (t0, jerk);
+        for (k, ph) in rest.phases().iter().enumerate() {
+            items[k + 1] = (ph.duration, ph.jerk);
+        }
+        Ok(Profile::build(
+            start,
+            &items[..rest.phases().len() + 1],
+            false,
+            None,
+        ))
     }
 
     /// Time-optimal profile from `start` to velocity `target_v` with acceleration 0
