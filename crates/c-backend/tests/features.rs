@@ -651,3 +651,28 @@ END_PROGRAM
     assert_eq!(column(&rows, "main.q"), ["0", "0", "0", "1"]);
     assert_eq!(column(&rows, "main.not_q"), ["1", "1", "1", "0"]);
 }
+
+#[test]
+fn function_parameters_need_not_be_used() {
+    let src = "FUNCTION constant_one : INT
+VAR_INPUT
+  ignored : INT;
+END_VAR
+VAR_OUTPUT
+  unused_out : BOOL;
+END_VAR
+  LD 1
+  ST constant_one
+END_FUNCTION
+PROGRAM main
+VAR
+  x : INT;
+END_VAR
+  constant_one(ignored := 5)
+  ST x
+END_PROGRAM
+";
+    let b = build_src(src);
+    let rows = run(&b, 1, 10.0, "", &["main.x"]);
+    assert_eq!(column(&rows, "main.x"), ["1"]);
+}

@@ -498,6 +498,11 @@ impl Gen<'_> {
             b.targets = targets;
             // locals and the result variable
             let mut pre = String::new();
+            for v in &p.vars {
+                if matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut) {
+                    let _ = writeln!(pre, "    (void){};", mangle::var(&v.name));
+                }
+            }
             if let Some(rt) = &p.return_type {
                 let d = ctypes::declare(self.model, rt, &ret_var).unwrap_or_default();
                 let _ = writeln!(pre, "    {d};");
