@@ -154,7 +154,7 @@ END_VAR
   ST %MW1920
   LD b
   ST %MW1921
-  FUNC tm_add()
+  FUNC TM_Add()
   LD %MW1922
   WORD_TO_INT
   ST sum
