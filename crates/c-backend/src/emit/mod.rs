@@ -7,6 +7,7 @@
 //! the program is written into one `String` per file, in time linear in the input.
 
 mod body;
+mod calls;
 mod init;
 mod scan;
 mod scope;
