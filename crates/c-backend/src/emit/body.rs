@@ -7,7 +7,8 @@
 //! outer result in a block-scoped local `d<depth>`, evaluates the nested list, then combines; jumps are
 //! `goto L_<label>`; only labels that are jumped to are emitted; work is linear in the body's size.
 
-use super::scope::{convert, Place, Scope};
+use super::scope::{Place, Scope};
+use super::values::convert;
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;

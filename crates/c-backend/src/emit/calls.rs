@@ -7,7 +7,8 @@
 //! address; every standard function on already-evaluated arguments is a side-effect-free C expression.
 
 use super::body::{negated, Body};
-use super::scope::{convert, convert_elementary, real_to_int, Place};
+use super::scope::Place;
+use super::values::{convert, convert_elementary, real_to_int};
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;

@@ -11,6 +11,7 @@ mod calls;
 mod init;
 mod scan;
 mod scope;
+mod values;
 
 use crate::profile::{AddressUnit, BitNumbering, ByteOrder, TargetProfile};
 use crate::{ctypes, mangle, Options};
