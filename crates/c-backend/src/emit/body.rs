@@ -98,10 +98,6 @@ impl<'a> Gen<'a> {
                 self.unsupported(span, "an array as the current result");
                 return None;
             }
-            Type::String { wide: true, .. } => {
-                self.unsupported(span, "a WSTRING as the current result");
-                return None;
-            }
             t => match ctypes::base(self.model, t) {
                 Some(b) => b,
                 None => {
@@ -483,7 +479,12 @@ impl<'a> Gen<'a> {
                         "LE" => "<=",
                         _ => "<",
                     };
-                    return Some(format!("((IEC_BOOL)(ladderc_str_cmpv({a}, {v}) {c} 0))"));
+                    let f = if matches!(aty, Type::String { wide: true, .. }) {
+                        "ladderc_wstr_cmpv"
+                    } else {
+                        "ladderc_str_cmpv"
+                    };
+                    return Some(format!("((IEC_BOOL)({f}({a}, {v}) {c} 0))"));
                 }
                 let e = match aty {
                     Type::Enum(_) => E::Dint,

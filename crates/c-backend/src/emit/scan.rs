@@ -427,6 +427,9 @@ impl Gen<'_> {
             Type::String { wide: false, .. } => out.push(format!(
                 "{{ {cname}, LADDERC_T_STRING, (void *)&{lv}, NULL, 0, 0 }}"
             )),
+            Type::String { wide: true, .. } => out.push(format!(
+                "{{ {cname}, LADDERC_T_WSTRING, (void *)&{lv}, NULL, 0, 0 }}"
+            )),
             Type::Struct(id) => {
                 if let UserTypeDef::Struct { fields } = self.model.user_type(*id).def.clone() {
                     for f in &fields {

@@ -446,6 +446,12 @@ impl Gen<'_> {
                         ctypes::string_cap(ty)
                     )
                 }
+                Type::String { wide: true, .. } => {
+                    format!(
+                        "{lv} = ladderc_wstr_cap({value}, {});",
+                        ctypes::string_cap(ty)
+                    )
+                }
                 _ => format!("{lv} = {value};"),
             },
             Place::Loc { loc, ty } => store_expr(loc, ty, value),
@@ -509,11 +515,14 @@ impl Gen<'_> {
     pub fn literal(&mut self, l: &Literal, want: &Type) -> Option<String> {
         let e = match want {
             Type::Enum(_) => E::Dint,
-            Type::String { .. } => {
+            Type::String { wide, .. } => {
                 return match &l.kind {
-                    LiteralKind::String { wide: false, value } => Some(ctypes::string_value(value)),
+                    LiteralKind::String { value, .. } if !*wide => {
+                        Some(ctypes::string_value(value))
+                    }
+                    LiteralKind::String { value, .. } => Some(ctypes::wstring_value(value)),
                     _ => {
-                        self.unsupported(l.span, "this literal as a STRING (or a WSTRING literal)");
+                        self.unsupported(l.span, "this literal as a string");
                         None
                     }
                 };

@@ -45,12 +45,8 @@ pub fn convert(expr: &str, from: &Type, to: &Type) -> String {
     match (fe, te) {
         (Some(f), Some(t)) => convert_elementary(expr, f, t),
         (_, Some(_)) | (Some(_), _) => expr.to_string(),
-        (None, None) => match to {
-            Type::String { wide: false, .. } if from.is_string() => {
-                format!("ladderc_str_cap({expr}, {})", ctypes::string_cap(to))
-            }
-            _ => expr.to_string(),
-        },
+        // strings keep their text here; capacities apply when a string is stored
+        (None, None) => expr.to_string(),
     }
 }
 
