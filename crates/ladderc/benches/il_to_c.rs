@@ -125,6 +125,7 @@ fn child(job: &str) {
     let [lines, pous, runs] = parts[..] else {
         panic!("job {job} needs lines:pous:runs")
     };
+    let runs = common::runs(runs);
     let baseline = common::status_kib("VmHWM");
     let src = il_frontend::testgen::generate(lines, pous);
     let mut times: [Vec<f64>; 8] = Default::default();

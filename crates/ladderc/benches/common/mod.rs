@@ -21,6 +21,15 @@ pub fn child_job() -> Option<String> {
     std::env::var(CHILD_ENV).ok()
 }
 
+/// The number of timed runs: `default`, or `LADDERC_BENCH_RUNS` when set (e.g. 1 under a profiler).
+pub fn runs(default: usize) -> usize {
+    std::env::var("LADDERC_BENCH_RUNS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .filter(|&n| n > 0)
+        .unwrap_or(default)
+}
+
 /// Runs `job` in a child process and returns its `key=value` report.
 pub fn run_child(job: &str) -> BTreeMap<String, String> {
     let exe = std::env::current_exe().expect("the bench binary's own path");
