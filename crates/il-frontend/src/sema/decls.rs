@@ -52,6 +52,7 @@ impl Analyzer<'_> {
                             vars: Vec::new(),
                             externals: Vec::new(),
                             instrs: Vec::new(),
+                            var_index: HashMap::new(),
                         });
                         pous.push((id, p));
                     }
@@ -426,6 +427,7 @@ impl Analyzer<'_> {
     /// Declares the variables of `blocks`; reports duplicates within them.
     pub(crate) fn declare_vars(&mut self, blocks: &[VarBlock], consts: &Consts) -> Vec<Variable> {
         let mut out: Vec<Variable> = Vec::new();
+        let mut seen: HashMap<String, usize> = HashMap::new();
         let mut consts = consts.clone();
         for b in blocks {
             for d in &b.vars {
@@ -434,8 +436,8 @@ impl Analyzer<'_> {
                     Some(i) => self.const_init(i, &ty, &consts),
                     None => self.type_default_init(&d.ty),
                 };
-                if let Some(prev) = out.iter().find(|v| v.is(&d.name.name)) {
-                    let first = prev.span;
+                if let Some(&prev) = seen.get(&d.name.key()) {
+                    let first = out[prev].span;
                     self.error(
                         code::E1002,
                         d.name.span,
@@ -451,6 +453,7 @@ impl Analyzer<'_> {
                         consts.insert(d.name.key(), (ty.clone(), v.clone()));
                     }
                 }
+                seen.insert(d.name.key(), out.len());
                 out.push(Variable {
                     name: d.name.name.clone(),
                     span: d.name.span,
@@ -510,7 +513,7 @@ impl Analyzer<'_> {
         }
         let pou = &mut self.model.pous[id.0 as usize];
         pou.return_type = return_type;
-        pou.vars = vars;
+        pou.set_vars(vars);
         pou.externals = externals;
     }
 

@@ -490,11 +490,27 @@ pub struct Pou {
     /// instructions of its nested list): the same values as `Model::instrs`, usable when several
     /// instructions share a span (as lowered ladder may).
     pub instrs: Vec<InstrInfo>,
+    /// Upper-case name -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time.
+    #[serde(skip)]
+    pub var_index: HashMap<String, usize>,
 }
 
 impl Pou {
+    /// Sets the variables (names unique, case-insensitively) and indexes them by name.
+    pub fn set_vars(&mut self, vars: Vec<Variable>) {
+        self.var_index = vars.iter().enumerate().map(|(i, v)| (v.name.to_ascii_uppercase(), i)).collect();
+        self.vars = vars;
+    }
+    /// The index in `vars` of a variable, by name (case-insensitive).
+    pub fn var_position(&self, name: &str) -> Option<usize> {
+        if self.var_index.len() == self.vars.len() {
+            self.var_index.get(&name.to_ascii_uppercase()).copied()
+        } else {
+            self.vars.iter().position(|v| v.is(name))
+        }
+    }
     pub fn var(&self, name: &str) -> Option<&Variable> {
-        self.vars.iter().find(|v| v.is(name))
+        self.var_position(name).map(|i| &self.vars[i])
     }
     pub fn inputs(&self) -> impl Iterator<Item = &Variable> {
         self.vars.iter().filter(|v| v.kind == VarKind::Input)

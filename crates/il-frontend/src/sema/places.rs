@@ -372,10 +372,8 @@ impl Body<'_, '_> {
         let kind = self.pou().kind;
         let found = self
             .pou()
-            .vars
-            .iter()
-            .enumerate()
-            .find(|(_, v)| v.is(&base.name))
+            .var_position(&base.name)
+            .map(|index| (index, &self.pou().vars[index]))
             .map(|(index, var)| {
                 let read_only = if var.constant {
                     Some(ReadOnly::Constant { decl: var.span })
