@@ -656,3 +656,48 @@ void ladderc_format_value(ladderc_type t, const void *value, char *buf, size_t l
     default: snprintf(buf, len, "?"); break;
     }
 }
+
+/* ------------------------------------------------------------------ string conversions */
+IEC_STRING ladderc_str_of(int type, const void *value) {
+    char buf[2 * LADDERC_STRING_CAP + 16];
+    if (type == LADDERC_T_BOOL) return *(const IEC_BOOL *)value ? ladderc_str_lit("TRUE", 4) : ladderc_str_lit("FALSE", 5);
+    if (type == LADDERC_T_STRING) return *(const IEC_STRING *)value;
+    ladderc_format_value((ladderc_type)type, value, buf, sizeof buf);
+    return ladderc_str_lit(buf, strlen(buf));
+}
+
+/* The string's text without leading and trailing spaces, NUL-terminated, in buf. */
+static const char *trimmed(IEC_STRING *s) {
+    char *p = s->data, *e;
+    s->data[s->len] = '\0';
+    while (*p == ' ' || *p == '\t') p++;
+    e = p + strlen(p);
+    while (e > p && (e[-1] == ' ' || e[-1] == '\t')) *--e = '\0';
+    return p;
+}
+
+int64_t ladderc_str_to_int(IEC_STRING s) {
+    IEC_LINT v = 0;
+    if (ladderc_parse_value(LADDERC_T_LINT, trimmed(&s), &v, NULL, 0)) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    return v;
+}
+uint64_t ladderc_str_to_uint(IEC_STRING s) {
+    IEC_ULINT v = 0;
+    if (ladderc_parse_value(LADDERC_T_ULINT, trimmed(&s), &v, NULL, 0)) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    return v;
+}
+double ladderc_str_to_real(IEC_STRING s) {
+    IEC_LREAL v = 0;
+    if (ladderc_parse_value(LADDERC_T_LREAL, trimmed(&s), &v, NULL, 0)) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    return v;
+}
+IEC_BOOL ladderc_str_to_bool(IEC_STRING s) {
+    IEC_BOOL v = 0;
+    if (ladderc_parse_value(LADDERC_T_BOOL, trimmed(&s), &v, NULL, 0)) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    return v;
+}
+IEC_TIME ladderc_str_to_time(IEC_STRING s) {
+    IEC_TIME v = 0;
+    if (ladderc_parse_value(LADDERC_T_TIME, trimmed(&s), &v, NULL, 0)) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    return v;
+}

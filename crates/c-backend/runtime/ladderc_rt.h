@@ -268,6 +268,14 @@ int ladderc_wstring_cmp(const IEC_WSTRING *a, const IEC_WSTRING *b);
 IEC_STRING ladderc_str_lit(const char *bytes, size_t len);
 IEC_STRING ladderc_str_cap(IEC_STRING s, unsigned cap);
 int ladderc_str_cmpv(IEC_STRING a, IEC_STRING b);
+/* *_TO_STRING: the value's text as the trace prints it (BOOL TRUE/FALSE, T#..., shortest REAL). */
+IEC_STRING ladderc_str_of(int type, const void *value);
+/* STRING_TO_*: text after trimming spaces; a malformed text gives 0 (FALSE) and LADDERC_ERR_RANGE. */
+int64_t ladderc_str_to_int(IEC_STRING s);
+uint64_t ladderc_str_to_uint(IEC_STRING s);
+double ladderc_str_to_real(IEC_STRING s);
+IEC_BOOL ladderc_str_to_bool(IEC_STRING s);
+IEC_TIME ladderc_str_to_time(IEC_STRING s);
 
 /* ------------------------------------------------------------------ process image access */
 /* Byte order from the profile: LADDERC_BIG_ENDIAN is 0 (little) or 1 (big). Loads and stores go byte by

@@ -12,10 +12,12 @@ pub mod ctypes;
 mod emit;
 pub use emit::config_header;
 pub mod mangle;
+pub mod pipeline;
 pub mod profile;
 pub mod runtime;
 pub mod toolchain;
 
+pub use pipeline::{build_il, compile_il};
 pub use profile::{AddressUnit, BitNumbering, ByteOrder, Located, ProfileError, TargetProfile};
 pub use toolchain::{build, build_with, run, BuildError, BuildOptions, RunOptions, RunOutput};
 

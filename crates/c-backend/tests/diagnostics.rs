@@ -191,3 +191,26 @@ fn target_profiles_load_validate_and_round_trip() {
     );
     assert_eq!(diags.iter().next().unwrap().code.0, "E2003");
 }
+
+#[test]
+fn unsupported_constructs_are_e2005_not_bad_c() {
+    let errors = generate_errors(
+        "PROGRAM main
+VAR
+  w : WSTRING;
+  v : WSTRING;
+END_VAR
+  LD w
+  ST v
+END_PROGRAM
+",
+        &TargetProfile::default(),
+        &Options::default(),
+    );
+    assert!(!errors.is_empty());
+    assert!(
+        errors.iter().all(|e| e.contains("error[E2005]")),
+        "{errors:#?}"
+    );
+    assert!(errors[0].contains("WSTRING"), "{errors:#?}");
+}

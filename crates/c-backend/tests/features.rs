@@ -321,3 +321,97 @@ END_PROGRAM
         "171,52,18,4660,4294967294,1069547520,1.5,0,0,128,-2"
     );
 }
+
+#[test]
+fn string_conversions() {
+    let src = "PROGRAM main
+VAR
+  s : STRING;
+  t : STRING;
+  u : STRING;
+  b : STRING;
+  i : INT;
+  r : REAL;
+  d : TIME;
+  bad : INT;
+END_VAR
+  LD -42
+  INT_TO_STRING
+  ST s
+  LD 2.5
+  REAL_TO_STRING
+  ST t
+  LD T#1500ms
+  TIME_TO_STRING
+  ST u
+  LD TRUE
+  BOOL_TO_STRING
+  ST b
+  LD ' 123 '
+  STRING_TO_INT
+  ST i
+  LD '0.25'
+  STRING_TO_REAL
+  ST r
+  LD 'T#2s'
+  STRING_TO_TIME
+  ST d
+  LD 'x1'
+  STRING_TO_INT
+  ST bad
+END_PROGRAM
+";
+    let b = build_src(src);
+    let out = c_backend::run(
+        &b.exe,
+        &c_backend::RunOptions {
+            cycles: 1,
+            watch: [
+                "main.s", "main.t", "main.u", "main.b", "main.i", "main.r", "main.d", "main.bad",
+            ]
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    assert!(out.success(), "{}", out.stderr);
+    assert_eq!(
+        out.stdout.lines().nth(1).unwrap(),
+        "0,0,\"-42\",\"2.5\",\"T#1500ms\",\"TRUE\",123,0.25,T#2000ms,0"
+    );
+    assert!(
+        out.stderr.contains("conversion out of range"),
+        "{}",
+        out.stderr
+    );
+}
+
+#[test]
+fn big_endian_byte_addressed_msb0_profile() {
+    let profile = c_backend::TargetProfile {
+        byte_order: c_backend::ByteOrder::Big,
+        bit_numbering: c_backend::BitNumbering::Msb0,
+        address_unit: c_backend::AddressUnit::Byte,
+        ..Default::default()
+    };
+    let (units, model, map) = frontend(
+        "PROGRAM main
+VAR
+  w AT %QW1 : WORD;
+END_VAR
+  LD 16#1234
+  ST w
+  LD TRUE
+  ST %QX0.0
+END_PROGRAM
+",
+    );
+    let p = generate_with(&units, &model, &map, &profile, &Default::default());
+    assert!(p.file("ladderc_config.h").unwrap().contains("#define LADDERC_BIG_ENDIAN 1"));
+    let b = build_program(p);
+    let rows = run(&b, 1, 10.0, "", &["%QB0", "%QB1", "%QB2", "%QW1"]);
+    // %QW1 starts at byte 1 (byte addressing), most significant byte first; %QX0.0 is the top bit
+    assert_eq!(rows[1][2..].join(","), "128,18,52,4660");
+}

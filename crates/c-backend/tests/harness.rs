@@ -170,3 +170,54 @@ fn the_makefile_builds_the_same_program() {
         "cycle,time_ms,main.count\n0,0,1\n1,10,2\n"
     );
 }
+
+#[test]
+fn the_pipeline_builds_a_bare_il_file_as_program_main() {
+    let mut map = diagnostics::SourceMap::new();
+    let mut diags = diagnostics::Diagnostics::new();
+    let dir = tempfile::tempdir().unwrap();
+    let inputs = vec![(
+        "bare.il".to_string(),
+        "VAR\n  count : INT;\nEND_VAR\n  LD count\n  ADD 2\n  ST count\n".to_string(),
+    )];
+    let exe = c_backend::build_il(
+        &mut map,
+        &inputs,
+        &Default::default(),
+        &Default::default(),
+        dir.path(),
+        &strict(),
+        &mut diags,
+    )
+    .unwrap()
+    .expect("builds");
+    assert!(!diags.has_errors());
+    let out = c_backend::run(
+        &exe,
+        &c_backend::RunOptions {
+            cycles: 2,
+            watch: vec!["main.count".into()],
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(out.stdout, "cycle,time_ms,main.count\n0,0,2\n1,10,4\n");
+    // errors stop the pipeline before any C is written
+    let mut diags = diagnostics::Diagnostics::new();
+    let bad = vec![(
+        "bad.il".to_string(),
+        "PROGRAM p\n  LD nope\nEND_PROGRAM\n".to_string(),
+    )];
+    let r = c_backend::build_il(
+        &mut map,
+        &bad,
+        &Default::default(),
+        &Default::default(),
+        &dir.path().join("bad"),
+        &strict(),
+        &mut diags,
+    )
+    .unwrap();
+    assert!(r.is_none() && diags.has_errors());
+    assert!(!dir.path().join("bad").exists());
+}

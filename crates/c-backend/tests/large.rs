@@ -126,3 +126,51 @@ fn a_million_lines_in_one_pou_generate_c() {
     eprintln!("1M lines: {len} bytes of C, sema {sema_s:.3}s, generate {gen_s:.3}s");
     assert!(len < 1_000_000 * 200);
 }
+
+/// The parser's generator of valid programs: parsed, analysed, generated, compiled strictly and run.
+#[test]
+fn generated_programs_compile_strictly_and_run() {
+    let src = il_frontend::testgen::generate(1000, 3);
+    let mut map = diagnostics::SourceMap::new();
+    let file = map.add("gen.il", src.clone());
+    let mut diags = Diagnostics::new();
+    let units = vec![il_frontend::parse(file, &src, &mut diags)];
+    let model = il_frontend::sema::analyze(&units, &mut diags);
+    assert!(!diags.has_errors());
+    let p = c_backend::generate(
+        &units,
+        &model,
+        &TargetProfile::default(),
+        &Options::default(),
+        &mut diags,
+    )
+    .expect("generates");
+    let dir = tempfile::tempdir().unwrap();
+    let opts = c_backend::BuildOptions {
+        cc: None,
+        extra_flags: [
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            "-O0",
+            "-fsanitize=undefined",
+            "-fno-sanitize-recover=all",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect(),
+    };
+    let exe = c_backend::build_with(&p, dir.path(), &opts).expect("builds");
+    let out = c_backend::run(
+        &exe,
+        &c_backend::RunOptions {
+            cycles: 50,
+            watch: vec!["P0.n0".into(), "P2.b3".into()],
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    assert!(out.success(), "{}", out.stderr);
+    assert!(!out.stderr.contains("runtime error"), "{}", out.stderr);
+    assert_eq!(out.stdout.lines().count(), 51);
+}

@@ -746,9 +746,7 @@ impl Gen<'_> {
         match fb {
             FbType::Standard(_) => false,
             FbType::User(id) => self
-                .model
-                .pou(id)
-                .var(param)
+                .pou_var(id, param)
                 .is_some_and(|v| v.kind == VarKind::InOut),
         }
     }
@@ -808,7 +806,7 @@ impl Gen<'_> {
                 .iter()
                 .find(|p| p.0.eq_ignore_ascii_case(input))
                 .map(|p| Type::Elementary(p.1)),
-            FbType::User(id) => self.model.pou(id).var(input).map(|v| v.ty.clone()),
+            FbType::User(id) => self.pou_var(id, input).map(|v| v.ty.clone()),
         };
         let Some(pty) = pty else {
             self.unsupported(instance.span, format!("the FB input `{input}`"));
@@ -1162,9 +1160,51 @@ impl Gen<'_> {
         from: &Type,
         to: &Type,
     ) -> Option<String> {
-        let (Some(f), Some(t)) = (from.elementary(), to.elementary()) else {
-            self.unsupported(span, "conversions to or from strings");
-            return None;
+        let (f, t) = match (from.elementary(), to.elementary()) {
+            (Some(f), Some(t)) => (f, t),
+            (Some(f), None) if matches!(to, Type::String { wide: false, .. }) => {
+                let ct = ctypes::elementary(f);
+                return Some(format!(
+                    "ladderc_str_of({}, &({ct}){{{v}}})",
+                    ctypes::type_tag(f)
+                ));
+            }
+            (None, Some(t)) if matches!(from, Type::String { wide: false, .. }) => {
+                return Some(match t {
+                    E::Bool => format!("ladderc_str_to_bool({v})"),
+                    E::Real | E::Lreal => {
+                        format!("(({})ladderc_str_to_real({v}))", ctypes::elementary(t))
+                    }
+                    E::Time | E::Ltime => format!("ladderc_str_to_time({v})"),
+                    _ if t.is_signed_integer() => {
+                        convert_elementary(&format!("ladderc_str_to_int({v})"), E::Lint, t)
+                    }
+                    _ if t.is_integer() || t.is_bit() => {
+                        convert_elementary(&format!("ladderc_str_to_uint({v})"), E::Ulint, t)
+                    }
+                    _ => {
+                        self.unsupported(span, "converting a STRING to a date or time of day");
+                        return None;
+                    }
+                });
+            }
+            (None, None) if from.is_string() && to.is_string() && !to.is_error() => {
+                if matches!(
+                    (from, to),
+                    (
+                        Type::String { wide: false, .. },
+                        Type::String { wide: false, .. }
+                    )
+                ) {
+                    return Some(convert(v, from, to));
+                }
+                self.unsupported(span, "WSTRING conversions");
+                return None;
+            }
+            _ => {
+                self.unsupported(span, "this conversion");
+                return None;
+            }
         };
         Some(match kind {
             ConversionKind::Plain => convert_elementary(v, f, t),

@@ -71,7 +71,7 @@ impl Gen<'_> {
                                     None => continue,
                                 }
                             }
-                            FbType::User(id) => match self.model.pou(*id).var(name) {
+                            FbType::User(id) => match self.pou_var(*id, name) {
                                 Some(var) => {
                                     (format!("{lv}.{}", mangle::var(&var.name)), var.ty.clone())
                                 }

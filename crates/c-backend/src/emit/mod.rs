@@ -37,6 +37,49 @@ pub struct Gen<'a> {
     /// The span of the `AT %...` address of each located declaration, by the declaration's name span
     /// and whole span (the model keeps the variable's span only).
     pub address_spans: HashMap<Span, Span>,
+    /// Lazily built name indexes of user POU variables and struct fields (upper-case name -> index),
+    /// so that member lookups stay O(1) however many members a type has.
+    member_index: std::cell::RefCell<HashMap<(bool, u32), HashMap<String, usize>>>,
+}
+
+impl<'a> Gen<'a> {
+    /// A user POU's variable by name (case-insensitive).
+    pub fn pou_var(&self, id: PouId, name: &str) -> Option<&'a il_frontend::sema::Variable> {
+        let model: &'a Model = self.model;
+        let vars = &model.pou(id).vars;
+        let i = self.member(true, id.0, vars, name)?;
+        vars.get(i)
+    }
+    /// A user structure's field by name (case-insensitive).
+    pub fn struct_field(
+        &self,
+        id: il_frontend::sema::TypeId,
+        name: &str,
+    ) -> Option<&'a il_frontend::sema::Variable> {
+        let model: &'a Model = self.model;
+        let UserTypeDef::Struct { fields } = &model.user_type(id).def else {
+            return None;
+        };
+        let i = self.member(false, id.0, fields, name)?;
+        fields.get(i)
+    }
+    fn member(
+        &self,
+        pou: bool,
+        id: u32,
+        vars: &[il_frontend::sema::Variable],
+        name: &str,
+    ) -> Option<usize> {
+        let mut cache = self.member_index.borrow_mut();
+        let map = cache.entry((pou, id)).or_insert_with(|| {
+            let mut m = HashMap::with_capacity(vars.len());
+            for (i, v) in vars.iter().enumerate() {
+                m.entry(v.name.to_ascii_uppercase()).or_insert(i);
+            }
+            m
+        });
+        map.get(&name.to_ascii_uppercase()).copied()
+    }
 }
 
 /// Records the address span of every located declaration in the units.
@@ -89,6 +132,7 @@ pub fn generate(
         reported: HashSet::new(),
         quiet: 0,
         address_spans: collect_address_spans(units),
+        member_index: Default::default(),
     };
     g.check_embedded(opts);
 
@@ -248,7 +292,11 @@ impl Gen<'_> {
     }
 
     /// A struct member declaration for a variable (None: no storage, e.g. located or external).
-    fn member(&mut self, pou_kind: PouKind, v: &il_frontend::sema::Variable) -> Option<String> {
+    fn member_decl(
+        &mut self,
+        pou_kind: PouKind,
+        v: &il_frontend::sema::Variable,
+    ) -> Option<String> {
         if v.location.is_some() || v.kind == VarKind::External {
             return None;
         }
@@ -282,7 +330,7 @@ impl Gen<'_> {
                     let _ = writeln!(h, "typedef struct {{");
                     let mut any = false;
                     for f in fields.clone() {
-                        if let Some(m) = self.member(PouKind::FunctionBlock, &f) {
+                        if let Some(m) = self.member_decl(PouKind::FunctionBlock, &f) {
                             let _ = writeln!(h, "    {m}");
                             any = true;
                         }
@@ -298,7 +346,7 @@ impl Gen<'_> {
                     let _ = writeln!(h, "typedef struct {{");
                     let mut any = false;
                     for v in &p.vars {
-                        if let Some(m) = self.member(p.kind, v) {
+                        if let Some(m) = self.member_decl(p.kind, v) {
                             let _ = writeln!(h, "    {m}");
                             any = true;
                         }

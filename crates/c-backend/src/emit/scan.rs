@@ -91,6 +91,16 @@ impl Gen<'_> {
             }
         }
         tasks.sort_by_key(|t| t.3);
+        // program instances of each task, in declaration order
+        let mut by_task: std::collections::HashMap<(usize, usize, usize), Vec<usize>> =
+            std::collections::HashMap::new();
+        for (i, inst) in instances.iter().enumerate() {
+            if let Some((ci, ri, pi)) = inst.configured {
+                if let Some(ti) = self.model.configurations[ci].resources[ri].programs[pi].task {
+                    by_task.entry((ci, ri, ti)).or_default().push(i);
+                }
+            }
+        }
         let n_tasks = tasks.len();
         if n_tasks > 0 {
             let _ = writeln!(
@@ -166,13 +176,8 @@ impl Gen<'_> {
                 "run".to_string()
             };
             let _ = writeln!(c, "        if ({guard}) {{");
-            for inst in &instances {
-                if let Some((ici, iri, ipi)) = inst.configured {
-                    let p = &self.model.configurations[ici].resources[iri].programs[ipi];
-                    if ici == ci && iri == ri && p.task == Some(ti) {
-                        self.run_instance(c, inst, &ast_configs, 3);
-                    }
-                }
+            for &i in by_task.get(&(ci, ri, ti)).map(Vec::as_slice).unwrap_or(&[]) {
+                self.run_instance(c, &instances[i], &ast_configs, 3);
             }
             c.push_str("        }\n    }\n");
         }
@@ -259,11 +264,10 @@ impl Gen<'_> {
                 .and_then(|r| r.programs.get(pi))
                 .map(|p| (ci, ri, p.args.clone()))
         });
-        let pou = self.model.pou(inst.pou).clone();
         if let Some((ci, ri, args)) = &args {
             let scope = Scope::for_config(*ci, *ri);
             for a in args {
-                let Some(param) = pou.var(&a.name.name) else {
+                let Some(param) = self.pou_var(inst.pou, &a.name.name) else {
                     self.unsupported(a.span, "an argument that is not a parameter of the program");
                     continue;
                 };
@@ -289,7 +293,7 @@ impl Gen<'_> {
                 let ArgDir::Output { negated } = a.dir else {
                     continue;
                 };
-                let Some(param) = pou.var(&a.name.name) else {
+                let Some(param) = self.pou_var(inst.pou, &a.name.name) else {
                     continue;
                 };
                 let il_frontend::ast::Operand::Var(r) = &a.value else {

@@ -285,13 +285,11 @@ impl Gen<'_> {
     fn field(&mut self, lv: &str, ty: &Type, f: &il_frontend::ast::Ident) -> Option<Place> {
         match ty {
             Type::Struct(id) => {
-                if let UserTypeDef::Struct { fields } = &self.model.user_type(*id).def {
-                    if let Some(v) = fields.iter().find(|v| v.is(&f.name)) {
-                        return Some(Place::Mem {
-                            lv: format!("{lv}.{}", mangle::var(&v.name)),
-                            ty: v.ty.clone(),
-                        });
-                    }
+                if let Some(v) = self.struct_field(*id, &f.name) {
+                    return Some(Place::Mem {
+                        lv: format!("{lv}.{}", mangle::var(&v.name)),
+                        ty: v.ty.clone(),
+                    });
                 }
             }
             Type::Fb(FbType::Standard(fb)) => {
@@ -304,7 +302,7 @@ impl Gen<'_> {
                 }
             }
             Type::Fb(FbType::User(id)) => {
-                if let Some(v) = self.model.pou(*id).var(&f.name) {
+                if let Some(v) = self.pou_var(*id, &f.name) {
                     let name = mangle::var(&v.name);
                     let lv = if v.kind == VarKind::InOut {
                         format!("(*{lv}.{name})")
