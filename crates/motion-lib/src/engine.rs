@@ -153,6 +153,8 @@ pub(crate) struct Active {
     pub released: bool,
     pub end_v: f64,
     pub sync: SyncParams,
+    /// Velocity-change tail run after `prof` (see [`plan_to`]).
+    pub tail: Option<Profile>,
 }
 
 impl Active {
@@ -168,6 +170,7 @@ impl Active {
             released: true,
             end_v: 0.0,
             sync: SyncParams::default(),
+            tail: None,
         }
     }
 }
@@ -183,6 +186,50 @@ pub(crate) fn plan_position(
         return Ok(standing(target));
     }
     Profile::position(start, target, end_v, lim)
+}
+
+/// A positioning plan ending at `end_v`: when |end_v| exceeds the move's velocity limit
+/// (BlendingNext/High towards a faster successor) the move cruises at its own limit and
+/// a velocity-change tail at the end reaches `end_v` exactly at `target`.
+pub(crate) fn plan_to(
+    start: State,
+    target: f64,
+    end_v: f64,
+    lim: &Limits,
+) -> Result<(Profile, Option<Profile>), crate::profile::PlanError> {
+    if end_v.abs() <= lim.vmax {
+        return plan_position(start, target, end_v, lim).map(|p| (p, None));
+    }
+    let mut fast = *lim;
+    fast.vmax = end_v.abs();
+    let cruise = lim.vmax * end_v.signum();
+    let probe = Profile::velocity(
+        State {
+            p: 0.0,
+            v: cruise,
+            a: 0.0,
+        },
+        end_v,
+        &fast,
+    )?;
+    let d_tail = probe.end().p;
+    let split = target - d_tail;
+    // Room for the tail in the direction of travel: else one profile with the raised limit.
+    if (split - start.p) * end_v.signum() > 0.0 {
+        if let Ok(main) = Profile::position(start, split, cruise, lim) {
+            let tail = Profile::velocity(
+                State {
+                    p: split,
+                    v: cruise,
+                    a: 0.0,
+                },
+                end_v,
+                &fast,
+            )?;
+            return Ok((main, Some(tail)));
+        }
+    }
+    Profile::position(start, target, end_v, &fast).map(|p| (p, None))
 }
 
 /// A zero-length profile standing at `p`.
@@ -1016,10 +1063,9 @@ impl Engine {
             }
             Some(now) => {
                 let a = &mut self.axes[axis].active;
-                let mut lim = a.lim;
-                lim.vmax = lim.vmax.max(vj.abs());
-                if let Ok(p) = Profile::position(now, a.target, vj, &lim) {
+                if let Ok((p, tail)) = plan_to(now, a.target, vj, &a.lim) {
                     a.prof = p;
+                    a.tail = tail;
                     a.t = 0.0;
                     a.end_v = vj;
                 }
@@ -1031,10 +1077,13 @@ impl Engine {
     /// advanced by `t0` seconds into its profile.
     fn activate(&mut self, axis: usize, p: Pending, t0: f64) -> Result<(), ErrorId> {
         let start = self.axes[axis].set;
-        let mut lim = p.lim;
-        lim.vmax = lim.vmax.max(p.end_v.abs());
+        let lim = p.lim;
+        let mut tail = None;
         let prof = match p.kind {
-            Kind::Position => plan_position(start, p.target, p.end_v, &lim),
+            Kind::Position => plan_to(start, p.target, p.end_v, &lim).map(|(m, t)| {
+                tail = t;
+                m
+            }),
             Kind::Velocity => Profile::velocity(start, p.target, &lim),
             Kind::Halt | Kind::Stop => Profile::velocity(start, 0.0, &lim),
             Kind::Gear | Kind::Cam => Ok(self.axes[axis].active.prof),
@@ -1062,6 +1111,7 @@ impl Engine {
             released: false,
             end_v: p.end_v,
             sync: p.sync,
+            tail,
         };
         if p.kind == Kind::Stop {
             ax.stop_owner = Some(p.id);
@@ -1109,6 +1159,7 @@ impl Engine {
             released: true,
             end_v: 0.0,
             sync: SyncParams::default(),
+            tail: None,
         };
         ax.state = AxisState::ContinuousMotion;
         let id = self.cmds.alloc(CmdStatus::Done);
@@ -1287,6 +1338,21 @@ impl Engine {
             }
             Kind::Position | Kind::Halt | Kind::Velocity | Kind::Stop | Kind::Brake => {
                 if a.released || a.t < a.prof.duration() {
+                    return;
+                }
+                if let Some(tail) = a.tail {
+                    // Main part done: continue with the velocity-change tail.
+                    let ax = &mut self.axes[i];
+                    ax.active.t -= a.prof.duration();
+                    ax.active.prof = tail;
+                    ax.active.tail = None;
+                    let k = ax.override_now;
+                    let s = tail.at(ax.active.t);
+                    ax.set = State {
+                        p: s.p,
+                        v: s.v * k,
+                        a: s.a * k * k,
+                    };
                     return;
                 }
                 let leftover = (a.t - a.prof.duration()) / self.axes[i].override_now.max(1e-12);

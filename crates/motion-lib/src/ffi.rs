@@ -326,16 +326,13 @@ pub unsafe extern "C" fn mc_home(engine: *mut McEngine, axis: u32, fb: *mut MC_H
         return;
     };
     let mut b = McHome::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.position = c.Position;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.done = c.Done;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -351,6 +348,19 @@ pub unsafe extern "C" fn mc_home(engine: *mut McEngine, axis: u32, fb: *mut MC_H
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, axis as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -441,17 +451,14 @@ pub unsafe extern "C" fn mc_halt(engine: *mut McEngine, axis: u32, fb: *mut MC_H
         return;
     };
     let mut b = McHalt::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.done = c.Done;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -467,6 +474,19 @@ pub unsafe extern "C" fn mc_halt(engine: *mut McEngine, axis: u32, fb: *mut MC_H
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, axis as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -517,6 +537,7 @@ pub unsafe extern "C" fn mc_move_absolute(
         return;
     };
     let mut b = McMoveAbsolute::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.continuous_update = c.ContinuousUpdate;
     b.position = c.Position;
@@ -524,22 +545,14 @@ pub unsafe extern "C" fn mc_move_absolute(
     b.acceleration = c.Acceleration;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
-    b.direction = match Direction::from_u8(c.Direction) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.direction = Direction::from_u8(c.Direction).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.done = c.Done;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -555,6 +568,19 @@ pub unsafe extern "C" fn mc_move_absolute(
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, axis as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -604,6 +630,7 @@ pub unsafe extern "C" fn mc_move_relative(
         return;
     };
     let mut b = McMoveRelative::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.continuous_update = c.ContinuousUpdate;
     b.distance = c.Distance;
@@ -611,14 +638,10 @@ pub unsafe extern "C" fn mc_move_relative(
     b.acceleration = c.Acceleration;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.done = c.Done;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -634,6 +657,19 @@ pub unsafe extern "C" fn mc_move_relative(
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, axis as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -683,6 +719,7 @@ pub unsafe extern "C" fn mc_move_additive(
         return;
     };
     let mut b = McMoveAdditive::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.continuous_update = c.ContinuousUpdate;
     b.distance = c.Distance;
@@ -690,14 +727,10 @@ pub unsafe extern "C" fn mc_move_additive(
     b.acceleration = c.Acceleration;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.done = c.Done;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -713,6 +746,19 @@ pub unsafe extern "C" fn mc_move_additive(
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, axis as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -762,28 +808,21 @@ pub unsafe extern "C" fn mc_move_velocity(
         return;
     };
     let mut b = McMoveVelocity::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.continuous_update = c.ContinuousUpdate;
     b.velocity = c.Velocity;
     b.acceleration = c.Acceleration;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
-    b.direction = match Direction::from_u8(c.Direction) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.direction = Direction::from_u8(c.Direction).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.in_velocity = c.InVelocity;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -799,6 +838,19 @@ pub unsafe extern "C" fn mc_move_velocity(
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
     b.core.in_target = c.InVelocity;
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Active = false;
+            c.CommandAborted = false;
+            c.InVelocity = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, axis as usize);
     c.InVelocity = b.in_velocity;
     c.Busy = b.busy;
@@ -1185,29 +1237,22 @@ pub unsafe extern "C" fn mc_gear_in(
         return;
     };
     let mut b = McGearIn::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.continuous_update = c.ContinuousUpdate;
     b.ratio_numerator = c.RatioNumerator;
     b.ratio_denominator = c.RatioDenominator;
-    b.master_value_source = match master_source(c.MasterValueSource) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.master_value_source = master_source(c.MasterValueSource).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.acceleration = c.Acceleration;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.in_gear = c.InGear;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -1223,6 +1268,19 @@ pub unsafe extern "C" fn mc_gear_in(
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
     b.core.in_target = c.InGear;
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Active = false;
+            c.CommandAborted = false;
+            c.InGear = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, master as usize, slave as usize);
     c.InGear = b.in_gear;
     c.Busy = b.busy;
@@ -1430,32 +1488,25 @@ pub unsafe extern "C" fn mc_cam_in(
         return;
     };
     let mut b = McCamIn::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.continuous_update = c.ContinuousUpdate;
     b.master_offset = c.MasterOffset;
     b.slave_offset = c.SlaveOffset;
     b.master_scaling = c.MasterScaling;
     b.slave_scaling = c.SlaveScaling;
-    b.master_value_source = match master_source(c.MasterValueSource) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.master_value_source = master_source(c.MasterValueSource).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.cam_table_id = c.CamTableID as usize;
     b.periodic = c.Periodic;
     b.master_absolute = c.MasterAbsolute;
     b.slave_absolute = c.SlaveAbsolute;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.in_sync = c.InSync;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -1473,6 +1524,20 @@ pub unsafe extern "C" fn mc_cam_in(
     b.core.error_id = err(c.ErrorID);
     b.core.in_target = c.InSync;
     b.core.end_of_profile = c.EndOfProfile;
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Active = false;
+            c.CommandAborted = false;
+            c.InSync = false;
+            c.EndOfProfile = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, master as usize, slave as usize);
     c.InSync = b.in_sync;
     c.Busy = b.busy;
@@ -1858,17 +1923,14 @@ pub unsafe extern "C" fn mc_group_halt(engine: *mut McEngine, group: u32, fb: *m
         return;
     };
     let mut b = McGroupHalt::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.done = c.Done;
     b.busy = c.Busy;
     b.active = c.Active;
@@ -1884,6 +1946,19 @@ pub unsafe extern "C" fn mc_group_halt(engine: *mut McEngine, group: u32, fb: *m
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, group as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -1935,6 +2010,7 @@ pub unsafe extern "C" fn mc_move_linear_absolute(
         return;
     };
     let mut b = McMoveLinearAbsolute::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.position = c.Position;
     b.velocity = c.Velocity;
@@ -1942,22 +2018,14 @@ pub unsafe extern "C" fn mc_move_linear_absolute(
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
     b.coord_system = c.CoordSystem;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
-    b.transition_mode = match TransitionMode::from_u8(c.TransitionMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
+    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.transition_parameter = c.TransitionParameter;
     b.done = c.Done;
     b.busy = c.Busy;
@@ -1974,6 +2042,19 @@ pub unsafe extern "C" fn mc_move_linear_absolute(
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, group as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -2025,6 +2106,7 @@ pub unsafe extern "C" fn mc_move_linear_relative(
         return;
     };
     let mut b = McMoveLinearRelative::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.distance = c.Distance;
     b.velocity = c.Velocity;
@@ -2032,22 +2114,14 @@ pub unsafe extern "C" fn mc_move_linear_relative(
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
     b.coord_system = c.CoordSystem;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
-    b.transition_mode = match TransitionMode::from_u8(c.TransitionMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
+    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.transition_parameter = c.TransitionParameter;
     b.done = c.Done;
     b.busy = c.Busy;
@@ -2064,6 +2138,19 @@ pub unsafe extern "C" fn mc_move_linear_relative(
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, group as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -2115,6 +2202,7 @@ pub unsafe extern "C" fn mc_move_direct_absolute(
         return;
     };
     let mut b = McMoveDirectAbsolute::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
     b.position = c.Position;
     b.velocity = c.Velocity;
@@ -2122,22 +2210,14 @@ pub unsafe extern "C" fn mc_move_direct_absolute(
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
     b.coord_system = c.CoordSystem;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
-    b.transition_mode = match TransitionMode::from_u8(c.TransitionMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
+    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.transition_parameter = c.TransitionParameter;
     b.done = c.Done;
     b.busy = c.Busy;
@@ -2154,6 +2234,19 @@ pub unsafe extern "C" fn mc_move_direct_absolute(
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, group as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -2208,46 +2301,31 @@ pub unsafe extern "C" fn mc_move_circular_absolute(
         return;
     };
     let mut b = McMoveCircularAbsolute::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
-    b.circ_mode_center = match circ_mode(c.CircMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.circ_mode_center = circ_mode(c.CircMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.aux_point = c.AuxPoint;
     b.end_point = c.EndPoint;
-    b.path_choice_ccw = match path_choice(c.PathChoice) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.path_choice_ccw = path_choice(c.PathChoice).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.velocity = c.Velocity;
     b.acceleration = c.Acceleration;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
     b.coord_system = c.CoordSystem;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
-    b.transition_mode = match TransitionMode::from_u8(c.TransitionMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
+    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.transition_parameter = c.TransitionParameter;
     b.done = c.Done;
     b.busy = c.Busy;
@@ -2264,6 +2342,19 @@ pub unsafe extern "C" fn mc_move_circular_absolute(
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, group as usize);
     c.Done = b.done;
     c.Busy = b.busy;
@@ -2318,46 +2409,31 @@ pub unsafe extern "C" fn mc_move_circular_relative(
         return;
     };
     let mut b = McMoveCircularRelative::default();
+    let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
-    b.circ_mode_center = match circ_mode(c.CircMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.circ_mode_center = circ_mode(c.CircMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.aux_point = c.AuxPoint;
     b.end_point = c.EndPoint;
-    b.path_choice_ccw = match path_choice(c.PathChoice) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.path_choice_ccw = path_choice(c.PathChoice).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.velocity = c.Velocity;
     b.acceleration = c.Acceleration;
     b.deceleration = c.Deceleration;
     b.jerk = c.Jerk;
     b.coord_system = c.CoordSystem;
-    b.buffer_mode = match BufferMode::from_u8(c.BufferMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
-    b.transition_mode = match TransitionMode::from_u8(c.TransitionMode) {
-        Ok(v) => v,
-        Err(id) => {
-            c.Error = true;
-            c.ErrorID = id.code();
-            return;
-        }
-    };
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
+    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
     b.transition_parameter = c.TransitionParameter;
     b.done = c.Done;
     b.busy = c.Busy;
@@ -2374,6 +2450,19 @@ pub unsafe extern "C" fn mc_move_circular_relative(
     b.core.command_aborted = c.CommandAborted;
     b.core.error = c.Error;
     b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
     b.call(e, group as usize);
     c.Done = b.done;
     c.Busy = b.busy;

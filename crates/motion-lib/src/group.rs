@@ -74,6 +74,8 @@ pub(crate) struct GPending {
     end_v: f64,
     /// Corner blend run before this move (geometry, constant path speed).
     prefix: Option<(Geometry, f64)>,
+    /// Path speed at the start when the predecessor ended at a blending junction.
+    start_v: Option<f64>,
 }
 
 #[derive(Clone, Debug)]
@@ -90,6 +92,8 @@ pub(crate) struct GActive {
     lim: Limits,
     end_v: f64,
     direct: Option<Box<[Profile; MAX_AXES]>>,
+    /// Velocity-change tail after `prof` (see `engine::plan_to`).
+    tail: Option<Profile>,
 }
 
 /// Runtime of one group.
@@ -461,6 +465,7 @@ impl Engine {
             speed: inputs.velocity.abs(),
             end_v: 0.0,
             prefix: None,
+            start_v: None,
         };
         if buffer == BufferMode::Aborting || idle {
             self.group_abort_all(g, CmdStatus::Aborted);
@@ -599,17 +604,22 @@ impl Engine {
         let gr = &mut self.groups[g];
         if pred_is_active {
             if let Some(a) = gr.active.as_mut() {
-                // Re-plan the running move to end at the junction (speed vj).
-                let s_now = a.prof.at(a.t - a.prefix_end);
-                if a.t < a.prefix_end {
-                    return;
-                }
+                // Re-plan the running move to end at the junction (speed vj). While the
+                // move still runs its own corner blend, its main part has not started:
+                // re-plan that from its start state.
+                let in_prefix = a.t < a.prefix_end;
+                let s_now = if in_prefix {
+                    a.prof.start()
+                } else {
+                    a.prof.at(a.t - a.prefix_end)
+                };
                 let new_len = a.geom.len() - dist(&pred_target, &new_pred_target);
-                let mut lim = a.lim;
-                lim.vmax = lim.vmax.max(vj);
-                if let Ok(p) = Profile::position(s_now, new_len, vj, &lim) {
+                if let Ok((p, tail)) = crate::engine::plan_to(s_now, new_len, vj, &a.lim) {
                     a.prof = p;
-                    a.t = a.prefix_end;
+                    a.tail = tail;
+                    if !in_prefix {
+                        a.t = a.prefix_end;
+                    }
                     a.end_v = vj;
                     a.target = new_pred_target;
                 } else {
@@ -666,6 +676,7 @@ impl Engine {
             .active
             .as_ref()
             .map(|a| (Self::path_state(a), a.lim));
+        let mut tail = None;
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
             GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
@@ -693,17 +704,18 @@ impl Engine {
                 };
                 let geo = self.geometry_for(g, &start, &p.target, &p.motion);
                 let (u, _) = geo.tangents(n);
-                let mut lim = self.path_lims(g, &u, &p.inputs)?;
+                let lim = self.path_lims(g, &u, &p.inputs)?;
                 let (v0, a0, pe) = match &p.prefix {
                     Some((b, v)) => (*v, 0.0, if *v > 0.0 { b.len() / v } else { 0.0 }),
+                    None if p.start_v.is_some() => (p.start_v.unwrap_or(0.0), 0.0, 0.0),
                     None => {
+                        // Aborting: the current axis velocity projected onto the path.
                         let v0: f64 = (0..n).map(|i| vel[i] * u[i]).sum();
                         let a0: f64 = (0..n).map(|i| acc[i] * u[i]).sum();
                         (v0, a0, 0.0)
                     }
                 };
-                lim.vmax = lim.vmax.max(p.end_v);
-                let prof = crate::engine::plan_position(
+                let (prof, t) = crate::engine::plan_to(
                     State {
                         p: 0.0,
                         v: v0,
@@ -714,6 +726,7 @@ impl Engine {
                     &lim,
                 )
                 .map_err(|_| ErrorId::PlanningFailed)?;
+                tail = t;
                 (geo, prof, lim, None, pe)
             }
             GKind::Direct => {
@@ -772,6 +785,7 @@ impl Engine {
             lim,
             end_v: p.end_v,
             direct,
+            tail,
         });
         gr.state = if p.kind == GKind::Stop {
             gr.stop_owner = Some(p.id);
@@ -784,6 +798,9 @@ impl Engine {
         self.cmds.set(p.id, CmdStatus::Active);
         for a in self.groups[g].axes.iter().flatten() {
             let ax = &mut self.axes[*a as usize];
+            if ax.state == AxisState::Disabled {
+                continue;
+            }
             ax.active = Active {
                 kind: Kind::Group,
                 ..Active::idle(ax.set)
@@ -826,6 +843,7 @@ impl Engine {
                 speed: 0.0,
                 end_v: 0.0,
                 prefix: None,
+                start_v: None,
             };
             if self.group_activate(g, p, 0.0).is_err() {
                 self.finish_group(g);
@@ -879,6 +897,9 @@ impl Engine {
                 let mut done = true;
                 for i in 0..n {
                     if let Some(ax) = self.groups[g].axes[i] {
+                        if self.axes[ax as usize].active.kind != Kind::Group {
+                            continue;
+                        }
                         let s = profs[i].at(a.t);
                         self.axes[ax as usize].set = s;
                         done &= a.t >= profs[i].duration();
@@ -890,6 +911,9 @@ impl Engine {
                 geo.eval(s.p, n, &mut pos, &mut d1, &mut d2);
                 for i in 0..n {
                     if let Some(ax) = self.groups[g].axes[i] {
+                        if self.axes[ax as usize].active.kind != Kind::Group {
+                            continue;
+                        }
                         self.axes[ax as usize].set = State {
                             p: pos[i],
                             v: d1[i] * s.v,
@@ -897,7 +921,15 @@ impl Engine {
                         };
                     }
                 }
-                ended = a.t >= a.prefix_end + a.prof.duration();
+                ended = a.t >= a.prefix_end + a.prof.duration() && a.tail.is_none();
+                if let Some(tail) = a.tail {
+                    if a.t >= a.prefix_end + a.prof.duration() {
+                        // Main part done: the velocity-change tail follows (next cycle).
+                        a.prefix_end += a.prof.duration();
+                        a.prof = tail;
+                        a.tail = None;
+                    }
+                }
             }
             self.groups[g].scratch = (pos, d1, d2);
             let kind = a.kind;
@@ -917,6 +949,9 @@ impl Engine {
                 if let Some(target) = target {
                     for (i, t) in target.iter().enumerate().take(n) {
                         if let Some(ax) = self.groups[g].axes[i] {
+                            if self.axes[ax as usize].active.kind != Kind::Group {
+                                continue;
+                            }
                             let s = &mut self.axes[ax as usize].set;
                             s.p = *t;
                             s.v = 0.0;
@@ -945,6 +980,9 @@ impl Engine {
                             }
                         }
                         let t0 = if end_v > 0.0 { leftover.max(0.0) } else { 0.0 };
+                        if end_v > 0.0 {
+                            p.start_v = Some(end_v);
+                        }
                         match self.group_activate(g, p, t0) {
                             Ok(()) => {
                                 started = true;

@@ -9,6 +9,11 @@
 /// Most axes in a group (X, Y, Z, A, B, C, U, V, W and 7 more).
 pub const MAX_AXES: usize = 16;
 
+/// Names of the identities in a group (IdentInGroup 0..16).
+pub const IDENT_NAMES: [&str; MAX_AXES] = [
+    "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "P", "Q", "R", "E", "F", "G", "H",
+];
+
 /// A point or vector over the group's axes.
 pub type Vecn = [f64; MAX_AXES];
 

@@ -2,31 +2,46 @@
 //! against include/motion_lib.h and the crate's staticlib, runs it, and expects
 //! MC_Power + MC_MoveAbsolute to reach Done.
 //!
-//! Finding the staticlib: `cargo test` builds the library with all its crate types, and
-//! cargo places `libmotion_lib.a` in the profile directory, two levels above this test's
-//! executable (target/<profile>/deps/ffi_c-*). If it is not there (e.g. another runner),
-//! the test builds it with `cargo build -p motion-lib` into the same target directory.
+//! Finding the staticlib: `cargo test` compiles the library with all its crate types, so
+//! the staticlib of the current sources is the newest `libmotion_lib*.a` in the profile's
+//! `deps` directory (target/<profile>/deps, next to this test's executable; cargo does not
+//! copy it up to target/<profile>/ for `cargo test`). If there is none (another runner),
+//! the test builds it with `cargo build -p motion-lib --lib` into the same target
+//! directory.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+fn newest_staticlib(deps: &Path) -> Option<PathBuf> {
+    std::fs::read_dir(deps)
+        .ok()?
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.starts_with("libmotion_lib") && n.ends_with(".a"))
+        })
+        .max_by_key(|p| p.metadata().and_then(|m| m.modified()).ok())
+}
+
 fn staticlib() -> PathBuf {
     let exe = std::env::current_exe().unwrap();
-    let profile_dir = exe.parent().and_then(Path::parent).unwrap().to_path_buf();
-    let lib = profile_dir.join("libmotion_lib.a");
-    if !lib.exists() {
-        let target = profile_dir.parent().unwrap();
-        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-        let st = Command::new(cargo)
-            .args(["build", "-p", "motion-lib", "--lib"])
-            .env("CARGO_TARGET_DIR", target)
-            .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .status()
-            .unwrap();
-        assert!(st.success());
-        return target.join("debug/libmotion_lib.a");
+    let deps = exe.parent().unwrap();
+    if let Some(lib) = newest_staticlib(deps) {
+        return lib;
     }
-    lib
+    let profile_dir = deps.parent().unwrap();
+    let target = profile_dir.parent().unwrap();
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let st = Command::new(cargo)
+        .args(["build", "-p", "motion-lib", "--lib"])
+        .env("CARGO_TARGET_DIR", target)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .status()
+        .unwrap();
+    assert!(st.success());
+    target.join("debug/libmotion_lib.a")
 }
 
 #[test]

@@ -501,9 +501,13 @@ fn blending_and_buffered_single_axis() {
     m1.call(&mut e, a);
     m2.call(&mut e, a);
     let mut at_done = None;
+    let mut max_v1: f64 = 0.0;
     run_until(&mut e, 10000, |e| {
         m1.call(e, a);
         m2.call(e, a);
+        if m1.active && e.set_position_of(a).unwrap() < 80.0 {
+            max_v1 = max_v1.max(e.set_velocity_of(a).unwrap());
+        }
         if m1.done && at_done.is_none() {
             at_done = Some(e.set_velocity_of(a).unwrap());
             assert!(m2.active);
@@ -512,6 +516,8 @@ fn blending_and_buffered_single_axis() {
     });
     let v = at_done.unwrap();
     assert!((v - 80.0).abs() < 0.5, "junction {v}");
+    // The first move cruises at its own velocity and speeds up only near its end.
+    assert!((max_v1 - 50.0).abs() < 1e-9, "{max_v1}");
     // Buffered: successor starts at standstill.
     let mut m1 = McMoveAbsolute {
         velocity: 50.0,

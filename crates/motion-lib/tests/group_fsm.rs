@@ -406,3 +406,25 @@ fn direct_move_and_relative_line() {
     cs.call(&mut e, g);
     assert_eq!(cs.error_id, ErrorId::InvalidCoordSystem);
 }
+
+#[test]
+fn power_off_of_a_member_stops_the_group_in_error() {
+    let (mut e, ax, g) = enabled_group(2);
+    let mut m = lin(&[100.0, 100.0], BufferMode::Aborting);
+    m.call(&mut e, g);
+    for _ in 0..50 {
+        e.step();
+    }
+    let mut p = McPower {
+        enable: false,
+        ..Default::default()
+    };
+    p.call(&mut e, ax[0]);
+    assert_eq!(e.axis_state(ax[0]).unwrap(), AxisState::Disabled);
+    assert_eq!(e.group_state(g).unwrap(), GroupState::GroupErrorStop);
+    m.call(&mut e, g);
+    assert!(m.error && m.error_id == ErrorId::GroupAxisError);
+    step_until(&mut e, 5000, |e| e.set_velocity_of(ax[1]).unwrap() == 0.0);
+    assert_eq!(e.axis_state(ax[0]).unwrap(), AxisState::Disabled);
+    assert_eq!(e.axis_state(ax[1]).unwrap(), AxisState::Standstill);
+}

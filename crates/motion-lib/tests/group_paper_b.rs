@@ -83,6 +83,10 @@ struct Trace {
     end: [f64; 3],
     max_speed: f64,
     max_jump: f64,
+    /// Largest change of the path speed in one cycle.
+    max_speed_step: f64,
+    /// Path speeds while block 2 was active.
+    block2: Vec<f64>,
     cycles: u64,
 }
 
@@ -116,13 +120,21 @@ fn run(tm: TransitionMode, d: f64) -> Trace {
     let mut max_speed: f64 = 0.0;
     let mut max_jump: f64 = 0.0;
     let mut prev_v = [0.0; 3];
+    let mut prev_speed = 0.0;
+    let mut block2 = Vec::new();
+    let mut max_speed_step: f64 = 0.0;
     for _ in 0..200_000 {
         eng.step();
         let (v, speed) = eng.group_velocity(g).unwrap();
         max_speed = max_speed.max(speed);
+        max_speed_step = max_speed_step.max((speed - prev_speed).abs());
+        prev_speed = speed;
         for i in 0..3 {
             max_jump = max_jump.max((v[i] - prev_v[i]).abs());
             prev_v[i] = v[i];
+        }
+        if b[1].active {
+            block2.push(speed);
         }
         for (k, blk) in b.iter_mut().enumerate() {
             blk.call(&mut eng, g);
@@ -151,6 +163,8 @@ fn run(tm: TransitionMode, d: f64) -> Trace {
         end: [p[0], p[1], p[2]],
         max_speed,
         max_jump,
+        max_speed_step,
+        block2,
         cycles: eng.cycles(),
     }
 }
@@ -164,6 +178,23 @@ fn paper_b_junction_speeds_40_then_70_then_stop() {
     assert!((t.junction[1] - 70.0).abs() < 0.05, "B: {}", t.junction[1]);
     assert!(t.junction[2].abs() < 1e-9, "C: {}", t.junction[2]);
     assert!(t.max_speed <= 70.0 + 1e-6);
+    // The path speed is continuous through both junctions (successors start from the
+    // junction state): it never changes by more than acceleration * cycle.
+    assert!(
+        t.max_speed_step <= 5.0 * 0.01 + 1e-9,
+        "{}",
+        t.max_speed_step
+    );
+    // Block 2 cruises at its own velocity 55 and speeds up to 70 only at its end
+    // (55 -> 70 at a = 5, j = 2 takes 5.5 s).
+    let at_55 = t
+        .block2
+        .iter()
+        .filter(|v| (**v - 55.0).abs() < 1e-6)
+        .count();
+    let above = t.block2.iter().filter(|v| **v > 55.0 + 1e-6).count();
+    assert!(at_55 * 2 > t.block2.len(), "{at_55} of {}", t.block2.len());
+    assert!((above as f64) * 0.01 < 6.0, "{above} cycles above 55");
     for (e, w) in t.end.iter().zip([4500.0, 4200.0, 4800.0]) {
         assert!((e - w).abs() < 1e-6, "end {e} vs {w}");
     }

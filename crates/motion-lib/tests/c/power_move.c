@@ -52,6 +52,52 @@ int main(void) {
     mc_move_absolute(eng, (uint32_t)axis, &bad);
     if (!bad.Error || bad.ErrorID != MC_ERR_INVALID_BUFFER_MODE) { fprintf(stderr, "bad mode accepted\n"); return 8; }
 
+    /* Error resets on the falling edge of Execute. */
+    bad.Execute = false;
+    mc_move_absolute(eng, (uint32_t)axis, &bad);
+    if (bad.Error || bad.ErrorID != 0) { fprintf(stderr, "error not reset\n"); return 9; }
+
+    /* A second axis, a group of two, one MC_MoveLinearAbsolute to Done. */
+    int32_t axis2 = mc_engine_add_axis(eng, &cfg);
+    int32_t group = mc_engine_add_group(eng);
+    MC_Power_C power2;
+    memset(&power2, 0, sizeof power2);
+    power2.Enable = true;
+    mc_power(eng, (uint32_t)axis2, &power2);
+    MC_AddAxisToGroup_C add[2];
+    memset(add, 0, sizeof add);
+    for (uint32_t i = 0; i < 2; i++) {
+        add[i].Execute = true;
+        add[i].Axis = i == 0 ? (uint32_t)axis : (uint32_t)axis2;
+        add[i].IdentInGroup = i;
+        mc_add_axis_to_group(eng, (uint32_t)group, &add[i]);
+        if (!add[i].Done) { fprintf(stderr, "add axis %u: %u\n", (unsigned)i, (unsigned)add[i].ErrorID); return 10; }
+    }
+    MC_GroupEnable_C enable;
+    memset(&enable, 0, sizeof enable);
+    enable.Execute = true;
+    mc_group_enable(eng, (uint32_t)group, &enable);
+    if (!enable.Done) { fprintf(stderr, "group enable %u\n", (unsigned)enable.ErrorID); return 11; }
+    MC_MoveLinearAbsolute_C line;
+    memset(&line, 0, sizeof line);
+    line.Execute = true;
+    line.Position[0] = 300.0;
+    line.Position[1] = 40.0;
+    line.Velocity = 200.0;
+    line.Acceleration = 2000.0;
+    line.Deceleration = 2000.0;
+    line.BufferMode = MC_ABORTING;
+    line.TransitionMode = MC_TM_NONE;
+    int line_done = 0;
+    for (int cycle = 0; cycle < 10000 && !line_done; cycle++) {
+        mc_move_linear_absolute(eng, (uint32_t)group, &line);
+        if (line.Error) { fprintf(stderr, "line error %u\n", (unsigned)line.ErrorID); return 12; }
+        line_done = line.Done;
+        mc_engine_step(eng);
+    }
+    if (!line_done || mc_axis_set_position(eng, (uint32_t)axis2) != 40.0) { fprintf(stderr, "line not done\n"); return 13; }
+    if (mc_group_state(eng, (uint32_t)group) != 1) { fprintf(stderr, "group not standby\n"); return 14; }
+
     printf("Done after %d cycles at %.6f\n", done_cycle, p);
     mc_engine_destroy(eng);
     return 0;
