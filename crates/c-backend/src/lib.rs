@@ -12,6 +12,7 @@ pub mod ctypes;
 mod emit;
 pub use emit::config_header;
 pub mod mangle;
+pub mod motion;
 pub mod pipeline;
 pub mod profile;
 pub mod runtime;
@@ -45,6 +46,9 @@ pub struct Options {
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct CProgram {
     pub files: Vec<(String, String)>,
+    /// Linker arguments after the sources (e.g. `libmotion_lib.a -lpthread -ldl -lm`), relative to the
+    /// project directory; files named here are not generated text and are put there by the caller.
+    pub link: Vec<String>,
 }
 
 impl CProgram {
@@ -67,6 +71,51 @@ impl CProgram {
 /// The name of the executable [`build`] produces (and the Makefile's target).
 pub const EXECUTABLE: &str = "program";
 
+/// What the parameter-passing and motion stages add to a program (see [`generate_with`]).
+#[derive(Debug, Clone, Default)]
+pub struct Extensions {
+    /// The motion runtime (engine, axes, trace columns); `None` when the program uses no motion block.
+    pub motion: Option<motion::MotionRuntime>,
+    /// Template-method functions, each rendered inside its POU (see [`PouMethod`]).
+    pub methods: Vec<PouMethod>,
+}
+
+/// A function synthesised for one block call by the parameter-template method, rendered as
+/// `static void <name>(<POU struct> *self)`: head locals, template locals, body, feedback tail.
+#[derive(Debug, Clone)]
+pub struct PouMethod {
+    /// The C name (a plain identifier), called by `FUNC <name>()` in the POU.
+    pub name: String,
+    /// The PROGRAM or FUNCTION_BLOCK whose variables the head reads and the tail writes.
+    pub pou: String,
+    pub func_num: u32,
+    pub head: Vec<MethodLocal>,
+    /// Extra locals of the body: `(C type, name)`.
+    pub locals: Vec<(String, String)>,
+    pub body: String,
+    pub tail: Vec<MethodFeedback>,
+    pub span: diagnostics::Span,
+}
+
+/// `c_type local = (c_type)<value of source>;` (`boolean`: a BOOL kept in a 0/1 `uint8_t`).
+#[derive(Debug, Clone)]
+pub struct MethodLocal {
+    pub c_type: String,
+    pub local: String,
+    pub boolean: bool,
+    pub source: il_frontend::ast::Operand,
+}
+
+/// `<target> = local;` (`negated`: `NOT Done => x`, for booleans).
+#[derive(Debug, Clone)]
+pub struct MethodFeedback {
+    pub target: il_frontend::ast::Operand,
+    pub local: String,
+    pub c_type: String,
+    pub boolean: bool,
+    pub negated: bool,
+}
+
 /// Generates the C project. Returns `None` when an error was reported (E2xxx; existing errors in `diags`
 /// from earlier stages also stop generation, since the model may then be incomplete).
 pub fn generate(
@@ -74,6 +123,18 @@ pub fn generate(
     model: &Model,
     profile: &TargetProfile,
     opts: &Options,
+    diags: &mut Diagnostics,
+) -> Option<CProgram> {
+    generate_with(units, model, profile, opts, &Extensions::default(), diags)
+}
+
+/// [`generate`] with the motion runtime and template-method functions.
+pub fn generate_with(
+    units: &[CompilationUnit],
+    model: &Model,
+    profile: &TargetProfile,
+    opts: &Options,
+    ext: &Extensions,
     diags: &mut Diagnostics,
 ) -> Option<CProgram> {
     if diags.has_errors() {
@@ -87,12 +148,19 @@ pub fn generate(
         return None;
     }
     let before = diags.error_count();
-    let files = emit::generate(units, model, profile, opts, diags);
+    let files = emit::generate(units, model, profile, opts, ext, diags);
     if diags.error_count() > before {
         return None;
     }
-    let mut program = CProgram { files };
+    let mut program = CProgram {
+        files,
+        link: Vec::new(),
+    };
     program.files.extend(runtime::files());
+    if let Some(m) = &ext.motion {
+        program.files.extend(m.files());
+        program.link = motion::link_args(motion::STATICLIB);
+    }
     program
         .files
         .push(("Makefile".into(), toolchain::makefile(&program)));

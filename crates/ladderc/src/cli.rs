@@ -51,6 +51,10 @@ pub struct CompileArgs {
     /// A directory of extra parameter templates (`*.xml`); they replace built-ins of the same name.
     #[arg(long)]
     pub templates: Option<PathBuf>,
+    /// Axis configuration (JSON, see crates/ladderc/AXES.md); default: `<first input stem>.axes.json`
+    /// beside the first input, when it exists.
+    #[arg(long)]
+    pub axes: Option<PathBuf>,
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
@@ -95,9 +99,9 @@ pub enum Command {
         /// Number of scan cycles.
         #[arg(long, default_value_t = 10)]
         cycles: u64,
-        /// Cycle time in milliseconds.
-        #[arg(long, default_value_t = 10.0)]
-        cycle_ms: f64,
+        /// Cycle time in milliseconds (default: the axis configuration's `cycle_ms`, else 10).
+        #[arg(long)]
+        cycle_ms: Option<f64>,
         /// CSV rows `cycle,variable,value`, applied before that cycle.
         #[arg(long)]
         stimulus: Option<PathBuf>,
@@ -192,12 +196,12 @@ pub fn main() -> i32 {
         } => {
             let run = c_backend::RunOptions {
                 cycles,
-                cycle_ms,
+                cycle_ms: cycle_ms.unwrap_or(pipeline::DEFAULT_CYCLE_MS),
                 stimulus,
                 trace,
                 watch,
             };
-            run_program(&compile, run, sanitize, cli.message_format)
+            run_program(&compile, cycle_ms, run, sanitize, cli.message_format)
         }
     }
 }
@@ -247,6 +251,8 @@ fn drive(cmd: DriveCommand, format: MessageFormat) -> i32 {
 
 fn options(c: &CompileArgs) -> pipeline::Options {
     pipeline::Options {
+        axes: c.axes.clone(),
+        cycle_ms: None,
         profile: c.profile.clone(),
         strategy: match c.strategy {
             StrategyArg::Il => Strategy::Il,
@@ -281,6 +287,7 @@ fn check(inputs: &[PathBuf], format: Format) -> i32 {
         profile: None,
         strategy: StrategyArg::Template,
         templates: None,
+        axes: None,
     };
     let _ = s.lower(inputs, &options(&c));
     finish(s, format)
@@ -314,11 +321,14 @@ fn build(
             let Some((_, program)) = compiled else {
                 return code;
             };
-            let files: Vec<(String, Vec<u8>)> = program
+            let mut files: Vec<(String, Vec<u8>)> = program
                 .files
                 .iter()
                 .map(|(p, c)| (p.clone(), c.clone().into_bytes()))
                 .collect();
+            if let Err(code) = add_staticlib(&program, &mut files, format) {
+                return code;
+            }
             if let Err(e) = output::write_dir_atomically(dir, &files) {
                 return io_error(
                     format!("cannot write {}: {e}", dir.display()),
@@ -331,18 +341,57 @@ fn build(
     }
 }
 
+/// Adds the motion library to the project's files when the program links it (so that the project
+/// builds on its own with `make`). `Err`: the exit code after reporting E9050 or an I/O error.
+fn add_staticlib(
+    program: &c_backend::CProgram,
+    files: &mut Vec<(String, Vec<u8>)>,
+    format: Format,
+) -> Result<(), i32> {
+    let lib = c_backend::motion::STATICLIB;
+    if !program.link.iter().any(|l| l == lib) {
+        return Ok(());
+    }
+    let path = match crate::motion_link::find() {
+        Ok(p) => p,
+        Err(d) => {
+            emit(&SourceMap::new(), &[*d], format);
+            return Err(EXIT_USAGE);
+        }
+    };
+    match std::fs::read(&path) {
+        Ok(bytes) => {
+            files.push((lib.to_string(), bytes));
+            Ok(())
+        }
+        Err(e) => Err(io_error(
+            format!("cannot read {}: {e}", path.display()),
+            "check LADDERC_MOTION_LIB",
+            format,
+        )),
+    }
+}
+
 fn run_program(
     c: &CompileArgs,
+    cycle_ms: Option<f64>,
     mut run: c_backend::RunOptions,
     sanitize: bool,
     format: Format,
 ) -> i32 {
     let mut s = pipeline::Session::new();
-    let compiled = s.compile(&c.inputs, &options(c));
+    let mut opts = options(c);
+    opts.cycle_ms = cycle_ms;
+    let compiled = s.compile(&c.inputs, &opts);
     let code = finish(s, format);
-    let Some((_, program)) = compiled else {
+    let Some((lowered, program)) = compiled else {
         return code;
     };
+    run.cycle_ms = lowered.cycle_ms;
+    let mut extra = Vec::new();
+    if let Err(code) = add_staticlib(&program, &mut extra, format) {
+        return code;
+    }
     let work = match tempfile::Builder::new().prefix("ladderc-run-").tempdir() {
         Ok(w) => w,
         Err(e) => {
@@ -353,6 +402,15 @@ fn run_program(
             )
         }
     };
+    for (name, bytes) in &extra {
+        if let Err(e) = std::fs::write(work.path().join(name), bytes) {
+            return io_error(
+                format!("cannot write the build directory: {e}"),
+                "check TMPDIR",
+                format,
+            );
+        }
+    }
     let mut bopts = c_backend::BuildOptions::default();
     if sanitize {
         bopts.extra_flags = vec![

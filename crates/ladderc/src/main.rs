@@ -1,7 +1,9 @@
 //! The `ladderc` command line. Input: arguments; output: files, diagnostics on stderr, an exit code
 //! (0 success, 1 diagnostics errors, 2 usage or I/O errors). All work is done by the library crates.
 
+mod axes;
 mod cli;
+mod motion_link;
 mod output;
 mod pipeline;
 

@@ -159,6 +159,12 @@ impl Gen<'_> {
                 };
                 self.conditional(b, i, *cond, &ret);
             }
+            InstrKind::EmbeddedC { name } if self.is_method(name) => {
+                let call = self.method_call(name, b.scope.pou.map(|p| p.1));
+                if let Some(call) = call.filter(|c| !c.is_empty()) {
+                    b.line(&call);
+                }
+            }
             InstrKind::EmbeddedC { name } => match self.embedded.get(&name.key()) {
                 Some(c) => {
                     let c = c.clone();
@@ -352,7 +358,7 @@ impl Gen<'_> {
     }
 
     /// The place an operand denotes (variables and direct addresses).
-    fn operand_place(&mut self, scope: &Scope, o: &Operand) -> Option<Place> {
+    pub(super) fn operand_place(&mut self, scope: &Scope, o: &Operand) -> Option<Place> {
         match o {
             Operand::Var(r) => self.place(scope, r),
             Operand::Address(a) => {
