@@ -137,7 +137,9 @@ impl MotionRuntime {
             c_double(self.cycle_seconds),
             self.queue_depth
         );
-        c.push_str("    if (!ladderc_engine) ladderc_motion_fail(\"the cycle time or queue depth\");\n");
+        c.push_str(
+            "    if (!ladderc_engine) ladderc_motion_fail(\"the cycle time or queue depth\");\n",
+        );
         c.push_str("    if (!registered) {\n        registered = 1;\n        atexit(ladderc_motion_shutdown);\n    }\n");
         for (i, a) in self.axes.iter().enumerate() {
             let (pos, neg, on) = match a.sw_limits {

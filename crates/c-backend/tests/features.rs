@@ -409,7 +409,10 @@ END_PROGRAM
 ",
     );
     let p = generate_with(&units, &model, &map, &profile, &Default::default());
-    assert!(p.file("ladderc_config.h").unwrap().contains("#define LADDERC_BIG_ENDIAN 1"));
+    assert!(p
+        .file("ladderc_config.h")
+        .unwrap()
+        .contains("#define LADDERC_BIG_ENDIAN 1"));
     let b = build_program(p);
     let rows = run(&b, 1, 10.0, "", &["%QB0", "%QB1", "%QB2", "%QW1"]);
     // %QW1 starts at byte 1 (byte addressing), most significant byte first; %QX0.0 is the top bit

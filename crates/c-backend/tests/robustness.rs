@@ -31,18 +31,39 @@ fn mutated_programs_never_panic_the_generator() {
         let model = il_frontend::sema::analyze(&units, &mut diags);
         if diags.has_errors() {
             // the generator refuses a model with errors
-            assert!(c_backend::generate(&units, &model, &TargetProfile::default(), &Options::default(), &mut diags).is_none());
+            assert!(c_backend::generate(
+                &units,
+                &model,
+                &TargetProfile::default(),
+                &Options::default(),
+                &mut diags
+            )
+            .is_none());
             continue;
         }
         let mut d = Diagnostics::new();
-        if c_backend::generate(&units, &model, &TargetProfile::default(), &Options::default(), &mut d).is_some() {
+        if c_backend::generate(
+            &units,
+            &model,
+            &TargetProfile::default(),
+            &Options::default(),
+            &mut d,
+        )
+        .is_some()
+        {
             generated += 1;
         } else {
             assert!(d.has_errors(), "None without an error diagnostic");
         }
         // and even with a model whose errors were dropped, generation returns rather than panics
         let mut fresh = Diagnostics::new();
-        let _ = c_backend::generate(&units, &model, &TargetProfile::default(), &Options::default(), &mut fresh);
+        let _ = c_backend::generate(
+            &units,
+            &model,
+            &TargetProfile::default(),
+            &Options::default(),
+            &mut fresh,
+        );
     }
     assert!(generated > 50, "only {generated} mutants generated");
 }
@@ -62,7 +83,13 @@ fn models_with_errors_never_panic_the_generator() {
         let units = vec![il_frontend::parse(file, src, &mut diags)];
         let model = il_frontend::sema::analyze(&units, &mut diags);
         let mut fresh = Diagnostics::new();
-        let r = c_backend::generate(&units, &model, &TargetProfile::default(), &Options::default(), &mut fresh);
+        let r = c_backend::generate(
+            &units,
+            &model,
+            &TargetProfile::default(),
+            &Options::default(),
+            &mut fresh,
+        );
         assert!(r.is_none() || !fresh.has_errors());
     }
 }

@@ -199,7 +199,9 @@ impl AxisConfig {
             }
             if let Some(l) = a.software_limits {
                 if !(l.negative.is_finite() && l.positive.is_finite() && l.negative < l.positive) {
-                    diags.push(bad("software limits need finite values with negative < positive"));
+                    diags.push(bad(
+                        "software limits need finite values with negative < positive",
+                    ));
                 }
             }
             axes.push(Axis {
@@ -226,7 +228,10 @@ impl AxisConfig {
                 diags.push(
                     Diagnostic::error(
                         code::E5052,
-                        format!("group `{}`: the name is not an IEC identifier or is already used", g.name),
+                        format!(
+                            "group `{}`: the name is not an IEC identifier or is already used",
+                            g.name
+                        ),
                     )
                     .at(span),
                 );
@@ -235,30 +240,43 @@ impl AxisConfig {
             let mut members = Vec::new();
             for m in &g.axes {
                 let mspan = string_span(file, src, &m.axis, span.range().start);
-                let axis = axes.iter().position(|a: &Axis| a.name.eq_ignore_ascii_case(&m.axis));
+                let axis = axes
+                    .iter()
+                    .position(|a: &Axis| a.name.eq_ignore_ascii_case(&m.axis));
                 let ident = IDENTITIES
                     .iter()
                     .position(|i| i.eq_ignore_ascii_case(&m.identity));
                 match (axis, ident) {
-                    (Some(a), Some(i)) if !members.iter().any(|&(x, y)| x == a as u32 || y == i as u32) => {
+                    (Some(a), Some(i))
+                        if !members.iter().any(|&(x, y)| x == a as u32 || y == i as u32) =>
+                    {
                         members.push((a as u32, i as u32))
                     }
                     (None, _) => diags.push(
-                        Diagnostic::error(code::E5052, format!("group `{}`: no axis named `{}`", g.name, m.axis))
-                            .at(mspan)
-                            .with_hint("list the axis under \"axes\" first"),
+                        Diagnostic::error(
+                            code::E5052,
+                            format!("group `{}`: no axis named `{}`", g.name, m.axis),
+                        )
+                        .at(mspan)
+                        .with_hint("list the axis under \"axes\" first"),
                     ),
                     (_, None) => diags.push(
                         Diagnostic::error(
                             code::E5052,
-                            format!("group `{}`: identity `{}` is not one of X, Y, Z, A, B, C", g.name, m.identity),
+                            format!(
+                                "group `{}`: identity `{}` is not one of X, Y, Z, A, B, C",
+                                g.name, m.identity
+                            ),
                         )
                         .at(mspan),
                     ),
                     _ => diags.push(
                         Diagnostic::error(
                             code::E5052,
-                            format!("group `{}`: axis `{}` or identity `{}` appears twice", g.name, m.axis, m.identity),
+                            format!(
+                                "group `{}`: axis `{}` or identity `{}` appears twice",
+                                g.name, m.axis, m.identity
+                            ),
                         )
                         .at(mspan),
                     ),
@@ -339,18 +357,26 @@ mod tests {
         let il = c.globals_il();
         assert!(il.contains("X1 : AXIS_REF := (AxisNo := 0);"), "{il}");
         assert!(il.contains("Y1 : AXIS_REF := (AxisNo := 1);"), "{il}");
-        assert!(il.contains("G1 : AXES_GROUP_REF := (GroupNo := 0);"), "{il}");
+        assert!(
+            il.contains("G1 : AXES_GROUP_REF := (GroupNo := 0);"),
+            "{il}"
+        );
         assert_eq!(c.cycle_ms, Some(1.0));
         assert_eq!(c.runtime(1.0, "h").cycle_seconds, 0.001);
     }
 
     #[test]
     fn json_errors_point_at_serde_line_and_column() {
-        let (c, out) = parse("{\n  \"cycle_ms\": 1,\n  \"axes\": [ { \"name\": \"X1\", \"velocity\": 1 } ]\n}");
+        let (c, out) = parse(
+            "{\n  \"cycle_ms\": 1,\n  \"axes\": [ { \"name\": \"X1\", \"velocity\": 1 } ]\n}",
+        );
         assert!(c.is_none());
         insta::assert_snapshot!(out);
         let (_, out) = parse("{ \"cycle_ms\": 1, \"speed\": 3 }");
-        assert!(out.contains("E5050") && out.contains("unknown field `speed`"), "{out}");
+        assert!(
+            out.contains("E5050") && out.contains("unknown field `speed`"),
+            "{out}"
+        );
     }
 
     #[test]

@@ -6,9 +6,9 @@
 //! prelude -> parameter passing (block calls by the chosen strategy) -> semantic model of the lowered
 //! program -> C. Invariant: a stage runs only when the ones before it reported no error.
 
+use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics, SourceMap};
 use il_frontend::ast::CompilationUnit;
-use crate::axes::AxisConfig;
 use param_passing::library::Library;
 use param_passing::lower::{self, Strategy, TmWindow};
 use std::path::{Path, PathBuf};
@@ -136,9 +136,13 @@ impl Session {
                 self.diags.push(
                     Diagnostic::error(
                         code::E5053,
-                        format!("--cycle-ms {c} differs from the axis configuration's cycle_ms {a}"),
+                        format!(
+                            "--cycle-ms {c} differs from the axis configuration's cycle_ms {a}"
+                        ),
                     )
-                    .with_hint("leave out --cycle-ms, or make both equal: the engine steps once per scan"),
+                    .with_hint(
+                        "leave out --cycle-ms, or make both equal: the engine steps once per scan",
+                    ),
                 );
                 return None;
             }

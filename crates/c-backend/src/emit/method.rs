@@ -66,7 +66,9 @@ impl Gen<'_> {
 
     /// Whether `FUNC name` calls a method.
     pub fn is_method(&self, name: &il_frontend::ast::Ident) -> bool {
-        self.methods.iter().any(|m| m.name.eq_ignore_ascii_case(&name.name))
+        self.methods
+            .iter()
+            .any(|m| m.name.eq_ignore_ascii_case(&name.name))
     }
 
     /// The POU a method belongs to (a program or function block), or a reported error.
@@ -158,7 +160,11 @@ impl Gen<'_> {
     }
 
     /// The C call of a method from `pou` (None: not a method).
-    pub fn method_call(&mut self, name: &il_frontend::ast::Ident, pou: Option<PouId>) -> Option<String> {
+    pub fn method_call(
+        &mut self,
+        name: &il_frontend::ast::Ident,
+        pou: Option<PouId>,
+    ) -> Option<String> {
         let m = self
             .methods
             .iter()

@@ -1,0 +1,266 @@
+//! Programs with PLCopen motion blocks end to end: axis configuration, both parameter-passing methods,
+//! the motion runtime linked into the generated C (strict warnings, sanitizers), axis trace columns.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn ladderc() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_ladderc"))
+}
+
+const MOVE: &str = "PROGRAM move
+VAR
+    pw : MC_Power;
+    mv : MC_MoveAbsolute;
+    go : BOOL;
+    powered : BOOL;
+    done : BOOL;
+    busy : BOOL;
+    aborted : BOOL;
+END_VAR
+    CAL pw(Axis := X1, Enable := TRUE, EnablePositive := TRUE, EnableNegative := TRUE, Status => powered)
+    LD powered
+    ST go
+    CAL mv(Axis := X1, Execute := go, Position := 100.0, Velocity := 50.0, Acceleration := 200.0,
+           Deceleration := 200.0, Done => done, Busy => busy, CommandAborted => aborted)
+END_PROGRAM
+";
+
+const AXES: &str = r#"{ "cycle_ms": 10, "queue_depth": 8,
+  "axes": [ { "name": "X1", "unit": "mm", "velocity": 100, "acceleration": 500, "deceleration": 500 } ] }
+"#;
+
+const WATCH: &str = "move.go,move.powered,move.done,move.busy,move.aborted,move.mv.Active,\
+                     axis.X1.position,axis.X1.velocity,axis.X1.acceleration";
+
+/// A project directory with `move.il` and `move.axes.json` (found by default beside the program).
+fn project() -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("move.il");
+    std::fs::write(&src, MOVE).unwrap();
+    std::fs::write(dir.path().join("move.axes.json"), AXES).unwrap();
+    (dir, src)
+}
+
+fn run_trace(src: &Path, extra: &[&str]) -> String {
+    let trace = src.with_file_name(format!("trace{}.csv", extra.join("_").replace('-', "")));
+    let out = ladderc()
+        .arg("run")
+        .arg(src)
+        .args(["--cycles", "300", "--watch", WATCH, "--trace"])
+        .arg(&trace)
+        .args(extra)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::read_to_string(&trace).unwrap()
+}
+
+/// Column `name` of a CSV trace, per row.
+fn column(trace: &str, name: &str) -> Vec<f64> {
+    let mut lines = trace.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let i = header.iter().position(|h| *h == name).unwrap();
+    lines
+        .map(|l| l.split(',').nth(i).unwrap().parse::<f64>().unwrap())
+        .collect()
+}
+
+#[test]
+fn both_methods_give_identical_traces_cycle_by_cycle_including_axis_positions() {
+    let (_dir, src) = project();
+    let il = run_trace(&src, &["--strategy", "il"]);
+    let template = run_trace(&src, &["--strategy", "template"]);
+    assert_eq!(il.lines().count(), 301);
+    for (k, (a, b)) in il.lines().zip(template.lines()).enumerate() {
+        assert_eq!(a, b, "the traces differ at row {k}");
+    }
+    // the sanitizers find nothing with either method and the trace stays the same
+    for s in ["il", "template"] {
+        let san = run_trace(&src, &["--strategy", s, "--sanitize"]);
+        assert_eq!(san, il, "--strategy {s} --sanitize");
+    }
+}
+
+#[test]
+fn move_absolute_reaches_done_at_the_target_within_the_limits() {
+    let (_dir, src) = project();
+    let t = run_trace(&src, &["--strategy", "template"]);
+    let pos = column(&t, "axis.X1.position");
+    let vel = column(&t, "axis.X1.velocity");
+    let done = column(&t, "move.done");
+    let busy = column(&t, "move.busy");
+    let first_done = done.iter().position(|&d| d == 1.0).expect("Done rises");
+    // 100 mm at 50 mm/s with 200 mm/s² ramps: 0.25 s + 1.75 s + 0.25 s = 2.25 s = 225 cycles of 10 ms
+    assert!(
+        (224..=227).contains(&first_done),
+        "Done at cycle {first_done}"
+    );
+    assert_eq!(pos[first_done], 100.0);
+    assert!(done[first_done..].iter().all(|&d| d == 1.0));
+    assert!(busy[..first_done].iter().all(|&b| b == 1.0) && busy[first_done] == 0.0);
+    assert!(vel.iter().all(|&v| (0.0..=50.0 + 1e-9).contains(&v)));
+    assert!(pos.windows(2).all(|w| w[1] >= w[0]), "monotonic move");
+    assert!(column(&t, "axis.X1.acceleration")
+        .iter()
+        .all(|a| a.abs() <= 200.0 + 1e-9));
+}
+
+#[test]
+fn built_projects_compile_warning_free_with_their_makefile_and_bundle_the_library() {
+    let (dir, src) = project();
+    for s in ["il", "template"] {
+        let out_dir = dir.path().join(format!("out-{s}"));
+        let out = ladderc()
+            .args(["build", "--strategy", s, "-o"])
+            .arg(&out_dir)
+            .arg(&src)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(out_dir.join("libmotion_lib.a").is_file());
+        assert!(out_dir.join("motion_lib.h").is_file());
+        let make = Command::new("make")
+            .arg("CFLAGS=-O1 -Wall -Wextra -Werror -pedantic")
+            .current_dir(&out_dir)
+            .output()
+            .unwrap();
+        assert!(
+            make.status.success(),
+            "{}{}",
+            String::from_utf8_lossy(&make.stdout),
+            String::from_utf8_lossy(&make.stderr)
+        );
+        let run = Command::new(out_dir.join("program"))
+            .args(["--cycles", "300", "--cycle-ms", "10", "--watch", WATCH])
+            .output()
+            .unwrap();
+        assert!(run.status.success());
+        let trace = String::from_utf8(run.stdout).unwrap();
+        assert_eq!(column(&trace, "axis.X1.position")[299], 100.0, "{s}");
+    }
+}
+
+const ONE_MOVE: &str = "PROGRAM one
+VAR
+    mv : MC_MoveAbsolute;
+    go : BOOL;
+    done : BOOL;
+END_VAR
+    CAL mv(Axis := X1, Execute := go, Position := 100.0, Velocity := 50.0, Acceleration := 200.0,
+           Deceleration := 200.0, Done => done)
+END_PROGRAM
+";
+
+fn emit_il(strategy: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("one.il");
+    std::fs::write(&src, ONE_MOVE).unwrap();
+    std::fs::write(dir.path().join("one.axes.json"), AXES).unwrap();
+    let out = ladderc()
+        .args(["build", "--emit", "il", "--strategy", strategy])
+        .arg(&src)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn emit_il_shows_three_parts_for_the_il_method() {
+    insta::assert_snapshot!(emit_il("il"));
+}
+
+#[test]
+fn emit_il_shows_one_func_for_the_template_method() {
+    let il = emit_il("template");
+    assert_eq!(il.matches("FUNC ").count(), 1, "{il}");
+    insta::assert_snapshot!(il);
+}
+
+fn json_errors(args: &[&str], env: Option<(&str, &str)>) -> (Option<i32>, String) {
+    let mut cmd = ladderc();
+    cmd.args(["--message-format", "json"]).args(args);
+    if let Some((k, v)) = env {
+        cmd.env(k, v);
+    }
+    let out = cmd.output().unwrap();
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn a_bad_axis_file_is_a_diagnostic_at_its_line_and_column() {
+    let (dir, src) = project();
+    let axes = dir.path().join("bad.json");
+    std::fs::write(
+        &axes,
+        "{\n  \"axes\": [ { \"name\": \"X1\", \"velocity\": \"fast\" } ]\n}\n",
+    )
+    .unwrap();
+    let (code, err) = json_errors(
+        &[
+            "build",
+            "--emit",
+            "il",
+            "--axes",
+            axes.to_str().unwrap(),
+            src.to_str().unwrap(),
+        ],
+        None,
+    );
+    assert_eq!(code, Some(1), "{err}");
+    let d: serde_json::Value = serde_json::from_str(err.lines().next().unwrap()).unwrap();
+    assert_eq!(d["code"], "E5050", "{err}");
+    assert!(err.contains("\"line\":2"), "{err}");
+}
+
+#[test]
+fn a_scan_cycle_other_than_the_motion_cycle_is_refused() {
+    let (_dir, src) = project();
+    let (code, err) = json_errors(&["run", src.to_str().unwrap(), "--cycle-ms", "1"], None);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("E5053"), "{err}");
+}
+
+#[test]
+fn an_unknown_axis_name_is_reported_before_code_generation() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("move.il");
+    std::fs::write(
+        &src,
+        MOVE.replace("Axis := X1, Execute", "Axis := X2, Execute"),
+    )
+    .unwrap();
+    std::fs::write(dir.path().join("move.axes.json"), AXES).unwrap();
+    let (code, err) = json_errors(&["build", "--emit", "il", src.to_str().unwrap()], None);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("X2"), "{err}");
+}
+
+#[test]
+fn a_missing_motion_library_is_e9050() {
+    let (dir, src) = project();
+    let missing = dir.path().join("nope.a");
+    let (code, err) = json_errors(
+        &["run", src.to_str().unwrap()],
+        Some(("LADDERC_MOTION_LIB", missing.to_str().unwrap())),
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("E9050"), "{err}");
+}
