@@ -191,8 +191,9 @@ impl AxisConfig {
             if !(a.jerk.is_finite() && a.jerk >= 0.0) {
                 diags.push(bad("the jerk limit must be 0 (none) or positive"));
             }
-            if !(a.modulo_period.is_finite() && a.modulo_period >= 0.0)
-                || !(a.following_error_limit.is_finite() && a.following_error_limit >= 0.0)
+            let non_negative = |v: f64| v.is_finite() && v >= 0.0;
+            if !non_negative(a.modulo_period)
+                || !non_negative(a.following_error_limit)
                 || !positive(a.counts_per_unit)
             {
                 diags.push(bad("modulo_period and following_error_limit must be 0 or positive, counts_per_unit positive"));
