@@ -75,6 +75,11 @@ pub enum Emit {
     Il,
 }
 
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
+pub enum ReportFormat {
+    Json,
+}
+
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Check sources: parse and run the semantic checks, print diagnostics.
@@ -91,6 +96,10 @@ pub enum Command {
         output: Option<PathBuf>,
         #[arg(long, value_enum, default_value_t = Emit::C)]
         emit: Emit,
+        /// Print a report on standard output: per PLCopen block type its method, calls, TM bytes,
+        /// IL instructions and generated C bytes (paper A's comparison).
+        #[arg(long, value_enum)]
+        report: Option<ReportFormat>,
     },
     /// Build with the system C compiler and run scan cycles.
     Run {
@@ -184,7 +193,8 @@ pub fn main() -> i32 {
             compile,
             output,
             emit,
-        } => build(&compile, output.as_deref(), emit, cli.message_format),
+            report,
+        } => build(&compile, output.as_deref(), emit, report, cli.message_format),
         Command::Run {
             compile,
             cycles,
@@ -297,6 +307,7 @@ fn build(
     c: &CompileArgs,
     output: Option<&std::path::Path>,
     emit_kind: Emit,
+    report: Option<ReportFormat>,
     format: Format,
 ) -> i32 {
     let mut s = pipeline::Session::new();
@@ -318,9 +329,12 @@ fn build(
             };
             let compiled = s.compile(&c.inputs, &options(c));
             let code = finish(s, format);
-            let Some((_, program)) = compiled else {
+            let Some((lowered, program)) = compiled else {
                 return code;
             };
+            if report == Some(ReportFormat::Json) {
+                println!("{}", crate::report::json(&lowered, &program));
+            }
             let mut files: Vec<(String, Vec<u8>)> = program
                 .files
                 .iter()

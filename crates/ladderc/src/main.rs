@@ -6,6 +6,7 @@ mod cli;
 mod motion_link;
 mod output;
 mod pipeline;
+mod report;
 
 fn main() {
     std::process::exit(cli::main());

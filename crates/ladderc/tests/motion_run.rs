@@ -264,3 +264,48 @@ fn a_missing_motion_library_is_e9050() {
     assert_eq!(code, Some(2), "{err}");
     assert!(err.contains("E9050"), "{err}");
 }
+
+#[test]
+fn report_json_gives_per_block_method_tm_bytes_instructions_and_c_bytes() {
+    let (dir, src) = project();
+    let mut reports = Vec::new();
+    for s in ["il", "template"] {
+        let out = ladderc()
+            .args(["build", "--report", "json", "--strategy", s, "-o"])
+            .arg(dir.path().join(format!("out-{s}")))
+            .arg(&src)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        reports.push(v);
+    }
+    let block = |r: &serde_json::Value, name: &str| {
+        r["blocks"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|b| b["block"] == name)
+            .cloned()
+            .unwrap()
+    };
+    let (il, tpl) = (
+        block(&reports[0], "MC_MoveAbsolute"),
+        block(&reports[1], "MC_MoveAbsolute"),
+    );
+    assert_eq!(il["method"], "il");
+    assert_eq!(tpl["method"], "template");
+    assert_eq!(il["calls"], 1);
+    // IL method: every parameter has a TM slot (4 B axis index + 6 LREAL... see --emit il), one FUNC
+    assert!(il["tm_bytes"].as_u64().unwrap() > 33);
+    assert_eq!(tpl["tm_bytes"], 0);
+    assert!(il["il_instructions"].as_u64().unwrap() > 30);
+    assert_eq!(tpl["il_instructions"], 1);
+    assert!(il["c_bytes"].as_u64().unwrap() > 500);
+    assert!(tpl["c_bytes"].as_u64().unwrap() > 500);
+    insta::assert_snapshot!(format!(
+        "{}\n{}",
+        serde_json::to_string_pretty(&reports[0]).unwrap(),
+        serde_json::to_string_pretty(&reports[1]).unwrap()
+    ));
+}
