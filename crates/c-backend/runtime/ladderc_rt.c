@@ -493,11 +493,16 @@ int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_
     if (errno || idx > 0xFFFFFFFFul) return fail(err, errlen, "address out of range", text);
     s = end;
     if (is_bit) {
-        if (*s != '.' || !isdigit((unsigned char)s[1]))
-            return fail(err, errlen, "a bit address needs byte.bit", text);
-        bit = strtoul(s + 1, &end, 10);
-        s = end;
-        if (bit > 7) return fail(err, errlen, "bit number above 7", text);
+        if (*s == '.') {
+            if (!isdigit((unsigned char)s[1])) return fail(err, errlen, "expected the bit number after `.`", text);
+            bit = strtoul(s + 1, &end, 10);
+            s = end;
+            if (bit > 7) return fail(err, errlen, "bit number above 7", text);
+        } else {
+            /* `%IX13`: absolute bit 13 = byte 1, bit 5 */
+            bit = idx % 8;
+            idx /= 8;
+        }
         out->type = LADDERC_T_BOOL;
     }
     if (*s) return fail(err, errlen, "unexpected text after the address", text);

@@ -203,26 +203,31 @@ impl TargetProfile {
                     .with_primary_label("this address"),
             )
         };
-        let (index, bit) = match (addr.size, addr.path.as_slice()) {
-            (_, []) => {
-                return Err(form(
-                    "a `*` address must be given a location before it can be compiled",
-                ))
-            }
-            (AddressSize::Bit, [byte, bit]) => {
-                if *bit > 7 {
-                    return Err(form("the bit number must be 0 to 7"));
+        let (index, bit) =
+            match (addr.size, addr.path.as_slice()) {
+                (_, []) => {
+                    return Err(form(
+                        "a `*` address must be given a location before it can be compiled",
+                    ))
                 }
-                (*byte, Some(*bit as u8))
-            }
-            (AddressSize::Bit, [_]) => return Err(form("a bit address is written byte.bit")),
-            (_, [index]) => (*index, None),
-            _ => {
-                return Err(form(
-                    "hierarchical addresses (more than byte.bit) are not supported",
-                ))
-            }
-        };
+                (AddressSize::Bit, [byte, bit]) => {
+                    if *bit > 7 {
+                        return Err(form("the bit number must be 0 to 7"));
+                    }
+                    (*byte, Some(*bit as u8))
+                }
+                // `%IX13` (one number, as matiec and some LD editors write): absolute bit 13 = byte 1, bit 5
+                (AddressSize::Bit, [n]) => (n / 8, Some((n % 8) as u8)),
+                (_, [index]) => (*index, None),
+                (_, [_, _]) => return Err(form(
+                    "a byte, word or double word address has one number (bits are %IX byte.bit)",
+                )),
+                _ => {
+                    return Err(form(
+                        "hierarchical addresses (more than byte.bit) are not supported",
+                    ))
+                }
+            };
         let offset = match self.address_unit {
             AddressUnit::Byte => u64::from(index),
             AddressUnit::Element => u64::from(index) * u64::from(size_bytes),

@@ -367,3 +367,32 @@ END_CONFIGURATION
     assert_eq!(column(&rows, "total"), ["1", "2", "3", "4"]);
     assert_eq!(column(&rows, "%MW10"), ["1", "2", "3", "4"]);
 }
+
+#[test]
+fn a_task_interval_given_by_a_variable_is_read_every_cycle() {
+    let src = "PROGRAM counter
+VAR
+  n : INT;
+END_VAR
+  LD n
+  ADD 1
+  ST n
+END_PROGRAM
+CONFIGURATION plant
+  VAR_GLOBAL
+    period : TIME := T#30ms;
+  END_VAR
+  RESOURCE cpu ON PLC
+    TASK t (INTERVAL := period, PRIORITY := 1);
+    PROGRAM c WITH t : counter;
+  END_RESOURCE
+END_CONFIGURATION
+";
+    let b = build_src(src);
+    // 30 ms at a 10 ms cycle: cycles 0, 3, 6; from cycle 6 the period is 0 (every cycle)
+    let rows = run(&b, 9, 10.0, "6,period,T#0ms\n", &["c.n"]);
+    assert_eq!(
+        column(&rows, "c.n"),
+        ["1", "1", "1", "2", "2", "2", "3", "4", "5"]
+    );
+}

@@ -43,8 +43,10 @@ END_PROGRAM
 fn unsupported_address_forms_are_e2002() {
     let errors = generate_errors(
         "PROGRAM main
-  LD %IX3
-  ST %QX1.2.3
+  LD %IW0.1
+  ST %QW1
+  LD %IX1.2.3
+  ST %QX0.0
   LD %IX0.9
   ST %QX0.0
 END_PROGRAM
@@ -58,6 +60,23 @@ END_PROGRAM
         "{errors:#?}"
     );
     assert!(errors[0].starts_with("test.il:2:6:"), "{errors:#?}");
+}
+
+#[test]
+fn a_bit_address_with_one_number_is_an_absolute_bit_number() {
+    let (units, model, map) = frontend("PROGRAM main\n  LD %IX13\n  ST %QX2\nEND_PROGRAM\n");
+    let p = generate_with(
+        &units,
+        &model,
+        &map,
+        &TargetProfile::default(),
+        &Options::default(),
+    );
+    let b = build_program(p);
+    // %IX13 is byte 1 bit 5, %QX2 byte 0 bit 2
+    let rows = run(&b, 2, 10.0, "1,%IX1.5,1\n", &["%QX0.2", "%QX2", "%QB0"]);
+    assert_eq!(rows[1][2..].join(","), "0,0,0");
+    assert_eq!(rows[2][2..].join(","), "1,1,4");
 }
 
 #[test]
@@ -135,7 +154,7 @@ END_VAR
   ST %MW1920
   LD b
   ST %MW1921
-  FUNC tm_add()
+  FUNC TM_Add()
   LD %MW1922
   WORD_TO_INT
   ST sum

@@ -333,18 +333,3 @@ END_PROGRAM
     }
     assert_eq!(n.last().unwrap(), "15");
 }
-#[test]
-#[ignore]
-fn dump() {
-    let src = std::fs::read_to_string(std::env::var("IL").unwrap()).unwrap();
-    let (units, model, map) = frontend(&src);
-    let p = generate_with(
-        &units,
-        &model,
-        &map,
-        &Default::default(),
-        &Default::default(),
-    );
-    println!("{}", p.file("program.h").unwrap());
-    println!("{}", p.file("program.c").unwrap());
-}

@@ -418,3 +418,261 @@ END_PROGRAM
     // %QW1 starts at byte 1 (byte addressing), most significant byte first; %QX0.0 is the top bit
     assert_eq!(rows[1][2..].join(","), "128,18,52,4660");
 }
+
+#[test]
+fn in_out_parameters_of_function_blocks_and_functions() {
+    let src = "FUNCTION bump : BOOL
+VAR_IN_OUT
+  v : INT;
+END_VAR
+VAR_INPUT
+  by : INT;
+END_VAR
+VAR_TEMP
+  tmp : INT;
+END_VAR
+  LD v
+  ADD by
+  ST tmp
+  LD tmp
+  ST v
+  LD TRUE
+  ST bump
+END_FUNCTION
+FUNCTION_BLOCK acc
+VAR_IN_OUT
+  total : DINT;
+END_VAR
+VAR_INPUT
+  x : DINT;
+END_VAR
+VAR_TEMP
+  t : DINT := 1;
+END_VAR
+  LD total
+  ADD x
+  ADD t
+  ST total
+END_FUNCTION_BLOCK
+PROGRAM main
+VAR
+  a : acc;
+  sum : DINT;
+  n : INT := 1;
+  ok : BOOL;
+END_VAR
+  CAL a(total := sum, x := 10)
+  bump(v := n, by := 2)
+  ST ok
+END_PROGRAM
+";
+    let b = build_src(src);
+    let rows = run(&b, 3, 10.0, "", &["main.sum", "main.n", "main.ok"]);
+    assert_eq!(column(&rows, "main.sum"), ["11", "22", "33"]);
+    assert_eq!(column(&rows, "main.n"), ["3", "5", "7"]);
+    assert_eq!(column(&rows, "main.ok"), ["1", "1", "1"]);
+}
+
+#[test]
+fn initialisers_and_more_operators() {
+    let src = "TYPE
+  level : (low := 10, high := 20);
+  cell : STRUCT
+    v : INT := 3;
+    lit : BOOL;
+  END_STRUCT;
+END_TYPE
+VAR_GLOBAL
+  shared : CTU;
+END_VAR
+FUNCTION_BLOCK pulse_count
+VAR_INPUT
+  x : BOOL;
+END_VAR
+VAR_OUTPUT
+  n : INT := 100;
+END_VAR
+VAR
+  edge : R_TRIG;
+END_VAR
+  LD x
+  CLK edge
+  LD edge.Q
+  JMPCN out
+  LD n
+  ADD 1
+  ST n
+out:
+  LD TRUE
+  ST ENO
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK tick
+VAR_OUTPUT
+  n : INT;
+END_VAR
+  LD n
+  ADD 1
+  ST n
+END_FUNCTION_BLOCK
+PROGRAM main
+VAR_EXTERNAL
+  shared : CTU;
+END_VAR
+VAR
+  arr : ARRAY [0..3] OF INT := [1, 2, 2(7)];
+  cells : ARRAY [1..2] OF cell;
+  counters : ARRAY [1..2] OF pulse_count;
+  lv : level;
+  sub : INT (5..9);
+  tmr : TON := (PT := T#20ms);
+  sr1 : SR;
+  rs1 : RS;
+  t : TIME;
+  d : TIME;
+  m : INT;
+  x : INT;
+  ne : BOOL;
+  nested : INT;
+  calc_runs : INT;
+  c1 : tick;
+  c2 : tick;
+END_VAR
+  LD %IX0.0
+  S1 sr1
+  LD %IX0.1
+  R sr1
+  LD %IX0.0
+  S rs1
+  LD %IX0.1
+  R1 rs1
+  LD %IX0.0
+  CAL counters[1](x := %IX0.0)
+  LD %IX0.0
+  CU shared
+  LD T#1s
+  ADD T#500ms
+  MUL 3
+  ST t
+  LD T#1s
+  MUL 1.5
+  DIV 2
+  ST d
+  LD 17
+  MOD 5
+  XOR 16#F
+  ST m
+  LD 5
+  ADD( 2
+  MUL 3
+  )
+  ST nested
+  LD arr[3]
+  NE 7
+  ST ne
+  LD TRUE
+  ST tmr.IN
+  CAL tmr
+  LD %IX0.0
+  CALC c1
+  LD %IX0.0
+  CALCN c2
+  LD calc_runs
+  ADD 1
+  ST calc_runs
+  LD sub
+  LE 5
+  RETCN
+  LD 99
+  ST x
+END_PROGRAM
+";
+    let b = build_src(src);
+    let rows = run(
+        &b,
+        3,
+        10.0,
+        "1,%IX0.0,1\n2,%IX0.0,0\n2,%IX0.1,1\n",
+        &[
+            "main.arr[0]",
+            "main.arr[1]",
+            "main.arr[2]",
+            "main.arr[3]",
+            "main.cells[2].v",
+            "main.counters[1].n",
+            "main.counters[2].n",
+            "main.lv",
+            "main.sub",
+            "main.tmr.PT",
+            "main.sr1.Q1",
+            "main.rs1.Q1",
+            "shared.CV",
+            "main.t",
+            "main.d",
+            "main.m",
+            "main.nested",
+            "main.ne",
+            "main.x",
+            "main.tmr.Q",
+            "main.calc_runs",
+            "main.c1.n",
+            "main.c2.n",
+        ],
+    );
+    let row = |c: usize| rows[c + 1][2..].join(",");
+    assert_eq!(
+        row(0),
+        "1,2,7,7,3,100,100,10,5,T#20ms,0,0,0,T#4500ms,T#750ms,13,11,0,99,0,1,0,1"
+    );
+    assert_eq!(
+        row(1),
+        "1,2,7,7,3,101,100,10,5,T#20ms,1,1,1,T#4500ms,T#750ms,13,11,0,99,0,2,1,1"
+    );
+    // cycle 2: IX0.0 off, IX0.1 on: SR resets, RS resets; the timer has run 20 ms
+    assert_eq!(
+        row(2),
+        "1,2,7,7,3,101,100,10,5,T#20ms,0,0,1,T#4500ms,T#750ms,13,11,0,99,1,3,1,2"
+    );
+}
+
+#[test]
+fn non_formal_cal_and_negated_outputs() {
+    let src = "PROGRAM main
+VAR
+  tmr : TON;
+  not_q : BOOL;
+  q : BOOL;
+END_VAR
+  CAL tmr(%IX0.0, T#20ms)
+  CAL tmr(IN := %IX0.0, NOT Q => not_q, Q => q)
+END_PROGRAM
+";
+    let b = build_src(src);
+    let rows = run(&b, 4, 10.0, "1,%IX0.0,1\n", &["main.q", "main.not_q"]);
+    assert_eq!(column(&rows, "main.q"), ["0", "0", "0", "1"]);
+    assert_eq!(column(&rows, "main.not_q"), ["1", "1", "1", "0"]);
+}
+
+#[test]
+fn function_parameters_need_not_be_used() {
+    let src = "FUNCTION constant_one : INT
+VAR_INPUT
+  ignored : INT;
+END_VAR
+VAR_OUTPUT
+  unused_out : BOOL;
+END_VAR
+  LD 1
+  ST constant_one
+END_FUNCTION
+PROGRAM main
+VAR
+  x : INT;
+END_VAR
+  constant_one(ignored := 5)
+  ST x
+END_PROGRAM
+";
+    let b = build_src(src);
+    let rows = run(&b, 1, 10.0, "", &["main.x"]);
+    assert_eq!(column(&rows, "main.x"), ["1"]);
+}

@@ -221,3 +221,13 @@ fn the_pipeline_builds_a_bare_il_file_as_program_main() {
     assert!(r.is_none() && diags.has_errors());
     assert!(!dir.path().join("bad").exists());
 }
+
+#[test]
+fn a_program_without_variables_or_programs_still_builds_and_runs() {
+    let b = build_src("FUNCTION_BLOCK unused\nVAR_INPUT\n  x : BOOL;\nEND_VAR\nVAR_OUTPUT\n  y : BOOL;\nEND_VAR\n  LD x\n  ST y\nEND_FUNCTION_BLOCK\n");
+    let (status, stdout, _) = exec(&b, &["--cycles", "2", "--watch", "%QX0.0"]);
+    assert_eq!(status, Some(0));
+    assert_eq!(stdout, "cycle,time_ms,%QX0.0\n0,0,0\n1,10,0\n");
+    let (_, list, _) = exec(&b, &["--list"]);
+    assert_eq!(list, "");
+}

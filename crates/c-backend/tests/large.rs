@@ -174,3 +174,54 @@ fn generated_programs_compile_strictly_and_run() {
     assert!(!out.stderr.contains("runtime error"), "{}", out.stderr);
     assert_eq!(out.stdout.lines().count(), 51);
 }
+
+#[test]
+fn deeply_nested_deferred_operators_generate_without_recursion() {
+    let depth = 1500;
+    let mut src = String::from("PROGRAM deep\nVAR\n  a : BOOL;\n  q : BOOL;\nEND_VAR\n  LD a\n");
+    for _ in 0..depth {
+        src.push_str("  OR( a\n");
+    }
+    for _ in 0..depth {
+        src.push_str("  )\n");
+    }
+    src.push_str("  ST q\nEND_PROGRAM\n");
+    // the front end recurses on nesting: give it a large stack
+    let (units, model) = std::thread::Builder::new()
+        .stack_size(1 << 30)
+        .spawn(move || {
+            let mut map = diagnostics::SourceMap::new();
+            let file = map.add("deep.il", src.clone());
+            let mut diags = Diagnostics::new();
+            let units = vec![il_frontend::parse(file, &src, &mut diags)];
+            let model = il_frontend::sema::analyze(&units, &mut diags);
+            assert!(!diags.has_errors());
+            (units, model)
+        })
+        .unwrap()
+        .join()
+        .unwrap();
+    // the generator walks nested lists with its own stack: a small thread stack is enough
+    let c = std::thread::Builder::new()
+        .stack_size(256 * 1024)
+        .spawn(move || {
+            let mut diags = Diagnostics::new();
+            let p = c_backend::generate(
+                &units,
+                &model,
+                &TargetProfile::default(),
+                &Options::default(),
+                &mut diags,
+            )
+            .expect("generates");
+            let c = p.file("program.c").unwrap().to_string();
+            std::mem::forget(units); // dropping the deep tree recurses too; not the generator's concern
+            std::mem::forget(model);
+            c
+        })
+        .unwrap()
+        .join()
+        .unwrap();
+    assert!(c.contains(&format!("d_{depth} = cr_BOOL;")));
+    assert_eq!(c.matches("d_1 = cr_BOOL;").count(), 1);
+}

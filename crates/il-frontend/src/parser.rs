@@ -171,6 +171,8 @@ impl<'s> Ctx<'s> {
             }
             _ => {}
         }
+        // `NOT x` was reported: the tree keeps the recovered `NOT` (no second report downstream).
+        let operand = if op == Op::Not { None } else { operand };
         Some(Instruction {
             kind: InstrKind::Simple {
                 op,
@@ -671,7 +673,36 @@ impl<'s> Ctx<'s> {
         let expect = summarize_expected(&expected);
         let eol_expected = expected.iter().any(|x| x == "EOL");
         let semi_expected = expected.iter().any(|x| x == "\";\"");
-        let (msg, hint) = if semi_expected && !eol_expected && tok != Tok::Semi {
+        let line_start = self.src[..s].rfind('\n').map_or(0, |i| i + 1);
+        let before = self.src[line_start..s].trim();
+        let at_line_start = before.is_empty() || before.ends_with(':');
+        let only_assign =
+            !expected.is_empty() && expected.iter().all(|x| x == "\":=\"" || x == "\"=>\"");
+        let type_expected = expected.iter().any(|x| x == "\"ARRAY\"");
+        let (msg, hint) = if type_expected {
+            (
+                format!("expected a type, found {found}"),
+                "write a type such as INT, BOOL, TIME, STRING[10], ARRAY [1..10] OF INT or a declared type"
+                    .to_string(),
+            )
+        } else if only_assign {
+            (
+                format!("expected `:=` or `=>` before {found}"),
+                "the arguments of a call are all formal (`IN := x, Q => y`) or all non-formal (`x, y`)"
+                    .to_string(),
+            )
+        } else if tok == Tok::RParen && eol_expected && at_line_start {
+            (
+                "unmatched `)`".to_string(),
+                "a `)` on its own line closes a deferred operator such as `AND(`; remove it"
+                    .to_string(),
+            )
+        } else if eol_expected && at_line_start && tok != Tok::Eol {
+            (
+                format!("unexpected {found}"),
+                "expected an instruction, a label or a declaration block".to_string(),
+            )
+        } else if semi_expected && !eol_expected && tok != Tok::Semi {
             (
                 format!("expected `;` before {found}"),
                 "end each declaration with `;`".to_string(),

@@ -113,8 +113,12 @@ fn body(out: &mut String, lines: usize, rng: &mut Lcg) {
                 );
                 left -= 5;
             }
+            _ if left >= 2 => {
+                let _ = write!(out, "    LD b{}\n    ST b{}\n", b(rng), b(rng));
+                left -= 2;
+            }
             _ => {
-                let _ = writeln!(out, "    LD b{}", b(rng));
+                out.push_str("    RET\n");
                 left -= 1;
             }
         }
@@ -131,6 +135,13 @@ mod tests {
         assert_eq!(text, generate(100, 3));
         // Each POU: header, VAR, 28 declarations, END_VAR, 100 body lines, END_PROGRAM.
         assert_eq!(text.lines().count(), 3 * (1 + 1 + 28 + 1 + 100 + 1));
+        for lines in [0, 1, 2, 5, 7] {
+            assert_eq!(
+                generate(lines, 1).lines().count(),
+                32 + lines,
+                "{lines} lines"
+            );
+        }
         for kw in ["AND(", "JMPC L", "CAL t", "MUL n", "ORN b", "GT "] {
             assert!(text.contains(kw), "missing {kw}");
         }

@@ -195,6 +195,7 @@ VAR_INPUT
 END_VAR
 VAR CONSTANT
   max : INT := 10;
+  locked : BOOL := TRUE;
 END_VAR
 VAR
   t : TON;
@@ -206,6 +207,8 @@ END_VAR
   S start
   LD t.Q
   ST t.Q
+  CAL t(IN := FALSE, Q => start)
+  R locked
 END_FUNCTION_BLOCK
 "
     ));
@@ -487,7 +490,7 @@ END_PROGRAM
 }
 
 #[test]
-fn operators_with_a_missing_or_extra_operand() {
+fn operand_mistakes_reported_by_the_parser_are_not_reported_again() {
     let src = "PROGRAM Main
 VAR
   b : BOOL;
@@ -498,7 +501,46 @@ END_VAR
   ADD
 END_PROGRAM
 ";
-    assert_eq!(codes(src), vec!["E1020", "E1020"], "{}", check(src));
+    assert_eq!(codes(src), vec!["E0013", "E0012"], "{}", check(src));
+}
+
+#[test]
+fn operators_without_their_operand_in_a_built_tree() {
+    // Trees built by other stages (ladder lowering) do not go through the parser's checks.
+    use il_frontend::ast::*;
+    use il_frontend::Span;
+    let s = |a: usize, b: usize| Span::new(diagnostics::FileId(0), a, b);
+    let instr = |op, a, b| {
+        IlStmt::Instr(Instruction {
+            kind: InstrKind::Simple {
+                op,
+                negate: false,
+                operand: None,
+            },
+            span: s(a, b),
+        })
+    };
+    let unit = CompilationUnit {
+        items: vec![LibraryElement::Pou(Pou {
+            kind: PouKind::Program,
+            name: Ident::new("P", s(0, 1)),
+            return_type: None,
+            var_blocks: vec![],
+            body: vec![
+                instr(Op::Ld, 2, 4),
+                instr(Op::Add, 5, 8),
+                instr(Op::St, 9, 11),
+            ],
+            span: s(0, 11),
+        })],
+    };
+    let mut diags = diagnostics::Diagnostics::new();
+    il_frontend::sema::analyze(&[unit], &mut diags);
+    let got: Vec<(&str, u32)> = diags
+        .iter()
+        .map(|d| (d.code.0, d.span.unwrap().start))
+        .collect();
+    assert_eq!(got, vec![("E1020", 2), ("E1020", 5), ("E1020", 9)]);
 }
 
 #[test]
@@ -511,6 +553,43 @@ END_VAR
   LD v
   MUL 2
 END_FUNCTION
+"
+    ));
+}
+
+#[test]
+fn invalid_initial_values() {
+    insta::assert_snapshot!(check(
+        "TYPE
+  Color : (red, green);
+END_TYPE
+PROGRAM Main
+VAR
+  b : BOOL := 5;
+  a : ARRAY [0..1] OF INT := [1, 2, 3];
+  c : Color := blue;
+  t : TON := (PT := T#1s, XX := 1);
+  n : INT := other;
+END_VAR
+  LD b
+  ST b
+END_PROGRAM
+"
+    ));
+}
+
+#[test]
+fn stores_into_what_cannot_be_written() {
+    insta::assert_snapshot!(check(
+        "PROGRAM Main
+VAR
+  x : BOOL;
+END_VAR
+  LD x
+  ST 5
+  ST %IX0.1
+  ST %QX0.1
+END_PROGRAM
 "
     ));
 }

@@ -1,7 +1,8 @@
-//! The IL files of the shared corpus analyse without spurious diagnostics.
+//! The seven IL files of the shared corpus, parsed and analysed: no spurious diagnostics.
 
 mod sema_support;
-use sema_support::analyze_src;
+use diagnostics::{Diagnostics, SourceMap};
+use il_frontend::sema::{analyze, Callee, Model, Type};
 
 /// A corpus file: `shared/` lies beside the repository (one level further up from a git worktree).
 fn corpus(name: &str) -> String {
@@ -16,110 +17,136 @@ fn corpus(name: &str) -> String {
         .unwrap_or_else(|| panic!("corpus file {name} not found at {paths:?}"))
 }
 
-/// Blanks comments and puts a declaration that follows `VAR...` on its own line, keeping every byte
-/// offset (the test reader reads one declaration per line).
-fn normalize(src: &str) -> String {
-    let mut b: Vec<u8> = src.as_bytes().to_vec();
-    let mut i = 0;
-    while i + 1 < b.len() {
-        if b[i] == b'(' && b[i + 1] == b'*' {
-            while i + 1 < b.len() && !(b[i] == b'*' && b[i + 1] == b')') {
-                if b[i] != b'\n' {
-                    b[i] = b' ';
-                }
-                i += 1;
-            }
-            b[i] = b' ';
-            b[i + 1] = b' ';
-        }
-        i += 1;
+/// Parses and analyses corpus files together; returns the model, the source of the last file, and the
+/// diagnostics in short form (one per line).
+fn analyse(names: &[&str]) -> (Model, String, Vec<String>) {
+    let mut map = SourceMap::new();
+    let mut diags = Diagnostics::new();
+    let mut units = Vec::new();
+    let mut last = String::new();
+    for n in names {
+        let src = corpus(n);
+        let f = map.add(*n, src.clone());
+        units.push(il_frontend::parse(f, &src, &mut diags));
+        last = src;
     }
-    let mut s = String::from_utf8(b).unwrap();
-    for kw in ["VAR_INPUT ", "VAR_OUTPUT ", "VAR "] {
-        s = s.replace(kw, &format!("{}\n", kw.trim_end()));
-    }
-    s
+    let model = analyze(&units, &mut diags);
+    let lines = diags
+        .into_sorted()
+        .iter()
+        .map(|d| diagnostics::render_short(&map, d))
+        .collect();
+    (model, last, lines)
 }
 
-fn diagnostics_of(name: &str) -> String {
-    analyze_src(&normalize(&corpus(name))).1
+/// The semantic diagnostics only (the parser's own, e.g. E0016 for `R_EDGE`, are the parser's business).
+fn sema_only(d: &[String]) -> Vec<String> {
+    d.iter()
+        .filter(|l| l.contains("[E1") || l.contains("[W1"))
+        .cloned()
+        .collect()
 }
+
+const CMD_MONITOR: &str = "17_matiec_AnnexF_cmd_monitor_il.st";
+const FWD_REV_MON: &str = "17_matiec_AnnexF_fwd_rev_mon_il.st";
+const STACK_INT: &str = "17_matiec_AnnexF_stack_int_il.st";
+const WEIGH: &str = "17_matiec_AnnexF_weigh_il.st";
+const TEST1: &str = "18_il_parser_test1.il";
+const TEST2: &str = "19_il_parser_test2.il";
+const STATE_DISPLAY: &str = "20_strucpp_state-display.il";
 
 #[test]
 fn annex_f_cmd_monitor_is_clean() {
-    assert_eq!(diagnostics_of("17_matiec_AnnexF_cmd_monitor_il.st"), "");
-}
-
-#[test]
-fn annex_f_stack_int_is_clean() {
-    let src = normalize(&corpus("17_matiec_AnnexF_stack_int_il.st"));
-    let (m, d) = analyze_src(&src);
-    assert_eq!(d, "");
-    // `ZRO_OUT: LD 0` falls through into `SET_OUT: ST OUT`, which jumps reach with an INT.
-    let at = src
-        .find("LD\t0\t(* OUT=0")
-        .or_else(|| src.find("ZRO_OUT:\tLD"))
-        .unwrap();
-    let zro = m
-        .instrs
-        .iter()
-        .find(|(s, _)| s.start as usize >= at && (s.start as usize) < at + 12)
-        .unwrap()
-        .1;
-    assert_eq!(zro.cr_after, Some(il_frontend::sema::Type::INT));
-    // `CAL LIMIT(...)` is a function call whose result is the current result.
-    let lim = src.find("CAL\tLIMIT").unwrap();
-    let call = m
-        .instrs
-        .iter()
-        .find(|(s, _)| s.start as usize == lim)
-        .unwrap()
-        .1;
-    assert!(matches!(
-        call.callee,
-        Some(il_frontend::sema::Callee::Std { name: "LIMIT", .. })
-    ));
-    assert_eq!(call.cr_after, Some(il_frontend::sema::Type::INT));
+    let (_, _, d) = analyse(&[CMD_MONITOR]);
+    assert_eq!(d, Vec::<String>::new());
 }
 
 #[test]
 fn annex_f_weigh_is_clean() {
-    assert_eq!(diagnostics_of("17_matiec_AnnexF_weigh_il.st"), "");
+    let (_, _, d) = analyse(&[WEIGH]);
+    assert_eq!(d, Vec::<String>::new());
 }
 
 #[test]
 fn strucpp_state_display_is_clean() {
-    assert_eq!(diagnostics_of("20_strucpp_state-display.il"), "");
+    let (_, _, d) = analyse(&[STATE_DISPLAY]);
+    assert_eq!(d, Vec::<String>::new());
 }
 
-/// The Annex F text reads `FWD_REV_FF.Q`, but the IEC SR block's output is `Q1` (an erratum of the
-/// standard's example): that one line is the only diagnostic.
+#[test]
+fn annex_f_stack_int_is_clean() {
+    let (m, src, d) = analyse(&[STACK_INT]);
+    assert_eq!(sema_only(&d), Vec::<String>::new(), "{d:#?}");
+    let at = |text: &str| {
+        let start = src.find(text).unwrap_or_else(|| panic!("{text}")) as u32;
+        m.instrs
+            .iter()
+            .find(|(s, _)| s.start == start)
+            .unwrap_or_else(|| panic!("no instruction at {text}"))
+            .1
+    };
+    // `ZRO_OUT: LD 0` falls through into `SET_OUT: ST OUT`, which jumps reach with an INT.
+    assert_eq!(at("LD\t0\t(* OUT=0").cr_after, Some(Type::INT));
+    // `CAL LIMIT(...)` calls a function: its result is the current result.
+    let call = at("CAL\tLIMIT");
+    assert!(
+        matches!(call.callee, Some(Callee::Std { name: "LIMIT", .. })),
+        "{call:?}"
+    );
+    assert_eq!(call.cr_after, Some(Type::INT));
+}
+
+/// FWD_REV_MON instantiates CMD_MONITOR: both files form one program. The Annex F text reads
+/// `FWD_REV_FF.Q`, but the IEC SR block's output is `Q1` (an erratum of the standard's example): that
+/// line is the only diagnostic.
 #[test]
 fn annex_f_fwd_rev_mon_with_cmd_monitor_reports_only_the_sr_output_erratum() {
-    // FWD_REV_MON instantiates CMD_MONITOR: both files form one program.
-    let a = normalize(&corpus("17_matiec_AnnexF_cmd_monitor_il.st"));
-    let b = normalize(&corpus("17_matiec_AnnexF_fwd_rev_mon_il.st"));
-    let mut map = diagnostics::SourceMap::new();
-    let fa = map.add("cmd_monitor", a.clone());
-    let fb = map.add("fwd_rev_mon", b.clone());
-    let units = [sema_support::read(fa, &a), sema_support::read(fb, &b)];
-    let mut diags = diagnostics::Diagnostics::new();
-    let model = il_frontend::sema::analyze(&units, &mut diags);
-    let list = diags.into_sorted();
-    let text = diagnostics::render_human(&map, &list);
-    assert_eq!(list.len(), 1, "{text}");
-    assert_eq!(list[0].code, diagnostics::code::E1011);
+    let (m, _, d) = analyse(&[CMD_MONITOR, FWD_REV_MON]);
+    assert_eq!(d.len(), 1, "{d:#?}");
     assert!(
-        text.contains("SR has no input or output `Q`") && text.contains("Q1"),
-        "{text}"
+        d[0].contains("E1011") && d[0].contains("SR has no input or output `Q`"),
+        "{d:#?}"
     );
-    assert_eq!(model.pous.len(), 2);
+    assert_eq!(m.pous.len(), 2);
 }
 
 #[test]
 fn annex_f_fwd_rev_mon_alone_reports_the_missing_fb_type_once_per_declaration() {
-    let d = diagnostics_of("17_matiec_AnnexF_fwd_rev_mon_il.st");
-    assert_eq!(d.matches("unknown type `CMD_MONITOR`").count(), 2, "{d}");
-    // Plus the SR erratum (see above); nothing follows from the unknown type.
-    assert_eq!(d.matches("error[").count(), 3, "{d}");
+    let (_, _, d) = analyse(&[FWD_REV_MON]);
+    let unknown = d
+        .iter()
+        .filter(|l| l.contains("unknown type `CMD_MONITOR`"))
+        .count();
+    assert_eq!(unknown, 2, "{d:#?}");
+    // Plus the SR erratum; nothing follows from the unknown type.
+    assert_eq!(d.len(), 3, "{d:#?}");
+}
+
+#[test]
+fn il_parser_test1_reports_only_the_s_without_operand() {
+    let (_, _, d) = analyse(&[TEST1]);
+    let sema = sema_only(&d);
+    assert_eq!(sema.len(), 1, "{d:#?}");
+    assert!(sema[0].contains("E1016"), "{d:#?}");
+}
+
+/// The file declares almost nothing: each use of an undeclared name is one E1001 (no cascade from the
+/// unknown type of the current result); the remaining errors are genuine type errors of the file
+/// (`LD 450` compared with a bit, UINT compared with BOOL, SUB of BOOL), and the warnings are results
+/// loaded and replaced before use.
+#[test]
+fn il_parser_test2_reports_each_undeclared_name_once_per_occurrence() {
+    let (_, src, d) = analyse(&[TEST2]);
+    insta::assert_snapshot!(d.join("\n"));
+    // One E1001 per occurrence of an undeclared name.
+    for name in ["Limit", "FO1", "FO2"] {
+        let uses = src.matches(&format!("{name},")).count()
+            + src.matches(&format!("{name})")).count()
+            + src.matches(&format!("{name}\n")).count();
+        let reported = d
+            .iter()
+            .filter(|l| l.contains(&format!("undeclared name `{name}`")))
+            .count();
+        assert_eq!(reported, uses, "{name}: {d:#?}");
+    }
 }

@@ -578,8 +578,11 @@ END_PROGRAM
     let mut map = diagnostics::SourceMap::new();
     let fa = map.add("a.il", a);
     let fb = map.add("b.il", b);
-    let units = [sema_support::read(fa, a), sema_support::read(fb, b)];
     let mut diags = diagnostics::Diagnostics::new();
+    let units = [
+        sema_support::read(fa, a, &mut diags),
+        sema_support::read(fb, b, &mut diags),
+    ];
     let m = analyze(&units, &mut diags);
     assert!(diags.is_empty(), "{:?}", diags);
     assert_eq!(

@@ -186,3 +186,41 @@ fn keywords_are_case_insensitive_and_names_keep_their_spelling() {
     assert_eq!(p.short(), "");
     insta::assert_snapshot!(il_frontend::print::unit(&p.unit));
 }
+
+#[test]
+fn broken_pou_header_drops_the_pou_but_not_the_next_one() {
+    let p = common::parse(
+        "h.il",
+        "PROGRAM 12\n  LD a\nEND_PROGRAM\nFUNCTION f :\n  LD a\nEND_FUNCTION\nPROGRAM q\n  LD b\nEND_PROGRAM\n",
+    );
+    insta::assert_snapshot!(format!(
+        "{}-----\n{}",
+        p.short(),
+        il_frontend::print::unit(&p.unit)
+    ));
+}
+
+#[test]
+fn text_after_closing_paren_keeps_the_deferred_instruction() {
+    let p = common::parse(
+        "d.il",
+        &prog("    LD a\n    AND( b\n        OR a\n    ) b\n    ST b"),
+    );
+    insta::assert_snapshot!(format!(
+        "{}-----\n{}",
+        p.short(),
+        il_frontend::print::unit(&p.unit)
+    ));
+}
+
+#[test]
+fn unmatched_paren_and_stray_end_var() {
+    insta::assert_snapshot!(show("END_VAR\nPROGRAM p\n    )\n    ST c\nEND_PROGRAM\n"));
+}
+
+#[test]
+fn call_argument_errors() {
+    insta::assert_snapshot!(show(&prog(
+        "    CAL t(IN := )\n    CAL t(IN := a, b)\n    LD t.\n    LD t[1\n    ST b"
+    )));
+}

@@ -1,4 +1,4 @@
-//! IL bodies to C statements.
+//! IL bodies to C statements (calls are in `calls`).
 //!
 //! Input: a POU's IL statements, its [`Scope`], the sema model's per-instruction info (current-result
 //! types, callees, argument bindings). Output: C statements appended to one buffer, plus the set of
@@ -7,18 +7,13 @@
 //! outer result in a block-scoped local `d<depth>`, evaluates the nested list, then combines; jumps are
 //! `goto L_<label>`; only labels that are jumped to are emitted; work is linear in the body's size.
 
-use super::scope::{convert, convert_elementary, real_to_int, Place, Scope};
+use super::scope::{convert, Place, Scope};
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;
 use diagnostics::{code, Diagnostic, Span};
-use il_frontend::ast::{
-    ArgDir, CallArgs, Condition, FbInputOp, IlStmt, InstrKind, Instruction, Op, Operand, VarKind,
-    VarRef,
-};
-use il_frontend::sema::{
-    ArgBinding, ArgSource, Callee, ConversionKind, Elementary, FbType, InstrInfo, PouId, Type,
-};
+use il_frontend::ast::{Condition, FbInputOp, IlStmt, InstrKind, Instruction, Op, Operand};
+use il_frontend::sema::{Callee, Elementary, InstrInfo, Type};
 use std::collections::{BTreeMap, HashSet};
 
 use Elementary as E;
@@ -27,7 +22,7 @@ use Elementary as E;
 pub struct Body<'s, 'm> {
     pub scope: &'s Scope<'m>,
     pub out: String,
-    indent: usize,
+    pub(super) indent: usize,
     /// Current-result locals: name -> C declaration.
     pub crs: BTreeMap<String, String>,
     /// Labels that some jump targets (keys).
@@ -58,30 +53,45 @@ impl<'s, 'm> Body<'s, 'm> {
         self.out.push_str(text);
         self.out.push('\n');
     }
-    fn temp(&mut self) -> String {
+    pub(super) fn temp(&mut self) -> String {
         self.temps += 1;
         format!("t_{}", self.temps)
     }
 }
 
+/// An open deferred operator, waiting for its nested list.
+struct Deferred {
+    span: Span,
+    info: InstrInfo,
+    op: Op,
+    negate: bool,
+    /// The outer current result's type (`None` for `LD(`).
+    outer: Option<Type>,
+    /// The block-scoped local holding the outer result.
+    saved: String,
+}
+
 /// Collects the labels targeted by jumps (nested lists included).
 pub fn jump_targets(stmts: &[IlStmt], into: &mut HashSet<String>) {
-    for s in stmts {
-        if let IlStmt::Instr(i) = s {
-            match &i.kind {
-                InstrKind::Jump { label, .. } => {
-                    into.insert(label.key());
+    let mut lists = vec![stmts];
+    while let Some(list) = lists.pop() {
+        for s in list {
+            if let IlStmt::Instr(i) = s {
+                match &i.kind {
+                    InstrKind::Jump { label, .. } => {
+                        into.insert(label.key());
+                    }
+                    InstrKind::Deferred { body, .. } => lists.push(body),
+                    _ => {}
                 }
-                InstrKind::Deferred { body, .. } => jump_targets(body, into),
-                _ => {}
             }
         }
     }
 }
 
-impl Gen<'_> {
+impl<'a> Gen<'a> {
     /// The current-result local for values of `ty` (declared on first use).
-    fn cr(&mut self, b: &mut Body, ty: &Type, span: Span) -> Option<String> {
+    pub(super) fn cr(&mut self, b: &mut Body, ty: &Type, span: Span) -> Option<String> {
         let base = match ty {
             Type::Array { .. } => {
                 self.unsupported(span, "an array as the current result");
@@ -112,9 +122,10 @@ impl Gen<'_> {
         Some(name)
     }
 
-    fn info(&mut self, i: &Instruction) -> Option<InstrInfo> {
-        match self.model.instr(i.span) {
-            Some(info) => Some(info.clone()),
+    pub(super) fn info(&mut self, i: &Instruction) -> Option<&'a InstrInfo> {
+        let model: &'a il_frontend::sema::Model = self.model;
+        match model.instr(i.span) {
+            Some(info) => Some(info),
             None => {
                 self.report_once(
                     Diagnostic::error(
@@ -129,8 +140,27 @@ impl Gen<'_> {
         }
     }
 
+    /// Translates a statement list. Nested lists of deferred operators are walked with an explicit
+    /// stack, so nesting depth is bounded by memory, not by the call stack.
     pub fn stmts(&mut self, b: &mut Body, stmts: &[IlStmt]) {
-        for s in stmts {
+        enum Work<'a> {
+            List(&'a [IlStmt]),
+            Close(Option<Box<Deferred>>),
+        }
+        let mut stack = vec![Work::List(stmts)];
+        while let Some(work) = stack.pop() {
+            let list = match work {
+                Work::Close(Some(d)) => {
+                    self.deferred_close(b, *d);
+                    continue;
+                }
+                Work::Close(None) => continue,
+                Work::List(list) => list,
+            };
+            let Some((s, rest)) = list.split_first() else {
+                continue;
+            };
+            stack.push(Work::List(rest));
             match s {
                 IlStmt::Label(l) => {
                     if b.targets.contains(&l.key()) {
@@ -140,7 +170,24 @@ impl Gen<'_> {
                         b.indent = ind;
                     }
                 }
-                IlStmt::Instr(i) => self.instr(b, i),
+                IlStmt::Instr(i) => {
+                    if let InstrKind::Deferred {
+                        op,
+                        negate,
+                        operand,
+                        body,
+                        ..
+                    } = &i.kind
+                    {
+                        let d = self.deferred_open(b, i, *op, *negate, operand.as_ref(), body);
+                        if d.is_some() {
+                            stack.push(Work::Close(d.map(Box::new)));
+                            stack.push(Work::List(body));
+                        }
+                    } else {
+                        self.instr(b, i);
+                    }
+                }
             }
         }
     }
@@ -187,22 +234,15 @@ impl Gen<'_> {
                         op,
                         negate,
                         operand,
-                    } => self.simple(b, i, &info, *op, *negate, operand.as_ref()),
-                    InstrKind::Deferred {
-                        op,
-                        negate,
-                        operand,
-                        body,
-                        close,
-                    } => self.deferred(b, i, &info, *op, *negate, operand.as_ref(), body, *close),
+                    } => self.simple(b, i, info, *op, *negate, operand.as_ref()),
                     InstrKind::Call {
                         cond,
                         instance,
                         args,
-                    } => self.cal(b, i, &info, *cond, instance, args),
-                    InstrKind::FunctionCall { args, .. } => self.function_call(b, i, &info, args),
+                    } => self.cal(b, i, info, *cond, instance, args),
+                    InstrKind::FunctionCall { args, .. } => self.function_call(b, i, info, args),
                     InstrKind::FbInput { op, instance } => {
-                        self.fb_input(b, i, &info, fb_input_name(*op), instance)
+                        self.fb_input(b, i, info, fb_input_name(*op), instance)
                     }
                     _ => {}
                 }
@@ -415,7 +455,7 @@ impl Gen<'_> {
 
     /// A two-input standard function (`ADD`, `GT`, `AND` ...).
     #[allow(clippy::too_many_arguments)]
-    fn std_binary(
+    pub(super) fn std_binary(
         &mut self,
         span: Span,
         name: &str,
@@ -515,19 +555,20 @@ impl Gen<'_> {
         }
     }
 
-    #[allow(clippy::too_many_arguments)]
-    fn deferred(
+    /// Opens a deferred operator's block: saves the outer result, loads the implicit operand. Returns
+    /// what [`Gen::deferred_close`] needs, or `None` (block already closed) when the outer result is
+    /// unusable.
+    fn deferred_open(
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
         op: Op,
         negate: bool,
         operand: Option<&Operand>,
         body: &[IlStmt],
-        _close: Span,
-    ) {
+    ) -> Option<Deferred> {
         let span = i.span;
+        let info = self.info(i)?;
         b.depth += 1;
         let d = format!("d_{}", b.depth);
         b.line("{");
@@ -535,23 +576,20 @@ impl Gen<'_> {
         let outer = if op == Op::Ld {
             None
         } else {
-            let Some(before) = info.cr_before.clone() else {
+            let saved = info
+                .cr_before
+                .clone()
+                .and_then(|before| self.cr(b, &before, span).map(|cr| (before, cr)));
+            let Some((before, cr)) = saved else {
                 b.indent -= 1;
                 b.line("}");
                 b.depth -= 1;
-                return;
-            };
-            let Some(cr) = self.cr(b, &before, span) else {
-                b.indent -= 1;
-                b.line("}");
-                b.depth -= 1;
-                return;
+                return None;
             };
             let decl = ctypes::declare(self.model, &before, &d).unwrap_or_default();
             b.line(&format!("{decl} = {cr};"));
             Some(before)
         };
-        let nested_ty = info.operand.clone();
         if let Some(o) = operand {
             // the implicit LD that starts the nested list, typed as the first instruction expects
             let first = body.iter().find_map(|s| match s {
@@ -559,24 +597,36 @@ impl Gen<'_> {
                 _ => None,
             });
             let ty = first
-                .or_else(|| nested_ty.clone())
+                .or_else(|| info.operand.clone())
                 .unwrap_or_else(|| self.operand_type(b.scope, o, None));
             if let (Some(cr), Some(v)) = (self.cr(b, &ty, o.span()), self.value(b.scope, o, &ty)) {
                 b.line(&format!("{cr} = {v};"));
             }
         }
-        self.stmts(b, body);
-        if let (Some(vt), Some(after)) = (nested_ty, info.cr_after.clone()) {
+        Some(Deferred {
+            span,
+            info: info.clone(),
+            op,
+            negate,
+            outer,
+            saved: d,
+        })
+    }
+
+    /// Combines the saved outer result with the nested list's value and closes the block.
+    fn deferred_close(&mut self, b: &mut Body, d: Deferred) {
+        let span = d.span;
+        if let (Some(vt), Some(after)) = (d.info.operand.clone(), d.info.cr_after.clone()) {
             if let Some(vcr) = self.cr(b, &vt, span) {
-                let v = if negate { negated(&vcr, &vt) } else { vcr };
-                let res = match &outer {
+                let v = if d.negate { negated(&vcr, &vt) } else { vcr };
+                let res = match &d.outer {
                     None => Some(convert(&v, &vt, &after)),
                     Some(before) => {
-                        let common = std_common_type(info, before);
-                        let a = convert(&d, before, &common);
-                        let vty = self.operand_ty_for(info, &common, op);
+                        let common = std_common_type(&d.info, before);
+                        let a = convert(&d.saved, before, &common);
+                        let vty = self.operand_ty_for(&d.info, &common, d.op);
                         let v = convert(&v, &vt, &vty);
-                        self.binary(span, op, &a, &common, &v, &vty, &after)
+                        self.binary(span, d.op, &a, &common, &v, &vty, &after)
                     }
                 };
                 if let (Some(res), Some(cr)) = (res, self.cr(b, &after, span)) {
@@ -587,662 +637,6 @@ impl Gen<'_> {
         b.indent -= 1;
         b.line("}");
         b.depth -= 1;
-    }
-
-    /// The written operand of argument `i`.
-    fn written_arg(args: &CallArgs, i: usize) -> Option<(&Operand, bool)> {
-        match args {
-            CallArgs::None => None,
-            CallArgs::NonFormal(v) => v.get(i).map(|o| (o, false)),
-            CallArgs::Formal(v) => v
-                .get(i)
-                .map(|a| (&a.value, matches!(a.dir, ArgDir::Output { negated: true }))),
-        }
-    }
-
-    /// The C value of an input binding, of the parameter's type.
-    fn arg_value(
-        &mut self,
-        b: &mut Body,
-        info: &InstrInfo,
-        args: &CallArgs,
-        binding: &ArgBinding,
-        span: Span,
-    ) -> Option<String> {
-        match binding.source {
-            ArgSource::CurrentResult => {
-                let before = info.cr_before.clone()?;
-                let cr = self.cr(b, &before, span)?;
-                Some(convert(&cr, &before, &binding.ty))
-            }
-            ArgSource::Written(i) => {
-                let (o, _) = Self::written_arg(args, i)?;
-                self.value(b.scope, o, &binding.ty)
-            }
-        }
-    }
-
-    /// `CAL inst(...)`, `CALC inst`, `CALCN inst`.
-    fn cal(
-        &mut self,
-        b: &mut Body,
-        i: &Instruction,
-        info: &InstrInfo,
-        cond: Condition,
-        instance: &VarRef,
-        args: &CallArgs,
-    ) {
-        let Some(Place::Mem { lv, ty }) = self.place(b.scope, instance) else {
-            self.unsupported(
-                instance.span,
-                "calling something that is not an FB instance in memory",
-            );
-            return;
-        };
-        let Type::Fb(fb) = ty else {
-            self.unsupported(
-                instance.span,
-                "CAL of a variable that is not an FB instance",
-            );
-            return;
-        };
-        let guard = match cond {
-            Condition::Always => None,
-            c => {
-                let Some(cr) = self.cr(b, &Type::BOOL, i.span) else {
-                    return;
-                };
-                Some(if c == Condition::IfTrue {
-                    cr
-                } else {
-                    format!("!{cr}")
-                })
-            }
-        };
-        match guard {
-            Some(g) => b.line(&format!("if ({g}) {{")),
-            None => b.line("{"),
-        }
-        b.indent += 1;
-        let mut outputs = Vec::new();
-        for binding in &info.args {
-            if binding.output {
-                outputs.push(binding.clone());
-                continue;
-            }
-            let field = self.fb_param_lvalue(&lv, fb, &binding.param);
-            if self.fb_param_is_inout(fb, &binding.param) {
-                let ArgSource::Written(k) = binding.source else {
-                    continue;
-                };
-                let Some((o, _)) = Self::written_arg(args, k) else {
-                    continue;
-                };
-                match self.operand_place(b.scope, o) {
-                    Some(Place::Mem { lv: target, .. }) => {
-                        let raw = self.fb_param_raw(&lv, fb, &binding.param);
-                        b.line(&format!("{raw} = &{target};"));
-                    }
-                    _ => self.unsupported(o.span(), "this argument for an IN_OUT parameter"),
-                }
-                continue;
-            }
-            let Some(v) = self.arg_value(b, info, args, binding, i.span) else {
-                continue;
-            };
-            let place = Place::Mem {
-                lv: field,
-                ty: binding.ty.clone(),
-            };
-            let stmt = self.store(&place, &v);
-            b.line(&stmt);
-        }
-        b.line(&invoke(self, &lv, fb));
-        self.store_outputs(b, &lv, fb, &outputs, args);
-        b.indent -= 1;
-        b.line("}");
-    }
-
-    fn store_outputs(
-        &mut self,
-        b: &mut Body,
-        lv: &str,
-        fb: FbType,
-        outputs: &[ArgBinding],
-        args: &CallArgs,
-    ) {
-        for binding in outputs {
-            let ArgSource::Written(k) = binding.source else {
-                continue;
-            };
-            let Some((o, negate)) = Self::written_arg(args, k) else {
-                continue;
-            };
-            let Some(target) = self.operand_place(b.scope, o) else {
-                continue;
-            };
-            let field = self.fb_param_lvalue(lv, fb, &binding.param);
-            let v = if negate {
-                negated(&field, &binding.ty)
-            } else {
-                field
-            };
-            let v = convert(&v, &binding.ty, target.ty());
-            let stmt = self.store(&target, &v);
-            b.line(&stmt);
-        }
-    }
-
-    fn fb_param_raw(&self, lv: &str, fb: FbType, param: &str) -> String {
-        match fb {
-            FbType::Standard(f) => {
-                let (_, params) = ctypes::std_fb(f);
-                let n = params
-                    .iter()
-                    .find(|p| p.0.eq_ignore_ascii_case(param))
-                    .map(|p| p.0.to_string())
-                    .unwrap_or_else(|| param.to_ascii_uppercase());
-                format!("{lv}.{n}")
-            }
-            FbType::User(_) => format!("{lv}.{}", mangle::var(param)),
-        }
-    }
-
-    fn fb_param_is_inout(&self, fb: FbType, param: &str) -> bool {
-        match fb {
-            FbType::Standard(_) => false,
-            FbType::User(id) => self
-                .pou_var(id, param)
-                .is_some_and(|v| v.kind == VarKind::InOut),
-        }
-    }
-
-    fn fb_param_lvalue(&self, lv: &str, fb: FbType, param: &str) -> String {
-        let raw = self.fb_param_raw(lv, fb, param);
-        if self.fb_param_is_inout(fb, param) {
-            format!("(*{raw})")
-        } else {
-            raw
-        }
-    }
-
-    /// `IN tmr`, `CU ctr` ...: stores the current result into the input and invokes the instance.
-    fn fb_input(
-        &mut self,
-        b: &mut Body,
-        i: &Instruction,
-        info: &InstrInfo,
-        input: &str,
-        instance: &VarRef,
-    ) {
-        let fb = match &info.callee {
-            Some(Callee::FbInstance { fb, .. }) => *fb,
-            _ => match self.place(b.scope, instance).map(|p| p.ty().clone()) {
-                Some(Type::Fb(fb)) => fb,
-                _ => {
-                    self.unsupported(instance.span, "an FB input operator on a non-instance");
-                    return;
-                }
-            },
-        };
-        self.fb_input_named(b, i, info, fb, input, instance);
-    }
-
-    fn fb_input_named(
-        &mut self,
-        b: &mut Body,
-        i: &Instruction,
-        info: &InstrInfo,
-        fb: FbType,
-        input: &str,
-        instance: &VarRef,
-    ) {
-        let Some(Place::Mem { lv, .. }) = self.place(b.scope, instance) else {
-            return;
-        };
-        let Some(before) = info.cr_before.clone() else {
-            return;
-        };
-        let Some(cr) = self.cr(b, &before, i.span) else {
-            return;
-        };
-        let pty = match fb {
-            FbType::Standard(f) => ctypes::std_fb(f)
-                .1
-                .iter()
-                .find(|p| p.0.eq_ignore_ascii_case(input))
-                .map(|p| Type::Elementary(p.1)),
-            FbType::User(id) => self.pou_var(id, input).map(|v| v.ty.clone()),
-        };
-        let Some(pty) = pty else {
-            self.unsupported(instance.span, format!("the FB input `{input}`"));
-            return;
-        };
-        let field = self.fb_param_lvalue(&lv, fb, input);
-        let v = convert(&cr, &before, &pty);
-        let stmt = self.store(&Place::Mem { lv: field, ty: pty }, &v);
-        b.line(&stmt);
-        b.line(&invoke(self, &lv, fb));
-    }
-
-    /// A function called as an operator (standard, conversion or user function).
-    fn function_call(&mut self, b: &mut Body, i: &Instruction, info: &InstrInfo, args: &CallArgs) {
-        let span = i.span;
-        match info.callee.clone() {
-            Some(Callee::Std { name, ty, result }) => {
-                let after = info.cr_after.clone().unwrap_or(result.clone());
-                let mut vals = Vec::new();
-                let mut tys = Vec::new();
-                for binding in info.args.iter().filter(|a| !a.output) {
-                    let Some(v) = self.arg_value(b, info, args, binding, span) else {
-                        return;
-                    };
-                    vals.push(v);
-                    tys.push(binding.ty.clone());
-                }
-                let Some(res) = self.std_call(span, name, &ty, &vals, &tys, &result) else {
-                    return;
-                };
-                let res = convert(&res, &result, &after);
-                if let Some(cr) = self.cr(b, &after, span) {
-                    b.line(&format!("{cr} = {res};"));
-                }
-            }
-            Some(Callee::Conversion { kind, from, to, .. }) => {
-                let Some(binding) = info.args.iter().find(|a| !a.output) else {
-                    return;
-                };
-                let Some(v) = self.arg_value(b, info, args, &binding.clone(), span) else {
-                    return;
-                };
-                let Some(res) = self.conversion(span, kind, &v, &from, &to) else {
-                    return;
-                };
-                let after = info.cr_after.clone().unwrap_or(to.clone());
-                let res = convert(&res, &to, &after);
-                if let Some(cr) = self.cr(b, &after, span) {
-                    b.line(&format!("{cr} = {res};"));
-                }
-            }
-            Some(Callee::UserFunction(id)) => self.user_function_call(b, i, info, id, args),
-            _ => self.unsupported(span, "this function call"),
-        }
-    }
-
-    fn user_function_call(
-        &mut self,
-        b: &mut Body,
-        i: &Instruction,
-        info: &InstrInfo,
-        id: PouId,
-        args: &CallArgs,
-    ) {
-        let span = i.span;
-        let pou = self.model.pou(id).clone();
-        b.line("{");
-        b.indent += 1;
-        let mut call_args = Vec::new();
-        let mut after_call = Vec::new();
-        for v in pou
-            .vars
-            .iter()
-            .filter(|v| matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut))
-        {
-            let binding = info
-                .args
-                .iter()
-                .find(|a| a.param.eq_ignore_ascii_case(&v.name))
-                .cloned();
-            match v.kind {
-                VarKind::Input => {
-                    let val = match &binding {
-                        Some(bd) => self.arg_value(b, info, args, bd, span),
-                        None => Some(self.default_value(&v.ty, v.init.as_ref(), span)),
-                    };
-                    let Some(val) = val else {
-                        b.indent -= 1;
-                        b.line("}");
-                        return;
-                    };
-                    call_args.push(val);
-                }
-                VarKind::Output => {
-                    let t = b.temp();
-                    let Some(decl) = ctypes::declare(self.model, &v.ty, &t) else {
-                        continue;
-                    };
-                    let init = if v.ty.elementary().is_some() {
-                        "0"
-                    } else {
-                        "{0}"
-                    };
-                    b.line(&format!("{decl} = {init};"));
-                    call_args.push(format!("&{t}"));
-                    if let Some(bd) = &binding {
-                        if let ArgSource::Written(k) = bd.source {
-                            if let Some((o, negate)) = Self::written_arg(args, k) {
-                                if let Some(target) = self.operand_place(b.scope, o) {
-                                    let val = if negate {
-                                        negated(&t, &v.ty)
-                                    } else {
-                                        t.clone()
-                                    };
-                                    let val = convert(&val, &v.ty, target.ty());
-                                    after_call.push(self.store(&target, &val));
-                                }
-                            }
-                        }
-                    }
-                }
-                _ => {
-                    let target = binding.as_ref().and_then(|bd| match bd.source {
-                        ArgSource::Written(k) => Self::written_arg(args, k).map(|x| x.0.clone()),
-                        ArgSource::CurrentResult => None,
-                    });
-                    match target.and_then(|o| self.operand_place(b.scope, &o)) {
-                        Some(Place::Mem { lv, .. }) => call_args.push(format!("&{lv}")),
-                        _ => {
-                            self.unsupported(span, "a missing or located IN_OUT argument");
-                            b.indent -= 1;
-                            b.line("}");
-                            return;
-                        }
-                    }
-                }
-            }
-        }
-        let call = format!("{}({})", mangle::function(&pou.name), call_args.join(", "));
-        match (&pou.return_type, info.cr_after.clone()) {
-            (Some(rt), Some(after)) => {
-                if let Some(cr) = self.cr(b, &after, span) {
-                    let v = convert(&call, rt, &after);
-                    b.line(&format!("{cr} = {v};"));
-                }
-            }
-            _ => b.line(&format!("{call};")),
-        }
-        for s in after_call {
-            b.line(&s);
-        }
-        b.indent -= 1;
-        b.line("}");
-    }
-
-    /// The default (initial) value of a parameter not given in a call.
-    pub fn default_value(
-        &mut self,
-        ty: &Type,
-        init: Option<&il_frontend::sema::ConstValue>,
-        span: Span,
-    ) -> String {
-        if let (Some(e), Some(v)) = (ty.elementary(), init) {
-            if let Some(c) = ctypes::const_elementary(self.model, e, v) {
-                return c;
-            }
-        }
-        if let (Type::String { .. }, Some(il_frontend::sema::ConstValue::String { value, .. })) =
-            (ty, init)
-        {
-            return ctypes::string_value(value);
-        }
-        match ty {
-            Type::Elementary(_) | Type::Subrange { .. } | Type::Enum(_) => {
-                let base = ctypes::base(self.model, ty).unwrap_or_default();
-                format!("(({base})0)")
-            }
-            Type::String { wide: false, .. } => ctypes::string_value(""),
-            _ => {
-                self.unsupported(span, "omitting an input of this type in a function call");
-                "0".into()
-            }
-        }
-    }
-
-    /// A standard function on already-evaluated arguments.
-    fn std_call(
-        &mut self,
-        span: Span,
-        name: &str,
-        ty: &Type,
-        vals: &[String],
-        tys: &[Type],
-        result: &Type,
-    ) -> Option<String> {
-        let ty = if ty.is_error() {
-            tys.first().cloned().unwrap_or(Type::Error)
-        } else {
-            ty.clone()
-        };
-        let e = ty.elementary();
-        let need = |n: usize| vals.len() >= n;
-        match name {
-            "ADD" | "MUL" | "SUB" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
-                if !need(2) {
-                    return None;
-                }
-                let mut acc = vals[0].clone();
-                let mut acc_ty = tys[0].clone();
-                for k in 1..vals.len() {
-                    acc = self.std_binary(span, name, &acc, &acc_ty, &vals[k], &tys[k], result)?;
-                    acc_ty = result.clone();
-                }
-                Some(acc)
-            }
-            "GT" | "GE" | "EQ" | "NE" | "LE" | "LT" => {
-                if !need(2) {
-                    return None;
-                }
-                let mut parts = Vec::new();
-                for k in 1..vals.len() {
-                    parts.push(self.std_binary(
-                        span,
-                        name,
-                        &vals[k - 1],
-                        &ty,
-                        &vals[k],
-                        &tys[k],
-                        &Type::BOOL,
-                    )?);
-                }
-                Some(format!("((IEC_BOOL)({}))", parts.join(" & ")))
-            }
-            "NOT" => Some(negated(vals.first()?, &ty)),
-            "MOVE" => vals.first().cloned(),
-            "SEL" => {
-                if !need(3) {
-                    return None;
-                }
-                Some(format!("(({}) ? ({}) : ({}))", vals[0], vals[2], vals[1]))
-            }
-            "MUX" => {
-                if !need(2) {
-                    return None;
-                }
-                let k = &vals[0];
-                let mut expr = vals[1].clone();
-                for (n, v) in vals.iter().enumerate().skip(2).rev() {
-                    expr = format!("(({k}) == {} ? ({v}) : {expr})", n - 1);
-                }
-                // K out of range selects IN0
-                Some(expr)
-            }
-            "MAX" | "MIN" => {
-                let e = e?;
-                let h = ctypes::ordered_helper_type(e);
-                let ct = ctypes::elementary(e);
-                let f = name.to_ascii_lowercase();
-                let mut acc = format!("(({h})({}))", vals.first()?);
-                for v in &vals[1..] {
-                    acc = format!("ladderc_{f}_{h}({acc}, ({h})({v}))");
-                }
-                Some(format!("(({ct}){acc})"))
-            }
-            "LIMIT" => {
-                if !need(3) {
-                    return None;
-                }
-                let Some(e) = e else {
-                    self.unsupported(span, "LIMIT on this type");
-                    return None;
-                };
-                let h = ctypes::ordered_helper_type(e);
-                let ct = ctypes::elementary(e);
-                Some(format!(
-                    "(({ct})ladderc_limit_{h}(({h})({}), ({h})({}), ({h})({})))",
-                    vals[0], vals[1], vals[2]
-                ))
-            }
-            "ABS" => {
-                let e = e?;
-                let v = vals.first()?;
-                Some(match e {
-                    E::Real => format!("((IEC_REAL)fabsf({v}))"),
-                    E::Lreal => format!("((IEC_LREAL)fabs({v}))"),
-                    _ if e.is_signed_integer() => {
-                        let ct = ctypes::elementary(e);
-                        format!("ladderc_abs_{ct}({v})")
-                    }
-                    _ => v.clone(),
-                })
-            }
-            "SQRT" | "LN" | "LOG" | "EXP" | "SIN" | "COS" | "TAN" | "ASIN" | "ACOS" | "ATAN" => {
-                let e = e?;
-                let f = match name {
-                    "LN" => "log",
-                    "LOG" => "log10",
-                    n => &n.to_ascii_lowercase(),
-                };
-                let v = vals.first()?;
-                Some(if e == E::Real {
-                    format!("((IEC_REAL){f}f({v}))")
-                } else {
-                    format!("((IEC_LREAL){f}({v}))")
-                })
-            }
-            "EXPT" => {
-                if !need(2) {
-                    return None;
-                }
-                let ct = ctypes::base(self.model, result)?;
-                Some(format!(
-                    "(({ct})pow((double)({}), (double)({})))",
-                    vals[0], vals[1]
-                ))
-            }
-            "SHL" | "SHR" | "ROL" | "ROR" => {
-                if !need(2) {
-                    return None;
-                }
-                let e = e?;
-                let h = match e {
-                    E::Byte | E::Usint => "IEC_BYTE",
-                    E::Word | E::Uint => "IEC_WORD",
-                    E::Dword | E::Udint => "IEC_DWORD",
-                    E::Lword | E::Ulint => "IEC_LWORD",
-                    _ => {
-                        self.unsupported(span, format!("{name} on this type"));
-                        return None;
-                    }
-                };
-                let ct = ctypes::elementary(e);
-                let f = name.to_ascii_lowercase();
-                Some(format!(
-                    "(({ct})ladderc_{f}_{h}(({h})({}), (int64_t)({})))",
-                    vals[0], vals[1]
-                ))
-            }
-            other => {
-                self.unsupported(span, format!("the standard function {other}"));
-                None
-            }
-        }
-    }
-
-    fn conversion(
-        &mut self,
-        span: Span,
-        kind: ConversionKind,
-        v: &str,
-        from: &Type,
-        to: &Type,
-    ) -> Option<String> {
-        let (f, t) = match (from.elementary(), to.elementary()) {
-            (Some(f), Some(t)) => (f, t),
-            (Some(f), None) if matches!(to, Type::String { wide: false, .. }) => {
-                let ct = ctypes::elementary(f);
-                return Some(format!(
-                    "ladderc_str_of({}, &({ct}){{{v}}})",
-                    ctypes::type_tag(f)
-                ));
-            }
-            (None, Some(t)) if matches!(from, Type::String { wide: false, .. }) => {
-                return Some(match t {
-                    E::Bool => format!("ladderc_str_to_bool({v})"),
-                    E::Real | E::Lreal => {
-                        format!("(({})ladderc_str_to_real({v}))", ctypes::elementary(t))
-                    }
-                    E::Time | E::Ltime => format!("ladderc_str_to_time({v})"),
-                    _ if t.is_signed_integer() => {
-                        convert_elementary(&format!("ladderc_str_to_int({v})"), E::Lint, t)
-                    }
-                    _ if t.is_integer() || t.is_bit() => {
-                        convert_elementary(&format!("ladderc_str_to_uint({v})"), E::Ulint, t)
-                    }
-                    _ => {
-                        self.unsupported(span, "converting a STRING to a date or time of day");
-                        return None;
-                    }
-                });
-            }
-            (None, None) if from.is_string() && to.is_string() && !to.is_error() => {
-                if matches!(
-                    (from, to),
-                    (
-                        Type::String { wide: false, .. },
-                        Type::String { wide: false, .. }
-                    )
-                ) {
-                    return Some(convert(v, from, to));
-                }
-                self.unsupported(span, "WSTRING conversions");
-                return None;
-            }
-            _ => {
-                self.unsupported(span, "this conversion");
-                return None;
-            }
-        };
-        Some(match kind {
-            ConversionKind::Plain => convert_elementary(v, f, t),
-            ConversionKind::Trunc => {
-                if f.is_real() && (t.is_integer() || t.is_bit()) {
-                    real_to_int(&format!("trunc((double)({v}))"), t)
-                } else {
-                    convert_elementary(v, f, t)
-                }
-            }
-            ConversionKind::FromBcd => convert_elementary(
-                &format!("ladderc_bcd_to_uint((uint64_t)({v}))"),
-                E::Ulint,
-                t,
-            ),
-            ConversionKind::ToBcd => {
-                let src = if f.is_signed_integer() {
-                    format!("(({v}) < 0 ? (ladderc_errors |= LADDERC_ERR_RANGE, (uint64_t)0) : (uint64_t)({v}))")
-                } else {
-                    format!("(uint64_t)({v})")
-                };
-                convert_elementary(&format!("ladderc_uint_to_bcd({src})"), E::Ulint, t)
-            }
-        })
-    }
-}
-
-/// The call of an FB instance's body.
-fn invoke(g: &Gen, lv: &str, fb: FbType) -> String {
-    match fb {
-        FbType::Standard(f) => format!("{}_body(&{lv});", ctypes::std_fb(f).0),
-        FbType::User(id) => format!("{}_BODY(&{lv});", mangle::fb(&g.model.pou(id).name)),
     }
 }
 

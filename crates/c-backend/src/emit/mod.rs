@@ -7,6 +7,7 @@
 //! the program is written into one `String` per file, in time linear in the input.
 
 mod body;
+mod calls;
 mod init;
 mod method;
 mod scan;
@@ -512,6 +513,11 @@ impl Gen<'_> {
             b.targets = targets;
             // locals and the result variable
             let mut pre = String::new();
+            for v in &p.vars {
+                if matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut) {
+                    let _ = writeln!(pre, "    (void){};", mangle::var(&v.name));
+                }
+            }
             if let Some(rt) = &p.return_type {
                 let d = ctypes::declare(self.model, rt, &ret_var).unwrap_or_default();
                 let _ = writeln!(pre, "    {d};");

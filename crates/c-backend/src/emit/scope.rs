@@ -72,12 +72,14 @@ impl<'m> Scope<'m> {
     }
 }
 
-/// The C lvalue of POU variable `v` seen from its own body.
+/// The C lvalue of POU variable `v` seen from its own body (VAR_TEMP and FUNCTION variables are C
+/// locals, the rest instance members).
 pub fn own_var_lvalue(kind: PouKind, v: &Variable) -> String {
     let name = mangle::var(&v.name);
     match (kind, v.kind) {
         (PouKind::Function, VarKind::Output | VarKind::InOut) => format!("(*{name})"),
         (PouKind::Function, _) => name,
+        (_, VarKind::Temp) => name,
         (_, VarKind::InOut) => format!("(*self->{name})"),
         _ => format!("self->{name}"),
     }

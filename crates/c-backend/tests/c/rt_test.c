@@ -186,7 +186,9 @@ static void process_image(void) {
     CHECK(w == 0x1234);
     CHECK(ladderc_resolve_address("%ix3.6", &v, err, sizeof err) == 0);
     CHECK(v.offset == 3 && v.bit == 6 && v.type == LADDERC_T_BOOL);
-    CHECK(ladderc_resolve_address("%IX3", &v, err, sizeof err) == -1);
+    CHECK(ladderc_resolve_address("%IX13", &v, err, sizeof err) == 0); /* absolute bit 13 */
+    CHECK(v.offset == 1 && v.bit == 5 && v.type == LADDERC_T_BOOL);
+    CHECK(ladderc_resolve_address("%IX3.", &v, err, sizeof err) == -1);
     CHECK(ladderc_resolve_address("%IX3.8", &v, err, sizeof err) == -1);
     CHECK(ladderc_resolve_address("%QW100000", &v, err, sizeof err) == -1);
     CHECK(ladderc_resolve_address("%ZW1", &v, err, sizeof err) == -1);

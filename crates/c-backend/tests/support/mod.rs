@@ -84,7 +84,7 @@ pub fn strict() -> BuildOptions {
             "-Werror",
             "-pedantic",
             "-g",
-            "-O1",
+            "-O0",
             "-fsanitize=address,undefined",
             "-fno-sanitize-recover=all",
         ]

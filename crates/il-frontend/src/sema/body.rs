@@ -141,7 +141,10 @@ impl Analyzer<'_> {
                     .push((e.from, ty));
             }
         }
-        // Pass 2, reporting.
+        // Pass 2, reporting (about one name per instruction).
+        let n = b.recs.len();
+        b.a.model.names.reserve(n);
+        b.a.model.instrs.reserve(n);
         b.backward = backward;
         b.lits = LitVars::default();
         b.recs.clear();
@@ -668,16 +671,8 @@ impl Body<'_, '_> {
             }
             Op::Not => {
                 let cr = self.use_cr(st, span, "NOT");
-                if let Some(o) = operand {
-                    self.a
-                        .error(
-                            code::E1020,
-                            o.span(),
-                            "NOT takes no operand: it inverts the current result",
-                        )
-                        .label("unexpected operand")
-                        .hint("write LDN x (or LD x, NOT) to load an inverted value");
-                }
+                // `NOT x` is reported by the parser (E0013); the operand is ignored here.
+                let _ = operand;
                 self.check_class_bit(&cr, span, "NOT");
                 rec.callee = Some(Callee::Std {
                     name: "NOT",

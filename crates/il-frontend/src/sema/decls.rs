@@ -969,6 +969,9 @@ impl Analyzer<'_> {
                     if let Some(c) = self.enum_index_quiet(*id, &v.base.name) {
                         return Some(c);
                     }
+                    if !consts.contains_key(&v.base.key()) {
+                        return self.enum_index(*id, &v.base);
+                    }
                 }
                 match consts.get(&v.base.key()) {
                     Some((cty, val)) if super::typing::assignable(cty, ty) => Some(val.clone()),

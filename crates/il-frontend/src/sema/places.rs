@@ -13,13 +13,17 @@ use crate::ast::{self, Accessor, Area, Operand, PouKind, VarKind, VarRef};
 use crate::Span;
 use diagnostics::{code, Code};
 
-/// Why a variable cannot be written (code, message, the declaration to point at).
-#[derive(Debug, Clone)]
-pub(super) struct ReadOnly {
-    code: Code,
-    message: String,
-    decl: Option<(Span, String)>,
-    hint: &'static str,
+/// Why a variable cannot be written (messages are built only when a write is reported).
+#[derive(Debug, Clone, Copy)]
+pub(super) enum ReadOnly {
+    /// A CONSTANT variable (declared at `decl`).
+    Constant { decl: Span },
+    /// A VAR_INPUT of the POU itself (or EN: no declaration).
+    PouInput { decl: Option<Span> },
+    /// An output of an FB instance: the field access `accessors[at]`.
+    FbOutput { at: usize },
+    /// An enumerated value.
+    EnumValue,
 }
 
 const HINT_CONST: &str = "write another variable, or drop CONSTANT from its declaration";
@@ -125,14 +129,7 @@ impl Body<'_, '_> {
                     self.result_written = true;
                 }
                 if let Some(ro) = p.read_only {
-                    let mut d = self
-                        .a
-                        .error(ro.code, v.span, ro.message)
-                        .label(format!("{what} writes it here"));
-                    if let Some((span, m)) = ro.decl {
-                        d = d.also(span, m);
-                    }
-                    drop(d.hint(ro.hint));
+                    self.report_read_only(v, ro, what);
                 }
                 p.ty
             }
@@ -161,6 +158,54 @@ impl Body<'_, '_> {
                 Type::Error
             }
         }
+    }
+
+    fn report_read_only(&mut self, v: &VarRef, ro: ReadOnly, what: &str) {
+        let name = &v.base.name;
+        let pou = self.pou().name.clone();
+        let (code, message, decl, hint): (Code, String, Option<(Span, &str)>, &str) = match ro {
+            ReadOnly::Constant { decl } => (
+                code::E1014,
+                format!("`{name}` is a constant"),
+                Some((decl, "declared CONSTANT here")),
+                HINT_CONST,
+            ),
+            ReadOnly::PouInput { decl } => (
+                code::E1015,
+                format!("`{name}` is an input of `{pou}`, read-only inside it"),
+                decl.map(|d| (d, "declared VAR_INPUT here")),
+                HINT_INPUT,
+            ),
+            ReadOnly::FbOutput { at } => {
+                let param = match &v.accessors[at] {
+                    Accessor::Field(f) => f.name.clone(),
+                    Accessor::Index(_) => String::new(),
+                };
+                (
+                    code::E1015,
+                    format!(
+                        "`{param}` is an output of FB instance `{}`",
+                        path_text(v, at)
+                    ),
+                    None,
+                    HINT_FB_OUTPUT,
+                )
+            }
+            ReadOnly::EnumValue => (
+                code::E1026,
+                format!("`{name}` is an enumerated value, not a variable"),
+                None,
+                HINT_ENUM,
+            ),
+        };
+        let mut d = self
+            .a
+            .error(code, v.span, message)
+            .label(format!("{what} writes it here"));
+        if let Some((span, m)) = decl {
+            d = d.also(span, m);
+        }
+        drop(d.hint(hint));
     }
 
     /// Stores (or passes) a value of type `from` into `to`; binds untyped literals.
@@ -240,21 +285,20 @@ impl Body<'_, '_> {
         let Some(mut place) = self.lookup_base(&v.base, v.accessors.is_empty()) else {
             return Place::error();
         };
-        let mut path = v.base.name.clone();
-        for acc in &v.accessors {
+        for (at, acc) in v.accessors.iter().enumerate() {
             if place.ty.is_error() {
                 return Place::error();
             }
             match acc {
                 Accessor::Field(f) => {
-                    place = match self.field(&place, &path, f) {
+                    place = match self.field(&place, v, at, f) {
                         Some(p) => p,
                         None => return Place::error(),
                     };
-                    path = format!("{path}.{}", f.name);
                 }
                 Accessor::Index(ixs) => {
                     let Type::Array { dims, element } = &place.ty else {
+                        let path = path_text(v, at);
                         let t = self.a.type_name(&place.ty);
                         self.a
                             .error(
@@ -266,15 +310,15 @@ impl Body<'_, '_> {
                             .hint("only arrays take [index]");
                         return Place::error();
                     };
-                    let (dims, element) = (dims.clone(), (**element).clone());
-                    if dims.len() != ixs.len() {
+                    let (ndims, element) = (dims.len(), (**element).clone());
+                    if ndims != ixs.len() {
+                        let path = path_text(v, at);
                         self.a
                             .error(
                                 code::E1021,
                                 v.span,
                                 format!(
-                                    "`{path}` has {} dimension(s) but {} index(es) are given",
-                                    dims.len(),
+                                    "`{path}` has {ndims} dimension(s) but {} index(es) are given",
                                     ixs.len()
                                 ),
                             )
@@ -317,7 +361,6 @@ impl Body<'_, '_> {
                         ty: element,
                         read_only: place.read_only,
                     };
-                    path = format!("{path}[..]");
                 }
             }
         }
@@ -326,81 +369,50 @@ impl Body<'_, '_> {
 
     /// The variable a name refers to in this POU.
     fn lookup_base(&mut self, base: &ast::Ident, plain: bool) -> Option<Place> {
-        let (pou_name, kind) = {
-            let p = self.pou();
-            (p.name.clone(), p.kind)
-        };
-        if let Some(index) = self.pou().vars.iter().position(|v| v.is(&base.name)) {
-            self.a.model.names.insert(base.span, NameRef::Var(index));
-            let var = self.pou().vars[index].clone();
-            let read_only = if var.constant {
-                Some(ReadOnly {
-                    code: code::E1014,
-                    message: format!("`{}` is a constant", var.name),
-                    decl: Some((var.span, "declared CONSTANT here".into())),
-                    hint: HINT_CONST,
-                })
-            } else if var.kind == VarKind::Input {
-                Some(ReadOnly {
-                    code: code::E1015,
-                    message: format!(
-                        "`{}` is an input of `{pou_name}`, read-only inside it",
-                        var.name
-                    ),
-                    decl: Some((var.span, "declared VAR_INPUT here".into())),
-                    hint: HINT_INPUT,
-                })
-            } else {
-                None
-            };
-            return Some(Place {
-                ty: var.ty,
-                read_only,
+        let kind = self.pou().kind;
+        let found = self
+            .pou()
+            .vars
+            .iter()
+            .enumerate()
+            .find(|(_, v)| v.is(&base.name))
+            .map(|(index, var)| {
+                let read_only = if var.constant {
+                    Some(ReadOnly::Constant { decl: var.span })
+                } else if var.kind == VarKind::Input {
+                    Some(ReadOnly::PouInput {
+                        decl: Some(var.span),
+                    })
+                } else {
+                    None
+                };
+                (index, var.ty.clone(), read_only)
             });
+        if let Some((index, ty, read_only)) = found {
+            self.note_name(base.span, NameRef::Var(index));
+            return Some(Place { ty, read_only });
         }
-        if kind == PouKind::Function && base.is(&pou_name) {
-            self.a
-                .model
-                .names
-                .insert(base.span, NameRef::FunctionResult);
+        if kind == PouKind::Function && base.is(&self.pou().name) {
+            self.note_name(base.span, NameRef::FunctionResult);
             return Some(Place {
                 ty: self.pou().return_type.clone().unwrap_or(Type::Error),
                 read_only: None,
             });
         }
         if kind != PouKind::Program && (base.is("EN") || base.is("ENO")) {
-            let r = if base.is("EN") {
-                NameRef::En
-            } else {
-                NameRef::Eno
-            };
-            self.a.model.names.insert(base.span, r);
-            let read_only = base.is("EN").then(|| ReadOnly {
-                code: code::E1015,
-                message: format!("`EN` is an input of `{pou_name}`, read-only inside it"),
-                decl: None,
-                hint: HINT_INPUT,
-            });
+            let en = base.is("EN");
+            self.note_name(base.span, if en { NameRef::En } else { NameRef::Eno });
             return Some(Place {
                 ty: Type::BOOL,
-                read_only,
+                read_only: en.then_some(ReadOnly::PouInput { decl: None }),
             });
         }
         if let Some(&i) = self.a.free_globals.get(&base.key()) {
-            self.a
-                .model
-                .names
-                .insert(base.span, NameRef::Global(GlobalRef::Free(i)));
-            let g = self.a.model.globals[i].clone();
-            let read_only = g.constant.then(|| ReadOnly {
-                code: code::E1014,
-                message: format!("`{}` is a constant", g.name),
-                decl: Some((g.span, "declared CONSTANT here".into())),
-                hint: HINT_CONST,
-            });
+            self.note_name(base.span, NameRef::Global(GlobalRef::Free(i)));
+            let g = &self.a.model.globals[i];
             return Some(Place {
-                ty: g.ty,
-                read_only,
+                ty: g.ty.clone(),
+                read_only: g.constant.then_some(ReadOnly::Constant { decl: g.span }),
             });
         }
         if plain {
@@ -424,22 +436,16 @@ impl Body<'_, '_> {
                         ));
                     return None;
                 }
-                self.a.model.names.insert(
+                self.note_name(
                     base.span,
                     NameRef::EnumValue {
                         ty: found[0].0,
                         index: found[0].1,
                     },
                 );
-                let read_only = Some(ReadOnly {
-                    code: code::E1026,
-                    message: format!("`{}` is an enumerated value, not a variable", base.name),
-                    decl: None,
-                    hint: HINT_ENUM,
-                });
                 return Some(Place {
                     ty: Type::Enum(found[0].0),
-                    read_only,
+                    read_only: Some(ReadOnly::EnumValue),
                 });
             }
         }
@@ -453,6 +459,13 @@ impl Body<'_, '_> {
             .label("not declared in this POU")
             .hint(hint);
         None
+    }
+
+    /// Records what a name refers to (in the reporting pass only).
+    fn note_name(&mut self, span: Span, r: NameRef) {
+        if !self.a.silent {
+            self.a.model.names.insert(span, r);
+        }
     }
 
     /// A hint naming a declared variable with a similar spelling, or how to declare.
@@ -475,7 +488,7 @@ impl Body<'_, '_> {
             .iter()
             .map(|v| v.name.clone())
             .chain(self.a.model.globals.iter().map(|g| g.name.clone()))
-            .filter(|n| edit_distance(&n.to_ascii_uppercase(), &up) <= 2.max(up.len() / 4))
+            .filter(|n| edit_distance(&n.to_ascii_uppercase(), &up) <= (up.len() / 3).clamp(1, 2))
             .min_by_key(|n| edit_distance(&n.to_ascii_uppercase(), &up));
         match best {
             Some(b) => format!("did you mean `{b}`? otherwise declare `{name}` in a VAR block"),
@@ -484,7 +497,7 @@ impl Body<'_, '_> {
     }
 
     /// `.field` of a structure or FB instance.
-    fn field(&mut self, place: &Place, path: &str, f: &ast::Ident) -> Option<Place> {
+    fn field(&mut self, place: &Place, v: &VarRef, at: usize, f: &ast::Ident) -> Option<Place> {
         match &place.ty {
             Type::Struct(id) => {
                 let UserTypeDef::Struct { fields } = &self.a.model.types[id.0 as usize].def else {
@@ -493,7 +506,7 @@ impl Body<'_, '_> {
                 if let Some(fv) = fields.iter().find(|x| x.is(&f.name)) {
                     return Some(Place {
                         ty: fv.ty.clone(),
-                        read_only: place.read_only.clone(),
+                        read_only: place.read_only,
                     });
                 }
                 let t = self.a.model.types[id.0 as usize].name.clone();
@@ -512,15 +525,10 @@ impl Body<'_, '_> {
                 let params = fb_param_list(&self.a.model, *fb);
                 let tname = self.a.type_name(&place.ty);
                 match params.iter().find(|p| f.is(&p.0)) {
-                    Some((name, dir, ty)) => {
+                    Some((_, dir, ty)) => {
                         let read_only = match dir {
-                            ParamDir::Output => Some(ReadOnly {
-                                code: code::E1015,
-                                message: format!("`{name}` is an output of FB instance `{path}`"),
-                                decl: None,
-                                hint: HINT_FB_OUTPUT,
-                            }),
-                            ParamDir::Input | ParamDir::InOut => place.read_only.clone(),
+                            ParamDir::Output => Some(ReadOnly::FbOutput { at }),
+                            ParamDir::Input | ParamDir::InOut => place.read_only,
                             ParamDir::Internal => {
                                 self.a
                                     .error(code::E1021, f.span, format!("`{}` is internal to {tname}", f.name))
@@ -558,7 +566,7 @@ impl Body<'_, '_> {
                     .error(
                         code::E1021,
                         f.span,
-                        format!("`{path}` is {t}, which has no fields"),
+                        format!("`{}` is {t}, which has no fields", path_text(v, at)),
                     )
                     .label("field access here")
                     .hint("fields belong to structures and FB instances");
@@ -608,6 +616,21 @@ pub(super) fn fb_param_list(model: &Model, fb: FbType) -> Vec<(String, ParamDir,
     }
 }
 
+/// The text of `v` up to (not including) accessor `upto`: `s.a[..]` (for messages).
+fn path_text(v: &VarRef, upto: usize) -> String {
+    let mut p = v.base.name.clone();
+    for acc in v.accessors.iter().take(upto) {
+        match acc {
+            Accessor::Field(f) => {
+                p.push('.');
+                p.push_str(&f.name);
+            }
+            Accessor::Index(_) => p.push_str("[..]"),
+        }
+    }
+    p
+}
+
 /// A hint for a type mismatch: the conversion function to use where there is one.
 pub(super) fn conversion_hint(from: &str, to: &str) -> String {
     let plain = |s: &str| s.chars().all(|c| c.is_ascii_uppercase() || c == '_');
@@ -618,17 +641,28 @@ pub(super) fn conversion_hint(from: &str, to: &str) -> String {
     }
 }
 
-/// Levenshtein distance (for "did you mean").
+/// Edit distance with adjacent transpositions (optimal string alignment), for "did you mean".
 fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
     let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let sub = prev[j] + usize::from(ca != *cb);
-            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
-        }
-        prev = cur;
+    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
     }
-    prev[b.len()]
+    for (j, cell) in d[0].iter_mut().enumerate() {
+        *cell = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            let mut v = (d[i - 1][j] + 1)
+                .min(d[i][j - 1] + 1)
+                .min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                v = v.min(d[i - 2][j - 2] + 1);
+            }
+            d[i][j] = v;
+        }
+    }
+    d[a.len()][b.len()]
 }
