@@ -819,6 +819,25 @@ typedef struct MC_GroupStop_C {
 } MC_GroupStop_C;
 
 /**
+ * C view of `McGroupHome` (MC_GroupHome).
+ */
+typedef struct MC_GroupHome_C {
+  bool Execute;
+  double Position[16];
+  uint8_t BufferMode;
+  bool Done;
+  bool Busy;
+  bool Active;
+  bool CommandAborted;
+  bool Error;
+  uint16_t ErrorID;
+  /**
+   * Private state: zero-initialise, never write.
+   */
+  uint64_t _internal[2];
+} MC_GroupHome_C;
+
+/**
  * C view of `McGroupHalt` (MC_GroupHalt).
  */
 typedef struct MC_GroupHalt_C {
@@ -1308,6 +1327,13 @@ void mc_group_reset(struct McEngine *engine, uint32_t group, struct MC_GroupRese
  * See the module contract: pointers are NULL or valid.
  */
 void mc_group_stop(struct McEngine *engine, uint32_t group, struct MC_GroupStop_C *fb);
+
+/**
+ * Calls MC_GroupHome once (one PLC scan).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+void mc_group_home(struct McEngine *engine, uint32_t group, struct MC_GroupHome_C *fb);
 
 /**
  * Calls MC_GroupHalt once (one PLC scan).

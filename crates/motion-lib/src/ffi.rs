@@ -1912,6 +1912,81 @@ pub unsafe extern "C" fn mc_group_stop(engine: *mut McEngine, group: u32, fb: *m
     c._internal = pack(b.prev_execute, b.cmd);
 }
 
+/// C view of `McGroupHome` (MC_GroupHome).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MC_GroupHome_C {
+    pub Execute: bool,
+    pub Position: [f64; 16],
+    pub BufferMode: u8,
+    pub Done: bool,
+    pub Busy: bool,
+    pub Active: bool,
+    pub CommandAborted: bool,
+    pub Error: bool,
+    pub ErrorID: u16,
+    /// Private state: zero-initialise, never write.
+    pub _internal: [u64; 2],
+}
+
+/// Calls MC_GroupHome once (one PLC scan).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_group_home(engine: *mut McEngine, group: u32, fb: *mut MC_GroupHome_C) {
+    let Some(e) = (unsafe { eng(engine) }) else {
+        return;
+    };
+    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
+    let Some(c) = (unsafe { fb.as_mut() }) else {
+        return;
+    };
+    let mut b = McGroupHome::default();
+    let mut bad: Option<ErrorId> = None;
+    b.execute = c.Execute;
+    b.position = c.Position;
+    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        Default::default()
+    });
+    b.done = c.Done;
+    b.busy = c.Busy;
+    b.active = c.Active;
+    b.command_aborted = c.CommandAborted;
+    b.error = c.Error;
+    b.error_id = err(c.ErrorID);
+    let (prev, cmd) = unpack(c._internal);
+    b.core.prev_execute = prev;
+    b.core.cmd = cmd;
+    b.core.done = c.Done;
+    b.core.busy = c.Busy;
+    b.core.active = c.Active;
+    b.core.command_aborted = c.CommandAborted;
+    b.core.error = c.Error;
+    b.core.error_id = err(c.ErrorID);
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if c.Execute && !b.core.prev_execute && !b.core.busy {
+            c.Done = false;
+            c.Active = false;
+            c.CommandAborted = false;
+            c.Busy = false;
+            c.Error = true;
+            c.ErrorID = id.code();
+            c._internal = pack(true, b.core.cmd);
+            return;
+        }
+    }
+    b.call(e, group as usize);
+    c.Done = b.done;
+    c.Busy = b.busy;
+    c.Active = b.active;
+    c.CommandAborted = b.command_aborted;
+    c.Error = b.error;
+    c.ErrorID = b.error_id.code();
+    c._internal = pack(b.core.prev_execute, b.core.cmd);
+}
+
 /// C view of `McGroupHalt` (MC_GroupHalt).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]

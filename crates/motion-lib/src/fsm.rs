@@ -104,6 +104,8 @@ pub enum GroupCmd {
     Stop,
     /// MC_GroupReset.
     Reset,
+    /// MC_GroupHome: GroupStandby -> GroupHoming.
+    Home,
 }
 
 /// Is `cmd` legal in `state`? Returns the resulting state.
@@ -129,6 +131,12 @@ pub fn check_group(state: GroupState, cmd: GroupCmd) -> Result<GroupState, Error
         }
         (GroupCmd::Stop, GroupDisabled) => Err(ErrorId::GroupDisabled),
         (GroupCmd::Stop, GroupErrorStop) => Err(ErrorId::GroupErrorStop),
+        (GroupCmd::Home, GroupStandby) => Ok(GroupHoming),
+        (GroupCmd::Home, GroupDisabled) => Err(ErrorId::GroupDisabled),
+        (GroupCmd::Home, GroupErrorStop) => Err(ErrorId::GroupErrorStop),
+        (GroupCmd::Home, GroupStopping) => Err(ErrorId::GroupStopping),
+        (GroupCmd::Home, GroupHoming) => Err(ErrorId::GroupHoming),
+        (GroupCmd::Home, GroupMoving) => Err(ErrorId::GroupMoving),
         (GroupCmd::Reset, GroupErrorStop) => Ok(GroupStandby),
         (GroupCmd::Reset, _) => Ok(state),
     }

@@ -55,6 +55,7 @@ pub struct PathInputs {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum GKind {
+    Home,
     Path,
     Direct,
     Halt,
@@ -76,6 +77,8 @@ pub(crate) struct GPending {
     prefix: Option<(Geometry, f64)>,
     /// Path speed at the start when the predecessor ended at a blending junction.
     start_v: Option<f64>,
+    /// The corner this move starts from as commanded (before any corner blend).
+    start_corner: Vecn,
 }
 
 #[derive(Clone, Debug)]
@@ -308,15 +311,18 @@ impl Engine {
 
     fn path_lims(&self, g: usize, unit: &Vecn, inp: &PathInputs) -> Result<Limits, ErrorId> {
         let gr = &self.groups[g];
-        let mut us = Vec::with_capacity(MAX_AXES);
-        let mut ls = Vec::with_capacity(MAX_AXES);
+        // Fixed arrays: this runs inside the cycle on an error brake, so no allocation.
+        let mut us = [0.0; MAX_AXES];
+        let mut ls = [Limits::default(); MAX_AXES];
+        let mut k = 0;
         for (i, a) in gr.axes.iter().enumerate() {
             if let Some(a) = a {
-                us.push(unit[i]);
-                ls.push(self.axes[*a as usize].cfg.limits);
+                us[k] = unit[i];
+                ls[k] = self.axes[*a as usize].cfg.limits;
+                k += 1;
             }
         }
-        let mut l = path_limits(&us, &ls).map_err(|_| ErrorId::PlanningFailed)?;
+        let mut l = path_limits(&us[..k], &ls[..k]).map_err(|_| ErrorId::PlanningFailed)?;
         let pos = |x: f64| x.is_finite() && x > 0.0;
         if !pos(inp.velocity) {
             return Err(ErrorId::InvalidVelocity);
@@ -344,6 +350,37 @@ impl Engine {
             l.jmax = 0.0;
         }
         Ok(l)
+    }
+
+    /// Arc path limits: the tangent turns, so every axis's limits bound the path, and
+    /// the axes' acceleration is shared between the path (tangential) and the turn
+    /// (normal, v^2 * curvature): each gets half.
+    fn arc_limits(&self, g: usize, geo: &Geometry, lim: &mut Limits) {
+        let n = self.groups[g].n();
+        let mut vmax = f64::INFINITY;
+        let mut amin = f64::INFINITY;
+        let mut jmin = f64::INFINITY;
+        for a in self.groups[g].axes.iter().flatten() {
+            let l = self.axes[*a as usize].cfg.limits;
+            vmax = vmax.min(l.vmax);
+            amin = amin.min(l.amax).min(l.dmax);
+            if l.jmax > 0.0 {
+                jmin = jmin.min(l.jmax);
+            }
+        }
+        let half = amin.min(lim.amax).min(lim.dmax) / 2.0;
+        let k = geo.max_curvature(n);
+        let v_turn = if k > 0.0 {
+            (half / k).sqrt()
+        } else {
+            f64::INFINITY
+        };
+        lim.vmax = lim.vmax.min(vmax).min(v_turn);
+        lim.amax = lim.amax.min(half);
+        lim.dmax = lim.dmax.min(half);
+        if jmin.is_finite() && lim.jmax > 0.0 {
+            lim.jmax = lim.jmax.min(jmin / 2.0);
+        }
     }
 
     /// Gives a motion command to a group. Returns its handle or the ErrorID.
@@ -466,6 +503,7 @@ impl Engine {
             end_v: 0.0,
             prefix: None,
             start_v: None,
+            start_corner: from,
         };
         if buffer == BufferMode::Aborting || idle {
             self.group_abort_all(g, CmdStatus::Aborted);
@@ -517,38 +555,27 @@ impl Engine {
         let n = self.groups[g].n();
         let gr = &self.groups[g];
         // Predecessor: the queue's back, else the active move.
-        let (pred_from, pred_target, pred_speed, pred_kind, pred_is_active) = match gr.queue.back()
+        // Predecessor: the queue's back (its geometry from its original start corner: its
+        // own predecessor may since have been shortened by a corner blend), else the
+        // active move.
+        let (pred_target, pred_speed, pred_kind, pred_is_active, pred_geom) = match gr.queue.back()
         {
-            Some(b) => {
-                let from = if gr.queue.len() >= 2 {
-                    gr.queue
-                        .iter()
-                        .nth(gr.queue.len() - 2)
-                        .map(|p| p.target)
-                        .unwrap_or(b.target)
-                } else {
-                    gr.active.as_ref().map_or(b.target, |a| a.target)
-                };
-                (from, b.target, b.speed, b.kind, false)
-            }
+            Some(b) => (
+                b.target,
+                b.speed,
+                b.kind,
+                false,
+                self.geometry_for(g, &b.start_corner, &b.target, &b.motion),
+            ),
             None => match &gr.active {
-                Some(a) => {
-                    let mut st = ZERO;
-                    if let Geometry::Line { start, .. } = a.geom {
-                        st = start;
-                    }
-                    (st, a.target, a.speed, a.kind, true)
-                }
+                Some(a) => (a.target, a.speed, a.kind, true, a.geom),
                 None => return,
             },
         };
         if pred_kind != GKind::Path {
             return;
         }
-        let pred_geom = match (&gr.active, pred_is_active) {
-            (Some(a), true) => a.geom,
-            _ => Geometry::line(&pred_from, &pred_target),
-        };
+        let gr = &self.groups[g];
         let next_geom = self.geometry_for(g, &pred_target, &next.target, &next.motion);
         let (_, u1) = pred_geom.tangents(n);
         let (u2, _) = next_geom.tangents(n);
@@ -678,7 +705,7 @@ impl Engine {
             .map(|a| (Self::path_state(a), a.lim));
         let mut tail = None;
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
-            GKind::Halt | GKind::Stop | GKind::Brake => {
+            GKind::Home | GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
                     (Geometry::line(&now, &now), State::default()),
                     Limits::default(),
@@ -704,7 +731,10 @@ impl Engine {
                 };
                 let geo = self.geometry_for(g, &start, &p.target, &p.motion);
                 let (u, _) = geo.tangents(n);
-                let lim = self.path_lims(g, &u, &p.inputs)?;
+                let mut lim = self.path_lims(g, &u, &p.inputs)?;
+                if let Geometry::Arc { .. } = geo {
+                    self.arc_limits(g, &geo, &mut lim);
+                }
                 let (v0, a0, pe) = match &p.prefix {
                     Some((b, v)) => (*v, 0.0, if *v > 0.0 { b.len() / v } else { 0.0 }),
                     None if p.start_v.is_some() => (p.start_v.unwrap_or(0.0), 0.0, 0.0),
@@ -844,6 +874,7 @@ impl Engine {
                 end_v: 0.0,
                 prefix: None,
                 start_v: None,
+                start_corner: ZERO,
             };
             if self.group_activate(g, p, 0.0).is_err() {
                 self.finish_group(g);
@@ -854,6 +885,91 @@ impl Engine {
             self.cmds.set(id, CmdStatus::Done);
             self.cmds.release(id);
         }
+    }
+
+    /// MC_GroupHome: homes every axis of the group (simulated drives: on the spot, the
+    /// set positions become `position` by identity); GroupStandby -> GroupHoming ->
+    /// GroupStandby when every drive reports its homing done.
+    pub fn group_home(&mut self, g: usize, position: Vecn) -> Result<CmdId, ErrorId> {
+        let gr = self.grp(g)?;
+        let st = check_group(gr.state, GroupCmd::Home)?;
+        let n = gr.n();
+        if position[..n].iter().any(|x| !x.is_finite()) {
+            return Err(ErrorId::InvalidPosition);
+        }
+        let now = self.raw_now(g);
+        let id = self.cmds.alloc(CmdStatus::Active);
+        let members = self.groups[g].axes;
+        for a in members.iter().flatten() {
+            let a = *a as usize;
+            let ax = &mut self.axes[a];
+            ax.active = Active {
+                kind: Kind::Group,
+                ..Active::idle(ax.set)
+            };
+            ax.state = AxisState::Homing;
+            if let Some(d) = self.drives[a].as_mut() {
+                d.start_homing();
+            }
+        }
+        let gr = &mut self.groups[g];
+        gr.active = Some(GActive {
+            kind: GKind::Home,
+            id: Some(id),
+            geom: Geometry::line(&now, &now),
+            prof: standing(0.0),
+            t: 0.0,
+            prefix: None,
+            prefix_end: 0.0,
+            target: position,
+            speed: 0.0,
+            lim: Limits::default(),
+            end_v: 0.0,
+            direct: None,
+            tail: None,
+        });
+        gr.state = st;
+        Ok(id)
+    }
+
+    /// One cycle of a group homing: poll the drives.
+    fn step_group_home(&mut self, g: usize, a: GActive) {
+        let members = self.groups[g].axes;
+        let mut all = true;
+        let mut failed = None;
+        for ax in members.iter().flatten() {
+            let ax = *ax as usize;
+            let st = match self.drives[ax].as_mut() {
+                Some(d) => d.homing_status(),
+                None => crate::axis::HomingStatus::Done,
+            };
+            match st {
+                crate::axis::HomingStatus::Busy => all = false,
+                crate::axis::HomingStatus::Failed => failed = Some(ax),
+                crate::axis::HomingStatus::Done => {}
+            }
+        }
+        let id = a.id;
+        let target = a.target;
+        self.groups[g].active = Some(a);
+        if let Some(ax) = failed {
+            let _ = self.raise_axis_error(ax, ErrorId::HomingFailed);
+            return;
+        }
+        if !all {
+            return;
+        }
+        for (i, ax) in members.iter().enumerate() {
+            if let Some(ax) = ax {
+                let ax = &mut self.axes[*ax as usize];
+                ax.origin = target[i] - ax.set.p;
+            }
+        }
+        if let Some(id) = id {
+            self.cmds.set(id, CmdStatus::Done);
+        }
+        self.finish_group(g);
+        self.groups[g].state = GroupState::GroupStandby;
     }
 
     /// MC_GroupStop's Execute fell after Done: GroupStopping -> GroupStandby.
@@ -877,7 +993,7 @@ impl Engine {
             ax.set.v = 0.0;
             ax.set.a = 0.0;
             ax.active = Active::idle(ax.set);
-            if ax.state == AxisState::SynchronizedMotion {
+            if matches!(ax.state, AxisState::SynchronizedMotion | AxisState::Homing) {
                 ax.state = AxisState::Standstill;
             }
         }
@@ -889,6 +1005,10 @@ impl Engine {
             let Some(mut a) = self.groups[g].active.take() else {
                 continue;
             };
+            if a.kind == GKind::Home {
+                self.step_group_home(g, a);
+                continue;
+            }
             let n = self.groups[g].n();
             a.t += dt;
             let (mut pos, mut d1, mut d2) = self.groups[g].scratch;

@@ -171,6 +171,36 @@ motion_block!(
     }
 );
 
+/// MC_GroupHome (Position by identity: the set positions after homing on the spot).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct McGroupHome {
+    pub execute: bool,
+    pub position: Vecn,
+    pub buffer_mode: BufferMode,
+    pub done: bool,
+    pub busy: bool,
+    pub active: bool,
+    pub command_aborted: bool,
+    pub error: bool,
+    pub error_id: ErrorId,
+    #[doc(hidden)]
+    pub core: ExecCore,
+}
+
+impl McGroupHome {
+    pub fn call(&mut self, eng: &mut Engine, group: usize) {
+        let pos = self.position;
+        self.core
+            .cycle(eng, self.execute, |e| e.group_home(group, pos), None);
+        self.done = self.core.done;
+        self.busy = self.core.busy;
+        self.active = self.core.active;
+        self.command_aborted = self.core.command_aborted;
+        self.error = self.core.error;
+        self.error_id = self.core.error_id;
+    }
+}
+
 /// MC_GroupHalt.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct McGroupHalt {

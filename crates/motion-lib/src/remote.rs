@@ -80,6 +80,7 @@ any_block! {
     GroupDisable(McGroupDisable) => |b, e, t| if let Target::Group(g) = t { b.call(e, g) };
     GroupReset(McGroupReset) => |b, e, t| if let Target::Group(g) = t { b.call(e, g) };
     GroupStop(McGroupStop) => |b, e, t| if let Target::Group(g) = t { b.call(e, g) };
+    GroupHome(McGroupHome) => |b, e, t| if let Target::Group(g) = t { b.call(e, g) };
     GroupHalt(McGroupHalt) => |b, e, t| if let Target::Group(g) = t { b.call(e, g) };
     MoveLinearAbsolute(McMoveLinearAbsolute) => |b, e, t| if let Target::Group(g) = t { b.call(e, g) };
     MoveLinearRelative(McMoveLinearRelative) => |b, e, t| if let Target::Group(g) = t { b.call(e, g) };

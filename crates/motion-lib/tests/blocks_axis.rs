@@ -401,3 +401,46 @@ fn bad_configurations_are_refused_with_their_codes() {
     );
     assert_eq!(e.axis_count(), 0);
 }
+
+#[test]
+fn engine_is_deterministic() {
+    let run = || {
+        let (mut e, a) = powered(AxisConfig::default());
+        let mut m1 = McMoveAbsolute {
+            execute: true,
+            position: 30.0,
+            velocity: 80.0,
+            acceleration: 900.0,
+            deceleration: 700.0,
+            jerk: 9000.0,
+            ..Default::default()
+        };
+        let mut m2 = McMoveAbsolute {
+            buffer_mode: BufferMode::BlendingHigh,
+            position: 60.0,
+            ..m1
+        };
+        let mut trace = Vec::new();
+        for k in 0..3000 {
+            m1.call(&mut e, a);
+            m2.call(&mut e, a);
+            if k == 700 {
+                let mut v = McMoveVelocity {
+                    execute: true,
+                    velocity: 10.0,
+                    acceleration: 100.0,
+                    deceleration: 100.0,
+                    ..Default::default()
+                };
+                v.call(&mut e, a);
+            }
+            e.step();
+            trace.push((
+                e.set_position_of(a).unwrap().to_bits(),
+                e.set_velocity_of(a).unwrap().to_bits(),
+            ));
+        }
+        trace
+    };
+    assert_eq!(run(), run());
+}

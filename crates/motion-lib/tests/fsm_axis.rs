@@ -393,6 +393,16 @@ fn state_tables_reject_each_illegal_command() {
     );
     assert_eq!(check_group(GroupMoving, GroupCmd::Stop), Ok(GroupStopping));
     assert_eq!(check_group(GroupStandby, GroupCmd::Motion), Ok(GroupMoving));
+    assert_eq!(check_group(GroupStandby, GroupCmd::Home), Ok(GroupHoming));
+    assert_eq!(check_group(GroupHoming, GroupCmd::Stop), Ok(GroupStopping));
+    assert_eq!(
+        check_group(GroupHoming, GroupCmd::Motion),
+        Err(ErrorId::GroupHoming)
+    );
+    assert_eq!(
+        check_group(GroupDisabled, GroupCmd::Home),
+        Err(ErrorId::GroupDisabled)
+    );
 }
 
 #[test]
@@ -647,4 +657,58 @@ fn cam_follows_table() {
     };
     out.call_cam_out(&mut e, slave);
     assert!(out.done);
+}
+
+#[test]
+fn command_aborted_after_falling_execute_shows_one_cycle() {
+    let (mut e, a) = engine();
+    McPower {
+        enable: true,
+        ..Default::default()
+    }
+    .call(&mut e, a);
+    let mut m1 = mv(100.0);
+    m1.call(&mut e, a);
+    m1.execute = false;
+    e.step();
+    m1.call(&mut e, a);
+    assert!(
+        m1.busy && m1.active,
+        "a falling Execute does not stop the motion"
+    );
+    // A second block takes over: m1 shows CommandAborted for exactly one call.
+    let mut m2 = mv(-100.0);
+    m2.call(&mut e, a);
+    e.step();
+    m1.call(&mut e, a);
+    assert!(m1.command_aborted && !m1.busy && !m1.active && !m1.done && !m1.error);
+    e.step();
+    m1.call(&mut e, a);
+    assert!(!m1.command_aborted && !m1.busy);
+    // With Execute held, CommandAborted stays until Execute falls.
+    let mut m3 = mv(50.0);
+    m3.call(&mut e, a);
+    let mut m4 = mv(60.0);
+    m4.call(&mut e, a);
+    for _ in 0..3 {
+        e.step();
+        m3.call(&mut e, a);
+        assert!(m3.command_aborted);
+    }
+    m3.execute = false;
+    m3.call(&mut e, a);
+    assert!(!m3.command_aborted);
+    // Buffered block: Busy without Active while waiting.
+    let mut m5 = McMoveAbsolute {
+        buffer_mode: BufferMode::Buffered,
+        ..mv(70.0)
+    };
+    m5.call(&mut e, a);
+    assert!(m5.busy && !m5.active);
+    run_until(&mut e, 10000, |e| {
+        m4.call(e, a);
+        m5.call(e, a);
+        m5.active
+    });
+    assert!(m4.done && !m4.busy);
 }

@@ -135,6 +135,31 @@ fn group_transitions_and_rejections() {
     };
     single.call(&mut e, ax[0]);
     assert_eq!(single.error_id, ErrorId::AxisInGroup);
+    // Standby -> Homing -> Standby; motion rejected while homing.
+    let mut home = McGroupHome {
+        execute: true,
+        position: vecn(&[1.0, 2.0]),
+        ..Default::default()
+    };
+    home.call(&mut e, g);
+    assert!(home.busy && home.active, "{:?}", home.error_id);
+    assert_eq!(st(&e), GroupState::GroupHoming);
+    assert_eq!(e.axis_state(ax[0]).unwrap(), AxisState::Homing);
+    let mut m = lin(&[10.0, 10.0], BufferMode::Aborting);
+    m.call(&mut e, g);
+    assert_eq!(m.error_id, ErrorId::GroupHoming);
+    let mut home2 = McGroupHome {
+        execute: true,
+        ..Default::default()
+    };
+    home2.call(&mut e, g);
+    assert_eq!(home2.error_id, ErrorId::GroupHoming);
+    e.step();
+    home.call(&mut e, g);
+    assert!(home.done);
+    assert_eq!(st(&e), GroupState::GroupStandby);
+    assert_eq!(e.axis_state(ax[1]).unwrap(), AxisState::Standstill);
+    assert_eq!(e.group_position(g).unwrap()[..2], [1.0, 2.0]);
     // Standby -> Moving (axes SynchronizedMotion) -> Standby.
     let mut m = lin(&[10.0, 20.0], BufferMode::Aborting);
     m.call(&mut e, g);
@@ -147,6 +172,12 @@ fn group_transitions_and_rejections() {
     };
     dis.call(&mut e, g);
     assert_eq!(dis.error_id, ErrorId::GroupMoving);
+    let mut home3 = McGroupHome {
+        execute: true,
+        ..Default::default()
+    };
+    home3.call(&mut e, g);
+    assert_eq!(home3.error_id, ErrorId::GroupMoving);
     step_until(&mut e, 5000, |e| {
         m.call(e, g);
         m.done
@@ -345,6 +376,32 @@ fn circular_move_stays_on_the_circle() {
         b.done
     });
     assert!((min_x + 10.0).abs() < 1e-3, "{min_x}");
+    // A tight circle asked for too much speed: the turn limits it so no axis exceeds
+    // its acceleration limit (2000).
+    let mut tight = McMoveCircularRelative {
+        execute: true,
+        circ_mode_center: true,
+        aux_point: vecn(&[0.0, 1.0]),
+        end_point: vecn(&[0.0, 2.0]),
+        path_choice_ccw: true,
+        velocity: 190.0,
+        acceleration: 2000.0,
+        deceleration: 2000.0,
+        ..Default::default()
+    };
+    tight.call(&mut e, g);
+    assert!(tight.busy, "{:?}", tight.error_id);
+    let mut max_a: f64 = 0.0;
+    let mut max_v: f64 = 0.0;
+    step_until(&mut e, 10000, |e| {
+        max_a = max_a.max(e.set_acceleration_of(_ax[0]).unwrap().abs());
+        max_a = max_a.max(e.set_acceleration_of(_ax[1]).unwrap().abs());
+        max_v = max_v.max(e.group_velocity(g).unwrap().1);
+        tight.call(e, g);
+        tight.done
+    });
+    assert!(max_a <= 2000.0 * (1.0 + 1e-9), "{max_a}");
+    assert!(max_v < 190.0 * 0.5, "speed limited by the turn: {max_v}");
     // An end point off the circle is rejected.
     let mut bad = McMoveCircularAbsolute {
         execute: true,
@@ -427,4 +484,34 @@ fn power_off_of_a_member_stops_the_group_in_error() {
     step_until(&mut e, 5000, |e| e.set_velocity_of(ax[1]).unwrap() == 0.0);
     assert_eq!(e.axis_state(ax[0]).unwrap(), AxisState::Disabled);
     assert_eq!(e.axis_state(ax[1]).unwrap(), AxisState::Standstill);
+}
+
+#[test]
+fn full_group_queue_rejects_and_runs_the_rest() {
+    let (mut e, _ax, g) = enabled_group(2);
+    // Depth 4: one active + 4 buffered; the sixth is refused.
+    let mut blocks: Vec<McMoveLinearAbsolute> = (0..6)
+        .map(|i| {
+            let bm = if i == 0 {
+                BufferMode::Aborting
+            } else {
+                BufferMode::Buffered
+            };
+            lin(&[i as f64 + 1.0, 0.0], bm)
+        })
+        .collect();
+    for b in blocks.iter_mut() {
+        b.call(&mut e, g);
+    }
+    assert!(blocks[..5].iter().all(|b| b.busy));
+    assert!(blocks[5].error && blocks[5].error_id == ErrorId::QueueFull);
+    assert_eq!(e.group_queued(g).unwrap(), 4);
+    step_until(&mut e, 20000, |e| {
+        for b in blocks.iter_mut() {
+            b.call(e, g);
+        }
+        blocks[4].done
+    });
+    assert!(blocks[..5].iter().all(|b| b.done));
+    assert_eq!(e.group_position(g).unwrap()[0], 5.0);
 }

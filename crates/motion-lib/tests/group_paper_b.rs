@@ -207,8 +207,10 @@ fn corner_distance_keeps_axis_velocity_continuous() {
     let round = run(TransitionMode::CornerDistance, 100.0);
     // Without a blend the direction change makes the axis velocities jump at the corner.
     assert!(sharp.max_jump > 10.0, "{}", sharp.max_jump);
-    // With the blend the per-cycle velocity change stays within a = 100 * dt (+ margin).
-    assert!(round.max_jump < 1.5, "{}", round.max_jump);
+    // With the blend every axis's velocity changes by at most the path acceleration
+    // (5) * dt per cycle: the velocity vector is continuous and within the limits
+    // (10 % margin for the discrete evaluation).
+    assert!(round.max_jump <= 5.0 * 0.01 * 1.1, "{}", round.max_jump);
     for (e, w) in round.end.iter().zip([4500.0, 4200.0, 4800.0]) {
         assert!((e - w).abs() < 1e-6, "end {e} vs {w}");
     }
