@@ -123,6 +123,10 @@ pub enum Command {
         /// Build with -fsanitize=address,undefined.
         #[arg(long)]
         sanitize: bool,
+        /// Draw position and velocity of every axis over time into this SVG file (block starts and
+        /// ends marked from watched `.busy` / `.done` columns).
+        #[arg(long)]
+        plot: Option<PathBuf>,
     },
     /// Motion planning tools.
     #[command(subcommand)]
@@ -194,7 +198,13 @@ pub fn main() -> i32 {
             output,
             emit,
             report,
-        } => build(&compile, output.as_deref(), emit, report, cli.message_format),
+        } => build(
+            &compile,
+            output.as_deref(),
+            emit,
+            report,
+            cli.message_format,
+        ),
         Command::Run {
             compile,
             cycles,
@@ -203,6 +213,7 @@ pub fn main() -> i32 {
             trace,
             watch,
             sanitize,
+            plot,
         } => {
             let run = c_backend::RunOptions {
                 cycles,
@@ -211,7 +222,7 @@ pub fn main() -> i32 {
                 trace,
                 watch,
             };
-            run_program(&compile, cycle_ms, run, sanitize, cli.message_format)
+            run_program(&compile, cycle_ms, run, sanitize, plot, cli.message_format)
         }
     }
 }
@@ -391,6 +402,7 @@ fn run_program(
     cycle_ms: Option<f64>,
     mut run: c_backend::RunOptions,
     sanitize: bool,
+    plot: Option<PathBuf>,
     format: Format,
 ) -> i32 {
     let mut s = pipeline::Session::new();
@@ -402,6 +414,16 @@ fn run_program(
         return code;
     };
     run.cycle_ms = lowered.cycle_ms;
+    if plot.is_some() && !run.watch.is_empty() {
+        for a in &lowered.axes.axes {
+            for sig in ["position", "velocity"] {
+                let col = format!("axis.{}.{sig}", a.name);
+                if !run.watch.iter().any(|w| w.eq_ignore_ascii_case(&col)) {
+                    run.watch.push(col);
+                }
+            }
+        }
+    }
     let mut extra = Vec::new();
     if let Err(code) = add_staticlib(&program, &mut extra, format) {
         return code;
@@ -460,6 +482,19 @@ fn run_program(
     };
     print!("{}", out.stdout);
     eprint!("{}", out.stderr);
+    if let (true, Some(svg)) = (out.success(), &plot) {
+        let text = match &run.trace {
+            Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
+            None => out.stdout.clone(),
+        };
+        if let Err(e) = crate::plot::svg(&text, svg) {
+            return io_error(
+                format!("cannot plot into {}: {e}", svg.display()),
+                "the program needs configured axes (--axes) for a plot",
+                format,
+            );
+        }
+    }
     match (out.success(), &final_trace, &run.trace) {
         (true, Some(dst), Some(tmp)) => {
             if let Err(e) = std::fs::rename(tmp, dst) {

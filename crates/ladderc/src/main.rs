@@ -6,6 +6,7 @@ mod cli;
 mod motion_link;
 mod output;
 mod pipeline;
+mod plot;
 mod report;
 
 fn main() {

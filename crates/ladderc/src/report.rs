@@ -70,8 +70,12 @@ mod tests {
 
     #[test]
     fn the_definition_not_the_prototype_is_measured() {
-        let c = "static void F_1(P *self);\nint x;\nstatic void F_1(P *self) {\n    x = 1;\n}\nrest";
-        assert_eq!(definition_len(c, "F_1"), "static void F_1(P *self) {\n    x = 1;\n}\n".len());
+        let c =
+            "static void F_1(P *self);\nint x;\nstatic void F_1(P *self) {\n    x = 1;\n}\nrest";
+        assert_eq!(
+            definition_len(c, "F_1"),
+            "static void F_1(P *self) {\n    x = 1;\n}\n".len()
+        );
         assert_eq!(definition_len(c, "G"), 0);
     }
 }

@@ -276,7 +276,11 @@ fn report_json_gives_per_block_method_tm_bytes_instructions_and_c_bytes() {
             .arg(&src)
             .output()
             .unwrap();
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
         reports.push(v);
     }
@@ -308,4 +312,40 @@ fn report_json_gives_per_block_method_tm_bytes_instructions_and_c_bytes() {
         serde_json::to_string_pretty(&reports[0]).unwrap(),
         serde_json::to_string_pretty(&reports[1]).unwrap()
     ));
+}
+
+#[test]
+fn run_plot_draws_position_and_velocity_of_each_axis() {
+    let (dir, src) = project();
+    let svg = dir.path().join("move.svg");
+    let out = ladderc()
+        .arg("run")
+        .arg(&src)
+        .args([
+            "--cycles",
+            "250",
+            "--watch",
+            "move.busy,move.done",
+            "--plot",
+        ])
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // the axis columns were added to the watch list for the plot
+    let header = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        header.starts_with("cycle,time_ms,move.busy,move.done,axis.X1.position,axis.X1.velocity\n")
+    );
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.starts_with("<svg"));
+    assert!(text.contains("X1.position") && text.contains("X1.velocity"));
+    assert!(
+        text.matches("<polyline").count() >= 4,
+        "two axis lines and the block markers"
+    );
 }
