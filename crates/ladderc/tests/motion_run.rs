@@ -349,3 +349,59 @@ fn run_plot_draws_position_and_velocity_of_each_axis() {
         "two axis lines and the block markers"
     );
 }
+
+/// Drops the TM views (only the IL method has them) from a trace.
+fn without_tm_views(trace: &str) -> Vec<Vec<String>> {
+    let rows: Vec<Vec<String>> = trace
+        .lines()
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect();
+    let keep: Vec<usize> = (0..rows[0].len())
+        .filter(|&i| !rows[0][i].contains("TM__"))
+        .collect();
+    rows.iter()
+        .map(|r| keep.iter().map(|&i| r[i].clone()).collect())
+        .collect()
+}
+
+#[test]
+fn differential_two_axes_calc_negated_outputs_buffered_halt_every_variable() {
+    // every variable of the program (block instances included) and both axes, 400 cycles of 5 ms
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/motion/two_axes.il");
+    let dir = tempfile::tempdir().unwrap();
+    let mut traces = Vec::new();
+    for s in ["il", "template"] {
+        let trace = dir.path().join(format!("{s}.csv"));
+        let out = ladderc()
+            .arg("run")
+            .arg(&src)
+            .args(["--cycles", "400", "--strategy", s, "--trace"])
+            .arg(&trace)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        traces.push(without_tm_views(&std::fs::read_to_string(&trace).unwrap()));
+    }
+    let (il, tpl) = (&traces[0], &traces[1]);
+    assert_eq!(il[0], tpl[0], "same columns");
+    assert!(il[0].iter().any(|c| c == "axis.Y1.velocity"));
+    assert!(il[0].iter().any(|c| c == "two_axes.notdone"));
+    assert_eq!(il.len(), 401);
+    for k in 0..il.len() {
+        assert_eq!(il[k], tpl[k], "row {k} differs");
+    }
+    // the halt stopped Y1 (its velocity ends at 0) after MC_MoveVelocity had moved it
+    let h = &il[0];
+    let col = |name: &str| h.iter().position(|c| c == name).unwrap();
+    assert_eq!(il[400][col("axis.Y1.velocity")], "0");
+    assert_eq!(il[400][col("two_axes.halted")], "1");
+    assert!(il[400][col("axis.Y1.position")].parse::<f64>().unwrap() > 5.0);
+    // NOT Done => notdone: notdone is the negation of a.Done on every row
+    for r in &il[1..] {
+        assert_ne!(r[col("two_axes.notdone")], r[col("two_axes.a.Done")]);
+    }
+}
