@@ -405,3 +405,39 @@ fn differential_two_axes_calc_negated_outputs_buffered_halt_every_variable() {
         assert_ne!(r[col("two_axes.notdone")], r[col("two_axes.a.Done")]);
     }
 }
+
+#[test]
+fn groups_of_the_axis_file_are_created_at_init_and_declared_as_globals() {
+    let (dir, src) = project();
+    let axes = dir.path().join("group.json");
+    std::fs::write(
+        &axes,
+        r#"{ "cycle_ms": 10, "axes": [
+            { "name": "X1", "velocity": 100, "acceleration": 500, "deceleration": 500 },
+            { "name": "Y9", "velocity": 100, "acceleration": 500, "deceleration": 500 } ],
+          "groups": [ { "name": "G1", "axes": [ { "axis": "X1", "identity": "X" }, { "axis": "Y9", "identity": "Y" } ] } ] }"#,
+    )
+    .unwrap();
+    let out = ladderc()
+        .arg("run")
+        .arg(&src)
+        .arg("--axes")
+        .arg(&axes)
+        .args([
+            "--cycles",
+            "2",
+            "--watch",
+            "X1.AxisNo,Y9.AxisNo,G1.GroupNo,axis.Y9.position",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        String::from_utf8(out.stdout).unwrap(),
+        "cycle,time_ms,X1.AxisNo,Y9.AxisNo,G1.GroupNo,axis.Y9.position\n0,0,0,1,0,0\n1,10,0,1,0,0\n"
+    );
+}
