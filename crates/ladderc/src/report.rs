@@ -4,11 +4,15 @@
 //! C project. Output: a JSON document `{ "blocks": [ { "block", "method", "calls", "tm_bytes",
 //! "il_instructions", "c_bytes" } ] }`, blocks in name order. `c_bytes` is the size of the C the block
 //! contributes: its guarded static-library function (IL method, one per block type) or the definitions of
-//! its synthesised functions in `program.c` (template method, one per call).
-//! Invariant: the figures are measured on the generated text, never estimated.
+//! its synthesised functions in `program.c` (template method, one per call). `object_bytes` is the code
+//! size of the same functions compiled (`cc -std=c99 -O2 -fno-inline -c`, symbol sizes from `nm -S`);
+//! `null` when no C compiler or `nm` is available.
+//! Invariant: the figures are measured on the generated text and objects, never estimated.
 
 use crate::pipeline::Lowered;
 use param_passing::lower::Method;
+use std::collections::HashMap;
+use std::process::Command;
 
 /// The C definition of `static void name(` in `c` (from its signature to the closing brace line).
 fn definition_len(c: &str, name: &str) -> usize {
@@ -26,9 +30,57 @@ fn definition_len(c: &str, name: &str) -> usize {
     }
 }
 
+/// Code sizes of the functions defined in the project's `program.c` and `embedded.c`, by symbol name
+/// (`None`: the project could not be compiled or inspected here).
+fn symbol_sizes(program: &c_backend::CProgram) -> Option<HashMap<String, u64>> {
+    let dir = tempfile::tempdir().ok()?;
+    c_backend::toolchain::write_files(program, dir.path()).ok()?;
+    let cc = std::env::var("CC")
+        .ok()
+        .filter(|s| !s.trim().is_empty())
+        .unwrap_or_else(|| "cc".into());
+    let mut words = cc.split_whitespace();
+    let mut sizes = HashMap::new();
+    for src in ["program.c", "embedded.c"] {
+        if program.file(src).is_none() {
+            continue;
+        }
+        let obj = src.replace(".c", ".o");
+        let ok = Command::new(words.next().unwrap_or("cc"))
+            .args(words.clone())
+            .args(["-std=c99", "-O2", "-fno-inline", "-c", src, "-o", &obj])
+            .current_dir(dir.path())
+            .output()
+            .ok()?
+            .status
+            .success();
+        words = cc.split_whitespace();
+        if !ok {
+            return None;
+        }
+        let nm = Command::new("nm")
+            .args(["-S", "--defined-only", &obj])
+            .current_dir(dir.path())
+            .output()
+            .ok()?;
+        for line in String::from_utf8_lossy(&nm.stdout).lines() {
+            let f: Vec<&str> = line.split_whitespace().collect();
+            if let [_, size, kind, name] = f.as_slice() {
+                if kind.eq_ignore_ascii_case("t") {
+                    if let Ok(n) = u64::from_str_radix(size, 16) {
+                        sizes.insert(name.to_string(), n);
+                    }
+                }
+            }
+        }
+    }
+    Some(sizes)
+}
+
 /// The report as JSON text.
 pub fn json(lowered: &Lowered, program: &c_backend::CProgram) -> String {
     let program_c = program.file("program.c").unwrap_or("");
+    let symbols = symbol_sizes(program);
     let mut blocks = Vec::new();
     for r in &lowered.lowering.reports {
         let c_bytes = match r.method {
@@ -51,6 +103,18 @@ pub fn json(lowered: &Lowered, program: &c_backend::CProgram) -> String {
                 .map(|s| definition_len(program_c, &s.name))
                 .sum(),
         };
+        let object_bytes = symbols.as_ref().map(|syms| -> u64 {
+            syms.iter()
+                .filter(|(name, _)| {
+                    name.as_str() == r.block
+                        || name
+                            .strip_prefix(r.block.as_str())
+                            .and_then(|rest| rest.strip_prefix('_'))
+                            .is_some_and(|n| n.bytes().all(|b| b.is_ascii_digit()))
+                })
+                .map(|(_, n)| *n)
+                .sum()
+        });
         blocks.push(serde_json::json!({
             "block": r.block,
             "method": match r.method { Method::Il => "il", Method::Template => "template" },
@@ -58,6 +122,7 @@ pub fn json(lowered: &Lowered, program: &c_backend::CProgram) -> String {
             "tm_bytes": r.tm_bytes,
             "il_instructions": r.il_instructions,
             "c_bytes": c_bytes,
+            "object_bytes": object_bytes,
         }));
     }
     let doc = serde_json::json!({ "blocks": blocks });
