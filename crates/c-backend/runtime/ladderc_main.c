@@ -20,6 +20,7 @@ typedef union {
     IEC_ULINT u;
     IEC_LREAL d;
     IEC_STRING s;
+    IEC_WSTRING w;
 } any_value;
 
 typedef struct {
@@ -224,7 +225,7 @@ int main(int argc, char **argv) {
     size_t row_count = 0, next_row = 0, watch_count = 0, w;
     FILE *trace = stdout;
     char err[512];
-    static char value_text[2 * LADDERC_STRING_CAP + 16];
+    static char value_text[4 * (LADDERC_STRING_CAP + 1) + 16];
 
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];

@@ -178,6 +178,54 @@ IEC_STRING ladderc_str_cap(IEC_STRING s, unsigned cap) {
     return r;
 }
 int ladderc_str_cmpv(IEC_STRING a, IEC_STRING b) { return ladderc_string_cmp(&a, &b); }
+IEC_WSTRING ladderc_wstr_lit(const uint16_t *units, size_t len) {
+    IEC_WSTRING s;
+    memset(&s, 0, sizeof s);
+    ladderc_wstring_set(&s, units, len, LADDERC_STRING_CAP);
+    return s;
+}
+IEC_WSTRING ladderc_wstr_cap(IEC_WSTRING s, unsigned cap) {
+    IEC_WSTRING r;
+    memset(&r, 0, sizeof r);
+    ladderc_wstring_set(&r, s.data, s.len, cap);
+    return r;
+}
+int ladderc_wstr_cmpv(IEC_WSTRING a, IEC_WSTRING b) { return ladderc_wstring_cmp(&a, &b); }
+
+/* UTF-8 text to UTF-16 units; -1 on malformed UTF-8 or more than `cap` units. */
+static int utf8_to_utf16(const char *t, size_t n, uint16_t *out, size_t cap, size_t *count) {
+    size_t i = 0, k = 0;
+    while (i < n) {
+        unsigned char c = (unsigned char)t[i];
+        uint32_t cp;
+        int more, j;
+        if (c < 0x80) { cp = c; more = 0; }
+        else if ((c & 0xE0) == 0xC0) { cp = c & 0x1Fu; more = 1; }
+        else if ((c & 0xF0) == 0xE0) { cp = c & 0x0Fu; more = 2; }
+        else if ((c & 0xF8) == 0xF0) { cp = c & 0x07u; more = 3; }
+        else return -1;
+        for (j = 1; j <= more; j++) {
+            unsigned char d;
+            if (i + (size_t)j >= n) return -1;
+            d = (unsigned char)t[i + (size_t)j];
+            if ((d & 0xC0) != 0x80) return -1;
+            cp = (cp << 6) | (d & 0x3Fu);
+        }
+        i += (size_t)more + 1;
+        if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return -1;
+        if (cp >= 0x10000) {
+            if (k + 2 > cap) return -1;
+            cp -= 0x10000;
+            out[k++] = (uint16_t)(0xD800 + (cp >> 10));
+            out[k++] = (uint16_t)(0xDC00 + (cp & 0x3FF));
+        } else {
+            if (k + 1 > cap) return -1;
+            out[k++] = (uint16_t)cp;
+        }
+    }
+    *count = k;
+    return 0;
+}
 void ladderc_wstring_set(IEC_WSTRING *dst, const uint16_t *src, size_t len, unsigned cap) {
     if (cap > LADDERC_STRING_CAP) cap = LADDERC_STRING_CAP;
     if (len > cap) {
@@ -198,7 +246,8 @@ int ladderc_wstring_cmp(const IEC_WSTRING *a, const IEC_WSTRING *b) {
 /* ------------------------------------------------------------------ values as text (harness) */
 static const char *const type_names[] = {
     "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD",
-    "DWORD", "LWORD", "REAL", "LREAL", "TIME", "LTIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME", "STRING"};
+    "DWORD", "LWORD", "REAL", "LREAL", "TIME", "LTIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME", "STRING",
+    "WSTRING"};
 
 const char *ladderc_type_name(ladderc_type t) {
     return (unsigned)t < sizeof type_names / sizeof type_names[0] ? type_names[t] : "?";
@@ -460,6 +509,18 @@ int ladderc_parse_value(ladderc_type t, const char *text, void *out, char *err, 
         ladderc_string_set((IEC_STRING *)out, text, len, LADDERC_STRING_CAP);
         return 0;
     }
+    case LADDERC_T_WSTRING: {
+        size_t len = strlen(text), count = 0;
+        uint16_t units[LADDERC_STRING_CAP];
+        if (len >= 2 && (text[0] == '\'' || text[0] == '"') && text[len - 1] == text[0]) {
+            text++;
+            len -= 2;
+        }
+        if (utf8_to_utf16(text, len, units, LADDERC_STRING_CAP, &count))
+            return fail(err, errlen, "expected UTF-8 text of at most 254 UTF-16 units", text);
+        ladderc_wstring_set((IEC_WSTRING *)out, units, count, LADDERC_STRING_CAP);
+        return 0;
+    }
     }
     return fail(err, errlen, "unsupported type", text);
 }
@@ -524,6 +585,7 @@ static unsigned type_bytes(ladderc_type t) {
     case LADDERC_T_INT: case LADDERC_T_UINT: case LADDERC_T_WORD: return 2;
     case LADDERC_T_DINT: case LADDERC_T_UDINT: case LADDERC_T_DWORD: case LADDERC_T_REAL: return 4;
     case LADDERC_T_STRING: return sizeof(IEC_STRING);
+    case LADDERC_T_WSTRING: return sizeof(IEC_WSTRING);
     default: return 8;
     }
 }
@@ -653,6 +715,35 @@ void ladderc_format_value(ladderc_type t, const void *value, char *buf, size_t l
         for (i = 0; i < s->len && o + 3 < len; i++) {
             if (s->data[i] == '"') buf[o++] = '"';
             buf[o++] = s->data[i];
+        }
+        buf[o++] = '"';
+        buf[o] = '\0';
+        break;
+    }
+    case LADDERC_T_WSTRING: {
+        /* UTF-8, quoted like STRING; an unpaired surrogate becomes U+FFFD */
+        const IEC_WSTRING *s = (const IEC_WSTRING *)value;
+        size_t o = 0, i;
+        if (len < 3) { if (len) buf[0] = '\0'; break; }
+        buf[o++] = '"';
+        for (i = 0; i < s->len && o + 6 < len; i++) {
+            uint32_t cp = s->data[i];
+            if (cp >= 0xD800 && cp <= 0xDBFF && i + 1 < s->len && s->data[i + 1] >= 0xDC00 && s->data[i + 1] <= 0xDFFF) {
+                cp = 0x10000 + ((cp - 0xD800) << 10) + (uint32_t)(s->data[i + 1] - 0xDC00);
+                i++;
+            } else if (cp >= 0xD800 && cp <= 0xDFFF) {
+                cp = 0xFFFD;
+            }
+            if (cp == '"') { buf[o++] = '"'; buf[o++] = '"'; }
+            else if (cp < 0x80) buf[o++] = (char)cp;
+            else if (cp < 0x800) { buf[o++] = (char)(0xC0 | (cp >> 6)); buf[o++] = (char)(0x80 | (cp & 0x3F)); }
+            else if (cp < 0x10000) {
+                buf[o++] = (char)(0xE0 | (cp >> 12)); buf[o++] = (char)(0x80 | ((cp >> 6) & 0x3F));
+                buf[o++] = (char)(0x80 | (cp & 0x3F));
+            } else {
+                buf[o++] = (char)(0xF0 | (cp >> 18)); buf[o++] = (char)(0x80 | ((cp >> 12) & 0x3F));
+                buf[o++] = (char)(0x80 | ((cp >> 6) & 0x3F)); buf[o++] = (char)(0x80 | (cp & 0x3F));
+            }
         }
         buf[o++] = '"';
         buf[o] = '\0';

@@ -268,6 +268,9 @@ int ladderc_wstring_cmp(const IEC_WSTRING *a, const IEC_WSTRING *b);
 IEC_STRING ladderc_str_lit(const char *bytes, size_t len);
 IEC_STRING ladderc_str_cap(IEC_STRING s, unsigned cap);
 int ladderc_str_cmpv(IEC_STRING a, IEC_STRING b);
+IEC_WSTRING ladderc_wstr_lit(const uint16_t *units, size_t len);
+IEC_WSTRING ladderc_wstr_cap(IEC_WSTRING s, unsigned cap);
+int ladderc_wstr_cmpv(IEC_WSTRING a, IEC_WSTRING b);
 /* *_TO_STRING: the value's text as the trace prints it (BOOL TRUE/FALSE, T#..., shortest REAL). */
 IEC_STRING ladderc_str_of(int type, const void *value);
 /* STRING_TO_*: text after trimming spaces; a malformed text gives 0 (FALSE) and LADDERC_ERR_RANGE. */
@@ -350,7 +353,7 @@ typedef enum {
     LADDERC_T_USINT, LADDERC_T_UINT, LADDERC_T_UDINT, LADDERC_T_ULINT,
     LADDERC_T_BYTE, LADDERC_T_WORD, LADDERC_T_DWORD, LADDERC_T_LWORD,
     LADDERC_T_REAL, LADDERC_T_LREAL, LADDERC_T_TIME, LADDERC_T_LTIME,
-    LADDERC_T_DATE, LADDERC_T_TOD, LADDERC_T_DT, LADDERC_T_STRING
+    LADDERC_T_DATE, LADDERC_T_TOD, LADDERC_T_DT, LADDERC_T_STRING, LADDERC_T_WSTRING
 } ladderc_type;
 
 /* A watchable variable: either in memory (ptr) or located in an area (area != NULL: offset, bit). */

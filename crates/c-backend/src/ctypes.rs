@@ -303,6 +303,26 @@ pub fn string_value(value: &str) -> String {
     )
 }
 
+/// UTF-16 code units of a text as a C compound literal array and its length (`{0}` for empty text, so
+/// that no null pointer is ever passed).
+pub fn utf16_array(value: &str) -> (String, usize) {
+    let units: Vec<u16> = value.encode_utf16().collect();
+    if units.is_empty() {
+        return ("(const uint16_t[]){0}".into(), 0);
+    }
+    let list: Vec<String> = units.iter().map(|u| format!("0x{u:04X}")).collect();
+    (
+        format!("(const uint16_t[]){{{}}}", list.join(", ")),
+        units.len(),
+    )
+}
+
+/// A literal as an `IEC_WSTRING` value expression.
+pub fn wstring_value(value: &str) -> String {
+    let (array, len) = utf16_array(value);
+    format!("ladderc_wstr_lit({array}, {len})")
+}
+
 /// The capacity of a string type (bytes), capped at the runtime's.
 pub fn string_cap(ty: &Type) -> u32 {
     match ty {

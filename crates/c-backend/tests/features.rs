@@ -676,3 +676,40 @@ END_PROGRAM
     let rows = run(&b, 1, 10.0, "", &["main.x"]);
     assert_eq!(column(&rows, "main.x"), ["1"]);
 }
+
+#[test]
+fn wstrings_hold_unicode_and_compare() {
+    let src = "PROGRAM main
+VAR
+  w : WSTRING[4] := \"h\u{e9}\";
+  v : WSTRING;
+  same : BOOL;
+END_VAR
+  LD \"caf\u{e9} \u{1F600}!\"
+  ST w
+  ST v
+  LD w
+  EQ v
+  ST same
+END_PROGRAM
+";
+    let b = build_src(src);
+    let out = c_backend::run(
+        &b.exe,
+        &c_backend::RunOptions {
+            cycles: 1,
+            watch: vec!["main.w".into(), "main.v".into(), "main.same".into()],
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    assert!(out.success(), "{}", out.stderr);
+    // WSTRING[4] keeps 4 UTF-16 units: "caf\u{e9}"
+    assert_eq!(
+        out.stdout.lines().nth(1).unwrap(),
+        "0,0,\"caf\u{e9}\",\"caf\u{e9} \u{1F600}!\",0"
+    );
+    // stimulus in UTF-8
+    let rows = run(&b, 1, 10.0, "0,main.v,\"\u{e9}t\u{e9}\"\n", &["main.v"]);
+    assert_eq!(column(&rows, "main.v"), ["\"caf\u{e9} \u{1F600}!\""]);
+}

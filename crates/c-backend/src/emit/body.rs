@@ -7,7 +7,8 @@
 //! outer result in a block-scoped local `d<depth>`, evaluates the nested list, then combines; jumps are
 //! `goto L_<label>`; only labels that are jumped to are emitted; work is linear in the body's size.
 
-use super::scope::{convert, Place, Scope};
+use super::scope::{Place, Scope};
+use super::values::convert;
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;
@@ -95,10 +96,6 @@ impl<'a> Gen<'a> {
         let base = match ty {
             Type::Array { .. } => {
                 self.unsupported(span, "an array as the current result");
-                return None;
-            }
-            Type::String { wide: true, .. } => {
-                self.unsupported(span, "a WSTRING as the current result");
                 return None;
             }
             t => match ctypes::base(self.model, t) {
@@ -488,7 +485,12 @@ impl<'a> Gen<'a> {
                         "LE" => "<=",
                         _ => "<",
                     };
-                    return Some(format!("((IEC_BOOL)(ladderc_str_cmpv({a}, {v}) {c} 0))"));
+                    let f = if matches!(aty, Type::String { wide: true, .. }) {
+                        "ladderc_wstr_cmpv"
+                    } else {
+                        "ladderc_str_cmpv"
+                    };
+                    return Some(format!("((IEC_BOOL)({f}({a}, {v}) {c} 0))"));
                 }
                 let e = match aty {
                     Type::Enum(_) => E::Dint,

@@ -7,7 +7,8 @@
 //! address; every standard function on already-evaluated arguments is a side-effect-free C expression.
 
 use super::body::{negated, Body};
-use super::scope::{convert, convert_elementary, real_to_int, Place};
+use super::scope::Place;
+use super::values::{convert, convert_elementary, real_to_int};
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;
@@ -417,10 +418,16 @@ impl Gen<'_> {
                 return c;
             }
         }
-        if let (Type::String { .. }, Some(il_frontend::sema::ConstValue::String { value, .. })) =
-            (ty, init)
+        if let (
+            Type::String { wide, .. },
+            Some(il_frontend::sema::ConstValue::String { value, .. }),
+        ) = (ty, init)
         {
-            return ctypes::string_value(value);
+            return if *wide {
+                ctypes::wstring_value(value)
+            } else {
+                ctypes::string_value(value)
+            };
         }
         match ty {
             Type::Elementary(_) | Type::Subrange { .. } | Type::Enum(_) => {
@@ -428,6 +435,7 @@ impl Gen<'_> {
                 format!("(({base})0)")
             }
             Type::String { wide: false, .. } => ctypes::string_value(""),
+            Type::String { wide: true, .. } => ctypes::wstring_value(""),
             _ => {
                 self.unsupported(span, "omitting an input of this type in a function call");
                 "0".into()

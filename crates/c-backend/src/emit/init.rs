@@ -153,6 +153,14 @@ impl Gen<'_> {
                     ctypes::string_cap(ty)
                 );
             }
+            (Type::String { wide: true, .. }, Some(ConstValue::String { value, .. })) => {
+                let (array, len) = ctypes::utf16_array(value);
+                let _ = writeln!(
+                    out,
+                    "{pad}ladderc_wstring_set(&{lv}, {array}, {len}, {});",
+                    ctypes::string_cap(ty)
+                );
+            }
             (Type::String { .. }, _) => {}
             (Type::Enum(id), v) => {
                 let value = match v {

@@ -12,6 +12,7 @@ mod init;
 mod method;
 mod scan;
 mod scope;
+mod values;
 
 use crate::profile::{AddressUnit, BitNumbering, ByteOrder, TargetProfile};
 use crate::{ctypes, mangle, Options};

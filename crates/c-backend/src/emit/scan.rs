@@ -10,7 +10,8 @@
 //! PROGRAM runs each cycle in source order. Table names: `<instance>.<var>[.<field>|[i]]...`, globals by
 //! their own name, located variables alias the process image.
 
-use super::scope::{area_array, Place, Scope};
+use super::scope::{Place, Scope};
+use super::values::area_array;
 use super::Gen;
 use crate::{ctypes, mangle};
 use il_frontend::ast::{ArgDir, CompilationUnit, LibraryElement, PouKind, VarKind};
@@ -218,7 +219,7 @@ impl Gen<'_> {
                     if let Some(val) = ctypes::const_elementary(self.model, e, init) {
                         if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
                             let _ =
-                                writeln!(c, "    {}", super::scope::store_expr(&loc, &ty, &val));
+                                writeln!(c, "    {}", super::values::store_expr(&loc, &ty, &val));
                         }
                     }
                 }
@@ -239,7 +240,7 @@ impl Gen<'_> {
         let bytes = if v.ty.is_bool() {
             None
         } else {
-            super::scope::access_bytes(&v.ty)
+            super::values::access_bytes(&v.ty)
         };
         match self.profile.locate(&addr, bytes) {
             Ok(l) => Some(Place::Loc {
@@ -318,7 +319,7 @@ impl Gen<'_> {
                 } else {
                     src
                 };
-                let v = super::scope::convert(&src, &param.ty, target.ty());
+                let v = super::values::convert(&src, &param.ty, target.ty());
                 let st = self.store(&target, &v);
                 let _ = writeln!(c, "{pad}{st}");
             }
@@ -434,6 +435,9 @@ impl Gen<'_> {
             }
             Type::String { wide: false, .. } => out.push(format!(
                 "{{ {cname}, LADDERC_T_STRING, (void *)&{lv}, NULL, 0, 0 }}"
+            )),
+            Type::String { wide: true, .. } => out.push(format!(
+                "{{ {cname}, LADDERC_T_WSTRING, (void *)&{lv}, NULL, 0, 0 }}"
             )),
             Type::Struct(id) => {
                 if let UserTypeDef::Struct { fields } = self.model.user_type(*id).def.clone() {

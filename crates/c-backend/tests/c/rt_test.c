@@ -239,6 +239,17 @@ static void values(void) {
     r = 0.1f;
     ladderc_format_value(LADDERC_T_REAL, &r, buf, sizeof buf);
     CHECK(strcmp(buf, "0.1") == 0);
+    {
+        IEC_WSTRING w;
+        static const uint16_t abc[] = {0x61, 0xE9, 0xD83D, 0xDE00};
+        CHECK(ladderc_parse_value(LADDERC_T_WSTRING, "\"a\xC3\xA9\xF0\x9F\x98\x80\"", &w, err, sizeof err) == 0);
+        CHECK(w.len == 4 && ladderc_wstr_cmpv(w, ladderc_wstr_lit(abc, 4)) == 0);
+        ladderc_format_value(LADDERC_T_WSTRING, &w, buf, sizeof buf);
+        CHECK(strcmp(buf, "\"a\xC3\xA9\xF0\x9F\x98\x80\"") == 0);
+        CHECK(ladderc_parse_value(LADDERC_T_WSTRING, "\xC3", &w, err, sizeof err) == -1);
+        CHECK(ladderc_parse_value(LADDERC_T_WSTRING, "\xED\xA0\x80", &w, err, sizeof err) == -1); /* surrogate */
+        CHECK(ladderc_wstr_cap(ladderc_wstr_lit(abc, 4), 2).len == 2);
+    }
     s = ladderc_str_lit("abc", 3);
     CHECK(ladderc_str_cmpv(s, ladderc_str_lit("abd", 3)) < 0);
     CHECK(ladderc_str_cap(s, 2).len == 2);

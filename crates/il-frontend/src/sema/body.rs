@@ -62,6 +62,39 @@ pub(super) struct State {
     pub(super) warned_unreachable: bool,
 }
 
+impl State {
+    /// At the start of a body or nested list: reachable, no current result.
+    fn start() -> State {
+        State {
+            reach: true,
+            cr: Cr {
+                ty: None,
+                fresh: None,
+                clash: None,
+            },
+            last: None,
+            warned_unreachable: false,
+        }
+    }
+}
+
+/// A statement list being walked: the body, or the nested list of an open `OP(`.
+struct Frame<'t> {
+    stmts: std::slice::Iter<'t, IlStmt>,
+    st: State,
+    open: Option<Box<Open<'t>>>,
+}
+
+/// An `OP(` whose nested list is being walked.
+struct Open<'t> {
+    instr: &'t ast::Instruction,
+    /// Index of its record in `Body::recs` (reserved at the opening: pre-order).
+    slot: usize,
+    rec: Rec,
+    /// The outer current result (`None` for `LD(`).
+    outer: Option<Ty>,
+}
+
 /// A recorded instruction (types may still be literal variables).
 #[derive(Debug, Clone, Default)]
 pub(super) struct Rec {
@@ -172,13 +205,20 @@ impl Analyzer<'_> {
         }
     }
 
+    /// Labels of a body in walk order (nested lists included), with an explicit stack: nesting depth is
+    /// not limited by the thread's stack.
     fn collect_labels(
         &mut self,
-        stmts: &[IlStmt],
+        body: &[IlStmt],
         labels: &mut HashMap<String, LabelDef>,
         pos: &mut usize,
     ) {
-        for s in stmts {
+        let mut stack: Vec<std::slice::Iter<'_, IlStmt>> = vec![body.iter()];
+        while let Some(top) = stack.last_mut() {
+            let Some(s) = top.next() else {
+                stack.pop();
+                continue;
+            };
             *pos += 1;
             match s {
                 IlStmt::Label(l) => {
@@ -204,7 +244,7 @@ impl Analyzer<'_> {
                 }
                 IlStmt::Instr(i) => {
                     if let InstrKind::Deferred { body, .. } = &i.kind {
-                        self.collect_labels(body, labels, pos);
+                        stack.push(body.iter());
                     }
                 }
             }
@@ -217,23 +257,24 @@ impl Body<'_, '_> {
         &self.a.model.pous[self.pou.0 as usize]
     }
 
+    /// Walks a body with an explicit stack of nested lists (`OP( ... )`), so that nesting depth is not
+    /// limited by the thread's stack.
     fn walk_top(&mut self, stmts: &[IlStmt]) {
-        let mut st = State {
-            reach: true,
-            cr: Cr {
-                ty: None,
-                fresh: None,
-                clash: None,
-            },
-            last: None,
-            warned_unreachable: false,
-        };
-        self.walk(stmts, &mut st);
-    }
-
-    pub(super) fn walk(&mut self, stmts: &[IlStmt], st: &mut State) {
-        for s in stmts {
+        let mut stack: Vec<Frame<'_>> = vec![Frame {
+            stmts: stmts.iter(),
+            st: State::start(),
+            open: None,
+        }];
+        while let Some(top) = stack.last_mut() {
+            let Some(s) = top.stmts.next() else {
+                let Some(done) = stack.pop() else { break };
+                if let (Some(open), Some(parent)) = (done.open, stack.last_mut()) {
+                    self.close_deferred(*open, done.st, &mut parent.st);
+                }
+                continue;
+            };
             self.pos += 1;
+            let st = &mut top.st;
             match s {
                 IlStmt::Label(l) => self.enter_label(l, st),
                 IlStmt::Instr(i) => {
@@ -253,11 +294,88 @@ impl Body<'_, '_> {
                             clash: None,
                         };
                     }
-                    self.instr(i, st);
-                    st.last = Some(i.span);
+                    if let InstrKind::Deferred { body, .. } = &i.kind {
+                        let (open, inner) = self.open_deferred(i, st);
+                        stack.push(Frame {
+                            stmts: body.iter(),
+                            st: inner,
+                            open: Some(Box::new(open)),
+                        });
+                    } else {
+                        self.instr(i, st);
+                        st.last = Some(i.span);
+                    }
                 }
             }
         }
+    }
+
+    /// Starts `OP( operand`: reads the outer CR, reserves the record slot, returns the nested state.
+    fn open_deferred<'t>(&mut self, i: &'t ast::Instruction, st: &mut State) -> (Open<'t>, State) {
+        let InstrKind::Deferred { op, operand, .. } = &i.kind else {
+            unreachable!("open_deferred is called for deferred instructions")
+        };
+        let rec = Rec {
+            cr_before: st.cr.ty.clone(),
+            ..Rec::default()
+        };
+        let slot = self.recs.len();
+        self.recs.push((i.span, Rec::default()));
+        let outer = if *op == Op::Ld {
+            None
+        } else {
+            Some(self.use_cr(st, i.span, op_name(*op)))
+        };
+        let mut inner = State::start();
+        if let Some(o) = operand {
+            let t = self.read_operand(o);
+            inner.cr.ty = Some(t);
+        }
+        (
+            Open {
+                instr: i,
+                slot,
+                rec,
+                outer,
+            },
+            inner,
+        )
+    }
+
+    /// Ends `OP( ... )`: applies the operator to the outer CR and the nested list's value.
+    fn close_deferred(&mut self, open: Open<'_>, mut inner: State, st: &mut State) {
+        let Open {
+            instr: i,
+            slot,
+            mut rec,
+            outer,
+        } = open;
+        let InstrKind::Deferred {
+            op, negate, close, ..
+        } = &i.kind
+        else {
+            return;
+        };
+        let value = self.use_cr(&mut inner, *close, "`)`");
+        rec.operand = Some(value.clone());
+        match outer {
+            None => self.load(st, value, i.span),
+            Some(cr) => {
+                // Point at `OP(` for the outer current result.
+                let kw = op_name(*op).len() + usize::from(*negate) + 1;
+                let head = Span::new(
+                    i.span.file,
+                    i.span.start as usize,
+                    (i.span.start as usize + kw).min(i.span.end as usize),
+                );
+                let res = self.operator(*op, *negate, cr, value, *close, head, &mut rec);
+                st.cr.ty = Some(res);
+                st.cr.fresh = Some(i.span);
+            }
+        }
+        rec.cr_after = if st.reach { st.cr.ty.clone() } else { None };
+        self.recs[slot].1 = rec;
+        st.last = Some(i.span);
     }
 
     /// The CR at a label: the join of the fall-through and every jump to it.
@@ -480,51 +598,8 @@ impl Body<'_, '_> {
                 negate,
                 operand,
             } => self.simple(i.span, *op, *negate, operand.as_ref(), st, &mut rec),
-            InstrKind::Deferred {
-                op,
-                negate,
-                operand,
-                body,
-                close,
-            } => {
-                let outer = if *op == Op::Ld {
-                    None
-                } else {
-                    Some(self.use_cr(st, i.span, op_name(*op)))
-                };
-                let mut inner = State {
-                    reach: true,
-                    cr: Cr {
-                        ty: None,
-                        fresh: None,
-                        clash: None,
-                    },
-                    last: None,
-                    warned_unreachable: false,
-                };
-                if let Some(o) = operand {
-                    let t = self.read_operand(o);
-                    inner.cr.ty = Some(t);
-                }
-                self.walk(body, &mut inner);
-                let value = self.use_cr(&mut inner, *close, "`)`");
-                rec.operand = Some(value.clone());
-                match outer {
-                    None => self.load(st, value, i.span),
-                    Some(cr) => {
-                        // Point at `OP(` for the outer current result.
-                        let kw = op_name(*op).len() + usize::from(*negate) + 1;
-                        let head = Span::new(
-                            i.span.file,
-                            i.span.start as usize,
-                            (i.span.start as usize + kw).min(i.span.end as usize),
-                        );
-                        let res = self.operator(*op, *negate, cr, value, *close, head, &mut rec);
-                        st.cr.ty = Some(res);
-                        st.cr.fresh = Some(i.span);
-                    }
-                }
-            }
+            // Handled by `open_deferred` / `close_deferred`.
+            InstrKind::Deferred { .. } => {}
             InstrKind::Jump { cond, label } => {
                 if *cond != Condition::Always {
                     let cr = self.use_cr(st, i.span, "a conditional jump");

@@ -1,0 +1,175 @@
+//! C expressions for IEC values: conversions between elementary types and process-image access.
+//!
+//! Input: C expressions with their IEC types, located places. Output: C expressions of the requested
+//! type. Invariants: integer conversions wrap without implementation-defined casts, REAL to integer
+//! conversions saturate through the runtime, located data is read and written through the byte-order
+//! aware `ladderc_load`/`ladderc_store` helpers; every expression is fully parenthesised.
+
+use crate::ctypes;
+use crate::profile::Located;
+use il_frontend::ast::Area;
+use il_frontend::sema::{Elementary, Type};
+
+use Elementary as E;
+
+/// Size in bytes used to access a located variable of type `ty` (None: not an elementary type).
+pub fn access_bytes(ty: &Type) -> Option<u32> {
+    let e = match ty {
+        Type::Enum(_) => return Some(4),
+        _ => ty.elementary()?,
+    };
+    Some(e.size_bytes())
+}
+
+pub fn area_array(area: Area) -> &'static str {
+    match area {
+        Area::Input => "ladderc_I",
+        Area::Output => "ladderc_Q",
+        Area::Memory => "ladderc_M",
+    }
+}
+
+/// Converts a C expression of IEC type `from` to IEC type `to` (implicit conversions: widening, BOOL).
+pub fn convert(expr: &str, from: &Type, to: &Type) -> String {
+    if from == to {
+        return expr.to_string();
+    }
+    let fe = match from {
+        Type::Enum(_) => Some(E::Dint),
+        t => t.elementary(),
+    };
+    let te = match to {
+        Type::Enum(_) => Some(E::Dint),
+        t => t.elementary(),
+    };
+    match (fe, te) {
+        (Some(f), Some(t)) => convert_elementary(expr, f, t),
+        (_, Some(_)) | (Some(_), _) => expr.to_string(),
+        // strings keep their text here; capacities apply when a string is stored
+        (None, None) => expr.to_string(),
+    }
+}
+
+/// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest and
+/// saturates, TIME to/from numbers counts milliseconds, anything to BOOL is `<> 0`.
+pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
+    if f == t {
+        return x.to_string();
+    }
+    let ct = ctypes::elementary(t);
+    let time_like = |e: Elementary| e.is_duration() || e.is_date();
+    if t == E::Bool {
+        return format!("((IEC_BOOL)(({x}) != 0))");
+    }
+    if f.is_real() {
+        if t.is_real() {
+            return format!("(({ct})({x}))");
+        }
+        if time_like(t) {
+            return format!("(({ct})ladderc_ms_to_time((double)({x})))");
+        }
+        return real_to_int(&format!("(double)({x})"), t);
+    }
+    if time_like(f) {
+        if time_like(t) {
+            return match (f, t) {
+                (E::Dt, E::Date) => format!("ladderc_dt_to_date({x})"),
+                (E::Dt, E::Tod) => format!("ladderc_dt_to_tod({x})"),
+                _ => format!("(({ct})({x}))"),
+            };
+        }
+        if t.is_real() {
+            return format!("(({ct})((double)({x}) / 1e6))");
+        }
+        return int_to_int(&format!("(({x}) / INT64_C(1000000))"), t);
+    }
+    // f is an integer, a bit string or BOOL
+    if t.is_real() {
+        return format!("(({ct})({x}))");
+    }
+    if time_like(t) {
+        return format!("(({ct})ladderc_mul_IEC_LINT((IEC_LINT)({x}), INT64_C(1000000)))");
+    }
+    int_to_int(x, t)
+}
+
+fn int_to_int(x: &str, t: Elementary) -> String {
+    let ct = ctypes::elementary(t);
+    match t.bit_width() {
+        8 if t.is_signed() => format!("ladderc_wrap_i8((uint64_t)({x}))"),
+        16 if t.is_signed() => format!("ladderc_wrap_i16((uint64_t)({x}))"),
+        32 if t.is_signed() => format!("ladderc_wrap_i32((uint64_t)({x}))"),
+        64 if t.is_signed() => format!("ladderc_wrap_i64((uint64_t)({x}))"),
+        _ => format!("(({ct})(uint64_t)({x}))"),
+    }
+}
+
+/// A double expression to an integer or bit-string type (rounded to nearest, saturated).
+pub fn real_to_int(d: &str, t: Elementary) -> String {
+    let ct = ctypes::elementary(t);
+    if t.is_signed_integer() {
+        let (lo, hi) = match t.bit_width() {
+            8 => ("INT8_MIN", "INT8_MAX"),
+            16 => ("INT16_MIN", "INT16_MAX"),
+            32 => ("INT32_MIN", "INT32_MAX"),
+            _ => ("INT64_MIN", "INT64_MAX"),
+        };
+        format!("(({ct})ladderc_real_to_int({d}, {lo}, {hi}))")
+    } else {
+        let hi = match t.bit_width() {
+            1 => "1",
+            8 => "UINT8_MAX",
+            16 => "UINT16_MAX",
+            32 => "UINT32_MAX",
+            _ => "UINT64_MAX",
+        };
+        format!("(({ct})ladderc_real_to_uint({d}, {hi}))")
+    }
+}
+
+/// Loads a located value of type `ty`.
+pub fn load_expr(loc: &Located, ty: &Type) -> String {
+    let area = area_array(loc.area);
+    if let Some(bit) = loc.bit {
+        let v = format!("ladderc_load_bit({area}, {}, {bit})", loc.offset);
+        return if ty.is_bool() {
+            v
+        } else {
+            convert(&v, &Type::BOOL, ty)
+        };
+    }
+    let raw = format!("ladderc_load({area}, {}, {})", loc.offset, loc.bytes);
+    let e = match ty {
+        Type::Enum(_) => E::Dint,
+        t => t.elementary().unwrap_or(E::Lword),
+    };
+    match e {
+        E::Bool => format!("((IEC_BOOL)({raw} != 0))"),
+        E::Real => format!("ladderc_bits_to_real((uint32_t){raw})"),
+        E::Lreal => format!("ladderc_bits_to_lreal({raw})"),
+        _ => int_to_int(&raw, e),
+    }
+}
+
+/// Stores `value` (of type `ty`) into a located place.
+pub fn store_expr(loc: &Located, ty: &Type, value: &str) -> String {
+    let area = area_array(loc.area);
+    if let Some(bit) = loc.bit {
+        let v = if ty.is_bool() {
+            value.to_string()
+        } else {
+            format!("((IEC_BOOL)(({value}) != 0))")
+        };
+        return format!("ladderc_store_bit({area}, {}, {bit}, {v});", loc.offset);
+    }
+    let e = ty.elementary().unwrap_or(E::Dint);
+    let raw = match e {
+        E::Real => format!("(uint64_t)ladderc_real_to_bits({value})"),
+        E::Lreal => format!("ladderc_lreal_to_bits({value})"),
+        _ => format!("(uint64_t)({value})"),
+    };
+    format!(
+        "ladderc_store({area}, {}, {}, {raw});",
+        loc.offset, loc.bytes
+    )
+}
