@@ -158,6 +158,15 @@ pub fn generate_with(
     };
     program.files.extend(runtime::files());
     if let Some(m) = &ext.motion {
+        if let Some((_, h)) = program
+            .files
+            .iter_mut()
+            .find(|(p, _)| p == "ladderc_config.h")
+        {
+            if let Some(end) = h.rfind("#endif") {
+                h.insert_str(end, &m.config_define());
+            }
+        }
         program.files.extend(m.files());
         program.link = motion::link_args(motion::STATICLIB);
     }

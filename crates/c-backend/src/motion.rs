@@ -80,6 +80,18 @@ impl MotionRuntime {
         ]
     }
 
+    /// The line `ladderc_config.h` gets: the harness's default scan cycle is the engine cycle, so that a
+    /// built program run without `--cycle-ms` moves its axes at the planned speed.
+    pub fn config_define(&self) -> String {
+        let ns = (self.cycle_seconds * 1e9).round();
+        let ns = if ns.is_finite() && ns >= 1.0 {
+            ns as i64
+        } else {
+            10_000_000
+        };
+        format!("#define LADDERC_DEFAULT_CYCLE_NS {ns}\n")
+    }
+
     /// Declarations `program.c` needs (the hooks and the trace arrays).
     pub fn declarations(&self) -> String {
         let mut s = String::from(

@@ -141,12 +141,16 @@ fn built_projects_compile_warning_free_with_their_makefile_and_bundle_the_librar
             String::from_utf8_lossy(&make.stderr)
         );
         let run = Command::new(out_dir.join("program"))
-            .args(["--cycles", "300", "--cycle-ms", "10", "--watch", WATCH])
+            .args(["--cycles", "300", "--watch", WATCH])
             .output()
             .unwrap();
         assert!(run.status.success());
         let trace = String::from_utf8(run.stdout).unwrap();
+        // without --cycle-ms the harness runs at the engine's cycle (10 ms from move.axes.json)
+        assert_eq!(column(&trace, "time_ms")[1], 10.0);
         assert_eq!(column(&trace, "axis.X1.position")[299], 100.0, "{s}");
+        let config = std::fs::read_to_string(out_dir.join("ladderc_config.h")).unwrap();
+        assert!(config.contains("#define LADDERC_DEFAULT_CYCLE_NS 10000000\n#endif"));
     }
 }
 

@@ -9,7 +9,8 @@
 //! instructions (so globals, located variables, fields and conversions behave exactly as in `LD`/`ST`);
 //! a method is only callable from its own POU (a PROGRAM or FUNCTION_BLOCK).
 
-use super::scope::{convert, Scope};
+use super::scope::Scope;
+use super::values::convert;
 use super::Gen;
 use crate::{mangle, PouMethod};
 use diagnostics::{code, Diagnostic};
