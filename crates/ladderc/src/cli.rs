@@ -323,6 +323,12 @@ fn build(
 ) -> i32 {
     let mut s = pipeline::Session::new();
     match emit_kind {
+        Emit::Il if report.is_some() => {
+            eprintln!(
+                "error: `--report` describes a C build: use it with `-o DIR`, not `--emit il`"
+            );
+            EXIT_USAGE
+        }
         Emit::Il => {
             let lowered = s.lower(&c.inputs, &options(c));
             let code = finish(s, format);

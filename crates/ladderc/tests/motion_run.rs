@@ -451,3 +451,15 @@ fn groups_of_the_axis_file_are_created_at_init_and_declared_as_globals() {
         "cycle,time_ms,X1.AxisNo,Y9.AxisNo,G1.GroupNo,axis.Y9.position\n0,0,0,1,0,0\n1,10,0,1,0,0\n"
     );
 }
+
+#[test]
+fn report_with_emit_il_is_a_usage_error() {
+    let (_dir, src) = project();
+    let out = ladderc()
+        .args(["build", "--emit", "il", "--report", "json"])
+        .arg(&src)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--report"));
+}
