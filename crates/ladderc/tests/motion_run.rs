@@ -463,3 +463,35 @@ fn report_with_emit_il_is_a_usage_error() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--report"));
 }
+
+#[test]
+fn a_ladder_program_with_motion_blocks_runs_identically_with_both_methods() {
+    // tests/motion/ladder_move.axes.json is found beside the XML by default
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/motion/ladder_move.xml");
+    let dir = tempfile::tempdir().unwrap();
+    let mut traces = Vec::new();
+    for s in ["il", "template"] {
+        let trace = dir.path().join(format!("{s}.csv"));
+        let out = ladderc()
+            .arg("run")
+            .arg(&src)
+            .args(["--cycles", "260", "--strategy", s, "--sanitize", "--trace"])
+            .arg(&trace)
+            .args([
+                "--watch",
+                "lmove.Powered,lmove.Done,axis.X1.position,axis.X1.velocity",
+            ])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        traces.push(std::fs::read_to_string(&trace).unwrap());
+    }
+    assert_eq!(traces[0], traces[1]);
+    let done = column(&traces[0], "lmove.Done");
+    let k = done.iter().position(|&d| d == 1.0).expect("Done rises");
+    assert_eq!(column(&traces[0], "axis.X1.position")[k], 100.0);
+}
