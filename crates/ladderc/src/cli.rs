@@ -55,6 +55,12 @@ pub struct CompileArgs {
     /// beside the first input, when it exists.
     #[arg(long)]
     pub axes: Option<PathBuf>,
+    /// Also write a PMAC motion program of the program's constant MC_MoveAbsolute/MC_MoveRelative moves.
+    #[arg(long)]
+    pub pmac: Option<PathBuf>,
+    /// PMAC dialect of `--pmac`: `turbo` or `power`.
+    #[arg(long, default_value = "turbo")]
+    pub pmac_dialect: String,
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
@@ -309,6 +315,8 @@ fn check(inputs: &[PathBuf], format: Format) -> i32 {
         strategy: StrategyArg::Template,
         templates: None,
         axes: None,
+        pmac: None,
+        pmac_dialect: "turbo".into(),
     };
     let _ = s.lower(inputs, &options(&c));
     finish(s, format)
@@ -345,10 +353,14 @@ fn build(
                 return EXIT_USAGE;
             };
             let compiled = s.compile(&c.inputs, &options(c));
+            let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
             let code = finish(s, format);
             let Some((lowered, program)) = compiled else {
                 return code;
             };
+            if let Err(code) = write_pmac(c, pmac, code, format) {
+                return code;
+            }
             if report == Some(ReportFormat::Json) {
                 println!("{}", crate::report::json(&lowered, &program));
             }
@@ -370,6 +382,42 @@ fn build(
             code
         }
     }
+}
+
+/// The PMAC program of `--pmac` (diagnostics into the session).
+fn pmac_text(c: &CompileArgs, l: &pipeline::Lowered, s: &mut pipeline::Session) -> Option<String> {
+    c.pmac.as_ref()?;
+    let dialect = match c.pmac_dialect.parse() {
+        Ok(d) => d,
+        Err(e) => {
+            s.diags.push(
+                Diagnostic::error(diagnostics::code::E9002, format!("--pmac-dialect: {e}"))
+                    .with_hint("use turbo or power"),
+            );
+            return None;
+        }
+    };
+    crate::pmac_out::program(&l.source_units, &l.axes, dialect, &mut s.diags)
+}
+
+/// Writes the `--pmac` file. `Err`: the exit code (the session had errors, or writing failed).
+fn write_pmac(c: &CompileArgs, text: Option<String>, code: i32, format: Format) -> Result<(), i32> {
+    let Some(path) = &c.pmac else {
+        return Ok(());
+    };
+    if code != EXIT_OK {
+        return Err(code);
+    }
+    let Some(text) = text else {
+        return Err(EXIT_DIAGNOSTICS);
+    };
+    std::fs::write(path, text).map_err(|e| {
+        io_error(
+            format!("cannot write {}: {e}", path.display()),
+            "check that the directory can be written",
+            format,
+        )
+    })
 }
 
 /// Adds the motion library to the project's files when the program links it (so that the project
@@ -415,10 +463,14 @@ fn run_program(
     let mut opts = options(c);
     opts.cycle_ms = cycle_ms;
     let compiled = s.compile(&c.inputs, &opts);
+    let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
     let code = finish(s, format);
     let Some((lowered, program)) = compiled else {
         return code;
     };
+    if let Err(code) = write_pmac(c, pmac, code, format) {
+        return code;
+    }
     run.cycle_ms = lowered.cycle_ms;
     if plot.is_some() && !run.watch.is_empty() {
         for a in &lowered.axes.axes {

@@ -7,6 +7,7 @@ mod motion_link;
 mod output;
 mod pipeline;
 mod plot;
+mod pmac_out;
 mod report;
 
 fn main() {

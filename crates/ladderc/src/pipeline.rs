@@ -36,6 +36,8 @@ pub struct Session {
 
 /// What a successful front half produced.
 pub struct Lowered {
+    /// The user's units as parsed, before block lowering.
+    pub source_units: Vec<CompilationUnit>,
     /// The user's units after block lowering (without the prelude).
     pub units: Vec<CompilationUnit>,
     /// Units to compile: the post-lowering prelude (when blocks are used) and the user's units.
@@ -170,6 +172,7 @@ impl Session {
             bytes: profile.tm_bytes,
             element_addressing: profile.address_unit == c_backend::AddressUnit::Element,
         };
+        let source_units = user.clone();
         let lowering = if uses_blocks {
             lower::lower(&user, &library, opts.strategy, &window, &mut self.diags)
         } else {
@@ -191,6 +194,7 @@ impl Session {
         }
         all_units.extend(lowering.units.iter().cloned());
         Some(Lowered {
+            source_units,
             units: lowering.units.clone(),
             all_units,
             lowering,

@@ -495,3 +495,35 @@ fn a_ladder_program_with_motion_blocks_runs_identically_with_both_methods() {
     let k = done.iter().position(|&d| d == 1.0).expect("Done rises");
     assert_eq!(column(&traces[0], "axis.X1.position")[k], 100.0);
 }
+
+#[test]
+fn pmac_program_of_the_constant_moves_with_a_warning_for_the_computed_one() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/motion/pmac_moves.il");
+    let dir = tempfile::tempdir().unwrap();
+    let mut texts = Vec::new();
+    for dialect in ["turbo", "power"] {
+        let pmc = dir.path().join(format!("{dialect}.pmc"));
+        let out = ladderc()
+            .args(["--message-format", "short", "build", "-o"])
+            .arg(dir.path().join(format!("out-{dialect}")))
+            .arg(&src)
+            .arg("--pmac")
+            .arg(&pmc)
+            .args(["--pmac-dialect", dialect])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("warning[W5050]") && err.contains(":16:"),
+            "{err}"
+        );
+        texts.push(std::fs::read_to_string(&pmc).unwrap());
+    }
+    // X1 to 100 (its own jerk 1000), Y1 to 50 (no jerk limit: TS0), X1 back by 20 (the axis's jerk 5000)
+    insta::assert_snapshot!(texts.join("\n----\n"));
+}
