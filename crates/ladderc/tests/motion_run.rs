@@ -527,3 +527,32 @@ fn pmac_program_of_the_constant_moves_with_a_warning_for_the_computed_one() {
     // X1 to 100 (its own jerk 1000), Y1 to 50 (no jerk limit: TS0), X1 back by 20 (the axis's jerk 5000)
     insta::assert_snapshot!(texts.join("\n----\n"));
 }
+
+#[test]
+fn blocks_inside_a_function_block_and_global_instances_work_with_both_methods() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/motion/fb_and_global.il");
+    let dir = tempfile::tempdir().unwrap();
+    let mut traces = Vec::new();
+    for s in ["il", "template"] {
+        let trace = dir.path().join(format!("{s}.csv"));
+        let out = ladderc()
+            .arg("run")
+            .arg(&src)
+            .args(["--cycles", "150", "--strategy", s, "--trace"])
+            .arg(&trace)
+            .args([
+                "--watch",
+                "fb_and_global.d,gdone,axis.X1.position,axis.Y1.position",
+            ])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        traces.push(std::fs::read_to_string(&trace).unwrap());
+    }
+    assert_eq!(traces[0], traces[1]);
+    assert!(traces[0].ends_with("149,1490,1,1,20,-5\n"), "{}", traces[0]);
+}
