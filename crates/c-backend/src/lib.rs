@@ -11,6 +11,7 @@
 pub mod ctypes;
 mod emit;
 pub use emit::config_header;
+pub mod extensions;
 pub mod mangle;
 pub mod motion;
 pub mod pipeline;
@@ -18,6 +19,7 @@ pub mod profile;
 pub mod runtime;
 pub mod toolchain;
 
+pub use extensions::{Extensions, MethodFeedback, MethodLocal, PouMethod};
 pub use pipeline::{build_il, compile_il};
 pub use profile::{AddressUnit, BitNumbering, ByteOrder, Located, ProfileError, TargetProfile};
 pub use toolchain::{build, build_with, run, BuildError, BuildOptions, RunOptions, RunOutput};
@@ -70,51 +72,6 @@ impl CProgram {
 
 /// The name of the executable [`build`] produces (and the Makefile's target).
 pub const EXECUTABLE: &str = "program";
-
-/// What the parameter-passing and motion stages add to a program (see [`generate_with`]).
-#[derive(Debug, Clone, Default)]
-pub struct Extensions {
-    /// The motion runtime (engine, axes, trace columns); `None` when the program uses no motion block.
-    pub motion: Option<motion::MotionRuntime>,
-    /// Template-method functions, each rendered inside its POU (see [`PouMethod`]).
-    pub methods: Vec<PouMethod>,
-}
-
-/// A function synthesised for one block call by the parameter-template method, rendered as
-/// `static void <name>(<POU struct> *self)`: head locals, template locals, body, feedback tail.
-#[derive(Debug, Clone)]
-pub struct PouMethod {
-    /// The C name (a plain identifier), called by `FUNC <name>()` in the POU.
-    pub name: String,
-    /// The PROGRAM or FUNCTION_BLOCK whose variables the head reads and the tail writes.
-    pub pou: String,
-    pub func_num: u32,
-    pub head: Vec<MethodLocal>,
-    /// Extra locals of the body: `(C type, name)`.
-    pub locals: Vec<(String, String)>,
-    pub body: String,
-    pub tail: Vec<MethodFeedback>,
-    pub span: diagnostics::Span,
-}
-
-/// `c_type local = (c_type)<value of source>;` (`boolean`: a BOOL kept in a 0/1 `uint8_t`).
-#[derive(Debug, Clone)]
-pub struct MethodLocal {
-    pub c_type: String,
-    pub local: String,
-    pub boolean: bool,
-    pub source: il_frontend::ast::Operand,
-}
-
-/// `<target> = local;` (`negated`: `NOT Done => x`, for booleans).
-#[derive(Debug, Clone)]
-pub struct MethodFeedback {
-    pub target: il_frontend::ast::Operand,
-    pub local: String,
-    pub c_type: String,
-    pub boolean: bool,
-    pub negated: bool,
-}
 
 /// Generates the C project. Returns `None` when an error was reported (E2xxx; existing errors in `diags`
 /// from earlier stages also stop generation, since the model may then be incomplete).
