@@ -10,6 +10,11 @@
  * Runtime error flags (division by zero, saturated conversions) are reported on stderr at the end. */
 #include "ladderc_rt.h"
 
+/* The default scan cycle (--cycle-ms); a program with motion defines it as its engine cycle. */
+#ifndef LADDERC_DEFAULT_CYCLE_NS
+#define LADDERC_DEFAULT_CYCLE_NS 10000000
+#endif
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <ctype.h>
@@ -219,7 +224,7 @@ static void print_time_ms(FILE *f, int64_t ns) {
 
 int main(int argc, char **argv) {
     unsigned long long cycles = 1;
-    int64_t cycle_ns = 10000000;
+    int64_t cycle_ns = LADDERC_DEFAULT_CYCLE_NS;
     const char *stimulus_path = NULL, *trace_path = NULL, *watch_list = NULL;
     int list = 0, i;
     size_t row_count = 0, next_row = 0, watch_count = 0, w;

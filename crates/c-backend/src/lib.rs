@@ -11,12 +11,15 @@
 pub mod ctypes;
 mod emit;
 pub use emit::config_header;
+pub mod extensions;
 pub mod mangle;
+pub mod motion;
 pub mod pipeline;
 pub mod profile;
 pub mod runtime;
 pub mod toolchain;
 
+pub use extensions::{Extensions, MethodFeedback, MethodLocal, PouMethod};
 pub use pipeline::{build_il, compile_il};
 pub use profile::{AddressUnit, BitNumbering, ByteOrder, Located, ProfileError, TargetProfile};
 pub use toolchain::{build, build_with, run, BuildError, BuildOptions, RunOptions, RunOutput};
@@ -45,6 +48,9 @@ pub struct Options {
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct CProgram {
     pub files: Vec<(String, String)>,
+    /// Linker arguments after the sources (e.g. `libmotion_lib.a -lpthread -ldl -lm`), relative to the
+    /// project directory; files named here are not generated text and are put there by the caller.
+    pub link: Vec<String>,
 }
 
 impl CProgram {
@@ -76,6 +82,18 @@ pub fn generate(
     opts: &Options,
     diags: &mut Diagnostics,
 ) -> Option<CProgram> {
+    generate_with(units, model, profile, opts, &Extensions::default(), diags)
+}
+
+/// [`generate`] with the motion runtime and template-method functions.
+pub fn generate_with(
+    units: &[CompilationUnit],
+    model: &Model,
+    profile: &TargetProfile,
+    opts: &Options,
+    ext: &Extensions,
+    diags: &mut Diagnostics,
+) -> Option<CProgram> {
     if diags.has_errors() {
         return None;
     }
@@ -87,12 +105,28 @@ pub fn generate(
         return None;
     }
     let before = diags.error_count();
-    let files = emit::generate(units, model, profile, opts, diags);
+    let files = emit::generate(units, model, profile, opts, ext, diags);
     if diags.error_count() > before {
         return None;
     }
-    let mut program = CProgram { files };
+    let mut program = CProgram {
+        files,
+        link: Vec::new(),
+    };
     program.files.extend(runtime::files());
+    if let Some(m) = &ext.motion {
+        if let Some((_, h)) = program
+            .files
+            .iter_mut()
+            .find(|(p, _)| p == "ladderc_config.h")
+        {
+            if let Some(end) = h.rfind("#endif") {
+                h.insert_str(end, &m.config_define());
+            }
+        }
+        program.files.extend(m.files());
+        program.link = motion::link_args(motion::STATICLIB);
+    }
     program
         .files
         .push(("Makefile".into(), toolchain::makefile(&program)));

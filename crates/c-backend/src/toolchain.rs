@@ -47,7 +47,7 @@ pub fn makefile(program: &CProgram) -> String {
          HDRS = {hdrs}\n\
          \n\
          {exe}: $(SRCS) $(HDRS)\n\
-         \t$(CC) -std=c99 $(CFLAGS) -o $@ $(SRCS) -lm\n\
+         \t$(CC) -std=c99 $(CFLAGS) -o $@ $(SRCS) {link}\n\
          \n\
          clean:\n\
          \trm -f {exe}\n\
@@ -56,6 +56,11 @@ pub fn makefile(program: &CProgram) -> String {
         exe = EXECUTABLE,
         srcs = sources.join(" "),
         hdrs = headers.join(" "),
+        link = if program.link.is_empty() {
+            "-lm".to_string()
+        } else {
+            program.link.join(" ")
+        },
     )
 }
 
@@ -104,6 +109,7 @@ pub fn build_with(
         .arg("-o")
         .arg(&exe)
         .args(program.sources().map(|s| dir.join(s)))
+        .args(&program.link)
         .arg("-lm")
         .current_dir(dir);
     let out = cmd.output().map_err(|e| BuildError::Spawn {

@@ -51,6 +51,16 @@ pub struct CompileArgs {
     /// A directory of extra parameter templates (`*.xml`); they replace built-ins of the same name.
     #[arg(long)]
     pub templates: Option<PathBuf>,
+    /// Axis configuration (JSON, see crates/ladderc/AXES.md); default: `<first input stem>.axes.json`
+    /// beside the first input, when it exists.
+    #[arg(long)]
+    pub axes: Option<PathBuf>,
+    /// Also write a PMAC motion program of the program's constant MC_MoveAbsolute/MC_MoveRelative moves.
+    #[arg(long)]
+    pub pmac: Option<PathBuf>,
+    /// PMAC dialect of `--pmac`: `turbo` or `power`.
+    #[arg(long, default_value = "turbo")]
+    pub pmac_dialect: String,
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
@@ -71,6 +81,11 @@ pub enum Emit {
     Il,
 }
 
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
+pub enum ReportFormat {
+    Json,
+}
+
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Check sources: parse and run the semantic checks, print diagnostics.
@@ -87,6 +102,10 @@ pub enum Command {
         output: Option<PathBuf>,
         #[arg(long, value_enum, default_value_t = Emit::C)]
         emit: Emit,
+        /// Print a report on standard output: per PLCopen block type its method, calls, TM bytes,
+        /// IL instructions and generated C bytes (paper A's comparison).
+        #[arg(long, value_enum)]
+        report: Option<ReportFormat>,
     },
     /// Build with the system C compiler and run scan cycles.
     Run {
@@ -95,9 +114,9 @@ pub enum Command {
         /// Number of scan cycles.
         #[arg(long, default_value_t = 10)]
         cycles: u64,
-        /// Cycle time in milliseconds.
-        #[arg(long, default_value_t = 10.0)]
-        cycle_ms: f64,
+        /// Cycle time in milliseconds (default: the axis configuration's `cycle_ms`, else 10).
+        #[arg(long)]
+        cycle_ms: Option<f64>,
         /// CSV rows `cycle,variable,value`, applied before that cycle.
         #[arg(long)]
         stimulus: Option<PathBuf>,
@@ -110,6 +129,10 @@ pub enum Command {
         /// Build with -fsanitize=address,undefined.
         #[arg(long)]
         sanitize: bool,
+        /// Draw position and velocity of every axis over time into this SVG file (block starts and
+        /// ends marked from watched `.busy` / `.done` columns).
+        #[arg(long)]
+        plot: Option<PathBuf>,
     },
     /// Motion planning tools.
     #[command(subcommand)]
@@ -202,7 +225,14 @@ pub fn main() -> i32 {
             compile,
             output,
             emit,
-        } => build(&compile, output.as_deref(), emit, cli.message_format),
+            report,
+        } => build(
+            &compile,
+            output.as_deref(),
+            emit,
+            report,
+            cli.message_format,
+        ),
         Command::Run {
             compile,
             cycles,
@@ -211,15 +241,16 @@ pub fn main() -> i32 {
             trace,
             watch,
             sanitize,
+            plot,
         } => {
             let run = c_backend::RunOptions {
                 cycles,
-                cycle_ms,
+                cycle_ms: cycle_ms.unwrap_or(pipeline::DEFAULT_CYCLE_MS),
                 stimulus,
                 trace,
                 watch,
             };
-            run_program(&compile, run, sanitize, cli.message_format)
+            run_program(&compile, cycle_ms, run, sanitize, plot, cli.message_format)
         }
     }
 }
@@ -272,6 +303,8 @@ fn drive(cmd: DriveCommand, format: MessageFormat) -> i32 {
 
 fn options(c: &CompileArgs) -> pipeline::Options {
     pipeline::Options {
+        axes: c.axes.clone(),
+        cycle_ms: None,
         profile: c.profile.clone(),
         strategy: match c.strategy {
             StrategyArg::Il => Strategy::Il,
@@ -306,6 +339,9 @@ fn check(inputs: &[PathBuf], format: Format) -> i32 {
         profile: None,
         strategy: StrategyArg::Template,
         templates: None,
+        axes: None,
+        pmac: None,
+        pmac_dialect: "turbo".into(),
     };
     let _ = s.lower(inputs, &options(&c));
     finish(s, format)
@@ -315,10 +351,17 @@ fn build(
     c: &CompileArgs,
     output: Option<&std::path::Path>,
     emit_kind: Emit,
+    report: Option<ReportFormat>,
     format: Format,
 ) -> i32 {
     let mut s = pipeline::Session::new();
     match emit_kind {
+        Emit::Il if report.is_some() => {
+            eprintln!(
+                "error: `--report` describes a C build: use it with `-o DIR`, not `--emit il`"
+            );
+            EXIT_USAGE
+        }
         Emit::Il => {
             let lowered = s.lower(&c.inputs, &options(c));
             let code = finish(s, format);
@@ -335,15 +378,25 @@ fn build(
                 return EXIT_USAGE;
             };
             let compiled = s.compile(&c.inputs, &options(c));
+            let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
             let code = finish(s, format);
-            let Some((_, program)) = compiled else {
+            let Some((lowered, program)) = compiled else {
                 return code;
             };
-            let files: Vec<(String, Vec<u8>)> = program
+            if let Err(code) = write_pmac(c, pmac, code, format) {
+                return code;
+            }
+            if report == Some(ReportFormat::Json) {
+                println!("{}", crate::report::json(&lowered, &program));
+            }
+            let mut files: Vec<(String, Vec<u8>)> = program
                 .files
                 .iter()
                 .map(|(p, c)| (p.clone(), c.clone().into_bytes()))
                 .collect();
+            if let Err(code) = add_staticlib(&program, &mut files, format) {
+                return code;
+            }
             if let Err(e) = output::write_dir_atomically(dir, &files) {
                 return io_error(
                     format!("cannot write {}: {e}", dir.display()),
@@ -356,18 +409,108 @@ fn build(
     }
 }
 
+/// The PMAC program of `--pmac` (diagnostics into the session).
+fn pmac_text(c: &CompileArgs, l: &pipeline::Lowered, s: &mut pipeline::Session) -> Option<String> {
+    c.pmac.as_ref()?;
+    let dialect = match c.pmac_dialect.parse() {
+        Ok(d) => d,
+        Err(e) => {
+            s.diags.push(
+                Diagnostic::error(diagnostics::code::E9002, format!("--pmac-dialect: {e}"))
+                    .with_hint("use turbo or power"),
+            );
+            return None;
+        }
+    };
+    crate::pmac_out::program(&l.source_units, &l.axes, dialect, &mut s.diags)
+}
+
+/// Writes the `--pmac` file. `Err`: the exit code (the session had errors, or writing failed).
+fn write_pmac(c: &CompileArgs, text: Option<String>, code: i32, format: Format) -> Result<(), i32> {
+    let Some(path) = &c.pmac else {
+        return Ok(());
+    };
+    if code != EXIT_OK {
+        return Err(code);
+    }
+    let Some(text) = text else {
+        return Err(EXIT_DIAGNOSTICS);
+    };
+    std::fs::write(path, text).map_err(|e| {
+        io_error(
+            format!("cannot write {}: {e}", path.display()),
+            "check that the directory can be written",
+            format,
+        )
+    })
+}
+
+/// Adds the motion library to the project's files when the program links it (so that the project
+/// builds on its own with `make`). `Err`: the exit code after reporting E9050 or an I/O error.
+fn add_staticlib(
+    program: &c_backend::CProgram,
+    files: &mut Vec<(String, Vec<u8>)>,
+    format: Format,
+) -> Result<(), i32> {
+    let lib = c_backend::motion::STATICLIB;
+    if !program.link.iter().any(|l| l == lib) {
+        return Ok(());
+    }
+    let path = match crate::motion_link::find() {
+        Ok(p) => p,
+        Err(d) => {
+            emit(&SourceMap::new(), &[*d], format);
+            return Err(EXIT_USAGE);
+        }
+    };
+    match std::fs::read(&path) {
+        Ok(bytes) => {
+            files.push((lib.to_string(), bytes));
+            Ok(())
+        }
+        Err(e) => Err(io_error(
+            format!("cannot read {}: {e}", path.display()),
+            "check LADDERC_MOTION_LIB",
+            format,
+        )),
+    }
+}
+
 fn run_program(
     c: &CompileArgs,
+    cycle_ms: Option<f64>,
     mut run: c_backend::RunOptions,
     sanitize: bool,
+    plot: Option<PathBuf>,
     format: Format,
 ) -> i32 {
     let mut s = pipeline::Session::new();
-    let compiled = s.compile(&c.inputs, &options(c));
+    let mut opts = options(c);
+    opts.cycle_ms = cycle_ms;
+    let compiled = s.compile(&c.inputs, &opts);
+    let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
     let code = finish(s, format);
-    let Some((_, program)) = compiled else {
+    let Some((lowered, program)) = compiled else {
         return code;
     };
+    if let Err(code) = write_pmac(c, pmac, code, format) {
+        return code;
+    }
+    run.cycle_ms = lowered.cycle_ms;
+    if plot.is_some() && !run.watch.is_empty() {
+        for a in &lowered.axes.axes {
+            for sig in ["position", "velocity"] {
+                let col = format!("axis.{}.{sig}", a.name);
+                if !run.watch.iter().any(|w| w.eq_ignore_ascii_case(&col)) {
+                    run.watch.push(col);
+                }
+            }
+        }
+    }
+    let mut extra = Vec::new();
+    if let Err(code) = add_staticlib(&program, &mut extra, format) {
+        return code;
+    }
     let work = match tempfile::Builder::new().prefix("ladderc-run-").tempdir() {
         Ok(w) => w,
         Err(e) => {
@@ -378,6 +521,15 @@ fn run_program(
             )
         }
     };
+    for (name, bytes) in &extra {
+        if let Err(e) = std::fs::write(work.path().join(name), bytes) {
+            return io_error(
+                format!("cannot write the build directory: {e}"),
+                "check TMPDIR",
+                format,
+            );
+        }
+    }
     let mut bopts = c_backend::BuildOptions::default();
     if sanitize {
         bopts.extra_flags = vec![
@@ -413,6 +565,19 @@ fn run_program(
     };
     print!("{}", out.stdout);
     eprint!("{}", out.stderr);
+    if let (true, Some(svg)) = (out.success(), &plot) {
+        let text = match &run.trace {
+            Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
+            None => out.stdout.clone(),
+        };
+        if let Err(e) = crate::plot::svg(&text, svg) {
+            return io_error(
+                format!("cannot plot into {}: {e}", svg.display()),
+                "the program needs configured axes (--axes) for a plot",
+                format,
+            );
+        }
+    }
     match (out.success(), &final_trace, &run.trace) {
         (true, Some(dst), Some(tmp)) => {
             if let Err(e) = std::fs::rename(tmp, dst) {

@@ -6,6 +6,7 @@
 //! prelude -> parameter passing (block calls by the chosen strategy) -> semantic model of the lowered
 //! program -> C. Invariant: a stage runs only when the ones before it reported no error.
 
+use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics, SourceMap};
 use il_frontend::ast::CompilationUnit;
 use param_passing::library::Library;
@@ -16,7 +17,17 @@ pub struct Options {
     pub profile: Option<PathBuf>,
     pub strategy: Strategy,
     pub templates: Option<PathBuf>,
+    /// The axis configuration; `None`: `<first input stem>.axes.json` beside the first input, if present.
+    pub axes: Option<PathBuf>,
+    /// The scan cycle `run` uses (`--cycle-ms`), when given; checked against the configuration's.
+    pub cycle_ms: Option<f64>,
 }
+
+/// The motion library's C header, copied into generated projects that use motion blocks.
+pub const MOTION_HEADER: &str = include_str!("../../motion-lib/include/motion_lib.h");
+
+/// The scan cycle when neither `--cycle-ms` nor the axis configuration gives one.
+pub const DEFAULT_CYCLE_MS: f64 = 10.0;
 
 pub struct Session {
     pub map: SourceMap,
@@ -25,6 +36,8 @@ pub struct Session {
 
 /// What a successful front half produced.
 pub struct Lowered {
+    /// The user's units as parsed, before block lowering.
+    pub source_units: Vec<CompilationUnit>,
     /// The user's units after block lowering (without the prelude).
     pub units: Vec<CompilationUnit>,
     /// Units to compile: the post-lowering prelude (when blocks are used) and the user's units.
@@ -32,6 +45,12 @@ pub struct Lowered {
     pub lowering: lower::Lowered,
     pub library: Library,
     pub profile: c_backend::TargetProfile,
+    /// Whether the program uses PLCopen blocks (then the motion runtime is linked).
+    pub uses_blocks: bool,
+    /// The axis configuration (the default, empty one when there is no file).
+    pub axes: AxisConfig,
+    /// The scan cycle = the motion engine's cycle.
+    pub cycle_ms: f64,
 }
 
 impl Session {
@@ -112,13 +131,36 @@ impl Session {
         if self.diags.has_errors() {
             return None;
         }
+        let axes = self.axis_config(paths, opts.axes.as_deref())?;
         let uses_blocks = uses_library_blocks(&user, &library);
-        // Check the user's program (with the block interfaces when it uses blocks).
+        let cycle_ms = match (axes.cycle_ms, opts.cycle_ms) {
+            (Some(a), Some(c)) if (a - c).abs() > 1e-9 * a.abs().max(1.0) => {
+                self.diags.push(
+                    Diagnostic::error(
+                        code::E5053,
+                        format!(
+                            "--cycle-ms {c} differs from the axis configuration's cycle_ms {a}"
+                        ),
+                    )
+                    .with_hint(
+                        "leave out --cycle-ms, or make both equal: the engine steps once per scan",
+                    ),
+                );
+                return None;
+            }
+            (Some(a), _) => a,
+            (None, Some(c)) => c,
+            (None, None) => DEFAULT_CYCLE_MS,
+        };
+        // Check the user's program (with the block interfaces and the axes when it uses blocks).
         let mut checked = Vec::new();
+        let axes_il = axes.globals_il();
         if uses_blocks {
             let pre = param_passing::prelude::before_lowering(&library);
             let f = self.map.add("<PLCopen blocks>", pre.clone());
             checked.push(il_frontend::parse(f, &pre, &mut self.diags));
+            let f = self.map.add("<axis configuration>", axes_il.clone());
+            checked.push(il_frontend::parse(f, &axes_il, &mut self.diags));
         }
         checked.extend(user.iter().cloned());
         il_frontend::sema::analyze(&checked, &mut self.diags);
@@ -130,6 +172,7 @@ impl Session {
             bytes: profile.tm_bytes,
             element_addressing: profile.address_unit == c_backend::AddressUnit::Element,
         };
+        let source_units = user.clone();
         let lowering = if uses_blocks {
             lower::lower(&user, &library, opts.strategy, &window, &mut self.diags)
         } else {
@@ -146,15 +189,46 @@ impl Session {
             let post = param_passing::prelude::after_lowering(&library);
             let f = self.map.add("<PLCopen block instances>", post.clone());
             all_units.push(il_frontend::parse(f, &post, &mut self.diags));
+            let f = self.map.add("<axis configuration>", axes_il.clone());
+            all_units.push(il_frontend::parse(f, &axes_il, &mut self.diags));
         }
         all_units.extend(lowering.units.iter().cloned());
         Some(Lowered {
+            source_units,
             units: lowering.units.clone(),
             all_units,
             lowering,
             library,
             profile,
+            uses_blocks,
+            axes,
+            cycle_ms,
         })
+    }
+
+    /// The axis configuration: `explicit`, else `<stem>.axes.json` beside the first input when it
+    /// exists, else the empty default. `None`: it could not be read or had errors.
+    fn axis_config(&mut self, paths: &[PathBuf], explicit: Option<&Path>) -> Option<AxisConfig> {
+        let path = match explicit {
+            Some(p) => p.to_path_buf(),
+            None => match paths.first().and_then(|p| default_axes_path(p)) {
+                Some(p) if p.is_file() => p,
+                _ => return Some(AxisConfig::default()),
+            },
+        };
+        let text = match std::fs::read_to_string(&path) {
+            Ok(t) => t,
+            Err(e) => {
+                self.diags.push(
+                    Diagnostic::error(code::E9001, format!("cannot read {}: {e}", path.display()))
+                        .with_hint("check the --axes path"),
+                );
+                return None;
+            }
+        };
+        let text = text.strip_prefix('\u{feff}').unwrap_or(&text).to_string();
+        let f = self.map.add(path.display().to_string(), text);
+        AxisConfig::parse(&self.map, f, &mut self.diags)
     }
 
     /// The whole pipeline to a C project.
@@ -170,14 +244,71 @@ impl Session {
         }
         let embedded = embedded_functions(&lowered);
         let copts = c_backend::Options { embedded };
-        let program = c_backend::generate(
+        let ext = c_backend::Extensions {
+            motion: lowered
+                .uses_blocks
+                .then(|| lowered.axes.runtime(lowered.cycle_ms, MOTION_HEADER)),
+            methods: lowered
+                .lowering
+                .synthesized
+                .iter()
+                .map(pou_method)
+                .collect(),
+        };
+        let program = c_backend::generate_with(
             &lowered.all_units,
             &model,
             &lowered.profile,
             &copts,
+            &ext,
             &mut self.diags,
         )?;
         Some((lowered, program))
+    }
+}
+
+/// `<stem>.axes.json` beside `input`.
+pub fn default_axes_path(input: &Path) -> Option<PathBuf> {
+    let stem = input.file_stem()?.to_str()?;
+    Some(input.with_file_name(format!("{stem}.axes.json")))
+}
+
+/// A template-method function for the C backend.
+fn pou_method(s: &lower::Synthesized) -> c_backend::PouMethod {
+    use param_passing::template::TypeClass;
+    c_backend::PouMethod {
+        name: s.name.clone(),
+        pou: s.pou.clone(),
+        func_num: s.func_num,
+        head: s
+            .head
+            .iter()
+            .map(|h| c_backend::MethodLocal {
+                c_type: h.c_type.to_string(),
+                local: h.local.clone(),
+                boolean: h.class == TypeClass::Bool,
+                source: h.source.clone(),
+            })
+            .collect(),
+        locals: s.locals.clone(),
+        body: s.body.clone(),
+        tail: s
+            .tail
+            .iter()
+            .map(|f| c_backend::MethodFeedback {
+                target: f.target.clone(),
+                local: f.local.clone(),
+                c_type: s
+                    .head
+                    .iter()
+                    .find(|h| h.local == f.local)
+                    .map_or("uint8_t", |h| h.c_type)
+                    .to_string(),
+                boolean: f.class == TypeClass::Bool,
+                negated: f.negated,
+            })
+            .collect(),
+        span: s.call_span,
     }
 }
 

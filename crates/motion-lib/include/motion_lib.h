@@ -1110,6 +1110,20 @@ int32_t mc_axis_state(struct McEngine *engine, uint32_t axis);
 double mc_axis_set_position(struct McEngine *engine, uint32_t axis);
 
 /**
+ * Set velocity of an axis (user units per second, override included; 0 for a bad index).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_set_velocity(struct McEngine *engine, uint32_t axis);
+
+/**
+ * Set acceleration of an axis (user units per second squared; 0 for a bad index).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_set_acceleration(struct McEngine *engine, uint32_t axis);
+
+/**
  * State of a group (0 GroupDisabled .. 5 GroupErrorStop), -1 for a bad index.
  * # Safety
  * See the module contract: pointers are NULL or valid.

@@ -200,6 +200,26 @@ pub unsafe extern "C" fn mc_axis_set_position(engine: *mut McEngine, axis: u32) 
         .unwrap_or(0.0)
 }
 
+/// Set velocity of an axis (user units per second, override included; 0 for a bad index).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_set_velocity(engine: *mut McEngine, axis: u32) -> f64 {
+    unsafe { eng(engine) }
+        .and_then(|e| e.set_velocity_of(axis as usize).ok())
+        .unwrap_or(0.0)
+}
+
+/// Set acceleration of an axis (user units per second squared; 0 for a bad index).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_set_acceleration(engine: *mut McEngine, axis: u32) -> f64 {
+    unsafe { eng(engine) }
+        .and_then(|e| e.set_acceleration_of(axis as usize).ok())
+        .unwrap_or(0.0)
+}
+
 /// State of a group (0 GroupDisabled .. 5 GroupErrorStop), -1 for a bad index.
 /// # Safety
 /// See the module contract: pointers are NULL or valid.

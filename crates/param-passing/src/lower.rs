@@ -579,6 +579,7 @@ impl PouLowering<'_> {
                     if guarded {
                         out.push(IlStmt::Label(id(&skip, span)));
                     }
+                    distinct_spans(&mut out[start..], span);
                     let n = out[start..]
                         .iter()
                         .filter(|s| matches!(s, IlStmt::Instr(_)))
@@ -787,6 +788,34 @@ impl PouLowering<'_> {
             },
             span,
         ));
+    }
+}
+
+/// Gives every instruction lowered from one call its own span inside the call's span: the semantic model
+/// keys its per-instruction information by span, so instructions sharing one would share (and overwrite)
+/// their types. The spans are `(start + a, end - b)` with `a + b <= len`, enumerated in order; beyond
+/// those (a call shorter than its lowering, impossible for real calls) spans repeat the whole call.
+fn distinct_spans(stmts: &mut [IlStmt], call: Span) {
+    let len = call.end.saturating_sub(call.start);
+    let (mut a, mut b) = (0u32, 0u32);
+    for s in stmts {
+        let IlStmt::Instr(i) = s else { continue };
+        i.span = if a + b <= len {
+            Span {
+                file: call.file,
+                start: call.start + a,
+                end: call.end - b,
+            }
+        } else {
+            call
+        };
+        if a == 0 {
+            a = b + 1;
+            b = 0;
+        } else {
+            a -= 1;
+            b += 1;
+        }
     }
 }
 

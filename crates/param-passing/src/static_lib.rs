@@ -91,7 +91,9 @@ pub fn library_c<'a>(
 ) -> String {
     let mut c = String::from(
         "/* Static library of the IL-instruction method (generated from templates/). */\n\
-         #include \"ladderc_rt.h\"\n#include \"motion_lib.h\"\n\n",
+         #include \"ladderc_rt.h\"\n#include \"motion_lib.h\"\n\n\
+         /* The program's motion engine (ladderc_motion.c). */\n\
+         struct McEngine *ladderc_motion_engine(void);\n\n",
     );
     for u in used {
         let _ = writeln!(c, "#define {}", guard(u));

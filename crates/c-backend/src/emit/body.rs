@@ -203,6 +203,12 @@ impl<'a> Gen<'a> {
                 };
                 self.conditional(b, i, *cond, &ret);
             }
+            InstrKind::EmbeddedC { name } if self.is_method(name) => {
+                let call = self.method_call(name, b.scope.pou.map(|p| p.1));
+                if let Some(call) = call.filter(|c| !c.is_empty()) {
+                    b.line(&call);
+                }
+            }
             InstrKind::EmbeddedC { name } => match self.embedded.get(&name.key()) {
                 Some(c) => {
                     let c = c.clone();

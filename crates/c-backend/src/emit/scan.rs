@@ -111,6 +111,9 @@ impl Gen<'_> {
         }
         // init
         c.push_str("\nvoid ladderc_program_init(void) {\n");
+        if self.motion.is_some() {
+            c.push_str("    ladderc_motion_init();\n");
+        }
         for i in 0..self.model.globals.len() {
             let v = self.model.globals[i].clone();
             self.init_global(c, &v, mangle::global_free(&v.name));
@@ -192,6 +195,9 @@ impl Gen<'_> {
             if background {
                 self.run_instance(c, inst, &ast_configs, 1);
             }
+        }
+        if self.motion.is_some() {
+            c.push_str("    ladderc_motion_step();\n");
         }
         c.push_str("}\n\n");
         self.var_table(c, &instances);
@@ -362,6 +368,9 @@ impl Gen<'_> {
                 let lv = format!("{}.{}", inst.c_name, mangle::var(&v.name));
                 self.watch_var(v, name, lv, &mut entries);
             }
+        }
+        if let Some(m) = &self.motion {
+            entries.extend(m.watch_entries());
         }
         c.push_str("const ladderc_var ladderc_vars[] = {\n");
         if entries.is_empty() {

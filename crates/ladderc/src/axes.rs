@@ -1,0 +1,395 @@
+//! The axis configuration of a project (`--axes FILE`, default `<first input stem>.axes.json`).
+//!
+//! Input: JSON text (schema below, documented in crates/ladderc/AXES.md). Output: an [`AxisConfig`] with
+//! the engine's cycle time and queue depth, the axes (limits in user units) and the groups, or E505x
+//! diagnostics pointing into the file (JSON errors at serde's line and column). Invariants: axis and
+//! group names are IEC identifiers, unique (case-insensitively) among axes and groups; every limit is
+//! finite; axis `i` becomes the global `AXIS_REF` named like it with `AxisNo := i`, group `j` the global
+//! `AXES_GROUP_REF` with `GroupNo := j` ([`AxisConfig::globals_il`]).
+//!
+//! ```json
+//! { "cycle_ms": 1.0, "queue_depth": 16,
+//!   "axes": [ { "name": "X1", "unit": "mm", "counts_per_unit": 1000,
+//!               "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0,
+//!               "software_limits": { "negative": -500, "positive": 500 },
+//!               "modulo_period": 0, "following_error_limit": 0 } ],
+//!   "groups": [ { "name": "G1", "axes": [ { "axis": "X1", "identity": "X" } ] } ] }
+//! ```
+
+use diagnostics::{code, Diagnostic, Diagnostics, FileId, SourceMap, Span};
+use serde::Deserialize;
+use std::fmt::Write as _;
+
+fn default_queue_depth() -> u32 {
+    16
+}
+fn default_counts() -> f64 {
+    1.0
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileRepr {
+    #[serde(default)]
+    cycle_ms: Option<f64>,
+    #[serde(default = "default_queue_depth")]
+    queue_depth: u32,
+    #[serde(default)]
+    axes: Vec<AxisRepr>,
+    #[serde(default)]
+    groups: Vec<GroupRepr>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AxisRepr {
+    name: String,
+    #[serde(default)]
+    unit: Option<String>,
+    #[serde(default = "default_counts")]
+    counts_per_unit: f64,
+    velocity: f64,
+    acceleration: f64,
+    deceleration: f64,
+    #[serde(default)]
+    jerk: f64,
+    #[serde(default)]
+    software_limits: Option<SwLimits>,
+    #[serde(default)]
+    modulo_period: f64,
+    #[serde(default)]
+    following_error_limit: f64,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SwLimits {
+    negative: f64,
+    positive: f64,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct GroupRepr {
+    name: String,
+    axes: Vec<MemberRepr>,
+}
+
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MemberRepr {
+    axis: String,
+    identity: String,
+}
+
+/// One configured axis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    pub name: String,
+    pub unit: Option<String>,
+    /// Encoder counts per user unit (for drives and the PMAC backend; the engine works in user units).
+    pub counts_per_unit: f64,
+    pub limits: c_backend::motion::MotionAxis,
+}
+
+/// The axis configuration of a project.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxisConfig {
+    /// The engine (= scan) cycle; `None`: the scan cycle of `run` (`--cycle-ms`, default 10 ms).
+    pub cycle_ms: Option<f64>,
+    pub queue_depth: u32,
+    pub axes: Vec<Axis>,
+    pub groups: Vec<c_backend::motion::MotionGroup>,
+}
+
+impl Default for AxisConfig {
+    fn default() -> Self {
+        AxisConfig {
+            cycle_ms: None,
+            queue_depth: default_queue_depth(),
+            axes: Vec::new(),
+            groups: Vec::new(),
+        }
+    }
+}
+
+/// Group identities: `X` is 0, `Y` 1, `Z` 2, then `A`, `B`, `C` (PLCopen IdentInGroup).
+const IDENTITIES: [&str; 6] = ["X", "Y", "Z", "A", "B", "C"];
+
+fn is_identifier(s: &str) -> bool {
+    let mut c = s.chars();
+    matches!(c.next(), Some(ch) if ch.is_ascii_alphabetic() || ch == '_')
+        && c.all(|ch| ch.is_ascii_alphanumeric() || ch == '_')
+        && !s.contains("__")
+}
+
+/// The span of the first `"text"` string in the file after byte `from` (the whole file when absent).
+fn string_span(file: FileId, src: &str, text: &str, from: usize) -> Span {
+    let needle = format!("\"{text}\"");
+    match src[from.min(src.len())..].find(&needle) {
+        Some(i) => Span::new(file, from + i, from + i + needle.len()),
+        None => Span::new(file, 0, 0),
+    }
+}
+
+impl AxisConfig {
+    /// Parses and checks a configuration registered as `file` in `map`. `None`: errors were reported.
+    pub fn parse(map: &SourceMap, file: FileId, diags: &mut Diagnostics) -> Option<AxisConfig> {
+        let sf = map.get(file);
+        let src = sf.text.as_str();
+        let repr: FileRepr = match serde_json::from_str(src) {
+            Ok(r) => r,
+            Err(e) => {
+                let at = if e.line() == 0 {
+                    0
+                } else {
+                    sf.offset_of(e.line(), e.column().max(1))
+                };
+                let msg = e.to_string();
+                let msg = msg.split(" at line ").next().unwrap_or(&msg).to_string();
+                diags.push(
+                    Diagnostic::error(code::E5050, format!("invalid axis configuration: {msg}"))
+                        .at(Span::new(file, at, (at + 1).min(src.len())))
+                        .with_hint("see `ladderc explain E5050` for the file's fields"),
+                );
+                return None;
+            }
+        };
+        let before = diags.error_count();
+        if !repr.cycle_ms.is_none_or(|c| c.is_finite() && c > 0.0) || repr.queue_depth == 0 {
+            diags.push(
+                Diagnostic::error(
+                    code::E5051,
+                    "the cycle time must be a positive number of milliseconds and the queue depth at least 1",
+                )
+                .at(string_span(file, src, "cycle_ms", 0))
+                .with_hint("e.g. \"cycle_ms\": 1.0, \"queue_depth\": 16"),
+            );
+        }
+        let mut names: Vec<String> = Vec::new();
+        let mut axes = Vec::new();
+        let mut cursor = 0;
+        for a in &repr.axes {
+            let span = string_span(file, src, &a.name, cursor);
+            cursor = span.range().end;
+            let bad = |what: &str| {
+                Diagnostic::error(code::E5051, format!("axis `{}`: {what}", a.name)).at(span)
+            };
+            if !is_identifier(&a.name) {
+                diags.push(bad("the name is not an IEC identifier").with_hint(
+                    "programs name the axis (`Axis := X1`): use letters, digits and single underscores",
+                ));
+            } else if names.iter().any(|n| n.eq_ignore_ascii_case(&a.name)) {
+                diags.push(bad("the name is used twice"));
+            }
+            names.push(a.name.clone());
+            let positive = |v: f64| v.is_finite() && v > 0.0;
+            if !positive(a.velocity) || !positive(a.acceleration) || !positive(a.deceleration) {
+                diags.push(bad("velocity, acceleration and deceleration limits must be finite and greater than 0")
+                    .with_hint("give the axis's limits in user units per second (and per second squared)"));
+            }
+            if !(a.jerk.is_finite() && a.jerk >= 0.0) {
+                diags.push(bad("the jerk limit must be 0 (none) or positive"));
+            }
+            let non_negative = |v: f64| v.is_finite() && v >= 0.0;
+            if !non_negative(a.modulo_period)
+                || !non_negative(a.following_error_limit)
+                || !positive(a.counts_per_unit)
+            {
+                diags.push(bad("modulo_period and following_error_limit must be 0 or positive, counts_per_unit positive"));
+            }
+            if let Some(l) = a.software_limits {
+                if !(l.negative.is_finite() && l.positive.is_finite() && l.negative < l.positive) {
+                    diags.push(bad(
+                        "software limits need finite values with negative < positive",
+                    ));
+                }
+            }
+            axes.push(Axis {
+                name: a.name.clone(),
+                unit: a.unit.clone(),
+                counts_per_unit: a.counts_per_unit,
+                limits: c_backend::motion::MotionAxis {
+                    name: a.name.clone(),
+                    velocity_limit: a.velocity,
+                    acceleration_limit: a.acceleration,
+                    deceleration_limit: a.deceleration,
+                    jerk_limit: a.jerk,
+                    sw_limits: a.software_limits.map(|l| (l.positive, l.negative)),
+                    modulo_period: a.modulo_period,
+                    following_error_limit: a.following_error_limit,
+                },
+            });
+        }
+        let mut groups = Vec::new();
+        for g in &repr.groups {
+            let span = string_span(file, src, &g.name, cursor);
+            cursor = span.range().end;
+            if !is_identifier(&g.name) || names.iter().any(|n| n.eq_ignore_ascii_case(&g.name)) {
+                diags.push(
+                    Diagnostic::error(
+                        code::E5052,
+                        format!(
+                            "group `{}`: the name is not an IEC identifier or is already used",
+                            g.name
+                        ),
+                    )
+                    .at(span),
+                );
+            }
+            names.push(g.name.clone());
+            let mut members = Vec::new();
+            for m in &g.axes {
+                let mspan = string_span(file, src, &m.axis, span.range().start);
+                let axis = axes
+                    .iter()
+                    .position(|a: &Axis| a.name.eq_ignore_ascii_case(&m.axis));
+                let ident = IDENTITIES
+                    .iter()
+                    .position(|i| i.eq_ignore_ascii_case(&m.identity));
+                match (axis, ident) {
+                    (Some(a), Some(i))
+                        if !members.iter().any(|&(x, y)| x == a as u32 || y == i as u32) =>
+                    {
+                        members.push((a as u32, i as u32))
+                    }
+                    (None, _) => diags.push(
+                        Diagnostic::error(
+                            code::E5052,
+                            format!("group `{}`: no axis named `{}`", g.name, m.axis),
+                        )
+                        .at(mspan)
+                        .with_hint("list the axis under \"axes\" first"),
+                    ),
+                    (_, None) => diags.push(
+                        Diagnostic::error(
+                            code::E5052,
+                            format!(
+                                "group `{}`: identity `{}` is not one of X, Y, Z, A, B, C",
+                                g.name, m.identity
+                            ),
+                        )
+                        .at(mspan),
+                    ),
+                    _ => diags.push(
+                        Diagnostic::error(
+                            code::E5052,
+                            format!(
+                                "group `{}`: axis `{}` or identity `{}` appears twice",
+                                g.name, m.axis, m.identity
+                            ),
+                        )
+                        .at(mspan),
+                    ),
+                }
+            }
+            groups.push(c_backend::motion::MotionGroup {
+                name: g.name.clone(),
+                members,
+            });
+        }
+        if diags.error_count() > before {
+            return None;
+        }
+        Some(AxisConfig {
+            cycle_ms: repr.cycle_ms,
+            queue_depth: repr.queue_depth,
+            axes,
+            groups,
+        })
+    }
+
+    /// IL declaring one global reference per axis and group (parsed after the block prelude).
+    pub fn globals_il(&self) -> String {
+        let mut s = String::from("(* axes and groups of the axis configuration *)\n");
+        if self.axes.is_empty() && self.groups.is_empty() {
+            return s;
+        }
+        s.push_str("VAR_GLOBAL\n");
+        for (i, a) in self.axes.iter().enumerate() {
+            let _ = writeln!(s, "    {} : AXIS_REF := (AxisNo := {i});", a.name);
+        }
+        for (j, g) in self.groups.iter().enumerate() {
+            let _ = writeln!(s, "    {} : AXES_GROUP_REF := (GroupNo := {j});", g.name);
+        }
+        s.push_str("END_VAR\n");
+        s
+    }
+
+    /// The motion runtime of the generated C.
+    pub fn runtime(&self, cycle_ms: f64, header: &str) -> c_backend::motion::MotionRuntime {
+        c_backend::motion::MotionRuntime {
+            cycle_seconds: cycle_ms / 1000.0,
+            queue_depth: self.queue_depth,
+            axes: self.axes.iter().map(|a| a.limits.clone()).collect(),
+            groups: self.groups.clone(),
+            header: header.to_string(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> (Option<AxisConfig>, String) {
+        let mut map = SourceMap::new();
+        let f = map.add("m.axes.json", text);
+        let mut d = Diagnostics::new();
+        let c = AxisConfig::parse(&map, f, &mut d);
+        let out = diagnostics::render(&map, &d.into_sorted(), diagnostics::MessageFormat::Short);
+        (c, out)
+    }
+
+    #[test]
+    fn a_full_configuration_parses_with_groups_and_defaults() {
+        let (c, out) = parse(
+            r#"{ "cycle_ms": 1, "axes": [
+                { "name": "X1", "velocity": 100, "acceleration": 1000, "deceleration": 500, "jerk": 10000,
+                  "software_limits": { "negative": -5, "positive": 500 } },
+                { "name": "Y1", "velocity": 50, "acceleration": 100, "deceleration": 100 } ],
+              "groups": [ { "name": "G1", "axes": [ { "axis": "Y1", "identity": "X" }, { "axis": "X1", "identity": "y" } ] } ] }"#,
+        );
+        let c = c.unwrap_or_else(|| panic!("{out}"));
+        assert_eq!(c.queue_depth, 16);
+        assert_eq!(c.axes[0].limits.sw_limits, Some((500.0, -5.0)));
+        assert_eq!(c.axes[1].limits.jerk_limit, 0.0);
+        assert_eq!(c.groups[0].members, vec![(1, 0), (0, 1)]);
+        let il = c.globals_il();
+        assert!(il.contains("X1 : AXIS_REF := (AxisNo := 0);"), "{il}");
+        assert!(il.contains("Y1 : AXIS_REF := (AxisNo := 1);"), "{il}");
+        assert!(
+            il.contains("G1 : AXES_GROUP_REF := (GroupNo := 0);"),
+            "{il}"
+        );
+        assert_eq!(c.cycle_ms, Some(1.0));
+        assert_eq!(c.runtime(1.0, "h").cycle_seconds, 0.001);
+    }
+
+    #[test]
+    fn json_errors_point_at_serde_line_and_column() {
+        let (c, out) = parse(
+            "{\n  \"cycle_ms\": 1,\n  \"axes\": [ { \"name\": \"X1\", \"velocity\": 1 } ]\n}",
+        );
+        assert!(c.is_none());
+        insta::assert_snapshot!(out);
+        let (_, out) = parse("{ \"cycle_ms\": 1, \"speed\": 3 }");
+        assert!(
+            out.contains("E5050") && out.contains("unknown field `speed`"),
+            "{out}"
+        );
+    }
+
+    #[test]
+    fn bad_values_are_reported_at_the_axis_name() {
+        let (c, out) = parse(
+            r#"{ "axes": [ { "name": "X1", "velocity": 0, "acceleration": 1, "deceleration": 1 },
+                           { "name": "x1", "velocity": 1, "acceleration": 1, "deceleration": 1 },
+                           { "name": "bad name", "velocity": 1, "acceleration": 1, "deceleration": 1 } ],
+                "groups": [ { "name": "G", "axes": [ { "axis": "Q", "identity": "X" }, { "axis": "X1", "identity": "W" } ] } ],
+                "cycle_ms": -1 }"#,
+        );
+        assert!(c.is_none());
+        insta::assert_snapshot!(out);
+    }
+}
