@@ -51,6 +51,9 @@ pub struct Lowered {
     pub axes: AxisConfig,
     /// The scan cycle = the motion engine's cycle.
     pub cycle_ms: f64,
+    /// The semantic model of `all_units` when nothing was lowered (the checked program is the compiled
+    /// one, so it is analysed once).
+    pub model: Option<il_frontend::sema::Model>,
 }
 
 impl Session {
@@ -163,7 +166,7 @@ impl Session {
             checked.push(il_frontend::parse(f, &axes_il, &mut self.diags));
         }
         checked.extend(user.iter().cloned());
-        il_frontend::sema::analyze(&checked, &mut self.diags);
+        let checked_model = il_frontend::sema::analyze(&checked, &mut self.diags);
         if self.diags.has_errors() {
             return None;
         }
@@ -203,6 +206,7 @@ impl Session {
             uses_blocks,
             axes,
             cycle_ms,
+            model: (!uses_blocks).then_some(checked_model),
         })
     }
 
@@ -237,8 +241,22 @@ impl Session {
         paths: &[PathBuf],
         opts: &Options,
     ) -> Option<(Lowered, c_backend::CProgram)> {
-        let lowered = self.lower(paths, opts)?;
-        let model = il_frontend::sema::analyze(&lowered.all_units, &mut self.diags);
+        let mut lowered = self.lower(paths, opts)?;
+        let model = match lowered.model.take() {
+            Some(m) => m,
+            None => {
+                // The lowered program: its warnings were given on the user's program already; an error
+                // here would be a lowering bug, and is reported.
+                let mut second = Diagnostics::new();
+                let m = il_frontend::sema::analyze(&lowered.all_units, &mut second);
+                self.diags.extend(
+                    second
+                        .into_iter()
+                        .filter(|d| d.severity == diagnostics::Severity::Error),
+                );
+                m
+            }
+        };
         if self.diags.has_errors() {
             return None;
         }

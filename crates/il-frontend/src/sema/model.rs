@@ -498,7 +498,11 @@ pub struct Pou {
 impl Pou {
     /// Sets the variables (names unique, case-insensitively) and indexes them by name.
     pub fn set_vars(&mut self, vars: Vec<Variable>) {
-        self.var_index = vars.iter().enumerate().map(|(i, v)| (v.name.to_ascii_uppercase(), i)).collect();
+        self.var_index = vars
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (v.name.to_ascii_uppercase(), i))
+            .collect();
         self.vars = vars;
     }
     /// The index in `vars` of a variable, by name (case-insensitive).
