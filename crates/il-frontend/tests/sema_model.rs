@@ -608,9 +608,9 @@ END_PROGRAM
     let p = m.pou(PouId(0));
     assert_eq!(p.instrs.len(), 4);
     let deferred = info_at(&m, src, "AND(", 0);
-    assert_eq!(&p.instrs[1], deferred);
+    assert_eq!(m.instr(p.instrs[1]).unwrap(), deferred);
     assert_eq!(deferred.operand, Some(Type::BOOL));
-    assert_eq!(&p.instrs[2], info_at(&m, src, "OR c", 0));
+    assert_eq!(m.instr(p.instrs[2]).unwrap(), info_at(&m, src, "OR c", 0));
     // The nested list starts with its operand as current result.
     assert_eq!(info_at(&m, src, "OR c", 0).cr_before, Some(Type::BOOL));
 }

@@ -184,13 +184,13 @@ impl Analyzer<'_> {
         b.pos = 0;
         b.walk_top(&pou.body);
         let recs = std::mem::take(&mut b.recs);
-        let mut infos = Vec::with_capacity(recs.len());
+        let mut order = Vec::with_capacity(recs.len());
         for (span, r) in recs {
             let info = b.finish(r);
-            b.a.model.instrs.insert(span, info.clone());
-            infos.push(info);
+            b.a.model.instrs.insert(span, info);
+            order.push(span);
         }
-        b.a.model.pous[id.0 as usize].instrs = infos;
+        b.a.model.pous[id.0 as usize].instrs = order;
         if pou.kind == ast::PouKind::Function && !b.result_written && !pou.body.is_empty() {
             self.warning(
                 code::W1003,

@@ -486,10 +486,9 @@ pub struct Pou {
     pub vars: Vec<Variable>,
     /// For each `VAR_EXTERNAL` (index into `vars`), the global it is bound to.
     pub externals: Vec<(usize, GlobalRef)>,
-    /// The infos of the body's instructions in source pre-order (a deferred `AND( ... )` before the
-    /// instructions of its nested list): the same values as `Model::instrs`, usable when several
-    /// instructions share a span (as lowered ladder may).
-    pub instrs: Vec<InstrInfo>,
+    /// The spans of the body's instructions in source pre-order (a deferred `AND( ... )` before the
+    /// instructions of its nested list): keys into `Model::instrs` (stored once, there).
+    pub instrs: Vec<Span>,
     /// Upper-case name -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time.
     #[serde(skip)]
     pub var_index: HashMap<String, usize>,
