@@ -186,3 +186,63 @@ fn missing_input_is_an_io_diagnostic() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("error[E9001]"));
 }
+
+#[test]
+fn motion_example_moves_to_100_then_backs_off_to_60_and_plots() {
+    let ex = root().join("examples/motion");
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("t.csv");
+    let svg = dir.path().join("move.svg");
+    let out = ladderc()
+        .arg("run")
+        .arg(ex.join("move.il"))
+        .args([
+            "--cycles",
+            "2200",
+            "--watch",
+            "axis.X1.position,main.at_100,main.back",
+            "--trace",
+        ])
+        .arg(&trace)
+        .arg("--plot")
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&trace).unwrap();
+    // `--plot` adds the columns it draws (the velocity) after the watched ones.
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    assert_eq!(
+        &header[..5],
+        [
+            "cycle",
+            "time_ms",
+            "axis.X1.position",
+            "main.at_100",
+            "main.back"
+        ]
+    );
+    let last: Vec<&str> = text.lines().last().unwrap().split(',').collect();
+    assert!(
+        (last[2].parse::<f64>().unwrap() - 60.0).abs() < 1e-9,
+        "{last:?}"
+    );
+    assert_eq!(&last[3..5], ["1", "1"]);
+    // The first move reached 100 when its Done rose (the back-off, started in that scan, has moved the axis
+    // by one engine cycle of its jerk-limited start since).
+    let done_row = text
+        .lines()
+        .skip(1)
+        .find(|l| l.split(',').nth(3) == Some("1"))
+        .unwrap();
+    assert!(
+        (done_row.split(',').nth(2).unwrap().parse::<f64>().unwrap() - 100.0).abs() < 1e-4,
+        "{done_row}"
+    );
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+}
