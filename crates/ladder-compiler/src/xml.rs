@@ -172,23 +172,38 @@ fn decode_attr_value(raw: &str) -> Cow<'_, str> {
 }
 
 /// The attributes of a raw start tag: local name and the byte range of the raw value inside the tag.
+///
+/// Byte loops only (this runs for every attribute lookup, so it avoids char decoding and `rfind`).
 fn scan_attrs(raw_tag: &str) -> impl Iterator<Item = (&str, usize, usize)> {
     let bytes = raw_tag.as_bytes();
-    let mut i = raw_tag
-        .find(|c: char| c.is_whitespace() || c == '/')
-        .unwrap_or(raw_tag.len());
+    let mut i = bytes
+        .iter()
+        .position(|&b| !b.is_ascii() || b.is_ascii_whitespace() || b == 0x0b || b == b'/')
+        .unwrap_or(bytes.len());
+    if i < bytes.len() && !bytes[i].is_ascii() {
+        // A non-ASCII character before the first separator: the rare slow path (Unicode whitespace).
+        // (`char::is_whitespace` also counts U+000B, hence the 0x0b above.)
+        i = raw_tag
+            .find(|c: char| c.is_whitespace() || c == '/')
+            .unwrap_or(raw_tag.len());
+    }
     std::iter::from_fn(move || loop {
         while i < bytes.len() && (bytes[i].is_ascii_whitespace() || bytes[i] == b'/') {
             i += 1;
         }
         let name_start = i;
+        // The local part starts after the last `:` of the qualified name.
+        let mut local_start = i;
         while i < bytes.len() && !bytes[i].is_ascii_whitespace() && bytes[i] != b'=' {
+            if bytes[i] == b':' {
+                local_start = i + 1;
+            }
             i += 1;
         }
         if name_start == i {
             return None;
         }
-        let name = local(&raw_tag[name_start..i]);
+        let name = &raw_tag[local_start..i];
         while i < bytes.len() && bytes[i].is_ascii_whitespace() {
             i += 1;
         }
@@ -239,8 +254,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
     let body = &xml[base..];
     let mut reader = Reader::from_str(body);
     reader.config_mut().trim_text(false);
-    let mut stack: Vec<Element> = Vec::new();
-    let mut root: Option<Element> = None;
+    let mut tree = Builder::default();
     loop {
         let pos = reader.buffer_position() as usize;
         let ev = match reader.read_event() {
@@ -250,10 +264,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                     message: e.to_string(),
                     pos: base + reader.error_position() as usize,
                 };
-                while let Some(e) = stack.pop() {
-                    attach(&mut stack, &mut root, e);
-                }
-                return (root, Some(err));
+                return (tree.finish(), Some(err));
             }
         };
         let after = reader.buffer_position() as usize;
@@ -272,32 +283,27 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                     end: base + after,
                 };
                 if matches!(ev, Event::Start(_)) {
-                    if stack.len() >= MAX_DEPTH {
+                    if tree.stack.len() >= MAX_DEPTH {
                         let err = XmlError {
                             message: format!("elements nested deeper than {MAX_DEPTH} levels"),
                             pos: base + pos,
                         };
-                        while let Some(e) = stack.pop() {
-                            attach(&mut stack, &mut root, e);
-                        }
-                        return (root, Some(err));
+                        return (tree.finish(), Some(err));
                     }
-                    stack.push(el);
+                    tree.open(el);
                 } else {
-                    attach(&mut stack, &mut root, el);
+                    tree.attach(el);
                 }
             }
             Event::End(_) => {
-                if let Some(mut el) = stack.pop() {
-                    el.end = base + after;
-                    attach(&mut stack, &mut root, el);
-                }
+                tree.close(Some(base + after));
             }
             Event::Text(_) => {
                 let raw = &body[pos..after];
                 // Indentation between elements is dropped; whitespace after the first text of an
                 // element is kept (it belongs to an embedded body).
-                if let Some(top) = stack
+                if let Some(top) = tree
+                    .stack
                     .last_mut()
                     .filter(|t| !t.text.is_empty() || !raw.trim().is_empty())
                 {
@@ -310,7 +316,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 }
             }
             Event::CData(_) => {
-                if let Some(top) = stack.last_mut() {
+                if let Some(top) = tree.stack.last_mut() {
                     top.text.push(TextSeg {
                         text: Cow::Borrowed(&body[pos + 9..after - 3]),
                         start: base + pos + 9,
@@ -320,7 +326,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 }
             }
             Event::GeneralRef(r) => {
-                if let Some(top) = stack.last_mut() {
+                if let Some(top) = tree.stack.last_mut() {
                     let name = String::from_utf8_lossy(r.as_ref()).into_owned();
                     let text = decode_entity(&name).unwrap_or_else(|| format!("&{name};"));
                     top.text.push(TextSeg {
@@ -335,10 +341,8 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
             _ => {}
         }
     }
-    let unclosed = stack.last().map(|e| (e.name.to_string(), e.tag_start));
-    while let Some(e) = stack.pop() {
-        attach(&mut stack, &mut root, e);
-    }
+    let unclosed = tree.stack.last().map(|e| (e.name.to_string(), e.tag_start));
+    let root = tree.finish();
     let err = unclosed.map(|(name, pos)| XmlError {
         message: format!("element <{name}> is never closed"),
         pos,
@@ -346,14 +350,51 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
     (root, err)
 }
 
-fn attach<'a>(stack: &mut [Element<'a>], root: &mut Option<Element<'a>>, el: Element<'a>) {
-    match stack.last_mut() {
-        Some(parent) => parent.children.push(el),
-        None => {
-            if root.is_none() {
-                *root = Some(el);
+/// The elements being read: open ones on `stack`, finished children of open ones in `done`.
+///
+/// Children wait in the one shared `done` list until their parent closes, then move into a `Vec` of
+/// exactly their number: one allocation per parent, no regrowth.
+#[derive(Default)]
+struct Builder<'a> {
+    stack: Vec<Element<'a>>,
+    /// Where each open element's children start in `done` (parallel to `stack`).
+    starts: Vec<usize>,
+    done: Vec<Element<'a>>,
+    root: Option<Element<'a>>,
+}
+
+impl<'a> Builder<'a> {
+    fn open(&mut self, el: Element<'a>) {
+        self.starts.push(self.done.len());
+        self.stack.push(el);
+    }
+    /// Closes the innermost open element (its end moved to `end` when given).
+    fn close(&mut self, end: Option<usize>) {
+        if let Some(mut el) = self.stack.pop() {
+            let start = self.starts.pop().unwrap_or(self.done.len());
+            el.children = self.done.drain(start..).collect();
+            if let Some(end) = end {
+                el.end = end;
             }
+            self.attach(el);
         }
+    }
+    /// A finished element: a child of the innermost open element, or the root (the first one only).
+    fn attach(&mut self, el: Element<'a>) {
+        if self.stack.is_empty() {
+            if self.root.is_none() {
+                self.root = Some(el);
+            }
+        } else {
+            self.done.push(el);
+        }
+    }
+    /// Closes every element still open and returns the root.
+    fn finish(mut self) -> Option<Element<'a>> {
+        while !self.stack.is_empty() {
+            self.close(None);
+        }
+        self.root
     }
 }
 
