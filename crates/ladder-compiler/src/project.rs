@@ -158,6 +158,8 @@ fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<Hash
             }
         }
         if let Some(body) = el.child("body") {
+            // One upper-case buffer reused for every word: no allocation per word looked up.
+            let mut key = String::new();
             for d in body.descendants() {
                 if d.name == "block" {
                     if let Some(t) = d.attr("typeName") {
@@ -169,9 +171,11 @@ fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<Hash
                         .text
                         .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
                     {
-                        let w = word.to_ascii_uppercase();
-                        if names.contains(&w) {
-                            out.push(w);
+                        key.clear();
+                        key.push_str(word);
+                        key.make_ascii_uppercase();
+                        if names.contains(&key) {
+                            out.push(key.clone());
                         }
                     }
                 }
