@@ -30,6 +30,7 @@ use il_frontend::ast::{
     Instruction, Literal, LiteralKind, Op, Operand, PouKind, TypeDef, TypeRef, VarDecl, VarKind,
     VarRef,
 };
+use std::borrow::Cow;
 use std::collections::{BTreeMap, BinaryHeap, HashMap, HashSet};
 
 type ValId = usize;
@@ -112,7 +113,8 @@ enum BlockType<'a> {
 pub struct BodyLowering<'i> {
     index: &'i Index,
     pou: String,
-    vars: HashMap<String, TypeRef>,
+    /// Upper-case name -> type; declared names and types are borrowed from the index and the POU.
+    vars: HashMap<Cow<'i, str>, Cow<'i, TypeRef>>,
     body_span: Span,
     hidden: Vec<VarDecl>,
     hidden_names: HashSet<String>,
@@ -121,18 +123,23 @@ pub struct BodyLowering<'i> {
 }
 
 impl<'i> BodyLowering<'i> {
-    pub fn new(index: &'i Index, pou: &il_frontend::ast::Pou, body_span: Span) -> BodyLowering<'i> {
-        let mut vars = HashMap::new();
+    pub fn new(
+        index: &'i Index,
+        pou: &'i il_frontend::ast::Pou,
+        body_span: Span,
+    ) -> BodyLowering<'i> {
+        let declared: usize = pou.var_blocks.iter().map(|b| b.vars.len()).sum();
+        let mut vars = HashMap::with_capacity(index.globals.len() + declared + 1);
         for (k, t) in &index.globals {
-            vars.insert(k.clone(), t.clone());
+            vars.insert(Cow::Borrowed(k.as_str()), Cow::Borrowed(t));
         }
         for b in &pou.var_blocks {
             for v in &b.vars {
-                vars.insert(v.name.key(), v.ty.clone());
+                vars.insert(Cow::Owned(v.name.key()), Cow::Borrowed(&v.ty));
             }
         }
         if let Some(r) = &pou.return_type {
-            vars.insert(pou.name.key(), r.clone());
+            vars.insert(Cow::Owned(pou.name.key()), Cow::Borrowed(r));
         }
         BodyLowering {
             index,
@@ -211,7 +218,10 @@ impl<'i> BodyLowering<'i> {
 
     fn declare_hidden(&mut self, name: &str, ty: TypeRef, span: Span) {
         if self.hidden_names.insert(name.to_string()) {
-            self.vars.insert(name.to_ascii_uppercase(), ty.clone());
+            self.vars.insert(
+                Cow::Owned(name.to_ascii_uppercase()),
+                Cow::Owned(ty.clone()),
+            );
             self.hidden.push(VarDecl {
                 name: Ident::new(name, span),
                 location: None,
@@ -226,8 +236,8 @@ impl<'i> BodyLowering<'i> {
         if self.hidden_names.insert(name.to_string()) {
             let ty = if falling { "F_TRIG" } else { "R_TRIG" };
             self.vars.insert(
-                name.to_ascii_uppercase(),
-                TypeRef::Named(Ident::new(ty, span)),
+                Cow::Owned(name.to_ascii_uppercase()),
+                Cow::Owned(TypeRef::Named(Ident::new(ty, span))),
             );
             self.hidden.push(VarDecl {
                 name: Ident::new(name, span),
@@ -240,7 +250,7 @@ impl<'i> BodyLowering<'i> {
     }
 
     fn var_type(&self, v: &VarRef) -> Option<TypeRef> {
-        let mut ty = self.vars.get(&v.base.key())?.clone();
+        let mut ty = self.vars.get(v.base.key().as_str())?.as_ref().clone();
         for acc in &v.accessors {
             ty = match acc {
                 Accessor::Index(_) => match ty {
@@ -785,7 +795,10 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         if count > entry.1 {
             // A new temporary: make its type known to later lookups.
             entry.1 = count;
-            self.pou.vars.insert(name.to_ascii_uppercase(), ty.clone());
+            self.pou.vars.insert(
+                Cow::Owned(name.to_ascii_uppercase()),
+                Cow::Owned(ty.clone()),
+            );
         }
         var_operand(&name, self.pou.body_span)
     }
