@@ -497,12 +497,13 @@ fn networks(nodes: &[Node], conts: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize
             union(*c, *s, &mut parent);
         }
     }
-    let mut groups: HashMap<usize, Vec<usize>> = HashMap::new();
+    // Groups indexed by their root (a node index): no hashing.
+    let mut groups: Vec<Vec<usize>> = vec![Vec::new(); nodes.len()];
     for i in 0..nodes.len() {
         let r = find(&mut parent, i);
-        groups.entry(r).or_default().push(i);
+        groups[r].push(i);
     }
-    let mut nets: Vec<Vec<usize>> = groups.into_values().collect();
+    let mut nets: Vec<Vec<usize>> = groups.into_iter().filter(|g| !g.is_empty()).collect();
     let key = |net: &Vec<usize>| {
         let exec = net
             .iter()
@@ -516,7 +517,9 @@ fn networks(nodes: &[Node], conts: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize
             .unwrap_or((0, 0));
         (exec, top.0, top.1, net[0])
     };
-    nets.sort_by_key(key);
+    // Each key is computed once; keys are unique (`net[0]` is in one network only), so the order is
+    // the same as a stable sort's.
+    nets.sort_by_cached_key(key);
     nets
 }
 
