@@ -129,11 +129,17 @@ pub struct Node {
 impl Node {
     /// Every wire into this node (block pins included).
     pub fn all_wires(&self) -> Vec<&Wire> {
-        let mut out: Vec<&Wire> = self.input.iter().collect();
-        if let Kind::Block { inputs, .. } = &self.kind {
-            out.extend(inputs.iter().flat_map(|p| p.wires.iter()));
-        }
-        out
+        self.wires().collect()
+    }
+    /// The same wires as [`Node::all_wires`], in the same order, without collecting them.
+    pub fn wires(&self) -> impl Iterator<Item = &Wire> {
+        let pins: &[InPin] = match &self.kind {
+            Kind::Block { inputs, .. } => inputs,
+            _ => &[],
+        };
+        self.input
+            .iter()
+            .chain(pins.iter().flat_map(|p| p.wires.iter()))
     }
     /// Execution order key: non-zero `executionOrderId`, then y, then x, then the numeric localId.
     pub fn order_key(&self) -> (u32, i64, i64, u64) {
@@ -488,7 +494,7 @@ fn networks(nodes: &[Node], conts: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize
         }
     };
     for (i, n) in nodes.iter().enumerate() {
-        for w in n.all_wires() {
+        for w in n.wires() {
             union(i, w.from, &mut parent);
         }
     }

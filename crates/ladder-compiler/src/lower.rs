@@ -452,9 +452,9 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     /// variable.
     fn order(&mut self, ctx: &mut Ctx, net: &[usize]) -> Option<Vec<usize>> {
         let g = self.g;
-        let mut deps: HashMap<usize, Vec<usize>> = HashMap::new();
+        let mut deps: HashMap<usize, Vec<usize>> = HashMap::with_capacity(net.len());
         for &i in net {
-            let mut d: Vec<usize> = g.nodes[i].all_wires().iter().map(|w| w.from).collect();
+            let mut d: Vec<usize> = g.nodes[i].wires().map(|w| w.from).collect();
             if let Some(srcs) = g.continuation_sources.get(&i) {
                 d.extend(srcs);
             }
@@ -1873,7 +1873,7 @@ fn named_type(name: &str, span: Span) -> TypeRef {
 /// Kahn's algorithm over `net`, ties broken by the documented order key; nodes on a loop are left out.
 fn kahn(g: &Graph, net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<usize> {
     let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
-    let mut users: HashMap<usize, Vec<usize>> = HashMap::new();
+    let mut users: HashMap<usize, Vec<usize>> = HashMap::with_capacity(net.len());
     for (&i, d) in deps {
         for &s in d {
             if indeg.contains_key(&s) {
