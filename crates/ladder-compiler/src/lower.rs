@@ -689,6 +689,10 @@ impl<'a, 'i> NetLowering<'a, 'i> {
 
     /// The OR of every wire into one input; `None` when nothing (usable) is connected.
     fn input_val(&mut self, ctx: &mut Ctx, wires: &[Wire], consumer: usize) -> Option<ValId> {
+        // The common case, one wire: its value as is, no list.
+        if let [w] = wires {
+            return self.wire_val(ctx, w, consumer);
+        }
         let mut vs = Vec::new();
         for w in wires {
             if let Some(v) = self.wire_val(ctx, w, consumer) {
