@@ -198,7 +198,7 @@ fn raw_wires(ctx: &Ctx, point: Option<&Element>) -> Vec<RawWire> {
 
 fn text_of(ctx: &Ctx, e: &Element, child: &str) -> (String, Span) {
     match e.child(child) {
-        Some(c) => (c.text().trim().to_string(), ctx.text_span(c)),
+        Some(c) => (c.text_ref().trim().to_string(), ctx.text_span(c)),
         None => (String::new(), ctx.tag(e)),
     }
 }

@@ -94,7 +94,15 @@ impl<'a> Element<'a> {
     }
     /// The decoded direct text, all segments joined.
     pub fn text(&self) -> String {
-        self.text.iter().map(|s| s.text.as_ref()).collect()
+        self.text_ref().into_owned()
+    }
+    /// The same text as [`Element::text`], borrowed when it is one segment (the usual case).
+    pub fn text_ref(&self) -> Cow<'_, str> {
+        match self.text.as_slice() {
+            [] => Cow::Borrowed(""),
+            [one] => Cow::Borrowed(one.text.as_ref()),
+            many => Cow::Owned(many.iter().map(|s| s.text.as_ref()).collect()),
+        }
     }
     /// Every descendant (depth first, self excluded).
     pub fn descendants(&self) -> Vec<&Element<'a>> {
@@ -417,9 +425,22 @@ mod tests {
         assert_eq!(&xml[s..e], "1&amp;2");
         let p = a.child("p").unwrap();
         assert_eq!(p.text(), "LD x<ST y");
+        assert_eq!(p.text_ref(), "LD x<ST y");
         let segs: Vec<_> = p.text.iter().map(|s| &xml[s.start..s.end]).collect();
         assert_eq!(segs, ["LD x", "&lt;", "ST y"]);
         assert_eq!(p.text[2].kind, SegKind::CData);
+    }
+
+    #[test]
+    fn one_text_segment_is_borrowed_several_are_joined() {
+        let xml = "<a><v> x1 </v><w>a&amp;b</w><e/></a>";
+        let (root, err) = parse(xml);
+        assert!(err.is_none());
+        let a = root.unwrap();
+        let v = a.child("v").unwrap().text_ref();
+        assert!(matches!(v, Cow::Borrowed(" x1 ")), "{v:?}");
+        assert_eq!(a.child("w").unwrap().text_ref(), "a&b");
+        assert_eq!(a.child("e").unwrap().text_ref(), "");
     }
 
     #[test]
