@@ -160,7 +160,7 @@ fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<Hash
         if let Some(body) = el.child("body") {
             // One upper-case buffer reused for every word: no allocation per word looked up.
             let mut key = String::new();
-            for d in body.descendants() {
+            for d in body.walk() {
                 if d.name == "block" {
                     if let Some(t) = d.attr("typeName") {
                         out.push(t.trim().to_ascii_uppercase());

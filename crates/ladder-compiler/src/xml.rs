@@ -106,13 +106,24 @@ impl<'a> Element<'a> {
     }
     /// Every descendant (depth first, self excluded).
     pub fn descendants(&self) -> Vec<&Element<'a>> {
-        let mut out = Vec::new();
-        let mut stack: Vec<&Element<'a>> = self.children.iter().rev().collect();
-        while let Some(e) = stack.pop() {
-            out.push(e);
-            stack.extend(e.children.iter().rev());
-        }
-        out
+        self.walk().collect()
+    }
+    /// The same elements in the same order as [`Element::descendants`], without collecting them
+    /// (the stack holds one iterator per open level).
+    pub fn walk(&self) -> impl Iterator<Item = &Element<'a>> {
+        let mut stack = vec![self.children.iter()];
+        std::iter::from_fn(move || loop {
+            let top = stack.last_mut()?;
+            match top.next() {
+                Some(e) => {
+                    stack.push(e.children.iter());
+                    return Some(e);
+                }
+                None => {
+                    stack.pop();
+                }
+            }
+        })
     }
 }
 
@@ -441,6 +452,16 @@ mod tests {
         assert!(matches!(v, Cow::Borrowed(" x1 ")), "{v:?}");
         assert_eq!(a.child("w").unwrap().text_ref(), "a&b");
         assert_eq!(a.child("e").unwrap().text_ref(), "");
+    }
+
+    #[test]
+    fn walks_descendants_depth_first_in_document_order() {
+        let (root, _) = parse("<r><a><b/><c><d/></c></a><e/></r>");
+        let r = root.unwrap();
+        let names: Vec<_> = r.walk().map(|e| e.name).collect();
+        assert_eq!(names, ["a", "b", "c", "d", "e"]);
+        let listed: Vec<_> = r.descendants().iter().map(|e| e.name).collect();
+        assert_eq!(listed, names);
     }
 
     #[test]
