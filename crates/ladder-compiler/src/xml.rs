@@ -47,8 +47,9 @@ pub struct Element<'a> {
     /// The raw start tag between `<` and `>`: attributes are read from it on demand.
     pub raw_tag: &'a str,
     /// The attributes whose values hold entities, decoded once (usually none: no allocation).
-    pub decoded_attrs: Vec<Attr<'a>>,
-    pub children: Vec<Element<'a>>,
+    pub decoded_attrs: Box<[Attr<'a>]>,
+    /// Exactly sized (boxed slices: 8 bytes less per element than a `Vec`).
+    pub children: Box<[Element<'a>]>,
     /// Direct character data, in order (leading whitespace-only pieces are dropped).
     pub text: Vec<TextSeg<'a>>,
     /// Byte range of the start tag (`<contact ...>`).
@@ -251,9 +252,9 @@ fn scan_attrs(raw_tag: &str) -> impl Iterator<Item = (&str, usize, usize)> {
 }
 
 /// The attributes with entities in their value, decoded.
-fn decoded_attrs(raw_tag: &str, tag_pos: usize) -> Vec<Attr<'_>> {
+fn decoded_attrs(raw_tag: &str, tag_pos: usize) -> Box<[Attr<'_>]> {
     if !raw_tag.contains('&') {
-        return Vec::new();
+        return Box::default();
     }
     scan_attrs(raw_tag)
         .filter(|(_, s, e)| raw_tag[*s..*e].contains('&'))
@@ -297,7 +298,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                     name: tag_name(raw),
                     raw_tag: raw,
                     decoded_attrs: decoded_attrs(raw, base + pos),
-                    children: Vec::new(),
+                    children: Box::default(),
                     text: Vec::new(),
                     tag_start: base + pos,
                     tag_end: base + after,
@@ -393,7 +394,10 @@ impl<'a> Builder<'a> {
     fn close(&mut self, end: Option<usize>) {
         if let Some(mut el) = self.stack.pop() {
             let start = self.starts.pop().unwrap_or(self.done.len());
-            el.children = self.done.split_off(start.min(self.done.len()));
+            el.children = self
+                .done
+                .split_off(start.min(self.done.len()))
+                .into_boxed_slice();
             if let Some(end) = end {
                 el.end = end;
             }
