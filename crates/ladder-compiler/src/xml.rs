@@ -324,12 +324,8 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 let raw = &body[pos..after];
                 // Indentation between elements is dropped; whitespace after the first text of an
                 // element is kept (it belongs to an embedded body).
-                if let Some(top) = tree
-                    .stack
-                    .last_mut()
-                    .filter(|t| !t.text.is_empty() || !raw.trim().is_empty())
-                {
-                    top.text.push(TextSeg {
+                if tree.is_open() && (tree.top_has_text() || !raw.trim().is_empty()) {
+                    tree.push_text(TextSeg {
                         text: Cow::Borrowed(&body[pos..after]),
                         start: base + pos,
                         end: base + after,
@@ -338,8 +334,8 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 }
             }
             Event::CData(_) => {
-                if let Some(top) = tree.stack.last_mut() {
-                    top.text.push(TextSeg {
+                if tree.is_open() {
+                    tree.push_text(TextSeg {
                         text: Cow::Borrowed(&body[pos + 9..after - 3]),
                         start: base + pos + 9,
                         end: base + after - 3,
@@ -348,10 +344,10 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 }
             }
             Event::GeneralRef(r) => {
-                if let Some(top) = tree.stack.last_mut() {
+                if tree.is_open() {
                     let name = String::from_utf8_lossy(r.as_ref()).into_owned();
                     let text = decode_entity(&name).unwrap_or_else(|| format!("&{name};"));
-                    top.text.push(TextSeg {
+                    tree.push_text(TextSeg {
                         text: Cow::Owned(text),
                         start: base + pos,
                         end: base + after,
@@ -372,28 +368,50 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
     (root, err)
 }
 
-/// The elements being read: open ones on `stack`, finished children of open ones in `done`.
+/// The elements being read: open ones on `stack`, finished children of open ones in `done`, text
+/// segments of open ones in `texts`.
 ///
-/// Children wait in the one shared `done` list until their parent closes, then move into a `Vec` of
-/// exactly their number: one allocation per parent, no regrowth.
+/// Children and text segments wait in the shared lists until their element closes, then move into
+/// storage of exactly their number: one allocation per element that has any, no regrowth.
 #[derive(Default)]
 struct Builder<'a> {
     stack: Vec<Element<'a>>,
     /// Where each open element's children start in `done` (parallel to `stack`).
     starts: Vec<usize>,
     done: Vec<Element<'a>>,
+    /// Where each open element's text segments start in `texts` (parallel to `stack`).
+    text_starts: Vec<usize>,
+    texts: Vec<TextSeg<'a>>,
     root: Option<Element<'a>>,
 }
 
 impl<'a> Builder<'a> {
     fn open(&mut self, el: Element<'a>) {
         self.starts.push(self.done.len());
+        self.text_starts.push(self.texts.len());
         self.stack.push(el);
+    }
+    fn is_open(&self) -> bool {
+        !self.stack.is_empty()
+    }
+    /// Whether the innermost open element has text already.
+    fn top_has_text(&self) -> bool {
+        self.text_starts
+            .last()
+            .is_some_and(|&start| self.texts.len() > start)
+    }
+    /// A text segment of the innermost open element (dropped when none is open).
+    fn push_text(&mut self, seg: TextSeg<'a>) {
+        if self.is_open() {
+            self.texts.push(seg);
+        }
     }
     /// Closes the innermost open element (its end moved to `end` when given).
     fn close(&mut self, end: Option<usize>) {
         if let Some(mut el) = self.stack.pop() {
             let start = self.starts.pop().unwrap_or(self.done.len());
+            let text_start = self.text_starts.pop().unwrap_or(self.texts.len());
+            el.text = self.texts.split_off(text_start.min(self.texts.len()));
             el.children = self
                 .done
                 .split_off(start.min(self.done.len()))
