@@ -333,27 +333,21 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                     });
                 }
             }
-            Event::CData(_) => {
-                if tree.is_open() {
-                    tree.push_text(TextSeg {
-                        text: Cow::Borrowed(&body[pos + 9..after - 3]),
-                        start: base + pos + 9,
-                        end: base + after - 3,
-                        kind: SegKind::CData,
-                    });
-                }
-            }
-            Event::GeneralRef(r) => {
-                if tree.is_open() {
-                    let name = String::from_utf8_lossy(r.as_ref()).into_owned();
-                    let text = decode_entity(&name).unwrap_or_else(|| format!("&{name};"));
-                    tree.push_text(TextSeg {
-                        text: Cow::Owned(text),
-                        start: base + pos,
-                        end: base + after,
-                        kind: SegKind::Entity,
-                    });
-                }
+            Event::CData(_) => tree.push_text(TextSeg {
+                text: Cow::Borrowed(&body[pos + 9..after - 3]),
+                start: base + pos + 9,
+                end: base + after - 3,
+                kind: SegKind::CData,
+            }),
+            Event::GeneralRef(r) if tree.is_open() => {
+                let name = String::from_utf8_lossy(r.as_ref()).into_owned();
+                let text = decode_entity(&name).unwrap_or_else(|| format!("&{name};"));
+                tree.push_text(TextSeg {
+                    text: Cow::Owned(text),
+                    start: base + pos,
+                    end: base + after,
+                    kind: SegKind::Entity,
+                });
             }
             Event::Eof => break,
             _ => {}
