@@ -208,7 +208,8 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     let mut nodes = Vec::new();
     let mut raw_inputs: Vec<Vec<RawWire>> = Vec::new();
     let mut raw_pins: Vec<Vec<Vec<RawWire>>> = Vec::new();
-    let mut ids: HashMap<String, usize> = HashMap::new();
+    // localId -> node index; the ids are borrowed from the XML text.
+    let mut ids: HashMap<&str, usize> = HashMap::with_capacity(body.children.len());
     for e in &body.children {
         let span = ctx.tag(e);
         let mut pin_wires = Vec::new();
@@ -377,7 +378,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 .unwrap_or(0)
         };
         let point = e.child("connectionPointIn");
-        ids.insert(id.to_string(), nodes.len());
+        ids.insert(id, nodes.len());
         let raws = raw_wires(ctx, point);
         let wired = !raws.is_empty();
         raw_inputs.push(raws);
@@ -401,7 +402,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     let resolve = |ctx: &mut Ctx, raws: Vec<RawWire>, node: &Node| -> Vec<Wire> {
         let mut out = Vec::new();
         for r in raws {
-            match ids.get(&r.ref_id) {
+            match ids.get(r.ref_id.as_str()) {
                 Some(&from) => out.push(Wire {
                     from,
                     pin: r.pin,
