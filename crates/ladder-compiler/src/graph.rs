@@ -173,18 +173,19 @@ fn edge_attr(e: &Element) -> Edge {
     }
 }
 
-struct RawWire {
-    ref_id: String,
+struct RawWire<'x> {
+    /// Borrowed from the XML text.
+    ref_id: &'x str,
     pin: Option<String>,
     span: Span,
 }
 
-fn raw_wires(ctx: &Ctx, point: Option<&Element>) -> Vec<RawWire> {
+fn raw_wires<'x>(ctx: &Ctx, point: Option<&'x Element>) -> Vec<RawWire<'x>> {
     point
         .map(|p| {
             p.children_named("connection")
                 .map(|c| RawWire {
-                    ref_id: c.attr("refLocalId").unwrap_or_default().trim().to_string(),
+                    ref_id: c.attr("refLocalId").unwrap_or_default().trim(),
                     pin: c
                         .attr("formalParameter")
                         .map(|s| s.trim().to_string())
@@ -402,7 +403,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     let resolve = |ctx: &mut Ctx, raws: Vec<RawWire>, node: &Node| -> Vec<Wire> {
         let mut out = Vec::new();
         for r in raws {
-            match ids.get(r.ref_id.as_str()) {
+            match ids.get(r.ref_id) {
                 Some(&from) => out.push(Wire {
                     from,
                     pin: r.pin,
