@@ -264,6 +264,30 @@ pub struct VarDecl {
     pub span: Span,
 }
 
+impl VarDecl {
+    /// A declaration without location or initial value. Code that synthesises declarations (temporaries,
+    /// hidden state) uses this and the `with_*` builders, so new fields of `VarDecl` do not break it.
+    pub fn new(name: Ident, ty: TypeRef, span: Span) -> Self {
+        VarDecl {
+            name,
+            location: None,
+            ty,
+            init: None,
+            span,
+        }
+    }
+
+    pub fn with_init(mut self, init: Initializer) -> Self {
+        self.init = Some(init);
+        self
+    }
+
+    pub fn with_location(mut self, location: DirectAddress) -> Self {
+        self.location = Some(location);
+        self
+    }
+}
+
 #[derive(Debug, Clone, Serialize)]
 pub enum Initializer {
     /// A literal, an enum value, or a named constant.
