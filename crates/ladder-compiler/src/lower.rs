@@ -1324,7 +1324,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     _ => (FuncForm::Formal, None),
                 };
                 let arity_ok = match &form {
-                    FuncForm::Operator(OperatorBlock::Compare(_)) => args.len() == 2,
+                    FuncForm::Operator(OperatorBlock::Compare(_)) => args.len() >= 2,
                     FuncForm::Operator(OperatorBlock::Not | OperatorBlock::Move) => args.len() == 1,
                     FuncForm::Operator(_) => args.len() >= 2,
                     _ => true,
@@ -1816,9 +1816,28 @@ fn emit_function(
             match op {
                 OperatorBlock::Not => out.push(simple(Op::Not, false, None, span)),
                 OperatorBlock::Move => {}
-                OperatorBlock::Arith(o) | OperatorBlock::Compare(o) | OperatorBlock::Logic(o) => {
+                OperatorBlock::Arith(o) | OperatorBlock::Logic(o) => {
                     for (_, a) in it {
                         out.push(simple(*o, false, Some(a), span));
+                    }
+                }
+                // An extensible comparison is a chain: GT(a, b, c) = (a > b) AND (b > c).
+                OperatorBlock::Compare(o) => {
+                    let rest: Vec<Operand> = it.map(|(_, a)| a).collect();
+                    if let Some(second) = rest.first() {
+                        out.push(simple(*o, false, Some(second.clone()), span));
+                    }
+                    for pair in rest.windows(2) {
+                        out.push(instr(
+                            InstrKind::Deferred {
+                                op: Op::And,
+                                negate: false,
+                                operand: Some(pair[0].clone()),
+                                body: vec![simple(*o, false, Some(pair[1].clone()), span)],
+                                close: span,
+                            },
+                            span,
+                        ));
                     }
                 }
             }
