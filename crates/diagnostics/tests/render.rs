@@ -95,7 +95,8 @@ fn a_diagnostic_without_its_own_hint_points_at_its_explanation_in_every_format()
     let own = d.clone().with_hint("declare `a` in a VAR block");
     let text = render(&map, &[own], MessageFormat::Short);
     assert!(
-        text.trim_end().ends_with("(hint: declare `a` in a VAR block)"),
+        text.trim_end()
+            .ends_with("(hint: declare `a` in a VAR block)"),
         "{text}"
     );
 }

@@ -737,16 +737,18 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         let ty = self.ty(v);
         if let Some(f) = family_of(&ty) {
             if f != Family::Bool {
-                let d = self.diag(
-                    ctx,
-                    code::E3008,
-                    node,
-                    span,
-                    format!(
-                        "{what} needs BOOL power flow, but is driven by {}",
-                        type_text(&ty)
-                    ),
-                );
+                let d = self
+                    .diag(
+                        ctx,
+                        code::E3008,
+                        node,
+                        span,
+                        format!(
+                            "{what} needs BOOL power flow, but is driven by {}",
+                            type_text(&ty)
+                        ),
+                    )
+                    .with_hint("drive it from a BOOL: compare the value first (`GT`, `EQ`, ...)");
                 ctx.report(d);
             }
         }
@@ -762,7 +764,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     node,
                     span,
                     format!("{what} variable has type {}, not BOOL", type_text(&ty)),
-                );
+                )
+                .with_hint("contacts and coils take BOOL variables: use a compare block for other types");
                 ctx.report(d);
             }
         }
@@ -842,7 +845,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                             span,
                             format!("contact `{var}` is not connected on its left side"),
                         )
-                        .with_primary_label("no power can reach this contact");
+                        .with_primary_label("no power can reach this contact")
+                        .with_hint("wire the contact to the left power rail (directly or through other contacts), or delete it");
                     ctx.report(d);
                 }
                 if let Some(v) = input {
@@ -891,7 +895,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                                 span,
                                 format!("coil `{var}` is not connected on its left side"),
                             )
-                            .with_primary_label("this coil is never written");
+                            .with_primary_label("this coil is never written")
+                            .with_hint("wire the coil to the left power rail through its contacts, or delete it");
                         ctx.report(d);
                     }
                     self.poisoned.insert(i);
@@ -1059,7 +1064,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                         type_text(&from),
                         type_text(&to)
                     ),
-                );
+                )
+                .with_hint("insert a conversion block (`INT_TO_REAL`, ...) or change the variable's type");
                 ctx.report(d);
             }
         }
@@ -1206,7 +1212,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                                     type_text(&to),
                                     type_text(&from)
                                 ),
-                            );
+                            )
+                            .with_hint("insert a conversion block (`INT_TO_REAL`, ...) before this input");
                             ctx.report(d);
                         }
                     }
