@@ -1213,7 +1213,11 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                                     type_text(&from)
                                 ),
                             )
-                            .with_hint("insert a conversion block (`INT_TO_REAL`, ...) before this input");
+                            .with_hint(if type_text(&to) == "BOOL" {
+                                "compare the value first (`GT`, `NE`, ...) to get a BOOL"
+                            } else {
+                                "insert a conversion block (`INT_TO_REAL`, ...) before this input"
+                            });
                             ctx.report(d);
                         }
                     }
