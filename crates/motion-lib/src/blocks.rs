@@ -575,7 +575,10 @@ impl McSetPosition {
     }
 }
 
-/// MC_SetOverride (Enable-type): VelFactor applies while Enable is TRUE.
+/// MC_SetOverride (Enable-type): while Enable is TRUE the factors are written every call
+/// (VelFactor >= 0, time scaling; AccFactor and JerkFactor in (0, 1], 0 = 1, re-planning
+/// the running move; see [`Engine::set_override_factors`]). The last factors stay in
+/// force after Enable falls.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct McSetOverride {
     pub enable: bool,
@@ -597,7 +600,7 @@ impl McSetOverride {
             self.error_id = ErrorId::None;
             return;
         }
-        match eng.set_override(axis, self.vel_factor) {
+        match eng.set_override_factors(axis, self.vel_factor, self.acc_factor, self.jerk_factor) {
             Ok(()) => {
                 self.enabled = true;
                 self.busy = true;

@@ -148,7 +148,11 @@ pub(crate) struct Active {
     pub t: f64,
     pub target: f64,
     pub speed: f64,
+    /// Limits the profile was planned with (the command's limits scaled by the
+    /// AccFactor and JerkFactor override).
     pub lim: Limits,
+    /// The command's own limits (before the override).
+    pub base: Limits,
     /// Release given (InVelocity / InGear / InSync reached).
     pub released: bool,
     pub end_v: f64,
@@ -167,6 +171,7 @@ impl Active {
             target: at.p,
             speed: 0.0,
             lim: UNIT,
+            base: UNIT,
             released: true,
             end_v: 0.0,
             sync: SyncParams::default(),
@@ -232,6 +237,16 @@ pub(crate) fn plan_to(
     Profile::position(start, target, end_v, &fast).map(|p| (p, None))
 }
 
+/// Move limits under the AccFactor / JerkFactor override (jerk 0 = unlimited stays 0).
+pub(crate) fn override_limits(lim: &Limits, acc: f64, jerk: f64) -> Limits {
+    Limits {
+        vmax: lim.vmax,
+        amax: lim.amax * acc,
+        dmax: lim.dmax * acc,
+        jmax: lim.jmax * jerk,
+    }
+}
+
 /// A zero-length profile standing at `p`.
 pub(crate) fn standing(p: f64) -> Profile {
     let at = State { p, v: 0.0, a: 0.0 };
@@ -268,6 +283,9 @@ pub(crate) struct AxisRt {
     pub drive_code: u16,
     pub override_target: f64,
     pub override_now: f64,
+    /// MC_SetOverride AccFactor (acceleration and deceleration) and JerkFactor, (0, 1].
+    pub acc_factor: f64,
+    pub jerk_factor: f64,
     pub group: Option<u16>,
     pub stop_owner: Option<CmdId>,
     pub active: Active,
@@ -333,6 +351,8 @@ impl Engine {
             drive_code: 0,
             override_target: 1.0,
             override_now: 1.0,
+            acc_factor: 1.0,
+            jerk_factor: 1.0,
             group: None,
             stop_owner: None,
             active: Active::idle(State::default()),
@@ -656,6 +676,70 @@ impl Engine {
         }
         self.axes[axis].override_target = factor;
         Ok(())
+    }
+
+    /// MC_SetOverride with all three factors. VelFactor as [`Engine::set_override`];
+    /// AccFactor scales the acceleration and deceleration limits, JerkFactor the jerk
+    /// limit of the running and of every later positioning, velocity and halt move (not
+    /// MC_Stop, error braking, gearing, camming or group moves). Both must be in (0, 1];
+    /// 0 stands for 1 (the value of a zero-initialised block). A change re-plans the
+    /// running move from its current position, velocity and acceleration, so the set
+    /// point stays continuous and the jerk within the new limit.
+    pub fn set_override_factors(
+        &mut self,
+        axis: usize,
+        vel: f64,
+        acc: f64,
+        jerk: f64,
+    ) -> Result<(), ErrorId> {
+        self.axis(axis)?;
+        let factor = |f: f64| -> Result<f64, ErrorId> {
+            if f == 0.0 {
+                Ok(1.0)
+            } else if finite(f) && f > 0.0 && f <= 1.0 {
+                Ok(f)
+            } else {
+                Err(ErrorId::InvalidOverride)
+            }
+        };
+        let (acc, jerk) = (factor(acc)?, factor(jerk)?);
+        self.set_override(axis, vel)?;
+        let ax = &mut self.axes[axis];
+        if ax.acc_factor != acc || ax.jerk_factor != jerk {
+            ax.acc_factor = acc;
+            ax.jerk_factor = jerk;
+            self.replan_override(axis);
+        }
+        Ok(())
+    }
+
+    /// The override factors in effect: (VelFactor target, AccFactor, JerkFactor).
+    pub fn override_factors(&self, axis: usize) -> Result<(f64, f64, f64), ErrorId> {
+        let ax = self.axis(axis)?;
+        Ok((ax.override_target, ax.acc_factor, ax.jerk_factor))
+    }
+
+    /// Re-plans the running move with the scaled limits from its current state.
+    fn replan_override(&mut self, axis: usize) {
+        let ax = &mut self.axes[axis];
+        let a = &mut ax.active;
+        if a.released || !matches!(a.kind, Kind::Position | Kind::Velocity | Kind::Halt) {
+            a.lim = override_limits(&a.base, ax.acc_factor, ax.jerk_factor);
+            return;
+        }
+        let lim = override_limits(&a.base, ax.acc_factor, ax.jerk_factor);
+        let now = a.prof.at(a.t);
+        let planned = match a.kind {
+            Kind::Position => plan_to(now, a.target, a.end_v, &lim),
+            Kind::Velocity => Profile::velocity(now, a.target, &lim).map(|p| (p, None)),
+            _ => Profile::velocity(now, 0.0, &lim).map(|p| (p, None)),
+        };
+        if let Ok((prof, tail)) = planned {
+            a.prof = prof;
+            a.tail = tail;
+            a.t = 0.0;
+            a.lim = lim;
+        }
     }
 
     /// Registers a cam table; returns its CamTableID.
@@ -983,7 +1067,7 @@ impl Engine {
                 return Ok(());
             }
             let cur = &self.axes[axis].active;
-            if cur.kind == p.kind && cur.target == p.target && cur.lim == p.lim {
+            if cur.kind == p.kind && cur.target == p.target && cur.base == p.lim {
                 // Inputs unchanged: keep the running profile.
                 return Ok(());
             }
@@ -1077,7 +1161,14 @@ impl Engine {
     /// advanced by `t0` seconds into its profile.
     fn activate(&mut self, axis: usize, p: Pending, t0: f64) -> Result<(), ErrorId> {
         let start = self.axes[axis].set;
-        let lim = p.lim;
+        let lim = match p.kind {
+            Kind::Position | Kind::Velocity | Kind::Halt => override_limits(
+                &p.lim,
+                self.axes[axis].acc_factor,
+                self.axes[axis].jerk_factor,
+            ),
+            _ => p.lim,
+        };
         let mut tail = None;
         let prof = match p.kind {
             Kind::Position => plan_to(start, p.target, p.end_v, &lim).map(|(m, t)| {
@@ -1108,6 +1199,7 @@ impl Engine {
             target: p.target,
             speed: p.speed,
             lim,
+            base: p.lim,
             released: false,
             end_v: p.end_v,
             sync: p.sync,
@@ -1156,6 +1248,7 @@ impl Engine {
             target: start.v,
             speed: start.v.abs(),
             lim,
+            base: lim,
             released: true,
             end_v: 0.0,
             sync: SyncParams::default(),
