@@ -78,7 +78,7 @@ pub enum ErrorId {
     AxisNotInGroup = 57,
     /// MC_GroupEnable needs at least one axis, every axis powered and in Standstill.
     GroupAxesNotReady = 58,
-    /// TransitionMode unknown or not supported (only TMNone and TMCornerDistance are).
+    /// TransitionMode unknown or not supported (TMStartVelocity, TMConstantVelocity), or a negative TransitionParameter.
     InvalidTransitionMode = 59,
     /// The circle is not defined (collinear points, end point off the circle, zero radius).
     InvalidCircle = 60,

@@ -29,6 +29,7 @@ use crate::cmd::CmdId;
 use crate::engine::{Engine, EngineConfig, MasterSource};
 use crate::error::ErrorId;
 use crate::group_blocks::*;
+use crate::path::CircMode;
 use crate::profile::Limits;
 use crate::sync::CamTable;
 
@@ -238,12 +239,8 @@ fn master_source(x: u8) -> Result<MasterSource, ErrorId> {
     }
 }
 
-fn circ_mode(x: u8) -> Result<bool, ErrorId> {
-    match x {
-        0 => Ok(false),
-        1 => Ok(true),
-        _ => Err(ErrorId::InvalidCircle),
-    }
+fn circ_mode(x: u8) -> Result<CircMode, ErrorId> {
+    CircMode::from_u8(x).ok_or(ErrorId::InvalidCircle)
 }
 
 fn path_choice(x: u8) -> Result<bool, ErrorId> {
@@ -2398,7 +2395,7 @@ pub unsafe extern "C" fn mc_move_circular_absolute(
     let mut b = McMoveCircularAbsolute::default();
     let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
-    b.circ_mode_center = circ_mode(c.CircMode).unwrap_or_else(|id| {
+    b.circ_mode = circ_mode(c.CircMode).unwrap_or_else(|id| {
         bad.get_or_insert(id);
         Default::default()
     });
@@ -2506,7 +2503,7 @@ pub unsafe extern "C" fn mc_move_circular_relative(
     let mut b = McMoveCircularRelative::default();
     let mut bad: Option<ErrorId> = None;
     b.execute = c.Execute;
-    b.circ_mode_center = circ_mode(c.CircMode).unwrap_or_else(|id| {
+    b.circ_mode = circ_mode(c.CircMode).unwrap_or_else(|id| {
         bad.get_or_insert(id);
         Default::default()
     });
@@ -2745,6 +2742,18 @@ pub const MC_CURRENT_DIRECTION: u8 = 3;
 pub const MC_TM_NONE: u8 = 0;
 /// MC_TRANSITION_MODE value.
 pub const MC_TM_CORNER_DISTANCE: u8 = 3;
+/// MC_TRANSITION_MODE TMMaxCornerDeviation.
+pub const MC_TM_MAX_CORNER_DEVIATION: u8 = 4;
+/// MC_CIRC_MODE BORDER (AuxPoint on the arc).
+pub const MC_CIRC_BORDER: u8 = 0;
+/// MC_CIRC_MODE CENTER (AuxPoint the centre, X/Y plane).
+pub const MC_CIRC_CENTER: u8 = 1;
+/// MC_CIRC_MODE RADIUS (AuxPoint the plane's normal, its length the radius).
+pub const MC_CIRC_RADIUS: u8 = 2;
+/// MC_CIRC_PATHCHOICE clockwise.
+pub const MC_CLOCKWISE: u8 = 0;
+/// MC_CIRC_PATHCHOICE counter-clockwise.
+pub const MC_COUNTER_CLOCKWISE: u8 = 1;
 /// ErrorID 0: None
 pub const MC_ERR_NONE: u16 = 0;
 /// ErrorID 1: The axis index does not name an axis of the engine.
@@ -2815,7 +2824,7 @@ pub const MC_ERR_AXIS_ALREADY_IN_GROUP: u16 = 56;
 pub const MC_ERR_AXIS_NOT_IN_GROUP: u16 = 57;
 /// ErrorID 58: MC_GroupEnable needs at least one axis, every axis powered and in Standstill.
 pub const MC_ERR_GROUP_AXES_NOT_READY: u16 = 58;
-/// ErrorID 59: TransitionMode unknown or not supported (only TMNone and TMCornerDistance are).
+/// ErrorID 59: TransitionMode unknown or not supported (TMStartVelocity, TMConstantVelocity), or a negative TransitionParameter.
 pub const MC_ERR_INVALID_TRANSITION_MODE: u16 = 59;
 /// ErrorID 60: The circle is not defined (collinear points, end point off the circle, zero radius).
 pub const MC_ERR_INVALID_CIRCLE: u16 = 60;

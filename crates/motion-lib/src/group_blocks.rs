@@ -148,11 +148,11 @@ motion_block!(
     |s| GroupMotion::DirectAbsolute { position: s.position }
 );
 motion_block!(
-    /// MC_MoveCircularAbsolute (CircMode: false = BORDER, true = CENTER; PathChoice:
-    /// false = clockwise, true = counter-clockwise, centre mode only).
-    McMoveCircularAbsolute { circ_mode_center: bool, aux_point: Vecn, end_point: Vecn, path_choice_ccw: bool }
+    /// MC_MoveCircularAbsolute (CircMode BORDER, CENTER or RADIUS, see [`CircMode`];
+    /// PathChoice: false = clockwise, true = counter-clockwise, CENTER and RADIUS only).
+    McMoveCircularAbsolute { circ_mode: CircMode, aux_point: Vecn, end_point: Vecn, path_choice_ccw: bool }
     |s| GroupMotion::Circular {
-        mode: if s.circ_mode_center { CircMode::Center } else { CircMode::Border },
+        mode: s.circ_mode,
         aux: s.aux_point,
         end: s.end_point,
         ccw: s.path_choice_ccw,
@@ -160,10 +160,11 @@ motion_block!(
     }
 );
 motion_block!(
-    /// MC_MoveCircularRelative (AuxPoint and EndPoint relative to the start point).
-    McMoveCircularRelative { circ_mode_center: bool, aux_point: Vecn, end_point: Vecn, path_choice_ccw: bool }
+    /// MC_MoveCircularRelative (AuxPoint and EndPoint relative to the start point; in
+    /// RADIUS mode AuxPoint is the plane's normal vector either way).
+    McMoveCircularRelative { circ_mode: CircMode, aux_point: Vecn, end_point: Vecn, path_choice_ccw: bool }
     |s| GroupMotion::Circular {
-        mode: if s.circ_mode_center { CircMode::Center } else { CircMode::Border },
+        mode: s.circ_mode,
         aux: s.aux_point,
         end: s.end_point,
         ccw: s.path_choice_ccw,

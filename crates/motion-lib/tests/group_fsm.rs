@@ -8,6 +8,7 @@ use motion_lib::engine::{Engine, EngineConfig};
 use motion_lib::error::ErrorId;
 use motion_lib::fsm::{AxisState, GroupState};
 use motion_lib::group_blocks::*;
+use motion_lib::path::CircMode;
 use motion_lib::profile::Limits;
 
 fn axes(n: usize) -> (Engine, Vec<usize>, usize) {
@@ -332,7 +333,7 @@ fn circular_move_stays_on_the_circle() {
     });
     let mut c = McMoveCircularAbsolute {
         execute: true,
-        circ_mode_center: true,
+        circ_mode: CircMode::Center,
         aux_point: vecn(&[0.0, 0.0]),
         end_point: vecn(&[0.0, 10.0]),
         path_choice_ccw: true,
@@ -380,7 +381,7 @@ fn circular_move_stays_on_the_circle() {
     // its acceleration limit (2000).
     let mut tight = McMoveCircularRelative {
         execute: true,
-        circ_mode_center: true,
+        circ_mode: CircMode::Center,
         aux_point: vecn(&[0.0, 1.0]),
         end_point: vecn(&[0.0, 2.0]),
         path_choice_ccw: true,
@@ -405,7 +406,7 @@ fn circular_move_stays_on_the_circle() {
     // An end point off the circle is rejected.
     let mut bad = McMoveCircularAbsolute {
         execute: true,
-        circ_mode_center: true,
+        circ_mode: CircMode::Center,
         aux_point: vecn(&[0.0, 0.0]),
         end_point: vecn(&[3.0, 3.0]),
         velocity: 20.0,
