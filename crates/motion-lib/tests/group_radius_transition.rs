@@ -37,7 +37,7 @@ fn group_at(n: usize, at: &[f64]) -> (Engine, usize) {
         ..AxisConfig::default()
     };
     let g = e.add_group();
-    for i in 0..n {
+    for (i, at) in at.iter().enumerate().take(n) {
         let a = e.add_axis(cfg).unwrap();
         e.add_axis_to_group(g, a, i).unwrap();
         McPower {
@@ -45,7 +45,7 @@ fn group_at(n: usize, at: &[f64]) -> (Engine, usize) {
             ..Default::default()
         }
         .call(&mut e, a);
-        e.set_position(a, at[i], false).unwrap();
+        e.set_position(a, *at, false).unwrap();
     }
     e.group_enable(g).unwrap();
     (e, g)
