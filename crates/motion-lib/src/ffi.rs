@@ -346,8 +346,12 @@ trait BlockC {
 }
 
 /// `BlockC` for a C struct with Execute, Busy, Error, ErrorID and `_internal`, plus the
-/// named optional outputs (`done: Done`, `in_target: InVelocity`, ...).
+/// named optional outputs (`done: Done`, `in_target: InVelocity`, ...); without a list:
+/// Done, Active and CommandAborted (the positioning blocks).
 macro_rules! block_c {
+    ($t:ty) => {
+        block_c!($t { done: Done, active: Active, command_aborted: CommandAborted });
+    };
     ($t:ty { $($f:ident : $cf:ident),* }) => {
         impl BlockC for $t {
             fn status(&mut self) -> StatusC<'_> {
@@ -498,6 +502,23 @@ macro_rules! move_block {
     };
 }
 
+/// MC_MoveCircularAbsolute / Relative from its C struct.
+macro_rules! circular_block {
+    ($t:ident, $c:ident, $bad:ident) => {
+        path_block!(
+            $t,
+            $c,
+            $bad {
+                execute: $c.Execute,
+                circ_mode: enum_in(circ_mode($c.CircMode), &mut $bad),
+                aux_point: $c.AuxPoint,
+                end_point: $c.EndPoint,
+                path_choice_ccw: enum_in(path_choice($c.PathChoice), &mut $bad),
+            }
+        )
+    };
+}
+
 /// A Part 4 path block from its C struct: the block's own fields, then the path
 /// dynamics, CoordSystem, BufferMode, TransitionMode and TransitionParameter.
 macro_rules! path_block {
@@ -569,11 +590,7 @@ pub struct MC_Home_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_Home_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_Home_C);
 
 /// Calls MC_Home once (one PLC scan).
 /// # Safety
@@ -649,11 +666,7 @@ pub struct MC_Halt_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_Halt_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_Halt_C);
 
 /// Calls MC_Halt once (one PLC scan).
 /// # Safety
@@ -697,11 +710,7 @@ pub struct MC_MoveAbsolute_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_MoveAbsolute_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_MoveAbsolute_C);
 
 /// Calls MC_MoveAbsolute once (one PLC scan).
 /// # Safety
@@ -751,11 +760,7 @@ pub struct MC_MoveRelative_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_MoveRelative_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_MoveRelative_C);
 
 /// Calls MC_MoveRelative once (one PLC scan).
 /// # Safety
@@ -804,11 +809,7 @@ pub struct MC_MoveAdditive_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_MoveAdditive_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_MoveAdditive_C);
 
 /// Calls MC_MoveAdditive once (one PLC scan).
 /// # Safety
@@ -1654,11 +1655,7 @@ pub struct MC_GroupHome_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_GroupHome_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_GroupHome_C);
 
 /// Calls MC_GroupHome once (one PLC scan).
 /// # Safety
@@ -1696,11 +1693,7 @@ pub struct MC_GroupHalt_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_GroupHalt_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_GroupHalt_C);
 
 /// Calls MC_GroupHalt once (one PLC scan).
 /// # Safety
@@ -1745,11 +1738,7 @@ pub struct MC_MoveLinearAbsolute_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_MoveLinearAbsolute_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_MoveLinearAbsolute_C);
 
 /// Calls MC_MoveLinearAbsolute once (one PLC scan).
 /// # Safety
@@ -1799,11 +1788,7 @@ pub struct MC_MoveLinearRelative_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_MoveLinearRelative_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_MoveLinearRelative_C);
 
 /// Calls MC_MoveLinearRelative once (one PLC scan).
 /// # Safety
@@ -1853,11 +1838,7 @@ pub struct MC_MoveDirectAbsolute_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_MoveDirectAbsolute_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_MoveDirectAbsolute_C);
 
 /// Calls MC_MoveDirectAbsolute once (one PLC scan).
 /// # Safety
@@ -1910,11 +1891,7 @@ pub struct MC_MoveCircularAbsolute_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_MoveCircularAbsolute_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_MoveCircularAbsolute_C);
 
 /// Calls MC_MoveCircularAbsolute once (one PLC scan).
 /// # Safety
@@ -1929,17 +1906,7 @@ pub unsafe extern "C" fn mc_move_circular_absolute(
         return;
     };
     let mut bad = None;
-    let b = path_block!(
-        McMoveCircularAbsolute,
-        c,
-        bad {
-            execute: c.Execute,
-            circ_mode: enum_in(circ_mode(c.CircMode), &mut bad),
-            aux_point: c.AuxPoint,
-            end_point: c.EndPoint,
-            path_choice_ccw: enum_in(path_choice(c.PathChoice), &mut bad),
-        }
-    );
+    let b = circular_block!(McMoveCircularAbsolute, c, bad);
     run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
@@ -1970,11 +1937,7 @@ pub struct MC_MoveCircularRelative_C {
     pub _internal: [u64; 2],
 }
 
-block_c!(MC_MoveCircularRelative_C {
-    done: Done,
-    active: Active,
-    command_aborted: CommandAborted
-});
+block_c!(MC_MoveCircularRelative_C);
 
 /// Calls MC_MoveCircularRelative once (one PLC scan).
 /// # Safety
@@ -1989,17 +1952,7 @@ pub unsafe extern "C" fn mc_move_circular_relative(
         return;
     };
     let mut bad = None;
-    let b = path_block!(
-        McMoveCircularRelative,
-        c,
-        bad {
-            execute: c.Execute,
-            circ_mode: enum_in(circ_mode(c.CircMode), &mut bad),
-            aux_point: c.AuxPoint,
-            end_point: c.EndPoint,
-            path_choice_ccw: enum_in(path_choice(c.PathChoice), &mut bad),
-        }
-    );
+    let b = circular_block!(McMoveCircularRelative, c, bad);
     run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
