@@ -210,7 +210,7 @@
 #define MC_ERR_INVALID_RATIO 28
 
 /**
- * ErrorID 30: Override factor negative or not finite.
+ * ErrorID 30: Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
  */
 #define MC_ERR_INVALID_OVERRIDE 30
 

@@ -52,7 +52,7 @@ pub enum ErrorId {
     TargetBeyondSoftwareLimit = 27,
     /// Gear ratio invalid (denominator 0 or not finite).
     InvalidRatio = 28,
-    /// Override factor negative or not finite.
+    /// Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
     InvalidOverride = 30,
     /// The profile planner found no profile for these inputs.
     PlanningFailed = 31,

@@ -2165,7 +2165,7 @@ pub const MC_ERR_INVALID_BUFFER_MODE: u16 = 26;
 pub const MC_ERR_TARGET_BEYOND_SOFTWARE_LIMIT: u16 = 27;
 /// ErrorID 28: Gear ratio invalid (denominator 0 or not finite).
 pub const MC_ERR_INVALID_RATIO: u16 = 28;
-/// ErrorID 30: Override factor negative or not finite.
+/// ErrorID 30: Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
 pub const MC_ERR_INVALID_OVERRIDE: u16 = 30;
 /// ErrorID 31: The profile planner found no profile for these inputs.
 pub const MC_ERR_PLANNING_FAILED: u16 = 31;
