@@ -593,7 +593,7 @@ impl McSetPosition {
 }
 
 /// MC_SetOverride (Enable-type): while Enable is TRUE the factors are written every call
-/// (VelFactor >= 0, time scaling; AccFactor and JerkFactor in (0, 1], 0 = 1, re-planning
+/// (VelFactor >= 0, AccFactor and JerkFactor in (0, 1], 0 = 1; each re-plans
 /// the running move; see [`Engine::set_override_factors`]). The last factors stay in
 /// force after Enable falls.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -1,6 +1,8 @@
-//! MC_SetOverride AccFactor and JerkFactor: a running move re-plans with the scaled
-//! limits from its current state (position, velocity and acceleration continuous, the
-//! jerk within the limit in force), reaches its target; bad factors are refused.
+//! MC_SetOverride VelFactor, AccFactor and JerkFactor: a running move re-plans with the
+//! scaled limits from its current state (position, velocity and acceleration continuous,
+//! the jerk within the limit in force) and reaches its target; VelFactor 0 holds the move
+//! on its way until the factor returns; MC_Stop is not overridden; bad factors are
+//! refused.
 
 use motion_lib::axis::AxisConfig;
 use motion_lib::blocks::*;
@@ -201,4 +203,110 @@ fn bad_factors_are_refused() {
         assert_eq!(o.error_id, ErrorId::InvalidOverride);
     }
     assert_eq!(e.override_factors(a).unwrap(), (1.0, 1.0, 1.0));
+}
+
+#[test]
+fn vel_factor_slows_a_running_move_without_an_acceleration_step() {
+    let (mut e, a) = powered();
+    let (_, plain) = run(&mut e, a, &mut move_to(100.0), |_, _| {});
+    let (mut e, a) = powered();
+    let mut o = McSetOverride {
+        enable: true,
+        vel_factor: 0.5,
+        ..Default::default()
+    };
+    let mut peak_after: f64 = 0.0;
+    let (acc, n) = run(&mut e, a, &mut move_to(100.0), |k, e| {
+        if k == 400 {
+            o.call(e, a);
+            assert!(o.enabled && !o.error);
+        }
+        if k > 700 {
+            peak_after = peak_after.max(e.set_velocity_of(a).unwrap().abs());
+        }
+    });
+    assert!((e.set_position_of(a).unwrap() - 100.0).abs() < 1e-9);
+    assert!(
+        (peak_after - 25.0).abs() < 1e-9,
+        "cruises at 50 * 0.5: {peak_after}"
+    );
+    assert!(max_jerk(&acc) <= JMAX * (1.0 + 1e-6), "{}", max_jerk(&acc));
+    let amax = acc.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    assert!(amax <= AMAX * (1.0 + 1e-9), "{amax}");
+    assert!(n > plain);
+}
+
+#[test]
+fn vel_factor_zero_holds_the_move_until_it_returns() {
+    let (mut e, a) = powered();
+    let mut o = McSetOverride {
+        enable: true,
+        vel_factor: 0.0,
+        ..Default::default()
+    };
+    let mut held = 0;
+    let mut mv = move_to(100.0);
+    let (acc, _) = run(&mut e, a, &mut mv, |k, e| {
+        if k == 300 {
+            o.call(e, a);
+        }
+        if (800..3000).contains(&k) {
+            // Standing on the way, still Busy, not Done.
+            assert!(e.set_velocity_of(a).unwrap().abs() < 1e-12, "{k}");
+            let p = e.set_position_of(a).unwrap();
+            assert!(p > 1.0 && p < 99.0, "{p}");
+            held += 1;
+        }
+        if k == 3000 {
+            o.vel_factor = 1.0;
+            o.call(e, a);
+        }
+    });
+    assert_eq!(held, 2200);
+    assert!((e.set_position_of(a).unwrap() - 100.0).abs() < 1e-9);
+    assert!(max_jerk(&acc) <= JMAX * (1.0 + 1e-6), "{}", max_jerk(&acc));
+}
+
+#[test]
+fn stop_is_not_overridden_and_factors_above_one_keep_the_axis_limit() {
+    let (mut e, a) = powered();
+    let mut v = McMoveVelocity {
+        execute: true,
+        velocity: 800.0,
+        acceleration: 5000.0,
+        deceleration: 5000.0,
+        ..Default::default()
+    };
+    let mut o = McSetOverride {
+        enable: true,
+        vel_factor: 2.0,
+        ..Default::default()
+    };
+    o.call(&mut e, a);
+    v.call(&mut e, a);
+    let mut vmax: f64 = 0.0;
+    for _ in 0..2000 {
+        e.step();
+        v.call(&mut e, a);
+        vmax = vmax.max(e.set_velocity_of(a).unwrap());
+    }
+    // 800 * 2 is capped by the axis limit 1000.
+    assert!(v.in_velocity && (vmax - 1000.0).abs() < 1e-9, "{vmax}");
+    // VelFactor 0 does not freeze MC_Stop.
+    o.vel_factor = 0.0;
+    o.call(&mut e, a);
+    let mut stop = McStop {
+        execute: true,
+        deceleration: 5000.0,
+        ..Default::default()
+    };
+    stop.call(&mut e, a);
+    for _ in 0..2000 {
+        e.step();
+        stop.call(&mut e, a);
+        if stop.done {
+            break;
+        }
+    }
+    assert!(stop.done && e.set_velocity_of(a).unwrap() == 0.0);
 }
