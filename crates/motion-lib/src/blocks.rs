@@ -80,6 +80,30 @@ impl ExecCore {
         }
     }
 
+    /// One call of a single-axis command block: `cmd` is submitted to `axis` on a rising
+    /// edge; with `continuous_update` a Busy command gets the inputs again every call.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn axis_cycle(
+        &mut self,
+        eng: &mut Engine,
+        execute: bool,
+        axis: usize,
+        cmd: AxisCommand,
+        d: Dynamics,
+        bm: BufferMode,
+        continuous_update: bool,
+    ) {
+        let mut upd = |e: &mut Engine, id: CmdId| {
+            let _ = e.update(axis, id, cmd, d);
+        };
+        let update: UpdateFn<'_> = if continuous_update {
+            Some(&mut upd)
+        } else {
+            None
+        };
+        self.cycle(eng, execute, |e| e.submit(axis, cmd, d, bm), update);
+    }
+
     /// Reads the command's status into the outputs.
     fn track(&mut self, eng: &mut Engine, release: bool) {
         let Some(id) = self.cmd else {
@@ -222,17 +246,8 @@ impl McMoveAbsolute {
             self.deceleration,
             self.jerk,
         );
-        let bm = self.buffer_mode;
-        let mut upd = |e: &mut Engine, id: CmdId| {
-            let _ = e.update(axis, id, cmd, d);
-        };
-        let update: UpdateFn<'_> = if self.continuous_update {
-            Some(&mut upd)
-        } else {
-            None
-        };
-        self.core
-            .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), update);
+        let (x, bm, cu) = (self.execute, self.buffer_mode, self.continuous_update);
+        self.core.axis_cycle(eng, x, axis, cmd, d, bm, cu);
         outputs_from_core!(self);
     }
 }
@@ -272,9 +287,8 @@ macro_rules! distance_block {
                     self.deceleration,
                     self.jerk,
                 );
-                let bm = self.buffer_mode;
-                self.core
-                    .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), None);
+                let (x, bm) = (self.execute, self.buffer_mode);
+                self.core.axis_cycle(eng, x, axis, cmd, d, bm, false);
                 outputs_from_core!(self);
             }
         }
@@ -322,17 +336,8 @@ impl McMoveVelocity {
             self.deceleration,
             self.jerk,
         );
-        let bm = self.buffer_mode;
-        let mut upd = |e: &mut Engine, id: CmdId| {
-            let _ = e.update(axis, id, cmd, d);
-        };
-        let update: UpdateFn<'_> = if self.continuous_update {
-            Some(&mut upd)
-        } else {
-            None
-        };
-        self.core
-            .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), update);
+        let (x, bm, cu) = (self.execute, self.buffer_mode, self.continuous_update);
+        self.core.axis_cycle(eng, x, axis, cmd, d, bm, cu);
         outputs_from_core!(self, in_velocity);
     }
 }
@@ -357,13 +362,9 @@ pub struct McHalt {
 impl McHalt {
     pub fn call(&mut self, eng: &mut Engine, axis: usize) {
         let d = dynamics(0.0, self.deceleration, self.deceleration, self.jerk);
-        let bm = self.buffer_mode;
-        self.core.cycle(
-            eng,
-            self.execute,
-            |e| e.submit(axis, AxisCommand::Halt, d, bm),
-            None,
-        );
+        let (x, bm) = (self.execute, self.buffer_mode);
+        self.core
+            .axis_cycle(eng, x, axis, AxisCommand::Halt, d, bm, false);
         outputs_from_core!(self);
     }
 }
@@ -810,9 +811,8 @@ impl McGearIn {
             source: self.master_value_source,
         };
         let d = dynamics(0.0, self.acceleration, self.deceleration, self.jerk);
-        let bm = self.buffer_mode;
-        self.core
-            .cycle(eng, self.execute, |e| e.submit(slave, cmd, d, bm), None);
+        let (x, bm) = (self.execute, self.buffer_mode);
+        self.core.axis_cycle(eng, x, slave, cmd, d, bm, false);
         outputs_from_core!(self, in_gear);
     }
 }
@@ -939,13 +939,9 @@ impl McCamIn {
             ..SyncParams::default()
         };
         let cmd = AxisCommand::CamIn { master, params };
-        let bm = self.buffer_mode;
-        self.core.cycle(
-            eng,
-            self.execute,
-            |e| e.submit(slave, cmd, Dynamics::default(), bm),
-            None,
-        );
+        let (x, bm) = (self.execute, self.buffer_mode);
+        self.core
+            .axis_cycle(eng, x, slave, cmd, Dynamics::default(), bm, false);
         self.end_of_profile = self.core.end_of_profile && self.core.active;
         outputs_from_core!(self, in_sync);
     }

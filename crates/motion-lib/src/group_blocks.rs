@@ -188,6 +188,17 @@ impl McGroupHome {
     }
 }
 
+/// Path inputs of MC_GroupHalt and MC_GroupStop: brake with `deceleration` and `jerk`.
+fn braking(deceleration: f64, jerk: f64) -> PathInputs {
+    PathInputs {
+        velocity: 1.0,
+        acceleration: deceleration,
+        deceleration,
+        jerk,
+        ..PathInputs::default()
+    }
+}
+
 /// MC_GroupHalt.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct McGroupHalt {
@@ -208,12 +219,8 @@ pub struct McGroupHalt {
 impl McGroupHalt {
     pub fn call(&mut self, eng: &mut Engine, group: usize) {
         let inputs = PathInputs {
-            velocity: 1.0,
-            acceleration: self.deceleration,
-            deceleration: self.deceleration,
-            jerk: self.jerk,
             buffer: self.buffer_mode,
-            ..PathInputs::default()
+            ..braking(self.deceleration, self.jerk)
         };
         self.core.cycle(
             eng,
@@ -242,13 +249,7 @@ pub struct McGroupStop {
 
 impl McGroupStop {
     pub fn call(&mut self, eng: &mut Engine, group: usize) {
-        let inputs = PathInputs {
-            velocity: 1.0,
-            acceleration: self.deceleration,
-            deceleration: self.deceleration,
-            jerk: self.jerk,
-            ..PathInputs::default()
-        };
+        let inputs = braking(self.deceleration, self.jerk);
         self.core.cycle(
             eng,
             self.execute,
