@@ -203,14 +203,29 @@ impl Geometry {
             start[i] = 0.0;
             delta[i] = 0.0;
         }
+        let center = if mode == CircMode::Center {
+            [center[0], center[1], 0.0]
+        } else {
+            center
+        };
+        Some(Self::helix(center, e1, e2, r, angle, start, delta))
+    }
+
+    /// An arc of radius `r` turning `angle` from `center + r e1` towards `e2`, plus the
+    /// linear motion `delta` from `start` (the arc's axes zero in both).
+    fn helix(
+        center: [f64; 3],
+        e1: [f64; 3],
+        e2: [f64; 3],
+        r: f64,
+        angle: f64,
+        start: Vecn,
+        delta: Vecn,
+    ) -> Geometry {
         let arc_len = r * angle;
         let len = (arc_len * arc_len + norm(&delta).powi(2)).sqrt();
-        Some(Geometry::Arc {
-            center: if mode == CircMode::Center {
-                [center[0], center[1], 0.0]
-            } else {
-                center
-            },
+        Geometry::Arc {
+            center,
             e1,
             e2,
             r,
@@ -218,7 +233,7 @@ impl Geometry {
             start,
             delta,
             len,
-        })
+        }
     }
 
     /// CircMode RADIUS (see [`CircMode::Radius`]): the shorter arc of radius |n| in the
@@ -268,18 +283,7 @@ impl Geometry {
             start[i] = 0.0;
             delta[i] = along * nu[i];
         }
-        let arc_len = r * angle;
-        let len = (arc_len * arc_len + norm(&delta).powi(2)).sqrt();
-        Some(Geometry::Arc {
-            center: c,
-            e1,
-            e2,
-            r,
-            angle,
-            start,
-            delta,
-            len,
-        })
+        Some(Self::helix(c, e1, e2, r, angle, start, delta))
     }
 
     /// The corner blend from `p0` through control `p1` to `p2`.
