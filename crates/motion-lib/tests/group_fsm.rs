@@ -1,41 +1,16 @@
 //! Group state machine (Part 4) through the group blocks; circular and direct moves;
 //! the group reads.
 
-use motion_lib::axis::AxisConfig;
 use motion_lib::blocks::{McMoveAbsolute, McPower};
 use motion_lib::buffer::BufferMode;
-use motion_lib::engine::{Engine, EngineConfig};
+use motion_lib::engine::Engine;
 use motion_lib::error::ErrorId;
 use motion_lib::fsm::{AxisState, GroupState};
 use motion_lib::group_blocks::*;
 use motion_lib::path::CircMode;
-use motion_lib::profile::Limits;
 
-fn axes(n: usize) -> (Engine, Vec<usize>, usize) {
-    let mut e = Engine::new(EngineConfig {
-        cycle: 0.001,
-        queue_depth: 4,
-    })
-    .unwrap();
-    let cfg = AxisConfig {
-        limits: Limits {
-            vmax: 200.0,
-            amax: 2000.0,
-            dmax: 2000.0,
-            jmax: 20000.0,
-        },
-        ..AxisConfig::default()
-    };
-    let v: Vec<usize> = (0..n).map(|_| e.add_axis(cfg).unwrap()).collect();
-    let g = e.add_group();
-    (e, v, g)
-}
-
-fn vecn(x: &[f64]) -> [f64; 16] {
-    let mut v = [0.0; 16];
-    v[..x.len()].copy_from_slice(x);
-    v
-}
+mod group_common;
+use group_common::{axes, vecn};
 
 fn lin(x: &[f64], bm: BufferMode) -> McMoveLinearAbsolute {
     McMoveLinearAbsolute {

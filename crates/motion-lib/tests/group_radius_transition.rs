@@ -3,49 +3,29 @@
 //! velocity) and TMMaxCornerDeviation (the blend passes the corner at the given
 //! distance, the axis velocity vector stays continuous, the limits hold).
 
-use motion_lib::axis::AxisConfig;
 use motion_lib::blocks::McPower;
 use motion_lib::buffer::{BufferMode, TransitionMode};
-use motion_lib::engine::{Engine, EngineConfig};
+use motion_lib::engine::Engine;
 use motion_lib::error::ErrorId;
 use motion_lib::group_blocks::*;
 use motion_lib::path::CircMode;
-use motion_lib::profile::Limits;
+
+mod group_common;
+use group_common::{axes, vecn};
 
 const DT: f64 = 0.001;
 
-fn vecn(x: &[f64]) -> [f64; 16] {
-    let mut v = [0.0; 16];
-    v[..x.len()].copy_from_slice(x);
-    v
-}
-
 /// An enabled group of `n` axes (vmax 200, amax 2000, jmax 20000) standing at `at`.
 fn group_at(n: usize, at: &[f64]) -> (Engine, usize) {
-    let mut e = Engine::new(EngineConfig {
-        cycle: DT,
-        queue_depth: 4,
-    })
-    .unwrap();
-    let cfg = AxisConfig {
-        limits: Limits {
-            vmax: 200.0,
-            amax: 2000.0,
-            dmax: 2000.0,
-            jmax: 20000.0,
-        },
-        ..AxisConfig::default()
-    };
-    let g = e.add_group();
-    for (i, at) in at.iter().enumerate().take(n) {
-        let a = e.add_axis(cfg).unwrap();
-        e.add_axis_to_group(g, a, i).unwrap();
+    let (mut e, ax, g) = axes(n);
+    for (i, (a, at)) in ax.iter().zip(at).enumerate() {
+        e.add_axis_to_group(g, *a, i).unwrap();
         McPower {
             enable: true,
             ..Default::default()
         }
-        .call(&mut e, a);
-        e.set_position(a, *at, false).unwrap();
+        .call(&mut e, *a);
+        e.set_position(*a, *at, false).unwrap();
     }
     e.group_enable(g).unwrap();
     (e, g)
