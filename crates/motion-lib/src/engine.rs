@@ -762,7 +762,8 @@ impl Engine {
     }
 
     /// Re-plans the running move under the new override from its current state. A
-    /// MoveVelocity that was InVelocity drops it until it reaches the new velocity.
+    /// MoveVelocity that was InVelocity drops it until it reaches a new velocity (an
+    /// AccFactor or JerkFactor change alone keeps it).
     fn replan_override(&mut self, axis: usize) {
         let ax = &self.axes[axis];
         let a = ax.active;
@@ -781,7 +782,7 @@ impl Engine {
             ax.active.t = 0.0;
             ax.active.lim = o.lim;
             ax.active.paused = o.paused;
-            if a.kind == Kind::Velocity && a.released {
+            if a.kind == Kind::Velocity && a.released && o.prof.duration() > 0.0 {
                 ax.active.released = false;
                 if let Some(id) = a.id {
                     self.cmds.set_in_target(id, false);

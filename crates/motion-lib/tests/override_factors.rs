@@ -174,11 +174,28 @@ fn factors_apply_to_later_moves_and_velocity_moves() {
         peak <= 0.2 * AMAX * (1.0 + 1e-9) && peak > 0.19 * AMAX,
         "{peak}"
     );
+    // A new AccFactor at constant velocity keeps InVelocity; a new VelFactor drops it
+    // until the new velocity (40 * 0.5) is reached.
+    // (Both blocks in the same scan, the override first.)
+    o.acc_factor = 0.5;
+    o.call(&mut e, a);
+    v.call(&mut e, a);
+    assert!(v.in_velocity);
+    e.step();
+    o.vel_factor = 0.5;
+    o.call(&mut e, a);
+    v.call(&mut e, a);
+    assert!(!v.in_velocity && v.busy && v.active);
+    for _ in 0..2000 {
+        e.step();
+        v.call(&mut e, a);
+    }
+    assert!(v.in_velocity && (e.set_velocity_of(a).unwrap() - 20.0).abs() < 1e-9);
     // Enable FALSE: outputs reset, the factors stay.
     o.enable = false;
     o.call(&mut e, a);
     assert!(!o.enabled && !o.busy && !o.error);
-    assert_eq!(e.override_factors(a).unwrap(), (1.0, 0.2, 1.0));
+    assert_eq!(e.override_factors(a).unwrap(), (0.5, 0.5, 1.0));
 }
 
 #[test]
