@@ -833,7 +833,7 @@ impl PouLowering<'_> {
                     });
                 }
                 for (target, negated) in output_targets(p, args) {
-                    for k in 0..p.len() {
+                    for k in 0..p.values() {
                         let target = match p.array {
                             Some(shape) => element(&target, shape.iec_index(k)),
                             None => target.clone(),

@@ -132,12 +132,12 @@ impl Param {
         c_type_of(&self.iec_type, self.class).unwrap_or("uint8_t")
     }
     /// Number of values: the array length, 1 for a scalar.
-    pub fn len(&self) -> u32 {
+    pub fn values(&self) -> u32 {
         self.array.map_or(1, |a| a.len)
     }
     /// Bytes the parameter takes in the TM area (the elements of an array contiguously).
     pub fn tm_bytes(&self) -> u32 {
-        self.class.tm_bytes() * self.len()
+        self.class.tm_bytes() * self.values()
     }
     /// The IEC type programs see: the element type, or `ARRAY [l..h] OF <element type>`.
     pub fn iec_declared(&self, element: &str) -> String {
