@@ -388,3 +388,151 @@ fn a_missing_required_group_input_is_reported_before_code_generation() {
         "{err}"
     );
 }
+
+/// A ladder network (PLCopen XML): MC_Power on X1 and Y1 (the second enabled by the first's Status),
+/// MC_GroupEnable of G1 when both are powered, then MC_MoveLinearAbsolute to the array variable `Target`.
+/// Several blocks of one network once shared their lowered instructions' spans, which mixed their types
+/// with the IL method (the second MC_Power then powered X1 again and the group refused to enable).
+const LADDER: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <fileHeader companyName="ladderc" productName="tests" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="lgroup"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="lgroup" pouType="program">
+      <interface><localVars>
+        <variable name="Powered"><type><BOOL/></type></variable>
+        <variable name="Enabled"><type><BOOL/></type></variable>
+        <variable name="Done"><type><BOOL/></type></variable>
+        <variable name="Target"><type><array><dimension lower="0" upper="5"/><baseType><LREAL/></baseType></array></type>
+          <initialValue><arrayValue><value><simpleValue value="100.0"/></value><value><simpleValue value="50.0"/></value></arrayValue></initialValue></variable>
+        <variable name="pw1"><type><derived name="MC_Power"/></type></variable>
+        <variable name="pw2"><type><derived name="MC_Power"/></type></variable>
+        <variable name="en"><type><derived name="MC_GroupEnable"/></type></variable>
+        <variable name="mv"><type><derived name="MC_MoveLinearAbsolute"/></type></variable>
+      </localVars></interface>
+      <body><LD>
+        <leftPowerRail localId="1" executionOrderId="1"><position x="10" y="50"/>
+          <connectionPointOut formalParameter=""/></leftPowerRail>
+        <inVariable localId="2" executionOrderId="2"><position x="40" y="90"/><expression>X1</expression></inVariable>
+        <inVariable localId="20" executionOrderId="2"><position x="40" y="90"/><expression>Y1</expression></inVariable>
+        <block localId="3" typeName="MC_Power" instanceName="pw1" executionOrderId="3"><position x="100" y="50"/>
+          <inputVariables>
+            <variable formalParameter="Enable"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+          </inputVariables>
+          <inOutVariables>
+            <variable formalParameter="Axis"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+          </inOutVariables>
+          <outputVariables>
+            <variable formalParameter="Status"><connectionPointOut/></variable>
+          </outputVariables>
+        </block>
+        <block localId="21" typeName="MC_Power" instanceName="pw2" executionOrderId="4"><position x="200" y="50"/>
+          <inputVariables>
+            <variable formalParameter="Enable"><connectionPointIn><connection refLocalId="3" formalParameter="Status"/></connectionPointIn></variable>
+          </inputVariables>
+          <inOutVariables>
+            <variable formalParameter="Axis"><connectionPointIn><connection refLocalId="20"/></connectionPointIn></variable>
+          </inOutVariables>
+          <outputVariables>
+            <variable formalParameter="Status"><connectionPointOut/></variable>
+          </outputVariables>
+        </block>
+        <coil localId="4" executionOrderId="5"><position x="300" y="50"/>
+          <connectionPointIn><connection refLocalId="21" formalParameter="Status"/></connectionPointIn>
+          <variable>Powered</variable></coil>
+        <contact localId="5" executionOrderId="6"><position x="40" y="150"/>
+          <connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+          <variable>Powered</variable></contact>
+        <inVariable localId="6" executionOrderId="7"><position x="40" y="190"/><expression>G1</expression></inVariable>
+        <block localId="7" typeName="MC_GroupEnable" instanceName="en" executionOrderId="8"><position x="100" y="150"/>
+          <inputVariables>
+            <variable formalParameter="Execute"><connectionPointIn><connection refLocalId="5"/></connectionPointIn></variable>
+          </inputVariables>
+          <inOutVariables>
+            <variable formalParameter="AxesGroup"><connectionPointIn><connection refLocalId="6"/></connectionPointIn></variable>
+          </inOutVariables>
+          <outputVariables>
+            <variable formalParameter="Done"><connectionPointOut/></variable>
+          </outputVariables>
+        </block>
+        <coil localId="8" executionOrderId="9"><position x="200" y="150"/>
+          <connectionPointIn><connection refLocalId="7" formalParameter="Done"/></connectionPointIn>
+          <variable>Enabled</variable></coil>
+        <contact localId="9" executionOrderId="10"><position x="40" y="250"/>
+          <connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+          <variable>Enabled</variable></contact>
+        <inVariable localId="10" executionOrderId="11"><position x="40" y="290"/><expression>Target</expression></inVariable>
+        <inVariable localId="11" executionOrderId="12"><position x="40" y="310"/><expression>20.0</expression></inVariable>
+        <inVariable localId="12" executionOrderId="13"><position x="40" y="330"/><expression>100.0</expression></inVariable>
+        <inVariable localId="13" executionOrderId="14"><position x="40" y="350"/><expression>mcBlendingLow</expression></inVariable>
+        <block localId="14" typeName="MC_MoveLinearAbsolute" instanceName="mv" executionOrderId="15"><position x="100" y="250"/>
+          <inputVariables>
+            <variable formalParameter="Execute"><connectionPointIn><connection refLocalId="9"/></connectionPointIn></variable>
+            <variable formalParameter="Position"><connectionPointIn><connection refLocalId="10"/></connectionPointIn></variable>
+            <variable formalParameter="Velocity"><connectionPointIn><connection refLocalId="11"/></connectionPointIn></variable>
+            <variable formalParameter="Acceleration"><connectionPointIn><connection refLocalId="12"/></connectionPointIn></variable>
+            <variable formalParameter="Deceleration"><connectionPointIn><connection refLocalId="12"/></connectionPointIn></variable>
+            <variable formalParameter="BufferMode"><connectionPointIn><connection refLocalId="13"/></connectionPointIn></variable>
+          </inputVariables>
+          <inOutVariables>
+            <variable formalParameter="AxesGroup"><connectionPointIn><connection refLocalId="6"/></connectionPointIn></variable>
+          </inOutVariables>
+          <outputVariables>
+            <variable formalParameter="Done"><connectionPointOut/></variable>
+          </outputVariables>
+        </block>
+        <coil localId="15" executionOrderId="16"><position x="200" y="250"/>
+          <connectionPointIn><connection refLocalId="14" formalParameter="Done"/></connectionPointIn>
+          <variable>Done</variable></coil>
+      </LD></body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>
+"#;
+
+const LADDER_AXES: &str = r#"{ "cycle_ms": 10,
+  "axes": [ { "name": "X1", "unit": "mm", "velocity": 100, "acceleration": 500, "deceleration": 500 },
+            { "name": "Y1", "unit": "mm", "velocity": 100, "acceleration": 500, "deceleration": 500 } ],
+  "groups": [ { "name": "G1", "axes": [ { "axis": "X1", "identity": "X" }, { "axis": "Y1", "identity": "Y" } ] } ] }
+"#;
+
+#[test]
+fn a_ladder_network_with_group_blocks_runs_identically_with_both_methods() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("lgroup.xml");
+    std::fs::write(&src, LADDER).unwrap();
+    std::fs::write(dir.path().join("lgroup.axes.json"), LADDER_AXES).unwrap();
+    let mut traces = Vec::new();
+    for s in ["il", "template"] {
+        let trace = dir.path().join(format!("{s}.csv"));
+        let out = ladderc()
+            .arg("run")
+            .arg(&src)
+            .args([
+                "--strategy",
+                s,
+                "--cycles",
+                "700",
+                "--watch",
+                "lgroup.Powered,lgroup.Enabled,lgroup.Done,lgroup.en.ErrorID,axis.X1.position,axis.Y1.position",
+                "--trace",
+            ])
+            .arg(&trace)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        traces.push(std::fs::read_to_string(&trace).unwrap());
+    }
+    assert_eq!(traces[0], traces[1]);
+    let t = &traces[0];
+    assert_eq!(column(t, "lgroup.Enabled")[1], 1.0, "the group is enabled");
+    assert!(column(t, "lgroup.en.ErrorID").iter().all(|&e| e == 0.0));
+    let done = first_rise(&column(t, "lgroup.Done"));
+    assert_eq!(column(t, "axis.X1.position")[done], 100.0);
+    assert_eq!(column(t, "axis.Y1.position")[done], 50.0);
+}
