@@ -536,3 +536,251 @@ fn a_ladder_network_with_group_blocks_runs_identically_with_both_methods() {
     assert_eq!(column(t, "axis.X1.position")[done], 100.0);
     assert_eq!(column(t, "axis.Y1.position")[done], 50.0);
 }
+
+/// Every Part 4 block in one sequence, each started by the previous one's Done: the group G1 starts empty
+/// (axes file), MC_AddAxisToGroup adds X1 and Y1, MC_GroupEnable, MC_GroupHome at 0, a relative line by
+/// (10, 10), a clockwise arc about the centre (10, 0) to (20, 0), a relative arc through (+5, +5) to
+/// (+10, 0), a direct move to (0, 5), a line to (40, 40), MC_GroupHalt, MC_GroupStop, MC_GroupReset,
+/// MC_GroupDisable (once in standby), MC_RemoveAxisFromGroup, MC_UngroupAllAxes; the read blocks run
+/// every scan. `errors` collects every ErrorID.
+const ALL_BLOCKS: &str = r#"PROGRAM allg
+VAR
+    pw1 : MC_Power;
+    pw2 : MC_Power;
+    add1 : MC_AddAxisToGroup;
+    add2 : MC_AddAxisToGroup;
+    en : MC_GroupEnable;
+    home : MC_GroupHome;
+    rel : MC_MoveLinearRelative;
+    circ : MC_MoveCircularAbsolute;
+    crel : MC_MoveCircularRelative;
+    direct : MC_MoveDirectAbsolute;
+    lin : MC_MoveLinearAbsolute;
+    halt : MC_GroupHalt;
+    stop : MC_GroupStop;
+    reset : MC_GroupReset;
+    dis : MC_GroupDisable;
+    rem : MC_RemoveAxisFromGroup;
+    ung : MC_UngroupAllAxes;
+    rp : MC_GroupReadActualPosition;
+    rv : MC_GroupReadActualVelocity;
+    rs : MC_GroupReadStatus;
+    zero : ARRAY [0..5] OF LREAL;
+    dist : ARRAY [0..5] OF LREAL := [10.0, 10.0];
+    centre : ARRAY [0..5] OF LREAL := [10.0, 0.0];
+    cend : ARRAY [0..5] OF LREAL := [20.0, 0.0];
+    aux : ARRAY [0..5] OF LREAL := [5.0, 5.0];
+    rend : ARRAY [0..5] OF LREAL := [10.0, 0.0];
+    dpos : ARRAY [0..5] OF LREAL := [0.0, 5.0];
+    lpos : ARRAY [0..5] OF LREAL := [40.0, 40.0];
+    pos : ARRAY [0..5] OF LREAL;
+    vel : ARRAY [0..5] OF LREAL;
+    pv : LREAL;
+    powered : BOOL;
+    stopped : BOOL;
+    go_stop : BOOL;
+    go_dis : BOOL;
+    standby : BOOL;
+    disabled : BOOL;
+    errors : WORD;
+END_VAR
+    CAL pw1(Axis := X1, Enable := TRUE)
+    CAL pw2(Axis := Y1, Enable := TRUE)
+    LD pw1.Status
+    AND pw2.Status
+    ST powered
+    CAL add1(AxesGroup := G1, Axis := X1, Execute := powered, IdentInGroup := 0)
+    CAL add2(AxesGroup := G1, Axis := Y1, Execute := add1.Done, IdentInGroup := 1)
+    CAL en(AxesGroup := G1, Execute := add2.Done)
+    CAL home(AxesGroup := G1, Execute := en.Done, Position := zero)
+    CAL rel(AxesGroup := G1, Execute := home.Done, Distance := dist, Velocity := 20.0, Acceleration := 100.0, Deceleration := 100.0)
+    CAL circ(AxesGroup := G1, Execute := rel.Done, CircMode := mcCenter, AuxPoint := centre, EndPoint := cend,
+             PathChoice := mcClockwise, Velocity := 20.0, Acceleration := 100.0, Deceleration := 100.0)
+    CAL crel(AxesGroup := G1, Execute := circ.Done, CircMode := mcBorder, AuxPoint := aux, EndPoint := rend,
+             PathChoice := mcClockwise, Velocity := 20.0, Acceleration := 100.0, Deceleration := 100.0)
+    CAL direct(AxesGroup := G1, Execute := crel.Done, Position := dpos, Velocity := 20.0, Acceleration := 100.0, Deceleration := 100.0)
+    CAL lin(AxesGroup := G1, Execute := direct.Done, Position := lpos, Velocity := 20.0, Acceleration := 100.0,
+            Deceleration := 100.0, Jerk := 1000.0)
+    CAL halt(AxesGroup := G1, Execute := lin.Done, Deceleration := 100.0)
+    LD halt.Done
+    ANDN stopped
+    ST go_stop
+    CAL stop(AxesGroup := G1, Execute := go_stop, Deceleration := 100.0)
+    LD stop.Done
+    S stopped
+    CAL reset(AxesGroup := G1, Execute := stopped)
+    LD reset.Done
+    AND standby
+    ST go_dis
+    CAL dis(AxesGroup := G1, Execute := go_dis)
+    CAL rem(AxesGroup := G1, Execute := dis.Done, IdentInGroup := 1)
+    CAL ung(AxesGroup := G1, Execute := rem.Done)
+    CAL rp(AxesGroup := G1, Enable := TRUE, Position => pos)
+    CAL rv(AxesGroup := G1, Enable := TRUE, Velocity => vel, PathVelocity => pv)
+    CAL rs(AxesGroup := G1, Enable := TRUE, GroupStandby => standby, GroupDisabled => disabled)
+    LD add1.ErrorID
+    OR add2.ErrorID
+    OR en.ErrorID
+    OR home.ErrorID
+    OR rel.ErrorID
+    OR circ.ErrorID
+    OR crel.ErrorID
+    OR direct.ErrorID
+    OR lin.ErrorID
+    OR halt.ErrorID
+    OR stop.ErrorID
+    OR reset.ErrorID
+    OR dis.ErrorID
+    OR rem.ErrorID
+    OR ung.ErrorID
+    OR errors
+    ST errors
+END_PROGRAM
+"#;
+
+const ALL_AXES: &str = r#"{ "cycle_ms": 10, "queue_depth": 4,
+  "axes": [ { "name": "X1", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000 },
+            { "name": "Y1", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000 } ],
+  "groups": [ { "name": "G1", "axes": [] } ] }
+"#;
+
+const ALL_DONES: [&str; 14] = [
+    "add2", "en", "home", "rel", "circ", "crel", "direct", "lin", "halt", "stop", "reset", "dis",
+    "rem", "ung",
+];
+
+fn all_blocks_project() -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("allg.il");
+    std::fs::write(&src, ALL_BLOCKS).unwrap();
+    std::fs::write(dir.path().join("allg.axes.json"), ALL_AXES).unwrap();
+    (dir, src)
+}
+
+#[test]
+fn every_group_block_runs_in_sequence_identically_with_both_methods() {
+    let (dir, src) = all_blocks_project();
+    let mut watch: Vec<String> = ALL_DONES.iter().map(|b| format!("allg.{b}.Done")).collect();
+    watch.extend(
+        [
+            "allg.errors",
+            "allg.standby",
+            "allg.disabled",
+            "allg.pos[0]",
+            "allg.pos[1]",
+            "allg.vel[0]",
+            "allg.pv",
+            "axis.X1.position",
+            "axis.Y1.position",
+        ]
+        .map(String::from),
+    );
+    let mut traces = Vec::new();
+    for s in ["il", "template"] {
+        let trace = dir.path().join(format!("{s}.csv"));
+        let out = ladderc()
+            .arg("run")
+            .arg(&src)
+            .args([
+                "--strategy",
+                s,
+                "--cycles",
+                "900",
+                "--watch",
+                &watch.join(","),
+                "--trace",
+            ])
+            .arg(&trace)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        traces.push(std::fs::read_to_string(&trace).unwrap());
+    }
+    for (k, (a, b)) in traces[0].lines().zip(traces[1].lines()).enumerate() {
+        assert_eq!(a, b, "the traces differ at row {k}");
+    }
+    let t = &traces[0];
+    assert!(
+        column(t, "allg.errors").iter().all(|&e| e == 0.0),
+        "no block failed"
+    );
+    // each block completes, in order
+    let dones: Vec<usize> = ALL_DONES
+        .iter()
+        .map(|b| first_rise(&column(t, &format!("allg.{b}.Done"))))
+        .collect();
+    assert!(dones.windows(2).all(|w| w[0] <= w[1]), "{dones:?}");
+    let (x, y) = (column(t, "axis.X1.position"), column(t, "axis.Y1.position"));
+    let at = |b: &str| dones[ALL_DONES.iter().position(|n| *n == b).unwrap()];
+    for (block, ex, ey) in [
+        ("rel", 10.0, 10.0),
+        ("circ", 20.0, 0.0),
+        ("crel", 30.0, 0.0),
+        ("direct", 0.0, 5.0),
+        ("lin", 40.0, 40.0),
+    ] {
+        // Done shows in the scan after the target was reached (the next block then starts at once)
+        let k = at(block) - 1;
+        assert!(
+            (x[k] - ex).abs() < 1e-6 && (y[k] - ey).abs() < 1e-6,
+            "{block}: ({}, {})",
+            x[k],
+            y[k]
+        );
+    }
+    // on the arc about (10, 0) the distance to the centre stays 10
+    for k in at("rel") - 1..at("circ") {
+        let r = ((x[k] - 10.0).powi(2) + y[k].powi(2)).sqrt();
+        assert!((r - 10.0).abs() < 1e-6, "cycle {k}: radius {r}");
+    }
+    // the read block reports the positions by identity (one scan behind the engine step)
+    let px = column(t, "allg.pos[0]");
+    assert_eq!(px[at("lin")], 40.0);
+    // standby after the stop, disabled after MC_GroupDisable, for good after MC_UngroupAllAxes
+    let disabled = column(t, "allg.disabled");
+    assert_eq!(column(t, "allg.standby")[at("dis") - 1], 1.0);
+    assert!(disabled[at("ung")..].iter().all(|&d| d == 1.0));
+    assert!(disabled[at("en")..at("dis")].iter().all(|&d| d == 0.0));
+}
+
+#[test]
+fn report_json_gives_the_figures_of_every_group_block_for_both_methods() {
+    let (dir, src) = all_blocks_project();
+    let mut table =
+        String::from("block | IL: TM bytes, IL instructions, C bytes | template: TM bytes, IL instructions, C bytes\n");
+    let mut rows: std::collections::BTreeMap<String, Vec<String>> = Default::default();
+    for s in ["il", "template"] {
+        let out = ladderc()
+            .args(["build", "--report", "json", "--strategy", s, "-o"])
+            .arg(dir.path().join(format!("out-{s}")))
+            .arg(&src)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        for b in v["blocks"].as_array().unwrap() {
+            assert_eq!(b["method"], s);
+            assert!(b["object_bytes"].as_u64().is_some_and(|n| n > 0), "{b}");
+            rows.entry(b["block"].as_str().unwrap().to_string())
+                .or_default()
+                .push(format!(
+                    "{}, {}, {}",
+                    b["tm_bytes"], b["il_instructions"], b["c_bytes"]
+                ));
+        }
+    }
+    // 17 group blocks and MC_Power
+    assert_eq!(rows.len(), 18, "{rows:?}");
+    for (block, r) in &rows {
+        table.push_str(&format!("{block} | {} | {}\n", r[0], r[1]));
+    }
+    insta::assert_snapshot!(table);
+}
