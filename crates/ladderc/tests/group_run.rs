@@ -784,3 +784,48 @@ fn report_json_gives_the_figures_of_every_group_block_for_both_methods() {
     }
     insta::assert_snapshot!(table);
 }
+
+#[test]
+fn a_user_template_with_a_bad_array_declaration_is_reported_in_its_file() {
+    let (dir, _src) = project(ONE_LINE);
+    let tpl = dir.path().join("vendor");
+    std::fs::create_dir(&tpl).unwrap();
+    std::fs::write(
+        tpl.join("MC_MoveLinearAbsolute.xml"),
+        r#"<blockTemplate name="MC_MoveLinearAbsolute" funcNum="42">
+  <parameters>
+    <param name="AxesGroup" abbr="AxG" direction="inout" class="struct" type="AXES_GROUP_REF" required="true"/>
+    <param name="Position" abbr="Pos" direction="input" class="array" element="lreal" type="LREAL" length="32"/>
+  </parameters>
+  <body><![CDATA[ (void)AxG; (void)Pos; ]]></body>
+</blockTemplate>
+"#,
+    )
+    .unwrap();
+    let (ok, _, err) = build(
+        ONE_LINE,
+        &[
+            "--emit",
+            "il",
+            "--message-format",
+            "short",
+            "--templates",
+            tpl.to_str().unwrap(),
+        ],
+    );
+    assert!(!ok);
+    let file = tpl.join("MC_MoveLinearAbsolute.xml");
+    // line 4 of the user's file, at the `length` attribute
+    let at = format!("{}:4:", file.display());
+    let line = err
+        .lines()
+        .find(|l| l.starts_with(&at))
+        .unwrap_or_else(|| panic!("{err}"));
+    assert!(
+        line.contains("error[E4102]: array `Position`: length `32` is not a number from 1 to 16"),
+        "{line}"
+    );
+    let column: usize = line[at.len()..].split(':').next().unwrap().parse().unwrap();
+    let text = std::fs::read_to_string(&file).unwrap();
+    assert!(text.lines().nth(3).unwrap()[column - 1..].starts_with("length="));
+}

@@ -355,3 +355,25 @@ fn a_single_value_bound_to_an_array_is_refused_before_any_code() {
     assert!(lowered.units.is_empty() && lowered.synthesized.is_empty());
     insta::assert_snapshot!(short(&s.map, s.diags));
 }
+
+#[test]
+fn axis_group_ref_is_another_name_of_axes_group_ref() {
+    let program = ARRAY_PROGRAM.replace(
+        "g : AXES_GROUP_REF := (GroupNo := 0);",
+        "g : AXIS_GROUP_REF := (GroupNo := 2);",
+    );
+    let mut s = setup(&program);
+    assert!(s.diags.is_empty(), "{}", short(&s.map, s.diags));
+    let pre = prelude::before_lowering(&s.lib);
+    assert!(
+        pre.contains("    AXIS_GROUP_REF : AXES_GROUP_REF;\n"),
+        "{pre}"
+    );
+    let lowered = lower::lower(&s.units[1..], &s.lib, Strategy::Il, &WINDOW, &mut s.diags);
+    assert!(s.diags.is_empty(), "{}", short(&s.map, s.diags));
+    let il = il_frontend::print::unit(&lowered.units[0]);
+    assert!(
+        il.contains("    LD g.GroupNo\n    ST TM__MC_ArrayDemo__AxesGroup\n"),
+        "{il}"
+    );
+}
