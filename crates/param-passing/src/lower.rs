@@ -533,6 +533,7 @@ fn check_call(
     }
 }
 
+/// The fields of instance `inst` that `body` stores into (whole, or an element of an array field).
 fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
     let mut out = Vec::new();
     for s in body {
@@ -542,8 +543,11 @@ fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
                 op: Op::St | Op::S | Op::R,
                 operand: Some(Operand::Var(v)),
                 ..
-            } if v.base == *inst && v.accessors.len() == 1 => {
-                if let Accessor::Field(f) = &v.accessors[0] {
+            } if v.base == *inst => {
+                // `ST mv.Position` or, for an array input, `ST mv.Position[0]`
+                if let [Accessor::Field(f)] | [Accessor::Field(f), Accessor::Index(_)] =
+                    v.accessors.as_slice()
+                {
                     out.push(f.name.clone());
                 }
             }

@@ -377,3 +377,37 @@ fn axis_group_ref_is_another_name_of_axes_group_ref() {
         "{il}"
     );
 }
+
+#[test]
+fn a_required_array_input_may_be_stored_into_the_instance_element_by_element() {
+    let program = ARRAY_PROGRAM.replace(
+        "    CAL d(AxesGroup := g, Execute := go, Target := t, Echo => e, Sum => s)",
+        "    LD 4.0\n    ST d.Target[2]\n    CAL d(AxesGroup := g, Execute := go, Echo => e, Sum => s)",
+    );
+    let mut s = setup(&program);
+    assert!(s.diags.is_empty(), "{}", short(&s.map, s.diags));
+    let lowered = lower::lower(
+        &s.units[1..],
+        &s.lib,
+        Strategy::Template,
+        &WINDOW,
+        &mut s.diags,
+    );
+    assert!(s.diags.is_empty(), "{}", short(&s.map, s.diags));
+    let sources: Vec<String> = lowered.synthesized[0]
+        .head
+        .iter()
+        .filter(|h| h.local.starts_with("Tgt_"))
+        .map(|h| op(&h.source))
+        .collect();
+    assert_eq!(sources, ["d.Target[1]", "d.Target[2]", "d.Target[3]"]);
+    // without any store it is still missing
+    let program = ARRAY_PROGRAM.replace("Target := t, ", "");
+    let mut s = setup(&program);
+    lower::lower(&s.units[1..], &s.lib, Strategy::Il, &WINDOW, &mut s.diags);
+    let out = short(&s.map, s.diags);
+    assert!(
+        out.contains("E4023") && out.contains("required input `Target`"),
+        "{out}"
+    );
+}
