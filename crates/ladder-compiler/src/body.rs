@@ -1,10 +1,10 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
-//! [`crate::lower`]; IL is parsed in place by the IL front end; ST and SFC get one precise diagnostic
-//! (E3003/E3004) naming the POU, and the POU keeps an empty body; an ST/SFC POU that no program instance
-//! reaches only gets warning W3004.
+//! [`crate::lower`]; SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST gets one
+//! precise diagnostic (E3003) naming the POU, and the POU keeps an empty body; an ST POU that no program
+//! instance reaches only gets warning W3004.
 //!
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
-//! temporaries), one extra `VAR` block holding them; `None` for an unused ST/SFC POU, which is left out.
+//! temporaries), one extra `VAR` block holding them; `None` for an unused ST POU, which is left out.
 
 use crate::context::Ctx;
 use crate::graph;
@@ -53,14 +53,11 @@ pub fn lower_pou_body(
             Some((stmts, block))
         }
         "IL" => Some((crate::il_body::parse(ctx, lang, name), None)),
-        "ST" | "SFC" if !used => {
+        "ST" if !used => {
             ctx.report(
                 Diagnostic::warning(
                     code::W3004,
-                    format!(
-                        "POU `{name}` ({}) is not used by any program instance and is skipped",
-                        if lang.name == "ST" { "ST" } else { "SFC" }
-                    ),
+                    format!("POU `{name}` (ST) is not used by any program instance and is skipped"),
                 )
                 .at(span)
                 .with_xml(xml_ctx),
@@ -81,17 +78,15 @@ pub fn lower_pou_body(
             Some((Vec::new(), None))
         }
         "SFC" => {
-            ctx.report(
-                Diagnostic::error(
-                    code::E3004,
-                    format!("SFC bodies are not supported yet: POU `{name}` is a sequential function chart"),
-                )
-                .at(span)
-                .with_primary_label("SFC body")
-                .with_hint("rewrite the sequence in LD or IL; its interface is still checked")
-                .with_xml(xml_ctx),
-            );
-            Some((Vec::new(), None))
+            let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
+            let block = (!hidden.is_empty()).then_some(VarBlock {
+                kind: VarKind::Local,
+                constant: false,
+                retain: false,
+                vars: hidden,
+                span,
+            });
+            Some((stmts, block))
         }
         other => {
             ctx.report(

@@ -17,6 +17,7 @@ pub mod graph;
 pub mod il_body;
 pub mod lower;
 pub mod project;
+pub mod sfc;
 pub mod testgen;
 pub mod values;
 pub mod xml;
