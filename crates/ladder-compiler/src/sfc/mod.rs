@@ -92,6 +92,9 @@ pub fn lower(
         hidden.declare(&names::t(&s.name), "TIME", None, s.span);
     }
 
+    // Step times, refreshed with this scan's clock before the conditions read them.
+    step_times(&chart.steps, &mut hidden, &mut out);
+
     // 1. Conditions.
     let connected: Vec<&chart::Transition> = chart
         .transitions
@@ -232,26 +235,8 @@ pub fn lower(
         }
     }
 
-    // 4. Step times: T restarts at 0 on activation, counts while active, keeps its value after.
-    for s in &chart.steps {
-        let (x, t, tt) = (names::x(&s.name), names::t(&s.name), names::timer(&s.name));
-        hidden.declare(&tt, "TON", None, s.span);
-        out.push(il::call(
-            &tt,
-            vec![
-                ("IN", il::var(&x, s.span)),
-                ("PT", il::lit_time(STEP_TIME_LIMIT_NS, s.span)),
-            ],
-            s.span,
-        ));
-        out.push(il::op(Op::Ld, il::var(&x, s.span)));
-        out.push(il::sel(
-            il::var(&t, s.span),
-            il::field(&tt, "ET", s.span),
-            s.span,
-        ));
-        out.push(il::op(Op::St, il::var(&t, s.span)));
-    }
+    // 4. Step times, after the evolution: a step activated in this scan starts from 0 now.
+    step_times(&chart.steps, &mut hidden, &mut out);
 
     // 5. Actions: control, then bodies.
     let acts = actions::collect(ctx, pou_el, pou, index, &chart.steps, &chart.associations);
@@ -294,6 +279,32 @@ pub fn lower(
     il::unique_spans(&mut out, ctx.xml.len());
     let _ = body_span;
     (out, hidden.vars)
+}
+
+/// `Step.T`: a TON per step (IN = the step flag) gives the time since activation; `T` follows it while
+/// the step is active and keeps its last value after. Called twice per scan (before the conditions,
+/// with this scan's clock; after the evolution, to start the timers of the steps just activated), so
+/// `T` is exact in conditions and in actions.
+fn step_times(steps: &[chart::Step], hidden: &mut Hidden, out: &mut Vec<IlStmt>) {
+    for s in steps {
+        let (x, t, tt) = (names::x(&s.name), names::t(&s.name), names::timer(&s.name));
+        hidden.declare(&tt, "TON", None, s.span);
+        out.push(il::call(
+            &tt,
+            vec![
+                ("IN", il::var(&x, s.span)),
+                ("PT", il::lit_time(STEP_TIME_LIMIT_NS, s.span)),
+            ],
+            s.span,
+        ));
+        out.push(il::op(Op::Ld, il::var(&x, s.span)));
+        out.push(il::sel(
+            il::var(&t, s.span),
+            il::field(&tt, "ET", s.span),
+            s.span,
+        ));
+        out.push(il::op(Op::St, il::var(&t, s.span)));
+    }
 }
 
 /// A declared BOOL variable (of the POU or global) named `name`, as an operand.

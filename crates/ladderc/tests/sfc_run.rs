@@ -1,0 +1,185 @@
+//! SFC charts end to end: PLCopen XML with an SFC body, lowered, compiled to C, run cycle by cycle by
+//! `ladderc run`; the traces are checked at the exact cycle each step or action changes.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/sfc")
+        .join(name)
+}
+
+/// Runs `file` for `cycles` scans of 10 ms with `stimulus`; returns the trace text.
+fn run(file: &Path, cycles: u32, stimulus: &str, watch: &[&str]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
+    let trace = dir.path().join("trace.csv");
+    let out = Command::new(env!("CARGO_BIN_EXE_ladderc"))
+        .arg("run")
+        .arg(file)
+        .args(["--cycles", &cycles.to_string(), "--cycle-ms", "10"])
+        .arg("--stimulus")
+        .arg(&stim)
+        .arg("--trace")
+        .arg(&trace)
+        .args(["--watch", &watch.join(",")])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::read_to_string(&trace).unwrap()
+}
+
+/// The trace as columns: name -> one value per cycle.
+fn columns(trace: &str) -> HashMap<String, Vec<String>> {
+    let mut lines = trace.lines();
+    let names: Vec<String> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    let mut cols: HashMap<String, Vec<String>> =
+        names.iter().map(|n| (n.clone(), vec![])).collect();
+    for l in lines {
+        for (n, v) in names.iter().zip(l.split(',')) {
+            cols.get_mut(n).unwrap().push(v.to_string());
+        }
+    }
+    cols
+}
+
+/// The cycles at which a BOOL column is 1.
+fn on(cols: &HashMap<String, Vec<String>>, name: &str) -> Vec<usize> {
+    cols[name]
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| v.as_str() == "1")
+        .map(|(i, _)| i)
+        .collect()
+}
+
+const STEPS: &[&str] = &[
+    "main.__sfc_X_Init",
+    "main.__sfc_X_Choose",
+    "main.__sfc_X_A",
+    "main.__sfc_X_B",
+    "main.__sfc_X_C",
+    "main.__sfc_X_P1",
+    "main.__sfc_X_P2",
+    "main.__sfc_X_P1b",
+];
+
+#[test]
+fn explicit_priority_beats_the_drawing_order_at_a_selection_divergence() {
+    // a, b and c are all TRUE when Choose is active: C has priority="1", so it wins over A (left-most).
+    let t = run(
+        &fixture("sequence.xml"),
+        6,
+        "1,main.go,1\n1,main.a,1\n1,main.b,1\n1,main.c,1\n",
+        STEPS,
+    );
+    let c = columns(&t);
+    assert_eq!(on(&c, "main.__sfc_X_Init"), [0]);
+    assert_eq!(on(&c, "main.__sfc_X_Choose"), [1]);
+    assert_eq!(on(&c, "main.__sfc_X_C"), [2, 3, 4, 5]);
+    assert!(on(&c, "main.__sfc_X_A").is_empty() && on(&c, "main.__sfc_X_B").is_empty());
+    insta::assert_snapshot!(t);
+}
+
+#[test]
+fn left_most_transition_wins_then_simultaneous_branches_join() {
+    // c FALSE: A (x=10) wins over B (x=200). A's transition is TRUE, but the evolution is one step per
+    // scan: P1 and P2 start together one scan later. `join` is TRUE all along, yet the convergence
+    // waits until P1b and P2 are both active (p1done at cycle 6), then everything returns to Init.
+    let t = run(
+        &fixture("sequence.xml"),
+        10,
+        "1,main.go,1\n1,main.a,1\n1,main.b,1\n1,main.join,1\n6,main.p1done,1\n7,main.go,0\n",
+        STEPS,
+    );
+    let c = columns(&t);
+    assert_eq!(on(&c, "main.__sfc_X_Choose"), [1]);
+    assert_eq!(on(&c, "main.__sfc_X_A"), [2]);
+    assert!(on(&c, "main.__sfc_X_B").is_empty());
+    assert_eq!(on(&c, "main.__sfc_X_P1"), [3, 4, 5]);
+    assert_eq!(on(&c, "main.__sfc_X_P1b"), [6]);
+    assert_eq!(on(&c, "main.__sfc_X_P2"), [3, 4, 5, 6]);
+    assert_eq!(on(&c, "main.__sfc_X_Init"), [0, 7, 8, 9]);
+    insta::assert_snapshot!(t);
+}
+
+#[test]
+fn action_qualifiers_switch_at_the_exact_cycle() {
+    // 10 ms scans. go at cycle 1 activates S1 (cycles 1..7); next at cycle 8 moves to S2, which leaves
+    // by `S2.T >= T#40ms` at cycle 12 (activated at 80 ms, 120 ms is 40 ms later) back to S0.
+    let watch = [
+        "main.__sfc_X_S0",
+        "main.__sfc_X_S1",
+        "main.__sfc_X_S2",
+        "main.__sfc_T_S1",
+        "main.idle",
+        "main.n_out",
+        "main.stored",
+        "main.limited",
+        "main.delayed",
+        "main.sd_out",
+        "main.ds_out",
+        "main.sl_out",
+        "main.p_count",
+        "main.p1_count",
+        "main.p0_count",
+        "main.n_runs",
+        "main.s1_t",
+    ];
+    let t = run(
+        &fixture("actions.xml"),
+        15,
+        "1,main.go,1\n2,main.go,0\n8,main.next,1\n9,main.next,0\n",
+        &watch,
+    );
+    let c = columns(&t);
+    assert_eq!(on(&c, "main.__sfc_X_S1"), [1, 2, 3, 4, 5, 6, 7]);
+    assert_eq!(on(&c, "main.__sfc_X_S2"), [8, 9, 10, 11]);
+    assert_eq!(on(&c, "main.__sfc_X_S0"), [0, 12, 13, 14]);
+    // N on a BOOL variable: exactly while S0 / S1 is active.
+    assert_eq!(on(&c, "main.idle"), [0, 12, 13, 14]);
+    assert_eq!(on(&c, "main.n_out"), [1, 2, 3, 4, 5, 6, 7]);
+    // S stays set after S1 until R in S2.
+    assert_eq!(on(&c, "main.stored"), [1, 2, 3, 4, 5, 6, 7]);
+    // L T#30ms: TRUE for 30 ms from activation (10, 20, 30 ms), FALSE from 40 ms.
+    assert_eq!(on(&c, "main.limited"), [1, 2, 3]);
+    // D T#20ms: TRUE from 20 ms after activation while the step stays active.
+    assert_eq!(on(&c, "main.delayed"), [3, 4, 5, 6, 7]);
+    // SD / DS T#20ms: on 20 ms after activation, stored past S1's end until R in S0 (cycle 12).
+    assert_eq!(on(&c, "main.sd_out"), (3..=11).collect::<Vec<_>>());
+    assert_eq!(on(&c, "main.ds_out"), (3..=11).collect::<Vec<_>>());
+    // SL T#30ms: stored and limited to 30 ms.
+    assert_eq!(on(&c, "main.sl_out"), [1, 2, 3]);
+    // P with the standard's final scan runs twice; P1 and P0 run once (activation / deactivation).
+    assert_eq!(c["main.p_count"][1], "1");
+    assert_eq!(c["main.p_count"][2], "2");
+    assert_eq!(c["main.p_count"][14], "2");
+    assert_eq!(c["main.p1_count"][1], "1");
+    assert_eq!(c["main.p1_count"][14], "1");
+    assert_eq!(c["main.p0_count"][7], "0");
+    assert_eq!(c["main.p0_count"][8], "1");
+    assert_eq!(c["main.p0_count"][14], "1");
+    // N body: 7 active scans plus the final scan at cycle 8; it reads S1.T each time.
+    assert_eq!(c["main.n_runs"][7], "7");
+    assert_eq!(c["main.n_runs"][8], "8");
+    assert_eq!(c["main.n_runs"][14], "8");
+    assert_eq!(c["main.s1_t"][1], "T#0ms");
+    assert_eq!(c["main.s1_t"][7], "T#60ms");
+    assert_eq!(c["main.s1_t"][8], "T#70ms");
+    // Step.T keeps its value after the step is left.
+    assert_eq!(c["main.__sfc_T_S1"][14], "T#70ms");
+    insta::assert_snapshot!(t);
+}
