@@ -183,3 +183,29 @@ fn action_qualifiers_switch_at_the_exact_cycle() {
     assert_eq!(c["main.__sfc_T_S1"][14], "T#70ms");
     insta::assert_snapshot!(t);
 }
+
+#[test]
+fn ld_fbd_and_il_conditions_and_actions_run_with_the_final_scan() {
+    // A contact network wired to the first transition, an FBD named transition `Done` (count >= 3),
+    // an LD action `Run` gated by its own `Run.Q`, an IL action `Count`.
+    let t = run(
+        &fixture("languages.xml"),
+        9,
+        "0,main.enable,1\n2,main.start,1\n3,main.start,0\n",
+        &[
+            "main.__sfc_X_Idle",
+            "main.__sfc_X_Work",
+            "main.motor",
+            "main.count",
+        ],
+    );
+    let c = columns(&t);
+    assert_eq!(on(&c, "main.__sfc_X_Work"), [2, 3, 4]);
+    // Run's final scan (cycle 5) sees Run.Q = FALSE, so the motor goes off with the step.
+    assert_eq!(on(&c, "main.motor"), [2, 3, 4]);
+    // Count runs while Work is active and once more in its final scan: 3 then 4.
+    assert_eq!(c["main.count"][4], "3");
+    assert_eq!(c["main.count"][5], "4");
+    assert_eq!(c["main.count"][8], "4");
+    insta::assert_snapshot!(t);
+}

@@ -289,14 +289,17 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
             ok &= pre_steps(ctx, &nodes, &resolved, from, &mut pre, &mut seen, pou);
         }
         if resolved[i].is_empty() {
-            report(
-                ctx,
-                code::E3128,
-                span,
-                pou,
-                Some(&n.id),
-                "transition without a preceding step".to_string(),
-            );
+            // Dangling inputs were reported as E3120 already.
+            if n.inputs.is_empty() {
+                report(
+                    ctx,
+                    code::E3128,
+                    span,
+                    pou,
+                    Some(&n.id),
+                    "transition without a preceding step".to_string(),
+                );
+            }
             ok = false;
         }
         let mut post = Vec::new();
