@@ -401,7 +401,7 @@ fn networks(
         };
         let idx = g.nodes.len();
         g.nodes.push(Node {
-            id: format!("{}", t.id),
+            id: t.id.clone(),
             num: u64::MAX,
             kind: Kind::OutVar {
                 expr: names::cond(&t.id),
@@ -416,9 +416,27 @@ fn networks(
             has_input: true,
             wired: true,
         });
-        if let Some(net) = g.networks.iter_mut().find(|n| n.contains(&first)) {
-            net.push(idx);
+        // The condition joins the network(s) of its sources (merged when it reads several).
+        let sources: Vec<usize> = g.nodes[idx].input.iter().map(|w| w.from).collect();
+        let mut merged: Vec<usize> = Vec::new();
+        let mut keep = Vec::new();
+        for net in std::mem::take(&mut g.networks) {
+            if sources.iter().any(|s| net.contains(s)) {
+                if merged.is_empty() {
+                    keep.push(Vec::new()); // placeholder at the first merged network's place
+                }
+                merged.extend(net);
+            } else {
+                keep.push(net);
+            }
         }
+        let _ = first;
+        merged.push(idx);
+        match keep.iter_mut().find(|n| n.is_empty()) {
+            Some(slot) => *slot = merged,
+            None => keep.push(merged),
+        }
+        g.networks = keep;
     }
     let mut low = BodyLowering::new(index, pou, ctx.tag(sfc));
     out.extend(low.lower(ctx, &g));
