@@ -1,10 +1,10 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
-//! [`crate::lower`]; IL is parsed in place by the IL front end; ST and SFC get one precise diagnostic
-//! (E3003/E3004) naming the POU, and the POU keeps an empty body; an ST/SFC POU that no program instance
-//! reaches only gets warning W3004.
+//! [`crate::lower`]; IL is parsed in place by the IL front end; ST is parsed and lowered to IL by
+//! [`crate::st_body`]; SFC gets one precise diagnostic (E3004) naming the POU, and the POU keeps an
+//! empty body; an ST/SFC POU that no program instance reaches only gets warning W3004.
 //!
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
-//! temporaries), one extra `VAR` block holding them; `None` for an unused ST/SFC POU, which is left out.
+//! temporaries), one extra `VAR` (LD/FBD) or `VAR_TEMP` (ST) block holding them; `None` for an unused ST/SFC POU, which is left out.
 
 use crate::context::Ctx;
 use crate::graph;
@@ -68,17 +68,8 @@ pub fn lower_pou_body(
             None
         }
         "ST" => {
-            ctx.report(
-                Diagnostic::error(
-                    code::E3003,
-                    format!("ST bodies are not supported yet: POU `{name}` is written in ST"),
-                )
-                .at(span)
-                .with_primary_label("Structured Text body")
-                .with_hint("rewrite the POU in IL, LD or FBD; its interface is still checked")
-                .with_xml(xml_ctx),
-            );
-            Some((Vec::new(), None))
+            let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou);
+            Some((stmts, temps))
         }
         "SFC" => {
             ctx.report(

@@ -19,9 +19,15 @@ pub struct Stmt {
 #[derive(Debug, Clone, Serialize)]
 pub enum StmtKind {
     /// `target := value;` (also the result of a FUNCTION: `Name := value;`).
-    Assign { target: Place, value: Expr },
+    Assign {
+        target: Place,
+        value: Expr,
+    },
     /// `inst(IN := x, Q => y);` (FB instance call) or `F(x);` (function call as a statement).
-    Call { callee: Place, args: Vec<Arg> },
+    Call {
+        callee: Place,
+        args: Vec<Arg>,
+    },
     /// `IF c THEN ... ELSIF c2 THEN ... ELSE ... END_IF;`
     If {
         branches: Vec<CondBranch>,
@@ -42,9 +48,15 @@ pub enum StmtKind {
         body: Vec<Stmt>,
     },
     /// `WHILE c DO ... END_WHILE;`
-    While { cond: Expr, body: Vec<Stmt> },
+    While {
+        cond: Expr,
+        body: Vec<Stmt>,
+    },
     /// `REPEAT ... UNTIL c END_REPEAT;`
-    Repeat { body: Vec<Stmt>, until: Expr },
+    Repeat {
+        body: Vec<Stmt>,
+        until: Expr,
+    },
     Exit,
     /// `CONTINUE;` (edition 3): the next iteration of the innermost loop.
     Continue,

@@ -105,7 +105,10 @@ impl Env<'_> {
         };
         if let Some(d) = self.decls.type_decl(&n.name) {
             if let TypeDef::Struct { fields } = &d.def {
-                return fields.iter().find(|f| f.name == *field).map(|f| f.ty.clone());
+                return fields
+                    .iter()
+                    .find(|f| f.name == *field)
+                    .map(|f| f.ty.clone());
             }
             return None;
         }
@@ -259,7 +262,9 @@ impl Env<'_> {
                     }
                     if f.time_arith {
                         if let Some(super::ast::Arg { value, .. }) = args.first() {
-                            if let Some(le) = self.expr(value).known().and_then(|t| self.elementary(t)) {
+                            if let Some(le) =
+                                self.expr(value).known().and_then(|t| self.elementary(t))
+                            {
                                 if let Some(o) = stdlib::time_overloads(f.name, le).next() {
                                     return Ty::Known(elem_ref(o.4, span));
                                 }
@@ -281,7 +286,10 @@ impl Env<'_> {
                     }),
                 },
                 ConvTarget::BcdOfWidth => {
-                    let from = c.from.and_then(|t| t.elementary()).unwrap_or(Elementary::Int);
+                    let from = c
+                        .from
+                        .and_then(|t| t.elementary())
+                        .unwrap_or(Elementary::Int);
                     Ty::Known(elem_ref(stdlib::bcd_of_width(from), span))
                 }
             };

@@ -502,8 +502,22 @@ mod tests {
         assert_eq!(
             toks("a-1**2<=b<>c>=d&e=>f"),
             vec![
-                Ident, Minus, Int(1), Power, Int(2), Le, Ident, Ne, Ident, Ge, Ident, Amp, Ident,
-                Arrow, Ident, Eof
+                Ident,
+                Minus,
+                Int(1),
+                Power,
+                Int(2),
+                Le,
+                Ident,
+                Ne,
+                Ident,
+                Ge,
+                Ident,
+                Amp,
+                Ident,
+                Arrow,
+                Ident,
+                Eof
             ]
         );
         assert_eq!(toks("1..5"), vec![Int(1), DotDot, Int(5), Eof]);

@@ -363,10 +363,7 @@ impl<'d> PouLowering<'d> {
                     None => diags.push(
                         Diagnostic::error(
                             code::E3101,
-                            format!(
-                                "{} outside a loop",
-                                if exit { "EXIT" } else { "CONTINUE" }
-                            ),
+                            format!("{} outside a loop", if exit { "EXIT" } else { "CONTINUE" }),
                         )
                         .at(span)
                         .with_primary_label("not inside FOR, WHILE or REPEAT")
@@ -537,10 +534,15 @@ impl<'d> PouLowering<'d> {
                 Some(v) => {
                     if v == 0 {
                         diags.push(
-                            Diagnostic::error(code::E3100, "FOR loop step is 0: the loop would never end")
-                                .at(b.span)
-                                .with_primary_label("BY 0")
-                                .with_hint("use a positive step to count up, a negative one to count down"),
+                            Diagnostic::error(
+                                code::E3100,
+                                "FOR loop step is 0: the loop would never end",
+                            )
+                            .at(b.span)
+                            .with_primary_label("BY 0")
+                            .with_hint(
+                                "use a positive step to count up, a negative one to count down",
+                            ),
                         );
                         return;
                     }
@@ -654,17 +656,25 @@ impl<'d> PouLowering<'d> {
         }
         let Some(Operand::Var(instance)) = self.place_operand(callee, out, diags) else {
             diags.push(
-                Diagnostic::error(code::E3103, "only a function block instance or a function can be called")
-                    .at(callee.span)
-                    .with_primary_label("not callable"),
+                Diagnostic::error(
+                    code::E3103,
+                    "only a function block instance or a function can be called",
+                )
+                .at(callee.span)
+                .with_primary_label("not callable"),
             );
             return;
         };
         let fb_ty = self.env().place_type(callee);
-        let args = self.call_args(args, |env, name, _| {
-            let t = fb_ty.as_ref()?;
-            env.member(t, name)
-        }, out, diags);
+        let args = self.call_args(
+            args,
+            |env, name, _| {
+                let t = fb_ty.as_ref()?;
+                env.member(t, name)
+            },
+            out,
+            diags,
+        );
         out.push(instr(
             InstrKind::Call {
                 cond: Condition::Always,
@@ -689,12 +699,18 @@ impl<'d> PouLowering<'d> {
         }
         let formal = args.iter().any(|a| a.name.is_some());
         if formal && args.iter().any(|a| a.name.is_none()) {
-            let bad = args.iter().find(|a| a.name.is_none()).map_or(args[0].span, |a| a.span);
+            let bad = args
+                .iter()
+                .find(|a| a.name.is_none())
+                .map_or(args[0].span, |a| a.span);
             diags.push(
-                Diagnostic::error(code::E3106, "formal and non-formal arguments are mixed in one call")
-                    .at(bad)
-                    .with_primary_label("argument without a name")
-                    .with_hint("name every argument (`IN := x, PT := T#1s`) or none (`x, T#1s`)"),
+                Diagnostic::error(
+                    code::E3106,
+                    "formal and non-formal arguments are mixed in one call",
+                )
+                .at(bad)
+                .with_primary_label("argument without a name")
+                .with_hint("name every argument (`IN := x, PT := T#1s`) or none (`x, T#1s`)"),
             );
             self.poisoned = true;
             return CallArgs::None;
@@ -1005,9 +1021,10 @@ impl<'d> PouLowering<'d> {
         } else {
             positional(&callee, args)
         };
-        let hint_of = |env: &Env, callee: &Callee, k: usize, name: Option<&Ident>, args: &[&Arg]| {
-            param_hint(env, callee, k, name, args)
-        };
+        let hint_of =
+            |env: &Env, callee: &Callee, k: usize, name: Option<&Ident>, args: &[&Arg]| {
+                param_hint(env, callee, k, name, args)
+            };
         match ordered {
             Some(list) if !list.is_empty() => {
                 let mut ops = Vec::new();
@@ -1056,7 +1073,9 @@ fn positional<'a>(callee: &Callee, args: &'a [Arg]) -> Option<Vec<&'a Arg>> {
         return Some(args.iter().collect());
     }
     let names: Vec<String> = match callee {
-        Callee::Standard(f) if !f.extensible => f.params.iter().map(|p| p.name.to_string()).collect(),
+        Callee::Standard(f) if !f.extensible => {
+            f.params.iter().map(|p| p.name.to_string()).collect()
+        }
         Callee::UserFunction(ps) => ps
             .iter()
             .filter(|p| p.1 == VarKind::Input)
@@ -1066,7 +1085,10 @@ fn positional<'a>(callee: &Callee, args: &'a [Arg]) -> Option<Vec<&'a Arg>> {
     };
     let mut v = Vec::new();
     for n in &names {
-        v.push(args.iter().find(|a| a.name.as_ref().is_some_and(|x| x.is(n)))?);
+        v.push(
+            args.iter()
+                .find(|a| a.name.as_ref().is_some_and(|x| x.is(n)))?,
+        );
     }
     (v.len() == args.len()).then_some(v)
 }

@@ -6,7 +6,8 @@
 //! unary `-`/`+`/`NOT`, `* / MOD`, `+ -`, `< > <= >=`, `= <>`, `AND &`, `XOR`, `OR`; binary operators are
 //! left-associative. Recovery: a bad statement is reported once and skipped up to its `;` (or the next
 //! statement or block keyword), so the next statement is still read; a block left open is reported at
-//! its opening keyword. Every loop consumes a token or returns, so the parser always terminates; the
+//! its opening keyword. The `;` after `END_IF`, `END_CASE`, `END_FOR`, `END_WHILE`, `END_REPEAT` may be
+//! left out, as CODESYS allows. Every loop consumes a token or returns, so the parser always terminates; the
 //! nesting depth is bounded so hostile input cannot overflow the stack.
 
 use super::ast::*;
@@ -77,8 +78,7 @@ fn ends_list(t: &Tok) -> bool {
     use Kw::*;
     matches!(
         t,
-        Tok::Eof
-            | Tok::Kw(EndIf | Elsif | Else | EndCase | EndFor | EndWhile | Until | EndRepeat)
+        Tok::Eof | Tok::Kw(EndIf | Elsif | Else | EndCase | EndFor | EndWhile | Until | EndRepeat)
     )
 }
 
@@ -146,11 +146,8 @@ impl<'s, 'd> Parser<'s, 'd> {
             ),
         };
         let span = self.span(range.start, range.end);
-        self.diags.push(
-            Diagnostic::error(code, msg)
-                .at(span)
-                .with_hint(hint),
-        );
+        self.diags
+            .push(Diagnostic::error(code, msg).at(span).with_hint(hint));
     }
 
     // ------------------------------------------------------------ token helpers
@@ -211,7 +208,13 @@ impl<'s, 'd> Parser<'s, 'd> {
             _ => format!("`{}`", self.text(t)),
         }
     }
-    fn error_at(&mut self, code: Code, span: Span, msg: impl Into<String>, hint: impl Into<String>) {
+    fn error_at(
+        &mut self,
+        code: Code,
+        span: Span,
+        msg: impl Into<String>,
+        hint: impl Into<String>,
+    ) {
         self.diags
             .push(Diagnostic::error(code, msg).at(span).with_hint(hint));
     }
@@ -352,9 +355,18 @@ impl<'s, 'd> Parser<'s, 'd> {
             self.sync();
             return None;
         };
+        let block = matches!(
+            kind,
+            StmtKind::If { .. }
+                | StmtKind::Case { .. }
+                | StmtKind::For { .. }
+                | StmtKind::While { .. }
+                | StmtKind::Repeat { .. }
+        );
         if self.at(&Tok::Semi) {
             self.bump();
-        } else {
+        } else if !block {
+            // `END_IF` without `;` is accepted (CODESYS and Beremiz accept it too).
             let at = self.prev_end();
             let found = self.describe_current();
             self.error_at(
@@ -434,7 +446,10 @@ impl<'s, 'd> Parser<'s, 'd> {
         self.diags.push(
             Diagnostic::error(
                 code::E0105,
-                format!("{what} is not closed: expected `{}`, found {found}", end.spelling()),
+                format!(
+                    "{what} is not closed: expected `{}`, found {found}",
+                    end.spelling()
+                ),
             )
             .at(self.cur_span())
             .with_label(open, format!("this {what} needs `{}`", end.spelling()))
@@ -509,7 +524,9 @@ impl<'s, 'd> Parser<'s, 'd> {
                 let found = self.describe_current();
                 self.error_here(
                     code::E0100,
-                    format!("expected a CASE label such as `1:`, `2, 3:` or `4..6:`, found {found}"),
+                    format!(
+                        "expected a CASE label such as `1:`, `2, 3:` or `4..6:`, found {found}"
+                    ),
                     "each branch of CASE starts with its values and `:`",
                 );
                 self.bump();
@@ -997,18 +1014,21 @@ impl<'s, 'd> Parser<'s, 'd> {
                 let hash = self.text(&t).find('#').unwrap_or(0) + t.range.start;
                 let long = |name: &str| Some(Ident::new(name, self.span(t.range.start, hash)));
                 let (kind, prefix) = match tv {
-                    TimeValue::Duration(v, lg) => {
-                        (LiteralKind::Duration(v), lg.then(|| long("LTIME")).flatten())
-                    }
+                    TimeValue::Duration(v, lg) => (
+                        LiteralKind::Duration(v),
+                        lg.then(|| long("LTIME")).flatten(),
+                    ),
                     TimeValue::Date(v, lg) => {
                         (LiteralKind::Date(v), lg.then(|| long("LDATE")).flatten())
                     }
-                    TimeValue::TimeOfDay(v, lg) => {
-                        (LiteralKind::TimeOfDay(v), lg.then(|| long("LTOD")).flatten())
-                    }
-                    TimeValue::DateAndTime(v, lg) => {
-                        (LiteralKind::DateAndTime(v), lg.then(|| long("LDT")).flatten())
-                    }
+                    TimeValue::TimeOfDay(v, lg) => (
+                        LiteralKind::TimeOfDay(v),
+                        lg.then(|| long("LTOD")).flatten(),
+                    ),
+                    TimeValue::DateAndTime(v, lg) => (
+                        LiteralKind::DateAndTime(v),
+                        lg.then(|| long("LDT")).flatten(),
+                    ),
                 };
                 self.literal(kind, prefix, &t, t.range.end)
             }

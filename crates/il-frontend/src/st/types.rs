@@ -29,7 +29,11 @@ impl PouInterface {
             vars: p
                 .var_blocks
                 .iter()
-                .flat_map(|b| b.vars.iter().map(move |v| (v.name.name.clone(), b.kind, v.ty.clone())))
+                .flat_map(|b| {
+                    b.vars
+                        .iter()
+                        .map(move |v| (v.name.name.clone(), b.kind, v.ty.clone()))
+                })
                 .collect(),
             ret: p.return_type.clone(),
         }
