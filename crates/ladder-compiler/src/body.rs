@@ -1,10 +1,11 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
-//! [`crate::lower`]; SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST gets one
-//! precise diagnostic (E3003) naming the POU, and the POU keeps an empty body; an ST POU that no program
-//! instance reaches only gets warning W3004.
+//! [`crate::lower`]; SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST is parsed
+//! and lowered to IL by [`crate::st_body`]; an ST POU that no program instance reaches only gets warning
+//! W3004.
 //!
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
-//! temporaries), one extra `VAR` block holding them; `None` for an unused ST POU, which is left out.
+//! temporaries, chart state), one extra `VAR` (LD/FBD/SFC) or `VAR_TEMP` (ST) block holding them;
+//! `None` for an unused ST POU, which is left out.
 
 use crate::context::Ctx;
 use crate::graph;
@@ -14,7 +15,22 @@ use crate::xml::Element;
 use diagnostics::{code, Diagnostic, XmlContext};
 use il_frontend::ast::{IlStmt, Pou, VarBlock, VarKind};
 
+/// The body of one POU; every instruction gets its own span (see [`crate::sfc::il::unique_spans`]:
+/// the semantic model and the C backend key instructions by span, and a graphical element often
+/// yields several instructions).
 pub fn lower_pou_body(
+    ctx: &mut Ctx,
+    index: &Index,
+    pou_el: &Element,
+    pou: &Pou,
+    used: bool,
+) -> Option<(Vec<IlStmt>, Option<VarBlock>)> {
+    let mut lowered = lower_language(ctx, index, pou_el, pou, used)?;
+    crate::sfc::il::unique_spans(&mut lowered.0, ctx.xml.len());
+    Some(lowered)
+}
+
+fn lower_language(
     ctx: &mut Ctx,
     index: &Index,
     pou_el: &Element,
@@ -65,17 +81,8 @@ pub fn lower_pou_body(
             None
         }
         "ST" => {
-            ctx.report(
-                Diagnostic::error(
-                    code::E3003,
-                    format!("ST bodies are not supported yet: POU `{name}` is written in ST"),
-                )
-                .at(span)
-                .with_primary_label("Structured Text body")
-                .with_hint("rewrite the POU in IL, LD or FBD; its interface is still checked")
-                .with_xml(xml_ctx),
-            );
-            Some((Vec::new(), None))
+            let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou);
+            Some((stmts, temps))
         }
         "SFC" => {
             let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);

@@ -209,3 +209,78 @@ fn ld_fbd_and_il_conditions_and_actions_run_with_the_final_scan() {
     assert_eq!(c["main.count"][8], "4");
     insta::assert_snapshot!(t);
 }
+
+/// The shared corpus (the nearest ancestor's `shared/corpus`).
+fn corpus(name: &str) -> PathBuf {
+    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+    here.ancestors()
+        .map(|a| a.join("shared/corpus"))
+        .find(|p| p.is_dir())
+        .unwrap_or_else(|| here.join("../../../shared/corpus"))
+        .join(name)
+}
+
+#[test]
+fn corpus_01_runs_and_counter_sfc_tracks_counter_il_as_the_standard_says() {
+    // The whole Beremiz "first steps" project (LD, FBD, ST, IL and SFC counters) runs. Its task is
+    // T#100ms, so one scan per 100 ms cycle.
+    let dir = tempfile::tempdir().unwrap();
+    let p = "plc_task_instance";
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        format!("cycle,variable,value\n4,{p}.Reset,1\n6,{p}.Reset,0\n"),
+    )
+    .unwrap();
+    let trace = dir.path().join("trace.csv");
+    let watch: Vec<String> = [
+        "Reset",
+        "CounterIL0.OUT",
+        "CounterSFC0.OUT",
+        "CounterST0.OUT",
+    ]
+    .iter()
+    .map(|v| format!("{p}.{v}"))
+    .collect();
+    let out = Command::new(env!("CARGO_BIN_EXE_ladderc"))
+        .arg("run")
+        .arg(corpus("01_beremiz_first_steps.xml"))
+        .args(["--cycles", "10", "--cycle-ms", "100", "--stimulus"])
+        .arg(&stim)
+        .arg("--trace")
+        .arg(&trace)
+        .args(["--watch", &watch.join(",")])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let t = std::fs::read_to_string(&trace).unwrap();
+    let c = columns(&t);
+    let il = &c[&format!("{p}.CounterIL0.OUT")];
+    let sfc = &c[&format!("{p}.CounterSFC0.OUT")];
+    let st = &c[&format!("{p}.CounterST0.OUT")];
+    // ST and IL are the same program.
+    assert_eq!(il, st);
+    // While Reset stays FALSE from the start, the chart (Start -> Count, Count's N actions) counts
+    // exactly like the IL: the first scan fires Start -> Count and runs Count's actions.
+    assert_eq!(&il[..4], ["1", "2", "3", "4"]);
+    assert_eq!(&sfc[..4], &il[..4]);
+    // Reset rises at cycle 4: IL loads ResetCounterValue (17). The chart leaves Count for Start (a
+    // step without actions): Count's actions run once more, their final scan, so Cnt + 1 = 5.
+    assert_eq!((il[4].as_str(), sfc[4].as_str()), ("17", "5"));
+    // Cycle 5: Start -> ResetCounter, whose actions load 17.
+    assert_eq!((il[5].as_str(), sfc[5].as_str()), ("17", "17"));
+    // Reset falls at cycle 6: IL counts on (18); the chart goes ResetCounter -> Start (final scan of
+    // ResetCounter: 17 again), then Start -> Count at cycle 7: one scan is spent in Start, so from
+    // then on the chart is one count behind.
+    assert_eq!((il[6].as_str(), sfc[6].as_str()), ("18", "17"));
+    for k in 7..10 {
+        let (i, s): (i32, i32) = (il[k].parse().unwrap(), sfc[k].parse().unwrap());
+        assert_eq!(s, i - 1, "cycle {k}");
+    }
+    insta::assert_snapshot!(t);
+}

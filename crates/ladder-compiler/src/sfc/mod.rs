@@ -83,7 +83,13 @@ pub fn lower(
     let mut hidden = Hidden::default();
     let mut out: Vec<IlStmt> = Vec::new();
     let body_span = ctx.tag(sfc);
-    let mut snippets = Snippets::new(index, pou);
+    // Actions are known before any body is lowered (ST needs their names for `Action.Q`).
+    let acts = actions::collect(ctx, pou_el, pou, index, &chart.steps, &chart.associations);
+    let decls = st_bridge::declarations(index, pou.span);
+    let step_names: Vec<String> = chart.steps.iter().map(|s| s.name.clone()).collect();
+    let action_names: Vec<String> = acts.iter().filter_map(|a| a.name.clone()).collect();
+    let st = st_bridge::StLowering::new(&decls, pou, &step_names, &action_names);
+    let mut snippets = Snippets::new(index, pou, st);
 
     // Step flags first (the initial ones start TRUE).
     for s in &chart.steps {
@@ -239,7 +245,6 @@ pub fn lower(
     step_times(&chart.steps, &mut hidden, &mut out);
 
     // 5. Actions: control, then bodies.
-    let acts = actions::collect(ctx, pou_el, pou, index, &chart.steps, &chart.associations);
     for a in &acts {
         actions::control(a, &chart.steps, &mut hidden, &mut out);
     }
@@ -275,9 +280,10 @@ pub fn lower(
             renames.fields.insert((k, "A".into()), names::a(&a.key));
         }
     }
+    for v in snippets.finish(body_span) {
+        hidden.push(v);
+    }
     renames.apply(&mut out);
-    il::unique_spans(&mut out, ctx.xml.len());
-    let _ = body_span;
     (out, hidden.vars)
 }
 

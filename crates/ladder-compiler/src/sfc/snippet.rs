@@ -9,7 +9,7 @@
 //! transition, which is renamed to the condition variable.
 
 use super::il::{self, Hidden, Renames};
-use super::st_bridge::{self, StPart};
+use super::st_bridge::{Delivered, StLowering, StPart};
 use crate::context::Ctx;
 use crate::graph::{self, Graph};
 use crate::lower::BodyLowering;
@@ -21,6 +21,7 @@ use il_frontend::ast::{IlStmt, Op, Pou};
 pub struct Snippets<'i> {
     pub index: &'i Index,
     pub pou: &'i Pou,
+    st: StLowering<'i>,
     count: usize,
 }
 
@@ -35,12 +36,18 @@ pub enum Purpose<'s> {
 }
 
 impl<'i> Snippets<'i> {
-    pub fn new(index: &'i Index, pou: &'i Pou) -> Self {
+    pub fn new(index: &'i Index, pou: &'i Pou, st: StLowering<'i>) -> Self {
         Snippets {
             index,
             pou,
+            st,
             count: 0,
         }
+    }
+
+    /// The temporaries of the ST snippets (declared once for the whole chart).
+    pub fn finish(self, span: il_frontend::Span) -> Vec<il_frontend::ast::VarDecl> {
+        self.st.finish(span)
     }
 
     fn next_prefix(&mut self) -> String {
@@ -64,25 +71,21 @@ impl<'i> Snippets<'i> {
             label_prefix: prefix.clone(),
             ..Default::default()
         };
+        // IL leaves a condition in the current result; LD/FBD write the transition's name.
+        let mut delivered = Delivered::CurrentResult;
         let mut stmts = match lang.name {
             "IL" => crate::il_body::parse(ctx, lang, &pou_name),
             "ST" => {
-                let part = match purpose {
-                    Purpose::Condition { .. } => StPart::Expression,
-                    Purpose::Action => StPart::Statements,
+                let (part, name) = match purpose {
+                    Purpose::Condition { name, .. } => (StPart::Expression, name),
+                    Purpose::Action => (StPart::Statements, ""),
                 };
-                let (stmts, vars) = st_bridge::lower(ctx, self.index, self.pou, lang, part)?;
-                for mut v in vars {
-                    if v.name.name.starts_with("__") {
-                        let new = format!("{prefix}{}", &v.name.name[2..]);
-                        renames.bases.insert(v.name.key(), new.clone());
-                        v.name.name = new;
-                    }
-                    hidden.push(v);
-                }
+                let (stmts, how) = self.st.lower(ctx, &pou_name, lang, part, name)?;
+                delivered = how;
                 stmts
             }
             "LD" | "FBD" => {
+                delivered = Delivered::Assigned;
                 let g: Graph = graph::read(ctx, lang, &pou_name);
                 let mut low = BodyLowering::new(self.index, self.pou, span);
                 let stmts = low.lower(ctx, &g);
@@ -107,28 +110,28 @@ impl<'i> Snippets<'i> {
             }
         };
         if let Purpose::Condition { result, name } = purpose {
-            match lang.name {
-                "LD" | "FBD" => {
-                    if name.is_empty() {
-                        super::chart::report(
-                            ctx,
-                            code::E3126,
-                            span,
-                            &pou_name,
-                            None,
-                            format!(
-                                "{owner}: an {} condition needs a name, written by its coil or output \
-                                 variable",
-                                lang.name
-                            ),
-                        );
-                        return None;
-                    }
-                    renames
-                        .bases
-                        .insert(name.to_ascii_uppercase(), result.to_string());
-                }
-                _ => stmts.push(il::op(Op::St, il::var(result, span))),
+            if delivered == Delivered::Assigned && name.is_empty() {
+                super::chart::report(
+                    ctx,
+                    code::E3126,
+                    span,
+                    &pou_name,
+                    None,
+                    format!(
+                        "{owner}: an {} condition needs a name, written by its coil, output variable \
+                         or assignment",
+                        lang.name
+                    ),
+                );
+                return None;
+            }
+            if !name.is_empty() {
+                renames
+                    .bases
+                    .insert(name.to_ascii_uppercase(), result.to_string());
+            }
+            if delivered == Delivered::CurrentResult {
+                stmts.push(il::op(Op::St, il::var(result, span)));
             }
         }
         renames.apply(&mut stmts);
