@@ -181,3 +181,36 @@ fn chart_mistakes_are_reported_in_the_engineers_terms() {
     }
     insta::assert_snapshot!(diags);
 }
+
+/// The text of one POU in the emitted IL.
+fn pou_il<'a>(il: &'a str, header: &str) -> &'a str {
+    let start = il
+        .find(header)
+        .unwrap_or_else(|| panic!("`{header}` not in:\n{il}"));
+    let end = il[start..]
+        .find("\nEND_FUNCTION_BLOCK")
+        .map_or(il.len(), |e| start + e);
+    &il[start..end]
+}
+
+#[test]
+fn corpus_02_traffic_light_chart_lowers() {
+    let (unit, diags) = compile(
+        "02_beremiz_svghmi_traffic_light.xml",
+        &common::corpus("02_beremiz_svghmi_traffic_light.xml"),
+    );
+    // Only the missing SVGHMI library type remains.
+    assert!(diags.lines().all(|l| l.contains("E3009")), "{diags}");
+    let il = dump_unit(&unit);
+    let seq = pou_il(&il, "FUNCTION_BLOCK traffic_light_sequence");
+    // The initial step, the D T#2s association on the BOOL variable STOP_CARS, and the named FBD
+    // action BLINK_ORANGE_LIGHT executed under its A flag.
+    assert!(seq.contains("__sfc_X_Standstill : BOOL := TRUE;"), "{seq}");
+    assert!(seq.contains("PT := T#2s)"), "{seq}");
+    assert!(seq.contains("ST STOP_CARS"), "{seq}");
+    assert!(
+        seq.contains("LD __sfc_A_BLINK_ORANGE_LIGHT\n    JMPCN __sfc_skip_BLINK_ORANGE_LIGHT"),
+        "{seq}"
+    );
+    insta::assert_snapshot!(seq);
+}
