@@ -284,3 +284,50 @@ fn corpus_01_runs_and_counter_sfc_tracks_counter_il_as_the_standard_says() {
     }
     insta::assert_snapshot!(t);
 }
+
+#[test]
+fn st_conditions_and_actions_read_step_flags_and_times() {
+    let watch = [
+        "main.__sfc_X_Idle",
+        "main.__sfc_X_Fill",
+        "main.__sfc_X_Drain",
+        "main.level",
+        "main.pump",
+        "main.fills",
+    ];
+    // Filling by one per scan reaches 5 at cycle 5: Drain from cycle 6. At cycle 6 Fill's inline
+    // action runs its final scan (level 6, pump := Fill.X = FALSE), then Drain's action (level 5).
+    let t = run(
+        &fixture("st_chart.xml"),
+        14,
+        "1,main.start,1\n2,main.start,0\n",
+        &watch,
+    );
+    let c = columns(&t);
+    assert_eq!(on(&c, "main.__sfc_X_Fill"), [1, 2, 3, 4, 5]);
+    assert_eq!(on(&c, "main.__sfc_X_Drain"), [6, 7, 8, 9, 10, 11]);
+    assert_eq!(on(&c, "main.__sfc_X_Idle"), [0, 12, 13]);
+    assert_eq!(on(&c, "main.pump"), [1, 2, 3, 4, 5]);
+    let level: Vec<&str> = c["main.level"].iter().map(String::as_str).collect();
+    assert_eq!(
+        level,
+        ["0", "1", "2", "3", "4", "5", "5", "4", "3", "2", "1", "0", "0", "0"]
+    );
+    // P1: once per activation.
+    assert_eq!(c["main.fills"][13], "1");
+    insta::assert_snapshot!("st_chart_level", t);
+
+    // From level -10, `Fill.T >= T#100ms` ends the filling: Fill is active from 10 ms, so at the
+    // 110 ms scan (cycle 11).
+    let t = run(
+        &fixture("st_chart.xml"),
+        14,
+        "0,main.level,-10\n1,main.start,1\n2,main.start,0\n",
+        &watch,
+    );
+    let c = columns(&t);
+    assert_eq!(on(&c, "main.__sfc_X_Fill"), (1..=10).collect::<Vec<_>>());
+    assert_eq!(on(&c, "main.__sfc_X_Drain"), [11]);
+    assert_eq!(on(&c, "main.__sfc_X_Idle"), [0, 12, 13]);
+    insta::assert_snapshot!("st_chart_time", t);
+}
