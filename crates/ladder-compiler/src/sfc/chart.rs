@@ -616,3 +616,60 @@ fn condition<'e, 'a>(
     }
     found
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use diagnostics::{Diagnostics, SourceMap};
+
+    fn names(c: &Chart, idx: &[usize]) -> Vec<String> {
+        idx.iter().map(|&i| c.steps[i].name.clone()).collect()
+    }
+
+    #[test]
+    fn transitions_see_through_divergences_convergences_and_jumps() {
+        let xml = r#"<SFC>
+          <step localId="1" name="A" initialStep="true"/>
+          <simultaneousConvergence localId="9">
+            <connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+            <connectionPointIn><connection refLocalId="2"/></connectionPointIn>
+          </simultaneousConvergence>
+          <step localId="2" name="B" initialStep="true"/>
+          <selectionDivergence localId="3"><connectionPointIn><connection refLocalId="9"/></connectionPointIn></selectionDivergence>
+          <transition localId="4"><position x="50" y="0"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn>
+            <condition><reference name="go"/></condition></transition>
+          <transition localId="5"><position x="10" y="0"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn>
+            <condition><reference name="go"/></condition></transition>
+          <simultaneousDivergence localId="6"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></simultaneousDivergence>
+          <step localId="7" name="C"><connectionPointIn><connection refLocalId="6"/></connectionPointIn></step>
+          <jumpStep localId="8" targetName="A"><connectionPointIn><connection refLocalId="6"/></connectionPointIn></jumpStep>
+          <selectionConvergence localId="10"><connectionPointIn><connection refLocalId="5"/></connectionPointIn></selectionConvergence>
+          <step localId="11" name="D"><connectionPointIn><connection refLocalId="10"/></connectionPointIn></step>
+        </SFC>"#;
+        let (root, err) = crate::xml::parse(xml);
+        assert!(err.is_none());
+        let root = root.unwrap();
+        let mut map = SourceMap::new();
+        let file = map.add("t.xml", xml);
+        let mut diags = Diagnostics::new();
+        let mut ctx = Ctx {
+            file,
+            xml,
+            diags: &mut diags,
+        };
+        let c = read(&mut ctx, &root, "P");
+        // Left to right: 5 (x=10) before 4 (x=50).
+        let ids: Vec<&str> = c.transitions.iter().map(|t| t.id.as_str()).collect();
+        assert_eq!(ids, ["5", "4"]);
+        // Both need A and B (simultaneous convergence, then a selection divergence).
+        assert_eq!(names(&c, &c.transitions[0].pre), ["A", "B"]);
+        assert_eq!(names(&c, &c.transitions[1].pre), ["A", "B"]);
+        // 5 leads through a selection convergence to D; 4 through a simultaneous divergence to C and
+        // (by the jump) A.
+        assert_eq!(names(&c, &c.transitions[0].post), ["D"]);
+        assert_eq!(names(&c, &c.transitions[1].post), ["C", "A"]);
+        // C and D have no following transition.
+        let codes: Vec<String> = diags.iter().map(|d| d.code.to_string()).collect();
+        assert_eq!(codes, ["E3121", "E3121"], "{codes:?}");
+    }
+}
