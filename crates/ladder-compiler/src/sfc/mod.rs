@@ -79,6 +79,20 @@ pub fn lower(
     sfc: &Element,
 ) -> (Vec<IlStmt>, Vec<VarDecl>) {
     let pou_name = pou.name.name.clone();
+    if pou.kind == il_frontend::ast::PouKind::Function {
+        report(
+            ctx,
+            code::E3125,
+            ctx.tag(sfc),
+            &pou_name,
+            None,
+            format!(
+                "function `{pou_name}` is a sequential function chart: a function keeps no state \
+                 between calls, so it cannot remember its active steps (make it a function block or a program)"
+            ),
+        );
+        return (Vec::new(), Vec::new());
+    }
     let chart = chart::read(ctx, sfc, &pou_name);
     let mut hidden = Hidden::default();
     let mut out: Vec<IlStmt> = Vec::new();
