@@ -214,3 +214,44 @@ fn corpus_02_traffic_light_chart_lowers() {
     );
     insta::assert_snapshot!(seq);
 }
+
+#[test]
+fn inline_ld_and_named_il_conditions_write_their_transition() {
+    let ld = r#"<LD>
+        <leftPowerRail localId="1"/>
+        <contact localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>go</variable></contact>
+        <contact localId="3" negated="true"><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>Run.X</variable></contact>
+        <coil localId="4"><connectionPointIn><connection refLocalId="3"/></connectionPointIn><variable>Start</variable></coil>
+      </LD>"#;
+    let xml = program(
+        r#"<variable name="go"><type><BOOL/></type></variable>"#,
+        &format!(
+            r#"<step localId="1" name="Idle" initialStep="true"/>
+        <transition localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+          <condition><inline name="Start">{ld}</inline></condition></transition>
+        <step localId="3" name="Run"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></step>
+        <transition localId="5"><connectionPointIn><connection refLocalId="3"/></connectionPointIn>
+          <condition><reference name="Stop"/></condition></transition>
+        <jumpStep localId="6" targetName="Idle"><connectionPointIn><connection refLocalId="5"/></connectionPointIn></jumpStep>"#
+        ),
+    )
+    .replace(
+        "<body><SFC>",
+        "<transitions><transition name=\"Stop\"><body><IL><xhtml:p>LDN go\nAND Run.X</xhtml:p></IL></body></transition></transitions><body><SFC>",
+    );
+    let (unit, diags) = compile("inline_ld.xml", &xml);
+    assert_eq!(diags, "");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    // The coil named after the inline condition writes the condition; Run.X reads the step flag.
+    assert_eq!(
+        section(&ls, "LD go", "ST __sfc_c2"),
+        ["LD go", "ANDN __sfc_X_Run", "ST __sfc_c2"]
+    );
+    // The IL named transition leaves its value in the current result.
+    assert_eq!(
+        section(&ls, "LDN go", "ST __sfc_n_Stop"),
+        ["LDN go", "AND __sfc_X_Run", "ST __sfc_n_Stop"]
+    );
+    insta::assert_snapshot!(il);
+}

@@ -301,6 +301,7 @@ fn input(
 ) -> Option<Operand> {
     let span = act.span;
     let mut flags: Vec<usize> = act.uses.iter().filter(|u| u.0 == q).map(|u| u.1).collect();
+    flags.sort_unstable();
     flags.dedup();
     match flags.as_slice() {
         [] => None,
