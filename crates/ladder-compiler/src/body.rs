@@ -15,9 +15,10 @@ use crate::xml::Element;
 use diagnostics::{code, Diagnostic, XmlContext};
 use il_frontend::ast::{IlStmt, Pou, VarBlock, VarKind};
 
-/// The body of one POU; every instruction gets its own span (see [`crate::sfc::il::unique_spans`]:
-/// the semantic model and the C backend key instructions by span, and a graphical element often
-/// yields several instructions).
+/// The body of one POU; function calls get their own span (see
+/// [`crate::sfc::il::unique_function_call_spans`]: the semantic model and the C backend key
+/// instructions by span, and a block element yields `LD`, the call and `ST` with one span). SFC bodies
+/// give every instruction its own span.
 pub fn lower_pou_body(
     ctx: &mut Ctx,
     index: &Index,
@@ -26,7 +27,7 @@ pub fn lower_pou_body(
     used: bool,
 ) -> Option<(Vec<IlStmt>, Option<VarBlock>)> {
     let mut lowered = lower_language(ctx, index, pou_el, pou, used)?;
-    crate::sfc::il::unique_spans(&mut lowered.0, ctx.xml.len());
+    crate::sfc::il::unique_function_call_spans(&mut lowered.0, ctx.xml.len());
     Some(lowered)
 }
 

@@ -243,18 +243,48 @@ impl Renames {
 /// inside it (shorter from the end, then from the start), so it still points at its XML element.
 pub fn unique_spans(stmts: &mut [IlStmt], xml_len: usize) {
     let mut used: HashSet<Span> = HashSet::new();
-    walk_unique(stmts, &mut used, xml_len);
+    walk_unique(stmts, &mut used, xml_len, false);
 }
 
-fn walk_unique(stmts: &mut [IlStmt], used: &mut HashSet<Span>, xml_len: usize) {
+/// Like [`unique_spans`], but only function calls (`SEL a, b`, user functions) move: the other
+/// instructions of LD/FBD bodies keep their element's span, which the PLCopen block lowering
+/// (param-passing, IL method) relies on.
+pub fn unique_function_call_spans(stmts: &mut [IlStmt], xml_len: usize) {
+    // The other instructions' spans are taken first, wherever they are: a call must not share its
+    // span with the `ST` of its result that follows it either.
+    let mut used: HashSet<Span> = HashSet::new();
+    other_spans(stmts, &mut used);
+    walk_unique(stmts, &mut used, xml_len, true);
+}
+
+fn other_spans(stmts: &[IlStmt], used: &mut HashSet<Span>) {
     for s in stmts {
         let IlStmt::Instr(i) = s else { continue };
-        if !used.insert(i.span) {
+        match &i.kind {
+            InstrKind::FunctionCall { .. } => {}
+            InstrKind::Deferred { body, .. } => {
+                used.insert(i.span);
+                other_spans(body, used);
+            }
+            _ => {
+                used.insert(i.span);
+            }
+        }
+    }
+}
+
+fn walk_unique(stmts: &mut [IlStmt], used: &mut HashSet<Span>, xml_len: usize, calls_only: bool) {
+    for s in stmts.iter_mut() {
+        let IlStmt::Instr(i) = s else { continue };
+        let is_call = matches!(i.kind, InstrKind::FunctionCall { .. });
+        if calls_only && !is_call {
+            // Already in `used` (see `other_spans`); it keeps its span.
+        } else if !used.insert(i.span) {
             i.span = fresh(i.span, used, xml_len);
             used.insert(i.span);
         }
         if let InstrKind::Deferred { body, .. } = &mut i.kind {
-            walk_unique(body, used, xml_len);
+            walk_unique(body, used, xml_len, calls_only);
         }
     }
 }

@@ -298,6 +298,7 @@ pub fn lower(
         hidden.push(v);
     }
     renames.apply(&mut out);
+    il::unique_spans(&mut out, ctx.xml.len());
     (out, hidden.vars)
 }
 
