@@ -15,10 +15,10 @@ use crate::xml::Element;
 use diagnostics::{code, Diagnostic, XmlContext};
 use il_frontend::ast::{IlStmt, Pou, VarBlock, VarKind};
 
-/// The body of one POU; function calls get their own span (see
-/// [`crate::sfc::il::unique_function_call_spans`]: the semantic model and the C backend key
-/// instructions by span, and a block element yields `LD`, the call and `ST` with one span). SFC bodies
-/// give every instruction its own span.
+/// The body of one POU, every instruction with its own span (see
+/// [`crate::sfc::il::unique_spans_pinning`]: the semantic model and the C backend key instructions by
+/// span, and a block element yields `LD`, the call and `ST` with one span); a call of a PLCopen motion
+/// block instance keeps its element's span.
 pub fn lower_pou_body(
     ctx: &mut Ctx,
     index: &Index,
@@ -27,7 +27,18 @@ pub fn lower_pou_body(
     used: bool,
 ) -> Option<(Vec<IlStmt>, Option<VarBlock>)> {
     let mut lowered = lower_language(ctx, index, pou_el, pou, used)?;
-    crate::sfc::il::unique_function_call_spans(&mut lowered.0, ctx.xml.len());
+    let motion: std::collections::HashSet<String> = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .filter(|v| {
+            matches!(&v.ty, il_frontend::ast::TypeRef::Named(n)
+                if crate::catalogue::is_motion_block(&n.name))
+        })
+        .map(|v| v.name.key())
+        .collect();
+    let pinned = |name: &str| motion.contains(&name.to_ascii_uppercase());
+    crate::sfc::il::unique_spans_pinning(&mut lowered.0, ctx.xml.len(), &pinned);
     Some(lowered)
 }
 

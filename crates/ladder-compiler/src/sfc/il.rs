@@ -242,49 +242,51 @@ impl Renames {
 /// about an instruction by its span. An instruction whose span is taken gets the first free span
 /// inside it (shorter from the end, then from the start), so it still points at its XML element.
 pub fn unique_spans(stmts: &mut [IlStmt], xml_len: usize) {
-    let mut used: HashSet<Span> = HashSet::new();
-    walk_unique(stmts, &mut used, xml_len, false);
+    unique_spans_pinning(stmts, xml_len, &|_| false);
 }
 
-/// Like [`unique_spans`], but only function calls (`SEL a, b`, user functions) move: the other
-/// instructions of LD/FBD bodies keep their element's span, which the PLCopen block lowering
-/// (param-passing, IL method) relies on.
-pub fn unique_function_call_spans(stmts: &mut [IlStmt], xml_len: usize) {
-    // The other instructions' spans are taken first, wherever they are: a call must not share its
-    // span with the `ST` of its result that follows it either.
-    let mut used: HashSet<Span> = HashSet::new();
-    other_spans(stmts, &mut used);
-    walk_unique(stmts, &mut used, xml_len, true);
+/// Like [`unique_spans`], except that the calls of the instances `pinned(name)` selects, and every
+/// instruction sharing their span, keep it: the PLCopen block lowering (param-passing, IL method)
+/// gives the code it generates for a motion block call the spans inside that call's span.
+pub fn unique_spans_pinning(stmts: &mut [IlStmt], xml_len: usize, pinned: &dyn Fn(&str) -> bool) {
+    let mut keep: HashSet<Span> = HashSet::new();
+    pinned_spans(stmts, pinned, &mut keep);
+    let mut used = keep.clone();
+    walk_pinning(stmts, &mut used, &keep, xml_len);
 }
 
-fn other_spans(stmts: &[IlStmt], used: &mut HashSet<Span>) {
+fn is_pinned(i: &Instruction, pinned: &dyn Fn(&str) -> bool) -> bool {
+    matches!(&i.kind, InstrKind::Call { instance, .. } if pinned(&instance.base.name))
+}
+
+fn pinned_spans(stmts: &[IlStmt], pinned: &dyn Fn(&str) -> bool, used: &mut HashSet<Span>) {
     for s in stmts {
         let IlStmt::Instr(i) = s else { continue };
-        match &i.kind {
-            InstrKind::FunctionCall { .. } => {}
-            InstrKind::Deferred { body, .. } => {
-                used.insert(i.span);
-                other_spans(body, used);
-            }
-            _ => {
-                used.insert(i.span);
-            }
+        if is_pinned(i, pinned) {
+            used.insert(i.span);
+        }
+        if let InstrKind::Deferred { body, .. } = &i.kind {
+            pinned_spans(body, pinned, used);
         }
     }
 }
 
-fn walk_unique(stmts: &mut [IlStmt], used: &mut HashSet<Span>, xml_len: usize, calls_only: bool) {
+fn walk_pinning(
+    stmts: &mut [IlStmt],
+    used: &mut HashSet<Span>,
+    keep: &HashSet<Span>,
+    xml_len: usize,
+) {
     for s in stmts.iter_mut() {
         let IlStmt::Instr(i) = s else { continue };
-        let is_call = matches!(i.kind, InstrKind::FunctionCall { .. });
-        if calls_only && !is_call {
-            // Already in `used` (see `other_spans`); it keeps its span.
-        } else if !used.insert(i.span) {
+        // Everything a pinned call's element yields keeps its span: param-passing numbers the
+        // instructions it generates for that call with the spans inside it.
+        if !keep.contains(&i.span) && !used.insert(i.span) {
             i.span = fresh(i.span, used, xml_len);
             used.insert(i.span);
         }
         if let InstrKind::Deferred { body, .. } = &mut i.kind {
-            walk_unique(body, used, xml_len, calls_only);
+            walk_pinning(body, used, keep, xml_len);
         }
     }
 }

@@ -298,7 +298,6 @@ pub fn lower(
         hidden.push(v);
     }
     renames.apply(&mut out);
-    il::unique_spans(&mut out, ctx.xml.len());
     (out, hidden.vars)
 }
 
