@@ -255,3 +255,36 @@ fn inline_ld_and_named_il_conditions_write_their_transition() {
     );
     insta::assert_snapshot!(il);
 }
+
+#[test]
+fn durations_may_be_variables_and_indicators_are_accepted() {
+    let xml = program(
+        r#"<variable name="go"><type><BOOL/></type></variable><variable name="horn"><type><BOOL/></type></variable>
+           <variable name="done"><type><BOOL/></type></variable><variable name="tHorn"><type><TIME/></type></variable>"#,
+        r#"<step localId="1" name="Idle" initialStep="true"/>
+        <actionBlock localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+          <action localId="0" qualifier="L" duration="tHorn" indicator="done"><reference name="horn"/></action></actionBlock>
+        <transition localId="3"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+          <condition><reference name="go"/></condition></transition>
+        <jumpStep localId="4" targetName="Idle"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></jumpStep>"#,
+    );
+    let (unit, diags) = compile("durations.xml", &xml);
+    assert_eq!(diags, "");
+    let il = dump_unit(&unit);
+    let ls = lines(&il);
+    // A BOOL variable as the condition, the limit timer on the variable duration.
+    assert_eq!(
+        section(&ls, "LD go", "ST __sfc_c3"),
+        ["LD go", "ST __sfc_c3"]
+    );
+    assert!(
+        ls.contains(&"CAL __sfc_L_horn(IN := __sfc_X_Idle, PT := tHorn)"),
+        "{il}"
+    );
+    assert_eq!(
+        section(&ls, "LD __sfc_X_Idle", "ST __sfc_Q_horn"),
+        ["LD __sfc_X_Idle", "ANDN __sfc_L_horn.Q", "ST __sfc_Q_horn"]
+    );
+    // The indicator variable is the action's business: the chart does not write it.
+    assert!(!ls.iter().any(|l| *l == "ST done"), "{il}");
+}
