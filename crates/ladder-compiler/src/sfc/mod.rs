@@ -408,7 +408,7 @@ fn networks(
                 ),
             }
         }
-        let Some(first) = wires.first().map(|w| w.from) else {
+        if wires.is_empty() {
             report(
                 ctx,
                 code::E3126,
@@ -418,7 +418,7 @@ fn networks(
                 format!("transition {} has an unconnected condition", t.id),
             );
             continue;
-        };
+        }
         let idx = g.nodes.len();
         g.nodes.push(Node {
             id: t.id.clone(),
@@ -450,7 +450,6 @@ fn networks(
                 keep.push(net);
             }
         }
-        let _ = first;
         merged.push(idx);
         match keep.iter_mut().find(|n| n.is_empty()) {
             Some(slot) => *slot = merged,
