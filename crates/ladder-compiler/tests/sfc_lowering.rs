@@ -286,5 +286,5 @@ fn durations_may_be_variables_and_indicators_are_accepted() {
         ["LD __sfc_X_Idle", "ANDN __sfc_L_horn.Q", "ST __sfc_Q_horn"]
     );
     // The indicator variable is the action's business: the chart does not write it.
-    assert!(!ls.iter().any(|l| *l == "ST done"), "{il}");
+    assert!(!ls.contains(&"ST done"), "{il}");
 }
