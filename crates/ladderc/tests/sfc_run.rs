@@ -163,10 +163,9 @@ fn action_qualifiers_switch_at_the_exact_cycle() {
     assert_eq!(on(&c, "main.ds_out"), (3..=11).collect::<Vec<_>>());
     // SL T#30ms: stored and limited to 30 ms.
     assert_eq!(on(&c, "main.sl_out"), [1, 2, 3]);
-    // P with the standard's final scan runs twice; P1 and P0 run once (activation / deactivation).
+    // P, P1 and P0 run exactly once (on activation, on activation, on deactivation): no final scan.
     assert_eq!(c["main.p_count"][1], "1");
-    assert_eq!(c["main.p_count"][2], "2");
-    assert_eq!(c["main.p_count"][14], "2");
+    assert_eq!(c["main.p_count"][14], "1");
     assert_eq!(c["main.p1_count"][1], "1");
     assert_eq!(c["main.p1_count"][14], "1");
     assert_eq!(c["main.p0_count"][7], "0");

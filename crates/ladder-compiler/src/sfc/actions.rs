@@ -3,7 +3,8 @@
 //! Input: the chart's associations (step, `<action>` element), the POU's named actions (`<actions>`)
 //! and declared variables. Output: the actions in first-association order, each with the steps that
 //! drive each qualifier and its durations; then the IL that computes every action's `Q` (active) and
-//! `A` (execute: `Q`, plus one final scan after `Q` falls, plus the P1/P0 pulses) from the step flags.
+//! `A` (execute: `Q`, plus one final scan after the non-P part of `Q` falls, plus the P1/P0 pulses)
+//! from the step flags.
 //! Invariants: one action control per action, whatever the number of associations (their qualifier
 //! inputs are OR-combined, as IEC requires); timed qualifiers have a duration (else E3123); a name
 //! that is neither a named action nor a declared BOOL variable is E3122.
@@ -359,11 +360,13 @@ pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<
         out.push(il::call(&t, vec![("IN", d), ("PT", pt)], span));
         terms.push(vec![(Op::Ld, false, f(&t, "Q"))]);
     }
+    // P is part of Q but gets no final scan (it runs exactly once per activation).
+    let mut p_pulse: Option<Operand> = None;
     if let Some(p) = input(act, Qualifier::P, steps, hidden, out) {
         let t = part("P");
         hidden.declare(&t, "R_TRIG", None, span);
         out.push(il::call(&t, vec![("CLK", p)], span));
-        terms.push(vec![(Op::Ld, false, f(&t, "Q"))]);
+        p_pulse = Some(f(&t, "Q"));
     }
     if let Some(sd) = input(act, Qualifier::SD, steps, hidden, out) {
         let (ff, t) = (part("SDff"), part("SDt"));
@@ -443,7 +446,22 @@ pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<
             out.push(il::deferred(Op::Or, code, span));
         }
     }
-    out.push(il::op(Op::St, v(&q)));
+    // The part of Q that gets a final scan (everything but P), then Q itself.
+    let qn = match p_pulse {
+        Some(p) => {
+            let qn = part("Qn");
+            hidden.declare(&qn, "BOOL", None, span);
+            out.push(il::op(Op::St, v(&qn)));
+            out.push(il::op(Op::Ld, v(&qn)));
+            out.push(il::op(Op::Or, p));
+            out.push(il::op(Op::St, v(&q)));
+            qn
+        }
+        None => {
+            out.push(il::op(Op::St, v(&q)));
+            q.clone()
+        }
+    };
     match &act.target {
         Target::Variable(var) => {
             out.push(il::op(Op::Ld, v(&q)));
@@ -453,7 +471,7 @@ pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<
             out.push(il::op(Op::St, var.clone()));
         }
         Target::Body(_) => {
-            // A := Q OR final scan (Q fell this scan) OR pulses; then remember Q.
+            // A := Q OR final scan (the non-P part of Q was TRUE last scan) OR pulses.
             let (a, m) = (names::a(k), part("Qm"));
             hidden.declare(&a, "BOOL", None, span);
             hidden.declare(&m, "BOOL", None, span);
@@ -463,7 +481,7 @@ pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<
                 out.push(il::op(Op::Or, p));
             }
             out.push(il::op(Op::St, v(&a)));
-            out.push(il::op(Op::Ld, v(&q)));
+            out.push(il::op(Op::Ld, v(&qn)));
             out.push(il::op(Op::St, v(&m)));
         }
     }
