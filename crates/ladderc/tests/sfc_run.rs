@@ -330,3 +330,50 @@ fn st_conditions_and_actions_read_step_flags_and_times() {
     assert_eq!(on(&c, "main.__sfc_X_Idle"), [0, 12, 13]);
     insta::assert_snapshot!("st_chart_time", t);
 }
+
+#[test]
+fn a_step_looping_on_itself_restarts_its_time() {
+    // Loop -> (Loop.T >= T#30ms) -> jump Loop: re-entered every 30 ms, its T restarts at 0 each time.
+    let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <types><dataTypes/><pous>
+    <pou name="Blink" pouType="program">
+      <interface><localVars><variable name="laps"><type><INT/></type></variable></localVars></interface>
+      <body><SFC>
+        <step localId="1" name="Loop" initialStep="true"/>
+        <transition localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+          <condition><inline name=""><IL><xhtml:p><![CDATA[LD Loop.T
+GE T#30ms]]></xhtml:p></IL></inline></condition></transition>
+        <jumpStep localId="3" targetName="Loop"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></jumpStep>
+        <actionBlock localId="4"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+          <action localId="0" qualifier="P1"><inline><IL><xhtml:p><![CDATA[LD laps
+ADD 1
+ST laps]]></xhtml:p></IL></inline></action></actionBlock>
+      </SFC></body>
+    </pou>
+  </pous></types>
+  <instances><configurations><configuration name="Cfg"><resource name="Res">
+    <task name="Main" interval="T#10ms" priority="0"><pouInstance name="main" typeName="Blink"/></task>
+  </resource></configuration></configurations></instances>
+</project>"#;
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("blink.xml");
+    std::fs::write(&file, xml).unwrap();
+    let t = run(
+        &file,
+        8,
+        "",
+        &["main.__sfc_X_Loop", "main.__sfc_T_Loop", "main.laps"],
+    );
+    let c = columns(&t);
+    let times: Vec<&str> = c["main.__sfc_T_Loop"].iter().map(String::as_str).collect();
+    assert_eq!(
+        times,
+        ["T#0ms", "T#10ms", "T#20ms", "T#0ms", "T#10ms", "T#20ms", "T#0ms", "T#10ms"]
+    );
+    assert_eq!(on(&c, "main.__sfc_X_Loop"), (0..8).collect::<Vec<_>>());
+    // Documented: the step flag never falls, so its P1 action (a rising edge of Loop.X, as in the
+    // standard's ACTION_CONTROL) runs only on the first activation.
+    assert_eq!(c["main.laps"][7], "1");
+    insta::assert_snapshot!(t);
+}

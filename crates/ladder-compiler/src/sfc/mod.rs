@@ -255,7 +255,34 @@ pub fn lower(
         }
     }
 
-    // 4. Step times, after the evolution: a step activated in this scan starts from 0 now.
+    // 4. Step times, after the evolution: a step activated in this scan starts from 0 now. A step
+    // left and re-entered by the same transition (a loop on itself) restarts too: its timer sees
+    // IN = FALSE once before the regular call.
+    for (si, s) in chart.steps.iter().enumerate() {
+        let loops: Vec<&chart::Transition> = chart
+            .transitions
+            .iter()
+            .filter(|t| t.pre.contains(&si) && t.post.contains(&si))
+            .collect();
+        if loops.is_empty() {
+            continue;
+        }
+        let k = format!("__sfc_K_{}", s.name);
+        hidden.declare(&k, "BOOL", None, s.span);
+        out.push(il::op(Op::Ld, il::var(&names::x(&s.name), s.span)));
+        for t in loops {
+            out.push(il::opn(Op::And, il::var(&names::fire(&t.id), s.span)));
+        }
+        out.push(il::op(Op::St, il::var(&k, s.span)));
+        out.push(il::call(
+            &names::timer(&s.name),
+            vec![
+                ("IN", il::var(&k, s.span)),
+                ("PT", il::lit_time(STEP_TIME_LIMIT_NS, s.span)),
+            ],
+            s.span,
+        ));
+    }
     step_times(&chart.steps, &mut hidden, &mut out);
 
     // 5. Actions: control, then bodies.
