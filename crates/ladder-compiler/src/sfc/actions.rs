@@ -186,6 +186,19 @@ pub fn collect<'e, 'a>(
         let (key, display, name, target) = if let Some(r) = a.el.child("reference") {
             let n = r.attr("name").unwrap_or_default().trim();
             let nspan = ctx.attr_span(r, "name");
+            if !values::is_ident(n) || n.contains("__") {
+                report(
+                    ctx,
+                    code::E3122,
+                    nspan,
+                    pou_name,
+                    Some(&a.block_id),
+                    format!(
+                        "step `{step_name}` names action `{n}`, which is not an IEC identifier"
+                    ),
+                );
+                continue;
+            }
             if let Some(act) = named.iter().find(|e| {
                 e.attr("name")
                     .is_some_and(|x| x.trim().eq_ignore_ascii_case(n))
@@ -255,7 +268,7 @@ pub fn collect<'e, 'a>(
                 .find(|c| !matches!(c.name, "documentation" | "addData"))
         }) {
             (
-                format!("b{}_{}", a.block_id, a.index),
+                format!("b{}_{}", super::sanitize(&a.block_id), a.index),
                 format!(
                     "inline action {} of action block {}",
                     a.index + 1,
