@@ -60,6 +60,7 @@ typedef struct {
 #define LADDERC_ERR_RANGE 2u    /* REAL to integer conversion out of range or NaN: saturated */
 #define LADDERC_ERR_BOUNDS 4u   /* array index out of its declared range: element 0 used instead */
 #define LADDERC_ERR_STRING 8u   /* string truncated to its capacity */
+#define LADDERC_ERR_STRPOS 16u  /* string function length or position out of range (ladderc_strings.c) */
 
 extern uint32_t ladderc_errors;  /* sticky error flags, LADDERC_ERR_* */
 extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set before each cycle */
@@ -279,6 +280,19 @@ uint64_t ladderc_str_to_uint(IEC_STRING s);
 double ladderc_str_to_real(IEC_STRING s);
 IEC_BOOL ladderc_str_to_bool(IEC_STRING s);
 IEC_TIME ladderc_str_to_time(IEC_STRING s);
+/* The standard string functions (ladderc_strings.c), value-based; lengths and positions as int64_t. */
+#define LADDERC_STR_DECLS(P, S)                                                                       \
+    IEC_INT P##_len(S in);                                                                          \
+    S P##_left(S in, int64_t l);                                                                    \
+    S P##_right(S in, int64_t l);                                                                   \
+    S P##_mid(S in, int64_t l, int64_t p);                                                          \
+    S P##_concat(S a, S b);                                                                         \
+    S P##_insert(S a, S b, int64_t p);                                                              \
+    S P##_delete(S in, int64_t l, int64_t p);                                                       \
+    S P##_replace(S a, S b, int64_t l, int64_t p);                                                  \
+    IEC_INT P##_find(S a, S b);
+LADDERC_STR_DECLS(ladderc_str, IEC_STRING)
+LADDERC_STR_DECLS(ladderc_wstr, IEC_WSTRING)
 
 /* ------------------------------------------------------------------ process image access */
 /* Byte order from the profile: LADDERC_BIG_ENDIAN is 0 (little) or 1 (big). Loads and stores go byte by

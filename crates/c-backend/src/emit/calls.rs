@@ -461,6 +461,7 @@ impl Gen<'_> {
         let e = ty.elementary();
         let need = |n: usize| vals.len() >= n;
         match name {
+            n if super::strings::is_string_function(n) => self.string_call(span, n, &ty, vals, tys),
             "ADD" | "MUL" | "SUB" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
                 if !need(2) {
                     return None;

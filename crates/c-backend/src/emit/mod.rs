@@ -12,6 +12,7 @@ mod init;
 mod method;
 mod scan;
 mod scope;
+mod strings;
 mod values;
 
 use crate::profile::{AddressUnit, BitNumbering, ByteOrder, TargetProfile};

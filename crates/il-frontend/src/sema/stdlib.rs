@@ -20,6 +20,8 @@ pub enum Class {
     AnyReal,
     AnyInt,
     AnyBit,
+    /// STRING and WSTRING (LEN, LEFT, CONCAT ...).
+    AnyString,
 }
 
 impl Class {
@@ -31,6 +33,7 @@ impl Class {
             Class::AnyReal => "ANY_REAL",
             Class::AnyInt => "ANY_INT",
             Class::AnyBit => "ANY_BIT",
+            Class::AnyString => "ANY_STRING",
         }
     }
     /// Whether `ty` belongs to the class (`Type::Error` belongs to every class).
@@ -48,11 +51,12 @@ impl Class {
             Class::AnyReal => ty.is_real(),
             Class::AnyInt => ty.is_integer(),
             Class::AnyBit => ty.is_bit(),
+            Class::AnyString => ty.is_string(),
         }
     }
     /// Whether an untyped integer literal may take a type of this class (it can be any ANY_NUM or ANY_BIT).
     pub fn accepts_int_literal(self) -> bool {
-        !matches!(self, Class::AnyReal)
+        !matches!(self, Class::AnyReal | Class::AnyString)
     }
     /// Whether an untyped real literal may take a type of this class.
     pub fn accepts_real_literal(self) -> bool {
@@ -117,6 +121,14 @@ const ELEM2: &[Param] = &[p("IN1", T(AnyElementary)), p("IN2", T(AnyElementary))
 const NUM1: &[Param] = &[p("IN", T(AnyNum))];
 const REAL1: &[Param] = &[p("IN", T(AnyReal))];
 const SHIFT: &[Param] = &[p("IN", T(AnyBit)), p("N", Own(AnyInt))];
+const STR1: &[Param] = &[p("IN", T(AnyString))];
+const STR2: &[Param] = &[p("IN1", T(AnyString)), p("IN2", T(AnyString))];
+const STR_L: &[Param] = &[p("IN", T(AnyString)), p("L", Own(AnyInt))];
+const STR_LP: &[Param] = &[
+    p("IN", T(AnyString)),
+    p("L", Own(AnyInt)),
+    p("P", Own(AnyInt)),
+];
 
 const fn f(
     name: &'static str,
@@ -202,6 +214,28 @@ pub static FUNCTIONS: &[StdFunction] = &[
         "IN bounded to MN..MX",
     ),
     f("MUX", &[p("K", Own(AnyInt)), p("IN0", T(Any)), p("IN1", T(Any))], true, Ret::T, "the K-th of IN0, IN1, ..."),
+    // character strings (positions count from 1; see the C backend README for out-of-range arguments)
+    f("LEN", STR1, false, Ret::Fixed(E::Int), "the length of IN in characters"),
+    f("LEFT", STR_L, false, Ret::T, "the leftmost L characters of IN"),
+    f("RIGHT", STR_L, false, Ret::T, "the rightmost L characters of IN"),
+    f("MID", STR_LP, false, Ret::T, "L characters of IN from the P-th"),
+    f("CONCAT", STR2, true, Ret::T, "IN1, IN2, ... one after the other"),
+    f(
+        "INSERT",
+        &[p("IN1", T(AnyString)), p("IN2", T(AnyString)), p("P", Own(AnyInt))],
+        false,
+        Ret::T,
+        "IN2 inserted into IN1 after its P-th character",
+    ),
+    f("DELETE", STR_LP, false, Ret::T, "IN without the L characters from the P-th"),
+    f(
+        "REPLACE",
+        &[p("IN1", T(AnyString)), p("IN2", T(AnyString)), p("L", Own(AnyInt)), p("P", Own(AnyInt))],
+        false,
+        Ret::T,
+        "IN1 with its L characters from the P-th replaced by IN2",
+    ),
+    f("FIND", STR2, false, Ret::Fixed(E::Int), "the position of the first IN2 in IN1 (0: none)"),
 ];
 
 /// Looks up a standard function (not a conversion) by name, case-insensitively.

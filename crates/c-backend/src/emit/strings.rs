@@ -1,0 +1,81 @@
+//! The standard character string functions (LEN, LEFT, RIGHT, MID, CONCAT, INSERT, DELETE, REPLACE,
+//! FIND) as calls of the runtime's `ladderc_str_*` (STRING) and `ladderc_wstr_*` (WSTRING) functions.
+//!
+//! Input: the function's name, its generic string type and the already-evaluated C arguments with their
+//! IEC types. Output: one side-effect-free C expression (a string value, or `IEC_INT` for LEN and FIND).
+//! Invariants: lengths and positions are passed as `int64_t` (so every integer type keeps its value up
+//! to LINT range, negative values included: the runtime flags them); CONCAT of n inputs folds left over
+//! the binary runtime function; results are at most the 254-unit capacity and are truncated to the
+//! declared length only where they are stored (the common store path).
+
+use super::Gen;
+use diagnostics::Span;
+use il_frontend::sema::Type;
+
+/// Whether `name` is one of the string functions this module emits.
+pub fn is_string_function(name: &str) -> bool {
+    matches!(
+        name,
+        "LEN" | "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE" | "FIND"
+    )
+}
+
+impl Gen<'_> {
+    /// A string function call on evaluated arguments `vals` of types `tys`; `ty` is the generic type.
+    pub(super) fn string_call(
+        &mut self,
+        span: Span,
+        name: &str,
+        ty: &Type,
+        vals: &[String],
+        tys: &[Type],
+    ) -> Option<String> {
+        let string_ty = if ty.is_string() {
+            ty
+        } else {
+            tys.iter().find(|t| t.is_string())?
+        };
+        let prefix = match string_ty {
+            Type::String { wide: true, .. } => "ladderc_wstr",
+            _ => "ladderc_str",
+        };
+        let arity = match name {
+            "LEN" => 1,
+            "LEFT" | "RIGHT" | "FIND" | "CONCAT" => 2,
+            "MID" | "DELETE" | "INSERT" => 3,
+            _ => 4,
+        };
+        if vals.len() < arity || (name != "CONCAT" && vals.len() != arity) {
+            self.unsupported(span, format!("{name} with {} inputs", vals.len()));
+            return None;
+        }
+        let f = name.to_ascii_lowercase();
+        // Which arguments are integers (lengths, positions).
+        let int_args: &[usize] = match name {
+            "LEFT" | "RIGHT" => &[1],
+            "MID" | "DELETE" => &[1, 2],
+            "INSERT" => &[2],
+            "REPLACE" => &[2, 3],
+            _ => &[],
+        };
+        let args: Vec<String> = vals
+            .iter()
+            .enumerate()
+            .map(|(i, v)| {
+                if int_args.contains(&i) {
+                    format!("(int64_t)({v})")
+                } else {
+                    v.clone()
+                }
+            })
+            .collect();
+        if name == "CONCAT" {
+            let mut acc = args[0].clone();
+            for a in &args[1..] {
+                acc = format!("{prefix}_concat({acc}, {a})");
+            }
+            return Some(acc);
+        }
+        Some(format!("{prefix}_{f}({})", args.join(", ")))
+    }
+}
