@@ -11,6 +11,7 @@ fn sample(class: Class) -> &'static str {
     match class {
         Class::AnyReal => "REAL",
         Class::AnyBit => "WORD",
+        Class::AnyString => "STRING",
         _ => "INT",
     }
 }
@@ -20,7 +21,8 @@ fn the_catalogue_lists_the_iec_functions() {
     for name in [
         "ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "ABS", "SQRT", "LN", "LOG", "EXP", "SIN", "COS",
         "TAN", "ASIN", "ACOS", "ATAN", "GT", "GE", "EQ", "NE", "LE", "LT", "AND", "OR", "XOR",
-        "NOT", "SHL", "SHR", "ROL", "ROR", "SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE",
+        "NOT", "SHL", "SHR", "ROL", "ROR", "SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE", "LEN", "LEFT", "RIGHT", "MID", "CONCAT",
+        "INSERT", "DELETE", "REPLACE", "FIND",
     ] {
         assert!(stdlib::function(name).is_some(), "{name} missing");
         assert!(
