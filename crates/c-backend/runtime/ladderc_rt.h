@@ -346,6 +346,17 @@ typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL run
 typedef struct { IEC_BOOL CU, R; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cu_m; } ladderc_CTU;
 typedef struct { IEC_BOOL CD, LD; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cd_m; } ladderc_CTD;
 typedef struct { IEC_BOOL CU, CD, R, LD; IEC_INT PV; IEC_BOOL QU, QD; IEC_INT CV; IEC_BOOL cu_m, cd_m; } ladderc_CTUD;
+/* The typed counters CTU_DINT ... CTUD_ULINT: the same FBs on PV and CV of type T. */
+#define LADDERC_COUNTER_TYPES(T)                                                                   \
+    typedef struct { IEC_BOOL CU, R; IEC_##T PV; IEC_BOOL Q; IEC_##T CV; IEC_BOOL cu_m; } ladderc_CTU_##T; \
+    typedef struct { IEC_BOOL CD, LD; IEC_##T PV; IEC_BOOL Q; IEC_##T CV; IEC_BOOL cd_m; } ladderc_CTD_##T; \
+    typedef struct {                                                                               \
+        IEC_BOOL CU, CD, R, LD; IEC_##T PV; IEC_BOOL QU, QD; IEC_##T CV; IEC_BOOL cu_m, cd_m;     \
+    } ladderc_CTUD_##T;
+LADDERC_COUNTER_TYPES(DINT)
+LADDERC_COUNTER_TYPES(LINT)
+LADDERC_COUNTER_TYPES(UDINT)
+LADDERC_COUNTER_TYPES(ULINT)
 
 #define LADDERC_FB_DECL(N)                                                                         \
     void ladderc_##N##_init(ladderc_##N *fb);                                                     \
@@ -360,6 +371,18 @@ LADDERC_FB_DECL(TP)
 LADDERC_FB_DECL(CTU)
 LADDERC_FB_DECL(CTD)
 LADDERC_FB_DECL(CTUD)
+LADDERC_FB_DECL(CTU_DINT)
+LADDERC_FB_DECL(CTD_DINT)
+LADDERC_FB_DECL(CTUD_DINT)
+LADDERC_FB_DECL(CTU_LINT)
+LADDERC_FB_DECL(CTD_LINT)
+LADDERC_FB_DECL(CTUD_LINT)
+LADDERC_FB_DECL(CTU_UDINT)
+LADDERC_FB_DECL(CTD_UDINT)
+LADDERC_FB_DECL(CTUD_UDINT)
+LADDERC_FB_DECL(CTU_ULINT)
+LADDERC_FB_DECL(CTD_ULINT)
+LADDERC_FB_DECL(CTUD_ULINT)
 
 /* ------------------------------------------------------------------ the harness contract */
 typedef enum {

@@ -58,6 +58,90 @@ pub static STD_FBS: &[StdFb] = &[
         outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "INT")],
     },
     StdFb {
+        name: "CTU_DINT",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "DINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "DINT")],
+    },
+    StdFb {
+        name: "CTD_DINT",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "DINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "DINT")],
+    },
+    StdFb {
+        name: "CTUD_DINT",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "DINT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "DINT")],
+    },
+    StdFb {
+        name: "CTU_LINT",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "LINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "LINT")],
+    },
+    StdFb {
+        name: "CTD_LINT",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "LINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "LINT")],
+    },
+    StdFb {
+        name: "CTUD_LINT",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "LINT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "LINT")],
+    },
+    StdFb {
+        name: "CTU_UDINT",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "UDINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "UDINT")],
+    },
+    StdFb {
+        name: "CTD_UDINT",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "UDINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "UDINT")],
+    },
+    StdFb {
+        name: "CTUD_UDINT",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "UDINT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "UDINT")],
+    },
+    StdFb {
+        name: "CTU_ULINT",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "ULINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "ULINT")],
+    },
+    StdFb {
+        name: "CTD_ULINT",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "ULINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "ULINT")],
+    },
+    StdFb {
+        name: "CTUD_ULINT",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "ULINT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "ULINT")],
+    },
+    StdFb {
         name: "TP",
         inputs: TIMER_IN,
         outputs: TIMER_OUT,

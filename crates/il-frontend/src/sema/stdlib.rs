@@ -468,30 +468,39 @@ const TIMER: &[FbParam] = &[
     o("Q", E::Bool),
     o("ET", E::Time),
 ];
-const CTU: &[FbParam] = &[
-    i("CU", E::Bool),
-    i("R", E::Bool),
-    i("PV", E::Int),
-    o("Q", E::Bool),
-    o("CV", E::Int),
-];
-const CTD: &[FbParam] = &[
-    i("CD", E::Bool),
-    i("LD", E::Bool),
-    i("PV", E::Int),
-    o("Q", E::Bool),
-    o("CV", E::Int),
-];
-const CTUD: &[FbParam] = &[
-    i("CU", E::Bool),
-    i("CD", E::Bool),
-    i("R", E::Bool),
-    i("LD", E::Bool),
-    i("PV", E::Int),
-    o("QU", E::Bool),
-    o("QD", E::Bool),
-    o("CV", E::Int),
-];
+const fn ctu(t: Elementary) -> [FbParam; 5] {
+    [
+        i("CU", E::Bool),
+        i("R", E::Bool),
+        i("PV", t),
+        o("Q", E::Bool),
+        o("CV", t),
+    ]
+}
+const fn ctd(t: Elementary) -> [FbParam; 5] {
+    [
+        i("CD", E::Bool),
+        i("LD", E::Bool),
+        i("PV", t),
+        o("Q", E::Bool),
+        o("CV", t),
+    ]
+}
+const fn ctud(t: Elementary) -> [FbParam; 8] {
+    [
+        i("CU", E::Bool),
+        i("CD", E::Bool),
+        i("R", E::Bool),
+        i("LD", E::Bool),
+        i("PV", t),
+        o("QU", E::Bool),
+        o("QD", E::Bool),
+        o("CV", t),
+    ]
+}
+const CTU: &[FbParam] = &ctu(E::Int);
+const CTD: &[FbParam] = &ctd(E::Int);
+const CTUD: &[FbParam] = &ctud(E::Int);
 
 /// The inputs and outputs of a standard FB, in IEC order (inputs first).
 pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
@@ -503,6 +512,18 @@ pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
         StdFb::Ctu => CTU,
         StdFb::Ctd => CTD,
         StdFb::Ctud => CTUD,
+        StdFb::CtuDint => &const { ctu(E::Dint) },
+        StdFb::CtuLint => &const { ctu(E::Lint) },
+        StdFb::CtuUdint => &const { ctu(E::Udint) },
+        StdFb::CtuUlint => &const { ctu(E::Ulint) },
+        StdFb::CtdDint => &const { ctd(E::Dint) },
+        StdFb::CtdLint => &const { ctd(E::Lint) },
+        StdFb::CtdUdint => &const { ctd(E::Udint) },
+        StdFb::CtdUlint => &const { ctd(E::Ulint) },
+        StdFb::CtudDint => &const { ctud(E::Dint) },
+        StdFb::CtudLint => &const { ctud(E::Lint) },
+        StdFb::CtudUdint => &const { ctud(E::Udint) },
+        StdFb::CtudUlint => &const { ctud(E::Ulint) },
     }
 }
 
@@ -516,10 +537,14 @@ pub fn fb_doc(fb: StdFb) -> &'static str {
         StdFb::Ton => "on-delay timer: Q goes TRUE when IN has been TRUE for PT",
         StdFb::Tof => "off-delay timer: Q stays TRUE for PT after IN goes FALSE",
         StdFb::Tp => "pulse timer: Q is TRUE for PT from a rising edge of IN",
-        StdFb::Ctu => "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets",
-        StdFb::Ctd => {
+        StdFb::Ctu | StdFb::CtuDint | StdFb::CtuLint | StdFb::CtuUdint | StdFb::CtuUlint => {
+            "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets"
+        }
+        StdFb::Ctd | StdFb::CtdDint | StdFb::CtdLint | StdFb::CtdUdint | StdFb::CtdUlint => {
             "down counter: CV counts down on rising edges of CD, Q := CV <= 0, LD loads PV"
         }
-        StdFb::Ctud => "up/down counter: QU := CV >= PV, QD := CV <= 0",
+        StdFb::Ctud | StdFb::CtudDint | StdFb::CtudLint | StdFb::CtudUdint | StdFb::CtudUlint => {
+            "up/down counter: QU := CV >= PV, QD := CV <= 0"
+        }
     }
 }
