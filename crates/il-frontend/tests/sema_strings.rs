@@ -28,14 +28,16 @@ fn string_results_carry_the_longest_input_length() {
     );
     let (m, d) = analyze_src(&src);
     assert!(d.is_empty(), "{d}");
-    let results: Vec<Type> = m
+    let mut calls: Vec<(u32, Type)> = m
         .instrs
         .iter()
-        .filter_map(|(_, i)| match &i.callee {
-            Some(Callee::Std { result, .. }) => Some(result.clone()),
+        .filter_map(|(s, i)| match &i.callee {
+            Some(Callee::Std { result, .. }) => Some((s.start, result.clone())),
             _ => None,
         })
         .collect();
+    calls.sort_by_key(|c| c.0);
+    let results: Vec<Type> = calls.into_iter().map(|c| c.1).collect();
     assert_eq!(
         results,
         [

@@ -64,6 +64,10 @@ impl Gen<'_> {
         instance: &VarRef,
         args: &CallArgs,
     ) {
+        // `CAL LIMIT(...)` (IEC draft Annex F): sema resolved a function call.
+        if cond == Condition::Always && matches!(info.callee, Some(Callee::Std { .. })) {
+            return self.function_call(b, i, info, args);
+        }
         let Some(Place::Mem { lv, ty }) = self.place(b.scope, instance) else {
             self.unsupported(
                 instance.span,

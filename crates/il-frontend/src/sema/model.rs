@@ -506,6 +506,9 @@ pub struct Variable {
     /// The declared initial value (after a user type's own default when the declaration gives none:
     /// `None` means the type's default, zero/FALSE/first enum value/empty string).
     pub init: Option<ConstValue>,
+    /// `R_EDGE` / `F_EDGE` of a BOOL input of a function block (`None` anywhere else; misplaced
+    /// qualifiers are reported, E1100/E1101, and dropped).
+    pub edge: Option<crate::ast::Edge>,
 }
 
 impl Variable {
