@@ -313,6 +313,13 @@ pub fn std_function(name: &str) -> Option<StdFunction> {
         "MUX" => f(same, None, 1),
         "TRUNC" => f(ResultRule::Fixed("DINT"), None, 0),
         "LEN" | "FIND" => f(ResultRule::Fixed("INT"), None, 0),
+        "ADD_TIME" | "SUB_TIME" | "MUL_TIME" | "DIV_TIME" | "SUB_DATE_DATE" | "SUB_TOD_TOD"
+        | "SUB_DT_DT" => f(ResultRule::Fixed("TIME"), None, 0),
+        "ADD_LTIME" | "SUB_LTIME" | "MUL_LTIME" | "DIV_LTIME" => {
+            f(ResultRule::Fixed("LTIME"), None, 0)
+        }
+        "ADD_TOD_TIME" | "SUB_TOD_TIME" => f(ResultRule::Fixed("TOD"), None, 0),
+        "ADD_DT_TIME" | "SUB_DT_TIME" | "CONCAT_DATE_TOD" => f(ResultRule::Fixed("DT"), None, 0),
         "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE" => {
             f(ResultRule::Fixed("STRING"), None, 0)
         }

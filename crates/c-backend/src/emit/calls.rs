@@ -466,6 +466,9 @@ impl Gen<'_> {
         let need = |n: usize| vals.len() >= n;
         match name {
             n if super::strings::is_string_function(n) => self.string_call(span, n, &ty, vals, tys),
+            n if super::datetime::is_datetime_function(n) => {
+                self.datetime_call(span, n, vals, tys, result)
+            }
             "ADD" | "MUL" | "SUB" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
                 if !need(2) {
                     return None;

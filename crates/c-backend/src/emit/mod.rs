@@ -8,6 +8,7 @@
 
 mod body;
 mod calls;
+mod datetime;
 mod edges;
 mod init;
 mod method;

@@ -121,6 +121,11 @@ const ELEM2: &[Param] = &[p("IN1", T(AnyElementary)), p("IN2", T(AnyElementary))
 const NUM1: &[Param] = &[p("IN", T(AnyNum))];
 const REAL1: &[Param] = &[p("IN", T(AnyReal))];
 const SHIFT: &[Param] = &[p("IN", T(AnyBit)), p("N", Own(AnyInt))];
+const fn fx2(a: Elementary, b: Elementary) -> [Param; 2] {
+    [p("IN1", Fixed(a)), p("IN2", Fixed(b))]
+}
+const TIME_NUM: &[Param] = &[p("IN1", Fixed(E::Time)), p("IN2", Own(AnyNum))];
+const LTIME_NUM: &[Param] = &[p("IN1", Fixed(E::Ltime)), p("IN2", Own(AnyNum))];
 const STR1: &[Param] = &[p("IN", T(AnyString))];
 const STR2: &[Param] = &[p("IN1", T(AnyString)), p("IN2", T(AnyString))];
 const STR_L: &[Param] = &[p("IN", T(AnyString)), p("L", Own(AnyInt))];
@@ -236,6 +241,23 @@ pub static FUNCTIONS: &[StdFunction] = &[
         "IN1 with its L characters from the P-th replaced by IN2",
     ),
     f("FIND", STR2, false, Ret::Fixed(E::Int), "the position of the first IN2 in IN1 (0: none)"),
+    // time and date functions with typed names (the overloads of TIME_ARITH, callable by name)
+    f("ADD_TIME", &fx2(E::Time, E::Time), false, Ret::Fixed(E::Time), "TIME + TIME"),
+    f("ADD_LTIME", &fx2(E::Ltime, E::Ltime), false, Ret::Fixed(E::Ltime), "LTIME + LTIME"),
+    f("ADD_TOD_TIME", &fx2(E::Tod, E::Time), false, Ret::Fixed(E::Tod), "TOD + TIME"),
+    f("ADD_DT_TIME", &fx2(E::Dt, E::Time), false, Ret::Fixed(E::Dt), "DT + TIME"),
+    f("SUB_TIME", &fx2(E::Time, E::Time), false, Ret::Fixed(E::Time), "TIME - TIME"),
+    f("SUB_LTIME", &fx2(E::Ltime, E::Ltime), false, Ret::Fixed(E::Ltime), "LTIME - LTIME"),
+    f("SUB_DATE_DATE", &fx2(E::Date, E::Date), false, Ret::Fixed(E::Time), "DATE - DATE"),
+    f("SUB_TOD_TIME", &fx2(E::Tod, E::Time), false, Ret::Fixed(E::Tod), "TOD - TIME"),
+    f("SUB_TOD_TOD", &fx2(E::Tod, E::Tod), false, Ret::Fixed(E::Time), "TOD - TOD"),
+    f("SUB_DT_TIME", &fx2(E::Dt, E::Time), false, Ret::Fixed(E::Dt), "DT - TIME"),
+    f("SUB_DT_DT", &fx2(E::Dt, E::Dt), false, Ret::Fixed(E::Time), "DT - DT"),
+    f("MUL_TIME", TIME_NUM, false, Ret::Fixed(E::Time), "TIME * ANY_NUM"),
+    f("MUL_LTIME", LTIME_NUM, false, Ret::Fixed(E::Ltime), "LTIME * ANY_NUM"),
+    f("DIV_TIME", TIME_NUM, false, Ret::Fixed(E::Time), "TIME / ANY_NUM (0 for a zero divisor)"),
+    f("DIV_LTIME", LTIME_NUM, false, Ret::Fixed(E::Ltime), "LTIME / ANY_NUM (0 for a zero divisor)"),
+    f("CONCAT_DATE_TOD", &fx2(E::Date, E::Tod), false, Ret::Fixed(E::Dt), "the DT of a DATE at a TOD"),
 ];
 
 /// Looks up a standard function (not a conversion) by name, case-insensitively.
