@@ -290,6 +290,9 @@ IEC_TIME ladderc_str_to_time(IEC_STRING s);
     S P##_insert(S a, S b, int64_t p);                                                              \
     S P##_delete(S in, int64_t l, int64_t p);                                                       \
     S P##_replace(S a, S b, int64_t l, int64_t p);                                                  \
+    S P##_max(S a, S b);                                                                            \
+    S P##_min(S a, S b);                                                                            \
+    S P##_limit(S mn, S in, S mx);                                                                  \
     IEC_INT P##_find(S a, S b);
 LADDERC_STR_DECLS(ladderc_str, IEC_STRING)
 LADDERC_STR_DECLS(ladderc_wstr, IEC_WSTRING)

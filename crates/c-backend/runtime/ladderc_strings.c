@@ -11,11 +11,12 @@
  *   INSERT      P < 0: inserted at the start; P > LEN(IN1): appended
  *   DELETE      L < 0, P < 1 or P > LEN(IN) + 1: IN unchanged    L past the end: up to the end
  *   REPLACE     L < 0, P < 1 or P > LEN(IN1) + 1: IN1 unchanged  L past the end: up to the end
- *   FIND        0 when IN2 does not occur in IN1 or IN2 is empty (no flag). */
+ *   FIND        0 when IN2 does not occur in IN1 or IN2 is empty (no flag).
+ * MAX, MIN and LIMIT order strings as the comparisons do (ladderc_string_cmp). */
 #include "ladderc_rt.h"
 
 /* Units [from, from + n) of `in`, clamped to its length. */
-#define LADDERC_STR_FUNCS(P, S, U, SET)                                                               \
+#define LADDERC_STR_FUNCS(P, S, U, SET, CMP)                                                             \
     static S P##_slice(const S *in, int64_t from, int64_t n) {                                     \
         S r;                                                                                        \
         memset(&r, 0, sizeof r);                                                                    \
@@ -78,6 +79,9 @@
         memset(&none, 0, sizeof none);                                                              \
         return P##_replace(in, none, l, p);                                                         \
     }                                                                                               \
+    S P##_max(S a, S b) { return CMP(&a, &b) >= 0 ? a : b; }                                     \
+    S P##_min(S a, S b) { return CMP(&a, &b) <= 0 ? a : b; }                                     \
+    S P##_limit(S mn, S in, S mx) { return P##_min(P##_max(in, mn), mx); }                        \
     IEC_INT P##_find(S a, S b) {                                                                    \
         size_t i;                                                                                   \
         if (b.len == 0 || b.len > a.len) return 0;                                                  \
@@ -86,5 +90,5 @@
         return 0;                                                                                   \
     }
 
-LADDERC_STR_FUNCS(ladderc_str, IEC_STRING, char, ladderc_string_set)
-LADDERC_STR_FUNCS(ladderc_wstr, IEC_WSTRING, uint16_t, ladderc_wstring_set)
+LADDERC_STR_FUNCS(ladderc_str, IEC_STRING, char, ladderc_string_set, ladderc_string_cmp)
+LADDERC_STR_FUNCS(ladderc_wstr, IEC_WSTRING, uint16_t, ladderc_wstring_set, ladderc_wstring_cmp)

@@ -184,3 +184,40 @@ END_PROGRAM
     assert_eq!(column(&rows, "main.r"), q(&["été-été", "ab-ab"]));
     assert_eq!(column(&rows, "main.k"), ["4", "3"]);
 }
+
+#[test]
+fn max_min_limit_order_strings_like_the_comparisons() {
+    let (r, _, _) = run_body(
+        "  lo : STRING;\n  hi : STRING;\n  mx : STRING;\n  mn : STRING;",
+        "  LD s\n  MAX t, 'm'\n  ST mx\n  LD s\n  MIN t, 'm'\n  ST mn\n  LIMIT(MN := 'b', IN := s, MX := 'd')\n  ST r\n",
+        3,
+        "0,main.s,apple\n0,main.t,zoo\n1,main.s,cat\n1,main.t,ca\n2,main.s,dz\n",
+    );
+    assert_eq!(r, q(&["b", "cat", "d"]));
+    let b = build_src(
+        "PROGRAM main
+VAR
+  s : STRING;
+  t : STRING;
+  mx : STRING;
+  mn : STRING;
+END_VAR
+  LD s
+  MAX t, 'm'
+  ST mx
+  LD s
+  MIN t, 'm'
+  ST mn
+END_PROGRAM
+",
+    );
+    let rows = run(
+        &b,
+        2,
+        10.0,
+        "0,main.s,apple\n0,main.t,zoo\n1,main.s,cat\n1,main.t,ca\n",
+        &["main.mx", "main.mn"],
+    );
+    assert_eq!(column(&rows, "main.mx"), q(&["zoo", "m"]));
+    assert_eq!(column(&rows, "main.mn"), q(&["apple", "ca"]));
+}

@@ -465,7 +465,9 @@ impl Gen<'_> {
         let e = ty.elementary();
         let need = |n: usize| vals.len() >= n;
         match name {
-            n if super::strings::is_string_function(n) => self.string_call(span, n, &ty, vals, tys),
+            n if super::strings::is_string_function(n, &ty) => {
+                self.string_call(span, n, &ty, vals, tys)
+            }
             n if super::datetime::is_datetime_function(n) => {
                 self.datetime_call(span, n, vals, tys, result)
             }

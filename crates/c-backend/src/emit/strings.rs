@@ -1,23 +1,24 @@
 //! The standard character string functions (LEN, LEFT, RIGHT, MID, CONCAT, INSERT, DELETE, REPLACE,
-//! FIND) as calls of the runtime's `ladderc_str_*` (STRING) and `ladderc_wstr_*` (WSTRING) functions.
+//! FIND, and MAX, MIN, LIMIT on strings) as calls of the runtime's `ladderc_str_*` (STRING) and `ladderc_wstr_*` (WSTRING) functions.
 //!
 //! Input: the function's name, its generic string type and the already-evaluated C arguments with their
 //! IEC types. Output: one side-effect-free C expression (a string value, or `IEC_INT` for LEN and FIND).
 //! Invariants: lengths and positions are passed as `int64_t` (so every integer type keeps its value up
-//! to LINT range, negative values included: the runtime flags them); CONCAT of n inputs folds left over
-//! the binary runtime function; results are at most the 254-unit capacity and are truncated to the
+//! to LINT range, negative values included: the runtime flags them); CONCAT, MAX and MIN of n inputs
+//! fold left over the binary runtime function; results are at most the 254-unit capacity and are truncated to the
 //! declared length only where they are stored (the common store path).
 
 use super::Gen;
 use diagnostics::Span;
 use il_frontend::sema::Type;
 
-/// Whether `name` is one of the string functions this module emits.
-pub fn is_string_function(name: &str) -> bool {
+/// Whether this module emits `name` for generic type `ty`: the string functions, and MAX, MIN, LIMIT
+/// on strings.
+pub fn is_string_function(name: &str, ty: &Type) -> bool {
     matches!(
         name,
         "LEN" | "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE" | "FIND"
-    )
+    ) || (ty.is_string() && matches!(name, "MAX" | "MIN" | "LIMIT"))
 }
 
 impl Gen<'_> {
@@ -41,11 +42,12 @@ impl Gen<'_> {
         };
         let arity = match name {
             "LEN" => 1,
-            "LEFT" | "RIGHT" | "FIND" | "CONCAT" => 2,
-            "MID" | "DELETE" | "INSERT" => 3,
+            "LEFT" | "RIGHT" | "FIND" | "CONCAT" | "MAX" | "MIN" => 2,
+            "MID" | "DELETE" | "INSERT" | "LIMIT" => 3,
             _ => 4,
         };
-        if vals.len() < arity || (name != "CONCAT" && vals.len() != arity) {
+        let extensible = matches!(name, "CONCAT" | "MAX" | "MIN");
+        if vals.len() < arity || (!extensible && vals.len() != arity) {
             self.unsupported(span, format!("{name} with {} inputs", vals.len()));
             return None;
         }
@@ -69,10 +71,10 @@ impl Gen<'_> {
                 }
             })
             .collect();
-        if name == "CONCAT" {
+        if extensible {
             let mut acc = args[0].clone();
             for a in &args[1..] {
-                acc = format!("{prefix}_concat({acc}, {a})");
+                acc = format!("{prefix}_{f}({acc}, {a})");
             }
             return Some(acc);
         }
