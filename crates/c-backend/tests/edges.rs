@@ -189,3 +189,24 @@ END_PROGRAM
         ["0", "0", "0", "0", "0", "0", "0", "1", "1", "0", "0", "0", "0", "0", "0"]
     );
 }
+
+/// The generated C of an FB with edge-triggered inputs: hidden trigger members, the body proper and
+/// the `_BODY` wrapper.
+#[test]
+fn generated_c_of_edge_inputs() {
+    let (units, model, map) = frontend(COUNTER_FB);
+    let p = generate_with(
+        &units,
+        &model,
+        &map,
+        &Default::default(),
+        &Default::default(),
+    );
+    let h = p.file("program.h").unwrap();
+    let c = p.file("program.c").unwrap();
+    let strct = &h[h.find("typedef struct").unwrap()..h.find("} FB_edges;").unwrap() + 11];
+    let body = &c[c.find("static void FB_edges_BODY_LEVELS").unwrap()..];
+    let wrapper = body.find("void FB_edges_BODY(").unwrap();
+    let body = &body[..wrapper + body[wrapper..].find("\n}\n").unwrap() + 3];
+    insta::assert_snapshot!(format!("{strct}\n\n{body}"));
+}

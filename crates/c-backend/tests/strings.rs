@@ -221,3 +221,48 @@ END_PROGRAM
     assert_eq!(column(&rows, "main.mx"), q(&["zoo", "m"]));
     assert_eq!(column(&rows, "main.mn"), q(&["apple", "ca"]));
 }
+
+/// The generated C of the string functions (one call each, CONCAT folded).
+#[test]
+fn generated_c_of_string_functions() {
+    let src = "PROGRAM main
+VAR
+  s : STRING[10];
+  t : STRING;
+  w : WSTRING;
+  n : INT;
+  r : STRING[8];
+  rw : WSTRING;
+END_VAR
+  LD s
+  LEN
+  ST n
+  LD s
+  CONCAT t, 'x'
+  ST r
+  MID(IN := t, L := n, P := 2)
+  ST r
+  LD s
+  REPLACE t, 1, n
+  ST r
+  LD w
+  INSERT \"a\", 1
+  ST rw
+  LD w
+  FIND \"a\"
+  ST n
+END_PROGRAM
+";
+    let (units, model, map) = frontend(src);
+    let p = generate_with(
+        &units,
+        &model,
+        &map,
+        &Default::default(),
+        &Default::default(),
+    );
+    let c = p.file("program.c").unwrap();
+    let body = &c[c.find("void P_main_BODY").unwrap()..];
+    let body = &body[..body.find("\n}\n").unwrap() + 3];
+    insta::assert_snapshot!(body);
+}
