@@ -296,6 +296,9 @@ IEC_TIME ladderc_str_to_time(IEC_STRING s);
     IEC_INT P##_find(S a, S b);
 LADDERC_STR_DECLS(ladderc_str, IEC_STRING)
 LADDERC_STR_DECLS(ladderc_wstr, IEC_WSTRING)
+IEC_DATE ladderc_str_to_date(IEC_STRING s);
+IEC_TOD ladderc_str_to_tod(IEC_STRING s);
+IEC_DT ladderc_str_to_dt(IEC_STRING s);
 
 /* ------------------------------------------------------------------ process image access */
 /* Byte order from the profile: LADDERC_BIG_ENDIAN is 0 (little) or 1 (big). Loads and stores go byte by

@@ -92,3 +92,25 @@
 
 LADDERC_STR_FUNCS(ladderc_str, IEC_STRING, char, ladderc_string_set, ladderc_string_cmp)
 LADDERC_STR_FUNCS(ladderc_wstr, IEC_WSTRING, uint16_t, ladderc_wstring_set, ladderc_wstring_cmp)
+
+/* STRING_TO_DATE, STRING_TO_TOD, STRING_TO_DT: the IEC literal text (`D#2024-01-31`, `TOD#12:30:00`,
+ * `DT#2024-01-31-12:30:00`, long prefixes too), or the same without its prefix, spaces around ignored; a
+ * malformed text gives 0 (1970-01-01, midnight) and LADDERC_ERR_RANGE, as the other STRING_TO_*. */
+static int64_t ladderc_str_to_datetime(IEC_STRING s, ladderc_type t, const char *prefix) {
+    char buf[LADDERC_STRING_CAP + 8];
+    size_t b = 0, e = s.len;
+    int64_t v = 0;
+    while (b < e && (s.data[b] == ' ' || s.data[b] == '\t')) b++;
+    while (e > b && (s.data[e - 1] == ' ' || s.data[e - 1] == '\t')) e--;
+    memcpy(buf, s.data + b, e - b);
+    buf[e - b] = '\0';
+    if (ladderc_parse_value(t, buf, &v, NULL, 0) == 0) return v;
+    memmove(buf + strlen(prefix), buf, e - b + 1);
+    memcpy(buf, prefix, strlen(prefix));
+    if (ladderc_parse_value(t, buf, &v, NULL, 0) == 0) return v;
+    ladderc_errors |= LADDERC_ERR_RANGE;
+    return 0;
+}
+IEC_DATE ladderc_str_to_date(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_DATE, "D#"); }
+IEC_TOD ladderc_str_to_tod(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_TOD, "TOD#"); }
+IEC_DT ladderc_str_to_dt(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_DT, "DT#"); }

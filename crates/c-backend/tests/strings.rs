@@ -266,3 +266,63 @@ END_PROGRAM
     let body = &body[..body.find("\n}\n").unwrap() + 3];
     insta::assert_snapshot!(body);
 }
+
+#[test]
+fn string_to_date_tod_dt_read_iec_literals_with_or_without_prefix() {
+    let b = build_src(
+        "PROGRAM main
+VAR
+  s : STRING;
+  d : DATE;
+  tod : TOD;
+  dt : DT;
+  back : STRING;
+END_VAR
+  LD s
+  STRING_TO_DATE
+  ST d
+  DATE_TO_STRING
+  ST back
+  LD s
+  STRING_TO_TOD
+  ST tod
+  LD s
+  STRING_TO_DT
+  ST dt
+END_PROGRAM
+",
+    );
+    let stim = "0,main.s,D#2024-02-29\n1,main.s, 2024-03-01 \n2,main.s,TOD#12:30:15.5\n3,main.s,08:00:00\n4,main.s,DT#2024-01-31-23:59:59\n5,main.s,nonsense\n";
+    let rows = run(
+        &b,
+        6,
+        10.0,
+        stim,
+        &["main.d", "main.tod", "main.dt", "main.back"],
+    );
+    assert_eq!(
+        column(&rows, "main.d"),
+        [
+            "D#2024-02-29",
+            "D#2024-03-01",
+            "D#1970-01-01",
+            "D#1970-01-01",
+            "D#1970-01-01",
+            "D#1970-01-01"
+        ]
+    );
+    assert_eq!(column(&rows, "main.back")[0], "\"D#2024-02-29\"");
+    assert_eq!(
+        column(&rows, "main.tod"),
+        [
+            "TOD#00:00:00",
+            "TOD#00:00:00",
+            "TOD#12:30:15.5",
+            "TOD#08:00:00",
+            "TOD#00:00:00",
+            "TOD#00:00:00"
+        ]
+    );
+    assert_eq!(column(&rows, "main.dt")[4], "DT#2024-01-31-23:59:59");
+    assert_eq!(column(&rows, "main.dt")[5], "DT#1970-01-01-00:00:00");
+}

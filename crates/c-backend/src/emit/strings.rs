@@ -10,7 +10,17 @@
 
 use super::Gen;
 use diagnostics::Span;
-use il_frontend::sema::Type;
+use il_frontend::sema::{Elementary, Type};
+
+/// `STRING_TO_DATE`, `STRING_TO_TOD`, `STRING_TO_DT` of the C string value `v` (`t` is the target).
+pub fn string_to_datetime(v: &str, t: Elementary) -> String {
+    let f = match t {
+        Elementary::Date => "date",
+        Elementary::Tod => "tod",
+        _ => "dt",
+    };
+    format!("ladderc_str_to_{f}({v})")
+}
 
 /// Whether this module emits `name` for generic type `ty`: the string functions, and MAX, MIN, LIMIT
 /// on strings.
