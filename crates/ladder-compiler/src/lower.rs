@@ -1683,14 +1683,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                         ));
                     }
                     emit_function(name, form, ops, *span, out);
-                    // The store gets the first character of the block's tag: the block's whole span
-                    // is the span of the later reads of `result`, and sema records one instruction
-                    // per span.
-                    let store_span = Span {
-                        end: span.start.saturating_add(1).min(span.end),
-                        ..*span
-                    };
-                    out.push(simple(Op::St, false, Some(result.clone()), store_span));
+                    out.push(simple(Op::St, false, Some(result.clone()), *span));
                     if en.is_some() {
                         out.push(IlStmt::Label(Ident::new(skip_label, *span)));
                     }
@@ -1817,28 +1810,26 @@ fn emit_function(
     span: Span,
     out: &mut Vec<IlStmt>,
 ) {
-    // Sema records one instruction per span: the `LD` and the operators take the span of their input
-    // pin, the call the span of the block's type name, the `ST` after it the block's span.
     match form {
         FuncForm::Operator(op) => {
             let mut it = args.into_iter();
-            if let Some((pin, first)) = it.next() {
-                out.push(simple(Op::Ld, false, Some(first), pin.span));
+            if let Some((_, first)) = it.next() {
+                out.push(simple(Op::Ld, false, Some(first), span));
             }
             match op {
-                OperatorBlock::Not => out.push(simple(Op::Not, false, None, name.span)),
+                OperatorBlock::Not => out.push(simple(Op::Not, false, None, span)),
                 OperatorBlock::Move => {}
                 OperatorBlock::Arith(o) | OperatorBlock::Compare(o) | OperatorBlock::Logic(o) => {
-                    for (pin, a) in it {
-                        out.push(simple(*o, false, Some(a), pin.span));
+                    for (_, a) in it {
+                        out.push(simple(*o, false, Some(a), span));
                     }
                 }
             }
         }
         FuncForm::NonFormal => {
             let mut it = args.into_iter();
-            if let Some((pin, first)) = it.next() {
-                out.push(simple(Op::Ld, false, Some(first), pin.span));
+            if let Some((_, first)) = it.next() {
+                out.push(simple(Op::Ld, false, Some(first), span));
             }
             let rest: Vec<Operand> = it.map(|(_, a)| a).collect();
             out.push(instr(
@@ -1850,7 +1841,7 @@ fn emit_function(
                         CallArgs::NonFormal(rest)
                     },
                 },
-                name.span,
+                span,
             ));
         }
         FuncForm::Formal => {
