@@ -81,7 +81,7 @@ fn annex_f_stack_int_is_clean() {
         let start = src.find(text).unwrap_or_else(|| panic!("{text}")) as u32;
         m.instrs
             .iter()
-            .find(|(s, _)| s.start == start)
+            .find(|(_, i)| i.span.start == start)
             .unwrap_or_else(|| panic!("no instruction at {text}"))
             .1
     };

@@ -77,7 +77,7 @@ fn every_standard_function_is_callable_on_its_class() {
         let (m, d) = analyze_src(&src);
         assert!(d.is_empty(), "{src}\n{d}");
         let at = src.find(&format!("  {} ", f.name)).unwrap() as u32 + 2;
-        let info = m.instrs.iter().find(|(s, _)| s.start == at).unwrap().1;
+        let info = m.instrs.iter().find(|(_, i)| i.span.start == at).unwrap().1;
         match &info.callee {
             Some(Callee::Std { name, .. }) => assert_eq!(*name, f.name),
             other => panic!("{}: callee {other:?}", f.name),

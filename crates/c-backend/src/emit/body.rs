@@ -121,7 +121,7 @@ impl<'a> Gen<'a> {
 
     pub(super) fn info(&mut self, i: &Instruction) -> Option<&'a InstrInfo> {
         let model: &'a il_frontend::sema::Model = self.model;
-        match model.instr(i.span) {
+        match model.instr(i) {
             Some(info) => Some(info),
             None => {
                 self.report_once(
@@ -258,7 +258,7 @@ impl<'a> Gen<'a> {
         };
         let before = self
             .model
-            .instr(i.span)
+            .instr(i)
             .and_then(|x| x.cr_before.clone())
             .unwrap_or(Type::BOOL);
         let cr = if before.is_bool() {
@@ -595,7 +595,7 @@ impl<'a> Gen<'a> {
         if let Some(o) = operand {
             // the implicit LD that starts the nested list, typed as the first instruction expects
             let first = body.iter().find_map(|s| match s {
-                IlStmt::Instr(i) => self.model.instr(i.span).and_then(|x| x.cr_before.clone()),
+                IlStmt::Instr(i) => self.model.instr(i).and_then(|x| x.cr_before.clone()),
                 _ => None,
             });
             let ty = first

@@ -557,9 +557,9 @@ pub struct Pou {
     pub vars: Vec<Variable>,
     /// For each `VAR_EXTERNAL` (index into `vars`), the global it is bound to.
     pub externals: Vec<(usize, GlobalRef)>,
-    /// The spans of the body's instructions in source pre-order (a deferred `AND( ... )` before the
-    /// instructions of its nested list): keys into `Model::instrs` (stored once, there).
-    pub instrs: Vec<Span>,
+    /// The body's instructions in source pre-order (a deferred `AND( ... )` before the instructions of
+    /// its nested list): keys into `Model::instrs` (stored once, there).
+    pub instrs: Vec<InstrId>,
     /// Upper-case name -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time.
     #[serde(skip)]
     pub var_index: HashMap<String, usize>,
@@ -734,9 +734,23 @@ pub struct ArgBinding {
     pub source: ArgSource,
 }
 
-/// What sema knows about one instruction (`Model::instrs[&instruction.span]`).
+/// The identity of one instruction of the analysed units: its address. Spans cannot be the key: lowered
+/// code (ladder rungs, ST statements) gives several instructions the span of the one element they came
+/// from. A model is valid for exactly the units it was computed from (not for clones of them).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub struct InstrId(usize);
+
+impl InstrId {
+    pub fn of(instruction: &crate::ast::Instruction) -> Self {
+        InstrId(instruction as *const crate::ast::Instruction as usize)
+    }
+}
+
+/// What sema knows about one instruction (`Model::instrs[&InstrId::of(instruction)]`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct InstrInfo {
+    /// The instruction's span (for messages and tools; not unique).
+    pub span: Span,
     /// The current result before the instruction (`None`: undefined, e.g. at the start of a body).
     pub cr_before: Option<Type>,
     /// The current result after it (`None`: undefined, e.g. after an unconditional `JMP`/`RET`).
@@ -777,8 +791,8 @@ pub struct Model {
     pub configurations: Vec<Configuration>,
     /// `VAR_GLOBAL` blocks outside configurations.
     pub globals: Vec<Variable>,
-    /// Keyed by `ast::Instruction::span`.
-    pub instrs: HashMap<Span, InstrInfo>,
+    /// Keyed by the instruction's identity ([`InstrId::of`]).
+    pub instrs: HashMap<InstrId, InstrInfo>,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
     /// call arguments, indexes, CAL instances).
     pub names: HashMap<Span, NameRef>,
@@ -803,9 +817,13 @@ impl Model {
             .position(|t| t.name.eq_ignore_ascii_case(name))
             .map(|i| TypeId(i as u32))
     }
-    /// The info of an instruction, by its span.
-    pub fn instr(&self, span: Span) -> Option<&InstrInfo> {
-        self.instrs.get(&span)
+    /// The info of an instruction of the analysed units.
+    pub fn instr(&self, instruction: &crate::ast::Instruction) -> Option<&InstrInfo> {
+        self.instrs.get(&InstrId::of(instruction))
+    }
+    /// The info of an instruction by its identity (see [`Pou::instrs`]).
+    pub fn instr_by_id(&self, id: InstrId) -> Option<&InstrInfo> {
+        self.instrs.get(&id)
     }
     /// A global by reference.
     pub fn global(&self, r: GlobalRef) -> &Variable {
