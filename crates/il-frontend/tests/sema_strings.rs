@@ -28,16 +28,15 @@ fn string_results_carry_the_longest_input_length() {
     );
     let (m, d) = analyze_src(&src);
     assert!(d.is_empty(), "{d}");
-    let mut calls: Vec<(u32, Type)> = m
+    // `Pou::instrs` lists the instructions in source order.
+    let results: Vec<Type> = m.pous[0]
         .instrs
         .iter()
-        .filter_map(|(s, i)| match &i.callee {
-            Some(Callee::Std { result, .. }) => Some((s.start, result.clone())),
+        .filter_map(|id| match &m.instr_by_id(*id)?.callee {
+            Some(Callee::Std { result, .. }) => Some(result.clone()),
             _ => None,
         })
         .collect();
-    calls.sort_by_key(|c| c.0);
-    let results: Vec<Type> = calls.into_iter().map(|c| c.1).collect();
     assert_eq!(
         results,
         [
