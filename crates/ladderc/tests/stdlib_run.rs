@@ -91,12 +91,10 @@ fn corpus_std_test_has_no_unknown_function_left() {
     assert!(!stderr.contains("E1019"), "{stderr}");
 }
 
-/// With the two EQ blocks of that MUX replaced by FIND (INT, same inputs) in a temporary copy, the whole
-/// file checks clean.
-#[test]
-fn corpus_std_test_checks_clean_once_its_mux_is_well_typed() {
-    let text = std::fs::read_to_string(corpus("15_matiec_STD_TEST_tc6v1_fbd.xml")).unwrap();
-    let mut patched = text.clone();
+/// Corpus file 15 with the two EQ blocks of that MUX replaced by FIND (INT, same inputs), in a temporary
+/// copy.
+fn std_test_well_typed() -> String {
+    let mut patched = std::fs::read_to_string(corpus("15_matiec_STD_TEST_tc6v1_fbd.xml")).unwrap();
     for id in ["75", "76"] {
         let eq = format!(
             r#"<block localId="{id}" height="60" width="63" instanceName="" typeName="EQ">"#
@@ -104,14 +102,74 @@ fn corpus_std_test_checks_clean_once_its_mux_is_well_typed() {
         assert_eq!(patched.matches(&eq).count(), 1, "block {id}");
         patched = patched.replace(&eq, &eq.replace("\"EQ\"", "\"FIND\""));
     }
+    patched
+}
+
+/// With its MUX well typed, the whole file checks clean.
+#[test]
+fn corpus_std_test_checks_clean_once_its_mux_is_well_typed() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("std_test.xml");
-    std::fs::write(&file, patched).unwrap();
+    std::fs::write(&file, std_test_well_typed()).unwrap();
     let out = ladderc().arg("check").arg(&file).output().unwrap();
     assert_eq!(
         out.status.code(),
         Some(0),
         "{}",
         String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// And it runs: MAIN_TEST steps TEST_NB through the tests of TEST_STRINGS_OPS (IN1 = '3.456789',
+/// IN2 = '456', IN3 = 'abcdefgh', L = 3, P = 2), one per cycle. Its outputs are located STRINGs
+/// (`RES_TO_STR AT %QB0 : STRING`, overlapping `RES_FROM_STR AT %QW1`), which the C backend's memory
+/// model does not place (E2005), so the copy drops the `address` attributes.
+#[test]
+fn corpus_std_test_string_operations_run_cycle_by_cycle() {
+    let mut text = std_test_well_typed();
+    for a in [
+        "%QB0", "%QW1", "%IW0", "%QB3", "%QB4", "%QX7", "%QB10", "%QB2",
+    ] {
+        let attr = format!(r#" address="{a}""#);
+        assert_eq!(text.matches(&attr).count(), 1, "{a}");
+        text = text.replace(&attr, "");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("std_test.xml");
+    std::fs::write(&file, text).unwrap();
+    let trace = dir.path().join("trace.csv");
+    let out = ladderc()
+        .arg("run")
+        .arg(&file)
+        .args(["--cycles", "10", "--sanitize", "--trace"])
+        .arg(&trace)
+        .args([
+            "--watch",
+            "MAIN_INSTANCE.TEST_NB,MAIN_INSTANCE.STR_OPS_TEST_NAME,MAIN_INSTANCE.RES_STR_OPS,\
+             MAIN_INSTANCE.RES_FROM_STR",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&trace).unwrap();
+    assert_eq!(
+        text,
+        "cycle,time_ms,MAIN_INSTANCE.TEST_NB,MAIN_INSTANCE.STR_OPS_TEST_NAME,\
+         MAIN_INSTANCE.RES_STR_OPS,MAIN_INSTANCE.RES_FROM_STR\n\
+         0,0,1,\"TEST_STRING_OPS : IN1\",\"3.456789\",8\n\
+         1,10,2,\"TEST_STRING_OPS : IN2\",\"456\",3\n\
+         2,20,3,\"TEST_STRING_OPS : IN3\",\"abcdefgh\",1\n\
+         3,30,4,\"TEST_STRING_OPS : LEFT\",\"3.4\",3\n\
+         4,40,5,\"TEST_STRING_OPS : RIGHT\",\"789\",3\n\
+         5,50,6,\"TEST_STRING_OPS : MID\",\".45\",3\n\
+         6,60,7,\"TEST_STRING_OPS : CONCAT\",\"3.456789456abcdefgh\",3\n\
+         7,70,8,\"TEST_STRING_OPS : INSERT\",\"3.456456789\",3\n\
+         8,80,9,\"TEST_STRING_OPS : DELETE\",\"36789\",3\n\
+         9,90,10,\"TEST_STRING_OPS : REPLACE\",\"34566789\",3\n"
     );
 }
