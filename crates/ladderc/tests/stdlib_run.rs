@@ -173,3 +173,42 @@ fn corpus_std_test_string_operations_run_cycle_by_cycle() {
          9,90,10,\"TEST_STRING_OPS : REPLACE\",\"34566789\",3\n"
     );
 }
+
+/// FBD blocks of the typed counters and the named time functions (fixture `fbd_typed_counter.xml`:
+/// CTU_UDINT with PV 2, MUL_TIME(T, 2)).
+#[test]
+fn fbd_typed_counter_and_mul_time_blocks_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "0,main.T,T#250ms\n1,main.PULSE,1\n2,main.PULSE,0\n3,main.PULSE,1\n",
+    )
+    .unwrap();
+    let trace = dir.path().join("trace.csv");
+    let out = ladderc()
+        .arg("run")
+        .arg(fixture("fbd_typed_counter.xml"))
+        .args(["--cycles", "5", "--sanitize", "--stimulus"])
+        .arg(&stim)
+        .arg("--trace")
+        .arg(&trace)
+        .args(["--watch", "main.COUNT,main.DONE,main.T2"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        std::fs::read_to_string(&trace).unwrap(),
+        "cycle,time_ms,main.COUNT,main.DONE,main.T2\n\
+         0,0,0,0,T#500ms\n\
+         1,10,1,0,T#500ms\n\
+         2,20,1,0,T#500ms\n\
+         3,30,2,1,T#500ms\n\
+         4,40,2,1,T#500ms\n"
+    );
+}
