@@ -209,6 +209,7 @@ impl<'i> BodyLowering<'i> {
                     location: None,
                     ty: ty.clone(),
                     init: None,
+                    edge: None,
                     span,
                 });
             }
@@ -227,6 +228,7 @@ impl<'i> BodyLowering<'i> {
                 location: None,
                 ty,
                 init: None,
+                edge: None,
                 span,
             });
         }
@@ -244,6 +246,7 @@ impl<'i> BodyLowering<'i> {
                 location: None,
                 ty: TypeRef::Named(Ident::new(if falling { "F_TRIG" } else { "R_TRIG" }, span)),
                 init: None,
+                edge: None,
                 span,
             });
         }

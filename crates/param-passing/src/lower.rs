@@ -411,6 +411,7 @@ pub fn lower(
                         location: Some(addr),
                         ty: TypeRef::Named(id(ty, span)),
                         init: None,
+                        edge: None,
                         span,
                     })
                     .collect();

@@ -200,10 +200,23 @@ pub enum StdFb {
     Ctu,
     Ctd,
     Ctud,
+    /// The typed counters of edition 2/3: `CTU_DINT` ... `CTUD_ULINT` (PV and CV of that type).
+    CtuDint,
+    CtuLint,
+    CtuUdint,
+    CtuUlint,
+    CtdDint,
+    CtdLint,
+    CtdUdint,
+    CtdUlint,
+    CtudDint,
+    CtudLint,
+    CtudUdint,
+    CtudUlint,
 }
 
 impl StdFb {
-    pub const ALL: [StdFb; 10] = [
+    pub const ALL: [StdFb; 22] = [
         StdFb::RTrig,
         StdFb::FTrig,
         StdFb::Sr,
@@ -214,6 +227,18 @@ impl StdFb {
         StdFb::Ctu,
         StdFb::Ctd,
         StdFb::Ctud,
+        StdFb::CtuDint,
+        StdFb::CtuLint,
+        StdFb::CtuUdint,
+        StdFb::CtuUlint,
+        StdFb::CtdDint,
+        StdFb::CtdLint,
+        StdFb::CtdUdint,
+        StdFb::CtdUlint,
+        StdFb::CtudDint,
+        StdFb::CtudLint,
+        StdFb::CtudUdint,
+        StdFb::CtudUlint,
     ];
     pub fn name(self) -> &'static str {
         match self {
@@ -227,7 +252,42 @@ impl StdFb {
             StdFb::Ctu => "CTU",
             StdFb::Ctd => "CTD",
             StdFb::Ctud => "CTUD",
+            StdFb::CtuDint => "CTU_DINT",
+            StdFb::CtuLint => "CTU_LINT",
+            StdFb::CtuUdint => "CTU_UDINT",
+            StdFb::CtuUlint => "CTU_ULINT",
+            StdFb::CtdDint => "CTD_DINT",
+            StdFb::CtdLint => "CTD_LINT",
+            StdFb::CtdUdint => "CTD_UDINT",
+            StdFb::CtdUlint => "CTD_ULINT",
+            StdFb::CtudDint => "CTUD_DINT",
+            StdFb::CtudLint => "CTUD_LINT",
+            StdFb::CtudUdint => "CTUD_UDINT",
+            StdFb::CtudUlint => "CTUD_ULINT",
         }
+    }
+    /// For a counter, its kind (up, down, up/down) and the type of PV and CV.
+    pub fn counter(self) -> Option<(CounterKind, Elementary)> {
+        use CounterKind::{Down, Up, UpDown};
+        use Elementary as E;
+        Some(match self {
+            StdFb::Ctu => (Up, E::Int),
+            StdFb::CtuDint => (Up, E::Dint),
+            StdFb::CtuLint => (Up, E::Lint),
+            StdFb::CtuUdint => (Up, E::Udint),
+            StdFb::CtuUlint => (Up, E::Ulint),
+            StdFb::Ctd => (Down, E::Int),
+            StdFb::CtdDint => (Down, E::Dint),
+            StdFb::CtdLint => (Down, E::Lint),
+            StdFb::CtdUdint => (Down, E::Udint),
+            StdFb::CtdUlint => (Down, E::Ulint),
+            StdFb::Ctud => (UpDown, E::Int),
+            StdFb::CtudDint => (UpDown, E::Dint),
+            StdFb::CtudLint => (UpDown, E::Lint),
+            StdFb::CtudUdint => (UpDown, E::Udint),
+            StdFb::CtudUlint => (UpDown, E::Ulint),
+            _ => return None,
+        })
     }
     /// Case-insensitive lookup; `CTU_INT` etc. map to the INT counters.
     pub fn from_name(name: &str) -> Option<StdFb> {
@@ -240,6 +300,14 @@ impl StdFb {
         };
         StdFb::ALL.into_iter().find(|f| f.name() == up)
     }
+}
+
+/// The three counter families (CTU, CTD, CTUD), whatever their count type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum CounterKind {
+    Up,
+    Down,
+    UpDown,
 }
 
 /// The type of an FB instance.
@@ -438,6 +506,9 @@ pub struct Variable {
     /// The declared initial value (after a user type's own default when the declaration gives none:
     /// `None` means the type's default, zero/FALSE/first enum value/empty string).
     pub init: Option<ConstValue>,
+    /// `R_EDGE` / `F_EDGE` of a BOOL input of a function block (`None` anywhere else; misplaced
+    /// qualifiers are reported, E1100/E1101, and dropped).
+    pub edge: Option<crate::ast::Edge>,
 }
 
 impl Variable {
