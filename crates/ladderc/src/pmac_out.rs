@@ -417,6 +417,83 @@ pub fn program(
         }
     }
 }
+/// The run's motion as a sampled trajectory: every configured axis's `axis.<name>.position`, `.velocity`
+/// and `.acceleration` columns of the trace CSV, one sample per row, `cycle_ms` apart (row 0 at t = 0).
+/// `Err`: a missing column or an unreadable value (E7100).
+pub fn trajectory_from_trace(
+    csv: &str,
+    axes: &AxisConfig,
+    cycle_ms: f64,
+) -> Result<pmac_backend::model::Trajectory, Diagnostic> {
+    use pmac_backend::model::{Sample, Trajectory};
+    let fail = |m: String| {
+        Diagnostic::error(code::E7100, m).with_hint(
+            "the trace needs axis.<name>.position, .velocity and .acceleration of every configured axis",
+        )
+    };
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();
+    let mut cols = Vec::new();
+    for a in &axes.axes {
+        for sig in ["position", "velocity", "acceleration"] {
+            let name = format!("axis.{}.{sig}", a.name);
+            let k = header
+                .iter()
+                .position(|h| h.eq_ignore_ascii_case(&name))
+                .ok_or_else(|| fail(format!("the trace has no column `{name}`")))?;
+            cols.push(k);
+        }
+    }
+    let mut traj = Trajectory {
+        cycle_s: cycle_ms / 1000.0,
+        axes: vec![Vec::new(); axes.axes.len()],
+    };
+    for (row, l) in lines.enumerate() {
+        let cells: Vec<&str> = l.split(',').collect();
+        let value = |k: usize| -> Result<f64, Diagnostic> {
+            cells
+                .get(k)
+                .and_then(|c| c.trim().parse::<f64>().ok())
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| {
+                    fail(format!(
+                        "trace row {}: column {} is not a number",
+                        row + 1,
+                        k + 1
+                    ))
+                })
+        };
+        for (i, samples) in traj.axes.iter_mut().enumerate() {
+            samples.push(Sample {
+                p: value(cols[3 * i])?,
+                v: value(cols[3 * i + 1])?,
+                a: value(cols[3 * i + 2])?,
+            });
+        }
+    }
+    Ok(traj)
+}
+
+/// `--pmac-pvt FILE`: the run's trace as a PVT rotary-buffer script (segments of `segment_ms`).
+pub fn write_pvt(
+    csv: &str,
+    axes: &AxisConfig,
+    cycle_ms: f64,
+    dialect: Dialect,
+    segment_ms: f64,
+    path: &std::path::Path,
+) -> Result<(), Diagnostic> {
+    let traj = trajectory_from_trace(csv, axes, cycle_ms)?;
+    let opts = pmac_backend::pvt::PvtOptions {
+        dialect,
+        segment_ms,
+        ..Default::default()
+    };
+    pmac_backend::pvt::write_file(&coord_system(axes), &traj, &opts, path)
+        .map(|_| ())
+        .map_err(|e| e.into_diagnostic())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
