@@ -614,7 +614,7 @@ fn run_program(
             *segment_ms,
             path,
         ) {
-            emit(&SourceMap::new(), &[d], format);
+            emit(&SourceMap::new(), &[*d], format);
             if let Some(tmp) = &run.trace {
                 let _ = std::fs::remove_file(tmp);
             }

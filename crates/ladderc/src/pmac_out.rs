@@ -424,12 +424,12 @@ pub fn trajectory_from_trace(
     csv: &str,
     axes: &AxisConfig,
     cycle_ms: f64,
-) -> Result<pmac_backend::model::Trajectory, Diagnostic> {
+) -> Result<pmac_backend::model::Trajectory, Box<Diagnostic>> {
     use pmac_backend::model::{Sample, Trajectory};
     let fail = |m: String| {
-        Diagnostic::error(code::E7100, m).with_hint(
+        Box::new(Diagnostic::error(code::E7100, m).with_hint(
             "the trace needs axis.<name>.position, .velocity and .acceleration of every configured axis",
-        )
+        ))
     };
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();
@@ -450,7 +450,7 @@ pub fn trajectory_from_trace(
     };
     for (row, l) in lines.enumerate() {
         let cells: Vec<&str> = l.split(',').collect();
-        let value = |k: usize| -> Result<f64, Diagnostic> {
+        let value = |k: usize| -> Result<f64, Box<Diagnostic>> {
             cells
                 .get(k)
                 .and_then(|c| c.trim().parse::<f64>().ok())
@@ -482,7 +482,7 @@ pub fn write_pvt(
     dialect: Dialect,
     segment_ms: f64,
     path: &std::path::Path,
-) -> Result<(), Diagnostic> {
+) -> Result<(), Box<Diagnostic>> {
     let traj = trajectory_from_trace(csv, axes, cycle_ms)?;
     let opts = pmac_backend::pvt::PvtOptions {
         dialect,
@@ -491,7 +491,7 @@ pub fn write_pvt(
     };
     pmac_backend::pvt::write_file(&coord_system(axes), &traj, &opts, path)
         .map(|_| ())
-        .map_err(|e| e.into_diagnostic())
+        .map_err(|e| Box::new(e.into_diagnostic()))
 }
 
 #[cfg(test)]
