@@ -159,6 +159,35 @@ fn series_of(columns: &[(String, Vec<f64>)], signal: &str) -> Vec<(String, Vec<f
         .collect()
 }
 
+/// At most about [`MAX_POINTS`] points of a series: per bucket of rows its first, smallest and largest
+/// value (in time order), so that steps and peaks stay visible; non-finite values are left out.
+fn thin(time: &[f64], v: &[f64]) -> Vec<(f64, f64)> {
+    let n = time.len().min(v.len());
+    let bucket = n.div_ceil(MAX_POINTS / 3).max(1);
+    let mut out = Vec::new();
+    let mut start = 0;
+    while start < n {
+        let end = (start + bucket).min(n);
+        let mut rows: Vec<usize> = (start..end).filter(|&k| v[k].is_finite()).collect();
+        if let (Some(&first), Some(&lo), Some(&hi)) = (
+            rows.first(),
+            rows.iter().min_by(|a, b| v[**a].total_cmp(&v[**b])),
+            rows.iter().max_by(|a, b| v[**a].total_cmp(&v[**b])),
+        ) {
+            rows = vec![first, lo, hi, end - 1];
+            rows.retain(|k| v[*k].is_finite());
+            rows.sort_unstable();
+            rows.dedup();
+            out.extend(rows.into_iter().map(|k| (time[k], v[k])));
+        }
+        start = end;
+    }
+    out
+}
+
+/// Points per series drawn at most (about).
+const MAX_POINTS: usize = 6000;
+
 /// `|v|` per row over the axes' velocity columns.
 fn path_speed(velocities: &[(String, Vec<f64>)]) -> Vec<f64> {
     let rows = velocities.first().map_or(0, |(_, v)| v.len());
@@ -218,12 +247,7 @@ pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
             let color = Palette99::pick(k).to_rgba();
             chart
                 .draw_series(std::iter::once(PathElement::new(
-                    t.time_s
-                        .iter()
-                        .copied()
-                        .zip(v.iter().copied())
-                        .filter(|p| p.1.is_finite())
-                        .collect::<Vec<_>>(),
+                    thin(&t.time_s, v),
                     color.stroke_width(2),
                 )))
                 .map_err(|x| e(&x))?
@@ -383,5 +407,21 @@ mod tests {
         );
         assert!(text.contains("end b"));
         assert!(text.contains("path speed |v|"));
+    }
+
+    #[test]
+    fn long_series_are_thinned_keeping_peaks_and_ends() {
+        let n = 200_000;
+        let time: Vec<f64> = (0..n).map(|k| k as f64).collect();
+        let mut v = vec![0.0; n];
+        v[123_457] = 5.0; // a one-row spike
+        let pts = thin(&time, &v);
+        assert!(pts.len() <= MAX_POINTS * 4 / 3 + 4, "{}", pts.len());
+        assert!(pts.contains(&(123_457.0, 5.0)));
+        assert_eq!(pts.first(), Some(&(0.0, 0.0)));
+        assert_eq!(pts.last(), Some(&((n - 1) as f64, 0.0)));
+        assert!(pts.windows(2).all(|w| w[0].0 < w[1].0));
+        // short series are drawn whole
+        assert_eq!(thin(&time[..10], &v[..10]).len(), 10);
     }
 }
