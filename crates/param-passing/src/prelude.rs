@@ -36,6 +36,15 @@ pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
     ("TMConstantVelocity", 2),
     ("TMCornerDistance", 3),
     ("TMMaxCornerDeviation", 4),
+    // Part 4: MC_COORD_SYSTEM, MC_CIRC_MODE, MC_CIRC_PATHCHOICE
+    ("mcACS", 0),
+    ("mcMCS", 1),
+    ("mcPCS", 2),
+    ("mcBorder", 0),
+    ("mcCenter", 1),
+    ("mcRadius", 2),
+    ("mcClockwise", 0),
+    ("mcCounterClockwise", 1),
 ];
 
 /// The field of a reference type that carries the engine index (`AXIS_REF` -> `AxisNo`).
@@ -46,8 +55,9 @@ pub fn index_field(iec_type: &str) -> &'static str {
         .map_or("AxisNo", |(_, f)| f)
 }
 
-/// The IEC type a parameter has in the declarations (MC_* enumerations are USINT).
-fn declared_type(p: &Param) -> String {
+/// The IEC type of a parameter's value (of each element for an array) in the declarations (MC_*
+/// enumerations are USINT).
+pub fn declared_type(p: &Param) -> String {
     if p.class == TypeClass::Byte && p.iec_type.to_ascii_uppercase().starts_with("MC_") {
         "USINT".into()
     } else {
@@ -55,10 +65,16 @@ fn declared_type(p: &Param) -> String {
     }
 }
 
+/// The full declared type: `LREAL`, or `ARRAY [0..5] OF LREAL` for an array parameter.
+fn full_type(p: &Param) -> String {
+    p.iec_declared(&declared_type(p))
+}
+
 fn init(p: &Param) -> String {
-    match &p.default {
-        Some(d) => format!(" := {d}"),
-        None => String::new(),
+    match (&p.default, p.array) {
+        (Some(d), Some(a)) => format!(" := [{}]", vec![d.as_str(); a.len as usize].join(", ")),
+        (Some(d), None) => format!(" := {d}"),
+        (None, _) => String::new(),
     }
 }
 
@@ -99,7 +115,7 @@ fn fb_declaration(t: &Template, out: &mut String) {
         }
         let _ = writeln!(out, "{kw}");
         for p in ps {
-            let _ = writeln!(out, "    {} : {}{};", p.name, declared_type(p), init(p));
+            let _ = writeln!(out, "    {} : {}{};", p.name, full_type(p), init(p));
         }
         out.push_str("END_VAR\n");
     }
@@ -116,7 +132,7 @@ pub fn after_lowering(lib: &Library) -> String {
     for t in lib.templates() {
         let _ = writeln!(out, "    {} : STRUCT", t.block);
         for p in t.params.iter().filter(|p| p.direction != Direction::InOut) {
-            let _ = writeln!(out, "        {} : {}{};", p.name, declared_type(p), init(p));
+            let _ = writeln!(out, "        {} : {}{};", p.name, full_type(p), init(p));
         }
         out.push_str("    END_STRUCT;\n");
     }
