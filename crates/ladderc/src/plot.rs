@@ -7,8 +7,9 @@
 //! ([`events`]): a block's start (rising `Active`, or rising `Busy` when the block has no `Active`
 //! column) as a green vertical line, a junction (one block ends, by `Done` or `CommandAborted`, in the
 //! cycle another starts, or the next cycle) as a blue one, a block's end that no other block continues as a red one; each
-//! line is labelled with the block and, for a junction, the path speed there. Invariant: only the trace
-//! is read.
+//! line is labelled with the block and, for a junction, the path speed there. Block outputs of a row
+//! were computed in the scan before that cycle's engine step, so an event seen in row k is drawn at row
+//! k-1's time and speed (the axis state the block reacted to). Invariant: only the trace is read.
 
 use plotters::prelude::*;
 use std::path::Path;
@@ -256,7 +257,9 @@ pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
         }
         let speed = path_speed(&series_of(&t.columns, "velocity"));
         for (n, ev) in evs.iter().enumerate() {
-            let k = ev.row();
+            // a row's block outputs were computed by the scan before that cycle's engine step, i.e. from
+            // the axis state of the row before: the event happened there
+            let k = ev.row().saturating_sub(1);
             let x = t.time_s[k];
             let (color, label) = match ev {
                 Event::Start { block, .. } => (GREEN, format!("start {}", short(block))),
