@@ -13,7 +13,7 @@ use crate::template::{Direction, Param, Template, TypeClass};
 use crate::tm::{self, TmLayout};
 use diagnostics::{code, Diagnostic, Diagnostics, Span};
 use il_frontend::ast::*;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 /// How block calls are lowered.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -389,7 +389,9 @@ pub fn lower(
                 site: &mut site,
                 synthesized: &mut out.synthesized,
                 counts: HashMap::new(),
+                used_spans: HashSet::new(),
             };
+            instruction_spans(&pou.body, &mut cx.used_spans);
             let body = std::mem::take(&mut pou.body);
             pou.body = cx.lower_body(body);
             let views = std::mem::take(&mut cx.used_views);
@@ -531,6 +533,7 @@ fn check_call(
     }
 }
 
+/// The fields of instance `inst` that `body` stores into (whole, or an element of an array field).
 fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
     let mut out = Vec::new();
     for s in body {
@@ -540,8 +543,11 @@ fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
                 op: Op::St | Op::S | Op::R,
                 operand: Some(Operand::Var(v)),
                 ..
-            } if v.base == *inst && v.accessors.len() == 1 => {
-                if let Accessor::Field(f) = &v.accessors[0] {
+            } if v.base == *inst => {
+                // `ST mv.Position` or, for an array input, `ST mv.Position[0]`
+                if let [Accessor::Field(f)] | [Accessor::Field(f), Accessor::Index(_)] =
+                    v.accessors.as_slice()
+                {
                     out.push(f.name.clone());
                 }
             }
@@ -563,6 +569,8 @@ struct PouLowering<'a> {
     site: &'a mut usize,
     synthesized: &'a mut Vec<Synthesized>,
     counts: HashMap<String, usize>,
+    /// Instruction spans already taken in this POU (see [`distinct_spans`]).
+    used_spans: HashSet<Span>,
 }
 
 impl PouLowering<'_> {
@@ -616,7 +624,7 @@ impl PouLowering<'_> {
                     if guarded {
                         out.push(IlStmt::Label(id(&skip, span)));
                     }
-                    distinct_spans(&mut out[start..], span);
+                    distinct_spans(&mut out[start..], span, &mut self.used_spans);
                     let n = out[start..]
                         .iter()
                         .filter(|s| matches!(s, IlStmt::Instr(_)))
@@ -879,28 +887,48 @@ impl PouLowering<'_> {
 
 /// Gives every instruction lowered from one call its own span inside the call's span: the semantic model
 /// keys its per-instruction information by span, so instructions sharing one would share (and overwrite)
-/// their types. The spans are `(start + a, end - b)` with `a + b <= len`, enumerated in order; beyond
-/// those (a call shorter than its lowering, impossible for real calls) spans repeat the whole call.
-fn distinct_spans(stmts: &mut [IlStmt], call: Span) {
+/// their types. The spans are `(start + a, end - b)` with `a + b <= len`, enumerated in order, skipping
+/// every span in `used` (the POU's other instructions and earlier lowered calls: a ladder network can give
+/// several block calls the same span); the chosen ones are added to `used`. Beyond those (a call shorter
+/// than its lowering, impossible for real calls) spans repeat the whole call.
+fn distinct_spans(stmts: &mut [IlStmt], call: Span, used: &mut HashSet<Span>) {
     let len = call.end.saturating_sub(call.start);
     let (mut a, mut b) = (0u32, 0u32);
-    for s in stmts {
-        let IlStmt::Instr(i) = s else { continue };
-        i.span = if a + b <= len {
-            Span {
+    let mut next = || -> Option<Span> {
+        while a + b <= len {
+            let s = Span {
                 file: call.file,
                 start: call.start + a,
                 end: call.end - b,
+            };
+            if a == 0 {
+                a = b + 1;
+                b = 0;
+            } else {
+                a -= 1;
+                b += 1;
             }
-        } else {
-            call
-        };
-        if a == 0 {
-            a = b + 1;
-            b = 0;
-        } else {
-            a -= 1;
-            b += 1;
+            if !used.contains(&s) {
+                used.insert(s);
+                return Some(s);
+            }
+        }
+        None
+    };
+    for s in stmts {
+        let IlStmt::Instr(i) = s else { continue };
+        i.span = next().unwrap_or(call);
+    }
+}
+
+/// The spans of every instruction of `body` (deferred bodies included).
+fn instruction_spans(body: &[IlStmt], out: &mut HashSet<Span>) {
+    for s in body {
+        if let IlStmt::Instr(i) = s {
+            out.insert(i.span);
+            if let InstrKind::Deferred { body, .. } = &i.kind {
+                instruction_spans(body, out);
+            }
         }
     }
 }

@@ -19,6 +19,10 @@ pub const REFERENCE_TYPES: &[(&str, &str)] = &[
     ("MC_CAM_ID", "CamId"),
 ];
 
+/// Other names of reference types (`AXIS_GROUP_REF` is a common spelling of PLCopen's `AXES_GROUP_REF`):
+/// declared as IEC type aliases, so values of both names are interchangeable.
+pub const REFERENCE_ALIASES: &[(&str, &str)] = &[("AXIS_GROUP_REF", "AXES_GROUP_REF")];
+
 /// PLCopen enumeration values, as USINT constants.
 pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
     ("mcAborting", 0),
@@ -49,6 +53,10 @@ pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
 
 /// The field of a reference type that carries the engine index (`AXIS_REF` -> `AxisNo`).
 pub fn index_field(iec_type: &str) -> &'static str {
+    let iec_type = REFERENCE_ALIASES
+        .iter()
+        .find(|(a, _)| a.eq_ignore_ascii_case(iec_type))
+        .map_or(iec_type, |(_, t)| t);
     REFERENCE_TYPES
         .iter()
         .find(|(t, _)| t.eq_ignore_ascii_case(iec_type))
@@ -82,6 +90,9 @@ fn common(out: &mut String) {
     out.push_str("TYPE\n");
     for (t, f) in REFERENCE_TYPES {
         let _ = writeln!(out, "    {t} : STRUCT {f} : UDINT; END_STRUCT;");
+    }
+    for (alias, t) in REFERENCE_ALIASES {
+        let _ = writeln!(out, "    {alias} : {t};");
     }
     out.push_str("END_TYPE\n\nVAR_GLOBAL CONSTANT\n");
     for (n, v) in ENUM_CONSTANTS {

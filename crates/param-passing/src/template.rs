@@ -81,9 +81,10 @@ pub fn c_type_of(iec_type: &str, class: TypeClass) -> Option<&'static str> {
         (TypeClass::Real, "REAL") => "float",
         (TypeClass::Lreal, "LREAL") => "double",
         (TypeClass::Lword, "LWORD" | "ULINT") => "uint64_t",
-        (TypeClass::Struct, "AXIS_REF" | "AXES_GROUP_REF" | "MC_CAM_REF" | "MC_CAM_ID") => {
-            "uint32_t"
-        }
+        (
+            TypeClass::Struct,
+            "AXIS_REF" | "AXES_GROUP_REF" | "AXIS_GROUP_REF" | "MC_CAM_REF" | "MC_CAM_ID",
+        ) => "uint32_t",
         _ => return None,
     };
     Some(c)

@@ -355,3 +355,59 @@ fn a_single_value_bound_to_an_array_is_refused_before_any_code() {
     assert!(lowered.units.is_empty() && lowered.synthesized.is_empty());
     insta::assert_snapshot!(short(&s.map, s.diags));
 }
+
+#[test]
+fn axis_group_ref_is_another_name_of_axes_group_ref() {
+    let program = ARRAY_PROGRAM.replace(
+        "g : AXES_GROUP_REF := (GroupNo := 0);",
+        "g : AXIS_GROUP_REF := (GroupNo := 2);",
+    );
+    let mut s = setup(&program);
+    assert!(s.diags.is_empty(), "{}", short(&s.map, s.diags));
+    let pre = prelude::before_lowering(&s.lib);
+    assert!(
+        pre.contains("    AXIS_GROUP_REF : AXES_GROUP_REF;\n"),
+        "{pre}"
+    );
+    let lowered = lower::lower(&s.units[1..], &s.lib, Strategy::Il, &WINDOW, &mut s.diags);
+    assert!(s.diags.is_empty(), "{}", short(&s.map, s.diags));
+    let il = il_frontend::print::unit(&lowered.units[0]);
+    assert!(
+        il.contains("    LD g.GroupNo\n    ST TM__MC_ArrayDemo__AxesGroup\n"),
+        "{il}"
+    );
+}
+
+#[test]
+fn a_required_array_input_may_be_stored_into_the_instance_element_by_element() {
+    let program = ARRAY_PROGRAM.replace(
+        "    CAL d(AxesGroup := g, Execute := go, Target := t, Echo => e, Sum => s)",
+        "    LD 4.0\n    ST d.Target[2]\n    CAL d(AxesGroup := g, Execute := go, Echo => e, Sum => s)",
+    );
+    let mut s = setup(&program);
+    assert!(s.diags.is_empty(), "{}", short(&s.map, s.diags));
+    let lowered = lower::lower(
+        &s.units[1..],
+        &s.lib,
+        Strategy::Template,
+        &WINDOW,
+        &mut s.diags,
+    );
+    assert!(s.diags.is_empty(), "{}", short(&s.map, s.diags));
+    let sources: Vec<String> = lowered.synthesized[0]
+        .head
+        .iter()
+        .filter(|h| h.local.starts_with("Tgt_"))
+        .map(|h| op(&h.source))
+        .collect();
+    assert_eq!(sources, ["d.Target[1]", "d.Target[2]", "d.Target[3]"]);
+    // without any store it is still missing
+    let program = ARRAY_PROGRAM.replace("Target := t, ", "");
+    let mut s = setup(&program);
+    lower::lower(&s.units[1..], &s.lib, Strategy::Il, &WINDOW, &mut s.diags);
+    let out = short(&s.map, s.diags);
+    assert!(
+        out.contains("E4023") && out.contains("required input `Target`"),
+        "{out}"
+    );
+}

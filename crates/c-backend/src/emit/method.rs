@@ -243,3 +243,37 @@ impl Gen<'_> {
         Some(format!("{}(self);", m.name))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn array_element_locals_are_recognised_by_their_index() {
+        assert_eq!(array_element("Pos_1[3]"), Some(("Pos_1", 3)));
+        assert_eq!(array_element("Pos_1[0]"), Some(("Pos_1", 0)));
+        assert_eq!(array_element("Pos_1"), None);
+        assert_eq!(array_element("Pos_1[k]"), None);
+        assert_eq!(array_element("1x[0]"), None);
+        assert_eq!(array_element("a-b[0]"), None);
+    }
+
+    #[test]
+    fn an_array_local_is_declared_with_its_elements_in_order() {
+        let mut c = String::new();
+        flush_array(&mut c, None);
+        assert!(c.is_empty());
+        flush_array(
+            &mut c,
+            Some((
+                "Pos_1".into(),
+                "double".into(),
+                vec!["(double)a".into(), "(double)b".into()],
+            )),
+        );
+        assert_eq!(
+            c,
+            "    double Pos_1[2] = {\n        (double)a,\n        (double)b\n    };\n"
+        );
+    }
+}
