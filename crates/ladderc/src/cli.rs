@@ -605,7 +605,18 @@ fn run_program(
             Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
             None => out.stdout.clone(),
         };
-        let dialect = c.pmac_dialect.parse().unwrap_or_default();
+        let dialect = match c.pmac_dialect.parse() {
+            Ok(d) => d,
+            Err(e) => {
+                let d = Diagnostic::error(diagnostics::code::E9002, format!("--pmac-dialect: {e}"))
+                    .with_hint("use turbo or power");
+                emit(&SourceMap::new(), &[d], format);
+                if let Some(tmp) = &run.trace {
+                    let _ = std::fs::remove_file(tmp);
+                }
+                return EXIT_DIAGNOSTICS;
+            }
+        };
         if let Err(d) = crate::pmac_out::write_pvt(
             &text,
             &lowered.axes,

@@ -440,3 +440,32 @@ fn pmac_md_variant_moves_take_50_5_76_5_and_68_0_seconds() {
         assert!(r.pmac.contains(part), "{part}\n{}", r.pmac);
     }
 }
+
+#[test]
+fn a_bad_dialect_for_the_pvt_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let pvt = dir.path().join("m.pvt");
+    let out = ladderc()
+        .arg("run")
+        .arg(repo().join("examples/motion/move.il"))
+        .args([
+            "--cycles",
+            "10",
+            "--watch",
+            "main.at_100",
+            "--pmac-dialect",
+            "umac",
+        ])
+        .arg("--pmac-pvt")
+        .arg(&pvt)
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stderr).contains("E9002"));
+    assert!(!pvt.exists());
+}
