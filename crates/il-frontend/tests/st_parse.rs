@@ -33,7 +33,11 @@ fn args(a: &[Arg]) -> String {
                 ArgDir::Input if a.name.is_some() => format!("{n} := {}", expr(&a.value)),
                 ArgDir::Input => expr(&a.value),
                 ArgDir::Output { negated } => {
-                    format!("{}{n} => {}", if negated { "NOT " } else { "" }, expr(&a.value))
+                    format!(
+                        "{}{n} => {}",
+                        if negated { "NOT " } else { "" },
+                        expr(&a.value)
+                    )
                 }
             }
         })
@@ -49,9 +53,10 @@ fn place(p: &Place) -> String {
     for a in &p.accessors {
         match a {
             Accessor::Field(f) => s.push_str(&format!(".{}", f.name)),
-            Accessor::Index(ix) => {
-                s.push_str(&format!("[{}]", ix.iter().map(expr).collect::<Vec<_>>().join(", ")))
-            }
+            Accessor::Index(ix) => s.push_str(&format!(
+                "[{}]",
+                ix.iter().map(expr).collect::<Vec<_>>().join(", ")
+            )),
         }
     }
     s
@@ -116,7 +121,9 @@ fn stmts(out: &mut String, list: &[Stmt], depth: usize) {
                     control.name,
                     expr(from),
                     expr(to),
-                    by.as_ref().map(|b| format!(" by {}", expr(b))).unwrap_or_default()
+                    by.as_ref()
+                        .map(|b| format!(" by {}", expr(b)))
+                        .unwrap_or_default()
                 ));
                 stmts(out, body, depth + 1);
             }
@@ -218,9 +225,7 @@ fn unclosed_blocks_and_stray_keywords() {
 
 #[test]
 fn unsupported_syntax_is_named() {
-    insta::assert_snapshot!(parse(
-        "y := p^;\nb := w.3;\nq := tmr.x(1);\nok := 1;"
-    ));
+    insta::assert_snapshot!(parse("y := p^;\nb := w.3;\nq := tmr.x(1);\nok := 1;"));
 }
 
 #[test]

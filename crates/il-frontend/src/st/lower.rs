@@ -184,7 +184,8 @@ impl<'d> PouLowering<'d> {
     }
 
     /// Lowers a condition (a BOOL expression): the instructions leave it in the current result.
-    /// A condition whose type is known and not BOOL is reported (E3105).
+    /// A condition whose type is known and not BOOL is reported (E3105). (IF/WHILE/UNTIL conditions
+    /// need no such check: the conditional jump they lower to is checked by IL sema.)
     pub fn condition(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
         self.check_bool(e, "condition", diags);
         self.expression(e, diags)
@@ -311,7 +312,6 @@ impl<'d> PouLowering<'d> {
                     } else {
                         self.fresh_label("ELSE", b.span)
                     };
-                    self.check_bool(&b.cond, "IF condition", diags);
                     self.poisoned = false;
                     self.value(&b.cond, out, diags);
                     out.push(jump(Condition::IfFalse, &next, b.cond.span));
@@ -344,7 +344,6 @@ impl<'d> PouLowering<'d> {
                 let test = self.fresh_label("WHILE", span);
                 let end = self.fresh_label("END_WHILE", span);
                 out.push(IlStmt::Label(test.clone()));
-                self.check_bool(cond, "WHILE condition", diags);
                 self.poisoned = false;
                 self.value(cond, out, diags);
                 out.push(jump(Condition::IfFalse, &end, cond.span));
@@ -371,7 +370,6 @@ impl<'d> PouLowering<'d> {
                 self.stmt_list(body, out, diags);
                 self.loops.pop();
                 out.push(IlStmt::Label(cont));
-                self.check_bool(until, "UNTIL condition", diags);
                 self.poisoned = false;
                 self.value(until, out, diags);
                 out.push(jump(Condition::IfFalse, &top, until.span));

@@ -21,8 +21,7 @@ pub fn compile(decls: &str, pou: &str, body: &str) -> (String, String) {
     for item in &mut unit.items {
         if let LibraryElement::Pou(p) = item {
             if p.name.is(pou) {
-                let (il, temps) =
-                    st::compile_body(file, body, base, &d, p, p.span, &mut diags);
+                let (il, temps) = st::compile_body(file, body, base, &d, p, p.span, &mut diags);
                 p.body = il;
                 if let Some(t) = temps {
                     p.var_blocks.push(t);
