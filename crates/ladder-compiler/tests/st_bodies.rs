@@ -26,7 +26,9 @@ fn project(body: &str) -> String {
 
 #[test]
 fn st_body_is_lowered_with_entities_and_cdata() {
-    let xml = project("IF a &lt;&gt; b AND a &gt;= 0 THEN ok := a &lt;= 10; END_IF;<![CDATA[ b := a * 2;]]>");
+    let xml = project(
+        "IF a &lt;&gt; b AND a &gt;= 0 THEN ok := a &lt;= 10; END_IF;<![CDATA[ b := a * 2;]]>",
+    );
     let (unit, diags) = compile("st.xml", &xml);
     assert_eq!(diags, "");
     insta::assert_snapshot!(dump_unit(&unit));

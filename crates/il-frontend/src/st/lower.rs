@@ -198,7 +198,7 @@ impl<'d> PouLowering<'d> {
 
     /// The `VAR_TEMP` block holding the temporaries (none when no temporary was needed).
     pub fn finish(self, span: Span) -> Option<VarBlock> {
-        (!self.temps.is_empty()).then(|| VarBlock {
+        (!self.temps.is_empty()).then_some(VarBlock {
             kind: VarKind::Temp,
             constant: false,
             retain: false,

@@ -14,7 +14,7 @@ pub fn compile(decls: &str, pou: &str, body: &str) -> (String, String) {
     let src = format!("{decls}\n(*ST*)\n{body}");
     let file = sm.add("test.st", src.clone());
     let mut diags = Diagnostics::new();
-    let mut unit = il_frontend::parse(file, &decls, &mut diags);
+    let mut unit = il_frontend::parse(file, decls, &mut diags);
     let base = decls.len() + "\n(*ST*)\n".len();
     let d = st::Declarations::from_units(std::slice::from_ref(&unit));
     let mut printed = String::new();
