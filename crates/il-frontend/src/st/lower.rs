@@ -1036,6 +1036,19 @@ impl<'d> PouLowering<'d> {
         ));
     }
 
+    /// Whether `e` is an array or a structure (a value IL does not load into the current result).
+    fn is_aggregate(&self, e: &Expr) -> bool {
+        let env = self.env();
+        match env.expr(e).known().map(|t| env.resolve(t)) {
+            Some(TypeRef::Array { .. }) => true,
+            Some(TypeRef::Named(n)) => self
+                .decls
+                .type_decl(&n.name)
+                .is_some_and(|d| matches!(d.def, crate::ast::TypeDef::Struct { .. })),
+            _ => false,
+        }
+    }
+
     fn resolve_callee(&self, name: &Ident) -> Callee {
         if let Some(p) = self.decls.pou(&name.name) {
             if p.kind == PouKind::Function {
@@ -1085,6 +1098,11 @@ impl<'d> PouLowering<'d> {
         } else {
             positional(&callee, args)
         };
+        // A formal call whose first input is an array or a structure stays formal: in the operator
+        // form that value would have to travel through the current result.
+        let formal = args.iter().any(|a| a.name.is_some());
+        let ordered = ordered
+            .filter(|list| !formal || list.first().is_none_or(|a| !self.is_aggregate(&a.value)));
         let hint_of =
             |env: &Env, callee: &Callee, k: usize, name: Option<&Ident>, args: &[&Arg]| {
                 param_hint(env, callee, k, name, args)
