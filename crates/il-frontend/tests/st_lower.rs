@@ -136,3 +136,55 @@ fn every_instruction_gets_its_own_span() {
     }
     assert!(diags.is_empty());
 }
+
+#[test]
+fn snippets_lowered_into_one_pou_share_labels_and_temporaries() {
+    use il_frontend::ast::LibraryElement;
+    let mut sm = diagnostics::SourceMap::new();
+    let a = "IF go THEN out := LIMIT(0, n * 2, 9); END_IF;";
+    let b = "n > 3 AND MAX(n + 1, 2) < 5";
+    let c = "n + 1";
+    let file = sm.add("t.st", format!("{DECLS}{a}{b}{c}"));
+    let mut diags = diagnostics::Diagnostics::new();
+    let unit = il_frontend::parse(file, DECLS, &mut diags);
+    let decls = il_frontend::st::Declarations::from_units(std::slice::from_ref(&unit));
+    let pou = unit
+        .items
+        .iter()
+        .find_map(|i| match i {
+            LibraryElement::Pou(p) if p.name.is("Fb") => Some(p),
+            _ => None,
+        })
+        .unwrap();
+    let mut low = il_frontend::st::PouLowering::new(&decls, pou);
+    let sa = il_frontend::st::parse_statements(file, a, DECLS.len(), &mut diags);
+    let eb = il_frontend::st::parse_expression(file, b, DECLS.len() + a.len(), &mut diags).unwrap();
+    let ec =
+        il_frontend::st::parse_expression(file, c, DECLS.len() + a.len() + b.len(), &mut diags)
+            .unwrap();
+    let mut text = il_frontend::print::body(&low.statements(&sa, &mut diags));
+    text.push_str("; transition\n");
+    text.push_str(&il_frontend::print::body(&low.condition(&eb, &mut diags)));
+    text.push_str("; again\n");
+    text.push_str(&il_frontend::print::body(&low.statements(&sa, &mut diags)));
+    let label = low.fresh_label("SFC", eb.span);
+    text.push_str(&format!("; caller's own label: {}\n", label.name));
+    assert!(diags.is_empty());
+    // A condition that is not BOOL is reported in ST terms.
+    let _ = low.condition(&ec, &mut diags);
+    let temps = low.finish(pou.span).unwrap();
+    for v in &temps.vars {
+        let mut t = String::new();
+        il_frontend::print::operand(
+            &mut t,
+            &il_frontend::ast::Operand::Var(il_frontend::ast::VarRef {
+                base: v.name.clone(),
+                accessors: vec![],
+                span: v.span,
+            }),
+        );
+        text.push_str(&format!("; temp {t} : {:?}\n", v.ty));
+    }
+    text.push_str(&st_common::render(&sm, diags));
+    insta::assert_snapshot!(text);
+}
