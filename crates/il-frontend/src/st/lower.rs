@@ -184,11 +184,14 @@ impl<'d> PouLowering<'d> {
     }
 
     /// Lowers a condition (a BOOL expression): the instructions leave it in the current result.
-    /// A condition whose type is known and not BOOL is reported (E3105). (IF/WHILE/UNTIL conditions
-    /// need no such check: the conditional jump they lower to is checked by IL sema.)
+    /// A condition whose type is known and not BOOL is reported (E3105) and becomes `LD FALSE`.
     pub fn condition(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
-        self.check_bool(e, "condition", diags);
-        self.expression(e, diags)
+        let mut out = Vec::new();
+        self.poisoned = false;
+        self.spans.expr(e);
+        self.cond_value(e, "condition", &mut out, diags);
+        self.spans.uniquify(&mut out);
+        out
     }
 
     /// The temporaries declared so far.
@@ -243,7 +246,8 @@ impl<'d> PouLowering<'d> {
         }
     }
 
-    fn check_bool(&self, e: &Expr, what: &str, diags: &mut Diagnostics) {
+    /// Reports a condition whose type is known and not BOOL (E3105); returns whether it is fine.
+    fn check_bool(&self, e: &Expr, what: &str, diags: &mut Diagnostics) -> bool {
         let env = self.env();
         if let Ty::Known(t) = env.expr(e) {
             let is_bool = env
@@ -262,7 +266,25 @@ impl<'d> PouLowering<'d> {
                     .with_primary_label("not a BOOL")
                     .with_hint("compare the value, e.g. `x <> 0`"),
                 );
+                return false;
             }
+        }
+        true
+    }
+
+    /// The code of an IF/ELSIF/WHILE/UNTIL condition. A condition that is known not to be BOOL is
+    /// reported in ST terms (E3105) and replaced by `LD FALSE`, so the conditional jump does not
+    /// report the same mistake again in IL terms.
+    fn cond_value(&mut self, e: &Expr, what: &str, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        if self.check_bool(e, what, diags) {
+            self.value(e, out, diags);
+        } else {
+            let f = Operand::Literal(Literal {
+                kind: LiteralKind::Bool(false),
+                type_prefix: None,
+                span: e.span,
+            });
+            out.push(ld(f, e.span));
         }
     }
 
@@ -313,7 +335,7 @@ impl<'d> PouLowering<'d> {
                         self.fresh_label("ELSE", b.span)
                     };
                     self.poisoned = false;
-                    self.value(&b.cond, out, diags);
+                    self.cond_value(&b.cond, "IF condition", out, diags);
                     out.push(jump(Condition::IfFalse, &next, b.cond.span));
                     self.stmt_list(&b.body, out, diags);
                     if !last {
@@ -345,7 +367,7 @@ impl<'d> PouLowering<'d> {
                 let end = self.fresh_label("END_WHILE", span);
                 out.push(IlStmt::Label(test.clone()));
                 self.poisoned = false;
-                self.value(cond, out, diags);
+                self.cond_value(cond, "WHILE condition", out, diags);
                 out.push(jump(Condition::IfFalse, &end, cond.span));
                 self.loops.push(LoopLabels {
                     exit: end.clone(),
@@ -371,7 +393,7 @@ impl<'d> PouLowering<'d> {
                 self.loops.pop();
                 out.push(IlStmt::Label(cont));
                 self.poisoned = false;
-                self.value(until, out, diags);
+                self.cond_value(until, "UNTIL condition", out, diags);
                 out.push(jump(Condition::IfFalse, &top, until.span));
                 out.push(IlStmt::Label(end));
             }
