@@ -16,6 +16,8 @@ pub struct Stmt {
     pub span: Span,
 }
 
+/// (Variants differ in size; a tree is built once per body, boxing would only add indirection.)
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, Serialize)]
 pub enum StmtKind {
     /// `target := value;` (also the result of a FUNCTION: `Name := value;`).

@@ -43,6 +43,10 @@ pub struct PouLowering<'d> {
     loops: Vec<LoopLabels>,
     /// Set when an expression contained a syntax error (reported by the parser).
     poisoned: bool,
+    spans: super::spans::SpanAlloc,
+    /// The type an untyped literal loaded first by the next [`Self::value`] should get (`LD REAL#2.0`
+    /// where the context is REAL), so IL sema does not default it to DINT/LREAL.
+    lit_hint: Option<TypeRef>,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -137,6 +141,8 @@ impl<'d> PouLowering<'d> {
             next_label: 0,
             loops: Vec::new(),
             poisoned: false,
+            spans: Default::default(),
+            lit_hint: None,
         }
     }
 
@@ -144,6 +150,12 @@ impl<'d> PouLowering<'d> {
     /// visible to the lowering, e.g. SFC step flags.
     pub fn declare(&mut self, name: &str, ty: TypeRef) {
         self.vars.insert(name.to_ascii_uppercase(), ty);
+    }
+
+    /// A span for an instruction the caller creates itself in this POU (IL sema keys instructions by
+    /// span: no two may share one): `want` when free, else a free sub-span of it.
+    pub fn unique_span(&mut self, want: Span) -> Span {
+        self.spans.unique(want)
     }
 
     /// A label no other snippet of this POU uses: `_ST_<WHAT><n>`.
@@ -155,7 +167,9 @@ impl<'d> PouLowering<'d> {
     /// Lowers a statement list.
     pub fn statements(&mut self, stmts: &[Stmt], diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
+        self.spans.stmts(stmts);
         self.stmt_list(stmts, &mut out, diags);
+        self.spans.uniquify(&mut out);
         out
     }
 
@@ -163,15 +177,21 @@ impl<'d> PouLowering<'d> {
     pub fn expression(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
         self.poisoned = false;
+        self.spans.expr(e);
         self.value(e, &mut out, diags);
+        self.spans.uniquify(&mut out);
         out
     }
 
     /// Lowers a condition (a BOOL expression): the instructions leave it in the current result.
-    /// A condition whose type is known and not BOOL is reported (E3105).
+    /// A condition whose type is known and not BOOL is reported (E3105) and becomes `LD FALSE`.
     pub fn condition(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
-        self.check_bool(e, "condition", diags);
-        self.expression(e, diags)
+        let mut out = Vec::new();
+        self.poisoned = false;
+        self.spans.expr(e);
+        self.cond_value(e, "condition", &mut out, diags);
+        self.spans.uniquify(&mut out);
+        out
     }
 
     /// The temporaries declared so far.
@@ -181,7 +201,7 @@ impl<'d> PouLowering<'d> {
 
     /// The `VAR_TEMP` block holding the temporaries (none when no temporary was needed).
     pub fn finish(self, span: Span) -> Option<VarBlock> {
-        (!self.temps.is_empty()).then(|| VarBlock {
+        (!self.temps.is_empty()).then_some(VarBlock {
             kind: VarKind::Temp,
             constant: false,
             retain: false,
@@ -226,7 +246,8 @@ impl<'d> PouLowering<'d> {
         }
     }
 
-    fn check_bool(&self, e: &Expr, what: &str, diags: &mut Diagnostics) {
+    /// Reports a condition whose type is known and not BOOL (E3105); returns whether it is fine.
+    fn check_bool(&self, e: &Expr, what: &str, diags: &mut Diagnostics) -> bool {
         let env = self.env();
         if let Ty::Known(t) = env.expr(e) {
             let is_bool = env
@@ -245,7 +266,25 @@ impl<'d> PouLowering<'d> {
                     .with_primary_label("not a BOOL")
                     .with_hint("compare the value, e.g. `x <> 0`"),
                 );
+                return false;
             }
+        }
+        true
+    }
+
+    /// The code of an IF/ELSIF/WHILE/UNTIL condition. A condition that is known not to be BOOL is
+    /// reported in ST terms (E3105) and replaced by `LD FALSE`, so the conditional jump does not
+    /// report the same mistake again in IL terms.
+    fn cond_value(&mut self, e: &Expr, what: &str, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        if self.check_bool(e, what, diags) {
+            self.value(e, out, diags);
+        } else {
+            let f = Operand::Literal(Literal {
+                kind: LiteralKind::Bool(false),
+                type_prefix: None,
+                span: e.span,
+            });
+            out.push(ld(f, e.span));
         }
     }
 
@@ -265,6 +304,10 @@ impl<'d> PouLowering<'d> {
                 self.poisoned = false;
                 let mut code = Vec::new();
                 let place = self.place_operand(target, &mut code, diags);
+                self.lit_hint = match self.ty(value) {
+                    Ty::Known(_) => None,
+                    _ => self.env().place_type(target),
+                };
                 self.value(value, &mut code, diags);
                 if let (Some(p), false) = (place, self.poisoned) {
                     code.push(simple(Op::St, false, Some(p), span));
@@ -291,13 +334,14 @@ impl<'d> PouLowering<'d> {
                     } else {
                         self.fresh_label("ELSE", b.span)
                     };
-                    self.check_bool(&b.cond, "IF condition", diags);
                     self.poisoned = false;
-                    self.value(&b.cond, out, diags);
+                    self.cond_value(&b.cond, "IF condition", out, diags);
                     out.push(jump(Condition::IfFalse, &next, b.cond.span));
                     self.stmt_list(&b.body, out, diags);
                     if !last {
-                        out.push(jump(Condition::Always, &end, b.span));
+                        if !ends_with_transfer(out) {
+                            out.push(jump(Condition::Always, &end, b.span));
+                        }
                         out.push(IlStmt::Label(next));
                     }
                 }
@@ -322,9 +366,8 @@ impl<'d> PouLowering<'d> {
                 let test = self.fresh_label("WHILE", span);
                 let end = self.fresh_label("END_WHILE", span);
                 out.push(IlStmt::Label(test.clone()));
-                self.check_bool(cond, "WHILE condition", diags);
                 self.poisoned = false;
-                self.value(cond, out, diags);
+                self.cond_value(cond, "WHILE condition", out, diags);
                 out.push(jump(Condition::IfFalse, &end, cond.span));
                 self.loops.push(LoopLabels {
                     exit: end.clone(),
@@ -332,7 +375,9 @@ impl<'d> PouLowering<'d> {
                 });
                 self.stmt_list(body, out, diags);
                 self.loops.pop();
-                out.push(jump(Condition::Always, &test, span));
+                if !ends_with_transfer(out) {
+                    out.push(jump(Condition::Always, &test, span));
+                }
                 out.push(IlStmt::Label(end));
             }
             StmtKind::Repeat { body, until } => {
@@ -347,9 +392,8 @@ impl<'d> PouLowering<'d> {
                 self.stmt_list(body, out, diags);
                 self.loops.pop();
                 out.push(IlStmt::Label(cont));
-                self.check_bool(until, "UNTIL condition", diags);
                 self.poisoned = false;
-                self.value(until, out, diags);
+                self.cond_value(until, "UNTIL condition", out, diags);
                 out.push(jump(Condition::IfFalse, &top, until.span));
                 out.push(IlStmt::Label(end));
             }
@@ -453,7 +497,9 @@ impl<'d> PouLowering<'d> {
         for (arm, target) in arms.iter().zip(targets) {
             out.push(IlStmt::Label(target));
             self.stmt_list(&arm.body, out, diags);
-            out.push(jump(Condition::Always, &end, arm.span));
+            if !ends_with_transfer(out) {
+                out.push(jump(Condition::Always, &end, arm.span));
+            }
         }
         if let (Some(l), Some(body)) = (else_label, else_body) {
             out.push(IlStmt::Label(l));
@@ -567,7 +613,7 @@ impl<'d> PouLowering<'d> {
         let cont = self.fresh_label("NEXT", span);
         let end = self.fresh_label("END_FOR", span);
         out.push(IlStmt::Label(test.clone()));
-        let at = to.span;
+        let at = span;
         match sign {
             Some(s) => {
                 out.push(ld(i.clone(), at));
@@ -857,6 +903,7 @@ impl<'d> PouLowering<'d> {
             return o;
         }
         let ty = self.temp_type(e, hint);
+        self.lit_hint = Some(ty.clone());
         self.value(e, out, diags);
         let t = self.temp(ty, e.span);
         out.push(simple(Op::St, false, Some(var_operand(&t)), e.span));
@@ -866,16 +913,37 @@ impl<'d> PouLowering<'d> {
     /// Code that leaves the value of `e` in the current result; `out` must be at a point where the
     /// current result is free.
     fn value(&mut self, e: &Expr, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        let hint = self.lit_hint.take();
         match &e.kind {
             ExprKind::Error => {
                 self.poisoned = true;
+            }
+            ExprKind::Literal(l) if l.type_prefix.is_none() && hint.is_some() => {
+                let mut l = l.clone();
+                if let (LiteralKind::Int(_) | LiteralKind::Real(_), Some(TypeRef::Named(t))) =
+                    (&l.kind, &hint)
+                {
+                    let numeric = self
+                        .env()
+                        .elementary(&TypeRef::Named(t.clone()))
+                        .is_some_and(|x| {
+                            x.is_numeric() && (x.is_real() || matches!(l.kind, LiteralKind::Int(_)))
+                        });
+                    if numeric {
+                        l.type_prefix = Some(Ident::new(t.name.clone(), l.span));
+                    }
+                }
+                out.push(ld(Operand::Literal(l), e.span));
             }
             ExprKind::Literal(_) | ExprKind::EnumValue { .. } | ExprKind::Place(_) => {
                 let o = self.operand(e, None, out, diags);
                 out.push(ld(o, e.span));
             }
             ExprKind::Unary { op, operand } => match op {
-                UnaryOp::Plus => self.value(operand, out, diags),
+                UnaryOp::Plus => {
+                    self.lit_hint = hint;
+                    self.value(operand, out, diags)
+                }
                 UnaryOp::Not => {
                     if let Some(o) = self.pure_operand(operand) {
                         out.push(simple(Op::Ld, true, Some(o), e.span));
@@ -885,6 +953,7 @@ impl<'d> PouLowering<'d> {
                     }
                 }
                 UnaryOp::Neg => {
+                    self.lit_hint = hint;
                     self.value(operand, out, diags);
                     let real = match self.ty(operand) {
                         Ty::RealLit => true,
@@ -905,12 +974,27 @@ impl<'d> PouLowering<'d> {
             },
             ExprKind::Binary { op, left, right } => match binop(*op) {
                 Some(il_op) => {
+                    let (lt, rt) = (self.ty(left), self.ty(right));
+                    let cmp = matches!(il_op, Op::Eq | Op::Ne | Op::Lt | Op::Gt | Op::Le | Op::Ge);
+                    let ctx = if cmp { None } else { hint };
+                    self.lit_hint = match lt {
+                        Ty::Known(_) => None,
+                        _ => rt.known().cloned().or(ctx.clone()),
+                    };
                     self.value(left, out, diags);
-                    self.apply(il_op, right, e.span, out, diags);
+                    let right_hint = match rt {
+                        Ty::Known(_) => None,
+                        _ => lt.known().cloned().or(ctx),
+                    };
+                    self.apply(il_op, right, right_hint, e.span, out, diags);
                 }
                 None => {
-                    // a ** b: EXPT with the current result as IN1.
+                    // a ** b: EXPT with the current result as IN1 (ANY_REAL).
                     let exp = self.operand(right, None, out, diags);
+                    self.lit_hint = match self.ty(left) {
+                        Ty::Known(_) => None,
+                        _ => Some(hint.unwrap_or_else(|| named("LREAL", left.span))),
+                    };
                     self.value(left, out, diags);
                     out.push(instr(
                         InstrKind::FunctionCall {
@@ -931,6 +1015,7 @@ impl<'d> PouLowering<'d> {
         &mut self,
         op: Op,
         right: &Expr,
+        hint: Option<TypeRef>,
         span: Span,
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
@@ -940,6 +1025,7 @@ impl<'d> PouLowering<'d> {
             return;
         }
         let mut body = Vec::new();
+        self.lit_hint = hint;
         self.value(right, &mut body, diags);
         // `ADD( x` ...: the nested list's first load goes on the opening line.
         let operand = match body.first() {
@@ -970,6 +1056,19 @@ impl<'d> PouLowering<'d> {
             },
             span,
         ));
+    }
+
+    /// Whether `e` is an array or a structure (a value IL does not load into the current result).
+    fn is_aggregate(&self, e: &Expr) -> bool {
+        let env = self.env();
+        match env.expr(e).known().map(|t| env.resolve(t)) {
+            Some(TypeRef::Array { .. }) => true,
+            Some(TypeRef::Named(n)) => self
+                .decls
+                .type_decl(&n.name)
+                .is_some_and(|d| matches!(d.def, crate::ast::TypeDef::Struct { .. })),
+            _ => false,
+        }
     }
 
     fn resolve_callee(&self, name: &Ident) -> Callee {
@@ -1021,6 +1120,11 @@ impl<'d> PouLowering<'d> {
         } else {
             positional(&callee, args)
         };
+        // A formal call whose first input is an array or a structure stays formal: in the operator
+        // form that value would have to travel through the current result.
+        let formal = args.iter().any(|a| a.name.is_some());
+        let ordered = ordered
+            .filter(|list| !formal || list.first().is_none_or(|a| !self.is_aggregate(&a.value)));
         let hint_of =
             |env: &Env, callee: &Callee, k: usize, name: Option<&Ident>, args: &[&Arg]| {
                 param_hint(env, callee, k, name, args)
@@ -1134,6 +1238,22 @@ fn param_hint(
         }
         Callee::Other => None,
     }
+}
+
+/// Whether the code ends with an unconditional jump or return (code after it would be unreachable).
+fn ends_with_transfer(out: &[IlStmt]) -> bool {
+    matches!(
+        out.last(),
+        Some(IlStmt::Instr(Instruction {
+            kind: InstrKind::Jump {
+                cond: Condition::Always,
+                ..
+            } | InstrKind::Return {
+                cond: Condition::Always
+            },
+            ..
+        }))
+    )
 }
 
 /// The integer value of a literal (also `-5`), for FOR bounds and steps.

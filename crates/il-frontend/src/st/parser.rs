@@ -365,6 +365,10 @@ impl<'s, 'd> Parser<'s, 'd> {
         );
         if self.at(&Tok::Semi) {
             self.bump();
+        } else if self.at(&Tok::Error) {
+            // The lexer reported the bad text: the statement is dropped with it.
+            self.sync();
+            return None;
         } else if !block {
             // `END_IF` without `;` is accepted (CODESYS and Beremiz accept it too).
             let at = self.prev_end();
@@ -473,12 +477,20 @@ impl<'s, 'd> Parser<'s, 'd> {
         loop {
             let cond = self.expr();
             if !self.expect_kw(Kw::Then, "after the IF condition") {
-                // Skip the rest of the condition up to THEN or the end of the line of statements.
-                while !self.at_kw(Kw::Then) && !ends_list(self.peek()) && !self.at(&Tok::Semi) {
-                    self.bump();
-                }
-                if self.at_kw(Kw::Then) {
-                    self.bump();
+                // Garbage before a THEN on the same statement is skipped; without THEN the body
+                // starts right here (`IF a x := 1;` keeps `x := 1`).
+                let mut k = 0;
+                loop {
+                    match self.peek_at(k) {
+                        Tok::Kw(Kw::Then) => {
+                            for _ in 0..=k {
+                                self.bump();
+                            }
+                            break;
+                        }
+                        t if *t == Tok::Semi || ends_list(t) => break,
+                        _ => k += 1,
+                    }
                 }
             }
             let body = self.nested(|p| p.statement_list());

@@ -14,15 +14,14 @@ pub fn compile(decls: &str, pou: &str, body: &str) -> (String, String) {
     let src = format!("{decls}\n(*ST*)\n{body}");
     let file = sm.add("test.st", src.clone());
     let mut diags = Diagnostics::new();
-    let mut unit = il_frontend::parse(file, &decls, &mut diags);
+    let mut unit = il_frontend::parse(file, decls, &mut diags);
     let base = decls.len() + "\n(*ST*)\n".len();
     let d = st::Declarations::from_units(std::slice::from_ref(&unit));
     let mut printed = String::new();
     for item in &mut unit.items {
         if let LibraryElement::Pou(p) = item {
             if p.name.is(pou) {
-                let (il, temps) =
-                    st::compile_body(file, body, base, &d, p, p.span, &mut diags);
+                let (il, temps) = st::compile_body(file, body, base, &d, p, p.span, &mut diags);
                 p.body = il;
                 if let Some(t) = temps {
                     p.var_blocks.push(t);
