@@ -178,10 +178,7 @@ impl Analyzer<'_> {
                     .push((e.from, ty));
             }
         }
-        // Pass 2, reporting (about one name per instruction).
-        let n = b.recs.len();
-        b.a.model.names.reserve(n);
-        b.a.model.instrs.reserve(n);
+        // Pass 2, reporting.
         b.backward = backward;
         b.lits = LitVars::default();
         b.recs.clear();
@@ -259,6 +256,28 @@ impl Analyzer<'_> {
         }
         any_backward
     }
+}
+
+/// The number of instructions of a body, nested lists included (an explicit stack: depth is not limited
+/// by the thread's stack).
+pub(super) fn count_instrs(body: &[IlStmt]) -> usize {
+    let mut n = 0;
+    let mut stack: Vec<std::slice::Iter<'_, IlStmt>> = vec![body.iter()];
+    while let Some(top) = stack.last_mut() {
+        match top.next() {
+            None => {
+                stack.pop();
+            }
+            Some(IlStmt::Label(_)) => {}
+            Some(IlStmt::Instr(i)) => {
+                n += 1;
+                if let InstrKind::Deferred { body, .. } = &i.kind {
+                    stack.push(body.iter());
+                }
+            }
+        }
+    }
+    n
 }
 
 impl Body<'_, '_> {

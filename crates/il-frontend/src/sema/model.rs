@@ -9,6 +9,7 @@
 
 use crate::ast::{AddressSize, Area, DirectAddress, PouKind, VarKind};
 use crate::Span;
+use rustc_hash::FxHashMap;
 use serde::Serialize;
 use std::collections::HashMap;
 
@@ -707,10 +708,68 @@ pub struct Model {
     /// `VAR_GLOBAL` blocks outside configurations.
     pub globals: Vec<Variable>,
     /// Keyed by `ast::Instruction::span`.
-    pub instrs: HashMap<Span, InstrInfo>,
+    pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
     /// call arguments, indexes, CAL instances).
-    pub names: HashMap<Span, NameRef>,
+    pub names: FxHashMap<Span, NameRef>,
+}
+
+/// The instruction infos by span: a map, stored as one vector in insertion order (source order of the
+/// bodies) with an index of spans, so that reading the infos body by body touches memory in order and
+/// an info is stored once, without the spare room of a hash table.
+/// Invariant: `index[span]` is the position in `entries` of the entry with that span (one per span: a
+/// second insert under a span replaces the info, as a map does).
+#[derive(Debug, Clone, Default)]
+pub struct InstrTable {
+    entries: Vec<(Span, InstrInfo)>,
+    index: FxHashMap<Span, u32>,
+}
+
+impl InstrTable {
+    /// The info of the instruction at `span`.
+    pub fn get(&self, span: &Span) -> Option<&InstrInfo> {
+        let i = *self.index.get(span)?;
+        Some(&self.entries[i as usize].1)
+    }
+    /// Stores the info of the instruction at `span`; returns the info it replaces.
+    pub fn insert(&mut self, span: Span, info: InstrInfo) -> Option<InstrInfo> {
+        match self.index.get(&span) {
+            Some(&i) => Some(std::mem::replace(&mut self.entries[i as usize].1, info)),
+            None => {
+                self.index.insert(span, self.entries.len() as u32);
+                self.entries.push((span, info));
+                None
+            }
+        }
+    }
+    /// Makes room for `additional` more instructions.
+    pub fn reserve(&mut self, additional: usize) {
+        self.entries.reserve(additional);
+        self.index.reserve(additional);
+    }
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+    pub fn contains_key(&self, span: &Span) -> bool {
+        self.index.contains_key(span)
+    }
+    /// The spans and infos, in insertion order.
+    pub fn iter(&self) -> impl Iterator<Item = (&Span, &InstrInfo)> {
+        self.entries.iter().map(|(s, i)| (s, i))
+    }
+    pub fn values(&self) -> impl Iterator<Item = &InstrInfo> {
+        self.entries.iter().map(|(_, i)| i)
+    }
+}
+
+/// Serialised as a map from span to info, as the map it stands for.
+impl Serialize for InstrTable {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_map(self.iter())
+    }
 }
 
 impl Model {
