@@ -121,8 +121,11 @@ impl<'a> Gen<'a> {
 
     pub(super) fn info(&mut self, i: &Instruction) -> Option<&'a InstrInfo> {
         let model: &'a il_frontend::sema::Model = self.model;
-        match model.instr(i.span) {
-            Some(info) => Some(info),
+        match model.instrs.get_near(i.span, self.instr_cursor) {
+            Some((at, info)) => {
+                self.instr_cursor = at + 1;
+                Some(info)
+            }
             None => {
                 self.report_once(
                     Diagnostic::error(
@@ -256,10 +259,12 @@ impl<'a> Gen<'a> {
         let Some(cr) = self.cr(b, &Type::BOOL, i.span) else {
             return;
         };
-        let before = self
-            .model
-            .instr(i.span)
-            .and_then(|x| x.cr_before.clone())
+        let found = self.model.instrs.get_near(i.span, self.instr_cursor);
+        if let Some((at, _)) = found {
+            self.instr_cursor = at + 1;
+        }
+        let before = found
+            .and_then(|(_, x)| x.cr_before.clone())
             .unwrap_or(Type::BOOL);
         let cr = if before.is_bool() {
             cr

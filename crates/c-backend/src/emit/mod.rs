@@ -47,6 +47,9 @@ pub struct Gen<'a> {
     pub methods: Vec<crate::PouMethod>,
     /// The motion runtime, when the program uses motion blocks.
     pub motion: Option<crate::motion::MotionRuntime>,
+    /// The position in `Model::instrs` after the last instruction looked up (bodies are read in
+    /// source order, so that is usually where the next one is).
+    pub(super) instr_cursor: usize,
 }
 
 impl<'a> Gen<'a> {
@@ -139,6 +142,7 @@ pub fn generate(
             .collect(),
         reported: HashSet::new(),
         quiet: 0,
+        instr_cursor: 0,
         address_spans: collect_address_spans(units),
         member_index: Default::default(),
         methods: ext.methods.clone(),

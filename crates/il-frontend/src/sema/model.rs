@@ -731,6 +731,18 @@ impl InstrTable {
         let i = *self.index.get(span)?;
         Some(&self.entries[i as usize].1)
     }
+    /// The info of the instruction at `span` and its position, trying position `hint` first: a reader
+    /// walking a body in source order passes the position after the previous instruction's and finds
+    /// the next one without hashing.
+    pub fn get_near(&self, span: Span, hint: usize) -> Option<(usize, &InstrInfo)> {
+        match self.entries.get(hint) {
+            Some((s, info)) if *s == span => Some((hint, info)),
+            _ => {
+                let i = *self.index.get(&span)? as usize;
+                Some((i, &self.entries[i].1))
+            }
+        }
+    }
     /// Stores the info of the instruction at `span`; returns the info it replaces.
     pub fn insert(&mut self, span: Span, info: InstrInfo) -> Option<InstrInfo> {
         match self.index.get(&span) {
