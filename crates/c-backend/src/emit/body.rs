@@ -30,6 +30,8 @@ pub struct Body<'s, 'm> {
     pub targets: HashSet<String>,
     depth: usize,
     temps: usize,
+    /// The current-result locals already declared, by IEC type (a short list: one per C type used).
+    cr_names: Vec<(Type, String)>,
     /// For a FUNCTION: the C expression returned by RET.
     pub ret: String,
 }
@@ -44,6 +46,7 @@ impl<'s, 'm> Body<'s, 'm> {
             targets: HashSet::new(),
             depth: 0,
             temps: 0,
+            cr_names: Vec::new(),
             ret,
         }
     }
@@ -93,6 +96,9 @@ pub fn jump_targets(stmts: &[IlStmt], into: &mut HashSet<String>) {
 impl<'a> Gen<'a> {
     /// The current-result local for values of `ty` (declared on first use).
     pub(super) fn cr(&mut self, b: &mut Body, ty: &Type, span: Span) -> Option<String> {
+        if let Some((_, name)) = b.cr_names.iter().find(|(t, _)| t == ty) {
+            return Some(name.clone());
+        }
         let base = match ty {
             Type::Array { .. } => {
                 self.unsupported(span, "an array as the current result");
@@ -115,6 +121,9 @@ impl<'a> Gen<'a> {
             };
             b.crs
                 .insert(name.clone(), format!("{base} {name} = {init};"));
+        }
+        if b.cr_names.len() < 16 {
+            b.cr_names.push((ty.clone(), name.clone()));
         }
         Some(name)
     }

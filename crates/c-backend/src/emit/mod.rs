@@ -32,7 +32,7 @@ pub struct Gen<'a> {
     /// Embedded functions: upper-case name -> C name.
     pub embedded: HashMap<String, String>,
     /// Free globals: upper-case name -> index in `Model::globals`.
-    pub free_globals: HashMap<String, usize>,
+    pub free_globals: rustc_hash::FxHashMap<String, usize>,
     /// (code, span) pairs already reported.
     pub reported: HashSet<(&'static str, Option<Span>)>,
     /// While > 0, diagnostics are suppressed (type probing).

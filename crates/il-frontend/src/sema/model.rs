@@ -11,7 +11,6 @@ use crate::ast::{AddressSize, Area, DirectAddress, PouKind, VarKind};
 use crate::Span;
 use rustc_hash::FxHashMap;
 use serde::Serialize;
-use std::collections::HashMap;
 
 /// Index of a POU in [`Model::pous`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
@@ -492,7 +491,27 @@ pub struct Pou {
     pub instrs: Vec<Span>,
     /// Upper-case name -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time.
     #[serde(skip)]
-    pub var_index: HashMap<String, usize>,
+    pub var_index: FxHashMap<String, usize>,
+}
+
+/// Calls `f` with the ASCII upper-case form of `name` (the key of the name tables), without allocating
+/// when `name` is upper case already or at most 64 bytes long.
+pub fn with_upper<R>(name: &str, f: impl FnOnce(&str) -> R) -> R {
+    let bytes = name.as_bytes();
+    if !bytes.iter().any(u8::is_ascii_lowercase) {
+        return f(name);
+    }
+    let mut buf = [0u8; 64];
+    if let Some(dst) = buf.get_mut(..bytes.len()) {
+        for (d, s) in dst.iter_mut().zip(bytes) {
+            *d = s.to_ascii_uppercase();
+        }
+        // Upper-casing ASCII letters keeps the text valid UTF-8.
+        if let Ok(up) = std::str::from_utf8(dst) {
+            return f(up);
+        }
+    }
+    f(&name.to_ascii_uppercase())
 }
 
 impl Pou {
@@ -508,7 +527,7 @@ impl Pou {
     /// The index in `vars` of a variable, by name (case-insensitive).
     pub fn var_position(&self, name: &str) -> Option<usize> {
         if self.var_index.len() == self.vars.len() {
-            self.var_index.get(&name.to_ascii_uppercase()).copied()
+            with_upper(name, |key| self.var_index.get(key).copied())
         } else {
             self.vars.iter().position(|v| v.is(name))
         }
