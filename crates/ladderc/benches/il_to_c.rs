@@ -5,6 +5,7 @@
 //! "no size limits" check). Output: a table of median wall and CPU time of parse + sema + C generation,
 //! per stage, and the peak resident memory of each job, with the ratios against matiec's iec2c anchor
 //! stated in the issue (8.2 s, 164 MB; goals: at least 50x faster, under 100 MB peak).
+//! `LADDERC_BENCH_DUMP=<file>` also writes the generated program (to time `ladderc build` on it).
 //! Invariants: every job runs in its own child process (see `common`), so its peak memory is its own;
 //! the compiled program must produce no error diagnostic, and the bench fails if it does.
 
@@ -136,6 +137,10 @@ fn child(job: &str) {
     let runs = common::runs(runs);
     let baseline = common::status_kib("VmHWM");
     let src = il_frontend::testgen::generate(lines, pous);
+    // `LADDERC_BENCH_DUMP=<file>`: also write the program, e.g. to time `ladderc build` on it.
+    if let Ok(path) = std::env::var("LADDERC_BENCH_DUMP") {
+        std::fs::write(&path, &src).unwrap_or_else(|e| panic!("writing {path}: {e}"));
+    }
     // Lexing and layout alone (the token stream the grammar reads), to split the parse stage.
     let mut tokens = Vec::new();
     let mut tokens_count = 0;
