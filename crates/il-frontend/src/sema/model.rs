@@ -730,53 +730,102 @@ pub struct Model {
     pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
     /// call arguments, indexes, CAL instances).
-    pub names: FxHashMap<Span, NameRef>,
+    pub names: SpanTable<NameRef>,
 }
 
-/// The instruction infos by span: a map, stored as one vector in insertion order (source order of the
-/// bodies) with an index of spans, so that reading the infos body by body touches memory in order and
-/// an info is stored once, without the spare room of a hash table.
-/// Invariant: `index[span]` is the position in `entries` of the entry with that span (one per span: a
-/// second insert under a span replaces the info, as a map does).
-#[derive(Debug, Clone, Default)]
-pub struct InstrTable {
-    entries: Vec<(Span, InstrInfo)>,
-    index: FxHashMap<Span, u32>,
+/// The instruction infos by span ([`SpanTable`]).
+pub type InstrTable = SpanTable<InstrInfo>;
+
+/// A map keyed by span, stored as one vector in insertion order (source order of the bodies), so that
+/// reading the values body by body touches memory in order and a value is stored once, without the
+/// spare room of a hash table. While the spans come in increasing order (the usual case: sema walks
+/// each body in source order) the vector is sorted and searched by bisection; the first span out of
+/// order builds a hash index, used from then on.
+/// Invariants: one entry per span (a second insert under a span replaces the value, as a map does);
+/// without `index`, `entries` is sorted strictly by (file, start, end); with it, `index[span]` is the
+/// position of the span's entry.
+#[derive(Debug, Clone)]
+pub struct SpanTable<V> {
+    entries: Vec<(Span, V)>,
+    index: Option<FxHashMap<Span, u32>>,
 }
 
-impl InstrTable {
-    /// The info of the instruction at `span`.
-    pub fn get(&self, span: &Span) -> Option<&InstrInfo> {
-        let i = *self.index.get(span)?;
-        Some(&self.entries[i as usize].1)
+impl<V> Default for SpanTable<V> {
+    fn default() -> Self {
+        SpanTable {
+            entries: Vec::new(),
+            index: None,
+        }
     }
-    /// The info of the instruction at `span` and its position, trying position `hint` first: a reader
-    /// walking a body in source order passes the position after the previous instruction's and finds
-    /// the next one without hashing.
-    pub fn get_near(&self, span: Span, hint: usize) -> Option<(usize, &InstrInfo)> {
+}
+
+fn span_key(s: &Span) -> (u32, u32, u32) {
+    (s.file.0, s.start, s.end)
+}
+
+impl<V> SpanTable<V> {
+    fn position(&self, span: &Span) -> Option<usize> {
+        match &self.index {
+            Some(index) => index.get(span).map(|&i| i as usize),
+            None => self
+                .entries
+                .binary_search_by_key(&span_key(span), |(s, _)| span_key(s))
+                .ok(),
+        }
+    }
+    /// The value at `span`.
+    pub fn get(&self, span: &Span) -> Option<&V> {
+        self.position(span).map(|i| &self.entries[i].1)
+    }
+    /// The value at `span` and its position, trying position `hint` first: a reader walking a body in
+    /// source order passes the position after the previous instruction's and finds the next one at once.
+    pub fn get_near(&self, span: Span, hint: usize) -> Option<(usize, &V)> {
         match self.entries.get(hint) {
-            Some((s, info)) if *s == span => Some((hint, info)),
+            Some((s, v)) if *s == span => Some((hint, v)),
             _ => {
-                let i = *self.index.get(&span)? as usize;
+                let i = self.position(&span)?;
                 Some((i, &self.entries[i].1))
             }
         }
     }
-    /// Stores the info of the instruction at `span`; returns the info it replaces.
-    pub fn insert(&mut self, span: Span, info: InstrInfo) -> Option<InstrInfo> {
-        match self.index.get(&span) {
-            Some(&i) => Some(std::mem::replace(&mut self.entries[i as usize].1, info)),
+    /// Stores the value at `span`; returns the value it replaces.
+    pub fn insert(&mut self, span: Span, value: V) -> Option<V> {
+        if self.index.is_none() {
+            let in_order = self
+                .entries
+                .last()
+                .is_none_or(|(last, _)| span_key(last) < span_key(&span));
+            if in_order {
+                self.entries.push((span, value));
+                return None;
+            }
+            let mut index = FxHashMap::default();
+            index.reserve(self.entries.capacity());
+            index.extend(
+                self.entries
+                    .iter()
+                    .enumerate()
+                    .map(|(i, (s, _))| (*s, i as u32)),
+            );
+            self.index = Some(index);
+        }
+        let next = self.entries.len() as u32;
+        let index = self.index.get_or_insert_with(FxHashMap::default);
+        match index.get(&span) {
+            Some(&i) => Some(std::mem::replace(&mut self.entries[i as usize].1, value)),
             None => {
-                self.index.insert(span, self.entries.len() as u32);
-                self.entries.push((span, info));
+                index.insert(span, next);
+                self.entries.push((span, value));
                 None
             }
         }
     }
-    /// Makes room for `additional` more instructions.
+    /// Makes room for `additional` more values.
     pub fn reserve(&mut self, additional: usize) {
         self.entries.reserve(additional);
-        self.index.reserve(additional);
+        if let Some(index) = &mut self.index {
+            index.reserve(additional);
+        }
     }
     pub fn len(&self) -> usize {
         self.entries.len()
@@ -785,19 +834,19 @@ impl InstrTable {
         self.entries.is_empty()
     }
     pub fn contains_key(&self, span: &Span) -> bool {
-        self.index.contains_key(span)
+        self.position(span).is_some()
     }
-    /// The spans and infos, in insertion order.
-    pub fn iter(&self) -> impl Iterator<Item = (&Span, &InstrInfo)> {
-        self.entries.iter().map(|(s, i)| (s, i))
+    /// The spans and values, in insertion order.
+    pub fn iter(&self) -> impl Iterator<Item = (&Span, &V)> {
+        self.entries.iter().map(|(s, v)| (s, v))
     }
-    pub fn values(&self) -> impl Iterator<Item = &InstrInfo> {
-        self.entries.iter().map(|(_, i)| i)
+    pub fn values(&self) -> impl Iterator<Item = &V> {
+        self.entries.iter().map(|(_, v)| v)
     }
 }
 
-/// Serialised as a map from span to info, as the map it stands for.
-impl Serialize for InstrTable {
+/// Serialised as a map from span to value, as the map it stands for.
+impl<V: Serialize> Serialize for SpanTable<V> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         s.collect_map(self.iter())
     }
