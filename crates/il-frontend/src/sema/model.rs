@@ -924,3 +924,67 @@ impl Model {
         }
     }
 }
+
+#[cfg(test)]
+mod span_table_tests {
+    use super::*;
+    use diagnostics::FileId;
+
+    fn sp(file: u32, start: usize, end: usize) -> Span {
+        Span::new(FileId(file), start, end)
+    }
+
+    #[test]
+    fn in_order_inserts_are_found_by_bisection() {
+        let mut t = SpanTable::default();
+        for i in 0..100 {
+            assert_eq!(t.insert(sp(0, i * 10, i * 10 + 4), i), None);
+        }
+        assert!(t.index.is_none(), "no index while the spans come in order");
+        assert_eq!(t.len(), 100);
+        assert_eq!(t.get(&sp(0, 370, 374)), Some(&37));
+        assert_eq!(t.get(&sp(0, 370, 375)), None);
+        assert!(t.contains_key(&sp(0, 990, 994)));
+        // The hint is used when it points at the span, and ignored when it does not.
+        assert_eq!(t.get_near(sp(0, 50, 54), 5), Some((5, &5)));
+        assert_eq!(t.get_near(sp(0, 50, 54), 99), Some((5, &5)));
+        assert_eq!(t.get_near(sp(0, 50, 54), 1000), Some((5, &5)));
+        assert_eq!(t.get_near(sp(1, 50, 54), 5), None);
+    }
+
+    #[test]
+    fn out_of_order_and_repeated_spans_behave_as_a_map() {
+        let mut t = SpanTable::default();
+        t.insert(sp(1, 0, 4), "a");
+        t.insert(sp(1, 10, 14), "b");
+        // Another file with a lower id, then a repeated span: map semantics throughout.
+        assert_eq!(t.insert(sp(0, 5, 9), "c"), None);
+        assert!(t.index.is_some());
+        assert_eq!(t.insert(sp(1, 0, 4), "a2"), Some("a"));
+        assert_eq!(t.len(), 3);
+        assert_eq!(t.get(&sp(1, 0, 4)), Some(&"a2"));
+        assert_eq!(t.get(&sp(0, 5, 9)), Some(&"c"));
+        assert_eq!(t.get(&sp(1, 10, 14)), Some(&"b"));
+        let order: Vec<&str> = t.values().copied().collect();
+        assert_eq!(
+            order,
+            ["a2", "b", "c"],
+            "insertion order, replaced in place"
+        );
+        // A repeat of the last span (not greater than it) also replaces.
+        let mut u = SpanTable::default();
+        u.insert(sp(0, 0, 1), 1);
+        assert_eq!(u.insert(sp(0, 0, 1), 2), Some(1));
+        assert_eq!(u.len(), 1);
+        assert_eq!(u.get(&sp(0, 0, 1)), Some(&2));
+    }
+
+    #[test]
+    fn with_upper_gives_the_upper_case_key() {
+        assert_eq!(with_upper("Motor_1", str::to_string), "MOTOR_1");
+        assert_eq!(with_upper("ALREADY", str::to_string), "ALREADY");
+        let long = "a".repeat(100);
+        assert_eq!(with_upper(&long, str::to_string), "A".repeat(100));
+        assert_eq!(with_upper("grün", str::to_string), "GRüN");
+    }
+}
