@@ -355,5 +355,6 @@ int main(int argc, char **argv) {
     if (ladderc_errors & LADDERC_ERR_RANGE) fprintf(stderr, "runtime: conversion out of range (saturated)\n");
     if (ladderc_errors & LADDERC_ERR_BOUNDS) fprintf(stderr, "runtime: array index out of range\n");
     if (ladderc_errors & LADDERC_ERR_STRING) fprintf(stderr, "runtime: string truncated\n");
+    if (ladderc_errors & LADDERC_ERR_STRPOS) fprintf(stderr, "runtime: string length or position out of range\n");
     return 0;
 }

@@ -138,6 +138,43 @@ void ladderc_CTUD_body(ladderc_CTUD *fb) {
     fb->QU = (IEC_BOOL)(fb->CV >= fb->PV);
     fb->QD = (IEC_BOOL)(fb->CV <= 0);
 }
+/* The typed counters: as above, saturating at the range of T (MIN..MAX). */
+#define LADDERC_COUNTER_BODIES(T, MIN, MAX)                                                        \
+    void ladderc_CTU_##T##_init(ladderc_CTU_##T *fb) { memset(fb, 0, sizeof *fb); }               \
+    void ladderc_CTU_##T##_body(ladderc_CTU_##T *fb) {                                             \
+        IEC_BOOL edge = (IEC_BOOL)(fb->CU && !fb->cu_m);                                           \
+        fb->cu_m = fb->CU ? 1u : 0u;                                                               \
+        if (fb->R) fb->CV = 0;                                                                     \
+        else if (edge && fb->CV < (MAX)) fb->CV = (IEC_##T)(fb->CV + 1);                           \
+        fb->Q = (IEC_BOOL)(fb->CV >= fb->PV);                                                      \
+    }                                                                                              \
+    void ladderc_CTD_##T##_init(ladderc_CTD_##T *fb) { memset(fb, 0, sizeof *fb); }               \
+    void ladderc_CTD_##T##_body(ladderc_CTD_##T *fb) {                                             \
+        IEC_BOOL edge = (IEC_BOOL)(fb->CD && !fb->cd_m);                                           \
+        fb->cd_m = fb->CD ? 1u : 0u;                                                               \
+        if (fb->LD) fb->CV = fb->PV;                                                               \
+        else if (edge && fb->CV > (MIN)) fb->CV = (IEC_##T)(fb->CV - 1);                           \
+        fb->Q = (IEC_BOOL)(fb->CV <= 0);                                                           \
+    }                                                                                              \
+    void ladderc_CTUD_##T##_init(ladderc_CTUD_##T *fb) { memset(fb, 0, sizeof *fb); }             \
+    void ladderc_CTUD_##T##_body(ladderc_CTUD_##T *fb) {                                           \
+        IEC_BOOL up = (IEC_BOOL)(fb->CU && !fb->cu_m);                                             \
+        IEC_BOOL down = (IEC_BOOL)(fb->CD && !fb->cd_m);                                           \
+        fb->cu_m = fb->CU ? 1u : 0u;                                                               \
+        fb->cd_m = fb->CD ? 1u : 0u;                                                               \
+        if (fb->R) fb->CV = 0;                                                                     \
+        else if (fb->LD) fb->CV = fb->PV;                                                          \
+        else if (!(up && down)) {                                                                  \
+            if (up && fb->CV < (MAX)) fb->CV = (IEC_##T)(fb->CV + 1);                              \
+            else if (down && fb->CV > (MIN)) fb->CV = (IEC_##T)(fb->CV - 1);                       \
+        }                                                                                          \
+        fb->QU = (IEC_BOOL)(fb->CV >= fb->PV);                                                     \
+        fb->QD = (IEC_BOOL)(fb->CV <= 0);                                                          \
+    }
+LADDERC_COUNTER_BODIES(DINT, INT32_MIN, INT32_MAX)
+LADDERC_COUNTER_BODIES(LINT, INT64_MIN, INT64_MAX)
+LADDERC_COUNTER_BODIES(UDINT, 0u, UINT32_MAX)
+LADDERC_COUNTER_BODIES(ULINT, 0u, UINT64_MAX)
 
 /* ------------------------------------------------------------------ strings */
 void ladderc_string_set(IEC_STRING *dst, const char *src, size_t len, unsigned cap) {

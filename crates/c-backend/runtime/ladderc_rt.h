@@ -60,6 +60,7 @@ typedef struct {
 #define LADDERC_ERR_RANGE 2u    /* REAL to integer conversion out of range or NaN: saturated */
 #define LADDERC_ERR_BOUNDS 4u   /* array index out of its declared range: element 0 used instead */
 #define LADDERC_ERR_STRING 8u   /* string truncated to its capacity */
+#define LADDERC_ERR_STRPOS 16u  /* string function length or position out of range (ladderc_strings.c) */
 
 extern uint32_t ladderc_errors;  /* sticky error flags, LADDERC_ERR_* */
 extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set before each cycle */
@@ -279,6 +280,25 @@ uint64_t ladderc_str_to_uint(IEC_STRING s);
 double ladderc_str_to_real(IEC_STRING s);
 IEC_BOOL ladderc_str_to_bool(IEC_STRING s);
 IEC_TIME ladderc_str_to_time(IEC_STRING s);
+/* The standard string functions (ladderc_strings.c), value-based; lengths and positions as int64_t. */
+#define LADDERC_STR_DECLS(P, S)                                                                       \
+    IEC_INT P##_len(S in);                                                                          \
+    S P##_left(S in, int64_t l);                                                                    \
+    S P##_right(S in, int64_t l);                                                                   \
+    S P##_mid(S in, int64_t l, int64_t p);                                                          \
+    S P##_concat(S a, S b);                                                                         \
+    S P##_insert(S a, S b, int64_t p);                                                              \
+    S P##_delete(S in, int64_t l, int64_t p);                                                       \
+    S P##_replace(S a, S b, int64_t l, int64_t p);                                                  \
+    S P##_max(S a, S b);                                                                            \
+    S P##_min(S a, S b);                                                                            \
+    S P##_limit(S mn, S in, S mx);                                                                  \
+    IEC_INT P##_find(S a, S b);
+LADDERC_STR_DECLS(ladderc_str, IEC_STRING)
+LADDERC_STR_DECLS(ladderc_wstr, IEC_WSTRING)
+IEC_DATE ladderc_str_to_date(IEC_STRING s);
+IEC_TOD ladderc_str_to_tod(IEC_STRING s);
+IEC_DT ladderc_str_to_dt(IEC_STRING s);
 
 /* ------------------------------------------------------------------ process image access */
 /* Byte order from the profile: LADDERC_BIG_ENDIAN is 0 (little) or 1 (big). Loads and stores go byte by
@@ -332,6 +352,17 @@ typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL run
 typedef struct { IEC_BOOL CU, R; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cu_m; } ladderc_CTU;
 typedef struct { IEC_BOOL CD, LD; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cd_m; } ladderc_CTD;
 typedef struct { IEC_BOOL CU, CD, R, LD; IEC_INT PV; IEC_BOOL QU, QD; IEC_INT CV; IEC_BOOL cu_m, cd_m; } ladderc_CTUD;
+/* The typed counters CTU_DINT ... CTUD_ULINT: the same FBs on PV and CV of type T. */
+#define LADDERC_COUNTER_TYPES(T)                                                                   \
+    typedef struct { IEC_BOOL CU, R; IEC_##T PV; IEC_BOOL Q; IEC_##T CV; IEC_BOOL cu_m; } ladderc_CTU_##T; \
+    typedef struct { IEC_BOOL CD, LD; IEC_##T PV; IEC_BOOL Q; IEC_##T CV; IEC_BOOL cd_m; } ladderc_CTD_##T; \
+    typedef struct {                                                                               \
+        IEC_BOOL CU, CD, R, LD; IEC_##T PV; IEC_BOOL QU, QD; IEC_##T CV; IEC_BOOL cu_m, cd_m;     \
+    } ladderc_CTUD_##T;
+LADDERC_COUNTER_TYPES(DINT)
+LADDERC_COUNTER_TYPES(LINT)
+LADDERC_COUNTER_TYPES(UDINT)
+LADDERC_COUNTER_TYPES(ULINT)
 
 #define LADDERC_FB_DECL(N)                                                                         \
     void ladderc_##N##_init(ladderc_##N *fb);                                                     \
@@ -346,6 +377,18 @@ LADDERC_FB_DECL(TP)
 LADDERC_FB_DECL(CTU)
 LADDERC_FB_DECL(CTD)
 LADDERC_FB_DECL(CTUD)
+LADDERC_FB_DECL(CTU_DINT)
+LADDERC_FB_DECL(CTD_DINT)
+LADDERC_FB_DECL(CTUD_DINT)
+LADDERC_FB_DECL(CTU_LINT)
+LADDERC_FB_DECL(CTD_LINT)
+LADDERC_FB_DECL(CTUD_LINT)
+LADDERC_FB_DECL(CTU_UDINT)
+LADDERC_FB_DECL(CTD_UDINT)
+LADDERC_FB_DECL(CTUD_UDINT)
+LADDERC_FB_DECL(CTU_ULINT)
+LADDERC_FB_DECL(CTD_ULINT)
+LADDERC_FB_DECL(CTUD_ULINT)
 
 /* ------------------------------------------------------------------ the harness contract */
 typedef enum {

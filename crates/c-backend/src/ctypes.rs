@@ -94,6 +94,37 @@ pub fn arith_helper_type(e: Elementary) -> Option<&'static str> {
     }
 }
 
+const fn ctu(t: Elementary) -> [(&'static str, Elementary, bool); 5] {
+    [
+        ("CU", E::Bool, true),
+        ("R", E::Bool, true),
+        ("PV", t, true),
+        ("Q", E::Bool, false),
+        ("CV", t, false),
+    ]
+}
+const fn ctd(t: Elementary) -> [(&'static str, Elementary, bool); 5] {
+    [
+        ("CD", E::Bool, true),
+        ("LD", E::Bool, true),
+        ("PV", t, true),
+        ("Q", E::Bool, false),
+        ("CV", t, false),
+    ]
+}
+const fn ctud(t: Elementary) -> [(&'static str, Elementary, bool); 8] {
+    [
+        ("CU", E::Bool, true),
+        ("CD", E::Bool, true),
+        ("R", E::Bool, true),
+        ("LD", E::Bool, true),
+        ("PV", t, true),
+        ("QU", E::Bool, false),
+        ("QD", E::Bool, false),
+        ("CV", t, false),
+    ]
+}
+
 /// A standard FB's runtime struct and its public parameters `(name, type, is_input)` in IEC order.
 pub fn std_fb(fb: StdFb) -> (&'static str, &'static [(&'static str, Elementary, bool)]) {
     const TRIG: &[(&str, E, bool)] = &[("CLK", E::Bool, true), ("Q", E::Bool, false)];
@@ -125,39 +156,21 @@ pub fn std_fb(fb: StdFb) -> (&'static str, &'static [(&'static str, Elementary, 
         StdFb::Ton => ("ladderc_TON", TIMER),
         StdFb::Tof => ("ladderc_TOF", TIMER),
         StdFb::Tp => ("ladderc_TP", TIMER),
-        StdFb::Ctu => (
-            "ladderc_CTU",
-            &[
-                ("CU", E::Bool, true),
-                ("R", E::Bool, true),
-                ("PV", E::Int, true),
-                ("Q", E::Bool, false),
-                ("CV", E::Int, false),
-            ],
-        ),
-        StdFb::Ctd => (
-            "ladderc_CTD",
-            &[
-                ("CD", E::Bool, true),
-                ("LD", E::Bool, true),
-                ("PV", E::Int, true),
-                ("Q", E::Bool, false),
-                ("CV", E::Int, false),
-            ],
-        ),
-        StdFb::Ctud => (
-            "ladderc_CTUD",
-            &[
-                ("CU", E::Bool, true),
-                ("CD", E::Bool, true),
-                ("R", E::Bool, true),
-                ("LD", E::Bool, true),
-                ("PV", E::Int, true),
-                ("QU", E::Bool, false),
-                ("QD", E::Bool, false),
-                ("CV", E::Int, false),
-            ],
-        ),
+        StdFb::Ctu => ("ladderc_CTU", &const { ctu(E::Int) }),
+        StdFb::Ctd => ("ladderc_CTD", &const { ctd(E::Int) }),
+        StdFb::Ctud => ("ladderc_CTUD", &const { ctud(E::Int) }),
+        StdFb::CtuDint => ("ladderc_CTU_DINT", &const { ctu(E::Dint) }),
+        StdFb::CtuLint => ("ladderc_CTU_LINT", &const { ctu(E::Lint) }),
+        StdFb::CtuUdint => ("ladderc_CTU_UDINT", &const { ctu(E::Udint) }),
+        StdFb::CtuUlint => ("ladderc_CTU_ULINT", &const { ctu(E::Ulint) }),
+        StdFb::CtdDint => ("ladderc_CTD_DINT", &const { ctd(E::Dint) }),
+        StdFb::CtdLint => ("ladderc_CTD_LINT", &const { ctd(E::Lint) }),
+        StdFb::CtdUdint => ("ladderc_CTD_UDINT", &const { ctd(E::Udint) }),
+        StdFb::CtdUlint => ("ladderc_CTD_ULINT", &const { ctd(E::Ulint) }),
+        StdFb::CtudDint => ("ladderc_CTUD_DINT", &const { ctud(E::Dint) }),
+        StdFb::CtudLint => ("ladderc_CTUD_LINT", &const { ctud(E::Lint) }),
+        StdFb::CtudUdint => ("ladderc_CTUD_UDINT", &const { ctud(E::Udint) }),
+        StdFb::CtudUlint => ("ladderc_CTUD_ULINT", &const { ctud(E::Ulint) }),
     }
 }
 

@@ -157,6 +157,7 @@ END_PROGRAM
                 location: None,
                 ty: TypeRef::Named(ident(f, "DINT")),
                 init: None,
+                edge: None,
                 span: sp,
             }],
             span: sp,
@@ -223,6 +224,7 @@ fn global(f: diagnostics::FileId, name: &str, ty: &str, init: Option<i128>) -> V
                 span: sp,
             }))
         }),
+        edge: None,
         span: sp,
     }
 }

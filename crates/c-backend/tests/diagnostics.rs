@@ -216,12 +216,10 @@ fn unsupported_constructs_are_e2005_not_bad_c() {
     let errors = generate_errors(
         "PROGRAM main
 VAR
-  s : STRING := '2024-01-31';
-  d : DATE;
+  s AT %QB0 : STRING;
 END_VAR
-  LD s
-  STRING_TO_DATE
-  ST d
+  LD 'abc'
+  ST s
 END_PROGRAM
 ",
         &TargetProfile::default(),
@@ -229,7 +227,7 @@ END_PROGRAM
     );
     assert_eq!(errors.len(), 1, "{errors:#?}");
     assert!(
-        errors[0].contains("error[E2005]") && errors[0].contains("STRING to a date"),
+        errors[0].contains("error[E2005]") && errors[0].contains("located variable"),
         "{errors:#?}"
     );
 }

@@ -68,6 +68,7 @@ fn big_program(lines: usize) -> CompilationUnit {
         location: None,
         ty: TypeRef::Named(Ident::new("INT", sp(i + 1))),
         init: None,
+        edge: None,
         span: sp(i),
     };
     CompilationUnit {

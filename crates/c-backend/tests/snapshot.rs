@@ -80,6 +80,7 @@ fn generated_c_for_a_small_program() {
             "program.c",
             "ladderc_rt.h",
             "ladderc_rt.c",
+            "ladderc_strings.c",
             "ladderc_main.c",
             "Makefile"
         ]

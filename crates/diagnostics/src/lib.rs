@@ -15,7 +15,7 @@ mod span;
 
 pub use codes::{all as all_codes, explain, lookup, Code, CodeInfo};
 pub use diagnostic::{Diagnostic, Label, Severity, XmlContext};
-pub use render::{render, render_human, render_json_line, render_short, MessageFormat};
+pub use render::{hint_of, render, render_human, render_json_line, render_short, MessageFormat};
 pub use source::{SourceFile, SourceMap};
 pub use span::{FileId, Span};
 

@@ -64,7 +64,7 @@ pub fn render_human(map: &SourceMap, diags: &[Diagnostic]) -> String {
         if let Some(ctx) = xml_context_text(d) {
             notes.push(format!("in {ctx}"));
         }
-        if let Some(h) = &d.hint {
+        if let Some(h) = hint_of(d) {
             notes.push(format!("hint: {h}"));
         }
         notes.extend(d.notes.iter().map(|n| format!("note: {n}")));
@@ -84,6 +84,18 @@ pub fn render_human(map: &SourceMap, diags: &[Diagnostic]) -> String {
     out
 }
 
+/// The diagnostic's own hint, else a pointer to its code's explanation (causes, an example, how to
+/// fix): every rendered diagnostic tells the user where to go next.
+pub fn hint_of(d: &Diagnostic) -> Option<std::borrow::Cow<'_, str>> {
+    Some(match &d.hint {
+        Some(h) => std::borrow::Cow::Borrowed(h.as_str()),
+        None => std::borrow::Cow::Owned(format!(
+            "`ladderc explain {}` shows causes and fixes",
+            d.code
+        )),
+    })
+}
+
 /// One line per diagnostic: `file:line:col: error[CODE]: message`; the hint follows after ` (hint: ...)`.
 pub fn render_short(map: &SourceMap, d: &Diagnostic) -> String {
     let loc = match d.span {
@@ -97,9 +109,7 @@ pub fn render_short(map: &SourceMap, d: &Diagnostic) -> String {
     let ctx = xml_context_text(d)
         .map(|c| format!(" [{c}]"))
         .unwrap_or_default();
-    let hint = d
-        .hint
-        .as_ref()
+    let hint = hint_of(d)
         .map(|h| format!(" (hint: {h})"))
         .unwrap_or_default();
     format!(
@@ -135,7 +145,7 @@ struct JsonDiagnostic<'a> {
     byte_start: Option<u32>,
     byte_end: Option<u32>,
     labels: Vec<JsonLabel<'a>>,
-    hint: Option<&'a str>,
+    hint: Option<std::borrow::Cow<'a, str>>,
     notes: &'a [String],
     pou: Option<&'a str>,
     local_id: Option<&'a str>,
@@ -178,7 +188,7 @@ pub fn render_json_line(map: &SourceMap, d: &Diagnostic) -> String {
         byte_start: primary.as_ref().map(|p| p.byte_start),
         byte_end: primary.as_ref().map(|p| p.byte_end),
         labels,
-        hint: d.hint.as_deref(),
+        hint: hint_of(d),
         notes: &d.notes,
         pou: d.xml.as_ref().and_then(|x| x.pou.as_deref()),
         local_id: d.xml.as_ref().and_then(|x| x.local_id.as_deref()),

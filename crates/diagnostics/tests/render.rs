@@ -63,3 +63,40 @@ fn every_code_has_a_title_and_explanation() {
         assert!(diagnostics::lookup(&c.code.0.to_lowercase()).is_some());
     }
 }
+
+#[test]
+fn every_code_explains_how_to_fix_it() {
+    for info in diagnostics::all_codes() {
+        assert!(
+            info.explanation.contains("## How to fix"),
+            "{}: no `## How to fix` section",
+            info.code
+        );
+    }
+}
+
+#[test]
+fn a_diagnostic_without_its_own_hint_points_at_its_explanation_in_every_format() {
+    let mut map = SourceMap::new();
+    let f = map.add("x.il", "LD a\n");
+    let d = Diagnostic::error(code::E1001, "undeclared name `a`").at(Span::new(f, 3, 4));
+    for format in [
+        MessageFormat::Human,
+        MessageFormat::Short,
+        MessageFormat::Json,
+    ] {
+        let text = render(&map, std::slice::from_ref(&d), format);
+        assert!(
+            text.contains("`ladderc explain E1001` shows causes and fixes"),
+            "{format:?}: {text}"
+        );
+    }
+    // A stage's own hint wins.
+    let own = d.clone().with_hint("declare `a` in a VAR block");
+    let text = render(&map, &[own], MessageFormat::Short);
+    assert!(
+        text.trim_end()
+            .ends_with("(hint: declare `a` in a VAR block)"),
+        "{text}"
+    );
+}

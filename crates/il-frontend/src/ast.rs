@@ -261,7 +261,27 @@ pub struct VarDecl {
     pub location: Option<DirectAddress>,
     pub ty: TypeRef,
     pub init: Option<Initializer>,
+    /// `R_EDGE` / `F_EDGE` after the type (edge-triggered BOOL input of a function block).
+    pub edge: Option<Edge>,
     pub span: Span,
+}
+
+/// The edge qualifier of an input declaration: the input reads TRUE only in the call in which its value
+/// rose (`R_EDGE`) or fell (`F_EDGE`), as if an implicit R_TRIG/F_TRIG instance filtered it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Edge {
+    Rising,
+    Falling,
+}
+
+impl Edge {
+    /// The keyword: `R_EDGE` or `F_EDGE`.
+    pub fn keyword(self) -> &'static str {
+        match self {
+            Edge::Rising => "R_EDGE",
+            Edge::Falling => "F_EDGE",
+        }
+    }
 }
 
 impl VarDecl {
@@ -273,12 +293,18 @@ impl VarDecl {
             location: None,
             ty,
             init: None,
+            edge: None,
             span,
         }
     }
 
     pub fn with_init(mut self, init: Initializer) -> Self {
         self.init = Some(init);
+        self
+    }
+
+    pub fn with_edge(mut self, edge: Edge) -> Self {
+        self.edge = Some(edge);
         self
     }
 

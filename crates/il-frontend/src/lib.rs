@@ -4,6 +4,7 @@
 //! repair of unclosed blocks) -> [`parser`] (lalrpop grammar with error recovery) -> [`ast`] -> `sema`
 //! (symbols, types, current-result typing, labels). Every node carries a byte [`Span`].
 //! [`print`] writes a tree back as IL; [`testgen`] generates large valid programs for tests and benches.
+//! [`st`] is the Structured Text front end: ST is parsed and lowered to this IL tree.
 
 pub mod ast;
 pub mod layout;
@@ -12,6 +13,7 @@ pub mod literal;
 pub mod parser;
 pub mod print;
 pub mod sema;
+pub mod st;
 pub mod testgen;
 
 pub use diagnostics::{FileId, Span};

@@ -466,16 +466,14 @@ impl<'s> Ctx<'s> {
         l: usize,
         r: usize,
     ) -> Vec<VarDecl> {
-        if let Some((s, e)) = edge {
-            let kw = self.text(s, e).to_ascii_uppercase();
-            self.hint(
-                code::E0016,
-                format!("edge-triggered inputs (`{kw}`) are not supported"),
-                s,
-                e,
-                "declare a plain BOOL input and detect the edge with an R_TRIG or F_TRIG instance",
-            );
-        }
+        // `R_EDGE` / `F_EDGE` (sema checks where they are allowed).
+        let edge = edge.map(|(s, e)| {
+            if self.text(s, e).eq_ignore_ascii_case("F_EDGE") {
+                Edge::Falling
+            } else {
+                Edge::Rising
+            }
+        });
         if location.is_some() && names.len() > 1 {
             let (s, e) = self.local(names[1].span);
             self.hint(
@@ -494,6 +492,7 @@ impl<'s> Ctx<'s> {
                 location: location.clone(),
                 ty: ty.clone(),
                 init: init.clone(),
+                edge,
                 span,
             })
             .collect()

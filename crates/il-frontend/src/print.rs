@@ -447,6 +447,10 @@ fn var_decl(out: &mut String, d: &VarDecl, level: usize) {
     }
     out.push_str(" : ");
     type_ref(out, &d.ty);
+    if let Some(e) = d.edge {
+        out.push(' ');
+        out.push_str(e.keyword());
+    }
     if let Some(i) = &d.init {
         out.push_str(" := ");
         initializer(out, i);

@@ -39,7 +39,7 @@ fn analyse(names: &[&str]) -> (Model, String, Vec<String>) {
     (model, last, lines)
 }
 
-/// The semantic diagnostics only (the parser's own, e.g. E0016 for `R_EDGE`, are the parser's business).
+/// The semantic diagnostics only (the parser's own are the parser's business).
 fn sema_only(d: &[String]) -> Vec<String> {
     d.iter()
         .filter(|l| l.contains("[E1") || l.contains("[W1"))
@@ -81,7 +81,7 @@ fn annex_f_stack_int_is_clean() {
         let start = src.find(text).unwrap_or_else(|| panic!("{text}")) as u32;
         m.instrs
             .iter()
-            .find(|(s, _)| s.start == start)
+            .find(|(_, i)| i.span.start == start)
             .unwrap_or_else(|| panic!("no instruction at {text}"))
             .1
     };

@@ -22,7 +22,7 @@ fn three_thousand_nested_deferred_operators() {
     let p = &m.pous[0];
     assert_eq!(p.instrs.len(), depth + 6);
     // Pre-order: the outermost `AND(` is the second instruction and reads the BOOL from `LD a`.
-    let outer = m.instr(p.instrs[1]).unwrap();
+    let outer = m.instr_by_id(p.instrs[1]).unwrap();
     assert_eq!(outer.cr_before, Some(il_frontend::sema::Type::BOOL));
     assert_eq!(outer.cr_after, Some(il_frontend::sema::Type::BOOL));
 }

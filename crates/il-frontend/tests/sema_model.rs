@@ -16,7 +16,7 @@ fn info_at<'m>(model: &'m Model, src: &str, text: &str, n: usize) -> &'m InstrIn
     model
         .instrs
         .iter()
-        .find(|(s, _)| s.start == start)
+        .find(|(_, i)| i.span.start == start)
         .map(|(_, i)| i)
         .unwrap_or_else(|| panic!("no instruction at `{text}`"))
 }
@@ -480,6 +480,7 @@ fn configuration_tasks_and_program_instances() {
                 location: None,
                 ty: ast::TypeRef::Named(id("REAL")),
                 init: None,
+                edge: None,
                 span: s(),
             }],
             span: s(),
@@ -498,6 +499,7 @@ fn configuration_tasks_and_program_instances() {
                 location: None,
                 ty: ast::TypeRef::Named(id("REAL")),
                 init: None,
+                edge: None,
                 span: s(),
             }],
             span: s(),
@@ -608,9 +610,12 @@ END_PROGRAM
     let p = m.pou(PouId(0));
     assert_eq!(p.instrs.len(), 4);
     let deferred = info_at(&m, src, "AND(", 0);
-    assert_eq!(m.instr(p.instrs[1]).unwrap(), deferred);
+    assert_eq!(m.instr_by_id(p.instrs[1]).unwrap(), deferred);
     assert_eq!(deferred.operand, Some(Type::BOOL));
-    assert_eq!(m.instr(p.instrs[2]).unwrap(), info_at(&m, src, "OR c", 0));
+    assert_eq!(
+        m.instr_by_id(p.instrs[2]).unwrap(),
+        info_at(&m, src, "OR c", 0)
+    );
     // The nested list starts with its operand as current result.
     assert_eq!(info_at(&m, src, "OR c", 0).cr_before, Some(Type::BOOL));
 }

@@ -11,6 +11,7 @@ fn sample(class: Class) -> &'static str {
     match class {
         Class::AnyReal => "REAL",
         Class::AnyBit => "WORD",
+        Class::AnyString => "STRING",
         _ => "INT",
     }
 }
@@ -20,7 +21,8 @@ fn the_catalogue_lists_the_iec_functions() {
     for name in [
         "ADD", "SUB", "MUL", "DIV", "MOD", "EXPT", "ABS", "SQRT", "LN", "LOG", "EXP", "SIN", "COS",
         "TAN", "ASIN", "ACOS", "ATAN", "GT", "GE", "EQ", "NE", "LE", "LT", "AND", "OR", "XOR",
-        "NOT", "SHL", "SHR", "ROL", "ROR", "SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE",
+        "NOT", "SHL", "SHR", "ROL", "ROR", "SEL", "MAX", "MIN", "LIMIT", "MUX", "MOVE", "LEN",
+        "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND",
     ] {
         assert!(stdlib::function(name).is_some(), "{name} missing");
         assert!(
@@ -75,7 +77,7 @@ fn every_standard_function_is_callable_on_its_class() {
         let (m, d) = analyze_src(&src);
         assert!(d.is_empty(), "{src}\n{d}");
         let at = src.find(&format!("  {} ", f.name)).unwrap() as u32 + 2;
-        let info = m.instrs.iter().find(|(s, _)| s.start == at).unwrap().1;
+        let info = m.instrs.iter().find(|(_, i)| i.span.start == at).unwrap().1;
         match &info.callee {
             Some(Callee::Std { name, .. }) => assert_eq!(*name, f.name),
             other => panic!("{}: callee {other:?}", f.name),
@@ -161,6 +163,15 @@ fn standard_function_blocks_have_their_iec_parameters() {
     insta::assert_snapshot!(all.join("\n"));
     assert_eq!(StdFb::from_name("ctu_int"), Some(StdFb::Ctu));
     assert_eq!(StdFb::from_name("r_trig"), Some(StdFb::RTrig));
+    assert_eq!(
+        StdFb::from_name("ctud_ulint").and_then(StdFb::counter),
+        Some((il_frontend::sema::CounterKind::UpDown, Elementary::Ulint))
+    );
+    assert_eq!(
+        StdFb::Ctd.counter(),
+        Some((il_frontend::sema::CounterKind::Down, Elementary::Int))
+    );
+    assert_eq!(StdFb::Ton.counter(), None);
     for fb in StdFb::ALL {
         assert!(!stdlib::fb_doc(fb).is_empty());
     }

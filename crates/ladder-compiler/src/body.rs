@@ -1,10 +1,11 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
-//! [`crate::lower`]; IL is parsed in place by the IL front end; ST and SFC get one precise diagnostic
-//! (E3003/E3004) naming the POU, and the POU keeps an empty body; an ST/SFC POU that no program instance
-//! reaches only gets warning W3004.
+//! [`crate::lower`]; SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST is parsed
+//! and lowered to IL by [`crate::st_body`]; an ST POU that no program instance reaches only gets warning
+//! W3004.
 //!
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
-//! temporaries), one extra `VAR` block holding them; `None` for an unused ST/SFC POU, which is left out.
+//! temporaries, chart state), one extra `VAR` (LD/FBD/SFC) or `VAR_TEMP` (ST) block holding them;
+//! `None` for an unused ST POU, which is left out.
 
 use crate::context::Ctx;
 use crate::graph;
@@ -14,6 +15,7 @@ use crate::xml::Element;
 use diagnostics::{code, Diagnostic, XmlContext};
 use il_frontend::ast::{IlStmt, Pou, VarBlock, VarKind};
 
+/// The body of one POU in the IL syntax tree, with the hidden variables its lowering needs.
 pub fn lower_pou_body(
     ctx: &mut Ctx,
     index: &Index,
@@ -53,14 +55,11 @@ pub fn lower_pou_body(
             Some((stmts, block))
         }
         "IL" => Some((crate::il_body::parse(ctx, lang, name), None)),
-        "ST" | "SFC" if !used => {
+        "ST" if !used => {
             ctx.report(
                 Diagnostic::warning(
                     code::W3004,
-                    format!(
-                        "POU `{name}` ({}) is not used by any program instance and is skipped",
-                        if lang.name == "ST" { "ST" } else { "SFC" }
-                    ),
+                    format!("POU `{name}` (ST) is not used by any program instance and is skipped"),
                 )
                 .at(span)
                 .with_xml(xml_ctx),
@@ -68,30 +67,19 @@ pub fn lower_pou_body(
             None
         }
         "ST" => {
-            ctx.report(
-                Diagnostic::error(
-                    code::E3003,
-                    format!("ST bodies are not supported yet: POU `{name}` is written in ST"),
-                )
-                .at(span)
-                .with_primary_label("Structured Text body")
-                .with_hint("rewrite the POU in IL, LD or FBD; its interface is still checked")
-                .with_xml(xml_ctx),
-            );
-            Some((Vec::new(), None))
+            let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou);
+            Some((stmts, temps))
         }
         "SFC" => {
-            ctx.report(
-                Diagnostic::error(
-                    code::E3004,
-                    format!("SFC bodies are not supported yet: POU `{name}` is a sequential function chart"),
-                )
-                .at(span)
-                .with_primary_label("SFC body")
-                .with_hint("rewrite the sequence in LD or IL; its interface is still checked")
-                .with_xml(xml_ctx),
-            );
-            Some((Vec::new(), None))
+            let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
+            let block = (!hidden.is_empty()).then_some(VarBlock {
+                kind: VarKind::Local,
+                constant: false,
+                retain: false,
+                vars: hidden,
+                span,
+            });
+            Some((stmts, block))
         }
         other => {
             ctx.report(

@@ -58,6 +58,90 @@ pub static STD_FBS: &[StdFb] = &[
         outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "INT")],
     },
     StdFb {
+        name: "CTU_DINT",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "DINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "DINT")],
+    },
+    StdFb {
+        name: "CTD_DINT",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "DINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "DINT")],
+    },
+    StdFb {
+        name: "CTUD_DINT",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "DINT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "DINT")],
+    },
+    StdFb {
+        name: "CTU_LINT",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "LINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "LINT")],
+    },
+    StdFb {
+        name: "CTD_LINT",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "LINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "LINT")],
+    },
+    StdFb {
+        name: "CTUD_LINT",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "LINT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "LINT")],
+    },
+    StdFb {
+        name: "CTU_UDINT",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "UDINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "UDINT")],
+    },
+    StdFb {
+        name: "CTD_UDINT",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "UDINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "UDINT")],
+    },
+    StdFb {
+        name: "CTUD_UDINT",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "UDINT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "UDINT")],
+    },
+    StdFb {
+        name: "CTU_ULINT",
+        inputs: &[("CU", "BOOL"), ("R", "BOOL"), ("PV", "ULINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "ULINT")],
+    },
+    StdFb {
+        name: "CTD_ULINT",
+        inputs: &[("CD", "BOOL"), ("LD", "BOOL"), ("PV", "ULINT")],
+        outputs: &[("Q", "BOOL"), ("CV", "ULINT")],
+    },
+    StdFb {
+        name: "CTUD_ULINT",
+        inputs: &[
+            ("CU", "BOOL"),
+            ("CD", "BOOL"),
+            ("R", "BOOL"),
+            ("LD", "BOOL"),
+            ("PV", "ULINT"),
+        ],
+        outputs: &[("QU", "BOOL"), ("QD", "BOOL"), ("CV", "ULINT")],
+    },
+    StdFb {
         name: "TP",
         inputs: TIMER_IN,
         outputs: TIMER_OUT,
@@ -229,6 +313,13 @@ pub fn std_function(name: &str) -> Option<StdFunction> {
         "MUX" => f(same, None, 1),
         "TRUNC" => f(ResultRule::Fixed("DINT"), None, 0),
         "LEN" | "FIND" => f(ResultRule::Fixed("INT"), None, 0),
+        "ADD_TIME" | "SUB_TIME" | "MUL_TIME" | "DIV_TIME" | "SUB_DATE_DATE" | "SUB_TOD_TOD"
+        | "SUB_DT_DT" => f(ResultRule::Fixed("TIME"), None, 0),
+        "ADD_LTIME" | "SUB_LTIME" | "MUL_LTIME" | "DIV_LTIME" => {
+            f(ResultRule::Fixed("LTIME"), None, 0)
+        }
+        "ADD_TOD_TIME" | "SUB_TOD_TIME" => f(ResultRule::Fixed("TOD"), None, 0),
+        "ADD_DT_TIME" | "SUB_DT_TIME" | "CONCAT_DATE_TOD" => f(ResultRule::Fixed("DT"), None, 0),
         "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE" => {
             f(ResultRule::Fixed("STRING"), None, 0)
         }

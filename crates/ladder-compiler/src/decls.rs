@@ -277,6 +277,7 @@ pub fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
         location,
         ty,
         init,
+        edge: None,
         span,
     })
 }

@@ -416,6 +416,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                     )
                     .at(r.span)
                     .with_primary_label("dangling wire")
+                    .with_hint("re-draw the wire in the editor, or set `refLocalId` to the localId of the element that drives it")
                     .with_xml(diagnostics::XmlContext {
                         pou: Some(pou.to_string()),
                         local_id: Some(node.id.clone()),
@@ -462,6 +463,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                         format!("continuation `{name}` has no connector of that name"),
                     )
                     .at(n.span)
+                    .with_hint("add a connector with this name in the same POU, or rename the continuation")
                     .with_xml(diagnostics::XmlContext {
                         pou: Some(pou.to_string()),
                         local_id: Some(n.id.clone()),

@@ -1,7 +1,7 @@
 //! ladder-compiler: PLCopen TC6 XML projects (tc6_0201, tc6_0200, v1.0) to the IL syntax tree.
 //!
 //! Input: the XML text of a project. Output: an [`ast::CompilationUnit`] with the project's data types,
-//! POUs (LD and FBD networks lowered to IL, IL bodies parsed in place) and configurations, plus
+//! POUs (LD and FBD networks lowered to IL, IL bodies parsed in place, ST bodies lowered to IL) and configurations, plus
 //! diagnostics in the engineer's terms (POU, network, localId, XML line and column).
 //! Invariants: never panics on bad input; every lowered node's span points at the XML element it came
 //! from; the rest of the project still compiles when one POU cannot be lowered.
@@ -17,6 +17,8 @@ pub mod graph;
 pub mod il_body;
 pub mod lower;
 pub mod project;
+pub mod sfc;
+pub mod st_body;
 pub mod testgen;
 pub mod values;
 pub mod xml;

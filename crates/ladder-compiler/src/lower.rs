@@ -209,6 +209,7 @@ impl<'i> BodyLowering<'i> {
                     location: None,
                     ty: ty.clone(),
                     init: None,
+                    edge: None,
                     span,
                 });
             }
@@ -227,6 +228,7 @@ impl<'i> BodyLowering<'i> {
                 location: None,
                 ty,
                 init: None,
+                edge: None,
                 span,
             });
         }
@@ -244,6 +246,7 @@ impl<'i> BodyLowering<'i> {
                 location: None,
                 ty: TypeRef::Named(Ident::new(if falling { "F_TRIG" } else { "R_TRIG" }, span)),
                 init: None,
+                edge: None,
                 span,
             });
         }
@@ -737,16 +740,18 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         let ty = self.ty(v);
         if let Some(f) = family_of(&ty) {
             if f != Family::Bool {
-                let d = self.diag(
-                    ctx,
-                    code::E3008,
-                    node,
-                    span,
-                    format!(
-                        "{what} needs BOOL power flow, but is driven by {}",
-                        type_text(&ty)
-                    ),
-                );
+                let d = self
+                    .diag(
+                        ctx,
+                        code::E3008,
+                        node,
+                        span,
+                        format!(
+                            "{what} needs BOOL power flow, but is driven by {}",
+                            type_text(&ty)
+                        ),
+                    )
+                    .with_hint("drive it from a BOOL: compare the value first (`GT`, `EQ`, ...)");
                 ctx.report(d);
             }
         }
@@ -762,7 +767,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     node,
                     span,
                     format!("{what} variable has type {}, not BOOL", type_text(&ty)),
-                );
+                )
+                .with_hint("contacts and coils take BOOL variables: use a compare block for other types");
                 ctx.report(d);
             }
         }
@@ -842,7 +848,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                             span,
                             format!("contact `{var}` is not connected on its left side"),
                         )
-                        .with_primary_label("no power can reach this contact");
+                        .with_primary_label("no power can reach this contact")
+                        .with_hint("wire the contact to the left power rail (directly or through other contacts), or delete it");
                     ctx.report(d);
                 }
                 if let Some(v) = input {
@@ -891,7 +898,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                                 span,
                                 format!("coil `{var}` is not connected on its left side"),
                             )
-                            .with_primary_label("this coil is never written");
+                            .with_primary_label("this coil is never written")
+                            .with_hint("wire the coil to the left power rail through its contacts, or delete it");
                         ctx.report(d);
                     }
                     self.poisoned.insert(i);
@@ -1059,7 +1067,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                         type_text(&from),
                         type_text(&to)
                     ),
-                );
+                )
+                .with_hint("insert a conversion block (`INT_TO_REAL`, ...) or change the variable's type");
                 ctx.report(d);
             }
         }
@@ -1206,7 +1215,12 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                                     type_text(&to),
                                     type_text(&from)
                                 ),
-                            );
+                            )
+                            .with_hint(if type_text(&to) == "BOOL" {
+                                "compare the value first (`GT`, `NE`, ...) to get a BOOL"
+                            } else {
+                                "insert a conversion block (`INT_TO_REAL`, ...) before this input"
+                            });
                             ctx.report(d);
                         }
                     }
@@ -1324,7 +1338,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     _ => (FuncForm::Formal, None),
                 };
                 let arity_ok = match &form {
-                    FuncForm::Operator(OperatorBlock::Compare(_)) => args.len() == 2,
+                    FuncForm::Operator(OperatorBlock::Compare(_)) => args.len() >= 2,
                     FuncForm::Operator(OperatorBlock::Not | OperatorBlock::Move) => args.len() == 1,
                     FuncForm::Operator(_) => args.len() >= 2,
                     _ => true,
@@ -1816,9 +1830,28 @@ fn emit_function(
             match op {
                 OperatorBlock::Not => out.push(simple(Op::Not, false, None, span)),
                 OperatorBlock::Move => {}
-                OperatorBlock::Arith(o) | OperatorBlock::Compare(o) | OperatorBlock::Logic(o) => {
+                OperatorBlock::Arith(o) | OperatorBlock::Logic(o) => {
                     for (_, a) in it {
                         out.push(simple(*o, false, Some(a), span));
+                    }
+                }
+                // An extensible comparison is a chain: GT(a, b, c) = (a > b) AND (b > c).
+                OperatorBlock::Compare(o) => {
+                    let rest: Vec<Operand> = it.map(|(_, a)| a).collect();
+                    if let Some(second) = rest.first() {
+                        out.push(simple(*o, false, Some(second.clone()), span));
+                    }
+                    for pair in rest.windows(2) {
+                        out.push(instr(
+                            InstrKind::Deferred {
+                                op: Op::And,
+                                negate: false,
+                                operand: Some(pair[0].clone()),
+                                body: vec![simple(*o, false, Some(pair[1].clone()), span)],
+                                close: span,
+                            },
+                            span,
+                        ));
                     }
                 }
             }

@@ -133,6 +133,13 @@ pub enum Command {
         /// ends marked from watched `.busy` / `.done` columns).
         #[arg(long)]
         plot: Option<PathBuf>,
+        /// Write the run's motion (every axis's traced set position, velocity, acceleration) as a PMAC
+        /// PVT rotary-buffer script (dialect: --pmac-dialect).
+        #[arg(long)]
+        pmac_pvt: Option<PathBuf>,
+        /// PVT segment time in ms for --pmac-pvt (a whole number of cycles).
+        #[arg(long, default_value_t = 10.0)]
+        pvt_ms: f64,
     },
     /// Motion planning tools.
     #[command(subcommand)]
@@ -242,6 +249,8 @@ pub fn main() -> i32 {
             watch,
             sanitize,
             plot,
+            pmac_pvt,
+            pvt_ms,
         } => {
             let run = c_backend::RunOptions {
                 cycles,
@@ -250,7 +259,15 @@ pub fn main() -> i32 {
                 trace,
                 watch,
             };
-            run_program(&compile, cycle_ms, run, sanitize, plot, cli.message_format)
+            let pvt = pmac_pvt.map(|p| (p, pvt_ms));
+            run_program(
+                &compile,
+                cycle_ms,
+                run,
+                sanitize,
+                (plot, pvt),
+                cli.message_format,
+            )
         }
     }
 }
@@ -481,7 +498,7 @@ fn run_program(
     cycle_ms: Option<f64>,
     mut run: c_backend::RunOptions,
     sanitize: bool,
-    plot: Option<PathBuf>,
+    (plot, pvt): (Option<PathBuf>, Option<(PathBuf, f64)>),
     format: Format,
 ) -> i32 {
     let mut s = pipeline::Session::new();
@@ -497,9 +514,14 @@ fn run_program(
         return code;
     }
     run.cycle_ms = lowered.cycle_ms;
-    if plot.is_some() && !run.watch.is_empty() {
+    if (plot.is_some() || pvt.is_some()) && !run.watch.is_empty() {
+        let signals: &[&str] = if pvt.is_some() {
+            &["position", "velocity", "acceleration"]
+        } else {
+            &["position", "velocity"]
+        };
         for a in &lowered.axes.axes {
-            for sig in ["position", "velocity"] {
+            for sig in signals {
                 let col = format!("axis.{}.{sig}", a.name);
                 if !run.watch.iter().any(|w| w.eq_ignore_ascii_case(&col)) {
                     run.watch.push(col);
@@ -576,6 +598,38 @@ fn run_program(
                 "the program needs configured axes (--axes) for a plot",
                 format,
             );
+        }
+    }
+    if let (true, Some((path, segment_ms))) = (out.success(), &pvt) {
+        let text = match &run.trace {
+            Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
+            None => out.stdout.clone(),
+        };
+        let dialect = match c.pmac_dialect.parse() {
+            Ok(d) => d,
+            Err(e) => {
+                let d = Diagnostic::error(diagnostics::code::E9002, format!("--pmac-dialect: {e}"))
+                    .with_hint("use turbo or power");
+                emit(&SourceMap::new(), &[d], format);
+                if let Some(tmp) = &run.trace {
+                    let _ = std::fs::remove_file(tmp);
+                }
+                return EXIT_DIAGNOSTICS;
+            }
+        };
+        if let Err(d) = crate::pmac_out::write_pvt(
+            &text,
+            &lowered.axes,
+            lowered.cycle_ms,
+            dialect,
+            *segment_ms,
+            path,
+        ) {
+            emit(&SourceMap::new(), &[*d], format);
+            if let Some(tmp) = &run.trace {
+                let _ = std::fs::remove_file(tmp);
+            }
+            return EXIT_DIAGNOSTICS;
         }
     }
     match (out.success(), &final_trace, &run.trace) {

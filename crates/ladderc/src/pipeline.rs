@@ -187,15 +187,20 @@ impl Session {
         if self.diags.has_errors() {
             return None;
         }
-        let mut all_units = Vec::new();
-        if uses_blocks {
+        // The model is valid only for the very units it was computed from (it keys instructions by
+        // identity): without block lowering those are `checked`, which is then compiled as it is.
+        let all_units = if uses_blocks {
+            let mut all_units = Vec::new();
             let post = param_passing::prelude::after_lowering(&library);
             let f = self.map.add("<PLCopen block instances>", post.clone());
             all_units.push(il_frontend::parse(f, &post, &mut self.diags));
             let f = self.map.add("<axis configuration>", axes_il.clone());
             all_units.push(il_frontend::parse(f, &axes_il, &mut self.diags));
-        }
-        all_units.extend(lowering.units.iter().cloned());
+            all_units.extend(lowering.units.iter().cloned());
+            all_units
+        } else {
+            checked
+        };
         Some(Lowered {
             source_units,
             units: lowering.units.clone(),

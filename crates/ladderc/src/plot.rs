@@ -1,9 +1,15 @@
 //! `ladderc run --plot out.svg`: position and velocity of every axis over time, from the run's trace.
 //!
 //! Input: the trace CSV (`cycle,time_ms,...` with `axis.<name>.position` / `.velocity` columns, and
-//! optionally block outputs ending in `.busy` / `.done`). Output: an SVG with two charts (position,
-//! velocity) sharing the time axis, one line per axis; a rising `Busy` (block start) is marked by a
-//! green vertical line, a rising `Done` (block end) by a red one. Invariant: only the trace is read.
+//! optionally block outputs ending in `.busy` / `.active` / `.done` / `.commandaborted`). Output: an SVG
+//! with two charts (position, velocity) sharing the time axis, one line per axis (and the path speed
+//! `|v|` when there are several axes), and the blocks' events marked the way paper B's Fig. 8 marks them
+//! ([`events`]): a block's start (rising `Active`, or rising `Busy` when the block has no `Active`
+//! column) as a green vertical line, a junction (one block ends, by `Done` or `CommandAborted`, in the
+//! cycle another starts, or the next cycle) as a blue one, a block's end that no other block continues as a red one; each
+//! line is labelled with the block and, for a junction, the path speed there. Block outputs of a row
+//! were computed in the scan before that cycle's engine step, so an event seen in row k is drawn at row
+//! k-1's time and speed (the axis state the block reacted to). Invariant: only the trace is read.
 
 use plotters::prelude::*;
 use std::path::Path;
@@ -37,6 +43,95 @@ fn parse(csv: &str) -> Result<Trace, String> {
     })
 }
 
+/// What happened to a block at a row of the trace.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Event {
+    /// The block started (and no other block ended there).
+    Start { row: usize, block: String },
+    /// `from` ended (Done or CommandAborted) and `to` started in the same cycle (or the next one).
+    Junction {
+        row: usize,
+        from: String,
+        to: String,
+    },
+    /// The block ended and no other block started there.
+    End { row: usize, block: String },
+}
+
+impl Event {
+    pub fn row(&self) -> usize {
+        match self {
+            Event::Start { row, .. } | Event::Junction { row, .. } | Event::End { row, .. } => *row,
+        }
+    }
+}
+
+/// The block events of a trace, ordered by row. A block is the prefix of its output columns
+/// (`prog.move_a` of `prog.move_a.Done`); outputs are matched without regard to case.
+pub fn events(columns: &[(String, Vec<f64>)]) -> Vec<Event> {
+    let mut blocks: Vec<String> = Vec::new();
+    let find = |block: &str, out: &str| {
+        columns
+            .iter()
+            .find(|(n, _)| n.eq_ignore_ascii_case(&format!("{block}.{out}")))
+            .map(|(_, v)| v)
+    };
+    for (n, _) in columns {
+        if let Some((b, out)) = n.rsplit_once('.') {
+            let out = out.to_ascii_lowercase();
+            if ["busy", "active", "done", "commandaborted"].contains(&out.as_str())
+                && !n.starts_with("axis.")
+                && !blocks.iter().any(|x| x.eq_ignore_ascii_case(b))
+            {
+                blocks.push(b.to_string());
+            }
+        }
+    }
+    let mut starts: Vec<(usize, String)> = Vec::new();
+    let mut ends: Vec<(usize, String)> = Vec::new();
+    for b in &blocks {
+        if let Some(v) = find(b, "active").or_else(|| find(b, "busy")) {
+            starts.extend(rises(v).into_iter().map(|r| (r, b.clone())));
+        }
+        for out in ["done", "commandaborted"] {
+            if let Some(v) = find(b, out) {
+                ends.extend(rises(v).into_iter().map(|r| (r, b.clone())));
+            }
+        }
+    }
+    let mut out = Vec::new();
+    let mut used = vec![false; starts.len()];
+    for (row, from) in ends {
+        match starts
+            .iter()
+            .enumerate()
+            .find(|(k, (r, b))| !used[*k] && r.abs_diff(row) <= 1 && *b != from)
+        {
+            Some((k, (_, to))) => {
+                used[k] = true;
+                out.push(Event::Junction {
+                    row,
+                    from,
+                    to: to.clone(),
+                });
+            }
+            None => out.push(Event::End { row, block: from }),
+        }
+    }
+    for (k, (row, block)) in starts.into_iter().enumerate() {
+        if !used[k] {
+            out.push(Event::Start { row, block });
+        }
+    }
+    out.sort_by_key(Event::row);
+    out
+}
+
+/// The last name part of a block path (`move_a` of `prog.move_a`).
+fn short(block: &str) -> &str {
+    block.rsplit('.').next().unwrap_or(block)
+}
+
 /// The rows where a 0/1 column rises.
 fn rises(v: &[f64]) -> Vec<usize> {
     (0..v.len())
@@ -57,6 +152,57 @@ fn range(vals: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
+fn series_of(columns: &[(String, Vec<f64>)], signal: &str) -> Vec<(String, Vec<f64>)> {
+    columns
+        .iter()
+        .filter(|(n, _)| n.starts_with("axis.") && n.ends_with(&format!(".{signal}")))
+        .cloned()
+        .collect()
+}
+
+/// At most about [`MAX_POINTS`] points of a series: per bucket of rows its first, smallest and largest
+/// value (in time order), so that steps and peaks stay visible; non-finite values are left out.
+fn thin(time: &[f64], v: &[f64]) -> Vec<(f64, f64)> {
+    let n = time.len().min(v.len());
+    let bucket = n.div_ceil(MAX_POINTS / 3).max(1);
+    let mut out = Vec::new();
+    let mut start = 0;
+    while start < n {
+        let end = (start + bucket).min(n);
+        let mut rows: Vec<usize> = (start..end).filter(|&k| v[k].is_finite()).collect();
+        if let (Some(&first), Some(&lo), Some(&hi)) = (
+            rows.first(),
+            rows.iter().min_by(|a, b| v[**a].total_cmp(&v[**b])),
+            rows.iter().max_by(|a, b| v[**a].total_cmp(&v[**b])),
+        ) {
+            rows = vec![first, lo, hi, end - 1];
+            rows.retain(|k| v[*k].is_finite());
+            rows.sort_unstable();
+            rows.dedup();
+            out.extend(rows.into_iter().map(|k| (time[k], v[k])));
+        }
+        start = end;
+    }
+    out
+}
+
+/// Points per series drawn at most (about).
+const MAX_POINTS: usize = 6000;
+
+/// `|v|` per row over the axes' velocity columns.
+fn path_speed(velocities: &[(String, Vec<f64>)]) -> Vec<f64> {
+    let rows = velocities.first().map_or(0, |(_, v)| v.len());
+    (0..rows)
+        .map(|k| {
+            velocities
+                .iter()
+                .map(|(_, v)| v.get(k).copied().unwrap_or(f64::NAN).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .collect()
+}
+
 /// Draws the plot of `csv` into the SVG file `out`.
 pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
     let t = parse(csv)?;
@@ -65,30 +211,23 @@ pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
     root.fill(&WHITE).map_err(|x| e(&x))?;
     let areas = root.split_evenly((2, 1));
     let (t0, t1) = range(t.time_s.iter().copied());
-    let starts: Vec<usize> = t
-        .columns
-        .iter()
-        .filter(|(n, _)| n.to_ascii_lowercase().ends_with(".busy"))
-        .flat_map(|(_, v)| rises(v))
-        .collect();
-    let ends: Vec<usize> = t
-        .columns
-        .iter()
-        .filter(|(n, _)| n.to_ascii_lowercase().ends_with(".done"))
-        .flat_map(|(_, v)| rises(v))
-        .collect();
+    let evs = events(&t.columns);
     for (area, signal, unit) in [
         (&areas[0], "position", "position"),
         (&areas[1], "velocity", "velocity /s"),
     ] {
-        let series: Vec<(&String, &Vec<f64>)> = t
+        let mut series: Vec<(String, Vec<f64>)> = t
             .columns
             .iter()
             .filter(|(n, _)| n.starts_with("axis.") && n.ends_with(&format!(".{signal}")))
-            .map(|(n, v)| (n, v))
+            .cloned()
             .collect();
         if series.is_empty() {
             return Err(format!("the trace has no axis.<name>.{signal} column"));
+        }
+        if signal == "velocity" && series.len() > 1 {
+            let speed = path_speed(&series);
+            series.push(("axis.path speed |v|".to_string(), speed));
         }
         let (y0, y1) = range(series.iter().flat_map(|(_, v)| v.iter().copied()));
         let mut chart = ChartBuilder::on(area)
@@ -105,28 +244,50 @@ pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
             .draw()
             .map_err(|x| e(&x))?;
         for (k, (name, v)) in series.iter().enumerate() {
+            let name = name.as_str();
             let color = Palette99::pick(k).to_rgba();
             chart
                 .draw_series(std::iter::once(PathElement::new(
-                    t.time_s
-                        .iter()
-                        .copied()
-                        .zip(v.iter().copied())
-                        .filter(|p| p.1.is_finite())
-                        .collect::<Vec<_>>(),
+                    thin(&t.time_s, v),
                     color.stroke_width(2),
                 )))
                 .map_err(|x| e(&x))?
                 .label(name.trim_start_matches("axis."))
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
         }
-        for (rows, color) in [(&starts, GREEN), (&ends, RED)] {
-            for &k in rows.iter() {
-                let x = t.time_s[k];
+        let speed = path_speed(&series_of(&t.columns, "velocity"));
+        for (n, ev) in evs.iter().enumerate() {
+            // a row's block outputs were computed by the scan before that cycle's engine step, i.e. from
+            // the axis state of the row before: the event happened there
+            let k = ev.row().saturating_sub(1);
+            let x = t.time_s[k];
+            let (color, label) = match ev {
+                Event::Start { block, .. } => (GREEN, format!("start {}", short(block))),
+                Event::Junction { from, to, .. } => (
+                    BLUE,
+                    format!(
+                        "junction {}->{} |v|={:.3}",
+                        short(from),
+                        short(to),
+                        speed.get(k).copied().unwrap_or(f64::NAN)
+                    ),
+                ),
+                Event::End { block, .. } => (RED, format!("end {}", short(block))),
+            };
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    vec![(x, y0), (x, y1)],
+                    color.stroke_width(1),
+                )))
+                .map_err(|x| e(&x))?;
+            if signal == "position" {
+                // labels stacked downwards so neighbouring events stay readable
+                let y = y1 - (y1 - y0) * (0.04 + 0.07 * (n % 4) as f64);
                 chart
-                    .draw_series(std::iter::once(PathElement::new(
-                        vec![(x, y0), (x, y1)],
-                        color.stroke_width(1),
+                    .draw_series(std::iter::once(Text::new(
+                        label,
+                        (x, y),
+                        ("sans-serif", 11).into_font().color(&color),
                     )))
                     .map_err(|x| e(&x))?;
             }
@@ -165,5 +326,105 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let err = svg("cycle,time_ms,x\n0,0,1\n", &dir.path().join("p.svg")).unwrap_err();
         assert!(err.contains("axis.<name>.position"), "{err}");
+    }
+
+    #[test]
+    fn paper_b_style_events_start_junctions_end() {
+        let col = |n: &str, v: &[u8]| (n.to_string(), v.iter().map(|&x| x as f64).collect());
+        let columns = vec![
+            col("p.a.Busy", &[1, 1, 1, 0, 0, 0, 0, 0]),
+            col("p.a.Active", &[1, 1, 1, 0, 0, 0, 0, 0]),
+            col("p.a.Done", &[0, 0, 0, 1, 1, 1, 1, 1]),
+            col("p.b.Busy", &[1, 1, 1, 1, 1, 0, 0, 0]),
+            col("p.b.Active", &[0, 0, 0, 1, 1, 0, 0, 0]),
+            col("p.b.Done", &[0, 0, 0, 0, 0, 1, 1, 1]),
+            col("p.c.BUSY", &[1, 1, 1, 1, 1, 1, 1, 0]),
+            col("p.c.active", &[0, 0, 0, 0, 0, 0, 1, 0]),
+            col("p.c.done", &[0, 0, 0, 0, 0, 0, 0, 1]),
+            col("axis.X.position", &[0; 8]),
+        ];
+        let ev = events(&columns);
+        let s = |x: &str| x.to_string();
+        assert_eq!(
+            ev,
+            vec![
+                Event::Start {
+                    row: 0,
+                    block: s("p.a")
+                },
+                Event::Junction {
+                    row: 3,
+                    from: s("p.a"),
+                    to: s("p.b")
+                },
+                Event::Junction {
+                    row: 5,
+                    from: s("p.b"),
+                    to: s("p.c")
+                },
+                Event::End {
+                    row: 7,
+                    block: s("p.c")
+                },
+            ]
+        );
+        // without Active columns a rising Busy is the start; an aborted block ends a junction too
+        let columns = vec![
+            col("m1.busy", &[1, 1, 0, 0]),
+            col("m1.commandaborted", &[0, 0, 1, 0]),
+            col("m2.busy", &[0, 0, 1, 0]),
+            col("m2.done", &[0, 0, 0, 1]),
+        ];
+        assert_eq!(
+            events(&columns),
+            vec![
+                Event::Start {
+                    row: 0,
+                    block: s("m1")
+                },
+                Event::Junction {
+                    row: 2,
+                    from: s("m1"),
+                    to: s("m2")
+                },
+                Event::End {
+                    row: 3,
+                    block: s("m2")
+                },
+            ]
+        );
+    }
+
+    #[test]
+    fn junction_labels_carry_the_path_speed() {
+        let csv = "cycle,time_ms,p.a.active,p.a.done,p.b.active,p.b.done,axis.X.position,axis.X.velocity,axis.Y.position,axis.Y.velocity\n\
+                   0,1,1,0,0,0,0,0,0,0\n1,2,1,0,0,0,1,3,1,4\n2,3,0,1,1,0,2,3,2,4\n3,4,0,1,0,1,3,0,3,0\n";
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("p.svg");
+        svg(csv, &out).unwrap();
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert!(text.contains("start a"), "{text}");
+        assert!(
+            text.contains("junction a-&gt;b |v|=5.000") || text.contains("junction a->b |v|=5.000"),
+            "{text}"
+        );
+        assert!(text.contains("end b"));
+        assert!(text.contains("path speed |v|"));
+    }
+
+    #[test]
+    fn long_series_are_thinned_keeping_peaks_and_ends() {
+        let n = 200_000;
+        let time: Vec<f64> = (0..n).map(|k| k as f64).collect();
+        let mut v = vec![0.0; n];
+        v[123_457] = 5.0; // a one-row spike
+        let pts = thin(&time, &v);
+        assert!(pts.len() <= MAX_POINTS * 4 / 3 + 4, "{}", pts.len());
+        assert!(pts.contains(&(123_457.0, 5.0)));
+        assert_eq!(pts.first(), Some(&(0.0, 0.0)));
+        assert_eq!(pts.last(), Some(&((n - 1) as f64, 0.0)));
+        assert!(pts.windows(2).all(|w| w[0].0 < w[1].0));
+        // short series are drawn whole
+        assert_eq!(thin(&time[..10], &v[..10]).len(), 10);
     }
 }

@@ -70,6 +70,36 @@
 #define MC_TM_CORNER_DISTANCE 3
 
 /**
+ * MC_TRANSITION_MODE TMMaxCornerDeviation.
+ */
+#define MC_TM_MAX_CORNER_DEVIATION 4
+
+/**
+ * MC_CIRC_MODE BORDER (AuxPoint on the arc).
+ */
+#define MC_CIRC_BORDER 0
+
+/**
+ * MC_CIRC_MODE CENTER (AuxPoint the centre, X/Y plane).
+ */
+#define MC_CIRC_CENTER 1
+
+/**
+ * MC_CIRC_MODE RADIUS (AuxPoint the plane's normal, its length the radius).
+ */
+#define MC_CIRC_RADIUS 2
+
+/**
+ * MC_CIRC_PATHCHOICE clockwise.
+ */
+#define MC_CLOCKWISE 0
+
+/**
+ * MC_CIRC_PATHCHOICE counter-clockwise.
+ */
+#define MC_COUNTER_CLOCKWISE 1
+
+/**
  * ErrorID 0: None
  */
 #define MC_ERR_NONE 0
@@ -180,7 +210,7 @@
 #define MC_ERR_INVALID_RATIO 28
 
 /**
- * ErrorID 30: Override factor negative or not finite.
+ * ErrorID 30: Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
  */
 #define MC_ERR_INVALID_OVERRIDE 30
 
@@ -245,7 +275,7 @@
 #define MC_ERR_GROUP_AXES_NOT_READY 58
 
 /**
- * ErrorID 59: TransitionMode unknown or not supported (only TMNone and TMCornerDistance are).
+ * ErrorID 59: TransitionMode unknown or not supported (TMStartVelocity, TMConstantVelocity), or a negative TransitionParameter.
  */
 #define MC_ERR_INVALID_TRANSITION_MODE 59
 

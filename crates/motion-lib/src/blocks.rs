@@ -80,6 +80,30 @@ impl ExecCore {
         }
     }
 
+    /// One call of a single-axis command block: `cmd` is submitted to `axis` on a rising
+    /// edge; with `continuous_update` a Busy command gets the inputs again every call.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn axis_cycle(
+        &mut self,
+        eng: &mut Engine,
+        execute: bool,
+        axis: usize,
+        cmd: AxisCommand,
+        d: Dynamics,
+        bm: BufferMode,
+        continuous_update: bool,
+    ) {
+        let mut upd = |e: &mut Engine, id: CmdId| {
+            let _ = e.update(axis, id, cmd, d);
+        };
+        let update: UpdateFn<'_> = if continuous_update {
+            Some(&mut upd)
+        } else {
+            None
+        };
+        self.cycle(eng, execute, |e| e.submit(axis, cmd, d, bm), update);
+    }
+
     /// Reads the command's status into the outputs.
     fn track(&mut self, eng: &mut Engine, release: bool) {
         let Some(id) = self.cmd else {
@@ -159,16 +183,34 @@ impl McPower {
     }
 }
 
+/// Copies a block's PLCopen outputs from its core: `(self)` Done, Busy, Active,
+/// CommandAborted, Error, ErrorID; `(self, in_x)` the same with InVelocity / InGear /
+/// InSync (`in_x`, on the set value while Active) instead of Done; `(@final self)` Done,
+/// Busy, Error, ErrorID (blocks without Active and CommandAborted).
 macro_rules! outputs_from_core {
-    ($s:ident) => {
+    (@final $s:ident) => {
         $s.done = $s.core.done;
+        $s.busy = $s.core.busy;
+        $s.error = $s.core.error;
+        $s.error_id = $s.core.error_id;
+    };
+    (@motion $s:ident) => {
         $s.busy = $s.core.busy;
         $s.active = $s.core.active;
         $s.command_aborted = $s.core.command_aborted;
         $s.error = $s.core.error;
         $s.error_id = $s.core.error_id;
     };
+    ($s:ident) => {
+        $s.done = $s.core.done;
+        outputs_from_core!(@motion $s);
+    };
+    ($s:ident, $in_target:ident) => {
+        $s.$in_target = $s.core.in_target && $s.core.active;
+        outputs_from_core!(@motion $s);
+    };
 }
+pub(crate) use outputs_from_core;
 
 /// MC_MoveAbsolute.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -204,98 +246,63 @@ impl McMoveAbsolute {
             self.deceleration,
             self.jerk,
         );
-        let bm = self.buffer_mode;
-        let mut upd = |e: &mut Engine, id: CmdId| {
-            let _ = e.update(axis, id, cmd, d);
-        };
-        let update: UpdateFn<'_> = if self.continuous_update {
-            Some(&mut upd)
-        } else {
-            None
-        };
-        self.core
-            .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), update);
+        let (x, bm, cu) = (self.execute, self.buffer_mode, self.continuous_update);
+        self.core.axis_cycle(eng, x, axis, cmd, d, bm, cu);
         outputs_from_core!(self);
     }
 }
 
-/// MC_MoveRelative.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct McMoveRelative {
-    pub execute: bool,
-    pub continuous_update: bool,
-    pub distance: f64,
-    pub velocity: f64,
-    pub acceleration: f64,
-    pub deceleration: f64,
-    pub jerk: f64,
-    pub buffer_mode: BufferMode,
-    pub done: bool,
-    pub busy: bool,
-    pub active: bool,
-    pub command_aborted: bool,
-    pub error: bool,
-    pub error_id: ErrorId,
-    #[doc(hidden)]
-    pub core: ExecCore,
+/// MC_MoveRelative and MC_MoveAdditive: the same inputs, a different command.
+macro_rules! distance_block {
+    ($(#[$m:meta])* $name:ident => $cmd:ident) => {
+        $(#[$m])*
+        #[derive(Clone, Copy, Debug, Default, PartialEq)]
+        pub struct $name {
+            pub execute: bool,
+            pub continuous_update: bool,
+            pub distance: f64,
+            pub velocity: f64,
+            pub acceleration: f64,
+            pub deceleration: f64,
+            pub jerk: f64,
+            pub buffer_mode: BufferMode,
+            pub done: bool,
+            pub busy: bool,
+            pub active: bool,
+            pub command_aborted: bool,
+            pub error: bool,
+            pub error_id: ErrorId,
+            #[doc(hidden)]
+            pub core: ExecCore,
+        }
+
+        impl $name {
+            pub fn call(&mut self, eng: &mut Engine, axis: usize) {
+                let cmd = AxisCommand::$cmd {
+                    distance: self.distance,
+                };
+                let d = dynamics(
+                    self.velocity,
+                    self.acceleration,
+                    self.deceleration,
+                    self.jerk,
+                );
+                let (x, bm) = (self.execute, self.buffer_mode);
+                self.core.axis_cycle(eng, x, axis, cmd, d, bm, false);
+                outputs_from_core!(self);
+            }
+        }
+    };
 }
 
-impl McMoveRelative {
-    pub fn call(&mut self, eng: &mut Engine, axis: usize) {
-        let cmd = AxisCommand::MoveRelative {
-            distance: self.distance,
-        };
-        let d = dynamics(
-            self.velocity,
-            self.acceleration,
-            self.deceleration,
-            self.jerk,
-        );
-        let bm = self.buffer_mode;
-        self.core
-            .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), None);
-        outputs_from_core!(self);
-    }
-}
-
-/// MC_MoveAdditive.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct McMoveAdditive {
-    pub execute: bool,
-    pub continuous_update: bool,
-    pub distance: f64,
-    pub velocity: f64,
-    pub acceleration: f64,
-    pub deceleration: f64,
-    pub jerk: f64,
-    pub buffer_mode: BufferMode,
-    pub done: bool,
-    pub busy: bool,
-    pub active: bool,
-    pub command_aborted: bool,
-    pub error: bool,
-    pub error_id: ErrorId,
-    #[doc(hidden)]
-    pub core: ExecCore,
-}
-
-impl McMoveAdditive {
-    pub fn call(&mut self, eng: &mut Engine, axis: usize) {
-        let cmd = AxisCommand::MoveAdditive {
-            distance: self.distance,
-        };
-        let d = dynamics(
-            self.velocity,
-            self.acceleration,
-            self.deceleration,
-            self.jerk,
-        );
-        let bm = self.buffer_mode;
-        self.core
-            .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), None);
-        outputs_from_core!(self);
-    }
-}
+distance_block!(
+    /// MC_MoveRelative (Distance added to the set position at the rising Execute).
+    McMoveRelative => MoveRelative
+);
+distance_block!(
+    /// MC_MoveAdditive (Distance added to the last commanded target).
+    McMoveAdditive => MoveAdditive
+);
 
 /// MC_MoveVelocity.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -329,23 +336,9 @@ impl McMoveVelocity {
             self.deceleration,
             self.jerk,
         );
-        let bm = self.buffer_mode;
-        let mut upd = |e: &mut Engine, id: CmdId| {
-            let _ = e.update(axis, id, cmd, d);
-        };
-        let update: UpdateFn<'_> = if self.continuous_update {
-            Some(&mut upd)
-        } else {
-            None
-        };
-        self.core
-            .cycle(eng, self.execute, |e| e.submit(axis, cmd, d, bm), update);
-        self.in_velocity = self.core.in_target && self.core.active;
-        self.busy = self.core.busy;
-        self.active = self.core.active;
-        self.command_aborted = self.core.command_aborted;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        let (x, bm, cu) = (self.execute, self.buffer_mode, self.continuous_update);
+        self.core.axis_cycle(eng, x, axis, cmd, d, bm, cu);
+        outputs_from_core!(self, in_velocity);
     }
 }
 
@@ -369,50 +362,52 @@ pub struct McHalt {
 impl McHalt {
     pub fn call(&mut self, eng: &mut Engine, axis: usize) {
         let d = dynamics(0.0, self.deceleration, self.deceleration, self.jerk);
-        let bm = self.buffer_mode;
-        self.core.cycle(
-            eng,
-            self.execute,
-            |e| e.submit(axis, AxisCommand::Halt, d, bm),
-            None,
-        );
+        let (x, bm) = (self.execute, self.buffer_mode);
+        self.core
+            .axis_cycle(eng, x, axis, AxisCommand::Halt, d, bm, false);
         outputs_from_core!(self);
     }
 }
 
-/// MC_Stop. The axis stays Stopping while Execute is TRUE after Done.
+/// The output logic of MC_Stop and MC_GroupStop: as [`ExecCore`], but after Done the
+/// command holds (the axis or group stays Stopping) while Execute is TRUE; it is released
+/// when Execute falls, or by the next rising edge.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct McStop {
-    pub execute: bool,
-    pub deceleration: f64,
-    pub jerk: f64,
+pub struct StopCore {
+    #[doc(hidden)]
+    pub prev_execute: bool,
+    #[doc(hidden)]
+    pub cmd: Option<CmdId>,
     pub done: bool,
     pub busy: bool,
     pub command_aborted: bool,
     pub error: bool,
     pub error_id: ErrorId,
-    #[doc(hidden)]
-    pub prev_execute: bool,
-    #[doc(hidden)]
-    pub cmd: Option<CmdId>,
 }
 
-impl McStop {
-    pub fn call(&mut self, eng: &mut Engine, axis: usize) {
+impl StopCore {
+    /// One call: `issue` gives the stop on a rising edge while not Busy; `release` ends
+    /// the holding of a finished stop (the engine's `release_stop` of the axis or group).
+    pub fn cycle(
+        &mut self,
+        eng: &mut Engine,
+        execute: bool,
+        issue: impl FnOnce(&mut Engine) -> Result<CmdId, ErrorId>,
+        release: impl Fn(&mut Engine, CmdId),
+    ) {
         let was_final = self.done || self.error || self.command_aborted;
-        let rising = self.execute && !self.prev_execute;
-        self.prev_execute = self.execute;
+        let rising = execute && !self.prev_execute;
+        self.prev_execute = execute;
         if rising && !self.busy {
             if let Some(old) = self.cmd.take() {
-                eng.release_stop(axis, old);
+                release(eng, old);
                 eng.release(old);
             }
             self.done = false;
             self.error = false;
             self.command_aborted = false;
             self.error_id = ErrorId::None;
-            let d = dynamics(0.0, self.deceleration, self.deceleration, self.jerk);
-            match eng.submit(axis, AxisCommand::Stop, d, BufferMode::Aborting) {
+            match issue(eng) {
                 Ok(id) => {
                     self.cmd = Some(id);
                     self.busy = true;
@@ -429,8 +424,8 @@ impl McStop {
                 CmdStatus::Done => {
                     self.busy = false;
                     self.done = true;
-                    if !self.execute {
-                        eng.release_stop(axis, id);
+                    if !execute {
+                        release(eng, id);
                         eng.release(id);
                         self.cmd = None;
                     }
@@ -448,12 +443,41 @@ impl McStop {
                 }
             }
         }
-        if !self.execute && was_final && !rising {
+        if !execute && was_final && !rising {
             self.done = false;
             self.error = false;
             self.command_aborted = false;
             self.error_id = ErrorId::None;
         }
+    }
+}
+
+/// MC_Stop. The axis stays Stopping while Execute is TRUE after Done.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct McStop {
+    pub execute: bool,
+    pub deceleration: f64,
+    pub jerk: f64,
+    pub done: bool,
+    pub busy: bool,
+    pub command_aborted: bool,
+    pub error: bool,
+    pub error_id: ErrorId,
+    #[doc(hidden)]
+    pub core: StopCore,
+}
+
+impl McStop {
+    pub fn call(&mut self, eng: &mut Engine, axis: usize) {
+        let d = dynamics(0.0, self.deceleration, self.deceleration, self.jerk);
+        self.core.cycle(
+            eng,
+            self.execute,
+            |e| e.submit(axis, AxisCommand::Stop, d, BufferMode::Aborting),
+            |e, id| e.release_stop(axis, id),
+        );
+        outputs_from_core!(@final self);
+        self.command_aborted = self.core.command_aborted;
     }
 }
 
@@ -542,10 +566,7 @@ pub struct McReset {
 impl McReset {
     pub fn call(&mut self, eng: &mut Engine, axis: usize) {
         self.core.cycle(self.execute, || eng.reset(axis));
-        self.done = self.core.done;
-        self.busy = self.core.busy;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        outputs_from_core!(@final self);
     }
 }
 
@@ -568,14 +589,14 @@ impl McSetPosition {
         let (p, r) = (self.position, self.relative);
         self.core
             .cycle(self.execute, || eng.set_position(axis, p, r));
-        self.done = self.core.done;
-        self.busy = self.core.busy;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        outputs_from_core!(@final self);
     }
 }
 
-/// MC_SetOverride (Enable-type): VelFactor applies while Enable is TRUE.
+/// MC_SetOverride (Enable-type): while Enable is TRUE the factors are written every call
+/// (VelFactor >= 0, AccFactor and JerkFactor in (0, 1], 0 = 1; each re-plans
+/// the running move; see [`Engine::set_override_factors`]). The last factors stay in
+/// force after Enable falls.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct McSetOverride {
     pub enable: bool,
@@ -597,7 +618,7 @@ impl McSetOverride {
             self.error_id = ErrorId::None;
             return;
         }
-        match eng.set_override(axis, self.vel_factor) {
+        match eng.set_override_factors(axis, self.vel_factor, self.acc_factor, self.jerk_factor) {
             Ok(()) => {
                 self.enabled = true;
                 self.busy = true;
@@ -790,15 +811,9 @@ impl McGearIn {
             source: self.master_value_source,
         };
         let d = dynamics(0.0, self.acceleration, self.deceleration, self.jerk);
-        let bm = self.buffer_mode;
-        self.core
-            .cycle(eng, self.execute, |e| e.submit(slave, cmd, d, bm), None);
-        self.in_gear = self.core.in_target && self.core.active;
-        self.busy = self.core.busy;
-        self.active = self.core.active;
-        self.command_aborted = self.core.command_aborted;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        let (x, bm) = (self.execute, self.buffer_mode);
+        self.core.axis_cycle(eng, x, slave, cmd, d, bm, false);
+        outputs_from_core!(self, in_gear);
     }
 }
 
@@ -827,10 +842,7 @@ impl McSyncOut {
             |e| e.submit(slave, cmd, Dynamics::default(), BufferMode::Aborting),
             None,
         );
-        self.done = self.core.done;
-        self.busy = self.core.busy;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        outputs_from_core!(@final self);
     }
 
     /// Call as MC_GearOut.
@@ -873,10 +885,7 @@ impl McCamTableSelect {
         if self.core.done {
             self.cam_table_id = t;
         }
-        self.done = self.core.done;
-        self.busy = self.core.busy;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        outputs_from_core!(@final self);
     }
 }
 
@@ -930,19 +939,10 @@ impl McCamIn {
             ..SyncParams::default()
         };
         let cmd = AxisCommand::CamIn { master, params };
-        let bm = self.buffer_mode;
-        self.core.cycle(
-            eng,
-            self.execute,
-            |e| e.submit(slave, cmd, Dynamics::default(), bm),
-            None,
-        );
-        self.in_sync = self.core.in_target && self.core.active;
+        let (x, bm) = (self.execute, self.buffer_mode);
+        self.core
+            .axis_cycle(eng, x, slave, cmd, Dynamics::default(), bm, false);
         self.end_of_profile = self.core.end_of_profile && self.core.active;
-        self.busy = self.core.busy;
-        self.active = self.core.active;
-        self.command_aborted = self.core.command_aborted;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        outputs_from_core!(self, in_sync);
     }
 }

@@ -55,21 +55,29 @@ impl BufferMode {
     }
 }
 
-/// MC_TRANSITION_MODE (Part 4). Only TMNone and TMCornerDistance are implemented.
+/// MC_TRANSITION_MODE (Part 4). TMNone, TMCornerDistance and TMMaxCornerDeviation are
+/// implemented; TMStartVelocity (1) and TMConstantVelocity (2), whose geometry Part 4
+/// leaves to the vendor, are refused with ErrorID 59 (InvalidTransitionMode).
 #[repr(u8)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum TransitionMode {
+    /// The path speed at the corner is the junction speed, the direction changes at once.
     #[default]
     None = 0,
+    /// TransitionParameter = corner distance: the blend leaves the path that far before
+    /// the corner and joins it that far after.
     CornerDistance = 3,
+    /// TransitionParameter = the largest distance the blend may pass from the corner.
+    MaxCornerDeviation = 4,
 }
 
 impl TransitionMode {
-    /// From the PLCopen integer value (1, 2 and 4 are refused).
+    /// From the PLCopen integer value (1, 2 and values above 4 are refused).
     pub fn from_u8(v: u8) -> Result<TransitionMode, ErrorId> {
         match v {
             0 => Ok(TransitionMode::None),
             3 => Ok(TransitionMode::CornerDistance),
+            4 => Ok(TransitionMode::MaxCornerDeviation),
             _ => Err(ErrorId::InvalidTransitionMode),
         }
     }

@@ -148,7 +148,13 @@ pub(crate) struct Active {
     pub t: f64,
     pub target: f64,
     pub speed: f64,
+    /// Limits the profile was planned with (the command's limits scaled by the
+    /// AccFactor and JerkFactor override).
     pub lim: Limits,
+    /// The command's own limits (before the override).
+    pub base: Limits,
+    /// VelFactor 0: the move brakes to standstill on its way and waits for a factor > 0.
+    pub paused: bool,
     /// Release given (InVelocity / InGear / InSync reached).
     pub released: bool,
     pub end_v: f64,
@@ -167,6 +173,8 @@ impl Active {
             target: at.p,
             speed: 0.0,
             lim: UNIT,
+            base: UNIT,
+            paused: false,
             released: true,
             end_v: 0.0,
             sync: SyncParams::default(),
@@ -232,6 +240,54 @@ pub(crate) fn plan_to(
     Profile::position(start, target, end_v, &fast).map(|p| (p, None))
 }
 
+/// A move planned under the override.
+pub(crate) struct Overridden {
+    pub prof: Profile,
+    pub tail: Option<Profile>,
+    pub lim: Limits,
+    pub paused: bool,
+}
+
+/// Plans a Position, Velocity or Halt move (`base` its own limits, `target` its raw
+/// target or signed velocity, `end_v` its end velocity) from `now` under the axis's
+/// override: velocity limit * VelFactor (at most the axis's limit), acceleration and
+/// deceleration * AccFactor, jerk * JerkFactor (0 = unlimited stays 0). VelFactor 0
+/// brakes a Position or Velocity move to standstill (`paused`).
+pub(crate) fn overridden(
+    ax: &AxisRt,
+    kind: Kind,
+    base: &Limits,
+    now: State,
+    target: f64,
+    end_v: f64,
+) -> Result<Overridden, ErrorId> {
+    let mut lim = Limits {
+        vmax: base.vmax,
+        amax: base.amax * ax.acc_factor,
+        dmax: base.dmax * ax.acc_factor,
+        jmax: base.jmax * ax.jerk_factor,
+    };
+    let paused = ax.vel_factor == 0.0 && kind != Kind::Halt;
+    if !paused && kind != Kind::Halt {
+        lim.vmax = (base.vmax * ax.vel_factor).min(base.vmax.max(ax.cfg.limits.vmax));
+    }
+    let planned = if paused || kind == Kind::Halt {
+        Profile::velocity(now, 0.0, &lim).map(|p| (p, None))
+    } else if kind == Kind::Position {
+        plan_to(now, target, end_v, &lim)
+    } else {
+        let v = (target * ax.vel_factor).clamp(-lim.vmax, lim.vmax);
+        Profile::velocity(now, v, &lim).map(|p| (p, None))
+    };
+    let (prof, tail) = planned.map_err(|_| ErrorId::PlanningFailed)?;
+    Ok(Overridden {
+        prof,
+        tail,
+        lim,
+        paused,
+    })
+}
+
 /// A zero-length profile standing at `p`.
 pub(crate) fn standing(p: f64) -> Profile {
     let at = State { p, v: 0.0, a: 0.0 };
@@ -266,8 +322,11 @@ pub(crate) struct AxisRt {
     pub powered: bool,
     pub axis_error: ErrorId,
     pub drive_code: u16,
-    pub override_target: f64,
-    pub override_now: f64,
+    /// MC_SetOverride VelFactor (>= 0).
+    pub vel_factor: f64,
+    /// MC_SetOverride AccFactor (acceleration and deceleration) and JerkFactor, (0, 1].
+    pub acc_factor: f64,
+    pub jerk_factor: f64,
     pub group: Option<u16>,
     pub stop_owner: Option<CmdId>,
     pub active: Active,
@@ -331,8 +390,9 @@ impl Engine {
             powered: false,
             axis_error: ErrorId::None,
             drive_code: 0,
-            override_target: 1.0,
-            override_now: 1.0,
+            vel_factor: 1.0,
+            acc_factor: 1.0,
+            jerk_factor: 1.0,
             group: None,
             stop_owner: None,
             active: Active::idle(State::default()),
@@ -648,14 +708,87 @@ impl Engine {
         Ok(())
     }
 
-    /// MC_SetOverride: velocity factor (time scaling), ramped at 10 per second.
+    /// MC_SetOverride with VelFactor only (AccFactor and JerkFactor unchanged); see
+    /// [`Engine::set_override_factors`].
     pub fn set_override(&mut self, axis: usize, factor: f64) -> Result<(), ErrorId> {
+        let ax = self.axis(axis)?;
+        let (acc, jerk) = (ax.acc_factor, ax.jerk_factor);
+        self.set_override_factors(axis, factor, acc, jerk)
+    }
+
+    /// MC_SetOverride with all three factors: VelFactor (>= 0) scales the velocity limit
+    /// (capped by the axis's limit; 0 brakes the move to standstill on its way, where it
+    /// waits), AccFactor the acceleration and deceleration limits, JerkFactor the jerk
+    /// limit of the running and of every later positioning, velocity and halt move (not
+    /// MC_Stop, error braking, gearing, camming or group moves). AccFactor and JerkFactor
+    /// must be in (0, 1]; 0 stands for 1 (the value of a zero-initialised block). A
+    /// change re-plans the running move from its current position, velocity and
+    /// acceleration, so the set point stays continuous and within the limits in force.
+    pub fn set_override_factors(
+        &mut self,
+        axis: usize,
+        vel: f64,
+        acc: f64,
+        jerk: f64,
+    ) -> Result<(), ErrorId> {
         self.axis(axis)?;
-        if !(finite(factor) && factor >= 0.0) {
+        let factor = |f: f64| -> Result<f64, ErrorId> {
+            if f == 0.0 {
+                Ok(1.0)
+            } else if finite(f) && f > 0.0 && f <= 1.0 {
+                Ok(f)
+            } else {
+                Err(ErrorId::InvalidOverride)
+            }
+        };
+        let (acc, jerk) = (factor(acc)?, factor(jerk)?);
+        if !(finite(vel) && vel >= 0.0) {
             return Err(ErrorId::InvalidOverride);
         }
-        self.axes[axis].override_target = factor;
+        let ax = &mut self.axes[axis];
+        if ax.vel_factor != vel || ax.acc_factor != acc || ax.jerk_factor != jerk {
+            ax.vel_factor = vel;
+            ax.acc_factor = acc;
+            ax.jerk_factor = jerk;
+            self.replan_override(axis);
+        }
         Ok(())
+    }
+
+    /// The override factors in effect: (VelFactor, AccFactor, JerkFactor).
+    pub fn override_factors(&self, axis: usize) -> Result<(f64, f64, f64), ErrorId> {
+        let ax = self.axis(axis)?;
+        Ok((ax.vel_factor, ax.acc_factor, ax.jerk_factor))
+    }
+
+    /// Re-plans the running move under the new override from its current state. A
+    /// MoveVelocity that was InVelocity drops it until it reaches a new velocity (an
+    /// AccFactor or JerkFactor change alone keeps it).
+    fn replan_override(&mut self, axis: usize) {
+        let ax = &self.axes[axis];
+        let a = ax.active;
+        let running = match a.kind {
+            Kind::Velocity => true,
+            Kind::Position | Kind::Halt => !a.released,
+            _ => false,
+        };
+        if !running {
+            return;
+        }
+        if let Ok(o) = overridden(ax, a.kind, &a.base, ax.set, a.target, a.end_v) {
+            let ax = &mut self.axes[axis];
+            ax.active.prof = o.prof;
+            ax.active.tail = o.tail;
+            ax.active.t = 0.0;
+            ax.active.lim = o.lim;
+            ax.active.paused = o.paused;
+            if a.kind == Kind::Velocity && a.released && o.prof.duration() > 0.0 {
+                ax.active.released = false;
+                if let Some(id) = a.id {
+                    self.cmds.set_in_target(id, false);
+                }
+            }
+        }
     }
 
     /// Registers a cam table; returns its CamTableID.
@@ -983,7 +1116,7 @@ impl Engine {
                 return Ok(());
             }
             let cur = &self.axes[axis].active;
-            if cur.kind == p.kind && cur.target == p.target && cur.lim == p.lim {
+            if cur.kind == p.kind && cur.target == p.target && cur.base == p.lim {
                 // Inputs unchanged: keep the running profile.
                 return Ok(());
             }
@@ -1063,6 +1196,11 @@ impl Engine {
             }
             Some(now) => {
                 let a = &mut self.axes[axis].active;
+                if a.paused {
+                    // Held by VelFactor 0: the resumed plan ends at vj.
+                    a.end_v = vj;
+                    return;
+                }
                 if let Ok((p, tail)) = plan_to(now, a.target, vj, &a.lim) {
                     a.prof = p;
                     a.tail = tail;
@@ -1077,15 +1215,18 @@ impl Engine {
     /// advanced by `t0` seconds into its profile.
     fn activate(&mut self, axis: usize, p: Pending, t0: f64) -> Result<(), ErrorId> {
         let start = self.axes[axis].set;
-        let lim = p.lim;
+        let mut lim = p.lim;
         let mut tail = None;
+        let mut paused = false;
         let prof = match p.kind {
-            Kind::Position => plan_to(start, p.target, p.end_v, &lim).map(|(m, t)| {
-                tail = t;
-                m
-            }),
-            Kind::Velocity => Profile::velocity(start, p.target, &lim),
-            Kind::Halt | Kind::Stop => Profile::velocity(start, 0.0, &lim),
+            Kind::Position | Kind::Velocity | Kind::Halt => {
+                let ax = &self.axes[axis];
+                overridden(ax, p.kind, &p.lim, start, p.target, p.end_v).map(|o| {
+                    (lim, tail, paused) = (o.lim, o.tail, o.paused);
+                    o.prof
+                })
+            }
+            Kind::Stop => Profile::velocity(start, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed),
             Kind::Gear | Kind::Cam => Ok(self.axes[axis].active.prof),
             _ => Ok(Active::idle(start).prof),
         }
@@ -1108,6 +1249,8 @@ impl Engine {
             target: p.target,
             speed: p.speed,
             lim,
+            base: p.lim,
+            paused,
             released: false,
             end_v: p.end_v,
             sync: p.sync,
@@ -1156,6 +1299,8 @@ impl Engine {
             target: start.v,
             speed: start.v.abs(),
             lim,
+            base: lim,
+            paused: false,
             released: true,
             end_v: 0.0,
             sync: SyncParams::default(),
@@ -1176,11 +1321,6 @@ impl Engine {
         self.events.clear();
         self.synced.clear();
         for (i, ax) in self.axes.iter_mut().enumerate() {
-            if ax.override_now != ax.override_target {
-                let r = 10.0 * dt;
-                let d = (ax.override_target - ax.override_now).clamp(-r, r);
-                ax.override_now += d;
-            }
             let a = &mut ax.active;
             match a.kind {
                 Kind::Idle => {
@@ -1196,15 +1336,9 @@ impl Engine {
                     self.events.push(i as u32);
                 }
                 _ => {
-                    let k = ax.override_now;
-                    a.t += dt * k;
-                    let s = a.prof.at(a.t);
-                    ax.set = State {
-                        p: s.p,
-                        v: s.v * k,
-                        a: s.a * k * k,
-                    };
-                    if a.t >= a.prof.duration() && !a.released {
+                    a.t += dt;
+                    ax.set = a.prof.at(a.t);
+                    if a.t >= a.prof.duration() && !a.released && !a.paused {
                         self.events.push(i as u32);
                     }
                 }
@@ -1337,7 +1471,7 @@ impl Engine {
                 }
             }
             Kind::Position | Kind::Halt | Kind::Velocity | Kind::Stop | Kind::Brake => {
-                if a.released || a.t < a.prof.duration() {
+                if a.released || a.paused || a.t < a.prof.duration() {
                     return;
                 }
                 if let Some(tail) = a.tail {
@@ -1346,16 +1480,10 @@ impl Engine {
                     ax.active.t -= a.prof.duration();
                     ax.active.prof = tail;
                     ax.active.tail = None;
-                    let k = ax.override_now;
-                    let s = tail.at(ax.active.t);
-                    ax.set = State {
-                        p: s.p,
-                        v: s.v * k,
-                        a: s.a * k * k,
-                    };
+                    ax.set = tail.at(ax.active.t);
                     return;
                 }
-                let leftover = (a.t - a.prof.duration()) / self.axes[i].override_now.max(1e-12);
+                let leftover = a.t - a.prof.duration();
                 match a.kind {
                     Kind::Velocity => {
                         self.axes[i].active.released = true;

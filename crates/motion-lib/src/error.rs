@@ -52,7 +52,7 @@ pub enum ErrorId {
     TargetBeyondSoftwareLimit = 27,
     /// Gear ratio invalid (denominator 0 or not finite).
     InvalidRatio = 28,
-    /// Override factor negative or not finite.
+    /// Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
     InvalidOverride = 30,
     /// The profile planner found no profile for these inputs.
     PlanningFailed = 31,
@@ -78,7 +78,7 @@ pub enum ErrorId {
     AxisNotInGroup = 57,
     /// MC_GroupEnable needs at least one axis, every axis powered and in Standstill.
     GroupAxesNotReady = 58,
-    /// TransitionMode unknown or not supported (only TMNone and TMCornerDistance are).
+    /// TransitionMode unknown or not supported (TMStartVelocity, TMConstantVelocity), or a negative TransitionParameter.
     InvalidTransitionMode = 59,
     /// The circle is not defined (collinear points, end point off the circle, zero radius).
     InvalidCircle = 60,

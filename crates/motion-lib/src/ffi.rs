@@ -29,6 +29,7 @@ use crate::cmd::CmdId;
 use crate::engine::{Engine, EngineConfig, MasterSource};
 use crate::error::ErrorId;
 use crate::group_blocks::*;
+use crate::path::CircMode;
 use crate::profile::Limits;
 use crate::sync::CamTable;
 
@@ -238,12 +239,8 @@ fn master_source(x: u8) -> Result<MasterSource, ErrorId> {
     }
 }
 
-fn circ_mode(x: u8) -> Result<bool, ErrorId> {
-    match x {
-        0 => Ok(false),
-        1 => Ok(true),
-        _ => Err(ErrorId::InvalidCircle),
-    }
+fn circ_mode(x: u8) -> Result<CircMode, ErrorId> {
+    CircMode::from_u8(x).ok_or(ErrorId::InvalidCircle)
 }
 
 fn path_choice(x: u8) -> Result<bool, ErrorId> {
@@ -276,6 +273,271 @@ fn err(code: u16) -> ErrorId {
     ErrorId::from_code(code)
 }
 
+// ------------------------------------------------------------ shared block plumbing
+//
+// Every block function below has the same frame: check the two pointers, build the Rust
+// block from the C inputs (an out-of-range enumeration is kept in `bad` and refuses the
+// rising edge with its ErrorID), rebuild the block's core from the C outputs and
+// `_internal`, call the Rust block, write the outputs and `_internal` back. The frame is
+// shared here; each extern function keeps only its own input fields.
+
+/// The engine and the block struct behind the two pointers; None when either is NULL.
+/// # Safety
+/// The module contract: `engine` is NULL or a live handle, `fb` NULL or a valid,
+/// writable struct of its type, not aliased during the call.
+unsafe fn args<'a, T>(engine: *mut McEngine, fb: *mut T) -> Option<(&'a mut Engine, &'a mut T)> {
+    // SAFETY: a non-null handle points to a live McEngine (caller contract).
+    let e = unsafe { eng(engine) }?;
+    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
+    let c = unsafe { fb.as_mut() }?;
+    Some((e, c))
+}
+
+/// An enumerated C input: its value, or the default with the first bad value's ErrorID
+/// kept in `bad`.
+fn enum_in<T: Default>(r: Result<T, ErrorId>, bad: &mut Option<ErrorId>) -> T {
+    r.unwrap_or_else(|id| {
+        bad.get_or_insert(id);
+        T::default()
+    })
+}
+
+/// Rust blocks reachable through their output core (`core` field of type `K`).
+trait HasCore<K> {
+    fn core(&mut self) -> &mut K;
+}
+
+macro_rules! has_core {
+    ($k:ty: $($t:ty),*) => {
+        $(impl HasCore<$k> for $t {
+            fn core(&mut self) -> &mut $k {
+                &mut self.core
+            }
+        })*
+    };
+}
+
+has_core!(ExecCore: McHome, McHalt, McMoveAbsolute, McMoveRelative, McMoveAdditive,
+    McMoveVelocity, McGearIn, McSyncOut, McCamIn, McGroupHome, McGroupHalt,
+    McMoveLinearAbsolute, McMoveLinearRelative, McMoveDirectAbsolute,
+    McMoveCircularAbsolute, McMoveCircularRelative);
+has_core!(ImmediateCore: McReset, McSetPosition, McCamTableSelect, McAddAxisToGroup,
+    McRemoveAxisFromGroup, McUngroupAllAxes, McGroupEnable, McGroupDisable, McGroupReset);
+has_core!(StopCore: McStop, McGroupStop);
+
+/// The status outputs and private state of a C block (outputs it lacks are None).
+struct StatusC<'a> {
+    execute: bool,
+    done: Option<&'a mut bool>,
+    /// InVelocity / InGear / InSync.
+    in_target: Option<&'a mut bool>,
+    active: Option<&'a mut bool>,
+    command_aborted: Option<&'a mut bool>,
+    end_of_profile: Option<&'a mut bool>,
+    busy: &'a mut bool,
+    error: &'a mut bool,
+    error_id: &'a mut u16,
+    internal: &'a mut [u64; 2],
+}
+
+/// C block structs, seen through their status outputs.
+trait BlockC {
+    fn status(&mut self) -> StatusC<'_>;
+}
+
+/// `BlockC` for a C struct with Execute, Busy, Error, ErrorID and `_internal`, plus the
+/// named optional outputs (`done: Done`, `in_target: InVelocity`, ...); without a list:
+/// Done, Active and CommandAborted (the positioning blocks).
+macro_rules! block_c {
+    ($t:ty) => {
+        block_c!($t { done: Done, active: Active, command_aborted: CommandAborted });
+    };
+    ($t:ty { $($f:ident : $cf:ident),* }) => {
+        impl BlockC for $t {
+            fn status(&mut self) -> StatusC<'_> {
+                #[allow(unused_mut)]
+                let mut s = StatusC {
+                    execute: self.Execute,
+                    done: None,
+                    in_target: None,
+                    active: None,
+                    command_aborted: None,
+                    end_of_profile: None,
+                    busy: &mut self.Busy,
+                    error: &mut self.Error,
+                    error_id: &mut self.ErrorID,
+                    internal: &mut self._internal,
+                };
+                $(s.$f = Some(&mut self.$cf);)*
+                s
+            }
+        }
+    };
+}
+
+fn flag(f: &Option<&mut bool>) -> bool {
+    f.as_ref().is_some_and(|x| **x)
+}
+
+fn put(f: Option<&mut bool>, v: bool) {
+    if let Some(f) = f {
+        *f = v;
+    }
+}
+
+/// One call of an Execute-type block ([`ExecCore`]) from C; returns the block.
+fn run_exec<B: HasCore<ExecCore>>(
+    c: &mut impl BlockC,
+    bad: Option<ErrorId>,
+    mut b: B,
+    call: impl FnOnce(&mut B),
+) -> B {
+    let s = c.status();
+    let (prev_execute, cmd) = unpack(*s.internal);
+    let core = ExecCore {
+        prev_execute,
+        cmd,
+        done: flag(&s.done),
+        busy: *s.busy,
+        active: flag(&s.active),
+        command_aborted: flag(&s.command_aborted),
+        error: *s.error,
+        error_id: err(*s.error_id),
+        in_target: flag(&s.in_target),
+        end_of_profile: flag(&s.end_of_profile),
+    };
+    if let Some(id) = bad {
+        // An out-of-range enumeration refuses the command on the rising edge.
+        if s.execute && !prev_execute && !core.busy {
+            for f in [
+                s.done,
+                s.in_target,
+                s.active,
+                s.command_aborted,
+                s.end_of_profile,
+            ] {
+                put(f, false);
+            }
+            *s.busy = false;
+            *s.error = true;
+            *s.error_id = id.code();
+            *s.internal = pack(true, cmd);
+            return b;
+        }
+    }
+    *b.core() = core;
+    call(&mut b);
+    let k = *b.core();
+    put(s.done, k.done);
+    put(s.in_target, k.in_target && k.active);
+    put(s.active, k.active);
+    put(s.command_aborted, k.command_aborted);
+    put(s.end_of_profile, k.end_of_profile && k.active);
+    *s.busy = k.busy;
+    *s.error = k.error;
+    *s.error_id = k.error_id.code();
+    *s.internal = pack(k.prev_execute, k.cmd);
+    b
+}
+
+/// One call of an immediate block ([`ImmediateCore`]) from C; returns the block.
+fn run_immediate<B: HasCore<ImmediateCore>>(
+    c: &mut impl BlockC,
+    mut b: B,
+    call: impl FnOnce(&mut B),
+) -> B {
+    let s = c.status();
+    *b.core() = ImmediateCore {
+        prev_execute: s.internal[0] & 1 != 0,
+        done: flag(&s.done),
+        busy: *s.busy,
+        error: *s.error,
+        error_id: err(*s.error_id),
+    };
+    call(&mut b);
+    let k = *b.core();
+    put(s.done, k.done);
+    *s.busy = k.busy;
+    *s.error = k.error;
+    *s.error_id = k.error_id.code();
+    *s.internal = [u64::from(k.prev_execute), 0];
+    b
+}
+
+/// One call of MC_Stop / MC_GroupStop ([`StopCore`]) from C.
+fn run_stop<B: HasCore<StopCore>>(c: &mut impl BlockC, mut b: B, call: impl FnOnce(&mut B)) {
+    let s = c.status();
+    let (prev_execute, cmd) = unpack(*s.internal);
+    *b.core() = StopCore {
+        prev_execute,
+        cmd,
+        done: flag(&s.done),
+        busy: *s.busy,
+        command_aborted: flag(&s.command_aborted),
+        error: *s.error,
+        error_id: err(*s.error_id),
+    };
+    call(&mut b);
+    let k = *b.core();
+    put(s.done, k.done);
+    put(s.command_aborted, k.command_aborted);
+    *s.busy = k.busy;
+    *s.error = k.error;
+    *s.error_id = k.error_id.code();
+    *s.internal = pack(k.prev_execute, k.cmd);
+}
+
+/// A single-axis move block from its C struct: Velocity, Acceleration, Deceleration,
+/// Jerk and the block's own fields.
+macro_rules! move_block {
+    ($t:ident, $c:ident { $($f:ident : $v:expr),* $(,)? }) => {
+        $t {
+            $($f: $v,)*
+            velocity: $c.Velocity,
+            acceleration: $c.Acceleration,
+            deceleration: $c.Deceleration,
+            jerk: $c.Jerk,
+            ..Default::default()
+        }
+    };
+}
+
+/// MC_MoveCircularAbsolute / Relative from its C struct.
+macro_rules! circular_block {
+    ($t:ident, $c:ident, $bad:ident) => {
+        path_block!(
+            $t,
+            $c,
+            $bad {
+                execute: $c.Execute,
+                circ_mode: enum_in(circ_mode($c.CircMode), &mut $bad),
+                aux_point: $c.AuxPoint,
+                end_point: $c.EndPoint,
+                path_choice_ccw: enum_in(path_choice($c.PathChoice), &mut $bad),
+            }
+        )
+    };
+}
+
+/// A Part 4 path block from its C struct: the block's own fields, then the path
+/// dynamics, CoordSystem, BufferMode, TransitionMode and TransitionParameter.
+macro_rules! path_block {
+    ($t:ident, $c:ident, $bad:ident { $($f:ident : $v:expr),* $(,)? }) => {
+        $t {
+            $($f: $v,)*
+            velocity: $c.Velocity,
+            acceleration: $c.Acceleration,
+            deceleration: $c.Deceleration,
+            jerk: $c.Jerk,
+            coord_system: $c.CoordSystem,
+            buffer_mode: enum_in(BufferMode::from_u8($c.BufferMode), &mut $bad),
+            transition_mode: enum_in(TransitionMode::from_u8($c.TransitionMode), &mut $bad),
+            transition_parameter: $c.TransitionParameter,
+            ..Default::default()
+        }
+    };
+}
+
 /// C view of `McPower` (MC_Power).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
@@ -294,22 +556,17 @@ pub struct MC_Power_C {
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_power(engine: *mut McEngine, axis: u32, fb: *mut MC_Power_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McPower {
+        enable: c.Enable,
+        enable_positive: c.EnablePositive,
+        enable_negative: c.EnableNegative,
+        ..Default::default()
     };
-    let mut b = McPower::default();
-    b.enable = c.Enable;
-    b.enable_positive = c.EnablePositive;
-    b.enable_negative = c.EnableNegative;
-    b.status = c.Status;
-    b.valid = c.Valid;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
     b.call(e, axis as usize);
+
     c.Status = b.status;
     c.Valid = b.valid;
     c.Error = b.error;
@@ -333,62 +590,24 @@ pub struct MC_Home_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_Home_C);
+
 /// Calls MC_Home once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_home(engine: *mut McEngine, axis: u32, fb: *mut MC_Home_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut bad = None;
+    let b = McHome {
+        execute: c.Execute,
+        position: c.Position,
+        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+        ..Default::default()
     };
-    let mut b = McHome::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.position = c.Position;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
-        }
-    }
-    b.call(e, axis as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    run_exec(c, bad, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McStop` (MC_Stop).
@@ -407,37 +626,26 @@ pub struct MC_Stop_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_Stop_C {
+    done: Done,
+    command_aborted: CommandAborted
+});
+
 /// Calls MC_Stop once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_stop(engine: *mut McEngine, axis: u32, fb: *mut MC_Stop_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McStop {
+        execute: c.Execute,
+        deceleration: c.Deceleration,
+        jerk: c.Jerk,
+        ..Default::default()
     };
-    let mut b = McStop::default();
-    b.execute = c.Execute;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.prev_execute = prev;
-    b.cmd = cmd;
-    b.call(e, axis as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.prev_execute, b.cmd);
+    run_stop(c, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McHalt` (MC_Halt).
@@ -458,63 +666,25 @@ pub struct MC_Halt_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_Halt_C);
+
 /// Calls MC_Halt once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_halt(engine: *mut McEngine, axis: u32, fb: *mut MC_Halt_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut bad = None;
+    let b = McHalt {
+        execute: c.Execute,
+        deceleration: c.Deceleration,
+        jerk: c.Jerk,
+        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+        ..Default::default()
     };
-    let mut b = McHalt::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
-        }
-    }
-    b.call(e, axis as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    run_exec(c, bad, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McMoveAbsolute` (MC_MoveAbsolute).
@@ -540,6 +710,8 @@ pub struct MC_MoveAbsolute_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveAbsolute_C);
+
 /// Calls MC_MoveAbsolute once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -549,66 +721,21 @@ pub unsafe extern "C" fn mc_move_absolute(
     axis: u32,
     fb: *mut MC_MoveAbsolute_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveAbsolute::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.continuous_update = c.ContinuousUpdate;
-    b.position = c.Position;
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.direction = Direction::from_u8(c.Direction).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
+    let mut bad = None;
+    let b = move_block!(
+        McMoveAbsolute,
+        c {
+            execute: c.Execute,
+            continuous_update: c.ContinuousUpdate,
+            position: c.Position,
+            direction: enum_in(Direction::from_u8(c.Direction), &mut bad),
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
         }
-    }
-    b.call(e, axis as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    );
+    run_exec(c, bad, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McMoveRelative` (MC_MoveRelative).
@@ -633,6 +760,8 @@ pub struct MC_MoveRelative_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveRelative_C);
+
 /// Calls MC_MoveRelative once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -642,62 +771,20 @@ pub unsafe extern "C" fn mc_move_relative(
     axis: u32,
     fb: *mut MC_MoveRelative_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveRelative::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.continuous_update = c.ContinuousUpdate;
-    b.distance = c.Distance;
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
+    let mut bad = None;
+    let b = move_block!(
+        McMoveRelative,
+        c {
+            execute: c.Execute,
+            continuous_update: c.ContinuousUpdate,
+            distance: c.Distance,
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
         }
-    }
-    b.call(e, axis as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    );
+    run_exec(c, bad, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McMoveAdditive` (MC_MoveAdditive).
@@ -722,6 +809,8 @@ pub struct MC_MoveAdditive_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveAdditive_C);
+
 /// Calls MC_MoveAdditive once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -731,62 +820,20 @@ pub unsafe extern "C" fn mc_move_additive(
     axis: u32,
     fb: *mut MC_MoveAdditive_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveAdditive::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.continuous_update = c.ContinuousUpdate;
-    b.distance = c.Distance;
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
+    let mut bad = None;
+    let b = move_block!(
+        McMoveAdditive,
+        c {
+            execute: c.Execute,
+            continuous_update: c.ContinuousUpdate,
+            distance: c.Distance,
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
         }
-    }
-    b.call(e, axis as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    );
+    run_exec(c, bad, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McMoveVelocity` (MC_MoveVelocity).
@@ -811,6 +858,12 @@ pub struct MC_MoveVelocity_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveVelocity_C {
+    in_target: InVelocity,
+    active: Active,
+    command_aborted: CommandAborted
+});
+
 /// Calls MC_MoveVelocity once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -820,65 +873,20 @@ pub unsafe extern "C" fn mc_move_velocity(
     axis: u32,
     fb: *mut MC_MoveVelocity_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveVelocity::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.continuous_update = c.ContinuousUpdate;
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.direction = Direction::from_u8(c.Direction).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.in_velocity = c.InVelocity;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.core.in_target = c.InVelocity;
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Active = false;
-            c.CommandAborted = false;
-            c.InVelocity = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
+    let mut bad = None;
+    let b = move_block!(
+        McMoveVelocity,
+        c {
+            execute: c.Execute,
+            continuous_update: c.ContinuousUpdate,
+            direction: enum_in(Direction::from_u8(c.Direction), &mut bad),
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
         }
-    }
-    b.call(e, axis as usize);
-    c.InVelocity = b.in_velocity;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    );
+    run_exec(c, bad, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McReset` (MC_Reset).
@@ -894,35 +902,21 @@ pub struct MC_Reset_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_Reset_C { done: Done });
+
 /// Calls MC_Reset once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_reset(engine: *mut McEngine, axis: u32, fb: *mut MC_Reset_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McReset {
+        execute: c.Execute,
+        ..Default::default()
     };
-    let mut b = McReset::default();
-    b.execute = c.Execute;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, axis as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = [u64::from(b.core.prev_execute), 0];
+    run_immediate(c, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McReadActualPosition` (MC_ReadActualPosition).
@@ -946,21 +940,15 @@ pub unsafe extern "C" fn mc_read_actual_position(
     axis: u32,
     fb: *mut MC_ReadActualPosition_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McReadActualPosition {
+        enable: c.Enable,
+        ..Default::default()
     };
-    let mut b = McReadActualPosition::default();
-    b.enable = c.Enable;
-    b.valid = c.Valid;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.position = c.Position;
     b.call(e, axis as usize);
+
     c.Valid = b.valid;
     c.Busy = b.busy;
     c.Error = b.error;
@@ -989,21 +977,15 @@ pub unsafe extern "C" fn mc_read_actual_velocity(
     axis: u32,
     fb: *mut MC_ReadActualVelocity_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McReadActualVelocity {
+        enable: c.Enable,
+        ..Default::default()
     };
-    let mut b = McReadActualVelocity::default();
-    b.enable = c.Enable;
-    b.valid = c.Valid;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.velocity = c.Velocity;
     b.call(e, axis as usize);
+
     c.Valid = b.valid;
     c.Busy = b.busy;
     c.Error = b.error;
@@ -1039,28 +1021,15 @@ pub unsafe extern "C" fn mc_read_status(
     axis: u32,
     fb: *mut MC_ReadStatus_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McReadStatus {
+        enable: c.Enable,
+        ..Default::default()
     };
-    let mut b = McReadStatus::default();
-    b.enable = c.Enable;
-    b.valid = c.Valid;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.error_stop = c.ErrorStop;
-    b.disabled = c.Disabled;
-    b.stopping = c.Stopping;
-    b.homing = c.Homing;
-    b.standstill = c.Standstill;
-    b.discrete_motion = c.DiscreteMotion;
-    b.continuous_motion = c.ContinuousMotion;
-    b.synchronized_motion = c.SynchronizedMotion;
     b.call(e, axis as usize);
+
     c.Valid = b.valid;
     c.Busy = b.busy;
     c.Error = b.error;
@@ -1096,21 +1065,15 @@ pub unsafe extern "C" fn mc_read_axis_error(
     axis: u32,
     fb: *mut MC_ReadAxisError_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McReadAxisError {
+        enable: c.Enable,
+        ..Default::default()
     };
-    let mut b = McReadAxisError::default();
-    b.enable = c.Enable;
-    b.valid = c.Valid;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.axis_error_id = err(c.AxisErrorID);
     b.call(e, axis as usize);
+
     c.Valid = b.valid;
     c.Busy = b.busy;
     c.Error = b.error;
@@ -1133,6 +1096,8 @@ pub struct MC_SetPosition_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_SetPosition_C { done: Done });
+
 /// Calls MC_SetPosition once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1142,32 +1107,16 @@ pub unsafe extern "C" fn mc_set_position(
     axis: u32,
     fb: *mut MC_SetPosition_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McSetPosition {
+        execute: c.Execute,
+        position: c.Position,
+        relative: c.Relative,
+        ..Default::default()
     };
-    let mut b = McSetPosition::default();
-    b.execute = c.Execute;
-    b.position = c.Position;
-    b.relative = c.Relative;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, axis as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = [u64::from(b.core.prev_execute), 0];
+    run_immediate(c, b, |b| b.call(e, axis as usize));
 }
 
 /// C view of `McSetOverride` (MC_SetOverride).
@@ -1193,23 +1142,18 @@ pub unsafe extern "C" fn mc_set_override(
     axis: u32,
     fb: *mut MC_SetOverride_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McSetOverride {
+        enable: c.Enable,
+        vel_factor: c.VelFactor,
+        acc_factor: c.AccFactor,
+        jerk_factor: c.JerkFactor,
+        ..Default::default()
     };
-    let mut b = McSetOverride::default();
-    b.enable = c.Enable;
-    b.vel_factor = c.VelFactor;
-    b.acc_factor = c.AccFactor;
-    b.jerk_factor = c.JerkFactor;
-    b.enabled = c.Enabled;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
     b.call(e, axis as usize);
+
     c.Enabled = b.enabled;
     c.Busy = b.busy;
     c.Error = b.error;
@@ -1239,6 +1183,12 @@ pub struct MC_GearIn_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_GearIn_C {
+    in_target: InGear,
+    active: Active,
+    command_aborted: CommandAborted
+});
+
 /// Calls MC_GearIn once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1249,66 +1199,23 @@ pub unsafe extern "C" fn mc_gear_in(
     slave: u32,
     fb: *mut MC_GearIn_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut bad = None;
+    let b = McGearIn {
+        execute: c.Execute,
+        continuous_update: c.ContinuousUpdate,
+        ratio_numerator: c.RatioNumerator,
+        ratio_denominator: c.RatioDenominator,
+        master_value_source: enum_in(master_source(c.MasterValueSource), &mut bad),
+        acceleration: c.Acceleration,
+        deceleration: c.Deceleration,
+        jerk: c.Jerk,
+        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+        ..Default::default()
     };
-    let mut b = McGearIn::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.continuous_update = c.ContinuousUpdate;
-    b.ratio_numerator = c.RatioNumerator;
-    b.ratio_denominator = c.RatioDenominator;
-    b.master_value_source = master_source(c.MasterValueSource).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.in_gear = c.InGear;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.core.in_target = c.InGear;
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Active = false;
-            c.CommandAborted = false;
-            c.InGear = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
-        }
-    }
-    b.call(e, master as usize, slave as usize);
-    c.InGear = b.in_gear;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    run_exec(c, bad, b, |b| b.call(e, master as usize, slave as usize));
 }
 
 /// C view of `McSyncOut` (MC_GearOut).
@@ -1324,37 +1231,21 @@ pub struct MC_GearOut_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_GearOut_C { done: Done });
+
 /// Calls MC_GearOut once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_gear_out(engine: *mut McEngine, slave: u32, fb: *mut MC_GearOut_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McSyncOut {
+        execute: c.Execute,
+        ..Default::default()
     };
-    let mut b = McSyncOut::default();
-    b.execute = c.Execute;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call_gear_out(e, slave as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    run_exec(c, None, b, |b| b.call_gear_out(e, slave as usize));
 }
 
 /// C view of `McSyncOut` (MC_CamOut).
@@ -1370,37 +1261,21 @@ pub struct MC_CamOut_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_CamOut_C { done: Done });
+
 /// Calls MC_CamOut once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_cam_out(engine: *mut McEngine, slave: u32, fb: *mut MC_CamOut_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McSyncOut {
+        execute: c.Execute,
+        ..Default::default()
     };
-    let mut b = McSyncOut::default();
-    b.execute = c.Execute;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call_cam_out(e, slave as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    run_exec(c, None, b, |b| b.call_cam_out(e, slave as usize));
 }
 
 /// C view of `McCamTableSelect` (MC_CamTableSelect).
@@ -1421,6 +1296,8 @@ pub struct MC_CamTableSelect_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_CamTableSelect_C { done: Done });
+
 /// Calls MC_CamTableSelect once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1431,36 +1308,20 @@ pub unsafe extern "C" fn mc_cam_table_select(
     slave: u32,
     fb: *mut MC_CamTableSelect_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McCamTableSelect {
+        execute: c.Execute,
+        cam_table: c.CamTable as usize,
+        periodic: c.Periodic,
+        master_absolute: c.MasterAbsolute,
+        slave_absolute: c.SlaveAbsolute,
+        cam_table_id: c.CamTableID as usize,
+        ..Default::default()
     };
-    let mut b = McCamTableSelect::default();
-    b.execute = c.Execute;
-    b.cam_table = c.CamTable as usize;
-    b.periodic = c.Periodic;
-    b.master_absolute = c.MasterAbsolute;
-    b.slave_absolute = c.SlaveAbsolute;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.cam_table_id = c.CamTableID as usize;
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, master as usize, slave as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
+    let b = run_immediate(c, b, |b| b.call(e, master as usize, slave as usize));
     c.CamTableID = b.cam_table_id as u32;
-    c._internal = [u64::from(b.core.prev_execute), 0];
 }
 
 /// C view of `McCamIn` (MC_CamIn).
@@ -1490,6 +1351,13 @@ pub struct MC_CamIn_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_CamIn_C {
+    in_target: InSync,
+    active: Active,
+    command_aborted: CommandAborted,
+    end_of_profile: EndOfProfile
+});
+
 /// Calls MC_CamIn once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1500,73 +1368,26 @@ pub unsafe extern "C" fn mc_cam_in(
     slave: u32,
     fb: *mut MC_CamIn_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut bad = None;
+    let b = McCamIn {
+        execute: c.Execute,
+        continuous_update: c.ContinuousUpdate,
+        master_offset: c.MasterOffset,
+        slave_offset: c.SlaveOffset,
+        master_scaling: c.MasterScaling,
+        slave_scaling: c.SlaveScaling,
+        master_value_source: enum_in(master_source(c.MasterValueSource), &mut bad),
+        cam_table_id: c.CamTableID as usize,
+        periodic: c.Periodic,
+        master_absolute: c.MasterAbsolute,
+        slave_absolute: c.SlaveAbsolute,
+        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+        ..Default::default()
     };
-    let mut b = McCamIn::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.continuous_update = c.ContinuousUpdate;
-    b.master_offset = c.MasterOffset;
-    b.slave_offset = c.SlaveOffset;
-    b.master_scaling = c.MasterScaling;
-    b.slave_scaling = c.SlaveScaling;
-    b.master_value_source = master_source(c.MasterValueSource).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.cam_table_id = c.CamTableID as usize;
-    b.periodic = c.Periodic;
-    b.master_absolute = c.MasterAbsolute;
-    b.slave_absolute = c.SlaveAbsolute;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.in_sync = c.InSync;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.end_of_profile = c.EndOfProfile;
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.core.in_target = c.InSync;
-    b.core.end_of_profile = c.EndOfProfile;
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Active = false;
-            c.CommandAborted = false;
-            c.InSync = false;
-            c.EndOfProfile = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
-        }
-    }
-    b.call(e, master as usize, slave as usize);
-    c.InSync = b.in_sync;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c.EndOfProfile = b.end_of_profile;
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    run_exec(c, bad, b, |b| b.call(e, master as usize, slave as usize));
 }
 
 /// C view of `McAddAxisToGroup` (MC_AddAxisToGroup).
@@ -1584,6 +1405,8 @@ pub struct MC_AddAxisToGroup_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_AddAxisToGroup_C { done: Done });
+
 /// Calls MC_AddAxisToGroup once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1593,32 +1416,16 @@ pub unsafe extern "C" fn mc_add_axis_to_group(
     group: u32,
     fb: *mut MC_AddAxisToGroup_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McAddAxisToGroup {
+        execute: c.Execute,
+        axis: c.Axis as usize,
+        ident_in_group: c.IdentInGroup as usize,
+        ..Default::default()
     };
-    let mut b = McAddAxisToGroup::default();
-    b.execute = c.Execute;
-    b.axis = c.Axis as usize;
-    b.ident_in_group = c.IdentInGroup as usize;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = [u64::from(b.core.prev_execute), 0];
+    run_immediate(c, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McRemoveAxisFromGroup` (MC_RemoveAxisFromGroup).
@@ -1635,6 +1442,8 @@ pub struct MC_RemoveAxisFromGroup_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_RemoveAxisFromGroup_C { done: Done });
+
 /// Calls MC_RemoveAxisFromGroup once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1644,31 +1453,15 @@ pub unsafe extern "C" fn mc_remove_axis_from_group(
     group: u32,
     fb: *mut MC_RemoveAxisFromGroup_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McRemoveAxisFromGroup {
+        execute: c.Execute,
+        ident_in_group: c.IdentInGroup as usize,
+        ..Default::default()
     };
-    let mut b = McRemoveAxisFromGroup::default();
-    b.execute = c.Execute;
-    b.ident_in_group = c.IdentInGroup as usize;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = [u64::from(b.core.prev_execute), 0];
+    run_immediate(c, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McUngroupAllAxes` (MC_UngroupAllAxes).
@@ -1684,6 +1477,8 @@ pub struct MC_UngroupAllAxes_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_UngroupAllAxes_C { done: Done });
+
 /// Calls MC_UngroupAllAxes once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1693,30 +1488,14 @@ pub unsafe extern "C" fn mc_ungroup_all_axes(
     group: u32,
     fb: *mut MC_UngroupAllAxes_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McUngroupAllAxes {
+        execute: c.Execute,
+        ..Default::default()
     };
-    let mut b = McUngroupAllAxes::default();
-    b.execute = c.Execute;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = [u64::from(b.core.prev_execute), 0];
+    run_immediate(c, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McGroupEnable` (MC_GroupEnable).
@@ -1732,6 +1511,8 @@ pub struct MC_GroupEnable_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_GroupEnable_C { done: Done });
+
 /// Calls MC_GroupEnable once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1741,30 +1522,14 @@ pub unsafe extern "C" fn mc_group_enable(
     group: u32,
     fb: *mut MC_GroupEnable_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McGroupEnable {
+        execute: c.Execute,
+        ..Default::default()
     };
-    let mut b = McGroupEnable::default();
-    b.execute = c.Execute;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = [u64::from(b.core.prev_execute), 0];
+    run_immediate(c, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McGroupDisable` (MC_GroupDisable).
@@ -1780,6 +1545,8 @@ pub struct MC_GroupDisable_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_GroupDisable_C { done: Done });
+
 /// Calls MC_GroupDisable once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1789,30 +1556,14 @@ pub unsafe extern "C" fn mc_group_disable(
     group: u32,
     fb: *mut MC_GroupDisable_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McGroupDisable {
+        execute: c.Execute,
+        ..Default::default()
     };
-    let mut b = McGroupDisable::default();
-    b.execute = c.Execute;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = [u64::from(b.core.prev_execute), 0];
+    run_immediate(c, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McGroupReset` (MC_GroupReset).
@@ -1828,6 +1579,8 @@ pub struct MC_GroupReset_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_GroupReset_C { done: Done });
+
 /// Calls MC_GroupReset once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -1837,30 +1590,14 @@ pub unsafe extern "C" fn mc_group_reset(
     group: u32,
     fb: *mut MC_GroupReset_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McGroupReset {
+        execute: c.Execute,
+        ..Default::default()
     };
-    let mut b = McGroupReset::default();
-    b.execute = c.Execute;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.core.prev_execute = c._internal[0] & 1 != 0;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = [u64::from(b.core.prev_execute), 0];
+    run_immediate(c, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McGroupStop` (MC_GroupStop).
@@ -1879,37 +1616,26 @@ pub struct MC_GroupStop_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_GroupStop_C {
+    done: Done,
+    command_aborted: CommandAborted
+});
+
 /// Calls MC_GroupStop once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_stop(engine: *mut McEngine, group: u32, fb: *mut MC_GroupStop_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let b = McGroupStop {
+        execute: c.Execute,
+        deceleration: c.Deceleration,
+        jerk: c.Jerk,
+        ..Default::default()
     };
-    let mut b = McGroupStop::default();
-    b.execute = c.Execute;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.prev_execute = prev;
-    b.cmd = cmd;
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.prev_execute, b.cmd);
+    run_stop(c, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McGroupHome` (MC_GroupHome).
@@ -1929,62 +1655,24 @@ pub struct MC_GroupHome_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_GroupHome_C);
+
 /// Calls MC_GroupHome once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_home(engine: *mut McEngine, group: u32, fb: *mut MC_GroupHome_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut bad = None;
+    let b = McGroupHome {
+        execute: c.Execute,
+        position: c.Position,
+        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+        ..Default::default()
     };
-    let mut b = McGroupHome::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.position = c.Position;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
-        }
-    }
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McGroupHalt` (MC_GroupHalt).
@@ -2005,63 +1693,25 @@ pub struct MC_GroupHalt_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_GroupHalt_C);
+
 /// Calls MC_GroupHalt once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_halt(engine: *mut McEngine, group: u32, fb: *mut MC_GroupHalt_C) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut bad = None;
+    let b = McGroupHalt {
+        execute: c.Execute,
+        deceleration: c.Deceleration,
+        jerk: c.Jerk,
+        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+        ..Default::default()
     };
-    let mut b = McGroupHalt::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
-        }
-    }
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McMoveLinearAbsolute` (MC_MoveLinearAbsolute).
@@ -2088,6 +1738,8 @@ pub struct MC_MoveLinearAbsolute_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveLinearAbsolute_C);
+
 /// Calls MC_MoveLinearAbsolute once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -2097,67 +1749,19 @@ pub unsafe extern "C" fn mc_move_linear_absolute(
     group: u32,
     fb: *mut MC_MoveLinearAbsolute_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveLinearAbsolute::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.position = c.Position;
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.coord_system = c.CoordSystem;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_parameter = c.TransitionParameter;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
+    let mut bad = None;
+    let b = path_block!(
+        McMoveLinearAbsolute,
+        c,
+        bad {
+            execute: c.Execute,
+            position: c.Position,
         }
-    }
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    );
+    run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McMoveLinearRelative` (MC_MoveLinearRelative).
@@ -2184,6 +1788,8 @@ pub struct MC_MoveLinearRelative_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveLinearRelative_C);
+
 /// Calls MC_MoveLinearRelative once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -2193,67 +1799,19 @@ pub unsafe extern "C" fn mc_move_linear_relative(
     group: u32,
     fb: *mut MC_MoveLinearRelative_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveLinearRelative::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.distance = c.Distance;
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.coord_system = c.CoordSystem;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_parameter = c.TransitionParameter;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
+    let mut bad = None;
+    let b = path_block!(
+        McMoveLinearRelative,
+        c,
+        bad {
+            execute: c.Execute,
+            distance: c.Distance,
         }
-    }
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    );
+    run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McMoveDirectAbsolute` (MC_MoveDirectAbsolute).
@@ -2280,6 +1838,8 @@ pub struct MC_MoveDirectAbsolute_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveDirectAbsolute_C);
+
 /// Calls MC_MoveDirectAbsolute once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -2289,67 +1849,19 @@ pub unsafe extern "C" fn mc_move_direct_absolute(
     group: u32,
     fb: *mut MC_MoveDirectAbsolute_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveDirectAbsolute::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.position = c.Position;
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.coord_system = c.CoordSystem;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_parameter = c.TransitionParameter;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
+    let mut bad = None;
+    let b = path_block!(
+        McMoveDirectAbsolute,
+        c,
+        bad {
+            execute: c.Execute,
+            position: c.Position,
         }
-    }
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    );
+    run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McMoveCircularAbsolute` (MC_MoveCircularAbsolute).
@@ -2379,6 +1891,8 @@ pub struct MC_MoveCircularAbsolute_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveCircularAbsolute_C);
+
 /// Calls MC_MoveCircularAbsolute once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -2388,76 +1902,12 @@ pub unsafe extern "C" fn mc_move_circular_absolute(
     group: u32,
     fb: *mut MC_MoveCircularAbsolute_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveCircularAbsolute::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.circ_mode_center = circ_mode(c.CircMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.aux_point = c.AuxPoint;
-    b.end_point = c.EndPoint;
-    b.path_choice_ccw = path_choice(c.PathChoice).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.coord_system = c.CoordSystem;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_parameter = c.TransitionParameter;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
-        }
-    }
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    let mut bad = None;
+    let b = circular_block!(McMoveCircularAbsolute, c, bad);
+    run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McMoveCircularRelative` (MC_MoveCircularRelative).
@@ -2487,6 +1937,8 @@ pub struct MC_MoveCircularRelative_C {
     pub _internal: [u64; 2],
 }
 
+block_c!(MC_MoveCircularRelative_C);
+
 /// Calls MC_MoveCircularRelative once (one PLC scan).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
@@ -2496,76 +1948,12 @@ pub unsafe extern "C" fn mc_move_circular_relative(
     group: u32,
     fb: *mut MC_MoveCircularRelative_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
-    };
-    let mut b = McMoveCircularRelative::default();
-    let mut bad: Option<ErrorId> = None;
-    b.execute = c.Execute;
-    b.circ_mode_center = circ_mode(c.CircMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.aux_point = c.AuxPoint;
-    b.end_point = c.EndPoint;
-    b.path_choice_ccw = path_choice(c.PathChoice).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.velocity = c.Velocity;
-    b.acceleration = c.Acceleration;
-    b.deceleration = c.Deceleration;
-    b.jerk = c.Jerk;
-    b.coord_system = c.CoordSystem;
-    b.buffer_mode = BufferMode::from_u8(c.BufferMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_mode = TransitionMode::from_u8(c.TransitionMode).unwrap_or_else(|id| {
-        bad.get_or_insert(id);
-        Default::default()
-    });
-    b.transition_parameter = c.TransitionParameter;
-    b.done = c.Done;
-    b.busy = c.Busy;
-    b.active = c.Active;
-    b.command_aborted = c.CommandAborted;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    let (prev, cmd) = unpack(c._internal);
-    b.core.prev_execute = prev;
-    b.core.cmd = cmd;
-    b.core.done = c.Done;
-    b.core.busy = c.Busy;
-    b.core.active = c.Active;
-    b.core.command_aborted = c.CommandAborted;
-    b.core.error = c.Error;
-    b.core.error_id = err(c.ErrorID);
-    if let Some(id) = bad {
-        // An out-of-range enumeration refuses the command on the rising edge.
-        if c.Execute && !b.core.prev_execute && !b.core.busy {
-            c.Done = false;
-            c.Active = false;
-            c.CommandAborted = false;
-            c.Busy = false;
-            c.Error = true;
-            c.ErrorID = id.code();
-            c._internal = pack(true, b.core.cmd);
-            return;
-        }
-    }
-    b.call(e, group as usize);
-    c.Done = b.done;
-    c.Busy = b.busy;
-    c.Active = b.active;
-    c.CommandAborted = b.command_aborted;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c._internal = pack(b.core.prev_execute, b.core.cmd);
+    let mut bad = None;
+    let b = circular_block!(McMoveCircularRelative, c, bad);
+    run_exec(c, bad, b, |b| b.call(e, group as usize));
 }
 
 /// C view of `McGroupReadActualPosition` (MC_GroupReadActualPosition).
@@ -2590,22 +1978,16 @@ pub unsafe extern "C" fn mc_group_read_actual_position(
     group: u32,
     fb: *mut MC_GroupReadActualPosition_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McGroupReadActualPosition {
+        enable: c.Enable,
+        coord_system: c.CoordSystem,
+        ..Default::default()
     };
-    let mut b = McGroupReadActualPosition::default();
-    b.enable = c.Enable;
-    b.coord_system = c.CoordSystem;
-    b.valid = c.Valid;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.position = c.Position;
     b.call(e, group as usize);
+
     c.Valid = b.valid;
     c.Busy = b.busy;
     c.Error = b.error;
@@ -2636,23 +2018,16 @@ pub unsafe extern "C" fn mc_group_read_actual_velocity(
     group: u32,
     fb: *mut MC_GroupReadActualVelocity_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McGroupReadActualVelocity {
+        enable: c.Enable,
+        coord_system: c.CoordSystem,
+        ..Default::default()
     };
-    let mut b = McGroupReadActualVelocity::default();
-    b.enable = c.Enable;
-    b.coord_system = c.CoordSystem;
-    b.valid = c.Valid;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.velocity = c.Velocity;
-    b.path_velocity = c.PathVelocity;
     b.call(e, group as usize);
+
     c.Valid = b.valid;
     c.Busy = b.busy;
     c.Error = b.error;
@@ -2687,26 +2062,15 @@ pub unsafe extern "C" fn mc_group_read_status(
     group: u32,
     fb: *mut MC_GroupReadStatus_C,
 ) {
-    let Some(e) = (unsafe { eng(engine) }) else {
+    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
         return;
     };
-    // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let Some(c) = (unsafe { fb.as_mut() }) else {
-        return;
+    let mut b = McGroupReadStatus {
+        enable: c.Enable,
+        ..Default::default()
     };
-    let mut b = McGroupReadStatus::default();
-    b.enable = c.Enable;
-    b.valid = c.Valid;
-    b.busy = c.Busy;
-    b.error = c.Error;
-    b.error_id = err(c.ErrorID);
-    b.group_moving = c.GroupMoving;
-    b.group_homing = c.GroupHoming;
-    b.group_error_stop = c.GroupErrorStop;
-    b.group_standby = c.GroupStandby;
-    b.group_stopping = c.GroupStopping;
-    b.group_disabled = c.GroupDisabled;
     b.call(e, group as usize);
+
     c.Valid = b.valid;
     c.Busy = b.busy;
     c.Error = b.error;
@@ -2745,6 +2109,18 @@ pub const MC_CURRENT_DIRECTION: u8 = 3;
 pub const MC_TM_NONE: u8 = 0;
 /// MC_TRANSITION_MODE value.
 pub const MC_TM_CORNER_DISTANCE: u8 = 3;
+/// MC_TRANSITION_MODE TMMaxCornerDeviation.
+pub const MC_TM_MAX_CORNER_DEVIATION: u8 = 4;
+/// MC_CIRC_MODE BORDER (AuxPoint on the arc).
+pub const MC_CIRC_BORDER: u8 = 0;
+/// MC_CIRC_MODE CENTER (AuxPoint the centre, X/Y plane).
+pub const MC_CIRC_CENTER: u8 = 1;
+/// MC_CIRC_MODE RADIUS (AuxPoint the plane's normal, its length the radius).
+pub const MC_CIRC_RADIUS: u8 = 2;
+/// MC_CIRC_PATHCHOICE clockwise.
+pub const MC_CLOCKWISE: u8 = 0;
+/// MC_CIRC_PATHCHOICE counter-clockwise.
+pub const MC_COUNTER_CLOCKWISE: u8 = 1;
 /// ErrorID 0: None
 pub const MC_ERR_NONE: u16 = 0;
 /// ErrorID 1: The axis index does not name an axis of the engine.
@@ -2789,7 +2165,7 @@ pub const MC_ERR_INVALID_BUFFER_MODE: u16 = 26;
 pub const MC_ERR_TARGET_BEYOND_SOFTWARE_LIMIT: u16 = 27;
 /// ErrorID 28: Gear ratio invalid (denominator 0 or not finite).
 pub const MC_ERR_INVALID_RATIO: u16 = 28;
-/// ErrorID 30: Override factor negative or not finite.
+/// ErrorID 30: Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
 pub const MC_ERR_INVALID_OVERRIDE: u16 = 30;
 /// ErrorID 31: The profile planner found no profile for these inputs.
 pub const MC_ERR_PLANNING_FAILED: u16 = 31;
@@ -2815,7 +2191,7 @@ pub const MC_ERR_AXIS_ALREADY_IN_GROUP: u16 = 56;
 pub const MC_ERR_AXIS_NOT_IN_GROUP: u16 = 57;
 /// ErrorID 58: MC_GroupEnable needs at least one axis, every axis powered and in Standstill.
 pub const MC_ERR_GROUP_AXES_NOT_READY: u16 = 58;
-/// ErrorID 59: TransitionMode unknown or not supported (only TMNone and TMCornerDistance are).
+/// ErrorID 59: TransitionMode unknown or not supported (TMStartVelocity, TMConstantVelocity), or a negative TransitionParameter.
 pub const MC_ERR_INVALID_TRANSITION_MODE: u16 = 59;
 /// ErrorID 60: The circle is not defined (collinear points, end point off the circle, zero radius).
 pub const MC_ERR_INVALID_CIRCLE: u16 = 60;

@@ -49,7 +49,8 @@ pub struct PathInputs {
     pub jerk: f64,
     pub buffer: BufferMode,
     pub transition: TransitionMode,
-    /// Corner distance for TMCornerDistance.
+    /// TMCornerDistance: the corner distance; TMMaxCornerDeviation: the largest
+    /// distance of the blend from the corner.
     pub transition_parameter: f64,
 }
 
@@ -454,7 +455,8 @@ impl Engine {
                 check(&end)?;
                 check(&aux)?;
                 let mut e = from;
-                let mut x = from;
+                // RADIUS: AuxPoint is the plane's normal vector, taken as given.
+                let mut x = if mode == CircMode::Radius { aux } else { from };
                 for i in 0..n {
                     if gr.axes[i].is_some() {
                         e[i] = if relative {
@@ -462,7 +464,9 @@ impl Engine {
                         } else {
                             end[i] - origin(self, i)
                         };
-                        x[i] = if relative {
+                        x[i] = if mode == CircMode::Radius {
+                            aux[i]
+                        } else if relative {
                             from[i] + aux[i]
                         } else {
                             aux[i] - origin(self, i)
@@ -530,10 +534,16 @@ impl Engine {
             ..
         } = motion
         {
-            let mut x = *from;
+            let mut x = if *mode == CircMode::Radius {
+                *aux
+            } else {
+                *from
+            };
             for i in 0..n {
                 if let Some(a) = self.groups[g].axes[i] {
-                    x[i] = if *relative {
+                    x[i] = if *mode == CircMode::Radius {
+                        aux[i]
+                    } else if *relative {
                         from[i] + aux[i]
                     } else {
                         aux[i] - self.axes[a as usize].origin
@@ -582,17 +592,20 @@ impl Engine {
         let mut vj = next.inputs.buffer.junction_speed(pred_speed, next.speed);
         // Corner blend.
         let mut new_pred_target = pred_target;
-        if next.inputs.transition == TransitionMode::CornerDistance
+        let cos = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>();
+        if next.inputs.transition != TransitionMode::None
             && next.inputs.transition_parameter > 0.0
             && vj > 0.0
             && matches!(pred_geom, Geometry::Line { .. })
             && matches!(next_geom, Geometry::Line { .. })
         {
-            let mut d = next
-                .inputs
-                .transition_parameter
-                .min(pred_geom.len() / 2.0)
-                .min(next_geom.len() / 2.0);
+            let mut d = corner_distance(
+                next.inputs.transition,
+                next.inputs.transition_parameter,
+                cos,
+            )
+            .min(pred_geom.len() / 2.0)
+            .min(next_geom.len() / 2.0);
             if pred_is_active {
                 if let Some(a) = &gr.active {
                     let s_now = a.prof.at(a.t - a.prefix_end).p;
@@ -601,7 +614,6 @@ impl Engine {
                     d = d.min(remaining * 0.5);
                 }
             }
-            let cos = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>();
             if d > 1e-9 && cos < 1.0 - 1e-12 {
                 let mut pa = pred_target;
                 let mut pb = pred_target;
@@ -1129,4 +1141,24 @@ fn dist(a: &Vecn, b: &Vecn) -> f64 {
         .map(|(x, y)| (x - y) * (x - y))
         .sum::<f64>()
         .sqrt()
+}
+
+/// Corner distance d of the symmetric quadratic Bezier blend (legs meeting with unit
+/// tangents u1, u2, cos = u1.u2). TMCornerDistance gives d itself. The blend's closest
+/// point to the corner is its midpoint (p0 + 2 c + p2) / 4, at distance
+/// d |u2 - u1| / 4 = d sqrt(2 - 2 cos) / 4 from it, so TMMaxCornerDeviation e gives
+/// d = 4 e / sqrt(2 - 2 cos) (a shorter d, as when a leg is short, deviates less).
+pub(crate) fn corner_distance(mode: TransitionMode, parameter: f64, cos: f64) -> f64 {
+    match mode {
+        TransitionMode::None => 0.0,
+        TransitionMode::CornerDistance => parameter,
+        TransitionMode::MaxCornerDeviation => {
+            let gap = (2.0 - 2.0 * cos).max(0.0).sqrt();
+            if gap > 1e-12 {
+                4.0 * parameter / gap
+            } else {
+                0.0
+            }
+        }
+    }
 }

@@ -4,9 +4,8 @@
 //! the PLCopen outputs. Invariants: the output rules of [`crate::blocks`] (shared
 //! [`ExecCore`] / [`ImmediateCore`]); positions are arrays indexed by IdentInGroup.
 
-use crate::blocks::{ExecCore, ImmediateCore};
+use crate::blocks::{outputs_from_core, ExecCore, ImmediateCore, StopCore};
 use crate::buffer::{BufferMode, TransitionMode};
-use crate::cmd::{CmdId, CmdStatus};
 use crate::engine::Engine;
 use crate::error::ErrorId;
 use crate::fsm::GroupState;
@@ -31,10 +30,7 @@ macro_rules! immediate_block {
             pub fn call(&mut self, $eng: &mut Engine, $g: usize) {
                 let $s = *self;
                 self.core.cycle(self.execute, || $body);
-                self.done = self.core.done;
-                self.busy = self.core.busy;
-                self.error = self.core.error;
-                self.error_id = self.core.error_id;
+                outputs_from_core!(@final self);
             }
         }
     };
@@ -121,12 +117,7 @@ macro_rules! motion_block {
                     },
                     None,
                 );
-                self.done = self.core.done;
-                self.busy = self.core.busy;
-                self.active = self.core.active;
-                self.command_aborted = self.core.command_aborted;
-                self.error = self.core.error;
-                self.error_id = self.core.error_id;
+                outputs_from_core!(self);
             }
         }
     };
@@ -148,11 +139,11 @@ motion_block!(
     |s| GroupMotion::DirectAbsolute { position: s.position }
 );
 motion_block!(
-    /// MC_MoveCircularAbsolute (CircMode: false = BORDER, true = CENTER; PathChoice:
-    /// false = clockwise, true = counter-clockwise, centre mode only).
-    McMoveCircularAbsolute { circ_mode_center: bool, aux_point: Vecn, end_point: Vecn, path_choice_ccw: bool }
+    /// MC_MoveCircularAbsolute (CircMode BORDER, CENTER or RADIUS, see [`CircMode`];
+    /// PathChoice: false = clockwise, true = counter-clockwise, CENTER and RADIUS only).
+    McMoveCircularAbsolute { circ_mode: CircMode, aux_point: Vecn, end_point: Vecn, path_choice_ccw: bool }
     |s| GroupMotion::Circular {
-        mode: if s.circ_mode_center { CircMode::Center } else { CircMode::Border },
+        mode: s.circ_mode,
         aux: s.aux_point,
         end: s.end_point,
         ccw: s.path_choice_ccw,
@@ -160,10 +151,11 @@ motion_block!(
     }
 );
 motion_block!(
-    /// MC_MoveCircularRelative (AuxPoint and EndPoint relative to the start point).
-    McMoveCircularRelative { circ_mode_center: bool, aux_point: Vecn, end_point: Vecn, path_choice_ccw: bool }
+    /// MC_MoveCircularRelative (AuxPoint and EndPoint relative to the start point; in
+    /// RADIUS mode AuxPoint is the plane's normal vector either way).
+    McMoveCircularRelative { circ_mode: CircMode, aux_point: Vecn, end_point: Vecn, path_choice_ccw: bool }
     |s| GroupMotion::Circular {
-        mode: if s.circ_mode_center { CircMode::Center } else { CircMode::Border },
+        mode: s.circ_mode,
         aux: s.aux_point,
         end: s.end_point,
         ccw: s.path_choice_ccw,
@@ -192,12 +184,18 @@ impl McGroupHome {
         let pos = self.position;
         self.core
             .cycle(eng, self.execute, |e| e.group_home(group, pos), None);
-        self.done = self.core.done;
-        self.busy = self.core.busy;
-        self.active = self.core.active;
-        self.command_aborted = self.core.command_aborted;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        outputs_from_core!(self);
+    }
+}
+
+/// Path inputs of MC_GroupHalt and MC_GroupStop: brake with `deceleration` and `jerk`.
+fn braking(deceleration: f64, jerk: f64) -> PathInputs {
+    PathInputs {
+        velocity: 1.0,
+        acceleration: deceleration,
+        deceleration,
+        jerk,
+        ..PathInputs::default()
     }
 }
 
@@ -221,12 +219,8 @@ pub struct McGroupHalt {
 impl McGroupHalt {
     pub fn call(&mut self, eng: &mut Engine, group: usize) {
         let inputs = PathInputs {
-            velocity: 1.0,
-            acceleration: self.deceleration,
-            deceleration: self.deceleration,
-            jerk: self.jerk,
             buffer: self.buffer_mode,
-            ..PathInputs::default()
+            ..braking(self.deceleration, self.jerk)
         };
         self.core.cycle(
             eng,
@@ -234,12 +228,7 @@ impl McGroupHalt {
             |e| e.submit_group(group, GroupMotion::Halt, inputs),
             None,
         );
-        self.done = self.core.done;
-        self.busy = self.core.busy;
-        self.active = self.core.active;
-        self.command_aborted = self.core.command_aborted;
-        self.error = self.core.error;
-        self.error_id = self.core.error_id;
+        outputs_from_core!(self);
     }
 }
 
@@ -255,74 +244,20 @@ pub struct McGroupStop {
     pub error: bool,
     pub error_id: ErrorId,
     #[doc(hidden)]
-    pub prev_execute: bool,
-    #[doc(hidden)]
-    pub cmd: Option<CmdId>,
+    pub core: StopCore,
 }
 
 impl McGroupStop {
     pub fn call(&mut self, eng: &mut Engine, group: usize) {
-        let was_final = self.done || self.error || self.command_aborted;
-        let rising = self.execute && !self.prev_execute;
-        self.prev_execute = self.execute;
-        if rising && !self.busy {
-            if let Some(old) = self.cmd.take() {
-                eng.release_group_stop(group, old);
-                eng.release(old);
-            }
-            self.done = false;
-            self.error = false;
-            self.command_aborted = false;
-            self.error_id = ErrorId::None;
-            let inputs = PathInputs {
-                velocity: 1.0,
-                acceleration: self.deceleration,
-                deceleration: self.deceleration,
-                jerk: self.jerk,
-                ..PathInputs::default()
-            };
-            match eng.submit_group(group, GroupMotion::Stop, inputs) {
-                Ok(id) => {
-                    self.cmd = Some(id);
-                    self.busy = true;
-                }
-                Err(e) => {
-                    self.error = true;
-                    self.error_id = e;
-                }
-            }
-        }
-        if let Some(id) = self.cmd {
-            match eng.status(id) {
-                CmdStatus::Queued | CmdStatus::Active => self.busy = true,
-                CmdStatus::Done => {
-                    self.busy = false;
-                    self.done = true;
-                    if !self.execute {
-                        eng.release_group_stop(group, id);
-                        eng.release(id);
-                        self.cmd = None;
-                    }
-                }
-                st => {
-                    self.busy = false;
-                    if let CmdStatus::Error(e) = st {
-                        self.error = true;
-                        self.error_id = e;
-                    } else {
-                        self.command_aborted = true;
-                    }
-                    eng.release(id);
-                    self.cmd = None;
-                }
-            }
-        }
-        if !self.execute && was_final && !rising {
-            self.done = false;
-            self.error = false;
-            self.command_aborted = false;
-            self.error_id = ErrorId::None;
-        }
+        let inputs = braking(self.deceleration, self.jerk);
+        self.core.cycle(
+            eng,
+            self.execute,
+            |e| e.submit_group(group, GroupMotion::Stop, inputs),
+            |e, id| e.release_group_stop(group, id),
+        );
+        outputs_from_core!(@final self);
+        self.command_aborted = self.core.command_aborted;
     }
 }
 

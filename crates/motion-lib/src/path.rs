@@ -87,13 +87,34 @@ fn xyz(v: &Vecn) -> [f64; 3] {
     [v[0], v[1], v[2]]
 }
 
-/// How a circle is given (PLCopen MC_CIRC_MODE).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// How a circle is given (PLCopen MC_CIRC_MODE; C values 0, 1, 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum CircMode {
     /// AuxPoint is a point on the arc between start and end.
+    #[default]
     Border,
     /// AuxPoint is the centre (in the X/Y plane; Z moves linearly).
     Center,
+    /// AuxPoint (X, Y, Z) is a vector, not a point: the normal of the circle's plane
+    /// (through the start point), its length the radius. PathChoice is the direction
+    /// of rotation seen from the tip of the normal (counter-clockwise = right-hand rule
+    /// about it); of the two arcs of that radius and direction the shorter one (at most
+    /// 180 degrees) is taken. The part of EndPoint - StartPoint along the normal is
+    /// travelled linearly (a helix). In MC_MoveCircularRelative too AuxPoint is this
+    /// vector (it is not offset by the start point).
+    Radius,
+}
+
+impl CircMode {
+    /// From the C value (0 BORDER, 1 CENTER, 2 RADIUS).
+    pub fn from_u8(v: u8) -> Option<CircMode> {
+        match v {
+            0 => Some(CircMode::Border),
+            1 => Some(CircMode::Center),
+            2 => Some(CircMode::Radius),
+            _ => None,
+        }
+    }
 }
 
 impl Geometry {
@@ -115,7 +136,8 @@ impl Geometry {
     }
 
     /// A circular arc from `a` to `b` (`aux` per [`CircMode`]); `ccw` is the PathChoice
-    /// for centre mode (about +Z). None when the circle is undefined.
+    /// for centre mode (about +Z) and radius mode (about the normal `aux`). None when
+    /// the circle is undefined.
     pub fn arc(a: &Vecn, aux: &Vecn, b: &Vecn, mode: CircMode, ccw: bool) -> Option<Geometry> {
         let (s, e) = (xyz(a), xyz(b));
         let (center, e1, e2, r, angle) = match mode {
@@ -172,6 +194,7 @@ impl Geometry {
                 }
                 (c, e1, e2, r, ang)
             }
+            CircMode::Radius => return Self::arc_by_radius(a, aux, b, ccw),
         };
         let mut start = *a;
         let mut delta = sub(b, a);
@@ -180,15 +203,29 @@ impl Geometry {
             start[i] = 0.0;
             delta[i] = 0.0;
         }
+        let center = if mode == CircMode::Center {
+            [center[0], center[1], 0.0]
+        } else {
+            center
+        };
+        Some(Self::helix(center, e1, e2, r, angle, start, delta))
+    }
+
+    /// An arc of radius `r` turning `angle` from `center + r e1` towards `e2`, plus the
+    /// linear motion `delta` from `start` (the arc's axes zero in both).
+    fn helix(
+        center: [f64; 3],
+        e1: [f64; 3],
+        e2: [f64; 3],
+        r: f64,
+        angle: f64,
+        start: Vecn,
+        delta: Vecn,
+    ) -> Geometry {
         let arc_len = r * angle;
         let len = (arc_len * arc_len + norm(&delta).powi(2)).sqrt();
-        let _ = circle_axes;
-        Some(Geometry::Arc {
-            center: if mode == CircMode::Center {
-                [center[0], center[1], 0.0]
-            } else {
-                center
-            },
+        Geometry::Arc {
+            center,
             e1,
             e2,
             r,
@@ -196,7 +233,57 @@ impl Geometry {
             start,
             delta,
             len,
-        })
+        }
+    }
+
+    /// CircMode RADIUS (see [`CircMode::Radius`]): the shorter arc of radius |n| in the
+    /// plane through `a` normal to `n` (X/Y/Z of `aux`), turning about `n` (ccw) or
+    /// about -n (clockwise) from `a` to `b`. None when n is zero, the chord in the plane
+    /// is zero or longer than the diameter.
+    fn arc_by_radius(a: &Vecn, aux: &Vecn, b: &Vecn, ccw: bool) -> Option<Geometry> {
+        let n = xyz(aux);
+        let r = dot3(&n, &n).sqrt();
+        let nu = unit3(n)?;
+        let axis = if ccw { nu } else { [-nu[0], -nu[1], -nu[2]] };
+        let (s, e) = (xyz(a), xyz(b));
+        let w = [e[0] - s[0], e[1] - s[1], e[2] - s[2]];
+        let along = dot3(&w, &nu);
+        let wp = [
+            w[0] - along * nu[0],
+            w[1] - along * nu[1],
+            w[2] - along * nu[2],
+        ];
+        let chord = dot3(&wp, &wp).sqrt();
+        if chord < 1e-12 * r.max(1.0) || chord > 2.0 * r * (1.0 + 1e-12) {
+            return None;
+        }
+        // The centre lies left of the chord seen from the tip of the rotation axis.
+        let h = (r * r - chord * chord / 4.0).max(0.0).sqrt();
+        let left = unit3(cross(&axis, &wp))?;
+        let c = [
+            s[0] + wp[0] / 2.0 + h * left[0],
+            s[1] + wp[1] / 2.0 + h * left[1],
+            s[2] + wp[2] / 2.0 + h * left[2],
+        ];
+        let rs = [s[0] - c[0], s[1] - c[1], s[2] - c[2]];
+        let e1 = unit3(rs)?;
+        let e2 = cross(&axis, &e1);
+        let re = [
+            s[0] + wp[0] - c[0],
+            s[1] + wp[1] - c[1],
+            s[2] + wp[2] - c[2],
+        ];
+        let angle = dot3(&re, &e2).atan2(dot3(&re, &e1));
+        if angle <= 0.0 {
+            return None;
+        }
+        let mut start = *a;
+        let mut delta = sub(b, a);
+        for i in 0..3 {
+            start[i] = 0.0;
+            delta[i] = along * nu[i];
+        }
+        Some(Self::helix(c, e1, e2, r, angle, start, delta))
     }
 
     /// The corner blend from `p0` through control `p1` to `p2`.

@@ -1,6 +1,7 @@
-//! Builds tests/c/power_move.c with the system C compiler (-std=c99 -Wall -Wextra -Werror)
-//! against include/motion_lib.h and the crate's staticlib, runs it, and expects
-//! MC_Power + MC_MoveAbsolute to reach Done.
+//! Builds the C programs in tests/c (power_move.c, block_frames.c) with the system C
+//! compiler (-std=c99 -Wall -Wextra -Werror)
+//! against include/motion_lib.h and the crate's staticlib and runs them: MC_Power +
+//! MC_MoveAbsolute to Done, then every kind of block frame of the C ABI.
 //!
 //! Finding the staticlib: `cargo test` compiles the library with all its crate types, so
 //! the staticlib of the current sources is the newest `libmotion_lib*.a` in the profile's
@@ -44,19 +45,20 @@ fn staticlib() -> PathBuf {
     target.join("debug/libmotion_lib.a")
 }
 
-#[test]
-fn c_program_powers_and_moves_to_done() {
+/// Compiles tests/c/`name`.c against the header and the staticlib, runs it and returns
+/// its standard output (the test fails when it does not compile or exits non-zero).
+fn build_and_run(name: &str) -> String {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR"));
     let lib = staticlib();
     assert!(lib.exists(), "{} missing", lib.display());
-    let tmp = std::env::temp_dir().join(format!("motion_lib_c_{}", std::process::id()));
+    let tmp = std::env::temp_dir().join(format!("motion_lib_c_{name}_{}", std::process::id()));
     std::fs::create_dir_all(&tmp).unwrap();
-    let exe = tmp.join("power_move");
+    let exe = tmp.join(name);
     let out = Command::new("cc")
         .args(["-std=c99", "-Wall", "-Wextra", "-Werror"])
         .arg("-I")
         .arg(dir.join("include"))
-        .arg(dir.join("tests/c/power_move.c"))
+        .arg(dir.join(format!("tests/c/{name}.c")))
         .arg(&lib)
         .args(["-lpthread", "-ldl", "-lm", "-o"])
         .arg(&exe)
@@ -68,7 +70,7 @@ fn c_program_powers_and_moves_to_done() {
         String::from_utf8_lossy(&out.stderr)
     );
     let run = Command::new(&exe).output().unwrap();
-    let stdout = String::from_utf8_lossy(&run.stdout);
+    let stdout = String::from_utf8_lossy(&run.stdout).into_owned();
     assert!(
         run.status.success(),
         "C program failed ({:?}): {}{}",
@@ -76,7 +78,22 @@ fn c_program_powers_and_moves_to_done() {
         stdout,
         String::from_utf8_lossy(&run.stderr)
     );
+    let _ = std::fs::remove_dir_all(&tmp);
+    stdout
+}
+
+#[test]
+fn c_program_powers_and_moves_to_done() {
+    let stdout = build_and_run("power_move");
     assert!(stdout.starts_with("Done after "), "{stdout}");
     assert!(stdout.contains("at 250.000000"), "{stdout}");
-    let _ = std::fs::remove_dir_all(&tmp);
+}
+
+/// tests/c/block_frames.c: every kind of block frame through the C ABI (Execute-type
+/// with Done and with InVelocity, MC_Stop and MC_GroupStop holding, immediate, Enable),
+/// refused enumerations, CircMode RADIUS and the transition modes.
+#[test]
+fn c_program_drives_every_block_frame() {
+    let stdout = build_and_run("block_frames");
+    assert_eq!(stdout.trim(), "frames ok");
 }

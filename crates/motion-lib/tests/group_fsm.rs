@@ -1,40 +1,16 @@
 //! Group state machine (Part 4) through the group blocks; circular and direct moves;
 //! the group reads.
 
-use motion_lib::axis::AxisConfig;
 use motion_lib::blocks::{McMoveAbsolute, McPower};
 use motion_lib::buffer::BufferMode;
-use motion_lib::engine::{Engine, EngineConfig};
+use motion_lib::engine::Engine;
 use motion_lib::error::ErrorId;
 use motion_lib::fsm::{AxisState, GroupState};
 use motion_lib::group_blocks::*;
-use motion_lib::profile::Limits;
+use motion_lib::path::CircMode;
 
-fn axes(n: usize) -> (Engine, Vec<usize>, usize) {
-    let mut e = Engine::new(EngineConfig {
-        cycle: 0.001,
-        queue_depth: 4,
-    })
-    .unwrap();
-    let cfg = AxisConfig {
-        limits: Limits {
-            vmax: 200.0,
-            amax: 2000.0,
-            dmax: 2000.0,
-            jmax: 20000.0,
-        },
-        ..AxisConfig::default()
-    };
-    let v: Vec<usize> = (0..n).map(|_| e.add_axis(cfg).unwrap()).collect();
-    let g = e.add_group();
-    (e, v, g)
-}
-
-fn vecn(x: &[f64]) -> [f64; 16] {
-    let mut v = [0.0; 16];
-    v[..x.len()].copy_from_slice(x);
-    v
-}
+mod group_common;
+use group_common::{axes, vecn};
 
 fn lin(x: &[f64], bm: BufferMode) -> McMoveLinearAbsolute {
     McMoveLinearAbsolute {
@@ -332,7 +308,7 @@ fn circular_move_stays_on_the_circle() {
     });
     let mut c = McMoveCircularAbsolute {
         execute: true,
-        circ_mode_center: true,
+        circ_mode: CircMode::Center,
         aux_point: vecn(&[0.0, 0.0]),
         end_point: vecn(&[0.0, 10.0]),
         path_choice_ccw: true,
@@ -380,7 +356,7 @@ fn circular_move_stays_on_the_circle() {
     // its acceleration limit (2000).
     let mut tight = McMoveCircularRelative {
         execute: true,
-        circ_mode_center: true,
+        circ_mode: CircMode::Center,
         aux_point: vecn(&[0.0, 1.0]),
         end_point: vecn(&[0.0, 2.0]),
         path_choice_ccw: true,
@@ -405,7 +381,7 @@ fn circular_move_stays_on_the_circle() {
     // An end point off the circle is rejected.
     let mut bad = McMoveCircularAbsolute {
         execute: true,
-        circ_mode_center: true,
+        circ_mode: CircMode::Center,
         aux_point: vecn(&[0.0, 0.0]),
         end_point: vecn(&[3.0, 3.0]),
         velocity: 20.0,

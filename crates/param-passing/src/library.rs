@@ -13,8 +13,48 @@ use std::path::Path;
 /// The built-in templates: (file name, text).
 pub const BUILTIN: &[(&str, &str)] = &[
     (
+        "MC_AddAxisToGroup.xml",
+        include_str!("../../../templates/MC_AddAxisToGroup.xml"),
+    ),
+    (
         "MC_GearIn.xml",
         include_str!("../../../templates/MC_GearIn.xml"),
+    ),
+    (
+        "MC_GroupDisable.xml",
+        include_str!("../../../templates/MC_GroupDisable.xml"),
+    ),
+    (
+        "MC_GroupEnable.xml",
+        include_str!("../../../templates/MC_GroupEnable.xml"),
+    ),
+    (
+        "MC_GroupHalt.xml",
+        include_str!("../../../templates/MC_GroupHalt.xml"),
+    ),
+    (
+        "MC_GroupHome.xml",
+        include_str!("../../../templates/MC_GroupHome.xml"),
+    ),
+    (
+        "MC_GroupReadActualPosition.xml",
+        include_str!("../../../templates/MC_GroupReadActualPosition.xml"),
+    ),
+    (
+        "MC_GroupReadActualVelocity.xml",
+        include_str!("../../../templates/MC_GroupReadActualVelocity.xml"),
+    ),
+    (
+        "MC_GroupReadStatus.xml",
+        include_str!("../../../templates/MC_GroupReadStatus.xml"),
+    ),
+    (
+        "MC_GroupReset.xml",
+        include_str!("../../../templates/MC_GroupReset.xml"),
+    ),
+    (
+        "MC_GroupStop.xml",
+        include_str!("../../../templates/MC_GroupStop.xml"),
     ),
     (
         "MC_Halt.xml",
@@ -31,6 +71,26 @@ pub const BUILTIN: &[(&str, &str)] = &[
     (
         "MC_MoveAdditive.xml",
         include_str!("../../../templates/MC_MoveAdditive.xml"),
+    ),
+    (
+        "MC_MoveCircularAbsolute.xml",
+        include_str!("../../../templates/MC_MoveCircularAbsolute.xml"),
+    ),
+    (
+        "MC_MoveCircularRelative.xml",
+        include_str!("../../../templates/MC_MoveCircularRelative.xml"),
+    ),
+    (
+        "MC_MoveDirectAbsolute.xml",
+        include_str!("../../../templates/MC_MoveDirectAbsolute.xml"),
+    ),
+    (
+        "MC_MoveLinearAbsolute.xml",
+        include_str!("../../../templates/MC_MoveLinearAbsolute.xml"),
+    ),
+    (
+        "MC_MoveLinearRelative.xml",
+        include_str!("../../../templates/MC_MoveLinearRelative.xml"),
     ),
     (
         "MC_MoveRelative.xml",
@@ -61,6 +121,10 @@ pub const BUILTIN: &[(&str, &str)] = &[
         include_str!("../../../templates/MC_ReadStatus.xml"),
     ),
     (
+        "MC_RemoveAxisFromGroup.xml",
+        include_str!("../../../templates/MC_RemoveAxisFromGroup.xml"),
+    ),
+    (
         "MC_Reset.xml",
         include_str!("../../../templates/MC_Reset.xml"),
     ),
@@ -75,6 +139,10 @@ pub const BUILTIN: &[(&str, &str)] = &[
     (
         "MC_Stop.xml",
         include_str!("../../../templates/MC_Stop.xml"),
+    ),
+    (
+        "MC_UngroupAllAxes.xml",
+        include_str!("../../../templates/MC_UngroupAllAxes.xml"),
     ),
 ];
 

@@ -48,7 +48,9 @@ pub enum Method {
     Template,
 }
 
-/// One head local of a synthesised function: `c_type local = <value of source>;`.
+/// One head local of a synthesised function: `c_type local = <value of source>;`. An array parameter
+/// gives one head local per element, named `local[k]` (`Pos_1[0]`, `Pos_1[1]` ...), consecutive and from
+/// index 0: the C backend declares them as one array `c_type local[len]` initialised element by element.
 #[derive(Debug, Clone)]
 pub struct HeadLocal {
     pub c_type: &'static str,
@@ -58,7 +60,8 @@ pub struct HeadLocal {
     pub source: Operand,
 }
 
-/// One feedback assignment of a synthesised function's tail: `<target> = local;`.
+/// One feedback assignment of a synthesised function's tail: `<target> = local;` (`local` may be an array
+/// element, `Pos_1[2]`).
 #[derive(Debug, Clone)]
 pub struct Feedback {
     pub target: Operand,
@@ -109,8 +112,9 @@ pub fn tm_view_name(block: &str, param: &str) -> String {
     format!("TM__{block}__{param}")
 }
 
-/// The TM layout of a block for the IL method: the template's parameters ordered by slot size (largest
-/// first, stable) so that every slot is aligned to its size while the area stays contiguous.
+/// The TM layout of a block for the IL method: the template's parameters ordered by value size (largest
+/// first, stable; an array counts by its element) so that every value, and every array element, is aligned
+/// to its size while the area stays contiguous.
 pub fn il_layout(t: &Template, window: &TmWindow) -> Result<TmLayout, (u32, u32)> {
     let mut params: Vec<Param> = t.params.clone();
     params.sort_by_key(|p| std::cmp::Reverse(p.class.tm_bytes()));
@@ -177,6 +181,19 @@ fn field(inst: &VarRef, name: &str) -> Operand {
     let mut r = inst.clone();
     r.accessors.push(Accessor::Field(id(name, inst.span)));
     Operand::Var(r)
+}
+
+/// Element `index` of an array operand (a variable; anything else is returned unchanged).
+fn element(array: &Operand, index: i64) -> Operand {
+    match array {
+        Operand::Var(v) => {
+            let mut v = v.clone();
+            v.accessors
+                .push(Accessor::Index(vec![int_lit(i128::from(index), v.span)]));
+            Operand::Var(v)
+        }
+        other => other.clone(),
+    }
 }
 
 fn int_lit(v: i128, span: Span) -> Operand {
@@ -394,6 +411,7 @@ pub fn lower(
                         location: Some(addr),
                         ty: TypeRef::Named(id(ty, span)),
                         init: None,
+                        edge: None,
                         span,
                     })
                     .collect();
@@ -460,6 +478,26 @@ fn check_call(
                 .with_hint("bind outputs to variables: `Done => done_flag`"),
             );
         }
+        if p.array.is_some() && !matches!(a.value, Operand::Var(_)) {
+            diags.push(
+                Diagnostic::error(
+                    code::E4104,
+                    format!(
+                        "`{}` of `{}` is an array: bind an array variable, not a single value",
+                        p.name, t.block
+                    ),
+                )
+                .at(a.value.span())
+                .with_hint(format!(
+                    "declare `{} : {};` and bind it: `{} := {}`",
+                    p.abbr.to_ascii_lowercase(),
+                    p.iec_declared(&crate::prelude::declared_type(p)),
+                    p.name,
+                    p.abbr.to_ascii_lowercase()
+                )),
+            );
+            continue;
+        }
         if p.direction == Direction::InOut && !matches!(a.value, Operand::Var(_)) {
             diags.push(
                 Diagnostic::error(
@@ -494,6 +532,7 @@ fn check_call(
     }
 }
 
+/// The fields of instance `inst` that `body` stores into (whole, or an element of an array field).
 fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
     let mut out = Vec::new();
     for s in body {
@@ -503,8 +542,11 @@ fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
                 op: Op::St | Op::S | Op::R,
                 operand: Some(Operand::Var(v)),
                 ..
-            } if v.base == *inst && v.accessors.len() == 1 => {
-                if let Accessor::Field(f) = &v.accessors[0] {
+            } if v.base == *inst => {
+                // `ST mv.Position` or, for an array input, `ST mv.Position[0]`
+                if let [Accessor::Field(f)] | [Accessor::Field(f), Accessor::Index(_)] =
+                    v.accessors.as_slice()
+                {
                     out.push(f.name.clone());
                 }
             }
@@ -579,7 +621,6 @@ impl PouLowering<'_> {
                     if guarded {
                         out.push(IlStmt::Label(id(&skip, span)));
                     }
-                    distinct_spans(&mut out[start..], span);
                     let n = out[start..]
                         .iter()
                         .filter(|s| matches!(s, IlStmt::Instr(_)))
@@ -615,10 +656,19 @@ impl PouLowering<'_> {
         out
     }
 
-    fn view(&mut self, t: &Template, layout: &TmLayout, p: &Param, span: Span) -> Operand {
+    /// The TM view of value `k` of parameter `p` (`k` = 0 for a scalar; element `k` of an array).
+    fn view(&mut self, t: &Template, layout: &TmLayout, p: &Param, k: u32, span: Span) -> Operand {
         let slot = layout.slot(&p.name).expect("every parameter has a slot");
-        let name = tm_view_name(&t.block, &p.name);
-        let addr = address(self.window, slot.offset, p.class, span);
+        let name = match p.array {
+            Some(_) => format!("{}__{k}", tm_view_name(&t.block, &p.name)),
+            None => tm_view_name(&t.block, &p.name),
+        };
+        let addr = address(
+            self.window,
+            slot.offset + k * p.class.tm_bytes(),
+            p.class,
+            span,
+        );
         self.used_views
             .entry(name.to_ascii_uppercase())
             .or_insert_with(|| (name.clone(), addr, slot_type(p)));
@@ -632,7 +682,9 @@ impl PouLowering<'_> {
                 .iter()
                 .find(|a| a.name.is(&p.name) && a.dir == ArgDir::Input)
             {
-                return a.value.clone();
+                if p.array.is_none() || matches!(a.value, Operand::Var(_)) {
+                    return a.value.clone();
+                }
             }
         }
         field(instance, &p.name)
@@ -660,6 +712,18 @@ impl PouLowering<'_> {
         }
     }
 
+    /// The operands of every value of `p`: the source itself for a scalar, its elements `[low]` ..
+    /// `[low + len - 1]` for an array (the legality check made sure an array source is a variable).
+    fn sources(p: &Param, instance: &VarRef, args: &CallArgs) -> Vec<Operand> {
+        let src = Self::source(p, instance, args);
+        match p.array {
+            None => vec![src],
+            Some(shape) => (0..shape.len)
+                .map(|k| element(&src, shape.iec_index(k)))
+                .collect(),
+        }
+    }
+
     fn il_call(
         &mut self,
         t: &Template,
@@ -669,34 +733,36 @@ impl PouLowering<'_> {
         span: Span,
         out: &mut Vec<IlStmt>,
     ) {
-        // 1. transfer into TM: inputs, then what the library reads back (previous outputs, state)
+        // 1. transfer into TM: inputs, then what the library reads back (previous outputs, state); an
+        //    array element by element
         for p in t.inputs().chain(t.carried()) {
-            let src = Self::source(p, instance, args);
-            let dst = self.view(t, layout, p, span);
-            match (p.class, &src) {
-                (TypeClass::Bool, Operand::Literal(l)) => {
-                    let v = matches!(l.kind, LiteralKind::Bool(true) | LiteralKind::Int(1));
-                    out.push(simple(Op::Ld, false, Some(int_lit(v as i128, span)), span));
+            for (k, src) in (0u32..).zip(Self::sources(p, instance, args)) {
+                let dst = self.view(t, layout, p, k, span);
+                match (p.class, &src) {
+                    (TypeClass::Bool, Operand::Literal(l)) => {
+                        let v = matches!(l.kind, LiteralKind::Bool(true) | LiteralKind::Int(1));
+                        out.push(simple(Op::Ld, false, Some(int_lit(v as i128, span)), span));
+                    }
+                    (TypeClass::Bool, _) => {
+                        let t = Operand::Literal(Literal {
+                            kind: LiteralKind::Bool(true),
+                            type_prefix: None,
+                            span,
+                        });
+                        out.push(simple(Op::Ld, false, Some(src.clone()), span));
+                        out.push(simple(Op::Eq, false, Some(t), span));
+                        out.push(instr(
+                            InstrKind::FunctionCall {
+                                name: id("BOOL_TO_BYTE", span),
+                                args: CallArgs::None,
+                            },
+                            span,
+                        ));
+                    }
+                    _ => out.push(simple(Op::Ld, false, Some(src.clone()), span)),
                 }
-                (TypeClass::Bool, _) => {
-                    let t = Operand::Literal(Literal {
-                        kind: LiteralKind::Bool(true),
-                        type_prefix: None,
-                        span,
-                    });
-                    out.push(simple(Op::Ld, false, Some(src.clone()), span));
-                    out.push(simple(Op::Eq, false, Some(t), span));
-                    out.push(instr(
-                        InstrKind::FunctionCall {
-                            name: id("BOOL_TO_BYTE", span),
-                            args: CallArgs::None,
-                        },
-                        span,
-                    ));
-                }
-                _ => out.push(simple(Op::Ld, false, Some(src.clone()), span)),
+                out.push(simple(Op::St, false, Some(dst), span));
             }
-            out.push(simple(Op::St, false, Some(dst), span));
         }
         // 2. the call of the static-library function
         out.push(instr(
@@ -707,20 +773,28 @@ impl PouLowering<'_> {
         ));
         // 3. transfer out of TM: into the instance, then into the `=>` targets
         for p in t.carried() {
-            let src = self.view(t, layout, p, span);
-            let inst_field = field(instance, &p.name);
-            out.push(simple(Op::Ld, false, Some(src), span));
-            if p.class == TypeClass::Bool {
-                out.push(simple(Op::Eq, false, Some(int_lit(1, span)), span));
-                out.push(simple(Op::S, false, Some(inst_field.clone()), span));
-                out.push(simple(Op::Not, false, None, span));
-                out.push(simple(Op::R, false, Some(inst_field.clone()), span));
-            } else {
-                out.push(simple(Op::St, false, Some(inst_field.clone()), span));
+            let fields = Self::sources(p, instance, &CallArgs::None);
+            for (k, inst_field) in (0u32..).zip(fields.iter()) {
+                let src = self.view(t, layout, p, k, span);
+                out.push(simple(Op::Ld, false, Some(src), span));
+                if p.class == TypeClass::Bool {
+                    out.push(simple(Op::Eq, false, Some(int_lit(1, span)), span));
+                    out.push(simple(Op::S, false, Some(inst_field.clone()), span));
+                    out.push(simple(Op::Not, false, None, span));
+                    out.push(simple(Op::R, false, Some(inst_field.clone()), span));
+                } else {
+                    out.push(simple(Op::St, false, Some(inst_field.clone()), span));
+                }
             }
             for (target, negated) in output_targets(p, args) {
-                out.push(simple(Op::Ld, negated, Some(inst_field.clone()), span));
-                out.push(simple(Op::St, false, Some(target), span));
+                for (k, inst_field) in (0u32..).zip(fields.iter()) {
+                    let target = match p.array {
+                        Some(shape) => element(&target, shape.iec_index(k)),
+                        None => target.clone(),
+                    };
+                    out.push(simple(Op::Ld, negated, Some(inst_field.clone()), span));
+                    out.push(simple(Op::St, false, Some(target), span));
+                }
             }
         }
     }
@@ -739,26 +813,42 @@ impl PouLowering<'_> {
         let mut tail = Vec::new();
         for p in &t.params {
             let local = format!("{}_{n}", p.abbr);
-            head.push(HeadLocal {
-                c_type: p.c_type(),
-                local: local.clone(),
-                class: p.class,
-                source: Self::source(p, instance, args),
-            });
-            if matches!(p.direction, Direction::Output | Direction::State) {
-                tail.push(Feedback {
-                    target: field(instance, &p.name),
-                    local: local.clone(),
+            // An array becomes the elements `Pos_1[0]`, `Pos_1[1]` ... of one C array local.
+            let local_of = |k: u32| match p.array {
+                Some(_) => format!("{local}[{k}]"),
+                None => local.clone(),
+            };
+            for (k, source) in (0u32..).zip(Self::sources(p, instance, args)) {
+                head.push(HeadLocal {
+                    c_type: p.c_type(),
+                    local: local_of(k),
                     class: p.class,
-                    negated: false,
+                    source,
                 });
-                for (target, negated) in output_targets(p, args) {
+            }
+            if matches!(p.direction, Direction::Output | Direction::State) {
+                let fields = Self::sources(p, instance, &CallArgs::None);
+                for (k, f) in (0u32..).zip(fields) {
                     tail.push(Feedback {
-                        target,
-                        local: local.clone(),
+                        target: f,
+                        local: local_of(k),
                         class: p.class,
-                        negated,
+                        negated: false,
                     });
+                }
+                for (target, negated) in output_targets(p, args) {
+                    for k in 0..p.values() {
+                        let target = match p.array {
+                            Some(shape) => element(&target, shape.iec_index(k)),
+                            None => target.clone(),
+                        };
+                        tail.push(Feedback {
+                            target,
+                            local: local_of(k),
+                            class: p.class,
+                            negated,
+                        });
+                    }
                 }
             }
         }
@@ -788,34 +878,6 @@ impl PouLowering<'_> {
             },
             span,
         ));
-    }
-}
-
-/// Gives every instruction lowered from one call its own span inside the call's span: the semantic model
-/// keys its per-instruction information by span, so instructions sharing one would share (and overwrite)
-/// their types. The spans are `(start + a, end - b)` with `a + b <= len`, enumerated in order; beyond
-/// those (a call shorter than its lowering, impossible for real calls) spans repeat the whole call.
-fn distinct_spans(stmts: &mut [IlStmt], call: Span) {
-    let len = call.end.saturating_sub(call.start);
-    let (mut a, mut b) = (0u32, 0u32);
-    for s in stmts {
-        let IlStmt::Instr(i) = s else { continue };
-        i.span = if a + b <= len {
-            Span {
-                file: call.file,
-                start: call.start + a,
-                end: call.end - b,
-            }
-        } else {
-            call
-        };
-        if a == 0 {
-            a = b + 1;
-            b = 0;
-        } else {
-            a -= 1;
-            b += 1;
-        }
     }
 }
 

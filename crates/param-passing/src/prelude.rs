@@ -19,6 +19,10 @@ pub const REFERENCE_TYPES: &[(&str, &str)] = &[
     ("MC_CAM_ID", "CamId"),
 ];
 
+/// Other names of reference types (`AXIS_GROUP_REF` is a common spelling of PLCopen's `AXES_GROUP_REF`):
+/// declared as IEC type aliases, so values of both names are interchangeable.
+pub const REFERENCE_ALIASES: &[(&str, &str)] = &[("AXIS_GROUP_REF", "AXES_GROUP_REF")];
+
 /// PLCopen enumeration values, as USINT constants.
 pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
     ("mcAborting", 0),
@@ -36,18 +40,32 @@ pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
     ("TMConstantVelocity", 2),
     ("TMCornerDistance", 3),
     ("TMMaxCornerDeviation", 4),
+    // Part 4: MC_COORD_SYSTEM, MC_CIRC_MODE, MC_CIRC_PATHCHOICE
+    ("mcACS", 0),
+    ("mcMCS", 1),
+    ("mcPCS", 2),
+    ("mcBorder", 0),
+    ("mcCenter", 1),
+    ("mcRadius", 2),
+    ("mcClockwise", 0),
+    ("mcCounterClockwise", 1),
 ];
 
 /// The field of a reference type that carries the engine index (`AXIS_REF` -> `AxisNo`).
 pub fn index_field(iec_type: &str) -> &'static str {
+    let iec_type = REFERENCE_ALIASES
+        .iter()
+        .find(|(a, _)| a.eq_ignore_ascii_case(iec_type))
+        .map_or(iec_type, |(_, t)| t);
     REFERENCE_TYPES
         .iter()
         .find(|(t, _)| t.eq_ignore_ascii_case(iec_type))
         .map_or("AxisNo", |(_, f)| f)
 }
 
-/// The IEC type a parameter has in the declarations (MC_* enumerations are USINT).
-fn declared_type(p: &Param) -> String {
+/// The IEC type of a parameter's value (of each element for an array) in the declarations (MC_*
+/// enumerations are USINT).
+pub fn declared_type(p: &Param) -> String {
     if p.class == TypeClass::Byte && p.iec_type.to_ascii_uppercase().starts_with("MC_") {
         "USINT".into()
     } else {
@@ -55,10 +73,16 @@ fn declared_type(p: &Param) -> String {
     }
 }
 
+/// The full declared type: `LREAL`, or `ARRAY [0..5] OF LREAL` for an array parameter.
+fn full_type(p: &Param) -> String {
+    p.iec_declared(&declared_type(p))
+}
+
 fn init(p: &Param) -> String {
-    match &p.default {
-        Some(d) => format!(" := {d}"),
-        None => String::new(),
+    match (&p.default, p.array) {
+        (Some(d), Some(a)) => format!(" := [{}]", vec![d.as_str(); a.len as usize].join(", ")),
+        (Some(d), None) => format!(" := {d}"),
+        (None, _) => String::new(),
     }
 }
 
@@ -66,6 +90,9 @@ fn common(out: &mut String) {
     out.push_str("TYPE\n");
     for (t, f) in REFERENCE_TYPES {
         let _ = writeln!(out, "    {t} : STRUCT {f} : UDINT; END_STRUCT;");
+    }
+    for (alias, t) in REFERENCE_ALIASES {
+        let _ = writeln!(out, "    {alias} : {t};");
     }
     out.push_str("END_TYPE\n\nVAR_GLOBAL CONSTANT\n");
     for (n, v) in ENUM_CONSTANTS {
@@ -99,7 +126,7 @@ fn fb_declaration(t: &Template, out: &mut String) {
         }
         let _ = writeln!(out, "{kw}");
         for p in ps {
-            let _ = writeln!(out, "    {} : {}{};", p.name, declared_type(p), init(p));
+            let _ = writeln!(out, "    {} : {}{};", p.name, full_type(p), init(p));
         }
         out.push_str("END_VAR\n");
     }
@@ -116,7 +143,7 @@ pub fn after_lowering(lib: &Library) -> String {
     for t in lib.templates() {
         let _ = writeln!(out, "    {} : STRUCT", t.block);
         for p in t.params.iter().filter(|p| p.direction != Direction::InOut) {
-            let _ = writeln!(out, "        {} : {}{};", p.name, declared_type(p), init(p));
+            let _ = writeln!(out, "        {} : {}{};", p.name, full_type(p), init(p));
         }
         out.push_str("    END_STRUCT;\n");
     }

@@ -28,21 +28,23 @@ fn load_expr(p: &Param, offset: u32) -> String {
     }
 }
 
-fn store_stmt(p: &Param, offset: u32) -> String {
+/// The store of `value` (the C local of `p`, or one of its elements) into TM at `offset`.
+fn store_stmt(p: &Param, value: &str, offset: u32) -> String {
     let n = p.class.tm_bytes();
     let value = match (p.class, p.c_type()) {
-        (TypeClass::Real, _) => format!("(uint64_t)ladderc_tm_f32_bits({})", p.abbr),
-        (TypeClass::Lreal, _) => format!("ladderc_tm_f64_bits({})", p.abbr),
-        (TypeClass::Bool, _) => format!("(uint64_t)({} != 0u)", p.abbr),
-        (_, "int8_t") => format!("(uint64_t)(uint8_t){}", p.abbr),
-        (_, "int16_t") => format!("(uint64_t)(uint16_t){}", p.abbr),
-        (_, "int32_t") => format!("(uint64_t)(uint32_t){}", p.abbr),
-        _ => format!("(uint64_t){}", p.abbr),
+        (TypeClass::Real, _) => format!("(uint64_t)ladderc_tm_f32_bits({value})"),
+        (TypeClass::Lreal, _) => format!("ladderc_tm_f64_bits({value})"),
+        (TypeClass::Bool, _) => format!("(uint64_t)({value} != 0u)"),
+        (_, "int8_t") => format!("(uint64_t)(uint8_t){value}"),
+        (_, "int16_t") => format!("(uint64_t)(uint16_t){value}"),
+        (_, "int32_t") => format!("(uint64_t)(uint32_t){value}"),
+        _ => format!("(uint64_t){value}"),
     };
     format!("ladderc_store(LADDERC_TM, {offset}u, {n}u, {value});")
 }
 
-/// The complete, guarded function of one block.
+/// The complete, guarded function of one block. An array parameter is a C array local whose elements
+/// are loaded from (and, for outputs, stored back to) consecutive TM values.
 pub fn function_c(t: &Template, layout: &TmLayout) -> String {
     let mut c = String::new();
     let g = guard(&t.block);
@@ -56,13 +58,30 @@ pub fn function_c(t: &Template, layout: &TmLayout) -> String {
     let _ = writeln!(c, "    int FuncNum = {};", t.func_num);
     for p in &t.params {
         let slot = layout.slot(&p.name).expect("every parameter has a slot");
-        let _ = writeln!(
-            c,
-            "    {} {} = {};",
-            p.c_type(),
-            p.abbr,
-            load_expr(p, slot.offset)
-        );
+        match p.array {
+            None => {
+                let _ = writeln!(
+                    c,
+                    "    {} {} = {};",
+                    p.c_type(),
+                    p.abbr,
+                    load_expr(p, slot.offset)
+                );
+            }
+            Some(shape) => {
+                let elems: Vec<String> = (0..shape.len)
+                    .map(|k| load_expr(p, slot.offset + k * p.class.tm_bytes()))
+                    .collect();
+                let _ = writeln!(
+                    c,
+                    "    {} {}[{}] = {{\n        {}\n    }};",
+                    p.c_type(),
+                    p.abbr,
+                    shape.len,
+                    elems.join(",\n        ")
+                );
+            }
+        }
     }
     for l in &t.locals {
         let _ = writeln!(c, "    {} {};", l.c_type, l.name);
@@ -73,7 +92,18 @@ pub fn function_c(t: &Template, layout: &TmLayout) -> String {
     }
     for p in t.carried() {
         let slot = layout.slot(&p.name).expect("every parameter has a slot");
-        let _ = writeln!(c, "    {}", store_stmt(p, slot.offset));
+        match p.array {
+            None => {
+                let _ = writeln!(c, "    {}", store_stmt(p, &p.abbr, slot.offset));
+            }
+            Some(shape) => {
+                for k in 0..shape.len {
+                    let value = format!("{}[{k}]", p.abbr);
+                    let offset = slot.offset + k * p.class.tm_bytes();
+                    let _ = writeln!(c, "    {}", store_stmt(p, &value, offset));
+                }
+            }
+        }
     }
     for p in t.inputs() {
         let _ = writeln!(c, "    (void){};", p.abbr);

@@ -3,7 +3,9 @@
 //! Input: a template file's text. Output: a validated [`Template`] or diagnostics (E40xx) that point into the
 //! template file. Invariants of a returned template: parameter names and abbreviations are unique
 //! (case-insensitively for names), abbreviations are C identifiers that are not C keywords, every class
-//! agrees with its IEC type, and body/feedback texts keep their byte offsets in the file.
+//! agrees with its IEC type, and body/feedback texts keep their byte offsets in the file. An array parameter
+//! (`class="array"`) has a scalar element class (not struct), an element type of that class and a length
+//! in `1..=MAX_ARRAY_LEN`; its `class` field is the element class and `array` its shape.
 
 use crate::xml::{self, Element};
 use diagnostics::{code, Diagnostic, Diagnostics, FileId, Span};
@@ -79,12 +81,32 @@ pub fn c_type_of(iec_type: &str, class: TypeClass) -> Option<&'static str> {
         (TypeClass::Real, "REAL") => "float",
         (TypeClass::Lreal, "LREAL") => "double",
         (TypeClass::Lword, "LWORD" | "ULINT") => "uint64_t",
-        (TypeClass::Struct, "AXIS_REF" | "AXES_GROUP_REF" | "MC_CAM_REF" | "MC_CAM_ID") => {
-            "uint32_t"
-        }
+        (
+            TypeClass::Struct,
+            "AXIS_REF" | "AXES_GROUP_REF" | "AXIS_GROUP_REF" | "MC_CAM_REF" | "MC_CAM_ID",
+        ) => "uint32_t",
         _ => return None,
     };
     Some(c)
+}
+
+/// The longest array parameter: the motion library's position arrays hold 16 entries (one per
+/// identity in the group).
+pub const MAX_ARRAY_LEN: u32 = 16;
+
+/// The shape of an array parameter: IEC `ARRAY [low..low+len-1] OF <element type>`; C `T name[len]`,
+/// element `k` is IEC index `low + k`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ArrayShape {
+    pub len: u32,
+    pub low: i64,
+}
+
+impl ArrayShape {
+    /// The IEC index of C element `k`.
+    pub fn iec_index(&self, k: u32) -> i64 {
+        self.low + i64::from(k)
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -92,17 +114,38 @@ pub struct Param {
     pub name: String,
     pub abbr: String,
     pub direction: Direction,
+    /// The class of the value, or of every element for an array parameter.
     pub class: TypeClass,
+    /// The IEC type of the value, or of every element for an array parameter.
     pub iec_type: String,
+    /// `Some` for an array parameter (`class="array"`).
+    pub array: Option<ArrayShape>,
     pub required: bool,
-    /// Default value as an IEC literal text (`FALSE`, `0.0`, `0`), used when an optional input is not bound.
+    /// Default value as an IEC literal text (`FALSE`, `0.0`, `0`), used when an optional input is not bound
+    /// (for an array: the value of every element).
     pub default: Option<String>,
     pub span: Span,
 }
 
 impl Param {
+    /// The C type of the value (of one element for an array).
     pub fn c_type(&self) -> &'static str {
         c_type_of(&self.iec_type, self.class).unwrap_or("uint8_t")
+    }
+    /// Number of values: the array length, 1 for a scalar.
+    pub fn values(&self) -> u32 {
+        self.array.map_or(1, |a| a.len)
+    }
+    /// Bytes the parameter takes in the TM area (the elements of an array contiguously).
+    pub fn tm_bytes(&self) -> u32 {
+        self.class.tm_bytes() * self.values()
+    }
+    /// The IEC type programs see: the element type, or `ARRAY [l..h] OF <element type>`.
+    pub fn iec_declared(&self, element: &str) -> String {
+        match self.array {
+            Some(a) => format!("ARRAY [{}..{}] OF {element}", a.low, a.iec_index(a.len - 1)),
+            None => element.to_string(),
+        }
     }
 }
 
@@ -344,13 +387,57 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
             return None;
         }
     };
-    let Some(class_v) = TypeClass::parse(&class.value) else {
+    let (class_attr, array) = if class.value == "array" {
+        let shape = load_array_shape(p, class, &name.value, direction, diags)?;
+        (
+            p.attr("element").expect("checked by load_array_shape"),
+            Some(shape),
+        )
+    } else {
+        for extra in ["element", "length", "low"] {
+            if let Some(a) = p.attr(extra) {
+                diags.push(
+                    Diagnostic::error(
+                        code::E4100,
+                        format!(
+                            "`{extra}` is given for `{}`, which is not an array parameter",
+                            name.value
+                        ),
+                    )
+                    .at(a.span)
+                    .with_label(class.span, "the class is not `array`")
+                    .with_hint("write class=\"array\" element=\"<element class>\" length=\"N\", or drop the attribute"),
+                );
+                return None;
+            }
+        }
+        (class, None)
+    };
+    let Some(class_v) = TypeClass::parse(&class_attr.value) else {
         diags.push(bad_value(
-            class,
-            "bool, byte, word, dword, real, lreal or struct",
+            class_attr,
+            if array.is_some() {
+                "bool, byte, word, dword, real or lreal (the class of every element)"
+            } else {
+                "bool, byte, word, dword, real, lreal, struct or array"
+            },
         ));
         return None;
     };
+    if array.is_some() && matches!(class_v, TypeClass::Struct | TypeClass::Lword) {
+        diags.push(
+            Diagnostic::error(
+                code::E4101,
+                format!(
+                    "array `{}` has elements of class `{}`; arrays hold plain values",
+                    name.value, class_attr.value
+                ),
+            )
+            .at(class_attr.span)
+            .with_hint("use bool, byte, word, dword, real or lreal elements (a reference is passed on its own)"),
+        );
+        return None;
+    }
     if !is_c_identifier(&abbr.value) || C_KEYWORDS.contains(&abbr.value.as_str()) {
         diags.push(bad_value(
             abbr,
@@ -362,11 +449,14 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
         diags.push(
             Diagnostic::error(
                 code::E4006,
-                format!("type `{}` does not belong to class `{}`", ty.value, class.value),
+                format!(
+                    "type `{}` does not belong to class `{}`",
+                    ty.value, class_attr.value
+                ),
             )
             .at(ty.span)
-            .with_label(class.span, "class given here")
-            .with_hint("bool: BOOL; byte: BYTE/USINT/SINT/MC_* enums; word: WORD/INT/UINT; dword: DWORD/DINT/UDINT; real: REAL; lreal: LREAL; struct: AXIS_REF/AXES_GROUP_REF"),
+            .with_label(class_attr.span, "class given here")
+            .with_hint("bool: BOOL; byte: BYTE/USINT/SINT/MC_* enums; word: WORD/INT/UINT; dword: DWORD/DINT/UDINT; real: REAL; lreal: LREAL; struct: AXIS_REF/AXES_GROUP_REF (an array gives its element's class and type)"),
         );
         return None;
     }
@@ -401,8 +491,86 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
         direction,
         class: class_v,
         iec_type: ty.value.clone(),
+        array,
         required,
         default,
         span: p.span,
     })
+}
+
+/// The `element`, `length` and `low` attributes of an array parameter (E4102 when one is missing or bad).
+fn load_array_shape(
+    p: &Element,
+    class: &xml::Attr,
+    name: &str,
+    direction: Direction,
+    diags: &mut Diagnostics,
+) -> Option<ArrayShape> {
+    let missing = ["element", "length"]
+        .into_iter()
+        .find(|a| p.attr(a).is_none());
+    if let Some(m) = missing {
+        diags.push(
+            Diagnostic::error(
+                code::E4102,
+                format!("array parameter `{name}` lacks the attribute `{m}`"),
+            )
+            .at(p.span)
+            .with_label(class.span, "declared as an array here")
+            .with_hint("an array parameter needs element=\"<element class>\" and length=\"N\" (low=\"L\" optional, default 0)"),
+        );
+        return None;
+    }
+    let length = p.attr("length").expect("checked above");
+    let len = match length.value.trim().parse::<u32>() {
+        Ok(n) if (1..=MAX_ARRAY_LEN).contains(&n) => n,
+        _ => {
+            diags.push(
+                Diagnostic::error(
+                    code::E4102,
+                    format!(
+                        "array `{name}`: length `{}` is not a number from 1 to {MAX_ARRAY_LEN}",
+                        length.value
+                    ),
+                )
+                .at(length.span)
+                .with_hint(format!(
+                    "the motion library's arrays hold at most {MAX_ARRAY_LEN} values (one per identity in the group)"
+                )),
+            );
+            return None;
+        }
+    };
+    let low = match p.attr("low") {
+        None => 0,
+        Some(a) => match a.value.trim().parse::<i64>() {
+            Ok(l) if l.abs() <= i64::from(i32::MAX) => l,
+            _ => {
+                diags.push(
+                    Diagnostic::error(
+                        code::E4102,
+                        format!(
+                            "array `{name}`: lower bound `{}` is not an integer",
+                            a.value
+                        ),
+                    )
+                    .at(a.span)
+                    .with_hint("write low=\"0\" (the default) or another integer"),
+                );
+                return None;
+            }
+        },
+    };
+    if direction == Direction::InOut {
+        diags.push(
+            Diagnostic::error(
+                code::E4103,
+                format!("array `{name}` cannot be an in-out parameter"),
+            )
+            .at(p.attr("direction").map_or(p.span, |d| d.span))
+            .with_hint("pass arrays as inputs (copied in) or outputs (copied back); in-out parameters are references"),
+        );
+        return None;
+    }
+    Some(ArrayShape { len, low })
 }

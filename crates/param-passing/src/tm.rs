@@ -2,7 +2,8 @@
 //!
 //! Input: a template's parameters and the TM size of the target profile. Output: one slot per parameter,
 //! contiguous, in declaration order, sized by class (no padding: the area is byte-addressed and moves into it
-//! are byte-wise). Invariant: the slots tile `0..total` exactly; a block that does not fit is an error naming the
+//! are byte-wise); an array parameter's slot holds its elements contiguously (element `k` at
+//! `offset + k * element bytes`). Invariant: the slots tile `0..total` exactly; a block that does not fit is an error naming the
 //! block, the bytes it needs and the bytes available.
 
 use crate::template::{Param, Template};
@@ -38,7 +39,7 @@ pub fn layout_params(params: &[Param], tm_size: u32) -> Result<TmLayout, (u32, u
     let mut offset = 0u32;
     let mut slots = Vec::with_capacity(params.len());
     for p in params {
-        let bytes = p.class.tm_bytes();
+        let bytes = p.tm_bytes();
         slots.push(Slot {
             param: p.name.clone(),
             offset,

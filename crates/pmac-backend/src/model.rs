@@ -123,8 +123,8 @@ pub enum Transition {
     #[default]
     ExactStop,
     /// Blend into the next move (PLCopen Blending*): no dwell, the PMAC blends over the next move's `TA`.
-    /// `junction_velocity` is the planner's path speed at the corner; LINEAR mode cannot impose it (see README),
-    /// it is written as a comment so the program can be checked against the plan.
+    /// `junction_velocity` is the planner's path speed at the corner; LINEAR mode cannot impose it (see README), so
+    /// it is not written into the program (PVT streaming reproduces it).
     Blend { junction_velocity: f64 },
 }
 

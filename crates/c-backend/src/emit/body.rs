@@ -14,7 +14,7 @@ use crate::ctypes;
 use crate::mangle;
 use diagnostics::{code, Diagnostic, Span};
 use il_frontend::ast::{Condition, FbInputOp, IlStmt, InstrKind, Instruction, Op, Operand};
-use il_frontend::sema::{Callee, Elementary, InstrInfo, Type};
+use il_frontend::sema::{Callee, Elementary, InstrId, InstrInfo, Type};
 use std::collections::{BTreeMap, HashSet};
 
 use Elementary as E;
@@ -130,7 +130,7 @@ impl<'a> Gen<'a> {
 
     pub(super) fn info(&mut self, i: &Instruction) -> Option<&'a InstrInfo> {
         let model: &'a il_frontend::sema::Model = self.model;
-        match model.instrs.get_near(i.span, self.instr_cursor) {
+        match model.instrs.get_near(InstrId::of(i), self.instr_cursor) {
             Some((at, info)) => {
                 self.instr_cursor = at + 1;
                 Some(info)
@@ -268,7 +268,10 @@ impl<'a> Gen<'a> {
         let Some(cr) = self.cr(b, &Type::BOOL, i.span) else {
             return;
         };
-        let found = self.model.instrs.get_near(i.span, self.instr_cursor);
+        let found = self
+            .model
+            .instrs
+            .get_near(InstrId::of(i), self.instr_cursor);
         if let Some((at, _)) = found {
             self.instr_cursor = at + 1;
         }
@@ -609,7 +612,7 @@ impl<'a> Gen<'a> {
         if let Some(o) = operand {
             // the implicit LD that starts the nested list, typed as the first instruction expects
             let first = body.iter().find_map(|s| match s {
-                IlStmt::Instr(i) => self.model.instr(i.span).and_then(|x| x.cr_before.clone()),
+                IlStmt::Instr(i) => self.model.instr(i).and_then(|x| x.cr_before.clone()),
                 _ => None,
             });
             let ty = first

@@ -64,6 +64,10 @@ impl Gen<'_> {
         instance: &VarRef,
         args: &CallArgs,
     ) {
+        // `CAL LIMIT(...)` (IEC draft Annex F): sema resolved a function call.
+        if cond == Condition::Always && matches!(info.callee, Some(Callee::Std { .. })) {
+            return self.function_call(b, i, info, args);
+        }
         let Some(Place::Mem { lv, ty }) = self.place(b.scope, instance) else {
             self.unsupported(
                 instance.span,
@@ -461,6 +465,12 @@ impl Gen<'_> {
         let e = ty.elementary();
         let need = |n: usize| vals.len() >= n;
         match name {
+            n if super::strings::is_string_function(n, &ty) => {
+                self.string_call(span, n, &ty, vals, tys)
+            }
+            n if super::datetime::is_datetime_function(n) => {
+                self.datetime_call(span, n, vals, tys, result)
+            }
             "ADD" | "MUL" | "SUB" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
                 if !need(2) {
                     return None;
@@ -633,6 +643,7 @@ impl Gen<'_> {
                     _ if t.is_integer() || t.is_bit() => {
                         convert_elementary(&format!("ladderc_str_to_uint({v})"), E::Ulint, t)
                     }
+                    E::Date | E::Tod | E::Dt => super::strings::string_to_datetime(v, t),
                     _ => {
                         self.unsupported(span, "converting a STRING to a date or time of day");
                         return None;

@@ -7,7 +7,10 @@
 //! functions and its definition after them; a `FUNC NAME()` in that POU's body calls `NAME(self)`.
 //! Invariants: head values and feedback targets are rendered by the same operand/place code as IL
 //! instructions (so globals, located variables, fields and conversions behave exactly as in `LD`/`ST`);
-//! a method is only callable from its own POU (a PROGRAM or FUNCTION_BLOCK).
+//! a method is only callable from its own POU (a PROGRAM or FUNCTION_BLOCK). Head locals named
+//! `base[k]` (consecutive, `k` = 0, 1, ...) are the elements of one array parameter: they become one C
+//! array `c_type base[n] = { ... };` initialised element by element; feedback from `base[k]` reads the
+//! element.
 
 use super::scope::Scope;
 use super::values::convert;
@@ -35,6 +38,27 @@ fn iec_type_of(c_type: &str, boolean: bool) -> Option<Type> {
         _ => return None,
     };
     Some(Type::Elementary(e))
+}
+
+/// `Some((base, k))` when a head local names element `k` of an array local (`Pos_1[3]`).
+fn array_element(local: &str) -> Option<(&str, usize)> {
+    let (base, rest) = local.split_once('[')?;
+    let k = rest.strip_suffix(']')?.parse().ok()?;
+    let ident = base.bytes().next().is_some_and(|b| !b.is_ascii_digit())
+        && base.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+    ident.then_some((base, k))
+}
+
+/// Writes the declaration of a completed array local `(base, C type, element values)`.
+fn flush_array(c: &mut String, array: Option<(String, String, Vec<String>)>) {
+    if let Some((base, ty, elems)) = array {
+        let _ = writeln!(
+            c,
+            "    {ty} {base}[{}] = {{\n        {}\n    }};",
+            elems.len(),
+            elems.join(",\n        ")
+        );
+    }
 }
 
 impl Gen<'_> {
@@ -121,6 +145,7 @@ impl Gen<'_> {
             let s = self.pou_struct(&p);
             let _ = writeln!(c, "static void {}({s} *self) {{", m.name);
             let _ = writeln!(c, "    int FuncNum = {};", m.func_num);
+            let mut arrays: Vec<(String, String, Vec<String>)> = Vec::new();
             for h in &m.head {
                 let Some(want) = iec_type_of(&h.c_type, h.boolean) else {
                     self.unsupported(m.span, format!("a parameter of C type `{}`", h.c_type));
@@ -129,8 +154,30 @@ impl Gen<'_> {
                 let v = self
                     .value(&scope, &h.source, &want)
                     .unwrap_or_else(|| "0".into());
-                let _ = writeln!(c, "    {} {} = ({}){v};", h.c_type, h.local, h.c_type);
+                match array_element(&h.local) {
+                    Some((base, k)) => {
+                        let value = format!("({}){v}", h.c_type);
+                        match arrays.last_mut() {
+                            Some((b, _, elems)) if b == base && elems.len() == k => {
+                                elems.push(value)
+                            }
+                            _ if k == 0 => {
+                                flush_array(c, arrays.pop());
+                                arrays.push((base.to_string(), h.c_type.clone(), vec![value]));
+                            }
+                            _ => self.unsupported(
+                                m.span,
+                                format!("array element `{}` out of order", h.local),
+                            ),
+                        }
+                    }
+                    None => {
+                        flush_array(c, arrays.pop());
+                        let _ = writeln!(c, "    {} {} = ({}){v};", h.c_type, h.local, h.c_type);
+                    }
+                }
             }
+            flush_array(c, arrays.pop());
             for (ty, name) in &m.locals {
                 let _ = writeln!(c, "    {ty} {name};");
             }
@@ -154,7 +201,15 @@ impl Gen<'_> {
                 let _ = writeln!(c, "    {}", self.store(&place, &value));
             }
             for h in &m.head {
-                let _ = writeln!(c, "    (void){};", h.local);
+                match array_element(&h.local) {
+                    Some((base, 0)) => {
+                        let _ = writeln!(c, "    (void){base};");
+                    }
+                    Some(_) => {}
+                    None => {
+                        let _ = writeln!(c, "    (void){};", h.local);
+                    }
+                }
             }
             c.push_str("    (void)self;\n}\n\n");
         }
@@ -186,5 +241,39 @@ impl Gen<'_> {
             return Some(String::new());
         }
         Some(format!("{}(self);", m.name))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn array_element_locals_are_recognised_by_their_index() {
+        assert_eq!(array_element("Pos_1[3]"), Some(("Pos_1", 3)));
+        assert_eq!(array_element("Pos_1[0]"), Some(("Pos_1", 0)));
+        assert_eq!(array_element("Pos_1"), None);
+        assert_eq!(array_element("Pos_1[k]"), None);
+        assert_eq!(array_element("1x[0]"), None);
+        assert_eq!(array_element("a-b[0]"), None);
+    }
+
+    #[test]
+    fn an_array_local_is_declared_with_its_elements_in_order() {
+        let mut c = String::new();
+        flush_array(&mut c, None);
+        assert!(c.is_empty());
+        flush_array(
+            &mut c,
+            Some((
+                "Pos_1".into(),
+                "double".into(),
+                vec!["(double)a".into(), "(double)b".into()],
+            )),
+        );
+        assert_eq!(
+            c,
+            "    double Pos_1[2] = {\n        (double)a,\n        (double)b\n    };\n"
+        );
     }
 }

@@ -8,10 +8,13 @@
 
 mod body;
 mod calls;
+mod datetime;
+mod edges;
 mod init;
 mod method;
 mod scan;
 mod scope;
+mod strings;
 mod values;
 
 use crate::profile::{AddressUnit, BitNumbering, ByteOrder, TargetProfile};
@@ -366,6 +369,9 @@ impl Gen<'_> {
                             any = true;
                         }
                     }
+                    for m in edges::hidden_members(&p) {
+                        let _ = writeln!(h, "    {m}");
+                    }
                     if !any {
                         h.push_str("    char unused_;\n");
                     }
@@ -595,13 +601,14 @@ impl Gen<'_> {
             }
         }
         self.stmts(&mut b, &ast.body);
-        let _ = writeln!(c, "void {sname}_BODY({sname} *self) {{");
+        let _ = writeln!(c, "{} {{", edges::body_signature(&sname, &p));
         c.push_str(&temps);
         c.push_str(&temp_init);
         write_locals(c, &b, &scope);
         c.push_str("    (void)self;\n");
         c.push_str(&b.out);
         c.push_str("}\n\n");
+        c.push_str(&edges::wrapper(&sname, &p));
     }
 }
 

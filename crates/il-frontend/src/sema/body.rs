@@ -128,7 +128,7 @@ pub(super) struct Body<'a, 'd> {
     /// A FUNCTION's result variable was written (ST/S/R/=> into its name).
     pub(super) result_written: bool,
     pub(super) lits: LitVars,
-    pub(super) recs: Vec<(Span, Rec)>,
+    pub(super) recs: Vec<(InstrId, Span, Rec)>,
     labels: HashMap<String, LabelDef>,
     /// Jumps seen in this pass, by upper-case label.
     edges: HashMap<String, Vec<Edge>>,
@@ -186,10 +186,10 @@ impl Analyzer<'_> {
         b.walk_top(&pou.body);
         let recs = std::mem::take(&mut b.recs);
         let mut order = Vec::with_capacity(recs.len());
-        for (span, r) in recs {
-            let info = b.finish(r);
-            b.a.model.instrs.insert(span, info);
-            order.push(span);
+        for (id, span, r) in recs {
+            let info = b.finish(span, r);
+            b.a.model.instrs.insert(id, info);
+            order.push(id);
         }
         b.a.model.pous[id.0 as usize].instrs = order;
         if pou.kind == ast::PouKind::Function && !b.result_written && !pou.body.is_empty() {
@@ -348,7 +348,7 @@ impl Body<'_, '_> {
             ..Rec::default()
         };
         let slot = self.recs.len();
-        self.recs.push((i.span, Rec::default()));
+        self.recs.push((InstrId::of(i), i.span, Rec::default()));
         let outer = if *op == Op::Ld {
             None
         } else {
@@ -402,7 +402,7 @@ impl Body<'_, '_> {
             }
         }
         rec.cr_after = if st.reach { st.cr.ty.clone() } else { None };
-        self.recs[slot].1 = rec;
+        self.recs[slot].2 = rec;
         st.last = Some(i.span);
     }
 
@@ -505,7 +505,7 @@ impl Body<'_, '_> {
         }
     }
 
-    fn finish(&mut self, r: Rec) -> InstrInfo {
+    fn finish(&mut self, span: Span, r: Rec) -> InstrInfo {
         let cr_before = r.cr_before.map(|t| self.resolve(&t));
         let cr_after = r.cr_after.map(|t| self.resolve(&t));
         let operand = r.operand.map(|t| self.resolve(&t));
@@ -533,6 +533,7 @@ impl Body<'_, '_> {
             })
             .collect();
         InstrInfo {
+            span,
             cr_before,
             cr_after,
             operand,
@@ -620,7 +621,7 @@ impl Body<'_, '_> {
         };
         // Reserve the slot: pre-order (a deferred instruction before its nested list).
         let slot = self.recs.len();
-        self.recs.push((i.span, Rec::default()));
+        self.recs.push((InstrId::of(i), i.span, Rec::default()));
         match &i.kind {
             InstrKind::Simple {
                 op,
@@ -690,7 +691,7 @@ impl Body<'_, '_> {
             }
         }
         rec.cr_after = if st.reach { st.cr.ty.clone() } else { None };
-        self.recs[slot].1 = rec;
+        self.recs[slot].2 = rec;
     }
 
     fn simple(

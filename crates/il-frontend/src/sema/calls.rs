@@ -135,6 +135,7 @@ impl Body<'_, '_> {
                             result: fixed_result(Ty::ERROR),
                         };
                     }
+                    let t = string_generic(f, t, &known);
                     for (v, span) in &lit_args {
                         let name = f.name;
                         self.coerce(&Ty::Lit(*v), &t, *span, |b, from, to| {
@@ -1077,4 +1078,25 @@ fn fb_like_params(pou: &Pou) -> Vec<(String, ParamDir, Type)> {
             (v.name.clone(), d, v.ty.clone())
         })
         .collect()
+}
+
+/// The generic type of a string function: as long as the longest input (CONCAT: the sum of their
+/// lengths), at most the 254-character capacity, so the result's declared length never truncates it.
+fn string_generic(f: &StdFunction, t: Type, known: &[(Type, Span)]) -> Type {
+    let Type::String { wide, .. } = t else {
+        return t;
+    };
+    let lens = known.iter().filter_map(|(k, _)| match k {
+        Type::String { len, .. } => Some(*len),
+        _ => None,
+    });
+    let len = if f.name == "CONCAT" {
+        lens.sum::<u32>()
+    } else {
+        lens.max().unwrap_or(DEFAULT_STRING_LEN)
+    };
+    Type::String {
+        wide,
+        len: len.clamp(1, DEFAULT_STRING_LEN),
+    }
 }

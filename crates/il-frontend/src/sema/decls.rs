@@ -83,7 +83,7 @@ impl Analyzer<'_> {
                                 vars: fields.clone(),
                                 span: d.span,
                             }];
-                            let vars = self.declare_vars(&blocks, &Consts::new());
+                            let vars = self.declare_vars(&blocks, &Consts::new(), None);
                             self.model.types[id.0 as usize].def =
                                 UserTypeDef::Struct { fields: vars };
                         }
@@ -96,7 +96,7 @@ impl Analyzer<'_> {
         for unit in units {
             for item in &unit.items {
                 if let LibraryElement::GlobalVars(block) = item {
-                    let vars = self.declare_vars(std::slice::from_ref(block), &global_consts);
+                    let vars = self.declare_vars(std::slice::from_ref(block), &global_consts, None);
                     for v in vars {
                         let key = v.name.to_ascii_uppercase();
                         if let Some(&i) = self.free_globals.get(&key) {
@@ -127,14 +127,14 @@ impl Analyzer<'_> {
         for unit in units {
             for item in &unit.items {
                 if let LibraryElement::Configuration(c) = item {
-                    let globals = self.declare_vars(&c.globals, &global_consts);
+                    let globals = self.declare_vars(&c.globals, &global_consts, None);
                     let resources = c
                         .resources
                         .iter()
                         .map(|r| Resource {
                             name: r.name.name.clone(),
                             span: r.span,
-                            globals: self.declare_vars(&r.globals, &global_consts),
+                            globals: self.declare_vars(&r.globals, &global_consts, None),
                             tasks: Vec::new(),
                             programs: Vec::new(),
                         })
@@ -424,8 +424,14 @@ impl Analyzer<'_> {
         Type::Error
     }
 
-    /// Declares the variables of `blocks`; reports duplicates within them.
-    pub(crate) fn declare_vars(&mut self, blocks: &[VarBlock], consts: &Consts) -> Vec<Variable> {
+    /// Declares the variables of `blocks` (of a POU of kind `pou`, or of a structure or global list when
+    /// `None`); reports duplicates within them and misplaced `R_EDGE`/`F_EDGE` qualifiers.
+    pub(crate) fn declare_vars(
+        &mut self,
+        blocks: &[VarBlock],
+        consts: &Consts,
+        pou: Option<ast::PouKind>,
+    ) -> Vec<Variable> {
         let mut out: Vec<Variable> = Vec::new();
         let mut seen: HashMap<String, usize> = HashMap::new();
         let mut consts = consts.clone();
@@ -453,6 +459,9 @@ impl Analyzer<'_> {
                         consts.insert(d.name.key(), (ty.clone(), v.clone()));
                     }
                 }
+                let edge = d
+                    .edge
+                    .filter(|e| self.edge_allowed(*e, d, b.kind, &ty, pou));
                 seen.insert(d.name.key(), out.len());
                 out.push(Variable {
                     name: d.name.name.clone(),
@@ -463,10 +472,52 @@ impl Analyzer<'_> {
                     retain: b.retain,
                     location: d.location.as_ref().map(Location::of),
                     init,
+                    edge,
                 });
             }
         }
         out
+    }
+
+    /// Whether an edge qualifier is where IEC 61131-3 allows it (a BOOL `VAR_INPUT` of a
+    /// FUNCTION_BLOCK); reports E1100/E1101 otherwise.
+    fn edge_allowed(
+        &mut self,
+        edge: ast::Edge,
+        d: &ast::VarDecl,
+        kind: VarKind,
+        ty: &Type,
+        pou: Option<ast::PouKind>,
+    ) -> bool {
+        let kw = edge.keyword();
+        if pou != Some(ast::PouKind::FunctionBlock) || kind != VarKind::Input {
+            let place = match pou {
+                Some(ast::PouKind::FunctionBlock) => "this variable block of a function block",
+                Some(ast::PouKind::Program) => "a program",
+                Some(ast::PouKind::Function) => "a function",
+                None => "a structure or a global variable list",
+            };
+            self.error(
+                code::E1100,
+                d.span,
+                format!("`{kw}` is not allowed in {place}"),
+            )
+            .label(format!("`{}` is declared {kw} here", d.name.name))
+            .hint("edge-triggered declarations are only for VAR_INPUT of a FUNCTION_BLOCK; use an R_TRIG or F_TRIG instance elsewhere");
+            return false;
+        }
+        if !ty.is_error() && !ty.is_bool() {
+            let tn = self.type_name(ty);
+            self.error(
+                code::E1101,
+                d.span,
+                format!("`{kw}` input `{}` is {tn}, not BOOL", d.name.name),
+            )
+            .label(format!("this input is {tn}"))
+            .hint("only BOOL inputs can be edge-triggered; declare it BOOL or drop the qualifier");
+            return false;
+        }
+        true
     }
 
     /// The initial value a named alias type gives (`TYPE T : INT := 5`).
@@ -492,7 +543,7 @@ impl Analyzer<'_> {
             .label("missing `: type`")
             .hint("write FUNCTION name : type");
         }
-        let vars = self.declare_vars(&p.var_blocks, global_consts);
+        let vars = self.declare_vars(&p.var_blocks, global_consts, Some(p.kind));
         let mut externals = Vec::new();
         for (i, v) in vars.iter().enumerate() {
             if v.kind == VarKind::External {

@@ -200,10 +200,23 @@ pub enum StdFb {
     Ctu,
     Ctd,
     Ctud,
+    /// The typed counters of edition 2/3: `CTU_DINT` ... `CTUD_ULINT` (PV and CV of that type).
+    CtuDint,
+    CtuLint,
+    CtuUdint,
+    CtuUlint,
+    CtdDint,
+    CtdLint,
+    CtdUdint,
+    CtdUlint,
+    CtudDint,
+    CtudLint,
+    CtudUdint,
+    CtudUlint,
 }
 
 impl StdFb {
-    pub const ALL: [StdFb; 10] = [
+    pub const ALL: [StdFb; 22] = [
         StdFb::RTrig,
         StdFb::FTrig,
         StdFb::Sr,
@@ -214,6 +227,18 @@ impl StdFb {
         StdFb::Ctu,
         StdFb::Ctd,
         StdFb::Ctud,
+        StdFb::CtuDint,
+        StdFb::CtuLint,
+        StdFb::CtuUdint,
+        StdFb::CtuUlint,
+        StdFb::CtdDint,
+        StdFb::CtdLint,
+        StdFb::CtdUdint,
+        StdFb::CtdUlint,
+        StdFb::CtudDint,
+        StdFb::CtudLint,
+        StdFb::CtudUdint,
+        StdFb::CtudUlint,
     ];
     pub fn name(self) -> &'static str {
         match self {
@@ -227,7 +252,42 @@ impl StdFb {
             StdFb::Ctu => "CTU",
             StdFb::Ctd => "CTD",
             StdFb::Ctud => "CTUD",
+            StdFb::CtuDint => "CTU_DINT",
+            StdFb::CtuLint => "CTU_LINT",
+            StdFb::CtuUdint => "CTU_UDINT",
+            StdFb::CtuUlint => "CTU_ULINT",
+            StdFb::CtdDint => "CTD_DINT",
+            StdFb::CtdLint => "CTD_LINT",
+            StdFb::CtdUdint => "CTD_UDINT",
+            StdFb::CtdUlint => "CTD_ULINT",
+            StdFb::CtudDint => "CTUD_DINT",
+            StdFb::CtudLint => "CTUD_LINT",
+            StdFb::CtudUdint => "CTUD_UDINT",
+            StdFb::CtudUlint => "CTUD_ULINT",
         }
+    }
+    /// For a counter, its kind (up, down, up/down) and the type of PV and CV.
+    pub fn counter(self) -> Option<(CounterKind, Elementary)> {
+        use CounterKind::{Down, Up, UpDown};
+        use Elementary as E;
+        Some(match self {
+            StdFb::Ctu => (Up, E::Int),
+            StdFb::CtuDint => (Up, E::Dint),
+            StdFb::CtuLint => (Up, E::Lint),
+            StdFb::CtuUdint => (Up, E::Udint),
+            StdFb::CtuUlint => (Up, E::Ulint),
+            StdFb::Ctd => (Down, E::Int),
+            StdFb::CtdDint => (Down, E::Dint),
+            StdFb::CtdLint => (Down, E::Lint),
+            StdFb::CtdUdint => (Down, E::Udint),
+            StdFb::CtdUlint => (Down, E::Ulint),
+            StdFb::Ctud => (UpDown, E::Int),
+            StdFb::CtudDint => (UpDown, E::Dint),
+            StdFb::CtudLint => (UpDown, E::Lint),
+            StdFb::CtudUdint => (UpDown, E::Udint),
+            StdFb::CtudUlint => (UpDown, E::Ulint),
+            _ => return None,
+        })
     }
     /// Case-insensitive lookup; `CTU_INT` etc. map to the INT counters.
     pub fn from_name(name: &str) -> Option<StdFb> {
@@ -240,6 +300,14 @@ impl StdFb {
         };
         StdFb::ALL.into_iter().find(|f| f.name() == up)
     }
+}
+
+/// The three counter families (CTU, CTD, CTUD), whatever their count type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+pub enum CounterKind {
+    Up,
+    Down,
+    UpDown,
 }
 
 /// The type of an FB instance.
@@ -438,6 +506,9 @@ pub struct Variable {
     /// The declared initial value (after a user type's own default when the declaration gives none:
     /// `None` means the type's default, zero/FALSE/first enum value/empty string).
     pub init: Option<ConstValue>,
+    /// `R_EDGE` / `F_EDGE` of a BOOL input of a function block (`None` anywhere else; misplaced
+    /// qualifiers are reported, E1100/E1101, and dropped).
+    pub edge: Option<crate::ast::Edge>,
 }
 
 impl Variable {
@@ -486,9 +557,9 @@ pub struct Pou {
     pub vars: Vec<Variable>,
     /// For each `VAR_EXTERNAL` (index into `vars`), the global it is bound to.
     pub externals: Vec<(usize, GlobalRef)>,
-    /// The spans of the body's instructions in source pre-order (a deferred `AND( ... )` before the
-    /// instructions of its nested list): keys into `Model::instrs` (stored once, there).
-    pub instrs: Vec<Span>,
+    /// The body's instructions in source pre-order (a deferred `AND( ... )` before the instructions of
+    /// its nested list): keys into `Model::instrs` (stored once, there).
+    pub instrs: Vec<InstrId>,
     /// Upper-case name -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time.
     #[serde(skip)]
     pub var_index: FxHashMap<String, usize>,
@@ -683,9 +754,23 @@ pub struct ArgBinding {
     pub source: ArgSource,
 }
 
-/// What sema knows about one instruction (`Model::instrs[&instruction.span]`).
+/// The identity of one instruction of the analysed units: its address. Spans cannot be the key: lowered
+/// code (ladder rungs, ST statements) gives several instructions the span of the one element they came
+/// from. A model is valid for exactly the units it was computed from (not for clones of them).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+pub struct InstrId(usize);
+
+impl InstrId {
+    pub fn of(instruction: &crate::ast::Instruction) -> Self {
+        InstrId(instruction as *const crate::ast::Instruction as usize)
+    }
+}
+
+/// What sema knows about one instruction (`Model::instrs[&InstrId::of(instruction)]`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct InstrInfo {
+    /// The instruction's span (for messages and tools; not unique).
+    pub span: Span,
     /// The current result before the instruction (`None`: undefined, e.g. at the start of a body).
     pub cr_before: Option<Type>,
     /// The current result after it (`None`: undefined, e.g. after an unconditional `JMP`/`RET`).
@@ -726,45 +811,68 @@ pub struct Model {
     pub configurations: Vec<Configuration>,
     /// `VAR_GLOBAL` blocks outside configurations.
     pub globals: Vec<Variable>,
-    /// Keyed by `ast::Instruction::span`.
+    /// Keyed by the instruction's identity ([`InstrId::of`]).
     pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
     /// call arguments, indexes, CAL instances).
     pub names: SpanTable<NameRef>,
 }
 
-/// The instruction infos by span ([`SpanTable`]).
-pub type InstrTable = SpanTable<InstrInfo>;
+/// The instruction infos by identity ([`KeyTable`]).
+pub type InstrTable = KeyTable<InstrId, InstrInfo>;
 
-/// A map keyed by span, stored as one vector in insertion order (source order of the bodies), so that
-/// reading the values body by body touches memory in order and a value is stored once, without the
-/// spare room of a hash table. While the spans come in increasing order (the usual case: sema walks
-/// each body in source order) the vector is sorted and searched by bisection; the first span out of
-/// order builds a hash index, used from then on.
-/// Invariants: one entry per span (a second insert under a span replaces the value, as a map does);
-/// without `index`, `entries` is sorted strictly by (file, start, end); with it, `index[span]` is the
-/// position of the span's entry.
-#[derive(Debug, Clone)]
-pub struct SpanTable<V> {
-    entries: Vec<(Span, V)>,
-    index: Option<FxHashMap<Span, u32>>,
+/// A map keyed by span ([`KeyTable`]).
+pub type SpanTable<V> = KeyTable<Span, V>;
+
+/// A key of a [`KeyTable`]: hashable, and with an order in which keys usually arrive.
+pub trait TableKey: Copy + Eq + std::hash::Hash {
+    type Order: Ord;
+    fn order(&self) -> Self::Order;
 }
 
-impl<V> Default for SpanTable<V> {
+impl TableKey for Span {
+    type Order = (u32, u32, u32);
+    fn order(&self) -> Self::Order {
+        (self.file.0, self.start, self.end)
+    }
+}
+
+impl TableKey for InstrId {
+    type Order = usize;
+    fn order(&self) -> usize {
+        self.0
+    }
+}
+
+/// A map stored as one vector in insertion order (source order of the bodies), so that reading the
+/// values body by body touches memory in order and a value is stored once, without the spare room of a
+/// hash table. While the keys come in increasing order (spans: sema walks each body in source order)
+/// the vector is sorted and searched by bisection; the first key out of order builds a hash index, used
+/// from then on.
+/// Invariants: one entry per key (a second insert under a key replaces the value, as a map does);
+/// without `index`, `entries` is sorted strictly by [`TableKey::order`]; with it, `index[key]` is the
+/// position of the key's entry.
+#[derive(Debug, Clone)]
+pub struct KeyTable<K, V> {
+    entries: Vec<(K, V)>,
+    index: Option<FxHashMap<K, u32>>,
+}
+
+impl<K, V> Default for KeyTable<K, V> {
     fn default() -> Self {
-        SpanTable {
+        KeyTable {
             entries: Vec::new(),
             index: None,
         }
     }
 }
 
-fn span_key(s: &Span) -> (u32, u32, u32) {
-    (s.file.0, s.start, s.end)
+fn span_key<K: TableKey>(k: &K) -> K::Order {
+    k.order()
 }
 
-impl<V> SpanTable<V> {
-    fn position(&self, span: &Span) -> Option<usize> {
+impl<K: TableKey, V> KeyTable<K, V> {
+    fn position(&self, span: &K) -> Option<usize> {
         match &self.index {
             Some(index) => index.get(span).map(|&i| i as usize),
             None => self
@@ -774,12 +882,12 @@ impl<V> SpanTable<V> {
         }
     }
     /// The value at `span`.
-    pub fn get(&self, span: &Span) -> Option<&V> {
+    pub fn get(&self, span: &K) -> Option<&V> {
         self.position(span).map(|i| &self.entries[i].1)
     }
     /// The value at `span` and its position, trying position `hint` first: a reader walking a body in
     /// source order passes the position after the previous instruction's and finds the next one at once.
-    pub fn get_near(&self, span: Span, hint: usize) -> Option<(usize, &V)> {
+    pub fn get_near(&self, span: K, hint: usize) -> Option<(usize, &V)> {
         match self.entries.get(hint) {
             Some((s, v)) if *s == span => Some((hint, v)),
             _ => {
@@ -789,7 +897,7 @@ impl<V> SpanTable<V> {
         }
     }
     /// Stores the value at `span`; returns the value it replaces.
-    pub fn insert(&mut self, span: Span, value: V) -> Option<V> {
+    pub fn insert(&mut self, span: K, value: V) -> Option<V> {
         if self.index.is_none() {
             let in_order = self
                 .entries
@@ -833,11 +941,11 @@ impl<V> SpanTable<V> {
     pub fn is_empty(&self) -> bool {
         self.entries.is_empty()
     }
-    pub fn contains_key(&self, span: &Span) -> bool {
+    pub fn contains_key(&self, span: &K) -> bool {
         self.position(span).is_some()
     }
     /// The spans and values, in insertion order.
-    pub fn iter(&self) -> impl Iterator<Item = (&Span, &V)> {
+    pub fn iter(&self) -> impl Iterator<Item = (&K, &V)> {
         self.entries.iter().map(|(s, v)| (s, v))
     }
     pub fn values(&self) -> impl Iterator<Item = &V> {
@@ -845,8 +953,8 @@ impl<V> SpanTable<V> {
     }
 }
 
-/// Serialised as a map from span to value, as the map it stands for.
-impl<V: Serialize> Serialize for SpanTable<V> {
+/// Serialised as a map from key to value, as the map it stands for.
+impl<K: TableKey + Serialize, V: Serialize> Serialize for KeyTable<K, V> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         s.collect_map(self.iter())
     }
@@ -871,9 +979,13 @@ impl Model {
             .position(|t| t.name.eq_ignore_ascii_case(name))
             .map(|i| TypeId(i as u32))
     }
-    /// The info of an instruction, by its span.
-    pub fn instr(&self, span: Span) -> Option<&InstrInfo> {
-        self.instrs.get(&span)
+    /// The info of an instruction of the analysed units.
+    pub fn instr(&self, instruction: &crate::ast::Instruction) -> Option<&InstrInfo> {
+        self.instrs.get(&InstrId::of(instruction))
+    }
+    /// The info of an instruction by its identity (see [`Pou::instrs`]).
+    pub fn instr_by_id(&self, id: InstrId) -> Option<&InstrInfo> {
+        self.instrs.get(&id)
     }
     /// A global by reference.
     pub fn global(&self, r: GlobalRef) -> &Variable {

@@ -20,6 +20,8 @@ pub enum Class {
     AnyReal,
     AnyInt,
     AnyBit,
+    /// STRING and WSTRING (LEN, LEFT, CONCAT ...).
+    AnyString,
 }
 
 impl Class {
@@ -31,6 +33,7 @@ impl Class {
             Class::AnyReal => "ANY_REAL",
             Class::AnyInt => "ANY_INT",
             Class::AnyBit => "ANY_BIT",
+            Class::AnyString => "ANY_STRING",
         }
     }
     /// Whether `ty` belongs to the class (`Type::Error` belongs to every class).
@@ -48,11 +51,12 @@ impl Class {
             Class::AnyReal => ty.is_real(),
             Class::AnyInt => ty.is_integer(),
             Class::AnyBit => ty.is_bit(),
+            Class::AnyString => ty.is_string(),
         }
     }
     /// Whether an untyped integer literal may take a type of this class (it can be any ANY_NUM or ANY_BIT).
     pub fn accepts_int_literal(self) -> bool {
-        !matches!(self, Class::AnyReal)
+        !matches!(self, Class::AnyReal | Class::AnyString)
     }
     /// Whether an untyped real literal may take a type of this class.
     pub fn accepts_real_literal(self) -> bool {
@@ -117,6 +121,19 @@ const ELEM2: &[Param] = &[p("IN1", T(AnyElementary)), p("IN2", T(AnyElementary))
 const NUM1: &[Param] = &[p("IN", T(AnyNum))];
 const REAL1: &[Param] = &[p("IN", T(AnyReal))];
 const SHIFT: &[Param] = &[p("IN", T(AnyBit)), p("N", Own(AnyInt))];
+const fn fx2(a: Elementary, b: Elementary) -> [Param; 2] {
+    [p("IN1", Fixed(a)), p("IN2", Fixed(b))]
+}
+const TIME_NUM: &[Param] = &[p("IN1", Fixed(E::Time)), p("IN2", Own(AnyNum))];
+const LTIME_NUM: &[Param] = &[p("IN1", Fixed(E::Ltime)), p("IN2", Own(AnyNum))];
+const STR1: &[Param] = &[p("IN", T(AnyString))];
+const STR2: &[Param] = &[p("IN1", T(AnyString)), p("IN2", T(AnyString))];
+const STR_L: &[Param] = &[p("IN", T(AnyString)), p("L", Own(AnyInt))];
+const STR_LP: &[Param] = &[
+    p("IN", T(AnyString)),
+    p("L", Own(AnyInt)),
+    p("P", Own(AnyInt)),
+];
 
 const fn f(
     name: &'static str,
@@ -202,6 +219,45 @@ pub static FUNCTIONS: &[StdFunction] = &[
         "IN bounded to MN..MX",
     ),
     f("MUX", &[p("K", Own(AnyInt)), p("IN0", T(Any)), p("IN1", T(Any))], true, Ret::T, "the K-th of IN0, IN1, ..."),
+    // character strings (positions count from 1; see the C backend README for out-of-range arguments)
+    f("LEN", STR1, false, Ret::Fixed(E::Int), "the length of IN in characters"),
+    f("LEFT", STR_L, false, Ret::T, "the leftmost L characters of IN"),
+    f("RIGHT", STR_L, false, Ret::T, "the rightmost L characters of IN"),
+    f("MID", STR_LP, false, Ret::T, "L characters of IN from the P-th"),
+    f("CONCAT", STR2, true, Ret::T, "IN1, IN2, ... one after the other"),
+    f(
+        "INSERT",
+        &[p("IN1", T(AnyString)), p("IN2", T(AnyString)), p("P", Own(AnyInt))],
+        false,
+        Ret::T,
+        "IN2 inserted into IN1 after its P-th character",
+    ),
+    f("DELETE", STR_LP, false, Ret::T, "IN without the L characters from the P-th"),
+    f(
+        "REPLACE",
+        &[p("IN1", T(AnyString)), p("IN2", T(AnyString)), p("L", Own(AnyInt)), p("P", Own(AnyInt))],
+        false,
+        Ret::T,
+        "IN1 with its L characters from the P-th replaced by IN2",
+    ),
+    f("FIND", STR2, false, Ret::Fixed(E::Int), "the position of the first IN2 in IN1 (0: none)"),
+    // time and date functions with typed names (the overloads of TIME_ARITH, callable by name)
+    f("ADD_TIME", &fx2(E::Time, E::Time), false, Ret::Fixed(E::Time), "TIME + TIME"),
+    f("ADD_LTIME", &fx2(E::Ltime, E::Ltime), false, Ret::Fixed(E::Ltime), "LTIME + LTIME"),
+    f("ADD_TOD_TIME", &fx2(E::Tod, E::Time), false, Ret::Fixed(E::Tod), "TOD + TIME"),
+    f("ADD_DT_TIME", &fx2(E::Dt, E::Time), false, Ret::Fixed(E::Dt), "DT + TIME"),
+    f("SUB_TIME", &fx2(E::Time, E::Time), false, Ret::Fixed(E::Time), "TIME - TIME"),
+    f("SUB_LTIME", &fx2(E::Ltime, E::Ltime), false, Ret::Fixed(E::Ltime), "LTIME - LTIME"),
+    f("SUB_DATE_DATE", &fx2(E::Date, E::Date), false, Ret::Fixed(E::Time), "DATE - DATE"),
+    f("SUB_TOD_TIME", &fx2(E::Tod, E::Time), false, Ret::Fixed(E::Tod), "TOD - TIME"),
+    f("SUB_TOD_TOD", &fx2(E::Tod, E::Tod), false, Ret::Fixed(E::Time), "TOD - TOD"),
+    f("SUB_DT_TIME", &fx2(E::Dt, E::Time), false, Ret::Fixed(E::Dt), "DT - TIME"),
+    f("SUB_DT_DT", &fx2(E::Dt, E::Dt), false, Ret::Fixed(E::Time), "DT - DT"),
+    f("MUL_TIME", TIME_NUM, false, Ret::Fixed(E::Time), "TIME * ANY_NUM"),
+    f("MUL_LTIME", LTIME_NUM, false, Ret::Fixed(E::Ltime), "LTIME * ANY_NUM"),
+    f("DIV_TIME", TIME_NUM, false, Ret::Fixed(E::Time), "TIME / ANY_NUM (0 for a zero divisor)"),
+    f("DIV_LTIME", LTIME_NUM, false, Ret::Fixed(E::Ltime), "LTIME / ANY_NUM (0 for a zero divisor)"),
+    f("CONCAT_DATE_TOD", &fx2(E::Date, E::Tod), false, Ret::Fixed(E::Dt), "the DT of a DATE at a TOD"),
 ];
 
 /// Looks up a standard function (not a conversion) by name, case-insensitively.
@@ -434,30 +490,39 @@ const TIMER: &[FbParam] = &[
     o("Q", E::Bool),
     o("ET", E::Time),
 ];
-const CTU: &[FbParam] = &[
-    i("CU", E::Bool),
-    i("R", E::Bool),
-    i("PV", E::Int),
-    o("Q", E::Bool),
-    o("CV", E::Int),
-];
-const CTD: &[FbParam] = &[
-    i("CD", E::Bool),
-    i("LD", E::Bool),
-    i("PV", E::Int),
-    o("Q", E::Bool),
-    o("CV", E::Int),
-];
-const CTUD: &[FbParam] = &[
-    i("CU", E::Bool),
-    i("CD", E::Bool),
-    i("R", E::Bool),
-    i("LD", E::Bool),
-    i("PV", E::Int),
-    o("QU", E::Bool),
-    o("QD", E::Bool),
-    o("CV", E::Int),
-];
+const fn ctu(t: Elementary) -> [FbParam; 5] {
+    [
+        i("CU", E::Bool),
+        i("R", E::Bool),
+        i("PV", t),
+        o("Q", E::Bool),
+        o("CV", t),
+    ]
+}
+const fn ctd(t: Elementary) -> [FbParam; 5] {
+    [
+        i("CD", E::Bool),
+        i("LD", E::Bool),
+        i("PV", t),
+        o("Q", E::Bool),
+        o("CV", t),
+    ]
+}
+const fn ctud(t: Elementary) -> [FbParam; 8] {
+    [
+        i("CU", E::Bool),
+        i("CD", E::Bool),
+        i("R", E::Bool),
+        i("LD", E::Bool),
+        i("PV", t),
+        o("QU", E::Bool),
+        o("QD", E::Bool),
+        o("CV", t),
+    ]
+}
+const CTU: &[FbParam] = &ctu(E::Int);
+const CTD: &[FbParam] = &ctd(E::Int);
+const CTUD: &[FbParam] = &ctud(E::Int);
 
 /// The inputs and outputs of a standard FB, in IEC order (inputs first).
 pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
@@ -469,6 +534,18 @@ pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
         StdFb::Ctu => CTU,
         StdFb::Ctd => CTD,
         StdFb::Ctud => CTUD,
+        StdFb::CtuDint => &const { ctu(E::Dint) },
+        StdFb::CtuLint => &const { ctu(E::Lint) },
+        StdFb::CtuUdint => &const { ctu(E::Udint) },
+        StdFb::CtuUlint => &const { ctu(E::Ulint) },
+        StdFb::CtdDint => &const { ctd(E::Dint) },
+        StdFb::CtdLint => &const { ctd(E::Lint) },
+        StdFb::CtdUdint => &const { ctd(E::Udint) },
+        StdFb::CtdUlint => &const { ctd(E::Ulint) },
+        StdFb::CtudDint => &const { ctud(E::Dint) },
+        StdFb::CtudLint => &const { ctud(E::Lint) },
+        StdFb::CtudUdint => &const { ctud(E::Udint) },
+        StdFb::CtudUlint => &const { ctud(E::Ulint) },
     }
 }
 
@@ -482,10 +559,14 @@ pub fn fb_doc(fb: StdFb) -> &'static str {
         StdFb::Ton => "on-delay timer: Q goes TRUE when IN has been TRUE for PT",
         StdFb::Tof => "off-delay timer: Q stays TRUE for PT after IN goes FALSE",
         StdFb::Tp => "pulse timer: Q is TRUE for PT from a rising edge of IN",
-        StdFb::Ctu => "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets",
-        StdFb::Ctd => {
+        StdFb::Ctu | StdFb::CtuDint | StdFb::CtuLint | StdFb::CtuUdint | StdFb::CtuUlint => {
+            "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets"
+        }
+        StdFb::Ctd | StdFb::CtdDint | StdFb::CtdLint | StdFb::CtdUdint | StdFb::CtdUlint => {
             "down counter: CV counts down on rising edges of CD, Q := CV <= 0, LD loads PV"
         }
-        StdFb::Ctud => "up/down counter: QU := CV >= PV, QD := CV <= 0",
+        StdFb::Ctud | StdFb::CtudDint | StdFb::CtudLint | StdFb::CtudUdint | StdFb::CtudUlint => {
+            "up/down counter: QU := CV >= PV, QD := CV <= 0"
+        }
     }
 }

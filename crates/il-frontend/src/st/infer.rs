@@ -1,0 +1,315 @@
+//! Expression types for the ST lowering: just enough typing to declare temporaries and to choose
+//! between a function call and an FB call. IL sema does the real checking on the lowered IL.
+//!
+//! Input: ST expressions, the POU's variables, [`Declarations`], the standard catalogue
+//! (`sema::stdlib`). Output: [`Ty`]: a declared type as written, an untyped literal, or unknown.
+//! Invariants: never fails: anything it cannot type is [`Ty::Unknown`] (sema reports the real cause);
+//! aliases are followed at most 16 levels.
+
+use super::ast::{Accessor, BinaryOp, Expr, ExprKind, Place, PlaceBase, UnaryOp};
+use super::types::Declarations;
+use crate::ast::{AddressSize, Ident, LiteralKind, PouKind, TypeDef, TypeRef};
+use crate::sema::model::{Elementary, StdFb};
+use crate::sema::stdlib::{self, ConvTarget, ParamTy, Ret};
+use crate::Span;
+use std::collections::HashMap;
+
+/// The type of an expression as far as the lowering needs it.
+#[derive(Debug, Clone)]
+pub enum Ty {
+    Known(TypeRef),
+    /// An integer literal without prefix: takes the type of its context.
+    IntLit,
+    RealLit,
+    Unknown,
+}
+
+impl Ty {
+    pub fn known(&self) -> Option<&TypeRef> {
+        match self {
+            Ty::Known(t) => Some(t),
+            _ => None,
+        }
+    }
+}
+
+pub fn named(name: &str, span: Span) -> TypeRef {
+    TypeRef::Named(Ident::new(name, span))
+}
+
+fn elem_ref(e: Elementary, span: Span) -> TypeRef {
+    named(e.name(), span)
+}
+
+/// What the typing looks names up in.
+pub struct Env<'a> {
+    pub decls: &'a Declarations,
+    /// The POU's variables (upper-case name -> type).
+    pub vars: &'a HashMap<String, TypeRef>,
+    pub pou_name: &'a Ident,
+    pub pou_kind: PouKind,
+    pub pou_ret: Option<&'a TypeRef>,
+}
+
+impl Env<'_> {
+    /// Follows named aliases (`TYPE T : INT; END_TYPE`) to what they stand for.
+    pub fn resolve(&self, t: &TypeRef) -> TypeRef {
+        let mut t = t.clone();
+        for _ in 0..16 {
+            let TypeRef::Named(n) = &t else { break };
+            match self.decls.type_decl(&n.name).map(|d| &d.def) {
+                Some(TypeDef::Alias { ty, .. }) => t = ty.clone(),
+                _ => break,
+            }
+        }
+        t
+    }
+
+    /// The elementary type of `t` (through aliases and subranges).
+    pub fn elementary(&self, t: &TypeRef) -> Option<Elementary> {
+        match self.resolve(t) {
+            TypeRef::Named(n) => Elementary::from_name(&n.name),
+            TypeRef::Subrange { base, .. } => Elementary::from_name(&base.name),
+            _ => None,
+        }
+    }
+
+    /// Whether `name` is a variable of the POU (or a global, or the function's result).
+    pub fn var_type(&self, name: &Ident) -> Option<TypeRef> {
+        let key = name.key();
+        if let Some(t) = self.vars.get(&key) {
+            return Some(t.clone());
+        }
+        if self.pou_kind == PouKind::Function && name == self.pou_name {
+            return self.pou_ret.cloned();
+        }
+        self.decls.globals.get(&key).cloned()
+    }
+
+    /// The enumeration that declares a bare value `red`, if exactly one does.
+    fn enum_of_value(&self, value: &Ident) -> Option<TypeRef> {
+        let mut found = self.decls.types.values().filter(|d| {
+            matches!(&d.def, TypeDef::Enum { values, .. } if values.iter().any(|v| v.name == *value))
+        });
+        let first = found.next()?;
+        found
+            .next()
+            .is_none()
+            .then(|| TypeRef::Named(first.name.clone()))
+    }
+
+    /// The type of a member `field` of a value of type `t` (struct field, FB input/output).
+    pub fn member(&self, t: &TypeRef, field: &Ident) -> Option<TypeRef> {
+        let TypeRef::Named(n) = self.resolve(t) else {
+            return None;
+        };
+        if let Some(d) = self.decls.type_decl(&n.name) {
+            if let TypeDef::Struct { fields } = &d.def {
+                return fields
+                    .iter()
+                    .find(|f| f.name == *field)
+                    .map(|f| f.ty.clone());
+            }
+            return None;
+        }
+        if let Some(p) = self.decls.pou(&n.name) {
+            return p.var(&field.name).map(|v| v.2.clone());
+        }
+        let fb = StdFb::from_name(&n.name)?;
+        stdlib::fb_params(fb)
+            .iter()
+            .find(|p| p.name.eq_ignore_ascii_case(&field.name))
+            .map(|p| elem_ref(p.ty, field.span))
+    }
+
+    /// The type of a place, or `None` when some part of it is unknown.
+    pub fn place_type(&self, p: &Place) -> Option<TypeRef> {
+        let mut t = match &p.base {
+            PlaceBase::Name(n) => self.var_type(n).or_else(|| {
+                if p.accessors.is_empty() {
+                    self.enum_of_value(n)
+                } else {
+                    None
+                }
+            })?,
+            PlaceBase::Address(a) => {
+                let e = match a.size {
+                    AddressSize::Bit => Elementary::Bool,
+                    AddressSize::Byte => Elementary::Byte,
+                    AddressSize::Word => Elementary::Word,
+                    AddressSize::DWord => Elementary::Dword,
+                    AddressSize::LWord => Elementary::Lword,
+                };
+                elem_ref(e, a.span)
+            }
+        };
+        for acc in &p.accessors {
+            t = match acc {
+                Accessor::Field(f) => self.member(&t, f)?,
+                Accessor::Index(_) => match self.resolve(&t) {
+                    TypeRef::Array { element, .. } => *element,
+                    _ => return None,
+                },
+            };
+        }
+        Some(t)
+    }
+
+    /// Whether `name` is an FB instance of the POU (a variable whose type is an FB type).
+    pub fn is_fb_type(&self, t: &TypeRef) -> bool {
+        match self.resolve(t) {
+            TypeRef::Named(n) => {
+                StdFb::from_name(&n.name).is_some()
+                    || self
+                        .decls
+                        .pou(&n.name)
+                        .is_some_and(|p| p.kind == PouKind::FunctionBlock)
+            }
+            _ => false,
+        }
+    }
+
+    /// The type of an expression.
+    pub fn expr(&self, e: &Expr) -> Ty {
+        match &e.kind {
+            ExprKind::Literal(l) => {
+                if let Some(p) = &l.type_prefix {
+                    return Ty::Known(named(&p.name, p.span));
+                }
+                let el = match &l.kind {
+                    LiteralKind::Int(_) => return Ty::IntLit,
+                    LiteralKind::Real(_) => return Ty::RealLit,
+                    LiteralKind::Bool(_) => Elementary::Bool,
+                    LiteralKind::Duration(_) => Elementary::Time,
+                    LiteralKind::Date(_) => Elementary::Date,
+                    LiteralKind::TimeOfDay(_) => Elementary::Tod,
+                    LiteralKind::DateAndTime(_) => Elementary::Dt,
+                    LiteralKind::String { wide, .. } => {
+                        return Ty::Known(TypeRef::String {
+                            wide: *wide,
+                            length: None,
+                            span: l.span,
+                        })
+                    }
+                };
+                Ty::Known(elem_ref(el, l.span))
+            }
+            ExprKind::Place(p) => self.place_type(p).map_or(Ty::Unknown, Ty::Known),
+            ExprKind::EnumValue { type_name, .. } => Ty::Known(TypeRef::Named(type_name.clone())),
+            ExprKind::Unary { op, operand } => {
+                let t = self.expr(operand);
+                match (op, t) {
+                    (UnaryOp::Not, Ty::IntLit) => Ty::Unknown,
+                    (_, t) => t,
+                }
+            }
+            ExprKind::Binary { op, left, right } => self.binary(*op, left, right, e.span),
+            ExprKind::Call { name, args } => self.call(name, args, e.span),
+            ExprKind::Error => Ty::Unknown,
+        }
+    }
+
+    fn binary(&self, op: BinaryOp, left: &Expr, right: &Expr, span: Span) -> Ty {
+        use BinaryOp::*;
+        match op {
+            Eq | Ne | Lt | Gt | Le | Ge => Ty::Known(elem_ref(Elementary::Bool, span)),
+            Power => match self.expr(left) {
+                Ty::IntLit | Ty::RealLit => Ty::RealLit,
+                t => t,
+            },
+            Add | Sub | Mul | Div => {
+                let (l, r) = (self.expr(left), self.expr(right));
+                let le = l.known().and_then(|t| self.elementary(t));
+                if let Some(le) = le.filter(|e| !e.is_numeric() && !e.is_bit()) {
+                    let name = match op {
+                        Add => "ADD",
+                        Sub => "SUB",
+                        Mul => "MUL",
+                        _ => "DIV",
+                    };
+                    let re = r.known().and_then(|t| self.elementary(t));
+                    for o in stdlib::time_overloads(name, le) {
+                        if o.3.is_none() || o.3 == re {
+                            return Ty::Known(elem_ref(o.4, span));
+                        }
+                    }
+                }
+                unify(l, r)
+            }
+            Mod | And | Or | Xor => unify(self.expr(left), self.expr(right)),
+        }
+    }
+
+    fn call(&self, name: &Ident, args: &[super::ast::Arg], span: Span) -> Ty {
+        if let Some(p) = self.decls.pou(&name.name) {
+            if p.kind == PouKind::Function {
+                return p.ret.clone().map_or(Ty::Unknown, Ty::Known);
+            }
+        }
+        if let Some(f) = stdlib::function(&name.name) {
+            return match f.result {
+                Ret::Fixed(e) => Ty::Known(elem_ref(e, span)),
+                Ret::T => {
+                    let mut t = Ty::Unknown;
+                    for (i, a) in args.iter().enumerate() {
+                        let idx = match &a.name {
+                            Some(n) => f.param_index(&n.name),
+                            None => Some(i),
+                        };
+                        if let Some(ParamTy::T(_)) = idx.and_then(|i| f.param_ty(i)) {
+                            t = unify(t, self.expr(&a.value));
+                        }
+                    }
+                    if f.time_arith {
+                        if let Some(super::ast::Arg { value, .. }) = args.first() {
+                            if let Some(le) =
+                                self.expr(value).known().and_then(|t| self.elementary(t))
+                            {
+                                if let Some(o) = stdlib::time_overloads(f.name, le).next() {
+                                    return Ty::Known(elem_ref(o.4, span));
+                                }
+                            }
+                        }
+                    }
+                    t
+                }
+            };
+        }
+        if let Some(c) = stdlib::conversion(&name.name) {
+            return match c.to {
+                ConvTarget::Fixed(t) => match t.elementary() {
+                    Some(e) => Ty::Known(elem_ref(e, span)),
+                    None => Ty::Known(TypeRef::String {
+                        wide: matches!(t, crate::sema::model::Type::String { wide: true, .. }),
+                        length: None,
+                        span,
+                    }),
+                },
+                ConvTarget::BcdOfWidth => {
+                    let from = c
+                        .from
+                        .and_then(|t| t.elementary())
+                        .unwrap_or(Elementary::Int);
+                    Ty::Known(elem_ref(stdlib::bcd_of_width(from), span))
+                }
+            };
+        }
+        if let Some(t) = stdlib::TIME_ARITH
+            .iter()
+            .find(|t| t.0.eq_ignore_ascii_case(&name.name))
+        {
+            return Ty::Known(elem_ref(t.4, span));
+        }
+        Ty::Unknown
+    }
+}
+
+/// The type of a generic operation on two values: a typed side wins over a literal.
+pub fn unify(a: Ty, b: Ty) -> Ty {
+    match (a, b) {
+        (Ty::Known(t), _) | (_, Ty::Known(t)) => Ty::Known(t),
+        (Ty::RealLit, _) | (_, Ty::RealLit) => Ty::RealLit,
+        (Ty::IntLit, _) | (_, Ty::IntLit) => Ty::IntLit,
+        _ => Ty::Unknown,
+    }
+}

@@ -1,0 +1,561 @@
+//! The ST lexer: source text in, [`Token`]s with byte ranges out (a logos state machine).
+//!
+//! Input: UTF-8 text. Output: tokens (blanks, line ends, `(* *)` nested comments, `//` comments and
+//! `{ }` pragmas skipped) and lexing problems, each with its byte range in `src`.
+//! Invariants: keywords are recognised case-insensitively by ONE table ([`keyword`]); number literals
+//! carry no sign (`a-1` is `a`, `-`, `1`; the parser folds `-1`); literal values are decoded by
+//! [`crate::literal`], exactly as the IL lexer does; an invalid literal becomes an error token.
+
+use crate::ast::{AddressSize, Area};
+use crate::lexer::{LexError, TimeValue};
+use crate::literal;
+use logos::{FilterResult, Logos};
+use std::ops::Range;
+
+#[derive(Logos, Debug, Clone, PartialEq)]
+#[logos(error = LexError)]
+#[logos(extras = Vec<(Range<usize>, String)>)]
+#[logos(skip r"[ \t\r\n\f\u{FEFF}]+")]
+enum Raw {
+    #[token("(*", block_comment)]
+    Comment,
+    #[token("{", pragma)]
+    Pragma,
+    #[regex(r"//[^\n]*", logos::skip, allow_greedy = true)]
+    LineComment,
+    #[regex(r"[A-Za-z_][A-Za-z0-9_]*")]
+    Word,
+    #[regex(r"[A-Za-z_][A-Za-z0-9_]*#", prefixed)]
+    Prefixed(Option<TimeValue>),
+    #[regex(r"[0-9][0-9_]*", |l| literal::decimal_int(l.slice()).map_err(LexError::BadLiteral))]
+    #[regex(r"[0-9]+#[0-9A-Za-z_]*", |l| literal::based_int(l.slice()).map_err(LexError::BadLiteral))]
+    Int(i128),
+    #[regex(r"[0-9][0-9_]*\.[0-9][0-9_]*([eE][+-]?[0-9]+)?", |l| literal::real(l.slice()).map_err(LexError::BadLiteral))]
+    #[regex(r"[0-9][0-9_]*[eE][+-]?[0-9]+", |l| literal::real(l.slice()).map_err(LexError::BadLiteral))]
+    Real(f64),
+    #[token("'", |l| string(l, false))]
+    #[token("\"", |l| string(l, true))]
+    Str((bool, String)),
+    #[regex(r"%[A-Za-z0-9_.*]*", address)]
+    Address((Area, AddressSize, Vec<u32>)),
+    #[token("(")]
+    LParen,
+    #[token(")")]
+    RParen,
+    #[token("[")]
+    LBracket,
+    #[token("]")]
+    RBracket,
+    #[token(",")]
+    Comma,
+    #[token(";")]
+    Semi,
+    #[token(":")]
+    Colon,
+    #[token(":=")]
+    Assign,
+    #[token("=>")]
+    Arrow,
+    #[token("..")]
+    DotDot,
+    #[token(".")]
+    Dot,
+    #[token("&")]
+    Amp,
+    #[token("+")]
+    Plus,
+    #[token("-")]
+    Minus,
+    #[token("*")]
+    Star,
+    #[token("**")]
+    Power,
+    #[token("/")]
+    Slash,
+    #[token("<")]
+    Lt,
+    #[token(">")]
+    Gt,
+    #[token("<=")]
+    Le,
+    #[token(">=")]
+    Ge,
+    #[token("=")]
+    Eq,
+    #[token("<>")]
+    Ne,
+    #[token("^")]
+    Caret,
+}
+
+/// ST keywords (reserved: never names).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
+pub enum Kw {
+    If,
+    Then,
+    Elsif,
+    Else,
+    EndIf,
+    Case,
+    Of,
+    EndCase,
+    For,
+    To,
+    By,
+    Do,
+    EndFor,
+    While,
+    EndWhile,
+    Repeat,
+    Until,
+    EndRepeat,
+    Exit,
+    Continue,
+    Return,
+    And,
+    Or,
+    Xor,
+    Not,
+    Mod,
+    True,
+    False,
+}
+
+/// THE keyword table (case-insensitive); `None` for a name.
+pub fn keyword(word: &str) -> Option<Kw> {
+    let mut buf = [0u8; 12];
+    if word.len() > buf.len() {
+        return None;
+    }
+    let up = &mut buf[..word.len()];
+    up.copy_from_slice(word.as_bytes());
+    up.make_ascii_uppercase();
+    use Kw::*;
+    Some(match &*up {
+        b"IF" => If,
+        b"THEN" => Then,
+        b"ELSIF" => Elsif,
+        b"ELSE" => Else,
+        b"END_IF" => EndIf,
+        b"CASE" => Case,
+        b"OF" => Of,
+        b"END_CASE" => EndCase,
+        b"FOR" => For,
+        b"TO" => To,
+        b"BY" => By,
+        b"DO" => Do,
+        b"END_FOR" => EndFor,
+        b"WHILE" => While,
+        b"END_WHILE" => EndWhile,
+        b"REPEAT" => Repeat,
+        b"UNTIL" => Until,
+        b"END_REPEAT" => EndRepeat,
+        b"EXIT" => Exit,
+        b"CONTINUE" => Continue,
+        b"RETURN" => Return,
+        b"AND" => And,
+        b"OR" => Or,
+        b"XOR" => Xor,
+        b"NOT" => Not,
+        b"MOD" => Mod,
+        b"TRUE" => True,
+        b"FALSE" => False,
+        _ => return None,
+    })
+}
+
+impl Kw {
+    pub fn spelling(self) -> &'static str {
+        use Kw::*;
+        match self {
+            If => "IF",
+            Then => "THEN",
+            Elsif => "ELSIF",
+            Else => "ELSE",
+            EndIf => "END_IF",
+            Case => "CASE",
+            Of => "OF",
+            EndCase => "END_CASE",
+            For => "FOR",
+            To => "TO",
+            By => "BY",
+            Do => "DO",
+            EndFor => "END_FOR",
+            While => "WHILE",
+            EndWhile => "END_WHILE",
+            Repeat => "REPEAT",
+            Until => "UNTIL",
+            EndRepeat => "END_REPEAT",
+            Exit => "EXIT",
+            Continue => "CONTINUE",
+            Return => "RETURN",
+            And => "AND",
+            Or => "OR",
+            Xor => "XOR",
+            Not => "NOT",
+            Mod => "MOD",
+            True => "TRUE",
+            False => "FALSE",
+        }
+    }
+}
+
+/// The parser's tokens.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Tok {
+    Ident,
+    Kw(Kw),
+    Int(i128),
+    Real(f64),
+    Time(TimeValue),
+    Str(bool, String),
+    /// `INT#`, `Color#`: a typed literal or enum value follows; the name is the text without `#`.
+    TypePrefix,
+    Address(Area, AddressSize, Vec<u32>),
+    LParen,
+    RParen,
+    LBracket,
+    RBracket,
+    Comma,
+    Semi,
+    Colon,
+    Assign,
+    Arrow,
+    DotDot,
+    Dot,
+    Amp,
+    Plus,
+    Minus,
+    Star,
+    Power,
+    Slash,
+    Lt,
+    Gt,
+    Le,
+    Ge,
+    Eq,
+    Ne,
+    Caret,
+    /// Text the lexer could not read (reported as a [`Problem`]).
+    Error,
+    /// End of the text (zero-width, always last).
+    Eof,
+}
+
+/// A token and its byte range in the lexed text.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Token {
+    pub tok: Tok,
+    pub range: Range<usize>,
+}
+
+/// What went wrong where (byte range in the lexed text).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Problem {
+    UnexpectedChar(Range<usize>),
+    UnterminatedComment(Range<usize>),
+    UnterminatedString(Range<usize>),
+    BadLiteral(Range<usize>, String),
+    /// An invalid `$` escape inside a string (the string is still usable).
+    BadEscape(Range<usize>, String),
+}
+
+/// Lexes `src`; the token list always ends with [`Tok::Eof`].
+pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
+    let mut out = Vec::new();
+    let mut problems = Vec::new();
+    let mut lx = Raw::lexer(src);
+    while let Some(r) = lx.next() {
+        let range = lx.span();
+        let tok = match r {
+            Ok(Raw::Word) => match keyword(lx.slice()) {
+                Some(k) => Tok::Kw(k),
+                None => Tok::Ident,
+            },
+            Ok(Raw::Prefixed(Some(t))) => Tok::Time(t),
+            Ok(Raw::Prefixed(None)) => Tok::TypePrefix,
+            Ok(Raw::Int(v)) => Tok::Int(v),
+            Ok(Raw::Real(v)) => Tok::Real(v),
+            Ok(Raw::Str((w, s))) => Tok::Str(w, s),
+            Ok(Raw::Address((a, s, p))) => Tok::Address(a, s, p),
+            Ok(Raw::LParen) => Tok::LParen,
+            Ok(Raw::RParen) => Tok::RParen,
+            Ok(Raw::LBracket) => Tok::LBracket,
+            Ok(Raw::RBracket) => Tok::RBracket,
+            Ok(Raw::Comma) => Tok::Comma,
+            Ok(Raw::Semi) => Tok::Semi,
+            Ok(Raw::Colon) => Tok::Colon,
+            Ok(Raw::Assign) => Tok::Assign,
+            Ok(Raw::Arrow) => Tok::Arrow,
+            Ok(Raw::DotDot) => Tok::DotDot,
+            Ok(Raw::Dot) => Tok::Dot,
+            Ok(Raw::Amp) => Tok::Amp,
+            Ok(Raw::Plus) => Tok::Plus,
+            Ok(Raw::Minus) => Tok::Minus,
+            Ok(Raw::Star) => Tok::Star,
+            Ok(Raw::Power) => Tok::Power,
+            Ok(Raw::Slash) => Tok::Slash,
+            Ok(Raw::Lt) => Tok::Lt,
+            Ok(Raw::Gt) => Tok::Gt,
+            Ok(Raw::Le) => Tok::Le,
+            Ok(Raw::Ge) => Tok::Ge,
+            Ok(Raw::Eq) => Tok::Eq,
+            Ok(Raw::Ne) => Tok::Ne,
+            Ok(Raw::Caret) => Tok::Caret,
+            Ok(Raw::Comment | Raw::Pragma | Raw::LineComment) => continue,
+            Err(e) => {
+                problems.push(match e {
+                    LexError::UnexpectedChar => Problem::UnexpectedChar(range.clone()),
+                    LexError::UnterminatedComment => Problem::UnterminatedComment(range.clone()),
+                    LexError::UnterminatedString => Problem::UnterminatedString(range.clone()),
+                    LexError::BadLiteral(why) | LexError::BadAddress(why) => {
+                        Problem::BadLiteral(range.clone(), why)
+                    }
+                });
+                Tok::Error
+            }
+        };
+        out.push(Token { tok, range });
+    }
+    for (range, why) in std::mem::take(&mut lx.extras) {
+        problems.push(Problem::BadEscape(range, why));
+    }
+    out.push(Token {
+        tok: Tok::Eof,
+        range: src.len()..src.len(),
+    });
+    (out, problems)
+}
+
+/// Skips a possibly nested `(* ... *)` comment.
+fn block_comment(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
+    let rest = lex.remainder().as_bytes();
+    let mut depth = 1usize;
+    let mut i = 0;
+    while i < rest.len() {
+        match (rest[i], rest.get(i + 1)) {
+            (b'(', Some(b'*')) => {
+                depth += 1;
+                i += 2;
+            }
+            (b'*', Some(b')')) => {
+                depth -= 1;
+                i += 2;
+                if depth == 0 {
+                    lex.bump(i);
+                    return FilterResult::Skip;
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    lex.bump(rest.len());
+    FilterResult::Error(LexError::UnterminatedComment)
+}
+
+/// Skips a `{ ... }` pragma (CODESYS attributes, Beremiz annotations).
+fn pragma(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
+    match lex.remainder().find('}') {
+        Some(n) => {
+            lex.bump(n + 1);
+            FilterResult::Skip
+        }
+        None => {
+            lex.bump(lex.remainder().len());
+            FilterResult::Error(LexError::UnterminatedComment)
+        }
+    }
+}
+
+/// Scans a string body after its opening quote, decoding `$` escapes (invalid ones go to `extras`).
+fn string(lex: &mut logos::Lexer<Raw>, wide: bool) -> Result<(bool, String), LexError> {
+    let quote = if wide { b'"' } else { b'\'' };
+    let rest = lex.remainder();
+    let bytes = rest.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'$' if i + 1 < bytes.len() && bytes[i + 1] != b'\n' => {
+                let ch_len = rest[i + 1..].chars().next().map_or(1, char::len_utf8);
+                i += 1 + ch_len;
+            }
+            b'\n' => break,
+            c if c == quote => {
+                let body_start = lex.span().end;
+                let (value, errors) = literal::unescape(&rest[..i], wide);
+                for (s, e, why) in errors {
+                    lex.extras.push((body_start + s..body_start + e, why));
+                }
+                lex.bump(i + 1);
+                return Ok((wide, value));
+            }
+            _ => i += 1,
+        }
+    }
+    lex.bump(i);
+    Err(LexError::UnterminatedString)
+}
+
+/// `%IX0.1`, `%QW3`, `%MD10`, `%I*`.
+fn address(lex: &mut logos::Lexer<Raw>) -> Result<(Area, AddressSize, Vec<u32>), LexError> {
+    let text = lex.slice();
+    let bad = |why: &str| LexError::BadAddress(format!("`{text}` {why}"));
+    let mut chars = text[1..].chars().peekable();
+    let area = match chars.next().map(|c| c.to_ascii_uppercase()) {
+        Some('I') => Area::Input,
+        Some('Q') => Area::Output,
+        Some('M') => Area::Memory,
+        _ => return Err(bad("is not a direct address: the area must be I, Q or M")),
+    };
+    let size = match chars.peek().map(|c| c.to_ascii_uppercase()) {
+        Some('X') => Some(AddressSize::Bit),
+        Some('B') => Some(AddressSize::Byte),
+        Some('W') => Some(AddressSize::Word),
+        Some('D') => Some(AddressSize::DWord),
+        Some('L') => Some(AddressSize::LWord),
+        _ => None,
+    };
+    if size.is_some() {
+        chars.next();
+    }
+    let size = size.unwrap_or(AddressSize::Bit);
+    let rest: String = chars.collect();
+    if rest == "*" {
+        return Ok((area, size, Vec::new()));
+    }
+    let mut path = Vec::new();
+    for part in rest.split('.') {
+        if part.is_empty() || !part.bytes().all(|b| b.is_ascii_digit()) {
+            return Err(bad(
+                "is not a valid location: expected numbers separated by dots (e.g. %IX0.1)",
+            ));
+        }
+        path.push(
+            part.parse::<u32>()
+                .map_err(|_| bad("has a location number that is too large"))?,
+        );
+    }
+    Ok((area, size, path))
+}
+
+/// `INT#`, `T#1h`, `DATE#2001-04-09` ...: the date/time families are decoded right away (their bodies
+/// contain `:` `-` `.`); other prefixes stay prefixes.
+fn prefixed(lex: &mut logos::Lexer<Raw>) -> Result<Option<TimeValue>, LexError> {
+    let prefix = lex.slice().trim_end_matches('#').to_ascii_uppercase();
+    #[derive(Clone, Copy)]
+    enum Fam {
+        Dur,
+        Date,
+        Tod,
+        Dt,
+    }
+    let (fam, long) = match prefix.as_str() {
+        "T" | "TIME" => (Fam::Dur, false),
+        "LT" | "LTIME" => (Fam::Dur, true),
+        "D" | "DATE" => (Fam::Date, false),
+        "LD" | "LDATE" => (Fam::Date, true),
+        "TOD" | "TIME_OF_DAY" => (Fam::Tod, false),
+        "LTOD" | "LTIME_OF_DAY" => (Fam::Tod, true),
+        "DT" | "DATE_AND_TIME" => (Fam::Dt, false),
+        "LDT" | "LDATE_AND_TIME" => (Fam::Dt, true),
+        _ => return Ok(None),
+    };
+    let rest = lex.remainder().as_bytes();
+    let allowed = |i: usize, c: u8| match fam {
+        Fam::Dur => {
+            c.is_ascii_alphanumeric()
+                || c == b'_'
+                || (c == b'.' && rest.get(i + 1).is_some_and(u8::is_ascii_digit))
+                || (i == 0 && (c == b'-' || c == b'+'))
+        }
+        Fam::Date => c.is_ascii_digit() || c == b'-',
+        Fam::Tod => c.is_ascii_digit() || c == b':' || c == b'.',
+        Fam::Dt => c.is_ascii_digit() || c == b'-' || c == b':' || c == b'.',
+    };
+    let n = rest
+        .iter()
+        .enumerate()
+        .take_while(|&(i, &c)| allowed(i, c))
+        .count();
+    let body = &lex.remainder()[..n];
+    let value = match fam {
+        Fam::Dur => literal::duration(body).map(|v| TimeValue::Duration(v, long)),
+        Fam::Date => literal::date(body).map(|v| TimeValue::Date(v, long)),
+        Fam::Tod => literal::time_of_day(body).map(|v| TimeValue::TimeOfDay(v, long)),
+        Fam::Dt => literal::date_and_time(body).map(|v| TimeValue::DateAndTime(v, long)),
+    };
+    lex.bump(n);
+    value.map(Some).map_err(LexError::BadLiteral)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn toks(src: &str) -> Vec<Tok> {
+        lex(src).0.into_iter().map(|t| t.tok).collect()
+    }
+
+    #[test]
+    fn operators_and_signless_numbers() {
+        use Tok::*;
+        assert_eq!(
+            toks("a-1**2<=b<>c>=d&e=>f"),
+            vec![
+                Ident,
+                Minus,
+                Int(1),
+                Power,
+                Int(2),
+                Le,
+                Ident,
+                Ne,
+                Ident,
+                Ge,
+                Ident,
+                Amp,
+                Ident,
+                Arrow,
+                Ident,
+                Eof
+            ]
+        );
+        assert_eq!(toks("1..5"), vec![Int(1), DotDot, Int(5), Eof]);
+        assert_eq!(toks("16#FF 2.5e3"), vec![Int(255), Real(2500.0), Eof]);
+    }
+
+    #[test]
+    fn keywords_are_case_insensitive_and_comments_nest() {
+        assert_eq!(
+            toks("if (* a (* b *) *) Then // x\n end_IF {attribute 'x'}"),
+            vec![
+                Tok::Kw(Kw::If),
+                Tok::Kw(Kw::Then),
+                Tok::Kw(Kw::EndIf),
+                Tok::Eof
+            ]
+        );
+        let (_, p) = lex("x (* open");
+        assert!(matches!(p[0], Problem::UnterminatedComment(_)));
+    }
+
+    #[test]
+    fn literals() {
+        use Tok::*;
+        let s = literal::NS_PER_S;
+        assert_eq!(
+            toks("T#1s500ms INT#5 'a$'b'"),
+            vec![
+                Time(TimeValue::Duration(s + s / 2, false)),
+                TypePrefix,
+                Int(5),
+                Str(false, "a'b".into()),
+                Eof
+            ]
+        );
+        let (t, p) = lex("2#102 ?");
+        assert_eq!(t[0].tok, Error);
+        assert!(matches!(p[0], Problem::BadLiteral(..)));
+        assert!(matches!(p[1], Problem::UnexpectedChar(_)));
+    }
+}

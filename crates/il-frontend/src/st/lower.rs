@@ -1,0 +1,1160 @@
+//! ST statements and expressions to IL instructions.
+//!
+//! Input: [`super::ast`] statements or expressions of one POU, the POU's declarations and the
+//! program's [`Declarations`]. Output: `Vec<IlStmt>` and the VAR_TEMP temporaries they use.
+//! Invariants:
+//! - an expression is lowered where the current result (CR) is free: its code starts with a load (or
+//!   with the code of temporaries, then a load), and leaves the value in the CR; a right operand that
+//!   is not a plain operand becomes a deferred operator `ADD( ... )`, whose nested list has its own CR;
+//!   call arguments and array indices that are not plain operands are computed first into typed
+//!   temporaries `_ST_T<n>` (IEC evaluates both sides of AND/OR: no short-circuit);
+//! - control flow becomes `JMP`/`JMPC`/`JMPCN` to labels `_ST_<WHAT><n>` unique in the POU;
+//! - every instruction carries the span of the ST construct it comes from;
+//! - a statement whose text had a syntax error (already reported) produces no code.
+
+use super::ast::*;
+use super::infer::{named, Env, Ty};
+use super::types::Declarations;
+use crate::ast::{
+    self as il, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind, Instruction, Literal,
+    LiteralKind, Op, Operand, Pou, PouKind, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
+};
+use crate::sema::stdlib::{self, ParamTy};
+use crate::Span;
+use diagnostics::{code, Diagnostic, Diagnostics};
+use std::collections::HashMap;
+
+/// Labels of the innermost loop, for EXIT and CONTINUE.
+struct LoopLabels {
+    exit: Ident,
+    cont: Ident,
+}
+
+/// The lowering state of one POU: shared by every ST snippet lowered into that POU, so labels and
+/// temporaries stay unique.
+pub struct PouLowering<'d> {
+    decls: &'d Declarations,
+    pou: Ident,
+    kind: PouKind,
+    ret: Option<TypeRef>,
+    vars: HashMap<String, TypeRef>,
+    temps: Vec<VarDecl>,
+    next_label: u32,
+    loops: Vec<LoopLabels>,
+    /// Set when an expression contained a syntax error (reported by the parser).
+    poisoned: bool,
+}
+
+fn instr(kind: InstrKind, span: Span) -> IlStmt {
+    IlStmt::Instr(Instruction { kind, span })
+}
+
+fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt {
+    instr(
+        InstrKind::Simple {
+            op,
+            negate,
+            operand,
+        },
+        span,
+    )
+}
+
+fn ld(o: Operand, span: Span) -> IlStmt {
+    simple(Op::Ld, false, Some(o), span)
+}
+
+fn jump(cond: Condition, label: &Ident, span: Span) -> IlStmt {
+    instr(
+        InstrKind::Jump {
+            cond,
+            label: label.clone(),
+        },
+        span,
+    )
+}
+
+fn int_lit(v: i128, span: Span) -> Operand {
+    Operand::Literal(Literal {
+        kind: LiteralKind::Int(v),
+        type_prefix: None,
+        span,
+    })
+}
+
+fn var_operand(name: &Ident) -> Operand {
+    Operand::Var(VarRef {
+        base: name.clone(),
+        accessors: Vec::new(),
+        span: name.span,
+    })
+}
+
+fn binop(op: BinaryOp) -> Option<Op> {
+    Some(match op {
+        BinaryOp::Or => Op::Or,
+        BinaryOp::Xor => Op::Xor,
+        BinaryOp::And => Op::And,
+        BinaryOp::Eq => Op::Eq,
+        BinaryOp::Ne => Op::Ne,
+        BinaryOp::Lt => Op::Lt,
+        BinaryOp::Gt => Op::Gt,
+        BinaryOp::Le => Op::Le,
+        BinaryOp::Ge => Op::Ge,
+        BinaryOp::Add => Op::Add,
+        BinaryOp::Sub => Op::Sub,
+        BinaryOp::Mul => Op::Mul,
+        BinaryOp::Div => Op::Div,
+        BinaryOp::Mod => Op::Mod,
+        BinaryOp::Power => return None,
+    })
+}
+
+/// How a call in ST resolves.
+enum Callee {
+    /// A user FUNCTION with its parameters (name, kind, type).
+    UserFunction(Vec<(String, VarKind, TypeRef)>),
+    Standard(&'static stdlib::StdFunction),
+    /// Conversions, time arithmetic, unknown names: called as written, sema checks.
+    Other,
+}
+
+impl<'d> PouLowering<'d> {
+    pub fn new(decls: &'d Declarations, pou: &Pou) -> Self {
+        let mut vars = HashMap::new();
+        for b in &pou.var_blocks {
+            for v in &b.vars {
+                vars.insert(v.name.key(), v.ty.clone());
+            }
+        }
+        PouLowering {
+            decls,
+            pou: pou.name.clone(),
+            kind: pou.kind,
+            ret: pou.return_type.clone(),
+            vars,
+            temps: Vec::new(),
+            next_label: 0,
+            loops: Vec::new(),
+            poisoned: false,
+        }
+    }
+
+    /// Makes a variable the POU will have (but `pou.var_blocks` did not list when [`Self::new`] ran)
+    /// visible to the lowering, e.g. SFC step flags.
+    pub fn declare(&mut self, name: &str, ty: TypeRef) {
+        self.vars.insert(name.to_ascii_uppercase(), ty);
+    }
+
+    /// A label no other snippet of this POU uses: `_ST_<WHAT><n>`.
+    pub fn fresh_label(&mut self, what: &str, span: Span) -> Ident {
+        self.next_label += 1;
+        Ident::new(format!("_ST_{what}{}", self.next_label), span)
+    }
+
+    /// Lowers a statement list.
+    pub fn statements(&mut self, stmts: &[Stmt], diags: &mut Diagnostics) -> Vec<IlStmt> {
+        let mut out = Vec::new();
+        self.stmt_list(stmts, &mut out, diags);
+        out
+    }
+
+    /// Lowers an expression: the instructions leave its value in the current result.
+    pub fn expression(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
+        let mut out = Vec::new();
+        self.poisoned = false;
+        self.value(e, &mut out, diags);
+        out
+    }
+
+    /// Lowers a condition (a BOOL expression): the instructions leave it in the current result.
+    /// A condition whose type is known and not BOOL is reported (E3105).
+    pub fn condition(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
+        self.check_bool(e, "condition", diags);
+        self.expression(e, diags)
+    }
+
+    /// The temporaries declared so far.
+    pub fn temporaries(&self) -> &[VarDecl] {
+        &self.temps
+    }
+
+    /// The `VAR_TEMP` block holding the temporaries (none when no temporary was needed).
+    pub fn finish(self, span: Span) -> Option<VarBlock> {
+        (!self.temps.is_empty()).then(|| VarBlock {
+            kind: VarKind::Temp,
+            constant: false,
+            retain: false,
+            vars: self.temps,
+            span,
+        })
+    }
+
+    // ------------------------------------------------------------ helpers
+
+    fn env(&self) -> Env<'_> {
+        Env {
+            decls: self.decls,
+            vars: &self.vars,
+            pou_name: &self.pou,
+            pou_kind: self.kind,
+            pou_ret: self.ret.as_ref(),
+        }
+    }
+
+    fn ty(&self, e: &Expr) -> Ty {
+        self.env().expr(e)
+    }
+
+    /// A new temporary of type `ty`, declared in the POU's VAR_TEMP block.
+    fn temp(&mut self, ty: TypeRef, span: Span) -> Ident {
+        let name = Ident::new(format!("_ST_T{}", self.temps.len() + 1), span);
+        self.temps.push(VarDecl::new(name.clone(), ty, span));
+        self.vars
+            .insert(name.key(), self.temps[self.temps.len() - 1].ty.clone());
+        name
+    }
+
+    /// The type to declare a temporary holding `e`: its own type, else the context's `hint`,
+    /// else DINT / LREAL for untyped literals.
+    fn temp_type(&self, e: &Expr, hint: Option<&TypeRef>) -> TypeRef {
+        match (self.ty(e), hint) {
+            (Ty::Known(t), _) => t,
+            (_, Some(h)) => h.clone(),
+            (Ty::RealLit, None) => named("LREAL", e.span),
+            _ => named("DINT", e.span),
+        }
+    }
+
+    fn check_bool(&self, e: &Expr, what: &str, diags: &mut Diagnostics) {
+        let env = self.env();
+        if let Ty::Known(t) = env.expr(e) {
+            let is_bool = env
+                .elementary(&t)
+                .is_some_and(|x| x == crate::sema::model::Elementary::Bool);
+            if !is_bool && env.elementary(&t).is_some() {
+                diags.push(
+                    Diagnostic::error(
+                        code::E3105,
+                        format!(
+                            "the {what} must be BOOL, but this expression is {}",
+                            type_text(&t)
+                        ),
+                    )
+                    .at(e.span)
+                    .with_primary_label("not a BOOL")
+                    .with_hint("compare the value, e.g. `x <> 0`"),
+                );
+            }
+        }
+    }
+
+    // ------------------------------------------------------------ statements
+
+    fn stmt_list(&mut self, stmts: &[Stmt], out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        for s in stmts {
+            self.stmt(s, out, diags);
+        }
+    }
+
+    fn stmt(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        let span = s.span;
+        match &s.kind {
+            StmtKind::Empty => {}
+            StmtKind::Assign { target, value } => {
+                self.poisoned = false;
+                let mut code = Vec::new();
+                let place = self.place_operand(target, &mut code, diags);
+                self.value(value, &mut code, diags);
+                if let (Some(p), false) = (place, self.poisoned) {
+                    code.push(simple(Op::St, false, Some(p), span));
+                    out.extend(code);
+                }
+            }
+            StmtKind::Call { callee, args } => {
+                self.poisoned = false;
+                let mut code = Vec::new();
+                self.call_statement(callee, args, span, &mut code, diags);
+                if !self.poisoned {
+                    out.extend(code);
+                }
+            }
+            StmtKind::If {
+                branches,
+                else_body,
+            } => {
+                let end = self.fresh_label("END_IF", span);
+                for (k, b) in branches.iter().enumerate() {
+                    let last = k + 1 == branches.len() && else_body.is_none();
+                    let next = if last {
+                        end.clone()
+                    } else {
+                        self.fresh_label("ELSE", b.span)
+                    };
+                    self.check_bool(&b.cond, "IF condition", diags);
+                    self.poisoned = false;
+                    self.value(&b.cond, out, diags);
+                    out.push(jump(Condition::IfFalse, &next, b.cond.span));
+                    self.stmt_list(&b.body, out, diags);
+                    if !last {
+                        out.push(jump(Condition::Always, &end, b.span));
+                        out.push(IlStmt::Label(next));
+                    }
+                }
+                if let Some(e) = else_body {
+                    self.stmt_list(e, out, diags);
+                }
+                out.push(IlStmt::Label(end));
+            }
+            StmtKind::Case {
+                selector,
+                arms,
+                else_body,
+            } => self.case(selector, arms, else_body.as_deref(), span, out, diags),
+            StmtKind::For {
+                control,
+                from,
+                to,
+                by,
+                body,
+            } => self.for_loop(control, from, to, by.as_ref(), body, span, out, diags),
+            StmtKind::While { cond, body } => {
+                let test = self.fresh_label("WHILE", span);
+                let end = self.fresh_label("END_WHILE", span);
+                out.push(IlStmt::Label(test.clone()));
+                self.check_bool(cond, "WHILE condition", diags);
+                self.poisoned = false;
+                self.value(cond, out, diags);
+                out.push(jump(Condition::IfFalse, &end, cond.span));
+                self.loops.push(LoopLabels {
+                    exit: end.clone(),
+                    cont: test.clone(),
+                });
+                self.stmt_list(body, out, diags);
+                self.loops.pop();
+                out.push(jump(Condition::Always, &test, span));
+                out.push(IlStmt::Label(end));
+            }
+            StmtKind::Repeat { body, until } => {
+                let top = self.fresh_label("REPEAT", span);
+                let cont = self.fresh_label("UNTIL", until.span);
+                let end = self.fresh_label("END_REPEAT", span);
+                out.push(IlStmt::Label(top.clone()));
+                self.loops.push(LoopLabels {
+                    exit: end.clone(),
+                    cont: cont.clone(),
+                });
+                self.stmt_list(body, out, diags);
+                self.loops.pop();
+                out.push(IlStmt::Label(cont));
+                self.check_bool(until, "UNTIL condition", diags);
+                self.poisoned = false;
+                self.value(until, out, diags);
+                out.push(jump(Condition::IfFalse, &top, until.span));
+                out.push(IlStmt::Label(end));
+            }
+            StmtKind::Exit | StmtKind::Continue => {
+                let exit = matches!(s.kind, StmtKind::Exit);
+                match self.loops.last() {
+                    Some(l) => {
+                        let target = if exit { &l.exit } else { &l.cont };
+                        out.push(jump(Condition::Always, target, span));
+                    }
+                    None => diags.push(
+                        Diagnostic::error(
+                            code::E3101,
+                            format!("{} outside a loop", if exit { "EXIT" } else { "CONTINUE" }),
+                        )
+                        .at(span)
+                        .with_primary_label("not inside FOR, WHILE or REPEAT")
+                        .with_hint("use RETURN to leave the POU, or an IF to skip statements"),
+                    ),
+                }
+            }
+            StmtKind::Return => out.push(instr(
+                InstrKind::Return {
+                    cond: Condition::Always,
+                },
+                span,
+            )),
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn case(
+        &mut self,
+        selector: &Expr,
+        arms: &[CaseArm],
+        else_body: Option<&[Stmt]>,
+        span: Span,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        self.poisoned = false;
+        let mut code = Vec::new();
+        let sel = match self.pure_operand(selector) {
+            Some(o) => o,
+            None => {
+                let ty = self.temp_type(selector, None);
+                self.value(selector, &mut code, diags);
+                let t = self.temp(ty, selector.span);
+                code.push(simple(Op::St, false, Some(var_operand(&t)), selector.span));
+                var_operand(&t)
+            }
+        };
+        if self.poisoned {
+            return;
+        }
+        out.extend(code);
+        let end = self.fresh_label("END_CASE", span);
+        let mut targets = Vec::new();
+        for arm in arms {
+            let target = self.fresh_label("CASE", arm.span);
+            for label in &arm.labels {
+                match label {
+                    CaseLabel::Value(v) => {
+                        let Some(v) = self.case_value(v, diags) else {
+                            continue;
+                        };
+                        out.push(ld(sel.clone(), v.span()));
+                        out.push(simple(Op::Eq, false, Some(v.clone()), v.span()));
+                    }
+                    CaseLabel::Range(lo, hi) => {
+                        let (Some(lo), Some(hi)) =
+                            (self.case_value(lo, diags), self.case_value(hi, diags))
+                        else {
+                            continue;
+                        };
+                        let at = lo.span().to(hi.span());
+                        out.push(ld(sel.clone(), at));
+                        out.push(simple(Op::Ge, false, Some(lo), at));
+                        out.push(instr(
+                            InstrKind::Deferred {
+                                op: Op::And,
+                                negate: false,
+                                operand: Some(sel.clone()),
+                                body: vec![simple(Op::Le, false, Some(hi), at)],
+                                close: at,
+                            },
+                            at,
+                        ));
+                    }
+                }
+                out.push(jump(Condition::IfTrue, &target, arm.span));
+            }
+            targets.push(target);
+        }
+        let else_label = else_body.map(|_| self.fresh_label("CASE_ELSE", span));
+        out.push(jump(
+            Condition::Always,
+            else_label.as_ref().unwrap_or(&end),
+            span,
+        ));
+        for (arm, target) in arms.iter().zip(targets) {
+            out.push(IlStmt::Label(target));
+            self.stmt_list(&arm.body, out, diags);
+            out.push(jump(Condition::Always, &end, arm.span));
+        }
+        if let (Some(l), Some(body)) = (else_label, else_body) {
+            out.push(IlStmt::Label(l));
+            self.stmt_list(body, out, diags);
+        }
+        out.push(IlStmt::Label(end));
+    }
+
+    /// A CASE label: a literal, an enumerated value or a constant (a plain operand).
+    fn case_value(&mut self, e: &Expr, diags: &mut Diagnostics) -> Option<Operand> {
+        if matches!(e.kind, ExprKind::Error) {
+            return None;
+        }
+        let o = self.pure_operand(e);
+        if o.is_none() {
+            diags.push(
+                Diagnostic::error(code::E3104, "a CASE label must be a literal, an enumerated value or a constant")
+                    .at(e.span)
+                    .with_primary_label("computed value")
+                    .with_hint("write the values (`1, 2:`), a range (`3..5:`) or enumerated values (`Color#red:`)"),
+            );
+        }
+        o
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn for_loop(
+        &mut self,
+        control: &Ident,
+        from: &Expr,
+        to: &Expr,
+        by: Option<&Expr>,
+        body: &[Stmt],
+        span: Span,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        let env = self.env();
+        let cty = env.var_type(control);
+        if let Some(t) = &cty {
+            let int = env.elementary(t).is_some_and(|e| e.is_integer());
+            if !int {
+                diags.push(
+                    Diagnostic::error(
+                        code::E3100,
+                        format!(
+                            "the FOR control variable `{}` must be an integer variable, but it is {}",
+                            control.name,
+                            type_text(t)
+                        ),
+                    )
+                    .at(control.span)
+                    .with_primary_label("control variable")
+                    .with_hint("declare it as INT, DINT, SINT, LINT or an unsigned integer"),
+                );
+                return;
+            }
+        }
+        let cty = cty.unwrap_or_else(|| named("DINT", control.span));
+        self.poisoned = false;
+        let mut code = Vec::new();
+        let i = var_operand(control);
+        // Bounds are evaluated once, before the first test.
+        self.value(from, &mut code, diags);
+        code.push(simple(Op::St, false, Some(i.clone()), from.span));
+        let limit = match literal_value(to) {
+            Some(_) => self.pure_operand(to).unwrap_or_else(|| int_lit(0, to.span)),
+            None => {
+                self.value(to, &mut code, diags);
+                let t = self.temp(cty.clone(), to.span);
+                code.push(simple(Op::St, false, Some(var_operand(&t)), to.span));
+                var_operand(&t)
+            }
+        };
+        let (step, sign) = match by {
+            None => (int_lit(1, span), Some(1)),
+            Some(b) => match literal_value(b) {
+                Some(v) => {
+                    if v == 0 {
+                        diags.push(
+                            Diagnostic::error(
+                                code::E3100,
+                                "FOR loop step is 0: the loop would never end",
+                            )
+                            .at(b.span)
+                            .with_primary_label("BY 0")
+                            .with_hint(
+                                "use a positive step to count up, a negative one to count down",
+                            ),
+                        );
+                        return;
+                    }
+                    (
+                        self.pure_operand(b).unwrap_or_else(|| int_lit(1, b.span)),
+                        Some(v.signum()),
+                    )
+                }
+                None => {
+                    self.value(b, &mut code, diags);
+                    let t = self.temp(cty.clone(), b.span);
+                    code.push(simple(Op::St, false, Some(var_operand(&t)), b.span));
+                    (var_operand(&t), None)
+                }
+            },
+        };
+        if self.poisoned {
+            return;
+        }
+        out.extend(code);
+        let test = self.fresh_label("FOR", span);
+        let cont = self.fresh_label("NEXT", span);
+        let end = self.fresh_label("END_FOR", span);
+        out.push(IlStmt::Label(test.clone()));
+        let at = to.span;
+        match sign {
+            Some(s) => {
+                out.push(ld(i.clone(), at));
+                out.push(simple(
+                    if s > 0 { Op::Gt } else { Op::Lt },
+                    false,
+                    Some(limit.clone()),
+                    at,
+                ));
+            }
+            None => {
+                // (step >= 0 AND i > limit) OR (step < 0 AND i < limit)
+                out.push(ld(step.clone(), at));
+                out.push(simple(Op::Ge, false, Some(int_lit(0, at)), at));
+                out.push(instr(
+                    InstrKind::Deferred {
+                        op: Op::And,
+                        negate: false,
+                        operand: Some(i.clone()),
+                        body: vec![simple(Op::Gt, false, Some(limit.clone()), at)],
+                        close: at,
+                    },
+                    at,
+                ));
+                out.push(instr(
+                    InstrKind::Deferred {
+                        op: Op::Or,
+                        negate: false,
+                        operand: Some(step.clone()),
+                        body: vec![
+                            simple(Op::Lt, false, Some(int_lit(0, at)), at),
+                            instr(
+                                InstrKind::Deferred {
+                                    op: Op::And,
+                                    negate: false,
+                                    operand: Some(i.clone()),
+                                    body: vec![simple(Op::Lt, false, Some(limit.clone()), at)],
+                                    close: at,
+                                },
+                                at,
+                            ),
+                        ],
+                        close: at,
+                    },
+                    at,
+                ));
+            }
+        }
+        out.push(jump(Condition::IfTrue, &end, at));
+        self.loops.push(LoopLabels {
+            exit: end.clone(),
+            cont: cont.clone(),
+        });
+        self.stmt_list(body, out, diags);
+        self.loops.pop();
+        out.push(IlStmt::Label(cont));
+        let bspan = by.map_or(span, |b| b.span);
+        out.push(ld(i.clone(), bspan));
+        out.push(simple(Op::Add, false, Some(step), bspan));
+        out.push(simple(Op::St, false, Some(i), bspan));
+        out.push(jump(Condition::Always, &test, span));
+        out.push(IlStmt::Label(end));
+    }
+
+    fn call_statement(
+        &mut self,
+        callee: &Place,
+        args: &[Arg],
+        span: Span,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        // A plain name that is not a variable but a function: a function call whose result is dropped.
+        if let Some(name) = callee.name() {
+            if self.env().var_type(name).is_none() {
+                let e = Expr {
+                    kind: ExprKind::Call {
+                        name: name.clone(),
+                        args: args.to_vec(),
+                    },
+                    span,
+                };
+                self.value(&e, out, diags);
+                return;
+            }
+        }
+        let Some(Operand::Var(instance)) = self.place_operand(callee, out, diags) else {
+            diags.push(
+                Diagnostic::error(
+                    code::E3103,
+                    "only a function block instance or a function can be called",
+                )
+                .at(callee.span)
+                .with_primary_label("not callable"),
+            );
+            return;
+        };
+        let fb_ty = self.env().place_type(callee);
+        let args = self.call_args(
+            args,
+            |env, name, _| {
+                let t = fb_ty.as_ref()?;
+                env.member(t, name)
+            },
+            out,
+            diags,
+        );
+        out.push(instr(
+            InstrKind::Call {
+                cond: Condition::Always,
+                instance,
+                args,
+            },
+            span,
+        ));
+    }
+
+    /// Arguments of a call as IL operands (inputs that are not plain operands go through temporaries,
+    /// computed into `out` first). `param_ty` gives the declared type of a named input.
+    fn call_args(
+        &mut self,
+        args: &[Arg],
+        param_ty: impl Fn(&Env, &Ident, usize) -> Option<TypeRef>,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> CallArgs {
+        if args.is_empty() {
+            return CallArgs::None;
+        }
+        let formal = args.iter().any(|a| a.name.is_some());
+        if formal && args.iter().any(|a| a.name.is_none()) {
+            let bad = args
+                .iter()
+                .find(|a| a.name.is_none())
+                .map_or(args[0].span, |a| a.span);
+            diags.push(
+                Diagnostic::error(
+                    code::E3106,
+                    "formal and non-formal arguments are mixed in one call",
+                )
+                .at(bad)
+                .with_primary_label("argument without a name")
+                .with_hint("name every argument (`IN := x, PT := T#1s`) or none (`x, T#1s`)"),
+            );
+            self.poisoned = true;
+            return CallArgs::None;
+        }
+        if !formal {
+            let mut ops = Vec::new();
+            for (k, a) in args.iter().enumerate() {
+                let hint = param_ty(&self.env(), &Ident::new("", a.span), k);
+                ops.push(self.operand(&a.value, hint.as_ref(), out, diags));
+            }
+            return CallArgs::NonFormal(ops);
+        }
+        let mut fargs = Vec::new();
+        for (k, a) in args.iter().enumerate() {
+            let Some(name) = &a.name else { continue };
+            let value = match a.dir {
+                ArgDir::Input => {
+                    let hint = param_ty(&self.env(), name, k);
+                    self.operand(&a.value, hint.as_ref(), out, diags)
+                }
+                ArgDir::Output { .. } => match &a.value.kind {
+                    ExprKind::Place(p) => match self.place_operand(p, out, diags) {
+                        Some(o) => o,
+                        None => continue,
+                    },
+                    // `Q =>` with nothing after it: the output is not read.
+                    _ => continue,
+                },
+            };
+            fargs.push(FormalArg {
+                name: name.clone(),
+                dir: match a.dir {
+                    ArgDir::Input => il::ArgDir::Input,
+                    ArgDir::Output { negated } => il::ArgDir::Output { negated },
+                },
+                value,
+                span: a.span,
+            });
+        }
+        CallArgs::Formal(fargs)
+    }
+
+    // ------------------------------------------------------------ expressions
+
+    /// A plain IL operand for `e` if it needs no code: a literal, an enumerated value, an address, or
+    /// a variable whose indices are themselves plain operands.
+    fn pure_operand(&self, e: &Expr) -> Option<Operand> {
+        match &e.kind {
+            ExprKind::Literal(l) => Some(Operand::Literal(l.clone())),
+            ExprKind::EnumValue { type_name, value } => Some(Operand::EnumValue {
+                type_name: type_name.clone(),
+                value: value.clone(),
+                span: e.span,
+            }),
+            ExprKind::Place(p) => self.pure_place(p),
+            _ => None,
+        }
+    }
+
+    fn pure_place(&self, p: &Place) -> Option<Operand> {
+        let base = match &p.base {
+            PlaceBase::Address(a) if p.accessors.is_empty() => {
+                return Some(Operand::Address(a.clone()))
+            }
+            PlaceBase::Address(_) => return None,
+            PlaceBase::Name(n) => n.clone(),
+        };
+        let mut accessors = Vec::new();
+        for a in &p.accessors {
+            accessors.push(match a {
+                Accessor::Field(f) => il::Accessor::Field(f.clone()),
+                Accessor::Index(ix) => il::Accessor::Index(
+                    ix.iter()
+                        .map(|e| self.pure_operand(e))
+                        .collect::<Option<Vec<_>>>()?,
+                ),
+            });
+        }
+        Some(Operand::Var(VarRef {
+            base,
+            accessors,
+            span: p.span,
+        }))
+    }
+
+    /// The operand for a place; index expressions that are not plain operands are computed into
+    /// temporaries first (code goes to `out`, where the current result must be free).
+    fn place_operand(
+        &mut self,
+        p: &Place,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> Option<Operand> {
+        if let Some(o) = self.pure_place(p) {
+            return Some(o);
+        }
+        let base = match &p.base {
+            PlaceBase::Name(n) => n.clone(),
+            PlaceBase::Address(a) => {
+                diags.push(
+                    Diagnostic::error(code::E3100, "a direct address has no fields or elements")
+                        .at(a.span)
+                        .with_primary_label("direct address"),
+                );
+                self.poisoned = true;
+                return None;
+            }
+        };
+        let mut accessors = Vec::new();
+        for a in &p.accessors {
+            accessors.push(match a {
+                Accessor::Field(f) => il::Accessor::Field(f.clone()),
+                Accessor::Index(ix) => {
+                    let mut ops = Vec::new();
+                    for e in ix {
+                        ops.push(self.operand(e, Some(&named("DINT", e.span)), out, diags));
+                    }
+                    il::Accessor::Index(ops)
+                }
+            });
+        }
+        Some(Operand::Var(VarRef {
+            base,
+            accessors,
+            span: p.span,
+        }))
+    }
+
+    /// An operand holding the value of `e`: the plain operand, or a temporary computed into `out`
+    /// (where the current result must be free). `hint` types a temporary for an untyped literal.
+    fn operand(
+        &mut self,
+        e: &Expr,
+        hint: Option<&TypeRef>,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> Operand {
+        if let ExprKind::Place(p) = &e.kind {
+            if let Some(o) = self.place_operand(p, out, diags) {
+                return o;
+            }
+        }
+        if let Some(o) = self.pure_operand(e) {
+            return o;
+        }
+        let ty = self.temp_type(e, hint);
+        self.value(e, out, diags);
+        let t = self.temp(ty, e.span);
+        out.push(simple(Op::St, false, Some(var_operand(&t)), e.span));
+        var_operand(&t)
+    }
+
+    /// Code that leaves the value of `e` in the current result; `out` must be at a point where the
+    /// current result is free.
+    fn value(&mut self, e: &Expr, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        match &e.kind {
+            ExprKind::Error => {
+                self.poisoned = true;
+            }
+            ExprKind::Literal(_) | ExprKind::EnumValue { .. } | ExprKind::Place(_) => {
+                let o = self.operand(e, None, out, diags);
+                out.push(ld(o, e.span));
+            }
+            ExprKind::Unary { op, operand } => match op {
+                UnaryOp::Plus => self.value(operand, out, diags),
+                UnaryOp::Not => {
+                    if let Some(o) = self.pure_operand(operand) {
+                        out.push(simple(Op::Ld, true, Some(o), e.span));
+                    } else {
+                        self.value(operand, out, diags);
+                        out.push(simple(Op::Not, false, None, e.span));
+                    }
+                }
+                UnaryOp::Neg => {
+                    self.value(operand, out, diags);
+                    let real = match self.ty(operand) {
+                        Ty::RealLit => true,
+                        Ty::Known(t) => self.env().elementary(&t).is_some_and(|x| x.is_real()),
+                        _ => false,
+                    };
+                    let minus_one = Operand::Literal(Literal {
+                        kind: if real {
+                            LiteralKind::Real(-1.0)
+                        } else {
+                            LiteralKind::Int(-1)
+                        },
+                        type_prefix: None,
+                        span: e.span,
+                    });
+                    out.push(simple(Op::Mul, false, Some(minus_one), e.span));
+                }
+            },
+            ExprKind::Binary { op, left, right } => match binop(*op) {
+                Some(il_op) => {
+                    self.value(left, out, diags);
+                    self.apply(il_op, right, e.span, out, diags);
+                }
+                None => {
+                    // a ** b: EXPT with the current result as IN1.
+                    let exp = self.operand(right, None, out, diags);
+                    self.value(left, out, diags);
+                    out.push(instr(
+                        InstrKind::FunctionCall {
+                            name: Ident::new("EXPT", e.span),
+                            args: CallArgs::NonFormal(vec![exp]),
+                        },
+                        e.span,
+                    ));
+                }
+            },
+            ExprKind::Call { name, args } => self.function_call(name, args, e.span, out, diags),
+        }
+    }
+
+    /// `OP right` applied to the current result: a plain operand directly, anything else as a
+    /// deferred operator whose nested list computes `right`.
+    fn apply(
+        &mut self,
+        op: Op,
+        right: &Expr,
+        span: Span,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        if let Some(o) = self.pure_operand(right) {
+            out.push(simple(op, false, Some(o), span));
+            return;
+        }
+        let mut body = Vec::new();
+        self.value(right, &mut body, diags);
+        // `ADD( x` ...: the nested list's first load goes on the opening line.
+        let operand = match body.first() {
+            Some(IlStmt::Instr(Instruction {
+                kind:
+                    InstrKind::Simple {
+                        op: Op::Ld,
+                        negate: false,
+                        operand: Some(_),
+                    },
+                ..
+            })) => match body.remove(0) {
+                IlStmt::Instr(Instruction {
+                    kind: InstrKind::Simple { operand, .. },
+                    ..
+                }) => operand,
+                _ => None,
+            },
+            _ => None,
+        };
+        out.push(instr(
+            InstrKind::Deferred {
+                op,
+                negate: false,
+                operand,
+                body,
+                close: right.span,
+            },
+            span,
+        ));
+    }
+
+    fn resolve_callee(&self, name: &Ident) -> Callee {
+        if let Some(p) = self.decls.pou(&name.name) {
+            if p.kind == PouKind::Function {
+                return Callee::UserFunction(p.params().cloned().collect());
+            }
+        }
+        match stdlib::function(&name.name) {
+            Some(f) => Callee::Standard(f),
+            None => Callee::Other,
+        }
+    }
+
+    fn function_call(
+        &mut self,
+        name: &Ident,
+        args: &[Arg],
+        span: Span,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        if let Some(t) = self.env().var_type(name) {
+            let fb = self.env().is_fb_type(&t);
+            diags.push(
+                Diagnostic::error(
+                    code::E3103,
+                    if fb {
+                        format!("function block instance `{}` cannot be called inside an expression", name.name)
+                    } else {
+                        format!("`{}` is a variable, not a function", name.name)
+                    },
+                )
+                .at(span)
+                .with_primary_label("called here")
+                .with_hint(if fb {
+                    "call the instance as a statement (`inst(...);`), then read its outputs (`inst.Q`)"
+                } else {
+                    "remove the parentheses to read the variable"
+                }),
+            );
+            self.poisoned = true;
+            return;
+        }
+        let callee = self.resolve_callee(name);
+        let has_output = args.iter().any(|a| matches!(a.dir, ArgDir::Output { .. }));
+        let ordered = if has_output {
+            None
+        } else {
+            positional(&callee, args)
+        };
+        let hint_of =
+            |env: &Env, callee: &Callee, k: usize, name: Option<&Ident>, args: &[&Arg]| {
+                param_hint(env, callee, k, name, args)
+            };
+        match ordered {
+            Some(list) if !list.is_empty() => {
+                let mut ops = Vec::new();
+                for k in 1..list.len() {
+                    let hint = hint_of(&self.env(), &callee, k, None, &list);
+                    ops.push(self.operand(&list[k].value, hint.as_ref(), out, diags));
+                }
+                self.value(&list[0].value, out, diags);
+                out.push(instr(
+                    InstrKind::FunctionCall {
+                        name: name.clone(),
+                        args: if ops.is_empty() {
+                            CallArgs::None
+                        } else {
+                            CallArgs::NonFormal(ops)
+                        },
+                    },
+                    span,
+                ));
+            }
+            _ => {
+                let all: Vec<&Arg> = args.iter().collect();
+                let callee2 = self.resolve_callee(name);
+                let args = self.call_args(
+                    args,
+                    |env, n, k| hint_of(env, &callee2, k, Some(n), &all),
+                    out,
+                    diags,
+                );
+                out.push(instr(
+                    InstrKind::FunctionCall {
+                        name: name.clone(),
+                        args,
+                    },
+                    span,
+                ));
+            }
+        }
+    }
+}
+
+/// The arguments in parameter order when the call can use the IL operator form: all non-formal, or
+/// formal inputs of a known signature, every input given (then the first goes into the current result).
+fn positional<'a>(callee: &Callee, args: &'a [Arg]) -> Option<Vec<&'a Arg>> {
+    if args.iter().all(|a| a.name.is_none()) {
+        return Some(args.iter().collect());
+    }
+    let names: Vec<String> = match callee {
+        Callee::Standard(f) if !f.extensible => {
+            f.params.iter().map(|p| p.name.to_string()).collect()
+        }
+        Callee::UserFunction(ps) => ps
+            .iter()
+            .filter(|p| p.1 == VarKind::Input)
+            .map(|p| p.0.clone())
+            .collect(),
+        _ => return None,
+    };
+    let mut v = Vec::new();
+    for n in &names {
+        v.push(
+            args.iter()
+                .find(|a| a.name.as_ref().is_some_and(|x| x.is(n)))?,
+        );
+    }
+    (v.len() == args.len()).then_some(v)
+}
+
+/// The type a temporary for argument `k` (or the named input) of a call should get.
+fn param_hint(
+    env: &Env,
+    callee: &Callee,
+    k: usize,
+    name: Option<&Ident>,
+    args: &[&Arg],
+) -> Option<TypeRef> {
+    match callee {
+        Callee::UserFunction(ps) => match name {
+            Some(n) => ps.iter().find(|p| n.is(&p.0)).map(|p| p.2.clone()),
+            None => ps
+                .iter()
+                .filter(|p| p.1 == VarKind::Input)
+                .nth(k)
+                .map(|p| p.2.clone()),
+        },
+        Callee::Standard(f) => {
+            let idx = match name {
+                Some(n) => f.param_index(&n.name)?,
+                None => k,
+            };
+            match f.param_ty(idx)? {
+                ParamTy::Fixed(e) => Some(named(e.name(), args[0].span)),
+                ParamTy::Own(_) => None,
+                ParamTy::T(_) => {
+                    // The generic type: the first typed argument among the T inputs.
+                    args.iter().enumerate().find_map(|(i, a)| {
+                        let ai = match &a.name {
+                            Some(n) => f.param_index(&n.name)?,
+                            None => i,
+                        };
+                        matches!(f.param_ty(ai), Some(ParamTy::T(_)))
+                            .then(|| env.expr(&a.value).known().cloned())
+                            .flatten()
+                    })
+                }
+            }
+        }
+        Callee::Other => None,
+    }
+}
+
+/// The integer value of a literal (also `-5`), for FOR bounds and steps.
+fn literal_value(e: &Expr) -> Option<i128> {
+    match &e.kind {
+        ExprKind::Literal(Literal {
+            kind: LiteralKind::Int(v),
+            ..
+        }) => Some(*v),
+        _ => None,
+    }
+}
+
+/// How a type reads in a message.
+fn type_text(t: &TypeRef) -> String {
+    match t {
+        TypeRef::Named(n) => n.name.clone(),
+        TypeRef::String { wide: false, .. } => "STRING".into(),
+        TypeRef::String { wide: true, .. } => "WSTRING".into(),
+        TypeRef::Array { .. } => "an array".into(),
+        TypeRef::Subrange { base, .. } => format!("a subrange of {}", base.name),
+        TypeRef::Enum { .. } => "an enumeration".into(),
+    }
+}

@@ -1,0 +1,67 @@
+//! Structured Text (IEC 61131-3 ST), compiled through the IL syntax tree.
+//!
+//! Stages: [`lexer`] (logos, case-insensitive keywords, the IL literal decoders) -> [`parser`]
+//! (recursive descent with IEC precedence and statement-level error recovery, codes E0100-E0139) ->
+//! [`ast`] -> [`lower`] (IL instructions with deferred operators, VAR_TEMP temporaries typed by
+//! [`types`], unique labels; codes E3100-E3119) -> the IL tree that IL sema and the C backend read.
+//!
+//! Input: ST text at a byte base in a file (a PLCopen `<ST>` body, an SFC action or transition).
+//! Output: `Vec<IlStmt>` whose instructions carry the spans of the ST constructs they come from, and the
+//! VAR_TEMP declarations the POU must get. Invariants: never panics on any input; one bad statement
+//! gives one diagnostic and the next statements are still read; the lowering of several snippets into
+//! one POU through one [`PouLowering`] gives unique labels and temporaries.
+
+pub mod ast;
+pub mod infer;
+pub mod lexer;
+pub mod lower;
+pub mod parser;
+pub mod types;
+
+pub use lower::PouLowering;
+pub use types::{Declarations, PouInterface};
+
+use crate::ast::{IlStmt, Pou, VarBlock};
+use crate::{FileId, Span};
+use diagnostics::Diagnostics;
+
+/// Parses a statement list (a whole ST body, an SFC action). `base` is the byte offset of `src` in
+/// `file`: every span points into that file. Syntax errors are reported; the statements that could be
+/// read are returned.
+pub fn parse_statements(
+    file: FileId,
+    src: &str,
+    base: usize,
+    diags: &mut Diagnostics,
+) -> Vec<ast::Stmt> {
+    parser::statements(file, src, base, diags)
+}
+
+/// Parses one expression (an SFC transition condition, `:= expr;` forms are not accepted here).
+/// `None` (with a diagnostic) when the text is not an expression.
+pub fn parse_expression(
+    file: FileId,
+    src: &str,
+    base: usize,
+    diags: &mut Diagnostics,
+) -> Option<ast::Expr> {
+    parser::expression(file, src, base, diags)
+}
+
+/// One call does it all for a POU whose body is ST text: parses `src` and lowers it for `pou`.
+/// Returns the IL body and, when temporaries were needed, the `VAR_TEMP` block to push onto
+/// `pou.var_blocks`. `span` is what the synthesised block points at (the body element).
+pub fn compile_body(
+    file: FileId,
+    src: &str,
+    base: usize,
+    decls: &Declarations,
+    pou: &Pou,
+    span: Span,
+    diags: &mut Diagnostics,
+) -> (Vec<IlStmt>, Option<VarBlock>) {
+    let stmts = parse_statements(file, src, base, diags);
+    let mut low = PouLowering::new(decls, pou);
+    let body = low.statements(&stmts, diags);
+    (body, low.finish(span))
+}

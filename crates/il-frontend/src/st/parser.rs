@@ -1,0 +1,1145 @@
+//! The ST parser: tokens in, [`super::ast`] statements or one expression out (recursive descent).
+//!
+//! Input: the text, its file and byte base. Output: the statements that could be read, and
+//! diagnostics E0100-E0139 in ST terms with hints.
+//! Invariants: expressions follow the IEC precedence (edition 2 table 55): `( )`, function call, `**`,
+//! unary `-`/`+`/`NOT`, `* / MOD`, `+ -`, `< > <= >=`, `= <>`, `AND &`, `XOR`, `OR`; binary operators are
+//! left-associative. Recovery: a bad statement is reported once and skipped up to its `;` (or the next
+//! statement or block keyword), so the next statement is still read; a block left open is reported at
+//! its opening keyword. The `;` after `END_IF`, `END_CASE`, `END_FOR`, `END_WHILE`, `END_REPEAT` may be
+//! left out, as CODESYS allows. Every loop consumes a token or returns, so the parser always terminates; the
+//! nesting depth is bounded so hostile input cannot overflow the stack.
+
+use super::ast::*;
+use super::lexer::{lex, Kw, Problem, Tok, Token};
+use crate::ast::{DirectAddress, Ident, Literal, LiteralKind};
+use crate::lexer::TimeValue;
+use crate::{FileId, Span};
+use diagnostics::{code, Code, Diagnostic, Diagnostics};
+
+/// Deeper nesting of blocks or parentheses than this is reported (E0108) instead of recursing.
+const MAX_DEPTH: usize = 200;
+
+pub fn statements(file: FileId, src: &str, base: usize, diags: &mut Diagnostics) -> Vec<Stmt> {
+    let mut p = Parser::new(file, src, base, diags);
+    let mut list = p.statement_list();
+    while !p.at(&Tok::Eof) {
+        // A stray block keyword at the top level (`END_IF` without `IF` ...).
+        let t = p.describe_current();
+        p.error_here(
+            code::E0100,
+            format!("{t} without a matching opening statement"),
+            "remove it, or add the statement that it closes",
+        );
+        p.bump();
+        list.extend(p.statement_list());
+    }
+    list
+}
+
+pub fn expression(file: FileId, src: &str, base: usize, diags: &mut Diagnostics) -> Option<Expr> {
+    let mut p = Parser::new(file, src, base, diags);
+    if p.at(&Tok::Eof) {
+        p.error_here(
+            code::E0107,
+            "expected an expression, found nothing",
+            "write a BOOL expression such as `Level > 10 AND NOT Alarm`",
+        );
+        return None;
+    }
+    let e = p.expr();
+    if p.at(&Tok::Semi) {
+        p.bump();
+    }
+    if !p.at(&Tok::Eof) {
+        let t = p.describe_current();
+        p.error_here(
+            code::E0107,
+            format!("unexpected {t} after the end of the expression"),
+            "an expression alone is expected here (no statements, no `:=`)",
+        );
+        return None;
+    }
+    (!matches!(e.kind, ExprKind::Error)).then_some(e)
+}
+
+struct Parser<'s, 'd> {
+    file: FileId,
+    src: &'s str,
+    base: usize,
+    toks: Vec<Token>,
+    pos: usize,
+    depth: usize,
+    diags: &'d mut Diagnostics,
+}
+
+/// Keywords that end a statement list (the enclosing construct decides whether it is its own).
+fn ends_list(t: &Tok) -> bool {
+    use Kw::*;
+    matches!(
+        t,
+        Tok::Eof | Tok::Kw(EndIf | Elsif | Else | EndCase | EndFor | EndWhile | Until | EndRepeat)
+    )
+}
+
+/// Keywords that start a statement: where recovery stops skipping.
+fn starts_statement(t: &Tok) -> bool {
+    use Kw::*;
+    matches!(
+        t,
+        Tok::Kw(If | Case | For | While | Repeat | Exit | Continue | Return)
+    )
+}
+
+impl<'s, 'd> Parser<'s, 'd> {
+    fn new(file: FileId, src: &'s str, base: usize, diags: &'d mut Diagnostics) -> Self {
+        let (toks, problems) = lex(src);
+        let mut p = Parser {
+            file,
+            src,
+            base,
+            toks,
+            pos: 0,
+            depth: 0,
+            diags,
+        };
+        for pr in problems {
+            p.lex_problem(pr);
+        }
+        p
+    }
+
+    fn lex_problem(&mut self, pr: Problem) {
+        let (code, range, msg, hint) = match pr {
+            Problem::UnexpectedChar(r) => {
+                let c = self.src[r.clone()].chars().next().unwrap_or(' ');
+                (
+                    code::E0101,
+                    r,
+                    format!("`{c}` cannot start anything in Structured Text"),
+                    "remove the character; strings are written between quotes ('text'), comments as (* ... *)".to_string(),
+                )
+            }
+            Problem::UnterminatedComment(r) => (
+                code::E0102,
+                r.start..(r.start + 2).min(self.src.len()),
+                "comment or pragma is never closed".to_string(),
+                "close `(*` with `*)` (comments nest: every `(*` needs its own `*)`) and `{` with `}`".to_string(),
+            ),
+            Problem::UnterminatedString(r) => (
+                code::E0102,
+                r,
+                "string literal is not closed on its line".to_string(),
+                "end the string with the quote it started with; write a quote inside as $' or $\"".to_string(),
+            ),
+            Problem::BadLiteral(r, why) => (
+                code::E0103,
+                r,
+                format!("invalid literal: {why}"),
+                "see the literal forms: 16#FF, 2#1010, 1.5E3, T#1h2m3s, D#2024-01-31, TOD#12:00:00".to_string(),
+            ),
+            Problem::BadEscape(r, why) => (
+                code::E0103,
+                r,
+                format!("invalid escape in string: {why}"),
+                "escapes are $$, $', $\", $L, $N, $P, $R, $T and $ followed by two hex digits".to_string(),
+            ),
+        };
+        let span = self.span(range.start, range.end);
+        self.diags
+            .push(Diagnostic::error(code, msg).at(span).with_hint(hint));
+    }
+
+    // ------------------------------------------------------------ token helpers
+
+    fn span(&self, start: usize, end: usize) -> Span {
+        Span::new(self.file, self.base + start, self.base + end.max(start))
+    }
+    fn cur(&self) -> &Token {
+        &self.toks[self.pos.min(self.toks.len() - 1)]
+    }
+    fn peek(&self) -> &Tok {
+        &self.cur().tok
+    }
+    fn peek_at(&self, n: usize) -> &Tok {
+        &self.toks[(self.pos + n).min(self.toks.len() - 1)].tok
+    }
+    fn at(&self, t: &Tok) -> bool {
+        self.peek() == t
+    }
+    fn at_kw(&self, k: Kw) -> bool {
+        self.at(&Tok::Kw(k))
+    }
+    fn bump(&mut self) -> Token {
+        let t = self.cur().clone();
+        if self.pos < self.toks.len() - 1 {
+            self.pos += 1;
+        }
+        t
+    }
+    fn cur_span(&self) -> Span {
+        let r = &self.cur().range;
+        self.span(r.start, r.end)
+    }
+    /// The end of the previous token (where a missing `;` belongs).
+    fn prev_end(&self) -> usize {
+        if self.pos == 0 {
+            0
+        } else {
+            self.toks[self.pos - 1].range.end
+        }
+    }
+    fn text(&self, t: &Token) -> &'s str {
+        &self.src[t.range.clone()]
+    }
+    fn ident(&self, t: &Token) -> Ident {
+        Ident::new(self.text(t), self.span(t.range.start, t.range.end))
+    }
+    fn describe_current(&self) -> String {
+        let t = self.cur();
+        match &t.tok {
+            Tok::Eof => "end of text".into(),
+            Tok::Ident => format!("name `{}`", self.text(t)),
+            Tok::Kw(k) => format!("`{}`", k.spelling()),
+            Tok::Int(_) | Tok::Real(_) | Tok::Time(_) | Tok::Str(..) => {
+                format!("literal `{}`", self.text(t))
+            }
+            Tok::Error => "invalid text".into(),
+            _ => format!("`{}`", self.text(t)),
+        }
+    }
+    fn error_at(
+        &mut self,
+        code: Code,
+        span: Span,
+        msg: impl Into<String>,
+        hint: impl Into<String>,
+    ) {
+        self.diags
+            .push(Diagnostic::error(code, msg).at(span).with_hint(hint));
+    }
+    fn error_here(&mut self, code: Code, msg: impl Into<String>, hint: impl Into<String>) {
+        // An error token was already reported by the lexer: one diagnostic per mistake.
+        if self.at(&Tok::Error) {
+            return;
+        }
+        let span = self.cur_span();
+        self.error_at(code, span, msg, hint);
+    }
+    /// Consumes `k` or reports "expected `k`"; returns whether it was there.
+    fn expect_kw(&mut self, k: Kw, context: &str) -> bool {
+        if self.at_kw(k) {
+            self.bump();
+            return true;
+        }
+        let found = self.describe_current();
+        self.error_here(
+            code::E0100,
+            format!("expected `{}` {context}, found {found}", k.spelling()),
+            format!("write `{}` here", k.spelling()),
+        );
+        false
+    }
+    /// Skips to the end of the bad statement: past its `;`, or up to a statement or block keyword.
+    fn sync(&mut self) {
+        loop {
+            let t = self.peek();
+            if *t == Tok::Semi {
+                self.bump();
+                return;
+            }
+            if ends_list(t) || starts_statement(t) {
+                return;
+            }
+            self.bump();
+        }
+    }
+
+    // ------------------------------------------------------------ statements
+
+    fn statement_list(&mut self) -> Vec<Stmt> {
+        let mut out = Vec::new();
+        while !ends_list(self.peek()) {
+            if let Some(s) = self.statement() {
+                out.push(s);
+            }
+        }
+        out
+    }
+
+    /// A statement list that stops also before a CASE label (`5:`, `1, 2:`, `3..4:`, `red:`).
+    fn case_arm_body(&mut self) -> Vec<Stmt> {
+        let mut out = Vec::new();
+        while !ends_list(self.peek()) && !self.looks_like_case_label() {
+            if let Some(s) = self.statement() {
+                out.push(s);
+            }
+        }
+        out
+    }
+
+    fn looks_like_case_label(&self) -> bool {
+        let mut i = 0;
+        if matches!(self.peek_at(0), Tok::Minus | Tok::Plus) {
+            i += 1;
+        }
+        match self.peek_at(i) {
+            Tok::Int(_) | Tok::Kw(Kw::True | Kw::False) => return true,
+            Tok::TypePrefix => return true,
+            Tok::Ident => {}
+            _ => return false,
+        }
+        i += 1;
+        while *self.peek_at(i) == Tok::Dot && *self.peek_at(i + 1) == Tok::Ident {
+            i += 2;
+        }
+        matches!(self.peek_at(i), Tok::Colon | Tok::Comma | Tok::DotDot)
+    }
+
+    fn statement(&mut self) -> Option<Stmt> {
+        let start = self.cur().range.start;
+        if self.depth > MAX_DEPTH {
+            self.error_here(
+                code::E0108,
+                "statements are nested too deeply",
+                "split the logic into functions or function blocks",
+            );
+            while !self.at(&Tok::Eof) {
+                self.bump();
+            }
+            return None;
+        }
+        let kind = match self.peek().clone() {
+            Tok::Semi => {
+                self.bump();
+                return Some(Stmt {
+                    kind: StmtKind::Empty,
+                    span: self.span(start, self.prev_end()),
+                });
+            }
+            Tok::Kw(Kw::If) => self.if_stmt(),
+            Tok::Kw(Kw::Case) => self.case_stmt(),
+            Tok::Kw(Kw::For) => self.for_stmt(),
+            Tok::Kw(Kw::While) => self.while_stmt(),
+            Tok::Kw(Kw::Repeat) => self.repeat_stmt(),
+            Tok::Kw(Kw::Exit) => {
+                self.bump();
+                Some(StmtKind::Exit)
+            }
+            Tok::Kw(Kw::Continue) => {
+                self.bump();
+                Some(StmtKind::Continue)
+            }
+            Tok::Kw(Kw::Return) => {
+                self.bump();
+                Some(StmtKind::Return)
+            }
+            Tok::Ident | Tok::Address(..) => self.assign_or_call(),
+            Tok::Error => {
+                self.sync();
+                return None;
+            }
+            _ => {
+                let found = self.describe_current();
+                self.error_here(
+                    code::E0100,
+                    format!("expected a statement, found {found}"),
+                    "a statement is an assignment `x := ...;`, a call `inst(...);`, IF, CASE, FOR, WHILE, REPEAT, EXIT or RETURN",
+                );
+                self.bump();
+                self.sync();
+                return None;
+            }
+        };
+        let Some(kind) = kind else {
+            self.sync();
+            return None;
+        };
+        let block = matches!(
+            kind,
+            StmtKind::If { .. }
+                | StmtKind::Case { .. }
+                | StmtKind::For { .. }
+                | StmtKind::While { .. }
+                | StmtKind::Repeat { .. }
+        );
+        if self.at(&Tok::Semi) {
+            self.bump();
+        } else if !block {
+            // `END_IF` without `;` is accepted (CODESYS and Beremiz accept it too).
+            let at = self.prev_end();
+            let found = self.describe_current();
+            self.error_at(
+                code::E0104,
+                self.span(at, at),
+                format!("missing `;` after the statement (found {found})"),
+                "every ST statement ends with `;` (also `END_IF;`, `END_FOR;` ...)",
+            );
+        }
+        Some(Stmt {
+            kind,
+            span: self.span(start, self.prev_end()),
+        })
+    }
+
+    /// `x := e`, `inst(...)`, `F(...)`; anything else that starts with a name is reported here.
+    fn assign_or_call(&mut self) -> Option<StmtKind> {
+        let target = self.place()?;
+        match self.peek() {
+            Tok::Assign => {
+                self.bump();
+                let value = self.expr();
+                if matches!(value.kind, ExprKind::Error) {
+                    return None;
+                }
+                Some(StmtKind::Assign { target, value })
+            }
+            Tok::LParen => {
+                let args = self.args()?;
+                Some(StmtKind::Call {
+                    callee: target,
+                    args,
+                })
+            }
+            Tok::Eq => {
+                self.error_here(
+                    code::E0106,
+                    "`=` compares; it does not assign",
+                    "assign with `:=` (`x := 1;`)",
+                );
+                None
+            }
+            _ => {
+                let found = self.describe_current();
+                self.error_here(
+                    code::E0106,
+                    format!("expected `:=` or `(` after `{}`, found {found}", self.place_text(&target)),
+                    "a statement that starts with a name is an assignment `x := ...;` or a call `inst(...);`",
+                );
+                None
+            }
+        }
+    }
+
+    fn place_text(&self, p: &Place) -> &'s str {
+        let s = (p.span.start as usize).saturating_sub(self.base);
+        let e = (p.span.end as usize).saturating_sub(self.base);
+        self.src.get(s..e).unwrap_or("")
+    }
+
+    fn block_open(&mut self) -> Option<(Token, Span)> {
+        let t = self.bump();
+        let span = self.span(t.range.start, t.range.end);
+        if self.depth > MAX_DEPTH {
+            return None;
+        }
+        Some((t, span))
+    }
+
+    /// Reports a block that is not closed by `end` (at its opening keyword) unless `end` is next.
+    fn close_block(&mut self, end: Kw, open: Span, what: &str) -> bool {
+        if self.at_kw(end) {
+            self.bump();
+            return true;
+        }
+        let found = self.describe_current();
+        self.diags.push(
+            Diagnostic::error(
+                code::E0105,
+                format!(
+                    "{what} is not closed: expected `{}`, found {found}",
+                    end.spelling()
+                ),
+            )
+            .at(self.cur_span())
+            .with_label(open, format!("this {what} needs `{}`", end.spelling()))
+            .with_hint(format!("close the block with `{};`", end.spelling())),
+        );
+        false
+    }
+
+    fn nested<T>(&mut self, f: impl FnOnce(&mut Self) -> T) -> T {
+        self.depth += 1;
+        let r = f(self);
+        self.depth -= 1;
+        r
+    }
+
+    fn if_stmt(&mut self) -> Option<StmtKind> {
+        let (_, open) = self.block_open()?;
+        let mut branches = Vec::new();
+        let mut else_body = None;
+        let mut bstart = open;
+        loop {
+            let cond = self.expr();
+            if !self.expect_kw(Kw::Then, "after the IF condition") {
+                // Skip the rest of the condition up to THEN or the end of the line of statements.
+                while !self.at_kw(Kw::Then) && !ends_list(self.peek()) && !self.at(&Tok::Semi) {
+                    self.bump();
+                }
+                if self.at_kw(Kw::Then) {
+                    self.bump();
+                }
+            }
+            let body = self.nested(|p| p.statement_list());
+            branches.push(CondBranch {
+                cond,
+                body,
+                span: bstart.to(self.span(self.prev_end(), self.prev_end())),
+            });
+            if self.at_kw(Kw::Elsif) {
+                bstart = self.cur_span();
+                self.bump();
+                continue;
+            }
+            if self.at_kw(Kw::Else) {
+                self.bump();
+                else_body = Some(self.nested(|p| p.statement_list()));
+            }
+            break;
+        }
+        self.close_block(Kw::EndIf, open, "IF");
+        Some(StmtKind::If {
+            branches,
+            else_body,
+        })
+    }
+
+    fn case_stmt(&mut self) -> Option<StmtKind> {
+        let (_, open) = self.block_open()?;
+        let selector = self.expr();
+        self.expect_kw(Kw::Of, "after the CASE selector");
+        let mut arms = Vec::new();
+        let mut else_body = None;
+        loop {
+            if self.at_kw(Kw::Else) {
+                self.bump();
+                else_body = Some(self.nested(|p| p.statement_list()));
+                break;
+            }
+            if ends_list(self.peek()) {
+                break;
+            }
+            if !self.looks_like_case_label() {
+                let found = self.describe_current();
+                self.error_here(
+                    code::E0100,
+                    format!(
+                        "expected a CASE label such as `1:`, `2, 3:` or `4..6:`, found {found}"
+                    ),
+                    "each branch of CASE starts with its values and `:`",
+                );
+                self.bump();
+                self.sync();
+                continue;
+            }
+            let astart = self.cur_span();
+            let mut labels = Vec::new();
+            loop {
+                let lo = self.binary(5);
+                if self.at(&Tok::DotDot) {
+                    self.bump();
+                    let hi = self.binary(5);
+                    labels.push(CaseLabel::Range(lo, hi));
+                } else {
+                    labels.push(CaseLabel::Value(lo));
+                }
+                if self.at(&Tok::Comma) {
+                    self.bump();
+                    continue;
+                }
+                break;
+            }
+            if self.at(&Tok::Colon) {
+                self.bump();
+            } else {
+                let found = self.describe_current();
+                self.error_here(
+                    code::E0100,
+                    format!("expected `:` after the CASE label, found {found}"),
+                    "write the branch as `1, 2: statements`",
+                );
+                self.sync();
+            }
+            let body = self.nested(|p| p.case_arm_body());
+            arms.push(CaseArm {
+                labels,
+                body,
+                span: astart.to(self.span(self.prev_end(), self.prev_end())),
+            });
+        }
+        self.close_block(Kw::EndCase, open, "CASE");
+        Some(StmtKind::Case {
+            selector,
+            arms,
+            else_body,
+        })
+    }
+
+    fn for_stmt(&mut self) -> Option<StmtKind> {
+        let (_, open) = self.block_open()?;
+        if !self.at(&Tok::Ident) {
+            let found = self.describe_current();
+            self.error_here(
+                code::E0100,
+                format!("expected the control variable after FOR, found {found}"),
+                "write `FOR i := 1 TO 10 DO ... END_FOR;`",
+            );
+            return None;
+        }
+        let t = self.bump();
+        let control = self.ident(&t);
+        if !self.at(&Tok::Assign) {
+            let found = self.describe_current();
+            self.error_here(
+                code::E0100,
+                format!("expected `:=` after the FOR control variable, found {found}"),
+                "write `FOR i := 1 TO 10 DO ... END_FOR;`",
+            );
+            return None;
+        }
+        self.bump();
+        let from = self.expr();
+        if !self.expect_kw(Kw::To, "after the FOR start value") {
+            return None;
+        }
+        let to = self.expr();
+        let by = if self.at_kw(Kw::By) {
+            self.bump();
+            Some(self.expr())
+        } else {
+            None
+        };
+        if !self.expect_kw(Kw::Do, "before the FOR loop body") {
+            return None;
+        }
+        let body = self.nested(|p| p.statement_list());
+        self.close_block(Kw::EndFor, open, "FOR");
+        Some(StmtKind::For {
+            control,
+            from,
+            to,
+            by,
+            body,
+        })
+    }
+
+    fn while_stmt(&mut self) -> Option<StmtKind> {
+        let (_, open) = self.block_open()?;
+        let cond = self.expr();
+        if !self.expect_kw(Kw::Do, "after the WHILE condition") {
+            return None;
+        }
+        let body = self.nested(|p| p.statement_list());
+        self.close_block(Kw::EndWhile, open, "WHILE");
+        Some(StmtKind::While { cond, body })
+    }
+
+    fn repeat_stmt(&mut self) -> Option<StmtKind> {
+        let (_, open) = self.block_open()?;
+        let body = self.nested(|p| p.statement_list());
+        if !self.at_kw(Kw::Until) {
+            self.close_block(Kw::Until, open, "REPEAT");
+            return Some(StmtKind::Repeat {
+                body,
+                until: Expr {
+                    kind: ExprKind::Error,
+                    span: open,
+                },
+            });
+        }
+        self.bump();
+        let until = self.expr();
+        self.close_block(Kw::EndRepeat, open, "REPEAT");
+        Some(StmtKind::Repeat { body, until })
+    }
+
+    // ------------------------------------------------------------ places and calls
+
+    /// `x`, `a.b[i, j].c`, `%QX0.1`.
+    fn place(&mut self) -> Option<Place> {
+        let t = self.bump();
+        let start = t.range.start;
+        let base = match t.tok {
+            Tok::Ident => PlaceBase::Name(self.ident(&t)),
+            Tok::Address(area, size, path) => PlaceBase::Address(DirectAddress {
+                area,
+                size,
+                path,
+                span: self.span(t.range.start, t.range.end),
+            }),
+            _ => return None,
+        };
+        let mut accessors = Vec::new();
+        loop {
+            match self.peek() {
+                Tok::Dot => {
+                    self.bump();
+                    match self.peek() {
+                        Tok::Ident => {
+                            let f = self.bump();
+                            accessors.push(Accessor::Field(self.ident(&f)));
+                        }
+                        Tok::Int(_) => {
+                            self.error_here(
+                                code::E0108,
+                                "bit access `x.n` is not supported",
+                                "use a shift and a mask: `(SHR(x, n) AND 1) = 1`",
+                            );
+                            return None;
+                        }
+                        _ => {
+                            let found = self.describe_current();
+                            self.error_here(
+                                code::E0100,
+                                format!("expected a field name after `.`, found {found}"),
+                                "write `instance.output` or `structure.field`",
+                            );
+                            return None;
+                        }
+                    }
+                }
+                Tok::LBracket => {
+                    self.bump();
+                    let mut idx = vec![self.expr()];
+                    while self.at(&Tok::Comma) {
+                        self.bump();
+                        idx.push(self.expr());
+                    }
+                    if !self.at(&Tok::RBracket) {
+                        let found = self.describe_current();
+                        self.error_here(
+                            code::E0100,
+                            format!("expected `]` after the array index, found {found}"),
+                            "write the element as `a[i]` or `m[i, j]`",
+                        );
+                        return None;
+                    }
+                    self.bump();
+                    accessors.push(Accessor::Index(idx));
+                }
+                Tok::Caret => {
+                    self.error_here(
+                        code::E0108,
+                        "pointer dereference `^` is not supported",
+                        "use the variable itself, or pass it as VAR_IN_OUT",
+                    );
+                    return None;
+                }
+                _ => break,
+            }
+        }
+        Some(Place {
+            base,
+            accessors,
+            span: self.span(start, self.prev_end()),
+        })
+    }
+
+    /// `( args )` after a call target.
+    fn args(&mut self) -> Option<Vec<Arg>> {
+        let open = self.bump();
+        let mut args = Vec::new();
+        if self.at(&Tok::RParen) {
+            self.bump();
+            return Some(args);
+        }
+        loop {
+            let start = self.cur().range.start;
+            let negated = self.at_kw(Kw::Not)
+                && *self.peek_at(1) == Tok::Ident
+                && *self.peek_at(2) == Tok::Arrow;
+            if negated {
+                self.bump();
+            }
+            if self.at(&Tok::Ident) && matches!(self.peek_at(1), Tok::Assign | Tok::Arrow) {
+                let n = self.bump();
+                let name = self.ident(&n);
+                let out = self.bump().tok == Tok::Arrow;
+                if out {
+                    let value = if self.at(&Tok::Ident) || matches!(self.peek(), Tok::Address(..)) {
+                        let p = self.place()?;
+                        Expr {
+                            span: p.span,
+                            kind: ExprKind::Place(p),
+                        }
+                    } else if self.at(&Tok::Comma) || self.at(&Tok::RParen) {
+                        // `Q =>` with nothing: the output is not used.
+                        let s = self.span(self.prev_end(), self.prev_end());
+                        Expr {
+                            kind: ExprKind::Error,
+                            span: s,
+                        }
+                    } else {
+                        let found = self.describe_current();
+                        self.error_here(
+                            code::E0100,
+                            format!("expected a variable after `=>`, found {found}"),
+                            "an output is stored into a variable: `Q => done`",
+                        );
+                        return None;
+                    };
+                    args.push(Arg {
+                        name: Some(name),
+                        dir: ArgDir::Output { negated },
+                        value,
+                        span: self.span(start, self.prev_end()),
+                    });
+                } else {
+                    let value = self.expr();
+                    args.push(Arg {
+                        name: Some(name),
+                        dir: ArgDir::Input,
+                        value,
+                        span: self.span(start, self.prev_end()),
+                    });
+                }
+            } else {
+                let value = self.expr();
+                args.push(Arg {
+                    name: None,
+                    dir: ArgDir::Input,
+                    value,
+                    span: self.span(start, self.prev_end()),
+                });
+            }
+            match self.peek() {
+                Tok::Comma => {
+                    self.bump();
+                }
+                Tok::RParen => {
+                    self.bump();
+                    return Some(args);
+                }
+                _ => {
+                    let found = self.describe_current();
+                    let open_span = self.span(open.range.start, open.range.end);
+                    self.diags.push(
+                        Diagnostic::error(
+                            code::E0100,
+                            format!("expected `,` or `)` in the argument list, found {found}"),
+                        )
+                        .at(self.cur_span())
+                        .with_label(open_span, "the argument list starts here")
+                        .with_hint("separate arguments with `,` and close the list with `)`"),
+                    );
+                    return None;
+                }
+            }
+        }
+    }
+
+    // ------------------------------------------------------------ expressions
+
+    fn error_expr(&self, span: Span) -> Expr {
+        Expr {
+            kind: ExprKind::Error,
+            span,
+        }
+    }
+
+    pub(crate) fn expr(&mut self) -> Expr {
+        if self.depth > MAX_DEPTH {
+            let s = self.cur_span();
+            self.error_here(
+                code::E0108,
+                "expression is nested too deeply",
+                "split it into several assignments",
+            );
+            while !self.at(&Tok::Eof) {
+                self.bump();
+            }
+            return self.error_expr(s);
+        }
+        self.depth += 1;
+        let e = self.binary(0);
+        self.depth -= 1;
+        e
+    }
+
+    /// Binary operator of the current token with its precedence level (0 = OR ... 6 = MOD).
+    fn binop(&self) -> Option<(BinaryOp, u8)> {
+        Some(match self.peek() {
+            Tok::Kw(Kw::Or) => (BinaryOp::Or, 0),
+            Tok::Kw(Kw::Xor) => (BinaryOp::Xor, 1),
+            Tok::Kw(Kw::And) | Tok::Amp => (BinaryOp::And, 2),
+            Tok::Eq => (BinaryOp::Eq, 3),
+            Tok::Ne => (BinaryOp::Ne, 3),
+            Tok::Lt => (BinaryOp::Lt, 4),
+            Tok::Gt => (BinaryOp::Gt, 4),
+            Tok::Le => (BinaryOp::Le, 4),
+            Tok::Ge => (BinaryOp::Ge, 4),
+            Tok::Plus => (BinaryOp::Add, 5),
+            Tok::Minus => (BinaryOp::Sub, 5),
+            Tok::Star => (BinaryOp::Mul, 6),
+            Tok::Slash => (BinaryOp::Div, 6),
+            Tok::Kw(Kw::Mod) => (BinaryOp::Mod, 6),
+            _ => return None,
+        })
+    }
+
+    /// Operators of level `min` and above (precedence climbing, left-associative).
+    fn binary(&mut self, min: u8) -> Expr {
+        let mut left = self.unary();
+        while let Some((op, level)) = self.binop() {
+            if level < min {
+                break;
+            }
+            self.bump();
+            let right = self.binary(level + 1);
+            let span = left.span.to(right.span);
+            left = Expr {
+                kind: ExprKind::Binary {
+                    op,
+                    left: Box::new(left),
+                    right: Box::new(right),
+                },
+                span,
+            };
+        }
+        left
+    }
+
+    fn unary(&mut self) -> Expr {
+        let op = match self.peek() {
+            Tok::Minus => UnaryOp::Neg,
+            Tok::Plus => UnaryOp::Plus,
+            Tok::Kw(Kw::Not) => UnaryOp::Not,
+            _ => return self.power(),
+        };
+        let t = self.bump();
+        let start = self.span(t.range.start, t.range.end);
+        if self.depth > MAX_DEPTH {
+            return self.expr();
+        }
+        self.depth += 1;
+        let operand = self.unary();
+        self.depth -= 1;
+        let span = start.to(operand.span);
+        // `-5`, `-1.5`, `-T#1s`: one negative literal.
+        if op != UnaryOp::Not {
+            if let ExprKind::Literal(l) = &operand.kind {
+                let neg = op == UnaryOp::Neg;
+                let kind = match &l.kind {
+                    LiteralKind::Int(v) => Some(LiteralKind::Int(if neg { -v } else { *v })),
+                    LiteralKind::Real(v) => Some(LiteralKind::Real(if neg { -v } else { *v })),
+                    LiteralKind::Duration(v) => {
+                        Some(LiteralKind::Duration(if neg { -v } else { *v }))
+                    }
+                    _ => None,
+                };
+                if let (Some(kind), None) = (kind, &l.type_prefix) {
+                    return Expr {
+                        kind: ExprKind::Literal(Literal {
+                            kind,
+                            type_prefix: None,
+                            span,
+                        }),
+                        span,
+                    };
+                }
+            }
+        }
+        Expr {
+            kind: ExprKind::Unary {
+                op,
+                operand: Box::new(operand),
+            },
+            span,
+        }
+    }
+
+    fn power(&mut self) -> Expr {
+        let mut left = self.primary();
+        while self.at(&Tok::Power) {
+            self.bump();
+            // `2 ** -1` is accepted: the exponent may carry a sign.
+            let right = if matches!(self.peek(), Tok::Minus | Tok::Plus) {
+                self.unary()
+            } else {
+                self.primary()
+            };
+            let span = left.span.to(right.span);
+            left = Expr {
+                kind: ExprKind::Binary {
+                    op: BinaryOp::Power,
+                    left: Box::new(left),
+                    right: Box::new(right),
+                },
+                span,
+            };
+        }
+        left
+    }
+
+    fn literal(&self, kind: LiteralKind, prefix: Option<Ident>, t: &Token, end: usize) -> Expr {
+        let span = self.span(t.range.start, end);
+        Expr {
+            kind: ExprKind::Literal(Literal {
+                kind,
+                type_prefix: prefix,
+                span,
+            }),
+            span,
+        }
+    }
+
+    fn primary(&mut self) -> Expr {
+        let t = self.cur().clone();
+        let here = self.span(t.range.start, t.range.end);
+        match t.tok.clone() {
+            Tok::Int(v) => {
+                self.bump();
+                self.literal(LiteralKind::Int(v), None, &t, t.range.end)
+            }
+            Tok::Real(v) => {
+                self.bump();
+                self.literal(LiteralKind::Real(v), None, &t, t.range.end)
+            }
+            Tok::Kw(Kw::True) | Tok::Kw(Kw::False) => {
+                self.bump();
+                self.literal(
+                    LiteralKind::Bool(t.tok == Tok::Kw(Kw::True)),
+                    None,
+                    &t,
+                    t.range.end,
+                )
+            }
+            Tok::Str(wide, value) => {
+                self.bump();
+                self.literal(LiteralKind::String { wide, value }, None, &t, t.range.end)
+            }
+            Tok::Time(tv) => {
+                self.bump();
+                let hash = self.text(&t).find('#').unwrap_or(0) + t.range.start;
+                let long = |name: &str| Some(Ident::new(name, self.span(t.range.start, hash)));
+                let (kind, prefix) = match tv {
+                    TimeValue::Duration(v, lg) => (
+                        LiteralKind::Duration(v),
+                        lg.then(|| long("LTIME")).flatten(),
+                    ),
+                    TimeValue::Date(v, lg) => {
+                        (LiteralKind::Date(v), lg.then(|| long("LDATE")).flatten())
+                    }
+                    TimeValue::TimeOfDay(v, lg) => (
+                        LiteralKind::TimeOfDay(v),
+                        lg.then(|| long("LTOD")).flatten(),
+                    ),
+                    TimeValue::DateAndTime(v, lg) => (
+                        LiteralKind::DateAndTime(v),
+                        lg.then(|| long("LDT")).flatten(),
+                    ),
+                };
+                self.literal(kind, prefix, &t, t.range.end)
+            }
+            Tok::TypePrefix => self.typed_literal(),
+            Tok::LParen => {
+                self.bump();
+                let inner = self.expr();
+                if self.at(&Tok::RParen) {
+                    self.bump();
+                } else {
+                    let found = self.describe_current();
+                    self.diags.push(
+                        Diagnostic::error(code::E0100, format!("expected `)`, found {found}"))
+                            .at(self.cur_span())
+                            .with_label(here, "this `(` is not closed")
+                            .with_hint("close the parenthesis"),
+                    );
+                }
+                let span = here.to(self.span(self.prev_end(), self.prev_end()));
+                Expr {
+                    kind: inner.kind,
+                    span,
+                }
+            }
+            Tok::Ident if *self.peek_at(1) == Tok::LParen => {
+                let n = self.bump();
+                let name = self.ident(&n);
+                match self.args() {
+                    Some(args) => Expr {
+                        kind: ExprKind::Call { name, args },
+                        span: here.to(self.span(self.prev_end(), self.prev_end())),
+                    },
+                    None => self.error_expr(here),
+                }
+            }
+            Tok::Ident | Tok::Address(..) => match self.place() {
+                Some(p) => {
+                    if self.at(&Tok::LParen) {
+                        self.error_here(
+                            code::E0108,
+                            "only a function name can be called inside an expression",
+                            "call the function block as a statement (`inst(...);`) and read its output (`inst.Q`)",
+                        );
+                        return self.error_expr(p.span);
+                    }
+                    Expr {
+                        span: p.span,
+                        kind: ExprKind::Place(p),
+                    }
+                }
+                None => self.error_expr(here),
+            },
+            Tok::Error => {
+                self.bump();
+                self.error_expr(here)
+            }
+            _ => {
+                let found = self.describe_current();
+                self.error_here(
+                    code::E0107,
+                    format!("expected an expression, found {found}"),
+                    "an expression is a variable, a literal, a function call or a combination with operators",
+                );
+                self.error_expr(here)
+            }
+        }
+    }
+
+    /// `INT#5`, `REAL#-1.5`, `BOOL#TRUE`, `STRING#'x'`, `Color#red`.
+    fn typed_literal(&mut self) -> Expr {
+        let p = self.bump();
+        let name = &self.src[p.range.start..p.range.end - 1];
+        let prefix = Ident::new(name, self.span(p.range.start, p.range.end - 1));
+        let neg = if self.at(&Tok::Minus) {
+            self.bump();
+            true
+        } else {
+            if self.at(&Tok::Plus) {
+                self.bump();
+            }
+            false
+        };
+        let t = self.cur().clone();
+        let kind = match t.tok.clone() {
+            Tok::Int(v) => LiteralKind::Int(if neg { -v } else { v }),
+            Tok::Real(v) => LiteralKind::Real(if neg { -v } else { v }),
+            Tok::Kw(Kw::True) => LiteralKind::Bool(true),
+            Tok::Kw(Kw::False) => LiteralKind::Bool(false),
+            Tok::Str(wide, value) => LiteralKind::String { wide, value },
+            Tok::Ident if !neg => {
+                self.bump();
+                let value = self.ident(&t);
+                return Expr {
+                    kind: ExprKind::EnumValue {
+                        type_name: prefix,
+                        value,
+                    },
+                    span: self.span(p.range.start, t.range.end),
+                };
+            }
+            _ => {
+                let found = self.describe_current();
+                self.error_here(
+                    code::E0103,
+                    format!("expected a value after `{name}#`, found {found}"),
+                    "a typed literal is written `INT#5`, `REAL#1.5`, `BOOL#TRUE`; an enumerated value `Color#red`",
+                );
+                return self.error_expr(self.span(p.range.start, p.range.end));
+            }
+        };
+        self.bump();
+        self.literal(kind, Some(prefix), &p, t.range.end)
+    }
+}

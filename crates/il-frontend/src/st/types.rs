@@ -1,0 +1,110 @@
+//! What the ST lowering knows about the program outside the POU being lowered: user data types, POU
+//! interfaces (functions, function blocks) and global variables, all as written ([`TypeRef`]s).
+//!
+//! Input: declarations (from parsed IL units, or from a PLCopen project's interfaces). Output: lookups
+//! by case-folded name. Invariants: bodies are never read (a POU can be registered before its body is
+//! lowered); later registrations of the same name replace earlier ones.
+
+use crate::ast::{CompilationUnit, LibraryElement, Pou, PouKind, TypeDecl, TypeRef, VarKind};
+use std::collections::HashMap;
+
+/// The interface of a POU as a caller sees it.
+#[derive(Debug, Clone)]
+pub struct PouInterface {
+    pub kind: PouKind,
+    pub name: String,
+    /// Every declared variable with its block kind and type, in declaration order (inputs, outputs,
+    /// in-outs are the parameters; the others are only used to type `inst.x` reads).
+    pub vars: Vec<(String, VarKind, TypeRef)>,
+    /// A FUNCTION's result type.
+    pub ret: Option<TypeRef>,
+}
+
+impl PouInterface {
+    /// The interface of a parsed POU (its body is ignored).
+    pub fn of(p: &Pou) -> Self {
+        PouInterface {
+            kind: p.kind,
+            name: p.name.name.clone(),
+            vars: p
+                .var_blocks
+                .iter()
+                .flat_map(|b| {
+                    b.vars
+                        .iter()
+                        .map(move |v| (v.name.name.clone(), b.kind, v.ty.clone()))
+                })
+                .collect(),
+            ret: p.return_type.clone(),
+        }
+    }
+    /// The parameters (inputs, outputs, in-outs) in declaration order.
+    pub fn params(&self) -> impl Iterator<Item = &(String, VarKind, TypeRef)> {
+        self.vars
+            .iter()
+            .filter(|v| matches!(v.1, VarKind::Input | VarKind::Output | VarKind::InOut))
+    }
+    /// A variable by name, case-insensitively.
+    pub fn var(&self, name: &str) -> Option<&(String, VarKind, TypeRef)> {
+        self.vars.iter().find(|v| v.0.eq_ignore_ascii_case(name))
+    }
+}
+
+/// The program's declarations, keyed by upper-case name.
+#[derive(Debug, Clone, Default)]
+pub struct Declarations {
+    pub types: HashMap<String, TypeDecl>,
+    pub pous: HashMap<String, PouInterface>,
+    pub globals: HashMap<String, TypeRef>,
+}
+
+impl Declarations {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    /// Every data type, POU interface and global variable of `units`.
+    pub fn from_units(units: &[CompilationUnit]) -> Self {
+        let mut d = Declarations::new();
+        for item in units.iter().flat_map(|u| u.items.iter()) {
+            match item {
+                LibraryElement::DataTypes(ts) => ts.iter().for_each(|t| d.add_type(t.clone())),
+                LibraryElement::Pou(p) => d.add_pou(p),
+                LibraryElement::GlobalVars(b) => {
+                    for v in &b.vars {
+                        d.add_global(&v.name.name, v.ty.clone());
+                    }
+                }
+                LibraryElement::Configuration(c) => {
+                    let blocks = c
+                        .globals
+                        .iter()
+                        .chain(c.resources.iter().flat_map(|r| r.globals.iter()));
+                    for b in blocks {
+                        for v in &b.vars {
+                            d.add_global(&v.name.name, v.ty.clone());
+                        }
+                    }
+                }
+            }
+        }
+        d
+    }
+    pub fn add_type(&mut self, t: TypeDecl) {
+        self.types.insert(t.name.key(), t);
+    }
+    pub fn add_pou(&mut self, p: &Pou) {
+        self.add_pou_interface(PouInterface::of(p));
+    }
+    pub fn add_pou_interface(&mut self, i: PouInterface) {
+        self.pous.insert(i.name.to_ascii_uppercase(), i);
+    }
+    pub fn add_global(&mut self, name: &str, ty: TypeRef) {
+        self.globals.insert(name.to_ascii_uppercase(), ty);
+    }
+    pub fn pou(&self, name: &str) -> Option<&PouInterface> {
+        self.pous.get(&name.to_ascii_uppercase())
+    }
+    pub fn type_decl(&self, name: &str) -> Option<&TypeDecl> {
+        self.types.get(&name.to_ascii_uppercase())
+    }
+}

@@ -1,0 +1,501 @@
+//! Action associations and action control (IEC 61131-3 2nd ed. 2.6.4, the ACTION_CONTROL block).
+//!
+//! Input: the chart's associations (step, `<action>` element), the POU's named actions (`<actions>`)
+//! and declared variables. Output: the actions in first-association order, each with the steps that
+//! drive each qualifier and its durations; then the IL that computes every action's `Q` (active) and
+//! `A` (execute: `Q`, plus one final scan after the non-P part of `Q` falls, plus the P1/P0 pulses)
+//! from the step flags.
+//! Invariants: one action control per action, whatever the number of associations (their qualifier
+//! inputs are OR-combined, as IEC requires); timed qualifiers have a duration (else E3123); a name
+//! that is neither a named action nor a declared BOOL variable is E3122.
+
+use super::chart::{report, Association, Step};
+use super::il::{self, Hidden};
+use super::names;
+use crate::context::Ctx;
+use crate::values;
+use crate::xml::Element;
+use diagnostics::code;
+use il_frontend::ast::{IlStmt, LiteralKind, Op, Operand, Pou, TypeRef};
+use il_frontend::Span;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Qualifier {
+    N,
+    R,
+    S,
+    L,
+    D,
+    P,
+    P1,
+    P0,
+    SD,
+    DS,
+    SL,
+}
+
+impl Qualifier {
+    pub fn parse(s: &str) -> Option<Qualifier> {
+        Some(match s.trim().to_ascii_uppercase().as_str() {
+            "" | "N" => Qualifier::N,
+            "R" => Qualifier::R,
+            "S" => Qualifier::S,
+            "L" => Qualifier::L,
+            "D" => Qualifier::D,
+            "P" => Qualifier::P,
+            "P1" => Qualifier::P1,
+            "P0" => Qualifier::P0,
+            "SD" => Qualifier::SD,
+            "DS" => Qualifier::DS,
+            "SL" => Qualifier::SL,
+            _ => return None,
+        })
+    }
+    pub fn timed(self) -> bool {
+        matches!(
+            self,
+            Qualifier::L | Qualifier::D | Qualifier::SD | Qualifier::DS | Qualifier::SL
+        )
+    }
+    fn tag(self) -> &'static str {
+        match self {
+            Qualifier::N => "N",
+            Qualifier::R => "R",
+            Qualifier::S => "S",
+            Qualifier::L => "L",
+            Qualifier::D => "D",
+            Qualifier::P => "P",
+            Qualifier::P1 => "P1",
+            Qualifier::P0 => "P0",
+            Qualifier::SD => "SD",
+            Qualifier::DS => "DS",
+            Qualifier::SL => "SL",
+        }
+    }
+}
+
+/// What an action does when it executes.
+pub enum Target<'e, 'a> {
+    /// A body (its language element): runs while `A` is TRUE.
+    Body(&'e Element<'a>),
+    /// A BOOL variable: gets the action's `Q` every scan.
+    Variable(Operand),
+}
+
+pub struct Action<'e, 'a> {
+    /// The hidden-name suffix (`Fill`, or `b6_0` for the first inline action of block 6).
+    pub key: String,
+    /// How the engineer names it ("action `Fill`", "inline action 1 of action block 6").
+    pub display: String,
+    /// The user-visible name (`Fill.Q`), when it has one.
+    pub name: Option<String>,
+    pub target: Target<'e, 'a>,
+    /// (qualifier, step index, duration) per association.
+    pub uses: Vec<(Qualifier, usize, Option<Operand>)>,
+    pub span: Span,
+}
+
+fn is_bool_var(pou: &Pou, index: &crate::project::Index, name: &str) -> Option<bool> {
+    let key = name.to_ascii_uppercase();
+    let ty = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .find(|v| v.name.key() == key)
+        .map(|v| &v.ty)
+        .or_else(|| index.globals.get(&key))?;
+    Some(matches!(ty, TypeRef::Named(n) if n.is("BOOL")))
+}
+
+/// Groups the associations into actions (first-association order).
+pub fn collect<'e, 'a>(
+    ctx: &mut Ctx,
+    pou_el: &'e Element<'a>,
+    pou: &Pou,
+    index: &crate::project::Index,
+    steps: &[Step],
+    assocs: &[Association<'e, 'a>],
+) -> Vec<Action<'e, 'a>> {
+    let pou_name = pou.name.name.as_str();
+    let named: Vec<&'e Element<'a>> = pou_el
+        .child("actions")
+        .map(|a| a.children_named("action").collect())
+        .unwrap_or_default();
+    let mut out: Vec<Action> = Vec::new();
+    for a in assocs {
+        let span = ctx.tag(a.el);
+        let q_text = a.el.attr("qualifier").unwrap_or("N");
+        let Some(q) = Qualifier::parse(q_text) else {
+            report(
+                ctx,
+                code::E3123,
+                ctx.attr_span(a.el, "qualifier"),
+                pou_name,
+                Some(&a.block_id),
+                format!(
+                    "action qualifier `{}` is not one of N R S L D P P1 P0 SD DS SL",
+                    q_text.trim()
+                ),
+            );
+            continue;
+        };
+        let duration = match a
+            .el
+            .attr("duration")
+            .map(str::trim)
+            .filter(|d| !d.is_empty())
+        {
+            Some(d) => {
+                let ds = ctx.attr_span(a.el, "duration");
+                let op = values::literal(d, ds)
+                    .filter(|l| matches!(l.kind, LiteralKind::Duration(_)))
+                    .map(Operand::Literal)
+                    .or_else(|| values::duration(d).map(|ns| il::lit_time(ns, ds)))
+                    .or_else(|| values::var_ref(d, ds).map(Operand::Var));
+                if op.is_none() {
+                    report(
+                        ctx,
+                        code::E3123,
+                        ds,
+                        pou_name,
+                        Some(&a.block_id),
+                        format!("action duration `{d}` is neither a TIME literal nor a variable"),
+                    );
+                    continue;
+                }
+                op
+            }
+            None => None,
+        };
+        if q.timed() && duration.is_none() {
+            report(
+                ctx,
+                code::E3123,
+                span,
+                pou_name,
+                Some(&a.block_id),
+                format!(
+                    "qualifier {} needs a duration (for example duration=\"T#2s\")",
+                    q.tag()
+                ),
+            );
+            continue;
+        }
+        let step_name = &steps[a.step].name;
+        // Which action.
+        let (key, display, name, target) = if let Some(r) = a.el.child("reference") {
+            let n = r.attr("name").unwrap_or_default().trim();
+            let nspan = ctx.attr_span(r, "name");
+            if !values::is_ident(n) || n.contains("__") {
+                report(
+                    ctx,
+                    code::E3122,
+                    nspan,
+                    pou_name,
+                    Some(&a.block_id),
+                    format!(
+                        "step `{step_name}` names action `{n}`, which is not an IEC identifier"
+                    ),
+                );
+                continue;
+            }
+            if let Some(act) = named.iter().find(|e| {
+                e.attr("name")
+                    .is_some_and(|x| x.trim().eq_ignore_ascii_case(n))
+            }) {
+                let Some(lang) = act.child("body").and_then(|b| {
+                    b.children
+                        .iter()
+                        .find(|c| !matches!(c.name, "documentation" | "addData"))
+                }) else {
+                    report(
+                        ctx,
+                        code::E3122,
+                        ctx.tag(act),
+                        pou_name,
+                        None,
+                        format!("action `{n}` has no body"),
+                    );
+                    continue;
+                };
+                (
+                    n.to_string(),
+                    format!("action `{n}`"),
+                    Some(n.to_string()),
+                    Target::Body(lang),
+                )
+            } else {
+                match is_bool_var(pou, index, n) {
+                    Some(true) if values::is_ident(n) => (
+                        n.to_string(),
+                        format!("boolean action `{n}`"),
+                        None,
+                        Target::Variable(il::var(n, nspan)),
+                    ),
+                    Some(_) => {
+                        report(
+                            ctx,
+                            code::E3122,
+                            nspan,
+                            pou_name,
+                            Some(&a.block_id),
+                            format!(
+                                "step `{step_name}` names `{n}` as an action: it is a variable, but not \
+                                 BOOL (only BOOL variables can be actions)"
+                            ),
+                        );
+                        continue;
+                    }
+                    None => {
+                        report(
+                            ctx,
+                            code::E3122,
+                            nspan,
+                            pou_name,
+                            Some(&a.block_id),
+                            format!(
+                                "step `{step_name}` names action `{n}`, which is neither an action \
+                                 of the POU nor a BOOL variable"
+                            ),
+                        );
+                        continue;
+                    }
+                }
+            }
+        } else if let Some(lang) = a.el.child("inline").and_then(|i| {
+            i.children
+                .iter()
+                .find(|c| !matches!(c.name, "documentation" | "addData"))
+        }) {
+            (
+                format!("b{}_{}", super::sanitize(&a.block_id), a.index),
+                format!(
+                    "inline action {} of action block {}",
+                    a.index + 1,
+                    a.block_id
+                ),
+                None,
+                Target::Body(lang),
+            )
+        } else {
+            report(
+                ctx,
+                code::E3122,
+                span,
+                pou_name,
+                Some(&a.block_id),
+                "<action> without a <reference> or an <inline> body".to_string(),
+            );
+            continue;
+        };
+        let k = key.to_ascii_uppercase();
+        match out.iter_mut().find(|x| x.key.to_ascii_uppercase() == k) {
+            Some(x) => x.uses.push((q, a.step, duration)),
+            None => out.push(Action {
+                key,
+                display,
+                name,
+                target,
+                uses: vec![(q, a.step, duration)],
+                span,
+            }),
+        }
+    }
+    out
+}
+
+/// The OR of the step flags associated with qualifier `q`, as one operand (a hidden variable when
+/// several steps); `None` when no association uses `q`.
+fn input(
+    act: &Action,
+    q: Qualifier,
+    steps: &[Step],
+    hidden: &mut Hidden,
+    out: &mut Vec<IlStmt>,
+) -> Option<Operand> {
+    let span = act.span;
+    let mut flags: Vec<usize> = act.uses.iter().filter(|u| u.0 == q).map(|u| u.1).collect();
+    flags.sort_unstable();
+    flags.dedup();
+    match flags.as_slice() {
+        [] => None,
+        [s] => Some(il::var(&names::x(&steps[*s].name), span)),
+        [first, rest @ ..] => {
+            let v = names::action_part(&act.key, &format!("{}in", q.tag()));
+            hidden.declare(&v, "BOOL", None, span);
+            out.push(il::op(
+                Op::Ld,
+                il::var(&names::x(&steps[*first].name), span),
+            ));
+            for s in rest {
+                out.push(il::op(Op::Or, il::var(&names::x(&steps[*s].name), span)));
+            }
+            out.push(il::op(Op::St, il::var(&v, span)));
+            Some(il::var(&v, span))
+        }
+    }
+}
+
+fn duration_of(act: &Action, q: Qualifier) -> Option<Operand> {
+    act.uses.iter().find(|u| u.0 == q).and_then(|u| u.2.clone())
+}
+
+/// The action control of one action: computes `Q` (and `A` for body actions, or the variable).
+pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<IlStmt>) {
+    let span = act.span;
+    let k = &act.key;
+    let part = |p: &str| names::action_part(k, p);
+    let v = |n: &str| il::var(n, span);
+    let f = |inst: &str, pin: &str| il::field(inst, pin, span);
+    let r = input(act, Qualifier::R, steps, hidden, out).unwrap_or(il::lit_bool(false, span));
+    // Terms of Q: each a list of (op, negate, operand) starting with LD.
+    let mut terms: Vec<Vec<(Op, bool, Operand)>> = Vec::new();
+    if let Some(n) = input(act, Qualifier::N, steps, hidden, out) {
+        terms.push(vec![(Op::Ld, false, n)]);
+    }
+    if let Some(s) = input(act, Qualifier::S, steps, hidden, out) {
+        let ff = part("S");
+        hidden.declare(&ff, "RS", None, span);
+        out.push(il::call(&ff, vec![("S", s), ("R1", r.clone())], span));
+        terms.push(vec![(Op::Ld, false, f(&ff, "Q1"))]);
+    }
+    if let Some(l) = input(act, Qualifier::L, steps, hidden, out) {
+        let t = part("L");
+        hidden.declare(&t, "TON", None, span);
+        let pt = duration_of(act, Qualifier::L).unwrap_or(il::lit_time(0, span));
+        out.push(il::call(&t, vec![("IN", l.clone()), ("PT", pt)], span));
+        terms.push(vec![(Op::Ld, false, l), (Op::And, true, f(&t, "Q"))]);
+    }
+    if let Some(d) = input(act, Qualifier::D, steps, hidden, out) {
+        let t = part("D");
+        hidden.declare(&t, "TON", None, span);
+        let pt = duration_of(act, Qualifier::D).unwrap_or(il::lit_time(0, span));
+        out.push(il::call(&t, vec![("IN", d), ("PT", pt)], span));
+        terms.push(vec![(Op::Ld, false, f(&t, "Q"))]);
+    }
+    // P is part of Q but gets no final scan (it runs exactly once per activation).
+    let mut p_pulse: Option<Operand> = None;
+    if let Some(p) = input(act, Qualifier::P, steps, hidden, out) {
+        let t = part("P");
+        hidden.declare(&t, "R_TRIG", None, span);
+        out.push(il::call(&t, vec![("CLK", p)], span));
+        p_pulse = Some(f(&t, "Q"));
+    }
+    if let Some(sd) = input(act, Qualifier::SD, steps, hidden, out) {
+        let (ff, t) = (part("SDff"), part("SDt"));
+        hidden.declare(&ff, "RS", None, span);
+        hidden.declare(&t, "TON", None, span);
+        let pt = duration_of(act, Qualifier::SD).unwrap_or(il::lit_time(0, span));
+        out.push(il::call(&ff, vec![("S", sd), ("R1", r.clone())], span));
+        out.push(il::call(&t, vec![("IN", f(&ff, "Q1")), ("PT", pt)], span));
+        terms.push(vec![(Op::Ld, false, f(&t, "Q"))]);
+    }
+    if let Some(ds) = input(act, Qualifier::DS, steps, hidden, out) {
+        let (t, ff) = (part("DSt"), part("DSff"));
+        hidden.declare(&t, "TON", None, span);
+        hidden.declare(&ff, "RS", None, span);
+        let pt = duration_of(act, Qualifier::DS).unwrap_or(il::lit_time(0, span));
+        out.push(il::call(&t, vec![("IN", ds), ("PT", pt)], span));
+        out.push(il::call(
+            &ff,
+            vec![("S", f(&t, "Q")), ("R1", r.clone())],
+            span,
+        ));
+        terms.push(vec![(Op::Ld, false, f(&ff, "Q1"))]);
+    }
+    if let Some(sl) = input(act, Qualifier::SL, steps, hidden, out) {
+        let (ff, t) = (part("SLff"), part("SLt"));
+        hidden.declare(&ff, "RS", None, span);
+        hidden.declare(&t, "TON", None, span);
+        let pt = duration_of(act, Qualifier::SL).unwrap_or(il::lit_time(0, span));
+        out.push(il::call(&ff, vec![("S", sl), ("R1", r.clone())], span));
+        out.push(il::call(&t, vec![("IN", f(&ff, "Q1")), ("PT", pt)], span));
+        terms.push(vec![
+            (Op::Ld, false, f(&ff, "Q1")),
+            (Op::And, true, f(&t, "Q")),
+        ]);
+    }
+    // Pulses (P1 on activation, P0 on deactivation): executed once, no final scan.
+    let mut pulses: Vec<Operand> = Vec::new();
+    if let Some(p1) = input(act, Qualifier::P1, steps, hidden, out) {
+        let t = part("P1");
+        hidden.declare(&t, "R_TRIG", None, span);
+        out.push(il::call(&t, vec![("CLK", p1)], span));
+        pulses.push(f(&t, "Q"));
+    }
+    if let Some(p0) = input(act, Qualifier::P0, steps, hidden, out) {
+        // Falling edge with our own memory (F_TRIG's first call on FALSE would pulse).
+        let (m, q) = (part("P0m"), part("P0"));
+        hidden.declare(&m, "BOOL", None, span);
+        hidden.declare(&q, "BOOL", None, span);
+        out.push(il::op(Op::Ld, v(&m)));
+        out.push(il::opn(Op::And, p0.clone()));
+        out.push(il::op(Op::St, v(&q)));
+        out.push(il::op(Op::Ld, p0));
+        out.push(il::op(Op::St, v(&m)));
+        pulses.push(v(&q));
+    }
+    // Q := OR of the terms.
+    let q = names::q(k);
+    hidden.declare(&q, "BOOL", None, span);
+    if terms.is_empty() {
+        out.push(il::op(Op::Ld, il::lit_bool(false, span)));
+    }
+    for (i, t) in terms.into_iter().enumerate() {
+        let code: Vec<IlStmt> = t
+            .into_iter()
+            .map(|(o, n, x)| il::simple(o, n, Some(x), span))
+            .collect();
+        if i == 0 {
+            out.extend(code);
+        } else if code.len() == 1 {
+            let IlStmt::Instr(ins) = &code[0] else {
+                continue;
+            };
+            if let il_frontend::ast::InstrKind::Simple { operand, .. } = &ins.kind {
+                out.push(il::simple(Op::Or, false, operand.clone(), span));
+            }
+        } else {
+            out.push(il::deferred(Op::Or, code, span));
+        }
+    }
+    // The part of Q that gets a final scan (everything but P), then Q itself.
+    let qn = match p_pulse {
+        Some(p) => {
+            let qn = part("Qn");
+            hidden.declare(&qn, "BOOL", None, span);
+            out.push(il::op(Op::St, v(&qn)));
+            out.push(il::op(Op::Ld, v(&qn)));
+            out.push(il::op(Op::Or, p));
+            out.push(il::op(Op::St, v(&q)));
+            qn
+        }
+        None => {
+            out.push(il::op(Op::St, v(&q)));
+            q.clone()
+        }
+    };
+    match &act.target {
+        Target::Variable(var) => {
+            out.push(il::op(Op::Ld, v(&q)));
+            for p in pulses {
+                out.push(il::op(Op::Or, p));
+            }
+            out.push(il::op(Op::St, var.clone()));
+        }
+        Target::Body(_) => {
+            // A := Q OR final scan (the non-P part of Q was TRUE last scan) OR pulses.
+            let (a, m) = (names::a(k), part("Qm"));
+            hidden.declare(&a, "BOOL", None, span);
+            hidden.declare(&m, "BOOL", None, span);
+            out.push(il::op(Op::Ld, v(&m)));
+            out.push(il::op(Op::Or, v(&q)));
+            for p in pulses {
+                out.push(il::op(Op::Or, p));
+            }
+            out.push(il::op(Op::St, v(&a)));
+            out.push(il::op(Op::Ld, v(&qn)));
+            out.push(il::op(Op::St, v(&m)));
+        }
+    }
+}

@@ -1,0 +1,675 @@
+//! The chart of an `<SFC>` body: steps, transitions with the steps before and after them, action
+//! associations, and the LD/FBD elements that feed connection-based conditions.
+//!
+//! Input: the `<SFC>` element. Output: a [`Chart`] where every transition knows its predecessor steps
+//! (through selection divergences and simultaneous convergences) and its successor steps (through
+//! selection convergences, simultaneous divergences and jump steps), in priority order.
+//! Invariants: only well-formed parts are kept: a transition whose predecessors or successors cannot be
+//! resolved is reported (E3120 dangling connection, E3128 invalid structure) and dropped; every step
+//! index in the chart is valid; step names are unique identifiers (E3131).
+
+use crate::context::Ctx;
+use crate::xml::Element;
+use diagnostics::{code, Code, Diagnostic, Span, XmlContext};
+use std::collections::{HashMap, HashSet};
+
+/// The SFC element kinds (everything else in the body is an LD/FBD element).
+pub const SFC_ELEMENTS: &[&str] = &[
+    "step",
+    "macroStep",
+    "transition",
+    "selectionDivergence",
+    "selectionConvergence",
+    "simultaneousDivergence",
+    "simultaneousConvergence",
+    "jumpStep",
+    "actionBlock",
+];
+
+#[derive(Debug, Clone)]
+pub struct Step {
+    pub id: String,
+    pub name: String,
+    pub initial: bool,
+    pub span: Span,
+}
+
+/// Where a transition's condition comes from.
+#[derive(Debug, Clone, Copy)]
+pub enum CondSource<'e, 'a> {
+    /// `<inline>` body (its language element) and the inline's name (may be empty).
+    Inline(&'e Element<'a>, &'e str),
+    /// `<reference name="..">`: a named transition of the POU (or a BOOL variable).
+    Reference(&'e str, Span),
+    /// `<connectionPointIn>` wired to LD/FBD elements of the SFC body.
+    Connection(&'e Element<'a>),
+}
+
+#[derive(Debug, Clone)]
+pub struct Transition<'e, 'a> {
+    pub id: String,
+    pub span: Span,
+    pub cond: CondSource<'e, 'a>,
+    /// Predecessor steps (all must be active), indexes into [`Chart::steps`].
+    pub pre: Vec<usize>,
+    /// Successor steps (all activated when it fires).
+    pub post: Vec<usize>,
+    /// `(priority attribute, non-zero executionOrderId, x, y, localId)`: smaller first.
+    pub order: (u32, u32, i64, i64, u64),
+}
+
+/// One `<action>` of an action block.
+#[derive(Debug, Clone)]
+pub struct Association<'e, 'a> {
+    pub step: usize,
+    pub block_id: String,
+    /// Position of the action in its block (0-based).
+    pub index: usize,
+    pub el: &'e Element<'a>,
+}
+
+pub struct Chart<'e, 'a> {
+    pub steps: Vec<Step>,
+    /// In priority order (see [`Transition::order`]).
+    pub transitions: Vec<Transition<'e, 'a>>,
+    /// In action block order (non-zero executionOrderId, y, x, localId), then in block order.
+    pub associations: Vec<Association<'e, 'a>>,
+    /// The LD/FBD elements of the body (for connection-based conditions).
+    pub network_elements: Vec<Element<'a>>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum NodeKind {
+    Step,
+    Transition,
+    SelDiv,
+    SelConv,
+    SimDiv,
+    SimConv,
+    Jump,
+    ActionBlock,
+    Macro,
+}
+
+struct Node<'e, 'a> {
+    kind: NodeKind,
+    el: &'e Element<'a>,
+    id: String,
+    inputs: Vec<(String, Span)>,
+    step: Option<usize>,
+}
+
+pub(crate) fn report(
+    ctx: &mut Ctx,
+    code: Code,
+    span: Span,
+    pou: &str,
+    id: Option<&str>,
+    msg: String,
+) {
+    ctx.report(Diagnostic::error(code, msg).at(span).with_xml(XmlContext {
+        pou: Some(pou.to_string()),
+        local_id: id.map(str::to_string),
+        network: None,
+    }));
+}
+
+fn pos(e: &Element, axis: &str) -> i64 {
+    e.child("position")
+        .and_then(|p| p.attr(axis))
+        .and_then(|v| v.trim().parse::<f64>().ok())
+        .map(|v| v as i64)
+        .unwrap_or(0)
+}
+
+fn inputs(ctx: &Ctx, e: &Element) -> Vec<(String, Span)> {
+    e.children_named("connectionPointIn")
+        .flat_map(|p| p.children_named("connection"))
+        .map(|c| {
+            (
+                c.attr("refLocalId").unwrap_or_default().trim().to_string(),
+                ctx.tag(c),
+            )
+        })
+        .collect()
+}
+
+/// Reads the chart. `pou` names the POU in diagnostics.
+pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e, 'a> {
+    let mut nodes: Vec<Node> = Vec::new();
+    let mut ids: HashMap<String, usize> = HashMap::new();
+    let mut steps: Vec<Step> = Vec::new();
+    let mut step_names: HashMap<String, usize> = HashMap::new();
+    let mut network_elements = Vec::new();
+    let mut all_ids: HashSet<String> = HashSet::new();
+    for e in sfc.children.iter() {
+        let kind = match e.name {
+            "step" => NodeKind::Step,
+            "macroStep" => NodeKind::Macro,
+            "transition" => NodeKind::Transition,
+            "selectionDivergence" => NodeKind::SelDiv,
+            "selectionConvergence" => NodeKind::SelConv,
+            "simultaneousDivergence" => NodeKind::SimDiv,
+            "simultaneousConvergence" => NodeKind::SimConv,
+            "jumpStep" => NodeKind::Jump,
+            "actionBlock" => NodeKind::ActionBlock,
+            "comment" | "addData" | "vendorElement" | "documentation" => continue,
+            _ => {
+                if let Some(id) = e.attr("localId") {
+                    all_ids.insert(id.trim().to_string());
+                }
+                network_elements.push(e.clone());
+                continue;
+            }
+        };
+        let span = ctx.tag(e);
+        let Some(id) = e.attr("localId").map(str::trim).filter(|s| !s.is_empty()) else {
+            report(
+                ctx,
+                code::E3013,
+                span,
+                pou,
+                None,
+                format!("<{}> without a localId", e.name),
+            );
+            continue;
+        };
+        if ids.contains_key(id) || all_ids.contains(id) {
+            report(
+                ctx,
+                code::E3014,
+                span,
+                pou,
+                Some(id),
+                format!("localId {id} is used twice"),
+            );
+            continue;
+        }
+        if kind == NodeKind::Macro {
+            report(
+                ctx,
+                code::E3125,
+                span,
+                pou,
+                Some(id),
+                "macro steps are not supported: the sequence inside is not lowered".to_string(),
+            );
+        }
+        let mut step = None;
+        if kind == NodeKind::Step {
+            let name = e.attr("name").unwrap_or_default().trim().to_string();
+            let nspan = ctx.attr_span(e, "name");
+            if !crate::values::is_ident(&name) || name.contains("__") {
+                report(
+                    ctx,
+                    code::E3131,
+                    nspan,
+                    pou,
+                    Some(id),
+                    format!("step name `{name}` is not an IEC identifier"),
+                );
+                continue;
+            }
+            if let Some(&prev) = step_names.get(&name.to_ascii_uppercase()) {
+                let first: &Step = &steps[prev];
+                ctx.report(
+                    Diagnostic::error(code::E3131, format!("step name `{name}` is used twice"))
+                        .at(nspan)
+                        .with_label(first.span, "first used here")
+                        .with_xml(XmlContext {
+                            pou: Some(pou.to_string()),
+                            local_id: Some(id.to_string()),
+                            network: None,
+                        }),
+                );
+                continue;
+            }
+            step_names.insert(name.to_ascii_uppercase(), steps.len());
+            step = Some(steps.len());
+            steps.push(Step {
+                id: id.to_string(),
+                name,
+                initial: e
+                    .attr("initialStep")
+                    .is_some_and(|v| matches!(v.trim(), "true" | "1")),
+                span,
+            });
+        }
+        ids.insert(id.to_string(), nodes.len());
+        all_ids.insert(id.to_string());
+        nodes.push(Node {
+            kind,
+            el: e,
+            id: id.to_string(),
+            inputs: inputs(ctx, e),
+            step,
+        });
+    }
+
+    // Resolve inputs; E3120 for references to nothing. References to LD/FBD elements are only
+    // meaningful for conditions, which are read separately.
+    let mut resolved: Vec<Vec<usize>> = Vec::with_capacity(nodes.len());
+    for n in &nodes {
+        let mut r = Vec::new();
+        for (ref_id, span) in &n.inputs {
+            match ids.get(ref_id) {
+                Some(&i) => r.push(i),
+                None => {
+                    let what = if all_ids.contains(ref_id) {
+                        format!(
+                            "<{}> is connected to localId {ref_id}, which is not an SFC element",
+                            n.el.name
+                        )
+                    } else {
+                        format!("connection to localId {ref_id} which does not exist")
+                    };
+                    report(ctx, code::E3120, *span, pou, Some(&n.id), what);
+                }
+            }
+        }
+        resolved.push(r);
+    }
+    let mut consumers: Vec<Vec<usize>> = vec![Vec::new(); nodes.len()];
+    for (i, r) in resolved.iter().enumerate() {
+        for &from in r {
+            consumers[from].push(i);
+        }
+    }
+
+    let mut transitions = Vec::new();
+    for (i, n) in nodes.iter().enumerate() {
+        if n.kind != NodeKind::Transition {
+            continue;
+        }
+        let span = ctx.tag(n.el);
+        let mut pre = Vec::new();
+        let mut ok = true;
+        let mut seen = HashSet::new();
+        for &from in &resolved[i] {
+            ok &= pre_steps(ctx, &nodes, &resolved, from, &mut pre, &mut seen, pou);
+        }
+        if resolved[i].is_empty() {
+            // Dangling inputs were reported as E3120 already.
+            if n.inputs.is_empty() {
+                report(
+                    ctx,
+                    code::E3128,
+                    span,
+                    pou,
+                    Some(&n.id),
+                    "transition without a preceding step".to_string(),
+                );
+            }
+            ok = false;
+        }
+        let mut post = Vec::new();
+        let mut seen = HashSet::new();
+        ok &= post_steps(
+            ctx,
+            &nodes,
+            &consumers,
+            &step_names,
+            i,
+            &mut post,
+            &mut seen,
+            pou,
+        );
+        if ok && post.is_empty() {
+            report(
+                ctx,
+                code::E3128,
+                span,
+                pou,
+                Some(&n.id),
+                "transition without a following step".to_string(),
+            );
+            ok = false;
+        }
+        let Some(cond) = condition(ctx, n.el, pou, &n.id) else {
+            continue;
+        };
+        if !ok {
+            continue;
+        }
+        pre.dedup();
+        post.dedup();
+        let num = |a: &str| {
+            n.el.attr(a)
+                .and_then(|v| v.trim().parse::<u32>().ok())
+                .filter(|v| a == "priority" || *v > 0)
+                .unwrap_or(u32::MAX)
+        };
+        transitions.push(Transition {
+            id: n.id.clone(),
+            span,
+            cond,
+            pre,
+            post,
+            order: (
+                num("priority"),
+                num("executionOrderId"),
+                pos(n.el, "x"),
+                pos(n.el, "y"),
+                n.id.parse().unwrap_or(u64::MAX),
+            ),
+        });
+    }
+    transitions.sort_by_key(|t| t.order);
+
+    // Steps without a successor (E3121).
+    for n in &nodes {
+        if n.kind != NodeKind::Step {
+            continue;
+        }
+        let has_successor = consumers[ids[&n.id]]
+            .iter()
+            .any(|&c| nodes[c].kind != NodeKind::ActionBlock);
+        if !has_successor {
+            let name = n.step.map(|s| steps[s].name.clone()).unwrap_or_default();
+            report(
+                ctx,
+                code::E3121,
+                ctx.tag(n.el),
+                pou,
+                Some(&n.id),
+                format!("step `{name}` has no following transition: once active it stays active"),
+            );
+        }
+    }
+    if !steps.is_empty() && !steps.iter().any(|s| s.initial) {
+        report(
+            ctx,
+            code::E3124,
+            ctx.tag(sfc),
+            pou,
+            None,
+            "the chart has no initial step: no step would ever become active".to_string(),
+        );
+    }
+
+    // Action associations, blocks in order.
+    let mut blocks: Vec<(usize, (u32, i64, i64, u64))> = nodes
+        .iter()
+        .enumerate()
+        .filter(|(_, n)| n.kind == NodeKind::ActionBlock)
+        .map(|(i, n)| {
+            let exec =
+                n.el.attr("executionOrderId")
+                    .and_then(|v| v.trim().parse::<u32>().ok())
+                    .filter(|v| *v > 0)
+                    .unwrap_or(u32::MAX);
+            (
+                i,
+                (
+                    exec,
+                    pos(n.el, "y"),
+                    pos(n.el, "x"),
+                    n.id.parse().unwrap_or(u64::MAX),
+                ),
+            )
+        })
+        .collect();
+    blocks.sort_by_key(|b| b.1);
+    let mut associations = Vec::new();
+    for (i, _) in blocks {
+        let n = &nodes[i];
+        let step = match resolved[i].as_slice() {
+            [s] if nodes[*s].step.is_some() => nodes[*s].step,
+            [] if n.inputs.is_empty() => {
+                report(
+                    ctx,
+                    code::E3120,
+                    ctx.tag(n.el),
+                    pou,
+                    Some(&n.id),
+                    "action block is not connected to a step".to_string(),
+                );
+                None
+            }
+            [] => None, // dangling: reported above
+            _ => {
+                report(
+                    ctx,
+                    code::E3128,
+                    ctx.tag(n.el),
+                    pou,
+                    Some(&n.id),
+                    "an action block must be connected to exactly one step".to_string(),
+                );
+                None
+            }
+        };
+        let Some(step) = step else { continue };
+        for (k, a) in n.el.children_named("action").enumerate() {
+            associations.push(Association {
+                step,
+                block_id: n.id.clone(),
+                index: k,
+                el: a,
+            });
+        }
+    }
+
+    Chart {
+        steps,
+        transitions,
+        associations,
+        network_elements,
+    }
+}
+
+/// The steps that must be active for a transition whose input comes from `from`.
+fn pre_steps(
+    ctx: &mut Ctx,
+    nodes: &[Node],
+    resolved: &[Vec<usize>],
+    from: usize,
+    out: &mut Vec<usize>,
+    seen: &mut HashSet<usize>,
+    pou: &str,
+) -> bool {
+    if !seen.insert(from) {
+        return true;
+    }
+    let n = &nodes[from];
+    match n.kind {
+        NodeKind::Step => {
+            if let Some(s) = n.step {
+                out.push(s);
+            }
+            true
+        }
+        NodeKind::SelDiv | NodeKind::SimConv => {
+            if resolved[from].is_empty() {
+                report(
+                    ctx,
+                    code::E3120,
+                    ctx.tag(n.el),
+                    pou,
+                    Some(&n.id),
+                    format!("<{}> has no input connection", n.el.name),
+                );
+                return false;
+            }
+            let mut ok = true;
+            for &f in &resolved[from] {
+                ok &= pre_steps(ctx, nodes, resolved, f, out, seen, pou);
+            }
+            ok
+        }
+        NodeKind::Macro => false,
+        _ => {
+            report(
+                ctx,
+                code::E3128,
+                ctx.tag(n.el),
+                pou,
+                Some(&n.id),
+                format!(
+                    "<{}> cannot precede a transition (a step, selection divergence or simultaneous \
+                     convergence must)",
+                    n.el.name
+                ),
+            );
+            false
+        }
+    }
+}
+
+/// The steps a transition activates: its consumers, through convergences, divergences and jumps.
+#[allow(clippy::too_many_arguments)]
+fn post_steps(
+    ctx: &mut Ctx,
+    nodes: &[Node],
+    consumers: &[Vec<usize>],
+    step_names: &HashMap<String, usize>,
+    from: usize,
+    out: &mut Vec<usize>,
+    seen: &mut HashSet<usize>,
+    pou: &str,
+) -> bool {
+    let mut ok = true;
+    for &c in &consumers[from] {
+        if !seen.insert(c) {
+            continue;
+        }
+        let n = &nodes[c];
+        match n.kind {
+            NodeKind::Step => out.extend(n.step),
+            NodeKind::Jump => {
+                let target = n.el.attr("targetName").unwrap_or_default().trim();
+                match step_names.get(&target.to_ascii_uppercase()) {
+                    Some(&s) => out.push(s),
+                    None => {
+                        report(
+                            ctx,
+                            code::E3127,
+                            ctx.attr_span(n.el, "targetName"),
+                            pou,
+                            Some(&n.id),
+                            format!("jump to step `{target}`, which this chart does not define"),
+                        );
+                        ok = false;
+                    }
+                }
+            }
+            NodeKind::SelConv | NodeKind::SimDiv => {
+                ok &= post_steps(ctx, nodes, consumers, step_names, c, out, seen, pou);
+            }
+            NodeKind::Macro => ok = false,
+            _ => {
+                report(
+                    ctx,
+                    code::E3128,
+                    ctx.tag(n.el),
+                    pou,
+                    Some(&n.id),
+                    format!(
+                        "<{}> cannot follow a transition (a step, jump, selection convergence or \
+                         simultaneous divergence must)",
+                        n.el.name
+                    ),
+                );
+                ok = false;
+            }
+        }
+    }
+    ok
+}
+
+fn condition<'e, 'a>(
+    ctx: &mut Ctx,
+    t: &'e Element<'a>,
+    pou: &str,
+    id: &str,
+) -> Option<CondSource<'e, 'a>> {
+    let c = t.child("condition");
+    let found = c.and_then(|c| {
+        if let Some(r) = c.child("reference") {
+            let name = r.attr("name").unwrap_or_default().trim();
+            return Some(CondSource::Reference(name, ctx.attr_span(r, "name")));
+        }
+        if let Some(i) = c.child("inline") {
+            let lang = i
+                .children
+                .iter()
+                .find(|e| !matches!(e.name, "documentation" | "addData"))?;
+            return Some(CondSource::Inline(
+                lang,
+                i.attr("name").unwrap_or_default().trim(),
+            ));
+        }
+        if c.child("connectionPointIn").is_some() || c.child("connection").is_some() {
+            return Some(CondSource::Connection(c));
+        }
+        None
+    });
+    if found.is_none() {
+        report(
+            ctx,
+            code::E3126,
+            ctx.tag(t),
+            pou,
+            Some(id),
+            "transition without a condition (inline, reference or connection)".to_string(),
+        );
+    }
+    found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use diagnostics::{Diagnostics, SourceMap};
+
+    fn names(c: &Chart, idx: &[usize]) -> Vec<String> {
+        idx.iter().map(|&i| c.steps[i].name.clone()).collect()
+    }
+
+    #[test]
+    fn transitions_see_through_divergences_convergences_and_jumps() {
+        let xml = r#"<SFC>
+          <step localId="1" name="A" initialStep="true"/>
+          <simultaneousConvergence localId="9">
+            <connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+            <connectionPointIn><connection refLocalId="2"/></connectionPointIn>
+          </simultaneousConvergence>
+          <step localId="2" name="B" initialStep="true"/>
+          <selectionDivergence localId="3"><connectionPointIn><connection refLocalId="9"/></connectionPointIn></selectionDivergence>
+          <transition localId="4"><position x="50" y="0"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn>
+            <condition><reference name="go"/></condition></transition>
+          <transition localId="5"><position x="10" y="0"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn>
+            <condition><reference name="go"/></condition></transition>
+          <simultaneousDivergence localId="6"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></simultaneousDivergence>
+          <step localId="7" name="C"><connectionPointIn><connection refLocalId="6"/></connectionPointIn></step>
+          <jumpStep localId="8" targetName="A"><connectionPointIn><connection refLocalId="6"/></connectionPointIn></jumpStep>
+          <selectionConvergence localId="10"><connectionPointIn><connection refLocalId="5"/></connectionPointIn></selectionConvergence>
+          <step localId="11" name="D"><connectionPointIn><connection refLocalId="10"/></connectionPointIn></step>
+        </SFC>"#;
+        let (root, err) = crate::xml::parse(xml);
+        assert!(err.is_none());
+        let root = root.unwrap();
+        let mut map = SourceMap::new();
+        let file = map.add("t.xml", xml);
+        let mut diags = Diagnostics::new();
+        let mut ctx = Ctx {
+            file,
+            xml,
+            diags: &mut diags,
+        };
+        let c = read(&mut ctx, &root, "P");
+        // Left to right: 5 (x=10) before 4 (x=50).
+        let ids: Vec<&str> = c.transitions.iter().map(|t| t.id.as_str()).collect();
+        assert_eq!(ids, ["5", "4"]);
+        // Both need A and B (simultaneous convergence, then a selection divergence).
+        assert_eq!(names(&c, &c.transitions[0].pre), ["A", "B"]);
+        assert_eq!(names(&c, &c.transitions[1].pre), ["A", "B"]);
+        // 5 leads through a selection convergence to D; 4 through a simultaneous divergence to C and
+        // (by the jump) A.
+        assert_eq!(names(&c, &c.transitions[0].post), ["D"]);
+        assert_eq!(names(&c, &c.transitions[1].post), ["C", "A"]);
+        // C and D have no following transition.
+        let codes: Vec<String> = diags.iter().map(|d| d.code.to_string()).collect();
+        assert_eq!(codes, ["E3121", "E3121"], "{codes:?}");
+    }
+}

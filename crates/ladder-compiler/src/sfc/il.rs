@@ -1,0 +1,239 @@
+//! Small builders for the IL statements the SFC lowering emits, the hidden declarations it needs, and
+//! the renaming pass that maps chart names (`Step.X`, `Step.T`, `Action.Q`, `Action.A`, a sub-body's
+//! hidden variables and labels) to the hidden variables of the POU.
+//!
+//! Input: names and spans. Output: `ast::IlStmt`s and `ast::VarDecl`s (built with `VarDecl::new`).
+//! Invariants: hidden names start with `__`, which IEC identifiers cannot, so they never clash with
+//! user names; a name is declared once.
+
+use il_frontend::ast::{
+    Accessor, ArgDir, CallArgs, Condition, FormalArg, Ident, IlStmt, Initializer, InstrKind,
+    Instruction, Literal, LiteralKind, Op, Operand, TypeRef, VarDecl, VarRef,
+};
+use il_frontend::Span;
+use std::collections::{HashMap, HashSet};
+
+pub fn var(name: &str, span: Span) -> Operand {
+    Operand::Var(var_ref(name, span))
+}
+
+pub fn var_ref(name: &str, span: Span) -> VarRef {
+    VarRef {
+        base: Ident::new(name, span),
+        accessors: Vec::new(),
+        span,
+    }
+}
+
+pub fn field(base: &str, f: &str, span: Span) -> Operand {
+    Operand::Var(VarRef {
+        base: Ident::new(base, span),
+        accessors: vec![Accessor::Field(Ident::new(f, span))],
+        span,
+    })
+}
+
+pub fn lit_bool(b: bool, span: Span) -> Operand {
+    Operand::Literal(Literal {
+        kind: LiteralKind::Bool(b),
+        type_prefix: None,
+        span,
+    })
+}
+
+pub fn lit_time(ns: i128, span: Span) -> Operand {
+    Operand::Literal(Literal {
+        kind: LiteralKind::Duration(ns),
+        type_prefix: None,
+        span,
+    })
+}
+
+pub fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt {
+    IlStmt::Instr(Instruction {
+        kind: InstrKind::Simple {
+            op,
+            negate,
+            operand,
+        },
+        span,
+    })
+}
+
+pub fn op(op: Op, operand: Operand) -> IlStmt {
+    let span = operand.span();
+    simple(op, false, Some(operand), span)
+}
+
+pub fn opn(op: Op, operand: Operand) -> IlStmt {
+    let span = operand.span();
+    simple(op, true, Some(operand), span)
+}
+
+/// `OR( first ... )`: the operator applied to the value of a nested list.
+pub fn deferred(o: Op, body: Vec<IlStmt>, span: Span) -> IlStmt {
+    IlStmt::Instr(Instruction {
+        kind: InstrKind::Deferred {
+            op: o,
+            negate: false,
+            operand: None,
+            body,
+            close: span,
+        },
+        span,
+    })
+}
+
+/// `CAL inst(a := x, ...)`.
+pub fn call(inst: &str, args: Vec<(&str, Operand)>, span: Span) -> IlStmt {
+    IlStmt::Instr(Instruction {
+        kind: InstrKind::Call {
+            cond: Condition::Always,
+            instance: var_ref(inst, span),
+            args: CallArgs::Formal(
+                args.into_iter()
+                    .map(|(n, v)| FormalArg {
+                        name: Ident::new(n, span),
+                        dir: ArgDir::Input,
+                        value: v,
+                        span,
+                    })
+                    .collect(),
+            ),
+        },
+        span,
+    })
+}
+
+/// `SEL a, b` with the current result as selector.
+pub fn sel(a: Operand, b: Operand, span: Span) -> IlStmt {
+    IlStmt::Instr(Instruction {
+        kind: InstrKind::FunctionCall {
+            name: Ident::new("SEL", span),
+            args: CallArgs::NonFormal(vec![a, b]),
+        },
+        span,
+    })
+}
+
+pub fn jump_if_false(label: &str, span: Span) -> IlStmt {
+    IlStmt::Instr(Instruction {
+        kind: InstrKind::Jump {
+            cond: Condition::IfFalse,
+            label: Ident::new(label, span),
+        },
+        span,
+    })
+}
+
+pub fn label(name: &str, span: Span) -> IlStmt {
+    IlStmt::Label(Ident::new(name, span))
+}
+
+pub fn named_type(name: &str, span: Span) -> TypeRef {
+    TypeRef::Named(Ident::new(name, span))
+}
+
+/// The hidden declarations of the chart, in declaration order.
+#[derive(Default)]
+pub struct Hidden {
+    pub vars: Vec<VarDecl>,
+    names: HashSet<String>,
+}
+
+impl Hidden {
+    pub fn declare(&mut self, name: &str, ty: &str, init: Option<Operand>, span: Span) {
+        if self.names.insert(name.to_ascii_uppercase()) {
+            let mut d = VarDecl::new(Ident::new(name, span), named_type(ty, span), span);
+            if let Some(i) = init {
+                d = d.with_init(Initializer::Value(i));
+            }
+            self.vars.push(d);
+        }
+    }
+    pub fn push(&mut self, d: VarDecl) {
+        if self.names.insert(d.name.key()) {
+            self.vars.push(d);
+        }
+    }
+}
+
+/// What the renaming pass maps.
+#[derive(Default)]
+pub struct Renames {
+    /// Upper-case base name -> new base name (whole variable, accessors kept).
+    pub bases: HashMap<String, String>,
+    /// (upper-case base, upper-case field) -> new variable (the accessor is dropped): `Step.X`.
+    pub fields: HashMap<(String, String), String>,
+    /// Prefix for every label and jump target (empty: labels kept).
+    pub label_prefix: String,
+}
+
+impl Renames {
+    pub fn apply(&self, stmts: &mut [IlStmt]) {
+        for s in stmts {
+            match s {
+                IlStmt::Label(l) => self.label(l),
+                IlStmt::Instr(i) => self.instr(&mut i.kind),
+            }
+        }
+    }
+    fn label(&self, l: &mut Ident) {
+        if !self.label_prefix.is_empty() {
+            l.name = format!("{}{}", self.label_prefix, l.name);
+        }
+    }
+    fn instr(&self, k: &mut InstrKind) {
+        match k {
+            InstrKind::Simple { operand, .. } => {
+                if let Some(o) = operand {
+                    self.operand(o);
+                }
+            }
+            InstrKind::Deferred { operand, body, .. } => {
+                if let Some(o) = operand {
+                    self.operand(o);
+                }
+                self.apply(body);
+            }
+            InstrKind::Jump { label, .. } => self.label(label),
+            InstrKind::Return { .. } | InstrKind::EmbeddedC { .. } => {}
+            InstrKind::Call { instance, args, .. } => {
+                self.var(instance);
+                self.args(args);
+            }
+            InstrKind::FunctionCall { args, .. } => self.args(args),
+            InstrKind::FbInput { instance, .. } => self.var(instance),
+        }
+    }
+    fn args(&self, a: &mut CallArgs) {
+        match a {
+            CallArgs::None => {}
+            CallArgs::NonFormal(ops) => ops.iter_mut().for_each(|o| self.operand(o)),
+            CallArgs::Formal(f) => f.iter_mut().for_each(|a| self.operand(&mut a.value)),
+        }
+    }
+    pub fn operand(&self, o: &mut Operand) {
+        if let Operand::Var(v) = o {
+            self.var(v);
+        }
+    }
+    fn var(&self, v: &mut VarRef) {
+        for a in &mut v.accessors {
+            if let Accessor::Index(ix) = a {
+                ix.iter_mut().for_each(|o| self.operand(o));
+            }
+        }
+        let key = v.base.key();
+        if let [Accessor::Field(f)] = v.accessors.as_slice() {
+            if let Some(new) = self.fields.get(&(key.clone(), f.key())) {
+                v.base.name = new.clone();
+                v.accessors.clear();
+                return;
+            }
+        }
+        if let Some(new) = self.bases.get(&key) {
+            v.base.name = new.clone();
+        }
+    }
+}

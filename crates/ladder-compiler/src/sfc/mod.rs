@@ -1,0 +1,492 @@
+//! Sequential Function Chart bodies (IEC 61131-3 2nd ed. 2.6) lowered to the IL syntax tree.
+//!
+//! Input: a POU's `<SFC>` element, the POU (interface) and the project index. Output: IL statements for
+//! one scan of the chart and the hidden variables they use (one extra `VAR` block).
+//! Invariants: every scan runs, in this order (documented in the README):
+//! 1. the LD/FBD elements of the body (connection-based conditions), then every transition condition,
+//!    each into `__sfc_c<localId>`, all on the step flags as they were at the start of the scan;
+//! 2. which transitions fire (`__sfc_f<localId>`): all predecessor steps active, condition TRUE, and no
+//!    transition of higher priority sharing a predecessor step fires;
+//! 3. all fired transitions deactivate their predecessors, then activate their successors (one
+//!    evolution per scan, no cascade);
+//! 4. step elapsed times (`Step.T`, a TON per step);
+//! 5. action control for every action (IEC ACTION_CONTROL), then action bodies whose `A` is TRUE.
+//!
+//! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
+//! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
+
+pub mod actions;
+pub mod chart;
+pub mod il;
+pub mod snippet;
+pub mod st_bridge;
+
+use crate::context::Ctx;
+use crate::graph::{self, Kind, Node, Wire};
+use crate::lower::BodyLowering;
+use crate::project::Index;
+use crate::xml::Element;
+use actions::Target;
+use chart::{report, CondSource};
+use diagnostics::code;
+use il::{Hidden, Renames};
+use il_frontend::ast::{IlStmt, Op, Pou, VarDecl};
+use snippet::{Purpose, Snippets};
+
+/// The hidden names of the chart.
+pub mod names {
+    pub fn x(step: &str) -> String {
+        format!("__sfc_X_{step}")
+    }
+    pub fn t(step: &str) -> String {
+        format!("__sfc_T_{step}")
+    }
+    pub fn timer(step: &str) -> String {
+        format!("__sfc_TT_{step}")
+    }
+    pub fn cond(id: &str) -> String {
+        format!("__sfc_c{}", super::sanitize(id))
+    }
+    pub fn fire(id: &str) -> String {
+        format!("__sfc_f{}", super::sanitize(id))
+    }
+    pub fn q(action: &str) -> String {
+        format!("__sfc_Q_{action}")
+    }
+    pub fn a(action: &str) -> String {
+        format!("__sfc_A_{action}")
+    }
+    pub fn action_part(action: &str, part: &str) -> String {
+        format!("__sfc_{part}_{action}")
+    }
+}
+
+fn sanitize(id: &str) -> String {
+    id.chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect()
+}
+
+/// `Step.T` counts up to this (100000 days) and then stays there.
+const STEP_TIME_LIMIT_NS: i128 = 100_000 * 86_400 * 1_000_000_000;
+
+/// Lowers an `<SFC>` body: the statements and the hidden declarations.
+pub fn lower(
+    ctx: &mut Ctx,
+    index: &Index,
+    pou_el: &Element,
+    pou: &Pou,
+    sfc: &Element,
+) -> (Vec<IlStmt>, Vec<VarDecl>) {
+    let pou_name = pou.name.name.clone();
+    if pou.kind == il_frontend::ast::PouKind::Function {
+        report(
+            ctx,
+            code::E3125,
+            ctx.tag(sfc),
+            &pou_name,
+            None,
+            format!(
+                "function `{pou_name}` is a sequential function chart: a function keeps no state \
+                 between calls, so it cannot remember its active steps (make it a function block or a program)"
+            ),
+        );
+        return (Vec::new(), Vec::new());
+    }
+    let chart = chart::read(ctx, sfc, &pou_name);
+    let mut hidden = Hidden::default();
+    let mut out: Vec<IlStmt> = Vec::new();
+    let body_span = ctx.tag(sfc);
+    // Actions are known before any body is lowered (ST needs their names for `Action.Q`).
+    let acts = actions::collect(ctx, pou_el, pou, index, &chart.steps, &chart.associations);
+    let decls = st_bridge::declarations(index, pou.span);
+    let step_names: Vec<String> = chart.steps.iter().map(|s| s.name.clone()).collect();
+    let action_names: Vec<String> = acts.iter().filter_map(|a| a.name.clone()).collect();
+    let st = st_bridge::StLowering::new(&decls, pou, &step_names, &action_names);
+    let mut snippets = Snippets::new(index, pou, st);
+
+    // Step flags first (the initial ones start TRUE).
+    for s in &chart.steps {
+        let init = s.initial.then(|| il::lit_bool(true, s.span));
+        hidden.declare(&names::x(&s.name), "BOOL", init, s.span);
+        hidden.declare(&names::t(&s.name), "TIME", None, s.span);
+    }
+
+    // Step times, refreshed with this scan's clock before the conditions read them.
+    step_times(&chart.steps, &mut hidden, &mut out);
+
+    // 1. Conditions.
+    let connected: Vec<&chart::Transition> = chart
+        .transitions
+        .iter()
+        .filter(|t| matches!(t.cond, CondSource::Connection(_)))
+        .collect();
+    if !chart.network_elements.is_empty() || !connected.is_empty() {
+        networks(ctx, index, pou, sfc, &chart, &mut hidden, &mut out);
+    }
+    let named_transitions: Vec<&Element> = pou_el
+        .child("transitions")
+        .map(|t| t.children_named("transition").collect())
+        .unwrap_or_default();
+    let mut usable = vec![true; chart.transitions.len()];
+    let mut evaluated: std::collections::HashMap<String, bool> = std::collections::HashMap::new();
+    for (ti, t) in chart.transitions.iter().enumerate() {
+        let c = names::cond(&t.id);
+        hidden.declare(&c, "BOOL", None, t.span);
+        hidden.declare(&names::fire(&t.id), "BOOL", None, t.span);
+        let owner = format!("transition {}", t.id);
+        match t.cond {
+            CondSource::Connection(_) => {}
+            CondSource::Inline(lang, name) => {
+                let purpose = Purpose::Condition { result: &c, name };
+                match snippets.lower(ctx, lang, purpose, &mut hidden, &owner) {
+                    Some(code) => out.extend(code),
+                    None => usable[ti] = false,
+                }
+            }
+            CondSource::Reference(name, nspan) => {
+                let body = named_transitions.iter().find(|e| {
+                    e.attr("name")
+                        .is_some_and(|n| n.trim().eq_ignore_ascii_case(name))
+                });
+                if let Some(tr) = body {
+                    let lang = tr.child("body").and_then(|b| {
+                        b.children
+                            .iter()
+                            .find(|c| !matches!(c.name, "documentation" | "addData"))
+                    });
+                    let Some(lang) = lang else {
+                        report(
+                            ctx,
+                            code::E3130,
+                            ctx.tag(tr),
+                            &pou_name,
+                            None,
+                            format!("named transition `{name}` has no body"),
+                        );
+                        usable[ti] = false;
+                        continue;
+                    };
+                    // A named transition is evaluated once per scan, however many use it.
+                    let nv = format!("__sfc_n_{}", sanitize(name));
+                    let key = name.to_ascii_uppercase();
+                    if !evaluated.contains_key(&key) {
+                        hidden.declare(&nv, "BOOL", None, t.span);
+                        let purpose = Purpose::Condition { result: &nv, name };
+                        let owner = format!("named transition `{name}`");
+                        let ok = match snippets.lower(ctx, lang, purpose, &mut hidden, &owner) {
+                            Some(code) => {
+                                out.extend(code);
+                                true
+                            }
+                            None => false,
+                        };
+                        evaluated.insert(key.clone(), ok);
+                    }
+                    if evaluated[&key] {
+                        out.push(il::op(Op::Ld, il::var(&nv, t.span)));
+                        out.push(il::op(Op::St, il::var(&c, t.span)));
+                    } else {
+                        usable[ti] = false;
+                    }
+                } else if let Some(op) = declared_bool(index, pou, name, nspan) {
+                    out.push(il::op(Op::Ld, op));
+                    out.push(il::op(Op::St, il::var(&c, t.span)));
+                } else {
+                    report(
+                        ctx,
+                        code::E3130,
+                        nspan,
+                        &pou_name,
+                        Some(&t.id),
+                        format!(
+                            "transition {} refers to `{name}`, which is neither a named transition of \
+                             the POU nor a BOOL variable",
+                            t.id
+                        ),
+                    );
+                    usable[ti] = false;
+                }
+            }
+        }
+    }
+
+    // 2. Which transitions fire.
+    for (ti, t) in chart.transitions.iter().enumerate() {
+        let f = names::fire(&t.id);
+        let span = t.span;
+        if !usable[ti] {
+            out.push(il::op(Op::Ld, il::lit_bool(false, span)));
+            out.push(il::op(Op::St, il::var(&f, span)));
+            continue;
+        }
+        let mut first = true;
+        for &s in &t.pre {
+            let x = il::var(&names::x(&chart.steps[s].name), span);
+            out.push(il::op(if first { Op::Ld } else { Op::And }, x));
+            first = false;
+        }
+        out.push(il::op(Op::And, il::var(&names::cond(&t.id), span)));
+        for h in &chart.transitions[..ti] {
+            if h.pre.iter().any(|p| t.pre.contains(p)) {
+                out.push(il::opn(Op::And, il::var(&names::fire(&h.id), span)));
+            }
+        }
+        out.push(il::op(Op::St, il::var(&f, span)));
+    }
+
+    // 3. Evolution: deactivate, then activate.
+    for t in &chart.transitions {
+        out.push(il::op(Op::Ld, il::var(&names::fire(&t.id), t.span)));
+        for &s in &t.pre {
+            out.push(il::op(
+                Op::R,
+                il::var(&names::x(&chart.steps[s].name), t.span),
+            ));
+        }
+    }
+    for t in &chart.transitions {
+        out.push(il::op(Op::Ld, il::var(&names::fire(&t.id), t.span)));
+        for &s in &t.post {
+            out.push(il::op(
+                Op::S,
+                il::var(&names::x(&chart.steps[s].name), t.span),
+            ));
+        }
+    }
+
+    // 4. Step times, after the evolution: a step activated in this scan starts from 0 now. A step
+    // left and re-entered by the same transition (a loop on itself) restarts too: its timer sees
+    // IN = FALSE once before the regular call.
+    for (si, s) in chart.steps.iter().enumerate() {
+        let loops: Vec<&chart::Transition> = chart
+            .transitions
+            .iter()
+            .filter(|t| t.pre.contains(&si) && t.post.contains(&si))
+            .collect();
+        if loops.is_empty() {
+            continue;
+        }
+        let k = format!("__sfc_K_{}", s.name);
+        hidden.declare(&k, "BOOL", None, s.span);
+        out.push(il::op(Op::Ld, il::var(&names::x(&s.name), s.span)));
+        for t in loops {
+            out.push(il::opn(Op::And, il::var(&names::fire(&t.id), s.span)));
+        }
+        out.push(il::op(Op::St, il::var(&k, s.span)));
+        out.push(il::call(
+            &names::timer(&s.name),
+            vec![
+                ("IN", il::var(&k, s.span)),
+                ("PT", il::lit_time(STEP_TIME_LIMIT_NS, s.span)),
+            ],
+            s.span,
+        ));
+    }
+    step_times(&chart.steps, &mut hidden, &mut out);
+
+    // 5. Actions: control, then bodies.
+    for a in &acts {
+        actions::control(a, &chart.steps, &mut hidden, &mut out);
+    }
+    for a in &acts {
+        let Target::Body(lang) = a.target else {
+            continue;
+        };
+        let Some(code) = snippets.lower(ctx, lang, Purpose::Action, &mut hidden, &a.display) else {
+            continue;
+        };
+        let skip = format!("__sfc_skip_{}", a.key);
+        out.push(il::op(Op::Ld, il::var(&names::a(&a.key), a.span)));
+        out.push(il::jump_if_false(&skip, a.span));
+        out.extend(code);
+        out.push(il::label(&skip, a.span));
+    }
+
+    // Chart names in conditions and bodies.
+    let mut renames = Renames::default();
+    for s in &chart.steps {
+        let k = s.name.to_ascii_uppercase();
+        renames
+            .fields
+            .insert((k.clone(), "X".into()), names::x(&s.name));
+        renames.fields.insert((k, "T".into()), names::t(&s.name));
+    }
+    for a in &acts {
+        if let Some(n) = &a.name {
+            let k = n.to_ascii_uppercase();
+            renames
+                .fields
+                .insert((k.clone(), "Q".into()), names::q(&a.key));
+            renames.fields.insert((k, "A".into()), names::a(&a.key));
+        }
+    }
+    for v in snippets.finish(body_span) {
+        hidden.push(v);
+    }
+    renames.apply(&mut out);
+    (out, hidden.vars)
+}
+
+/// `Step.T`: a TON per step (IN = the step flag) gives the time since activation; `T` follows it while
+/// the step is active and keeps its last value after. Called twice per scan (before the conditions,
+/// with this scan's clock; after the evolution, to start the timers of the steps just activated), so
+/// `T` is exact in conditions and in actions.
+fn step_times(steps: &[chart::Step], hidden: &mut Hidden, out: &mut Vec<IlStmt>) {
+    for s in steps {
+        let (x, t, tt) = (names::x(&s.name), names::t(&s.name), names::timer(&s.name));
+        hidden.declare(&tt, "TON", None, s.span);
+        out.push(il::call(
+            &tt,
+            vec![
+                ("IN", il::var(&x, s.span)),
+                ("PT", il::lit_time(STEP_TIME_LIMIT_NS, s.span)),
+            ],
+            s.span,
+        ));
+        out.push(il::op(Op::Ld, il::var(&x, s.span)));
+        out.push(il::sel(
+            il::var(&t, s.span),
+            il::field(&tt, "ET", s.span),
+            s.span,
+        ));
+        out.push(il::op(Op::St, il::var(&t, s.span)));
+    }
+}
+
+/// A declared BOOL variable (of the POU or global) named `name`, as an operand.
+fn declared_bool(
+    index: &Index,
+    pou: &Pou,
+    name: &str,
+    span: il_frontend::Span,
+) -> Option<il_frontend::ast::Operand> {
+    let key = name.to_ascii_uppercase();
+    let ty = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .find(|v| v.name.key() == key)
+        .map(|v| &v.ty)
+        .or_else(|| index.globals.get(&key))?;
+    match ty {
+        il_frontend::ast::TypeRef::Named(n) if n.is("BOOL") => {
+            crate::values::var_ref(name, span).map(il_frontend::ast::Operand::Var)
+        }
+        _ => None,
+    }
+}
+
+/// The LD/FBD elements of the chart body, with one output variable per connection-based condition
+/// (`__sfc_c<localId>`), lowered as networks like an LD/FBD body.
+fn networks(
+    ctx: &mut Ctx,
+    index: &Index,
+    pou: &Pou,
+    sfc: &Element,
+    chart: &chart::Chart,
+    hidden: &mut Hidden,
+    out: &mut Vec<IlStmt>,
+) {
+    let pou_name = pou.name.name.clone();
+    let body = Element {
+        children: chart.network_elements.clone().into_boxed_slice(),
+        ..sfc.clone()
+    };
+    let mut g = graph::read(ctx, &body, &pou_name);
+    let ids: std::collections::HashMap<String, usize> = g
+        .nodes
+        .iter()
+        .enumerate()
+        .map(|(i, n)| (n.id.clone(), i))
+        .collect();
+    for t in &chart.transitions {
+        let CondSource::Connection(c) = t.cond else {
+            continue;
+        };
+        let conns: Vec<&Element> = c
+            .children_named("connectionPointIn")
+            .flat_map(|p| p.children_named("connection"))
+            .chain(c.children_named("connection"))
+            .collect();
+        let mut wires = Vec::new();
+        for conn in conns {
+            let r = conn.attr("refLocalId").unwrap_or_default().trim();
+            match ids.get(r) {
+                Some(&from) => wires.push(Wire {
+                    from,
+                    pin: conn
+                        .attr("formalParameter")
+                        .map(|s| s.trim().to_string())
+                        .filter(|s| !s.is_empty()),
+                    span: ctx.tag(conn),
+                }),
+                None => report(
+                    ctx,
+                    code::E3120,
+                    ctx.tag(conn),
+                    &pou_name,
+                    Some(&t.id),
+                    format!(
+                        "the condition of transition {} is connected to localId {r}, which is not an \
+                         LD/FBD element of this chart",
+                        t.id
+                    ),
+                ),
+            }
+        }
+        if wires.is_empty() {
+            report(
+                ctx,
+                code::E3126,
+                t.span,
+                &pou_name,
+                Some(&t.id),
+                format!("transition {} has an unconnected condition", t.id),
+            );
+            continue;
+        }
+        let idx = g.nodes.len();
+        g.nodes.push(Node {
+            id: t.id.clone(),
+            num: u64::MAX,
+            kind: Kind::OutVar {
+                expr: names::cond(&t.id),
+                expr_span: t.span,
+                negated: false,
+            },
+            span: t.span,
+            exec_order: None,
+            x: i64::MAX,
+            y: i64::MAX,
+            input: wires,
+            has_input: true,
+            wired: true,
+        });
+        // The condition joins the network(s) of its sources (merged when it reads several).
+        let sources: Vec<usize> = g.nodes[idx].input.iter().map(|w| w.from).collect();
+        let mut merged: Vec<usize> = Vec::new();
+        let mut keep = Vec::new();
+        for net in std::mem::take(&mut g.networks) {
+            if sources.iter().any(|s| net.contains(s)) {
+                if merged.is_empty() {
+                    keep.push(Vec::new()); // placeholder at the first merged network's place
+                }
+                merged.extend(net);
+            } else {
+                keep.push(net);
+            }
+        }
+        merged.push(idx);
+        match keep.iter_mut().find(|n| n.is_empty()) {
+            Some(slot) => *slot = merged,
+            None => keep.push(merged),
+        }
+        g.networks = keep;
+    }
+    let mut low = BodyLowering::new(index, pou, ctx.tag(sfc));
+    out.extend(low.lower(ctx, &g));
+    for v in low.hidden_vars() {
+        hidden.push(v);
+    }
+}

@@ -1,0 +1,111 @@
+//! ST bodies embedded in the XML: the text of `<ST>` is rebuilt in place (see
+//! [`crate::il_body::embedded_text`]), parsed and lowered to IL by `il_frontend::st`.
+//!
+//! Input: the `<ST>` element, the POU header, the project [`Index`]. Output: the IL body and the
+//! `VAR_TEMP` block of the temporaries it needs. Invariants: every diagnostic points into the XML file
+//! and names the POU; the POU keeps its interface whatever the body contains.
+
+use crate::context::Ctx;
+use crate::project::Index;
+use crate::xml::Element;
+use diagnostics::{Diagnostics, XmlContext};
+use il_frontend::ast::{IlStmt, Pou, VarBlock};
+use il_frontend::st::{Declarations, PouInterface};
+
+/// What the ST lowering needs to know about the project: data types, POU interfaces, globals.
+pub fn declarations(index: &Index) -> Declarations {
+    let mut d = Declarations::new();
+    for t in index.types.values() {
+        d.add_type(t.clone());
+    }
+    for p in index.pous.values() {
+        d.add_pou_interface(PouInterface {
+            kind: p.kind,
+            name: p.name.clone(),
+            vars: p.pins.clone(),
+            ret: p.ret.clone(),
+        });
+    }
+    for (name, ty) in &index.globals {
+        d.add_global(name, ty.clone());
+    }
+    d
+}
+
+/// Parses and lowers the ST body of `pou` in place (spans point into the XML file).
+pub fn lower(
+    ctx: &mut Ctx,
+    index: &Index,
+    e: &Element,
+    pou: &Pou,
+) -> (Vec<IlStmt>, Option<VarBlock>) {
+    let mut t = crate::il_body::embedded_text(e);
+    join_split_operators(&mut t.text, t.base, ctx.xml);
+    let decls = declarations(index);
+    let mut local = Diagnostics::new();
+    let span = ctx.tag(e);
+    let out =
+        il_frontend::st::compile_body(ctx.file, &t.text, t.base, &decls, pou, span, &mut local);
+    for d in local {
+        let d = if d.xml.is_none() {
+            d.with_xml(XmlContext {
+                pou: Some(pou.name.name.clone()),
+                ..Default::default()
+            })
+        } else {
+            d
+        };
+        ctx.report(d);
+    }
+    out
+}
+
+/// Joins operators that XML entities split: `&lt;=` is rebuilt as `<` plus padding, which would read
+/// as `<` then `=`. An entity-decoded `<`/`>` whose padding is followed by a character that continues
+/// the operator (`=`, or `>` after `<`) is moved to the end of its padding: `   <=` instead of `<   =`.
+/// Positions stay inside the entity.
+pub fn join_split_operators(text: &mut String, base: usize, xml: &str) {
+    let bytes = xml.as_bytes();
+    let mut t = std::mem::take(text).into_bytes();
+    let mut k = 0;
+    while k < t.len() {
+        let c = t[k];
+        if (c == b'<' || c == b'>') && bytes.get(base + k) == Some(&b'&') {
+            let pad = t[k + 1..].iter().take_while(|&&b| b == b' ').count();
+            let entity_len = xml[base + k..].find(';').map_or(0, |n| n + 1);
+            if pad > 0 && pad + 1 == entity_len {
+                let next = t.get(k + 1 + pad).copied();
+                if next == Some(b'=') || (c == b'<' && next == Some(b'>')) {
+                    t[k] = b' ';
+                    t[k + pad] = c;
+                }
+            }
+            k += 1 + pad;
+            continue;
+        }
+        k += 1;
+    }
+    *text = String::from_utf8(t).unwrap_or_default();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn entities_that_split_operators_are_joined() {
+        let xml = "<ST><p>IF a &lt;&gt; b AND c &gt;= d AND e &lt;= f THEN x(Q =&gt; y);</p></ST>";
+        let (root, _) = crate::xml::parse(xml);
+        let mut t = crate::il_body::embedded_text(&root.unwrap());
+        join_split_operators(&mut t.text, t.base, xml);
+        let words: Vec<&str> = t.text.split_whitespace().collect();
+        assert_eq!(
+            words,
+            [
+                "IF", "a", "<>", "b", "AND", "c", ">=", "d", "AND", "e", "<=", "f", "THEN", "x(Q",
+                "=>", "y);"
+            ]
+        );
+        assert_eq!(t.text.len(), xml.len() - t.base - "</p></ST>".len());
+    }
+}
