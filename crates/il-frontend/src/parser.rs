@@ -34,7 +34,9 @@ pub enum Parsed {
 /// One top-level item while collecting a compilation unit.
 pub enum TopItem {
     Nothing,
-    Element(LibraryElement),
+    /// Boxed: a POU or configuration is large and rare, and every parser stack slot has the size of
+    /// the largest item.
+    Element(Box<LibraryElement>),
     Vars(VarBlock),
     Stmt(IlStmt),
 }
@@ -54,7 +56,7 @@ impl TopParts {
         let at = self.items.len();
         match item {
             TopItem::Nothing => {}
-            TopItem::Element(e) => self.items.push(e),
+            TopItem::Element(e) => self.items.push(*e),
             TopItem::Vars(v) if v.kind == VarKind::Global => {
                 self.items.push(LibraryElement::GlobalVars(v))
             }
@@ -92,12 +94,12 @@ pub struct PouParts {
     pub body: Vec<IlStmt>,
 }
 
-/// One item of a configuration or resource.
+/// One item of a configuration or resource (large items boxed: see [`TopItem::Element`]).
 pub enum ConfigItem {
     Vars(VarBlock),
-    Resource(Resource),
-    Task(Task),
-    Program(ProgramInstance),
+    Resource(Box<Resource>),
+    Task(Box<Task>),
+    Program(Box<ProgramInstance>),
     Nothing,
 }
 
@@ -534,9 +536,9 @@ impl<'s> Ctx<'s> {
         for item in items {
             match item {
                 ConfigItem::Vars(v) => globals.push(v),
-                ConfigItem::Resource(res) => resources.push(res),
-                ConfigItem::Task(t) => loose.tasks.push(t),
-                ConfigItem::Program(p) => loose.programs.push(p),
+                ConfigItem::Resource(res) => resources.push(*res),
+                ConfigItem::Task(t) => loose.tasks.push(*t),
+                ConfigItem::Program(p) => loose.programs.push(*p),
                 ConfigItem::Nothing => {}
             }
         }
@@ -570,8 +572,8 @@ impl<'s> Ctx<'s> {
         for item in items {
             match item {
                 ConfigItem::Vars(v) => res.globals.push(v),
-                ConfigItem::Task(t) => res.tasks.push(t),
-                ConfigItem::Program(p) => res.programs.push(p),
+                ConfigItem::Task(t) => res.tasks.push(*t),
+                ConfigItem::Program(p) => res.programs.push(*p),
                 ConfigItem::Resource(inner) => {
                     let (s, e) = self.local(inner.name.span);
                     self.hint(

@@ -5,6 +5,7 @@
 //! "no size limits" check). Output: a table of median wall and CPU time of parse + sema + C generation,
 //! per stage, and the peak resident memory of each job, with the ratios against matiec's iec2c anchor
 //! stated in the issue (8.2 s, 164 MB; goals: at least 50x faster, under 100 MB peak).
+//! `LADDERC_BENCH_DUMP=<file>` also writes the generated program (to time `ladderc build` on it).
 //! Invariants: every job runs in its own child process (see `common`), so its peak memory is its own;
 //! the compiled program must produce no error diagnostic, and the bench fails if it does.
 
@@ -78,6 +79,14 @@ fn print_main(r: &std::collections::BTreeMap<String, String>) {
             num(r, &format!("wall_{stage}")) * 1e3,
             num(r, &format!("cpu_{stage}")) * 1e3
         );
+        if stage == "parse" {
+            println!(
+                "{:<28} {:>10.1} {:>10.1}",
+                "  of which lex + layout",
+                num(r, "wall_lex") * 1e3,
+                num(r, "cpu_lex") * 1e3
+            );
+        }
     }
     println!();
     println!(
@@ -128,6 +137,24 @@ fn child(job: &str) {
     let runs = common::runs(runs);
     let baseline = common::status_kib("VmHWM");
     let src = il_frontend::testgen::generate(lines, pous);
+    // `LADDERC_BENCH_DUMP=<file>`: also write the program, e.g. to time `ladderc build` on it.
+    if let Ok(path) = std::env::var("LADDERC_BENCH_DUMP") {
+        std::fs::write(&path, &src).unwrap_or_else(|e| panic!("writing {path}: {e}"));
+    }
+    // Lexing and layout alone (the token stream the grammar reads), to split the parse stage.
+    let mut tokens = Vec::new();
+    let mut tokens_count = 0;
+    for _ in 0..runs {
+        let sw = Stopwatch::start();
+        let layout = il_frontend::layout::Layout::new(
+            FileId(0),
+            &src,
+            0,
+            il_frontend::lexer::Tok::UnitStart,
+        );
+        tokens_count = std::hint::black_box(layout.count());
+        tokens.push(sw.lap());
+    }
     let mut times: [Vec<f64>; 8] = Default::default();
     let mut peak = 0;
     let mut c_bytes = 0;
@@ -150,6 +177,9 @@ fn child(job: &str) {
     report("baseline_kib", baseline);
     report("peak_kib", peak);
     report("peak_after_all_runs_kib", common::status_kib("VmHWM"));
+    report("tokens", tokens_count);
+    report("wall_lex", median(tokens.iter().map(|t| t.0).collect()));
+    report("cpu_lex", median(tokens.iter().map(|t| t.1).collect()));
     let names = ["parse", "sema", "generate", "total"];
     for (i, name) in names.iter().enumerate() {
         report(&format!("wall_{name}"), median(times[2 * i].clone()));

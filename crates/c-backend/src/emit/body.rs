@@ -14,7 +14,7 @@ use crate::ctypes;
 use crate::mangle;
 use diagnostics::{code, Diagnostic, Span};
 use il_frontend::ast::{Condition, FbInputOp, IlStmt, InstrKind, Instruction, Op, Operand};
-use il_frontend::sema::{Callee, Elementary, InstrInfo, Type};
+use il_frontend::sema::{Callee, Elementary, InstrId, InstrInfo, Type};
 use std::collections::{BTreeMap, HashSet};
 
 use Elementary as E;
@@ -30,6 +30,8 @@ pub struct Body<'s, 'm> {
     pub targets: HashSet<String>,
     depth: usize,
     temps: usize,
+    /// The current-result locals already declared, by IEC type (a short list: one per C type used).
+    cr_names: Vec<(Type, String)>,
     /// For a FUNCTION: the C expression returned by RET.
     pub ret: String,
 }
@@ -44,6 +46,7 @@ impl<'s, 'm> Body<'s, 'm> {
             targets: HashSet::new(),
             depth: 0,
             temps: 0,
+            cr_names: Vec::new(),
             ret,
         }
     }
@@ -93,6 +96,9 @@ pub fn jump_targets(stmts: &[IlStmt], into: &mut HashSet<String>) {
 impl<'a> Gen<'a> {
     /// The current-result local for values of `ty` (declared on first use).
     pub(super) fn cr(&mut self, b: &mut Body, ty: &Type, span: Span) -> Option<String> {
+        if let Some((_, name)) = b.cr_names.iter().find(|(t, _)| t == ty) {
+            return Some(name.clone());
+        }
         let base = match ty {
             Type::Array { .. } => {
                 self.unsupported(span, "an array as the current result");
@@ -116,13 +122,19 @@ impl<'a> Gen<'a> {
             b.crs
                 .insert(name.clone(), format!("{base} {name} = {init};"));
         }
+        if b.cr_names.len() < 16 {
+            b.cr_names.push((ty.clone(), name.clone()));
+        }
         Some(name)
     }
 
     pub(super) fn info(&mut self, i: &Instruction) -> Option<&'a InstrInfo> {
         let model: &'a il_frontend::sema::Model = self.model;
-        match model.instr(i) {
-            Some(info) => Some(info),
+        match model.instrs.get_near(InstrId::of(i), self.instr_cursor) {
+            Some((at, info)) => {
+                self.instr_cursor = at + 1;
+                Some(info)
+            }
             None => {
                 self.report_once(
                     Diagnostic::error(
@@ -256,10 +268,15 @@ impl<'a> Gen<'a> {
         let Some(cr) = self.cr(b, &Type::BOOL, i.span) else {
             return;
         };
-        let before = self
+        let found = self
             .model
-            .instr(i)
-            .and_then(|x| x.cr_before.clone())
+            .instrs
+            .get_near(InstrId::of(i), self.instr_cursor);
+        if let Some((at, _)) = found {
+            self.instr_cursor = at + 1;
+        }
+        let before = found
+            .and_then(|(_, x)| x.cr_before.clone())
             .unwrap_or(Type::BOOL);
         let cr = if before.is_bool() {
             cr

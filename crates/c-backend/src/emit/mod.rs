@@ -35,7 +35,7 @@ pub struct Gen<'a> {
     /// Embedded functions: upper-case name -> C name.
     pub embedded: HashMap<String, String>,
     /// Free globals: upper-case name -> index in `Model::globals`.
-    pub free_globals: HashMap<String, usize>,
+    pub free_globals: rustc_hash::FxHashMap<String, usize>,
     /// (code, span) pairs already reported.
     pub reported: HashSet<(&'static str, Option<Span>)>,
     /// While > 0, diagnostics are suppressed (type probing).
@@ -50,6 +50,9 @@ pub struct Gen<'a> {
     pub methods: Vec<crate::PouMethod>,
     /// The motion runtime, when the program uses motion blocks.
     pub motion: Option<crate::motion::MotionRuntime>,
+    /// The position in `Model::instrs` after the last instruction looked up (bodies are read in
+    /// source order, so that is usually where the next one is).
+    pub(super) instr_cursor: usize,
 }
 
 impl<'a> Gen<'a> {
@@ -142,6 +145,7 @@ pub fn generate(
             .collect(),
         reported: HashSet::new(),
         quiet: 0,
+        instr_cursor: 0,
         address_spans: collect_address_spans(units),
         member_index: Default::default(),
         methods: ext.methods.clone(),

@@ -13,7 +13,10 @@ use crate::mangle;
 use crate::profile::Located;
 use diagnostics::{code, Diagnostic, Span};
 use il_frontend::ast::{Accessor, Literal, LiteralKind, Operand, PouKind, VarKind, VarRef};
-use il_frontend::sema::{Elementary, FbType, GlobalRef, Pou, PouId, Type, UserTypeDef, Variable};
+use il_frontend::sema::{
+    with_upper, Elementary, FbType, GlobalRef, Pou, PouId, Type, UserTypeDef, Variable,
+};
+use rustc_hash::FxHashMap;
 use std::collections::HashMap;
 
 use Elementary as E;
@@ -38,7 +41,9 @@ impl Place {
 /// The variables visible in a body: a POU's own, or (for configuration code) none.
 pub struct Scope<'m> {
     pub pou: Option<(&'m Pou, PouId)>,
-    vars: HashMap<String, usize>,
+    vars: FxHashMap<String, usize>,
+    /// The C lvalue of each of the POU's variables seen from its body ([`own_var_lvalue`]), by index.
+    lvalues: Vec<String>,
     externals: HashMap<usize, GlobalRef>,
     /// Configuration code (task intervals, program instance arguments): its configuration index.
     pub config: Option<(usize, usize)>,
@@ -54,9 +59,15 @@ impl<'m> Scope<'m> {
             .enumerate()
             .map(|(i, v)| (v.name.to_ascii_uppercase(), i))
             .collect();
+        let lvalues = pou
+            .vars
+            .iter()
+            .map(|v| own_var_lvalue(pou.kind, v))
+            .collect();
         Scope {
             pou: Some((pou, id)),
             vars,
+            lvalues,
             externals: pou.externals.iter().copied().collect(),
             config: None,
             uses_en: std::cell::Cell::new(false),
@@ -65,7 +76,8 @@ impl<'m> Scope<'m> {
     pub fn for_config(config: usize, resource: usize) -> Self {
         Scope {
             pou: None,
-            vars: HashMap::new(),
+            vars: FxHashMap::default(),
+            lvalues: Vec::new(),
             externals: HashMap::new(),
             config: Some((config, resource)),
             uses_en: std::cell::Cell::new(false),
@@ -172,9 +184,8 @@ impl Gen<'_> {
         scope: &Scope,
         name: &il_frontend::ast::Ident,
     ) -> Option<Option<Place>> {
-        let key = name.key();
         if let Some((pou, _)) = scope.pou {
-            if let Some(&i) = scope.vars.get(&key) {
+            if let Some(i) = with_upper(&name.name, |key| scope.vars.get(key).copied()) {
                 let v = &pou.vars[i];
                 if v.kind == VarKind::External {
                     if let Some(&g) = scope.externals.get(&i) {
@@ -187,7 +198,7 @@ impl Gen<'_> {
                     return Some(self.locate_var(&v, &loc, name.span));
                 }
                 return Some(Some(Place::Mem {
-                    lv: own_var_lvalue(pou.kind, v),
+                    lv: scope.lvalues[i].clone(),
                     ty: v.ty.clone(),
                 }));
             }
@@ -199,6 +210,7 @@ impl Gen<'_> {
                     }));
                 }
             }
+            let key = name.key();
             if key == "EN" || key == "ENO" {
                 scope.uses_en.set(true);
                 return Some(Some(Place::Mem {
@@ -229,7 +241,7 @@ impl Gen<'_> {
                 );
             }
         }
-        if let Some(&i) = self.free_globals.get(&key) {
+        if let Some(i) = with_upper(&name.name, |key| self.free_globals.get(key).copied()) {
             return Some(self.global_place(GlobalRef::Free(i), name.span));
         }
         None
@@ -407,8 +419,9 @@ impl Gen<'_> {
         name: &il_frontend::ast::Ident,
         context: Option<&Type>,
     ) -> Option<(il_frontend::sema::TypeId, usize)> {
-        let key = name.key();
-        if scope.vars.contains_key(&key) || self.free_globals.contains_key(&key) {
+        if with_upper(&name.name, |key| {
+            scope.vars.contains_key(key) || self.free_globals.contains_key(key)
+        }) {
             return None;
         }
         let find = |id: il_frontend::sema::TypeId| match &self.model.user_type(id).def {

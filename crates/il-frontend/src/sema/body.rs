@@ -143,7 +143,7 @@ impl Analyzer<'_> {
     pub(crate) fn check_body(&mut self, id: PouId, pou: &ast::Pou) {
         let mut labels = HashMap::new();
         let mut pos = 0;
-        self.collect_labels(&pou.body, &mut labels, &mut pos);
+        let any_backward = self.collect_labels(&pou.body, &mut labels, &mut pos);
         let mut b = Body {
             a: self,
             pou: id,
@@ -155,11 +155,15 @@ impl Analyzer<'_> {
             pos: 0,
             result_written: false,
         };
-        // Pass 1, silent: what the backward jumps bring.
-        b.a.silent = true;
-        b.walk_top(&pou.body);
-        b.a.silent = false;
+        // Pass 1, silent: what the backward jumps bring. Without backward jumps it would find nothing
+        // (its only other effects, name resolutions and `result_written`, pass 2 repeats), so it is
+        // skipped.
         let mut backward: HashMap<String, Vec<(Span, Option<Type>)>> = HashMap::new();
+        if any_backward {
+            b.a.silent = true;
+            b.walk_top(&pou.body);
+            b.a.silent = false;
+        }
         let edges = std::mem::take(&mut b.edges);
         for (label, es) in edges {
             let Some(def) = b.labels.get(&label) else {
@@ -174,10 +178,7 @@ impl Analyzer<'_> {
                     .push((e.from, ty));
             }
         }
-        // Pass 2, reporting (about one name per instruction).
-        let n = b.recs.len();
-        b.a.model.names.reserve(n);
-        b.a.model.instrs.reserve(n);
+        // Pass 2, reporting.
         b.backward = backward;
         b.lits = LitVars::default();
         b.recs.clear();
@@ -206,13 +207,15 @@ impl Analyzer<'_> {
     }
 
     /// Labels of a body in walk order (nested lists included), with an explicit stack: nesting depth is
-    /// not limited by the thread's stack.
+    /// not limited by the thread's stack. Returns whether a jump goes to a label defined before it (in
+    /// walk order, as `Body::walk_top` counts positions).
     fn collect_labels(
         &mut self,
         body: &[IlStmt],
         labels: &mut HashMap<String, LabelDef>,
         pos: &mut usize,
-    ) {
+    ) -> bool {
+        let mut any_backward = false;
         let mut stack: Vec<std::slice::Iter<'_, IlStmt>> = vec![body.iter()];
         while let Some(top) = stack.last_mut() {
             let Some(s) = top.next() else {
@@ -242,14 +245,39 @@ impl Analyzer<'_> {
                         },
                     );
                 }
-                IlStmt::Instr(i) => {
-                    if let InstrKind::Deferred { body, .. } = &i.kind {
-                        stack.push(body.iter());
+                IlStmt::Instr(i) => match &i.kind {
+                    InstrKind::Deferred { body, .. } => stack.push(body.iter()),
+                    InstrKind::Jump { label, .. } => {
+                        any_backward |= labels.contains_key(&label.key());
                     }
+                    _ => {}
+                },
+            }
+        }
+        any_backward
+    }
+}
+
+/// The number of instructions of a body, nested lists included (an explicit stack: depth is not limited
+/// by the thread's stack).
+pub(super) fn count_instrs(body: &[IlStmt]) -> usize {
+    let mut n = 0;
+    let mut stack: Vec<std::slice::Iter<'_, IlStmt>> = vec![body.iter()];
+    while let Some(top) = stack.last_mut() {
+        match top.next() {
+            None => {
+                stack.pop();
+            }
+            Some(IlStmt::Label(_)) => {}
+            Some(IlStmt::Instr(i)) => {
+                n += 1;
+                if let InstrKind::Deferred { body, .. } = &i.kind {
+                    stack.push(body.iter());
                 }
             }
         }
     }
+    n
 }
 
 impl Body<'_, '_> {

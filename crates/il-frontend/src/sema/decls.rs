@@ -52,7 +52,7 @@ impl Analyzer<'_> {
                             vars: Vec::new(),
                             externals: Vec::new(),
                             instrs: Vec::new(),
-                            var_index: HashMap::new(),
+                            var_index: Default::default(),
                         });
                         pous.push((id, p));
                     }

@@ -36,6 +36,10 @@ pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
         enum_counter: 0,
     };
     let pous = a.declare(units);
+    // Room for every instruction's info (and about one name each) at once: no regrowth of big tables.
+    let instrs: usize = pous.iter().map(|(_, p)| body::count_instrs(&p.body)).sum();
+    a.model.instrs.reserve(instrs);
+    a.model.names.reserve(instrs);
     for (id, pou) in pous {
         a.check_body(id, pou);
     }

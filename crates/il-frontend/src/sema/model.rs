@@ -9,8 +9,8 @@
 
 use crate::ast::{AddressSize, Area, DirectAddress, PouKind, VarKind};
 use crate::Span;
+use rustc_hash::FxHashMap;
 use serde::Serialize;
-use std::collections::HashMap;
 
 /// Index of a POU in [`Model::pous`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
@@ -562,7 +562,27 @@ pub struct Pou {
     pub instrs: Vec<InstrId>,
     /// Upper-case name -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time.
     #[serde(skip)]
-    pub var_index: HashMap<String, usize>,
+    pub var_index: FxHashMap<String, usize>,
+}
+
+/// Calls `f` with the ASCII upper-case form of `name` (the key of the name tables), without allocating
+/// when `name` is upper case already or at most 64 bytes long.
+pub fn with_upper<R>(name: &str, f: impl FnOnce(&str) -> R) -> R {
+    let bytes = name.as_bytes();
+    if !bytes.iter().any(u8::is_ascii_lowercase) {
+        return f(name);
+    }
+    let mut buf = [0u8; 64];
+    if let Some(dst) = buf.get_mut(..bytes.len()) {
+        for (d, s) in dst.iter_mut().zip(bytes) {
+            *d = s.to_ascii_uppercase();
+        }
+        // Upper-casing ASCII letters keeps the text valid UTF-8.
+        if let Ok(up) = std::str::from_utf8(dst) {
+            return f(up);
+        }
+    }
+    f(&name.to_ascii_uppercase())
 }
 
 impl Pou {
@@ -578,7 +598,7 @@ impl Pou {
     /// The index in `vars` of a variable, by name (case-insensitive).
     pub fn var_position(&self, name: &str) -> Option<usize> {
         if self.var_index.len() == self.vars.len() {
-            self.var_index.get(&name.to_ascii_uppercase()).copied()
+            with_upper(name, |key| self.var_index.get(key).copied())
         } else {
             self.vars.iter().position(|v| v.is(name))
         }
@@ -792,10 +812,152 @@ pub struct Model {
     /// `VAR_GLOBAL` blocks outside configurations.
     pub globals: Vec<Variable>,
     /// Keyed by the instruction's identity ([`InstrId::of`]).
-    pub instrs: HashMap<InstrId, InstrInfo>,
+    pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
     /// call arguments, indexes, CAL instances).
-    pub names: HashMap<Span, NameRef>,
+    pub names: SpanTable<NameRef>,
+}
+
+/// The instruction infos by identity ([`KeyTable`]).
+pub type InstrTable = KeyTable<InstrId, InstrInfo>;
+
+/// A map keyed by span ([`KeyTable`]).
+pub type SpanTable<V> = KeyTable<Span, V>;
+
+/// A key of a [`KeyTable`]: hashable, and with an order in which keys usually arrive.
+pub trait TableKey: Copy + Eq + std::hash::Hash {
+    type Order: Ord;
+    fn order(&self) -> Self::Order;
+}
+
+impl TableKey for Span {
+    type Order = (u32, u32, u32);
+    fn order(&self) -> Self::Order {
+        (self.file.0, self.start, self.end)
+    }
+}
+
+impl TableKey for InstrId {
+    type Order = usize;
+    fn order(&self) -> usize {
+        self.0
+    }
+}
+
+/// A map stored as one vector in insertion order (source order of the bodies), so that reading the
+/// values body by body touches memory in order and a value is stored once, without the spare room of a
+/// hash table. While the keys come in increasing order (spans: sema walks each body in source order)
+/// the vector is sorted and searched by bisection; the first key out of order builds a hash index, used
+/// from then on.
+/// Invariants: one entry per key (a second insert under a key replaces the value, as a map does);
+/// without `index`, `entries` is sorted strictly by [`TableKey::order`]; with it, `index[key]` is the
+/// position of the key's entry.
+#[derive(Debug, Clone)]
+pub struct KeyTable<K, V> {
+    entries: Vec<(K, V)>,
+    index: Option<FxHashMap<K, u32>>,
+}
+
+impl<K, V> Default for KeyTable<K, V> {
+    fn default() -> Self {
+        KeyTable {
+            entries: Vec::new(),
+            index: None,
+        }
+    }
+}
+
+fn span_key<K: TableKey>(k: &K) -> K::Order {
+    k.order()
+}
+
+impl<K: TableKey, V> KeyTable<K, V> {
+    fn position(&self, span: &K) -> Option<usize> {
+        match &self.index {
+            Some(index) => index.get(span).map(|&i| i as usize),
+            None => self
+                .entries
+                .binary_search_by_key(&span_key(span), |(s, _)| span_key(s))
+                .ok(),
+        }
+    }
+    /// The value at `span`.
+    pub fn get(&self, span: &K) -> Option<&V> {
+        self.position(span).map(|i| &self.entries[i].1)
+    }
+    /// The value at `span` and its position, trying position `hint` first: a reader walking a body in
+    /// source order passes the position after the previous instruction's and finds the next one at once.
+    pub fn get_near(&self, span: K, hint: usize) -> Option<(usize, &V)> {
+        match self.entries.get(hint) {
+            Some((s, v)) if *s == span => Some((hint, v)),
+            _ => {
+                let i = self.position(&span)?;
+                Some((i, &self.entries[i].1))
+            }
+        }
+    }
+    /// Stores the value at `span`; returns the value it replaces.
+    pub fn insert(&mut self, span: K, value: V) -> Option<V> {
+        if self.index.is_none() {
+            let in_order = self
+                .entries
+                .last()
+                .is_none_or(|(last, _)| span_key(last) < span_key(&span));
+            if in_order {
+                self.entries.push((span, value));
+                return None;
+            }
+            let mut index = FxHashMap::default();
+            index.reserve(self.entries.capacity());
+            index.extend(
+                self.entries
+                    .iter()
+                    .enumerate()
+                    .map(|(i, (s, _))| (*s, i as u32)),
+            );
+            self.index = Some(index);
+        }
+        let next = self.entries.len() as u32;
+        let index = self.index.get_or_insert_with(FxHashMap::default);
+        match index.get(&span) {
+            Some(&i) => Some(std::mem::replace(&mut self.entries[i as usize].1, value)),
+            None => {
+                index.insert(span, next);
+                self.entries.push((span, value));
+                None
+            }
+        }
+    }
+    /// Makes room for `additional` more values.
+    pub fn reserve(&mut self, additional: usize) {
+        self.entries.reserve(additional);
+        if let Some(index) = &mut self.index {
+            index.reserve(additional);
+        }
+    }
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+    pub fn contains_key(&self, span: &K) -> bool {
+        self.position(span).is_some()
+    }
+    /// The spans and values, in insertion order.
+    pub fn iter(&self) -> impl Iterator<Item = (&K, &V)> {
+        self.entries.iter().map(|(s, v)| (s, v))
+    }
+    pub fn values(&self) -> impl Iterator<Item = &V> {
+        self.entries.iter().map(|(_, v)| v)
+    }
+}
+
+/// Serialised as a map from key to value, as the map it stands for.
+impl<K: TableKey + Serialize, V: Serialize> Serialize for KeyTable<K, V> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_map(self.iter())
+    }
 }
 
 impl Model {
@@ -872,5 +1034,69 @@ impl Model {
                 .unwrap_or_else(|| "?".into()),
             Type::Error => "<error>".into(),
         }
+    }
+}
+
+#[cfg(test)]
+mod span_table_tests {
+    use super::*;
+    use diagnostics::FileId;
+
+    fn sp(file: u32, start: usize, end: usize) -> Span {
+        Span::new(FileId(file), start, end)
+    }
+
+    #[test]
+    fn in_order_inserts_are_found_by_bisection() {
+        let mut t = SpanTable::default();
+        for i in 0..100 {
+            assert_eq!(t.insert(sp(0, i * 10, i * 10 + 4), i), None);
+        }
+        assert!(t.index.is_none(), "no index while the spans come in order");
+        assert_eq!(t.len(), 100);
+        assert_eq!(t.get(&sp(0, 370, 374)), Some(&37));
+        assert_eq!(t.get(&sp(0, 370, 375)), None);
+        assert!(t.contains_key(&sp(0, 990, 994)));
+        // The hint is used when it points at the span, and ignored when it does not.
+        assert_eq!(t.get_near(sp(0, 50, 54), 5), Some((5, &5)));
+        assert_eq!(t.get_near(sp(0, 50, 54), 99), Some((5, &5)));
+        assert_eq!(t.get_near(sp(0, 50, 54), 1000), Some((5, &5)));
+        assert_eq!(t.get_near(sp(1, 50, 54), 5), None);
+    }
+
+    #[test]
+    fn out_of_order_and_repeated_spans_behave_as_a_map() {
+        let mut t = SpanTable::default();
+        t.insert(sp(1, 0, 4), "a");
+        t.insert(sp(1, 10, 14), "b");
+        // Another file with a lower id, then a repeated span: map semantics throughout.
+        assert_eq!(t.insert(sp(0, 5, 9), "c"), None);
+        assert!(t.index.is_some());
+        assert_eq!(t.insert(sp(1, 0, 4), "a2"), Some("a"));
+        assert_eq!(t.len(), 3);
+        assert_eq!(t.get(&sp(1, 0, 4)), Some(&"a2"));
+        assert_eq!(t.get(&sp(0, 5, 9)), Some(&"c"));
+        assert_eq!(t.get(&sp(1, 10, 14)), Some(&"b"));
+        let order: Vec<&str> = t.values().copied().collect();
+        assert_eq!(
+            order,
+            ["a2", "b", "c"],
+            "insertion order, replaced in place"
+        );
+        // A repeat of the last span (not greater than it) also replaces.
+        let mut u = SpanTable::default();
+        u.insert(sp(0, 0, 1), 1);
+        assert_eq!(u.insert(sp(0, 0, 1), 2), Some(1));
+        assert_eq!(u.len(), 1);
+        assert_eq!(u.get(&sp(0, 0, 1)), Some(&2));
+    }
+
+    #[test]
+    fn with_upper_gives_the_upper_case_key() {
+        assert_eq!(with_upper("Motor_1", str::to_string), "MOTOR_1");
+        assert_eq!(with_upper("ALREADY", str::to_string), "ALREADY");
+        let long = "a".repeat(100);
+        assert_eq!(with_upper(&long, str::to_string), "A".repeat(100));
+        assert_eq!(with_upper("grün", str::to_string), "GRüN");
     }
 }

@@ -125,7 +125,10 @@ impl Body<'_, '_> {
         match o {
             Operand::Var(v) => {
                 let p = self.resolve_var(v);
-                if self.a.model.names.get(&v.base.span) == Some(&NameRef::FunctionResult) {
+                // Only a FUNCTION has a result variable (looked up only there: the names table is big).
+                if self.pou().kind == PouKind::Function
+                    && self.a.model.names.get(&v.base.span) == Some(&NameRef::FunctionResult)
+                {
                     self.result_written = true;
                 }
                 if let Some(ro) = p.read_only {
