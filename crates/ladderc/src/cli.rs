@@ -383,7 +383,7 @@ fn build(
             let lowered = s.lower(&c.inputs, &options(c));
             let code = finish(s, format);
             if let Some(l) = lowered {
-                for u in &l.units {
+                for u in l.units() {
                     print!("{}", il_frontend::print::unit(u));
                 }
             }
@@ -439,7 +439,7 @@ fn pmac_text(c: &CompileArgs, l: &pipeline::Lowered, s: &mut pipeline::Session) 
             return None;
         }
     };
-    crate::pmac_out::program(&l.source_units, &l.axes, dialect, &mut s.diags)
+    crate::pmac_out::program(l.source_units(), &l.axes, dialect, &mut s.diags)
 }
 
 /// Writes the `--pmac` file. `Err`: the exit code (the session had errors, or writing failed).

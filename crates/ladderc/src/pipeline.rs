@@ -36,12 +36,13 @@ pub struct Session {
 
 /// What a successful front half produced.
 pub struct Lowered {
-    /// The user's units as parsed, before block lowering.
-    pub source_units: Vec<CompilationUnit>,
-    /// The user's units after block lowering (without the prelude).
-    pub units: Vec<CompilationUnit>,
-    /// Units to compile: the post-lowering prelude (when blocks are used) and the user's units.
+    /// The user's units as parsed, when block lowering changed them (otherwise they are [`Lowered::units`]:
+    /// one copy of the program is kept, whatever its size).
+    source_copy: Option<Vec<CompilationUnit>>,
+    /// Units to compile: the post-lowering prelude (when blocks are used), then the user's units.
     pub all_units: Vec<CompilationUnit>,
+    /// Where the user's units start in `all_units`.
+    user_start: usize,
     pub lowering: lower::Lowered,
     pub library: Library,
     pub profile: c_backend::TargetProfile,
@@ -54,6 +55,17 @@ pub struct Lowered {
     /// The semantic model of `all_units` when nothing was lowered (the checked program is the compiled
     /// one, so it is analysed once).
     pub model: Option<il_frontend::sema::Model>,
+}
+
+impl Lowered {
+    /// The user's units after block lowering (without the prelude).
+    pub fn units(&self) -> &[CompilationUnit] {
+        &self.all_units[self.user_start..]
+    }
+    /// The user's units as parsed, before block lowering.
+    pub fn source_units(&self) -> &[CompilationUnit] {
+        self.source_copy.as_deref().unwrap_or(self.units())
+    }
 }
 
 impl Session {
@@ -165,7 +177,14 @@ impl Session {
             let f = self.map.add("<axis configuration>", axes_il.clone());
             checked.push(il_frontend::parse(f, &axes_il, &mut self.diags));
         }
-        checked.extend(user.iter().cloned());
+        // Without blocks the checked program is the compiled one: no copy.
+        let user = if uses_blocks {
+            checked.extend(user.iter().cloned());
+            user
+        } else {
+            checked.extend(user);
+            Vec::new()
+        };
         let checked_model = il_frontend::sema::analyze(&checked, &mut self.diags);
         if self.diags.has_errors() {
             return None;
@@ -175,20 +194,17 @@ impl Session {
             bytes: profile.tm_bytes,
             element_addressing: profile.address_unit == c_backend::AddressUnit::Element,
         };
-        let source_units = user.clone();
-        let lowering = if uses_blocks {
+        let mut lowering = if uses_blocks {
             lower::lower(&user, &library, opts.strategy, &window, &mut self.diags)
         } else {
-            lower::Lowered {
-                units: user,
-                ..Default::default()
-            }
+            lower::Lowered::default()
         };
         if self.diags.has_errors() {
             return None;
         }
         // The model is valid only for the very units it was computed from (it keys instructions by
         // identity): without block lowering those are `checked`, which is then compiled as it is.
+        let user_start = if uses_blocks { 2 } else { 0 };
         let all_units = if uses_blocks {
             let mut all_units = Vec::new();
             let post = param_passing::prelude::after_lowering(&library);
@@ -196,15 +212,15 @@ impl Session {
             all_units.push(il_frontend::parse(f, &post, &mut self.diags));
             let f = self.map.add("<axis configuration>", axes_il.clone());
             all_units.push(il_frontend::parse(f, &axes_il, &mut self.diags));
-            all_units.extend(lowering.units.iter().cloned());
+            all_units.append(&mut lowering.units);
             all_units
         } else {
             checked
         };
         Some(Lowered {
-            source_units,
-            units: lowering.units.clone(),
+            source_copy: uses_blocks.then_some(user),
             all_units,
+            user_start,
             lowering,
             library,
             profile,
