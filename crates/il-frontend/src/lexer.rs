@@ -95,7 +95,48 @@ pub enum RawToken {
 
 /// Skips a possibly nested `(* ... *)` comment; reports whether it spanned a line break.
 fn block_comment(lex: &mut logos::Lexer<RawToken>) -> FilterResult<(), LexError> {
-    let rest = lex.remainder().as_bytes();
+    let (n, end) = comment_rest(lex.remainder());
+    lex.bump(n);
+    match end {
+        CommentEnd::Closed { newline: true } => FilterResult::Emit(()),
+        CommentEnd::Closed { newline: false } => FilterResult::Skip,
+        CommentEnd::Unterminated => FilterResult::Error(LexError::UnterminatedComment),
+    }
+}
+
+/// Scans a string body after its opening quote, decoding `$` escapes (invalid ones go to `extras`).
+fn string(lex: &mut logos::Lexer<RawToken>, wide: bool) -> Result<(bool, String), LexError> {
+    let body_start = lex.span().end;
+    let (n, value) = string_rest(lex.remainder(), wide, body_start, &mut lex.extras);
+    lex.bump(n);
+    value
+}
+
+/// `%IX0.1`, `%QW3`, `%MD10`, `%i0.0`, `%I*`.
+fn address(lex: &mut logos::Lexer<RawToken>) -> Result<(Area, AddressSize, Vec<u32>), LexError> {
+    direct_address(lex.slice())
+}
+
+/// `INT#`, `T#1h`, `DATE#2001-04-09` ...: see [`prefixed_rest`].
+fn prefixed(lex: &mut logos::Lexer<RawToken>) -> Result<Option<TimeValue>, LexError> {
+    let (n, value) = prefixed_rest(lex.slice(), lex.remainder());
+    lex.bump(n);
+    value
+}
+
+// ---------------------------------------------------------------- scanners shared with the ST lexer
+// They work on text (the token's slice, the rest of the source after it) and say how many bytes of the
+// rest the token takes, so each logos lexer only bumps.
+
+/// How a `(* ... *)` comment ended.
+pub(crate) enum CommentEnd {
+    Closed { newline: bool },
+    Unterminated,
+}
+
+/// The rest of a possibly nested `(* ... *)` comment after its opening: bytes it takes, how it ended.
+pub(crate) fn comment_rest(rest: &str) -> (usize, CommentEnd) {
+    let rest = rest.as_bytes();
     let mut depth = 1usize;
     let mut i = 0;
     let mut newline = false;
@@ -109,12 +150,7 @@ fn block_comment(lex: &mut logos::Lexer<RawToken>) -> FilterResult<(), LexError>
                 depth -= 1;
                 i += 2;
                 if depth == 0 {
-                    lex.bump(i);
-                    return if newline {
-                        FilterResult::Emit(())
-                    } else {
-                        FilterResult::Skip
-                    };
+                    return (i, CommentEnd::Closed { newline });
                 }
             }
             (b'\n', _) => {
@@ -124,14 +160,18 @@ fn block_comment(lex: &mut logos::Lexer<RawToken>) -> FilterResult<(), LexError>
             _ => i += 1,
         }
     }
-    lex.bump(rest.len());
-    FilterResult::Error(LexError::UnterminatedComment)
+    (rest.len(), CommentEnd::Unterminated)
 }
 
-/// Scans a string body after its opening quote, decoding `$` escapes (invalid ones go to `extras`).
-fn string(lex: &mut logos::Lexer<RawToken>, wide: bool) -> Result<(bool, String), LexError> {
+/// A string body after its opening quote (`body_start` is its offset in the source): bytes it takes
+/// (closing quote included) and its decoded value; invalid `$` escapes are pushed to `warnings`.
+pub(crate) fn string_rest(
+    rest: &str,
+    wide: bool,
+    body_start: usize,
+    warnings: &mut Vec<LexWarning>,
+) -> (usize, Result<(bool, String), LexError>) {
     let quote = if wide { b'"' } else { b'\'' };
-    let rest = lex.remainder();
     let bytes = rest.as_bytes();
     let mut i = 0;
     while i < bytes.len() {
@@ -143,24 +183,20 @@ fn string(lex: &mut logos::Lexer<RawToken>, wide: bool) -> Result<(bool, String)
             }
             b'\n' => break,
             c if c == quote => {
-                let body_start = lex.span().end;
                 let (value, errors) = literal::unescape(&rest[..i], wide);
                 for (s, e, why) in errors {
-                    lex.extras.push((body_start + s..body_start + e, why));
+                    warnings.push((body_start + s..body_start + e, why));
                 }
-                lex.bump(i + 1);
-                return Ok((wide, value));
+                return (i + 1, Ok((wide, value)));
             }
             _ => i += 1,
         }
     }
-    lex.bump(i);
-    Err(LexError::UnterminatedString)
+    (i, Err(LexError::UnterminatedString))
 }
 
-/// `%IX0.1`, `%QW3`, `%MD10`, `%i0.0`, `%I*`.
-fn address(lex: &mut logos::Lexer<RawToken>) -> Result<(Area, AddressSize, Vec<u32>), LexError> {
-    let text = lex.slice();
+/// A direct address `%IX0.1`, `%QW3`, `%MD10`, `%i0.0`, `%I*` (the whole token's text).
+pub(crate) fn direct_address(text: &str) -> Result<(Area, AddressSize, Vec<u32>), LexError> {
     let bad = |why: &str| LexError::BadAddress(format!("`{text}` {why}"));
     let mut chars = text[1..].chars().peekable();
     let area = match chars.next().map(|c| c.to_ascii_uppercase()) {
@@ -200,10 +236,15 @@ fn address(lex: &mut logos::Lexer<RawToken>) -> Result<(Area, AddressSize, Vec<u
     Ok((area, size, path))
 }
 
-/// `INT#`, `T#1h`, `DATE#2001-04-09` ...: decodes the date/time families right away (their bodies
-/// contain `:` `-` `.` that are other tokens elsewhere); other prefixes stay prefixes.
-fn prefixed(lex: &mut logos::Lexer<RawToken>) -> Result<Option<TimeValue>, LexError> {
-    let prefix = lex.slice().trim_end_matches('#').to_ascii_uppercase();
+/// A `PREFIX#` token (`INT#`, `T#`, `DATE#` ...) and the source after it: the date/time families are
+/// decoded right away (their bodies contain `:` `-` `.` that are other tokens elsewhere), other prefixes
+/// stay prefixes (`None`). Returns the bytes of `rest` the literal's body takes. In a duration a `.`
+/// belongs to the literal only before a digit (`T#1.5s`), so `T#1s..T#2s` and `T#1s.` end at the `s`.
+pub(crate) fn prefixed_rest(
+    prefix: &str,
+    rest: &str,
+) -> (usize, Result<Option<TimeValue>, LexError>) {
+    let prefix = prefix.trim_end_matches('#').to_ascii_uppercase();
     #[derive(Clone, Copy)]
     enum Fam {
         Dur,
@@ -220,34 +261,33 @@ fn prefixed(lex: &mut logos::Lexer<RawToken>) -> Result<Option<TimeValue>, LexEr
         "LTOD" | "LTIME_OF_DAY" => (Fam::Tod, true),
         "DT" | "DATE_AND_TIME" => (Fam::Dt, false),
         "LDT" | "LDATE_AND_TIME" => (Fam::Dt, true),
-        _ => return Ok(None),
+        _ => return (0, Ok(None)),
     };
-    let rest = lex.remainder().as_bytes();
+    let bytes = rest.as_bytes();
     let allowed = |i: usize, c: u8| match fam {
         Fam::Dur => {
             c.is_ascii_alphanumeric()
                 || c == b'_'
-                || c == b'.'
+                || (c == b'.' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit))
                 || (i == 0 && (c == b'-' || c == b'+'))
         }
         Fam::Date => c.is_ascii_digit() || c == b'-',
         Fam::Tod => c.is_ascii_digit() || c == b':' || c == b'.',
         Fam::Dt => c.is_ascii_digit() || c == b'-' || c == b':' || c == b'.',
     };
-    let n = rest
+    let n = bytes
         .iter()
         .enumerate()
         .take_while(|&(i, &c)| allowed(i, c))
         .count();
-    let body = &lex.remainder()[..n];
+    let body = &rest[..n];
     let value = match fam {
         Fam::Dur => literal::duration(body).map(|v| TimeValue::Duration(v, long)),
         Fam::Date => literal::date(body).map(|v| TimeValue::Date(v, long)),
         Fam::Tod => literal::time_of_day(body).map(|v| TimeValue::TimeOfDay(v, long)),
         Fam::Dt => literal::date_and_time(body).map(|v| TimeValue::DateAndTime(v, long)),
     };
-    lex.bump(n);
-    value.map(Some).map_err(LexError::BadLiteral)
+    (n, value.map(Some).map_err(LexError::BadLiteral))
 }
 
 /// The class of a word: a plain identifier or one of the keywords. Classified by [`classify`] only.

@@ -7,7 +7,7 @@
 //! [`crate::literal`], exactly as the IL lexer does; an invalid literal becomes an error token.
 
 use crate::ast::{AddressSize, Area};
-use crate::lexer::{LexError, TimeValue};
+use crate::lexer::{self, LexError, TimeValue};
 use crate::literal;
 use logos::{FilterResult, Logos};
 use std::ops::Range;
@@ -329,28 +329,12 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
 
 /// Skips a possibly nested `(* ... *)` comment.
 fn block_comment(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
-    let rest = lex.remainder().as_bytes();
-    let mut depth = 1usize;
-    let mut i = 0;
-    while i < rest.len() {
-        match (rest[i], rest.get(i + 1)) {
-            (b'(', Some(b'*')) => {
-                depth += 1;
-                i += 2;
-            }
-            (b'*', Some(b')')) => {
-                depth -= 1;
-                i += 2;
-                if depth == 0 {
-                    lex.bump(i);
-                    return FilterResult::Skip;
-                }
-            }
-            _ => i += 1,
-        }
+    let (n, end) = lexer::comment_rest(lex.remainder());
+    lex.bump(n);
+    match end {
+        lexer::CommentEnd::Closed { .. } => FilterResult::Skip,
+        lexer::CommentEnd::Unterminated => FilterResult::Error(LexError::UnterminatedComment),
     }
-    lex.bump(rest.len());
-    FilterResult::Error(LexError::UnterminatedComment)
 }
 
 /// Skips a `{ ... }` pragma (CODESYS attributes, Beremiz annotations).
@@ -369,123 +353,23 @@ fn pragma(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
 
 /// Scans a string body after its opening quote, decoding `$` escapes (invalid ones go to `extras`).
 fn string(lex: &mut logos::Lexer<Raw>, wide: bool) -> Result<(bool, String), LexError> {
-    let quote = if wide { b'"' } else { b'\'' };
-    let rest = lex.remainder();
-    let bytes = rest.as_bytes();
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'$' if i + 1 < bytes.len() && bytes[i + 1] != b'\n' => {
-                let ch_len = rest[i + 1..].chars().next().map_or(1, char::len_utf8);
-                i += 1 + ch_len;
-            }
-            b'\n' => break,
-            c if c == quote => {
-                let body_start = lex.span().end;
-                let (value, errors) = literal::unescape(&rest[..i], wide);
-                for (s, e, why) in errors {
-                    lex.extras.push((body_start + s..body_start + e, why));
-                }
-                lex.bump(i + 1);
-                return Ok((wide, value));
-            }
-            _ => i += 1,
-        }
-    }
-    lex.bump(i);
-    Err(LexError::UnterminatedString)
+    let body_start = lex.span().end;
+    let (n, value) = lexer::string_rest(lex.remainder(), wide, body_start, &mut lex.extras);
+    lex.bump(n);
+    value
 }
 
 /// `%IX0.1`, `%QW3`, `%MD10`, `%I*`.
 fn address(lex: &mut logos::Lexer<Raw>) -> Result<(Area, AddressSize, Vec<u32>), LexError> {
-    let text = lex.slice();
-    let bad = |why: &str| LexError::BadAddress(format!("`{text}` {why}"));
-    let mut chars = text[1..].chars().peekable();
-    let area = match chars.next().map(|c| c.to_ascii_uppercase()) {
-        Some('I') => Area::Input,
-        Some('Q') => Area::Output,
-        Some('M') => Area::Memory,
-        _ => return Err(bad("is not a direct address: the area must be I, Q or M")),
-    };
-    let size = match chars.peek().map(|c| c.to_ascii_uppercase()) {
-        Some('X') => Some(AddressSize::Bit),
-        Some('B') => Some(AddressSize::Byte),
-        Some('W') => Some(AddressSize::Word),
-        Some('D') => Some(AddressSize::DWord),
-        Some('L') => Some(AddressSize::LWord),
-        _ => None,
-    };
-    if size.is_some() {
-        chars.next();
-    }
-    let size = size.unwrap_or(AddressSize::Bit);
-    let rest: String = chars.collect();
-    if rest == "*" {
-        return Ok((area, size, Vec::new()));
-    }
-    let mut path = Vec::new();
-    for part in rest.split('.') {
-        if part.is_empty() || !part.bytes().all(|b| b.is_ascii_digit()) {
-            return Err(bad(
-                "is not a valid location: expected numbers separated by dots (e.g. %IX0.1)",
-            ));
-        }
-        path.push(
-            part.parse::<u32>()
-                .map_err(|_| bad("has a location number that is too large"))?,
-        );
-    }
-    Ok((area, size, path))
+    lexer::direct_address(lex.slice())
 }
 
 /// `INT#`, `T#1h`, `DATE#2001-04-09` ...: the date/time families are decoded right away (their bodies
 /// contain `:` `-` `.`); other prefixes stay prefixes.
 fn prefixed(lex: &mut logos::Lexer<Raw>) -> Result<Option<TimeValue>, LexError> {
-    let prefix = lex.slice().trim_end_matches('#').to_ascii_uppercase();
-    #[derive(Clone, Copy)]
-    enum Fam {
-        Dur,
-        Date,
-        Tod,
-        Dt,
-    }
-    let (fam, long) = match prefix.as_str() {
-        "T" | "TIME" => (Fam::Dur, false),
-        "LT" | "LTIME" => (Fam::Dur, true),
-        "D" | "DATE" => (Fam::Date, false),
-        "LD" | "LDATE" => (Fam::Date, true),
-        "TOD" | "TIME_OF_DAY" => (Fam::Tod, false),
-        "LTOD" | "LTIME_OF_DAY" => (Fam::Tod, true),
-        "DT" | "DATE_AND_TIME" => (Fam::Dt, false),
-        "LDT" | "LDATE_AND_TIME" => (Fam::Dt, true),
-        _ => return Ok(None),
-    };
-    let rest = lex.remainder().as_bytes();
-    let allowed = |i: usize, c: u8| match fam {
-        Fam::Dur => {
-            c.is_ascii_alphanumeric()
-                || c == b'_'
-                || (c == b'.' && rest.get(i + 1).is_some_and(u8::is_ascii_digit))
-                || (i == 0 && (c == b'-' || c == b'+'))
-        }
-        Fam::Date => c.is_ascii_digit() || c == b'-',
-        Fam::Tod => c.is_ascii_digit() || c == b':' || c == b'.',
-        Fam::Dt => c.is_ascii_digit() || c == b'-' || c == b':' || c == b'.',
-    };
-    let n = rest
-        .iter()
-        .enumerate()
-        .take_while(|&(i, &c)| allowed(i, c))
-        .count();
-    let body = &lex.remainder()[..n];
-    let value = match fam {
-        Fam::Dur => literal::duration(body).map(|v| TimeValue::Duration(v, long)),
-        Fam::Date => literal::date(body).map(|v| TimeValue::Date(v, long)),
-        Fam::Tod => literal::time_of_day(body).map(|v| TimeValue::TimeOfDay(v, long)),
-        Fam::Dt => literal::date_and_time(body).map(|v| TimeValue::DateAndTime(v, long)),
-    };
+    let (n, value) = lexer::prefixed_rest(lex.slice(), lex.remainder());
     lex.bump(n);
-    value.map(Some).map_err(LexError::BadLiteral)
+    value
 }
 
 #[cfg(test)]
