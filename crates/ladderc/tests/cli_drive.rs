@@ -1,16 +1,15 @@
 //! `ladderc drive build/run/debug` wired to the drive-script crate, through the real binary.
 
+mod common;
+use common::ladderc;
+
 use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 
 const SCRIPT: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/../drive-script/tests/scripts/three_motions.ds"
 );
-
-fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
-}
 
 #[test]
 fn build_then_run_the_image_writes_a_trace() {
@@ -21,12 +20,7 @@ fn build_then_run_the_image_writes_a_trace() {
         .arg(&image)
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     assert!(String::from_utf8_lossy(&out.stdout).contains("3 Motions, 13 Events"));
     let trace = dir.path().join("t.csv");
     let out = ladderc()
@@ -108,12 +102,7 @@ fn the_drive_option_selects_the_motion_lib_axis_or_the_simple_simulation() {
             .arg(&trace)
             .output()
             .unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         let text = std::fs::read_to_string(&trace).unwrap();
         second_rows.push(text.lines().nth(2).unwrap().to_string());
     }

@@ -1,10 +1,7 @@
 //! `ladderc explain` and the usage exit code, through the real binary.
 
-use std::process::Command;
-
-fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
-}
+mod common;
+use common::ladderc;
 
 #[test]
 fn explain_prints_the_explanation_file() {

@@ -1,11 +1,10 @@
 //! `ladderc check/build/run` end to end: IL in, C built by the system compiler, scan cycles traced.
 
+mod common;
+use common::ladderc;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
-}
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -33,12 +32,7 @@ fn run(program: &str, stimulus: &str, extra: &[&str]) -> String {
         .args(extra)
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     std::fs::read_to_string(&trace).unwrap()
 }
 
@@ -57,12 +51,7 @@ fn counter_example_counts_edges_and_the_off_delay_holds_100_ms() {
         .args(["--watch", "main.count,main.full,%QX0.1", "--sanitize"])
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     insta::assert_snapshot!(std::fs::read_to_string(&trace).unwrap());
 }
 
@@ -208,12 +197,7 @@ fn motion_example_moves_to_100_then_backs_off_to_60_and_plots() {
         .arg(&svg)
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     let text = std::fs::read_to_string(&trace).unwrap();
     // `--plot` adds the columns it draws (the velocity) after the watched ones.
     let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();

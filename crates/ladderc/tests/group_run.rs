@@ -3,12 +3,11 @@
 //! methods; array parameters (Position, the read blocks' Position/Velocity outputs), the report, `--emit il`,
 //! and the legality checks before code generation.
 
+mod common;
+use common::ladderc;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
-}
 
 /// Paper B's experiment: three straight lines on a 3-axis group, velocities 40, 55, 70 mm/s, acceleration
 /// and deceleration 5 mm/s², jerk 2 mm/s³; block 2 starts (is buffered) as soon as block 1 is busy, block 3
@@ -108,12 +107,7 @@ fn run_trace(src: &Path, cycles: &str, extra: &[&str]) -> String {
         .args(extra)
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     std::fs::read_to_string(&trace).unwrap()
 }
 

@@ -3,6 +3,8 @@
 //! the block runs, chained blocks called in the wrong order) and extensible comparison blocks. Each test
 //! states the trace a correct compiler gives; the buggy lowering gives a different row, named in the test.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -41,12 +43,7 @@ fn run(
         .args(["--watch", watch, "--sanitize"])
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     let text = std::fs::read_to_string(&trace).unwrap();
     let mut lines = text.lines();
     let header = lines.next().unwrap();
@@ -145,15 +142,6 @@ fn extensible_comparison_blocks_compare_neighbouring_inputs() {
     assert_eq!(rows, want);
 }
 
-/// `shared/corpus` beside the repository (or beside an ancestor, for nested worktrees).
-fn corpus(name: &str) -> PathBuf {
-    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
-    here.ancestors()
-        .map(|a| a.join("shared/corpus").join(name))
-        .find(|p| p.is_file())
-        .unwrap_or_else(|| here.join("../../../shared/corpus").join(name))
-}
-
 #[test]
 fn corpus_01_counters_in_ld_fbd_il_and_st_agree_cycle_by_cycle() {
     // Beremiz "first steps": the same counter (count up each scan, load 17 while Reset) written in LD,
@@ -177,7 +165,7 @@ fn corpus_01_counters_in_ld_fbd_il_and_st_agree_cycle_by_cycle() {
     let trace = dir.path().join("trace.csv");
     let out = Command::new(env!("CARGO_BIN_EXE_ladderc"))
         .arg("run")
-        .arg(corpus("01_beremiz_first_steps.xml"))
+        .arg(common::corpus("01_beremiz_first_steps.xml"))
         .args(["--cycles", "14", "--cycle-ms", "100", "--stimulus"])
         .arg(&stim)
         .arg("--trace")
@@ -185,12 +173,7 @@ fn corpus_01_counters_in_ld_fbd_il_and_st_agree_cycle_by_cycle() {
         .args(["--watch", &watch, "--sanitize"])
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     let text = std::fs::read_to_string(&trace).unwrap();
     let rows: Vec<Vec<&str>> = text
         .lines()

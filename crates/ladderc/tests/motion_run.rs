@@ -1,12 +1,11 @@
 //! Programs with PLCopen motion blocks end to end: axis configuration, both parameter-passing methods,
 //! the motion runtime linked into the generated C (strict warnings, sanitizers), axis trace columns.
 
+mod common;
+use common::ladderc;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
-}
 
 const MOVE: &str = "PROGRAM move
 VAR
@@ -52,12 +51,7 @@ fn run_trace(src: &Path, extra: &[&str]) -> String {
         .args(extra)
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     std::fs::read_to_string(&trace).unwrap()
 }
 

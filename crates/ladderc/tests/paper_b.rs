@@ -5,13 +5,11 @@
 //! computed from what the binary wrote (trace, program text); nothing is a hard-coded expectation except
 //! the paper's own numbers (targets, junction speeds) and closed-form profile times derived in the README.
 
+mod common;
+use common::ladderc;
+
 use pmac_backend::model::{Sample, Trajectory};
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
-}
 
 fn repo() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")

@@ -1,6 +1,8 @@
 //! SFC charts end to end: PLCopen XML with an SFC body, lowered, compiled to C, run cycle by cycle by
 //! `ladderc run`; the traces are checked at the exact cycle each step or action changes.
 
+mod common;
+
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -28,12 +30,7 @@ fn run(file: &Path, cycles: u32, stimulus: &str, watch: &[&str]) -> String {
         .args(["--watch", &watch.join(",")])
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     std::fs::read_to_string(&trace).unwrap()
 }
 
@@ -251,12 +248,7 @@ fn corpus_01_runs_and_counter_sfc_tracks_counter_il_as_the_standard_says() {
         .args(["--watch", &watch.join(",")])
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     let t = std::fs::read_to_string(&trace).unwrap();
     let c = columns(&t);
     let il = &c[&format!("{p}.CounterIL0.OUT")];

@@ -1,13 +1,12 @@
 //! Structured Text end to end: PLCopen XML with `<ST>` bodies -> IL -> C, built and run by `ladderc run`;
 //! results checked cycle by cycle against values computed here with IEC semantics.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+mod common;
+use common::ladderc;
 
-fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
-}
+use std::path::{Path, PathBuf};
+use std::process::Stdio;
+use std::time::{Duration, Instant};
 
 /// The shared corpus: the nearest ancestor's `shared/corpus` (`../../../shared/corpus` from the main
 /// checkout's crates; worktrees live deeper).
@@ -157,12 +156,7 @@ fn run_file(src: &Path, dir: &Path, cycles: u32, stimulus: &str, watch: &str) ->
     if out.status.code() != Some(0) {
         let _ = std::fs::copy(src, std::env::temp_dir().join("st_run_failed.xml"));
     }
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     let text = std::fs::read_to_string(&trace).unwrap();
     text.lines()
         .skip(1)

@@ -2,12 +2,10 @@
 //! `fbd_strings.xml`: CONCAT, LEN, MID, RIGHT, REPLACE blocks) built with sanitizers and run cycle by
 //! cycle, and the matiec STD_TEST corpus file (15), whose string blocks are all known now.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
+use common::ladderc;
 
-fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
-}
+use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -112,12 +110,7 @@ fn corpus_std_test_checks_clean_once_its_mux_is_well_typed() {
     let file = dir.path().join("std_test.xml");
     std::fs::write(&file, std_test_well_typed()).unwrap();
     let out = ladderc().arg("check").arg(&file).output().unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
 }
 
 /// And it runs: MAIN_TEST steps TEST_NB through the tests of TEST_STRINGS_OPS (IN1 = '3.456789',
@@ -150,12 +143,7 @@ fn corpus_std_test_string_operations_run_cycle_by_cycle() {
         ])
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     let text = std::fs::read_to_string(&trace).unwrap();
     assert_eq!(
         text,
@@ -196,12 +184,7 @@ fn fbd_typed_counter_and_mul_time_blocks_run() {
         .args(["--watch", "main.COUNT,main.DONE,main.T2"])
         .output()
         .unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     assert_eq!(
         std::fs::read_to_string(&trace).unwrap(),
         "cycle,time_ms,main.COUNT,main.DONE,main.T2\n\
