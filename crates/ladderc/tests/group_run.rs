@@ -208,11 +208,7 @@ fn built_group_projects_compile_warning_free_with_their_makefile() {
             .arg(&src)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         let make = Command::new("make")
             .arg("CFLAGS=-O1 -Wall -Wextra -Werror -pedantic")
             .current_dir(&out_dir)
@@ -288,23 +284,7 @@ fn report_json_lists_the_group_blocks_with_their_tm_bytes() {
     let mut reports = Vec::new();
     for s in ["il", "template"] {
         let (dir, src) = project(LINES);
-        let out = ladderc()
-            .args(["build", "--report", "json", "--strategy", s, "-o"])
-            .arg(dir.path().join("out"))
-            .arg(&src)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let mut v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-        for b in v["blocks"].as_array_mut().unwrap() {
-            let size = b["object_bytes"].as_u64().expect("cc and nm are available");
-            assert!(size > 50, "{b}");
-            b.as_object_mut().unwrap().remove("object_bytes");
-        }
+        let v = common::block_report(&src, &dir.path().join("out"), s, 50);
         reports.push(v);
     }
     let block = |r: &serde_json::Value, name: &str| {
@@ -515,11 +495,7 @@ fn a_ladder_network_with_group_blocks_runs_identically_with_both_methods() {
             .arg(&trace)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         traces.push(std::fs::read_to_string(&trace).unwrap());
     }
     assert_eq!(traces[0], traces[1]);
@@ -687,11 +663,7 @@ fn every_group_block_runs_in_sequence_identically_with_both_methods() {
             .arg(&trace)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         traces.push(std::fs::read_to_string(&trace).unwrap());
     }
     for (k, (a, b)) in traces[0].lines().zip(traces[1].lines()).enumerate() {
@@ -754,11 +726,7 @@ fn report_json_gives_the_figures_of_every_group_block_for_both_methods() {
             .arg(&src)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
         for b in v["blocks"].as_array().unwrap() {
             assert_eq!(b["method"], s);

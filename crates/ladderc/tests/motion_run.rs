@@ -116,11 +116,7 @@ fn built_projects_compile_warning_free_with_their_makefile_and_bundle_the_librar
             .arg(&src)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         assert!(out_dir.join("libmotion_lib.a").is_file());
         assert!(out_dir.join("motion_lib.h").is_file());
         let make = Command::new("make")
@@ -169,11 +165,7 @@ fn emit_il(strategy: &str) -> String {
         .arg(&src)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     String::from_utf8(out.stdout).unwrap()
 }
 
@@ -268,24 +260,8 @@ fn report_json_gives_per_block_method_tm_bytes_instructions_and_c_bytes() {
     let (dir, src) = project();
     let mut reports = Vec::new();
     for s in ["il", "template"] {
-        let out = ladderc()
-            .args(["build", "--report", "json", "--strategy", s, "-o"])
-            .arg(dir.path().join(format!("out-{s}")))
-            .arg(&src)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let mut v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
         // object sizes depend on the C compiler: checked, then left out of the snapshot
-        for b in v["blocks"].as_array_mut().unwrap() {
-            let size = b["object_bytes"].as_u64().expect("cc and nm are available");
-            assert!(size > 100, "{b}");
-            b.as_object_mut().unwrap().remove("object_bytes");
-        }
+        let v = common::block_report(&src, &dir.path().join(format!("out-{s}")), s, 100);
         reports.push(v);
     }
     let block = |r: &serde_json::Value, name: &str| {
@@ -335,11 +311,7 @@ fn run_plot_draws_position_and_velocity_of_each_axis() {
         .arg(&svg)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     // the axis columns were added to the watch list for the plot
     let header = String::from_utf8(out.stdout).unwrap();
     assert!(
@@ -383,11 +355,7 @@ fn differential_two_axes_calc_negated_outputs_buffered_halt_every_variable() {
             .arg(&trace)
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         traces.push(without_tm_views(&std::fs::read_to_string(&trace).unwrap()));
     }
     let (il, tpl) = (&traces[0], &traces[1]);
@@ -435,11 +403,7 @@ fn groups_of_the_axis_file_are_created_at_init_and_declared_as_globals() {
         ])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     assert_eq!(
         String::from_utf8(out.stdout).unwrap(),
         "cycle,time_ms,X1.AxisNo,Y9.AxisNo,G1.GroupNo,axis.Y9.position\n0,0,0,1,0,0\n1,10,0,1,0,0\n"
@@ -477,11 +441,7 @@ fn a_ladder_program_with_motion_blocks_runs_identically_with_both_methods() {
             ])
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         traces.push(std::fs::read_to_string(&trace).unwrap());
     }
     assert_eq!(traces[0], traces[1]);
@@ -506,11 +466,7 @@ fn pmac_program_of_the_constant_moves_with_a_warning_for_the_computed_one() {
             .args(["--pmac-dialect", dialect])
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(
             err.contains("warning[W5050]") && err.contains(":16:"),
@@ -540,11 +496,7 @@ fn blocks_inside_a_function_block_and_global_instances_work_with_both_methods() 
             ])
             .output()
             .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        common::assert_ok(&out);
         traces.push(std::fs::read_to_string(&trace).unwrap());
     }
     assert_eq!(traces[0], traces[1]);

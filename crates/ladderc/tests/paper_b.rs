@@ -82,11 +82,7 @@ fn pmac_pvt_of_a_run_reproduces_the_traced_motion() {
         .arg(&pvt)
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     let cols = columns(&std::fs::read_to_string(&trace).unwrap());
     // the axis columns were added for the PVT
     let traj = trajectory(&cols, &["X1"], 0.002);
@@ -149,11 +145,7 @@ fn run(stem: &str, cycles: u64) -> Run {
         .arg(p("p.pvt"))
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    common::assert_ok(&out);
     let read = |n: &str| std::fs::read_to_string(p(n)).unwrap();
     Run {
         cols: columns(&read("t.csv")),

@@ -27,3 +27,27 @@ pub fn assert_ok(out: &Output) {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// `ladderc build --report json --strategy STRATEGY -o OUT SRC`: the report, each block's object size
+/// checked to be over `min_object_bytes` (it depends on the C compiler) and then left out.
+pub fn block_report(
+    src: &Path,
+    out_dir: &Path,
+    strategy: &str,
+    min_object_bytes: u64,
+) -> serde_json::Value {
+    let out = ladderc()
+        .args(["build", "--report", "json", "--strategy", strategy, "-o"])
+        .arg(out_dir)
+        .arg(src)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let mut v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for b in v["blocks"].as_array_mut().unwrap() {
+        let size = b["object_bytes"].as_u64().expect("cc and nm are available");
+        assert!(size > min_object_bytes, "{b}");
+        b.as_object_mut().unwrap().remove("object_bytes");
+    }
+    v
+}
