@@ -230,3 +230,40 @@ fn motion_example_moves_to_100_then_backs_off_to_60_and_plots() {
     );
     assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
 }
+
+#[test]
+fn an_array_input_of_a_function_is_passed_by_value() {
+    // SUM3 reads its array input; the caller's array changes after the call and between cycles. The
+    // function sees the caller's values at the call, and (being a copy) cannot alias the caller's array.
+    let program = "FUNCTION SUM3 : INT
+VAR_INPUT
+    a : ARRAY[0..2] OF INT;
+END_VAR
+    LD a[0]
+    ADD a[1]
+    ADD a[2]
+    ST SUM3
+END_FUNCTION
+
+PROGRAM main
+VAR
+    v : ARRAY[0..2] OF INT := [1, 2, 3];
+    s : INT;
+END_VAR
+    SUM3(a := v)
+    ST s
+    LD v[1]
+    ADD 10
+    ST v[1]
+END_PROGRAM
+";
+    let trace = run(
+        program,
+        "",
+        &["--cycles", "3", "--watch", "main.s,main.v[1]", "--sanitize"],
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.s,main.v[1]\n0,0,6,12\n1,10,16,22\n2,20,26,32\n"
+    );
+}

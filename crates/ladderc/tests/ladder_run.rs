@@ -197,3 +197,30 @@ fn corpus_01_counters_in_ld_fbd_il_and_st_agree_cycle_by_cycle() {
         );
     }
 }
+
+#[test]
+fn corpus_24_codesys_st_motion_library_builds_to_c_that_compiles() {
+    // CODESYS ST functions with array inputs (passed by value) and vendor addData: `ladderc build`
+    // writes the C project, and its Makefile builds it warning-free with the system compiler.
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = dir.path().join("out");
+    let out = common::ladderc()
+        .arg("build")
+        .arg(common::corpus("24_feecat_S7RTT_codesys_st_motion.xml"))
+        .arg("-o")
+        .arg(&out_dir)
+        .output()
+        .unwrap();
+    common::assert_ok(&out);
+    let make = Command::new("make")
+        .args(["-s", "CFLAGS=-std=c99 -Wall -Wextra -Werror -O1"])
+        .current_dir(&out_dir)
+        .output()
+        .unwrap();
+    assert!(
+        make.status.success(),
+        "{}",
+        String::from_utf8_lossy(&make.stderr)
+    );
+    assert!(out_dir.join("program").is_file());
+}

@@ -417,11 +417,14 @@ impl Gen<'_> {
         for v in &p.vars {
             let name = mangle::var(&v.name);
             match v.kind {
+                // An array input is passed by value: the caller's array arrives as `name__arg` and is
+                // copied into the local `name` when the function starts (see `pou`).
+                VarKind::Input if matches!(v.ty, Type::Array { .. }) => params.push(format!(
+                    "{} {name}__arg{}",
+                    ctypes::base(self.model, &v.ty)?,
+                    ctypes::dims(&v.ty)
+                )),
                 VarKind::Input => {
-                    if matches!(v.ty, Type::Array { .. }) {
-                        self.unsupported(v.span, "an array input of a FUNCTION");
-                        return None;
-                    }
                     params.push(format!("{} {name}", ctypes::base(self.model, &v.ty)?));
                 }
                 VarKind::Output | VarKind::InOut => {
@@ -524,6 +527,15 @@ impl Gen<'_> {
             b.targets = targets;
             // locals and the result variable
             let mut pre = String::new();
+            for v in &p.vars {
+                if v.kind == VarKind::Input && matches!(v.ty, Type::Array { .. }) {
+                    let name = mangle::var(&v.name);
+                    if let Some(d) = ctypes::declare(self.model, &v.ty, &name) {
+                        let _ = writeln!(pre, "    {d};");
+                        let _ = writeln!(pre, "    memcpy(&{name}, {name}__arg, sizeof {name});");
+                    }
+                }
+            }
             for v in &p.vars {
                 if matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut) {
                     let _ = writeln!(pre, "    (void){};", mangle::var(&v.name));
