@@ -158,7 +158,15 @@ pub static STD_FBS: &[StdFb] = &[
     },
 ];
 
+/// A standard FB by name, case-insensitively; `CTU_INT`, `CTD_INT`, `CTUD_INT` (3rd edition) are the INT
+/// counters `CTU`, `CTD`, `CTUD`, as in sema.
 pub fn std_fb(name: &str) -> Option<&'static StdFb> {
+    let name = match name.to_ascii_uppercase().as_str() {
+        "CTU_INT" => "CTU",
+        "CTD_INT" => "CTD",
+        "CTUD_INT" => "CTUD",
+        _ => name,
+    };
     STD_FBS.iter().find(|f| f.name.eq_ignore_ascii_case(name))
 }
 

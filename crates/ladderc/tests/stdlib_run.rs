@@ -163,20 +163,35 @@ fn corpus_std_test_string_operations_run_cycle_by_cycle() {
 }
 
 /// FBD blocks of the typed counters and the named time functions (fixture `fbd_typed_counter.xml`:
-/// CTU_UDINT with PV 2, MUL_TIME(T, 2)).
+/// CTU_UDINT with PV 2, MUL_TIME(T, 2)); the same with the 3rd edition's `CTU_INT` (= CTU).
 #[test]
 fn fbd_typed_counter_and_mul_time_blocks_run() {
+    let udint = fixture("fbd_typed_counter.xml");
     let dir = tempfile::tempdir().unwrap();
-    let stim = dir.path().join("stim.csv");
+    let int = dir.path().join("fbd_ctu_int.xml");
+    let text = std::fs::read_to_string(&udint).unwrap();
+    assert!(text.contains("CTU_UDINT"));
+    std::fs::write(
+        &int,
+        text.replace("CTU_UDINT", "CTU_INT").replace("UDINT", "INT"),
+    )
+    .unwrap();
+    for project in [udint, int] {
+        typed_counter_run(&project, dir.path());
+    }
+}
+
+fn typed_counter_run(project: &std::path::Path, dir: &std::path::Path) {
+    let stim = dir.join("stim.csv");
     std::fs::write(
         &stim,
         "0,main.T,T#250ms\n1,main.PULSE,1\n2,main.PULSE,0\n3,main.PULSE,1\n",
     )
     .unwrap();
-    let trace = dir.path().join("trace.csv");
+    let trace = dir.join("trace.csv");
     let out = ladderc()
         .arg("run")
-        .arg(fixture("fbd_typed_counter.xml"))
+        .arg(project)
         .args(["--cycles", "5", "--sanitize", "--stimulus"])
         .arg(&stim)
         .arg("--trace")
