@@ -43,7 +43,6 @@ pub struct PouLowering<'d> {
     loops: Vec<LoopLabels>,
     /// Set when an expression contained a syntax error (reported by the parser).
     poisoned: bool,
-    spans: super::spans::SpanAlloc,
     /// The type an untyped literal loaded first by the next [`Self::value`] should get (`LD REAL#2.0`
     /// where the context is REAL), so IL sema does not default it to DINT/LREAL.
     lit_hint: Option<TypeRef>,
@@ -141,7 +140,6 @@ impl<'d> PouLowering<'d> {
             next_label: 0,
             loops: Vec::new(),
             poisoned: false,
-            spans: Default::default(),
             lit_hint: None,
         }
     }
@@ -150,12 +148,6 @@ impl<'d> PouLowering<'d> {
     /// visible to the lowering, e.g. SFC step flags.
     pub fn declare(&mut self, name: &str, ty: TypeRef) {
         self.vars.insert(name.to_ascii_uppercase(), ty);
-    }
-
-    /// A span for an instruction the caller creates itself in this POU (IL sema keys instructions by
-    /// span: no two may share one): `want` when free, else a free sub-span of it.
-    pub fn unique_span(&mut self, want: Span) -> Span {
-        self.spans.unique(want)
     }
 
     /// A label no other snippet of this POU uses: `_ST_<WHAT><n>`.
@@ -167,9 +159,7 @@ impl<'d> PouLowering<'d> {
     /// Lowers a statement list.
     pub fn statements(&mut self, stmts: &[Stmt], diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
-        self.spans.stmts(stmts);
         self.stmt_list(stmts, &mut out, diags);
-        self.spans.uniquify(&mut out);
         out
     }
 
@@ -177,9 +167,7 @@ impl<'d> PouLowering<'d> {
     pub fn expression(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
         self.poisoned = false;
-        self.spans.expr(e);
         self.value(e, &mut out, diags);
-        self.spans.uniquify(&mut out);
         out
     }
 
@@ -188,9 +176,7 @@ impl<'d> PouLowering<'d> {
     pub fn condition(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
         self.poisoned = false;
-        self.spans.expr(e);
         self.cond_value(e, "condition", &mut out, diags);
-        self.spans.uniquify(&mut out);
         out
     }
 

@@ -16,7 +16,6 @@ pub mod infer;
 pub mod lexer;
 pub mod lower;
 pub mod parser;
-pub mod spans;
 pub mod types;
 
 pub use lower::PouLowering;
