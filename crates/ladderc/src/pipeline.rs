@@ -68,7 +68,14 @@ impl Lowered {
     }
 }
 
+impl Default for Session {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 impl Session {
+    /// An empty session: no sources, no diagnostics.
     pub fn new() -> Self {
         Session {
             map: SourceMap::new(),
