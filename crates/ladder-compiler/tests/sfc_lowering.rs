@@ -7,7 +7,7 @@ use common::{compile, dump_unit};
 
 fn sfc_fixture(name: &str) -> String {
     let path = format!(
-        "{}/../ladderc/tests/fixtures/sfc/{name}",
+        "{}/../../tests/tests/fixtures/sfc/{name}",
         env!("CARGO_MANIFEST_DIR")
     );
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))

@@ -41,7 +41,7 @@ fn trace(src: &Path, axes: &Path, strategy: &str, cycles: u32, dir: &Path) -> Ve
 
 #[test]
 fn every_motion_example_runs_identically_with_both_methods() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
     let examples = [
         ("motion/move.il", "motion/move.axes.json", 2200),
         ("paper-b/paper_b.il", "paper-b/paper_b.axes.json", 20_000),

@@ -8,7 +8,7 @@ use std::process::Stdio;
 
 const SCRIPT: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
-    "/../drive-script/tests/scripts/three_motions.ds"
+    "/../crates/drive-script/tests/scripts/three_motions.ds"
 );
 
 #[test]

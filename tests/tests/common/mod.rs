@@ -4,9 +4,22 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-/// The `ladderc` binary under test.
+/// The `ladderc` binary under test: this package's `ladderc-e2e` (the ladderc command line), run with
+/// `argv[0] = ladderc` so that its usage and help texts name `ladderc`.
 pub fn ladderc() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_ladderc"))
+    #[allow(unused_mut)]
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_ladderc-e2e"));
+    #[cfg(unix)]
+    std::os::unix::process::CommandExt::arg0(&mut cmd, "ladderc");
+    cmd
+}
+
+/// The repository's root directory (the workspace).
+pub fn repo_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("the tests package lies in the repository")
+        .to_path_buf()
 }
 
 /// A file of `shared/corpus` beside the repository (or beside an ancestor: worktrees nest deeper).

@@ -10,7 +10,7 @@ use std::process::Command;
 
 fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../ladder-compiler/tests/fixtures")
+        .join("../crates/ladder-compiler/tests/fixtures")
         .join(name)
 }
 
@@ -27,7 +27,7 @@ fn run(
     let stim = dir.path().join("stim.csv");
     std::fs::write(&stim, stimulus).unwrap();
     let trace = dir.path().join("trace.csv");
-    let out = Command::new(env!("CARGO_BIN_EXE_ladderc"))
+    let out = common::ladderc()
         .arg("run")
         .arg(fixture(fixture_name))
         .args([
@@ -163,7 +163,7 @@ fn corpus_01_counters_in_ld_fbd_il_and_st_agree_cycle_by_cycle() {
     )
     .unwrap();
     let trace = dir.path().join("trace.csv");
-    let out = Command::new(env!("CARGO_BIN_EXE_ladderc"))
+    let out = common::ladderc()
         .arg("run")
         .arg(common::corpus("01_beremiz_first_steps.xml"))
         .args(["--cycles", "14", "--cycle-ms", "100", "--stimulus"])

@@ -5,7 +5,6 @@ mod common;
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -19,7 +18,7 @@ fn run(file: &Path, cycles: u32, stimulus: &str, watch: &[&str]) -> String {
     let stim = dir.path().join("stim.csv");
     std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
     let trace = dir.path().join("trace.csv");
-    let out = Command::new(env!("CARGO_BIN_EXE_ladderc"))
+    let out = common::ladderc()
         .arg("run")
         .arg(file)
         .args(["--cycles", &cycles.to_string(), "--cycle-ms", "10"])
@@ -238,7 +237,7 @@ fn corpus_01_runs_and_counter_sfc_tracks_counter_il_as_the_standard_says() {
     .iter()
     .map(|v| format!("{p}.{v}"))
     .collect();
-    let out = Command::new(env!("CARGO_BIN_EXE_ladderc"))
+    let out = common::ladderc()
         .arg("run")
         .arg(corpus("01_beremiz_first_steps.xml"))
         .args(["--cycles", "10", "--cycle-ms", "100", "--stimulus"])
