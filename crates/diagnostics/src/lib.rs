@@ -15,7 +15,10 @@ mod span;
 
 pub use codes::{all as all_codes, explain, lookup, Code, CodeInfo};
 pub use diagnostic::{Diagnostic, Label, Severity, XmlContext};
-pub use render::{hint_of, render, render_human, render_json_line, render_short, MessageFormat};
+pub use render::{
+    hint_of, render, render_human, render_json_line, render_short, render_summary_json, MessageFormat,
+    RunSummary, Summary, JSON_SCHEMA,
+};
 pub use source::{SourceFile, SourceMap};
 pub use span::{FileId, Span};
 
@@ -42,6 +45,12 @@ impl Diagnostics {
     }
     pub fn has_errors(&self) -> bool {
         self.list.iter().any(|d| d.severity == Severity::Error)
+    }
+    pub fn warning_count(&self) -> usize {
+        self.list
+            .iter()
+            .filter(|d| d.severity == Severity::Warning)
+            .count()
     }
     pub fn error_count(&self) -> usize {
         self.list
