@@ -715,7 +715,16 @@ fn run_program(
     // The trace is written beside its destination and moved into place only when the run succeeded.
     let final_trace = run.trace.clone();
     if let Some(t) = &final_trace {
-        run.trace = Some(pipeline::staging_path(t));
+        let staging = pipeline::staging_path(t);
+        // Created here so that an unwritable destination is an I/O error (exit 2) before the run.
+        if let Err(e) = std::fs::File::create(&staging) {
+            return io_error(
+                format!("cannot write {}: {e}", t.display()),
+                "check that the trace's directory exists and can be written",
+                format,
+            );
+        }
+        run.trace = Some(staging);
     }
     let timed = match crate::progress::run(&exe, &run, work.path()) {
         Ok(o) => o,

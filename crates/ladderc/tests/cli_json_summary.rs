@@ -201,11 +201,12 @@ fn run_prints_a_one_line_summary_and_a_json_summary_record() {
     let s = lines.last().unwrap();
     assert_eq!(s["errors"], 0);
     assert_eq!(s["run"]["cycles"], 300);
-    assert_eq!(s["run"]["simulated_s"], 3.0, "10 ms cycles from move.axes.json");
+    assert_eq!(s["run"]["simulated_s"], 0.6, "2 ms cycles from move.axes.json");
     assert!(s["run"]["wall_s"].as_f64().unwrap() > 0.0);
     assert_eq!(
         s["files"],
-        serde_json::json!([trace.display().to_string(), svg.display().to_string()])
+        serde_json::json!([svg.display().to_string(), trace.display().to_string()]),
+        "in the order written: the trace is moved into place last"
     );
     // build reports its directory.
     let out_dir = dir.path().join("proj");
