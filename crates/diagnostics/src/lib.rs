@@ -3,7 +3,9 @@
 //! Input: spans into files registered in a [`SourceMap`], stable [`Code`]s (one explanation file each under
 //! `explanations/`), messages and hints produced by the stages.
 //! Output: three renderings of a [`Diagnostic`] list: human (source excerpt with labels and a hint), short
-//! (`file:line:col: error[CODE]: message`, one line, for IDE problem matchers) and JSON lines.
+//! (`file:line:col: error[CODE]: message`, one line, for IDE problem matchers) and JSON lines (each with
+//! `"schema": "ladderc-diagnostic/1"`, [`JSON_SCHEMA`]; the document is `schema/diagnostics-1.schema.json`),
+//! plus the final [`Summary`] record ([`render_summary_json`]).
 //! Invariants: a span always refers to a file of the source map and lies on UTF-8 boundaries of its text;
 //! line and column are 1-based, columns count characters (not bytes).
 

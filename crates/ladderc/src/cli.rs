@@ -742,7 +742,7 @@ fn run_program(
     }
     // A closed standard output (`| head`) is no reason to skip the files asked for.
     let stdout_failed = stdio::out(&out.stdout).err();
-    stdio::err(&out.stderr);
+    program_stderr(&out, format);
     if let (true, Some(svg)) = (out.success(), &plot) {
         let text = match &run.trace {
             Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
@@ -817,6 +817,40 @@ fn run_program(
             }
             EXIT_DIAGNOSTICS
         }
+    }
+}
+
+/// The program's standard error: as it is, or under JSON one diagnostic per line (W9200 after a
+/// successful run, E9201 after a failed one), so that every line stays a JSON record.
+fn program_stderr(out: &c_backend::RunOutput, format: Format) {
+    if format != Format::Json {
+        stdio::err(&out.stderr);
+        return;
+    }
+    let diags: Vec<Diagnostic> = out
+        .stderr
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            if out.success() {
+                Diagnostic::warning(diagnostics::code::W9200, l.trim())
+            } else {
+                Diagnostic::error(diagnostics::code::E9201, l.trim())
+            }
+        })
+        .collect();
+    let failed_silently = !out.success() && diags.is_empty();
+    emit(&SourceMap::new(), &diags, format);
+    if failed_silently {
+        let status = match out.status {
+            Some(c) => format!("exit status {c}"),
+            None => "a signal".to_string(),
+        };
+        let d = Diagnostic::error(
+            diagnostics::code::E9201,
+            format!("the program run failed ({status})"),
+        );
+        emit(&SourceMap::new(), &[d], format);
     }
 }
 

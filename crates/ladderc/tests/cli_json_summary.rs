@@ -161,6 +161,32 @@ fn real_failing_runs_validate_against_the_schema() {
 }
 
 #[test]
+fn the_running_programs_messages_are_json_records_too() {
+    let dir = tempfile::tempdir().unwrap();
+    write(
+        dir.path(),
+        "div.il",
+        "PROGRAM main\nVAR d : INT; q : INT; END_VAR\n    LD 10\n    DIV d\n    ST q\nEND_PROGRAM\n",
+    );
+    write(dir.path(), "bad.csv", "cycle,variable,value\n1,main.nosuch,3\n");
+    let out = json(&["run", "div.il", "--cycles", "2"], dir.path());
+    assert_ok(&out);
+    let lines = json_lines(&out);
+    assert_eq!(lines[0]["code"], "W9200", "{lines:?}");
+    assert!(lines[0]["message"].as_str().unwrap().contains("division by zero"));
+    assert_eq!(lines.last().unwrap()["warnings"], 1);
+    assert_eq!(lines.last().unwrap()["run"]["cycles"], 2);
+
+    let out = json(&["run", "div.il", "--cycles", "2", "--stimulus", "bad.csv"], dir.path());
+    assert_eq!(out.status.code(), Some(1));
+    let lines = json_lines(&out);
+    assert_eq!(lines[0]["code"], "E9201", "{lines:?}");
+    assert!(lines[0]["message"].as_str().unwrap().contains("nosuch"));
+    assert_eq!(lines.last().unwrap()["errors"], 1);
+    assert!(lines.last().unwrap().get("run").is_none(), "a failed run has no run figures");
+}
+
+#[test]
 fn run_prints_a_one_line_summary_and_a_json_summary_record() {
     let dir = tempfile::tempdir().unwrap();
     let counter = root().join("examples/counter");
