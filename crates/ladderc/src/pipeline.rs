@@ -194,7 +194,8 @@ impl Session {
         };
         let checked_model = il_frontend::sema::analyze(&checked, &mut self.diags);
         if self.diags.has_errors() {
-            if uses_blocks && opts.axes.is_none() && axes.axes.is_empty() && axes.groups.is_empty() {
+            if uses_blocks && opts.axes.is_none() && axes.axes.is_empty() && axes.groups.is_empty()
+            {
                 self.hint_axes_file(paths);
             }
             return None;

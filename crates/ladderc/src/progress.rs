@@ -54,16 +54,16 @@ pub fn run(exe: &Path, opts: &RunOptions, scratch: &Path) -> Result<Timed, Build
         child.wait().map_err(fail)?
     } else {
         loop {
-        if let Some(status) = child.try_wait().map_err(fail)? {
-            break status;
-        }
-        std::thread::sleep(Duration::from_millis(20));
-        if start.elapsed() >= delay {
-            let pb = shown.get_or_insert_with(|| new_bar(opts.cycles));
-            if let Some(done) = read_progress(&progress_file) {
-                pb.set_position(done.min(opts.cycles));
+            if let Some(status) = child.try_wait().map_err(fail)? {
+                break status;
             }
-        }
+            std::thread::sleep(Duration::from_millis(20));
+            if start.elapsed() >= delay {
+                let pb = shown.get_or_insert_with(|| new_bar(opts.cycles));
+                if let Some(done) = read_progress(&progress_file) {
+                    pb.set_position(done.min(opts.cycles));
+                }
+            }
         }
     };
     let wall = start.elapsed();

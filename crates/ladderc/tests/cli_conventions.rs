@@ -18,7 +18,8 @@ fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     p
 }
 
-const COUNTER: &str = "PROGRAM main\nVAR n : INT; END_VAR\n    LD n\n    ADD 1\n    ST n\nEND_PROGRAM\n";
+const COUNTER: &str =
+    "PROGRAM main\nVAR n : INT; END_VAR\n    LD n\n    ADD 1\n    ST n\nEND_PROGRAM\n";
 
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
@@ -49,11 +50,17 @@ fn every_io_error_exits_2() {
         vec!["run", motion, "--cycles", "5", "--pmac-pvt", &under_file],
     ];
     for args in cases {
-        let out = ladderc().current_dir(dir.path()).args(&args).output().unwrap();
+        let out = ladderc()
+            .current_dir(dir.path())
+            .args(&args)
+            .output()
+            .unwrap();
         let err = stderr(&out);
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
         assert!(
-            ["E9001", "E9002", "E7005"].iter().any(|c| err.contains(&format!("error[{c}]"))),
+            ["E9001", "E9002", "E7005"]
+                .iter()
+                .any(|c| err.contains(&format!("error[{c}]"))),
             "{args:?}: {err}"
         );
         assert!(!err.contains("panicked"), "{args:?}: {err}");
@@ -221,7 +228,14 @@ fn usage_errors_are_json_diagnostics_under_json_message_format() {
     for args in [
         vec!["--message-format", "json", "run", "x.il", "--cycels", "3"],
         vec!["--message-format=json", "check"],
-        vec!["run", "x.il", "--message-format", "json", "--cycles", "many"],
+        vec![
+            "run",
+            "x.il",
+            "--message-format",
+            "json",
+            "--cycles",
+            "many",
+        ],
         vec!["--message-format", "json", "frobnicate"],
     ] {
         let out = ladderc().args(&args).output().unwrap();
@@ -318,13 +332,25 @@ fn the_readme_synopsis_lists_every_option() {
     let absent: Vec<_> = options
         .iter()
         .filter(|(_, o)| {
-            !section
-                .match_indices(o.as_str())
-                .any(|(i, _)| !section[i + o.len()..].starts_with(|c: char| c == '-' || c.is_ascii_alphanumeric()))
+            !section.match_indices(o.as_str()).any(|(i, _)| {
+                !section[i + o.len()..].starts_with(|c: char| c == '-' || c.is_ascii_alphanumeric())
+            })
         })
         .collect();
-    assert!(absent.is_empty(), "not in the README's Command line section: {absent:?}");
-    for sub in ["check", "build", "run", "explain", "motion plan", "drive build", "drive run", "drive debug"] {
+    assert!(
+        absent.is_empty(),
+        "not in the README's Command line section: {absent:?}"
+    );
+    for sub in [
+        "check",
+        "build",
+        "run",
+        "explain",
+        "motion plan",
+        "drive build",
+        "drive run",
+        "drive debug",
+    ] {
         assert!(section.contains(&format!("ladderc {sub}")), "{sub}");
     }
 }

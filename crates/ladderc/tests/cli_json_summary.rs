@@ -25,8 +25,9 @@ fn stderr(o: &Output) -> String {
 }
 
 fn validator() -> jsonschema::Validator {
-    let text = std::fs::read_to_string(root().join("crates/diagnostics/schema/diagnostics-1.schema.json"))
-        .unwrap();
+    let text =
+        std::fs::read_to_string(root().join("crates/diagnostics/schema/diagnostics-1.schema.json"))
+            .unwrap();
     let schema: Value = serde_json::from_str(&text).unwrap();
     jsonschema::validator_for(&schema).expect("the schema is a valid JSON Schema")
 }
@@ -138,10 +139,22 @@ fn semantic_errors_in_xml_name_their_pou_network_and_local_id() {
 #[test]
 fn real_failing_runs_validate_against_the_schema() {
     let dir = tempfile::tempdir().unwrap();
-    write(dir.path(), "bad.il", "PROGRAM main\nVAR x : INT; END_VAR\n    LD y\n    ST x\n    JMP nowhere\nEND_PROGRAM\n");
-    write(dir.path(), "bad.st", "PROGRAM main\nVAR x : INT; END_VAR\n  x := ;\n  y := 1;\nEND_PROGRAM\n");
+    write(
+        dir.path(),
+        "bad.il",
+        "PROGRAM main\nVAR x : INT; END_VAR\n    LD y\n    ST x\n    JMP nowhere\nEND_PROGRAM\n",
+    );
+    write(
+        dir.path(),
+        "bad.st",
+        "PROGRAM main\nVAR x : INT; END_VAR\n  x := ;\n  y := 1;\nEND_PROGRAM\n",
+    );
     write(dir.path(), "ghost.xml", LD_GHOST);
-    write(dir.path(), "broken.xml", "<project><types><pous><pou name=\"a\"");
+    write(
+        dir.path(),
+        "broken.xml",
+        "<project><types><pous><pou name=\"a\"",
+    );
     for (args, exit) in [
         (vec!["check", "bad.il"], 1),
         (vec!["build", "bad.st", "--emit", "il"], 1),
@@ -168,22 +181,35 @@ fn the_running_programs_messages_are_json_records_too() {
         "div.il",
         "PROGRAM main\nVAR d : INT; q : INT; END_VAR\n    LD 10\n    DIV d\n    ST q\nEND_PROGRAM\n",
     );
-    write(dir.path(), "bad.csv", "cycle,variable,value\n1,main.nosuch,3\n");
+    write(
+        dir.path(),
+        "bad.csv",
+        "cycle,variable,value\n1,main.nosuch,3\n",
+    );
     let out = json(&["run", "div.il", "--cycles", "2"], dir.path());
     assert_ok(&out);
     let lines = json_lines(&out);
     assert_eq!(lines[0]["code"], "W9200", "{lines:?}");
-    assert!(lines[0]["message"].as_str().unwrap().contains("division by zero"));
+    assert!(lines[0]["message"]
+        .as_str()
+        .unwrap()
+        .contains("division by zero"));
     assert_eq!(lines.last().unwrap()["warnings"], 1);
     assert_eq!(lines.last().unwrap()["run"]["cycles"], 2);
 
-    let out = json(&["run", "div.il", "--cycles", "2", "--stimulus", "bad.csv"], dir.path());
+    let out = json(
+        &["run", "div.il", "--cycles", "2", "--stimulus", "bad.csv"],
+        dir.path(),
+    );
     assert_eq!(out.status.code(), Some(1));
     let lines = json_lines(&out);
     assert_eq!(lines[0]["code"], "E9201", "{lines:?}");
     assert!(lines[0]["message"].as_str().unwrap().contains("nosuch"));
     assert_eq!(lines.last().unwrap()["errors"], 1);
-    assert!(lines.last().unwrap().get("run").is_none(), "a failed run has no run figures");
+    assert!(
+        lines.last().unwrap().get("run").is_none(),
+        "a failed run has no run figures"
+    );
 }
 
 #[test]
@@ -208,8 +234,14 @@ fn run_prints_a_one_line_summary_and_a_json_summary_record() {
         .unwrap_or_else(|| panic!("{err}"));
     assert!(line.contains(" s ("), "{line}");
     assert!(line.contains("x real time"), "{line}");
-    assert!(line.ends_with(&format!("; wrote {}", trace.display())), "{line}");
-    assert!(!err.contains('\r'), "no progress bar without a terminal: {err:?}");
+    assert!(
+        line.ends_with(&format!("; wrote {}", trace.display())),
+        "{line}"
+    );
+    assert!(
+        !err.contains('\r'),
+        "no progress bar without a terminal: {err:?}"
+    );
 
     let motion = root().join("examples/motion/move.il");
     let svg = dir.path().join("m.svg");
@@ -227,7 +259,10 @@ fn run_prints_a_one_line_summary_and_a_json_summary_record() {
     let s = lines.last().unwrap();
     assert_eq!(s["errors"], 0);
     assert_eq!(s["run"]["cycles"], 300);
-    assert_eq!(s["run"]["simulated_s"], 0.6, "2 ms cycles from move.axes.json");
+    assert_eq!(
+        s["run"]["simulated_s"], 0.6,
+        "2 ms cycles from move.axes.json"
+    );
     assert!(s["run"]["wall_s"].as_f64().unwrap() > 0.0);
     assert_eq!(
         s["files"],
