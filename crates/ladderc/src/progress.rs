@@ -59,9 +59,12 @@ pub fn run(exe: &Path, opts: &RunOptions, scratch: &Path) -> Result<Timed, Build
             }
             std::thread::sleep(Duration::from_millis(20));
             if start.elapsed() >= delay {
-                let pb = shown.get_or_insert_with(|| new_bar(opts.cycles));
-                if let Some(done) = read_progress(&progress_file) {
-                    pb.set_position(done.min(opts.cycles));
+                let done = read_progress(&progress_file).map(|d| d.min(opts.cycles));
+                let pb = shown.get_or_insert_with(|| {
+                    new_bar(opts.cycles, done.unwrap_or(0), start.elapsed())
+                });
+                if let Some(done) = done {
+                    pb.set_position(done);
                 }
             }
         }
@@ -82,10 +85,14 @@ pub fn run(exe: &Path, opts: &RunOptions, scratch: &Path) -> Result<Timed, Build
     })
 }
 
-fn new_bar(cycles: u64) -> indicatif::ProgressBar {
-    let pb = indicatif::ProgressBar::new(cycles);
+/// A bar of `cycles`, starting at `done` after `elapsed` (the time estimate counts from there).
+fn new_bar(cycles: u64, done: u64, elapsed: Duration) -> indicatif::ProgressBar {
+    let pb = indicatif::ProgressBar::new(cycles)
+        .with_position(done)
+        .with_elapsed(elapsed);
+    pb.reset_eta();
     let style = indicatif::ProgressStyle::with_template(
-        "{elapsed_precise} [{bar:40}] {pos}/{len} cycles ({per_sec}, {eta} left)",
+        "{elapsed_precise} [{wide_bar}] {pos}/{len} cycles, {eta} left",
     )
     .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
     .progress_chars("=> ");
