@@ -84,8 +84,9 @@ const LD_GHOST: &str = r#"<?xml version="1.0" encoding="utf-8"?>
       </LD></body>
     </pou>
     <pou name="calc" pouType="program">
-      <interface><localVars><variable name="n"><type><INT/></type></variable></localVars></interface>
-      <body><ST><xhtml:p xmlns:xhtml="http://www.w3.org/1999/xhtml">n := n + phantom;</xhtml:p></ST></body>
+      <interface><localVars><variable name="n"><type><INT/></type></variable><variable name="t"><type><derived name="TON"/></type></variable></localVars></interface>
+      <body><ST><xhtml:p xmlns:xhtml="http://www.w3.org/1999/xhtml">n := n + phantom;
+t(IN := TRUE, NOPE := T#1s);</xhtml:p></ST></body>
     </pou>
   </pous></types>
   <instances><configurations><configuration name="c"><resource name="r">
@@ -116,6 +117,12 @@ fn semantic_errors_in_xml_name_their_pou_network_and_local_id() {
         .unwrap_or_else(|| panic!("{lines:?}"));
     assert_eq!(phantom["code"], "E1001");
     assert_eq!(phantom["pou"], "calc");
+    let nope = diags
+        .iter()
+        .find(|d| d["message"].as_str().unwrap().contains("NOPE"))
+        .unwrap_or_else(|| panic!("{lines:?}"));
+    assert_eq!(nope["code"], "E1011");
+    assert_eq!(nope["pou"], "calc");
     // every diagnostic with a span in the XML file has its POU
     for d in &diags {
         assert!(d["pou"].is_string(), "{d}");
