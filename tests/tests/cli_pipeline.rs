@@ -172,7 +172,7 @@ fn missing_input_is_an_io_diagnostic() {
         .args(["check", "/nonexistent/x.il", "--message-format", "short"])
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(out.status.code(), Some(2), "an I/O error exits 2");
     assert!(String::from_utf8_lossy(&out.stderr).contains("error[E9001]"));
 }
 

@@ -125,6 +125,14 @@ impl TargetProfile {
     pub fn load_or_report(path: &Path, diags: &mut Diagnostics) -> Option<Self> {
         match Self::load(path) {
             Ok(p) => Some(p),
+            // A file that cannot be read is an I/O error (E9001, exit 2), not a bad profile.
+            Err(e @ ProfileError::Io { .. }) => {
+                diags.push(
+                    Diagnostic::error(code::E9001, e.to_string())
+                        .with_hint("check the --profile path and its permissions"),
+                );
+                None
+            }
             Err(e) => {
                 diags.push(
                     Diagnostic::error(code::E2003, e.to_string())

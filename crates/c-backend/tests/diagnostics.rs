@@ -202,13 +202,13 @@ fn target_profiles_load_validate_and_round_trip() {
     assert!(TargetProfile::from_json(&bad.to_json()).is_err());
     let unknown = d.to_json().replace("\"name\"", "\"nmae\"");
     assert!(TargetProfile::from_json(&unknown).is_err());
-    // loading a missing file reports E2003
+    // loading a missing file is an I/O error: E9001
     let mut diags = Diagnostics::new();
     assert!(
         TargetProfile::load_or_report(std::path::Path::new("/nonexistent/p.json"), &mut diags)
             .is_none()
     );
-    assert_eq!(diags.iter().next().unwrap().code.0, "E2003");
+    assert_eq!(diags.iter().next().unwrap().code.0, "E9001");
 }
 
 #[test]

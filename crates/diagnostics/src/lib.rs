@@ -3,7 +3,9 @@
 //! Input: spans into files registered in a [`SourceMap`], stable [`Code`]s (one explanation file each under
 //! `explanations/`), messages and hints produced by the stages.
 //! Output: three renderings of a [`Diagnostic`] list: human (source excerpt with labels and a hint), short
-//! (`file:line:col: error[CODE]: message`, one line, for IDE problem matchers) and JSON lines.
+//! (`file:line:col: error[CODE]: message`, one line, for IDE problem matchers) and JSON lines (each with
+//! `"schema": "ladderc-diagnostic/1"`, [`JSON_SCHEMA`]; the document is `schema/diagnostics-1.schema.json`),
+//! plus the final [`Summary`] record ([`render_summary_json`]).
 //! Invariants: a span always refers to a file of the source map and lies on UTF-8 boundaries of its text;
 //! line and column are 1-based, columns count characters (not bytes).
 
@@ -15,7 +17,10 @@ mod span;
 
 pub use codes::{all as all_codes, explain, lookup, Code, CodeInfo};
 pub use diagnostic::{Diagnostic, Label, Severity, XmlContext};
-pub use render::{hint_of, render, render_human, render_json_line, render_short, MessageFormat};
+pub use render::{
+    hint_of, render, render_human, render_json_line, render_short, render_summary_json,
+    MessageFormat, RunSummary, Summary, JSON_SCHEMA,
+};
 pub use source::{SourceFile, SourceMap};
 pub use span::{FileId, Span};
 
@@ -42,6 +47,12 @@ impl Diagnostics {
     }
     pub fn has_errors(&self) -> bool {
         self.list.iter().any(|d| d.severity == Severity::Error)
+    }
+    pub fn warning_count(&self) -> usize {
+        self.list
+            .iter()
+            .filter(|d| d.severity == Severity::Warning)
+            .count()
     }
     pub fn error_count(&self) -> usize {
         self.list

@@ -132,8 +132,15 @@ struct JsonLabel<'a> {
     message: &'a str,
 }
 
+/// The schema version carried by every JSON line (`"schema"`): the document is
+/// `crates/diagnostics/schema/diagnostics-1.schema.json`. A change that removes or retypes a field bumps it.
+pub const JSON_SCHEMA: &str = "ladderc-diagnostic/1";
+
 #[derive(Serialize)]
 struct JsonDiagnostic<'a> {
+    schema: &'static str,
+    /// `"diagnostic"` (the summary record has `"summary"`).
+    kind: &'static str,
     code: &'a str,
     severity: &'a str,
     message: &'a str,
@@ -177,6 +184,8 @@ pub fn render_json_line(map: &SourceMap, d: &Diagnostic) -> String {
         .map(|l| json_label(map, l.span, &l.message))
         .collect();
     let j = JsonDiagnostic {
+        schema: JSON_SCHEMA,
+        kind: "diagnostic",
         code: d.code.0,
         severity: severity_word(d.severity),
         message: &d.message,
@@ -207,4 +216,46 @@ pub fn render(map: &SourceMap, diags: &[Diagnostic], format: MessageFormat) -> S
             .map(|d| render_json_line(map, d) + "\n")
             .collect(),
     }
+}
+
+/// What a `run` did, for the summary: cycles, simulated and wall time, their ratio.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct RunSummary {
+    pub cycles: u64,
+    /// `cycles` times the scan cycle, in seconds.
+    pub simulated_s: f64,
+    /// Wall time of the program's run, in seconds.
+    pub wall_s: f64,
+    /// `simulated_s / wall_s` (how many times faster than real time); `null` when too fast to measure.
+    pub real_time_factor: Option<f64>,
+}
+
+/// The last JSON line of a command: how many errors and warnings it reported, the files it wrote.
+#[derive(Debug, Clone, Serialize, PartialEq, Default)]
+pub struct Summary {
+    pub errors: usize,
+    pub warnings: usize,
+    /// Paths as given on the command line, in the order they were written.
+    pub files: Vec<String>,
+    /// Only for `run`, when the program ran.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub run: Option<RunSummary>,
+}
+
+#[derive(Serialize)]
+struct JsonSummary<'a> {
+    schema: &'static str,
+    kind: &'static str,
+    #[serde(flatten)]
+    summary: &'a Summary,
+}
+
+/// The summary record as one JSON object (no newline).
+pub fn render_summary_json(s: &Summary) -> String {
+    serde_json::to_string(&JsonSummary {
+        schema: JSON_SCHEMA,
+        kind: "summary",
+        summary: s,
+    })
+    .expect("summary serialises")
 }

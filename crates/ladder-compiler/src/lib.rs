@@ -15,6 +15,7 @@ pub mod context;
 pub mod decls;
 pub mod graph;
 pub mod il_body;
+pub mod locate;
 pub mod lower;
 pub mod project;
 pub mod sfc;

@@ -1,8 +1,13 @@
 //! Argument parsing (clap) and dispatch to the library crates.
+//!
+//! Input: the command line. Output: the commands' results on standard output, diagnostics (and, for `check`,
+//! `build` and `run`, the final summary) on standard error, and the exit code: 0 success, 1 diagnostics or a
+//! failed run, 2 usage and I/O errors (a usage error is diagnostic E9200, in JSON under
+//! `--message-format json`). Invariant: a closed standard output ends the command quietly ([`crate::stdio`]).
 
-use crate::{output, pipeline};
+use crate::{output, pipeline, stdio, summary};
 use clap::{Parser, Subcommand, ValueEnum};
-use diagnostics::{render, Diagnostic, MessageFormat, SourceMap};
+use diagnostics::{render, Diagnostic, MessageFormat, Severity, SourceMap};
 use param_passing::lower::Strategy;
 use std::path::PathBuf;
 
@@ -10,7 +15,8 @@ use std::path::PathBuf;
 #[command(
     name = "ladderc",
     version,
-    about = "IEC 61131-3 ladder (PLCopen XML) and IL to C, with PLCopen motion"
+    about = "IEC 61131-3 ladder (PLCopen XML) and IL to C, with PLCopen motion",
+    after_help = EXIT_CODES_HELP
 )]
 pub struct Cli {
     /// How diagnostics are printed on stderr.
@@ -20,10 +26,16 @@ pub struct Cli {
     pub command: Command,
 }
 
+/// The exit codes, shown by `--help`.
+pub const EXIT_CODES_HELP: &str = "Exit codes:\n  0  success\n  1  diagnostics (errors in the sources), or the program run failed\n  2  usage error (E9200) or I/O error (a file that cannot be read or written)";
+
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum Format {
+    /// Source excerpts with labels, hints and notes.
     Human,
+    /// One line per diagnostic: `file:line:col: error[CODE]: message` (IDE problem matchers).
     Short,
+    /// JSON lines (schema `ladderc-diagnostic/1`), then a summary record.
     Json,
 }
 
@@ -37,8 +49,10 @@ impl From<Format> for MessageFormat {
     }
 }
 
+/// What a program is made of: the sources and every file that changes how they compile. Shared by
+/// `check`, `build` and `run`, so that `check` checks exactly what `build` builds.
 #[derive(clap::Args, Debug, Clone)]
-pub struct CompileArgs {
+pub struct ProjectArgs {
     /// Input files: IL sources, or PLCopen TC6 XML projects (`.xml`).
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
@@ -55,6 +69,12 @@ pub struct CompileArgs {
     /// beside the first input, when it exists.
     #[arg(long)]
     pub axes: Option<PathBuf>,
+}
+
+#[derive(clap::Args, Debug, Clone)]
+pub struct CompileArgs {
+    #[command(flatten)]
+    pub project: ProjectArgs,
     /// Also write a PMAC motion program of the program's constant MC_MoveAbsolute/MC_MoveRelative moves.
     #[arg(long)]
     pub pmac: Option<PathBuf>,
@@ -83,15 +103,17 @@ pub enum Emit {
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum ReportFormat {
+    /// One JSON object with a `blocks` array.
     Json,
 }
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
-    /// Check sources: parse and run the semantic checks, print diagnostics.
+    /// Check sources: every check that `build` runs (parsing, semantics, block calls, the target
+    /// profile, C generation), in memory; writes nothing.
     Check {
-        #[arg(required = true)]
-        inputs: Vec<PathBuf>,
+        #[command(flatten)]
+        project: ProjectArgs,
     },
     /// Compile to a C project (sources, header, runtime, Makefile) in a directory.
     Build {
@@ -100,6 +122,7 @@ pub enum Command {
         /// Output directory (replaced atomically).
         #[arg(short = 'o', long = "output")]
         output: Option<PathBuf>,
+        /// What to produce: the C project (`c`, into `-o DIR`) or the lowered IL on standard output (`il`).
         #[arg(long, value_enum, default_value_t = Emit::C)]
         emit: Emit,
         /// Print a report on standard output: per PLCopen block type its method, calls, TM bytes,
@@ -158,20 +181,27 @@ pub enum Command {
 pub enum MotionCommand {
     /// Plan jerk-limited profiles for problems in the oracle's JSON-lines format; prints each problem back
     /// with its time-optimal `duration` and `phases` ([duration, jerk] pairs).
-    Plan { file: PathBuf },
+    Plan {
+        /// JSON lines, one problem each (the ruckig oracle's format).
+        file: PathBuf,
+    },
 }
 
 #[derive(Subcommand, Debug)]
 pub enum DriveCommand {
     /// Compile a drive script into its binary image (Motion and Event pools).
     Build {
+        /// The drive script source.
         script: PathBuf,
+        /// The image file to write.
         #[arg(short = 'o', long = "output")]
         output: PathBuf,
     },
     /// Run a script (or an image) on the simulated drive.
     Run {
+        /// A drive script source, or an image written by `drive build`.
         script: PathBuf,
+        /// Main-loop cycles to run.
         #[arg(long, default_value_t = 1000)]
         cycles: u64,
         /// CSV trace, one row per main-loop cycle.
@@ -189,7 +219,9 @@ pub enum DriveCommand {
     },
     /// Interactive breakpoint debugger (commands from standard input; `help` lists them).
     Debug {
+        /// The drive script source.
         script: PathBuf,
+        /// The drive: a motion-lib axis or the simple simulation.
         #[arg(long, value_enum, default_value_t = DriveArg::MotionLib)]
         drive: DriveArg,
     },
@@ -197,7 +229,9 @@ pub enum DriveCommand {
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum DriveArg {
+    /// A motion-lib axis: jerk-limited profiles through the PLCopen blocks.
     MotionLib,
+    /// The simple simulated drive.
     Sim,
 }
 
@@ -218,16 +252,82 @@ pub const EXIT_USAGE: i32 = 2;
 pub fn main() -> i32 {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
-        Err(e) => {
-            let _ = e.print();
-            return if e.use_stderr() { EXIT_USAGE } else { EXIT_OK };
-        }
+        Err(e) => return usage_error(&e, requested_format(std::env::args_os())),
     };
+    let format = cli.message_format;
+    let pipeline_command = matches!(
+        cli.command,
+        Command::Check { .. } | Command::Build { .. } | Command::Run { .. }
+    );
+    let code = dispatch(cli);
+    if pipeline_command {
+        summary::finish(format);
+    }
+    code
+}
+
+/// `--message-format` as written on a command line that clap rejected (human when absent or unreadable).
+pub fn requested_format(args: impl IntoIterator<Item = std::ffi::OsString>) -> Format {
+    let args: Vec<String> = args
+        .into_iter()
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    let mut format = Format::Human;
+    for (i, a) in args.iter().enumerate() {
+        let value = match a.strip_prefix("--message-format") {
+            Some("") => args.get(i + 1).map(String::as_str),
+            Some(v) => v.strip_prefix('='),
+            None => None,
+        };
+        if let Some(v) = value {
+            if let Ok(f) = Format::from_str(v, true) {
+                format = f;
+            }
+        }
+    }
+    format
+}
+
+/// Prints a clap error: help and version on standard output (exit 0); a usage error as E9200 under
+/// `--message-format json` (with the summary record), clap's own text otherwise (exit 2).
+fn usage_error(e: &clap::Error, format: Format) -> i32 {
+    use clap::error::ErrorKind;
+    if !e.use_stderr() {
+        let _ = stdio::out(&e.render().to_string());
+        return EXIT_OK;
+    }
+    if format != Format::Json {
+        stdio::err(&e.render().to_string());
+        return EXIT_USAGE;
+    }
+    let text = e.render().to_string();
+    let mut lines = text.lines().filter(|l| !l.trim().is_empty());
+    let first = lines.next().unwrap_or("invalid command line");
+    let message = first.strip_prefix("error: ").unwrap_or(first).to_string();
+    let mut d = Diagnostic::error(diagnostics::code::E9200, message).with_hint(
+        if e.kind() == ErrorKind::MissingRequiredArgument {
+            "add the missing argument; `ladderc help` lists every command and option"
+        } else {
+            "`ladderc help` (or `ladderc SUBCOMMAND --help`) lists every command and option"
+        },
+    );
+    for l in lines {
+        let l = l.trim();
+        if !l.starts_with("For more information") {
+            d = d.with_note(l.to_string());
+        }
+    }
+    emit(&SourceMap::new(), &[d], format);
+    summary::finish(format);
+    EXIT_USAGE
+}
+
+fn dispatch(cli: Cli) -> i32 {
     match cli.command {
         Command::Explain { code } => explain(code.as_deref()),
         Command::Drive(cmd) => drive(cmd, cli.message_format.into()),
         Command::Motion(MotionCommand::Plan { file }) => motion_plan(&file),
-        Command::Check { inputs } => check(&inputs, cli.message_format),
+        Command::Check { project } => check(&project, cli.message_format),
         Command::Build {
             compile,
             output,
@@ -318,7 +418,7 @@ fn drive(cmd: DriveCommand, format: MessageFormat) -> i32 {
     }
 }
 
-fn options(c: &CompileArgs) -> pipeline::Options {
+fn options(c: &ProjectArgs) -> pipeline::Options {
     pipeline::Options {
         axes: c.axes.clone(),
         cycle_ms: None,
@@ -332,15 +432,32 @@ fn options(c: &CompileArgs) -> pipeline::Options {
     }
 }
 
-/// Prints the session's diagnostics; the exit code for them (0 when there is no error).
+/// Prints the session's diagnostics; the exit code for them: 0 without errors, 2 when a file could not be
+/// read or written (an I/O error), 1 otherwise.
 fn finish(s: pipeline::Session, format: Format) -> i32 {
-    let has_errors = s.diags.has_errors();
-    emit(&s.map, &s.diags.into_sorted(), format);
-    if has_errors {
-        EXIT_DIAGNOSTICS
-    } else {
-        EXIT_OK
+    let diags = s.diags.into_sorted();
+    emit(&s.map, &diags, format);
+    exit_code(&diags)
+}
+
+/// The codes of I/O errors (a file that cannot be read or written; E7005: a PMAC file or connection):
+/// they exit with 2.
+const IO_CODES: [diagnostics::Code; 3] = [
+    diagnostics::code::E9001,
+    diagnostics::code::E9002,
+    diagnostics::code::E7005,
+];
+
+fn exit_code(diags: &[Diagnostic]) -> i32 {
+    let errors = diags.iter().filter(|d| d.severity == Severity::Error);
+    let mut code = EXIT_OK;
+    for d in errors {
+        if IO_CODES.contains(&d.code) {
+            return EXIT_USAGE;
+        }
+        code = EXIT_DIAGNOSTICS;
     }
+    code
 }
 
 fn io_error(message: String, hint: &str, format: Format) -> i32 {
@@ -349,18 +466,10 @@ fn io_error(message: String, hint: &str, format: Format) -> i32 {
     EXIT_USAGE
 }
 
-fn check(inputs: &[PathBuf], format: Format) -> i32 {
+/// `check`: the whole pipeline to C in memory (the same checks as `build`), nothing written.
+fn check(p: &ProjectArgs, format: Format) -> i32 {
     let mut s = pipeline::Session::new();
-    let c = CompileArgs {
-        inputs: inputs.to_vec(),
-        profile: None,
-        strategy: StrategyArg::Template,
-        templates: None,
-        axes: None,
-        pmac: None,
-        pmac_dialect: "turbo".into(),
-    };
-    let _ = s.lower(inputs, &options(&c));
+    let _ = s.compile(&p.inputs, &options(p));
     finish(s, format)
 }
 
@@ -373,28 +482,27 @@ fn build(
 ) -> i32 {
     let mut s = pipeline::Session::new();
     match emit_kind {
-        Emit::Il if report.is_some() => {
-            eprintln!(
-                "error: `--report` describes a C build: use it with `-o DIR`, not `--emit il`"
-            );
-            EXIT_USAGE
-        }
+        Emit::Il if report.is_some() => usage(
+            "`--report` describes a C build: use it with `-o DIR`, not `--emit il`",
+            format,
+        ),
         Emit::Il => {
-            let lowered = s.lower(&c.inputs, &options(c));
+            let lowered = s.lower(&c.project.inputs, &options(&c.project));
             let code = finish(s, format);
             if let Some(l) = lowered {
                 for u in l.units() {
-                    print!("{}", il_frontend::print::unit(u));
+                    if let Err(e) = stdio::out(&il_frontend::print::unit(u)) {
+                        return stdout_error(e, format);
+                    }
                 }
             }
             code
         }
         Emit::C => {
             let Some(dir) = output else {
-                eprintln!("error: `build` needs `-o DIR` (or `--emit il`)");
-                return EXIT_USAGE;
+                return usage("`build` needs `-o DIR` (or `--emit il`)", format);
             };
-            let compiled = s.compile(&c.inputs, &options(c));
+            let compiled = s.compile(&c.project.inputs, &options(&c.project));
             let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
             let code = finish(s, format);
             let Some((lowered, program)) = compiled else {
@@ -404,7 +512,10 @@ fn build(
                 return code;
             }
             if report == Some(ReportFormat::Json) {
-                println!("{}", crate::report::json(&lowered, &program));
+                let text = crate::report::json(&lowered, &program) + "\n";
+                if let Err(e) = stdio::out(&text) {
+                    return stdout_error(e, format);
+                }
             }
             let mut files: Vec<(String, Vec<u8>)> = program
                 .files
@@ -421,6 +532,7 @@ fn build(
                     format,
                 );
             }
+            summary::wrote(dir);
             code
         }
     }
@@ -459,7 +571,26 @@ fn write_pmac(c: &CompileArgs, text: Option<String>, code: i32, format: Format) 
             "check that the directory can be written",
             format,
         )
-    })
+    })?;
+    summary::wrote(path);
+    Ok(())
+}
+
+/// A usage error found after parsing (E9200, exit 2).
+fn usage(message: &str, format: Format) -> i32 {
+    let d = Diagnostic::error(diagnostics::code::E9200, message)
+        .with_hint("`ladderc help` lists every command and option");
+    emit(&SourceMap::new(), &[d], format);
+    EXIT_USAGE
+}
+
+/// Standard output failed for another reason than a closed pipe (a closed pipe is no error).
+fn stdout_error(e: std::io::Error, format: Format) -> i32 {
+    io_error(
+        format!("cannot write to standard output: {e}"),
+        "check where standard output is redirected (a full disk?)",
+        format,
+    )
 }
 
 /// Adds the motion library to the project's files when the program links it (so that the project
@@ -502,9 +633,20 @@ fn run_program(
     format: Format,
 ) -> i32 {
     let mut s = pipeline::Session::new();
-    let mut opts = options(c);
+    let mut opts = options(&c.project);
     opts.cycle_ms = cycle_ms;
-    let compiled = s.compile(&c.inputs, &opts);
+    if let Some(stimulus) = &run.stimulus {
+        if let Err(e) = std::fs::File::open(stimulus) {
+            let d = Diagnostic::error(
+                diagnostics::code::E9001,
+                format!("cannot read {}: {e}", stimulus.display()),
+            )
+            .with_hint("check the --stimulus path and its permissions");
+            emit(&SourceMap::new(), &[d], format);
+            return EXIT_USAGE;
+        }
+    }
+    let compiled = s.compile(&c.project.inputs, &opts);
     let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
     let code = finish(s, format);
     let Some((lowered, program)) = compiled else {
@@ -573,9 +715,18 @@ fn run_program(
     // The trace is written beside its destination and moved into place only when the run succeeded.
     let final_trace = run.trace.clone();
     if let Some(t) = &final_trace {
-        run.trace = Some(pipeline::staging_path(t));
+        let staging = pipeline::staging_path(t);
+        // Created here so that an unwritable destination is an I/O error (exit 2) before the run.
+        if let Err(e) = std::fs::File::create(&staging) {
+            return io_error(
+                format!("cannot write {}: {e}", t.display()),
+                "check that the trace's directory exists and can be written",
+                format,
+            );
+        }
+        run.trace = Some(staging);
     }
-    let out = match c_backend::run(&exe, &run) {
+    let timed = match crate::progress::run(&exe, &run, work.path()) {
         Ok(o) => o,
         Err(e) => {
             return io_error(
@@ -585,8 +736,13 @@ fn run_program(
             )
         }
     };
-    print!("{}", out.stdout);
-    eprint!("{}", out.stderr);
+    let out = timed.output;
+    if out.success() {
+        summary::set_run(summary::run_figures(run.cycles, run.cycle_ms, timed.wall));
+    }
+    // A closed standard output (`| head`) is no reason to skip the files asked for.
+    let stdout_failed = stdio::out(&out.stdout).err();
+    program_stderr(&out, format);
     if let (true, Some(svg)) = (out.success(), &plot) {
         let text = match &run.trace {
             Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
@@ -599,6 +755,7 @@ fn run_program(
                 format,
             );
         }
+        summary::wrote(svg);
     }
     if let (true, Some((path, segment_ms))) = (out.success(), &pvt) {
         let text = match &run.trace {
@@ -625,12 +782,20 @@ fn run_program(
             *segment_ms,
             path,
         ) {
+            let code = exit_code(std::slice::from_ref(&*d));
             emit(&SourceMap::new(), &[*d], format);
             if let Some(tmp) = &run.trace {
                 let _ = std::fs::remove_file(tmp);
             }
-            return EXIT_DIAGNOSTICS;
+            return code;
         }
+        summary::wrote(path);
+    }
+    if let Some(e) = stdout_failed {
+        if let Some(tmp) = &run.trace {
+            let _ = std::fs::remove_file(tmp);
+        }
+        return stdout_error(e, format);
     }
     match (out.success(), &final_trace, &run.trace) {
         (true, Some(dst), Some(tmp)) => {
@@ -642,6 +807,7 @@ fn run_program(
                     format,
                 );
             }
+            summary::wrote(dst);
             EXIT_OK
         }
         (true, _, _) => EXIT_OK,
@@ -654,6 +820,40 @@ fn run_program(
     }
 }
 
+/// The program's standard error: as it is, or under JSON one diagnostic per line (W9200 after a
+/// successful run, E9201 after a failed one), so that every line stays a JSON record.
+fn program_stderr(out: &c_backend::RunOutput, format: Format) {
+    if format != Format::Json {
+        stdio::err(&out.stderr);
+        return;
+    }
+    let diags: Vec<Diagnostic> = out
+        .stderr
+        .lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            if out.success() {
+                Diagnostic::warning(diagnostics::code::W9200, l.trim())
+            } else {
+                Diagnostic::error(diagnostics::code::E9201, l.trim())
+            }
+        })
+        .collect();
+    let failed_silently = !out.success() && diags.is_empty();
+    emit(&SourceMap::new(), &diags, format);
+    if failed_silently {
+        let status = match out.status {
+            Some(c) => format!("exit status {c}"),
+            None => "a signal".to_string(),
+        };
+        let d = Diagnostic::error(
+            diagnostics::code::E9201,
+            format!("the program run failed ({status})"),
+        );
+        emit(&SourceMap::new(), &[d], format);
+    }
+}
+
 fn motion_plan(file: &std::path::Path) -> i32 {
     let text = match std::fs::read_to_string(file) {
         Ok(t) => t,
@@ -663,10 +863,10 @@ fn motion_plan(file: &std::path::Path) -> i32 {
         }
     };
     match motion_lib::profile::plan_jsonl(&text) {
-        Ok(out) => {
-            print!("{out}");
-            EXIT_OK
-        }
+        Ok(out) => match stdio::out(&out) {
+            Ok(()) => EXIT_OK,
+            Err(e) => stdout_error(e, Format::Human),
+        },
         Err(e) => {
             eprintln!("{}: error[E9003]: {e}", file.display());
             EXIT_DIAGNOSTICS
@@ -677,17 +877,21 @@ fn motion_plan(file: &std::path::Path) -> i32 {
 fn explain(code: Option<&str>) -> i32 {
     match code {
         None => {
-            for c in diagnostics::all_codes() {
-                println!("{}  {}", c.code, c.title);
+            let list: String = diagnostics::all_codes()
+                .iter()
+                .map(|c| format!("{}  {}\n", c.code, c.title))
+                .collect();
+            match stdio::out(&list) {
+                Ok(()) => EXIT_OK,
+                Err(e) => stdout_error(e, Format::Human),
             }
-            EXIT_OK
         }
         Some(code) => {
             match diagnostics::explain(code) {
-                Some(text) => {
-                    print!("{text}");
-                    EXIT_OK
-                }
+                Some(text) => match stdio::out(text) {
+                    Ok(()) => EXIT_OK,
+                    Err(e) => stdout_error(e, Format::Human),
+                },
                 None => {
                     eprintln!("error: unknown diagnostic code `{code}` (run `ladderc explain` for the list)");
                     EXIT_USAGE
@@ -697,7 +901,11 @@ fn explain(code: Option<&str>) -> i32 {
     }
 }
 
-/// Prints diagnostics in the chosen format on stderr.
+/// Prints diagnostics in the chosen format on stderr (and counts them for the summary). Diagnostics whose
+/// span lies in a PLCopen XML file and that carry no XML context get it from the file
+/// ([`ladder_compiler::locate`]).
 pub fn emit(map: &SourceMap, diags: &[Diagnostic], format: Format) {
-    eprint!("{}", render(map, diags, format.into()));
+    summary::count(diags);
+    let located = crate::xml_context::annotate(map, diags);
+    stdio::err(&render(map, &located, format.into()));
 }

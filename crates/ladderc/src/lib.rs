@@ -6,7 +6,8 @@
 //!
 //! Modules: [`pipeline`] (load, check, lower, generate C), [`cli`] (arguments and dispatch), [`axes`] (the
 //! axes file), [`motion_link`] (the motion library that generated programs link), [`output`] (atomic
-//! writes), [`plot`], [`pmac_out`] and [`report`].
+//! writes), [`plot`], [`pmac_out`], [`report`], [`progress`] (running a built program), [`stdio`] (output that
+//! ends quietly on a closed pipe), [`summary`] (the final summary) and [`xml_context`].
 
 pub mod axes;
 pub mod cli;
@@ -15,4 +16,8 @@ pub mod output;
 pub mod pipeline;
 pub mod plot;
 pub mod pmac_out;
+pub mod progress;
 pub mod report;
+pub mod stdio;
+pub mod summary;
+pub mod xml_context;

@@ -194,6 +194,10 @@ impl Session {
         };
         let checked_model = il_frontend::sema::analyze(&checked, &mut self.diags);
         if self.diags.has_errors() {
+            if uses_blocks && opts.axes.is_none() && axes.axes.is_empty() && axes.groups.is_empty()
+            {
+                self.hint_axes_file(paths);
+            }
             return None;
         }
         let window = TmWindow {
@@ -236,6 +240,30 @@ impl Session {
             cycle_ms,
             model: (!uses_blocks).then_some(checked_model),
         })
+    }
+
+    /// A motion program without an axes file: every undeclared name (E1001) may be an axis or group that
+    /// the missing file would declare, so its hint says where the file was looked for.
+    fn hint_axes_file(&mut self, paths: &[PathBuf]) {
+        let looked = paths
+            .first()
+            .and_then(|p| default_axes_path(p))
+            .map(|p| format!("`{}`", p.display()))
+            .unwrap_or_else(|| "`<input stem>.axes.json`".into());
+        let list = std::mem::take(&mut self.diags).into_vec();
+        self.diags.extend(list.into_iter().map(|mut d| {
+            if d.code == code::E1001 {
+                let axes = format!(
+                    "if it is an axis or axes group, declare it in an axes file: none was found \
+                     (looked for {looked}); pass `--axes FILE.json` (crates/ladderc/AXES.md)"
+                );
+                d.hint = Some(match d.hint.take() {
+                    Some(h) => format!("{h}; {axes}"),
+                    None => axes,
+                });
+            }
+            d
+        }));
     }
 
     /// The axis configuration: `explicit`, else `<stem>.axes.json` beside the first input when it
