@@ -39,9 +39,13 @@ impl From<Format> for MessageFormat {
 
 #[derive(clap::Args, Debug, Clone)]
 pub struct CompileArgs {
-    /// Input files: IL sources, or PLCopen TC6 XML projects (`.xml`).
+    /// Input files: IL (`.il`), Structured Text (`.st`), PLCopen TC6 XML projects (`.xml`); other
+    /// names by their content; `-` reads standard input.
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
+    /// Read every input in this language, whatever its name.
+    #[arg(long, value_enum)]
+    pub lang: Option<LangArg>,
     /// Target profile (memory model) as JSON; the default profile when absent.
     #[arg(long)]
     pub profile: Option<PathBuf>,
@@ -61,6 +65,26 @@ pub struct CompileArgs {
     /// PMAC dialect of `--pmac`: `turbo` or `power`.
     #[arg(long, default_value = "turbo")]
     pub pmac_dialect: String,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
+pub enum LangArg {
+    /// Instruction list.
+    Il,
+    /// Structured Text (POU bodies may be IL, detected per POU).
+    St,
+    /// PLCopen TC6 XML.
+    Xml,
+}
+
+impl From<LangArg> for pipeline::Lang {
+    fn from(l: LangArg) -> Self {
+        match l {
+            LangArg::Il => pipeline::Lang::Il,
+            LangArg::St => pipeline::Lang::St,
+            LangArg::Xml => pipeline::Lang::Xml,
+        }
+    }
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
@@ -90,8 +114,12 @@ pub enum ReportFormat {
 pub enum Command {
     /// Check sources: parse and run the semantic checks, print diagnostics.
     Check {
+        /// Input files (IL, ST, XML; `-` reads standard input).
         #[arg(required = true)]
         inputs: Vec<PathBuf>,
+        /// Read every input in this language, whatever its name.
+        #[arg(long, value_enum)]
+        lang: Option<LangArg>,
     },
     /// Compile to a C project (sources, header, runtime, Makefile) in a directory.
     Build {
@@ -227,7 +255,7 @@ pub fn main() -> i32 {
         Command::Explain { code } => explain(code.as_deref()),
         Command::Drive(cmd) => drive(cmd, cli.message_format.into()),
         Command::Motion(MotionCommand::Plan { file }) => motion_plan(&file),
-        Command::Check { inputs } => check(&inputs, cli.message_format),
+        Command::Check { inputs, lang } => check(&inputs, lang, cli.message_format),
         Command::Build {
             compile,
             output,
@@ -322,6 +350,7 @@ fn options(c: &CompileArgs) -> pipeline::Options {
     pipeline::Options {
         axes: c.axes.clone(),
         cycle_ms: None,
+        lang: c.lang.map(Into::into),
         profile: c.profile.clone(),
         strategy: match c.strategy {
             StrategyArg::Il => Strategy::Il,
@@ -349,10 +378,11 @@ fn io_error(message: String, hint: &str, format: Format) -> i32 {
     EXIT_USAGE
 }
 
-fn check(inputs: &[PathBuf], format: Format) -> i32 {
+fn check(inputs: &[PathBuf], lang: Option<LangArg>, format: Format) -> i32 {
     let mut s = pipeline::Session::new();
     let c = CompileArgs {
         inputs: inputs.to_vec(),
+        lang,
         profile: None,
         strategy: StrategyArg::Template,
         templates: None,
