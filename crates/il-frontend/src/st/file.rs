@@ -42,6 +42,8 @@ pub struct PouText {
     pub name_range: Range<usize>,
     pub body: Range<usize>,
     pub lang: Lang,
+    /// The `INITIAL_STEP` of a body in textual SFC (not compiled: E0302).
+    pub sfc: Option<Range<usize>>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -68,6 +70,24 @@ fn is_word(src: &str, t: &Token, w: &str) -> bool {
     matches!(t.tok, Tok::Ident | Tok::Kw(_)) && word(src, t).eq_ignore_ascii_case(w)
 }
 
+/// `VAR`, `VAR_INPUT` ... (upper-case): a variable block starts.
+fn is_var_keyword(w: &str) -> bool {
+    matches!(
+        w,
+        "VAR"
+            | "VAR_INPUT"
+            | "VAR_OUTPUT"
+            | "VAR_IN_OUT"
+            | "VAR_TEMP"
+            | "VAR_EXTERNAL"
+            | "VAR_GLOBAL"
+            | "VAR_ACCESS"
+            | "VAR_CONFIG"
+            | "VAR_INST"
+            | "VAR_STAT"
+    )
+}
+
 /// Finds the POUs of a text and the language of each body.
 pub fn scan(src: &str) -> Vec<PouText> {
     let (toks, _) = lex(src);
@@ -92,9 +112,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
             "TYPE" => i = skip_to(i + 1, "END_TYPE"),
             "CONFIGURATION" => i = skip_to(i + 1, "END_CONFIGURATION"),
             "RESOURCE" => i = skip_to(i + 1, "END_RESOURCE"),
-            _ if w.starts_with("VAR") && matches!(t.tok, Tok::Ident) => {
-                i = skip_to(i + 1, "END_VAR")
-            }
+            _ if is_var_keyword(&w) => i = skip_to(i + 1, "END_VAR"),
             "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" => {
                 let end_word = format!("END_{w}");
                 i += 1;
@@ -132,10 +150,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     }
                 }
                 let mut body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
-                while i < n
-                    && matches!(toks[i].tok, Tok::Ident)
-                    && word(src, &toks[i]).to_ascii_uppercase().starts_with("VAR")
-                {
+                while i < n && is_var_keyword(&word(src, &toks[i]).to_ascii_uppercase()) {
                     i = skip_to(i + 1, "END_VAR");
                     body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
                 }
@@ -147,11 +162,16 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                 }
                 let body_end = toks[j.min(n - 1)].range.start;
                 let body_start = body_start.min(body_end);
+                let sfc = toks[first..j.min(n - 1)]
+                    .iter()
+                    .find(|t| is_word(src, t, "INITIAL_STEP"))
+                    .map(|t| t.range.clone());
                 out.push(PouText {
                     name,
                     name_range,
                     body: body_start..body_end,
                     lang: body_lang(src, &toks[first..j.min(n - 1)]),
+                    sfc,
                 });
                 i = j + 1;
             }
@@ -322,6 +342,22 @@ pub fn parse_text(
         }
     }
     for p in &pous {
+        if let Some(r) = &p.sfc {
+            diags.push(
+                Diagnostic::error(
+                    code::E0302,
+                    format!(
+                        "the body of `{}` is Sequential Function Chart in textual form, which is not supported",
+                        p.name
+                    ),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("textual SFC starts here")
+                .with_hint("write the chart in a PLCopen XML <SFC> body (supported), or its steps as ST (a CASE over a state variable)"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         match p.lang {
             Lang::St => {
                 pending.push(PendingBody {
