@@ -497,3 +497,31 @@ fn pragmas_are_never_dropped_silently() {
     assert!(stderr(&o).contains("SetFbVar(OUT, 1)"), "{}", stderr(&o));
     assert!(stderr(&o).contains("does not run"), "{}", stderr(&o));
 }
+
+// ------------------------------------------------------------------ FBD literals typed by context
+
+#[test]
+fn fbd_literals_take_the_type_of_their_destination() {
+    // `5` -> MOVE -> INT, `-3` -> MOVE -> SINT, `7` -> MOVE -> a subrange of INT, `MAX(9, 4)` -> INT:
+    // the untyped literals take the destination's type (IEC 61131-3), not DINT. A string literal
+    // with `#` and `$` escapes in an <expression> is a literal.
+    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/fbd_literals.xml");
+    let rows = trace(&cmd(
+        &[
+            "run",
+            p.to_str().unwrap(),
+            "--cycles",
+            "1",
+            "--watch",
+            "main.I,main.S,main.L,main.C,main.T,main.M",
+        ],
+        None,
+    ));
+    let r = &rows[0];
+    assert_eq!(r["main.I"], "5");
+    assert_eq!(r["main.S"], "-3");
+    assert_eq!(r["main.L"], "7");
+    assert_eq!(r["main.C"], "2");
+    assert_eq!(r["main.T"], "Step #1 $5 'ok'");
+    assert_eq!(r["main.M"], "9");
+}
