@@ -170,7 +170,10 @@ impl Session {
                 None => text,
             };
             let (file_lang, detected) = if stdin {
-                (lang.unwrap_or_else(|| il_frontend::st::file::detect(&text)), lang.is_none())
+                (
+                    lang.unwrap_or_else(|| il_frontend::st::file::detect(&text)),
+                    lang.is_none(),
+                )
             } else {
                 input_lang(p, &text, lang)
             };
@@ -184,7 +187,9 @@ impl Session {
                         format!("read as {} (detected from the content)", file_lang.name()),
                     )
                     .at(diagnostics::Span::new(file, 0, 0))
-                    .with_hint("name the file .il, .st or .xml, or pass --lang il|st|xml, to choose"),
+                    .with_hint(
+                        "name the file .il, .st or .xml, or pass --lang il|st|xml, to choose",
+                    ),
                 );
             }
             if file_lang == Lang::Xml {

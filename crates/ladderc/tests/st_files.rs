@@ -68,7 +68,11 @@ fn trace(o: &Output) -> Vec<std::collections::HashMap<String, String>> {
 /// The values of `col` over the rows.
 fn column(rows: &[std::collections::HashMap<String, String>], col: &str) -> Vec<String> {
     rows.iter()
-        .map(|r| r.get(col).cloned().unwrap_or_else(|| panic!("no column {col}")))
+        .map(|r| {
+            r.get(col)
+                .cloned()
+                .unwrap_or_else(|| panic!("no column {col}"))
+        })
         .collect()
 }
 
@@ -108,7 +112,14 @@ fn corpus_programs_run_with_iec_results() {
     // IronPLC's getting-started counter: one increment per 100 ms task cycle.
     let p = st_corpus("getting_started.st");
     let rows = trace(&cmd(
-        &["run", p.to_str().unwrap(), "--cycles", "5", "--cycle-ms", "100"],
+        &[
+            "run",
+            p.to_str().unwrap(),
+            "--cycles",
+            "5",
+            "--cycle-ms",
+            "100",
+        ],
         None,
     ));
     assert_eq!(
@@ -294,7 +305,13 @@ fn check_mixed(o: &Output, cycles: i32) {
         .iter()
         .map(|r| {
             let v = |c: &str| r[c].parse::<i32>().unwrap();
-            [v("main.n"), v("main.lv"), v("main.x"), v("main.mx"), v("main.m")]
+            [
+                v("main.n"),
+                v("main.lv"),
+                v("main.x"),
+                v("main.mx"),
+                v("main.m"),
+            ]
         })
         .collect();
     assert_eq!(got, mixed_expected(cycles));
@@ -307,7 +324,14 @@ fn st_file_with_functional_calls_il_body_and_subrange_literal_runs() {
     let dir = tempfile::tempdir().unwrap();
     let p = write(dir.path(), "mixed.st", MIXED);
     let o = cmd(
-        &["run", p.to_str().unwrap(), "--cycles", "6", "--watch", WATCH],
+        &[
+            "run",
+            p.to_str().unwrap(),
+            "--cycles",
+            "6",
+            "--watch",
+            WATCH,
+        ],
         None,
     );
     check_mixed(&o, 6);
@@ -353,7 +377,11 @@ fn txt_and_no_extension_are_detected_with_a_note() {
         None,
     );
     assert_eq!(column(&trace(&o), "p.n"), ["2", "4"]);
-    assert!(stderr(&o).contains("instruction list (IL) (detected"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("instruction list (IL) (detected"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]

@@ -57,9 +57,9 @@ pub struct PendingBody {
 
 /// IL operators (and the `&` forms): a line starting with one of these is an IL instruction.
 const IL_OPS: &[&str] = &[
-    "LD", "LDN", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN", "NOT", "ADD", "SUB",
-    "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT", "JMP", "JMPC", "JMPCN", "CAL", "CALC",
-    "CALCN", "RET", "RETC", "RETCN",
+    "LD", "LDN", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN", "NOT", "ADD",
+    "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT", "JMP", "JMPC", "JMPCN", "CAL",
+    "CALC", "CALCN", "RET", "RETC", "RETCN",
 ];
 
 fn word<'a>(src: &'a str, t: &Token) -> &'a str {
@@ -143,7 +143,11 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                         }
                     }
                 }
-                while i < n && ["EXTENDS", "IMPLEMENTS"].iter().any(|k| is_word(src, &toks[i], k)) {
+                while i < n
+                    && ["EXTENDS", "IMPLEMENTS"]
+                        .iter()
+                        .any(|k| is_word(src, &toks[i], k))
+                {
                     i += 2;
                     while toks.get(i).is_some_and(|t| t.tok == Tok::Comma) {
                         i += 2;
@@ -156,7 +160,9 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                 }
                 let first = i.min(n - 1);
                 let mut j = i;
-                while j < n && !matches!(toks[j].tok, Tok::Eof) && !is_word(src, &toks[j], &end_word)
+                while j < n
+                    && !matches!(toks[j].tok, Tok::Eof)
+                    && !is_word(src, &toks[j], &end_word)
                 {
                     j += 1;
                 }
@@ -192,8 +198,7 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
     for (k, t) in toks.iter().enumerate() {
         let next = toks.get(k + 1);
         let next_same_line = next.filter(|nt| {
-            !src
-                .get(t.range.end..nt.range.start)
+            !src.get(t.range.end..nt.range.start)
                 .unwrap_or("\n")
                 .contains('\n')
         });
@@ -238,6 +243,8 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
             Tok::LParen | Tok::LBracket => depth += 1,
             Tok::RParen | Tok::RBracket => depth -= 1,
             Tok::Assign if depth <= 0 => st += 1,
+            // ST-only words wherever they are (one-line POUs: `... END_VAR RETURN; END_FUNCTION`).
+            Tok::Kw(Kw::Return | Kw::Exit | Kw::Continue) => st += 1,
             _ => {}
         }
         line_start = next_same_line.is_none();
@@ -272,7 +279,11 @@ fn blank(text: &mut String, range: Range<usize>) {
     let blanked: String = part
         .chars()
         .flat_map(|c| {
-            let (ch, n) = if c == '\n' || c == '\r' { (c, 1) } else { (' ', c.len_utf8()) };
+            let (ch, n) = if c == '\n' || c == '\r' {
+                (c, 1)
+            } else {
+                (' ', c.len_utf8())
+            };
             std::iter::repeat_n(ch, n)
         })
         .collect();
@@ -332,7 +343,10 @@ pub fn parse_text(
     // ST: pragmas outside bodies are reported here (those inside ST bodies by the ST parser).
     for pr in &problems {
         if let Problem::Pragma(r) = pr {
-            if !st_bodies.iter().any(|p| p.body.start <= r.start && r.end <= p.body.end) {
+            if !st_bodies
+                .iter()
+                .any(|p| p.body.start <= r.start && r.end <= p.body.end)
+            {
                 diags.push(pragma_diagnostic(
                     src.get(r.clone()).unwrap_or("{}"),
                     Span::new(file, r.start, r.end),
@@ -446,7 +460,14 @@ mod tests {
         assert_eq!(src[p[0].body.clone()].trim(), "f := a + 1;");
         assert_eq!(detect(src), Lang::St);
         assert_eq!(detect("  <?xml version='1.0'?>"), Lang::Xml);
-        assert_eq!(detect("PROGRAM p\nVAR x : INT; END_VAR\nLD 1\nST x ; store\nEND_PROGRAM"), Lang::Il);
+        assert_eq!(
+            detect("FUNCTION F : REAL VAR_INPUT IN : BYTE; END_VAR RETURN; END_FUNCTION"),
+            Lang::St
+        );
+        assert_eq!(
+            detect("PROGRAM p\nVAR x : INT; END_VAR\nLD 1\nST x ; store\nEND_PROGRAM"),
+            Lang::Il
+        );
     }
 
     #[test]
