@@ -229,11 +229,7 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                 }
                 Tok::Ident => match next_same_line.map(|nt| &nt.tok) {
                     Some(Tok::LParen | Tok::LBracket | Tok::Dot | Tok::Caret) => st += 1,
-                    Some(Tok::Colon) => {
-                        if !line_end_semi {
-                            il += 1
-                        }
-                    }
+                    Some(Tok::Colon) if !line_end_semi => il += 1,
                     _ => {}
                 },
                 _ => {}
