@@ -297,14 +297,27 @@ pub fn parse_text(
     lang: Lang,
     diags: &mut Diagnostics,
 ) -> (CompilationUnit, Vec<PendingBody>) {
+    let mut pending = Vec::new();
+    let mut first_try = None;
+    if lang == Lang::Il {
+        // A valid IL file costs one parse: the bodies are looked at only when the IL parser
+        // reported errors (then they are replaced by one E0300 if ST bodies explain them).
+        let mut local = Diagnostics::new();
+        let unit = crate::parse_named(file, src, implicit_name, &mut local);
+        if !local.has_errors() {
+            diags.extend(local);
+            return (unit, pending);
+        }
+        first_try = Some((unit, local));
+    }
     let (toks, problems) = lex(src);
     let pous = scan_tokens(src, &toks);
     drop(toks);
-    let mut pending = Vec::new();
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
-    if lang == Lang::Il {
+    if let Some((unit, local)) = first_try {
         let Some(first) = st_bodies.first() else {
-            return (crate::parse_named(file, src, implicit_name, diags), pending);
+            diags.extend(local);
+            return (unit, pending);
         };
         let mut text = src.to_string();
         {
