@@ -553,3 +553,17 @@ fn fbd_literals_take_the_type_of_their_destination() {
     assert_eq!(r["main.T"], "Step #1 $5 'ok'");
     assert_eq!(r["main.M"], "9");
 }
+
+#[test]
+fn methods_and_textual_sfc_are_one_diagnostic_each() {
+    let src = "FUNCTION_BLOCK Motor\nVAR speed : INT; END_VAR\n  METHOD PUBLIC Start : BOOL\n    speed := 100;\n    Start := TRUE;\n  END_METHOD\n  speed := speed + 1;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR m : Motor; END_VAR\n  m();\nEND_PROGRAM\n";
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "oop.st", src);
+    let o = cmd(
+        &["check", p.to_str().unwrap(), "--message-format", "json"],
+        None,
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(errors(&o), [("E0303".to_string(), 3)], "{}", stderr(&o));
+}

@@ -44,6 +44,8 @@ pub struct PouText {
     pub lang: Lang,
     /// The `INITIAL_STEP` of a body in textual SFC (not compiled: E0302).
     pub sfc: Option<Range<usize>>,
+    /// The first `METHOD name` / `PROPERTY name` of a body (edition 3 object orientation: E0303).
+    pub oop: Option<Range<usize>>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -172,12 +174,21 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     .iter()
                     .find(|t| is_word(src, t, "INITIAL_STEP"))
                     .map(|t| t.range.clone());
+                let body_toks = &toks[first..j.min(n - 1)];
+                let oop = body_toks
+                    .windows(2)
+                    .find(|w| {
+                        (is_word(src, &w[0], "METHOD") || is_word(src, &w[0], "PROPERTY"))
+                            && w[1].tok == Tok::Ident
+                    })
+                    .map(|w| w[0].range.clone());
                 out.push(PouText {
                     name,
                     name_range,
                     body: body_start..body_end,
                     lang: body_lang(src, &toks[first..j.min(n - 1)]),
                     sfc,
+                    oop,
                 });
                 i = j + 1;
             }
@@ -377,6 +388,23 @@ pub fn parse_text(
                 .at(Span::new(file, r.start, r.end))
                 .with_primary_label("textual SFC starts here")
                 .with_hint("write the chart in a PLCopen XML <SFC> body (supported), or its steps as ST (a CASE over a state variable)"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
+        if let Some(r) = &p.oop {
+            let what = src.get(r.clone()).unwrap_or("METHOD").to_ascii_uppercase();
+            diags.push(
+                Diagnostic::error(
+                    code::E0303,
+                    format!(
+                        "`{}` holds a {what}: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+                        p.name
+                    ),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label(format!("{what} starts here"))
+                .with_hint("write the method as a FUNCTION (or an action as part of the body); the body of this POU is not compiled"),
             );
             blank(&mut text, p.body.clone());
             continue;
