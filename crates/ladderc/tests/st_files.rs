@@ -567,3 +567,14 @@ fn methods_and_textual_sfc_are_one_diagnostic_each() {
     assert_eq!(o.status.code(), Some(1));
     assert_eq!(errors(&o), [("E0303".to_string(), 3)], "{}", stderr(&o));
 }
+
+#[test]
+fn function_without_inputs_is_called_with_empty_parentheses() {
+    // `five()` reads no current result: y = 5 + 1 (before, E1007 and E1020).
+    let src = "FUNCTION five : INT\n  five := 5;\nEND_FUNCTION\n\
+               PROGRAM main\nVAR y : INT; END_VAR\n  y := five() + 1;\nEND_PROGRAM\n";
+    let dir = tempfile::tempdir().unwrap();
+    let p = write(dir.path(), "five.st", src);
+    let rows = trace(&cmd(&["run", p.to_str().unwrap(), "--cycles", "1"], None));
+    assert_eq!(column(&rows, "main.y"), ["6"]);
+}

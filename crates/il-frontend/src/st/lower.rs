@@ -1140,12 +1140,17 @@ impl<'d> PouLowering<'d> {
             _ => {
                 let all: Vec<&Arg> = args.iter().collect();
                 let callee2 = self.resolve_callee(name);
-                let args = self.call_args(
+                let args = match self.call_args(
                     args,
                     |env, n, k| hint_of(env, &callee2, k, Some(n), &all),
                     out,
                     diags,
-                );
+                ) {
+                    // `f()`: a call without arguments reads no current result (an empty formal
+                    // list; the operator form would take the current result as the first input).
+                    CallArgs::None => CallArgs::Formal(Vec::new()),
+                    a => a,
+                };
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: name.clone(),
