@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Output, Stdio};
 
 fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    common::repo_root()
 }
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
@@ -123,7 +123,7 @@ fn a_pipe_into_head_prints_no_panic() {
     let counter = root().join("examples/counter/counter.il");
     let script = format!(
         "{} run {} --cycles 100000 | head -1; exit ${{PIPESTATUS[0]}}",
-        env!("CARGO_BIN_EXE_ladderc"),
+        env!("CARGO_BIN_EXE_ladderc-e2e"),
         counter.display()
     );
     let out = std::process::Command::new("bash")

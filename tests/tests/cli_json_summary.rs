@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::process::Output;
 
 fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    common::repo_root()
 }
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
@@ -303,7 +303,7 @@ fn a_progress_bar_is_drawn_on_a_terminal_only() {
     let trace = dir.path().join("t.csv");
     let args = format!(
         "{} run {} --cycles 200000 --watch main.acc --trace {}",
-        env!("CARGO_BIN_EXE_ladderc"),
+        env!("CARGO_BIN_EXE_ladderc-e2e"),
         prog.display(),
         trace.display()
     );

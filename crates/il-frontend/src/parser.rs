@@ -185,6 +185,53 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// `ADD b, c, d`: an extensible standard function (ADD, MUL, AND, OR, XOR, GT, GE, EQ, LE, LT)
+    /// called with the current result as its first input and the operands as the next ones, as
+    /// matiec reads it. Any other operator with several operands is E0300.
+    pub fn extensible(
+        &mut self,
+        (op, negate, _word): SimpleOp,
+        first: Operand,
+        rest: Vec<Operand>,
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        let kw = self.text(l, l + word_len(self.src, l)).to_string();
+        let name = match (op, negate) {
+            (Op::Add, false) => "ADD",
+            (Op::Mul, false) => "MUL",
+            (Op::And, false) => "AND",
+            (Op::Or, false) => "OR",
+            (Op::Xor, false) => "XOR",
+            (Op::Gt, false) => "GT",
+            (Op::Ge, false) => "GE",
+            (Op::Eq, false) => "EQ",
+            (Op::Le, false) => "LE",
+            (Op::Lt, false) => "LT",
+            _ => {
+                let (s, _) = self.local(rest[0].span());
+                self.hint(
+                    code::E0301,
+                    format!("`{kw}` takes one operand"),
+                    s.saturating_sub(1),
+                    r,
+                    "only the extensible functions ADD, MUL, AND, OR, XOR, GT, GE, EQ, LE, LT take a list of operands; compute the rest on further lines",
+                );
+                return None;
+            }
+        };
+        let mut ops = vec![first];
+        ops.extend(rest);
+        let kw_span = self.span(l, l + kw.len());
+        Some(Instruction {
+            kind: InstrKind::FunctionCall {
+                name: crate::ast::Ident::new(name, kw_span),
+                args: crate::ast::CallArgs::NonFormal(ops),
+            },
+            span: self.span(l, r),
+        })
+    }
+
     #[allow(clippy::too_many_arguments)]
     pub fn deferred(
         &mut self,

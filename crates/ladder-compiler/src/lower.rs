@@ -1331,7 +1331,9 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                         };
                         let ty = match f.rule {
                             ResultRule::Fixed(t) => Some(named_type(t, span)),
-                            ResultRule::SameAsInputs => self.common_type(&args, f.selectors, span),
+                            ResultRule::SameAsInputs => self
+                                .common_type(&args, f.selectors, span)
+                                .map(|t| self.literal_result_type(i, &args, f.selectors, t)),
                         };
                         (form, ty)
                     }
@@ -1409,6 +1411,47 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 }
             }
         }
+    }
+
+    /// The result type of a generic function whose inputs are all untyped literals (`fallback`: DINT
+    /// or LREAL) takes the type of the variable its output is wired to, as IEC 61131-3 types a literal
+    /// by its context: `5` into MOVE into an INT (or a subrange of INT) is INT, not DINT.
+    fn literal_result_type(
+        &self,
+        block: usize,
+        args: &[(Ident, ValId)],
+        skip: usize,
+        fallback: TypeRef,
+    ) -> TypeRef {
+        let tys: Vec<Ty> = args.iter().skip(skip).map(|(_, v)| self.ty(*v)).collect();
+        if tys.iter().any(|t| !matches!(t, Ty::WeakInt | Ty::WeakReal)) {
+            return fallback;
+        }
+        let real = tys.iter().any(|t| matches!(t, Ty::WeakReal));
+        for n in &self.g.nodes {
+            let (Kind::OutVar {
+                expr, expr_span, ..
+            }
+            | Kind::InOutVar {
+                expr, expr_span, ..
+            }) = &n.kind
+            else {
+                continue;
+            };
+            if !n.input.iter().any(|w| w.from == block) {
+                continue;
+            }
+            let Some(op) = values::operand(expr, *expr_span) else {
+                continue;
+            };
+            if let Ty::Known(t) = self.operand_ty(&op) {
+                let dest_real = matches!(&t, TypeRef::Named(n) if n.is("REAL") || n.is("LREAL"));
+                if !real || dest_real {
+                    return t;
+                }
+            }
+        }
+        fallback
     }
 
     /// The result type of a generic function: the first input with a known type, else the literal kind.

@@ -165,6 +165,27 @@ pub fn literal(t: &str, span: Span) -> Option<Literal> {
     if upper == "TRUE" || upper == "FALSE" {
         return Some(lit(LiteralKind::Bool(upper == "TRUE"), None, span));
     }
+    // Strings first: their text may hold `#` (`'Step #1'`) and `$` escapes.
+    if let Some(s) = t.strip_prefix('\'').and_then(|s| s.strip_suffix('\'')) {
+        return Some(lit(
+            LiteralKind::String {
+                wide: false,
+                value: unescape_string(s)?,
+            },
+            None,
+            span,
+        ));
+    }
+    if let Some(s) = t.strip_prefix('"').and_then(|s| s.strip_suffix('"')) {
+        return Some(lit(
+            LiteralKind::String {
+                wide: true,
+                value: unescape_string(s)?,
+            },
+            None,
+            span,
+        ));
+    }
     if let Some((prefix, value)) = t.split_once('#') {
         let p = prefix.to_ascii_uppercase();
         match p.as_str() {
@@ -202,26 +223,6 @@ pub fn literal(t: &str, span: Span) -> Option<Literal> {
             }
             _ => return None,
         }
-    }
-    if let Some(s) = t.strip_prefix('\'').and_then(|s| s.strip_suffix('\'')) {
-        return Some(lit(
-            LiteralKind::String {
-                wide: false,
-                value: unescape_string(s)?,
-            },
-            None,
-            span,
-        ));
-    }
-    if let Some(s) = t.strip_prefix('"').and_then(|s| s.strip_suffix('"')) {
-        return Some(lit(
-            LiteralKind::String {
-                wide: true,
-                value: unescape_string(s)?,
-            },
-            None,
-            span,
-        ));
     }
     number(t).map(|k| lit(k, None, span))
 }

@@ -53,9 +53,13 @@ impl From<Format> for MessageFormat {
 /// `check`, `build` and `run`, so that `check` checks exactly what `build` builds.
 #[derive(clap::Args, Debug, Clone)]
 pub struct ProjectArgs {
-    /// Input files: IL sources, or PLCopen TC6 XML projects (`.xml`).
+    /// Input files: IL (`.il`), Structured Text (`.st`), PLCopen TC6 XML projects (`.xml`); other
+    /// names by their content; `-` reads standard input.
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
+    /// Read every input in this language, whatever its name.
+    #[arg(long, value_enum)]
+    pub lang: Option<LangArg>,
     /// Target profile (memory model) as JSON; the default profile when absent.
     #[arg(long)]
     pub profile: Option<PathBuf>,
@@ -81,6 +85,26 @@ pub struct CompileArgs {
     /// PMAC dialect of `--pmac`: `turbo` or `power`.
     #[arg(long, default_value = "turbo")]
     pub pmac_dialect: String,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
+pub enum LangArg {
+    /// Instruction list.
+    Il,
+    /// Structured Text (POU bodies may be IL, detected per POU).
+    St,
+    /// PLCopen TC6 XML.
+    Xml,
+}
+
+impl From<LangArg> for pipeline::Lang {
+    fn from(l: LangArg) -> Self {
+        match l {
+            LangArg::Il => pipeline::Lang::Il,
+            LangArg::St => pipeline::Lang::St,
+            LangArg::Xml => pipeline::Lang::Xml,
+        }
+    }
 }
 
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
@@ -422,6 +446,7 @@ fn options(c: &ProjectArgs) -> pipeline::Options {
     pipeline::Options {
         axes: c.axes.clone(),
         cycle_ms: None,
+        lang: c.lang.map(Into::into),
         profile: c.profile.clone(),
         strategy: match c.strategy {
             StrategyArg::Il => Strategy::Il,

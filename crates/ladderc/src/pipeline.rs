@@ -1,6 +1,7 @@
 //! The compilation pipeline behind `check`, `build` and `run`.
 //!
-//! Input: source paths (`.xml` PLCopen projects, anything else IL) and options. Output: the source map, the
+//! Input: source paths (`.xml` PLCopen projects, `.il` IL, `.st` Structured Text, others by content;
+//! `-` standard input) and options. Output: the source map, the
 //! diagnostics, and (when there are no errors) the lowered IL units and the C project.
 //! Stages: read -> parse (IL) or read + lower ladder (XML) -> semantic checks against the PLCopen block
 //! prelude -> parameter passing (block calls by the chosen strategy) -> semantic model of the lowered
@@ -21,6 +22,36 @@ pub struct Options {
     pub axes: Option<PathBuf>,
     /// The scan cycle `run` uses (`--cycle-ms`), when given; checked against the configuration's.
     pub cycle_ms: Option<f64>,
+    /// The source language of every input (`--lang`); `None`: by extension, else from the content.
+    pub lang: Option<Lang>,
+}
+
+pub use il_frontend::st::file::Lang;
+
+/// The language of an input: `forced`, else by extension (`.il`, `.st`, `.xml`), else from the
+/// content. The flag says whether it was detected from the content.
+pub fn input_lang(path: &Path, text: &str, forced: Option<Lang>) -> (Lang, bool) {
+    if let Some(l) = forced {
+        return (l, false);
+    }
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("xml") => (Lang::Xml, false),
+        Some("il") => (Lang::Il, false),
+        Some("st") => (Lang::St, false),
+        _ => (il_frontend::st::file::detect(text), true),
+    }
+}
+
+/// The name diagnostics give standard input (`-` as an input).
+pub const STDIN_NAME: &str = "<stdin>";
+
+/// Whether an input path means standard input.
+pub fn is_stdin(p: &Path) -> bool {
+    p.as_os_str() == "-"
 }
 
 /// The motion library's C header, copied into generated projects that use motion blocks.
@@ -83,58 +114,108 @@ impl Session {
         }
     }
 
-    /// Reads and parses every input (IL or PLCopen XML).
+    /// Reads and parses every input (IL, ST or PLCopen XML; `-` is standard input, read once).
     pub fn load(&mut self, paths: &[PathBuf]) -> Vec<CompilationUnit> {
+        self.load_as(paths, None)
+    }
+
+    /// [`Session::load`] with every input read in `lang` when it is given.
+    pub fn load_as(&mut self, paths: &[PathBuf], lang: Option<Lang>) -> Vec<CompilationUnit> {
         let mut units = Vec::new();
+        let mut pending = Vec::new();
+        let mut stdin_read = false;
         for p in paths {
-            let text = match std::fs::read(p) {
+            let stdin = is_stdin(p);
+            let shown = if stdin {
+                STDIN_NAME.to_string()
+            } else {
+                p.display().to_string()
+            };
+            let bytes = if stdin {
+                if stdin_read {
+                    self.diags.push(
+                        Diagnostic::error(code::E9001, "`-` (standard input) is given twice")
+                            .with_hint("standard input can be read once: give `-` once"),
+                    );
+                    continue;
+                }
+                stdin_read = true;
+                let mut b = Vec::new();
+                std::io::Read::read_to_end(&mut std::io::stdin(), &mut b).map(|_| b)
+            } else {
+                std::fs::read(p)
+            };
+            let text = match bytes {
                 Ok(bytes) => match String::from_utf8(bytes) {
                     Ok(t) => t,
                     Err(_) => {
                         self.diags.push(
-                            Diagnostic::error(
-                                code::E9001,
-                                format!("{} is not valid UTF-8", p.display()),
-                            )
-                            .with_hint("save the file as UTF-8"),
+                            Diagnostic::error(code::E9001, format!("{shown} is not valid UTF-8"))
+                                .with_hint("save the file as UTF-8"),
                         );
                         continue;
                     }
                 },
                 Err(e) => {
                     self.diags.push(
-                        Diagnostic::error(code::E9001, format!("cannot read {}: {e}", p.display()))
+                        Diagnostic::error(code::E9001, format!("cannot read {shown}: {e}"))
                             .with_hint("check the path and its permissions"),
                     );
                     continue;
                 }
             };
-            let name = p.display().to_string();
-            let is_xml = p.extension().is_some_and(|e| e.eq_ignore_ascii_case("xml"));
             // A UTF-8 byte-order mark is dropped: positions count from the first character after it.
             let text = match text.strip_prefix('\u{feff}') {
                 Some(rest) => rest.to_string(),
                 None => text,
             };
-            let file = self.map.add(name, text);
+            let (file_lang, detected) = if stdin {
+                (
+                    lang.unwrap_or_else(|| il_frontend::st::file::detect(&text)),
+                    lang.is_none(),
+                )
+            } else {
+                input_lang(p, &text, lang)
+            };
+            let file = self.map.add(shown, text);
             let src = self.map.get(file).text.clone();
-            if is_xml {
+            if detected {
+                self.diags.push(
+                    Diagnostic::new(
+                        code::W0302,
+                        diagnostics::Severity::Note,
+                        format!("read as {} (detected from the content)", file_lang.name()),
+                    )
+                    .at(diagnostics::Span::new(file, 0, 0))
+                    .with_hint(
+                        "name the file .il, .st or .xml, or pass --lang il|st|xml, to choose",
+                    ),
+                );
+            }
+            if file_lang == Lang::Xml {
                 units.push(ladder_compiler::compile_xml(file, &src, &mut self.diags));
             } else {
-                let stem = p.file_stem().and_then(|s| s.to_str()).unwrap_or("main");
-                let implicit = if is_iec_identifier(stem) {
-                    stem
+                let stem = if stdin {
+                    None
                 } else {
-                    il_frontend::DEFAULT_IMPLICIT_PROGRAM
+                    p.file_stem().and_then(|s| s.to_str())
                 };
-                units.push(il_frontend::parse_named(
+                let implicit = match stem {
+                    Some(stem) if is_iec_identifier(stem) => stem,
+                    _ => il_frontend::DEFAULT_IMPLICIT_PROGRAM,
+                };
+                let (unit, bodies) = il_frontend::st::file::parse_text(
                     file,
                     &src,
                     implicit,
+                    file_lang,
                     &mut self.diags,
-                ));
+                );
+                units.push(unit);
+                pending.extend(bodies);
             }
         }
+        il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         units
     }
 
@@ -149,7 +230,7 @@ impl Session {
             library.add_dir(dir, &mut self.map, &mut self.diags);
             library.check_bodies(&param_passing::library::runtime_symbols(), &mut self.diags);
         }
-        let user = self.load(paths);
+        let user = self.load_as(paths, opts.lang);
         if self.diags.has_errors() {
             return None;
         }
@@ -271,7 +352,11 @@ impl Session {
     fn axis_config(&mut self, paths: &[PathBuf], explicit: Option<&Path>) -> Option<AxisConfig> {
         let path = match explicit {
             Some(p) => p.to_path_buf(),
-            None => match paths.first().and_then(|p| default_axes_path(p)) {
+            None => match paths
+                .first()
+                .filter(|p| !is_stdin(p))
+                .and_then(|p| default_axes_path(p))
+            {
                 Some(p) if p.is_file() => p,
                 _ => return Some(AxisConfig::default()),
             },

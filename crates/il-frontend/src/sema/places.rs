@@ -243,9 +243,11 @@ impl Body<'_, '_> {
                 Ok(()) => true,
                 Err(BindError::Range { value, span }) => {
                     let t = self.a.type_name(to);
-                    let range = to
-                        .elementary()
-                        .and_then(|e| e.int_range())
+                    let bounds = match to {
+                        Type::Subrange { lower, upper, .. } => Some((*lower, *upper)),
+                        _ => to.elementary().and_then(|e| e.int_range()),
+                    };
+                    let range = bounds
                         .map(|(lo, hi)| format!("{t} holds {lo}..{hi}"))
                         .unwrap_or_else(|| format!("the value must fit {t}"));
                     let _ = at;

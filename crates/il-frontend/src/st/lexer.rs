@@ -258,6 +258,8 @@ pub enum Problem {
     BadLiteral(Range<usize>, String),
     /// An invalid `$` escape inside a string (the string is still usable).
     BadEscape(Range<usize>, String),
+    /// A `{ ... }` or `{{ ... }}` pragma (skipped; reported by [`pragma_diagnostic`]).
+    Pragma(Range<usize>),
 }
 
 /// Lexes `src`; the token list always ends with [`Tok::Eof`].
@@ -302,7 +304,11 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
             Ok(Raw::Eq) => Tok::Eq,
             Ok(Raw::Ne) => Tok::Ne,
             Ok(Raw::Caret) => Tok::Caret,
-            Ok(Raw::Comment | Raw::Pragma | Raw::LineComment) => continue,
+            Ok(Raw::Pragma) => {
+                problems.push(Problem::Pragma(range));
+                continue;
+            }
+            Ok(Raw::Comment | Raw::LineComment) => continue,
             Err(e) => {
                 problems.push(match e {
                     LexError::UnexpectedChar => Problem::UnexpectedChar(range.clone()),
@@ -337,17 +343,131 @@ fn block_comment(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
     }
 }
 
-/// Skips a `{ ... }` pragma (CODESYS attributes, Beremiz annotations).
-fn pragma(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
-    match lex.remainder().find('}') {
+/// Skips a `{ ... }` pragma (CODESYS attributes, Beremiz annotations and C code): braces nest, so
+/// `{{ ... }}` and C blocks `{ if (x) { y(); } }` end at their own closing brace.
+fn pragma(lex: &mut logos::Lexer<Raw>) -> Result<(), LexError> {
+    match pragma_len(lex.remainder()) {
         Some(n) => {
-            lex.bump(n + 1);
-            FilterResult::Skip
+            lex.bump(n);
+            Ok(())
         }
         None => {
             lex.bump(lex.remainder().len());
-            FilterResult::Error(LexError::UnterminatedComment)
+            Err(LexError::UnterminatedComment)
         }
+    }
+}
+
+/// The length of a pragma's rest after its opening `{` (up to and including the matching `}`), or
+/// `None` when it is never closed. Braces inside C string or character literals are not counted.
+pub fn pragma_len(rest: &str) -> Option<usize> {
+    let mut depth = 1usize;
+    let mut quote: Option<u8> = None;
+    let b = rest.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        let c = b[i];
+        match quote {
+            Some(q) => {
+                if c == b'\\' {
+                    i += 1;
+                } else if c == q {
+                    quote = None;
+                }
+            }
+            None => match c {
+                b'"' => quote = Some(c),
+                b'{' => depth += 1,
+                b'}' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        return Some(i + 1);
+                    }
+                }
+                _ => {}
+            },
+        }
+        i += 1;
+    }
+    None
+}
+
+/// What a pragma is: informational (an attribute, a message, a region, conditional-compilation text
+/// that IEC leaves to the implementation) or code (Beremiz `{ C code }` / `{{ C code }}`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PragmaKind {
+    Informational,
+    Code,
+}
+
+/// Classifies the full text of a pragma (with its braces).
+pub fn pragma_kind(text: &str) -> PragmaKind {
+    let inner = text
+        .trim_start_matches('{')
+        .trim_end_matches('}')
+        .trim_start();
+    let word: String = inner
+        .chars()
+        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+        .collect::<String>()
+        .to_ascii_lowercase();
+    const INFO: &[&str] = &[
+        "attribute",
+        "warning",
+        "error",
+        "info",
+        "text",
+        "library",
+        "region",
+        "endregion",
+        "messageguid",
+        "bitmap",
+        "flag",
+        "author",
+        "version",
+        "description",
+        "implicit",
+    ];
+    if !text.starts_with("{{") && INFO.contains(&word.as_str()) {
+        PragmaKind::Informational
+    } else {
+        PragmaKind::Code
+    }
+}
+
+/// The diagnostic of a pragma at `span` whose text is `text`: W0300 (its code does not run) for code
+/// pragmas, a W0301 note for informational ones.
+pub fn pragma_diagnostic(text: &str, span: crate::Span) -> diagnostics::Diagnostic {
+    use diagnostics::{code, Diagnostic, Severity};
+    let shown = short_text(text);
+    match pragma_kind(text) {
+        PragmaKind::Informational => Diagnostic::new(
+            code::W0301,
+            Severity::Note,
+            format!("pragma `{shown}` is informational and is ignored"),
+        )
+        .at(span)
+        .with_hint("ladderc reads no attributes; the pragma changes nothing in the compiled program"),
+        PragmaKind::Code => Diagnostic::warning(
+            code::W0300,
+            format!("pragma `{shown}` holds code that does not run"),
+        )
+        .at(span)
+        .with_primary_label("this code is not compiled")
+        .with_hint(
+            "ladderc compiles no C or other code from pragmas; write the behaviour in ST (e.g. assign the output) or call a FUNCTION",
+        ),
+    }
+}
+
+/// A pragma's text on one line, at most 60 characters (cut at a character boundary).
+fn short_text(text: &str) -> String {
+    let one: String = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    if one.chars().count() > 60 {
+        let cut: String = one.chars().take(57).collect();
+        format!("{cut}...")
+    } else {
+        one
     }
 }
 

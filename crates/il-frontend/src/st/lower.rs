@@ -909,14 +909,16 @@ impl<'d> PouLowering<'d> {
                 if let (LiteralKind::Int(_) | LiteralKind::Real(_), Some(TypeRef::Named(t))) =
                     (&l.kind, &hint)
                 {
+                    // The prefix is the elementary type (a subrange or alias `Level` gives its
+                    // base `INT#`: a derived type name is no literal prefix).
                     let numeric = self
                         .env()
                         .elementary(&TypeRef::Named(t.clone()))
-                        .is_some_and(|x| {
+                        .filter(|x| {
                             x.is_numeric() && (x.is_real() || matches!(l.kind, LiteralKind::Int(_)))
                         });
-                    if numeric {
-                        l.type_prefix = Some(Ident::new(t.name.clone(), l.span));
+                    if let Some(x) = numeric {
+                        l.type_prefix = Some(Ident::new(x.name(), l.span));
                     }
                 }
                 out.push(ld(Operand::Literal(l), e.span));
@@ -1138,12 +1140,17 @@ impl<'d> PouLowering<'d> {
             _ => {
                 let all: Vec<&Arg> = args.iter().collect();
                 let callee2 = self.resolve_callee(name);
-                let args = self.call_args(
+                let args = match self.call_args(
                     args,
                     |env, n, k| hint_of(env, &callee2, k, Some(n), &all),
                     out,
                     diags,
-                );
+                ) {
+                    // `f()`: a call without arguments reads no current result (an empty formal
+                    // list; the operator form would take the current result as the first input).
+                    CallArgs::None => CallArgs::Formal(Vec::new()),
+                    a => a,
+                };
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: name.clone(),

@@ -12,6 +12,7 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
+pub mod file;
 pub mod infer;
 pub mod lexer;
 pub mod lower;

@@ -111,6 +111,12 @@ impl<'s, 'd> Parser<'s, 'd> {
 
     fn lex_problem(&mut self, pr: Problem) {
         let (code, range, msg, hint) = match pr {
+            Problem::Pragma(r) => {
+                let span = self.span(r.start, r.end);
+                let text = self.src.get(r).unwrap_or("{}");
+                self.diags.push(super::lexer::pragma_diagnostic(text, span));
+                return;
+            }
             Problem::UnexpectedChar(r) => {
                 let c = self.src[r.clone()].chars().next().unwrap_or(' ');
                 (
@@ -1065,7 +1071,11 @@ impl<'s, 'd> Parser<'s, 'd> {
                     span,
                 }
             }
-            Tok::Ident if *self.peek_at(1) == Tok::LParen => {
+            // `XOR(a, b)`, `MOD(x, 2)`, `AND(a, b, c)`: the standard functions named like operators,
+            // in functional form.
+            Tok::Kw(Kw::Xor | Kw::Mod | Kw::And | Kw::Or) | Tok::Ident
+                if *self.peek_at(1) == Tok::LParen =>
+            {
                 let n = self.bump();
                 let name = self.ident(&n);
                 match self.args() {

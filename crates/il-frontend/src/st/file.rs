@@ -1,0 +1,517 @@
+//! Textual IEC 61131-3 source files: which language a file and each POU body is written in, and the
+//! reading of Structured Text files (`.st`: POUs, TYPE, CONFIGURATION as matiec, RuSTy and IronPLC read
+//! them), whose bodies may each be ST or IL.
+//!
+//! Input: a file's text. Output: a [`CompilationUnit`] whose declarations were parsed by the IL parser
+//! (the declaration syntax is the same in both languages) and whose ST bodies are lowered to IL by
+//! [`compile_pending`] once every unit's declarations are known (an ST body may call a FUNCTION of
+//! another file). Invariants: a body is scanned once; the text the IL parser reads has the same length
+//! and line structure as the file (ST bodies and pragmas are blanked, not removed), so every span is a
+//! position in the file; an IL file holding ST gets one E0300, not one error per line.
+
+use super::lexer::{lex, pragma_diagnostic, Kw, Problem, Tok, Token};
+use crate::ast::{CompilationUnit, LibraryElement};
+use crate::{FileId, Span};
+use diagnostics::{code, Diagnostic, Diagnostics, Severity};
+use std::ops::Range;
+
+/// The language a source text is read in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Lang {
+    Il,
+    St,
+    Xml,
+}
+
+impl Lang {
+    pub fn name(self) -> &'static str {
+        match self {
+            Lang::Il => "instruction list (IL)",
+            Lang::St => "Structured Text (ST)",
+            Lang::Xml => "PLCopen XML",
+        }
+    }
+}
+
+/// A POU found in the text: its keyword, name and body range (between its declarations and its
+/// `END_...`), and the language the body is written in.
+#[derive(Debug, Clone)]
+pub struct PouText {
+    pub name: String,
+    /// Byte range of the name.
+    pub name_range: Range<usize>,
+    pub body: Range<usize>,
+    pub lang: Lang,
+    /// The `INITIAL_STEP` of a body in textual SFC (not compiled: E0302).
+    pub sfc: Option<Range<usize>>,
+    /// The first `METHOD name` / `PROPERTY name` of a body (edition 3 object orientation: E0303).
+    pub oop: Option<Range<usize>>,
+}
+
+/// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
+#[derive(Debug, Clone)]
+pub struct PendingBody {
+    pub file: FileId,
+    pub name_start: usize,
+    pub base: usize,
+    pub text: String,
+}
+
+/// IL operators (and the `&` forms): a line starting with one of these is an IL instruction.
+const IL_OPS: &[&str] = &[
+    "LD", "LDN", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN", "NOT", "ADD",
+    "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT", "JMP", "JMPC", "JMPCN", "CAL",
+    "CALC", "CALCN", "RET", "RETC", "RETCN",
+];
+
+fn word<'a>(src: &'a str, t: &Token) -> &'a str {
+    src.get(t.range.clone()).unwrap_or("")
+}
+
+fn is_word(src: &str, t: &Token, w: &str) -> bool {
+    matches!(t.tok, Tok::Ident | Tok::Kw(_)) && word(src, t).eq_ignore_ascii_case(w)
+}
+
+/// `VAR`, `VAR_INPUT` ... (upper-case): a variable block starts.
+fn is_var_keyword(w: &str) -> bool {
+    matches!(
+        w,
+        "VAR"
+            | "VAR_INPUT"
+            | "VAR_OUTPUT"
+            | "VAR_IN_OUT"
+            | "VAR_TEMP"
+            | "VAR_EXTERNAL"
+            | "VAR_GLOBAL"
+            | "VAR_ACCESS"
+            | "VAR_CONFIG"
+            | "VAR_INST"
+            | "VAR_STAT"
+    )
+}
+
+/// Finds the POUs of a text and the language of each body.
+pub fn scan(src: &str) -> Vec<PouText> {
+    let (toks, _) = lex(src);
+    scan_tokens(src, &toks)
+}
+
+fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    let n = toks.len();
+    // Skips to just after the token `end` (case-insensitive), from `i`.
+    let skip_to = |mut i: usize, end: &str| {
+        while i < n && !matches!(toks[i].tok, Tok::Eof) && !is_word(src, &toks[i], end) {
+            i += 1;
+        }
+        (i + 1).min(n)
+    };
+    while i < n && !matches!(toks[i].tok, Tok::Eof) {
+        let t = &toks[i];
+        let w = word(src, t).to_ascii_uppercase();
+        match w.as_str() {
+            "TYPE" => i = skip_to(i + 1, "END_TYPE"),
+            "CONFIGURATION" => i = skip_to(i + 1, "END_CONFIGURATION"),
+            "RESOURCE" => i = skip_to(i + 1, "END_RESOURCE"),
+            _ if is_var_keyword(&w) => i = skip_to(i + 1, "END_VAR"),
+            "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" => {
+                let end_word = format!("END_{w}");
+                i += 1;
+                let Some(name_tok) = toks.get(i).filter(|t| t.tok == Tok::Ident) else {
+                    continue;
+                };
+                let name = word(src, name_tok).to_string();
+                let name_range = name_tok.range.clone();
+                i += 1;
+                // FUNCTION f : TYPE (STRING[20], ARRAY [..] OF T); FUNCTION_BLOCK fb EXTENDS b.
+                if w == "FUNCTION" && toks.get(i).is_some_and(|t| t.tok == Tok::Colon) {
+                    i += 1;
+                    if toks.get(i).is_some_and(|t| is_word(src, t, "ARRAY")) {
+                        i = skip_to(i, "OF");
+                    }
+                    i += 1;
+                    if let Some(open) = toks.get(i).map(|t| t.tok.clone()) {
+                        let close = match open {
+                            Tok::LBracket => Some(Tok::RBracket),
+                            Tok::LParen => Some(Tok::RParen),
+                            _ => None,
+                        };
+                        if let Some(c) = close {
+                            while i < n && toks[i].tok != c && toks[i].tok != Tok::Eof {
+                                i += 1;
+                            }
+                            i += 1;
+                        }
+                    }
+                }
+                while i < n
+                    && ["EXTENDS", "IMPLEMENTS"]
+                        .iter()
+                        .any(|k| is_word(src, &toks[i], k))
+                {
+                    i += 2;
+                    while toks.get(i).is_some_and(|t| t.tok == Tok::Comma) {
+                        i += 2;
+                    }
+                }
+                let mut body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
+                while i < n && is_var_keyword(&word(src, &toks[i]).to_ascii_uppercase()) {
+                    i = skip_to(i + 1, "END_VAR");
+                    body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
+                }
+                let first = i.min(n - 1);
+                let mut j = i;
+                while j < n
+                    && !matches!(toks[j].tok, Tok::Eof)
+                    && !is_word(src, &toks[j], &end_word)
+                {
+                    j += 1;
+                }
+                let body_end = toks[j.min(n - 1)].range.start;
+                let body_start = body_start.min(body_end);
+                let sfc = toks[first..j.min(n - 1)]
+                    .iter()
+                    .find(|t| is_word(src, t, "INITIAL_STEP"))
+                    .map(|t| t.range.clone());
+                let body_toks = &toks[first..j.min(n - 1)];
+                let oop = body_toks
+                    .windows(2)
+                    .find(|w| {
+                        (is_word(src, &w[0], "METHOD") || is_word(src, &w[0], "PROPERTY"))
+                            && w[1].tok == Tok::Ident
+                    })
+                    .map(|w| w[0].range.clone());
+                out.push(PouText {
+                    name,
+                    name_range,
+                    body: body_start..body_end,
+                    lang: body_lang(src, &toks[first..j.min(n - 1)]),
+                    sfc,
+                    oop,
+                });
+                i = j + 1;
+            }
+            _ => i += 1,
+        }
+    }
+    out
+}
+
+/// The language of a body's tokens: ST when ST statements (an assignment `:=` outside parentheses, a
+/// statement keyword, a call statement `f(...)`) outnumber the lines that start like IL instructions
+/// (an IL operator followed by its operand, a label). An empty body is IL.
+fn body_lang(src: &str, toks: &[Token]) -> Lang {
+    let mut st = 0usize;
+    let mut il = 0usize;
+    let mut depth = 0i32;
+    let mut line_start = true;
+    for (k, t) in toks.iter().enumerate() {
+        let next = toks.get(k + 1);
+        let next_same_line = next.filter(|nt| {
+            !src.get(t.range.end..nt.range.start)
+                .unwrap_or("\n")
+                .contains('\n')
+        });
+        if line_start {
+            let line_end_semi = {
+                let mut m = k;
+                while m + 1 < toks.len()
+                    && !src
+                        .get(toks[m].range.end..toks[m + 1].range.start)
+                        .unwrap_or("\n")
+                        .contains('\n')
+                {
+                    m += 1;
+                }
+                toks[m].tok == Tok::Semi
+            };
+            let w = word(src, t).to_ascii_uppercase();
+            match &t.tok {
+                Tok::Kw(Kw::If | Kw::Case | Kw::For | Kw::While | Kw::Repeat | Kw::EndIf)
+                | Tok::Kw(Kw::EndFor | Kw::EndWhile | Kw::EndCase | Kw::EndRepeat) => st += 1,
+                Tok::Ident | Tok::Kw(_) if IL_OPS.contains(&w.as_str()) => {
+                    let operand = next_same_line.is_none_or(|nt| {
+                        !matches!(nt.tok, Tok::Assign | Tok::LBracket | Tok::Dot | Tok::Caret)
+                    });
+                    if operand && !line_end_semi {
+                        il += 1;
+                    }
+                }
+                Tok::Ident => match next_same_line.map(|nt| &nt.tok) {
+                    Some(Tok::LParen | Tok::LBracket | Tok::Dot | Tok::Caret) => st += 1,
+                    Some(Tok::Colon) if !line_end_semi => il += 1,
+                    _ => {}
+                },
+                _ => {}
+            }
+        }
+        match t.tok {
+            Tok::LParen | Tok::LBracket => depth += 1,
+            Tok::RParen | Tok::RBracket => depth -= 1,
+            Tok::Assign if depth <= 0 => st += 1,
+            // ST-only words wherever they are (one-line POUs: `... END_VAR RETURN; END_FUNCTION`).
+            Tok::Kw(Kw::Return | Kw::Exit | Kw::Continue) => st += 1,
+            _ => {}
+        }
+        line_start = next_same_line.is_none();
+    }
+    if st > il {
+        Lang::St
+    } else {
+        Lang::Il
+    }
+}
+
+/// The language of a text given no file extension: XML when it starts with `<`, ST when one of its
+/// POU bodies is ST, IL otherwise.
+pub fn detect(src: &str) -> Lang {
+    let t = src.trim_start_matches('\u{feff}').trim_start();
+    if t.starts_with('<') {
+        return Lang::Xml;
+    }
+    if scan(src).iter().any(|p| p.lang == Lang::St) {
+        Lang::St
+    } else {
+        Lang::Il
+    }
+}
+
+/// Blanks `range` of `text`: every character but line ends becomes spaces of its byte length, so
+/// positions do not move.
+fn blank(text: &mut String, range: Range<usize>) {
+    let Some(part) = text.get(range.clone()) else {
+        return;
+    };
+    let blanked: String = part
+        .chars()
+        .flat_map(|c| {
+            let (ch, n) = if c == '\n' || c == '\r' {
+                (c, 1)
+            } else {
+                (' ', c.len_utf8())
+            };
+            std::iter::repeat_n(ch, n)
+        })
+        .collect();
+    text.replace_range(range, &blanked);
+}
+
+/// Reads a text in `lang` (IL or ST; XML is not read here). IL: the text is parsed as IL, except that
+/// POU bodies written in ST are reported once (E0300) and skipped. ST: declarations are parsed by the
+/// IL parser; IL bodies stay (W0303 note); ST bodies are returned as [`PendingBody`]s for
+/// [`compile_pending`]; pragmas outside bodies are reported (W0300/W0301) and skipped.
+pub fn parse_text(
+    file: FileId,
+    src: &str,
+    implicit_name: &str,
+    lang: Lang,
+    diags: &mut Diagnostics,
+) -> (CompilationUnit, Vec<PendingBody>) {
+    let mut pending = Vec::new();
+    let mut first_try = None;
+    if lang == Lang::Il {
+        // A valid IL file costs one parse: the bodies are looked at only when the IL parser
+        // reported errors (then they are replaced by one E0300 if ST bodies explain them).
+        let mut local = Diagnostics::new();
+        let unit = crate::parse_named(file, src, implicit_name, &mut local);
+        if !local.has_errors() {
+            diags.extend(local);
+            return (unit, pending);
+        }
+        first_try = Some((unit, local));
+    }
+    let (toks, problems) = lex(src);
+    let pous = scan_tokens(src, &toks);
+    drop(toks);
+    let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
+    if let Some((unit, local)) = first_try {
+        let Some(first) = st_bodies.first() else {
+            diags.extend(local);
+            return (unit, pending);
+        };
+        let mut text = src.to_string();
+        {
+            let others = st_bodies.len() - 1;
+            let names: Vec<&str> = st_bodies.iter().map(|p| p.name.as_str()).collect();
+            let span = Span::new(file, first.body.start, first.body.end);
+            let mut d = Diagnostic::error(
+                code::E0300,
+                format!(
+                    "the body of `{}` is Structured Text, but this file is read as IL",
+                    first.name
+                ),
+            )
+            .at(trim_span(src, span))
+            .with_primary_label("Structured Text")
+            .with_hint("name the file `.st` or pass `--lang st` (ST files may hold IL bodies too)");
+            if others > 0 {
+                d = d.with_note(format!(
+                    "{others} more POU bodies are ST too: {}",
+                    names[1..].join(", ")
+                ));
+            }
+            diags.push(d);
+            for p in &st_bodies {
+                blank(&mut text, p.body.clone());
+            }
+        }
+        let unit = crate::parse_named(file, &text, implicit_name, diags);
+        return (unit, pending);
+    }
+    let mut text = src.to_string();
+    // ST: pragmas outside bodies are reported here (those inside ST bodies by the ST parser).
+    for pr in &problems {
+        if let Problem::Pragma(r) = pr {
+            if !st_bodies
+                .iter()
+                .any(|p| p.body.start <= r.start && r.end <= p.body.end)
+            {
+                diags.push(pragma_diagnostic(
+                    src.get(r.clone()).unwrap_or("{}"),
+                    Span::new(file, r.start, r.end),
+                ));
+                blank(&mut text, r.clone());
+            }
+        }
+    }
+    for p in &pous {
+        if let Some(r) = &p.sfc {
+            diags.push(
+                Diagnostic::error(
+                    code::E0302,
+                    format!(
+                        "the body of `{}` is Sequential Function Chart in textual form, which is not supported",
+                        p.name
+                    ),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("textual SFC starts here")
+                .with_hint("write the chart in a PLCopen XML <SFC> body (supported), or its steps as ST (a CASE over a state variable)"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
+        if let Some(r) = &p.oop {
+            let what = src.get(r.clone()).unwrap_or("METHOD").to_ascii_uppercase();
+            diags.push(
+                Diagnostic::error(
+                    code::E0303,
+                    format!(
+                        "`{}` holds a {what}: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+                        p.name
+                    ),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label(format!("{what} starts here"))
+                .with_hint("write the method as a FUNCTION (or an action as part of the body); the body of this POU is not compiled"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
+        match p.lang {
+            Lang::St => {
+                pending.push(PendingBody {
+                    file,
+                    name_start: p.name_range.start,
+                    base: p.body.start,
+                    text: src.get(p.body.clone()).unwrap_or("").to_string(),
+                });
+                blank(&mut text, p.body.clone());
+            }
+            _ if !src.get(p.body.clone()).unwrap_or("").trim().is_empty() => {
+                let span = Span::new(file, p.name_range.start, p.name_range.end);
+                diags.push(
+                    Diagnostic::new(
+                        code::W0303,
+                        Severity::Note,
+                        format!("the body of `{}` is instruction list: read as IL", p.name),
+                    )
+                    .at(span)
+                    .with_hint("ST files may hold IL bodies, as matiec allows"),
+                );
+            }
+            _ => {}
+        }
+    }
+    let unit = crate::parse_named(file, &text, implicit_name, diags);
+    (unit, pending)
+}
+
+/// The first line of `span`'s text, without surrounding white space.
+fn trim_span(src: &str, span: Span) -> Span {
+    let (s, e) = (span.start as usize, span.end as usize);
+    let part = src.get(s..e).unwrap_or("");
+    let lead = part.len() - part.trim_start().len();
+    let rest = &part[lead..];
+    let line = rest.split('\n').next().unwrap_or("").trim_end();
+    Span::new(span.file, s + lead, s + lead + line.len())
+}
+
+/// Lowers the pending ST bodies into their POUs. `units` must hold every unit of the program (the
+/// declarations of all of them are visible to every body).
+pub fn compile_pending(
+    units: &mut [CompilationUnit],
+    pending: &[PendingBody],
+    diags: &mut Diagnostics,
+) {
+    if pending.is_empty() {
+        return;
+    }
+    let decls = super::Declarations::from_units(units);
+    for pb in pending {
+        for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+            let LibraryElement::Pou(p) = item else {
+                continue;
+            };
+            if p.name.span.file != pb.file || p.name.span.start as usize != pb.name_start {
+                continue;
+            }
+            let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
+            let (body, temps) =
+                super::compile_body(pb.file, &pb.text, pb.base, &decls, p, span, diags);
+            p.body = body;
+            if let Some(t) = temps {
+                p.var_blocks.push(t);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bodies_are_found_and_classified() {
+        let src = "TYPE t : INT; END_TYPE\nFUNCTION f : INT\nVAR_INPUT a : INT; END_VAR\n  f := a + 1;\nEND_FUNCTION\n\
+                   FUNCTION_BLOCK fb\nVAR_INPUT s : BOOL; END_VAR VAR_OUTPUT q : BOOL; END_VAR\n  LD s\n  ST q\nEND_FUNCTION_BLOCK\n\
+                   PROGRAM main\nVAR x : fb; END_VAR\n  x(s := TRUE);\nEND_PROGRAM\n\
+                   CONFIGURATION c RESOURCE r ON PLC PROGRAM i WITH t : main; END_RESOURCE END_CONFIGURATION\n";
+        let p = scan(src);
+        let got: Vec<(&str, Lang)> = p.iter().map(|p| (p.name.as_str(), p.lang)).collect();
+        assert_eq!(
+            got,
+            vec![("f", Lang::St), ("fb", Lang::Il), ("main", Lang::St)]
+        );
+        assert_eq!(src[p[0].body.clone()].trim(), "f := a + 1;");
+        assert_eq!(detect(src), Lang::St);
+        assert_eq!(detect("  <?xml version='1.0'?>"), Lang::Xml);
+        assert_eq!(
+            detect("FUNCTION F : REAL VAR_INPUT IN : BYTE; END_VAR RETURN; END_FUNCTION"),
+            Lang::St
+        );
+        assert_eq!(
+            detect("PROGRAM p\nVAR x : INT; END_VAR\nLD 1\nST x ; store\nEND_PROGRAM"),
+            Lang::Il
+        );
+    }
+
+    #[test]
+    fn il_with_formal_calls_and_labels_is_il() {
+        let src = "PROGRAM p\nVAR t : TON; x : BOOL; END_VAR\nCAL t(IN := x, PT := T#1s)\nL1: LD t.Q\nJMPC L1\nEND_PROGRAM";
+        assert_eq!(scan(src)[0].lang, Lang::Il);
+        let st = "PROGRAM p\nVAR t : TON; x : BOOL; END_VAR\nt(IN := x,\n  PT := T#1s);\nx := t.Q\n  AND x;\nEND_PROGRAM";
+        assert_eq!(scan(st)[0].lang, Lang::St);
+    }
+}
