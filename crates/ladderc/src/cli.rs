@@ -97,9 +97,12 @@ pub enum Command {
     Build {
         #[command(flatten)]
         compile: CompileArgs,
-        /// Output directory (replaced atomically).
+        /// Output directory: ladderc writes only its own files there (see `.ladderc-manifest`).
         #[arg(short = 'o', long = "output")]
         output: Option<PathBuf>,
+        /// Also write a make-syntax depfile: every output depends on every input read.
+        #[arg(long)]
+        depfile: Option<PathBuf>,
         #[arg(long, value_enum, default_value_t = Emit::C)]
         emit: Emit,
         /// Print a report on standard output: per PLCopen block type its method, calls, TM bytes,
@@ -231,11 +234,12 @@ pub fn main() -> i32 {
         Command::Build {
             compile,
             output,
+            depfile,
             emit,
             report,
         } => build(
             &compile,
-            output.as_deref(),
+            (output.as_deref(), depfile.as_deref()),
             emit,
             report,
             cli.message_format,
@@ -366,7 +370,7 @@ fn check(inputs: &[PathBuf], format: Format) -> i32 {
 
 fn build(
     c: &CompileArgs,
-    output: Option<&std::path::Path>,
+    (output, depfile): (Option<&std::path::Path>, Option<&std::path::Path>),
     emit_kind: Emit,
     report: Option<ReportFormat>,
     format: Format,
@@ -414,12 +418,14 @@ fn build(
             if let Err(code) = add_staticlib(&program, &mut files, format) {
                 return code;
             }
-            if let Err(e) = output::write_dir_atomically(dir, &files) {
-                return io_error(
-                    format!("cannot write {}: {e}", dir.display()),
-                    "check that the directory can be written",
-                    format,
-                );
+            if let Err(d) = output::write_build(
+                dir,
+                &files,
+                depfile,
+                &crate::depfile::inputs(&c.inputs, &options(c)),
+            ) {
+                emit(&SourceMap::new(), &[*d], format);
+                return EXIT_USAGE;
             }
             code
         }
@@ -473,23 +479,15 @@ fn add_staticlib(
     if !program.link.iter().any(|l| l == lib) {
         return Ok(());
     }
-    let path = match crate::motion_link::find() {
-        Ok(p) => p,
-        Err(d) => {
-            emit(&SourceMap::new(), &[*d], format);
-            return Err(EXIT_USAGE);
-        }
-    };
-    match std::fs::read(&path) {
+    match crate::motion_link::library() {
         Ok(bytes) => {
-            files.push((lib.to_string(), bytes));
+            files.push((lib.to_string(), bytes.into_owned()));
             Ok(())
         }
-        Err(e) => Err(io_error(
-            format!("cannot read {}: {e}", path.display()),
-            "check LADDERC_MOTION_LIB",
-            format,
-        )),
+        Err(d) => {
+            emit(&SourceMap::new(), &[*d], format);
+            Err(EXIT_USAGE)
+        }
     }
 }
 

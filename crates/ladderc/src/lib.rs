@@ -5,11 +5,12 @@
 //! calls [`cli::main`].
 //!
 //! Modules: [`pipeline`] (load, check, lower, generate C), [`cli`] (arguments and dispatch), [`axes`] (the
-//! axes file), [`motion_link`] (the motion library that generated programs link), [`output`] (atomic
-//! writes), [`plot`], [`pmac_out`] and [`report`].
+//! axes file), [`motion_link`] (the motion library that generated programs link), [`output`] (writing
+//! into the user's folder), [`depfile`], [`plot`], [`pmac_out`] and [`report`].
 
 pub mod axes;
 pub mod cli;
+pub mod depfile;
 pub mod motion_link;
 pub mod output;
 pub mod pipeline;
