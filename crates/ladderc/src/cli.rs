@@ -407,17 +407,19 @@ fn build(
             if let Err(code) = write_pmac(c, pmac, code, format) {
                 return code;
             }
+            let mut extra = Vec::new();
+            if let Err(code) = add_staticlib(&program, &mut extra, format) {
+                return code;
+            }
             if report == Some(ReportFormat::Json) {
-                println!("{}", crate::report::json(&lowered, &program));
+                println!("{}", crate::report::json(&lowered, &program, &extra));
             }
             let mut files: Vec<(String, Vec<u8>)> = program
                 .files
                 .iter()
                 .map(|(p, c)| (p.clone(), c.clone().into_bytes()))
                 .collect();
-            if let Err(code) = add_staticlib(&program, &mut files, format) {
-                return code;
-            }
+            files.extend(extra);
             if let Err(d) = output::write_build(
                 dir,
                 &files,
