@@ -383,6 +383,12 @@ fn build(
             );
             EXIT_USAGE
         }
+        Emit::Il if depfile.is_some() => {
+            eprintln!(
+                "error: `--depfile` describes a C build: use it with `-o DIR`, not `--emit il`"
+            );
+            EXIT_USAGE
+        }
         Emit::Il => {
             let lowered = s.lower(&c.inputs, &options(c));
             let code = finish(s, format);
