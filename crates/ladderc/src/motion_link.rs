@@ -5,7 +5,8 @@
 //! ladderc is built for (LTO, one codegen unit, opt-level "s", panic=unwind), and it is embedded here, so an
 //! installed `ladderc` needs no source tree and no environment variable. `LADDERC_MOTION_LIB=FILE`
 //! replaces it (a library built with other settings, or for a debugger).
-//! Invariant: the bytes returned are those of a regular file or of the embedded archive, never empty.
+//! Invariant: the bytes returned are those of a regular file or of the embedded archive, never empty
+//! (the archive is empty only in a `cargo clippy` build, which links no executable).
 
 use diagnostics::{code, Diagnostic};
 use std::borrow::Cow;
@@ -40,6 +41,15 @@ pub fn source() -> Source {
 /// The library's bytes (see [`source`]).
 pub fn library() -> Result<Cow<'static, [u8]>, Box<Diagnostic>> {
     match source() {
+        Source::Embedded if EMBEDDED.is_empty() => Err(Box::new(
+            Diagnostic::error(
+                code::E9050,
+                "this ladderc was built without the motion library (a `cargo clippy` build)",
+            )
+            .with_hint(format!(
+                "use a ladderc built by cargo build or cargo install, or set {ENV}"
+            )),
+        )),
         Source::Embedded => Ok(Cow::Borrowed(EMBEDDED)),
         Source::Override(p) => match std::fs::read(&p) {
             Ok(bytes) if p.is_file() && !bytes.is_empty() => Ok(Cow::Owned(bytes)),
