@@ -143,9 +143,12 @@ pub enum Command {
     Build {
         #[command(flatten)]
         compile: CompileArgs,
-        /// Output directory (replaced atomically).
+        /// Output directory: ladderc writes only its own files there (see `.ladderc-manifest`).
         #[arg(short = 'o', long = "output")]
         output: Option<PathBuf>,
+        /// Also write a make-syntax depfile: every output depends on every input read.
+        #[arg(long)]
+        depfile: Option<PathBuf>,
         /// What to produce: the C project (`c`, into `-o DIR`) or the lowered IL on standard output (`il`).
         #[arg(long, value_enum, default_value_t = Emit::C)]
         emit: Emit,
@@ -355,11 +358,12 @@ fn dispatch(cli: Cli) -> i32 {
         Command::Build {
             compile,
             output,
+            depfile,
             emit,
             report,
         } => build(
             &compile,
-            output.as_deref(),
+            (output.as_deref(), depfile.as_deref()),
             emit,
             report,
             cli.message_format,
@@ -500,7 +504,7 @@ fn check(p: &ProjectArgs, format: Format) -> i32 {
 
 fn build(
     c: &CompileArgs,
-    output: Option<&std::path::Path>,
+    (output, depfile): (Option<&std::path::Path>, Option<&std::path::Path>),
     emit_kind: Emit,
     report: Option<ReportFormat>,
     format: Format,
@@ -509,6 +513,10 @@ fn build(
     match emit_kind {
         Emit::Il if report.is_some() => usage(
             "`--report` describes a C build: use it with `-o DIR`, not `--emit il`",
+            format,
+        ),
+        Emit::Il if depfile.is_some() => usage(
+            "`--depfile` describes a C build: use it with `-o DIR`, not `--emit il`",
             format,
         ),
         Emit::Il => {
@@ -536,8 +544,12 @@ fn build(
             if let Err(code) = write_pmac(c, pmac, code, format) {
                 return code;
             }
+            let mut extra = Vec::new();
+            if let Err(code) = add_staticlib(&program, &mut extra, format) {
+                return code;
+            }
             if report == Some(ReportFormat::Json) {
-                let text = crate::report::json(&lowered, &program) + "\n";
+                let text = crate::report::json(&lowered, &program, &extra) + "\n";
                 if let Err(e) = stdio::out(&text) {
                     return stdout_error(e, format);
                 }
@@ -547,15 +559,15 @@ fn build(
                 .iter()
                 .map(|(p, c)| (p.clone(), c.clone().into_bytes()))
                 .collect();
-            if let Err(code) = add_staticlib(&program, &mut files, format) {
-                return code;
-            }
-            if let Err(e) = output::write_dir_atomically(dir, &files) {
-                return io_error(
-                    format!("cannot write {}: {e}", dir.display()),
-                    "check that the directory can be written",
-                    format,
-                );
+            files.extend(extra);
+            if let Err(d) = output::write_build(
+                dir,
+                &files,
+                depfile,
+                &crate::depfile::inputs(&c.inputs, &options(c)),
+            ) {
+                emit(&SourceMap::new(), &[*d], format);
+                return EXIT_USAGE;
             }
             summary::wrote(dir);
             code
@@ -629,23 +641,15 @@ fn add_staticlib(
     if !program.link.iter().any(|l| l == lib) {
         return Ok(());
     }
-    let path = match crate::motion_link::find() {
-        Ok(p) => p,
-        Err(d) => {
-            emit(&SourceMap::new(), &[*d], format);
-            return Err(EXIT_USAGE);
-        }
-    };
-    match std::fs::read(&path) {
+    match crate::motion_link::library() {
         Ok(bytes) => {
-            files.push((lib.to_string(), bytes));
+            files.push((lib.to_string(), bytes.into_owned()));
             Ok(())
         }
-        Err(e) => Err(io_error(
-            format!("cannot read {}: {e}", path.display()),
-            "check LADDERC_MOTION_LIB",
-            format,
-        )),
+        Err(d) => {
+            emit(&SourceMap::new(), &[*d], format);
+            Err(EXIT_USAGE)
+        }
     }
 }
 

@@ -5,12 +5,14 @@
 //! calls [`cli::main`].
 //!
 //! Modules: [`pipeline`] (load, check, lower, generate C), [`cli`] (arguments and dispatch), [`axes`] (the
-//! axes file), [`motion_link`] (the motion library that generated programs link), [`output`] (atomic
-//! writes), [`plot`], [`pmac_out`], [`report`], [`progress`] (running a built program), [`stdio`] (output that
-//! ends quietly on a closed pipe), [`summary`] (the final summary) and [`xml_context`].
+//! axes file), [`motion_link`] (the motion library that generated programs link), [`output`] (writing
+//! into the user's folder), [`depfile`], [`plot`], [`pmac_out`], [`report`], [`progress`] (running a built
+//! program), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary) and
+//! [`xml_context`].
 
 pub mod axes;
 pub mod cli;
+pub mod depfile;
 pub mod motion_link;
 pub mod output;
 pub mod pipeline;

@@ -1,94 +1,73 @@
-//! Finding the motion library's static library (`libmotion_lib.a`) that generated programs link.
+//! The motion library's static library (`libmotion_lib.a`) that generated programs link.
 //!
-//! Input: the environment (`LADDERC_MOTION_LIB`) and the location of the running executable. Output: the
-//! path of the library, or an E9050 diagnostic naming every place that was searched.
-//! Search order: `$LADDERC_MOTION_LIB`; `libmotion_lib.a` beside the executable; the newest
-//! `libmotion_lib*.a` in `deps/` beside it (cargo builds it there because motion-lib declares the
-//! `staticlib` crate type and ladderc depends on it); the same two in the parent directory (test
-//! executables live in `target/<profile>/deps`). Invariant: only existing regular files are returned.
+//! Input: the environment (`LADDERC_MOTION_LIB`). Output: the library's bytes, or an E9050 diagnostic.
+//! ladderc carries the library: `build.rs` builds motion-lib as a release static library for the target
+//! ladderc is built for (LTO, one codegen unit, opt-level "s", panic=unwind), and it is embedded here, so an
+//! installed `ladderc` needs no source tree and no environment variable. `LADDERC_MOTION_LIB=FILE`
+//! replaces it (a library built with other settings, or for a debugger).
+//! Invariant: the bytes returned are those of a regular file or of the embedded archive, never empty
+//! (the archive is empty only in a `cargo clippy` build, which links no executable).
 
 use diagnostics::{code, Diagnostic};
-use std::path::{Path, PathBuf};
+use std::borrow::Cow;
+use std::path::PathBuf;
 
-/// The environment variable that overrides the search.
+/// The environment variable that replaces the embedded library.
 pub const ENV: &str = "LADDERC_MOTION_LIB";
 
-fn newest_in(dir: &Path) -> Option<PathBuf> {
-    std::fs::read_dir(dir)
-        .ok()?
-        .filter_map(Result::ok)
-        .filter(|e| {
-            let n = e.file_name();
-            let n = n.to_string_lossy();
-            n.starts_with("libmotion_lib") && n.ends_with(".a")
-        })
-        .filter_map(|e| {
-            let m = e.metadata().ok()?;
-            Some((m.modified().ok()?, e.path()))
-        })
-        .max_by_key(|(t, _)| *t)
-        .map(|(_, p)| p)
+/// The release static library built by `build.rs` for ladderc's own target.
+pub static EMBEDDED: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/libmotion_lib.a"));
+
+/// The motion library's C header (`motion_lib.h`), as generated from motion-lib's C ABI.
+pub const HEADER: &str = include_str!("../../motion-lib/include/motion_lib.h");
+
+/// Where the library comes from.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Source {
+    /// `$LADDERC_MOTION_LIB`.
+    Override(PathBuf),
+    /// The archive embedded in ladderc.
+    Embedded,
 }
 
-/// The places searched beside an executable directory, in order.
-fn candidates(exe_dir: &Path) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut dirs = vec![exe_dir.to_path_buf()];
-    if let Some(parent) = exe_dir.parent() {
-        dirs.push(parent.to_path_buf());
+/// The library to link: `$LADDERC_MOTION_LIB` when set, else the embedded one.
+pub fn source() -> Source {
+    match std::env::var_os(ENV).filter(|v| !v.is_empty()) {
+        Some(v) => Source::Override(PathBuf::from(v)),
+        None => Source::Embedded,
     }
-    for d in dirs {
-        out.push(d.join(c_backend::motion::STATICLIB));
-        if let Some(p) = newest_in(&d.join("deps")) {
-            out.push(p);
-        }
-        if d.file_name().is_some_and(|n| n == "deps") {
-            if let Some(p) = newest_in(&d) {
-                out.push(p);
-            }
-        }
-    }
-    out
 }
 
-/// Locates the static library (see the module header).
-pub fn find() -> Result<PathBuf, Box<Diagnostic>> {
-    if let Some(v) = std::env::var_os(ENV).filter(|v| !v.is_empty()) {
-        let p = PathBuf::from(v);
-        if p.is_file() {
-            return Ok(p);
-        }
-        return Err(Box::new(
+/// The library's bytes (see [`source`]).
+pub fn library() -> Result<Cow<'static, [u8]>, Box<Diagnostic>> {
+    match source() {
+        Source::Embedded if EMBEDDED.is_empty() => Err(Box::new(
             Diagnostic::error(
                 code::E9050,
-                format!("{ENV} is set to {}, which is not a file", p.display()),
+                "this ladderc was built without the motion library (a `cargo clippy` build)",
             )
-            .with_hint("point it at libmotion_lib.a (cargo build -p motion-lib)"),
-        ));
-    }
-    let exe = std::env::current_exe().ok();
-    let exe_dir = exe.as_deref().and_then(Path::parent);
-    let searched = exe_dir.map(candidates).unwrap_or_default();
-    if let Some(p) = searched.iter().find(|p| p.is_file()) {
-        return Ok(p.clone());
-    }
-    Err(Box::new(
-        Diagnostic::error(
-            code::E9050,
-            "the program uses motion blocks, but the motion library libmotion_lib.a was not found",
-        )
-        .with_note(format!(
-            "searched {ENV} and: {}",
-            searched
-                .iter()
-                .map(|p| p.display().to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        ))
-        .with_hint(format!(
-            "build it (cargo build -p motion-lib) and set {ENV}=/path/to/libmotion_lib.a"
+            .with_hint(format!(
+                "use a ladderc built by cargo build or cargo install, or set {ENV}"
+            )),
         )),
-    ))
+        Source::Embedded => Ok(Cow::Borrowed(EMBEDDED)),
+        Source::Override(p) => match std::fs::read(&p) {
+            Ok(bytes) if p.is_file() && !bytes.is_empty() => Ok(Cow::Owned(bytes)),
+            Ok(_) | Err(_) => Err(Box::new(
+                Diagnostic::error(
+                    code::E9050,
+                    format!(
+                        "{ENV} is set to {}, which is not a readable, non-empty file",
+                        p.display()
+                    ),
+                )
+                .with_hint(format!(
+                    "unset {ENV} to link the motion library built into ladderc, or point it at a \
+                     libmotion_lib.a (cargo build -p motion-lib --release)"
+                )),
+            )),
+        },
+    }
 }
 
 #[cfg(test)]
@@ -96,19 +75,11 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_newest_archive_in_deps_wins_and_the_parent_is_searched() {
-        let dir = tempfile::tempdir().unwrap();
-        let deps = dir.path().join("deps");
-        std::fs::create_dir(&deps).unwrap();
-        std::fs::write(deps.join("libmotion_lib-old.a"), "old").unwrap();
-        std::thread::sleep(std::time::Duration::from_millis(20));
-        std::fs::write(deps.join("libmotion_lib-new.a"), "new").unwrap();
-        std::fs::write(deps.join("libother.a"), "x").unwrap();
-        let c = candidates(dir.path());
-        assert_eq!(c[1], deps.join("libmotion_lib-new.a"));
-        // from target/debug/deps (a test executable) the same archive is found
-        let c = candidates(&deps);
-        assert!(c.contains(&deps.join("libmotion_lib-new.a")), "{c:?}");
-        assert!(c.contains(&dir.path().join("libmotion_lib.a")), "{c:?}");
+    fn the_embedded_library_is_an_archive_with_the_c_abi() {
+        assert!(EMBEDDED.starts_with(b"!<arch>\n"), "not an ar archive");
+        // the entry points the generated C calls are defined in it
+        let find = |s: &[u8]| EMBEDDED.windows(s.len()).any(|w| w == s);
+        assert!(find(b"mc_engine_step"));
+        assert!(HEADER.contains("mc_engine_step"));
     }
 }

@@ -7,6 +7,11 @@
 //! its synthesised functions in `program.c` (template method, one per call). `object_bytes` is the code
 //! size of the same functions compiled (`cc -std=c99 -O2 -fno-inline -c`, symbol sizes from `nm -S`);
 //! `null` when no C compiler or `nm` is available.
+//! `code_size` measures the whole program as its Makefile builds it (`-O2 -ffunction-sections
+//! -fdata-sections`, linked with `-Wl,--gc-sections -s` and the motion library when it uses one):
+//! `program_code_bytes` is the machine code of the program's own C (`program.c`, `embedded.c`),
+//! `runtime_code_bytes` that of ladderc's C runtime and scan harness, `executable_bytes` the size of the
+//! linked, stripped executable file (`null` each when no C compiler is available).
 //! Invariant: the figures are measured on the generated text and objects, never estimated.
 
 use crate::pipeline::Lowered;
@@ -77,8 +82,111 @@ fn symbol_sizes(program: &c_backend::CProgram) -> Option<HashMap<String, u64>> {
     Some(sizes)
 }
 
-/// The report as JSON text.
-pub fn json(lowered: &Lowered, program: &c_backend::CProgram) -> String {
+/// The C compiler command: `$CC`, else `cc` (may hold arguments).
+fn cc_words() -> Vec<String> {
+    std::env::var("CC")
+        .ok()
+        .filter(|s| !s.trim().is_empty())
+        .unwrap_or_else(|| "cc".into())
+        .split_whitespace()
+        .map(str::to_string)
+        .collect()
+}
+
+/// The machine code in an object file: the sum of its text symbols' sizes (`nm -S`).
+fn text_bytes(dir: &std::path::Path, obj: &str) -> Option<u64> {
+    let nm = Command::new("nm")
+        .args(["-S", "--defined-only", obj])
+        .current_dir(dir)
+        .output()
+        .ok()?;
+    if !nm.status.success() {
+        return None;
+    }
+    let mut total = 0;
+    for line in String::from_utf8_lossy(&nm.stdout).lines() {
+        let f: Vec<&str> = line.split_whitespace().collect();
+        if let [_, size, kind, _] = f.as_slice() {
+            if kind.eq_ignore_ascii_case("t") {
+                total += u64::from_str_radix(size, 16).unwrap_or(0);
+            }
+        }
+    }
+    Some(total)
+}
+
+/// (program code, runtime code, executable file) in bytes, built as the project's Makefile does;
+/// `extra` are the files the build adds (the motion library).
+pub fn code_size(
+    program: &c_backend::CProgram,
+    extra: &[(String, Vec<u8>)],
+) -> Option<(u64, u64, u64)> {
+    let dir = tempfile::tempdir().ok()?;
+    c_backend::toolchain::write_files(program, dir.path()).ok()?;
+    for (name, bytes) in extra {
+        std::fs::write(dir.path().join(name), bytes).ok()?;
+    }
+    let cc = cc_words();
+    let (first, rest) = cc.split_first()?;
+    let (mut own, mut runtime, mut objects) = (0, 0, Vec::new());
+    for src in program.sources() {
+        let obj = format!("{src}.o");
+        let ok = Command::new(first)
+            .args(rest)
+            .args([
+                "-std=c99",
+                "-O2",
+                "-ffunction-sections",
+                "-fdata-sections",
+                "-c",
+                src,
+            ])
+            .args(["-o", &obj])
+            .current_dir(dir.path())
+            .output()
+            .ok()?
+            .status
+            .success();
+        if !ok {
+            return None;
+        }
+        let bytes = text_bytes(dir.path(), &obj)?;
+        if src == "program.c" || src == "embedded.c" {
+            own += bytes;
+        } else {
+            runtime += bytes;
+        }
+        objects.push(obj);
+    }
+    let link = if program.link.is_empty() {
+        vec!["-lm".to_string()]
+    } else {
+        program.link.clone()
+    };
+    let ok = Command::new(first)
+        .args(rest)
+        .args(["-o", "program"])
+        .args(&objects)
+        .args(&link)
+        .args(["-Wl,--gc-sections", "-s"])
+        .current_dir(dir.path())
+        .output()
+        .ok()?
+        .status
+        .success();
+    if !ok {
+        return None;
+    }
+    let exe = std::fs::metadata(dir.path().join("program")).ok()?.len();
+    Some((own, runtime, exe))
+}
+
+/// The report as JSON text; `extra` are the files the build adds to the project (the motion library).
+pub fn json(
+    lowered: &Lowered,
+    program: &c_backend::CProgram,
+    extra: &[(String, Vec<u8>)],
+) -> String {
     let program_c = program.file("program.c").unwrap_or("");
     let symbols = symbol_sizes(program);
     let mut blocks = Vec::new();
@@ -125,7 +233,15 @@ pub fn json(lowered: &Lowered, program: &c_backend::CProgram) -> String {
             "object_bytes": object_bytes,
         }));
     }
-    let doc = serde_json::json!({ "blocks": blocks });
+    let size = code_size(program, extra);
+    let doc = serde_json::json!({
+        "blocks": blocks,
+        "code_size": {
+            "program_code_bytes": size.map(|s| s.0),
+            "runtime_code_bytes": size.map(|s| s.1),
+            "executable_bytes": size.map(|s| s.2),
+        },
+    });
     serde_json::to_string_pretty(&doc).unwrap_or_default()
 }
 

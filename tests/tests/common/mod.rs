@@ -62,5 +62,14 @@ pub fn block_report(
         assert!(size > min_object_bytes, "{b}");
         b.as_object_mut().unwrap().remove("object_bytes");
     }
+    // the whole program's code size depends on the C compiler too: checked, then left out
+    let size = v.as_object_mut().unwrap().remove("code_size").unwrap();
+    for k in [
+        "program_code_bytes",
+        "runtime_code_bytes",
+        "executable_bytes",
+    ] {
+        assert!(size[k].as_u64().is_some_and(|n| n > 0), "{k}: {size}");
+    }
     v
 }
