@@ -106,7 +106,7 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                         span: ctx.tag(d),
                     }),
                     (Err(e), _) | (_, Err(e)) => {
-                        ctx.report(e);
+                        ctx.report(*e);
                         return None;
                     }
                 }
@@ -313,25 +313,26 @@ pub fn var_kind(list: &str) -> Option<VarKind> {
 /// A variable list element (`<localVars constant="true">...`) as a [`VarBlock`].
 /// An array bound: an integer literal, or a constant expression over named integer constants
 /// (`ciCount`, `MAX_AXES - 1`), as CODESYS and TwinCAT exports write them.
-fn bound(ctx: &Ctx, d: &Element, attr: &str) -> Result<i128, Diagnostic> {
+fn bound(ctx: &Ctx, d: &Element, attr: &str) -> Result<i128, Box<Diagnostic>> {
     let span = ctx.attr_span(d, attr);
     let Some(text) = d.attr(attr) else {
-        return Err(Diagnostic::error(
-            code::E3011,
-            format!("array dimension without a `{attr}` bound"),
-        )
-        .at(span));
+        return Err(Box::new(
+            Diagnostic::error(
+                code::E3011,
+                format!("array dimension without a `{attr}` bound"),
+            )
+            .at(span),
+        ));
     };
     values::const_int_expr(text, &|n| ctx.constant(n)).map_err(|why| {
         let unknown = why.starts_with("unknown");
         let c = if unknown { code::E3401 } else { code::E3011 };
-        Diagnostic::error(c, format!("array bound `{}`: {why}", text.trim()))
-            .at(span)
+        Box::new(Diagnostic::error(c, format!("array bound `{}`: {why}", text.trim())).at(span)
             .with_hint(if unknown {
                 "declare it as an integer constant (VAR_GLOBAL CONSTANT or VAR CONSTANT) with an initial value"
             } else {
                 "write an integer, or an expression of integer constants with + - * / and parentheses"
-            })
+            }))
     })
 }
 
