@@ -1269,8 +1269,24 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     continue;
                 }
                 Some(Some(expected)) => {
-                    let from = self.ty(v);
                     let to = Ty::Known(expected);
+                    // `0` and `1` are BOOL literals too (IEC 61131-3, boolean literals)
+                    if type_text(&to) == "BOOL" {
+                        if let Val::Leaf {
+                            op:
+                                Operand::Literal(Literal {
+                                    kind: LiteralKind::Int(n @ (0 | 1)),
+                                    type_prefix: None,
+                                    ..
+                                }),
+                            neg: false,
+                        } = &self.vals[v]
+                        {
+                            let b = *n == 1;
+                            v = self.val(Val::Const(b), self.spans[v]);
+                        }
+                    }
+                    let from = self.ty(v);
                     if let (Some(f), Some(t)) = (family_of(&from), family_of(&to)) {
                         if !catalogue::compatible(f, t) {
                             let d = self.diag(

@@ -1,7 +1,8 @@
 //! The warnings users expect of outputs, through `ladderc run` and `build`: W3400 when a ladder POU
 //! drives one variable from plain coils of two networks (the later rung wins every scan; set/reset
 //! coils in different rungs are normal and not reported), W1400 when two located variables share
-//! output bits (`%QW0` and `%QX0.3`, the same `%QX2.0` twice, `%QB1` inside `%QW0`).
+//! output bits (`%QW0` and `%QX0.3`, the same `%QX2.0` twice, `%QB1` inside `%QW0`); and `0`/`1` as
+//! BOOL literals on block inputs (found in a real OpenPLC project while testing these).
 
 mod common;
 use common::ladderc;
@@ -127,5 +128,29 @@ END_PROGRAM
             src.parent().unwrap().display().to_string() + "/"
         )),
         "{err}"
+    );
+}
+
+/// `0` and `1` wired to BOOL block inputs are BOOL literals (IEC 61131-3 boolean literals; OpenPLC
+/// Editor projects write them, e.g. a CTUD with LD wired to `0`): the project runs instead of E3008.
+#[test]
+fn zero_and_one_drive_bool_block_inputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("t.csv");
+    let fixture =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/bool_literal_inputs.xml");
+    let out = ladderc()
+        .arg("run")
+        .arg(&fixture)
+        .args(["--cycles", "4", "--sanitize", "--trace"])
+        .arg(&trace)
+        .args(["--watch", "main.done,main.count"])
+        .output()
+        .unwrap();
+    common::assert_ok(&out);
+    // TON(IN := 1, PT := T#20ms) is done at 20 ms; CTU(CU := 1, R := 0) counts the first edge once
+    assert_eq!(
+        std::fs::read_to_string(&trace).unwrap(),
+        "cycle,time_ms,main.done,main.count\n0,0,0,1\n1,10,0,1\n2,20,1,1\n3,30,1,1\n"
     );
 }
