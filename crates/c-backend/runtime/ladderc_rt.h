@@ -4,7 +4,8 @@
  * C99, no undefined behaviour for any input: integer arithmetic wraps like the IEC type's width
  * (computed in unsigned arithmetic, converted back without implementation-defined casts), division and
  * modulo by zero give 0 and set LADDERC_ERR_DIV_ZERO in ladderc_errors, REAL to integer conversions
- * round to nearest and saturate (NaN gives 0) and set LADDERC_ERR_RANGE when they saturate.
+ * round to nearest with halves to even and saturate (NaN gives 0) and set LADDERC_ERR_RANGE when they
+ * saturate; LREAL to REAL overflows to an infinity without an out-of-range cast.
  *
  * The generated program supplies ladderc_config.h (the target profile as macros) and the definitions of
  * the areas, the variable table, ladderc_program_init() and ladderc_program_scan().
@@ -158,22 +159,42 @@ LADDERC_SHIFTS(IEC_WORD, 16)
 LADDERC_SHIFTS(IEC_DWORD, 32)
 LADDERC_SHIFTS(IEC_LWORD, 64)
 
-/* REAL -> integer: round half away from zero, saturate, NaN -> 0 (flags LADDERC_ERR_RANGE). */
+/* REAL -> integer (IEC 61131-3, IEC 60559): round to nearest, halves to even (2.5 -> 2, -2.5 -> -2,
+ * 0.5 -> 0), independent of the C rounding mode; out of range saturates to the type's limit, NaN gives 0;
+ * both flag LADDERC_ERR_RANGE. No out-of-range float-to-integer cast is ever executed. */
+static inline double ladderc_round_half_even(double x) {
+    double f = floor(x), d = x - f; /* exact for every double */
+    if (d > 0.5 || (d == 0.5 && fmod(f, 2.0) != 0.0)) f += 1.0;
+    return f;
+}
 static inline int64_t ladderc_real_to_int(double x, int64_t lo, int64_t hi) {
-    double r;
+    double r, top = -(double)lo; /* 2^(n-1), exact: the first value above hi */
     if (x != x) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
-    r = x < 0 ? -floor(-x + 0.5) : floor(x + 0.5);
-    if (r <= (double)lo) { if (r < (double)lo) ladderc_errors |= LADDERC_ERR_RANGE; return lo; }
-    if (r >= (double)hi) { if (r > (double)hi) ladderc_errors |= LADDERC_ERR_RANGE; return hi; }
+    r = ladderc_round_half_even(x);
+    if (r < (double)lo) { ladderc_errors |= LADDERC_ERR_RANGE; return lo; }
+    if (r >= top) { ladderc_errors |= LADDERC_ERR_RANGE; return hi; }
     return (int64_t)r;
 }
 static inline uint64_t ladderc_real_to_uint(double x, uint64_t hi) {
-    double r;
+    double r, top = (double)hi + 1.0; /* 2^n (UINT64_MAX already rounds to 2^64) */
     if (x != x) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
-    r = floor(x + 0.5);
-    if (r <= 0.0) { if (r < 0.0) ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
-    if (r >= (double)hi) { if (r > (double)hi) ladderc_errors |= LADDERC_ERR_RANGE; return hi; }
+    r = ladderc_round_half_even(x);
+    if (r < 0.0) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    if (r >= top) { ladderc_errors |= LADDERC_ERR_RANGE; return hi; }
     return (uint64_t)r;
+}
+/* LREAL -> REAL: rounded to nearest (IEC 60559); a finite value beyond REAL's range gives +-infinity, as
+ * IEC 60559 does, and flags LADDERC_ERR_RANGE (no out-of-range cast is executed); NaN stays NaN. */
+static inline float ladderc_lreal_to_real(double x) {
+    const double fmax = 3.4028234663852886e38, edge = 3.4028235677973366e38; /* FLT_MAX, 2^128 - 2^103 */
+    if (x > fmax || x < -fmax) {
+        int neg = x < 0;
+        double ax = neg ? -x : x;
+        if (ax != (double)INFINITY) ladderc_errors |= LADDERC_ERR_RANGE;
+        if (ax < edge) return neg ? -3.4028234663852886e38f : 3.4028234663852886e38f;
+        return neg ? -INFINITY : INFINITY;
+    }
+    return (float)x;
 }
 /* REAL_TO_TIME and friends: x is in milliseconds. */
 static inline IEC_TIME ladderc_ms_to_time(double ms) { return (IEC_TIME)ladderc_real_to_int(ms * 1e6, INT64_MIN, INT64_MAX); }
@@ -205,10 +226,14 @@ static inline uint64_t ladderc_bcd_to_uint(uint64_t bcd) {
     }
     return v;
 }
-static inline uint64_t ladderc_uint_to_bcd(uint64_t v) {
-    uint64_t bcd = 0;
-    unsigned shift = 0;
-    while (v && shift < 64) {
+/* *_TO_BCD into a bit string of `bits` bits: a value with more than bits/4 decimal digits does not fit and
+ * gives 0 with LADDERC_ERR_RANGE (like a negative input). */
+static inline uint64_t ladderc_uint_to_bcd(uint64_t v, unsigned bits) {
+    uint64_t bcd = 0, limit = 1;
+    unsigned shift = 0, k;
+    for (k = 0; k < bits / 4; k++) limit *= 10u;
+    if (v >= limit) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    while (v) {
         bcd |= (v % 10) << shift;
         v /= 10;
         shift += 4;

@@ -6,14 +6,20 @@
 
 use crate::xml::Element;
 use diagnostics::{Code, Diagnostic, Diagnostics, FileId, Span, XmlContext};
+use std::collections::HashMap;
 
 pub struct Ctx<'a> {
     pub file: FileId,
     pub xml: &'a str,
     pub diags: &'a mut Diagnostics,
+    /// Integer constants usable as array bounds: global (`VAR_GLOBAL CONSTANT` of configurations,
+    /// resources and vendor global variable lists), upper-cased names.
+    pub constants: HashMap<String, i128>,
+    /// The constants of the POU being read (`VAR CONSTANT`), which shadow the global ones.
+    pub local_constants: HashMap<String, i128>,
 }
 
-impl Ctx<'_> {
+impl<'a> Ctx<'a> {
     pub fn span(&self, start: usize, end: usize) -> Span {
         let end = end.min(self.xml.len());
         Span::new(self.file, start.min(end), end)
@@ -45,6 +51,23 @@ impl Ctx<'_> {
             }
             _ => self.tag(e),
         }
+    }
+    pub fn new(file: FileId, xml: &'a str, diags: &'a mut Diagnostics) -> Ctx<'a> {
+        Ctx {
+            file,
+            xml,
+            diags,
+            constants: HashMap::new(),
+            local_constants: HashMap::new(),
+        }
+    }
+    /// The value of a named integer constant (the POU's own first).
+    pub fn constant(&self, name: &str) -> Option<i128> {
+        let key = name.to_ascii_uppercase();
+        self.local_constants
+            .get(&key)
+            .or_else(|| self.constants.get(&key))
+            .copied()
     }
     pub fn report(&mut self, d: Diagnostic) {
         self.diags.push(d);

@@ -9,11 +9,12 @@
 use crate::context::Ctx;
 use crate::values;
 use crate::xml::Element;
-use diagnostics::code;
+use diagnostics::{code, Diagnostic};
 use il_frontend::ast::{
     ArrayDim, ArrayInitElement, EnumValue, Ident, Initializer, TypeDecl, TypeDef, TypeRef,
     VarBlock, VarDecl, VarKind,
 };
+use std::collections::HashMap;
 
 /// Elementary type element names of the schema and the IEC name they stand for.
 fn elementary(name: &str) -> Option<&'static str> {
@@ -71,6 +72,23 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 n.trim(),
                 ctx.attr_span(t, "name"),
             ))),
+            // a library-qualified name (CODESYS `MQTT.MQTTClient`, `OSCAT_BASIC.GEN_PULSE`): kept
+            // whole, so that the missing type is reported by the name the file uses (E3009)
+            // `Standard.TON` (CODESYS) and `Tc2_Standard.TON` (TwinCAT) are the IEC standard blocks
+            Some(n) if n.trim().split('.').all(values::is_ident) => {
+                let n = n.trim();
+                let name = match n.split_once('.') {
+                    Some((lib, fb))
+                        if ["STANDARD", "TC2_STANDARD"]
+                            .contains(&lib.to_ascii_uppercase().as_str())
+                            && il_frontend::sema::StdFb::from_name(fb).is_some() =>
+                    {
+                        fb
+                    }
+                    _ => n,
+                };
+                Some(TypeRef::Named(Ident::new(name, ctx.attr_span(t, "name"))))
+            }
             _ => {
                 ctx.error(code::E3013, span, "<derived> type without a valid `name`");
                 None
@@ -79,20 +97,16 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
         "array" => {
             let mut dims = Vec::new();
             for d in t.children_named("dimension") {
-                let lo = d.attr("lower").and_then(|v| v.trim().parse().ok());
-                let hi = d.attr("upper").and_then(|v| v.trim().parse().ok());
+                let lo = bound(ctx, d, "lower");
+                let hi = bound(ctx, d, "upper");
                 match (lo, hi) {
-                    (Some(lower), Some(upper)) => dims.push(ArrayDim {
+                    (Ok(lower), Ok(upper)) => dims.push(ArrayDim {
                         lower,
                         upper,
                         span: ctx.tag(d),
                     }),
-                    _ => {
-                        ctx.error(
-                            code::E3011,
-                            ctx.tag(d),
-                            "array dimension bounds must be integer literals",
-                        );
+                    (Err(e), _) | (_, Err(e)) => {
+                        ctx.report(*e);
                         return None;
                     }
                 }
@@ -297,6 +311,77 @@ pub fn var_kind(list: &str) -> Option<VarKind> {
 }
 
 /// A variable list element (`<localVars constant="true">...`) as a [`VarBlock`].
+/// An array bound: an integer literal, or a constant expression over named integer constants
+/// (`ciCount`, `MAX_AXES - 1`), as CODESYS and TwinCAT exports write them.
+fn bound(ctx: &Ctx, d: &Element, attr: &str) -> Result<i128, Box<Diagnostic>> {
+    let span = ctx.attr_span(d, attr);
+    let Some(text) = d.attr(attr) else {
+        return Err(Box::new(
+            Diagnostic::error(
+                code::E3011,
+                format!("array dimension without a `{attr}` bound"),
+            )
+            .at(span),
+        ));
+    };
+    values::const_int_expr(text, &|n| ctx.constant(n)).map_err(|why| {
+        let unknown = why.starts_with("unknown");
+        let c = if unknown { code::E3401 } else { code::E3011 };
+        Box::new(Diagnostic::error(c, format!("array bound `{}`: {why}", text.trim())).at(span)
+            .with_hint(if unknown {
+                "declare it as an integer constant (VAR_GLOBAL CONSTANT or VAR CONSTANT) with an initial value"
+            } else {
+                "write an integer, or an expression of integer constants with + - * / and parentheses"
+            }))
+    })
+}
+
+/// The integer constants declared by the `constant="true"` lists under `scope` (a POU's interface,
+/// or the whole project for the global ones), evaluated in declaration order; a constant may use the
+/// ones before it. Values that are not integer constant expressions are skipped.
+pub fn collect_constants(
+    scope: &Element,
+    deep: bool,
+    lookup: &dyn Fn(&str) -> Option<i128>,
+) -> HashMap<String, i128> {
+    let mut found: HashMap<String, i128> = HashMap::new();
+    let mut stack = vec![scope];
+    while let Some(e) = stack.pop() {
+        for c in e.children.iter().rev() {
+            let is_list = c.name.ends_with("Vars") || c.name == "varList";
+            if is_list
+                && c.attr("constant")
+                    .is_some_and(|v| v.trim() == "true" || v.trim() == "1")
+            {
+                for v in c.children_named("variable") {
+                    let (Some(name), Some(value)) = (
+                        v.attr("name"),
+                        v.child("initialValue")
+                            .and_then(|i| i.child("simpleValue"))
+                            .and_then(|s| s.attr("value")),
+                    ) else {
+                        continue;
+                    };
+                    let key = name.trim().to_ascii_uppercase();
+                    let val = values::const_int_expr(value, &|n| {
+                        found
+                            .get(&n.to_ascii_uppercase())
+                            .copied()
+                            .or_else(|| lookup(n))
+                    });
+                    if let Ok(x) = val {
+                        found.insert(key, x);
+                    }
+                }
+            } else if deep && c.name != "pou" {
+                // a POU's own constants are local to it
+                stack.push(c);
+            }
+        }
+    }
+    found
+}
+
 pub fn var_block(ctx: &mut Ctx, list: &Element, kind: VarKind) -> VarBlock {
     let flag = |n: &str| {
         list.attr(n)

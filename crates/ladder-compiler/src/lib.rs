@@ -31,7 +31,7 @@ use diagnostics::{code, Diagnostic, Diagnostics, FileId};
 /// Reads a PLCopen XML project and lowers it to the IL syntax tree.
 pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::CompilationUnit {
     let (root, err) = xml::parse(xml);
-    let mut ctx = context::Ctx { file, xml, diags };
+    let mut ctx = context::Ctx::new(file, xml, diags);
     if let Some(e) = err {
         let span = ctx.span(e.pos, e.pos);
         ctx.report(

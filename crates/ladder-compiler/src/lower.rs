@@ -155,6 +155,7 @@ impl<'i> BodyLowering<'i> {
     /// Lowers every network of the graph, in order.
     pub fn lower(&mut self, ctx: &mut Ctx, g: &Graph) -> Vec<IlStmt> {
         self.check_jumps(ctx, g);
+        self.check_double_writes(ctx, g);
         let mut out = Vec::new();
         for (n, net) in g.networks.iter().enumerate() {
             let mut nl = NetLowering::new(self, g, n + 1);
@@ -164,6 +165,74 @@ impl<'i> BodyLowering<'i> {
             }
         }
         out
+    }
+
+    /// W3400 when one variable (or %Q address) is assigned by plain coils or output variables of two
+    /// networks: the later network silently overrides the earlier one every scan ("double coil").
+    /// Set/reset coils are left alone (latching from several rungs is the normal use).
+    fn check_double_writes(&self, ctx: &mut Ctx, g: &Graph) {
+        let mut first: HashMap<String, (usize, usize)> = HashMap::new();
+        let mut warned: HashSet<String> = HashSet::new();
+        for (net, nodes) in g.networks.iter().enumerate() {
+            for &i in nodes {
+                let (var, span) = match &g.nodes[i].kind {
+                    Kind::Coil {
+                        var,
+                        var_span,
+                        storage: Storage::None,
+                        ..
+                    } => (var, *var_span),
+                    Kind::OutVar {
+                        expr, expr_span, ..
+                    } => (expr, *expr_span),
+                    _ => continue,
+                };
+                let key: String = var
+                    .chars()
+                    .filter(|c| !c.is_whitespace())
+                    .collect::<String>()
+                    .to_ascii_uppercase();
+                if key.is_empty() {
+                    continue;
+                }
+                match first.get(&key) {
+                    None => {
+                        first.insert(key, (net, i));
+                    }
+                    Some(&(n0, i0)) if n0 != net && !warned.contains(&key) => {
+                        warned.insert(key);
+                        let at = Where {
+                            pou: self.pou.clone(),
+                            network: Some(net + 1),
+                            local_id: Some(g.nodes[i].id.clone()),
+                        };
+                        let first_span = match &g.nodes[i0].kind {
+                            Kind::Coil { var_span, .. } => *var_span,
+                            Kind::OutVar { expr_span, .. } => *expr_span,
+                            _ => span,
+                        };
+                        ctx.report(
+                            Diagnostic::warning(
+                                code::W3400,
+                                format!(
+                                    "`{}` is written by network {} (localId {}) and again by network {}; the later one wins every scan",
+                                    var.trim(),
+                                    n0 + 1,
+                                    g.nodes[i0].id,
+                                    net + 1
+                                ),
+                            )
+                            .at(span)
+                            .with_primary_label("written again here")
+                            .with_label(first_span, "first written here")
+                            .with_hint("drive it from one network (OR the conditions), or use set/reset coils")
+                            .with_xml(at.xml()),
+                        );
+                    }
+                    _ => {}
+                }
+            }
+        }
     }
 
     /// E3015 for every jump whose label no `<label>` of the body defines.
@@ -1200,8 +1269,24 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     continue;
                 }
                 Some(Some(expected)) => {
-                    let from = self.ty(v);
                     let to = Ty::Known(expected);
+                    // `0` and `1` are BOOL literals too (IEC 61131-3, boolean literals)
+                    if type_text(&to) == "BOOL" {
+                        if let Val::Leaf {
+                            op:
+                                Operand::Literal(Literal {
+                                    kind: LiteralKind::Int(n @ (0 | 1)),
+                                    type_prefix: None,
+                                    ..
+                                }),
+                            neg: false,
+                        } = &self.vals[v]
+                        {
+                            let b = *n == 1;
+                            v = self.val(Val::Const(b), self.spans[v]);
+                        }
+                    }
+                    let from = self.ty(v);
                     if let (Some(f), Some(t)) = (family_of(&from), family_of(&to)) {
                         if !catalogue::compatible(f, t) {
                             let d = self.diag(

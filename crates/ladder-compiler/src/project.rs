@@ -60,6 +60,8 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     }
     let _version = version(ctx, root);
     vendor_data(ctx, root);
+    // integer constants for array bounds: every constant global list of the file, vendor GVLs too
+    ctx.constants = decls::collect_constants(root, true, &|_| None);
 
     let types_el = root.child("types");
     let data_types: Vec<TypeDecl> = types_el
@@ -279,6 +281,17 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
     };
     let mut var_blocks = Vec::new();
     let mut return_type = None;
+    ctx.local_constants = match p.child("interface") {
+        Some(iface) => {
+            let globals = std::mem::take(&mut ctx.constants);
+            let local = decls::collect_constants(iface, false, &|n| {
+                globals.get(&n.to_ascii_uppercase()).copied()
+            });
+            ctx.constants = globals;
+            local
+        }
+        None => Default::default(),
+    };
     if let Some(iface) = p.child("interface") {
         for list in &iface.children {
             if list.name == "returnType" {
@@ -294,6 +307,7 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
             }
         }
     }
+    ctx.local_constants.clear();
     if kind == PouKind::Function && return_type.is_none() {
         ctx.error(
             code::E3013,
@@ -497,6 +511,33 @@ fn task(ctx: &mut Ctx, t: &Element) -> Option<Task> {
     };
     let interval = t.attr("interval").and_then(|iv| {
         let s = ctx.attr_span(t, "interval");
+        let xsd = iv.trim().trim_start_matches('-');
+        if xsd.starts_with('P') {
+            // tc6_0200/0201: the attribute is an xsd:duration (CODESYS writes `PT0.05S`)
+            return match values::xsd_duration(iv) {
+                Ok(ns) => Some(Operand::Literal(Literal {
+                    kind: LiteralKind::Duration(ns),
+                    type_prefix: None,
+                    span: s,
+                })),
+                Err(why) => {
+                    ctx.report(
+                        Diagnostic::error(
+                            code::E3400,
+                            format!(
+                                "task interval `{}` is not a valid xsd:duration: {why}",
+                                iv.trim()
+                            ),
+                        )
+                        .at(s)
+                        .with_hint(
+                            "write it as PT<seconds>S, e.g. PT0.01S for 10 ms, or PT1H2M3.5S",
+                        ),
+                    );
+                    None
+                }
+            };
+        }
         let parsed = values::literal(iv, s).or_else(|| {
             values::duration(iv).map(|d| Literal {
                 kind: LiteralKind::Duration(d),
@@ -553,9 +594,12 @@ fn program_instance(ctx: &mut Ctx, pi: &Element, task: Option<&Ident>) -> Option
     } else {
         "type"
     };
+    // CODESYS writes `typeName=""`: the instance is named after its program.
     let ty = pi
         .attr(ty_attr)
         .map(str::trim)
+        .filter(|n| !n.is_empty())
+        .or(name)
         .filter(|n| values::is_ident(n));
     let (Some(name), Some(ty)) = (name, ty) else {
         ctx.error(
@@ -569,7 +613,14 @@ fn program_instance(ctx: &mut Ctx, pi: &Element, task: Option<&Ident>) -> Option
         name: Ident::new(name, ctx.attr_span(pi, "name")),
         retain: false,
         task: task.cloned(),
-        type_name: Ident::new(ty, ctx.attr_span(pi, ty_attr)),
+        type_name: Ident::new(
+            ty,
+            if pi.attr(ty_attr).is_some_and(|t| !t.trim().is_empty()) {
+                ctx.attr_span(pi, ty_attr)
+            } else {
+                ctx.attr_span(pi, "name")
+            },
+        ),
         args: Vec::new(),
         span,
     })

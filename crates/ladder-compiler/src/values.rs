@@ -348,6 +348,206 @@ pub fn duration(t: &str) -> Option<i128> {
     Some(if neg { -ns } else { ns })
 }
 
+/// An integer constant expression: integer literals (`16#FF`, `1_000`, `INT#5`), named constants
+/// resolved by `lookup`, `+ - * /` (division truncates; by zero is an error), unary minus and
+/// parentheses. The error text says what is wrong (`unknown constant `N``).
+pub fn const_int_expr(t: &str, lookup: &dyn Fn(&str) -> Option<i128>) -> Result<i128, String> {
+    struct P<'a> {
+        s: &'a [u8],
+        i: usize,
+        depth: u32,
+        lookup: &'a dyn Fn(&str) -> Option<i128>,
+    }
+    impl P<'_> {
+        fn ws(&mut self) {
+            while self.i < self.s.len() && self.s[self.i].is_ascii_whitespace() {
+                self.i += 1;
+            }
+        }
+        fn peek(&mut self) -> Option<u8> {
+            self.ws();
+            self.s.get(self.i).copied()
+        }
+        fn sum(&mut self) -> Result<i128, String> {
+            let mut v = self.product()?;
+            while let Some(op @ (b'+' | b'-')) = self.peek() {
+                self.i += 1;
+                let r = self.product()?;
+                v = if op == b'+' {
+                    v.checked_add(r)
+                } else {
+                    v.checked_sub(r)
+                }
+                .ok_or("the value overflows")?;
+            }
+            Ok(v)
+        }
+        fn product(&mut self) -> Result<i128, String> {
+            let mut v = self.unary()?;
+            while let Some(op @ (b'*' | b'/')) = self.peek() {
+                self.i += 1;
+                let r = self.unary()?;
+                v = if op == b'*' {
+                    v.checked_mul(r).ok_or("the value overflows")?
+                } else if r == 0 {
+                    return Err("division by zero".into());
+                } else {
+                    v / r
+                };
+            }
+            Ok(v)
+        }
+        fn unary(&mut self) -> Result<i128, String> {
+            self.depth += 1;
+            if self.depth > 64 {
+                return Err("the expression is nested too deeply".into());
+            }
+            let r = match self.peek() {
+                Some(b'-') => {
+                    self.i += 1;
+                    self.unary().map(|v| -v)
+                }
+                Some(b'+') => {
+                    self.i += 1;
+                    self.unary()
+                }
+                Some(b'(') => {
+                    self.i += 1;
+                    let v = self.sum()?;
+                    if self.peek() != Some(b')') {
+                        return Err("`)` expected".into());
+                    }
+                    self.i += 1;
+                    Ok(v)
+                }
+                Some(c) if c.is_ascii_alphanumeric() || c == b'_' => {
+                    let start = self.i;
+                    while self.i < self.s.len()
+                        && (self.s[self.i].is_ascii_alphanumeric()
+                            || matches!(self.s[self.i], b'_' | b'#' | b'.'))
+                    {
+                        self.i += 1;
+                    }
+                    let word = std::str::from_utf8(&self.s[start..self.i]).unwrap_or_default();
+                    if c.is_ascii_digit() || word.contains('#') {
+                        match literal(word, Span::default()).map(|l| l.kind) {
+                            Some(LiteralKind::Int(v)) => Ok(v),
+                            _ => Err(format!("`{word}` is not an integer")),
+                        }
+                    } else {
+                        (self.lookup)(word).ok_or_else(|| format!("unknown constant `{word}`"))
+                    }
+                }
+                Some(c) => Err(format!("unexpected `{}`", c as char)),
+                None => Err("a value is missing".into()),
+            };
+            self.depth -= 1;
+            r
+        }
+    }
+    let mut p = P {
+        s: t.as_bytes(),
+        i: 0,
+        depth: 0,
+        lookup,
+    };
+    let v = p.sum()?;
+    match p.peek() {
+        None => Ok(v),
+        Some(c) => Err(format!("unexpected `{}`", c as char)),
+    }
+}
+
+/// An xsd:duration (`PT0.05S`, `PT1H2M3.5S`, `P1DT2H`, tc6_0200/0201 task intervals) in nanoseconds.
+/// Years and months have no fixed length and are refused; so are a negative sign, a fraction finer
+/// than a nanosecond, an empty `PT`, and parts out of order. The error text says which.
+pub fn xsd_duration(t: &str) -> Result<i128, String> {
+    let t = t.trim();
+    if t.starts_with('-') {
+        return Err("a task interval cannot be negative".into());
+    }
+    let Some(mut rest) = t.strip_prefix('P') else {
+        return Err("an xsd:duration starts with `P`".into());
+    };
+    let mut total: i128 = 0;
+    let mut in_time = false;
+    let mut any = false;
+    // each unit may appear once, in this order
+    let order = ["Y", "M", "W", "D", "TH", "TM", "TS"];
+    let mut last = 0usize;
+    while !rest.is_empty() {
+        if let Some(r) = rest.strip_prefix('T') {
+            if in_time {
+                return Err("`T` appears twice".into());
+            }
+            in_time = true;
+            rest = r;
+            if rest.is_empty() {
+                return Err("`T` must be followed by hours, minutes or seconds".into());
+            }
+            continue;
+        }
+        let end = rest
+            .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+            .ok_or("a number must be followed by a unit (H, M or S)")?;
+        let (num, tail) = rest.split_at(end);
+        if num.is_empty() {
+            return Err(format!("a number is missing before `{}`", &tail[..1]));
+        }
+        let unit = tail.chars().next().unwrap_or_default().to_ascii_uppercase();
+        rest = &tail[unit.len_utf8()..];
+        let key = format!("{}{unit}", if in_time { "T" } else { "" });
+        let Some(pos) = order.iter().position(|o| *o == key) else {
+            return Err(format!("`{unit}` is not a unit here"));
+        };
+        if pos < last || (any && pos == last) {
+            return Err("the parts are out of order or repeated".into());
+        }
+        last = pos;
+        if matches!(key.as_str(), "Y" | "M") {
+            return Err("years and months have no fixed length; write the interval in days, hours, minutes or seconds".into());
+        }
+        let (int, frac) = num.split_once('.').unwrap_or((num, ""));
+        if (frac.contains('.')) || (int.is_empty() && frac.is_empty()) {
+            return Err(format!("`{num}` is not a number"));
+        }
+        if !frac.is_empty() && key != "TS" {
+            return Err("only the seconds may have a fraction".into());
+        }
+        if frac.len() > 9 {
+            return Err("the fraction of a second is finer than a nanosecond".into());
+        }
+        let scale: i128 = match key.as_str() {
+            "W" => 7 * 86_400_000_000_000,
+            "D" => 86_400_000_000_000,
+            "TH" => 3_600_000_000_000,
+            "TM" => 60_000_000_000,
+            _ => 1_000_000_000,
+        };
+        let whole: i128 = if int.is_empty() {
+            0
+        } else {
+            int.parse().map_err(|_| format!("`{num}` is too large"))?
+        };
+        let frac_ns: i128 = if frac.is_empty() {
+            0
+        } else {
+            format!("{frac:0<9}").parse().unwrap_or(0)
+        };
+        total = whole
+            .checked_mul(scale)
+            .and_then(|v| v.checked_add(frac_ns))
+            .and_then(|v| v.checked_add(total))
+            .filter(|v| *v <= i64::MAX as i128)
+            .ok_or("the interval is too long")?;
+        any = true;
+    }
+    if !any {
+        return Err("the duration has no value".into());
+    }
+    Ok(total)
+}
+
 /// `00:00:00.100000` (the v1.0 schema's xsd:time intervals).
 fn clock_duration(t: &str) -> Option<i128> {
     let parts: Vec<&str> = t.split(':').collect();
@@ -418,6 +618,30 @@ mod tests {
         );
         assert!(literal("abc", sp()).is_none());
         assert_eq!(duration("00:00:00.100000"), Some(100_000_000));
+        assert_eq!(xsd_duration("PT0.05S"), Ok(50_000_000));
+        assert_eq!(xsd_duration("PT1H2M3.5S"), Ok(3_723_500_000_000));
+        assert_eq!(xsd_duration("P1DT1S"), Ok(86_401_000_000_000));
+        for bad in [
+            "PT",
+            "P",
+            "PT1M1H",
+            "P1M",
+            "-PT1S",
+            "PT0.0000000001S",
+            "PT1.5M",
+            "PTS",
+            "PT5",
+        ] {
+            assert!(xsd_duration(bad).is_err(), "{bad}");
+        }
+        let c = |n: &str| (n == "N").then_some(8);
+        assert_eq!(const_int_expr("N", &c), Ok(8));
+        assert_eq!(const_int_expr(" (N - 1) * 2 + 16#10 ", &c), Ok(30));
+        assert!(const_int_expr("M", &c)
+            .unwrap_err()
+            .contains("unknown constant `M`"));
+        assert!(const_int_expr("N /0", &c).is_err());
+        assert!(const_int_expr(&"(".repeat(1000), &c).is_err());
     }
 
     #[test]

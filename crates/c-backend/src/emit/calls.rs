@@ -688,7 +688,11 @@ impl Gen<'_> {
                 } else {
                     format!("(uint64_t)({v})")
                 };
-                convert_elementary(&format!("ladderc_uint_to_bcd({src})"), E::Ulint, t)
+                convert_elementary(
+                    &format!("ladderc_uint_to_bcd({src}, {})", t.bit_width()),
+                    E::Ulint,
+                    t,
+                )
             }
         })
     }

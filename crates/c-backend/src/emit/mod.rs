@@ -12,6 +12,7 @@ mod datetime;
 mod edges;
 mod init;
 mod method;
+mod overlaps;
 mod scan;
 mod scope;
 mod strings;
@@ -153,6 +154,7 @@ pub fn generate(
     };
     g.check_embedded(opts);
     g.check_methods();
+    g.check_output_overlaps();
 
     let mut files = vec![("ladderc_config.h".to_string(), config_header(profile))];
     let mut h = String::new();

@@ -50,8 +50,8 @@ pub fn convert(expr: &str, from: &Type, to: &Type) -> String {
     }
 }
 
-/// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest and
-/// saturates, TIME to/from numbers counts milliseconds, anything to BOOL is `<> 0`.
+/// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest (halves
+/// to even) and saturates, LREAL to REAL overflows to an infinity, TIME to/from numbers counts milliseconds, anything to BOOL is `<> 0`.
 pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     if f == t {
         return x.to_string();
@@ -62,6 +62,9 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
         return format!("((IEC_BOOL)(({x}) != 0))");
     }
     if f.is_real() {
+        if f == E::Lreal && t == E::Real {
+            return format!("ladderc_lreal_to_real({x})");
+        }
         if t.is_real() {
             return format!("(({ct})({x}))");
         }

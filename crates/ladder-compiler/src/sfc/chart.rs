@@ -652,11 +652,7 @@ mod tests {
         let mut map = SourceMap::new();
         let file = map.add("t.xml", xml);
         let mut diags = Diagnostics::new();
-        let mut ctx = Ctx {
-            file,
-            xml,
-            diags: &mut diags,
-        };
+        let mut ctx = Ctx::new(file, xml, &mut diags);
         let c = read(&mut ctx, &root, "P");
         // Left to right: 5 (x=10) before 4 (x=50).
         let ids: Vec<&str> = c.transitions.iter().map(|t| t.id.as_str()).collect();

@@ -1,0 +1,111 @@
+//! W1400: located variables whose output bits overlap (`a AT %QX0.3` and `w AT %QW0`).
+//!
+//! Input: every located declaration of the model (POU variables other than VAR_EXTERNAL, free
+//! globals, configuration and resource globals) placed by the target profile. Output: one warning per
+//! overlapping pair, at the later declaration's address with a label at the earlier one. Invariants:
+//! addresses the profile rejects are skipped here (their errors come from code generation); the
+//! comparison is bit by bit within the bytes each access touches.
+
+use super::values::access_bytes;
+use super::Gen;
+use diagnostics::{code, Diagnostic, Span, XmlContext};
+use il_frontend::ast::{Area, DirectAddress, VarKind};
+use il_frontend::sema::Variable;
+use std::collections::BTreeMap;
+
+impl Gen<'_> {
+    pub(super) fn check_output_overlaps(&mut self) {
+        let m = self.model;
+        // (qualified name, declaring POU, declaration)
+        let mut decls: Vec<(String, Option<&str>, &Variable)> = Vec::new();
+        for p in &m.pous {
+            for v in p.vars.iter().filter(|v| v.kind != VarKind::External) {
+                decls.push((format!("{}.{}", p.name, v.name), Some(&p.name), v));
+            }
+        }
+        decls.extend(m.globals.iter().map(|v| (v.name.clone(), None, v)));
+        for c in &m.configurations {
+            decls.extend(c.globals.iter().map(|v| (v.name.clone(), None, v)));
+            for r in &c.resources {
+                decls.extend(r.globals.iter().map(|v| (v.name.clone(), None, v)));
+            }
+        }
+        // in source order, so that the warning lands on the later declaration
+        decls.sort_by_key(|(_, _, v)| (v.span.file.0, v.span.start));
+        // byte -> (declaration, bit mask) of each located output touching it
+        let mut bytes: BTreeMap<u32, Vec<(usize, u8)>> = BTreeMap::new();
+        let mut placed: Vec<(String, Span, String, Option<&str>)> = Vec::new();
+        for (name, pou, v) in &decls {
+            let Some(loc) = &v.location else { continue };
+            if loc.area != Area::Output {
+                continue;
+            }
+            let Some(size) = access_bytes(&v.ty) else {
+                continue;
+            };
+            let span = self.address_spans.get(&v.span).copied().unwrap_or(v.span);
+            let addr = DirectAddress {
+                area: loc.area,
+                size: loc.size,
+                path: loc.path.clone(),
+                span,
+            };
+            let bytes_arg = if v.ty.is_bool() { None } else { Some(size) };
+            let Ok(l) = self.profile.locate(&addr, bytes_arg) else {
+                continue;
+            };
+            let k = placed.len();
+            placed.push((name.clone(), span, address_text(loc), *pou));
+            match l.bit {
+                Some(b) => bytes.entry(l.offset).or_default().push((k, 1u8 << b)),
+                None => {
+                    for o in l.offset..l.offset + l.bytes.max(1) {
+                        bytes.entry(o).or_default().push((k, 0xFF));
+                    }
+                }
+            }
+        }
+        let mut pairs: BTreeMap<(usize, usize), ()> = BTreeMap::new();
+        for list in bytes.values() {
+            for (i, &(a, ma)) in list.iter().enumerate() {
+                for &(b, mb) in &list[i + 1..] {
+                    if a != b && ma & mb != 0 {
+                        pairs.insert((a.min(b), a.max(b)), ());
+                    }
+                }
+            }
+        }
+        for (a, b) in pairs.into_keys() {
+            let (an, asp, aa, _) = &placed[a];
+            let (bn, bsp, ba, bpou) = &placed[b];
+            let xml = XmlContext {
+                pou: bpou.map(str::to_string),
+                ..Default::default()
+            };
+            self.report_once(
+                Diagnostic::warning(
+                    code::W1400,
+                    format!("`{bn}` at {ba} shares output bits with `{an}` at {aa}"),
+                )
+                .at(*bsp)
+                .with_primary_label("overlaps")
+                .with_label(*asp, "this output")
+                .with_hint("give each output its own address; writing one changes the other")
+                .with_xml(xml),
+            );
+        }
+    }
+}
+
+fn address_text(loc: &il_frontend::sema::Location) -> String {
+    use il_frontend::ast::AddressSize as S;
+    let size = match loc.size {
+        S::Bit => "X",
+        S::Byte => "B",
+        S::Word => "W",
+        S::DWord => "D",
+        S::LWord => "L",
+    };
+    let path: Vec<String> = loc.path.iter().map(u32::to_string).collect();
+    format!("%Q{size}{}", path.join("."))
+}
