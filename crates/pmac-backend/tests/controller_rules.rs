@@ -234,3 +234,38 @@ fn programs_state_their_feedrate_unit() {
         "I6290=60000"
     );
 }
+
+#[test]
+fn the_program_model_is_compared_with_the_plan() {
+    use pmac_backend::compare::compare;
+    // Exact stops: every move within the rounding of the plan, nothing to report.
+    let stops = compare(&xyz(), &paper_b(), &ProgramOptions::default()).unwrap();
+    assert_eq!(stops.move_times.len(), 3);
+    assert!(stops.corners.is_empty());
+    assert!(stops.worst_time_difference() <= 4.5e-3, "{stops:?}");
+    assert!(stops.warnings().is_empty(), "{:?}", stops.warnings());
+    // Paper B's blends: BlendingLow asks 40 at the first corner, the PMAC's LINEAR blend passes faster.
+    let mut moves = paper_b();
+    moves[0].transition = Transition::Blend {
+        junction_velocity: 40.0,
+    };
+    moves[1].transition = Transition::Blend {
+        junction_velocity: 70.0,
+    };
+    let blended = compare(&xyz(), &moves, &ProgramOptions::default()).unwrap();
+    assert_eq!(blended.corners.len(), 2, "{blended:?}");
+    assert_eq!(blended.corners[0].planned, 40.0);
+    assert!(
+        (blended.corners[0].program - 54.8).abs() < 0.1,
+        "{blended:?}"
+    );
+    let warnings = blended.warnings();
+    assert!(!warnings.is_empty());
+    assert!(warnings.iter().all(|w| w.code.0 == "W7200"));
+    assert!(
+        warnings[0].message.contains("corner after move 1")
+            && warnings[0].message.contains("40.000"),
+        "{}",
+        warnings[0].message
+    );
+}
