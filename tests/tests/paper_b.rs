@@ -423,7 +423,7 @@ fn pmac_md_variant_moves_take_50_5_76_5_and_68_0_seconds() {
         );
     }
     for part in [
-        "TS2500 TA10500 F53.852",
+        "TS2500 TA10500 F53.851",
         "TA16500 F82.932",
         "TA10500 F40.749",
     ] {

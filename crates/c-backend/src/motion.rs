@@ -150,6 +150,9 @@ impl MotionRuntime {
             self.queue_depth
         );
         c.push_str(
+            "    if (mc_abi_version() != MC_ABI_VERSION) ladderc_motion_fail(\"this program: it was compiled against another motion_lib.h\");\n",
+        );
+        c.push_str(
             "    if (!ladderc_engine) ladderc_motion_fail(\"the cycle time or queue depth\");\n",
         );
         c.push_str("    if (!registered) {\n        registered = 1;\n        atexit(ladderc_motion_shutdown);\n    }\n");
@@ -159,7 +162,7 @@ impl MotionRuntime {
                 None => (0.0, 0.0, "false"),
             };
             let _ = writeln!(c, "    {{ /* axis {i}: {} */", c_comment(&a.name));
-            c.push_str("        MC_AxisConfig_C cfg;\n        memset(&cfg, 0, sizeof cfg);\n");
+            c.push_str("        MC_AxisConfig_C cfg;\n        McIndex index = 0;\n        memset(&cfg, 0, sizeof cfg);\n");
             for (field, v) in [
                 ("VelocityLimit", a.velocity_limit),
                 ("AccelerationLimit", a.acceleration_limit),
@@ -175,7 +178,7 @@ impl MotionRuntime {
             let _ = writeln!(c, "        cfg.SwLimitsEnabled = {on};");
             let _ = writeln!(
                 c,
-                "        if (mc_engine_add_axis(ladderc_engine, &cfg) != {i}) ladderc_motion_fail({});\n    }}",
+                "        if (mc_engine_add_axis(ladderc_engine, &cfg, &index) != MC_OK || index != {i}u) ladderc_motion_fail({});\n    }}",
                 mangle::c_string(format!("the limits of axis {}", a.name).as_bytes())
             );
         }
@@ -183,7 +186,7 @@ impl MotionRuntime {
             let _ = writeln!(c, "    {{ /* group {j}: {} */", c_comment(&g.name));
             let _ = writeln!(
                 c,
-                "        if (mc_engine_add_group(ladderc_engine) != {j}) ladderc_motion_fail({});",
+                "        McIndex index = 0;\n        if (mc_engine_add_group(ladderc_engine, &index) != MC_OK || index != {j}u) ladderc_motion_fail({});",
                 mangle::c_string(format!("group {}", g.name).as_bytes())
             );
             for (axis, ident) in &g.members {
@@ -198,7 +201,7 @@ impl MotionRuntime {
             c.push_str("    }\n");
         }
         c.push_str("    ladderc_motion_sample();\n}\n\n");
-        c.push_str("void ladderc_motion_step(void) {\n    mc_engine_step(ladderc_engine);\n    ladderc_motion_sample();\n}\n");
+        c.push_str("void ladderc_motion_step(void) {\n    if (mc_engine_step(ladderc_engine) != MC_OK) ladderc_motion_fail(\"a cycle (internal error of the motion library)\");\n    ladderc_motion_sample();\n}\n");
         c
     }
 }

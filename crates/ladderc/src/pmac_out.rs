@@ -409,8 +409,20 @@ pub fn program(
     }
     let cs = coord_system(axes);
     let ms = moves(units, axes, diags);
-    match pmac_backend::program::write(&cs, &ms, dialect) {
-        Ok(t) => Some(t),
+    let opts = pmac_backend::program::ProgramOptions {
+        dialect,
+        ..Default::default()
+    };
+    match pmac_backend::program::write_with(&cs, &ms, &opts) {
+        Ok(t) => {
+            // The controller's motion, as modelled from the text, against the plan: report what differs.
+            if let Ok(cmp) = pmac_backend::compare::compare(&cs, &ms, &opts) {
+                for w in cmp.warnings() {
+                    diags.push(w);
+                }
+            }
+            Some(t)
+        }
         Err(e) => {
             diags.push(e.into_diagnostic());
             None
@@ -640,7 +652,7 @@ mod tests {
         }
         // pmac.md's own program: the same feedrates and ramps
         for part in [
-            "TS2500 TA10500 F53.852",
+            "TS2500 TA10500 F53.851",
             "TA16500 F82.932",
             "TA10500 F40.749",
         ] {

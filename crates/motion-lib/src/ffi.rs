@@ -1,15 +1,29 @@
 //! The C ABI of the motion library: the ONLY `unsafe` code of the project.
 //!
 //! Input: calls from C (generated C of compiled IL programs, or hand-written C): an
-//! engine handle, axis/group indices and per block a `#[repr(C)]` struct holding the
+//! engine handle, axis/group indices ([`McIndex`]) and per block a `#[repr(C)]` struct holding the
 //! PLCopen inputs (written by C), outputs (written here) and `_internal` state (edge
 //! detection and the command handle; C zero-initialises it and never touches it).
 //! Output: the same block semantics as [`crate::blocks`] and [`crate::group_blocks`]
-//! (each call converts the C struct to the Rust block, calls it, writes the outputs back).
-//! Invariants: every pointer is checked for null before use; a bad enumeration value
-//! (BufferMode, Direction, ...) sets Error with its ErrorID instead of being trusted;
-//! no call panics across the boundary. The header include/motion_lib.h is generated from
-//! this file by cbindgen (test `ffi_header`).
+//! (each call converts the C struct to the Rust block, calls it, writes the outputs back), and a
+//! [`McStatus`] from every call: `MC_OK`, or a negative `MC_STATUS_*` code.
+//! Invariants: every pointer is checked for null before use, and the engine handle for its tag
+//! (`MC_STATUS_NULL_HANDLE`, `MC_STATUS_BAD_HANDLE`, `MC_STATUS_NULL_ARGUMENT`); a bad axis or group index gives
+//! `MC_STATUS_BAD_INDEX` (and the block's Error/ErrorID); a bad enumeration value (BufferMode, Direction, ...)
+//! sets Error with its ErrorID instead of being trusted; every entry catches panics: a panic never
+//! unwinds into C nor aborts the controller, it returns `MC_STATUS_PANIC` and poisons the engine. The
+//! header include/motion_lib.h is generated from this file by cbindgen (test `ffi_header`).
+//!
+//! Versions: `MC_ABI_VERSION` in the header and `mc_abi_version()` in the library must agree;
+//! `mc_sizeof("MC_MoveAbsolute_C")` gives each struct's size as the library sees it, to compare with
+//! the C compiler's `sizeof`.
+//!
+//! Threads: an engine is not thread-safe. All calls on one engine (block calls and `mc_engine_step`)
+//! are made by one thread at a time: normally the PLC scan task, which each cycle first calls the
+//! blocks (they queue commands and read outputs) and then `mc_engine_step` (which advances the set
+//! values; a command given in scan k takes effect in step k, its outputs show in scan k + 1). An
+//! engine may move to another thread between calls; different engines are independent and may run
+//! on different threads at once. Drives (Rust `Drive` implementations) are `Send`.
 //!
 //! Lifetime: `mc_engine_create` returns an owned engine; free it with
 //! `mc_engine_destroy`. Block structs are owned by C (static or stack memory).
@@ -18,9 +32,10 @@
     non_camel_case_types,
     clippy::field_reassign_with_default
 )]
+#![deny(unsafe_op_in_unsafe_fn)]
 // Safety contract of every function taking pointers: `engine` is NULL or a live handle from
-// `mc_engine_create`; `fb`/`config` are NULL or point to a valid, writable struct of the
-// declared type; arrays hold the stated number of elements. NULL pointers are ignored.
+// `mc_engine_create`; `fb`/`config`/`index` are NULL or point to a valid, writable struct of the
+// declared type; arrays hold the stated number of elements. NULL pointers give an error status.
 
 use crate::axis::{AxisConfig, AxisKind};
 use crate::blocks::*;
@@ -33,8 +48,39 @@ use crate::path::CircMode;
 use crate::profile::Limits;
 use crate::sync::CamTable;
 
+/// Version of this C ABI (`MC_ABI_VERSION` in the header). It changes whenever a function signature, a
+/// struct layout or a status code changes; compare it with [`mc_abi_version`] at start-up.
+pub const MC_ABI_VERSION: u32 = 2;
+
+/// Index of an axis, an axes group or a cam table: the one index type of the ABI.
+pub type McIndex = u32;
+
+/// Status returned by every call: `MC_OK` (0) or a negative `MC_STATUS_*` code (the PLCopen ErrorIDs,
+/// `MC_ERR_*`, stay in the blocks' `ErrorID` outputs).
+pub type McStatus = i32;
+/// The call did its work.
+pub const MC_OK: McStatus = 0;
+/// The engine handle is NULL.
+pub const MC_STATUS_NULL_HANDLE: McStatus = -1;
+/// The engine handle does not point to a live engine (wrong pointer, or already destroyed).
+pub const MC_STATUS_BAD_HANDLE: McStatus = -2;
+/// A block, configuration, output or array pointer is NULL.
+pub const MC_STATUS_NULL_ARGUMENT: McStatus = -3;
+/// An axis, group or cam-table index does not exist (the block's Error/ErrorID are also set).
+pub const MC_STATUS_BAD_INDEX: McStatus = -4;
+/// A configuration is invalid (limits, cycle time, cam table).
+pub const MC_STATUS_BAD_CONFIG: McStatus = -5;
+/// The library panicked (a bug). The engine is poisoned: every later call on it returns this code, and
+/// the controller must bring the machine to its own safe stop (drive-level STO/SS1).
+pub const MC_STATUS_PANIC: McStatus = -6;
+
+/// Tag of a live engine; cleared when it is destroyed.
+const MAGIC: u64 = 0x4d43_454e_4749_4e45; // "MCENGINE"
+
 /// Opaque engine handle.
 pub struct McEngine {
+    magic: u64,
+    poisoned: bool,
     engine: Engine,
 }
 
@@ -55,49 +101,143 @@ pub struct MC_AxisConfig_C {
     pub FollowingErrorLimit: f64,
 }
 
+/// The ABI version the library was built with ([`MC_ABI_VERSION`]).
+#[no_mangle]
+pub extern "C" fn mc_abi_version() -> u32 {
+    MC_ABI_VERSION
+}
+
+/// `sizeof` of the named ABI struct as the library sees it (e.g. `"MC_MoveAbsolute_C"`), 0 for an unknown
+/// name or NULL. Compare with the C compiler's `sizeof` to detect a header that does not match the library.
+/// # Safety
+/// `name` is NULL or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn mc_sizeof(name: *const std::ffi::c_char) -> usize {
+    if name.is_null() {
+        return 0;
+    }
+    // SAFETY: a non-null name is a NUL-terminated string (caller contract).
+    let name = unsafe { std::ffi::CStr::from_ptr(name) };
+    std::panic::catch_unwind(|| struct_size(name.to_bytes())).unwrap_or(0)
+}
+
+/// Runs one ABI call: a panic becomes [`MC_STATUS_PANIC`] and poisons the engine; `Err(code)` is returned as
+/// the code.
+fn guard(engine: *mut McEngine, f: impl FnOnce() -> Result<(), McStatus>) -> McStatus {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
+        Ok(Ok(())) => MC_OK,
+        Ok(Err(code)) => code,
+        Err(_) => {
+            // SAFETY: a non-null handle that passed the checks of `eng` points to a live McEngine (caller
+            // contract); the panicked call's borrows ended with the unwinding.
+            if !engine.is_null() && unsafe { std::ptr::addr_of!((*engine).magic).read() } == MAGIC {
+                // SAFETY: as above, a live engine; nothing else borrows it now.
+                unsafe { (*engine).poisoned = true };
+            }
+            MC_STATUS_PANIC
+        }
+    }
+}
+
+/// The engine behind a handle, or the status that says why not.
+/// # Safety
+/// `engine` is NULL or a pointer to a live McEngine (the magic check catches some misuse, not all).
+unsafe fn eng<'a>(engine: *mut McEngine) -> Result<&'a mut Engine, McStatus> {
+    if engine.is_null() {
+        return Err(MC_STATUS_NULL_HANDLE);
+    }
+    // SAFETY: a non-null handle points to readable memory of a McEngine's size (caller contract); only
+    // the tag is read before the handle is trusted.
+    if unsafe { std::ptr::addr_of!((*engine).magic).read() } != MAGIC {
+        return Err(MC_STATUS_BAD_HANDLE);
+    }
+    // SAFETY: the tag says this is a live engine (caller contract: not aliased during the call).
+    let h = unsafe { &mut *engine };
+    if h.poisoned {
+        return Err(MC_STATUS_PANIC);
+    }
+    Ok(&mut h.engine)
+}
+
+fn axis_ok(e: &Engine, axis: McIndex) -> Result<(), McStatus> {
+    e.axis_state(axis as usize)
+        .map(|_| ())
+        .map_err(|_| MC_STATUS_BAD_INDEX)
+}
+
+fn group_ok(e: &Engine, group: McIndex) -> Result<(), McStatus> {
+    e.group_state(group as usize)
+        .map(|_| ())
+        .map_err(|_| MC_STATUS_BAD_INDEX)
+}
+
 /// Creates an engine with cycle time `cycle_seconds` (e.g. 0.001) and per-axis/group
 /// buffer depth `queue_depth`. Returns NULL on a bad configuration.
-/// # Safety
-/// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_engine_create(cycle_seconds: f64, queue_depth: u32) -> *mut McEngine {
-    match Engine::new(EngineConfig {
-        cycle: cycle_seconds,
-        queue_depth: queue_depth as usize,
-    }) {
-        Ok(engine) => Box::into_raw(Box::new(McEngine { engine })),
-        Err(_) => std::ptr::null_mut(),
+pub extern "C" fn mc_engine_create(cycle_seconds: f64, queue_depth: u32) -> *mut McEngine {
+    let made = std::panic::catch_unwind(|| {
+        Engine::new(EngineConfig {
+            cycle: cycle_seconds,
+            queue_depth: queue_depth as usize,
+        })
+    });
+    match made {
+        Ok(Ok(engine)) => Box::into_raw(Box::new(McEngine {
+            magic: MAGIC,
+            poisoned: false,
+            engine,
+        })),
+        _ => std::ptr::null_mut(),
     }
 }
 
-/// Destroys an engine created by `mc_engine_create` (NULL is ignored).
+/// Destroys an engine created by `mc_engine_create`. NULL gives `MC_STATUS_NULL_HANDLE` (and does nothing).
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// See the module contract: `engine` is NULL or a live handle, destroyed once.
 #[no_mangle]
-pub unsafe extern "C" fn mc_engine_destroy(engine: *mut McEngine) {
-    if !engine.is_null() {
-        // SAFETY: the pointer came from Box::into_raw in mc_engine_create and is
-        // destroyed once (caller contract).
-        drop(unsafe { Box::from_raw(engine) });
+pub unsafe extern "C" fn mc_engine_destroy(engine: *mut McEngine) -> McStatus {
+    if engine.is_null() {
+        return MC_STATUS_NULL_HANDLE;
     }
-}
-
-unsafe fn eng<'a>(engine: *mut McEngine) -> Option<&'a mut Engine> {
-    // SAFETY: a non-null handle points to a live McEngine (caller contract).
-    unsafe { engine.as_mut() }.map(|e| &mut e.engine)
+    // SAFETY: a non-null handle points to readable memory of a McEngine's size (caller contract).
+    if unsafe { std::ptr::addr_of!((*engine).magic).read() } != MAGIC {
+        return MC_STATUS_BAD_HANDLE;
+    }
+    // SAFETY: the tag says this is a live engine; clear it so a later call on the freed block fails the
+    // check while the memory is not reused.
+    unsafe { std::ptr::addr_of_mut!((*engine).magic).write(0) };
+    // SAFETY: the pointer came from Box::into_raw in mc_engine_create and is destroyed once (caller
+    // contract; the cleared magic makes a second destroy of a not yet reused block fail the check).
+    let boxed = unsafe { Box::from_raw(engine) };
+    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(move || drop(boxed)));
+    MC_OK
 }
 
 /// Advances the engine by one cycle.
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_engine_step(engine: *mut McEngine) {
-    if let Some(e) = unsafe { eng(engine) } {
-        e.step();
-    }
+pub unsafe extern "C" fn mc_engine_step(engine: *mut McEngine) -> McStatus {
+    guard(engine, || {
+        unsafe { eng(engine) }?.step();
+        Ok(())
+    })
 }
 
-/// Cycles stepped so far (0 for NULL).
+/// Test hook for the panic path: panics inside the call's guard, so it returns `MC_STATUS_PANIC` and the
+/// engine is poisoned (every later call on it returns `MC_STATUS_PANIC`; `mc_engine_destroy` still frees it).
+/// Never call it on a controller that drives a machine.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_engine_selftest_panic(engine: *mut McEngine) -> McStatus {
+    guard(engine, || {
+        let _ = unsafe { eng(engine) }?;
+        panic!("mc_engine_selftest_panic: a deliberate panic of the motion library's test hook");
+    })
+}
+
+/// Cycles stepped so far (0 for a NULL, invalid or poisoned handle).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
@@ -105,130 +245,156 @@ pub unsafe extern "C" fn mc_engine_cycles(engine: *mut McEngine) -> u64 {
     unsafe { eng(engine) }.map_or(0, |e| e.cycles())
 }
 
-/// Adds an axis with a simulated drive. Returns its index, or -1 on a bad configuration.
+/// Adds an axis with a simulated drive and writes its index to `*index`.
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_add_axis(
     engine: *mut McEngine,
     config: *const MC_AxisConfig_C,
-) -> i32 {
-    let Some(e) = (unsafe { eng(engine) }) else {
-        return -1;
-    };
-    // SAFETY: a non-null config points to a readable MC_AxisConfig_C (caller contract).
-    let Some(c) = (unsafe { config.as_ref() }) else {
-        return -1;
-    };
-    let cfg = AxisConfig {
-        limits: Limits {
-            vmax: c.VelocityLimit,
-            amax: c.AccelerationLimit,
-            dmax: c.DecelerationLimit,
-            jmax: c.JerkLimit,
-        },
-        sw_limit_pos: c.SwLimitPositive,
-        sw_limit_neg: c.SwLimitNegative,
-        sw_limits_enabled: c.SwLimitsEnabled,
-        kind: if c.ModuloPeriod != 0.0 {
-            AxisKind::Modulo {
-                period: c.ModuloPeriod,
-            }
-        } else {
-            AxisKind::Linear
-        },
-        following_error_limit: c.FollowingErrorLimit,
-    };
-    e.add_axis(cfg).map_or(-1, |i| i as i32)
+    index: *mut McIndex,
+) -> McStatus {
+    guard(engine, || {
+        let e = unsafe { eng(engine) }?;
+        // SAFETY: a non-null config points to a readable MC_AxisConfig_C (caller contract).
+        let c = unsafe { config.as_ref() }.ok_or(MC_STATUS_NULL_ARGUMENT)?;
+        // SAFETY: a non-null index points to a writable McIndex (caller contract).
+        let out = unsafe { index.as_mut() }.ok_or(MC_STATUS_NULL_ARGUMENT)?;
+        let cfg = AxisConfig {
+            limits: Limits {
+                vmax: c.VelocityLimit,
+                amax: c.AccelerationLimit,
+                dmax: c.DecelerationLimit,
+                jmax: c.JerkLimit,
+            },
+            sw_limit_pos: c.SwLimitPositive,
+            sw_limit_neg: c.SwLimitNegative,
+            sw_limits_enabled: c.SwLimitsEnabled,
+            kind: if c.ModuloPeriod != 0.0 {
+                AxisKind::Modulo {
+                    period: c.ModuloPeriod,
+                }
+            } else {
+                AxisKind::Linear
+            },
+            following_error_limit: c.FollowingErrorLimit,
+        };
+        let i = e.add_axis(cfg).map_err(|_| MC_STATUS_BAD_CONFIG)?;
+        *out = McIndex::try_from(i).map_err(|_| MC_STATUS_BAD_CONFIG)?;
+        Ok(())
+    })
 }
 
-/// Adds an empty axes group. Returns its index (-1 for NULL).
+/// Adds an empty axes group and writes its index to `*index`.
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_engine_add_group(engine: *mut McEngine) -> i32 {
-    unsafe { eng(engine) }.map_or(-1, |e| e.add_group() as i32)
+pub unsafe extern "C" fn mc_engine_add_group(
+    engine: *mut McEngine,
+    index: *mut McIndex,
+) -> McStatus {
+    guard(engine, || {
+        let e = unsafe { eng(engine) }?;
+        // SAFETY: a non-null index points to a writable McIndex (caller contract).
+        let out = unsafe { index.as_mut() }.ok_or(MC_STATUS_NULL_ARGUMENT)?;
+        *out = McIndex::try_from(e.add_group()).map_err(|_| MC_STATUS_BAD_CONFIG)?;
+        Ok(())
+    })
 }
 
-/// Registers a cam table of `n` points (master strictly increasing). Returns its
-/// CamTable reference for MC_CamTableSelect, or -1.
+/// Registers a cam table of `n` points (master strictly increasing) and writes its CamTable reference
+/// for MC_CamTableSelect to `*table`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// See the module contract: pointers are NULL or valid; the arrays hold `n` doubles each.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_add_cam_table(
     engine: *mut McEngine,
     master: *const f64,
     slave: *const f64,
     n: u32,
-) -> i32 {
-    let Some(e) = (unsafe { eng(engine) }) else {
-        return -1;
-    };
-    if master.is_null() || slave.is_null() {
-        return -1;
+    table: *mut McIndex,
+) -> McStatus {
+    guard(engine, || {
+        let e = unsafe { eng(engine) }?;
+        if master.is_null() || slave.is_null() {
+            return Err(MC_STATUS_NULL_ARGUMENT);
+        }
+        // SAFETY: a non-null table points to a writable McIndex (caller contract).
+        let out = unsafe { table.as_mut() }.ok_or(MC_STATUS_NULL_ARGUMENT)?;
+        // SAFETY: both arrays hold n readable doubles (caller contract).
+        let (m, s) = unsafe {
+            (
+                std::slice::from_raw_parts(master, n as usize),
+                std::slice::from_raw_parts(slave, n as usize),
+            )
+        };
+        let pts: Vec<(f64, f64)> = m.iter().copied().zip(s.iter().copied()).collect();
+        let t = CamTable::new(&pts).map_err(|_| MC_STATUS_BAD_CONFIG)?;
+        *out = McIndex::try_from(e.add_cam_table(t)).map_err(|_| MC_STATUS_BAD_CONFIG)?;
+        Ok(())
+    })
+}
+
+/// PLCopen state of an axis (0 Disabled .. 7 ErrorStop), or a negative `MC_STATUS_*` status.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_state(engine: *mut McEngine, axis: McIndex) -> i32 {
+    match unsafe { eng(engine) } {
+        Ok(e) => e
+            .axis_state(axis as usize)
+            .map_or(MC_STATUS_BAD_INDEX, |s| s as i32),
+        Err(code) => code,
     }
-    // SAFETY: both arrays hold n readable doubles (caller contract).
-    let (m, s) = unsafe {
-        (
-            std::slice::from_raw_parts(master, n as usize),
-            std::slice::from_raw_parts(slave, n as usize),
-        )
-    };
-    let pts: Vec<(f64, f64)> = m.iter().copied().zip(s.iter().copied()).collect();
-    match CamTable::new(&pts) {
-        Ok(t) => e.add_cam_table(t) as i32,
-        Err(_) => -1,
+}
+
+/// One set value of an axis, NaN for a NULL, invalid or poisoned handle or a bad index.
+unsafe fn set_value(
+    engine: *mut McEngine,
+    axis: McIndex,
+    get: impl Fn(&Engine, usize) -> Result<f64, ErrorId>,
+) -> f64 {
+    match unsafe { eng(engine) } {
+        Ok(e) => get(e, axis as usize).unwrap_or(f64::NAN),
+        Err(_) => f64::NAN,
     }
 }
 
-/// PLCopen state of an axis (0 Disabled .. 7 ErrorStop), -1 for a bad index.
+/// Set position of an axis (user units; NaN on an error).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_axis_state(engine: *mut McEngine, axis: u32) -> i32 {
-    unsafe { eng(engine) }
-        .and_then(|e| e.axis_state(axis as usize).ok())
-        .map_or(-1, |s| s as i32)
+pub unsafe extern "C" fn mc_axis_set_position(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { set_value(engine, axis, Engine::set_position_of) }
 }
 
-/// Set position of an axis (user units; 0 for a bad index).
+/// Set velocity of an axis (user units per second, override included; NaN on an error).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_axis_set_position(engine: *mut McEngine, axis: u32) -> f64 {
-    unsafe { eng(engine) }
-        .and_then(|e| e.set_position_of(axis as usize).ok())
-        .unwrap_or(0.0)
+pub unsafe extern "C" fn mc_axis_set_velocity(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { set_value(engine, axis, Engine::set_velocity_of) }
 }
 
-/// Set velocity of an axis (user units per second, override included; 0 for a bad index).
+/// Set acceleration of an axis (user units per second squared; NaN on an error).
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_axis_set_velocity(engine: *mut McEngine, axis: u32) -> f64 {
-    unsafe { eng(engine) }
-        .and_then(|e| e.set_velocity_of(axis as usize).ok())
-        .unwrap_or(0.0)
+pub unsafe extern "C" fn mc_axis_set_acceleration(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { set_value(engine, axis, Engine::set_acceleration_of) }
 }
 
-/// Set acceleration of an axis (user units per second squared; 0 for a bad index).
+/// State of a group (0 GroupDisabled .. 5 GroupErrorStop), or a negative `MC_STATUS_*` status.
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_axis_set_acceleration(engine: *mut McEngine, axis: u32) -> f64 {
-    unsafe { eng(engine) }
-        .and_then(|e| e.set_acceleration_of(axis as usize).ok())
-        .unwrap_or(0.0)
-}
-
-/// State of a group (0 GroupDisabled .. 5 GroupErrorStop), -1 for a bad index.
-/// # Safety
-/// See the module contract: pointers are NULL or valid.
-#[no_mangle]
-pub unsafe extern "C" fn mc_group_state(engine: *mut McEngine, group: u32) -> i32 {
-    unsafe { eng(engine) }
-        .and_then(|e| e.group_state(group as usize).ok())
-        .map_or(-1, |s| s as i32)
+pub unsafe extern "C" fn mc_group_state(engine: *mut McEngine, group: McIndex) -> i32 {
+    match unsafe { eng(engine) } {
+        Ok(e) => e
+            .group_state(group as usize)
+            .map_or(MC_STATUS_BAD_INDEX, |s| s as i32),
+        Err(code) => code,
+    }
 }
 
 fn master_source(x: u8) -> Result<MasterSource, ErrorId> {
@@ -281,16 +447,19 @@ fn err(code: u16) -> ErrorId {
 // `_internal`, call the Rust block, write the outputs and `_internal` back. The frame is
 // shared here; each extern function keeps only its own input fields.
 
-/// The engine and the block struct behind the two pointers; None when either is NULL.
+/// The engine and the block struct behind the two pointers, or the status that says why not.
 /// # Safety
 /// The module contract: `engine` is NULL or a live handle, `fb` NULL or a valid,
 /// writable struct of its type, not aliased during the call.
-unsafe fn args<'a, T>(engine: *mut McEngine, fb: *mut T) -> Option<(&'a mut Engine, &'a mut T)> {
-    // SAFETY: a non-null handle points to a live McEngine (caller contract).
+unsafe fn args<'a, T>(
+    engine: *mut McEngine,
+    fb: *mut T,
+) -> Result<(&'a mut Engine, &'a mut T), McStatus> {
+    // SAFETY: a non-null handle points to a McEngine (caller contract); `eng` checks it.
     let e = unsafe { eng(engine) }?;
     // SAFETY: a non-null fb points to a live, writable block struct (caller contract).
-    let c = unsafe { fb.as_mut() }?;
-    Some((e, c))
+    let c = unsafe { fb.as_mut() }.ok_or(MC_STATUS_NULL_ARGUMENT)?;
+    Ok((e, c))
 }
 
 /// An enumerated C input: its value, or the default with the first bad value's ErrorID
@@ -555,22 +724,27 @@ pub struct MC_Power_C {
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_power(engine: *mut McEngine, axis: u32, fb: *mut MC_Power_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McPower {
-        enable: c.Enable,
-        enable_positive: c.EnablePositive,
-        enable_negative: c.EnableNegative,
-        ..Default::default()
-    };
-    b.call(e, axis as usize);
+pub unsafe extern "C" fn mc_power(
+    engine: *mut McEngine,
+    axis: McIndex,
+    fb: *mut MC_Power_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McPower {
+            enable: c.Enable,
+            enable_positive: c.EnablePositive,
+            enable_negative: c.EnableNegative,
+            ..Default::default()
+        };
+        b.call(e, axis as usize);
 
-    c.Status = b.status;
-    c.Valid = b.valid;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
+        c.Status = b.status;
+        c.Valid = b.valid;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McHome` (MC_Home).
@@ -596,18 +770,23 @@ block_c!(MC_Home_C);
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_home(engine: *mut McEngine, axis: u32, fb: *mut MC_Home_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = McHome {
-        execute: c.Execute,
-        position: c.Position,
-        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        ..Default::default()
-    };
-    run_exec(c, bad, b, |b| b.call(e, axis as usize));
+pub unsafe extern "C" fn mc_home(
+    engine: *mut McEngine,
+    axis: McIndex,
+    fb: *mut MC_Home_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = McHome {
+            execute: c.Execute,
+            position: c.Position,
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            ..Default::default()
+        };
+        run_exec(c, bad, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McStop` (MC_Stop).
@@ -635,17 +814,22 @@ block_c!(MC_Stop_C {
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_stop(engine: *mut McEngine, axis: u32, fb: *mut MC_Stop_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McStop {
-        execute: c.Execute,
-        deceleration: c.Deceleration,
-        jerk: c.Jerk,
-        ..Default::default()
-    };
-    run_stop(c, b, |b| b.call(e, axis as usize));
+pub unsafe extern "C" fn mc_stop(
+    engine: *mut McEngine,
+    axis: McIndex,
+    fb: *mut MC_Stop_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McStop {
+            execute: c.Execute,
+            deceleration: c.Deceleration,
+            jerk: c.Jerk,
+            ..Default::default()
+        };
+        run_stop(c, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McHalt` (MC_Halt).
@@ -672,19 +856,24 @@ block_c!(MC_Halt_C);
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_halt(engine: *mut McEngine, axis: u32, fb: *mut MC_Halt_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = McHalt {
-        execute: c.Execute,
-        deceleration: c.Deceleration,
-        jerk: c.Jerk,
-        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        ..Default::default()
-    };
-    run_exec(c, bad, b, |b| b.call(e, axis as usize));
+pub unsafe extern "C" fn mc_halt(
+    engine: *mut McEngine,
+    axis: McIndex,
+    fb: *mut MC_Halt_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = McHalt {
+            execute: c.Execute,
+            deceleration: c.Deceleration,
+            jerk: c.Jerk,
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            ..Default::default()
+        };
+        run_exec(c, bad, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McMoveAbsolute` (MC_MoveAbsolute).
@@ -718,24 +907,25 @@ block_c!(MC_MoveAbsolute_C);
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_absolute(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_MoveAbsolute_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = move_block!(
-        McMoveAbsolute,
-        c {
-            execute: c.Execute,
-            continuous_update: c.ContinuousUpdate,
-            position: c.Position,
-            direction: enum_in(Direction::from_u8(c.Direction), &mut bad),
-            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        }
-    );
-    run_exec(c, bad, b, |b| b.call(e, axis as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = move_block!(
+            McMoveAbsolute,
+            c {
+                execute: c.Execute,
+                continuous_update: c.ContinuousUpdate,
+                position: c.Position,
+                direction: enum_in(Direction::from_u8(c.Direction), &mut bad),
+                buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            }
+        );
+        run_exec(c, bad, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McMoveRelative` (MC_MoveRelative).
@@ -768,23 +958,24 @@ block_c!(MC_MoveRelative_C);
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_relative(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_MoveRelative_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = move_block!(
-        McMoveRelative,
-        c {
-            execute: c.Execute,
-            continuous_update: c.ContinuousUpdate,
-            distance: c.Distance,
-            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        }
-    );
-    run_exec(c, bad, b, |b| b.call(e, axis as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = move_block!(
+            McMoveRelative,
+            c {
+                execute: c.Execute,
+                continuous_update: c.ContinuousUpdate,
+                distance: c.Distance,
+                buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            }
+        );
+        run_exec(c, bad, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McMoveAdditive` (MC_MoveAdditive).
@@ -817,23 +1008,24 @@ block_c!(MC_MoveAdditive_C);
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_additive(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_MoveAdditive_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = move_block!(
-        McMoveAdditive,
-        c {
-            execute: c.Execute,
-            continuous_update: c.ContinuousUpdate,
-            distance: c.Distance,
-            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        }
-    );
-    run_exec(c, bad, b, |b| b.call(e, axis as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = move_block!(
+            McMoveAdditive,
+            c {
+                execute: c.Execute,
+                continuous_update: c.ContinuousUpdate,
+                distance: c.Distance,
+                buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            }
+        );
+        run_exec(c, bad, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McMoveVelocity` (MC_MoveVelocity).
@@ -870,23 +1062,24 @@ block_c!(MC_MoveVelocity_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_velocity(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_MoveVelocity_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = move_block!(
-        McMoveVelocity,
-        c {
-            execute: c.Execute,
-            continuous_update: c.ContinuousUpdate,
-            direction: enum_in(Direction::from_u8(c.Direction), &mut bad),
-            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        }
-    );
-    run_exec(c, bad, b, |b| b.call(e, axis as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = move_block!(
+            McMoveVelocity,
+            c {
+                execute: c.Execute,
+                continuous_update: c.ContinuousUpdate,
+                direction: enum_in(Direction::from_u8(c.Direction), &mut bad),
+                buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            }
+        );
+        run_exec(c, bad, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McReset` (MC_Reset).
@@ -908,15 +1101,20 @@ block_c!(MC_Reset_C { done: Done });
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_reset(engine: *mut McEngine, axis: u32, fb: *mut MC_Reset_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McReset {
-        execute: c.Execute,
-        ..Default::default()
-    };
-    run_immediate(c, b, |b| b.call(e, axis as usize));
+pub unsafe extern "C" fn mc_reset(
+    engine: *mut McEngine,
+    axis: McIndex,
+    fb: *mut MC_Reset_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McReset {
+            execute: c.Execute,
+            ..Default::default()
+        };
+        run_immediate(c, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McReadActualPosition` (MC_ReadActualPosition).
@@ -937,23 +1135,24 @@ pub struct MC_ReadActualPosition_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_read_actual_position(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_ReadActualPosition_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McReadActualPosition {
-        enable: c.Enable,
-        ..Default::default()
-    };
-    b.call(e, axis as usize);
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McReadActualPosition {
+            enable: c.Enable,
+            ..Default::default()
+        };
+        b.call(e, axis as usize);
 
-    c.Valid = b.valid;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c.Position = b.position;
+        c.Valid = b.valid;
+        c.Busy = b.busy;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        c.Position = b.position;
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McReadActualVelocity` (MC_ReadActualVelocity).
@@ -974,23 +1173,24 @@ pub struct MC_ReadActualVelocity_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_read_actual_velocity(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_ReadActualVelocity_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McReadActualVelocity {
-        enable: c.Enable,
-        ..Default::default()
-    };
-    b.call(e, axis as usize);
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McReadActualVelocity {
+            enable: c.Enable,
+            ..Default::default()
+        };
+        b.call(e, axis as usize);
 
-    c.Valid = b.valid;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c.Velocity = b.velocity;
+        c.Valid = b.valid;
+        c.Busy = b.busy;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        c.Velocity = b.velocity;
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McReadStatus` (MC_ReadStatus).
@@ -1018,30 +1218,31 @@ pub struct MC_ReadStatus_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_read_status(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_ReadStatus_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McReadStatus {
-        enable: c.Enable,
-        ..Default::default()
-    };
-    b.call(e, axis as usize);
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McReadStatus {
+            enable: c.Enable,
+            ..Default::default()
+        };
+        b.call(e, axis as usize);
 
-    c.Valid = b.valid;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c.ErrorStop = b.error_stop;
-    c.Disabled = b.disabled;
-    c.Stopping = b.stopping;
-    c.Homing = b.homing;
-    c.Standstill = b.standstill;
-    c.DiscreteMotion = b.discrete_motion;
-    c.ContinuousMotion = b.continuous_motion;
-    c.SynchronizedMotion = b.synchronized_motion;
+        c.Valid = b.valid;
+        c.Busy = b.busy;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        c.ErrorStop = b.error_stop;
+        c.Disabled = b.disabled;
+        c.Stopping = b.stopping;
+        c.Homing = b.homing;
+        c.Standstill = b.standstill;
+        c.DiscreteMotion = b.discrete_motion;
+        c.ContinuousMotion = b.continuous_motion;
+        c.SynchronizedMotion = b.synchronized_motion;
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McReadAxisError` (MC_ReadAxisError).
@@ -1062,23 +1263,24 @@ pub struct MC_ReadAxisError_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_read_axis_error(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_ReadAxisError_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McReadAxisError {
-        enable: c.Enable,
-        ..Default::default()
-    };
-    b.call(e, axis as usize);
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McReadAxisError {
+            enable: c.Enable,
+            ..Default::default()
+        };
+        b.call(e, axis as usize);
 
-    c.Valid = b.valid;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c.AxisErrorID = b.axis_error_id.code();
+        c.Valid = b.valid;
+        c.Busy = b.busy;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        c.AxisErrorID = b.axis_error_id.code();
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McSetPosition` (MC_SetPosition).
@@ -1104,19 +1306,20 @@ block_c!(MC_SetPosition_C { done: Done });
 #[no_mangle]
 pub unsafe extern "C" fn mc_set_position(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_SetPosition_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McSetPosition {
-        execute: c.Execute,
-        position: c.Position,
-        relative: c.Relative,
-        ..Default::default()
-    };
-    run_immediate(c, b, |b| b.call(e, axis as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McSetPosition {
+            execute: c.Execute,
+            position: c.Position,
+            relative: c.Relative,
+            ..Default::default()
+        };
+        run_immediate(c, b, |b| b.call(e, axis as usize));
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McSetOverride` (MC_SetOverride).
@@ -1139,25 +1342,26 @@ pub struct MC_SetOverride_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_set_override(
     engine: *mut McEngine,
-    axis: u32,
+    axis: McIndex,
     fb: *mut MC_SetOverride_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McSetOverride {
-        enable: c.Enable,
-        vel_factor: c.VelFactor,
-        acc_factor: c.AccFactor,
-        jerk_factor: c.JerkFactor,
-        ..Default::default()
-    };
-    b.call(e, axis as usize);
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McSetOverride {
+            enable: c.Enable,
+            vel_factor: c.VelFactor,
+            acc_factor: c.AccFactor,
+            jerk_factor: c.JerkFactor,
+            ..Default::default()
+        };
+        b.call(e, axis as usize);
 
-    c.Enabled = b.enabled;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
+        c.Enabled = b.enabled;
+        c.Busy = b.busy;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        axis_ok(e, axis)
+    })
 }
 
 /// C view of `McGearIn` (MC_GearIn).
@@ -1195,27 +1399,29 @@ block_c!(MC_GearIn_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_gear_in(
     engine: *mut McEngine,
-    master: u32,
-    slave: u32,
+    master: McIndex,
+    slave: McIndex,
     fb: *mut MC_GearIn_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = McGearIn {
-        execute: c.Execute,
-        continuous_update: c.ContinuousUpdate,
-        ratio_numerator: c.RatioNumerator,
-        ratio_denominator: c.RatioDenominator,
-        master_value_source: enum_in(master_source(c.MasterValueSource), &mut bad),
-        acceleration: c.Acceleration,
-        deceleration: c.Deceleration,
-        jerk: c.Jerk,
-        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        ..Default::default()
-    };
-    run_exec(c, bad, b, |b| b.call(e, master as usize, slave as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = McGearIn {
+            execute: c.Execute,
+            continuous_update: c.ContinuousUpdate,
+            ratio_numerator: c.RatioNumerator,
+            ratio_denominator: c.RatioDenominator,
+            master_value_source: enum_in(master_source(c.MasterValueSource), &mut bad),
+            acceleration: c.Acceleration,
+            deceleration: c.Deceleration,
+            jerk: c.Jerk,
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            ..Default::default()
+        };
+        run_exec(c, bad, b, |b| b.call(e, master as usize, slave as usize));
+        axis_ok(e, master)?;
+        axis_ok(e, slave)
+    })
 }
 
 /// C view of `McSyncOut` (MC_GearOut).
@@ -1237,15 +1443,20 @@ block_c!(MC_GearOut_C { done: Done });
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_gear_out(engine: *mut McEngine, slave: u32, fb: *mut MC_GearOut_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McSyncOut {
-        execute: c.Execute,
-        ..Default::default()
-    };
-    run_exec(c, None, b, |b| b.call_gear_out(e, slave as usize));
+pub unsafe extern "C" fn mc_gear_out(
+    engine: *mut McEngine,
+    slave: McIndex,
+    fb: *mut MC_GearOut_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McSyncOut {
+            execute: c.Execute,
+            ..Default::default()
+        };
+        run_exec(c, None, b, |b| b.call_gear_out(e, slave as usize));
+        axis_ok(e, slave)
+    })
 }
 
 /// C view of `McSyncOut` (MC_CamOut).
@@ -1267,15 +1478,20 @@ block_c!(MC_CamOut_C { done: Done });
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_cam_out(engine: *mut McEngine, slave: u32, fb: *mut MC_CamOut_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McSyncOut {
-        execute: c.Execute,
-        ..Default::default()
-    };
-    run_exec(c, None, b, |b| b.call_cam_out(e, slave as usize));
+pub unsafe extern "C" fn mc_cam_out(
+    engine: *mut McEngine,
+    slave: McIndex,
+    fb: *mut MC_CamOut_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McSyncOut {
+            execute: c.Execute,
+            ..Default::default()
+        };
+        run_exec(c, None, b, |b| b.call_cam_out(e, slave as usize));
+        axis_ok(e, slave)
+    })
 }
 
 /// C view of `McCamTableSelect` (MC_CamTableSelect).
@@ -1304,24 +1520,26 @@ block_c!(MC_CamTableSelect_C { done: Done });
 #[no_mangle]
 pub unsafe extern "C" fn mc_cam_table_select(
     engine: *mut McEngine,
-    master: u32,
-    slave: u32,
+    master: McIndex,
+    slave: McIndex,
     fb: *mut MC_CamTableSelect_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McCamTableSelect {
-        execute: c.Execute,
-        cam_table: c.CamTable as usize,
-        periodic: c.Periodic,
-        master_absolute: c.MasterAbsolute,
-        slave_absolute: c.SlaveAbsolute,
-        cam_table_id: c.CamTableID as usize,
-        ..Default::default()
-    };
-    let b = run_immediate(c, b, |b| b.call(e, master as usize, slave as usize));
-    c.CamTableID = b.cam_table_id as u32;
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McCamTableSelect {
+            execute: c.Execute,
+            cam_table: c.CamTable as usize,
+            periodic: c.Periodic,
+            master_absolute: c.MasterAbsolute,
+            slave_absolute: c.SlaveAbsolute,
+            cam_table_id: c.CamTableID as usize,
+            ..Default::default()
+        };
+        let b = run_immediate(c, b, |b| b.call(e, master as usize, slave as usize));
+        c.CamTableID = b.cam_table_id as u32;
+        axis_ok(e, master)?;
+        axis_ok(e, slave)
+    })
 }
 
 /// C view of `McCamIn` (MC_CamIn).
@@ -1364,30 +1582,32 @@ block_c!(MC_CamIn_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_cam_in(
     engine: *mut McEngine,
-    master: u32,
-    slave: u32,
+    master: McIndex,
+    slave: McIndex,
     fb: *mut MC_CamIn_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = McCamIn {
-        execute: c.Execute,
-        continuous_update: c.ContinuousUpdate,
-        master_offset: c.MasterOffset,
-        slave_offset: c.SlaveOffset,
-        master_scaling: c.MasterScaling,
-        slave_scaling: c.SlaveScaling,
-        master_value_source: enum_in(master_source(c.MasterValueSource), &mut bad),
-        cam_table_id: c.CamTableID as usize,
-        periodic: c.Periodic,
-        master_absolute: c.MasterAbsolute,
-        slave_absolute: c.SlaveAbsolute,
-        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        ..Default::default()
-    };
-    run_exec(c, bad, b, |b| b.call(e, master as usize, slave as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = McCamIn {
+            execute: c.Execute,
+            continuous_update: c.ContinuousUpdate,
+            master_offset: c.MasterOffset,
+            slave_offset: c.SlaveOffset,
+            master_scaling: c.MasterScaling,
+            slave_scaling: c.SlaveScaling,
+            master_value_source: enum_in(master_source(c.MasterValueSource), &mut bad),
+            cam_table_id: c.CamTableID as usize,
+            periodic: c.Periodic,
+            master_absolute: c.MasterAbsolute,
+            slave_absolute: c.SlaveAbsolute,
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            ..Default::default()
+        };
+        run_exec(c, bad, b, |b| b.call(e, master as usize, slave as usize));
+        axis_ok(e, master)?;
+        axis_ok(e, slave)
+    })
 }
 
 /// C view of `McAddAxisToGroup` (MC_AddAxisToGroup).
@@ -1413,19 +1633,20 @@ block_c!(MC_AddAxisToGroup_C { done: Done });
 #[no_mangle]
 pub unsafe extern "C" fn mc_add_axis_to_group(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_AddAxisToGroup_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McAddAxisToGroup {
-        execute: c.Execute,
-        axis: c.Axis as usize,
-        ident_in_group: c.IdentInGroup as usize,
-        ..Default::default()
-    };
-    run_immediate(c, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McAddAxisToGroup {
+            execute: c.Execute,
+            axis: c.Axis as usize,
+            ident_in_group: c.IdentInGroup as usize,
+            ..Default::default()
+        };
+        run_immediate(c, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McRemoveAxisFromGroup` (MC_RemoveAxisFromGroup).
@@ -1450,18 +1671,19 @@ block_c!(MC_RemoveAxisFromGroup_C { done: Done });
 #[no_mangle]
 pub unsafe extern "C" fn mc_remove_axis_from_group(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_RemoveAxisFromGroup_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McRemoveAxisFromGroup {
-        execute: c.Execute,
-        ident_in_group: c.IdentInGroup as usize,
-        ..Default::default()
-    };
-    run_immediate(c, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McRemoveAxisFromGroup {
+            execute: c.Execute,
+            ident_in_group: c.IdentInGroup as usize,
+            ..Default::default()
+        };
+        run_immediate(c, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McUngroupAllAxes` (MC_UngroupAllAxes).
@@ -1485,17 +1707,18 @@ block_c!(MC_UngroupAllAxes_C { done: Done });
 #[no_mangle]
 pub unsafe extern "C" fn mc_ungroup_all_axes(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_UngroupAllAxes_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McUngroupAllAxes {
-        execute: c.Execute,
-        ..Default::default()
-    };
-    run_immediate(c, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McUngroupAllAxes {
+            execute: c.Execute,
+            ..Default::default()
+        };
+        run_immediate(c, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupEnable` (MC_GroupEnable).
@@ -1519,17 +1742,18 @@ block_c!(MC_GroupEnable_C { done: Done });
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_enable(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_GroupEnable_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McGroupEnable {
-        execute: c.Execute,
-        ..Default::default()
-    };
-    run_immediate(c, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McGroupEnable {
+            execute: c.Execute,
+            ..Default::default()
+        };
+        run_immediate(c, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupDisable` (MC_GroupDisable).
@@ -1553,17 +1777,18 @@ block_c!(MC_GroupDisable_C { done: Done });
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_disable(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_GroupDisable_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McGroupDisable {
-        execute: c.Execute,
-        ..Default::default()
-    };
-    run_immediate(c, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McGroupDisable {
+            execute: c.Execute,
+            ..Default::default()
+        };
+        run_immediate(c, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupReset` (MC_GroupReset).
@@ -1587,17 +1812,18 @@ block_c!(MC_GroupReset_C { done: Done });
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_reset(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_GroupReset_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McGroupReset {
-        execute: c.Execute,
-        ..Default::default()
-    };
-    run_immediate(c, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McGroupReset {
+            execute: c.Execute,
+            ..Default::default()
+        };
+        run_immediate(c, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupStop` (MC_GroupStop).
@@ -1625,17 +1851,22 @@ block_c!(MC_GroupStop_C {
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_group_stop(engine: *mut McEngine, group: u32, fb: *mut MC_GroupStop_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let b = McGroupStop {
-        execute: c.Execute,
-        deceleration: c.Deceleration,
-        jerk: c.Jerk,
-        ..Default::default()
-    };
-    run_stop(c, b, |b| b.call(e, group as usize));
+pub unsafe extern "C" fn mc_group_stop(
+    engine: *mut McEngine,
+    group: McIndex,
+    fb: *mut MC_GroupStop_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let b = McGroupStop {
+            execute: c.Execute,
+            deceleration: c.Deceleration,
+            jerk: c.Jerk,
+            ..Default::default()
+        };
+        run_stop(c, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupHome` (MC_GroupHome).
@@ -1661,18 +1892,23 @@ block_c!(MC_GroupHome_C);
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_group_home(engine: *mut McEngine, group: u32, fb: *mut MC_GroupHome_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = McGroupHome {
-        execute: c.Execute,
-        position: c.Position,
-        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        ..Default::default()
-    };
-    run_exec(c, bad, b, |b| b.call(e, group as usize));
+pub unsafe extern "C" fn mc_group_home(
+    engine: *mut McEngine,
+    group: McIndex,
+    fb: *mut MC_GroupHome_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = McGroupHome {
+            execute: c.Execute,
+            position: c.Position,
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            ..Default::default()
+        };
+        run_exec(c, bad, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupHalt` (MC_GroupHalt).
@@ -1699,19 +1935,24 @@ block_c!(MC_GroupHalt_C);
 /// # Safety
 /// See the module contract: pointers are NULL or valid.
 #[no_mangle]
-pub unsafe extern "C" fn mc_group_halt(engine: *mut McEngine, group: u32, fb: *mut MC_GroupHalt_C) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = McGroupHalt {
-        execute: c.Execute,
-        deceleration: c.Deceleration,
-        jerk: c.Jerk,
-        buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
-        ..Default::default()
-    };
-    run_exec(c, bad, b, |b| b.call(e, group as usize));
+pub unsafe extern "C" fn mc_group_halt(
+    engine: *mut McEngine,
+    group: McIndex,
+    fb: *mut MC_GroupHalt_C,
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = McGroupHalt {
+            execute: c.Execute,
+            deceleration: c.Deceleration,
+            jerk: c.Jerk,
+            buffer_mode: enum_in(BufferMode::from_u8(c.BufferMode), &mut bad),
+            ..Default::default()
+        };
+        run_exec(c, bad, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McMoveLinearAbsolute` (MC_MoveLinearAbsolute).
@@ -1746,22 +1987,23 @@ block_c!(MC_MoveLinearAbsolute_C);
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_linear_absolute(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_MoveLinearAbsolute_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = path_block!(
-        McMoveLinearAbsolute,
-        c,
-        bad {
-            execute: c.Execute,
-            position: c.Position,
-        }
-    );
-    run_exec(c, bad, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = path_block!(
+            McMoveLinearAbsolute,
+            c,
+            bad {
+                execute: c.Execute,
+                position: c.Position,
+            }
+        );
+        run_exec(c, bad, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McMoveLinearRelative` (MC_MoveLinearRelative).
@@ -1796,22 +2038,23 @@ block_c!(MC_MoveLinearRelative_C);
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_linear_relative(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_MoveLinearRelative_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = path_block!(
-        McMoveLinearRelative,
-        c,
-        bad {
-            execute: c.Execute,
-            distance: c.Distance,
-        }
-    );
-    run_exec(c, bad, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = path_block!(
+            McMoveLinearRelative,
+            c,
+            bad {
+                execute: c.Execute,
+                distance: c.Distance,
+            }
+        );
+        run_exec(c, bad, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McMoveDirectAbsolute` (MC_MoveDirectAbsolute).
@@ -1846,22 +2089,23 @@ block_c!(MC_MoveDirectAbsolute_C);
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_direct_absolute(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_MoveDirectAbsolute_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = path_block!(
-        McMoveDirectAbsolute,
-        c,
-        bad {
-            execute: c.Execute,
-            position: c.Position,
-        }
-    );
-    run_exec(c, bad, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = path_block!(
+            McMoveDirectAbsolute,
+            c,
+            bad {
+                execute: c.Execute,
+                position: c.Position,
+            }
+        );
+        run_exec(c, bad, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McMoveCircularAbsolute` (MC_MoveCircularAbsolute).
@@ -1899,15 +2143,16 @@ block_c!(MC_MoveCircularAbsolute_C);
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_circular_absolute(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_MoveCircularAbsolute_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = circular_block!(McMoveCircularAbsolute, c, bad);
-    run_exec(c, bad, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = circular_block!(McMoveCircularAbsolute, c, bad);
+        run_exec(c, bad, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McMoveCircularRelative` (MC_MoveCircularRelative).
@@ -1945,15 +2190,16 @@ block_c!(MC_MoveCircularRelative_C);
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_circular_relative(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_MoveCircularRelative_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut bad = None;
-    let b = circular_block!(McMoveCircularRelative, c, bad);
-    run_exec(c, bad, b, |b| b.call(e, group as usize));
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut bad = None;
+        let b = circular_block!(McMoveCircularRelative, c, bad);
+        run_exec(c, bad, b, |b| b.call(e, group as usize));
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupReadActualPosition` (MC_GroupReadActualPosition).
@@ -1975,24 +2221,25 @@ pub struct MC_GroupReadActualPosition_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_read_actual_position(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_GroupReadActualPosition_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McGroupReadActualPosition {
-        enable: c.Enable,
-        coord_system: c.CoordSystem,
-        ..Default::default()
-    };
-    b.call(e, group as usize);
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McGroupReadActualPosition {
+            enable: c.Enable,
+            coord_system: c.CoordSystem,
+            ..Default::default()
+        };
+        b.call(e, group as usize);
 
-    c.Valid = b.valid;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c.Position = b.position;
+        c.Valid = b.valid;
+        c.Busy = b.busy;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        c.Position = b.position;
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupReadActualVelocity` (MC_GroupReadActualVelocity).
@@ -2015,25 +2262,26 @@ pub struct MC_GroupReadActualVelocity_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_read_actual_velocity(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_GroupReadActualVelocity_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McGroupReadActualVelocity {
-        enable: c.Enable,
-        coord_system: c.CoordSystem,
-        ..Default::default()
-    };
-    b.call(e, group as usize);
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McGroupReadActualVelocity {
+            enable: c.Enable,
+            coord_system: c.CoordSystem,
+            ..Default::default()
+        };
+        b.call(e, group as usize);
 
-    c.Valid = b.valid;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c.Velocity = b.velocity;
-    c.PathVelocity = b.path_velocity;
+        c.Valid = b.valid;
+        c.Busy = b.busy;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        c.Velocity = b.velocity;
+        c.PathVelocity = b.path_velocity;
+        group_ok(e, group)
+    })
 }
 
 /// C view of `McGroupReadStatus` (MC_GroupReadStatus).
@@ -2059,28 +2307,29 @@ pub struct MC_GroupReadStatus_C {
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_read_status(
     engine: *mut McEngine,
-    group: u32,
+    group: McIndex,
     fb: *mut MC_GroupReadStatus_C,
-) {
-    let Some((e, c)) = (unsafe { args(engine, fb) }) else {
-        return;
-    };
-    let mut b = McGroupReadStatus {
-        enable: c.Enable,
-        ..Default::default()
-    };
-    b.call(e, group as usize);
+) -> McStatus {
+    guard(engine, || {
+        let (e, c) = unsafe { args(engine, fb) }?;
+        let mut b = McGroupReadStatus {
+            enable: c.Enable,
+            ..Default::default()
+        };
+        b.call(e, group as usize);
 
-    c.Valid = b.valid;
-    c.Busy = b.busy;
-    c.Error = b.error;
-    c.ErrorID = b.error_id.code();
-    c.GroupMoving = b.group_moving;
-    c.GroupHoming = b.group_homing;
-    c.GroupErrorStop = b.group_error_stop;
-    c.GroupStandby = b.group_standby;
-    c.GroupStopping = b.group_stopping;
-    c.GroupDisabled = b.group_disabled;
+        c.Valid = b.valid;
+        c.Busy = b.busy;
+        c.Error = b.error;
+        c.ErrorID = b.error_id.code();
+        c.GroupMoving = b.group_moving;
+        c.GroupHoming = b.group_homing;
+        c.GroupErrorStop = b.group_error_stop;
+        c.GroupStandby = b.group_standby;
+        c.GroupStopping = b.group_stopping;
+        c.GroupDisabled = b.group_disabled;
+        group_ok(e, group)
+    })
 }
 
 // ---- constants (emitted as #define by cbindgen) ----
@@ -2217,3 +2466,56 @@ pub const MC_ERR_HOMING_FAILED: u16 = 105;
 pub const MC_ERR_GROUP_AXIS_ERROR: u16 = 106;
 /// ErrorID 107: Error set from outside (tests, `Engine::raise_axis_error`).
 pub const MC_ERR_EXTERNAL_ERROR: u16 = 107;
+
+/// `sizeof` of the ABI structs by name (see [`mc_sizeof`]); every `#[repr(C)]` struct of this module is
+/// listed (test `ffi_c::struct_sizes_match_the_header` checks the list against the header).
+fn struct_size(name: &[u8]) -> usize {
+    macro_rules! sizes {
+        ($($t:ident),* $(,)?) => {
+            match name {
+                $(n if n == stringify!($t).as_bytes() => std::mem::size_of::<$t>(),)*
+                _ => 0,
+            }
+        };
+    }
+    sizes!(
+        MC_AxisConfig_C,
+        MC_Power_C,
+        MC_Home_C,
+        MC_Stop_C,
+        MC_Halt_C,
+        MC_MoveAbsolute_C,
+        MC_MoveRelative_C,
+        MC_MoveAdditive_C,
+        MC_MoveVelocity_C,
+        MC_Reset_C,
+        MC_ReadActualPosition_C,
+        MC_ReadActualVelocity_C,
+        MC_ReadStatus_C,
+        MC_ReadAxisError_C,
+        MC_SetPosition_C,
+        MC_SetOverride_C,
+        MC_GearIn_C,
+        MC_GearOut_C,
+        MC_CamOut_C,
+        MC_CamTableSelect_C,
+        MC_CamIn_C,
+        MC_AddAxisToGroup_C,
+        MC_RemoveAxisFromGroup_C,
+        MC_UngroupAllAxes_C,
+        MC_GroupEnable_C,
+        MC_GroupDisable_C,
+        MC_GroupReset_C,
+        MC_GroupStop_C,
+        MC_GroupHome_C,
+        MC_GroupHalt_C,
+        MC_MoveLinearAbsolute_C,
+        MC_MoveLinearRelative_C,
+        MC_MoveDirectAbsolute_C,
+        MC_MoveCircularAbsolute_C,
+        MC_MoveCircularRelative_C,
+        MC_GroupReadActualPosition_C,
+        MC_GroupReadActualVelocity_C,
+        MC_GroupReadStatus_C
+    )
+}

@@ -97,3 +97,34 @@ fn c_program_drives_every_block_frame() {
     let stdout = build_and_run("block_frames");
     assert_eq!(stdout.trim(), "frames ok");
 }
+
+/// tests/c/abi_contract.c: the ABI version, every struct's size on both sides, the status codes for NULL
+/// and invalid handles and arguments and bad indices, and the panic guard.
+#[test]
+fn c_program_checks_the_abi_contract() {
+    let stdout = build_and_run("abi_contract");
+    let header =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("include/motion_lib.h"))
+            .unwrap();
+    // Every struct of the header is size-checked by the C program.
+    let structs: Vec<&str> = header
+        .split("typedef struct ")
+        .skip(1)
+        .filter_map(|t| t.split_whitespace().next())
+        .filter(|n| n.starts_with("MC_") && n.ends_with("_C"))
+        .collect();
+    let c = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/c/abi_contract.c"),
+    )
+    .unwrap();
+    for s in &structs {
+        assert!(
+            c.contains(&format!("SIZE({s})")),
+            "abi_contract.c does not check {s}"
+        );
+    }
+    assert_eq!(
+        stdout.trim(),
+        format!("abi ok, {} struct sizes", structs.len())
+    );
+}

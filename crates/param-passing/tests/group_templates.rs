@@ -56,7 +56,7 @@ fn every_group_block_of_the_library_has_a_template_that_calls_it() {
             .get(block)
             .unwrap_or_else(|| panic!("no template {block}"));
         assert!(
-            library::MOTION_HEADER.contains(&format!("void {function}(")),
+            library::MOTION_HEADER.contains(&format!("McStatus {function}(")),
             "{function}"
         );
         assert!(t.body.text.contains(&format!("{function}(")), "{block}");

@@ -11,6 +11,7 @@
 //! `E7xxx` code. No real controller was available while this was written: the protocol follows the manuals and
 //! is tested against a loopback simulator.
 
+pub mod compare;
 pub mod error;
 pub mod model;
 pub mod numfmt;

@@ -2,11 +2,16 @@
 //!
 //! Input: a [`CoordSystem`], a list of [`LinearMove`]s, a [`Dialect`] (and optionally a start position and a
 //! program number, [`ProgramOptions`]).
-//! Output: the program text: axis definitions (`&1 #1->1000X ...`), `OPEN PROG n CLEAR`, `LINEAR ABS FRAX(..)`,
-//! one line per move with the `TS`/`TA` (Power: `ts`/`ta`/`td`) and `F` that make the PMAC's own S-curve equal
-//! the jerk-limited profile, `DWELL0` after every exact stop, `CLOSE`, and the run command `&1 B1 R`.
-//! Invariants: `TS`, `TA`, `TD` are written only when they change (they are modal); times are in ms with at
-//! most 3 decimals; `F` is the path speed (user units per Isx90 ms, Isx90 = 1000 gives units/s) with at least
+//! Output: the program text: `CLOSE` (no buffer left open), on Turbo `DELETE GATHER` (the manual's advice
+//! for downloaded program files), the feedrate time unit (`I5190=1000` / `Coord[1].FeedTime=1000`: `F` is
+//! in user units per second), axis definitions (`&1 #1->1000X ...`), `OPEN PROG n CLEAR`,
+//! `LINEAR ABS FRAX(..)`, one line per move with the `TS`/`TA` (Power: `ts`/`ta`/`td`) and `F` that make the
+//! PMAC's own S-curve equal the jerk-limited profile, `DWELL0` after every exact stop, `CLOSE`, and the run
+//! command `&1 B1 R`.
+//! Invariants: `TS`, `TA`, `TD` are written only when they change (they are modal); on Turbo they are whole
+//! milliseconds, rounded up so that no acceleration or jerk grows (Turbo PMAC rounds them to whole ms when
+//! it executes them: Software Reference, `TA{data}` and `TS{data}`); on Power they have at most 3 decimals;
+//! `F` is the path speed (user units per Isx90 ms, Isx90 = 1000 gives units/s) with at least
 //! 3 decimals and as many more (up to 6) as keep the rounding's effect on the move time under 0.5 ms (half the 1 ms move-time tolerance);
 //! positions have at most 6 decimals. Zero-length moves are skipped. Invalid input gives E7001/E7002.
 
@@ -215,24 +220,48 @@ pub fn plan(
         .collect())
 }
 
-/// `F` text and value: 3 decimals, more (up to 6) while rounding moves the move time by more than 0.25 ms.
+/// `F` text and value: 3 decimals, more (up to 6) while rounding moves the move time by more than 0.5 ms.
+/// `F` is rounded down, never up: a feedrate above the planned speed would take an axis past its velocity
+/// limit.
 fn feedrate_text(length: f64, speed: f64) -> (String, f64) {
     let exact = length / speed;
+    let down = |d: usize| {
+        let scale = 10f64.powi(d as i32);
+        // A hair of float noise above a representable value must not drop a whole digit.
+        let r = ((speed * scale) * (1.0 + 1e-12)).floor() / scale;
+        r.min(speed)
+    };
     for d in 3..=6 {
-        let r = rounded(speed, d);
+        let r = down(d);
         if r > 0.0 && (length / r - exact).abs() <= 0.5e-3 {
-            return (num(speed, d), r);
+            return (num(r, d), rounded(r, d));
         }
     }
-    (num(speed, 6), rounded(speed, 6))
+    let r = down(6);
+    (num(r, 6), rounded(r, 6))
 }
 
 fn ms(seconds: f64) -> String {
     num(seconds * 1000.0, 3)
 }
 
+/// Whole milliseconds, rounded up (a hair of float noise below a whole number does not round up).
+fn whole_ms_up(seconds: f64) -> u64 {
+    (seconds * 1000.0 - 1e-6).ceil().max(0.0) as u64
+}
+
+/// A Turbo ramp `(TS, TA)` in whole ms: `TS` rounded up, and `TA - TS` rounded up, so that the peak
+/// acceleration `v / (TA - TS)` and the jerk `a / TS` never grow; `TA` is at least `2 TS` and at least 1 ms
+/// (TA0 TS0 divides by zero on the controller: Software Reference, `TA{data}`).
+pub fn turbo_ramp_ms(r: &Ramp) -> (u64, u64) {
+    let ts = whole_ms_up(r.ts);
+    let rest = whole_ms_up(r.time - r.ts).max(ts);
+    (ts, (ts + rest).max(1))
+}
+
 /// Keywords of one dialect.
 struct Words {
+    setup: Vec<String>,
     open: String,
     linear: &'static str,
     abs: &'static str,
@@ -252,6 +281,11 @@ fn words(cs: &CoordSystem, opts: &ProgramOptions) -> Words {
     };
     match opts.dialect {
         Dialect::Turbo => Words {
+            setup: vec![
+                "CLOSE".to_string(),
+                "DELETE GATHER".to_string(),
+                crate::pvt::feed_time_setting(cs.number, Dialect::Turbo, 1000.0),
+            ],
             open: format!("OPEN PROG {prog} CLEAR"),
             linear: "LINEAR",
             abs: "ABS",
@@ -263,6 +297,10 @@ fn words(cs: &CoordSystem, opts: &ProgramOptions) -> Words {
             run: format!("&{} B{prog} R", cs.number),
         },
         Dialect::Power => Words {
+            setup: vec![
+                "close".to_string(),
+                crate::pvt::feed_time_setting(cs.number, Dialect::Power, 1000.0),
+            ],
             open: format!("open prog {prog}\nclear"),
             linear: "linear",
             abs: "abs",
@@ -295,6 +333,9 @@ fn render(cs: &CoordSystem, planned: &[PlannedMove], opts: &ProgramOptions) -> S
     let w = words(cs, opts);
     let names = cs.axis_names();
     let mut out = String::new();
+    for l in &w.setup {
+        let _ = writeln!(out, "{l}");
+    }
     let _ = writeln!(out, "{}", axis_definitions(cs));
     let _ = writeln!(out, "{}", w.open);
     let first_mode = planned.first().map_or(MoveMode::Abs, |m| m.mode);
@@ -326,7 +367,10 @@ fn render(cs: &CoordSystem, planned: &[PlannedMove], opts: &ProgramOptions) -> S
         }
         let (ts, ta, td) = match opts.dialect {
             // Turbo: the move's TS/TA govern its acceleration; the stop's TS/TA are declared after the move.
-            Dialect::Turbo => (ms(m.accel.ts), ms(m.accel.time), String::new()),
+            Dialect::Turbo => {
+                let (ts, ta) = turbo_ramp_ms(&m.accel);
+                (ts.to_string(), ta.to_string(), String::new())
+            }
             // Power: one ts for ta and td; a larger ts with the same peak acceleration keeps both within
             // the acceleration and jerk limits (exact when the two ramps have the same ts).
             Dialect::Power => {
@@ -364,8 +408,9 @@ fn render(cs: &CoordSystem, planned: &[PlannedMove], opts: &ProgramOptions) -> S
                         *cur = val;
                     }
                 };
-                put(&mut cur_ts, w.ts, ms(m.decel.ts));
-                put(&mut cur_ta, w.ta, ms(m.decel.time));
+                let (ts, ta) = turbo_ramp_ms(&m.decel);
+                put(&mut cur_ts, w.ts, ts.to_string());
+                put(&mut cur_ta, w.ta, ta.to_string());
             }
             line.push(w.dwell.to_string());
         }

@@ -164,19 +164,27 @@ pub fn hermite_error_bound(jerk_step: f64, segment_s: f64) -> f64 {
 pub struct StreamOptions {
     /// Rotary buffer size for `DEFINE ROT` (Turbo: words; Power: `define rotary`, bytes); `None` = do not define.
     pub define_size: Option<u32>,
-    /// Start the buffer (`&1 B0 R`) once it is full or all lines are sent.
+    /// Start the program once the buffer holds its look-ahead (or all lines, if fewer).
     pub start: bool,
+    /// Lines in the buffer before the program starts; `None`: what the defined buffer holds
+    /// ([`rotary_capacity_lines`]), capped by a live transport's capacity, or [`DEFAULT_LOOKAHEAD_LINES`]
+    /// when no buffer is defined here.
+    pub lookahead_lines: Option<usize>,
     /// Polls without progress while the buffer is full before giving up (E7005).
     pub max_full_polls: u32,
     /// After `CLOSE`, poll until the buffer is empty (bounded by `max_full_polls`).
     pub wait_until_done: bool,
 }
 
+/// Look-ahead when the rotary buffer is defined elsewhere and no look-ahead is given.
+pub const DEFAULT_LOOKAHEAD_LINES: usize = 100;
+
 impl Default for StreamOptions {
     fn default() -> Self {
         StreamOptions {
             define_size: Some(2048),
             start: true,
+            lookahead_lines: None,
             max_full_polls: 1000,
             wait_until_done: false,
         }
@@ -194,41 +202,110 @@ pub struct StreamReport {
     pub full_waits: usize,
     /// Largest number of unexecuted lines the host allowed in the buffer.
     pub peak_fill: usize,
+    /// Buffer lines sent before the program was started (`None`: not started).
+    pub started_after: Option<usize>,
+}
+
+/// Memory words (Turbo) a buffer line takes: one per value (`X1.5:20` is two), at least one.
+/// Turbo PMAC User Manual, "Rotary Motion Program Buffers / Defining a Rotary Buffer": "each value in a
+/// program (e.g. X1250) takes one word of memory".
+pub fn line_words(line: &str) -> usize {
+    let mut values = 0;
+    let mut in_number = false;
+    for c in line.chars() {
+        let digit = c.is_ascii_digit() || c == '.';
+        if digit && !in_number {
+            values += 1;
+        }
+        in_number = digit;
+    }
+    values.max(1)
+}
+
+/// Bytes a Power PMAC buffer line is counted as (an estimate: 16 bytes per value, at least 16), for
+/// `define rotary` sizes, which are in bytes.
+fn line_bytes(line: &str) -> usize {
+    16 * line_words(line)
+}
+
+/// How many of `lines` a rotary buffer of `size` (Turbo words, Power bytes) holds, counting every line as the
+/// largest of them.
+pub fn rotary_capacity_lines(size: u32, dialect: Dialect, lines: &[String]) -> usize {
+    let per_line = lines
+        .iter()
+        .map(|l| match dialect {
+            Dialect::Turbo => line_words(l),
+            Dialect::Power => line_bytes(l),
+        })
+        .max()
+        .unwrap_or(1);
+    (size as usize / per_line).max(1)
+}
+
+/// The variable that fixes the velocity time unit (`F` and PVT velocities are user units per this many ms):
+/// Turbo `Isx90` (`I5190` for coordinate system 1; Turbo PMAC Software Reference, coordinate-system
+/// I-variables Isx90 "Feedrate Time Units"), Power `Coord[x].FeedTime`.
+pub fn feed_time_setting(cs: u32, dialect: Dialect, velocity_time_ms: f64) -> String {
+    let ms = num(velocity_time_ms, 3);
+    match dialect {
+        Dialect::Turbo => format!("I{}={ms}", 5000 + 100 * cs + 90),
+        Dialect::Power => format!("Coord[{cs}].FeedTime={ms}"),
+    }
 }
 
 /// Control lines around the buffer text, per dialect.
+///
+/// No on-line command is ever sent while the rotary buffer is open: the Turbo manual (Software Reference,
+/// `OPEN ROTARY` and `B{constant}`) says that `B0` sent to an open buffer is entered as a B-axis move, and
+/// `A` (abort) would be an A-axis move. So `B0` is sent before `OPEN ROT`, and the program is started by
+/// `CLOSE`, `&n R`, `OPEN ROT` (the rotary buffer keeps its contents and entry point when closed). The data
+/// gathering buffer is deleted before `DEFINE ROT` (User Manual, "Required Buffer State for Defining").
 struct Control {
     setup: Vec<String>,
-    run: String,
+    start: Vec<String>,
     close: String,
     abort: String,
 }
 
-fn control(cs: &CoordSystem, dialect: Dialect, define: Option<u32>) -> Control {
+fn control(
+    cs: &CoordSystem,
+    dialect: Dialect,
+    define: Option<u32>,
+    velocity_time_ms: f64,
+) -> Control {
     let n = cs.number;
-    let mut setup = vec![axis_definitions(cs)];
+    let units = feed_time_setting(n, dialect, velocity_time_ms);
     match dialect {
         Dialect::Turbo => {
+            let mut setup = vec!["CLOSE".to_string()];
             if let Some(size) = define {
+                setup.push("DELETE GATHER".to_string());
+                setup.push(units);
+                setup.push(axis_definitions(cs));
                 setup.push(format!("&{n} DEFINE ROT {size}"));
+            } else {
+                setup.push(units);
+                setup.push(axis_definitions(cs));
             }
             setup.push(format!("&{n} B0"));
             setup.push("OPEN ROT".to_string());
             Control {
                 setup,
-                run: format!("&{n} B0 R"),
+                start: vec!["CLOSE".into(), format!("&{n} R"), "OPEN ROT".into()],
                 close: "CLOSE".to_string(),
                 abort: format!("&{n} A"),
             }
         }
         Dialect::Power => {
+            let mut setup = vec!["close".to_string(), units, axis_definitions(cs)];
             if let Some(size) = define {
                 setup.push(format!("&{n} define rotary {size}"));
             }
+            setup.push(format!("&{n} b0"));
             setup.push("open rotary".to_string());
             Control {
                 setup,
-                run: format!("&{n} b0 r"),
+                start: vec!["close".into(), format!("&{n} r"), "open rotary".into()],
                 close: "close".to_string(),
                 abort: format!("&{n} a"),
             }
@@ -248,10 +325,17 @@ pub fn stream(
     transport: &mut dyn Transport,
 ) -> Result<StreamReport, PmacError> {
     let lines = to_lines(cs, segs, opts)?;
-    stream_lines(cs, &lines, opts.dialect, stream_opts, transport)
+    stream_lines_with_units(
+        cs,
+        &lines,
+        opts.dialect,
+        opts.velocity_time_ms,
+        stream_opts,
+        transport,
+    )
 }
 
-/// [`stream`] for ready buffer lines (e.g. a LINEAR program's move lines).
+/// [`stream`] for ready buffer lines (e.g. a LINEAR program's move lines), velocities per second.
 pub fn stream_lines(
     cs: &CoordSystem,
     lines: &[String],
@@ -259,8 +343,30 @@ pub fn stream_lines(
     stream_opts: &StreamOptions,
     transport: &mut dyn Transport,
 ) -> Result<StreamReport, PmacError> {
-    let ctl = control(cs, dialect, stream_opts.define_size);
-    let result = run_stream(&ctl, lines, stream_opts, transport);
+    stream_lines_with_units(cs, lines, dialect, 1000.0, stream_opts, transport)
+}
+
+/// [`stream_lines`] with the velocity time unit (ms) that the set-up declares.
+pub fn stream_lines_with_units(
+    cs: &CoordSystem,
+    lines: &[String],
+    dialect: Dialect,
+    velocity_time_ms: f64,
+    stream_opts: &StreamOptions,
+    transport: &mut dyn Transport,
+) -> Result<StreamReport, PmacError> {
+    let ctl = control(cs, dialect, stream_opts.define_size, velocity_time_ms);
+    let lookahead = stream_opts
+        .lookahead_lines
+        .or_else(|| {
+            stream_opts
+                .define_size
+                .map(|size| rotary_capacity_lines(size, dialect, lines))
+        })
+        .unwrap_or(DEFAULT_LOOKAHEAD_LINES)
+        .min(transport.capacity().unwrap_or(usize::MAX))
+        .max(1);
+    let result = run_stream(&ctl, lines, lookahead, stream_opts, transport);
     if let Err(e) = &result {
         if e.code() == "E7004" {
             // Best effort: the buffer must not stay open and the axes must not run on.
@@ -275,6 +381,7 @@ pub fn stream_lines(
 fn run_stream(
     ctl: &Control,
     lines: &[String],
+    lookahead: usize,
     opts: &StreamOptions,
     t: &mut dyn Transport,
 ) -> Result<StreamReport, PmacError> {
@@ -288,14 +395,24 @@ fn run_stream(
         in_buffer = poll(t, &mut report)?;
     }
     let mut started = false;
+    let mut start = |t: &mut dyn Transport, report: &mut StreamReport| -> Result<(), PmacError> {
+        if opts.start && !started {
+            for l in &ctl.start {
+                t.send(l)?;
+            }
+            started = true;
+            report.started_after = Some(report.lines_sent);
+        }
+        Ok(())
+    };
     for line in lines {
+        if report.lines_sent >= lookahead {
+            start(t, &mut report)?;
+        }
         if let Some(cap) = capacity {
             let mut stalls = 0u32;
             while in_buffer >= cap.max(1) {
-                if opts.start && !started {
-                    t.send(&ctl.run)?;
-                    started = true;
-                }
+                start(t, &mut report)?;
                 let before = in_buffer;
                 in_buffer = poll(t, &mut report)?;
                 if in_buffer >= before {
@@ -316,9 +433,13 @@ fn run_stream(
         report.peak_fill = report.peak_fill.max(in_buffer);
     }
     if opts.start && !started {
-        t.send(&ctl.run)?;
+        // Everything fits in the look-ahead: close the buffer, then run what it holds.
+        t.send(&ctl.close)?;
+        t.send(&ctl.start[1])?;
+        report.started_after = Some(report.lines_sent);
+    } else {
+        t.send(&ctl.close)?;
     }
-    t.send(&ctl.close)?;
     if capacity.is_some() {
         in_buffer = poll(t, &mut report)?;
         if opts.wait_until_done {

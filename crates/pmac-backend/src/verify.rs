@@ -136,6 +136,10 @@ pub fn parse_program(text: &str, start: Option<&[f64]>) -> Result<ProgramTimelin
             pos.len()
         )));
     }
+    // Turbo PMAC rounds TA and TS to whole milliseconds when it executes them (Software Reference,
+    // `TA{data}`, `TS{data}`); Turbo text is the upper-case dialect.
+    let turbo = text.contains("OPEN PROG");
+    let exec_ms = |x: f64| if turbo { x.round() } else { x };
     let mut frax: Vec<bool> = vec![true; n];
     let (mut ta, mut ts, mut td, mut f, mut tm) = (0.0, 0.0, None::<f64>, 0.0, None::<f64>);
     let mut inc = false;
@@ -250,8 +254,8 @@ pub fn parse_program(text: &str, start: Option<&[f64]>) -> Result<ProgramTimelin
                     }
                     let x = parse_num(val, lineno)?;
                     match key {
-                        "TA" => ta = x / 1000.0,
-                        "TS" => ts = x / 1000.0,
+                        "TA" => ta = exec_ms(x) / 1000.0,
+                        "TS" => ts = exec_ms(x) / 1000.0,
                         "TD" => td = Some(x / 1000.0),
                         "F" => {
                             f = x;

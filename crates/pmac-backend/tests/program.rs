@@ -59,6 +59,31 @@ fn pmac_md_example() -> String {
     block.trim_start_matches('\n').to_string()
 }
 
+/// The program without the set-up lines before the axis definitions (`CLOSE`, `DELETE GATHER`, `I5190=1000`)
+/// and with every feedrate masked (`F` is rounded down now, pmac.md rounds to nearest), checked separately.
+fn masked_motion(text: &str) -> (String, Vec<f64>) {
+    let body = &text[text.find("&1 #").expect("axis definitions")..];
+    let mut feeds = Vec::new();
+    let masked: Vec<String> = body
+        .lines()
+        .map(|l| {
+            l.split(' ')
+                .map(
+                    |w| match w.strip_prefix('F').and_then(|v| v.parse::<f64>().ok()) {
+                        Some(f) => {
+                            feeds.push(f);
+                            "F*".to_string()
+                        }
+                        None => w.to_string(),
+                    },
+                )
+                .collect::<Vec<_>>()
+                .join(" ")
+        })
+        .collect();
+    (masked.join("\n"), feeds)
+}
+
 fn assert_times(got: &[f64], want: &[f64]) {
     assert_eq!(got.len(), want.len(), "{got:?}");
     for (g, w) in got.iter().zip(want) {
@@ -74,7 +99,16 @@ fn pmac_md_example_is_reproduced() {
     // pmac.md's F values (53.852, 82.932, 40.749) and TA values (10500, 16500, 10500) are the projections of
     // per-axis speeds 40, 70, 40 (not the 40, 55, 70 of paper B's table; see the next test).
     let text = program::write(&xyz(), &paper_b([40.0, 70.0, 40.0], STOPS), Dialect::Turbo).unwrap();
-    assert_eq!(text, pmac_md_example());
+    let (ours, our_feeds) = masked_motion(&text);
+    let (reference, ref_feeds) = masked_motion(&pmac_md_example());
+    assert_eq!(ours, reference);
+    for (f, r) in our_feeds.iter().zip(&ref_feeds) {
+        assert!(f <= r && r - f <= 1e-3, "F{f} against the reference's F{r}");
+    }
+    assert!(
+        text.starts_with("CLOSE\nDELETE GATHER\nI5190=1000\n&1 #"),
+        "{text}"
+    );
     assert_times(&program_move_times(&text).unwrap(), &[50.5, 76.5, 68.0]);
     // The reference text itself gives the same times.
     assert_times(
@@ -224,8 +258,10 @@ fn rest_to_rest_matches_ruckig_through_the_program() {
         let spans = times.move_spans();
         assert_eq!(spans.len(), 1);
         let got = spans[0].1 - spans[0].0;
+        // Turbo TA/TS are whole ms, rounded up (each ramp grows by less than 2 ms; a move too short for its
+        // TA is stretched to it); F is rounded down (at most 0.5 ms longer).
         assert!(
-            (got - f("duration")).abs() <= 1e-3,
+            got - f("duration") >= -1e-9 && got - f("duration") <= 4.5e-3,
             "{line}: program gives {got}"
         );
         worst = worst.max((got - f("duration")).abs());
@@ -338,7 +374,7 @@ fn asymmetric_deceleration_is_declared_before_the_dwell() {
     let text = program::write(&xyz(), &moves, Dialect::Turbo).unwrap();
     // Accel: TA = 40/5 + 5/2 = 10.5 s, TS 2.5 s; decel: 40/2.5 + 2.5/2 = 17.25 s, TS 1.25 s.
     assert!(
-        text.contains("TS2500 TA10500 F53.852 X1600 Y1200 Z800 TS1250 TA17250 DWELL0"),
+        text.contains("TS2500 TA10500 F53.851 X1600 Y1200 Z800 TS1250 TA17250 DWELL0"),
         "{text}"
     );
     let t = program_move_times(&text).unwrap();

@@ -2,8 +2,9 @@
 //! simulator (127.0.0.1, ephemeral port, bounded loops and timeouts; it ends when the client disconnects).
 //!
 //! The simulator follows the documented protocol: banner "STDIN Open for ASCII Input"; lines between
-//! `OPEN ROT`/`open rotary` and `CLOSE` are buffer lines; `PR` is answered (after an echo and an ACK) with the
-//! unexecuted line count; once started (`&1 B0 R`) it executes `drain` lines per `PR` (only every
+//! `OPEN ROT`/`open rotary` and `CLOSE` are buffer lines, whatever they say (as on a Turbo PMAC, an
+//! on-line command sent to an open buffer is entered into it); `PR` is answered (after an echo and an ACK) with the
+//! unexecuted line count; once started (`&1 R` with the buffer closed) it executes `drain` lines per `PR` (only every
 //! `drain_every`-th `PR`, to make the host wait); an injected bad line gets `stdin:N:1: error #21: ILLEGAL CMD`.
 
 mod common;
@@ -83,12 +84,9 @@ fn spawn(sim: Sim) -> (SocketAddr, JoinHandle<Log>) {
             } else if upper == "CLOSE" {
                 open = false;
                 log.closed_after = Some(log.content.len());
-            } else if upper.ends_with("B0 R") {
-                running = true;
-                log.started_after.get_or_insert(log.content.len());
-            } else if upper == "&1 A" {
-                log.aborted = true;
             } else if open {
+                // Like a Turbo PMAC: while the buffer is open, every other line is a buffer line, even an
+                // on-line command such as `&1 B0 R` (a B-axis move) or `&1 A` (an A-axis move).
                 log.content.push(line.trim().to_string());
                 fill += 1;
                 log.max_fill = log.max_fill.max(fill);
@@ -100,6 +98,11 @@ fn spawn(sim: Sim) -> (SocketAddr, JoinHandle<Log>) {
                     );
                     error_sent = true;
                 }
+            } else if upper == "&1 R" || upper == "&1 B0 R" {
+                running = true;
+                log.started_after.get_or_insert(log.content.len());
+            } else if upper == "&1 A" {
+                log.aborted = true;
             } else {
                 log.setup.push(line.trim().to_string());
             }
@@ -162,8 +165,15 @@ fn streams_every_line_without_overfilling_the_buffer() {
     assert_eq!(log.closed_after, Some(expected.len()));
     assert_eq!(
         log.setup,
-        ["&1 #1->1000X #2->1000Y", "&1 DEFINE ROT 2048", "&1 B0"]
+        [
+            "DELETE GATHER",
+            "I5190=1000",
+            "&1 #1->1000X #2->1000Y",
+            "&1 DEFINE ROT 2048",
+            "&1 B0"
+        ]
     );
+    assert_eq!(report.started_after, Some(8));
     assert_eq!(report.lines_sent, expected.len());
     assert_eq!(report.peak_fill, 8);
     assert!(

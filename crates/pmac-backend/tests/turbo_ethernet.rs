@@ -22,6 +22,7 @@ struct Log {
     bad_header: bool,
     flushed: bool,
     aborted: bool,
+    started_after: Option<usize>,
 }
 
 fn spawn(capacity: usize, drain: usize, error_at: Option<usize>) -> (SocketAddr, JoinHandle<Log>) {
@@ -76,11 +77,14 @@ fn spawn(capacity: usize, drain: usize, error_at: Option<usize>) -> (SocketAddr,
                     open = false;
                     vec![turbo_eth::ACK]
                 }
-                "&1 B0 R" => {
+                // While the buffer is open every other line is a buffer line (`&1 B0 R` would be a B-axis
+                // move, `&1 A` an A-axis move), as on a Turbo PMAC.
+                "&1 R" if !open => {
                     running = true;
+                    log.started_after.get_or_insert(log.content);
                     vec![turbo_eth::ACK]
                 }
-                "&1 A" => {
+                "&1 A" if !open => {
                     log.aborted = true;
                     vec![turbo_eth::ACK]
                 }
@@ -136,13 +140,21 @@ fn streams_pvt_over_turbo_ethernet() {
     assert!(!log.overflow && log.max_fill == 6, "{log:?}");
     let sent: Vec<&String> = log.lines.iter().filter(|l| *l != "PR").collect();
     assert_eq!(
-        sent[..4],
+        sent[..7],
         [
+            "CLOSE",
+            "DELETE GATHER",
+            "I5190=1000",
             "&1 #1->1000X #2->1000Y",
             "&1 DEFINE ROT 2048",
             "&1 B0",
             "OPEN ROT"
         ]
+    );
+    assert_eq!(
+        log.started_after,
+        Some(6),
+        "started once the look-ahead is in"
     );
     assert_eq!(sent.last().unwrap().as_str(), "CLOSE");
     assert_eq!(report.lines_sent, expected.len());

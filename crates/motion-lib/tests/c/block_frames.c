@@ -16,7 +16,8 @@ int main(void) {
     cfg.AccelerationLimit = 5000.0;
     cfg.DecelerationLimit = 5000.0;
     cfg.JerkLimit = 50000.0;
-    uint32_t ax = (uint32_t)mc_engine_add_axis(eng, &cfg);
+    McIndex ax = 0;
+    if (mc_engine_add_axis(eng, &cfg, &ax) != MC_OK) FAIL(1, "add axis");
     MC_Power_C power;
     memset(&power, 0, sizeof power);
     power.Enable = true;
@@ -86,12 +87,14 @@ int main(void) {
     if (rst.Done) FAIL(12, "reset Done held");
 
     /* Group X/Y: half circle of radius 10 in CircMode RADIUS, centre (10, 0). */
-    uint32_t ay = (uint32_t)mc_engine_add_axis(eng, &cfg);
+    McIndex ay = 0;
+    if (mc_engine_add_axis(eng, &cfg, &ay) != MC_OK) FAIL(1, "add axis");
     MC_Power_C power2;
     memset(&power2, 0, sizeof power2);
     power2.Enable = true;
     mc_power(eng, ay, &power2);
-    uint32_t g = (uint32_t)mc_engine_add_group(eng);
+    McIndex g = 0;
+    if (mc_engine_add_group(eng, &g) != MC_OK) FAIL(1, "add group");
     MC_AddAxisToGroup_C add;
     for (uint32_t i = 0; i < 2; i++) {
         memset(&add, 0, sizeof add);
