@@ -10,6 +10,7 @@
 
 pub mod axes;
 pub mod cli;
+pub mod lsp;
 pub mod motion_link;
 pub mod output;
 pub mod pipeline;

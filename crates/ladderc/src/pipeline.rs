@@ -32,6 +32,9 @@ pub const DEFAULT_CYCLE_MS: f64 = 10.0;
 pub struct Session {
     pub map: SourceMap,
     pub diags: Diagnostics,
+    /// Source texts that replace the files of the same path (an editor's unsaved buffers): `load` reads
+    /// these instead of the disk.
+    pub overlay: std::collections::HashMap<PathBuf, String>,
 }
 
 /// What a successful front half produced.
@@ -80,6 +83,7 @@ impl Session {
         Session {
             map: SourceMap::new(),
             diags: Diagnostics::new(),
+            overlay: std::collections::HashMap::new(),
         }
     }
 
@@ -87,7 +91,11 @@ impl Session {
     pub fn load(&mut self, paths: &[PathBuf]) -> Vec<CompilationUnit> {
         let mut units = Vec::new();
         for p in paths {
-            let text = match std::fs::read(p) {
+            let read = match self.overlay.get(p) {
+                Some(t) => Ok(t.clone().into_bytes()),
+                None => std::fs::read(p),
+            };
+            let text = match read {
                 Ok(bytes) => match String::from_utf8(bytes) {
                     Ok(t) => t,
                     Err(_) => {
