@@ -197,6 +197,9 @@ pub enum Command {
     /// Drive scripts (paper C): compile, run on a simulated drive, debug.
     #[command(subcommand)]
     Drive(DriveCommand),
+    /// Serve the language server protocol on standard input/output (for editors: diagnostics, hover,
+    /// go to definition, document symbols, completion of IL, ST and PLCopen XML).
+    Lsp,
     /// Print the explanation of a diagnostic code (e.g. `ladderc explain E1001`), or list every code.
     Explain {
         /// The code; omit it to list all codes with their titles.
@@ -351,6 +354,7 @@ fn usage_error(e: &clap::Error, format: Format) -> i32 {
 
 fn dispatch(cli: Cli) -> i32 {
     match cli.command {
+        Command::Lsp => crate::lsp::run(),
         Command::Explain { code } => explain(code.as_deref()),
         Command::Drive(cmd) => drive(cmd, cli.message_format.into()),
         Command::Motion(MotionCommand::Plan { file }) => motion_plan(&file),

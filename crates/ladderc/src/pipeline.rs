@@ -63,6 +63,9 @@ pub const DEFAULT_CYCLE_MS: f64 = 10.0;
 pub struct Session {
     pub map: SourceMap,
     pub diags: Diagnostics,
+    /// Source texts that replace the files of the same path (an editor's unsaved buffers): `load` reads
+    /// these instead of the disk.
+    pub overlay: std::collections::HashMap<PathBuf, String>,
 }
 
 /// What a successful front half produced.
@@ -111,6 +114,7 @@ impl Session {
         Session {
             map: SourceMap::new(),
             diags: Diagnostics::new(),
+            overlay: std::collections::HashMap::new(),
         }
     }
 
@@ -142,6 +146,8 @@ impl Session {
                 stdin_read = true;
                 let mut b = Vec::new();
                 std::io::Read::read_to_end(&mut std::io::stdin(), &mut b).map(|_| b)
+            } else if let Some(t) = self.overlay.get(p) {
+                Ok(t.clone().into_bytes())
             } else {
                 std::fs::read(p)
             };

@@ -1,0 +1,264 @@
+//! `ladderc lsp` driven by a scripted editor-like client over real JSON-RPC on the binary's standard
+//! input and output: open a file with an undeclared name (its diagnostic at the right line), hover a
+//! variable (its type), go to definition (its declaration), document symbols, completion of FB members
+//! and of a PLCopen block's inputs, fixing the text clears the diagnostic, shutdown and exit end it.
+
+mod common;
+
+use serde_json::{json, Value};
+use std::io::{BufRead, BufReader, Read, Write};
+use std::process::{Child, ChildStdin, Stdio};
+use std::sync::mpsc::{channel, Receiver};
+use std::time::Duration;
+
+struct Client {
+    child: Child,
+    stdin: ChildStdin,
+    messages: Receiver<Value>,
+    next_id: i64,
+}
+
+impl Client {
+    fn start(root: &std::path::Path) -> Client {
+        let mut child = common::ladderc()
+            .arg("lsp")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .unwrap();
+        let stdin = child.stdin.take().unwrap();
+        let stdout = child.stdout.take().unwrap();
+        let (tx, rx) = channel();
+        std::thread::spawn(move || {
+            let mut r = BufReader::new(stdout);
+            loop {
+                let mut len = 0usize;
+                loop {
+                    let mut line = String::new();
+                    if r.read_line(&mut line).unwrap_or(0) == 0 {
+                        return;
+                    }
+                    let line = line.trim_end();
+                    if line.is_empty() {
+                        break;
+                    }
+                    if let Some(v) = line.strip_prefix("Content-Length: ") {
+                        len = v.parse().unwrap();
+                    }
+                }
+                let mut body = vec![0u8; len];
+                if r.read_exact(&mut body).is_err() {
+                    return;
+                }
+                if tx.send(serde_json::from_slice(&body).unwrap()).is_err() {
+                    return;
+                }
+            }
+        });
+        let mut c = Client {
+            child,
+            stdin,
+            messages: rx,
+            next_id: 1,
+        };
+        let uri = format!("file://{}", root.display());
+        let init = c.request(
+            "initialize",
+            json!({"processId": null, "rootUri": uri, "capabilities": {},
+                   "workspaceFolders": [{"uri": uri, "name": "w"}]}),
+        );
+        assert!(init["capabilities"]["hoverProvider"].as_bool().unwrap());
+        c.notify("initialized", json!({}));
+        c
+    }
+
+    fn send(&mut self, v: Value) {
+        let body = v.to_string();
+        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
+        self.stdin.flush().unwrap();
+    }
+
+    fn notify(&mut self, method: &str, params: Value) {
+        self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
+    }
+
+    fn next(&mut self) -> Value {
+        self.messages
+            .recv_timeout(Duration::from_secs(60))
+            .expect("the server answers")
+    }
+
+    fn request(&mut self, method: &str, params: Value) -> Value {
+        let id = self.next_id;
+        self.next_id += 1;
+        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
+        loop {
+            let m = self.next();
+            if m["id"] == json!(id) {
+                assert!(m.get("error").is_none(), "{m}");
+                return m["result"].clone();
+            }
+        }
+    }
+
+    fn diagnostics(&mut self) -> Value {
+        loop {
+            let m = self.next();
+            if m["method"] == "textDocument/publishDiagnostics" {
+                return m["params"].clone();
+            }
+        }
+    }
+}
+
+const BROKEN: &str = "PROGRAM main\nVAR\n    count : INT;\n    limit : INT := 10;\nEND_VAR\n    LD count\n    ADD 1\n    ST cuont\n    GT limit\nEND_PROGRAM\n";
+
+#[test]
+fn an_editor_session() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("counter.il");
+    std::fs::write(&path, BROKEN).unwrap();
+    let uri = format!("file://{}", path.display());
+    let mut c = Client::start(dir.path());
+
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": uri, "languageId": "iec-il", "version": 1, "text": BROKEN}}),
+    );
+    let d = c.diagnostics();
+    assert_eq!(d["uri"], json!(uri));
+    let list = d["diagnostics"].as_array().unwrap();
+    assert_eq!(list.len(), 1, "{d}");
+    assert_eq!(list[0]["range"]["start"]["line"], 7, "`ST cuont` is line 8");
+    assert_eq!(list[0]["range"]["start"]["character"], 7);
+    assert_eq!(list[0]["severity"], 1);
+    assert!(list[0]["code"].as_str().unwrap().starts_with('E'), "{d}");
+    assert!(
+        list[0]["message"].as_str().unwrap().contains("cuont"),
+        "{d}"
+    );
+
+    // Hover on `count` in `LD count` (line 6, column 8).
+    let pos = json!({"textDocument": {"uri": uri}, "position": {"line": 5, "character": 8}});
+    let h = c.request("textDocument/hover", pos.clone());
+    let md = h["contents"]["value"].as_str().unwrap();
+    assert!(md.contains("**count** : `INT`"), "{md}");
+    assert!(
+        md.contains("VAR of PROGRAM main") && md.contains("line 3"),
+        "{md}"
+    );
+
+    // Go to definition lands on the declaration `count : INT;` (line 3).
+    let def = c.request("textDocument/definition", pos);
+    assert_eq!(def["uri"], json!(uri));
+    assert_eq!(def["range"]["start"]["line"], 2, "{def}");
+    assert_eq!(def["range"]["start"]["character"], 4, "{def}");
+
+    // Document symbols: the program and its variables.
+    let syms = c.request(
+        "textDocument/documentSymbol",
+        json!({"textDocument": {"uri": uri}}),
+    );
+    assert_eq!(syms[0]["name"], "main");
+    let vars: Vec<&str> = syms[0]["children"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(vars, ["count", "limit"]);
+
+    // Fixing the text clears the diagnostic.
+    let fixed = BROKEN.replace("cuont", "count");
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": uri, "version": 2}, "contentChanges": [{"text": fixed}]}),
+    );
+    let d = c.diagnostics();
+    assert_eq!(d["diagnostics"], json!([]), "{d}");
+
+    // Shutdown and exit end the server with status 0.
+    let r = c.request("shutdown", json!(null));
+    assert_eq!(r, json!(null));
+    c.notify("exit", json!(null));
+    let status = c.child.wait().unwrap();
+    assert!(status.success(), "{status:?}");
+}
+
+const MOTION: &str = "PROGRAM main\nVAR\n    mv : MC_MoveAbsolute;\n    t : TON;\nEND_VAR\n    CAL mv(\n    LD mv.\nEND_PROGRAM\n";
+
+#[test]
+fn plcopen_block_inputs_in_hover_and_completion() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("m.il");
+    std::fs::write(&path, MOTION).unwrap();
+    let uri = format!("file://{}", path.display());
+    let mut c = Client::start(dir.path());
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": uri, "languageId": "iec-il", "version": 1, "text": MOTION}}),
+    );
+    let _ = c.diagnostics(); // the unfinished lines are errors: the model still knows the declarations
+                             // Hover on the declaration of `mv`: the block's inputs with their types and defaults.
+    let h = c.request(
+        "textDocument/hover",
+        json!({"textDocument": {"uri": uri}, "position": {"line": 2, "character": 5}}),
+    );
+    let md = h["contents"]["value"].as_str().unwrap();
+    assert!(md.contains("`MC_MoveAbsolute`"), "{md}");
+    assert!(md.contains("`Position` : `LREAL` (input"), "{md}");
+    assert!(md.contains("`Execute` : `BOOL` (input"), "{md}");
+    // In `CAL mv(`: the block's inputs as formal arguments.
+    let items = c.request(
+        "textDocument/completion",
+        json!({"textDocument": {"uri": uri}, "position": {"line": 5, "character": 11}}),
+    );
+    let labels: Vec<&str> = items
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap())
+        .collect();
+    assert!(
+        labels.contains(&"Position :=") && labels.contains(&"Execute :="),
+        "{labels:?}"
+    );
+    assert!(
+        !labels.iter().any(|l| l.starts_with("Done")),
+        "outputs are not inputs: {labels:?}"
+    );
+    // After `mv.`: its inputs and outputs.
+    let items = c.request(
+        "textDocument/completion",
+        json!({"textDocument": {"uri": uri}, "position": {"line": 6, "character": 10}}),
+    );
+    let labels: Vec<&str> = items
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap())
+        .collect();
+    assert!(
+        labels.contains(&"Done") && labels.contains(&"Position"),
+        "{labels:?}"
+    );
+    // Elsewhere: the variables in scope.
+    let items = c.request(
+        "textDocument/completion",
+        json!({"textDocument": {"uri": uri}, "position": {"line": 7, "character": 0}}),
+    );
+    let labels: Vec<&str> = items
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap())
+        .collect();
+    assert!(
+        labels.contains(&"mv") && labels.contains(&"t"),
+        "{labels:?}"
+    );
+    let _ = c.request("shutdown", json!(null));
+    c.notify("exit", json!(null));
+    assert!(c.child.wait().unwrap().success());
+}
