@@ -54,6 +54,54 @@ pub struct PathInputs {
     pub transition_parameter: f64,
 }
 
+/// Why a junction speed was lowered (see the README, "Junction speeds").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReductionReason {
+    /// TMNone at a corner (the direction changes): passed at rest.
+    Corner,
+    /// A junction with a circular move (the curvature steps): passed at rest.
+    Arc,
+    /// The corner blend's curvature or its change: the highest speed the axes allow on it.
+    Blend,
+    /// The corner is too sharp for a blend (a reversal) or the blend has no room: at rest.
+    NoBlend,
+    /// The junction speed is above an axis's velocity limit projected onto a line.
+    Velocity,
+}
+
+impl ReductionReason {
+    /// Short name (trace and run summary).
+    pub fn name(self) -> &'static str {
+        match self {
+            ReductionReason::Corner => "TMNone corner",
+            ReductionReason::Arc => "circle junction",
+            ReductionReason::Blend => "blend curvature",
+            ReductionReason::NoBlend => "no room for a blend",
+            ReductionReason::Velocity => "axis velocity limit",
+        }
+    }
+}
+
+/// A lowered junction speed: between the group's motion commands `block - 1` and `block`
+/// (numbered from 1 in the order they were given to the group).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reduction {
+    /// Sequence number of the successor (the block that starts at the junction).
+    pub block: u32,
+    /// The successor's command handle.
+    pub cmd: CmdId,
+    /// The corner as commanded (raw axis coordinates by identity).
+    pub corner: Vecn,
+    /// Junction speed the BufferMode asked for.
+    pub requested: f64,
+    /// Junction speed planned and reached.
+    pub reached: f64,
+    pub reason: ReductionReason,
+}
+
+/// Reductions kept per group (the count goes on; older entries are kept, later ones only counted).
+pub const REDUCTIONS_KEPT: usize = 256;
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum GKind {
     Home,
@@ -80,6 +128,10 @@ pub(crate) struct GPending {
     start_v: Option<f64>,
     /// The corner this move starts from as commanded (before any corner blend).
     start_corner: Vecn,
+    /// Sequence number among the group's motion commands (from 1).
+    seq: u32,
+    /// The junction before this move was lowered: (requested, reached).
+    reduced: Option<(f64, f64)>,
 }
 
 #[derive(Clone, Debug)]
@@ -110,6 +162,13 @@ pub(crate) struct GroupRt {
     stop_owner: Option<CmdId>,
     pub error: ErrorId,
     scratch: (Vecn, Vecn, Vecn),
+    /// Motion commands given so far (numbers the blocks of [`Reduction`]).
+    seq: u32,
+    /// Lowered junctions (the first [`REDUCTIONS_KEPT`]) and their total count.
+    reductions: Vec<Reduction>,
+    reduction_count: usize,
+    /// (requested, reached) of a lowered junction passed in the last cycle, else (0, 0).
+    junction_now: (f64, f64),
 }
 
 impl GroupRt {
@@ -134,6 +193,10 @@ impl Engine {
             stop_owner: None,
             error: ErrorId::None,
             scratch: (ZERO, ZERO, ZERO),
+            seq: 0,
+            reductions: Vec::with_capacity(16),
+            reduction_count: 0,
+            junction_now: (0.0, 0.0),
         });
         self.groups.len() - 1
     }
@@ -161,6 +224,19 @@ impl Engine {
     /// Commands waiting in the group's buffer.
     pub fn group_queued(&self, g: usize) -> Result<usize, ErrorId> {
         Ok(self.grp(g)?.queue.len())
+    }
+
+    /// The group's lowered junction speeds (the first [`REDUCTIONS_KEPT`]) and how many
+    /// there were in all.
+    pub fn group_reductions(&self, g: usize) -> Result<(&[Reduction], usize), ErrorId> {
+        let gr = self.grp(g)?;
+        Ok((&gr.reductions, gr.reduction_count))
+    }
+
+    /// (requested, reached) junction speed of a lowered junction the path passed in the
+    /// last cycle; (0, 0) in every other cycle.
+    pub fn group_junction_now(&self, g: usize) -> Result<(f64, f64), ErrorId> {
+        Ok(self.grp(g)?.junction_now)
     }
 
     /// MC_AddAxisToGroup.
@@ -497,6 +573,12 @@ impl Engine {
             return Err(ErrorId::QueueFull);
         }
         let id = self.cmds.alloc(CmdStatus::Queued);
+        let seq = if matches!(kind, GKind::Path | GKind::Direct) {
+            self.groups[g].seq = self.groups[g].seq.wrapping_add(1);
+            self.groups[g].seq
+        } else {
+            0
+        };
         let p = GPending {
             id,
             kind,
@@ -508,10 +590,17 @@ impl Engine {
             prefix: None,
             start_v: None,
             start_corner: from,
+            seq,
+            reduced: None,
         };
         if buffer == BufferMode::Aborting || idle {
             self.group_abort_all(g, CmdStatus::Aborted);
-            if let Err(e) = self.group_activate(g, p, 0.0) {
+            if kind == GKind::Path && self.group_turns(g, &from, &target, &motion) {
+                // The path turns away from the current motion: a velocity or acceleration
+                // step would break the axis limits, so the group first brakes along its
+                // path (the command is Active meanwhile) and starts from there.
+                self.group_brake_then(g, p);
+            } else if let Err(e) = self.group_activate(g, p, 0.0) {
                 self.cmds.set(id, CmdStatus::Error(e));
             }
         } else {
@@ -522,6 +611,73 @@ impl Engine {
             }
         }
         Ok(id)
+    }
+
+    /// True when the group moves (or accelerates) across the start direction of the new
+    /// path from `from` to `target`.
+    fn group_turns(&self, g: usize, from: &Vecn, target: &Vecn, motion: &GroupMotion) -> bool {
+        if self.groups[g].active.is_none() {
+            return false;
+        }
+        let n = self.groups[g].n();
+        let geo = self.geometry_for(g, from, target, motion);
+        let (u, _) = geo.tangents(n);
+        let mut vel = ZERO;
+        let mut acc = ZERO;
+        for (i, a) in self.groups[g].axes.iter().enumerate() {
+            if let Some(a) = a {
+                vel[i] = self.axes[*a as usize].set.v;
+                acc[i] = self.axes[*a as usize].set.a;
+            }
+        }
+        let lateral = |x: &Vecn| {
+            let along: f64 = (0..n).map(|i| x[i] * u[i]).sum();
+            (0..n)
+                .map(|i| (x[i] - along * u[i]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        };
+        let moving = vel[..n].iter().chain(&acc[..n]).any(|x| *x != 0.0);
+        let arc = matches!(geo, Geometry::Arc { .. });
+        moving && (arc || lateral(&vel) > 1e-12 || lateral(&acc) > 1e-12)
+    }
+
+    /// Brakes the running path to rest with `p`'s deceleration, then starts `p`.
+    fn group_brake_then(&mut self, g: usize, mut p: GPending) {
+        let halt = GPending {
+            id: p.id,
+            kind: GKind::Halt,
+            motion: GroupMotion::Halt,
+            target: ZERO,
+            inputs: p.inputs,
+            speed: 0.0,
+            end_v: 0.0,
+            prefix: None,
+            start_v: None,
+            start_corner: ZERO,
+            seq: 0,
+            reduced: None,
+        };
+        if let Err(e) = self.group_activate(g, halt, 0.0) {
+            self.cmds.set(p.id, CmdStatus::Error(e));
+            return;
+        }
+        let n = self.groups[g].n();
+        if let Some(a) = self.groups[g].active.as_mut() {
+            a.id = None;
+            // The move starts where the brake ends.
+            let (mut q, mut d1, mut d2) = (ZERO, ZERO, ZERO);
+            a.geom.eval(a.prof.end().p, n, &mut q, &mut d1, &mut d2);
+            for (i, ax) in self.groups[g].axes.iter().enumerate() {
+                if ax.is_some() {
+                    p.start_corner[i] = q[i];
+                }
+            }
+        }
+        self.cmds.set(p.id, CmdStatus::Active);
+        if let Err((e, p)) = self.groups[g].queue.push(p) {
+            self.cmds.set(p.id, CmdStatus::Error(e));
+        }
     }
 
     fn geometry_for(&self, g: usize, from: &Vecn, target: &Vecn, motion: &GroupMotion) -> Geometry {
@@ -589,55 +745,89 @@ impl Engine {
         let next_geom = self.geometry_for(g, &pred_target, &next.target, &next.motion);
         let (_, u1) = pred_geom.tangents(n);
         let (u2, _) = next_geom.tangents(n);
-        let mut vj = next.inputs.buffer.junction_speed(pred_speed, next.speed);
+        let requested = next.inputs.buffer.junction_speed(pred_speed, next.speed);
+        let mut vj = requested;
+        let mut reason = ReductionReason::Velocity;
         // Corner blend.
         let mut new_pred_target = pred_target;
         let cos = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>();
-        if next.inputs.transition != TransitionMode::None
-            && next.inputs.transition_parameter > 0.0
-            && vj > 0.0
-            && matches!(pred_geom, Geometry::Line { .. })
-            && matches!(next_geom, Geometry::Line { .. })
-        {
-            let mut d = corner_distance(
-                next.inputs.transition,
-                next.inputs.transition_parameter,
-                cos,
-            )
-            .min(pred_geom.len() / 2.0)
-            .min(next_geom.len() / 2.0);
-            if pred_is_active {
-                if let Some(a) = &gr.active {
-                    let s_now = a.prof.at(a.t - a.prefix_end).p;
-                    let remaining = pred_geom.len() - s_now;
-                    // Leave room to reach the junction speed before the blend.
-                    d = d.min(remaining * 0.5);
+        let lines = matches!(pred_geom, Geometry::Line { .. })
+            && matches!(next_geom, Geometry::Line { .. });
+        let tangent = cos >= 1.0 - 1e-12;
+        if vj > 0.0 && lines {
+            // Never above an axis's velocity limit projected onto either line.
+            let free = PathInputs {
+                velocity: f64::MAX,
+                acceleration: f64::MAX,
+                deceleration: f64::MAX,
+                jerk: 0.0,
+                ..PathInputs::default()
+            };
+            for u in [&u1, &u2] {
+                if let Ok(l) = self.path_lims(g, u, &free) {
+                    vj = vj.min(l.vmax);
                 }
             }
-            if d > 1e-9 && cos < 1.0 - 1e-12 {
-                let mut pa = pred_target;
-                let mut pb = pred_target;
-                for i in 0..n {
-                    pa[i] -= u1[i] * d;
-                    pb[i] += u2[i] * d;
+        }
+        if vj > 0.0 && !lines {
+            vj = 0.0;
+            reason = ReductionReason::Arc;
+        } else if vj > 0.0 && !tangent {
+            if next.inputs.transition == TransitionMode::None
+                || next.inputs.transition_parameter <= 0.0
+            {
+                vj = 0.0;
+                reason = ReductionReason::Corner;
+            } else {
+                let mut d = corner_distance(
+                    next.inputs.transition,
+                    next.inputs.transition_parameter,
+                    cos,
+                )
+                .min(pred_geom.len() / 2.0)
+                .min(next_geom.len() / 2.0);
+                if pred_is_active {
+                    if let Some(a) = &gr.active {
+                        let s_now = a.prof.at(a.t - a.prefix_end).p;
+                        let remaining = pred_geom.len() - s_now;
+                        // Leave room to reach the junction speed before the blend.
+                        d = d.min(remaining * 0.5);
+                    }
                 }
-                let blend = Geometry::blend(&pa, &pred_target, &pb);
-                let kmax = blend.max_curvature(n);
-                let amin = gr
-                    .axes
-                    .iter()
-                    .flatten()
-                    .map(|&a| self.axes[a as usize].cfg.limits.amax)
-                    .fold(f64::INFINITY, f64::min)
-                    .min(next.inputs.acceleration);
-                let vmax_curve = if kmax > 0.0 {
-                    (amin / kmax).sqrt()
-                } else {
-                    f64::INFINITY
-                };
-                vj = vj.min(vmax_curve);
-                next.prefix = Some((blend, vj));
-                new_pred_target = pa;
+                match Geometry::corner_blend(&pred_target, &u1, &u2, d, n) {
+                    Some(blend) if d > 1e-9 => {
+                        let vb = self.blend_speed(g, &blend, &next.inputs);
+                        if vb < vj {
+                            vj = vb;
+                            reason = ReductionReason::Blend;
+                        }
+                        if vj > 0.0 {
+                            next.prefix = Some((blend, vj));
+                            if let Geometry::Blend { start, .. } = blend {
+                                new_pred_target = start;
+                            }
+                        }
+                    }
+                    _ => {
+                        vj = 0.0;
+                        reason = ReductionReason::NoBlend;
+                    }
+                }
+            }
+        }
+        if vj < requested {
+            next.reduced = Some((requested, vj));
+            let gr = &mut self.groups[g];
+            gr.reduction_count += 1;
+            if gr.reductions.len() < REDUCTIONS_KEPT {
+                gr.reductions.push(Reduction {
+                    block: next.seq,
+                    cmd: next.id,
+                    corner: pred_target,
+                    requested,
+                    reached: vj,
+                    reason,
+                });
             }
         }
         let gr = &mut self.groups[g];
@@ -669,6 +859,41 @@ impl Engine {
             b.end_v = vj;
             b.target = new_pred_target;
         }
+    }
+
+    /// The highest constant path speed on a corner blend at which every axis keeps its
+    /// velocity, acceleration and jerk limits, and the block its path acceleration and
+    /// jerk: min over axes of vmax / max|d1|, sqrt(a / max|d2|), cbrt(j / max|d3|)
+    /// (derivatives by arc length, bounded in closed form by [`Geometry::blend_bounds`]).
+    fn blend_speed(&self, g: usize, blend: &Geometry, inp: &PathInputs) -> f64 {
+        let n = self.groups[g].n();
+        let Some((b1, b2, b3)) = blend.blend_bounds(n) else {
+            return 0.0;
+        };
+        let mut v = f64::INFINITY;
+        for (i, a) in self.groups[g].axes.iter().enumerate() {
+            let Some(a) = a else { continue };
+            let l = self.axes[*a as usize].cfg.limits;
+            if b1[i] > 0.0 {
+                v = v.min(l.vmax / b1[i]);
+            }
+            if b2[i] > 0.0 {
+                v = v.min((l.amax.min(l.dmax) / b2[i]).sqrt());
+            }
+            if b3[i] > 0.0 && l.jmax > 0.0 && l.jmax.is_finite() {
+                v = v.min((l.jmax / b3[i]).cbrt());
+            }
+        }
+        if let Geometry::Blend { half, l, .. } = blend {
+            let k = 2.0 * half / l;
+            let kp = 2.0 * half / (l * l);
+            v = v.min((inp.acceleration.min(inp.deceleration) / k).sqrt());
+            if inp.jerk > 0.0 {
+                v = v.min((inp.jerk / (kp + k * k)).cbrt());
+            }
+        }
+        // Rounding margin: the bounds are met with 1e-9 to spare.
+        v * (1.0 - 1e-9)
     }
 
     fn group_abort_all(&mut self, g: usize, status: CmdStatus) {
@@ -887,6 +1112,8 @@ impl Engine {
                 prefix: None,
                 start_v: None,
                 start_corner: ZERO,
+                seq: 0,
+                reduced: None,
             };
             if self.group_activate(g, p, 0.0).is_err() {
                 self.finish_group(g);
@@ -1014,6 +1241,7 @@ impl Engine {
     /// One cycle of every group with a running move.
     pub(crate) fn step_groups(&mut self, dt: f64) {
         for g in 0..self.groups.len() {
+            self.groups[g].junction_now = (0.0, 0.0);
             let Some(mut a) = self.groups[g].active.take() else {
                 continue;
             };
@@ -1103,20 +1331,15 @@ impl Engine {
                     // Next buffered move starts from the junction.
                     let mut started = false;
                     while let Some(mut p) = self.groups[g].queue.pop() {
-                        if let Some(nx) = self.groups[g].queue.front() {
-                            if nx.inputs.buffer.is_blending()
-                                && p.end_v == 0.0
-                                && p.kind == GKind::Path
-                            {
-                                p.end_v = nx.inputs.buffer.junction_speed(p.speed, nx.speed);
-                            }
-                        }
                         let t0 = if end_v > 0.0 { leftover.max(0.0) } else { 0.0 };
                         if end_v > 0.0 {
                             p.start_v = Some(end_v);
                         }
                         match self.group_activate(g, p, t0) {
                             Ok(()) => {
+                                if let Some(r) = p.reduced {
+                                    self.groups[g].junction_now = r;
+                                }
                                 started = true;
                                 break;
                             }
@@ -1143,19 +1366,19 @@ fn dist(a: &Vecn, b: &Vecn) -> f64 {
         .sqrt()
 }
 
-/// Corner distance d of the symmetric quadratic Bezier blend (legs meeting with unit
-/// tangents u1, u2, cos = u1.u2). TMCornerDistance gives d itself. The blend's closest
-/// point to the corner is its midpoint (p0 + 2 c + p2) / 4, at distance
-/// d |u2 - u1| / 4 = d sqrt(2 - 2 cos) / 4 from it, so TMMaxCornerDeviation e gives
-/// d = 4 e / sqrt(2 - 2 cos) (a shorter d, as when a leg is short, deviates less).
+/// Corner distance d of the clothoid blend (legs meeting with unit tangents u1, u2,
+/// cos = u1.u2). TMCornerDistance gives d itself. The blend's closest point to the corner
+/// is its midpoint; TMMaxCornerDeviation e gives the d whose midpoint is e from the corner
+/// ([`Geometry::blend_distance_for_deviation`]; a shorter d, as when a leg is short,
+/// deviates less).
 pub(crate) fn corner_distance(mode: TransitionMode, parameter: f64, cos: f64) -> f64 {
     match mode {
         TransitionMode::None => 0.0,
         TransitionMode::CornerDistance => parameter,
         TransitionMode::MaxCornerDeviation => {
-            let gap = (2.0 - 2.0 * cos).max(0.0).sqrt();
-            if gap > 1e-12 {
-                4.0 * parameter / gap
+            let alpha = cos.clamp(-1.0, 1.0).acos();
+            if alpha > 1e-9 {
+                Geometry::blend_distance_for_deviation(parameter, alpha)
             } else {
                 0.0
             }
