@@ -1037,6 +1037,10 @@ impl Engine {
             }
             AxisCommand::GearOut | AxisCommand::CamOut => {}
         }
+        if matches!(p.kind, Kind::Position | Kind::Velocity) {
+            // The junction speeds of blending use the speed the move can have.
+            p.speed = p.lim.vmax;
+        }
         if p.kind == Kind::Position {
             Self::check_target(ax, p.target)?;
         }

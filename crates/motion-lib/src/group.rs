@@ -1238,6 +1238,33 @@ impl Engine {
         }
     }
 
+    /// Writes the set points of the group's axes from the running path move at its time.
+    fn write_path_setpoints(&mut self, g: usize) {
+        let n = self.groups[g].n();
+        let Some(a) = self.groups[g].active.as_ref() else {
+            return;
+        };
+        if a.direct.is_some() {
+            return;
+        }
+        let (geo, s) = Self::path_state(a);
+        let (mut pos, mut d1, mut d2) = self.groups[g].scratch;
+        geo.eval(s.p, n, &mut pos, &mut d1, &mut d2);
+        for i in 0..n {
+            if let Some(ax) = self.groups[g].axes[i] {
+                if self.axes[ax as usize].active.kind != Kind::Group {
+                    continue;
+                }
+                self.axes[ax as usize].set = State {
+                    p: pos[i],
+                    v: d1[i] * s.v,
+                    a: d1[i] * s.a + d2[i] * s.v * s.v,
+                };
+            }
+        }
+        self.groups[g].scratch = (pos, d1, d2);
+    }
+
     /// One cycle of every group with a running move.
     pub(crate) fn step_groups(&mut self, dt: f64) {
         for g in 0..self.groups.len() {
@@ -1267,6 +1294,14 @@ impl Engine {
                 }
                 ended = done;
             } else {
+                if let Some(tail) = a.tail {
+                    if a.t >= a.prefix_end + a.prof.duration() {
+                        // Main part done: the velocity-change tail follows at once.
+                        a.prefix_end += a.prof.duration();
+                        a.prof = tail;
+                        a.tail = None;
+                    }
+                }
                 let (geo, s) = Self::path_state(&a);
                 geo.eval(s.p, n, &mut pos, &mut d1, &mut d2);
                 for i in 0..n {
@@ -1282,14 +1317,6 @@ impl Engine {
                     }
                 }
                 ended = a.t >= a.prefix_end + a.prof.duration() && a.tail.is_none();
-                if let Some(tail) = a.tail {
-                    if a.t >= a.prefix_end + a.prof.duration() {
-                        // Main part done: the velocity-change tail follows (next cycle).
-                        a.prefix_end += a.prof.duration();
-                        a.prof = tail;
-                        a.tail = None;
-                    }
-                }
             }
             self.groups[g].scratch = (pos, d1, d2);
             let kind = a.kind;
@@ -1303,7 +1330,7 @@ impl Engine {
             if let Some(id) = id {
                 self.cmds.set(id, CmdStatus::Done);
             }
-            if matches!(kind, GKind::Path | GKind::Direct) && end_v == 0.0 {
+            if matches!(kind, GKind::Path | GKind::Direct) {
                 // Land exactly on the commanded end point.
                 let target = self.groups[g].active.as_ref().map(|a| a.target);
                 if let Some(target) = target {
@@ -1312,9 +1339,11 @@ impl Engine {
                             if self.axes[ax as usize].active.kind != Kind::Group {
                                 continue;
                             }
+                            // At a junction (end_v > 0) the successor starts from the
+                            // end point, not from the profile extrapolated past it.
                             let s = &mut self.axes[ax as usize].set;
                             s.p = *t;
-                            s.v = 0.0;
+                            s.v = d1[i] * end_v;
                             s.a = 0.0;
                         }
                     }
@@ -1339,6 +1368,10 @@ impl Engine {
                             Ok(()) => {
                                 if let Some(r) = p.reduced {
                                     self.groups[g].junction_now = r;
+                                }
+                                if t0 > 0.0 {
+                                    // The successor already ran `t0` of this cycle.
+                                    self.write_path_setpoints(g);
                                 }
                                 started = true;
                                 break;
