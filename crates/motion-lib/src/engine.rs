@@ -267,6 +267,16 @@ pub(crate) fn overridden(
         dmax: base.dmax * ax.acc_factor,
         jmax: base.jmax * ax.jerk_factor,
     };
+    // A move that starts while the axis accelerates: with the block's (lower) jerk the
+    // velocity would pass the axis's limit before the acceleration is gone. The block's
+    // jerk is then raised to the axis's own (the limits are physics, the block's a wish).
+    let al = ax.cfg.limits;
+    if lim.jmax > 0.0 && (al.jmax == 0.0 || al.jmax > lim.jmax) {
+        let peak = (now.v + now.a * now.a.abs() / (2.0 * lim.jmax)).abs();
+        if peak > al.vmax {
+            lim.jmax = al.jmax;
+        }
+    }
     let paused = ax.vel_factor == 0.0 && kind != Kind::Halt;
     if !paused && kind != Kind::Halt {
         lim.vmax = (base.vmax * ax.vel_factor).min(base.vmax.max(ax.cfg.limits.vmax));

@@ -67,6 +67,8 @@ pub enum ReductionReason {
     NoBlend,
     /// The junction speed is above an axis's velocity limit projected onto a line.
     Velocity,
+    /// The predecessor's line is too short to reach the junction speed.
+    Distance,
 }
 
 impl ReductionReason {
@@ -78,6 +80,7 @@ impl ReductionReason {
             ReductionReason::Blend => "blend curvature",
             ReductionReason::NoBlend => "no room for a blend",
             ReductionReason::Velocity => "axis velocity limit",
+            ReductionReason::Distance => "line too short",
         }
     }
 }
@@ -742,6 +745,55 @@ impl Engine {
             return;
         }
         let gr = &self.groups[g];
+        // Where the predecessor's own line really starts (after its corner blend) and at
+        // what path state: it has `room` to reach the junction speed.
+        let (room_start, room, room_inputs) = match gr.queue.back() {
+            Some(b) => {
+                let start = match &b.prefix {
+                    Some((Geometry::Blend { end, .. }, _)) => *end,
+                    _ => b.start_corner,
+                };
+                let q = &gr.queue;
+                let v0 = if q.len() >= 2 {
+                    q.iter().nth(q.len() - 2).map_or(0.0, |p| p.end_v)
+                } else {
+                    gr.active.as_ref().map_or(0.0, |a| a.end_v)
+                };
+                (
+                    State {
+                        p: 0.0,
+                        v: v0,
+                        a: 0.0,
+                    },
+                    dist(&start, &b.target),
+                    b.inputs,
+                )
+            }
+            None => {
+                let a = gr.active.as_ref().map(|a| {
+                    let s_now = if a.t < a.prefix_end {
+                        a.prof.start()
+                    } else {
+                        a.prof.at(a.t - a.prefix_end)
+                    };
+                    (s_now, a.geom.len() - s_now.p, a.lim)
+                });
+                match a {
+                    Some((st, room, lim)) => (
+                        State { p: 0.0, ..st },
+                        room,
+                        PathInputs {
+                            velocity: lim.vmax,
+                            acceleration: lim.amax,
+                            deceleration: lim.dmax,
+                            jerk: lim.jmax,
+                            ..PathInputs::default()
+                        },
+                    ),
+                    None => return,
+                }
+            }
+        };
         let next_geom = self.geometry_for(g, &pred_target, &next.target, &next.motion);
         let (_, u1) = pred_geom.tangents(n);
         let (u2, _) = next_geom.tangents(n);
@@ -784,7 +836,7 @@ impl Engine {
                     next.inputs.transition_parameter,
                     cos,
                 )
-                .min(pred_geom.len() / 2.0)
+                .min(room / 2.0)
                 .min(next_geom.len() / 2.0);
                 if pred_is_active {
                     if let Some(a) = &gr.active {
@@ -811,6 +863,25 @@ impl Engine {
                     _ => {
                         vj = 0.0;
                         reason = ReductionReason::NoBlend;
+                    }
+                }
+            }
+        }
+        if vj > 0.0 {
+            // The predecessor must reach vj on the room it has left (after the blend's cut).
+            let cut = dist(&pred_target, &new_pred_target);
+            let lim = self.path_lims(g, &u1, &room_inputs).ok();
+            if let Some(lim) = lim {
+                let r = reachable(room_start, room - cut, vj, &lim);
+                if r < vj {
+                    vj = r;
+                    reason = ReductionReason::Distance;
+                    match next.prefix.as_mut() {
+                        Some(pre) if vj > 0.0 => pre.1 = vj,
+                        _ => {
+                            next.prefix = None;
+                            new_pred_target = pred_target;
+                        }
                     }
                 }
             }
@@ -941,7 +1012,36 @@ impl Engine {
             .as_ref()
             .map(|a| (Self::path_state(a), a.lim));
         let mut tail = None;
+        // A brake that starts on a corner blend finishes the blend at its constant speed
+        // (its curvature takes the whole acceleration budget) and brakes on the line after it.
+        let in_blend = self.groups[g].active.as_ref().and_then(|a| match a.prefix {
+            Some((b @ Geometry::Blend { end, u2, .. }, v)) if a.t < a.prefix_end => {
+                Some((b, v, a.t, a.prefix_end, end, u2))
+            }
+            _ => None,
+        });
+        let mut keep_prefix = None;
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
+            GKind::Halt | GKind::Stop | GKind::Brake if in_blend.is_some() => {
+                let Some((b, v, t, pe, end, u2)) = in_blend else {
+                    return Err(ErrorId::PlanningFailed);
+                };
+                let mut i2 = p.inputs;
+                i2.velocity = f64::MAX;
+                i2.acceleration = p.inputs.deceleration;
+                let mut lim = self.path_lims(g, &u2, &i2)?;
+                lim.amax = lim.amax.max(lim.dmax);
+                lim.vmax = lim.vmax.max(v);
+                let s0 = State { p: 0.0, v, a: 0.0 };
+                let prof = Profile::velocity(s0, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)?;
+                let mut far = end;
+                let l = prof.end().p.max(1e-9);
+                for i in 0..n {
+                    far[i] += u2[i] * l;
+                }
+                keep_prefix = Some(((b, v), t));
+                (Geometry::line(&end, &far), prof, lim, None, pe)
+            }
             GKind::Home | GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
                     (Geometry::line(&now, &now), State::default()),
@@ -1038,14 +1138,17 @@ impl Engine {
                 (geo, prof, Limits::default(), Some(profs), 0.0)
             }
         };
+        if std::env::var("MOTION_DEBUG").is_ok() {
+            eprintln!("ACT {:?} t0 {t0} prefix {:?} start_v {:?} end_v {} dur {} start {:?} len {}", p.kind, p.prefix.map(|(g, v)| (g.len(), v)), p.start_v, p.end_v, prof.duration(), prof.start(), geom.len());
+        }
         let gr = &mut self.groups[g];
         gr.active = Some(GActive {
             kind: p.kind,
             id: Some(p.id),
             geom,
             prof,
-            t: t0,
-            prefix: p.prefix,
+            t: keep_prefix.map_or(t0, |k| k.1),
+            prefix: keep_prefix.map_or(p.prefix, |k| Some(k.0)),
             prefix_end,
             target: p.target,
             speed: p.speed,
@@ -1389,6 +1492,38 @@ impl Engine {
             }
         }
     }
+}
+
+/// The junction speed closest to `vj` (towards the start speed) that a jerk-limited
+/// velocity change from `start` reaches within `room` (bisection on the distance the
+/// change needs).
+fn reachable(start: State, room: f64, vj: f64, lim: &Limits) -> f64 {
+    let mut l = *lim;
+    l.vmax = l.vmax.max(start.v.abs()).max(vj);
+    l.amax = l.amax.max(start.a.abs());
+    let need = |v: f64| -> f64 {
+        Profile::velocity(start, v, &l).map_or(f64::INFINITY, |p| p.end().p)
+    };
+    if room <= 0.0 {
+        return 0.0;
+    }
+    if need(vj) <= room {
+        return vj;
+    }
+    // From vj towards the start speed, the distance needed shrinks (when accelerating).
+    let (mut ok, mut bad) = (start.v.max(0.0), vj);
+    if need(ok) > room {
+        return if vj < start.v { vj } else { 0.0 };
+    }
+    for _ in 0..60 {
+        let m = 0.5 * (ok + bad);
+        if need(m) <= room {
+            ok = m;
+        } else {
+            bad = m;
+        }
+    }
+    ok
 }
 
 fn dist(a: &Vecn, b: &Vecn) -> f64 {

@@ -357,6 +357,19 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
         };
         blocks.push((b, Pattern::random(r, span), OutCheck::default()));
     }
+    if trace_seq() == Some(seq) {
+        for (b, pat, _) in &blocks {
+            let d = match b {
+                Axb::Abs(b) => format!("abs {} v {} {:?}", b.position, b.velocity, b.buffer_mode),
+                Axb::Rel(b) => format!("rel {} v {} {:?}", b.distance, b.velocity, b.buffer_mode),
+                Axb::Add(b) => format!("add {} v {} {:?}", b.distance, b.velocity, b.buffer_mode),
+                Axb::Vel(b) => format!("vel v {} {:?}", b.velocity, b.buffer_mode),
+                Axb::Halt(b) => format!("halt {:?}", b.buffer_mode),
+            };
+            eprintln!("{d} start {} hold {} again {:?}", pat.start, pat.hold, pat.again);
+        }
+        eprintln!("limits {:?} dt {}", sc.lim, sc.dt);
+    }
     // The closing halt: aborting, Execute held until Done.
     let mut stop = McHalt {
         deceleration: sc.lim.dmax,
