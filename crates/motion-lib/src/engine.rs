@@ -1572,7 +1572,19 @@ impl Engine {
                 p.end_v = self.junction_after(axis, &p, &n);
             }
             match self.activate(axis, p, t0) {
-                Ok(()) => return,
+                Ok(()) => {
+                    let a = &self.axes[axis].active;
+                    if matches!(a.kind, Kind::Position | Kind::Halt)
+                        && a.t >= a.prof.duration()
+                        && a.tail.is_none()
+                        && !a.paused
+                    {
+                        // Already over within this cycle (a halt at rest, a zero move): end
+                        // it now, so that its successor runs the rest of this cycle.
+                        self.axis_event(axis);
+                    }
+                    return;
+                }
                 Err(e) => {
                     // Only the active block failed: the next buffered block starts.
                     self.cmds.set(p.id, CmdStatus::Error(e));

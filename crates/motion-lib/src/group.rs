@@ -375,16 +375,34 @@ impl Engine {
         r
     }
 
-    /// End point (raw) the next buffered group move starts from.
+    /// End point (raw) the next buffered group move starts from: the last path move's
+    /// target in the buffer, else the running move's (a halt's: where its brake ends).
     fn group_last_target(&self, g: usize) -> Vecn {
         let gr = &self.groups[g];
-        if let Some(b) = gr.queue.back() {
-            if matches!(b.kind, GKind::Path | GKind::Direct) {
-                return b.target;
-            }
+        if let Some(b) = gr
+            .queue
+            .iter()
+            .filter(|b| matches!(b.kind, GKind::Path | GKind::Direct))
+            .last()
+        {
+            return b.target;
         }
         match &gr.active {
             Some(a) if matches!(a.kind, GKind::Path | GKind::Direct) => a.target,
+            Some(a) if matches!(a.kind, GKind::Halt | GKind::Stop | GKind::Brake) => {
+                let n = gr.n();
+                let mut q = self.raw_now(g);
+                let (mut d1, mut d2) = (ZERO, ZERO);
+                // (A brake begun on a corner blend has the line after it as geometry.)
+                a.geom.eval(a.prof.end().p, n, &mut q, &mut d1, &mut d2);
+                let mut r = self.raw_now(g);
+                for (i, ax) in gr.axes.iter().enumerate() {
+                    if ax.is_some() {
+                        r[i] = q[i];
+                    }
+                }
+                r
+            }
             _ => self.raw_now(g),
         }
     }
@@ -845,6 +863,9 @@ impl Engine {
                         // Leave room to reach the junction speed before the blend.
                         d = d.min(remaining * 0.5);
                     }
+                }
+                if std::env::var("MOTION_DEBUG").is_ok() {
+                    eprintln!("LINK u1 {:?} u2 {:?} d {d} room {room} pred_target {:?} active {pred_is_active}", &u1[..n], &u2[..n], &pred_target[..n]);
                 }
                 match Geometry::corner_blend(&pred_target, &u1, &u2, d, n) {
                     Some(blend) if d > 1e-9 => {
