@@ -450,6 +450,29 @@ impl Engine {
         Ok(l)
     }
 
+    /// A move or brake that starts while the path accelerates: with the block's (lower)
+    /// jerk the speed would pass the axes' velocity limit on direction `u` before the
+    /// acceleration is gone; the jerk is then raised to the axes' own, projected.
+    fn raise_jerk(&self, g: usize, u: &Vecn, s: State, lim: &mut Limits) {
+        if lim.jmax <= 0.0 || s.a == 0.0 {
+            return;
+        }
+        let free = PathInputs {
+            velocity: f64::MAX,
+            acceleration: f64::MAX,
+            deceleration: f64::MAX,
+            jerk: 0.0,
+            ..PathInputs::default()
+        };
+        let Ok(axes) = self.path_lims(g, u, &free) else {
+            return;
+        };
+        let peak = (s.v + s.a * s.a.abs() / (2.0 * lim.jmax)).abs();
+        if peak > axes.vmax && (axes.jmax == 0.0 || axes.jmax > lim.jmax) {
+            lim.jmax = axes.jmax;
+        }
+    }
+
     /// Arc path limits: the tangent turns, so every axis's limits bound the path, and
     /// the axes' acceleration is shared between the path (tangential) and the turn
     /// (normal, v^2 * curvature): each gets half.
@@ -1075,6 +1098,7 @@ impl Engine {
                 let mut lim = self.path_lims(g, &u, &i2)?;
                 lim.amax = lim.amax.max(lim.dmax);
                 lim.vmax = lim.vmax.max(s.v.abs());
+                self.raise_jerk(g, &u, s, &mut lim);
                 let prof = Profile::velocity(s, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)?;
                 (geo, prof, lim, None, 0.0)
             }
@@ -1103,16 +1127,13 @@ impl Engine {
                         (v0, a0, 0.0)
                     }
                 };
-                let (prof, t) = crate::engine::plan_to(
-                    State {
-                        p: 0.0,
-                        v: v0,
-                        a: a0,
-                    },
-                    geo.len(),
-                    p.end_v,
-                    &lim,
-                )
+                let s0 = State {
+                    p: 0.0,
+                    v: v0,
+                    a: a0,
+                };
+                self.raise_jerk(g, &u, s0, &mut lim);
+                let (prof, t) = crate::engine::plan_to(s0, geo.len(), p.end_v, &lim)
                 .map_err(|_| ErrorId::PlanningFailed)?;
                 tail = t;
                 (geo, prof, lim, None, pe)

@@ -22,9 +22,12 @@ use motion_lib::group_blocks::{
 use motion_lib::profile::Limits;
 
 fn trace_seq() -> Option<u64> {
-    std::env::var("LIMITS_PROPERTY_TRACE")
-        .ok()
-        .and_then(|s| s.parse().ok())
+    static TRACE: std::sync::OnceLock<Option<u64>> = std::sync::OnceLock::new();
+    *TRACE.get_or_init(|| {
+        std::env::var("LIMITS_PROPERTY_TRACE")
+            .ok()
+            .and_then(|s| s.parse().ok())
+    })
 }
 
 struct Rng(u64);
@@ -128,47 +131,47 @@ struct AxisCheck {
 }
 
 impl AxisCheck {
-    fn push(&mut self, s: Sp, what: &str, out: &mut Vec<String>) {
+    fn push(&mut self, s: Sp, what: &dyn Fn() -> String, out: &mut Vec<String>) {
         let l = self.lim;
         let dt = self.dt;
         let rel = 1e-9;
         let amax = l.amax.max(l.dmax);
-        let mut bad = |cond: bool, msg: String| {
+        let mut bad = |cond: bool, msg: &dyn Fn() -> String| {
             if cond && out.len() < 20 {
-                out.push(format!("{what}: {msg}"));
+                out.push(format!("{}: {}", what(), msg()));
             }
         };
         bad(
             s.v.abs() > l.vmax * (1.0 + rel),
-            format!("|v| {} > vmax {}", s.v, l.vmax),
+            &|| format!("|v| {} > vmax {}", s.v, l.vmax),
         );
         bad(
             s.a.abs() > amax * (1.0 + rel),
-            format!("|a| {} > amax {}", s.a, amax),
+            &|| format!("|a| {} > amax {}", s.a, amax),
         );
         if let Some(p) = self.hist.last().copied() {
             let eps = 1e-12 * (s.p.abs().max(p.p.abs()) + l.vmax * dt);
             bad(
                 (s.p - p.p).abs() > l.vmax * dt * (1.0 + rel) + eps,
-                format!("|dp| {} > vmax dt {}", (s.p - p.p).abs(), l.vmax * dt),
+                &|| format!("|dp| {} > vmax dt {}", (s.p - p.p).abs(), l.vmax * dt),
             );
             let eps = 1e-12 * l.vmax;
             bad(
                 (s.v - p.v).abs() > amax * dt * (1.0 + rel) + eps,
-                format!("|dv| {} > amax dt {}", (s.v - p.v).abs(), amax * dt),
+                &|| format!("|dv| {} > amax dt {}", (s.v - p.v).abs(), amax * dt),
             );
             if l.jmax > 0.0 {
                 let eps = 1e-12 * amax;
                 bad(
                     (s.a - p.a).abs() > l.jmax * dt * (1.0 + rel) + eps,
-                    format!("|da| {} > jmax dt {}", (s.a - p.a).abs(), l.jmax * dt),
+                    &|| format!("|da| {} > jmax dt {}", (s.a - p.a).abs(), l.jmax * dt),
                 );
                 if self.hist.len() >= 2 {
                     let q = self.hist[self.hist.len() - 2];
                     let d2 = s.v - 2.0 * p.v + q.v;
                     bad(
                         d2.abs() > l.jmax * dt * dt * (1.0 + rel) + 1e-12 * l.vmax,
-                        format!("|d2v| {} > jmax dt^2 {}", d2.abs(), l.jmax * dt * dt),
+                        &|| format!("|d2v| {} > jmax dt^2 {}", d2.abs(), l.jmax * dt * dt),
                     );
                 }
             }
@@ -197,15 +200,18 @@ impl OutCheck {
         err: bool,
         aborted: bool,
         active: bool,
-        what: &str,
+        what: &dyn Fn() -> String,
         out: &mut Vec<String>,
     ) {
         let n = [busy, done, err, aborted].iter().filter(|x| **x).count();
         if n > 1 && out.len() < 20 {
-            out.push(format!("{what}: Busy {busy} Done {done} Error {err} Aborted {aborted}"));
+            out.push(format!(
+                "{}: Busy {busy} Done {done} Error {err} Aborted {aborted}",
+                what()
+            ));
         }
         if active && !busy && out.len() < 20 {
-            out.push(format!("{what}: Active without Busy"));
+            out.push(format!("{}: Active without Busy", what()));
         }
         if busy && !self.in_cmd {
             self.in_cmd = true;
@@ -394,7 +400,7 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
         for (b, pat, oc) in blocks.iter_mut() {
             let x = pat.execute(k);
             let o = b.call(&mut eng, ax, x);
-            oc.see(o.0, o.1, o.2, o.3, o.4, &what(k), &mut st.violations);
+            oc.see(o.0, o.1, o.2, o.3, o.4, &|| what(k), &mut st.violations);
             if x && (k == 0 || !pat.execute(k - 1)) {
                 actives = 0;
             }
@@ -412,7 +418,7 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
                 stop.error,
                 stop.command_aborted,
                 stop.active,
-                &what(k),
+                &|| what(k),
                 &mut st.violations,
             );
             actives += stop.active as u32;
@@ -441,7 +447,7 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
         if trace_seq() == Some(seq) {
             eprintln!("{k} {:?} p {} v {} a {}", eng.axis_state(ax).unwrap(), s.p, s.v, s.a);
         }
-        chk.push(s, &what(k), &mut st.violations);
+        chk.push(s, &|| what(k), &mut st.violations);
     }
     if !stop.done && st.violations.len() < 20 {
         st.violations
@@ -621,7 +627,7 @@ fn group(r: &mut Rng, st: &mut Stats, seq: u64) {
         for (b, pat, oc) in blocks.iter_mut() {
             let x = pat.execute(k);
             let o = b.call(&mut eng, g, x);
-            oc.see(o.0, o.1, o.2, o.3, o.4, &what(k), &mut st.violations);
+            oc.see(o.0, o.1, o.2, o.3, o.4, &|| what(k), &mut st.violations);
             if x && (k == 0 || !pat.execute(k - 1)) {
                 actives = 0;
             }
@@ -639,7 +645,7 @@ fn group(r: &mut Rng, st: &mut Stats, seq: u64) {
                 stop.error,
                 stop.command_aborted,
                 stop.active,
-                &what(k),
+                &|| what(k),
                 &mut st.violations,
             );
             actives += stop.active as u32;
@@ -679,7 +685,7 @@ fn group(r: &mut Rng, st: &mut Stats, seq: u64) {
                 v: eng.set_velocity_of(*a).unwrap(),
                 a: eng.set_acceleration_of(*a).unwrap(),
             };
-            chk[i].push(s, &format!("{} axis {i}", what(k)), &mut st.violations);
+            chk[i].push(s, &|| format!("{} axis {i}", what(k)), &mut st.violations);
         }
     }
     if !stop.done && st.violations.len() < 20 {
