@@ -1544,7 +1544,7 @@ impl Engine {
                         }
                         ax.active = Active::idle(ax.set);
                         ax.active.released = true;
-                        if self.queues[i].is_empty() {
+                        if self.queues[i].is_empty() && a.end_v == 0.0 {
                             ax.state = AxisState::Standstill;
                             ax.set.v = 0.0;
                         } else {
@@ -1593,6 +1593,20 @@ impl Engine {
         }
         let ax = &mut self.axes[axis];
         if ax.active.kind == Kind::Idle && ax.state != AxisState::ErrorStop {
+            if ax.set.v != 0.0 || ax.set.a != 0.0 {
+                // Left at a junction speed with no successor running (it failed): brake
+                // to rest within the axis's limits instead of stopping at once.
+                let lim = ax.cfg.limits;
+                if let Ok(p) = Profile::velocity(ax.set, 0.0, &lim) {
+                    let at = ax.set;
+                    ax.active = Active::idle(at);
+                    ax.active.kind = Kind::Halt;
+                    ax.active.prof = p;
+                    ax.active.released = false;
+                    ax.state = AxisState::DiscreteMotion;
+                    return;
+                }
+            }
             ax.state = AxisState::Standstill;
             ax.set.v = 0.0;
             ax.set.a = 0.0;
