@@ -137,6 +137,9 @@ pub(crate) struct Pending {
     /// Signed velocity at the end of the move (set by a blending successor).
     pub end_v: f64,
     pub sync: SyncParams,
+    /// MC_MoveRelative: the distance, counted from the set position when the command
+    /// becomes active (`target` holds the prediction from the predecessor's target).
+    pub relative: Option<f64>,
 }
 
 /// The running motion of an axis.
@@ -899,6 +902,7 @@ impl Engine {
             buffer,
             end_v: 0.0,
             sync: SyncParams::default(),
+            relative: None,
         };
         match *cmd {
             AxisCommand::MoveAbsolute {
@@ -948,7 +952,10 @@ impl Engine {
                     return Err(ErrorId::InvalidPosition);
                 }
                 p.lim = Self::move_limits(&ax.cfg, d, true)?;
-                p.target = ax.set.p + distance;
+                // From the set position when it becomes active: now (Aborting or idle),
+                // else predicted from the predecessor's target and re-based at activation.
+                p.target = from + distance;
+                p.relative = Some(distance);
             }
             AxisCommand::MoveAdditive { distance } => {
                 if !finite(distance) {
@@ -1227,8 +1234,12 @@ impl Engine {
 
     /// Makes `p` the active command of the axis, starting from the current set point
     /// advanced by `t0` seconds into its profile.
-    fn activate(&mut self, axis: usize, p: Pending, t0: f64) -> Result<(), ErrorId> {
+    fn activate(&mut self, axis: usize, mut p: Pending, t0: f64) -> Result<(), ErrorId> {
         let start = self.axes[axis].set;
+        if let Some(d) = p.relative {
+            p.target = start.p + d;
+            Self::check_target(&self.axes[axis], p.target)?;
+        }
         let mut lim = p.lim;
         let mut tail = None;
         let mut paused = false;
@@ -1353,6 +1364,12 @@ impl Engine {
                     a.t += dt;
                     ax.set = a.prof.at(a.t);
                     if a.t >= a.prof.duration() && !a.released && !a.paused {
+                        self.events.push(i as u32);
+                    } else if a.kind == Kind::Velocity
+                        && a.released
+                        && !self.queues[i].is_empty()
+                    {
+                        // InVelocity was shown (at least one scan): the successor takes over.
                         self.events.push(i as u32);
                     }
                 }
@@ -1484,6 +1501,16 @@ impl Engine {
                     }
                 }
             }
+            Kind::Velocity if a.released && !a.paused => {
+                if !self.queues[i].is_empty() {
+                    if let Some(id) = a.id {
+                        self.cmds.set(id, CmdStatus::Aborted);
+                        self.cmds.set_in_target(id, false);
+                    }
+                    let t0 = a.t - a.prof.duration();
+                    self.start_next(i, t0.clamp(0.0, self.cfg.cycle));
+                }
+            }
             Kind::Position | Kind::Halt | Kind::Velocity | Kind::Stop | Kind::Brake => {
                 if a.released || a.paused || a.t < a.prof.duration() {
                     return;
@@ -1503,13 +1530,6 @@ impl Engine {
                         self.axes[i].active.released = true;
                         if let Some(id) = a.id {
                             self.cmds.set_in_target(id, true);
-                        }
-                        if !self.queues[i].is_empty() {
-                            if let Some(id) = a.id {
-                                self.cmds.set(id, CmdStatus::Aborted);
-                                self.cmds.set_in_target(id, false);
-                            }
-                            self.start_next(i, 0.0);
                         }
                     }
                     Kind::Stop => {

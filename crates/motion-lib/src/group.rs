@@ -892,7 +892,7 @@ impl Engine {
                 }
                 match Geometry::corner_blend(&pred_target, &u1, &u2, d, n) {
                     Some(blend) if d > 1e-9 => {
-                        let vb = self.blend_speed(g, &blend, &next.inputs);
+                        let vb = self.blend_speed(g, &blend);
                         if vb < vj {
                             vj = vb;
                             reason = ReductionReason::Blend;
@@ -977,10 +977,12 @@ impl Engine {
     }
 
     /// The highest constant path speed on a corner blend at which every axis keeps its
-    /// velocity, acceleration and jerk limits, and the block its path acceleration and
-    /// jerk: min over axes of vmax / max|d1|, sqrt(a / max|d2|), cbrt(j / max|d3|)
-    /// (derivatives by arc length, bounded in closed form by [`Geometry::blend_bounds`]).
-    fn blend_speed(&self, g: usize, blend: &Geometry, inp: &PathInputs) -> f64 {
+    /// velocity, acceleration and jerk limits: min over axes of vmax / max|d1|,
+    /// sqrt(a / max|d2|), cbrt(j / max|d3|) (derivatives by arc length, bounded in closed
+    /// form by [`Geometry::blend_bounds`]). The block's Acceleration and Jerk bound the
+    /// path's tangential motion; on the blend the path speed is constant and the axes
+    /// carry the turn.
+    fn blend_speed(&self, g: usize, blend: &Geometry) -> f64 {
         let n = self.groups[g].n();
         let Some((b1, b2, b3)) = blend.blend_bounds(n) else {
             return 0.0;
@@ -997,14 +999,6 @@ impl Engine {
             }
             if b3[i] > 0.0 && l.jmax > 0.0 && l.jmax.is_finite() {
                 v = v.min((l.jmax / b3[i]).cbrt());
-            }
-        }
-        if let Geometry::Blend { half, l, .. } = blend {
-            let k = 2.0 * half / l;
-            let kp = 2.0 * half / (l * l);
-            v = v.min((inp.acceleration.min(inp.deceleration) / k).sqrt());
-            if inp.jerk > 0.0 {
-                v = v.min((inp.jerk / (kp + k * k)).cbrt());
             }
         }
         // Rounding margin: the bounds are met with 1e-9 to spare.
