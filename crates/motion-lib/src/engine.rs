@@ -1507,8 +1507,8 @@ impl Engine {
                         self.cmds.set(id, CmdStatus::Aborted);
                         self.cmds.set_in_target(id, false);
                     }
-                    let t0 = a.t - a.prof.duration();
-                    self.start_next(i, t0.clamp(0.0, self.cfg.cycle));
+                    // It starts from this cycle's set point.
+                    self.start_next(i, 0.0);
                 }
             }
             Kind::Position | Kind::Halt | Kind::Velocity | Kind::Stop | Kind::Brake => {

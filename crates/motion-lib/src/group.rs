@@ -172,6 +172,9 @@ pub(crate) struct GroupRt {
     reduction_count: usize,
     /// (requested, reached) of a lowered junction passed in the last cycle, else (0, 0).
     junction_now: (f64, f64),
+    /// The running move could not be planned to its junction (or failed): the next one
+    /// starts from rest, without its corner blend.
+    drop_junction: bool,
 }
 
 impl GroupRt {
@@ -200,6 +203,7 @@ impl Engine {
             reductions: Vec::with_capacity(16),
             reduction_count: 0,
             junction_now: (0.0, 0.0),
+            drop_junction: false,
         });
         self.groups.len() - 1
     }
@@ -448,6 +452,26 @@ impl Engine {
             l.jmax = 0.0;
         }
         Ok(l)
+    }
+
+    /// The move `p` ends at rest instead of at its junction speed: its successor starts
+    /// from rest (reported as a reduction to 0).
+    fn note_dropped_junction(&mut self, g: usize, p: &GPending) {
+        let gr = &mut self.groups[g];
+        gr.drop_junction = true;
+        gr.reduction_count += 1;
+        if let Some(nx) = gr.queue.front() {
+            if gr.reductions.len() < REDUCTIONS_KEPT {
+                gr.reductions.push(Reduction {
+                    block: nx.seq,
+                    cmd: nx.id,
+                    corner: p.target,
+                    requested: p.end_v,
+                    reached: 0.0,
+                    reason: ReductionReason::Distance,
+                });
+            }
+        }
     }
 
     /// A move or brake that starts while the path accelerates: with the block's (lower)
@@ -887,9 +911,6 @@ impl Engine {
                         d = d.min(remaining * 0.5);
                     }
                 }
-                if std::env::var("MOTION_DEBUG").is_ok() {
-                    eprintln!("LINK u1 {:?} u2 {:?} d {d} room {room} pred_target {:?} active {pred_is_active}", &u1[..n], &u2[..n], &pred_target[..n]);
-                }
                 match Geometry::corner_blend(&pred_target, &u1, &u2, d, n) {
                     Some(blend) if d > 1e-9 => {
                         let vb = self.blend_speed(g, &blend);
@@ -1007,6 +1028,7 @@ impl Engine {
 
     fn group_abort_all(&mut self, g: usize, status: CmdStatus) {
         let gr = &mut self.groups[g];
+        gr.drop_junction = false;
         if let Some(a) = gr.active.as_mut() {
             if let Some(id) = a.id.take() {
                 self.cmds.set(id, status);
@@ -1050,6 +1072,7 @@ impl Engine {
             .as_ref()
             .map(|a| (Self::path_state(a), a.lim));
         let mut tail = None;
+        let mut end_v = p.end_v;
         // A brake that starts on a corner blend finishes the blend at its constant speed
         // (its curvature takes the whole acceleration budget) and brakes on the line after it.
         let in_blend = self.groups[g].active.as_ref().and_then(|a| match a.prefix {
@@ -1127,8 +1150,20 @@ impl Engine {
                     a: a0,
                 };
                 self.raise_jerk(g, &u, s0, &mut lim);
-                let (prof, t) = crate::engine::plan_to(s0, geo.len(), p.end_v, &lim)
-                .map_err(|_| ErrorId::PlanningFailed)?;
+                let planned = match crate::engine::plan_to(s0, geo.len(), p.end_v, &lim) {
+                    Err(_) if p.end_v > 0.0 => {
+                        // The junction speed cannot be planned from here: stop at the
+                        // junction instead (reported), the successor starts from rest.
+                        let r = crate::engine::plan_to(s0, geo.len(), 0.0, &lim);
+                        if r.is_ok() {
+                            self.note_dropped_junction(g, &p);
+                            end_v = 0.0;
+                        }
+                        r
+                    }
+                    r => r,
+                };
+                let (prof, t) = planned.map_err(|_| ErrorId::PlanningFailed)?;
                 tail = t;
                 (geo, prof, lim, None, pe)
             }
@@ -1174,9 +1209,6 @@ impl Engine {
                 (geo, prof, Limits::default(), Some(profs), 0.0)
             }
         };
-        if std::env::var("MOTION_DEBUG").is_ok() {
-            eprintln!("ACT {:?} t0 {t0} prefix {:?} start_v {:?} end_v {} dur {} start {:?} len {}", p.kind, p.prefix.map(|(g, v)| (g.len(), v)), p.start_v, p.end_v, prof.duration(), prof.start(), geom.len());
-        }
         let gr = &mut self.groups[g];
         gr.active = Some(GActive {
             kind: p.kind,
@@ -1189,7 +1221,7 @@ impl Engine {
             target: p.target,
             speed: p.speed,
             lim,
-            end_v: p.end_v,
+            end_v,
             direct,
             tail,
         });
@@ -1499,6 +1531,10 @@ impl Engine {
                     // Next buffered move starts from the junction.
                     let mut started = false;
                     while let Some(mut p) = self.groups[g].queue.pop() {
+                        if std::mem::take(&mut self.groups[g].drop_junction) {
+                            p.prefix = None;
+                            p.start_v = None;
+                        }
                         let t0 = if end_v > 0.0 { leftover.max(0.0) } else { 0.0 };
                         if end_v > 0.0 {
                             p.start_v = Some(end_v);
@@ -1515,7 +1551,11 @@ impl Engine {
                                 started = true;
                                 break;
                             }
-                            Err(e) => self.cmds.set(p.id, CmdStatus::Error(e)),
+                            Err(e) => {
+                                // Its successor cannot join it: it starts from rest.
+                                self.groups[g].drop_junction = true;
+                                self.cmds.set(p.id, CmdStatus::Error(e));
+                            }
                         }
                     }
                     if !started {
