@@ -164,6 +164,8 @@ pub(crate) struct Active {
     pub sync: SyncParams,
     /// Velocity-change tail run after `prof` (see [`plan_to`]).
     pub tail: Option<Profile>,
+    /// A velocity move braked to stop at a software limit: the error raised when it stands.
+    pub limit_stop: Option<ErrorId>,
 }
 
 impl Active {
@@ -182,6 +184,7 @@ impl Active {
             end_v: 0.0,
             sync: SyncParams::default(),
             tail: None,
+            limit_stop: None,
         }
     }
 }
@@ -311,6 +314,41 @@ pub(crate) fn standing(p: f64) -> Profile {
             Profile::velocity(State::default(), 0.0, &UNIT).unwrap_or_else(|_| unreachable!())
         }
     }
+}
+
+/// Lowest and highest position a profile (and its tail) passes: its phase boundaries and
+/// the instants within a phase where the velocity is 0.
+pub(crate) fn position_range(prof: &Profile, tail: Option<&Profile>) -> (f64, f64) {
+    let mut lo = prof.start().p.min(prof.end().p);
+    let mut hi = prof.start().p.max(prof.end().p);
+    for pr in std::iter::once(prof).chain(tail) {
+        for (st, ph) in pr.phase_starts().iter().zip(pr.phases()) {
+            let mut see = |t: f64| {
+                if t >= 0.0 && t <= ph.duration {
+                    let p = st.integrate(t, ph.jerk).p;
+                    lo = lo.min(p);
+                    hi = hi.max(p);
+                }
+            };
+            see(0.0);
+            see(ph.duration);
+            // v + a t + j t^2 / 2 = 0
+            let (a2, b, c) = (ph.jerk / 2.0, st.a, st.v);
+            if a2.abs() > 1e-300 {
+                let disc = b * b - 4.0 * a2 * c;
+                if disc >= 0.0 {
+                    let r = disc.sqrt();
+                    see((-b + r) / (2.0 * a2));
+                    see((-b - r) / (2.0 * a2));
+                }
+            } else if b.abs() > 1e-300 {
+                see(-c / b);
+            }
+        }
+        lo = lo.min(pr.end().p);
+        hi = hi.max(pr.end().p);
+    }
+    (lo, hi)
 }
 
 const UNIT: Limits = Limits {
@@ -677,6 +715,10 @@ impl Engine {
             let lim = ax.cfg.limits;
             let start = ax.set;
             ax.active = Active::idle(start);
+            if start.v == 0.0 && start.a == 0.0 {
+                // At rest already (a velocity move stopped at a limit): nothing to brake.
+                return Ok(());
+            }
             if let Ok(p) = Profile::velocity(start, 0.0, &lim) {
                 ax.active.prof = p;
                 ax.active.kind = Kind::Brake;
@@ -866,6 +908,23 @@ impl Engine {
         }
     }
 
+    /// Refuses a planned positioning whose path leaves the software limits further than
+    /// where it starts (a move from beyond a limit back into the range is allowed).
+    fn check_path(ax: &AxisRt, prof: &Profile, tail: Option<&Profile>) -> Result<(), ErrorId> {
+        if !ax.cfg.sw_limits_enabled || ax.cfg.period().is_some() {
+            return Ok(());
+        }
+        let (lo, hi) = position_range(prof, tail);
+        let start = prof.start().p + ax.origin;
+        let top = ax.cfg.sw_limit_pos.max(start);
+        let bottom = ax.cfg.sw_limit_neg.min(start);
+        let eps = 1e-12 * (1.0 + top.abs().max(bottom.abs()));
+        if hi + ax.origin > top + eps || lo + ax.origin < bottom - eps {
+            return Err(ErrorId::PathBeyondSoftwareLimit);
+        }
+        Ok(())
+    }
+
     fn check_target(ax: &AxisRt, raw: f64) -> Result<(), ErrorId> {
         if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
             let u = raw + ax.origin;
@@ -981,6 +1040,15 @@ impl Engine {
                 };
                 p.kind = Kind::Velocity;
                 p.target = sign * d.velocity.signum() * p.lim.vmax;
+                if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
+                    // At (or past) a limit, a velocity move further out is refused.
+                    let u = ax.set.p + ax.origin;
+                    if (p.target > 0.0 && u >= ax.cfg.sw_limit_pos)
+                        || (p.target < 0.0 && u <= ax.cfg.sw_limit_neg)
+                    {
+                        return Err(ErrorId::TargetBeyondSoftwareLimit);
+                    }
+                }
             }
             AxisCommand::Halt | AxisCommand::Stop => {
                 if !(finite(d.deceleration) && d.deceleration > 0.0) {
@@ -1099,6 +1167,16 @@ impl Engine {
             && self.queues[axis].len() >= self.queues[axis].depth()
         {
             return Err(ErrorId::QueueFull);
+        }
+        if (buffer == BufferMode::Aborting || idle) && pending.kind == Kind::Position {
+            // The path from the current state (a time-optimal overshoot, braking from the
+            // current velocity) must stay within the software limits: refused before any
+            // motion, and before anything running is aborted.
+            let ax = &self.axes[axis];
+            if ax.cfg.sw_limits_enabled {
+                let o = overridden(ax, Kind::Position, &pending.lim, ax.set, pending.target, 0.0)?;
+                Self::check_path(ax, &o.prof, o.tail.as_ref())?;
+            }
         }
         let id = self.cmds.alloc(CmdStatus::Queued);
         let pending = Pending { id, ..pending };
@@ -1256,6 +1334,9 @@ impl Engine {
             _ => Ok(Active::idle(start).prof),
         }
         .map_err(|_| ErrorId::PlanningFailed)?;
+        if p.kind == Kind::Position {
+            Self::check_path(&self.axes[axis], &prof, tail.as_ref())?;
+        }
         let ax = &mut self.axes[axis];
         let class = match p.kind {
             Kind::Position | Kind::Halt => AxisState::DiscreteMotion,
@@ -1280,6 +1361,7 @@ impl Engine {
             end_v: p.end_v,
             sync: p.sync,
             tail,
+            limit_stop: None,
         };
         if p.kind == Kind::Stop {
             ax.stop_owner = Some(p.id);
@@ -1330,6 +1412,7 @@ impl Engine {
             end_v: 0.0,
             sync: SyncParams::default(),
             tail: None,
+            limit_stop: None,
         };
         ax.state = AxisState::ContinuousMotion;
         let id = self.cmds.alloc(CmdStatus::Done);
@@ -1363,6 +1446,13 @@ impl Engine {
                 _ => {
                     a.t += dt;
                     ax.set = a.prof.at(a.t);
+                    if a.kind == Kind::Velocity
+                        && ax.cfg.sw_limits_enabled
+                        && ax.cfg.period().is_none()
+                        && ax.set.v != 0.0
+                    {
+                        guard_limit(&ax.cfg, a, ax.set, ax.origin, dt, &mut self.cmds);
+                    }
                     if a.t >= a.prof.duration() && !a.released && !a.paused {
                         self.events.push(i as u32);
                     } else if a.kind == Kind::Velocity
@@ -1380,7 +1470,8 @@ impl Engine {
                 if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop {
                     let u = ax.set.p + ax.origin;
                     if ax.cfg.period().is_none()
-                        && (u > ax.cfg.sw_limit_pos || u < ax.cfg.sw_limit_neg)
+                        && ((u > ax.cfg.sw_limit_pos && ax.set.v > 0.0)
+                            || (u < ax.cfg.sw_limit_neg && ax.set.v < 0.0))
                     {
                         self.events.push(i as u32);
                     }
@@ -1414,10 +1505,12 @@ impl Engine {
         let ax = &self.axes[i];
         if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop && ax.cfg.period().is_none()
         {
+            // Only motion further out is an error: an axis standing beyond a limit (after
+            // an error brake) can be reset and moved back into the range.
             let u = ax.set.p + ax.origin;
-            if u > ax.cfg.sw_limit_pos {
+            if u > ax.cfg.sw_limit_pos && ax.set.v > 0.0 {
                 let _ = self.raise_axis_error(i, ErrorId::SoftwareLimitPositive);
-            } else if u < ax.cfg.sw_limit_neg {
+            } else if u < ax.cfg.sw_limit_neg && ax.set.v < 0.0 {
                 let _ = self.raise_axis_error(i, ErrorId::SoftwareLimitNegative);
             }
         }
@@ -1555,6 +1648,16 @@ impl Engine {
                         };
                         ax.active = Active::idle(ax.set);
                     }
+                    _ if a.limit_stop.is_some() => {
+                        // A velocity move stopped at a software limit: the axis error.
+                        let ax = &mut self.axes[i];
+                        ax.set = a.prof.end();
+                        ax.active = Active::idle(ax.set);
+                        ax.active.id = a.id;
+                        if let Some(e) = a.limit_stop {
+                            let _ = self.raise_axis_error(i, e);
+                        }
+                    }
                     _ => {
                         let end = a.prof.end();
                         let ax = &mut self.axes[i];
@@ -1648,6 +1751,51 @@ impl Engine {
             d1 * n.buffer.junction_speed(p.speed, n.speed)
         } else {
             0.0
+        }
+    }
+}
+
+/// A velocity move on an axis with software limits: when stopping from the next cycle's
+/// state (with the axis's own deceleration and jerk) would pass the limit ahead, it brakes
+/// now on a positioning profile that stops exactly at the limit.
+fn guard_limit(
+    cfg: &AxisConfig,
+    a: &mut Active,
+    now: State,
+    origin: f64,
+    dt: f64,
+    cmds: &mut CmdTable,
+) {
+    let dir = now.v.signum();
+    let limit = if dir > 0.0 {
+        cfg.sw_limit_pos
+    } else {
+        cfg.sw_limit_neg
+    } - origin;
+    let mut l = cfg.limits;
+    l.vmax = l.vmax.max(now.v.abs()).max(a.lim.vmax);
+    let next = a.prof.at(a.t + dt);
+    let Ok(stop) = Profile::velocity(next, 0.0, &l) else {
+        return;
+    };
+    if (stop.end().p - limit) * dir <= 0.0 {
+        return;
+    }
+    if let Ok(p) = Profile::position(now, limit, 0.0, &l) {
+        a.kind = Kind::Position;
+        a.prof = p;
+        a.t = 0.0;
+        a.tail = None;
+        a.target = limit;
+        a.end_v = 0.0;
+        a.released = false;
+        a.limit_stop = Some(if dir > 0.0 {
+            ErrorId::SoftwareLimitPositive
+        } else {
+            ErrorId::SoftwareLimitNegative
+        });
+        if let Some(id) = a.id {
+            cmds.set_in_target(id, false);
         }
     }
 }
