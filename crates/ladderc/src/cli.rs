@@ -686,8 +686,8 @@ fn run_program(
 /// The run summary's lines about lowered junction speeds, read from the trace's
 /// `group.<name>.junction_requested|junction_reached` columns (non-zero only in the cycle the
 /// path passes such a junction): the group, the block that starts there (the watched
-/// `<block>.Active` column that turns TRUE in that row or the next), the cycle, the speed
-/// requested and reached. Empty when the trace has no such columns or nothing was lowered.
+/// `<block>.Active` column that turns TRUE in that row or the next; else the block whose `Done`
+/// rises there), the cycle, the speed requested and reached. Empty when the trace has no such columns or nothing was lowered.
 pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
     let mut lines = trace.lines();
     let Some(header) = lines.next() else {
@@ -700,6 +700,11 @@ pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
         .iter()
         .enumerate()
         .filter_map(|(k, c)| c.strip_suffix(".Active").map(|b| (k, b)))
+        .collect();
+    let done: Vec<(usize, &str)> = cols
+        .iter()
+        .enumerate()
+        .filter_map(|(k, c)| c.strip_suffix(".Done").map(|b| (k, b)))
         .collect();
     let is_true = |row: &[&str], k: usize| row.get(k).is_some_and(|x| *x == "1" || *x == "TRUE");
     let mut out = Vec::new();
@@ -725,7 +730,18 @@ pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
                         is_true(&rows[x], *j) && (x == 0 || !is_true(&rows[x - 1], *j))
                     })
                 })
-                .map_or(String::new(), |(_, b)| format!(" before {b}"));
+                .map(|(_, b)| format!(" before {b}"))
+                .or_else(|| {
+                    // without Active columns: the block whose Done rises there ends at it
+                    done.iter()
+                        .find(|(j, _)| {
+                            (r..(r + 2).min(rows.len())).any(|x| {
+                                is_true(&rows[x], *j) && (x == 0 || !is_true(&rows[x - 1], *j))
+                            })
+                        })
+                        .map(|(_, b)| format!(" after {b}"))
+                })
+                .unwrap_or_default();
             let cycle = row.first().copied().unwrap_or("?");
             out.push(format!(
                 "motion: group {group}: junction{block} at cycle {cycle}: requested {req} {unit}/s, reached {reached:.6} {unit}/s (lowered to keep the axis limits; motion-lib README, \"Junction speeds\")"

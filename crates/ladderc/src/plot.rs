@@ -6,7 +6,9 @@
 //! `|v|` when there are several axes), and the blocks' events marked the way paper B's Fig. 8 marks them
 //! ([`events`]): a block's start (rising `Active`, or rising `Busy` when the block has no `Active`
 //! column) as a green vertical line, a junction (one block ends, by `Done` or `CommandAborted`, in the
-//! cycle another starts, or the next cycle) as a blue one, a block's end that no other block continues as a red one; each
+//! cycle another starts, or the next cycle) as a blue one, a block's end that no other block continues as a red one
+//! (with only `Done` columns, as in the README's command: each block's Done is the junction to the
+//! next block's, the first block starts with the first axis motion); each
 //! line is labelled with the block and, for a junction, the path speed there. A junction whose speed the
 //! axis limits lowered (the trace's `group.<name>.junction_requested` column is non-zero there) is drawn
 //! in magenta and labelled "(lowered from <requested>)". Block outputs of a row were computed in the scan
@@ -105,6 +107,37 @@ pub fn events(columns: &[(String, Vec<f64>)]) -> Vec<Event> {
         }
     }
     let mut out = Vec::new();
+    if starts.is_empty() && !ends.is_empty() {
+        // Only Done / CommandAborted watched (the README's command): a block ending while a later one
+        // ends afterwards hands over to it; the first starts with the first motion of an axis.
+        ends.sort();
+        let moving = columns
+            .iter()
+            .filter(|(n, _)| n.starts_with("axis.") && n.ends_with(".velocity"))
+            .filter_map(|(_, v)| v.iter().position(|x| *x != 0.0))
+            .min();
+        if let Some(first) = moving {
+            out.push(Event::Start {
+                row: first + 1,
+                block: ends[0].1.clone(),
+            });
+        }
+        for (k, (row, from)) in ends.iter().enumerate() {
+            out.push(match ends.get(k + 1) {
+                Some((_, to)) if to != from => Event::Junction {
+                    row: *row,
+                    from: from.clone(),
+                    to: to.clone(),
+                },
+                _ => Event::End {
+                    row: *row,
+                    block: from.clone(),
+                },
+            });
+        }
+        out.sort_by_key(Event::row);
+        return out;
+    }
     let mut used = vec![false; starts.len()];
     for (row, from) in ends {
         match starts
@@ -463,6 +496,35 @@ mod tests {
         );
         assert!(text.contains("end b"));
         assert!(text.contains("path speed |v|"));
+    }
+
+    #[test]
+    fn done_columns_alone_give_start_junctions_and_end() {
+        let col = |n: &str, v: &[u8]| (n.to_string(), v.iter().map(|&x| x as f64).collect());
+        let columns = vec![
+            col("p.a.Done", &[0, 0, 1, 1, 1, 1]),
+            col("p.b.Done", &[0, 0, 0, 0, 1, 1]),
+            col("axis.X.velocity", &[0, 1, 1, 1, 0, 0]),
+        ];
+        let s = |x: &str| x.to_string();
+        assert_eq!(
+            events(&columns),
+            vec![
+                Event::Start {
+                    row: 2,
+                    block: s("p.a")
+                },
+                Event::Junction {
+                    row: 2,
+                    from: s("p.a"),
+                    to: s("p.b")
+                },
+                Event::End {
+                    row: 4,
+                    block: s("p.b")
+                },
+            ]
+        );
     }
 
     #[test]
