@@ -726,9 +726,8 @@ pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
             let block = active
                 .iter()
                 .find(|(j, _)| {
-                    (r..(r + 2).min(rows.len())).any(|x| {
-                        is_true(&rows[x], *j) && (x == 0 || !is_true(&rows[x - 1], *j))
-                    })
+                    (r..(r + 2).min(rows.len()))
+                        .any(|x| is_true(&rows[x], *j) && (x == 0 || !is_true(&rows[x - 1], *j)))
                 })
                 .map(|(_, b)| format!(" before {b}"))
                 .or_else(|| {

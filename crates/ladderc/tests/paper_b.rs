@@ -261,18 +261,35 @@ fn check_limits(r: &Run) -> f64 {
                 "{a} row {i}: position {}",
                 p[i]
             );
-            assert!(v[i].abs() <= V_MAX * (1.0 + 1e-9), "{a} row {i}: velocity {}", v[i]);
-            assert!(acc[i].abs() <= A_MAX * (1.0 + 1e-9), "{a} row {i}: acceleration {}", acc[i]);
+            assert!(
+                v[i].abs() <= V_MAX * (1.0 + 1e-9),
+                "{a} row {i}: velocity {}",
+                v[i]
+            );
+            assert!(
+                acc[i].abs() <= A_MAX * (1.0 + 1e-9),
+                "{a} row {i}: acceleration {}",
+                acc[i]
+            );
             worst_a = worst_a.max(acc[i].abs());
             if i > 0 {
                 let dv = (v[i] - v[i - 1]).abs();
-                assert!(dv <= A_MAX * dt * (1.0 + 1e-9) + 1e-12, "{a} row {i}: dv {dv}");
+                assert!(
+                    dv <= A_MAX * dt * (1.0 + 1e-9) + 1e-12,
+                    "{a} row {i}: dv {dv}"
+                );
                 let da = (acc[i] - acc[i - 1]).abs();
-                assert!(da <= J_MAX * dt * (1.0 + 1e-9) + 1e-12, "{a} row {i}: da {da}");
+                assert!(
+                    da <= J_MAX * dt * (1.0 + 1e-9) + 1e-12,
+                    "{a} row {i}: da {da}"
+                );
             }
             if i > 1 {
                 let d2 = (v[i] - 2.0 * v[i - 1] + v[i - 2]).abs();
-                assert!(d2 <= J_MAX * dt * dt * (1.0 + 1e-9) + 1e-12, "{a} row {i}: d2v {d2}");
+                assert!(
+                    d2 <= J_MAX * dt * dt * (1.0 + 1e-9) + 1e-12,
+                    "{a} row {i}: d2v {d2}"
+                );
             }
         }
     }
@@ -291,7 +308,14 @@ fn reductions(r: &Run) -> Vec<(String, f64, f64)> {
                 .unwrap()
                 .to_string();
             let num = |key: &str| -> f64 {
-                l.split(key).nth(1).unwrap().split(' ').next().unwrap().parse().unwrap()
+                l.split(key)
+                    .nth(1)
+                    .unwrap()
+                    .split(' ')
+                    .next()
+                    .unwrap()
+                    .parse()
+                    .unwrap()
             };
             (block, num("requested "), num("reached "))
         })
@@ -394,7 +418,10 @@ fn speeds_variant_reaches_40_and_70_within_the_limits() {
     assert!(traced_reductions(&r).is_empty());
     check_end(&r);
     let worst = check_limits(&r);
-    eprintln!("paper_b_speeds: largest axis acceleration {worst}, C reached in row {}", done[2]);
+    eprintln!(
+        "paper_b_speeds: largest axis acceleration {worst}, C reached in row {}",
+        done[2]
+    );
     for label in [
         "junction move_a-&gt;move_b |v|=40.000",
         "junction move_b-&gt;move_c |v|=70.000",
@@ -417,8 +444,14 @@ fn corner_distance_variant_lowers_the_junction_speeds_its_blends_cannot_take() {
     // 50 mm blends: the curvature allows 26.69 mm/s at A and 17.67 mm/s at B (README.md)
     let red = reductions(&r);
     assert_eq!(red.len(), 2, "{}", r.stderr);
-    assert_eq!((red[0].0.as_str(), red[0].1), ("paper_b_corner.move_b", 40.0));
-    assert_eq!((red[1].0.as_str(), red[1].1), ("paper_b_corner.move_c", 70.0));
+    assert_eq!(
+        (red[0].0.as_str(), red[0].1),
+        ("paper_b_corner.move_b", 40.0)
+    );
+    assert_eq!(
+        (red[1].0.as_str(), red[1].1),
+        ("paper_b_corner.move_c", 70.0)
+    );
     assert!((red[0].2 - 26.688179).abs() < 1e-5, "{red:?}");
     assert!((red[1].2 - 17.674097).abs() < 1e-5, "{red:?}");
     let worst = check_limits(&r);

@@ -1174,7 +1174,14 @@ impl Engine {
             // motion, and before anything running is aborted.
             let ax = &self.axes[axis];
             if ax.cfg.sw_limits_enabled {
-                let o = overridden(ax, Kind::Position, &pending.lim, ax.set, pending.target, 0.0)?;
+                let o = overridden(
+                    ax,
+                    Kind::Position,
+                    &pending.lim,
+                    ax.set,
+                    pending.target,
+                    0.0,
+                )?;
                 Self::check_path(ax, &o.prof, o.tail.as_ref())?;
             }
         }
@@ -1455,10 +1462,7 @@ impl Engine {
                     }
                     if a.t >= a.prof.duration() && !a.released && !a.paused {
                         self.events.push(i as u32);
-                    } else if a.kind == Kind::Velocity
-                        && a.released
-                        && !self.queues[i].is_empty()
-                    {
+                    } else if a.kind == Kind::Velocity && a.released && !self.queues[i].is_empty() {
                         // InVelocity was shown (at least one scan): the successor takes over.
                         self.events.push(i as u32);
                     }

@@ -1577,9 +1577,8 @@ fn reachable(start: State, room: f64, vj: f64, lim: &Limits) -> f64 {
     let mut l = *lim;
     l.vmax = l.vmax.max(start.v.abs()).max(vj);
     l.amax = l.amax.max(start.a.abs());
-    let need = |v: f64| -> f64 {
-        Profile::velocity(start, v, &l).map_or(f64::INFINITY, |p| p.end().p)
-    };
+    let need =
+        |v: f64| -> f64 { Profile::velocity(start, v, &l).map_or(f64::INFINITY, |p| p.end().p) };
     if room <= 0.0 {
         return 0.0;
     }

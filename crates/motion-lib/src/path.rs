@@ -454,7 +454,11 @@ impl Geometry {
                 let sc = s.clamp(0.0, *len);
                 let extra = s - sc;
                 // First half from `start`; second half mirrored from `end`.
-                let (second, sig) = if sc <= *l { (false, sc) } else { (true, len - sc) };
+                let (second, sig) = if sc <= *l {
+                    (false, sc)
+                } else {
+                    (true, len - sc)
+                };
                 let th = half * (sig / l) * (sig / l);
                 let dth = 2.0 * half * sig / (l * l);
                 let (sn, cs) = th.sin_cos();

@@ -253,7 +253,10 @@ fn max_corner_deviation_bounds_the_blend() {
     // Without a transition the path goes through the corner, where it stops: no speed is
     // feasible at a sharp corner (the velocity vector would step).
     let (closest, jump, _, _) = corner_run([100.0, 0.0], [100.0, 100.0], TransitionMode::None, 0.0);
-    assert!(closest < 1e-6 && jump <= 500.0 * DT * (1.0 + 1e-9), "{closest} {jump}");
+    assert!(
+        closest < 1e-6 && jump <= 500.0 * DT * (1.0 + 1e-9),
+        "{closest} {jump}"
+    );
 }
 
 #[test]

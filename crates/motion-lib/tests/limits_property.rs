@@ -13,7 +13,9 @@
 //! Invariant: deterministic (fixed seed); `LIMITS_PROPERTY_SEQUENCES` overrides the count.
 
 use motion_lib::axis::AxisConfig;
-use motion_lib::blocks::{McHalt, McMoveAbsolute, McMoveAdditive, McMoveRelative, McMoveVelocity, McPower};
+use motion_lib::blocks::{
+    McHalt, McMoveAbsolute, McMoveAdditive, McMoveRelative, McMoveVelocity, McPower,
+};
 use motion_lib::buffer::{BufferMode, Direction, TransitionMode};
 use motion_lib::engine::{Engine, EngineConfig};
 use motion_lib::group_blocks::{
@@ -141,31 +143,26 @@ impl AxisCheck {
                 out.push(format!("{}: {}", what(), msg()));
             }
         };
-        bad(
-            s.v.abs() > l.vmax * (1.0 + rel),
-            &|| format!("|v| {} > vmax {}", s.v, l.vmax),
-        );
-        bad(
-            s.a.abs() > amax * (1.0 + rel),
-            &|| format!("|a| {} > amax {}", s.a, amax),
-        );
+        bad(s.v.abs() > l.vmax * (1.0 + rel), &|| {
+            format!("|v| {} > vmax {}", s.v, l.vmax)
+        });
+        bad(s.a.abs() > amax * (1.0 + rel), &|| {
+            format!("|a| {} > amax {}", s.a, amax)
+        });
         if let Some(p) = self.hist.last().copied() {
             let eps = 1e-12 * (s.p.abs().max(p.p.abs()) + l.vmax * dt);
-            bad(
-                (s.p - p.p).abs() > l.vmax * dt * (1.0 + rel) + eps,
-                &|| format!("|dp| {} > vmax dt {}", (s.p - p.p).abs(), l.vmax * dt),
-            );
+            bad((s.p - p.p).abs() > l.vmax * dt * (1.0 + rel) + eps, &|| {
+                format!("|dp| {} > vmax dt {}", (s.p - p.p).abs(), l.vmax * dt)
+            });
             let eps = 1e-12 * l.vmax;
-            bad(
-                (s.v - p.v).abs() > amax * dt * (1.0 + rel) + eps,
-                &|| format!("|dv| {} > amax dt {}", (s.v - p.v).abs(), amax * dt),
-            );
+            bad((s.v - p.v).abs() > amax * dt * (1.0 + rel) + eps, &|| {
+                format!("|dv| {} > amax dt {}", (s.v - p.v).abs(), amax * dt)
+            });
             if l.jmax > 0.0 {
                 let eps = 1e-12 * amax;
-                bad(
-                    (s.a - p.a).abs() > l.jmax * dt * (1.0 + rel) + eps,
-                    &|| format!("|da| {} > jmax dt {}", (s.a - p.a).abs(), l.jmax * dt),
-                );
+                bad((s.a - p.a).abs() > l.jmax * dt * (1.0 + rel) + eps, &|| {
+                    format!("|da| {} > jmax dt {}", (s.a - p.a).abs(), l.jmax * dt)
+                });
                 if self.hist.len() >= 2 {
                     let q = self.hist[self.hist.len() - 2];
                     let d2 = s.v - 2.0 * p.v + q.v;
@@ -236,7 +233,11 @@ impl Pattern {
     fn random(r: &mut Rng, span: u64) -> Pattern {
         Pattern {
             start: r.n(span),
-            hold: if r.chance(0.5) { 1 + r.n(3) } else { 1 + r.n(400) },
+            hold: if r.chance(0.5) {
+                1 + r.n(3)
+            } else {
+                1 + r.n(400)
+            },
             again: if r.chance(0.2) {
                 Some(r.n(span * 2))
             } else {
@@ -372,7 +373,10 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
                 Axb::Vel(b) => format!("vel v {} {:?}", b.velocity, b.buffer_mode),
                 Axb::Halt(b) => format!("halt {:?}", b.buffer_mode),
             };
-            eprintln!("{d} start {} hold {} again {:?}", pat.start, pat.hold, pat.again);
+            eprintln!(
+                "{d} start {} hold {} again {:?}",
+                pat.start, pat.hold, pat.again
+            );
         }
         eprintln!("limits {:?} dt {}", sc.lim, sc.dt);
     }
@@ -427,8 +431,7 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
             st.violations
                 .push(format!("{}: {actives} blocks Active", what(k)));
         }
-        if (stop.done || stop.error || stop.command_aborted) && blocks.iter().all(|b| !b.2.in_cmd)
-        {
+        if (stop.done || stop.error || stop.command_aborted) && blocks.iter().all(|b| !b.2.in_cmd) {
             break;
         }
         if k > limit {
@@ -445,13 +448,21 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
             a: eng.set_acceleration_of(ax).unwrap(),
         };
         if trace_seq() == Some(seq) {
-            eprintln!("{k} {:?} p {} v {} a {}", eng.axis_state(ax).unwrap(), s.p, s.v, s.a);
+            eprintln!(
+                "{k} {:?} p {} v {} a {}",
+                eng.axis_state(ax).unwrap(),
+                s.p,
+                s.v,
+                s.a
+            );
         }
         chk.push(s, &|| what(k), &mut st.violations);
     }
     if !stop.done && st.violations.len() < 20 {
-        st.violations
-            .push(format!("seq {seq}: the closing halt ended {:?}", stop.error_id));
+        st.violations.push(format!(
+            "seq {seq}: the closing halt ended {:?}",
+            stop.error_id
+        ));
     }
     for (_, _, oc) in &blocks {
         st.commands += oc.accepted as u64;
@@ -594,9 +605,32 @@ fn group(r: &mut Rng, st: &mut Stats, seq: u64) {
     if trace_seq() == Some(seq) {
         for (b, pat, _) in &blocks {
             match b {
-                Grb::Abs(b) => eprintln!("abs {:?} v {} {:?} {:?} {} start {} hold {} again {:?}", &b.position[..na], b.velocity, b.buffer_mode, b.transition_mode, b.transition_parameter, pat.start, pat.hold, pat.again),
-                Grb::Rel(b) => eprintln!("rel {:?} v {} {:?} {:?} {} start {} hold {} again {:?}", &b.distance[..na], b.velocity, b.buffer_mode, b.transition_mode, b.transition_parameter, pat.start, pat.hold, pat.again),
-                Grb::Halt(b) => eprintln!("halt {:?} start {} hold {} again {:?}", b.buffer_mode, pat.start, pat.hold, pat.again),
+                Grb::Abs(b) => eprintln!(
+                    "abs {:?} v {} {:?} {:?} {} start {} hold {} again {:?}",
+                    &b.position[..na],
+                    b.velocity,
+                    b.buffer_mode,
+                    b.transition_mode,
+                    b.transition_parameter,
+                    pat.start,
+                    pat.hold,
+                    pat.again
+                ),
+                Grb::Rel(b) => eprintln!(
+                    "rel {:?} v {} {:?} {:?} {} start {} hold {} again {:?}",
+                    &b.distance[..na],
+                    b.velocity,
+                    b.buffer_mode,
+                    b.transition_mode,
+                    b.transition_parameter,
+                    pat.start,
+                    pat.hold,
+                    pat.again
+                ),
+                Grb::Halt(b) => eprintln!(
+                    "halt {:?} start {} hold {} again {:?}",
+                    b.buffer_mode, pat.start, pat.hold, pat.again
+                ),
             }
         }
         eprintln!("limits {lims:?} dt {}", sc.dt);
@@ -654,8 +688,7 @@ fn group(r: &mut Rng, st: &mut Stats, seq: u64) {
             st.violations
                 .push(format!("{}: {actives} blocks Active", what(k)));
         }
-        if (stop.done || stop.error || stop.command_aborted) && blocks.iter().all(|b| !b.2.in_cmd)
-        {
+        if (stop.done || stop.error || stop.command_aborted) && blocks.iter().all(|b| !b.2.in_cmd) {
             break;
         }
         if k > limit {
@@ -689,8 +722,10 @@ fn group(r: &mut Rng, st: &mut Stats, seq: u64) {
         }
     }
     if !stop.done && st.violations.len() < 20 {
-        st.violations
-            .push(format!("seq {seq}: the closing group halt ended {:?}", stop.error_id));
+        st.violations.push(format!(
+            "seq {seq}: the closing group halt ended {:?}",
+            stop.error_id
+        ));
     }
     for (_, _, oc) in &blocks {
         st.commands += oc.accepted as u64;
