@@ -1598,16 +1598,15 @@ impl Engine {
                     }
                 }
             }
-            Kind::Velocity if a.released && !a.paused => {
-                if !self.queues[i].is_empty() {
-                    if let Some(id) = a.id {
-                        self.cmds.set(id, CmdStatus::Aborted);
-                        self.cmds.set_in_target(id, false);
-                    }
-                    // It starts from this cycle's set point.
-                    self.start_next(i, 0.0);
+            Kind::Velocity if a.released && !a.paused && !self.queues[i].is_empty() => {
+                if let Some(id) = a.id {
+                    self.cmds.set(id, CmdStatus::Aborted);
+                    self.cmds.set_in_target(id, false);
                 }
+                // It starts from this cycle's set point.
+                self.start_next(i, 0.0);
             }
+            Kind::Velocity if a.released && !a.paused => {}
             Kind::Position | Kind::Halt | Kind::Velocity | Kind::Stop | Kind::Brake => {
                 if a.released || a.paused || a.t < a.prof.duration() {
                     return;

@@ -303,7 +303,8 @@ impl Geometry {
     pub fn corner_blend(corner: &Vecn, u1: &Vecn, u2: &Vecn, d: f64, n: usize) -> Option<Geometry> {
         let c: f64 = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>().clamp(-1.0, 1.0);
         let alpha = c.acos();
-        if !(d > 0.0) || !(alpha > 1e-9) || alpha > std::f64::consts::PI - 1e-6 {
+        let usable = d > 0.0 && alpha > 1e-9 && alpha <= std::f64::consts::PI - 1e-6;
+        if !usable {
             return None;
         }
         let half = alpha / 2.0;

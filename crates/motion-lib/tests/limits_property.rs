@@ -566,12 +566,12 @@ fn group(r: &mut Rng, st: &mut Stats, seq: u64) {
         if r.chance(0.2) {
             // Collinear with the origin: tangent junctions.
             let s = r.range(0.5, 2.0);
-            for i in 0..na {
-                pos[i] = sc.dist * s * (i as f64 + 1.0) / na as f64;
+            for (i, x) in pos.iter_mut().take(na).enumerate() {
+                *x = sc.dist * s * (i as f64 + 1.0) / na as f64;
             }
         }
         let b = match r.n(5) {
-            0 | 1 | 2 => Grb::Abs(McMoveLinearAbsolute {
+            0..=2 => Grb::Abs(McMoveLinearAbsolute {
                 position: pos,
                 velocity: v,
                 acceleration: a,
