@@ -106,17 +106,21 @@ fn velocity_move_stops_at_the_limit_reset_and_back_into_range() {
         .iter()
         .position(|e| *e == 100.0)
         .expect("ErrorID 100 (SoftwareLimitPositive)");
-    assert!((p[err_row] - 50.0).abs() < 1e-9, "{}", p[err_row]);
-    assert!(v[err_row].abs() < 1e-9);
+    // a row's block outputs come from the scan before that cycle's engine step: the axis state they
+    // report is the row before
+    let at = err_row - 1;
+    assert!((p[at] - 50.0).abs() < 1e-9, "{}", p[at]);
+    assert!(v[at].abs() < 1e-9);
     // reset and step 2 reached; further out refused with ErrorID 27
     assert!(step.contains(&2.0));
     assert!(column(&t, "lim.out.ErrorID").contains(&27.0));
     // back into the range: Done at 20
     let done = column(&t, "lim.back.Done");
     let d = done.iter().position(|x| *x == 1.0).expect("back Done");
-    assert!((p[d] - 20.0).abs() < 1e-9, "{}", p[d]);
+    assert!((p[d - 1] - 20.0).abs() < 1e-9, "{}", p[d - 1]);
     eprintln!(
-        "software limit run: stopped at {} (limit 50) in row {err_row}, back at 20 in row {d}",
-        p[err_row]
+        "software limit run: stopped at {} (limit 50) in row {at}, back at 20 in row {}",
+        p[at],
+        d - 1
     );
 }

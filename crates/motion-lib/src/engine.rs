@@ -1654,7 +1654,12 @@ impl Engine {
                     _ if a.limit_stop.is_some() => {
                         // A velocity move stopped at a software limit: the axis error.
                         let ax = &mut self.axes[i];
-                        ax.set = a.prof.end();
+                        // At rest at the limit (the profile's end, rounding aside).
+                        ax.set = State {
+                            p: a.prof.end().p,
+                            v: 0.0,
+                            a: 0.0,
+                        };
                         ax.active = Active::idle(ax.set);
                         ax.active.id = a.id;
                         if let Some(e) = a.limit_stop {
