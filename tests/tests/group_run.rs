@@ -86,8 +86,8 @@ const WATCH: &str = "lines.powered,lines.enabled,lines.go2,lines.go3,lines.done1
                      axis.A1.velocity,axis.A2.velocity,axis.A3.velocity,\
                      axis.A1.acceleration,axis.A2.acceleration,axis.A3.acceleration";
 
-/// Cycles of 10 ms: block 3 ends at about 191 s.
-const CYCLES: &str = "19300";
+/// Cycles of 10 ms: block 3 ends at about 218.3 s (the TMNone corners are passed at rest).
+const CYCLES: &str = "22000";
 
 fn project(program: &str) -> (tempfile::TempDir, PathBuf) {
     let dir = tempfile::tempdir().unwrap();
@@ -132,14 +132,15 @@ fn group_enable_and_three_linear_moves_give_identical_traces_with_both_methods()
     let (_dir, src) = project(LINES);
     let il = run_trace(&src, CYCLES, &["--strategy", "il"]);
     let template = run_trace(&src, CYCLES, &["--strategy", "template"]);
-    assert_eq!(il.lines().count(), 19301);
+    assert_eq!(il.lines().count(), 22001);
     for (k, (a, b)) in il.lines().zip(template.lines()).enumerate() {
         assert_eq!(a, b, "the traces differ at row {k}");
     }
 
     // What the run shows (paper B): the group is enabled once the axes are powered; block 1 (Aborting)
-    // ends at the junction velocity min(40, 55) = 40 (BlendingLow of block 2), block 2 at max(55, 70) = 70
-    // (BlendingHigh of block 3), block 3 stops at C.
+    // would end at the junction velocity min(40, 55) = 40 (BlendingLow of block 2), block 2 at
+    // max(55, 70) = 70 (BlendingHigh of block 3), but at these TMNone corners no speed keeps the axis
+    // limits: both are passed at rest (and reported), block 3 stops at C.
     let t = &il;
     let enabled = first_rise(&column(t, "lines.enabled"));
     let (d1, d2, d3) = (
@@ -156,8 +157,8 @@ fn group_enable_and_three_linear_moves_give_identical_traces_with_both_methods()
         .iter()
         .all(|&e| e == 0.0));
     let pv = column(t, "lines.pv");
-    assert!((pv[d1] - 40.0).abs() < 1e-6, "junction A: {}", pv[d1]);
-    assert!((pv[d2] - 70.0).abs() < 1e-6, "junction B: {}", pv[d2]);
+    assert!(pv[d1].abs() < 1e-9, "junction A: {}", pv[d1]);
+    assert!(pv[d2].abs() < 1e-9, "junction B: {}", pv[d2]);
     assert!(pv.iter().all(|&v| v <= 70.0 + 1e-6));
     // the blocks' Active outputs hand over at the junctions
     let act2 = column(t, "lines.mv2.Active");

@@ -5,7 +5,9 @@
 //! Output: `ladderc_motion.c` (one global engine created by `ladderc_motion_init`, returned by
 //! `struct McEngine *ladderc_motion_engine(void)` to the block bodies, stepped once per scan cycle by
 //! `ladderc_motion_step` after every program ran, destroyed at exit), `motion_lib.h`, and the watchable
-//! trace columns `axis.<name>.position|velocity|acceleration` (set values after the cycle's engine step).
+//! trace columns `axis.<name>.position|velocity|acceleration` (set values after the cycle's engine step)
+//! and `group.<name>.junction_requested|junction_reached` (non-zero only in the cycle the path passes a
+//! junction whose speed the axis limits lowered).
 //! Invariants: axis `i` of the configuration is engine axis `i` (the `AxisNo` of its `AXIS_REF`), group
 //! `j` is engine group `j`; the engine's cycle time is the scan cycle time (the caller checks that they
 //! agree); a configuration the engine refuses stops the program at init with exit status 3 and a message.
@@ -57,6 +59,21 @@ const SIGNALS: [(&str, &str); 3] = [
     ("acceleration", "ladderc_axis_acceleration"),
 ];
 
+/// The trace columns of one group: `(suffix, C array, motion-lib reader)`. Both are 0 except
+/// in the cycle the path passes a junction whose speed the limits lowered.
+const GROUP_SIGNALS: [(&str, &str, &str); 2] = [
+    (
+        "junction_requested",
+        "ladderc_group_junction_requested",
+        "mc_group_junction_requested",
+    ),
+    (
+        "junction_reached",
+        "ladderc_group_junction_reached",
+        "mc_group_junction_reached",
+    ),
+];
+
 /// A finite `f64` as a C `double` literal (non-finite values become 0: the configuration loader refuses
 /// them before this point).
 fn c_double(v: f64) -> String {
@@ -70,6 +87,10 @@ fn c_double(v: f64) -> String {
 impl MotionRuntime {
     fn array_len(&self) -> usize {
         self.axes.len().max(1)
+    }
+
+    fn group_len(&self) -> usize {
+        self.groups.len().max(1)
     }
 
     /// The files of the runtime, with their relative paths in the generated project.
@@ -100,6 +121,9 @@ impl MotionRuntime {
         for (_, arr) in SIGNALS {
             let _ = writeln!(s, "extern IEC_LREAL {arr}[{}];", self.array_len());
         }
+        for (_, arr, _) in GROUP_SIGNALS {
+            let _ = writeln!(s, "extern IEC_LREAL {arr}[{}];", self.group_len());
+        }
         s
     }
 
@@ -111,6 +135,15 @@ impl MotionRuntime {
                 let name = format!("axis.{}.{suffix}", a.name);
                 out.push(format!(
                     "{{ {}, LADDERC_T_LREAL, (void *)&{arr}[{i}], NULL, 0, 0 }}",
+                    mangle::c_string(name.as_bytes())
+                ));
+            }
+        }
+        for (j, g) in self.groups.iter().enumerate() {
+            for (suffix, arr, _) in GROUP_SIGNALS {
+                let name = format!("group.{}.{suffix}", g.name);
+                out.push(format!(
+                    "{{ {}, LADDERC_T_LREAL, (void *)&{arr}[{j}], NULL, 0, 0 }}",
                     mangle::c_string(name.as_bytes())
                 ));
             }
@@ -128,6 +161,9 @@ impl MotionRuntime {
         for (_, arr) in SIGNALS {
             let _ = writeln!(c, "IEC_LREAL {arr}[{n}];");
         }
+        for (_, arr, _) in GROUP_SIGNALS {
+            let _ = writeln!(c, "IEC_LREAL {arr}[{}];", self.group_len());
+        }
         c.push_str(
             "static struct McEngine *ladderc_engine;\n\n\
              struct McEngine *ladderc_motion_engine(void);\nvoid ladderc_motion_init(void);\nvoid ladderc_motion_step(void);\n\n\
@@ -140,8 +176,16 @@ impl MotionRuntime {
         c.push_str(
             "        ladderc_axis_position[i] = mc_axis_set_position(ladderc_engine, i);\n\
              \x20       ladderc_axis_velocity[i] = mc_axis_set_velocity(ladderc_engine, i);\n\
-             \x20       ladderc_axis_acceleration[i] = mc_axis_set_acceleration(ladderc_engine, i);\n    }\n}\n\n",
+             \x20       ladderc_axis_acceleration[i] = mc_axis_set_acceleration(ladderc_engine, i);\n    }\n",
         );
+        if !self.groups.is_empty() {
+            let _ = writeln!(c, "    for (i = 0; i < {}u; i++) {{", self.groups.len());
+            for (_, arr, reader) in GROUP_SIGNALS {
+                let _ = writeln!(c, "        {arr}[i] = {reader}(ladderc_engine, i);");
+            }
+            c.push_str("    }\n");
+        }
+        c.push_str("}\n\n");
         c.push_str("void ladderc_motion_init(void) {\n    static int registered;\n    if (ladderc_engine) ladderc_motion_shutdown();\n");
         let _ = writeln!(
             c,

@@ -88,11 +88,7 @@ fn add_pou(xml_text: &str, pou: &Element, entries: &mut Vec<(usize, usize, XmlCo
     let mut network_of: HashMap<String, usize> = HashMap::new();
     if matches!(lang.name, "LD" | "FBD") {
         let mut scratch = Diagnostics::new();
-        let mut ctx = Ctx {
-            file: FileId(0),
-            xml: xml_text,
-            diags: &mut scratch,
-        };
+        let mut ctx = Ctx::new(FileId(0), xml_text, &mut scratch);
         let g = graph::read(&mut ctx, lang, &name);
         for (n, net) in g.networks.iter().enumerate() {
             for &i in net {

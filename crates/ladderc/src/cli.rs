@@ -568,7 +568,7 @@ fn build(
                 dir,
                 &files,
                 depfile,
-                &crate::depfile::inputs(&c.inputs, &options(c)),
+                &crate::depfile::inputs(&c.project.inputs, &options(&c.project)),
             ) {
                 emit(&SourceMap::new(), &[*d], format);
                 return EXIT_USAGE;
@@ -703,6 +703,14 @@ fn run_program(
                 }
             }
         }
+        for g in &lowered.axes.groups {
+            for sig in ["junction_requested", "junction_reached"] {
+                let col = format!("group.{}.{sig}", g.name);
+                if !run.watch.iter().any(|w| w.eq_ignore_ascii_case(&col)) {
+                    run.watch.push(col);
+                }
+            }
+        }
     }
     let mut extra = Vec::new();
     if let Err(code) = add_staticlib(&program, &mut extra, format) {
@@ -776,12 +784,33 @@ fn run_program(
     // A closed standard output (`| head`) is no reason to skip the files asked for.
     let stdout_failed = stdio::out(&out.stdout).err();
     program_stderr(&out, format);
+    if out.success() {
+        let text = match &run.trace {
+            Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
+            None => out.stdout.clone(),
+        };
+        let unit = lowered
+            .axes
+            .axes
+            .first()
+            .and_then(|a| a.unit.clone())
+            .unwrap_or_else(|| "unit".into());
+        for line in junction_summary(&text, &unit) {
+            stdio::err(&format!("{line}\n"));
+        }
+    }
     if let (true, Some(svg)) = (out.success(), &plot) {
         let text = match &run.trace {
             Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
             None => out.stdout.clone(),
         };
-        if let Err(e) = crate::plot::svg(&text, svg) {
+        let unit = lowered
+            .axes
+            .axes
+            .first()
+            .and_then(|a| a.unit.clone())
+            .unwrap_or_else(|| "unit".into());
+        if let Err(e) = crate::plot::svg(&text, svg, &unit) {
             return io_error(
                 format!("cannot plot into {}: {e}", svg.display()),
                 "the program needs configured axes (--axes) for a plot",
@@ -885,6 +914,73 @@ fn program_stderr(out: &c_backend::RunOutput, format: Format) {
         );
         emit(&SourceMap::new(), &[d], format);
     }
+}
+
+/// The run summary's lines about lowered junction speeds, read from the trace's
+/// `group.<name>.junction_requested|junction_reached` columns (non-zero only in the cycle the
+/// path passes such a junction): the group, the block that starts there (the watched
+/// `<block>.Active` column that turns TRUE in that row or the next; else the block whose `Done`
+/// rises there), the cycle, the speed requested and reached. Empty when the trace has no such columns or nothing was lowered.
+pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
+    let mut lines = trace.lines();
+    let Some(header) = lines.next() else {
+        return Vec::new();
+    };
+    let cols: Vec<&str> = header.split(',').collect();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let num = |row: &[&str], k: usize| row.get(k).and_then(|x| x.parse::<f64>().ok());
+    let active: Vec<(usize, &str)> = cols
+        .iter()
+        .enumerate()
+        .filter_map(|(k, c)| c.strip_suffix(".Active").map(|b| (k, b)))
+        .collect();
+    let done: Vec<(usize, &str)> = cols
+        .iter()
+        .enumerate()
+        .filter_map(|(k, c)| c.strip_suffix(".Done").map(|b| (k, b)))
+        .collect();
+    let is_true = |row: &[&str], k: usize| row.get(k).is_some_and(|x| *x == "1" || *x == "TRUE");
+    let mut out = Vec::new();
+    for (k, c) in cols.iter().enumerate() {
+        let Some(group) = c
+            .strip_prefix("group.")
+            .and_then(|g| g.strip_suffix(".junction_requested"))
+        else {
+            continue;
+        };
+        let reached_col = cols
+            .iter()
+            .position(|x| *x == format!("group.{group}.junction_reached"));
+        for (r, row) in rows.iter().enumerate() {
+            let Some(req) = num(row, k).filter(|v| *v > 0.0) else {
+                continue;
+            };
+            let reached = reached_col.and_then(|j| num(row, j)).unwrap_or(0.0);
+            let block = active
+                .iter()
+                .find(|(j, _)| {
+                    (r..(r + 2).min(rows.len()))
+                        .any(|x| is_true(&rows[x], *j) && (x == 0 || !is_true(&rows[x - 1], *j)))
+                })
+                .map(|(_, b)| format!(" before {b}"))
+                .or_else(|| {
+                    // without Active columns: the block whose Done rises there ends at it
+                    done.iter()
+                        .find(|(j, _)| {
+                            (r..(r + 2).min(rows.len())).any(|x| {
+                                is_true(&rows[x], *j) && (x == 0 || !is_true(&rows[x - 1], *j))
+                            })
+                        })
+                        .map(|(_, b)| format!(" after {b}"))
+                })
+                .unwrap_or_default();
+            let cycle = row.first().copied().unwrap_or("?");
+            out.push(format!(
+                "motion: group {group}: junction{block} at cycle {cycle}: requested {req} {unit}/s, reached {reached:.6} {unit}/s (lowered to keep the axis limits; motion-lib README, \"Junction speeds\")"
+            ));
+        }
+    }
+    out
 }
 
 fn motion_plan(file: &std::path::Path) -> i32 {

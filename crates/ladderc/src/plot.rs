@@ -6,12 +6,19 @@
 //! `|v|` when there are several axes), and the blocks' events marked the way paper B's Fig. 8 marks them
 //! ([`events`]): a block's start (rising `Active`, or rising `Busy` when the block has no `Active`
 //! column) as a green vertical line, a junction (one block ends, by `Done` or `CommandAborted`, in the
-//! cycle another starts, or the next cycle) as a blue one, a block's end that no other block continues as a red one; each
-//! line is labelled with the block and, for a junction, the path speed there. Block outputs of a row
-//! were computed in the scan before that cycle's engine step, so an event seen in row k is drawn at row
-//! k-1's time and speed (the axis state the block reacted to). Invariant: only the trace is read.
+//! cycle another starts, or the next cycle) as a blue one, a block's end that no other block continues as a red one
+//! (with only `Done` columns, as in the README's command: each block's Done is the junction to the
+//! next block's, the first block starts with the first axis motion); each
+//! line is labelled with the block and, for a junction, the path speed there. A junction whose speed the
+//! axis limits lowered (the trace's `group.<name>.junction_requested` column is non-zero there) is drawn
+//! in magenta and labelled "(lowered from <requested>)". Block outputs of a row were computed in the scan
+//! before that cycle's engine step, so an event seen in row k is drawn at row k-1's time and speed (the
+//! axis state the block reacted to). Axis labels carry the axes file's unit; labels stay inside the
+//! frame (right-aligned in the right half); colours are a fixed high-contrast (colour-blind safe) set.
+//! Invariant: only the trace is read.
 
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
 struct Trace {
@@ -100,6 +107,37 @@ pub fn events(columns: &[(String, Vec<f64>)]) -> Vec<Event> {
         }
     }
     let mut out = Vec::new();
+    if starts.is_empty() && !ends.is_empty() {
+        // Only Done / CommandAborted watched (the README's command): a block ending while a later one
+        // ends afterwards hands over to it; the first starts with the first motion of an axis.
+        ends.sort();
+        let moving = columns
+            .iter()
+            .filter(|(n, _)| n.starts_with("axis.") && n.ends_with(".velocity"))
+            .filter_map(|(_, v)| v.iter().position(|x| *x != 0.0))
+            .min();
+        if let Some(first) = moving {
+            out.push(Event::Start {
+                row: first + 1,
+                block: ends[0].1.clone(),
+            });
+        }
+        for (k, (row, from)) in ends.iter().enumerate() {
+            out.push(match ends.get(k + 1) {
+                Some((_, to)) if to != from => Event::Junction {
+                    row: *row,
+                    from: from.clone(),
+                    to: to.clone(),
+                },
+                _ => Event::End {
+                    row: *row,
+                    block: from.clone(),
+                },
+            });
+        }
+        out.sort_by_key(Event::row);
+        return out;
+    }
     let mut used = vec![false; starts.len()];
     for (row, from) in ends {
         match starts
@@ -203,8 +241,32 @@ fn path_speed(velocities: &[(String, Vec<f64>)]) -> Vec<f64> {
         .collect()
 }
 
-/// Draws the plot of `csv` into the SVG file `out`.
-pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
+/// Line colours (Okabe-Ito, colour-blind safe, high contrast on white); the path speed is black.
+const LINES: [RGBColor; 6] = [
+    RGBColor(0, 114, 178),
+    RGBColor(213, 94, 0),
+    RGBColor(0, 158, 115),
+    RGBColor(204, 121, 167),
+    RGBColor(230, 159, 0),
+    RGBColor(86, 180, 233),
+];
+const START: RGBColor = RGBColor(0, 128, 0);
+const JUNCTION: RGBColor = RGBColor(0, 0, 205);
+const LOWERED: RGBColor = RGBColor(200, 0, 160);
+const END: RGBColor = RGBColor(200, 0, 0);
+
+/// The requested junction speed of a lowered junction near `row` (the trace's
+/// `group.<name>.junction_requested` columns, the row itself or the one before or after).
+fn lowered_at(columns: &[(String, Vec<f64>)], row: usize) -> Option<f64> {
+    columns
+        .iter()
+        .filter(|(n, _)| n.starts_with("group.") && n.ends_with(".junction_requested"))
+        .flat_map(|(_, v)| (row.saturating_sub(1)..=row + 1).filter_map(|k| v.get(k).copied()))
+        .find(|x| *x > 0.0)
+}
+
+/// Draws the plot of `csv` into the SVG file `out`; `unit` is the axes' position unit (axis labels).
+pub fn svg(csv: &str, out: &Path, unit: &str) -> Result<(), String> {
     let t = parse(csv)?;
     let e = |e: &dyn std::fmt::Display| e.to_string();
     let root = SVGBackend::new(out, (1000, 700)).into_drawing_area();
@@ -212,9 +274,11 @@ pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
     let areas = root.split_evenly((2, 1));
     let (t0, t1) = range(t.time_s.iter().copied());
     let evs = events(&t.columns);
-    for (area, signal, unit) in [
-        (&areas[0], "position", "position"),
-        (&areas[1], "velocity", "velocity /s"),
+    let pos_label = format!("position [{unit}]");
+    let vel_label = format!("velocity [{unit}/s]");
+    for (area, signal, ylabel) in [
+        (&areas[0], "position", pos_label.as_str()),
+        (&areas[1], "velocity", vel_label.as_str()),
     ] {
         let mut series: Vec<(String, Vec<f64>)> = t
             .columns
@@ -240,12 +304,18 @@ pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
         chart
             .configure_mesh()
             .x_desc("time [s]")
-            .y_desc(unit)
+            .y_desc(ylabel)
+            .axis_desc_style(("sans-serif", 14))
+            .label_style(("sans-serif", 12))
             .draw()
             .map_err(|x| e(&x))?;
         for (k, (name, v)) in series.iter().enumerate() {
             let name = name.as_str();
-            let color = Palette99::pick(k).to_rgba();
+            let color = if name.ends_with("|v|") {
+                BLACK
+            } else {
+                LINES[k % LINES.len()]
+            };
             chart
                 .draw_series(std::iter::once(PathElement::new(
                     thin(&t.time_s, v),
@@ -262,32 +332,47 @@ pub fn svg(csv: &str, out: &Path) -> Result<(), String> {
             let k = ev.row().saturating_sub(1);
             let x = t.time_s[k];
             let (color, label) = match ev {
-                Event::Start { block, .. } => (GREEN, format!("start {}", short(block))),
-                Event::Junction { from, to, .. } => (
-                    BLUE,
-                    format!(
-                        "junction {}->{} |v|={:.3}",
-                        short(from),
-                        short(to),
-                        speed.get(k).copied().unwrap_or(f64::NAN)
-                    ),
-                ),
-                Event::End { block, .. } => (RED, format!("end {}", short(block))),
+                Event::Start { block, .. } => (START, format!("start {}", short(block))),
+                Event::Junction { from, to, row } => {
+                    let v = speed.get(k).copied().unwrap_or(f64::NAN);
+                    let base = format!("junction {}->{} |v|={v:.3}", short(from), short(to));
+                    match lowered_at(&t.columns, k.min(*row)) {
+                        Some(req) => (LOWERED, format!("{base} (lowered from {req})")),
+                        None => (JUNCTION, base),
+                    }
+                }
+                Event::End { block, .. } => (END, format!("end {}", short(block))),
             };
             chart
                 .draw_series(std::iter::once(PathElement::new(
                     vec![(x, y0), (x, y1)],
-                    color.stroke_width(1),
+                    color.stroke_width(2),
                 )))
                 .map_err(|x| e(&x))?;
+            // the junction speed reached, as a point on the path speed
+            if signal == "velocity" {
+                if let (Event::Junction { .. }, Some(v)) = (ev, speed.get(k)) {
+                    chart
+                        .draw_series(std::iter::once(Circle::new((x, *v), 4, color.filled())))
+                        .map_err(|x| e(&x))?;
+                }
+            }
             if signal == "position" {
-                // labels stacked downwards so neighbouring events stay readable
+                // labels stacked downwards so neighbouring events stay readable; in the right half
+                // they end at their line, so that they stay inside the frame
                 let y = y1 - (y1 - y0) * (0.04 + 0.07 * (n % 4) as f64);
+                let right = x > t0 + (t1 - t0) * 0.5;
+                let pos = if right {
+                    Pos::new(HPos::Right, VPos::Top)
+                } else {
+                    Pos::new(HPos::Left, VPos::Top)
+                };
+                let dx = (t1 - t0) * 0.004 * if right { -1.0 } else { 1.0 };
                 chart
                     .draw_series(std::iter::once(Text::new(
                         label,
-                        (x, y),
-                        ("sans-serif", 11).into_font().color(&color),
+                        (x + dx, y),
+                        ("sans-serif", 12).into_font().color(&color).pos(pos),
                     )))
                     .map_err(|x| e(&x))?;
             }
@@ -313,18 +398,19 @@ mod tests {
                    0,0,1,0,0,0\n1,10,1,0,1,100\n2,20,0,1,2,0\n";
         let dir = tempfile::tempdir().unwrap();
         let out = dir.path().join("p.svg");
-        svg(csv, &out).unwrap();
+        svg(csv, &out, "mm").unwrap();
         let text = std::fs::read_to_string(&out).unwrap();
         assert!(text.starts_with("<svg"), "{}", &text[..50.min(text.len())]);
         assert!(text.contains("axis position") && text.contains("axis velocity"));
         assert!(text.contains("X1.position") && text.contains("X1.velocity"));
+        assert!(text.contains("position [mm]") && text.contains("velocity [mm/s]"));
         assert_eq!(rises(&[1.0, 1.0, 0.0, 1.0]), vec![0, 3]);
     }
 
     #[test]
     fn a_trace_without_axes_is_an_error() {
         let dir = tempfile::tempdir().unwrap();
-        let err = svg("cycle,time_ms,x\n0,0,1\n", &dir.path().join("p.svg")).unwrap_err();
+        let err = svg("cycle,time_ms,x\n0,0,1\n", &dir.path().join("p.svg"), "mm").unwrap_err();
         assert!(err.contains("axis.<name>.position"), "{err}");
     }
 
@@ -401,7 +487,7 @@ mod tests {
                    0,1,1,0,0,0,0,0,0,0\n1,2,1,0,0,0,1,3,1,4\n2,3,0,1,1,0,2,3,2,4\n3,4,0,1,0,1,3,0,3,0\n";
         let dir = tempfile::tempdir().unwrap();
         let out = dir.path().join("p.svg");
-        svg(csv, &out).unwrap();
+        svg(csv, &out, "mm").unwrap();
         let text = std::fs::read_to_string(&out).unwrap();
         assert!(text.contains("start a"), "{text}");
         assert!(
@@ -410,6 +496,48 @@ mod tests {
         );
         assert!(text.contains("end b"));
         assert!(text.contains("path speed |v|"));
+    }
+
+    #[test]
+    fn done_columns_alone_give_start_junctions_and_end() {
+        let col = |n: &str, v: &[u8]| (n.to_string(), v.iter().map(|&x| x as f64).collect());
+        let columns = vec![
+            col("p.a.Done", &[0, 0, 1, 1, 1, 1]),
+            col("p.b.Done", &[0, 0, 0, 0, 1, 1]),
+            col("axis.X.velocity", &[0, 1, 1, 1, 0, 0]),
+        ];
+        let s = |x: &str| x.to_string();
+        assert_eq!(
+            events(&columns),
+            vec![
+                Event::Start {
+                    row: 2,
+                    block: s("p.a")
+                },
+                Event::Junction {
+                    row: 2,
+                    from: s("p.a"),
+                    to: s("p.b")
+                },
+                Event::End {
+                    row: 4,
+                    block: s("p.b")
+                },
+            ]
+        );
+    }
+
+    #[test]
+    fn lowered_junctions_are_flagged() {
+        let csv = "cycle,time_ms,p.a.active,p.a.done,p.b.active,p.b.done,axis.X.position,axis.X.velocity,group.G.junction_requested,group.G.junction_reached\n\
+                   0,1,1,0,0,0,0,0,0,0\n1,2,1,0,0,0,1,3,40,0\n2,3,0,1,1,0,2,0,0,0\n3,4,0,1,0,1,3,0,0,0\n";
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("p.svg");
+        svg(csv, &out, "mm").unwrap();
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert!(text.contains("(lowered from 40)"), "{text}");
+        // drawn in the flag colour
+        assert!(text.contains("#C800A0"), "{text}");
     }
 
     #[test]

@@ -232,6 +232,11 @@
 #define MC_ERR_INVALID_RATIO 28
 
 /**
+ * ErrorID 29: The planned path (a time-optimal overshoot, braking from the current velocity) leaves the enabled software position limits.
+ */
+#define MC_ERR_PATH_BEYOND_SOFTWARE_LIMIT 29
+
+/**
  * ErrorID 30: Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
  */
 #define MC_ERR_INVALID_OVERRIDE 30
@@ -1251,6 +1256,29 @@ double mc_axis_set_acceleration(struct McEngine *engine, McIndex axis);
  * See the module contract: pointers are NULL or valid.
  */
 int32_t mc_group_state(struct McEngine *engine, McIndex group);
+
+/**
+ * Junction speed the BufferMode asked for at a lowered junction the group's path passed in
+ * the last cycle (the limits did not allow it); 0 in every other cycle and for a bad index.
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_group_junction_requested(struct McEngine *engine, uint32_t group);
+
+/**
+ * Junction speed planned and reached at that lowered junction (see
+ * `mc_group_junction_requested`); 0 otherwise.
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_group_junction_reached(struct McEngine *engine, uint32_t group);
+
+/**
+ * How many junction speeds of the group were lowered so far (0 for a bad index).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+uint32_t mc_group_reduction_count(struct McEngine *engine, uint32_t group);
 
 /**
  * Calls MC_Power once (one PLC scan).

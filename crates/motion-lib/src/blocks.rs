@@ -296,7 +296,8 @@ macro_rules! distance_block {
 }
 
 distance_block!(
-    /// MC_MoveRelative (Distance added to the set position at the rising Execute).
+    /// MC_MoveRelative (Distance added to the set position when the command becomes active:
+    /// at the rising Execute when Aborting or idle, else at the end of its predecessor).
     McMoveRelative => MoveRelative
 );
 distance_block!(

@@ -137,6 +137,9 @@ pub(crate) struct Pending {
     /// Signed velocity at the end of the move (set by a blending successor).
     pub end_v: f64,
     pub sync: SyncParams,
+    /// MC_MoveRelative: the distance, counted from the set position when the command
+    /// becomes active (`target` holds the prediction from the predecessor's target).
+    pub relative: Option<f64>,
 }
 
 /// The running motion of an axis.
@@ -161,6 +164,8 @@ pub(crate) struct Active {
     pub sync: SyncParams,
     /// Velocity-change tail run after `prof` (see [`plan_to`]).
     pub tail: Option<Profile>,
+    /// A velocity move braked to stop at a software limit: the error raised when it stands.
+    pub limit_stop: Option<ErrorId>,
 }
 
 impl Active {
@@ -179,6 +184,7 @@ impl Active {
             end_v: 0.0,
             sync: SyncParams::default(),
             tail: None,
+            limit_stop: None,
         }
     }
 }
@@ -267,6 +273,16 @@ pub(crate) fn overridden(
         dmax: base.dmax * ax.acc_factor,
         jmax: base.jmax * ax.jerk_factor,
     };
+    // A move that starts while the axis accelerates: with the block's (lower) jerk the
+    // velocity would pass the axis's limit before the acceleration is gone. The block's
+    // jerk is then raised to the axis's own (the limits are physics, the block's a wish).
+    let al = ax.cfg.limits;
+    if lim.jmax > 0.0 && (al.jmax == 0.0 || al.jmax > lim.jmax) {
+        let peak = (now.v + now.a * now.a.abs() / (2.0 * lim.jmax)).abs();
+        if peak > al.vmax {
+            lim.jmax = al.jmax;
+        }
+    }
     let paused = ax.vel_factor == 0.0 && kind != Kind::Halt;
     if !paused && kind != Kind::Halt {
         lim.vmax = (base.vmax * ax.vel_factor).min(base.vmax.max(ax.cfg.limits.vmax));
@@ -298,6 +314,41 @@ pub(crate) fn standing(p: f64) -> Profile {
             Profile::velocity(State::default(), 0.0, &UNIT).unwrap_or_else(|_| unreachable!())
         }
     }
+}
+
+/// Lowest and highest position a profile (and its tail) passes: its phase boundaries and
+/// the instants within a phase where the velocity is 0.
+pub(crate) fn position_range(prof: &Profile, tail: Option<&Profile>) -> (f64, f64) {
+    let mut lo = prof.start().p.min(prof.end().p);
+    let mut hi = prof.start().p.max(prof.end().p);
+    for pr in std::iter::once(prof).chain(tail) {
+        for (st, ph) in pr.phase_starts().iter().zip(pr.phases()) {
+            let mut see = |t: f64| {
+                if t >= 0.0 && t <= ph.duration {
+                    let p = st.integrate(t, ph.jerk).p;
+                    lo = lo.min(p);
+                    hi = hi.max(p);
+                }
+            };
+            see(0.0);
+            see(ph.duration);
+            // v + a t + j t^2 / 2 = 0
+            let (a2, b, c) = (ph.jerk / 2.0, st.a, st.v);
+            if a2.abs() > 1e-300 {
+                let disc = b * b - 4.0 * a2 * c;
+                if disc >= 0.0 {
+                    let r = disc.sqrt();
+                    see((-b + r) / (2.0 * a2));
+                    see((-b - r) / (2.0 * a2));
+                }
+            } else if b.abs() > 1e-300 {
+                see(-c / b);
+            }
+        }
+        lo = lo.min(pr.end().p);
+        hi = hi.max(pr.end().p);
+    }
+    (lo, hi)
 }
 
 const UNIT: Limits = Limits {
@@ -664,6 +715,10 @@ impl Engine {
             let lim = ax.cfg.limits;
             let start = ax.set;
             ax.active = Active::idle(start);
+            if start.v == 0.0 && start.a == 0.0 {
+                // At rest already (a velocity move stopped at a limit): nothing to brake.
+                return Ok(());
+            }
             if let Ok(p) = Profile::velocity(start, 0.0, &lim) {
                 ax.active.prof = p;
                 ax.active.kind = Kind::Brake;
@@ -853,6 +908,23 @@ impl Engine {
         }
     }
 
+    /// Refuses a planned positioning whose path leaves the software limits further than
+    /// where it starts (a move from beyond a limit back into the range is allowed).
+    fn check_path(ax: &AxisRt, prof: &Profile, tail: Option<&Profile>) -> Result<(), ErrorId> {
+        if !ax.cfg.sw_limits_enabled || ax.cfg.period().is_some() {
+            return Ok(());
+        }
+        let (lo, hi) = position_range(prof, tail);
+        let start = prof.start().p + ax.origin;
+        let top = ax.cfg.sw_limit_pos.max(start);
+        let bottom = ax.cfg.sw_limit_neg.min(start);
+        let eps = 1e-12 * (1.0 + top.abs().max(bottom.abs()));
+        if hi + ax.origin > top + eps || lo + ax.origin < bottom - eps {
+            return Err(ErrorId::PathBeyondSoftwareLimit);
+        }
+        Ok(())
+    }
+
     fn check_target(ax: &AxisRt, raw: f64) -> Result<(), ErrorId> {
         if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
             let u = raw + ax.origin;
@@ -889,6 +961,7 @@ impl Engine {
             buffer,
             end_v: 0.0,
             sync: SyncParams::default(),
+            relative: None,
         };
         match *cmd {
             AxisCommand::MoveAbsolute {
@@ -938,7 +1011,10 @@ impl Engine {
                     return Err(ErrorId::InvalidPosition);
                 }
                 p.lim = Self::move_limits(&ax.cfg, d, true)?;
-                p.target = ax.set.p + distance;
+                // From the set position when it becomes active: now (Aborting or idle),
+                // else predicted from the predecessor's target and re-based at activation.
+                p.target = from + distance;
+                p.relative = Some(distance);
             }
             AxisCommand::MoveAdditive { distance } => {
                 if !finite(distance) {
@@ -964,6 +1040,15 @@ impl Engine {
                 };
                 p.kind = Kind::Velocity;
                 p.target = sign * d.velocity.signum() * p.lim.vmax;
+                if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
+                    // At (or past) a limit, a velocity move further out is refused.
+                    let u = ax.set.p + ax.origin;
+                    if (p.target > 0.0 && u >= ax.cfg.sw_limit_pos)
+                        || (p.target < 0.0 && u <= ax.cfg.sw_limit_neg)
+                    {
+                        return Err(ErrorId::TargetBeyondSoftwareLimit);
+                    }
+                }
             }
             AxisCommand::Halt | AxisCommand::Stop => {
                 if !(finite(d.deceleration) && d.deceleration > 0.0) {
@@ -1037,6 +1122,10 @@ impl Engine {
             }
             AxisCommand::GearOut | AxisCommand::CamOut => {}
         }
+        if matches!(p.kind, Kind::Position | Kind::Velocity) {
+            // The junction speeds of blending use the speed the move can have.
+            p.speed = p.lim.vmax;
+        }
         if p.kind == Kind::Position {
             Self::check_target(ax, p.target)?;
         }
@@ -1078,6 +1167,23 @@ impl Engine {
             && self.queues[axis].len() >= self.queues[axis].depth()
         {
             return Err(ErrorId::QueueFull);
+        }
+        if (buffer == BufferMode::Aborting || idle) && pending.kind == Kind::Position {
+            // The path from the current state (a time-optimal overshoot, braking from the
+            // current velocity) must stay within the software limits: refused before any
+            // motion, and before anything running is aborted.
+            let ax = &self.axes[axis];
+            if ax.cfg.sw_limits_enabled {
+                let o = overridden(
+                    ax,
+                    Kind::Position,
+                    &pending.lim,
+                    ax.set,
+                    pending.target,
+                    0.0,
+                )?;
+                Self::check_path(ax, &o.prof, o.tail.as_ref())?;
+            }
         }
         let id = self.cmds.alloc(CmdStatus::Queued);
         let pending = Pending { id, ..pending };
@@ -1213,8 +1319,12 @@ impl Engine {
 
     /// Makes `p` the active command of the axis, starting from the current set point
     /// advanced by `t0` seconds into its profile.
-    fn activate(&mut self, axis: usize, p: Pending, t0: f64) -> Result<(), ErrorId> {
+    fn activate(&mut self, axis: usize, mut p: Pending, t0: f64) -> Result<(), ErrorId> {
         let start = self.axes[axis].set;
+        if let Some(d) = p.relative {
+            p.target = start.p + d;
+            Self::check_target(&self.axes[axis], p.target)?;
+        }
         let mut lim = p.lim;
         let mut tail = None;
         let mut paused = false;
@@ -1231,6 +1341,9 @@ impl Engine {
             _ => Ok(Active::idle(start).prof),
         }
         .map_err(|_| ErrorId::PlanningFailed)?;
+        if p.kind == Kind::Position {
+            Self::check_path(&self.axes[axis], &prof, tail.as_ref())?;
+        }
         let ax = &mut self.axes[axis];
         let class = match p.kind {
             Kind::Position | Kind::Halt => AxisState::DiscreteMotion,
@@ -1255,6 +1368,7 @@ impl Engine {
             end_v: p.end_v,
             sync: p.sync,
             tail,
+            limit_stop: None,
         };
         if p.kind == Kind::Stop {
             ax.stop_owner = Some(p.id);
@@ -1305,6 +1419,7 @@ impl Engine {
             end_v: 0.0,
             sync: SyncParams::default(),
             tail: None,
+            limit_stop: None,
         };
         ax.state = AxisState::ContinuousMotion;
         let id = self.cmds.alloc(CmdStatus::Done);
@@ -1338,7 +1453,17 @@ impl Engine {
                 _ => {
                     a.t += dt;
                     ax.set = a.prof.at(a.t);
+                    if a.kind == Kind::Velocity
+                        && ax.cfg.sw_limits_enabled
+                        && ax.cfg.period().is_none()
+                        && ax.set.v != 0.0
+                    {
+                        guard_limit(&ax.cfg, a, ax.set, ax.origin, dt, &mut self.cmds);
+                    }
                     if a.t >= a.prof.duration() && !a.released && !a.paused {
+                        self.events.push(i as u32);
+                    } else if a.kind == Kind::Velocity && a.released && !self.queues[i].is_empty() {
+                        // InVelocity was shown (at least one scan): the successor takes over.
                         self.events.push(i as u32);
                     }
                 }
@@ -1349,7 +1474,8 @@ impl Engine {
                 if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop {
                     let u = ax.set.p + ax.origin;
                     if ax.cfg.period().is_none()
-                        && (u > ax.cfg.sw_limit_pos || u < ax.cfg.sw_limit_neg)
+                        && ((u > ax.cfg.sw_limit_pos && ax.set.v > 0.0)
+                            || (u < ax.cfg.sw_limit_neg && ax.set.v < 0.0))
                     {
                         self.events.push(i as u32);
                     }
@@ -1383,10 +1509,12 @@ impl Engine {
         let ax = &self.axes[i];
         if ax.cfg.sw_limits_enabled && ax.state != AxisState::ErrorStop && ax.cfg.period().is_none()
         {
+            // Only motion further out is an error: an axis standing beyond a limit (after
+            // an error brake) can be reset and moved back into the range.
             let u = ax.set.p + ax.origin;
-            if u > ax.cfg.sw_limit_pos {
+            if u > ax.cfg.sw_limit_pos && ax.set.v > 0.0 {
                 let _ = self.raise_axis_error(i, ErrorId::SoftwareLimitPositive);
-            } else if u < ax.cfg.sw_limit_neg {
+            } else if u < ax.cfg.sw_limit_neg && ax.set.v < 0.0 {
                 let _ = self.raise_axis_error(i, ErrorId::SoftwareLimitNegative);
             }
         }
@@ -1470,6 +1598,15 @@ impl Engine {
                     }
                 }
             }
+            Kind::Velocity if a.released && !a.paused && !self.queues[i].is_empty() => {
+                if let Some(id) = a.id {
+                    self.cmds.set(id, CmdStatus::Aborted);
+                    self.cmds.set_in_target(id, false);
+                }
+                // It starts from this cycle's set point.
+                self.start_next(i, 0.0);
+            }
+            Kind::Velocity if a.released && !a.paused => {}
             Kind::Position | Kind::Halt | Kind::Velocity | Kind::Stop | Kind::Brake => {
                 if a.released || a.paused || a.t < a.prof.duration() {
                     return;
@@ -1489,13 +1626,6 @@ impl Engine {
                         self.axes[i].active.released = true;
                         if let Some(id) = a.id {
                             self.cmds.set_in_target(id, true);
-                        }
-                        if !self.queues[i].is_empty() {
-                            if let Some(id) = a.id {
-                                self.cmds.set(id, CmdStatus::Aborted);
-                                self.cmds.set_in_target(id, false);
-                            }
-                            self.start_next(i, 0.0);
                         }
                     }
                     Kind::Stop => {
@@ -1521,6 +1651,21 @@ impl Engine {
                         };
                         ax.active = Active::idle(ax.set);
                     }
+                    _ if a.limit_stop.is_some() => {
+                        // A velocity move stopped at a software limit: the axis error.
+                        let ax = &mut self.axes[i];
+                        // At rest at the limit (the profile's end, rounding aside).
+                        ax.set = State {
+                            p: a.prof.end().p,
+                            v: 0.0,
+                            a: 0.0,
+                        };
+                        ax.active = Active::idle(ax.set);
+                        ax.active.id = a.id;
+                        if let Some(e) = a.limit_stop {
+                            let _ = self.raise_axis_error(i, e);
+                        }
+                    }
                     _ => {
                         let end = a.prof.end();
                         let ax = &mut self.axes[i];
@@ -1530,7 +1675,7 @@ impl Engine {
                         }
                         ax.active = Active::idle(ax.set);
                         ax.active.released = true;
-                        if self.queues[i].is_empty() {
+                        if self.queues[i].is_empty() && a.end_v == 0.0 {
                             ax.state = AxisState::Standstill;
                             ax.set.v = 0.0;
                         } else {
@@ -1558,7 +1703,19 @@ impl Engine {
                 p.end_v = self.junction_after(axis, &p, &n);
             }
             match self.activate(axis, p, t0) {
-                Ok(()) => return,
+                Ok(()) => {
+                    let a = &self.axes[axis].active;
+                    if matches!(a.kind, Kind::Position | Kind::Halt)
+                        && a.t >= a.prof.duration()
+                        && a.tail.is_none()
+                        && !a.paused
+                    {
+                        // Already over within this cycle (a halt at rest, a zero move): end
+                        // it now, so that its successor runs the rest of this cycle.
+                        self.axis_event(axis);
+                    }
+                    return;
+                }
                 Err(e) => {
                     // Only the active block failed: the next buffered block starts.
                     self.cmds.set(p.id, CmdStatus::Error(e));
@@ -1567,6 +1724,20 @@ impl Engine {
         }
         let ax = &mut self.axes[axis];
         if ax.active.kind == Kind::Idle && ax.state != AxisState::ErrorStop {
+            if ax.set.v != 0.0 || ax.set.a != 0.0 {
+                // Left at a junction speed with no successor running (it failed): brake
+                // to rest within the axis's limits instead of stopping at once.
+                let lim = ax.cfg.limits;
+                if let Ok(p) = Profile::velocity(ax.set, 0.0, &lim) {
+                    let at = ax.set;
+                    ax.active = Active::idle(at);
+                    ax.active.kind = Kind::Halt;
+                    ax.active.prof = p;
+                    ax.active.released = false;
+                    ax.state = AxisState::DiscreteMotion;
+                    return;
+                }
+            }
             ax.state = AxisState::Standstill;
             ax.set.v = 0.0;
             ax.set.a = 0.0;
@@ -1588,6 +1759,51 @@ impl Engine {
             d1 * n.buffer.junction_speed(p.speed, n.speed)
         } else {
             0.0
+        }
+    }
+}
+
+/// A velocity move on an axis with software limits: when stopping from the next cycle's
+/// state (with the axis's own deceleration and jerk) would pass the limit ahead, it brakes
+/// now on a positioning profile that stops exactly at the limit.
+fn guard_limit(
+    cfg: &AxisConfig,
+    a: &mut Active,
+    now: State,
+    origin: f64,
+    dt: f64,
+    cmds: &mut CmdTable,
+) {
+    let dir = now.v.signum();
+    let limit = if dir > 0.0 {
+        cfg.sw_limit_pos
+    } else {
+        cfg.sw_limit_neg
+    } - origin;
+    let mut l = cfg.limits;
+    l.vmax = l.vmax.max(now.v.abs()).max(a.lim.vmax);
+    let next = a.prof.at(a.t + dt);
+    let Ok(stop) = Profile::velocity(next, 0.0, &l) else {
+        return;
+    };
+    if (stop.end().p - limit) * dir <= 0.0 {
+        return;
+    }
+    if let Ok(p) = Profile::position(now, limit, 0.0, &l) {
+        a.kind = Kind::Position;
+        a.prof = p;
+        a.t = 0.0;
+        a.tail = None;
+        a.target = limit;
+        a.end_v = 0.0;
+        a.released = false;
+        a.limit_stop = Some(if dir > 0.0 {
+            ErrorId::SoftwareLimitPositive
+        } else {
+            ErrorId::SoftwareLimitNegative
+        });
+        if let Some(id) = a.id {
+            cmds.set_in_target(id, false);
         }
     }
 }

@@ -52,6 +52,9 @@ pub enum ErrorId {
     TargetBeyondSoftwareLimit = 27,
     /// Gear ratio invalid (denominator 0 or not finite).
     InvalidRatio = 28,
+    /// The planned path (a time-optimal overshoot, braking from the current velocity) leaves
+    /// the enabled software position limits.
+    PathBeyondSoftwareLimit = 29,
     /// Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
     InvalidOverride = 30,
     /// The profile planner found no profile for these inputs.
@@ -142,6 +145,7 @@ impl ErrorId {
         ErrorId::InvalidBufferMode,
         ErrorId::TargetBeyondSoftwareLimit,
         ErrorId::InvalidRatio,
+        ErrorId::PathBeyondSoftwareLimit,
         ErrorId::InvalidOverride,
         ErrorId::PlanningFailed,
         ErrorId::InvalidMode,

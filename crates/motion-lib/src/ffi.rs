@@ -397,6 +397,42 @@ pub unsafe extern "C" fn mc_group_state(engine: *mut McEngine, group: McIndex) -
     }
 }
 
+/// Junction speed the BufferMode asked for at a lowered junction the group's path passed in
+/// the last cycle (the limits did not allow it); 0 in every other cycle, for a bad index and for a
+/// NULL, invalid or poisoned handle.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_group_junction_requested(engine: *mut McEngine, group: McIndex) -> f64 {
+    unsafe { eng(engine) }
+        .ok()
+        .and_then(|e| e.group_junction_now(group as usize).ok())
+        .map_or(0.0, |j| j.0)
+}
+
+/// Junction speed planned and reached at that lowered junction (see
+/// `mc_group_junction_requested`); 0 otherwise.
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_group_junction_reached(engine: *mut McEngine, group: McIndex) -> f64 {
+    unsafe { eng(engine) }
+        .ok()
+        .and_then(|e| e.group_junction_now(group as usize).ok())
+        .map_or(0.0, |j| j.1)
+}
+
+/// How many junction speeds of the group were lowered so far (0 for a bad index).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_group_reduction_count(engine: *mut McEngine, group: McIndex) -> u32 {
+    unsafe { eng(engine) }
+        .ok()
+        .and_then(|e| e.group_reductions(group as usize).ok())
+        .map_or(0, |r| r.1 as u32)
+}
+
 fn master_source(x: u8) -> Result<MasterSource, ErrorId> {
     match x {
         0 => Ok(MasterSource::SetValue),
@@ -2414,6 +2450,8 @@ pub const MC_ERR_INVALID_BUFFER_MODE: u16 = 26;
 pub const MC_ERR_TARGET_BEYOND_SOFTWARE_LIMIT: u16 = 27;
 /// ErrorID 28: Gear ratio invalid (denominator 0 or not finite).
 pub const MC_ERR_INVALID_RATIO: u16 = 28;
+/// ErrorID 29: The planned path (a time-optimal overshoot, braking from the current velocity) leaves the enabled software position limits.
+pub const MC_ERR_PATH_BEYOND_SOFTWARE_LIMIT: u16 = 29;
 /// ErrorID 30: Override factor out of range: VelFactor negative or not finite, AccFactor or JerkFactor outside [0, 1] (0 = 1).
 pub const MC_ERR_INVALID_OVERRIDE: u16 = 30;
 /// ErrorID 31: The profile planner found no profile for these inputs.

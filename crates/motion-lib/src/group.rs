@@ -54,6 +54,57 @@ pub struct PathInputs {
     pub transition_parameter: f64,
 }
 
+/// Why a junction speed was lowered (see the README, "Junction speeds").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReductionReason {
+    /// TMNone at a corner (the direction changes): passed at rest.
+    Corner,
+    /// A junction with a circular move (the curvature steps): passed at rest.
+    Arc,
+    /// The corner blend's curvature or its change: the highest speed the axes allow on it.
+    Blend,
+    /// The corner is too sharp for a blend (a reversal) or the blend has no room: at rest.
+    NoBlend,
+    /// The junction speed is above an axis's velocity limit projected onto a line.
+    Velocity,
+    /// The predecessor's line is too short to reach the junction speed.
+    Distance,
+}
+
+impl ReductionReason {
+    /// Short name (trace and run summary).
+    pub fn name(self) -> &'static str {
+        match self {
+            ReductionReason::Corner => "TMNone corner",
+            ReductionReason::Arc => "circle junction",
+            ReductionReason::Blend => "blend curvature",
+            ReductionReason::NoBlend => "no room for a blend",
+            ReductionReason::Velocity => "axis velocity limit",
+            ReductionReason::Distance => "line too short",
+        }
+    }
+}
+
+/// A lowered junction speed: between the group's motion commands `block - 1` and `block`
+/// (numbered from 1 in the order they were given to the group).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reduction {
+    /// Sequence number of the successor (the block that starts at the junction).
+    pub block: u32,
+    /// The successor's command handle.
+    pub cmd: CmdId,
+    /// The corner as commanded (raw axis coordinates by identity).
+    pub corner: Vecn,
+    /// Junction speed the BufferMode asked for.
+    pub requested: f64,
+    /// Junction speed planned and reached.
+    pub reached: f64,
+    pub reason: ReductionReason,
+}
+
+/// Reductions kept per group (the count goes on; older entries are kept, later ones only counted).
+pub const REDUCTIONS_KEPT: usize = 256;
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum GKind {
     Home,
@@ -80,6 +131,10 @@ pub(crate) struct GPending {
     start_v: Option<f64>,
     /// The corner this move starts from as commanded (before any corner blend).
     start_corner: Vecn,
+    /// Sequence number among the group's motion commands (from 1).
+    seq: u32,
+    /// The junction before this move was lowered: (requested, reached).
+    reduced: Option<(f64, f64)>,
 }
 
 #[derive(Clone, Debug)]
@@ -110,6 +165,16 @@ pub(crate) struct GroupRt {
     stop_owner: Option<CmdId>,
     pub error: ErrorId,
     scratch: (Vecn, Vecn, Vecn),
+    /// Motion commands given so far (numbers the blocks of [`Reduction`]).
+    seq: u32,
+    /// Lowered junctions (the first [`REDUCTIONS_KEPT`]) and their total count.
+    reductions: Vec<Reduction>,
+    reduction_count: usize,
+    /// (requested, reached) of a lowered junction passed in the last cycle, else (0, 0).
+    junction_now: (f64, f64),
+    /// The running move could not be planned to its junction (or failed): the next one
+    /// starts from rest, without its corner blend.
+    drop_junction: bool,
 }
 
 impl GroupRt {
@@ -134,6 +199,11 @@ impl Engine {
             stop_owner: None,
             error: ErrorId::None,
             scratch: (ZERO, ZERO, ZERO),
+            seq: 0,
+            reductions: Vec::with_capacity(16),
+            reduction_count: 0,
+            junction_now: (0.0, 0.0),
+            drop_junction: false,
         });
         self.groups.len() - 1
     }
@@ -161,6 +231,19 @@ impl Engine {
     /// Commands waiting in the group's buffer.
     pub fn group_queued(&self, g: usize) -> Result<usize, ErrorId> {
         Ok(self.grp(g)?.queue.len())
+    }
+
+    /// The group's lowered junction speeds (the first [`REDUCTIONS_KEPT`]) and how many
+    /// there were in all.
+    pub fn group_reductions(&self, g: usize) -> Result<(&[Reduction], usize), ErrorId> {
+        let gr = self.grp(g)?;
+        Ok((&gr.reductions, gr.reduction_count))
+    }
+
+    /// (requested, reached) junction speed of a lowered junction the path passed in the
+    /// last cycle; (0, 0) in every other cycle.
+    pub fn group_junction_now(&self, g: usize) -> Result<(f64, f64), ErrorId> {
+        Ok(self.grp(g)?.junction_now)
     }
 
     /// MC_AddAxisToGroup.
@@ -296,16 +379,34 @@ impl Engine {
         r
     }
 
-    /// End point (raw) the next buffered group move starts from.
+    /// End point (raw) the next buffered group move starts from: the last path move's
+    /// target in the buffer, else the running move's (a halt's: where its brake ends).
     fn group_last_target(&self, g: usize) -> Vecn {
         let gr = &self.groups[g];
-        if let Some(b) = gr.queue.back() {
-            if matches!(b.kind, GKind::Path | GKind::Direct) {
-                return b.target;
-            }
+        if let Some(b) = gr
+            .queue
+            .iter()
+            .filter(|b| matches!(b.kind, GKind::Path | GKind::Direct))
+            .last()
+        {
+            return b.target;
         }
         match &gr.active {
             Some(a) if matches!(a.kind, GKind::Path | GKind::Direct) => a.target,
+            Some(a) if matches!(a.kind, GKind::Halt | GKind::Stop | GKind::Brake) => {
+                let n = gr.n();
+                let mut q = self.raw_now(g);
+                let (mut d1, mut d2) = (ZERO, ZERO);
+                // (A brake begun on a corner blend has the line after it as geometry.)
+                a.geom.eval(a.prof.end().p, n, &mut q, &mut d1, &mut d2);
+                let mut r = self.raw_now(g);
+                for (i, ax) in gr.axes.iter().enumerate() {
+                    if ax.is_some() {
+                        r[i] = q[i];
+                    }
+                }
+                r
+            }
             _ => self.raw_now(g),
         }
     }
@@ -351,6 +452,49 @@ impl Engine {
             l.jmax = 0.0;
         }
         Ok(l)
+    }
+
+    /// The move `p` ends at rest instead of at its junction speed: its successor starts
+    /// from rest (reported as a reduction to 0).
+    fn note_dropped_junction(&mut self, g: usize, p: &GPending) {
+        let gr = &mut self.groups[g];
+        gr.drop_junction = true;
+        gr.reduction_count += 1;
+        if let Some(nx) = gr.queue.front() {
+            if gr.reductions.len() < REDUCTIONS_KEPT {
+                gr.reductions.push(Reduction {
+                    block: nx.seq,
+                    cmd: nx.id,
+                    corner: p.target,
+                    requested: p.end_v,
+                    reached: 0.0,
+                    reason: ReductionReason::Distance,
+                });
+            }
+        }
+    }
+
+    /// A move or brake that starts while the path accelerates: with the block's (lower)
+    /// jerk the speed would pass the axes' velocity limit on direction `u` before the
+    /// acceleration is gone; the jerk is then raised to the axes' own, projected.
+    fn raise_jerk(&self, g: usize, u: &Vecn, s: State, lim: &mut Limits) {
+        if lim.jmax <= 0.0 || s.a == 0.0 {
+            return;
+        }
+        let free = PathInputs {
+            velocity: f64::MAX,
+            acceleration: f64::MAX,
+            deceleration: f64::MAX,
+            jerk: 0.0,
+            ..PathInputs::default()
+        };
+        let Ok(axes) = self.path_lims(g, u, &free) else {
+            return;
+        };
+        let peak = (s.v + s.a * s.a.abs() / (2.0 * lim.jmax)).abs();
+        if peak > axes.vmax && (axes.jmax == 0.0 || axes.jmax > lim.jmax) {
+            lim.jmax = axes.jmax;
+        }
     }
 
     /// Arc path limits: the tangent turns, so every axis's limits bound the path, and
@@ -497,6 +641,12 @@ impl Engine {
             return Err(ErrorId::QueueFull);
         }
         let id = self.cmds.alloc(CmdStatus::Queued);
+        let seq = if matches!(kind, GKind::Path | GKind::Direct) {
+            self.groups[g].seq = self.groups[g].seq.wrapping_add(1);
+            self.groups[g].seq
+        } else {
+            0
+        };
         let p = GPending {
             id,
             kind,
@@ -508,10 +658,17 @@ impl Engine {
             prefix: None,
             start_v: None,
             start_corner: from,
+            seq,
+            reduced: None,
         };
         if buffer == BufferMode::Aborting || idle {
             self.group_abort_all(g, CmdStatus::Aborted);
-            if let Err(e) = self.group_activate(g, p, 0.0) {
+            if kind == GKind::Path && self.group_turns(g, &from, &target, &motion) {
+                // The path turns away from the current motion: a velocity or acceleration
+                // step would break the axis limits, so the group first brakes along its
+                // path (the command is Active meanwhile) and starts from there.
+                self.group_brake_then(g, p);
+            } else if let Err(e) = self.group_activate(g, p, 0.0) {
                 self.cmds.set(id, CmdStatus::Error(e));
             }
         } else {
@@ -522,6 +679,73 @@ impl Engine {
             }
         }
         Ok(id)
+    }
+
+    /// True when the group moves (or accelerates) across the start direction of the new
+    /// path from `from` to `target`.
+    fn group_turns(&self, g: usize, from: &Vecn, target: &Vecn, motion: &GroupMotion) -> bool {
+        if self.groups[g].active.is_none() {
+            return false;
+        }
+        let n = self.groups[g].n();
+        let geo = self.geometry_for(g, from, target, motion);
+        let (u, _) = geo.tangents(n);
+        let mut vel = ZERO;
+        let mut acc = ZERO;
+        for (i, a) in self.groups[g].axes.iter().enumerate() {
+            if let Some(a) = a {
+                vel[i] = self.axes[*a as usize].set.v;
+                acc[i] = self.axes[*a as usize].set.a;
+            }
+        }
+        let lateral = |x: &Vecn| {
+            let along: f64 = (0..n).map(|i| x[i] * u[i]).sum();
+            (0..n)
+                .map(|i| (x[i] - along * u[i]).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        };
+        let moving = vel[..n].iter().chain(&acc[..n]).any(|x| *x != 0.0);
+        let arc = matches!(geo, Geometry::Arc { .. });
+        moving && (arc || lateral(&vel) > 1e-12 || lateral(&acc) > 1e-12)
+    }
+
+    /// Brakes the running path to rest with `p`'s deceleration, then starts `p`.
+    fn group_brake_then(&mut self, g: usize, mut p: GPending) {
+        let halt = GPending {
+            id: p.id,
+            kind: GKind::Halt,
+            motion: GroupMotion::Halt,
+            target: ZERO,
+            inputs: p.inputs,
+            speed: 0.0,
+            end_v: 0.0,
+            prefix: None,
+            start_v: None,
+            start_corner: ZERO,
+            seq: 0,
+            reduced: None,
+        };
+        if let Err(e) = self.group_activate(g, halt, 0.0) {
+            self.cmds.set(p.id, CmdStatus::Error(e));
+            return;
+        }
+        let n = self.groups[g].n();
+        if let Some(a) = self.groups[g].active.as_mut() {
+            a.id = None;
+            // The move starts where the brake ends.
+            let (mut q, mut d1, mut d2) = (ZERO, ZERO, ZERO);
+            a.geom.eval(a.prof.end().p, n, &mut q, &mut d1, &mut d2);
+            for (i, ax) in self.groups[g].axes.iter().enumerate() {
+                if ax.is_some() {
+                    p.start_corner[i] = q[i];
+                }
+            }
+        }
+        self.cmds.set(p.id, CmdStatus::Active);
+        if let Err((e, p)) = self.groups[g].queue.push(p) {
+            self.cmds.set(p.id, CmdStatus::Error(e));
+        }
     }
 
     fn geometry_for(&self, g: usize, from: &Vecn, target: &Vecn, motion: &GroupMotion) -> Geometry {
@@ -586,58 +810,160 @@ impl Engine {
             return;
         }
         let gr = &self.groups[g];
+        // Where the predecessor's own line really starts (after its corner blend) and at
+        // what path state: it has `room` to reach the junction speed.
+        let (room_start, room, room_inputs) = match gr.queue.back() {
+            Some(b) => {
+                let start = match &b.prefix {
+                    Some((Geometry::Blend { end, .. }, _)) => *end,
+                    _ => b.start_corner,
+                };
+                let q = &gr.queue;
+                let v0 = if q.len() >= 2 {
+                    q.iter().nth(q.len() - 2).map_or(0.0, |p| p.end_v)
+                } else {
+                    gr.active.as_ref().map_or(0.0, |a| a.end_v)
+                };
+                (
+                    State {
+                        p: 0.0,
+                        v: v0,
+                        a: 0.0,
+                    },
+                    dist(&start, &b.target),
+                    b.inputs,
+                )
+            }
+            None => {
+                let a = gr.active.as_ref().map(|a| {
+                    let s_now = if a.t < a.prefix_end {
+                        a.prof.start()
+                    } else {
+                        a.prof.at(a.t - a.prefix_end)
+                    };
+                    (s_now, a.geom.len() - s_now.p, a.lim)
+                });
+                match a {
+                    Some((st, room, lim)) => (
+                        State { p: 0.0, ..st },
+                        room,
+                        PathInputs {
+                            velocity: lim.vmax,
+                            acceleration: lim.amax,
+                            deceleration: lim.dmax,
+                            jerk: lim.jmax,
+                            ..PathInputs::default()
+                        },
+                    ),
+                    None => return,
+                }
+            }
+        };
         let next_geom = self.geometry_for(g, &pred_target, &next.target, &next.motion);
         let (_, u1) = pred_geom.tangents(n);
         let (u2, _) = next_geom.tangents(n);
-        let mut vj = next.inputs.buffer.junction_speed(pred_speed, next.speed);
+        let requested = next.inputs.buffer.junction_speed(pred_speed, next.speed);
+        let mut vj = requested;
+        let mut reason = ReductionReason::Velocity;
         // Corner blend.
         let mut new_pred_target = pred_target;
         let cos = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>();
-        if next.inputs.transition != TransitionMode::None
-            && next.inputs.transition_parameter > 0.0
-            && vj > 0.0
-            && matches!(pred_geom, Geometry::Line { .. })
-            && matches!(next_geom, Geometry::Line { .. })
-        {
-            let mut d = corner_distance(
-                next.inputs.transition,
-                next.inputs.transition_parameter,
-                cos,
-            )
-            .min(pred_geom.len() / 2.0)
-            .min(next_geom.len() / 2.0);
-            if pred_is_active {
-                if let Some(a) = &gr.active {
-                    let s_now = a.prof.at(a.t - a.prefix_end).p;
-                    let remaining = pred_geom.len() - s_now;
-                    // Leave room to reach the junction speed before the blend.
-                    d = d.min(remaining * 0.5);
+        let lines = matches!(pred_geom, Geometry::Line { .. })
+            && matches!(next_geom, Geometry::Line { .. });
+        let tangent = cos >= 1.0 - 1e-12;
+        if vj > 0.0 && lines {
+            // Never above an axis's velocity limit projected onto either line.
+            let free = PathInputs {
+                velocity: f64::MAX,
+                acceleration: f64::MAX,
+                deceleration: f64::MAX,
+                jerk: 0.0,
+                ..PathInputs::default()
+            };
+            for u in [&u1, &u2] {
+                if let Ok(l) = self.path_lims(g, u, &free) {
+                    vj = vj.min(l.vmax);
                 }
             }
-            if d > 1e-9 && cos < 1.0 - 1e-12 {
-                let mut pa = pred_target;
-                let mut pb = pred_target;
-                for i in 0..n {
-                    pa[i] -= u1[i] * d;
-                    pb[i] += u2[i] * d;
+        }
+        if vj > 0.0 && !lines {
+            vj = 0.0;
+            reason = ReductionReason::Arc;
+        } else if vj > 0.0 && !tangent {
+            if next.inputs.transition == TransitionMode::None
+                || next.inputs.transition_parameter <= 0.0
+            {
+                vj = 0.0;
+                reason = ReductionReason::Corner;
+            } else {
+                let mut d = corner_distance(
+                    next.inputs.transition,
+                    next.inputs.transition_parameter,
+                    cos,
+                )
+                .min(room / 2.0)
+                .min(next_geom.len() / 2.0);
+                if pred_is_active {
+                    if let Some(a) = &gr.active {
+                        let s_now = a.prof.at(a.t - a.prefix_end).p;
+                        let remaining = pred_geom.len() - s_now;
+                        // Leave room to reach the junction speed before the blend.
+                        d = d.min(remaining * 0.5);
+                    }
                 }
-                let blend = Geometry::blend(&pa, &pred_target, &pb);
-                let kmax = blend.max_curvature(n);
-                let amin = gr
-                    .axes
-                    .iter()
-                    .flatten()
-                    .map(|&a| self.axes[a as usize].cfg.limits.amax)
-                    .fold(f64::INFINITY, f64::min)
-                    .min(next.inputs.acceleration);
-                let vmax_curve = if kmax > 0.0 {
-                    (amin / kmax).sqrt()
-                } else {
-                    f64::INFINITY
-                };
-                vj = vj.min(vmax_curve);
-                next.prefix = Some((blend, vj));
-                new_pred_target = pa;
+                match Geometry::corner_blend(&pred_target, &u1, &u2, d, n) {
+                    Some(blend) if d > 1e-9 => {
+                        let vb = self.blend_speed(g, &blend);
+                        if vb < vj {
+                            vj = vb;
+                            reason = ReductionReason::Blend;
+                        }
+                        if vj > 0.0 {
+                            next.prefix = Some((blend, vj));
+                            if let Geometry::Blend { start, .. } = blend {
+                                new_pred_target = start;
+                            }
+                        }
+                    }
+                    _ => {
+                        vj = 0.0;
+                        reason = ReductionReason::NoBlend;
+                    }
+                }
+            }
+        }
+        if vj > 0.0 {
+            // The predecessor must reach vj on the room it has left (after the blend's cut).
+            let cut = dist(&pred_target, &new_pred_target);
+            let lim = self.path_lims(g, &u1, &room_inputs).ok();
+            if let Some(lim) = lim {
+                let r = reachable(room_start, room - cut, vj, &lim);
+                if r < vj {
+                    vj = r;
+                    reason = ReductionReason::Distance;
+                    match next.prefix.as_mut() {
+                        Some(pre) if vj > 0.0 => pre.1 = vj,
+                        _ => {
+                            next.prefix = None;
+                            new_pred_target = pred_target;
+                        }
+                    }
+                }
+            }
+        }
+        if vj < requested {
+            next.reduced = Some((requested, vj));
+            let gr = &mut self.groups[g];
+            gr.reduction_count += 1;
+            if gr.reductions.len() < REDUCTIONS_KEPT {
+                gr.reductions.push(Reduction {
+                    block: next.seq,
+                    cmd: next.id,
+                    corner: pred_target,
+                    requested,
+                    reached: vj,
+                    reason,
+                });
             }
         }
         let gr = &mut self.groups[g];
@@ -671,8 +997,38 @@ impl Engine {
         }
     }
 
+    /// The highest constant path speed on a corner blend at which every axis keeps its
+    /// velocity, acceleration and jerk limits: min over axes of vmax / max|d1|,
+    /// sqrt(a / max|d2|), cbrt(j / max|d3|) (derivatives by arc length, bounded in closed
+    /// form by [`Geometry::blend_bounds`]). The block's Acceleration and Jerk bound the
+    /// path's tangential motion; on the blend the path speed is constant and the axes
+    /// carry the turn.
+    fn blend_speed(&self, g: usize, blend: &Geometry) -> f64 {
+        let n = self.groups[g].n();
+        let Some((b1, b2, b3)) = blend.blend_bounds(n) else {
+            return 0.0;
+        };
+        let mut v = f64::INFINITY;
+        for (i, a) in self.groups[g].axes.iter().enumerate() {
+            let Some(a) = a else { continue };
+            let l = self.axes[*a as usize].cfg.limits;
+            if b1[i] > 0.0 {
+                v = v.min(l.vmax / b1[i]);
+            }
+            if b2[i] > 0.0 {
+                v = v.min((l.amax.min(l.dmax) / b2[i]).sqrt());
+            }
+            if b3[i] > 0.0 && l.jmax > 0.0 && l.jmax.is_finite() {
+                v = v.min((l.jmax / b3[i]).cbrt());
+            }
+        }
+        // Rounding margin: the bounds are met with 1e-9 to spare.
+        v * (1.0 - 1e-9)
+    }
+
     fn group_abort_all(&mut self, g: usize, status: CmdStatus) {
         let gr = &mut self.groups[g];
+        gr.drop_junction = false;
         if let Some(a) = gr.active.as_mut() {
             if let Some(id) = a.id.take() {
                 self.cmds.set(id, status);
@@ -716,7 +1072,37 @@ impl Engine {
             .as_ref()
             .map(|a| (Self::path_state(a), a.lim));
         let mut tail = None;
+        let mut end_v = p.end_v;
+        // A brake that starts on a corner blend finishes the blend at its constant speed
+        // (its curvature takes the whole acceleration budget) and brakes on the line after it.
+        let in_blend = self.groups[g].active.as_ref().and_then(|a| match a.prefix {
+            Some((b @ Geometry::Blend { end, u2, .. }, v)) if a.t < a.prefix_end => {
+                Some((b, v, a.t, a.prefix_end, end, u2))
+            }
+            _ => None,
+        });
+        let mut keep_prefix = None;
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
+            GKind::Halt | GKind::Stop | GKind::Brake if in_blend.is_some() => {
+                let Some((b, v, t, pe, end, u2)) = in_blend else {
+                    return Err(ErrorId::PlanningFailed);
+                };
+                let mut i2 = p.inputs;
+                i2.velocity = f64::MAX;
+                i2.acceleration = p.inputs.deceleration;
+                let mut lim = self.path_lims(g, &u2, &i2)?;
+                lim.amax = lim.amax.max(lim.dmax);
+                lim.vmax = lim.vmax.max(v);
+                let s0 = State { p: 0.0, v, a: 0.0 };
+                let prof = Profile::velocity(s0, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)?;
+                let mut far = end;
+                let l = prof.end().p.max(1e-9);
+                for i in 0..n {
+                    far[i] += u2[i] * l;
+                }
+                keep_prefix = Some(((b, v), t));
+                (Geometry::line(&end, &far), prof, lim, None, pe)
+            }
             GKind::Home | GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
                     (Geometry::line(&now, &now), State::default()),
@@ -729,6 +1115,7 @@ impl Engine {
                 let mut lim = self.path_lims(g, &u, &i2)?;
                 lim.amax = lim.amax.max(lim.dmax);
                 lim.vmax = lim.vmax.max(s.v.abs());
+                self.raise_jerk(g, &u, s, &mut lim);
                 let prof = Profile::velocity(s, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)?;
                 (geo, prof, lim, None, 0.0)
             }
@@ -757,17 +1144,26 @@ impl Engine {
                         (v0, a0, 0.0)
                     }
                 };
-                let (prof, t) = crate::engine::plan_to(
-                    State {
-                        p: 0.0,
-                        v: v0,
-                        a: a0,
-                    },
-                    geo.len(),
-                    p.end_v,
-                    &lim,
-                )
-                .map_err(|_| ErrorId::PlanningFailed)?;
+                let s0 = State {
+                    p: 0.0,
+                    v: v0,
+                    a: a0,
+                };
+                self.raise_jerk(g, &u, s0, &mut lim);
+                let planned = match crate::engine::plan_to(s0, geo.len(), p.end_v, &lim) {
+                    Err(_) if p.end_v > 0.0 => {
+                        // The junction speed cannot be planned from here: stop at the
+                        // junction instead (reported), the successor starts from rest.
+                        let r = crate::engine::plan_to(s0, geo.len(), 0.0, &lim);
+                        if r.is_ok() {
+                            self.note_dropped_junction(g, &p);
+                            end_v = 0.0;
+                        }
+                        r
+                    }
+                    r => r,
+                };
+                let (prof, t) = planned.map_err(|_| ErrorId::PlanningFailed)?;
                 tail = t;
                 (geo, prof, lim, None, pe)
             }
@@ -819,13 +1215,13 @@ impl Engine {
             id: Some(p.id),
             geom,
             prof,
-            t: t0,
-            prefix: p.prefix,
+            t: keep_prefix.map_or(t0, |k| k.1),
+            prefix: keep_prefix.map_or(p.prefix, |k| Some(k.0)),
             prefix_end,
             target: p.target,
             speed: p.speed,
             lim,
-            end_v: p.end_v,
+            end_v,
             direct,
             tail,
         });
@@ -887,6 +1283,8 @@ impl Engine {
                 prefix: None,
                 start_v: None,
                 start_corner: ZERO,
+                seq: 0,
+                reduced: None,
             };
             if self.group_activate(g, p, 0.0).is_err() {
                 self.finish_group(g);
@@ -1011,9 +1409,37 @@ impl Engine {
         }
     }
 
+    /// Writes the set points of the group's axes from the running path move at its time.
+    fn write_path_setpoints(&mut self, g: usize) {
+        let n = self.groups[g].n();
+        let Some(a) = self.groups[g].active.as_ref() else {
+            return;
+        };
+        if a.direct.is_some() {
+            return;
+        }
+        let (geo, s) = Self::path_state(a);
+        let (mut pos, mut d1, mut d2) = self.groups[g].scratch;
+        geo.eval(s.p, n, &mut pos, &mut d1, &mut d2);
+        for i in 0..n {
+            if let Some(ax) = self.groups[g].axes[i] {
+                if self.axes[ax as usize].active.kind != Kind::Group {
+                    continue;
+                }
+                self.axes[ax as usize].set = State {
+                    p: pos[i],
+                    v: d1[i] * s.v,
+                    a: d1[i] * s.a + d2[i] * s.v * s.v,
+                };
+            }
+        }
+        self.groups[g].scratch = (pos, d1, d2);
+    }
+
     /// One cycle of every group with a running move.
     pub(crate) fn step_groups(&mut self, dt: f64) {
         for g in 0..self.groups.len() {
+            self.groups[g].junction_now = (0.0, 0.0);
             let Some(mut a) = self.groups[g].active.take() else {
                 continue;
             };
@@ -1039,6 +1465,14 @@ impl Engine {
                 }
                 ended = done;
             } else {
+                if let Some(tail) = a.tail {
+                    if a.t >= a.prefix_end + a.prof.duration() {
+                        // Main part done: the velocity-change tail follows at once.
+                        a.prefix_end += a.prof.duration();
+                        a.prof = tail;
+                        a.tail = None;
+                    }
+                }
                 let (geo, s) = Self::path_state(&a);
                 geo.eval(s.p, n, &mut pos, &mut d1, &mut d2);
                 for i in 0..n {
@@ -1054,14 +1488,6 @@ impl Engine {
                     }
                 }
                 ended = a.t >= a.prefix_end + a.prof.duration() && a.tail.is_none();
-                if let Some(tail) = a.tail {
-                    if a.t >= a.prefix_end + a.prof.duration() {
-                        // Main part done: the velocity-change tail follows (next cycle).
-                        a.prefix_end += a.prof.duration();
-                        a.prof = tail;
-                        a.tail = None;
-                    }
-                }
             }
             self.groups[g].scratch = (pos, d1, d2);
             let kind = a.kind;
@@ -1075,7 +1501,7 @@ impl Engine {
             if let Some(id) = id {
                 self.cmds.set(id, CmdStatus::Done);
             }
-            if matches!(kind, GKind::Path | GKind::Direct) && end_v == 0.0 {
+            if matches!(kind, GKind::Path | GKind::Direct) {
                 // Land exactly on the commanded end point.
                 let target = self.groups[g].active.as_ref().map(|a| a.target);
                 if let Some(target) = target {
@@ -1084,9 +1510,11 @@ impl Engine {
                             if self.axes[ax as usize].active.kind != Kind::Group {
                                 continue;
                             }
+                            // At a junction (end_v > 0) the successor starts from the
+                            // end point, not from the profile extrapolated past it.
                             let s = &mut self.axes[ax as usize].set;
                             s.p = *t;
-                            s.v = 0.0;
+                            s.v = d1[i] * end_v;
                             s.a = 0.0;
                         }
                     }
@@ -1103,13 +1531,9 @@ impl Engine {
                     // Next buffered move starts from the junction.
                     let mut started = false;
                     while let Some(mut p) = self.groups[g].queue.pop() {
-                        if let Some(nx) = self.groups[g].queue.front() {
-                            if nx.inputs.buffer.is_blending()
-                                && p.end_v == 0.0
-                                && p.kind == GKind::Path
-                            {
-                                p.end_v = nx.inputs.buffer.junction_speed(p.speed, nx.speed);
-                            }
+                        if std::mem::take(&mut self.groups[g].drop_junction) {
+                            p.prefix = None;
+                            p.start_v = None;
                         }
                         let t0 = if end_v > 0.0 { leftover.max(0.0) } else { 0.0 };
                         if end_v > 0.0 {
@@ -1117,10 +1541,21 @@ impl Engine {
                         }
                         match self.group_activate(g, p, t0) {
                             Ok(()) => {
+                                if let Some(r) = p.reduced {
+                                    self.groups[g].junction_now = r;
+                                }
+                                if t0 > 0.0 {
+                                    // The successor already ran `t0` of this cycle.
+                                    self.write_path_setpoints(g);
+                                }
                                 started = true;
                                 break;
                             }
-                            Err(e) => self.cmds.set(p.id, CmdStatus::Error(e)),
+                            Err(e) => {
+                                // Its successor cannot join it: it starts from rest.
+                                self.groups[g].drop_junction = true;
+                                self.cmds.set(p.id, CmdStatus::Error(e));
+                            }
                         }
                     }
                     if !started {
@@ -1135,6 +1570,37 @@ impl Engine {
     }
 }
 
+/// The junction speed closest to `vj` (towards the start speed) that a jerk-limited
+/// velocity change from `start` reaches within `room` (bisection on the distance the
+/// change needs).
+fn reachable(start: State, room: f64, vj: f64, lim: &Limits) -> f64 {
+    let mut l = *lim;
+    l.vmax = l.vmax.max(start.v.abs()).max(vj);
+    l.amax = l.amax.max(start.a.abs());
+    let need =
+        |v: f64| -> f64 { Profile::velocity(start, v, &l).map_or(f64::INFINITY, |p| p.end().p) };
+    if room <= 0.0 {
+        return 0.0;
+    }
+    if need(vj) <= room {
+        return vj;
+    }
+    // From vj towards the start speed, the distance needed shrinks (when accelerating).
+    let (mut ok, mut bad) = (start.v.max(0.0), vj);
+    if need(ok) > room {
+        return if vj < start.v { vj } else { 0.0 };
+    }
+    for _ in 0..60 {
+        let m = 0.5 * (ok + bad);
+        if need(m) <= room {
+            ok = m;
+        } else {
+            bad = m;
+        }
+    }
+    ok
+}
+
 fn dist(a: &Vecn, b: &Vecn) -> f64 {
     a.iter()
         .zip(b)
@@ -1143,19 +1609,19 @@ fn dist(a: &Vecn, b: &Vecn) -> f64 {
         .sqrt()
 }
 
-/// Corner distance d of the symmetric quadratic Bezier blend (legs meeting with unit
-/// tangents u1, u2, cos = u1.u2). TMCornerDistance gives d itself. The blend's closest
-/// point to the corner is its midpoint (p0 + 2 c + p2) / 4, at distance
-/// d |u2 - u1| / 4 = d sqrt(2 - 2 cos) / 4 from it, so TMMaxCornerDeviation e gives
-/// d = 4 e / sqrt(2 - 2 cos) (a shorter d, as when a leg is short, deviates less).
+/// Corner distance d of the clothoid blend (legs meeting with unit tangents u1, u2,
+/// cos = u1.u2). TMCornerDistance gives d itself. The blend's closest point to the corner
+/// is its midpoint; TMMaxCornerDeviation e gives the d whose midpoint is e from the corner
+/// ([`Geometry::blend_distance_for_deviation`]; a shorter d, as when a leg is short,
+/// deviates less).
 pub(crate) fn corner_distance(mode: TransitionMode, parameter: f64, cos: f64) -> f64 {
     match mode {
         TransitionMode::None => 0.0,
         TransitionMode::CornerDistance => parameter,
         TransitionMode::MaxCornerDeviation => {
-            let gap = (2.0 - 2.0 * cos).max(0.0).sqrt();
-            if gap > 1e-12 {
-                4.0 * parameter / gap
+            let alpha = cos.clamp(-1.0, 1.0).acos();
+            if alpha > 1e-9 {
+                Geometry::blend_distance_for_deviation(parameter, alpha)
             } else {
                 0.0
             }

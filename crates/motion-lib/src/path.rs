@@ -3,8 +3,8 @@
 //! Input: points in up to [`MAX_AXES`] coordinates (index = identity in the group).
 //! Output: a [`Geometry`] parametrised by its arc length s: position, first and second
 //! derivative with respect to s (so axis velocity = d1 * ds/dt, acceleration =
-//! d1 * d2s/dt2 + d2 * (ds/dt)^2). Invariants: |d1| = 1 on lines, arcs and (to the table's
-//! accuracy) blends; nothing allocates.
+//! d1 * d2s/dt2 + d2 * (ds/dt)^2). Invariants: |d1| = 1 on lines, arcs and blends (closed
+//! form); blends have zero curvature at both ends; nothing allocates.
 
 /// Most axes in a group (X, Y, Z, A, B, C, U, V, W and 7 more).
 pub const MAX_AXES: usize = 16;
@@ -16,8 +16,6 @@ pub const IDENT_NAMES: [&str; MAX_AXES] = [
 
 /// A point or vector over the group's axes.
 pub type Vecn = [f64; MAX_AXES];
-
-const TABLE: usize = 32;
 
 /// One path piece (fixed size, no heap: the blend carries its arc-length table inline).
 #[allow(clippy::large_enum_variant)]
@@ -40,13 +38,26 @@ pub enum Geometry {
         delta: Vecn,
         len: f64,
     },
-    /// Quadratic Bezier corner blend p0 -> (control p1) -> p2, with an arc-length table.
+    /// Corner blend: a symmetric pair of clothoids (Euler spirals) from `start` (on the first
+    /// line, heading `u1`) to the point at the same distance after the corner (heading
+    /// `u2`). The curvature grows linearly from 0 to its peak at the middle and back to 0,
+    /// so the axis acceleration is 0 at both ends (no step) and the jerk stays finite.
+    /// The tangent is exact at every s (closed form); the position integrates it with a
+    /// fixed Gauss-Legendre rule.
     Blend {
-        p0: Vecn,
-        p1: Vecn,
-        p2: Vecn,
+        start: Vecn,
+        end: Vecn,
+        u1: Vecn,
+        /// Unit normal towards the inside of the corner, first half.
+        w1: Vecn,
+        u2: Vecn,
+        /// Unit normal towards the inside of the corner seen backwards from `end`.
+        w2: Vecn,
+        /// Half the deflection angle (the tangent turns by `half` over each half).
+        half: f64,
+        /// Length of each half.
+        l: f64,
         len: f64,
-        table: [f64; TABLE + 1],
     },
 }
 
@@ -286,34 +297,100 @@ impl Geometry {
         Some(Self::helix(c, e1, e2, r, angle, start, delta))
     }
 
-    /// The corner blend from `p0` through control `p1` to `p2`.
-    pub fn blend(p0: &Vecn, p1: &Vecn, p2: &Vecn) -> Geometry {
-        let mut table = [0.0; TABLE + 1];
-        let mut prev = *p0;
-        for (k, slot) in table.iter_mut().enumerate().skip(1) {
-            let p = bezier(p0, p1, p2, k as f64 / TABLE as f64);
-            let mut acc = 0.0;
-            // Sub-sample each table step for accuracy.
-            let mut q = prev;
-            for j in 1..=8 {
-                let u = (k as f64 - 1.0 + j as f64 / 8.0) / TABLE as f64;
-                let r = bezier(p0, p1, p2, u);
-                acc += norm(&sub(&r, &q));
-                q = r;
-            }
-            *slot = acc;
-            prev = p;
+    /// The corner blend at `corner` between a line arriving with unit direction `u1` and
+    /// one leaving with `u2`, starting and ending `d` from the corner. None when the lines
+    /// are parallel (no corner) or reverse (no blend can turn by 180 degrees).
+    pub fn corner_blend(corner: &Vecn, u1: &Vecn, u2: &Vecn, d: f64, n: usize) -> Option<Geometry> {
+        let c: f64 = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>().clamp(-1.0, 1.0);
+        let alpha = c.acos();
+        let usable = d > 0.0 && alpha > 1e-9 && alpha <= std::f64::consts::PI - 1e-6;
+        if !usable {
+            return None;
         }
-        for k in 1..=TABLE {
-            table[k] += table[k - 1];
+        let half = alpha / 2.0;
+        let mut w1 = [0.0; MAX_AXES];
+        let mut w2 = [0.0; MAX_AXES];
+        for i in 0..n {
+            w1[i] = u2[i] - c * u1[i];
+            w2[i] = c * u2[i] - u1[i];
         }
-        Geometry::Blend {
-            p0: *p0,
-            p1: *p1,
-            p2: *p2,
-            len: table[TABLE],
-            table,
+        let (n1, n2) = (norm(&w1), norm(&w2));
+        if n1 < 1e-12 || n2 < 1e-12 {
+            return None;
         }
+        for i in 0..n {
+            w1[i] /= n1;
+            w2[i] /= n2;
+        }
+        let (fx, fy) = fresnel(half, 1.0);
+        let l = d / (fx + fy * half.tan());
+        let mut start = *corner;
+        let mut end = *corner;
+        for i in 0..n {
+            start[i] -= u1[i] * d;
+            end[i] += u2[i] * d;
+        }
+        Some(Geometry::Blend {
+            start,
+            end,
+            u1: *u1,
+            w1,
+            u2: *u2,
+            w2,
+            half,
+            l,
+            len: 2.0 * l,
+        })
+    }
+
+    /// Corner distance of the blend of [`Geometry::corner_blend`] whose midpoint, its
+    /// closest point to the corner, is `e` away from the corner (deflection `alpha`).
+    pub fn blend_distance_for_deviation(e: f64, alpha: f64) -> f64 {
+        let half = alpha / 2.0;
+        let (fx, fy) = fresnel(half, 1.0);
+        if fy <= 0.0 {
+            return 0.0;
+        }
+        let l = e * half.cos() / fy;
+        l * (fx + fy * half.tan())
+    }
+
+    /// Upper bounds, per axis, of |d1|, |d2| and |d3| (derivatives by arc length) over the
+    /// piece: at constant path speed v an axis moves at v |d1|, accelerates at v^2 |d2| and
+    /// jerks at v^3 |d3|. Blends only (lines: d1 = unit, d2 = d3 = 0).
+    pub fn blend_bounds(&self, n: usize) -> Option<(Vecn, Vecn, Vecn)> {
+        let Geometry::Blend {
+            u1,
+            w1,
+            u2,
+            w2,
+            half,
+            l,
+            ..
+        } = self
+        else {
+            return None;
+        };
+        // theta(s) = half (s / l)^2 on each half: theta' <= 2 half / l, theta'' = 2 half / l^2.
+        let k1 = 2.0 * half / l;
+        let k2 = 2.0 * half / (l * l);
+        let (mut b1, mut b2, mut b3) = ([0.0; MAX_AXES], [0.0; MAX_AXES], [0.0; MAX_AXES]);
+        for i in 0..n {
+            let mut t_max: f64 = 0.0;
+            let mut n_max: f64 = 0.0;
+            // First half: tangent cos th u1 + sin th w1, normal -sin th u1 + cos th w1;
+            // second half: tangent cos th u2 - sin th w2, normal sin th u2 + cos th w2.
+            t_max = t_max
+                .max(max_abs_cos(u1[i], w1[i], *half))
+                .max(max_abs_cos(u2[i], -w2[i], *half));
+            n_max = n_max
+                .max(max_abs_cos(w1[i], -u1[i], *half))
+                .max(max_abs_cos(w2[i], u2[i], *half));
+            b1[i] = t_max;
+            b2[i] = k1 * n_max;
+            b3[i] = k2 * n_max + k1 * k1 * t_max;
+        }
+        Some((b1, b2, b3))
     }
 
     /// Arc length.
@@ -365,42 +442,49 @@ impl Geometry {
                 }
             }
             Geometry::Blend {
-                p0,
-                p1,
-                p2,
+                start,
+                end,
+                u1,
+                w1,
+                u2,
+                w2,
+                half,
+                l,
                 len,
-                table,
             } => {
                 let sc = s.clamp(0.0, *len);
-                let k = table.partition_point(|&x| x <= sc).clamp(1, TABLE);
-                let (a, b) = (table[k - 1], table[k]);
-                let f = if b > a { (sc - a) / (b - a) } else { 0.0 };
-                let u = ((k - 1) as f64 + f) / TABLE as f64;
-                let p = bezier(p0, p1, p2, u);
-                let mut b1 = [0.0; MAX_AXES];
-                let mut b2 = [0.0; MAX_AXES];
-                for i in 0..n {
-                    b1[i] = 2.0 * (1.0 - u) * (p1[i] - p0[i]) + 2.0 * u * (p2[i] - p1[i]);
-                    b2[i] = 2.0 * (p2[i] - 2.0 * p1[i] + p0[i]);
-                }
-                let n1 = norm(&b1).max(1e-12);
-                let dd: f64 = (0..n).map(|i| b1[i] * b2[i]).sum();
                 let extra = s - sc;
+                // First half from `start`; second half mirrored from `end`.
+                let (second, sig) = if sc <= *l {
+                    (false, sc)
+                } else {
+                    (true, len - sc)
+                };
+                let th = half * (sig / l) * (sig / l);
+                let dth = 2.0 * half * sig / (l * l);
+                let (sn, cs) = th.sin_cos();
+                let (x, y) = fresnel(*half, sig / l);
                 for i in 0..n {
-                    d1[i] = b1[i] / n1;
-                    d2[i] = if extra == 0.0 {
-                        (b2[i] * n1 * n1 - b1[i] * dd) / (n1 * n1 * n1 * n1)
+                    if !second {
+                        pos[i] = start[i] + l * (x * u1[i] + y * w1[i]);
+                        d1[i] = cs * u1[i] + sn * w1[i];
+                        d2[i] = dth * (-sn * u1[i] + cs * w1[i]);
                     } else {
-                        0.0
-                    };
-                    pos[i] = p[i] + extra * d1[i];
+                        pos[i] = end[i] - l * (x * u2[i] - y * w2[i]);
+                        d1[i] = cs * u2[i] - sn * w2[i];
+                        d2[i] = dth * (sn * u2[i] + cs * w2[i]);
+                    }
+                    if extra != 0.0 {
+                        d2[i] = 0.0;
+                    }
+                    pos[i] += extra * d1[i];
                 }
             }
         }
     }
 
     /// Largest curvature (1/radius) along the piece (sampled).
-    pub fn max_curvature(&self, n: usize) -> f64 {
+    pub fn max_curvature(&self, _n: usize) -> f64 {
         match self {
             Geometry::Line { .. } => 0.0,
             Geometry::Arc { r, angle, len, .. } => {
@@ -410,15 +494,7 @@ impl Geometry {
                     0.0
                 }
             }
-            Geometry::Blend { len, .. } => {
-                let (mut p, mut d1, mut d2) = ([0.0; MAX_AXES], [0.0; MAX_AXES], [0.0; MAX_AXES]);
-                let mut k: f64 = 0.0;
-                for j in 0..=TABLE {
-                    self.eval(len * j as f64 / TABLE as f64, n, &mut p, &mut d1, &mut d2);
-                    k = k.max(norm(&d2));
-                }
-                k
-            }
+            Geometry::Blend { half, l, .. } => 2.0 * half / l,
         }
     }
 
@@ -436,11 +512,51 @@ impl Geometry {
     }
 }
 
-fn bezier(p0: &Vecn, p1: &Vecn, p2: &Vecn, u: f64) -> Vecn {
-    let mut r = [0.0; MAX_AXES];
-    let (a, b, c) = ((1.0 - u) * (1.0 - u), 2.0 * u * (1.0 - u), u * u);
-    for i in 0..MAX_AXES {
-        r[i] = a * p0[i] + b * p1[i] + c * p2[i];
+/// max over theta in [0, half] of |a cos theta + b sin theta| (half <= pi/2).
+fn max_abs_cos(a: f64, b: f64, half: f64) -> f64 {
+    let f = |t: f64| (a * t.cos() + b * t.sin()).abs();
+    let mut m = f(0.0).max(f(half));
+    // Stationary point: tan theta = b / a.
+    let t = b.atan2(a);
+    for t in [t, t + std::f64::consts::PI, t - std::f64::consts::PI] {
+        if (0.0..=half).contains(&t) {
+            m = m.max(f(t));
+        }
     }
-    r
+    m
+}
+
+/// (int_0^x cos(beta t^2) dt, int_0^x sin(beta t^2) dt) for 0 <= x <= 1, beta <= pi/2:
+/// 16-point Gauss-Legendre (the integrand is smooth; error below 1e-15).
+fn fresnel(beta: f64, x: f64) -> (f64, f64) {
+    const XS: [f64; 8] = [
+        0.095_012_509_837_637_44,
+        0.281_603_550_779_258_9,
+        0.458_016_777_657_227_4,
+        0.617_876_244_402_643_7,
+        0.755_404_408_355_003,
+        0.865_631_202_387_831_7,
+        0.944_575_023_073_232_6,
+        0.989_400_934_991_649_9,
+    ];
+    const WS: [f64; 8] = [
+        0.189_450_610_455_068_5,
+        0.182_603_415_044_923_6,
+        0.169_156_519_395_002_5,
+        0.149_595_988_816_576_7,
+        0.124_628_971_255_533_9,
+        0.095_158_511_682_492_78,
+        0.062_253_523_938_647_89,
+        0.027_152_459_411_754_09,
+    ];
+    let h = x / 2.0;
+    let (mut c, mut s) = (0.0, 0.0);
+    for k in 0..8 {
+        for t in [h * (1.0 - XS[k]), h * (1.0 + XS[k])] {
+            let (sn, cs) = (beta * t * t).sin_cos();
+            c += WS[k] * cs;
+            s += WS[k] * sn;
+        }
+    }
+    (c * h, s * h)
 }

@@ -241,18 +241,22 @@ fn max_corner_deviation_bounds_the_blend() {
             corner_run([100.0, 0.0], end, TransitionMode::MaxCornerDeviation, dev);
         // The blend passes the corner at exactly the deviation (its midpoint): no
         // sample comes nearer, and the nearest sample is within the sampling error
-        // (0.05 per cycle along a curve of radius > 2) of it.
+        // (at most 0.05 per cycle along the clothoid blend) of it.
         assert!(closest >= dev * (1.0 - 1e-9), "{end:?}: {closest}");
-        assert!(closest <= dev * (1.0 + 1e-4), "{end:?}: {closest}");
+        assert!(closest <= dev * (1.0 + 5e-4), "{end:?}: {closest}");
         // Axis velocity vector continuous: every change within acceleration * dt (10 %
         // margin for the discrete evaluation), path speed within the block velocity.
         assert!(jump <= 500.0 * DT * 1.1, "{end:?}: {jump}");
         assert!(vmax <= 50.0 * (1.0 + 1e-9), "{vmax}");
         assert!((at[0] - end[0]).abs() < 1e-6 && (at[1] - end[1]).abs() < 1e-6);
     }
-    // Without a transition the path goes through the corner and the velocity jumps.
+    // Without a transition the path goes through the corner, where it stops: no speed is
+    // feasible at a sharp corner (the velocity vector would step).
     let (closest, jump, _, _) = corner_run([100.0, 0.0], [100.0, 100.0], TransitionMode::None, 0.0);
-    assert!(closest < 1e-6 && jump > 5.0, "{closest} {jump}");
+    assert!(
+        closest < 1e-6 && jump <= 500.0 * DT * (1.0 + 1e-9),
+        "{closest} {jump}"
+    );
 }
 
 #[test]
