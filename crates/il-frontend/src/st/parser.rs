@@ -1047,7 +1047,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             Tok::TypePrefix => self.typed_literal(),
             Tok::LParen => {
                 self.bump();
-                let inner = self.expr();
+                let mut inner = self.expr();
                 if self.at(&Tok::RParen) {
                     self.bump();
                 } else {
@@ -1059,11 +1059,8 @@ impl<'s, 'd> Parser<'s, 'd> {
                             .with_hint("close the parenthesis"),
                     );
                 }
-                let span = here.to(self.span(self.prev_end(), self.prev_end()));
-                Expr {
-                    kind: inner.kind,
-                    span,
-                }
+                inner.span = here.to(self.span(self.prev_end(), self.prev_end()));
+                inner
             }
             Tok::Ident if *self.peek_at(1) == Tok::LParen => {
                 let n = self.bump();
