@@ -1066,11 +1066,11 @@ impl<'d> PouLowering<'d> {
                         operand: Some(_),
                     },
                 ..
-            })) => match body.remove(0) {
+            })) => match &mut body.remove(0) {
                 IlStmt::Instr(Instruction {
                     kind: InstrKind::Simple { operand, .. },
                     ..
-                }) => operand,
+                }) => operand.take(),
                 _ => None,
             },
             _ => None,
