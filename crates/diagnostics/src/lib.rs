@@ -15,7 +15,10 @@ mod span;
 
 pub use codes::{all as all_codes, explain, lookup, Code, CodeInfo};
 pub use diagnostic::{Diagnostic, Label, Severity, XmlContext};
-pub use render::{hint_of, render, render_human, render_json_line, render_short, MessageFormat};
+pub use render::{
+    hint_of, max_per_file, render, render_human, render_json_line, render_short, set_max_per_file,
+    MessageFormat, DEFAULT_MAX_PER_FILE,
+};
 pub use source::{SourceFile, SourceMap};
 pub use span::{FileId, Span};
 

@@ -16,6 +16,9 @@ pub struct Cli {
     /// How diagnostics are printed on stderr.
     #[arg(long, value_enum, default_value_t = Format::Human, global = true)]
     pub message_format: Format,
+    /// At most N diagnostics per file in the human and short formats (0: all); JSON shows all.
+    #[arg(long, value_name = "N", default_value_t = diagnostics::DEFAULT_MAX_PER_FILE, global = true)]
+    pub max_diagnostics: usize,
     #[command(subcommand)]
     pub command: Command,
 }
@@ -223,6 +226,7 @@ pub fn main() -> i32 {
             return if e.use_stderr() { EXIT_USAGE } else { EXIT_OK };
         }
     };
+    diagnostics::set_max_per_file(cli.max_diagnostics);
     match cli.command {
         Command::Explain { code } => explain(code.as_deref()),
         Command::Drive(cmd) => drive(cmd, cli.message_format.into()),
