@@ -36,7 +36,9 @@ impl Sizer<'_> {
             Type::Elementary(e) => Some(u64::from(e.size_bytes())),
             Type::String { wide, len } => {
                 let unit = if *wide { 2 } else { 1 };
-                u64::from(*len).checked_add(1).and_then(|n| n.checked_mul(unit))
+                u64::from(*len)
+                    .checked_add(1)
+                    .and_then(|n| n.checked_mul(unit))
             }
             Type::Array { dims, element } => {
                 let mut n = self.try_size(element)?;
@@ -50,7 +52,13 @@ impl Sizer<'_> {
             Type::Subrange { base, .. } => Some(u64::from(base.size_bytes())),
             Type::Fb(FbType::Standard(fb)) => {
                 let params = il_frontend::sema::stdlib::fb_params(*fb);
-                Some(params.iter().map(|p| u64::from(p.ty.size_bytes())).sum::<u64>() + 32)
+                Some(
+                    params
+                        .iter()
+                        .map(|p| u64::from(p.ty.size_bytes()))
+                        .sum::<u64>()
+                        + 32,
+                )
             }
             Type::Fb(FbType::User(id)) => self.known(Key::Fb(id.0 as usize))?,
             Type::Error => Some(0),
@@ -127,7 +135,9 @@ impl Sizer<'_> {
 
 fn too_large(what: String, size: Size, budget: u64, span: Span, label: &str) -> Diagnostic {
     let msg = match size {
-        Some(n) => format!("{what} needs {n} bytes, more than the target's data budget of {budget} bytes"),
+        Some(n) => {
+            format!("{what} needs {n} bytes, more than the target's data budget of {budget} bytes")
+        }
         None => format!("{what} is too large: its size in bytes overflows a 64-bit count"),
     };
     Diagnostic::error(code::E2100, msg)
@@ -212,8 +222,14 @@ pub fn check(model: &Model, profile: &TargetProfile, diags: &mut Diagnostics) ->
     if diags.error_count() == start && total.is_none_or(|n| n > budget) {
         if let Some((_, span, name)) = biggest {
             diags.push(
-                too_large("the program's static data".to_string(), total, budget, span, "")
-                    .with_primary_label(format!("the largest part: `{name}`")),
+                too_large(
+                    "the program's static data".to_string(),
+                    total,
+                    budget,
+                    span,
+                    "",
+                )
+                .with_primary_label(format!("the largest part: `{name}`")),
             );
         }
     }

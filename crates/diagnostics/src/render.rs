@@ -5,8 +5,8 @@ use crate::source::{SourceFile, SourceMap};
 use codespan_reporting::diagnostic as cs;
 use codespan_reporting::files;
 use codespan_reporting::term;
-use std::sync::atomic::{AtomicUsize, Ordering};
 use serde::Serialize;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MessageFormat {
@@ -182,8 +182,7 @@ impl<'a> files::Files<'a> for Excerpts {
     }
     fn line_index(&'a self, id: usize, byte_index: usize) -> Result<usize, files::Error> {
         let x = self.get(id)?;
-        Ok(x
-            .lines
+        Ok(x.lines
             .partition_point(|l| l.start <= byte_index)
             .saturating_sub(1))
     }
@@ -214,7 +213,10 @@ impl<'a> files::Files<'a> for Excerpts {
             given: line_index,
             max: x.lines.len(),
         })?;
-        let end = x.lines.get(line_index + 1).map_or(x.text.len(), |n| n.start);
+        let end = x
+            .lines
+            .get(line_index + 1)
+            .map_or(x.text.len(), |n| n.start);
         Ok(l.start..end)
     }
 }

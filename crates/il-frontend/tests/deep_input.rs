@@ -37,7 +37,13 @@ fn a_chain_of_100000_additions_lowers_to_flat_il() {
 
 #[test]
 fn chains_of_every_left_associative_operator_survive_a_small_stack() {
-    for (op, var) in [(" - ", "a"), (" * ", "a"), (" AND ", "b"), (" OR ", "b"), (" ** ", "r")] {
+    for (op, var) in [
+        (" - ", "a"),
+        (" * ", "a"),
+        (" AND ", "b"),
+        (" OR ", "b"),
+        (" ** ", "r"),
+    ] {
         let (lines, diags) = on_small_stack(move || chain(20_000, op, var));
         assert!(lines > 20_000, "{op}: {lines} lines, {diags}");
         assert!(!diags.contains("panicked"), "{diags}");
@@ -84,14 +90,16 @@ fn check_il(src: String) -> (Vec<String>, String) {
 fn il_lists_nested_100000_deep_are_cut_at_the_limit_with_e0200() {
     let (codes, printed) = on_small_stack(|| check_il(nested_il(100_000)));
     assert_eq!(codes, ["E0200"], "one located diagnostic");
-    let deepest = printed.lines().filter(|l| l.trim_start().starts_with("ADD(")).count();
+    let deepest = printed
+        .lines()
+        .filter(|l| l.trim_start().starts_with("ADD("))
+        .count();
     // levels 1..=MAX keep their lists; the list at MAX + 1 is emptied (its instruction stays)
     assert_eq!(deepest, il_frontend::parser::MAX_NESTING + 1);
 }
 
 #[test]
 fn il_lists_at_the_limit_are_accepted() {
-    let (codes, _) =
-        on_small_stack(|| check_il(nested_il(il_frontend::parser::MAX_NESTING)));
+    let (codes, _) = on_small_stack(|| check_il(nested_il(il_frontend::parser::MAX_NESTING)));
     assert!(codes.is_empty(), "{codes:?}");
 }

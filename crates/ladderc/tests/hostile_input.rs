@@ -95,8 +95,16 @@ fn c_for_deeply_nested_lists_grows_linearly_and_runs() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let c = std::fs::read_to_string(dir.path().join("out/program.c")).unwrap();
     let widest = c.lines().map(|l| l.len() - l.trim_start().len()).max();
-    assert!(widest <= Some(16 * 4), "indentation stops at 16 levels: {widest:?}");
-    assert!(c.len() < 100 * il.len(), "{} bytes of C for {} of IL", c.len(), il.len());
+    assert!(
+        widest <= Some(16 * 4),
+        "indentation stops at 16 levels: {widest:?}"
+    );
+    assert!(
+        c.len() < 100 * il.len(),
+        "{} bytes of C for {} of IL",
+        c.len(),
+        il.len()
+    );
     let out = run(&["run", "--cycles", "1", "--watch", "p.a"], &[&src]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     // a := a + (a + (... + a)): 1,001 ones
@@ -113,7 +121,11 @@ fn a_rung_of_3000_contacts_in_series_is_e3200() {
     }
     el.push(format!(r#"<coil localId="{}" negated="false"><position x="{n}" y="0"/><connectionPointIn><connection refLocalId="{}"/></connectionPointIn><connectionPointOut/><variable>b</variable></coil>"#, n + 2, n + 1));
     let dir = tempfile::tempdir().unwrap();
-    let src = write(dir.path(), "rung.xml", &project(&format!("<LD>{}</LD>", el.join("\n"))));
+    let src = write(
+        dir.path(),
+        "rung.xml",
+        &project(&format!("<LD>{}</LD>", el.join("\n"))),
+    );
     let out = run(&["--message-format", "short", "check"], &[&src]);
     assert_eq!(out.status.code(), Some(1));
     assert!(stderr(&out).contains("error[E3200]"), "{}", stderr(&out));
@@ -137,9 +149,17 @@ fn assert_spans_on_boundaries(out: &Output, what: &str) {
         let Ok(v) = serde_json::from_str::<serde_json::Value>(line) else {
             continue;
         };
-        let mut spans = vec![(v["path"].clone(), v["byte_start"].clone(), v["byte_end"].clone())];
+        let mut spans = vec![(
+            v["path"].clone(),
+            v["byte_start"].clone(),
+            v["byte_end"].clone(),
+        )];
         for l in v["labels"].as_array().into_iter().flatten() {
-            spans.push((l["path"].clone(), l["byte_start"].clone(), l["byte_end"].clone()));
+            spans.push((
+                l["path"].clone(),
+                l["byte_start"].clone(),
+                l["byte_end"].clone(),
+            ));
         }
         for (path, s, e) in spans {
             let (Some(path), Some(s), Some(e)) = (path.as_str(), s.as_u64(), e.as_u64()) else {
@@ -173,7 +193,9 @@ fn every_span_of_every_front_end_lies_on_character_boundaries() {
     let dir = tempfile::tempdir().unwrap();
     let mut runs = 0;
     for (name, seed, cmd) in seeds {
-        let bounds: Vec<usize> = (0..=seed.len()).filter(|&i| seed.is_char_boundary(i)).collect();
+        let bounds: Vec<usize> = (0..=seed.len())
+            .filter(|&i| seed.is_char_boundary(i))
+            .collect();
         for (k, &at) in bounds.iter().enumerate().step_by(bounds.len() / 40 + 1) {
             let ch = ["€", "é", "🗻", "\u{FEFF}", "{€", "(*é", "'€", "%I€"][k % 8];
             let text = format!("{}{ch}{}", &seed[..at], &seed[at..]);
@@ -217,13 +239,35 @@ fn many_errors_show_the_first_fifty_per_file_and_count_the_rest() {
     assert!(err.contains("4950 more diagnostics in"), "{err}");
     assert!(err.len() < 40_000, "{} bytes", err.len());
 
-    let out = run(&["--message-format", "short", "--max-diagnostics", "3", "check"], &[&src]);
+    let out = run(
+        &[
+            "--message-format",
+            "short",
+            "--max-diagnostics",
+            "3",
+            "check",
+        ],
+        &[&src],
+    );
     let err = stderr(&out);
     assert_eq!(err.lines().count(), 4, "{err}");
-    let out = run(&["--message-format", "short", "--max-diagnostics", "0", "check"], &[&src]);
+    let out = run(
+        &[
+            "--message-format",
+            "short",
+            "--max-diagnostics",
+            "0",
+            "check",
+        ],
+        &[&src],
+    );
     assert_eq!(stderr(&out).matches("error[E1001]").count(), 5000);
     let out = run(&["--message-format", "json", "check"], &[&src]);
-    assert_eq!(stderr(&out).lines().count(), 5000, "JSON shows every diagnostic");
+    assert_eq!(
+        stderr(&out).lines().count(),
+        5000,
+        "JSON shows every diagnostic"
+    );
 }
 
 #[test]
@@ -238,9 +282,17 @@ fn excerpts_of_long_lines_are_clipped_around_the_label() {
     let out = run(&["check"], &[&src]);
     assert_eq!(out.status.code(), Some(1));
     let err = stderr(&out);
-    assert!(err.len() < 4000, "{} bytes: {}", err.len(), &err[..err.len().min(2000)]);
+    assert!(
+        err.len() < 4000,
+        "{} bytes: {}",
+        err.len(),
+        &err[..err.len().min(2000)]
+    );
     assert!(err.contains("…"), "the cut is marked: {err}");
-    assert!(err.contains("long.il:3:980006"), "real line and column: {err}");
+    assert!(
+        err.contains("long.il:3:980006"),
+        "real line and column: {err}"
+    );
 }
 
 #[test]
@@ -281,10 +333,16 @@ fn an_array_larger_than_the_data_budget_is_e2100_before_any_c() {
         "PROGRAM p\nVAR x : ARRAY[0..2147483647] OF INT; a : INT; END_VAR\nLD a\nST x[1]\nEND_PROGRAM\n",
     );
     let out_dir = dir.path().join("out");
-    let out = run(&["--message-format", "short", "build", "-o"], &[&out_dir, &src]);
+    let out = run(
+        &["--message-format", "short", "build", "-o"],
+        &[&out_dir, &src],
+    );
     assert_eq!(out.status.code(), Some(1));
     let err = stderr(&out);
-    assert!(err.contains("big.il:2:5: error[E2100]") && err.contains("4294967296 bytes"), "{err}");
+    assert!(
+        err.contains("big.il:2:5: error[E2100]") && err.contains("4294967296 bytes"),
+        "{err}"
+    );
     assert!(!out_dir.join("program.c").exists());
 }
 
@@ -297,9 +355,16 @@ fn size_arithmetic_that_overflows_is_e2100() {
         "TYPE\n  R : ARRAY[0..1000000] OF LREAL;\n  S : STRUCT a : ARRAY[0..1000000] OF R; END_STRUCT;\nEND_TYPE\n\
          PROGRAM p\nVAR x : ARRAY[0..1000000000] OF S; a : INT; END_VAR\nLD a\nST a\nEND_PROGRAM\n",
     );
-    let out = run(&["--message-format", "short", "build", "-o"], &[&dir.path().join("out"), &src]);
+    let out = run(
+        &["--message-format", "short", "build", "-o"],
+        &[&dir.path().join("out"), &src],
+    );
     assert_eq!(out.status.code(), Some(1));
-    assert!(stderr(&out).contains("over.il:6:5: error[E2100]: variable `x` is too large"), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("over.il:6:5: error[E2100]: variable `x` is too large"),
+        "{}",
+        stderr(&out)
+    );
 }
 
 #[test]
@@ -323,5 +388,9 @@ fn the_budget_comes_from_the_profile_and_counts_the_program_data_together() {
         &[&pf, Path::new("-o"), &dir.path().join("no"), &src],
     );
     assert_eq!(out.status.code(), Some(1));
-    assert!(stderr(&out).contains("error[E2100]: the data of `p` needs 1600 bytes"), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("error[E2100]: the data of `p` needs 1600 bytes"),
+        "{}",
+        stderr(&out)
+    );
 }

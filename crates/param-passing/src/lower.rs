@@ -587,7 +587,9 @@ impl PouLowering<'_> {
             head: None,
         }];
         loop {
-            let top = stack.last_mut().expect("the outermost list stays until the end");
+            let top = stack
+                .last_mut()
+                .expect("the outermost list stays until the end");
             let Some(mut s) = top.input.next() else {
                 let done = stack.pop().expect("just looked at it");
                 let Some(mut head) = done.head else {

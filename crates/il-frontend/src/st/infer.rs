@@ -185,7 +185,9 @@ impl Env<'_> {
         let mut stack: Vec<(&Expr, bool)> = vec![(root, false)];
         while let Some((e, children_done)) = stack.pop() {
             if children_done {
-                let t = self.node(e, &|c: &Expr| cache.get(&key(c)).cloned().unwrap_or(Ty::Unknown));
+                let t = self.node(e, &|c: &Expr| {
+                    cache.get(&key(c)).cloned().unwrap_or(Ty::Unknown)
+                });
                 cache.insert(key(e), t);
                 continue;
             }
@@ -242,9 +244,7 @@ impl Env<'_> {
                     (_, t) => t,
                 }
             }
-            ExprKind::Binary { op, left, right } => {
-                self.binary(*op, sub(left), sub(right), e.span)
-            }
+            ExprKind::Binary { op, left, right } => self.binary(*op, sub(left), sub(right), e.span),
             ExprKind::Call { name, args } => self.call(name, args, e.span, sub),
             ExprKind::Error => Ty::Unknown,
         }
@@ -308,9 +308,7 @@ impl Env<'_> {
                     }
                     if f.time_arith {
                         if let Some(super::ast::Arg { value, .. }) = args.first() {
-                            if let Some(le) =
-                                sub(value).known().and_then(|t| self.elementary(t))
-                            {
+                            if let Some(le) = sub(value).known().and_then(|t| self.elementary(t)) {
                                 if let Some(o) = stdlib::time_overloads(f.name, le).next() {
                                     return Ty::Known(elem_ref(o.4, span));
                                 }
