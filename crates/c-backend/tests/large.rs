@@ -178,7 +178,7 @@ fn generated_programs_compile_strictly_and_run() {
 
 #[test]
 fn deeply_nested_deferred_operators_generate_without_recursion() {
-    let depth = il_frontend::parser::MAX_NESTING; // the deepest the IL parser accepts (E0200 beyond)
+    let depth = 1500;
     let mut src = String::from("PROGRAM deep\nVAR\n  a : BOOL;\n  q : BOOL;\nEND_VAR\n  LD a\n");
     for _ in 0..depth {
         src.push_str("  OR( a\n");

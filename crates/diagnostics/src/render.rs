@@ -54,7 +54,7 @@ pub fn max_per_file() -> usize {
     MAX_PER_FILE.load(Ordering::Relaxed)
 }
 
-/// Characters of a source line shown before the first label on it.
+/// Characters of a long source line shown before the first label on it.
 const CONTEXT_BEFORE: usize = 40;
 /// Characters of a source line shown at most; longer lines are clipped around the label with `…`.
 const MAX_LINE_CHARS: usize = 160;
@@ -97,6 +97,14 @@ impl Excerpt {
             .collect();
         by_line.sort_unstable();
         by_line.dedup_by_key(|(l, _)| *l);
+        // codespan-reporting shows the one line between two labelled lines (and `·` for a longer gap)
+        let gaps: Vec<(usize, usize)> = by_line
+            .windows(2)
+            .filter(|w| w[1].0 == w[0].0 + 2)
+            .map(|w| (w[0].0 + 1, starts[w[0].0 + 1]))
+            .collect();
+        by_line.extend(gaps);
+        by_line.sort_unstable();
         let mut out = Excerpt {
             name: f.name.clone(),
             text: String::new(),
@@ -109,12 +117,20 @@ impl Excerpt {
                 line_end -= 1;
             }
             let anchor = anchor.clamp(line_start, line_end);
-            let ws = text[line_start..anchor]
+            let short = text[line_start..line_end]
                 .char_indices()
-                .rev()
-                .take(CONTEXT_BEFORE)
-                .last()
-                .map_or(anchor, |(i, _)| line_start + i);
+                .nth(MAX_LINE_CHARS)
+                .is_none();
+            let ws = if short {
+                line_start
+            } else {
+                text[line_start..anchor]
+                    .char_indices()
+                    .rev()
+                    .take(CONTEXT_BEFORE)
+                    .last()
+                    .map_or(anchor, |(i, _)| line_start + i)
+            };
             let we = text[ws..line_end]
                 .char_indices()
                 .nth(MAX_LINE_CHARS)
@@ -180,15 +196,14 @@ impl<'a> files::Files<'a> for Excerpts {
     fn source(&'a self, id: usize) -> Result<&'a str, files::Error> {
         Ok(&self.get(id)?.text)
     }
+    /// Line indices are the real ones (0-based), so gaps between excerpt lines show as gaps.
     fn line_index(&'a self, id: usize, byte_index: usize) -> Result<usize, files::Error> {
         let x = self.get(id)?;
-        Ok(x.lines
+        let k = x
+            .lines
             .partition_point(|l| l.start <= byte_index)
-            .saturating_sub(1))
-    }
-    fn line_number(&'a self, id: usize, line_index: usize) -> Result<usize, files::Error> {
-        let x = self.get(id)?;
-        Ok(x.lines.get(line_index).map_or(line_index + 1, |l| l.number))
+            .saturating_sub(1);
+        Ok(x.lines.get(k).map_or(0, |l| l.number - 1))
     }
     fn column_number(
         &'a self,
@@ -197,7 +212,7 @@ impl<'a> files::Files<'a> for Excerpts {
         byte_index: usize,
     ) -> Result<usize, files::Error> {
         let x = self.get(id)?;
-        let Some(l) = x.lines.get(line_index) else {
+        let Some(l) = x.line(line_index) else {
             return Ok(1);
         };
         let b = byte_index.clamp(l.content, l.content + l.real.len());
@@ -209,15 +224,20 @@ impl<'a> files::Files<'a> for Excerpts {
         line_index: usize,
     ) -> Result<std::ops::Range<usize>, files::Error> {
         let x = self.get(id)?;
-        let l = x.lines.get(line_index).ok_or(files::Error::LineTooLarge {
-            given: line_index,
-            max: x.lines.len(),
-        })?;
-        let end = x
-            .lines
-            .get(line_index + 1)
-            .map_or(x.text.len(), |n| n.start);
-        Ok(l.start..end)
+        let Some(k) = x.lines.iter().position(|l| l.number == line_index + 1) else {
+            // a line outside the excerpt: shown empty
+            return Ok(x.text.len()..x.text.len());
+        };
+        let end = x.lines.get(k + 1).map_or(x.text.len(), |n| n.start);
+        Ok(x.lines[k].start..end)
+    }
+}
+
+impl Excerpt {
+    /// The excerpt line of real 0-based line `index`.
+    fn line(&self, index: usize) -> Option<&ExcerptLine> {
+        let k = self.lines.binary_search_by_key(&(index + 1), |l| l.number).ok()?;
+        self.lines.get(k)
     }
 }
 

@@ -827,7 +827,7 @@ pub(crate) fn run(
 }
 
 /// The deepest nesting of parenthesised lists (`AND( ... ADD( ... ) ... )`) accepted in IL.
-pub const MAX_NESTING: usize = 1000;
+pub const MAX_NESTING: usize = 2000;
 
 /// Reports (E0200, once per body) and empties every nested list deeper than [`MAX_NESTING`], so
 /// later stages (sema, C, and the C compiler's own parser) never see unbounded nesting. The walk

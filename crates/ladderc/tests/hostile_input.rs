@@ -82,12 +82,12 @@ fn il_nested_100000_deep_is_e0200() {
     let out = run(&["--message-format", "short", "check"], &[&src]);
     assert_eq!(out.status.code(), Some(1));
     let err = stderr(&out);
-    assert!(err.contains("deep.il:1004:1: error[E0200]"), "{err}");
+    assert!(err.contains("deep.il:2004:1: error[E0200]"), "{err}");
 }
 
 #[test]
 fn c_for_deeply_nested_lists_grows_linearly_and_runs() {
-    // 1,000 levels (the limit): before, every level indented its lines 4 more spaces, 20 MB of C
+    // 1,000 levels (half the limit): before, every level indented its lines 4 more spaces, 20 MB of C
     let dir = tempfile::tempdir().unwrap();
     let il = nested_il(1000).replace("VAR a : INT;", "VAR a : INT := 1;");
     let src = write(dir.path(), "deep.il", &il);
