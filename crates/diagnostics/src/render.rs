@@ -236,7 +236,10 @@ impl<'a> files::Files<'a> for Excerpts {
 impl Excerpt {
     /// The excerpt line of real 0-based line `index`.
     fn line(&self, index: usize) -> Option<&ExcerptLine> {
-        let k = self.lines.binary_search_by_key(&(index + 1), |l| l.number).ok()?;
+        let k = self
+            .lines
+            .binary_search_by_key(&(index + 1), |l| l.number)
+            .ok()?;
         self.lines.get(k)
     }
 }
