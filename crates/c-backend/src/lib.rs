@@ -8,6 +8,7 @@
 //! behaviour for any input values (wrapping integer arithmetic, defined division by zero), contains no
 //! user text except inside octal-escaped string literals, and is generated in time linear in the input.
 
+mod budget;
 pub mod ctypes;
 mod emit;
 pub use emit::config_header;
@@ -102,6 +103,9 @@ pub fn generate_with(
             diagnostics::code::E2003,
             e.to_string(),
         ));
+        return None;
+    }
+    if !budget::check(model, profile, diags) {
         return None;
     }
     let before = diags.error_count();

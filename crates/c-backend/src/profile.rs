@@ -60,6 +60,18 @@ pub struct TargetProfile {
     pub tm_bytes: u32,
     /// A multi-byte address must start at a multiple of `min(alignment, its size)` bytes (1: no rule).
     pub alignment: u32,
+    /// The memory budget for variables, in bytes: no variable, no POU's data and not all static data
+    /// together (globals and program instances) may need more (E2100, checked before C is generated).
+    /// Optional in a profile file; the default is 16 MiB.
+    #[serde(default = "default_data_bytes")]
+    pub data_bytes: u64,
+}
+
+/// The default `data_bytes`: 16 MiB.
+pub const DEFAULT_DATA_BYTES: u64 = 16 * 1024 * 1024;
+
+fn default_data_bytes() -> u64 {
+    DEFAULT_DATA_BYTES
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -86,6 +98,7 @@ impl Default for TargetProfile {
             tm_offset: 3840,
             tm_bytes: 256,
             alignment: 1,
+            data_bytes: DEFAULT_DATA_BYTES,
         })
     }
 }
@@ -174,6 +187,9 @@ impl TargetProfile {
                 "alignment must be 1, 2, 4 or 8, got {}",
                 self.alignment
             ));
+        }
+        if self.data_bytes == 0 {
+            return bad("data_bytes must be at least 1".into());
         }
         if self.name.is_empty() {
             return bad("name must not be empty".into());

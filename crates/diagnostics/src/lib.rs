@@ -18,8 +18,9 @@ mod span;
 pub use codes::{all as all_codes, explain, lookup, Code, CodeInfo};
 pub use diagnostic::{Diagnostic, Label, Severity, XmlContext};
 pub use render::{
-    hint_of, render, render_human, render_json_line, render_short, render_summary_json,
-    MessageFormat, RunSummary, Summary, JSON_SCHEMA,
+    hint_of, max_per_file, render, render_human, render_json_line, render_short,
+    render_summary_json, set_max_per_file, MessageFormat, RunSummary, Summary,
+    DEFAULT_MAX_PER_FILE, JSON_SCHEMA,
 };
 pub use source::{SourceFile, SourceMap};
 pub use span::{FileId, Span};

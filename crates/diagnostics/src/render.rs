@@ -1,11 +1,12 @@
 //! The three renderings: human (codespan-reporting excerpt), short (one line), JSON lines.
 
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::source::SourceMap;
+use crate::source::{SourceFile, SourceMap};
 use codespan_reporting::diagnostic as cs;
-use codespan_reporting::files::SimpleFiles;
+use codespan_reporting::files;
 use codespan_reporting::term;
 use serde::Serialize;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MessageFormat {
@@ -37,29 +38,301 @@ fn xml_context_text(d: &Diagnostic) -> Option<String> {
     (!parts.is_empty()).then(|| parts.join(", "))
 }
 
-/// Human rendering: header, source excerpt with labels, hint and notes.
+/// How many diagnostics per file the human and short renderings show by default; the rest are
+/// counted in one line. Change it with [`set_max_per_file`] (`ladderc --max-diagnostics N`).
+pub const DEFAULT_MAX_PER_FILE: usize = 50;
+
+static MAX_PER_FILE: AtomicUsize = AtomicUsize::new(DEFAULT_MAX_PER_FILE);
+
+/// Sets how many diagnostics per file the human and short renderings show (0: no limit).
+pub fn set_max_per_file(n: usize) {
+    MAX_PER_FILE.store(if n == 0 { usize::MAX } else { n }, Ordering::Relaxed);
+}
+
+/// The current per-file limit of the human and short renderings.
+pub fn max_per_file() -> usize {
+    MAX_PER_FILE.load(Ordering::Relaxed)
+}
+
+/// Characters of a long source line shown before the first label on it.
+const CONTEXT_BEFORE: usize = 40;
+/// Characters of a source line shown at most; longer lines are clipped around the label with `…`.
+const MAX_LINE_CHARS: usize = 160;
+
+/// One clipped source line of an excerpt.
+struct ExcerptLine {
+    /// Where the line starts in the excerpt text, and where its copied content starts (after `…`).
+    start: usize,
+    content: usize,
+    /// The copied window of the real text.
+    real: std::ops::Range<usize>,
+    /// The real 1-based line number, and the characters of the real line before the window.
+    number: usize,
+    skipped_chars: usize,
+}
+
+/// The lines of one file that a diagnostic's labels touch, each clipped to a window around its
+/// first label: what codespan-reporting renders instead of the whole file. Building it costs time
+/// proportional to the windows (and to finding the line: a binary search in the file's line index).
+struct Excerpt {
+    name: String,
+    text: String,
+    lines: Vec<ExcerptLine>,
+}
+
+impl Excerpt {
+    /// `anchors`: the real byte offsets where labels start (on character boundaries).
+    fn new(f: &SourceFile, anchors: &[usize]) -> Excerpt {
+        let starts = f.line_starts();
+        let text = &f.text;
+        let mut by_line: Vec<(usize, usize)> = anchors
+            .iter()
+            .map(|&a| {
+                let line = match starts.binary_search(&a) {
+                    Ok(l) => l,
+                    Err(l) => l - 1,
+                };
+                (line, a)
+            })
+            .collect();
+        by_line.sort_unstable();
+        by_line.dedup_by_key(|(l, _)| *l);
+        // codespan-reporting shows the one line between two labelled lines (and `·` for a longer gap)
+        let gaps: Vec<(usize, usize)> = by_line
+            .windows(2)
+            .filter(|w| w[1].0 == w[0].0 + 2)
+            .map(|w| (w[0].0 + 1, starts[w[0].0 + 1]))
+            .collect();
+        by_line.extend(gaps);
+        by_line.sort_unstable();
+        let mut out = Excerpt {
+            name: f.name.clone(),
+            text: String::new(),
+            lines: Vec::new(),
+        };
+        for (line, anchor) in by_line {
+            let line_start = starts[line];
+            let mut line_end = starts.get(line + 1).map_or(text.len(), |&n| n - 1);
+            if text[line_start..line_end].ends_with('\r') {
+                line_end -= 1;
+            }
+            let anchor = anchor.clamp(line_start, line_end);
+            let short = text[line_start..line_end]
+                .char_indices()
+                .nth(MAX_LINE_CHARS)
+                .is_none();
+            let ws = if short {
+                line_start
+            } else {
+                text[line_start..anchor]
+                    .char_indices()
+                    .rev()
+                    .take(CONTEXT_BEFORE)
+                    .last()
+                    .map_or(anchor, |(i, _)| line_start + i)
+            };
+            let we = text[ws..line_end]
+                .char_indices()
+                .nth(MAX_LINE_CHARS)
+                .map_or(line_end, |(i, _)| ws + i);
+            let start = out.text.len();
+            if ws > line_start {
+                out.text.push('…');
+            }
+            let content = out.text.len();
+            out.text.push_str(&text[ws..we]);
+            if we < line_end {
+                out.text.push('…');
+            }
+            out.text.push('\n');
+            out.lines.push(ExcerptLine {
+                start,
+                content,
+                real: ws..we,
+                number: line + 1,
+                skipped_chars: text[line_start..ws].chars().count(),
+            });
+        }
+        out
+    }
+
+    /// The excerpt line holding real offset `b`, if any.
+    fn line_of(&self, f: &SourceFile, b: usize) -> Option<usize> {
+        let starts = f.line_starts();
+        let real_line = match starts.binary_search(&b) {
+            Ok(l) => l,
+            Err(l) => l - 1,
+        } + 1;
+        self.lines.iter().position(|l| l.number == real_line)
+    }
+
+    /// A real byte range, as a range of the excerpt (clipped to the window of its start's line).
+    fn map(&self, f: &SourceFile, r: std::ops::Range<usize>) -> std::ops::Range<usize> {
+        let Some(i) = self.line_of(f, r.start) else {
+            return 0..0;
+        };
+        let l = &self.lines[i];
+        let clip = |b: usize| l.content + b.clamp(l.real.start, l.real.end) - l.real.start;
+        let (s, e) = (clip(r.start), clip(r.end.max(r.start)));
+        if r.end > l.real.end && e == s {
+            // a label that starts past the window: mark the window's end
+            return s..s;
+        }
+        s..e
+    }
+}
+
+/// The excerpts of one diagnostic, as codespan-reporting's file provider (real line numbers and
+/// columns).
+struct Excerpts(Vec<Excerpt>);
+
+impl<'a> files::Files<'a> for Excerpts {
+    type FileId = usize;
+    type Name = &'a str;
+    type Source = &'a str;
+    fn name(&'a self, id: usize) -> Result<&'a str, files::Error> {
+        Ok(&self.get(id)?.name)
+    }
+    fn source(&'a self, id: usize) -> Result<&'a str, files::Error> {
+        Ok(&self.get(id)?.text)
+    }
+    /// Line indices are the real ones (0-based), so gaps between excerpt lines show as gaps.
+    fn line_index(&'a self, id: usize, byte_index: usize) -> Result<usize, files::Error> {
+        let x = self.get(id)?;
+        let k = x
+            .lines
+            .partition_point(|l| l.start <= byte_index)
+            .saturating_sub(1);
+        Ok(x.lines.get(k).map_or(0, |l| l.number - 1))
+    }
+    fn column_number(
+        &'a self,
+        id: usize,
+        line_index: usize,
+        byte_index: usize,
+    ) -> Result<usize, files::Error> {
+        let x = self.get(id)?;
+        let Some(l) = x.line(line_index) else {
+            return Ok(1);
+        };
+        let b = byte_index.clamp(l.content, l.content + l.real.len());
+        Ok(l.skipped_chars + x.text[l.content..b].chars().count() + 1)
+    }
+    fn line_range(
+        &'a self,
+        id: usize,
+        line_index: usize,
+    ) -> Result<std::ops::Range<usize>, files::Error> {
+        let x = self.get(id)?;
+        let Some(k) = x.lines.iter().position(|l| l.number == line_index + 1) else {
+            // a line outside the excerpt: shown empty
+            return Ok(x.text.len()..x.text.len());
+        };
+        let end = x.lines.get(k + 1).map_or(x.text.len(), |n| n.start);
+        Ok(x.lines[k].start..end)
+    }
+}
+
+impl Excerpt {
+    /// The excerpt line of real 0-based line `index`.
+    fn line(&self, index: usize) -> Option<&ExcerptLine> {
+        let k = self
+            .lines
+            .binary_search_by_key(&(index + 1), |l| l.number)
+            .ok()?;
+        self.lines.get(k)
+    }
+}
+
+impl Excerpts {
+    fn get(&self, id: usize) -> Result<&Excerpt, files::Error> {
+        self.0.get(id).ok_or(files::Error::FileMissing)
+    }
+}
+
+/// The diagnostics to show (at most [`max_per_file`] per file of their primary span, in order) and,
+/// per file, how many were left out.
+fn limited<'d>(map: &SourceMap, diags: &'d [Diagnostic]) -> (Vec<&'d Diagnostic>, Vec<String>) {
+    let max = max_per_file();
+    let mut shown: Vec<usize> = Vec::new();
+    let mut left: Vec<usize> = Vec::new();
+    let mut keep = Vec::new();
+    for d in diags {
+        // index 0: no span; file i + 1
+        let k = d.span.map_or(0, |s| s.file.0 as usize + 1);
+        if shown.len() <= k {
+            shown.resize(k + 1, 0);
+            left.resize(k + 1, 0);
+        }
+        if shown[k] < max {
+            shown[k] += 1;
+            keep.push(d);
+        } else {
+            left[k] += 1;
+        }
+    }
+    let mut tail = Vec::new();
+    for (k, &n) in left.iter().enumerate().filter(|(_, &n)| n > 0) {
+        let place = if k == 0 {
+            String::from("without a location")
+        } else {
+            format!("in {}", map.get(crate::FileId(k as u32 - 1)).name)
+        };
+        tail.push(format!(
+            "note: {n} more diagnostic{} {place} not shown (at most {max} per file; change with --max-diagnostics N, 0 for all)",
+            if n == 1 { "" } else { "s" }
+        ));
+    }
+    (keep, tail)
+}
+
+/// Human rendering: header, source excerpt with labels, hint and notes. At most [`max_per_file`]
+/// diagnostics per file, then one line counting the rest; long lines are clipped around the label.
+/// Work and output are proportional to what is shown, not to the size of the files.
 pub fn render_human(map: &SourceMap, diags: &[Diagnostic]) -> String {
-    let mut files = SimpleFiles::new();
-    let ids: Vec<usize> = map
-        .files()
-        .map(|(_, f)| files.add(f.name.clone(), f.text.clone()))
-        .collect();
     let config = term::Config::default();
     let mut out = String::new();
-    for d in diags {
-        let mut labels = Vec::new();
+    let (keep, tail) = limited(map, diags);
+    for d in keep {
+        // every span of the diagnostic, primary first, grouped by file into excerpts
+        let mut spans: Vec<(crate::Span, bool, &str)> = Vec::new();
         if let Some(span) = d.span {
-            labels.push(
-                cs::Label::primary(ids[span.file.0 as usize], span.range())
-                    .with_message(d.primary_label.clone()),
-            );
+            spans.push((span, true, &d.primary_label));
         }
-        for l in &d.labels {
-            labels.push(
-                cs::Label::secondary(ids[l.span.file.0 as usize], l.span.range())
-                    .with_message(l.message.clone()),
-            );
-        }
+        spans.extend(d.labels.iter().map(|l| (l.span, false, l.message.as_str())));
+        let mut file_ids: Vec<crate::FileId> = spans.iter().map(|s| s.0.file).collect();
+        file_ids.sort_unstable_by_key(|f| f.0);
+        file_ids.dedup();
+        let excerpts = Excerpts(
+            file_ids
+                .iter()
+                .map(|&id| {
+                    let f = map.get(id);
+                    let anchors: Vec<usize> = spans
+                        .iter()
+                        .filter(|s| s.0.file == id)
+                        .map(|s| f.floor_char_boundary(s.0.start as usize))
+                        .collect();
+                    Excerpt::new(f, &anchors)
+                })
+                .collect(),
+        );
+        let labels = spans
+            .iter()
+            .map(|&(span, primary, msg)| {
+                let xi = file_ids.iter().position(|f| *f == span.file).unwrap_or(0);
+                let f = map.get(span.file);
+                let r = f.floor_char_boundary(span.start as usize)
+                    ..f.floor_char_boundary(span.end as usize);
+                let r = excerpts.0[xi].map(f, r);
+                let l = if primary {
+                    cs::Label::primary(xi, r)
+                } else {
+                    cs::Label::secondary(xi, r)
+                };
+                l.with_message(msg.to_string())
+            })
+            .collect();
         let mut notes = Vec::new();
         if let Some(ctx) = xml_context_text(d) {
             notes.push(format!("in {ctx}"));
@@ -79,7 +352,11 @@ pub fn render_human(map: &SourceMap, diags: &[Diagnostic]) -> String {
             .with_labels(labels)
             .with_notes(notes);
         // Spans come from our own source map, so emitting cannot fail on a missing file.
-        let _ = term::emit_to_string(&mut out, &config, &files, &diag);
+        let _ = term::emit_to_string(&mut out, &config, &excerpts, &diag);
+    }
+    for t in tail {
+        out.push_str(&t);
+        out.push('\n');
     }
     out
 }
@@ -206,11 +483,21 @@ pub fn render_json_line(map: &SourceMap, d: &Diagnostic) -> String {
     serde_json::to_string(&j).expect("diagnostic serialises")
 }
 
-/// Renders a list in the chosen format; every format ends each diagnostic with a newline.
+/// Renders a list in the chosen format; every format ends each diagnostic with a newline. Human and
+/// short show at most [`max_per_file`] diagnostics per file (then one line counting the rest); JSON
+/// lines, for tools, shows them all.
 pub fn render(map: &SourceMap, diags: &[Diagnostic], format: MessageFormat) -> String {
     match format {
         MessageFormat::Human => render_human(map, diags),
-        MessageFormat::Short => diags.iter().map(|d| render_short(map, d) + "\n").collect(),
+        MessageFormat::Short => {
+            let (keep, tail) = limited(map, diags);
+            let mut out: String = keep.iter().map(|d| render_short(map, d) + "\n").collect();
+            for t in tail {
+                out.push_str(&t);
+                out.push('\n');
+            }
+            out
+        }
         MessageFormat::Json => diags
             .iter()
             .map(|d| render_json_line(map, d) + "\n")

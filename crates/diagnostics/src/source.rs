@@ -44,6 +44,14 @@ impl SourceFile {
             .map(|(i, _)| start + i)
             .unwrap_or(self.text.len())
     }
+    /// The largest character boundary at or before `offset` (clamped to the text).
+    pub fn floor_char_boundary(&self, offset: usize) -> usize {
+        let mut offset = offset.min(self.text.len());
+        while !self.text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        offset
+    }
     pub fn line_starts(&self) -> &[usize] {
         &self.line_starts
     }

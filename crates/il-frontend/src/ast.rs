@@ -363,6 +363,28 @@ pub struct Instruction {
     pub span: Span,
 }
 
+/// Dropping an instruction frees its nested lists (`ADD( ... )` inside `AND( ...)` ...) with a loop:
+/// they nest as deep as the source does, and the compiler's recursive drop would overflow the stack.
+impl Drop for Instruction {
+    fn drop(&mut self) {
+        let InstrKind::Deferred { body, .. } = &mut self.kind else {
+            return;
+        };
+        let mut lists = vec![std::mem::take(body)];
+        while let Some(list) = lists.pop() {
+            for mut s in list {
+                if let IlStmt::Instr(Instruction {
+                    kind: InstrKind::Deferred { body, .. },
+                    ..
+                }) = &mut s
+                {
+                    lists.push(std::mem::take(body));
+                }
+            }
+        }
+    }
+}
+
 /// Simple operators, with the `N` modifier folded into `negate` (`LDN`, `ANDN`, `STN`, `&N`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum Op {

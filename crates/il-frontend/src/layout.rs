@@ -453,7 +453,7 @@ impl<'s> Layout<'s> {
             RawToken::Amp => Tok::Amp,
             RawToken::AmpN => Tok::AmpN,
             // Newlines and comments are handled before conversion.
-            RawToken::Newline | RawToken::CommentNewline | RawToken::LineComment => Tok::Eol,
+            RawToken::Newline | RawToken::Comment(_) | RawToken::LineComment => Tok::Eol,
         }
     }
 
@@ -479,7 +479,8 @@ impl<'s> Layout<'s> {
                     self.finish();
                     return;
                 }
-                Some(Ok(RawToken::Newline | RawToken::CommentNewline)) => {
+                Some(Ok(RawToken::Comment(false))) => continue,
+                Some(Ok(RawToken::Newline | RawToken::Comment(true))) => {
                     if !self.in_decl() && self.pending_eol.is_none() {
                         self.pending_eol = Some(s);
                     }

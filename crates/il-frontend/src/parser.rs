@@ -852,10 +852,71 @@ pub(crate) fn run(
             None
         }
     };
+    let mut parsed = parsed;
+    match &mut parsed {
+        Some(Parsed::Unit(top)) => {
+            for item in &mut top.items {
+                if let LibraryElement::Pou(p) = item {
+                    cap_nesting(&mut p.body, src, base, &mut all);
+                }
+            }
+            if let Some((_, _, body)) = &mut top.implicit {
+                cap_nesting(body, src, base, &mut all);
+            }
+        }
+        Some(Parsed::Body(body)) => cap_nesting(body, src, base, &mut all),
+        None => {}
+    }
     // Lexer/layout diagnostics and grammar diagnostics interleave by position.
     all.sort_by_key(|d| d.span.map(|s| (s.start, s.end)));
     diags.extend(all);
     parsed
+}
+
+/// The deepest nesting of parenthesised lists (`AND( ... ADD( ... ) ... )`) accepted in IL.
+pub const MAX_NESTING: usize = 2000;
+
+/// Reports (E0200, once per body) and empties every nested list deeper than [`MAX_NESTING`], so
+/// later stages (sema, C, and the C compiler's own parser) never see unbounded nesting. The walk
+/// uses an explicit stack.
+fn cap_nesting(body: &mut [IlStmt], src: &str, base: usize, diags: &mut Vec<Diagnostic>) {
+    let mut reported = false;
+    let mut stack: Vec<(&mut [IlStmt], usize)> = vec![(body, 0)];
+    while let Some((list, depth)) = stack.pop() {
+        for s in list.iter_mut() {
+            let IlStmt::Instr(i) = s else { continue };
+            let span = i.span;
+            let InstrKind::Deferred { body, .. } = &mut i.kind else {
+                continue;
+            };
+            if depth < MAX_NESTING {
+                stack.push((body.as_mut_slice(), depth + 1));
+                continue;
+            }
+            body.clear();
+            if !reported {
+                reported = true;
+                // the label covers the operator up to its `(`, not the whole list
+                let start = span.start as usize;
+                let open = src
+                    .get(start.saturating_sub(base)..)
+                    .and_then(|t| t.find('('))
+                    .map_or(span.end as usize, |k| start + k + 1);
+                let span = Span::new(span.file, start, open.min(span.end as usize));
+                diags.push(
+                    Diagnostic::error(
+                        code::E0200,
+                        format!("parenthesised lists are nested more than {MAX_NESTING} deep"),
+                    )
+                    .at(span)
+                    .with_primary_label(format!("level {}", depth + 1))
+                    .with_hint(
+                        "compute inner parts into variables first (`ST tmp`) and use them as operands",
+                    ),
+                );
+            }
+        }
+    }
 }
 
 /// The implicit program's warning (W0001).

@@ -1,12 +1,12 @@
 //! Deeply nested deferred lists (`AND( ... )` inside each other) do not overflow the stack: the checker
-//! walks nested lists with an explicit stack (3,000 levels: within what the parser accepts).
+//! walks nested lists with an explicit stack (at the parser's limit, `parser::MAX_NESTING` levels).
 
 mod sema_support;
 use sema_support::analyze_src;
 
 #[test]
 fn three_thousand_nested_deferred_operators() {
-    let depth = 3_000;
+    let depth = il_frontend::parser::MAX_NESTING;
     let mut src = String::from("PROGRAM P\nVAR\n  a, b : BOOL;\n  n : INT;\nEND_VAR\n  LD a\n");
     for _ in 0..depth {
         src.push_str("  AND( b\n");

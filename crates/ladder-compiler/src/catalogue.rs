@@ -172,7 +172,7 @@ pub fn std_fb(name: &str) -> Option<&'static StdFb> {
 
 /// PLCopen motion blocks (Part 1 and Part 4 names start with `MC_`).
 pub fn is_motion_block(name: &str) -> bool {
-    name.len() > 3 && name[..3].eq_ignore_ascii_case("MC_")
+    name.len() > 3 && name.get(..3).is_some_and(|p| p.eq_ignore_ascii_case("MC_"))
 }
 
 /// Pin types of motion blocks that are the same in every PLCopen block.

@@ -161,6 +161,28 @@ impl<'i> BodyLowering<'i> {
             let mut nl = NetLowering::new(self, g, n + 1);
             if let Some(order) = nl.order(ctx, net) {
                 nl.build(ctx, &order);
+                if let Some(span) = nl.too_deep {
+                    ctx.report(
+                        Diagnostic::error(
+                            code::E3200,
+                            format!(
+                                "the network's logic nests more than {MAX_VALUE_DEPTH} levels deep"
+                            ),
+                        )
+                        .at(span)
+                        .with_primary_label("this element is past the limit")
+                        .with_hint("split the rung: store a part in a variable (a coil) and read it with a contact in the next network")
+                        .with_xml(
+                            Where {
+                                pou: nl.pou.pou.clone(),
+                                network: Some(n + 1),
+                                local_id: None,
+                            }
+                            .xml(),
+                        ),
+                    );
+                    continue;
+                }
                 nl.emit(&mut out);
             }
         }
@@ -481,7 +503,16 @@ struct NetLowering<'a, 'i> {
     controls: Vec<Control>,
     /// Temporaries used by this network, per type key.
     used: HashMap<String, usize>,
+    /// Per value: how deeply its operands nest (a leaf is 0).
+    depth: Vec<usize>,
+    /// The first value that would have nested deeper than [`MAX_VALUE_DEPTH`] (reported as E3200).
+    too_deep: Option<Span>,
 }
+
+/// The deepest nesting of a network's logic (contacts in series, parallel branches, negations) that
+/// is lowered. Evaluation walks the nesting recursively, so this bounds the stack it uses; a deeper
+/// network gets E3200 and its deepest part is lowered as FALSE.
+pub const MAX_VALUE_DEPTH: usize = 2000;
 
 impl<'a, 'i> NetLowering<'a, 'i> {
     fn new(pou: &'a mut BodyLowering<'i>, g: &'a Graph, network: usize) -> Self {
@@ -500,6 +531,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             writes: Vec::new(),
             controls: Vec::new(),
             used: HashMap::new(),
+            depth: Vec::new(),
+            too_deep: None,
         }
     }
 
@@ -651,6 +684,21 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     // ------------------------------------------------------------ values
 
     fn val(&mut self, v: Val, span: Span) -> ValId {
+        let d = 1 + match &v {
+            Val::And(a, b) => self.depth[*a].max(self.depth[*b]),
+            Val::Or(vs) => vs.iter().map(|x| self.depth[*x]).max().unwrap_or(0),
+            Val::Not(a) => self.depth[*a],
+            Val::Const(_) | Val::Leaf { .. } => 0,
+        };
+        let (v, d) = if d > MAX_VALUE_DEPTH {
+            self.too_deep.get_or_insert(span);
+            (Val::Const(false), 0)
+        } else if matches!(v, Val::Const(_) | Val::Leaf { .. }) {
+            (v, 0)
+        } else {
+            (v, d)
+        };
+        self.depth.push(d);
         self.vals.push(v);
         self.spans.push(span);
         self.temps.push(None);
@@ -1710,8 +1758,9 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     operand: Some(o),
                 },
             span: s,
-        })) = body.first().cloned()
+        })) = body.first()
         {
+            let (negate, o, s) = (*negate, o.clone(), *s);
             body.remove(0);
             if negate {
                 body.insert(0, simple(Op::Not, false, None, s));

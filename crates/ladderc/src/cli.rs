@@ -22,6 +22,9 @@ pub struct Cli {
     /// How diagnostics are printed on stderr.
     #[arg(long, value_enum, default_value_t = Format::Human, global = true)]
     pub message_format: Format,
+    /// At most N diagnostics per file in the human and short formats (0: all); JSON shows all.
+    #[arg(long, value_name = "N", default_value_t = diagnostics::DEFAULT_MAX_PER_FILE, global = true)]
+    pub max_diagnostics: usize,
     #[command(subcommand)]
     pub command: Command,
 }
@@ -284,6 +287,7 @@ pub fn main() -> i32 {
         Ok(c) => c,
         Err(e) => return usage_error(&e, requested_format(std::env::args_os())),
     };
+    diagnostics::set_max_per_file(cli.max_diagnostics);
     let format = cli.message_format;
     let pipeline_command = matches!(
         cli.command,

@@ -571,10 +571,56 @@ struct PouLowering<'a> {
 }
 
 impl PouLowering<'_> {
+    /// Lowers the block calls of a body, nested lists (`AND( ... )`) included. The nesting is
+    /// walked with an explicit stack of open lists, so its depth is bounded by memory only.
     fn lower_body(&mut self, body: Vec<IlStmt>) -> Vec<IlStmt> {
-        let mut out = Vec::with_capacity(body.len());
-        for s in body {
-            match s {
+        /// A nested list being lowered: its remaining input, its output so far, and the deferred
+        /// instruction (with an empty body) it will become the body of.
+        struct Open {
+            input: std::vec::IntoIter<IlStmt>,
+            out: Vec<IlStmt>,
+            head: Option<IlStmt>,
+        }
+        let mut stack = vec![Open {
+            input: body.into_iter(),
+            out: Vec::new(),
+            head: None,
+        }];
+        loop {
+            let top = stack
+                .last_mut()
+                .expect("the outermost list stays until the end");
+            let Some(mut s) = top.input.next() else {
+                let done = stack.pop().expect("just looked at it");
+                let Some(mut head) = done.head else {
+                    return done.out;
+                };
+                if let IlStmt::Instr(Instruction {
+                    kind: InstrKind::Deferred { body, .. },
+                    ..
+                }) = &mut head
+                {
+                    *body = done.out;
+                }
+                stack
+                    .last_mut()
+                    .expect("a nested list has a parent")
+                    .out
+                    .push(head);
+                continue;
+            };
+            match &mut s {
+                IlStmt::Instr(Instruction {
+                    kind: InstrKind::Deferred { body, .. },
+                    ..
+                }) => {
+                    let input = std::mem::take(body).into_iter();
+                    stack.push(Open {
+                        input,
+                        out: Vec::new(),
+                        head: Some(s),
+                    });
+                }
                 IlStmt::Instr(Instruction {
                     kind:
                         InstrKind::Call {
@@ -586,6 +632,8 @@ impl PouLowering<'_> {
                 }) if instance.accessors.is_empty()
                     && self.instances.contains_key(&instance.base.key()) =>
                 {
+                    let (cond, span) = (*cond, *span);
+                    let out = &mut top.out;
                     let block = self.instances[&instance.base.key()].clone();
                     let t = self.lib.get(&block).expect("known block");
                     let (method, layout) = self.methods[&block.to_ascii_uppercase()].clone();
@@ -611,12 +659,12 @@ impl PouLowering<'_> {
                         Method::Il => self.il_call(
                             t,
                             layout.as_ref().expect("IL layout"),
-                            &instance,
-                            &args,
+                            instance,
+                            args,
                             span,
-                            &mut out,
+                            out,
                         ),
-                        Method::Template => self.template_call(t, &instance, &args, span, &mut out),
+                        Method::Template => self.template_call(t, instance, args, span, out),
                     }
                     if guarded {
                         out.push(IlStmt::Label(id(&skip, span)));
@@ -627,33 +675,9 @@ impl PouLowering<'_> {
                         .count();
                     *self.counts.entry(t.block.clone()).or_default() += n;
                 }
-                IlStmt::Instr(Instruction {
-                    kind:
-                        InstrKind::Deferred {
-                            op,
-                            negate,
-                            operand,
-                            body,
-                            close,
-                        },
-                    span,
-                }) => {
-                    let body = self.lower_body(body);
-                    out.push(instr(
-                        InstrKind::Deferred {
-                            op,
-                            negate,
-                            operand,
-                            body,
-                            close,
-                        },
-                        span,
-                    ));
-                }
-                other => out.push(other),
+                _ => top.out.push(s),
             }
         }
-        out
     }
 
     /// The TM view of value `k` of parameter `p` (`k` = 0 for a scalar; element `k` of an array).

@@ -5,7 +5,7 @@
 //! current-result locals and labels they use. Invariants: the current result lives in one C local per
 //! C type (`cr_INT`, `cr_BOOL` ...), typed statically from the model; a deferred operator `AND(` saves the
 //! outer result in a block-scoped local `d<depth>`, evaluates the nested list, then combines; jumps are
-//! `goto L_<label>`; only labels that are jumped to are emitted; work is linear in the body's size.
+//! `goto L_<label>`; only labels that are jumped to are emitted; work is linear in the body's size (indentation stops growing at `MAX_INDENT` levels).
 
 use super::scope::{Place, Scope};
 use super::values::convert;
@@ -18,6 +18,9 @@ use il_frontend::sema::{Callee, Elementary, InstrId, InstrInfo, Type};
 use std::collections::{BTreeMap, HashSet};
 
 use Elementary as E;
+
+/// The deepest indentation of generated C, in levels of four spaces.
+pub const MAX_INDENT: usize = 16;
 
 /// The state of one body being translated.
 pub struct Body<'s, 'm> {
@@ -50,8 +53,10 @@ impl<'s, 'm> Body<'s, 'm> {
             ret,
         }
     }
+    /// Appends one line of C, indented by the nesting level up to [`MAX_INDENT`] levels (deeper
+    /// blocks stay at that column, so the C grows linearly with the IL however deep `ADD(` nests).
     pub fn line(&mut self, text: &str) {
-        for _ in 0..self.indent {
+        for _ in 0..self.indent.min(MAX_INDENT) {
             self.out.push_str("    ");
         }
         self.out.push_str(text);

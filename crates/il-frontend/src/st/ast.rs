@@ -164,6 +164,43 @@ pub enum ExprKind {
     Error,
 }
 
+/// Dropping a tree frees it with a loop: the left operands of a chain `a + b + c ...` nest as deep as
+/// the chain is long, and the compiler's recursive drop would overflow the stack on a long line.
+impl Drop for Expr {
+    fn drop(&mut self) {
+        let mut stack = Vec::new();
+        take_operands(&mut self.kind, &mut stack);
+        while let Some(mut e) = stack.pop() {
+            take_operands(&mut e.kind, &mut stack);
+        }
+    }
+}
+
+/// Moves the operands of a binary or unary node out (leaving [`ExprKind::Error`] behind) so that
+/// dropping the node does not recurse into them.
+fn take_operands(kind: &mut ExprKind, stack: &mut Vec<Expr>) {
+    let mut take = |b: &mut Box<Expr>| {
+        if matches!(b.kind, ExprKind::Binary { .. } | ExprKind::Unary { .. }) {
+            let span = b.span;
+            stack.push(std::mem::replace(
+                &mut **b,
+                Expr {
+                    kind: ExprKind::Error,
+                    span,
+                },
+            ));
+        }
+    };
+    match kind {
+        ExprKind::Binary { left, right, .. } => {
+            take(left);
+            take(right);
+        }
+        ExprKind::Unary { operand, .. } => take(operand),
+        _ => {}
+    }
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum UnaryOp {
     Neg,

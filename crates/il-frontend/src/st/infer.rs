@@ -169,8 +169,49 @@ impl Env<'_> {
         }
     }
 
-    /// The type of an expression.
+    /// The type of an expression (linear in its size, no recursion: see [`Self::expr_cached`]).
     pub fn expr(&self, e: &Expr) -> Ty {
+        self.expr_cached(e, &mut TypeCache::new())
+    }
+
+    /// The type of an expression, computed bottom-up with an explicit stack (a chain of 100,000
+    /// operators neither recurses nor costs more than its size). Every subexpression's type is left
+    /// in `cache`, keyed by the node's address: the caller keeps the tree alive and unchanged while
+    /// the cache is in use, and clears it before a node could be freed and its address reused.
+    pub fn expr_cached(&self, root: &Expr, cache: &mut TypeCache) -> Ty {
+        if let Some(t) = cache.get(&key(root)) {
+            return t.clone();
+        }
+        let mut stack: Vec<(&Expr, bool)> = vec![(root, false)];
+        while let Some((e, children_done)) = stack.pop() {
+            if children_done {
+                let t = self.node(e, &|c: &Expr| {
+                    cache.get(&key(c)).cloned().unwrap_or(Ty::Unknown)
+                });
+                cache.insert(key(e), t);
+                continue;
+            }
+            if cache.contains_key(&key(e)) {
+                continue;
+            }
+            stack.push((e, true));
+            match &e.kind {
+                ExprKind::Unary { operand, .. } => stack.push((operand, false)),
+                ExprKind::Binary { left, right, .. } => {
+                    stack.push((right, false));
+                    stack.push((left, false));
+                }
+                ExprKind::Call { args, .. } => {
+                    stack.extend(args.iter().map(|a| (&a.value, false)));
+                }
+                _ => {}
+            }
+        }
+        cache.get(&key(root)).cloned().unwrap_or(Ty::Unknown)
+    }
+
+    /// The type of one node, given the types of its operands (`sub`).
+    fn node(&self, e: &Expr, sub: &dyn Fn(&Expr) -> Ty) -> Ty {
         match &e.kind {
             ExprKind::Literal(l) => {
                 if let Some(p) = &l.type_prefix {
@@ -197,28 +238,27 @@ impl Env<'_> {
             ExprKind::Place(p) => self.place_type(p).map_or(Ty::Unknown, Ty::Known),
             ExprKind::EnumValue { type_name, .. } => Ty::Known(TypeRef::Named(type_name.clone())),
             ExprKind::Unary { op, operand } => {
-                let t = self.expr(operand);
+                let t = sub(operand);
                 match (op, t) {
                     (UnaryOp::Not, Ty::IntLit) => Ty::Unknown,
                     (_, t) => t,
                 }
             }
-            ExprKind::Binary { op, left, right } => self.binary(*op, left, right, e.span),
-            ExprKind::Call { name, args } => self.call(name, args, e.span),
+            ExprKind::Binary { op, left, right } => self.binary(*op, sub(left), sub(right), e.span),
+            ExprKind::Call { name, args } => self.call(name, args, e.span, sub),
             ExprKind::Error => Ty::Unknown,
         }
     }
 
-    fn binary(&self, op: BinaryOp, left: &Expr, right: &Expr, span: Span) -> Ty {
+    fn binary(&self, op: BinaryOp, l: Ty, r: Ty, span: Span) -> Ty {
         use BinaryOp::*;
         match op {
             Eq | Ne | Lt | Gt | Le | Ge => Ty::Known(elem_ref(Elementary::Bool, span)),
-            Power => match self.expr(left) {
+            Power => match l {
                 Ty::IntLit | Ty::RealLit => Ty::RealLit,
                 t => t,
             },
             Add | Sub | Mul | Div => {
-                let (l, r) = (self.expr(left), self.expr(right));
                 let le = l.known().and_then(|t| self.elementary(t));
                 if let Some(le) = le.filter(|e| !e.is_numeric() && !e.is_bit()) {
                     let name = match op {
@@ -236,11 +276,17 @@ impl Env<'_> {
                 }
                 unify(l, r)
             }
-            Mod | And | Or | Xor => unify(self.expr(left), self.expr(right)),
+            Mod | And | Or | Xor => unify(l, r),
         }
     }
 
-    fn call(&self, name: &Ident, args: &[super::ast::Arg], span: Span) -> Ty {
+    fn call(
+        &self,
+        name: &Ident,
+        args: &[super::ast::Arg],
+        span: Span,
+        sub: &dyn Fn(&Expr) -> Ty,
+    ) -> Ty {
         if let Some(p) = self.decls.pou(&name.name) {
             if p.kind == PouKind::Function {
                 return p.ret.clone().map_or(Ty::Unknown, Ty::Known);
@@ -257,14 +303,12 @@ impl Env<'_> {
                             None => Some(i),
                         };
                         if let Some(ParamTy::T(_)) = idx.and_then(|i| f.param_ty(i)) {
-                            t = unify(t, self.expr(&a.value));
+                            t = unify(t, sub(&a.value));
                         }
                     }
                     if f.time_arith {
                         if let Some(super::ast::Arg { value, .. }) = args.first() {
-                            if let Some(le) =
-                                self.expr(value).known().and_then(|t| self.elementary(t))
-                            {
+                            if let Some(le) = sub(value).known().and_then(|t| self.elementary(t)) {
                                 if let Some(o) = stdlib::time_overloads(f.name, le).next() {
                                     return Ty::Known(elem_ref(o.4, span));
                                 }
@@ -302,6 +346,13 @@ impl Env<'_> {
         }
         Ty::Unknown
     }
+}
+
+/// Types of subexpressions by node address (see [`Env::expr_cached`]).
+pub type TypeCache = HashMap<usize, Ty>;
+
+fn key(e: &Expr) -> usize {
+    e as *const Expr as usize
 }
 
 /// The type of a generic operation on two values: a typed side wins over a literal.

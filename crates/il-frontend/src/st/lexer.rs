@@ -21,7 +21,10 @@ enum Raw {
     Comment,
     #[token("{", pragma)]
     Pragma,
-    #[regex(r"//[^\n]*", logos::skip, allow_greedy = true)]
+    // Comments and pragmas are tokens that `lex` drops, not logos skips: logos restarts after a
+    // skip by a call that debug builds do not turn into a loop, so a long run of comments would
+    // overflow the stack.
+    #[regex(r"//[^\n]*", allow_greedy = true)]
     LineComment,
     #[regex(r"[A-Za-z_][A-Za-z0-9_]*")]
     Word,
@@ -338,7 +341,7 @@ fn block_comment(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
     let (n, end) = lexer::comment_rest(lex.remainder());
     lex.bump(n);
     match end {
-        lexer::CommentEnd::Closed { .. } => FilterResult::Skip,
+        lexer::CommentEnd::Closed { .. } => FilterResult::Emit(()),
         lexer::CommentEnd::Unterminated => FilterResult::Error(LexError::UnterminatedComment),
     }
 }

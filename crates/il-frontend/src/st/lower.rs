@@ -13,7 +13,7 @@
 //! - a statement whose text had a syntax error (already reported) produces no code.
 
 use super::ast::*;
-use super::infer::{named, Env, Ty};
+use super::infer::{named, Env, Ty, TypeCache};
 use super::types::Declarations;
 use crate::ast::{
     self as il, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind, Instruction, Literal,
@@ -22,6 +22,7 @@ use crate::ast::{
 use crate::sema::stdlib::{self, ParamTy};
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics};
+use std::cell::RefCell;
 use std::collections::HashMap;
 
 /// Labels of the innermost loop, for EXIT and CONTINUE.
@@ -46,6 +47,10 @@ pub struct PouLowering<'d> {
     /// The type an untyped literal loaded first by the next [`Self::value`] should get (`LD REAL#2.0`
     /// where the context is REAL), so IL sema does not default it to DINT/LREAL.
     lit_hint: Option<TypeRef>,
+    /// Types of the subexpressions of the trees being lowered (so lowering a chain of n operators
+    /// types each node once, not n times). Cleared by every public entry point and after lowering a
+    /// tree built here, so no entry outlives the node it describes.
+    types: RefCell<TypeCache>,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -141,6 +146,7 @@ impl<'d> PouLowering<'d> {
             loops: Vec::new(),
             poisoned: false,
             lit_hint: None,
+            types: RefCell::new(TypeCache::new()),
         }
     }
 
@@ -159,6 +165,7 @@ impl<'d> PouLowering<'d> {
     /// Lowers a statement list.
     pub fn statements(&mut self, stmts: &[Stmt], diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
+        self.types.get_mut().clear();
         self.stmt_list(stmts, &mut out, diags);
         out
     }
@@ -167,6 +174,7 @@ impl<'d> PouLowering<'d> {
     pub fn expression(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
         self.poisoned = false;
+        self.types.get_mut().clear();
         self.value(e, &mut out, diags);
         out
     }
@@ -176,6 +184,7 @@ impl<'d> PouLowering<'d> {
     pub fn condition(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
         self.poisoned = false;
+        self.types.get_mut().clear();
         self.cond_value(e, "condition", &mut out, diags);
         out
     }
@@ -209,7 +218,7 @@ impl<'d> PouLowering<'d> {
     }
 
     fn ty(&self, e: &Expr) -> Ty {
-        self.env().expr(e)
+        self.env().expr_cached(e, &mut self.types.borrow_mut())
     }
 
     /// A new temporary of type `ty`, declared in the POU's VAR_TEMP block.
@@ -235,7 +244,7 @@ impl<'d> PouLowering<'d> {
     /// Reports a condition whose type is known and not BOOL (E3105); returns whether it is fine.
     fn check_bool(&self, e: &Expr, what: &str, diags: &mut Diagnostics) -> bool {
         let env = self.env();
-        if let Ty::Known(t) = env.expr(e) {
+        if let Ty::Known(t) = self.ty(e) {
             let is_bool = env
                 .elementary(&t)
                 .is_some_and(|x| x == crate::sema::model::Elementary::Bool);
@@ -683,6 +692,8 @@ impl<'d> PouLowering<'d> {
                     span,
                 };
                 self.value(&e, out, diags);
+                // `e` is dropped here: forget the types keyed by its nodes' addresses.
+                self.types.get_mut().clear();
                 return;
             }
         }
@@ -960,40 +971,72 @@ impl<'d> PouLowering<'d> {
                     out.push(simple(Op::Mul, false, Some(minus_one), e.span));
                 }
             },
-            ExprKind::Binary { op, left, right } => match binop(*op) {
+            ExprKind::Binary { .. } => self.binary_chain(e, hint, out, diags),
+            ExprKind::Call { name, args } => self.function_call(name, args, e.span, out, diags),
+        }
+    }
+
+    /// A binary operation: its left operands are a chain as long as the source line (`a + b + c ...`
+    /// parses as `((a + b) + c) ...`), so the chain is walked with a loop: down the left operands
+    /// (computing each level's literal hints and, for `**`, its exponent), then the innermost left
+    /// operand, then each level's operator back up. Right operands nest only as deep as the parser
+    /// allows (parentheses, calls and unary operators are capped there).
+    fn binary_chain(
+        &mut self,
+        top: &Expr,
+        mut hint: Option<TypeRef>,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        enum Then<'e> {
+            Apply(Op, &'e Expr, Option<TypeRef>, Span),
+            Expt(Operand, Span),
+        }
+        let mut pending = Vec::new();
+        let mut e = top;
+        while let ExprKind::Binary { op, left, right } = &e.kind {
+            match binop(*op) {
                 Some(il_op) => {
                     let (lt, rt) = (self.ty(left), self.ty(right));
                     let cmp = matches!(il_op, Op::Eq | Op::Ne | Op::Lt | Op::Gt | Op::Le | Op::Ge);
                     let ctx = if cmp { None } else { hint };
-                    self.lit_hint = match lt {
-                        Ty::Known(_) => None,
-                        _ => rt.known().cloned().or(ctx.clone()),
-                    };
-                    self.value(left, out, diags);
                     let right_hint = match rt {
                         Ty::Known(_) => None,
-                        _ => lt.known().cloned().or(ctx),
+                        _ => lt.known().cloned().or(ctx.clone()),
                     };
-                    self.apply(il_op, right, right_hint, e.span, out, diags);
+                    hint = match lt {
+                        Ty::Known(_) => None,
+                        _ => rt.known().cloned().or(ctx),
+                    };
+                    pending.push(Then::Apply(il_op, right, right_hint, e.span));
                 }
                 None => {
                     // a ** b: EXPT with the current result as IN1 (ANY_REAL).
                     let exp = self.operand(right, None, out, diags);
-                    self.lit_hint = match self.ty(left) {
+                    hint = match self.ty(left) {
                         Ty::Known(_) => None,
                         _ => Some(hint.unwrap_or_else(|| named("LREAL", left.span))),
                     };
-                    self.value(left, out, diags);
-                    out.push(instr(
-                        InstrKind::FunctionCall {
-                            name: Ident::new("EXPT", e.span),
-                            args: CallArgs::NonFormal(vec![exp]),
-                        },
-                        e.span,
-                    ));
+                    pending.push(Then::Expt(exp, e.span));
                 }
-            },
-            ExprKind::Call { name, args } => self.function_call(name, args, e.span, out, diags),
+            }
+            e = left;
+        }
+        self.lit_hint = hint;
+        self.value(e, out, diags);
+        for then in pending.into_iter().rev() {
+            match then {
+                Then::Apply(op, right, right_hint, span) => {
+                    self.apply(op, right, right_hint, span, out, diags)
+                }
+                Then::Expt(exp, span) => out.push(instr(
+                    InstrKind::FunctionCall {
+                        name: Ident::new("EXPT", span),
+                        args: CallArgs::NonFormal(vec![exp]),
+                    },
+                    span,
+                )),
+            }
         }
     }
 
@@ -1025,11 +1068,11 @@ impl<'d> PouLowering<'d> {
                         operand: Some(_),
                     },
                 ..
-            })) => match body.remove(0) {
+            })) => match &mut body.remove(0) {
                 IlStmt::Instr(Instruction {
                     kind: InstrKind::Simple { operand, .. },
                     ..
-                }) => operand,
+                }) => operand.take(),
                 _ => None,
             },
             _ => None,
@@ -1049,7 +1092,7 @@ impl<'d> PouLowering<'d> {
     /// Whether `e` is an array or a structure (a value IL does not load into the current result).
     fn is_aggregate(&self, e: &Expr) -> bool {
         let env = self.env();
-        match env.expr(e).known().map(|t| env.resolve(t)) {
+        match self.ty(e).known().map(|t| env.resolve(t)) {
             Some(TypeRef::Array { .. }) => true,
             Some(TypeRef::Named(n)) => self
                 .decls

@@ -128,7 +128,8 @@ impl<'s, 'd> Parser<'s, 'd> {
             }
             Problem::UnterminatedComment(r) => (
                 code::E0102,
-                r.start..(r.start + 2).min(self.src.len()),
+                // the opener: `(*` or `{` (whatever follows may be a multi-byte character)
+                r.start..r.start + if self.src[r.start..].starts_with("(*") { 2 } else { 1 },
                 "comment or pragma is never closed".to_string(),
                 "close `(*` with `*)` (comments nest: every `(*` needs its own `*)`) and `{` with `}`".to_string(),
             ),
@@ -1053,7 +1054,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             Tok::TypePrefix => self.typed_literal(),
             Tok::LParen => {
                 self.bump();
-                let inner = self.expr();
+                let mut inner = self.expr();
                 if self.at(&Tok::RParen) {
                     self.bump();
                 } else {
@@ -1065,11 +1066,8 @@ impl<'s, 'd> Parser<'s, 'd> {
                             .with_hint("close the parenthesis"),
                     );
                 }
-                let span = here.to(self.span(self.prev_end(), self.prev_end()));
-                Expr {
-                    kind: inner.kind,
-                    span,
-                }
+                inner.span = here.to(self.span(self.prev_end(), self.prev_end()));
+                inner
             }
             // `XOR(a, b)`, `MOD(x, 2)`, `AND(a, b, c)`: the standard functions named like operators,
             // in functional form.

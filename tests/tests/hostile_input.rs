@@ -1,0 +1,396 @@
+//! Hostile input through the `ladderc` binary (issue #12, points 1-4): depth and length that used to
+//! overflow the stack or run quadratic, output that used to grow without bound, multi-byte text that
+//! used to be sliced inside a character, and data sizes that used to fail only at link time. Every
+//! run must end with exit 0, 1 or 2 (never a panic or a signal) and bounded output.
+
+mod common;
+
+use common::ladderc;
+use std::path::Path;
+use std::process::Output;
+
+fn write(dir: &Path, name: &str, text: &str) -> std::path::PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn run(args: &[&str], files: &[&Path]) -> Output {
+    let out = ladderc().args(args).args(files).output().unwrap();
+    assert!(
+        matches!(out.status.code(), Some(0..=2)),
+        "exit {:?} (a panic is 101, a signal none): {}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr[..out.stderr.len().min(4000)])
+    );
+    out
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// An XML project with one PROGRAM `main` (INT a, BOOL b, REAL r) whose body is `body` (an `<ST>`,
+/// `<LD>` or `<FBD>` element).
+fn project(body: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+<fileHeader companyName="x" productName="x" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+<contentHeader name="t"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
+<types><dataTypes/><pous>
+<pou name="main" pouType="program"><interface><localVars>
+<variable name="a"><type><INT/></type></variable>
+<variable name="b"><type><BOOL/></type></variable>
+<variable name="r"><type><REAL/></type></variable>
+</localVars></interface>
+<body>{body}</body></pou>
+</pous></types></project>
+"#
+    )
+}
+
+fn st(text: &str) -> String {
+    project(&format!("<ST><xhtml:p><![CDATA[{text}]]></xhtml:p></ST>"))
+}
+
+fn nested_il(levels: usize) -> String {
+    let mut s = String::from("PROGRAM p\nVAR a : INT; END_VAR\nLD a\n");
+    s.push_str(&"ADD( a\n".repeat(levels));
+    s.push_str(&")\n".repeat(levels));
+    s.push_str("ST a\nEND_PROGRAM\n");
+    s
+}
+
+// ------------------------------------------------------------------------------ 1. depth and length
+
+#[test]
+fn an_st_chain_of_100000_terms_builds() {
+    let dir = tempfile::tempdir().unwrap();
+    let chain = vec!["a"; 100_000].join(" + ");
+    let src = write(dir.path(), "chain.xml", &st(&format!("a := {chain};")));
+    let out = run(&["build", "-o"], &[&dir.path().join("out"), &src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let c = std::fs::read_to_string(dir.path().join("out/program.c")).unwrap();
+    assert!(c.matches("self->v_a").count() >= 100_000);
+}
+
+#[test]
+fn il_nested_100000_deep_is_e0200() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(dir.path(), "deep.il", &nested_il(100_000));
+    let out = run(&["--message-format", "short", "check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(err.contains("deep.il:2004:1: error[E0200]"), "{err}");
+}
+
+#[test]
+fn c_for_deeply_nested_lists_grows_linearly_and_runs() {
+    // 1,000 levels (half the limit): before, every level indented its lines 4 more spaces, 20 MB of C
+    let dir = tempfile::tempdir().unwrap();
+    let il = nested_il(1000).replace("VAR a : INT;", "VAR a : INT := 1;");
+    let src = write(dir.path(), "deep.il", &il);
+    let out = run(&["build", "-o"], &[&dir.path().join("out"), &src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let c = std::fs::read_to_string(dir.path().join("out/program.c")).unwrap();
+    let widest = c.lines().map(|l| l.len() - l.trim_start().len()).max();
+    assert!(
+        widest <= Some(16 * 4),
+        "indentation stops at 16 levels: {widest:?}"
+    );
+    assert!(
+        c.len() < 100 * il.len(),
+        "{} bytes of C for {} of IL",
+        c.len(),
+        il.len()
+    );
+    let out = run(&["run", "--cycles", "1", "--watch", "p.a"], &[&src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    // a := a + (a + (... + a)): 1,001 ones
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert!(trace.contains(",1001"), "{trace}");
+}
+
+#[test]
+fn a_rung_of_3000_contacts_in_series_is_e3200() {
+    let mut el = vec![r#"<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>"#.to_string()];
+    let n = 3000;
+    for i in 0..n {
+        el.push(format!(r#"<contact localId="{}" negated="false"><position x="{i}" y="0"/><connectionPointIn><connection refLocalId="{}"/></connectionPointIn><connectionPointOut/><variable>b</variable></contact>"#, i + 2, i + 1));
+    }
+    el.push(format!(r#"<coil localId="{}" negated="false"><position x="{n}" y="0"/><connectionPointIn><connection refLocalId="{}"/></connectionPointIn><connectionPointOut/><variable>b</variable></coil>"#, n + 2, n + 1));
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "rung.xml",
+        &project(&format!("<LD>{}</LD>", el.join("\n"))),
+    );
+    let out = run(&["--message-format", "short", "check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("error[E3200]"), "{}", stderr(&out));
+}
+
+// ------------------------------------------------------------------------------ 2. characters
+
+#[test]
+fn a_block_type_with_a_multibyte_character_is_a_diagnostic() {
+    let body = r#"<FBD><inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>b</expression></inVariable>
+<block localId="2" instanceName="t" typeName="T€ON"><position x="1" y="0"/><inputVariables><variable formalParameter="IN"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables></block></FBD>"#;
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(dir.path(), "blk.xml", &project(body));
+    let out = run(&["check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+}
+
+/// Checks every span of every JSON diagnostic: inside its file and on character boundaries.
+fn assert_spans_on_boundaries(out: &Output, what: &str) {
+    for line in String::from_utf8_lossy(&out.stderr).lines() {
+        let Ok(v) = serde_json::from_str::<serde_json::Value>(line) else {
+            continue;
+        };
+        let mut spans = vec![(
+            v["path"].clone(),
+            v["byte_start"].clone(),
+            v["byte_end"].clone(),
+        )];
+        for l in v["labels"].as_array().into_iter().flatten() {
+            spans.push((
+                l["path"].clone(),
+                l["byte_start"].clone(),
+                l["byte_end"].clone(),
+            ));
+        }
+        for (path, s, e) in spans {
+            let (Some(path), Some(s), Some(e)) = (path.as_str(), s.as_u64(), e.as_u64()) else {
+                continue;
+            };
+            let text = std::fs::read(path).unwrap();
+            let text = String::from_utf8_lossy(&text);
+            let (s, e) = (s as usize, e as usize);
+            assert!(
+                s <= e && e <= text.len() && text.is_char_boundary(s) && text.is_char_boundary(e),
+                "{what}: span {s}..{e} of {} bytes off a character boundary: {line}",
+                text.len()
+            );
+        }
+    }
+}
+
+/// Seeds of every text front end, each with multi-byte characters put in at many places.
+#[test]
+fn every_span_of_every_front_end_lies_on_character_boundaries() {
+    let il = "PROGRAM p\nVAR a : INT; s : STRING; END_VAR\nLD a\nADD( 1\nMUL 2\n)\nST a\nLD 'x'\nST s\nJMPC l\nl: LD a\nEND_PROGRAM\n";
+    let st_text = "a := (a + 1) * 2; IF b THEN r := r ** 2.0; END_IF; {pragma} (* c *) a := -a;";
+    let xml_st = st(st_text);
+    let drive = "S:: PARAM;\nS:: P0 = 10000;\nS:: INIT;\nS:: Velocity = 100000;\nS:: MOTION 0;\nS:: EVENT 0;\nS:: IF DI_0 = HIGH AND MotionDone;\nS:: THEN DO_0=HIGH AND RelativeTargetPosition=P0;\n";
+    let seeds: [(&str, &str, &[&str]); 4] = [
+        ("h.il", il, &["check"]),
+        ("h.xml", &xml_st, &["check"]),
+        ("h.drive", drive, &["drive", "build", "-o", "/dev/null"]),
+        ("h2.xml", &xml_st, &["build", "--emit", "il"]),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let mut runs = 0;
+    for (name, seed, cmd) in seeds {
+        let bounds: Vec<usize> = (0..=seed.len())
+            .filter(|&i| seed.is_char_boundary(i))
+            .collect();
+        for (k, &at) in bounds.iter().enumerate().step_by(bounds.len() / 40 + 1) {
+            let ch = ["€", "é", "🗻", "\u{FEFF}", "{€", "(*é", "'€", "%I€"][k % 8];
+            let text = format!("{}{ch}{}", &seed[..at], &seed[at..]);
+            let src = write(dir.path(), name, &text);
+            let mut args = vec!["--message-format", "json"];
+            args.extend_from_slice(cmd);
+            let out = run(&args, &[&src]);
+            assert_spans_on_boundaries(&out, &format!("{name} with {ch:?} at {at}"));
+            runs += 1;
+        }
+    }
+    assert!(runs > 100);
+}
+
+#[test]
+fn an_unterminated_pragma_before_a_multibyte_character_ends_on_a_boundary() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(dir.path(), "p.xml", &st("a := 1; {€"));
+    let out = run(&["--message-format", "json", "check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("\"E0102\""), "{}", stderr(&out));
+    assert_spans_on_boundaries(&out, "pragma");
+}
+
+// ------------------------------------------------------------------------------ 3. bounded output
+
+#[test]
+fn many_errors_show_the_first_fifty_per_file_and_count_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "many.il",
+        &format!(
+            "PROGRAM p\nVAR a : INT; END_VAR\nLD a\n{}END_PROGRAM\n",
+            "ST nope\n".repeat(5000)
+        ),
+    );
+    let out = run(&["check"], &[&src]);
+    let err = stderr(&out);
+    assert_eq!(err.matches("error[E1001]").count(), 50, "{err}");
+    assert!(err.contains("4950 more diagnostics in"), "{err}");
+    assert!(err.len() < 40_000, "{} bytes", err.len());
+
+    let out = run(
+        &[
+            "--message-format",
+            "short",
+            "--max-diagnostics",
+            "3",
+            "check",
+        ],
+        &[&src],
+    );
+    let err = stderr(&out);
+    assert_eq!(err.lines().count(), 4, "{err}");
+    let out = run(
+        &[
+            "--message-format",
+            "short",
+            "--max-diagnostics",
+            "0",
+            "check",
+        ],
+        &[&src],
+    );
+    assert_eq!(stderr(&out).matches("error[E1001]").count(), 5000);
+    let out = run(&["--message-format", "json", "check"], &[&src]);
+    assert_eq!(
+        stderr(&out).lines().count(),
+        5000,
+        "JSON shows every diagnostic"
+    );
+}
+
+#[test]
+fn excerpts_of_long_lines_are_clipped_around_the_label() {
+    let dir = tempfile::tempdir().unwrap();
+    let long = "(* padding *) ".repeat(70_000); // 1 MB on the line
+    let src = write(
+        dir.path(),
+        "long.il",
+        &format!("PROGRAM p\nVAR a : INT; END_VAR\nLD a {long}nope\nST zz\nEND_PROGRAM\n"),
+    );
+    let out = run(&["check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(
+        err.len() < 4000,
+        "{} bytes: {}",
+        err.len(),
+        &err[..err.len().min(2000)]
+    );
+    assert!(err.contains("…"), "the cut is marked: {err}");
+    assert!(
+        err.contains("long.il:3:980006"),
+        "real line and column: {err}"
+    );
+}
+
+#[test]
+fn a_2_5_mb_xml_file_with_a_few_diagnostics_prints_a_few_kilobytes() {
+    // one 2.5 MB line holding 13 type errors: before, every excerpt printed the whole line
+    let body: String = (0..13)
+        .map(|i| format!("a := b; (* {} *) ", "x".repeat(190_000 + i)))
+        .collect();
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(dir.path(), "big.xml", &st(&body));
+    assert!(std::fs::metadata(&src).unwrap().len() > 2_400_000);
+    let out = run(&["check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(err.matches("error[").count() >= 13, "{err}");
+    assert!(err.len() < 13 * 2000, "{} bytes", err.len());
+}
+
+#[test]
+fn a_drive_script_full_of_errors_prints_a_bounded_report() {
+    let dir = tempfile::tempdir().unwrap();
+    let line = format!("S:: IF {} = HIGH;\n", "Q".repeat(2000));
+    let src = write(dir.path(), "bad.drive", &line.repeat(100)); // 200 KB
+    let out = run(&["drive", "build", "-o"], &[&dir.path().join("img"), &src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(err.len() < 60_000, "{} bytes", err.len());
+}
+
+// ------------------------------------------------------------------------------ 4. size limits
+
+#[test]
+fn an_array_larger_than_the_data_budget_is_e2100_before_any_c() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "big.il",
+        "PROGRAM p\nVAR x : ARRAY[0..2147483647] OF INT; a : INT; END_VAR\nLD a\nST x[1]\nEND_PROGRAM\n",
+    );
+    let out_dir = dir.path().join("out");
+    let out = run(
+        &["--message-format", "short", "build", "-o"],
+        &[&out_dir, &src],
+    );
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(
+        err.contains("big.il:2:5: error[E2100]") && err.contains("4294967296 bytes"),
+        "{err}"
+    );
+    assert!(!out_dir.join("program.c").exists());
+}
+
+#[test]
+fn size_arithmetic_that_overflows_is_e2100() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "over.il",
+        "TYPE\n  R : ARRAY[0..1000000] OF LREAL;\n  S : STRUCT a : ARRAY[0..1000000] OF R; END_STRUCT;\nEND_TYPE\n\
+         PROGRAM p\nVAR x : ARRAY[0..1000000000] OF S; a : INT; END_VAR\nLD a\nST a\nEND_PROGRAM\n",
+    );
+    let out = run(
+        &["--message-format", "short", "build", "-o"],
+        &[&dir.path().join("out"), &src],
+    );
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stderr(&out).contains("over.il:6:5: error[E2100]: variable `x` is too large"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn the_budget_comes_from_the_profile_and_counts_the_program_data_together() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "three.il",
+        "PROGRAM p\nVAR x : ARRAY[0..99] OF LREAL; y : ARRAY[0..99] OF LREAL; END_VAR\nLD 1.0\nST x[0]\nEND_PROGRAM\n",
+    );
+    // 1,600 bytes: fits the default budget, not a 1 KiB one
+    let out = run(&["build", "-o"], &[&dir.path().join("ok"), &src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let profile = c_backend::TargetProfile {
+        data_bytes: 1024,
+        ..c_backend::TargetProfile::default()
+    };
+    let pf = write(dir.path(), "small.json", &profile.to_json());
+    let out = run(
+        &["--message-format", "short", "build", "--profile"],
+        &[&pf, Path::new("-o"), &dir.path().join("no"), &src],
+    );
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stderr(&out).contains("error[E2100]: the data of `p` needs 1600 bytes"),
+        "{}",
+        stderr(&out)
+    );
+}
