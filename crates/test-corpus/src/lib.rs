@@ -45,9 +45,12 @@ pub fn dir() -> Option<PathBuf> {
 /// Prints the skip line of a test that needs `what` from the corpus. It goes straight to the process's
 /// standard error, past the test harness's capture, so that a passing run still shows it.
 pub fn skip(what: &str) {
+    // The test harness names each test's thread after the test.
+    let thread = std::thread::current();
+    let test = thread.name().unwrap_or("a test");
     let _ = writeln!(
         std::io::stderr(),
-        "skipped ({ENV} unset): {what} is not bundled; set {ENV} to the corpus folder to run this test"
+        "skipped ({ENV} unset): {test} needs {what}, which is not bundled; set {ENV} to the corpus folder"
     );
 }
 
