@@ -40,19 +40,9 @@ fn unknown_code_and_bad_usage_exit_2() {
 
 #[test]
 fn motion_plan_recomputes_oracle_durations() {
-    // `shared/` sits beside the repository (or beside an ancestor, for worktrees nested deeper).
-    let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let oracle = here
-        .ancestors()
-        .map(|a| a.join("shared/oracle/ruckig-profiles.jsonl"))
-        .find(|p| p.is_file())
-        .unwrap_or_else(|| here.join("../../../shared/oracle/ruckig-profiles.jsonl"));
-    let Ok(text) = std::fs::read_to_string(&oracle) else {
-        panic!(
-            "the oracle file is expected beside the repository at {}",
-            oracle.display()
-        );
-    };
+    let oracle = common::repo_root().join("crates/motion-lib/tests/data/ruckig-profiles.jsonl");
+    let text =
+        std::fs::read_to_string(&oracle).unwrap_or_else(|e| panic!("{}: {e}", oracle.display()));
     let dir = tempfile::tempdir().unwrap();
     let sample: String = text.lines().take(40).map(|l| format!("{l}\n")).collect();
     let input = dir.path().join("p.jsonl");

@@ -205,20 +205,13 @@ fn ld_fbd_and_il_conditions_and_actions_run_with_the_final_scan() {
     insta::assert_snapshot!(t);
 }
 
-/// The shared corpus (the nearest ancestor's `shared/corpus`).
-fn corpus(name: &str) -> PathBuf {
-    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
-    here.ancestors()
-        .map(|a| a.join("shared/corpus"))
-        .find(|p| p.is_dir())
-        .unwrap_or_else(|| here.join("../../../shared/corpus"))
-        .join(name)
-}
-
 #[test]
 fn corpus_01_runs_and_counter_sfc_tracks_counter_il_as_the_standard_says() {
     // The whole Beremiz "first steps" project (LD, FBD, ST, IL and SFC counters) runs. Its task is
     // T#100ms, so one scan per 100 ms cycle.
+    let Some(file) = common::corpus_file("01_beremiz_first_steps.xml") else {
+        return;
+    };
     let dir = tempfile::tempdir().unwrap();
     let p = "plc_task_instance";
     let stim = dir.path().join("stim.csv");
@@ -239,7 +232,7 @@ fn corpus_01_runs_and_counter_sfc_tracks_counter_il_as_the_standard_says() {
     .collect();
     let out = common::ladderc()
         .arg("run")
-        .arg(corpus("01_beremiz_first_steps.xml"))
+        .arg(&file)
         .args(["--cycles", "10", "--cycle-ms", "100", "--stimulus"])
         .arg(&stim)
         .arg("--trace")

@@ -1,17 +1,17 @@
-//! Real IL from the shared corpus (read in place, never copied), completed by a small driver program,
-//! through the whole chain.
+//! Real IL from the corpus (GPL: read from `$LADDERC_CORPUS`, never copied; skipped when it is unset),
+//! completed by a small driver program, through the whole chain.
 
 mod support;
 use support::*;
 
-fn corpus_with_driver(file: &str, driver: &str) -> Built {
-    let text = std::fs::read_to_string(corpus(file)).expect("corpus file");
-    build_src(&format!("{text}\n{driver}"))
+fn corpus_with_driver(file: &str, driver: &str) -> Option<Built> {
+    let text = std::fs::read_to_string(corpus(file)?).expect("corpus file");
+    Some(build_src(&format!("{text}\n{driver}")))
 }
 
 #[test]
 fn annex_f_cmd_monitor_raises_and_acknowledges_its_alarm() {
-    let b = corpus_with_driver(
+    let Some(b) = corpus_with_driver(
         "il/17_matiec_AnnexF_cmd_monitor_il.st",
         "PROGRAM main
 VAR
@@ -25,7 +25,9 @@ END_VAR
   ST %QX0.1
 END_PROGRAM
 ",
-    );
+    ) else {
+        return;
+    };
     // cycle 1: automatic command; no feedback within 30 ms -> alarm at cycle 4;
     // ACK at cycle 6 while the command is still on does not cancel (S1 dominates);
     // command off at cycle 8, ACK at cycle 9 cancels
@@ -43,7 +45,7 @@ END_PROGRAM
 
 #[test]
 fn annex_f_weigh_function_decodes_bcd_and_returns_early_without_command() {
-    let b = corpus_with_driver(
+    let Some(b) = corpus_with_driver(
         "il/17_matiec_AnnexF_weigh_il.st",
         "PROGRAM main
 VAR
@@ -53,7 +55,9 @@ END_VAR
   ST net
 END_PROGRAM
 ",
-    );
+    ) else {
+        return;
+    };
     // gross 150 in BCD (16#0150 = 336), tare 20: net 130 in BCD (16#0130 = 304)
     let stim = "0,%IW1,336\n1,%IX0.0,1\n";
     let rows = run(&b, 2, 10.0, stim, &["main.net"]);
@@ -62,7 +66,7 @@ END_PROGRAM
 
 #[test]
 fn strucpp_state_display_lights_one_led_per_state() {
-    let b = corpus_with_driver(
+    let Some(b) = corpus_with_driver(
         "il/20_strucpp_state-display.il",
         "PROGRAM main
 VAR
@@ -78,7 +82,9 @@ END_VAR
   ST %QX0.2
 END_PROGRAM
 ",
-    );
+    ) else {
+        return;
+    };
     let stim = "0,main.s,0\n1,main.s,1\n2,main.s,2\n3,main.s,7\n";
     let rows = run(&b, 4, 10.0, stim, &["%QX0.0", "%QX0.1", "%QX0.2"]);
     assert_eq!(column(&rows, "%QX0.0"), ["1", "0", "0", "0"]);

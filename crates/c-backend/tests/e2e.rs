@@ -243,7 +243,7 @@ fn corpus18_expected(i: &dyn Fn(u32, u32) -> bool) -> bool {
 
 #[test]
 fn nested_deferred_operators_evaluate_as_written_corpus_18() {
-    let text = std::fs::read_to_string(corpus("il/18_il_parser_test1.il")).expect("corpus file 18");
+    let text = std::fs::read_to_string(test_corpus::path("il/18_il_parser_test1.il")).unwrap();
     // The file is a bare body ending in `S` (no operand) and `ST %Q0.0`: wrap it in a PROGRAM and drop
     // the operand-less `S`, which is not IEC (the analysis rejects it).
     let body: Vec<&str> = text.lines().filter(|l| l.trim() != "S").collect();

@@ -45,7 +45,9 @@ fn embedded_il_spans_point_into_the_xml() {
 
 #[test]
 fn corpus_il_body_lines_map_to_the_xml() {
-    let xml = corpus("01_beremiz_first_steps.xml");
+    let Some(xml) = corpus("01_beremiz_first_steps.xml") else {
+        return;
+    };
     let (unit, _) = compile("01.xml", &xml);
     let il = unit
         .items
@@ -158,7 +160,9 @@ fn emitted_il_parses_back_to_the_same_tree() {
         "15_matiec_STD_TEST_tc6v1_fbd.xml",
         "24_feecat_S7RTT_codesys_st_motion.xml",
     ] {
-        round_trip(f, &corpus(f));
+        if let Some(xml) = corpus(f) {
+            round_trip(f, &xml);
+        }
     }
     round_trip("gen.xml", &ladder_compiler::testgen::generate(8));
 }

@@ -1,4 +1,4 @@
-//! Oracle test: every problem of /work/shared/oracle/ruckig-profiles.jsonl (ruckig 0.19.4
+//! Oracle test: every problem of tests/data/ruckig-profiles.jsonl (ruckig 0.19.4
 //! durations) must be planned with the same duration (1e-6 relative).
 
 use motion_lib::profile::line::Line;
@@ -6,16 +6,11 @@ use motion_lib::profile::{Limits, Profile, State};
 use serde_json::Value;
 
 fn oracle() -> String {
-    // The main repo sits at /work/main, worktrees at /work/wt/<name>: try both depths.
-    let dir = env!("CARGO_MANIFEST_DIR");
-    // LADDERC_SHARED overrides the location of the shared directory.
-    let over = std::env::var("LADDERC_SHARED").ok();
-    over.into_iter()
-        .chain(["/../../../shared", "/../../../../shared"].map(|up| format!("{dir}{up}")))
-        .find_map(|shared| {
-            std::fs::read_to_string(format!("{shared}/oracle/ruckig-profiles.jsonl")).ok()
-        })
-        .expect("oracle file /work/shared/oracle/ruckig-profiles.jsonl readable")
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/ruckig-profiles.jsonl"
+    );
+    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"))
 }
 
 fn f(v: &Value, k: &str) -> f64 {

@@ -1,4 +1,4 @@
-//! Motion programs: pmac.md's example, paper B's moves, ruckig's time-optimal durations, dialects, errors.
+//! Motion programs: a reference program of paper B's moves, paper B's moves, ruckig's time-optimal durations, dialects, errors.
 
 use pmac_backend::model::{AxisDef, CoordSystem, Dialect, LinearMove, MoveMode, Transition};
 use pmac_backend::program::{self, ProgramOptions};
@@ -6,16 +6,13 @@ use pmac_backend::scurve::{project, RestToRest};
 use pmac_backend::verify::{max_deviation, program_move_times, reconstruct_program};
 use pmac_backend::TrajectorySource;
 
-/// A file of the shared reference/oracle directory: `../../../shared` from the crate in the main checkout,
-/// one level more from a worktree under /work/wt.
-fn shared(rel: &str) -> String {
-    let base = env!("CARGO_MANIFEST_DIR");
-    for up in ["/../../../shared/", "/../../../../shared/"] {
-        if let Ok(text) = std::fs::read_to_string(format!("{base}{up}{rel}")) {
-            return text;
-        }
-    }
-    panic!("shared file {rel} not found above {base}");
+/// The ruckig oracle (its time-optimal durations), kept with the motion library's tests.
+fn oracle() -> String {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../motion-lib/tests/data/ruckig-profiles.jsonl"
+    );
+    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"))
 }
 
 fn xyz() -> CoordSystem {
@@ -52,12 +49,19 @@ fn paper_b(speeds: [f64; 3], transitions: [Transition; 3]) -> Vec<LinearMove> {
 
 const STOPS: [Transition; 3] = [Transition::ExactStop; 3];
 
-/// The example program of the shared reference (the first fenced block of pmac.md).
-fn pmac_md_example() -> String {
-    let text = shared("reference/pmac.md");
-    let block = text.split("```").nth(1).expect("a fenced block");
-    block.trim_start_matches('\n').to_string()
-}
+/// The expected Turbo PMAC motion program of paper B's three moves (exact stops, per-axis speeds 40, 70,
+/// 40, a = d = 5, j = 2, 1000 counts per unit). Times in ms: S-curve time TS = a/j, acceleration time
+/// TA = TS + v/a; F is the vector speed at which the dominant axis moves at its speed.
+const REFERENCE_PROGRAM: &str = "\
+&1 #1->1000X #2->1000Y #3->1000Z
+OPEN PROG 1 CLEAR
+LINEAR ABS FRAX(X,Y,Z)
+TS2500 TA10500 F53.852 X1600 Y1200 Z800 DWELL0
+TA16500 F82.932 X2200 Y3800 Z5000 DWELL0
+TA10500 F40.749 X4500 Y4200 Z4800 DWELL0
+CLOSE
+&1 B1 R
+";
 
 /// The program without the set-up lines before the axis definitions (`CLOSE`, `DELETE GATHER`, `I5190=1000`)
 /// and with every feedrate masked (`F` is rounded down now, pmac.md rounds to nearest), checked separately.
@@ -96,11 +100,11 @@ fn assert_times(got: &[f64], want: &[f64]) {
 
 #[test]
 fn pmac_md_example_is_reproduced() {
-    // pmac.md's F values (53.852, 82.932, 40.749) and TA values (10500, 16500, 10500) are the projections of
-    // per-axis speeds 40, 70, 40 (not the 40, 55, 70 of paper B's table; see the next test).
+    // The reference program's F values (53.852, 82.932, 40.749) and TA values (10500, 16500, 10500)
+    // are the projections of per-axis speeds 40, 70, 40 (not the 40, 55, 70 of paper B's table; see the next test).
     let text = program::write(&xyz(), &paper_b([40.0, 70.0, 40.0], STOPS), Dialect::Turbo).unwrap();
     let (ours, our_feeds) = masked_motion(&text);
-    let (reference, ref_feeds) = masked_motion(&pmac_md_example());
+    let (reference, ref_feeds) = masked_motion(REFERENCE_PROGRAM);
     assert_eq!(ours, reference);
     for (f, r) in our_feeds.iter().zip(&ref_feeds) {
         assert!(f <= r && r - f <= 1e-3, "F{f} against the reference's F{r}");
@@ -112,7 +116,7 @@ fn pmac_md_example_is_reproduced() {
     assert_times(&program_move_times(&text).unwrap(), &[50.5, 76.5, 68.0]);
     // The reference text itself gives the same times.
     assert_times(
-        &program_move_times(&pmac_md_example()).unwrap(),
+        &program_move_times(REFERENCE_PROGRAM).unwrap(),
         &[50.5, 76.5, 68.0],
     );
     insta::assert_snapshot!("paper_b_pmac_md_turbo", text);
@@ -223,7 +227,7 @@ fn program_motion_follows_the_jerk_limited_plan() {
 #[test]
 fn rest_to_rest_matches_ruckig_through_the_program() {
     // One axis, rest to rest: the written program's move time equals ruckig's time-optimal duration.
-    let text = shared("oracle/ruckig-profiles.jsonl");
+    let text = oracle();
     let cs = CoordSystem {
         number: 2,
         axes: vec![AxisDef {
@@ -274,7 +278,7 @@ fn rest_to_rest_matches_ruckig_through_the_program() {
 #[test]
 fn line_projection_matches_ruckig() {
     // Three axes, per-axis limits projected onto the line: same duration as ruckig's optimum along the line.
-    let text = shared("oracle/ruckig-profiles.jsonl");
+    let text = oracle();
     let mut checked = 0;
     let mut worst: f64 = 0.0;
     for line in text.lines() {

@@ -1,4 +1,4 @@
-//! Helpers shared by the CLI's end-to-end tests: the binary, the shared corpus, exit-status checks.
+//! Helpers shared by the end-to-end tests: the binary, the corpus, exit-status checks.
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
@@ -22,13 +22,16 @@ pub fn repo_root() -> PathBuf {
         .to_path_buf()
 }
 
-/// A file of `shared/corpus` beside the repository (or beside an ancestor: worktrees nest deeper).
+/// A corpus file the test requires (see the `test-corpus` crate): the bundled copy or the file in
+/// `$LADDERC_CORPUS`. Panics when it is neither; a test over a GPL file calls [`corpus_file`] instead.
 pub fn corpus(name: &str) -> PathBuf {
-    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
-    here.ancestors()
-        .map(|a| a.join("shared/corpus").join(name))
-        .find(|p| p.is_file())
-        .unwrap_or_else(|| here.join("../../../shared/corpus").join(name))
+    test_corpus::path(name)
+}
+
+/// A corpus file, or `None` after printing a skip line when it is not bundled and `LADDERC_CORPUS` is
+/// unset (the test then returns and passes). Panics when `LADDERC_CORPUS` is set and lacks the file.
+pub fn corpus_file(name: &str) -> Option<PathBuf> {
+    test_corpus::file(name)
 }
 
 /// Asserts that a run exited with 0, showing its standard error otherwise.

@@ -173,14 +173,8 @@ pub fn column(rows: &[Vec<String>], name: &str) -> Vec<String> {
     rows[1..].iter().map(|r| r[i].clone()).collect()
 }
 
-/// A corpus file: `/work/shared/corpus` seen from the crate, in the main repository or a worktree.
-pub fn corpus(rel: &str) -> PathBuf {
-    let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    for dir in here.ancestors() {
-        let p = dir.join("shared/corpus").join(rel);
-        if p.exists() {
-            return p;
-        }
-    }
-    panic!("corpus file {rel} not found above {}", here.display());
+/// A corpus file (see the `test-corpus` crate): bundled, or in `$LADDERC_CORPUS`; `None` after printing
+/// a skip line when it is neither.
+pub fn corpus(rel: &str) -> Option<PathBuf> {
+    test_corpus::file(rel)
 }

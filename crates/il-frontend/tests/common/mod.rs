@@ -1,5 +1,5 @@
 //! Helpers shared by the integration tests: parsing with a source map, short/human diagnostics,
-//! span-free tree comparison, the shared corpus location.
+//! span-free tree comparison, the corpus files.
 #![allow(dead_code)]
 
 use diagnostics::{render, Diagnostics, FileId, MessageFormat, SourceMap};
@@ -67,24 +67,10 @@ pub fn shape<T: serde::Serialize>(t: &T) -> serde_json::Value {
     v
 }
 
-/// The IL files of the shared corpus, sorted by name.
+/// The IL files of the corpus, sorted by name: the bundled ones, and those of `$LADDERC_CORPUS/il` when
+/// it is set (see the `test-corpus` crate).
 pub fn corpus_il() -> Vec<std::path::PathBuf> {
-    let root = env!("CARGO_MANIFEST_DIR");
-    // `shared/` sits beside the repository (CI) or beside the worktree folder (local worktrees).
-    let dir = [
-        "/../../../shared/corpus/il",
-        "/../../../../shared/corpus/il",
-    ]
-    .iter()
-    .map(|d| std::path::PathBuf::from(format!("{root}{d}")))
-    .find(|d| d.is_dir())
-    .expect("shared/corpus/il beside the repository");
-    let mut files: Vec<_> = std::fs::read_dir(dir)
-        .expect("corpus dir")
-        .map(|e| e.expect("entry").path())
-        .collect();
-    files.sort();
-    files
+    test_corpus::list("il", &[".il", ".st"])
 }
 
 /// Parse -> print -> parse -> print: the second print equals the first, and the trees are equal.

@@ -4,19 +4,10 @@
 use diagnostics::{render_short, Diagnostics, SourceMap};
 use ladder_compiler::ast::CompilationUnit;
 
-/// The shared corpus: `../../../shared/corpus` from the crate (the repository's sibling `shared/`), or
-/// the nearest ancestor's `shared/corpus` (worktrees live deeper than the main checkout).
-pub fn corpus_dir() -> std::path::PathBuf {
-    let here = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    here.ancestors()
-        .map(|a| a.join("shared/corpus"))
-        .find(|p| p.is_dir())
-        .unwrap_or_else(|| here.join("../../../shared/corpus"))
-}
-
-pub fn corpus(name: &str) -> String {
-    let path = corpus_dir().join(name);
-    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+/// The text of a corpus file (see the `test-corpus` crate): bundled, or read from `$LADDERC_CORPUS`;
+/// `None` after a skip line when it is neither.
+pub fn corpus(name: &str) -> Option<String> {
+    test_corpus::read(name)
 }
 
 pub fn fixture(name: &str) -> String {
