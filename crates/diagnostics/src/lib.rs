@@ -6,6 +6,7 @@
 //! (`file:line:col: error[CODE]: message`, one line, for IDE problem matchers) and JSON lines.
 //! Invariants: a span always refers to a file of the source map and lies on UTF-8 boundaries of its text;
 //! line and column are 1-based, columns count characters (not bytes).
+#![forbid(unsafe_code)]
 
 mod codes;
 mod diagnostic;

@@ -7,6 +7,7 @@
 //! Modules: [`pipeline`] (load, check, lower, generate C), [`cli`] (arguments and dispatch), [`axes`] (the
 //! axes file), [`motion_link`] (the motion library that generated programs link), [`output`] (atomic
 //! writes), [`plot`], [`pmac_out`] and [`report`].
+#![forbid(unsafe_code)]
 
 pub mod axes;
 pub mod cli;

@@ -7,6 +7,7 @@
 //!   (generated head + library body + generated feedback tail).
 //!
 //! Stages here: `xml` (element tree with spans) -> `template` (schema, validation) -> `tm` (slot layout).
+#![forbid(unsafe_code)]
 
 pub mod cbody;
 pub mod library;
