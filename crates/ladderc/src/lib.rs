@@ -11,6 +11,7 @@
 
 pub mod axes;
 pub mod cli;
+pub mod fuzzing;
 pub mod motion_link;
 pub mod output;
 pub mod pipeline;
