@@ -343,13 +343,13 @@ pub fn header_symbols(header: &str) -> BTreeSet<String> {
                 let name = text(t);
                 if name == "typedef" {
                     in_typedef = true;
-                } else if k > 0 && text(&toks[k - 1]) == "struct" {
-                    out.insert(name.to_string());
-                } else if toks
-                    .get(k + 1)
-                    .is_some_and(|n| n.kind == cbody::Tok::Punct(b'('))
-                    && !crate::template::C_KEYWORDS.contains(&name)
+                } else if (k > 0 && text(&toks[k - 1]) == "struct")
+                    || (toks
+                        .get(k + 1)
+                        .is_some_and(|n| n.kind == cbody::Tok::Punct(b'('))
+                        && !crate::template::C_KEYWORDS.contains(&name))
                 {
+                    // A struct tag, or a function's name.
                     out.insert(name.to_string());
                 }
             }
