@@ -337,3 +337,11 @@ fn the_invariants_catch_a_span_inside_a_character() {
     let r = catch_unwind(AssertUnwindSafe(|| fuzzing::check_spans(&map, [d].iter())));
     assert!(r.is_err());
 }
+
+#[test]
+fn fuzz_findings_stay_fixed() {
+    // cargo-fuzz `template`: a `#` right before a multi-byte character gave an E4201 span that cut it.
+    let body = "<blockTemplate name=\"ACME_X\" funcNum=\"1\"><parameters/><body>x #\u{fffd} #</body></blockTemplate>";
+    let out = fuzzing::run(FrontEnd::Template, body.as_bytes());
+    assert!(out.diagnostics > 0);
+}

@@ -225,9 +225,14 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
                 Tok::Punct(q) => Some(q),
                 _ => None,
             });
+        // The pair's end is the next token's end (it may be a multi-byte character: found by the fuzzer).
+        let pair_end = toks
+            .get(k + 1)
+            .filter(|n| n.start == t.end && next.is_some())
+            .map_or(t.end, |n| n.end);
         let bad = |code, msg: String, hint: &str| {
             Diagnostic::error(code, msg)
-                .at(at(t.start, t.end + usize::from(next.is_some())))
+                .at(at(t.start, pair_end))
                 .with_hint(hint.to_string())
         };
         match (p, next) {

@@ -95,6 +95,8 @@ fn preprocessor_directives_are_refused_in_every_spelling() {
         ("%:include <stdio.h>", "9:1"),
         ("_Pragma(\"GCC poison Dn\") Dn = 1;", "9:1"),
         ("Dn = 1; #", "9:9"),
+        // Found by the fuzzer: `#` right before a multi-byte character (the span must not cut it).
+        ("Dn = 1; #€", "9:9"),
     ] {
         refused(&body(b), "E4201", line_col);
     }
