@@ -1,5 +1,6 @@
 //! Generates the code table from `explanations/*.md`: one file per stable code, so that each stage adds
 //! its codes by adding files (no shared list to edit). The first line of a file is `# CODE: title`.
+#![forbid(unsafe_code)]
 use std::fmt::Write as _;
 use std::path::Path;
 

@@ -7,6 +7,7 @@
 //! Invariants: the generated C compiles with `cc -std=c99 -Wall -Wextra -Werror`, has no undefined
 //! behaviour for any input values (wrapping integer arithmetic, defined division by zero), contains no
 //! user text except inside octal-escaped string literals, and is generated in time linear in the input.
+#![forbid(unsafe_code)]
 
 mod budget;
 pub mod ctypes;

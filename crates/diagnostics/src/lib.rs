@@ -8,6 +8,7 @@
 //! plus the final [`Summary`] record ([`render_summary_json`]).
 //! Invariants: a span always refers to a file of the source map and lies on UTF-8 boundaries of its text;
 //! line and column are 1-based, columns count characters (not bytes).
+#![forbid(unsafe_code)]
 
 mod codes;
 mod diagnostic;

@@ -5,6 +5,7 @@
 //! [`Interpreter`] driving any [`Drive`], a breakpoint debugger and CLI entry points.
 //! Invariants: no function panics on bad input (script or image); the interpreter never blocks: each
 //! [`Interpreter::cycle`] call evaluates at most `EventsPerCycle` Events.
+#![forbid(unsafe_code)]
 
 pub mod cli;
 pub mod compiler;

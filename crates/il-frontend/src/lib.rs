@@ -5,6 +5,7 @@
 //! (symbols, types, current-result typing, labels). Every node carries a byte [`Span`].
 //! [`print`] writes a tree back as IL; [`testgen`] generates large valid programs for tests and benches.
 //! [`st`] is the Structured Text front end: ST is parsed and lowered to this IL tree.
+#![forbid(unsafe_code)]
 
 pub mod ast;
 pub mod layout;

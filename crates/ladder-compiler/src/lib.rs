@@ -8,6 +8,7 @@
 //!
 //! Stages: [`xml`] (element tree with positions) -> [`project`] (declarations, configurations) ->
 //! [`body`] per POU -> [`graph`] (networks, order) -> [`lower`] (IL statements).
+#![forbid(unsafe_code)]
 
 pub mod body;
 pub mod catalogue;

@@ -6,13 +6,15 @@
 //!
 //! Modules: [`pipeline`] (load, check, lower, generate C), [`cli`] (arguments and dispatch), [`axes`] (the
 //! axes file), [`motion_link`] (the motion library that generated programs link), [`output`] (writing
-//! into the user's folder), [`depfile`], [`lsp`] (the language server), [`plot`], [`pmac_out`], [`report`], [`progress`] (running a built
-//! program), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary) and
-//! [`xml_context`].
+//! into the user's folder), [`depfile`], [`fuzzing`] (the fuzz harness), [`lsp`] (the language server),
+//! [`plot`], [`pmac_out`], [`report`], [`progress`] (running a built program), [`stdio`] (output that ends
+//! quietly on a closed pipe), [`summary`] (the final summary) and [`xml_context`].
+#![forbid(unsafe_code)]
 
 pub mod axes;
 pub mod cli;
 pub mod depfile;
+pub mod fuzzing;
 pub mod lsp;
 pub mod motion_link;
 pub mod output;

@@ -27,6 +27,7 @@
 //!
 //! Lifetime: `mc_engine_create` returns an owned engine; free it with
 //! `mc_engine_destroy`. Block structs are owned by C (static or stack memory).
+#![deny(unsafe_op_in_unsafe_fn)]
 #![allow(
     non_snake_case,
     non_camel_case_types,

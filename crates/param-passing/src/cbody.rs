@@ -6,7 +6,7 @@
 //! paper A's rules (no `static`/global storage, no call of another embedded function).
 //! Invariant: the token scanner never fails; every byte of the body belongs to exactly one token or gap.
 
-use crate::template::{CText, C_KEYWORDS};
+use crate::template::{is_abbreviation, is_reserved_name, CText, C_KEYWORDS};
 use diagnostics::{code, Diagnostic, Diagnostics, Span};
 use std::collections::BTreeSet;
 
@@ -50,7 +50,8 @@ pub fn tokens(src: &str) -> (Vec<Token>, Vec<LexError>) {
         if c.is_ascii_whitespace() {
             i += 1;
         } else if c == b'/' && b.get(i + 1) == Some(&b'/') {
-            while i < b.len() && b[i] != b'\n' {
+            // A C compiler ends a line at LF, CR LF or a lone CR.
+            while i < b.len() && b[i] != b'\n' && b[i] != b'\r' {
                 i += 1;
             }
         } else if c == b'/' && b.get(i + 1) == Some(&b'*') {
@@ -94,9 +95,14 @@ pub fn tokens(src: &str) -> (Vec<Token>, Vec<LexError>) {
             let s = i;
             i += 1;
             let mut closed = false;
-            while i < b.len() && b[i] != b'\n' {
+            while i < b.len() && b[i] != b'\n' && b[i] != b'\r' {
                 if b[i] == b'\\' {
-                    i += 2;
+                    i += 1;
+                    if let Some(ch) = src.get(i..).and_then(|r| r.chars().next()) {
+                        if ch != '\n' && ch != '\r' {
+                            i += ch.len_utf8();
+                        }
+                    }
                     continue;
                 }
                 if b[i] == c {
@@ -124,9 +130,12 @@ pub fn tokens(src: &str) -> (Vec<Token>, Vec<LexError>) {
                 });
             }
         } else {
-            let width = src[i..].chars().next().map_or(1, char::len_utf8);
+            let width = src
+                .get(i..)
+                .and_then(|r| r.chars().next())
+                .map_or(1, char::len_utf8);
             out.push(Token {
-                kind: Tok::Punct(if width == 1 { c } else { b'?' }),
+                kind: Tok::Punct(if width == 1 { c } else { 0 }),
                 start: i,
                 end: i + width,
             });
@@ -147,20 +156,50 @@ pub struct Scope<'a> {
 }
 
 /// Checks a body; returns whether it is clean (no errors added).
+///
+/// Beyond balance and names, the checks make the body's tokens the compiler's tokens: no trigraph (E4202),
+/// no line splice or `\` outside a literal (E4203), no `#`/`%:` (E4201: no preprocessor directive can
+/// appear), no digraph (E4205: `<%` would open a brace the balance check does not see), no character
+/// outside C's punctuators, ASCII identifiers and literals (E4204: `$` would join identifiers).
 pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnostics) -> bool {
     let before = diags.error_count();
-    let at = |s: usize, e: usize| -> Span {
-        if body.verbatim {
-            Span::new(
-                body.span.file,
-                body.span.start as usize + s,
-                body.span.start as usize + e,
-            )
-        } else {
-            body.span
+    let at = |s: usize, e: usize| -> Span { body.span_of(s, e) };
+    let text = body.text.as_str();
+    let raw = text.as_bytes();
+    // Phase 1 and 2 of C translation, which happen before tokens exist: trigraphs and line splices.
+    for (i, w) in raw.windows(3).enumerate() {
+        if w[0] == b'?' && w[1] == b'?' && b"=/'()!<>-".contains(&w[2]) {
+            diags.push(
+                Diagnostic::error(
+                    code::E4202,
+                    format!("the body of template `{block}` contains the trigraph `??{}`", w[2] as char),
+                )
+                .at(at(i, i + 3))
+                .with_hint("write the character itself (C99 replaces `??=` by `#`, `??/` by `\\` ...); in a string, write `?\\?`"),
+            );
         }
-    };
-    let (toks, errs) = tokens(&body.text);
+    }
+    for (i, &c) in raw.iter().enumerate() {
+        if c != b'\\' {
+            continue;
+        }
+        let rest = &raw[i + 1..];
+        let blanks = rest
+            .iter()
+            .take_while(|b| matches!(b, b' ' | b'\t' | b'\x0c' | b'\x0b'))
+            .count();
+        if matches!(rest.get(blanks), Some(b'\n' | b'\r')) {
+            diags.push(
+                Diagnostic::error(
+                    code::E4203,
+                    format!("the body of template `{block}` splices lines with `\\` at the end of a line"),
+                )
+                .at(at(i, i + 1))
+                .with_hint("join the lines yourself: a splice can hide a directive or split a name"),
+            );
+        }
+    }
+    let (toks, errs) = tokens(text);
     for e in errs {
         diags.push(
             Diagnostic::error(
@@ -170,6 +209,77 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
             .at(at(e.start, e.end))
             .with_hint("close it; the body is C99 code"),
         );
+    }
+    // Punctuators: only C's, and no preprocessing ones.
+    let line_start = |pos: usize| -> bool {
+        // Only white space and comments since the end of the previous token on this line.
+        let k = toks.partition_point(|t| t.start < pos);
+        k == 0 || text[toks[k - 1].end..pos].contains(['\n', '\r'])
+    };
+    for (k, t) in toks.iter().enumerate() {
+        let Tok::Punct(p) = t.kind else { continue };
+        let next = toks
+            .get(k + 1)
+            .filter(|n| n.start == t.end)
+            .and_then(|n| match n.kind {
+                Tok::Punct(q) => Some(q),
+                _ => None,
+            });
+        // The pair's end is the next token's end (it may be a multi-byte character: found by the fuzzer).
+        let pair_end = toks
+            .get(k + 1)
+            .filter(|n| n.start == t.end && next.is_some())
+            .map_or(t.end, |n| n.end);
+        let bad = |code, msg: String, hint: &str| {
+            Diagnostic::error(code, msg)
+                .at(at(t.start, pair_end))
+                .with_hint(hint.to_string())
+        };
+        match (p, next) {
+            (b'#', _) | (b'%', Some(b':')) => {
+                let what = if line_start(t.start) {
+                    "a preprocessor directive"
+                } else {
+                    "a `#` operator"
+                };
+                diags.push(bad(
+                    code::E4201,
+                    format!("the body of template `{block}` contains {what}"),
+                    "bodies are plain C statements: no #include, #define, #if or #pragma (the head and the motion library's header provide every name)",
+                ));
+            }
+            (b'<', Some(b':' | b'%')) | (b':', Some(b'>')) | (b'%', Some(b'>')) => {
+                diags.push(bad(
+                    code::E4205,
+                    format!("the body of template `{block}` contains a digraph"),
+                    "write [ ] { } instead of <: :> <% %>",
+                ));
+            }
+            (
+                b'{' | b'}' | b'[' | b']' | b'(' | b')' | b'<' | b'>' | b'.' | b',' | b';' | b':'
+                | b'?' | b'!' | b'~' | b'+' | b'-' | b'*' | b'/' | b'%' | b'&' | b'|' | b'^' | b'=',
+                _,
+            ) => {}
+            (b'\\', _) => diags.push(
+                Diagnostic::error(
+                    code::E4203,
+                    format!("the body of template `{block}` has `\\` outside a literal"),
+                )
+                .at(at(t.start, t.end))
+                .with_hint("universal character names and splices are not allowed in a body"),
+            ),
+            _ => {
+                let ch = text[t.start..t.end].chars().next().unwrap_or('?');
+                diags.push(
+                    Diagnostic::error(
+                        code::E4204,
+                        format!("the body of template `{block}` contains the character {:?} outside a literal or comment", ch),
+                    )
+                    .at(at(t.start, t.end))
+                    .with_hint("names are ASCII letters, digits and `_` (no `$`); other characters belong in strings or comments"),
+                );
+            }
+        }
     }
     // Delimiter balance.
     let mut stack: Vec<(u8, usize, usize)> = Vec::new();
@@ -240,6 +350,8 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
                 | "unsigned"
                 | "signed"
                 | "_Bool"
+                | "bool"
+                | "void"
         ) || C_BASICS[..9].contains(&name)
             || (scope.runtime.contains(name)
                 && (name.ends_with("_t")
@@ -247,6 +359,14 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
     };
     let mut body_locals: BTreeSet<&str> = BTreeSet::new();
     for (k, t) in toks.iter().enumerate() {
+        if t.kind == Tok::Punct(b'*') && toks.get(k + 1).is_some_and(|n| n.kind == Tok::Punct(b')'))
+        {
+            diags.push(
+                Diagnostic::error(code::E4208, format!("the body of template `{block}` casts to a pointer type"))
+                    .at(at(t.start, t.end))
+                    .with_hint("embedded C reaches memory only through its parameters and the motion library (paper A); take `&local` where the library asks for a pointer"),
+            );
+        }
         if t.kind != Tok::Ident {
             continue;
         }
@@ -256,9 +376,37 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
         }
         if j > 0
             && toks[j - 1].kind == Tok::Ident
-            && is_type(&body.text[toks[j - 1].start..toks[j - 1].end])
+            && is_type(&text[toks[j - 1].start..toks[j - 1].end])
         {
-            body_locals.insert(&body.text[t.start..t.end]);
+            let name = &text[t.start..t.end];
+            if j < k {
+                diags.push(
+                    Diagnostic::error(code::E4208, format!("the body of template `{block}` declares the pointer `{name}`"))
+                        .at(at(toks[j].start, t.end))
+                        .with_hint("embedded C keeps no pointers (paper A); use a value, or `&local` in a library call"),
+                );
+            } else if toks.get(k + 1).is_some_and(|n| n.kind == Tok::Punct(b'(')) {
+                diags.push(
+                    Diagnostic::error(
+                        code::E4208,
+                        format!("the body of template `{block}` declares the function `{name}`"),
+                    )
+                    .at(at(t.start, t.end))
+                    .with_hint(
+                        "a body is the statements of one function; it declares no functions",
+                    ),
+                );
+            } else if !is_abbreviation(name)
+                || is_reserved_name(name)
+                || scope.declared.contains(name)
+            {
+                diags.push(
+                    Diagnostic::error(code::E4206, format!("the body of template `{block}` declares `{name}`, which does not follow the abbreviation rules"))
+                        .at(at(t.start, t.end))
+                        .with_hint("a body local is 1 to 24 ASCII letters and digits, starting with a letter, and is none of the head's names, a C keyword or a motion-library name"),
+                );
+            }
+            body_locals.insert(name);
         }
     }
     let mut reported = BTreeSet::new();
@@ -266,7 +414,7 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
         if t.kind != Tok::Ident {
             continue;
         }
-        let name = &body.text[t.start..t.end];
+        let name = &text[t.start..t.end];
         // A member after `.` or `->` is not a free name.
         if k > 0 {
             let prev = toks[k - 1];
@@ -284,7 +432,32 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
             );
             continue;
         }
-        if C_KEYWORDS.contains(&name) || C_BASICS.contains(&name) {
+        if name == "_Pragma" {
+            diags.push(
+                Diagnostic::error(
+                    code::E4201,
+                    format!("the body of template `{block}` contains the `_Pragma` operator"),
+                )
+                .at(at(t.start, t.end))
+                .with_hint("bodies hold no preprocessor directives or pragmas"),
+            );
+            continue;
+        }
+        if name == "typedef" {
+            diags.push(
+                Diagnostic::error(
+                    code::E4208,
+                    format!("the body of template `{block}` defines a type"),
+                )
+                .at(at(t.start, t.end))
+                .with_hint("use the fixed-width C types and the motion library's structs"),
+            );
+            continue;
+        }
+        if C_KEYWORDS.contains(&name)
+            || C_BASICS.contains(&name)
+            || matches!(name, "bool" | "true" | "false")
+        {
             continue;
         }
         let called = toks.get(k + 1).is_some_and(|n| n.kind == Tok::Punct(b'('));

@@ -6,9 +6,12 @@
 //! - Parameter-template method: one `FUNC Name()`; its C function is synthesised from an XML template
 //!   (generated head + library body + generated feedback tail).
 //!
-//! Stages here: `xml` (element tree with spans) -> `template` (schema, validation) -> `tm` (slot layout).
+//! Stages here: `xml` (element tree with spans) -> `template` (schema, validation) -> `cbody` (lexical and
+//! name checks of a body) -> `ccheck` (a user template's function compiled alone) -> `tm` (slot layout).
+#![forbid(unsafe_code)]
 
 pub mod cbody;
+pub mod ccheck;
 pub mod library;
 pub mod lower;
 pub mod prelude;

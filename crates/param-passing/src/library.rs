@@ -2,7 +2,9 @@
 //! directory (`--templates DIR`), whose files replace built-ins of the same block name.
 //!
 //! Input: template files. Output: a [`Library`] of validated templates, looked up case-insensitively by block
-//! name; every problem is a diagnostic in the template file. Invariant: block names are unique in a library.
+//! name; every problem is a diagnostic in the template file. Invariant: block names are unique in a library;
+//! a template of the user directory is in the library only if its body passed the checks of [`crate::cbody`]
+//! and its function compiled alone ([`crate::ccheck`]).
 
 use crate::cbody::{self, Scope};
 use crate::template::{self, Template};
@@ -183,30 +185,73 @@ impl Library {
             .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")))
             .collect();
         paths.sort();
+        let mut added = Vec::new();
         for p in paths {
             match std::fs::read_to_string(&p) {
-                Ok(text) => self.add_text(map, &p.display().to_string(), &text, diags),
+                Ok(text) => {
+                    if let Some(block) = self.add_text(map, &p.display().to_string(), &text, diags)
+                    {
+                        added.push(block);
+                    }
+                }
                 Err(e) => diags.push(
                     Diagnostic::error(code::E9001, format!("cannot read {}: {e}", p.display()))
                         .with_hint("template files must be readable UTF-8"),
                 ),
             }
         }
+        // A user template is checked in full before it is used: its body's tokens and names, then its
+        // function compiled alone. A template that fails is dropped (its diagnostics stop the build).
+        let runtime = runtime_symbol_set();
+        let embedded: BTreeSet<String> = self.templates.iter().map(|t| t.block.clone()).collect();
+        for block in added {
+            let Some(k) = self.templates.iter().position(|t| t.block == block) else {
+                continue;
+            };
+            let t = &self.templates[k];
+            let clean = cbody::check(
+                &t.body,
+                &Self::scope(t, runtime, &embedded),
+                &t.block,
+                diags,
+            ) && crate::ccheck::compile(t, diags);
+            if !clean {
+                self.templates.remove(k);
+            }
+        }
     }
-    /// Adds one template file's text (replacing a template of the same block name).
+
+    /// What the body of `t` may refer to.
+    fn scope<'a>(
+        t: &Template,
+        runtime: &'a BTreeSet<String>,
+        embedded: &'a BTreeSet<String>,
+    ) -> Scope<'a> {
+        let mut declared: BTreeSet<String> = t.params.iter().map(|p| p.abbr.clone()).collect();
+        declared.insert("FuncNum".into());
+        declared.extend(t.locals.iter().map(|l| l.name.clone()));
+        Scope {
+            declared,
+            runtime,
+            embedded_functions: embedded,
+        }
+    }
+    /// Adds one template file's text (replacing a template of the same block name); returns the block name.
+    /// Only the schema is checked here; [`Library::add_dir`] also checks the body and compiles it.
     pub fn add_text(
         &mut self,
         map: &mut SourceMap,
         name: &str,
         text: &str,
         diags: &mut Diagnostics,
-    ) {
+    ) -> Option<String> {
         let file = map.add(name, text);
-        if let Some(t) = template::load(file, text, diags) {
-            self.templates
-                .retain(|old| !old.block.eq_ignore_ascii_case(&t.block));
-            self.templates.push(t);
-        }
+        let t = template::load(file, text, diags)?;
+        self.templates
+            .retain(|old| !old.block.eq_ignore_ascii_case(&t.block));
+        let block = t.block.clone();
+        self.templates.push(t);
+        Some(block)
     }
     pub fn get(&self, block: &str) -> Option<&Template> {
         self.templates
@@ -221,30 +266,124 @@ impl Library {
         let embedded: BTreeSet<String> = self.templates.iter().map(|t| t.block.clone()).collect();
         let mut clean = true;
         for t in &self.templates {
-            let mut declared: BTreeSet<String> = t.params.iter().map(|p| p.abbr.clone()).collect();
-            declared.insert("FuncNum".into());
-            declared.extend(t.locals.iter().map(|l| l.name.clone()));
-            let scope = Scope {
-                declared,
-                runtime,
-                embedded_functions: &embedded,
-            };
-            clean &= cbody::check(&t.body, &scope, &t.block, diags);
+            clean &= cbody::check(
+                &t.body,
+                &Self::scope(t, runtime, &embedded),
+                &t.block,
+                diags,
+            );
+        }
+        clean
+    }
+
+    /// Compiles every template's function alone (see [`crate::ccheck`]); the test of the built-in templates.
+    pub fn compile_all(&self, diags: &mut Diagnostics) -> bool {
+        let mut clean = true;
+        for t in &self.templates {
+            clean &= crate::ccheck::compile(t, diags);
         }
         clean
     }
 }
 
-/// The identifiers a C header declares (functions, types, macros): what template bodies may call.
+/// The identifiers a C header declares at file scope: macro names (`#define NAME`), typedef names, struct
+/// tags and function names. Comments, `#include` lines, parameter names and members are not declarations;
+/// `#ifdef __cplusplus` blocks are skipped.
 pub fn header_symbols(header: &str) -> BTreeSet<String> {
-    let (toks, _) = cbody::tokens(header);
-    toks.iter()
-        .filter(|t| t.kind == cbody::Tok::Ident)
-        .map(|t| header[t.start..t.end].to_string())
-        .collect()
+    let mut out = BTreeSet::new();
+    let mut code = String::with_capacity(header.len());
+    let mut skip_depth = 0usize;
+    for line in header.lines() {
+        let t = line.trim_start();
+        if let Some(d) = t.strip_prefix('#') {
+            let d = d.trim_start();
+            if skip_depth > 0 {
+                if d.starts_with("if") {
+                    skip_depth += 1;
+                } else if d.starts_with("endif") {
+                    skip_depth -= 1;
+                }
+            } else if d.starts_with("ifdef __cplusplus") {
+                skip_depth = 1;
+            } else if let Some(rest) = d.strip_prefix("define") {
+                let name: String = rest
+                    .trim_start()
+                    .chars()
+                    .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                    .collect();
+                if !name.is_empty() && !name.ends_with("_H") {
+                    out.insert(name);
+                }
+            }
+            code.push('\n');
+            continue;
+        }
+        if skip_depth == 0 {
+            code.push_str(line);
+        }
+        code.push('\n');
+    }
+    let (toks, _) = cbody::tokens(&code);
+    let text = |t: &cbody::Token| &code[t.start..t.end];
+    let (mut braces, mut parens) = (0usize, 0usize);
+    let mut in_typedef = false;
+    for (k, t) in toks.iter().enumerate() {
+        match t.kind {
+            cbody::Tok::Punct(b'{') => braces += 1,
+            cbody::Tok::Punct(b'}') => braces = braces.saturating_sub(1),
+            cbody::Tok::Punct(b'(') => parens += 1,
+            cbody::Tok::Punct(b')') => parens = parens.saturating_sub(1),
+            cbody::Tok::Punct(b';') if braces == 0 && parens == 0 => {
+                if in_typedef && k > 0 && toks[k - 1].kind == cbody::Tok::Ident {
+                    out.insert(text(&toks[k - 1]).to_string());
+                }
+                in_typedef = false;
+            }
+            cbody::Tok::Ident if braces == 0 && parens == 0 => {
+                let name = text(t);
+                if name == "typedef" {
+                    in_typedef = true;
+                } else if (k > 0 && text(&toks[k - 1]) == "struct")
+                    || (toks
+                        .get(k + 1)
+                        .is_some_and(|n| n.kind == cbody::Tok::Punct(b'('))
+                        && !crate::template::C_KEYWORDS.contains(&name))
+                {
+                    // A struct tag, or a function's name.
+                    out.insert(name.to_string());
+                }
+            }
+            _ => {}
+        }
+    }
+    out
 }
 
-/// The symbols template bodies may use: the motion library's header and the runtime's engine accessor.
+/// The complete struct types of the motion library's header (`MC_MoveAbsolute_C` ...): with the
+/// fixed-width scalar types, the only C types a template `<local>` may have.
+pub fn header_struct_types() -> &'static BTreeSet<String> {
+    static TYPES: std::sync::OnceLock<BTreeSet<String>> = std::sync::OnceLock::new();
+    TYPES.get_or_init(|| {
+        let mut out = BTreeSet::new();
+        for line in MOTION_HEADER.lines() {
+            if let Some(rest) = line.strip_prefix("typedef struct ") {
+                if let Some(name) = rest.strip_suffix(" {") {
+                    out.insert(name.trim().to_string());
+                }
+            }
+        }
+        out
+    })
+}
+
+/// [`runtime_symbols`], computed once.
+pub fn runtime_symbol_set() -> &'static BTreeSet<String> {
+    static SET: std::sync::OnceLock<BTreeSet<String>> = std::sync::OnceLock::new();
+    SET.get_or_init(runtime_symbols)
+}
+
+/// The symbols template bodies may use: the motion library header's declarations and the runtime's
+/// engine accessor.
 pub fn runtime_symbols() -> BTreeSet<String> {
     let mut s = header_symbols(MOTION_HEADER);
     s.insert("ladderc_motion_engine".into());
@@ -253,3 +392,38 @@ pub fn runtime_symbols() -> BTreeSet<String> {
 
 /// The motion library's C header (generated by cbindgen, committed in crates/motion-lib/include).
 pub const MOTION_HEADER: &str = include_str!("../../motion-lib/include/motion_lib.h");
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn header_symbols_are_declarations_only() {
+        let s = runtime_symbols();
+        for name in [
+            "mc_move_absolute",
+            "MC_MoveAbsolute_C",
+            "McEngine",
+            "MC_ABORTING",
+            "ladderc_motion_engine",
+        ] {
+            assert!(s.contains(name), "{name}");
+        }
+        // Included headers, directive words, parameter names and members are not symbols a body may use.
+        for name in [
+            "stdlib",
+            "include",
+            "define",
+            "ifndef",
+            "system",
+            "engine",
+            "Execute",
+            "MOTION_LIB_H",
+            "extern",
+        ] {
+            assert!(!s.contains(name), "{name}");
+        }
+        assert!(header_struct_types().contains("MC_MoveAbsolute_C"));
+        assert!(!header_struct_types().contains("McEngine"));
+    }
+}

@@ -108,6 +108,7 @@ pub fn function_c(t: &Template, layout: &TmLayout) -> String {
     for p in t.inputs() {
         let _ = writeln!(c, "    (void){};", p.abbr);
     }
+    let _ = writeln!(c, "    (void)FuncNum;");
     let _ = writeln!(c, "}}");
     let _ = writeln!(c, "#endif /* {g} */");
     c

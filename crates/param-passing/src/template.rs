@@ -164,6 +164,34 @@ pub struct CText {
     pub span: Span,
     /// `span.start + i` is the file offset of `text[i]` (a CDATA section).
     pub verbatim: bool,
+    /// The runs the text was joined from: (offset in `text`, offset in the file, bytes of the file, verbatim).
+    pub pieces: Vec<(usize, usize, usize, bool)>,
+}
+
+impl CText {
+    /// The file span of `text[start..end]`: exact inside verbatim runs; a whole entity reference otherwise.
+    pub fn span_of(&self, start: usize, end: usize) -> Span {
+        let file = self.span.file;
+        let locate = |at: usize, is_end: bool| -> Option<usize> {
+            let k = self
+                .pieces
+                .iter()
+                .rposition(|&(t, ..)| if is_end { t < at } else { t <= at })?;
+            let (t, f, len, verbatim) = self.pieces[k];
+            Some(if verbatim {
+                f + (at - t).min(len)
+            } else if is_end {
+                f + len
+            } else {
+                f
+            })
+        };
+        match (locate(start, false), locate(end.max(start), true)) {
+            (Some(s), Some(e)) if e >= s => Span::new(file, s, e),
+            (Some(s), _) => Span::new(file, s, s),
+            _ => self.span,
+        }
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -217,6 +245,127 @@ pub fn is_c_identifier(s: &str) -> bool {
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
+/// The longest abbreviation (the head's local adds `_` and the call number; C99 keeps 63 characters).
+pub const MAX_ABBR_LEN: usize = 24;
+
+/// Paper A's abbreviation rule, as this schema fixes it: 1 to [`MAX_ABBR_LEN`] ASCII letters and digits,
+/// starting with a letter. No `_` (the head's locals are `abbr_<call number>` and every name the generator
+/// or the runtime defines contains `_`, so no abbreviation can meet them), no `$`, no other character.
+/// Template locals and the locals a body declares follow the same rule.
+pub fn is_abbreviation(s: &str) -> bool {
+    (1..=MAX_ABBR_LEN).contains(&s.len())
+        && s.as_bytes()[0].is_ascii_alphabetic()
+        && s.bytes().all(|b| b.is_ascii_alphanumeric())
+}
+
+/// Names no abbreviation or local may take: C keywords, the head's `FuncNum`, the method's `self`, the
+/// names a body may use from C and the motion library.
+pub fn is_reserved_name(s: &str) -> bool {
+    C_KEYWORDS.contains(&s)
+        || matches!(
+            s,
+            "FuncNum" | "self" | "main" | "bool" | "true" | "false" | "NULL"
+        )
+        || crate::cbody::C_BASICS.contains(&s)
+        || crate::library::runtime_symbol_set().contains(s)
+}
+
+/// The scalar C types a `<local>` may have (the motion library's block structs are the rest of the list).
+pub const LOCAL_C_SCALARS: &[&str] = &[
+    "uint8_t", "int8_t", "uint16_t", "int16_t", "uint32_t", "int32_t", "uint64_t", "int64_t",
+    "float", "double", "bool",
+];
+
+/// Whether `ctype` is on the closed list of `<local>` C types.
+pub fn is_local_c_type(ctype: &str) -> bool {
+    LOCAL_C_SCALARS.contains(&ctype) || crate::library::header_struct_types().contains(ctype)
+}
+
+/// An IEC 61131-3 identifier as block and parameter names must be: an ASCII letter, then letters, digits
+/// and single underscores, not ending in `_`, at most 64 characters.
+pub fn is_iec_identifier(s: &str) -> bool {
+    let b = s.as_bytes();
+    (1..=64).contains(&b.len())
+        && b[0].is_ascii_alphabetic()
+        && b.iter().all(|c| c.is_ascii_alphanumeric() || *c == b'_')
+        && !s.contains("__")
+        && !s.ends_with('_')
+}
+
+/// Why a block name cannot name a C function (the IL method defines `void <name>(void)` with external
+/// linkage, the template method `<name>_<n>`), or `None` when it can.
+fn block_name_problem(name: &str) -> Option<&'static str> {
+    let lower = name.to_ascii_lowercase();
+    if !is_iec_identifier(name) {
+        Some("an IEC identifier (an ASCII letter, then letters, digits and single `_`)")
+    } else if !name.bytes().any(|b| b.is_ascii_uppercase()) {
+        // Every C library function is lower case: a name with an upper-case letter cannot replace one.
+        Some("a name with at least one upper-case letter (C library functions are all lower case)")
+    } else if lower.starts_with("ladderc")
+        || lower.starts_with("iec_")
+        || C_KEYWORDS.contains(&name)
+    {
+        Some("a name outside the generator's reserved `ladderc`/`IEC_` prefixes")
+    } else if crate::library::runtime_symbol_set().iter().any(|r| {
+        // C names are case-sensitive: `MC_Halt` does not meet the library's `mc_halt`.
+        r == name
+            || r.strip_prefix(name)
+                .and_then(|rest| rest.strip_prefix('_'))
+                .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+    }) {
+        Some("a name that no motion-library symbol has (the C function would clash with it)")
+    } else {
+        None
+    }
+}
+
+/// Whether `value` is one IEC literal of `class` (the `default` of an optional input): it is pasted into the
+/// block's IL declaration, so nothing else may pass.
+fn is_default_literal(value: &str, class: TypeClass) -> bool {
+    let v = value.trim();
+    let integer = |v: &str| -> Option<i128> {
+        let digits = v.strip_prefix(['+', '-']).unwrap_or(v);
+        if digits.is_empty()
+            || !digits.bytes().all(|b| b.is_ascii_digit() || b == b'_')
+            || digits.starts_with('_')
+        {
+            return None;
+        }
+        let n: i128 = digits.replace('_', "").parse().ok()?;
+        Some(if v.starts_with('-') { -n } else { n })
+    };
+    match class {
+        TypeClass::Bool => matches!(
+            v.to_ascii_uppercase().as_str(),
+            "TRUE" | "FALSE" | "0" | "1"
+        ),
+        TypeClass::Byte => {
+            integer(v).is_some_and(|n| (-128..=255).contains(&n))
+                || crate::prelude::ENUM_CONSTANTS
+                    .iter()
+                    .any(|(c, _)| c.eq_ignore_ascii_case(v))
+        }
+        TypeClass::Word => integer(v).is_some_and(|n| (-32768..=65535).contains(&n)),
+        TypeClass::Dword => {
+            integer(v).is_some_and(|n| (-(1i128 << 31)..(1i128 << 32)).contains(&n))
+        }
+        TypeClass::Lword => integer(v).is_some_and(|n| (0..(1i128 << 64)).contains(&n)),
+        TypeClass::Real | TypeClass::Lreal => {
+            let body = v.strip_prefix(['+', '-']).unwrap_or(v);
+            !body.is_empty()
+                && body.as_bytes()[0].is_ascii_digit()
+                && body.bytes().all(|b| {
+                    b.is_ascii_digit() || matches!(b, b'.' | b'e' | b'E' | b'+' | b'-' | b'_')
+                })
+                && body
+                    .replace('_', "")
+                    .parse::<f64>()
+                    .is_ok_and(f64::is_finite)
+        }
+        TypeClass::Struct => false,
+    }
+}
+
 fn need_attr<'a>(el: &'a Element, name: &str, diags: &mut Diagnostics) -> Option<&'a xml::Attr> {
     let a = el.attr(name);
     if a.is_none() {
@@ -232,6 +381,17 @@ fn need_attr<'a>(el: &'a Element, name: &str, diags: &mut Diagnostics) -> Option
         );
     }
     a
+}
+
+fn abbreviation_error(attr: &xml::Attr, what: &str) -> Diagnostic {
+    Diagnostic::error(
+        code::E4206,
+        format!("{what} `{}` does not follow the abbreviation rules", attr.value.escape_debug()),
+    )
+    .at(attr.span)
+    .with_hint(format!(
+        "1 to {MAX_ABBR_LEN} ASCII letters and digits, starting with a letter (no `_`, no `$`); not a C keyword, `FuncNum`, `self` or a motion-library name"
+    ))
 }
 
 fn bad_value(attr: &xml::Attr, expected: &str) -> Diagnostic {
@@ -266,7 +426,22 @@ pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Templat
         return None;
     }
     let errors_before = diags.error_count();
-    let block = need_attr(&root, "name", diags).map(|a| a.value.clone());
+    let block = need_attr(&root, "name", diags).and_then(|a| match block_name_problem(&a.value) {
+        None => Some(a.value.clone()),
+        Some(want) => {
+            diags.push(
+                Diagnostic::error(
+                    code::E4207,
+                    format!("block name `{}` is not allowed", a.value.escape_debug()),
+                )
+                .at(a.span)
+                .with_hint(format!(
+                    "use {want}, such as `MC_MoveAbsolute` or `ACME_Press`"
+                )),
+            );
+            None
+        }
+    });
     let func_num = need_attr(&root, "funcNum", diags).and_then(|a| match a.value.parse::<u32>() {
         Ok(n) => Some(n),
         Err(_) => {
@@ -320,8 +495,37 @@ pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Templat
         let (Some(n), Some(t)) = (need_attr(l, "name", diags), need_attr(l, "ctype", diags)) else {
             continue;
         };
-        if !is_c_identifier(&n.value) || C_KEYWORDS.contains(&n.value.as_str()) {
-            diags.push(bad_value(n, "a C identifier that is not a C keyword"));
+        if !is_abbreviation(&n.value) || is_reserved_name(&n.value) {
+            diags.push(abbreviation_error(n, "local"));
+            continue;
+        }
+        if !is_local_c_type(&t.value) {
+            diags.push(
+                Diagnostic::error(
+                    code::E4200,
+                    format!(
+                        "`{}` is not a C type a template local may have",
+                        t.value.escape_debug()
+                    ),
+                )
+                .at(t.span)
+                .with_hint(format!(
+                    "use one of {} or a block struct of motion_lib.h (`MC_MoveAbsolute_C` ...)",
+                    LOCAL_C_SCALARS.join(", ")
+                )),
+            );
+            continue;
+        }
+        if let Some(prev) = locals.iter().find(|q: &&Local| q.name == n.value) {
+            diags.push(
+                Diagnostic::error(
+                    code::E4005,
+                    format!("local `{}` is declared twice", n.value),
+                )
+                .at(n.span)
+                .with_label(prev.span, "first declared here")
+                .with_hint("remove one of the declarations"),
+            );
             continue;
         }
         locals.push(Local {
@@ -356,18 +560,26 @@ pub fn load(file: FileId, text: &str, diags: &mut Diagnostics) -> Option<Templat
 }
 
 fn ctext(el: &Element) -> Option<CText> {
-    match el.significant_segment() {
-        Some(seg) => Some(CText {
-            text: seg.text.clone(),
-            span: Span::new(el.span.file, seg.offset, seg.offset + seg.text.len()),
-            verbatim: seg.verbatim,
-        }),
-        None => Some(CText {
-            text: el.text(),
-            span: el.span,
-            verbatim: false,
-        }),
+    let mut text = String::new();
+    let mut pieces = Vec::new();
+    for seg in &el.segments {
+        pieces.push((text.len(), seg.offset, seg.src_len, seg.verbatim));
+        text.push_str(&seg.text);
     }
+    let verbatim = match el.significant_segment() {
+        Some(seg) => seg.verbatim && el.segments.len() == 1,
+        None => false,
+    };
+    let span = match (el.segments.first(), el.segments.last()) {
+        (Some(a), Some(b)) => Span::new(el.span.file, a.offset, b.offset + b.src_len),
+        _ => el.span,
+    };
+    Some(CText {
+        text,
+        span,
+        verbatim,
+        pieces,
+    })
 }
 
 fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
@@ -438,11 +650,19 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
         );
         return None;
     }
-    if !is_c_identifier(&abbr.value) || C_KEYWORDS.contains(&abbr.value.as_str()) {
-        diags.push(bad_value(
-            abbr,
-            "a C identifier that is not a C keyword (it names the C local)",
-        ));
+    if !is_iec_identifier(&name.value) {
+        diags.push(
+            Diagnostic::error(
+                code::E4207,
+                format!("parameter name `{}` is not an IEC identifier", name.value.escape_debug()),
+            )
+            .at(name.span)
+            .with_hint("programs bind it by name: use an ASCII letter, then letters, digits and single `_`"),
+        );
+        return None;
+    }
+    if !is_abbreviation(&abbr.value) || is_reserved_name(&abbr.value) {
+        diags.push(abbreviation_error(abbr, "abbreviation"));
         return None;
     }
     if c_type_of(&ty.value, class_v).is_none() {
@@ -468,7 +688,22 @@ fn load_param(p: &Element, diags: &mut Diagnostics) -> Option<Param> {
             return None;
         }
     };
-    let default = p.attr("default").map(|a| a.value.clone());
+    let default = p.attr("default").map(|a| a.value.trim().to_string());
+    if let (Some(d), Some(a)) = (&default, p.attr("default")) {
+        if !matches!(direction, Direction::Output | Direction::State)
+            && !is_default_literal(d, class_v)
+        {
+            diags.push(
+                Diagnostic::error(
+                    code::E4209,
+                    format!("default `{}` is not a literal of class `{}`", a.value.escape_debug(), class_attr.value),
+                )
+                .at(a.span)
+                .with_hint("bool: TRUE/FALSE/0/1; integer classes: a decimal integer in range (byte also an mc* constant); real, lreal: a decimal number; struct: no default"),
+            );
+            return None;
+        }
+    }
     if matches!(direction, Direction::Output | Direction::State) && (required || default.is_some())
     {
         let a = p.attr("required").or(p.attr("default")).unwrap();

@@ -31,6 +31,8 @@ pub struct Element {
 pub struct TextSegment {
     pub text: String,
     pub offset: usize,
+    /// Bytes of the file the run came from (`text.len()` for a verbatim run; the entity reference's length).
+    pub src_len: usize,
     pub verbatim: bool,
 }
 
@@ -40,10 +42,6 @@ impl Element {
     }
     pub fn children_named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Element> + 'a {
         self.children.iter().filter(move |c| c.name == name)
-    }
-    /// All character data, concatenated.
-    pub fn text(&self) -> String {
-        self.segments.iter().map(|s| s.text.as_str()).collect()
     }
     /// The one segment that is not blank, if there is exactly one (a body written as one CDATA section).
     pub fn significant_segment(&self) -> Option<&TextSegment> {
@@ -88,7 +86,8 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Box<Diagnostic>> {
         let after = reader.buffer_position() as usize + bom;
         match ev {
             Event::Start(e) | Event::Empty(e) => {
-                let is_empty = after >= 2 && &text[after - 2..after] == "/>";
+                // Bytes, not a `str` slice: `after - 2` may fall inside a multi-byte character.
+                let is_empty = after >= 2 && text.as_bytes().get(after - 2..after) == Some(b"/>");
                 let mut attrs = Vec::new();
                 for a in e.attributes() {
                     let a = a.map_err(|err| malformed(file, before, after - before, err))?;
@@ -136,8 +135,10 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Box<Diagnostic>> {
                     let s = t
                         .decode()
                         .map_err(|err| malformed(file, before, after - before, err))?;
+                    let text = s.into_owned();
                     el.segments.push(TextSegment {
-                        text: s.into_owned(),
+                        src_len: text.len(),
+                        text,
                         offset: before,
                         verbatim: true,
                     });
@@ -147,6 +148,7 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Box<Diagnostic>> {
                 if let Some(el) = stack.last_mut() {
                     let s = String::from_utf8_lossy(t.as_ref()).into_owned();
                     el.segments.push(TextSegment {
+                        src_len: s.len(),
                         text: s,
                         offset: before + "<![CDATA[".len(),
                         verbatim: true,
@@ -191,6 +193,7 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Box<Diagnostic>> {
                     el.segments.push(TextSegment {
                         text: ch,
                         offset: before,
+                        src_len: after - before,
                         verbatim: false,
                     });
                 }

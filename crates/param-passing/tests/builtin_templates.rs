@@ -17,8 +17,13 @@ fn builtin() -> (SourceMap, Library, Diagnostics) {
 #[test]
 fn every_builtin_template_loads_and_its_body_checks_clean() {
     let (map, lib, mut diags) = builtin();
+    assert!(
+        diags.is_empty(),
+        "{}",
+        render(&map, &diags.clone().into_vec(), MessageFormat::Short)
+    );
     assert_eq!(lib.templates().len(), library::BUILTIN.len());
-    assert!(lib.check_bodies(&library::runtime_symbols(), &mut diags));
+    assert!(lib.check_bodies(library::runtime_symbol_set(), &mut diags));
     assert!(
         diags.is_empty(),
         "{}",
@@ -93,5 +98,18 @@ fn static_library_compiles_warning_free_with_the_real_header() {
         "{}\n{}",
         String::from_utf8_lossy(&out.stderr),
         c
+    );
+}
+
+#[test]
+fn every_builtin_template_function_compiles_alone_with_werror() {
+    // The load-time check users' templates get (E4210): the function of each template, compiled alone with
+    // `cc -std=c99 -Wall -Wextra -Werror -fsyntax-only` against motion_lib.h.
+    let (map, lib, mut diags) = builtin();
+    assert!(lib.compile_all(&mut diags));
+    assert!(
+        diags.is_empty(),
+        "{}",
+        render(&map, &diags.into_vec(), MessageFormat::Short)
     );
 }

@@ -13,7 +13,7 @@ fn check(body: &str) -> String {
     <param name="Position" abbr="Pos" direction="input" class="lreal" type="LREAL" required="true"/>
     <param name="Done" abbr="Dn" direction="output" class="bool" type="BOOL"/>
   </parameters>
-  <local name="cmd" ctype="mc_cmd"/>
+  <local name="cmd" ctype="MC_MoveAbsolute_C"/>
   <body><![CDATA[{body}]]></body>
 </blockTemplate>"#
     );
@@ -66,7 +66,7 @@ fn paper_a_rules_static_storage_and_calls_of_embedded_functions() {
 
 #[test]
 fn locals_declared_in_the_body_are_known() {
-    assert_eq!(check("for (int i = 0; i < 3; i++) { double *p = 0; uint8_t b = (uint8_t)i; (void)p; (void)b; }"), "");
+    assert_eq!(check("for (int i = 0; i < 3; i++) { double p = 0.0; uint8_t b = (uint8_t)i; (void)p; (void)b; }"), "");
 }
 
 #[test]

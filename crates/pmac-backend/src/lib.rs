@@ -10,6 +10,7 @@
 //! Invariants: nothing here panics on bad input; invalid input gives a [`diagnostics::Diagnostic`] with an
 //! `E7xxx` code. No real controller was available while this was written: the protocol follows the manuals and
 //! is tested against a loopback simulator.
+#![forbid(unsafe_code)]
 
 pub mod compare;
 pub mod error;

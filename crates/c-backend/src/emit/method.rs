@@ -211,7 +211,7 @@ impl Gen<'_> {
                     }
                 }
             }
-            c.push_str("    (void)self;\n}\n\n");
+            c.push_str("    (void)FuncNum;\n    (void)self;\n}\n\n");
         }
     }
 

@@ -1,0 +1,10 @@
+//! cargo-fuzz target: the drive_script front end through `ladderc::fuzzing::run` (spans on character boundaries,
+//! bounded diagnostics output, no panic).
+#![no_main]
+
+use ladderc::fuzzing::{run, FrontEnd};
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    run(FrontEnd::DriveScript, data);
+});
