@@ -6,11 +6,11 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 c="$root/fuzz/corpus"
 mkdir -p "$c/il" "$c/st" "$c/xml" "$c/template" "$c/drive_script" "$c/drive_image"
-for f in "$root"/examples/*/*.il "$root"/crates/ladderc/tests/motion/*.il "$root"/crates/il-frontend/tests/samples/*.il; do
+for f in "$root"/examples/*/*.il "$root"/tests/tests/motion/*.il "$root"/crates/il-frontend/tests/samples/*.il; do
     cp "$f" "$c/il/$(basename "$(dirname "$f")")_$(basename "$f")"
 done
-for f in "$root"/crates/ladder-compiler/tests/fixtures/*.xml "$root"/crates/ladderc/tests/fixtures/*.xml \
-    "$root"/crates/ladderc/tests/fixtures/sfc/*.xml "$root"/crates/ladderc/tests/motion/*.xml; do
+for f in "$root"/crates/ladder-compiler/tests/fixtures/*.xml "$root"/tests/tests/fixtures/*.xml \
+    "$root"/tests/tests/fixtures/sfc/*.xml "$root"/tests/tests/motion/*.xml; do
     cp "$f" "$c/xml/$(basename "$(dirname "$f")")_$(basename "$f")"
 done
 cp "$root"/templates/*.xml "$c/template/"

@@ -42,9 +42,9 @@ fn files(dirs: &[&str], ext: &str) -> Vec<Vec<u8>> {
 
 const XML_DIRS: &[&str] = &[
     "crates/ladder-compiler/tests/fixtures",
-    "crates/ladderc/tests/fixtures",
-    "crates/ladderc/tests/fixtures/sfc",
-    "crates/ladderc/tests/motion",
+    "tests/tests/fixtures",
+    "tests/tests/fixtures/sfc",
+    "tests/tests/motion",
 ];
 
 /// The ST bodies of the XML fixtures (`<ST>` ... CDATA or text ... `</ST>`).
@@ -76,7 +76,7 @@ fn seeds(fe: FrontEnd) -> Vec<Vec<u8>> {
                 "examples/counter",
                 "examples/motion",
                 "examples/paper-b",
-                "crates/ladderc/tests/motion",
+                "tests/tests/motion",
                 "crates/il-frontend/tests/samples",
             ],
             "il",
