@@ -16,7 +16,7 @@ mod common;
 
 use ladderc::fuzzing::{self, FrontEnd};
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 fn repo() -> PathBuf {

@@ -171,13 +171,19 @@ impl MotionRuntime {
              static void ladderc_motion_shutdown(void) {\n    mc_engine_destroy(ladderc_engine);\n    ladderc_engine = NULL;\n}\n\n\
              static void ladderc_motion_fail(const char *what) {\n    fprintf(stderr, \"motion: the engine refused %s\\n\", what);\n    ladderc_motion_shutdown();\n    exit(3);\n}\n\n",
         );
-        c.push_str("static void ladderc_motion_sample(void) {\n    uint32_t i;\n");
-        let _ = writeln!(c, "    for (i = 0; i < {}u; i++) {{", self.axes.len());
-        c.push_str(
-            "        ladderc_axis_position[i] = mc_axis_set_position(ladderc_engine, i);\n\
-             \x20       ladderc_axis_velocity[i] = mc_axis_set_velocity(ladderc_engine, i);\n\
-             \x20       ladderc_axis_acceleration[i] = mc_axis_set_acceleration(ladderc_engine, i);\n    }\n",
-        );
+        c.push_str("static void ladderc_motion_sample(void) {\n");
+        // No loop over zero axes or groups: `i < 0u` fails -Wextra -Werror (-Wtype-limits).
+        if !self.axes.is_empty() || !self.groups.is_empty() {
+            c.push_str("    uint32_t i;\n");
+        }
+        if !self.axes.is_empty() {
+            let _ = writeln!(c, "    for (i = 0; i < {}u; i++) {{", self.axes.len());
+            c.push_str(
+                "        ladderc_axis_position[i] = mc_axis_set_position(ladderc_engine, i);\n\
+                 \x20       ladderc_axis_velocity[i] = mc_axis_set_velocity(ladderc_engine, i);\n\
+                 \x20       ladderc_axis_acceleration[i] = mc_axis_set_acceleration(ladderc_engine, i);\n    }\n",
+            );
+        }
         if !self.groups.is_empty() {
             let _ = writeln!(c, "    for (i = 0; i < {}u; i++) {{", self.groups.len());
             for (_, arr, reader) in GROUP_SIGNALS {

@@ -56,8 +56,22 @@ fn each_axis_has_three_watchable_columns() {
 
 #[test]
 fn the_runtime_compiles_with_strict_warnings() {
+    compiles_strictly(runtime());
+}
+
+/// A program that uses PLCopen blocks without any configured axis or group (the blocks then report
+/// an invalid axis): its runtime still compiles with -Wextra -Werror (no loop `i < 0u`).
+#[test]
+fn a_runtime_without_axes_compiles_with_strict_warnings() {
+    let mut rt = runtime();
+    rt.axes.clear();
+    rt.groups.clear();
+    compiles_strictly(rt);
+}
+
+fn compiles_strictly(rt: MotionRuntime) {
     let dir = tempfile::tempdir().unwrap();
-    let mut files = runtime().files();
+    let mut files = rt.files();
     files.extend(c_backend::runtime::files());
     files.push((
         "ladderc_config.h".into(),
