@@ -128,7 +128,9 @@ fn semantic_errors_in_xml_name_their_pou_network_and_local_id() {
         assert!(d["pou"].is_string(), "{d}");
     }
     let summary = lines.last().unwrap();
-    assert_eq!(summary["errors"], diags.len());
+    let errors = diags.iter().filter(|d| d["severity"] == "error").count();
+    assert_eq!(summary["errors"], errors);
+    assert_eq!(summary["warnings"], diags.len() - errors);
     assert_eq!(summary["files"], Value::Array(vec![]));
     // The short rendering shows the same context.
     let short = ladderc()

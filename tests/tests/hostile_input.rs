@@ -263,10 +263,20 @@ fn many_errors_show_the_first_fifty_per_file_and_count_the_rest() {
     );
     assert_eq!(stderr(&out).matches("error[E1001]").count(), 5000);
     let out = run(&["--message-format", "json", "check"], &[&src]);
+    let json = stderr(&out);
     assert_eq!(
-        stderr(&out).lines().count(),
+        json.lines()
+            .filter(|l| l.contains("\"kind\":\"diagnostic\""))
+            .count(),
         5000,
         "JSON shows every diagnostic"
+    );
+    assert!(
+        json.lines()
+            .last()
+            .unwrap_or("")
+            .contains("\"kind\":\"summary\""),
+        "then the summary record"
     );
 }
 

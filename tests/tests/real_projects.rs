@@ -49,7 +49,13 @@ fn runs(name: &str, cycles: u32) -> String {
 /// code among `codes`; returns the error lines.
 fn rejected(name: &str, codes: &[&str]) -> Vec<String> {
     let out = ladderc()
-        .args(["--message-format", "short", "check"])
+        .args([
+            "--message-format",
+            "short",
+            "--max-diagnostics",
+            "0",
+            "check",
+        ])
         .arg(file(name))
         .output()
         .unwrap();

@@ -79,6 +79,8 @@ fn diags(o: &Output) -> Vec<(String, String, u64)> {
     stderr(o)
         .lines()
         .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
+        // diagnostics, not the summary record
+        .filter(|v| v["kind"] != "summary")
         .map(|v| {
             (
                 v["severity"].as_str().unwrap_or("").to_string(),

@@ -1259,11 +1259,12 @@ int32_t mc_group_state(struct McEngine *engine, McIndex group);
 
 /**
  * Junction speed the BufferMode asked for at a lowered junction the group's path passed in
- * the last cycle (the limits did not allow it); 0 in every other cycle and for a bad index.
+ * the last cycle (the limits did not allow it); 0 in every other cycle, for a bad index and for a
+ * NULL, invalid or poisoned handle.
  * # Safety
  * See the module contract: pointers are NULL or valid.
  */
-double mc_group_junction_requested(struct McEngine *engine, uint32_t group);
+double mc_group_junction_requested(struct McEngine *engine, McIndex group);
 
 /**
  * Junction speed planned and reached at that lowered junction (see
@@ -1271,14 +1272,14 @@ double mc_group_junction_requested(struct McEngine *engine, uint32_t group);
  * # Safety
  * See the module contract: pointers are NULL or valid.
  */
-double mc_group_junction_reached(struct McEngine *engine, uint32_t group);
+double mc_group_junction_reached(struct McEngine *engine, McIndex group);
 
 /**
  * How many junction speeds of the group were lowered so far (0 for a bad index).
  * # Safety
  * See the module contract: pointers are NULL or valid.
  */
-uint32_t mc_group_reduction_count(struct McEngine *engine, uint32_t group);
+uint32_t mc_group_reduction_count(struct McEngine *engine, McIndex group);
 
 /**
  * Calls MC_Power once (one PLC scan).

@@ -33,7 +33,6 @@
     non_camel_case_types,
     clippy::field_reassign_with_default
 )]
-#![deny(unsafe_op_in_unsafe_fn)]
 // Safety contract of every function taking pointers: `engine` is NULL or a live handle from
 // `mc_engine_create`; `fb`/`config`/`index` are NULL or point to a valid, writable struct of the
 // declared type; arrays hold the stated number of elements. NULL pointers give an error status.
