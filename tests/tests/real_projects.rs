@@ -2,8 +2,8 @@
 //! `ladderc` binary: programs run a few cycles (C compiled with sanitizers and executed), files that
 //! need what the export does not contain (vendor library types, POINTER TO) or that are not valid
 //! IEC 61131-3 are rejected with exit 1, every error located (`file:line:col: error[CODE]`), and
-//! naming what is missing. `.st` files are Structured Text: they are read as ST once plain-text ST
-//! files are (issue #13.1); until then their tests are ignored with that reason.
+//! naming what is missing. `.st` files are Structured Text (issue #13.1): they run too, and the
+//! TwinCAT math library checks with one located E1019 per IronPLC intrinsic it calls.
 
 mod common;
 use common::ladderc;
@@ -152,43 +152,36 @@ fn st_runs(name: &str) {
 }
 
 #[test]
-#[ignore = "expected after ST-file support (#13.1, helper `streal`): .st is read as IL today"]
 fn st_spemmcra_plc() {
     st_runs("idaholab_SPEMMCRA_plc.st");
 }
 
 #[test]
-#[ignore = "expected after ST-file support (#13.1, helper `streal`): .st is read as IL today"]
 fn st_spemmcra_dnp3_microgrid() {
     st_runs("idaholab_SPEMMCRA_DNP3_Microgrid.st");
 }
 
 #[test]
-#[ignore = "expected after ST-file support (#13.1, helper `streal`): .st is read as IL today"]
 fn st_ironplc_getting_started() {
     st_runs("ironplc_getting_started.st");
 }
 
 #[test]
-#[ignore = "expected after ST-file support (#13.1, helper `streal`): .st is read as IL today"]
 fn st_ironplc_quickstart_timer() {
     st_runs("ironplc_quickstart_timer.st");
 }
 
 #[test]
-#[ignore = "expected after ST-file support (#13.1, helper `streal`): .st is read as IL today"]
 fn st_ironplc_quickstart_helloworld() {
     st_runs("ironplc_quickstart_helloworld.st");
 }
 
 #[test]
-#[ignore = "expected after ST-file support (#13.1, helper `streal`): .st is read as IL today"]
 fn st_ironplc_motor() {
     st_runs("ironplc_motor.st");
 }
 
 #[test]
-#[ignore = "expected after ST-file support (#13.1): a library; its bodies call IronPLC's own __TRUNC/__MOD intrinsics, so one located E1019 per intrinsic is the expected answer"]
 fn st_ironplc_tc2_math_library() {
     rejected("ironplc_Tc2_Math.st", &["E1019"]);
 }
