@@ -34,7 +34,7 @@ fn request(c: &Connection, id: i32, method: &str, params: Value) -> Value {
     loop {
         if let Message::Response(r) = c.receiver.recv_timeout(Duration::from_secs(60)).unwrap() {
             if r.id == RequestId::from(id) {
-                return r.result.unwrap_or(Value::Null);
+                return r.response_result.unwrap_or(Value::Null);
             }
         }
     }
