@@ -186,6 +186,16 @@ fn an_editor_session() {
     assert!(status.success(), "{status:?}");
 }
 
+/// The labels of a completion answer.
+fn labels_of(items: &Value) -> Vec<&str> {
+    items
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap())
+        .collect()
+}
+
 const MOTION: &str = "PROGRAM main\nVAR\n    mv : MC_MoveAbsolute;\n    t : TON;\nEND_VAR\n    CAL mv(\n    LD mv.\nEND_PROGRAM\n";
 
 #[test]
@@ -214,12 +224,7 @@ fn plcopen_block_inputs_in_hover_and_completion() {
         "textDocument/completion",
         json!({"textDocument": {"uri": uri}, "position": {"line": 5, "character": 11}}),
     );
-    let labels: Vec<&str> = items
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|i| i["label"].as_str().unwrap())
-        .collect();
+    let labels = labels_of(&items);
     assert!(
         labels.contains(&"Position :=") && labels.contains(&"Execute :="),
         "{labels:?}"
@@ -233,12 +238,7 @@ fn plcopen_block_inputs_in_hover_and_completion() {
         "textDocument/completion",
         json!({"textDocument": {"uri": uri}, "position": {"line": 6, "character": 10}}),
     );
-    let labels: Vec<&str> = items
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|i| i["label"].as_str().unwrap())
-        .collect();
+    let labels = labels_of(&items);
     assert!(
         labels.contains(&"Done") && labels.contains(&"Position"),
         "{labels:?}"
@@ -248,12 +248,7 @@ fn plcopen_block_inputs_in_hover_and_completion() {
         "textDocument/completion",
         json!({"textDocument": {"uri": uri}, "position": {"line": 7, "character": 0}}),
     );
-    let labels: Vec<&str> = items
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|i| i["label"].as_str().unwrap())
-        .collect();
+    let labels = labels_of(&items);
     assert!(
         labels.contains(&"mv") && labels.contains(&"t"),
         "{labels:?}"
