@@ -120,6 +120,13 @@ fn range(text: &str, start: usize, end: usize) -> Range {
     Range::new(Position::new(l0, c0), Position::new(l1, c1))
 }
 
+/// [`range`] through a line index (many ranges in one text).
+fn range_in(idx: &text::LineIndex, start: usize, end: usize) -> Range {
+    let (l0, c0) = idx.position(start);
+    let (l1, c1) = idx.position(end);
+    Range::new(Position::new(l0, c0), Position::new(l1, c1))
+}
+
 fn uri_of(path: &Path) -> Option<Uri> {
     Uri::from_str(&text::path_to_uri(path)).ok()
 }
@@ -128,12 +135,13 @@ impl Server {
     fn open(&mut self, uri: &str, content: String) -> Option<Notification> {
         let path = text::uri_to_path(uri)?;
         let a = analysis::analyze(&path, &content, self.root.as_deref());
+        let idx = text::LineIndex::new(&a.text);
         let diags = a
             .diagnostics
             .iter()
             .map(|(span, d)| {
                 let r = match span {
-                    Some(s) => range(&a.text, s.start as usize, s.end as usize),
+                    Some(s) => range_in(&idx, s.start as usize, s.end as usize),
                     None => Range::default(),
                 };
                 let mut message = d.message.clone();
@@ -285,15 +293,16 @@ impl Server {
 
 #[allow(deprecated)] // DocumentSymbol::deprecated is a required field of the type
 fn symbols(a: &Analysis) -> Vec<DocumentSymbol> {
+    let idx = text::LineIndex::new(&a.text);
     a.symbols()
         .into_iter()
         .map(|(name, kind, span, vars)| {
-            let r = range(&a.text, span.start as usize, span.end as usize);
+            let r = range_in(&idx, span.start as usize, span.end as usize);
             let children = vars
                 .into_iter()
                 .filter(|v| Some(v.span.file) == Some(span.file))
                 .map(|v| {
-                    let vr = range(&a.text, v.span.start as usize, v.span.end as usize);
+                    let vr = range_in(&idx, v.span.start as usize, v.span.end as usize);
                     DocumentSymbol {
                         name: v.name.clone(),
                         detail: Some(a.type_name(&v.ty)),

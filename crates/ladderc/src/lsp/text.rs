@@ -42,6 +42,35 @@ pub fn position(text: &str, offset: usize) -> (u32, u32) {
     (line, col)
 }
 
+/// Line starts of a text, for many position look-ups in one text (each then costs a binary search and
+/// the length of one line, not a scan from the start).
+pub struct LineIndex<'a> {
+    text: &'a str,
+    starts: Vec<usize>,
+}
+
+impl<'a> LineIndex<'a> {
+    pub fn new(text: &'a str) -> Self {
+        let mut starts = vec![0];
+        starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        LineIndex { text, starts }
+    }
+
+    /// [`position`] of `offset`, the same answer.
+    pub fn position(&self, offset: usize) -> (u32, u32) {
+        let mut offset = offset.min(self.text.len());
+        while !self.text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        let line = self.starts.partition_point(|&s| s <= offset) - 1;
+        let col = self.text[self.starts[line]..offset]
+            .chars()
+            .map(|c| c.len_utf16() as u32)
+            .sum();
+        (line as u32, col)
+    }
+}
+
 /// The path of a `file://` URI (percent-escapes decoded); `None` for other schemes.
 pub fn uri_to_path(uri: &str) -> Option<PathBuf> {
     let rest = uri.strip_prefix("file://")?;
