@@ -114,13 +114,7 @@ struct Server {
     docs: HashMap<String, Analysis>,
 }
 
-fn range(text: &str, start: usize, end: usize) -> Range {
-    let (l0, c0) = text::position(text, start);
-    let (l1, c1) = text::position(text, end);
-    Range::new(Position::new(l0, c0), Position::new(l1, c1))
-}
-
-/// [`range`] through a line index (many ranges in one text).
+/// The LSP range of a byte range, through a line index of its text.
 fn range_in(idx: &text::LineIndex, start: usize, end: usize) -> Range {
     let (l0, c0) = idx.position(start);
     let (l1, c1) = idx.position(end);
@@ -245,7 +239,8 @@ impl Server {
                     .and_then(|p| {
                         let (a, off) = self.at(&p.text_document_position_params)?;
                         let (path, span) = a.definition(off)?;
-                        let r = range(a.file_text(span), span.start as usize, span.end as usize);
+                        let idx = text::LineIndex::new(a.file_text(span));
+                        let r = range_in(&idx, span.start as usize, span.end as usize);
                         Some(GotoDefinitionResponse::Scalar(Location::new(
                             uri_of(&path)?,
                             r,

@@ -27,19 +27,9 @@ pub fn offset(text: &str, line: u32, character: u32) -> usize {
 }
 
 /// LSP position (line, UTF-16 column) of a byte offset (clamped to the text, and back to a boundary).
+/// For many look-ups in one text, build one [`LineIndex`].
 pub fn position(text: &str, offset: usize) -> (u32, u32) {
-    let mut offset = offset.min(text.len());
-    while !text.is_char_boundary(offset) {
-        offset -= 1;
-    }
-    let before = &text[..offset];
-    let line = before.matches('\n').count() as u32;
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    let col = text[line_start..offset]
-        .chars()
-        .map(|c| c.len_utf16() as u32)
-        .sum();
-    (line, col)
+    LineIndex::new(text).position(offset)
 }
 
 /// Line starts of a text, for many position look-ups in one text (each then costs a binary search and
