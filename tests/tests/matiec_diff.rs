@@ -1,0 +1,681 @@
+//! Cycle-by-cycle differential test between ladderc and matiec (beremiz/matiec's iec2c).
+//!
+//! Input: the programs of `tests/fixtures/matiec_diff/` (IL and ST, each with a CONFIGURATION whose one
+//! task runs every tick; the first line `(* matiec-diff: cycles=N *)` gives the number of cycles), and,
+//! from `MATIEC_DIFF_FILES` (a `:`-separated list), programs the suite has never seen.
+//! For each program matiec's side is a trace `NAME.matiec.csv` (header `cycle,time_ns,NAME:TYPE,...`,
+//! one row per cycle, values in a canonical form: integers, `%.9g`/`%.17g` reals, TIME in ns, strings
+//! CSV-quoted). With `MATIEC_BIN` (iec2c) and `MATIEC_LIB` (matiec's `lib/` or `lib/C`) set, the trace
+//! is made live: iec2c compiles the program, a generated C main runs `config_init__` and then N times
+//! `config_run__(k)` with `__CURRENT_TIME = k * ticktime` (matiec's tick time, from VARIABLES.csv), and
+//! prints every program variable (and every FB member) after each cycle. The live trace must equal the
+//! recorded one (`MATIEC_DIFF_RECORD=1` rewrites it). Without matiec (CI) the recorded traces are used,
+//! so ladderc is still compared with matiec on every run.
+//! ladderc's side is `ladderc run PROGRAM --cycles N --cycle-ms TICK --trace FILE` (cycle k runs at
+//! k * TICK, like matiec's side). Columns are matched by name case-insensitively (`INST.VAR[.MEMBER]`);
+//! every program variable must be in both traces, FB members are compared where both have them.
+//! Output: per program, the columns compared and, for each column that differs, the first differing
+//! cycle with both values. Invariant: a fixture's set of differing columns equals its entry in
+//! [`KNOWN`] exactly, each with the IEC 61131-3 clause that ladderc follows and matiec does not.
+//! Any other difference fails the test.
+
+mod common;
+use common::{assert_ok, ladderc, repo_root};
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// A disagreement that is known and explained: the columns of `program` that differ, and why ladderc is
+/// right.
+struct Known {
+    program: &'static str,
+    columns: &'static [&'static str],
+    reason: &'static str,
+}
+
+/// Every known disagreement. Each reason cites the clause of IEC 61131-3 (3rd edition, 2013) that ladderc
+/// follows; matiec's library (lib/counter.txt, lib/C/iec_std_lib.h) does otherwise.
+const KNOWN: &[Known] = &[
+    Known {
+        program: "counter_limits",
+        columns: &["INST.UP.CV", "INST.UPDOWN.CV", "INST.UPDOWN.QD", "INST.DOWN.CV"],
+        reason: "IEC 61131-3 ed. 3, 6.6.3.5.3 Table 45 (counters): CTU counts up while CV < PVmax (the \
+                 largest value of CV's type), CTD counts down while CV > PVmin, CTUD likewise; PV only sets \
+                 Q/QU. matiec's counter.txt stops CTU at CV < PV and CTUD at CV < PV (up) and CV > 0 \
+                 (down), and CTD at CV > PVmin... only for CTD it follows the standard. ladderc counts \
+                 to the type's limits and saturates there.",
+    },
+    Known {
+        program: "time_arith",
+        columns: &["INST.SCALED", "INST.DIVIDED"],
+        reason: "IEC 61131-3 ed. 3, 6.6.2.5.12 Table 30 (MUL_TIME/DIV_TIME, MULTIME/DIVTIME): the result is a \
+                 duration, exact to its resolution. matiec multiplies and divides through a double \
+                 (__time_mul/__time_div: seconds and nanoseconds scaled separately, then truncated), \
+                 which loses nanoseconds; ladderc computes in integer nanoseconds.",
+    },
+];
+
+/// Programs of the fixture folder, sorted.
+fn fixtures() -> Vec<PathBuf> {
+    let dir = repo_root().join("tests/tests/fixtures/matiec_diff");
+    let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.unwrap().path())
+        .filter(|p| matches!(p.extension().and_then(|e| e.to_str()), Some("il" | "st")))
+        .collect();
+    v.sort();
+    v
+}
+
+/// The number of cycles a program asks for (`(* matiec-diff: cycles=N *)` on its first line).
+fn cycles_of(src: &str) -> u64 {
+    src.lines()
+        .next()
+        .and_then(|l| l.split("cycles=").nth(1))
+        .and_then(|r| {
+            r.split(|c: char| !c.is_ascii_digit())
+                .next()
+                .and_then(|n| n.parse().ok())
+        })
+        .unwrap_or(100)
+}
+
+/// matiec's tools, when the environment names them.
+struct Matiec {
+    iec2c: PathBuf,
+    /// lib/ (ieclib.txt, for iec2c -I)
+    lib: PathBuf,
+    /// lib/C (the C headers)
+    lib_c: PathBuf,
+}
+
+fn matiec() -> Option<Matiec> {
+    let bin = std::env::var_os("MATIEC_BIN")?;
+    let lib = PathBuf::from(std::env::var_os("MATIEC_LIB").expect(
+        "MATIEC_BIN is set, so MATIEC_LIB must name matiec's lib/ (or lib/C) folder as well",
+    ));
+    let (lib, lib_c) = if lib.join("ieclib.txt").is_file() {
+        (lib.clone(), lib.join("C"))
+    } else {
+        (lib.parent().expect("lib/C has a parent").to_path_buf(), lib)
+    };
+    assert!(
+        lib.join("ieclib.txt").is_file() && lib_c.join("iec_std_lib.h").is_file(),
+        "MATIEC_LIB: no ieclib.txt / C/iec_std_lib.h under {}",
+        lib.display()
+    );
+    Some(Matiec {
+        iec2c: bin.into(),
+        lib,
+        lib_c,
+    })
+}
+
+/// One variable of matiec's VARIABLES.csv: IEC path (`CFG.RES.INST.X.Y`) and type.
+struct MVar {
+    path: String,
+    ty: String,
+}
+
+/// The variables worth printing (elementary ones, of program instances) and the tick time in ns.
+fn parse_variables_csv(text: &str) -> (Vec<(String, String)>, Vec<MVar>, u64) {
+    let mut programs = Vec::new();
+    let mut vars = Vec::new();
+    let mut tick = 0;
+    let mut section = "";
+    for line in text.lines() {
+        let line = line.trim();
+        if let Some(s) = line.strip_prefix("// ") {
+            section = match s {
+                "Programs" => "p",
+                "Variables" => "v",
+                "Ticktime" => "t",
+                _ => "",
+            };
+            continue;
+        }
+        if line.is_empty() {
+            continue;
+        }
+        let f: Vec<&str> = line.split(';').collect();
+        match section {
+            "p" if f.len() >= 3 => programs.push((f[1].to_string(), f[2].to_string())),
+            "v" if f.len() >= 5 && matches!(f[1], "VAR" | "IN" | "OUT" | "MEM") => {
+                let ty = f[4].to_string();
+                if printable(&ty) {
+                    vars.push(MVar {
+                        path: f[2].to_string(),
+                        ty,
+                    });
+                }
+            }
+            "t" => tick = line.parse().unwrap_or(0),
+            _ => {}
+        }
+    }
+    (programs, vars, tick)
+}
+
+fn printable(ty: &str) -> bool {
+    matches!(
+        ty,
+        "BOOL"
+            | "SINT"
+            | "INT"
+            | "DINT"
+            | "LINT"
+            | "USINT"
+            | "UINT"
+            | "UDINT"
+            | "ULINT"
+            | "BYTE"
+            | "WORD"
+            | "DWORD"
+            | "LWORD"
+            | "REAL"
+            | "LREAL"
+            | "TIME"
+            | "STRING"
+    )
+}
+
+/// `CFG.RES.INST.X.Y` -> C `RES__INST.X.Y` (iec2c's resource file defines `RES__INST`).
+fn c_path(iec: &str) -> String {
+    let parts: Vec<&str> = iec.split('.').collect();
+    format!("{}__{}.{}", parts[1], parts[2], parts[3..].join("."))
+}
+
+/// `CFG.RES.INST.X.Y` -> the trace name `INST.X.Y`.
+fn trace_name(iec: &str) -> String {
+    iec.splitn(3, '.').nth(2).unwrap_or(iec).to_string()
+}
+
+/// The C main that runs matiec's configuration for `cycles` ticks and prints the trace.
+fn matiec_main(programs: &[(String, String)], vars: &[MVar]) -> String {
+    let mut c = String::from(
+        "#include <stdio.h>\n#include <stdlib.h>\n#include \"iec_std_lib.h\"\n#include \"accessor.h\"\n\
+         #include \"POUS.h\"\n\nTIME __CURRENT_TIME;\nBOOL __DEBUG;\nextern unsigned long long common_ticktime__;\n\
+         void config_init__(void);\nvoid config_run__(unsigned long tick);\n",
+    );
+    for (path, ty) in programs {
+        let p: Vec<&str> = path.split('.').collect();
+        let _ = writeln!(c, "extern {ty} {}__{};", p[1], p[2]);
+    }
+    c.push_str(
+        "static void pstr(const STRING *s) {\n    unsigned i;\n    putchar(',');\n    putchar('\"');\n\
+         for (i = 0; i < s->len; i++) {\n        if (s->body[i] == '\"') putchar('\"');\n        putchar(s->body[i]);\n    }\n\
+         putchar('\"');\n}\n\nint main(int argc, char **argv) {\n    unsigned long k, n = argc > 1 ? strtoul(argv[1], 0, 10) : 1;\n\
+         config_init__();\n    fputs(\"cycle,time_ns\", stdout);\n",
+    );
+    for v in vars {
+        let _ = writeln!(
+            c,
+            "    fputs(\",{}:{}\", stdout);",
+            trace_name(&v.path),
+            v.ty
+        );
+    }
+    c.push_str(
+        "    putchar('\\n');\n    for (k = 0; k < n; k++) {\n        long long t = (long long)k * (long long)common_ticktime__;\n\
+         __CURRENT_TIME.tv_sec = t / 1000000000LL;\n        __CURRENT_TIME.tv_nsec = t % 1000000000LL;\n\
+         config_run__(k);\n        printf(\"%lu,%lld\", k, t);\n",
+    );
+    for v in vars {
+        let lv = format!("{}.value", c_path(&v.path));
+        let stmt = match v.ty.as_str() {
+            "BOOL" => format!("printf(\",%d\", {lv} ? 1 : 0);"),
+            "SINT" | "INT" | "DINT" | "LINT" => format!("printf(\",%lld\", (long long){lv});"),
+            "REAL" => format!("printf(\",%.9g\", (double){lv});"),
+            "LREAL" => format!("printf(\",%.17g\", (double){lv});"),
+            "TIME" => format!(
+                "printf(\",%lld\", (long long){lv}.tv_sec * 1000000000LL + (long long){lv}.tv_nsec);"
+            ),
+            "STRING" => format!("pstr(&{lv});"),
+            _ => format!("printf(\",%llu\", (unsigned long long){lv});"),
+        };
+        let _ = writeln!(c, "        {stmt}");
+    }
+    c.push_str("        putchar('\\n');\n    }\n    return 0;\n}\n");
+    c
+}
+
+/// Runs the program through iec2c and its C: the trace text.
+fn matiec_trace(m: &Matiec, src: &Path, cycles: u64, work: &Path) -> Result<String, String> {
+    let out = work.join("matiec");
+    std::fs::create_dir_all(&out).unwrap();
+    let r = Command::new(&m.iec2c)
+        .arg("-I")
+        .arg(&m.lib)
+        .arg("-T")
+        .arg(&out)
+        .arg(src)
+        .output()
+        .map_err(|e| format!("iec2c: {e}"))?;
+    if !r.status.success() {
+        return Err(format!(
+            "iec2c rejects the program:\n{}{}",
+            String::from_utf8_lossy(&r.stdout),
+            String::from_utf8_lossy(&r.stderr)
+        ));
+    }
+    let csv = std::fs::read_to_string(out.join("VARIABLES.csv")).map_err(|e| e.to_string())?;
+    let (programs, vars, _) = parse_variables_csv(&csv);
+    std::fs::write(out.join("ladderc_diff_main.c"), matiec_main(&programs, &vars)).unwrap();
+    let mut cc = Command::new("cc");
+    cc.args(["-std=gnu11", "-O0", "-fwrapv", "-w", "-I"])
+        .arg(&m.lib_c)
+        .arg("-I")
+        .arg(&out)
+        .arg("-o")
+        .arg(out.join("prog"))
+        .arg(out.join("ladderc_diff_main.c"));
+    // the configuration's C file and each resource's (the resource file includes POUS.c)
+    for e in std::fs::read_dir(&out).unwrap() {
+        let p = e.unwrap().path();
+        let name = p.file_name().unwrap().to_str().unwrap().to_string();
+        if name.ends_with(".c") && name != "POUS.c" && name != "ladderc_diff_main.c" {
+            cc.arg(&p);
+        }
+    }
+    cc.arg("-lm");
+    let r = cc.output().map_err(|e| format!("cc: {e}"))?;
+    if !r.status.success() {
+        return Err(format!(
+            "cc fails on matiec's C:\n{}",
+            String::from_utf8_lossy(&r.stderr)
+        ));
+    }
+    let r = Command::new(out.join("prog"))
+        .arg(cycles.to_string())
+        .output()
+        .map_err(|e| e.to_string())?;
+    if !r.status.success() {
+        return Err(format!("matiec's program fails: {:?}", r.status));
+    }
+    Ok(String::from_utf8_lossy(&r.stdout).into_owned())
+}
+
+/// The tick time of a matiec trace (its cycle 1 time), in ns; 10 ms for a one-row trace.
+fn tick_ns(matiec: &Table) -> u64 {
+    matiec
+        .rows
+        .get(1)
+        .and_then(|r| r[1].parse().ok())
+        .unwrap_or(10_000_000)
+}
+
+/// Runs the program through `ladderc run`: the trace text.
+fn ladderc_trace(src: &Path, cycles: u64, tick_ns: u64, work: &Path) -> String {
+    let trace = work.join("ladderc.csv");
+    let ms = tick_ns as f64 / 1e6;
+    let out = ladderc()
+        .arg("run")
+        .arg(src)
+        .args(["--cycles", &cycles.to_string(), "--cycle-ms", &ms.to_string()])
+        .arg("--trace")
+        .arg(&trace)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    std::fs::read_to_string(&trace).unwrap()
+}
+
+/// A CSV table: header and rows of fields (quotes removed, `""` unescaped).
+struct Table {
+    header: Vec<String>,
+    rows: Vec<Vec<String>>,
+}
+
+fn parse_csv(text: &str) -> Table {
+    let mut lines = text.lines().filter(|l| !l.is_empty()).map(split_csv_line);
+    let header = lines.next().unwrap_or_default();
+    Table {
+        header,
+        rows: lines.collect(),
+    }
+}
+
+fn split_csv_line(line: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    let mut chars = line.chars().peekable();
+    let mut quoted = false;
+    while let Some(c) = chars.next() {
+        match c {
+            '"' if quoted && chars.peek() == Some(&'"') => {
+                cur.push('"');
+                chars.next();
+            }
+            '"' => quoted = !quoted,
+            ',' if !quoted => out.push(std::mem::take(&mut cur)),
+            _ => cur.push(c),
+        }
+    }
+    out.push(cur);
+    out
+}
+
+/// A value in a form both traces reduce to.
+#[derive(Debug, PartialEq)]
+enum Val {
+    Int(i128),
+    Real(u64),
+    Text(String),
+}
+
+/// ladderc's `T#[-]N(ms|us|ns)` in ns.
+fn ladderc_duration(s: &str) -> Option<i128> {
+    let s = s.strip_prefix("T#")?;
+    let (neg, s) = match s.strip_prefix('-') {
+        Some(r) => (true, r),
+        None => (false, s),
+    };
+    let (num, scale) = if let Some(n) = s.strip_suffix("ms") {
+        (n, 1_000_000)
+    } else if let Some(n) = s.strip_suffix("us") {
+        (n, 1_000)
+    } else {
+        (s.strip_suffix("ns")?, 1)
+    };
+    let v: i128 = num.parse().ok()?;
+    Some(if neg { -v * scale } else { v * scale })
+}
+
+fn real(s: &str, single: bool) -> Val {
+    let lower = s.to_ascii_lowercase();
+    if lower.contains("nan") {
+        return Val::Text("nan".into());
+    }
+    let v: f64 = lower.parse().unwrap_or(f64::NAN);
+    Val::Real(if single {
+        (v as f32).to_bits() as u64
+    } else {
+        v.to_bits()
+    })
+}
+
+fn normalise(ty: &str, s: &str, from_ladderc: bool) -> Val {
+    match ty {
+        "REAL" => real(s, true),
+        "LREAL" => real(s, false),
+        "TIME" if from_ladderc => {
+            ladderc_duration(s).map_or_else(|| Val::Text(s.into()), Val::Int)
+        }
+        "STRING" => Val::Text(s.into()),
+        _ => s
+            .parse::<i128>()
+            .map_or_else(|_| Val::Text(s.into()), Val::Int),
+    }
+}
+
+/// One differing column: its first differing cycle, both values there, and how many cycles differ.
+#[derive(Debug)]
+struct Diff {
+    column: String,
+    cycle: usize,
+    matiec: String,
+    ladderc: String,
+    cycles: usize,
+}
+
+/// The comparison of one program.
+#[derive(Debug)]
+struct Outcome {
+    columns: usize,
+    cycles: usize,
+    diffs: Vec<Diff>,
+}
+
+/// Compares matiec's trace with ladderc's, cycle by cycle.
+fn compare(matiec: &Table, lad: &Table) -> Result<Outcome, String> {
+    let index: BTreeMap<String, usize> = lad
+        .header
+        .iter()
+        .enumerate()
+        .map(|(i, h)| (h.to_ascii_uppercase(), i))
+        .collect();
+    if matiec.rows.len() != lad.rows.len() {
+        return Err(format!(
+            "matiec ran {} cycles, ladderc {}",
+            matiec.rows.len(),
+            lad.rows.len()
+        ));
+    }
+    let mut pairs = Vec::new();
+    for (mi, h) in matiec.header.iter().enumerate().skip(2) {
+        let (name, ty) = h.rsplit_once(':').ok_or_else(|| format!("header {h}"))?;
+        match index.get(&name.to_ascii_uppercase()) {
+            Some(&li) => pairs.push((name.to_string(), ty.to_string(), mi, li)),
+            // a program variable must be traced by both; FB internals (matiec's STATE, PREV_IN, EN/ENO...)
+            // only where ladderc has them too
+            None if name.matches('.').count() == 1 => {
+                return Err(format!("ladderc's trace has no column {name}"))
+            }
+            None => {}
+        }
+    }
+    let mut diffs: Vec<Diff> = Vec::new();
+    for (k, (mr, lr)) in matiec.rows.iter().zip(&lad.rows).enumerate() {
+        // same scan clock: matiec's ns, ladderc's ms
+        let lt: f64 = lr[1].parse().unwrap_or(f64::NAN);
+        let mt: f64 = mr[1].parse().unwrap_or(f64::NAN);
+        if (lt * 1e6 - mt).abs() > 0.5 {
+            return Err(format!("cycle {k}: ladderc runs at {lt} ms, matiec at {mt} ns"));
+        }
+        for (name, ty, mi, li) in &pairs {
+            let (mv, lv) = (&mr[*mi], &lr[*li]);
+            if normalise(ty, mv, false) != normalise(ty, lv, true) {
+                match diffs.iter_mut().find(|d| &d.column == name) {
+                    Some(d) => d.cycles += 1,
+                    None => diffs.push(Diff {
+                        column: name.clone(),
+                        cycle: k,
+                        matiec: mv.clone(),
+                        ladderc: lv.clone(),
+                        cycles: 1,
+                    }),
+                }
+            }
+        }
+    }
+    Ok(Outcome {
+        columns: pairs.len(),
+        cycles: matiec.rows.len(),
+        diffs,
+    })
+}
+
+fn report(name: &str, o: &Outcome) -> String {
+    let mut s = format!(
+        "{name}: {} cycles x {} columns compared, {} differ",
+        o.cycles,
+        o.columns,
+        o.diffs.len()
+    );
+    for d in &o.diffs {
+        let _ = write!(
+            s,
+            "\n    {}: first at cycle {} (matiec {}, ladderc {}), {} cycles differ",
+            d.column, d.cycle, d.matiec, d.ladderc, d.cycles
+        );
+    }
+    s
+}
+
+/// matiec's trace of a program: live (and checked against the recording) or recorded.
+fn matiec_side(m: Option<&Matiec>, src: &Path, cycles: u64, work: &Path) -> Result<String, String> {
+    let recorded = src.with_extension("matiec.csv");
+    let Some(m) = m else {
+        return std::fs::read_to_string(&recorded)
+            .map_err(|e| format!("{}: {e}", recorded.display()));
+    };
+    let live = matiec_trace(m, src, cycles, work)?;
+    if std::env::var_os("MATIEC_DIFF_RECORD").is_some() && src.starts_with(repo_root()) {
+        std::fs::write(&recorded, &live).unwrap();
+    } else if recorded.is_file() {
+        let old = std::fs::read_to_string(&recorded).unwrap();
+        if old != live {
+            return Err(format!(
+                "matiec's live trace differs from {} (MATIEC_DIFF_RECORD=1 rewrites it)",
+                recorded.display()
+            ));
+        }
+    }
+    Ok(live)
+}
+
+fn run_one(m: Option<&Matiec>, src: &Path) -> Result<Outcome, String> {
+    let text = std::fs::read_to_string(src).map_err(|e| e.to_string())?;
+    let cycles = cycles_of(&text);
+    let work = tempfile::tempdir().unwrap();
+    let mt = parse_csv(&matiec_side(m, src, cycles, work.path())?);
+    let lt = parse_csv(&ladderc_trace(src, cycles, tick_ns(&mt), work.path()));
+    compare(&mt, &lt)
+}
+
+#[test]
+fn fixtures_agree_with_matiec_or_follow_the_standard() {
+    let m = matiec();
+    match &m {
+        Some(m) => println!("matiec-diff: live, iec2c {}", m.iec2c.display()),
+        None => println!(
+            "matiec-diff: MATIEC_BIN unset, so matiec's recorded traces are compared (no live iec2c run)"
+        ),
+    }
+    let mut failures = Vec::new();
+    let (mut programs, mut cycles, mut cells) = (0, 0, 0);
+    for src in fixtures() {
+        let name = src.file_stem().unwrap().to_str().unwrap().to_string();
+        match run_one(m.as_ref(), &src) {
+            Ok(o) => {
+                println!("{}", report(&name, &o));
+                programs += 1;
+                cycles += o.cycles;
+                cells += o.cycles * o.columns;
+                let mut got: Vec<&str> = o.diffs.iter().map(|d| d.column.as_str()).collect();
+                got.sort();
+                let mut want: Vec<&str> = KNOWN
+                    .iter()
+                    .filter(|k| k.program == name)
+                    .flat_map(|k| k.columns.iter().copied())
+                    .collect();
+                want.sort();
+                if got != want {
+                    failures.push(format!(
+                        "{name}: differing columns {got:?}, known {want:?}\n{}",
+                        report(&name, &o)
+                    ));
+                }
+            }
+            Err(e) => failures.push(format!("{name}: {e}")),
+        }
+    }
+    println!("matiec-diff: {programs} programs, {cycles} cycles, {cells} values compared");
+    assert!(programs >= 15, "the corpus has {programs} programs");
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+/// Programs the suite has never seen (`MATIEC_DIFF_FILES=a.il:b.st`, run live): every difference is
+/// printed; the test fails when a program does not compile on either side or any column differs.
+#[test]
+fn unseen_programs_from_the_environment() {
+    let Some(files) = std::env::var_os("MATIEC_DIFF_FILES") else {
+        println!("skipped (MATIEC_DIFF_FILES unset): no unseen programs to compare");
+        return;
+    };
+    let Some(m) = matiec() else {
+        println!("skipped (MATIEC_BIN unset): unseen programs need a live matiec");
+        return;
+    };
+    let mut bad = Vec::new();
+    for src in std::env::split_paths(&files) {
+        let name = src.display().to_string();
+        match run_one(Some(&m), &src) {
+            Ok(o) => {
+                println!("{}", report(&name, &o));
+                if !o.diffs.is_empty() {
+                    bad.push(report(&name, &o));
+                }
+            }
+            Err(e) => bad.push(format!("{name}: {e}")),
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n\n"));
+}
+
+#[test]
+fn the_comparison_finds_the_first_difference_of_each_column() {
+    let m = parse_csv(
+        "cycle,time_ns,INST.A:INT,INST.T:TIME,INST.R:REAL,INST.S:STRING,INST.TM.STATE:SINT\n\
+         0,0,1,15000000,2.25,\"a\"\"b\",0\n1,10000000,2,1500,0.100000001,\"x\",1\n2,20000000,3,-7,3,\"x\",0\n",
+    );
+    let l = parse_csv(
+        "cycle,time_ms,inst.a,inst.t,inst.r,inst.s\n0,0,1,T#15ms,2.25,\"a\"\"b\"\n\
+         1,10,2,T#1500ns,0.1,\"x\"\n2,20,4,T#-7ns,3,\"y\"\n",
+    );
+    let o = compare(&m, &l).unwrap();
+    assert_eq!((o.columns, o.cycles), (4, 3));
+    let got: Vec<(String, usize, String, String)> = o
+        .diffs
+        .iter()
+        .map(|d| (d.column.clone(), d.cycle, d.matiec.clone(), d.ladderc.clone()))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            ("INST.A".into(), 2, "3".into(), "4".into()),
+            ("INST.S".into(), 2, "x".into(), "y".into()),
+        ]
+    );
+    // a program variable missing on ladderc's side is an error, an FB internal is not
+    let short = parse_csv("cycle,time_ms,inst.t,inst.r,inst.s\n0,0,T#15ms,2.25,\"a\"\n");
+    let one = parse_csv("cycle,time_ns,INST.A:INT\n0,0,1\n");
+    assert!(compare(&one, &short).unwrap_err().contains("INST.A"));
+}
+
+#[test]
+fn variables_csv_gives_the_printed_variables_and_the_tick() {
+    let csv = "// Programs\n0;CFG.RES.INST;MAIN;\n\n// Variables\n0;FB;CFG.RES.INST;CFG.RES.INST;MAIN;;0;\n\
+               1;VAR;CFG.RES.INST.N;CFG.RES.INST.N;INT;INT;0;\n2;FB;CFG.RES.INST.TM;CFG.RES.INST.TM;TON;;0;\n\
+               3;VAR;CFG.RES.INST.TM.ET;CFG.RES.INST.TM.ET;TIME;TIME;0;\n\n// Ticktime\n20000000\n";
+    let (p, v, tick) = parse_variables_csv(csv);
+    assert_eq!(p, [("CFG.RES.INST".to_string(), "MAIN".to_string())]);
+    let paths: Vec<(String, String)> = v.iter().map(|v| (c_path(&v.path), trace_name(&v.path))).collect();
+    assert_eq!(
+        paths,
+        [
+            ("RES__INST.N".to_string(), "INST.N".to_string()),
+            ("RES__INST.TM.ET".to_string(), "INST.TM.ET".to_string())
+        ]
+    );
+    assert_eq!(tick, 20_000_000);
+    let main = matiec_main(&p, &v);
+    assert!(main.contains("extern MAIN RES__INST;"), "{main}");
+    assert!(main.contains("RES__INST.TM.ET.value.tv_sec"), "{main}");
+}
+
+#[test]
+fn every_fixture_declares_its_cycles_and_has_a_recorded_matiec_trace() {
+    for src in fixtures() {
+        let text = std::fs::read_to_string(&src).unwrap();
+        assert!(
+            text.lines().next().is_some_and(|l| l.contains("matiec-diff: cycles=")),
+            "{}: first line must be (* matiec-diff: cycles=N ... *)",
+            src.display()
+        );
+        assert!(
+            src.with_extension("matiec.csv").is_file(),
+            "{}: no recorded matiec trace (run scripts/matiec-diff.sh with MATIEC_DIFF_RECORD=1)",
+            src.display()
+        );
+    }
+    for k in KNOWN {
+        assert!(
+            fixtures().iter().any(|p| p.file_stem().unwrap() == k.program),
+            "KNOWN names a missing program {}",
+            k.program
+        );
+    }
+}
