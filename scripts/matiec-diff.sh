@@ -29,6 +29,8 @@ if [[ -z "$lib" || ! -f "$lib/ieclib.txt" ]]; then
     echo "error: matiec's lib/ folder not found; set MATIEC_LIB (or MATIEC_SRC)" >&2
     exit 2
 fi
+bin="$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")"
+lib="$(cd "$lib" && pwd)"
 files=()
 for f in "$@"; do
     [[ -f "$f" ]] || { echo "error: no such file: $f" >&2; exit 2; }

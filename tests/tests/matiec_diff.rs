@@ -297,7 +297,11 @@ fn drop_stray_literals(pous: &str) -> String {
     let mut out = String::with_capacity(pous.len());
     for line in pous.split_inclusive('\n') {
         match line.find("void ") {
-            Some(i) if i > 0 && !line.starts_with(char::is_whitespace) && line[i..].contains("_init__(") => {
+            Some(i)
+                if i > 0
+                    && !line.starts_with(char::is_whitespace)
+                    && line[i..].contains("_init__(") =>
+            {
                 out.push_str(&line[i..])
             }
             _ => out.push_str(line),
@@ -334,7 +338,11 @@ fn matiec_trace(m: &Matiec, src: &Path, cycles: u64, work: &Path) -> Result<Stri
     std::fs::write(&pous, drop_stray_literals(&text)).unwrap();
     let csv = std::fs::read_to_string(out.join("VARIABLES.csv")).map_err(|e| e.to_string())?;
     let (programs, vars, _) = parse_variables_csv(&csv);
-    std::fs::write(out.join("ladderc_diff_main.c"), matiec_main(&programs, &vars)).unwrap();
+    std::fs::write(
+        out.join("ladderc_diff_main.c"),
+        matiec_main(&programs, &vars),
+    )
+    .unwrap();
     let mut cc = Command::new("cc");
     cc.args(["-std=gnu11", "-O0", "-fwrapv", "-w", "-I"])
         .arg(&m.lib_c)
@@ -393,7 +401,12 @@ fn ladderc_trace(src: &Path, cycles: u64, tick_ns: u64, work: &Path) -> String {
     let out = ladderc()
         .arg("run")
         .arg(src)
-        .args(["--cycles", &cycles.to_string(), "--cycle-ms", &ms.to_string()])
+        .args([
+            "--cycles",
+            &cycles.to_string(),
+            "--cycle-ms",
+            &ms.to_string(),
+        ])
         .arg("--trace")
         .arg(&trace)
         .output()
@@ -490,9 +503,7 @@ fn normalise(ty: &str, s: &str, from_ladderc: bool) -> Val {
     match ty {
         "REAL" => real(s, true),
         "LREAL" => real(s, false),
-        "TIME" if from_ladderc => {
-            ladderc_duration(s).map_or_else(|| Val::Text(s.into()), Val::Int)
-        }
+        "TIME" if from_ladderc => ladderc_duration(s).map_or_else(|| Val::Text(s.into()), Val::Int),
         "STRING" => Val::Text(s.into()),
         _ => s
             .parse::<i128>()
@@ -554,7 +565,9 @@ fn compare(matiec: &Table, lad: &Table) -> Result<Outcome, String> {
         let lt: f64 = lr[1].parse().unwrap_or(f64::NAN);
         let mt: f64 = mr[1].parse().unwrap_or(f64::NAN);
         if (lt * 1e6 - mt).abs() > 0.5 {
-            return Err(format!("cycle {k}: ladderc runs at {lt} ms, matiec at {mt} ns"));
+            return Err(format!(
+                "cycle {k}: ladderc runs at {lt} ms, matiec at {mt} ns"
+            ));
         }
         for (name, ty, mi, li) in &pairs {
             let (mv, lv) = (&mr[*mi], &lr[*li]);
@@ -625,10 +638,46 @@ fn matiec_side(m: Option<&Matiec>, src: &Path, cycles: u64, work: &Path) -> Resu
     Ok(live)
 }
 
+/// A program without a CONFIGURATION (matiec needs one for `config_run__`) gets one: a 10 ms task that
+/// runs each PROGRAM of the file as instance `I_<NAME>`. `None` when the file has its own.
+fn with_configuration(text: &str) -> Option<String> {
+    let mut programs = Vec::new();
+    for line in text.lines() {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        match words.first().map(|w| w.to_ascii_uppercase()).as_deref() {
+            Some("CONFIGURATION") => return None,
+            Some("PROGRAM") if words.len() > 1 => programs.push(words[1].to_string()),
+            _ => {}
+        }
+    }
+    if programs.is_empty() {
+        return None;
+    }
+    let mut s = format!(
+        "{text}\n\nCONFIGURATION config\n  RESOURCE resource1 ON PLC\n    TASK task0 (INTERVAL := T#10ms, PRIORITY := 0);\n"
+    );
+    for p in &programs {
+        let _ = writeln!(s, "    PROGRAM I_{p} WITH task0 : {p};");
+    }
+    s.push_str("  END_RESOURCE\nEND_CONFIGURATION\n");
+    Some(s)
+}
+
 fn run_one(m: Option<&Matiec>, src: &Path) -> Result<Outcome, String> {
     let text = std::fs::read_to_string(src).map_err(|e| e.to_string())?;
     let cycles = cycles_of(&text);
     let work = tempfile::tempdir().unwrap();
+    // an unseen program without a configuration runs, on both sides, with the generated one
+    let completed;
+    let src = match with_configuration(&text) {
+        Some(full) if !src.starts_with(repo_root()) => {
+            let ext = src.extension().and_then(|e| e.to_str()).unwrap_or("il");
+            completed = work.path().join(format!("program.{ext}"));
+            std::fs::write(&completed, full).unwrap();
+            completed.as_path()
+        }
+        _ => src,
+    };
     let mt = parse_csv(&matiec_side(m, src, cycles, work.path())?);
     let lt = parse_csv(&ladderc_trace(src, cycles, tick_ns(&mt), work.path()));
     compare(&mt, &lt)
@@ -741,7 +790,14 @@ fn the_comparison_finds_the_first_difference_of_each_column() {
     let got: Vec<(String, usize, String, String)> = o
         .diffs
         .iter()
-        .map(|d| (d.column.clone(), d.cycle, d.matiec.clone(), d.ladderc.clone()))
+        .map(|d| {
+            (
+                d.column.clone(),
+                d.cycle,
+                d.matiec.clone(),
+                d.ladderc.clone(),
+            )
+        })
         .collect();
     assert_eq!(
         got,
@@ -754,6 +810,16 @@ fn the_comparison_finds_the_first_difference_of_each_column() {
     let short = parse_csv("cycle,time_ms,inst.t,inst.r,inst.s\n0,0,T#15ms,2.25,\"a\"\n");
     let one = parse_csv("cycle,time_ns,INST.A:INT\n0,0,1\n");
     assert!(compare(&one, &short).unwrap_err().contains("INST.A"));
+}
+
+#[test]
+fn a_program_without_configuration_gets_one() {
+    let full =
+        with_configuration("PROGRAM main\n  VAR x : INT; END_VAR\n  LD 1\n  ST x\nEND_PROGRAM\n")
+            .unwrap();
+    assert!(full.contains("PROGRAM I_main WITH task0 : main;"), "{full}");
+    assert!(with_configuration(&full).is_none());
+    assert!(with_configuration("FUNCTION f : INT\nEND_FUNCTION\n").is_none());
 }
 
 #[test]
@@ -774,7 +840,10 @@ fn variables_csv_gives_the_printed_variables_and_the_tick() {
                3;VAR;CFG.RES.INST.TM.ET;CFG.RES.INST.TM.ET;TIME;TIME;0;\n\n// Ticktime\n20000000\n";
     let (p, v, tick) = parse_variables_csv(csv);
     assert_eq!(p, [("CFG.RES.INST".to_string(), "MAIN".to_string())]);
-    let paths: Vec<(String, String)> = v.iter().map(|v| (c_path(&v.path), trace_name(&v.path))).collect();
+    let paths: Vec<(String, String)> = v
+        .iter()
+        .map(|v| (c_path(&v.path), trace_name(&v.path)))
+        .collect();
     assert_eq!(
         paths,
         [
@@ -793,7 +862,9 @@ fn every_fixture_declares_its_cycles_and_has_a_recorded_matiec_trace() {
     for src in fixtures() {
         let text = std::fs::read_to_string(&src).unwrap();
         assert!(
-            text.lines().next().is_some_and(|l| l.contains("matiec-diff: cycles=")),
+            text.lines()
+                .next()
+                .is_some_and(|l| l.contains("matiec-diff: cycles=")),
             "{}: first line must be (* matiec-diff: cycles=N ... *)",
             src.display()
         );
@@ -805,7 +876,9 @@ fn every_fixture_declares_its_cycles_and_has_a_recorded_matiec_trace() {
     }
     for k in KNOWN {
         assert!(
-            fixtures().iter().any(|p| p.file_stem().unwrap() == k.program),
+            fixtures()
+                .iter()
+                .any(|p| p.file_stem().unwrap() == k.program),
             "KNOWN names a missing program {}",
             k.program
         );
