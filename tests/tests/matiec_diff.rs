@@ -20,7 +20,7 @@
 //! Any other difference fails the test.
 
 mod common;
-use common::{assert_ok, ladderc, repo_root};
+use common::{ladderc, repo_root};
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -394,8 +394,8 @@ fn tick_ns(matiec: &Table) -> u64 {
         .unwrap_or(10_000_000)
 }
 
-/// Runs the program through `ladderc run`: the trace text.
-fn ladderc_trace(src: &Path, cycles: u64, tick_ns: u64, work: &Path) -> String {
+/// Runs the program through `ladderc run`: the trace text, or ladderc's diagnostics.
+fn ladderc_trace(src: &Path, cycles: u64, tick_ns: u64, work: &Path) -> Result<String, String> {
     let trace = work.join("ladderc.csv");
     let ms = tick_ns as f64 / 1e6;
     let out = ladderc()
@@ -410,9 +410,15 @@ fn ladderc_trace(src: &Path, cycles: u64, tick_ns: u64, work: &Path) -> String {
         .arg("--trace")
         .arg(&trace)
         .output()
-        .unwrap();
-    assert_ok(&out);
-    std::fs::read_to_string(&trace).unwrap()
+        .map_err(|e| e.to_string())?;
+    if !out.status.success() {
+        return Err(format!(
+            "ladderc run fails ({}):\n{}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr)
+        ));
+    }
+    std::fs::read_to_string(&trace).map_err(|e| e.to_string())
 }
 
 /// A CSV table: header and rows of fields (quotes removed, `""` unescaped); `stopped`: a last line
@@ -679,8 +685,28 @@ fn run_one(m: Option<&Matiec>, src: &Path) -> Result<Outcome, String> {
         _ => src,
     };
     let mt = parse_csv(&matiec_side(m, src, cycles, work.path())?);
-    let lt = parse_csv(&ladderc_trace(src, cycles, tick_ns(&mt), work.path()));
+    let lt = parse_csv(&ladderc_trace(src, cycles, tick_ns(&mt), work.path())?);
     compare(&mt, &lt)
+}
+
+/// Every program compared, by up to four at a time (each run is a few processes: iec2c, cc, the program,
+/// ladderc); the results in the order of `files`.
+fn run_all(m: Option<&Matiec>, files: &[PathBuf]) -> Vec<(PathBuf, Result<Outcome, String>)> {
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let results = std::sync::Mutex::new(Vec::new());
+    std::thread::scope(|s| {
+        for _ in 0..4 {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some(src) = files.get(i) else { break };
+                let r = run_one(m, src);
+                results.lock().unwrap().push((i, src.clone(), r));
+            });
+        }
+    });
+    let mut v = results.into_inner().unwrap();
+    v.sort_by_key(|r| r.0);
+    v.into_iter().map(|(_, p, r)| (p, r)).collect()
 }
 
 #[test]
@@ -694,9 +720,9 @@ fn fixtures_agree_with_matiec_or_follow_the_standard() {
     }
     let mut failures = Vec::new();
     let (mut programs, mut cycles, mut cells) = (0, 0, 0);
-    for src in fixtures() {
+    for (src, result) in run_all(m.as_ref(), &fixtures()) {
         let name = src.file_stem().unwrap().to_str().unwrap().to_string();
-        match run_one(m.as_ref(), &src) {
+        match result {
             Ok(o) => {
                 println!("{}", report(&name, &o));
                 programs += 1;
@@ -746,9 +772,10 @@ fn unseen_programs_from_the_environment() {
         return;
     };
     let mut bad = Vec::new();
-    for src in std::env::split_paths(&files) {
+    let files: Vec<PathBuf> = std::env::split_paths(&files).collect();
+    for (src, result) in run_all(Some(&m), &files) {
         let name = src.display().to_string();
-        match run_one(Some(&m), &src) {
+        match result {
             Ok(o) => {
                 println!("{}", report(&name, &o));
                 if !o.diffs.is_empty() || o.stopped.is_some() {
@@ -767,7 +794,7 @@ fn unseen_programs_from_the_environment() {
 fn mod_by_zero_gives_0_and_runs_on() {
     let src = repo_root().join("tests/tests/fixtures/matiec_diff/mod_by_zero.il");
     let work = tempfile::tempdir().unwrap();
-    let t = parse_csv(&ladderc_trace(&src, 20, 10_000_000, work.path()));
+    let t = parse_csv(&ladderc_trace(&src, 20, 10_000_000, work.path()).unwrap());
     let col = t.header.iter().position(|h| h == "inst.rest").unwrap();
     let rest: Vec<&str> = t.rows.iter().map(|r| r[col].as_str()).collect();
     assert_eq!(rest.len(), 20);
