@@ -911,3 +911,20 @@ fn every_fixture_declares_its_cycles_and_has_a_recorded_matiec_trace() {
         );
     }
 }
+
+/// scripts/matiec-diff.sh without iec2c: a usage error that says how to build it (before any cargo run).
+#[test]
+fn the_script_without_iec2c_is_a_usage_error() {
+    let out = Command::new("bash")
+        .arg(repo_root().join("scripts/matiec-diff.sh"))
+        .env("MATIEC_BIN", "/nonexistent/iec2c")
+        .output()
+        .expect("bash runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "stderr: {stderr}");
+    assert!(
+        stderr.contains("no iec2c at /nonexistent/iec2c")
+            && stderr.contains("scripts/build-matiec.sh"),
+        "stderr: {stderr}"
+    );
+}
