@@ -11,7 +11,7 @@
 //! next block's, the first block starts with the first axis motion); each
 //! line is labelled with the block and, for a junction, the path speed there. A junction whose speed the
 //! axis limits lowered (the trace's `group.<name>.junction_requested` column is non-zero there) is drawn
-//! in magenta and labelled "(lowered from <requested>)". Block outputs of a row were computed in the scan
+//! in magenta and labelled "(lowered from `<requested>`)". Block outputs of a row were computed in the scan
 //! before that cycle's engine step, so an event seen in row k is drawn at row k-1's time and speed (the
 //! axis state the block reacted to). Axis labels carry the axes file's unit; labels stay inside the
 //! frame (right-aligned in the right half); colours are a fixed high-contrast (colour-blind safe) set.

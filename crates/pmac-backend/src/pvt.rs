@@ -25,7 +25,7 @@ pub struct PvtOptions {
     pub dialect: Dialect,
     /// Segment time in ms (the `10` of `PVT10`).
     pub segment_ms: f64,
-    /// The controller's velocity time unit in ms (Turbo Isx90, Power Coord[x].FeedTime); 1000 means per second.
+    /// The controller's velocity time unit in ms (Turbo Isx90, Power `Coord[x].FeedTime`); 1000 means per second.
     pub velocity_time_ms: f64,
     /// Decimals for positions and velocities.
     pub decimals: usize,
