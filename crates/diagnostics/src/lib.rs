@@ -62,6 +62,10 @@ impl Diagnostics {
             .filter(|d| d.severity == Severity::Error)
             .count()
     }
+    /// The diagnostics in the order they were reported.
+    pub fn as_slice(&self) -> &[Diagnostic] {
+        &self.list
+    }
     pub fn iter(&self) -> std::slice::Iter<'_, Diagnostic> {
         self.list.iter()
     }

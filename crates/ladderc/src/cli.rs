@@ -466,6 +466,7 @@ fn options(c: &ProjectArgs) -> pipeline::Options {
             StrategyArg::Auto => Strategy::Auto,
         },
         templates: c.templates.clone(),
+        compile_templates: true,
     }
 }
 

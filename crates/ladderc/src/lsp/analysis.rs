@@ -40,6 +40,7 @@ pub fn options(root: Option<&Path>) -> Options {
         axes: None,
         cycle_ms: None,
         lang: None,
+        compile_templates: true,
     }
 }
 
