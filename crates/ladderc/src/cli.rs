@@ -5,6 +5,7 @@
 //! failed run, 2 usage and I/O errors (a usage error is diagnostic E9200, in JSON under
 //! `--message-format json`). Invariant: a closed standard output ends the command quietly ([`crate::stdio`]).
 
+use crate::project::{CheckedProject, Failed, GeneratedProject, Project};
 use crate::{output, pipeline, stdio, summary};
 use clap::{Parser, Subcommand, ValueEnum};
 use diagnostics::{render, Diagnostic, MessageFormat, Severity, SourceMap};
@@ -470,12 +471,25 @@ fn options(c: &ProjectArgs) -> pipeline::Options {
     }
 }
 
-/// Prints the session's diagnostics; the exit code for them: 0 without errors, 2 when a file could not be
-/// read or written (an I/O error), 1 otherwise.
-fn finish(s: pipeline::Session, format: Format) -> i32 {
-    let diags = s.diags.into_sorted();
-    emit(&s.map, &diags, format);
+/// The project of `c`: its inputs read from disk, with the options of the command line.
+fn project(c: &ProjectArgs, opts: pipeline::Options) -> Project {
+    Project::from_paths(c.inputs.iter().cloned(), opts)
+}
+
+/// Prints a project's diagnostics (sorted, with `extra` ones); the exit code for them: 0 without errors, 2
+/// when a file could not be read or written (an I/O error), 1 otherwise.
+fn finish(map: &SourceMap, diags: &[Diagnostic], extra: Vec<Diagnostic>, format: Format) -> i32 {
+    let mut all = diagnostics::Diagnostics::new();
+    all.extend(diags.iter().cloned());
+    all.extend(extra);
+    let diags = all.into_sorted();
+    emit(map, &diags, format);
     exit_code(&diags)
+}
+
+/// Prints the diagnostics of a failed stage; the exit code for them.
+fn finish_failed(f: &Failed, format: Format) -> i32 {
+    finish(&f.sources, &f.diagnostics, Vec::new(), format)
 }
 
 /// The codes of I/O errors (a file that cannot be read or written; E7005: a PMAC file or connection):
@@ -506,9 +520,10 @@ fn io_error(message: String, hint: &str, format: Format) -> i32 {
 
 /// `check`: the whole pipeline to C in memory (the same checks as `build`), nothing written.
 fn check(p: &ProjectArgs, format: Format) -> i32 {
-    let mut s = pipeline::Session::new();
-    let _ = s.compile(&p.inputs, &options(p));
-    finish(s, format)
+    match project(p, options(p)).compile() {
+        Ok(g) => finish(g.sources(), g.diagnostics(), Vec::new(), format),
+        Err(f) => finish_failed(&f, format),
+    }
 }
 
 fn build(
@@ -518,7 +533,6 @@ fn build(
     report: Option<ReportFormat>,
     format: Format,
 ) -> i32 {
-    let mut s = pipeline::Session::new();
     match emit_kind {
         Emit::Il if report.is_some() => usage(
             "`--report` describes a C build: use it with `-o DIR`, not `--emit il`",
@@ -529,13 +543,17 @@ fn build(
             format,
         ),
         Emit::Il => {
-            let lowered = s.lower(&c.project.inputs, &options(&c.project));
-            let code = finish(s, format);
-            if let Some(l) = lowered {
-                for u in l.units() {
-                    if let Err(e) = stdio::out(&il_frontend::print::unit(u)) {
-                        return stdout_error(e, format);
-                    }
+            let lowered = match project(&c.project, options(&c.project))
+                .check()
+                .and_then(CheckedProject::lower)
+            {
+                Ok(l) => l,
+                Err(f) => return finish_failed(&f, format),
+            };
+            let code = finish(lowered.sources(), lowered.diagnostics(), Vec::new(), format);
+            for u in lowered.units() {
+                if let Err(e) = stdio::out(&il_frontend::print::unit(u)) {
+                    return stdout_error(e, format);
                 }
             }
             code
@@ -544,12 +562,14 @@ fn build(
             let Some(dir) = output else {
                 return usage("`build` needs `-o DIR` (or `--emit il`)", format);
             };
-            let compiled = s.compile(&c.project.inputs, &options(&c.project));
-            let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
-            let code = finish(s, format);
-            let Some((lowered, program)) = compiled else {
-                return code;
+            let mut g = match project(&c.project, options(&c.project)).compile() {
+                Ok(g) => g,
+                Err(f) => return finish_failed(&f, format),
             };
+            let mut extra = Vec::new();
+            let pmac = pmac_text(c, &mut g, &mut extra);
+            let code = finish(g.sources(), g.diagnostics(), extra, format);
+            let (lowered, program) = (g.lowered(), g.program());
             if let Err(code) = write_pmac(c, pmac, code, format) {
                 return code;
             }
@@ -558,7 +578,7 @@ fn build(
                 return code;
             }
             if report == Some(ReportFormat::Json) {
-                let text = crate::report::json(&lowered, &program, &extra) + "\n";
+                let text = g.report_measured(&extra) + "\n";
                 if let Err(e) = stdio::out(&text) {
                     return stdout_error(e, format);
                 }
@@ -584,20 +604,24 @@ fn build(
     }
 }
 
-/// The PMAC program of `--pmac` (diagnostics into the session).
-fn pmac_text(c: &CompileArgs, l: &pipeline::Lowered, s: &mut pipeline::Session) -> Option<String> {
+/// The PMAC program of `--pmac` (its diagnostics into the project; a bad dialect into `extra`).
+fn pmac_text(
+    c: &CompileArgs,
+    g: &mut GeneratedProject,
+    extra: &mut Vec<Diagnostic>,
+) -> Option<String> {
     c.pmac.as_ref()?;
     let dialect = match c.pmac_dialect.parse() {
         Ok(d) => d,
         Err(e) => {
-            s.diags.push(
+            extra.push(
                 Diagnostic::error(diagnostics::code::E9002, format!("--pmac-dialect: {e}"))
                     .with_hint("use turbo or power"),
             );
             return None;
         }
     };
-    crate::pmac_out::program(l.source_units(), &l.axes, dialect, &mut s.diags)
+    g.pmac_program(dialect)
 }
 
 /// Writes the `--pmac` file. `Err`: the exit code (the session had errors, or writing failed).
@@ -670,7 +694,6 @@ fn run_program(
     (plot, pvt): (Option<PathBuf>, Option<(PathBuf, f64)>),
     format: Format,
 ) -> i32 {
-    let mut s = pipeline::Session::new();
     let mut opts = options(&c.project);
     opts.cycle_ms = cycle_ms;
     if let Some(stimulus) = &run.stimulus {
@@ -684,12 +707,14 @@ fn run_program(
             return EXIT_USAGE;
         }
     }
-    let compiled = s.compile(&c.project.inputs, &opts);
-    let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
-    let code = finish(s, format);
-    let Some((lowered, program)) = compiled else {
-        return code;
+    let mut g = match project(&c.project, opts).compile() {
+        Ok(g) => g,
+        Err(f) => return finish_failed(&f, format),
     };
+    let mut extra = Vec::new();
+    let pmac = pmac_text(c, &mut g, &mut extra);
+    let code = finish(g.sources(), g.diagnostics(), extra, format);
+    let (lowered, program) = (g.lowered(), g.program());
     if let Err(code) = write_pmac(c, pmac, code, format) {
         return code;
     }
