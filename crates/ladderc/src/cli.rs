@@ -12,6 +12,7 @@ use diagnostics::{render, Diagnostic, MessageFormat, Severity, SourceMap};
 use param_passing::lower::Strategy;
 use std::path::PathBuf;
 
+/// The command line.
 #[derive(Parser, Debug)]
 #[command(
     name = "ladderc",
@@ -26,6 +27,7 @@ pub struct Cli {
     /// At most N diagnostics per file in the human and short formats (0: all); JSON shows all.
     #[arg(long, value_name = "N", default_value_t = diagnostics::DEFAULT_MAX_PER_FILE, global = true)]
     pub max_diagnostics: usize,
+    /// The command.
     #[command(subcommand)]
     pub command: Command,
 }
@@ -33,6 +35,7 @@ pub struct Cli {
 /// The exit codes, shown by `--help`.
 pub const EXIT_CODES_HELP: &str = "Exit codes:\n  0  success\n  1  diagnostics (errors in the sources), or the program run failed\n  2  usage error (E9200) or I/O error (a file that cannot be read or written)";
 
+/// `--message-format`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum Format {
     /// Source excerpts with labels, hints and notes.
@@ -79,8 +82,10 @@ pub struct ProjectArgs {
     pub axes: Option<PathBuf>,
 }
 
+/// The arguments of `build` and `run`: the project and the PMAC output.
 #[derive(clap::Args, Debug, Clone)]
 pub struct CompileArgs {
+    /// The project.
     #[command(flatten)]
     pub project: ProjectArgs,
     /// Also write a PMAC motion program of the program's constant MC_MoveAbsolute/MC_MoveRelative moves.
@@ -91,6 +96,7 @@ pub struct CompileArgs {
     pub pmac_dialect: String,
 }
 
+/// `--lang`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum LangArg {
     /// Instruction list.
@@ -111,6 +117,7 @@ impl From<LangArg> for pipeline::Lang {
     }
 }
 
+/// `--strategy`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum StrategyArg {
     /// IL-instruction method: TM transfers + one FUNC of a static-library function.
@@ -121,6 +128,7 @@ pub enum StrategyArg {
     Auto,
 }
 
+/// `build --emit`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum Emit {
     /// The C project (default): written to the output directory.
@@ -129,22 +137,26 @@ pub enum Emit {
     Il,
 }
 
+/// `build --report`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum ReportFormat {
     /// One JSON object with a `blocks` array.
     Json,
 }
 
+/// The commands.
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Check sources: every check that `build` runs (parsing, semantics, block calls, the target
     /// profile, C generation), in memory; writes nothing.
     Check {
+        /// The project.
         #[command(flatten)]
         project: ProjectArgs,
     },
     /// Compile to a C project (sources, header, runtime, Makefile) in a directory.
     Build {
+        /// The project and the PMAC output.
         #[command(flatten)]
         compile: CompileArgs,
         /// Output directory: ladderc writes only its own files there (see `.ladderc-manifest`).
@@ -163,6 +175,7 @@ pub enum Command {
     },
     /// Build with the system C compiler and run scan cycles.
     Run {
+        /// The project and the PMAC output.
         #[command(flatten)]
         compile: CompileArgs,
         /// Number of scan cycles.
@@ -211,6 +224,7 @@ pub enum Command {
     },
 }
 
+/// `ladderc motion ...`.
 #[derive(Subcommand, Debug)]
 pub enum MotionCommand {
     /// Plan jerk-limited profiles for problems in the oracle's JSON-lines format; prints each problem back
@@ -221,6 +235,7 @@ pub enum MotionCommand {
     },
 }
 
+/// `ladderc drive ...`.
 #[derive(Subcommand, Debug)]
 pub enum DriveCommand {
     /// Compile a drive script into its binary image (Motion and Event pools).
@@ -261,6 +276,7 @@ pub enum DriveCommand {
     },
 }
 
+/// `drive --drive`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum DriveArg {
     /// A motion-lib axis: jerk-limited profiles through the PLCopen blocks.
@@ -278,11 +294,14 @@ impl From<DriveArg> for drive_script::cli::DriveKind {
     }
 }
 
-/// Exit codes.
+/// Exit code: success.
 pub const EXIT_OK: i32 = 0;
+/// Exit code: diagnostics with errors, or a failed program run.
 pub const EXIT_DIAGNOSTICS: i32 = 1;
+/// Exit code: a usage or I/O error.
 pub const EXIT_USAGE: i32 = 2;
 
+/// Parses the process's arguments, runs the command and prints; returns the exit code.
 pub fn main() -> i32 {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
@@ -569,7 +588,7 @@ fn build(
             let mut extra = Vec::new();
             let pmac = pmac_text(c, &mut g, &mut extra);
             let code = finish(g.sources(), g.diagnostics(), extra, format);
-            let (lowered, program) = (g.lowered(), g.program());
+            let program = g.program();
             if let Err(code) = write_pmac(c, pmac, code, format) {
                 return code;
             }

@@ -156,8 +156,12 @@ pub struct Lowered {
     pub all_units: Vec<CompilationUnit>,
     /// Where the user's units start in `all_units`.
     user_start: usize,
+    /// What parameter passing produced: per block type its method and figures, the synthesised
+    /// functions, the static-library layouts.
     pub lowering: lower::Lowered,
+    /// The parameter templates (built-in and the user's).
     pub library: Library,
+    /// The target profile.
     pub profile: c_backend::TargetProfile,
     /// Whether the program uses PLCopen blocks (then the motion runtime is linked).
     pub uses_blocks: bool,
@@ -407,7 +411,11 @@ impl Session {
         }
         if self.disk {
             if let Ok(entries) = std::fs::read_dir(dir) {
-                in_memory.extend(entries.filter_map(|e| e.ok().map(|e| e.path())).filter(|p| is_xml(p)));
+                in_memory.extend(
+                    entries
+                        .filter_map(|e| e.ok().map(|e| e.path()))
+                        .filter(|p| is_xml(p)),
+                );
             }
         }
         in_memory.sort();

@@ -54,18 +54,32 @@ fn parse(csv: &str) -> Result<Trace, String> {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Event {
     /// The block started (and no other block ended there).
-    Start { row: usize, block: String },
+    Start {
+        /// The trace row.
+        row: usize,
+        /// The block (its column prefix).
+        block: String,
+    },
     /// `from` ended (Done or CommandAborted) and `to` started in the same cycle (or the next one).
     Junction {
+        /// The trace row.
         row: usize,
+        /// The block that ended.
         from: String,
+        /// The block that started.
         to: String,
     },
     /// The block ended and no other block started there.
-    End { row: usize, block: String },
+    End {
+        /// The trace row.
+        row: usize,
+        /// The block (its column prefix).
+        block: String,
+    },
 }
 
 impl Event {
+    /// The trace row of the event.
     pub fn row(&self) -> usize {
         match self {
             Event::Start { row, .. } | Event::Junction { row, .. } | Event::End { row, .. } => *row,

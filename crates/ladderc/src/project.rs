@@ -130,7 +130,10 @@ impl Project {
 
     /// A project of source files on disk (`-`: standard input), read as the command line reads them: every
     /// file not given with [`Project::with_file`] comes from the file system.
-    pub fn from_paths(paths: impl IntoIterator<Item = impl Into<PathBuf>>, options: Options) -> Project {
+    pub fn from_paths(
+        paths: impl IntoIterator<Item = impl Into<PathBuf>>,
+        options: Options,
+    ) -> Project {
         Project {
             session: Session::new(),
             inputs: paths.into_iter().map(Into::into).collect(),
@@ -202,10 +205,7 @@ impl ParsedProject {
 
     /// The semantic checks, with the PLCopen block interfaces and the axes file when the program uses blocks.
     pub fn check(mut self) -> Result<CheckedProject, Failed> {
-        match self
-            .session
-            .check(self.parsed, &self.inputs, &self.options)
-        {
+        match self.session.check(self.parsed, &self.inputs, &self.options) {
             Some(checked) => Ok(CheckedProject {
                 session: self.session,
                 options: self.options,
@@ -372,6 +372,14 @@ macro_rules! diagnostics_access {
             /// The sources and the diagnostics (sorted), e.g. to render them.
             pub fn into_diagnostics(self) -> (SourceMap, Vec<Diagnostic>) {
                 (self.session.map, self.session.diags.into_sorted())
+            }
+        }
+        impl std::fmt::Debug for $t {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.debug_struct(stringify!($t))
+                    .field("files", &self.session.map.files().count())
+                    .field("diagnostics", &self.session.diags.len())
+                    .finish_non_exhaustive()
             }
         }
     )*};
