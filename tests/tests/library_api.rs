@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 
 const BLINK: &str = "PROGRAM blink\nVAR\n    lamp : BOOL;\n    n : INT;\nEND_VAR\n    LD lamp\n    STN lamp\n    LD n\n    ADD 1\n    ST n\nEND_PROGRAM\n";
 
-const MOVE: &str = "PROGRAM main\nVAR\n    power : MC_Power;\n    move : MC_MoveAbsolute;\n    on : BOOL;\n    done : BOOL;\nEND_VAR\n    CAL power(Axis := X1, Enable := TRUE, EnablePositive := TRUE, EnableNegative := TRUE, Status => on)\n    CAL move(Axis := X1, Execute := on, Position := 100.0, Velocity := 50.0, Acceleration := 200.0,\n             Deceleration := 200.0, Jerk := 2000.0, Done => done)\nEND_PROGRAM\n";
+const MOVE: &str = "PROGRAM main\nVAR\n    power : MC_Power;\n    move : MC_MoveAbsolute;\n    powered : BOOL;\n    done : BOOL;\nEND_VAR\n    CAL power(Axis := X1, Enable := TRUE, EnablePositive := TRUE, EnableNegative := TRUE, Status => powered)\n    CAL move(Axis := X1, Execute := powered, Position := 100.0, Velocity := 50.0, Acceleration := 200.0,\n             Deceleration := 200.0, Jerk := 2000.0, Done => done)\nEND_PROGRAM\n";
 
 const AXES: &str = r#"{ "cycle_ms": 2, "axes": [ { "name": "X1", "velocity": 200, "acceleration": 1000, "deceleration": 1000, "jerk": 10000 } ] }"#;
 

@@ -28,7 +28,7 @@ use std::path::{Path, PathBuf};
 /// use ladderc::{Options, Project};
 ///
 /// let project = Project::from_sources(
-///     [("lamp.il", "PROGRAM lamp\nVAR\n  on : BOOL;\nEND_VAR\n  LD TRUE\n  ST on\nEND_PROGRAM\n")],
+///     [("lamp.il", "PROGRAM lamp\nVAR\n  lit : BOOL;\nEND_VAR\n  LD TRUE\n  ST lit\nEND_PROGRAM\n")],
 ///     Options::default(),
 /// );
 /// let generated = project.compile().expect("no errors");
@@ -96,7 +96,6 @@ pub struct GeneratedProject {
 /// assert_eq!(e.code, ladderc::diagnostics::code::E1001);
 /// assert_eq!(failed.line_col(e), Some((2, 6)));
 /// ```
-#[derive(Debug)]
 pub struct Failed {
     /// Every text the stages read (to render the diagnostics' excerpts).
     pub sources: SourceMap,
@@ -148,8 +147,8 @@ impl Project {
     /// ```
     /// use ladderc::{Options, Project};
     ///
-    /// let il = "PROGRAM main\nVAR\n  power : MC_Power;\n  on : BOOL;\nEND_VAR\n\
-    ///           CAL power(Axis := X1, Enable := TRUE, EnablePositive := TRUE, EnableNegative := TRUE, Status => on)\n\
+    /// let il = "PROGRAM main\nVAR\n  power : MC_Power;\n  powered : BOOL;\nEND_VAR\n\
+    ///           CAL power(Axis := X1, Enable := TRUE, EnablePositive := TRUE, EnableNegative := TRUE, Status => powered)\n\
     ///           END_PROGRAM\n";
     /// let axes = r#"{ "cycle_ms": 2, "axes": [ { "name": "X1", "velocity": 200, "acceleration": 1000,
     ///                 "deceleration": 1000, "jerk": 10000 } ] }"#;
@@ -437,6 +436,13 @@ pub fn render(map: &SourceMap, diags: &[Diagnostic], format: MessageFormat) -> S
 impl std::fmt::Display for Failed {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(self.render(MessageFormat::Short).trim_end())
+    }
+}
+
+impl std::fmt::Debug for Failed {
+    /// The diagnostics in the short format (not the sources).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Failed:\n{self}")
     }
 }
 
