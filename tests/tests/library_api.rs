@@ -94,8 +94,7 @@ fn an_undeclared_variable_is_a_diagnostic_value_at_its_line() {
         "PROGRAM p\nVAR\n    a : INT;\nEND_VAR\n    LD a\n    ADD ghost\n    ST a\nEND_PROGRAM\n";
     let failed = Project::from_sources([("p.il", src)], Options::default())
         .compile()
-        .err()
-        .expect("ghost is undeclared");
+        .expect_err("ghost is undeclared");
     let errors: Vec<_> = failed.errors().collect();
     assert_eq!(errors.len(), 1, "{}", failed);
     assert_eq!(errors[0].code, code::E1001);
@@ -141,38 +140,38 @@ fn motion_with_the_axes_file_in_memory() {
     // Without its axes file, X1 is undeclared.
     let failed = Project::from_sources([("cell/main.il", MOVE)], Options::default())
         .compile()
-        .err()
-        .expect("X1 needs the axes file");
+        .expect_err("X1 needs the axes file");
     assert!(failed.errors().all(|d| d.code == code::E1001), "{failed}");
 }
 
 #[test]
 fn the_profile_and_templates_are_read_from_memory() {
-    let mut opts = Options::default();
-    opts.profile = Some("target.json".into());
+    let opts = Options {
+        profile: Some("target.json".into()),
+        ..Default::default()
+    };
     let bad = Project::from_sources([("blink.il", BLINK)], opts.clone())
         .with_file("target.json", "{ not json")
         .compile()
-        .err()
-        .expect("a bad profile");
+        .expect_err("a bad profile");
     assert_eq!(bad.errors().next().unwrap().code, code::E2003, "{bad}");
     // A profile that is named but not given is an I/O error, whatever the disk holds.
     let missing = Project::from_sources([("blink.il", BLINK)], opts)
         .compile()
-        .err()
-        .expect("no profile given");
+        .expect_err("no profile given");
     let e = missing.errors().next().unwrap();
     assert_eq!(e.code, code::E9001);
     assert!(e.message.contains("not given in memory"), "{}", e.message);
 
     // A template of the templates folder given in memory is loaded and checked (here: its schema).
-    let mut opts = Options::default();
-    opts.templates = Some("tpl".into());
+    let opts = Options {
+        templates: Some("tpl".into()),
+        ..Default::default()
+    };
     let failed = Project::from_sources([("blink.il", BLINK)], opts)
         .with_file("tpl/MC_Bad.xml", "<template")
         .compile()
-        .err()
-        .expect("a broken template");
+        .expect_err("a broken template");
     assert!(
         failed
             .diagnostics
@@ -204,27 +203,28 @@ fn the_api_neither_reads_nor_writes_the_file_system() {
     // The default axes file beside the input exists on disk, but is not read: X1 stays undeclared.
     let failed = Project::from_sources([(main.clone(), MOVE)], Options::default())
         .compile()
-        .err()
-        .expect("the disk's axes file is not read");
+        .expect_err("the disk's axes file is not read");
     assert!(failed.errors().any(|d| d.code == code::E1001), "{failed}");
     // An explicit axes path on disk is not read either.
-    let mut opts = Options::default();
-    opts.axes = Some(root.join("main.axes.json"));
+    let opts = Options {
+        axes: Some(root.join("main.axes.json")),
+        ..Default::default()
+    };
     let failed = Project::from_sources([(main.clone(), MOVE)], opts)
         .compile()
-        .err()
-        .expect("the disk's axes file is not read");
+        .expect_err("the disk's axes file is not read");
     let e = failed.errors().next().unwrap();
     assert_eq!(e.code, code::E9001, "{failed}");
     assert!(e.message.contains("not given in memory"), "{failed}");
     // Standard input is not read.
-    let mut opts = Options::default();
-    opts.lang = Some(ladderc::Lang::Il);
+    let opts = Options {
+        lang: Some(ladderc::Lang::Il),
+        ..Default::default()
+    };
     let failed = Project::from_paths(["-"], opts)
         .with_disk_fallback(false)
         .parse()
-        .err()
-        .expect("standard input is not read");
+        .expect_err("standard input is not read");
     assert_eq!(failed.errors().next().unwrap().code, code::E9001);
     // The report without measurements and the PMAC program are values too.
     let mut motion = Project::from_sources([(main.clone(), MOVE)], Options::default())

@@ -593,7 +593,7 @@ fn build(
                 return code;
             }
             let mut extra = Vec::new();
-            if let Err(code) = add_staticlib(&program, &mut extra, format) {
+            if let Err(code) = add_staticlib(program, &mut extra, format) {
                 return code;
             }
             if report == Some(ReportFormat::Json) {
@@ -762,7 +762,7 @@ fn run_program(
         }
     }
     let mut extra = Vec::new();
-    if let Err(code) = add_staticlib(&program, &mut extra, format) {
+    if let Err(code) = add_staticlib(program, &mut extra, format) {
         return code;
     }
     let work = match tempfile::Builder::new().prefix("ladderc-run-").tempdir() {
@@ -792,7 +792,7 @@ fn run_program(
             "-g".into(),
         ];
     }
-    let exe = match c_backend::build_with(&program, work.path(), &bopts) {
+    let exe = match c_backend::build_with(program, work.path(), &bopts) {
         Ok(e) => e,
         Err(e) => {
             return io_error(

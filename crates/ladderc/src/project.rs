@@ -90,8 +90,7 @@ pub struct GeneratedProject {
 /// let failed = Project::from_sources([("missing.il", "PROGRAM p\n  LD x\nEND_PROGRAM\n")], Options::default())
 ///     .with_disk_fallback(false)
 ///     .check()
-///     .err()
-///     .expect("x is undeclared");
+///     .expect_err("x is undeclared");
 /// let e = failed.errors().next().unwrap();
 /// assert_eq!(e.code, ladderc::diagnostics::code::E1001);
 /// assert_eq!(failed.line_col(e), Some((2, 6)));
