@@ -43,12 +43,14 @@ pub struct EmbeddedFunction {
 /// Generator options.
 #[derive(Debug, Clone, Default)]
 pub struct Options {
+    /// Static-library functions (the IL method of paper A) put into `embedded.c`.
     pub embedded: Vec<EmbeddedFunction>,
 }
 
 /// The generated C project: `(relative path, contents)` pairs.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct CProgram {
+    /// Every generated file `(relative path, text)`: sources, headers, the runtime, the Makefile.
     pub files: Vec<(String, String)>,
     /// Linker arguments after the sources (e.g. `libmotion_lib.a -lpthread -ldl -lm`), relative to the
     /// project directory; files named here are not generated text and are put there by the caller.

@@ -9,6 +9,7 @@ use crate::{CProgram, EXECUTABLE};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// Why a generated project could not be written, built or run.
 #[derive(Debug, thiserror::Error)]
 pub enum BuildError {
     #[error("cannot write `{path}`: {message}")]
@@ -152,8 +153,11 @@ pub fn build_with(
 /// How to run a built program (each field maps to the harness option of the same name).
 #[derive(Debug, Clone)]
 pub struct RunOptions {
+    /// Scan cycles to run.
     pub cycles: u64,
+    /// The scan cycle in ms (the time base of timers).
     pub cycle_ms: f64,
+    /// CSV rows `cycle,variable,value`, applied before that cycle.
     pub stimulus: Option<PathBuf>,
     /// `None`: the trace goes to standard output (returned in [`RunOutput::stdout`]).
     pub trace: Option<PathBuf>,
@@ -173,15 +177,19 @@ impl Default for RunOptions {
     }
 }
 
+/// What a run of a built program gave.
 #[derive(Debug, Clone)]
 pub struct RunOutput {
     /// The exit code (`None` if killed by a signal).
     pub status: Option<i32>,
+    /// Its standard output (the trace when no trace file is given).
     pub stdout: String,
+    /// Its standard error.
     pub stderr: String,
 }
 
 impl RunOutput {
+    /// Whether it exited with status 0.
     pub fn success(&self) -> bool {
         self.status == Some(0)
     }
