@@ -8,6 +8,7 @@
 //! behaviour for any input values (wrapping integer arithmetic, defined division by zero), contains no
 //! user text except inside octal-escaped string literals, and is generated in time linear in the input.
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 mod budget;
 pub mod ctypes;
