@@ -12,14 +12,36 @@ use std::process::Command;
 /// Why a generated project could not be written, built or run.
 #[derive(Debug, thiserror::Error)]
 pub enum BuildError {
+    /// A file of the project could not be written.
     #[error("cannot write `{path}`: {message}")]
-    Write { path: String, message: String },
+    Write {
+        /// The file.
+        path: String,
+        /// The I/O error.
+        message: String,
+    },
+    /// The C compiler could not be started.
     #[error("cannot start the C compiler `{cc}`: {message}")]
-    Spawn { cc: String, message: String },
+    Spawn {
+        /// The compiler command.
+        cc: String,
+        /// The I/O error.
+        message: String,
+    },
+    /// The C compiler reported errors.
     #[error("the C compiler failed:\n{output}")]
-    Compile { output: String },
+    Compile {
+        /// Its messages.
+        output: String,
+    },
+    /// The built program could not be started.
     #[error("cannot run `{path}`: {message}")]
-    Run { path: String, message: String },
+    Run {
+        /// The executable.
+        path: String,
+        /// The I/O error.
+        message: String,
+    },
 }
 
 /// Extra compiler settings (tests add warnings-as-errors and sanitizers).
