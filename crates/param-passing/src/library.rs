@@ -148,12 +148,14 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ),
 ];
 
+/// The parameter templates a program can call, by block name: the built-ins and the user's.
 #[derive(Debug, Default, Clone)]
 pub struct Library {
     templates: Vec<Template>,
 }
 
 impl Library {
+    /// An empty library.
     pub fn new() -> Self {
         Self::default()
     }
@@ -279,11 +281,13 @@ impl Library {
         self.templates.push(t);
         Some(block)
     }
+    /// The template of `block` (case-insensitive).
     pub fn get(&self, block: &str) -> Option<&Template> {
         self.templates
             .iter()
             .find(|t| t.block.eq_ignore_ascii_case(block))
     }
+    /// Every template.
     pub fn templates(&self) -> &[Template] {
         &self.templates
     }
