@@ -8,6 +8,7 @@
 //! behaviour for any input values (wrapping integer arithmetic, defined division by zero), contains no
 //! user text except inside octal-escaped string literals, and is generated in time linear in the input.
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 mod budget;
 pub mod ctypes;
@@ -43,12 +44,14 @@ pub struct EmbeddedFunction {
 /// Generator options.
 #[derive(Debug, Clone, Default)]
 pub struct Options {
+    /// Static-library functions (the IL method of paper A) put into `embedded.c`.
     pub embedded: Vec<EmbeddedFunction>,
 }
 
 /// The generated C project: `(relative path, contents)` pairs.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct CProgram {
+    /// Every generated file `(relative path, text)`: sources, headers, the runtime, the Makefile.
     pub files: Vec<(String, String)>,
     /// Linker arguments after the sources (e.g. `libmotion_lib.a -lpthread -ldl -lm`), relative to the
     /// project directory; files named here are not generated text and are put there by the caller.

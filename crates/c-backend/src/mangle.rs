@@ -53,9 +53,11 @@ pub fn label(name: &str) -> String {
 pub fn global_free(name: &str) -> String {
     format!("g_{}", core(name))
 }
+/// A configuration global: `gc<c>_x`.
 pub fn global_config(config: usize, name: &str) -> String {
     format!("gc{config}_{}", core(name))
 }
+/// A resource global: `gr<c>_<r>_x`.
 pub fn global_resource(config: usize, resource: usize, name: &str) -> String {
     format!("gr{config}_{resource}_{}", core(name))
 }
@@ -63,6 +65,7 @@ pub fn global_resource(config: usize, resource: usize, name: &str) -> String {
 pub fn program_instance(config: usize, resource: usize, name: &str) -> String {
     format!("pi{config}_{resource}_{}", core(name))
 }
+/// The implicit instance of a program: `pi_name`.
 pub fn implicit_instance(name: &str) -> String {
     format!("pi_{}", core(name))
 }

@@ -18,9 +18,13 @@ use std::fmt::Write as _;
 /// One configured axis (user units).
 #[derive(Debug, Clone, PartialEq)]
 pub struct MotionAxis {
+    /// The global `AXIS_REF` variable's name.
     pub name: String,
+    /// Velocity limit (units/s).
     pub velocity_limit: f64,
+    /// Acceleration limit (units/s²).
     pub acceleration_limit: f64,
+    /// Deceleration limit (units/s²).
     pub deceleration_limit: f64,
     /// 0: no jerk limit.
     pub jerk_limit: f64,
@@ -35,7 +39,9 @@ pub struct MotionAxis {
 /// One configured axes group: its members as `(axis index, identity in group 0=X 1=Y 2=Z ...)`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct MotionGroup {
+    /// The global `AXES_GROUP_REF` variable's name.
     pub name: String,
+    /// `(axis index, identity in group)` per member.
     pub members: Vec<(u32, u32)>,
 }
 
@@ -46,7 +52,9 @@ pub struct MotionRuntime {
     pub cycle_seconds: f64,
     /// Buffered commands per axis and group.
     pub queue_depth: u32,
+    /// The axes, in configuration order (engine index).
     pub axes: Vec<MotionAxis>,
+    /// The axes groups.
     pub groups: Vec<MotionGroup>,
     /// `motion_lib.h` (the motion library's C ABI).
     pub header: String,

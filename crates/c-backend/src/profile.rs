@@ -13,10 +13,13 @@ use std::path::Path;
 /// The default profile as shipped (documented in the crate README).
 pub const DEFAULT_PROFILE_JSON: &str = include_str!("../profiles/default.json");
 
+/// Byte order of multi-byte addresses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum ByteOrder {
+    /// Least significant byte first.
     Little,
+    /// Most significant byte first.
     Big,
 }
 
@@ -44,6 +47,7 @@ pub enum AddressUnit {
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TargetProfile {
+    /// The profile's name (shown in the generated header).
     pub name: String,
     /// Size of the %I area in bytes.
     pub input_bytes: u32,
@@ -53,10 +57,13 @@ pub struct TargetProfile {
     pub memory_bytes: u32,
     /// Byte order of multi-byte addresses (%IW, %QD, %ML ...).
     pub byte_order: ByteOrder,
+    /// Which bit of a byte `%IX3.0` names.
     pub bit_numbering: BitNumbering,
+    /// What the number of `%IW2` counts.
     pub address_unit: AddressUnit,
     /// The TM (temporary) area for parameter passing: bytes `tm_offset..tm_offset + tm_bytes` of %M.
     pub tm_offset: u32,
+    /// The TM area's size in bytes.
     pub tm_bytes: u32,
     /// A multi-byte address must start at a multiple of `min(alignment, its size)` bytes (1: no rule).
     pub alignment: u32,
@@ -74,12 +81,21 @@ fn default_data_bytes() -> u64 {
     DEFAULT_DATA_BYTES
 }
 
+/// Why a profile was refused.
 #[derive(Debug, thiserror::Error)]
 pub enum ProfileError {
+    /// The file could not be read.
     #[error("cannot read the target profile `{path}`: {message}")]
-    Io { path: String, message: String },
+    Io {
+        /// The file.
+        path: String,
+        /// The I/O error.
+        message: String,
+    },
+    /// The text is not a profile's JSON.
     #[error("the target profile is not valid JSON for a profile: {0}")]
     Json(String),
+    /// The values contradict each other or are out of range.
     #[error("the target profile is inconsistent: {0}")]
     Invalid(String),
 }
@@ -106,6 +122,7 @@ impl Default for TargetProfile {
 /// Where a direct address (or an AT-located variable) lives.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Located {
+    /// The area (`%I`, `%Q`, `%M`).
     pub area: Area,
     /// Byte offset in the area.
     pub offset: u32,
@@ -119,6 +136,7 @@ pub struct Located {
 const MAX_AREA: u32 = 64 * 1024 * 1024;
 
 impl TargetProfile {
+    /// A profile from its JSON text, validated.
     pub fn from_json(text: &str) -> Result<Self, ProfileError> {
         let p: TargetProfile =
             serde_json::from_str(text).map_err(|e| ProfileError::Json(e.to_string()))?;
@@ -126,6 +144,7 @@ impl TargetProfile {
         Ok(p)
     }
 
+    /// A profile from a JSON file, validated.
     pub fn load(path: &Path) -> Result<Self, ProfileError> {
         let text = std::fs::read_to_string(path).map_err(|e| ProfileError::Io {
             path: path.display().to_string(),
@@ -156,10 +175,12 @@ impl TargetProfile {
         }
     }
 
+    /// The profile as pretty JSON.
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(self).unwrap_or_default()
     }
 
+    /// Checks the sizes, the TM window, the alignment and the name.
     pub fn validate(&self) -> Result<(), ProfileError> {
         let bad = |m: String| Err(ProfileError::Invalid(m));
         for (name, size) in [
@@ -197,6 +218,7 @@ impl TargetProfile {
         Ok(())
     }
 
+    /// The size of `area` in bytes.
     pub fn area_size(&self, area: Area) -> u32 {
         match area {
             Area::Input => self.input_bytes,
@@ -306,6 +328,7 @@ impl TargetProfile {
     }
 }
 
+/// The prefix of an area (`%I`, `%Q`, `%M`).
 pub fn area_name(area: Area) -> &'static str {
     match area {
         Area::Input => "%I",

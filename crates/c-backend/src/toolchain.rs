@@ -9,16 +9,39 @@ use crate::{CProgram, EXECUTABLE};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// Why a generated project could not be written, built or run.
 #[derive(Debug, thiserror::Error)]
 pub enum BuildError {
+    /// A file of the project could not be written.
     #[error("cannot write `{path}`: {message}")]
-    Write { path: String, message: String },
+    Write {
+        /// The file.
+        path: String,
+        /// The I/O error.
+        message: String,
+    },
+    /// The C compiler could not be started.
     #[error("cannot start the C compiler `{cc}`: {message}")]
-    Spawn { cc: String, message: String },
+    Spawn {
+        /// The compiler command.
+        cc: String,
+        /// The I/O error.
+        message: String,
+    },
+    /// The C compiler reported errors.
     #[error("the C compiler failed:\n{output}")]
-    Compile { output: String },
+    Compile {
+        /// Its messages.
+        output: String,
+    },
+    /// The built program could not be started.
     #[error("cannot run `{path}`: {message}")]
-    Run { path: String, message: String },
+    Run {
+        /// The executable.
+        path: String,
+        /// The I/O error.
+        message: String,
+    },
 }
 
 /// Extra compiler settings (tests add warnings-as-errors and sanitizers).
@@ -152,8 +175,11 @@ pub fn build_with(
 /// How to run a built program (each field maps to the harness option of the same name).
 #[derive(Debug, Clone)]
 pub struct RunOptions {
+    /// Scan cycles to run.
     pub cycles: u64,
+    /// The scan cycle in ms (the time base of timers).
     pub cycle_ms: f64,
+    /// CSV rows `cycle,variable,value`, applied before that cycle.
     pub stimulus: Option<PathBuf>,
     /// `None`: the trace goes to standard output (returned in [`RunOutput::stdout`]).
     pub trace: Option<PathBuf>,
@@ -173,15 +199,19 @@ impl Default for RunOptions {
     }
 }
 
+/// What a run of a built program gave.
 #[derive(Debug, Clone)]
 pub struct RunOutput {
     /// The exit code (`None` if killed by a signal).
     pub status: Option<i32>,
+    /// Its standard output (the trace when no trace file is given).
     pub stdout: String,
+    /// Its standard error.
     pub stderr: String,
 }
 
 impl RunOutput {
+    /// Whether it exited with status 0.
     pub fn success(&self) -> bool {
         self.status == Some(0)
     }

@@ -12,10 +12,14 @@ impl std::fmt::Display for Code {
     }
 }
 
+/// A code's entry in the table: its title and explanation (from `explanations/CODE.md`).
 #[derive(Debug, Clone, Copy)]
 pub struct CodeInfo {
+    /// The code.
     pub code: Code,
+    /// The one-line title (the file's first heading).
     pub title: &'static str,
+    /// The whole explanation (Markdown).
     pub explanation: &'static str,
 }
 
@@ -36,6 +40,7 @@ pub fn explain(code: &str) -> Option<&'static str> {
     lookup(code).map(|c| c.explanation)
 }
 
+/// Every code's entry, in code order.
 pub fn all() -> &'static [CodeInfo] {
     generated::ALL
 }

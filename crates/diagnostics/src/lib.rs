@@ -9,6 +9,7 @@
 //! Invariants: a span always refers to a file of the source map and lies on UTF-8 boundaries of its text;
 //! line and column are 1-based, columns count characters (not bytes).
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 mod codes;
 mod diagnostic;
@@ -38,36 +39,49 @@ pub struct Diagnostics {
 }
 
 impl Diagnostics {
+    /// An empty list.
     pub fn new() -> Self {
         Self::default()
     }
+    /// Adds one.
     pub fn push(&mut self, d: Diagnostic) {
         self.list.push(d);
     }
+    /// Adds several.
     pub fn extend(&mut self, ds: impl IntoIterator<Item = Diagnostic>) {
         self.list.extend(ds);
     }
+    /// Whether one is an error.
     pub fn has_errors(&self) -> bool {
         self.list.iter().any(|d| d.severity == Severity::Error)
     }
+    /// How many are warnings.
     pub fn warning_count(&self) -> usize {
         self.list
             .iter()
             .filter(|d| d.severity == Severity::Warning)
             .count()
     }
+    /// How many are errors.
     pub fn error_count(&self) -> usize {
         self.list
             .iter()
             .filter(|d| d.severity == Severity::Error)
             .count()
     }
+    /// The diagnostics in the order they were reported.
+    pub fn as_slice(&self) -> &[Diagnostic] {
+        &self.list
+    }
+    /// The diagnostics, in the order they were reported.
     pub fn iter(&self) -> std::slice::Iter<'_, Diagnostic> {
         self.list.iter()
     }
+    /// How many there are.
     pub fn len(&self) -> usize {
         self.list.len()
     }
+    /// Whether there are none.
     pub fn is_empty(&self) -> bool {
         self.list.is_empty()
     }
@@ -80,6 +94,7 @@ impl Diagnostics {
         });
         self.list
     }
+    /// The diagnostics, in the order they were reported.
     pub fn into_vec(self) -> Vec<Diagnostic> {
         self.list
     }

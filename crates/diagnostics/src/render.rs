@@ -8,10 +8,14 @@ use codespan_reporting::term;
 use serde::Serialize;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+/// How diagnostics are printed (`--message-format`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MessageFormat {
+    /// Source excerpts with labels, hints and notes.
     Human,
+    /// One line each: `file:line:col: error[CODE]: message`.
     Short,
+    /// JSON lines ([`JSON_SCHEMA`]).
     Json,
 }
 
@@ -508,6 +512,7 @@ pub fn render(map: &SourceMap, diags: &[Diagnostic], format: MessageFormat) -> S
 /// What a `run` did, for the summary: cycles, simulated and wall time, their ratio.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct RunSummary {
+    /// The scan cycles run.
     pub cycles: u64,
     /// `cycles` times the scan cycle, in seconds.
     pub simulated_s: f64,
@@ -520,7 +525,9 @@ pub struct RunSummary {
 /// The last JSON line of a command: how many errors and warnings it reported, the files it wrote.
 #[derive(Debug, Clone, Serialize, PartialEq, Default)]
 pub struct Summary {
+    /// Error diagnostics reported.
     pub errors: usize,
+    /// Warning diagnostics reported.
     pub warnings: usize,
     /// Paths as given on the command line, in the order they were written.
     pub files: Vec<String>,

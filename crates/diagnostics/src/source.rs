@@ -2,14 +2,18 @@
 
 use crate::span::FileId;
 
+/// One file: its name (as diagnostics show it), its text and its line table.
 #[derive(Debug, Clone)]
 pub struct SourceFile {
+    /// The name diagnostics show (a path as given, `<stdin>`, `<PLCopen blocks>`).
     pub name: String,
+    /// The text.
     pub text: String,
     line_starts: Vec<usize>,
 }
 
 impl SourceFile {
+    /// A file and its line table.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> Self {
         let text = text.into();
         let mut line_starts = vec![0];
@@ -52,6 +56,7 @@ impl SourceFile {
         }
         offset
     }
+    /// The byte offset of each line's start.
     pub fn line_starts(&self) -> &[usize] {
         &self.line_starts
     }
@@ -64,16 +69,20 @@ pub struct SourceMap {
 }
 
 impl SourceMap {
+    /// An empty map.
     pub fn new() -> Self {
         Self::default()
     }
+    /// Adds a file; its id.
     pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
         self.files.push(SourceFile::new(name, text));
         FileId(self.files.len() as u32 - 1)
     }
+    /// The file `id` (which this map gave out).
     pub fn get(&self, id: FileId) -> &SourceFile {
         &self.files[id.0 as usize]
     }
+    /// Every file with its id, in the order they were added.
     pub fn files(&self) -> impl Iterator<Item = (FileId, &SourceFile)> {
         self.files
             .iter()

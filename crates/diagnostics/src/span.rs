@@ -9,12 +9,16 @@ pub struct FileId(pub u32);
 /// Half-open byte range `start..end` in file `file`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Default)]
 pub struct Span {
+    /// The file.
     pub file: FileId,
+    /// The first byte.
     pub start: u32,
+    /// One past the last byte.
     pub end: u32,
 }
 
 impl Span {
+    /// The span `start..end` of `file`.
     pub fn new(file: FileId, start: usize, end: usize) -> Self {
         Span {
             file,
@@ -30,12 +34,15 @@ impl Span {
             end: self.end.max(other.end),
         }
     }
+    /// The byte range, for slicing the text.
     pub fn range(self) -> std::ops::Range<usize> {
         self.start as usize..self.end as usize
     }
+    /// Its length in bytes.
     pub fn len(self) -> usize {
         (self.end - self.start) as usize
     }
+    /// Whether it covers no byte (a position).
     pub fn is_empty(self) -> bool {
         self.end == self.start
     }

@@ -3,7 +3,7 @@
 //! Stages: [`lexer`] (logos, one case-insensitive keyword table) -> [`layout`] (significant line ends,
 //! repair of unclosed blocks) -> [`parser`] (lalrpop grammar with error recovery) -> [`ast`] -> `sema`
 //! (symbols, types, current-result typing, labels). Every node carries a byte [`Span`].
-//! [`print`] writes a tree back as IL; [`testgen`] generates large valid programs for tests and benches.
+//! [`mod@print`] writes a tree back as IL; [`testgen`] generates large valid programs for tests and benches.
 //! [`st`] is the Structured Text front end: ST is parsed and lowered to this IL tree.
 #![forbid(unsafe_code)]
 

@@ -1,5 +1,6 @@
 //! Declarations: `<dataType>`, `<type>`, `<variable>`, `<initialValue>` and the interface variable lists
-//! of a POU, turned into [`ast::TypeDecl`], [`ast::TypeRef`], [`ast::VarDecl`] and [`ast::VarBlock`].
+//! of a POU, turned into [`il_frontend::ast::TypeDecl`], [`il_frontend::ast::TypeRef`], [`il_frontend::ast::VarDecl`] and
+//! [`il_frontend::ast::VarBlock`].
 //!
 //! Input: elements of the `types` and `interface` parts (tc6_0201, tc6_0200 and v1.0 spell them alike).
 //! Output: syntax-tree declarations whose spans point at the `<variable>`/`<dataType>` start tags and

@@ -534,7 +534,7 @@ fn networks(nodes: &[Node], conts: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize
 }
 
 /// Strongly connected components (iterative Tarjan) of the subgraph `net` with edges `deps[i]`
-/// (i depends on each of deps[i]). Returns the components with more than one node or a self-loop.
+/// (`i` depends on each of `deps[i]`). Returns the components with more than one node or a self-loop.
 pub fn cycles(net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize>> {
     let mut index: HashMap<usize, usize> = HashMap::new();
     let mut low: HashMap<usize, usize> = HashMap::new();

@@ -1,4 +1,4 @@
-//! The project level: `<project>` -> [`ast::CompilationUnit`].
+//! The project level: `<project>` -> [`il_frontend::ast::CompilationUnit`].
 //!
 //! Input: the element tree of a TC6 project (tc6_0201, tc6_0200, or v1.0 `tc6.xsd`, read leniently).
 //! Output: one `DataTypes` item for `<dataTypes>`, one `Pou` per `<pou>` (bodies lowered by

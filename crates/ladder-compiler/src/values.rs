@@ -2,7 +2,7 @@
 //! variable accesses, direct addresses, literals (with type prefixes, durations, v1.0 `hh:mm:ss.ffffff`
 //! intervals).
 //!
-//! Input: the decoded text and the span it came from. Output: [`ast::Operand`]s whose spans all equal
+//! Input: the decoded text and the span it came from. Output: [`il_frontend::ast::Operand`]s whose spans all equal
 //! the given span (the XML element or attribute), or `None` when the text is not a single operand (the
 //! caller reports E3011). Invariants: no panics on any input; integers out of range give `None`.
 

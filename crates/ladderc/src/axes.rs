@@ -85,10 +85,13 @@ struct MemberRepr {
 /// One configured axis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Axis {
+    /// The global `AXIS_REF` variable the axis becomes (`X1`).
     pub name: String,
+    /// The user unit (`mm`, `deg`), shown in plots and the run summary.
     pub unit: Option<String>,
     /// Encoder counts per user unit (for drives and the PMAC backend; the engine works in user units).
     pub counts_per_unit: f64,
+    /// The axis limits and settings the motion runtime gets.
     pub limits: c_backend::motion::MotionAxis,
 }
 
@@ -97,8 +100,11 @@ pub struct Axis {
 pub struct AxisConfig {
     /// The engine (= scan) cycle; `None`: the scan cycle of `run` (`--cycle-ms`, default 10 ms).
     pub cycle_ms: Option<f64>,
+    /// The motion queue depth per axis and group (buffered blocks).
     pub queue_depth: u32,
+    /// The axes, in file order.
     pub axes: Vec<Axis>,
+    /// The axes groups (Part 4), each a global `AXES_GROUP_REF`.
     pub groups: Vec<c_backend::motion::MotionGroup>,
 }
 

@@ -5,12 +5,14 @@
 //! failed run, 2 usage and I/O errors (a usage error is diagnostic E9200, in JSON under
 //! `--message-format json`). Invariant: a closed standard output ends the command quietly ([`crate::stdio`]).
 
+use crate::project::{CheckedProject, Failed, GeneratedProject, Project};
 use crate::{output, pipeline, stdio, summary};
 use clap::{Parser, Subcommand, ValueEnum};
 use diagnostics::{render, Diagnostic, MessageFormat, Severity, SourceMap};
 use param_passing::lower::Strategy;
 use std::path::PathBuf;
 
+/// The command line.
 #[derive(Parser, Debug)]
 #[command(
     name = "ladderc",
@@ -25,6 +27,7 @@ pub struct Cli {
     /// At most N diagnostics per file in the human and short formats (0: all); JSON shows all.
     #[arg(long, value_name = "N", default_value_t = diagnostics::DEFAULT_MAX_PER_FILE, global = true)]
     pub max_diagnostics: usize,
+    /// The command.
     #[command(subcommand)]
     pub command: Command,
 }
@@ -32,6 +35,7 @@ pub struct Cli {
 /// The exit codes, shown by `--help`.
 pub const EXIT_CODES_HELP: &str = "Exit codes:\n  0  success\n  1  diagnostics (errors in the sources), or the program run failed\n  2  usage error (E9200) or I/O error (a file that cannot be read or written)";
 
+/// `--message-format`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum Format {
     /// Source excerpts with labels, hints and notes.
@@ -78,8 +82,10 @@ pub struct ProjectArgs {
     pub axes: Option<PathBuf>,
 }
 
+/// The arguments of `build` and `run`: the project and the PMAC output.
 #[derive(clap::Args, Debug, Clone)]
 pub struct CompileArgs {
+    /// The project.
     #[command(flatten)]
     pub project: ProjectArgs,
     /// Also write a PMAC motion program of the program's constant MC_MoveAbsolute/MC_MoveRelative moves.
@@ -90,6 +96,7 @@ pub struct CompileArgs {
     pub pmac_dialect: String,
 }
 
+/// `--lang`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum LangArg {
     /// Instruction list.
@@ -110,6 +117,7 @@ impl From<LangArg> for pipeline::Lang {
     }
 }
 
+/// `--strategy`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum StrategyArg {
     /// IL-instruction method: TM transfers + one FUNC of a static-library function.
@@ -120,6 +128,7 @@ pub enum StrategyArg {
     Auto,
 }
 
+/// `build --emit`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum Emit {
     /// The C project (default): written to the output directory.
@@ -128,22 +137,26 @@ pub enum Emit {
     Il,
 }
 
+/// `build --report`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum ReportFormat {
     /// One JSON object with a `blocks` array.
     Json,
 }
 
+/// The commands.
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Check sources: every check that `build` runs (parsing, semantics, block calls, the target
     /// profile, C generation), in memory; writes nothing.
     Check {
+        /// The project.
         #[command(flatten)]
         project: ProjectArgs,
     },
     /// Compile to a C project (sources, header, runtime, Makefile) in a directory.
     Build {
+        /// The project and the PMAC output.
         #[command(flatten)]
         compile: CompileArgs,
         /// Output directory: ladderc writes only its own files there (see `.ladderc-manifest`).
@@ -162,6 +175,7 @@ pub enum Command {
     },
     /// Build with the system C compiler and run scan cycles.
     Run {
+        /// The project and the PMAC output.
         #[command(flatten)]
         compile: CompileArgs,
         /// Number of scan cycles.
@@ -210,6 +224,7 @@ pub enum Command {
     },
 }
 
+/// `ladderc motion ...`.
 #[derive(Subcommand, Debug)]
 pub enum MotionCommand {
     /// Plan jerk-limited profiles for problems in the oracle's JSON-lines format; prints each problem back
@@ -220,6 +235,7 @@ pub enum MotionCommand {
     },
 }
 
+/// `ladderc drive ...`.
 #[derive(Subcommand, Debug)]
 pub enum DriveCommand {
     /// Compile a drive script into its binary image (Motion and Event pools).
@@ -260,6 +276,7 @@ pub enum DriveCommand {
     },
 }
 
+/// `drive --drive`.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq, Eq)]
 pub enum DriveArg {
     /// A motion-lib axis: jerk-limited profiles through the PLCopen blocks.
@@ -277,11 +294,14 @@ impl From<DriveArg> for drive_script::cli::DriveKind {
     }
 }
 
-/// Exit codes.
+/// Exit code: success.
 pub const EXIT_OK: i32 = 0;
+/// Exit code: diagnostics with errors, or a failed program run.
 pub const EXIT_DIAGNOSTICS: i32 = 1;
+/// Exit code: a usage or I/O error.
 pub const EXIT_USAGE: i32 = 2;
 
+/// Parses the process's arguments, runs the command and prints; returns the exit code.
 pub fn main() -> i32 {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
@@ -466,15 +486,29 @@ fn options(c: &ProjectArgs) -> pipeline::Options {
             StrategyArg::Auto => Strategy::Auto,
         },
         templates: c.templates.clone(),
+        compile_templates: true,
     }
 }
 
-/// Prints the session's diagnostics; the exit code for them: 0 without errors, 2 when a file could not be
-/// read or written (an I/O error), 1 otherwise.
-fn finish(s: pipeline::Session, format: Format) -> i32 {
-    let diags = s.diags.into_sorted();
-    emit(&s.map, &diags, format);
+/// The project of `c`: its inputs read from disk, with the options of the command line.
+fn project(c: &ProjectArgs, opts: pipeline::Options) -> Project {
+    Project::from_paths(c.inputs.iter().cloned(), opts)
+}
+
+/// Prints a project's diagnostics (sorted, with `extra` ones); the exit code for them: 0 without errors, 2
+/// when a file could not be read or written (an I/O error), 1 otherwise.
+fn finish(map: &SourceMap, diags: &[Diagnostic], extra: Vec<Diagnostic>, format: Format) -> i32 {
+    let mut all = diagnostics::Diagnostics::new();
+    all.extend(diags.iter().cloned());
+    all.extend(extra);
+    let diags = all.into_sorted();
+    emit(map, &diags, format);
     exit_code(&diags)
+}
+
+/// Prints the diagnostics of a failed stage; the exit code for them.
+fn finish_failed(f: &Failed, format: Format) -> i32 {
+    finish(&f.sources, &f.diagnostics, Vec::new(), format)
 }
 
 /// The codes of I/O errors (a file that cannot be read or written; E7005: a PMAC file or connection):
@@ -505,9 +539,10 @@ fn io_error(message: String, hint: &str, format: Format) -> i32 {
 
 /// `check`: the whole pipeline to C in memory (the same checks as `build`), nothing written.
 fn check(p: &ProjectArgs, format: Format) -> i32 {
-    let mut s = pipeline::Session::new();
-    let _ = s.compile(&p.inputs, &options(p));
-    finish(s, format)
+    match project(p, options(p)).compile() {
+        Ok(g) => finish(g.sources(), g.diagnostics(), Vec::new(), format),
+        Err(f) => finish_failed(&f, format),
+    }
 }
 
 fn build(
@@ -517,7 +552,6 @@ fn build(
     report: Option<ReportFormat>,
     format: Format,
 ) -> i32 {
-    let mut s = pipeline::Session::new();
     match emit_kind {
         Emit::Il if report.is_some() => usage(
             "`--report` describes a C build: use it with `-o DIR`, not `--emit il`",
@@ -528,13 +562,17 @@ fn build(
             format,
         ),
         Emit::Il => {
-            let lowered = s.lower(&c.project.inputs, &options(&c.project));
-            let code = finish(s, format);
-            if let Some(l) = lowered {
-                for u in l.units() {
-                    if let Err(e) = stdio::out(&il_frontend::print::unit(u)) {
-                        return stdout_error(e, format);
-                    }
+            let lowered = match project(&c.project, options(&c.project))
+                .check()
+                .and_then(CheckedProject::lower)
+            {
+                Ok(l) => l,
+                Err(f) => return finish_failed(&f, format),
+            };
+            let code = finish(lowered.sources(), lowered.diagnostics(), Vec::new(), format);
+            for u in lowered.units() {
+                if let Err(e) = stdio::out(&il_frontend::print::unit(u)) {
+                    return stdout_error(e, format);
                 }
             }
             code
@@ -543,21 +581,23 @@ fn build(
             let Some(dir) = output else {
                 return usage("`build` needs `-o DIR` (or `--emit il`)", format);
             };
-            let compiled = s.compile(&c.project.inputs, &options(&c.project));
-            let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
-            let code = finish(s, format);
-            let Some((lowered, program)) = compiled else {
-                return code;
+            let mut g = match project(&c.project, options(&c.project)).compile() {
+                Ok(g) => g,
+                Err(f) => return finish_failed(&f, format),
             };
+            let mut extra = Vec::new();
+            let pmac = pmac_text(c, &mut g, &mut extra);
+            let code = finish(g.sources(), g.diagnostics(), extra, format);
+            let program = g.program();
             if let Err(code) = write_pmac(c, pmac, code, format) {
                 return code;
             }
             let mut extra = Vec::new();
-            if let Err(code) = add_staticlib(&program, &mut extra, format) {
+            if let Err(code) = add_staticlib(program, &mut extra, format) {
                 return code;
             }
             if report == Some(ReportFormat::Json) {
-                let text = crate::report::json(&lowered, &program, &extra) + "\n";
+                let text = g.report_measured(&extra) + "\n";
                 if let Err(e) = stdio::out(&text) {
                     return stdout_error(e, format);
                 }
@@ -583,20 +623,24 @@ fn build(
     }
 }
 
-/// The PMAC program of `--pmac` (diagnostics into the session).
-fn pmac_text(c: &CompileArgs, l: &pipeline::Lowered, s: &mut pipeline::Session) -> Option<String> {
+/// The PMAC program of `--pmac` (its diagnostics into the project; a bad dialect into `extra`).
+fn pmac_text(
+    c: &CompileArgs,
+    g: &mut GeneratedProject,
+    extra: &mut Vec<Diagnostic>,
+) -> Option<String> {
     c.pmac.as_ref()?;
     let dialect = match c.pmac_dialect.parse() {
         Ok(d) => d,
         Err(e) => {
-            s.diags.push(
+            extra.push(
                 Diagnostic::error(diagnostics::code::E9002, format!("--pmac-dialect: {e}"))
                     .with_hint("use turbo or power"),
             );
             return None;
         }
     };
-    crate::pmac_out::program(l.source_units(), &l.axes, dialect, &mut s.diags)
+    g.pmac_program(dialect)
 }
 
 /// Writes the `--pmac` file. `Err`: the exit code (the session had errors, or writing failed).
@@ -669,7 +713,6 @@ fn run_program(
     (plot, pvt): (Option<PathBuf>, Option<(PathBuf, f64)>),
     format: Format,
 ) -> i32 {
-    let mut s = pipeline::Session::new();
     let mut opts = options(&c.project);
     opts.cycle_ms = cycle_ms;
     if let Some(stimulus) = &run.stimulus {
@@ -683,12 +726,14 @@ fn run_program(
             return EXIT_USAGE;
         }
     }
-    let compiled = s.compile(&c.project.inputs, &opts);
-    let pmac = compiled.as_ref().and_then(|(l, _)| pmac_text(c, l, &mut s));
-    let code = finish(s, format);
-    let Some((lowered, program)) = compiled else {
-        return code;
+    let mut g = match project(&c.project, opts).compile() {
+        Ok(g) => g,
+        Err(f) => return finish_failed(&f, format),
     };
+    let mut extra = Vec::new();
+    let pmac = pmac_text(c, &mut g, &mut extra);
+    let code = finish(g.sources(), g.diagnostics(), extra, format);
+    let (lowered, program) = (g.lowered(), g.program());
     if let Err(code) = write_pmac(c, pmac, code, format) {
         return code;
     }
@@ -717,7 +762,7 @@ fn run_program(
         }
     }
     let mut extra = Vec::new();
-    if let Err(code) = add_staticlib(&program, &mut extra, format) {
+    if let Err(code) = add_staticlib(program, &mut extra, format) {
         return code;
     }
     let work = match tempfile::Builder::new().prefix("ladderc-run-").tempdir() {
@@ -747,7 +792,7 @@ fn run_program(
             "-g".into(),
         ];
     }
-    let exe = match c_backend::build_with(&program, work.path(), &bopts) {
+    let exe = match c_backend::build_with(program, work.path(), &bopts) {
         Ok(e) => e,
         Err(e) => {
             return io_error(

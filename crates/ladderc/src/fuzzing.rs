@@ -27,6 +27,7 @@ pub enum FrontEnd {
 }
 
 impl FrontEnd {
+    /// Every front end, in the order of the fuzz targets.
     pub const ALL: [FrontEnd; 6] = [
         FrontEnd::Il,
         FrontEnd::St,
@@ -35,6 +36,7 @@ impl FrontEnd {
         FrontEnd::DriveScript,
         FrontEnd::DriveImage,
     ];
+    /// The front end's name (the fuzz target's suffix).
     pub fn name(self) -> &'static str {
         match self {
             FrontEnd::Il => "il",
@@ -50,6 +52,7 @@ impl FrontEnd {
 /// What one step produced.
 #[derive(Debug, Default, Clone, Copy)]
 pub struct Outcome {
+    /// How many diagnostics the input got.
     pub diagnostics: usize,
     /// Bytes of the human rendering of the diagnostics.
     pub rendered_bytes: usize,

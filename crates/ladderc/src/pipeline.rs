@@ -1,11 +1,15 @@
-//! The compilation pipeline behind `check`, `build` and `run`.
+//! The compilation pipeline behind `check`, `build` and `run`, and behind the typed API of
+//! [`crate::project`].
 //!
 //! Input: source paths (`.xml` PLCopen projects, `.il` IL, `.st` Structured Text, others by content;
-//! `-` standard input) and options. Output: the source map, the
+//! `-` standard input) and [`Options`]; every file is taken from [`Session::overlay`] first, and from the
+//! file system (and standard input) only when [`Session::disk`] allows it. Output: the source map, the
 //! diagnostics, and (when there are no errors) the lowered IL units and the C project.
-//! Stages: read -> parse (IL) or read + lower ladder (XML) -> semantic checks against the PLCopen block
-//! prelude -> parameter passing (block calls by the chosen strategy) -> semantic model of the lowered
-//! program -> C. Invariant: a stage runs only when the ones before it reported no error.
+//! Stages: read -> parse (IL, ST) or read + lower ladder (XML) ([`Session::parse`]) -> semantic checks
+//! against the PLCopen block prelude and the axes ([`Session::check`]) -> parameter passing (block calls by
+//! the chosen strategy) ([`Session::lower_checked`]) -> semantic model of the lowered program -> C
+//! ([`Session::generate`]). Invariants: a stage runs only when the ones before it reported no error; no
+//! process is started unless [`Options::compile_templates`] asks for the templates' C check.
 
 use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics, SourceMap};
@@ -14,9 +18,16 @@ use param_passing::library::Library;
 use param_passing::lower::{self, Strategy, TmWindow};
 use std::path::{Path, PathBuf};
 
+/// What a project is compiled with, besides its sources. Paths are looked up in [`Session::overlay`]
+/// first (so that every one of these files may be given in memory).
+#[derive(Debug, Clone)]
 pub struct Options {
+    /// The target profile (memory model, JSON; `--profile`); `None`: [`c_backend::TargetProfile::default`].
     pub profile: Option<PathBuf>,
+    /// How PLCopen block calls are lowered (`--strategy`; paper A's two methods, or per block).
     pub strategy: Strategy,
+    /// A folder of user parameter templates (`*.xml`, `--templates`); they replace built-ins of the same
+    /// block name.
     pub templates: Option<PathBuf>,
     /// The axis configuration; `None`: `<first input stem>.axes.json` beside the first input, if present.
     pub axes: Option<PathBuf>,
@@ -24,6 +35,26 @@ pub struct Options {
     pub cycle_ms: Option<f64>,
     /// The source language of every input (`--lang`); `None`: by extension, else from the content.
     pub lang: Option<Lang>,
+    /// Whether each user template's function is compiled alone with the system C compiler (`$CC`) when it
+    /// is loaded (the command line does; it starts a process). Without it the templates still get every
+    /// other check (schema, body tokens and names).
+    pub compile_templates: bool,
+}
+
+impl Default for Options {
+    /// The command line's defaults: no profile, templates, axes file, cycle or language given; the
+    /// parameter-template method; no C compiler started.
+    fn default() -> Self {
+        Options {
+            profile: None,
+            strategy: Strategy::Template,
+            templates: None,
+            axes: None,
+            cycle_ms: None,
+            lang: None,
+            compile_templates: false,
+        }
+    }
 }
 
 pub use il_frontend::st::file::Lang;
@@ -60,12 +91,60 @@ pub const MOTION_HEADER: &str = include_str!("../../motion-lib/include/motion_li
 /// The scan cycle when neither `--cycle-ms` nor the axis configuration gives one.
 pub const DEFAULT_CYCLE_MS: f64 = 10.0;
 
+/// One compilation: the sources read so far, the diagnostics reported so far, and where files come from.
 pub struct Session {
+    /// Every text read (sources, axes file, templates, generated preludes), by file id.
     pub map: SourceMap,
+    /// The diagnostics of every stage run so far, in the order they were reported.
     pub diags: Diagnostics,
-    /// Source texts that replace the files of the same path (an editor's unsaved buffers): `load` reads
-    /// these instead of the disk.
+    /// File texts by path (sources, the axes file, the profile, templates under [`Options::templates`];
+    /// an editor's unsaved buffers): they are read instead of the file system. `-` in it stands for
+    /// standard input.
     pub overlay: std::collections::HashMap<PathBuf, String>,
+    /// Whether a file that is not in [`Session::overlay`] is read from the file system (and `-` from
+    /// standard input). `false`: such a file is an E9001 error ("not given in memory").
+    pub disk: bool,
+}
+
+/// What [`Session::parse`] produced: the user's units and what they are compiled with.
+pub struct Parsed {
+    /// The user's units, as parsed, in input order.
+    pub units: Vec<CompilationUnit>,
+    /// The built-in parameter templates and the user's.
+    pub library: Library,
+    /// The target profile.
+    pub profile: c_backend::TargetProfile,
+}
+
+/// What [`Session::check`] produced: a program without errors, not yet lowered.
+pub struct Checked {
+    /// The user's units when they use PLCopen blocks (they are then also in `checked`); empty otherwise.
+    user: Vec<CompilationUnit>,
+    /// The checked units: the block interfaces and the axes (when blocks are used), then the user's.
+    checked: Vec<CompilationUnit>,
+    /// The semantic model of `checked`.
+    pub model: il_frontend::sema::Model,
+    /// The parameter templates.
+    pub library: Library,
+    /// The target profile.
+    pub profile: c_backend::TargetProfile,
+    /// Whether the program uses PLCopen blocks.
+    pub uses_blocks: bool,
+    /// The axis configuration (the default, empty one when there is no file).
+    pub axes: AxisConfig,
+    /// The scan cycle.
+    pub cycle_ms: f64,
+}
+
+impl Checked {
+    /// The user's units, as parsed.
+    pub fn units(&self) -> &[CompilationUnit] {
+        if self.uses_blocks {
+            &self.user
+        } else {
+            &self.checked
+        }
+    }
 }
 
 /// What a successful front half produced.
@@ -77,8 +156,12 @@ pub struct Lowered {
     pub all_units: Vec<CompilationUnit>,
     /// Where the user's units start in `all_units`.
     user_start: usize,
+    /// What parameter passing produced: per block type its method and figures, the synthesised
+    /// functions, the static-library layouts.
     pub lowering: lower::Lowered,
+    /// The parameter templates (built-in and the user's).
     pub library: Library,
+    /// The target profile.
     pub profile: c_backend::TargetProfile,
     /// Whether the program uses PLCopen blocks (then the motion runtime is linked).
     pub uses_blocks: bool,
@@ -92,7 +175,7 @@ pub struct Lowered {
 }
 
 impl Lowered {
-    /// The user's units after block lowering (without the prelude).
+    /// The user's units after block lowering (without the prelude): what `build --emit il` prints.
     pub fn units(&self) -> &[CompilationUnit] {
         &self.all_units[self.user_start..]
     }
@@ -115,7 +198,32 @@ impl Session {
             map: SourceMap::new(),
             diags: Diagnostics::new(),
             overlay: std::collections::HashMap::new(),
+            disk: true,
         }
+    }
+
+    /// A session that reads nothing but its [`Session::overlay`]: no file system, no standard input.
+    pub fn in_memory() -> Self {
+        Session {
+            disk: false,
+            ..Session::new()
+        }
+    }
+
+    /// The text of `path`: from the overlay, else from the file system when [`Session::disk`] allows it.
+    pub fn read_file(&self, path: &Path) -> std::io::Result<String> {
+        if let Some(t) = self.overlay.get(path) {
+            return Ok(t.clone());
+        }
+        if self.disk {
+            return std::fs::read_to_string(path);
+        }
+        Err(not_in_memory())
+    }
+
+    /// Whether `path` is in the overlay, or (when [`Session::disk`]) a file on disk.
+    pub fn file_exists(&self, path: &Path) -> bool {
+        self.overlay.contains_key(path) || (self.disk && path.is_file())
     }
 
     /// Reads and parses every input (IL, ST or PLCopen XML; `-` is standard input, read once).
@@ -135,7 +243,11 @@ impl Session {
             } else {
                 p.display().to_string()
             };
-            let bytes = if stdin {
+            let bytes = if let Some(t) = self.overlay.get(p) {
+                Ok(t.clone().into_bytes())
+            } else if stdin && !self.disk {
+                Err(not_in_memory())
+            } else if stdin {
                 if stdin_read {
                     self.diags.push(
                         Diagnostic::error(code::E9001, "`-` (standard input) is given twice")
@@ -146,10 +258,10 @@ impl Session {
                 stdin_read = true;
                 let mut b = Vec::new();
                 std::io::Read::read_to_end(&mut std::io::stdin(), &mut b).map(|_| b)
-            } else if let Some(t) = self.overlay.get(p) {
-                Ok(t.clone().into_bytes())
-            } else {
+            } else if self.disk {
                 std::fs::read(p)
+            } else {
+                Err(not_in_memory())
             };
             let text = match bytes {
                 Ok(bytes) => match String::from_utf8(bytes) {
@@ -227,19 +339,122 @@ impl Session {
 
     /// The front half: load, check, lower block calls. `None` when errors were reported.
     pub fn lower(&mut self, paths: &[PathBuf], opts: &Options) -> Option<Lowered> {
+        let parsed = self.parse(paths, opts)?;
+        let checked = self.check(parsed, paths, opts)?;
+        self.lower_checked(checked, opts)
+    }
+
+    /// The target profile, the parameter templates and the user's units. `None` when errors were
+    /// reported.
+    pub fn parse(&mut self, paths: &[PathBuf], opts: &Options) -> Option<Parsed> {
         let profile = match &opts.profile {
-            Some(p) => c_backend::TargetProfile::load_or_report(p, &mut self.diags)?,
+            Some(p) => self.profile(p)?,
             None => c_backend::TargetProfile::default(),
         };
         let mut library = Library::builtin(&mut self.map, &mut self.diags);
         if let Some(dir) = &opts.templates {
-            // Checks every user template in full (body tokens and names, its function compiled alone).
-            library.add_dir(dir, &mut self.map, &mut self.diags);
+            // Checks every user template in full (body tokens and names; its function compiled alone
+            // when asked).
+            self.user_templates(&mut library, dir, opts.compile_templates);
         }
-        let user = self.load_as(paths, opts.lang);
+        let units = self.load_as(paths, opts.lang);
         if self.diags.has_errors() {
             return None;
         }
+        Some(Parsed {
+            units,
+            library,
+            profile,
+        })
+    }
+
+    /// The target profile at `path` (E9001 when it cannot be read, E2003 when it is not a valid one).
+    fn profile(&mut self, path: &Path) -> Option<c_backend::TargetProfile> {
+        if self.disk && !self.overlay.contains_key(path) {
+            return c_backend::TargetProfile::load_or_report(path, &mut self.diags);
+        }
+        let text = match self.read_file(path) {
+            Ok(t) => t,
+            Err(e) => {
+                self.diags.push(
+                    Diagnostic::error(code::E9001, format!("cannot read {}: {e}", path.display()))
+                        .with_hint("check the --profile path and its permissions"),
+                );
+                return None;
+            }
+        };
+        match c_backend::TargetProfile::from_json(&text) {
+            Ok(p) => Some(p),
+            Err(e) => {
+                self.diags.push(
+                    Diagnostic::error(code::E2003, e.to_string())
+                        .with_hint("see the memory model section of the c-backend README"),
+                );
+                None
+            }
+        }
+    }
+
+    /// Adds the user templates of `dir`: the overlay's `dir/*.xml`, and (with [`Session::disk`]) the
+    /// folder's files, sorted by path.
+    fn user_templates(&mut self, library: &mut Library, dir: &Path, compile_c: bool) {
+        let is_xml = |p: &Path| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml"));
+        let mut in_memory: Vec<PathBuf> = self
+            .overlay
+            .keys()
+            .filter(|p| p.parent() == Some(dir) && is_xml(p))
+            .cloned()
+            .collect();
+        if self.disk && in_memory.is_empty() {
+            library.add_dir_with(dir, compile_c, &mut self.map, &mut self.diags);
+            return;
+        }
+        if self.disk {
+            if let Ok(entries) = std::fs::read_dir(dir) {
+                in_memory.extend(
+                    entries
+                        .filter_map(|e| e.ok().map(|e| e.path()))
+                        .filter(|p| is_xml(p)),
+                );
+            }
+        }
+        in_memory.sort();
+        in_memory.dedup();
+        if in_memory.is_empty() {
+            self.diags.push(
+                Diagnostic::error(
+                    code::E9001,
+                    format!(
+                        "cannot read the template directory {}: {}",
+                        dir.display(),
+                        not_in_memory()
+                    ),
+                )
+                .with_hint("give the template files (`DIR/NAME.xml`) in memory, or leave out the templates folder"),
+            );
+            return;
+        }
+        let mut files = Vec::new();
+        for p in in_memory {
+            match self.read_file(&p) {
+                Ok(text) => files.push((p.display().to_string(), text)),
+                Err(e) => self.diags.push(
+                    Diagnostic::error(code::E9001, format!("cannot read {}: {e}", p.display()))
+                        .with_hint("template files must be readable UTF-8"),
+                ),
+            }
+        }
+        library.add_user_texts(&files, compile_c, &mut self.map, &mut self.diags);
+    }
+
+    /// The semantic checks of a parsed program, with the PLCopen block interfaces and the axes file when it
+    /// uses blocks. `None` when errors were reported.
+    pub fn check(&mut self, parsed: Parsed, paths: &[PathBuf], opts: &Options) -> Option<Checked> {
+        let Parsed {
+            units: user,
+            library,
+            profile,
+        } = parsed;
         let axes = self.axis_config(paths, opts.axes.as_deref())?;
         let uses_blocks = uses_library_blocks(&user, &library);
         let cycle_ms = match (axes.cycle_ms, opts.cycle_ms) {
@@ -263,8 +478,8 @@ impl Session {
         };
         // Check the user's program (with the block interfaces and the axes when it uses blocks).
         let mut checked = Vec::new();
-        let axes_il = axes.globals_il();
         if uses_blocks {
+            let axes_il = axes.globals_il();
             let pre = param_passing::prelude::before_lowering(&library);
             let f = self.map.add("<PLCopen blocks>", pre.clone());
             checked.push(il_frontend::parse(f, &pre, &mut self.diags));
@@ -279,7 +494,7 @@ impl Session {
             checked.extend(user);
             Vec::new()
         };
-        let checked_model = il_frontend::sema::analyze(&checked, &mut self.diags);
+        let model = il_frontend::sema::analyze(&checked, &mut self.diags);
         if self.diags.has_errors() {
             if uses_blocks && opts.axes.is_none() && axes.axes.is_empty() && axes.groups.is_empty()
             {
@@ -287,6 +502,31 @@ impl Session {
             }
             return None;
         }
+        Some(Checked {
+            user,
+            checked,
+            model,
+            library,
+            profile,
+            uses_blocks,
+            axes,
+            cycle_ms,
+        })
+    }
+
+    /// Parameter passing: every PLCopen block call lowered by `opts.strategy`. `None` when errors were
+    /// reported.
+    pub fn lower_checked(&mut self, checked: Checked, opts: &Options) -> Option<Lowered> {
+        let Checked {
+            user,
+            checked,
+            model: checked_model,
+            library,
+            profile,
+            uses_blocks,
+            axes,
+            cycle_ms,
+        } = checked;
         let window = TmWindow {
             offset: profile.tm_offset,
             bytes: profile.tm_bytes,
@@ -304,6 +544,7 @@ impl Session {
         // identity): without block lowering those are `checked`, which is then compiled as it is.
         let user_start = if uses_blocks { 2 } else { 0 };
         let all_units = if uses_blocks {
+            let axes_il = axes.globals_il();
             let mut all_units = Vec::new();
             let post = param_passing::prelude::after_lowering(&library);
             let f = self.map.add("<PLCopen block instances>", post.clone());
@@ -363,11 +604,11 @@ impl Session {
                 .filter(|p| !is_stdin(p))
                 .and_then(|p| default_axes_path(p))
             {
-                Some(p) if p.is_file() => p,
+                Some(p) if self.file_exists(&p) => p,
                 _ => return Some(AxisConfig::default()),
             },
         };
-        let text = match std::fs::read_to_string(&path) {
+        let text = match self.read_file(&path) {
             Ok(t) => t,
             Err(e) => {
                 self.diags.push(
@@ -389,6 +630,13 @@ impl Session {
         opts: &Options,
     ) -> Option<(Lowered, c_backend::CProgram)> {
         let mut lowered = self.lower(paths, opts)?;
+        let program = self.generate(&mut lowered)?;
+        Some((lowered, program))
+    }
+
+    /// The C project of a lowered program (its semantic model is taken out of `lowered`). `None` when
+    /// errors were reported.
+    pub fn generate(&mut self, lowered: &mut Lowered) -> Option<c_backend::CProgram> {
         let model = match lowered.model.take() {
             Some(m) => m,
             None => {
@@ -407,7 +655,7 @@ impl Session {
         if self.diags.has_errors() {
             return None;
         }
-        let embedded = embedded_functions(&lowered);
+        let embedded = embedded_functions(lowered);
         let copts = c_backend::Options { embedded };
         let ext = c_backend::Extensions {
             motion: lowered
@@ -420,16 +668,23 @@ impl Session {
                 .map(pou_method)
                 .collect(),
         };
-        let program = c_backend::generate_with(
+        c_backend::generate_with(
             &lowered.all_units,
             &model,
             &lowered.profile,
             &copts,
             &ext,
             &mut self.diags,
-        )?;
-        Some((lowered, program))
+        )
     }
+}
+
+/// The error of a file that is neither in memory nor to be read from the file system.
+fn not_in_memory() -> std::io::Error {
+    std::io::Error::new(
+        std::io::ErrorKind::NotFound,
+        "not given in memory (the file system is not read)",
+    )
 }
 
 /// `<stem>.axes.json` beside `input`.

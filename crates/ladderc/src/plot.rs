@@ -11,7 +11,7 @@
 //! next block's, the first block starts with the first axis motion); each
 //! line is labelled with the block and, for a junction, the path speed there. A junction whose speed the
 //! axis limits lowered (the trace's `group.<name>.junction_requested` column is non-zero there) is drawn
-//! in magenta and labelled "(lowered from <requested>)". Block outputs of a row were computed in the scan
+//! in magenta and labelled "(lowered from `<requested>`)". Block outputs of a row were computed in the scan
 //! before that cycle's engine step, so an event seen in row k is drawn at row k-1's time and speed (the
 //! axis state the block reacted to). Axis labels carry the axes file's unit; labels stay inside the
 //! frame (right-aligned in the right half); colours are a fixed high-contrast (colour-blind safe) set.
@@ -54,18 +54,32 @@ fn parse(csv: &str) -> Result<Trace, String> {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Event {
     /// The block started (and no other block ended there).
-    Start { row: usize, block: String },
+    Start {
+        /// The trace row.
+        row: usize,
+        /// The block (its column prefix).
+        block: String,
+    },
     /// `from` ended (Done or CommandAborted) and `to` started in the same cycle (or the next one).
     Junction {
+        /// The trace row.
         row: usize,
+        /// The block that ended.
         from: String,
+        /// The block that started.
         to: String,
     },
     /// The block ended and no other block started there.
-    End { row: usize, block: String },
+    End {
+        /// The trace row.
+        row: usize,
+        /// The block (its column prefix).
+        block: String,
+    },
 }
 
 impl Event {
+    /// The trace row of the event.
     pub fn row(&self) -> usize {
         match self {
             Event::Start { row, .. } | Event::Junction { row, .. } | Event::End { row, .. } => *row,

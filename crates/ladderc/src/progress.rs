@@ -16,7 +16,9 @@ use std::time::{Duration, Instant};
 
 /// The program's output and how long it ran.
 pub struct Timed {
+    /// The exit status, standard output and standard error.
     pub output: RunOutput,
+    /// The wall time of the run.
     pub wall: Duration,
 }
 

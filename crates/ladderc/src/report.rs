@@ -187,8 +187,19 @@ pub fn json(
     program: &c_backend::CProgram,
     extra: &[(String, Vec<u8>)],
 ) -> String {
+    json_with(lowered, program, extra, true)
+}
+
+/// [`json`]; `measure`: whether the object and code sizes are measured (by compiling the C with `$CC` and
+/// reading `nm`); without it they are `null` and no process is started.
+pub fn json_with(
+    lowered: &Lowered,
+    program: &c_backend::CProgram,
+    extra: &[(String, Vec<u8>)],
+    measure: bool,
+) -> String {
     let program_c = program.file("program.c").unwrap_or("");
-    let symbols = symbol_sizes(program);
+    let symbols = if measure { symbol_sizes(program) } else { None };
     let mut blocks = Vec::new();
     for r in &lowered.lowering.reports {
         let c_bytes = match r.method {
@@ -233,7 +244,11 @@ pub fn json(
             "object_bytes": object_bytes,
         }));
     }
-    let size = code_size(program, extra);
+    let size = if measure {
+        code_size(program, extra)
+    } else {
+        None
+    };
     let doc = serde_json::json!({
         "blocks": blocks,
         "code_size": {

@@ -17,25 +17,37 @@ pub const C_BASICS: &[&str] = &[
     "size_t", "fabs", "sqrt", "floor", "ceil", "fmod", "fmin", "fmax",
 ];
 
+/// The kind of a body token.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Tok {
+    /// An identifier or keyword.
     Ident,
+    /// A number literal.
     Number,
+    /// A string or character literal.
     Str,
+    /// A punctuation byte.
     Punct(u8),
 }
 
+/// A token of a template body: its kind and byte range.
 #[derive(Debug, Clone, Copy)]
 pub struct Token {
+    /// Its kind.
     pub kind: Tok,
+    /// Its first byte in the body.
     pub start: usize,
+    /// One past its last byte.
     pub end: usize,
 }
 
 /// A lexical problem (unterminated comment, string or char literal), at a byte range of the body.
 pub struct LexError {
+    /// The first byte of the problem.
     pub start: usize,
+    /// One past its last byte.
     pub end: usize,
+    /// What is unterminated.
     pub what: &'static str,
 }
 

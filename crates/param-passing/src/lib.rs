@@ -9,6 +9,7 @@
 //! Stages here: `xml` (element tree with spans) -> `template` (schema, validation) -> `cbody` (lexical and
 //! name checks of a body) -> `ccheck` (a user template's function compiled alone) -> `tm` (slot layout).
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 pub mod cbody;
 pub mod ccheck;

@@ -148,12 +148,14 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ),
 ];
 
+/// The parameter templates a program can call, by block name: the built-ins and the user's.
 #[derive(Debug, Default, Clone)]
 pub struct Library {
     templates: Vec<Template>,
 }
 
 impl Library {
+    /// An empty library.
     pub fn new() -> Self {
         Self::default()
     }
@@ -165,8 +167,21 @@ impl Library {
         }
         lib
     }
-    /// Loads every `*.xml` of `dir` (sorted by name); they replace built-ins of the same block name.
+    /// Loads every `*.xml` of `dir` (sorted by name); they replace built-ins of the same block name. Each is
+    /// checked in full, its function compiled alone with the C compiler ([`Library::add_user_texts`]).
     pub fn add_dir(&mut self, dir: &Path, map: &mut SourceMap, diags: &mut Diagnostics) {
+        self.add_dir_with(dir, true, map, diags);
+    }
+
+    /// [`Library::add_dir`]; `compile_c`: whether each template's function is also compiled alone with the
+    /// C compiler (which starts `$CC`).
+    pub fn add_dir_with(
+        &mut self,
+        dir: &Path,
+        compile_c: bool,
+        map: &mut SourceMap,
+        diags: &mut Diagnostics,
+    ) {
         let entries = match std::fs::read_dir(dir) {
             Ok(e) => e,
             Err(e) => {
@@ -185,23 +200,36 @@ impl Library {
             .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")))
             .collect();
         paths.sort();
-        let mut added = Vec::new();
+        let mut files = Vec::new();
         for p in paths {
             match std::fs::read_to_string(&p) {
-                Ok(text) => {
-                    if let Some(block) = self.add_text(map, &p.display().to_string(), &text, diags)
-                    {
-                        added.push(block);
-                    }
-                }
+                Ok(text) => files.push((p.display().to_string(), text)),
                 Err(e) => diags.push(
                     Diagnostic::error(code::E9001, format!("cannot read {}: {e}", p.display()))
                         .with_hint("template files must be readable UTF-8"),
                 ),
             }
         }
-        // A user template is checked in full before it is used: its body's tokens and names, then its
-        // function compiled alone. A template that fails is dropped (its diagnostics stop the build).
+        self.add_user_texts(&files, compile_c, map, diags);
+    }
+
+    /// Adds user templates given as `(file name, text)`, in that order; they replace built-ins (and earlier
+    /// ones) of the same block name. A user template is checked in full before it is used: its schema, its
+    /// body's tokens and names, then (when `compile_c`) its function compiled alone with `$CC`. A template
+    /// that fails is dropped (its diagnostics stop the build).
+    pub fn add_user_texts(
+        &mut self,
+        files: &[(String, String)],
+        compile_c: bool,
+        map: &mut SourceMap,
+        diags: &mut Diagnostics,
+    ) {
+        let mut added = Vec::new();
+        for (name, text) in files {
+            if let Some(block) = self.add_text(map, name, text, diags) {
+                added.push(block);
+            }
+        }
         let runtime = runtime_symbol_set();
         let embedded: BTreeSet<String> = self.templates.iter().map(|t| t.block.clone()).collect();
         for block in added {
@@ -214,7 +242,7 @@ impl Library {
                 &Self::scope(t, runtime, &embedded),
                 &t.block,
                 diags,
-            ) && crate::ccheck::compile(t, diags);
+            ) && (!compile_c || crate::ccheck::compile(t, diags));
             if !clean {
                 self.templates.remove(k);
             }
@@ -253,11 +281,13 @@ impl Library {
         self.templates.push(t);
         Some(block)
     }
+    /// The template of `block` (case-insensitive).
     pub fn get(&self, block: &str) -> Option<&Template> {
         self.templates
             .iter()
             .find(|t| t.block.eq_ignore_ascii_case(block))
     }
+    /// Every template.
     pub fn templates(&self) -> &[Template] {
         &self.templates
     }

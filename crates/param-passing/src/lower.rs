@@ -36,6 +36,7 @@ pub const AUTO_IL_MIN_CALLS: usize = 3;
 pub struct TmWindow {
     /// Byte offset of the TM area in %M (must be a multiple of 8).
     pub offset: u32,
+    /// Size of the TM area in bytes.
     pub bytes: u32,
     /// `true`: `%MD5` is the sixth double word (bytes 20..24); `false`: `%MD5` starts at byte 5.
     pub element_addressing: bool,
@@ -44,7 +45,9 @@ pub struct TmWindow {
 /// The chosen method for one block type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Method {
+    /// IL-instruction method: TM transfers and one FUNC of a static-library function.
     Il,
+    /// Parameter-template method: one FUNC of a function synthesised per call.
     Template,
 }
 
@@ -53,8 +56,11 @@ pub enum Method {
 /// index 0: the C backend declares them as one array `c_type local[len]` initialised element by element.
 #[derive(Debug, Clone)]
 pub struct HeadLocal {
+    /// The local's C type.
     pub c_type: &'static str,
+    /// The local's name.
     pub local: String,
+    /// The parameter's class.
     pub class: TypeClass,
     /// The operand the local is initialised from (a bound argument, or the instance's own field).
     pub source: Operand,
@@ -64,8 +70,11 @@ pub struct HeadLocal {
 /// element, `Pos_1[2]`).
 #[derive(Debug, Clone)]
 pub struct Feedback {
+    /// Where the output goes.
     pub target: Operand,
+    /// The local holding the output.
     pub local: String,
+    /// The parameter's class.
     pub class: TypeClass,
     /// `NOT Done => x`.
     pub negated: bool,
@@ -75,22 +84,32 @@ pub struct Feedback {
 /// head reads and the tail writes the POU's own variables).
 #[derive(Debug, Clone)]
 pub struct Synthesized {
+    /// The function's C name.
     pub name: String,
+    /// The POU it belongs to (whose variables it reads and writes).
     pub pou: String,
+    /// The block's FuncNum.
     pub func_num: u32,
+    /// The head: one local per parameter value.
     pub head: Vec<HeadLocal>,
+    /// The template's own locals: `(C type, name)`.
     pub locals: Vec<(String, String)>,
     /// The library body with every abbreviation renamed to its head local.
     pub body: String,
+    /// The tail: the outputs written back.
     pub tail: Vec<Feedback>,
+    /// The call in the user's source.
     pub call_span: Span,
 }
 
 /// What one block type cost, for `--report`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct BlockReport {
+    /// The block type.
     pub block: String,
+    /// The method its calls were lowered by.
     pub method: Method,
+    /// How many calls.
     pub calls: usize,
     /// TM bytes of the block's layout (IL method; 0 for the template method).
     pub tm_bytes: u32,
@@ -98,12 +117,16 @@ pub struct BlockReport {
     pub il_instructions: usize,
 }
 
+/// What parameter passing produced.
 #[derive(Debug, Default)]
 pub struct Lowered {
+    /// The user's units with every block call lowered.
     pub units: Vec<CompilationUnit>,
     /// Static-library functions (IL method), by block name, with their TM layouts.
     pub static_functions: BTreeMap<String, TmLayout>,
+    /// The template-method functions, one per call.
     pub synthesized: Vec<Synthesized>,
+    /// Per block type, what it cost.
     pub reports: Vec<BlockReport>,
 }
 

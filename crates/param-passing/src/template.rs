@@ -10,10 +10,14 @@
 use crate::xml::{self, Element};
 use diagnostics::{code, Diagnostic, Diagnostics, FileId, Span};
 
+/// How a parameter passes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Direction {
+    /// Read by the block (`:=`).
     Input,
+    /// Written by the block (`=>`).
     Output,
+    /// Read and written by the block (`AXIS_REF`, `AXES_GROUP_REF`).
     InOut,
     /// Hidden per-instance state the library keeps between scans (not visible to programs).
     State,
@@ -22,11 +26,17 @@ pub enum Direction {
 /// Paper A's parameter classes, refined by size: they fix the TM slot size and the transfer instructions.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum TypeClass {
+    /// BOOL (1 byte).
     Bool,
+    /// 8-bit values (1 byte).
     Byte,
+    /// 16-bit values (2 bytes).
     Word,
+    /// 32-bit values (4 bytes).
     Dword,
+    /// REAL (4 bytes).
     Real,
+    /// LREAL (8 bytes).
     Lreal,
     /// 64-bit state words.
     Lword,
@@ -98,7 +108,9 @@ pub const MAX_ARRAY_LEN: u32 = 16;
 /// element `k` is IEC index `low + k`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ArrayShape {
+    /// The number of elements.
     pub len: u32,
+    /// The IEC index of the first element.
     pub low: i64,
 }
 
@@ -109,10 +121,14 @@ impl ArrayShape {
     }
 }
 
+/// One `<param>` of a template.
 #[derive(Debug, Clone)]
 pub struct Param {
+    /// The IEC name (`Position`).
     pub name: String,
+    /// The abbreviation the body uses (`Pos`).
     pub abbr: String,
+    /// Input, output, in-out or state.
     pub direction: Direction,
     /// The class of the value, or of every element for an array parameter.
     pub class: TypeClass,
@@ -120,10 +136,12 @@ pub struct Param {
     pub iec_type: String,
     /// `Some` for an array parameter (`class="array"`).
     pub array: Option<ArrayShape>,
+    /// Whether a call must bind it.
     pub required: bool,
     /// Default value as an IEC literal text (`FALSE`, `0.0`, `0`), used when an optional input is not bound
     /// (for an array: the value of every element).
     pub default: Option<String>,
+    /// The `<param>` element.
     pub span: Span,
 }
 
@@ -152,15 +170,20 @@ impl Param {
 /// A local the body declares through the template (`<local name="cmd" ctype="double"/>`).
 #[derive(Debug, Clone)]
 pub struct Local {
+    /// The local's name.
     pub name: String,
+    /// Its C type.
     pub c_type: String,
+    /// The `<local>` element.
     pub span: Span,
 }
 
 /// C text from the template with the file offset of its first byte (for mapping errors back).
 #[derive(Debug, Clone)]
 pub struct CText {
+    /// The text.
     pub text: String,
+    /// Where it is in the file.
     pub span: Span,
     /// `span.start + i` is the file offset of `text[i]` (a CDATA section).
     pub verbatim: bool,
@@ -194,20 +217,27 @@ impl CText {
     }
 }
 
+/// A parameter template (`templates/*.xml`): the block's interface and the C body its calls run.
 #[derive(Debug, Clone)]
 pub struct Template {
     /// Block type name, as in IEC (`MC_MoveAbsolute`).
     pub block: String,
     /// The number the generated head assigns to `FuncNum` (paper A).
     pub func_num: u32,
+    /// The parameters, in file order.
     pub params: Vec<Param>,
+    /// The body's locals.
     pub locals: Vec<Local>,
+    /// The C body.
     pub body: CText,
+    /// The template file.
     pub file: FileId,
+    /// The `<blockTemplate>` element.
     pub span: Span,
 }
 
 impl Template {
+    /// The parameter `name` (case-insensitive).
     pub fn param(&self, name: &str) -> Option<&Param> {
         self.params
             .iter()
@@ -219,6 +249,7 @@ impl Template {
             .iter()
             .filter(|p| matches!(p.direction, Direction::Input | Direction::InOut))
     }
+    /// The outputs.
     pub fn outputs(&self) -> impl Iterator<Item = &Param> {
         self.params
             .iter()
@@ -232,6 +263,7 @@ impl Template {
     }
 }
 
+/// C keywords, which no abbreviation or local may be.
 pub const C_KEYWORDS: &[&str] = &[
     "auto", "break", "case", "char", "const", "continue", "default", "do", "double", "else",
     "enum", "extern", "float", "for", "goto", "if", "inline", "int", "long", "register",
@@ -239,6 +271,7 @@ pub const C_KEYWORDS: &[&str] = &[
     "union", "unsigned", "void", "volatile", "while", "_Bool",
 ];
 
+/// Whether `s` is a C identifier.
 pub fn is_c_identifier(s: &str) -> bool {
     let mut chars = s.chars();
     matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')

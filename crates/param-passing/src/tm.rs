@@ -8,21 +8,28 @@
 
 use crate::template::{Param, Template};
 
+/// One parameter's place in the TM area.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Slot {
     /// Parameter name as declared in the template.
     pub param: String,
+    /// Byte offset in the TM area.
     pub offset: u32,
+    /// Bytes it takes.
     pub bytes: u32,
 }
 
+/// A block type's TM layout: every parameter's slot.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct TmLayout {
+    /// The slots, in parameter order.
     pub slots: Vec<Slot>,
+    /// Bytes of the whole layout.
     pub total: u32,
 }
 
 impl TmLayout {
+    /// The slot of `param` (case-insensitive).
     pub fn slot(&self, param: &str) -> Option<&Slot> {
         self.slots
             .iter()
@@ -35,6 +42,7 @@ pub fn layout(template: &Template, tm_size: u32) -> Result<TmLayout, (u32, u32)>
     layout_params(&template.params, tm_size)
 }
 
+/// Lays out `params` in a TM area of `tm_size` bytes; `Err((needed, available))` when they do not fit.
 pub fn layout_params(params: &[Param], tm_size: u32) -> Result<TmLayout, (u32, u32)> {
     let mut offset = 0u32;
     let mut slots = Vec::with_capacity(params.len());

@@ -36,6 +36,7 @@ pub struct Corner {
 pub struct Comparison {
     /// (planned, program) duration of every move, in seconds, for moves that start and end at rest.
     pub move_times: Vec<(f64, f64)>,
+    /// Every corner between two moves: the planned and the program's speed there.
     pub corners: Vec<Corner>,
 }
 

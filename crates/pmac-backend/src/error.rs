@@ -59,9 +59,11 @@ impl PmacError {
             format!("line {line}: {}", message.into()),
         ))
     }
+    /// The diagnostic.
     pub fn diagnostic(&self) -> &Diagnostic {
         &self.diagnostic
     }
+    /// The diagnostic, by value.
     pub fn into_diagnostic(self) -> Diagnostic {
         *self.diagnostic
     }

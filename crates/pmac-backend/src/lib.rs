@@ -11,6 +11,7 @@
 //! `E7xxx` code. No real controller was available while this was written: the protocol follows the manuals and
 //! is tested against a loopback simulator.
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 pub mod compare;
 pub mod error;

@@ -34,6 +34,7 @@ impl std::str::FromStr for Dialect {
 /// One axis of a coordinate system: `#motor->counts_per_unit name`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AxisDef {
+    /// The motor number (the `1` of `#1->1000X`).
     pub motor: u32,
     /// `X`, `Y`, `Z`, `A`, `B`, `C`, `U`, `V` or `W`.
     pub name: char,
@@ -44,7 +45,9 @@ pub struct AxisDef {
 /// A PMAC coordinate system (`&number`) and its axes, in the order used by move targets and trajectories.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CoordSystem {
+    /// The coordinate system number (the `1` of `&1`).
     pub number: u32,
+    /// Its axes, in move-target order.
     pub axes: Vec<AxisDef>,
 }
 
@@ -111,8 +114,10 @@ impl CoordSystem {
 /// `ABS` (targets are positions) or `INC` (targets are distances).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum MoveMode {
+    /// `ABS`: targets are positions.
     #[default]
     Abs,
+    /// `INC`: targets are distances from where the move starts.
     Inc,
 }
 
@@ -125,7 +130,10 @@ pub enum Transition {
     /// Blend into the next move (PLCopen Blending*): no dwell, the PMAC blends over the next move's `TA`.
     /// `junction_velocity` is the planner's path speed at the corner; LINEAR mode cannot impose it (see README), so
     /// it is not written into the program (PVT streaming reproduces it).
-    Blend { junction_velocity: f64 },
+    Blend {
+        /// The planner's path speed at the corner (user units per second).
+        junction_velocity: f64,
+    },
 }
 
 /// A straight move with jerk-limited limits. The limits are per axis (each axis may use up to `velocity`,
@@ -134,11 +142,17 @@ pub enum Transition {
 pub struct LinearMove {
     /// One value per axis of the coordinate system, in its order.
     pub target: Vec<f64>,
+    /// Velocity limit per axis (user units per second).
     pub velocity: f64,
+    /// Acceleration limit per axis (units/s²).
     pub acceleration: f64,
+    /// Deceleration limit per axis (units/s²).
     pub deceleration: f64,
+    /// Jerk limit per axis (units/s³).
     pub jerk: f64,
+    /// Absolute or incremental target.
     pub mode: MoveMode,
+    /// How the move joins the next one (stop or blend).
     pub transition: Transition,
 }
 
@@ -190,13 +204,17 @@ impl LinearMove {
 /// One sample of one axis: position, velocity, acceleration (user units, seconds).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Sample {
+    /// Position.
     pub p: f64,
+    /// Velocity.
     pub v: f64,
+    /// Acceleration.
     pub a: f64,
 }
 
 /// Anything that can say where each axis is at time `t` (seconds from the start).
 pub trait TrajectorySource {
+    /// The number of axes.
     fn axis_count(&self) -> usize;
     /// Duration in seconds; the motion is at rest at its end.
     fn duration(&self) -> f64;
@@ -214,8 +232,11 @@ pub trait TrajectorySource {
 
 /// A trajectory given by a function of time, e.g. an adapter around a motion-library profile.
 pub struct FnSource<F: Fn(f64) -> Vec<(f64, f64)>> {
+    /// The number of axes.
     pub axes: usize,
+    /// The duration in seconds.
     pub duration: f64,
+    /// (position, velocity) of every axis at a time in seconds.
     pub state: F,
 }
 
@@ -242,7 +263,9 @@ impl<F: Fn(f64) -> Vec<(f64, f64)>> TrajectorySource for FnSource<F> {
 /// A trajectory sampled every `cycle_s` seconds; `axes[k][i]` is axis k at `i * cycle_s`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Trajectory {
+    /// The sample period in seconds.
     pub cycle_s: f64,
+    /// The samples, per axis.
     pub axes: Vec<Vec<Sample>>,
 }
 
@@ -251,6 +274,7 @@ impl Trajectory {
     pub fn len(&self) -> usize {
         self.axes.first().map_or(0, Vec::len)
     }
+    /// Whether there is no sample.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }

@@ -24,6 +24,7 @@ use std::fmt::Write as _;
 /// Options beyond the dialect.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ProgramOptions {
+    /// Turbo or Power PMAC.
     pub dialect: Dialect,
     /// Program number; 0 means "the coordinate system's number".
     pub program: u32,
@@ -38,6 +39,7 @@ pub struct PlannedMove {
     pub end: Vec<f64>,
     /// Target as written (absolute in ABS mode, increment in INC mode).
     pub written: Vec<f64>,
+    /// Absolute or incremental, as written.
     pub mode: MoveMode,
     /// Vector length of the move.
     pub length: f64,

@@ -22,10 +22,11 @@ use crate::transport::Transport;
 /// How PVT text is written.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PvtOptions {
+    /// Turbo or Power PMAC.
     pub dialect: Dialect,
     /// Segment time in ms (the `10` of `PVT10`).
     pub segment_ms: f64,
-    /// The controller's velocity time unit in ms (Turbo Isx90, Power Coord[x].FeedTime); 1000 means per second.
+    /// The controller's velocity time unit in ms (Turbo Isx90, Power `Coord[x].FeedTime`); 1000 means per second.
     pub velocity_time_ms: f64,
     /// Decimals for positions and velocities.
     pub decimals: usize,
@@ -45,7 +46,9 @@ impl Default for PvtOptions {
 /// One PVT segment: its duration and every axis's end (position, velocity in units per second).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PvtSegment {
+    /// The segment time in seconds.
     pub duration_s: f64,
+    /// (position, velocity) of every axis at the segment's end.
     pub end: Vec<(f64, f64)>,
 }
 

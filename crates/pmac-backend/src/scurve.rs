@@ -12,9 +12,13 @@
 /// Path limits on one line: speed, acceleration, deceleration, jerk (user units, seconds).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PathLimits {
+    /// Path speed limit.
     pub velocity: f64,
+    /// Path acceleration limit.
     pub acceleration: f64,
+    /// Path deceleration limit.
     pub deceleration: f64,
+    /// Path jerk limit.
     pub jerk: f64,
 }
 
@@ -66,8 +70,11 @@ pub fn axis_limit_for_path(delta: &[f64], path_limit: f64) -> Option<f64> {
 /// time `ts`, reaching `peak_acceleration`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ramp {
+    /// The ramp time (TA or TD), seconds.
     pub time: f64,
+    /// The S-curve time at each end (TS), seconds.
     pub ts: f64,
+    /// The acceleration reached.
     pub peak_acceleration: f64,
 }
 
@@ -93,9 +100,13 @@ pub fn ramp(dv: f64, a: f64, j: f64) -> Ramp {
 /// A rest-to-rest move: accelerate to `peak_velocity`, cruise, decelerate; time-optimal for the limits.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RestToRest {
+    /// The path length.
     pub length: f64,
+    /// The speed reached.
     pub peak_velocity: f64,
+    /// The ramp from rest.
     pub accel: Ramp,
+    /// The ramp to rest.
     pub decel: Ramp,
 }
 
@@ -132,6 +143,7 @@ impl RestToRest {
     pub fn ramp_distance(&self) -> f64 {
         self.peak_velocity * (self.accel.time + self.decel.time) / 2.0
     }
+    /// The time at `peak_velocity` between the ramps.
     pub fn cruise_time(&self) -> f64 {
         ((self.length - self.ramp_distance()) / self.peak_velocity).max(0.0)
     }

@@ -33,9 +33,11 @@ pub struct FileTransport<W: Write> {
 }
 
 impl<W: Write> FileTransport<W> {
+    /// Lines go to `out`.
     pub fn new(out: W) -> Self {
         FileTransport { out }
     }
+    /// The writer back.
     pub fn into_inner(self) -> W {
         self.out
     }

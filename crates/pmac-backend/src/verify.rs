@@ -52,6 +52,7 @@ impl Chain {
 /// Parsed program: axis names and chains.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProgramTimeline {
+    /// The axis names, in the program's order.
     pub axes: Vec<char>,
     chains: Vec<Chain>,
 }
@@ -386,6 +387,7 @@ type PvtPiece = (f64, f64, Vec<(f64, f64)>, Vec<(f64, f64)>);
 /// The motion described by PVT text: cubic Hermite per segment from the previous point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PvtCurve {
+    /// The axis names, in the text's order.
     pub axes: Vec<char>,
     /// (segment start time, duration, start (p, v) per axis, end (p, v) per axis), v in user units per second.
     segments: Vec<PvtPiece>,
@@ -393,6 +395,7 @@ pub struct PvtCurve {
 }
 
 impl PvtCurve {
+    /// How many PVT segments the text has.
     pub fn segment_count(&self) -> usize {
         self.segments.len()
     }

@@ -77,7 +77,7 @@ pub fn file(rel: &str) -> Option<PathBuf> {
     Some(p)
 }
 
-/// The text of the corpus file `rel` (see [`file`]).
+/// The text of the corpus file `rel` (see [`fn@file`]).
 pub fn read(rel: &str) -> Option<String> {
     let p = file(rel)?;
     Some(std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display())))

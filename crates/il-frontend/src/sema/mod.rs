@@ -5,7 +5,7 @@
 //! Invariants: one mistake gives one diagnostic: an unresolvable name gives the `Error` type, which
 //! silences every check that would follow from it. The rules implemented are in `README_sema.md`.
 //!
-//! Stages: [`decls`] (types, POU variables, globals, configurations) then [`body`] (each POU's IL body).
+//! Stages: `decls` (types, POU variables, globals, configurations) then `body` (each POU's IL body).
 
 mod body;
 mod calls;

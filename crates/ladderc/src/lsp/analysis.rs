@@ -17,7 +17,9 @@ use std::path::{Path, PathBuf};
 
 /// One analysed document.
 pub struct Analysis {
+    /// The document's path.
     pub path: PathBuf,
+    /// The document's text (the editor's buffer).
     pub text: String,
     /// The document's diagnostics (those located in other files, or nowhere, are kept too: the server shows
     /// them at the start of the document).
@@ -40,6 +42,7 @@ pub fn options(root: Option<&Path>) -> Options {
         axes: None,
         cycle_ms: None,
         lang: None,
+        compile_templates: true,
     }
 }
 
@@ -124,6 +127,7 @@ fn pou_word(k: PouKind) -> &'static str {
 
 /// A variable that a name or declaration at the cursor stands for.
 pub struct Target<'a> {
+    /// The variable.
     pub var: &'a Variable,
     /// The POU that declares it (None: a global).
     pub pou: Option<usize>,
