@@ -54,6 +54,7 @@ pub struct Line {
 }
 
 /// The path limits of a line with direction `unit` (a unit vector) through axes `axes`.
+#[inline]
 pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
     if unit.len() != axes.len() {
         return Err(PlanError::Line(format!(
@@ -68,18 +69,30 @@ pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
         dmax: f64::INFINITY,
         jmax: f64::INFINITY,
     };
+    let mut valid = true;
     for (u, ax) in unit.iter().zip(axes) {
-        ax.validate()?;
+        valid &= ax.is_valid();
         let u = u.abs();
         if u > 0.0 {
+            // Plain comparisons: no NaN can reach here once the limits are valid.
             let inv = 1.0 / u;
-            l.vmax = l.vmax.min(ax.vmax * inv);
-            l.amax = l.amax.min(ax.amax * inv);
-            l.dmax = l.dmax.min(ax.dmax * inv);
-            if !ax.is_trapezoidal() {
-                l.jmax = l.jmax.min(ax.jmax * inv);
+            let (v, a, d) = (ax.vmax * inv, ax.amax * inv, ax.dmax * inv);
+            if v < l.vmax {
+                l.vmax = v;
+            }
+            if a < l.amax {
+                l.amax = a;
+            }
+            if d < l.dmax {
+                l.dmax = d;
+            }
+            if !ax.is_trapezoidal() && ax.jmax * inv < l.jmax {
+                l.jmax = ax.jmax * inv;
             }
         }
+    }
+    if !valid {
+        return Err(PlanError::InvalidLimits);
     }
     if !l.vmax.is_finite() {
         // No axis moves: any finite limits will do.
@@ -95,6 +108,7 @@ pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
 
 impl Line {
     /// Time-optimal rest-to-rest straight line from `start` to `end`.
+    #[inline]
     pub fn plan(start: &[f64], end: &[f64], axes: &[Limits]) -> Result<Line, PlanError> {
         if start.len() != end.len() {
             return Err(PlanError::Line(format!(
@@ -107,8 +121,14 @@ impl Line {
             return Err(PlanError::Line("non-finite coordinate".into()));
         }
         let n = start.len();
-        let mut geometry = Geometry::zeroed(n);
-        let g = geometry.as_mut_slice();
+        // Built in place: the profile is planned into the line that is returned (no copy).
+        let mut line = Line {
+            geometry: Geometry::zeroed(n),
+            length: 0.0,
+            limits: Limits::default(),
+            profile: Profile::new(State::default()),
+        };
+        let g = line.geometry.as_mut_slice();
         g[..n].copy_from_slice(start);
         for ((d, a), b) in g[n..].iter_mut().zip(start).zip(end) {
             *d = b - a;
@@ -118,14 +138,10 @@ impl Line {
         for d in &mut g[n..] {
             *d *= inv;
         }
-        let limits = path_limits(&g[n..], axes)?;
-        let profile = Profile::position(State::default(), length, 0.0, &limits)?;
-        Ok(Line {
-            geometry,
-            length,
-            limits,
-            profile,
-        })
+        line.limits = path_limits(&g[n..], axes)?;
+        line.length = length;
+        line.profile.plan_position(length, 0.0, &line.limits)?;
+        Ok(line)
     }
 
     /// Duration of the line (s).

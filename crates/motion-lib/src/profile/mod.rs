@@ -57,17 +57,18 @@ impl Limits {
     /// Checks that the limits are usable: `vmax`, `amax`, `dmax` finite and > 0, `jmax`
     /// >= 0 (0 or +infinity meaning trapezoidal) and not NaN.
     pub fn validate(&self) -> Result<(), PlanError> {
-        let pos = |x: f64| x.is_finite() && x > 0.0;
-        if pos(self.vmax)
-            && pos(self.amax)
-            && pos(self.dmax)
-            && !self.jmax.is_nan()
-            && self.jmax >= 0.0
-        {
+        if self.is_valid() {
             Ok(())
         } else {
             Err(PlanError::InvalidLimits)
         }
+    }
+
+    /// [`Limits::validate`] as a bool (comparisons are false for NaN).
+    #[inline]
+    pub(crate) fn is_valid(&self) -> bool {
+        let pos = |x: f64| x > 0.0 && x < f64::INFINITY;
+        pos(self.vmax) && pos(self.amax) && pos(self.dmax) && self.jmax >= 0.0
     }
 }
 
@@ -155,13 +156,6 @@ impl Profile {
         }
     }
 
-    /// The profile of a fast path's phases (the fourth item is the cruise, at the start
-    /// of which the state is snapped to velocity `v_peak`, acceleration 0).
-    #[inline(always)]
-    fn fast(start: State, items: &[(f64, f64); 7], v_peak: f64) -> Profile {
-        Profile::build(start, items, false, Some((3, v_peak)))
-    }
-
     /// The profile of `items` = (duration, jerk) from `start` (or (duration,
     /// acceleration) when `trapezoidal`); items of zero or negative duration are skipped.
     /// `snap` = (k, v): the state before item k is snapped to velocity v, acceleration 0
@@ -174,6 +168,15 @@ impl Profile {
         snap: Option<(usize, f64)>,
     ) -> Profile {
         let mut prof = Profile::new(start);
+        prof.fill(items, trapezoidal, snap);
+        prof
+    }
+
+    /// [`Profile::build`] in place: `self` must be `Profile::new(start)` (entries past the
+    /// phase count stay zero, so that equal plans compare equal).
+    #[inline(always)]
+    fn fill(&mut self, items: &[(f64, f64)], trapezoidal: bool, snap: Option<(usize, f64)>) {
+        let start = self.start;
         // The running state is kept in scalar locals (registers): the arrays are only
         // written, never read back (no store-to-load forwarding stalls).
         let (mut p, mut v, mut a) = (start.p, start.v, start.a);
@@ -195,40 +198,93 @@ impl Profile {
             } else {
                 x
             };
-            prof.phases[n] = Phase { duration, jerk };
-            prof.starts[n] = State { p, v, a };
+            self.phases[n] = Phase { duration, jerk };
+            self.starts[n] = State { p, v, a };
             let t = duration;
             p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
             v += t * (a + 0.5 * t * jerk);
             a = if trapezoidal { 0.0 } else { a + t * jerk };
             total += duration;
-            prof.ends[n] = total;
+            self.ends[n] = total;
             n += 1;
         }
-        let s = State { p, v, a };
-        prof.count = n;
-        prof.last = s;
-        prof.total = total;
-        prof
+        self.count = n;
+        self.last = State { p, v, a };
+        self.total = total;
+    }
+
+    /// [`Profile::fill`] for a fast path's seven jerk phases, the fourth a cruise at whose
+    /// start the state is snapped to velocity `v_peak`, acceleration 0. Branch-free: which
+    /// phases are empty varies from problem to problem, so every item is written at the
+    /// next free slot and the slot only advances for a phase of positive duration (an
+    /// empty phase integrates over 0 s, which leaves the state bit for bit unchanged).
+    /// The one slot past the last phase that an empty item may have written is cleared.
+    #[inline(always)]
+    fn fill_fast(&mut self, items: &[(f64, f64); 7], v_peak: f64) {
+        let start = self.start;
+        let (mut p, mut v, mut a) = (start.p, start.v, start.a);
+        let mut total = 0.0;
+        let mut n = 0;
+        for (k, &(duration, jerk)) in items.iter().enumerate() {
+            if k == 3 {
+                v = v_peak;
+                a = 0.0;
+            }
+            let keep = duration > 0.0;
+            let t = if keep { duration } else { 0.0 };
+            // n <= k < 7 < MAX_PHASES.
+            self.phases[n] = Phase { duration: t, jerk };
+            self.starts[n] = State { p, v, a };
+            p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
+            v += t * (a + 0.5 * t * jerk);
+            a += t * jerk;
+            total += t;
+            self.ends[n] = total;
+            n += keep as usize;
+        }
+        self.phases[n] = Phase::default();
+        self.starts[n] = State::default();
+        self.ends[n] = 0.0;
+        self.count = n;
+        self.last = State { p, v, a };
+        self.total = total;
     }
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
     /// and acceleration 0.
+    #[inline]
     pub fn position(
         start: State,
         target_p: f64,
         target_v: f64,
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
+        let mut prof = Profile::new(start);
+        prof.plan_position(target_p, target_v, lim)?;
+        Ok(prof)
+    }
+
+    /// [`Profile::position`] in place (no copy of the profile): `self` must be
+    /// `Profile::new(start)`.
+    #[inline(always)]
+    pub(crate) fn plan_position(
+        &mut self,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> Result<(), PlanError> {
+        let start = self.start;
         check_inputs(&start, target_p, target_v, lim)?;
         if let Some((items, v_peak)) = velocity::fast_path(start, target_p, target_v, lim) {
-            return Ok(Profile::fast(start, &items, v_peak));
+            self.fill_fast(&items, v_peak);
+            return Ok(());
         }
         let mut block = kernel::Block::default();
         match Solved::new(start, target_p, target_v, lim, &mut block) {
-            Some(sol) => Ok(sol.build(&block.p_min)),
-            None => Self::position_after_zero_acceleration(start, target_p, target_v, lim),
+            Some(sol) => sol.build_into(&block.p_min, self),
+            None => *self = Self::position_after_zero_acceleration(start, target_p, target_v, lim)?,
         }
+        Ok(())
     }
 
     /// Fallback for the rare start states where the kernel finds no profile (inherited from
@@ -300,7 +356,11 @@ impl Profile {
             },
         )?;
         let fastest = match velocity::fast_path(start, target_p, target_v, lim) {
-            Some((items, v_peak)) => Profile::fast(start, &items, v_peak),
+            Some((items, v_peak)) => {
+                let mut prof = Profile::new(start);
+                prof.fill_fast(&items, v_peak);
+                prof
+            }
             None => sol.build(&block.p_min),
         };
         let minimal = fastest.duration();
@@ -489,6 +549,14 @@ impl Solved {
     #[inline]
     /// The public profile: brake pre-phase then the kernel profile `k`, mirrored back.
     fn build(&self, k: &kernel::kprofile::Profile) -> Profile {
+        let mut prof = Profile::new(self.start);
+        self.build_into(k, &mut prof);
+        prof
+    }
+
+    /// [`Solved::build`] in place: `out` must be `Profile::new(self.start)`.
+    #[inline]
+    fn build_into(&self, k: &kernel::kprofile::Profile, out: &mut Profile) {
         let s = self.s;
         let b = &self.brake;
         let mut items = [(0.0, 0.0); MAX_PHASES];
@@ -505,7 +573,7 @@ impl Solved {
                 items[2 + i] = (k.t[i], s * k.j[i]);
             }
         }
-        Profile::build(self.start, &items, self.trapezoidal, None)
+        out.fill(&items, self.trapezoidal, None);
     }
 }
 
