@@ -5,8 +5,9 @@
 //! default 5). For each oracle problem (rest, blend, abort: one axis; line3: a 3-axis
 //! straight line, ours `Line::plan` with its geometry and projected limits against
 //! rsruckig's 1-D `calculate` on the same path problem) both planners run in interleaved
-//! rounds (the order alternates per round); each timing is the best of 3 batches of
-//! `REPS` plans, which filters out the preemptions of a shared machine. Per problem the
+//! rounds; in each round a problem is timed in `BATCHES` pairs of batches of `REPS`
+//! plans, ours and rsruckig's alternating (the order flips per round), and the best batch
+//! of each planner counts, which filters out the preemptions of a shared machine. Per problem the
 //! ratio ours / rsruckig is the median over the rounds; the report gives, per kind, the
 //! median plan time of each planner and the median of the per-problem ratios.
 
@@ -17,7 +18,8 @@ use serde_json::Value;
 use std::hint::black_box;
 use std::time::Instant;
 
-const REPS: u32 = 100;
+const REPS: u32 = 40;
+const BATCHES: usize = 6;
 
 struct Problem {
     kind: String,
@@ -117,17 +119,31 @@ fn ruckig_input(pb: &Problem) -> InputParameter<1> {
     input
 }
 
-/// Nanoseconds per call of `f`, best of 3 batches of `REPS` calls.
-fn time_ns(mut f: impl FnMut()) -> f64 {
-    (0..3)
-        .map(|_| {
-            let t = Instant::now();
-            for _ in 0..REPS {
-                f();
-            }
-            t.elapsed().as_nanos() as f64 / REPS as f64
-        })
-        .fold(f64::INFINITY, f64::min)
+/// Nanoseconds per call of `a` and of `b`: `BATCHES` pairs of batches of `REPS` calls,
+/// alternating a and b (the order flips with `flip`), and the best batch of each. Pairs
+/// this close in time see the same load, and the best batch is one without preemption.
+fn time_pair(mut a: impl FnMut(), mut b: impl FnMut(), flip: bool) -> (f64, f64) {
+    let (mut best_a, mut best_b) = (f64::INFINITY, f64::INFINITY);
+    for _ in 0..BATCHES {
+        if flip {
+            best_b = best_b.min(batch(&mut b));
+            best_a = best_a.min(batch(&mut a));
+        } else {
+            best_a = best_a.min(batch(&mut a));
+            best_b = best_b.min(batch(&mut b));
+        }
+    }
+    (best_a, best_b)
+}
+
+/// Nanoseconds per call of `f` over one batch of `REPS` calls.
+#[inline(always)]
+fn batch(f: &mut impl FnMut()) -> f64 {
+    let t = Instant::now();
+    for _ in 0..REPS {
+        f();
+    }
+    t.elapsed().as_nanos() as f64 / REPS as f64
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -155,36 +171,24 @@ fn main() {
         for (k, pb) in problems.iter().enumerate() {
             let ours = || {
                 if let Some((s, e, axes)) = &pb.line {
-                    time_ns(|| {
-                        let line = Line::plan(black_box(s), black_box(e), black_box(axes));
-                        black_box(&line);
-                    })
+                    let line = Line::plan(black_box(s), black_box(e), black_box(axes));
+                    black_box(&line);
                 } else {
-                    time_ns(|| {
-                        let prof = Profile::position(
-                            black_box(pb.start),
-                            black_box(pb.target_p),
-                            black_box(pb.target_v),
-                            black_box(&pb.lim),
-                        );
-                        black_box(&prof);
-                    })
+                    let prof = Profile::position(
+                        black_box(pb.start),
+                        black_box(pb.target_p),
+                        black_box(pb.target_v),
+                        black_box(&pb.lim),
+                    );
+                    black_box(&prof);
                 }
             };
-            let mut theirs = || {
-                time_ns(|| {
-                    let result = otg.calculate(black_box(&inputs[k]), &mut traj);
-                    black_box(&result);
-                    black_box(&traj);
-                })
+            let theirs = || {
+                let result = otg.calculate(black_box(&inputs[k]), &mut traj);
+                black_box(&result);
+                black_box(&traj);
             };
-            let pair = if round % 2 == 0 {
-                let o = ours();
-                (o, theirs())
-            } else {
-                let t = theirs();
-                (ours(), t)
-            };
+            let pair = time_pair(ours, theirs, round % 2 == 1);
             times[k].push(pair);
         }
     }
@@ -214,7 +218,7 @@ fn main() {
         })
         .collect();
     println!(
-        "profile_bench: {} oracle problems, {rounds} interleaved rounds, best of 3 x {REPS} plans per timing",
+        "profile_bench: {} oracle problems, {rounds} rounds, best of {BATCHES} interleaved batches of {REPS} plans per planner",
         rows.len()
     );
     println!(

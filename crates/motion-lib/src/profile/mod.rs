@@ -252,39 +252,44 @@ impl Profile {
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
     /// and acceleration 0.
-    #[inline]
     pub fn position(
         start: State,
         target_p: f64,
         target_v: f64,
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
-        let mut prof = Profile::new(start);
-        prof.plan_position(target_p, target_v, lim)?;
-        Ok(prof)
-    }
-
-    /// [`Profile::position`] in place (no copy of the profile): `self` must be
-    /// `Profile::new(start)`.
-    #[inline(always)]
-    pub(crate) fn plan_position(
-        &mut self,
-        target_p: f64,
-        target_v: f64,
-        lim: &Limits,
-    ) -> Result<(), PlanError> {
-        let start = self.start;
         check_inputs(&start, target_p, target_v, lim)?;
         if let Some((items, v_peak)) = velocity::fast_path(start, target_p, target_v, lim) {
-            self.fill_fast(&items, v_peak);
-            return Ok(());
+            return Ok(Profile::fast(start, &items, v_peak));
         }
         let mut block = kernel::Block::default();
         match Solved::new(start, target_p, target_v, lim, &mut block) {
-            Some(sol) => sol.build_into(&block.p_min, self),
-            None => *self = Self::position_after_zero_acceleration(start, target_p, target_v, lim)?,
+            Some(sol) => Ok(sol.build(&block.p_min)),
+            None => Self::position_after_zero_acceleration(start, target_p, target_v, lim),
         }
-        Ok(())
+    }
+
+    /// The phases of [`Profile::position`] when a closed-form fast path applies (valid
+    /// inputs), for [`Profile::fast`]; `None` otherwise.
+    #[inline(always)]
+    pub(crate) fn position_fast(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> Option<([(f64, f64); 7], f64)> {
+        if check_inputs(&start, target_p, target_v, lim).is_err() {
+            return None;
+        }
+        velocity::fast_path(start, target_p, target_v, lim)
+    }
+
+    /// A fast path's profile (see [`Profile::fill_fast`]).
+    #[inline(always)]
+    pub(crate) fn fast(start: State, items: &[(f64, f64); 7], v_peak: f64) -> Profile {
+        let mut prof = Profile::new(start);
+        prof.fill_fast(items, v_peak);
+        prof
     }
 
     /// Fallback for the rare start states where the kernel finds no profile (inherited from
@@ -356,11 +361,7 @@ impl Profile {
             },
         )?;
         let fastest = match velocity::fast_path(start, target_p, target_v, lim) {
-            Some((items, v_peak)) => {
-                let mut prof = Profile::new(start);
-                prof.fill_fast(&items, v_peak);
-                prof
-            }
+            Some((items, v_peak)) => Profile::fast(start, &items, v_peak),
             None => sol.build(&block.p_min),
         };
         let minimal = fastest.duration();

@@ -150,23 +150,25 @@ fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<([(f64, f64
     let s = if target_p >= start.p { 1.0 } else { -1.0 };
     let dist = s * (target_p - start.p);
     let (vm, am, dm, j) = (lim.vmax, lim.amax, lim.dmax, lim.jmax);
-    let inv_j = 1.0 / j;
+    // The four divisions are independent of each other (issued back to back); everything
+    // after them is multiplications, one comparison and at most one root.
+    let (inv_j, inv_am, inv_dm, inv_vm) = (1.0 / j, 1.0 / am, 1.0 / dm, 1.0 / vm);
     let sj = s * j;
     // Ramp from rest to vmax with acceleration limit `a`: (jerk time, constant-acceleration
     // time, distance).
-    let ramp = |a: f64| -> (f64, f64, f64) {
+    let ramp = |a: f64, inv_a: f64| -> (f64, f64, f64) {
         if vm * j > a * a {
             let t1 = a * inv_j;
-            let t2 = vm / a - t1;
+            let t2 = vm * inv_a - t1;
             (t1, t2, 0.5 * vm * (2.0 * t1 + t2))
         } else {
             let t1 = (vm * inv_j).sqrt();
             (t1, 0.0, vm * t1)
         }
     };
-    let (ta1, ta2, da) = ramp(am);
-    let (td1, td2, dd) = ramp(dm);
-    let cruise = (dist - da - dd) / vm;
+    let (ta1, ta2, da) = ramp(am, inv_am);
+    let (td1, td2, dd) = ramp(dm, inv_dm);
+    let cruise = (dist - da - dd) * inv_vm;
     let (ta1, ta2, td1, td2, vp, cruise) = if cruise >= 0.0 {
         (ta1, ta2, td1, td2, vm, cruise)
     } else {
@@ -179,14 +181,14 @@ fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<([(f64, f64
             (t, 0.0, t, 0.0, j * t * t, 0.0)
         } else {
             // Both trapezoidal: (1/am + 1/dm)/2 vp^2 + (am + dm)/(2j) vp - dist = 0.
-            let qa = 0.5 * (1.0 / am + 1.0 / dm);
+            let qa = 0.5 * (inv_am + inv_dm);
             let qb = 0.5 * (am + dm) * inv_j;
             let vp = 2.0 * dist / (qb + (qb * qb + 4.0 * qa * dist).sqrt());
             if !(vp * j >= a_hi * a_hi && vp <= vm) {
                 return None;
             }
             let (t1a, t1d) = (am * inv_j, dm * inv_j);
-            (t1a, vp / am - t1a, t1d, vp / dm - t1d, vp, 0.0)
+            (t1a, vp * inv_am - t1a, t1d, vp * inv_dm - t1d, vp, 0.0)
         }
     };
     if !(vp > 0.0 && vp.is_finite()) {
