@@ -125,20 +125,52 @@ pub enum PlanError {
 }
 
 /// A planned motion: the start state, phases of constant jerk, then constant velocity.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// Equality compares the plan (start, phases, their start states, end), not the
+/// sampling cursor.
+#[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub struct Profile {
-    start: State,
+    /// The piece last sampled by [`Profile::at_next`] (first, with the total duration:
+    /// the cycle's sampling touches one cache line of the profile).
+    cursor: Cursor,
+    /// Total duration.
+    total: f64,
     count: usize,
-    phases: [Phase; MAX_PHASES],
+    /// Time at the end of each phase.
+    ends: [f64; MAX_PHASES],
     /// State at the start of each phase. For a trapezoidal phase `starts[i].a` is the
     /// phase's constant acceleration.
     starts: [State; MAX_PHASES],
-    /// Time at the end of each phase.
-    ends: [f64; MAX_PHASES],
+    phases: [Phase; MAX_PHASES],
+    start: State,
     /// State at the end of the last phase.
     last: State,
-    /// Total duration.
-    total: f64,
+}
+
+/// One piece of a profile for sampling: times `[lo, hi)`, the state at `lo` and the
+/// jerk. Only ever copied from the profile's own phases (or its constant-velocity end),
+/// so it is valid for every copy of the profile; an empty interval means "look up".
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C)]
+struct Cursor {
+    lo: f64,
+    hi: f64,
+    at: State,
+    jerk: f64,
+}
+
+impl PartialEq for Profile {
+    fn eq(&self, o: &Profile) -> bool {
+        let n = self.count;
+        n == o.count
+            && self.total == o.total
+            && self.start == o.start
+            && self.last == o.last
+            && self.phases[..n] == o.phases[..n]
+            && self.starts[..n] == o.starts[..n]
+            && self.ends[..n] == o.ends[..n]
+    }
 }
 
 impl Profile {
@@ -146,14 +178,68 @@ impl Profile {
     #[inline]
     pub(crate) fn new(start: State) -> Profile {
         Profile {
-            start,
-            count: 0,
-            phases: [Phase::default(); MAX_PHASES],
-            starts: [State::default(); MAX_PHASES],
-            ends: [0.0; MAX_PHASES],
-            last: start,
+            cursor: Cursor::default(),
             total: 0.0,
+            count: 0,
+            ends: [0.0; MAX_PHASES],
+            starts: [State::default(); MAX_PHASES],
+            phases: [Phase::default(); MAX_PHASES],
+            start,
+            last: start,
         }
+    }
+
+    /// [`Profile::at`] for a caller that samples forward in time (one interpolation
+    /// cycle after the other): the piece containing `t` is kept in the profile's cursor,
+    /// so that a sample inside the same piece reads one cache line and does no search.
+    /// Gives the same state as `at(t)`.
+    #[inline]
+    pub(crate) fn at_next(&mut self, t: f64) -> State {
+        let c = &self.cursor;
+        if t >= c.lo && t < c.hi {
+            return c.at.integrate(t - c.lo, c.jerk);
+        }
+        self.at_and_seek(t)
+    }
+
+    /// The slow path of [`Profile::at_next`]: `at(t)`, and the cursor moved to the piece
+    /// containing `t` (a phase, or the constant-velocity continuation after the end).
+    #[inline(never)]
+    fn at_and_seek(&mut self, t: f64) -> State {
+        let s = self.at(t);
+        if t >= self.total {
+            let e = self.end();
+            self.cursor = Cursor {
+                lo: self.total,
+                hi: f64::INFINITY,
+                at: State {
+                    p: e.p,
+                    v: e.v,
+                    a: 0.0,
+                },
+                jerk: 0.0,
+            };
+        } else if t >= 0.0 {
+            let i = self.phase_index(t);
+            self.cursor = Cursor {
+                lo: if i == 0 { 0.0 } else { self.ends[i - 1] },
+                hi: self.ends[i],
+                at: self.starts[i],
+                jerk: self.phases[i].jerk,
+            };
+        }
+        s
+    }
+
+    /// Index of the phase containing `t` (0 <= `t` < duration).
+    #[inline]
+    fn phase_index(&self, t: f64) -> usize {
+        let n = self.count;
+        let mut i = 0;
+        while i + 1 < n && t >= self.ends[i] {
+            i += 1;
+        }
+        i
     }
 
     /// The profile of `items` = (duration, jerk) from `start` (or (duration,
@@ -403,7 +489,6 @@ impl Profile {
     /// the motion continues at the final velocity with acceleration 0.
     #[inline]
     pub fn at(&self, t: f64) -> State {
-        let n = self.count;
         if t >= self.duration() {
             let e = self.end();
             let dt = t - self.duration();
@@ -416,10 +501,7 @@ impl Profile {
         if t < 0.0 {
             return self.start;
         }
-        let mut i = 0;
-        while i + 1 < n && t >= self.ends[i] {
-            i += 1;
-        }
+        let i = self.phase_index(t);
         let t0 = if i == 0 { 0.0 } else { self.ends[i - 1] };
         self.starts[i].integrate(t - t0, self.phases[i].jerk)
     }
@@ -592,4 +674,55 @@ fn check_inputs(
         return Err(PlanError::InvalidTarget { vmax: lim.vmax });
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod cursor_tests {
+    use super::*;
+
+    /// `at_next` (the engine's per-cycle sampling through the cursor) gives `at`'s state
+    /// for forward cycles, backward jumps, times past the end and before the start, on
+    /// a profile and on copies of it taken mid-way (the cursor travels with the copy).
+    #[test]
+    fn at_next_equals_at() {
+        let lim = Limits {
+            vmax: 40.0,
+            amax: 300.0,
+            dmax: 500.0,
+            jmax: 4000.0,
+        };
+        let starts = [
+            State::default(),
+            State {
+                p: 3.0,
+                v: -20.0,
+                a: 100.0,
+            },
+            State {
+                p: -1.0,
+                v: 35.0,
+                a: -200.0,
+            },
+        ];
+        let mut other = Profile::position(State::default(), -7.0, 0.0, &lim).unwrap();
+        for (k, start) in starts.iter().enumerate() {
+            for target in [0.05, 2.0, 60.0, -30.0] {
+                let mut prof = Profile::position(*start, target, 0.0, &lim).unwrap();
+                let d = prof.duration();
+                let mut times: Vec<f64> = (0..2000).map(|i| i as f64 * d * 1.3 / 1999.0).collect();
+                times.extend([0.3 * d, -1.0, 0.9 * d, 2.0 * d, 0.0, d, 0.5 * d]);
+                for (i, &t) in times.iter().enumerate() {
+                    let want = prof.at(t);
+                    let got = prof.at_next(t);
+                    assert_eq!(got, want, "start {k} target {target} t {t}");
+                    if i % 97 == 0 {
+                        // Replace the profile by a copy of another one sampled elsewhere.
+                        std::mem::swap(&mut prof, &mut other);
+                        assert_eq!(prof.at_next(t), prof.at(t));
+                        std::mem::swap(&mut prof, &mut other);
+                    }
+                }
+            }
+        }
+    }
 }
