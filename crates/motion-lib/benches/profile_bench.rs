@@ -217,6 +217,11 @@ fn main() {
             )
         })
         .collect();
+    if std::env::var_os("PROFILE_BENCH_DUMP").is_some() {
+        for (k, r) in rows.iter().enumerate() {
+            eprintln!("{k} {} {:.1} {:.1}", r.0, r.1, r.2);
+        }
+    }
     println!(
         "profile_bench: {} oracle problems, {rounds} rounds, best of {BATCHES} interleaved batches of {REPS} plans per planner",
         rows.len()

@@ -348,6 +348,20 @@ impl Profile {
         if let Some((items, v_peak)) = velocity::fast_path(start, target_p, target_v, lim) {
             return Ok(Profile::fast(start, &items, v_peak));
         }
+        Self::position_kernel(start, target_p, target_v, lim)
+    }
+
+    /// The kernel's enumeration of every profile family (no fast path applies). Kept out
+    /// of [`Profile::position`]: its large locals would otherwise make the fast path's
+    /// stack frame about 4 KiB, where the copy of the result into the caller's slot then
+    /// suffers 4 KiB aliasing between loads and stores.
+    #[inline(never)]
+    fn position_kernel(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> Result<Profile, PlanError> {
         let mut block = kernel::Block::default();
         match Solved::new(start, target_p, target_v, lim, &mut block) {
             Some(sol) => Ok(sol.build(&block.p_min)),
