@@ -142,13 +142,19 @@ pub(crate) struct Pending {
     pub relative: Option<f64>,
 }
 
-/// The running motion of an axis.
+/// The running motion of an axis. `repr(C)`: the fields read every cycle come first,
+/// next to the profile's sampling cursor (see [`AxisRt`]).
 #[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub(crate) struct Active {
     pub kind: Kind,
-    pub id: Option<CmdId>,
-    pub prof: Profile,
+    /// VelFactor 0: the move brakes to standstill on its way and waits for a factor > 0.
+    pub paused: bool,
+    /// Release given (InVelocity / InGear / InSync reached).
+    pub released: bool,
     pub t: f64,
+    pub prof: Profile,
+    pub id: Option<CmdId>,
     pub target: f64,
     pub speed: f64,
     /// Limits the profile was planned with (the command's limits scaled by the
@@ -156,10 +162,6 @@ pub(crate) struct Active {
     pub lim: Limits,
     /// The command's own limits (before the override).
     pub base: Limits,
-    /// VelFactor 0: the move brakes to standstill on its way and waits for a factor > 0.
-    pub paused: bool,
-    /// Release given (InVelocity / InGear / InSync reached).
-    pub released: bool,
     pub end_v: f64,
     pub sync: SyncParams,
     /// Velocity-change tail run after `prof` (see [`plan_to`]).
@@ -358,15 +360,21 @@ const UNIT: Limits = Limits {
     jmax: 0.0,
 };
 
-/// Runtime of one axis (flat, no heap).
+/// Runtime of one axis (flat, no heap). `repr(C)`, hot fields first: a moving axis's
+/// cycle (`Engine::step`) reads and writes `set`, `act_p`, `act_v`, `has_drive`, the
+/// start of `active` (kind, flags, time, the profile's cursor and duration) and `cfg`'s
+/// software-limit switch, a few adjacent cache lines of this large record.
 #[derive(Clone, Debug)]
+#[repr(C)]
 pub(crate) struct AxisRt {
-    pub cfg: AxisConfig,
-    pub state: AxisState,
     /// Set point in raw (unwrapped) units.
     pub set: State,
     pub act_p: f64,
     pub act_v: f64,
+    pub has_drive: bool,
+    pub state: AxisState,
+    pub active: Active,
+    pub cfg: AxisConfig,
     /// User position = raw + origin (then wrapped on modulo axes).
     pub origin: f64,
     pub power_req: bool,
@@ -380,8 +388,6 @@ pub(crate) struct AxisRt {
     pub jerk_factor: f64,
     pub group: Option<u16>,
     pub stop_owner: Option<CmdId>,
-    pub active: Active,
-    pub has_drive: bool,
 }
 
 /// The motion engine.
@@ -1452,7 +1458,7 @@ impl Engine {
                 }
                 _ => {
                     a.t += dt;
-                    ax.set = a.prof.at(a.t);
+                    ax.set = a.prof.at_next(a.t);
                     if a.kind == Kind::Velocity
                         && ax.cfg.sw_limits_enabled
                         && ax.cfg.period().is_none()
@@ -1486,8 +1492,9 @@ impl Engine {
             let i = self.synced[k] as usize;
             self.step_sync(i, dt);
         }
-        for i in 0..self.axes.len() {
-            if self.axes[i].has_drive {
+        // Over the drives (a compact vector), not over the axes' large records.
+        for i in 0..self.drives.len() {
+            if self.drives[i].is_some() {
                 self.exchange_drive(i);
             }
         }

@@ -21,6 +21,7 @@ enum Geometry {
 }
 
 impl Geometry {
+    #[inline]
     fn zeroed(n: usize) -> Geometry {
         if n <= INLINE_AXES {
             Geometry::Inline(2 * n, [0.0; 2 * INLINE_AXES])
@@ -29,6 +30,7 @@ impl Geometry {
         }
     }
 
+    #[inline]
     fn as_slice(&self) -> &[f64] {
         match self {
             Geometry::Inline(len, data) => &data[..*len],
@@ -36,6 +38,7 @@ impl Geometry {
         }
     }
 
+    #[inline]
     fn as_mut_slice(&mut self) -> &mut [f64] {
         match self {
             Geometry::Inline(len, data) => &mut data[..*len],
@@ -54,6 +57,7 @@ pub struct Line {
 }
 
 /// The path limits of a line with direction `unit` (a unit vector) through axes `axes`.
+#[inline]
 pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
     if unit.len() != axes.len() {
         return Err(PlanError::Line(format!(
@@ -68,18 +72,30 @@ pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
         dmax: f64::INFINITY,
         jmax: f64::INFINITY,
     };
+    let mut valid = true;
     for (u, ax) in unit.iter().zip(axes) {
-        ax.validate()?;
+        valid &= ax.is_valid();
         let u = u.abs();
         if u > 0.0 {
+            // Plain comparisons: no NaN can reach here once the limits are valid.
             let inv = 1.0 / u;
-            l.vmax = l.vmax.min(ax.vmax * inv);
-            l.amax = l.amax.min(ax.amax * inv);
-            l.dmax = l.dmax.min(ax.dmax * inv);
-            if !ax.is_trapezoidal() {
-                l.jmax = l.jmax.min(ax.jmax * inv);
+            let (v, a, d) = (ax.vmax * inv, ax.amax * inv, ax.dmax * inv);
+            if v < l.vmax {
+                l.vmax = v;
+            }
+            if a < l.amax {
+                l.amax = a;
+            }
+            if d < l.dmax {
+                l.dmax = d;
+            }
+            if !ax.is_trapezoidal() && ax.jmax * inv < l.jmax {
+                l.jmax = ax.jmax * inv;
             }
         }
+    }
+    if !valid {
+        return Err(PlanError::InvalidLimits);
     }
     if !l.vmax.is_finite() {
         // No axis moves: any finite limits will do.
@@ -95,6 +111,7 @@ pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
 
 impl Line {
     /// Time-optimal rest-to-rest straight line from `start` to `end`.
+    #[inline]
     pub fn plan(start: &[f64], end: &[f64], axes: &[Limits]) -> Result<Line, PlanError> {
         if start.len() != end.len() {
             return Err(PlanError::Line(format!(
@@ -107,19 +124,76 @@ impl Line {
             return Err(PlanError::Line("non-finite coordinate".into()));
         }
         let n = start.len();
+        if axes.len() != n {
+            return Err(PlanError::Line(format!(
+                "{n} direction components but {} axis limits",
+                axes.len()
+            )));
+        }
         let mut geometry = Geometry::zeroed(n);
         let g = geometry.as_mut_slice();
-        g[..n].copy_from_slice(start);
-        for ((d, a), b) in g[n..].iter_mut().zip(start).zip(end) {
+        let (g0, gd) = g.split_at_mut(n);
+        let mut sq = 0.0;
+        // One pass (no library copy call for a few coordinates).
+        for (((x0, d), a), b) in g0.iter_mut().zip(gd.iter_mut()).zip(start).zip(end) {
+            *x0 = *a;
             *d = b - a;
+            sq += *d * *d;
         }
-        let length = g[n..].iter().map(|d| d * d).sum::<f64>().sqrt();
+        let length = sq.sqrt();
+        // The path limits, min over moving axes of limit_i / |u_i| = limit_i * length / |d_i|:
+        // the reciprocals 1 / |d_i| do not wait for the square root.
+        let (mut v, mut a, mut d, mut j) =
+            (f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY);
+        let mut valid = true;
+        for (di, ax) in g[n..].iter().zip(axes) {
+            valid &= ax.is_valid();
+            let di = di.abs();
+            if di > 0.0 {
+                let r = 1.0 / di;
+                v = v.min(ax.vmax * r);
+                a = a.min(ax.amax * r);
+                d = d.min(ax.dmax * r);
+                if !ax.is_trapezoidal() {
+                    j = j.min(ax.jmax * r);
+                }
+            }
+        }
+        if !valid {
+            return Err(PlanError::InvalidLimits);
+        }
         let inv = if length > 0.0 { 1.0 / length } else { 0.0 };
         for d in &mut g[n..] {
             *d *= inv;
         }
-        let limits = path_limits(&g[n..], axes)?;
-        let profile = Profile::position(State::default(), length, 0.0, &limits)?;
+        if !(length.is_finite() && v.is_finite()) {
+            // No axis moves, or a coordinate difference overflows: the general path.
+            let limits = path_limits(&g[n..], axes)?;
+            let profile = Profile::position(State::default(), length, 0.0, &limits)?;
+            return Ok(Line {
+                geometry,
+                length,
+                limits,
+                profile,
+            });
+        }
+        let limits = Limits {
+            vmax: v * length,
+            amax: a * length,
+            dmax: d * length,
+            jmax: j * length,
+        };
+        let rest = State::default();
+        // The common case is built in the returned value itself.
+        if let Some((items, v_peak)) = Profile::position_fast(rest, length, 0.0, &limits) {
+            return Ok(Line {
+                geometry,
+                length,
+                limits,
+                profile: Profile::fast(rest, &items, v_peak),
+            });
+        }
+        let profile = Profile::position(rest, length, 0.0, &limits)?;
         Ok(Line {
             geometry,
             length,

@@ -57,17 +57,18 @@ impl Limits {
     /// Checks that the limits are usable: `vmax`, `amax`, `dmax` finite and > 0, `jmax`
     /// >= 0 (0 or +infinity meaning trapezoidal) and not NaN.
     pub fn validate(&self) -> Result<(), PlanError> {
-        let pos = |x: f64| x.is_finite() && x > 0.0;
-        if pos(self.vmax)
-            && pos(self.amax)
-            && pos(self.dmax)
-            && !self.jmax.is_nan()
-            && self.jmax >= 0.0
-        {
+        if self.is_valid() {
             Ok(())
         } else {
             Err(PlanError::InvalidLimits)
         }
+    }
+
+    /// [`Limits::validate`] as a bool (comparisons are false for NaN).
+    #[inline]
+    pub(crate) fn is_valid(&self) -> bool {
+        let pos = |x: f64| x > 0.0 && x < f64::INFINITY;
+        pos(self.vmax) && pos(self.amax) && pos(self.dmax) && self.jmax >= 0.0
     }
 }
 
@@ -124,20 +125,52 @@ pub enum PlanError {
 }
 
 /// A planned motion: the start state, phases of constant jerk, then constant velocity.
-#[derive(Clone, Copy, Debug, PartialEq)]
+///
+/// Equality compares the plan (start, phases, their start states, end), not the
+/// sampling cursor.
+#[derive(Clone, Copy, Debug)]
+#[repr(C)]
 pub struct Profile {
-    start: State,
+    /// The piece last sampled by [`Profile::at_next`] (first, with the total duration:
+    /// the cycle's sampling touches one cache line of the profile).
+    cursor: Cursor,
+    /// Total duration.
+    total: f64,
     count: usize,
-    phases: [Phase; MAX_PHASES],
+    /// Time at the end of each phase.
+    ends: [f64; MAX_PHASES],
     /// State at the start of each phase. For a trapezoidal phase `starts[i].a` is the
     /// phase's constant acceleration.
     starts: [State; MAX_PHASES],
-    /// Time at the end of each phase.
-    ends: [f64; MAX_PHASES],
+    phases: [Phase; MAX_PHASES],
+    start: State,
     /// State at the end of the last phase.
     last: State,
-    /// Total duration.
-    total: f64,
+}
+
+/// One piece of a profile for sampling: times `[lo, hi)`, the state at `lo` and the
+/// jerk. Only ever copied from the profile's own phases (or its constant-velocity end),
+/// so it is valid for every copy of the profile; an empty interval means "look up".
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C)]
+struct Cursor {
+    lo: f64,
+    hi: f64,
+    at: State,
+    jerk: f64,
+}
+
+impl PartialEq for Profile {
+    fn eq(&self, o: &Profile) -> bool {
+        let n = self.count;
+        n == o.count
+            && self.total == o.total
+            && self.start == o.start
+            && self.last == o.last
+            && self.phases[..n] == o.phases[..n]
+            && self.starts[..n] == o.starts[..n]
+            && self.ends[..n] == o.ends[..n]
+    }
 }
 
 impl Profile {
@@ -145,21 +178,68 @@ impl Profile {
     #[inline]
     pub(crate) fn new(start: State) -> Profile {
         Profile {
-            start,
-            count: 0,
-            phases: [Phase::default(); MAX_PHASES],
-            starts: [State::default(); MAX_PHASES],
-            ends: [0.0; MAX_PHASES],
-            last: start,
+            cursor: Cursor::default(),
             total: 0.0,
+            count: 0,
+            ends: [0.0; MAX_PHASES],
+            starts: [State::default(); MAX_PHASES],
+            phases: [Phase::default(); MAX_PHASES],
+            start,
+            last: start,
         }
     }
 
-    /// The profile of a fast path's phases (the fourth item is the cruise, at the start
-    /// of which the state is snapped to velocity `v_peak`, acceleration 0).
-    #[inline(always)]
-    fn fast(start: State, items: &[(f64, f64); 7], v_peak: f64) -> Profile {
-        Profile::build(start, items, false, Some((3, v_peak)))
+    /// [`Profile::at`] for a caller that samples forward in time (one interpolation
+    /// cycle after the other): the piece containing `t` is kept in the profile's cursor,
+    /// so that a sample inside the same piece reads one cache line and does no search.
+    /// Gives the same state as `at(t)`.
+    #[inline]
+    pub(crate) fn at_next(&mut self, t: f64) -> State {
+        let c = &self.cursor;
+        if t >= c.lo && t < c.hi {
+            return c.at.integrate(t - c.lo, c.jerk);
+        }
+        self.at_and_seek(t)
+    }
+
+    /// The slow path of [`Profile::at_next`]: `at(t)`, and the cursor moved to the piece
+    /// containing `t` (a phase, or the constant-velocity continuation after the end).
+    #[inline(never)]
+    fn at_and_seek(&mut self, t: f64) -> State {
+        let s = self.at(t);
+        if t >= self.total {
+            let e = self.end();
+            self.cursor = Cursor {
+                lo: self.total,
+                hi: f64::INFINITY,
+                at: State {
+                    p: e.p,
+                    v: e.v,
+                    a: 0.0,
+                },
+                jerk: 0.0,
+            };
+        } else if t >= 0.0 {
+            let i = self.phase_index(t);
+            self.cursor = Cursor {
+                lo: if i == 0 { 0.0 } else { self.ends[i - 1] },
+                hi: self.ends[i],
+                at: self.starts[i],
+                jerk: self.phases[i].jerk,
+            };
+        }
+        s
+    }
+
+    /// Index of the phase containing `t` (0 <= `t` < duration).
+    #[inline]
+    fn phase_index(&self, t: f64) -> usize {
+        let n = self.count;
+        let mut i = 0;
+        while i + 1 < n && t >= self.ends[i] {
+            i += 1;
+        }
+        i
     }
 
     /// The profile of `items` = (duration, jerk) from `start` (or (duration,
@@ -174,6 +254,15 @@ impl Profile {
         snap: Option<(usize, f64)>,
     ) -> Profile {
         let mut prof = Profile::new(start);
+        prof.fill(items, trapezoidal, snap);
+        prof
+    }
+
+    /// [`Profile::build`] in place: `self` must be `Profile::new(start)` (entries past the
+    /// phase count stay zero, so that equal plans compare equal).
+    #[inline(always)]
+    fn fill(&mut self, items: &[(f64, f64)], trapezoidal: bool, snap: Option<(usize, f64)>) {
+        let start = self.start;
         // The running state is kept in scalar locals (registers): the arrays are only
         // written, never read back (no store-to-load forwarding stalls).
         let (mut p, mut v, mut a) = (start.p, start.v, start.a);
@@ -195,21 +284,56 @@ impl Profile {
             } else {
                 x
             };
-            prof.phases[n] = Phase { duration, jerk };
-            prof.starts[n] = State { p, v, a };
+            self.phases[n] = Phase { duration, jerk };
+            self.starts[n] = State { p, v, a };
             let t = duration;
             p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
             v += t * (a + 0.5 * t * jerk);
             a = if trapezoidal { 0.0 } else { a + t * jerk };
             total += duration;
-            prof.ends[n] = total;
+            self.ends[n] = total;
             n += 1;
         }
-        let s = State { p, v, a };
-        prof.count = n;
-        prof.last = s;
-        prof.total = total;
-        prof
+        self.count = n;
+        self.last = State { p, v, a };
+        self.total = total;
+    }
+
+    /// [`Profile::fill`] for a fast path's seven jerk phases, the fourth a cruise at whose
+    /// start the state is snapped to velocity `v_peak`, acceleration 0. Branch-free: which
+    /// phases are empty varies from problem to problem, so every item is written at the
+    /// next free slot and the slot only advances for a phase of positive duration (an
+    /// empty phase integrates over 0 s, which leaves the state bit for bit unchanged).
+    /// The one slot past the last phase that an empty item may have written is cleared.
+    #[inline(always)]
+    fn fill_fast(&mut self, items: &[(f64, f64); 7], v_peak: f64) {
+        let start = self.start;
+        let (mut p, mut v, mut a) = (start.p, start.v, start.a);
+        let mut total = 0.0;
+        let mut n = 0;
+        for (k, &(duration, jerk)) in items.iter().enumerate() {
+            if k == 3 {
+                v = v_peak;
+                a = 0.0;
+            }
+            let keep = duration > 0.0;
+            let t = if keep { duration } else { 0.0 };
+            // n <= k < 7 < MAX_PHASES.
+            self.phases[n] = Phase { duration: t, jerk };
+            self.starts[n] = State { p, v, a };
+            p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
+            v += t * (a + 0.5 * t * jerk);
+            a += t * jerk;
+            total += t;
+            self.ends[n] = total;
+            n += keep as usize;
+        }
+        self.phases[n] = Phase::default();
+        self.starts[n] = State::default();
+        self.ends[n] = 0.0;
+        self.count = n;
+        self.last = State { p, v, a };
+        self.total = total;
     }
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
@@ -224,11 +348,48 @@ impl Profile {
         if let Some((items, v_peak)) = velocity::fast_path(start, target_p, target_v, lim) {
             return Ok(Profile::fast(start, &items, v_peak));
         }
+        Self::position_kernel(start, target_p, target_v, lim)
+    }
+
+    /// The kernel's enumeration of every profile family (no fast path applies). Kept out
+    /// of [`Profile::position`]: its large locals would otherwise make the fast path's
+    /// stack frame about 4 KiB, where the copy of the result into the caller's slot then
+    /// suffers 4 KiB aliasing between loads and stores.
+    #[inline(never)]
+    fn position_kernel(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> Result<Profile, PlanError> {
         let mut block = kernel::Block::default();
         match Solved::new(start, target_p, target_v, lim, &mut block) {
             Some(sol) => Ok(sol.build(&block.p_min)),
             None => Self::position_after_zero_acceleration(start, target_p, target_v, lim),
         }
+    }
+
+    /// The phases of [`Profile::position`] when a closed-form fast path applies (valid
+    /// inputs), for [`Profile::fast`]; `None` otherwise.
+    #[inline(always)]
+    pub(crate) fn position_fast(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> Option<([(f64, f64); 7], f64)> {
+        if check_inputs(&start, target_p, target_v, lim).is_err() {
+            return None;
+        }
+        velocity::fast_path(start, target_p, target_v, lim)
+    }
+
+    /// A fast path's profile (see [`Profile::fill_fast`]).
+    #[inline(always)]
+    pub(crate) fn fast(start: State, items: &[(f64, f64); 7], v_peak: f64) -> Profile {
+        let mut prof = Profile::new(start);
+        prof.fill_fast(items, v_peak);
+        prof
     }
 
     /// Fallback for the rare start states where the kernel finds no profile (inherited from
@@ -342,7 +503,6 @@ impl Profile {
     /// the motion continues at the final velocity with acceleration 0.
     #[inline]
     pub fn at(&self, t: f64) -> State {
-        let n = self.count;
         if t >= self.duration() {
             let e = self.end();
             let dt = t - self.duration();
@@ -355,10 +515,7 @@ impl Profile {
         if t < 0.0 {
             return self.start;
         }
-        let mut i = 0;
-        while i + 1 < n && t >= self.ends[i] {
-            i += 1;
-        }
+        let i = self.phase_index(t);
         let t0 = if i == 0 { 0.0 } else { self.ends[i - 1] };
         self.starts[i].integrate(t - t0, self.phases[i].jerk)
     }
@@ -489,6 +646,14 @@ impl Solved {
     #[inline]
     /// The public profile: brake pre-phase then the kernel profile `k`, mirrored back.
     fn build(&self, k: &kernel::kprofile::Profile) -> Profile {
+        let mut prof = Profile::new(self.start);
+        self.build_into(k, &mut prof);
+        prof
+    }
+
+    /// [`Solved::build`] in place: `out` must be `Profile::new(self.start)`.
+    #[inline]
+    fn build_into(&self, k: &kernel::kprofile::Profile, out: &mut Profile) {
         let s = self.s;
         let b = &self.brake;
         let mut items = [(0.0, 0.0); MAX_PHASES];
@@ -505,7 +670,7 @@ impl Solved {
                 items[2 + i] = (k.t[i], s * k.j[i]);
             }
         }
-        Profile::build(self.start, &items, self.trapezoidal, None)
+        out.fill(&items, self.trapezoidal, None);
     }
 }
 
@@ -523,4 +688,55 @@ fn check_inputs(
         return Err(PlanError::InvalidTarget { vmax: lim.vmax });
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod cursor_tests {
+    use super::*;
+
+    /// `at_next` (the engine's per-cycle sampling through the cursor) gives `at`'s state
+    /// for forward cycles, backward jumps, times past the end and before the start, on
+    /// a profile and on copies of it taken mid-way (the cursor travels with the copy).
+    #[test]
+    fn at_next_equals_at() {
+        let lim = Limits {
+            vmax: 40.0,
+            amax: 300.0,
+            dmax: 500.0,
+            jmax: 4000.0,
+        };
+        let starts = [
+            State::default(),
+            State {
+                p: 3.0,
+                v: -20.0,
+                a: 100.0,
+            },
+            State {
+                p: -1.0,
+                v: 35.0,
+                a: -200.0,
+            },
+        ];
+        let mut other = Profile::position(State::default(), -7.0, 0.0, &lim).unwrap();
+        for (k, start) in starts.iter().enumerate() {
+            for target in [0.05, 2.0, 60.0, -30.0] {
+                let mut prof = Profile::position(*start, target, 0.0, &lim).unwrap();
+                let d = prof.duration();
+                let mut times: Vec<f64> = (0..2000).map(|i| i as f64 * d * 1.3 / 1999.0).collect();
+                times.extend([0.3 * d, -1.0, 0.9 * d, 2.0 * d, 0.0, d, 0.5 * d]);
+                for (i, &t) in times.iter().enumerate() {
+                    let want = prof.at(t);
+                    let got = prof.at_next(t);
+                    assert_eq!(got, want, "start {k} target {target} t {t}");
+                    if i % 97 == 0 {
+                        // Replace the profile by a copy of another one sampled elsewhere.
+                        std::mem::swap(&mut prof, &mut other);
+                        assert_eq!(prof.at_next(t), prof.at(t));
+                        std::mem::swap(&mut prof, &mut other);
+                    }
+                }
+            }
+        }
+    }
 }

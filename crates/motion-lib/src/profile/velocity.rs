@@ -128,59 +128,80 @@ pub(crate) fn fast_path(
     if lim.is_trapezoidal() {
         return None;
     }
-    if let Some(items) = position_cruising(start, target_p, target_v, lim) {
-        let s = if target_p >= start.p { 1.0 } else { -1.0 };
-        return Some((items, s * lim.vmax));
-    }
     if start.v == 0.0 && start.a == 0.0 && target_v == 0.0 {
-        return position_rest_to_rest(start, target_p, lim);
+        return rest_to_rest(start, target_p, lim);
     }
-    None
+    let items = position_cruising(start, target_p, target_v, lim)?;
+    let s = if target_p >= start.p { 1.0 } else { -1.0 };
+    Some((items, s * lim.vmax))
 }
 
-/// Rest-to-rest move too short to cruise at vmax: accelerate to a peak velocity `vp`
-/// and decelerate, each half a time-optimal velocity change (triangular when
-/// `vp <= limit^2 / j`, else trapezoidal). The distance D(vp) = vp/2 (T_up + T_down) is
-/// increasing in `vp`; both halves triangular or both trapezoidal give closed forms.
-/// The mixed case (quartic) is left to the kernel.
+/// Rest-to-rest move (v = a = 0 at both ends), in closed form: accelerate to a peak
+/// velocity `vp`, cruise, decelerate. Each ramp from rest to `vp` is triangular (jerk
+/// `j` for `sqrt(vp/j)`, then `-j` as long) when `vp <= a^2/j`, else trapezoidal (`a/j`
+/// at full jerk, `vp/a - a/j` at acceleration `a`, `a/j` back), and covers
+/// `vp/2 x its duration`. With room to cruise, `vp = vmax`. Otherwise the distance
+/// `D(vp)` of the two ramps is increasing in `vp` and has closed-form inverses when both
+/// ramps are triangular (`D = 2 j t^3` with `t = sqrt(vp/j)`: one cube root) or both
+/// trapezoidal (a quadratic in `vp`); the mixed case (`amax != dmax`, a quartic) is left
+/// to the kernel. No loops, no iterations: a handful of divisions and at most one root.
 #[inline(always)]
-fn position_rest_to_rest(
-    start: State,
-    target_p: f64,
-    lim: &Limits,
-) -> Option<([(f64, f64); 7], f64)> {
+fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<([(f64, f64); 7], f64)> {
     let s = if target_p >= start.p { 1.0 } else { -1.0 };
     let dist = s * (target_p - start.p);
-    let j = lim.jmax;
-    let (va, vd) = (lim.amax * lim.amax / j, lim.dmax * lim.dmax / j);
-    // Both triangular: D = 2 vp^(3/2) / sqrt(j).
-    let tri = (0.5 * dist * j.sqrt()).powf(2.0 / 3.0);
-    let vp = if tri <= va.min(vd) {
-        tri
-    } else {
-        // Both trapezoidal: (1/amax + 1/dmax)/2 vp^2 + (amax + dmax)/(2j) vp - dist = 0.
-        let qa = 0.5 * (1.0 / lim.amax + 1.0 / lim.dmax);
-        let qb = 0.5 * (lim.amax + lim.dmax) / j;
-        let vp = 2.0 * dist / (qb + (qb * qb + 4.0 * qa * dist).sqrt());
-        if vp >= va.max(vd) {
-            vp
+    let (vm, am, dm, j) = (lim.vmax, lim.amax, lim.dmax, lim.jmax);
+    // The four divisions are independent of each other (issued back to back); everything
+    // after them is multiplications, one comparison and at most one root.
+    let (inv_j, inv_am, inv_dm, inv_vm) = (1.0 / j, 1.0 / am, 1.0 / dm, 1.0 / vm);
+    let sj = s * j;
+    // Ramp from rest to vmax with acceleration limit `a`: (jerk time, constant-acceleration
+    // time, distance).
+    let ramp = |a: f64, inv_a: f64| -> (f64, f64, f64) {
+        if vm * j > a * a {
+            let t1 = a * inv_j;
+            let t2 = vm * inv_a - t1;
+            (t1, t2, 0.5 * vm * (2.0 * t1 + t2))
         } else {
-            return None;
+            let t1 = (vm * inv_j).sqrt();
+            (t1, 0.0, vm * t1)
         }
     };
-    if !(vp > 0.0 && vp <= lim.vmax && vp.is_finite()) {
+    let (ta1, ta2, da) = ramp(am, inv_am);
+    let (td1, td2, dd) = ramp(dm, inv_dm);
+    let cruise = (dist - da - dd) * inv_vm;
+    let (ta1, ta2, td1, td2, vp, cruise) = if cruise >= 0.0 {
+        (ta1, ta2, td1, td2, vm, cruise)
+    } else {
+        let a_lo = am.min(dm);
+        let a_hi = am.max(dm);
+        // Both triangular while vp = j t^2 <= a_lo^2 / j, i.e. dist <= 2 a_lo^3 / j^2.
+        let t_lo = a_lo * inv_j;
+        if dist <= 2.0 * j * t_lo * t_lo * t_lo {
+            let t = (0.5 * dist * inv_j).cbrt();
+            (t, 0.0, t, 0.0, j * t * t, 0.0)
+        } else {
+            // Both trapezoidal: (1/am + 1/dm)/2 vp^2 + (am + dm)/(2j) vp - dist = 0.
+            let qa = 0.5 * (inv_am + inv_dm);
+            let qb = 0.5 * (am + dm) * inv_j;
+            let vp = 2.0 * dist / (qb + (qb * qb + 4.0 * qa * dist).sqrt());
+            if !(vp * j >= a_hi * a_hi && vp <= vm) {
+                return None;
+            }
+            let (t1a, t1d) = (am * inv_j, dm * inv_j);
+            (t1a, vp * inv_am - t1a, t1d, vp * inv_dm - t1d, vp, 0.0)
+        }
+    };
+    if !(vp > 0.0 && vp.is_finite()) {
         return None;
     }
-    let c1 = change(0.0, 0.0, vp, lim.amax, lim.dmax, j);
-    let c2 = change(vp, 0.0, 0.0, lim.amax, lim.dmax, j);
     let items = [
-        (c1.t[0], s * c1.x[0]),
-        (c1.t[1], s * c1.x[1]),
-        (c1.t[2], s * c1.x[2]),
-        (0.0, 0.0),
-        (c2.t[0], s * c2.x[0]),
-        (c2.t[1], s * c2.x[1]),
-        (c2.t[2], s * c2.x[2]),
+        (ta1, sj),
+        (ta2, 0.0),
+        (ta1, -sj),
+        (cruise, 0.0),
+        (td1, -sj),
+        (td2, 0.0),
+        (td1, sj),
     ];
     Some((items, s * vp))
 }
