@@ -69,6 +69,9 @@ pub enum ReductionReason {
     Velocity,
     /// The predecessor's line is too short to reach the junction speed.
     Distance,
+    /// An arc's path speed: its curvature and the axes' acceleration and jerk limits
+    /// allow less than the block's Velocity (README, "Arc speed").
+    ArcSpeed,
 }
 
 impl ReductionReason {
@@ -81,6 +84,7 @@ impl ReductionReason {
             ReductionReason::NoBlend => "no room for a blend",
             ReductionReason::Velocity => "axis velocity limit",
             ReductionReason::Distance => "line too short",
+            ReductionReason::ArcSpeed => "arc curvature",
         }
     }
 }
@@ -172,6 +176,10 @@ pub(crate) struct GroupRt {
     reduction_count: usize,
     /// (requested, reached) of a lowered junction passed in the last cycle, else (0, 0).
     junction_now: (f64, f64),
+    /// (requested, reached) path speed of an arc that started since the last cycle and
+    /// whose speed its curvature lowered (shown as `junction_now` unless a lowered
+    /// junction takes that cycle).
+    arc_now: Option<(f64, f64)>,
     /// The running move could not be planned to its junction (or failed): the next one
     /// starts from rest, without its corner blend.
     drop_junction: bool,
@@ -203,6 +211,7 @@ impl Engine {
             reductions: Vec::with_capacity(16),
             reduction_count: 0,
             junction_now: (0.0, 0.0),
+            arc_now: None,
             drop_junction: false,
         });
         self.groups.len() - 1
@@ -395,6 +404,16 @@ impl Engine {
             Some(a) if matches!(a.kind, GKind::Path | GKind::Direct) => a.target,
             Some(a) if matches!(a.kind, GKind::Halt | GKind::Stop | GKind::Brake) => {
                 let n = gr.n();
+                if let Some(profs) = &a.direct {
+                    // Each axis brakes on its own profile.
+                    let mut r = self.raw_now(g);
+                    for (i, ax) in gr.axes.iter().enumerate().take(n) {
+                        if ax.is_some() {
+                            r[i] = profs[i].end().p;
+                        }
+                    }
+                    return r;
+                }
                 let mut q = self.raw_now(g);
                 let (mut d1, mut d2) = (ZERO, ZERO);
                 // (A brake begun on a corner blend has the line after it as geometry.)
@@ -497,10 +516,16 @@ impl Engine {
         }
     }
 
-    /// Arc path limits: the tangent turns, so every axis's limits bound the path, and
-    /// the axes' acceleration is shared between the path (tangential) and the turn
-    /// (normal, v^2 * curvature): each gets half.
-    fn arc_limits(&self, g: usize, geo: &Geometry, lim: &mut Limits) {
+    /// Arc path limits ("Arc speed" in the README). The tangent turns, so every axis's
+    /// limits bound the path. With a = min over the axes of min(amax, dmax) and j the
+    /// lowest axis jerk limit, on an arc of curvature k (largest |d2|) and largest |d3| = m:
+    /// an axis accelerates at most |a_t| + k v^2 and jerks at most
+    /// |j_t| + 3 k v |a_t| + m v^3 (a_t, j_t the path's tangential acceleration and jerk).
+    /// The budget is split: the tangential acceleration and the turn get a / 2 each
+    /// (v <= sqrt(a / (2 k))); the tangential jerk j / 2, the turn's own jerk j / 4
+    /// (v <= cbrt(j / (4 m))), the cross term j / 4 (|a_t| <= j / (12 k v)). Returns the
+    /// path speed the arc allows (the lowest of those caps and the axes' velocity limits).
+    fn arc_limits(&self, g: usize, geo: &Geometry, lim: &mut Limits) -> f64 {
         let n = self.groups[g].n();
         let mut vmax = f64::INFINITY;
         let mut amin = f64::INFINITY;
@@ -515,17 +540,32 @@ impl Engine {
         }
         let half = amin.min(lim.amax).min(lim.dmax) / 2.0;
         let k = geo.max_curvature(n);
+        let m = geo.max_d3();
         let v_turn = if k > 0.0 {
             (half / k).sqrt()
         } else {
             f64::INFINITY
         };
-        lim.vmax = lim.vmax.min(vmax).min(v_turn);
+        let mut v_arc = vmax.min(v_turn);
         lim.amax = lim.amax.min(half);
         lim.dmax = lim.dmax.min(half);
-        if jmin.is_finite() && lim.jmax > 0.0 {
-            lim.jmax = lim.jmax.min(jmin / 2.0);
+        if jmin.is_finite() {
+            if m > 0.0 {
+                v_arc = v_arc.min((jmin / (4.0 * m)).cbrt());
+            }
+            if k > 0.0 && v_arc > 0.0 {
+                let a_cross = jmin / (12.0 * k * v_arc);
+                lim.amax = lim.amax.min(a_cross);
+                lim.dmax = lim.dmax.min(a_cross);
+            }
+            lim.jmax = if lim.jmax > 0.0 {
+                lim.jmax.min(jmin / 2.0)
+            } else {
+                jmin / 2.0
+            };
         }
+        lim.vmax = lim.vmax.min(v_arc);
+        v_arc
     }
 
     /// Gives a motion command to a group. Returns its handle or the ErrorID.
@@ -736,6 +776,11 @@ impl Engine {
             // The move starts where the brake ends.
             let (mut q, mut d1, mut d2) = (ZERO, ZERO, ZERO);
             a.geom.eval(a.prof.end().p, n, &mut q, &mut d1, &mut d2);
+            if let Some(profs) = &a.direct {
+                for i in 0..n {
+                    q[i] = profs[i].end().p;
+                }
+            }
             for (i, ax) in self.groups[g].axes.iter().enumerate() {
                 if ax.is_some() {
                     p.start_corner[i] = q[i];
@@ -1082,6 +1127,8 @@ impl Engine {
             _ => None,
         });
         let mut keep_prefix = None;
+        // An arc whose path speed its curvature lowered: (requested, reached, start).
+        let mut arc_cut = None;
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
             GKind::Halt | GKind::Stop | GKind::Brake if in_blend.is_some() => {
                 let Some((b, v, t, pe, end, u2)) = in_blend else {
@@ -1103,6 +1150,48 @@ impl Engine {
                 keep_prefix = Some(((b, v), t));
                 (Geometry::line(&end, &far), prof, lim, None, pe)
             }
+            GKind::Halt | GKind::Stop | GKind::Brake
+                if self.groups[g]
+                    .active
+                    .as_ref()
+                    .is_some_and(|a| a.direct.is_some()) =>
+            {
+                // A MoveDirectAbsolute (or its brake) runs: each axis brakes on its own
+                // profile with the block's deceleration and jerk capped by its limits.
+                let mut profs = Box::new([standing(0.0); MAX_AXES]);
+                for i in 0..n {
+                    if let Some(a) = self.groups[g].axes[i] {
+                        let al = self.axes[a as usize].cfg.limits;
+                        let st = State {
+                            p: now[i],
+                            v: vel[i],
+                            a: acc[i],
+                        };
+                        let mut l = Limits {
+                            vmax: al.vmax.max(st.v.abs()),
+                            amax: al.amax.max(al.dmax).max(st.a.abs()),
+                            dmax: al.dmax.min(p.inputs.deceleration),
+                            jmax: if p.inputs.jerk > 0.0 && al.jmax > 0.0 {
+                                p.inputs.jerk.min(al.jmax)
+                            } else if p.inputs.jerk > 0.0 {
+                                p.inputs.jerk
+                            } else {
+                                al.jmax
+                            },
+                        };
+                        if l.jmax > 0.0 && (al.jmax == 0.0 || al.jmax > l.jmax) {
+                            let peak = (st.v + st.a * st.a.abs() / (2.0 * l.jmax)).abs();
+                            if peak > al.vmax {
+                                l.jmax = al.jmax;
+                            }
+                        }
+                        profs[i] = Profile::velocity(st, 0.0, &l)
+                            .map_err(|_| ErrorId::PlanningFailed)?;
+                    }
+                }
+                let geo = Geometry::line(&now, &now);
+                (geo, standing(0.0), Limits::default(), Some(profs), 0.0)
+            }
             GKind::Home | GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
                     (Geometry::line(&now, &now), State::default()),
@@ -1113,9 +1202,30 @@ impl Engine {
                 i2.acceleration = p.inputs.deceleration;
                 let (u, _) = geo.tangents(n);
                 let mut lim = self.path_lims(g, &u, &i2)?;
-                lim.amax = lim.amax.max(lim.dmax);
-                lim.vmax = lim.vmax.max(s.v.abs());
-                self.raise_jerk(g, &u, s, &mut lim);
+                if let Geometry::Arc { .. } = geo {
+                    // Braking on an arc: the arc's limits (the turn keeps its share); the
+                    // arc's own jerk when the halt's lower one would carry the speed
+                    // past the arc's.
+                    let mut arc = lim;
+                    arc.jmax = 0.0;
+                    let v_arc = self.arc_limits(g, &geo, &mut arc);
+                    lim.dmax = lim.dmax.min(arc.dmax);
+                    lim.jmax = if lim.jmax > 0.0 && arc.jmax > 0.0 {
+                        lim.jmax.min(arc.jmax)
+                    } else {
+                        arc.jmax
+                    };
+                    let peak = s.v + s.a * s.a.abs() / (2.0 * lim.jmax.max(1e-300));
+                    if lim.jmax > 0.0 && peak > v_arc {
+                        lim.jmax = arc.jmax;
+                    }
+                    lim.amax = lim.dmax.max(s.a.abs());
+                    lim.vmax = v_arc.max(s.v.abs());
+                } else {
+                    lim.amax = lim.amax.max(lim.dmax);
+                    lim.vmax = lim.vmax.max(s.v.abs());
+                    self.raise_jerk(g, &u, s, &mut lim);
+                }
                 let prof = Profile::velocity(s, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)?;
                 (geo, prof, lim, None, 0.0)
             }
@@ -1132,7 +1242,11 @@ impl Engine {
                 let (u, _) = geo.tangents(n);
                 let mut lim = self.path_lims(g, &u, &p.inputs)?;
                 if let Geometry::Arc { .. } = geo {
-                    self.arc_limits(g, &geo, &mut lim);
+                    let requested = lim.vmax;
+                    let reached = self.arc_limits(g, &geo, &mut lim);
+                    if reached < requested {
+                        arc_cut = Some((requested, reached, start));
+                    }
                 }
                 let (v0, a0, pe) = match &p.prefix {
                     Some((b, v)) => (*v, 0.0, if *v > 0.0 { b.len() / v } else { 0.0 }),
@@ -1173,11 +1287,15 @@ impl Engine {
                 for i in 0..n {
                     if let Some(a) = self.groups[g].axes[i] {
                         let al = self.axes[a as usize].cfg.limits;
-                        let l = Limits {
+                        // The block's inputs capped by the axis's limits (Jerk 0: the
+                        // axis's own), as a single-axis move.
+                        let mut l = Limits {
                             vmax: al.vmax.min(p.inputs.velocity),
                             amax: al.amax.min(p.inputs.acceleration),
                             dmax: al.dmax.min(p.inputs.deceleration),
-                            jmax: if p.inputs.jerk > 0.0 {
+                            jmax: if p.inputs.jerk > 0.0 && al.jmax > 0.0 {
+                                p.inputs.jerk.min(al.jmax)
+                            } else if p.inputs.jerk > 0.0 {
                                 p.inputs.jerk
                             } else {
                                 al.jmax
@@ -1188,6 +1306,14 @@ impl Engine {
                             v: vel[i],
                             a: acc[i],
                         };
+                        // Started while the axis accelerates: the block's lower jerk would
+                        // carry the velocity past the axis's limit; the axis's jerk then.
+                        if l.jmax > 0.0 && (al.jmax == 0.0 || al.jmax > l.jmax) {
+                            let peak = (st.v + st.a * st.a.abs() / (2.0 * l.jmax)).abs();
+                            if peak > al.vmax {
+                                l.jmax = al.jmax;
+                            }
+                        }
                         profs[i] = crate::engine::plan_position(st, p.target[i], 0.0, &l)
                             .map_err(|_| ErrorId::PlanningFailed)?;
                         longest = longest.max(profs[i].duration());
@@ -1225,6 +1351,20 @@ impl Engine {
             direct,
             tail,
         });
+        if let Some((requested, reached, corner)) = arc_cut {
+            gr.reduction_count += 1;
+            if gr.reductions.len() < REDUCTIONS_KEPT {
+                gr.reductions.push(Reduction {
+                    block: p.seq,
+                    cmd: p.id,
+                    corner,
+                    requested,
+                    reached,
+                    reason: ReductionReason::ArcSpeed,
+                });
+            }
+            gr.arc_now = Some((requested, reached));
+        }
         gr.state = if p.kind == GKind::Stop {
             gr.stop_owner = Some(p.id);
             GroupState::GroupStopping
@@ -1439,7 +1579,7 @@ impl Engine {
     /// One cycle of every group with a running move.
     pub(crate) fn step_groups(&mut self, dt: f64) {
         for g in 0..self.groups.len() {
-            self.groups[g].junction_now = (0.0, 0.0);
+            self.groups[g].junction_now = self.groups[g].arc_now.take().unwrap_or((0.0, 0.0));
             let Some(mut a) = self.groups[g].active.take() else {
                 continue;
             };
@@ -1541,7 +1681,8 @@ impl Engine {
                         }
                         match self.group_activate(g, p, t0) {
                             Ok(()) => {
-                                if let Some(r) = p.reduced {
+                                let arc = self.groups[g].arc_now.take();
+                                if let Some(r) = p.reduced.or(arc) {
                                     self.groups[g].junction_now = r;
                                 }
                                 if t0 > 0.0 {
