@@ -1336,7 +1336,18 @@ impl Engine {
                     o.prof
                 })
             }
-            Kind::Stop => Profile::velocity(start, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed),
+            Kind::Stop => {
+                // Not overridden; the jerk raised as for a halt (see `overridden`).
+                let al = self.axes[axis].cfg.limits;
+                if lim.jmax > 0.0 && (al.jmax == 0.0 || al.jmax > lim.jmax) {
+                    let peak = (start.v + start.a * start.a.abs() / (2.0 * lim.jmax)).abs();
+                    if peak > al.vmax {
+                        lim.jmax = al.jmax;
+                    }
+                }
+                lim.vmax = lim.vmax.max(start.v.abs());
+                Profile::velocity(start, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)
+            }
             Kind::Gear | Kind::Cam => Ok(self.axes[axis].active.prof),
             _ => Ok(Active::idle(start).prof),
         }

@@ -220,9 +220,26 @@ impl Engine {
         let s = self.axes[axis].set;
         sp.m0 = m.p;
         sp.s0 = s.p;
-        let lim = self.axes[axis].active.lim;
+        let mut lim = self.axes[axis].active.lim;
         let prof = match self.axes[axis].active.kind {
             Kind::Gear => {
+                // The slave moves by the catch-up profile plus ratio * master: the profile
+                // gets the slave's limits less the master's axis limits times |ratio|
+                // (at least a twentieth of the slave's, README "Gearing").
+                let ml = self.axes[sp.master].cfg.limits;
+                let sl = self.axes[axis].cfg.limits;
+                let k = sp.ratio.abs();
+                let share = |own: f64, slave: f64, master: f64| {
+                    own.min((slave - k * master).max(slave / 20.0))
+                };
+                lim.vmax = share(lim.vmax, sl.vmax, ml.vmax);
+                lim.amax = share(lim.amax, sl.amax.min(sl.dmax), ml.amax.max(ml.dmax));
+                lim.dmax = share(lim.dmax, sl.amax.min(sl.dmax), ml.amax.max(ml.dmax));
+                if sl.jmax > 0.0 {
+                    let jm = if ml.jmax > 0.0 { ml.jmax } else { 0.0 };
+                    let j = if lim.jmax > 0.0 { lim.jmax } else { sl.jmax };
+                    lim.jmax = share(j, sl.jmax, jm);
+                }
                 let e = State {
                     p: 0.0,
                     v: s.v - sp.ratio * m.v,
