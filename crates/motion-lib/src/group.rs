@@ -568,6 +568,45 @@ impl Engine {
         v_arc
     }
 
+    /// Software limits of the group's axes against a path piece between arc lengths
+    /// `s0 <= s1` (the geometry over [0, len] and, at activation, the planned profile's
+    /// overshoot): ErrorID 27 when the end point of an axis lies outside its range, 29 when
+    /// the path leaves it (an arc's bulge, an overshoot). As for single axes, an axis that
+    /// starts beyond a limit may move back, never further out.
+    fn group_sw_check(&self, g: usize, geo: &Geometry, s0: f64, s1: f64) -> Result<(), ErrorId> {
+        let gr = &self.groups[g];
+        let n = gr.n();
+        let on = |a: &u32| {
+            let c = &self.axes[*a as usize].cfg;
+            c.sw_limits_enabled && c.period().is_none()
+        };
+        if !gr.axes.iter().flatten().any(on) {
+            return Ok(());
+        }
+        let (mut start, mut end, mut d1, mut d2) = (ZERO, ZERO, ZERO, ZERO);
+        geo.eval(0.0, n, &mut start, &mut d1, &mut d2);
+        geo.eval(geo.len(), n, &mut end, &mut d1, &mut d2);
+        let (lo, hi) = geo.axis_range(n, s0.min(0.0), s1.max(geo.len()));
+        for (i, a) in gr.axes.iter().enumerate().take(n) {
+            let Some(a) = a.filter(on) else {
+                continue;
+            };
+            let ax = &self.axes[a as usize];
+            let (o, c) = (ax.origin, &ax.cfg);
+            let e = end[i] + o;
+            if e > c.sw_limit_pos || e < c.sw_limit_neg {
+                return Err(ErrorId::TargetBeyondSoftwareLimit);
+            }
+            let top = c.sw_limit_pos.max(start[i] + o);
+            let bottom = c.sw_limit_neg.min(start[i] + o);
+            let eps = 1e-12 * (1.0 + top.abs().max(bottom.abs()));
+            if hi[i] + o > top + eps || lo[i] + o < bottom - eps {
+                return Err(ErrorId::PathBeyondSoftwareLimit);
+            }
+        }
+        Ok(())
+    }
+
     /// Gives a motion command to a group. Returns its handle or the ErrorID.
     pub fn submit_group(
         &mut self,
@@ -664,6 +703,13 @@ impl Engine {
         }
         // Validate the dynamics against the move's direction.
         let geom = self.geometry_for(g, &from, &target, &motion);
+        if kind == GKind::Path {
+            // The path (end point, an arc's bulge) within the software limits, before any
+            // motion; buffered moves again when they start (from where they really start).
+            self.group_sw_check(g, &geom, 0.0, geom.len())?;
+        } else if kind == GKind::Direct {
+            self.group_sw_check(g, &Geometry::line(&target, &target), 0.0, 0.0)?;
+        }
         let (t0, _) = geom.tangents(n);
         let lim = match kind {
             GKind::Halt | GKind::Stop => {
@@ -837,20 +883,28 @@ impl Engine {
         // Predecessor: the queue's back (its geometry from its original start corner: its
         // own predecessor may since have been shortened by a corner blend), else the
         // active move.
-        let (pred_target, pred_speed, pred_kind, pred_is_active, pred_geom) = match gr.queue.back()
-        {
-            Some(b) => (
-                b.target,
-                b.speed,
-                b.kind,
-                false,
-                self.geometry_for(g, &b.start_corner, &b.target, &b.motion),
-            ),
-            None => match &gr.active {
-                Some(a) => (a.target, a.speed, a.kind, true, a.geom),
-                None => return,
-            },
-        };
+        let (pred_target, pred_speed, pred_kind, pred_is_active, pred_geom, pred_circle) =
+            match gr.queue.back() {
+                Some(b) => (
+                    b.target,
+                    b.speed,
+                    b.kind,
+                    false,
+                    self.geometry_for(g, &b.start_corner, &b.target, &b.motion),
+                    matches!(b.motion, GroupMotion::Circular { .. }),
+                ),
+                None => match &gr.active {
+                    Some(a) => (
+                        a.target,
+                        a.speed,
+                        a.kind,
+                        true,
+                        a.geom,
+                        matches!(a.geom, Geometry::Arc { .. }),
+                    ),
+                    None => return,
+                },
+            };
         if pred_kind != GKind::Path {
             return;
         }
@@ -913,8 +967,12 @@ impl Engine {
         // Corner blend.
         let mut new_pred_target = pred_target;
         let cos = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>();
+        // (A circle's geometry is known for sure only from where it starts: a circular
+        // move on either side is a circle junction.)
         let lines = matches!(pred_geom, Geometry::Line { .. })
-            && matches!(next_geom, Geometry::Line { .. });
+            && matches!(next_geom, Geometry::Line { .. })
+            && !pred_circle
+            && !matches!(next.motion, GroupMotion::Circular { .. });
         let tangent = cos >= 1.0 - 1e-12;
         if vj > 0.0 && lines {
             // Never above an axis's velocity limit projected onto either line.
@@ -1239,6 +1297,13 @@ impl Engine {
                     None => now,
                 };
                 let geo = self.geometry_for(g, &start, &p.target, &p.motion);
+                if matches!(p.motion, GroupMotion::Circular { .. })
+                    && !matches!(geo, Geometry::Arc { .. })
+                {
+                    // A buffered circle whose start (its predecessor's end) does not
+                    // define it: refused when it would start, never run as a line.
+                    return Err(ErrorId::InvalidCircle);
+                }
                 let (u, _) = geo.tangents(n);
                 let mut lim = self.path_lims(g, &u, &p.inputs)?;
                 if let Geometry::Arc { .. } = geo {
@@ -1278,6 +1343,11 @@ impl Engine {
                     r => r,
                 };
                 let (prof, t) = planned.map_err(|_| ErrorId::PlanningFailed)?;
+                let (lo, hi) = crate::engine::position_range(&prof, t.as_ref());
+                self.group_sw_check(g, &geo, lo, hi)?;
+                if std::env::var("DBG_GROUP").is_ok() {
+                    eprintln!("activate {:?} lim {:?} s0 {:?} end_v {} tail {:?}", matches!(geo, Geometry::Arc{..}), lim, s0, p.end_v, t.is_some());
+                }
                 tail = t;
                 (geo, prof, lim, None, pe)
             }
@@ -1316,6 +1386,18 @@ impl Engine {
                         }
                         profs[i] = crate::engine::plan_position(st, p.target[i], 0.0, &l)
                             .map_err(|_| ErrorId::PlanningFailed)?;
+                        let ax = &self.axes[a as usize];
+                        if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
+                            // Each axis's own path (an overshoot) within its range.
+                            let (lo, hi) = crate::engine::position_range(&profs[i], None);
+                            let (o, c) = (ax.origin, &ax.cfg);
+                            let top = c.sw_limit_pos.max(st.p + o);
+                            let bottom = c.sw_limit_neg.min(st.p + o);
+                            let eps = 1e-12 * (1.0 + top.abs().max(bottom.abs()));
+                            if hi + o > top + eps || lo + o < bottom - eps {
+                                return Err(ErrorId::PathBeyondSoftwareLimit);
+                            }
+                        }
                         longest = longest.max(profs[i].duration());
                     }
                 }
