@@ -139,6 +139,10 @@ pub(crate) struct GPending {
     seq: u32,
     /// The junction before this move was lowered: (requested, reached).
     reduced: Option<(f64, f64)>,
+    /// Direction the predecessor arrives with, as the junction was planned (zero: no
+    /// junction speed). A predecessor that starts elsewhere (its own predecessor failed)
+    /// and so arrives otherwise ends at rest instead.
+    pred_dir: Vecn,
 }
 
 #[derive(Clone, Debug)]
@@ -746,6 +750,7 @@ impl Engine {
             start_corner: from,
             seq,
             reduced: None,
+            pred_dir: ZERO,
         };
         if buffer == BufferMode::Aborting || idle {
             self.group_abort_all(g, CmdStatus::Aborted);
@@ -811,6 +816,7 @@ impl Engine {
             start_corner: ZERO,
             seq: 0,
             reduced: None,
+            pred_dir: ZERO,
         };
         if let Err(e) = self.group_activate(g, halt, 0.0) {
             self.cmds.set(p.id, CmdStatus::Error(e));
@@ -1053,6 +1059,9 @@ impl Engine {
                     }
                 }
             }
+        }
+        if vj > 0.0 {
+            next.pred_dir = u1;
         }
         if vj < requested {
             next.reduced = Some((requested, vj));
@@ -1329,6 +1338,18 @@ impl Engine {
                     a: a0,
                 };
                 self.raise_jerk(g, &u, s0, &mut lim);
+                let (_, u_end) = geo.tangents(n);
+                let arrives_as_planned = self.groups[g].queue.front().is_none_or(|nx| {
+                    let dot: f64 = (0..n).map(|i| nx.pred_dir[i] * u_end[i]).sum();
+                    nx.pred_dir == ZERO || dot >= 1.0 - 1e-9
+                });
+                let mut p = p;
+                if p.end_v > 0.0 && !arrives_as_planned {
+                    // The junction (and its blend) was planned for another direction.
+                    self.note_dropped_junction(g, &p);
+                    p.end_v = 0.0;
+                    end_v = 0.0;
+                }
                 let planned = match crate::engine::plan_to(s0, geo.len(), p.end_v, &lim) {
                     Err(_) if p.end_v > 0.0 => {
                         // The junction speed cannot be planned from here: stop at the
@@ -1507,6 +1528,7 @@ impl Engine {
                 start_corner: ZERO,
                 seq: 0,
                 reduced: None,
+            pred_dir: ZERO,
             };
             if self.group_activate(g, p, 0.0).is_err() {
                 self.finish_group(g);

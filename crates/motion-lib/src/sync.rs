@@ -235,7 +235,10 @@ impl Engine {
                 lim.vmax = share(lim.vmax, sl.vmax, ml.vmax);
                 lim.amax = share(lim.amax, sl.amax.min(sl.dmax), ml.amax.max(ml.dmax));
                 lim.dmax = share(lim.dmax, sl.amax.min(sl.dmax), ml.amax.max(ml.dmax));
-                let peak = |j: f64| (s.v + s.a * s.a.abs() / (2.0 * j)).abs();
+                // The slave's velocity overshoot while the catch-up removes its
+                // acceleration error.
+                let ea = s.a - sp.ratio * m.a;
+                let peak = |j: f64| (s.v + ea * ea.abs() / (2.0 * j)).abs();
                 if sl.jmax == 0.0 && lim.jmax > 0.0 && peak(lim.jmax) > sl.vmax {
                     // No jerk limit on the slave: the block's would overshoot; none then.
                     lim.jmax = 0.0;
