@@ -1493,6 +1493,14 @@ impl Engine {
                 }
             }
         }
+        // Events of simulated axes first: a master whose profile ended (its successor
+        // starting within the cycle) has its final set point before its slaves follow it.
+        for k in 0..self.events.len() {
+            let i = self.events[k] as usize;
+            if !self.axes[i].has_drive {
+                self.axis_event(i);
+            }
+        }
         for k in 0..self.synced.len() {
             let i = self.synced[k] as usize;
             self.step_sync(i, dt);
@@ -1504,7 +1512,9 @@ impl Engine {
         }
         for k in 0..self.events.len() {
             let i = self.events[k] as usize;
-            self.axis_event(i);
+            if self.axes[i].has_drive {
+                self.axis_event(i);
+            }
         }
     }
 

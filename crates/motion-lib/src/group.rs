@@ -1366,9 +1366,6 @@ impl Engine {
                 let (prof, t) = planned.map_err(|_| ErrorId::PlanningFailed)?;
                 let (lo, hi) = crate::engine::position_range(&prof, t.as_ref());
                 self.group_sw_check(g, &geo, lo, hi)?;
-                if std::env::var("DBG_GROUP").is_ok() {
-                    eprintln!("activate {:?} lim {:?} s0 {:?} end_v {} tail {:?}", matches!(geo, Geometry::Arc{..}), lim, s0, p.end_v, t.is_some());
-                }
                 tail = t;
                 (geo, prof, lim, None, pe)
             }

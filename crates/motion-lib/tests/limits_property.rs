@@ -615,6 +615,13 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
             );
         }
         chk.push(s, &|| what(k), &mut st.violations);
+        if trace_seq() == Some(seq) && mchk.is_some() {
+            eprintln!(
+                "{k} master v {} a {}",
+                eng.set_velocity_of(ax + 1).unwrap(),
+                eng.set_acceleration_of(ax + 1).unwrap()
+            );
+        }
         if let Some(mc) = mchk.as_mut() {
             let m = Sp {
                 p: eng.set_position_of(ax + 1).unwrap(),
