@@ -760,6 +760,33 @@ impl Engine {
                 // path (the command is Active meanwhile) and starts from there.
                 self.group_brake_then(g, p);
             } else if let Err(e) = self.group_activate(g, p, 0.0) {
+                // Refused as it starts (e.g. its overshoot leaves the software limits): the
+                // running move, already aborted, brakes along its path.
+                if let Some(lim) = self.groups[g].active.as_ref().map(|a| a.lim) {
+                    // With the running move's own deceleration: it stops before the end
+                    // it was planned to.
+                    let halt = GPending {
+                        kind: GKind::Halt,
+                        motion: GroupMotion::Halt,
+                        speed: 0.0,
+                        seq: 0,
+                        inputs: PathInputs {
+                            deceleration: if lim.dmax > 0.0 {
+                                lim.dmax
+                            } else {
+                                p.inputs.deceleration
+                            },
+                            jerk: lim.jmax,
+                            ..p.inputs
+                        },
+                        ..p
+                    };
+                    if self.group_activate(g, halt, 0.0).is_ok() {
+                        if let Some(a) = self.groups[g].active.as_mut() {
+                            a.id = None;
+                        }
+                    }
+                }
                 self.cmds.set(id, CmdStatus::Error(e));
             }
         } else {
@@ -1252,8 +1279,8 @@ impl Engine {
                                 l.jmax = al.jmax;
                             }
                         }
-                        profs[i] = Profile::velocity(st, 0.0, &l)
-                            .map_err(|_| ErrorId::PlanningFailed)?;
+                        profs[i] =
+                            Profile::velocity(st, 0.0, &l).map_err(|_| ErrorId::PlanningFailed)?;
                     }
                 }
                 let geo = Geometry::line(&now, &now);
@@ -1525,7 +1552,7 @@ impl Engine {
                 start_corner: ZERO,
                 seq: 0,
                 reduced: None,
-            pred_dir: ZERO,
+                pred_dir: ZERO,
             };
             if self.group_activate(g, p, 0.0).is_err() {
                 self.finish_group(g);

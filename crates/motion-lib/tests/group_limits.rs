@@ -268,7 +268,10 @@ fn a_tight_arc_runs_at_the_speed_its_curvature_allows_and_reports_it() {
         prev = Some(a);
     }
     assert!(b.done);
-    assert!(peak <= v_jerk * (1.0 + 1e-9) && peak > 0.9 * v_jerk, "peak {peak}");
+    assert!(
+        peak <= v_jerk * (1.0 + 1e-9) && peak > 0.9 * v_jerk,
+        "peak {peak}"
+    );
 }
 
 #[test]
@@ -279,4 +282,39 @@ fn a_wide_arc_keeps_its_speed_and_reports_nothing() {
     arc_within_limits(&mut e, g, axes, &mut b);
     let (_, count) = e.group_reductions(g).unwrap();
     assert_eq!(count, 0);
+}
+
+#[test]
+fn an_aborting_line_that_would_overshoot_is_refused_and_the_group_brakes_in_range() {
+    let (mut e, g, axes) = group(Some(10.0));
+    run_line_to(&mut e, g, -9.0, 0.0);
+    // On the way along +X to 9 at 40 mm/s: an aborting line to 9.5 with a deceleration
+    // of 20 cannot stop before x = 10 (40^2 / 40 = 40 from where it is).
+    let mut first = line(9.0, 0.0);
+    for _ in 0..2000 {
+        first.call(&mut e, g);
+        e.step();
+        if e.group_velocity(g).unwrap().1 >= 40.0 {
+            break;
+        }
+    }
+    assert!(e.group_velocity(g).unwrap().1 >= 40.0);
+    let mut over = line(9.5, 0.0);
+    over.deceleration = 20.0;
+    over.call(&mut e, g);
+    let mut top: f64 = 0.0;
+    for _ in 0..20_000 {
+        over.call(&mut e, g);
+        first.call(&mut e, g);
+        e.step();
+        top = top.max(e.set_position_of(axes[0]).unwrap());
+        if e.group_state(g).unwrap() == GroupState::GroupStandby {
+            break;
+        }
+    }
+    assert!(over.error, "{over:?}");
+    assert_eq!(over.error_id, ErrorId::PathBeyondSoftwareLimit);
+    assert!(first.command_aborted);
+    assert_eq!(e.group_state(g).unwrap(), GroupState::GroupStandby);
+    assert!(top < 9.0, "top {top}");
 }

@@ -14,8 +14,8 @@
 
 use motion_lib::axis::AxisConfig;
 use motion_lib::blocks::{
-    McGearIn, McGearOut, McHalt, McMoveAbsolute, McMoveAdditive, McMoveRelative,
-    McMoveVelocity, McPower, McSetOverride, McStop,
+    McGearIn, McGearOut, McHalt, McMoveAbsolute, McMoveAdditive, McMoveRelative, McMoveVelocity,
+    McPower, McSetOverride, McStop,
 };
 use motion_lib::buffer::{BufferMode, Direction, TransitionMode};
 use motion_lib::engine::{Engine, EngineConfig};
@@ -387,7 +387,10 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
             };
             mb.push((b, Pattern::random(r, span)));
         }
-        Some(Master { lim: ml, blocks: mb })
+        Some(Master {
+            lim: ml,
+            blocks: mb,
+        })
     } else {
         None
     };
@@ -549,8 +552,11 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
         }
         ov.call(&mut eng, ax);
         if ov.error && st.violations.len() < 20 {
-            st.violations
-                .push(format!("{}: MC_SetOverride error {:?}", what(k), ov.error_id));
+            st.violations.push(format!(
+                "{}: MC_SetOverride error {:?}",
+                what(k),
+                ov.error_id
+            ));
         }
         // Blocks called before a rising Execute in the same scan show its effect next scan:
         // count the Active outputs from the last rising edge on.
@@ -564,9 +570,7 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
             }
             actives += o.4 as u32;
         }
-        if stop_from.is_none()
-            && k >= stop_at
-            && eng.axis_state(ax).unwrap() != AxisState::Stopping
+        if stop_from.is_none() && k >= stop_at && eng.axis_state(ax).unwrap() != AxisState::Stopping
         {
             stop_from = Some(k);
             actives = 0;
@@ -802,7 +806,10 @@ fn group(r: &mut Rng, st: &mut Stats, seq: u64) {
                     let a = if ccw { ang } else { -ang };
                     let (sn, cs) = a.sin_cos();
                     // start - c = -c, turned by a
-                    [c[0] - (cs * c[0] - sn * c[1]), c[1] - (sn * c[0] + cs * c[1])]
+                    [
+                        c[0] - (cs * c[0] - sn * c[1]),
+                        c[1] - (sn * c[0] + cs * c[1]),
+                    ]
                 };
                 let e = rot(turn);
                 let m = rot(turn / 2.0);
