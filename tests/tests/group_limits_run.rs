@@ -132,7 +132,7 @@ fn group_paths_keep_the_software_limits_and_a_tight_arc_is_slowed_and_reported()
     );
     let line = stderr
         .lines()
-        .find(|l| l.starts_with("motion: group G1: junction before ok at cycle "))
+        .find(|l| l.starts_with("motion: group G1: junction before glim.ok at cycle "))
         .unwrap_or_else(|| panic!("no reduction in the summary:\n{stderr}"));
     assert!(
         line.contains("requested 50 mm/s, reached 17.320508 mm/s"),

@@ -1,15 +1,20 @@
 //! Property test: random command sequences keep every axis within its limits, cycle to cycle.
 //!
 //! Input: a seeded generator (xorshift) of sequences: random axis limits and cycle times, single-axis
-//! sequences (MC_MoveAbsolute, MC_MoveRelative, MC_MoveAdditive, MC_MoveVelocity, MC_Halt) and 2- or
-//! 3-axis group sequences (MC_MoveLinearAbsolute, MC_MoveLinearRelative, MC_GroupHalt), every
-//! BufferMode, TransitionModes TMNone / TMCornerDistance / TMMaxCornerDeviation, random Execute
-//! patterns (rising edges at random cycles, Execute held or dropped early, re-triggered).
-//! Output: assertions on the set-point stream of every cycle: |v| <= vmax, |a| <= max(amax, dmax),
-//! |dp| <= vmax dt, |dv| <= max(amax, dmax) dt, |da| <= jmax dt and |d2v| <= jmax dt^2 (all with 1e-9
-//! relative slack); PLCopen outputs (Busy, Done, Error, CommandAborted exclusive, Active only while
-//! Busy, one Active block per axis or group); every accepted command ends Done, CommandAborted or
-//! Error (each sequence ends with an aborting halt that must end Done), none is lost.
+//! sequences (MC_MoveAbsolute, MC_MoveRelative, MC_MoveAdditive, MC_MoveVelocity, MC_Halt, MC_Stop,
+//! MC_SetOverride changes while moving; in one of six a master axis with its own moves and
+//! MC_GearIn / MC_GearOut on the slave) and 2- or 3-axis group sequences (MC_MoveLinearAbsolute,
+//! MC_MoveLinearRelative, MC_MoveCircularRelative / Absolute in BORDER, CENTER and RADIUS mode,
+//! planar or helical, MC_MoveDirectAbsolute, MC_GroupHalt, MC_GroupStop), every BufferMode,
+//! TransitionModes TMNone / TMCornerDistance / TMMaxCornerDeviation, random Execute patterns
+//! (rising edges at random cycles, Execute held or dropped early, re-triggered).
+//! Output: assertions on the set-point stream of every cycle (master axes included): |v| <= vmax,
+//! |a| <= max(amax, dmax), |dp| <= vmax dt, |dv| <= max(amax, dmax) dt, |da| <= jmax dt and
+//! |d2v| <= jmax dt^2 (all with 1e-9 relative slack); PLCopen outputs (Busy, Done, Error,
+//! CommandAborted exclusive, Active only while Busy, one Active block per axis or group); every
+//! accepted command ends Done, CommandAborted or Error (each sequence ends with an aborting halt,
+//! given once the axis or group is no longer Stopping, that must end Done), none is lost.
+//! MC_SetOverride must never fail. The first violation of each failing sequence is kept.
 //! Invariant: deterministic (fixed seed); `LIMITS_PROPERTY_SEQUENCES` overrides the count.
 
 use motion_lib::axis::AxisConfig;
