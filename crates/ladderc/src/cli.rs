@@ -1025,7 +1025,7 @@ pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
                 .unwrap_or_default();
             let cycle = row.first().copied().unwrap_or("?");
             out.push(format!(
-                "motion: group {group}: junction{block} at cycle {cycle}: requested {req} {unit}/s, reached {reached:.6} {unit}/s (lowered to keep the axis limits; motion-lib README, \"Junction speeds\")"
+                "motion: group {group}: junction{block} at cycle {cycle}: requested {req} {unit}/s, reached {reached:.6} {unit}/s (lowered to keep the axis limits: a junction, or an arc's path speed; motion-lib README, \"Junction speeds\")"
             ));
         }
     }

@@ -1342,7 +1342,18 @@ impl Engine {
                     o.prof
                 })
             }
-            Kind::Stop => Profile::velocity(start, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed),
+            Kind::Stop => {
+                // Not overridden; the jerk raised as for a halt (see `overridden`).
+                let al = self.axes[axis].cfg.limits;
+                if lim.jmax > 0.0 && (al.jmax == 0.0 || al.jmax > lim.jmax) {
+                    let peak = (start.v + start.a * start.a.abs() / (2.0 * lim.jmax)).abs();
+                    if peak > al.vmax {
+                        lim.jmax = al.jmax;
+                    }
+                }
+                lim.vmax = lim.vmax.max(start.v.abs());
+                Profile::velocity(start, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)
+            }
             Kind::Gear | Kind::Cam => Ok(self.axes[axis].active.prof),
             _ => Ok(Active::idle(start).prof),
         }
@@ -1488,6 +1499,14 @@ impl Engine {
                 }
             }
         }
+        // Events of simulated axes first: a master whose profile ended (its successor
+        // starting within the cycle) has its final set point before its slaves follow it.
+        for k in 0..self.events.len() {
+            let i = self.events[k] as usize;
+            if !self.axes[i].has_drive {
+                self.axis_event(i);
+            }
+        }
         for k in 0..self.synced.len() {
             let i = self.synced[k] as usize;
             self.step_sync(i, dt);
@@ -1500,7 +1519,9 @@ impl Engine {
         }
         for k in 0..self.events.len() {
             let i = self.events[k] as usize;
-            self.axis_event(i);
+            if self.axes[i].has_drive {
+                self.axis_event(i);
+            }
         }
     }
 

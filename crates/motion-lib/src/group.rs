@@ -69,6 +69,9 @@ pub enum ReductionReason {
     Velocity,
     /// The predecessor's line is too short to reach the junction speed.
     Distance,
+    /// An arc's path speed: its curvature and the axes' acceleration and jerk limits
+    /// allow less than the block's Velocity (README, "Arc speed").
+    ArcSpeed,
 }
 
 impl ReductionReason {
@@ -81,6 +84,7 @@ impl ReductionReason {
             ReductionReason::NoBlend => "no room for a blend",
             ReductionReason::Velocity => "axis velocity limit",
             ReductionReason::Distance => "line too short",
+            ReductionReason::ArcSpeed => "arc curvature",
         }
     }
 }
@@ -135,6 +139,10 @@ pub(crate) struct GPending {
     seq: u32,
     /// The junction before this move was lowered: (requested, reached).
     reduced: Option<(f64, f64)>,
+    /// Direction the predecessor arrives with, as the junction was planned (zero: no
+    /// junction speed). A predecessor that starts elsewhere (its own predecessor failed)
+    /// and so arrives otherwise ends at rest instead.
+    pred_dir: Vecn,
 }
 
 #[derive(Clone, Debug)]
@@ -172,6 +180,10 @@ pub(crate) struct GroupRt {
     reduction_count: usize,
     /// (requested, reached) of a lowered junction passed in the last cycle, else (0, 0).
     junction_now: (f64, f64),
+    /// (requested, reached) path speed of an arc that started since the last cycle and
+    /// whose speed its curvature lowered (shown as `junction_now` unless a lowered
+    /// junction takes that cycle).
+    arc_now: Option<(f64, f64)>,
     /// The running move could not be planned to its junction (or failed): the next one
     /// starts from rest, without its corner blend.
     drop_junction: bool,
@@ -203,6 +215,7 @@ impl Engine {
             reductions: Vec::with_capacity(16),
             reduction_count: 0,
             junction_now: (0.0, 0.0),
+            arc_now: None,
             drop_junction: false,
         });
         self.groups.len() - 1
@@ -395,6 +408,16 @@ impl Engine {
             Some(a) if matches!(a.kind, GKind::Path | GKind::Direct) => a.target,
             Some(a) if matches!(a.kind, GKind::Halt | GKind::Stop | GKind::Brake) => {
                 let n = gr.n();
+                if let Some(profs) = &a.direct {
+                    // Each axis brakes on its own profile.
+                    let mut r = self.raw_now(g);
+                    for (i, ax) in gr.axes.iter().enumerate().take(n) {
+                        if ax.is_some() {
+                            r[i] = profs[i].end().p;
+                        }
+                    }
+                    return r;
+                }
                 let mut q = self.raw_now(g);
                 let (mut d1, mut d2) = (ZERO, ZERO);
                 // (A brake begun on a corner blend has the line after it as geometry.)
@@ -497,10 +520,16 @@ impl Engine {
         }
     }
 
-    /// Arc path limits: the tangent turns, so every axis's limits bound the path, and
-    /// the axes' acceleration is shared between the path (tangential) and the turn
-    /// (normal, v^2 * curvature): each gets half.
-    fn arc_limits(&self, g: usize, geo: &Geometry, lim: &mut Limits) {
+    /// Arc path limits ("Arc speed" in the README). The tangent turns, so every axis's
+    /// limits bound the path. With a = min over the axes of min(amax, dmax) and j the
+    /// lowest axis jerk limit, on an arc of curvature k (largest |d2|) and largest |d3| = m:
+    /// an axis accelerates at most |a_t| + k v^2 and jerks at most
+    /// |j_t| + 3 k v |a_t| + m v^3 (a_t, j_t the path's tangential acceleration and jerk).
+    /// The budget is split: the tangential acceleration and the turn get a / 2 each
+    /// (v <= sqrt(a / (2 k))); the tangential jerk j / 2, the turn's own jerk j / 4
+    /// (v <= cbrt(j / (4 m))), the cross term j / 4 (|a_t| <= j / (12 k v)). Returns the
+    /// path speed the arc allows (the lowest of those caps and the axes' velocity limits).
+    fn arc_limits(&self, g: usize, geo: &Geometry, lim: &mut Limits) -> f64 {
         let n = self.groups[g].n();
         let mut vmax = f64::INFINITY;
         let mut amin = f64::INFINITY;
@@ -515,17 +544,71 @@ impl Engine {
         }
         let half = amin.min(lim.amax).min(lim.dmax) / 2.0;
         let k = geo.max_curvature(n);
+        let m = geo.max_d3();
         let v_turn = if k > 0.0 {
             (half / k).sqrt()
         } else {
             f64::INFINITY
         };
-        lim.vmax = lim.vmax.min(vmax).min(v_turn);
+        let mut v_arc = vmax.min(v_turn);
         lim.amax = lim.amax.min(half);
         lim.dmax = lim.dmax.min(half);
-        if jmin.is_finite() && lim.jmax > 0.0 {
-            lim.jmax = lim.jmax.min(jmin / 2.0);
+        if jmin.is_finite() {
+            if m > 0.0 {
+                v_arc = v_arc.min((jmin / (4.0 * m)).cbrt());
+            }
+            if k > 0.0 && v_arc > 0.0 {
+                let a_cross = jmin / (12.0 * k * v_arc);
+                lim.amax = lim.amax.min(a_cross);
+                lim.dmax = lim.dmax.min(a_cross);
+            }
+            lim.jmax = if lim.jmax > 0.0 {
+                lim.jmax.min(jmin / 2.0)
+            } else {
+                jmin / 2.0
+            };
         }
+        lim.vmax = lim.vmax.min(v_arc);
+        v_arc
+    }
+
+    /// Software limits of the group's axes against a path piece between arc lengths
+    /// `s0 <= s1` (the geometry over [0, len] and, at activation, the planned profile's
+    /// overshoot): ErrorID 27 when the end point of an axis lies outside its range, 29 when
+    /// the path leaves it (an arc's bulge, an overshoot). As for single axes, an axis that
+    /// starts beyond a limit may move back, never further out.
+    fn group_sw_check(&self, g: usize, geo: &Geometry, s0: f64, s1: f64) -> Result<(), ErrorId> {
+        let gr = &self.groups[g];
+        let n = gr.n();
+        let on = |a: &u32| {
+            let c = &self.axes[*a as usize].cfg;
+            c.sw_limits_enabled && c.period().is_none()
+        };
+        if !gr.axes.iter().flatten().any(on) {
+            return Ok(());
+        }
+        let (mut start, mut end, mut d1, mut d2) = (ZERO, ZERO, ZERO, ZERO);
+        geo.eval(0.0, n, &mut start, &mut d1, &mut d2);
+        geo.eval(geo.len(), n, &mut end, &mut d1, &mut d2);
+        let (lo, hi) = geo.axis_range(n, s0.min(0.0), s1.max(geo.len()));
+        for (i, a) in gr.axes.iter().enumerate().take(n) {
+            let Some(a) = a.filter(on) else {
+                continue;
+            };
+            let ax = &self.axes[a as usize];
+            let (o, c) = (ax.origin, &ax.cfg);
+            let e = end[i] + o;
+            if e > c.sw_limit_pos || e < c.sw_limit_neg {
+                return Err(ErrorId::TargetBeyondSoftwareLimit);
+            }
+            let top = c.sw_limit_pos.max(start[i] + o);
+            let bottom = c.sw_limit_neg.min(start[i] + o);
+            let eps = 1e-12 * (1.0 + top.abs().max(bottom.abs()));
+            if hi[i] + o > top + eps || lo[i] + o < bottom - eps {
+                return Err(ErrorId::PathBeyondSoftwareLimit);
+            }
+        }
+        Ok(())
     }
 
     /// Gives a motion command to a group. Returns its handle or the ErrorID.
@@ -624,6 +707,13 @@ impl Engine {
         }
         // Validate the dynamics against the move's direction.
         let geom = self.geometry_for(g, &from, &target, &motion);
+        if kind == GKind::Path {
+            // The path (end point, an arc's bulge) within the software limits, before any
+            // motion; buffered moves again when they start (from where they really start).
+            self.group_sw_check(g, &geom, 0.0, geom.len())?;
+        } else if kind == GKind::Direct {
+            self.group_sw_check(g, &Geometry::line(&target, &target), 0.0, 0.0)?;
+        }
         let (t0, _) = geom.tangents(n);
         let lim = match kind {
             GKind::Halt | GKind::Stop => {
@@ -660,6 +750,7 @@ impl Engine {
             start_corner: from,
             seq,
             reduced: None,
+            pred_dir: ZERO,
         };
         if buffer == BufferMode::Aborting || idle {
             self.group_abort_all(g, CmdStatus::Aborted);
@@ -669,6 +760,33 @@ impl Engine {
                 // path (the command is Active meanwhile) and starts from there.
                 self.group_brake_then(g, p);
             } else if let Err(e) = self.group_activate(g, p, 0.0) {
+                // Refused as it starts (e.g. its overshoot leaves the software limits): the
+                // running move, already aborted, brakes along its path.
+                if let Some(lim) = self.groups[g].active.as_ref().map(|a| a.lim) {
+                    // With the running move's own deceleration: it stops before the end
+                    // it was planned to.
+                    let halt = GPending {
+                        kind: GKind::Halt,
+                        motion: GroupMotion::Halt,
+                        speed: 0.0,
+                        seq: 0,
+                        inputs: PathInputs {
+                            deceleration: if lim.dmax > 0.0 {
+                                lim.dmax
+                            } else {
+                                p.inputs.deceleration
+                            },
+                            jerk: lim.jmax,
+                            ..p.inputs
+                        },
+                        ..p
+                    };
+                    if self.group_activate(g, halt, 0.0).is_ok() {
+                        if let Some(a) = self.groups[g].active.as_mut() {
+                            a.id = None;
+                        }
+                    }
+                }
                 self.cmds.set(id, CmdStatus::Error(e));
             }
         } else {
@@ -725,6 +843,7 @@ impl Engine {
             start_corner: ZERO,
             seq: 0,
             reduced: None,
+            pred_dir: ZERO,
         };
         if let Err(e) = self.group_activate(g, halt, 0.0) {
             self.cmds.set(p.id, CmdStatus::Error(e));
@@ -736,6 +855,11 @@ impl Engine {
             // The move starts where the brake ends.
             let (mut q, mut d1, mut d2) = (ZERO, ZERO, ZERO);
             a.geom.eval(a.prof.end().p, n, &mut q, &mut d1, &mut d2);
+            if let Some(profs) = &a.direct {
+                for i in 0..n {
+                    q[i] = profs[i].end().p;
+                }
+            }
             for (i, ax) in self.groups[g].axes.iter().enumerate() {
                 if ax.is_some() {
                     p.start_corner[i] = q[i];
@@ -792,20 +916,28 @@ impl Engine {
         // Predecessor: the queue's back (its geometry from its original start corner: its
         // own predecessor may since have been shortened by a corner blend), else the
         // active move.
-        let (pred_target, pred_speed, pred_kind, pred_is_active, pred_geom) = match gr.queue.back()
-        {
-            Some(b) => (
-                b.target,
-                b.speed,
-                b.kind,
-                false,
-                self.geometry_for(g, &b.start_corner, &b.target, &b.motion),
-            ),
-            None => match &gr.active {
-                Some(a) => (a.target, a.speed, a.kind, true, a.geom),
-                None => return,
-            },
-        };
+        let (pred_target, pred_speed, pred_kind, pred_is_active, pred_geom, pred_circle) =
+            match gr.queue.back() {
+                Some(b) => (
+                    b.target,
+                    b.speed,
+                    b.kind,
+                    false,
+                    self.geometry_for(g, &b.start_corner, &b.target, &b.motion),
+                    matches!(b.motion, GroupMotion::Circular { .. }),
+                ),
+                None => match &gr.active {
+                    Some(a) => (
+                        a.target,
+                        a.speed,
+                        a.kind,
+                        true,
+                        a.geom,
+                        matches!(a.geom, Geometry::Arc { .. }),
+                    ),
+                    None => return,
+                },
+            };
         if pred_kind != GKind::Path {
             return;
         }
@@ -868,8 +1000,12 @@ impl Engine {
         // Corner blend.
         let mut new_pred_target = pred_target;
         let cos = (0..n).map(|i| u1[i] * u2[i]).sum::<f64>();
+        // (A circle's geometry is known for sure only from where it starts: a circular
+        // move on either side is a circle junction.)
         let lines = matches!(pred_geom, Geometry::Line { .. })
-            && matches!(next_geom, Geometry::Line { .. });
+            && matches!(next_geom, Geometry::Line { .. })
+            && !pred_circle
+            && !matches!(next.motion, GroupMotion::Circular { .. });
         let tangent = cos >= 1.0 - 1e-12;
         if vj > 0.0 && lines {
             // Never above an axis's velocity limit projected onto either line.
@@ -950,6 +1086,9 @@ impl Engine {
                     }
                 }
             }
+        }
+        if vj > 0.0 {
+            next.pred_dir = u1;
         }
         if vj < requested {
             next.reduced = Some((requested, vj));
@@ -1082,6 +1221,8 @@ impl Engine {
             _ => None,
         });
         let mut keep_prefix = None;
+        // An arc whose path speed its curvature lowered: (requested, reached, start).
+        let mut arc_cut = None;
         let (geom, prof, lim, direct, prefix_end) = match p.kind {
             GKind::Halt | GKind::Stop | GKind::Brake if in_blend.is_some() => {
                 let Some((b, v, t, pe, end, u2)) = in_blend else {
@@ -1103,6 +1244,48 @@ impl Engine {
                 keep_prefix = Some(((b, v), t));
                 (Geometry::line(&end, &far), prof, lim, None, pe)
             }
+            GKind::Halt | GKind::Stop | GKind::Brake
+                if self.groups[g]
+                    .active
+                    .as_ref()
+                    .is_some_and(|a| a.direct.is_some()) =>
+            {
+                // A MoveDirectAbsolute (or its brake) runs: each axis brakes on its own
+                // profile with the block's deceleration and jerk capped by its limits.
+                let mut profs = Box::new([standing(0.0); MAX_AXES]);
+                for i in 0..n {
+                    if let Some(a) = self.groups[g].axes[i] {
+                        let al = self.axes[a as usize].cfg.limits;
+                        let st = State {
+                            p: now[i],
+                            v: vel[i],
+                            a: acc[i],
+                        };
+                        let mut l = Limits {
+                            vmax: al.vmax.max(st.v.abs()),
+                            amax: al.amax.max(al.dmax).max(st.a.abs()),
+                            dmax: al.dmax.min(p.inputs.deceleration),
+                            jmax: if p.inputs.jerk > 0.0 && al.jmax > 0.0 {
+                                p.inputs.jerk.min(al.jmax)
+                            } else if p.inputs.jerk > 0.0 {
+                                p.inputs.jerk
+                            } else {
+                                al.jmax
+                            },
+                        };
+                        if l.jmax > 0.0 && (al.jmax == 0.0 || al.jmax > l.jmax) {
+                            let peak = (st.v + st.a * st.a.abs() / (2.0 * l.jmax)).abs();
+                            if peak > al.vmax {
+                                l.jmax = al.jmax;
+                            }
+                        }
+                        profs[i] =
+                            Profile::velocity(st, 0.0, &l).map_err(|_| ErrorId::PlanningFailed)?;
+                    }
+                }
+                let geo = Geometry::line(&now, &now);
+                (geo, standing(0.0), Limits::default(), Some(profs), 0.0)
+            }
             GKind::Home | GKind::Halt | GKind::Stop | GKind::Brake => {
                 let ((geo, s), _) = running.unwrap_or((
                     (Geometry::line(&now, &now), State::default()),
@@ -1113,9 +1296,30 @@ impl Engine {
                 i2.acceleration = p.inputs.deceleration;
                 let (u, _) = geo.tangents(n);
                 let mut lim = self.path_lims(g, &u, &i2)?;
-                lim.amax = lim.amax.max(lim.dmax);
-                lim.vmax = lim.vmax.max(s.v.abs());
-                self.raise_jerk(g, &u, s, &mut lim);
+                if let Geometry::Arc { .. } = geo {
+                    // Braking on an arc: the arc's limits (the turn keeps its share); the
+                    // arc's own jerk when the halt's lower one would carry the speed
+                    // past the arc's.
+                    let mut arc = lim;
+                    arc.jmax = 0.0;
+                    let v_arc = self.arc_limits(g, &geo, &mut arc);
+                    lim.dmax = lim.dmax.min(arc.dmax);
+                    lim.jmax = if lim.jmax > 0.0 && arc.jmax > 0.0 {
+                        lim.jmax.min(arc.jmax)
+                    } else {
+                        arc.jmax
+                    };
+                    let peak = s.v + s.a * s.a.abs() / (2.0 * lim.jmax.max(1e-300));
+                    if lim.jmax > 0.0 && peak > v_arc {
+                        lim.jmax = arc.jmax;
+                    }
+                    lim.amax = lim.dmax.max(s.a.abs());
+                    lim.vmax = v_arc.max(s.v.abs());
+                } else {
+                    lim.amax = lim.amax.max(lim.dmax);
+                    lim.vmax = lim.vmax.max(s.v.abs());
+                    self.raise_jerk(g, &u, s, &mut lim);
+                }
                 let prof = Profile::velocity(s, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)?;
                 (geo, prof, lim, None, 0.0)
             }
@@ -1129,10 +1333,21 @@ impl Engine {
                     None => now,
                 };
                 let geo = self.geometry_for(g, &start, &p.target, &p.motion);
+                if matches!(p.motion, GroupMotion::Circular { .. })
+                    && !matches!(geo, Geometry::Arc { .. })
+                {
+                    // A buffered circle whose start (its predecessor's end) does not
+                    // define it: refused when it would start, never run as a line.
+                    return Err(ErrorId::InvalidCircle);
+                }
                 let (u, _) = geo.tangents(n);
                 let mut lim = self.path_lims(g, &u, &p.inputs)?;
                 if let Geometry::Arc { .. } = geo {
-                    self.arc_limits(g, &geo, &mut lim);
+                    let requested = lim.vmax;
+                    let reached = self.arc_limits(g, &geo, &mut lim);
+                    if reached < requested {
+                        arc_cut = Some((requested, reached, start));
+                    }
                 }
                 let (v0, a0, pe) = match &p.prefix {
                     Some((b, v)) => (*v, 0.0, if *v > 0.0 { b.len() / v } else { 0.0 }),
@@ -1150,6 +1365,18 @@ impl Engine {
                     a: a0,
                 };
                 self.raise_jerk(g, &u, s0, &mut lim);
+                let (_, u_end) = geo.tangents(n);
+                let arrives_as_planned = self.groups[g].queue.front().is_none_or(|nx| {
+                    let dot: f64 = (0..n).map(|i| nx.pred_dir[i] * u_end[i]).sum();
+                    nx.pred_dir == ZERO || dot >= 1.0 - 1e-9
+                });
+                let mut p = p;
+                if p.end_v > 0.0 && !arrives_as_planned {
+                    // The junction (and its blend) was planned for another direction.
+                    self.note_dropped_junction(g, &p);
+                    p.end_v = 0.0;
+                    end_v = 0.0;
+                }
                 let planned = match crate::engine::plan_to(s0, geo.len(), p.end_v, &lim) {
                     Err(_) if p.end_v > 0.0 => {
                         // The junction speed cannot be planned from here: stop at the
@@ -1164,6 +1391,8 @@ impl Engine {
                     r => r,
                 };
                 let (prof, t) = planned.map_err(|_| ErrorId::PlanningFailed)?;
+                let (lo, hi) = crate::engine::position_range(&prof, t.as_ref());
+                self.group_sw_check(g, &geo, lo, hi)?;
                 tail = t;
                 (geo, prof, lim, None, pe)
             }
@@ -1173,11 +1402,15 @@ impl Engine {
                 for i in 0..n {
                     if let Some(a) = self.groups[g].axes[i] {
                         let al = self.axes[a as usize].cfg.limits;
-                        let l = Limits {
+                        // The block's inputs capped by the axis's limits (Jerk 0: the
+                        // axis's own), as a single-axis move.
+                        let mut l = Limits {
                             vmax: al.vmax.min(p.inputs.velocity),
                             amax: al.amax.min(p.inputs.acceleration),
                             dmax: al.dmax.min(p.inputs.deceleration),
-                            jmax: if p.inputs.jerk > 0.0 {
+                            jmax: if p.inputs.jerk > 0.0 && al.jmax > 0.0 {
+                                p.inputs.jerk.min(al.jmax)
+                            } else if p.inputs.jerk > 0.0 {
                                 p.inputs.jerk
                             } else {
                                 al.jmax
@@ -1188,8 +1421,28 @@ impl Engine {
                             v: vel[i],
                             a: acc[i],
                         };
+                        // Started while the axis accelerates: the block's lower jerk would
+                        // carry the velocity past the axis's limit; the axis's jerk then.
+                        if l.jmax > 0.0 && (al.jmax == 0.0 || al.jmax > l.jmax) {
+                            let peak = (st.v + st.a * st.a.abs() / (2.0 * l.jmax)).abs();
+                            if peak > al.vmax {
+                                l.jmax = al.jmax;
+                            }
+                        }
                         profs[i] = crate::engine::plan_position(st, p.target[i], 0.0, &l)
                             .map_err(|_| ErrorId::PlanningFailed)?;
+                        let ax = &self.axes[a as usize];
+                        if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
+                            // Each axis's own path (an overshoot) within its range.
+                            let (lo, hi) = crate::engine::position_range(&profs[i], None);
+                            let (o, c) = (ax.origin, &ax.cfg);
+                            let top = c.sw_limit_pos.max(st.p + o);
+                            let bottom = c.sw_limit_neg.min(st.p + o);
+                            let eps = 1e-12 * (1.0 + top.abs().max(bottom.abs()));
+                            if hi + o > top + eps || lo + o < bottom - eps {
+                                return Err(ErrorId::PathBeyondSoftwareLimit);
+                            }
+                        }
                         longest = longest.max(profs[i].duration());
                     }
                 }
@@ -1225,6 +1478,20 @@ impl Engine {
             direct,
             tail,
         });
+        if let Some((requested, reached, corner)) = arc_cut {
+            gr.reduction_count += 1;
+            if gr.reductions.len() < REDUCTIONS_KEPT {
+                gr.reductions.push(Reduction {
+                    block: p.seq,
+                    cmd: p.id,
+                    corner,
+                    requested,
+                    reached,
+                    reason: ReductionReason::ArcSpeed,
+                });
+            }
+            gr.arc_now = Some((requested, reached));
+        }
         gr.state = if p.kind == GKind::Stop {
             gr.stop_owner = Some(p.id);
             GroupState::GroupStopping
@@ -1285,6 +1552,7 @@ impl Engine {
                 start_corner: ZERO,
                 seq: 0,
                 reduced: None,
+                pred_dir: ZERO,
             };
             if self.group_activate(g, p, 0.0).is_err() {
                 self.finish_group(g);
@@ -1439,7 +1707,7 @@ impl Engine {
     /// One cycle of every group with a running move.
     pub(crate) fn step_groups(&mut self, dt: f64) {
         for g in 0..self.groups.len() {
-            self.groups[g].junction_now = (0.0, 0.0);
+            self.groups[g].junction_now = self.groups[g].arc_now.take().unwrap_or((0.0, 0.0));
             let Some(mut a) = self.groups[g].active.take() else {
                 continue;
             };
@@ -1541,7 +1809,8 @@ impl Engine {
                         }
                         match self.group_activate(g, p, t0) {
                             Ok(()) => {
-                                if let Some(r) = p.reduced {
+                                let arc = self.groups[g].arc_now.take();
+                                if let Some(r) = p.reduced.or(arc) {
                                     self.groups[g].junction_now = r;
                                 }
                                 if t0 > 0.0 {

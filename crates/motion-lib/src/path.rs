@@ -498,6 +498,89 @@ impl Geometry {
         }
     }
 
+    /// Largest |d3 p / ds3| of any axis along the piece (the rate at which the curvature
+    /// vector turns): r k^3 on an arc (k = angle / len), 0 on a line. Blends: see
+    /// [`Geometry::blend_bounds`].
+    pub fn max_d3(&self) -> f64 {
+        match self {
+            Geometry::Arc { r, angle, len, .. } if *len > 0.0 => {
+                let k = angle / len;
+                r * k * k * k
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// Lowest and highest coordinate of every axis (raw units, by identity) on the piece
+    /// between arc lengths `s0 <= s1` (lines extrapolate beyond their ends). Arcs: exact,
+    /// from the ends and the angles where an axis's coordinate
+    /// `A cos(phi) + B sin(phi) + C phi + D` has a zero derivative; `s0`, `s1` are clamped
+    /// to the arc.
+    pub fn axis_range(&self, n: usize, s0: f64, s1: f64) -> (Vecn, Vecn) {
+        let (mut lo, mut hi) = ([f64::INFINITY; MAX_AXES], [f64::NEG_INFINITY; MAX_AXES]);
+        let (mut p, mut d1, mut d2) = ([0.0; MAX_AXES], [0.0; MAX_AXES], [0.0; MAX_AXES]);
+        let mut see = |s: f64, lo: &mut Vecn, hi: &mut Vecn| {
+            self.eval(s, n, &mut p, &mut d1, &mut d2);
+            for i in 0..n {
+                lo[i] = lo[i].min(p[i]);
+                hi[i] = hi[i].max(p[i]);
+            }
+        };
+        match self {
+            Geometry::Arc {
+                e1,
+                e2,
+                r,
+                angle,
+                delta,
+                len,
+                ..
+            } if *len > 0.0 && *angle > 0.0 => {
+                let (a, b) = (s0.clamp(0.0, *len), s1.clamp(0.0, *len));
+                see(a, &mut lo, &mut hi);
+                see(b, &mut lo, &mut hi);
+                let k = angle / len;
+                for i in 0..n.min(3) {
+                    // x_i(phi) = r (cos phi e1 + sin phi e2) + delta phi / angle + const.
+                    let (ca, cb, cc) = (r * e1[i], r * e2[i], delta[i] / angle);
+                    let rr = (ca * ca + cb * cb).sqrt();
+                    if rr <= 0.0 || cc.abs() > rr {
+                        continue;
+                    }
+                    // -ca sin phi + cb cos phi + cc = 0, i.e. rr cos(phi + th) = -cc.
+                    let th = ca.atan2(cb);
+                    let base = (-cc / rr).clamp(-1.0, 1.0).acos();
+                    let tau = std::f64::consts::TAU;
+                    for root in [base - th, -base - th] {
+                        let mut phi = root.rem_euclid(tau);
+                        while phi <= b * k {
+                            if phi >= a * k {
+                                let mut q = [0.0; MAX_AXES];
+                                let (mut g1, mut g2) = ([0.0; MAX_AXES], [0.0; MAX_AXES]);
+                                self.eval(phi / k, n, &mut q, &mut g1, &mut g2);
+                                lo[i] = lo[i].min(q[i]);
+                                hi[i] = hi[i].max(q[i]);
+                            }
+                            phi += tau;
+                        }
+                    }
+                }
+            }
+            _ => {
+                see(s0, &mut lo, &mut hi);
+                see(s1, &mut lo, &mut hi);
+                if let Geometry::Blend { len, .. } = self {
+                    // Sampled (a blend's deviation from its chord is small and convex).
+                    for j in 1..16 {
+                        let s = (j as f64 / 16.0 * len).clamp(s0, s1);
+                        see(s, &mut lo, &mut hi);
+                    }
+                }
+            }
+        }
+        (lo, hi)
+    }
+
     /// Unit tangent at the start and at the end.
     pub fn tangents(&self, n: usize) -> (Vecn, Vecn) {
         let (mut p, mut a, mut b, mut d2) = (

@@ -220,13 +220,54 @@ impl Engine {
         let s = self.axes[axis].set;
         sp.m0 = m.p;
         sp.s0 = s.p;
-        let lim = self.axes[axis].active.lim;
+        let mut lim = self.axes[axis].active.lim;
         let prof = match self.axes[axis].active.kind {
             Kind::Gear => {
+                // The slave moves by the catch-up profile plus ratio * master: the profile
+                // gets the slave's limits less the master's axis limits times |ratio|
+                // (at least a twentieth of the slave's, README "Gearing").
+                let ml = self.axes[sp.master].cfg.limits;
+                let sl = self.axes[axis].cfg.limits;
+                let k = sp.ratio.abs();
+                let share = |own: f64, slave: f64, master: f64| {
+                    own.min((slave - k * master).max(slave / 20.0))
+                };
+                lim.vmax = share(lim.vmax, sl.vmax, ml.vmax);
+                lim.amax = share(lim.amax, sl.amax.min(sl.dmax), ml.amax.max(ml.dmax));
+                lim.dmax = share(lim.dmax, sl.amax.min(sl.dmax), ml.amax.max(ml.dmax));
+                // The slave's velocity overshoot while the catch-up removes its
+                // acceleration error.
+                let ea = s.a - sp.ratio * m.a;
+                let peak = |j: f64| (s.v + ea * ea.abs() / (2.0 * j)).abs();
+                if sl.jmax == 0.0 && lim.jmax > 0.0 && peak(lim.jmax) > sl.vmax {
+                    // No jerk limit on the slave: the block's would overshoot; none then.
+                    lim.jmax = 0.0;
+                }
+                if sl.jmax > 0.0 {
+                    let jm = if ml.jmax > 0.0 { ml.jmax } else { 0.0 };
+                    let j = if lim.jmax > 0.0 { lim.jmax } else { sl.jmax };
+                    lim.jmax = share(j, sl.jmax, jm);
+                    // Coupled while the slave accelerates: a jerk that low would carry
+                    // its velocity past its limit; then the slave's jerk less the master's
+                    // share, or the slave's own (as for a halt).
+                    if peak(lim.jmax) > sl.vmax {
+                        let less = sl.jmax - k * jm;
+                        lim.jmax = if less > lim.jmax && peak(less) <= sl.vmax {
+                            less
+                        } else {
+                            sl.jmax
+                        };
+                    }
+                }
                 let e = State {
                     p: 0.0,
                     v: s.v - sp.ratio * m.v,
-                    a: s.a - sp.ratio * m.a,
+                    // Without a jerk limit the acceleration may step.
+                    a: if lim.jmax > 0.0 {
+                        s.a - sp.ratio * m.a
+                    } else {
+                        0.0
+                    },
                 };
                 Profile::velocity(e, 0.0, &lim)
             }
