@@ -7,8 +7,9 @@
 //! Modules: [`pipeline`] (load, check, lower, generate C), [`cli`] (arguments and dispatch), [`axes`] (the
 //! axes file), [`motion_link`] (the motion library that generated programs link), [`output`] (writing
 //! into the user's folder), [`depfile`], [`fuzzing`] (the fuzz harness), [`lsp`] (the language server),
-//! [`plot`], [`pmac_out`], [`report`], [`progress`] (running a built program), [`stdio`] (output that ends
-//! quietly on a closed pipe), [`summary`] (the final summary) and [`xml_context`].
+//! [`plot`], [`pmac_out`], [`report`], [`progress`] (running a built program), [`trace_raw`] (its raw trace
+//! turned into CSV), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary)
+//! and [`xml_context`].
 #![forbid(unsafe_code)]
 
 pub mod axes;
@@ -25,4 +26,5 @@ pub mod progress;
 pub mod report;
 pub mod stdio;
 pub mod summary;
+pub mod trace_raw;
 pub mod xml_context;
