@@ -233,18 +233,21 @@ static void report_progress(FILE *f, unsigned long long done) {
  * trace: inputs, flags, resting axes) is copied, not formatted again. With --trace-raw (ladderc run uses
  * it), a REAL or LREAL value is written as a marker byte and its raw bits, which ladderc turns into the same
  * text with the ryu formatter: TRACE_F64 + 8 bytes, TRACE_F32 + 4 bytes (host byte order), TRACE_ESC + a
- * byte of text that would read as a marker, TRACE_EOR for the end of a row. Without it the trace is CSV. */
+ * byte of text that would read as a marker, TRACE_EOR for the end of a row, TRACE_SAME for a float equal to
+ * the one of its column in the row before. Without it the trace is CSV. */
 #define TRACE_F64 1
 #define TRACE_F32 2
 #define TRACE_ESC 3
 #define TRACE_EOR 4
-#define TRACE_CACHE 40
+#define TRACE_SAME 5
+#define TRACE_CACHE 32
 
 typedef struct {
     unsigned bytes;          /* of the value, as ladderc_read_var writes it */
+    int scalar;              /* at most 8 bytes, compared as `last` */
     int cached;              /* last/text hold the previous row's value */
     unsigned char text_len;
-    any_value last;
+    uint64_t last;
     char text[TRACE_CACHE];
 } trace_column;
 
@@ -276,7 +279,7 @@ static void trace_put_text(const char *text, size_t n) {
     for (i = 0; i < n; i++) {
         unsigned char c = (unsigned char)text[i];
         if (trace_len + 2 > sizeof trace_buf) trace_flush();
-        if (trace_raw && c >= TRACE_F64 && c <= TRACE_EOR) trace_buf[trace_len++] = TRACE_ESC;
+        if (trace_raw && c >= TRACE_F64 && c <= TRACE_SAME) trace_buf[trace_len++] = TRACE_ESC;
         trace_buf[trace_len++] = (char)c;
     }
 }
@@ -317,27 +320,64 @@ static void trace_time_ms(int64_t ns) {
     }
 }
 
+/* The value of a column of at most 8 bytes, as bits. */
+static uint64_t trace_bits(const ladderc_var *var, unsigned bytes) {
+    uint64_t bits = 0;
+    uint8_t u8;
+    uint16_t u16;
+    uint32_t u32;
+    any_value v;
+    const void *p = var->ptr;
+    if (var->area) {
+        ladderc_read_var(var, &v);
+        p = &v;
+    }
+    switch (bytes) {
+    case 1: memcpy(&u8, p, 1); bits = u8; break;
+    case 2: memcpy(&u16, p, 2); bits = u16; break;
+    case 4: memcpy(&u32, p, 4); bits = u32; break;
+    default: memcpy(&bits, p, 8); break;
+    }
+    return bits;
+}
+
 /* One watched value, after its comma. */
 static void trace_value(const ladderc_var *var, trace_column *c, char *text, size_t text_cap) {
     any_value v;
     size_t n;
+    if (c->scalar) {
+        uint64_t bits = trace_bits(var, c->bytes);
+        int same = c->cached && bits == c->last;
+        if (trace_raw && (var->type == LADDERC_T_LREAL || var->type == LADDERC_T_REAL)) {
+            if (same) {
+                trace_buf[trace_len++] = TRACE_SAME;
+                return;
+            }
+            trace_buf[trace_len++] = var->type == LADDERC_T_LREAL ? TRACE_F64 : TRACE_F32;
+            if (c->bytes == 8) trace_put((const char *)&bits, 8);
+            else {
+                uint32_t single = (uint32_t)bits;
+                trace_put((const char *)&single, 4);
+            }
+            c->cached = 1;
+            c->last = bits;
+            return;
+        }
+        if (same) {
+            /* the buffer has room for TRACE_CACHE bytes more than a field: a fixed-size copy */
+            memcpy(trace_buf + trace_len, c->text, TRACE_CACHE);
+            trace_len += c->text_len;
+            return;
+        }
+        c->last = bits;
+    }
     ladderc_read_var(var, &v);
-    if (trace_raw && (var->type == LADDERC_T_LREAL || var->type == LADDERC_T_REAL)) {
-        trace_buf[trace_len++] = var->type == LADDERC_T_LREAL ? TRACE_F64 : TRACE_F32;
-        trace_put((const char *)&v, c->bytes);
-        return;
-    }
-    if (c->cached && !memcmp(&v, &c->last, c->bytes)) {
-        trace_put(c->text, c->text_len);
-        return;
-    }
     ladderc_format_value(var->type, &v, text, text_cap);
     n = strlen(text);
     trace_put_text(text, n);
-    /* strings are compared by their whole buffer, so they are formatted every row */
-    c->cached = n < TRACE_CACHE && var->type != LADDERC_T_STRING && var->type != LADDERC_T_WSTRING;
+    /* strings are formatted every row */
+    c->cached = c->scalar && n < TRACE_CACHE;
     if (c->cached) {
-        memcpy(&c->last, &v, c->bytes);
         memcpy(c->text, text, n);
         c->text_len = (unsigned char)n;
     }
@@ -459,7 +499,10 @@ int main(int argc, char **argv) {
 
     columns = (trace_column *)calloc(watch_count + 1, sizeof *columns);
     if (!columns) return 2;
-    for (w = 0; w < watch_count; w++) columns[w].bytes = ladderc_type_bytes(watch[w].type);
+    for (w = 0; w < watch_count; w++) {
+        columns[w].bytes = ladderc_type_bytes(watch[w].type);
+        columns[w].scalar = columns[w].bytes <= 8;
+    }
     trace_file = trace;
     trace_put("cycle,time_ms", 13);
     for (w = 0; w < watch_count; w++) {
