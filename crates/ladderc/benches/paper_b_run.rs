@@ -8,9 +8,12 @@
 //! - the whole command (front end, C compile, run, trace written, junction summary), wall time;
 //! - the main command itself with the full trace (`--plot`, `--pmac` too);
 //! - the built program on its own (`ladderc build`, `make`, `./program --trace`: the C harness formats the
-//!   floats itself, no ryu).
+//!   floats itself, no ryu);
+//! - the run phase as `ladderc run` does it (`./program --trace-raw` into ladderc's converter on a thread),
+//!   in wall time and in CPU time (the program's and this process's, from /proc/self/stat): on a shared,
+//!   loaded machine the CPU figure is the one that does not depend on the other jobs.
 //!
-//! Run: `cargo bench -p ladderc --bench paper_b_run` (5 repetitions; `cargo test --benches` runs 200
+//! Run: `cargo bench -p ladderc --bench paper_b_run` (3 repetitions; `cargo test --benches` runs 200
 //! cycles once as a smoke test). The figures are in crates/ladderc/BENCHMARKS.md and the README.
 
 use std::path::{Path, PathBuf};
@@ -48,6 +51,48 @@ fn run_phase(stderr: &str) -> f64 {
     w.split(' ').next().unwrap().parse().unwrap()
 }
 
+/// CPU seconds used so far by this process (user + system) and by its waited-for children.
+fn cpu_seconds() -> (f64, f64) {
+    let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    let after = stat.rsplit(')').next().unwrap_or("");
+    let f: Vec<f64> = after
+        .split_whitespace()
+        .map(|x| x.parse().unwrap_or(0.0))
+        .collect();
+    let tick = Command::new("getconf")
+        .arg("CLK_TCK")
+        .output()
+        .ok()
+        .and_then(|o| String::from_utf8_lossy(&o.stdout).trim().parse().ok())
+        .unwrap_or(100.0);
+    // fields 14-17 of stat(5) are utime, stime, cutime, cstime; `after` starts at field 3
+    let at = |k: usize| f.get(k - 3).copied().unwrap_or(0.0) / tick;
+    (at(14) + at(15), at(16) + at(17))
+}
+
+/// The run phase as `ladderc run` does it: the program's raw trace through the converter into a file.
+/// Returns (wall, CPU) seconds.
+fn raw_run_phase(mut program: Command, trace: &Path) -> (f64, f64) {
+    let (own0, kids0) = cpu_seconds();
+    let t = Instant::now();
+    let mut child = program
+        .args(["--trace", "-", "--trace-raw"])
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let pipe = child.stdout.take().unwrap();
+    let file = std::fs::File::create(trace).unwrap();
+    let conv = std::thread::spawn(move || {
+        let mut w = std::io::BufWriter::with_capacity(1 << 16, file);
+        ladderc::trace_raw::convert(pipe, &mut w).unwrap()
+    });
+    assert!(child.wait().unwrap().success());
+    conv.join().unwrap();
+    let wall = t.elapsed().as_secs_f64();
+    let (own1, kids1) = cpu_seconds();
+    (wall, (own1 - own0) + (kids1 - kids0))
+}
+
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
     v[v.len() / 2]
@@ -56,7 +101,7 @@ fn median(mut v: Vec<f64>) -> f64 {
 fn main() {
     let full = std::env::args().any(|a| a == "--bench");
     let cycles: u64 = if full { 220_000 } else { 200 };
-    let reps = if full { 5 } else { 1 };
+    let reps = if full { 3 } else { 1 };
     let sim = cycles as f64 * cycle_s();
     let dir = tempfile::tempdir().unwrap();
     let src = example().join("paper_b.il");
@@ -89,13 +134,17 @@ fn main() {
             .arg(&out_dir),
     );
     timed(Command::new("make").arg("-s").current_dir(&out_dir));
-    let program = |watch: Option<&str>| {
+    let program_raw = |watch: Option<&str>| {
         let mut c = Command::new(out_dir.join("program"));
         c.args(["--cycles", &cycles.to_string(), "--cycle-ms"])
             .arg((cycle_s() * 1000.0).to_string());
         if let Some(w) = watch {
             c.args(["--watch", w]);
         }
+        c
+    };
+    let program = |watch: Option<&str>| {
+        let mut c = program_raw(watch);
         c.arg("--trace").arg(&trace);
         c
     };
@@ -104,6 +153,7 @@ fn main() {
     let (mut phase_full, mut phase_one, mut cmd_full, mut cmd_one, mut main_full) =
         (vec![], vec![], vec![], vec![], vec![]);
     let (mut prog_full, mut prog_one) = (vec![], vec![]);
+    let (mut raw_full, mut raw_one, mut cpu_full, mut cpu_one) = (vec![], vec![], vec![], vec![]);
     for _ in 0..reps {
         let (w, e) = timed(&mut ladderc(None, false));
         cmd_full.push(w);
@@ -118,6 +168,12 @@ fn main() {
         main_full.push(timed(&mut ladderc(None, true)).0);
         prog_full.push(timed(&mut program(None)).0);
         prog_one.push(timed(&mut program(Some(one))).0);
+        let (w, c) = raw_run_phase(program_raw(None), &trace);
+        raw_full.push(w);
+        cpu_full.push(c);
+        let (w, c) = raw_run_phase(program_raw(Some(one)), &trace);
+        raw_one.push(w);
+        cpu_one.push(c);
     }
     let row = |what: &str, wall: f64| {
         println!(
@@ -154,5 +210,21 @@ fn main() {
     row(
         "built program alone, one traced column",
         median(prog_one),
+    );
+    row(
+        "run phase (program --trace-raw + converter), full trace",
+        median(raw_full),
+    );
+    row(
+        "run phase (program --trace-raw + converter), one column",
+        median(raw_one),
+    );
+    row(
+        "  the same in CPU time, full trace",
+        median(cpu_full),
+    );
+    row(
+        "  the same in CPU time, one traced column (anchor)",
+        median(cpu_one),
     );
 }
