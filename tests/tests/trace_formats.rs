@@ -70,13 +70,13 @@ fn ladderc_run_writes_the_trace_the_c_harness_writes() {
     ] {
         assert!(c.contains(needle), "the C trace has no `{needle}`");
     }
-    assert!(
-        c.lines().any(|l| l.contains("e-32")),
-        "no subnormal LREAL"
-    );
+    assert!(c.lines().any(|l| l.contains("e-32")), "no subnormal LREAL");
     assert_eq!(c.lines().count(), 401);
     let to_file = run_trace(dir.path(), true);
-    assert!(to_file == c, "ladderc run --trace differs from the C harness");
+    assert!(
+        to_file == c,
+        "ladderc run --trace differs from the C harness"
+    );
     let on_stdout = run_trace(dir.path(), false);
     assert!(
         on_stdout == c,

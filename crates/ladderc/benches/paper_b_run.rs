@@ -176,20 +176,14 @@ fn main() {
         cpu_one.push(c);
     }
     let row = |what: &str, wall: f64| {
-        println!(
-            "{what:<62} {wall:8.3} s  {:7.0}x real time",
-            sim / wall
-        );
+        println!("{what:<62} {wall:8.3} s  {:7.0}x real time", sim / wall);
     };
     println!(
         "paper B, {cycles} cycles of {} ms = {sim} s simulated; full trace = {columns} columns; \
          median of {reps}, interleaved, wall time",
         cycle_s() * 1000.0
     );
-    row(
-        "ladderc run, run phase, full trace",
-        median(phase_full),
-    );
+    row("ladderc run, run phase, full trace", median(phase_full));
     row(
         "ladderc run, run phase, one traced column (anchor)",
         median(phase_one),
@@ -207,10 +201,7 @@ fn main() {
         "built program alone, C harness formats, full trace",
         median(prog_full),
     );
-    row(
-        "built program alone, one traced column",
-        median(prog_one),
-    );
+    row("built program alone, one traced column", median(prog_one));
     row(
         "run phase (program --trace-raw + converter), full trace",
         median(raw_full),
@@ -219,10 +210,7 @@ fn main() {
         "run phase (program --trace-raw + converter), one column",
         median(raw_one),
     );
-    row(
-        "  the same in CPU time, full trace",
-        median(cpu_full),
-    );
+    row("  the same in CPU time, full trace", median(cpu_full));
     row(
         "  the same in CPU time, one traced column (anchor)",
         median(cpu_one),

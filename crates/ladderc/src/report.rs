@@ -146,7 +146,9 @@ pub fn archive_bytes(map: &str, archive: &str) -> Option<u64> {
                 pending = !name.is_empty();
                 continue;
             }
-            [name, _addr, size, file] if line.starts_with(" .") && !name.is_empty() => (*size, *file),
+            [name, _addr, size, file] if line.starts_with(" .") && !name.is_empty() => {
+                (*size, *file)
+            }
             [addr, size, file] if pending && addr.starts_with("0x") && size.starts_with("0x") => {
                 (*size, *file)
             }

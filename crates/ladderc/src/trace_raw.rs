@@ -179,7 +179,13 @@ pub fn format_real(v: f32, out: &mut Vec<u8>) {
 }
 
 fn format_lreal_with(v: f64, ryu: &mut ryu::Buffer, out: &mut Vec<u8>) {
-    if special(v.is_nan(), v.is_infinite(), v == 0.0, v.is_sign_negative(), out) {
+    if special(
+        v.is_nan(),
+        v.is_infinite(),
+        v == 0.0,
+        v.is_sign_negative(),
+        out,
+    ) {
         return;
     }
     let bits = v.to_bits();
@@ -187,12 +193,23 @@ fn format_lreal_with(v: f64, ryu: &mut ryu::Buffer, out: &mut Vec<u8>) {
         let d = Decimal::parse(ryu.format_finite(v));
         d.write_g(15.max(d.len as i32), out);
     } else {
-        exact_g(|p| format!("{:.*e}", (p - 1) as usize, v), |s| s.parse() == Ok(v), 15..=17, out);
+        exact_g(
+            |p| format!("{:.*e}", (p - 1) as usize, v),
+            |s| s.parse() == Ok(v),
+            15..=17,
+            out,
+        );
     }
 }
 
 fn format_real_with(v: f32, ryu: &mut ryu::Buffer, out: &mut Vec<u8>) {
-    if special(v.is_nan(), v.is_infinite(), v == 0.0, v.is_sign_negative(), out) {
+    if special(
+        v.is_nan(),
+        v.is_infinite(),
+        v == 0.0,
+        v.is_sign_negative(),
+        out,
+    ) {
         return;
     }
     let bits = v.to_bits();
@@ -206,7 +223,12 @@ fn format_real_with(v: f32, ryu: &mut ryu::Buffer, out: &mut Vec<u8>) {
     // `(float)strtod(buf) == (float)v`: read as a double, then rounded to a float, as the harness does
     let wide = f64::from(v);
     let reads_back = |s: &str| s.parse::<f64>().is_ok_and(|r| r as f32 == v);
-    exact_g(|p| format!("{:.*e}", (p - 1) as usize, wide), reads_back, 6..=9, out);
+    exact_g(
+        |p| format!("{:.*e}", (p - 1) as usize, wide),
+        reads_back,
+        6..=9,
+        out,
+    );
 }
 
 /// `nan`, `-nan`, `inf`, `-inf`, `0`, `-0` as glibc's `%g` writes them; false for any other value.
@@ -356,18 +378,40 @@ mod tests {
     /// The harness's `format_real` itself, on Rust's exact formatting: the reference of the fast path.
     fn reference_lreal(v: f64) -> String {
         let mut out = Vec::new();
-        if !special(v.is_nan(), v.is_infinite(), v == 0.0, v.is_sign_negative(), &mut out) {
-            exact_g(|p| format!("{:.*e}", (p - 1) as usize, v), |s| s.parse() == Ok(v), 15..=17, &mut out);
+        if !special(
+            v.is_nan(),
+            v.is_infinite(),
+            v == 0.0,
+            v.is_sign_negative(),
+            &mut out,
+        ) {
+            exact_g(
+                |p| format!("{:.*e}", (p - 1) as usize, v),
+                |s| s.parse() == Ok(v),
+                15..=17,
+                &mut out,
+            );
         }
         String::from_utf8(out).unwrap()
     }
 
     fn reference_real(v: f32) -> String {
         let mut out = Vec::new();
-        if !special(v.is_nan(), v.is_infinite(), v == 0.0, v.is_sign_negative(), &mut out) {
+        if !special(
+            v.is_nan(),
+            v.is_infinite(),
+            v == 0.0,
+            v.is_sign_negative(),
+            &mut out,
+        ) {
             let wide = f64::from(v);
             let reads_back = |s: &str| s.parse::<f64>().is_ok_and(|r| r as f32 == v);
-            exact_g(|p| format!("{:.*e}", (p - 1) as usize, wide), reads_back, 6..=9, &mut out);
+            exact_g(
+                |p| format!("{:.*e}", (p - 1) as usize, wide),
+                reads_back,
+                6..=9,
+                &mut out,
+            );
         }
         String::from_utf8(out).unwrap()
     }
