@@ -91,10 +91,7 @@ impl Converter {
     fn feed(&mut self, data: &[u8], csv: &mut Vec<u8>) -> usize {
         let mut i = 0;
         while i < data.len() {
-            let plain = data[i..]
-                .iter()
-                .position(|b| (F64..=SAME).contains(b))
-                .unwrap_or(data.len() - i);
+            let plain = text_run(&data[i..]);
             csv.extend_from_slice(&data[i..i + plain]);
             i += plain;
             let Some(&marker) = data.get(i) else { break };
@@ -166,6 +163,26 @@ impl Converter {
         c.text[..text.len()].copy_from_slice(text);
         self.cache[column] = Some(c);
     }
+}
+
+/// The length of the text at the start of `data`: up to its first marker byte (0x01 to 0x05), or all of
+/// it. Eight bytes at a time: a word holds a byte below 6 when `(x - 0x06..06) & !x & 0x80..80` is not 0.
+fn text_run(data: &[u8]) -> usize {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    let mut k = 0;
+    for chunk in data.chunks_exact(8) {
+        let mut w = [0u8; 8];
+        w.copy_from_slice(chunk);
+        let x = u64::from_le_bytes(w);
+        if x.wrapping_sub(ONES * 6) & !x & (ONES * 0x80) != 0 {
+            break;
+        }
+        k += 8;
+    }
+    k + data[k..]
+        .iter()
+        .position(|b| (F64..=SAME).contains(b))
+        .unwrap_or(data.len() - k)
 }
 
 /// An LREAL as the harness's `format_real(v, 0)` writes it.
@@ -501,6 +518,23 @@ mod tests {
         for b in patterns(200_000) {
             let v = f32::from_bits(b as u32);
             assert_eq!(real(v), reference_real(v), "{:#x}", v.to_bits());
+        }
+    }
+
+    #[test]
+    fn a_text_run_ends_at_the_first_marker_and_nowhere_else() {
+        let text: Vec<u8> = (0u8..=255).filter(|b| !(F64..=SAME).contains(b)).collect();
+        for len in 0..40 {
+            let run: Vec<u8> = text.iter().cycle().skip(len * 7).take(len).copied().collect();
+            assert_eq!(text_run(&run), len);
+            for m in F64..=SAME {
+                for at in 0..=len {
+                    let mut v = run.clone();
+                    v.insert(at, m);
+                    v.push(F64);
+                    assert_eq!(text_run(&v), at, "marker {m} at {at} of {len}");
+                }
+            }
         }
     }
 
