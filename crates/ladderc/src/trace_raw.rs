@@ -525,7 +525,13 @@ mod tests {
     fn a_text_run_ends_at_the_first_marker_and_nowhere_else() {
         let text: Vec<u8> = (0u8..=255).filter(|b| !(F64..=SAME).contains(b)).collect();
         for len in 0..40 {
-            let run: Vec<u8> = text.iter().cycle().skip(len * 7).take(len).copied().collect();
+            let run: Vec<u8> = text
+                .iter()
+                .cycle()
+                .skip(len * 7)
+                .take(len)
+                .copied()
+                .collect();
             assert_eq!(text_run(&run), len);
             for m in F64..=SAME {
                 for at in 0..=len {
