@@ -1,7 +1,7 @@
 /* ladderc scan harness: runs the generated program for N scan cycles with a fixed cycle time.
  *
  *   prog [--cycles N] [--cycle-ms X] [--stimulus FILE] [--trace FILE|-] [--watch a,b,%QX0.1] [--list]
- *        [--progress FILE]
+ *        [--progress FILE] [--trace-raw]
  *
  * Input: the stimulus CSV (`cycle,variable,value` rows; the values are written just before that cycle
  * runs; an optional `cycle,variable,value` header, blank lines and `#` comment lines are ignored).
@@ -54,7 +54,8 @@ static void usage(FILE *f) {
             "  --trace FILE     CSV trace `cycle,time_ms,VAR...` after each cycle (default: standard output)\n"
             "  --watch LIST     comma-separated variables or addresses to trace (default: every variable)\n"
             "  --list           print the watchable variables with their types and exit\n"
-            "  --progress FILE  write the number of cycles done into FILE, about ten times a second\n");
+            "  --progress FILE  write the number of cycles done into FILE, about ten times a second\n"
+            "  --trace-raw      REAL/LREAL values of the trace as raw bits, for ladderc run to format\n");
 }
 
 static int ieq(const char *a, const char *b) {
@@ -226,13 +227,159 @@ static void report_progress(FILE *f, unsigned long long done) {
     fflush(f);
 }
 
-static void print_time_ms(FILE *f, int64_t ns) {
-    if (ns % 1000000 == 0) fprintf(f, "%lld", (long long)(ns / 1000000));
-    else {
-        char buf[64];
-        int n = snprintf(buf, sizeof buf, "%lld.%06lld", (long long)(ns / 1000000), (long long)(ns % 1000000));
-        while (n > 0 && buf[n - 1] == '0') buf[--n] = '\0';
-        fputs(buf, f);
+/* ------------------------------------------------------------------ the trace writer
+ * Rows go into one buffer that is written with fwrite when it fills (no per-value stdio call, no allocation
+ * per cycle). Each column keeps the raw bytes and the text of its last value: an unchanged value (most of a
+ * trace: inputs, flags, resting axes) is copied, not formatted again. With --trace-raw (ladderc run uses
+ * it), a REAL or LREAL value is written as a marker byte and its raw bits, which ladderc turns into the same
+ * text with the ryu formatter: TRACE_F64 + 8 bytes, TRACE_F32 + 4 bytes (host byte order), TRACE_ESC + a
+ * byte of text that would read as a marker, TRACE_EOR for the end of a row, TRACE_SAME for a float equal to
+ * the one of its column in the row before. Without it the trace is CSV. */
+#define TRACE_F64 1
+#define TRACE_F32 2
+#define TRACE_ESC 3
+#define TRACE_EOR 4
+#define TRACE_SAME 5
+#define TRACE_CACHE 32
+
+typedef struct {
+    unsigned bytes;          /* of the value, as ladderc_read_var writes it */
+    int scalar;              /* at most 8 bytes, compared as `last` */
+    int cached;              /* last/text hold the previous row's value */
+    unsigned char text_len;
+    uint64_t last;
+    char text[TRACE_CACHE];
+} trace_column;
+
+static trace_column *columns;
+static FILE *trace_file;
+static int trace_raw;
+static size_t trace_len;
+static char trace_buf[1 << 16];
+/* one field's text at most, escaped: the buffer is flushed when less than this is left */
+#define TRACE_FIELD_MAX (2 * (4 * (LADDERC_STRING_CAP + 1) + 16) + 16)
+
+static void trace_flush(void) {
+    if (trace_len) fwrite(trace_buf, 1, trace_len, trace_file);
+    trace_len = 0;
+}
+
+static void trace_room(void) {
+    if (trace_len + TRACE_FIELD_MAX > sizeof trace_buf) trace_flush();
+}
+
+static void trace_put(const char *text, size_t n) {
+    memcpy(trace_buf + trace_len, text, n);
+    trace_len += n;
+}
+
+/* Text of any length that may hold marker bytes (names, strings): escaped in raw mode. */
+static void trace_put_text(const char *text, size_t n) {
+    size_t i;
+    for (i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)text[i];
+        if (trace_len + 2 > sizeof trace_buf) trace_flush();
+        if (trace_raw && c >= TRACE_F64 && c <= TRACE_SAME) trace_buf[trace_len++] = TRACE_ESC;
+        trace_buf[trace_len++] = (char)c;
+    }
+}
+
+static void trace_u64(unsigned long long v) {
+    char d[24];
+    int n = 0;
+    do {
+        d[n++] = (char)('0' + v % 10);
+        v /= 10;
+    } while (v);
+    while (n) trace_buf[trace_len++] = d[--n];
+}
+
+static void trace_end_row(void) {
+    if (trace_raw) trace_buf[trace_len++] = TRACE_EOR;
+    else trace_buf[trace_len++] = '\n';
+}
+
+/* time_ms of a row: the scan clock in milliseconds, without trailing zeros in the fraction. */
+static void trace_time_ms(int64_t ns) {
+    if (ns < 0) {
+        trace_buf[trace_len++] = '-';
+        ns = -ns;
+    }
+    trace_u64((unsigned long long)(ns / 1000000));
+    if (ns % 1000000) {
+        char frac[8];
+        int n = 6, k;
+        int64_t f = ns % 1000000;
+        for (k = 5; k >= 0; k--) {
+            frac[k] = (char)('0' + f % 10);
+            f /= 10;
+        }
+        while (frac[n - 1] == '0') n--;
+        trace_buf[trace_len++] = '.';
+        trace_put(frac, (size_t)n);
+    }
+}
+
+/* The value of a column of at most 8 bytes, as bits. */
+static uint64_t trace_bits(const ladderc_var *var, unsigned bytes) {
+    uint64_t bits = 0;
+    uint8_t u8;
+    uint16_t u16;
+    uint32_t u32;
+    any_value v;
+    const void *p = var->ptr;
+    if (var->area) {
+        ladderc_read_var(var, &v);
+        p = &v;
+    }
+    switch (bytes) {
+    case 1: memcpy(&u8, p, 1); bits = u8; break;
+    case 2: memcpy(&u16, p, 2); bits = u16; break;
+    case 4: memcpy(&u32, p, 4); bits = u32; break;
+    default: memcpy(&bits, p, 8); break;
+    }
+    return bits;
+}
+
+/* One watched value, after its comma. */
+static void trace_value(const ladderc_var *var, trace_column *c, char *text, size_t text_cap) {
+    any_value v;
+    size_t n;
+    if (c->scalar) {
+        uint64_t bits = trace_bits(var, c->bytes);
+        int same = c->cached && bits == c->last;
+        if (trace_raw && (var->type == LADDERC_T_LREAL || var->type == LADDERC_T_REAL)) {
+            if (same) {
+                trace_buf[trace_len++] = TRACE_SAME;
+                return;
+            }
+            trace_buf[trace_len++] = var->type == LADDERC_T_LREAL ? TRACE_F64 : TRACE_F32;
+            if (c->bytes == 8) trace_put((const char *)&bits, 8);
+            else {
+                uint32_t single = (uint32_t)bits;
+                trace_put((const char *)&single, 4);
+            }
+            c->cached = 1;
+            c->last = bits;
+            return;
+        }
+        if (same) {
+            /* the buffer has room for TRACE_CACHE bytes more than a field: a fixed-size copy */
+            memcpy(trace_buf + trace_len, c->text, TRACE_CACHE);
+            trace_len += c->text_len;
+            return;
+        }
+        c->last = bits;
+    }
+    ladderc_read_var(var, &v);
+    ladderc_format_value(var->type, &v, text, text_cap);
+    n = strlen(text);
+    trace_put_text(text, n);
+    /* strings are formatted every row */
+    c->cached = c->scalar && n < TRACE_CACHE;
+    if (c->cached) {
+        memcpy(c->text, text, n);
+        c->text_len = (unsigned char)n;
     }
 }
 
@@ -257,6 +404,9 @@ int main(int argc, char **argv) {
         } else if (!strcmp(a, "--list")) {
             list = 1;
             continue;
+        } else if (!strcmp(a, "--trace-raw")) {
+            trace_raw = 1;
+            continue;
         }
         if (!v) {
             fprintf(stderr, "error: `%s` needs a value (or is unknown)\n", a);
@@ -278,6 +428,7 @@ int main(int argc, char **argv) {
             }
         } else if (!strcmp(a, "--stimulus")) stimulus_path = v;
         else if (!strcmp(a, "--trace")) trace_path = v;
+
         else if (!strcmp(a, "--watch")) watch_list = v;
         else if (!strcmp(a, "--progress")) progress_path = v;
         else {
@@ -346,9 +497,20 @@ int main(int argc, char **argv) {
         }
     }
 
-    fputs("cycle,time_ms", trace);
-    for (w = 0; w < watch_count; w++) fprintf(trace, ",%s", watch[w].name);
-    fputc('\n', trace);
+    columns = (trace_column *)calloc(watch_count + 1, sizeof *columns);
+    if (!columns) return 2;
+    for (w = 0; w < watch_count; w++) {
+        columns[w].bytes = ladderc_type_bytes(watch[w].type);
+        columns[w].scalar = columns[w].bytes <= 8;
+    }
+    trace_file = trace;
+    trace_put("cycle,time_ms", 13);
+    for (w = 0; w < watch_count; w++) {
+        trace_room();
+        trace_buf[trace_len++] = ',';
+        trace_put_text(watch[w].name, strlen(watch[w].name));
+    }
+    trace_end_row();
 
     ladderc_now = 0;
     ladderc_program_init();
@@ -363,15 +525,16 @@ int main(int argc, char **argv) {
                 next_row++;
             }
             ladderc_program_scan();
-            fprintf(trace, "%llu,", k);
-            print_time_ms(trace, ladderc_now);
+            trace_room();
+            trace_u64(k);
+            trace_buf[trace_len++] = ',';
+            trace_time_ms(ladderc_now);
             for (w = 0; w < watch_count; w++) {
-                any_value v;
-                ladderc_read_var(&watch[w], &v);
-                ladderc_format_value(watch[w].type, &v, value_text, sizeof value_text);
-                fprintf(trace, ",%s", value_text);
+                trace_room();
+                trace_buf[trace_len++] = ',';
+                trace_value(&watch[w], &columns[w], value_text, sizeof value_text);
             }
-            fputc('\n', trace);
+            trace_end_row();
             if (progress && (k & 255) == 255) {
                 clock_t now = clock();
                 if (now - last_report >= CLOCKS_PER_SEC / 10) {
@@ -381,6 +544,7 @@ int main(int argc, char **argv) {
             }
         }
     }
+    trace_flush();
     if (progress) {
         report_progress(progress, cycles);
         fclose(progress);
@@ -390,6 +554,7 @@ int main(int argc, char **argv) {
     free(rows);
     free(watch);
     free(watch_copy);
+    free(columns);
     if (ladderc_errors & LADDERC_ERR_DIV_ZERO) fprintf(stderr, "runtime: integer division by zero (result 0)\n");
     if (ladderc_errors & LADDERC_ERR_RANGE) fprintf(stderr, "runtime: conversion out of range (saturated)\n");
     if (ladderc_errors & LADDERC_ERR_BOUNDS) fprintf(stderr, "runtime: array index out of range\n");

@@ -616,7 +616,7 @@ int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_
     return 0;
 }
 
-static unsigned type_bytes(ladderc_type t) {
+unsigned ladderc_type_bytes(ladderc_type t) {
     switch (t) {
     case LADDERC_T_BOOL: case LADDERC_T_SINT: case LADDERC_T_USINT: case LADDERC_T_BYTE: return 1;
     case LADDERC_T_INT: case LADDERC_T_UINT: case LADDERC_T_WORD: return 2;
@@ -630,7 +630,7 @@ static unsigned type_bytes(ladderc_type t) {
 /* Reads a watchable variable into `out` (a value of its C type). */
 void ladderc_read_var(const ladderc_var *v, void *out) {
     if (!v->area) {
-        memcpy(out, v->ptr, type_bytes(v->type));
+        memcpy(out, v->ptr, ladderc_type_bytes(v->type));
         return;
     }
     if (v->type == LADDERC_T_BOOL) {
@@ -638,7 +638,7 @@ void ladderc_read_var(const ladderc_var *v, void *out) {
         return;
     }
     {
-        unsigned n = type_bytes(v->type);
+        unsigned n = ladderc_type_bytes(v->type);
         uint64_t raw = ladderc_load(v->area, v->offset, n);
         uint8_t u8 = (uint8_t)raw;
         uint16_t u16 = (uint16_t)raw;
@@ -654,7 +654,7 @@ void ladderc_read_var(const ladderc_var *v, void *out) {
 
 void ladderc_write_var(const ladderc_var *v, const void *in) {
     if (!v->area) {
-        memcpy(v->ptr, in, type_bytes(v->type));
+        memcpy(v->ptr, in, ladderc_type_bytes(v->type));
         return;
     }
     if (v->type == LADDERC_T_BOOL) {
@@ -662,7 +662,7 @@ void ladderc_write_var(const ladderc_var *v, const void *in) {
         return;
     }
     {
-        unsigned n = type_bytes(v->type);
+        unsigned n = ladderc_type_bytes(v->type);
         uint8_t u8;
         uint16_t u16;
         uint32_t u32;

@@ -445,6 +445,7 @@ int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_
 void ladderc_read_var(const ladderc_var *v, void *out);
 void ladderc_write_var(const ladderc_var *v, const void *in);
 void ladderc_format_value(ladderc_type t, const void *value, char *buf, size_t len);
+unsigned ladderc_type_bytes(ladderc_type t);
 int ladderc_parse_duration(const char *text, IEC_TIME *out);
 const char *ladderc_type_name(ladderc_type t);
 

@@ -833,11 +833,13 @@ fn run_program(
     // A closed standard output (`| head`) is no reason to skip the files asked for.
     let stdout_failed = stdio::out(&out.stdout).err();
     program_stderr(&out, format);
+    // The trace, read once for the junction summary, the plot and the PVT program.
+    let text = match (out.success(), &run.trace) {
+        (false, _) => String::new(),
+        (true, Some(t)) => std::fs::read_to_string(t).unwrap_or_default(),
+        (true, None) => out.stdout.clone(),
+    };
     if out.success() {
-        let text = match &run.trace {
-            Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
-            None => out.stdout.clone(),
-        };
         let unit = lowered
             .axes
             .axes
@@ -849,10 +851,6 @@ fn run_program(
         }
     }
     if let (true, Some(svg)) = (out.success(), &plot) {
-        let text = match &run.trace {
-            Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
-            None => out.stdout.clone(),
-        };
         let unit = lowered
             .axes
             .axes
@@ -869,10 +867,6 @@ fn run_program(
         summary::wrote(svg);
     }
     if let (true, Some((path, segment_ms))) = (out.success(), &pvt) {
-        let text = match &run.trace {
-            Some(t) => std::fs::read_to_string(t).unwrap_or_default(),
-            None => out.stdout.clone(),
-        };
         let dialect = match c.pmac_dialect.parse() {
             Ok(d) => d,
             Err(e) => {
@@ -976,8 +970,22 @@ pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
         return Vec::new();
     };
     let cols: Vec<&str> = header.split(',').collect();
-    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    let num = |row: &[&str], k: usize| row.get(k).and_then(|x| x.parse::<f64>().ok());
+    let groups: Vec<(&str, usize, Option<usize>)> = cols
+        .iter()
+        .enumerate()
+        .filter_map(|(k, c)| {
+            let group = c
+                .strip_prefix("group.")?
+                .strip_suffix(".junction_requested")?;
+            let reached = cols
+                .iter()
+                .position(|x| *x == format!("group.{group}.junction_reached"));
+            Some((group, k, reached))
+        })
+        .collect();
+    if groups.is_empty() {
+        return Vec::new();
+    }
     let active: Vec<(usize, &str)> = cols
         .iter()
         .enumerate()
@@ -988,42 +996,58 @@ pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
         .enumerate()
         .filter_map(|(k, c)| c.strip_suffix(".Done").map(|b| (k, b)))
         .collect();
-    let is_true = |row: &[&str], k: usize| row.get(k).is_some_and(|x| *x == "1" || *x == "TRUE");
+    // Only the columns read below are kept, one row after another (a full trace has many more).
+    let mut kept: Vec<usize> = vec![0];
+    for (_, k, reached) in &groups {
+        kept.push(*k);
+        kept.extend(reached);
+    }
+    kept.extend(active.iter().chain(&done).map(|(k, _)| *k));
+    kept.sort_unstable();
+    kept.dedup();
+    let slot = |k: usize| kept.binary_search(&k).ok();
+    let stride = kept.len();
+    let mut rows: Vec<&str> = Vec::new();
+    for line in lines {
+        let start = rows.len();
+        rows.resize(start + stride, "");
+        let mut next = 0;
+        for (k, field) in line.split(',').enumerate() {
+            if k == kept[next] {
+                rows[start + next] = field;
+                next += 1;
+                if next == stride {
+                    break;
+                }
+            }
+        }
+    }
+    let row_count = rows.len() / stride;
+    let field = |r: usize, k: usize| slot(k).map(|s| rows[r * stride + s]);
+    let num = |r: usize, k: usize| field(r, k).and_then(|x| x.parse::<f64>().ok());
+    let is_true = |r: usize, k: usize| field(r, k).is_some_and(|x| x == "1" || x == "TRUE");
+    let rises = |r: usize, k: usize| {
+        (r..(r + 2).min(row_count)).any(|x| is_true(x, k) && (x == 0 || !is_true(x - 1, k)))
+    };
     let mut out = Vec::new();
-    for (k, c) in cols.iter().enumerate() {
-        let Some(group) = c
-            .strip_prefix("group.")
-            .and_then(|g| g.strip_suffix(".junction_requested"))
-        else {
-            continue;
-        };
-        let reached_col = cols
-            .iter()
-            .position(|x| *x == format!("group.{group}.junction_reached"));
-        for (r, row) in rows.iter().enumerate() {
-            let Some(req) = num(row, k).filter(|v| *v > 0.0) else {
+    for (group, k, reached_col) in groups {
+        for r in 0..row_count {
+            let Some(req) = num(r, k).filter(|v| *v > 0.0) else {
                 continue;
             };
-            let reached = reached_col.and_then(|j| num(row, j)).unwrap_or(0.0);
+            let reached = reached_col.and_then(|j| num(r, j)).unwrap_or(0.0);
             let block = active
                 .iter()
-                .find(|(j, _)| {
-                    (r..(r + 2).min(rows.len()))
-                        .any(|x| is_true(&rows[x], *j) && (x == 0 || !is_true(&rows[x - 1], *j)))
-                })
+                .find(|(j, _)| rises(r, *j))
                 .map(|(_, b)| format!(" before {b}"))
                 .or_else(|| {
                     // without Active columns: the block whose Done rises there ends at it
                     done.iter()
-                        .find(|(j, _)| {
-                            (r..(r + 2).min(rows.len())).any(|x| {
-                                is_true(&rows[x], *j) && (x == 0 || !is_true(&rows[x - 1], *j))
-                            })
-                        })
+                        .find(|(j, _)| rises(r, *j))
                         .map(|(_, b)| format!(" after {b}"))
                 })
                 .unwrap_or_default();
-            let cycle = row.first().copied().unwrap_or("?");
+            let cycle = field(r, 0).unwrap_or("?");
             out.push(format!(
                 "motion: group {group}: junction{block} at cycle {cycle}: requested {req} {unit}/s, reached {reached:.6} {unit}/s (lowered to keep the axis limits: a junction, or an arc's path speed; motion-lib README, \"Junction speeds\")"
             ));

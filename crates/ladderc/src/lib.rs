@@ -51,7 +51,7 @@
 //! (arguments and dispatch), [`axes`] (the axes file), [`motion_link`] (the motion library that generated
 //! programs link), [`output`] (writing into the user's folder), [`depfile`], [`fuzzing`] (the fuzz
 //! harness), [`lsp`] (the language server), [`plot`], [`pmac_out`], [`report`], [`progress`] (running a
-//! built program), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary)
+//! built program), [`trace_raw`] (its raw trace turned into CSV), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary)
 //! and [`xml_context`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -71,6 +71,7 @@ pub mod project;
 pub mod report;
 pub mod stdio;
 pub mod summary;
+pub mod trace_raw;
 pub mod xml_context;
 
 pub use c_backend;

@@ -2,6 +2,10 @@
 //!
 //! Input: the executable, the harness options and a scratch directory. Output: the program's exit status,
 //! standard output and standard error (as [`c_backend::run`] gives them) and the wall time of the run.
+//! The trace: the harness writes it raw (`--trace-raw`) on its standard output, and a thread turns it into
+//! the CSV ([`crate::trace_raw`], floats by ryu) while the program runs, into `opts.trace` or, without
+//! one, into the returned standard output (the generated program writes nothing else there). The wall
+//! time ends when the program has exited and its trace is written.
 //! When standard error is a terminal, the harness is asked to report the cycles done into a file of the
 //! scratch directory (`--progress FILE`, rewritten about ten times a second), and once the run has taken
 //! longer than a second (`LADDERC_PROGRESS_AFTER_MS` overrides the delay) an `indicatif` bar shows it;
@@ -24,7 +28,12 @@ pub struct Timed {
 
 /// Runs `exe` with `opts`; see the module header.
 pub fn run(exe: &Path, opts: &RunOptions, scratch: &Path) -> Result<Timed, BuildError> {
-    let mut args = c_backend::toolchain::run_args(opts);
+    let harness = RunOptions {
+        trace: None,
+        ..opts.clone()
+    };
+    let mut args = c_backend::toolchain::run_args(&harness);
+    args.push("--trace-raw".into());
     let bar = std::io::stderr().is_terminal();
     let progress_file = scratch.join("progress");
     if bar {
@@ -43,7 +52,7 @@ pub fn run(exe: &Path, opts: &RunOptions, scratch: &Path) -> Result<Timed, Build
         .stderr(Stdio::piped())
         .spawn()
         .map_err(fail)?;
-    let out_reader = drain(child.stdout.take());
+    let out_reader = csv_trace(child.stdout.take(), opts.trace.clone());
     let err_reader = drain(child.stderr.take());
     let delay = Duration::from_millis(
         std::env::var("LADDERC_PROGRESS_AFTER_MS")
@@ -71,12 +80,19 @@ pub fn run(exe: &Path, opts: &RunOptions, scratch: &Path) -> Result<Timed, Build
             }
         }
     };
+    let stdout = out_reader
+        .join()
+        .unwrap_or_else(|_| Err(std::io::Error::other("the trace thread panicked")))
+        .map_err(|e| BuildError::Run {
+            path: exe.display().to_string(),
+            message: format!("cannot write the trace: {e}"),
+        });
     let wall = start.elapsed();
     if let Some(pb) = shown {
         pb.finish_and_clear();
     }
-    let stdout = out_reader.join().unwrap_or_default();
     let stderr = err_reader.join().unwrap_or_default();
+    let stdout = stdout?;
     Ok(Timed {
         output: RunOutput {
             status: status.code(),
@@ -105,6 +121,33 @@ fn new_bar(cycles: u64, done: u64, elapsed: Duration) -> indicatif::ProgressBar 
 /// The cycles done, as the harness last wrote them (`None` while the file is empty or being rewritten).
 fn read_progress(path: &Path) -> Option<u64> {
     std::fs::read_to_string(path).ok()?.trim().parse().ok()
+}
+
+/// Turns the raw trace on `pipe` into CSV on a thread: into the file `dest`, or returned when `dest` is
+/// `None`. The pipe is read to its end even after a write error, so the program never blocks on it.
+fn csv_trace<R: Read + Send + 'static>(
+    pipe: Option<R>,
+    dest: Option<std::path::PathBuf>,
+) -> std::thread::JoinHandle<std::io::Result<Vec<u8>>> {
+    std::thread::spawn(move || {
+        let Some(mut pipe) = pipe else {
+            return Ok(Vec::new());
+        };
+        let result = match dest {
+            Some(path) => std::fs::File::create(&path).and_then(|f| {
+                let mut w = std::io::BufWriter::with_capacity(1 << 16, f);
+                crate::trace_raw::convert(&mut pipe, &mut w).map(|_| Vec::new())
+            }),
+            None => {
+                let mut v = Vec::new();
+                crate::trace_raw::convert(&mut pipe, &mut v).map(|_| v)
+            }
+        };
+        if result.is_err() {
+            let _ = std::io::copy(&mut pipe, &mut std::io::sink());
+        }
+        result
+    })
 }
 
 /// Reads a pipe to its end on a thread (so that a full pipe never blocks the program).

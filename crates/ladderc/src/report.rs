@@ -11,7 +11,10 @@
 //! -fdata-sections`, linked with `-Wl,--gc-sections -s` and the motion library when it uses one):
 //! `program_code_bytes` is the machine code of the program's own C (`program.c`, `embedded.c`),
 //! `runtime_code_bytes` that of ladderc's C runtime and scan harness, `executable_bytes` the size of the
-//! linked, stripped executable file (`null` each when no C compiler is available).
+//! linked, stripped executable file, `motion_lib_bytes` what the motion library's sections kept by
+//! `--gc-sections` occupy in it (code, constants, unwind tables; summed from the GNU ld link map; `null`
+//! without a motion library or with a linker whose map is not GNU ld's), and each is `null` when no C
+//! compiler is available.
 //! Invariant: the figures are measured on the generated text and objects, never estimated.
 
 use crate::pipeline::Lowered;
@@ -115,12 +118,59 @@ fn text_bytes(dir: &std::path::Path, obj: &str) -> Option<u64> {
     Some(total)
 }
 
-/// (program code, runtime code, executable file) in bytes, built as the project's Makefile does;
-/// `extra` are the files the build adds (the motion library).
+/// The bytes that input sections from `archive` occupy in the loaded image, from a GNU ld link map
+/// (`-Wl,-Map=FILE`): the kept input sections under every allocated output section except `.bss`/`.tbss`
+/// (which take no file bytes). `None` when the map has no memory map part (another linker).
+pub fn archive_bytes(map: &str, archive: &str) -> Option<u64> {
+    let (_, body) = map.split_once("Linker script and memory map")?;
+    let member = format!("{archive}(");
+    let mut output = "";
+    let mut pending = false;
+    let mut total = 0u64;
+    let counted = |out: &str| {
+        !out.is_empty()
+            && !out.starts_with(".debug")
+            && !matches!(out, ".bss" | ".tbss" | ".comment" | ".note.GNU-stack")
+            && !out.starts_with(".gnu.build.attributes")
+    };
+    for line in body.lines() {
+        if line.starts_with('.') {
+            output = line.split_whitespace().next().unwrap_or("");
+            pending = false;
+            continue;
+        }
+        let t: Vec<&str> = line.split_whitespace().collect();
+        let (size, file) = match t.as_slice() {
+            // ` .text.name` alone: its address, size and file are on the next line
+            [name] if line.starts_with(" .") || line.starts_with(" *") => {
+                pending = !name.is_empty();
+                continue;
+            }
+            [name, _addr, size, file] if line.starts_with(" .") && !name.is_empty() => {
+                (*size, *file)
+            }
+            [addr, size, file] if pending && addr.starts_with("0x") && size.starts_with("0x") => {
+                (*size, *file)
+            }
+            _ => {
+                pending = false;
+                continue;
+            }
+        };
+        pending = false;
+        if counted(output) && file.contains(&member) {
+            total += u64::from_str_radix(size.trim_start_matches("0x"), 16).unwrap_or(0);
+        }
+    }
+    Some(total)
+}
+
+/// (program code, runtime code, executable file, motion library in it) in bytes, built as the project's
+/// Makefile does; `extra` are the files the build adds (the motion library).
 pub fn code_size(
     program: &c_backend::CProgram,
     extra: &[(String, Vec<u8>)],
-) -> Option<(u64, u64, u64)> {
+) -> Option<(u64, u64, u64, Option<u64>)> {
     let dir = tempfile::tempdir().ok()?;
     c_backend::toolchain::write_files(program, dir.path()).ok()?;
     for (name, bytes) in extra {
@@ -168,7 +218,7 @@ pub fn code_size(
         .args(["-o", "program"])
         .args(&objects)
         .args(&link)
-        .args(["-Wl,--gc-sections", "-s"])
+        .args(["-Wl,--gc-sections", "-s", "-Wl,-Map=program.map"])
         .current_dir(dir.path())
         .output()
         .ok()?
@@ -178,7 +228,14 @@ pub fn code_size(
         return None;
     }
     let exe = std::fs::metadata(dir.path().join("program")).ok()?.len();
-    Some((own, runtime, exe))
+    let library = extra
+        .iter()
+        .find(|(name, _)| name.ends_with(".a"))
+        .and_then(|(name, _)| {
+            let map = std::fs::read_to_string(dir.path().join("program.map")).ok()?;
+            archive_bytes(&map, name)
+        });
+    Some((own, runtime, exe, library))
 }
 
 /// The report as JSON text; `extra` are the files the build adds to the project (the motion library).
@@ -255,6 +312,7 @@ pub fn json_with(
             "program_code_bytes": size.map(|s| s.0),
             "runtime_code_bytes": size.map(|s| s.1),
             "executable_bytes": size.map(|s| s.2),
+            "motion_lib_bytes": size.and_then(|s| s.3),
         },
     });
     serde_json::to_string_pretty(&doc).unwrap_or_default()
@@ -262,7 +320,34 @@ pub fn json_with(
 
 #[cfg(test)]
 mod tests {
-    use super::definition_len;
+    use super::{archive_bytes, definition_len};
+
+    #[test]
+    fn the_librarys_kept_sections_are_summed_from_the_link_map() {
+        // the shapes of GNU ld's map: a member pulled in, a name on its own line, name and size on one
+        // line, fill, a symbol line, debug and bss sections (not counted)
+        let map = "Archive member included to satisfy reference by file (symbol)\n\
+            libm.a(x.o)  0x0000000000000100 0x999 libm.a(x.o)\n\
+            Discarded input sections\n \
+            .text.gone     0x0000000000000000       0x500 libm.a(x.o)\n\
+            Linker script and memory map\n\
+            .text           0x0000000000001000     0x2000\n \
+            .text.mc_engine_step_with_a_long_name\n                \
+            0x0000000000001000      0x100 libm.a(x.o)\n                \
+            0x0000000000001000                mc_engine_step\n \
+            .text.main     0x0000000000001100       0x40 main.o\n \
+            *fill*         0x0000000000001140        0x10 \n \
+            .text          0x0000000000001150       0x20 libm.a(y.o)\n\
+            .eh_frame       0x0000000000004000      0x100\n \
+            .eh_frame      0x0000000000004000       0x30 libm.a(x.o)\n\
+            .bss            0x0000000000008000      0x100\n \
+            .bss.state     0x0000000000008000       0x80 libm.a(x.o)\n\
+            .debug_info     0x0000000000000000      0x100\n \
+            .debug_info    0x0000000000000000       0x70 libm.a(x.o)\n";
+        assert_eq!(archive_bytes(map, "libm.a"), Some(0x100 + 0x20 + 0x30));
+        assert_eq!(archive_bytes(map, "libother.a"), Some(0));
+        assert_eq!(archive_bytes("no map here", "libm.a"), None);
+    }
 
     #[test]
     fn the_definition_not_the_prototype_is_measured() {
