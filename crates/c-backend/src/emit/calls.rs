@@ -621,16 +621,27 @@ impl Gen<'_> {
         from: &Type,
         to: &Type,
     ) -> Option<String> {
+        // WSTRING goes through STRING (UTF-8 text; runtime `ladderc_wstr_of_str`/`ladderc_str_of_wstr`).
+        let narrow = |v: &str| format!("ladderc_str_of_wstr({v})");
+        let widen = |v: String| format!("ladderc_wstr_of_str({v})");
         let (f, t) = match (from.elementary(), to.elementary()) {
             (Some(f), Some(t)) => (f, t),
-            (Some(f), None) if matches!(to, Type::String { wide: false, .. }) => {
+            (Some(f), None) if to.is_string() && !to.is_error() => {
                 let ct = ctypes::elementary(f);
-                return Some(format!(
-                    "ladderc_str_of({}, &({ct}){{{v}}})",
-                    ctypes::type_tag(f)
-                ));
+                let text = format!("ladderc_str_of({}, &({ct}){{{v}}})", ctypes::type_tag(f));
+                return Some(if matches!(to, Type::String { wide: true, .. }) {
+                    widen(text)
+                } else {
+                    text
+                });
             }
-            (None, Some(t)) if matches!(from, Type::String { wide: false, .. }) => {
+            (None, Some(t)) if from.is_string() && !from.is_error() => {
+                let s = if matches!(from, Type::String { wide: true, .. }) {
+                    narrow(v)
+                } else {
+                    v.to_string()
+                };
+                let v = s.as_str();
                 return Some(match t {
                     E::Bool => format!("ladderc_str_to_bool({v})"),
                     E::Real | E::Lreal => {
@@ -651,17 +662,13 @@ impl Gen<'_> {
                 });
             }
             (None, None) if from.is_string() && to.is_string() && !to.is_error() => {
-                if matches!(
-                    (from, to),
-                    (
-                        Type::String { wide: false, .. },
-                        Type::String { wide: false, .. }
-                    )
-                ) {
-                    return Some(convert(v, from, to));
-                }
-                self.unsupported(span, "WSTRING conversions");
-                return None;
+                let fw = matches!(from, Type::String { wide: true, .. });
+                let tw = matches!(to, Type::String { wide: true, .. });
+                return Some(match (fw, tw) {
+                    (false, true) => widen(v.to_string()),
+                    (true, false) => narrow(v),
+                    _ => convert(v, from, to),
+                });
             }
             _ => {
                 self.unsupported(span, "this conversion");
