@@ -410,6 +410,52 @@ static void civil_from_days(int64_t z, int64_t *y, unsigned *m, unsigned *d) {
     *y += *m <= 2;
 }
 
+#define LADDERC_NS_PER_DAY 86400000000000LL
+/* Days of a valid date (0 and *ok = 0 otherwise; DT must stay inside int64 nanoseconds). */
+static int64_t date_days(int64_t y, int64_t m, int64_t d, int *ok) {
+    static const unsigned mdays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    int leap;
+    int64_t days;
+    *ok = 0;
+    if (y < 1677 || y > 2262 || m < 1 || m > 12 || d < 1) return 0;
+    leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+    if (d > (int64_t)mdays[m - 1] + (m == 2 && leap)) return 0;
+    days = days_from_civil(y, (unsigned)m, (unsigned)d);
+    if (days < -106751 || days > 106750) return 0;
+    *ok = 1;
+    return days;
+}
+static int64_t tod_ns(int64_t h, int64_t mi, int64_t s, int64_t ms, int *ok) {
+    *ok = h >= 0 && h <= 23 && mi >= 0 && mi <= 59 && s >= 0 && s <= 59 && ms >= 0 && ms <= 999;
+    if (!*ok) return 0;
+    return ((h * 60 + mi) * 60 + s) * 1000000000LL + ms * 1000000LL;
+}
+IEC_DATE ladderc_concat_date(int64_t year, int64_t month, int64_t day) {
+    int ok;
+    int64_t days = date_days(year, month, day, &ok);
+    if (!ok) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    return days * LADDERC_NS_PER_DAY;
+}
+IEC_TOD ladderc_concat_tod(int64_t hour, int64_t minute, int64_t second, int64_t ms) {
+    int ok;
+    int64_t ns = tod_ns(hour, minute, second, ms, &ok);
+    if (!ok) ladderc_errors |= LADDERC_ERR_RANGE;
+    return ns;
+}
+IEC_DT ladderc_concat_dt(int64_t year, int64_t month, int64_t day, int64_t hour, int64_t minute, int64_t second,
+                         int64_t ms) {
+    int ok_d, ok_t;
+    int64_t days = date_days(year, month, day, &ok_d), ns = tod_ns(hour, minute, second, ms, &ok_t);
+    if (!ok_d || !ok_t) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    /* |days| <= 106751 and ns < one day: inside int64 */
+    return days * LADDERC_NS_PER_DAY + ns;
+}
+IEC_INT ladderc_day_of_week(int64_t date) {
+    int64_t days = date / LADDERC_NS_PER_DAY - (date % LADDERC_NS_PER_DAY < 0);
+    int64_t w = (days + 4) % 7; /* 1970-01-01 was a Thursday */
+    return (IEC_INT)(w < 0 ? w + 7 : w);
+}
+
 static int parse_date(const char **sp, int64_t *days) {
     int y, m, d, n = 0;
     if (sscanf(*sp, "%4d-%2d-%2d%n", &y, &m, &d, &n) != 3 || m < 1 || m > 12 || d < 1 || d > 31) return -1;

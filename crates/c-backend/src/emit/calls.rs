@@ -471,6 +471,23 @@ impl Gen<'_> {
             n if super::datetime::is_datetime_function(n) => {
                 self.datetime_call(span, n, vals, tys, result)
             }
+            "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK" => {
+                let n = match name {
+                    "CONCAT_DATE" => 3,
+                    "CONCAT_TOD" => 4,
+                    "CONCAT_DT" => 7,
+                    _ => 1,
+                };
+                if vals.len() != n {
+                    return None;
+                }
+                let args: Vec<String> = vals.iter().map(|v| format!("(int64_t)({v})")).collect();
+                Some(format!(
+                    "ladderc_{}({})",
+                    name.to_ascii_lowercase(),
+                    args.join(", ")
+                ))
+            }
             "ADD" | "MUL" | "SUB" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
                 if !need(2) {
                     return None;
