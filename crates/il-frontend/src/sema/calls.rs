@@ -188,7 +188,11 @@ impl Body<'_, '_> {
                 root = self.lits.unify(root, *v);
             }
             let real = self.lits.is_real(root);
-            if class == Class::AnyReal {
+            if let Some(t) = self.typed_generic.clone() {
+                // a typed name: typed_call binds the literals to its type (or reports E1410/E1017)
+                let _ = t;
+                Ty::Lit(root)
+            } else if class == Class::AnyReal {
                 let _ = self.lits.bind(root, &Type::LREAL);
                 Ty::Known(Type::LREAL)
             } else if real && !class.accepts_real_literal() {
@@ -302,7 +306,9 @@ impl Body<'_, '_> {
             .filter(|f| user_fn.is_none() || f.name.eq_ignore_ascii_case(&name.name))
         {
             // a user FUNCTION named like a typed name (`MAX_REAL`) or `MULTIME` is the user's
+            self.typed_generic = stdlib::typed_name(&name.name).map(|(_, t)| t);
             let result = self.std_call(span, f, args, formal, st, rec);
+            self.typed_generic = None;
             match stdlib::typed_name(&name.name) {
                 Some((_, t)) => self.typed_call(span, name, t, rec, result),
                 _ => result,
