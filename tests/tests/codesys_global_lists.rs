@@ -39,7 +39,10 @@ fn codesys_global_lists_without_var_external_run() {
          2,20,3,0,0,-1,T#20ms\n\
          3,30,3,0,0,-1,T#20ms\n"
     );
-    let notes: Vec<&str> = stderr.lines().filter(|l| l.contains("note[W1410]")).collect();
+    let notes: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("note[W1410]"))
+        .collect();
     // FB_Count: iCount, GC_MAX; PRG_MAIN: xStart, fbPulse, xLamp (not iCount: it is local);
     // PRG_LD: xLamp, xMotor
     assert_eq!(notes.len(), 7, "{stderr}");
@@ -56,7 +59,9 @@ fn codesys_global_lists_without_var_external_run() {
         assert!(notes.iter().any(|n| n.contains(&msg)), "{msg}: {stderr}");
     }
     assert!(
-        !notes.iter().any(|n| n.contains("`iCount` is used in program")),
+        !notes
+            .iter()
+            .any(|n| n.contains("`iCount` is used in program")),
         "{stderr}"
     );
     // located in the file, with the declaration IEC 61131-3 wants in the hint
@@ -86,7 +91,10 @@ fn check_st(src: &str) -> (Option<i32>, String) {
         String::from_utf8_lossy(&out.stderr),
         String::from_utf8_lossy(&out.stdout)
     );
-    (out.status.code(), text.replace(&f.display().to_string(), "p.st"))
+    (
+        out.status.code(),
+        text.replace(&f.display().to_string(), "p.st"),
+    )
 }
 
 const CONFIG: &str = "CONFIGURATION cfg\n  VAR_GLOBAL\n    speed : INT := 1;\n  END_VAR\n  \
@@ -101,8 +109,14 @@ fn st_configuration_globals_without_var_external_run_and_keep_their_rules() {
         "PROGRAM main\nVAR\n  gap : INT;\nEND_VAR\n  speed := speed * 2;\n  gap := TOP - speed;\nEND_PROGRAM\n{CONFIG}"
     ));
     assert_eq!(code, Some(0), "{err}");
-    assert!(err.contains("p.st:5:12: note[W1410]: global `speed`"), "{err}");
-    assert!(err.contains("p.st:6:10: note[W1410]: global `TOP`"), "{err}");
+    assert!(
+        err.contains("p.st:5:12: note[W1410]: global `speed`"),
+        "{err}"
+    );
+    assert!(
+        err.contains("p.st:6:10: note[W1410]: global `TOP`"),
+        "{err}"
+    );
     // speed doubles every cycle from 1; gap = 100 - speed
     assert!(err.contains("2,20,8,100,92"), "{err}");
 
@@ -112,9 +126,14 @@ fn st_configuration_globals_without_var_external_run_and_keep_their_rules() {
     assert!(err.contains("p.st:2:3: error["), "{err}");
 
     // a name that is no global is still undeclared
-    let (code, err) = check_st(&format!("PROGRAM main\n  sped := 1;\nEND_PROGRAM\n{CONFIG}"));
+    let (code, err) = check_st(&format!(
+        "PROGRAM main\n  sped := 1;\nEND_PROGRAM\n{CONFIG}"
+    ));
     assert_eq!(code, Some(1), "{err}");
-    assert!(err.contains("p.st:2:3: error[E1001]: undeclared name `sped`"), "{err}");
+    assert!(
+        err.contains("p.st:2:3: error[E1001]: undeclared name `sped`"),
+        "{err}"
+    );
 
     // a declared VAR_EXTERNAL gives no note
     let (code, err) = check_st(&format!(

@@ -77,10 +77,26 @@ const CASES: &[(&str, &str, &str)] = &[
     ("TOD", "CONCAT_TOD(24, 0, 0, 0)", "TOD#00:00:00"),
     ("TOD", "CONCAT_TOD(12, 60, 0, 0)", "TOD#00:00:00"),
     ("TOD", "CONCAT_TOD(0, 0, 0, 1000)", "TOD#00:00:00"),
-    ("DT", "CONCAT_DT(1969, 12, 31, 23, 0, 0, 5)", "DT#1969-12-31-23:00:00.005"),
-    ("DT", "CONCAT_DT(2262, 4, 10, 23, 59, 59, 999)", "DT#2262-04-10-23:59:59.999"),
-    ("DT", "CONCAT_DT(2262, 4, 11, 0, 0, 0, 0)", "DT#1970-01-01-00:00:00"),
-    ("DT", "CONCAT_DT(2024, 1, 31, 12, -1, 0, 0)", "DT#1970-01-01-00:00:00"),
+    (
+        "DT",
+        "CONCAT_DT(1969, 12, 31, 23, 0, 0, 5)",
+        "DT#1969-12-31-23:00:00.005",
+    ),
+    (
+        "DT",
+        "CONCAT_DT(2262, 4, 10, 23, 59, 59, 999)",
+        "DT#2262-04-10-23:59:59.999",
+    ),
+    (
+        "DT",
+        "CONCAT_DT(2262, 4, 11, 0, 0, 0, 0)",
+        "DT#1970-01-01-00:00:00",
+    ),
+    (
+        "DT",
+        "CONCAT_DT(2024, 1, 31, 12, -1, 0, 0)",
+        "DT#1970-01-01-00:00:00",
+    ),
     ("INT", "DAY_OF_WEEK(D#2024-01-31)", "3"),
     ("INT", "DAY_OF_WEEK(D#1969-12-28)", "0"),
     ("INT", "DAY_OF_WEEK(D#2000-01-01)", "6"),
@@ -133,7 +149,10 @@ fn added_standard_functions_give_the_iec_values() {
         .collect();
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     // the invalid dates, saturations and divisions by zero were flagged
-    assert!(stderr.contains("runtime: conversion out of range"), "{stderr}");
+    assert!(
+        stderr.contains("runtime: conversion out of range"),
+        "{stderr}"
+    );
 }
 
 /// The typed names in IL: the current result is the first input.

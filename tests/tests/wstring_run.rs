@@ -150,7 +150,11 @@ fn every_wstring_conversion_matches_its_string_twin() {
                     body.push_str(&format!("  w{c}_{k} := {name}(\"{t}\");\n"));
                     body.push_str(&format!("  s{c}_{k} := STRING_TO_{to}('{t}');\n"));
                 }
-                pairs.push((format!("w{c}_{k}"), format!("s{c}_{k}"), format!("{name}({t:?})")));
+                pairs.push((
+                    format!("w{c}_{k}"),
+                    format!("s{c}_{k}"),
+                    format!("{name}({t:?})"),
+                ));
             }
         }
     }
@@ -180,17 +184,49 @@ fn every_wstring_conversion_matches_its_string_twin() {
 fn wstring_literals_functions_and_narrowing_give_the_iec_values() {
     let cases: &[(&str, &str, &str)] = &[
         // (type, expression, expected trace value)
-        ("WSTRING", "\"h\u{e9}llo \u{4e16}\u{754c}\"", "\"h\u{e9}llo \u{4e16}\u{754c}\""),
+        (
+            "WSTRING",
+            "\"h\u{e9}llo \u{4e16}\u{754c}\"",
+            "\"h\u{e9}llo \u{4e16}\u{754c}\"",
+        ),
         ("INT", "LEN(\"h\u{e9}llo \u{4e16}\u{754c}\")", "8"),
         // a character outside the BMP is two UTF-16 code units
         ("INT", "LEN(\"a\u{1f600}\")", "3"),
-        ("WSTRING", "CONCAT(\"ab\", \"\u{3b1}\u{3b2}\", \"c\")", "\"ab\u{3b1}\u{3b2}c\""),
-        ("WSTRING", "LEFT(\"\u{3b1}\u{3b2}\u{3b3}\", 2)", "\"\u{3b1}\u{3b2}\""),
-        ("WSTRING", "RIGHT(\"\u{3b1}\u{3b2}\u{3b3}\", 1)", "\"\u{3b3}\""),
-        ("WSTRING", "MID(\"\u{3b1}\u{3b2}\u{3b3}\u{3b4}\", 2, 2)", "\"\u{3b2}\u{3b3}\""),
-        ("WSTRING", "INSERT(\"\u{3b1}\u{3b3}\", \"\u{3b2}\", 1)", "\"\u{3b1}\u{3b2}\u{3b3}\""),
-        ("WSTRING", "DELETE(\"\u{3b1}\u{3b2}\u{3b3}\", 1, 2)", "\"\u{3b1}\u{3b3}\""),
-        ("WSTRING", "REPLACE(\"\u{3b1}\u{3b2}\u{3b3}\", \"xy\", 1, 3)", "\"\u{3b1}\u{3b2}xy\""),
+        (
+            "WSTRING",
+            "CONCAT(\"ab\", \"\u{3b1}\u{3b2}\", \"c\")",
+            "\"ab\u{3b1}\u{3b2}c\"",
+        ),
+        (
+            "WSTRING",
+            "LEFT(\"\u{3b1}\u{3b2}\u{3b3}\", 2)",
+            "\"\u{3b1}\u{3b2}\"",
+        ),
+        (
+            "WSTRING",
+            "RIGHT(\"\u{3b1}\u{3b2}\u{3b3}\", 1)",
+            "\"\u{3b3}\"",
+        ),
+        (
+            "WSTRING",
+            "MID(\"\u{3b1}\u{3b2}\u{3b3}\u{3b4}\", 2, 2)",
+            "\"\u{3b2}\u{3b3}\"",
+        ),
+        (
+            "WSTRING",
+            "INSERT(\"\u{3b1}\u{3b3}\", \"\u{3b2}\", 1)",
+            "\"\u{3b1}\u{3b2}\u{3b3}\"",
+        ),
+        (
+            "WSTRING",
+            "DELETE(\"\u{3b1}\u{3b2}\u{3b3}\", 1, 2)",
+            "\"\u{3b1}\u{3b3}\"",
+        ),
+        (
+            "WSTRING",
+            "REPLACE(\"\u{3b1}\u{3b2}\u{3b3}\", \"xy\", 1, 3)",
+            "\"\u{3b1}\u{3b2}xy\"",
+        ),
         ("INT", "FIND(\"\u{3b1}\u{3b2}\u{3b3}\", \"\u{3b3}\")", "3"),
         ("INT", "FIND(\"\u{3b1}\u{3b2}\u{3b3}\", \"z\")", "0"),
         ("BOOL", "\"\u{3b1}\" > \"z\"", "1"),
@@ -198,15 +234,27 @@ fn wstring_literals_functions_and_narrowing_give_the_iec_values() {
         // to STRING: the UTF-8 of the characters (LEN counts bytes), a surrogate pair is one character
         ("STRING", "WSTRING_TO_STRING(\"abc\")", "\"abc\""),
         ("INT", "LEN(WSTRING_TO_STRING(\"caf\u{e9}\"))", "5"),
-        ("STRING", "WSTRING_TO_STRING(\"\u{3b1}=1\")", "\"\u{3b1}=1\""),
-        ("STRING", "WSTRING_TO_STRING(\"x\u{1f600}y\")", "\"x\u{1f600}y\""),
+        (
+            "STRING",
+            "WSTRING_TO_STRING(\"\u{3b1}=1\")",
+            "\"\u{3b1}=1\"",
+        ),
+        (
+            "STRING",
+            "WSTRING_TO_STRING(\"x\u{1f600}y\")",
+            "\"x\u{1f600}y\"",
+        ),
         ("INT", "LEN(WSTRING_TO_STRING(\"x\u{1f600}y\"))", "6"),
         // to WSTRING: each UTF-8 character is one character ($E9 is U+00E9 in a STRING literal)
         ("WSTRING", "STRING_TO_WSTRING('caf$E9')", "\"caf\u{e9}\""),
         ("INT", "LEN(STRING_TO_WSTRING('caf$E9'))", "4"),
         ("INT", "LEN(STRING_TO_WSTRING('$FF$01'))", "2"),
         ("INT", "LEN(STRING_TO_WSTRING('\u{1f600}'))", "2"),
-        ("WSTRING", "WSTRING_TO_WSTRING(STRING_TO_WSTRING(WSTRING_TO_STRING(\"\u{4e16}\")))", "\"\u{4e16}\""),
+        (
+            "WSTRING",
+            "WSTRING_TO_WSTRING(STRING_TO_WSTRING(WSTRING_TO_STRING(\"\u{4e16}\")))",
+            "\"\u{4e16}\"",
+        ),
         ("WSTRING", "STRING_TO_WSTRING('')", "\"\""),
         // numbers and times to WSTRING and back
         ("WSTRING", "INT_TO_WSTRING(-32768)", "\"-32768\""),
@@ -219,7 +267,11 @@ fn wstring_literals_functions_and_narrowing_give_the_iec_values() {
         ("TIME", "WSTRING_TO_TIME(\"T#2s\")", "T#2000ms"),
         ("BOOL", "WSTRING_TO_BOOL(\"TRUE\")", "1"),
         // capacity of the destination applies when the value is stored
-        ("WSTRING[3]", "\"\u{3b1}\u{3b2}\u{3b3}\u{3b4}\"", "\"\u{3b1}\u{3b2}\u{3b3}\""),
+        (
+            "WSTRING[3]",
+            "\"\u{3b1}\u{3b2}\u{3b3}\u{3b4}\"",
+            "\"\u{3b1}\u{3b2}\u{3b3}\"",
+        ),
     ];
     let mut decl = String::new();
     let mut body = String::new();

@@ -410,7 +410,6 @@ static void civil_from_days(int64_t z, int64_t *y, unsigned *m, unsigned *d) {
     *y += *m <= 2;
 }
 
-#define LADDERC_NS_PER_DAY 86400000000000LL
 /* Days of a valid date (0 and *ok = 0 otherwise; DT must stay inside int64 nanoseconds). */
 static int64_t date_days(int64_t y, int64_t m, int64_t d, int *ok) {
     static const unsigned mdays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};

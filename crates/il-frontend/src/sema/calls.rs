@@ -655,7 +655,14 @@ impl Body<'_, '_> {
 
     /// A typed name (`ADD_INT`): the generic type the call was instantiated with must be that type
     /// (an untyped literal takes it), E1410 otherwise.
-    fn typed_call(&mut self, span: Span, name: &ast::Ident, t: Type, rec: &mut Rec, result: Ty) -> Ty {
+    fn typed_call(
+        &mut self,
+        span: Span,
+        name: &ast::Ident,
+        t: Type,
+        rec: &mut Rec,
+        result: Ty,
+    ) -> Ty {
         let Some((inst, res)) = rec.callee_tys.clone() else {
             return result;
         };

@@ -521,9 +521,7 @@ impl Body<'_, '_> {
         self.note_name(base.span, NameRef::Var(index));
         Some(Place {
             ty: g.ty,
-            read_only: g
-                .constant
-                .then_some(ReadOnly::Constant { decl: g.span }),
+            read_only: g.constant.then_some(ReadOnly::Constant { decl: g.span }),
         })
     }
 
