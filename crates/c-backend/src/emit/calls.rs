@@ -285,10 +285,12 @@ impl Gen<'_> {
                 let Some(res) = self.std_call(span, name, &ty, &vals, &tys, &result) else {
                     return;
                 };
-                let res = convert(&res, &result, &after);
+                let (en, eno) = self.en_eno(b, args);
+                let res = self.gated(en.as_deref(), convert(&res, &result, &after), &after, span);
                 if let Some(cr) = self.cr(b, &after, span) {
                     b.line(&format!("{cr} = {res};"));
                 }
+                self.store_eno(b, en.as_deref(), eno);
             }
             Some(Callee::Conversion { kind, from, to, .. }) => {
                 let Some(binding) = info.args.iter().find(|a| !a.output) else {
@@ -301,13 +303,57 @@ impl Gen<'_> {
                     return;
                 };
                 let after = info.cr_after.clone().unwrap_or(to.clone());
-                let res = convert(&res, &to, &after);
+                let (en, eno) = self.en_eno(b, args);
+                let res = self.gated(en.as_deref(), convert(&res, &to, &after), &after, span);
                 if let Some(cr) = self.cr(b, &after, span) {
                     b.line(&format!("{cr} = {res};"));
                 }
+                self.store_eno(b, en.as_deref(), eno);
             }
             Some(Callee::UserFunction(id)) => self.user_function_call(b, i, info, id, args),
             _ => self.unsupported(span, "this function call"),
+        }
+    }
+
+    /// `EN := e` and `ENO => v` of a formal call of a standard function or conversion: the value of
+    /// EN (None: not given, the function runs) and the place of ENO.
+    fn en_eno(&mut self, b: &Body, args: &CallArgs) -> (Option<String>, Option<Place>) {
+        let CallArgs::Formal(fargs) = args else {
+            return (None, None);
+        };
+        let mut en = None;
+        let mut eno = None;
+        for fa in fargs {
+            match (&fa.dir, &fa.value) {
+                (ArgDir::Input, o) if fa.name.is("EN") => {
+                    en = self.value(b.scope, o, &Type::BOOL);
+                }
+                (ArgDir::Output { .. }, Operand::Var(r)) if fa.name.is("ENO") => {
+                    eno = self.place(b.scope, r);
+                }
+                _ => {}
+            }
+        }
+        (en, eno)
+    }
+
+    /// IEC 61131-3: a function whose EN is FALSE is not executed and gives its type's initial value
+    /// (as matiec does); the standard functions have no side effects, so only the result is chosen.
+    fn gated(&mut self, en: Option<&str>, res: String, ty: &Type, span: Span) -> String {
+        match en {
+            Some(e) => {
+                let d = self.default_value(ty, None, span);
+                format!("(({e}) ? ({res}) : ({d}))")
+            }
+            None => res,
+        }
+    }
+
+    /// ENO is EN (TRUE without EN): a standard function or conversion that runs always completes.
+    fn store_eno(&mut self, b: &mut Body, en: Option<&str>, eno: Option<Place>) {
+        if let Some(p) = eno {
+            let stmt = self.store(&p, &format!("((IEC_BOOL)({}))", en.unwrap_or("1")));
+            b.line(&stmt);
         }
     }
 

@@ -382,6 +382,17 @@ impl Body<'_, '_> {
             CallArgs::Formal(fargs) => {
                 let mut input = None;
                 for (k, fa) in fargs.iter().enumerate() {
+                    // EN/ENO, as every function has (Beremiz writes them for LD networks)
+                    if fa.name.is("ENO") && matches!(fa.dir, ArgDir::Output { .. }) {
+                        let t = self.write_place(&fa.value, "=>");
+                        self.coerce_store(&Ty::Known(Type::BOOL), &t, fa.value.span(), fa.span);
+                        continue;
+                    }
+                    if fa.name.is("EN") && fa.dir == ArgDir::Input {
+                        let t = self.read_operand(&fa.value);
+                        self.check_bool(&t, fa.value.span(), "EN");
+                        continue;
+                    }
                     if fa.dir == ArgDir::Input && fa.name.is("IN") {
                         input = Some((
                             self.read_operand(&fa.value),

@@ -432,7 +432,7 @@ fn conv_type(name: &str) -> Option<Type> {
 }
 
 /// Whether `X_TO_Y` exists: numbers, bit strings and BOOL convert among themselves; TIME/LTIME convert
-/// with each other and with integers and reals; DT converts to DATE and TOD; everything elementary
+/// with each other and with integers, reals, bit strings and BOOL (milliseconds); DT converts to DATE and TOD; everything elementary
 /// converts to and from STRING/WSTRING.
 pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
     let (f, t) = (from.elementary(), to.elementary());
@@ -442,9 +442,10 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
         (Some(_), None) => to.is_string(),
         (Some(f), Some(t)) => {
             let plain = |e: E| e.is_numeric() || e.is_bit();
+            // durations and bit strings too (TIME_TO_DWORD, DWORD_TO_TIME: matiec, CODESYS, OSCAT)
             (plain(f) && plain(t))
-                || (f.is_duration() && (t.is_duration() || t.is_numeric()))
-                || (t.is_duration() && f.is_numeric())
+                || (f.is_duration() && (t.is_duration() || plain(t)))
+                || (t.is_duration() && plain(f))
                 || (f == E::Dt && matches!(t, E::Date | E::Tod | E::Dt))
                 || (f == t)
         }
