@@ -410,6 +410,51 @@ static void civil_from_days(int64_t z, int64_t *y, unsigned *m, unsigned *d) {
     *y += *m <= 2;
 }
 
+/* Days of a valid date (0 and *ok = 0 otherwise; DT must stay inside int64 nanoseconds). */
+static int64_t date_days(int64_t y, int64_t m, int64_t d, int *ok) {
+    static const unsigned mdays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    int leap;
+    int64_t days;
+    *ok = 0;
+    if (y < 1677 || y > 2262 || m < 1 || m > 12 || d < 1) return 0;
+    leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+    if (d > (int64_t)mdays[m - 1] + (m == 2 && leap)) return 0;
+    days = days_from_civil(y, (unsigned)m, (unsigned)d);
+    if (days < -106751 || days > 106750) return 0;
+    *ok = 1;
+    return days;
+}
+static int64_t tod_ns(int64_t h, int64_t mi, int64_t s, int64_t ms, int *ok) {
+    *ok = h >= 0 && h <= 23 && mi >= 0 && mi <= 59 && s >= 0 && s <= 59 && ms >= 0 && ms <= 999;
+    if (!*ok) return 0;
+    return ((h * 60 + mi) * 60 + s) * 1000000000LL + ms * 1000000LL;
+}
+IEC_DATE ladderc_concat_date(int64_t year, int64_t month, int64_t day) {
+    int ok;
+    int64_t days = date_days(year, month, day, &ok);
+    if (!ok) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    return days * LADDERC_NS_PER_DAY;
+}
+IEC_TOD ladderc_concat_tod(int64_t hour, int64_t minute, int64_t second, int64_t ms) {
+    int ok;
+    int64_t ns = tod_ns(hour, minute, second, ms, &ok);
+    if (!ok) ladderc_errors |= LADDERC_ERR_RANGE;
+    return ns;
+}
+IEC_DT ladderc_concat_dt(int64_t year, int64_t month, int64_t day, int64_t hour, int64_t minute, int64_t second,
+                         int64_t ms) {
+    int ok_d, ok_t;
+    int64_t days = date_days(year, month, day, &ok_d), ns = tod_ns(hour, minute, second, ms, &ok_t);
+    if (!ok_d || !ok_t) { ladderc_errors |= LADDERC_ERR_RANGE; return 0; }
+    /* |days| <= 106751 and ns < one day: inside int64 */
+    return days * LADDERC_NS_PER_DAY + ns;
+}
+IEC_INT ladderc_day_of_week(int64_t date) {
+    int64_t days = date / LADDERC_NS_PER_DAY - (date % LADDERC_NS_PER_DAY < 0);
+    int64_t w = (days + 4) % 7; /* 1970-01-01 was a Thursday */
+    return (IEC_INT)(w < 0 ? w + 7 : w);
+}
+
 static int parse_date(const char **sp, int64_t *days) {
     int y, m, d, n = 0;
     if (sscanf(*sp, "%4d-%2d-%2d%n", &y, &m, &d, &n) != 3 || m < 1 || m > 12 || d < 1 || d > 31) return -1;
@@ -797,6 +842,82 @@ IEC_STRING ladderc_str_of(int type, const void *value) {
     if (type == LADDERC_T_STRING) return *(const IEC_STRING *)value;
     ladderc_format_value((ladderc_type)type, value, buf, sizeof buf);
     return ladderc_str_lit(buf, strlen(buf));
+}
+
+/* One UTF-8 sequence at t[0..n): its code point and length, or 0 when malformed (overlong,
+ * surrogate, beyond U+10FFFF, cut short). */
+static int utf8_one(const unsigned char *t, size_t n, uint32_t *cp) {
+    static const uint32_t min[4] = {0, 0x80, 0x800, 0x10000};
+    int more, j;
+    uint32_t c = t[0];
+    if (c < 0x80) { *cp = c; return 1; }
+    if ((c & 0xE0) == 0xC0) { c &= 0x1Fu; more = 1; }
+    else if ((c & 0xF0) == 0xE0) { c &= 0x0Fu; more = 2; }
+    else if ((c & 0xF8) == 0xF0) { c &= 0x07u; more = 3; }
+    else return 0;
+    if ((size_t)more >= n) return 0;
+    for (j = 1; j <= more; j++) {
+        if ((t[j] & 0xC0) != 0x80) return 0;
+        c = (c << 6) | (t[j] & 0x3Fu);
+    }
+    if (c < min[more] || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return 0;
+    *cp = c;
+    return more + 1;
+}
+
+IEC_WSTRING ladderc_wstr_of_str(IEC_STRING s) {
+    IEC_WSTRING w;
+    size_t i = 0, n = s.len > LADDERC_STRING_CAP ? LADDERC_STRING_CAP : s.len;
+    uint16_t k = 0;
+    const unsigned char *t = (const unsigned char *)s.data;
+    while (i < n) {
+        uint32_t cp;
+        int used = utf8_one(t + i, n - i, &cp);
+        if (!used) { cp = t[i]; used = 1; } /* a byte that is no UTF-8: its Latin-1 character */
+        if (k + (cp >= 0x10000 ? 2 : 1) > LADDERC_STRING_CAP) { ladderc_errors |= LADDERC_ERR_STRING; break; }
+        if (cp >= 0x10000) {
+            cp -= 0x10000;
+            w.data[k++] = (uint16_t)(0xD800 + (cp >> 10));
+            w.data[k++] = (uint16_t)(0xDC00 + (cp & 0x3FF));
+        } else {
+            w.data[k++] = (uint16_t)cp;
+        }
+        i += (size_t)used;
+    }
+    w.data[k] = 0;
+    w.len = k;
+    return w;
+}
+
+IEC_STRING ladderc_str_of_wstr(IEC_WSTRING w) {
+    IEC_STRING s;
+    uint16_t i, o = 0, n = w.len > LADDERC_STRING_CAP ? LADDERC_STRING_CAP : w.len;
+    for (i = 0; i < n; i++) {
+        uint32_t cp = w.data[i];
+        unsigned need;
+        if (cp >= 0xD800 && cp <= 0xDBFF && i + 1 < n && w.data[i + 1] >= 0xDC00 && w.data[i + 1] <= 0xDFFF) {
+            cp = 0x10000 + ((cp - 0xD800) << 10) + (uint32_t)(w.data[i + 1] - 0xDC00);
+            i++;
+        } else if (cp >= 0xD800 && cp <= 0xDFFF) {
+            ladderc_errors |= LADDERC_ERR_RANGE; /* an unpaired surrogate is no character */
+            cp = '?';
+        }
+        need = cp < 0x80 ? 1u : cp < 0x800 ? 2u : cp < 0x10000 ? 3u : 4u;
+        if (o + need > LADDERC_STRING_CAP) { ladderc_errors |= LADDERC_ERR_STRING; break; }
+        if (need == 1) s.data[o++] = (char)cp;
+        else if (need == 2) {
+            s.data[o++] = (char)(0xC0 | (cp >> 6)); s.data[o++] = (char)(0x80 | (cp & 0x3F));
+        } else if (need == 3) {
+            s.data[o++] = (char)(0xE0 | (cp >> 12)); s.data[o++] = (char)(0x80 | ((cp >> 6) & 0x3F));
+            s.data[o++] = (char)(0x80 | (cp & 0x3F));
+        } else {
+            s.data[o++] = (char)(0xF0 | (cp >> 18)); s.data[o++] = (char)(0x80 | ((cp >> 12) & 0x3F));
+            s.data[o++] = (char)(0x80 | ((cp >> 6) & 0x3F)); s.data[o++] = (char)(0x80 | (cp & 0x3F));
+        }
+    }
+    s.data[o] = '\0';
+    s.len = o;
+    return s;
 }
 
 /* The string's text without leading and trailing spaces, NUL-terminated, in buf. */

@@ -283,6 +283,17 @@ static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi) {
     return (size_t)((uint64_t)i - (uint64_t)lo);
 }
 
+/* Edition 3 date functions: CONCAT_DATE(year, month, day), CONCAT_TOD(hour, minute, second, ms),
+ * CONCAT_DT(the seven parts); a part out of its range (month 1..12, day 1..days of that month, hour 0..23,
+ * minute and second 0..59, ms 0..999, a date outside 1677-09-22 .. 2262-04-10, where DT fits int64
+ * nanoseconds) gives 0 and
+ * sets LADDERC_ERR_RANGE. DAY_OF_WEEK: 0 Sunday ... 6 Saturday. */
+IEC_DATE ladderc_concat_date(int64_t year, int64_t month, int64_t day);
+IEC_TOD ladderc_concat_tod(int64_t hour, int64_t minute, int64_t second, int64_t ms);
+IEC_DT ladderc_concat_dt(int64_t year, int64_t month, int64_t day, int64_t hour, int64_t minute, int64_t second,
+                         int64_t ms);
+IEC_INT ladderc_day_of_week(int64_t date);
+
 /* ------------------------------------------------------------------ strings */
 void ladderc_string_set(IEC_STRING *dst, const char *src, size_t len, unsigned cap);
 void ladderc_string_copy(IEC_STRING *dst, const IEC_STRING *src, unsigned cap);
@@ -299,6 +310,13 @@ IEC_WSTRING ladderc_wstr_cap(IEC_WSTRING s, unsigned cap);
 int ladderc_wstr_cmpv(IEC_WSTRING a, IEC_WSTRING b);
 /* *_TO_STRING: the value's text as the trace prints it (BOOL TRUE/FALSE, T#..., shortest REAL). */
 IEC_STRING ladderc_str_of(int type, const void *value);
+/* STRING_TO_WSTRING: a STRING holds UTF-8 text (as ladderc stores literals and reads stimuli); each
+ * UTF-8 character becomes one character (two UTF-16 units beyond U+FFFF), a byte that is not UTF-8 the
+ * Latin-1 character of its code. WSTRING_TO_STRING: UTF-8 of the characters; an unpaired surrogate
+ * becomes '?' and sets LADDERC_ERR_RANGE. Beyond the capacity: cut at a character, LADDERC_ERR_STRING.
+ * *_TO_WSTRING and WSTRING_TO_* go through STRING. */
+IEC_WSTRING ladderc_wstr_of_str(IEC_STRING s);
+IEC_STRING ladderc_str_of_wstr(IEC_WSTRING w);
 /* STRING_TO_*: text after trimming spaces; a malformed text gives 0 (FALSE) and LADDERC_ERR_RANGE. */
 int64_t ladderc_str_to_int(IEC_STRING s);
 uint64_t ladderc_str_to_uint(IEC_STRING s);

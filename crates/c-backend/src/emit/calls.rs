@@ -285,10 +285,12 @@ impl Gen<'_> {
                 let Some(res) = self.std_call(span, name, &ty, &vals, &tys, &result) else {
                     return;
                 };
-                let res = convert(&res, &result, &after);
+                let (en, eno) = self.en_eno(b, args);
+                let res = self.gated(en.as_deref(), convert(&res, &result, &after), &after, span);
                 if let Some(cr) = self.cr(b, &after, span) {
                     b.line(&format!("{cr} = {res};"));
                 }
+                self.store_eno(b, en.as_deref(), eno);
             }
             Some(Callee::Conversion { kind, from, to, .. }) => {
                 let Some(binding) = info.args.iter().find(|a| !a.output) else {
@@ -301,13 +303,57 @@ impl Gen<'_> {
                     return;
                 };
                 let after = info.cr_after.clone().unwrap_or(to.clone());
-                let res = convert(&res, &to, &after);
+                let (en, eno) = self.en_eno(b, args);
+                let res = self.gated(en.as_deref(), convert(&res, &to, &after), &after, span);
                 if let Some(cr) = self.cr(b, &after, span) {
                     b.line(&format!("{cr} = {res};"));
                 }
+                self.store_eno(b, en.as_deref(), eno);
             }
             Some(Callee::UserFunction(id)) => self.user_function_call(b, i, info, id, args),
             _ => self.unsupported(span, "this function call"),
+        }
+    }
+
+    /// `EN := e` and `ENO => v` of a formal call of a standard function or conversion: the value of
+    /// EN (None: not given, the function runs) and the place of ENO.
+    fn en_eno(&mut self, b: &Body, args: &CallArgs) -> (Option<String>, Option<Place>) {
+        let CallArgs::Formal(fargs) = args else {
+            return (None, None);
+        };
+        let mut en = None;
+        let mut eno = None;
+        for fa in fargs {
+            match (&fa.dir, &fa.value) {
+                (ArgDir::Input, o) if fa.name.is("EN") => {
+                    en = self.value(b.scope, o, &Type::BOOL);
+                }
+                (ArgDir::Output { .. }, Operand::Var(r)) if fa.name.is("ENO") => {
+                    eno = self.place(b.scope, r);
+                }
+                _ => {}
+            }
+        }
+        (en, eno)
+    }
+
+    /// IEC 61131-3: a function whose EN is FALSE is not executed and gives its type's initial value
+    /// (as matiec does); the standard functions have no side effects, so only the result is chosen.
+    fn gated(&mut self, en: Option<&str>, res: String, ty: &Type, span: Span) -> String {
+        match en {
+            Some(e) => {
+                let d = self.default_value(ty, None, span);
+                format!("(({e}) ? ({res}) : ({d}))")
+            }
+            None => res,
+        }
+    }
+
+    /// ENO is EN (TRUE without EN): a standard function or conversion that runs always completes.
+    fn store_eno(&mut self, b: &mut Body, en: Option<&str>, eno: Option<Place>) {
+        if let Some(p) = eno {
+            let stmt = self.store(&p, &format!("((IEC_BOOL)({}))", en.unwrap_or("1")));
+            b.line(&stmt);
         }
     }
 
@@ -471,6 +517,23 @@ impl Gen<'_> {
             n if super::datetime::is_datetime_function(n) => {
                 self.datetime_call(span, n, vals, tys, result)
             }
+            "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK" => {
+                let n = match name {
+                    "CONCAT_DATE" => 3,
+                    "CONCAT_TOD" => 4,
+                    "CONCAT_DT" => 7,
+                    _ => 1,
+                };
+                if vals.len() != n {
+                    return None;
+                }
+                let args: Vec<String> = vals.iter().map(|v| format!("(int64_t)({v})")).collect();
+                Some(format!(
+                    "ladderc_{}({})",
+                    name.to_ascii_lowercase(),
+                    args.join(", ")
+                ))
+            }
             "ADD" | "MUL" | "SUB" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
                 if !need(2) {
                     return None;
@@ -621,16 +684,27 @@ impl Gen<'_> {
         from: &Type,
         to: &Type,
     ) -> Option<String> {
+        // WSTRING goes through STRING (UTF-8 text; runtime `ladderc_wstr_of_str`/`ladderc_str_of_wstr`).
+        let narrow = |v: &str| format!("ladderc_str_of_wstr({v})");
+        let widen = |v: String| format!("ladderc_wstr_of_str({v})");
         let (f, t) = match (from.elementary(), to.elementary()) {
             (Some(f), Some(t)) => (f, t),
-            (Some(f), None) if matches!(to, Type::String { wide: false, .. }) => {
+            (Some(f), None) if to.is_string() && !to.is_error() => {
                 let ct = ctypes::elementary(f);
-                return Some(format!(
-                    "ladderc_str_of({}, &({ct}){{{v}}})",
-                    ctypes::type_tag(f)
-                ));
+                let text = format!("ladderc_str_of({}, &({ct}){{{v}}})", ctypes::type_tag(f));
+                return Some(if matches!(to, Type::String { wide: true, .. }) {
+                    widen(text)
+                } else {
+                    text
+                });
             }
-            (None, Some(t)) if matches!(from, Type::String { wide: false, .. }) => {
+            (None, Some(t)) if from.is_string() && !from.is_error() => {
+                let s = if matches!(from, Type::String { wide: true, .. }) {
+                    narrow(v)
+                } else {
+                    v.to_string()
+                };
+                let v = s.as_str();
                 return Some(match t {
                     E::Bool => format!("ladderc_str_to_bool({v})"),
                     E::Real | E::Lreal => {
@@ -651,17 +725,13 @@ impl Gen<'_> {
                 });
             }
             (None, None) if from.is_string() && to.is_string() && !to.is_error() => {
-                if matches!(
-                    (from, to),
-                    (
-                        Type::String { wide: false, .. },
-                        Type::String { wide: false, .. }
-                    )
-                ) {
-                    return Some(convert(v, from, to));
-                }
-                self.unsupported(span, "WSTRING conversions");
-                return None;
+                let fw = matches!(from, Type::String { wide: true, .. });
+                let tw = matches!(to, Type::String { wide: true, .. });
+                return Some(match (fw, tw) {
+                    (false, true) => widen(v.to_string()),
+                    (true, false) => narrow(v),
+                    _ => convert(v, from, to),
+                });
             }
             _ => {
                 self.unsupported(span, "this conversion");

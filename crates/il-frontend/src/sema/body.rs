@@ -136,6 +136,9 @@ pub(super) struct Body<'a, 'd> {
     backward: HashMap<String, Vec<(Span, Option<Type>)>>,
     /// Position counter (statements in walk order).
     pos: usize,
+    /// The generic type a typed name fixes (`ADD_INT`: INT) for the call being instantiated: literals
+    /// alone take it instead of their default type.
+    pub(super) typed_generic: Option<Type>,
 }
 
 impl Analyzer<'_> {
@@ -154,6 +157,7 @@ impl Analyzer<'_> {
             backward: HashMap::new(),
             pos: 0,
             result_written: false,
+            typed_generic: None,
         };
         // Pass 1, silent: what the backward jumps bring. Without backward jumps it would find nothing
         // (its only other effects, name resolutions and `result_written`, pass 2 repeats), so it is

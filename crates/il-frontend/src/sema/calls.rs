@@ -188,7 +188,11 @@ impl Body<'_, '_> {
                 root = self.lits.unify(root, *v);
             }
             let real = self.lits.is_real(root);
-            if class == Class::AnyReal {
+            if let Some(t) = self.typed_generic.clone() {
+                // a typed name: typed_call binds the literals to its type (or reports E1410/E1017)
+                let _ = t;
+                Ty::Lit(root)
+            } else if class == Class::AnyReal {
                 let _ = self.lits.bind(root, &Type::LREAL);
                 Ty::Known(Type::LREAL)
             } else if real && !class.accepts_real_literal() {
@@ -298,8 +302,17 @@ impl Body<'_, '_> {
             .filter(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Function);
         let result = if let Some(conv) = stdlib::conversion(&name.name) {
             self.conversion_call(span, name, conv, args, formal, st, rec)
-        } else if let Some(f) = stdlib::function(&name.name) {
-            self.std_call(span, f, args, formal, st, rec)
+        } else if let Some(f) = stdlib::function(&name.name)
+            .filter(|f| user_fn.is_none() || f.name.eq_ignore_ascii_case(&name.name))
+        {
+            // a user FUNCTION named like a typed name (`MAX_REAL`) or `MULTIME` is the user's
+            self.typed_generic = stdlib::typed_name(&name.name).map(|(_, t)| t);
+            let result = self.std_call(span, f, args, formal, st, rec);
+            self.typed_generic = None;
+            match stdlib::typed_name(&name.name) {
+                Some((_, t)) => self.typed_call(span, name, t, rec, result),
+                _ => result,
+            }
         } else if let Some(id) = user_fn {
             self.user_call(span, id, args, formal, st, rec)
         } else {
@@ -369,6 +382,17 @@ impl Body<'_, '_> {
             CallArgs::Formal(fargs) => {
                 let mut input = None;
                 for (k, fa) in fargs.iter().enumerate() {
+                    // EN/ENO, as every function has (Beremiz writes them for LD networks)
+                    if fa.name.is("ENO") && matches!(fa.dir, ArgDir::Output { .. }) {
+                        let t = self.write_place(&fa.value, "=>");
+                        self.coerce_store(&Ty::Known(Type::BOOL), &t, fa.value.span(), fa.span);
+                        continue;
+                    }
+                    if fa.name.is("EN") && fa.dir == ArgDir::Input {
+                        let t = self.read_operand(&fa.value);
+                        self.check_bool(&t, fa.value.span(), "EN");
+                        continue;
+                    }
                     if fa.dir == ArgDir::Input && fa.name.is("IN") {
                         input = Some((
                             self.read_operand(&fa.value),
@@ -429,10 +453,31 @@ impl Body<'_, '_> {
                 }
             }
             None => match self.norm(&input) {
+                Ty::Known(t) if conv.from_class == Class::Any => {
+                    // TO_INT ...: the input's type, as X_TO_Y would take it
+                    let ok = match &conv.to {
+                        ConvTarget::Fixed(to) => stdlib::conversion_allowed(&t, to),
+                        ConvTarget::BcdOfWidth => false,
+                    };
+                    if ok || t.is_error() {
+                        Ty::Known(t)
+                    } else {
+                        let tn = self.a.type_name(&t);
+                        self.a
+                            .error(code::E1004, ispan, format!("{cname} cannot convert {tn}"))
+                            .label(format!("this is {tn}"))
+                            .hint("IEC 61131-3 defines no such conversion");
+                        Ty::ERROR
+                    }
+                }
                 Ty::Known(t) if conv.from_class.contains(&t) => Ty::Known(t),
                 Ty::Lit(v) => {
-                    let t = if conv.from_class == Class::AnyReal {
+                    let t = if conv.from_class == Class::AnyReal
+                        || (conv.from_class == Class::Any && self.lits.is_real(v))
+                    {
                         Type::LREAL
+                    } else if conv.from_class == Class::Any {
+                        Type::Elementary(Elementary::Lint)
                     } else {
                         Type::Elementary(Elementary::Dword)
                     };
@@ -617,6 +662,57 @@ impl Body<'_, '_> {
         });
         rec.callee_tys = Some((inst.t.clone(), inst.result.clone()));
         inst.result
+    }
+
+    /// A typed name (`ADD_INT`): the generic type the call was instantiated with must be that type
+    /// (an untyped literal takes it), E1410 otherwise.
+    fn typed_call(
+        &mut self,
+        span: Span,
+        name: &ast::Ident,
+        t: Type,
+        rec: &mut Rec,
+        result: Ty,
+    ) -> Ty {
+        let Some((inst, res)) = rec.callee_tys.clone() else {
+            return result;
+        };
+        let inst = self.norm(&inst);
+        match &inst {
+            Ty::Known(k) if k.is_error() => return result,
+            Ty::Known(k) if !same_type(k, &t) => {
+                let (got, want) = (self.a.type_name(k), self.a.type_name(&t));
+                self.a
+                    .error(
+                        code::E1410,
+                        span,
+                        format!("`{}` takes {want} inputs, not {got}", name.name),
+                    )
+                    .label(format!("the inputs are {got}"))
+                    .hint(format!(
+                        "convert the inputs to {want}, or call the overloaded function without the type in its name"
+                    ));
+                return Ty::ERROR;
+            }
+            Ty::Known(_) => return result,
+            Ty::Lit(_) => {}
+        }
+        // untyped literals only: they become the named type
+        let fits = self.coerce(&inst, &t, span, |b, from, to| {
+            b.a.error(
+                code::E1410,
+                span,
+                format!("`{}` takes {to} inputs, not {from}", name.name),
+            )
+            .label(format!("the inputs are {from}"))
+            .hint("write literals of the named type");
+        });
+        if !fits {
+            return Ty::ERROR;
+        }
+        let (inst, res) = (self.norm(&inst), self.norm(&res));
+        rec.callee_tys = Some((inst, res.clone()));
+        res
     }
 
     fn user_call(
@@ -1098,5 +1194,13 @@ fn string_generic(f: &StdFunction, t: Type, known: &[(Type, Span)]) -> Type {
     Type::String {
         wide,
         len: len.clamp(1, DEFAULT_STRING_LEN),
+    }
+}
+
+/// The type a typed function name denotes: strings of any length are `STRING` (or `WSTRING`).
+fn same_type(a: &Type, b: &Type) -> bool {
+    match (a, b) {
+        (Type::String { wide: x, .. }, Type::String { wide: y, .. }) => x == y,
+        _ => a == b,
     }
 }

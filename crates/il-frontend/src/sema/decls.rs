@@ -570,29 +570,7 @@ impl Analyzer<'_> {
 
     /// Finds the global a `VAR_EXTERNAL` refers to and checks the declarations agree.
     fn bind_external(&mut self, v: &Variable) -> Option<GlobalRef> {
-        let key = v.name.to_ascii_uppercase();
-        let mut found = self.free_globals.get(&key).map(|&i| GlobalRef::Free(i));
-        if found.is_none() {
-            'search: for (ci, c) in self.model.configurations.iter().enumerate() {
-                if let Some(i) = c.globals.iter().position(|g| g.is(&v.name)) {
-                    found = Some(GlobalRef::Configuration {
-                        config: ci,
-                        index: i,
-                    });
-                    break;
-                }
-                for (ri, r) in c.resources.iter().enumerate() {
-                    if let Some(i) = r.globals.iter().position(|g| g.is(&v.name)) {
-                        found = Some(GlobalRef::Resource {
-                            config: ci,
-                            resource: ri,
-                            index: i,
-                        });
-                        break 'search;
-                    }
-                }
-            }
-        }
+        let found = self.find_global(&v.name);
         let Some(r) = found else {
             self.error(code::E1022, v.span, format!("no global variable `{}`", v.name))
                 .label("declared VAR_EXTERNAL here")
@@ -621,6 +599,33 @@ impl Analyzer<'_> {
             .hint("write VAR_EXTERNAL CONSTANT");
         }
         Some(r)
+    }
+
+    /// The global variable of a name: outside any configuration first, then of each configuration and
+    /// its resources in source order.
+    pub(super) fn find_global(&self, name: &str) -> Option<GlobalRef> {
+        let key = name.to_ascii_uppercase();
+        if let Some(&i) = self.free_globals.get(&key) {
+            return Some(GlobalRef::Free(i));
+        }
+        for (ci, c) in self.model.configurations.iter().enumerate() {
+            if let Some(i) = c.globals.iter().position(|g| g.is(name)) {
+                return Some(GlobalRef::Configuration {
+                    config: ci,
+                    index: i,
+                });
+            }
+            for (ri, r) in c.resources.iter().enumerate() {
+                if let Some(i) = r.globals.iter().position(|g| g.is(name)) {
+                    return Some(GlobalRef::Resource {
+                        config: ci,
+                        resource: ri,
+                        index: i,
+                    });
+                }
+            }
+        }
+        None
     }
 
     fn declare_resource(&mut self, ci: usize, ri: usize, r: &ast::Resource) {

@@ -11,7 +11,7 @@ use super::stdlib::{fb_params, Dir};
 use super::typing::{assignable, literal_type, BindError, LitType};
 use crate::ast::{self, Accessor, Area, Operand, PouKind, VarKind, VarRef};
 use crate::Span;
-use diagnostics::{code, Code};
+use diagnostics::{code, Code, Diagnostic, Severity};
 
 /// Why a variable cannot be written (messages are built only when a write is reported).
 #[derive(Debug, Clone, Copy)]
@@ -452,6 +452,9 @@ impl Body<'_, '_> {
                 });
             }
         }
+        if let Some(place) = self.implicit_external(base) {
+            return Some(place);
+        }
         let hint = self.similar_name(&base.name);
         self.a
             .error(
@@ -462,6 +465,64 @@ impl Body<'_, '_> {
             .label("not declared in this POU")
             .hint(hint);
         None
+    }
+
+    /// A configuration or resource global used without a `VAR_EXTERNAL` declaration, as CODESYS and
+    /// TwinCAT allow (a global variable list is visible in every POU). IEC 61131-3 requires the
+    /// declaration; ladderc accepts the use and declares the external itself: the POU gets a
+    /// `VAR_EXTERNAL` of the global's name and type (CONSTANT when the global is), and note W1410 says
+    /// so once per POU and global.
+    fn implicit_external(&mut self, base: &ast::Ident) -> Option<Place> {
+        let r = self.a.find_global(&base.name)?;
+        let g = self.a.model.global(r).clone();
+        let pou_name = self.pou().name.clone();
+        let kind = self.pou().kind;
+        let pou = &mut self.a.model.pous[self.pou.0 as usize];
+        let index = pou.vars.len();
+        let mut vars = std::mem::take(&mut pou.vars);
+        vars.push(Variable {
+            name: g.name.clone(),
+            span: base.span,
+            kind: VarKind::External,
+            ty: g.ty.clone(),
+            constant: g.constant,
+            retain: false,
+            location: None,
+            init: None,
+            edge: None,
+        });
+        pou.set_vars(vars);
+        pou.externals.push((index, r));
+        let what = match kind {
+            PouKind::Program => "program",
+            PouKind::FunctionBlock => "function block",
+            PouKind::Function => "function",
+        };
+        let ty = self.a.type_name(&g.ty);
+        let constant = if g.constant { " CONSTANT" } else { "" };
+        // given in the silent pass too: the declaration made here is found by every later use
+        self.a.diags.push(
+            Diagnostic::new(
+                code::W1410,
+                Severity::Note,
+                format!(
+                    "global `{}` is used in {what} `{pou_name}` without a VAR_EXTERNAL declaration",
+                    g.name
+                ),
+            )
+            .at(base.span)
+            .with_primary_label("used here as a global")
+            .with_label(g.span, "global declared here")
+            .with_hint(format!(
+                "CODESYS and TwinCAT allow this; IEC 61131-3 needs `VAR_EXTERNAL{constant} {} : {ty}; END_VAR` in the POU",
+                g.name
+            )),
+        );
+        self.note_name(base.span, NameRef::Var(index));
+        Some(Place {
+            ty: g.ty,
+            read_only: g.constant.then_some(ReadOnly::Constant { decl: g.span }),
+        })
     }
 
     /// Records what a name refers to (in the reporting pass only).

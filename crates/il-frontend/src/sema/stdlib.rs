@@ -258,11 +258,78 @@ pub static FUNCTIONS: &[StdFunction] = &[
     f("DIV_TIME", TIME_NUM, false, Ret::Fixed(E::Time), "TIME / ANY_NUM (0 for a zero divisor)"),
     f("DIV_LTIME", LTIME_NUM, false, Ret::Fixed(E::Ltime), "LTIME / ANY_NUM (0 for a zero divisor)"),
     f("CONCAT_DATE_TOD", &fx2(E::Date, E::Tod), false, Ret::Fixed(E::Dt), "the DT of a DATE at a TOD"),
+    // edition 3 (Table 37): dates and times from their parts; an invalid part gives 0 and the range flag
+    f(
+        "CONCAT_DATE",
+        &[p("YEAR", Own(AnyInt)), p("MONTH", Own(AnyInt)), p("DAY", Own(AnyInt))],
+        false,
+        Ret::Fixed(E::Date),
+        "the DATE of a year, month (1..12) and day (1..31)",
+    ),
+    f(
+        "CONCAT_TOD",
+        &[p("HOUR", Own(AnyInt)), p("MINUTE", Own(AnyInt)), p("SECOND", Own(AnyInt)), p("MILLISECOND", Own(AnyInt))],
+        false,
+        Ret::Fixed(E::Tod),
+        "the TOD of an hour (0..23), minute, second (0..59) and millisecond (0..999)",
+    ),
+    f(
+        "CONCAT_DT",
+        &[
+            p("YEAR", Own(AnyInt)),
+            p("MONTH", Own(AnyInt)),
+            p("DAY", Own(AnyInt)),
+            p("HOUR", Own(AnyInt)),
+            p("MINUTE", Own(AnyInt)),
+            p("SECOND", Own(AnyInt)),
+            p("MILLISECOND", Own(AnyInt)),
+        ],
+        false,
+        Ret::Fixed(E::Dt),
+        "the DT of CONCAT_DATE and CONCAT_TOD's parts",
+    ),
+    f("DAY_OF_WEEK", &[p("IN", Fixed(E::Date))], false, Ret::Fixed(E::Int), "the day of the week of a DATE: 0 Sunday ... 6 Saturday"),
 ];
 
-/// Looks up a standard function (not a conversion) by name, case-insensitively.
+/// Looks up a standard function (not a conversion) by name, case-insensitively. Also the edition 2
+/// spellings `MULTIME`/`DIVTIME` (edition 3: `MUL_TIME`/`DIV_TIME`) and the typed names of the
+/// overloaded functions (`ADD_INT`, `MAX_REAL`, `SEL_TIME`, `MUX_INT_DINT`; see [`typed_name`]), which
+/// give the generic function.
 pub fn function(name: &str) -> Option<&'static StdFunction> {
-    FUNCTIONS.iter().find(|f| f.name.eq_ignore_ascii_case(name))
+    let exact = |n: &str| FUNCTIONS.iter().find(|f| f.name.eq_ignore_ascii_case(n));
+    if let Some(f) = exact(name) {
+        return Some(f);
+    }
+    if name.eq_ignore_ascii_case("MULTIME") {
+        return exact("MUL_TIME");
+    }
+    if name.eq_ignore_ascii_case("DIVTIME") {
+        return exact("DIV_TIME");
+    }
+    typed_name(name).map(|(f, _)| f)
+}
+
+/// A typed name of an overloaded standard function (IEC 61131-3 edition 2, 2.5.1.4; the names matiec
+/// and CODESYS read): `ADD_INT` is ADD with its generic type T fixed to INT, `MUX_INT_DINT` is MUX with
+/// K : INT and T : DINT (`K` is only checked to be ANY_INT). The function and the type of T; `None`
+/// when the function has no generic T or the type is not of its class.
+pub fn typed_name(name: &str) -> Option<(&'static StdFunction, Type)> {
+    let up = name.to_ascii_uppercase();
+    let (base, ty) = up.split_once('_')?;
+    let f = FUNCTIONS.iter().find(|f| f.name == base)?;
+    let ty = if f.name == "MUX" {
+        let (k, t) = ty.split_once('_')?;
+        conv_type(k).filter(|k| k.is_integer())?;
+        t
+    } else {
+        ty
+    };
+    let t = conv_type(ty)?;
+    let class = f.params.iter().find_map(|p| match p.ty {
+        ParamTy::T(c) => Some(c),
+        _ => None,
+    })?;
+    class.contains(&t).then_some((f, t))
 }
 
 impl StdFunction {
@@ -365,7 +432,7 @@ fn conv_type(name: &str) -> Option<Type> {
 }
 
 /// Whether `X_TO_Y` exists: numbers, bit strings and BOOL convert among themselves; TIME/LTIME convert
-/// with each other and with integers and reals; DT converts to DATE and TOD; everything elementary
+/// with each other and with integers, reals, bit strings and BOOL (milliseconds); DT converts to DATE and TOD; everything elementary
 /// converts to and from STRING/WSTRING.
 pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
     let (f, t) = (from.elementary(), to.elementary());
@@ -375,9 +442,10 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
         (Some(_), None) => to.is_string(),
         (Some(f), Some(t)) => {
             let plain = |e: E| e.is_numeric() || e.is_bit();
+            // durations and bit strings too (TIME_TO_DWORD, DWORD_TO_TIME: matiec, CODESYS, OSCAT)
             (plain(f) && plain(t))
-                || (f.is_duration() && (t.is_duration() || t.is_numeric()))
-                || (t.is_duration() && f.is_numeric())
+                || (f.is_duration() && (t.is_duration() || plain(t)))
+                || (t.is_duration() && plain(f))
                 || (f == E::Dt && matches!(t, E::Date | E::Tod | E::Dt))
                 || (f == t)
         }
@@ -394,6 +462,36 @@ pub fn conversion(name: &str) -> Option<Conversion> {
             from_class: AnyReal,
             to: ConvTarget::Fixed(Type::DINT),
             kind: K::Trunc,
+        });
+    }
+    // edition 3: TRUNC_INT (overloaded on ANY_REAL), REAL_TRUNC_INT (typed)
+    if let Some(t) = up.strip_prefix("TRUNC_") {
+        let to = conv_type(t).filter(|t| t.is_integer())?;
+        return Some(Conversion {
+            from: None,
+            from_class: AnyReal,
+            to: ConvTarget::Fixed(to),
+            kind: K::Trunc,
+        });
+    }
+    if let Some((a, b)) = up.split_once("_TRUNC_") {
+        let from = conv_type(a).filter(|t| t.is_real())?;
+        let to = conv_type(b).filter(|t| t.is_integer())?;
+        return Some(Conversion {
+            from: Some(from),
+            from_class: AnyReal,
+            to: ConvTarget::Fixed(to),
+            kind: K::Trunc,
+        });
+    }
+    // edition 3: TO_INT, TO_STRING ... (overloaded on the input's type, the rules of X_TO_Y)
+    if let Some(t) = up.strip_prefix("TO_") {
+        let to = conv_type(t)?;
+        return Some(Conversion {
+            from: None,
+            from_class: Any,
+            to: ConvTarget::Fixed(to),
+            kind: K::Plain,
         });
     }
     let (a, b) = up.split_once("_TO_")?;
