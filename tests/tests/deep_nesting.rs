@@ -109,7 +109,7 @@ fn initializers_nested_100000_deep_are_e0212() {
         ),
         (
             "repeats.il",
-            format!("[{}1{}]", "2(".repeat(LEVELS), ")".repeat(LEVELS)),
+            format!("[{}1{}]", "2([".repeat(LEVELS), "])".repeat(LEVELS)),
         ),
         (
             "structs.il",
@@ -188,26 +188,27 @@ fn st_statements_parentheses_and_operators_nested_100000_deep_are_e0108() {
     }
 }
 
-/// An SFC chart whose steps are joined through 100,000 simultaneous convergences before its transition
-/// and 100,000 simultaneous divergences after it: the chart is walked with explicit stacks, so the
-/// chain is no depth at all. XML element nesting itself is capped at 256 (E3005-style, see
-/// `ladder_compiler::xml::MAX_DEPTH`); a chain like this is flat in the file.
+/// An SFC chart whose steps are joined through 50,000 simultaneous convergences before its transition
+/// and 50,000 simultaneous divergences after it (100,000 elements, 27 MB at 100,000 each): the chart is walked with explicit stacks, so the
+/// chain is no depth at all (a recursive walk overflowed the stack). XML element nesting itself is
+/// capped at 256 (`ladder_compiler::xml::MAX_DEPTH`); a chain like this is flat in the file.
 #[test]
 fn an_sfc_chain_of_100000_divergences_is_walked_without_recursion() {
     let dir = tempfile::tempdir().unwrap();
     let mut els = String::from(
         "<step localId=\"1\" name=\"Init\" initialStep=\"true\"><connectionPointOut/></step>\n",
     );
+    let chain = LEVELS / 2;
     let mut prev = 1;
-    for i in 0..LEVELS {
+    for i in 0..chain {
         let id = 2 + i;
         els.push_str(&format!("<simultaneousConvergence localId=\"{id}\"><connectionPointIn><connection refLocalId=\"{prev}\"/></connectionPointIn></simultaneousConvergence>\n"));
         prev = id;
     }
-    let t = LEVELS + 2;
+    let t = chain + 2;
     els.push_str(&format!("<transition localId=\"{t}\"><connectionPointIn><connection refLocalId=\"{prev}\"/></connectionPointIn><condition><inline name=\"\"><IL><xhtml:p><![CDATA[LD go]]></xhtml:p></IL></inline></condition></transition>\n"));
     prev = t;
-    for i in 0..LEVELS {
+    for i in 0..chain {
         let id = t + 1 + i;
         els.push_str(&format!("<simultaneousDivergence localId=\"{id}\"><connectionPointIn><connection refLocalId=\"{prev}\"/></connectionPointIn></simultaneousDivergence>\n"));
         prev = id;
@@ -249,4 +250,93 @@ fn xml_elements_nested_100000_deep_are_capped() {
     let (out, err) = check(dir.path(), &["deep.xml"]);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(err.contains("nested deeper than"), "{err}");
+}
+
+#[test]
+fn alias_chains_of_100000_names_are_e0213() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut src = String::from("TYPE\n");
+    for i in 0..LEVELS {
+        src.push_str(&format!("t{i} : t{};\n", i + 1));
+    }
+    src.push_str(&format!(
+        "t{LEVELS} : INT;\nEND_TYPE\nPROGRAM p\nVAR x : t0; END_VAR\n  LD x\n  ST x\nEND_PROGRAM\n"
+    ));
+    write(dir.path(), "aliases.il", &src);
+    let (out, err) = check(dir.path(), &["aliases.il"]);
+    assert_capped(&out, &err, "aliases.il", "E0213");
+}
+
+#[test]
+fn named_array_types_100000_deep_are_e0211_or_e0213() {
+    let dir = tempfile::tempdir().unwrap();
+    // Declared outermost first, the chain is an alias chain (E0213); innermost first, each alias resolves
+    // at once and the array nesting grows through the names (E0211).
+    let mut forward = String::from("TYPE\n");
+    for i in 0..LEVELS {
+        forward.push_str(&format!("a{i} : ARRAY [0..1] OF a{};\n", i + 1));
+    }
+    forward.push_str(&format!("a{LEVELS} : INT;\nEND_TYPE\n"));
+    let mut backward = format!("TYPE\na{LEVELS} : INT;\n");
+    for i in (0..LEVELS).rev() {
+        backward.push_str(&format!("a{i} : ARRAY [0..1] OF a{};\n", i + 1));
+    }
+    backward.push_str("END_TYPE\n");
+    for (name, types, code) in [
+        ("forward.il", forward, "E0213"),
+        ("backward.il", backward, "E0211"),
+    ] {
+        let src = format!(
+            "{types}PROGRAM p\nVAR x : a0; n : INT; END_VAR\n  LD n\n  ST n\nEND_PROGRAM\n"
+        );
+        write(dir.path(), name, &src);
+        let (out, err) = check(dir.path(), &[name]);
+        assert_capped(&out, &err, name, code);
+    }
+}
+
+#[test]
+fn structs_and_fb_instances_contained_100000_deep_are_e0214() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut structs = String::from("TYPE\n");
+    for i in 0..LEVELS {
+        structs.push_str(&format!("s{i} : STRUCT a : s{}; END_STRUCT;\n", i + 1));
+    }
+    structs.push_str(&format!(
+        "s{LEVELS} : STRUCT a : INT; END_STRUCT;\nEND_TYPE\nPROGRAM p\nVAR x : s0; n : INT; END_VAR\n  LD n\n  ST n\nEND_PROGRAM\n"
+    ));
+    write(dir.path(), "structs.il", &structs);
+    let (out, err) = check(dir.path(), &["structs.il"]);
+    assert_capped(&out, &err, "structs.il", "E0214");
+    let mut fbs = String::new();
+    for i in 0..LEVELS {
+        fbs.push_str(&format!(
+            "FUNCTION_BLOCK f{i}\nVAR x : f{}; END_VAR\n  LD 1\nEND_FUNCTION_BLOCK\n",
+            i + 1
+        ));
+    }
+    fbs.push_str(&format!(
+        "FUNCTION_BLOCK f{LEVELS}\nVAR x : INT; END_VAR\n  LD 1\n  ST x\nEND_FUNCTION_BLOCK\nPROGRAM p\nVAR x : f0; END_VAR\n  LD 1\nEND_PROGRAM\n"
+    ));
+    write(dir.path(), "fbs.il", &fbs);
+    let (out, err) = check(dir.path(), &["fbs.il"]);
+    assert_capped(&out, &err, "fbs.il", "E0214");
+}
+
+#[test]
+fn structs_contained_at_the_cap_are_accepted() {
+    let dir = tempfile::tempdir().unwrap();
+    // The program holding `x : s0` is the outermost level: n - 1 structs below it.
+    let n = il_frontend::sema::nesting::MAX_CONTAINMENT - 1;
+    let mut src = String::from("TYPE\n");
+    for i in 0..n - 1 {
+        src.push_str(&format!("s{i} : STRUCT a : s{}; END_STRUCT;\n", i + 1));
+    }
+    src.push_str(&format!(
+        "s{} : STRUCT a : INT; END_STRUCT;\nEND_TYPE\nPROGRAM p\nVAR x : s0; n : INT; END_VAR\n  LD n\n  ST n\nEND_PROGRAM\n",
+        n - 1
+    ));
+    write(dir.path(), "at_cap.il", &src);
+    let (out, err) = check(dir.path(), &["at_cap.il"]);
+    assert_eq!(out.status.code(), Some(0), "{err}");
 }

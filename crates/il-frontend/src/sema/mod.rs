@@ -11,7 +11,7 @@ mod body;
 mod calls;
 mod decls;
 pub mod model;
-mod nesting;
+pub mod nesting;
 mod places;
 pub mod stdlib;
 pub mod typing;
