@@ -340,3 +340,43 @@ fn structs_contained_at_the_cap_are_accepted() {
     let (out, err) = check(dir.path(), &["at_cap.il"]);
     assert_eq!(out.status.code(), Some(0), "{err}");
 }
+
+/// The drive-script language has no nesting to recurse over (a value is `a`, `a op b`, `-a` or `~a`;
+/// no parentheses; at most 4 conditions and 8 actions per statement): its compiler is flat loops over
+/// tokens. 100,000 parentheses, operators or signs are one located E6010 each statement, never deeper.
+#[test]
+fn drive_scripts_with_100000_parentheses_or_operators_are_e6010() {
+    let dir = tempfile::tempdir().unwrap();
+    let head = "S:: PARAM;\nS:: INIT;\nS:: MOTION 0;\nS:: EVENT 0;\n";
+    for (name, cond) in [
+        (
+            "parens.ds",
+            format!("{}DI_0{}", "(".repeat(LEVELS), ")".repeat(LEVELS)),
+        ),
+        ("chain.ds", format!("DI_0{}", " + DI_0".repeat(LEVELS))),
+        ("signs.ds", format!("{}DI_0", "~".repeat(LEVELS))),
+    ] {
+        write(
+            dir.path(),
+            name,
+            &format!("{head}S:: IF {cond};\nS:: THEN DO_0=HIGH;\n"),
+        );
+        let t = Instant::now();
+        let out = ladderc()
+            .args([
+                "drive",
+                "build",
+                "--message-format",
+                "short",
+                name,
+                "-o",
+                "x.img",
+            ])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        assert!(t.elapsed() < LIMIT, "took {:?}", t.elapsed());
+        let err = String::from_utf8_lossy(&out.stderr).into_owned();
+        assert_capped(&out, &err, name, "E6010");
+    }
+}
