@@ -31,4 +31,9 @@ PY
 for f in "$c"/drive_script/*.ds; do
     (cd "$root" && cargo run -q -p ladderc -- drive build "$f" -o "$c/drive_image/$(basename "$f" .ds).img")
 done
+# Minimised inputs of past findings (committed under fuzz/regressions/<target>/; each is also a regression
+# test in tests/tests/fuzz_inprocess.rs).
+for d in "$root"/fuzz/regressions/*/; do
+    cp "$d"* "$c/$(basename "$d")/"
+done
 ls "$c" | while read -r t; do echo "$t: $(ls "$c/$t" | wc -l) seeds"; done

@@ -346,4 +346,16 @@ fn fuzz_findings_stay_fixed() {
     let body = "<blockTemplate name=\"ACME_X\" funcNum=\"1\"><parameters/><body>x #\u{fffd} #</body></blockTemplate>";
     let out = fuzzing::run(FrontEnd::Template, body.as_bytes());
     assert!(out.diagnostics > 0);
+    // The committed minimised inputs (fuzz/regressions/<target>/, also seeds of the cargo-fuzz corpora).
+    let dir = common::repo_root().join("fuzz/regressions");
+    let mut n = 0;
+    for (front_end, sub) in [(FrontEnd::St, "st"), (FrontEnd::Template, "template")] {
+        for f in std::fs::read_dir(dir.join(sub)).unwrap() {
+            let data = std::fs::read(f.unwrap().path()).unwrap();
+            let out = fuzzing::run(front_end, &data);
+            assert!(out.diagnostics > 0);
+            n += 1;
+        }
+    }
+    assert!(n >= 2, "{n} regression inputs");
 }

@@ -12,7 +12,7 @@ use crate::profile::TargetProfile;
 use diagnostics::{code, Diagnostic, Diagnostics, Span};
 use il_frontend::ast::{PouKind, VarKind};
 use il_frontend::sema::{FbType, Model, Type, UserTypeDef, Variable};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// A struct type or a user FB whose size depends on its members.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
@@ -96,6 +96,9 @@ impl Sizer<'_> {
     /// again while still open is a recursive type, which sema reports: it counts 0 here).
     fn size(&mut self, ty: &Type) -> Size {
         let mut stack: Vec<Key> = Vec::new();
+        // The keys on `stack`, for a constant-time cycle test (a chain of nested types is as long as
+        // the program makes it: a linear search of the stack was quadratic in its length).
+        let mut open: HashSet<Key> = HashSet::new();
         loop {
             let needed = match stack.last() {
                 None => match self.try_size(ty) {
@@ -118,15 +121,17 @@ impl Sizer<'_> {
                         None => {
                             self.memo.insert(top, total);
                             stack.pop();
+                            open.remove(&top);
                             continue;
                         }
                         Some(k) => k,
                     }
                 }
             };
-            if stack.contains(&needed) {
+            if open.contains(&needed) {
                 self.memo.insert(needed, Some(0));
             } else {
+                open.insert(needed);
                 stack.push(needed);
             }
         }

@@ -134,6 +134,95 @@ impl<'s> Ctx<'s> {
         d.hint = Some(hint.to_string());
     }
 
+    // ------------------------------------------------------------ nesting caps
+
+    /// Reports E0211 or E0212 at `span` unless a report of the same cap already lies inside it (the
+    /// cut is repeated every [`MAX_TYPE_NESTING`] levels of one declaration; it is reported once).
+    fn too_deep(&mut self, code: Code, msg: String, span: Span, hint: &str) {
+        let inside = |s: &Span| s.file == span.file && s.start >= span.start && s.end <= span.end;
+        if self
+            .diags
+            .iter()
+            .any(|d| d.code == code && d.span.as_ref().is_some_and(inside))
+        {
+            return;
+        }
+        let mut d = Diagnostic::error(code, msg).at(span);
+        d.hint = Some(hint.to_string());
+        self.diags.push(d);
+    }
+
+    /// `ARRAY [dims] OF element`. Element types nested deeper than [`MAX_TYPE_NESTING`] are E0211 and
+    /// cut to their innermost type, so that the tree the later stages walk (recursively) stays shallow.
+    pub fn array_type(
+        &mut self,
+        dims: Vec<ArrayDim>,
+        element: TypeRef,
+        l: usize,
+        r: usize,
+    ) -> TypeRef {
+        let span = self.span(l, r);
+        let mut depth = 1;
+        let mut t = &element;
+        while let TypeRef::Array { element, .. } = t {
+            depth += 1;
+            t = element;
+        }
+        if depth <= MAX_TYPE_NESTING {
+            return TypeRef::Array {
+                dims,
+                element: Box::new(element),
+                span,
+            };
+        }
+        self.too_deep(
+            code::E0211,
+            format!("array types nested more than {MAX_TYPE_NESTING} deep"),
+            span,
+            "declare the inner array as a named type (TYPE row : ARRAY [..] OF ...; END_TYPE), or use one \
+             array with several dimensions: ARRAY [0..9, 0..9] OF INT",
+        );
+        // The innermost type, taken out level by level (no recursive drop of the chain).
+        let mut t = element;
+        while let TypeRef::Array { element, .. } = t {
+            t = *element;
+        }
+        t
+    }
+
+    /// An array or structure initializer. One nested deeper than [`MAX_TYPE_NESTING`] is E0212 and
+    /// replaced by an empty one (the depth is measured with an explicit stack, bounded by the cap).
+    pub fn nested_init(&mut self, init: Initializer) -> Initializer {
+        let span = match &init {
+            Initializer::Array(_, s) | Initializer::Struct(_, s) => *s,
+            Initializer::Value(_) => return init,
+        };
+        let mut stack = vec![(&init, 1usize)];
+        let mut deep = false;
+        while let Some((i, d)) = stack.pop() {
+            if d > MAX_TYPE_NESTING {
+                deep = true;
+                break;
+            }
+            match i {
+                Initializer::Value(_) => {}
+                Initializer::Array(es, _) => stack.extend(es.iter().map(|e| (&e.value, d + 1))),
+                Initializer::Struct(fs, _) => stack.extend(fs.iter().map(|(_, v)| (v, d + 1))),
+            }
+        }
+        if !deep {
+            return init;
+        }
+        self.too_deep(
+            code::E0212,
+            format!("initializers nested more than {MAX_TYPE_NESTING} deep"),
+            span,
+            "give the inner values their own named types and constants, or flatten the data into one \
+             array with several dimensions",
+        );
+        Initializer::Array(Vec::new(), span)
+    }
+
     // ------------------------------------------------------------ instructions
 
     pub fn simple(
@@ -875,6 +964,11 @@ pub(crate) fn run(
 
 /// The deepest nesting of parenthesised lists (`AND( ... ADD( ... ) ... )`) accepted in IL.
 pub const MAX_NESTING: usize = 2000;
+
+/// The deepest array type (`ARRAY [..] OF ARRAY [..] OF ...`, E0211) and initializer (`[[[...]]]`,
+/// `(a := (b := ...))`, E0212) a declaration may nest. Types and initializers are walked recursively
+/// by the semantic checks and the C generation; real programs nest a few levels.
+pub const MAX_TYPE_NESTING: usize = 64;
 
 /// Reports (E0200, once per body) and empties every nested list deeper than [`MAX_NESTING`], so
 /// later stages (sema, C, and the C compiler's own parser) never see unbounded nesting. The walk

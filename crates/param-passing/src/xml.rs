@@ -70,6 +70,10 @@ fn malformed(file: FileId, at: usize, len: usize, msg: impl std::fmt::Display) -
         ))
 }
 
+/// Elements nested deeper than this are refused (E0210): the tree is built with an explicit stack, but it
+/// is cloned, dropped and walked recursively, so its depth must stay small. Real template files nest 4 levels.
+pub const MAX_DEPTH: usize = 256;
+
 /// Parses `text` into an element tree.
 pub fn parse(file: FileId, text: &str) -> Result<Element, Box<Diagnostic>> {
     let body = text.strip_prefix('\u{feff}').unwrap_or(text);
@@ -103,6 +107,17 @@ pub fn parse(file: FileId, text: &str) -> Result<Element, Box<Diagnostic>> {
                         .map(|i| Span::new(file, before + i, before + i + name.len()))
                         .unwrap_or(Span::new(file, before, after));
                     attrs.push(Attr { name, value, span });
+                }
+                if !is_empty && stack.len() >= MAX_DEPTH {
+                    return Err(Box::new(
+                        Diagnostic::error(
+                            code::E0210,
+                            format!("template elements nested deeper than {MAX_DEPTH} levels"),
+                        )
+                        .at(Span::new(file, before, after))
+                        .with_primary_label(format!("level {}", stack.len() + 1))
+                        .with_hint("a template file nests <templates>, <template>, <param>/<body> and little else: remove the extra nesting"),
+                    ));
                 }
                 let el = Element {
                     name: local_name(e.name().as_ref()),

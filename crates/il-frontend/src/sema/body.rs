@@ -393,13 +393,11 @@ impl Body<'_, '_> {
         match outer {
             None => self.load(st, value, i.span),
             Some(cr) => {
-                // Point at `OP(` for the outer current result.
-                let kw = op_name(*op).len() + usize::from(*negate) + 1;
-                let head = Span::new(
-                    i.span.file,
-                    i.span.start as usize,
-                    (i.span.start as usize + kw).min(i.span.end as usize),
-                );
+                // Point at the start of `OP(` for the outer current result: an empty span there. The
+                // keyword's length cannot be added to the start: a deferred operator lowered from ST or
+                // XML carries the span of an expression whose text is not `OP(` (the sum cut a multi-byte
+                // character: cargo-fuzz `st`, fuzz/regressions/st/).
+                let head = Span::new(i.span.file, i.span.start as usize, i.span.start as usize);
                 let res = self.operator(*op, *negate, cr, value, *close, head, &mut rec);
                 st.cr.ty = Some(res);
                 st.cr.fresh = Some(i.span);

@@ -265,6 +265,29 @@ impl Analyzer<'_> {
         let ast::TypeDef::Alias { ty, init } = &d.def else {
             return;
         };
+        // An alias chain (`t0 : t1; t1 : t2; ...`) is resolved recursively: cap its length.
+        if self.resolving.len() >= crate::parser::MAX_TYPE_NESTING {
+            // Reported once: every later alias of the same long chain is cut the same way.
+            let first = !std::mem::replace(&mut self.alias_chain_reported, true);
+            if first {
+                self.error(
+                    code::E0213,
+                    d.name.span,
+                    format!(
+                        "type `{}` is defined through more than {} named types",
+                        d.name.name,
+                        crate::parser::MAX_TYPE_NESTING
+                    ),
+                )
+                .label("one alias too many in the chain")
+                .hint("define the type directly in terms of an elementary, structured or FB type");
+            }
+            self.model.types[id.0 as usize].def = UserTypeDef::Alias {
+                target: Type::Error,
+                init: None,
+            };
+            return;
+        }
         self.resolving.push(id);
         let target = self.resolve_type(ty);
         self.resolving.retain(|r| *r != id);
@@ -282,8 +305,33 @@ impl Analyzer<'_> {
                 wide: *wide,
                 len: length.unwrap_or(DEFAULT_STRING_LEN),
             },
-            TypeRef::Array { dims, element, .. } => {
+            TypeRef::Array {
+                dims,
+                element,
+                span,
+            } => {
                 let element = self.resolve_type(element);
+                // Arrays of named array types nest as deep as the chain of names: the same cap as for
+                // arrays written out (the parser's E0211), so that no later walk recurses without bound.
+                let mut depth = 1;
+                let mut t = &element;
+                while let Type::Array { element, .. } = t {
+                    depth += 1;
+                    t = element;
+                }
+                if depth > crate::parser::MAX_TYPE_NESTING {
+                    self.error(
+                        code::E0211,
+                        *span,
+                        format!(
+                            "array types nested more than {} deep (counting named array types)",
+                            crate::parser::MAX_TYPE_NESTING
+                        ),
+                    )
+                    .label("the element type is itself an array, and so on")
+                    .hint("use one array with several dimensions: ARRAY [0..9, 0..9] OF INT");
+                    return Type::Error;
+                }
                 for d in dims {
                     if d.upper < d.lower {
                         self.error(

@@ -11,6 +11,7 @@ mod body;
 mod calls;
 mod decls;
 pub mod model;
+pub mod nesting;
 mod places;
 pub mod stdlib;
 pub mod typing;
@@ -34,8 +35,10 @@ pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
         resolving: Vec::new(),
         silent: false,
         enum_counter: 0,
+        alias_chain_reported: false,
     };
     let pous = a.declare(units);
+    a.check_containment();
     // Room for every instruction's info (and about one name each) at once: no regrowth of big tables.
     let instrs: usize = pous.iter().map(|(_, p)| body::count_instrs(&p.body)).sum();
     a.model.instrs.reserve(instrs);
@@ -65,6 +68,8 @@ pub(crate) struct Analyzer<'d> {
     /// While set, diagnostics are dropped (first pass over a body).
     pub(crate) silent: bool,
     pub(crate) enum_counter: u32,
+    /// E0213 (an alias chain longer than `parser::MAX_TYPE_NESTING`) was reported.
+    pub(crate) alias_chain_reported: bool,
 }
 
 impl Analyzer<'_> {

@@ -546,14 +546,23 @@ impl Body<'_, '_> {
                 "`{name}` is a type: declare an instance (VAR inst : {name}; END_VAR) and use that"
             );
         }
+        let limit = (up.len() / 3).clamp(1, 2);
+        let up_chars = up.chars().count();
+        // Names whose lengths differ by more than the limit are never that close: skip them before the
+        // quadratic distance (a fuzzed name may be thousands of characters long).
         let best = self
             .pou()
             .vars
             .iter()
-            .map(|v| v.name.clone())
-            .chain(self.a.model.globals.iter().map(|g| g.name.clone()))
-            .filter(|n| edit_distance(&n.to_ascii_uppercase(), &up) <= (up.len() / 3).clamp(1, 2))
-            .min_by_key(|n| edit_distance(&n.to_ascii_uppercase(), &up));
+            .map(|v| v.name.as_str())
+            .chain(self.a.model.globals.iter().map(|g| g.name.as_str()))
+            .filter(|n| n.chars().count().abs_diff(up_chars) <= limit)
+            .filter_map(|n| {
+                let d = edit_distance(&n.to_ascii_uppercase(), &up);
+                (d <= limit).then_some((d, n))
+            })
+            .min_by_key(|&(d, _)| d)
+            .map(|(_, n)| n.to_string());
         match best {
             Some(b) => format!("did you mean `{b}`? otherwise declare `{name}` in a VAR block"),
             None => format!("declare `{name}` in a VAR block (or VAR_EXTERNAL for a global)"),

@@ -458,7 +458,9 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
     }
 }
 
-/// The steps that must be active for a transition whose input comes from `from`.
+/// The steps that must be active for a transition whose input comes from `from`. An explicit stack, not
+/// recursion: a chain of divergences and convergences is as long as the file makes it (depth-first, in the
+/// order of the connections, as a recursive walk would visit them).
 fn pre_steps(
     ctx: &mut Ctx,
     nodes: &[Node],
@@ -468,55 +470,57 @@ fn pre_steps(
     seen: &mut HashSet<usize>,
     pou: &str,
 ) -> bool {
-    if !seen.insert(from) {
-        return true;
-    }
-    let n = &nodes[from];
-    match n.kind {
-        NodeKind::Step => {
-            if let Some(s) = n.step {
-                out.push(s);
-            }
-            true
+    let mut ok = true;
+    let mut stack = vec![from];
+    while let Some(from) = stack.pop() {
+        if !seen.insert(from) {
+            continue;
         }
-        NodeKind::SelDiv | NodeKind::SimConv => {
-            if resolved[from].is_empty() {
+        let n = &nodes[from];
+        match n.kind {
+            NodeKind::Step => {
+                if let Some(s) = n.step {
+                    out.push(s);
+                }
+            }
+            NodeKind::SelDiv | NodeKind::SimConv => {
+                if resolved[from].is_empty() {
+                    report(
+                        ctx,
+                        code::E3120,
+                        ctx.tag(n.el),
+                        pou,
+                        Some(&n.id),
+                        format!("<{}> has no input connection", n.el.name),
+                    );
+                    ok = false;
+                } else {
+                    stack.extend(resolved[from].iter().rev());
+                }
+            }
+            NodeKind::Macro => ok = false,
+            _ => {
                 report(
                     ctx,
-                    code::E3120,
+                    code::E3128,
                     ctx.tag(n.el),
                     pou,
                     Some(&n.id),
-                    format!("<{}> has no input connection", n.el.name),
+                    format!(
+                        "<{}> cannot precede a transition (a step, selection divergence or simultaneous \
+                         convergence must)",
+                        n.el.name
+                    ),
                 );
-                return false;
+                ok = false;
             }
-            let mut ok = true;
-            for &f in &resolved[from] {
-                ok &= pre_steps(ctx, nodes, resolved, f, out, seen, pou);
-            }
-            ok
-        }
-        NodeKind::Macro => false,
-        _ => {
-            report(
-                ctx,
-                code::E3128,
-                ctx.tag(n.el),
-                pou,
-                Some(&n.id),
-                format!(
-                    "<{}> cannot precede a transition (a step, selection divergence or simultaneous \
-                     convergence must)",
-                    n.el.name
-                ),
-            );
-            false
         }
     }
+    ok
 }
 
-/// The steps a transition activates: its consumers, through convergences, divergences and jumps.
+/// The steps a transition activates: its consumers, through convergences, divergences and jumps. An
+/// explicit stack of (node, next consumer) frames, not recursion, in the order a recursive walk would take.
 #[allow(clippy::too_many_arguments)]
 fn post_steps(
     ctx: &mut Ctx,
@@ -529,7 +533,13 @@ fn post_steps(
     pou: &str,
 ) -> bool {
     let mut ok = true;
-    for &c in &consumers[from] {
+    let mut frames: Vec<(usize, usize)> = vec![(from, 0)];
+    while let Some(frame) = frames.last_mut() {
+        let Some(&c) = consumers[frame.0].get(frame.1) else {
+            frames.pop();
+            continue;
+        };
+        frame.1 += 1;
         if !seen.insert(c) {
             continue;
         }
@@ -553,9 +563,7 @@ fn post_steps(
                     }
                 }
             }
-            NodeKind::SelConv | NodeKind::SimDiv => {
-                ok &= post_steps(ctx, nodes, consumers, step_names, c, out, seen, pou);
-            }
+            NodeKind::SelConv | NodeKind::SimDiv => frames.push((c, 0)),
             NodeKind::Macro => ok = false,
             _ => {
                 report(
