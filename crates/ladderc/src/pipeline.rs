@@ -86,8 +86,9 @@ pub struct Lowered {
     pub axes: AxisConfig,
     /// The scan cycle = the motion engine's cycle.
     pub cycle_ms: f64,
-    /// The semantic model of `all_units` when nothing was lowered (the checked program is the compiled
-    /// one, so it is analysed once).
+    /// The semantic model of `all_units`: after [`Session::lower`], when nothing was lowered (the
+    /// checked program is the compiled one, so it is analysed once); after [`Session::compile`], always
+    /// (the model the C was generated from).
     pub model: Option<il_frontend::sema::Model>,
 }
 
@@ -184,7 +185,8 @@ impl Session {
                 input_lang(p, &text, lang)
             };
             let file = self.map.add(shown, text);
-            let src = self.map.get(file).text.clone();
+            // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
+            let src = &self.map.get(file).text;
             if detected {
                 self.diags.push(
                     Diagnostic::new(
@@ -199,7 +201,7 @@ impl Session {
                 );
             }
             if file_lang == Lang::Xml {
-                units.push(ladder_compiler::compile_xml(file, &src, &mut self.diags));
+                units.push(ladder_compiler::compile_xml(file, src, &mut self.diags));
             } else {
                 let stem = if stdin {
                     None
@@ -212,7 +214,7 @@ impl Session {
                 };
                 let (unit, bodies) = il_frontend::st::file::parse_text(
                     file,
-                    &src,
+                    src,
                     implicit,
                     file_lang,
                     &mut self.diags,
@@ -428,6 +430,7 @@ impl Session {
             &ext,
             &mut self.diags,
         )?;
+        lowered.model = Some(model);
         Some((lowered, program))
     }
 }
