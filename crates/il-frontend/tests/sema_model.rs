@@ -725,7 +725,11 @@ END_CONFIGURATION
 #[test]
 fn per_instruction_facts_stay_small() {
     use std::mem::size_of;
-    assert!(size_of::<Type>() <= 32, "Type is {} bytes", size_of::<Type>());
+    assert!(
+        size_of::<Type>() <= 32,
+        "Type is {} bytes",
+        size_of::<Type>()
+    );
     assert!(
         size_of::<il_frontend::sema::model::InstrInfo>() <= 232,
         "InstrInfo is {} bytes",
