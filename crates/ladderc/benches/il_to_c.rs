@@ -189,7 +189,7 @@ fn matiec_lib(iec2c: &Path) -> Option<PathBuf> {
 
 /// Runs `cmd` under GNU time: [CPU seconds (user + sys), wall seconds, peak RSS KiB]. Panics when the
 /// command fails (both compilers must accept the program).
-fn timed(mut cmd: Command, dir: &Path) -> [f64; 3] {
+fn timed(cmd: Command, dir: &Path) -> [f64; 3] {
     let times = dir.join("time");
     let program = cmd.get_program().to_owned();
     let args: Vec<_> = cmd.get_args().map(|a| a.to_owned()).collect();
