@@ -4,7 +4,8 @@
 //! parallel coils, TON timers, GT/LT compare blocks) with 1,000 to 10,000 rungs. Output: a table of the
 //! median wall and CPU time of XML reading + ladder lowering (`compile_xml`), sema and C generation, the
 //! peak resident memory of each job, and the end-to-end wall time of `ladderc build project.xml -o DIR`
-//! (process start, file I/O, the CLI's whole pipeline). Goal: 10,000 rungs from XML to C in under 1 s.
+//! (process start, file I/O, the CLI's whole pipeline). Goal (#16; #4 asked for 1 s): 10,000 rungs from XML
+//! to C through `ladderc build` in at most 0.25 s.
 //! Invariants: every job runs in its own child process (see `common`); the project must compile without
 //! an error diagnostic, and the bench fails if it does not.
 
@@ -16,7 +17,8 @@ use diagnostics::{Diagnostics, FileId};
 use std::process::Command;
 use std::time::Instant;
 
-const GOAL_SECONDS: f64 = 1.0;
+/// Issue #16's budget for 10,000 rungs through `ladderc build`.
+const GOAL_SECONDS: f64 = 0.25;
 const RUNS: usize = 7;
 
 fn main() {
@@ -78,12 +80,13 @@ fn main() {
         num(&r, "peak_kib") / 1024.0,
     );
     println!(
-        "goal: under {GOAL_SECONDS} s -> {} (wall {:.2}x the budget, CPU {:.2}x)",
-        if total < GOAL_SECONDS {
+        "goal: at most {GOAL_SECONDS} s through `ladderc build` -> {} ({:.2}x the budget; in memory: wall {:.2}x, CPU {:.2}x)",
+        if cli <= GOAL_SECONDS {
             "met"
         } else {
             "NOT met"
         },
+        cli / GOAL_SECONDS,
         total / GOAL_SECONDS,
         num(&r, "cpu_total") / GOAL_SECONDS,
     );

@@ -169,8 +169,9 @@ pub struct Lowered {
     pub axes: AxisConfig,
     /// The scan cycle = the motion engine's cycle.
     pub cycle_ms: f64,
-    /// The semantic model of `all_units` when nothing was lowered (the checked program is the compiled
-    /// one, so it is analysed once).
+    /// The semantic model of `all_units`: after [`Session::lower`], when nothing was lowered (the
+    /// checked program is the compiled one, so it is analysed once); after [`Session::compile`], always
+    /// (the model the C was generated from).
     pub model: Option<il_frontend::sema::Model>,
 }
 
@@ -296,7 +297,8 @@ impl Session {
                 input_lang(p, &text, lang)
             };
             let file = self.map.add(shown, text);
-            let src = self.map.get(file).text.clone();
+            // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
+            let src = &self.map.get(file).text;
             if detected {
                 self.diags.push(
                     Diagnostic::new(
@@ -311,7 +313,7 @@ impl Session {
                 );
             }
             if file_lang == Lang::Xml {
-                units.push(ladder_compiler::compile_xml(file, &src, &mut self.diags));
+                units.push(ladder_compiler::compile_xml(file, src, &mut self.diags));
             } else {
                 let stem = if stdin {
                     None
@@ -324,7 +326,7 @@ impl Session {
                 };
                 let (unit, bodies) = il_frontend::st::file::parse_text(
                     file,
-                    &src,
+                    src,
                     implicit,
                     file_lang,
                     &mut self.diags,
@@ -668,14 +670,16 @@ impl Session {
                 .map(pou_method)
                 .collect(),
         };
-        c_backend::generate_with(
+        let program = c_backend::generate_with(
             &lowered.all_units,
             &model,
             &lowered.profile,
             &copts,
             &ext,
             &mut self.diags,
-        )
+        )?;
+        lowered.model = Some(model);
+        Some(program)
     }
 }
 

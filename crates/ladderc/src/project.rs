@@ -312,6 +312,12 @@ impl GeneratedProject {
         &self.program
     }
 
+    /// Moves the C project's files (name, text) out, leaving the program without files: for a caller
+    /// that writes them and needs no copy.
+    pub fn take_files(&mut self) -> Vec<(String, String)> {
+        std::mem::take(&mut self.program.files)
+    }
+
     /// The lowered program the C was generated from.
     pub fn lowered(&self) -> &pipeline::Lowered {
         &self.lowered

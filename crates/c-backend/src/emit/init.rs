@@ -28,7 +28,7 @@ impl Gen<'_> {
                 }
                 _ => false,
             },
-            Type::Subrange { lower, upper, .. } => *lower > 0 || *upper < 0,
+            Type::Subrange { lower, upper, .. } => **lower > 0 || **upper < 0,
             Type::Fb(FbType::User(_)) => true,
             _ => false,
         }
@@ -185,8 +185,8 @@ impl Gen<'_> {
                 let Some(e) = t.elementary() else { return };
                 let v = match (v, t) {
                     (Some(v), _) => ctypes::const_elementary(self.model, e, v),
-                    (None, Type::Subrange { lower, upper, .. }) if *lower > 0 || *upper < 0 => {
-                        Some(ctypes::int_literal(e, *lower))
+                    (None, Type::Subrange { lower, upper, .. }) if **lower > 0 || **upper < 0 => {
+                        Some(ctypes::int_literal(e, **lower))
                     }
                     _ => None,
                 };

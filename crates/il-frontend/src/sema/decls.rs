@@ -378,8 +378,8 @@ impl Analyzer<'_> {
                     }
                     Type::Subrange {
                         base: e,
-                        lower: *lower,
-                        upper: *upper,
+                        lower: Box::new(*lower),
+                        upper: Box::new(*upper),
                     }
                 }
                 _ => {
@@ -772,6 +772,11 @@ impl Analyzer<'_> {
         args: &[ast::FormalArg],
     ) -> Vec<ProgramArg> {
         let mut out = Vec::new();
+        if args.is_empty() {
+            // The usual instance: no copy of the program's interface (tens of thousands of variables in
+            // a large generated program).
+            return out;
+        }
         let prog = self.model.pous[pou.0 as usize].clone();
         for a in args {
             let Some(param) = prog.vars.iter().position(|v| {

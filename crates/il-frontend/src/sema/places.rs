@@ -244,7 +244,7 @@ impl Body<'_, '_> {
                 Err(BindError::Range { value, span }) => {
                     let t = self.a.type_name(to);
                     let bounds = match to {
-                        Type::Subrange { lower, upper, .. } => Some((*lower, *upper)),
+                        Type::Subrange { lower, upper, .. } => Some((**lower, **upper)),
                         _ => to.elementary().and_then(|e| e.int_range()),
                     };
                     let range = bounds

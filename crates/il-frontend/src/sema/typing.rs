@@ -210,9 +210,9 @@ pub fn literal_fits(min: i128, max: i128, real: bool, ty: &Type) -> Result<(), F
         if real {
             return Err(FitError::Kind);
         }
-        return if min < *lower {
+        return if min < **lower {
             Err(FitError::Range(min))
-        } else if max > *upper {
+        } else if max > **upper {
             Err(FitError::Range(max))
         } else {
             Ok(())
