@@ -7,7 +7,9 @@
 //!   collapse); inside declarations (`VAR`..`END_VAR`, `TYPE`, `CONFIGURATION`) line ends are blanks.
 //! - Inside the argument list of a call (`CAL f(` / `LIMIT(`), a line end next to `(`, `,` or `)` is a blank,
 //!   so arguments may span lines; a deferred operator's `(` (`AND(` at the start of an instruction) keeps
-//!   line ends, its nested list is line-oriented.
+//!   line ends, its nested list is line-oriented. An operator word whose `(` is followed (over line ends
+//!   and comments) by `name :=` or `name =>` is the formal call of the standard function of that name
+//!   (`MOD(` + `IN1 := a, IN2 := b`): it is passed on as an identifier and its list as call arguments.
 //! - A `;` in an instruction list is the non-standard end-of-line comment: reported, skipped to line end.
 //! - A block left open (missing `END_VAR`, `END_PROGRAM`, `)` of a deferred operator) is reported once and
 //!   closed with a zero-width synthetic token, so the grammar sees a well-nested stream and one mistake
@@ -507,6 +509,14 @@ impl<'s> Layout<'s> {
                     self.close_top(s);
                 }
             }
+            // `MOD(` + `IN1 := ...`: the formal call of the standard function that shares the
+            // operator's name (IEC 61131-3 IL formal function call), not a deferred operator.
+            let tok = match tok {
+                Tok::Word(w) if w.is_simple_op() && self.formal_call_follows() => {
+                    Tok::Word(Word::Ident)
+                }
+                other => other,
+            };
             let tok =
                 match tok {
                     Tok::Word(
@@ -552,6 +562,26 @@ impl<'s> Layout<'s> {
             Some(Ok(RawToken::Word)) => crate::lexer::classify(ahead.slice()) != Word::At,
             _ => true,
         }
+    }
+
+    /// At an instruction's start, after an operator word: `(`, then (over line ends and comments) a
+    /// name and `:=` or `=>`, so the word names a function called with formal arguments.
+    fn formal_call_follows(&self) -> bool {
+        if self.in_decl() || !matches!(self.prev, Last::Start | Last::Eol | Last::Colon) {
+            return false;
+        }
+        let mut ahead = self.lex.clone();
+        if ahead.next() != Some(Ok(RawToken::LParen)) {
+            return false;
+        }
+        let name = loop {
+            match ahead.next() {
+                Some(Ok(RawToken::Newline | RawToken::Comment(_))) => continue,
+                other => break other,
+            }
+        };
+        name == Some(Ok(RawToken::Word))
+            && matches!(ahead.next(), Some(Ok(RawToken::Assign | RawToken::Arrow)))
     }
 
     /// `; text` in an instruction list: reported, skipped to the end of the line.
