@@ -543,7 +543,7 @@ fn every_conversion_of_the_catalogue_runs_as_iec_61131_3_says() {
     let text = std::fs::read_to_string(&trace).unwrap();
     let mut lines = text.lines();
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let row = split_csv(lines.next().unwrap());
+    let row = common::split_csv(lines.next().unwrap());
     let col: BTreeMap<&str, &str> = head
         .iter()
         .copied()
@@ -600,28 +600,4 @@ fn every_conversion_of_the_catalogue_runs_as_iec_61131_3_says() {
         }
     }
     assert!(!wide.is_empty());
-}
-
-/// A CSV row of the trace (strings are quoted, quotes doubled).
-fn split_csv(line: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut cur = String::new();
-    let mut quoted = false;
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        match c {
-            '"' if quoted && chars.peek() == Some(&'"') => {
-                cur.push('"');
-                chars.next();
-            }
-            '"' => {
-                quoted = !quoted;
-                cur.push('"');
-            }
-            ',' if !quoted => out.push(std::mem::take(&mut cur)),
-            c => cur.push(c),
-        }
-    }
-    out.push(cur);
-    out
 }

@@ -105,27 +105,7 @@ const CASES: &[(&str, &str, &str)] = &[
 ];
 
 fn run(dir: &std::path::Path, name: &str, src: &str) -> (BTreeMap<String, String>, String) {
-    let file = dir.join(name);
-    std::fs::write(&file, src).unwrap();
-    let trace = dir.join("t.csv");
-    let out = ladderc()
-        .arg("run")
-        .arg(&file)
-        .args(["--cycles", "1", "--sanitize", "--trace"])
-        .arg(&trace)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{stderr}\n{src}");
-    assert!(
-        !stderr.contains("runtime error") && !stderr.contains("Sanitizer"),
-        "undefined behaviour: {stderr}"
-    );
-    let text = std::fs::read_to_string(&trace).unwrap();
-    let mut lines = text.lines();
-    let head: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
-    let row: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
-    (head.into_iter().zip(row).collect(), stderr)
+    common::run_one_scan(dir, name, src)
 }
 
 #[test]

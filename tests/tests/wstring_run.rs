@@ -94,27 +94,7 @@ const TEXTS: &[&str] = &[
 ];
 
 fn run_st(dir: &std::path::Path, src: &str) -> BTreeMap<String, String> {
-    let file = dir.join("w.st");
-    std::fs::write(&file, src).unwrap();
-    let trace = dir.join("w.csv");
-    let out = ladderc()
-        .arg("run")
-        .arg(&file)
-        .args(["--cycles", "1", "--sanitize", "--trace"])
-        .arg(&trace)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{stderr}\n{src}");
-    assert!(
-        !stderr.contains("runtime error") && !stderr.contains("Sanitizer"),
-        "undefined behaviour: {stderr}"
-    );
-    let text = std::fs::read_to_string(&trace).unwrap();
-    let mut lines = text.lines();
-    let head = split_csv(lines.next().unwrap());
-    let row = split_csv(lines.next().unwrap());
-    head.into_iter().zip(row).collect()
+    common::run_one_scan(dir, "w.st", src).0
 }
 
 /// Every WSTRING conversion of the catalogue gives what its STRING twin gives, on the same inputs.
@@ -290,28 +270,4 @@ fn wstring_literals_functions_and_narrowing_give_the_iec_values() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
-}
-
-/// A CSV row of the trace (strings are quoted, quotes doubled; kept with their quotes).
-fn split_csv(line: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut cur = String::new();
-    let mut quoted = false;
-    let mut chars = line.chars().peekable();
-    while let Some(c) = chars.next() {
-        match c {
-            '"' if quoted && chars.peek() == Some(&'"') => {
-                cur.push('"');
-                chars.next();
-            }
-            '"' => {
-                quoted = !quoted;
-                cur.push('"');
-            }
-            ',' if !quoted => out.push(std::mem::take(&mut cur)),
-            c => cur.push(c),
-        }
-    }
-    out.push(cur);
-    out
 }

@@ -76,3 +76,57 @@ pub fn block_report(
     }
     v
 }
+
+/// Runs `src` (written to `dir/name`) for one scan under the sanitizers, asserting exit 0 and no
+/// undefined behaviour, and returns the traced values by column with the run's stderr.
+pub fn run_one_scan(
+    dir: &Path,
+    name: &str,
+    src: &str,
+) -> (std::collections::BTreeMap<String, String>, String) {
+    let file = dir.join(name);
+    std::fs::write(&file, src).unwrap();
+    let trace = dir.join(format!("{name}.csv"));
+    let out = ladderc()
+        .arg("run")
+        .arg(&file)
+        .args(["--cycles", "1", "--sanitize", "--trace"])
+        .arg(&trace)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{stderr}\n{src}");
+    assert!(
+        !stderr.contains("runtime error") && !stderr.contains("Sanitizer"),
+        "undefined behaviour: {stderr}"
+    );
+    let text = std::fs::read_to_string(&trace).unwrap();
+    let mut lines = text.lines();
+    let head = split_csv(lines.next().unwrap());
+    let row = split_csv(lines.next().unwrap());
+    (head.into_iter().zip(row).collect(), stderr)
+}
+
+/// A CSV row of a trace: strings are quoted and keep their quotes; a doubled quote inside is one.
+pub fn split_csv(line: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    let mut quoted = false;
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' if quoted && chars.peek() == Some(&'"') => {
+                cur.push('"');
+                chars.next();
+            }
+            '"' => {
+                quoted = !quoted;
+                cur.push('"');
+            }
+            ',' if !quoted => out.push(std::mem::take(&mut cur)),
+            c => cur.push(c),
+        }
+    }
+    out.push(cur);
+    out
+}
