@@ -12,7 +12,6 @@
 //! be the same text or value), and explicit cases with their expected trace values.
 
 mod common;
-use common::ladderc;
 
 use il_frontend::sema::stdlib::{conversion, ConvTarget};
 use il_frontend::sema::{Elementary, Type};
