@@ -18,6 +18,11 @@ pub const ENV: &str = "LADDERC_MOTION_LIB";
 /// The release static library built by `build.rs` for ladderc's own target.
 pub static EMBEDDED: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/libmotion_lib.a"));
 
+/// How the embedded library's std was built (`build.rs`): `trimmed` (std rebuilt from rust-src without its
+/// backtrace symbolizer, panic=unwind kept), `full` (the toolchain's prebuilt std), `prebuilt`
+/// (`LADDERC_PREBUILT_MOTION_LIB`) or `none` (the empty placeholder of a clippy build).
+pub const EMBEDDED_STD: &str = env!("LADDERC_MOTION_LIB_STD");
+
 /// The motion library's C header (`motion_lib.h`), as generated from motion-lib's C ABI.
 pub const HEADER: &str = include_str!("../../motion-lib/include/motion_lib.h");
 

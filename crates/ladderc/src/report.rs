@@ -14,7 +14,8 @@
 //! linked, stripped executable file, `motion_lib_bytes` what the motion library's sections kept by
 //! `--gc-sections` occupy in it (code, constants, unwind tables; summed from the GNU ld link map; `null`
 //! without a motion library or with a linker whose map is not GNU ld's), and each is `null` when no C
-//! compiler is available.
+//! compiler is available. `motion_lib_std` says how the embedded library's std was built
+//! ([`crate::motion_link::EMBEDDED_STD`]; `null` when `LADDERC_MOTION_LIB` replaces the library).
 //! Invariant: the figures are measured on the generated text and objects, never estimated.
 
 use crate::pipeline::Lowered;
@@ -313,6 +314,10 @@ pub fn json_with(
             "runtime_code_bytes": size.map(|s| s.1),
             "executable_bytes": size.map(|s| s.2),
             "motion_lib_bytes": size.and_then(|s| s.3),
+            "motion_lib_std": match crate::motion_link::source() {
+                crate::motion_link::Source::Embedded => Some(crate::motion_link::EMBEDDED_STD),
+                crate::motion_link::Source::Override(_) => None,
+            },
         },
     });
     serde_json::to_string_pretty(&doc).unwrap_or_default()
