@@ -6,6 +6,7 @@
 //! [`mod@print`] writes a tree back as IL; [`testgen`] generates large valid programs for tests and benches.
 //! [`st`] is the Structured Text front end: ST is parsed and lowered to this IL tree.
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 pub mod ast;
 pub mod layout;
