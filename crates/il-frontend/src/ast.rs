@@ -674,6 +674,7 @@ pub enum CallArgs {
     Formal(Vec<FormalArg>),
 }
 
+/// One formal parameter assignment of a call: `IN := x`, `Q => y`, `NOT Q => y`.
 #[derive(Debug, Clone, Serialize)]
 pub struct FormalArg {
     /// The parameter's name.
