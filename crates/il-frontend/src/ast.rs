@@ -1,6 +1,9 @@
 //! The IL syntax tree: what the parser produces, what the ladder compiler lowers rungs into, what the
 //! semantic checks and the C backend read.
 //!
+//! Input: built by [`crate::parser`] (IL text), [`crate::st::lower`] (ST) and the ladder compiler (PLCopen
+//! XML). Output: read by [`crate::sema`], [`mod@crate::print`] and the back ends.
+//!
 //! Invariants: every node has the span of its source text (for lowered ladder, the span of the XML element
 //! it came from); identifiers keep the user's spelling in `name` and compare by [`Ident::key`] (IEC names are
 //! case-insensitive); the tree holds no resolved information (types, symbols): that is `sema`'s output.

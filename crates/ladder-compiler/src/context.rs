@@ -1,6 +1,9 @@
 //! The compilation context shared by the readers: file id, XML text, diagnostics sink, and helpers that
 //! turn byte offsets and XML elements into spans and engineer-facing locations.
 //!
+//! Input: the file id, the XML text and the caller's `Diagnostics`. Output: spans ([`Ctx::tag`],
+//! [`Ctx::attr_span`], [`Ctx::text_span`]), reported diagnostics, named integer constants for array bounds.
+//!
 //! Invariants: every span produced here lies inside the XML text; diagnostics about a graphical element
 //! carry an [`XmlContext`] naming the POU, the network (rung) and the element's localId.
 

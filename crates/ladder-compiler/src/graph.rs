@@ -6,6 +6,9 @@
 //! Order (documented in the README): networks by the smallest non-zero `executionOrderId` of their
 //! elements, networks without one after them by the top-most then left-most element position (y, then x);
 //! inside a network, data flow first, ties broken the same way, then by localId.
+//! Invariants: every [`Wire::from`] indexes [`Graph::nodes`]; every node belongs to exactly one network;
+//! a duplicate localId (E3014), an element without localId (E3013) or an unsupported element (E3012) is
+//! reported and left out of the graph.
 
 use crate::context::Ctx;
 use crate::xml::Element;

@@ -18,6 +18,10 @@
 //! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot:
 //! `__trig_<localId>` edge detectors, `__tmp_<TYPE>_<n>` temporaries (reused from network to network),
 //! `__out_<localId>` results of functions called under EN, `__skip_<localId>` EN labels.
+//!
+//! Invariants: every emitted instruction carries the span of the XML element it comes from; a network
+//! that cannot be lowered is reported (with POU, network and localId) and skipped, the others are still
+//! lowered.
 
 use crate::catalogue::{self, Family, OperatorBlock, ResultRule};
 use crate::context::{Ctx, Where};

@@ -1,5 +1,8 @@
 //! The Structured Text syntax tree: what [`super::parser`] produces and [`super::lower`] turns into IL.
 //!
+//! Input: built by [`super::parser`] from ST text. Output: read by [`super::infer`] (types of
+//! expressions) and [`super::lower`] (IL instructions).
+//!
 //! Invariants: every node carries the span of its source text; names keep the user's spelling and
 //! compare case-insensitively (they are [`crate::ast::Ident`]s); literals, direct addresses and typed
 //! enum values reuse the IL tree's nodes, so they print and type exactly as in IL. A construct the
