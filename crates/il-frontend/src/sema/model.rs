@@ -234,27 +234,27 @@ pub enum StdFb {
     Ctud,
     /// The typed counters of edition 2/3: `CTU_DINT` ... `CTUD_ULINT` (PV and CV of that type).
     CtuDint,
-    /// `CTU_LINT`.
+    /// `CTU_LINT`: CTU with PV and CV of type LINT (count up on CU).
     CtuLint,
-    /// `CTU_UDINT`.
+    /// `CTU_UDINT`: CTU with PV and CV of type UDINT (count up on CU).
     CtuUdint,
-    /// `CTU_ULINT`.
+    /// `CTU_ULINT`: CTU with PV and CV of type ULINT (count up on CU).
     CtuUlint,
-    /// `CTD_DINT`.
+    /// `CTD_DINT`: CTD with PV and CV of type DINT (count down on CD).
     CtdDint,
-    /// `CTD_LINT`.
+    /// `CTD_LINT`: CTD with PV and CV of type LINT (count down on CD).
     CtdLint,
-    /// `CTD_UDINT`.
+    /// `CTD_UDINT`: CTD with PV and CV of type UDINT (count down on CD).
     CtdUdint,
-    /// `CTD_ULINT`.
+    /// `CTD_ULINT`: CTD with PV and CV of type ULINT (count down on CD).
     CtdUlint,
-    /// `CTUD_DINT`.
+    /// `CTUD_DINT`: CTUD with PV and CV of type DINT (count up on CU and down on CD).
     CtudDint,
-    /// `CTUD_LINT`.
+    /// `CTUD_LINT`: CTUD with PV and CV of type LINT (count up on CU and down on CD).
     CtudLint,
-    /// `CTUD_UDINT`.
+    /// `CTUD_UDINT`: CTUD with PV and CV of type UDINT (count up on CU and down on CD).
     CtudUdint,
-    /// `CTUD_ULINT`.
+    /// `CTUD_ULINT`: CTUD with PV and CV of type ULINT (count up on CU and down on CD).
     CtudUlint,
 }
 
@@ -435,17 +435,17 @@ impl Dim {
 pub const DEFAULT_STRING_LEN: u32 = 254;
 
 impl Type {
-    /// `BOOL`.
+    /// `BOOL`, i.e. `Type::Elementary(Elementary::Bool)`.
     pub const BOOL: Type = Type::Elementary(E::Bool);
-    /// `INT`.
+    /// `INT`, i.e. `Type::Elementary(Elementary::Int)`.
     pub const INT: Type = Type::Elementary(E::Int);
-    /// `DINT`.
+    /// `DINT`, i.e. `Type::Elementary(Elementary::Dint)`.
     pub const DINT: Type = Type::Elementary(E::Dint);
-    /// `REAL`.
+    /// `REAL`, i.e. `Type::Elementary(Elementary::Real)`.
     pub const REAL: Type = Type::Elementary(E::Real);
-    /// `LREAL`.
+    /// `LREAL`, i.e. `Type::Elementary(Elementary::Lreal)`.
     pub const LREAL: Type = Type::Elementary(E::Lreal);
-    /// `TIME`.
+    /// `TIME`, i.e. `Type::Elementary(Elementary::Time)`.
     pub const TIME: Type = Type::Elementary(E::Time);
 
     /// The elementary type `e` as a [`Type`].

@@ -280,35 +280,35 @@ pub enum UnaryOp {
 /// `+`/`-`, `*`/`/`/`MOD`, `**`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum BinaryOp {
-    /// `OR`
+    /// `OR`: Boolean or bitwise OR (lowest precedence).
     Or,
-    /// `XOR`
+    /// `XOR`: exclusive OR.
     Xor,
-    /// `AND` or `&`
+    /// `AND` or `&`: Boolean or bitwise AND.
     And,
-    /// `=`
+    /// `=`: equality (BOOL result).
     Eq,
-    /// `<>`
+    /// `<>`: inequality.
     Ne,
-    /// `<`
+    /// `<`: less than.
     Lt,
-    /// `>`
+    /// `>`: greater than.
     Gt,
-    /// `<=`
+    /// `<=`: less or equal.
     Le,
-    /// `>=`
+    /// `>=`: greater or equal.
     Ge,
-    /// `+`
+    /// `+`: addition (also TIME and date arithmetic).
     Add,
-    /// `-`
+    /// `-`: subtraction.
     Sub,
-    /// `*`
+    /// `*`: multiplication.
     Mul,
-    /// `/`
+    /// `/`: division (integers: truncated toward zero).
     Div,
-    /// `MOD`
+    /// `MOD`: remainder of integer division.
     Mod,
-    /// `**` (exponentiation, `EXPT`)
+    /// `**`: exponentiation, lowered to `EXPT` (highest precedence).
     Power,
 }
 

@@ -251,19 +251,19 @@ pub enum Tok {
     TypePrefix,
     /// A direct address `%IX0.1`: area, size, location numbers.
     Address(Area, AddressSize, Vec<u32>),
-    /// `(`
+    /// `(`: opens a call's arguments or a parenthesised expression.
     LParen,
     /// `)`
     RParen,
-    /// `[`
+    /// `[`: opens array subscripts.
     LBracket,
     /// `]`
     RBracket,
-    /// `,`
+    /// `,`: separates arguments, subscripts and CASE labels.
     Comma,
-    /// `;`
+    /// `;`: ends a statement.
     Semi,
-    /// `:`
+    /// `:`: ends a CASE label list.
     Colon,
     /// `:=` (assignment, input argument).
     Assign,
@@ -275,15 +275,15 @@ pub enum Tok {
     Dot,
     /// `&` (AND).
     Amp,
-    /// `+`
+    /// `+`: addition or unary plus.
     Plus,
-    /// `-`
+    /// `-`: subtraction or negation.
     Minus,
-    /// `*`
+    /// `*`: multiplication.
     Star,
-    /// `**`
+    /// `**`: exponentiation.
     Power,
-    /// `/`
+    /// `/`: division.
     Slash,
     /// `<`
     Lt,
@@ -293,9 +293,9 @@ pub enum Tok {
     Le,
     /// `>=`
     Ge,
-    /// `=`
+    /// `=`: equality (assignment is `:=`).
     Eq,
-    /// `<>`
+    /// `<>`: inequality.
     Ne,
     /// `^` (pointer dereference: not supported, the parser reports E0108).
     Caret,
@@ -308,7 +308,7 @@ pub enum Tok {
 /// A token and its byte range in the lexed text.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Token {
-    /// The token.
+    /// The token kind, with its decoded value for literals.
     pub tok: Tok,
     /// Its byte range in the lexed text.
     pub range: Range<usize>,
