@@ -14,7 +14,8 @@ use serde::Serialize;
 /// A name as written, with its span. Compare with [`Ident::key`] or [`Ident::is`].
 #[derive(Debug, Clone, Serialize)]
 pub struct Ident {
-    /// The identifier as the user spelled it (case kept for messages and printing; compare with [`Ident::key`]).
+    /// The identifier as the user spelled it (case kept for messages and printing; compare with
+    /// [`Ident::key`]).
     pub name: String,
     /// Where the name stands in the source (for lowered PLCopen XML, the element it came from).
     pub span: Span,
@@ -191,14 +192,15 @@ pub struct Literal {
     pub span: Span,
 }
 
-/// The decoded value of a literal (IEC 61131-3 2.2); units are fixed: nanoseconds for durations and times of day.
+/// The decoded value of a literal (IEC 61131-3 2.2); units are fixed: nanoseconds for durations and times
+/// of day.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum LiteralKind {
     /// Any integer literal (decimal, `2#`, `8#`, `16#`), sign applied.
     Int(i128),
     /// `2.5`, `1.0E-3`: any real literal.
     Real(f64),
-    /// `TRUE` / `FALSE` (also `BOOL#1` / `BOOL#0`).
+    /// `TRUE` / `FALSE`, also after a prefix (`BOOL#TRUE`; `BOOL#1` is an `Int` with a `BOOL` prefix).
     Bool(bool),
     /// `T#`/`TIME#`/`LTIME#` duration in nanoseconds (sign applied).
     Duration(i128),
@@ -756,7 +758,7 @@ pub struct ProgramInstance {
     pub name: Ident,
     /// `RETAIN` after `PROGRAM`: the instance's variables are retentive.
     pub retain: bool,
-    /// `WITH task`: the task that runs it; `None` runs it in the default cyclic task.
+    /// `WITH task`: the task that runs it; `None` without `WITH` (the program runs in the background).
     pub task: Option<Ident>,
     /// The program POU instantiated.
     pub type_name: Ident,

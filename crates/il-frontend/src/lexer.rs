@@ -434,9 +434,11 @@ pub enum Word {
     VarGlobal,
     /// `VAR_EXTERNAL` (reserved): block referencing globals.
     VarExternal,
-    /// `VAR_ACCESS` (reserved): access path block (reserved so it is never a name; the grammar does not accept it).
+    /// `VAR_ACCESS` (reserved): access path block (reserved so it is never a name; the grammar does not
+    /// accept it).
     VarAccess,
-    /// `VAR_CONFIG` (reserved): instance-specific initialisation block (reserved so it is never a name; the grammar does not accept it).
+    /// `VAR_CONFIG` (reserved): instance-specific initialisation block (reserved so it is never a name; the
+    /// grammar does not accept it).
     VarConfig,
     /// `END_VAR` (reserved): closes a variable block.
     EndVar,

@@ -59,7 +59,8 @@ pub struct TopParts {
 }
 
 impl TopParts {
-    /// Files one top-level item: elements and `VAR_GLOBAL` blocks to `items`, the rest to the implicit program.
+    /// Files one top-level item: elements and `VAR_GLOBAL` blocks to `items`, the rest to the implicit
+    /// program.
     pub fn add(&mut self, item: TopItem) {
         let at = self.items.len();
         match item {
@@ -250,7 +251,8 @@ impl<'s> Ctx<'s> {
 
     // ------------------------------------------------------------ instructions
 
-    /// Builds `LD x`, `ANDN y`, `NOT` ...; reports a missing operand (E0012), an operand after `NOT` (E0013) and extra operands (E0301), returning `None` when the line is unusable.
+    /// Builds `LD x`, `ANDN y`, `NOT` ...; reports a missing operand (E0012), an operand after `NOT`
+    /// (E0013) and extra operands (E0301), returning `None` when the line is unusable.
     pub fn simple(
         &mut self,
         (op, negate, _word): SimpleOp,
@@ -347,7 +349,8 @@ impl<'s> Ctx<'s> {
         })
     }
 
-    /// Builds a deferred operator `AND( ... )`; reports an operator that cannot take a parenthesised operand (E0021).
+    /// Builds a deferred operator `AND( ... )`; reports an operator that cannot take a parenthesised
+    /// operand (E0021).
     #[allow(clippy::too_many_arguments)]
     pub fn deferred(
         &mut self,
@@ -533,7 +536,8 @@ impl<'s> Ctx<'s> {
 
     // ------------------------------------------------------------ declarations
 
-    /// Builds a POU; reports a FUNCTION without result type (E0018) and a result type on a program or FB (E0011, dropped).
+    /// Builds a POU; reports a FUNCTION without result type (E0018) and a result type on a program or FB
+    /// (E0011, dropped).
     pub fn pou(
         &mut self,
         kind: PouKind,
@@ -633,7 +637,8 @@ impl<'s> Ctx<'s> {
         }
     }
 
-    /// Builds one [`VarDecl`] per name of `a, b : T := v;`, sharing location, type, edge qualifier and initial value.
+    /// Builds one [`VarDecl`] per name of `a, b : T := v;`, sharing location, type, edge qualifier and
+    /// initial value.
     #[allow(clippy::too_many_arguments)]
     pub fn var_decls(
         &mut self,
@@ -677,7 +682,8 @@ impl<'s> Ctx<'s> {
             .collect()
     }
 
-    /// Converts `v` to the integer type the tree stores (a string length, a repeat count, a priority); out of range is error E0005 and gives `T::default()`.
+    /// Converts `v` to the integer type the tree stores (a string length, a repeat count, a priority); out
+    /// of range is error E0005 and gives `T::default()`.
     pub fn int_in<T>(&mut self, v: i128, what: &str, l: usize, r: usize) -> T
     where
         T: TryFrom<i128> + Default,
@@ -696,7 +702,8 @@ impl<'s> Ctx<'s> {
 
     // ------------------------------------------------------------ configurations
 
-    /// Builds a configuration; tasks and programs written outside any `RESOURCE` go to a resource named after the configuration (also when there is no resource at all).
+    /// Builds a configuration; tasks and programs written outside any `RESOURCE` go to a resource named
+    /// after the configuration (also when there is no resource at all).
     pub fn configuration(
         &mut self,
         name: Ident,
@@ -772,7 +779,8 @@ impl<'s> Ctx<'s> {
         res
     }
 
-    /// Builds a task from its `INTERVAL`, `SINGLE`, `PRIORITY` settings; any other setting, or a priority that is not a non-negative integer, is error E0020.
+    /// Builds a task from its `INTERVAL`, `SINGLE`, `PRIORITY` settings; any other setting, or a priority
+    /// that is not a non-negative integer, is error E0020.
     pub fn task(
         &mut self,
         name: Ident,

@@ -209,7 +209,8 @@ pub fn is_library_type(name: &str) -> bool {
         )
 }
 
-/// Whether `u` (already upper case) names an elementary type, `STRING`/`WSTRING` and long date/time names included.
+/// Whether `u` (already upper case) names an elementary type, `STRING`/`WSTRING` and long date/time names
+/// included.
 pub fn is_elementary(u: &str) -> bool {
     matches!(
         u,
@@ -268,7 +269,8 @@ pub enum OperatorBlock {
 pub struct StdFunction {
     /// How the result type follows from the inputs.
     pub rule: ResultRule,
-    /// The IL operator the block lowers to directly, if any; `None` for functions called by name (`LIMIT`, `SEL`).
+    /// The IL operator the block lowers to directly, if any; `None` for functions called by name (`LIMIT`,
+    /// `SEL`).
     pub operator: Option<OperatorBlock>,
     /// Leading selector inputs that do not take part in the result type.
     pub selectors: usize,

@@ -11,7 +11,8 @@ use crate::xml::Element;
 use diagnostics::{Code, Diagnostic, Diagnostics, FileId, Span, XmlContext};
 use std::collections::HashMap;
 
-/// The reading context of one PLCopen XML file: where spans point, where diagnostics go, which named constants are known.
+/// The reading context of one PLCopen XML file: where spans point, where diagnostics go, which named
+/// constants are known.
 pub struct Ctx<'a> {
     /// The XML file's id (every span points into it).
     pub file: FileId,

@@ -382,7 +382,8 @@ pub fn collect_constants(
     found
 }
 
-/// A variable list element (`<localVars constant="true" retain="true">...`) as a [`VarBlock`] of `kind`, one declaration per `<variable>`.
+/// A variable list element (`<localVars constant="true" retain="true">...`) as a [`VarBlock`] of `kind`,
+/// one declaration per `<variable>`.
 pub fn var_block(ctx: &mut Ctx, list: &Element, kind: VarKind) -> VarBlock {
     let flag = |n: &str| {
         list.attr(n)

@@ -20,9 +20,11 @@ use std::collections::HashMap;
 pub enum Edge {
     /// No `edge` attribute (or `none`): the element passes the level.
     None,
-    /// `edge="rising"`: a positive transition-sensing contact/coil (`-|P|-`), TRUE for one scan when the value rises.
+    /// `edge="rising"`: a positive transition-sensing contact/coil (`-|P|-`), TRUE for one scan when the
+    /// value rises.
     Rising,
-    /// `edge="falling"`: a negative transition-sensing contact/coil (`-|N|-`), TRUE for one scan when it falls.
+    /// `edge="falling"`: a negative transition-sensing contact/coil (`-|N|-`), TRUE for one scan when it
+    /// falls.
     Falling,
 }
 
@@ -42,7 +44,8 @@ pub enum Storage {
 pub struct Wire {
     /// Index in [`Graph::nodes`] of the element the wire comes from.
     pub from: usize,
-    /// The source block's output pin (`formalParameter` of the `<connection>`); `None` for a single-output element.
+    /// The source block's output pin (`formalParameter` of the `<connection>`); `None` for a single-output
+    /// element.
     pub pin: Option<String>,
     /// The `<connection>` element.
     pub span: Span,
@@ -81,7 +84,8 @@ pub enum Kind {
     LeftRail,
     /// `<rightPowerRail>`: the right end of a rung; nothing is computed there.
     RightRail,
-    /// `<contact>`: reads a BOOL variable into the power flow (series when chained, parallel when wires join).
+    /// `<contact>`: reads a BOOL variable into the power flow (series when chained, parallel when wires
+    /// join).
     Contact {
         /// The variable read, as written in `<variable>`.
         var: String,

@@ -127,7 +127,8 @@ pub struct BodyLowering<'i> {
 }
 
 impl<'i> BodyLowering<'i> {
-    /// The lowering state of `pou` (its variables and the project's globals known); `body_span` is the span of the body element, where hidden declarations point.
+    /// The lowering state of `pou` (its variables and the project's globals known); `body_span` is the span
+    /// of the body element, where hidden declarations point.
     pub fn new(
         index: &'i Index,
         pou: &'i il_frontend::ast::Pou,

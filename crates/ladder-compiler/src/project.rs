@@ -22,7 +22,8 @@ use std::collections::{HashMap, HashSet};
 /// Schema version of the file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Version {
-    /// `http://www.plcopen.org/xml/tc6_0201` (TC6 XML 2.01), and the default for an unknown namespace (W3001).
+    /// `http://www.plcopen.org/xml/tc6_0201` (TC6 XML 2.01), and the default for an unknown namespace
+    /// (W3001).
     V201,
     /// `http://www.plcopen.org/xml/tc6_0200` (TC6 XML 2.0).
     V200,
@@ -54,7 +55,8 @@ pub struct Index {
     pub globals: HashMap<String, TypeRef>,
 }
 
-/// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a root that is not `<project>` is E3002 and gives an empty unit.
+/// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a
+/// root that is not `<project>` is E3002 and gives an empty unit.
 pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     let mut unit = CompilationUnit::default();
     if root.name != "project" {

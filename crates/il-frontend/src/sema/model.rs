@@ -937,7 +937,8 @@ pub struct InstrInfo {
     /// The operand's type (for a deferred operator, the nested list's value); for an untyped literal
     /// operand, the type its context fixed.
     pub operand: Option<Type>,
-    /// What the instruction calls (functions, FB instances, operators mapped onto standard functions), if anything.
+    /// What the instruction calls (functions, FB instances, operators mapped onto standard functions), if
+    /// anything.
     pub callee: Option<Callee>,
     /// Call arguments bound to parameters, in evaluation order (function calls, `CAL` with arguments).
     pub args: Vec<ArgBinding>,

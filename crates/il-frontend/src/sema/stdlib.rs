@@ -115,7 +115,8 @@ pub struct StdFunction {
     pub result: Ret,
     /// Whether `TIME_ARITH` overloads apply (ADD, SUB, MUL, DIV).
     pub time_arith: bool,
-    /// One line on what the function computes (`"IN1 modulo IN2 (0 when IN2 = 0)"`), for tools that list the standard functions.
+    /// One line on what the function computes (`"IN1 modulo IN2 (0 when IN2 = 0)"`), for tools that list
+    /// the standard functions.
     pub doc: &'static str,
 }
 

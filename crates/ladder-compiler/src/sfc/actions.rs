@@ -47,7 +47,8 @@ pub enum Qualifier {
 }
 
 impl Qualifier {
-    /// The qualifier of the `qualifier` attribute (case-insensitive, blank means `N`); `None` for an unknown one.
+    /// The qualifier of the `qualifier` attribute (case-insensitive, blank means `N`); `None` for an
+    /// unknown one.
     pub fn parse(s: &str) -> Option<Qualifier> {
         Some(match s.trim().to_ascii_uppercase().as_str() {
             "" | "N" => Qualifier::N,

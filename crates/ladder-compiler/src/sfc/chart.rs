@@ -26,7 +26,8 @@ pub const SFC_ELEMENTS: &[&str] = &[
     "actionBlock",
 ];
 
-/// One `<step>` of the chart (IEC 61131-3 2.6.2): its flag `Step.X` and elapsed time `Step.T` become hidden variables.
+/// One `<step>` of the chart (IEC 61131-3 2.6.2): its flag `Step.X` and elapsed time `Step.T` become hidden
+/// variables.
 #[derive(Debug, Clone)]
 pub struct Step {
     /// The `localId` attribute.

@@ -18,7 +18,8 @@ use crate::xml::Element;
 use diagnostics::code;
 use il_frontend::ast::{IlStmt, Op, Pou};
 
-/// Lowers the bodies inside a chart (transition conditions, action bodies) in any language into the POU's IL, with unique labels and hidden names.
+/// Lowers the bodies inside a chart (transition conditions, action bodies) in any language into the POU's
+/// IL, with unique labels and hidden names.
 pub struct Snippets<'i> {
     /// The project's POU interfaces, types and globals.
     pub index: &'i Index,
