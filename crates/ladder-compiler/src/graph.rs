@@ -58,7 +58,8 @@ pub struct InPin {
     pub name: String,
     /// `negated="true"`: the pin inverts the value (a circle on the pin).
     pub negated: bool,
-    /// Edge detection on the pin (`CLK` of a drawn rising edge).
+    /// Edge detection on the pin: with `edge="rising"` (`"falling"`) the block sees TRUE only in the scan
+    /// in which the wired value rises (falls), through a hidden R_TRIG (F_TRIG).
     pub edge: Edge,
     /// The wires into the pin (OR-combined when several, as in LD).
     pub wires: Vec<Wire>,
