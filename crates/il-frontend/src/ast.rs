@@ -1,6 +1,9 @@
 //! The IL syntax tree: what the parser produces, what the ladder compiler lowers rungs into, what the
 //! semantic checks and the C backend read.
 //!
+//! Input: built by [`crate::parser`] (IL text), [`crate::st::lower`] (ST) and the ladder compiler (PLCopen
+//! XML). Output: read by [`crate::sema`], [`mod@crate::print`] and the back ends.
+//!
 //! Invariants: every node has the span of its source text (for lowered ladder, the span of the XML element
 //! it came from); identifiers keep the user's spelling in `name` and compare by [`Ident::key`] (IEC names are
 //! case-insensitive); the tree holds no resolved information (types, symbols): that is `sema`'s output.
@@ -11,11 +14,15 @@ use serde::Serialize;
 /// A name as written, with its span. Compare with [`Ident::key`] or [`Ident::is`].
 #[derive(Debug, Clone, Serialize)]
 pub struct Ident {
+    /// The identifier as the user spelled it (case kept for messages and printing; compare with
+    /// [`Ident::key`]).
     pub name: String,
+    /// Where the name stands in the source (for lowered PLCopen XML, the element it came from).
     pub span: Span,
 }
 
 impl Ident {
+    /// An identifier with the given spelling and span.
     pub fn new(name: impl Into<String>, span: Span) -> Self {
         Ident {
             name: name.into(),
@@ -26,6 +33,7 @@ impl Ident {
     pub fn key(&self) -> String {
         self.name.to_ascii_uppercase()
     }
+    /// Whether this name equals `other`, ignoring ASCII case (IEC 61131-3 names are case-insensitive).
     pub fn is(&self, other: &str) -> bool {
         self.name.eq_ignore_ascii_case(other)
     }
@@ -41,13 +49,18 @@ impl PartialEq for Ident {
 /// One source file's library elements, in source order.
 #[derive(Debug, Clone, Default, Serialize)]
 pub struct CompilationUnit {
+    /// The `TYPE` blocks, POUs, configurations and global variable blocks, in source order.
     pub items: Vec<LibraryElement>,
 }
 
+/// One top-level element of a source file (IEC 61131-3 library element: data types, POU, configuration).
 #[derive(Debug, Clone, Serialize)]
 pub enum LibraryElement {
+    /// A `TYPE ... END_TYPE` block with its declarations, in order.
     DataTypes(Vec<TypeDecl>),
+    /// A `PROGRAM`, `FUNCTION_BLOCK` or `FUNCTION`.
     Pou(Pou),
+    /// A `CONFIGURATION ... END_CONFIGURATION` with its resources, tasks and program instances.
     Configuration(Configuration),
     /// `VAR_GLOBAL` outside a configuration (accepted as an extension; it belongs to every program).
     GlobalVars(VarBlock),
@@ -62,28 +75,44 @@ pub enum TypeRef {
     Named(Ident),
     /// `STRING`, `STRING[20]`, `WSTRING(10)`.
     String {
+        /// `WSTRING` (UTF-16 characters) rather than `STRING` (bytes).
         wide: bool,
+        /// The declared maximum length in characters (`STRING[20]` -> 20); `None` takes the default (254).
         length: Option<u32>,
+        /// The whole type text, from the keyword to the closing bracket.
         span: Span,
     },
     /// `ARRAY [1..10, 0..3] OF INT`.
     Array {
+        /// One `lower..upper` range per dimension, in order.
         dims: Vec<ArrayDim>,
+        /// The element type after `OF`.
         element: Box<TypeRef>,
+        /// The whole type text, from `ARRAY` to the element type.
         span: Span,
     },
     /// `INT (0..100)`.
     Subrange {
+        /// The elementary integer type the range restricts (`INT` in `INT (0..100)`).
         base: Ident,
+        /// The smallest allowed value (inclusive).
         lower: i128,
+        /// The largest allowed value (inclusive).
         upper: i128,
+        /// The whole type text.
         span: Span,
     },
     /// An inline enumeration `(red, green)`.
-    Enum { values: Vec<Ident>, span: Span },
+    Enum {
+        /// The values in order.
+        values: Vec<Ident>,
+        /// From `(` to `)`.
+        span: Span,
+    },
 }
 
 impl TypeRef {
+    /// The source span of the type text (the name's span for [`TypeRef::Named`]).
     pub fn span(&self) -> Span {
         match self {
             TypeRef::Named(i) => i.span,
@@ -95,39 +124,56 @@ impl TypeRef {
     }
 }
 
+/// One dimension of an `ARRAY` type: `1..10`. Bounds are inclusive; sema checks `lower <= upper`.
 #[derive(Debug, Clone, Serialize)]
 pub struct ArrayDim {
+    /// The first valid index (inclusive).
     pub lower: i128,
+    /// The last valid index (inclusive).
     pub upper: i128,
+    /// The `lower..upper` text.
     pub span: Span,
 }
 
 /// `TYPE name : ... ; END_TYPE` entry.
 #[derive(Debug, Clone, Serialize)]
 pub struct TypeDecl {
+    /// The type name being declared.
     pub name: Ident,
+    /// What the name stands for: an alias/subrange/array, a structure or an enumeration.
     pub def: TypeDef,
+    /// From the name to the terminating `;` (or `END_STRUCT;`).
     pub span: Span,
 }
 
+/// The right-hand side of a `TYPE` entry (IEC 61131-3 derived data types, 2.3.3).
 #[derive(Debug, Clone, Serialize)]
 pub enum TypeDef {
     /// `T : INT := 5;`, `T : ARRAY [..] OF INT := [...]`, `T : INT (0..9)`, `T : STRING[8]`.
     Alias {
+        /// The type the new name stands for.
         ty: TypeRef,
+        /// The default initial value of variables of this type (`:= 5`), if written.
         init: Option<Initializer>,
     },
+    /// `STRUCT a : INT; b : BOOL; END_STRUCT`: a structure with named fields.
     Struct {
+        /// The fields in declaration order (each with its type and optional initial value).
         fields: Vec<VarDecl>,
     },
+    /// `(red, green := 5, blue) := green`: an enumeration with its values.
     Enum {
+        /// The values in declaration order.
         values: Vec<EnumValue>,
+        /// The default value (`:= green` after the list), if written; otherwise the first value.
         init: Option<Ident>,
     },
 }
 
+/// One value of an enumerated type, `red` or `red := 3`.
 #[derive(Debug, Clone, Serialize)]
 pub struct EnumValue {
+    /// The value's name.
     pub name: Ident,
     /// `red := 3` (an extension most tools accept).
     pub value: Option<i128>,
@@ -135,19 +181,26 @@ pub struct EnumValue {
 
 // ---------------------------------------------------------------- literals and operands
 
+/// A constant written in the source: `5`, `INT#5`, `2.5`, `TRUE`, `T#1s`, `'text'`.
 #[derive(Debug, Clone, Serialize)]
 pub struct Literal {
+    /// The decoded value.
     pub kind: LiteralKind,
     /// The `INT#` / `REAL#` / `BOOL#` prefix of a typed literal, if written.
     pub type_prefix: Option<Ident>,
+    /// The literal as written, prefix included.
     pub span: Span,
 }
 
+/// The decoded value of a literal (IEC 61131-3 2.2); units are fixed: nanoseconds for durations and times
+/// of day.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum LiteralKind {
     /// Any integer literal (decimal, `2#`, `8#`, `16#`), sign applied.
     Int(i128),
+    /// `2.5`, `1.0E-3`: any real literal.
     Real(f64),
+    /// `TRUE` / `FALSE`, also after a prefix (`BOOL#TRUE`; `BOOL#1` is an `Int` with a `BOOL` prefix).
     Bool(bool),
     /// `T#`/`TIME#`/`LTIME#` duration in nanoseconds (sign applied).
     Duration(i128),
@@ -159,7 +212,9 @@ pub enum LiteralKind {
     DateAndTime(i128),
     /// `'...'` (wide = false) or `"..."` (wide = true), `$` escapes already decoded.
     String {
+        /// `true` for a `"..."` WSTRING literal, `false` for a `'...'` STRING literal.
         wide: bool,
+        /// The characters with `$` escapes decoded (`'$N'` holds a newline).
         value: String,
     },
 }
@@ -167,59 +222,84 @@ pub enum LiteralKind {
 /// `%IX0.1`, `%QW3`, `%MD10`, `%I*` (location left open).
 #[derive(Debug, Clone, Serialize)]
 pub struct DirectAddress {
+    /// The memory area: `I` (inputs), `Q` (outputs) or `M` (markers).
     pub area: Area,
+    /// The size letter: `X` (or none), `B`, `W`, `D`, `L`.
     pub size: AddressSize,
     /// The dotted numbers (`%IX1.2.3` -> [1, 2, 3]); empty for `%I*`.
     pub path: Vec<u32>,
+    /// The `%...` text.
     pub span: Span,
 }
 
+/// The area letter of a direct address (IEC 61131-3 2.4.1.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum Area {
+    /// `%I`: an input of the process image.
     Input,
+    /// `%Q`: an output of the process image.
     Output,
+    /// `%M`: a memory (marker) location.
     Memory,
 }
 
+/// The size letter of a direct address (IEC 61131-3 2.4.1.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum AddressSize {
     /// No size letter: a bit (`%I0.1`), as `X`.
     Bit,
+    /// `B`: 8 bits.
     Byte,
+    /// `W`: 16 bits.
     Word,
+    /// `D`: 32 bits.
     DWord,
+    /// `L`: 64 bits.
     LWord,
 }
 
 /// A variable access: `x`, `inst.Q`, `arr[3]`, `s.a[i].b`.
 #[derive(Debug, Clone, Serialize)]
 pub struct VarRef {
+    /// The variable (or FB instance) named first.
     pub base: Ident,
+    /// The `.field` and `[index]` parts after the base, in order.
     pub accessors: Vec<Accessor>,
+    /// The whole access text.
     pub span: Span,
 }
 
+/// One step of a variable access after its base name.
 #[derive(Debug, Clone, Serialize)]
 pub enum Accessor {
+    /// `.name`: a structure field or an FB instance's input/output.
     Field(Ident),
+    /// `[i, j]`: array subscripts, one per dimension.
     Index(Vec<Operand>),
 }
 
 /// What an IL instruction works on.
 #[derive(Debug, Clone, Serialize)]
 pub enum Operand {
+    /// A constant: `LD 5`, `ADD T#1s`.
     Literal(Literal),
+    /// A (possibly structured or indexed) variable: `LD x`, `ST inst.IN`.
     Var(VarRef),
+    /// A direct address: `LD %IX0.1`.
     Address(DirectAddress),
     /// An enumerated value written with its type, `Color#red` (a plain `red` parses as a `Var`).
     EnumValue {
+        /// The enumerated type before `#`.
         type_name: Ident,
+        /// The value after `#`.
         value: Ident,
+        /// The whole `Type#value` text.
         span: Span,
     },
 }
 
 impl Operand {
+    /// The operand's source span.
     pub fn span(&self) -> Span {
         match self {
             Operand::Literal(l) => l.span,
@@ -232,37 +312,54 @@ impl Operand {
 
 // ---------------------------------------------------------------- declarations
 
+/// The section keyword of a variable block (IEC 61131-3 2.4.3).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum VarKind {
+    /// `VAR`: a local variable, kept between calls in programs and FBs.
     Local,
+    /// `VAR_INPUT`: an input parameter.
     Input,
+    /// `VAR_OUTPUT`: an output parameter.
     Output,
+    /// `VAR_IN_OUT`: a parameter passed by reference.
     InOut,
+    /// `VAR_TEMP`: a local variable reinitialised at each call.
     Temp,
+    /// `VAR_GLOBAL`: a global variable (in a configuration, resource or at top level).
     Global,
+    /// `VAR_EXTERNAL`: a reference to a global variable declared elsewhere.
     External,
 }
 
 /// `VAR_INPUT CONSTANT RETAIN ... END_VAR`.
 #[derive(Debug, Clone, Serialize)]
 pub struct VarBlock {
+    /// The section keyword (`VAR`, `VAR_INPUT`, ...).
     pub kind: VarKind,
+    /// `CONSTANT`: the variables cannot be written.
     pub constant: bool,
+    /// `RETAIN`: the variables keep their values across a warm restart.
     pub retain: bool,
+    /// The declared variables, one per name, in order.
     pub vars: Vec<VarDecl>,
+    /// From the section keyword to `END_VAR`.
     pub span: Span,
 }
 
 /// One declared name (`a, b : INT := 3;` yields two `VarDecl`s sharing type and initial value).
 #[derive(Debug, Clone, Serialize)]
 pub struct VarDecl {
+    /// The declared name.
     pub name: Ident,
     /// `AT %IX0.1`.
     pub location: Option<DirectAddress>,
+    /// The declared type.
     pub ty: TypeRef,
+    /// The initial value (`:= 3`), if written.
     pub init: Option<Initializer>,
     /// `R_EDGE` / `F_EDGE` after the type (edge-triggered BOOL input of a function block).
     pub edge: Option<Edge>,
+    /// The declaration text, from the name (or the first name of a list) to the `;`.
     pub span: Span,
 }
 
@@ -270,7 +367,9 @@ pub struct VarDecl {
 /// rose (`R_EDGE`) or fell (`F_EDGE`), as if an implicit R_TRIG/F_TRIG instance filtered it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum Edge {
+    /// `R_EDGE`: TRUE in the call in which the input rose.
     Rising,
+    /// `F_EDGE`: TRUE in the call in which the input fell.
     Falling,
 }
 
@@ -298,22 +397,26 @@ impl VarDecl {
         }
     }
 
+    /// Sets the initial value.
     pub fn with_init(mut self, init: Initializer) -> Self {
         self.init = Some(init);
         self
     }
 
+    /// Sets the `R_EDGE` / `F_EDGE` qualifier.
     pub fn with_edge(mut self, edge: Edge) -> Self {
         self.edge = Some(edge);
         self
     }
 
+    /// Sets the `AT %...` location.
     pub fn with_location(mut self, location: DirectAddress) -> Self {
         self.location = Some(location);
         self
     }
 }
 
+/// The initial value of a declaration (`:= ...`), IEC 61131-3 2.4.2.
 #[derive(Debug, Clone, Serialize)]
 pub enum Initializer {
     /// A literal, an enum value, or a named constant.
@@ -324,42 +427,60 @@ pub enum Initializer {
     Struct(Vec<(Ident, Initializer)>, Span),
 }
 
+/// One element of an array initialiser: `5` or `3(0)` (three zeros).
 #[derive(Debug, Clone, Serialize)]
 pub struct ArrayInitElement {
+    /// The repeat count `n` of `n(value)`; `None` for a single element.
     pub repeat: Option<u32>,
+    /// The value (repeated `repeat` times).
     pub value: Initializer,
 }
 
 // ---------------------------------------------------------------- POUs
 
+/// The kind of program organisation unit (IEC 61131-3 2.5).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum PouKind {
+    /// `PROGRAM`: instantiated by a configuration, or run as the implicit main program.
     Program,
+    /// `FUNCTION_BLOCK`: has state; called through instances with `CAL`.
     FunctionBlock,
+    /// `FUNCTION`: no state; returns one value through the current result.
     Function,
 }
 
+/// A program organisation unit (POU): header, variable blocks and IL body.
 #[derive(Debug, Clone, Serialize)]
 pub struct Pou {
+    /// `PROGRAM`, `FUNCTION_BLOCK` or `FUNCTION`.
     pub kind: PouKind,
+    /// The POU name (the type name for function blocks and programs).
     pub name: Ident,
     /// The result type of a FUNCTION.
     pub return_type: Option<TypeRef>,
+    /// The `VAR*` blocks in source order.
     pub var_blocks: Vec<VarBlock>,
+    /// The instruction list: for lowered LD/FBD networks, the rungs one after the other.
     pub body: Vec<IlStmt>,
+    /// From the POU keyword to `END_*`.
     pub span: Span,
 }
 
 /// A body is a list of labels and instructions (a label may stand alone on its line, or before `END_*`).
 #[derive(Debug, Clone, Serialize)]
 pub enum IlStmt {
+    /// `name:` - a jump target.
     Label(Ident),
+    /// An IL instruction.
     Instr(Instruction),
 }
 
+/// One IL instruction with its span.
 #[derive(Debug, Clone, Serialize)]
 pub struct Instruction {
+    /// What the instruction does.
     pub kind: InstrKind,
+    /// The instruction's text (for a deferred operator, from the operator to the closing `)`).
     pub span: Span,
 }
 
@@ -388,33 +509,50 @@ impl Drop for Instruction {
 /// Simple operators, with the `N` modifier folded into `negate` (`LDN`, `ANDN`, `STN`, `&N`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum Op {
+    /// `LD x`: load x into the current result (`LDN`: its negation).
     Ld,
+    /// `ST x`: store the current result into x (`STN`: its negation).
     St,
     /// `S x`: set x if the current result is TRUE.
     S,
     /// `R x`: reset x if the current result is TRUE.
     R,
+    /// `AND x` / `&`: current result AND x (`ANDN`: AND NOT x); a series contact in a rung.
     And,
+    /// `OR x`: current result OR x (`ORN`: OR NOT x); a parallel branch in a rung.
     Or,
+    /// `XOR x`: current result XOR x.
     Xor,
     /// `NOT` (no operand): invert the current result.
     Not,
+    /// `ADD x`: current result + x.
     Add,
+    /// `SUB x`: current result - x.
     Sub,
+    /// `MUL x`: current result * x.
     Mul,
+    /// `DIV x`: current result / x.
     Div,
+    /// `MOD x`: remainder of current result / x.
     Mod,
+    /// `GT x`: current result > x (BOOL result).
     Gt,
+    /// `GE x`: current result >= x.
     Ge,
+    /// `EQ x`: current result = x.
     Eq,
+    /// `NE x`: current result <> x.
     Ne,
+    /// `LE x`: current result <= x.
     Le,
+    /// `LT x`: current result < x.
     Lt,
 }
 
 /// The `C` / `CN` modifier of JMP, CAL, RET.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum Condition {
+    /// No modifier: `JMP`, `CAL`, `RET`.
     Always,
     /// `JMPC`: if the current result is TRUE.
     IfTrue,
@@ -427,13 +565,21 @@ pub enum Condition {
 /// turns them into this when the operand is an instance with an `S`/`R` input.)
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum FbInputOp {
+    /// `S1 inst`: set-dominant input of SR.
     S1,
+    /// `R1 inst`: reset-dominant input of RS.
     R1,
+    /// `CLK inst`: the clock input of R_TRIG / F_TRIG.
     Clk,
+    /// `CU inst`: count-up input of CTU / CTUD.
     Cu,
+    /// `CD inst`: count-down input of CTD / CTUD.
     Cd,
+    /// `PV inst`: preset value of a counter.
     Pv,
+    /// `IN inst`: the input of a timer (TON, TOF, TP).
     In,
+    /// `PT inst`: the preset time of a timer.
     Pt,
 }
 
@@ -453,55 +599,79 @@ impl FbInputOp {
     }
 }
 
+/// What an IL instruction does (IEC 61131-3 2.8.1, table 52): the operator with its modifiers and operands.
 #[derive(Debug, Clone, Serialize)]
 pub enum InstrKind {
     /// `LD x`, `ANDN y`, `ADD 5`, `NOT`, `S q` ...; `operand` is `None` only for `NOT` and for `S`/`R`
     /// written without an operand (a diagnostic in sema).
     Simple {
+        /// The operator.
         op: Op,
+        /// The `N` modifier (`ANDN`, `LDN`, `STN`).
         negate: bool,
+        /// The operand after the operator.
         operand: Option<Operand>,
     },
     /// `AND( operand` ... `)`: the operator applied to the current result and the value of the nested list.
     /// The optional operand on the opening line is an implicit `LD` that starts the nested list.
     Deferred {
+        /// The operator applied when the `)` closes.
         op: Op,
+        /// The `N` modifier (`ANDN(`).
         negate: bool,
+        /// The operand written on the opening line (an implicit `LD`).
         operand: Option<Operand>,
+        /// The nested instructions up to the matching `)`.
         body: Vec<IlStmt>,
+        /// The span of the closing `)`.
         close: Span,
     },
+    /// `JMP label`, `JMPC label`, `JMPCN label`.
     Jump {
+        /// Unconditional, or on a TRUE/FALSE current result.
         cond: Condition,
+        /// The target label.
         label: Ident,
     },
+    /// `RET`, `RETC`, `RETCN`: leave the POU.
     Return {
+        /// Unconditional, or on a TRUE/FALSE current result.
         cond: Condition,
     },
     /// `CAL inst(...)`, `CALC inst`, `CALCN inst(IN := x, Q => y)`.
     Call {
+        /// Unconditional, or on a TRUE/FALSE current result.
         cond: Condition,
+        /// The FB instance called.
         instance: VarRef,
+        /// The parameter list, if any.
         args: CallArgs,
     },
     /// A function call as an operator: `SEL x, y` (the current result is the first argument) or `LIMIT(MN := 0, ...)`.
     FunctionCall {
+        /// The function's name.
         name: Ident,
+        /// Arguments after the current result (the current result is the first input).
         args: CallArgs,
     },
     /// `S1 inst`, `IN tmr`, `PT tmr` ...
     FbInput {
+        /// Which input the current result is stored into.
         op: FbInputOp,
+        /// The FB instance.
         instance: VarRef,
     },
     /// The extension `FUNC Name()`: call of an embedded C function (see `param-passing`).
     EmbeddedC {
+        /// The C function's name.
         name: Ident,
     },
 }
 
+/// The parameter list of `CAL` or of a function call.
 #[derive(Debug, Clone, Serialize)]
 pub enum CallArgs {
+    /// No parentheses or empty ones: `CAL inst`, `CAL inst()`.
     None,
     /// Positional arguments.
     NonFormal(Vec<Operand>),
@@ -509,62 +679,91 @@ pub enum CallArgs {
     Formal(Vec<FormalArg>),
 }
 
+/// One formal parameter assignment of a call: `IN := x`, `Q => y`, `NOT Q => y`.
 #[derive(Debug, Clone, Serialize)]
 pub struct FormalArg {
+    /// The parameter's name.
     pub name: Ident,
+    /// Input (`:=`) or output (`=>`) assignment.
     pub dir: ArgDir,
+    /// The value passed, or the variable an output is written to.
     pub value: Operand,
+    /// The whole `name := value` text.
     pub span: Span,
 }
 
+/// Which way a formal parameter passes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum ArgDir {
     /// `name := value`
     Input,
     /// `name => var`; `negated` for `NOT name => var`.
-    Output { negated: bool },
+    Output {
+        /// `NOT name => var`: the inverted output is stored.
+        negated: bool,
+    },
 }
 
 // ---------------------------------------------------------------- configurations
 
+/// `CONFIGURATION name ... END_CONFIGURATION` (IEC 61131-3 2.7.1).
 #[derive(Debug, Clone, Serialize)]
 pub struct Configuration {
+    /// The configuration's name.
     pub name: Ident,
+    /// `VAR_GLOBAL` blocks at configuration level.
     pub globals: Vec<VarBlock>,
     /// A configuration written without `RESOURCE` gets one resource named after the configuration.
     pub resources: Vec<Resource>,
+    /// From `CONFIGURATION` to `END_CONFIGURATION`.
     pub span: Span,
 }
 
+/// `RESOURCE name ON PLC ... END_RESOURCE`: one processing unit with its tasks and programs.
 #[derive(Debug, Clone, Serialize)]
 pub struct Resource {
+    /// The resource's name.
     pub name: Ident,
     /// `ON PLC`.
     pub on: Option<Ident>,
+    /// `VAR_GLOBAL` blocks at resource level.
     pub globals: Vec<VarBlock>,
+    /// The `TASK` declarations.
     pub tasks: Vec<Task>,
+    /// The `PROGRAM` instances.
     pub programs: Vec<ProgramInstance>,
+    /// From `RESOURCE` to `END_RESOURCE`.
     pub span: Span,
 }
 
+/// `TASK name (INTERVAL := T#10ms, PRIORITY := 1);` (IEC 61131-3 2.7.2).
 #[derive(Debug, Clone, Serialize)]
 pub struct Task {
+    /// The task's name.
     pub name: Ident,
     /// `INTERVAL := T#10ms` (cyclic); a literal or a variable.
     pub interval: Option<Operand>,
     /// `SINGLE := trigger` (event task).
     pub single: Option<Operand>,
+    /// `PRIORITY := n`: 0 is the highest.
     pub priority: Option<u32>,
+    /// The whole `TASK` declaration.
     pub span: Span,
 }
 
 /// `PROGRAM inst WITH task : TypeName (in := x, out => y);`
 #[derive(Debug, Clone, Serialize)]
 pub struct ProgramInstance {
+    /// The instance name.
     pub name: Ident,
+    /// `RETAIN` after `PROGRAM`: the instance's variables are retentive.
     pub retain: bool,
+    /// `WITH task`: the task that runs it; `None` without `WITH` (the program runs in the background).
     pub task: Option<Ident>,
+    /// The program POU instantiated.
     pub type_name: Ident,
+    /// `in := x` / `out => y` connections to globals or direct addresses.
     pub args: Vec<FormalArg>,
+    /// The whole declaration.
     pub span: Span,
 }

@@ -67,11 +67,13 @@ enum Last {
     Other,
 }
 
+/// The layout pass as an iterator of `(start, token, end)` for the grammar (see the module header).
 pub struct Layout<'s> {
     src: &'s str,
     lex: logos::Lexer<'s, RawToken>,
     file: FileId,
     base: usize,
+    /// The lexical problems found so far (unterminated comments and strings, bad literals, `$` escapes).
     pub diags: Vec<Diagnostic>,
     out: VecDeque<Spanned>,
     stack: Vec<Frame>,

@@ -16,7 +16,9 @@ pub enum LexError {
     /// A character that starts no token.
     #[default]
     UnexpectedChar,
+    /// `(*` without its closing `*)` before the end of the file.
     UnterminatedComment,
+    /// A `'` or `"` string without its closing quote on the same line.
     UnterminatedString,
     /// A numeric, duration or date literal with no valid value; the reason.
     BadLiteral(String),
@@ -30,9 +32,13 @@ pub type LexWarning = (std::ops::Range<usize>, String);
 /// Decoded value of a `T#`/`D#`/`TOD#`/`DT#` literal; `long` is the `L` form (`LTIME#`, `LDT#` ...).
 #[derive(Debug, Clone, PartialEq)]
 pub enum TimeValue {
+    /// `T#1s`, `LTIME#5ns`: nanoseconds (sign applied); `true` for `LTIME`.
     Duration(i128, bool),
+    /// `D#2001-04-09`: days since 1970-01-01; `true` for `LDATE`.
     Date(i64, bool),
+    /// `TOD#11:36:15.2`: nanoseconds since midnight; `true` for `LTOD`.
     TimeOfDay(i64, bool),
+    /// `DT#2001-04-09-11:36:15`: nanoseconds since 1970-01-01T00:00:00; `true` for `LDT`.
     DateAndTime(i128, bool),
 }
 
@@ -42,53 +48,73 @@ pub enum TimeValue {
 #[logos(extras = Vec<LexWarning>)]
 #[logos(skip r"[ \t\r\f\u{FEFF}]+")]
 pub enum RawToken {
+    /// A line end (IL instructions are line-delimited).
     #[token("\n")]
     Newline,
     /// A `(* *)` comment; `true` when it spans lines: then it ends the line like a newline does.
     #[token("(*", block_comment)]
     Comment(bool),
+    /// `// ...` to the end of the line (skipped; an extension most tools accept).
     #[regex(r"//[^\n]*", logos::skip, allow_greedy = true)]
     LineComment,
+    /// A word: identifier or keyword, classified later by [`classify`].
     #[regex(r"[A-Za-z_][A-Za-z0-9_]*")]
     Word,
     /// `INT#`, `BOOL#`, `Color#` (a typed literal or enum value follows) or a whole `T#1s`, `D#...`.
     #[regex(r"[A-Za-z_][A-Za-z0-9_]*#", prefixed)]
     Prefixed(Option<TimeValue>),
+    /// `12`, `-3`, `1_000`, `16#FF`: the value, sign applied.
     #[regex(r"[+-]?[0-9][0-9_]*", |l| literal::decimal_int(l.slice()).map_err(LexError::BadLiteral))]
     #[regex(r"[0-9]+#[0-9A-Za-z_]*", |l| literal::based_int(l.slice()).map_err(LexError::BadLiteral))]
     Int(i128),
+    /// `2.5`, `-1.0E3`: the value.
     #[regex(r"[+-]?[0-9][0-9_]*\.[0-9][0-9_]*([eE][+-]?[0-9]+)?", |l| literal::real(l.slice()).map_err(LexError::BadLiteral))]
     #[regex(r"[+-]?[0-9][0-9_]*[eE][+-]?[0-9]+", |l| literal::real(l.slice()).map_err(LexError::BadLiteral))]
     Real(f64),
+    /// `'text'` (`false`) or `"wide"` (`true`) with escapes decoded.
     #[token("'", |l| string(l, false))]
     #[token("\"", |l| string(l, true))]
     Str((bool, String)),
+    /// `%IX0.1`: area, size and the dotted location numbers.
     #[regex(r"%[A-Za-z0-9_.*]*", address)]
     Address((Area, AddressSize, Vec<u32>)),
+    /// `(`
     #[token("(")]
     LParen,
+    /// `)`
     #[token(")")]
     RParen,
+    /// `[`
     #[token("[")]
     LBracket,
+    /// `]`
     #[token("]")]
     RBracket,
+    /// `,`
     #[token(",")]
     Comma,
+    /// `:`
     #[token(":")]
     Colon,
+    /// `;`
     #[token(";")]
     Semi,
+    /// `:=` (assignment, input parameter).
     #[token(":=")]
     Assign,
+    /// `=>` (output parameter).
     #[token("=>")]
     Arrow,
+    /// `..` (a range, `1..10`).
     #[token("..")]
     DotDot,
+    /// `.` (field access, `inst.Q`).
     #[token(".")]
     Dot,
+    /// `&`: the short form of `AND`.
     #[token("&")]
     Amp,
+    /// `&N`: the short form of `ANDN`.
     #[regex("&[Nn]")]
     AmpN,
 }
@@ -294,90 +320,173 @@ pub(crate) fn prefixed_rest(
 /// The class of a word: a plain identifier or one of the keywords. Classified by [`classify`] only.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Word {
+    /// Any word that is not a keyword: a variable, type, POU or label name.
     Ident,
     // IL operators: also usable as names (`IN := x`, `tmr.PT`, a variable named `R1`).
+    /// `LD`: load the operand into the current result.
     Ld,
+    /// `LDN`: load the negated operand.
     Ldn,
+    /// `ST`: store the current result.
     St,
+    /// `STN`: store the negated current result.
     Stn,
+    /// `S`: set the operand if the current result is TRUE (a set coil).
     S,
+    /// `R`: reset the operand if the current result is TRUE (a reset coil).
     R,
+    /// `AND`: AND the operand into the current result (a series contact).
     And,
+    /// `ANDN`: AND NOT (a normally closed series contact).
     Andn,
+    /// `OR`: OR the operand into the current result (a parallel branch).
     Or,
+    /// `ORN`: OR NOT.
     Orn,
+    /// `XOR`: exclusive OR.
     Xor,
+    /// `XORN`: exclusive OR with the negated operand.
     Xorn,
+    /// `NOT`: invert the current result.
     Not,
+    /// `ADD`: addition.
     Add,
+    /// `SUB`: subtraction.
     Sub,
+    /// `MUL`: multiplication.
     Mul,
+    /// `DIV`: division.
     Div,
+    /// `MOD`: remainder.
     Mod,
+    /// `GT`: greater than.
     Gt,
+    /// `GE`: greater or equal.
     Ge,
+    /// `EQ`: equal.
     Eq,
+    /// `NE`: not equal.
     Ne,
+    /// `LE`: less or equal.
     Le,
+    /// `LT`: less than.
     Lt,
+    /// `JMP`: jump to a label.
     Jmp,
+    /// `JMPC`: jump if the current result is TRUE.
     Jmpc,
+    /// `JMPCN`: jump if the current result is FALSE (also spelled `JMPNC`).
     Jmpcn,
+    /// `CAL`: call an FB instance.
     Cal,
+    /// `CALC`: call if the current result is TRUE.
     Calc,
+    /// `CALCN`: call if the current result is FALSE (also spelled `CALNC`).
     Calcn,
+    /// `RET`: return from the POU.
     Ret,
+    /// `RETC`: return if the current result is TRUE.
     Retc,
+    /// `RETCN`: return if the current result is FALSE (also spelled `RETNC`).
     Retcn,
+    /// `S1`: set input of an SR instance.
     S1,
+    /// `R1`: reset input of an RS instance.
     R1,
+    /// `CLK`: clock input of R_TRIG/F_TRIG.
     Clk,
+    /// `CU`: count-up input of a counter.
     Cu,
+    /// `CD`: count-down input of a counter.
     Cd,
+    /// `PV`: preset value of a counter.
     Pv,
+    /// `IN`: input of a timer.
     In,
+    /// `PT`: preset time of a timer.
     Pt,
     /// The `FUNC Name()` embedded-C extension.
     Func,
     // Reserved words: never names.
+    /// `PROGRAM` (reserved): opens a program POU.
     Program,
+    /// `END_PROGRAM` (reserved): closes a program.
     EndProgram,
+    /// `FUNCTION` (reserved): opens a function.
     Function,
+    /// `END_FUNCTION` (reserved): closes a function.
     EndFunction,
+    /// `FUNCTION_BLOCK` (reserved): opens a function block.
     FunctionBlock,
+    /// `END_FUNCTION_BLOCK` (reserved): closes a function block.
     EndFunctionBlock,
+    /// `VAR` (reserved): local variable block.
     Var,
+    /// `VAR_INPUT` (reserved): input parameter block.
     VarInput,
+    /// `VAR_OUTPUT` (reserved): output parameter block.
     VarOutput,
+    /// `VAR_IN_OUT` (reserved): in-out (by reference) parameter block.
     VarInOut,
+    /// `VAR_TEMP` (reserved): temporary variable block.
     VarTemp,
+    /// `VAR_GLOBAL` (reserved): global variable block.
     VarGlobal,
+    /// `VAR_EXTERNAL` (reserved): block referencing globals.
     VarExternal,
+    /// `VAR_ACCESS` (reserved): access path block (reserved so it is never a name; the grammar does not
+    /// accept it).
     VarAccess,
+    /// `VAR_CONFIG` (reserved): instance-specific initialisation block (reserved so it is never a name; the
+    /// grammar does not accept it).
     VarConfig,
+    /// `END_VAR` (reserved): closes a variable block.
     EndVar,
+    /// `CONSTANT` (reserved): read-only qualifier of a variable block.
     Constant,
+    /// `RETAIN` (reserved): retentive qualifier.
     Retain,
+    /// `NON_RETAIN` (reserved): non-retentive qualifier.
     NonRetain,
+    /// `AT` (reserved): introduces a direct address location.
     At,
+    /// `TYPE` (reserved): opens a data type block.
     Type,
+    /// `END_TYPE` (reserved): closes a data type block.
     EndType,
+    /// `STRUCT` (reserved): opens a structure type.
     Struct,
+    /// `END_STRUCT` (reserved): closes a structure type.
     EndStruct,
+    /// `ARRAY` (reserved): array type.
     Array,
+    /// `OF` (reserved): element type of an array.
     Of,
+    /// `STRING` (reserved): byte string type.
     String,
+    /// `WSTRING` (reserved): wide (UTF-16) string type.
     WString,
+    /// `CONFIGURATION` (reserved): opens a configuration.
     Configuration,
+    /// `END_CONFIGURATION` (reserved): closes a configuration.
     EndConfiguration,
+    /// `RESOURCE` (reserved): opens a resource.
     Resource,
+    /// `END_RESOURCE` (reserved): closes a resource.
     EndResource,
+    /// `ON` (reserved): the PLC of a resource (`RESOURCE r ON PLC`).
     On,
+    /// `TASK` (reserved): a task declaration.
     Task,
+    /// `WITH` (reserved): the task of a program instance (`PROGRAM p WITH t : T`).
     With,
+    /// `TRUE` (reserved): Boolean literal.
     True,
+    /// `FALSE` (reserved): Boolean literal.
     False,
+    /// `R_EDGE` (reserved): rising-edge input qualifier.
     REdge,
+    /// `F_EDGE` (reserved): falling-edge input qualifier.
     FEdge,
 }
 
@@ -618,27 +727,45 @@ pub enum Tok {
     BodyStart,
     /// End of an IL line (consecutive line ends collapse into one).
     Eol,
+    /// A word, identifier or keyword (see [`Word`]).
     Word(Word),
     /// `&` and `&N` (AND, AND NOT).
     Amp,
+    /// See [`Tok::Amp`].
     AmpN,
+    /// An integer literal, sign applied.
     Int(i128),
+    /// A real literal.
     Real(f64),
+    /// A duration, date, time-of-day or date-and-time literal, decoded.
     Time(TimeValue),
+    /// A string literal: wide flag (`"..."`) and decoded characters.
     Str(bool, String),
     /// `INT#`, `Color#`: the name is the token text without `#`.
     TypePrefix,
+    /// A direct address `%IX0.1`: area, size, location numbers.
     Address(Area, AddressSize, Vec<u32>),
+    /// `(`: parameter list or nested instruction list.
     LParen,
+    /// `)`
     RParen,
+    /// `[`
     LBracket,
+    /// `]`
     RBracket,
+    /// `,`
     Comma,
+    /// `:`
     Colon,
+    /// `;`
     Semi,
+    /// `:=`
     Assign,
+    /// `=>`
     Arrow,
+    /// `..`
     DotDot,
+    /// `.`
     Dot,
     /// Text the lexer could not make a token of (already reported).
     Error,

@@ -5,7 +5,15 @@
 //! (symbols, types, current-result typing, labels). Every node carries a byte [`Span`].
 //! [`mod@print`] writes a tree back as IL; [`testgen`] generates large valid programs for tests and benches.
 //! [`st`] is the Structured Text front end: ST is parsed and lowered to this IL tree.
+//!
+//! Input: IL source text (a whole file with [`parse`] / [`parse_named`], or an instruction list alone at a
+//! byte offset of its file with [`parse_body`]). Output: an [`ast::CompilationUnit`] (or a `Vec<IlStmt>`),
+//! with every problem pushed to the caller's `Diagnostics`; [`sema::analyze`] then resolves the units of
+//! one program into a [`sema::model::Model`].
+//! Invariants: no input makes these functions panic (a problem is a diagnostic, and the tree read so far is
+//! returned); every span points into the file given; the syntax tree holds no resolved information.
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 pub mod ast;
 pub mod layout;

@@ -27,17 +27,22 @@ mod grammar {
 
 /// What the grammar's start rule produces.
 pub enum Parsed {
+    /// A whole file (started by [`Tok::UnitStart`]).
     Unit(TopParts),
+    /// An instruction list alone (started by [`Tok::BodyStart`]).
     Body(Vec<IlStmt>),
 }
 
 /// One top-level item while collecting a compilation unit.
 pub enum TopItem {
+    /// An empty line or a line the grammar skipped after a reported error.
     Nothing,
     /// Boxed: a POU or configuration is large and rare, and every parser stack slot has the size of
     /// the largest item.
     Element(Box<LibraryElement>),
+    /// A `VAR*` block outside any POU (global, or collected into the implicit program).
     Vars(VarBlock),
+    /// An instruction or label outside any POU (collected into the implicit program).
     Stmt(IlStmt),
 }
 
@@ -45,13 +50,17 @@ pub enum TopItem {
 /// implicit program (see [`crate::parse_named`]).
 #[derive(Default)]
 pub struct TopParts {
+    /// The library elements in source order (the implicit program is inserted later).
     pub items: Vec<LibraryElement>,
     /// Index in `items` where the implicit program goes, with its parts.
     pub implicit: Option<(usize, Vec<VarBlock>, Vec<IlStmt>)>,
+    /// The span of the first bare instruction or `VAR` block (where warning W0001 points).
     pub first_bare: Option<Span>,
 }
 
 impl TopParts {
+    /// Files one top-level item: elements and `VAR_GLOBAL` blocks to `items`, the rest to the implicit
+    /// program.
     pub fn add(&mut self, item: TopItem) {
         let at = self.items.len();
         match item {
@@ -84,22 +93,32 @@ impl TopParts {
 
 /// One item of a POU while collecting it.
 pub enum PouItem {
+    /// An instruction or label; `None` for an empty or skipped line.
     Stmt(Option<IlStmt>),
+    /// A `VAR*` block (after the first instruction it is error E0015).
     Vars(VarBlock),
 }
 
+/// A POU's variable blocks and body while the grammar collects them.
 #[derive(Default)]
 pub struct PouParts {
+    /// The `VAR*` blocks in source order.
     pub vars: Vec<VarBlock>,
+    /// The instruction list in source order.
     pub body: Vec<IlStmt>,
 }
 
 /// One item of a configuration or resource (large items boxed: see [`TopItem::Element`]).
 pub enum ConfigItem {
+    /// `VAR_GLOBAL` inside the configuration or resource.
     Vars(VarBlock),
+    /// A `RESOURCE ... END_RESOURCE`.
     Resource(Box<Resource>),
+    /// A `TASK` declaration.
     Task(Box<Task>),
+    /// A `PROGRAM inst WITH task : Type` declaration.
     Program(Box<ProgramInstance>),
+    /// An empty line or a line skipped after an error.
     Nothing,
 }
 
@@ -108,19 +127,26 @@ pub type SimpleOp = (Op, bool, Word);
 
 /// Parser state shared by the grammar actions.
 pub struct Ctx<'s> {
+    /// The file spans point into.
     pub file: FileId,
+    /// The text being parsed (without the `base` offset).
     pub src: &'s str,
+    /// The byte offset of `src` in the file (a PLCopen XML `<IL>` body's position).
     pub base: usize,
+    /// Syntax problems found by the grammar actions, in order.
     pub diags: Vec<Diagnostic>,
 }
 
 impl<'s> Ctx<'s> {
+    /// The file span of the local byte range `l..r`.
     pub fn span(&self, l: usize, r: usize) -> Span {
         Span::new(self.file, self.base + l, self.base + r)
     }
+    /// The source text of the local byte range `l..r`.
     pub fn text(&self, l: usize, r: usize) -> &'s str {
         &self.src[l..r]
     }
+    /// An identifier made of the local byte range `l..r`.
     pub fn ident(&self, l: usize, r: usize) -> Ident {
         Ident::new(&self.src[l..r], self.span(l, r))
     }
@@ -225,6 +251,8 @@ impl<'s> Ctx<'s> {
 
     // ------------------------------------------------------------ instructions
 
+    /// Builds `LD x`, `ANDN y`, `NOT` ...; reports a missing operand (E0012), an operand after `NOT`
+    /// (E0013) and extra operands (E0301), returning `None` when the line is unusable.
     pub fn simple(
         &mut self,
         (op, negate, _word): SimpleOp,
@@ -321,6 +349,8 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// Builds a deferred operator `AND( ... )`; reports an operator that cannot take a parenthesised
+    /// operand (E0021).
     #[allow(clippy::too_many_arguments)]
     pub fn deferred(
         &mut self,
@@ -354,6 +384,7 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// Builds `JMP label` / `JMPC` / `JMPCN`; reports a missing label (E0014).
     pub fn jump(
         &mut self,
         cond: Condition,
@@ -378,6 +409,7 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// Builds `RET` / `RETC` / `RETCN`; reports an operand (E0013).
     pub fn ret(
         &mut self,
         cond: Condition,
@@ -403,6 +435,7 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// Builds `CAL inst(...)` / `CALC` / `CALCN`; reports a missing instance (E0012).
     pub fn call(
         &mut self,
         cond: Condition,
@@ -432,6 +465,7 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// Builds `S1 inst`, `IN tmr`, `PT tmr` ...; reports a missing instance (E0012).
     pub fn fb_input(
         &mut self,
         op: FbInputOp,
@@ -459,6 +493,7 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// An instruction of `kind` spanning `l..r`.
     pub fn instr(&self, kind: InstrKind, l: usize, r: usize) -> Option<Instruction> {
         Some(Instruction {
             kind,
@@ -468,6 +503,7 @@ impl<'s> Ctx<'s> {
 
     // ------------------------------------------------------------ literals
 
+    /// A literal of `kind` with its optional `TYPE#` prefix, spanning `l..r`.
     pub fn literal(&self, kind: LiteralKind, prefix: Option<Ident>, l: usize, r: usize) -> Literal {
         Literal {
             kind,
@@ -500,6 +536,8 @@ impl<'s> Ctx<'s> {
 
     // ------------------------------------------------------------ declarations
 
+    /// Builds a POU; reports a FUNCTION without result type (E0018) and a result type on a program or FB
+    /// (E0011, dropped).
     pub fn pou(
         &mut self,
         kind: PouKind,
@@ -554,6 +592,7 @@ impl<'s> Ctx<'s> {
         }
     }
 
+    /// Adds one item to a POU being collected; a `VAR` block after the first instruction is error E0015.
     pub fn pou_item(&mut self, mut parts: PouParts, item: PouItem) -> PouParts {
         match item {
             PouItem::Stmt(Some(s)) => parts.body.push(s),
@@ -580,6 +619,7 @@ impl<'s> Ctx<'s> {
         parts
     }
 
+    /// Builds a `VAR*` block with its `CONSTANT` / `RETAIN` qualifiers.
     pub fn var_block(
         &mut self,
         kind: VarKind,
@@ -597,6 +637,8 @@ impl<'s> Ctx<'s> {
         }
     }
 
+    /// Builds one [`VarDecl`] per name of `a, b : T := v;`, sharing location, type, edge qualifier and
+    /// initial value.
     #[allow(clippy::too_many_arguments)]
     pub fn var_decls(
         &mut self,
@@ -640,6 +682,8 @@ impl<'s> Ctx<'s> {
             .collect()
     }
 
+    /// Converts `v` to the integer type the tree stores (a string length, a repeat count, a priority); out
+    /// of range is error E0005 and gives `T::default()`.
     pub fn int_in<T>(&mut self, v: i128, what: &str, l: usize, r: usize) -> T
     where
         T: TryFrom<i128> + Default,
@@ -658,6 +702,8 @@ impl<'s> Ctx<'s> {
 
     // ------------------------------------------------------------ configurations
 
+    /// Builds a configuration; tasks and programs written outside any `RESOURCE` go to a resource named
+    /// after the configuration (also when there is no resource at all).
     pub fn configuration(
         &mut self,
         name: Ident,
@@ -695,6 +741,7 @@ impl<'s> Ctx<'s> {
         }
     }
 
+    /// Builds a resource; a nested `RESOURCE` is error E0011 (dropped).
     pub fn resource(
         &mut self,
         name: Ident,
@@ -732,6 +779,8 @@ impl<'s> Ctx<'s> {
         res
     }
 
+    /// Builds a task from its `INTERVAL`, `SINGLE`, `PRIORITY` settings; any other setting, or a priority
+    /// that is not a non-negative integer, is error E0020.
     pub fn task(
         &mut self,
         name: Ident,

@@ -6,6 +6,11 @@
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
 //! temporaries, chart state), one extra `VAR` (LD/FBD/SFC) or `VAR_TEMP` (ST) block holding them;
 //! `None` for an unused ST POU, which is left out.
+//!
+//! Input: the POU's `<body>` element, its declarations (already read into the [`Pou`]) and the project
+//! [`Index`]. Invariants: a missing `<body>` is an empty body; a body language ladderc does not read is
+//! reported (E3012) and gives no statements, so the rest of the project still compiles; every
+//! statement's span points into the XML element it came from.
 
 use crate::context::Ctx;
 use crate::graph;

@@ -7,14 +7,18 @@
 
 /// A standard function block: input and output pins with their types.
 pub struct StdFb {
+    /// The block type name, upper case (`TON`, `CTU_DINT`).
     pub name: &'static str,
+    /// `(pin, type)` of each input, in the standard's order (the order of positional arguments).
     pub inputs: &'static [(&'static str, &'static str)],
+    /// `(pin, type)` of each output, in the standard's order.
     pub outputs: &'static [(&'static str, &'static str)],
 }
 
 const TIMER_IN: &[(&str, &str)] = &[("IN", "BOOL"), ("PT", "TIME")];
 const TIMER_OUT: &[(&str, &str)] = &[("Q", "BOOL"), ("ET", "TIME")];
 
+/// The IEC 61131-3 standard function blocks (bistables, edge detectors, counters, timers) with their pins.
 pub static STD_FBS: &[StdFb] = &[
     StdFb {
         name: "SR",
@@ -205,6 +209,8 @@ pub fn is_library_type(name: &str) -> bool {
         )
 }
 
+/// Whether `u` (already upper case) names an elementary type, `STRING`/`WSTRING` and long date/time names
+/// included.
 pub fn is_elementary(u: &str) -> bool {
     matches!(
         u,
@@ -240,21 +246,31 @@ pub fn is_elementary(u: &str) -> bool {
 pub enum ResultRule {
     /// The type of the inputs (the first typed one), skipping selector inputs (`G`, `K`).
     SameAsInputs,
+    /// A fixed result type (`BOOL` for comparisons, `DINT` for `TRUNC`, the target of `X_TO_Y`).
     Fixed(&'static str),
 }
 
 /// IL operators that a two-input block lowers to directly (`LD IN1` / `ADD IN2`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum OperatorBlock {
+    /// `ADD SUB MUL DIV MOD`: the IL arithmetic operator.
     Arith(il_frontend::ast::Op),
+    /// `GT GE EQ NE LE LT`: the IL comparison operator (BOOL result).
     Compare(il_frontend::ast::Op),
+    /// `AND OR XOR`: the IL logic operator.
     Logic(il_frontend::ast::Op),
+    /// `NOT`: one input, inverted.
     Not,
+    /// `MOVE`: the input unchanged (`LD IN` / `ST OUT`).
     Move,
 }
 
+/// What the lowering needs to know about a standard function block (`<block typeName="ADD">`).
 pub struct StdFunction {
+    /// How the result type follows from the inputs.
     pub rule: ResultRule,
+    /// The IL operator the block lowers to directly, if any; `None` for functions called by name (`LIMIT`,
+    /// `SEL`).
     pub operator: Option<OperatorBlock>,
     /// Leading selector inputs that do not take part in the result type.
     pub selectors: usize,
@@ -381,15 +397,23 @@ fn static_name(u: &str) -> Option<&'static str> {
 /// Broad type families for connection checks.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Family {
+    /// BOOL.
     Bool,
+    /// ANY_INT: SINT ... ULINT.
     Int,
+    /// ANY_REAL: REAL, LREAL.
     Real,
+    /// Bit strings: BYTE, WORD, DWORD, LWORD.
     Bits,
+    /// Durations: TIME, LTIME.
     Time,
+    /// Dates and times of day: DATE, TOD, DT.
     Date,
+    /// STRING, WSTRING.
     String,
 }
 
+/// The family of an elementary type name (case-insensitive); `None` for user and FB types.
 pub fn family(type_name: &str) -> Option<Family> {
     Some(match type_name.to_ascii_uppercase().as_str() {
         "BOOL" => Family::Bool,

@@ -1,6 +1,9 @@
 //! The compilation context shared by the readers: file id, XML text, diagnostics sink, and helpers that
 //! turn byte offsets and XML elements into spans and engineer-facing locations.
 //!
+//! Input: the file id, the XML text and the caller's `Diagnostics`. Output: spans ([`Ctx::tag`],
+//! [`Ctx::attr_span`], [`Ctx::text_span`]), reported diagnostics, named integer constants for array bounds.
+//!
 //! Invariants: every span produced here lies inside the XML text; diagnostics about a graphical element
 //! carry an [`XmlContext`] naming the POU, the network (rung) and the element's localId.
 
@@ -8,9 +11,14 @@ use crate::xml::Element;
 use diagnostics::{Code, Diagnostic, Diagnostics, FileId, Span, XmlContext};
 use std::collections::HashMap;
 
+/// The reading context of one PLCopen XML file: where spans point, where diagnostics go, which named
+/// constants are known.
 pub struct Ctx<'a> {
+    /// The XML file's id (every span points into it).
     pub file: FileId,
+    /// The whole XML text.
     pub xml: &'a str,
+    /// Where every diagnostic of the file goes.
     pub diags: &'a mut Diagnostics,
     /// Integer constants usable as array bounds: global (`VAR_GLOBAL CONSTANT` of configurations,
     /// resources and vendor global variable lists), upper-cased names.
@@ -20,6 +28,7 @@ pub struct Ctx<'a> {
 }
 
 impl<'a> Ctx<'a> {
+    /// The span of the byte range `start..end`, clamped to the text.
     pub fn span(&self, start: usize, end: usize) -> Span {
         let end = end.min(self.xml.len());
         Span::new(self.file, start.min(end), end)
@@ -52,6 +61,7 @@ impl<'a> Ctx<'a> {
             _ => self.tag(e),
         }
     }
+    /// A context with no constants known yet.
     pub fn new(file: FileId, xml: &'a str, diags: &'a mut Diagnostics) -> Ctx<'a> {
         Ctx {
             file,
@@ -69,9 +79,11 @@ impl<'a> Ctx<'a> {
             .or_else(|| self.constants.get(&key))
             .copied()
     }
+    /// Adds a ready diagnostic.
     pub fn report(&mut self, d: Diagnostic) {
         self.diags.push(d);
     }
+    /// Reports error `code` at `span`.
     pub fn error(&mut self, code: Code, span: Span, msg: impl Into<String>) {
         self.diags.push(Diagnostic::error(code, msg).at(span));
     }
@@ -80,12 +92,16 @@ impl<'a> Ctx<'a> {
 /// Where in the project a graphical element sits.
 #[derive(Debug, Clone, Default)]
 pub struct Where {
+    /// The POU's name.
     pub pou: String,
+    /// The network (rung) number, 1-based, in execution order ([`crate::graph::Graph::networks`]).
     pub network: Option<usize>,
+    /// The element's `localId`.
     pub local_id: Option<String>,
 }
 
 impl Where {
+    /// The location as the diagnostics' [`XmlContext`] (POU, network, localId).
     pub fn xml(&self) -> XmlContext {
         XmlContext {
             pou: Some(self.pou.clone()),

@@ -311,7 +311,6 @@ pub fn var_kind(list: &str) -> Option<VarKind> {
     })
 }
 
-/// A variable list element (`<localVars constant="true">...`) as a [`VarBlock`].
 /// An array bound: an integer literal, or a constant expression over named integer constants
 /// (`ciCount`, `MAX_AXES - 1`), as CODESYS and TwinCAT exports write them.
 fn bound(ctx: &Ctx, d: &Element, attr: &str) -> Result<i128, Box<Diagnostic>> {
@@ -383,6 +382,8 @@ pub fn collect_constants(
     found
 }
 
+/// A variable list element (`<localVars constant="true" retain="true">...`) as a [`VarBlock`] of `kind`,
+/// one declaration per `<variable>`.
 pub fn var_block(ctx: &mut Ctx, list: &Element, kind: VarKind) -> VarBlock {
     let flag = |n: &str| {
         list.attr(n)

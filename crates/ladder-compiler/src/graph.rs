@@ -6,117 +6,196 @@
 //! Order (documented in the README): networks by the smallest non-zero `executionOrderId` of their
 //! elements, networks without one after them by the top-most then left-most element position (y, then x);
 //! inside a network, data flow first, ties broken the same way, then by localId.
+//! Invariants: every [`Wire::from`] indexes [`Graph::nodes`]; every node belongs to exactly one network;
+//! a duplicate localId (E3014), an element without localId (E3013) or an unsupported element (E3012) is
+//! reported and left out of the graph.
 
 use crate::context::Ctx;
 use crate::xml::Element;
 use diagnostics::{code, Diagnostic, Span};
 use std::collections::HashMap;
 
+/// The `edge` attribute of a contact, coil or block pin (transition-sensing elements, IEC 61131-3 4.2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Edge {
+    /// No `edge` attribute (or `none`): the element passes the level.
     None,
+    /// `edge="rising"`: a positive transition-sensing contact/coil (`-|P|-`), TRUE for one scan when the
+    /// value rises.
     Rising,
+    /// `edge="falling"`: a negative transition-sensing contact/coil (`-|N|-`), TRUE for one scan when it
+    /// falls.
     Falling,
 }
 
+/// The `storage` attribute of a coil: plain, latching set or latching reset.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Storage {
+    /// `-( )-`: the coil takes the power flow's value (or its negation for `-(/)-`).
     None,
+    /// `-(S)-`: the variable is set to TRUE while power flows, and kept.
     Set,
+    /// `-(R)-`: the variable is reset to FALSE while power flows, and kept.
     Reset,
 }
 
 /// One wire end: the source node and, for blocks, the source output pin.
 #[derive(Debug, Clone)]
 pub struct Wire {
+    /// Index in [`Graph::nodes`] of the element the wire comes from.
     pub from: usize,
+    /// The source block's output pin (`formalParameter` of the `<connection>`); `None` for a single-output
+    /// element.
     pub pin: Option<String>,
+    /// The `<connection>` element.
     pub span: Span,
 }
 
 /// A block input (or in-out) pin.
 #[derive(Debug, Clone)]
 pub struct InPin {
+    /// The pin's formal parameter name (`IN`, `PT`, `EN`).
     pub name: String,
+    /// `negated="true"`: the pin inverts the value (a circle on the pin).
     pub negated: bool,
+    /// Edge detection on the pin: with `edge="rising"` (`"falling"`) the block sees TRUE only in the scan
+    /// in which the wired value rises (falls), through a hidden R_TRIG (F_TRIG).
     pub edge: Edge,
+    /// The wires into the pin (OR-combined when several, as in LD).
     pub wires: Vec<Wire>,
+    /// The pin's `<variable>` element.
     pub span: Span,
+    /// Declared under `<inOutVariables>`: the pin is a VAR_IN_OUT of the block.
     pub in_out: bool,
 }
 
+/// A block output pin.
 #[derive(Debug, Clone)]
 pub struct OutPin {
+    /// The pin's formal parameter name (`Q`, `ET`, `OUT`, `ENO`).
     pub name: String,
+    /// `negated="true"`: the pin inverts the value.
     pub negated: bool,
 }
 
+/// What a graphical element is (PLCopen TC6 `<ld>`/`<fbd>`/common elements).
 #[derive(Debug, Clone)]
 pub enum Kind {
+    /// `<leftPowerRail>`: the source of power flow (TRUE) at the left of a rung.
     LeftRail,
+    /// `<rightPowerRail>`: the right end of a rung; nothing is computed there.
     RightRail,
+    /// `<contact>`: reads a BOOL variable into the power flow (series when chained, parallel when wires
+    /// join).
     Contact {
+        /// The variable read, as written in `<variable>`.
         var: String,
+        /// The `<variable>` text.
         var_span: Span,
+        /// `negated="true"`: a normally closed contact `-|/|-`.
         negated: bool,
+        /// Transition sensing (`-|P|-`, `-|N|-`).
         edge: Edge,
     },
+    /// `<coil>`: writes the power flow into a BOOL variable.
     Coil {
+        /// The variable written, as written in `<variable>`.
         var: String,
+        /// The `<variable>` text.
         var_span: Span,
+        /// `negated="true"`: a negated coil `-(/)-`.
         negated: bool,
+        /// Plain, set (`-(S)-`) or reset (`-(R)-`).
         storage: Storage,
+        /// Transition sensing (`-(P)-`, `-(N)-`).
         edge: Edge,
     },
+    /// `<block>`: a function, function block instance or operator box.
     Block {
+        /// `typeName`: the function or FB type (`TON`, `ADD`, a user POU).
         type_name: String,
+        /// The `typeName` attribute.
         type_span: Span,
+        /// `instanceName` and its span, for function blocks.
         instance: Option<(String, Span)>,
+        /// Input and in-out pins in document order.
         inputs: Vec<InPin>,
+        /// Output pins in document order.
         outputs: Vec<OutPin>,
     },
+    /// `<inVariable>`: an FBD variable or constant read into the network.
     InVar {
+        /// The `<expression>` text: a variable, a field, a constant (`T#5s`, `16#FF`).
         expr: String,
+        /// The `<expression>` text.
         expr_span: Span,
+        /// `negated="true"`: the value is inverted.
         negated: bool,
     },
+    /// `<outVariable>`: an FBD variable written from the network.
     OutVar {
+        /// The `<expression>` text: the variable written.
         expr: String,
+        /// The `<expression>` text.
         expr_span: Span,
+        /// `negated="true"`: the inverted value is written.
         negated: bool,
     },
+    /// `<inOutVariable>`: written from its input (if wired), then read on its output.
     InOutVar {
+        /// The `<expression>` text: the variable.
         expr: String,
+        /// The `<expression>` text.
         expr_span: Span,
+        /// `negatedIn="true"`: the input value is inverted before it is written.
         negated_in: bool,
+        /// `negatedOut="true"`: the value read is inverted.
         negated_out: bool,
     },
+    /// `<connector>`: a named wire end; its value continues at the continuations of that name.
     Connector {
+        /// The connector's name (matched case-insensitively).
         name: String,
     },
+    /// `<continuation>`: the other end of a named connector.
     Continuation {
+        /// The name of the connector it continues.
         name: String,
     },
+    /// `<jump>`: jump to a label when its input is TRUE (IL `JMPC`).
     Jump {
+        /// The target label.
         label: String,
+        /// The `label` attribute.
         label_span: Span,
     },
+    /// `<label>`: a jump target.
     Label {
+        /// The label's name.
         label: String,
+        /// The `label` attribute.
         label_span: Span,
     },
+    /// `<return>`: leave the POU when its input is TRUE (IL `RETC`).
     Return,
 }
 
+/// One graphical element of an LD/FBD body, with its position and input wires.
 #[derive(Debug, Clone)]
 pub struct Node {
+    /// The `localId` attribute as written.
     pub id: String,
     /// The localId as a number (`u64::MAX` when it is not one), for ordering.
     pub num: u64,
+    /// What the element is, with its element-specific data.
     pub kind: Kind,
+    /// The element's start tag.
     pub span: Span,
+    /// The `executionOrderId` attribute, if given (0 counts as absent for ordering).
     pub exec_order: Option<u32>,
+    /// `<position x>`, in the editor's units (rounded toward zero).
     pub x: i64,
+    /// `<position y>`, in the editor's units.
     pub y: i64,
     /// Wires into the single input of non-block elements (OR-combined when several).
     pub input: Vec<Wire>,
@@ -152,7 +231,9 @@ impl Node {
     }
 }
 
+/// An LD or FBD body read as a graph: [`read`]'s output, [`crate::lower`]'s input.
 pub struct Graph {
+    /// Every non-comment element, in document order; [`Wire::from`] indexes this.
     pub nodes: Vec<Node>,
     /// Networks in execution order; each lists its node indexes.
     pub networks: Vec<Vec<usize>>,

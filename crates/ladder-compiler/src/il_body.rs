@@ -10,8 +10,11 @@
 
 use crate::xml::{Element, SegKind};
 
+/// An `<IL>` body's text laid out so that byte `k` of `text` is byte `base + k` of the XML file.
 pub struct EmbeddedText {
+    /// The body text, padded (see the module header).
     pub text: String,
+    /// Byte offset in the XML file of the text's first byte.
     pub base: usize,
 }
 
@@ -24,6 +27,7 @@ fn holder<'e, 'a>(e: &'e Element<'a>) -> Option<&'e Element<'a>> {
     e.children.iter().find_map(holder)
 }
 
+/// The text of the `<IL>` element `e` (empty when it holds no text).
 pub fn embedded_text(e: &Element) -> EmbeddedText {
     let Some(h) = holder(e) else {
         return EmbeddedText {

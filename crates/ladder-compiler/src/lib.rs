@@ -9,6 +9,7 @@
 //! Stages: [`xml`] (element tree with positions) -> [`project`] (declarations, configurations) ->
 //! [`body`] per POU -> [`graph`] (networks, order) -> [`lower`] (IL statements).
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 pub mod body;
 pub mod catalogue;

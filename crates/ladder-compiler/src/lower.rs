@@ -18,6 +18,10 @@
 //! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot:
 //! `__trig_<localId>` edge detectors, `__tmp_<TYPE>_<n>` temporaries (reused from network to network),
 //! `__out_<localId>` results of functions called under EN, `__skip_<localId>` EN labels.
+//!
+//! Invariants: every emitted instruction carries the span of the XML element it comes from; a network
+//! that cannot be lowered is reported (with POU, network and localId) and skipped, the others are still
+//! lowered.
 
 use crate::catalogue::{self, Family, OperatorBlock, ResultRule};
 use crate::context::{Ctx, Where};
@@ -123,6 +127,8 @@ pub struct BodyLowering<'i> {
 }
 
 impl<'i> BodyLowering<'i> {
+    /// The lowering state of `pou` (its variables and the project's globals known); `body_span` is the span
+    /// of the body element, where hidden declarations point.
     pub fn new(
         index: &'i Index,
         pou: &'i il_frontend::ast::Pou,

@@ -22,29 +22,41 @@ use std::collections::{HashMap, HashSet};
 /// Schema version of the file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Version {
+    /// `http://www.plcopen.org/xml/tc6_0201` (TC6 XML 2.01), and the default for an unknown namespace
+    /// (W3001).
     V201,
+    /// `http://www.plcopen.org/xml/tc6_0200` (TC6 XML 2.0).
     V200,
+    /// `http://www.plcopen.org/xml/tc6.xsd` (TC6 XML 1.0).
     V1,
 }
 
 /// The interface of a POU, as blocks that call it see it.
 #[derive(Debug, Clone)]
 pub struct PouSig {
+    /// `FUNCTION`, `FUNCTION_BLOCK` or `PROGRAM`.
     pub kind: PouKind,
+    /// The POU name as written.
     pub name: String,
     /// Inputs, outputs and in-outs with their types, in declaration order.
     pub pins: Vec<(String, VarKind, TypeRef)>,
+    /// A FUNCTION's result type.
     pub ret: Option<TypeRef>,
 }
 
 /// Everything a body lowering needs to know about the rest of the project.
 #[derive(Default)]
 pub struct Index {
+    /// Every POU's interface, by upper-case name.
     pub pous: HashMap<String, PouSig>,
+    /// Every `<dataType>`, by upper-case name.
     pub types: HashMap<String, TypeDecl>,
+    /// Every global variable's type (configurations, resources, vendor global lists), by upper-case name.
     pub globals: HashMap<String, TypeRef>,
 }
 
+/// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a
+/// root that is not `<project>` is E3002 and gives an empty unit.
 pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     let mut unit = CompilationUnit::default();
     if root.name != "project" {

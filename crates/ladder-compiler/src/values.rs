@@ -36,6 +36,7 @@ pub fn operand(text: &str, span: Span) -> Option<Operand> {
     var_ref(t, span).map(Operand::Var)
 }
 
+/// Whether `s` is an IEC identifier: a letter or `_`, then letters, digits, `_` (ASCII).
 pub fn is_ident(s: &str) -> bool {
     let mut chars = s.chars();
     matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')

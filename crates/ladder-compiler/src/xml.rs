@@ -14,9 +14,13 @@ use std::borrow::Cow;
 /// One attribute: local name, decoded value, byte range of the raw value.
 #[derive(Debug, Clone)]
 pub struct Attr<'a> {
+    /// The local name (`xmlns:xhtml` -> `xhtml`), borrowed from the text.
     pub name: &'a str,
+    /// The value with entities decoded.
     pub value: Cow<'a, str>,
+    /// Byte offset of the raw value's first character (after the quote).
     pub start: usize,
+    /// Byte offset just after the raw value (before the closing quote).
     pub end: usize,
 }
 
@@ -34,12 +38,17 @@ pub enum SegKind {
 /// A piece of character data: decoded text and the raw byte range it came from.
 #[derive(Debug, Clone)]
 pub struct TextSeg<'a> {
+    /// The text, entities decoded.
     pub text: Cow<'a, str>,
+    /// Byte offset of the raw piece in the document.
     pub start: usize,
+    /// Byte offset just after the raw piece.
     pub end: usize,
+    /// Plain text, CDATA or an entity.
     pub kind: SegKind,
 }
 
+/// One XML element: name, attributes, children and text, with byte positions in the document.
 #[derive(Debug, Clone, Default)]
 pub struct Element<'a> {
     /// Local name (`xhtml:p` -> `p`), borrowed from the text.
@@ -54,6 +63,7 @@ pub struct Element<'a> {
     pub text: Vec<TextSeg<'a>>,
     /// Byte range of the start tag (`<contact ...>`).
     pub tag_start: usize,
+    /// Byte offset just after the start tag's `>`.
     pub tag_end: usize,
     /// Byte offset just after the end tag (or the empty tag).
     pub end: usize,
@@ -62,7 +72,9 @@ pub struct Element<'a> {
 /// A parse failure: message and byte position.
 #[derive(Debug, Clone)]
 pub struct XmlError {
+    /// What the XML reader reported.
     pub message: String,
+    /// Byte offset in the document where it stopped.
     pub pos: usize,
 }
 
@@ -84,9 +96,11 @@ impl<'a> Element<'a> {
         let (_, start, end) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
         Some((self.tag_start + 1 + start, self.tag_start + 1 + end))
     }
+    /// The first direct child with local name `name`.
     pub fn child(&self, name: &str) -> Option<&Element<'a>> {
         self.children.iter().find(|c| c.name == name)
     }
+    /// The direct children with local name `name`, in document order.
     pub fn children_named<'s>(
         &'s self,
         name: &'s str,

@@ -23,31 +23,52 @@ pub struct TypeId(pub u32);
 /// The elementary types of IEC 61131-3.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 pub enum Elementary {
+    /// `BOOL`: one bit, FALSE/TRUE.
     Bool,
+    /// `SINT`: 8-bit signed integer.
     Sint,
+    /// `INT`: 16-bit signed integer.
     Int,
+    /// `DINT`: 32-bit signed integer (the default type of an untyped integer literal).
     Dint,
+    /// `LINT`: 64-bit signed integer.
     Lint,
+    /// `USINT`: 8-bit unsigned integer.
     Usint,
+    /// `UINT`: 16-bit unsigned integer.
     Uint,
+    /// `UDINT`: 32-bit unsigned integer.
     Udint,
+    /// `ULINT`: 64-bit unsigned integer.
     Ulint,
+    /// `BYTE`: bit string of 8.
     Byte,
+    /// `WORD`: bit string of 16.
     Word,
+    /// `DWORD`: bit string of 32.
     Dword,
+    /// `LWORD`: bit string of 64.
     Lword,
+    /// `REAL`: 32-bit IEEE 754 float.
     Real,
+    /// `LREAL`: 64-bit IEEE 754 float (the default type of an untyped real literal).
     Lreal,
+    /// `TIME`: a duration, stored in nanoseconds.
     Time,
+    /// `LTIME`: a long duration, stored in nanoseconds.
     Ltime,
+    /// `DATE`: a calendar date, stored as days since 1970-01-01.
     Date,
+    /// `TOD` / `TIME_OF_DAY`: nanoseconds since midnight.
     Tod,
+    /// `DT` / `DATE_AND_TIME`: nanoseconds since 1970-01-01T00:00:00.
     Dt,
 }
 
 use Elementary as E;
 
 impl Elementary {
+    /// Every elementary type, in declaration order.
     pub const ALL: [Elementary; 20] = [
         E::Bool,
         E::Sint,
@@ -137,9 +158,11 @@ impl Elementary {
             E::Sint | E::Int | E::Dint | E::Lint | E::Usint | E::Uint | E::Udint | E::Ulint
         )
     }
+    /// ANY_SINT: SINT INT DINT LINT.
     pub fn is_signed_integer(self) -> bool {
         matches!(self, E::Sint | E::Int | E::Dint | E::Lint)
     }
+    /// ANY_UNSIGNED: USINT UINT UDINT ULINT.
     pub fn is_unsigned_integer(self) -> bool {
         matches!(self, E::Usint | E::Uint | E::Udint | E::Ulint)
     }
@@ -189,33 +212,54 @@ impl std::fmt::Display for Elementary {
 /// The IEC standard function blocks (see `stdlib::fb_params` for their inputs and outputs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum StdFb {
+    /// `R_TRIG`: Q is TRUE for one call when CLK rises.
     RTrig,
+    /// `F_TRIG`: Q is TRUE for one call when CLK falls.
     FTrig,
+    /// `SR`: set-dominant bistable (S1, R -> Q1).
     Sr,
+    /// `RS`: reset-dominant bistable (S, R1 -> Q1).
     Rs,
+    /// `TON`: on-delay timer (IN, PT -> Q, ET).
     Ton,
+    /// `TOF`: off-delay timer (IN, PT -> Q, ET).
     Tof,
+    /// `TP`: pulse timer (IN, PT -> Q, ET).
     Tp,
     /// CTU (counter on INT, PV: INT, CV: INT).
     Ctu,
+    /// `CTD`: down counter on INT (CD, LD, PV -> Q, CV).
     Ctd,
+    /// `CTUD`: up/down counter on INT (CU, CD, R, LD, PV -> QU, QD, CV).
     Ctud,
     /// The typed counters of edition 2/3: `CTU_DINT` ... `CTUD_ULINT` (PV and CV of that type).
     CtuDint,
+    /// `CTU_LINT`: CTU with PV and CV of type LINT (count up on CU).
     CtuLint,
+    /// `CTU_UDINT`: CTU with PV and CV of type UDINT (count up on CU).
     CtuUdint,
+    /// `CTU_ULINT`: CTU with PV and CV of type ULINT (count up on CU).
     CtuUlint,
+    /// `CTD_DINT`: CTD with PV and CV of type DINT (count down on CD).
     CtdDint,
+    /// `CTD_LINT`: CTD with PV and CV of type LINT (count down on CD).
     CtdLint,
+    /// `CTD_UDINT`: CTD with PV and CV of type UDINT (count down on CD).
     CtdUdint,
+    /// `CTD_ULINT`: CTD with PV and CV of type ULINT (count down on CD).
     CtdUlint,
+    /// `CTUD_DINT`: CTUD with PV and CV of type DINT (count up on CU and down on CD).
     CtudDint,
+    /// `CTUD_LINT`: CTUD with PV and CV of type LINT (count up on CU and down on CD).
     CtudLint,
+    /// `CTUD_UDINT`: CTUD with PV and CV of type UDINT (count up on CU and down on CD).
     CtudUdint,
+    /// `CTUD_ULINT`: CTUD with PV and CV of type ULINT (count up on CU and down on CD).
     CtudUlint,
 }
 
 impl StdFb {
+    /// Every standard function block, in declaration order.
     pub const ALL: [StdFb; 22] = [
         StdFb::RTrig,
         StdFb::FTrig,
@@ -240,6 +284,7 @@ impl StdFb {
         StdFb::CtudUdint,
         StdFb::CtudUlint,
     ];
+    /// The IEC name, upper case (`R_TRIG`, `CTU_DINT`; the INT counters are `CTU`, `CTD`, `CTUD`).
     pub fn name(self) -> &'static str {
         match self {
             StdFb::RTrig => "R_TRIG",
@@ -305,30 +350,40 @@ impl StdFb {
 /// The three counter families (CTU, CTD, CTUD), whatever their count type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum CounterKind {
+    /// CTU, CTU_*: counts up on CU, Q when CV >= PV.
     Up,
+    /// CTD, CTD_*: counts down on CD, Q when CV <= 0.
     Down,
+    /// CTUD, CTUD_*: both, with QU and QD.
     UpDown,
 }
 
 /// The type of an FB instance.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum FbType {
+    /// One of the IEC standard function blocks (`TON`, `CTU` ...).
     Standard(StdFb),
+    /// A user `FUNCTION_BLOCK` of the model.
     User(PouId),
 }
 
 /// A resolved type.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum Type {
+    /// `BOOL`, `INT`, `TIME` ...
     Elementary(Elementary),
     /// `STRING[len]` / `WSTRING[len]`; an unsized declaration has `len` 254 (the IEC default).
     String {
+        /// `WSTRING` (UTF-16) rather than `STRING` (bytes).
         wide: bool,
+        /// The capacity in characters.
         len: u32,
     },
     /// `ARRAY [l..u, ...] OF element`.
     Array {
+        /// The dimensions in order.
         dims: Vec<Dim>,
+        /// The element type.
         element: Box<Type>,
     },
     /// A user structure (`Model::types[id]` is a `UserTypeDef::Struct`).
@@ -339,8 +394,11 @@ pub enum Type {
     /// are boxed: subranges are rare, and unboxed `i128`s would make every `Type` (three in each
     /// instruction's facts) 48 bytes instead of 32.
     Subrange {
+        /// The integer type the subrange restricts.
         base: Elementary,
+        /// The smallest allowed value (inclusive).
         lower: Box<i128>,
+        /// The largest allowed value (inclusive).
         upper: Box<i128>,
     },
     /// An FB instance.
@@ -352,7 +410,9 @@ pub enum Type {
 /// One array dimension `lower..upper` (inclusive).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub struct Dim {
+    /// The first index (inclusive).
     pub lower: i128,
+    /// The last index (inclusive).
     pub upper: i128,
 }
 
@@ -365,6 +425,7 @@ impl Dim {
             self.upper.abs_diff(self.lower).saturating_add(1)
         }
     }
+    /// Whether the dimension has no elements (`upper < lower`).
     pub fn is_empty(self) -> bool {
         self.len() == 0
     }
@@ -374,13 +435,20 @@ impl Dim {
 pub const DEFAULT_STRING_LEN: u32 = 254;
 
 impl Type {
+    /// `BOOL`, i.e. `Type::Elementary(Elementary::Bool)`.
     pub const BOOL: Type = Type::Elementary(E::Bool);
+    /// `INT`, i.e. `Type::Elementary(Elementary::Int)`.
     pub const INT: Type = Type::Elementary(E::Int);
+    /// `DINT`, i.e. `Type::Elementary(Elementary::Dint)`.
     pub const DINT: Type = Type::Elementary(E::Dint);
+    /// `REAL`, i.e. `Type::Elementary(Elementary::Real)`.
     pub const REAL: Type = Type::Elementary(E::Real);
+    /// `LREAL`, i.e. `Type::Elementary(Elementary::Lreal)`.
     pub const LREAL: Type = Type::Elementary(E::Lreal);
+    /// `TIME`, i.e. `Type::Elementary(Elementary::Time)`.
     pub const TIME: Type = Type::Elementary(E::Time);
 
+    /// The elementary type `e` as a [`Type`].
     pub fn elem(e: Elementary) -> Type {
         Type::Elementary(e)
     }
@@ -393,30 +461,39 @@ impl Type {
             _ => None,
         }
     }
+    /// Whether this is [`Type::Error`] (already reported; checks skip it).
     pub fn is_error(&self) -> bool {
         matches!(self, Type::Error)
     }
+    /// `BOOL` (or a subrange of it).
     pub fn is_bool(&self) -> bool {
         self.elementary() == Some(E::Bool)
     }
+    /// ANY_INT, looking through subranges.
     pub fn is_integer(&self) -> bool {
         self.elementary().is_some_and(Elementary::is_integer)
     }
+    /// ANY_REAL.
     pub fn is_real(&self) -> bool {
         self.elementary().is_some_and(Elementary::is_real)
     }
+    /// ANY_NUM.
     pub fn is_numeric(&self) -> bool {
         self.elementary().is_some_and(Elementary::is_numeric)
     }
+    /// ANY_BIT (BOOL BYTE WORD DWORD LWORD).
     pub fn is_bit(&self) -> bool {
         self.elementary().is_some_and(Elementary::is_bit)
     }
+    /// Signed integer, real or duration.
     pub fn is_signed(&self) -> bool {
         self.elementary().is_some_and(Elementary::is_signed)
     }
+    /// `STRING` or `WSTRING`.
     pub fn is_string(&self) -> bool {
         matches!(self, Type::String { .. })
     }
+    /// A function block instance.
     pub fn is_fb(&self) -> bool {
         matches!(self, Type::Fb(_))
     }
@@ -438,9 +515,11 @@ impl Type {
 /// A constant value (initial values, enum values, literal operands after typing).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum ConstValue {
+    /// `TRUE` / `FALSE`.
     Bool(bool),
     /// Any integer or bit-string value.
     Int(i128),
+    /// A REAL or LREAL value.
     Real(f64),
     /// TIME/LTIME in nanoseconds.
     Duration(i128),
@@ -450,13 +529,18 @@ pub enum ConstValue {
     TimeOfDay(i64),
     /// Nanoseconds since 1970-01-01T00:00:00.
     DateAndTime(i128),
+    /// A `STRING` / `WSTRING` value.
     String {
+        /// `WSTRING` rather than `STRING`.
         wide: bool,
+        /// The characters, escapes decoded.
         value: String,
     },
     /// The `index`-th value of enumeration `ty` (its integer value is `Model::types[ty]`'s).
     Enum {
+        /// The enumeration (`Model::types[ty]`).
         ty: TypeId,
+        /// The value's position in its declaration.
         index: usize,
     },
     /// Array elements in row-major order, repeats expanded (may be shorter than the array: rest is default).
@@ -468,12 +552,16 @@ pub enum ConstValue {
 /// A direct address `%IX0.1` / `%QW3` / `%MD10` (`path` empty for `%I*`).
 #[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub struct Location {
+    /// `I`, `Q` or `M`.
     pub area: Area,
+    /// `X`, `B`, `W`, `D` or `L` (none: `X`).
     pub size: AddressSize,
+    /// The dotted location numbers (`%IX1.2` -> [1, 2]).
     pub path: Vec<u32>,
 }
 
 impl Location {
+    /// The location of a parsed direct address.
     pub fn of(a: &DirectAddress) -> Location {
         Location {
             area: a.area,
@@ -498,10 +586,15 @@ impl Location {
 pub struct Variable {
     /// As written.
     pub name: String,
+    /// The declaration's span.
     pub span: Span,
+    /// The section it was declared in (`VAR_INPUT` ...); `Local` for struct fields.
     pub kind: VarKind,
+    /// The resolved type.
     pub ty: Type,
+    /// Declared in a `CONSTANT` block: writes are errors.
     pub constant: bool,
+    /// Declared in a `RETAIN` block.
     pub retain: bool,
     /// `AT %IX0.1`.
     pub location: Option<Location>,
@@ -514,6 +607,7 @@ pub struct Variable {
 }
 
 impl Variable {
+    /// Whether the variable is called `name`, ignoring case.
     pub fn is(&self, name: &str) -> bool {
         self.name.eq_ignore_ascii_case(name)
     }
@@ -524,23 +618,33 @@ impl Variable {
 pub struct UserType {
     /// As written (inline enums get `__ENUM_<n>`).
     pub name: String,
+    /// The declaration's span (the name in `TYPE ... END_TYPE`).
     pub span: Span,
+    /// Structure, enumeration or alias.
     pub def: UserTypeDef,
 }
 
+/// What a user data type is, resolved.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum UserTypeDef {
     /// Fields are `Variable`s of kind `Local`.
-    Struct { fields: Vec<Variable> },
+    Struct {
+        /// The fields in declaration order.
+        fields: Vec<Variable>,
+    },
     /// Values as written with their integer values (implicit ones count on from the previous);
     /// `default` indexes `values`.
     Enum {
+        /// `(name, value)` in declaration order.
         values: Vec<(String, i128)>,
+        /// The default value: `:= v` after the list, else the first (index into `values`).
         default: usize,
     },
     /// `TYPE T : INT := 5;`: the resolved target (uses of `T` are replaced by it) and its initial value.
     Alias {
+        /// The resolved type the alias stands for.
         target: Type,
+        /// The alias' default initial value (`:= 5`), if declared.
         init: Option<ConstValue>,
     },
 }
@@ -548,8 +652,11 @@ pub enum UserTypeDef {
 /// A program, function block or function.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Pou {
+    /// The POU name as written.
     pub name: String,
+    /// From the POU keyword to `END_*`.
     pub span: Span,
+    /// `PROGRAM`, `FUNCTION_BLOCK` or `FUNCTION`.
     pub kind: PouKind,
     /// A FUNCTION's result type.
     pub return_type: Option<Type>,
@@ -605,15 +712,19 @@ impl Pou {
             self.vars.iter().position(|v| v.is(name))
         }
     }
+    /// A variable by name (case-insensitive).
     pub fn var(&self, name: &str) -> Option<&Variable> {
         self.var_position(name).map(|i| &self.vars[i])
     }
+    /// The `VAR_INPUT` variables, in declaration order (the order of non-formal call arguments).
     pub fn inputs(&self) -> impl Iterator<Item = &Variable> {
         self.vars.iter().filter(|v| v.kind == VarKind::Input)
     }
+    /// The `VAR_OUTPUT` variables, in declaration order.
     pub fn outputs(&self) -> impl Iterator<Item = &Variable> {
         self.vars.iter().filter(|v| v.kind == VarKind::Output)
     }
+    /// The `VAR_IN_OUT` variables, in declaration order.
     pub fn in_outs(&self) -> impl Iterator<Item = &Variable> {
         self.vars.iter().filter(|v| v.kind == VarKind::InOut)
     }
@@ -625,35 +736,57 @@ pub enum GlobalRef {
     /// `Model::globals[i]` (a `VAR_GLOBAL` block outside any configuration).
     Free(usize),
     /// `Model::configurations[c].globals[i]`.
-    Configuration { config: usize, index: usize },
+    Configuration {
+        /// Index into `Model::configurations`.
+        config: usize,
+        /// Index into that configuration's `globals`.
+        index: usize,
+    },
     /// `Model::configurations[c].resources[r].globals[i]`.
     Resource {
+        /// Index into `Model::configurations`.
         config: usize,
+        /// Index into that configuration's `resources`.
         resource: usize,
+        /// Index into that resource's `globals`.
         index: usize,
     },
 }
 
+/// A resolved `CONFIGURATION` (IEC 61131-3 2.7.1).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Configuration {
+    /// The configuration's name as written.
     pub name: String,
+    /// From `CONFIGURATION` to `END_CONFIGURATION`.
     pub span: Span,
+    /// Its `VAR_GLOBAL` variables (referenced by [`GlobalRef::Configuration`]).
     pub globals: Vec<Variable>,
+    /// Its resources (at least one: a configuration without `RESOURCE` gets one).
     pub resources: Vec<Resource>,
 }
 
+/// A resolved `RESOURCE`: one processing unit with its tasks and program instances.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Resource {
+    /// The resource's name as written.
     pub name: String,
+    /// From `RESOURCE` to `END_RESOURCE`.
     pub span: Span,
+    /// Its `VAR_GLOBAL` variables (referenced by [`GlobalRef::Resource`]).
     pub globals: Vec<Variable>,
+    /// Its tasks; [`ProgramInstance::task`] indexes this.
     pub tasks: Vec<Task>,
+    /// Its program instances, in source order.
     pub programs: Vec<ProgramInstance>,
 }
 
+/// A resolved `TASK`: how often (or on which event) its programs run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Task {
+    /// The task's name as written.
     pub name: String,
+    /// The `TASK` declaration.
     pub span: Span,
     /// `INTERVAL := T#10ms` in nanoseconds (a literal; `None` when absent or given by a variable).
     pub interval_ns: Option<u64>,
@@ -663,13 +796,18 @@ pub struct Task {
     pub priority: u32,
 }
 
+/// A resolved `PROGRAM inst WITH task : Type (...)`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ProgramInstance {
+    /// The instance name as written.
     pub name: String,
+    /// The declaration.
     pub span: Span,
+    /// `PROGRAM RETAIN`: the instance's variables are retentive.
     pub retain: bool,
     /// Index into the resource's `tasks`; `None` when no `WITH` (runs in the background).
     pub task: Option<usize>,
+    /// The program POU instantiated.
     pub pou: PouId,
     /// `(in := x, out => y)` bound to the program's parameters.
     pub args: Vec<ProgramArg>,
@@ -682,13 +820,18 @@ pub struct ProgramArg {
     pub param: usize,
     /// `=>`: the program's output is copied to the value (a global or an address).
     pub output: bool,
+    /// What the parameter is connected to.
     pub value: ProgramArgValue,
 }
 
+/// What a program instance's parameter is connected to.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub enum ProgramArgValue {
+    /// A global variable.
     Global(GlobalRef),
+    /// A direct address (`%IX0.1`).
     Address(Location),
+    /// A constant (`in := 5`).
     Const(ConstValue),
 }
 
@@ -699,30 +842,42 @@ pub enum Callee {
     /// `ADD x` is `Std { name: "ADD", ty: INT, .. }`); `ty` is the type the generic parameters were
     /// instantiated with, `result` the function's result type (BOOL for comparisons).
     Std {
+        /// The standard function's canonical name (`ADD`, `LIMIT`).
         name: &'static str,
+        /// The type its generic parameters were instantiated with.
         ty: Type,
+        /// The result type (BOOL for comparisons).
         result: Type,
     },
     /// `X_TO_Y`, `TRUNC`, `BCD_TO_*`, `*_TO_BCD`.
     Conversion {
+        /// The function name as written upper case (`INT_TO_REAL`).
         name: String,
+        /// How the value is converted.
         kind: ConversionKind,
+        /// The source type.
         from: Type,
+        /// The target type.
         to: Type,
     },
+    /// A user `FUNCTION` of the model.
     UserFunction(PouId),
     /// `CAL inst`, `S1 inst`, `IN tmr`, and `S`/`R` with an FB instance operand: `input` is the input the
     /// operator writes (`None` for `CAL`).
     FbInstance {
+        /// The instance's FB type.
         fb: FbType,
+        /// The input the operator writes (`IN` for `IN tmr`); `None` for `CAL`.
         input: Option<String>,
     },
     /// `FUNC Name()`: an embedded C function; the current result is unchanged.
     Embedded {
+        /// The C function's name.
         name: String,
     },
 }
 
+/// How a type conversion function converts (IEC 61131-3 2.5.1.5.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum ConversionKind {
     /// `INT_TO_REAL`, `REAL_TO_INT` (rounds to nearest, IEC), `DINT_TO_INT` (truncates bits) ...
@@ -753,6 +908,7 @@ pub struct ArgBinding {
     pub output: bool,
     /// The formal parameter's type (instantiated for generic standard functions).
     pub ty: Type,
+    /// Where the value comes from.
     pub source: ArgSource,
 }
 
@@ -763,6 +919,7 @@ pub struct ArgBinding {
 pub struct InstrId(usize);
 
 impl InstrId {
+    /// The identity of `instruction` (its address; valid while the analysed units are alive and unmoved).
     pub fn of(instruction: &crate::ast::Instruction) -> Self {
         InstrId(instruction as *const crate::ast::Instruction as usize)
     }
@@ -780,6 +937,8 @@ pub struct InstrInfo {
     /// The operand's type (for a deferred operator, the nested list's value); for an untyped literal
     /// operand, the type its context fixed.
     pub operand: Option<Type>,
+    /// What the instruction calls (functions, FB instances, operators mapped onto standard functions), if
+    /// anything.
     pub callee: Option<Callee>,
     /// Call arguments bound to parameters, in evaluation order (function calls, `CAL` with arguments).
     pub args: Vec<ArgBinding>,
@@ -795,12 +954,15 @@ pub enum NameRef {
     FunctionResult,
     /// The implicit `EN` input / `ENO` output of a function or FB.
     En,
+    /// See [`NameRef::En`].
     Eno,
     /// A `VAR_GLOBAL` outside any configuration, used directly.
     Global(GlobalRef),
     /// An enumerated value written without its type (`red`).
     EnumValue {
+        /// The enumeration.
         ty: TypeId,
+        /// The value's position in its declaration.
         index: usize,
     },
 }
@@ -808,8 +970,11 @@ pub enum NameRef {
 /// Everything sema resolved.
 #[derive(Debug, Clone, Default, Serialize)]
 pub struct Model {
+    /// User data types, indexed by [`TypeId`] (inline enumerations included).
     pub types: Vec<UserType>,
+    /// All POUs of the analysed units in source order, indexed by [`PouId`].
     pub pous: Vec<Pou>,
+    /// The configurations in source order.
     pub configurations: Vec<Configuration>,
     /// `VAR_GLOBAL` blocks outside configurations.
     pub globals: Vec<Variable>,
@@ -828,7 +993,9 @@ pub type SpanTable<V> = KeyTable<Span, V>;
 
 /// A key of a [`KeyTable`]: hashable, and with an order in which keys usually arrive.
 pub trait TableKey: Copy + Eq + std::hash::Hash {
+    /// The comparison key (spans: file, start, end; instruction ids: address).
     type Order: Ord;
+    /// This key's position in the usual arrival order.
     fn order(&self) -> Self::Order;
 }
 
@@ -937,12 +1104,15 @@ impl<K: TableKey, V> KeyTable<K, V> {
             index.reserve(additional);
         }
     }
+    /// The number of entries.
     pub fn len(&self) -> usize {
         self.entries.len()
     }
+    /// Whether the table is empty.
     pub fn is_empty(&self) -> bool {
         self.entries.is_empty()
     }
+    /// Whether `span` has a value.
     pub fn contains_key(&self, span: &K) -> bool {
         self.position(span).is_some()
     }
@@ -950,6 +1120,7 @@ impl<K: TableKey, V> KeyTable<K, V> {
     pub fn iter(&self) -> impl Iterator<Item = (&K, &V)> {
         self.entries.iter().map(|(s, v)| (s, v))
     }
+    /// The values in insertion order.
     pub fn values(&self) -> impl Iterator<Item = &V> {
         self.entries.iter().map(|(_, v)| v)
     }
@@ -963,18 +1134,22 @@ impl<K: TableKey + Serialize, V: Serialize> Serialize for KeyTable<K, V> {
 }
 
 impl Model {
+    /// The POU with id `id`.
     pub fn pou(&self, id: PouId) -> &Pou {
         &self.pous[id.0 as usize]
     }
+    /// A POU's id by name (case-insensitive).
     pub fn pou_by_name(&self, name: &str) -> Option<PouId> {
         self.pous
             .iter()
             .position(|p| p.name.eq_ignore_ascii_case(name))
             .map(|i| PouId(i as u32))
     }
+    /// The user type with id `id`.
     pub fn user_type(&self, id: TypeId) -> &UserType {
         &self.types[id.0 as usize]
     }
+    /// A user type's id by name (case-insensitive).
     pub fn type_by_name(&self, name: &str) -> Option<TypeId> {
         self.types
             .iter()

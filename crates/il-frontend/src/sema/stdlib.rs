@@ -16,15 +16,20 @@ pub enum Class {
     Any,
     /// Elementary types, strings, enumerations (comparisons, LIMIT, MAX, MIN).
     AnyElementary,
+    /// ANY_NUM: integers and reals (ADD, ABS ...).
     AnyNum,
+    /// ANY_REAL: REAL, LREAL (SQRT, SIN ...).
     AnyReal,
+    /// ANY_INT: signed and unsigned integers (MOD).
     AnyInt,
+    /// ANY_BIT: BOOL, BYTE, WORD, DWORD, LWORD (AND, SHL ...).
     AnyBit,
     /// STRING and WSTRING (LEN, LEFT, CONCAT ...).
     AnyString,
 }
 
 impl Class {
+    /// The class's IEC name (`ANY_NUM`), for messages.
     pub fn name(self) -> &'static str {
         match self {
             Class::Any => "ANY",
@@ -83,27 +88,35 @@ pub enum ParamTy {
 pub enum Ret {
     /// The generic type `T`.
     T,
+    /// A fixed type (`INT` for LEN, `BOOL` for comparisons).
     Fixed(Elementary),
 }
 
+/// One formal input parameter of a standard function.
 #[derive(Debug, Clone, Copy)]
 pub struct Param {
+    /// The formal name (`IN1`, `MN`, `G`), used in formal calls `LIMIT(MN := 0, ...)`.
     pub name: &'static str,
+    /// Its type, generic or fixed.
     pub ty: ParamTy,
 }
 
 /// A standard function.
 #[derive(Debug, Clone, Copy)]
 pub struct StdFunction {
+    /// The function's name, upper case (`LIMIT`).
     pub name: &'static str,
     /// The inputs in order; in IL the current result is the first one.
     pub params: &'static [Param],
     /// Extensible: the last parameter repeats (`IN1, IN2, IN3 ...` for ADD; `IN0, IN1, IN2 ...` for MUX);
     /// repeated names count on from the last one's number.
     pub extensible: bool,
+    /// The result type.
     pub result: Ret,
     /// Whether `TIME_ARITH` overloads apply (ADD, SUB, MUL, DIV).
     pub time_arith: bool,
+    /// One line on what the function computes (`"IN1 modulo IN2 (0 when IN2 = 0)"`), for tools that list
+    /// the standard functions.
     pub doc: &'static str,
 }
 
@@ -404,14 +417,18 @@ pub fn time_overloads(
 pub struct Conversion {
     /// The input type: `Some` for `X_TO_Y`; `None` when generic (TRUNC: ANY_REAL, BCD_TO_INT: ANY_BIT).
     pub from: Option<Type>,
+    /// The class the input must belong to (ANY for `X_TO_Y`, whose `from` fixes it).
     pub from_class: Class,
+    /// The output type.
     pub to: ConvTarget,
+    /// How the value is converted (plain, truncating, BCD).
     pub kind: super::model::ConversionKind,
 }
 
 /// The output of a conversion.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ConvTarget {
+    /// A fixed output type (`REAL` in `INT_TO_REAL`).
     Fixed(Type),
     /// `*_TO_BCD` written without the bit-string type: BYTE/WORD/DWORD/LWORD by the input's width.
     BcdOfWidth,
@@ -552,15 +569,20 @@ pub fn bcd_of_width(int: Elementary) -> Elementary {
 /// Direction of a standard FB parameter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Dir {
+    /// `VAR_INPUT` of the standard FB.
     Input,
+    /// `VAR_OUTPUT` of the standard FB.
     Output,
 }
 
 /// A standard FB parameter.
 #[derive(Debug, Clone, Copy)]
 pub struct FbParam {
+    /// The parameter's name (`IN`, `PT`, `Q`, `ET`).
     pub name: &'static str,
+    /// Input or output.
     pub dir: Dir,
+    /// Its type (`PV`/`CV` of the typed counters take the counter's type).
     pub ty: Elementary,
 }
 

@@ -89,6 +89,7 @@ pub fn common_type(types: &[Type]) -> Option<Type> {
 /// What a literal's type is before context.
 #[derive(Debug, Clone, PartialEq)]
 pub enum LitType {
+    /// A typed literal (`INT#5`, `T#1s`, `TRUE`, `'text'`) or one whose kind fixes its type.
     Known(Type),
     /// An untyped integer literal with its value.
     Int(i128),
@@ -98,7 +99,9 @@ pub enum LitType {
 
 /// A problem with a typed literal.
 pub struct LitError {
+    /// What is wrong (`INT#40000 is out of range for INT`).
     pub message: String,
+    /// How to fix it.
     pub hint: String,
 }
 
@@ -274,11 +277,23 @@ struct LitInfo {
 
 /// Result of trying to fix a literal variable's type.
 pub enum BindError {
-    Kind { span: Span },
-    Range { value: i128, span: Span },
+    /// The type is of the wrong kind for the literals (a real literal for an integer type, an integer
+    /// literal for a string ...).
+    Kind {
+        /// One of the literals of the class.
+        span: Span,
+    },
+    /// A literal of the class does not fit the type's range (`300` for a SINT).
+    Range {
+        /// The value that does not fit.
+        value: i128,
+        /// The literal holding it.
+        span: Span,
+    },
 }
 
 impl LitVars {
+    /// A new variable for an untyped integer literal of value `v` at `span`; returns its index.
     pub fn new_int(&mut self, v: i128, span: Span) -> usize {
         self.push(LitInfo {
             min: v,
@@ -289,6 +304,7 @@ impl LitVars {
             max_span: span,
         })
     }
+    /// A new variable for an untyped real literal at `span`; returns its index.
     pub fn new_real(&mut self, span: Span) -> usize {
         self.push(LitInfo {
             min: 0,
@@ -304,6 +320,7 @@ impl LitVars {
         self.info.push(i);
         self.parent.len() - 1
     }
+    /// The representative of `v`'s class (union-find with path compression).
     pub fn find(&mut self, v: usize) -> usize {
         let mut r = v;
         while self.parent[r] != r {
@@ -322,6 +339,7 @@ impl LitVars {
         let r = self.find(v);
         self.info[r].bound.clone()
     }
+    /// Whether `v`'s class holds a real literal (then only ANY_REAL types fit).
     pub fn is_real(&mut self, v: usize) -> bool {
         let r = self.find(v);
         self.info[r].real

@@ -1,5 +1,8 @@
 //! The Structured Text syntax tree: what [`super::parser`] produces and [`super::lower`] turns into IL.
 //!
+//! Input: built by [`super::parser`] from ST text. Output: read by [`super::infer`] (types of
+//! expressions) and [`super::lower`] (IL instructions).
+//!
 //! Invariants: every node carries the span of its source text; names keep the user's spelling and
 //! compare case-insensitively (they are [`crate::ast::Ident`]s); literals, direct addresses and typed
 //! enum values reuse the IL tree's nodes, so they print and type exactly as in IL. A construct the
@@ -12,7 +15,9 @@ use serde::Serialize;
 /// A statement with the span of its whole text (up to and including its `;`, when present).
 #[derive(Debug, Clone, Serialize)]
 pub struct Stmt {
+    /// What the statement does.
     pub kind: StmtKind,
+    /// The statement's text, up to and including its `;` when present.
     pub span: Span,
 }
 
@@ -22,46 +27,66 @@ pub struct Stmt {
 pub enum StmtKind {
     /// `target := value;` (also the result of a FUNCTION: `Name := value;`).
     Assign {
+        /// The variable written (or the FUNCTION's own name for its result).
         target: Place,
+        /// The value assigned.
         value: Expr,
     },
     /// `inst(IN := x, Q => y);` (FB instance call) or `F(x);` (function call as a statement).
     Call {
+        /// The FB instance or function called.
         callee: Place,
+        /// The arguments in written order.
         args: Vec<Arg>,
     },
     /// `IF c THEN ... ELSIF c2 THEN ... ELSE ... END_IF;`
     If {
+        /// The `IF` branch and the `ELSIF` branches, in order.
         branches: Vec<CondBranch>,
+        /// The `ELSE` statements, if there is an `ELSE`.
         else_body: Option<Vec<Stmt>>,
     },
     /// `CASE sel OF 1, 2: ... 3..5: ... ELSE ... END_CASE;`
     Case {
+        /// The value compared with the labels (an integer or enumerated expression).
         selector: Expr,
+        /// The `labels: statements` arms, in order.
         arms: Vec<CaseArm>,
+        /// The `ELSE` statements, if there is an `ELSE`.
         else_body: Option<Vec<Stmt>>,
     },
     /// `FOR i := from TO to BY step DO ... END_FOR;`
     For {
+        /// The control variable (`i`).
         control: Ident,
+        /// The start value, assigned before the first iteration.
         from: Expr,
+        /// The end value (inclusive).
         to: Expr,
+        /// The `BY` step; `None` means 1.
         by: Option<Expr>,
+        /// The loop body.
         body: Vec<Stmt>,
     },
     /// `WHILE c DO ... END_WHILE;`
     While {
+        /// The condition, tested before each iteration.
         cond: Expr,
+        /// The loop body.
         body: Vec<Stmt>,
     },
     /// `REPEAT ... UNTIL c END_REPEAT;`
     Repeat {
+        /// The loop body, run at least once.
         body: Vec<Stmt>,
+        /// The condition that ends the loop, tested after each iteration.
         until: Expr,
     },
+    /// `EXIT;`: leave the innermost loop.
     Exit,
     /// `CONTINUE;` (edition 3): the next iteration of the innermost loop.
     Continue,
+    /// `RETURN;`: leave the POU.
     Return,
     /// `;` alone.
     Empty,
@@ -70,21 +95,29 @@ pub enum StmtKind {
 /// `IF`/`ELSIF` condition with its statements.
 #[derive(Debug, Clone, Serialize)]
 pub struct CondBranch {
+    /// The condition (a BOOL expression).
     pub cond: Expr,
+    /// The statements run when it holds.
     pub body: Vec<Stmt>,
+    /// From `IF`/`ELSIF` to the end of the branch's statements.
     pub span: Span,
 }
 
 /// `1, 2, 5..7: statements`.
 #[derive(Debug, Clone, Serialize)]
 pub struct CaseArm {
+    /// The labels (values and ranges) that select the arm.
     pub labels: Vec<CaseLabel>,
+    /// The statements run when a label matches.
     pub body: Vec<Stmt>,
+    /// From the first label to the end of the arm's statements.
     pub span: Span,
 }
 
+/// One `CASE` label.
 #[derive(Debug, Clone, Serialize)]
 pub enum CaseLabel {
+    /// A single value: `3`, `red`, `-1`.
     Value(Expr),
     /// `lower..upper` (inclusive).
     Range(Expr, Expr),
@@ -93,19 +126,27 @@ pub enum CaseLabel {
 /// An assignable place or a call target: `x`, `s.a[i + 1].b`, `inst.Q`, `%QX0.1`.
 #[derive(Debug, Clone, Serialize)]
 pub struct Place {
+    /// The variable name or direct address first.
     pub base: PlaceBase,
+    /// The `.field` and `[index]` parts after the base, in order.
     pub accessors: Vec<Accessor>,
+    /// The whole place text.
     pub span: Span,
 }
 
+/// What a place starts with.
 #[derive(Debug, Clone, Serialize)]
 pub enum PlaceBase {
+    /// A variable, FB instance or function name.
     Name(Ident),
+    /// A direct address: `%QX0.1 := TRUE;`.
     Address(DirectAddress),
 }
 
+/// One step of a place after its base.
 #[derive(Debug, Clone, Serialize)]
 pub enum Accessor {
+    /// `.name`: a structure field or an FB instance's input/output.
     Field(Ident),
     /// `[i, j + 1]`: index expressions.
     Index(Vec<Expr>),
@@ -114,50 +155,73 @@ pub enum Accessor {
 /// One call argument: `x` (non-formal), `IN := x`, `Q => y`, `NOT Q => y`.
 #[derive(Debug, Clone, Serialize)]
 pub struct Arg {
+    /// The formal parameter (`IN` in `IN := x`); `None` for a non-formal (positional) argument.
     pub name: Option<Ident>,
+    /// Input (`:=` or positional) or output (`=>`).
     pub dir: ArgDir,
+    /// The value passed, or the variable an output is written to.
     pub value: Expr,
+    /// The whole argument text.
     pub span: Span,
 }
 
+/// Which way an ST call argument passes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum ArgDir {
+    /// `IN := x` or positional `x`.
     Input,
     /// `=>`; `negated` for `NOT Q => y`.
     Output {
+        /// `NOT Q => y`: the inverted output is stored.
         negated: bool,
     },
 }
 
+/// An ST expression with its span.
 #[derive(Debug, Clone, Serialize)]
 pub struct Expr {
+    /// What the expression computes.
     pub kind: ExprKind,
+    /// The expression's text.
     pub span: Span,
 }
 
+/// What an ST expression is (IEC 61131-3 3.3.1, table 55).
 #[derive(Debug, Clone, Serialize)]
 pub enum ExprKind {
+    /// A constant: `5`, `T#1s`, `'text'`, `INT#3`.
     Literal(Literal),
     /// A variable, a field, an element, an FB output; also a bare enumerated value `red`.
     Place(Place),
     /// `Color#red`.
     EnumValue {
+        /// The enumerated type before `#`.
         type_name: Ident,
+        /// The value after `#`.
         value: Ident,
     },
+    /// `-x`, `+x`, `NOT x`.
     Unary {
+        /// The operator.
         op: UnaryOp,
+        /// What it applies to.
         operand: Box<Expr>,
     },
+    /// `a + b`, `x AND y`, `a ** 2` ...
     Binary {
+        /// The operator.
         op: BinaryOp,
+        /// The left operand.
         left: Box<Expr>,
+        /// The right operand.
         right: Box<Expr>,
     },
     /// `F(a, b)` / `F(IN := a)`: a function call (an FB instance in an expression is an error of the
     /// lowering, with a hint).
     Call {
+        /// The function's name.
         name: Ident,
+        /// The arguments in written order.
         args: Vec<Arg>,
     },
     /// Text that could not be read (a diagnostic was reported).
@@ -201,10 +265,14 @@ fn take_operands(kind: &mut ExprKind, stack: &mut Vec<Expr>) {
     }
 }
 
+/// The unary operators of ST.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum UnaryOp {
+    /// `-x`: arithmetic negation.
     Neg,
+    /// `+x`: no effect (kept for printing and checks).
     Plus,
+    /// `NOT x`: Boolean or bitwise complement.
     Not,
 }
 
@@ -212,20 +280,35 @@ pub enum UnaryOp {
 /// `+`/`-`, `*`/`/`/`MOD`, `**`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum BinaryOp {
+    /// `OR`: Boolean or bitwise OR (lowest precedence).
     Or,
+    /// `XOR`: exclusive OR.
     Xor,
+    /// `AND` or `&`: Boolean or bitwise AND.
     And,
+    /// `=`: equality (BOOL result).
     Eq,
+    /// `<>`: inequality.
     Ne,
+    /// `<`: less than.
     Lt,
+    /// `>`: greater than.
     Gt,
+    /// `<=`: less or equal.
     Le,
+    /// `>=`: greater or equal.
     Ge,
+    /// `+`: addition (also TIME and date arithmetic).
     Add,
+    /// `-`: subtraction.
     Sub,
+    /// `*`: multiplication.
     Mul,
+    /// `/`: division (integers: truncated toward zero).
     Div,
+    /// `MOD`: remainder of integer division.
     Mod,
+    /// `**`: exponentiation, lowered to `EXPT` (highest precedence).
     Power,
 }
 

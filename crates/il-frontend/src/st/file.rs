@@ -18,12 +18,16 @@ use std::ops::Range;
 /// The language a source text is read in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Lang {
+    /// IEC 61131-3 Instruction List (`.il` files, `LD`/`ST` bodies).
     Il,
+    /// IEC 61131-3 Structured Text (`.st` files, `:=` / `IF` bodies).
     St,
+    /// A PLCopen TC6 XML project (`.xml`).
     Xml,
 }
 
 impl Lang {
+    /// The language's name for messages (`Structured Text (ST)`).
     pub fn name(self) -> &'static str {
         match self {
             Lang::Il => "instruction list (IL)",
@@ -37,10 +41,13 @@ impl Lang {
 /// `END_...`), and the language the body is written in.
 #[derive(Debug, Clone)]
 pub struct PouText {
+    /// The POU's name as written.
     pub name: String,
     /// Byte range of the name.
     pub name_range: Range<usize>,
+    /// Byte range of the body: after the declarations, up to the `END_*` keyword.
     pub body: Range<usize>,
+    /// The body's language: ST when its ST statements outnumber the lines that start like IL instructions.
     pub lang: Lang,
     /// The `INITIAL_STEP` of a body in textual SFC (not compiled: E0302).
     pub sfc: Option<Range<usize>>,
@@ -51,9 +58,13 @@ pub struct PouText {
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
 #[derive(Debug, Clone)]
 pub struct PendingBody {
+    /// The file the body is in.
     pub file: FileId,
+    /// Byte offset of the POU's name (identifies the POU in the parsed unit).
     pub name_start: usize,
+    /// Byte offset of `text` in the file (spans of the lowered IL point into the file).
     pub base: usize,
+    /// The body's text.
     pub text: String,
 }
 

@@ -17,14 +17,18 @@ use std::collections::HashMap;
 /// The type of an expression as far as the lowering needs it.
 #[derive(Debug, Clone)]
 pub enum Ty {
+    /// A declared type, as written (follow aliases with [`Env::resolve`]).
     Known(TypeRef),
     /// An integer literal without prefix: takes the type of its context.
     IntLit,
+    /// A real literal without prefix: takes the real type of its context.
     RealLit,
+    /// Not known here (an error sema reports, or a name the lowering does not look into).
     Unknown,
 }
 
 impl Ty {
+    /// The type, when it is known.
     pub fn known(&self) -> Option<&TypeRef> {
         match self {
             Ty::Known(t) => Some(t),
@@ -33,6 +37,7 @@ impl Ty {
     }
 }
 
+/// The type named `name` (`INT`, `TON`, a user type).
 pub fn named(name: &str, span: Span) -> TypeRef {
     TypeRef::Named(Ident::new(name, span))
 }
@@ -43,11 +48,15 @@ fn elem_ref(e: Elementary, span: Span) -> TypeRef {
 
 /// What the typing looks names up in.
 pub struct Env<'a> {
+    /// The program's data types, POU interfaces and globals.
     pub decls: &'a Declarations,
     /// The POU's variables (upper-case name -> type).
     pub vars: &'a HashMap<String, TypeRef>,
+    /// The POU being lowered (its name is its result variable in a FUNCTION).
     pub pou_name: &'a Ident,
+    /// Whether the POU is a FUNCTION, FUNCTION_BLOCK or PROGRAM.
     pub pou_kind: PouKind,
+    /// A FUNCTION's result type.
     pub pou_ret: Option<&'a TypeRef>,
 }
 

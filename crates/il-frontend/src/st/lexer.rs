@@ -94,33 +94,61 @@ enum Raw {
 /// ST keywords (reserved: never names).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
 pub enum Kw {
+    /// `IF`: opens a conditional.
     If,
+    /// `THEN`: ends an IF/ELSIF condition.
     Then,
+    /// `ELSIF`: another condition of an IF.
     Elsif,
+    /// `ELSE`: the default branch of IF or CASE.
     Else,
+    /// `END_IF`: closes an IF.
     EndIf,
+    /// `CASE`: opens a selection.
     Case,
+    /// `OF`: ends the CASE selector.
     Of,
+    /// `END_CASE`: closes a CASE.
     EndCase,
+    /// `FOR`: opens a counted loop.
     For,
+    /// `TO`: the end value of a FOR.
     To,
+    /// `BY`: the step of a FOR.
     By,
+    /// `DO`: starts a FOR or WHILE body.
     Do,
+    /// `END_FOR`: closes a FOR.
     EndFor,
+    /// `WHILE`: opens a pre-tested loop.
     While,
+    /// `END_WHILE`: closes a WHILE.
     EndWhile,
+    /// `REPEAT`: opens a post-tested loop.
     Repeat,
+    /// `UNTIL`: the end condition of a REPEAT.
     Until,
+    /// `END_REPEAT`: closes a REPEAT.
     EndRepeat,
+    /// `EXIT`: leaves the innermost loop.
     Exit,
+    /// `CONTINUE`: next iteration of the innermost loop (edition 3).
     Continue,
+    /// `RETURN`: leaves the POU.
     Return,
+    /// `AND`: Boolean/bitwise AND operator.
     And,
+    /// `OR`: Boolean/bitwise OR operator.
     Or,
+    /// `XOR`: exclusive OR operator.
     Xor,
+    /// `NOT`: complement operator.
     Not,
+    /// `MOD`: remainder operator.
     Mod,
+    /// `TRUE`: Boolean literal.
     True,
+    /// `FALSE`: Boolean literal.
     False,
 }
 
@@ -168,6 +196,7 @@ pub fn keyword(word: &str) -> Option<Kw> {
 }
 
 impl Kw {
+    /// The keyword upper case, as the standard writes it (for messages).
     pub fn spelling(self) -> &'static str {
         use Kw::*;
         match self {
@@ -206,38 +235,69 @@ impl Kw {
 /// The parser's tokens.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Tok {
+    /// A name (any word that is not a keyword); the text is the token's range.
     Ident,
+    /// A keyword (see [`Kw`]).
     Kw(Kw),
+    /// An integer literal `12`, `16#FF` (no sign: the parser folds `-`).
     Int(i128),
+    /// A real literal `2.5`, `1.0E3`.
     Real(f64),
+    /// A `T#`/`D#`/`TOD#`/`DT#` literal, decoded.
     Time(TimeValue),
+    /// A string literal: wide flag (`"..."`) and decoded characters.
     Str(bool, String),
     /// `INT#`, `Color#`: a typed literal or enum value follows; the name is the text without `#`.
     TypePrefix,
+    /// A direct address `%IX0.1`: area, size, location numbers.
     Address(Area, AddressSize, Vec<u32>),
+    /// `(`: opens a call's arguments or a parenthesised expression.
     LParen,
+    /// `)`
     RParen,
+    /// `[`: opens array subscripts.
     LBracket,
+    /// `]`
     RBracket,
+    /// `,`: separates arguments, subscripts and CASE labels.
     Comma,
+    /// `;`: ends a statement.
     Semi,
+    /// `:`: ends a CASE label list.
     Colon,
+    /// `:=` (assignment, input argument).
     Assign,
+    /// `=>` (output argument).
     Arrow,
+    /// `..` (a CASE range).
     DotDot,
+    /// `.` (field access).
     Dot,
+    /// `&` (AND).
     Amp,
+    /// `+`: addition or unary plus.
     Plus,
+    /// `-`: subtraction or negation.
     Minus,
+    /// `*`: multiplication.
     Star,
+    /// `**`: exponentiation.
     Power,
+    /// `/`: division.
     Slash,
+    /// `<`
     Lt,
+    /// `>`
     Gt,
+    /// `<=`
     Le,
+    /// `>=`
     Ge,
+    /// `=`: equality (assignment is `:=`).
     Eq,
+    /// `<>`: inequality.
     Ne,
+    /// `^` (pointer dereference: not supported, the parser reports E0108).
     Caret,
     /// Text the lexer could not read (reported as a [`Problem`]).
     Error,
@@ -248,16 +308,22 @@ pub enum Tok {
 /// A token and its byte range in the lexed text.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Token {
+    /// The token kind, with its decoded value for literals.
     pub tok: Tok,
+    /// Its byte range in the lexed text.
     pub range: Range<usize>,
 }
 
 /// What went wrong where (byte range in the lexed text).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Problem {
+    /// A character that starts no token.
     UnexpectedChar(Range<usize>),
+    /// `(*` or `{` never closed.
     UnterminatedComment(Range<usize>),
+    /// A string without its closing quote.
     UnterminatedString(Range<usize>),
+    /// A literal or direct address with no valid value, and why.
     BadLiteral(Range<usize>, String),
     /// An invalid `$` escape inside a string (the string is still usable).
     BadEscape(Range<usize>, String),
@@ -399,7 +465,9 @@ pub fn pragma_len(rest: &str) -> Option<usize> {
 /// that IEC leaves to the implementation) or code (Beremiz `{ C code }` / `{{ C code }}`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PragmaKind {
+    /// Attributes, messages, regions, conditional text: ignored, with note W0301.
     Informational,
+    /// Beremiz embedded C (`{ C code }`, `{{ ... }}`): not compiled, warning W0300.
     Code,
 }
 

@@ -128,6 +128,7 @@ enum Callee {
 }
 
 impl<'d> PouLowering<'d> {
+    /// The lowering state for `pou`: its declared variables are known, the other names come from `decls`.
     pub fn new(decls: &'d Declarations, pou: &Pou) -> Self {
         let mut vars = HashMap::new();
         for b in &pou.var_blocks {

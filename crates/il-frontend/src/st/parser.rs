@@ -20,6 +20,8 @@ use diagnostics::{code, Code, Diagnostic, Diagnostics};
 /// Deeper nesting of blocks or parentheses than this is reported (E0108) instead of recursing.
 const MAX_DEPTH: usize = 200;
 
+/// Parses a statement list (a POU body, an action or transition body). `base` is the byte offset of `src`
+/// in file `file`; errors are reported, the statements read are returned.
 pub fn statements(file: FileId, src: &str, base: usize, diags: &mut Diagnostics) -> Vec<Stmt> {
     let mut p = Parser::new(file, src, base, diags);
     let mut list = p.statement_list();
@@ -37,6 +39,8 @@ pub fn statements(file: FileId, src: &str, base: usize, diags: &mut Diagnostics)
     list
 }
 
+/// Parses one expression (an inline transition condition, `Level > 10 AND NOT Alarm`); `None` when there is
+/// none or it cannot be read (reported, E0107).
 pub fn expression(file: FileId, src: &str, base: usize, diags: &mut Diagnostics) -> Option<Expr> {
     let mut p = Parser::new(file, src, base, diags);
     if p.at(&Tok::Eof) {

@@ -11,7 +11,9 @@ use std::collections::HashMap;
 /// The interface of a POU as a caller sees it.
 #[derive(Debug, Clone)]
 pub struct PouInterface {
+    /// `FUNCTION` or `FUNCTION_BLOCK` (or `PROGRAM`).
     pub kind: PouKind,
+    /// The POU name as written.
     pub name: String,
     /// Every declared variable with its block kind and type, in declaration order (inputs, outputs,
     /// in-outs are the parameters; the others are only used to type `inst.x` reads).
@@ -53,12 +55,16 @@ impl PouInterface {
 /// The program's declarations, keyed by upper-case name.
 #[derive(Debug, Clone, Default)]
 pub struct Declarations {
+    /// `TYPE` declarations by upper-case name.
     pub types: HashMap<String, TypeDecl>,
+    /// POU interfaces by upper-case name.
     pub pous: HashMap<String, PouInterface>,
+    /// Global variables' declared types by upper-case name.
     pub globals: HashMap<String, TypeRef>,
 }
 
 impl Declarations {
+    /// No declarations.
     pub fn new() -> Self {
         Self::default()
     }
@@ -89,21 +95,27 @@ impl Declarations {
         }
         d
     }
+    /// Registers a data type (replacing one of the same name).
     pub fn add_type(&mut self, t: TypeDecl) {
         self.types.insert(t.name.key(), t);
     }
+    /// Registers a POU's interface (its body is not read).
     pub fn add_pou(&mut self, p: &Pou) {
         self.add_pou_interface(PouInterface::of(p));
     }
+    /// Registers an interface built elsewhere (a PLCopen project's `<interface>`).
     pub fn add_pou_interface(&mut self, i: PouInterface) {
         self.pous.insert(i.name.to_ascii_uppercase(), i);
     }
+    /// Registers a global variable's type.
     pub fn add_global(&mut self, name: &str, ty: TypeRef) {
         self.globals.insert(name.to_ascii_uppercase(), ty);
     }
+    /// A POU's interface by name (case-insensitive).
     pub fn pou(&self, name: &str) -> Option<&PouInterface> {
         self.pous.get(&name.to_ascii_uppercase())
     }
+    /// A data type's declaration by name (case-insensitive).
     pub fn type_decl(&self, name: &str) -> Option<&TypeDecl> {
         self.types.get(&name.to_ascii_uppercase())
     }

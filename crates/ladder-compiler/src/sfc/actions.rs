@@ -19,22 +19,36 @@ use diagnostics::code;
 use il_frontend::ast::{IlStmt, LiteralKind, Op, Operand, Pou, TypeRef};
 use il_frontend::Span;
 
+/// An action qualifier (IEC 61131-3 2nd ed. 2.6.4.4, table 45): how an association's step drives the action.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Qualifier {
+    /// `N` (or none): non-stored, active while the step is active.
     N,
+    /// `R`: overriding reset of a stored action.
     R,
+    /// `S`: set (stored), active until reset.
     S,
+    /// `L`: time limited, active while the step is, at most for the duration.
     L,
+    /// `D`: time delayed, active once the step has been active for the duration.
     D,
+    /// `P`: pulse, one scan when the step becomes active.
     P,
+    /// `P1`: pulse on the step's rising edge (edition 3).
     P1,
+    /// `P0`: pulse on the step's falling edge (edition 3).
     P0,
+    /// `SD`: stored and time delayed.
     SD,
+    /// `DS`: delayed and stored.
     DS,
+    /// `SL`: stored and time limited.
     SL,
 }
 
 impl Qualifier {
+    /// The qualifier of the `qualifier` attribute (case-insensitive, blank means `N`); `None` for an
+    /// unknown one.
     pub fn parse(s: &str) -> Option<Qualifier> {
         Some(match s.trim().to_ascii_uppercase().as_str() {
             "" | "N" => Qualifier::N,
@@ -51,6 +65,7 @@ impl Qualifier {
             _ => return None,
         })
     }
+    /// Whether the qualifier needs a duration (`L`, `D`, `SD`, `DS`, `SL`).
     pub fn timed(self) -> bool {
         matches!(
             self,
@@ -82,6 +97,7 @@ pub enum Target<'e, 'a> {
     Variable(Operand),
 }
 
+/// One action of the chart with every association that drives it.
 pub struct Action<'e, 'a> {
     /// The hidden-name suffix (`Fill`, or `b6_0` for the first inline action of block 6).
     pub key: String,
@@ -89,9 +105,11 @@ pub struct Action<'e, 'a> {
     pub display: String,
     /// The user-visible name (`Fill.Q`), when it has one.
     pub name: Option<String>,
+    /// What it does: run a body or drive a BOOL variable.
     pub target: Target<'e, 'a>,
     /// (qualifier, step index, duration) per association.
     pub uses: Vec<(Qualifier, usize, Option<Operand>)>,
+    /// The first association's element.
     pub span: Span,
 }
 

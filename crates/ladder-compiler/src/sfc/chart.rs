@@ -26,11 +26,17 @@ pub const SFC_ELEMENTS: &[&str] = &[
     "actionBlock",
 ];
 
+/// One `<step>` of the chart (IEC 61131-3 2.6.2): its flag `Step.X` and elapsed time `Step.T` become hidden
+/// variables.
 #[derive(Debug, Clone)]
 pub struct Step {
+    /// The `localId` attribute.
     pub id: String,
+    /// The `name` attribute: the step's identifier (unique in the chart, E3131).
     pub name: String,
+    /// `initialStep="true"`: active at the first scan.
     pub initial: bool,
+    /// The `<step>` start tag.
     pub span: Span,
 }
 
@@ -45,10 +51,14 @@ pub enum CondSource<'e, 'a> {
     Connection(&'e Element<'a>),
 }
 
+/// One `<transition>`: fires when all its predecessor steps are active and its condition is TRUE.
 #[derive(Debug, Clone)]
 pub struct Transition<'e, 'a> {
+    /// The `localId` attribute.
     pub id: String,
+    /// The `<transition>` start tag.
     pub span: Span,
+    /// Where the condition comes from.
     pub cond: CondSource<'e, 'a>,
     /// Predecessor steps (all must be active), indexes into [`Chart::steps`].
     pub pre: Vec<usize>,
@@ -61,14 +71,19 @@ pub struct Transition<'e, 'a> {
 /// One `<action>` of an action block.
 #[derive(Debug, Clone)]
 pub struct Association<'e, 'a> {
+    /// The step (index into [`Chart::steps`]) whose action block holds the action.
     pub step: usize,
+    /// The `localId` of the `<actionBlock>`.
     pub block_id: String,
     /// Position of the action in its block (0-based).
     pub index: usize,
+    /// The `<action>` element (qualifier, duration, reference or inline body).
     pub el: &'e Element<'a>,
 }
 
+/// An `<SFC>` body read as a chart: [`super::chart`]'s output, read by the SFC lowering.
 pub struct Chart<'e, 'a> {
+    /// The steps in document order; every step index in the chart points here.
     pub steps: Vec<Step>,
     /// In priority order (see [`Transition::order`]).
     pub transitions: Vec<Transition<'e, 'a>>,

@@ -13,10 +13,12 @@ use il_frontend::ast::{
 use il_frontend::Span;
 use std::collections::{HashMap, HashSet};
 
+/// The variable `name` as an operand.
 pub fn var(name: &str, span: Span) -> Operand {
     Operand::Var(var_ref(name, span))
 }
 
+/// The variable `name` as a variable access.
 pub fn var_ref(name: &str, span: Span) -> VarRef {
     VarRef {
         base: Ident::new(name, span),
@@ -25,6 +27,7 @@ pub fn var_ref(name: &str, span: Span) -> VarRef {
     }
 }
 
+/// `base.f` as an operand (`Step.X`).
 pub fn field(base: &str, f: &str, span: Span) -> Operand {
     Operand::Var(VarRef {
         base: Ident::new(base, span),
@@ -33,6 +36,7 @@ pub fn field(base: &str, f: &str, span: Span) -> Operand {
     })
 }
 
+/// The BOOL literal `b`.
 pub fn lit_bool(b: bool, span: Span) -> Operand {
     Operand::Literal(Literal {
         kind: LiteralKind::Bool(b),
@@ -41,6 +45,7 @@ pub fn lit_bool(b: bool, span: Span) -> Operand {
     })
 }
 
+/// The duration literal of `ns` nanoseconds.
 pub fn lit_time(ns: i128, span: Span) -> Operand {
     Operand::Literal(Literal {
         kind: LiteralKind::Duration(ns),
@@ -49,6 +54,7 @@ pub fn lit_time(ns: i128, span: Span) -> Operand {
     })
 }
 
+/// An IL simple instruction (`LD`, `ST`, `ANDN` ...) with its `N` modifier.
 pub fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt {
     IlStmt::Instr(Instruction {
         kind: InstrKind::Simple {
@@ -60,11 +66,13 @@ pub fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlS
     })
 }
 
+/// `op operand` (`LD x`), spanning the operand.
 pub fn op(op: Op, operand: Operand) -> IlStmt {
     let span = operand.span();
     simple(op, false, Some(operand), span)
 }
 
+/// `opN operand` (`LDN x`, `ANDN x`), spanning the operand.
 pub fn opn(op: Op, operand: Operand) -> IlStmt {
     let span = operand.span();
     simple(op, true, Some(operand), span)
@@ -116,6 +124,7 @@ pub fn sel(a: Operand, b: Operand, span: Span) -> IlStmt {
     })
 }
 
+/// `JMPCN label`.
 pub fn jump_if_false(label: &str, span: Span) -> IlStmt {
     IlStmt::Instr(Instruction {
         kind: InstrKind::Jump {
@@ -126,10 +135,12 @@ pub fn jump_if_false(label: &str, span: Span) -> IlStmt {
     })
 }
 
+/// `label:`.
 pub fn label(name: &str, span: Span) -> IlStmt {
     IlStmt::Label(Ident::new(name, span))
 }
 
+/// The type named `name` (`BOOL`, `TON`).
 pub fn named_type(name: &str, span: Span) -> TypeRef {
     TypeRef::Named(Ident::new(name, span))
 }
@@ -137,11 +148,13 @@ pub fn named_type(name: &str, span: Span) -> TypeRef {
 /// The hidden declarations of the chart, in declaration order.
 #[derive(Default)]
 pub struct Hidden {
+    /// The declarations, in the order they were first declared.
     pub vars: Vec<VarDecl>,
     names: HashSet<String>,
 }
 
 impl Hidden {
+    /// Declares `name : ty := init` unless that name (case-insensitive) is declared already.
     pub fn declare(&mut self, name: &str, ty: &str, init: Option<Operand>, span: Span) {
         if self.names.insert(name.to_ascii_uppercase()) {
             let mut d = VarDecl::new(Ident::new(name, span), named_type(ty, span), span);
@@ -151,6 +164,7 @@ impl Hidden {
             self.vars.push(d);
         }
     }
+    /// Adds a ready declaration unless its name is declared already.
     pub fn push(&mut self, d: VarDecl) {
         if self.names.insert(d.name.key()) {
             self.vars.push(d);
@@ -170,6 +184,7 @@ pub struct Renames {
 }
 
 impl Renames {
+    /// Renames every name and label of `stmts` in place.
     pub fn apply(&self, stmts: &mut [IlStmt]) {
         for s in stmts {
             match s {
@@ -213,6 +228,7 @@ impl Renames {
             CallArgs::Formal(f) => f.iter_mut().for_each(|a| self.operand(&mut a.value)),
         }
     }
+    /// Renames the variable of one operand (indexes included).
     pub fn operand(&self, o: &mut Operand) {
         if let Operand::Var(v) = o {
             self.var(v);

@@ -35,27 +35,35 @@ use snippet::{Purpose, Snippets};
 
 /// The hidden names of the chart.
 pub mod names {
+    /// `__sfc_X_<step>`: the step's active flag (`Step.X`).
     pub fn x(step: &str) -> String {
         format!("__sfc_X_{step}")
     }
+    /// `__sfc_T_<step>`: the step's elapsed time (`Step.T`).
     pub fn t(step: &str) -> String {
         format!("__sfc_T_{step}")
     }
+    /// `__sfc_TT_<step>`: the TON instance that measures the step's elapsed time.
     pub fn timer(step: &str) -> String {
         format!("__sfc_TT_{step}")
     }
+    /// `__sfc_c<id>`: the value of transition `id`'s condition.
     pub fn cond(id: &str) -> String {
         format!("__sfc_c{}", super::sanitize(id))
     }
+    /// `__sfc_f<id>`: whether transition `id` fires this scan.
     pub fn fire(id: &str) -> String {
         format!("__sfc_f{}", super::sanitize(id))
     }
+    /// `__sfc_Q_<action>`: the action's `Q` (active).
     pub fn q(action: &str) -> String {
         format!("__sfc_Q_{action}")
     }
+    /// `__sfc_A_<action>`: the action's `A` (execute).
     pub fn a(action: &str) -> String {
         format!("__sfc_A_{action}")
     }
+    /// `__sfc_<part>_<action>`: one internal variable of the action control (`Sin`, `Qm` ...).
     pub fn action_part(action: &str, part: &str) -> String {
         format!("__sfc_{part}_{action}")
     }

@@ -18,8 +18,12 @@ use crate::xml::Element;
 use diagnostics::code;
 use il_frontend::ast::{IlStmt, Op, Pou};
 
+/// Lowers the bodies inside a chart (transition conditions, action bodies) in any language into the POU's
+/// IL, with unique labels and hidden names.
 pub struct Snippets<'i> {
+    /// The project's POU interfaces, types and globals.
     pub index: &'i Index,
+    /// The POU the chart belongs to.
     pub pou: &'i Pou,
     st: StLowering<'i>,
     count: usize,
@@ -29,13 +33,17 @@ pub struct Snippets<'i> {
 pub enum Purpose<'s> {
     /// A condition: its value goes to `result`; `name` is the transition's name an LD/FBD body writes.
     Condition {
+        /// The hidden BOOL variable the condition's value is stored into.
         result: &'s str,
+        /// The transition's name as the body writes it (its coil or `Name :=`).
         name: &'s str,
     },
+    /// An action body: run as written, its labels renamed.
     Action,
 }
 
 impl<'i> Snippets<'i> {
+    /// A snippet lowering for the chart of `pou`, sharing `st`'s ST state.
     pub fn new(index: &'i Index, pou: &'i Pou, st: StLowering<'i>) -> Self {
         Snippets {
             index,

@@ -73,6 +73,8 @@ pub struct StLowering<'d> {
 }
 
 impl<'d> StLowering<'d> {
+    /// The ST lowering for `pou`'s chart: every step is declared as a variable with `.X` and `.T`, every
+    /// action with `.Q` and `.A`, so ST bodies can read them.
     pub fn new(decls: &'d Declarations, pou: &Pou, steps: &[String], actions: &[String]) -> Self {
         let mut low = PouLowering::new(decls, pou);
         let span = pou.span;
