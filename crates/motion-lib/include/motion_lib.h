@@ -492,8 +492,8 @@ typedef struct MC_Home_C {
    */
   double Position;
   /**
-   * BufferMode: accepted and checked (unknown: ErrorID 26); homing always starts at once, from
-   * Standstill only (ErrorID 14 NotStandstill otherwise).
+   * BufferMode: not used, homing always starts at once (an unknown value is still refused with
+   * ErrorID 26); it needs Standstill (ErrorID 14 NotStandstill while the axis moves).
    */
   uint8_t BufferMode;
   /**
@@ -1811,8 +1811,8 @@ typedef struct MC_GroupHome_C {
    */
   double Position[16];
   /**
-   * BufferMode: accepted and checked (unknown: ErrorID 26); group homing starts from
-   * GroupStandby only.
+   * BufferMode: not used, group homing always starts at once (an unknown value is still refused
+   * with ErrorID 26); it needs GroupStandby.
    */
   uint8_t BufferMode;
   /**
@@ -1920,23 +1920,22 @@ typedef struct MC_MoveLinearAbsolute_C {
    */
   double Position[16];
   /**
-   * Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
-   * ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+   * Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+   * axes' limits projected onto the path.
    */
   double Velocity;
   /**
-   * Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
-   * axis's acceleration limit.
+   * Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+   * the axes' limits.
    */
   double Acceleration;
   /**
-   * Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
-   * axis's deceleration limit.
+   * Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+   * the axes' limits.
    */
   double Deceleration;
   /**
-   * Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
-   * larger value is capped to it.
+   * Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
    */
   double Jerk;
   /**
@@ -2012,23 +2011,22 @@ typedef struct MC_MoveLinearRelative_C {
    */
   double Distance[16];
   /**
-   * Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
-   * ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+   * Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+   * axes' limits projected onto the path.
    */
   double Velocity;
   /**
-   * Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
-   * axis's acceleration limit.
+   * Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+   * the axes' limits.
    */
   double Acceleration;
   /**
-   * Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
-   * axis's deceleration limit.
+   * Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+   * the axes' limits.
    */
   double Deceleration;
   /**
-   * Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
-   * larger value is capped to it.
+   * Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
    */
   double Jerk;
   /**
@@ -2104,19 +2102,23 @@ typedef struct MC_MoveDirectAbsolute_C {
    */
   double Position[16];
   /**
-   * Velocity: largest speed of each axis, u/s (finite, non-zero; capped per axis by its limit).
+   * Velocity: largest speed of each axis, u/s (finite and > 0, else ErrorID 20; capped per axis
+   * by its limit).
    */
   double Velocity;
   /**
-   * Acceleration of each axis, u/s² (> 0; capped per axis by its limit).
+   * Acceleration of each axis, u/s² (finite and > 0, else ErrorID 21; capped per axis by its
+   * limit).
    */
   double Acceleration;
   /**
-   * Deceleration of each axis, u/s² (> 0; capped per axis by its limit).
+   * Deceleration of each axis, u/s² (finite and > 0, else ErrorID 22; capped per axis by its
+   * limit).
    */
   double Deceleration;
   /**
-   * Jerk of each axis, u/s³ (>= 0; 0 = each axis's own limit; capped per axis).
+   * Jerk of each axis, u/s³ (finite and >= 0, else ErrorID 23; 0 = each axis's own limit; capped
+   * per axis).
    */
   double Jerk;
   /**
@@ -2206,23 +2208,22 @@ typedef struct MC_MoveCircularAbsolute_C {
    */
   uint8_t PathChoice;
   /**
-   * Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
-   * ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+   * Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+   * axes' limits projected onto the path.
    */
   double Velocity;
   /**
-   * Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
-   * axis's acceleration limit.
+   * Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+   * the axes' limits.
    */
   double Acceleration;
   /**
-   * Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
-   * axis's deceleration limit.
+   * Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+   * the axes' limits.
    */
   double Deceleration;
   /**
-   * Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
-   * larger value is capped to it.
+   * Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
    */
   double Jerk;
   /**
@@ -2313,23 +2314,22 @@ typedef struct MC_MoveCircularRelative_C {
    */
   uint8_t PathChoice;
   /**
-   * Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
-   * ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+   * Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+   * axes' limits projected onto the path.
    */
   double Velocity;
   /**
-   * Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
-   * axis's acceleration limit.
+   * Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+   * the axes' limits.
    */
   double Acceleration;
   /**
-   * Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
-   * axis's deceleration limit.
+   * Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+   * the axes' limits.
    */
   double Deceleration;
   /**
-   * Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
-   * larger value is capped to it.
+   * Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
    */
   double Jerk;
   /**

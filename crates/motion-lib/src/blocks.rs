@@ -654,8 +654,8 @@ pub struct McHome {
     /// Position: the axis's position after homing, in u (a simulated drive homes on the spot: the
     /// set position becomes Position).
     pub position: f64,
-    /// BufferMode: accepted and checked (unknown: ErrorID 26); homing always starts at once, from
-    /// Standstill only (ErrorID 14 NotStandstill otherwise).
+    /// BufferMode: not used, homing always starts at once (the C call still refuses an unknown
+    /// value with ErrorID 26); it needs Standstill (ErrorID 14 NotStandstill while the axis moves).
     pub buffer_mode: BufferMode,
     /// Done: homing finished; the axis is back in Standstill at Position.
     pub done: bool,

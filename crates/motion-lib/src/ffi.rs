@@ -868,8 +868,8 @@ pub struct MC_Home_C {
     /// Position: the axis's position after homing, in u (a simulated drive homes on the spot: the
     /// set position becomes Position).
     pub Position: f64,
-    /// BufferMode: accepted and checked (unknown: ErrorID 26); homing always starts at once, from
-    /// Standstill only (ErrorID 14 NotStandstill otherwise).
+    /// BufferMode: not used, homing always starts at once (an unknown value is still refused with
+    /// ErrorID 26); it needs Standstill (ErrorID 14 NotStandstill while the axis moves).
     pub BufferMode: u8,
     /// Done: homing finished; the axis is back in Standstill at Position.
     pub Done: bool,
@@ -2642,8 +2642,8 @@ pub struct MC_GroupHome_C {
     /// Position per identity (IdentInGroup), in u: each axis's set position after homing (simulated
     /// drives home on the spot).
     pub Position: [f64; 16],
-    /// BufferMode: accepted and checked (unknown: ErrorID 26); group homing starts from
-    /// GroupStandby only.
+    /// BufferMode: not used, group homing always starts at once (an unknown value is still refused
+    /// with ErrorID 26); it needs GroupStandby.
     pub BufferMode: u8,
     /// Done: every axis of the group homed; the group is back in GroupStandby.
     pub Done: bool,
@@ -2780,17 +2780,16 @@ pub struct MC_MoveLinearAbsolute_C {
     /// Position: end point per identity (IdentInGroup: X, Y, Z, ...), in u; entries of identities
     /// with no axis in the group are ignored.
     pub Position: [f64; 16],
-    /// Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
-    /// ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+    /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+    /// axes' limits projected onto the path.
     pub Velocity: f64,
-    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
-    /// axis's acceleration limit.
+    /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+    /// the axes' limits.
     pub Acceleration: f64,
-    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
-    /// axis's deceleration limit.
+    /// Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+    /// the axes' limits.
     pub Deceleration: f64,
-    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
-    /// larger value is capped to it.
+    /// Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
     pub Jerk: f64,
     /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
     /// value gives ErrorID 61 InvalidCoordSystem.
@@ -2875,17 +2874,16 @@ pub struct MC_MoveLinearRelative_C {
     /// Distance per identity, in u, added to the group's last commanded point; entries of absent
     /// identities are ignored.
     pub Distance: [f64; 16],
-    /// Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
-    /// ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+    /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+    /// axes' limits projected onto the path.
     pub Velocity: f64,
-    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
-    /// axis's acceleration limit.
+    /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+    /// the axes' limits.
     pub Acceleration: f64,
-    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
-    /// axis's deceleration limit.
+    /// Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+    /// the axes' limits.
     pub Deceleration: f64,
-    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
-    /// larger value is capped to it.
+    /// Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
     pub Jerk: f64,
     /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
     /// value gives ErrorID 61 InvalidCoordSystem.
@@ -2970,13 +2968,17 @@ pub struct MC_MoveDirectAbsolute_C {
     /// Position: end point per identity, in u; each axis moves there on its own profile (absent
     /// identities ignored).
     pub Position: [f64; 16],
-    /// Velocity: largest speed of each axis, u/s (finite, non-zero; capped per axis by its limit).
+    /// Velocity: largest speed of each axis, u/s (finite and > 0, else ErrorID 20; capped per axis
+    /// by its limit).
     pub Velocity: f64,
-    /// Acceleration of each axis, u/s² (> 0; capped per axis by its limit).
+    /// Acceleration of each axis, u/s² (finite and > 0, else ErrorID 21; capped per axis by its
+    /// limit).
     pub Acceleration: f64,
-    /// Deceleration of each axis, u/s² (> 0; capped per axis by its limit).
+    /// Deceleration of each axis, u/s² (finite and > 0, else ErrorID 22; capped per axis by its
+    /// limit).
     pub Deceleration: f64,
-    /// Jerk of each axis, u/s³ (>= 0; 0 = each axis's own limit; capped per axis).
+    /// Jerk of each axis, u/s³ (finite and >= 0, else ErrorID 23; 0 = each axis's own limit; capped
+    /// per axis).
     pub Jerk: f64,
     /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
     /// value gives ErrorID 61 InvalidCoordSystem.
@@ -3069,17 +3071,16 @@ pub struct MC_MoveCircularAbsolute_C {
     /// PathChoice (CENTER and RADIUS): MC_CLOCKWISE (0) or MC_COUNTER_CLOCKWISE (1); another value
     /// gives ErrorID 25 InvalidDirection. Ignored for BORDER.
     pub PathChoice: u8,
-    /// Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
-    /// ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+    /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+    /// axes' limits projected onto the path.
     pub Velocity: f64,
-    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
-    /// axis's acceleration limit.
+    /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+    /// the axes' limits.
     pub Acceleration: f64,
-    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
-    /// axis's deceleration limit.
+    /// Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+    /// the axes' limits.
     pub Deceleration: f64,
-    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
-    /// larger value is capped to it.
+    /// Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
     pub Jerk: f64,
     /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
     /// value gives ErrorID 61 InvalidCoordSystem.
@@ -3166,17 +3167,16 @@ pub struct MC_MoveCircularRelative_C {
     /// PathChoice (CENTER and RADIUS): MC_CLOCKWISE (0) or MC_COUNTER_CLOCKWISE (1); another value
     /// gives ErrorID 25 InvalidDirection. Ignored for BORDER.
     pub PathChoice: u8,
-    /// Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
-    /// ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+    /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+    /// axes' limits projected onto the path.
     pub Velocity: f64,
-    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
-    /// axis's acceleration limit.
+    /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+    /// the axes' limits.
     pub Acceleration: f64,
-    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
-    /// axis's deceleration limit.
+    /// Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+    /// the axes' limits.
     pub Deceleration: f64,
-    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
-    /// larger value is capped to it.
+    /// Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
     pub Jerk: f64,
     /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
     /// value gives ErrorID 61 InvalidCoordSystem.

@@ -12,9 +12,9 @@ use crate::error::ErrorId;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum AxisState {
     #[default]
-    /// Not powered (MC_Power.Enable FALSE); the start state. Only MC_Power and MC_Reset act.
+    /// Not powered (MC_Power.Enable FALSE); the start state. Motion commands are refused (ErrorID 10).
     Disabled = 0,
-    /// Powered, no motion command; every command may start here.
+    /// Powered, no motion command; every motion command and MC_Home may start here.
     Standstill = 1,
     /// MC_Home runs; back to Standstill when it ends.
     Homing = 2,

@@ -97,7 +97,7 @@ macro_rules! motion_block {
             /// stops a motion, it only resets Done, Error, ErrorID and CommandAborted.
             pub execute: bool,
             $($(#[$fm])* pub $f: $t,)*
-            /// Velocity: largest path speed, u/s; finite and non-zero (else ErrorID 20); further
+            /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further
             /// limited by the axes' limits projected onto the path.
             pub velocity: f64,
             /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further
@@ -263,8 +263,8 @@ pub struct McGroupHome {
     /// Position per identity (IdentInGroup), in u: each axis's set position after homing (simulated
     /// drives home on the spot).
     pub position: Vecn,
-    /// BufferMode: accepted and checked (unknown: ErrorID 26); group homing starts from
-    /// GroupStandby only.
+    /// BufferMode: not used, group homing always starts at once (the C call still refuses an
+    /// unknown value with ErrorID 26); it needs GroupStandby.
     pub buffer_mode: BufferMode,
     /// Done: every axis of the group homed; the group is back in GroupStandby.
     pub done: bool,
