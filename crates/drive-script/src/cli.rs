@@ -20,14 +20,19 @@ use std::path::{Path, PathBuf};
 
 /// Exit codes.
 pub const EXIT_OK: i32 = 0;
+/// The script or image was rejected: E6xxx diagnostics were written to the error writer.
 pub const EXIT_REJECTED: i32 = 1;
+/// A file could not be read or written (E9001, E9002).
 pub const EXIT_IO: i32 = 2;
 
 /// `ladderc drive build SCRIPT -o IMAGE`.
 #[derive(Debug, Clone)]
 pub struct BuildArgs {
+    /// The script to compile.
     pub script: PathBuf,
+    /// Where the binary image is written (`-o`).
     pub output: PathBuf,
+    /// How diagnostics are printed (human text or JSON lines).
     pub format: MessageFormat,
 }
 
@@ -36,16 +41,21 @@ pub struct BuildArgs {
 pub struct RunArgs {
     /// A script, or an image built by `build` (recognised by its magic bytes).
     pub script: PathBuf,
+    /// Main-loop cycles to simulate (`--cycles N`); one interpreter slice and one drive tick each.
     pub cycles: u64,
+    /// CSV trace file, one row per cycle (`--trace`); none when absent.
     pub trace: Option<PathBuf>,
     /// Simulated main-loop period (default 1 ms).
     pub cycle_ms: u32,
     /// Digital inputs of the simulated drive (bit n = DI_n).
     pub inputs: u32,
+    /// How diagnostics are printed (human text or JSON lines).
     pub format: MessageFormat,
 }
 
 impl RunArgs {
+    /// Arguments for `cycles` cycles of `script` with the defaults: 1 ms cycle, all inputs low, no trace,
+    /// human diagnostics.
     pub fn new(script: impl Into<PathBuf>, cycles: u64) -> RunArgs {
         RunArgs {
             script: script.into(),
@@ -90,7 +100,9 @@ impl DriveKind {
 /// `ladderc drive debug SCRIPT`.
 #[derive(Debug, Clone)]
 pub struct DebugArgs {
+    /// A script, or an image built by `build` (without line information then).
     pub script: PathBuf,
+    /// How diagnostics of loading are printed.
     pub format: MessageFormat,
 }
 
@@ -282,8 +294,11 @@ pub const DEBUG_RUN_CYCLES: u64 = 10_000;
 
 /// A debugging session: interpreter, simulated drive and (when loaded from source) line information.
 pub struct DebugSession {
+    /// The interpreter being debugged (breakpoints, stop state, registers).
     pub interp: Interpreter,
+    /// The simulated drive it commands, ticked once per cycle.
     pub drive: Box<dyn CycleDrive>,
+    /// Main-loop cycles run so far in this session.
     pub cycles: u64,
     source: Option<(SourceMap, DebugInfo)>,
     /// Names printed after every stop (`watch NAME`).
@@ -625,6 +640,7 @@ fn join_words(prefix: &str, words: &[i32]) -> String {
         .join(" ")
 }
 
+/// The debugger's `help` text: every command with its arguments.
 pub const HELP: &str = "\
 commands (names are case-insensitive):
   break M E [if|then]   breakpoint before the IF (default) or the THEN of Event E of Motion M (4 at most)

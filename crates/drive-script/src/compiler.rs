@@ -14,21 +14,29 @@ use diagnostics::{code, Diagnostic, Diagnostics, FileId, SourceMap, Span};
 /// Source positions of one Event, indexed like the Event pool.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct EventLines {
+    /// The `S:: EVENT e;` statement.
     pub event: Span,
+    /// The `S:: IF ...;` statement (where a before-IF stop is shown).
     pub if_stmt: Span,
+    /// The `S:: THEN ...;` statement (where a before-THEN stop is shown).
     pub then_stmt: Span,
 }
 
 /// Debug information kept on the PC side (not in the image).
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct DebugInfo {
+    /// The source file the spans point into.
     pub file: FileId,
+    /// Source positions of every Event, indexed like the Event pool.
     pub events: Vec<EventLines>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
+/// A compiled script: the program for the image and the PC-side line information of the debugger.
 pub struct Compiled {
+    /// The Motion and Event pools with the Param and Init values.
     pub program: Program,
+    /// Where each Event came from in the source.
     pub debug: DebugInfo,
 }
 

@@ -11,19 +11,25 @@ use std::fmt;
 /// Which half of an Event a point is in front of.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Phase {
+    /// Before the IF: the conditions have not been evaluated yet.
     BeforeIf,
+    /// Before the THEN: the IF held and the actions have not run yet.
     BeforeThen,
 }
 
 /// A point of the script: before the IF or before the THEN of an Event of a Motion.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Location {
+    /// Motion number (MOTION m).
     pub motion: u16,
+    /// Event number within the Motion (EVENT e).
     pub event: u16,
+    /// Before the IF or before the THEN.
     pub phase: Phase,
 }
 
 impl Location {
+    /// Where execution starts: Motion 0, Event 0, before the IF.
     pub const START: Location = Location {
         motion: 0,
         event: 0,
@@ -44,11 +50,14 @@ impl fmt::Display for Location {
 /// One list entry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Breakpoint {
+    /// The point the interpreter stops in front of.
     pub at: Location,
+    /// A disabled entry keeps its number but never stops the interpreter.
     pub enabled: bool,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// Why a breakpoint request was refused.
 pub enum BreakpointError {
     /// All user entries are in use.
     Full,
@@ -107,6 +116,8 @@ impl Breakpoints {
         Ok(slot)
     }
 
+    /// Frees user entry `n` (its number may be reused by `add`); `NoSuchBreakpoint` if it is free or out of
+    /// range.
     pub fn delete(&mut self, n: usize) -> Result<(), BreakpointError> {
         match self.user.get_mut(n) {
             Some(b @ Some(_)) => {
@@ -118,6 +129,7 @@ impl Breakpoints {
         }
     }
 
+    /// Enables or disables user entry `n`; `NoSuchBreakpoint` if it is free or out of range.
     pub fn set_enabled(&mut self, n: usize, enabled: bool) -> Result<(), BreakpointError> {
         match self.user.get_mut(n) {
             Some(Some(b)) => {
@@ -134,6 +146,8 @@ impl Breakpoints {
         &self.user
     }
 
+    /// True while the temporary entry (single step, pause) is armed: the interpreter stops at the next point
+    /// it reaches.
     pub fn temp_armed(&self) -> bool {
         self.temp_armed
     }

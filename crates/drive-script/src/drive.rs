@@ -12,39 +12,61 @@
 #[repr(u8)]
 pub enum MotionState {
     #[default]
+    /// 0: no motion command runs and the drive stands (`MotionDone` = 1).
     Standstill = 0,
+    /// 1: a move, jog or velocity command runs, or the drive still brakes.
     Moving = 1,
+    /// 2: a homing command runs.
     Homing = 2,
+    /// 3: the drive is in fault (motion-lib axis in ErrorStop); `SimDrive` never reports it.
     Fault = 3,
 }
 
 /// The servo-drive interface the interpreter uses. Implemented by [`SimDrive`] (exact trapezoidal
 /// simulation) and by [`crate::MotionLibDrive`] (a motion-lib axis driven by PLCopen blocks).
 pub trait Drive {
+    /// Actual position, pulses (`ActualPosition`).
     fn actual_position(&self) -> i32;
+    /// Actual velocity, pulses/s (`ActualVelocity`).
     fn actual_velocity(&self) -> i32;
+    /// Motor current, mA (`ActualCurrent`).
     fn actual_current(&self) -> i32;
     /// Bit n = `DI_n`.
     fn digital_inputs(&self) -> u32;
     /// Bit n = `DO_n`.
     fn digital_outputs(&self) -> u32;
+    /// Sets `DO_<index>` (the action `DO_n = value`; non-zero value is HIGH); indices from 32 on are ignored.
     fn set_digital_output(&mut self, index: u8, high: bool);
+    /// What the drive is doing (`MotionState`; `MotionDone` is `Standstill`). Non-standstill from the call
+    /// that starts a motion on.
     fn motion_state(&self) -> MotionState;
+    /// True after a successful homing (`Homed`).
     fn homed(&self) -> bool;
     /// A free-running millisecond clock (wraps).
     fn now_ms(&self) -> u32;
+    /// Profile velocity of the following moves, pulses/s (`Velocity = value`; magnitude used).
     fn set_velocity(&mut self, v: i32);
+    /// Acceleration of the following moves, pulses/s² (`Acceleration = value`; magnitude used).
     fn set_acceleration(&mut self, a: i32);
+    /// Deceleration of the following moves, pulses/s² (`Deceleration = value`; magnitude used).
     fn set_deceleration(&mut self, d: i32);
+    /// Jog and homing velocity, pulses/s (`JogVelocity = value`; magnitude used).
     fn set_jog_velocity(&mut self, v: i32);
     /// Redefines the actual position without moving.
     fn set_position(&mut self, p: i32);
+    /// Runs at the signed velocity `v`, pulses/s, until another command (`VelocityMove = value`).
     fn velocity_move(&mut self, v: i32);
+    /// Moves by the signed `distance`, pulses, from the running target if a positioning move is active, else
+    /// from the current position (`RelativeTargetPosition`).
     fn relative_move(&mut self, distance: i32);
+    /// Moves to position `target`, pulses (`AbsoluteTargetPosition`).
     fn absolute_move(&mut self, target: i32);
     /// >0 positive, <0 negative, 0 stop.
     fn jog(&mut self, direction: i32);
+    /// Starts homing (`Homing = method`): 0 = the current position becomes 0; another method runs to the
+    /// reference mark at the jog velocity, which becomes position 0.
     fn home(&mut self, method: i32);
+    /// Decelerates to standstill with the set deceleration (`Stop`).
     fn stop(&mut self);
 }
 
@@ -88,6 +110,7 @@ enum Mode {
 /// A simulated drive: trapezoidal moves integrated once per `tick()` of `cycle_ms` milliseconds.
 #[derive(Debug, Clone)]
 pub struct SimDrive {
+    /// Length of one main-loop cycle, ms (at least 1): the simulated time each `tick` advances.
     pub cycle_ms: u32,
     time_ms: u32,
     position: f64,
@@ -113,6 +136,8 @@ impl Default for SimDrive {
 }
 
 impl SimDrive {
+    /// A drive at position 0, standing, not homed, with the default settings (10,000 pulses/s, 100,000
+    /// pulses/s², jog 5,000 pulses/s); `cycle_ms` 0 is taken as 1.
     pub fn new(cycle_ms: u32) -> SimDrive {
         SimDrive {
             cycle_ms: cycle_ms.max(1),
@@ -132,6 +157,7 @@ impl SimDrive {
         }
     }
 
+    /// Sets digital input `DI_<index>` (tests, the debugger); indices from 32 on are ignored.
     pub fn set_input(&mut self, index: u8, high: bool) {
         if index < 32 {
             if high {

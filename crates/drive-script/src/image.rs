@@ -14,20 +14,27 @@ use crate::program::*;
 use diagnostics::{code, Code, Diagnostic};
 use std::fmt;
 
+/// The four bytes an image starts with (`LDSI`); `run` and `debug` recognise an image by them.
 pub const MAGIC: [u8; 4] = *b"LDSI";
+/// Layout version written into the header; decode refuses any other (E6021).
 pub const VERSION: u16 = 1;
+/// Bytes of the header: magic, version, header size, payload length, CRC-32.
 pub const HEADER_LEN: usize = 16;
 /// Bytes of one encoded value (`a` source u8 + arg i32, op u8, `b` source u8 + arg i32).
 pub const VALUE_LEN: usize = 11;
+/// Bytes of one encoded condition: lhs value, comparison u8, rhs value.
 pub const CONDITION_LEN: usize = 2 * VALUE_LEN + 1;
+/// Bytes of one encoded action: kind u8, index u8, value.
 pub const ACTION_LEN: usize = 2 + VALUE_LEN;
 /// Bytes of the fixed part of the payload (params, init, settings, counts).
 pub const FIXED_PAYLOAD_LEN: usize = 16 * 4 + 50 * 4 + 4 * 4 + 8;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
+/// Why bytes are not a loadable image (diagnostic codes E6020..E6023).
 pub enum ImageError {
     /// Shorter than a header or wrong magic bytes.
     BadMagic,
+    /// The header's layout version (this one is not [`VERSION`]).
     UnsupportedVersion(u16),
     /// The payload length field disagrees with the file, or the CRC does not match.
     Corrupt(String),
@@ -36,6 +43,7 @@ pub enum ImageError {
 }
 
 impl ImageError {
+    /// The diagnostic code: E6020 bad magic, E6021 version, E6022 corrupt, E6023 malformed.
     pub fn code(&self) -> Code {
         match self {
             ImageError::BadMagic => code::E6020,
@@ -44,6 +52,7 @@ impl ImageError {
             ImageError::Malformed(_) => code::E6023,
         }
     }
+    /// The error as an error diagnostic with its code and message (no source location).
     pub fn to_diagnostic(&self) -> Diagnostic {
         Diagnostic::error(self.code(), self.to_string())
     }

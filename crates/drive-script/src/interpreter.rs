@@ -17,13 +17,19 @@ use crate::program::*;
 /// The drive values a Motion pass sees, taken at the start of the pass.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Snapshot {
+    /// `ActualPosition`, pulses.
     pub position: i32,
+    /// `ActualVelocity`, pulses/s.
     pub velocity: i32,
+    /// `ActualCurrent`, mA.
     pub current: i32,
+    /// Digital inputs, bit n = `DI_n`.
     pub inputs: u32,
     /// Bit n = `TimerDone_n`.
     pub timer_done: u8,
+    /// `MotionState` (and `MotionDone` = Standstill).
     pub motion_state: MotionState,
+    /// `Homed`.
     pub homed: bool,
 }
 
@@ -100,6 +106,7 @@ impl Interpreter {
         })
     }
 
+    /// The program being run.
     pub fn program(&self) -> &Program {
         &self.program
     }
@@ -107,27 +114,36 @@ impl Interpreter {
     pub fn location(&self) -> Location {
         self.at
     }
+    /// True while stopped at a breakpoint, step or pause (nothing of the script runs until `resume` or
+    /// `step`).
     pub fn is_stopped(&self) -> bool {
         self.stopped
     }
+    /// The drive values of the current Motion pass (taken at its first IF).
     pub fn snapshot(&self) -> &Snapshot {
         &self.r.snapshot
     }
+    /// IF evaluations so far (each counts against `EventsPerCycle` in its slice).
     pub fn events_evaluated(&self) -> u64 {
         self.events_evaluated
     }
+    /// The sticky `MathError` flag: a `/` or `%` by zero happened since it was last cleared.
     pub fn math_error(&self) -> bool {
         self.r.math_error
     }
+    /// Parameter `P<i>`; None past `P15`.
     pub fn param(&self, i: usize) -> Option<i32> {
         self.r.params.get(i).copied()
     }
+    /// Memory word `MD<i>`; None past `MD49`.
     pub fn memory(&self, i: usize) -> Option<i32> {
         self.r.memory.get(i).copied()
     }
+    /// All parameters `P0..P15`.
     pub fn params(&self) -> &[i32; PARAMS] {
         &self.r.params
     }
+    /// All memory words `MD0..MD49`.
     pub fn memory_words(&self) -> &[i32; MEMORY_WORDS] {
         &self.r.memory
     }
@@ -140,6 +156,7 @@ impl Interpreter {
         self.r.memory.get_mut(i).map(|p| *p = v).is_some()
     }
 
+    /// The debugger's breakpoint list.
     pub fn breakpoints(&self) -> &Breakpoints {
         &self.breakpoints
     }
@@ -154,9 +171,11 @@ impl Interpreter {
         }
         self.breakpoints.add(at)
     }
+    /// Deletes user breakpoint `n`.
     pub fn delete_breakpoint(&mut self, n: usize) -> Result<(), BreakpointError> {
         self.breakpoints.delete(n)
     }
+    /// Enables or disables user breakpoint `n` (it keeps its number).
     pub fn enable_breakpoint(&mut self, n: usize, enabled: bool) -> Result<(), BreakpointError> {
         self.breakpoints.set_enabled(n, enabled)
     }

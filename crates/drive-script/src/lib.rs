@@ -6,10 +6,11 @@
 //! Invariants: no function panics on bad input (script or image); the interpreter never blocks: each
 //! [`Interpreter::cycle`] call evaluates at most `EventsPerCycle` Events.
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 pub mod cli;
 pub mod compiler;
-pub mod lexer;
+pub(crate) mod lexer;
 pub mod limits;
 pub mod program;
 

@@ -43,6 +43,7 @@ pub enum Source {
 }
 
 impl Source {
+    /// The source stored as byte `v` in an image; None for a byte no source has (the decoder rejects it).
     pub fn from_u8(v: u8) -> Option<Source> {
         use Source::*;
         Some(match v {
@@ -67,11 +68,14 @@ impl Source {
 /// One read: a constant, a register or a snapshot value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Operand {
+    /// Where the value is read from.
     pub source: Source,
+    /// The literal for [`Source::Const`], the register or bit index for P/MD/DI/DO/TimerDone, 0 otherwise.
     pub arg: i32,
 }
 
 impl Operand {
+    /// The literal `v`.
     pub const fn konst(v: i32) -> Operand {
         Operand {
             source: Source::Const,
@@ -85,18 +89,28 @@ impl Operand {
 #[repr(u8)]
 pub enum ArithOp {
     #[default]
+    /// No operator: the value is `a` (`b` is unused and 0).
     None = 0,
+    /// `a + b`, 32-bit wrapping.
     Add = 1,
+    /// `a - b`, 32-bit wrapping (also `-x`, stored as `0 - x`).
     Sub = 2,
+    /// `a * b`, 32-bit wrapping.
     Mul = 3,
+    /// `a / b`, truncating; by zero gives 0 and sets `MathError`.
     Div = 4,
+    /// `a % b` (sign of `a`); by zero gives 0 and sets `MathError`.
     Rem = 5,
+    /// Bitwise `a & b`.
     And = 6,
+    /// Bitwise `a | b`.
     Or = 7,
+    /// Bitwise `a ^ b` (also `~x`, stored as `x ^ -1`).
     Xor = 8,
 }
 
 impl ArithOp {
+    /// The operator stored as byte `v` in an image; `Option::None` for an unknown byte.
     pub fn from_u8(v: u8) -> Option<ArithOp> {
         use ArithOp::*;
         Some(match v {
@@ -112,6 +126,7 @@ impl ArithOp {
             _ => return Option::None,
         })
     }
+    /// The script's spelling of the operator (`""` for [`ArithOp::None`]), for listings and the debugger.
     pub fn symbol(self) -> &'static str {
         match self {
             ArithOp::None => "",
@@ -130,12 +145,16 @@ impl ArithOp {
 /// A value: `a` or `a <op> b` (one operator at most: three-address form).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Value {
+    /// First (or only) operand.
     pub a: Operand,
+    /// The operator, or [`ArithOp::None`] for a plain operand.
     pub op: ArithOp,
+    /// Second operand (a constant 0 when `op` is None).
     pub b: Operand,
 }
 
 impl Value {
+    /// The constant value `v`.
     pub const fn konst(v: i32) -> Value {
         Value {
             a: Operand::konst(v),
@@ -143,6 +162,7 @@ impl Value {
             b: Operand::konst(0),
         }
     }
+    /// The value of operand `a` alone.
     pub const fn of(a: Operand) -> Value {
         Value {
             a,
@@ -157,15 +177,22 @@ impl Value {
 #[repr(u8)]
 pub enum Compare {
     #[default]
+    /// `=` / `==`: equal.
     Eq = 0,
+    /// `<>` / `!=`: not equal (a lone value `x` in an IF means `x <> 0`).
     Ne = 1,
+    /// `<`: less than (signed).
     Lt = 2,
+    /// `<=`: less than or equal (signed).
     Le = 3,
+    /// `>`: greater than (signed).
     Gt = 4,
+    /// `>=`: greater than or equal (signed).
     Ge = 5,
 }
 
 impl Compare {
+    /// The comparison stored as byte `v` in an image; None for an unknown byte.
     pub fn from_u8(v: u8) -> Option<Compare> {
         use Compare::*;
         Some(match v {
@@ -178,6 +205,7 @@ impl Compare {
             _ => return None,
         })
     }
+    /// The script's spelling of the comparison (`=`, `<>`, ...).
     pub fn symbol(self) -> &'static str {
         match self {
             Compare::Eq => "=",
@@ -193,8 +221,11 @@ impl Compare {
 /// One condition of an IF statement: `lhs cmp rhs`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Condition {
+    /// Left-hand value.
     pub lhs: Value,
+    /// How the two values are compared (signed 32-bit).
     pub cmp: Compare,
+    /// Right-hand value.
     pub rhs: Value,
 }
 
@@ -242,6 +273,7 @@ pub enum ActionKind {
 }
 
 impl ActionKind {
+    /// The action kind stored as byte `v` in an image; None for an unknown byte.
     pub fn from_u8(v: u8) -> Option<ActionKind> {
         use ActionKind::*;
         Some(match v {
@@ -271,25 +303,33 @@ impl ActionKind {
 /// One action of a THEN statement.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Action {
+    /// What the action does.
     pub kind: ActionKind,
     /// MD/DO/timer index, or the target Motion/Event of `NextMotionID`/`Jump`; 0 when unused.
     pub index: u8,
+    /// The value written or commanded (the Event target of `Loop`); a constant 0 when unused.
     pub value: Value,
 }
 
 /// An Event: a condition table (all must hold) and an action table run in order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Event {
+    /// Conditions in use (1..=`MAX_CONDITIONS`); the IF holds when all of them hold.
     pub cond_count: u8,
+    /// Actions in use (1..=`MAX_ACTIONS`), run in order by the THEN.
     pub act_count: u8,
+    /// The condition table; slots past `cond_count` are `Default`.
     pub conditions: [Condition; MAX_CONDITIONS],
+    /// The action table; slots past `act_count` are `Default`.
     pub actions: [Action; MAX_ACTIONS],
 }
 
 impl Event {
+    /// The conditions in use (the IF).
     pub fn conditions(&self) -> &[Condition] {
         &self.conditions[..self.cond_count as usize]
     }
+    /// The actions in use (the THEN), in execution order.
     pub fn actions(&self) -> &[Action] {
         &self.actions[..self.act_count as usize]
     }
@@ -298,16 +338,22 @@ impl Event {
 /// A Motion: a contiguous run of the Event pool.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Motion {
+    /// Index in the Event pool of this Motion's Event 0.
     pub first_event: u16,
+    /// Number of Events of this Motion (at least 1); a pass runs them in order and wraps to Event 0.
     pub event_count: u16,
 }
 
 /// System settings from the Init block, applied to the drive when the script starts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Settings {
+    /// Profile velocity of moves, pulses/s (`Velocity`; magnitude used).
     pub velocity: i32,
+    /// Profile acceleration, pulses/s² (`Acceleration`).
     pub acceleration: i32,
+    /// Profile deceleration, pulses/s² (`Deceleration`).
     pub deceleration: i32,
+    /// Jog and homing velocity, pulses/s (`JogVelocity`).
     pub jog_velocity: i32,
     /// The interpreter's budget: Events evaluated per main-loop call.
     pub events_per_cycle: u16,
@@ -332,6 +378,7 @@ pub struct Program {
     pub params: [i32; PARAMS],
     /// Initial values of `MD0..MD49` (Init block).
     pub init: [i32; MEMORY_WORDS],
+    /// Drive settings of the Init block, applied when the script starts.
     pub settings: Settings,
     /// The Motion pool.
     pub motions: Vec<Motion>,

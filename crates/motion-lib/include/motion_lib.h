@@ -32,67 +32,76 @@
 #define MC_ABI_VERSION 2
 
 /**
- * MC_BUFFER_MODE value.
+ * BufferMode mcAborting: starts at once from the current state; the running and every buffered
+ * command get CommandAborted.
  */
 #define MC_ABORTING 0
 
 /**
- * MC_BUFFER_MODE value.
+ * BufferMode mcBuffered: starts when the predecessor finished (Done; InVelocity, InGear, InSync
+ * for continuous ones).
  */
 #define MC_BUFFERED 1
 
 /**
- * MC_BUFFER_MODE value.
+ * BufferMode mcBlendingLow: no stop between the moves; the junction speed is the lower of the two
+ * velocities.
  */
 #define MC_BLENDING_LOW 2
 
 /**
- * MC_BUFFER_MODE value.
+ * BufferMode mcBlendingPrevious: no stop between the moves; the junction speed is the
+ * predecessor's velocity.
  */
 #define MC_BLENDING_PREVIOUS 3
 
 /**
- * MC_BUFFER_MODE value.
+ * BufferMode mcBlendingNext: no stop between the moves; the junction speed is the successor's
+ * velocity.
  */
 #define MC_BLENDING_NEXT 4
 
 /**
- * MC_BUFFER_MODE value.
+ * BufferMode mcBlendingHigh: no stop between the moves; the junction speed is the higher of the
+ * two velocities.
  */
 #define MC_BLENDING_HIGH 5
 
 /**
- * MC_DIRECTION value.
+ * Direction mcPositiveDirection: modulo targets reached moving forward; MC_MoveVelocity forward.
  */
 #define MC_POSITIVE_DIRECTION 0
 
 /**
- * MC_DIRECTION value.
+ * Direction mcShortestWay: the shorter way round a modulo axis (MC_MoveVelocity refuses it:
+ * ErrorID 25).
  */
 #define MC_SHORTEST_WAY 1
 
 /**
- * MC_DIRECTION value.
+ * Direction mcNegativeDirection: modulo targets reached moving backward; MC_MoveVelocity backward.
  */
 #define MC_NEGATIVE_DIRECTION 2
 
 /**
- * MC_DIRECTION value.
+ * Direction mcCurrentDirection: keeps the direction the axis moves in (forward from rest).
  */
 #define MC_CURRENT_DIRECTION 3
 
 /**
- * MC_TRANSITION_MODE value.
+ * TransitionMode TMNone: no transition curve; at a real corner the path stops (junction speed 0).
  */
 #define MC_TM_NONE 0
 
 /**
- * MC_TRANSITION_MODE value.
+ * TransitionMode TMCornerDistance: a clothoid blend leaving the path TransitionParameter (u)
+ * before the corner.
  */
 #define MC_TM_CORNER_DISTANCE 3
 
 /**
- * MC_TRANSITION_MODE TMMaxCornerDeviation.
+ * TransitionMode TMMaxCornerDeviation: the same blend, passing at most TransitionParameter (u)
+ * from the corner.
  */
 #define MC_TM_MAX_CORNER_DEVIATION 4
 
@@ -122,7 +131,7 @@
 #define MC_COUNTER_CLOCKWISE 1
 
 /**
- * ErrorID 0: None
+ * ErrorID 0: no error.
  */
 #define MC_ERR_NONE 0
 
@@ -367,7 +376,9 @@
 #define MC_ERR_EXTERNAL_ERROR 107
 
 /**
- * Opaque engine handle.
+ * Opaque engine handle (C sees `McEngine *` only): the axes, groups, cam tables and command
+ * buffers of one motion controller. Made by `mc_engine_create`, freed by `mc_engine_destroy`; a
+ * tag marks it live, and a panic inside a call poisons it.
  */
 typedef struct McEngine McEngine;
 
@@ -381,16 +392,40 @@ typedef int32_t McStatus;
  * Axis configuration (C view of [`AxisConfig`]). `ModuloPeriod` 0 = linear axis.
  */
 typedef struct MC_AxisConfig_C {
+  /**
+   * VelocityLimit: largest |velocity| of the axis, u/s (> 0).
+   */
   double VelocityLimit;
+  /**
+   * AccelerationLimit: largest acceleration (speeding up), u/s² (> 0).
+   */
   double AccelerationLimit;
+  /**
+   * DecelerationLimit: largest deceleration (slowing down), u/s² (> 0).
+   */
   double DecelerationLimit;
   /**
    * 0 = no jerk limit.
    */
   double JerkLimit;
+  /**
+   * SwLimitPositive: upper software position limit, u (checked when SwLimitsEnabled).
+   */
   double SwLimitPositive;
+  /**
+   * SwLimitNegative: lower software position limit, u (checked when SwLimitsEnabled; below
+   * SwLimitPositive).
+   */
   double SwLimitNegative;
+  /**
+   * SwLimitsEnabled: check the software limits (linear axes): targets beyond them are refused
+   * (ErrorID 27, 29), velocity moves stop at them (ErrorID 100, 101).
+   */
   bool SwLimitsEnabled;
+  /**
+   * ModuloPeriod: > 0 makes a modulo (rotary) axis whose positions are reported in [0, period),
+   * u; 0 = linear axis.
+   */
   double ModuloPeriod;
   /**
    * 0 = not checked.
@@ -407,12 +442,37 @@ typedef uint32_t McIndex;
  * C view of `McPower` (MC_Power).
  */
 typedef struct MC_Power_C {
+  /**
+   * Enable: TRUE powers the axis (Disabled to Standstill); FALSE disables it: every command is
+   * aborted and the axis goes to Disabled (an axis in ErrorStop stays there until MC_Reset).
+   */
   bool Enable;
+  /**
+   * EnablePositive: PLCopen input kept for the interface; the drive interface has no direction
+   * enable, so it has no effect.
+   */
   bool EnablePositive;
+  /**
+   * EnableNegative: PLCopen input kept for the interface; the drive interface has no direction
+   * enable, so it has no effect.
+   */
   bool EnableNegative;
+  /**
+   * Status: the axis is powered (the drive is enabled; the axis left Disabled).
+   */
   bool Status;
+  /**
+   * Valid: Status is valid (Enable TRUE and no error).
+   */
   bool Valid;
+  /**
+   * Error: the power command failed (e.g. an unknown axis); ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
 } MC_Power_C;
 
@@ -420,14 +480,48 @@ typedef struct MC_Power_C {
  * C view of `McHome` (MC_Home).
  */
 typedef struct MC_Home_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * Position: the axis's position after homing, in u (a simulated drive homes on the spot: the
+   * set position becomes Position).
+   */
   double Position;
+  /**
+   * BufferMode: not used, homing always starts at once (an unknown value is still refused with
+   * ErrorID 26); it needs Standstill (ErrorID 14 NotStandstill while the axis moves).
+   */
   uint8_t BufferMode;
+  /**
+   * Done: homing finished; the axis is back in Standstill at Position.
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -439,13 +533,43 @@ typedef struct MC_Home_C {
  * C view of `McStop` (MC_Stop).
  */
 typedef struct MC_Stop_C {
+  /**
+   * Execute: its rising edge starts braking, aborting every command of the axis (also from
+   * Standstill); while Execute stays TRUE after Done the axis stays Stopping and refuses motion
+   * commands; its falling edge releases it.
+   */
   bool Execute;
+  /**
+   * Deceleration: braking rate in u/s², finite and > 0 (else ErrorID 22); capped by the axis's
+   * deceleration limit and never scaled by the override.
+   */
   double Deceleration;
+  /**
+   * Jerk of the braking in u/s³ (>= 0; 0 = the axis's jerk limit, a larger value is capped to
+   * it).
+   */
   double Jerk;
+  /**
+   * Done: the axis reached velocity 0; it stays Stopping (motion commands refused) while Execute
+   * is TRUE.
+   */
   bool Done;
+  /**
+   * Busy: the axis is still braking.
+   */
   bool Busy;
+  /**
+   * CommandAborted: the stop was ended by power-off or an axis error before it finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -457,15 +581,53 @@ typedef struct MC_Stop_C {
  * C view of `McHalt` (MC_Halt).
  */
 typedef struct MC_Halt_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * Deceleration: braking rate in u/s², finite and > 0 (else ErrorID 22); capped by the axis's
+   * deceleration limit.
+   */
   double Deceleration;
+  /**
+   * Jerk of the braking in u/s³ (>= 0; 0 = the axis's jerk limit).
+   */
   double Jerk;
+  /**
+   * BufferMode: Aborting (0) brakes at once; Buffered (1) halts after the running move ended;
+   * unknown: ErrorID 26.
+   */
   uint8_t BufferMode;
+  /**
+   * Done: the axis reached velocity 0 (Standstill); unlike MC_Stop it takes further commands at
+   * any time.
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -477,20 +639,80 @@ typedef struct MC_Halt_C {
  * C view of `McMoveAbsolute` (MC_MoveAbsolute).
  */
 typedef struct MC_MoveAbsolute_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * ContinuousUpdate: while TRUE and the block Busy, inputs changed since the last call re-plan
+   * the running command from its current position, velocity and acceleration.
+   */
   bool ContinuousUpdate;
+  /**
+   * Position: target position in user units (u); on a modulo axis taken modulo the period and
+   * reached the way Direction says.
+   */
   double Position;
+  /**
+   * Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
+   * ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+   */
   double Velocity;
+  /**
+   * Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+   * axis's acceleration limit.
+   */
   double Acceleration;
+  /**
+   * Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+   * axis's deceleration limit.
+   */
   double Deceleration;
+  /**
+   * Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+   * larger value is capped to it.
+   */
   double Jerk;
+  /**
+   * Direction (modulo axes only): positive (0), shortest way (1), negative (2) or current
+   * direction (3); ignored on a linear axis; another value gives ErrorID 25 InvalidDirection.
+   */
   uint8_t Direction;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * Done: the command finished successfully; stays TRUE while Execute is TRUE (one call if
+   * Execute is already FALSE).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -502,19 +724,75 @@ typedef struct MC_MoveAbsolute_C {
  * C view of `McMoveRelative` (MC_MoveRelative).
  */
 typedef struct MC_MoveRelative_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * ContinuousUpdate: part of the PLCopen interface but not acted on by this block: Distance is
+   * latched at the rising edge.
+   */
   bool ContinuousUpdate;
+  /**
+   * Distance in u, added to the set position when the command becomes active (at the rising edge
+   * when Aborting or on an idle axis, else at the end of its predecessor).
+   */
   double Distance;
+  /**
+   * Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
+   * ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+   */
   double Velocity;
+  /**
+   * Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+   * axis's acceleration limit.
+   */
   double Acceleration;
+  /**
+   * Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+   * axis's deceleration limit.
+   */
   double Deceleration;
+  /**
+   * Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+   * larger value is capped to it.
+   */
   double Jerk;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * Done: the command finished successfully; stays TRUE while Execute is TRUE (one call if
+   * Execute is already FALSE).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -526,19 +804,74 @@ typedef struct MC_MoveRelative_C {
  * C view of `McMoveAdditive` (MC_MoveAdditive).
  */
 typedef struct MC_MoveAdditive_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * ContinuousUpdate: part of the PLCopen interface but not acted on by this block: Distance is
+   * latched at the rising edge.
+   */
   bool ContinuousUpdate;
+  /**
+   * Distance in u, added to the last commanded target (the running or last buffered command's).
+   */
   double Distance;
+  /**
+   * Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
+   * ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
+   */
   double Velocity;
+  /**
+   * Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+   * axis's acceleration limit.
+   */
   double Acceleration;
+  /**
+   * Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+   * axis's deceleration limit.
+   */
   double Deceleration;
+  /**
+   * Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+   * larger value is capped to it.
+   */
   double Jerk;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * Done: the command finished successfully; stays TRUE while Execute is TRUE (one call if
+   * Execute is already FALSE).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -550,19 +883,75 @@ typedef struct MC_MoveAdditive_C {
  * C view of `McMoveVelocity` (MC_MoveVelocity).
  */
 typedef struct MC_MoveVelocity_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * ContinuousUpdate: while TRUE and the block Busy, inputs changed since the last call re-plan
+   * the running command from its current position, velocity and acceleration.
+   */
   bool ContinuousUpdate;
+  /**
+   * Velocity: target speed in u/s, finite and non-zero (else ErrorID 20); its sign times
+   * Direction gives the direction of travel; capped by the axis's velocity limit.
+   */
   double Velocity;
+  /**
+   * Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+   * axis's acceleration limit.
+   */
   double Acceleration;
+  /**
+   * Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+   * axis's deceleration limit.
+   */
   double Deceleration;
+  /**
+   * Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+   * larger value is capped to it.
+   */
   double Jerk;
+  /**
+   * Direction: positive (0), negative (2) or current (3, the sign of the set velocity); shortest
+   * way (1) or another value gives ErrorID 25 InvalidDirection. A negative Velocity reverses it.
+   */
   uint8_t Direction;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * InVelocity: the set velocity reached the commanded Velocity (while Active); a Buffered
+   * successor starts after it was shown for one scan.
+   */
   bool InVelocity;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -574,10 +963,28 @@ typedef struct MC_MoveVelocity_C {
  * C view of `McReset` (MC_Reset).
  */
 typedef struct MC_Reset_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * Done: the reset was carried out: the axis left ErrorStop (to Standstill if powered), or it
+   * was not in ErrorStop and nothing was done.
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the reset completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -589,11 +996,32 @@ typedef struct MC_Reset_C {
  * C view of `McReadActualPosition` (MC_ReadActualPosition).
  */
 typedef struct MC_ReadActualPosition_C {
+  /**
+   * Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+   * the outputs.
+   */
   bool Enable;
+  /**
+   * Valid: the value outputs are valid (Enable TRUE and no error).
+   */
   bool Valid;
+  /**
+   * Busy: TRUE while Enable is TRUE and the value is valid.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * Position: the actual position reported by the drive, in u (modulo axes: in [0, period)); 0
+   * while not Valid.
+   */
   double Position;
 } MC_ReadActualPosition_C;
 
@@ -601,11 +1029,31 @@ typedef struct MC_ReadActualPosition_C {
  * C view of `McReadActualVelocity` (MC_ReadActualVelocity).
  */
 typedef struct MC_ReadActualVelocity_C {
+  /**
+   * Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+   * the outputs.
+   */
   bool Enable;
+  /**
+   * Valid: the value outputs are valid (Enable TRUE and no error).
+   */
   bool Valid;
+  /**
+   * Busy: TRUE while Enable is TRUE and the value is valid.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * Velocity: the actual velocity reported by the drive, in u/s; 0 while not Valid.
+   */
   double Velocity;
 } MC_ReadActualVelocity_C;
 
@@ -613,18 +1061,59 @@ typedef struct MC_ReadActualVelocity_C {
  * C view of `McReadStatus` (MC_ReadStatus).
  */
 typedef struct MC_ReadStatus_C {
+  /**
+   * Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+   * the outputs.
+   */
   bool Enable;
+  /**
+   * Valid: the value outputs are valid (Enable TRUE and no error).
+   */
   bool Valid;
+  /**
+   * Busy: TRUE while Enable is TRUE and the state is valid.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * ErrorStop: the axis is in ErrorStop (an axis error; leave it with MC_Reset).
+   */
   bool ErrorStop;
+  /**
+   * Disabled: the axis is not powered.
+   */
   bool Disabled;
+  /**
+   * Stopping: MC_Stop brakes or holds the axis (motion commands are refused).
+   */
   bool Stopping;
+  /**
+   * Homing: MC_Home is running.
+   */
   bool Homing;
+  /**
+   * Standstill: the axis is powered and holds its position with no command.
+   */
   bool Standstill;
+  /**
+   * DiscreteMotion: a positioning move or MC_Halt runs (MoveAbsolute/Relative/Additive, Halt).
+   */
   bool DiscreteMotion;
+  /**
+   * ContinuousMotion: MC_MoveVelocity runs (or the slave runs on after MC_GearOut/MC_CamOut).
+   */
   bool ContinuousMotion;
+  /**
+   * SynchronizedMotion: the axis is a geared or cammed slave, or moves as part of an axes group.
+   */
   bool SynchronizedMotion;
 } MC_ReadStatus_C;
 
@@ -632,11 +1121,33 @@ typedef struct MC_ReadStatus_C {
  * C view of `McReadAxisError` (MC_ReadAxisError).
  */
 typedef struct MC_ReadAxisError_C {
+  /**
+   * Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+   * the outputs.
+   */
   bool Enable;
+  /**
+   * Valid: the value outputs are valid (Enable TRUE and no error).
+   */
   bool Valid;
+  /**
+   * Busy: TRUE while Enable is TRUE and AxisErrorID is valid.
+   */
   bool Busy;
+  /**
+   * Error: the read itself failed (e.g. an unknown axis); ErrorID says why (the axis error is
+   * AxisErrorID).
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * AxisErrorID: the axis error that put the axis into ErrorStop (100 and above, e.g. 102
+   * FollowingError); 0 (None) when there is none.
+   */
   uint16_t AxisErrorID;
 } MC_ReadAxisError_C;
 
@@ -644,12 +1155,37 @@ typedef struct MC_ReadAxisError_C {
  * C view of `McSetPosition` (MC_SetPosition).
  */
 typedef struct MC_SetPosition_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * Position: the new set position in u (Relative FALSE) or the shift added to it (Relative
+   * TRUE); finite, else ErrorID 24 InvalidPosition. Refused while Homing or in ErrorStop.
+   */
   double Position;
+  /**
+   * Relative: FALSE = Position becomes the axis's set position; TRUE = Position is added to it
+   * (a shift of the coordinate origin, no motion).
+   */
   bool Relative;
+  /**
+   * Done: the coordinate shift was applied (immediately, within the call).
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the shift completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -661,13 +1197,42 @@ typedef struct MC_SetPosition_C {
  * C view of `McSetOverride` (MC_SetOverride).
  */
 typedef struct MC_SetOverride_C {
+  /**
+   * Enable: while TRUE the factors are written every call; when it falls the outputs reset and
+   * the last factors stay in force.
+   */
   bool Enable;
+  /**
+   * VelFactor: scale of the velocity limit of the running and later moves, >= 0 (0 brakes the
+   * move to standstill until it rises again); the axis's velocity limit still caps it.
+   */
   double VelFactor;
+  /**
+   * AccFactor: scale of the acceleration and deceleration limits, in (0, 1]; 0 stands for 1; out
+   * of range gives ErrorID 30 InvalidOverride.
+   */
   double AccFactor;
+  /**
+   * JerkFactor: scale of the jerk limit, in (0, 1]; 0 stands for 1; out of range gives ErrorID
+   * 30 InvalidOverride.
+   */
   double JerkFactor;
+  /**
+   * Enabled: the factors were accepted and are written every call while Enable is TRUE.
+   */
   bool Enabled;
+  /**
+   * Busy: TRUE while Enable is TRUE and the factors are accepted.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
 } MC_SetOverride_C;
 
@@ -675,20 +1240,78 @@ typedef struct MC_SetOverride_C {
  * C view of `McGearIn` (MC_GearIn).
  */
 typedef struct MC_GearIn_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * ContinuousUpdate: part of the PLCopen interface but not acted on by this block: the ratio is
+   * latched at the rising edge.
+   */
   bool ContinuousUpdate;
+  /**
+   * RatioNumerator: numerator of the gear ratio slave/master (finite; negative reverses the
+   * slave).
+   */
   double RatioNumerator;
+  /**
+   * RatioDenominator: denominator of the gear ratio; finite and non-zero, else ErrorID 28
+   * InvalidRatio.
+   */
   double RatioDenominator;
+  /**
+   * MasterValueSource: the master value followed: its set value (0, mcSetValue, the default) or
+   * its actual value (1, mcActualValue); another value gives ErrorID 32 InvalidMode.
+   */
   uint8_t MasterValueSource;
+  /**
+   * Acceleration of the catch-up profile that brings the slave onto ratio * master, u/s² (> 0;
+   * capped by the slave's limits less the master's share).
+   */
   double Acceleration;
+  /**
+   * Deceleration of the catch-up profile, u/s² (> 0).
+   */
   double Deceleration;
+  /**
+   * Jerk of the catch-up profile, u/s³ (>= 0; 0 = the slave's jerk limit).
+   */
   double Jerk;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * InGear: the slave's catch-up profile ended and it follows ratio * master (on the set value,
+   * while Active).
+   */
   bool InGear;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -700,10 +1323,28 @@ typedef struct MC_GearIn_C {
  * C view of `McSyncOut` (MC_GearOut).
  */
 typedef struct MC_GearOut_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error and ErrorID.
+   */
   bool Execute;
+  /**
+   * Done: the slave was decoupled; it runs on at its current velocity (ContinuousMotion).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -715,10 +1356,28 @@ typedef struct MC_GearOut_C {
  * C view of `McSyncOut` (MC_CamOut).
  */
 typedef struct MC_CamOut_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error and ErrorID.
+   */
   bool Execute;
+  /**
+   * Done: the slave was decoupled; it runs on at its current velocity (ContinuousMotion).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -730,15 +1389,50 @@ typedef struct MC_CamOut_C {
  * C view of `McCamTableSelect` (MC_CamTableSelect).
  */
 typedef struct MC_CamTableSelect_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * CamTable: the CAM_REF, the index `mc_engine_add_cam_table` (Rust: `Engine::add_cam_table`)
+   * returned.
+   */
   uint32_t CamTable;
+  /**
+   * Periodic: PLCopen input kept for the interface; the cam's periodicity is MC_CamIn's Periodic
+   * input here.
+   */
   bool Periodic;
+  /**
+   * MasterAbsolute: PLCopen input kept for the interface; MC_CamIn's MasterAbsolute input is
+   * used.
+   */
   bool MasterAbsolute;
+  /**
+   * SlaveAbsolute: PLCopen input kept for the interface; MC_CamIn's SlaveAbsolute input is used.
+   */
   bool SlaveAbsolute;
+  /**
+   * Done: the table and both axes exist; CamTableID is valid.
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the command completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * CamTableID: the checked table, to be given to MC_CamIn; set when Done.
+   */
   uint32_t CamTableID;
   /**
    * Private state: zero-initialise, never write.
@@ -750,24 +1444,98 @@ typedef struct MC_CamTableSelect_C {
  * C view of `McCamIn` (MC_CamIn).
  */
 typedef struct MC_CamIn_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * ContinuousUpdate: part of the PLCopen interface but not acted on by this block: the inputs
+   * are latched at the rising edge.
+   */
   bool ContinuousUpdate;
+  /**
+   * MasterOffset: subtracted from the master position before the table look-up, in u (table x =
+   * (master - MasterOffset) * MasterScaling).
+   */
   double MasterOffset;
+  /**
+   * SlaveOffset: added to the table's slave value, in u (slave = SlaveScaling * y +
+   * SlaveOffset).
+   */
   double SlaveOffset;
+  /**
+   * MasterScaling: factor on the master position before the table look-up; 0 stands for 1.
+   */
   double MasterScaling;
+  /**
+   * SlaveScaling: factor on the table's slave value; 0 stands for 1.
+   */
   double SlaveScaling;
+  /**
+   * MasterValueSource: the master value followed: its set value (0, mcSetValue, the default) or
+   * its actual value (1, mcActualValue); another value gives ErrorID 32 InvalidMode.
+   */
   uint8_t MasterValueSource;
+  /**
+   * CamTableID: the table to follow, as returned by MC_CamTableSelect (unknown: ErrorID 3
+   * InvalidCamTable).
+   */
   uint32_t CamTableID;
+  /**
+   * Periodic: TRUE repeats the table (each period the slave advances by the table's rise and
+   * EndOfProfile pulses); FALSE holds the table's ends beyond its master range.
+   */
   bool Periodic;
+  /**
+   * MasterAbsolute: TRUE looks the table up with the master's absolute position; FALSE with the
+   * distance the master travelled since coupling.
+   */
   bool MasterAbsolute;
+  /**
+   * SlaveAbsolute: TRUE the table gives the slave's absolute position; FALSE a position relative
+   * to where the slave was at coupling.
+   */
   bool SlaveAbsolute;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * InSync: the slave's catch-up profile ended and it follows the cam law (on the set value,
+   * while Active).
+   */
   bool InSync;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * EndOfProfile: TRUE in the cycle the master passes the end of the table (Periodic: each
+   * period boundary), while Active.
+   */
   bool EndOfProfile;
   /**
    * Private state: zero-initialise, never write.
@@ -779,12 +1547,36 @@ typedef struct MC_CamIn_C {
  * C view of `McAddAxisToGroup` (MC_AddAxisToGroup).
  */
 typedef struct MC_AddAxisToGroup_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * The axis to add (its index in the engine; unknown: ErrorID 1 InvalidAxis).
+   */
   uint32_t Axis;
+  /**
+   * IdentInGroup: the axis's identity in the group, 0..15 (X, Y, Z, A, ...;
+   * `path::IDENT_NAMES`); out of range or already used gives ErrorID 55.
+   */
   uint32_t IdentInGroup;
+  /**
+   * Done: the axis was added to the group (only in GroupDisabled).
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the command completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -796,11 +1588,32 @@ typedef struct MC_AddAxisToGroup_C {
  * C view of `McRemoveAxisFromGroup` (MC_RemoveAxisFromGroup).
  */
 typedef struct MC_RemoveAxisFromGroup_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * IdentInGroup: identity (0..15) of the axis to remove; an identity with no axis gives ErrorID
+   * 57 AxisNotInGroup.
+   */
   uint32_t IdentInGroup;
+  /**
+   * Done: the axis was removed from the group (only in GroupDisabled).
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the command completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -812,10 +1625,27 @@ typedef struct MC_RemoveAxisFromGroup_C {
  * C view of `McUngroupAllAxes` (MC_UngroupAllAxes).
  */
 typedef struct MC_UngroupAllAxes_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * Done: every axis left the group; the group is GroupDisabled.
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the command completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -827,10 +1657,27 @@ typedef struct MC_UngroupAllAxes_C {
  * C view of `McGroupEnable` (MC_GroupEnable).
  */
 typedef struct MC_GroupEnable_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * Done: the group went to GroupStandby (every axis powered and in Standstill).
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the command completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -842,10 +1689,27 @@ typedef struct MC_GroupEnable_C {
  * C view of `McGroupDisable` (MC_GroupDisable).
  */
 typedef struct MC_GroupDisable_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * Done: the group went to GroupDisabled.
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the command completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -857,10 +1721,27 @@ typedef struct MC_GroupDisable_C {
  * C view of `McGroupReset` (MC_GroupReset).
  */
 typedef struct MC_GroupReset_C {
+  /**
+   * Execute: its rising edge carries out the command within this call; Done or Error then show
+   * while Execute stays TRUE (for one call if it already fell).
+   */
   bool Execute;
+  /**
+   * Done: the group left GroupErrorStop for GroupStandby (or was not in an error).
+   */
   bool Done;
+  /**
+   * Busy: always FALSE after the call: the command completes within the call.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -872,13 +1753,41 @@ typedef struct MC_GroupReset_C {
  * C view of `McGroupStop` (MC_GroupStop).
  */
 typedef struct MC_GroupStop_C {
+  /**
+   * Execute: its rising edge starts braking, aborting every command of the group (also from
+   * Standstill); while Execute stays TRUE after Done the group stays GroupStopping and refuses
+   * motion commands; its falling edge releases it.
+   */
   bool Execute;
+  /**
+   * Deceleration: path braking rate in u/s², finite and > 0 (else ErrorID 22).
+   */
   double Deceleration;
+  /**
+   * Jerk of the path braking in u/s³ (>= 0; 0 = the axes' jerk limit).
+   */
   double Jerk;
+  /**
+   * Done: the group reached path velocity 0; it stays GroupStopping (motion commands refused)
+   * while Execute is TRUE.
+   */
   bool Done;
+  /**
+   * Busy: the group is still braking.
+   */
   bool Busy;
+  /**
+   * CommandAborted: the stop was ended by an axis error or a disable before it finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -890,14 +1799,48 @@ typedef struct MC_GroupStop_C {
  * C view of `McGroupHome` (MC_GroupHome).
  */
 typedef struct MC_GroupHome_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * Position per identity (IdentInGroup), in u: each axis's set position after homing (simulated
+   * drives home on the spot).
+   */
   double Position[16];
+  /**
+   * BufferMode: not used, group homing always starts at once (an unknown value is still refused
+   * with ErrorID 26); it needs GroupStandby.
+   */
   uint8_t BufferMode;
+  /**
+   * Done: every axis of the group homed; the group is back in GroupStandby.
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -909,15 +1852,51 @@ typedef struct MC_GroupHome_C {
  * C view of `McGroupHalt` (MC_GroupHalt).
  */
 typedef struct MC_GroupHalt_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * Deceleration: path braking rate in u/s², finite and > 0 (else ErrorID 22).
+   */
   double Deceleration;
+  /**
+   * Jerk of the path braking in u/s³ (>= 0; 0 = the axes' jerk limit).
+   */
   double Jerk;
+  /**
+   * BufferMode: Aborting (0) brakes at once; Buffered (1) brakes after the running move ended
+   * (which is then at rest); unknown: ErrorID 26.
+   */
   uint8_t BufferMode;
+  /**
+   * Done: the group reached path velocity 0 (GroupStandby).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -929,21 +1908,86 @@ typedef struct MC_GroupHalt_C {
  * C view of `McMoveLinearAbsolute` (MC_MoveLinearAbsolute).
  */
 typedef struct MC_MoveLinearAbsolute_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * Position: end point per identity (IdentInGroup: X, Y, Z, ...), in u; entries of identities
+   * with no axis in the group are ignored.
+   */
   double Position[16];
+  /**
+   * Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+   * axes' limits projected onto the path.
+   */
   double Velocity;
+  /**
+   * Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+   * the axes' limits.
+   */
   double Acceleration;
+  /**
+   * Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+   * the axes' limits.
+   */
   double Deceleration;
+  /**
+   * Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
+   */
   double Jerk;
+  /**
+   * CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+   * value gives ErrorID 61 InvalidCoordSystem.
+   */
   uint8_t CoordSystem;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+   * TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+   * TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+   * InvalidTransitionMode.
+   */
   uint8_t TransitionMode;
+  /**
+   * TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+   * the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+   * capped at half of either line.
+   */
   double TransitionParameter;
+  /**
+   * Done: the end point was reached (set value).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -955,21 +1999,86 @@ typedef struct MC_MoveLinearAbsolute_C {
  * C view of `McMoveLinearRelative` (MC_MoveLinearRelative).
  */
 typedef struct MC_MoveLinearRelative_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * Distance per identity, in u, added to the group's last commanded point; entries of absent
+   * identities are ignored.
+   */
   double Distance[16];
+  /**
+   * Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+   * axes' limits projected onto the path.
+   */
   double Velocity;
+  /**
+   * Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+   * the axes' limits.
+   */
   double Acceleration;
+  /**
+   * Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+   * the axes' limits.
+   */
   double Deceleration;
+  /**
+   * Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
+   */
   double Jerk;
+  /**
+   * CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+   * value gives ErrorID 61 InvalidCoordSystem.
+   */
   uint8_t CoordSystem;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+   * TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+   * TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+   * InvalidTransitionMode.
+   */
   uint8_t TransitionMode;
+  /**
+   * TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+   * the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+   * capped at half of either line.
+   */
   double TransitionParameter;
+  /**
+   * Done: the end point was reached (set value).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -981,21 +2090,87 @@ typedef struct MC_MoveLinearRelative_C {
  * C view of `McMoveDirectAbsolute` (MC_MoveDirectAbsolute).
  */
 typedef struct MC_MoveDirectAbsolute_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * Position: end point per identity, in u; each axis moves there on its own profile (absent
+   * identities ignored).
+   */
   double Position[16];
+  /**
+   * Velocity: largest speed of each axis, u/s (finite and > 0, else ErrorID 20; capped per axis
+   * by its limit).
+   */
   double Velocity;
+  /**
+   * Acceleration of each axis, u/s² (finite and > 0, else ErrorID 21; capped per axis by its
+   * limit).
+   */
   double Acceleration;
+  /**
+   * Deceleration of each axis, u/s² (finite and > 0, else ErrorID 22; capped per axis by its
+   * limit).
+   */
   double Deceleration;
+  /**
+   * Jerk of each axis, u/s³ (finite and >= 0, else ErrorID 23; 0 = each axis's own limit; capped
+   * per axis).
+   */
   double Jerk;
+  /**
+   * CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+   * value gives ErrorID 61 InvalidCoordSystem.
+   */
   uint8_t CoordSystem;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+   * TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+   * TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+   * InvalidTransitionMode.
+   */
   uint8_t TransitionMode;
+  /**
+   * TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+   * the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+   * capped at half of either line.
+   */
   double TransitionParameter;
+  /**
+   * Done: every axis reached its end point (set value).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -1007,24 +2182,100 @@ typedef struct MC_MoveDirectAbsolute_C {
  * C view of `McMoveCircularAbsolute` (MC_MoveCircularAbsolute).
  */
 typedef struct MC_MoveCircularAbsolute_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * CircMode: how AuxPoint defines the circle: BORDER (0), CENTER (1) or RADIUS (2); another
+   * value gives ErrorID 60 InvalidCircle.
+   */
   uint8_t CircMode;
+  /**
+   * AuxPoint: per identity, in u: BORDER a point on the arc between start and end, CENTER the
+   * centre (X/Y plane), RADIUS the normal vector of the circle's plane, its length the radius.
+   */
   double AuxPoint[16];
+  /**
+   * EndPoint: end point of the arc per identity (X/Y/Z on the arc, other axes linear), in u.
+   */
   double EndPoint[16];
+  /**
+   * PathChoice (CENTER and RADIUS): MC_CLOCKWISE (0) or MC_COUNTER_CLOCKWISE (1); another value
+   * gives ErrorID 25 InvalidDirection. Ignored for BORDER.
+   */
   uint8_t PathChoice;
+  /**
+   * Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+   * axes' limits projected onto the path.
+   */
   double Velocity;
+  /**
+   * Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+   * the axes' limits.
+   */
   double Acceleration;
+  /**
+   * Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+   * the axes' limits.
+   */
   double Deceleration;
+  /**
+   * Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
+   */
   double Jerk;
+  /**
+   * CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+   * value gives ErrorID 61 InvalidCoordSystem.
+   */
   uint8_t CoordSystem;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+   * TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+   * TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+   * InvalidTransitionMode.
+   */
   uint8_t TransitionMode;
+  /**
+   * TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+   * the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+   * capped at half of either line.
+   */
   double TransitionParameter;
+  /**
+   * Done: the end point of the arc was reached (set value).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -1036,24 +2287,101 @@ typedef struct MC_MoveCircularAbsolute_C {
  * C view of `McMoveCircularRelative` (MC_MoveCircularRelative).
  */
 typedef struct MC_MoveCircularRelative_C {
+  /**
+   * Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+   * command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+   * resets Done, Error, ErrorID and CommandAborted.
+   */
   bool Execute;
+  /**
+   * CircMode: how AuxPoint defines the circle: BORDER (0), CENTER (1) or RADIUS (2); another
+   * value gives ErrorID 60 InvalidCircle.
+   */
   uint8_t CircMode;
+  /**
+   * AuxPoint per identity, in u, relative to the start point: BORDER a point on the arc, CENTER
+   * the centre (X/Y plane); RADIUS the normal vector of the circle's plane (never relative), its
+   * length the radius.
+   */
   double AuxPoint[16];
+  /**
+   * EndPoint: end of the arc relative to the start point, per identity, in u.
+   */
   double EndPoint[16];
+  /**
+   * PathChoice (CENTER and RADIUS): MC_CLOCKWISE (0) or MC_COUNTER_CLOCKWISE (1); another value
+   * gives ErrorID 25 InvalidDirection. Ignored for BORDER.
+   */
   uint8_t PathChoice;
+  /**
+   * Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+   * axes' limits projected onto the path.
+   */
   double Velocity;
+  /**
+   * Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+   * the axes' limits.
+   */
   double Acceleration;
+  /**
+   * Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+   * the axes' limits.
+   */
   double Deceleration;
+  /**
+   * Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
+   */
   double Jerk;
+  /**
+   * CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+   * value gives ErrorID 61 InvalidCoordSystem.
+   */
   uint8_t CoordSystem;
+  /**
+   * BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+   * Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+   * without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
+   */
   uint8_t BufferMode;
+  /**
+   * TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+   * TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+   * TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+   * InvalidTransitionMode.
+   */
   uint8_t TransitionMode;
+  /**
+   * TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+   * the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+   * capped at half of either line.
+   */
   double TransitionParameter;
+  /**
+   * Done: the end point of the arc was reached (set value).
+   */
   bool Done;
+  /**
+   * Busy: the command was accepted and has not finished (queued in the buffer or running).
+   */
   bool Busy;
+  /**
+   * Active: this block's command controls the axis now (a buffered one is Busy but not yet
+   * Active).
+   */
   bool Active;
+  /**
+   * CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+   * took over before this one finished.
+   */
   bool CommandAborted;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
   /**
    * Private state: zero-initialise, never write.
@@ -1065,12 +2393,37 @@ typedef struct MC_MoveCircularRelative_C {
  * C view of `McGroupReadActualPosition` (MC_GroupReadActualPosition).
  */
 typedef struct MC_GroupReadActualPosition_C {
+  /**
+   * Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+   * the outputs.
+   */
   bool Enable;
+  /**
+   * CoordSystem: kept for the PLCopen interface; positions are always the axes' own coordinates
+   * (ACS = MCS here).
+   */
   uint8_t CoordSystem;
+  /**
+   * Valid: the value outputs are valid (Enable TRUE and no error).
+   */
   bool Valid;
+  /**
+   * Busy: TRUE while Enable is TRUE and the values are valid.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * Position per identity, in u (the set positions; the simulated drives follow them exactly);
+   * zeros for absent identities.
+   */
   double Position[16];
 } MC_GroupReadActualPosition_C;
 
@@ -1078,13 +2431,40 @@ typedef struct MC_GroupReadActualPosition_C {
  * C view of `McGroupReadActualVelocity` (MC_GroupReadActualVelocity).
  */
 typedef struct MC_GroupReadActualVelocity_C {
+  /**
+   * Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+   * the outputs.
+   */
   bool Enable;
+  /**
+   * CoordSystem: kept for the PLCopen interface; velocities are always in the axes' own
+   * coordinates (ACS = MCS here).
+   */
   uint8_t CoordSystem;
+  /**
+   * Valid: the value outputs are valid (Enable TRUE and no error).
+   */
   bool Valid;
+  /**
+   * Busy: TRUE while Enable is TRUE and the values are valid.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * Velocity per identity, in u/s; zeros for absent identities.
+   */
   double Velocity[16];
+  /**
+   * PathVelocity: the speed along the path, u/s (>= 0).
+   */
   double PathVelocity;
 } MC_GroupReadActualVelocity_C;
 
@@ -1092,16 +2472,52 @@ typedef struct MC_GroupReadActualVelocity_C {
  * C view of `McGroupReadStatus` (MC_GroupReadStatus).
  */
 typedef struct MC_GroupReadStatus_C {
+  /**
+   * Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+   * the outputs.
+   */
   bool Enable;
+  /**
+   * Valid: the value outputs are valid (Enable TRUE and no error).
+   */
   bool Valid;
+  /**
+   * Busy: TRUE while Enable is TRUE and the state is valid.
+   */
   bool Busy;
+  /**
+   * Error: the command was refused or failed; ErrorID says why.
+   */
   bool Error;
+  /**
+   * ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+   * ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
+   */
   uint16_t ErrorID;
+  /**
+   * GroupMoving: a group motion (line, circle, direct move, halt) runs.
+   */
   bool GroupMoving;
+  /**
+   * GroupHoming: MC_GroupHome runs.
+   */
   bool GroupHoming;
+  /**
+   * GroupErrorStop: the group is in GroupErrorStop (an axis of it failed; leave it with
+   * MC_GroupReset).
+   */
   bool GroupErrorStop;
+  /**
+   * GroupStandby: the group is enabled and stands still with no command.
+   */
   bool GroupStandby;
+  /**
+   * GroupStopping: MC_GroupStop brakes or holds the group.
+   */
   bool GroupStopping;
+  /**
+   * GroupDisabled: the group is not enabled (axes may be added or removed).
+   */
   bool GroupDisabled;
 } MC_GroupReadStatus_C;
 
@@ -1146,75 +2562,106 @@ extern "C" {
 #endif // __cplusplus
 
 /**
- * The ABI version the library was built with ([`MC_ABI_VERSION`]).
+ * The ABI version the library was built with ([`MC_ABI_VERSION`]). Call it once at start-up and
+ * refuse to run when it differs from the header's `MC_ABI_VERSION`. No handle, any thread.
  */
 uint32_t mc_abi_version(void);
 
 /**
  * `sizeof` of the named ABI struct as the library sees it (e.g. `"MC_MoveAbsolute_C"`), 0 for an unknown
  * name or NULL. Compare with the C compiler's `sizeof` to detect a header that does not match the library.
+ * No handle, any thread; never panics into C (a panic returns 0).
  * # Safety
  * `name` is NULL or a NUL-terminated string.
  */
 uintptr_t mc_sizeof(const char *name);
 
 /**
- * Creates an engine with cycle time `cycle_seconds` (e.g. 0.001) and per-axis/group
- * buffer depth `queue_depth`. Returns NULL on a bad configuration.
+ * Creates an engine with cycle time `cycle_seconds` (e.g. 0.001; finite and > 0) and
+ * per-axis/group
+ * buffer depth `queue_depth` (commands buffered besides the active one; a full buffer refuses a
+ * command with ErrorID 40). Returns the owned handle, or NULL on a bad configuration (or a panic).
+ * Free it with `mc_engine_destroy`. The handle may be used from one thread at a time.
  */
 struct McEngine *mc_engine_create(double cycle_seconds, uint32_t queue_depth);
 
 /**
- * Destroys an engine created by `mc_engine_create`. NULL gives `MC_STATUS_NULL_HANDLE` (and does nothing).
+ * Destroys an engine created by `mc_engine_create` and frees its memory (also a poisoned one).
+ * Returns `MC_OK`; NULL gives `MC_STATUS_NULL_HANDLE` and a pointer without a live engine's tag
+ * `MC_STATUS_BAD_HANDLE` (both do nothing). No call on `engine` may run at the same time or
+ * follow.
  * # Safety
- * See the module contract: `engine` is NULL or a live handle, destroyed once.
+ * `engine` is NULL or a live handle, destroyed once.
  */
 McStatus mc_engine_destroy(struct McEngine *engine);
 
 /**
- * Advances the engine by one cycle.
+ * Advances the engine by one cycle: every axis and group moves its set point on by the cycle time,
+ * drives are written and read, command statuses advance. Call it once per cycle after the block
+ * calls of the scan (a command given in scan k takes effect in this step; its outputs show in scan
+ * k + 1). Returns `MC_OK`, `MC_STATUS_NULL_HANDLE`, `MC_STATUS_BAD_HANDLE` or `MC_STATUS_PANIC`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`, used by no other thread during the
+ * call.
  */
 McStatus mc_engine_step(struct McEngine *engine);
 
 /**
  * Test hook for the panic path: panics inside the call's guard, so it returns `MC_STATUS_PANIC` and the
  * engine is poisoned (every later call on it returns `MC_STATUS_PANIC`; `mc_engine_destroy` still frees it).
- * Never call it on a controller that drives a machine.
+ * Never call it on a controller that drives a machine. A NULL or dead handle gives
+ * `MC_STATUS_NULL_HANDLE` / `MC_STATUS_BAD_HANDLE` instead.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`, used by no other thread during the
+ * call.
  */
 McStatus mc_engine_selftest_panic(struct McEngine *engine);
 
 /**
- * Cycles stepped so far (0 for a NULL, invalid or poisoned handle).
+ * Cycles stepped so far by `mc_engine_step` (0 for a NULL, invalid or poisoned handle).
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`, used by no other thread during the
+ * call.
  */
 uint64_t mc_engine_cycles(struct McEngine *engine);
 
 /**
- * Adds an axis with a simulated drive and writes its index to `*index`.
+ * Adds an axis with a simulated drive (actual values = set point), configured by `*config`, and
+ * writes its index (0, 1, ... in the order of creation) to the out-parameter `*index`. The axis
+ * starts Disabled. Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` / `MC_STATUS_BAD_HANDLE` for `engine`,
+ * `MC_STATUS_NULL_ARGUMENT` for a NULL `config` or `index`, `MC_STATUS_BAD_CONFIG` for limits that
+ * are not finite and positive (jerk >= 0), software limits not ordered, a bad modulo period or
+ * following-error limit (then `*index` is not written), `MC_STATUS_PANIC`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle; `config` is NULL or points to a readable `MC_AxisConfig_C`;
+ * `index` is NULL or points to a writable `McIndex`; no other thread uses `engine` meanwhile.
  */
 McStatus mc_engine_add_axis(struct McEngine *engine,
                             const struct MC_AxisConfig_C *config,
                             McIndex *index);
 
 /**
- * Adds an empty axes group and writes its index to `*index`.
+ * Adds an empty axes group (GroupDisabled) and writes its index to the out-parameter `*index`.
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` / `MC_STATUS_BAD_HANDLE` for `engine`,
+ * `MC_STATUS_NULL_ARGUMENT` for a NULL `index`, `MC_STATUS_PANIC`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle; `index` is NULL or points to a writable `McIndex`; no other
+ * thread uses `engine` meanwhile.
  */
 McStatus mc_engine_add_group(struct McEngine *engine, McIndex *index);
 
 /**
- * Registers a cam table of `n` points (master strictly increasing) and writes its CamTable reference
- * for MC_CamTableSelect to `*table`.
+ * Registers a cam table of `n` points (`master[i]`, `slave[i]`, in u; master strictly increasing,
+ * at least 2 points, all finite; slave values between points by cubic Hermite interpolation) and
+ * writes its CamTable reference for MC_CamTableSelect to the out-parameter `*table`. The arrays
+ * are
+ * copied. Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` / `MC_STATUS_BAD_HANDLE` for `engine`,
+ * `MC_STATUS_NULL_ARGUMENT` for a NULL array or `table`, `MC_STATUS_BAD_CONFIG` for a table that
+ * breaks those rules (`*table` not written), `MC_STATUS_PANIC`.
  * # Safety
- * See the module contract: pointers are NULL or valid; the arrays hold `n` doubles each.
+ * `engine` is NULL or a live handle; `master` and `slave` are NULL or hold `n` readable doubles
+ * each; `table` is NULL or points to a writable `McIndex`; no other thread uses `engine`
+ * meanwhile.
  */
 McStatus mc_engine_add_cam_table(struct McEngine *engine,
                                  const double *master,
@@ -1223,198 +2670,400 @@ McStatus mc_engine_add_cam_table(struct McEngine *engine,
                                  McIndex *table);
 
 /**
- * PLCopen state of an axis (0 Disabled .. 7 ErrorStop), or a negative `MC_STATUS_*` status.
+ * PLCopen state of axis `axis` (0 Disabled, 1 Standstill, 2 Homing, 3 DiscreteMotion,
+ * 4 ContinuousMotion, 5 SynchronizedMotion, 6 Stopping, 7 ErrorStop), or a negative status:
+ * `MC_STATUS_NULL_HANDLE`, `MC_STATUS_BAD_HANDLE`, `MC_STATUS_PANIC` (poisoned engine),
+ * `MC_STATUS_BAD_INDEX`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 int32_t mc_axis_state(struct McEngine *engine, McIndex axis);
 
 /**
- * Set position of an axis (user units; NaN on an error).
+ * Set position of axis `axis` after the last `mc_engine_step`, in user units (modulo axes: in
+ * [0, period)); NaN for a NULL, dead or poisoned handle or a bad index.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 double mc_axis_set_position(struct McEngine *engine, McIndex axis);
 
 /**
- * Set velocity of an axis (user units per second, override included; NaN on an error).
+ * Set velocity of axis `axis` after the last `mc_engine_step`, in u/s (override included); NaN for
+ * a NULL, dead or poisoned handle or a bad index.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 double mc_axis_set_velocity(struct McEngine *engine, McIndex axis);
 
 /**
- * Set acceleration of an axis (user units per second squared; NaN on an error).
+ * Set acceleration of axis `axis` after the last `mc_engine_step`, in u/s²; NaN for a NULL, dead
+ * or
+ * poisoned handle or a bad index.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 double mc_axis_set_acceleration(struct McEngine *engine, McIndex axis);
 
 /**
- * State of a group (0 GroupDisabled .. 5 GroupErrorStop), or a negative `MC_STATUS_*` status.
+ * State of axes group `group` (0 GroupDisabled, 1 GroupStandby, 2 GroupMoving, 3 GroupHoming,
+ * 4 GroupStopping, 5 GroupErrorStop), or a negative status: `MC_STATUS_NULL_HANDLE`,
+ * `MC_STATUS_BAD_HANDLE`, `MC_STATUS_PANIC` (poisoned engine), `MC_STATUS_BAD_INDEX`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 int32_t mc_group_state(struct McEngine *engine, McIndex group);
 
 /**
  * Junction speed the BufferMode asked for at a lowered junction the group's path passed in
  * the last cycle (the limits did not allow it); 0 in every other cycle, for a bad index and for a
- * NULL, invalid or poisoned handle.
+ * NULL, invalid or poisoned handle. In path units per second (u/s).
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 double mc_group_junction_requested(struct McEngine *engine, McIndex group);
 
 /**
  * Junction speed planned and reached at that lowered junction (see
- * `mc_group_junction_requested`); 0 otherwise.
+ * `mc_group_junction_requested`), u/s; 0 otherwise.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 double mc_group_junction_reached(struct McEngine *engine, McIndex group);
 
 /**
- * How many junction speeds of the group were lowered so far (0 for a bad index).
+ * How many junction speeds of the group were lowered so far (0 for a bad index and for a NULL,
+ * invalid or poisoned handle).
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 uint32_t mc_group_reduction_count(struct McEngine *engine, McIndex group);
 
 /**
- * Calls MC_Power once (one PLC scan).
+ * Calls MC_Power once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+ * the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_Power_C` that nothing else accesses during the call.
  */
 McStatus mc_power(struct McEngine *engine, McIndex axis, struct MC_Power_C *fb);
 
 /**
- * Calls MC_Home once (one PLC scan).
+ * Calls MC_Home once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+ * the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_Home_C` that nothing else accesses during the call.
  */
 McStatus mc_home(struct McEngine *engine, McIndex axis, struct MC_Home_C *fb);
 
 /**
- * Calls MC_Stop once (one PLC scan).
+ * Calls MC_Stop once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+ * the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_Stop_C` that nothing else accesses during the call.
  */
 McStatus mc_stop(struct McEngine *engine, McIndex axis, struct MC_Stop_C *fb);
 
 /**
- * Calls MC_Halt once (one PLC scan).
+ * Calls MC_Halt once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+ * the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_Halt_C` that nothing else accesses during the call.
  */
 McStatus mc_halt(struct McEngine *engine, McIndex axis, struct MC_Halt_C *fb);
 
 /**
- * Calls MC_MoveAbsolute once (one PLC scan).
+ * Calls MC_MoveAbsolute once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveAbsolute_C` that nothing else accesses during the call.
  */
 McStatus mc_move_absolute(struct McEngine *engine, McIndex axis, struct MC_MoveAbsolute_C *fb);
 
 /**
- * Calls MC_MoveRelative once (one PLC scan).
+ * Calls MC_MoveRelative once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveRelative_C` that nothing else accesses during the call.
  */
 McStatus mc_move_relative(struct McEngine *engine, McIndex axis, struct MC_MoveRelative_C *fb);
 
 /**
- * Calls MC_MoveAdditive once (one PLC scan).
+ * Calls MC_MoveAdditive once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveAdditive_C` that nothing else accesses during the call.
  */
 McStatus mc_move_additive(struct McEngine *engine, McIndex axis, struct MC_MoveAdditive_C *fb);
 
 /**
- * Calls MC_MoveVelocity once (one PLC scan).
+ * Calls MC_MoveVelocity once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveVelocity_C` that nothing else accesses during the call.
  */
 McStatus mc_move_velocity(struct McEngine *engine, McIndex axis, struct MC_MoveVelocity_C *fb);
 
 /**
- * Calls MC_Reset once (one PLC scan).
+ * Calls MC_Reset once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+ * the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_Reset_C` that nothing else accesses during the call.
  */
 McStatus mc_reset(struct McEngine *engine, McIndex axis, struct MC_Reset_C *fb);
 
 /**
- * Calls MC_ReadActualPosition once (one PLC scan).
+ * Calls MC_ReadActualPosition once (one PLC scan) on axis `axis` of `engine`: reads the inputs
+ * from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_ReadActualPosition_C` that nothing else accesses during the call.
  */
 McStatus mc_read_actual_position(struct McEngine *engine,
                                  McIndex axis,
                                  struct MC_ReadActualPosition_C *fb);
 
 /**
- * Calls MC_ReadActualVelocity once (one PLC scan).
+ * Calls MC_ReadActualVelocity once (one PLC scan) on axis `axis` of `engine`: reads the inputs
+ * from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_ReadActualVelocity_C` that nothing else accesses during the call.
  */
 McStatus mc_read_actual_velocity(struct McEngine *engine,
                                  McIndex axis,
                                  struct MC_ReadActualVelocity_C *fb);
 
 /**
- * Calls MC_ReadStatus once (one PLC scan).
+ * Calls MC_ReadStatus once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`,
+ * runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_ReadStatus_C` that nothing else accesses during the call.
  */
 McStatus mc_read_status(struct McEngine *engine, McIndex axis, struct MC_ReadStatus_C *fb);
 
 /**
- * Calls MC_ReadAxisError once (one PLC scan).
+ * Calls MC_ReadAxisError once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_ReadAxisError_C` that nothing else accesses during the call.
  */
 McStatus mc_read_axis_error(struct McEngine *engine, McIndex axis, struct MC_ReadAxisError_C *fb);
 
 /**
- * Calls MC_SetPosition once (one PLC scan).
+ * Calls MC_SetPosition once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_SetPosition_C` that nothing else accesses during the call.
  */
 McStatus mc_set_position(struct McEngine *engine, McIndex axis, struct MC_SetPosition_C *fb);
 
 /**
- * Calls MC_SetOverride once (one PLC scan).
+ * Calls MC_SetOverride once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_SetOverride_C` that nothing else accesses during the call.
  */
 McStatus mc_set_override(struct McEngine *engine, McIndex axis, struct MC_SetOverride_C *fb);
 
 /**
- * Calls MC_GearIn once (one PLC scan).
+ * Calls MC_GearIn once (one PLC scan) on master axis `master` and slave axis `slave` of `engine`:
+ * reads the inputs from `*fb`, runs the block and writes its outputs and `_internal` back to
+ * `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `master` or `slave` is not an axis of the engine (the outputs are
+ * still written: the block reports the bad index through Error/ErrorID when it acts);
+ * `MC_STATUS_PANIC` after a panic (the engine is poisoned). PLCopen errors of the block itself are
+ * in `fb->ErrorID`, not in the status. Call it from the one thread that drives `engine` (normally
+ * the PLC scan task), once per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GearIn_C` that nothing else accesses during the call.
  */
 McStatus mc_gear_in(struct McEngine *engine, McIndex master, McIndex slave, struct MC_GearIn_C *fb);
 
 /**
- * Calls MC_GearOut once (one PLC scan).
+ * Calls MC_GearOut once (one PLC scan) on slave axis `slave` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `slave` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GearOut_C` that nothing else accesses during the call.
  */
 McStatus mc_gear_out(struct McEngine *engine, McIndex slave, struct MC_GearOut_C *fb);
 
 /**
- * Calls MC_CamOut once (one PLC scan).
+ * Calls MC_CamOut once (one PLC scan) on slave axis `slave` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `slave` is not an axis of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_CamOut_C` that nothing else accesses during the call.
  */
 McStatus mc_cam_out(struct McEngine *engine, McIndex slave, struct MC_CamOut_C *fb);
 
 /**
- * Calls MC_CamTableSelect once (one PLC scan).
+ * Calls MC_CamTableSelect once (one PLC scan) on master axis `master` and slave axis `slave` of
+ * `engine`: reads the inputs from `*fb`, runs the block and writes its outputs and `_internal`
+ * back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `master` or `slave` is not an axis of the engine (the outputs are
+ * still written: the block reports the bad index through Error/ErrorID when it acts);
+ * `MC_STATUS_PANIC` after a panic (the engine is poisoned). PLCopen errors of the block itself are
+ * in `fb->ErrorID`, not in the status. Call it from the one thread that drives `engine` (normally
+ * the PLC scan task), once per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_CamTableSelect_C` that nothing else accesses during the call.
  */
 McStatus mc_cam_table_select(struct McEngine *engine,
                              McIndex master,
@@ -1422,148 +3071,329 @@ McStatus mc_cam_table_select(struct McEngine *engine,
                              struct MC_CamTableSelect_C *fb);
 
 /**
- * Calls MC_CamIn once (one PLC scan).
+ * Calls MC_CamIn once (one PLC scan) on master axis `master` and slave axis `slave` of `engine`:
+ * reads the inputs from `*fb`, runs the block and writes its outputs and `_internal` back to
+ * `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `master` or `slave` is not an axis of the engine (the outputs are
+ * still written: the block reports the bad index through Error/ErrorID when it acts);
+ * `MC_STATUS_PANIC` after a panic (the engine is poisoned). PLCopen errors of the block itself are
+ * in `fb->ErrorID`, not in the status. Call it from the one thread that drives `engine` (normally
+ * the PLC scan task), once per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_CamIn_C` that nothing else accesses during the call.
  */
 McStatus mc_cam_in(struct McEngine *engine, McIndex master, McIndex slave, struct MC_CamIn_C *fb);
 
 /**
- * Calls MC_AddAxisToGroup once (one PLC scan).
+ * Calls MC_AddAxisToGroup once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+ * from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_AddAxisToGroup_C` that nothing else accesses during the call.
  */
 McStatus mc_add_axis_to_group(struct McEngine *engine,
                               McIndex group,
                               struct MC_AddAxisToGroup_C *fb);
 
 /**
- * Calls MC_RemoveAxisFromGroup once (one PLC scan).
+ * Calls MC_RemoveAxisFromGroup once (one PLC scan) on axes group `group` of `engine`: reads the
+ * inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_RemoveAxisFromGroup_C` that nothing else accesses during the call.
  */
 McStatus mc_remove_axis_from_group(struct McEngine *engine,
                                    McIndex group,
                                    struct MC_RemoveAxisFromGroup_C *fb);
 
 /**
- * Calls MC_UngroupAllAxes once (one PLC scan).
+ * Calls MC_UngroupAllAxes once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+ * from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_UngroupAllAxes_C` that nothing else accesses during the call.
  */
 McStatus mc_ungroup_all_axes(struct McEngine *engine,
                              McIndex group,
                              struct MC_UngroupAllAxes_C *fb);
 
 /**
- * Calls MC_GroupEnable once (one PLC scan).
+ * Calls MC_GroupEnable once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+ * from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupEnable_C` that nothing else accesses during the call.
  */
 McStatus mc_group_enable(struct McEngine *engine, McIndex group, struct MC_GroupEnable_C *fb);
 
 /**
- * Calls MC_GroupDisable once (one PLC scan).
+ * Calls MC_GroupDisable once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+ * from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupDisable_C` that nothing else accesses during the call.
  */
 McStatus mc_group_disable(struct McEngine *engine, McIndex group, struct MC_GroupDisable_C *fb);
 
 /**
- * Calls MC_GroupReset once (one PLC scan).
+ * Calls MC_GroupReset once (one PLC scan) on axes group `group` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupReset_C` that nothing else accesses during the call.
  */
 McStatus mc_group_reset(struct McEngine *engine, McIndex group, struct MC_GroupReset_C *fb);
 
 /**
- * Calls MC_GroupStop once (one PLC scan).
+ * Calls MC_GroupStop once (one PLC scan) on axes group `group` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupStop_C` that nothing else accesses during the call.
  */
 McStatus mc_group_stop(struct McEngine *engine, McIndex group, struct MC_GroupStop_C *fb);
 
 /**
- * Calls MC_GroupHome once (one PLC scan).
+ * Calls MC_GroupHome once (one PLC scan) on axes group `group` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupHome_C` that nothing else accesses during the call.
  */
 McStatus mc_group_home(struct McEngine *engine, McIndex group, struct MC_GroupHome_C *fb);
 
 /**
- * Calls MC_GroupHalt once (one PLC scan).
+ * Calls MC_GroupHalt once (one PLC scan) on axes group `group` of `engine`: reads the inputs from
+ * `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupHalt_C` that nothing else accesses during the call.
  */
 McStatus mc_group_halt(struct McEngine *engine, McIndex group, struct MC_GroupHalt_C *fb);
 
 /**
- * Calls MC_MoveLinearAbsolute once (one PLC scan).
+ * Calls MC_MoveLinearAbsolute once (one PLC scan) on axes group `group` of `engine`: reads the
+ * inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveLinearAbsolute_C` that nothing else accesses during the call.
  */
 McStatus mc_move_linear_absolute(struct McEngine *engine,
                                  McIndex group,
                                  struct MC_MoveLinearAbsolute_C *fb);
 
 /**
- * Calls MC_MoveLinearRelative once (one PLC scan).
+ * Calls MC_MoveLinearRelative once (one PLC scan) on axes group `group` of `engine`: reads the
+ * inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveLinearRelative_C` that nothing else accesses during the call.
  */
 McStatus mc_move_linear_relative(struct McEngine *engine,
                                  McIndex group,
                                  struct MC_MoveLinearRelative_C *fb);
 
 /**
- * Calls MC_MoveDirectAbsolute once (one PLC scan).
+ * Calls MC_MoveDirectAbsolute once (one PLC scan) on axes group `group` of `engine`: reads the
+ * inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveDirectAbsolute_C` that nothing else accesses during the call.
  */
 McStatus mc_move_direct_absolute(struct McEngine *engine,
                                  McIndex group,
                                  struct MC_MoveDirectAbsolute_C *fb);
 
 /**
- * Calls MC_MoveCircularAbsolute once (one PLC scan).
+ * Calls MC_MoveCircularAbsolute once (one PLC scan) on axes group `group` of `engine`: reads the
+ * inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveCircularAbsolute_C` that nothing else accesses during the call.
  */
 McStatus mc_move_circular_absolute(struct McEngine *engine,
                                    McIndex group,
                                    struct MC_MoveCircularAbsolute_C *fb);
 
 /**
- * Calls MC_MoveCircularRelative once (one PLC scan).
+ * Calls MC_MoveCircularRelative once (one PLC scan) on axes group `group` of `engine`: reads the
+ * inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_MoveCircularRelative_C` that nothing else accesses during the call.
  */
 McStatus mc_move_circular_relative(struct McEngine *engine,
                                    McIndex group,
                                    struct MC_MoveCircularRelative_C *fb);
 
 /**
- * Calls MC_GroupReadActualPosition once (one PLC scan).
+ * Calls MC_GroupReadActualPosition once (one PLC scan) on axes group `group` of `engine`: reads
+ * the inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupReadActualPosition_C` that nothing else accesses during the call.
  */
 McStatus mc_group_read_actual_position(struct McEngine *engine,
                                        McIndex group,
                                        struct MC_GroupReadActualPosition_C *fb);
 
 /**
- * Calls MC_GroupReadActualVelocity once (one PLC scan).
+ * Calls MC_GroupReadActualVelocity once (one PLC scan) on axes group `group` of `engine`: reads
+ * the inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupReadActualVelocity_C` that nothing else accesses during the call.
  */
 McStatus mc_group_read_actual_velocity(struct McEngine *engine,
                                        McIndex group,
                                        struct MC_GroupReadActualVelocity_C *fb);
 
 /**
- * Calls MC_GroupReadStatus once (one PLC scan).
+ * Calls MC_GroupReadStatus once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+ * from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+ *
+ * Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+ * and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+ * `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+ * the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+ * panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+ * the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+ * per scan and before `mc_engine_step`.
  * # Safety
- * See the module contract: pointers are NULL or valid.
+ * `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+ * writable `MC_GroupReadStatus_C` that nothing else accesses during the call.
  */
 McStatus mc_group_read_status(struct McEngine *engine,
                               McIndex group,

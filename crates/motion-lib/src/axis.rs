@@ -13,8 +13,12 @@ use crate::profile::Limits;
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub enum AxisKind {
     #[default]
+    /// Positions are plain numbers in user units; software limits apply.
     Linear,
+    /// A rotary axis: positions are reported in `[0, period)`; MoveAbsolute's Direction picks the
+    /// way round.
     Modulo {
+        /// Length of one turn in user units (finite, > 0).
         period: f64,
     },
 }
@@ -28,7 +32,10 @@ pub struct AxisConfig {
     pub sw_limit_pos: f64,
     /// Negative software position limit (checked when `sw_limits_enabled`).
     pub sw_limit_neg: f64,
+    /// SwLimitsEnabled: check the software limits (linear axes): targets beyond them are refused
+    /// (ErrorID 27, 29), velocity moves stop at them (ErrorID 100, 101).
     pub sw_limits_enabled: bool,
+    /// Linear axis or modulo axis with its period.
     pub kind: AxisKind,
     /// Largest allowed |set - actual| position difference (0 = not checked).
     pub following_error_limit: f64,
@@ -139,9 +146,11 @@ impl AxisConfig {
 /// Result of polling a drive's homing.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum HomingStatus {
+    /// The drive is still homing (the axis stays in Homing).
     Busy,
     /// Homing finished; the drive's actual position (drive units) at the reference.
     Done,
+    /// Homing failed: the axis goes to ErrorStop with ErrorID 105 (HomingFailed).
     Failed,
 }
 

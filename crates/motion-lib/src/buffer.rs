@@ -14,11 +14,19 @@ use crate::error::ErrorId;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum BufferMode {
     #[default]
+    /// Starts at once from the current position, velocity and acceleration; the running and every
+    /// buffered command get CommandAborted.
     Aborting = 0,
+    /// Starts when the predecessor releases the axis (positioning: Done; MoveVelocity: InVelocity;
+    /// GearIn/CamIn: InGear/InSync), from rest for positioning moves.
     Buffered = 1,
+    /// Joins the predecessor at the lower of the two commanded velocities, min(v1, v2).
     BlendingLow = 2,
+    /// Joins the predecessor at its own velocity v1.
     BlendingPrevious = 3,
+    /// Joins the predecessor at the successor's velocity v2.
     BlendingNext = 4,
+    /// Joins the predecessor at the higher of the two commanded velocities, max(v1, v2).
     BlendingHigh = 5,
 }
 
@@ -88,9 +96,13 @@ impl TransitionMode {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Direction {
     #[default]
+    /// mcPositiveDirection: modulo targets are reached moving forward; MoveVelocity runs forward.
     Positive = 0,
+    /// mcShortestWay: the shorter way round a modulo axis (refused by MoveVelocity, ErrorID 25).
     Shortest = 1,
+    /// mcNegativeDirection: modulo targets are reached moving backward; MoveVelocity runs backward.
     Negative = 2,
+    /// mcCurrentDirection: keeps the direction the axis moves in now (forward from rest).
     Current = 3,
 }
 
@@ -110,7 +122,7 @@ impl Direction {
 
 /// A bounded FIFO that refuses pushes when full.
 #[derive(Clone, Debug)]
-pub struct Queue<T> {
+pub(crate) struct Queue<T> {
     items: VecDeque<T>,
     depth: usize,
 }

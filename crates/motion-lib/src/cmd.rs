@@ -100,30 +100,36 @@ impl CmdTable {
             .filter(|s| s.live && s.gen == id.gen)
     }
 
+    /// Status of command `id` ([`CmdStatus::Unknown`] for a released or stale id).
     pub fn status(&self, id: CmdId) -> CmdStatus {
         self.slot(id).map(|s| s.status).unwrap_or_default()
     }
 
+    /// Sets the status of `id` (a released or stale id is ignored).
     pub fn set(&mut self, id: CmdId, status: CmdStatus) {
         if let Some(s) = self.slot_mut(id) {
             s.status = status;
         }
     }
 
+    /// InVelocity / InGear / InSync of `id`: the set value reached the command's target.
     pub fn in_target(&self, id: CmdId) -> bool {
         self.slot(id).is_some_and(|s| s.in_target)
     }
 
+    /// Sets or clears the in-target flag of `id` (ignored for a stale id).
     pub fn set_in_target(&mut self, id: CmdId, on: bool) {
         if let Some(s) = self.slot_mut(id) {
             s.in_target = on;
         }
     }
 
+    /// EndOfProfile of a cam command `id`: TRUE in the cycle the master passed the table's end.
     pub fn end_of_profile(&self, id: CmdId) -> bool {
         self.slot(id).is_some_and(|s| s.end_of_profile)
     }
 
+    /// Sets or clears the EndOfProfile flag of `id` (ignored for a stale id).
     pub fn set_end_of_profile(&mut self, id: CmdId, on: bool) {
         if let Some(s) = self.slot_mut(id) {
             s.end_of_profile = on;

@@ -38,9 +38,17 @@ impl Default for EngineConfig {
 /// Jerk 0 means "the axis's jerk limit".
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Dynamics {
+    /// Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
+    /// ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
     pub velocity: f64,
+    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+    /// axis's acceleration limit.
     pub acceleration: f64,
+    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+    /// axis's deceleration limit.
     pub deceleration: f64,
+    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+    /// larger value is capped to it.
     pub jerk: f64,
 }
 
@@ -48,44 +56,70 @@ pub struct Dynamics {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum MasterSource {
     #[default]
+    /// mcSetValue (0): the master's set point of this cycle (its successor starting within the
+    /// cycle included).
     SetValue,
+    /// mcActualValue (1): the master's actual position and velocity as its drive reports them.
     ActualValue,
 }
 
 /// A single-axis command.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum AxisCommand {
+    /// MC_MoveAbsolute: to `position` (u); on a modulo axis the way `direction` says.
     MoveAbsolute {
+        /// Target position, u.
         position: f64,
+        /// Way round a modulo axis (ignored on a linear axis).
         direction: Direction,
     },
+    /// MC_MoveRelative: `distance` added to the set position when the command becomes active.
     MoveRelative {
+        /// Distance, u (signed).
         distance: f64,
     },
+    /// MC_MoveAdditive: `distance` added to the last commanded target.
     MoveAdditive {
+        /// Distance, u (signed).
         distance: f64,
     },
     /// `dynamics.velocity` is the speed; the sign comes from `direction` (a negative
     /// velocity reverses it).
     MoveVelocity {
+        /// Positive, Negative or Current (Shortest is refused with ErrorID 25).
         direction: Direction,
     },
+    /// MC_Halt: brake to standstill with the given deceleration and jerk (DiscreteMotion, then
+    /// Standstill).
     Halt,
+    /// MC_Stop: abort everything and brake (Stopping; held until the block releases it).
     Stop,
+    /// MC_Home: run the drive's homing (Homing); the set position becomes `position`.
     Home {
+        /// Position after homing, u.
         position: f64,
     },
+    /// MC_GearIn: follow `master` at numerator/denominator after a catch-up profile.
     GearIn {
+        /// Index of the master axis.
         master: usize,
+        /// Ratio numerator (slave/master).
         numerator: f64,
+        /// Ratio denominator (non-zero; else ErrorID 28).
         denominator: f64,
+        /// Set or actual value of the master.
         source: MasterSource,
     },
+    /// MC_GearOut: decouple; the slave keeps its current velocity (ContinuousMotion).
     GearOut,
+    /// MC_CamIn: follow `master` through a cam table after a catch-up profile.
     CamIn {
+        /// Index of the master axis.
         master: usize,
+        /// The cam law: table, offsets, scalings, periodic/absolute flags.
         params: SyncParams,
     },
+    /// MC_CamOut: decouple; the slave keeps its current velocity (ContinuousMotion).
     CamOut,
 }
 

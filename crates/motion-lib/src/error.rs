@@ -9,6 +9,7 @@
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub enum ErrorId {
     #[default]
+    /// No error (0).
     None = 0,
     /// The axis index does not name an axis of the engine.
     InvalidAxis = 1,

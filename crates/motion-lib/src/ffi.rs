@@ -77,7 +77,9 @@ pub const MC_STATUS_PANIC: McStatus = -6;
 /// Tag of a live engine; cleared when it is destroyed.
 const MAGIC: u64 = 0x4d43_454e_4749_4e45; // "MCENGINE"
 
-/// Opaque engine handle.
+/// Opaque engine handle (C sees `McEngine *` only): the axes, groups, cam tables and command
+/// buffers of one motion controller. Made by `mc_engine_create`, freed by `mc_engine_destroy`; a
+/// tag marks it live, and a panic inside a call poisons it.
 pub struct McEngine {
     magic: u64,
     poisoned: bool,
@@ -88,20 +90,31 @@ pub struct McEngine {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_AxisConfig_C {
+    /// VelocityLimit: largest |velocity| of the axis, u/s (> 0).
     pub VelocityLimit: f64,
+    /// AccelerationLimit: largest acceleration (speeding up), u/s² (> 0).
     pub AccelerationLimit: f64,
+    /// DecelerationLimit: largest deceleration (slowing down), u/s² (> 0).
     pub DecelerationLimit: f64,
     /// 0 = no jerk limit.
     pub JerkLimit: f64,
+    /// SwLimitPositive: upper software position limit, u (checked when SwLimitsEnabled).
     pub SwLimitPositive: f64,
+    /// SwLimitNegative: lower software position limit, u (checked when SwLimitsEnabled; below
+    /// SwLimitPositive).
     pub SwLimitNegative: f64,
+    /// SwLimitsEnabled: check the software limits (linear axes): targets beyond them are refused
+    /// (ErrorID 27, 29), velocity moves stop at them (ErrorID 100, 101).
     pub SwLimitsEnabled: bool,
+    /// ModuloPeriod: > 0 makes a modulo (rotary) axis whose positions are reported in [0, period),
+    /// u; 0 = linear axis.
     pub ModuloPeriod: f64,
     /// 0 = not checked.
     pub FollowingErrorLimit: f64,
 }
 
-/// The ABI version the library was built with ([`MC_ABI_VERSION`]).
+/// The ABI version the library was built with ([`MC_ABI_VERSION`]). Call it once at start-up and
+/// refuse to run when it differs from the header's `MC_ABI_VERSION`. No handle, any thread.
 #[no_mangle]
 pub extern "C" fn mc_abi_version() -> u32 {
     MC_ABI_VERSION
@@ -109,6 +122,7 @@ pub extern "C" fn mc_abi_version() -> u32 {
 
 /// `sizeof` of the named ABI struct as the library sees it (e.g. `"MC_MoveAbsolute_C"`), 0 for an unknown
 /// name or NULL. Compare with the C compiler's `sizeof` to detect a header that does not match the library.
+/// No handle, any thread; never panics into C (a panic returns 0).
 /// # Safety
 /// `name` is NULL or a NUL-terminated string.
 #[no_mangle]
@@ -171,8 +185,11 @@ fn group_ok(e: &Engine, group: McIndex) -> Result<(), McStatus> {
         .map_err(|_| MC_STATUS_BAD_INDEX)
 }
 
-/// Creates an engine with cycle time `cycle_seconds` (e.g. 0.001) and per-axis/group
-/// buffer depth `queue_depth`. Returns NULL on a bad configuration.
+/// Creates an engine with cycle time `cycle_seconds` (e.g. 0.001; finite and > 0) and
+/// per-axis/group
+/// buffer depth `queue_depth` (commands buffered besides the active one; a full buffer refuses a
+/// command with ErrorID 40). Returns the owned handle, or NULL on a bad configuration (or a panic).
+/// Free it with `mc_engine_destroy`. The handle may be used from one thread at a time.
 #[no_mangle]
 pub extern "C" fn mc_engine_create(cycle_seconds: f64, queue_depth: u32) -> *mut McEngine {
     let made = std::panic::catch_unwind(|| {
@@ -191,9 +208,12 @@ pub extern "C" fn mc_engine_create(cycle_seconds: f64, queue_depth: u32) -> *mut
     }
 }
 
-/// Destroys an engine created by `mc_engine_create`. NULL gives `MC_STATUS_NULL_HANDLE` (and does nothing).
+/// Destroys an engine created by `mc_engine_create` and frees its memory (also a poisoned one).
+/// Returns `MC_OK`; NULL gives `MC_STATUS_NULL_HANDLE` and a pointer without a live engine's tag
+/// `MC_STATUS_BAD_HANDLE` (both do nothing). No call on `engine` may run at the same time or
+/// follow.
 /// # Safety
-/// See the module contract: `engine` is NULL or a live handle, destroyed once.
+/// `engine` is NULL or a live handle, destroyed once.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_destroy(engine: *mut McEngine) -> McStatus {
     if engine.is_null() {
@@ -213,9 +233,13 @@ pub unsafe extern "C" fn mc_engine_destroy(engine: *mut McEngine) -> McStatus {
     MC_OK
 }
 
-/// Advances the engine by one cycle.
+/// Advances the engine by one cycle: every axis and group moves its set point on by the cycle time,
+/// drives are written and read, command statuses advance. Call it once per cycle after the block
+/// calls of the scan (a command given in scan k takes effect in this step; its outputs show in scan
+/// k + 1). Returns `MC_OK`, `MC_STATUS_NULL_HANDLE`, `MC_STATUS_BAD_HANDLE` or `MC_STATUS_PANIC`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`, used by no other thread during the
+/// call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_step(engine: *mut McEngine) -> McStatus {
     guard(engine, || {
@@ -226,9 +250,11 @@ pub unsafe extern "C" fn mc_engine_step(engine: *mut McEngine) -> McStatus {
 
 /// Test hook for the panic path: panics inside the call's guard, so it returns `MC_STATUS_PANIC` and the
 /// engine is poisoned (every later call on it returns `MC_STATUS_PANIC`; `mc_engine_destroy` still frees it).
-/// Never call it on a controller that drives a machine.
+/// Never call it on a controller that drives a machine. A NULL or dead handle gives
+/// `MC_STATUS_NULL_HANDLE` / `MC_STATUS_BAD_HANDLE` instead.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`, used by no other thread during the
+/// call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_selftest_panic(engine: *mut McEngine) -> McStatus {
     guard(engine, || {
@@ -237,17 +263,24 @@ pub unsafe extern "C" fn mc_engine_selftest_panic(engine: *mut McEngine) -> McSt
     })
 }
 
-/// Cycles stepped so far (0 for a NULL, invalid or poisoned handle).
+/// Cycles stepped so far by `mc_engine_step` (0 for a NULL, invalid or poisoned handle).
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`, used by no other thread during the
+/// call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_cycles(engine: *mut McEngine) -> u64 {
     unsafe { eng(engine) }.map_or(0, |e| e.cycles())
 }
 
-/// Adds an axis with a simulated drive and writes its index to `*index`.
+/// Adds an axis with a simulated drive (actual values = set point), configured by `*config`, and
+/// writes its index (0, 1, ... in the order of creation) to the out-parameter `*index`. The axis
+/// starts Disabled. Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` / `MC_STATUS_BAD_HANDLE` for `engine`,
+/// `MC_STATUS_NULL_ARGUMENT` for a NULL `config` or `index`, `MC_STATUS_BAD_CONFIG` for limits that
+/// are not finite and positive (jerk >= 0), software limits not ordered, a bad modulo period or
+/// following-error limit (then `*index` is not written), `MC_STATUS_PANIC`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle; `config` is NULL or points to a readable `MC_AxisConfig_C`;
+/// `index` is NULL or points to a writable `McIndex`; no other thread uses `engine` meanwhile.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_add_axis(
     engine: *mut McEngine,
@@ -285,9 +318,12 @@ pub unsafe extern "C" fn mc_engine_add_axis(
     })
 }
 
-/// Adds an empty axes group and writes its index to `*index`.
+/// Adds an empty axes group (GroupDisabled) and writes its index to the out-parameter `*index`.
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` / `MC_STATUS_BAD_HANDLE` for `engine`,
+/// `MC_STATUS_NULL_ARGUMENT` for a NULL `index`, `MC_STATUS_PANIC`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle; `index` is NULL or points to a writable `McIndex`; no other
+/// thread uses `engine` meanwhile.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_add_group(
     engine: *mut McEngine,
@@ -302,10 +338,17 @@ pub unsafe extern "C" fn mc_engine_add_group(
     })
 }
 
-/// Registers a cam table of `n` points (master strictly increasing) and writes its CamTable reference
-/// for MC_CamTableSelect to `*table`.
+/// Registers a cam table of `n` points (`master[i]`, `slave[i]`, in u; master strictly increasing,
+/// at least 2 points, all finite; slave values between points by cubic Hermite interpolation) and
+/// writes its CamTable reference for MC_CamTableSelect to the out-parameter `*table`. The arrays
+/// are
+/// copied. Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` / `MC_STATUS_BAD_HANDLE` for `engine`,
+/// `MC_STATUS_NULL_ARGUMENT` for a NULL array or `table`, `MC_STATUS_BAD_CONFIG` for a table that
+/// breaks those rules (`*table` not written), `MC_STATUS_PANIC`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid; the arrays hold `n` doubles each.
+/// `engine` is NULL or a live handle; `master` and `slave` are NULL or hold `n` readable doubles
+/// each; `table` is NULL or points to a writable `McIndex`; no other thread uses `engine`
+/// meanwhile.
 #[no_mangle]
 pub unsafe extern "C" fn mc_engine_add_cam_table(
     engine: *mut McEngine,
@@ -335,9 +378,12 @@ pub unsafe extern "C" fn mc_engine_add_cam_table(
     })
 }
 
-/// PLCopen state of an axis (0 Disabled .. 7 ErrorStop), or a negative `MC_STATUS_*` status.
+/// PLCopen state of axis `axis` (0 Disabled, 1 Standstill, 2 Homing, 3 DiscreteMotion,
+/// 4 ContinuousMotion, 5 SynchronizedMotion, 6 Stopping, 7 ErrorStop), or a negative status:
+/// `MC_STATUS_NULL_HANDLE`, `MC_STATUS_BAD_HANDLE`, `MC_STATUS_PANIC` (poisoned engine),
+/// `MC_STATUS_BAD_INDEX`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle, used by no other thread during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_axis_state(engine: *mut McEngine, axis: McIndex) -> i32 {
     match unsafe { eng(engine) } {
@@ -360,33 +406,39 @@ unsafe fn set_value(
     }
 }
 
-/// Set position of an axis (user units; NaN on an error).
+/// Set position of axis `axis` after the last `mc_engine_step`, in user units (modulo axes: in
+/// [0, period)); NaN for a NULL, dead or poisoned handle or a bad index.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle, used by no other thread during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_axis_set_position(engine: *mut McEngine, axis: McIndex) -> f64 {
     unsafe { set_value(engine, axis, Engine::set_position_of) }
 }
 
-/// Set velocity of an axis (user units per second, override included; NaN on an error).
+/// Set velocity of axis `axis` after the last `mc_engine_step`, in u/s (override included); NaN for
+/// a NULL, dead or poisoned handle or a bad index.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle, used by no other thread during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_axis_set_velocity(engine: *mut McEngine, axis: McIndex) -> f64 {
     unsafe { set_value(engine, axis, Engine::set_velocity_of) }
 }
 
-/// Set acceleration of an axis (user units per second squared; NaN on an error).
+/// Set acceleration of axis `axis` after the last `mc_engine_step`, in u/s²; NaN for a NULL, dead
+/// or
+/// poisoned handle or a bad index.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle, used by no other thread during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_axis_set_acceleration(engine: *mut McEngine, axis: McIndex) -> f64 {
     unsafe { set_value(engine, axis, Engine::set_acceleration_of) }
 }
 
-/// State of a group (0 GroupDisabled .. 5 GroupErrorStop), or a negative `MC_STATUS_*` status.
+/// State of axes group `group` (0 GroupDisabled, 1 GroupStandby, 2 GroupMoving, 3 GroupHoming,
+/// 4 GroupStopping, 5 GroupErrorStop), or a negative status: `MC_STATUS_NULL_HANDLE`,
+/// `MC_STATUS_BAD_HANDLE`, `MC_STATUS_PANIC` (poisoned engine), `MC_STATUS_BAD_INDEX`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle, used by no other thread during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_state(engine: *mut McEngine, group: McIndex) -> i32 {
     match unsafe { eng(engine) } {
@@ -399,9 +451,9 @@ pub unsafe extern "C" fn mc_group_state(engine: *mut McEngine, group: McIndex) -
 
 /// Junction speed the BufferMode asked for at a lowered junction the group's path passed in
 /// the last cycle (the limits did not allow it); 0 in every other cycle, for a bad index and for a
-/// NULL, invalid or poisoned handle.
+/// NULL, invalid or poisoned handle. In path units per second (u/s).
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle, used by no other thread during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_junction_requested(engine: *mut McEngine, group: McIndex) -> f64 {
     unsafe { eng(engine) }
@@ -411,9 +463,9 @@ pub unsafe extern "C" fn mc_group_junction_requested(engine: *mut McEngine, grou
 }
 
 /// Junction speed planned and reached at that lowered junction (see
-/// `mc_group_junction_requested`); 0 otherwise.
+/// `mc_group_junction_requested`), u/s; 0 otherwise.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle, used by no other thread during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_junction_reached(engine: *mut McEngine, group: McIndex) -> f64 {
     unsafe { eng(engine) }
@@ -422,9 +474,10 @@ pub unsafe extern "C" fn mc_group_junction_reached(engine: *mut McEngine, group:
         .map_or(0.0, |j| j.1)
 }
 
-/// How many junction speeds of the group were lowered so far (0 for a bad index).
+/// How many junction speeds of the group were lowered so far (0 for a bad index and for a NULL,
+/// invalid or poisoned handle).
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle, used by no other thread during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_reduction_count(engine: *mut McEngine, group: McIndex) -> u32 {
     unsafe { eng(engine) }
@@ -747,18 +800,39 @@ macro_rules! path_block {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_Power_C {
+    /// Enable: TRUE powers the axis (Disabled to Standstill); FALSE disables it: every command is
+    /// aborted and the axis goes to Disabled (an axis in ErrorStop stays there until MC_Reset).
     pub Enable: bool,
+    /// EnablePositive: PLCopen input kept for the interface; the drive interface has no direction
+    /// enable, so it has no effect.
     pub EnablePositive: bool,
+    /// EnableNegative: PLCopen input kept for the interface; the drive interface has no direction
+    /// enable, so it has no effect.
     pub EnableNegative: bool,
+    /// Status: the axis is powered (the drive is enabled; the axis left Disabled).
     pub Status: bool,
+    /// Valid: Status is valid (Enable TRUE and no error).
     pub Valid: bool,
+    /// Error: the power command failed (e.g. an unknown axis); ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
 }
 
-/// Calls MC_Power once (one PLC scan).
+/// Calls MC_Power once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+/// the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_Power_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_power(
     engine: *mut McEngine,
@@ -787,14 +861,30 @@ pub unsafe extern "C" fn mc_power(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_Home_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// Position: the axis's position after homing, in u (a simulated drive homes on the spot: the
+    /// set position becomes Position).
     pub Position: f64,
+    /// BufferMode: not used, homing always starts at once (an unknown value is still refused with
+    /// ErrorID 26); it needs Standstill (ErrorID 14 NotStandstill while the axis moves).
     pub BufferMode: u8,
+    /// Done: homing finished; the axis is back in Standstill at Position.
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -802,9 +892,19 @@ pub struct MC_Home_C {
 
 block_c!(MC_Home_C);
 
-/// Calls MC_Home once (one PLC scan).
+/// Calls MC_Home once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+/// the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_Home_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_home(
     engine: *mut McEngine,
@@ -829,13 +929,27 @@ pub unsafe extern "C" fn mc_home(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_Stop_C {
+    /// Execute: its rising edge starts braking, aborting every command of the axis (also from
+    /// Standstill); while Execute stays TRUE after Done the axis stays Stopping and refuses motion
+    /// commands; its falling edge releases it.
     pub Execute: bool,
+    /// Deceleration: braking rate in u/s², finite and > 0 (else ErrorID 22); capped by the axis's
+    /// deceleration limit and never scaled by the override.
     pub Deceleration: f64,
+    /// Jerk of the braking in u/s³ (>= 0; 0 = the axis's jerk limit, a larger value is capped to
+    /// it).
     pub Jerk: f64,
+    /// Done: the axis reached velocity 0; it stays Stopping (motion commands refused) while Execute
+    /// is TRUE.
     pub Done: bool,
+    /// Busy: the axis is still braking.
     pub Busy: bool,
+    /// CommandAborted: the stop was ended by power-off or an axis error before it finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -846,9 +960,19 @@ block_c!(MC_Stop_C {
     command_aborted: CommandAborted
 });
 
-/// Calls MC_Stop once (one PLC scan).
+/// Calls MC_Stop once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+/// the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_Stop_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_stop(
     engine: *mut McEngine,
@@ -872,15 +996,33 @@ pub unsafe extern "C" fn mc_stop(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_Halt_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// Deceleration: braking rate in u/s², finite and > 0 (else ErrorID 22); capped by the axis's
+    /// deceleration limit.
     pub Deceleration: f64,
+    /// Jerk of the braking in u/s³ (>= 0; 0 = the axis's jerk limit).
     pub Jerk: f64,
+    /// BufferMode: Aborting (0) brakes at once; Buffered (1) halts after the running move ended;
+    /// unknown: ErrorID 26.
     pub BufferMode: u8,
+    /// Done: the axis reached velocity 0 (Standstill); unlike MC_Stop it takes further commands at
+    /// any time.
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -888,9 +1030,19 @@ pub struct MC_Halt_C {
 
 block_c!(MC_Halt_C);
 
-/// Calls MC_Halt once (one PLC scan).
+/// Calls MC_Halt once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+/// the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_Halt_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_halt(
     engine: *mut McEngine,
@@ -916,20 +1068,50 @@ pub unsafe extern "C" fn mc_halt(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveAbsolute_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// ContinuousUpdate: while TRUE and the block Busy, inputs changed since the last call re-plan
+    /// the running command from its current position, velocity and acceleration.
     pub ContinuousUpdate: bool,
+    /// Position: target position in user units (u); on a modulo axis taken modulo the period and
+    /// reached the way Direction says.
     pub Position: f64,
+    /// Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
+    /// ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
     pub Velocity: f64,
+    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+    /// axis's acceleration limit.
     pub Acceleration: f64,
+    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+    /// axis's deceleration limit.
     pub Deceleration: f64,
+    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+    /// larger value is capped to it.
     pub Jerk: f64,
+    /// Direction (modulo axes only): positive (0), shortest way (1), negative (2) or current
+    /// direction (3); ignored on a linear axis; another value gives ErrorID 25 InvalidDirection.
     pub Direction: u8,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// Done: the command finished successfully; stays TRUE while Execute is TRUE (one call if
+    /// Execute is already FALSE).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -937,9 +1119,19 @@ pub struct MC_MoveAbsolute_C {
 
 block_c!(MC_MoveAbsolute_C);
 
-/// Calls MC_MoveAbsolute once (one PLC scan).
+/// Calls MC_MoveAbsolute once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveAbsolute_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_absolute(
     engine: *mut McEngine,
@@ -968,19 +1160,47 @@ pub unsafe extern "C" fn mc_move_absolute(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveRelative_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// ContinuousUpdate: part of the PLCopen interface but not acted on by this block: Distance is
+    /// latched at the rising edge.
     pub ContinuousUpdate: bool,
+    /// Distance in u, added to the set position when the command becomes active (at the rising edge
+    /// when Aborting or on an idle axis, else at the end of its predecessor).
     pub Distance: f64,
+    /// Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
+    /// ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
     pub Velocity: f64,
+    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+    /// axis's acceleration limit.
     pub Acceleration: f64,
+    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+    /// axis's deceleration limit.
     pub Deceleration: f64,
+    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+    /// larger value is capped to it.
     pub Jerk: f64,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// Done: the command finished successfully; stays TRUE while Execute is TRUE (one call if
+    /// Execute is already FALSE).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -988,9 +1208,19 @@ pub struct MC_MoveRelative_C {
 
 block_c!(MC_MoveRelative_C);
 
-/// Calls MC_MoveRelative once (one PLC scan).
+/// Calls MC_MoveRelative once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveRelative_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_relative(
     engine: *mut McEngine,
@@ -1018,19 +1248,46 @@ pub unsafe extern "C" fn mc_move_relative(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveAdditive_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// ContinuousUpdate: part of the PLCopen interface but not acted on by this block: Distance is
+    /// latched at the rising edge.
     pub ContinuousUpdate: bool,
+    /// Distance in u, added to the last commanded target (the running or last buffered command's).
     pub Distance: f64,
+    /// Velocity: largest speed of the move in u/s; finite and non-zero (its magnitude is used, else
+    /// ErrorID 20 InvalidVelocity); above the axis's velocity limit it is capped to it.
     pub Velocity: f64,
+    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+    /// axis's acceleration limit.
     pub Acceleration: f64,
+    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+    /// axis's deceleration limit.
     pub Deceleration: f64,
+    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+    /// larger value is capped to it.
     pub Jerk: f64,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// Done: the command finished successfully; stays TRUE while Execute is TRUE (one call if
+    /// Execute is already FALSE).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1038,9 +1295,19 @@ pub struct MC_MoveAdditive_C {
 
 block_c!(MC_MoveAdditive_C);
 
-/// Calls MC_MoveAdditive once (one PLC scan).
+/// Calls MC_MoveAdditive once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveAdditive_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_additive(
     engine: *mut McEngine,
@@ -1068,19 +1335,47 @@ pub unsafe extern "C" fn mc_move_additive(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveVelocity_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// ContinuousUpdate: while TRUE and the block Busy, inputs changed since the last call re-plan
+    /// the running command from its current position, velocity and acceleration.
     pub ContinuousUpdate: bool,
+    /// Velocity: target speed in u/s, finite and non-zero (else ErrorID 20); its sign times
+    /// Direction gives the direction of travel; capped by the axis's velocity limit.
     pub Velocity: f64,
+    /// Acceleration: u/s², finite and > 0 (else ErrorID 21 InvalidAcceleration); capped by the
+    /// axis's acceleration limit.
     pub Acceleration: f64,
+    /// Deceleration: u/s², finite and > 0 (else ErrorID 22 InvalidDeceleration); capped by the
+    /// axis's deceleration limit.
     pub Deceleration: f64,
+    /// Jerk: u/s³, finite and >= 0 (else ErrorID 23 InvalidJerk); 0 means the axis's jerk limit, a
+    /// larger value is capped to it.
     pub Jerk: f64,
+    /// Direction: positive (0), negative (2) or current (3, the sign of the set velocity); shortest
+    /// way (1) or another value gives ErrorID 25 InvalidDirection. A negative Velocity reverses it.
     pub Direction: u8,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// InVelocity: the set velocity reached the commanded Velocity (while Active); a Buffered
+    /// successor starts after it was shown for one scan.
     pub InVelocity: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1092,9 +1387,19 @@ block_c!(MC_MoveVelocity_C {
     command_aborted: CommandAborted
 });
 
-/// Calls MC_MoveVelocity once (one PLC scan).
+/// Calls MC_MoveVelocity once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveVelocity_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_velocity(
     engine: *mut McEngine,
@@ -1122,10 +1427,18 @@ pub unsafe extern "C" fn mc_move_velocity(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_Reset_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// Done: the reset was carried out: the axis left ErrorStop (to Standstill if powered), or it
+    /// was not in ErrorStop and nothing was done.
     pub Done: bool,
+    /// Busy: always FALSE after the call: the reset completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1133,9 +1446,19 @@ pub struct MC_Reset_C {
 
 block_c!(MC_Reset_C { done: Done });
 
-/// Calls MC_Reset once (one PLC scan).
+/// Calls MC_Reset once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs
+/// the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_Reset_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_reset(
     engine: *mut McEngine,
@@ -1157,17 +1480,36 @@ pub unsafe extern "C" fn mc_reset(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_ReadActualPosition_C {
+    /// Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+    /// the outputs.
     pub Enable: bool,
+    /// Valid: the value outputs are valid (Enable TRUE and no error).
     pub Valid: bool,
+    /// Busy: TRUE while Enable is TRUE and the value is valid.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// Position: the actual position reported by the drive, in u (modulo axes: in [0, period)); 0
+    /// while not Valid.
     pub Position: f64,
 }
 
-/// Calls MC_ReadActualPosition once (one PLC scan).
+/// Calls MC_ReadActualPosition once (one PLC scan) on axis `axis` of `engine`: reads the inputs
+/// from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_ReadActualPosition_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_read_actual_position(
     engine: *mut McEngine,
@@ -1195,17 +1537,35 @@ pub unsafe extern "C" fn mc_read_actual_position(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_ReadActualVelocity_C {
+    /// Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+    /// the outputs.
     pub Enable: bool,
+    /// Valid: the value outputs are valid (Enable TRUE and no error).
     pub Valid: bool,
+    /// Busy: TRUE while Enable is TRUE and the value is valid.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// Velocity: the actual velocity reported by the drive, in u/s; 0 while not Valid.
     pub Velocity: f64,
 }
 
-/// Calls MC_ReadActualVelocity once (one PLC scan).
+/// Calls MC_ReadActualVelocity once (one PLC scan) on axis `axis` of `engine`: reads the inputs
+/// from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_ReadActualVelocity_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_read_actual_velocity(
     engine: *mut McEngine,
@@ -1233,24 +1593,49 @@ pub unsafe extern "C" fn mc_read_actual_velocity(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_ReadStatus_C {
+    /// Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+    /// the outputs.
     pub Enable: bool,
+    /// Valid: the value outputs are valid (Enable TRUE and no error).
     pub Valid: bool,
+    /// Busy: TRUE while Enable is TRUE and the state is valid.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// ErrorStop: the axis is in ErrorStop (an axis error; leave it with MC_Reset).
     pub ErrorStop: bool,
+    /// Disabled: the axis is not powered.
     pub Disabled: bool,
+    /// Stopping: MC_Stop brakes or holds the axis (motion commands are refused).
     pub Stopping: bool,
+    /// Homing: MC_Home is running.
     pub Homing: bool,
+    /// Standstill: the axis is powered and holds its position with no command.
     pub Standstill: bool,
+    /// DiscreteMotion: a positioning move or MC_Halt runs (MoveAbsolute/Relative/Additive, Halt).
     pub DiscreteMotion: bool,
+    /// ContinuousMotion: MC_MoveVelocity runs (or the slave runs on after MC_GearOut/MC_CamOut).
     pub ContinuousMotion: bool,
+    /// SynchronizedMotion: the axis is a geared or cammed slave, or moves as part of an axes group.
     pub SynchronizedMotion: bool,
 }
 
-/// Calls MC_ReadStatus once (one PLC scan).
+/// Calls MC_ReadStatus once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`,
+/// runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_ReadStatus_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_read_status(
     engine: *mut McEngine,
@@ -1285,17 +1670,37 @@ pub unsafe extern "C" fn mc_read_status(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_ReadAxisError_C {
+    /// Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+    /// the outputs.
     pub Enable: bool,
+    /// Valid: the value outputs are valid (Enable TRUE and no error).
     pub Valid: bool,
+    /// Busy: TRUE while Enable is TRUE and AxisErrorID is valid.
     pub Busy: bool,
+    /// Error: the read itself failed (e.g. an unknown axis); ErrorID says why (the axis error is
+    /// AxisErrorID).
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// AxisErrorID: the axis error that put the axis into ErrorStop (100 and above, e.g. 102
+    /// FollowingError); 0 (None) when there is none.
     pub AxisErrorID: u16,
 }
 
-/// Calls MC_ReadAxisError once (one PLC scan).
+/// Calls MC_ReadAxisError once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_ReadAxisError_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_read_axis_error(
     engine: *mut McEngine,
@@ -1323,12 +1728,23 @@ pub unsafe extern "C" fn mc_read_axis_error(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_SetPosition_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// Position: the new set position in u (Relative FALSE) or the shift added to it (Relative
+    /// TRUE); finite, else ErrorID 24 InvalidPosition. Refused while Homing or in ErrorStop.
     pub Position: f64,
+    /// Relative: FALSE = Position becomes the axis's set position; TRUE = Position is added to it
+    /// (a shift of the coordinate origin, no motion).
     pub Relative: bool,
+    /// Done: the coordinate shift was applied (immediately, within the call).
     pub Done: bool,
+    /// Busy: always FALSE after the call: the shift completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1336,9 +1752,19 @@ pub struct MC_SetPosition_C {
 
 block_c!(MC_SetPosition_C { done: Done });
 
-/// Calls MC_SetPosition once (one PLC scan).
+/// Calls MC_SetPosition once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_SetPosition_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_set_position(
     engine: *mut McEngine,
@@ -1362,19 +1788,42 @@ pub unsafe extern "C" fn mc_set_position(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_SetOverride_C {
+    /// Enable: while TRUE the factors are written every call; when it falls the outputs reset and
+    /// the last factors stay in force.
     pub Enable: bool,
+    /// VelFactor: scale of the velocity limit of the running and later moves, >= 0 (0 brakes the
+    /// move to standstill until it rises again); the axis's velocity limit still caps it.
     pub VelFactor: f64,
+    /// AccFactor: scale of the acceleration and deceleration limits, in (0, 1]; 0 stands for 1; out
+    /// of range gives ErrorID 30 InvalidOverride.
     pub AccFactor: f64,
+    /// JerkFactor: scale of the jerk limit, in (0, 1]; 0 stands for 1; out of range gives ErrorID
+    /// 30 InvalidOverride.
     pub JerkFactor: f64,
+    /// Enabled: the factors were accepted and are written every call while Enable is TRUE.
     pub Enabled: bool,
+    /// Busy: TRUE while Enable is TRUE and the factors are accepted.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
 }
 
-/// Calls MC_SetOverride once (one PLC scan).
+/// Calls MC_SetOverride once (one PLC scan) on axis `axis` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `axis` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_SetOverride_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_set_override(
     engine: *mut McEngine,
@@ -1404,20 +1853,48 @@ pub unsafe extern "C" fn mc_set_override(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GearIn_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// ContinuousUpdate: part of the PLCopen interface but not acted on by this block: the ratio is
+    /// latched at the rising edge.
     pub ContinuousUpdate: bool,
+    /// RatioNumerator: numerator of the gear ratio slave/master (finite; negative reverses the
+    /// slave).
     pub RatioNumerator: f64,
+    /// RatioDenominator: denominator of the gear ratio; finite and non-zero, else ErrorID 28
+    /// InvalidRatio.
     pub RatioDenominator: f64,
+    /// MasterValueSource: the master value followed: its set value (0, mcSetValue, the default) or
+    /// its actual value (1, mcActualValue); another value gives ErrorID 32 InvalidMode.
     pub MasterValueSource: u8,
+    /// Acceleration of the catch-up profile that brings the slave onto ratio * master, u/s² (> 0;
+    /// capped by the slave's limits less the master's share).
     pub Acceleration: f64,
+    /// Deceleration of the catch-up profile, u/s² (> 0).
     pub Deceleration: f64,
+    /// Jerk of the catch-up profile, u/s³ (>= 0; 0 = the slave's jerk limit).
     pub Jerk: f64,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// InGear: the slave's catch-up profile ended and it follows ratio * master (on the set value,
+    /// while Active).
     pub InGear: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1429,9 +1906,20 @@ block_c!(MC_GearIn_C {
     command_aborted: CommandAborted
 });
 
-/// Calls MC_GearIn once (one PLC scan).
+/// Calls MC_GearIn once (one PLC scan) on master axis `master` and slave axis `slave` of `engine`:
+/// reads the inputs from `*fb`, runs the block and writes its outputs and `_internal` back to
+/// `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `master` or `slave` is not an axis of the engine (the outputs are
+/// still written: the block reports the bad index through Error/ErrorID when it acts);
+/// `MC_STATUS_PANIC` after a panic (the engine is poisoned). PLCopen errors of the block itself are
+/// in `fb->ErrorID`, not in the status. Call it from the one thread that drives `engine` (normally
+/// the PLC scan task), once per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GearIn_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_gear_in(
     engine: *mut McEngine,
@@ -1464,10 +1952,18 @@ pub unsafe extern "C" fn mc_gear_in(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GearOut_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error and ErrorID.
     pub Execute: bool,
+    /// Done: the slave was decoupled; it runs on at its current velocity (ContinuousMotion).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1475,9 +1971,19 @@ pub struct MC_GearOut_C {
 
 block_c!(MC_GearOut_C { done: Done });
 
-/// Calls MC_GearOut once (one PLC scan).
+/// Calls MC_GearOut once (one PLC scan) on slave axis `slave` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `slave` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GearOut_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_gear_out(
     engine: *mut McEngine,
@@ -1499,10 +2005,18 @@ pub unsafe extern "C" fn mc_gear_out(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_CamOut_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error and ErrorID.
     pub Execute: bool,
+    /// Done: the slave was decoupled; it runs on at its current velocity (ContinuousMotion).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1510,9 +2024,19 @@ pub struct MC_CamOut_C {
 
 block_c!(MC_CamOut_C { done: Done });
 
-/// Calls MC_CamOut once (one PLC scan).
+/// Calls MC_CamOut once (one PLC scan) on slave axis `slave` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `slave` is not an axis of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_CamOut_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_cam_out(
     engine: *mut McEngine,
@@ -1534,15 +2058,30 @@ pub unsafe extern "C" fn mc_cam_out(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_CamTableSelect_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// CamTable: the CAM_REF, the index `mc_engine_add_cam_table` (Rust: `Engine::add_cam_table`)
+    /// returned.
     pub CamTable: u32,
+    /// Periodic: PLCopen input kept for the interface; the cam's periodicity is MC_CamIn's Periodic
+    /// input here.
     pub Periodic: bool,
+    /// MasterAbsolute: PLCopen input kept for the interface; MC_CamIn's MasterAbsolute input is
+    /// used.
     pub MasterAbsolute: bool,
+    /// SlaveAbsolute: PLCopen input kept for the interface; MC_CamIn's SlaveAbsolute input is used.
     pub SlaveAbsolute: bool,
+    /// Done: the table and both axes exist; CamTableID is valid.
     pub Done: bool,
+    /// Busy: always FALSE after the call: the command completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// CamTableID: the checked table, to be given to MC_CamIn; set when Done.
     pub CamTableID: u32,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1550,9 +2089,20 @@ pub struct MC_CamTableSelect_C {
 
 block_c!(MC_CamTableSelect_C { done: Done });
 
-/// Calls MC_CamTableSelect once (one PLC scan).
+/// Calls MC_CamTableSelect once (one PLC scan) on master axis `master` and slave axis `slave` of
+/// `engine`: reads the inputs from `*fb`, runs the block and writes its outputs and `_internal`
+/// back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `master` or `slave` is not an axis of the engine (the outputs are
+/// still written: the block reports the bad index through Error/ErrorID when it acts);
+/// `MC_STATUS_PANIC` after a panic (the engine is poisoned). PLCopen errors of the block itself are
+/// in `fb->ErrorID`, not in the status. Call it from the one thread that drives `engine` (normally
+/// the PLC scan task), once per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_CamTableSelect_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_cam_table_select(
     engine: *mut McEngine,
@@ -1582,24 +2132,60 @@ pub unsafe extern "C" fn mc_cam_table_select(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_CamIn_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// ContinuousUpdate: part of the PLCopen interface but not acted on by this block: the inputs
+    /// are latched at the rising edge.
     pub ContinuousUpdate: bool,
+    /// MasterOffset: subtracted from the master position before the table look-up, in u (table x =
+    /// (master - MasterOffset) * MasterScaling).
     pub MasterOffset: f64,
+    /// SlaveOffset: added to the table's slave value, in u (slave = SlaveScaling * y +
+    /// SlaveOffset).
     pub SlaveOffset: f64,
+    /// MasterScaling: factor on the master position before the table look-up; 0 stands for 1.
     pub MasterScaling: f64,
+    /// SlaveScaling: factor on the table's slave value; 0 stands for 1.
     pub SlaveScaling: f64,
+    /// MasterValueSource: the master value followed: its set value (0, mcSetValue, the default) or
+    /// its actual value (1, mcActualValue); another value gives ErrorID 32 InvalidMode.
     pub MasterValueSource: u8,
+    /// CamTableID: the table to follow, as returned by MC_CamTableSelect (unknown: ErrorID 3
+    /// InvalidCamTable).
     pub CamTableID: u32,
+    /// Periodic: TRUE repeats the table (each period the slave advances by the table's rise and
+    /// EndOfProfile pulses); FALSE holds the table's ends beyond its master range.
     pub Periodic: bool,
+    /// MasterAbsolute: TRUE looks the table up with the master's absolute position; FALSE with the
+    /// distance the master travelled since coupling.
     pub MasterAbsolute: bool,
+    /// SlaveAbsolute: TRUE the table gives the slave's absolute position; FALSE a position relative
+    /// to where the slave was at coupling.
     pub SlaveAbsolute: bool,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// InSync: the slave's catch-up profile ended and it follows the cam law (on the set value,
+    /// while Active).
     pub InSync: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// EndOfProfile: TRUE in the cycle the master passes the end of the table (Periodic: each
+    /// period boundary), while Active.
     pub EndOfProfile: bool,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1612,9 +2198,20 @@ block_c!(MC_CamIn_C {
     end_of_profile: EndOfProfile
 });
 
-/// Calls MC_CamIn once (one PLC scan).
+/// Calls MC_CamIn once (one PLC scan) on master axis `master` and slave axis `slave` of `engine`:
+/// reads the inputs from `*fb`, runs the block and writes its outputs and `_internal` back to
+/// `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `master` or `slave` is not an axis of the engine (the outputs are
+/// still written: the block reports the bad index through Error/ErrorID when it acts);
+/// `MC_STATUS_PANIC` after a panic (the engine is poisoned). PLCopen errors of the block itself are
+/// in `fb->ErrorID`, not in the status. Call it from the one thread that drives `engine` (normally
+/// the PLC scan task), once per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_CamIn_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_cam_in(
     engine: *mut McEngine,
@@ -1650,12 +2247,22 @@ pub unsafe extern "C" fn mc_cam_in(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_AddAxisToGroup_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// The axis to add (its index in the engine; unknown: ErrorID 1 InvalidAxis).
     pub Axis: u32,
+    /// IdentInGroup: the axis's identity in the group, 0..15 (X, Y, Z, A, ...;
+    /// `path::IDENT_NAMES`); out of range or already used gives ErrorID 55.
     pub IdentInGroup: u32,
+    /// Done: the axis was added to the group (only in GroupDisabled).
     pub Done: bool,
+    /// Busy: always FALSE after the call: the command completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1663,9 +2270,19 @@ pub struct MC_AddAxisToGroup_C {
 
 block_c!(MC_AddAxisToGroup_C { done: Done });
 
-/// Calls MC_AddAxisToGroup once (one PLC scan).
+/// Calls MC_AddAxisToGroup once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+/// from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_AddAxisToGroup_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_add_axis_to_group(
     engine: *mut McEngine,
@@ -1689,11 +2306,20 @@ pub unsafe extern "C" fn mc_add_axis_to_group(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_RemoveAxisFromGroup_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// IdentInGroup: identity (0..15) of the axis to remove; an identity with no axis gives ErrorID
+    /// 57 AxisNotInGroup.
     pub IdentInGroup: u32,
+    /// Done: the axis was removed from the group (only in GroupDisabled).
     pub Done: bool,
+    /// Busy: always FALSE after the call: the command completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1701,9 +2327,19 @@ pub struct MC_RemoveAxisFromGroup_C {
 
 block_c!(MC_RemoveAxisFromGroup_C { done: Done });
 
-/// Calls MC_RemoveAxisFromGroup once (one PLC scan).
+/// Calls MC_RemoveAxisFromGroup once (one PLC scan) on axes group `group` of `engine`: reads the
+/// inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_RemoveAxisFromGroup_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_remove_axis_from_group(
     engine: *mut McEngine,
@@ -1726,10 +2362,17 @@ pub unsafe extern "C" fn mc_remove_axis_from_group(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_UngroupAllAxes_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// Done: every axis left the group; the group is GroupDisabled.
     pub Done: bool,
+    /// Busy: always FALSE after the call: the command completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1737,9 +2380,19 @@ pub struct MC_UngroupAllAxes_C {
 
 block_c!(MC_UngroupAllAxes_C { done: Done });
 
-/// Calls MC_UngroupAllAxes once (one PLC scan).
+/// Calls MC_UngroupAllAxes once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+/// from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_UngroupAllAxes_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_ungroup_all_axes(
     engine: *mut McEngine,
@@ -1761,10 +2414,17 @@ pub unsafe extern "C" fn mc_ungroup_all_axes(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupEnable_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// Done: the group went to GroupStandby (every axis powered and in Standstill).
     pub Done: bool,
+    /// Busy: always FALSE after the call: the command completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1772,9 +2432,19 @@ pub struct MC_GroupEnable_C {
 
 block_c!(MC_GroupEnable_C { done: Done });
 
-/// Calls MC_GroupEnable once (one PLC scan).
+/// Calls MC_GroupEnable once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+/// from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupEnable_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_enable(
     engine: *mut McEngine,
@@ -1796,10 +2466,17 @@ pub unsafe extern "C" fn mc_group_enable(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupDisable_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// Done: the group went to GroupDisabled.
     pub Done: bool,
+    /// Busy: always FALSE after the call: the command completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1807,9 +2484,19 @@ pub struct MC_GroupDisable_C {
 
 block_c!(MC_GroupDisable_C { done: Done });
 
-/// Calls MC_GroupDisable once (one PLC scan).
+/// Calls MC_GroupDisable once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+/// from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupDisable_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_disable(
     engine: *mut McEngine,
@@ -1831,10 +2518,17 @@ pub unsafe extern "C" fn mc_group_disable(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupReset_C {
+    /// Execute: its rising edge carries out the command within this call; Done or Error then show
+    /// while Execute stays TRUE (for one call if it already fell).
     pub Execute: bool,
+    /// Done: the group left GroupErrorStop for GroupStandby (or was not in an error).
     pub Done: bool,
+    /// Busy: always FALSE after the call: the command completes within the call.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1842,9 +2536,19 @@ pub struct MC_GroupReset_C {
 
 block_c!(MC_GroupReset_C { done: Done });
 
-/// Calls MC_GroupReset once (one PLC scan).
+/// Calls MC_GroupReset once (one PLC scan) on axes group `group` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupReset_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_reset(
     engine: *mut McEngine,
@@ -1866,13 +2570,25 @@ pub unsafe extern "C" fn mc_group_reset(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupStop_C {
+    /// Execute: its rising edge starts braking, aborting every command of the group (also from
+    /// Standstill); while Execute stays TRUE after Done the group stays GroupStopping and refuses
+    /// motion commands; its falling edge releases it.
     pub Execute: bool,
+    /// Deceleration: path braking rate in u/s², finite and > 0 (else ErrorID 22).
     pub Deceleration: f64,
+    /// Jerk of the path braking in u/s³ (>= 0; 0 = the axes' jerk limit).
     pub Jerk: f64,
+    /// Done: the group reached path velocity 0; it stays GroupStopping (motion commands refused)
+    /// while Execute is TRUE.
     pub Done: bool,
+    /// Busy: the group is still braking.
     pub Busy: bool,
+    /// CommandAborted: the stop was ended by an axis error or a disable before it finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1883,9 +2599,19 @@ block_c!(MC_GroupStop_C {
     command_aborted: CommandAborted
 });
 
-/// Calls MC_GroupStop once (one PLC scan).
+/// Calls MC_GroupStop once (one PLC scan) on axes group `group` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupStop_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_stop(
     engine: *mut McEngine,
@@ -1909,14 +2635,30 @@ pub unsafe extern "C" fn mc_group_stop(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupHome_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// Position per identity (IdentInGroup), in u: each axis's set position after homing (simulated
+    /// drives home on the spot).
     pub Position: [f64; 16],
+    /// BufferMode: not used, group homing always starts at once (an unknown value is still refused
+    /// with ErrorID 26); it needs GroupStandby.
     pub BufferMode: u8,
+    /// Done: every axis of the group homed; the group is back in GroupStandby.
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1924,9 +2666,19 @@ pub struct MC_GroupHome_C {
 
 block_c!(MC_GroupHome_C);
 
-/// Calls MC_GroupHome once (one PLC scan).
+/// Calls MC_GroupHome once (one PLC scan) on axes group `group` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupHome_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_home(
     engine: *mut McEngine,
@@ -1951,15 +2703,31 @@ pub unsafe extern "C" fn mc_group_home(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupHalt_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// Deceleration: path braking rate in u/s², finite and > 0 (else ErrorID 22).
     pub Deceleration: f64,
+    /// Jerk of the path braking in u/s³ (>= 0; 0 = the axes' jerk limit).
     pub Jerk: f64,
+    /// BufferMode: Aborting (0) brakes at once; Buffered (1) brakes after the running move ended
+    /// (which is then at rest); unknown: ErrorID 26.
     pub BufferMode: u8,
+    /// Done: the group reached path velocity 0 (GroupStandby).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -1967,9 +2735,19 @@ pub struct MC_GroupHalt_C {
 
 block_c!(MC_GroupHalt_C);
 
-/// Calls MC_GroupHalt once (one PLC scan).
+/// Calls MC_GroupHalt once (one PLC scan) on axes group `group` of `engine`: reads the inputs from
+/// `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupHalt_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_halt(
     engine: *mut McEngine,
@@ -1995,21 +2773,54 @@ pub unsafe extern "C" fn mc_group_halt(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveLinearAbsolute_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// Position: end point per identity (IdentInGroup: X, Y, Z, ...), in u; entries of identities
+    /// with no axis in the group are ignored.
     pub Position: [f64; 16],
+    /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+    /// axes' limits projected onto the path.
     pub Velocity: f64,
+    /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+    /// the axes' limits.
     pub Acceleration: f64,
+    /// Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+    /// the axes' limits.
     pub Deceleration: f64,
+    /// Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
     pub Jerk: f64,
+    /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+    /// value gives ErrorID 61 InvalidCoordSystem.
     pub CoordSystem: u8,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+    /// TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+    /// TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+    /// InvalidTransitionMode.
     pub TransitionMode: u8,
+    /// TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+    /// the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+    /// capped at half of either line.
     pub TransitionParameter: f64,
+    /// Done: the end point was reached (set value).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -2017,9 +2828,19 @@ pub struct MC_MoveLinearAbsolute_C {
 
 block_c!(MC_MoveLinearAbsolute_C);
 
-/// Calls MC_MoveLinearAbsolute once (one PLC scan).
+/// Calls MC_MoveLinearAbsolute once (one PLC scan) on axes group `group` of `engine`: reads the
+/// inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveLinearAbsolute_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_linear_absolute(
     engine: *mut McEngine,
@@ -2046,21 +2867,54 @@ pub unsafe extern "C" fn mc_move_linear_absolute(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveLinearRelative_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// Distance per identity, in u, added to the group's last commanded point; entries of absent
+    /// identities are ignored.
     pub Distance: [f64; 16],
+    /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+    /// axes' limits projected onto the path.
     pub Velocity: f64,
+    /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+    /// the axes' limits.
     pub Acceleration: f64,
+    /// Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+    /// the axes' limits.
     pub Deceleration: f64,
+    /// Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
     pub Jerk: f64,
+    /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+    /// value gives ErrorID 61 InvalidCoordSystem.
     pub CoordSystem: u8,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+    /// TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+    /// TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+    /// InvalidTransitionMode.
     pub TransitionMode: u8,
+    /// TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+    /// the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+    /// capped at half of either line.
     pub TransitionParameter: f64,
+    /// Done: the end point was reached (set value).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -2068,9 +2922,19 @@ pub struct MC_MoveLinearRelative_C {
 
 block_c!(MC_MoveLinearRelative_C);
 
-/// Calls MC_MoveLinearRelative once (one PLC scan).
+/// Calls MC_MoveLinearRelative once (one PLC scan) on axes group `group` of `engine`: reads the
+/// inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveLinearRelative_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_linear_relative(
     engine: *mut McEngine,
@@ -2097,21 +2961,55 @@ pub unsafe extern "C" fn mc_move_linear_relative(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveDirectAbsolute_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// Position: end point per identity, in u; each axis moves there on its own profile (absent
+    /// identities ignored).
     pub Position: [f64; 16],
+    /// Velocity: largest speed of each axis, u/s (finite and > 0, else ErrorID 20; capped per axis
+    /// by its limit).
     pub Velocity: f64,
+    /// Acceleration of each axis, u/s² (finite and > 0, else ErrorID 21; capped per axis by its
+    /// limit).
     pub Acceleration: f64,
+    /// Deceleration of each axis, u/s² (finite and > 0, else ErrorID 22; capped per axis by its
+    /// limit).
     pub Deceleration: f64,
+    /// Jerk of each axis, u/s³ (finite and >= 0, else ErrorID 23; 0 = each axis's own limit; capped
+    /// per axis).
     pub Jerk: f64,
+    /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+    /// value gives ErrorID 61 InvalidCoordSystem.
     pub CoordSystem: u8,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+    /// TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+    /// TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+    /// InvalidTransitionMode.
     pub TransitionMode: u8,
+    /// TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+    /// the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+    /// capped at half of either line.
     pub TransitionParameter: f64,
+    /// Done: every axis reached its end point (set value).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -2119,9 +3017,19 @@ pub struct MC_MoveDirectAbsolute_C {
 
 block_c!(MC_MoveDirectAbsolute_C);
 
-/// Calls MC_MoveDirectAbsolute once (one PLC scan).
+/// Calls MC_MoveDirectAbsolute once (one PLC scan) on axes group `group` of `engine`: reads the
+/// inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveDirectAbsolute_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_direct_absolute(
     engine: *mut McEngine,
@@ -2148,24 +3056,62 @@ pub unsafe extern "C" fn mc_move_direct_absolute(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveCircularAbsolute_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// CircMode: how AuxPoint defines the circle: BORDER (0), CENTER (1) or RADIUS (2); another
+    /// value gives ErrorID 60 InvalidCircle.
     pub CircMode: u8,
+    /// AuxPoint: per identity, in u: BORDER a point on the arc between start and end, CENTER the
+    /// centre (X/Y plane), RADIUS the normal vector of the circle's plane, its length the radius.
     pub AuxPoint: [f64; 16],
+    /// EndPoint: end point of the arc per identity (X/Y/Z on the arc, other axes linear), in u.
     pub EndPoint: [f64; 16],
+    /// PathChoice (CENTER and RADIUS): MC_CLOCKWISE (0) or MC_COUNTER_CLOCKWISE (1); another value
+    /// gives ErrorID 25 InvalidDirection. Ignored for BORDER.
     pub PathChoice: u8,
+    /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+    /// axes' limits projected onto the path.
     pub Velocity: f64,
+    /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+    /// the axes' limits.
     pub Acceleration: f64,
+    /// Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+    /// the axes' limits.
     pub Deceleration: f64,
+    /// Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
     pub Jerk: f64,
+    /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+    /// value gives ErrorID 61 InvalidCoordSystem.
     pub CoordSystem: u8,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+    /// TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+    /// TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+    /// InvalidTransitionMode.
     pub TransitionMode: u8,
+    /// TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+    /// the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+    /// capped at half of either line.
     pub TransitionParameter: f64,
+    /// Done: the end point of the arc was reached (set value).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -2173,9 +3119,19 @@ pub struct MC_MoveCircularAbsolute_C {
 
 block_c!(MC_MoveCircularAbsolute_C);
 
-/// Calls MC_MoveCircularAbsolute once (one PLC scan).
+/// Calls MC_MoveCircularAbsolute once (one PLC scan) on axes group `group` of `engine`: reads the
+/// inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveCircularAbsolute_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_circular_absolute(
     engine: *mut McEngine,
@@ -2195,24 +3151,63 @@ pub unsafe extern "C" fn mc_move_circular_absolute(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_MoveCircularRelative_C {
+    /// Execute: its rising edge (FALSE to TRUE between two calls) latches the inputs and issues the
+    /// command; a rising edge while Busy is ignored. Its falling edge never stops a motion, it only
+    /// resets Done, Error, ErrorID and CommandAborted.
     pub Execute: bool,
+    /// CircMode: how AuxPoint defines the circle: BORDER (0), CENTER (1) or RADIUS (2); another
+    /// value gives ErrorID 60 InvalidCircle.
     pub CircMode: u8,
+    /// AuxPoint per identity, in u, relative to the start point: BORDER a point on the arc, CENTER
+    /// the centre (X/Y plane); RADIUS the normal vector of the circle's plane (never relative), its
+    /// length the radius.
     pub AuxPoint: [f64; 16],
+    /// EndPoint: end of the arc relative to the start point, per identity, in u.
     pub EndPoint: [f64; 16],
+    /// PathChoice (CENTER and RADIUS): MC_CLOCKWISE (0) or MC_COUNTER_CLOCKWISE (1); another value
+    /// gives ErrorID 25 InvalidDirection. Ignored for BORDER.
     pub PathChoice: u8,
+    /// Velocity: largest path speed, u/s; finite and > 0 (else ErrorID 20); further limited by the
+    /// axes' limits projected onto the path.
     pub Velocity: f64,
+    /// Acceleration: path acceleration, u/s², finite and > 0 (else ErrorID 21); further limited by
+    /// the axes' limits.
     pub Acceleration: f64,
+    /// Deceleration: path deceleration, u/s², finite and > 0 (else ErrorID 22); further limited by
+    /// the axes' limits.
     pub Deceleration: f64,
+    /// Jerk: path jerk, u/s³, finite and >= 0 (else ErrorID 23); 0 = the axes' jerk limit.
     pub Jerk: f64,
+    /// CoordSystem: 0 ACS or 1 MCS (both are the axes' own coordinates in this library); another
+    /// value gives ErrorID 61 InvalidCoordSystem.
     pub CoordSystem: u8,
+    /// BufferMode: when the command starts relative to the one running: Aborting (0, at once),
+    /// Buffered (1, after the predecessor finished) or BlendingLow/Previous/Next/High (2..5,
+    /// without stopping at the junction); another value gives ErrorID 26 InvalidBufferMode.
     pub BufferMode: u8,
+    /// TransitionMode: the curve joining this move to its predecessor under a blending BufferMode:
+    /// TMNone (0, through the corner), TMCornerDistance (3) or TMMaxCornerDeviation (4);
+    /// TMStartVelocity (1), TMConstantVelocity (2) and values above 4 give ErrorID 59
+    /// InvalidTransitionMode.
     pub TransitionMode: u8,
+    /// TransitionParameter: for TMCornerDistance the corner distance d, for TMMaxCornerDeviation
+    /// the largest distance e the path may pass from the corner, in u (>= 0, else ErrorID 59);
+    /// capped at half of either line.
     pub TransitionParameter: f64,
+    /// Done: the end point of the arc was reached (set value).
     pub Done: bool,
+    /// Busy: the command was accepted and has not finished (queued in the buffer or running).
     pub Busy: bool,
+    /// Active: this block's command controls the axis now (a buffered one is Busy but not yet
+    /// Active).
     pub Active: bool,
+    /// CommandAborted: another command (an Aborting block, MC_Stop, power-off or an axis error)
+    /// took over before this one finished.
     pub CommandAborted: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
     /// Private state: zero-initialise, never write.
     pub _internal: [u64; 2],
@@ -2220,9 +3215,19 @@ pub struct MC_MoveCircularRelative_C {
 
 block_c!(MC_MoveCircularRelative_C);
 
-/// Calls MC_MoveCircularRelative once (one PLC scan).
+/// Calls MC_MoveCircularRelative once (one PLC scan) on axes group `group` of `engine`: reads the
+/// inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_MoveCircularRelative_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_move_circular_relative(
     engine: *mut McEngine,
@@ -2242,18 +3247,39 @@ pub unsafe extern "C" fn mc_move_circular_relative(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupReadActualPosition_C {
+    /// Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+    /// the outputs.
     pub Enable: bool,
+    /// CoordSystem: kept for the PLCopen interface; positions are always the axes' own coordinates
+    /// (ACS = MCS here).
     pub CoordSystem: u8,
+    /// Valid: the value outputs are valid (Enable TRUE and no error).
     pub Valid: bool,
+    /// Busy: TRUE while Enable is TRUE and the values are valid.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// Position per identity, in u (the set positions; the simulated drives follow them exactly);
+    /// zeros for absent identities.
     pub Position: [f64; 16],
 }
 
-/// Calls MC_GroupReadActualPosition once (one PLC scan).
+/// Calls MC_GroupReadActualPosition once (one PLC scan) on axes group `group` of `engine`: reads
+/// the inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupReadActualPosition_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_read_actual_position(
     engine: *mut McEngine,
@@ -2282,19 +3308,40 @@ pub unsafe extern "C" fn mc_group_read_actual_position(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupReadActualVelocity_C {
+    /// Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+    /// the outputs.
     pub Enable: bool,
+    /// CoordSystem: kept for the PLCopen interface; velocities are always in the axes' own
+    /// coordinates (ACS = MCS here).
     pub CoordSystem: u8,
+    /// Valid: the value outputs are valid (Enable TRUE and no error).
     pub Valid: bool,
+    /// Busy: TRUE while Enable is TRUE and the values are valid.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// Velocity per identity, in u/s; zeros for absent identities.
     pub Velocity: [f64; 16],
+    /// PathVelocity: the speed along the path, u/s (>= 0).
     pub PathVelocity: f64,
 }
 
-/// Calls MC_GroupReadActualVelocity once (one PLC scan).
+/// Calls MC_GroupReadActualVelocity once (one PLC scan) on axes group `group` of `engine`: reads
+/// the inputs from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupReadActualVelocity_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_read_actual_velocity(
     engine: *mut McEngine,
@@ -2324,22 +3371,46 @@ pub unsafe extern "C" fn mc_group_read_actual_velocity(
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default)]
 pub struct MC_GroupReadStatus_C {
+    /// Enable: while TRUE the block works and its outputs are refreshed every call; FALSE resets
+    /// the outputs.
     pub Enable: bool,
+    /// Valid: the value outputs are valid (Enable TRUE and no error).
     pub Valid: bool,
+    /// Busy: TRUE while Enable is TRUE and the state is valid.
     pub Busy: bool,
+    /// Error: the command was refused or failed; ErrorID says why.
     pub Error: bool,
+    /// ErrorID: why Error is TRUE (1..99 block errors, 100 and above axis errors; the README's
+    /// ErrorID table, `MC_ERR_*`); 0 (MC_ERR_NONE) while there is no error.
     pub ErrorID: u16,
+    /// GroupMoving: a group motion (line, circle, direct move, halt) runs.
     pub GroupMoving: bool,
+    /// GroupHoming: MC_GroupHome runs.
     pub GroupHoming: bool,
+    /// GroupErrorStop: the group is in GroupErrorStop (an axis of it failed; leave it with
+    /// MC_GroupReset).
     pub GroupErrorStop: bool,
+    /// GroupStandby: the group is enabled and stands still with no command.
     pub GroupStandby: bool,
+    /// GroupStopping: MC_GroupStop brakes or holds the group.
     pub GroupStopping: bool,
+    /// GroupDisabled: the group is not enabled (axes may be added or removed).
     pub GroupDisabled: bool,
 }
 
-/// Calls MC_GroupReadStatus once (one PLC scan).
+/// Calls MC_GroupReadStatus once (one PLC scan) on axes group `group` of `engine`: reads the inputs
+/// from `*fb`, runs the block and writes its outputs and `_internal` back to `*fb`.
+///
+/// Returns `MC_OK`; `MC_STATUS_NULL_HANDLE` or `MC_STATUS_BAD_HANDLE` for a NULL or dead `engine`
+/// and `MC_STATUS_NULL_ARGUMENT` for a NULL `fb` (then nothing is read or written);
+/// `MC_STATUS_BAD_INDEX` when `group` is not a group of the engine (the outputs are still written:
+/// the block reports the bad index through Error/ErrorID when it acts); `MC_STATUS_PANIC` after a
+/// panic (the engine is poisoned). PLCopen errors of the block itself are in `fb->ErrorID`, not in
+/// the status. Call it from the one thread that drives `engine` (normally the PLC scan task), once
+/// per scan and before `mc_engine_step`.
 /// # Safety
-/// See the module contract: pointers are NULL or valid.
+/// `engine` is NULL or a live handle from `mc_engine_create`; `fb` is NULL or points to a valid,
+/// writable `MC_GroupReadStatus_C` that nothing else accesses during the call.
 #[no_mangle]
 pub unsafe extern "C" fn mc_group_read_status(
     engine: *mut McEngine,
@@ -2370,31 +3441,40 @@ pub unsafe extern "C" fn mc_group_read_status(
 
 // ---- constants (emitted as #define by cbindgen) ----
 
-/// MC_BUFFER_MODE value.
+/// BufferMode mcAborting: starts at once from the current state; the running and every buffered
+/// command get CommandAborted.
 pub const MC_ABORTING: u8 = 0;
-/// MC_BUFFER_MODE value.
+/// BufferMode mcBuffered: starts when the predecessor finished (Done; InVelocity, InGear, InSync
+/// for continuous ones).
 pub const MC_BUFFERED: u8 = 1;
-/// MC_BUFFER_MODE value.
+/// BufferMode mcBlendingLow: no stop between the moves; the junction speed is the lower of the two
+/// velocities.
 pub const MC_BLENDING_LOW: u8 = 2;
-/// MC_BUFFER_MODE value.
+/// BufferMode mcBlendingPrevious: no stop between the moves; the junction speed is the
+/// predecessor's velocity.
 pub const MC_BLENDING_PREVIOUS: u8 = 3;
-/// MC_BUFFER_MODE value.
+/// BufferMode mcBlendingNext: no stop between the moves; the junction speed is the successor's
+/// velocity.
 pub const MC_BLENDING_NEXT: u8 = 4;
-/// MC_BUFFER_MODE value.
+/// BufferMode mcBlendingHigh: no stop between the moves; the junction speed is the higher of the
+/// two velocities.
 pub const MC_BLENDING_HIGH: u8 = 5;
-/// MC_DIRECTION value.
+/// Direction mcPositiveDirection: modulo targets reached moving forward; MC_MoveVelocity forward.
 pub const MC_POSITIVE_DIRECTION: u8 = 0;
-/// MC_DIRECTION value.
+/// Direction mcShortestWay: the shorter way round a modulo axis (MC_MoveVelocity refuses it:
+/// ErrorID 25).
 pub const MC_SHORTEST_WAY: u8 = 1;
-/// MC_DIRECTION value.
+/// Direction mcNegativeDirection: modulo targets reached moving backward; MC_MoveVelocity backward.
 pub const MC_NEGATIVE_DIRECTION: u8 = 2;
-/// MC_DIRECTION value.
+/// Direction mcCurrentDirection: keeps the direction the axis moves in (forward from rest).
 pub const MC_CURRENT_DIRECTION: u8 = 3;
-/// MC_TRANSITION_MODE value.
+/// TransitionMode TMNone: no transition curve; at a real corner the path stops (junction speed 0).
 pub const MC_TM_NONE: u8 = 0;
-/// MC_TRANSITION_MODE value.
+/// TransitionMode TMCornerDistance: a clothoid blend leaving the path TransitionParameter (u)
+/// before the corner.
 pub const MC_TM_CORNER_DISTANCE: u8 = 3;
-/// MC_TRANSITION_MODE TMMaxCornerDeviation.
+/// TransitionMode TMMaxCornerDeviation: the same blend, passing at most TransitionParameter (u)
+/// from the corner.
 pub const MC_TM_MAX_CORNER_DEVIATION: u8 = 4;
 /// MC_CIRC_MODE BORDER (AuxPoint on the arc).
 pub const MC_CIRC_BORDER: u8 = 0;
@@ -2406,7 +3486,7 @@ pub const MC_CIRC_RADIUS: u8 = 2;
 pub const MC_CLOCKWISE: u8 = 0;
 /// MC_CIRC_PATHCHOICE counter-clockwise.
 pub const MC_COUNTER_CLOCKWISE: u8 = 1;
-/// ErrorID 0: None
+/// ErrorID 0: no error.
 pub const MC_ERR_NONE: u16 = 0;
 /// ErrorID 1: The axis index does not name an axis of the engine.
 pub const MC_ERR_INVALID_AXIS: u16 = 1;

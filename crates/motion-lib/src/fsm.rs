@@ -12,13 +12,25 @@ use crate::error::ErrorId;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum AxisState {
     #[default]
+    /// Not powered (MC_Power.Enable FALSE); the start state. Motion commands are refused (ErrorID 10).
     Disabled = 0,
+    /// Powered, no motion command; every motion command and MC_Home may start here.
     Standstill = 1,
+    /// MC_Home runs; back to Standstill when it ends.
     Homing = 2,
+    /// A positioning move (MoveAbsolute, MoveRelative, MoveAdditive) or MC_Halt runs; Standstill
+    /// when it ends.
     DiscreteMotion = 3,
+    /// MC_MoveVelocity runs (never ends by itself), or a slave runs on after MC_GearOut /
+    /// MC_CamOut.
     ContinuousMotion = 4,
+    /// A geared or cammed slave (MC_GearIn, MC_CamIn), or a member of a moving axes group.
     SynchronizedMotion = 5,
+    /// MC_Stop brakes the axis or holds it (while its Execute is TRUE); motion commands are refused
+    /// (ErrorID 12).
     Stopping = 6,
+    /// An axis error: the axis brakes with its own limits and refuses commands (ErrorID 11) until
+    /// MC_Reset.
     ErrorStop = 7,
 }
 
@@ -27,11 +39,18 @@ pub enum AxisState {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum GroupState {
     #[default]
+    /// The group is not enabled (the start state); axes are added and removed only here.
     GroupDisabled = 0,
+    /// Enabled, no group motion; its axes refuse single-axis motion (ErrorID 16).
     GroupStandby = 1,
+    /// A group move (line, circle, direct move, halt) runs; the axes are in SynchronizedMotion.
     GroupMoving = 2,
+    /// MC_GroupHome runs; GroupStandby when every axis homed.
     GroupHoming = 3,
+    /// MC_GroupStop brakes or holds the group; motion commands are refused (ErrorID 52).
     GroupStopping = 4,
+    /// An axis of the group failed or lost power: the path brakes; MC_GroupReset returns to
+    /// GroupStandby.
     GroupErrorStop = 5,
 }
 

@@ -20,19 +20,35 @@ use crate::profile::{Limits, Profile, State};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum GroupMotion {
     /// MC_MoveLinearAbsolute (positions per identity; entries of absent identities ignored).
-    LinearAbsolute { position: Vecn },
+    LinearAbsolute {
+        /// End point per identity, u.
+        position: Vecn,
+    },
     /// MC_MoveLinearRelative.
-    LinearRelative { distance: Vecn },
+    LinearRelative {
+        /// Distance per identity, u, from the group's last commanded point.
+        distance: Vecn,
+    },
     /// MC_MoveCircularAbsolute / Relative (relative: aux and end relative to the start).
     Circular {
+        /// How `aux` defines the circle (BORDER, CENTER, RADIUS).
         mode: CircMode,
+        /// AuxPoint per identity (a point on the arc, the centre, or the plane normal with the
+        /// radius as length).
         aux: Vecn,
+        /// EndPoint per identity, u.
         end: Vecn,
+        /// PathChoice: TRUE counter-clockwise (CENTER and RADIUS).
         ccw: bool,
+        /// TRUE for MC_MoveCircularRelative: `aux` (except RADIUS) and `end` are relative to the
+        /// start point.
         relative: bool,
     },
     /// MC_MoveDirectAbsolute: each axis to its target on its own profile.
-    DirectAbsolute { position: Vecn },
+    DirectAbsolute {
+        /// End point per identity, u.
+        position: Vecn,
+    },
     /// MC_GroupHalt.
     Halt,
     /// MC_GroupStop.
@@ -42,12 +58,17 @@ pub enum GroupMotion {
 /// Path dynamics and blending inputs of a group move.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct PathInputs {
+    /// Largest path speed, u/s (further limited by the axes' limits projected onto the path).
     pub velocity: f64,
+    /// Path acceleration, u/s² (further limited by the axes' limits).
     pub acceleration: f64,
+    /// Path deceleration, u/s² (further limited by the axes' limits).
     pub deceleration: f64,
     /// 0 = the axes' jerk limits.
     pub jerk: f64,
+    /// BufferMode of the group command.
     pub buffer: BufferMode,
+    /// TransitionMode towards the predecessor (with a blending BufferMode).
     pub transition: TransitionMode,
     /// TMCornerDistance: the corner distance; TMMaxCornerDeviation: the largest
     /// distance of the blend from the corner.
@@ -103,6 +124,7 @@ pub struct Reduction {
     pub requested: f64,
     /// Junction speed planned and reached.
     pub reached: f64,
+    /// Which rule lowered the speed.
     pub reason: ReductionReason,
 }
 

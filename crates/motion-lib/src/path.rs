@@ -21,21 +21,33 @@ pub type Vecn = [f64; MAX_AXES];
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Geometry {
+    /// A straight line: position(s) = `start + s * unit`, s in [0, len].
     Line {
+        /// Start point per identity, u.
         start: Vecn,
+        /// Unit direction of travel (|unit| = 1).
         unit: Vecn,
+        /// Length of the line, u (>= 0).
         len: f64,
     },
     /// Arc in the X/Y/Z sub-space (identities 0..3), the other axes move linearly
     /// (helix) from `start` by `delta`.
     Arc {
+        /// Centre of the circle in X/Y/Z, u (CENTER mode: Z = 0, Z moves with `delta`).
         center: [f64; 3],
+        /// Unit vector from the centre to the start point.
         e1: [f64; 3],
+        /// Unit vector in the circle's plane, 90 degrees from `e1` in the direction of travel.
         e2: [f64; 3],
+        /// Radius, u (> 0).
         r: f64,
+        /// Angle turned from start to end, radians (in (0, 2 pi]).
         angle: f64,
+        /// Start of the linear part per identity (the circle's axes 0).
         start: Vecn,
+        /// Linear travel of the other axes over the whole arc (the circle's axes 0).
         delta: Vecn,
+        /// Path length of the helix, u: sqrt((r angle)^2 + |delta|^2).
         len: f64,
     },
     /// Corner blend: a symmetric pair of clothoids (Euler spirals) from `start` (on the first
@@ -45,11 +57,15 @@ pub enum Geometry {
     /// The tangent is exact at every s (closed form); the position integrates it with a
     /// fixed Gauss-Legendre rule.
     Blend {
+        /// Where the blend leaves the first line, per identity, u.
         start: Vecn,
+        /// Where the blend joins the second line, per identity, u.
         end: Vecn,
+        /// Unit direction of the first line (the tangent at `start`).
         u1: Vecn,
         /// Unit normal towards the inside of the corner, first half.
         w1: Vecn,
+        /// Unit direction of the second line (the tangent at `end`).
         u2: Vecn,
         /// Unit normal towards the inside of the corner seen backwards from `end`.
         w2: Vecn,
@@ -57,6 +73,7 @@ pub enum Geometry {
         half: f64,
         /// Length of each half.
         l: f64,
+        /// Path length of the blend, u (2 l).
         len: f64,
     },
 }

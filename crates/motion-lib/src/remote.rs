@@ -23,7 +23,9 @@ use crate::group_blocks::*;
 /// What a block acts on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Target {
+    /// One axis (single-axis blocks, MC_GearOut / MC_CamOut: the slave).
     Axis(usize),
+    /// One axes group (Part 4 blocks).
     Group(usize),
     /// Master and slave axes (GearIn, CamIn, CamTableSelect).
     MasterSlave(usize, usize),
@@ -34,7 +36,10 @@ macro_rules! any_block {
         /// Any PLCopen block, by value (what crosses the thread boundary).
         #[derive(Clone, Copy, Debug, PartialEq)]
         pub enum AnyBlock {
-            $( $var($ty), )*
+            $(
+                #[doc = concat!("A [`", stringify!($ty), "`] with its inputs and outputs, in transit between the scan and the engine thread.")]
+                $var($ty),
+            )*
         }
 
         impl AnyBlock {

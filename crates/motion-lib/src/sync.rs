@@ -93,18 +93,32 @@ impl CamTable {
 /// runtime anchors.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SyncParams {
+    /// Index of the master axis.
     pub master: usize,
+    /// MasterValueSource: the master's set value or actual value.
     pub source: MasterSource,
     /// Gear ratio (numerator / denominator).
     pub ratio: f64,
     /// CamTableID.
     pub table: usize,
+    /// Periodic: TRUE repeats the table (each period the slave advances by the table's rise and
+    /// EndOfProfile pulses); FALSE holds the table's ends beyond its master range.
     pub periodic: bool,
+    /// MasterAbsolute: TRUE looks the table up with the master's absolute position; FALSE with the
+    /// distance the master travelled since coupling.
     pub master_absolute: bool,
+    /// SlaveAbsolute: TRUE the table gives the slave's absolute position; FALSE a position relative
+    /// to where the slave was at coupling.
     pub slave_absolute: bool,
+    /// MasterOffset: subtracted from the master position before the table look-up, in u (table x =
+    /// (master - MasterOffset) * MasterScaling).
     pub master_offset: f64,
+    /// SlaveOffset: added to the table's slave value, in u (slave = SlaveScaling * y +
+    /// SlaveOffset).
     pub slave_offset: f64,
+    /// MasterScaling: factor on the master position before the table look-up (finite, non-zero).
     pub master_scaling: f64,
+    /// SlaveScaling: factor on the table's slave value (finite).
     pub slave_scaling: f64,
     /// Master raw position at coupling.
     pub(crate) m0: f64,

@@ -7,6 +7,8 @@
 //! read only from `$LADDERC_CORPUS`; once `LADDERC_CORPUS` is set, a missing file or folder is a panic
 //! (never a silent skip), and with `LADDERC_REQUIRE_CORPUS=1` an unset `LADDERC_CORPUS` is one too.
 
+#![warn(missing_docs)]
+
 use std::io::Write;
 use std::path::{Path, PathBuf};
 

@@ -42,9 +42,13 @@ pub const MAX_PHASES: usize = 9;
 /// acceleration is ignored.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Limits {
+    /// Largest |velocity|, u/s (finite, > 0).
     pub vmax: f64,
+    /// Largest acceleration in the direction of travel, u/s² (finite, > 0).
     pub amax: f64,
+    /// Largest deceleration against the direction of travel, u/s² (finite, > 0).
     pub dmax: f64,
+    /// Largest |jerk|, u/s³ (0 or infinite: no jerk limit, trapezoidal profiles).
     pub jmax: f64,
 }
 
@@ -75,8 +79,11 @@ impl Limits {
 /// Kinematic state of one axis: position, velocity, acceleration.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct State {
+    /// Position, u.
     pub p: f64,
+    /// Velocity, u/s.
     pub v: f64,
+    /// Acceleration, u/s².
     pub a: f64,
 }
 
@@ -95,31 +102,56 @@ impl State {
 /// One phase of a profile: `duration` seconds of constant `jerk`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Phase {
+    /// Length of the phase, s (>= 0).
     pub duration: f64,
+    /// Constant jerk during the phase, u/s³ (signed).
     pub jerk: f64,
 }
 
 /// Why a profile could not be planned.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum PlanError {
+    /// A limit is not finite and positive (`jmax`: negative or NaN); see [`Limits::validate`].
     #[error("invalid limits: vmax, amax and dmax must be finite and > 0, jmax >= 0 (0 or infinite = trapezoidal)")]
     InvalidLimits,
+    /// The start position, velocity or acceleration is not finite.
     #[error("invalid start state: position, velocity and acceleration must be finite")]
     InvalidState,
     #[error("invalid target: the position must be finite and the velocity finite with |v| <= vmax ({vmax})")]
-    InvalidTarget { vmax: f64 },
+    /// The target position is not finite, or the target velocity is not finite or above `vmax`.
+    InvalidTarget {
+        /// The velocity limit the target velocity was checked against, u/s.
+        vmax: f64,
+    },
     #[error("requested duration {requested} s is shorter than the minimal duration {minimal} s")]
-    DurationTooShort { requested: f64, minimal: f64 },
+    /// [`Profile::with_duration`] was asked for less than the time-optimal duration.
+    DurationTooShort {
+        /// The duration asked for, s.
+        requested: f64,
+        /// The shortest duration the limits allow, s.
+        minimal: f64,
+    },
     #[error(
         "no profile reaches the target in exactly {requested} s (minimal duration {minimal} s)"
     )]
-    DurationUnreachable { requested: f64, minimal: f64 },
+    /// [`Profile::with_duration`]: no profile takes exactly that long (a blocked interval).
+    DurationUnreachable {
+        /// The duration asked for, s.
+        requested: f64,
+        /// The shortest duration the limits allow, s.
+        minimal: f64,
+    },
+    /// A straight line in N axes could not be planned (the message says why).
     #[error("line: {0}")]
     Line(String),
+    /// No profile family gave a valid profile (a numerical failure of the planner).
     #[error("no valid profile found (numerical failure) for start {start:?}, target p = {target_p}, v = {target_v}")]
     NoSolution {
+        /// The start state given to the planner.
         start: State,
+        /// The target position, u.
         target_p: f64,
+        /// The target velocity, u/s.
         target_v: f64,
     },
 }

@@ -3,6 +3,9 @@
 //!
 //! Input: start velocity/acceleration and limits. Output: at most two phases (jerk, or
 //! constant acceleration for the second-order case) and the state after them.
+//! Invariants: the phases use only the jerk bound (second order: the acceleration bound); a
+//! start state that neither is nor will be beyond the limits gets no phase (duration 0); no
+//! allocation.
 //! Adapted from ruckig's `brake.cpp` via rsruckig 3.0.1 (MIT); see `kernel/mod.rs`.
 
 use super::integrate;

@@ -3,6 +3,8 @@
 //! Input: candidate phase durations `t[0..7]` with the boundary states. Output: whether
 //! the candidate is valid (non-negative durations, limits respected, target reached to
 //! 1e-8), with the states at the phase boundaries filled in.
+//! Invariant: a candidate is accepted only when all of the above hold; the boundary arrays
+//! are the phases integrated from the start state, so they are consistent with `t` and `j`.
 //! Adapted from ruckig's `profile.hpp` via rsruckig 3.0.1 (MIT); see `kernel/mod.rs`.
 
 static V_EPS: f64 = 1e-12;

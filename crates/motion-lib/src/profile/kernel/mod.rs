@@ -3,6 +3,8 @@
 //! Input: one-axis boundary states and limits. Output: the time-optimal kernel
 //! [`kprofile::Profile`] (seven phases of constant jerk) after an optional brake
 //! pre-phase, plus the blocked duration intervals of ruckig's step 1.
+//! Invariants: every profile it returns passed the validity check of [`kprofile`]; nothing
+//! allocates.
 //!
 //! Provenance: `roots`, `brake`, `kprofile`, `pos3` (step 1 of the third-order position
 //! problem) and `pos2` (second order) are adapted from rsruckig 3.0.1

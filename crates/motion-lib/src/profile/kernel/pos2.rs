@@ -2,8 +2,9 @@
 //!
 //! Input: start position/velocity, target position/velocity, limits. Output: the valid
 //! candidates of the acceleration-limited profile families, reduced by [`Block`] to the
-//! fastest one. Adapted from ruckig's `position-second-step1.cpp` via rsruckig 3.0.1
-//! (MIT); see `kernel/mod.rs`.
+//! fastest one. Invariants: only candidates accepted by `Profile::check_for_second_order`
+//! are kept; no allocation. Adapted from ruckig's `position-second-step1.cpp` via rsruckig
+//! 3.0.1 (MIT); see `kernel/mod.rs`.
 
 use super::kprofile::{ControlSigns, Profile, ReachedLimits};
 use super::Block;

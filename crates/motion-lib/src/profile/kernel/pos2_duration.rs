@@ -1,6 +1,12 @@
 //! Step 2 of the second-order (trapezoidal) position problem: a profile of a given
-//! duration. Adapted from ruckig's `position-second-step2.cpp` via rsruckig 3.0.1 (MIT);
-//! see `kernel/mod.rs`.
+//! duration.
+//!
+//! Input: boundary states (p0, v0 to pf, vf), velocity and acceleration limits and the
+//! duration `tf`. Output: a valid second-order kernel profile of exactly that duration, if
+//! one is found. Invariants: a returned profile passed `Profile::check_for_second_order`
+//! (within the limits, target reached); no allocation.
+//! Adapted from ruckig's `position-second-step2.cpp` via rsruckig 3.0.1 (MIT); see
+//! `kernel/mod.rs`.
 
 use super::kprofile::{ControlSigns, Profile, ReachedLimits};
 

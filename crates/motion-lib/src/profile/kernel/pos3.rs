@@ -4,6 +4,8 @@
 //! and limits `[v_min, v_max]`, `[a_min, a_max]`, `j_max`. Output: every valid candidate
 //! of the profile families (UDDU/UDUD × reached limits), reduced by [`Block`] to the
 //! fastest one and the blocked duration intervals.
+//! Invariants: only candidates accepted by `Profile::check` are kept; no allocation (the
+//! candidate array is reused).
 //! Adapted from ruckig's `position-third-step1.cpp` via rsruckig 3.0.1 (MIT); see
 //! `kernel/mod.rs`.
 

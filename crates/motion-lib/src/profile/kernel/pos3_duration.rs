@@ -2,6 +2,8 @@
 //!
 //! Input: boundary states, limits and the duration `tf` (not in a blocked interval of
 //! step 1). Output: a valid kernel profile of exactly that duration, if one is found.
+//! Invariants: a returned profile passed `Profile::check_with_timing`; polynomials live in
+//! fixed-capacity arrays (no allocation).
 //! Adapted from ruckig's `position-third-step2.cpp` via rsruckig 3.0.1 (MIT); see
 //! `kernel/mod.rs`.
 

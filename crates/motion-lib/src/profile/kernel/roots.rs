@@ -2,7 +2,8 @@
 //!
 //! Input: polynomial coefficients. Output: the set of real, non-negative, distinct
 //! roots in ascending order. Adapted from ruckig's `roots.hpp` via rsruckig 3.0.1
-//! (MIT, © Lars Berscheid, Petri Koskinen); see `kernel/mod.rs`.
+//! (MIT, © Lars Berscheid, Petri Koskinen); see `kernel/mod.rs`. Invariants: results live in
+//! fixed-capacity arrays (no allocation); sorting never panics, even on NaN.
 
 const COS_120: f64 = -0.50;
 const SIN_120: f64 = 0.866_025_403_784_438_6;
