@@ -252,6 +252,11 @@
 #define MC_ERR_INVALID_MODE 32
 
 /**
+ * ErrorID 33: MC_CamIn: the cam law, for a master within its axis limits, needs more than the slave's velocity, acceleration or jerk limit, or the slave's motion relative to the law at coupling does not fit in what the law leaves.
+ */
+#define MC_ERR_CAM_BEYOND_SLAVE_LIMITS 33
+
+/**
  * ErrorID 40: The axis's (or group's) command queue is full: the command is rejected, nothing is dropped.
  */
 #define MC_ERR_QUEUE_FULL 40

@@ -1124,6 +1124,7 @@ impl Engine {
                 p.lim = Self::move_limits(&ax.cfg, &dd, false)?;
                 p.kind = Kind::Cam;
                 p.sync = SyncParams { master, ..params };
+                self.cam_remaining(axis, &p.sync)?;
                 p.speed = 0.0;
             }
             AxisCommand::GearOut | AxisCommand::CamOut => {}
@@ -1190,6 +1191,11 @@ impl Engine {
                 )?;
                 Self::check_path(ax, &o.prof, o.tail.as_ref())?;
             }
+        }
+        if (buffer == BufferMode::Aborting || idle) && pending.kind == Kind::Cam {
+            // The coupling must fit the slave's limits: refused before anything running
+            // is aborted (README "Camming").
+            self.plan_cam(axis, &pending.sync)?;
         }
         let id = self.cmds.alloc(CmdStatus::Queued);
         let pending = Pending { id, ..pending };
@@ -1361,6 +1367,11 @@ impl Engine {
         if p.kind == Kind::Position {
             Self::check_path(&self.axes[axis], &prof, tail.as_ref())?;
         }
+        let cam = if p.kind == Kind::Cam {
+            Some(self.plan_cam(axis, &p.sync)?)
+        } else {
+            None
+        };
         let ax = &mut self.axes[axis];
         let class = match p.kind {
             Kind::Position | Kind::Halt => AxisState::DiscreteMotion,
@@ -1397,8 +1408,15 @@ impl Engine {
                     d.start_homing();
                 }
             }
-            Kind::Gear | Kind::Cam => {
+            Kind::Gear => {
                 self.start_sync(axis);
+            }
+            Kind::Cam => {
+                if let Some((sync, prof, lim)) = cam {
+                    // The catch-up starts from the state it was planned from (as gearing).
+                    let a = &mut self.axes[axis].active;
+                    (a.sync, a.prof, a.lim, a.t) = (sync, prof, lim, 0.0);
+                }
             }
             _ => {
                 let a = &self.axes[axis].active;
