@@ -1287,6 +1287,42 @@ double mc_group_junction_reached(struct McEngine *engine, McIndex group);
 uint32_t mc_group_reduction_count(struct McEngine *engine, McIndex group);
 
 /**
+ * Deceleration an MC_Stop asked for when the axis limit capped it (in the stop's first
+ * cycle; 0 otherwise, see `stop_now`).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_stop_decel_requested(struct McEngine *engine, McIndex axis);
+
+/**
+ * Deceleration that capped MC_Stop runs with (see `mc_axis_stop_decel_requested`).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_stop_decel_reached(struct McEngine *engine, McIndex axis);
+
+/**
+ * Jerk that capped MC_Stop asked for (0: the axis's; see `mc_axis_stop_decel_requested`).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_stop_jerk_requested(struct McEngine *engine, McIndex axis);
+
+/**
+ * Jerk that capped MC_Stop runs with (see `mc_axis_stop_decel_requested`).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_stop_jerk_reached(struct McEngine *engine, McIndex axis);
+
+/**
+ * How many MC_Stop commands of the axis were capped to its limits so far (0 for a bad index).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+uint32_t mc_axis_stop_reduction_count(struct McEngine *engine, McIndex axis);
+
+/**
  * Calls MC_Power once (one PLC scan).
  * # Safety
  * See the module contract: pointers are NULL or valid.

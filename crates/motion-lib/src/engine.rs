@@ -402,6 +402,33 @@ pub struct Engine {
     pub(crate) events: Vec<u32>,
     pub(crate) synced: Vec<u32>,
     pub(crate) cycles: u64,
+    /// Per axis: MC_Stop inputs capped to the axis limits (README "MC_Stop").
+    pub(crate) stop_caps: Vec<StopCaps>,
+}
+
+/// An MC_Stop whose Deceleration or Jerk exceeded the axis's limit and was capped to it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StopReduction {
+    /// The MC_Stop command.
+    pub cmd: CmdId,
+    /// Deceleration the block asked for and the one the stop runs with.
+    pub deceleration_requested: f64,
+    pub deceleration_reached: f64,
+    /// Jerk the block asked for (0 = the axis's jerk limit) and the one the stop runs with
+    /// (equal when only the deceleration was capped).
+    pub jerk_requested: f64,
+    pub jerk_reached: f64,
+}
+
+/// The capped stops of one axis: the first [`crate::group::REDUCTIONS_KEPT`] kept, all
+/// counted, and the engine cycle of the last one.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct StopCaps {
+    kept: Vec<StopReduction>,
+    count: usize,
+    /// The last capped stop and `Engine::cycles` when it was given (its first cycle is the
+    /// next).
+    last: Option<(u64, StopReduction)>,
 }
 
 fn finite(x: f64) -> bool {
@@ -425,6 +452,7 @@ impl Engine {
             events: Vec::new(),
             synced: Vec::new(),
             cycles: 0,
+            stop_caps: Vec::new(),
         })
     }
 
@@ -457,6 +485,7 @@ impl Engine {
         });
         self.drives.push(None);
         self.queues.push(Queue::new(self.cfg.queue_depth));
+        self.stop_caps.push(StopCaps::default());
         let n = self.axes.len();
         self.events.reserve(3 * n);
         self.synced.reserve(n);
@@ -1203,6 +1232,8 @@ impl Engine {
             self.abort_all(axis, CmdStatus::Aborted);
             if let Err(e) = self.activate(axis, pending, 0.0) {
                 self.cmds.set(id, CmdStatus::Error(e));
+            } else if pending.kind == Kind::Stop {
+                self.note_stop_cap(axis, id, &dynamics, &pending.lim);
             }
         } else {
             self.link_successor(axis, &pending);
@@ -1211,6 +1242,44 @@ impl Engine {
             }
         }
         Ok(id)
+    }
+
+    /// Records an MC_Stop whose Deceleration or Jerk the axis limits capped.
+    fn note_stop_cap(&mut self, axis: usize, cmd: CmdId, d: &Dynamics, lim: &Limits) {
+        let dec_capped = d.deceleration > lim.dmax;
+        let jerk_capped = d.jerk > 0.0 && lim.jmax > 0.0 && d.jerk > lim.jmax;
+        if !(dec_capped || jerk_capped) {
+            return;
+        }
+        let r = StopReduction {
+            cmd,
+            deceleration_requested: d.deceleration,
+            deceleration_reached: lim.dmax,
+            jerk_requested: d.jerk,
+            jerk_reached: lim.jmax,
+        };
+        let c = &mut self.stop_caps[axis];
+        if c.kept.len() < crate::group::REDUCTIONS_KEPT {
+            c.kept.push(r);
+        }
+        c.count += 1;
+        c.last = Some((self.cycles, r));
+    }
+
+    /// The MC_Stop commands of an axis whose Deceleration or Jerk was capped to the axis
+    /// limits (the first `REDUCTIONS_KEPT`), and how many there were in all.
+    pub fn stop_reductions(&self, axis: usize) -> Result<(&[StopReduction], usize), ErrorId> {
+        self.axis(axis)?;
+        let c = &self.stop_caps[axis];
+        Ok((&c.kept, c.count))
+    }
+
+    /// The capped MC_Stop that started in the last cycle (the cycle after the scan that gave
+    /// it), if any: what the trace columns `axis.<A>.stop_*` show.
+    pub fn stop_reduction_now(&self, axis: usize) -> Result<Option<StopReduction>, ErrorId> {
+        self.axis(axis)?;
+        let c = &self.stop_caps[axis];
+        Ok(c.last.filter(|(k, _)| k + 1 == self.cycles).map(|(_, r)| r))
     }
 
     /// ContinuousUpdate: new inputs for a command that is still Busy.

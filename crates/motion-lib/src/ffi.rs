@@ -433,6 +433,63 @@ pub unsafe extern "C" fn mc_group_reduction_count(engine: *mut McEngine, group: 
         .map_or(0, |r| r.1 as u32)
 }
 
+/// One figure of the capped MC_Stop that started on the axis in the last cycle; 0 in every
+/// other cycle, for a bad index and for a NULL, invalid or poisoned handle.
+unsafe fn stop_now(
+    engine: *mut McEngine,
+    axis: McIndex,
+    pick: fn(&crate::engine::StopReduction) -> f64,
+) -> f64 {
+    unsafe { eng(engine) }
+        .ok()
+        .and_then(|e| e.stop_reduction_now(axis as usize).ok().flatten())
+        .map_or(0.0, |r| pick(&r))
+}
+
+/// Deceleration an MC_Stop asked for when the axis limit capped it (in the stop's first
+/// cycle; 0 otherwise, see `stop_now`).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_decel_requested(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { stop_now(engine, axis, |r| r.deceleration_requested) }
+}
+
+/// Deceleration that capped MC_Stop runs with (see `mc_axis_stop_decel_requested`).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_decel_reached(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { stop_now(engine, axis, |r| r.deceleration_reached) }
+}
+
+/// Jerk that capped MC_Stop asked for (0: the axis's; see `mc_axis_stop_decel_requested`).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_jerk_requested(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { stop_now(engine, axis, |r| r.jerk_requested) }
+}
+
+/// Jerk that capped MC_Stop runs with (see `mc_axis_stop_decel_requested`).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_jerk_reached(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { stop_now(engine, axis, |r| r.jerk_reached) }
+}
+
+/// How many MC_Stop commands of the axis were capped to its limits so far (0 for a bad index).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_reduction_count(engine: *mut McEngine, axis: McIndex) -> u32 {
+    unsafe { eng(engine) }
+        .ok()
+        .and_then(|e| e.stop_reductions(axis as usize).ok())
+        .map_or(0, |r| r.1 as u32)
+}
+
 fn master_source(x: u8) -> Result<MasterSource, ErrorId> {
     match x {
         0 => Ok(MasterSource::SetValue),
