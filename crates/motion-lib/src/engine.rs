@@ -1076,10 +1076,14 @@ impl Engine {
                 p.kind = Kind::Velocity;
                 p.target = sign * d.velocity.signum() * p.lim.vmax;
                 if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
-                    // At (or past) a limit, a velocity move further out is refused.
+                    // At (or past) a limit, a velocity move further out is refused. "At":
+                    // within 1e-9 relative, where the brake to the limit leaves the axis
+                    // (it stops there to rounding).
                     let u = ax.set.p + ax.origin;
-                    if (p.target > 0.0 && u >= ax.cfg.sw_limit_pos)
-                        || (p.target < 0.0 && u <= ax.cfg.sw_limit_neg)
+                    let (hi, lo) = (ax.cfg.sw_limit_pos, ax.cfg.sw_limit_neg);
+                    let eps = |l: f64| 1e-9 * l.abs().max(1.0);
+                    if (p.target > 0.0 && u >= hi - eps(hi))
+                        || (p.target < 0.0 && u <= lo + eps(lo))
                     {
                         return Err(ErrorId::TargetBeyondSoftwareLimit);
                     }
