@@ -117,6 +117,59 @@ fn unseen_durations_match_ruckig() {
     assert!(bad.is_empty(), "{} mismatches", bad.len());
 }
 
+/// Two problems of `gen_unseen.py 4000 7` (not in the committed file) whose starts lie far from
+/// the origin: the kernel found no profile in absolute positions; planned relative to the start
+/// they match ruckig 0.19.4's durations.
+#[test]
+fn far_from_the_origin_the_durations_still_match_ruckig() {
+    let cases = [
+        // (p0, v0, a0, p1, vmax, amax = dmax, jmax, ruckig's duration)
+        (
+            -135702106000000.0,
+            -23798.2433,
+            -0.000206875817,
+            -114917116000000.0,
+            94974.7488,
+            0.00029992301,
+            0.00604948178,
+            617675343.2666539,
+        ),
+        (
+            702482087000.0,
+            13195.1329,
+            0.0155707876,
+            621469249000.0,
+            63678.9367,
+            0.0327575885,
+            0.000662208834,
+            3599295.3067658907,
+        ),
+    ];
+    for (p0, v0, a0, p1, vmax, amax, jmax, want) in cases {
+        let lim = Limits {
+            vmax,
+            amax,
+            dmax: amax,
+            jmax,
+        };
+        let prof = Profile::position(
+            State {
+                p: p0,
+                v: v0,
+                a: a0,
+            },
+            p1,
+            0.0,
+            &lim,
+        )
+        .unwrap();
+        let got = prof.duration();
+        assert!((got - want).abs() <= 1e-6 * want, "got {got}, want {want}");
+        let end = prof.at(got);
+        assert!((end.p - p1).abs() <= 1e-12 * p1.abs() && end.v.abs() < 1e-9);
+    }
+}
+
 /// How far the profile leaves the segment from `p0` to `p1` (beyond the target, or behind
 /// the start), checked at the phase boundaries and at the position extrema inside phases
 /// (v = 0).
