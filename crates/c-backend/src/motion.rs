@@ -5,7 +5,9 @@
 //! Output: `ladderc_motion.c` (one global engine created by `ladderc_motion_init`, returned by
 //! `struct McEngine *ladderc_motion_engine(void)` to the block bodies, stepped once per scan cycle by
 //! `ladderc_motion_step` after every program ran, destroyed at exit), `motion_lib.h`, and the watchable
-//! trace columns `axis.<name>.position|velocity|acceleration` (set values after the cycle's engine step)
+//! trace columns `axis.<name>.position|velocity|acceleration` (set values after the cycle's engine step),
+//! `axis.<name>.stop_decel_requested|stop_decel_reached|stop_jerk_requested|stop_jerk_reached` (non-zero
+//! only in the first cycle of an MC_Stop whose Deceleration or Jerk the axis limits capped)
 //! and `group.<name>.junction_requested|junction_reached` (non-zero only in the cycle the path passes a
 //! junction whose speed the axis limits lowered).
 //! Invariants: axis `i` of the configuration is engine axis `i` (the `AxisNo` of its `AXIS_REF`), group
@@ -65,6 +67,31 @@ const SIGNALS: [(&str, &str); 3] = [
     ("position", "ladderc_axis_position"),
     ("velocity", "ladderc_axis_velocity"),
     ("acceleration", "ladderc_axis_acceleration"),
+];
+
+/// The trace columns of one axis about a capped MC_Stop: `(suffix, C array, motion-lib reader)`.
+/// All 0 except in the first cycle of an MC_Stop whose Deceleration or Jerk the axis limits capped.
+const STOP_SIGNALS: [(&str, &str, &str); 4] = [
+    (
+        "stop_decel_requested",
+        "ladderc_axis_stop_decel_requested",
+        "mc_axis_stop_decel_requested",
+    ),
+    (
+        "stop_decel_reached",
+        "ladderc_axis_stop_decel_reached",
+        "mc_axis_stop_decel_reached",
+    ),
+    (
+        "stop_jerk_requested",
+        "ladderc_axis_stop_jerk_requested",
+        "mc_axis_stop_jerk_requested",
+    ),
+    (
+        "stop_jerk_reached",
+        "ladderc_axis_stop_jerk_reached",
+        "mc_axis_stop_jerk_reached",
+    ),
 ];
 
 /// The trace columns of one group: `(suffix, C array, motion-lib reader)`. Both are 0 except
@@ -129,6 +156,9 @@ impl MotionRuntime {
         for (_, arr) in SIGNALS {
             let _ = writeln!(s, "extern IEC_LREAL {arr}[{}];", self.array_len());
         }
+        for (_, arr, _) in STOP_SIGNALS {
+            let _ = writeln!(s, "extern IEC_LREAL {arr}[{}];", self.array_len());
+        }
         for (_, arr, _) in GROUP_SIGNALS {
             let _ = writeln!(s, "extern IEC_LREAL {arr}[{}];", self.group_len());
         }
@@ -139,7 +169,8 @@ impl MotionRuntime {
     pub fn watch_entries(&self) -> Vec<String> {
         let mut out = Vec::new();
         for (i, a) in self.axes.iter().enumerate() {
-            for (suffix, arr) in SIGNALS {
+            let stop = STOP_SIGNALS.iter().map(|(s, a, _)| (*s, *a));
+            for (suffix, arr) in SIGNALS.into_iter().chain(stop) {
                 let name = format!("axis.{}.{suffix}", a.name);
                 out.push(format!(
                     "{{ {}, LADDERC_T_LREAL, (void *)&{arr}[{i}], NULL, 0, 0 }}",
@@ -169,6 +200,9 @@ impl MotionRuntime {
         for (_, arr) in SIGNALS {
             let _ = writeln!(c, "IEC_LREAL {arr}[{n}];");
         }
+        for (_, arr, _) in STOP_SIGNALS {
+            let _ = writeln!(c, "IEC_LREAL {arr}[{n}];");
+        }
         for (_, arr, _) in GROUP_SIGNALS {
             let _ = writeln!(c, "IEC_LREAL {arr}[{}];", self.group_len());
         }
@@ -189,8 +223,12 @@ impl MotionRuntime {
             c.push_str(
                 "        ladderc_axis_position[i] = mc_axis_set_position(ladderc_engine, i);\n\
                  \x20       ladderc_axis_velocity[i] = mc_axis_set_velocity(ladderc_engine, i);\n\
-                 \x20       ladderc_axis_acceleration[i] = mc_axis_set_acceleration(ladderc_engine, i);\n    }\n",
+                 \x20       ladderc_axis_acceleration[i] = mc_axis_set_acceleration(ladderc_engine, i);\n",
             );
+            for (_, arr, reader) in STOP_SIGNALS {
+                let _ = writeln!(c, "        {arr}[i] = {reader}(ladderc_engine, i);");
+            }
+            c.push_str("    }\n");
         }
         if !self.groups.is_empty() {
             let _ = writeln!(c, "    for (i = 0; i < {}u; i++) {{", self.groups.len());

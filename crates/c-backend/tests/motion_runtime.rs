@@ -38,15 +38,18 @@ fn the_runtime_creates_axes_and_groups_in_configuration_order() {
 }
 
 #[test]
-fn each_axis_has_three_watchable_columns() {
+fn each_axis_has_seven_watchable_columns() {
     let e = runtime().watch_entries();
-    // three per axis, two per group (lowered junction speeds)
-    assert_eq!(e.len(), 6 + 2 * runtime().groups.len());
+    // seven per axis (set values, a capped MC_Stop), two per group (lowered junction speeds)
+    assert_eq!(e.len(), 14 + 2 * runtime().groups.len());
+    assert!(e
+        .iter()
+        .any(|x| x.contains("\"axis.X1.stop_decel_requested\"")));
     assert!(e
         .iter()
         .any(|x| x.contains("\"group.") && x.contains(".junction_requested\"")));
     assert_eq!(
-        e[3],
+        e[7],
         "{ \"axis.Y1.position\", LADDERC_T_LREAL, (void *)&ladderc_axis_position[1], NULL, 0, 0 }"
     );
     assert!(runtime()

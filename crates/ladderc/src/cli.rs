@@ -854,6 +854,9 @@ fn run_program(
         for line in junction_summary(&text, &unit) {
             stdio::err(&format!("{line}\n"));
         }
+        for line in stop_summary(&text, &unit) {
+            stdio::err(&format!("{line}\n"));
+        }
     }
     if let (true, Some(svg)) = (out.success(), &plot) {
         let unit = lowered
@@ -1055,6 +1058,83 @@ pub fn junction_summary(trace: &str, unit: &str) -> Vec<String> {
             let cycle = field(r, 0).unwrap_or("?");
             out.push(format!(
                 "motion: group {group}: junction{block} at cycle {cycle}: requested {req} {unit}/s, reached {reached:.6} {unit}/s (lowered to keep the axis limits: a junction, or an arc's path speed; motion-lib README, \"Junction speeds\")"
+            ));
+        }
+    }
+    out
+}
+
+/// The run summary's lines about MC_Stop commands capped to the axis limits, read from the trace's
+/// `axis.<name>.stop_decel_requested|stop_decel_reached|stop_jerk_requested|stop_jerk_reached` columns
+/// (non-zero only in the stop's first cycle): the axis, the MC_Stop block (the watched `<block>.Busy`
+/// column that rises in that row or the one before), the cycle, the deceleration and jerk requested and
+/// reached. Empty when the trace has no such columns or no stop was capped.
+pub fn stop_summary(trace: &str, unit: &str) -> Vec<String> {
+    let mut lines = trace.lines();
+    let Some(header) = lines.next() else {
+        return Vec::new();
+    };
+    let cols: Vec<&str> = header.split(',').collect();
+    let find = |name: String| cols.iter().position(|c| *c == name);
+    let axes: Vec<(&str, [Option<usize>; 4])> = cols
+        .iter()
+        .filter_map(|c| {
+            let axis = c
+                .strip_prefix("axis.")?
+                .strip_suffix(".stop_decel_requested")?;
+            let k = |s: &str| find(format!("axis.{axis}.{s}"));
+            Some((
+                axis,
+                [
+                    k("stop_decel_requested"),
+                    k("stop_decel_reached"),
+                    k("stop_jerk_requested"),
+                    k("stop_jerk_reached"),
+                ],
+            ))
+        })
+        .collect();
+    if axes.is_empty() {
+        return Vec::new();
+    }
+    let busy: Vec<(usize, &str)> = cols
+        .iter()
+        .enumerate()
+        .filter_map(|(k, c)| c.strip_suffix(".Busy").map(|b| (k, b)))
+        .collect();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let num = |r: usize, k: Option<usize>| {
+        k.and_then(|k| rows[r].get(k))
+            .and_then(|x| x.parse::<f64>().ok())
+            .unwrap_or(0.0)
+    };
+    let is_true = |r: usize, k: usize| rows[r].get(k).is_some_and(|x| *x == "1" || *x == "TRUE");
+    let mut out = Vec::new();
+    for (axis, k) in axes {
+        for (r, row) in rows.iter().enumerate() {
+            let req = num(r, k[0]);
+            if req <= 0.0 {
+                continue;
+            }
+            // The block's Busy rises in the scan that gave the stop: this row or the one before.
+            let block = busy
+                .iter()
+                .find(|(j, _)| {
+                    (r.saturating_sub(1)..=r)
+                        .any(|x| is_true(x, *j) && (x == 0 || !is_true(x - 1, *j)))
+                })
+                .map(|(_, b)| format!(" {b}"))
+                .unwrap_or_default();
+            let cycle = row.first().copied().unwrap_or("?");
+            let (jr, jg) = (num(r, k[2]), num(r, k[3]));
+            let jerk = if jr == 0.0 {
+                format!("jerk the axis's {jg} {unit}/s^3")
+            } else {
+                format!("jerk requested {jr} {unit}/s^3, reached {jg} {unit}/s^3")
+            };
+            out.push(format!(
+                "motion: axis {axis}: MC_Stop{block} at cycle {cycle}: deceleration requested {req} {unit}/s^2, reached {} {unit}/s^2; {jerk} (capped to the axis limits; motion-lib README, \"MC_Stop\")",
+                num(r, k[1])
             ));
         }
     }

@@ -261,6 +261,11 @@
 #define MC_ERR_INVALID_MODE 32
 
 /**
+ * ErrorID 33: MC_CamIn: the cam law, for a master within its axis limits, needs more than the slave's velocity, acceleration or jerk limit, or the slave's motion relative to the law at coupling does not fit in what the law leaves.
+ */
+#define MC_ERR_CAM_BEYOND_SLAVE_LIMITS 33
+
+/**
  * ErrorID 40: The axis's (or group's) command queue is full: the command is rejected, nothing is dropped.
  */
 #define MC_ERR_QUEUE_FULL 40
@@ -1485,7 +1490,8 @@ typedef struct MC_CamIn_C {
   uint32_t CamTableID;
   /**
    * Periodic: TRUE repeats the table (each period the slave advances by the table's rise and
-   * EndOfProfile pulses); FALSE holds the table's ends beyond its master range.
+   * EndOfProfile pulses); FALSE continues the law beyond the table's master range along its end
+   * tangents (a straight line, so the velocity never steps; end the table flat to dwell).
    */
   bool Periodic;
   /**
@@ -2737,6 +2743,42 @@ double mc_group_junction_reached(struct McEngine *engine, McIndex group);
  * `engine` is NULL or a live handle, used by no other thread during the call.
  */
 uint32_t mc_group_reduction_count(struct McEngine *engine, McIndex group);
+
+/**
+ * Deceleration an MC_Stop asked for when the axis limit capped it (in the stop's first
+ * cycle; 0 otherwise, see `stop_now`).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_stop_decel_requested(struct McEngine *engine, McIndex axis);
+
+/**
+ * Deceleration that capped MC_Stop runs with (see `mc_axis_stop_decel_requested`).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_stop_decel_reached(struct McEngine *engine, McIndex axis);
+
+/**
+ * Jerk that capped MC_Stop asked for (0: the axis's; see `mc_axis_stop_decel_requested`).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_stop_jerk_requested(struct McEngine *engine, McIndex axis);
+
+/**
+ * Jerk that capped MC_Stop runs with (see `mc_axis_stop_decel_requested`).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+double mc_axis_stop_jerk_reached(struct McEngine *engine, McIndex axis);
+
+/**
+ * How many MC_Stop commands of the axis were capped to its limits so far (0 for a bad index).
+ * # Safety
+ * See the module contract: pointers are NULL or valid.
+ */
+uint32_t mc_axis_stop_reduction_count(struct McEngine *engine, McIndex axis);
 
 /**
  * Calls MC_Power once (one PLC scan) on axis `axis` of `engine`: reads the inputs from `*fb`, runs

@@ -1248,7 +1248,8 @@ pub struct McCamIn {
     /// InvalidCamTable).
     pub cam_table_id: usize,
     /// Periodic: TRUE repeats the table (each period the slave advances by the table's rise and
-    /// EndOfProfile pulses); FALSE holds the table's ends beyond its master range.
+    /// EndOfProfile pulses); FALSE continues the law beyond the table's master range along its end
+    /// tangents (a straight line, so the velocity never steps; end the table flat to dwell).
     pub periodic: bool,
     /// MasterAbsolute: TRUE looks the table up with the master's absolute position; FALSE with the
     /// distance the master travelled since coupling.

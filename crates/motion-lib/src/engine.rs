@@ -436,6 +436,34 @@ pub struct Engine {
     pub(crate) events: Vec<u32>,
     pub(crate) synced: Vec<u32>,
     pub(crate) cycles: u64,
+    /// Per axis: MC_Stop inputs capped to the axis limits (README "MC_Stop").
+    pub(crate) stop_caps: Vec<StopCaps>,
+}
+
+/// An MC_Stop whose Deceleration or Jerk exceeded the axis's limit and was capped to it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StopReduction {
+    /// The MC_Stop command.
+    pub cmd: CmdId,
+    /// The Deceleration input the block asked for (u/s²).
+    pub deceleration_requested: f64,
+    /// The deceleration the stop runs with: the request capped to the axis's limit (u/s²).
+    pub deceleration_reached: f64,
+    /// The Jerk input the block asked for (u/s³; 0 = the axis's jerk limit).
+    pub jerk_requested: f64,
+    /// The jerk the stop runs with (u/s³; equal to the request when only the deceleration was capped).
+    pub jerk_reached: f64,
+}
+
+/// The capped stops of one axis: the first [`crate::group::REDUCTIONS_KEPT`] kept, all
+/// counted, and the engine cycle of the last one.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct StopCaps {
+    kept: Vec<StopReduction>,
+    count: usize,
+    /// The last capped stop and `Engine::cycles` when it was given (its first cycle is the
+    /// next).
+    last: Option<(u64, StopReduction)>,
 }
 
 fn finite(x: f64) -> bool {
@@ -459,6 +487,7 @@ impl Engine {
             events: Vec::new(),
             synced: Vec::new(),
             cycles: 0,
+            stop_caps: Vec::new(),
         })
     }
 
@@ -491,6 +520,7 @@ impl Engine {
         });
         self.drives.push(None);
         self.queues.push(Queue::new(self.cfg.queue_depth));
+        self.stop_caps.push(StopCaps::default());
         let n = self.axes.len();
         self.events.reserve(3 * n);
         self.synced.reserve(n);
@@ -1081,10 +1111,14 @@ impl Engine {
                 p.kind = Kind::Velocity;
                 p.target = sign * d.velocity.signum() * p.lim.vmax;
                 if ax.cfg.sw_limits_enabled && ax.cfg.period().is_none() {
-                    // At (or past) a limit, a velocity move further out is refused.
+                    // At (or past) a limit, a velocity move further out is refused. "At":
+                    // within 1e-9 relative, where the brake to the limit leaves the axis
+                    // (it stops there to rounding).
                     let u = ax.set.p + ax.origin;
-                    if (p.target > 0.0 && u >= ax.cfg.sw_limit_pos)
-                        || (p.target < 0.0 && u <= ax.cfg.sw_limit_neg)
+                    let (hi, lo) = (ax.cfg.sw_limit_pos, ax.cfg.sw_limit_neg);
+                    let eps = |l: f64| 1e-9 * l.abs().max(1.0);
+                    if (p.target > 0.0 && u >= hi - eps(hi))
+                        || (p.target < 0.0 && u <= lo + eps(lo))
                     {
                         return Err(ErrorId::TargetBeyondSoftwareLimit);
                     }
@@ -1158,6 +1192,7 @@ impl Engine {
                 p.lim = Self::move_limits(&ax.cfg, &dd, false)?;
                 p.kind = Kind::Cam;
                 p.sync = SyncParams { master, ..params };
+                self.cam_remaining(axis, &p.sync)?;
                 p.speed = 0.0;
             }
             AxisCommand::GearOut | AxisCommand::CamOut => {}
@@ -1225,12 +1260,19 @@ impl Engine {
                 Self::check_path(ax, &o.prof, o.tail.as_ref())?;
             }
         }
+        if (buffer == BufferMode::Aborting || idle) && pending.kind == Kind::Cam {
+            // The coupling must fit the slave's limits: refused before anything running
+            // is aborted (README "Camming").
+            self.plan_cam(axis, &pending.sync)?;
+        }
         let id = self.cmds.alloc(CmdStatus::Queued);
         let pending = Pending { id, ..pending };
         if buffer == BufferMode::Aborting || idle {
             self.abort_all(axis, CmdStatus::Aborted);
             if let Err(e) = self.activate(axis, pending, 0.0) {
                 self.cmds.set(id, CmdStatus::Error(e));
+            } else if pending.kind == Kind::Stop {
+                self.note_stop_cap(axis, id, &dynamics, &pending.lim);
             }
         } else {
             self.link_successor(axis, &pending);
@@ -1239,6 +1281,44 @@ impl Engine {
             }
         }
         Ok(id)
+    }
+
+    /// Records an MC_Stop whose Deceleration or Jerk the axis limits capped.
+    fn note_stop_cap(&mut self, axis: usize, cmd: CmdId, d: &Dynamics, lim: &Limits) {
+        let dec_capped = d.deceleration > lim.dmax;
+        let jerk_capped = d.jerk > 0.0 && lim.jmax > 0.0 && d.jerk > lim.jmax;
+        if !(dec_capped || jerk_capped) {
+            return;
+        }
+        let r = StopReduction {
+            cmd,
+            deceleration_requested: d.deceleration,
+            deceleration_reached: lim.dmax,
+            jerk_requested: d.jerk,
+            jerk_reached: lim.jmax,
+        };
+        let c = &mut self.stop_caps[axis];
+        if c.kept.len() < crate::group::REDUCTIONS_KEPT {
+            c.kept.push(r);
+        }
+        c.count += 1;
+        c.last = Some((self.cycles, r));
+    }
+
+    /// The MC_Stop commands of an axis whose Deceleration or Jerk was capped to the axis
+    /// limits (the first `REDUCTIONS_KEPT`), and how many there were in all.
+    pub fn stop_reductions(&self, axis: usize) -> Result<(&[StopReduction], usize), ErrorId> {
+        self.axis(axis)?;
+        let c = &self.stop_caps[axis];
+        Ok((&c.kept, c.count))
+    }
+
+    /// The capped MC_Stop that started in the last cycle (the cycle after the scan that gave
+    /// it), if any: what the trace columns `axis.<A>.stop_*` show.
+    pub fn stop_reduction_now(&self, axis: usize) -> Result<Option<StopReduction>, ErrorId> {
+        self.axis(axis)?;
+        let c = &self.stop_caps[axis];
+        Ok(c.last.filter(|(k, _)| k + 1 == self.cycles).map(|(_, r)| r))
     }
 
     /// ContinuousUpdate: new inputs for a command that is still Busy.
@@ -1395,6 +1475,11 @@ impl Engine {
         if p.kind == Kind::Position {
             Self::check_path(&self.axes[axis], &prof, tail.as_ref())?;
         }
+        let cam = if p.kind == Kind::Cam {
+            Some(self.plan_cam(axis, &p.sync)?)
+        } else {
+            None
+        };
         let ax = &mut self.axes[axis];
         let class = match p.kind {
             Kind::Position | Kind::Halt => AxisState::DiscreteMotion,
@@ -1431,8 +1516,15 @@ impl Engine {
                     d.start_homing();
                 }
             }
-            Kind::Gear | Kind::Cam => {
+            Kind::Gear => {
                 self.start_sync(axis);
+            }
+            Kind::Cam => {
+                if let Some((sync, prof, lim)) = cam {
+                    // The catch-up starts from the state it was planned from (as gearing).
+                    let a = &mut self.axes[axis].active;
+                    (a.sync, a.prof, a.lim, a.t) = (sync, prof, lim, 0.0);
+                }
             }
             _ => {
                 let a = &self.axes[axis].active;

@@ -62,6 +62,8 @@ pub enum ErrorId {
     PlanningFailed = 31,
     /// ExecutionMode, StartMode or another enumerated input is out of range.
     InvalidMode = 32,
+    /// MC_CamIn: the cam law, for a master within its axis limits, needs more than the slave's velocity, acceleration or jerk limit, or the slave's motion relative to the law at coupling does not fit in what the law leaves.
+    CamBeyondSlaveLimits = 33,
     /// The axis's (or group's) command queue is full: the command is rejected, nothing is dropped.
     QueueFull = 40,
     /// Group motion or group command on a group in GroupDisabled.
@@ -150,6 +152,7 @@ impl ErrorId {
         ErrorId::InvalidOverride,
         ErrorId::PlanningFailed,
         ErrorId::InvalidMode,
+        ErrorId::CamBeyondSlaveLimits,
         ErrorId::QueueFull,
         ErrorId::GroupDisabled,
         ErrorId::GroupErrorStop,

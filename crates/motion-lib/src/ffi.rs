@@ -486,6 +486,63 @@ pub unsafe extern "C" fn mc_group_reduction_count(engine: *mut McEngine, group: 
         .map_or(0, |r| r.1 as u32)
 }
 
+/// One figure of the capped MC_Stop that started on the axis in the last cycle; 0 in every
+/// other cycle, for a bad index and for a NULL, invalid or poisoned handle.
+unsafe fn stop_now(
+    engine: *mut McEngine,
+    axis: McIndex,
+    pick: fn(&crate::engine::StopReduction) -> f64,
+) -> f64 {
+    unsafe { eng(engine) }
+        .ok()
+        .and_then(|e| e.stop_reduction_now(axis as usize).ok().flatten())
+        .map_or(0.0, |r| pick(&r))
+}
+
+/// Deceleration an MC_Stop asked for when the axis limit capped it (in the stop's first
+/// cycle; 0 otherwise, see `stop_now`).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_decel_requested(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { stop_now(engine, axis, |r| r.deceleration_requested) }
+}
+
+/// Deceleration that capped MC_Stop runs with (see `mc_axis_stop_decel_requested`).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_decel_reached(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { stop_now(engine, axis, |r| r.deceleration_reached) }
+}
+
+/// Jerk that capped MC_Stop asked for (0: the axis's; see `mc_axis_stop_decel_requested`).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_jerk_requested(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { stop_now(engine, axis, |r| r.jerk_requested) }
+}
+
+/// Jerk that capped MC_Stop runs with (see `mc_axis_stop_decel_requested`).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_jerk_reached(engine: *mut McEngine, axis: McIndex) -> f64 {
+    unsafe { stop_now(engine, axis, |r| r.jerk_reached) }
+}
+
+/// How many MC_Stop commands of the axis were capped to its limits so far (0 for a bad index).
+/// # Safety
+/// See the module contract: pointers are NULL or valid.
+#[no_mangle]
+pub unsafe extern "C" fn mc_axis_stop_reduction_count(engine: *mut McEngine, axis: McIndex) -> u32 {
+    unsafe { eng(engine) }
+        .ok()
+        .and_then(|e| e.stop_reductions(axis as usize).ok())
+        .map_or(0, |r| r.1 as u32)
+}
+
 fn master_source(x: u8) -> Result<MasterSource, ErrorId> {
     match x {
         0 => Ok(MasterSource::SetValue),
@@ -2156,7 +2213,8 @@ pub struct MC_CamIn_C {
     /// InvalidCamTable).
     pub CamTableID: u32,
     /// Periodic: TRUE repeats the table (each period the slave advances by the table's rise and
-    /// EndOfProfile pulses); FALSE holds the table's ends beyond its master range.
+    /// EndOfProfile pulses); FALSE continues the law beyond the table's master range along its end
+    /// tangents (a straight line, so the velocity never steps; end the table flat to dwell).
     pub Periodic: bool,
     /// MasterAbsolute: TRUE looks the table up with the master's absolute position; FALSE with the
     /// distance the master travelled since coupling.
@@ -3538,6 +3596,8 @@ pub const MC_ERR_INVALID_OVERRIDE: u16 = 30;
 pub const MC_ERR_PLANNING_FAILED: u16 = 31;
 /// ErrorID 32: ExecutionMode, StartMode or another enumerated input is out of range.
 pub const MC_ERR_INVALID_MODE: u16 = 32;
+/// ErrorID 33: MC_CamIn: the cam law, for a master within its axis limits, needs more than the slave's velocity, acceleration or jerk limit, or the slave's motion relative to the law at coupling does not fit in what the law leaves.
+pub const MC_ERR_CAM_BEYOND_SLAVE_LIMITS: u16 = 33;
 /// ErrorID 40: The axis's (or group's) command queue is full: the command is rejected, nothing is dropped.
 pub const MC_ERR_QUEUE_FULL: u16 = 40;
 /// ErrorID 50: Group motion or group command on a group in GroupDisabled.

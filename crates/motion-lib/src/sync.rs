@@ -1,6 +1,7 @@
 //! Synchronized motion: electronic gearing and camming (MC_GearIn, MC_CamIn).
 //!
-//! Input: a master axis, a ratio or a [`CamTable`], and the slave's state when coupling.
+//! Input: a master axis, a ratio or a [`CamTable`] (a C2 cubic spline), and the slave's state
+//! when coupling.
 //! Output: each cycle the slave set point = coupling law of the master value + a
 //! catch-up profile that takes the slave from its own state onto the law (jerk-limited
 //! with the slave's limits); InGear/InSync when the catch-up has ended.
@@ -8,17 +9,79 @@
 //! a cam table's master positions are strictly increasing; evaluation allocates nothing.
 
 use crate::cmd::CmdStatus;
-use crate::engine::{Engine, Kind, MasterSource};
+use crate::engine::{plan_position, Engine, Kind, MasterSource};
 use crate::error::ErrorId;
-use crate::profile::{Profile, State};
+use crate::profile::{Limits, Profile, State};
 
-/// A cam profile: slave position as a function of the master position (cubic Hermite
-/// through the points, slopes by finite differences).
+/// A cam profile: slave position as a function of the master position, a cubic spline
+/// through the points (twice continuously differentiable, so that the slave's velocity and
+/// acceleration never step; README "Camming"). Two splines are kept: the natural one
+/// (second derivative 0 at both ends, continued by straight lines beyond the table) for a
+/// single-shot cam, and the periodic one (first and second derivatives equal at both ends,
+/// the slave rising by the table's rise every period) for a periodic cam.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CamTable {
     master: Vec<f64>,
     slave: Vec<f64>,
-    slope: Vec<f64>,
+    /// Second derivatives at the points: natural spline.
+    m2_single: Vec<f64>,
+    /// Second derivatives at the points: periodic spline.
+    m2_periodic: Vec<f64>,
+    /// max |f'|, max |f''|, max |f'''| over the table: natural, periodic.
+    bounds: [[f64; 3]; 2],
+}
+
+/// Solves a tridiagonal system (sub `a`, diagonal `b`, super `c`, right side `r`), Thomas.
+fn tridiagonal(a: &[f64], b: &[f64], c: &[f64], r: &[f64]) -> Vec<f64> {
+    let n = b.len();
+    let mut cp = vec![0.0; n];
+    let mut x = vec![0.0; n];
+    if n == 0 {
+        return x;
+    }
+    cp[0] = c[0] / b[0];
+    x[0] = r[0] / b[0];
+    for i in 1..n {
+        let m = b[i] - a[i] * cp[i - 1];
+        cp[i] = c[i] / m;
+        x[i] = (r[i] - a[i] * x[i - 1]) / m;
+    }
+    for i in (0..n - 1).rev() {
+        x[i] -= cp[i] * x[i + 1];
+    }
+    x
+}
+
+/// Solves a cyclic tridiagonal system (row i: a[i] x[i-1] + b[i] x[i] + c[i] x[i+1] = r[i],
+/// indices mod n), by Sherman-Morrison for n >= 3.
+fn cyclic(a: &[f64], b: &[f64], c: &[f64], r: &[f64]) -> Vec<f64> {
+    let n = b.len();
+    match n {
+        1 => vec![r[0] / (a[0] + b[0] + c[0])],
+        2 => {
+            // b0 x0 + (a0 + c0) x1 = r0; (a1 + c1) x0 + b1 x1 = r1.
+            let (p, q) = (a[0] + c[0], a[1] + c[1]);
+            let det = b[0] * b[1] - p * q;
+            vec![
+                (r[0] * b[1] - p * r[1]) / det,
+                (b[0] * r[1] - q * r[0]) / det,
+            ]
+        }
+        _ => {
+            let (alpha, beta) = (c[n - 1], a[0]);
+            let gamma = -b[0];
+            let mut bb = b.to_vec();
+            bb[0] = b[0] - gamma;
+            bb[n - 1] = b[n - 1] - alpha * beta / gamma;
+            let x = tridiagonal(a, &bb, c, r);
+            let mut u = vec![0.0; n];
+            u[0] = gamma;
+            u[n - 1] = alpha;
+            let z = tridiagonal(a, &bb, c, &u);
+            let f = (x[0] + beta * x[n - 1] / gamma) / (1.0 + z[0] + beta * z[n - 1] / gamma);
+            x.iter().zip(&z).map(|(x, z)| x - f * z).collect()
+        }
+    }
 }
 
 impl CamTable {
@@ -33,23 +96,45 @@ impl CamTable {
         let master: Vec<f64> = points.iter().map(|p| p.0).collect();
         let slave: Vec<f64> = points.iter().map(|p| p.1).collect();
         let n = master.len();
-        let sec = |i: usize| (slave[i + 1] - slave[i]) / (master[i + 1] - master[i]);
-        let slope = (0..n)
-            .map(|i| {
-                if i == 0 {
-                    sec(0)
-                } else if i == n - 1 {
-                    sec(n - 2)
-                } else {
-                    0.5 * (sec(i - 1) + sec(i))
-                }
-            })
+        let h: Vec<f64> = (0..n - 1).map(|i| master[i + 1] - master[i]).collect();
+        let d: Vec<f64> = (0..n - 1)
+            .map(|i| (slave[i + 1] - slave[i]) / h[i])
             .collect();
-        Ok(CamTable {
+        // Natural spline: M_0 = M_{n-1} = 0, interior rows
+        // h_{i-1} M_{i-1} + 2 (h_{i-1} + h_i) M_i + h_i M_{i+1} = 6 (d_i - d_{i-1}).
+        let mut m2_single = vec![0.0; n];
+        if n > 2 {
+            let k = n - 2;
+            let a: Vec<f64> = (1..=k)
+                .map(|i| if i == 1 { 0.0 } else { h[i - 1] })
+                .collect();
+            let b: Vec<f64> = (1..=k).map(|i| 2.0 * (h[i - 1] + h[i])).collect();
+            let c: Vec<f64> = (1..=k).map(|i| if i == k { 0.0 } else { h[i] }).collect();
+            let r: Vec<f64> = (1..=k).map(|i| 6.0 * (d[i] - d[i - 1])).collect();
+            let x = tridiagonal(&a, &b, &c, &r);
+            m2_single[1..=k].copy_from_slice(&x);
+        }
+        // Periodic spline: unknowns M_0 .. M_{n-2}, M_{n-1} = M_0; segment indices cyclic.
+        let s = n - 1;
+        let prev = |i: usize| (i + s - 1) % s;
+        let a: Vec<f64> = (0..s).map(|i| h[prev(i)]).collect();
+        let b: Vec<f64> = (0..s).map(|i| 2.0 * (h[prev(i)] + h[i])).collect();
+        let c: Vec<f64> = (0..s).map(|i| h[i]).collect();
+        let r: Vec<f64> = (0..s).map(|i| 6.0 * (d[i] - d[prev(i)])).collect();
+        let mut m2_periodic = cyclic(&a, &b, &c, &r);
+        m2_periodic.push(m2_periodic[0]);
+        if m2_single.iter().chain(&m2_periodic).any(|x| !x.is_finite()) {
+            return Err(ErrorId::InvalidCamTable);
+        }
+        let mut t = CamTable {
             master,
             slave,
-            slope,
-        })
+            m2_single,
+            m2_periodic,
+            bounds: [[0.0; 3]; 2],
+        };
+        t.bounds = [t.derivative_bounds(false), t.derivative_bounds(true)];
+        Ok(t)
     }
 
     /// First and last master position.
@@ -62,30 +147,82 @@ impl CamTable {
         self.slave[self.slave.len() - 1] - self.slave[0]
     }
 
-    /// Slave position and dslave/dmaster at master position `x` (clamped to the range).
-    pub fn eval(&self, x: f64) -> (f64, f64) {
+    /// max |f'|, max |f''|, max |f'''| of the law (natural or periodic spline) over every
+    /// master position (beyond a single-shot table the law is a straight line).
+    pub fn bounds(&self, periodic: bool) -> [f64; 3] {
+        self.bounds[periodic as usize]
+    }
+
+    fn derivative_bounds(&self, periodic: bool) -> [f64; 3] {
+        let m2 = if periodic {
+            &self.m2_periodic
+        } else {
+            &self.m2_single
+        };
+        let mut b = [0.0f64; 3];
+        for i in 0..self.master.len() - 1 {
+            let h = self.master[i + 1] - self.master[i];
+            let (x0, x1) = (self.master[i], self.master[i + 1]);
+            let mut d1 = |x: f64| {
+                let (_, d, _) = self.segment(m2, i, x);
+                b[0] = b[0].max(d.abs());
+            };
+            d1(x0);
+            d1(x1);
+            // f' is quadratic on the segment: its extremum where f'' = 0.
+            if m2[i] * m2[i + 1] < 0.0 {
+                let u = m2[i] / (m2[i] - m2[i + 1]);
+                d1(x0 + u * h);
+            }
+            b[1] = b[1].max(m2[i].abs()).max(m2[i + 1].abs());
+            b[2] = b[2].max(((m2[i + 1] - m2[i]) / h).abs());
+        }
+        b
+    }
+
+    /// Position, first and second derivative of segment `i` at `x`.
+    fn segment(&self, m2: &[f64], i: usize, x: f64) -> (f64, f64, f64) {
+        let (x0, x1) = (self.master[i], self.master[i + 1]);
+        let (y0, y1) = (self.slave[i], self.slave[i + 1]);
+        let (a, b) = (m2[i], m2[i + 1]);
+        let h = x1 - x0;
+        let (l, r) = (x1 - x, x - x0);
+        let p = a * l * l * l / (6.0 * h)
+            + b * r * r * r / (6.0 * h)
+            + (y0 / h - a * h / 6.0) * l
+            + (y1 / h - b * h / 6.0) * r;
+        let dp = -a * l * l / (2.0 * h) + b * r * r / (2.0 * h) + (y1 - y0) / h - (b - a) * h / 6.0;
+        let ddp = (a * l + b * r) / h;
+        (p, dp, ddp)
+    }
+
+    /// Slave position and its first and second derivatives by the master position at `x`.
+    /// `periodic`: the periodic spline, `x` taken within the table (clamped); otherwise the
+    /// natural spline, continued beyond the table by its end tangents (f'' = 0 there).
+    pub fn eval(&self, x: f64, periodic: bool) -> (f64, f64, f64) {
         let (x0, x1) = self.master_range();
-        let x = x.clamp(x0, x1);
-        let i = match self.master.partition_point(|&m| m <= x) {
+        let n = self.master.len();
+        if periodic {
+            let x = x.clamp(x0, x1);
+            return self.segment(&self.m2_periodic, self.index(x), x);
+        }
+        let m2 = &self.m2_single;
+        if x < x0 {
+            let (p, d, _) = self.segment(m2, 0, x0);
+            return (p + d * (x - x0), d, 0.0);
+        }
+        if x > x1 {
+            let (p, d, _) = self.segment(m2, n - 2, x1);
+            return (p + d * (x - x1), d, 0.0);
+        }
+        self.segment(m2, self.index(x), x)
+    }
+
+    fn index(&self, x: f64) -> usize {
+        match self.master.partition_point(|&m| m <= x) {
             0 => 0,
             k => (k - 1).min(self.master.len() - 2),
-        };
-        let h = self.master[i + 1] - self.master[i];
-        let t = (x - self.master[i]) / h;
-        let (p0, p1) = (self.slave[i], self.slave[i + 1]);
-        let (m0, m1) = (self.slope[i] * h, self.slope[i + 1] * h);
-        let t2 = t * t;
-        let t3 = t2 * t;
-        let p = (2.0 * t3 - 3.0 * t2 + 1.0) * p0
-            + (t3 - 2.0 * t2 + t) * m0
-            + (-2.0 * t3 + 3.0 * t2) * p1
-            + (t3 - t2) * m1;
-        let dp = ((6.0 * t2 - 6.0 * t) * p0
-            + (3.0 * t2 - 4.0 * t + 1.0) * m0
-            + (-6.0 * t2 + 6.0 * t) * p1
-            + (3.0 * t2 - 2.0 * t) * m1)
-            / h;
-        (p, dp)
+        }
     }
 }
 
@@ -102,7 +239,8 @@ pub struct SyncParams {
     /// CamTableID.
     pub table: usize,
     /// Periodic: TRUE repeats the table (each period the slave advances by the table's rise and
-    /// EndOfProfile pulses); FALSE holds the table's ends beyond its master range.
+    /// EndOfProfile pulses); FALSE continues the law beyond the table's master range along its end
+    /// tangents (a straight line, so the velocity never steps; end the table flat to dwell).
     pub periodic: bool,
     /// MasterAbsolute: TRUE looks the table up with the master's absolute position; FALSE with the
     /// distance the master travelled since coupling.
@@ -188,8 +326,9 @@ impl Engine {
         }
     }
 
-    /// Cam law: (slave raw position, slave velocity, period index, end reached).
-    fn cam_law(&self, slave: usize, sp: &SyncParams, m: &State) -> (f64, f64, i64, bool) {
+    /// Cam law: (slave raw set point: position, velocity and acceleration by the chain
+    /// rule, period index, end reached).
+    fn cam_law(&self, slave: usize, sp: &SyncParams, m: &State) -> (State, i64, bool) {
         let table = &self.cams[sp.table];
         let mx = &self.axes[sp.master];
         let mrel = if sp.master_absolute {
@@ -206,16 +345,11 @@ impl Engine {
         } else {
             (x, 0, x >= x1)
         };
-        let (y, dy) = table.eval(xw);
+        let (y, d1, d2) = table.eval(xw, sp.periodic);
         let rise = if sp.periodic {
             table.slave_rise() * k as f64
         } else {
             0.0
-        };
-        let dy = if !sp.periodic && (x >= x1 || x <= x0) {
-            0.0
-        } else {
-            dy
         };
         let user = sp.slave_scaling * (y + rise) + sp.slave_offset;
         let raw = if sp.slave_absolute {
@@ -223,11 +357,92 @@ impl Engine {
         } else {
             user + sp.s0
         };
-        let v = sp.slave_scaling * dy * sp.master_scaling * m.v;
-        (raw, v, k, end)
+        // s(t) = ss f(ms (m(t) - off)): s' = ss ms f' m', s'' = ss (ms^2 f'' m'^2 + ms f' m'').
+        let (ms, ss) = (sp.master_scaling, sp.slave_scaling);
+        let v = ss * ms * d1 * m.v;
+        let a = ss * (ms * ms * d2 * m.v * m.v + ms * d1 * m.a);
+        (State { p: raw, v, a }, k, end)
     }
 
-    /// Couples the slave: plans the catch-up profile.
+    /// What the cam law can take of the slave's limits, for a master moving within its own
+    /// axis limits (V, A = max(amax, dmax), J): |v| <= |ss ms| F1 V,
+    /// |a| <= |ss| (ms^2 F2 V^2 + |ms| F1 A), |j| <= |ss| (|ms|^3 F3 V^3 + 3 ms^2 F2 V A + |ms| F1 J),
+    /// F1..F3 the bounds of the table's first three derivatives. Returns the limits left to
+    /// the catch-up profile; ErrorID 33 when the law alone needs all of one of the slave's
+    /// limits (README "Camming").
+    pub(crate) fn cam_remaining(&self, slave: usize, sp: &SyncParams) -> Result<Limits, ErrorId> {
+        let [f1, f2, f3] = self.cams[sp.table].bounds(sp.periodic);
+        let ml = self.axes[sp.master].cfg.limits;
+        let sl = self.axes[slave].cfg.limits;
+        let (ms, ss) = (sp.master_scaling.abs(), sp.slave_scaling.abs());
+        let (v, a) = (ml.vmax, ml.amax.max(ml.dmax));
+        let j = if ml.jmax > 0.0 {
+            ml.jmax
+        } else {
+            f64::INFINITY
+        };
+        let sv = ss * ms * f1 * v;
+        let sa = ss * (ms * ms * f2 * v * v + ms * f1 * a);
+        // 0 * inf (a straight law under a master without a jerk limit) is no jerk.
+        let fj = if f1 == 0.0 { 0.0 } else { ms * f1 * j };
+        let sj = ss * (ms * ms * ms * f3 * v * v * v + 3.0 * ms * ms * f2 * v * a + fj);
+        let rem = Limits {
+            vmax: sl.vmax - sv,
+            amax: sl.amax.min(sl.dmax) - sa,
+            dmax: sl.amax.min(sl.dmax) - sa,
+            jmax: if sl.jmax > 0.0 { sl.jmax - sj } else { 0.0 },
+        };
+        let ok = |x: f64| x.is_finite() && x > 0.0;
+        if ok(rem.vmax) && ok(rem.amax) && (sl.jmax == 0.0 || ok(rem.jmax)) {
+            Ok(rem)
+        } else {
+            Err(ErrorId::CamBeyondSlaveLimits)
+        }
+    }
+
+    /// Plans the coupling of a cam: the catch-up profile from the slave's state onto the
+    /// law, within what the law leaves of the slave's limits. ErrorID 33 when the slave's
+    /// velocity or acceleration relative to the law does not fit in that (README
+    /// "Camming"); the caller refuses the command before anything changes.
+    pub(crate) fn plan_cam(
+        &self,
+        axis: usize,
+        sync: &SyncParams,
+    ) -> Result<(SyncParams, Profile, Limits), ErrorId> {
+        let mut sp = *sync;
+        let m = self.master_state(&sp);
+        let s = self.axes[axis].set;
+        sp.m0 = m.p;
+        sp.s0 = s.p;
+        let lim = self.cam_remaining(axis, &sp)?;
+        let (c, k, _) = self.cam_law(axis, &sp, &m);
+        sp.period = k;
+        let jerk_free = lim.jmax == 0.0;
+        let e = State {
+            p: s.p - c.p,
+            v: s.v - c.v,
+            // Without a jerk limit the acceleration may step.
+            a: if jerk_free { 0.0 } else { s.a - c.a },
+        };
+        // The catch-up must start within its limits and, while its acceleration goes to
+        // 0, not carry its velocity past them.
+        let peak = if jerk_free {
+            e.v.abs()
+        } else {
+            (e.v + e.a * e.a.abs() / (2.0 * lim.jmax)).abs()
+        };
+        let tol = 1e-12;
+        if e.v.abs() > lim.vmax * (1.0 + tol)
+            || e.a.abs() > lim.amax * (1.0 + tol)
+            || peak > lim.vmax * (1.0 + tol)
+        {
+            return Err(ErrorId::CamBeyondSlaveLimits);
+        }
+        let prof = plan_position(e, 0.0, 0.0, &lim).map_err(|_| ErrorId::PlanningFailed)?;
+        Ok((sp, prof, lim))
+    }
+
+    /// Couples a geared slave: plans the catch-up profile.
     pub(crate) fn start_sync(&mut self, axis: usize) {
         let mut sp = self.axes[axis].active.sync;
         let m = self.master_state(&sp);
@@ -253,8 +468,9 @@ impl Engine {
                 // acceleration error.
                 let ea = s.a - sp.ratio * m.a;
                 let peak = |j: f64| (s.v + ea * ea.abs() / (2.0 * j)).abs();
-                if sl.jmax == 0.0 && lim.jmax > 0.0 && peak(lim.jmax) > sl.vmax {
-                    // No jerk limit on the slave: the block's would overshoot; none then.
+                if sl.jmax == 0.0 && lim.jmax > 0.0 && peak(lim.jmax) > lim.vmax {
+                    // No jerk limit on the slave: the block's would carry the catch-up past
+                    // its share of the velocity limit (the master takes the rest); none then.
                     lim.jmax = 0.0;
                 }
                 if sl.jmax > 0.0 {
@@ -286,14 +502,8 @@ impl Engine {
                 Profile::velocity(e, 0.0, &lim)
             }
             _ => {
-                let (c, cv, k, _) = self.cam_law(axis, &sp, &m);
-                sp.period = k;
-                let e = State {
-                    p: s.p - c,
-                    v: s.v - cv,
-                    a: s.a,
-                };
-                crate::engine::plan_position(e, 0.0, 0.0, &lim)
+                // Cams are planned by `plan_cam` when activated.
+                return;
             }
         };
         let a = &mut self.axes[axis].active;
@@ -328,16 +538,16 @@ impl Engine {
                 a: b.a + sp.ratio * m.a,
             },
             _ => {
-                let (c, cv, k, end) = self.cam_law(axis, &sp, &m);
+                let (c, k, end) = self.cam_law(axis, &sp, &m);
                 if let Some(id) = id {
                     let pulse = if sp.periodic { k != sp.period } else { end };
                     self.cmds.set_end_of_profile(id, pulse);
                 }
                 self.axes[axis].active.sync.period = k;
                 State {
-                    p: c + b.p,
-                    v: cv + b.v,
-                    a: b.a,
+                    p: c.p + b.p,
+                    v: c.v + b.v,
+                    a: c.a + b.a,
                 }
             }
         };

@@ -592,7 +592,13 @@ fn modulo_directions() {
 #[test]
 fn cam_follows_table() {
     let (mut e, slave) = engine();
-    let master = e.add_axis(AxisConfig::default()).unwrap();
+    // The cam law must fit the slave's limits for any master motion within the master's
+    // axis limits (ErrorID 33 otherwise): a master of at most 20 mm/s.
+    let mut mc = AxisConfig::default();
+    mc.limits.vmax = 20.0;
+    mc.limits.amax = 1000.0;
+    mc.limits.dmax = 1000.0;
+    let master = e.add_axis(mc).unwrap();
     McPower {
         enable: true,
         ..Default::default()
@@ -642,7 +648,7 @@ fn cam_follows_table() {
     }
     assert!(cam.in_sync);
     let m = e.set_position_of(master).unwrap();
-    let expect = e.cam_table(id).unwrap().eval(m.rem_euclid(20.0)).0;
+    let expect = e.cam_table(id).unwrap().eval(m.rem_euclid(20.0), true).0;
     assert!(
         (e.set_position_of(slave).unwrap() - expect).abs() < 1e-6,
         "{} {} {}",

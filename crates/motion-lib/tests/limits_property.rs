@@ -3,7 +3,8 @@
 //! Input: a seeded generator (xorshift) of sequences: random axis limits and cycle times, single-axis
 //! sequences (MC_MoveAbsolute, MC_MoveRelative, MC_MoveAdditive, MC_MoveVelocity, MC_Halt, MC_Stop,
 //! MC_SetOverride changes while moving; in one of six a master axis with its own moves and
-//! MC_GearIn / MC_GearOut on the slave) and 2- or 3-axis group sequences (MC_MoveLinearAbsolute,
+//! MC_GearIn / MC_GearOut on the slave, in another one of six MC_CamIn / MC_CamOut with a random
+//! cam table) and 2- or 3-axis group sequences (MC_MoveLinearAbsolute,
 //! MC_MoveLinearRelative, MC_MoveCircularRelative / Absolute in BORDER, CENTER and RADIUS mode,
 //! planar or helical, MC_MoveDirectAbsolute, MC_GroupHalt, MC_GroupStop), every BufferMode,
 //! TransitionModes TMNone / TMCornerDistance / TMMaxCornerDeviation, random Execute patterns
@@ -19,11 +20,12 @@
 
 use motion_lib::axis::AxisConfig;
 use motion_lib::blocks::{
-    McGearIn, McGearOut, McHalt, McMoveAbsolute, McMoveAdditive, McMoveRelative, McMoveVelocity,
-    McPower, McSetOverride, McStop,
+    McCamIn, McCamOut, McGearIn, McGearOut, McHalt, McMoveAbsolute, McMoveAdditive, McMoveRelative,
+    McMoveVelocity, McPower, McSetOverride, McStop,
 };
 use motion_lib::buffer::{BufferMode, Direction, TransitionMode};
 use motion_lib::engine::{Engine, EngineConfig};
+use motion_lib::error::ErrorId;
 use motion_lib::fsm::{AxisState, GroupState};
 use motion_lib::group_blocks::{
     McAddAxisToGroup, McGroupEnable, McGroupHalt, McGroupStop, McMoveCircularAbsolute,
@@ -31,6 +33,7 @@ use motion_lib::group_blocks::{
 };
 use motion_lib::path::CircMode;
 use motion_lib::profile::Limits;
+use motion_lib::sync::CamTable;
 
 fn trace_seq() -> Option<u64> {
     static TRACE: std::sync::OnceLock<Option<u64>> = std::sync::OnceLock::new();
@@ -131,6 +134,9 @@ struct Stats {
     sequences: u64,
     cycles: u64,
     commands: u64,
+    /// Cycles in which an MC_CamIn showed InSync; CamIn commands refused with ErrorID 33.
+    cam_in_sync: u64,
+    cam_refused: u64,
     violations: Vec<String>,
 }
 
@@ -277,6 +283,9 @@ enum Axb {
     /// MC_GearIn on the master axis (the slave is the sequence's axis).
     Gear(McGearIn),
     GearOut(McGearOut),
+    /// MC_CamIn on the master axis.
+    Cam(McCamIn),
+    CamOut(McCamOut),
 }
 
 impl Axb {
@@ -322,11 +331,62 @@ impl Axb {
                 b.call_gear_out(eng, ax);
                 (b.busy, b.done, b.error, false, false)
             }
+            Axb::Cam(b) => {
+                b.execute = x;
+                b.call(eng, ax + 1, ax);
+                (b.busy, false, b.error, b.command_aborted, b.active)
+            }
+            Axb::CamOut(b) => {
+                b.execute = x;
+                b.call_cam_out(eng, ax);
+                (b.busy, b.done, b.error, false, false)
+            }
         }
     }
 }
 
-/// Master of a gearing sequence: its own random moves, limits a fraction of the slave's.
+/// A random cam table (2 to 8 points over `len`, slave values within +-`rise`) and its
+/// periodic flag.
+fn cam_table(r: &mut Rng, len: f64, rise: f64) -> (CamTable, bool) {
+    let n = 2 + r.n(7) as usize;
+    let mut x = r.range(-len, len);
+    let mut pts = Vec::with_capacity(n);
+    for _ in 0..n {
+        pts.push((x, rise * r.range(-1.0, 1.0)));
+        x += len / n as f64 * r.range(0.2, 2.0);
+    }
+    (CamTable::new(&pts).unwrap(), r.chance(0.5))
+}
+
+/// Master limits for a cam: the law takes about `share` (sometimes more: refused with
+/// ErrorID 33) of the slave's limits `sl` for a master within them.
+fn cam_master_limits(r: &mut Rng, sl: &Limits, b: [f64; 3], share: f64) -> Limits {
+    // b: bounds of the law's first three derivatives by the master, scalings included.
+    let [f1, f2, f3] = b;
+    let tiny = 1e-300;
+    let s = share * r.range(0.3, 1.3);
+    let sa = sl.amax.min(sl.dmax);
+    let v = (s * sl.vmax / f1.max(tiny)).min((0.5 * s * sa / f2.max(tiny)).sqrt());
+    let a = 0.5 * s * sa / f1.max(tiny);
+    let j = if sl.jmax == 0.0 {
+        if r.chance(0.5) {
+            0.0
+        } else {
+            a * 20.0
+        }
+    } else {
+        ((s * sl.jmax - f3 * v * v * v - 3.0 * f2 * v * a) / f1.max(tiny)).max(a * 1e-3)
+    };
+    Limits {
+        vmax: v.clamp(1e-9, 1e12),
+        amax: a.clamp(1e-9, 1e12),
+        dmax: a.clamp(1e-9, 1e12) * r.range(0.5, 1.0),
+        jmax: j.min(1e15),
+    }
+}
+
+/// Master of a gearing or camming sequence: its own random moves, limits a fraction of the
+/// slave's.
 struct Master {
     lim: Limits,
     blocks: Vec<(Axb, Pattern)>,
@@ -350,14 +410,40 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
     let span = 20 + r.n(150);
     // Gearing in one sequence of six: a master axis (index ax + 1) whose limits times the
     // ratio are at most 0.4 of the slave's, so that the slave can follow and catch up.
+    // Camming in another one of six: a random table whose law, for a master within its
+    // limits, takes about 0.05-0.4 of the slave's (sometimes more: refused, ErrorID 33).
     let ratio = r.range(0.2, 2.0) * if r.chance(0.3) { -1.0 } else { 1.0 };
-    let mut master = if r.chance(1.0 / 6.0) {
+    let coupling = r.n(6);
+    let cam = if coupling == 1 {
+        let rise = sc.dist * r.range(0.1, 1.0);
+        let (table, periodic) = cam_table(r, sc.dist, rise);
+        let ms = r.range(0.5, 2.0) * if r.chance(0.3) { -1.0 } else { 1.0 };
+        let ss = r.range(0.5, 2.0) * if r.chance(0.3) { -1.0 } else { 1.0 };
+        Some((table, periodic, ms, ss))
+    } else {
+        None
+    };
+    let mut master = if coupling <= 1 {
         let f = r.range(0.05, 0.4) / ratio.abs();
-        let ml = Limits {
-            vmax: sc.lim.vmax * f,
-            amax: sc.lim.amax.min(sc.lim.dmax) * f,
-            dmax: sc.lim.amax.min(sc.lim.dmax) * f,
-            jmax: sc.lim.jmax * f,
+        let ml = match &cam {
+            None => Limits {
+                vmax: sc.lim.vmax * f,
+                amax: sc.lim.amax.min(sc.lim.dmax) * f,
+                dmax: sc.lim.amax.min(sc.lim.dmax) * f,
+                jmax: sc.lim.jmax * f,
+            },
+            Some((table, periodic, ms, ss)) => {
+                let [f1, f2, f3] = table.bounds(*periodic);
+                let (ms, ss) = (ms.abs(), ss.abs());
+                let b = [ss * ms * f1, ss * ms * ms * f2, ss * ms * ms * ms * f3];
+                // One in ten too much for the slave: refused with ErrorID 33.
+                let share = if r.chance(0.1) {
+                    r.range(1.5, 3.0)
+                } else {
+                    r.range(0.05, 0.4)
+                };
+                cam_master_limits(r, &sc.lim, b, share)
+            }
         };
         let m = eng.add_axis(axis_cfg(ml)).unwrap();
         assert_eq!(m, ax + 1);
@@ -369,9 +455,14 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
         let mut mb = Vec::new();
         for _ in 0..1 + r.n(3) {
             let (v, a, d, j) = dyn4(r, &ml);
+            let span_m = ml.vmax * sc.dt * span as f64;
             let b = if r.chance(0.5) {
                 Axb::Abs(McMoveAbsolute {
-                    position: sc.dist * f * r.range(-1.5, 1.5),
+                    position: if cam.is_some() {
+                        span_m * r.range(-1.5, 1.5)
+                    } else {
+                        sc.dist * f * r.range(-1.5, 1.5)
+                    },
                     velocity: v,
                     acceleration: a,
                     deceleration: d,
@@ -399,6 +490,7 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
     } else {
         None
     };
+    let cam_id = cam.as_ref().map(|(t, ..)| eng.add_cam_table(t.clone()));
     for _ in 0..nb {
         let (mut v, a, d, j) = dyn4(r, &sc.lim);
         if master.is_some() {
@@ -408,7 +500,12 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
         }
         let bm = buffer_mode(r);
         let dist = sc.dist * r.range(-1.5, 1.5);
-        let kinds = if master.is_some() { 9 } else { 7 };
+        let kinds = match (&master, &cam) {
+            (None, _) => 7,
+            (Some(_), None) => 9,
+            // Camming sequences: MC_CamIn three times as often as the others.
+            (Some(_), Some(_)) => 11,
+        };
         let b = match r.n(kinds) {
             0 | 1 => Axb::Abs(McMoveAbsolute {
                 position: dist,
@@ -457,6 +554,22 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
                 jerk: j,
                 ..Default::default()
             }),
+            7 | 9 | 10 if cam.is_some() => {
+                let (_, periodic, ms, ss) = cam.as_ref().unwrap();
+                Axb::Cam(McCamIn {
+                    cam_table_id: cam_id.unwrap(),
+                    periodic: *periodic,
+                    master_absolute: r.chance(0.5),
+                    slave_absolute: r.chance(0.5),
+                    master_scaling: *ms,
+                    slave_scaling: *ss,
+                    master_offset: sc.dist * r.range(-0.5, 0.5),
+                    slave_offset: sc.dist * r.range(-0.5, 0.5),
+                    buffer_mode: bm,
+                    ..Default::default()
+                })
+            }
+            _ if cam.is_some() => Axb::CamOut(McCamOut::default()),
             7 => Axb::Gear(McGearIn {
                 ratio_numerator: ratio,
                 ratio_denominator: 1.0,
@@ -506,6 +619,18 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
                 Axb::Stop(b) => format!("stop d {} j {}", b.deceleration, b.jerk),
                 Axb::Gear(b) => format!("gear {} {:?}", b.ratio_numerator, b.buffer_mode),
                 Axb::GearOut(_) => "gear out".to_string(),
+                Axb::Cam(b) => format!(
+                    "cam periodic {} abs {}/{} scaling {}/{} offsets {}/{} {:?}",
+                    b.periodic,
+                    b.master_absolute,
+                    b.slave_absolute,
+                    b.master_scaling,
+                    b.slave_scaling,
+                    b.master_offset,
+                    b.slave_offset,
+                    b.buffer_mode
+                ),
+                Axb::CamOut(_) => "cam out".to_string(),
             };
             eprintln!(
                 "{d} start {} hold {} again {:?}",
@@ -515,6 +640,9 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
         eprintln!("overrides {overrides:?}");
         if let Some(m) = &master {
             eprintln!("master {:?} {} blocks", m.lim, m.blocks.len());
+        }
+        if let Some((t, periodic, ..)) = &cam {
+            eprintln!("cam {t:?} periodic {periodic}");
         }
         eprintln!("limits {:?} dt {}", sc.lim, sc.dt);
     }
@@ -568,8 +696,14 @@ fn single_axis(r: &mut Rng, st: &mut Stats, seq: u64) {
         let mut actives = 0;
         for (b, pat, oc) in blocks.iter_mut() {
             let x = pat.execute(k) && !(matches!(b, Axb::Stop(_)) && k >= stop_at);
+            let was_err = matches!(b, Axb::Cam(c) if c.error);
             let o = b.call(&mut eng, ax, x);
             oc.see(o.0, o.1, o.2, o.3, o.4, &|| what(k), &mut st.violations);
+            if let Axb::Cam(c) = b {
+                st.cam_in_sync += c.in_sync as u64;
+                st.cam_refused +=
+                    (c.error && !was_err && c.error_id == ErrorId::CamBeyondSlaveLimits) as u64;
+            }
             if x && (k == 0 || !pat.execute(k - 1)) {
                 actives = 0;
             }
@@ -1101,12 +1235,15 @@ fn random_sequences_keep_the_limits_and_the_output_rules() {
         }
     }
     println!(
-        "limits property: {} sequences, {} cycles, {} commands, {} violations, {:.1} s",
+        "limits property: {} sequences, {} cycles, {} commands, {} violations, {:.1} s \
+         (MC_CamIn: {} cycles InSync, {} refused with ErrorID 33)",
         st.sequences,
         st.cycles,
         st.commands,
         st.violations.len(),
-        t0.elapsed().as_secs_f64()
+        t0.elapsed().as_secs_f64(),
+        st.cam_in_sync,
+        st.cam_refused
     );
     assert!(st.violations.is_empty(), "{:#?}", st.violations);
     assert!(st.sequences >= n);

@@ -81,6 +81,7 @@ fn a_stop_asking_for_more_than_the_axis_has_is_capped_to_the_axis_limits() {
     };
     let mut prev = Some(e.set_acceleration_of(a).unwrap());
     let mut cycles = 0;
+    let mut reported = Vec::new();
     for _ in 0..10_000 {
         m.call(&mut e, a);
         stop.call(&mut e, a);
@@ -90,8 +91,45 @@ fn a_stop_asking_for_more_than_the_axis_has_is_capped_to_the_axis_limits() {
         e.step();
         cycles += 1;
         within(&e, a, &LIM, &mut prev);
+        if let Some(r) = e.stop_reduction_now(a).unwrap() {
+            reported.push((cycles, r));
+        }
     }
     assert!(stop.done && m.command_aborted);
+    // The cap is reported as a reduction: in the stop's first cycle only, and counted.
+    assert_eq!(reported.len(), 1, "{reported:?}");
+    let (at, r) = reported[0];
+    assert_eq!(at, 1);
+    assert_eq!(
+        (r.deceleration_requested, r.deceleration_reached),
+        (1.0e5, 1000.0)
+    );
+    assert_eq!((r.jerk_requested, r.jerk_reached), (1.0e7, 10000.0));
+    let (kept, count) = e.stop_reductions(a).unwrap();
+    assert_eq!((kept.len(), count), (1, 1));
+    // A stop within the limits (Jerk 0 = the axis's) is not a reduction.
+    stop.execute = false;
+    stop.call(&mut e, a);
+    let mut m2 = run_velocity(&mut e, a, 50.0, 1);
+    for _ in 0..400 {
+        m2.call(&mut e, a);
+        e.step();
+    }
+    let mut soft = McStop {
+        execute: true,
+        deceleration: 500.0,
+        jerk: 0.0,
+        ..Default::default()
+    };
+    assert!(
+        (e.set_velocity_of(a).unwrap() - 50.0).abs() < 1e-9,
+        "moving again"
+    );
+    soft.call(&mut e, a);
+    e.step();
+    assert!(soft.busy, "{:?}", soft.error_id);
+    assert_eq!(e.stop_reduction_now(a).unwrap(), None);
+    assert_eq!(e.stop_reductions(a).unwrap().1, 1);
     assert_eq!(e.axis_state(a).unwrap(), AxisState::Stopping);
     // With the axis's own limits: 0.1 s of jerk, 0.1 s of deceleration, 0.1 s of jerk
     // (100 = 1000 * 0.1 + 1000 * 0.1 / 2 * 2), about 200 cycles (not 1 or 2).

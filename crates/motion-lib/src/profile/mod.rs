@@ -397,8 +397,41 @@ impl Profile {
         let mut block = kernel::Block::default();
         match Solved::new(start, target_p, target_v, lim, &mut block) {
             Some(sol) => Ok(sol.build(&block.p_min)),
-            None => Self::position_after_zero_acceleration(start, target_p, target_v, lim),
+            None => Self::position_relative(start, target_p, target_v, lim).or_else(|_| {
+                Self::position_after_zero_acceleration(start, target_p, target_v, lim)
+            }),
         }
+    }
+
+    /// Fallback for a start far from the origin (|p| around 1e11 and beyond with long moves,
+    /// `tests/data/ruckig-unseen.jsonl`'s `decades` kind): the kernel's root checks lose the
+    /// digits they need in absolute positions (and the fast paths are not tried), so the same
+    /// problem is solved with the start at 0 and the phases are replayed from the real start.
+    #[inline(never)]
+    fn position_relative(
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> Result<Profile, PlanError> {
+        let no_solution = PlanError::NoSolution {
+            start,
+            target_p,
+            target_v,
+        };
+        if start.p == 0.0 {
+            return Err(no_solution);
+        }
+        let rel = State { p: 0.0, ..start };
+        // (With the start at 0 this fallback is not taken again.)
+        let prof = Self::position(rel, target_p - start.p, target_v, lim)
+            .map_err(|_| no_solution.clone())?;
+        let n = prof.phases().len();
+        let mut items = [(0.0, 0.0); MAX_PHASES];
+        for (k, ph) in prof.phases().iter().enumerate() {
+            items[k] = (ph.duration, ph.jerk);
+        }
+        Ok(Profile::build(start, &items[..n], false, None))
     }
 
     /// The phases of [`Profile::position`] when a closed-form fast path applies (valid

@@ -170,6 +170,50 @@ int main(void) {
     mc_group_stop(eng, g, &gs);
     if (mc_group_state(eng, g) != 1) FAIL(21, "group stop not released");
 
+    /* MC_CamIn: a law too fast for the slave (master up to 1000 mm/s, slope about 1, slave
+       limited to 100 mm/s) is refused with ErrorID 33; under a slow master it couples. */
+    {
+        MC_AxisConfig_C sc = cfg;
+        sc.VelocityLimit = 100.0;
+        McIndex slave = 0, fast = 0, slow = 0, table = 0;
+        if (mc_engine_add_axis(eng, &sc, &slave) != MC_OK) FAIL(22, "add slave");
+        if (mc_engine_add_axis(eng, &cfg, &fast) != MC_OK) FAIL(22, "add master");
+        MC_AxisConfig_C lc = cfg;
+        lc.VelocityLimit = 10.0;
+        lc.AccelerationLimit = 10.0;
+        lc.DecelerationLimit = 10.0;
+        lc.JerkLimit = 100.0;
+        if (mc_engine_add_axis(eng, &lc, &slow) != MC_OK) FAIL(22, "add slow master");
+        McIndex each[3] = {slave, fast, slow};
+        for (int k = 0; k < 3; k++) {
+            MC_Power_C p;
+            memset(&p, 0, sizeof p);
+            p.Enable = true;
+            mc_power(eng, each[k], &p);
+        }
+        const double m[3] = {0.0, 10.0, 20.0}, s[3] = {0.0, 10.0, 0.0};
+        if (mc_engine_add_cam_table(eng, m, s, 3, &table) != MC_OK) FAIL(23, "add cam table");
+        MC_CamIn_C cam;
+        memset(&cam, 0, sizeof cam);
+        cam.Execute = true;
+        cam.CamTableID = table;
+        cam.Periodic = true;
+        mc_cam_in(eng, fast, slave, &cam);
+        if (!cam.Error || cam.ErrorID != MC_ERR_CAM_BEYOND_SLAVE_LIMITS)
+            FAIL(24, "a cam too fast for the slave accepted (%u)", (unsigned)cam.ErrorID);
+        MC_CamIn_C ok;
+        memset(&ok, 0, sizeof ok);
+        ok.Execute = true;
+        ok.CamTableID = table;
+        ok.Periodic = true;
+        for (cycles = 0; cycles < 5000 && !ok.InSync; cycles++) {
+            mc_cam_in(eng, slow, slave, &ok);
+            if (ok.Error) FAIL(25, "cam refused %u", (unsigned)ok.ErrorID);
+            mc_engine_step(eng);
+        }
+        if (!ok.InSync || mc_axis_state(eng, slave) != 5) FAIL(26, "not in sync");
+    }
+
     printf("frames ok\n");
     mc_engine_destroy(eng);
     return 0;
