@@ -479,7 +479,22 @@ impl Profile {
         let jerk = -start.a.signum() * lim.jmax;
         let mut mid = start.integrate(t0, jerk);
         mid.a = 0.0;
-        let rest = Self::position(mid, target_p, target_v, lim).map_err(|_| no_solution.clone())?;
+        // `amax` bounds the acceleration towards the target as seen from the start. When the
+        // ramp carries the axis past the target, the rest is a move the other way, whose
+        // `amax` would bound the opposite sign: swap the two so that the bounds stay those of
+        // the problem (else the rest may brake at up to `amax` where `dmax` applies).
+        let forward = target_p >= start.p;
+        let sub = if (target_p >= mid.p) == forward {
+            *lim
+        } else {
+            Limits {
+                amax: lim.dmax,
+                dmax: lim.amax,
+                ..*lim
+            }
+        };
+        let rest =
+            Self::position(mid, target_p, target_v, &sub).map_err(|_| no_solution.clone())?;
         if rest.phases().len() + 1 > MAX_PHASES {
             return Err(no_solution);
         }
@@ -803,5 +818,43 @@ mod cursor_tests {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod fallback_tests {
+    use super::*;
+
+    /// The zero-acceleration fallback ramps a0 = 13777.9 to 0 at full jerk, which carries the
+    /// axis past the target (285 ahead, moving at 9318 towards it). The rest is then a move
+    /// the other way, but the bounds stay those of the problem: acceleration within
+    /// [-dmax, amax] = [-46596.9, 352671.8] (before, the rest braked at up to -115,522).
+    #[test]
+    fn the_zero_acceleration_fallback_keeps_the_problems_acceleration_bounds() {
+        let lim = Limits {
+            vmax: 50114.6192,
+            amax: 352671.798,
+            dmax: 46596.8768,
+            jmax: 185930.911,
+        };
+        let start = State {
+            p: 326225.245,
+            v: 9318.1428,
+            a: 13777.9233,
+        };
+        let (p1, v1) = (326510.475, -45179.1836);
+        let prof = Profile::position_after_zero_acceleration(start, p1, v1, &lim).unwrap();
+        let d = prof.duration();
+        let tol = 1e-9 * lim.amax;
+        for s in prof.phase_starts().iter().chain([&prof.at(d)]) {
+            assert!(s.a <= lim.amax + tol && s.a >= -lim.dmax - tol, "{s:?}");
+        }
+        let end = prof.at(d);
+        assert!(
+            (end.p - p1).abs() < 1e-6 && (end.v - v1).abs() < 1e-6,
+            "{end:?}"
+        );
+        // The fallback is not time-optimal (ruckig 0.19.4: 2.5167 s), but close.
+        assert!(d > 2.5167134 && d < 2.7, "{d}");
     }
 }
