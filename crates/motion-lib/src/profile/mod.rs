@@ -395,7 +395,7 @@ impl Profile {
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
         let mut block = kernel::Block::default();
-        match Solved::new(start, target_p, target_v, lim, &mut block) {
+        match Solved::new(start, target_p, target_v, lim, 0.0, &mut block) {
             Some(sol) => Ok(sol.build(&block.p_min)),
             None => Self::position_relative(start, target_p, target_v, lim).or_else(|_| {
                 Self::position_after_zero_acceleration(start, target_p, target_v, lim)
@@ -423,9 +423,18 @@ impl Profile {
             return Err(no_solution);
         }
         let rel = State { p: 0.0, ..start };
+        let dist = target_p - start.p;
+        // The end position to 16 ulps of the distance, or 1e-8 if coarser: beyond a distance
+        // of about 2.8e6 ruckig's absolute 1e-8 is finer than the doubles near the target.
+        let p_tol = 16.0 * f64::EPSILON * dist.abs();
+        let mut block = kernel::Block::default();
+        let tolerant = Solved::new(rel, dist, target_v, lim, p_tol, &mut block)
+            .map(|sol| sol.build(&block.p_min));
         // (With the start at 0 this fallback is not taken again.)
-        let prof = Self::position(rel, target_p - start.p, target_v, lim)
-            .map_err(|_| no_solution.clone())?;
+        let prof = match tolerant {
+            Some(prof) => prof,
+            None => Self::position(rel, dist, target_v, lim).map_err(|_| no_solution.clone())?,
+        };
         let n = prof.phases().len();
         let mut items = [(0.0, 0.0); MAX_PHASES];
         for (k, ph) in prof.phases().iter().enumerate() {
@@ -533,7 +542,7 @@ impl Profile {
     ) -> Result<Profile, PlanError> {
         check_inputs(&start, target_p, target_v, lim)?;
         let mut block = kernel::Block::default();
-        let sol = Solved::new(start, target_p, target_v, lim, &mut block).ok_or(
+        let sol = Solved::new(start, target_p, target_v, lim, 0.0, &mut block).ok_or(
             PlanError::NoSolution {
                 start,
                 target_p,
@@ -654,12 +663,14 @@ struct Solved {
 }
 
 impl Solved {
-    /// Solves the problem; the step-1 result goes to `block`.
+    /// Solves the problem; the step-1 result goes to `block`. `p_tol`: the kernel's tolerance
+    /// of the end position when coarser than 1e-8 (0 for ruckig's).
     fn new(
         start: State,
         target_p: f64,
         target_v: f64,
         lim: &Limits,
+        p_tol: f64,
         block: &mut kernel::Block,
     ) -> Option<Solved> {
         let s = if target_p >= start.p { 1.0 } else { -1.0 };
@@ -669,7 +680,10 @@ impl Solved {
         let (vmax, a_max, a_min, jmax) = (lim.vmax, lim.amax, -lim.dmax, lim.jmax);
         let mut brake = kernel::brake::BrakeProfile::new();
         let (mut ps, mut vs, mut as_) = (p0, v0, a0);
-        let mut input = kernel::kprofile::Profile::default();
+        let mut input = kernel::kprofile::Profile {
+            p_tol,
+            ..Default::default()
+        };
         let found = if trapezoidal {
             brake.get_second_order_position_brake_trajectory(v0, vmax, -vmax, a_max, a_min);
             brake.finalize_second_order(&mut ps, &mut vs, &mut as_);

@@ -86,6 +86,12 @@ pub struct Profile {
     /// Target final acceleration
     pub af: f64,
 
+    /// Tolerance of the final position when coarser than ruckig's 1e-8 (0: ruckig's). Set
+    /// for a problem solved relative to its start (`Profile::position_relative`): with a
+    /// distance beyond about 2.8e6 the spacing of doubles near the target exceeds 1e-8 / 16,
+    /// and an absolute 1e-8 can only pass when the rounding happens to land on the target.
+    pub p_tol: f64,
+
     /// Information about which kinematic limits were reached
     pub limits: ReachedLimits,
 
@@ -247,7 +253,7 @@ impl Profile {
             a_max
         } - A_EPS;
 
-        (self.p[7] - self.pf).abs() < P_PRECISION
+        (self.p[7] - self.pf).abs() < P_PRECISION.max(self.p_tol)
             && (self.v[7] - self.vf).abs() < V_PRECISION
             && (self.a[7] - self.af).abs() < A_PRECISION
             && self.a[1] >= a_low_lim
@@ -291,6 +297,7 @@ impl Profile {
         self.af = profile.af;
         self.vf = profile.vf;
         self.pf = profile.pf;
+        self.p_tol = profile.p_tol;
     }
 
     #[inline]
