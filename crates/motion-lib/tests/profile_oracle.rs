@@ -276,18 +276,20 @@ fn check_file(path: &str) -> usize {
     n
 }
 
-/// Problems of the 84,000-problem sweep (`gen_sweep.py 12000 14`) that this planner got wrong
-/// before ruckig's exact plateaus were used in the ACC0_ACC1 and ACC1 families (the rounded
-/// plateau `a0 + t j` exceeded the limit by more than the absolute 1e-12 tolerance when the
-/// accelerations are large, so no profile, or a slower one, was found), and the 1.6e13 move of
-/// `gen_unseen.py 4000 7`. Each with ruckig 0.19.4's duration.
+/// Problems of the 84,000-problem sweeps (`gen_sweep.py 12000 14` and `12000 15`) that this
+/// planner got wrong, each with ruckig 0.19.4's duration: 24 before ruckig's exact plateaus
+/// were used in the ACC0_ACC1 and ACC1 families (the rounded plateau `a0 + t j` exceeded the
+/// limit by more than the absolute 1e-12 tolerance when the accelerations are large, so no
+/// profile, or a slower one, was found), and the 1.6e13 move of `gen_unseen.py 4000 7`; the
+/// last two (decades 23628.7 s, mixed 3512.3 s) before the relative solve's end-position
+/// tolerance followed the scale of the integration (1e-8 absolute is finer than its rounding).
 #[test]
 fn sweep_regressions_match_ruckig() {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/tests/data/ruckig-sweep-regressions.jsonl"
     );
-    assert_eq!(check_file(path), 26);
+    assert_eq!(check_file(path), 27);
 }
 
 /// 5005 problems of `gen_sweep.py 715 2026` (715 of each kind: the five of `gen_unseen.py`,
@@ -301,9 +303,9 @@ fn sweep_sample_matches_ruckig() {
     assert_eq!(check_file(path), 5005);
 }
 
-/// The 7 problems of the sweeps (`gen_sweep.py 12000 14`, `gen_unseen.py 4000 7`) where this
-/// planner is faster than ruckig 0.19.4 (by 5 % to 58 %). Ruckig returns, for each, three
-/// phases with a constant acceleration between 0 % and 46 % of the limit (its two-step
+/// The 12 problems of the sweeps (`gen_sweep.py 12000 14` and `12000 15`, `gen_unseen.py 4000
+/// 7`) where this planner is faster than ruckig 0.19.4 (by 0.9 % to 67 %). Ruckig returns, for
+/// each, three phases with a constant acceleration between 0 % and 46 % of the limit (its two-step
 /// fallback family, taken when the regular families fail numerically); ours is a regular
 /// family and valid: checked here in doubles at every phase boundary and interior velocity
 /// extremum, and in exact rational arithmetic by `tests/data/check_exact.py` (limits and end
@@ -332,7 +334,7 @@ fn where_ruckig_is_slower_our_profile_is_valid() {
         let (p1, v1) = (f(&v, "p1"), f(&v, "v1"));
         let prof = Profile::position(start, p1, v1, &lim).unwrap();
         let d = prof.duration();
-        assert!(d < 0.95 * f(&v, "duration"), "{line}: {d}");
+        assert!(d < (1.0 - 1e-6) * f(&v, "duration"), "{line}: {d}");
         // Acceleration bounds as seen from the start: amax towards the target.
         let (hi, lo) = if p1 >= start.p {
             (lim.amax, lim.dmax)
@@ -366,5 +368,5 @@ fn where_ruckig_is_slower_our_profile_is_valid() {
         assert!((end.v - v1).abs() <= 1e-12 * lim.vmax && end.a.abs() <= 1e-12 * hi.max(lo));
         n += 1;
     }
-    assert_eq!(n, 7);
+    assert_eq!(n, 12);
 }

@@ -424,9 +424,10 @@ impl Profile {
         }
         let rel = State { p: 0.0, ..start };
         let dist = target_p - start.p;
-        // The end position to 16 ulps of the distance, or 1e-8 if coarser: beyond a distance
-        // of about 2.8e6 ruckig's absolute 1e-8 is finer than the doubles near the target.
-        let p_tol = 16.0 * f64::EPSILON * dist.abs();
+        // The end position to 16 ulps of the largest term of the kernel's integration, or
+        // 1e-8 if coarser: beyond a scale of about 1e6 ruckig's absolute 1e-8 is finer than
+        // the rounding of that sum.
+        let p_tol = 16.0 * f64::EPSILON;
         let mut block = kernel::Block::default();
         let tolerant = Solved::new(rel, dist, target_v, lim, p_tol, &mut block)
             .map(|sol| sol.build(&block.p_min));
@@ -663,8 +664,8 @@ struct Solved {
 }
 
 impl Solved {
-    /// Solves the problem; the step-1 result goes to `block`. `p_tol`: the kernel's tolerance
-    /// of the end position when coarser than 1e-8 (0 for ruckig's).
+    /// Solves the problem; the step-1 result goes to `block`. `p_tol`: the kernel's relative
+    /// tolerance of the end position (0: ruckig's absolute 1e-8; see `kprofile::Profile::p_tol`).
     fn new(
         start: State,
         target_p: f64,

@@ -86,10 +86,12 @@ pub struct Profile {
     /// Target final acceleration
     pub af: f64,
 
-    /// Tolerance of the final position when coarser than ruckig's 1e-8 (0: ruckig's). Set
-    /// for a problem solved relative to its start (`Profile::position_relative`): with a
-    /// distance beyond about 2.8e6 the spacing of doubles near the target exceeds 1e-8 / 16,
-    /// and an absolute 1e-8 can only pass when the rounding happens to land on the target.
+    /// Relative tolerance of the final position (0: ruckig's absolute 1e-8 only). Set for a
+    /// problem solved relative to its start (`Profile::position_relative`): the end position
+    /// is a sum of terms as large as the largest |p| and |v t| along the profile, each
+    /// rounded, so beyond a scale of about 1e6 an absolute 1e-8 can only pass when the
+    /// rounding happens to land on the target. The tolerance is then
+    /// max(1e-8, `p_tol` x that scale).
     pub p_tol: f64,
 
     /// Information about which kinematic limits were reached
@@ -103,6 +105,23 @@ pub struct Profile {
 }
 
 impl Profile {
+    /// Tolerance of the final position: ruckig's 1e-8, or with `p_tol` > 0 that factor of
+    /// the largest |p| and |v t| term of the integration when coarser (see [`Profile::p_tol`]).
+    #[inline(always)]
+    fn p_precision(&self) -> f64 {
+        if self.p_tol > 0.0 {
+            let mut scale = self.p[0].abs();
+            for i in 0..7 {
+                scale = scale
+                    .max(self.p[i + 1].abs())
+                    .max((self.v[i] * self.t[i]).abs());
+            }
+            P_PRECISION.max(self.p_tol * scale)
+        } else {
+            P_PRECISION
+        }
+    }
+
     // For second-order velocity interface
 
     #[inline(always)]
@@ -253,7 +272,7 @@ impl Profile {
             a_max
         } - A_EPS;
 
-        (self.p[7] - self.pf).abs() < P_PRECISION.max(self.p_tol)
+        (self.p[7] - self.pf).abs() < self.p_precision()
             && (self.v[7] - self.vf).abs() < V_PRECISION
             && (self.a[7] - self.af).abs() < A_PRECISION
             && self.a[1] >= a_low_lim
