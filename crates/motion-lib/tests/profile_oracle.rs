@@ -307,7 +307,7 @@ fn sweep_sample_matches_ruckig() {
 /// 7`) where this planner is faster than ruckig 0.19.4 (by 0.9 % to 81 %). Ruckig returns, for
 /// 14 of them, three phases with a constant acceleration between 0 % and 46 % of the limit (its
 /// two-step fallback family, taken when the regular families fail numerically), for 3 a
-/// profile that first accelerates away from the target velocity and then back (jerk phases of
+/// profile that changes the velocity past the target velocity and then back (jerk phases of
 /// 1e-7 s to 11 s in profiles of 4e4 s to 3e7 s); ours is a regular family and valid: checked here in doubles at every phase boundary and interior velocity
 /// extremum, and in exact rational arithmetic by `tests/data/check_exact.py` (limits and end
 /// state to 1e-15 relative).
