@@ -46,6 +46,7 @@ pub fn lower_pou_body(
             let stmts = low.lower(ctx, &g);
             let hidden = low.hidden_vars();
             let block = (!hidden.is_empty()).then_some(VarBlock {
+                name: None,
                 kind: VarKind::Local,
                 constant: false,
                 retain: false,
@@ -73,6 +74,7 @@ pub fn lower_pou_body(
         "SFC" => {
             let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
             let block = (!hidden.is_empty()).then_some(VarBlock {
+                name: None,
                 kind: VarKind::Local,
                 constant: false,
                 retain: false,

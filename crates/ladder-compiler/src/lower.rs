@@ -344,8 +344,16 @@ impl<'i> BodyLowering<'i> {
     }
 
     fn var_type(&self, v: &VarRef) -> Option<TypeRef> {
-        let mut ty = self.vars.get(v.base.key().as_str())?.as_ref().clone();
-        for acc in &v.accessors {
+        let key = v.base.key();
+        let (mut ty, skip) = match self.vars.get(key.as_str()) {
+            Some(t) => (t.as_ref().clone(), 0),
+            // `GVL.x`: a member of a named global variable list
+            None => match (self.index.global_lists.get(&key), v.accessors.first()) {
+                (Some(list), Some(Accessor::Field(m))) => (list.get(&m.key())?.clone(), 1),
+                _ => return None,
+            },
+        };
+        for acc in v.accessors.iter().skip(skip) {
             ty = match acc {
                 Accessor::Index(_) => match ty {
                     TypeRef::Array { element, .. } => *element,

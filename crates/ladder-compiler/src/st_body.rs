@@ -29,6 +29,11 @@ pub fn declarations(index: &Index) -> Declarations {
     for (name, ty) in &index.globals {
         d.add_global(name, ty.clone());
     }
+    for (list, members) in &index.global_lists {
+        for (name, ty) in members {
+            d.add_list_member(list, name, ty.clone());
+        }
+    }
     d
 }
 

@@ -634,6 +634,17 @@ pub enum GlobalRef {
     },
 }
 
+/// A named global variable list (a CODESYS/TwinCAT GVL: `<globalVars name="GVL">`). Its members are
+/// ordinary globals, also reachable qualified as `GVL.member`; lists of the same name (the sections of
+/// one CODESYS list) are one list.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GlobalList {
+    pub name: String,
+    /// The first declaration's name.
+    pub span: Span,
+    pub members: Vec<GlobalRef>,
+}
+
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Configuration {
     pub name: String,
@@ -813,6 +824,9 @@ pub struct Model {
     pub configurations: Vec<Configuration>,
     /// `VAR_GLOBAL` blocks outside configurations.
     pub globals: Vec<Variable>,
+    /// The named global variable lists (CODESYS/TwinCAT GVLs) of every scope, in source order.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub global_lists: Vec<GlobalList>,
     /// Keyed by the instruction's identity ([`InstrId::of`]).
     pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
@@ -1002,6 +1016,19 @@ impl Model {
                 index,
             } => &self.configurations[config].resources[resource].globals[index],
         }
+    }
+    /// The named global variable list `name` (a CODESYS GVL), case-insensitively.
+    pub fn global_list(&self, name: &str) -> Option<&GlobalList> {
+        self.global_lists
+            .iter()
+            .find(|l| l.name.eq_ignore_ascii_case(name))
+    }
+    /// The member `member` of a global variable list.
+    pub fn list_member(&self, list: &GlobalList, member: &str) -> Option<GlobalRef> {
+        list.members
+            .iter()
+            .copied()
+            .find(|&r| self.global(r).name.eq_ignore_ascii_case(member))
     }
     /// The IEC spelling of a type (`INT`, `STRING[20]`, `ARRAY [0..9] OF INT`, `TON`, a user type's name).
     pub fn type_name(&self, ty: &Type) -> String {

@@ -197,6 +197,7 @@ impl<'d> PouLowering<'d> {
     /// The `VAR_TEMP` block holding the temporaries (none when no temporary was needed).
     pub fn finish(self, span: Span) -> Option<VarBlock> {
         (!self.temps.is_empty()).then_some(VarBlock {
+            name: None,
             kind: VarKind::Temp,
             constant: false,
             retain: false,
