@@ -86,6 +86,9 @@ enum Action {
         inst: VarRef,
         args: Vec<(Ident, ValId)>,
         en: Option<ValId>,
+        /// A standard FB: EN is passed as the call's `EN :=` (the instance's ENO then follows it);
+        /// other blocks are called conditionally (`CALC`).
+        en_arg: bool,
         span: Span,
     },
     Func {
@@ -1421,6 +1424,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     inst: inst.clone(),
                     args: args.clone(),
                     en,
+                    en_arg: matches!(bt, BlockType::StdFb(_)),
                     span,
                 });
                 for out in outputs {
@@ -1838,13 +1842,18 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     inst,
                     args,
                     en,
+                    en_arg,
                     span,
                 } => {
                     let mut ops = Vec::new();
+                    if let (Some(e), true) = (en, en_arg) {
+                        ops.push(("EN".to_string(), self.operand(*e, out)));
+                    }
                     for (n, v) in args {
                         ops.push((n.name.clone(), self.operand(*v, out)));
                     }
                     let cond = match en {
+                        Some(_) if *en_arg => Condition::Always,
                         Some(e) => {
                             self.prepare(*e, out);
                             self.eval(*e, out);

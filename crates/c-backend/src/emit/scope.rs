@@ -302,6 +302,13 @@ impl Gen<'_> {
                     });
                 }
             }
+            Type::Fb(FbType::Standard(_)) if f.is("ENO") => {
+                // the ENO of the instance's last call (see `cal`)
+                return Some(Place::Mem {
+                    lv: format!("{lv}.ENO"),
+                    ty: Type::BOOL,
+                });
+            }
             Type::Fb(FbType::Standard(fb)) => {
                 let (_, params) = ctypes::std_fb(*fb);
                 if let Some((n, e, _)) = params.iter().find(|p| p.0.eq_ignore_ascii_case(&f.name)) {

@@ -827,6 +827,10 @@ pub struct Model {
     /// The named global variable lists (CODESYS/TwinCAT GVLs) of every scope, in source order.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub global_lists: Vec<GlobalList>,
+    /// Whether a body reads `inst.ENO` of a standard FB instance (then every call stores the
+    /// instance's ENO; otherwise only calls with EN do).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub fb_eno_read: bool,
     /// Keyed by the instruction's identity ([`InstrId::of`]).
     pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,

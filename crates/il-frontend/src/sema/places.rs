@@ -669,6 +669,14 @@ impl Body<'_, '_> {
                     .hint(format!("fields of {t}: {}", names.join(", ")));
                 None
             }
+            Type::Fb(FbType::Standard(_)) if f.is("ENO") => {
+                // the ENO of the instance's last call (IEC 61131-3: FALSE when EN was FALSE)
+                self.a.model.fb_eno_read = true;
+                Some(Place {
+                    ty: Type::BOOL,
+                    read_only: Some(ReadOnly::FbOutput { at }),
+                })
+            }
             Type::Fb(fb) => {
                 let params = fb_param_list(&self.a.model, *fb);
                 let tname = self.a.type_name(&place.ty);
