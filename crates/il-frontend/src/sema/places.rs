@@ -28,6 +28,9 @@ pub(super) enum ReadOnly {
 
 const HINT_CONST: &str = "write another variable, or drop CONSTANT from its declaration";
 const HINT_INPUT: &str = "write a local copy, or declare the variable VAR_IN_OUT / VAR_OUTPUT";
+const HINT_INPUT_WRITE: &str = "IEC 61131-3 makes inputs read-only inside the POU; ladderc, like CODESYS, \
+     TwinCAT and matiec, writes the POU's own copy (the caller's variable is not changed). For portable \
+     code write a local copy, or declare it VAR_IN_OUT / VAR_OUTPUT";
 const HINT_FB_OUTPUT: &str =
     "outputs of an FB instance are written by the instance itself; read them with LD";
 const HINT_ENUM: &str = "store into a variable";
@@ -167,6 +170,22 @@ impl Body<'_, '_> {
         let qualified = self.is_list_access(v).then(|| path_text(v, 1));
         let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
+        if let ReadOnly::PouInput { decl: Some(decl) } = ro {
+            // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)
+            // accept it and write the POU's own copy of the input: so does ladderc, with a warning
+            drop(
+                self.a
+                    .warning(
+                        code::W1411,
+                        v.span,
+                        format!("`{name}` is an input of `{pou}`, written inside it"),
+                    )
+                    .label(format!("{what} writes it here"))
+                    .also(decl, "declared VAR_INPUT here")
+                    .hint(HINT_INPUT_WRITE),
+            );
+            return;
+        }
         let (code, message, decl, hint): (Code, String, Option<(Span, &str)>, &str) = match ro {
             ReadOnly::Constant { decl } => (
                 code::E1014,

@@ -1,0 +1,125 @@
+//! Constructs of real public projects that ladderc had not seen (issue #13's acceptance run of
+//! 2026-12-02, the projects and results are in the integrator's report), each as a minimal
+//! reproduction written for this suite (the projects carry no licence that allows copying them),
+//! through `ladderc run`:
+//! - the `.st` files OpenPLC Editor generates end with its debugger's C source, one `(*DBG:...*)`
+//!   comment per line, whose C text holds `*)` of its own (`(void *)`): before, the comment closed
+//!   there and every such line gave errors (85 for one conveyor program);
+//! - a POU that writes one of its own inputs (an OpenPLC Editor LD coil on an FB input; OSCAT
+//!   functions): IEC 61131-3 forbids it, matiec, CODESYS and TwinCAT accept it; before, E1015 rejected
+//!   the project, now W1411 warns and the POU's own copy is written.
+
+mod common;
+use common::ladderc;
+
+fn run(name: &str, src: &str, cycles: &str, watch: &str) -> (String, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join(name);
+    std::fs::write(&file, src).unwrap();
+    let trace = dir.path().join("t.csv");
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&file)
+        .args(["--cycles", cycles, "--sanitize", "--trace"])
+        .arg(&trace)
+        .args(["--watch", watch])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).replace(&file.display().to_string(), name);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    (std::fs::read_to_string(&trace).unwrap(), stderr)
+}
+
+#[test]
+fn openplc_debugger_lines_at_the_end_of_a_generated_st_file_are_comments() {
+    let src = "PROGRAM Conveyor\n  VAR_INPUT\n    start : BOOL := TRUE;\n  END_VAR\n  VAR_OUTPUT\n    \
+               motor : BOOL;\n  END_VAR\n  VAR\n    pulse : TP;\n  END_VAR\n  \
+               pulse(IN := start, PT := T#20ms);\n  motor := pulse.Q;\nEND_PROGRAM\n\n\
+               CONFIGURATION Config0\n  RESOURCE Res0 ON PLC\n    TASK task0(INTERVAL := T#10ms,PRIORITY := 0);\n    \
+               PROGRAM instance0 WITH task0 : Conveyor;\n  END_RESOURCE\nEND_CONFIGURATION\n\n\
+               (*DBG:#include \"POUS.h\"*)\n\
+               (*DBG:void *get_var_addr(size_t idx)*)\n\
+               (*DBG:{*)\n\
+               (*DBG:    void *ptr = debug_vars[idx].ptr;*)\n\
+               (*DBG:    case BOOL_ENUM:*)\n\
+               (*DBG:        return (void *)&((__IEC_BOOL_t *) ptr)->value;*)\n\
+               (*DBG:    /* a C comment (* too *) */*)\n\
+               (*DBG:}*)\n";
+    let (trace, stderr) = run("conveyor.st", src, "4", "instance0.motor");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,instance0.motor\n0,0,1\n1,10,1\n2,20,0\n3,30,0\n"
+    );
+    // an ordinary comment still ends at its first `*)` (comments nest, as before): the rest of the
+    // line is code, and an error
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("bad.st");
+    std::fs::write(&file, src.replace("(*DBG:        return", "(* return")).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn a_pou_writing_its_own_inputs_warns_and_writes_its_own_copy() {
+    let src = "TYPE Pt : STRUCT x : INT; END_STRUCT; END_TYPE\n\
+               FUNCTION Clamp : INT\nVAR_INPUT v : INT; s : STRING; a : ARRAY[0..1] OF INT; p : Pt; END_VAR\n  \
+               IF v > 10 THEN v := 10; END_IF;\n  s := 'x';\n  a[0] := v;\n  p.x := a[0] + 1;\n  \
+               Clamp := p.x + LEN(s);\nEND_FUNCTION\n\
+               FUNCTION_BLOCK Latch\nVAR_INPUT reset : BOOL; END_VAR\nVAR_OUTPUT n : INT; END_VAR\n  \
+               IF reset THEN n := n + 1; reset := FALSE; END_IF;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR r : INT; k : INT := 20; arr : ARRAY[0..1] OF INT; q : Pt; l : Latch;\n  \
+               go : BOOL := TRUE; seen : BOOL; END_VAR\n  \
+               r := Clamp(v := k, s := 'abc', a := arr, p := q);\n  l(reset := go);\n  \
+               seen := l.reset;\n  l();\nEND_PROGRAM\n";
+    let (trace, stderr) = run(
+        "inputs.st",
+        src,
+        "2",
+        "main.r,main.k,main.arr[0],main.q.x,main.l.n,main.seen,main.go",
+    );
+    // Clamp: v 20 -> 10, a[0] = 10, p.x = 11, s = 'x': 12; the caller's k, arr and q are unchanged.
+    // Latch: reset is cleared by the body (seen stays FALSE), the second call (no argument) keeps
+    // it FALSE, so n counts once per cycle; the caller's go stays TRUE.
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.r,main.k,main.arr[0],main.q.x,main.l.n,main.seen,main.go\n\
+         0,0,12,20,0,0,1,0,1\n\
+         1,10,12,20,0,0,2,0,1\n"
+    );
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("W1411")).collect();
+    assert_eq!(warnings.len(), 5, "{stderr}");
+    assert!(
+        stderr.contains(
+            "inputs.st:4:18: warning[W1411]: `v` is an input of `Clamp`, written inside it"
+        ),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains(
+            "inputs.st:13:29: warning[W1411]: `reset` is an input of `Latch`, written inside it"
+        ),
+        "{stderr}"
+    );
+    // writing EN, or an output of an instance, stays an error
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("en.st");
+    std::fs::write(
+        &file,
+        src.replace("reset := FALSE;", "EN := FALSE;")
+            .replace("seen := l.reset;", "l.n := 3;"),
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert_eq!(stderr.matches("error[E1015]").count(), 2, "{stderr}");
+}
