@@ -123,3 +123,51 @@ fn a_pou_writing_its_own_inputs_warns_and_writes_its_own_copy() {
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert_eq!(stderr.matches("error[E1015]").count(), 2, "{stderr}");
 }
+
+/// An FBD network of an OpenPLC Editor project: `SEL(G, 9, 10)` into the data input of
+/// `SEL(G2, _, 8)` into a FUNCTION's INT result. The untyped literals take the type of the variable
+/// the chain ends in (IEC 61131-3 types a literal by its context); before, only a block wired
+/// straight to the variable did, and this one was DINT: "cannot store DINT into INT".
+#[test]
+fn literals_through_a_chain_of_generic_blocks_take_the_destination_type() {
+    let block = |id: u32, g: u32, in0: &str, in1: u32| {
+        format!(
+            "<block localId=\"{id}\" typeName=\"SEL\"><position x=\"0\" y=\"0\"/><inputVariables>\
+             <variable formalParameter=\"G\"><connectionPointIn><connection refLocalId=\"{g}\"/></connectionPointIn></variable>\
+             <variable formalParameter=\"IN0\"><connectionPointIn>{in0}</connectionPointIn></variable>\
+             <variable formalParameter=\"IN1\"><connectionPointIn><connection refLocalId=\"{in1}\"/></connectionPointIn></variable>\
+             </inputVariables><inOutVariables/><outputVariables><variable formalParameter=\"OUT\"><connectionPointOut/></variable></outputVariables></block>"
+        )
+    };
+    let invar = |id: u32, e: &str| {
+        format!("<inVariable localId=\"{id}\"><position x=\"0\" y=\"0\"/><connectionPointOut/><expression>{e}</expression></inVariable>")
+    };
+    let fbd = format!(
+        "{}{}{}{}{}{}{}<outVariable localId=\"7\"><position x=\"0\" y=\"0\"/><connectionPointIn>\
+         <connection refLocalId=\"6\" formalParameter=\"OUT\"/></connectionPointIn><expression>Pick</expression></outVariable>",
+        invar(1, "first"),
+        invar(2, "second"),
+        invar(3, "9"),
+        invar(4, "10"),
+        invar(8, "8"),
+        block(5, 1, "<connection refLocalId=\"3\"/>", 4),
+        block(6, 2, "<connection refLocalId=\"5\" formalParameter=\"OUT\"/>", 8),
+    );
+    let xml = format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+         <fileHeader companyName=\"t\" productName=\"t\" productVersion=\"1\" creationDateTime=\"2026-01-01T00:00:00\"/>\
+         <contentHeader name=\"t\"><coordinateInfo><fbd><scaling x=\"0\" y=\"0\"/></fbd><ld><scaling x=\"0\" y=\"0\"/></ld>\
+         <sfc><scaling x=\"0\" y=\"0\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+         <pou name=\"Pick\" pouType=\"function\"><interface><returnType><INT/></returnType><inputVars>\
+         <variable name=\"first\"><type><BOOL/></type></variable><variable name=\"second\"><type><BOOL/></type></variable>\
+         </inputVars></interface><body><FBD>{fbd}</FBD></body></pou>\
+         <pou name=\"main\" pouType=\"program\"><interface><localVars>\
+         <variable name=\"a\"><type><INT/></type></variable><variable name=\"b\"><type><INT/></type></variable>\
+         <variable name=\"c\"><type><INT/></type></variable></localVars></interface><body><ST>\
+         <xhtml xmlns=\"http://www.w3.org/1999/xhtml\">a := Pick(FALSE, FALSE); b := Pick(TRUE, FALSE); c := Pick(TRUE, TRUE);</xhtml>\
+         </ST></body></pou></pous></types><instances><configurations/></instances></project>\n"
+    );
+    let (trace, stderr) = run("sel_chain.xml", &xml, "1", "main.a,main.b,main.c");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(trace, "cycle,time_ms,main.a,main.b,main.c\n0,0,9,10,8\n");
+}

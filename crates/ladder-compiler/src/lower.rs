@@ -1573,26 +1573,52 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             return fallback;
         }
         let real = tys.iter().any(|t| matches!(t, Ty::WeakReal));
-        for n in &self.g.nodes {
-            let (Kind::OutVar {
-                expr, expr_span, ..
-            }
-            | Kind::InOutVar {
-                expr, expr_span, ..
-            }) = &n.kind
-            else {
-                continue;
-            };
-            if !n.input.iter().any(|w| w.from == block) {
+        // the variables the output reaches, directly or through the data inputs of further generic
+        // functions (`SEL(G, 9, 10)` into `SEL(G2, _, 8)` into an INT: INT)
+        let mut stack = vec![block];
+        let mut seen = HashSet::new();
+        while let Some(b) = stack.pop() {
+            if !seen.insert(b) {
                 continue;
             }
-            let Some(op) = values::operand(expr, *expr_span) else {
-                continue;
-            };
-            if let Ty::Known(t) = self.operand_ty(&op) {
-                let dest_real = matches!(&t, TypeRef::Named(n) if n.is("REAL") || n.is("LREAL"));
-                if !real || dest_real {
-                    return t;
+            for (ni, n) in self.g.nodes.iter().enumerate() {
+                match &n.kind {
+                    Kind::OutVar {
+                        expr, expr_span, ..
+                    }
+                    | Kind::InOutVar {
+                        expr, expr_span, ..
+                    } => {
+                        if !n.input.iter().any(|w| w.from == b) {
+                            continue;
+                        }
+                        let Some(op) = values::operand(expr, *expr_span) else {
+                            continue;
+                        };
+                        if let Ty::Known(t) = self.operand_ty(&op) {
+                            let dest_real =
+                                matches!(&t, TypeRef::Named(n) if n.is("REAL") || n.is("LREAL"));
+                            if !real || dest_real {
+                                return t;
+                            }
+                        }
+                    }
+                    Kind::Block {
+                        type_name, inputs, ..
+                    } => {
+                        let Some(f) = catalogue::std_function(type_name) else {
+                            continue;
+                        };
+                        let generic = matches!(f.rule, ResultRule::SameAsInputs);
+                        let feeds_data = inputs
+                            .iter()
+                            .skip(f.selectors)
+                            .any(|p| p.wires.iter().any(|w| w.from == b));
+                        if generic && feeds_data {
+                            stack.push(ni);
+                        }
+                    }
+                    _ => {}
                 }
             }
         }
