@@ -171,3 +171,34 @@ fn literals_through_a_chain_of_generic_blocks_take_the_destination_type() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(trace, "cycle,time_ms,main.a,main.b,main.c\n0,0,9,10,8\n");
 }
+
+/// RuSTy's example `actions.st` (and CODESYS text exports) put `ACTIONS ... END_ACTIONS` after a
+/// POU. Before, the block was read as IL: 14 errors, one per token ("`;` comments are not IEC
+/// 61131-3", "unexpected `:=`"); now one located E0304.
+#[test]
+fn an_actions_block_is_one_located_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("actions.st");
+    std::fs::write(
+        &file,
+        "PROGRAM main\nVAR\n  a, b : DINT;\nEND_VAR\n  action1();\n  action2();\nEND_PROGRAM\n\n\
+         ACTIONS\n  ACTION action1\n    a := a + 1;\n  END_ACTION\n  ACTION action2\n    b := b + 2;\n  \
+         END_ACTION\nEND_ACTIONS\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let stderr =
+        String::from_utf8_lossy(&out.stderr).replace(&file.display().to_string(), "actions.st");
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert_eq!(
+        errors,
+        ["actions.st:9:1: error[E0304]: an ACTIONS block (CODESYS, RuSTy) is not supported \
+          (hint: write each action's statements where it is called, or as a FUNCTION_BLOCK called there)"],
+        "{stderr}"
+    );
+}

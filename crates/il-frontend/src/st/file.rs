@@ -46,6 +46,9 @@ pub struct PouText {
     pub sfc: Option<Range<usize>>,
     /// The first `METHOD name` / `PROPERTY name` of a body (edition 3 object orientation: E0303).
     pub oop: Option<Range<usize>>,
+    /// Not a POU: a CODESYS/RuSTy `ACTIONS ... END_ACTIONS` block (the `ACTIONS` keyword; `body` is
+    /// the whole block), not compiled: E0304.
+    pub actions: Option<Range<usize>>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -114,6 +117,21 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
             "TYPE" => i = skip_to(i + 1, "END_TYPE"),
             "CONFIGURATION" => i = skip_to(i + 1, "END_CONFIGURATION"),
             "RESOURCE" => i = skip_to(i + 1, "END_RESOURCE"),
+            "ACTIONS" => {
+                let start = t.range.clone();
+                let j = skip_to(i + 1, "END_ACTIONS");
+                let end = toks[j - 1].range.end;
+                out.push(PouText {
+                    name: "ACTIONS".into(),
+                    name_range: start.clone(),
+                    body: start.start..end,
+                    lang: Lang::Il,
+                    sfc: None,
+                    oop: None,
+                    actions: Some(start),
+                });
+                i = j;
+            }
             _ if is_var_keyword(&w) => i = skip_to(i + 1, "END_VAR"),
             "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" => {
                 let end_word = format!("END_{w}");
@@ -189,6 +207,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     lang: body_lang(src, &toks[first..j.min(n - 1)]),
                     sfc,
                     oop,
+                    actions: None,
                 });
                 i = j + 1;
             }
@@ -376,6 +395,19 @@ pub fn parse_text(
         }
     }
     for p in &pous {
+        if let Some(r) = &p.actions {
+            diags.push(
+                Diagnostic::error(
+                    code::E0304,
+                    "an ACTIONS block (CODESYS, RuSTy) is not supported",
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("the block starts here; it is not compiled")
+                .with_hint("write each action's statements where it is called, or as a FUNCTION_BLOCK called there"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         if let Some(r) = &p.sfc {
             diags.push(
                 Diagnostic::error(
