@@ -202,3 +202,46 @@ fn an_actions_block_is_one_located_error() {
         "{stderr}"
     );
 }
+
+/// CODESYS exports the actions of a program in the POU's standard `<actions>`, which ladderc compiles
+/// only for SFC bodies. Before, they were dropped without a word; now warning W3401 names them: a
+/// program that does not call them runs, and a call is a located unknown function.
+#[test]
+fn actions_of_a_program_without_sfc_are_named_not_dropped_silently() {
+    let xml = |body: &str| {
+        format!(
+            "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\
+             <fileHeader companyName=\"\" productName=\"CODESYS\" productVersion=\"3.5\" creationDateTime=\"2024-01-01T00:00:00\"/>\
+             <contentHeader name=\"Export\"><coordinateInfo><fbd><scaling x=\"1\" y=\"1\"/></fbd><ld><scaling x=\"1\" y=\"1\"/></ld>\
+             <sfc><scaling x=\"1\" y=\"1\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+             <pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"a\"><type><INT/></type></variable>\
+             </localVars></interface><actions><action name=\"Inc\"><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">a := a + 1;</xhtml>\
+             </ST></body></action></actions><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">{body}</xhtml></ST></body></pou>\
+             </pous></types><instances><configurations><configuration name=\"Device\"><resource name=\"Application\">\
+             <task name=\"MainTask\" interval=\"PT0.01S\" priority=\"1\"><pouInstance name=\"PLC_PRG\" typeName=\"\"/></task>\
+             </resource></configuration></configurations></instances></project>\n"
+        )
+    };
+    let (trace, stderr) = run("uncalled.xml", &xml("a := a + 2;"), "2", "PLC_PRG.a");
+    assert_eq!(trace, "cycle,time_ms,PLC_PRG.a\n0,0,2\n1,10,4\n");
+    assert!(
+        stderr.contains(
+            "warning[W3401]: POU `PLC_PRG` has 1 action (`Inc` ...) outside an SFC body: not compiled"
+        ),
+        "{stderr}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("called.xml");
+    std::fs::write(&file, xml("Inc();")).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("error[E1019]: unknown function `Inc`") && stderr.contains("W3401"),
+        "{stderr}"
+    );
+}

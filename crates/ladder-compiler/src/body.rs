@@ -39,6 +39,32 @@ pub fn lower_pou_body(
         pou: Some(name.clone()),
         ..Default::default()
     };
+    // CODESYS exports a program's or FB's actions (called from its body as `Act();`) in the POU's
+    // standard `<actions>`, which ladderc reads only for SFC bodies
+    if lang.name != "SFC" {
+        if let Some(first) = pou_el
+            .child("actions")
+            .and_then(|a| a.children_named("action").next())
+        {
+            let count = pou_el
+                .child("actions")
+                .map_or(0, |a| a.children_named("action").count());
+            let action = first.attr("name").unwrap_or("?").to_string();
+            ctx.report(
+                Diagnostic::warning(
+                    code::W3401,
+                    format!(
+                        "POU `{name}` has {count} action{} (`{action}` ...) outside an SFC body: not compiled",
+                        if count == 1 { "" } else { "s" }
+                    ),
+                )
+                .at(ctx.tag(first))
+                .with_primary_label("action of a program or function block")
+                .with_hint("actions are compiled only as the actions of an SFC chart; a call of one (`Act();`) is an unknown function (E1019)")
+                .with_xml(xml_ctx.clone()),
+            );
+        }
+    }
     match lang.name {
         "LD" | "FBD" => {
             let g = graph::read(ctx, lang, name);
