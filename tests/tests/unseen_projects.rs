@@ -203,45 +203,80 @@ fn an_actions_block_is_one_located_error() {
     );
 }
 
-/// CODESYS exports the actions of a program in the POU's standard `<actions>`, which ladderc compiles
-/// only for SFC bodies. Before, they were dropped without a word; now warning W3401 names them: a
-/// program that does not call them runs, and a call is a located unknown function.
+/// CODESYS exports the actions of a program or FB in the POU's standard `<actions>`, and the body
+/// calls them like procedures (`Step();`). Before, they were dropped without a word and each call was
+/// "unknown function". Now an ST body inlines its ST actions where it calls them (also an action
+/// calling another), and an action in another language is named by warning W3401 (a call of it
+/// stays a located E1019).
 #[test]
-fn actions_of_a_program_without_sfc_are_named_not_dropped_silently() {
-    let xml = |body: &str| {
+fn codesys_actions_called_from_an_st_body_run() {
+    let xml = |action_lang: &str, step_body: &str, fb_body: &str| {
         format!(
             "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\
              <fileHeader companyName=\"\" productName=\"CODESYS\" productVersion=\"3.5\" creationDateTime=\"2024-01-01T00:00:00\"/>\
              <contentHeader name=\"Export\"><coordinateInfo><fbd><scaling x=\"1\" y=\"1\"/></fbd><ld><scaling x=\"1\" y=\"1\"/></ld>\
              <sfc><scaling x=\"1\" y=\"1\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
-             <pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"a\"><type><INT/></type></variable>\
-             </localVars></interface><actions><action name=\"Inc\"><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">a := a + 1;</xhtml>\
-             </ST></body></action></actions><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">{body}</xhtml></ST></body></pou>\
+             <pou name=\"FB_Axis\" pouType=\"functionBlock\"><interface><inputVars><variable name=\"xGo\"><type><BOOL/></type></variable>\
+             </inputVars><outputVars><variable name=\"iPos\"><type><INT/></type></variable><variable name=\"iResets\"><type><INT/></type>\
+             </variable></outputVars></interface><actions>\
+             <action name=\"Step\"><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">{step_body}</xhtml></ST></body></action>\
+             <action name=\"Reset\"><body><{action_lang}><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">{reset}</xhtml></{action_lang}></body></action>\
+             </actions><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">{fb_body}</xhtml></ST></body></pou>\
+             <pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"ax\"><type><derived name=\"FB_Axis\"/></type>\
+             </variable></localVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">ax(xGo := TRUE);</xhtml></ST></body></pou>\
              </pous></types><instances><configurations><configuration name=\"Device\"><resource name=\"Application\">\
              <task name=\"MainTask\" interval=\"PT0.01S\" priority=\"1\"><pouInstance name=\"PLC_PRG\" typeName=\"\"/></task>\
-             </resource></configuration></configurations></instances></project>\n"
+             </resource></configuration></configurations></instances></project>\n",
+            reset = if action_lang == "ST" {
+                "iPos := 0; iResets := iResets + 1;"
+            } else {
+                "LD 0\nST iPos"
+            }
         )
     };
-    let (trace, stderr) = run("uncalled.xml", &xml("a := a + 2;"), "2", "PLC_PRG.a");
-    assert_eq!(trace, "cycle,time_ms,PLC_PRG.a\n0,0,2\n1,10,4\n");
+    let step = "IF iPos &gt;= 3 THEN Reset(); ELSE iPos := iPos + 1; END_IF";
+    // the body calls Step while xGo; Step counts iPos to 3, then calls Reset
+    let (trace, stderr) = run(
+        "actions.xml",
+        &xml("ST", step, "IF xGo THEN Step(); END_IF"),
+        "6",
+        "PLC_PRG.ax.iPos,PLC_PRG.ax.iResets",
+    );
     assert!(
-        stderr.contains(
-            "warning[W3401]: POU `PLC_PRG` has 1 action (`Inc` ...) outside an SFC body: not compiled"
-        ),
+        !stderr.contains("W3401") && !stderr.contains("error"),
         "{stderr}"
     );
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("called.xml");
-    std::fs::write(&file, xml("Inc();")).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(&file)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.ax.iPos,PLC_PRG.ax.iResets\n0,0,1,0\n1,10,2,0\n2,20,3,0\n3,30,0,1\n4,40,1,1\n5,50,2,1\n"
+    );
+    // an IL action is not compiled: named by W3401; a body that does not call it runs
+    let (trace, stderr) = run(
+        "il_action.xml",
+        &xml("IL", "iPos := iPos + 1;", "IF xGo THEN Step(); END_IF"),
+        "2",
+        "PLC_PRG.ax.iPos",
+    );
+    assert_eq!(trace, "cycle,time_ms,PLC_PRG.ax.iPos\n0,0,1\n1,10,2\n");
     assert!(
-        stderr.contains("error[E1019]: unknown function `Inc`") && stderr.contains("W3401"),
+        stderr.contains("warning[W3401]: POU `FB_Axis` has 1 action (`Reset` ...) that ladderc does not compile here"),
         "{stderr}"
     );
+    // ... and a call of it is a located unknown function; an action calling itself is an error
+    for (body, want) in [
+        (step, "error[E1019]: unknown function `Reset`"),
+        ("Step();", "error[E0106]: action `STEP` calls itself"),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("called.xml");
+        std::fs::write(&file, xml("IL", body, "Step();")).unwrap();
+        let out = ladderc()
+            .args(["--message-format", "short", "check"])
+            .arg(&file)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{stderr}");
+        assert!(stderr.contains(want), "{want}: {stderr}");
+    }
 }
