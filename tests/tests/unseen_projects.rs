@@ -173,17 +173,27 @@ fn literals_through_a_chain_of_generic_blocks_take_the_destination_type() {
 }
 
 /// RuSTy's example `actions.st` (and CODESYS text exports) put `ACTIONS ... END_ACTIONS` after a
-/// POU. Before, the block was read as IL: 14 errors, one per token ("`;` comments are not IEC
-/// 61131-3", "unexpected `:=`"); now one located E0304.
+/// POU whose body calls them (`action1();`). Before, the block was read as IL: 14 errors, one per
+/// token; now the actions are inlined where the body calls them. After an IL body the block is one
+/// located E0304.
 #[test]
-fn an_actions_block_is_one_located_error() {
+fn an_actions_block_after_an_st_pou_runs() {
+    let src = "PROGRAM main\nVAR\n  a, b : DINT;\nEND_VAR\n  action1();\n  action2();\nEND_PROGRAM\n\n\
+               ACTIONS\n  ACTION action1\n    a := a + 1;\n  END_ACTION\n  ACTION action2 :\n    b := b + 2;\n    \
+               IF b > 4 THEN action1(); END_IF;\n  END_ACTION\nEND_ACTIONS\n";
+    let (trace, stderr) = run("actions.st", src, "3", "main.a,main.b");
+    assert!(!stderr.contains("error"), "{stderr}");
+    // action2 calls action1 once b exceeds 4 (cycle 2)
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.a,main.b\n0,0,1,2\n1,10,2,4\n2,20,4,6\n"
+    );
     let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("actions.st");
+    let file = dir.path().join("il.st");
     std::fs::write(
         &file,
-        "PROGRAM main\nVAR\n  a, b : DINT;\nEND_VAR\n  action1();\n  action2();\nEND_PROGRAM\n\n\
-         ACTIONS\n  ACTION action1\n    a := a + 1;\n  END_ACTION\n  ACTION action2\n    b := b + 2;\n  \
-         END_ACTION\nEND_ACTIONS\n",
+        "PROGRAM main\nVAR a : DINT; END_VAR\n  LD a\n  ST a\nEND_PROGRAM\nACTIONS\n  ACTION x\n    \
+         a := 1;\n  END_ACTION\nEND_ACTIONS\n",
     )
     .unwrap();
     let out = ladderc()
@@ -191,14 +201,13 @@ fn an_actions_block_is_one_located_error() {
         .arg(&file)
         .output()
         .unwrap();
-    let stderr =
-        String::from_utf8_lossy(&out.stderr).replace(&file.display().to_string(), "actions.st");
+    let stderr = String::from_utf8_lossy(&out.stderr).replace(&file.display().to_string(), "il.st");
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
     assert_eq!(
         errors,
-        ["actions.st:9:1: error[E0304]: an ACTIONS block (CODESYS, RuSTy) is not supported \
-          (hint: write each action's statements where it is called, or as a FUNCTION_BLOCK called there)"],
+        ["il.st:6:1: error[E0304]: an ACTIONS block is supported only right after a POU whose body is ST \
+          (hint: put the block after the POU whose ST body calls its actions, or write each action's statements where it is called)"],
         "{stderr}"
     );
 }
