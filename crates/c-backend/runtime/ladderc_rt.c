@@ -13,26 +13,26 @@ IEC_TIME ladderc_now = 0;
 uint64_t ladderc_cycle = 0;
 
 /* ------------------------------------------------------------------ edge detection and bistables */
-void ladderc_R_TRIG_init(ladderc_R_TRIG *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_R_TRIG_init(ladderc_R_TRIG *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_R_TRIG_body(ladderc_R_TRIG *fb) {
     fb->Q = (IEC_BOOL)(fb->CLK && !fb->m);
     fb->m = fb->CLK ? 1u : 0u;
 }
-void ladderc_F_TRIG_init(ladderc_F_TRIG *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_F_TRIG_init(ladderc_F_TRIG *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_F_TRIG_body(ladderc_F_TRIG *fb) {
     /* IEC: Q := NOT CLK AND NOT M; M := NOT CLK. */
     fb->Q = (IEC_BOOL)(!fb->CLK && !fb->m);
     fb->m = fb->CLK ? 0u : 1u;
 }
-void ladderc_SR_init(ladderc_SR *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_SR_init(ladderc_SR *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_SR_body(ladderc_SR *fb) { fb->Q1 = (IEC_BOOL)(fb->S1 || (!fb->R && fb->Q1)); }
-void ladderc_RS_init(ladderc_RS *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_RS_init(ladderc_RS *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_RS_body(ladderc_RS *fb) { fb->Q1 = (IEC_BOOL)(!fb->R1 && (fb->S || fb->Q1)); }
 
 /* ------------------------------------------------------------------ timers */
 static IEC_TIME elapsed_since(IEC_TIME start) { return ladderc_sub_IEC_LINT(ladderc_now, start); }
 
-void ladderc_TON_init(ladderc_TON *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_TON_init(ladderc_TON *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_TON_body(ladderc_TON *fb) {
     IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
     if (!fb->IN) {
@@ -57,7 +57,7 @@ void ladderc_TON_body(ladderc_TON *fb) {
     }
 }
 
-void ladderc_TOF_init(ladderc_TOF *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_TOF_init(ladderc_TOF *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_TOF_body(ladderc_TOF *fb) {
     IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
     if (fb->IN) {
@@ -83,7 +83,7 @@ void ladderc_TOF_body(ladderc_TOF *fb) {
     }
 }
 
-void ladderc_TP_init(ladderc_TP *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_TP_init(ladderc_TP *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_TP_body(ladderc_TP *fb) {
     IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
     IEC_BOOL edge = (IEC_BOOL)(fb->IN && !fb->in_m);
@@ -107,7 +107,7 @@ void ladderc_TP_body(ladderc_TP *fb) {
 }
 
 /* ------------------------------------------------------------------ counters */
-void ladderc_CTU_init(ladderc_CTU *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_CTU_init(ladderc_CTU *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_CTU_body(ladderc_CTU *fb) {
     IEC_BOOL edge = (IEC_BOOL)(fb->CU && !fb->cu_m);
     fb->cu_m = fb->CU ? 1u : 0u;
@@ -115,7 +115,7 @@ void ladderc_CTU_body(ladderc_CTU *fb) {
     else if (edge && fb->CV < INT16_MAX) fb->CV = (IEC_INT)(fb->CV + 1);
     fb->Q = (IEC_BOOL)(fb->CV >= fb->PV);
 }
-void ladderc_CTD_init(ladderc_CTD *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_CTD_init(ladderc_CTD *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_CTD_body(ladderc_CTD *fb) {
     IEC_BOOL edge = (IEC_BOOL)(fb->CD && !fb->cd_m);
     fb->cd_m = fb->CD ? 1u : 0u;
@@ -123,7 +123,7 @@ void ladderc_CTD_body(ladderc_CTD *fb) {
     else if (edge && fb->CV > INT16_MIN) fb->CV = (IEC_INT)(fb->CV - 1);
     fb->Q = (IEC_BOOL)(fb->CV <= 0);
 }
-void ladderc_CTUD_init(ladderc_CTUD *fb) { memset(fb, 0, sizeof *fb); }
+void ladderc_CTUD_init(ladderc_CTUD *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
 void ladderc_CTUD_body(ladderc_CTUD *fb) {
     IEC_BOOL up = (IEC_BOOL)(fb->CU && !fb->cu_m);
     IEC_BOOL down = (IEC_BOOL)(fb->CD && !fb->cd_m);
@@ -140,7 +140,7 @@ void ladderc_CTUD_body(ladderc_CTUD *fb) {
 }
 /* The typed counters: as above, saturating at the range of T (MIN..MAX). */
 #define LADDERC_COUNTER_BODIES(T, MIN, MAX)                                                        \
-    void ladderc_CTU_##T##_init(ladderc_CTU_##T *fb) { memset(fb, 0, sizeof *fb); }               \
+    void ladderc_CTU_##T##_init(ladderc_CTU_##T *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }               \
     void ladderc_CTU_##T##_body(ladderc_CTU_##T *fb) {                                             \
         IEC_BOOL edge = (IEC_BOOL)(fb->CU && !fb->cu_m);                                           \
         fb->cu_m = fb->CU ? 1u : 0u;                                                               \
@@ -148,7 +148,7 @@ void ladderc_CTUD_body(ladderc_CTUD *fb) {
         else if (edge && fb->CV < (MAX)) fb->CV = (IEC_##T)(fb->CV + 1);                           \
         fb->Q = (IEC_BOOL)(fb->CV >= fb->PV);                                                      \
     }                                                                                              \
-    void ladderc_CTD_##T##_init(ladderc_CTD_##T *fb) { memset(fb, 0, sizeof *fb); }               \
+    void ladderc_CTD_##T##_init(ladderc_CTD_##T *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }               \
     void ladderc_CTD_##T##_body(ladderc_CTD_##T *fb) {                                             \
         IEC_BOOL edge = (IEC_BOOL)(fb->CD && !fb->cd_m);                                           \
         fb->cd_m = fb->CD ? 1u : 0u;                                                               \
@@ -156,7 +156,7 @@ void ladderc_CTUD_body(ladderc_CTUD *fb) {
         else if (edge && fb->CV > (MIN)) fb->CV = (IEC_##T)(fb->CV - 1);                           \
         fb->Q = (IEC_BOOL)(fb->CV <= 0);                                                           \
     }                                                                                              \
-    void ladderc_CTUD_##T##_init(ladderc_CTUD_##T *fb) { memset(fb, 0, sizeof *fb); }             \
+    void ladderc_CTUD_##T##_init(ladderc_CTUD_##T *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }             \
     void ladderc_CTUD_##T##_body(ladderc_CTUD_##T *fb) {                                           \
         IEC_BOOL up = (IEC_BOOL)(fb->CU && !fb->cu_m);                                             \
         IEC_BOOL down = (IEC_BOOL)(fb->CD && !fb->cd_m);                                           \

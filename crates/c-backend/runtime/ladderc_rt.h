@@ -384,23 +384,26 @@ static inline uint64_t ladderc_lreal_to_bits(double f) { uint64_t u; memcpy(&u, 
 
 /* ------------------------------------------------------------------ standard function blocks */
 /* Field names are the IEC parameter names; hidden state is lower-case. Each FB has _init (the IEC
- * initial values, all zero) and _body (one execution with the current inputs). Timers read ladderc_now. */
-typedef struct { IEC_BOOL CLK, Q, m; } ladderc_R_TRIG;
-typedef struct { IEC_BOOL CLK, Q, m; } ladderc_F_TRIG;
-typedef struct { IEC_BOOL S1, R, Q1; } ladderc_SR;
-typedef struct { IEC_BOOL S, R1, Q1; } ladderc_RS;
-typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; } ladderc_TON;
-typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; } ladderc_TOF;
-typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; IEC_BOOL in_m; } ladderc_TP;
-typedef struct { IEC_BOOL CU, R; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cu_m; } ladderc_CTU;
-typedef struct { IEC_BOOL CD, LD; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cd_m; } ladderc_CTD;
-typedef struct { IEC_BOOL CU, CD, R, LD; IEC_INT PV; IEC_BOOL QU, QD; IEC_INT CV; IEC_BOOL cu_m, cd_m; } ladderc_CTUD;
+ * initial values, all zero, and ENO TRUE) and _body (one execution with the current inputs). ENO is
+ * the ENO of the instance's last call, stored by the generated call (FALSE when its EN was FALSE and
+ * the body did not run). Timers read ladderc_now. */
+typedef struct { IEC_BOOL CLK, Q, m; IEC_BOOL ENO; } ladderc_R_TRIG;
+typedef struct { IEC_BOOL CLK, Q, m; IEC_BOOL ENO; } ladderc_F_TRIG;
+typedef struct { IEC_BOOL S1, R, Q1; IEC_BOOL ENO; } ladderc_SR;
+typedef struct { IEC_BOOL S, R1, Q1; IEC_BOOL ENO; } ladderc_RS;
+typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; IEC_BOOL ENO; } ladderc_TON;
+typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; IEC_BOOL ENO; } ladderc_TOF;
+typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; IEC_BOOL in_m; IEC_BOOL ENO; } ladderc_TP;
+typedef struct { IEC_BOOL CU, R; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cu_m; IEC_BOOL ENO; } ladderc_CTU;
+typedef struct { IEC_BOOL CD, LD; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cd_m; IEC_BOOL ENO; } ladderc_CTD;
+typedef struct { IEC_BOOL CU, CD, R, LD; IEC_INT PV; IEC_BOOL QU, QD; IEC_INT CV; IEC_BOOL cu_m, cd_m; IEC_BOOL ENO; } ladderc_CTUD;
 /* The typed counters CTU_DINT ... CTUD_ULINT: the same FBs on PV and CV of type T. */
 #define LADDERC_COUNTER_TYPES(T)                                                                   \
-    typedef struct { IEC_BOOL CU, R; IEC_##T PV; IEC_BOOL Q; IEC_##T CV; IEC_BOOL cu_m; } ladderc_CTU_##T; \
-    typedef struct { IEC_BOOL CD, LD; IEC_##T PV; IEC_BOOL Q; IEC_##T CV; IEC_BOOL cd_m; } ladderc_CTD_##T; \
+    typedef struct { IEC_BOOL CU, R; IEC_##T PV; IEC_BOOL Q; IEC_##T CV; IEC_BOOL cu_m; IEC_BOOL ENO; } ladderc_CTU_##T; \
+    typedef struct { IEC_BOOL CD, LD; IEC_##T PV; IEC_BOOL Q; IEC_##T CV; IEC_BOOL cd_m; IEC_BOOL ENO; } ladderc_CTD_##T; \
     typedef struct {                                                                               \
         IEC_BOOL CU, CD, R, LD; IEC_##T PV; IEC_BOOL QU, QD; IEC_##T CV; IEC_BOOL cu_m, cd_m;     \
+        IEC_BOOL ENO;                                                                              \
     } ladderc_CTUD_##T;
 LADDERC_COUNTER_TYPES(DINT)
 LADDERC_COUNTER_TYPES(LINT)

@@ -77,6 +77,7 @@ fn big_program(lines: usize) -> CompilationUnit {
             name: Ident::new("big", sp(1)),
             return_type: None,
             var_blocks: vec![VarBlock {
+                name: None,
                 kind: VarKind::Local,
                 constant: false,
                 retain: false,

@@ -334,6 +334,10 @@ pub enum VarKind {
 /// `VAR_INPUT CONSTANT RETAIN ... END_VAR`.
 #[derive(Debug, Clone, Serialize)]
 pub struct VarBlock {
+    /// The name of a CODESYS/TwinCAT global variable list (`<globalVars name="GVL">`), whose members
+    /// are also reachable qualified (`GVL.x`); `None` for every IEC declaration block.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub name: Option<Ident>,
     /// The section keyword (`VAR`, `VAR_INPUT`, ...).
     pub kind: VarKind,
     /// `CONSTANT`: the variables cannot be written.

@@ -162,7 +162,19 @@ pub(crate) enum CommentEnd {
 }
 
 /// The rest of a possibly nested `(* ... *)` comment after its opening: bytes it takes, how it ended.
+///
+/// One exception: OpenPLC Editor appends the C source of its debugger to the `.st` files it
+/// generates, one line per comment, `(*DBG:<C text>*)`, where the C text holds `*)` and `(*` of its
+/// own (`return (void *)&((__IEC_BOOL_t *) ptr)->value;`). Such a comment ends at the `*)` that ends
+/// its line.
 pub(crate) fn comment_rest(rest: &str) -> (usize, CommentEnd) {
+    if rest.starts_with("DBG:") {
+        let line = rest.find('\n').unwrap_or(rest.len());
+        let text = rest[..line].trim_end();
+        if text.ends_with("*)") {
+            return (text.len(), CommentEnd::Closed { newline: false });
+        }
+    }
     let rest = rest.as_bytes();
     let mut depth = 1usize;
     let mut i = 0;

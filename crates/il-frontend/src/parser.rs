@@ -629,6 +629,7 @@ impl<'s> Ctx<'s> {
         r: usize,
     ) -> VarBlock {
         VarBlock {
+            name: None,
             kind,
             constant: quals.contains(&Word::Constant),
             retain: quals.contains(&Word::Retain),

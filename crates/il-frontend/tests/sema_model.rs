@@ -472,6 +472,7 @@ fn configuration_tasks_and_program_instances() {
         name: id("Main"),
         return_type: None,
         var_blocks: vec![ast::VarBlock {
+            name: None,
             kind: VarKind::External,
             constant: false,
             retain: false,
@@ -491,6 +492,7 @@ fn configuration_tasks_and_program_instances() {
     let config = ast::Configuration {
         name: id("Cell"),
         globals: vec![ast::VarBlock {
+            name: None,
             kind: VarKind::Global,
             constant: false,
             retain: false,

@@ -18,7 +18,7 @@ use crate::lower::BodyLowering;
 use crate::project::Index;
 use crate::xml::Element;
 use diagnostics::{code, Diagnostic, XmlContext};
-use il_frontend::ast::{IlStmt, Pou, VarBlock, VarKind};
+use il_frontend::ast::{Ident, IlStmt, Pou, VarBlock, VarKind};
 
 /// The body of one POU in the IL syntax tree, with the hidden variables its lowering needs.
 pub fn lower_pou_body(
@@ -44,6 +44,46 @@ pub fn lower_pou_body(
         pou: Some(name.clone()),
         ..Default::default()
     };
+    // CODESYS exports a program's or FB's actions (called from its body as `Act();`) in the POU's
+    // standard `<actions>`: an ST body inlines its ST actions where it calls them (`st_actions`);
+    // the others are compiled only for SFC bodies
+    let mut st_actions: Vec<(Ident, &Element)> = Vec::new();
+    let mut other_actions: Vec<&Element> = Vec::new();
+    if lang.name != "SFC" {
+        for a in pou_el
+            .child("actions")
+            .into_iter()
+            .flat_map(|a| a.children_named("action"))
+        {
+            let st = a
+                .child("body")
+                .and_then(|b| b.child("ST"))
+                .filter(|_| lang.name == "ST");
+            match (st, a.attr("name").map(str::trim)) {
+                (Some(st), Some(n)) if !n.is_empty() => {
+                    st_actions.push((Ident::new(n, ctx.attr_span(a, "name")), st))
+                }
+                _ => other_actions.push(a),
+            }
+        }
+        if let Some(first) = other_actions.first() {
+            let count = other_actions.len();
+            let action = first.attr("name").unwrap_or("?").to_string();
+            ctx.report(
+                Diagnostic::warning(
+                    code::W3401,
+                    format!(
+                        "POU `{name}` has {count} action{} (`{action}` ...) that ladderc does not compile here",
+                        if count == 1 { "" } else { "s" }
+                    ),
+                )
+                .at(ctx.tag(first))
+                .with_primary_label("action of a program or function block")
+                .with_hint("actions are compiled as the actions of an SFC chart, and as ST actions called from an ST body (`Act();`); a call of this one is an unknown function (E1019)")
+                .with_xml(xml_ctx.clone()),
+            );
+        }
+    }
     match lang.name {
         "LD" | "FBD" => {
             let g = graph::read(ctx, lang, name);
@@ -51,6 +91,7 @@ pub fn lower_pou_body(
             let stmts = low.lower(ctx, &g);
             let hidden = low.hidden_vars();
             let block = (!hidden.is_empty()).then_some(VarBlock {
+                name: None,
                 kind: VarKind::Local,
                 constant: false,
                 retain: false,
@@ -72,12 +113,13 @@ pub fn lower_pou_body(
             None
         }
         "ST" => {
-            let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou);
+            let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou, &st_actions);
             Some((stmts, temps))
         }
         "SFC" => {
             let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
             let block = (!hidden.is_empty()).then_some(VarBlock {
+                name: None,
                 kind: VarKind::Local,
                 constant: false,
                 retain: false,

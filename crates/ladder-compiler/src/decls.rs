@@ -393,13 +393,49 @@ pub fn var_block(ctx: &mut Ctx, list: &Element, kind: VarKind) -> VarBlock {
         .children_named("variable")
         .filter_map(|v| variable(ctx, v))
         .collect();
+    // a CODESYS/TwinCAT global variable list has a name (`GVL.x` reaches its members)
+    let name = if kind == VarKind::Global {
+        list.attr("name")
+            .map(str::trim)
+            .filter(|n| values::is_ident(n))
+            .map(|n| Ident::new(n, ctx.attr_span(list, "name")))
+    } else {
+        None
+    };
     VarBlock {
+        name,
         kind,
         constant: flag("constant"),
         retain: flag("retain") || flag("persistent"),
         vars,
         span: ctx.tag(list),
     }
+}
+
+/// A `<globalVars>` list as declaration blocks. CODESYS exports a list that mixes `VAR_GLOBAL`,
+/// `VAR_GLOBAL CONSTANT` and `VAR_GLOBAL RETAIN` sections as one list with one set of attributes (often
+/// `constant="true"` on them all) and puts the real split into its vendor data
+/// (`addData/data[.../mixedattrsvarlist]/MixedAttrsVarList/globalVars`, one list per section, same
+/// name): those sections are read instead when present.
+pub fn global_lists(ctx: &mut Ctx, list: &Element) -> Vec<VarBlock> {
+    let sections: Vec<&Element> = list
+        .child("addData")
+        .into_iter()
+        .flat_map(|a| a.children_named("data"))
+        .filter(|d| {
+            d.attr("name")
+                .is_some_and(|n| n.ends_with("/mixedattrsvarlist"))
+        })
+        .flat_map(|d| d.children_named("MixedAttrsVarList"))
+        .flat_map(|m| m.children_named("globalVars"))
+        .collect();
+    if sections.is_empty() {
+        return vec![var_block(ctx, list, VarKind::Global)];
+    }
+    sections
+        .into_iter()
+        .map(|g| var_block(ctx, g, VarKind::Global))
+        .collect()
 }
 
 /// `<dataType name="...">` with its `<baseType>` and optional `<initialValue>`.

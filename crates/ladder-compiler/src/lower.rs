@@ -90,6 +90,9 @@ enum Action {
         inst: VarRef,
         args: Vec<(Ident, ValId)>,
         en: Option<ValId>,
+        /// A standard FB: EN is passed as the call's `EN :=` (the instance's ENO then follows it);
+        /// other blocks are called conditionally (`CALC`).
+        en_arg: bool,
         span: Span,
     },
     Func {
@@ -350,8 +353,16 @@ impl<'i> BodyLowering<'i> {
     }
 
     fn var_type(&self, v: &VarRef) -> Option<TypeRef> {
-        let mut ty = self.vars.get(v.base.key().as_str())?.as_ref().clone();
-        for acc in &v.accessors {
+        let key = v.base.key();
+        let (mut ty, skip) = match self.vars.get(key.as_str()) {
+            Some(t) => (t.as_ref().clone(), 0),
+            // `GVL.x`: a member of a named global variable list
+            None => match (self.index.global_lists.get(&key), v.accessors.first()) {
+                (Some(list), Some(Accessor::Field(m))) => (list.get(&m.key())?.clone(), 1),
+                _ => return None,
+            },
+        };
+        for acc in v.accessors.iter().skip(skip) {
             ty = match acc {
                 Accessor::Index(_) => match ty {
                     TypeRef::Array { element, .. } => *element,
@@ -1419,6 +1430,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     inst: inst.clone(),
                     args: args.clone(),
                     en,
+                    en_arg: matches!(bt, BlockType::StdFb(_)),
                     span,
                 });
                 for out in outputs {
@@ -1567,26 +1579,52 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             return fallback;
         }
         let real = tys.iter().any(|t| matches!(t, Ty::WeakReal));
-        for n in &self.g.nodes {
-            let (Kind::OutVar {
-                expr, expr_span, ..
-            }
-            | Kind::InOutVar {
-                expr, expr_span, ..
-            }) = &n.kind
-            else {
-                continue;
-            };
-            if !n.input.iter().any(|w| w.from == block) {
+        // the variables the output reaches, directly or through the data inputs of further generic
+        // functions (`SEL(G, 9, 10)` into `SEL(G2, _, 8)` into an INT: INT)
+        let mut stack = vec![block];
+        let mut seen = HashSet::new();
+        while let Some(b) = stack.pop() {
+            if !seen.insert(b) {
                 continue;
             }
-            let Some(op) = values::operand(expr, *expr_span) else {
-                continue;
-            };
-            if let Ty::Known(t) = self.operand_ty(&op) {
-                let dest_real = matches!(&t, TypeRef::Named(n) if n.is("REAL") || n.is("LREAL"));
-                if !real || dest_real {
-                    return t;
+            for (ni, n) in self.g.nodes.iter().enumerate() {
+                match &n.kind {
+                    Kind::OutVar {
+                        expr, expr_span, ..
+                    }
+                    | Kind::InOutVar {
+                        expr, expr_span, ..
+                    } => {
+                        if !n.input.iter().any(|w| w.from == b) {
+                            continue;
+                        }
+                        let Some(op) = values::operand(expr, *expr_span) else {
+                            continue;
+                        };
+                        if let Ty::Known(t) = self.operand_ty(&op) {
+                            let dest_real =
+                                matches!(&t, TypeRef::Named(n) if n.is("REAL") || n.is("LREAL"));
+                            if !real || dest_real {
+                                return t;
+                            }
+                        }
+                    }
+                    Kind::Block {
+                        type_name, inputs, ..
+                    } => {
+                        let Some(f) = catalogue::std_function(type_name) else {
+                            continue;
+                        };
+                        let generic = matches!(f.rule, ResultRule::SameAsInputs);
+                        let feeds_data = inputs
+                            .iter()
+                            .skip(f.selectors)
+                            .any(|p| p.wires.iter().any(|w| w.from == b));
+                        if generic && feeds_data {
+                            stack.push(ni);
+                        }
+                    }
+                    _ => {}
                 }
             }
         }
@@ -1836,13 +1874,18 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     inst,
                     args,
                     en,
+                    en_arg,
                     span,
                 } => {
                     let mut ops = Vec::new();
+                    if let (Some(e), true) = (en, en_arg) {
+                        ops.push(("EN".to_string(), self.operand(*e, out)));
+                    }
                     for (n, v) in args {
                         ops.push((n.name.clone(), self.operand(*v, out)));
                     }
                     let cond = match en {
+                        Some(_) if *en_arg => Condition::Always,
                         Some(e) => {
                             self.prepare(*e, out);
                             self.eval(*e, out);

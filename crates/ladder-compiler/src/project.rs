@@ -53,6 +53,8 @@ pub struct Index {
     pub types: HashMap<String, TypeDecl>,
     /// Every global variable's type (configurations, resources, vendor global lists), by upper-case name.
     pub globals: HashMap<String, TypeRef>,
+    /// The members of each named global variable list (CODESYS GVL), by list, then member name.
+    pub global_lists: HashMap<String, HashMap<String, TypeRef>>,
 }
 
 /// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a
@@ -110,14 +112,24 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
                 .collect()
         })
         .unwrap_or_default();
-    for c in &configs {
-        let blocks = c
-            .globals
-            .iter()
-            .chain(c.resources.iter().flat_map(|r| r.globals.iter()));
-        for b in blocks {
-            for v in &b.vars {
-                index.globals.insert(v.name.key(), v.ty.clone());
+    let free_globals = project_global_lists(ctx, root);
+    let blocks = configs
+        .iter()
+        .flat_map(|c| {
+            c.globals
+                .iter()
+                .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+        })
+        .chain(free_globals.iter());
+    for b in blocks {
+        for v in &b.vars {
+            index.globals.insert(v.name.key(), v.ty.clone());
+            if let Some(list) = &b.name {
+                index
+                    .global_lists
+                    .entry(list.key())
+                    .or_default()
+                    .insert(v.name.key(), v.ty.clone());
             }
         }
     }
@@ -139,8 +151,36 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
         unit.items.push(LibraryElement::Pou(pou));
     }
     unit.items
+        .extend(free_globals.into_iter().map(LibraryElement::GlobalVars));
+    unit.items
         .extend(configs.into_iter().map(LibraryElement::Configuration));
     unit
+}
+
+/// The global variable lists a CODESYS export keeps outside `<instances>`, in the project's vendor
+/// data: `addData/data[.../globalvars]/globalVars` (a GVL exported on its own) and
+/// `addData/data[.../application]/resource/globalVars` (the lists of an application). They are
+/// global to every POU of the file, like a `VAR_GLOBAL` outside a configuration.
+fn project_global_lists(ctx: &mut Ctx, root: &Element) -> Vec<VarBlock> {
+    let mut lists: Vec<&Element> = Vec::new();
+    for data in root
+        .children_named("addData")
+        .flat_map(|a| a.children_named("data"))
+    {
+        let name = data.attr("name").unwrap_or("");
+        if name.ends_with("/globalvars") {
+            lists.extend(data.children_named("globalVars"));
+        } else if name.ends_with("/application") {
+            lists.extend(
+                data.children_named("resource")
+                    .flat_map(|r| r.children_named("globalVars")),
+            );
+        }
+    }
+    lists
+        .into_iter()
+        .flat_map(|g| decls::global_lists(ctx, g))
+        .collect()
 }
 
 /// The POUs reachable from the configurations' program instances (upper-cased names), or `None` when
@@ -457,7 +497,7 @@ fn configuration(ctx: &mut Ctx, c: &Element) -> Option<Configuration> {
     };
     let globals = c
         .children_named("globalVars")
-        .map(|g| decls::var_block(ctx, g, VarKind::Global))
+        .flat_map(|g| decls::global_lists(ctx, g))
         .collect();
     let resources = c
         .children_named("resource")
@@ -483,7 +523,7 @@ fn resource(ctx: &mut Ctx, r: &Element) -> Option<Resource> {
     };
     let globals: Vec<VarBlock> = r
         .children_named("globalVars")
-        .map(|g| decls::var_block(ctx, g, VarKind::Global))
+        .flat_map(|g| decls::global_lists(ctx, g))
         .collect();
     let mut tasks = Vec::new();
     let mut programs = Vec::new();

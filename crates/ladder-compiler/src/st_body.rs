@@ -9,7 +9,7 @@ use crate::context::Ctx;
 use crate::project::Index;
 use crate::xml::Element;
 use diagnostics::{Diagnostics, XmlContext};
-use il_frontend::ast::{IlStmt, Pou, VarBlock};
+use il_frontend::ast::{Ident, IlStmt, Pou, VarBlock};
 use il_frontend::st::{Declarations, PouInterface};
 
 /// What the ST lowering needs to know about the project: data types, POU interfaces, globals.
@@ -29,23 +29,40 @@ pub fn declarations(index: &Index) -> Declarations {
     for (name, ty) in &index.globals {
         d.add_global(name, ty.clone());
     }
+    for (list, members) in &index.global_lists {
+        for (name, ty) in members {
+            d.add_list_member(list, name, ty.clone());
+        }
+    }
     d
 }
 
-/// Parses and lowers the ST body of `pou` in place (spans point into the XML file).
+/// Parses and lowers the ST body of `pou` in place (spans point into the XML file). `actions` are
+/// the `<ST>` elements of the POU's actions (CODESYS), with their names: a call statement `Act();`
+/// is lowered as the action's statements.
 pub fn lower(
     ctx: &mut Ctx,
     index: &Index,
     e: &Element,
     pou: &Pou,
+    actions: &[(Ident, &Element)],
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
     let mut t = crate::il_body::embedded_text(e);
     join_split_operators(&mut t.text, t.base, ctx.xml);
     let decls = declarations(index);
     let mut local = Diagnostics::new();
     let span = ctx.tag(e);
-    let out =
-        il_frontend::st::compile_body(ctx.file, &t.text, t.base, &decls, pou, span, &mut local);
+    let actions: Vec<(Ident, String, usize)> = actions
+        .iter()
+        .map(|(n, st)| {
+            let mut a = crate::il_body::embedded_text(st);
+            join_split_operators(&mut a.text, a.base, ctx.xml);
+            (n.clone(), a.text, a.base)
+        })
+        .collect();
+    let out = il_frontend::st::compile_body_with_actions(
+        ctx.file, &t.text, t.base, &decls, pou, &actions, span, &mut local,
+    );
     for d in local {
         let d = if d.xml.is_none() {
             d.with_xml(XmlContext {

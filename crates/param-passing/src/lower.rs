@@ -439,6 +439,7 @@ pub fn lower(
                     })
                     .collect();
                 pou.var_blocks.push(VarBlock {
+                    name: None,
                     kind: VarKind::Local,
                     constant: false,
                     retain: false,

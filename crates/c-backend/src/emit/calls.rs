@@ -95,13 +95,35 @@ impl Gen<'_> {
                 })
             }
         };
+        // EN := e / ENO => v (IEC 61131-3: with EN FALSE the instance is not called and its ENO
+        // is FALSE; ladderc skips the whole call, inputs and `=>` copies included, as a ladder
+        // rung's CALC does)
+        let (en, eno_target) = self.en_eno(b, args);
+        if eno_target.is_some() && matches!(fb, FbType::User(_)) {
+            self.unsupported(
+                instance.span,
+                "`ENO =>` of a user function block instance (its body's ENO is not kept)",
+            );
+            return;
+        }
+        let stores_eno =
+            matches!(fb, FbType::Standard(_)) && (en.is_some() || self.model.fb_eno_read);
         match guard {
             Some(g) => b.line(&format!("if ({g}) {{")),
             None => b.line("{"),
         }
         b.indent += 1;
+        if let Some(e) = &en {
+            b.line(&format!("IEC_BOOL ladderc_en = (IEC_BOOL)({e});"));
+            b.line("if (ladderc_en) {");
+            b.indent += 1;
+        }
         let mut outputs = Vec::new();
         for binding in &info.args {
+            if binding.param.eq_ignore_ascii_case("EN") || binding.param.eq_ignore_ascii_case("ENO")
+            {
+                continue;
+            }
             if binding.output {
                 outputs.push(binding.clone());
                 continue;
@@ -135,6 +157,18 @@ impl Gen<'_> {
         }
         b.line(&invoke(self, &lv, fb));
         self.store_outputs(b, &lv, fb, &outputs, args);
+        if en.is_some() {
+            b.indent -= 1;
+            b.line("}");
+        }
+        let eno = if en.is_some() { "ladderc_en" } else { "1" };
+        if stores_eno {
+            b.line(&format!("{lv}.ENO = {eno};"));
+        }
+        if let Some(p) = eno_target {
+            let stmt = self.store(&p, eno);
+            b.line(&stmt);
+        }
         b.indent -= 1;
         b.line("}");
     }
@@ -259,6 +293,9 @@ impl Gen<'_> {
         let stmt = self.store(&Place::Mem { lv: field, ty: pty }, &v);
         b.line(&stmt);
         b.line(&invoke(self, &lv, fb));
+        if matches!(fb, FbType::Standard(_)) && self.model.fb_eno_read {
+            b.line(&format!("{lv}.ENO = 1;"));
+        }
     }
 
     /// A function called as an operator (standard, conversion or user function).

@@ -249,7 +249,19 @@ impl Gen<'_> {
 
     /// The place a variable reference denotes (None: an error was reported, or it is not a variable).
     pub fn place(&mut self, scope: &Scope, r: &VarRef) -> Option<Place> {
-        let base = self.base_place(scope, &r.base);
+        let mut base = self.base_place(scope, &r.base);
+        let mut skip = 0;
+        if base.is_none() {
+            // `GVL.x`: a member of a named global variable list (CODESYS, TwinCAT)
+            let member = match (self.model.global_list(&r.base.name), r.accessors.first()) {
+                (Some(list), Some(Accessor::Field(m))) => self.model.list_member(list, &m.name),
+                _ => None,
+            };
+            if let Some(g) = member {
+                base = Some(self.global_place(g, r.base.span));
+                skip = 1;
+            }
+        }
         let Some(base) = base else {
             self.report_once(
                 Diagnostic::error(
@@ -264,7 +276,7 @@ impl Gen<'_> {
             return None;
         };
         let mut place = base?;
-        for acc in &r.accessors {
+        for acc in r.accessors.iter().skip(skip) {
             let (lv, ty) = match place {
                 Place::Mem { lv, ty } => (lv, ty),
                 Place::Loc { .. } => {
@@ -289,6 +301,13 @@ impl Gen<'_> {
                         ty: v.ty.clone(),
                     });
                 }
+            }
+            Type::Fb(FbType::Standard(_)) if f.is("ENO") => {
+                // the ENO of the instance's last call (see `cal`)
+                return Some(Place::Mem {
+                    lv: format!("{lv}.ENO"),
+                    ty: Type::BOOL,
+                });
             }
             Type::Fb(FbType::Standard(fb)) => {
                 let (_, params) = ctypes::std_fb(*fb);

@@ -77,6 +77,7 @@ impl Analyzer<'_> {
                                 continue; // a duplicate
                             }
                             let blocks = [VarBlock {
+                                name: None,
                                 kind: VarKind::Local,
                                 constant: false,
                                 retain: false,
@@ -116,6 +117,9 @@ impl Analyzer<'_> {
                                 global_consts.insert(key.clone(), (v.ty.clone(), val.clone()));
                             }
                         }
+                        if let Some(list) = &block.name {
+                            self.add_list_member(list, GlobalRef::Free(self.model.globals.len()));
+                        }
                         self.free_globals.insert(key, self.model.globals.len());
                         self.model.globals.push(v);
                     }
@@ -127,16 +131,30 @@ impl Analyzer<'_> {
         for unit in units {
             for item in &unit.items {
                 if let LibraryElement::Configuration(c) = item {
+                    let config = self.model.configurations.len();
                     let globals = self.declare_vars(&c.globals, &global_consts, None);
+                    self.record_lists(&c.globals, &globals, |index| GlobalRef::Configuration {
+                        config,
+                        index,
+                    });
                     let resources = c
                         .resources
                         .iter()
-                        .map(|r| Resource {
-                            name: r.name.name.clone(),
-                            span: r.span,
-                            globals: self.declare_vars(&r.globals, &global_consts, None),
-                            tasks: Vec::new(),
-                            programs: Vec::new(),
+                        .enumerate()
+                        .map(|(resource, r)| {
+                            let globals = self.declare_vars(&r.globals, &global_consts, None);
+                            self.record_lists(&r.globals, &globals, |index| GlobalRef::Resource {
+                                config,
+                                resource,
+                                index,
+                            });
+                            Resource {
+                                name: r.name.name.clone(),
+                                span: r.span,
+                                globals,
+                                tasks: Vec::new(),
+                                programs: Vec::new(),
+                            }
                         })
                         .collect();
                     self.model.configurations.push(Configuration {
@@ -160,6 +178,40 @@ impl Analyzer<'_> {
             }
         }
         pous
+    }
+
+    /// Adds a global to the named list `list` (a CODESYS GVL), creating the list on first use.
+    fn add_list_member(&mut self, list: &ast::Ident, r: GlobalRef) {
+        let lists = &mut self.model.global_lists;
+        match lists
+            .iter_mut()
+            .find(|l| l.name.eq_ignore_ascii_case(&list.name))
+        {
+            Some(l) => l.members.push(r),
+            None => lists.push(GlobalList {
+                name: list.name.clone(),
+                span: list.span,
+                members: vec![r],
+            }),
+        }
+    }
+
+    /// Records the members of the named blocks among `blocks`, declared as `globals` (in order; a
+    /// variable that could not be declared is not there, so members are found by name).
+    fn record_lists(
+        &mut self,
+        blocks: &[ast::VarBlock],
+        globals: &[Variable],
+        at: impl Fn(usize) -> GlobalRef,
+    ) {
+        for b in blocks {
+            let Some(list) = &b.name else { continue };
+            for v in &b.vars {
+                if let Some(i) = globals.iter().position(|g| v.name.is(&g.name)) {
+                    self.add_list_member(list, at(i));
+                }
+            }
+        }
     }
 
     /// Registers a POU or type name; reports a duplicate (returns false).

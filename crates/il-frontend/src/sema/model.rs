@@ -753,6 +753,19 @@ pub enum GlobalRef {
     },
 }
 
+/// A named global variable list (a CODESYS/TwinCAT GVL: `<globalVars name="GVL">`). Its members are
+/// ordinary globals, also reachable qualified as `GVL.member`; lists of the same name (the sections of
+/// one CODESYS list) are one list.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GlobalList {
+    /// The list's name as first declared (`GVL` in `<globalVars name="GVL">`).
+    pub name: String,
+    /// The first declaration's name.
+    pub span: Span,
+    /// The list's variables, in declaration order over all its sections (each an ordinary global).
+    pub members: Vec<GlobalRef>,
+}
+
 /// A resolved `CONFIGURATION` (IEC 61131-3 2.7.1).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Configuration {
@@ -978,6 +991,13 @@ pub struct Model {
     pub configurations: Vec<Configuration>,
     /// `VAR_GLOBAL` blocks outside configurations.
     pub globals: Vec<Variable>,
+    /// The named global variable lists (CODESYS/TwinCAT GVLs) of every scope, in source order.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub global_lists: Vec<GlobalList>,
+    /// Whether a body reads `inst.ENO` of a standard FB instance (then every call stores the
+    /// instance's ENO; otherwise only calls with EN do).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub fb_eno_read: bool,
     /// Keyed by the instruction's identity ([`InstrId::of`]).
     pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
@@ -1177,6 +1197,19 @@ impl Model {
                 index,
             } => &self.configurations[config].resources[resource].globals[index],
         }
+    }
+    /// The named global variable list `name` (a CODESYS GVL), case-insensitively.
+    pub fn global_list(&self, name: &str) -> Option<&GlobalList> {
+        self.global_lists
+            .iter()
+            .find(|l| l.name.eq_ignore_ascii_case(name))
+    }
+    /// The member `member` of a global variable list.
+    pub fn list_member(&self, list: &GlobalList, member: &str) -> Option<GlobalRef> {
+        list.members
+            .iter()
+            .copied()
+            .find(|&r| self.global(r).name.eq_ignore_ascii_case(member))
     }
     /// The IEC spelling of a type (`INT`, `STRING[20]`, `ARRAY [0..9] OF INT`, `TON`, a user type's name).
     pub fn type_name(&self, ty: &Type) -> String {

@@ -28,6 +28,9 @@ pub(super) enum ReadOnly {
 
 const HINT_CONST: &str = "write another variable, or drop CONSTANT from its declaration";
 const HINT_INPUT: &str = "write a local copy, or declare the variable VAR_IN_OUT / VAR_OUTPUT";
+const HINT_INPUT_WRITE: &str = "IEC 61131-3 makes inputs read-only inside the POU; ladderc, like CODESYS, \
+     TwinCAT and matiec, writes the POU's own copy (the caller's variable is not changed). For portable \
+     code write a local copy, or declare it VAR_IN_OUT / VAR_OUTPUT";
 const HINT_FB_OUTPUT: &str =
     "outputs of an FB instance are written by the instance itself; read them with LD";
 const HINT_ENUM: &str = "store into a variable";
@@ -164,8 +167,25 @@ impl Body<'_, '_> {
     }
 
     fn report_read_only(&mut self, v: &VarRef, ro: ReadOnly, what: &str) {
-        let name = &v.base.name;
+        let qualified = self.is_list_access(v).then(|| path_text(v, 1));
+        let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
+        if let ReadOnly::PouInput { decl: Some(decl) } = ro {
+            // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)
+            // accept it and write the POU's own copy of the input: so does ladderc, with a warning
+            drop(
+                self.a
+                    .warning(
+                        code::W1411,
+                        v.span,
+                        format!("`{name}` is an input of `{pou}`, written inside it"),
+                    )
+                    .label(format!("{what} writes it here"))
+                    .also(decl, "declared VAR_INPUT here")
+                    .hint(HINT_INPUT_WRITE),
+            );
+            return;
+        }
         let (code, message, decl, hint): (Code, String, Option<(Span, &str)>, &str) = match ro {
             ReadOnly::Constant { decl } => (
                 code::E1014,
@@ -287,10 +307,15 @@ impl Body<'_, '_> {
 
     /// Resolves a variable access (reports undeclared names and invalid accesses once).
     pub(super) fn resolve_var(&mut self, v: &VarRef) -> Place {
-        let Some(mut place) = self.lookup_base(&v.base, v.accessors.is_empty()) else {
-            return Place::error();
+        let (mut place, skip) = match self.list_member(v) {
+            Some(Some(p)) => (p, 1),
+            Some(None) => return Place::error(),
+            None => match self.lookup_base(&v.base, v.accessors.is_empty()) {
+                Some(p) => (p, 0),
+                None => return Place::error(),
+            },
         };
-        for (at, acc) in v.accessors.iter().enumerate() {
+        for (at, acc) in v.accessors.iter().enumerate().skip(skip) {
             if place.ty.is_error() {
                 return Place::error();
             }
@@ -370,6 +395,74 @@ impl Body<'_, '_> {
             }
         }
         place
+    }
+
+    /// Whether `v` is a qualified access to a global variable list, `GVL.x` (CODESYS, TwinCAT): its base
+    /// names a list and nothing else visible in the POU (a variable of that name wins).
+    pub(super) fn is_list_access(&self, v: &VarRef) -> bool {
+        let base = &v.base;
+        if self.a.model.global_lists.is_empty() || self.a.model.global_list(&base.name).is_none() {
+            return false;
+        }
+        let pou = self.pou();
+        !(pou.var_position(&base.name).is_some()
+            || (pou.kind == PouKind::Function && base.is(&pou.name))
+            || (pou.kind != PouKind::Program && (base.is("EN") || base.is("ENO")))
+            || self.a.free_globals.contains_key(&base.key())
+            || self.a.find_global(&base.name).is_some())
+    }
+
+    /// A qualified access `GVL.x` to a member of a global variable list: `None` when `v` is not one,
+    /// `Some(None)` when it is but names no member (reported: E1001 at the member, or at the list when
+    /// no member is named).
+    fn list_member(&mut self, v: &VarRef) -> Option<Option<Place>> {
+        if !self.is_list_access(v) {
+            return None;
+        }
+        let list = self.a.model.global_list(&v.base.name)?.clone();
+        let Some(Accessor::Field(m)) = v.accessors.first() else {
+            self.a
+                .error(
+                    code::E1001,
+                    v.base.span,
+                    format!("`{}` is a global variable list, not a variable", list.name),
+                )
+                .label("a list name")
+                .also(list.span, "list declared here")
+                .hint(format!(
+                    "name one of its variables: {}.<variable>",
+                    list.name
+                ));
+            return Some(None);
+        };
+        let Some(r) = self.a.model.list_member(&list, &m.name) else {
+            let names: Vec<&str> = list
+                .members
+                .iter()
+                .map(|&r| self.a.model.global(r).name.as_str())
+                .collect();
+            let shown = names.iter().take(8).copied().collect::<Vec<_>>().join(", ");
+            let more = if names.len() > 8 { ", ..." } else { "" };
+            self.a
+                .error(
+                    code::E1001,
+                    m.span,
+                    format!(
+                        "global variable list `{}` has no variable `{}`",
+                        list.name, m.name
+                    ),
+                )
+                .label("not in this list")
+                .also(list.span, "list declared here")
+                .hint(format!("{} declares: {shown}{more}", list.name));
+            return Some(None);
+        };
+        self.note_name(m.span, NameRef::Global(r));
+        let g = self.a.model.global(r);
+        Some(Some(Place {
+            ty: g.ty.clone(),
+            read_only: g.constant.then_some(ReadOnly::Constant { decl: g.span }),
+        }))
     }
 
     /// The variable a name refers to in this POU.
@@ -556,6 +649,7 @@ impl Body<'_, '_> {
             .iter()
             .map(|v| v.name.as_str())
             .chain(self.a.model.globals.iter().map(|g| g.name.as_str()))
+            .chain(self.a.model.global_lists.iter().map(|l| l.name.as_str()))
             .filter(|n| n.chars().count().abs_diff(up_chars) <= limit)
             .filter_map(|n| {
                 let d = edit_distance(&n.to_ascii_uppercase(), &up);
@@ -593,6 +687,14 @@ impl Body<'_, '_> {
                     .label("unknown field")
                     .hint(format!("fields of {t}: {}", names.join(", ")));
                 None
+            }
+            Type::Fb(FbType::Standard(_)) if f.is("ENO") => {
+                // the ENO of the instance's last call (IEC 61131-3: FALSE when EN was FALSE)
+                self.a.model.fb_eno_read = true;
+                Some(Place {
+                    ty: Type::BOOL,
+                    read_only: Some(ReadOnly::FbOutput { at }),
+                })
             }
             Type::Fb(fb) => {
                 let params = fb_param_list(&self.a.model, *fb);

@@ -53,6 +53,11 @@ pub struct PouText {
     pub sfc: Option<Range<usize>>,
     /// The first `METHOD name` / `PROPERTY name` of a body (edition 3 object orientation: E0303).
     pub oop: Option<Range<usize>>,
+    /// Not a POU: a CODESYS/RuSTy `ACTIONS ... END_ACTIONS` block (the `ACTIONS` keyword; `body` is
+    /// the whole block). Its actions belong to the POU before it (see [`PouText::action_list`]).
+    pub actions: Option<Range<usize>>,
+    /// The `ACTION name [:] ... END_ACTION` of an `ACTIONS` block: name and its range, text range.
+    pub action_list: Vec<(String, Range<usize>, Range<usize>)>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -66,6 +71,8 @@ pub struct PendingBody {
     pub base: usize,
     /// The body's text.
     pub text: String,
+    /// The POU's actions (an `ACTIONS` block after it): name, text, offset of the text.
+    pub actions: Vec<(crate::ast::Ident, String, usize)>,
 }
 
 /// IL operators (and the `&` forms): a line starting with one of these is an IL instruction.
@@ -125,6 +132,46 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
             "TYPE" => i = skip_to(i + 1, "END_TYPE"),
             "CONFIGURATION" => i = skip_to(i + 1, "END_CONFIGURATION"),
             "RESOURCE" => i = skip_to(i + 1, "END_RESOURCE"),
+            "ACTIONS" => {
+                let start = t.range.clone();
+                let j = skip_to(i + 1, "END_ACTIONS");
+                let end = toks[j - 1].range.end;
+                let mut action_list = Vec::new();
+                let mut k = i + 1;
+                while k < j {
+                    if is_word(src, &toks[k], "ACTION")
+                        && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Ident)
+                    {
+                        let name_tok = &toks[k + 1];
+                        let mut b = k + 2;
+                        if toks.get(b).is_some_and(|t| t.tok == Tok::Colon) {
+                            b += 1;
+                        }
+                        let text_start = toks[b - 1].range.end;
+                        let e = skip_to(b, "END_ACTION").min(j);
+                        let text_end = toks[e - 1].range.start.max(text_start);
+                        action_list.push((
+                            word(src, name_tok).to_string(),
+                            name_tok.range.clone(),
+                            text_start..text_end,
+                        ));
+                        k = e;
+                    } else {
+                        k += 1;
+                    }
+                }
+                out.push(PouText {
+                    name: "ACTIONS".into(),
+                    name_range: start.clone(),
+                    body: start.start..end,
+                    lang: Lang::Il,
+                    sfc: None,
+                    oop: None,
+                    actions: Some(start),
+                    action_list,
+                });
+                i = j;
+            }
             _ if is_var_keyword(&w) => i = skip_to(i + 1, "END_VAR"),
             "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" => {
                 let end_word = format!("END_{w}");
@@ -200,6 +247,8 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     lang: body_lang(src, &toks[first..j.min(n - 1)]),
                     sfc,
                     oop,
+                    actions: None,
+                    action_list: Vec::new(),
                 });
                 i = j + 1;
             }
@@ -386,7 +435,40 @@ pub fn parse_text(
             }
         }
     }
-    for p in &pous {
+    for (pi, p) in pous.iter().enumerate() {
+        if let Some(r) = &p.actions {
+            // the actions of the ST POU just before the block: inlined where its body calls them
+            let owner = pi.checked_sub(1).and_then(|k| pous.get(k)).filter(|q| {
+                q.actions.is_none() && q.lang == Lang::St && q.sfc.is_none() && q.oop.is_none()
+            });
+            if let (Some(q), Some(pb)) = (owner, pending.last_mut()) {
+                if pb.name_start == q.name_range.start && !p.action_list.is_empty() {
+                    for (name, name_range, text) in &p.action_list {
+                        pb.actions.push((
+                            crate::ast::Ident::new(
+                                name,
+                                Span::new(file, name_range.start, name_range.end),
+                            ),
+                            src.get(text.clone()).unwrap_or("").to_string(),
+                            text.start,
+                        ));
+                    }
+                    blank(&mut text, p.body.clone());
+                    continue;
+                }
+            }
+            diags.push(
+                Diagnostic::error(
+                    code::E0304,
+                    "an ACTIONS block is supported only right after a POU whose body is ST",
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("the block starts here; it is not compiled")
+                .with_hint("put the block after the POU whose ST body calls its actions, or write each action's statements where it is called"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         if let Some(r) = &p.sfc {
             diags.push(
                 Diagnostic::error(
@@ -427,6 +509,7 @@ pub fn parse_text(
                     name_start: p.name_range.start,
                     base: p.body.start,
                     text: src.get(p.body.clone()).unwrap_or("").to_string(),
+                    actions: Vec::new(),
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -479,8 +562,16 @@ pub fn compile_pending(
                 continue;
             }
             let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
-            let (body, temps) =
-                super::compile_body(pb.file, &pb.text, pb.base, &decls, p, span, diags);
+            let (body, temps) = super::compile_body_with_actions(
+                pb.file,
+                &pb.text,
+                pb.base,
+                &decls,
+                p,
+                &pb.actions,
+                span,
+                diags,
+            );
             p.body = body;
             if let Some(t) = temps {
                 p.var_blocks.push(t);

@@ -133,14 +133,20 @@ impl Env<'_> {
 
     /// The type of a place, or `None` when some part of it is unknown.
     pub fn place_type(&self, p: &Place) -> Option<TypeRef> {
+        let mut skip = 0;
         let mut t = match &p.base {
-            PlaceBase::Name(n) => self.var_type(n).or_else(|| {
-                if p.accessors.is_empty() {
-                    self.enum_of_value(n)
-                } else {
-                    None
-                }
-            })?,
+            PlaceBase::Name(n) => match self.var_type(n) {
+                Some(t) => t,
+                None => match (self.decls.global_lists.get(&n.key()), p.accessors.first()) {
+                    // `GVL.x`: a member of a named global variable list
+                    (Some(list), Some(Accessor::Field(m))) => {
+                        skip = 1;
+                        list.get(&m.key())?.clone()
+                    }
+                    _ if p.accessors.is_empty() => self.enum_of_value(n)?,
+                    _ => return None,
+                },
+            },
             PlaceBase::Address(a) => {
                 let e = match a.size {
                     AddressSize::Bit => Elementary::Bool,
@@ -152,7 +158,7 @@ impl Env<'_> {
                 elem_ref(e, a.span)
             }
         };
-        for acc in &p.accessors {
+        for acc in p.accessors.iter().skip(skip) {
             t = match acc {
                 Accessor::Field(f) => self.member(&t, f)?,
                 Accessor::Index(_) => match self.resolve(&t) {

@@ -47,6 +47,11 @@ pub struct PouLowering<'d> {
     /// The type an untyped literal loaded first by the next [`Self::value`] should get (`LD REAL#2.0`
     /// where the context is REAL), so IL sema does not default it to DINT/LREAL.
     lit_hint: Option<TypeRef>,
+    /// The POU's actions (CODESYS: a program's or FB's `<actions>` with ST bodies), by upper-case
+    /// name: a call statement `Act();` lowers the action's statements in its place.
+    actions: HashMap<String, std::rc::Rc<Vec<Stmt>>>,
+    /// Actions being inlined (a call of one inside itself is reported, not expanded forever).
+    inlining: Vec<String>,
     /// Types of the subexpressions of the trees being lowered (so lowering a chain of n operators
     /// types each node once, not n times). Cleared by every public entry point and after lowering a
     /// tree built here, so no entry outlives the node it describes.
@@ -147,8 +152,19 @@ impl<'d> PouLowering<'d> {
             loops: Vec::new(),
             poisoned: false,
             lit_hint: None,
+            actions: HashMap::new(),
+            inlining: Vec::new(),
             types: RefCell::new(TypeCache::new()),
         }
+    }
+
+    /// The POU's actions (name, parsed statements): a call statement `Act();` of one (with no
+    /// arguments, where no variable or POU has that name) is lowered as the action's statements.
+    pub fn set_actions(&mut self, actions: Vec<(Ident, Vec<Stmt>)>) {
+        self.actions = actions
+            .into_iter()
+            .map(|(n, s)| (n.key(), std::rc::Rc::new(s)))
+            .collect();
     }
 
     /// Makes a variable the POU will have (but `pou.var_blocks` did not list when [`Self::new`] ran)
@@ -169,6 +185,22 @@ impl<'d> PouLowering<'d> {
         self.types.get_mut().clear();
         self.stmt_list(stmts, &mut out, diags);
         out
+    }
+
+    /// The action a call statement names: `Act();` without arguments, where `Act` is an action of
+    /// the POU and no variable, POU or function result has that name.
+    fn action_of(&self, callee: &Place, args: &[Arg]) -> Option<(String, std::rc::Rc<Vec<Stmt>>)> {
+        if self.actions.is_empty() || !args.is_empty() || !callee.accessors.is_empty() {
+            return None;
+        }
+        let PlaceBase::Name(n) = &callee.base else {
+            return None;
+        };
+        let body = self.actions.get(&n.key())?;
+        if self.env().var_type(n).is_some() || self.decls.pou(&n.name).is_some() {
+            return None;
+        }
+        Some((n.key(), body.clone()))
     }
 
     /// Lowers an expression: the instructions leave its value in the current result.
@@ -198,6 +230,7 @@ impl<'d> PouLowering<'d> {
     /// The `VAR_TEMP` block holding the temporaries (none when no temporary was needed).
     pub fn finish(self, span: Span) -> Option<VarBlock> {
         (!self.temps.is_empty()).then_some(VarBlock {
+            name: None,
             kind: VarKind::Temp,
             constant: false,
             retain: false,
@@ -308,6 +341,28 @@ impl<'d> PouLowering<'d> {
                 if let (Some(p), false) = (place, self.poisoned) {
                     code.push(simple(Op::St, false, Some(p), span));
                     out.extend(code);
+                }
+            }
+            StmtKind::Call { callee, args } if self.action_of(callee, args).is_some() => {
+                let (key, body) = self.action_of(callee, args).expect("checked by the guard");
+                if self.inlining.contains(&key) {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0106,
+                            format!(
+                                "action `{key}` calls itself (directly or through another action)"
+                            ),
+                        )
+                        .at(span)
+                        .with_primary_label("recursive action call")
+                        .with_hint(
+                            "actions are inlined where they are called; they cannot recurse",
+                        ),
+                    );
+                } else {
+                    self.inlining.push(key);
+                    self.stmt_list(&body, out, diags);
+                    self.inlining.pop();
                 }
             }
             StmtKind::Call { callee, args } => {

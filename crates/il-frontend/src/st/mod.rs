@@ -61,8 +61,32 @@ pub fn compile_body(
     span: Span,
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
+    compile_body_with_actions(file, src, base, decls, pou, &[], span, diags)
+}
+
+/// [`compile_body`] of a POU that has actions with ST bodies (`(name, text, base)`, CODESYS
+/// exports): a call statement `Act();` in the body (or in another action) is lowered as the
+/// action's statements, in place.
+#[allow(clippy::too_many_arguments)]
+pub fn compile_body_with_actions(
+    file: FileId,
+    src: &str,
+    base: usize,
+    decls: &Declarations,
+    pou: &Pou,
+    actions: &[(crate::ast::Ident, String, usize)],
+    span: Span,
+    diags: &mut Diagnostics,
+) -> (Vec<IlStmt>, Option<VarBlock>) {
     let stmts = parse_statements(file, src, base, diags);
     let mut low = PouLowering::new(decls, pou);
+    if !actions.is_empty() {
+        let parsed = actions
+            .iter()
+            .map(|(n, text, b)| (n.clone(), parse_statements(file, text, *b, diags)))
+            .collect();
+        low.set_actions(parsed);
+    }
     let body = low.statements(&stmts, diags);
     (body, low.finish(span))
 }

@@ -61,6 +61,8 @@ pub struct Declarations {
     pub pous: HashMap<String, PouInterface>,
     /// Global variables' declared types by upper-case name.
     pub globals: HashMap<String, TypeRef>,
+    /// Named global variable lists (CODESYS GVLs): list, then member, both upper-case.
+    pub global_lists: HashMap<String, HashMap<String, TypeRef>>,
 }
 
 impl Declarations {
@@ -75,20 +77,14 @@ impl Declarations {
             match item {
                 LibraryElement::DataTypes(ts) => ts.iter().for_each(|t| d.add_type(t.clone())),
                 LibraryElement::Pou(p) => d.add_pou(p),
-                LibraryElement::GlobalVars(b) => {
-                    for v in &b.vars {
-                        d.add_global(&v.name.name, v.ty.clone());
-                    }
-                }
+                LibraryElement::GlobalVars(b) => d.add_global_block(b),
                 LibraryElement::Configuration(c) => {
                     let blocks = c
                         .globals
                         .iter()
                         .chain(c.resources.iter().flat_map(|r| r.globals.iter()));
                     for b in blocks {
-                        for v in &b.vars {
-                            d.add_global(&v.name.name, v.ty.clone());
-                        }
+                        d.add_global_block(b);
                     }
                 }
             }
@@ -110,6 +106,21 @@ impl Declarations {
     /// Registers a global variable's type.
     pub fn add_global(&mut self, name: &str, ty: TypeRef) {
         self.globals.insert(name.to_ascii_uppercase(), ty);
+    }
+    /// A member of the named global variable list `list` (reachable as `list.name`).
+    pub fn add_list_member(&mut self, list: &str, name: &str, ty: TypeRef) {
+        self.global_lists
+            .entry(list.to_ascii_uppercase())
+            .or_default()
+            .insert(name.to_ascii_uppercase(), ty);
+    }
+    fn add_global_block(&mut self, b: &crate::ast::VarBlock) {
+        for v in &b.vars {
+            self.add_global(&v.name.name, v.ty.clone());
+            if let Some(list) = &b.name {
+                self.add_list_member(&list.name, &v.name.name, v.ty.clone());
+            }
+        }
     }
     /// A POU's interface by name (case-insensitive).
     pub fn pou(&self, name: &str) -> Option<&PouInterface> {
