@@ -69,6 +69,11 @@ pub struct XmlError {
 impl<'a> Element<'a> {
     /// An attribute's value (entities decoded), by local name.
     pub fn attr(&self, name: &str) -> Option<&str> {
+        // Every attribute name the scan yields is a slice of the tag: a name that is nowhere in the tag
+        // (the usual case for optional attributes such as `negated`) is absent without a scan.
+        if !self.raw_tag.contains(name) {
+            return None;
+        }
         let raw = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
         let value = &self.raw_tag[raw.1..raw.2];
         if !value.contains('&') {
@@ -81,6 +86,9 @@ impl<'a> Element<'a> {
     }
     /// The byte range of an attribute's raw value in the document.
     pub fn attr_range(&self, name: &str) -> Option<(usize, usize)> {
+        if !self.raw_tag.contains(name) {
+            return None;
+        }
         let (_, start, end) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
         Some((self.tag_start + 1 + start, self.tag_start + 1 + end))
     }

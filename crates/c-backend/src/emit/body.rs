@@ -62,6 +62,15 @@ impl<'s, 'm> Body<'s, 'm> {
         self.out.push_str(text);
         self.out.push('\n');
     }
+    /// [`Body::line`] for formatted text, written straight into the body (no `String` per line).
+    pub fn line_fmt(&mut self, args: std::fmt::Arguments) {
+        use std::fmt::Write as _;
+        for _ in 0..self.indent.min(MAX_INDENT) {
+            self.out.push_str("    ");
+        }
+        let _ = self.out.write_fmt(args);
+        self.out.push('\n');
+    }
     pub(super) fn temp(&mut self) -> String {
         self.temps += 1;
         format!("t_{}", self.temps)
@@ -180,7 +189,7 @@ impl<'a> Gen<'a> {
                     if b.targets.contains(&l.key()) {
                         let ind = b.indent;
                         b.indent = ind.saturating_sub(1);
-                        b.line(&format!("{}:;", mangle::label(&l.name)));
+                        b.line_fmt(format_args!("{}:;", mangle::label(&l.name)));
                         b.indent = ind;
                     }
                 }
@@ -229,7 +238,7 @@ impl<'a> Gen<'a> {
             InstrKind::EmbeddedC { name } => match self.embedded.get(&name.key()) {
                 Some(c) => {
                     let c = c.clone();
-                    b.line(&format!("{c}();"));
+                    b.line_fmt(format_args!("{c}();"));
                 }
                 None => self.report_once(
                     Diagnostic::error(
@@ -296,7 +305,7 @@ impl<'a> Gen<'a> {
         } else {
             format!("!{cr}")
         };
-        b.line(&format!("if ({test}) {stmt}"));
+        b.line_fmt(format_args!("if ({test}) {stmt}"));
     }
 
     fn simple(
@@ -321,7 +330,7 @@ impl<'a> Gen<'a> {
                     return;
                 };
                 let v = if negate { negated(&v, &ty) } else { v };
-                b.line(&format!("{cr} = {v};"));
+                b.line_fmt(format_args!("{cr} = {v};"));
             }
             Op::St => {
                 let (Some(ty), Some(o)) = (info.cr_before.clone(), operand) else {
@@ -358,7 +367,7 @@ impl<'a> Gen<'a> {
                 };
                 let one = convert(if op == Op::S { "1" } else { "0" }, &Type::BOOL, place.ty());
                 let stmt = self.store(&place, &one);
-                b.line(&format!("if ({cr}) {{ {stmt} }}"));
+                b.line_fmt(format_args!("if ({cr}) {{ {stmt} }}"));
             }
             Op::Not => {
                 let Some(ty) = info.cr_before.clone() else {
@@ -368,7 +377,7 @@ impl<'a> Gen<'a> {
                     return;
                 };
                 let v = negated(&cr, &ty);
-                b.line(&format!("{cr} = {v};"));
+                b.line_fmt(format_args!("{cr} = {v};"));
             }
             _ => {
                 let (Some(before), Some(after), Some(o)) =
@@ -392,7 +401,7 @@ impl<'a> Gen<'a> {
                 let Some(cr) = self.cr(b, &after, span) else {
                     return;
                 };
-                b.line(&format!("{cr} = {res};"));
+                b.line_fmt(format_args!("{cr} = {res};"));
             }
         }
     }
@@ -611,7 +620,7 @@ impl<'a> Gen<'a> {
                 return None;
             };
             let decl = ctypes::declare(self.model, &before, &d).unwrap_or_default();
-            b.line(&format!("{decl} = {cr};"));
+            b.line_fmt(format_args!("{decl} = {cr};"));
             Some(before)
         };
         if let Some(o) = operand {
@@ -624,7 +633,7 @@ impl<'a> Gen<'a> {
                 .or_else(|| info.operand.clone())
                 .unwrap_or_else(|| self.operand_type(b.scope, o, None));
             if let (Some(cr), Some(v)) = (self.cr(b, &ty, o.span()), self.value(b.scope, o, &ty)) {
-                b.line(&format!("{cr} = {v};"));
+                b.line_fmt(format_args!("{cr} = {v};"));
             }
         }
         Some(Deferred {
@@ -654,7 +663,7 @@ impl<'a> Gen<'a> {
                     }
                 };
                 if let (Some(res), Some(cr)) = (res, self.cr(b, &after, span)) {
-                    b.line(&format!("{cr} = {res};"));
+                    b.line_fmt(format_args!("{cr} = {res};"));
                 }
             }
         }

@@ -96,7 +96,7 @@ impl Gen<'_> {
             }
         };
         match guard {
-            Some(g) => b.line(&format!("if ({g}) {{")),
+            Some(g) => b.line_fmt(format_args!("if ({g}) {{")),
             None => b.line("{"),
         }
         b.indent += 1;
@@ -117,7 +117,7 @@ impl Gen<'_> {
                 match self.operand_place(b.scope, o) {
                     Some(Place::Mem { lv: target, .. }) => {
                         let raw = self.fb_param_raw(&lv, fb, &binding.param);
-                        b.line(&format!("{raw} = &{target};"));
+                        b.line_fmt(format_args!("{raw} = &{target};"));
                     }
                     _ => self.unsupported(o.span(), "this argument for an IN_OUT parameter"),
                 }
@@ -288,7 +288,7 @@ impl Gen<'_> {
                 let (en, eno) = self.en_eno(b, args);
                 let res = self.gated(en.as_deref(), convert(&res, &result, &after), &after, span);
                 if let Some(cr) = self.cr(b, &after, span) {
-                    b.line(&format!("{cr} = {res};"));
+                    b.line_fmt(format_args!("{cr} = {res};"));
                 }
                 self.store_eno(b, en.as_deref(), eno);
             }
@@ -306,7 +306,7 @@ impl Gen<'_> {
                 let (en, eno) = self.en_eno(b, args);
                 let res = self.gated(en.as_deref(), convert(&res, &to, &after), &after, span);
                 if let Some(cr) = self.cr(b, &after, span) {
-                    b.line(&format!("{cr} = {res};"));
+                    b.line_fmt(format_args!("{cr} = {res};"));
                 }
                 self.store_eno(b, en.as_deref(), eno);
             }
@@ -404,7 +404,7 @@ impl Gen<'_> {
                     } else {
                         "{0}"
                     };
-                    b.line(&format!("{decl} = {init};"));
+                    b.line_fmt(format_args!("{decl} = {init};"));
                     call_args.push(format!("&{t}"));
                     if let Some(bd) = &binding {
                         if let ArgSource::Written(k) = bd.source {
@@ -444,10 +444,10 @@ impl Gen<'_> {
             (Some(rt), Some(after)) => {
                 if let Some(cr) = self.cr(b, &after, span) {
                     let v = convert(&call, rt, &after);
-                    b.line(&format!("{cr} = {v};"));
+                    b.line_fmt(format_args!("{cr} = {v};"));
                 }
             }
-            _ => b.line(&format!("{call};")),
+            _ => b.line_fmt(format_args!("{call};")),
         }
         for s in after_call {
             b.line(&s);
