@@ -413,11 +413,16 @@ impl<'a> Builder<'a> {
         if let Some(mut el) = self.stack.pop() {
             let start = self.starts.pop().unwrap_or(self.done.len());
             let text_start = self.text_starts.pop().unwrap_or(self.texts.len());
-            el.text = self.texts.split_off(text_start.min(self.texts.len()));
-            el.children = self
-                .done
-                .split_off(start.min(self.done.len()))
-                .into_boxed_slice();
+            // `split_off(0)` would hand over the whole shared buffer and allocate a new one of the
+            // same capacity: most elements have no text, so that was an allocation per element.
+            let text_start = text_start.min(self.texts.len());
+            if text_start < self.texts.len() {
+                el.text = self.texts.drain(text_start..).collect();
+            }
+            let start = start.min(self.done.len());
+            if start < self.done.len() {
+                el.children = self.done.drain(start..).collect();
+            }
             if let Some(end) = end {
                 el.end = end;
             }
