@@ -417,11 +417,11 @@ impl<'a> Builder<'a> {
             // same capacity: most elements have no text, so that was an allocation per element.
             let text_start = text_start.min(self.texts.len());
             if text_start < self.texts.len() {
-                el.text = self.texts.drain(text_start..).collect();
+                el.text = self.texts.split_off(text_start);
             }
             let start = start.min(self.done.len());
             if start < self.done.len() {
-                el.children = self.done.drain(start..).collect();
+                el.children = self.done.split_off(start).into_boxed_slice();
             }
             if let Some(end) = end {
                 el.end = end;
