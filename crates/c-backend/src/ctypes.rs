@@ -212,8 +212,8 @@ pub fn int_literal(e: Elementary, v: i128) -> String {
     let ct = elementary(e);
     match e {
         E::Bool => (if v != 0 { "1" } else { "0" }).to_string(),
-        E::Real => format!("((IEC_REAL){v}.0)"),
-        E::Lreal => format!("((IEC_LREAL){v}.0)"),
+        E::Real => cfmt!("((IEC_REAL){v}.0)"),
+        E::Lreal => cfmt!("((IEC_LREAL){v}.0)"),
         E::Usint | E::Uint | E::Udint | E::Ulint | E::Byte | E::Word | E::Dword | E::Lword => {
             let bits = e.bit_width();
             let masked = (v as u128)
@@ -222,7 +222,7 @@ pub fn int_literal(e: Elementary, v: i128) -> String {
                 } else {
                     (1u128 << bits) - 1
                 };
-            format!("(({ct})UINT64_C({masked}))")
+            cfmt!("(({ct})UINT64_C({masked}))")
         }
         _ => {
             let bits = e.bit_width().min(64);
@@ -239,11 +239,11 @@ pub fn int_literal(e: Elementary, v: i128) -> String {
                 m as i128
             };
             if sv == i64::MIN as i128 {
-                format!("(({ct})(-INT64_C(9223372036854775807) - 1))")
+                cfmt!("(({ct})(-INT64_C(9223372036854775807) - 1))")
             } else if sv < 0 {
-                format!("(({ct})-INT64_C({}))", -sv)
+                cfmt!("(({ct})-INT64_C({}))", -sv)
             } else {
-                format!("(({ct})INT64_C({sv}))")
+                cfmt!("(({ct})INT64_C({sv}))")
             }
         }
     }

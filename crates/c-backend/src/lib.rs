@@ -10,6 +10,17 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+/// `format!` into a `String` that starts with room for a typical C expression or statement (64
+/// bytes): `format!` sizes its buffer from the literal pieces only, so a short template such as
+/// `"{lv} = {value};"` regrows its string two or three times. Used on the per-instruction paths.
+macro_rules! cfmt {
+    ($($arg:tt)*) => {{
+        let mut s = String::with_capacity(64);
+        let _ = std::fmt::Write::write_fmt(&mut s, format_args!($($arg)*));
+        s
+    }};
+}
+
 mod budget;
 pub mod ctypes;
 mod emit;

@@ -572,6 +572,19 @@ impl<'s> Layout<'s> {
         if self.in_decl() || !matches!(self.prev, Last::Start | Last::Eol | Last::Colon) {
             return false;
         }
+        // The usual case, without lexing ahead: past the blanks the lexer skips, the next character
+        // cannot start `(` (`(*` opens a comment). A BOM or `/` (a skipped `//` comment) may hide one:
+        // those take the full look-ahead.
+        let rest = self.lex.remainder().as_bytes();
+        let blanks = rest
+            .iter()
+            .take_while(|b| matches!(b, b' ' | b'\t' | b'\r' | 0x0c))
+            .count();
+        match rest.get(blanks) {
+            Some(b'(') if rest.get(blanks + 1) != Some(&b'*') => {}
+            Some(0xEF | b'/') => {}
+            _ => return false,
+        }
         let mut ahead = self.lex.clone();
         if ahead.next() != Some(Ok(RawToken::LParen)) {
             return false;
@@ -730,5 +743,36 @@ mod tests {
                 "E0001 unexpected character `?`"
             ]
         );
+    }
+
+    /// An operator word followed by a formal argument list is passed on as a name (a function call),
+    /// also with blanks or a BOM before `(`; `(*` opens a comment and a bare operand is an operand.
+    #[test]
+    fn formal_call_look_ahead_sees_past_blanks_only() {
+        let word_of_mod = |src: &str| {
+            Layout::new(FileId(0), src, 0, Tok::UnitStart)
+                .filter_map(|t| t.ok())
+                .find_map(|(s, tok, e)| match tok {
+                    Tok::Word(w) if &src[s..e] == "MOD" => Some(w),
+                    _ => None,
+                })
+        };
+        for src in [
+            "MOD(IN1 := a, IN2 := b)\n",
+            "MOD \t\r(IN1 := a, IN2 := b)\n",
+            "MOD (\n IN1 := a, IN2 := b)\n",
+            "MOD\u{feff}(IN1 => a)\n",
+        ] {
+            assert_eq!(word_of_mod(src), Some(Word::Ident), "{src:?}");
+        }
+        for src in [
+            "MOD b\n",
+            "MOD (* c *) b\n",
+            "MOD // c\n",
+            "MOD(\n LD b\n)\n",
+            "MOD",
+        ] {
+            assert_eq!(word_of_mod(src), Some(Word::Mod), "{src:?}");
+        }
     }
 }

@@ -13,6 +13,7 @@
 use crate::context::Ctx;
 use crate::xml::Element;
 use diagnostics::{code, Diagnostic, Span};
+use rustc_hash::FxHashMap;
 use std::collections::HashMap;
 
 /// The `edge` attribute of a contact, coil or block pin (transition-sensing elements, IEC 61131-3 4.2).
@@ -291,7 +292,8 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     let mut raw_inputs: Vec<Vec<RawWire>> = Vec::new();
     let mut raw_pins: Vec<Vec<Vec<RawWire>>> = Vec::new();
     // localId -> node index; the ids are borrowed from the XML text.
-    let mut ids: HashMap<&str, usize> = HashMap::with_capacity(body.children.len());
+    let mut ids: FxHashMap<&str, usize> =
+        FxHashMap::with_capacity_and_hasher(body.children.len(), Default::default());
     for e in &body.children {
         let span = ctx.tag(e);
         let mut pin_wires = Vec::new();
@@ -522,7 +524,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
         }
     }
     // Connectors and continuations.
-    let mut connectors: HashMap<String, Vec<usize>> = HashMap::new();
+    let mut connectors: FxHashMap<String, Vec<usize>> = FxHashMap::default();
     for (i, n) in nodes.iter().enumerate() {
         if let Kind::Connector { name } = &n.kind {
             connectors
@@ -616,10 +618,13 @@ fn networks(nodes: &[Node], conts: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize
 
 /// Strongly connected components (iterative Tarjan) of the subgraph `net` with edges `deps[i]`
 /// (`i` depends on each of `deps[i]`). Returns the components with more than one node or a self-loop.
-pub fn cycles(net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize>> {
-    let mut index: HashMap<usize, usize> = HashMap::new();
-    let mut low: HashMap<usize, usize> = HashMap::new();
-    let mut on_stack: HashMap<usize, bool> = HashMap::new();
+pub fn cycles<S: std::hash::BuildHasher>(
+    net: &[usize],
+    deps: &HashMap<usize, Vec<usize>, S>,
+) -> Vec<Vec<usize>> {
+    let mut index: FxHashMap<usize, usize> = FxHashMap::default();
+    let mut low: FxHashMap<usize, usize> = FxHashMap::default();
+    let mut on_stack: FxHashMap<usize, bool> = FxHashMap::default();
     let mut stack: Vec<usize> = Vec::new();
     let mut out = Vec::new();
     let mut counter = 0;

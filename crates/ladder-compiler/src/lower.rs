@@ -34,8 +34,9 @@ use il_frontend::ast::{
     Instruction, Literal, LiteralKind, Op, Operand, PouKind, TypeDef, TypeRef, VarDecl, VarKind,
     VarRef,
 };
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
-use std::collections::{BTreeMap, BinaryHeap, HashMap, HashSet};
+use std::collections::{BTreeMap, BinaryHeap};
 
 type ValId = usize;
 
@@ -138,7 +139,10 @@ impl<'i> BodyLowering<'i> {
         body_span: Span,
     ) -> BodyLowering<'i> {
         let declared: usize = pou.var_blocks.iter().map(|b| b.vars.len()).sum();
-        let mut vars = HashMap::with_capacity(index.globals.len() + declared + 1);
+        let mut vars = HashMap::with_capacity_and_hasher(
+            index.globals.len() + declared + 1,
+            Default::default(),
+        );
         for (k, t) in &index.globals {
             vars.insert(Cow::Borrowed(k.as_str()), Cow::Borrowed(t));
         }
@@ -156,7 +160,7 @@ impl<'i> BodyLowering<'i> {
             vars,
             body_span,
             hidden: Vec::new(),
-            hidden_names: HashSet::new(),
+            hidden_names: HashSet::default(),
             pools: BTreeMap::new(),
         }
     }
@@ -202,8 +206,8 @@ impl<'i> BodyLowering<'i> {
     /// networks: the later network silently overrides the earlier one every scan ("double coil").
     /// Set/reset coils are left alone (latching from several rungs is the normal use).
     fn check_double_writes(&self, ctx: &mut Ctx, g: &Graph) {
-        let mut first: HashMap<String, (usize, usize)> = HashMap::new();
-        let mut warned: HashSet<String> = HashSet::new();
+        let mut first: HashMap<String, (usize, usize)> = HashMap::default();
+        let mut warned: HashSet<String> = HashSet::default();
         for (net, nodes) in g.networks.iter().enumerate() {
             for &i in nodes {
                 let (var, span) = match &g.nodes[i].kind {
@@ -541,13 +545,13 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             spans: Vec::new(),
             temps: Vec::new(),
             uses: Vec::new(),
-            pin_vals: HashMap::new(),
-            built: HashSet::new(),
-            poisoned: HashSet::new(),
+            pin_vals: HashMap::default(),
+            built: HashSet::default(),
+            poisoned: HashSet::default(),
             actions: Vec::new(),
             writes: Vec::new(),
             controls: Vec::new(),
-            used: HashMap::new(),
+            used: HashMap::default(),
             depth: Vec::new(),
             too_deep: None,
         }
@@ -574,7 +578,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     /// variable.
     fn order(&mut self, ctx: &mut Ctx, net: &[usize]) -> Option<Vec<usize>> {
         let g = self.g;
-        let mut deps: HashMap<usize, Vec<usize>> = HashMap::with_capacity(net.len());
+        let mut deps: HashMap<usize, Vec<usize>> =
+            HashMap::with_capacity_and_hasher(net.len(), Default::default());
         for &i in net {
             let mut d: Vec<usize> = g.nodes[i].wires().map(|w| w.from).collect();
             if let Some(srcs) = g.continuation_sources.get(&i) {
@@ -584,7 +589,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         }
         // A contact or input variable that names an output of a block instance of this network
         // (`T1.Q`) reads it after the block runs, like a wire would.
-        let mut implicit: HashSet<(usize, usize)> = HashSet::new();
+        let mut implicit: HashSet<(usize, usize)> = HashSet::default();
         let instances: HashMap<String, usize> = net
             .iter()
             .filter_map(|&i| match &g.nodes[i].kind {
@@ -1941,7 +1946,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 self.materialise(v, out);
             }
         }
-        let mut written: HashSet<String> = HashSet::new();
+        let mut written: HashSet<String> = HashSet::default();
         let mut stage_targets: Vec<HashSet<String>> = Vec::new();
         for (r, _) in &groups {
             stage_targets.push(
@@ -1952,7 +1957,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             );
         }
         for (gi, &v) in finals.iter().enumerate() {
-            let mut rd = HashSet::new();
+            let mut rd = HashSet::default();
             self.reads(v, &mut rd);
             if !rd.is_disjoint(&written) {
                 self.materialise(v, out);
@@ -2136,7 +2141,8 @@ fn named_type(name: &str, span: Span) -> TypeRef {
 /// Kahn's algorithm over `net`, ties broken by the documented order key; nodes on a loop are left out.
 fn kahn(g: &Graph, net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<usize> {
     let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
-    let mut users: HashMap<usize, Vec<usize>> = HashMap::with_capacity(net.len());
+    let mut users: HashMap<usize, Vec<usize>> =
+        HashMap::with_capacity_and_hasher(net.len(), Default::default());
     for (&i, d) in deps {
         for &s in d {
             if indeg.contains_key(&s) {

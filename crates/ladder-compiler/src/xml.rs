@@ -81,6 +81,11 @@ pub struct XmlError {
 impl<'a> Element<'a> {
     /// An attribute's value (entities decoded), by local name.
     pub fn attr(&self, name: &str) -> Option<&str> {
+        // Every attribute name the scan yields is a slice of the tag: a name that is nowhere in the tag
+        // (the usual case for optional attributes such as `negated`) is absent without a scan.
+        if !self.raw_tag.contains(name) {
+            return None;
+        }
         let raw = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
         let value = &self.raw_tag[raw.1..raw.2];
         if !value.contains('&') {
@@ -93,6 +98,9 @@ impl<'a> Element<'a> {
     }
     /// The byte range of an attribute's raw value in the document.
     pub fn attr_range(&self, name: &str) -> Option<(usize, usize)> {
+        if !self.raw_tag.contains(name) {
+            return None;
+        }
         let (_, start, end) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
         Some((self.tag_start + 1 + start, self.tag_start + 1 + end))
     }
@@ -419,11 +427,16 @@ impl<'a> Builder<'a> {
         if let Some(mut el) = self.stack.pop() {
             let start = self.starts.pop().unwrap_or(self.done.len());
             let text_start = self.text_starts.pop().unwrap_or(self.texts.len());
-            el.text = self.texts.split_off(text_start.min(self.texts.len()));
-            el.children = self
-                .done
-                .split_off(start.min(self.done.len()))
-                .into_boxed_slice();
+            // `split_off(0)` would hand over the whole shared buffer and allocate a new one of the
+            // same capacity: most elements have no text, so that was an allocation per element.
+            let text_start = text_start.min(self.texts.len());
+            if text_start < self.texts.len() {
+                el.text = self.texts.split_off(text_start);
+            }
+            let start = start.min(self.done.len());
+            if start < self.done.len() {
+                el.children = self.done.split_off(start).into_boxed_slice();
+            }
             if let Some(end) = end {
                 el.end = end;
             }

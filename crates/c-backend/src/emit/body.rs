@@ -62,9 +62,18 @@ impl<'s, 'm> Body<'s, 'm> {
         self.out.push_str(text);
         self.out.push('\n');
     }
+    /// [`Body::line`] for formatted text, written straight into the body (no `String` per line).
+    pub fn line_fmt(&mut self, args: std::fmt::Arguments) {
+        use std::fmt::Write as _;
+        for _ in 0..self.indent.min(MAX_INDENT) {
+            self.out.push_str("    ");
+        }
+        let _ = self.out.write_fmt(args);
+        self.out.push('\n');
+    }
     pub(super) fn temp(&mut self) -> String {
         self.temps += 1;
-        format!("t_{}", self.temps)
+        cfmt!("t_{}", self.temps)
     }
 }
 
@@ -117,15 +126,14 @@ impl<'a> Gen<'a> {
                 }
             },
         };
-        let name = format!("cr_{}", base.strip_prefix("IEC_").unwrap_or(&base));
+        let name = cfmt!("cr_{}", base.strip_prefix("IEC_").unwrap_or(&base));
         if !b.crs.contains_key(&name) {
             let init = if ty.elementary().is_some() || matches!(ty, Type::Enum(_)) {
                 "0"
             } else {
                 "{0}"
             };
-            b.crs
-                .insert(name.clone(), format!("{base} {name} = {init};"));
+            b.crs.insert(name.clone(), cfmt!("{base} {name} = {init};"));
         }
         if b.cr_names.len() < 16 {
             b.cr_names.push((ty.clone(), name.clone()));
@@ -180,7 +188,7 @@ impl<'a> Gen<'a> {
                     if b.targets.contains(&l.key()) {
                         let ind = b.indent;
                         b.indent = ind.saturating_sub(1);
-                        b.line(&format!("{}:;", mangle::label(&l.name)));
+                        b.line_fmt(format_args!("{}:;", mangle::label(&l.name)));
                         b.indent = ind;
                     }
                 }
@@ -210,13 +218,13 @@ impl<'a> Gen<'a> {
         match &i.kind {
             InstrKind::Jump { cond, label } => {
                 let target = mangle::label(&label.name);
-                self.conditional(b, i, *cond, &format!("goto {target};"));
+                self.conditional(b, i, *cond, &cfmt!("goto {target};"));
             }
             InstrKind::Return { cond } => {
                 let ret = if b.ret.is_empty() {
                     "return;".to_string()
                 } else {
-                    format!("return {};", b.ret)
+                    cfmt!("return {};", b.ret)
                 };
                 self.conditional(b, i, *cond, &ret);
             }
@@ -229,12 +237,12 @@ impl<'a> Gen<'a> {
             InstrKind::EmbeddedC { name } => match self.embedded.get(&name.key()) {
                 Some(c) => {
                     let c = c.clone();
-                    b.line(&format!("{c}();"));
+                    b.line_fmt(format_args!("{c}();"));
                 }
                 None => self.report_once(
                     Diagnostic::error(
                         code::E2004,
-                        format!("no embedded C function `{}` was supplied", name.name),
+                        cfmt!("no embedded C function `{}` was supplied", name.name),
                     )
                     .at(name.span)
                     .with_primary_label("unknown embedded function")
@@ -294,9 +302,9 @@ impl<'a> Gen<'a> {
         let test = if cond == Condition::IfTrue {
             cr
         } else {
-            format!("!{cr}")
+            cfmt!("!{cr}")
         };
-        b.line(&format!("if ({test}) {stmt}"));
+        b.line_fmt(format_args!("if ({test}) {stmt}"));
     }
 
     fn simple(
@@ -321,7 +329,7 @@ impl<'a> Gen<'a> {
                     return;
                 };
                 let v = if negate { negated(&v, &ty) } else { v };
-                b.line(&format!("{cr} = {v};"));
+                b.line_fmt(format_args!("{cr} = {v};"));
             }
             Op::St => {
                 let (Some(ty), Some(o)) = (info.cr_before.clone(), operand) else {
@@ -358,7 +366,7 @@ impl<'a> Gen<'a> {
                 };
                 let one = convert(if op == Op::S { "1" } else { "0" }, &Type::BOOL, place.ty());
                 let stmt = self.store(&place, &one);
-                b.line(&format!("if ({cr}) {{ {stmt} }}"));
+                b.line_fmt(format_args!("if ({cr}) {{ {stmt} }}"));
             }
             Op::Not => {
                 let Some(ty) = info.cr_before.clone() else {
@@ -368,7 +376,7 @@ impl<'a> Gen<'a> {
                     return;
                 };
                 let v = negated(&cr, &ty);
-                b.line(&format!("{cr} = {v};"));
+                b.line_fmt(format_args!("{cr} = {v};"));
             }
             _ => {
                 let (Some(before), Some(after), Some(o)) =
@@ -392,7 +400,7 @@ impl<'a> Gen<'a> {
                 let Some(cr) = self.cr(b, &after, span) else {
                     return;
                 };
-                b.line(&format!("{cr} = {res};"));
+                b.line_fmt(format_args!("{cr} = {res};"));
             }
         }
     }
@@ -494,7 +502,7 @@ impl<'a> Gen<'a> {
                 let ct = ctypes::base(self.model, result)?;
                 let v = convert(v, vty, result);
                 let a = convert(a, aty, result);
-                Some(format!("(({ct})(({a}) {c} ({v})))"))
+                Some(cfmt!("(({ct})(({a}) {c} ({v})))"))
             }
             "GT" | "GE" | "EQ" | "NE" | "LE" | "LT" => {
                 let lname = name.to_ascii_lowercase();
@@ -512,7 +520,7 @@ impl<'a> Gen<'a> {
                     } else {
                         "ladderc_str_cmpv"
                     };
-                    return Some(format!("((IEC_BOOL)({f}({a}, {v}) {c} 0))"));
+                    return Some(cfmt!("((IEC_BOOL)({f}({a}, {v}) {c} 0))"));
                 }
                 let e = match aty {
                     Type::Enum(_) => E::Dint,
@@ -526,7 +534,7 @@ impl<'a> Gen<'a> {
                 };
                 let h = ctypes::ordered_helper_type(e);
                 let v = convert(v, vty, aty);
-                Some(format!("ladderc_{lname}_{h}(({h})({a}), ({h})({v}))"))
+                Some(cfmt!("ladderc_{lname}_{h}(({h})({a}), ({h})({v}))"))
             }
             "ADD" | "SUB" | "MUL" | "DIV" | "MOD" => {
                 let re = match result {
@@ -546,7 +554,7 @@ impl<'a> Gen<'a> {
                     let a = convert(a, aty, result);
                     let v = convert(v, vty, result);
                     return Some(match name {
-                        "MOD" => format!("(({rt})fmod((double)({a}), (double)({v})))"),
+                        "MOD" => cfmt!("(({rt})fmod((double)({a}), (double)({v})))"),
                         _ => {
                             let c = match name {
                                 "ADD" => "+",
@@ -554,7 +562,7 @@ impl<'a> Gen<'a> {
                                 "MUL" => "*",
                                 _ => "/",
                             };
-                            format!("(({rt})(({a}) {c} ({v})))")
+                            cfmt!("(({rt})(({a}) {c} ({v})))")
                         }
                     });
                 }
@@ -563,17 +571,15 @@ impl<'a> Gen<'a> {
                     && ve.is_some_and(|e| e.is_real())
                 {
                     let c = if name == "MUL" { "*" } else { "/" };
-                    return Some(format!(
+                    return Some(cfmt!(
                         "(({rt})ladderc_real_to_int((double)({a}) {c} (double)({v}), INT64_MIN, INT64_MAX))"
                     ));
                 }
                 let h = ctypes::arith_helper_type(re)?;
-                Some(format!(
-                    "(({rt})ladderc_{lname}_{h}(({h})({a}), ({h})({v})))"
-                ))
+                Some(cfmt!("(({rt})ladderc_{lname}_{h}(({h})({a}), ({h})({v})))"))
             }
             _ => {
-                self.unsupported(span, format!("the operator {name}"));
+                self.unsupported(span, cfmt!("the operator {name}"));
                 None
             }
         }
@@ -594,7 +600,7 @@ impl<'a> Gen<'a> {
         let span = i.span;
         let info = self.info(i)?;
         b.depth += 1;
-        let d = format!("d_{}", b.depth);
+        let d = cfmt!("d_{}", b.depth);
         b.line("{");
         b.indent += 1;
         let outer = if op == Op::Ld {
@@ -611,7 +617,7 @@ impl<'a> Gen<'a> {
                 return None;
             };
             let decl = ctypes::declare(self.model, &before, &d).unwrap_or_default();
-            b.line(&format!("{decl} = {cr};"));
+            b.line_fmt(format_args!("{decl} = {cr};"));
             Some(before)
         };
         if let Some(o) = operand {
@@ -624,7 +630,7 @@ impl<'a> Gen<'a> {
                 .or_else(|| info.operand.clone())
                 .unwrap_or_else(|| self.operand_type(b.scope, o, None));
             if let (Some(cr), Some(v)) = (self.cr(b, &ty, o.span()), self.value(b.scope, o, &ty)) {
-                b.line(&format!("{cr} = {v};"));
+                b.line_fmt(format_args!("{cr} = {v};"));
             }
         }
         Some(Deferred {
@@ -654,7 +660,7 @@ impl<'a> Gen<'a> {
                     }
                 };
                 if let (Some(res), Some(cr)) = (res, self.cr(b, &after, span)) {
-                    b.line(&format!("{cr} = {res};"));
+                    b.line_fmt(format_args!("{cr} = {res};"));
                 }
             }
         }
@@ -679,12 +685,12 @@ fn std_common_type(info: &InstrInfo, before: &Type) -> Type {
 /// Boolean NOT for BOOL, bitwise complement for bit strings.
 pub fn negated(v: &str, ty: &Type) -> String {
     if ty.is_bool() {
-        format!("((IEC_BOOL)!({v}))")
+        cfmt!("((IEC_BOOL)!({v}))")
     } else {
         let ct = ty
             .elementary()
             .map(ctypes::elementary)
             .unwrap_or("IEC_DWORD");
-        format!("(({ct})~({v}))")
+        cfmt!("(({ct})~({v}))")
     }
 }

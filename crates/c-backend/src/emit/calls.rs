@@ -91,7 +91,7 @@ impl Gen<'_> {
                 Some(if c == Condition::IfTrue {
                     cr
                 } else {
-                    format!("!{cr}")
+                    cfmt!("!{cr}")
                 })
             }
         };
@@ -109,7 +109,7 @@ impl Gen<'_> {
         let stores_eno =
             matches!(fb, FbType::Standard(_)) && (en.is_some() || self.model.fb_eno_read);
         match guard {
-            Some(g) => b.line(&format!("if ({g}) {{")),
+            Some(g) => b.line_fmt(format_args!("if ({g}) {{")),
             None => b.line("{"),
         }
         b.indent += 1;
@@ -139,7 +139,7 @@ impl Gen<'_> {
                 match self.operand_place(b.scope, o) {
                     Some(Place::Mem { lv: target, .. }) => {
                         let raw = self.fb_param_raw(&lv, fb, &binding.param);
-                        b.line(&format!("{raw} = &{target};"));
+                        b.line_fmt(format_args!("{raw} = &{target};"));
                     }
                     _ => self.unsupported(o.span(), "this argument for an IN_OUT parameter"),
                 }
@@ -212,9 +212,9 @@ impl Gen<'_> {
                     .find(|p| p.0.eq_ignore_ascii_case(param))
                     .map(|p| p.0.to_string())
                     .unwrap_or_else(|| param.to_ascii_uppercase());
-                format!("{lv}.{n}")
+                cfmt!("{lv}.{n}")
             }
-            FbType::User(_) => format!("{lv}.{}", mangle::var(param)),
+            FbType::User(_) => cfmt!("{lv}.{}", mangle::var(param)),
         }
     }
 
@@ -230,7 +230,7 @@ impl Gen<'_> {
     fn fb_param_lvalue(&self, lv: &str, fb: FbType, param: &str) -> String {
         let raw = self.fb_param_raw(lv, fb, param);
         if self.fb_param_is_inout(fb, param) {
-            format!("(*{raw})")
+            cfmt!("(*{raw})")
         } else {
             raw
         }
@@ -285,7 +285,7 @@ impl Gen<'_> {
             FbType::User(id) => self.pou_var(id, input).map(|v| v.ty.clone()),
         };
         let Some(pty) = pty else {
-            self.unsupported(instance.span, format!("the FB input `{input}`"));
+            self.unsupported(instance.span, cfmt!("the FB input `{input}`"));
             return;
         };
         let field = self.fb_param_lvalue(&lv, fb, input);
@@ -325,7 +325,7 @@ impl Gen<'_> {
                 let (en, eno) = self.en_eno(b, args);
                 let res = self.gated(en.as_deref(), convert(&res, &result, &after), &after, span);
                 if let Some(cr) = self.cr(b, &after, span) {
-                    b.line(&format!("{cr} = {res};"));
+                    b.line_fmt(format_args!("{cr} = {res};"));
                 }
                 self.store_eno(b, en.as_deref(), eno);
             }
@@ -343,7 +343,7 @@ impl Gen<'_> {
                 let (en, eno) = self.en_eno(b, args);
                 let res = self.gated(en.as_deref(), convert(&res, &to, &after), &after, span);
                 if let Some(cr) = self.cr(b, &after, span) {
-                    b.line(&format!("{cr} = {res};"));
+                    b.line_fmt(format_args!("{cr} = {res};"));
                 }
                 self.store_eno(b, en.as_deref(), eno);
             }
@@ -380,7 +380,7 @@ impl Gen<'_> {
         match en {
             Some(e) => {
                 let d = self.default_value(ty, None, span);
-                format!("(({e}) ? ({res}) : ({d}))")
+                cfmt!("(({e}) ? ({res}) : ({d}))")
             }
             None => res,
         }
@@ -389,7 +389,7 @@ impl Gen<'_> {
     /// ENO is EN (TRUE without EN): a standard function or conversion that runs always completes.
     fn store_eno(&mut self, b: &mut Body, en: Option<&str>, eno: Option<Place>) {
         if let Some(p) = eno {
-            let stmt = self.store(&p, &format!("((IEC_BOOL)({}))", en.unwrap_or("1")));
+            let stmt = self.store(&p, &cfmt!("((IEC_BOOL)({}))", en.unwrap_or("1")));
             b.line(&stmt);
         }
     }
@@ -441,8 +441,8 @@ impl Gen<'_> {
                     } else {
                         "{0}"
                     };
-                    b.line(&format!("{decl} = {init};"));
-                    call_args.push(format!("&{t}"));
+                    b.line_fmt(format_args!("{decl} = {init};"));
+                    call_args.push(cfmt!("&{t}"));
                     if let Some(bd) = &binding {
                         if let ArgSource::Written(k) = bd.source {
                             if let Some((o, negate)) = Self::written_arg(args, k) {
@@ -465,7 +465,7 @@ impl Gen<'_> {
                         ArgSource::CurrentResult => None,
                     });
                     match target.and_then(|o| self.operand_place(b.scope, &o)) {
-                        Some(Place::Mem { lv, .. }) => call_args.push(format!("&{lv}")),
+                        Some(Place::Mem { lv, .. }) => call_args.push(cfmt!("&{lv}")),
                         _ => {
                             self.unsupported(span, "a missing or located IN_OUT argument");
                             b.indent -= 1;
@@ -476,15 +476,15 @@ impl Gen<'_> {
                 }
             }
         }
-        let call = format!("{}({})", mangle::function(&pou.name), call_args.join(", "));
+        let call = cfmt!("{}({})", mangle::function(&pou.name), call_args.join(", "));
         match (&pou.return_type, info.cr_after.clone()) {
             (Some(rt), Some(after)) => {
                 if let Some(cr) = self.cr(b, &after, span) {
                     let v = convert(&call, rt, &after);
-                    b.line(&format!("{cr} = {v};"));
+                    b.line_fmt(format_args!("{cr} = {v};"));
                 }
             }
-            _ => b.line(&format!("{call};")),
+            _ => b.line_fmt(format_args!("{call};")),
         }
         for s in after_call {
             b.line(&s);
@@ -519,7 +519,7 @@ impl Gen<'_> {
         match ty {
             Type::Elementary(_) | Type::Subrange { .. } | Type::Enum(_) => {
                 let base = ctypes::base(self.model, ty).unwrap_or_default();
-                format!("(({base})0)")
+                cfmt!("(({base})0)")
             }
             Type::String { wide: false, .. } => ctypes::string_value(""),
             Type::String { wide: true, .. } => ctypes::wstring_value(""),
@@ -564,8 +564,8 @@ impl Gen<'_> {
                 if vals.len() != n {
                     return None;
                 }
-                let args: Vec<String> = vals.iter().map(|v| format!("(int64_t)({v})")).collect();
-                Some(format!(
+                let args: Vec<String> = vals.iter().map(|v| cfmt!("(int64_t)({v})")).collect();
+                Some(cfmt!(
                     "ladderc_{}({})",
                     name.to_ascii_lowercase(),
                     args.join(", ")
@@ -599,7 +599,7 @@ impl Gen<'_> {
                         &Type::BOOL,
                     )?);
                 }
-                Some(format!("((IEC_BOOL)({}))", parts.join(" & ")))
+                Some(cfmt!("((IEC_BOOL)({}))", parts.join(" & ")))
             }
             "NOT" => Some(negated(vals.first()?, &ty)),
             "MOVE" => vals.first().cloned(),
@@ -607,7 +607,7 @@ impl Gen<'_> {
                 if !need(3) {
                     return None;
                 }
-                Some(format!("(({}) ? ({}) : ({}))", vals[0], vals[2], vals[1]))
+                Some(cfmt!("(({}) ? ({}) : ({}))", vals[0], vals[2], vals[1]))
             }
             "MUX" => {
                 if !need(2) {
@@ -616,7 +616,7 @@ impl Gen<'_> {
                 let k = &vals[0];
                 let mut expr = vals[1].clone();
                 for (n, v) in vals.iter().enumerate().skip(2).rev() {
-                    expr = format!("(({k}) == {} ? ({v}) : {expr})", n - 1);
+                    expr = cfmt!("(({k}) == {} ? ({v}) : {expr})", n - 1);
                 }
                 // K out of range selects IN0
                 Some(expr)
@@ -626,11 +626,11 @@ impl Gen<'_> {
                 let h = ctypes::ordered_helper_type(e);
                 let ct = ctypes::elementary(e);
                 let f = name.to_ascii_lowercase();
-                let mut acc = format!("(({h})({}))", vals.first()?);
+                let mut acc = cfmt!("(({h})({}))", vals.first()?);
                 for v in &vals[1..] {
-                    acc = format!("ladderc_{f}_{h}({acc}, ({h})({v}))");
+                    acc = cfmt!("ladderc_{f}_{h}({acc}, ({h})({v}))");
                 }
-                Some(format!("(({ct}){acc})"))
+                Some(cfmt!("(({ct}){acc})"))
             }
             "LIMIT" => {
                 if !need(3) {
@@ -642,20 +642,22 @@ impl Gen<'_> {
                 };
                 let h = ctypes::ordered_helper_type(e);
                 let ct = ctypes::elementary(e);
-                Some(format!(
+                Some(cfmt!(
                     "(({ct})ladderc_limit_{h}(({h})({}), ({h})({}), ({h})({})))",
-                    vals[0], vals[1], vals[2]
+                    vals[0],
+                    vals[1],
+                    vals[2]
                 ))
             }
             "ABS" => {
                 let e = e?;
                 let v = vals.first()?;
                 Some(match e {
-                    E::Real => format!("((IEC_REAL)fabsf({v}))"),
-                    E::Lreal => format!("((IEC_LREAL)fabs({v}))"),
+                    E::Real => cfmt!("((IEC_REAL)fabsf({v}))"),
+                    E::Lreal => cfmt!("((IEC_LREAL)fabs({v}))"),
                     _ if e.is_signed_integer() => {
                         let ct = ctypes::elementary(e);
-                        format!("ladderc_abs_{ct}({v})")
+                        cfmt!("ladderc_abs_{ct}({v})")
                     }
                     _ => v.clone(),
                 })
@@ -669,9 +671,9 @@ impl Gen<'_> {
                 };
                 let v = vals.first()?;
                 Some(if e == E::Real {
-                    format!("((IEC_REAL){f}f({v}))")
+                    cfmt!("((IEC_REAL){f}f({v}))")
                 } else {
-                    format!("((IEC_LREAL){f}({v}))")
+                    cfmt!("((IEC_LREAL){f}({v}))")
                 })
             }
             "EXPT" => {
@@ -679,9 +681,10 @@ impl Gen<'_> {
                     return None;
                 }
                 let ct = ctypes::base(self.model, result)?;
-                Some(format!(
+                Some(cfmt!(
                     "(({ct})pow((double)({}), (double)({})))",
-                    vals[0], vals[1]
+                    vals[0],
+                    vals[1]
                 ))
             }
             "SHL" | "SHR" | "ROL" | "ROR" => {
@@ -695,19 +698,20 @@ impl Gen<'_> {
                     E::Dword | E::Udint => "IEC_DWORD",
                     E::Lword | E::Ulint => "IEC_LWORD",
                     _ => {
-                        self.unsupported(span, format!("{name} on this type"));
+                        self.unsupported(span, cfmt!("{name} on this type"));
                         return None;
                     }
                 };
                 let ct = ctypes::elementary(e);
                 let f = name.to_ascii_lowercase();
-                Some(format!(
+                Some(cfmt!(
                     "(({ct})ladderc_{f}_{h}(({h})({}), (int64_t)({})))",
-                    vals[0], vals[1]
+                    vals[0],
+                    vals[1]
                 ))
             }
             other => {
-                self.unsupported(span, format!("the standard function {other}"));
+                self.unsupported(span, cfmt!("the standard function {other}"));
                 None
             }
         }
@@ -722,13 +726,13 @@ impl Gen<'_> {
         to: &Type,
     ) -> Option<String> {
         // WSTRING goes through STRING (UTF-8 text; runtime `ladderc_wstr_of_str`/`ladderc_str_of_wstr`).
-        let narrow = |v: &str| format!("ladderc_str_of_wstr({v})");
-        let widen = |v: String| format!("ladderc_wstr_of_str({v})");
+        let narrow = |v: &str| cfmt!("ladderc_str_of_wstr({v})");
+        let widen = |v: String| cfmt!("ladderc_wstr_of_str({v})");
         let (f, t) = match (from.elementary(), to.elementary()) {
             (Some(f), Some(t)) => (f, t),
             (Some(f), None) if to.is_string() && !to.is_error() => {
                 let ct = ctypes::elementary(f);
-                let text = format!("ladderc_str_of({}, &({ct}){{{v}}})", ctypes::type_tag(f));
+                let text = cfmt!("ladderc_str_of({}, &({ct}){{{v}}})", ctypes::type_tag(f));
                 return Some(if matches!(to, Type::String { wide: true, .. }) {
                     widen(text)
                 } else {
@@ -743,16 +747,16 @@ impl Gen<'_> {
                 };
                 let v = s.as_str();
                 return Some(match t {
-                    E::Bool => format!("ladderc_str_to_bool({v})"),
+                    E::Bool => cfmt!("ladderc_str_to_bool({v})"),
                     E::Real | E::Lreal => {
-                        format!("(({})ladderc_str_to_real({v}))", ctypes::elementary(t))
+                        cfmt!("(({})ladderc_str_to_real({v}))", ctypes::elementary(t))
                     }
-                    E::Time | E::Ltime => format!("ladderc_str_to_time({v})"),
+                    E::Time | E::Ltime => cfmt!("ladderc_str_to_time({v})"),
                     _ if t.is_signed_integer() => {
-                        convert_elementary(&format!("ladderc_str_to_int({v})"), E::Lint, t)
+                        convert_elementary(&cfmt!("ladderc_str_to_int({v})"), E::Lint, t)
                     }
                     _ if t.is_integer() || t.is_bit() => {
-                        convert_elementary(&format!("ladderc_str_to_uint({v})"), E::Ulint, t)
+                        convert_elementary(&cfmt!("ladderc_str_to_uint({v})"), E::Ulint, t)
                     }
                     E::Date | E::Tod | E::Dt => super::strings::string_to_datetime(v, t),
                     _ => {
@@ -779,24 +783,22 @@ impl Gen<'_> {
             ConversionKind::Plain => convert_elementary(v, f, t),
             ConversionKind::Trunc => {
                 if f.is_real() && (t.is_integer() || t.is_bit()) {
-                    real_to_int(&format!("trunc((double)({v}))"), t)
+                    real_to_int(&cfmt!("trunc((double)({v}))"), t)
                 } else {
                     convert_elementary(v, f, t)
                 }
             }
-            ConversionKind::FromBcd => convert_elementary(
-                &format!("ladderc_bcd_to_uint((uint64_t)({v}))"),
-                E::Ulint,
-                t,
-            ),
+            ConversionKind::FromBcd => {
+                convert_elementary(&cfmt!("ladderc_bcd_to_uint((uint64_t)({v}))"), E::Ulint, t)
+            }
             ConversionKind::ToBcd => {
                 let src = if f.is_signed_integer() {
-                    format!("(({v}) < 0 ? (ladderc_errors |= LADDERC_ERR_RANGE, (uint64_t)0) : (uint64_t)({v}))")
+                    cfmt!("(({v}) < 0 ? (ladderc_errors |= LADDERC_ERR_RANGE, (uint64_t)0) : (uint64_t)({v}))")
                 } else {
-                    format!("(uint64_t)({v})")
+                    cfmt!("(uint64_t)({v})")
                 };
                 convert_elementary(
-                    &format!("ladderc_uint_to_bcd({src}, {})", t.bit_width()),
+                    &cfmt!("ladderc_uint_to_bcd({src}, {})", t.bit_width()),
                     E::Ulint,
                     t,
                 )
@@ -808,7 +810,7 @@ impl Gen<'_> {
 /// The call of an FB instance's body.
 fn invoke(g: &Gen, lv: &str, fb: FbType) -> String {
     match fb {
-        FbType::Standard(f) => format!("{}_body(&{lv});", ctypes::std_fb(f).0),
-        FbType::User(id) => format!("{}_BODY(&{lv});", mangle::fb(&g.model.pou(id).name)),
+        FbType::Standard(f) => cfmt!("{}_body(&{lv});", ctypes::std_fb(f).0),
+        FbType::User(id) => cfmt!("{}_BODY(&{lv});", mangle::fb(&g.model.pou(id).name)),
     }
 }

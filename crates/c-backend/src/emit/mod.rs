@@ -216,7 +216,7 @@ enum Node {
     Pou(u32),
 }
 
-impl Gen<'_> {
+impl<'a> Gen<'a> {
     fn check_embedded(&mut self, opts: &Options) {
         for f in &opts.embedded {
             let key = f.name.to_ascii_uppercase();
@@ -361,8 +361,10 @@ impl Gen<'_> {
                     let _ = writeln!(h, "}} {name};\n");
                 }
                 Node::Pou(id) => {
-                    let p = self.model.pous[id as usize].clone();
-                    let name = self.pou_struct(&p);
+                    // Borrowed from the model, not from `self` (no copy of the POU's variables).
+                    let model: &'a Model = self.model;
+                    let p = &model.pous[id as usize];
+                    let name = self.pou_struct(p);
                     let _ = writeln!(h, "typedef struct {{");
                     let mut any = false;
                     for v in &p.vars {
@@ -371,7 +373,7 @@ impl Gen<'_> {
                             any = true;
                         }
                     }
-                    for m in edges::hidden_members(&p) {
+                    for m in edges::hidden_members(p) {
                         let _ = writeln!(h, "    {m}");
                     }
                     if !any {
@@ -384,9 +386,10 @@ impl Gen<'_> {
             }
         }
         for i in 0..self.model.pous.len() {
-            let p = self.model.pous[i].clone();
+            let model: &'a Model = self.model;
+            let p = &model.pous[i];
             if p.kind == PouKind::Function {
-                if let Some(sig) = self.function_signature(&p) {
+                if let Some(sig) = self.function_signature(p) {
                     let _ = writeln!(h, "{sig};");
                 }
             }
@@ -511,12 +514,13 @@ impl Gen<'_> {
 
     /// One POU: init and body functions (FB/program), or the C function (FUNCTION).
     fn pou(&mut self, ast: &il_frontend::ast::Pou, id: PouId, c: &mut String) {
-        let p = self.model.pou(id).clone();
+        let model: &'a Model = self.model;
+        let p = model.pou(id);
         let scope = Scope::for_pou(self.model.pou(id), id);
         let mut targets = HashSet::new();
         jump_targets(&ast.body, &mut targets);
         if p.kind == PouKind::Function {
-            let Some(sig) = self.function_signature(&p) else {
+            let Some(sig) = self.function_signature(p) else {
                 return;
             };
             let ret_var = mangle::var(&p.name);
@@ -580,7 +584,7 @@ impl Gen<'_> {
             }
             return;
         }
-        let sname = self.pou_struct(&p);
+        let sname = self.pou_struct(p);
         // init
         let _ = writeln!(c, "void {sname}_INIT({sname} *self) {{");
         c.push_str("    memset(self, 0, sizeof *self);\n");
@@ -615,14 +619,14 @@ impl Gen<'_> {
             }
         }
         self.stmts(&mut b, &ast.body);
-        let _ = writeln!(c, "{} {{", edges::body_signature(&sname, &p));
+        let _ = writeln!(c, "{} {{", edges::body_signature(&sname, p));
         c.push_str(&temps);
         c.push_str(&temp_init);
         write_locals(c, &b, &scope);
         c.push_str("    (void)self;\n");
         c.push_str(&b.out);
         c.push_str("}\n\n");
-        c.push_str(&edges::wrapper(&sname, &p));
+        c.push_str(&edges::wrapper(&sname, p));
     }
 }
 

@@ -279,7 +279,7 @@ impl Gen<'_> {
                     continue;
                 };
                 let field = Place::Mem {
-                    lv: format!("{}.{}", inst.c_name, mangle::var(&param.name)),
+                    lv: cfmt!("{}.{}", inst.c_name, mangle::var(&param.name)),
                     ty: param.ty.clone(),
                 };
                 match a.dir {
@@ -313,7 +313,7 @@ impl Gen<'_> {
                 let Some(target) = self.place(&scope, r) else {
                     continue;
                 };
-                let src = format!("{}.{}", inst.c_name, mangle::var(&param.name));
+                let src = cfmt!("{}.{}", inst.c_name, mangle::var(&param.name));
                 let src = if negated {
                     super::body::negated(&src, &param.ty)
                 } else {
@@ -364,8 +364,8 @@ impl Gen<'_> {
                 if matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp) {
                     continue;
                 }
-                let name = format!("{}.{}", inst.watch_name, v.name);
-                let lv = format!("{}.{}", inst.c_name, mangle::var(&v.name));
+                let name = cfmt!("{}.{}", inst.watch_name, v.name);
+                let lv = cfmt!("{}.{}", inst.c_name, mangle::var(&v.name));
                 self.watch_var(v, name, lv, &mut entries);
             }
         }
@@ -396,7 +396,7 @@ impl Gen<'_> {
                         None => return,
                     },
                 };
-                out.push(format!(
+                out.push(cfmt!(
                     "{{ {}, {tag}, NULL, {}, {}, {} }}",
                     mangle::c_string(name.as_bytes()),
                     area_array(loc.area),
@@ -422,29 +422,29 @@ impl Gen<'_> {
         }
         let cname = mangle::c_string(name.as_bytes());
         match ty {
-            Type::Enum(_) => out.push(format!(
+            Type::Enum(_) => out.push(cfmt!(
                 "{{ {cname}, LADDERC_T_DINT, (void *)&{lv}, NULL, 0, 0 }}"
             )),
             Type::Elementary(_) | Type::Subrange { .. } => {
                 if let Some(e) = ty.elementary() {
-                    out.push(format!(
+                    out.push(cfmt!(
                         "{{ {cname}, {}, (void *)&{lv}, NULL, 0, 0 }}",
                         ctypes::type_tag(e)
                     ));
                 }
             }
-            Type::String { wide: false, .. } => out.push(format!(
+            Type::String { wide: false, .. } => out.push(cfmt!(
                 "{{ {cname}, LADDERC_T_STRING, (void *)&{lv}, NULL, 0, 0 }}"
             )),
-            Type::String { wide: true, .. } => out.push(format!(
+            Type::String { wide: true, .. } => out.push(cfmt!(
                 "{{ {cname}, LADDERC_T_WSTRING, (void *)&{lv}, NULL, 0, 0 }}"
             )),
             Type::Struct(id) => {
                 if let UserTypeDef::Struct { fields } = self.model.user_type(*id).def.clone() {
                     for f in &fields {
                         self.watch_value(
-                            &format!("{name}.{}", f.name),
-                            &format!("{lv}.{}", mangle::var(&f.name)),
+                            &cfmt!("{name}.{}", f.name),
+                            &cfmt!("{lv}.{}", mangle::var(&f.name)),
                             &f.ty,
                             depth + 1,
                             out,
@@ -454,9 +454,9 @@ impl Gen<'_> {
             }
             Type::Fb(FbType::Standard(f)) => {
                 for (p, e, _) in ctypes::std_fb(*f).1 {
-                    out.push(format!(
+                    out.push(cfmt!(
                         "{{ {}, {}, (void *)&{lv}.{p}, NULL, 0, 0 }}",
-                        mangle::c_string(format!("{name}.{p}").as_bytes()),
+                        mangle::c_string(cfmt!("{name}.{p}").as_bytes()),
                         ctypes::type_tag(*e)
                     ));
                 }
@@ -470,8 +470,8 @@ impl Gen<'_> {
                         continue;
                     }
                     self.watch_value(
-                        &format!("{name}.{}", v.name),
-                        &format!("{lv}.{}", mangle::var(&v.name)),
+                        &cfmt!("{name}.{}", v.name),
+                        &cfmt!("{lv}.{}", mangle::var(&v.name)),
                         &v.ty,
                         depth + 1,
                         out,
@@ -495,10 +495,10 @@ impl Gen<'_> {
                         .zip(dims)
                         .map(|(i, d)| (d.lower + *i as i128).to_string())
                         .collect();
-                    let c_idx: String = idx.iter().map(|i| format!("[{i}]")).collect();
+                    let c_idx: String = idx.iter().map(|i| cfmt!("[{i}]")).collect();
                     self.watch_value(
-                        &format!("{name}[{}]", iec.join(",")),
-                        &format!("{lv}{c_idx}"),
+                        &cfmt!("{name}[{}]", iec.join(",")),
+                        &cfmt!("{lv}{c_idx}"),
                         element,
                         depth + 1,
                         out,

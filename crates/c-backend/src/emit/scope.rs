@@ -90,11 +90,11 @@ impl<'m> Scope<'m> {
 pub fn own_var_lvalue(kind: PouKind, v: &Variable) -> String {
     let name = mangle::var(&v.name);
     match (kind, v.kind) {
-        (PouKind::Function, VarKind::Output | VarKind::InOut) => format!("(*{name})"),
+        (PouKind::Function, VarKind::Output | VarKind::InOut) => cfmt!("(*{name})"),
         (PouKind::Function, _) => name,
         (_, VarKind::Temp) => name,
-        (_, VarKind::InOut) => format!("(*self->{name})"),
-        _ => format!("self->{name}"),
+        (_, VarKind::InOut) => cfmt!("(*self->{name})"),
+        _ => cfmt!("self->{name}"),
     }
 }
 
@@ -103,12 +103,9 @@ impl Gen<'_> {
     pub fn unsupported(&mut self, span: Span, what: impl Into<String>) {
         let what = what.into();
         self.report_once(
-            Diagnostic::error(
-                code::E2005,
-                format!("the C backend does not support {what}"),
-            )
-            .at(span)
-            .with_primary_label("not supported here"),
+            Diagnostic::error(code::E2005, cfmt!("the C backend does not support {what}"))
+                .at(span)
+                .with_primary_label("not supported here"),
         );
     }
 
@@ -266,7 +263,7 @@ impl Gen<'_> {
             self.report_once(
                 Diagnostic::error(
                     code::E2005,
-                    format!(
+                    cfmt!(
                         "the C backend cannot resolve `{}` (no variable of that name)",
                         r.base.name
                     ),
@@ -297,7 +294,7 @@ impl Gen<'_> {
             Type::Struct(id) => {
                 if let Some(v) = self.struct_field(*id, &f.name) {
                     return Some(Place::Mem {
-                        lv: format!("{lv}.{}", mangle::var(&v.name)),
+                        lv: cfmt!("{lv}.{}", mangle::var(&v.name)),
                         ty: v.ty.clone(),
                     });
                 }
@@ -313,7 +310,7 @@ impl Gen<'_> {
                 let (_, params) = ctypes::std_fb(*fb);
                 if let Some((n, e, _)) = params.iter().find(|p| p.0.eq_ignore_ascii_case(&f.name)) {
                     return Some(Place::Mem {
-                        lv: format!("{lv}.{n}"),
+                        lv: cfmt!("{lv}.{n}"),
                         ty: Type::Elementary(*e),
                     });
                 }
@@ -322,9 +319,9 @@ impl Gen<'_> {
                 if let Some(v) = self.pou_var(*id, &f.name) {
                     let name = mangle::var(&v.name);
                     let lv = if v.kind == VarKind::InOut {
-                        format!("(*{lv}.{name})")
+                        cfmt!("(*{lv}.{name})")
                     } else {
-                        format!("{lv}.{name}")
+                        cfmt!("{lv}.{name}")
                     };
                     return Some(Place::Mem {
                         lv,
@@ -337,7 +334,7 @@ impl Gen<'_> {
         self.report_once(
             Diagnostic::error(
                 code::E2005,
-                format!(
+                cfmt!(
                     "the C backend cannot resolve the field `{}` of a value of type {}",
                     f.name,
                     self.model.type_name(ty)
@@ -370,7 +367,7 @@ impl Gen<'_> {
                     return None;
                 };
                 let v = self.value(scope, op, &Type::Elementary(E::Lint))?;
-                lv = format!(
+                lv = cfmt!(
                     "{lv}[ladderc_index({v}, {}, {})]",
                     clamp64(d.lower),
                     clamp64(d.upper)
@@ -473,18 +470,18 @@ impl Gen<'_> {
         match place {
             Place::Mem { lv, ty } => match ty {
                 Type::String { wide: false, .. } => {
-                    format!(
+                    cfmt!(
                         "{lv} = ladderc_str_cap({value}, {});",
                         ctypes::string_cap(ty)
                     )
                 }
                 Type::String { wide: true, .. } => {
-                    format!(
+                    cfmt!(
                         "{lv} = ladderc_wstr_cap({value}, {});",
                         ctypes::string_cap(ty)
                     )
                 }
-                _ => format!("{lv} = {value};"),
+                _ => cfmt!("{lv} = {value};"),
             },
             Place::Loc { loc, ty } => store_expr(loc, ty, value),
         }
@@ -600,8 +597,8 @@ impl Gen<'_> {
 fn clamp64(v: i128) -> String {
     let v = v.clamp(i64::MIN as i128 + 1, i64::MAX as i128);
     if v < 0 {
-        format!("-INT64_C({})", -v)
+        cfmt!("-INT64_C({})", -v)
     } else {
-        format!("INT64_C({v})")
+        cfmt!("INT64_C({v})")
     }
 }

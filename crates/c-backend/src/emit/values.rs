@@ -59,39 +59,39 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     let ct = ctypes::elementary(t);
     let time_like = |e: Elementary| e.is_duration() || e.is_date();
     if t == E::Bool {
-        return format!("((IEC_BOOL)(({x}) != 0))");
+        return cfmt!("((IEC_BOOL)(({x}) != 0))");
     }
     if f.is_real() {
         if f == E::Lreal && t == E::Real {
-            return format!("ladderc_lreal_to_real({x})");
+            return cfmt!("ladderc_lreal_to_real({x})");
         }
         if t.is_real() {
-            return format!("(({ct})({x}))");
+            return cfmt!("(({ct})({x}))");
         }
         if time_like(t) {
-            return format!("(({ct})ladderc_ms_to_time((double)({x})))");
+            return cfmt!("(({ct})ladderc_ms_to_time((double)({x})))");
         }
-        return real_to_int(&format!("(double)({x})"), t);
+        return real_to_int(&cfmt!("(double)({x})"), t);
     }
     if time_like(f) {
         if time_like(t) {
             return match (f, t) {
-                (E::Dt, E::Date) => format!("ladderc_dt_to_date({x})"),
-                (E::Dt, E::Tod) => format!("ladderc_dt_to_tod({x})"),
-                _ => format!("(({ct})({x}))"),
+                (E::Dt, E::Date) => cfmt!("ladderc_dt_to_date({x})"),
+                (E::Dt, E::Tod) => cfmt!("ladderc_dt_to_tod({x})"),
+                _ => cfmt!("(({ct})({x}))"),
             };
         }
         if t.is_real() {
-            return format!("(({ct})((double)({x}) / 1e6))");
+            return cfmt!("(({ct})((double)({x}) / 1e6))");
         }
-        return int_to_int(&format!("(({x}) / INT64_C(1000000))"), t);
+        return int_to_int(&cfmt!("(({x}) / INT64_C(1000000))"), t);
     }
     // f is an integer, a bit string or BOOL
     if t.is_real() {
-        return format!("(({ct})({x}))");
+        return cfmt!("(({ct})({x}))");
     }
     if time_like(t) {
-        return format!("(({ct})ladderc_mul_IEC_LINT((IEC_LINT)({x}), INT64_C(1000000)))");
+        return cfmt!("(({ct})ladderc_mul_IEC_LINT((IEC_LINT)({x}), INT64_C(1000000)))");
     }
     int_to_int(x, t)
 }
@@ -99,11 +99,11 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
 fn int_to_int(x: &str, t: Elementary) -> String {
     let ct = ctypes::elementary(t);
     match t.bit_width() {
-        8 if t.is_signed() => format!("ladderc_wrap_i8((uint64_t)({x}))"),
-        16 if t.is_signed() => format!("ladderc_wrap_i16((uint64_t)({x}))"),
-        32 if t.is_signed() => format!("ladderc_wrap_i32((uint64_t)({x}))"),
-        64 if t.is_signed() => format!("ladderc_wrap_i64((uint64_t)({x}))"),
-        _ => format!("(({ct})(uint64_t)({x}))"),
+        8 if t.is_signed() => cfmt!("ladderc_wrap_i8((uint64_t)({x}))"),
+        16 if t.is_signed() => cfmt!("ladderc_wrap_i16((uint64_t)({x}))"),
+        32 if t.is_signed() => cfmt!("ladderc_wrap_i32((uint64_t)({x}))"),
+        64 if t.is_signed() => cfmt!("ladderc_wrap_i64((uint64_t)({x}))"),
+        _ => cfmt!("(({ct})(uint64_t)({x}))"),
     }
 }
 
@@ -117,7 +117,7 @@ pub fn real_to_int(d: &str, t: Elementary) -> String {
             32 => ("INT32_MIN", "INT32_MAX"),
             _ => ("INT64_MIN", "INT64_MAX"),
         };
-        format!("(({ct})ladderc_real_to_int({d}, {lo}, {hi}))")
+        cfmt!("(({ct})ladderc_real_to_int({d}, {lo}, {hi}))")
     } else {
         let hi = match t.bit_width() {
             1 => "1",
@@ -126,7 +126,7 @@ pub fn real_to_int(d: &str, t: Elementary) -> String {
             32 => "UINT32_MAX",
             _ => "UINT64_MAX",
         };
-        format!("(({ct})ladderc_real_to_uint({d}, {hi}))")
+        cfmt!("(({ct})ladderc_real_to_uint({d}, {hi}))")
     }
 }
 
@@ -134,22 +134,22 @@ pub fn real_to_int(d: &str, t: Elementary) -> String {
 pub fn load_expr(loc: &Located, ty: &Type) -> String {
     let area = area_array(loc.area);
     if let Some(bit) = loc.bit {
-        let v = format!("ladderc_load_bit({area}, {}, {bit})", loc.offset);
+        let v = cfmt!("ladderc_load_bit({area}, {}, {bit})", loc.offset);
         return if ty.is_bool() {
             v
         } else {
             convert(&v, &Type::BOOL, ty)
         };
     }
-    let raw = format!("ladderc_load({area}, {}, {})", loc.offset, loc.bytes);
+    let raw = cfmt!("ladderc_load({area}, {}, {})", loc.offset, loc.bytes);
     let e = match ty {
         Type::Enum(_) => E::Dint,
         t => t.elementary().unwrap_or(E::Lword),
     };
     match e {
-        E::Bool => format!("((IEC_BOOL)({raw} != 0))"),
-        E::Real => format!("ladderc_bits_to_real((uint32_t){raw})"),
-        E::Lreal => format!("ladderc_bits_to_lreal({raw})"),
+        E::Bool => cfmt!("((IEC_BOOL)({raw} != 0))"),
+        E::Real => cfmt!("ladderc_bits_to_real((uint32_t){raw})"),
+        E::Lreal => cfmt!("ladderc_bits_to_lreal({raw})"),
         _ => int_to_int(&raw, e),
     }
 }
@@ -161,18 +161,19 @@ pub fn store_expr(loc: &Located, ty: &Type, value: &str) -> String {
         let v = if ty.is_bool() {
             value.to_string()
         } else {
-            format!("((IEC_BOOL)(({value}) != 0))")
+            cfmt!("((IEC_BOOL)(({value}) != 0))")
         };
-        return format!("ladderc_store_bit({area}, {}, {bit}, {v});", loc.offset);
+        return cfmt!("ladderc_store_bit({area}, {}, {bit}, {v});", loc.offset);
     }
     let e = ty.elementary().unwrap_or(E::Dint);
     let raw = match e {
-        E::Real => format!("(uint64_t)ladderc_real_to_bits({value})"),
-        E::Lreal => format!("ladderc_lreal_to_bits({value})"),
-        _ => format!("(uint64_t)({value})"),
+        E::Real => cfmt!("(uint64_t)ladderc_real_to_bits({value})"),
+        E::Lreal => cfmt!("ladderc_lreal_to_bits({value})"),
+        _ => cfmt!("(uint64_t)({value})"),
     };
-    format!(
+    cfmt!(
         "ladderc_store({area}, {}, {}, {raw});",
-        loc.offset, loc.bytes
+        loc.offset,
+        loc.bytes
     )
 }

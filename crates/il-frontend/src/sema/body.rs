@@ -507,13 +507,21 @@ impl Body<'_, '_> {
         }
     }
 
+    /// [`Body::resolve`] of a type that is not needed afterwards (a known type moves, no copy).
+    fn resolve_owned(&mut self, t: Ty) -> Type {
+        match t {
+            Ty::Known(k) => k,
+            Ty::Lit(v) => self.lits.resolve(v),
+        }
+    }
+
     fn finish(&mut self, span: Span, r: Rec) -> InstrInfo {
-        let cr_before = r.cr_before.map(|t| self.resolve(&t));
-        let cr_after = r.cr_after.map(|t| self.resolve(&t));
-        let operand = r.operand.map(|t| self.resolve(&t));
+        let cr_before = r.cr_before.map(|t| self.resolve_owned(t));
+        let cr_after = r.cr_after.map(|t| self.resolve_owned(t));
+        let operand = r.operand.map(|t| self.resolve_owned(t));
         let mut callee = r.callee;
         if let Some((t, res)) = r.callee_tys {
-            let (t, res) = (self.resolve(&t), self.resolve(&res));
+            let (t, res) = (self.resolve_owned(t), self.resolve_owned(res));
             match &mut callee {
                 Some(Callee::Std { ty, result, .. }) => {
                     *ty = t;
@@ -526,14 +534,18 @@ impl Body<'_, '_> {
                 _ => {}
             }
         }
-        let args = r
-            .args
-            .into_iter()
-            .map(|(mut b, t)| {
-                b.ty = self.resolve(&t);
-                b
-            })
-            .collect();
+        // Most instructions have no arguments: skip the collect's set-up for them.
+        let args = if r.args.is_empty() {
+            Vec::new()
+        } else {
+            r.args
+                .into_iter()
+                .map(|(mut b, t)| {
+                    b.ty = self.resolve_owned(t);
+                    b
+                })
+                .collect()
+        };
         InstrInfo {
             span,
             cr_before,
