@@ -266,6 +266,11 @@
 #define MC_ERR_CAM_BEYOND_SLAVE_LIMITS 33
 
 /**
+ * ErrorID 34: MC_GearIn: the ratio times the master's axis limits (velocity, acceleration, jerk) leaves none of the slave's limits: a master within its own limits could drive the slave past them.
+ */
+#define MC_ERR_GEAR_BEYOND_SLAVE_LIMITS 34
+
+/**
  * ErrorID 40: The axis's (or group's) command queue is full: the command is rejected, nothing is dropped.
  */
 #define MC_ERR_QUEUE_FULL 40

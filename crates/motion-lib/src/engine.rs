@@ -1174,6 +1174,7 @@ impl Engine {
                 p.lim = Self::move_limits(&ax.cfg, &dd, false)?;
                 p.kind = Kind::Gear;
                 p.sync = SyncParams::gear(master, numerator / denominator, source);
+                self.gear_remaining(axis, &p.sync)?;
                 p.speed = 0.0;
             }
             AxisCommand::CamIn { master, params } => {

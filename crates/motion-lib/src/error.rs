@@ -64,6 +64,8 @@ pub enum ErrorId {
     InvalidMode = 32,
     /// MC_CamIn: the cam law, for a master within its axis limits, needs more than the slave's velocity, acceleration or jerk limit, or the slave's motion relative to the law at coupling does not fit in what the law leaves.
     CamBeyondSlaveLimits = 33,
+    /// MC_GearIn: the ratio times the master's axis limits (velocity, acceleration, jerk) leaves none of the slave's limits: a master within its own limits could drive the slave past them.
+    GearBeyondSlaveLimits = 34,
     /// The axis's (or group's) command queue is full: the command is rejected, nothing is dropped.
     QueueFull = 40,
     /// Group motion or group command on a group in GroupDisabled.
@@ -153,6 +155,7 @@ impl ErrorId {
         ErrorId::PlanningFailed,
         ErrorId::InvalidMode,
         ErrorId::CamBeyondSlaveLimits,
+        ErrorId::GearBeyondSlaveLimits,
         ErrorId::QueueFull,
         ErrorId::GroupDisabled,
         ErrorId::GroupErrorStop,

@@ -3598,6 +3598,8 @@ pub const MC_ERR_PLANNING_FAILED: u16 = 31;
 pub const MC_ERR_INVALID_MODE: u16 = 32;
 /// ErrorID 33: MC_CamIn: the cam law, for a master within its axis limits, needs more than the slave's velocity, acceleration or jerk limit, or the slave's motion relative to the law at coupling does not fit in what the law leaves.
 pub const MC_ERR_CAM_BEYOND_SLAVE_LIMITS: u16 = 33;
+/// ErrorID 34: MC_GearIn: the ratio times the master's axis limits (velocity, acceleration, jerk) leaves none of the slave's limits: a master within its own limits could drive the slave past them.
+pub const MC_ERR_GEAR_BEYOND_SLAVE_LIMITS: u16 = 34;
 /// ErrorID 40: The axis's (or group's) command queue is full: the command is rejected, nothing is dropped.
 pub const MC_ERR_QUEUE_FULL: u16 = 40;
 /// ErrorID 50: Group motion or group command on a group in GroupDisabled.

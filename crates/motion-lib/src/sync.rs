@@ -371,10 +371,34 @@ impl Engine {
     /// the catch-up profile; ErrorID 33 when the law alone needs all of one of the slave's
     /// limits (README "Camming").
     pub(crate) fn cam_remaining(&self, slave: usize, sp: &SyncParams) -> Result<Limits, ErrorId> {
-        let [f1, f2, f3] = self.cams[sp.table].bounds(sp.periodic);
-        let ml = self.axes[sp.master].cfg.limits;
-        let sl = self.axes[slave].cfg.limits;
+        let f = self.cams[sp.table].bounds(sp.periodic);
         let (ms, ss) = (sp.master_scaling.abs(), sp.slave_scaling.abs());
+        self.law_remaining(slave, sp.master, f, ms, ss)
+            .ok_or(ErrorId::CamBeyondSlaveLimits)
+    }
+
+    /// What a gear leaves of the slave's limits: a gear is the linear law f(x) = ratio x
+    /// (F1 = |ratio|, F2 = F3 = 0), so the slave keeps |ratio| V, |ratio| A and |ratio| J of
+    /// the master's axis limits for the coupling and the rest for its catch-up. ErrorID 34
+    /// when nothing is left of one of them (README "Gearing").
+    pub(crate) fn gear_remaining(&self, slave: usize, sp: &SyncParams) -> Result<Limits, ErrorId> {
+        self.law_remaining(slave, sp.master, [sp.ratio.abs(), 0.0, 0.0], 1.0, 1.0)
+            .ok_or(ErrorId::GearBeyondSlaveLimits)
+    }
+
+    /// The slave's limits less what a coupling law with derivative bounds `f` (F1..F3) and
+    /// scalings `ms`, `ss` needs for a master within its axis limits; `None` when one of them
+    /// is used up (see [`Engine::cam_remaining`]).
+    fn law_remaining(
+        &self,
+        slave: usize,
+        master: usize,
+        [f1, f2, f3]: [f64; 3],
+        ms: f64,
+        ss: f64,
+    ) -> Option<Limits> {
+        let ml = self.axes[master].cfg.limits;
+        let sl = self.axes[slave].cfg.limits;
         let (v, a) = (ml.vmax, ml.amax.max(ml.dmax));
         let j = if ml.jmax > 0.0 {
             ml.jmax
@@ -393,11 +417,7 @@ impl Engine {
             jmax: if sl.jmax > 0.0 { sl.jmax - sj } else { 0.0 },
         };
         let ok = |x: f64| x.is_finite() && x > 0.0;
-        if ok(rem.vmax) && ok(rem.amax) && (sl.jmax == 0.0 || ok(rem.jmax)) {
-            Ok(rem)
-        } else {
-            Err(ErrorId::CamBeyondSlaveLimits)
-        }
+        (ok(rem.vmax) && ok(rem.amax) && (sl.jmax == 0.0 || ok(rem.jmax))).then_some(rem)
     }
 
     /// Plans the coupling of a cam: the catch-up profile from the slave's state onto the
@@ -453,13 +473,13 @@ impl Engine {
         let prof = match self.axes[axis].active.kind {
             Kind::Gear => {
                 // The slave moves by the catch-up profile plus ratio * master: the profile
-                // gets the slave's limits less the master's axis limits times |ratio|
-                // (at least a twentieth of the slave's, README "Gearing").
+                // gets the slave's limits less the master's axis limits times |ratio|, which
+                // MC_GearIn checked to be positive (ErrorID 34, README "Gearing").
                 let ml = self.axes[sp.master].cfg.limits;
                 let sl = self.axes[axis].cfg.limits;
                 let k = sp.ratio.abs();
                 let share = |own: f64, slave: f64, master: f64| {
-                    own.min((slave - k * master).max(slave / 20.0))
+                    own.min((slave - k * master).max(slave * 1e-9))
                 };
                 lim.vmax = share(lim.vmax, sl.vmax, ml.vmax);
                 lim.amax = share(lim.amax, sl.amax.min(sl.dmax), ml.amax.max(ml.dmax));
