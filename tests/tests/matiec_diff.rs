@@ -58,6 +58,119 @@ const KNOWN: &[Known] = &[
                  saturates at the INT limits; CTUD's QU/QD follow from the different CV.",
     },
     Known {
+        program: "ctud_both",
+        columns: &[
+            "INST.C.CV",
+            "INST.C.QU",
+            "INST.CUCV",
+            "INST.CUQ",
+            "INST.CV",
+            "INST.QU",
+            "INST.UPC.CV",
+            "INST.UPC.Q",
+        ],
+        stops_in: None,
+        reason: "counter CV limits, as in counter_limits (IEC 61131-3 ed. 2 2.5.2.3.3: CTU counts while \
+                 CV < PVmax, the limit of CV's type, not PV). CTU's CV passes PV = 3 in ladderc and sticks \
+                 at 3 in matiec; when the program raises PV to 4 and 5, ladderc's Q is already TRUE and \
+                 matiec's is not. CTUD the same on its up count (QU). Simultaneous CU/CD edges, LD and R \
+                 agree.",
+    },
+    Known {
+        program: "int_div_limits",
+        columns: &[],
+        stops_in: Some(3),
+        reason: "the most negative DINT divided by -1. The quotient 2147483648 is outside DINT and the \
+                 standard gives no value for an integer result outside its type; ladderc's documented \
+                 choice (crates/c-backend/README.md: integer arithmetic wraps at the type's width) is \
+                 the wrapped value, -2147483648 (MOD -1 gives 0), and the run goes on (checked below, \
+                 most_negative_divided_by_minus_1_wraps_and_runs_on). matiec's C is a plain `/`, the \
+                 x86 idiv traps and the program dies with SIGFPE in cycle 3, the first with divisor -1 \
+                 (its SINT and INT divisions go through C's int and do not trap).",
+    },
+    Known {
+        program: "shift_counts",
+        columns: &[
+            "INST.BL",
+            "INST.BR",
+            "INST.DL",
+            "INST.DR",
+            "INST.LL",
+            "INST.LR",
+            "INST.WL",
+            "INST.WR",
+        ],
+        stops_in: None,
+        reason: "shift counts of the width or more. SHL/SHR (IEC 61131-3 ed. 2 2.5.1.5.6, Table 25) \
+                 shift IN by N bits and fill with zeros, so once N reaches the width every bit is gone \
+                 and the result is 0, which ladderc gives. matiec's C is `IN << N` / `IN >> N` on the \
+                 value promoted to 32 (or 64) bits: undefined in C from N = 32 (64), and x86 takes N \
+                 modulo 32 (64), so matiec returns IN itself at N = 32 for BYTE, WORD and DWORD (N = 64 \
+                 for LWORD) and IN shifted by N - 32 after. Below that both give 0 for BYTE and WORD. \
+                 ROL/ROR agree (both rotate by N modulo the width).",
+    },
+    Known {
+        program: "st_case_loops",
+        columns: &["INST.SKIP"],
+        stops_in: None,
+        reason: "FOR loops, as in st_control (IEC 61131-3 ed. 3 7.3.3.4.2: the body runs while the \
+                 control variable is within [start, end]). `FOR b := 1 TO e BY 3` runs once (b = 1) for \
+                 e = 1, 2, 3; matiec's loop test is `b + BY <= e` before its deferred increment, so it \
+                 runs zero times whenever e < start + BY. The negative BY loop, WHILE/REPEAT with EXIT and \
+                 the nested EXIT agree.",
+    },
+    Known {
+        program: "strings_edges",
+        columns: &["INST.LEN2", "INST.M1", "INST.REND"],
+        stops_in: None,
+        reason: "REPLACE and MID. REPLACE(IN1, IN2, L, P) replaces L characters of IN1, from position \
+                 P, by IN2 (IEC 61131-3 ed. 2 2.5.1.5.7, Table 29): REPLACE('ladder', 'XYZ', 2, 5) is \
+                 'laddXYZ' in ladderc. matiec's __replace copies at most L characters of IN2 and gives \
+                 'laddXY' (INST.LEN2, the length of a CONCAT with it, follows). MID(IN, L := 3, P := 0): \
+                 positions count from 1 and the standard gives no result for P = 0; ladderc's documented \
+                 choice is '' (crates/c-backend/README.md, the string edge table), matiec returns 'la'.",
+    },
+    Known {
+        program: "time_date_cmp",
+        columns: &["INST.PROD"],
+        stops_in: None,
+        reason: "exact time arithmetic. MUL of a TIME by an integer is a TIME (IEC 61131-3 ed. 2 \
+                 2.5.1.5.8, Table 30); T#250ms * 9 is T#2.25s in ladderc. matiec's __time_mul multiplies \
+                 tv_nsec in a C int, which overflows once the product passes 2**31 ns (from T#250ms * 9 \
+                 on): -2.147483648 s. Every comparison and the DATE/TOD/DT arithmetic agree.",
+    },
+    Known {
+        program: "time_ops",
+        columns: &["INST.D1", "INST.D2"],
+        stops_in: None,
+        reason: "exact time arithmetic (IEC 61131-3 ed. 2 2.5.1.5.8, Table 30: DIV of a TIME by an \
+                 integer is a TIME). INST.D1: T#-1036ms / 7 is exactly T#-148ms in ladderc (integer ns); \
+                 matiec's __time_div goes through a double and truncates to -147999999 ns. INST.D2: a \
+                 TIME divided by 0 has no value in the standard; ladderc's documented choice is that of \
+                 every integer division by zero, 0 and the runtime flag (crates/c-backend/README.md), \
+                 matiec gives the most negative 64-bit value (a double infinity converted).",
+    },
+    Known {
+        program: "timers_pt",
+        columns: &[
+            "INST.ET1",
+            "INST.Q1",
+            "INST.Q4",
+            "INST.TON0.Q",
+            "INST.TON1.ET",
+            "INST.TON1.Q",
+        ],
+        stops_in: None,
+        reason: "TON with a PT that changes while it runs, and PT = 0. IEC 61131-3 ed. 2 2.5.2.3.4 \
+                 describes TON by its timing diagram for a fixed PT > 0; these two cases are left to \
+                 the implementation. ladderc's documented choice (crates/c-backend/README.md): each \
+                 call sets ET to the time since IN rose, capped at PT, and Q := ET >= PT, so a raised PT \
+                 takes effect at once (Q falls back until the new PT is reached) and PT = 0 gives Q in \
+                 the scan where IN rises. matiec latches: once Q is TRUE its ET stays at the old PT and Q \
+                 stays TRUE, and it sets Q one scan after IN rises even for PT = 0. TP retriggered \
+                 while running, TOF restarted and every timer with a fixed PT agree.",
+    },
+    Known {
         program: "conversions",
         columns: &["INST.DUR"],
         stops_in: None,
@@ -193,7 +306,12 @@ fn parse_variables_csv(text: &str) -> (Vec<(String, String)>, Vec<MVar>, u64) {
         let f: Vec<&str> = line.split(';').collect();
         match section {
             "p" if f.len() >= 3 => programs.push((f[1].to_string(), f[2].to_string())),
-            "v" if f.len() >= 5 && matches!(f[1], "VAR" | "IN" | "OUT" | "MEM") => {
+            // variables of program instances (`CFG.RES.INST.X`); a configuration's or resource's
+            // globals (`CFG.X`, `CFG.RES.X`) are read through the programs' copies
+            "v" if f.len() >= 5
+                && matches!(f[1], "VAR" | "IN" | "OUT" | "MEM")
+                && f[2].split('.').count() >= 4 =>
+            {
                 let ty = f[4].to_string();
                 if printable(&ty) {
                     vars.push(MVar {
@@ -338,11 +456,24 @@ fn matiec_trace(m: &Matiec, src: &Path, cycles: u64, work: &Path) -> Result<Stri
     std::fs::write(&pous, drop_stray_literals(&text)).unwrap();
     let csv = std::fs::read_to_string(out.join("VARIABLES.csv")).map_err(|e| e.to_string())?;
     let (programs, vars, _) = parse_variables_csv(&csv);
-    std::fs::write(
-        out.join("ladderc_diff_main.c"),
-        matiec_main(&programs, &vars),
-    )
-    .unwrap();
+    let mut main = matiec_main(&programs, &vars);
+    // located variables (`AT %QW2`): the program's C points at `__QW2`, storage the runtime defines, as
+    // Beremiz's plc_main does, from iec2c's LOCATED_VARIABLES.h
+    let located = out.join("LOCATED_VARIABLES.h");
+    if let Ok(text) = std::fs::read_to_string(&located) {
+        // iec2c glues stray text before the first line here too (`SHARED__LOCATED_VAR(...)`, the name
+        // of a global): each line from its `__LOCATED_VAR(`
+        let clean: String = text
+            .lines()
+            .filter_map(|l| l.find("__LOCATED_VAR(").map(|i| format!("{}\n", &l[i..])))
+            .collect();
+        std::fs::write(&located, clean).unwrap();
+        main.push_str(
+            "\n#define __LOCATED_VAR(type, name, ...) type __##name; type *name = &__##name;\n\
+             #include \"LOCATED_VARIABLES.h\"\n#undef __LOCATED_VAR\n",
+        );
+    }
+    std::fs::write(out.join("ladderc_diff_main.c"), main).unwrap();
     let mut cc = Command::new("cc");
     cc.args(["-std=gnu11", "-O0", "-fwrapv", "-w", "-I"])
         .arg(&m.lib_c)
@@ -800,6 +931,40 @@ fn mod_by_zero_gives_0_and_runs_on() {
     assert_eq!(rest.len(), 20);
     // den = 6 - tick: 5, 4, 3, 2, 1, 0, -1, -2, -3 ...
     assert_eq!(&rest[..9], ["0", "0", "1", "0", "0", "0", "0", "0", "1"]);
+}
+
+/// ladderc's side of int_div_limits past matiec's crash: the most negative value divided by -1 wraps to
+/// itself in every width, MOD -1 is 0, and the run goes on to the divisors -2 and -3 (truncating).
+#[test]
+fn most_negative_divided_by_minus_1_wraps_and_runs_on() {
+    let src = repo_root().join("tests/tests/fixtures/matiec_diff/int_div_limits.il");
+    let work = tempfile::tempdir().unwrap();
+    let t = parse_csv(&ladderc_trace(&src, 7, 10_000_000, work.path()).unwrap());
+    let col = |name: &str| {
+        let i = t.header.iter().position(|h| h == name).unwrap();
+        t.rows.iter().map(|r| r[i].as_str()).collect::<Vec<_>>()
+    };
+    // d = 4 - tick, with -1 for 0: 3, 2, 1, -1, -1, -2, -3
+    assert_eq!(col("inst.d"), ["3", "2", "1", "-1", "-1", "-2", "-3"]);
+    assert_eq!(col("inst.sq")[3..], ["-128", "-128", "64", "42"]);
+    assert_eq!(col("inst.iq")[3..], ["-32768", "-32768", "16384", "10922"]);
+    let min_dint = "-2147483648";
+    assert_eq!(
+        col("inst.lq")[3..],
+        [min_dint, min_dint, "1073741824", "715827882"]
+    );
+    let min_lint = "-9223372036854775808";
+    assert_eq!(
+        col("inst.qq")[3..],
+        [
+            min_lint,
+            min_lint,
+            "4611686018427387904",
+            "3074457345618258602"
+        ]
+    );
+    assert_eq!(col("inst.sm")[3..], ["0", "0", "0", "-2"]);
+    assert_eq!(col("inst.im")[3..], ["0", "0", "0", "-2"]);
 }
 
 #[test]

@@ -441,10 +441,8 @@ mod tests {
 
     #[test]
     fn quoted_names_and_strings_keep_their_columns() {
-        let t = parse(
-            "cycle,time_ms,\"m.g[0,1]\",m.s,axis.X1.position\n0,0,5,\"a,\"\"b\",7\n",
-        )
-        .unwrap();
+        let t = parse("cycle,time_ms,\"m.g[0,1]\",m.s,axis.X1.position\n0,0,5,\"a,\"\"b\",7\n")
+            .unwrap();
         let names: Vec<&str> = t.columns.iter().map(|c| c.0.as_str()).collect();
         assert_eq!(names, ["m.g[0,1]", "m.s", "axis.X1.position"]);
         assert_eq!((t.columns[0].1[0], t.columns[2].1[0]), (5.0, 7.0));
