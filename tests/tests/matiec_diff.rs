@@ -89,6 +89,17 @@ const KNOWN: &[Known] = &[
                  (its SINT and INT divisions go through C's int and do not trap).",
     },
     Known {
+        program: "sel_edges",
+        columns: &["INST.M3"],
+        stops_in: None,
+        reason: "MUX with K outside 0..2. IEC 61131-3 defines MUX only for K within the inputs (ed. 2 \
+                 2.5.1.5.4, Table 27) and no result for another K; ladderc's documented choice is IN0 \
+                 (7) with the runtime flag `MUX selector K out of range` (as an array index out of \
+                 range uses the first element; checked below, mux_out_of_range_selects_in0_and_is_reported), \
+                 matiec returns 0, its type's default. SEL, MUX within range, LIMIT with MN > MX (the \
+                 result is MX) and MAX/MIN agree.",
+    },
+    Known {
         program: "shift_counts",
         columns: &[
             "INST.BL",
@@ -965,6 +976,35 @@ fn most_negative_divided_by_minus_1_wraps_and_runs_on() {
     );
     assert_eq!(col("inst.sm")[3..], ["0", "0", "0", "-2"]);
     assert_eq!(col("inst.im")[3..], ["0", "0", "0", "-2"]);
+}
+
+/// ladderc's side of sel_edges where matiec differs: MUX with K = -1, 3 or 4 (three inputs) selects IN0
+/// and the run reports the flag once, on stderr, with exit status 0.
+#[test]
+fn mux_out_of_range_selects_in0_and_is_reported() {
+    let src = repo_root().join("tests/tests/fixtures/matiec_diff/sel_edges.il");
+    let work = tempfile::tempdir().unwrap();
+    let trace = work.path().join("t.csv");
+    let out = ladderc()
+        .arg("run")
+        .arg(&src)
+        .args(["--cycles", "6", "--watch", "inst.kk,inst.m3", "--trace"])
+        .arg(&trace)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(
+        std::fs::read_to_string(&trace).unwrap(),
+        "cycle,time_ms,inst.kk,inst.m3\n0,0,0,7\n1,10,1,8\n2,20,2,9\n3,30,3,7\n4,40,4,7\n5,50,-1,7\n"
+    );
+    assert_eq!(
+        stderr
+            .matches("runtime: MUX selector K out of range (IN0 selected)")
+            .count(),
+        1,
+        "{stderr}"
+    );
 }
 
 #[test]

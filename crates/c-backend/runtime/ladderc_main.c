@@ -575,5 +575,6 @@ int main(int argc, char **argv) {
     if (ladderc_errors & LADDERC_ERR_BOUNDS) fprintf(stderr, "runtime: array index out of range\n");
     if (ladderc_errors & LADDERC_ERR_STRING) fprintf(stderr, "runtime: string truncated\n");
     if (ladderc_errors & LADDERC_ERR_STRPOS) fprintf(stderr, "runtime: string length or position out of range\n");
+    if (ladderc_errors & LADDERC_ERR_MUX) fprintf(stderr, "runtime: MUX selector K out of range (IN0 selected)\n");
     return 0;
 }

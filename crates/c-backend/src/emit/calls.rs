@@ -577,11 +577,11 @@ impl Gen<'_> {
                     return None;
                 }
                 let k = &vals[0];
-                let mut expr = vals[1].clone();
-                for (n, v) in vals.iter().enumerate().skip(2).rev() {
+                // K out of range (an error in IEC 61131-3) selects IN0 and sets the runtime flag
+                let mut expr = format!("(ladderc_errors |= LADDERC_ERR_MUX, ({}))", vals[1]);
+                for (n, v) in vals.iter().enumerate().skip(1).rev() {
                     expr = format!("(({k}) == {} ? ({v}) : {expr})", n - 1);
                 }
-                // K out of range selects IN0
                 Some(expr)
             }
             "MAX" | "MIN" => {
