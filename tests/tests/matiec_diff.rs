@@ -861,7 +861,7 @@ fn fixtures_agree_with_matiec_or_follow_the_standard() {
         ),
     }
     let mut failures = Vec::new();
-    let (mut programs, mut cycles, mut cells) = (0, 0, 0);
+    let (mut programs, mut cycles, mut cells, mut differing, mut agreeing) = (0, 0, 0, 0, 0);
     for (src, result) in run_all(m.as_ref(), &fixtures()) {
         let name = src.file_stem().unwrap().to_str().unwrap().to_string();
         match result {
@@ -870,6 +870,10 @@ fn fixtures_agree_with_matiec_or_follow_the_standard() {
                 programs += 1;
                 cycles += o.cycles;
                 cells += o.cycles * o.columns;
+                differing += o.diffs.iter().map(|d| d.cycles).sum::<usize>();
+                if o.diffs.is_empty() && o.stopped.is_none() {
+                    agreeing += 1;
+                }
                 let mut got: Vec<&str> = o.diffs.iter().map(|d| d.column.as_str()).collect();
                 got.sort();
                 let mut want: Vec<&str> = KNOWN
@@ -896,7 +900,10 @@ fn fixtures_agree_with_matiec_or_follow_the_standard() {
             Err(e) => failures.push(format!("{name}: {e}")),
         }
     }
-    println!("matiec-diff: {programs} programs, {cycles} cycles, {cells} values compared");
+    println!(
+        "matiec-diff: {programs} programs ({agreeing} agree in every value), {cycles} cycles, {cells} \
+         values compared, {differing} differ (each in a known way)"
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
     assert!(programs >= 15, "the corpus has {programs} programs");
 }

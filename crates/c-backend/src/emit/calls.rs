@@ -631,8 +631,10 @@ impl Gen<'_> {
                     n => &n.to_ascii_lowercase(),
                 };
                 let v = vals.first()?;
+                // REAL: the double function rounded once to REAL, the correctly rounded result for
+                // practically every argument (the float functions, sinf ..., may be 1 ulp off)
                 Some(if e == E::Real {
-                    format!("((IEC_REAL){f}f({v}))")
+                    format!("((IEC_REAL){f}((double)({v})))")
                 } else {
                     format!("((IEC_LREAL){f}({v}))")
                 })
