@@ -58,6 +58,19 @@ const KNOWN: &[Known] = &[
                  saturates at the INT limits; CTUD's QU/QD follow from the different CV.",
     },
     Known {
+        program: "conv_invalid",
+        columns: &["INST.BIG", "INST.ENC", "INST.ENCB", "INST.NEG", "INST.SMALL"],
+        stops_in: None,
+        reason: "conversions of values the target cannot hold. IEC 61131-3 gives them no value (an \
+                 error); ladderc's documented choice (crates/c-backend/README.md, Conversions) is to \
+                 saturate REAL/LREAL to integer at the target's limit (REAL_TO_DINT(3.0E9) = \
+                 2147483647, LREAL_TO_DINT(-1.0E10) = -2147483648) and to encode 0 for a value with more \
+                 BCD digits than the bit string holds (UINT_TO_BCD_WORD(10000), USINT_TO_BCD_BYTE(110)), \
+                 each with the range flag. matiec's C casts through a 64-bit integer and keeps the low \
+                 bits (-1294967296, -1410065408, -25536) and its BCD encoder drops the digits that do not \
+                 fit (16#2000, 16#10). Decoding a nibble above 9 agrees.",
+    },
+    Known {
         program: "ctud_both",
         columns: &[
             "INST.C.CV",
