@@ -8,7 +8,9 @@
 //! CSV-quoted). With `MATIEC_BIN` (iec2c) and `MATIEC_LIB` (matiec's `lib/` or `lib/C`) set, the trace
 //! is made live: iec2c compiles the program, a generated C main runs `config_init__` and then N times
 //! `config_run__(k)` with `__CURRENT_TIME = k * ticktime` (matiec's tick time, from VARIABLES.csv), and
-//! prints every program variable (and every FB member) after each cycle. The live trace must equal the
+//! prints every program variable (and every FB member) after each cycle; located variables get their
+//! storage in that main (from iec2c's LOCATED_VARIABLES.h), configuration globals are compared through
+//! the programs' variables. The live trace must equal the
 //! recorded one (`MATIEC_DIFF_RECORD=1` rewrites it). Without matiec (CI) the recorded traces are used,
 //! so ladderc is still compared with matiec on every run.
 //! ladderc's side is `ladderc run PROGRAM --cycles N --cycle-ms TICK --trace FILE` (cycle k runs at
