@@ -465,6 +465,8 @@ impl Gen<'_> {
                         ctypes::string_cap(ty)
                     )
                 }
+                // C arrays do not assign: a whole array (`b := a`, an array input) is copied
+                Type::Array { .. } => format!("memcpy({lv}, {value}, sizeof {lv});"),
                 _ => format!("{lv} = {value};"),
             },
             Place::Loc { loc, ty } => store_expr(loc, ty, value),
