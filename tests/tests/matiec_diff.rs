@@ -206,6 +206,17 @@ const KNOWN: &[Known] = &[
                  consistently: TIME_TO_DINT agrees.",
     },
     Known {
+        program: "lit_context",
+        columns: &["INST.L"],
+        stops_in: None,
+        reason: "literal arithmetic in a LINT expression. In `100000 * 100000 + INT_TO_LINT(tick)` the \
+                 untyped literals take the type of the expression, LINT, on both sides (ladderc's rule: \
+                 crates/il-frontend/README_sema.md, Untyped literals), so the product is 10000000000 \
+                 and fits. matiec emits the C `100000 * 100000`, a C int multiplication that overflows \
+                 (1410065408 with -fwrapv): its C does not compute in the type it inferred. The other literal contexts (SINT, REAL, LREAL, \
+                 DINT past 16#7FFF, STRING functions) agree.",
+    },
+    Known {
         program: "mod_by_zero",
         columns: &[],
         stops_in: Some(5),
