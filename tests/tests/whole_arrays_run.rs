@@ -1,5 +1,5 @@
 //! Whole arrays through `ladderc run`: IL `LD a` / `ST b` of an array, an array field of a structure, a
-//! structure holding an array, a two-dimensional array, an array FB input and output (C arrays do not
+//! structure holding an array, a two-dimensional array, an array FB input and output, an array FUNCTION input (C arrays do not
 //! assign, so the C copies them); the trace names a two-dimensional element `"inst.g2[1,1]"`, quoted.
 
 mod common;
@@ -13,6 +13,15 @@ const PROGRAM: &str = "TYPE
   END_STRUCT;
   grid : ARRAY[0..1, 0..1] OF INT;
 END_TYPE
+FUNCTION total : DINT
+  VAR_INPUT
+    r : row;
+  END_VAR
+  LD r[1]
+  ADD r[2]
+  ADD r[3]
+  ST total
+END_FUNCTION
 FUNCTION_BLOCK holder
   VAR_INPUT
     inrow : row;
@@ -34,6 +43,7 @@ PROGRAM main
     g2 : grid;
     h : holder;
     c : row;
+    t : DINT;
   END_VAR
   LD tick
   ADD 1
@@ -54,6 +64,9 @@ PROGRAM main
   )
   LD h.outrow
   ST c
+  LD c
+  total
+  ST t
 END_PROGRAM
 CONFIGURATION cfg
   RESOURCE res ON PLC
@@ -112,6 +125,8 @@ fn whole_arrays_copy_in_il_structures_and_fb_parameters() {
         assert_eq!(col(name), ["1", "2", "3"], "{name}");
     }
     assert_eq!(col("inst.c[3]"), ["3", "3", "3"]);
+    // an array FUNCTION input: 1 + tick + 3
+    assert_eq!(col("inst.t"), ["5", "6", "7"]);
     // g2 is copied before g1[1,1] is written: its initial 4, then the previous tick
     assert_eq!(col("inst.g2[1,1]"), ["4", "1", "2"]);
     assert_eq!(col("inst.g2[0,1]"), ["2", "2", "2"]);
