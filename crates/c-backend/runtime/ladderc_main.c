@@ -284,6 +284,21 @@ static void trace_put_text(const char *text, size_t n) {
     }
 }
 
+/* A column name; CSV-quoted when it holds a comma or a quote (`main.grid[0,1]`, a 2-D array element). */
+static void trace_put_name(const char *name) {
+    size_t i, n = strlen(name);
+    if (!strpbrk(name, ",\"")) {
+        trace_put_text(name, n);
+        return;
+    }
+    trace_put_text("\"", 1);
+    for (i = 0; i < n; i++) {
+        if (name[i] == '"') trace_put_text("\"", 1);
+        trace_put_text(name + i, 1);
+    }
+    trace_put_text("\"", 1);
+}
+
 static void trace_u64(unsigned long long v) {
     char d[24];
     int n = 0;
@@ -508,7 +523,7 @@ int main(int argc, char **argv) {
     for (w = 0; w < watch_count; w++) {
         trace_room();
         trace_buf[trace_len++] = ',';
-        trace_put_text(watch[w].name, strlen(watch[w].name));
+        trace_put_name(watch[w].name);
     }
     trace_end_row();
 
@@ -560,5 +575,6 @@ int main(int argc, char **argv) {
     if (ladderc_errors & LADDERC_ERR_BOUNDS) fprintf(stderr, "runtime: array index out of range\n");
     if (ladderc_errors & LADDERC_ERR_STRING) fprintf(stderr, "runtime: string truncated\n");
     if (ladderc_errors & LADDERC_ERR_STRPOS) fprintf(stderr, "runtime: string length or position out of range\n");
+    if (ladderc_errors & LADDERC_ERR_MUX) fprintf(stderr, "runtime: MUX selector K out of range (IN0 selected)\n");
     return 0;
 }

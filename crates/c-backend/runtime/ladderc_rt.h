@@ -62,6 +62,7 @@ typedef struct {
 #define LADDERC_ERR_BOUNDS 4u   /* array index out of its declared range: element 0 used instead */
 #define LADDERC_ERR_STRING 8u   /* string truncated to its capacity */
 #define LADDERC_ERR_STRPOS 16u  /* string function length or position out of range (ladderc_strings.c) */
+#define LADDERC_ERR_MUX 32u     /* MUX selector K outside 0..n-1: IN0 selected */
 
 extern uint32_t ladderc_errors;  /* sticky error flags, LADDERC_ERR_* */
 extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set before each cycle */

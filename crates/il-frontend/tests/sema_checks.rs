@@ -611,3 +611,22 @@ END_PROGRAM
 "
     ));
 }
+
+/// A user FUNCTION without inputs in operator form takes no current result (matiec reads it so as
+/// well); with an operand it is E1020, whose hint says that it has no inputs.
+#[test]
+fn function_without_inputs_in_operator_form() {
+    let decl = "FUNCTION seven : INT\n  LD 7\n  ST seven\nEND_FUNCTION\n";
+    let ok = format!(
+        "{decl}PROGRAM Main\nVAR\n  x : INT;\nEND_VAR\n  LD x\n  ADD 1\n  seven\n  ST x\nEND_PROGRAM\n"
+    );
+    assert!(codes(&ok).is_empty(), "{}", check(&ok));
+    let bad = format!(
+        "{decl}PROGRAM Main\nVAR\n  x : INT;\nEND_VAR\n  LD x\n  seven 5\n  ST x\nEND_PROGRAM\n"
+    );
+    let (_, diags) = sema_support::analyze_src(&bad);
+    assert!(
+        diags.contains("E1020") && diags.contains("seven has no inputs: call it without operands"),
+        "{diags}"
+    );
+}

@@ -1587,7 +1587,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         // the variables the output reaches, directly or through the data inputs of further generic
         // functions (`SEL(G, 9, 10)` into `SEL(G2, _, 8)` into an INT: INT)
         let mut stack = vec![block];
-        let mut seen = HashSet::new();
+        let mut seen = HashSet::default();
         while let Some(b) = stack.pop() {
             if !seen.insert(b) {
                 continue;

@@ -26,20 +26,38 @@ struct Trace {
     columns: Vec<(String, Vec<f64>)>,
 }
 
+/// The fields of one CSV line: `"..."` quoted fields (a 2-D array element's name `main.g[0,1]`, a STRING
+/// value) keep their commas, `""` is a quote.
+fn csv_fields(line: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    let mut quoted = false;
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' if quoted && chars.peek() == Some(&'"') => {
+                cur.push('"');
+                chars.next();
+            }
+            '"' => quoted = !quoted,
+            ',' if !quoted => out.push(std::mem::take(&mut cur)),
+            _ => cur.push(c),
+        }
+    }
+    out.push(cur);
+    out
+}
+
 fn parse(csv: &str) -> Result<Trace, String> {
     let mut lines = csv.lines();
-    let header: Vec<String> = lines
-        .next()
-        .ok_or("the trace is empty")?
-        .split(',')
-        .map(str::to_string)
-        .collect();
+    let header = lines.next().ok_or("the trace is empty")?;
+    let header = csv_fields(header);
     if header.get(1).map(String::as_str) != Some("time_ms") {
         return Err("the trace has no time_ms column".into());
     }
     let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
     for l in lines {
-        for (i, v) in l.split(',').enumerate().take(header.len()) {
+        for (i, v) in csv_fields(l).iter().enumerate().take(header.len()) {
             cols[i].push(v.parse::<f64>().unwrap_or(f64::NAN));
         }
     }
@@ -419,6 +437,16 @@ mod tests {
         assert!(text.contains("X1.position") && text.contains("X1.velocity"));
         assert!(text.contains("position [mm]") && text.contains("velocity [mm/s]"));
         assert_eq!(rises(&[1.0, 1.0, 0.0, 1.0]), vec![0, 3]);
+    }
+
+    #[test]
+    fn quoted_names_and_strings_keep_their_columns() {
+        let t = parse("cycle,time_ms,\"m.g[0,1]\",m.s,axis.X1.position\n0,0,5,\"a,\"\"b\",7\n")
+            .unwrap();
+        let names: Vec<&str> = t.columns.iter().map(|c| c.0.as_str()).collect();
+        assert_eq!(names, ["m.g[0,1]", "m.s", "axis.X1.position"]);
+        assert_eq!((t.columns[0].1[0], t.columns[2].1[0]), (5.0, 7.0));
+        assert_eq!(csv_fields("a,\"b,\"\"c\""), ["a", "b,\"c"]);
     }
 
     #[test]

@@ -113,18 +113,20 @@ impl<'a> Gen<'a> {
         if let Some((_, name)) = b.cr_names.iter().find(|(t, _)| t == ty) {
             return Some(name.clone());
         }
-        let base = match ty {
-            Type::Array { .. } => {
-                self.unsupported(span, "an array as the current result");
+        if let Type::Array { .. } = ty {
+            // a whole array (`b := a`, `LD a` / `ST b`): a C array local, copied with memcpy
+            let name = format!("cr_array_{}", b.crs.len());
+            let Some(decl) = ctypes::declare(self.model, ty, &name) else {
+                self.unsupported(span, "an array of unknown type as the current result");
                 return None;
-            }
-            t => match ctypes::base(self.model, t) {
-                Some(b) => b,
-                None => {
-                    self.unsupported(span, "a current result of unknown type");
-                    return None;
-                }
-            },
+            };
+            b.crs.insert(name.clone(), format!("{decl} = {{0}};"));
+            b.cr_names.push((ty.clone(), name.clone()));
+            return Some(name);
+        }
+        let Some(base) = ctypes::base(self.model, ty) else {
+            self.unsupported(span, "a current result of unknown type");
+            return None;
         };
         let name = cfmt!("cr_{}", base.strip_prefix("IEC_").unwrap_or(&base));
         if !b.crs.contains_key(&name) {
@@ -328,6 +330,10 @@ impl<'a> Gen<'a> {
                 let Some(v) = self.value(b.scope, o, &ty) else {
                     return;
                 };
+                if let Type::Array { .. } = ty {
+                    b.line(&format!("memcpy({cr}, {v}, sizeof {cr});"));
+                    return;
+                }
                 let v = if negate { negated(&v, &ty) } else { v };
                 b.line_fmt(format_args!("{cr} = {v};"));
             }
@@ -341,6 +347,10 @@ impl<'a> Gen<'a> {
                 let Some(place) = self.operand_place(b.scope, o) else {
                     return;
                 };
+                if let (Type::Array { .. }, Place::Loc { .. }) = (&ty, &place) {
+                    self.unsupported(span, "storing a whole array at a direct address");
+                    return;
+                }
                 let v = if negate { negated(&cr, &ty) } else { cr };
                 let v = convert(&v, &ty, place.ty());
                 let stmt = self.store(&place, &v);

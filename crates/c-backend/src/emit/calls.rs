@@ -614,11 +614,11 @@ impl Gen<'_> {
                     return None;
                 }
                 let k = &vals[0];
-                let mut expr = vals[1].clone();
-                for (n, v) in vals.iter().enumerate().skip(2).rev() {
+                // K out of range (an error in IEC 61131-3) selects IN0 and sets the runtime flag
+                let mut expr = cfmt!("(ladderc_errors |= LADDERC_ERR_MUX, ({}))", vals[1]);
+                for (n, v) in vals.iter().enumerate().skip(1).rev() {
                     expr = cfmt!("(({k}) == {} ? ({v}) : {expr})", n - 1);
                 }
-                // K out of range selects IN0
                 Some(expr)
             }
             "MAX" | "MIN" => {
@@ -670,8 +670,10 @@ impl Gen<'_> {
                     n => &n.to_ascii_lowercase(),
                 };
                 let v = vals.first()?;
+                // REAL: the double function rounded once to REAL, the correctly rounded result for
+                // practically every argument (the float functions, sinf ..., may be 1 ulp off)
                 Some(if e == E::Real {
-                    cfmt!("((IEC_REAL){f}f({v}))")
+                    cfmt!("((IEC_REAL){f}((double)({v})))")
                 } else {
                     cfmt!("((IEC_LREAL){f}({v}))")
                 })

@@ -481,6 +481,8 @@ impl Gen<'_> {
                         ctypes::string_cap(ty)
                     )
                 }
+                // C arrays do not assign: a whole array (`b := a`, an array input) is copied
+                Type::Array { .. } => cfmt!("memcpy({lv}, {value}, sizeof {lv});"),
                 _ => cfmt!("{lv} = {value};"),
             },
             Place::Loc { loc, ty } => store_expr(loc, ty, value),

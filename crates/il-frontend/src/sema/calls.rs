@@ -738,6 +738,9 @@ impl Body<'_, '_> {
                     self.formal_arg(k, fa, &pou.name, &fb_like_params(&pou), rec);
                 }
             }
+            // a function without inputs in operator form (`LD x` then `seven`): no current result to
+            // pass, the call replaces it (as matiec does)
+            CallArgs::None if !formal && inputs.is_empty() => {}
             _ => {
                 let ins = self.collect_inputs(span, args, formal, st, &pou.name);
                 if ins.len() != inputs.len() {
@@ -759,14 +762,18 @@ impl Body<'_, '_> {
                         )
                         .label("wrong number of inputs")
                         .also(pou.span, "function declared here")
-                        .hint(format!(
-                            "inputs: {}",
-                            inputs
-                                .iter()
-                                .map(|v| v.name.clone())
-                                .collect::<Vec<_>>()
-                                .join(", ")
-                        ));
+                        .hint(if inputs.is_empty() {
+                            format!("{} has no inputs: call it without operands", pou.name)
+                        } else {
+                            format!(
+                                "inputs: {}",
+                                inputs
+                                    .iter()
+                                    .map(|v| v.name.clone())
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            )
+                        });
                     return result;
                 }
                 for ((t, s, source), p) in ins.into_iter().zip(inputs) {
