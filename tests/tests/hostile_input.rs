@@ -211,6 +211,30 @@ fn every_span_of_every_front_end_lies_on_character_boundaries() {
 }
 
 #[test]
+fn json_byte_offsets_count_a_byte_order_mark_of_the_file() {
+    // The BOM is dropped from the text (line and column count from the character after it), but
+    // `byte_start`/`byte_end` are offsets into the file: they were 3 short.
+    let dir = tempfile::tempdir().unwrap();
+    let il = "\u{feff}PROGRAM p\nVAR a : INT; END_VAR\nLD zz\nEND_PROGRAM\n";
+    let xml = format!("\u{feff}{}", st("a := zz;"));
+    for (name, text) in [("bom.il", il.to_string()), ("bom.xml", xml)] {
+        let src = write(dir.path(), name, &text);
+        let out = run(&["--message-format", "json", "check"], &[&src]);
+        let err = stderr(&out);
+        let v: serde_json::Value = serde_json::from_str(err.lines().next().unwrap()).unwrap();
+        assert_eq!(v["code"], "E1001", "{err}");
+        let start = v["byte_start"].as_u64().unwrap() as usize;
+        assert_eq!(&text.as_bytes()[start..start + 2], b"zz", "{name}: {err}");
+        let line = text
+            .lines()
+            .nth(v["line"].as_u64().unwrap() as usize - 1)
+            .unwrap();
+        let col = v["column"].as_u64().unwrap() as usize;
+        assert_eq!(line.chars().nth(col - 1), Some('z'), "{name}: {err}");
+    }
+}
+
+#[test]
 fn an_unterminated_pragma_before_a_multibyte_character_ends_on_a_boundary() {
     let dir = tempfile::tempdir().unwrap();
     let src = write(dir.path(), "p.xml", &st("a := 1; {€"));
@@ -268,15 +292,90 @@ fn many_errors_show_the_first_fifty_per_file_and_count_the_rest() {
         json.lines()
             .filter(|l| l.contains("\"kind\":\"diagnostic\""))
             .count(),
-        5000,
-        "JSON shows every diagnostic"
+        1000,
+        "JSON shows the first 1,000 diagnostics per file"
     );
+    let summary = json.lines().last().unwrap_or("");
     assert!(
-        json.lines()
-            .last()
-            .unwrap_or("")
-            .contains("\"kind\":\"summary\""),
-        "then the summary record"
+        summary.contains("\"kind\":\"summary\"") && summary.contains("\"errors\":5000"),
+        "then the summary record, which counts them all: {summary}"
+    );
+    let out = run(
+        &[
+            "--message-format",
+            "json",
+            "--max-diagnostics",
+            "0",
+            "check",
+        ],
+        &[&src],
+    );
+    assert_eq!(
+        stderr(&out)
+            .lines()
+            .filter(|l| l.contains("\"kind\":\"diagnostic\""))
+            .count(),
+        5000,
+        "--max-diagnostics 0 shows every diagnostic in JSON too"
+    );
+}
+
+#[test]
+fn json_output_of_100000_errors_on_long_lines_stays_bounded() {
+    // 100,000 conditional jumps on an INT (E1023 each), every line padded with a wide comment: JSON
+    // lines printed every diagnostic, 38 MB for 2.8 MB of IL; the short and human formats cap at 50.
+    let dir = tempfile::tempdir().unwrap();
+    let n = 100_000;
+    let mut il = String::from("PROGRAM p\nVAR a : INT; END_VAR\n");
+    for k in 0..n {
+        il.push_str(&format!("L{k}: LD a\nJMPC L{} (* ü€ *)\n", (k * 7919) % n));
+    }
+    il.push_str("END_PROGRAM\n");
+    let src = write(dir.path(), "jumps.il", &il);
+    for format in ["human", "short", "json"] {
+        let out = run(&["--message-format", format, "check"], &[&src]);
+        assert_eq!(out.status.code(), Some(1), "{format}");
+        let err = stderr(&out);
+        assert!(
+            err.contains("E1023"),
+            "{format}: {}",
+            &err[..err.len().min(2000)]
+        );
+        assert!(
+            err.len() < 1_000_000,
+            "{format}: {} bytes of diagnostics",
+            err.len()
+        );
+    }
+}
+
+#[test]
+fn an_operand_list_of_100000_is_e1020_and_one_of_1000_inputs_runs() {
+    // `ADD a, a, ...`: the C folds the inputs into one expression nested as deep as the list; 100,000
+    // operands took minutes (quadratic) in `check` before the cap.
+    let dir = tempfile::tempdir().unwrap();
+    let list = |n: usize| {
+        format!(
+            "PROGRAM p\nVAR a : DINT := 1; END_VAR\nLD a\nADD {}\nST a\nEND_PROGRAM\n",
+            vec!["a"; n].join(", ")
+        )
+    };
+    let src = write(dir.path(), "long.il", &list(100_000));
+    let out = run(&["--message-format", "short", "check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("error[E1020]: ADD takes at most 1000 inputs, 100001 given"),
+        "{}",
+        stderr(&out)
+    );
+    // at the cap: the current result and 999 operands, 1 + 999 = 1000
+    let src = write(dir.path(), "cap.il", &list(999));
+    let out = run(&["run", "--cycles", "1", "--watch", "p.a"], &[&src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(
+        String::from_utf8_lossy(&out.stdout).contains(",1000"),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
     );
 }
 
