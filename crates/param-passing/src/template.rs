@@ -812,18 +812,19 @@ fn load_array_shape(
     let low = match p.attr("low") {
         None => 0,
         Some(a) => match a.value.trim().parse::<i64>() {
-            Ok(l) if l.abs() <= i64::from(i32::MAX) => l,
+            // both bounds are DINTs, as IEC array bounds are
+            Ok(l) if l >= i64::from(i32::MIN) && l + i64::from(len) - 1 <= i64::from(i32::MAX) => l,
             _ => {
                 diags.push(
                     Diagnostic::error(
                         code::E4102,
                         format!(
-                            "array `{name}`: lower bound `{}` is not an integer",
+                            "array `{name}`: lower bound `{}` is not an integer whose bounds fit a DINT",
                             a.value
                         ),
                     )
                     .at(a.span)
-                    .with_hint("write low=\"0\" (the default) or another integer"),
+                    .with_hint("write low=\"0\" (the default) or another integer from -2147483648 to 2147483648 - length"),
                 );
                 return None;
             }
