@@ -85,6 +85,37 @@ fn hostile_templates_are_refused_in_their_file_and_no_c_is_written() {
         (ok_local, "tmp = 0.0; system(\"id\");", "E4007"),
         (ok_local, "tmp = 0.0; ((void (*)(void))0)();", "E4208"),
         (ok_local, "tmp = 0.0; static int n; (void)n;", "E4010"),
+        // Macros of the C headers as names: `isnan` as a local let the body call the macro `isnan(x)`.
+        (
+            r#"<local name="isnan" ctype="double"/>"#,
+            "isnan = Pos; Dn = (uint8_t)isnan(isnan);",
+            "E4206",
+        ),
+        (
+            ok_local,
+            "double signbit = Pos; tmp = signbit; Dn = (uint8_t)signbit(tmp);",
+            "E4206",
+        ),
+        // A 4 GB array on the scan's stack; brackets nested 100,000 deep (gcc ran for minutes).
+        (
+            ok_local,
+            "double big[536870912]; big[0] = Pos; tmp = big[0];",
+            "E4208",
+        ),
+        (
+            ok_local,
+            "double big[64][64][2]; big[0][0][0] = Pos; tmp = big[0][0][0];",
+            "E4208",
+        ),
+        (
+            ok_local,
+            &format!(
+                "tmp = 0.0; {}Dn = 1;{}",
+                "{".repeat(100_000),
+                "}".repeat(100_000)
+            ),
+            "E4008",
+        ),
         // A C error is the template's, not the user's build's.
         (ok_local, "tmp = Pos +;", "E4210"),
     ];

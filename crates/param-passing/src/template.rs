@@ -291,6 +291,35 @@ pub fn is_abbreviation(s: &str) -> bool {
         && s.bytes().all(|b| b.is_ascii_alphanumeric())
 }
 
+/// The macros without `_` that the C headers of the generated program define (`stdio.h`, `stdlib.h`,
+/// `stdint.h`, `stddef.h`, `string.h`, `math.h`, `stdarg.h`, `stdbool.h`; `gcc -dM -E`), and `errno` and
+/// `assert`. A local of such a name is expanded by the preprocessor: `isnan` as a local let the body call
+/// the function-like macro `isnan(x)`, outside the functions a body may call.
+pub const C_HEADER_MACROS: &[&str] = &[
+    "stdin",
+    "stdout",
+    "stderr",
+    "EOF",
+    "BUFSIZ",
+    "NAN",
+    "INFINITY",
+    "offsetof",
+    "isnan",
+    "isinf",
+    "isfinite",
+    "isnormal",
+    "signbit",
+    "fpclassify",
+    "isgreater",
+    "isgreaterequal",
+    "isless",
+    "islessequal",
+    "islessgreater",
+    "isunordered",
+    "errno",
+    "assert",
+];
+
 /// Names no abbreviation or local may take: C keywords, the head's `FuncNum`, the method's `self`, the
 /// names a body may use from C and the motion library.
 pub fn is_reserved_name(s: &str) -> bool {
@@ -299,6 +328,7 @@ pub fn is_reserved_name(s: &str) -> bool {
             s,
             "FuncNum" | "self" | "main" | "bool" | "true" | "false" | "NULL"
         )
+        || C_HEADER_MACROS.contains(&s)
         || crate::cbody::C_BASICS.contains(&s)
         || crate::library::runtime_symbol_set().contains(s)
 }
