@@ -131,6 +131,33 @@ fn a_rung_of_3000_contacts_in_series_is_e3200() {
     assert!(stderr(&out).contains("error[E3200]"), "{}", stderr(&out));
 }
 
+#[test]
+fn a_lattice_of_contacts_each_fed_by_the_two_before_lowers_in_linear_time_and_runs() {
+    // Contact k is fed by contacts k-1 and k-2 (a wired OR): the lowering walked every shared value
+    // again from each reader, Fibonacci(k) walks; 60 contacts ran for minutes.
+    let n = 300;
+    let mut el = vec![r#"<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>"#.to_string()];
+    for i in 0..n {
+        let mut refs = format!(r#"<connection refLocalId="{}"/>"#, i + 1);
+        if i >= 1 {
+            refs.push_str(&format!(r#"<connection refLocalId="{i}"/>"#));
+        }
+        el.push(format!(r#"<contact localId="{}" negated="true"><position x="{i}" y="0"/><connectionPointIn>{refs}</connectionPointIn><connectionPointOut/><variable>b</variable></contact>"#, i + 2));
+    }
+    el.push(format!(r#"<coil localId="{}" negated="false"><position x="{n}" y="0"/><connectionPointIn><connection refLocalId="{}"/></connectionPointIn><connectionPointOut/><variable>b</variable></coil>"#, n + 2, n + 1));
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "lattice.xml",
+        &project(&format!("<LD>{}</LD>", el.join("\n"))),
+    );
+    // b is FALSE, every negated contact passes power: the coil sets b
+    let out = run(&["run", "--cycles", "1", "--watch", "main.b"], &[&src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert!(trace.lines().any(|l| l.ends_with(",1")), "{trace}");
+}
+
 // ------------------------------------------------------------------------------ 2. characters
 
 #[test]
