@@ -158,6 +158,26 @@ fn a_lattice_of_contacts_each_fed_by_the_two_before_lowers_in_linear_time_and_ru
     assert!(trace.lines().any(|l| l.ends_with(",1")), "{trace}");
 }
 
+#[test]
+fn an_fbd_expression_of_indexes_nested_100000_deep_is_a_diagnostic() {
+    // `x[x[x[...]]]` in an FBD `<expression>`: the reader of variable accesses recursed per `[` and
+    // overflowed the stack at 5,000 levels.
+    let n = 100_000;
+    let body = format!(
+        r#"<FBD><inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>{}1{}</expression></inVariable>
+<outVariable localId="2"><position x="1" y="0"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><expression>a</expression></outVariable></FBD>"#,
+        "a[".repeat(n),
+        "]".repeat(n)
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(dir.path(), "index.xml", &project(&body));
+    let out = run(&["--message-format", "short", "check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("error[E3011]"), "{}", stderr(&out));
+    // the message quotes the expression: clipped to 1,000 characters
+    assert!(stderr(&out).len() < 10_000, "{} bytes", stderr(&out).len());
+}
+
 // ------------------------------------------------------------------------------ 2. characters
 
 #[test]
