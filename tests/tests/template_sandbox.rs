@@ -122,6 +122,36 @@ fn hostile_templates_are_refused_in_their_file_and_no_c_is_written() {
     for (local, body, code) in attacks {
         assert_refused_in_template(&template(local, body), code);
     }
+    // A block named like a macro of the C headers: the IL method defines `void NAN(void)`.
+    for name in ["NAN", "EOF", "INFINITY", "FILE"] {
+        let text =
+            template(ok_local, "tmp = Pos; Dn = (uint8_t)(tmp > 0.0);").replace("ACME_Demo", name);
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(
+            dir.path().join("main.il"),
+            PROGRAM.replace("ACME_Demo", name),
+        )
+        .unwrap();
+        std::fs::create_dir(dir.path().join("tpl")).unwrap();
+        std::fs::write(dir.path().join(format!("tpl/{name}.xml")), text).unwrap();
+        let out = ladderc()
+            .args([
+                "--message-format",
+                "short",
+                "build",
+                "--strategy",
+                "il",
+                "-o",
+                "out",
+            ])
+            .args(["--templates", "tpl", "main.il"])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{name}: {err}");
+        assert!(err.contains("error[E4207]"), "{name}: {err}");
+    }
 }
 
 fn trace(dir: &Path, args: &[&str]) -> String {

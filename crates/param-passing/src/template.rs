@@ -377,6 +377,9 @@ fn block_name_problem(name: &str) -> Option<&'static str> {
                 .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
     }) {
         Some("a name that no motion-library symbol has (the C function would clash with it)")
+    } else if C_HEADER_MACROS.contains(&name) || matches!(name, "NULL" | "FILE") {
+        // `void NAN(void)` would be expanded by the preprocessor
+        Some("a name that is no macro or type of the C headers (`NAN`, `EOF`, `FILE` ...)")
     } else {
         None
     }
