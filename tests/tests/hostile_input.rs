@@ -178,6 +178,40 @@ fn an_fbd_expression_of_indexes_nested_100000_deep_is_a_diagnostic() {
     assert!(stderr(&out).len() < 10_000, "{} bytes", stderr(&out).len());
 }
 
+#[test]
+fn a_loop_of_20000_blocks_is_one_bounded_e3010() {
+    // The loop's E3010 labelled every block: 4.8 MB of human output for 20,000 (24 MB for 100,000).
+    let n = 20_000;
+    let mut el = vec![r#"<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>a</expression></inVariable>"#.to_string()];
+    for k in 0..n {
+        let src = if k == 0 { n + 1 } else { k + 1 };
+        el.push(format!(r#"<block localId="{}" typeName="ADD"><position x="0" y="0"/><inputVariables><variable formalParameter="IN1"><connectionPointIn><connection refLocalId="{src}" formalParameter="OUT"/></connectionPointIn></variable><variable formalParameter="IN2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#, k + 2));
+    }
+    el.push(format!(r#"<outVariable localId="{}"><position x="1" y="0"/><connectionPointIn><connection refLocalId="{}" formalParameter="OUT"/></connectionPointIn><expression>a</expression></outVariable>"#, n + 2, n + 1));
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "loop.xml",
+        &project(&format!("<FBD>{}</FBD>", el.join("\n"))),
+    );
+    for format in ["human", "json"] {
+        let out = run(&["--message-format", format, "check"], &[&src]);
+        assert_eq!(out.status.code(), Some(1), "{format}");
+        let err = stderr(&out);
+        assert!(
+            err.contains("E3010"),
+            "{format}: {}",
+            &err[..err.len().min(2000)]
+        );
+        assert!(
+            err.contains("at most 64 labels"),
+            "{format}: {}",
+            &err[..err.len().min(2000)]
+        );
+        assert!(err.len() < 100_000, "{format}: {} bytes", err.len());
+    }
+}
+
 // ------------------------------------------------------------------------------ 2. characters
 
 #[test]

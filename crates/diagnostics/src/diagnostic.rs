@@ -94,6 +94,13 @@ impl Diagnostic {
     }
     /// With a secondary location.
     pub fn with_label(mut self, span: Span, message: impl Into<String>) -> Self {
+        if self.labels.len() >= MAX_LABELS {
+            // a loop of 20,000 blocks labelled each one: 4.8 MB for one diagnostic
+            if !self.notes.iter().any(|n| n == LABELS_LEFT_OUT) {
+                self.notes.push(LABELS_LEFT_OUT.to_string());
+            }
+            return self;
+        }
         self.labels.push(Label {
             span,
             message: clip(message.into()),
@@ -116,6 +123,11 @@ impl Diagnostic {
         self
     }
 }
+
+/// The most secondary labels of one diagnostic; further ones are left out and a note says so.
+pub const MAX_LABELS: usize = 64;
+
+const LABELS_LEFT_OUT: &str = "further places are left out (at most 64 labels per diagnostic)";
 
 /// The most characters of a message, label, hint or note; longer text (a message that quotes a
 /// 300 KB `<expression>`) is cut there and ends with `…`, so one diagnostic stays a few kilobytes.
