@@ -241,6 +241,25 @@ fn an_sfc_of_30000_steps_in_a_loop_is_lowered_in_linear_time() {
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
 }
 
+#[test]
+fn an_enumeration_of_100000_values_is_checked_in_linear_time() {
+    // Each value was compared with every earlier one (duplicate check): minutes for 100,000.
+    let values: Vec<String> = (0..100_000).map(|k| format!("e{k}")).collect();
+    let src = format!(
+        "TYPE E : ({}, E5); END_TYPE\nPROGRAM p\nVAR a : INT; x : E; END_VAR\na := 1;\nEND_PROGRAM\n",
+        values.join(", ")
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "enum.st", &src);
+    let out = run(&["--message-format", "short", "check"], &[&path]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("error[E1002]: enumerated value `E5` is declared twice"),
+        "{}",
+        stderr(&out)
+    );
+}
+
 // ------------------------------------------------------------------------------ 2. characters
 
 #[test]
