@@ -131,6 +131,135 @@ fn a_rung_of_3000_contacts_in_series_is_e3200() {
     assert!(stderr(&out).contains("error[E3200]"), "{}", stderr(&out));
 }
 
+#[test]
+fn a_lattice_of_contacts_each_fed_by_the_two_before_lowers_in_linear_time_and_runs() {
+    // Contact k is fed by contacts k-1 and k-2 (a wired OR): the lowering walked every shared value
+    // again from each reader, Fibonacci(k) walks; 60 contacts ran for minutes.
+    let n = 300;
+    let mut el = vec![r#"<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>"#.to_string()];
+    for i in 0..n {
+        let mut refs = format!(r#"<connection refLocalId="{}"/>"#, i + 1);
+        if i >= 1 {
+            refs.push_str(&format!(r#"<connection refLocalId="{i}"/>"#));
+        }
+        el.push(format!(r#"<contact localId="{}" negated="true"><position x="{i}" y="0"/><connectionPointIn>{refs}</connectionPointIn><connectionPointOut/><variable>b</variable></contact>"#, i + 2));
+    }
+    el.push(format!(r#"<coil localId="{}" negated="false"><position x="{n}" y="0"/><connectionPointIn><connection refLocalId="{}"/></connectionPointIn><connectionPointOut/><variable>b</variable></coil>"#, n + 2, n + 1));
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "lattice.xml",
+        &project(&format!("<LD>{}</LD>", el.join("\n"))),
+    );
+    // b is FALSE, every negated contact passes power: the coil sets b
+    let out = run(&["run", "--cycles", "1", "--watch", "main.b"], &[&src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert!(trace.lines().any(|l| l.ends_with(",1")), "{trace}");
+}
+
+#[test]
+fn an_fbd_expression_of_indexes_nested_100000_deep_is_a_diagnostic() {
+    // `x[x[x[...]]]` in an FBD `<expression>`: the reader of variable accesses recursed per `[` and
+    // overflowed the stack at 5,000 levels.
+    let n = 100_000;
+    let body = format!(
+        r#"<FBD><inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>{}1{}</expression></inVariable>
+<outVariable localId="2"><position x="1" y="0"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><expression>a</expression></outVariable></FBD>"#,
+        "a[".repeat(n),
+        "]".repeat(n)
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(dir.path(), "index.xml", &project(&body));
+    let out = run(&["--message-format", "short", "check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("error[E3011]"), "{}", stderr(&out));
+    // the message quotes the expression: clipped to 1,000 characters
+    assert!(stderr(&out).len() < 10_000, "{} bytes", stderr(&out).len());
+}
+
+#[test]
+fn a_loop_of_20000_blocks_is_one_bounded_e3010() {
+    // The loop's E3010 labelled every block: 4.8 MB of human output for 20,000 (24 MB for 100,000).
+    let n = 20_000;
+    let mut el = vec![r#"<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>a</expression></inVariable>"#.to_string()];
+    for k in 0..n {
+        let src = if k == 0 { n + 1 } else { k + 1 };
+        el.push(format!(r#"<block localId="{}" typeName="ADD"><position x="0" y="0"/><inputVariables><variable formalParameter="IN1"><connectionPointIn><connection refLocalId="{src}" formalParameter="OUT"/></connectionPointIn></variable><variable formalParameter="IN2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#, k + 2));
+    }
+    el.push(format!(r#"<outVariable localId="{}"><position x="1" y="0"/><connectionPointIn><connection refLocalId="{}" formalParameter="OUT"/></connectionPointIn><expression>a</expression></outVariable>"#, n + 2, n + 1));
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "loop.xml",
+        &project(&format!("<FBD>{}</FBD>", el.join("\n"))),
+    );
+    for format in ["human", "json"] {
+        let out = run(&["--message-format", format, "check"], &[&src]);
+        assert_eq!(out.status.code(), Some(1), "{format}");
+        let err = stderr(&out);
+        assert!(
+            err.contains("E3010"),
+            "{format}: {}",
+            &err[..err.len().min(2000)]
+        );
+        assert!(
+            err.contains("at most 64 labels"),
+            "{format}: {}",
+            &err[..err.len().min(2000)]
+        );
+        assert!(err.len() < 100_000, "{format}: {} bytes", err.len());
+    }
+}
+
+#[test]
+fn an_sfc_of_30000_steps_in_a_loop_is_lowered_in_linear_time() {
+    // Each transition looked at every earlier one for a shared step, and each step at every
+    // transition: 50,000 steps took minutes. Now one pass each.
+    let n = 30_000;
+    let cond = r#"<condition><inline name=""><ST><xhtml:p><![CDATA[b]]></xhtml:p></ST></inline></condition>"#;
+    let mut els = vec![
+        r#"<step localId="1" name="S0" initialStep="true"><connectionPointOut/></step>"#
+            .to_string(),
+    ];
+    let (mut id, mut prev) = (2, 1);
+    for k in 1..n {
+        els.push(format!(r#"<transition localId="{id}"><connectionPointIn><connection refLocalId="{prev}"/></connectionPointIn>{cond}</transition>"#));
+        els.push(format!(r#"<step localId="{}" name="S{k}"><connectionPointIn><connection refLocalId="{id}"/></connectionPointIn><connectionPointOut/></step>"#, id + 1));
+        prev = id + 1;
+        id += 2;
+    }
+    els.push(format!(r#"<transition localId="{id}"><connectionPointIn><connection refLocalId="{prev}"/></connectionPointIn>{cond}</transition>"#));
+    els.push(format!(r#"<jumpStep localId="{}" targetName="S0"><connectionPointIn><connection refLocalId="{id}"/></connectionPointIn></jumpStep>"#, id + 1));
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "steps.xml",
+        &project(&format!("<SFC>{}</SFC>", els.join("\n"))),
+    );
+    let out = run(&["--message-format", "short", "check"], &[&src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+}
+
+#[test]
+fn an_enumeration_of_100000_values_is_checked_in_linear_time() {
+    // Each value was compared with every earlier one (duplicate check): minutes for 100,000.
+    let values: Vec<String> = (0..100_000).map(|k| format!("e{k}")).collect();
+    let src = format!(
+        "TYPE E : ({}, E5); END_TYPE\nPROGRAM p\nVAR a : INT; x : E; END_VAR\na := 1;\nEND_PROGRAM\n",
+        values.join(", ")
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "enum.st", &src);
+    let out = run(&["--message-format", "short", "check"], &[&path]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("error[E1002]: enumerated value `E5` is declared twice"),
+        "{}",
+        stderr(&out)
+    );
+}
+
 // ------------------------------------------------------------------------------ 2. characters
 
 #[test]
@@ -211,6 +340,30 @@ fn every_span_of_every_front_end_lies_on_character_boundaries() {
 }
 
 #[test]
+fn json_byte_offsets_count_a_byte_order_mark_of_the_file() {
+    // The BOM is dropped from the text (line and column count from the character after it), but
+    // `byte_start`/`byte_end` are offsets into the file: they were 3 short.
+    let dir = tempfile::tempdir().unwrap();
+    let il = "\u{feff}PROGRAM p\nVAR a : INT; END_VAR\nLD zz\nEND_PROGRAM\n";
+    let xml = format!("\u{feff}{}", st("a := zz;"));
+    for (name, text) in [("bom.il", il.to_string()), ("bom.xml", xml)] {
+        let src = write(dir.path(), name, &text);
+        let out = run(&["--message-format", "json", "check"], &[&src]);
+        let err = stderr(&out);
+        let v: serde_json::Value = serde_json::from_str(err.lines().next().unwrap()).unwrap();
+        assert_eq!(v["code"], "E1001", "{err}");
+        let start = v["byte_start"].as_u64().unwrap() as usize;
+        assert_eq!(&text.as_bytes()[start..start + 2], b"zz", "{name}: {err}");
+        let line = text
+            .lines()
+            .nth(v["line"].as_u64().unwrap() as usize - 1)
+            .unwrap();
+        let col = v["column"].as_u64().unwrap() as usize;
+        assert_eq!(line.chars().nth(col - 1), Some('z'), "{name}: {err}");
+    }
+}
+
+#[test]
 fn an_unterminated_pragma_before_a_multibyte_character_ends_on_a_boundary() {
     let dir = tempfile::tempdir().unwrap();
     let src = write(dir.path(), "p.xml", &st("a := 1; {€"));
@@ -268,15 +421,90 @@ fn many_errors_show_the_first_fifty_per_file_and_count_the_rest() {
         json.lines()
             .filter(|l| l.contains("\"kind\":\"diagnostic\""))
             .count(),
-        5000,
-        "JSON shows every diagnostic"
+        1000,
+        "JSON shows the first 1,000 diagnostics per file"
     );
+    let summary = json.lines().last().unwrap_or("");
     assert!(
-        json.lines()
-            .last()
-            .unwrap_or("")
-            .contains("\"kind\":\"summary\""),
-        "then the summary record"
+        summary.contains("\"kind\":\"summary\"") && summary.contains("\"errors\":5000"),
+        "then the summary record, which counts them all: {summary}"
+    );
+    let out = run(
+        &[
+            "--message-format",
+            "json",
+            "--max-diagnostics",
+            "0",
+            "check",
+        ],
+        &[&src],
+    );
+    assert_eq!(
+        stderr(&out)
+            .lines()
+            .filter(|l| l.contains("\"kind\":\"diagnostic\""))
+            .count(),
+        5000,
+        "--max-diagnostics 0 shows every diagnostic in JSON too"
+    );
+}
+
+#[test]
+fn json_output_of_100000_errors_on_long_lines_stays_bounded() {
+    // 100,000 conditional jumps on an INT (E1023 each), every line padded with a wide comment: JSON
+    // lines printed every diagnostic, 38 MB for 2.8 MB of IL; the short and human formats cap at 50.
+    let dir = tempfile::tempdir().unwrap();
+    let n = 100_000;
+    let mut il = String::from("PROGRAM p\nVAR a : INT; END_VAR\n");
+    for k in 0..n {
+        il.push_str(&format!("L{k}: LD a\nJMPC L{} (* ü€ *)\n", (k * 7919) % n));
+    }
+    il.push_str("END_PROGRAM\n");
+    let src = write(dir.path(), "jumps.il", &il);
+    for format in ["human", "short", "json"] {
+        let out = run(&["--message-format", format, "check"], &[&src]);
+        assert_eq!(out.status.code(), Some(1), "{format}");
+        let err = stderr(&out);
+        assert!(
+            err.contains("E1023"),
+            "{format}: {}",
+            &err[..err.len().min(2000)]
+        );
+        assert!(
+            err.len() < 1_000_000,
+            "{format}: {} bytes of diagnostics",
+            err.len()
+        );
+    }
+}
+
+#[test]
+fn an_operand_list_of_100000_is_e1020_and_one_of_1000_inputs_runs() {
+    // `ADD a, a, ...`: the C folds the inputs into one expression nested as deep as the list; 100,000
+    // operands took minutes (quadratic) in `check` before the cap.
+    let dir = tempfile::tempdir().unwrap();
+    let list = |n: usize| {
+        format!(
+            "PROGRAM p\nVAR a : DINT := 1; END_VAR\nLD a\nADD {}\nST a\nEND_PROGRAM\n",
+            vec!["a"; n].join(", ")
+        )
+    };
+    let src = write(dir.path(), "long.il", &list(100_000));
+    let out = run(&["--message-format", "short", "check"], &[&src]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("error[E1020]: ADD takes at most 1000 inputs, 100001 given"),
+        "{}",
+        stderr(&out)
+    );
+    // at the cap: the current result and 999 operands, 1 + 999 = 1000
+    let src = write(dir.path(), "cap.il", &list(999));
+    let out = run(&["run", "--cycles", "1", "--watch", "p.a"], &[&src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(
+        String::from_utf8_lossy(&out.stdout).contains(",1000"),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
     );
 }
 

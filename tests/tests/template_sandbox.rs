@@ -85,11 +85,72 @@ fn hostile_templates_are_refused_in_their_file_and_no_c_is_written() {
         (ok_local, "tmp = 0.0; system(\"id\");", "E4007"),
         (ok_local, "tmp = 0.0; ((void (*)(void))0)();", "E4208"),
         (ok_local, "tmp = 0.0; static int n; (void)n;", "E4010"),
+        // Macros of the C headers as names: `isnan` as a local let the body call the macro `isnan(x)`.
+        (
+            r#"<local name="isnan" ctype="double"/>"#,
+            "isnan = Pos; Dn = (uint8_t)isnan(isnan);",
+            "E4206",
+        ),
+        (
+            ok_local,
+            "double signbit = Pos; tmp = signbit; Dn = (uint8_t)signbit(tmp);",
+            "E4206",
+        ),
+        // A 4 GB array on the scan's stack; brackets nested 100,000 deep (gcc ran for minutes).
+        (
+            ok_local,
+            "double big[536870912]; big[0] = Pos; tmp = big[0];",
+            "E4208",
+        ),
+        (
+            ok_local,
+            "double big[64][64][2]; big[0][0][0] = Pos; tmp = big[0][0][0];",
+            "E4208",
+        ),
+        (
+            ok_local,
+            &format!(
+                "tmp = 0.0; {}Dn = 1;{}",
+                "{".repeat(100_000),
+                "}".repeat(100_000)
+            ),
+            "E4008",
+        ),
         // A C error is the template's, not the user's build's.
         (ok_local, "tmp = Pos +;", "E4210"),
     ];
     for (local, body, code) in attacks {
         assert_refused_in_template(&template(local, body), code);
+    }
+    // A block named like a macro of the C headers: the IL method defines `void NAN(void)`.
+    for name in ["NAN", "EOF", "INFINITY", "FILE"] {
+        let text =
+            template(ok_local, "tmp = Pos; Dn = (uint8_t)(tmp > 0.0);").replace("ACME_Demo", name);
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(
+            dir.path().join("main.il"),
+            PROGRAM.replace("ACME_Demo", name),
+        )
+        .unwrap();
+        std::fs::create_dir(dir.path().join("tpl")).unwrap();
+        std::fs::write(dir.path().join(format!("tpl/{name}.xml")), text).unwrap();
+        let out = ladderc()
+            .args([
+                "--message-format",
+                "short",
+                "build",
+                "--strategy",
+                "il",
+                "-o",
+                "out",
+            ])
+            .args(["--templates", "tpl", "main.il"])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{name}: {err}");
+        assert!(err.contains("error[E4207]"), "{name}: {err}");
     }
 }
 

@@ -73,7 +73,7 @@ impl Diagnostic {
         Diagnostic {
             code,
             severity,
-            message: message.into(),
+            message: clip(message.into()),
             span: None,
             primary_label: String::new(),
             labels: Vec::new(),
@@ -94,20 +94,27 @@ impl Diagnostic {
     }
     /// With a secondary location.
     pub fn with_label(mut self, span: Span, message: impl Into<String>) -> Self {
+        if self.labels.len() >= MAX_LABELS {
+            // a loop of 20,000 blocks labelled each one: 4.8 MB for one diagnostic
+            if !self.notes.iter().any(|n| n == LABELS_LEFT_OUT) {
+                self.notes.push(LABELS_LEFT_OUT.to_string());
+            }
+            return self;
+        }
         self.labels.push(Label {
             span,
-            message: message.into(),
+            message: clip(message.into()),
         });
         self
     }
     /// With the hint.
     pub fn with_hint(mut self, hint: impl Into<String>) -> Self {
-        self.hint = Some(hint.into());
+        self.hint = Some(clip(hint.into()));
         self
     }
     /// With one more note.
     pub fn with_note(mut self, note: impl Into<String>) -> Self {
-        self.notes.push(note.into());
+        self.notes.push(clip(note.into()));
         self
     }
     /// With its PLCopen XML context.
@@ -115,4 +122,21 @@ impl Diagnostic {
         self.xml = Some(xml);
         self
     }
+}
+
+/// The most secondary labels of one diagnostic; further ones are left out and a note says so.
+pub const MAX_LABELS: usize = 64;
+
+const LABELS_LEFT_OUT: &str = "further places are left out (at most 64 labels per diagnostic)";
+
+/// The most characters of a message, label, hint or note; longer text (a message that quotes a
+/// 300 KB `<expression>`) is cut there and ends with `…`, so one diagnostic stays a few kilobytes.
+pub const MAX_TEXT_CHARS: usize = 1000;
+
+fn clip(mut s: String) -> String {
+    if let Some((cut, _)) = s.char_indices().nth(MAX_TEXT_CHARS) {
+        s.truncate(cut);
+        s.push('…');
+    }
+    s
 }

@@ -20,7 +20,7 @@ mod span;
 pub use codes::{all as all_codes, explain, lookup, Code, CodeInfo};
 pub use diagnostic::{Diagnostic, Label, Severity, XmlContext};
 pub use render::{
-    hint_of, max_per_file, render, render_human, render_json_line, render_short,
+    hint_of, max_per_file, max_per_file_json, render, render_human, render_json_line, render_short,
     render_summary_json, set_max_per_file, MessageFormat, RunSummary, Summary,
     DEFAULT_MAX_PER_FILE, JSON_SCHEMA,
 };

@@ -46,16 +46,29 @@ fn xml_context_text(d: &Diagnostic) -> Option<String> {
 /// counted in one line. Change it with [`set_max_per_file`] (`ladderc --max-diagnostics N`).
 pub const DEFAULT_MAX_PER_FILE: usize = 50;
 
-static MAX_PER_FILE: AtomicUsize = AtomicUsize::new(DEFAULT_MAX_PER_FILE);
+/// How many diagnostics per file JSON lines shows by default (the summary record's `errors` and
+/// `warnings` count them all). 1,000 records of a few hundred bytes keep the output of any input to
+/// a few hundred kilobytes per file; [`set_max_per_file`] changes it too.
+pub const DEFAULT_MAX_PER_FILE_JSON: usize = 1000;
 
-/// Sets how many diagnostics per file the human and short renderings show (0: no limit).
+static MAX_PER_FILE: AtomicUsize = AtomicUsize::new(DEFAULT_MAX_PER_FILE);
+static MAX_PER_FILE_JSON: AtomicUsize = AtomicUsize::new(DEFAULT_MAX_PER_FILE_JSON);
+
+/// Sets how many diagnostics per file every rendering shows (0: no limit).
 pub fn set_max_per_file(n: usize) {
-    MAX_PER_FILE.store(if n == 0 { usize::MAX } else { n }, Ordering::Relaxed);
+    let n = if n == 0 { usize::MAX } else { n };
+    MAX_PER_FILE.store(n, Ordering::Relaxed);
+    MAX_PER_FILE_JSON.store(n, Ordering::Relaxed);
 }
 
 /// The current per-file limit of the human and short renderings.
 pub fn max_per_file() -> usize {
     MAX_PER_FILE.load(Ordering::Relaxed)
+}
+
+/// The current per-file limit of JSON lines.
+pub fn max_per_file_json() -> usize {
+    MAX_PER_FILE_JSON.load(Ordering::Relaxed)
 }
 
 /// Characters of a long source line shown before the first label on it.
@@ -256,8 +269,11 @@ impl Excerpts {
 
 /// The diagnostics to show (at most [`max_per_file`] per file of their primary span, in order) and,
 /// per file, how many were left out.
-fn limited<'d>(map: &SourceMap, diags: &'d [Diagnostic]) -> (Vec<&'d Diagnostic>, Vec<String>) {
-    let max = max_per_file();
+fn limited<'d>(
+    map: &SourceMap,
+    diags: &'d [Diagnostic],
+    max: usize,
+) -> (Vec<&'d Diagnostic>, Vec<String>) {
     let mut shown: Vec<usize> = Vec::new();
     let mut left: Vec<usize> = Vec::new();
     let mut keep = Vec::new();
@@ -296,7 +312,7 @@ fn limited<'d>(map: &SourceMap, diags: &'d [Diagnostic]) -> (Vec<&'d Diagnostic>
 pub fn render_human(map: &SourceMap, diags: &[Diagnostic]) -> String {
     let config = term::Config::default();
     let mut out = String::new();
-    let (keep, tail) = limited(map, diags);
+    let (keep, tail) = limited(map, diags, max_per_file());
     for d in keep {
         // every span of the diagnostic, primary first, grouped by file into excerpts
         let mut spans: Vec<(crate::Span, bool, &str)> = Vec::new();
@@ -450,8 +466,8 @@ fn json_label<'a>(map: &'a SourceMap, span: crate::Span, message: &'a str) -> Js
         column,
         end_line,
         end_column,
-        byte_start: span.start,
-        byte_end: span.end,
+        byte_start: span.start.saturating_add(f.byte_base),
+        byte_end: span.end.saturating_add(f.byte_base),
         message,
     }
 }
@@ -489,12 +505,13 @@ pub fn render_json_line(map: &SourceMap, d: &Diagnostic) -> String {
 
 /// Renders a list in the chosen format; every format ends each diagnostic with a newline. Human and
 /// short show at most [`max_per_file`] diagnostics per file (then one line counting the rest); JSON
-/// lines, for tools, shows them all.
+/// lines at most [`max_per_file_json`] (a JSON stream has no room for the counting line: the summary
+/// record counts them all).
 pub fn render(map: &SourceMap, diags: &[Diagnostic], format: MessageFormat) -> String {
     match format {
         MessageFormat::Human => render_human(map, diags),
         MessageFormat::Short => {
-            let (keep, tail) = limited(map, diags);
+            let (keep, tail) = limited(map, diags, max_per_file());
             let mut out: String = keep.iter().map(|d| render_short(map, d) + "\n").collect();
             for t in tail {
                 out.push_str(&t);
@@ -502,8 +519,9 @@ pub fn render(map: &SourceMap, diags: &[Diagnostic], format: MessageFormat) -> S
             }
             out
         }
-        MessageFormat::Json => diags
-            .iter()
+        MessageFormat::Json => limited(map, diags, max_per_file_json())
+            .0
+            .into_iter()
             .map(|d| render_json_line(map, d) + "\n")
             .collect(),
     }

@@ -9,6 +9,10 @@ pub struct SourceFile {
     pub name: String,
     /// The text.
     pub text: String,
+    /// Bytes of the file on disk before `text`: 3 when a UTF-8 byte-order mark was dropped
+    /// ([`SourceMap::add_file`]), else 0. Spans count in `text`; JSON's `byte_start`/`byte_end` add it, so
+    /// that they are offsets into the file.
+    pub byte_base: u32,
     line_starts: Vec<usize>,
 }
 
@@ -21,6 +25,7 @@ impl SourceFile {
         SourceFile {
             name: name.into(),
             text,
+            byte_base: 0,
             line_starts,
         }
     }
@@ -76,6 +81,18 @@ impl SourceMap {
     /// Adds a file; its id.
     pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
         self.files.push(SourceFile::new(name, text));
+        FileId(self.files.len() as u32 - 1)
+    }
+    /// Adds a file as read from disk: a leading UTF-8 byte-order mark is dropped from the text (positions
+    /// count from the character after it) and kept in [`SourceFile::byte_base`]; its id.
+    pub fn add_file(&mut self, name: impl Into<String>, text: &str) -> FileId {
+        let (text, base) = match text.strip_prefix('\u{feff}') {
+            Some(rest) => (rest, '\u{feff}'.len_utf8() as u32),
+            None => (text, 0),
+        };
+        let mut f = SourceFile::new(name, text);
+        f.byte_base = base;
+        self.files.push(f);
         FileId(self.files.len() as u32 - 1)
     }
     /// The file `id` (which this map gave out).

@@ -1724,11 +1724,17 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     }
 
     /// Stores the shared sub-values of `v` (used more than once) into temporaries, innermost first.
+    /// Walks each value once: a child already in a temporary is not walked again (walking it again
+    /// made a lattice of contacts, each fed by the two before it, cost time exponential in its length).
     fn prepare(&mut self, v: ValId, out: &mut Vec<IlStmt>) {
         for c in self.children(v) {
-            self.prepare(c, out);
+            if self.temps[c].is_some() {
+                continue;
+            }
             if self.uses[c] > 1 && !self.is_trivial(c) {
                 self.materialise(c, out);
+            } else {
+                self.prepare(c, out);
             }
         }
     }

@@ -43,9 +43,26 @@ pub fn is_ident(s: &str) -> bool {
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
-/// `a`, `a.b`, `a[1, i].c` (indexes are operands themselves).
+/// The deepest nesting of `[` in an access that is read (`None` beyond, so E3011): indexes are read
+/// recursively, and `x[x[x[...]]]` 5,000 deep overflowed the stack.
+pub const MAX_INDEX_DEPTH: usize = 64;
+
+/// `a`, `a.b`, `a[1, i].c` (indexes are operands themselves, nested at most [`MAX_INDEX_DEPTH`] deep).
 pub fn var_ref(t: &str, span: Span) -> Option<VarRef> {
     let t = t.trim();
+    let mut depth = 0usize;
+    for c in t.bytes() {
+        match c {
+            b'[' => {
+                depth += 1;
+                if depth > MAX_INDEX_DEPTH {
+                    return None;
+                }
+            }
+            b']' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
     let end = t
         .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
         .unwrap_or(t.len());

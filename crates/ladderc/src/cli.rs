@@ -24,9 +24,10 @@ pub struct Cli {
     /// How diagnostics are printed on stderr.
     #[arg(long, value_enum, default_value_t = Format::Human, global = true)]
     pub message_format: Format,
-    /// At most N diagnostics per file in the human and short formats (0: all); JSON shows all.
-    #[arg(long, value_name = "N", default_value_t = diagnostics::DEFAULT_MAX_PER_FILE, global = true)]
-    pub max_diagnostics: usize,
+    /// At most N diagnostics per file (0: all); by default 50 in the human and short formats, 1000 in
+    /// JSON lines (whose summary record counts them all).
+    #[arg(long, value_name = "N", global = true)]
+    pub max_diagnostics: Option<usize>,
     /// The command.
     #[command(subcommand)]
     pub command: Command,
@@ -307,7 +308,9 @@ pub fn main() -> i32 {
         Ok(c) => c,
         Err(e) => return usage_error(&e, requested_format(std::env::args_os())),
     };
-    diagnostics::set_max_per_file(cli.max_diagnostics);
+    if let Some(n) = cli.max_diagnostics {
+        diagnostics::set_max_per_file(n);
+    }
     let format = cli.message_format;
     let pipeline_command = matches!(
         cli.command,

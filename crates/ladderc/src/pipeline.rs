@@ -283,20 +283,18 @@ impl Session {
                     continue;
                 }
             };
-            // A UTF-8 byte-order mark is dropped: positions count from the first character after it.
-            let text = match text.strip_prefix('\u{feff}') {
-                Some(rest) => rest.to_string(),
-                None => text,
-            };
+            // A UTF-8 byte-order mark is dropped: positions count from the first character after it
+            // (JSON's byte offsets add it back: `SourceMap::add_file`).
+            let text_after_bom = text.strip_prefix('\u{feff}').unwrap_or(&text);
             let (file_lang, detected) = if stdin {
                 (
-                    lang.unwrap_or_else(|| il_frontend::st::file::detect(&text)),
+                    lang.unwrap_or_else(|| il_frontend::st::file::detect(text_after_bom)),
                     lang.is_none(),
                 )
             } else {
-                input_lang(p, &text, lang)
+                input_lang(p, text_after_bom, lang)
             };
-            let file = self.map.add(shown, text);
+            let file = self.map.add_file(shown, &text);
             // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
             let src = &self.map.get(file).text;
             if detected {

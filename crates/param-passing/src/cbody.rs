@@ -30,6 +30,38 @@ pub enum Tok {
     Punct(u8),
 }
 
+/// The deepest nesting of `(`, `[` and `{` a body may have (E4008 beyond; C99's translation limit for
+/// parentheses is 63).
+pub const MAX_BRACKET_DEPTH: usize = 63;
+
+/// The most elements an array a body declares may have, all dimensions together (E4208 beyond).
+pub const MAX_LOCAL_ARRAY: u64 = 4096;
+
+/// Whether `toks`, starting at the `[` after a declared name, are `[N]` groups of decimal sizes whose
+/// product is at most [`MAX_LOCAL_ARRAY`].
+fn array_size_ok(toks: &[Token], text: &str) -> bool {
+    let mut product: u64 = 1;
+    let mut k = 0;
+    while toks.get(k).is_some_and(|t| t.kind == Tok::Punct(b'[')) {
+        let (Some(n), Some(close)) = (toks.get(k + 1), toks.get(k + 2)) else {
+            return false;
+        };
+        if n.kind != Tok::Number || close.kind != Tok::Punct(b']') {
+            return false;
+        }
+        let digits = text[n.start..n.end].trim_end_matches(['u', 'U', 'l', 'L']);
+        let Ok(size) = digits.parse::<u64>() else {
+            return false;
+        };
+        product = product.saturating_mul(size);
+        if product > MAX_LOCAL_ARRAY {
+            return false;
+        }
+        k += 3;
+    }
+    true
+}
+
 /// A token of a template body: its kind and byte range.
 #[derive(Debug, Clone, Copy)]
 pub struct Token {
@@ -293,11 +325,24 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
             }
         }
     }
-    // Delimiter balance.
+    // Delimiter balance, and depth: C compilers recurse per level (100,000 `{` kept gcc busy for
+    // minutes in the load-time check).
     let mut stack: Vec<(u8, usize, usize)> = Vec::new();
     for t in &toks {
         if let Tok::Punct(p) = t.kind {
             match p {
+                b'(' | b'[' | b'{' if stack.len() >= MAX_BRACKET_DEPTH => {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E4008,
+                            format!("the body of template `{block}` nests brackets deeper than {MAX_BRACKET_DEPTH} levels"),
+                        )
+                        .at(at(t.start, t.end))
+                        .with_hint("C99 guarantees 63 levels of parentheses and 127 of blocks; keep the body flat"),
+                    );
+                    stack.clear();
+                    break;
+                }
                 b'(' | b'[' | b'{' => stack.push((p, t.start, t.end)),
                 b')' | b']' | b'}' => {
                     let want = match p {
@@ -407,6 +452,17 @@ pub fn check(body: &CText, scope: &Scope<'_>, block: &str, diags: &mut Diagnosti
                     .with_hint(
                         "a body is the statements of one function; it declares no functions",
                     ),
+                );
+            } else if toks.get(k + 1).is_some_and(|n| n.kind == Tok::Punct(b'['))
+                && !array_size_ok(&toks[k + 1..], text)
+            {
+                diags.push(
+                    Diagnostic::error(
+                        code::E4208,
+                        format!("the body of template `{block}` declares the array `{name}` larger than {MAX_LOCAL_ARRAY} elements or of no constant size"),
+                    )
+                    .at(at(t.start, t.end))
+                    .with_hint(format!("a body's arrays live on the stack of the scan: give each a decimal size, at most {MAX_LOCAL_ARRAY} elements in all")),
                 );
             } else if !is_abbreviation(name)
                 || is_reserved_name(name)

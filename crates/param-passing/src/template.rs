@@ -291,6 +291,35 @@ pub fn is_abbreviation(s: &str) -> bool {
         && s.bytes().all(|b| b.is_ascii_alphanumeric())
 }
 
+/// The macros without `_` that the C headers of the generated program define (`stdio.h`, `stdlib.h`,
+/// `stdint.h`, `stddef.h`, `string.h`, `math.h`, `stdarg.h`, `stdbool.h`; `gcc -dM -E`), and `errno` and
+/// `assert`. A local of such a name is expanded by the preprocessor: `isnan` as a local let the body call
+/// the function-like macro `isnan(x)`, outside the functions a body may call.
+pub const C_HEADER_MACROS: &[&str] = &[
+    "stdin",
+    "stdout",
+    "stderr",
+    "EOF",
+    "BUFSIZ",
+    "NAN",
+    "INFINITY",
+    "offsetof",
+    "isnan",
+    "isinf",
+    "isfinite",
+    "isnormal",
+    "signbit",
+    "fpclassify",
+    "isgreater",
+    "isgreaterequal",
+    "isless",
+    "islessequal",
+    "islessgreater",
+    "isunordered",
+    "errno",
+    "assert",
+];
+
 /// Names no abbreviation or local may take: C keywords, the head's `FuncNum`, the method's `self`, the
 /// names a body may use from C and the motion library.
 pub fn is_reserved_name(s: &str) -> bool {
@@ -299,6 +328,7 @@ pub fn is_reserved_name(s: &str) -> bool {
             s,
             "FuncNum" | "self" | "main" | "bool" | "true" | "false" | "NULL"
         )
+        || C_HEADER_MACROS.contains(&s)
         || crate::cbody::C_BASICS.contains(&s)
         || crate::library::runtime_symbol_set().contains(s)
 }
@@ -347,6 +377,9 @@ fn block_name_problem(name: &str) -> Option<&'static str> {
                 .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
     }) {
         Some("a name that no motion-library symbol has (the C function would clash with it)")
+    } else if C_HEADER_MACROS.contains(&name) || matches!(name, "NULL" | "FILE") {
+        // `void NAN(void)` would be expanded by the preprocessor
+        Some("a name that is no macro or type of the C headers (`NAN`, `EOF`, `FILE` ...)")
     } else {
         None
     }
@@ -812,18 +845,19 @@ fn load_array_shape(
     let low = match p.attr("low") {
         None => 0,
         Some(a) => match a.value.trim().parse::<i64>() {
-            Ok(l) if l.abs() <= i64::from(i32::MAX) => l,
+            // both bounds are DINTs, as IEC array bounds are
+            Ok(l) if l >= i64::from(i32::MIN) && l + i64::from(len) - 1 <= i64::from(i32::MAX) => l,
             _ => {
                 diags.push(
                     Diagnostic::error(
                         code::E4102,
                         format!(
-                            "array `{name}`: lower bound `{}` is not an integer",
+                            "array `{name}`: lower bound `{}` is not an integer whose bounds fit a DINT",
                             a.value
                         ),
                     )
                     .at(a.span)
-                    .with_hint("write low=\"0\" (the default) or another integer"),
+                    .with_hint("write low=\"0\" (the default) or another integer from -2147483648 to 2147483648 - length"),
                 );
                 return None;
             }

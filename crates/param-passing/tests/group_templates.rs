@@ -411,3 +411,54 @@ fn a_required_array_input_may_be_stored_into_the_instance_element_by_element() {
         "{out}"
     );
 }
+
+#[test]
+fn array_bounds_outside_dint_are_e4102_not_a_panic() {
+    // `low` = i64::MIN panicked in `abs()`; `low` = i32::MAX with 4 elements put the upper bound past DINT.
+    for (low, len) in [
+        ("-9223372036854775808", 6),
+        ("2147483647", 4),
+        ("-2147483649", 1),
+    ] {
+        let text = format!(
+            r#"<blockTemplate name="MC_LowDemo" funcNum="99">
+  <parameters>
+    <param name="AxesGroup" abbr="AxG" direction="inout" class="struct" type="AXES_GROUP_REF" required="true"/>
+    <param name="Offsets" abbr="Off" direction="input" class="array" element="lreal" type="LREAL" length="{len}" low="{low}"/>
+  </parameters>
+  <body><![CDATA[ (void)AxG; ]]></body>
+</blockTemplate>"#
+        );
+        let mut map = SourceMap::new();
+        let mut diags = Diagnostics::new();
+        let mut lib = Library::new();
+        lib.add_text(&mut map, "MC_LowDemo.xml", &text, &mut diags);
+        assert!(lib.get("MC_LowDemo").is_none(), "{low}: not loaded");
+        let out = short(&map, diags);
+        assert!(
+            out.contains("MC_LowDemo.xml:4:") && out.contains("E4102"),
+            "{low}:\n{out}"
+        );
+    }
+    // the extremes that fit are accepted
+    for (low, len) in [("-2147483648", 6), ("2147483642", 6)] {
+        let text = format!(
+            r#"<blockTemplate name="MC_LowDemo" funcNum="99">
+  <parameters>
+    <param name="AxesGroup" abbr="AxG" direction="inout" class="struct" type="AXES_GROUP_REF" required="true"/>
+    <param name="Offsets" abbr="Off" direction="input" class="array" element="lreal" type="LREAL" length="{len}" low="{low}"/>
+  </parameters>
+  <body><![CDATA[ (void)AxG; ]]></body>
+</blockTemplate>"#
+        );
+        let mut map = SourceMap::new();
+        let mut diags = Diagnostics::new();
+        let mut lib = Library::new();
+        lib.add_text(&mut map, "MC_LowDemo.xml", &text, &mut diags);
+        assert!(
+            lib.get("MC_LowDemo").is_some(),
+            "{low}: {}",
+            short(&map, diags)
+        );
+    }
+}

@@ -602,6 +602,22 @@ impl Body<'_, '_> {
             _ => {
                 let ins = self.collect_inputs(span, args, formal, st, f.name);
                 let n = f.params.len();
+                if f.extensible && ins.len() > stdlib::MAX_EXTENSIBLE_INPUTS {
+                    self.a
+                        .error(
+                            code::E1020,
+                            span,
+                            format!(
+                                "{} takes at most {} inputs, {} given",
+                                f.name,
+                                stdlib::MAX_EXTENSIBLE_INPUTS,
+                                ins.len()
+                            ),
+                        )
+                        .label("too many inputs")
+                        .hint("split the list: compute part of it, store it, and go on from there");
+                    return Ty::ERROR;
+                }
                 let bad = if f.extensible {
                     ins.len() < n
                 } else {

@@ -267,12 +267,10 @@ impl Analyzer<'_> {
     ) -> (Vec<(String, i128)>, usize) {
         let mut out: Vec<(String, i128)> = Vec::new();
         let mut next = 0i128;
+        // the names so far, upper-cased: searching `out` for each value made 100,000 values quadratic
+        let mut seen: std::collections::HashSet<String> = std::collections::HashSet::new();
         for v in values {
-            if let Some(prev) = out
-                .iter()
-                .position(|(n, _)| n.eq_ignore_ascii_case(&v.name.name))
-            {
-                let _ = prev;
+            if !seen.insert(v.name.name.to_ascii_uppercase()) {
                 self.error(
                     code::E1002,
                     v.name.span,

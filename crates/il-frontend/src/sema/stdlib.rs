@@ -101,6 +101,12 @@ pub struct Param {
     pub ty: ParamTy,
 }
 
+/// The most inputs one non-formal call of an extensible function (`ADD a, b, ...`, `MUX(k, ...)`,
+/// `MAX(...)`) may pass (E1020 beyond). The generated C folds the inputs into one expression nested as
+/// deep as their count, so an unbounded list would cost time quadratic in its length (and a C compiler
+/// a recursion as deep); formal calls are bounded by [`StdFunction::param_index`].
+pub const MAX_EXTENSIBLE_INPUTS: usize = 1000;
+
 /// A standard function.
 #[derive(Debug, Clone, Copy)]
 pub struct StdFunction {

@@ -220,6 +220,16 @@ pub fn lower(
     }
 
     // 2. Which transitions fire.
+    // The transitions leaving each step, in order: a transition yields to the earlier ones that share
+    // a step with it (looking at every earlier transition made 50,000 steps quadratic).
+    let mut leaving: Vec<Vec<usize>> = vec![Vec::new(); chart.steps.len()];
+    for (ti, t) in chart.transitions.iter().enumerate() {
+        for &p in &t.pre {
+            if let Some(l) = leaving.get_mut(p) {
+                l.push(ti);
+            }
+        }
+    }
     for (ti, t) in chart.transitions.iter().enumerate() {
         let f = names::fire(&t.id);
         let span = t.span;
@@ -235,10 +245,17 @@ pub fn lower(
             first = false;
         }
         out.push(il::op(Op::And, il::var(&names::cond(&t.id), span)));
-        for h in &chart.transitions[..ti] {
-            if h.pre.iter().any(|p| t.pre.contains(p)) {
-                out.push(il::opn(Op::And, il::var(&names::fire(&h.id), span)));
-            }
+        let mut earlier: Vec<usize> = t
+            .pre
+            .iter()
+            .filter_map(|&p| leaving.get(p))
+            .flat_map(|l| l.iter().copied().take_while(|&h| h < ti))
+            .collect();
+        earlier.sort_unstable();
+        earlier.dedup();
+        for h in earlier {
+            let h = &chart.transitions[h];
+            out.push(il::opn(Op::And, il::var(&names::fire(&h.id), span)));
         }
         out.push(il::op(Op::St, il::var(&f, span)));
     }
@@ -266,12 +283,21 @@ pub fn lower(
     // 4. Step times, after the evolution: a step activated in this scan starts from 0 now. A step
     // left and re-entered by the same transition (a loop on itself) restarts too: its timer sees
     // IN = FALSE once before the regular call.
+    let mut self_loops: Vec<Vec<&chart::Transition>> = vec![Vec::new(); chart.steps.len()];
+    for t in &chart.transitions {
+        let mut pre = t.pre.clone();
+        pre.sort_unstable();
+        pre.dedup();
+        for si in pre {
+            if t.post.contains(&si) {
+                if let Some(l) = self_loops.get_mut(si) {
+                    l.push(t);
+                }
+            }
+        }
+    }
     for (si, s) in chart.steps.iter().enumerate() {
-        let loops: Vec<&chart::Transition> = chart
-            .transitions
-            .iter()
-            .filter(|t| t.pre.contains(&si) && t.post.contains(&si))
-            .collect();
+        let loops = std::mem::take(&mut self_loops[si]);
         if loops.is_empty() {
             continue;
         }
