@@ -632,3 +632,52 @@ fn the_budget_comes_from_the_profile_and_counts_the_program_data_together() {
         stderr(&out)
     );
 }
+
+#[test]
+fn a_repeated_array_initializer_is_one_loop_in_the_c_and_runs() {
+    // 70 bytes of ST asked for 2,000,001 initial values: before, one C assignment each (95 MB of C that
+    // make did not finish compiling); now a run of equal values is one loop over its row-major positions.
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "arr.st",
+        "PROGRAM main
+VAR
+  big : ARRAY[0..2000000] OF INT := [2000001(7)];
+  g : ARRAY[1..3, 0..4] OF DINT := [2, 9(5), 1, 2, 3(-4)];
+  s : ARRAY[0..9] OF STRING[4] := [10('ab')];
+  x0 : INT; xlast : INT; g10 : DINT; g14 : DINT; g20 : DINT; g24 : DINT; g30 : DINT; g31 : DINT;
+  g32 : DINT; g34 : DINT; s9 : STRING[4];
+END_VAR
+  x0 := big[0]; xlast := big[2000000];
+  g10 := g[1,0]; g14 := g[1,4]; g20 := g[2,0]; g24 := g[2,4]; g30 := g[3,0]; g31 := g[3,1];
+  g32 := g[3,2]; g34 := g[3,4]; s9 := s[9];
+END_PROGRAM
+",
+    );
+    let out = run(&["build", "-o"], &[&dir.path().join("out"), &src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let c = std::fs::metadata(dir.path().join("out/program.c"))
+        .unwrap()
+        .len();
+    assert!(c < 64 * 1024, "{c} bytes of C");
+    let out = run(
+        &[
+            "run",
+            "--cycles",
+            "1",
+            "--watch",
+            "main.x0,main.xlast,main.g10,main.g14,main.g20,main.g24,main.g30,main.g31,main.g32,main.g34,main.s9",
+        ],
+        &[&src],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let trace = String::from_utf8_lossy(&out.stdout);
+    // row-major: g[1,0] = 2, nine 5s to g[2,4], then 1, 2, -4, -4, -4
+    assert!(
+        trace
+            .lines()
+            .any(|l| l == "0,0,7,7,2,5,5,5,1,2,-4,-4,\"ab\""),
+        "{trace}"
+    );
+}

@@ -2,14 +2,18 @@
 //!
 //! Input: a C lvalue (already zeroed by `memset` or static storage), its type, the declared initial value.
 //! Output: assignments for the non-zero parts only (element-wise for arrays, field-wise for structs, the
-//! INIT function plus parameter values for FB instances). Invariants: output size is proportional to the
-//! declared initialisers and the number of FB/struct elements needing non-zero defaults.
+//! INIT function plus parameter values for FB instances; a run of equal array values is one loop). Invariants:
+//! output size is proportional to the distinct runs of the declared initialisers (a repeat `[n(v)]` costs
+//! one loop, not n assignments) and the number of FB/struct elements needing non-zero defaults.
 
 use super::Gen;
 use crate::{ctypes, mangle};
 use diagnostics::Span;
 use il_frontend::sema::{ConstValue, FbType, Type, UserTypeDef};
 use std::fmt::Write as _;
+
+/// A run of at least this many equal initial values in an array is written as one loop.
+const INIT_LOOP_RUN: usize = 8;
 
 impl Gen<'_> {
     /// Whether a zeroed value of `ty` differs from its IEC default.
@@ -125,22 +129,57 @@ impl Gen<'_> {
                     let _ = writeln!(out, "{pad}}}");
                 }
                 if let Some(ConstValue::Array(elems)) = init {
-                    for (k, v) in elems.iter().enumerate() {
-                        // row-major index decomposition
-                        let mut rest = k as u128;
-                        let mut idx = vec![0u128; lens.len()];
-                        for (d, len) in lens.iter().enumerate().rev() {
-                            idx[d] = rest % len;
-                            rest /= len;
+                    let total: u128 = lens.iter().product();
+                    let elems = &elems[..elems
+                        .len()
+                        .min(usize::try_from(total).unwrap_or(usize::MAX))];
+                    // Equal values in a row (`[2000000(7)]`) become one loop over their row-major
+                    // positions, so that the C stays proportional to the distinct runs, not to the
+                    // array's length.
+                    let mut k = 0;
+                    while k < elems.len() {
+                        let v = &elems[k];
+                        let run = elems[k..].iter().take_while(|x| *x == v).count();
+                        if run >= INIT_LOOP_RUN {
+                            let r = format!("r_{indent}");
+                            let mut el = lv.to_string();
+                            let mut stride: u128 = 1;
+                            let mut subs = Vec::new();
+                            for len in lens.iter().rev() {
+                                subs.push(format!("[({r} / {stride}u) % {len}u]"));
+                                stride = stride.saturating_mul(*len);
+                            }
+                            for sub in subs.iter().rev() {
+                                el.push_str(sub);
+                            }
+                            let _ = writeln!(out, "{pad}{{");
+                            let _ = writeln!(out, "{pad}    size_t {r};");
+                            let _ = writeln!(
+                                out,
+                                "{pad}    for ({r} = {k}u; {r} < {}u; {r}++)",
+                                k + run
+                            );
+                            let mut inner = String::new();
+                            self.init_value(&mut inner, indent + 2, &el, element, Some(v), span);
+                            let _ = writeln!(out, "{pad}    {{\n{inner}{pad}    }}");
+                            let _ = writeln!(out, "{pad}}}");
+                        } else {
+                            for (j, v) in elems[k..k + run].iter().enumerate() {
+                                // row-major index decomposition
+                                let mut rest = (k + j) as u128;
+                                let mut el = lv.to_string();
+                                let mut idx = vec![0u128; lens.len()];
+                                for (d, len) in lens.iter().enumerate().rev() {
+                                    idx[d] = rest % len;
+                                    rest /= len;
+                                }
+                                for i in &idx {
+                                    let _ = write!(el, "[{i}]");
+                                }
+                                self.init_value(out, indent, &el, element, Some(v), span);
+                            }
                         }
-                        if rest > 0 {
-                            break; // more values than elements (sema reports it)
-                        }
-                        let mut el = lv.to_string();
-                        for i in &idx {
-                            let _ = write!(el, "[{i}]");
-                        }
-                        self.init_value(out, indent, &el, element, Some(v), span);
+                        k += run;
                     }
                 }
             }
