@@ -681,3 +681,26 @@ END_PROGRAM
         "{trace}"
     );
 }
+
+#[test]
+fn real_literals_beyond_their_range_are_e1017_not_an_infinity() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(
+        dir.path(),
+        "rl.st",
+        "PROGRAM main
+VAR r : REAL; l : LREAL; END_VAR
+  r := REAL#3.5E39;
+  l := 1.0E999;
+  l := 1.0E300;
+  r := REAL#3.0E38;
+END_PROGRAM
+",
+    );
+    let out = run(&["check", "--message-format", "short"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(err.contains("rl.st:3:8: error[E1017]"), "{err}");
+    assert!(err.contains("rl.st:4:8: error[E1017]"), "{err}");
+    assert_eq!(err.matches("error[").count(), 2, "{err}");
+}

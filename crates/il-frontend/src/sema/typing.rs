@@ -132,6 +132,26 @@ pub fn literal_type(lit: &Literal) -> Result<LitType, LitError> {
                 hint: "write the literal in the type's own syntax (T#5s, D#2024-01-01 ...)".into(),
             }),
         },
+        // A real literal beyond LREAL's range (1.8E308) or a REAL# one beyond REAL's (3.4E38) would
+        // silently become an infinity.
+        (LiteralKind::Real(v), p)
+            if !v.is_finite()
+                || p.as_ref().is_some_and(|(_, e)| *e == Some(E::Real))
+                    && v.abs() > f64::from(f32::MAX) =>
+        {
+            let ty = if v.is_finite() { "REAL" } else { "LREAL" };
+            Err(LitError {
+                message: format!("real literal beyond the range of {ty}"),
+                hint: format!(
+                    "{ty} holds magnitudes up to {}; write a smaller value",
+                    if v.is_finite() {
+                        "3.4028235E38"
+                    } else {
+                        "1.7976931348623157E308"
+                    }
+                ),
+            })
+        }
         (LiteralKind::Real(_), None) => Ok(LitType::Real),
         (LiteralKind::Real(_), Some((_, Some(e)))) if e.is_real() => {
             Ok(LitType::Known(Type::Elementary(e)))
