@@ -31,7 +31,26 @@ const AXES: &str = r#"{ "cycle_ms": 10, "axes": [ { "name": "X1", "unit": "mm", 
   "acceleration": 500, "deceleration": 500 } ] }
 "#;
 
-/// #16's bound for the executable (256 KB), met with the trimmed std: 219,768 B on x86-64 with gcc 12.
+/// `ladderc build move.il ARGS -o out` of the one-block program in a new folder (with its axes file),
+/// with the embedded motion library.
+fn build_move(args: &[&str]) -> (tempfile::TempDir, std::process::Output) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("move.il"), MOVE).unwrap();
+    std::fs::write(dir.path().join("move.axes.json"), AXES).unwrap();
+    let o = ladderc()
+        .env_remove("LADDERC_MOTION_LIB")
+        .current_dir(dir.path())
+        .arg("build")
+        .arg("move.il")
+        .args(args)
+        .args(["-o", "out"])
+        .output()
+        .unwrap();
+    assert_ok(&o);
+    (dir, o)
+}
+
+/// #16's bound for the executable (256 KB), met with the trimmed std: 199,288 B on x86-64 with gcc 12.
 const TRIMMED_LIMIT: u64 = 256_000;
 
 /// The bound with the toolchain's prebuilt std: 426,928 B on x86-64 with gcc 12.
@@ -39,16 +58,7 @@ const FULL_STD_LIMIT: u64 = 448 * 1024;
 
 #[test]
 fn a_one_block_program_is_small_and_its_report_says_where_the_bytes_are() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("move.il"), MOVE).unwrap();
-    std::fs::write(dir.path().join("move.axes.json"), AXES).unwrap();
-    let o = ladderc()
-        .env_remove("LADDERC_MOTION_LIB")
-        .current_dir(dir.path())
-        .args(["build", "move.il", "--report", "json", "-o", "out"])
-        .output()
-        .unwrap();
-    assert_ok(&o);
+    let (dir, o) = build_move(&["--report", "json"]);
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let size = &v["code_size"];
     let n = |k: &str| size[k].as_u64().unwrap_or_else(|| panic!("{k}: {size}"));
@@ -108,16 +118,7 @@ fn a_one_block_program_is_small_and_its_report_says_where_the_bytes_are() {
 /// `MC_STATUS_PANIC` instead of aborting) passes against the shipped `libmotion_lib.a` and `motion_lib.h`.
 #[test]
 fn the_shipped_motion_library_catches_panics() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("move.il"), MOVE).unwrap();
-    std::fs::write(dir.path().join("move.axes.json"), AXES).unwrap();
-    let o = ladderc()
-        .env_remove("LADDERC_MOTION_LIB")
-        .current_dir(dir.path())
-        .args(["build", "move.il", "-o", "out"])
-        .output()
-        .unwrap();
-    assert_ok(&o);
+    let (dir, _) = build_move(&[]);
     let out = dir.path().join("out");
     let contract = common::repo_root().join("crates/motion-lib/tests/c/abi_contract.c");
     let exe = dir.path().join("abi_contract");
