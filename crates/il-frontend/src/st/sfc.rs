@@ -99,13 +99,6 @@ pub fn is_qualifier(q: &str) -> bool {
     matches!(q, "N" | "R" | "S" | "P" | "P0" | "P1") || timed_qualifier(q)
 }
 
-/// Whether the body `src[body]` is written in textual SFC (it holds `INITIAL_STEP` or `STEP name :`).
-pub fn is_textual_sfc(src: &str, body: Range<usize>) -> bool {
-    let text = src.get(body).unwrap_or("");
-    let (toks, _) = lex(text);
-    toks.iter().any(|t| word_is(text, t, "INITIAL_STEP"))
-}
-
 fn word_is(src: &str, t: &Token, w: &str) -> bool {
     matches!(t.tok, Tok::Ident | Tok::Kw(_))
         && src
@@ -153,7 +146,10 @@ impl Reader<'_> {
         self.text.get(t.range.clone()).unwrap_or("").to_string()
     }
     fn error(&mut self, at: Range<usize>, msg: String, label: &str) {
-        let d = Diagnostic::error(code::E0302, msg)
+        self.error_code(code::E0302, at, msg, label);
+    }
+    fn error_code(&mut self, c: diagnostics::Code, at: Range<usize>, msg: String, label: &str) {
+        let d = Diagnostic::error(c, msg)
             .at(self.span(&at))
             .with_primary_label(label.to_string());
         self.diags.push(d);
@@ -281,7 +277,8 @@ impl Reader<'_> {
                             Some(t) => a.time = Some(t.clone()),
                             None => {
                                 let r = q.clone();
-                                self.error(
+                                self.error_code(
+                                    code::E3123,
                                     r,
                                     format!("textual SFC: qualifier {qs} needs a duration (`{qs}, T#1s`)"),
                                     "no duration",
@@ -291,7 +288,8 @@ impl Reader<'_> {
                     }
                 } else {
                     let r = q.clone();
-                    self.error(
+                    self.error_code(
+                        code::E3123,
                         r,
                         format!("textual SFC: `{qs}` is not an action qualifier (N R S P P0 P1 L D SD DS SL)"),
                         "unknown qualifier",
@@ -306,7 +304,8 @@ impl Reader<'_> {
     }
 }
 
-/// Reads the textual SFC in `src[body]`. Diagnostics (E0302 for text that is not textual SFC, E3120 for
+/// Reads the textual SFC in `src[body]`. Diagnostics (E0302 for text that is not textual SFC, E3123 for a
+/// bad qualifier or missing duration, E3120 for
 /// a transition naming an unknown step, E3124 without an initial step, E3128 for a second initial step,
 /// E3131 for a step name used twice) are located in `file`.
 pub fn read(file: FileId, src: &str, body: Range<usize>) -> (TextChart, Vec<Diagnostic>) {
@@ -646,11 +645,5 @@ mod tests {
         let (_, d) = read_all(src);
         assert_eq!(d.len(), 1);
         assert_eq!(d[0].code.to_string(), "E3128");
-    }
-
-    #[test]
-    fn detects_textual_sfc() {
-        assert!(is_textual_sfc(CHART, 0..CHART.len()));
-        assert!(!is_textual_sfc("x := 1;", 0..7));
     }
 }
