@@ -231,3 +231,19 @@ fn broken_charts_get_located_errors() {
     );
     assert_eq!(e, [("E0107".to_string(), 6, 33)]);
 }
+
+#[test]
+fn a_function_block_chart_keeps_its_steps_per_instance_and_a_function_chart_is_refused() {
+    let fb = "FUNCTION_BLOCK Blink\n  VAR_OUTPUT q : BOOL; END_VAR\n  INITIAL_STEP Off: END_STEP\n  TRANSITION FROM Off TO On := Off.T >= T#20ms; END_TRANSITION\n  STEP On: q(N); END_STEP\n  TRANSITION FROM On TO Off := On.T >= T#20ms; END_TRANSITION\nEND_FUNCTION_BLOCK\n";
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("blink.st");
+    std::fs::write(
+        &p,
+        format!("{fb}PROGRAM Main\n  VAR b : Blink; out : BOOL; END_VAR\n  b();\n  out := b.q;\nEND_PROGRAM\n"),
+    )
+    .unwrap();
+    let t = run(&p, 10, "", &["main.out"]);
+    assert_eq!(on(&t, "main.out"), [2, 3, 6, 7]);
+    let (_, e) = check("FUNCTION F : BOOL\n  INITIAL_STEP A: END_STEP\n  TRANSITION FROM A TO A := TRUE; END_TRANSITION\nEND_FUNCTION\n");
+    assert_eq!(e, [("E3125".to_string(), 1, 10)]);
+}
