@@ -236,15 +236,15 @@ fn corpus_libraries_check() {
 
 #[test]
 fn corpus_files_needing_what_is_missing_get_one_located_error() {
-    // Beremiz's first steps as IronPLC keeps it (ST POUs and one in textual SFC): the SFC one is
-    // named, once, and nothing else of the file is reported as a syntax error.
+    // Beremiz's first steps as IronPLC keeps it (ST POUs and one in textual SFC, compiled): only the
+    // program its configuration instantiates is missing from the file.
     let p = st_corpus("first_steps.st");
     let o = cmd(
         &["check", p.to_str().unwrap(), "--message-format", "json"],
         None,
     );
     assert_eq!(o.status.code(), Some(1));
-    assert_eq!(errors(&o), [("E0302".to_string(), 36)], "{}", stderr(&o));
+    assert_eq!(errors(&o), [("E1024".to_string(), 174)], "{}", stderr(&o));
 
     // `PI` comes from TwinCAT's Tc2_System library.
     let p = st_corpus("uses_pi.st");

@@ -334,6 +334,7 @@ impl Session {
             }
         }
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
+        lower_textual_sfc(&mut units, &pending, &mut self.diags);
         units
     }
 
@@ -682,6 +683,53 @@ impl Session {
 }
 
 /// The error of a file that is neither in memory nor to be read from the file system.
+/// Lowers the bodies written in textual SFC (IEC 61131-3 2.6 in an ST file) with the SFC lowering of
+/// PLCopen XML charts, once every unit's declarations are known.
+fn lower_textual_sfc(
+    units: &mut [CompilationUnit],
+    pending: &[il_frontend::st::file::PendingBody],
+    diags: &mut diagnostics::Diagnostics,
+) {
+    use il_frontend::ast::{LibraryElement, VarBlock, VarKind};
+    if !pending.iter().any(|pb| pb.sfc) {
+        return;
+    }
+    let index = ladder_compiler::sfc::text::index_of_units(units);
+    for pb in pending.iter().filter(|pb| pb.sfc) {
+        // the body at its offset in the file: spans of the lowered code point into the file
+        let mut src = " ".repeat(pb.base);
+        src.push_str(&pb.text);
+        for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+            let LibraryElement::Pou(p) = item else {
+                continue;
+            };
+            if p.name.span.file != pb.file || p.name.span.start as usize != pb.name_start {
+                continue;
+            }
+            let (body, hidden) = ladder_compiler::sfc::text::lower(
+                pb.file,
+                &src,
+                pb.base..src.len(),
+                p,
+                &index,
+                diags,
+            );
+            p.body = body;
+            if !hidden.is_empty() {
+                let span = diagnostics::Span::new(pb.file, pb.base, pb.base);
+                p.var_blocks.push(VarBlock {
+                    name: None,
+                    kind: VarKind::Local,
+                    constant: false,
+                    retain: false,
+                    vars: hidden,
+                    span,
+                });
+            }
+        }
+    }
+}
+
 fn not_in_memory() -> std::io::Error {
     std::io::Error::new(
         std::io::ErrorKind::NotFound,

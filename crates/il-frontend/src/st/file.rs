@@ -49,7 +49,8 @@ pub struct PouText {
     pub body: Range<usize>,
     /// The body's language: ST when its ST statements outnumber the lines that start like IL instructions.
     pub lang: Lang,
-    /// The `INITIAL_STEP` of a body in textual SFC (not compiled: E0302).
+    /// The `INITIAL_STEP` (or first `STEP name :`) of a body in textual SFC (lowered by the caller:
+    /// [`PendingBody::sfc`]).
     pub sfc: Option<Range<usize>>,
     /// The first `METHOD name` / `PROPERTY name` of a body (edition 3 object orientation: E0303).
     pub oop: Option<Range<usize>>,
@@ -73,6 +74,9 @@ pub struct PendingBody {
     pub text: String,
     /// The POU's actions (an `ACTIONS` block after it): name, text, offset of the text.
     pub actions: Vec<(crate::ast::Ident, String, usize)>,
+    /// The body is textual SFC ([`super::sfc`]): [`compile_pending`] leaves it to the SFC lowering of
+    /// the caller (ladder-compiler's `sfc::text`).
+    pub sfc: bool,
 }
 
 /// IL operators (and the `&` forms): a line starting with one of these is an IL instruction.
@@ -228,9 +232,21 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                 }
                 let body_end = toks[j.min(n - 1)].range.start;
                 let body_start = body_start.min(body_end);
-                let sfc = toks[first..j.min(n - 1)]
+                // `INITIAL_STEP`, or `STEP name :` (a chart without its initial step is still a chart)
+                let body_toks = &toks[first..j.min(n - 1)];
+                let sfc = body_toks
                     .iter()
                     .find(|t| is_word(src, t, "INITIAL_STEP"))
+                    .or_else(|| {
+                        body_toks
+                            .windows(3)
+                            .find(|w| {
+                                is_word(src, &w[0], "STEP")
+                                    && w[1].tok == Tok::Ident
+                                    && w[2].tok == Tok::Colon
+                            })
+                            .map(|w| &w[0])
+                    })
                     .map(|t| t.range.clone());
                 let body_toks = &toks[first..j.min(n - 1)];
                 let oop = body_toks
@@ -469,19 +485,15 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
-        if let Some(r) = &p.sfc {
-            diags.push(
-                Diagnostic::error(
-                    code::E0302,
-                    format!(
-                        "the body of `{}` is Sequential Function Chart in textual form, which is not supported",
-                        p.name
-                    ),
-                )
-                .at(Span::new(file, r.start, r.end))
-                .with_primary_label("textual SFC starts here")
-                .with_hint("write the chart in a PLCopen XML <SFC> body (supported), or its steps as ST (a CASE over a state variable)"),
-            );
+        if p.sfc.is_some() {
+            pending.push(PendingBody {
+                file,
+                name_start: p.name_range.start,
+                base: p.body.start,
+                text: src.get(p.body.clone()).unwrap_or("").to_string(),
+                actions: Vec::new(),
+                sfc: true,
+            });
             blank(&mut text, p.body.clone());
             continue;
         }
@@ -510,6 +522,7 @@ pub fn parse_text(
                     base: p.body.start,
                     text: src.get(p.body.clone()).unwrap_or("").to_string(),
                     actions: Vec::new(),
+                    sfc: false,
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -553,7 +566,7 @@ pub fn compile_pending(
         return;
     }
     let decls = super::Declarations::from_units(units);
-    for pb in pending {
+    for pb in pending.iter().filter(|pb| !pb.sfc) {
         for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
             let LibraryElement::Pou(p) = item else {
                 continue;

@@ -17,6 +17,7 @@ pub mod infer;
 pub mod lexer;
 pub mod lower;
 pub mod parser;
+pub mod sfc;
 pub mod types;
 
 pub use lower::PouLowering;

@@ -20,6 +20,7 @@ pub mod chart;
 pub mod il;
 pub mod snippet;
 pub mod st_bridge;
+pub mod text;
 
 use crate::context::Ctx;
 use crate::graph::{self, Kind, Node, Wire};
@@ -102,6 +103,21 @@ pub fn lower(
         return (Vec::new(), Vec::new());
     }
     let chart = chart::read(ctx, sfc, &pou_name);
+    lower_chart(ctx, index, pou_el, pou, sfc, chart)
+}
+
+/// Lowers a chart already read (from an `<SFC>` element or from textual SFC, [`text`]). `pou_el` holds
+/// the POU's `<actions>` and `<transitions>`; `sfc` is the body element (its start tag locates
+/// chart-wide diagnostics; its LD/FBD elements are read only for connection-based conditions).
+pub fn lower_chart<'e, 'a>(
+    ctx: &mut Ctx,
+    index: &Index,
+    pou_el: &'e Element<'a>,
+    pou: &Pou,
+    sfc: &Element,
+    chart: chart::Chart<'e, 'a>,
+) -> (Vec<IlStmt>, Vec<VarDecl>) {
+    let pou_name = pou.name.name.clone();
     let mut hidden = Hidden::default();
     let mut out: Vec<IlStmt> = Vec::new();
     let body_span = ctx.tag(sfc);

@@ -1,0 +1,649 @@
+//! Textual Sequential Function Chart (IEC 61131-3 ed. 2 §2.6, ed. 3 §6.7) in the body of an ST POU.
+//!
+//! Input: the file text and the byte range of a POU body written as `INITIAL_STEP`/`STEP`/`TRANSITION`/
+//! `ACTION` elements (the form OpenPLC Editor and Beremiz write into their `.st` files). Output: a
+//! [`TextChart`] (steps with their action associations, transitions between steps, action bodies), every
+//! name and text with its byte range in the file, and located diagnostics for charts that cannot run.
+//! Invariants: the reader does not lower anything: conditions and action bodies stay text ranges (ST or
+//! IL), to be lowered by the same SFC lowering as a PLCopen XML `<SFC>` body; step indexes in
+//! transitions point into [`TextChart::steps`]; a transition naming an unknown step is left out.
+
+use super::lexer::{lex, Tok, Token};
+use crate::{FileId, Span};
+use diagnostics::{code, Diagnostic};
+use std::ops::Range;
+
+/// A chart read from text.
+#[derive(Debug, Clone, Default)]
+pub struct TextChart {
+    /// The steps in text order.
+    pub steps: Vec<TextStep>,
+    /// The transitions in text order (their priority among transitions leaving the same step).
+    pub transitions: Vec<TextTransition>,
+    /// The `ACTION name: ... END_ACTION` elements in text order.
+    pub actions: Vec<TextAction>,
+}
+
+/// `STEP name: associations END_STEP` (or `INITIAL_STEP`).
+#[derive(Debug, Clone)]
+pub struct TextStep {
+    /// The step's name as written.
+    pub name: String,
+    /// Byte range of the name.
+    pub name_range: Range<usize>,
+    /// `INITIAL_STEP`: active at the first scan.
+    pub initial: bool,
+    /// The action associations, in text order.
+    pub associations: Vec<TextAssociation>,
+}
+
+/// `action(qualifier, time, indicator ...)` inside a step.
+#[derive(Debug, Clone)]
+pub struct TextAssociation {
+    /// The action's (or BOOL variable's) name.
+    pub action: String,
+    /// Byte range of the whole association (name to `)`).
+    pub range: Range<usize>,
+    /// The qualifier as written, upper-cased (`N` when none is written).
+    pub qualifier: String,
+    /// Byte range of the qualifier (the action name when none is written).
+    pub qualifier_range: Range<usize>,
+    /// Byte range of the duration (`T#5s` or a TIME variable) of a timed qualifier.
+    pub time: Option<Range<usize>>,
+}
+
+/// How a transition's condition is written.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum TextCondition {
+    /// `:= expression;`: the expression's byte range (without `:=` and `;`).
+    Expression(Range<usize>),
+    /// `: instructions`: IL instructions leaving the condition in the current result (their range).
+    Instructions(Range<usize>),
+}
+
+/// `TRANSITION [name] [(PRIORITY := n)] FROM steps TO steps condition END_TRANSITION`.
+#[derive(Debug, Clone)]
+pub struct TextTransition {
+    /// The optional name.
+    pub name: Option<String>,
+    /// Byte range of the `TRANSITION` keyword.
+    pub range: Range<usize>,
+    /// `(PRIORITY := n)` when written.
+    pub priority: Option<u32>,
+    /// Predecessor steps (indexes into [`TextChart::steps`]).
+    pub from: Vec<usize>,
+    /// Successor steps.
+    pub to: Vec<usize>,
+    /// The condition.
+    pub cond: TextCondition,
+}
+
+/// `ACTION name: body END_ACTION`.
+#[derive(Debug, Clone)]
+pub struct TextAction {
+    /// The action's name as written.
+    pub name: String,
+    /// Byte range of the name.
+    pub name_range: Range<usize>,
+    /// Byte range of the body (ST statements or IL instructions).
+    pub body: Range<usize>,
+}
+
+/// Whether `q` (upper-case) is an action qualifier that takes a duration.
+pub fn timed_qualifier(q: &str) -> bool {
+    matches!(q, "L" | "D" | "SD" | "DS" | "SL")
+}
+
+/// Whether `q` (upper-case) is an IEC action qualifier.
+pub fn is_qualifier(q: &str) -> bool {
+    matches!(q, "N" | "R" | "S" | "P" | "P0" | "P1") || timed_qualifier(q)
+}
+
+fn word_is(src: &str, t: &Token, w: &str) -> bool {
+    matches!(t.tok, Tok::Ident | Tok::Kw(_))
+        && src
+            .get(t.range.clone())
+            .unwrap_or("")
+            .eq_ignore_ascii_case(w)
+}
+
+/// A name and its byte range.
+type Named = (String, Range<usize>);
+
+struct Reader<'s> {
+    file: FileId,
+    text: &'s str,
+    base: usize,
+    toks: Vec<Token>,
+    i: usize,
+    diags: Vec<Diagnostic>,
+}
+
+impl Reader<'_> {
+    fn peek(&self) -> &Token {
+        &self.toks[self.i.min(self.toks.len() - 1)]
+    }
+    fn is(&self, w: &str) -> bool {
+        word_is(self.text, self.peek(), w)
+    }
+    fn at_eof(&self) -> bool {
+        self.peek().tok == Tok::Eof
+    }
+    fn bump(&mut self) -> Token {
+        let t = self.peek().clone();
+        if !self.at_eof() {
+            self.i += 1;
+        }
+        t
+    }
+    fn range(&self, t: &Token) -> Range<usize> {
+        t.range.start + self.base..t.range.end + self.base
+    }
+    fn span(&self, r: &Range<usize>) -> Span {
+        Span::new(self.file, r.start, r.end)
+    }
+    fn text_of(&self, t: &Token) -> String {
+        self.text.get(t.range.clone()).unwrap_or("").to_string()
+    }
+    fn error(&mut self, at: Range<usize>, msg: String, label: &str) {
+        self.error_code(code::E0302, at, msg, label);
+    }
+    fn error_code(&mut self, c: diagnostics::Code, at: Range<usize>, msg: String, label: &str) {
+        let d = Diagnostic::error(c, msg)
+            .at(self.span(&at))
+            .with_primary_label(label.to_string());
+        self.diags.push(d);
+    }
+    /// A name; reports and returns `None` when the next token is not one.
+    fn name(&mut self, what: &str) -> Option<(String, Range<usize>)> {
+        if self.peek().tok == Tok::Ident {
+            let t = self.bump();
+            return Some((self.text_of(&t), self.range(&t)));
+        }
+        let t = self.peek().clone();
+        let r = self.range(&t);
+        self.error(r, format!("textual SFC: expected {what}"), "expected here");
+        None
+    }
+    /// Skips to just after the word `end` (or to the end of the text); the range of the skipped text.
+    fn skip_to(&mut self, end: &str) -> Range<usize> {
+        let start = self.peek().range.start + self.base;
+        while !self.at_eof() && !self.is(end) {
+            self.bump();
+        }
+        let stop = self.peek().range.start + self.base;
+        if self.at_eof() {
+            let r = self.range(&self.peek().clone());
+            self.error(
+                r,
+                format!("textual SFC: `{end}` is missing"),
+                "the text ends here",
+            );
+        } else {
+            self.bump();
+        }
+        start..stop
+    }
+    /// `name` or `(name, name ...)`.
+    fn step_list(&mut self) -> Vec<(String, Range<usize>)> {
+        let mut out = Vec::new();
+        if self.peek().tok == Tok::LParen {
+            self.bump();
+            loop {
+                if let Some(n) = self.name("a step name") {
+                    out.push(n);
+                }
+                match self.peek().tok {
+                    Tok::Comma => {
+                        self.bump();
+                    }
+                    Tok::RParen => {
+                        self.bump();
+                        break;
+                    }
+                    _ => {
+                        let r = self.range(&self.peek().clone());
+                        self.error(
+                            r,
+                            "textual SFC: expected `,` or `)` in a step list".into(),
+                            "here",
+                        );
+                        break;
+                    }
+                }
+            }
+        } else if let Some(n) = self.name("a step name") {
+            out.push(n);
+        }
+        out
+    }
+    fn association(&mut self) -> Option<TextAssociation> {
+        let (action, name_range) = self.name("an action name or `END_STEP`")?;
+        let mut a = TextAssociation {
+            action,
+            range: name_range.clone(),
+            qualifier: "N".into(),
+            qualifier_range: name_range.clone(),
+            time: None,
+        };
+        if self.peek().tok == Tok::LParen {
+            self.bump();
+            // the arguments, split at top-level commas
+            let mut args: Vec<Range<usize>> = Vec::new();
+            let mut depth = 0usize;
+            let mut start: Option<usize> = None;
+            let mut end = 0usize;
+            loop {
+                let t = self.peek().clone();
+                match t.tok {
+                    Tok::Eof => break,
+                    Tok::LParen => depth += 1,
+                    Tok::RParen if depth == 0 => {
+                        self.bump();
+                        a.range.end = t.range.end + self.base;
+                        break;
+                    }
+                    Tok::RParen => depth -= 1,
+                    Tok::Comma if depth == 0 => {
+                        if let Some(s) = start.take() {
+                            args.push(s..end);
+                        }
+                        self.bump();
+                        continue;
+                    }
+                    _ => {}
+                }
+                start.get_or_insert(t.range.start + self.base);
+                end = t.range.end + self.base;
+                self.bump();
+            }
+            if let Some(s) = start {
+                args.push(s..end);
+            }
+            let src_of = |r: &Range<usize>| {
+                self.text
+                    .get(r.start - self.base..r.end - self.base)
+                    .unwrap_or("")
+                    .trim()
+                    .to_ascii_uppercase()
+            };
+            if let Some(q) = args.first() {
+                let qs = src_of(q);
+                if is_qualifier(&qs) {
+                    a.qualifier = qs.clone();
+                    a.qualifier_range = q.clone();
+                    if timed_qualifier(&qs) {
+                        match args.get(1) {
+                            Some(t) => a.time = Some(t.clone()),
+                            None => {
+                                let r = q.clone();
+                                self.error_code(
+                                    code::E3123,
+                                    r,
+                                    format!("textual SFC: qualifier {qs} needs a duration (`{qs}, T#1s`)"),
+                                    "no duration",
+                                );
+                            }
+                        }
+                    }
+                } else {
+                    let r = q.clone();
+                    self.error_code(
+                        code::E3123,
+                        r,
+                        format!("textual SFC: `{qs}` is not an action qualifier (N R S P P0 P1 L D SD DS SL)"),
+                        "unknown qualifier",
+                    );
+                }
+            }
+        }
+        if self.peek().tok == Tok::Semi {
+            self.bump();
+        }
+        Some(a)
+    }
+}
+
+/// Reads the textual SFC in `src[body]`. Diagnostics (E0302 for text that is not textual SFC, E3123 for a
+/// bad qualifier or missing duration, E3120 for
+/// a transition naming an unknown step, E3124 without an initial step, E3128 for a second initial step,
+/// E3131 for a step name used twice) are located in `file`.
+pub fn read(file: FileId, src: &str, body: Range<usize>) -> (TextChart, Vec<Diagnostic>) {
+    let text = src.get(body.clone()).unwrap_or("");
+    let (toks, _) = lex(text);
+    let mut r = Reader {
+        file,
+        text,
+        base: body.start,
+        toks,
+        i: 0,
+        diags: Vec::new(),
+    };
+    let mut chart = TextChart::default();
+    // (transition, names) resolved once every step is known
+    let mut pending: Vec<(Vec<Named>, Vec<Named>)> = Vec::new();
+    while !r.at_eof() {
+        if r.is("INITIAL_STEP") || r.is("STEP") {
+            let initial = r.is("INITIAL_STEP");
+            r.bump();
+            let Some((name, name_range)) = r.name("a step name") else {
+                r.skip_to("END_STEP");
+                continue;
+            };
+            if r.peek().tok == Tok::Colon {
+                r.bump();
+            }
+            let mut associations = Vec::new();
+            while !r.at_eof() && !r.is("END_STEP") {
+                match r.association() {
+                    Some(a) => associations.push(a),
+                    None => {
+                        r.skip_to("END_STEP");
+                        break;
+                    }
+                }
+            }
+            if r.is("END_STEP") {
+                r.bump();
+            }
+            chart.steps.push(TextStep {
+                name,
+                name_range,
+                initial,
+                associations,
+            });
+        } else if r.is("TRANSITION") {
+            let kw = r.bump();
+            let range = r.range(&kw);
+            let mut name = None;
+            if r.peek().tok == Tok::Ident && !r.is("FROM") {
+                let t = r.bump();
+                name = Some(r.text_of(&t));
+            }
+            let mut priority = None;
+            if r.peek().tok == Tok::LParen {
+                r.bump();
+                if r.is("PRIORITY") {
+                    r.bump();
+                    if r.peek().tok == Tok::Assign {
+                        r.bump();
+                    }
+                    if let Tok::Int(n) = r.peek().tok {
+                        priority = u32::try_from(n).ok();
+                        r.bump();
+                    }
+                }
+                while !r.at_eof() && r.peek().tok != Tok::RParen {
+                    r.bump();
+                }
+                r.bump();
+            }
+            if !r.is("FROM") {
+                let t = r.peek().clone();
+                let at = r.range(&t);
+                r.error(
+                    at,
+                    "textual SFC: expected `FROM` in a transition".into(),
+                    "expected `FROM`",
+                );
+                r.skip_to("END_TRANSITION");
+                continue;
+            }
+            r.bump();
+            let from = r.step_list();
+            if !r.is("TO") {
+                let t = r.peek().clone();
+                let at = r.range(&t);
+                r.error(
+                    at,
+                    "textual SFC: expected `TO` in a transition".into(),
+                    "expected `TO`",
+                );
+                r.skip_to("END_TRANSITION");
+                continue;
+            }
+            r.bump();
+            let to = r.step_list();
+            let cond = match r.peek().tok {
+                Tok::Assign => {
+                    r.bump();
+                    let mut whole = r.skip_to("END_TRANSITION");
+                    let t = &text[whole.start - body.start..whole.end - body.start];
+                    let trimmed = t.trim_end();
+                    whole.end = whole.start + trimmed.len();
+                    if trimmed.ends_with(';') {
+                        whole.end -= 1;
+                    }
+                    TextCondition::Expression(whole)
+                }
+                Tok::Colon => {
+                    r.bump();
+                    TextCondition::Instructions(r.skip_to("END_TRANSITION"))
+                }
+                _ => {
+                    let t = r.peek().clone();
+                    let at = r.range(&t);
+                    r.error(
+                        at,
+                        "textual SFC: expected the transition's condition (`:= expression;` or `: instructions`)".into(),
+                        "expected `:=` or `:`",
+                    );
+                    r.skip_to("END_TRANSITION");
+                    continue;
+                }
+            };
+            chart.transitions.push(TextTransition {
+                name,
+                range,
+                priority,
+                from: Vec::new(),
+                to: Vec::new(),
+                cond,
+            });
+            pending.push((from, to));
+        } else if r.is("ACTION") {
+            r.bump();
+            let Some((name, name_range)) = r.name("an action name") else {
+                r.skip_to("END_ACTION");
+                continue;
+            };
+            if r.peek().tok == Tok::Colon {
+                r.bump();
+            }
+            let body = r.skip_to("END_ACTION");
+            chart.actions.push(TextAction {
+                name,
+                name_range,
+                body,
+            });
+        } else {
+            let t = r.bump();
+            let at = r.range(&t);
+            r.error(
+                at,
+                "textual SFC: expected `STEP`, `INITIAL_STEP`, `TRANSITION` or `ACTION`".into(),
+                "not part of a chart",
+            );
+            // resynchronise at the next element
+            while !r.at_eof()
+                && !["INITIAL_STEP", "STEP", "TRANSITION", "ACTION"]
+                    .iter()
+                    .any(|w| r.is(w))
+            {
+                r.bump();
+            }
+        }
+    }
+    let mut diags = std::mem::take(&mut r.diags);
+    let span = |rg: &Range<usize>| Span::new(file, rg.start, rg.end);
+    // step names: unique
+    for (k, s) in chart.steps.iter().enumerate() {
+        if chart.steps[..k]
+            .iter()
+            .any(|o| o.name.eq_ignore_ascii_case(&s.name))
+        {
+            diags.push(
+                Diagnostic::error(code::E3131, format!("step name `{}` is used twice", s.name))
+                    .at(span(&s.name_range))
+                    .with_primary_label("second step with this name"),
+            );
+        }
+    }
+    let initials: Vec<&TextStep> = chart.steps.iter().filter(|s| s.initial).collect();
+    if initials.is_empty() {
+        let at = chart
+            .steps
+            .first()
+            .map_or(body.start..body.start, |s| s.name_range.clone());
+        diags.push(
+            Diagnostic::error(
+                code::E3124,
+                "the chart has no INITIAL_STEP: no step would ever become active",
+            )
+            .at(span(&at))
+            .with_primary_label("first step of the chart")
+            .with_hint("write the first step of the sequence as `INITIAL_STEP name: ... END_STEP`"),
+        );
+    }
+    for s in initials.iter().skip(1) {
+        diags.push(
+            Diagnostic::error(
+                code::E3128,
+                format!(
+                    "the chart has a second INITIAL_STEP `{}` (the first is `{}`): a chart has exactly one",
+                    s.name, initials[0].name
+                ),
+            )
+            .at(span(&s.name_range))
+            .with_primary_label("second initial step"),
+        );
+    }
+    let find = |n: &str| {
+        chart
+            .steps
+            .iter()
+            .position(|s| s.name.eq_ignore_ascii_case(n))
+    };
+    let mut resolved = Vec::new();
+    for (from, to) in &pending {
+        let mut ok = true;
+        let mut idx = |list: &[(String, Range<usize>)], side: &str| -> Vec<usize> {
+            let mut out = Vec::new();
+            for (n, rg) in list {
+                match find(n) {
+                    Some(k) => out.push(k),
+                    None => {
+                        ok = false;
+                        diags.push(
+                            Diagnostic::error(
+                                code::E3120,
+                                format!("transition {side} step `{n}`, which the chart does not declare"),
+                            )
+                            .at(span(rg))
+                            .with_primary_label("unknown step"),
+                        );
+                    }
+                }
+            }
+            out
+        };
+        let f = idx(from, "from");
+        let t = idx(to, "to");
+        resolved.push((f, t, ok));
+    }
+    let mut keep = Vec::new();
+    for (mut tr, (f, t, ok)) in chart.transitions.into_iter().zip(resolved) {
+        if ok {
+            tr.from = f;
+            tr.to = t;
+            keep.push(tr);
+        }
+    }
+    chart.transitions = keep;
+    (chart, diags)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CHART: &str = "
+  INITIAL_STEP Start:
+  END_STEP
+  TRANSITION FROM Start TO (A, B)
+    := go;
+  END_TRANSITION
+  STEP A:
+    Lamp(N);
+    Motor(L, T#5s);
+  END_STEP
+  STEP B:
+    Pulse(P1);
+  END_STEP
+  TRANSITION t2 (PRIORITY := 2) FROM (A, B) TO Start : LD A.T
+    GE T#2s
+  END_TRANSITION
+  ACTION Pulse:
+    n := n + 1;
+  END_ACTION
+";
+
+    fn read_all(src: &str) -> (TextChart, Vec<Diagnostic>) {
+        read(FileId(0), src, 0..src.len())
+    }
+
+    #[test]
+    fn reads_steps_transitions_actions() {
+        let (c, d) = read_all(CHART);
+        assert!(d.is_empty(), "{d:?}");
+        let names: Vec<&str> = c.steps.iter().map(|s| s.name.as_str()).collect();
+        assert_eq!(names, ["Start", "A", "B"]);
+        assert!(c.steps[0].initial && !c.steps[1].initial);
+        let a = &c.steps[1].associations;
+        assert_eq!(
+            (a[0].action.as_str(), a[0].qualifier.as_str()),
+            ("Lamp", "N")
+        );
+        assert_eq!(a[1].qualifier, "L");
+        assert_eq!(&CHART[a[1].time.clone().unwrap()], "T#5s");
+        assert_eq!(c.steps[2].associations[0].qualifier, "P1");
+        assert_eq!(
+            (c.transitions[0].from.clone(), c.transitions[0].to.clone()),
+            (vec![0], vec![1, 2])
+        );
+        let TextCondition::Expression(e) = &c.transitions[0].cond else {
+            panic!()
+        };
+        assert_eq!(&CHART[e.clone()], "go");
+        assert_eq!(c.transitions[1].priority, Some(2));
+        assert_eq!(c.transitions[1].name.as_deref(), Some("t2"));
+        let TextCondition::Instructions(i) = &c.transitions[1].cond else {
+            panic!()
+        };
+        assert_eq!(CHART[i.clone()].trim(), "LD A.T\n    GE T#2s");
+        assert_eq!(c.actions[0].name, "Pulse");
+        assert_eq!(CHART[c.actions[0].body.clone()].trim(), "n := n + 1;");
+    }
+
+    #[test]
+    fn broken_charts_are_located() {
+        let src = "STEP a: END_STEP STEP b: END_STEP TRANSITION FROM a TO c := x; END_TRANSITION";
+        let (c, d) = read_all(src);
+        let codes: Vec<(String, usize)> = d
+            .iter()
+            .map(|d| (d.code.to_string(), d.span.map_or(0, |s| s.start as usize)))
+            .collect();
+        assert_eq!(
+            codes,
+            [
+                ("E3124".to_string(), 5),
+                ("E3120".to_string(), src.find(" c ").unwrap() + 1)
+            ]
+        );
+        assert!(c.transitions.is_empty());
+        let src = "INITIAL_STEP a: END_STEP INITIAL_STEP b: END_STEP";
+        let (_, d) = read_all(src);
+        assert_eq!(d.len(), 1);
+        assert_eq!(d[0].code.to_string(), "E3128");
+    }
+}

@@ -1,0 +1,285 @@
+//! Textual SFC (the `INITIAL_STEP`/`STEP`/`TRANSITION`/`ACTION` body of an ST POU) lowered by the same code
+//! as a PLCopen XML `<SFC>` body.
+//!
+//! Input: the `.st` file text, the body's byte range, the POU (interface) and the parsed units of the
+//! program. Output: the IL statements and hidden declarations of [`super::lower_chart`].
+//! Invariants: the chart is read by [`il_frontend::st::sfc::read`] and turned into the [`Chart`] the XML
+//! reader builds, with small in-memory elements standing for the `<action>` associations, the `<ST>`/`<IL>`
+//! condition and action bodies (their text segments point into the `.st` file, so every span of the
+//! lowered code and every diagnostic is located in the `.st` file); no second SFC semantics.
+
+use super::chart::{report, Association, Chart, CondSource, Step, Transition};
+use crate::context::Ctx;
+use crate::project::{Index, PouSig};
+use crate::xml::{Element, SegKind, TextSeg};
+use diagnostics::{code, Diagnostics};
+use il_frontend::ast::{CompilationUnit, IlStmt, LibraryElement, Pou, PouKind, VarDecl, VarKind};
+use il_frontend::st::sfc::{self, TextCondition};
+use il_frontend::{FileId, Span};
+use std::borrow::Cow;
+use std::ops::Range;
+
+/// The project index of parsed units (ST/IL files): POU interfaces, data types and global variables.
+pub fn index_of_units(units: &[CompilationUnit]) -> Index {
+    let mut index = Index::default();
+    let globals = |b: &il_frontend::ast::VarBlock, index: &mut Index| {
+        for v in &b.vars {
+            index.globals.insert(v.name.key(), v.ty.clone());
+        }
+    };
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        match item {
+            LibraryElement::DataTypes(ts) => {
+                for t in ts {
+                    index.types.insert(t.name.key(), t.clone());
+                }
+            }
+            LibraryElement::Pou(p) => {
+                let pins = p
+                    .var_blocks
+                    .iter()
+                    .filter(|b| matches!(b.kind, VarKind::Input | VarKind::Output | VarKind::InOut))
+                    .flat_map(|b| {
+                        b.vars
+                            .iter()
+                            .map(move |v| (v.name.name.clone(), b.kind, v.ty.clone()))
+                    })
+                    .collect();
+                index.pous.insert(
+                    p.name.key(),
+                    PouSig {
+                        kind: p.kind,
+                        name: p.name.name.clone(),
+                        pins,
+                        ret: p.return_type.clone(),
+                    },
+                );
+            }
+            LibraryElement::GlobalVars(b) => globals(b, &mut index),
+            LibraryElement::Configuration(c) => {
+                for b in c
+                    .globals
+                    .iter()
+                    .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+                {
+                    globals(b, &mut index);
+                }
+            }
+        }
+    }
+    index
+}
+
+/// An element holding `src[r]` as its text (an `<ST>` or `<IL>` body).
+fn text_element<'a>(name: &'a str, src: &'a str, r: Range<usize>) -> Element<'a> {
+    Element {
+        name,
+        raw_tag: name,
+        text: vec![TextSeg {
+            text: Cow::Borrowed(src.get(r.clone()).unwrap_or("")),
+            start: r.start,
+            end: r.end,
+            kind: SegKind::CData,
+        }],
+        tag_start: r.start,
+        tag_end: r.start,
+        end: r.end,
+        ..Default::default()
+    }
+}
+
+fn element<'a>(name: &'a str, raw_tag: &'a str, at: Range<usize>) -> Element<'a> {
+    Element {
+        name,
+        raw_tag,
+        tag_start: at.start,
+        tag_end: at.end,
+        end: at.end,
+        ..Default::default()
+    }
+}
+
+/// Escapes an attribute value for a synthesized start tag.
+fn attr_value(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('"', "&quot;")
+        .replace('<', "&lt;")
+}
+
+/// Lowers the textual SFC body `src[body]` of `pou` (file `file`). Diagnostics go to `diags`; a chart with
+/// errors in its structure gives no code.
+pub fn lower(
+    file: FileId,
+    src: &str,
+    body: Range<usize>,
+    pou: &Pou,
+    index: &Index,
+    diags: &mut Diagnostics,
+) -> (Vec<IlStmt>, Vec<VarDecl>) {
+    let pou_name = pou.name.name.clone();
+    let (tc, found) = sfc::read(file, src, body.clone());
+    let broken = !found.is_empty();
+    for d in found {
+        diags.push(d);
+    }
+    let mut ctx = Ctx::new(file, src, diags);
+    if pou.kind == PouKind::Function {
+        report(
+            &mut ctx,
+            code::E3125,
+            Span::new(file, pou.name.span.start as usize, pou.name.span.end as usize),
+            &pou_name,
+            None,
+            format!(
+                "function `{pou_name}` is a sequential function chart: a function keeps no state \
+                 between calls, so it cannot remember its active steps (make it a function block or a program)"
+            ),
+        );
+        return (Vec::new(), Vec::new());
+    }
+    if broken {
+        return (Vec::new(), Vec::new());
+    }
+    // Start tags of the in-memory elements (the attribute readers parse them).
+    let action_tags: Vec<String> = tc
+        .actions
+        .iter()
+        .map(|a| format!("action name=\"{}\"", attr_value(&a.name)))
+        .collect();
+    let assoc_tags: Vec<Vec<(String, String)>> = tc
+        .steps
+        .iter()
+        .map(|s| {
+            s.associations
+                .iter()
+                .map(|a| {
+                    let mut t = format!("action qualifier=\"{}\"", attr_value(&a.qualifier));
+                    if let Some(d) = &a.time {
+                        let text = src.get(d.clone()).unwrap_or("").trim();
+                        t.push_str(&format!(" duration=\"{}\"", attr_value(text)));
+                    }
+                    (t, format!("reference name=\"{}\"", attr_value(&a.action)))
+                })
+                .collect()
+        })
+        .collect();
+
+    // <pou><actions><action name=..><body><ST>..</ST></body></action>...</actions></pou>
+    let actions: Vec<Element> = tc
+        .actions
+        .iter()
+        .zip(&action_tags)
+        .map(|(a, tag)| {
+            let mut body_el = element("body", "body", a.name_range.clone());
+            body_el.children =
+                vec![text_element(body_lang(src, &a.body), src, a.body.clone())].into();
+            let mut act = element("action", tag, a.name_range.clone());
+            act.children = vec![body_el].into();
+            act
+        })
+        .collect();
+    let mut actions_el = element("actions", "actions", body.start..body.start);
+    actions_el.children = actions.into();
+    let mut pou_el = element("pou", "pou", body.start..body.start);
+    pou_el.children = vec![actions_el].into();
+
+    let conds: Vec<Element> = tc
+        .transitions
+        .iter()
+        .map(|t| match &t.cond {
+            TextCondition::Expression(r) => text_element("ST", src, r.clone()),
+            TextCondition::Instructions(r) => text_element("IL", src, r.clone()),
+        })
+        .collect();
+    let assocs: Vec<Vec<Element>> = tc
+        .steps
+        .iter()
+        .zip(&assoc_tags)
+        .map(|(s, tags)| {
+            s.associations
+                .iter()
+                .zip(tags)
+                .map(|(a, (tag, rtag))| {
+                    let mut el = element("action", tag, a.range.clone());
+                    el.children =
+                        vec![element("reference", rtag, a.range.start..a.range.start)].into();
+                    el
+                })
+                .collect()
+        })
+        .collect();
+
+    let span = |r: &Range<usize>| Span::new(file, r.start, r.end);
+    let steps: Vec<Step> = tc
+        .steps
+        .iter()
+        .enumerate()
+        .map(|(k, s)| Step {
+            id: (k + 1).to_string(),
+            name: s.name.clone(),
+            initial: s.initial,
+            span: span(&s.name_range),
+        })
+        .collect();
+    let first_transition = tc.steps.len() + 1;
+    let mut transitions: Vec<Transition> = tc
+        .transitions
+        .iter()
+        .zip(&conds)
+        .enumerate()
+        .map(|(k, (t, c))| Transition {
+            id: (first_transition + k).to_string(),
+            span: span(&t.range),
+            cond: CondSource::Inline(c, ""),
+            pre: t.from.clone(),
+            post: t.to.clone(),
+            order: (t.priority.unwrap_or(u32::MAX), 0, 0, 0, k as u64),
+        })
+        .collect();
+    transitions.sort_by_key(|t| t.order);
+    let mut associations = Vec::new();
+    for (k, (s, els)) in tc.steps.iter().zip(&assocs).enumerate() {
+        for (i, el) in els.iter().enumerate() {
+            associations.push(Association {
+                step: k,
+                block_id: s.name.clone(),
+                index: i,
+                el,
+            });
+        }
+    }
+    // every step needs a transition leaving it (E3121, as for XML charts)
+    for (k, s) in tc.steps.iter().enumerate() {
+        if !transitions.iter().any(|t| t.pre.contains(&k)) {
+            report(
+                &mut ctx,
+                code::E3121,
+                span(&s.name_range),
+                &pou_name,
+                None,
+                format!(
+                    "step `{}` has no following transition: once active it stays active",
+                    s.name
+                ),
+            );
+        }
+    }
+    let chart = Chart {
+        steps,
+        transitions,
+        associations,
+        network_elements: Vec::new(),
+    };
+    let sfc_el = element("SFC", "SFC", body.start..body.start);
+    super::lower_chart(&mut ctx, index, &pou_el, pou, &sfc_el, chart)
+}
+
+/// `ST` when the action body holds an ST statement (`:=` or `;`), else `IL` (instructions, one per line).
+fn body_lang(src: &str, r: &Range<usize>) -> &'static str {
+    let t = src.get(r.clone()).unwrap_or("");
+    if t.contains(":=") || t.contains(';') {
+        "ST"
+    } else {
+        "IL"
+    }
+}
