@@ -1105,31 +1105,59 @@ pub fn stop_summary(trace: &str, unit: &str) -> Vec<String> {
         .enumerate()
         .filter_map(|(k, c)| c.strip_suffix(".Busy").map(|b| (k, b)))
         .collect();
-    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-    let num = |r: usize, k: Option<usize>| {
-        k.and_then(|k| rows[r].get(k))
-            .and_then(|x| x.parse::<f64>().ok())
-            .unwrap_or(0.0)
-    };
-    let is_true = |r: usize, k: usize| rows[r].get(k).is_some_and(|x| *x == "1" || *x == "TRUE");
-    let mut out = Vec::new();
-    for (axis, k) in axes {
-        for (r, row) in rows.iter().enumerate() {
-            let req = num(r, k[0]);
+    // The rows are streamed: only the columns read here are kept, and only the last three rows (a
+    // full trace has a hundred and more columns and hundreds of thousands of rows).
+    let mut kept: Vec<usize> = vec![0];
+    kept.extend(axes.iter().flat_map(|(_, k)| k.iter().flatten().copied()));
+    kept.extend(busy.iter().map(|(k, _)| *k));
+    kept.sort_unstable();
+    kept.dedup();
+    let slot = |k: usize| kept.binary_search(&k).ok();
+    let mut window: [Vec<&str>; 3] = Default::default();
+    let mut per_axis: Vec<Vec<String>> = vec![Vec::new(); axes.len()];
+    for (r, line) in lines.enumerate() {
+        window.rotate_left(1);
+        let row = &mut window[2];
+        row.clear();
+        row.resize(kept.len(), "");
+        let mut next = 0;
+        for (k, field) in line.split(',').enumerate() {
+            if k == kept[next] {
+                row[next] = field;
+                next += 1;
+                if next == kept.len() {
+                    break;
+                }
+            }
+        }
+        // `back` rows before this one (0, 1 or 2), if it exists
+        let get = |back: usize, k: usize| {
+            (back <= r)
+                .then(|| slot(k).map(|s| window[2 - back][s]))
+                .flatten()
+        };
+        let num = |k: Option<usize>| {
+            k.and_then(|k| get(0, k))
+                .and_then(|x| x.parse::<f64>().ok())
+                .unwrap_or(0.0)
+        };
+        let is_true = |back: usize, k: usize| get(back, k).is_some_and(|x| x == "1" || x == "TRUE");
+        for ((axis, k), out) in axes.iter().zip(per_axis.iter_mut()) {
+            let req = num(k[0]);
             if req <= 0.0 {
                 continue;
             }
             // The block's Busy rises in the scan that gave the stop: this row or the one before.
+            let rises = |back: usize, j: usize| {
+                back <= r && is_true(back, j) && (back == r || !is_true(back + 1, j))
+            };
             let block = busy
                 .iter()
-                .find(|(j, _)| {
-                    (r.saturating_sub(1)..=r)
-                        .any(|x| is_true(x, *j) && (x == 0 || !is_true(x - 1, *j)))
-                })
+                .find(|(j, _)| rises(1, *j) || rises(0, *j))
                 .map(|(_, b)| format!(" {b}"))
                 .unwrap_or_default();
-            let cycle = row.first().copied().unwrap_or("?");
-            let (jr, jg) = (num(r, k[2]), num(r, k[3]));
+            let cycle = get(0, 0).unwrap_or("?");
+            let (jr, jg) = (num(k[2]), num(k[3]));
             let jerk = if jr == 0.0 {
                 format!("jerk the axis's {jg} {unit}/s^3")
             } else {
@@ -1137,11 +1165,11 @@ pub fn stop_summary(trace: &str, unit: &str) -> Vec<String> {
             };
             out.push(format!(
                 "motion: axis {axis}: MC_Stop{block} at cycle {cycle}: deceleration requested {req} {unit}/s^2, reached {} {unit}/s^2; {jerk} (capped to the axis limits; motion-lib README, \"MC_Stop\")",
-                num(r, k[1])
+                num(k[1])
             ));
         }
     }
-    out
+    per_axis.concat()
 }
 
 fn motion_plan(file: &std::path::Path) -> i32 {
