@@ -57,8 +57,20 @@ fn parse(csv: &str) -> Result<Trace, String> {
     }
     let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
     for l in lines {
-        for (i, v) in csv_fields(l).iter().enumerate().take(header.len()) {
-            cols[i].push(v.parse::<f64>().unwrap_or(f64::NAN));
+        let mut push = |i: usize, v: &str| {
+            if let Some(col) = cols.get_mut(i) {
+                col.push(v.parse::<f64>().unwrap_or(f64::NAN));
+            }
+        };
+        if l.contains('"') {
+            for (i, v) in csv_fields(l).iter().enumerate() {
+                push(i, v);
+            }
+        } else {
+            // the common row (no quoted field): no allocation per field
+            for (i, v) in l.split(',').enumerate() {
+                push(i, v);
+            }
         }
     }
     let time_s = cols[1].iter().map(|t| t / 1000.0).collect();
