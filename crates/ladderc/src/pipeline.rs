@@ -682,7 +682,6 @@ impl Session {
     }
 }
 
-/// The error of a file that is neither in memory nor to be read from the file system.
 /// Lowers the bodies written in textual SFC (IEC 61131-3 2.6 in an ST file) with the SFC lowering of
 /// PLCopen XML charts, once every unit's declarations are known.
 fn lower_textual_sfc(
@@ -730,6 +729,7 @@ fn lower_textual_sfc(
     }
 }
 
+/// The error of a file that is neither in memory nor to be read from the file system.
 fn not_in_memory() -> std::io::Error {
     std::io::Error::new(
         std::io::ErrorKind::NotFound,
