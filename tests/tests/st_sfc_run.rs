@@ -17,23 +17,7 @@ fn fixture(dir: &str, name: &str) -> PathBuf {
 
 /// Runs `file` for `cycles` scans of 10 ms with `stimulus`; returns the trace text.
 fn run(file: &Path, cycles: u32, stimulus: &str, watch: &[&str]) -> String {
-    let dir = tempfile::tempdir().unwrap();
-    let stim = dir.path().join("stim.csv");
-    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
-    let trace = dir.path().join("trace.csv");
-    let out = common::ladderc()
-        .arg("run")
-        .arg(file)
-        .args(["--cycles", &cycles.to_string(), "--cycle-ms", "10"])
-        .arg("--stimulus")
-        .arg(&stim)
-        .arg("--trace")
-        .arg(&trace)
-        .args(["--watch", &watch.join(",")])
-        .output()
-        .unwrap();
-    common::assert_ok(&out);
-    std::fs::read_to_string(&trace).unwrap()
+    common::run_with_stimulus(file, cycles, stimulus, watch)
 }
 
 /// The textual chart and its XML twin give the same trace; returns it.

@@ -130,3 +130,25 @@ pub fn split_csv(line: &str) -> Vec<String> {
     out.push(cur);
     out
 }
+
+/// `ladderc run FILE` for `cycles` scans of 10 ms with `stimulus` (rows `cycle,variable,value` after the
+/// header), tracing the `watch` columns; returns the trace text. Panics when the run fails.
+pub fn run_with_stimulus(file: &Path, cycles: u32, stimulus: &str, watch: &[&str]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
+    let trace = dir.path().join("trace.csv");
+    let out = ladderc()
+        .arg("run")
+        .arg(file)
+        .args(["--cycles", &cycles.to_string(), "--cycle-ms", "10"])
+        .arg("--stimulus")
+        .arg(&stim)
+        .arg("--trace")
+        .arg(&trace)
+        .args(["--watch", &watch.join(",")])
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    std::fs::read_to_string(&trace).unwrap()
+}
