@@ -7,6 +7,7 @@
 //! is read from the trace and the summary the binary wrote.
 
 mod common;
+use common::column;
 use common::ladderc;
 
 const PROGRAM: &str = "PROGRAM glim
@@ -51,18 +52,6 @@ const AXES: &str = r#"{ "cycle_ms": 1, "queue_depth": 4,
               "jerk": 1000, "software_limits": { "negative": -10, "positive": 10 } } ],
   "groups": [ { "name": "G1", "axes": [ { "axis": "X1", "identity": "X" }, { "axis": "Y1", "identity": "Y" } ] } ] }
 "#;
-
-fn column(trace: &str, name: &str) -> Vec<f64> {
-    let mut lines = trace.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header
-        .iter()
-        .position(|h| *h == name)
-        .unwrap_or_else(|| panic!("no column {name}"));
-    lines
-        .map(|l| l.split(',').nth(k).unwrap().parse::<f64>().unwrap())
-        .collect()
-}
 
 #[test]
 fn group_paths_keep_the_software_limits_and_a_tight_arc_is_slowed_and_reported() {

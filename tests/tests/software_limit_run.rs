@@ -4,6 +4,7 @@
 //! range (Done). Every figure is read from the trace the binary wrote.
 
 mod common;
+use common::column;
 use common::ladderc;
 
 const PROGRAM: &str = "PROGRAM lim
@@ -60,18 +61,6 @@ const AXES: &str = r#"{ "cycle_ms": 1, "queue_depth": 4,
   "axes": [ { "name": "X1", "unit": "mm", "velocity": 100, "acceleration": 100, "deceleration": 100,
               "jerk": 1000, "software_limits": { "negative": -10, "positive": 50 } } ] }
 "#;
-
-fn column(trace: &str, name: &str) -> Vec<f64> {
-    let mut lines = trace.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header
-        .iter()
-        .position(|h| *h == name)
-        .unwrap_or_else(|| panic!("no column {name}"));
-    lines
-        .map(|l| l.split(',').nth(k).unwrap().parse::<f64>().unwrap())
-        .collect()
-}
 
 #[test]
 fn velocity_move_stops_at_the_limit_reset_and_back_into_range() {

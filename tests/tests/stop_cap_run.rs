@@ -5,6 +5,7 @@
 //! in exactly one row, the run summary names the block, and every cycle keeps the limits.
 
 mod common;
+use common::column;
 use common::ladderc;
 
 const PROGRAM: &str = "PROGRAM cap
@@ -71,18 +72,6 @@ const AXES: &str = r#"{ "cycle_ms": 1, "queue_depth": 4,
   "axes": [ { "name": "X1", "unit": "mm", "velocity": 100, "acceleration": 100, "deceleration": 100,
               "jerk": 1000 } ] }
 "#;
-
-fn column(trace: &str, name: &str) -> Vec<f64> {
-    let mut lines = trace.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header
-        .iter()
-        .position(|h| *h == name)
-        .unwrap_or_else(|| panic!("no column {name}"));
-    lines
-        .map(|l| l.split(',').nth(k).unwrap().parse::<f64>().unwrap())
-        .collect()
-}
 
 #[test]
 fn a_stop_beyond_the_axis_limits_is_capped_and_reported() {

@@ -152,3 +152,17 @@ pub fn run_with_stimulus(file: &Path, cycles: u32, stimulus: &str, watch: &[&str
     assert_ok(&out);
     std::fs::read_to_string(&trace).unwrap()
 }
+
+/// The numeric column `name` of a trace (CSV text with a header row), one value per cycle. Panics when
+/// the column is missing or a value is not a number.
+pub fn column(trace: &str, name: &str) -> Vec<f64> {
+    let mut lines = trace.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let k = header
+        .iter()
+        .position(|h| *h == name)
+        .unwrap_or_else(|| panic!("no column {name}"));
+    lines
+        .map(|l| l.split(',').nth(k).unwrap().parse::<f64>().unwrap())
+        .collect()
+}
