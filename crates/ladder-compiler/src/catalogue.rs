@@ -415,16 +415,37 @@ pub enum Family {
 
 /// The family of an elementary type name (case-insensitive); `None` for user and FB types.
 pub fn family(type_name: &str) -> Option<Family> {
-    Some(match type_name.to_ascii_uppercase().as_str() {
-        "BOOL" => Family::Bool,
-        "SINT" | "INT" | "DINT" | "LINT" | "USINT" | "UINT" | "UDINT" | "ULINT" => Family::Int,
-        "REAL" | "LREAL" => Family::Real,
-        "BYTE" | "WORD" | "DWORD" | "LWORD" => Family::Bits,
-        "TIME" | "LTIME" => Family::Time,
-        "DATE" | "TIME_OF_DAY" | "TOD" | "DATE_AND_TIME" | "DT" => Family::Date,
-        "STRING" | "WSTRING" => Family::String,
-        _ => return None,
-    })
+    // Compared without case instead of upper-casing a copy: called for every contact and coil.
+    const FAMILIES: [(&str, Family); 24] = [
+        ("BOOL", Family::Bool),
+        ("SINT", Family::Int),
+        ("INT", Family::Int),
+        ("DINT", Family::Int),
+        ("LINT", Family::Int),
+        ("USINT", Family::Int),
+        ("UINT", Family::Int),
+        ("UDINT", Family::Int),
+        ("ULINT", Family::Int),
+        ("REAL", Family::Real),
+        ("LREAL", Family::Real),
+        ("BYTE", Family::Bits),
+        ("WORD", Family::Bits),
+        ("DWORD", Family::Bits),
+        ("LWORD", Family::Bits),
+        ("TIME", Family::Time),
+        ("LTIME", Family::Time),
+        ("DATE", Family::Date),
+        ("TIME_OF_DAY", Family::Date),
+        ("TOD", Family::Date),
+        ("DATE_AND_TIME", Family::Date),
+        ("DT", Family::Date),
+        ("STRING", Family::String),
+        ("WSTRING", Family::String),
+    ];
+    FAMILIES
+        .iter()
+        .find(|(n, _)| n.eq_ignore_ascii_case(type_name))
+        .map(|(_, f)| *f)
 }
 
 /// Whether a value of family `from` may drive an input of family `to` (IEC 61131-3 ed. 3 implicit
@@ -455,5 +476,19 @@ mod tests {
         assert!(is_library_type("axis_ref"));
         assert!(!compatible(Family::Bool, Family::Int));
         assert!(compatible(Family::Int, Family::Real));
+    }
+
+    #[test]
+    fn families_ignore_case_and_know_every_elementary_name() {
+        assert_eq!(family("bool"), Some(Family::Bool));
+        assert_eq!(family("Udint"), Some(Family::Int));
+        assert_eq!(family("lreal"), Some(Family::Real));
+        assert_eq!(family("dword"), Some(Family::Bits));
+        assert_eq!(family("ltime"), Some(Family::Time));
+        assert_eq!(family("time_of_day"), Some(Family::Date));
+        assert_eq!(family("wString"), Some(Family::String));
+        assert_eq!(family("TON"), None);
+        assert_eq!(family(""), None);
+        assert_eq!(family("BOOLX"), None);
     }
 }

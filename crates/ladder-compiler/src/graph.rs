@@ -236,19 +236,20 @@ impl Node {
 pub struct Graph {
     /// Every non-comment element, in document order; [`Wire::from`] indexes this.
     pub nodes: Vec<Node>,
-    /// Networks in execution order; each lists its node indexes.
+    /// Networks in execution order; each lists its node indexes in increasing order.
     pub networks: Vec<Vec<usize>>,
     /// For each continuation node, the connector nodes of the same name.
     pub continuation_sources: HashMap<usize, Vec<usize>>,
 }
 
-fn bool_attr(e: &Element, name: &str) -> bool {
-    e.attr(name)
-        .is_some_and(|v| v.trim() == "true" || v.trim() == "1")
+/// A boolean attribute's value (`true` or `1`, surrounding blanks ignored).
+fn truthy(v: Option<&str>) -> bool {
+    v.is_some_and(|v| v.trim() == "true" || v.trim() == "1")
 }
 
-fn edge_attr(e: &Element) -> Edge {
-    match e.attr("edge").map(str::trim) {
+/// The `edge` attribute's value.
+fn edge_of(v: Option<&str>) -> Edge {
+    match v.map(str::trim) {
         Some("rising") => Edge::Rising,
         Some("falling") => Edge::Falling,
         _ => Edge::None,
@@ -266,17 +267,30 @@ fn raw_wires<'x>(ctx: &Ctx, point: Option<&'x Element>) -> Vec<RawWire<'x>> {
     point
         .map(|p| {
             p.children_named("connection")
-                .map(|c| RawWire {
-                    ref_id: c.attr("refLocalId").unwrap_or_default().trim(),
-                    pin: c
-                        .attr("formalParameter")
-                        .map(|s| s.trim().to_string())
-                        .filter(|s| !s.is_empty()),
-                    span: ctx.tag(c),
+                .map(|c| {
+                    let [ref_id, pin] = c.attrs(["refLocalId", "formalParameter"]);
+                    RawWire {
+                        ref_id: ref_id.unwrap_or_default().trim(),
+                        pin: pin
+                            .map(str::trim)
+                            .filter(|s| !s.is_empty())
+                            .map(str::to_string),
+                        span: ctx.tag(c),
+                    }
                 })
                 .collect()
         })
         .unwrap_or_default()
+}
+
+/// A `<position>` coordinate in the editor's units, rounded toward zero (0 when absent or not a number).
+fn coord(v: Option<&str>) -> i64 {
+    let Some(v) = v.map(str::trim) else { return 0 };
+    // Short integers (the usual case) are exact as f64 too: the same value without the float parser.
+    if v.len() <= 15 && v.bytes().all(|b| b.is_ascii_digit()) && !v.is_empty() {
+        return v.parse().unwrap_or(0);
+    }
+    v.parse::<f64>().map(|v| v as i64).unwrap_or(0)
 }
 
 fn text_of(ctx: &Ctx, e: &Element, child: &str) -> (String, Span) {
@@ -297,8 +311,28 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     for e in &body.children {
         let span = ctx.tag(e);
         let mut pin_wires = Vec::new();
+        if matches!(
+            e.name,
+            "comment" | "addData" | "vendorElement" | "documentation"
+        ) {
+            continue;
+        }
+        // Every attribute read below, found in one pass over the start tag.
+        let [local_id, negated, edge, storage, exec_order, negated_in, negated_out, a_name, label, type_name, instance_name] =
+            e.attrs([
+                "localId",
+                "negated",
+                "edge",
+                "storage",
+                "executionOrderId",
+                "negatedIn",
+                "negatedOut",
+                "name",
+                "label",
+                "typeName",
+                "instanceName",
+            ]);
         let kind = match e.name {
-            "comment" | "addData" | "vendorElement" | "documentation" => continue,
             "leftPowerRail" => Kind::LeftRail,
             "rightPowerRail" => Kind::RightRail,
             "contact" => {
@@ -306,8 +340,8 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::Contact {
                     var,
                     var_span,
-                    negated: bool_attr(e, "negated"),
-                    edge: edge_attr(e),
+                    negated: truthy(negated),
+                    edge: edge_of(edge),
                 }
             }
             "coil" => {
@@ -315,13 +349,13 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::Coil {
                     var,
                     var_span,
-                    negated: bool_attr(e, "negated"),
-                    storage: match e.attr("storage").map(str::trim) {
+                    negated: truthy(negated),
+                    storage: match storage.map(str::trim) {
                         Some("set") => Storage::Set,
                         Some("reset") => Storage::Reset,
                         _ => Storage::None,
                     },
-                    edge: edge_attr(e),
+                    edge: edge_of(edge),
                 }
             }
             "inVariable" => {
@@ -329,7 +363,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::InVar {
                     expr,
                     expr_span,
-                    negated: bool_attr(e, "negated"),
+                    negated: truthy(negated),
                 }
             }
             "outVariable" => {
@@ -337,7 +371,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::OutVar {
                     expr,
                     expr_span,
-                    negated: bool_attr(e, "negated"),
+                    negated: truthy(negated),
                 }
             }
             "inOutVariable" => {
@@ -345,22 +379,22 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::InOutVar {
                     expr,
                     expr_span,
-                    negated_in: bool_attr(e, "negatedIn"),
-                    negated_out: bool_attr(e, "negatedOut"),
+                    negated_in: truthy(negated_in),
+                    negated_out: truthy(negated_out),
                 }
             }
             "connector" => Kind::Connector {
-                name: e.attr("name").unwrap_or_default().trim().to_string(),
+                name: a_name.unwrap_or_default().trim().to_string(),
             },
             "continuation" => Kind::Continuation {
-                name: e.attr("name").unwrap_or_default().trim().to_string(),
+                name: a_name.unwrap_or_default().trim().to_string(),
             },
             "jump" => Kind::Jump {
-                label: e.attr("label").unwrap_or_default().trim().to_string(),
+                label: label.unwrap_or_default().trim().to_string(),
                 label_span: ctx.attr_span(e, "label"),
             },
             "label" => Kind::Label {
-                label: e.attr("label").unwrap_or_default().trim().to_string(),
+                label: label.unwrap_or_default().trim().to_string(),
                 label_span: ctx.attr_span(e, "label"),
             },
             "return" => Kind::Return,
@@ -375,14 +409,12 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                     {
                         let point = v.child("connectionPointIn");
                         pin_wires.push(raw_wires(ctx, point));
+                        let [formal, negated, edge] =
+                            v.attrs(["formalParameter", "negated", "edge"]);
                         inputs.push(InPin {
-                            name: v
-                                .attr("formalParameter")
-                                .unwrap_or_default()
-                                .trim()
-                                .to_string(),
-                            negated: bool_attr(v, "negated"),
-                            edge: edge_attr(v),
+                            name: formal.unwrap_or_default().trim().to_string(),
+                            negated: truthy(negated),
+                            edge: edge_of(edge),
                             wires: Vec::new(),
                             span: ctx.tag(v),
                             in_out,
@@ -394,22 +426,18 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                     .into_iter()
                     .flat_map(|l| l.children_named("variable"))
                 {
+                    let [formal, negated] = v.attrs(["formalParameter", "negated"]);
                     outputs.push(OutPin {
-                        name: v
-                            .attr("formalParameter")
-                            .unwrap_or_default()
-                            .trim()
-                            .to_string(),
-                        negated: bool_attr(v, "negated"),
+                        name: formal.unwrap_or_default().trim().to_string(),
+                        negated: truthy(negated),
                     });
                 }
-                let instance = e
-                    .attr("instanceName")
+                let instance = instance_name
                     .map(str::trim)
                     .filter(|s| !s.is_empty())
                     .map(|s| (s.to_string(), ctx.attr_span(e, "instanceName")));
                 Kind::Block {
-                    type_name: e.attr("typeName").unwrap_or_default().trim().to_string(),
+                    type_name: type_name.unwrap_or_default().trim().to_string(),
                     type_span: ctx.attr_span(e, "typeName"),
                     instance,
                     inputs,
@@ -425,14 +453,14 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                     .at(span)
                     .with_xml(diagnostics::XmlContext {
                         pou: Some(pou.to_string()),
-                        local_id: e.attr("localId").map(str::to_string),
+                        local_id: local_id.map(str::to_string),
                         network: None,
                     }),
                 );
                 continue;
             }
         };
-        let Some(id) = e.attr("localId").map(str::trim).filter(|s| !s.is_empty()) else {
+        let Some(id) = local_id.map(str::trim).filter(|s| !s.is_empty()) else {
             ctx.error(code::E3013, span, format!("<{}> without a localId", e.name));
             continue;
         };
@@ -454,13 +482,9 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
             );
             continue;
         }
-        let pos = e.child("position");
-        let coord = |n: &str| {
-            pos.and_then(|p| p.attr(n))
-                .and_then(|v| v.trim().parse::<f64>().ok())
-                .map(|v| v as i64)
-                .unwrap_or(0)
-        };
+        let [x, y] = e
+            .child("position")
+            .map_or([None, None], |p| p.attrs(["x", "y"]));
         let point = e.child("connectionPointIn");
         ids.insert(id, nodes.len());
         let raws = raw_wires(ctx, point);
@@ -472,11 +496,9 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
             num: id.parse().unwrap_or(u64::MAX),
             kind,
             span,
-            exec_order: e
-                .attr("executionOrderId")
-                .and_then(|v| v.trim().parse().ok()),
-            x: coord("x"),
-            y: coord("y"),
+            exec_order: exec_order.and_then(|v| v.trim().parse().ok()),
+            x: coord(x),
+            y: coord(y),
             input: Vec::new(),
             has_input: point.is_some(),
             wired,
@@ -685,6 +707,25 @@ pub fn cycles<S: std::hash::BuildHasher>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn coordinates_round_toward_zero_like_the_float_reading() {
+        for (text, want) in [
+            ("40", 40),
+            (" 7 ", 7),
+            ("-12", -12),
+            ("12.9", 12),
+            ("-12.9", -12),
+            ("1e3", 1000),
+            ("", 0),
+            ("x", 0),
+            ("123456789012345", 123_456_789_012_345),
+            ("9007199254740993", 9_007_199_254_740_992),
+        ] {
+            assert_eq!(coord(Some(text)), want, "{text:?}");
+        }
+        assert_eq!(coord(None), 0);
+    }
 
     #[test]
     fn finds_cycles_only_where_they_are() {

@@ -170,8 +170,10 @@ impl<'i> BodyLowering<'i> {
         self.check_jumps(ctx, g);
         self.check_double_writes(ctx, g);
         let mut out = Vec::new();
+        // One network state for the whole body: cleared per network, its lists keep their room.
+        let mut nl = NetLowering::new(self, g, 0);
         for (n, net) in g.networks.iter().enumerate() {
-            let mut nl = NetLowering::new(self, g, n + 1);
+            nl.reset(n + 1);
             if let Some(order) = nl.order(ctx, net) {
                 nl.build(ctx, &order);
                 if let Some(span) = nl.too_deep {
@@ -356,12 +358,22 @@ impl<'i> BodyLowering<'i> {
         }
     }
 
+    /// The declared type of a plain name (hidden variables included), without copying it.
+    fn declared(&self, name: &str) -> Option<&TypeRef> {
+        let mut buf = [0u8; KEY_BUF];
+        self.vars
+            .get(upper(name, &mut buf).as_ref())
+            .map(|t| t.as_ref())
+    }
+
     fn var_type(&self, v: &VarRef) -> Option<TypeRef> {
-        let key = v.base.key();
-        let (mut ty, skip) = match self.vars.get(key.as_str()) {
-            Some(t) => (t.as_ref().clone(), 0),
+        let (mut ty, skip) = match self.declared(&v.base.name) {
+            Some(t) => (t.clone(), 0),
             // `GVL.x`: a member of a named global variable list
-            None => match (self.index.global_lists.get(&key), v.accessors.first()) {
+            None => match (
+                self.index.global_lists.get(&v.base.key()),
+                v.accessors.first(),
+            ) {
                 (Some(list), Some(Accessor::Field(m))) => (list.get(&m.key())?.clone(), 1),
                 _ => return None,
             },
@@ -445,6 +457,36 @@ fn sanitize(id: &str) -> String {
 
 fn bool_ty(span: Span) -> TypeRef {
     TypeRef::Named(Ident::new("BOOL", span))
+}
+
+/// Room for the upper-cased names [`upper`] folds without allocating (longer ones allocate).
+const KEY_BUF: usize = 64;
+
+/// `name` with ASCII letters upper-cased (the key of [`BodyLowering`]'s variable map, as
+/// `Ident::key` gives it), written into `buf` when it fits.
+fn upper<'b>(name: &str, buf: &'b mut [u8; KEY_BUF]) -> Cow<'b, str> {
+    let bytes = name.as_bytes();
+    if bytes.len() > KEY_BUF {
+        return Cow::Owned(name.to_ascii_uppercase());
+    }
+    let out = &mut buf[..bytes.len()];
+    out.copy_from_slice(bytes);
+    out.make_ascii_uppercase();
+    // Only ASCII bytes changed: still UTF-8.
+    match std::str::from_utf8(out) {
+        Ok(s) => Cow::Borrowed(s),
+        Err(_) => Cow::Owned(name.to_ascii_uppercase()),
+    }
+}
+
+/// The family of a known type (what [`family_of`] gives for `Ty::Known(ty)`), without a copy.
+fn family_of_type(ty: &TypeRef) -> Option<Family> {
+    match ty {
+        TypeRef::Named(n) => catalogue::family(&n.name),
+        TypeRef::String { .. } => Some(Family::String),
+        TypeRef::Subrange { base, .. } => catalogue::family(&base.name),
+        _ => None,
+    }
 }
 
 fn family_of(ty: &Ty) -> Option<Family> {
@@ -555,6 +597,25 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             depth: Vec::new(),
             too_deep: None,
         }
+    }
+
+    /// The state for network `network` (1-based), as [`NetLowering::new`] makes it, keeping the
+    /// capacity of every list and map.
+    fn reset(&mut self, network: usize) {
+        self.network = network;
+        self.vals.clear();
+        self.spans.clear();
+        self.temps.clear();
+        self.uses.clear();
+        self.pin_vals.clear();
+        self.built.clear();
+        self.poisoned.clear();
+        self.actions.clear();
+        self.writes.clear();
+        self.controls.clear();
+        self.used.clear();
+        self.depth.clear();
+        self.too_deep = None;
     }
 
     fn at(&self, node: usize) -> Where {
@@ -875,10 +936,36 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         }
     }
 
-    fn check_bool(&mut self, ctx: &mut Ctx, node: usize, v: ValId, span: Span, what: &str) {
-        let ty = self.ty(v);
-        if let Some(f) = family_of(&ty) {
+    /// `family_of(&self.ty(v))`, without building the type.
+    fn val_family(&self, v: ValId) -> Option<Family> {
+        match &self.vals[v] {
+            Val::Const(_) | Val::And(..) | Val::Or(_) => Some(Family::Bool),
+            Val::Not(a) => self.val_family(*a),
+            Val::Leaf { op, .. } => self.operand_family(op),
+        }
+    }
+
+    /// `family_of(&self.operand_ty(op))`, without copying a declared type.
+    fn operand_family(&self, op: &Operand) -> Option<Family> {
+        match op {
+            Operand::Var(r) if r.accessors.is_empty() => {
+                self.pou.declared(&r.base.name).and_then(family_of_type)
+            }
+            _ => family_of(&self.operand_ty(op)),
+        }
+    }
+
+    fn check_bool(
+        &mut self,
+        ctx: &mut Ctx,
+        node: usize,
+        v: ValId,
+        span: Span,
+        what: std::fmt::Arguments,
+    ) {
+        if let Some(f) = self.val_family(v) {
             if f != Family::Bool {
+                let ty = self.ty(v);
                 let d = self
                     .diag(
                         ctx,
@@ -896,10 +983,17 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         }
     }
 
-    fn check_var_bool(&mut self, ctx: &mut Ctx, node: usize, op: &Operand, span: Span, what: &str) {
-        let ty = self.operand_ty(op);
-        if let Some(f) = family_of(&ty) {
+    fn check_var_bool(
+        &mut self,
+        ctx: &mut Ctx,
+        node: usize,
+        op: &Operand,
+        span: Span,
+        what: std::fmt::Arguments,
+    ) {
+        if let Some(f) = self.operand_family(op) {
             if f != Family::Bool {
+                let ty = self.operand_ty(op);
                 let d = self.diag(
                     ctx,
                     code::E3008,
@@ -992,13 +1086,13 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     ctx.report(d);
                 }
                 if let Some(v) = input {
-                    self.check_bool(ctx, i, v, span, &format!("contact `{var}`"));
+                    self.check_bool(ctx, i, v, span, format_args!("contact `{var}`"));
                 }
                 let Some(op) = self.parse_var(ctx, i, var, *var_span) else {
                     self.poisoned.insert(i);
                     return;
                 };
-                self.check_var_bool(ctx, i, &op, *var_span, &format!("contact `{var}`:"));
+                self.check_var_bool(ctx, i, &op, *var_span, format_args!("contact `{var}`:"));
                 let leaf = match edge {
                     Edge::None => self.val(Val::Leaf { op, neg: *negated }, span),
                     e => {
@@ -1044,12 +1138,12 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     self.poisoned.insert(i);
                     return;
                 };
-                self.check_bool(ctx, i, v, span, &format!("coil `{var}`"));
+                self.check_bool(ctx, i, v, span, format_args!("coil `{var}`"));
                 self.pin_vals.insert((i, String::new()), v);
                 let Some(target) = self.parse_var(ctx, i, var, *var_span) else {
                     return;
                 };
-                self.check_var_bool(ctx, i, &target, *var_span, &format!("coil `{var}`:"));
+                self.check_var_bool(ctx, i, &target, *var_span, format_args!("coil `{var}`:"));
                 let val = match edge {
                     Edge::None => v,
                     e => {
@@ -1322,7 +1416,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 v = self.trig(name, pin.edge == Edge::Falling, v, pin.span);
             }
             if pin.name.eq_ignore_ascii_case("EN") {
-                self.check_bool(ctx, i, v, pin.span, "EN input");
+                self.check_bool(ctx, i, v, pin.span, format_args!("EN input"));
                 en = Some(v);
                 continue;
             }
@@ -1862,7 +1956,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
 
     fn emit(&mut self, out: &mut Vec<IlStmt>) {
         self.count_uses();
-        let actions = std::mem::take(&mut self.actions);
+        let mut actions = std::mem::take(&mut self.actions);
         // Phase 1: evaluate.
         for a in &actions {
             match a {
@@ -2003,6 +2097,9 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 }
             }
         }
+        // The list's room serves the next network.
+        actions.clear();
+        self.actions = actions;
     }
 
     fn cond(&self, v: ValId, out: &mut Vec<IlStmt>) -> Condition {
@@ -2146,30 +2243,42 @@ fn named_type(name: &str, span: Span) -> TypeRef {
 
 /// Kahn's algorithm over `net`, ties broken by the documented order key; nodes on a loop are left out.
 fn kahn(g: &Graph, net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<usize> {
-    let mut indeg: HashMap<usize, usize> = net.iter().map(|&i| (i, 0)).collect();
-    let mut users: HashMap<usize, Vec<usize>> =
-        HashMap::with_capacity_and_hasher(net.len(), Default::default());
+    // Nodes are numbered by their place in `net` (networks list their nodes in increasing order, see
+    // `Graph::networks`), so the counts and the reverse edges are plain lists: no hashing per node.
+    debug_assert!(net.windows(2).all(|w| w[0] < w[1]));
+    let slot = |i: usize| net.binary_search(&i).ok();
+    let mut indeg: Vec<usize> = vec![0; net.len()];
+    // Reverse edges as (source slot, user node), grouped by source below.
+    let mut edges: Vec<(usize, usize)> = Vec::new();
     for (&i, d) in deps {
+        let Some(ti) = slot(i) else { continue };
         for &s in d {
-            if indeg.contains_key(&s) {
-                *indeg.get_mut(&i).unwrap_or(&mut 0) += 1;
-                users.entry(s).or_default().push(i);
+            if let Some(si) = slot(s) {
+                indeg[ti] += 1;
+                edges.push((si, i));
             }
         }
     }
+    // Users of each source in any order: the heap decides the order.
+    edges.sort_unstable();
     let mut heap = BinaryHeap::new();
-    for (&i, &d) in &indeg {
-        if d == 0 {
+    for (k, &i) in net.iter().enumerate() {
+        if indeg[k] == 0 {
             heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
         }
     }
     let mut order = Vec::with_capacity(net.len());
     while let Some(std::cmp::Reverse((_, i))) = heap.pop() {
         order.push(i);
-        for &u in users.get(&i).map(Vec::as_slice).unwrap_or(&[]) {
-            if let Some(d) = indeg.get_mut(&u) {
-                *d -= 1;
-                if *d == 0 {
+        let Some(si) = slot(i) else { continue };
+        let from = edges.partition_point(|e| e.0 < si);
+        for &(s, u) in &edges[from..] {
+            if s != si {
+                break;
+            }
+            if let Some(k) = slot(u) {
+                indeg[k] -= 1;
+                if indeg[k] == 0 {
                     heap.push(std::cmp::Reverse((g.nodes[u].order_key(), u)));
                 }
             }

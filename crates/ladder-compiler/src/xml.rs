@@ -96,6 +96,35 @@ impl<'a> Element<'a> {
             .find(|a| a.name == name)
             .map(|a| a.value.as_ref())
     }
+    /// The values of several attributes (entities decoded) in one pass over the start tag: slot `k` holds
+    /// what [`Element::attr`] would give for `names[k]` (the first attribute of that local name).
+    pub fn attrs<const N: usize>(&self, names: [&str; N]) -> [Option<&str>; N] {
+        let mut out = [None; N];
+        let mut left = N;
+        for (n, s, e) in scan_attrs(self.raw_tag) {
+            let Some(k) = names.iter().position(|x| *x == n) else {
+                continue;
+            };
+            if out[k].is_some() {
+                continue;
+            }
+            let value = &self.raw_tag[s..e];
+            out[k] = if value.contains('&') {
+                let at = self.tag_start + 1 + s;
+                self.decoded_attrs
+                    .iter()
+                    .find(|a| a.start == at)
+                    .map(|a| a.value.as_ref())
+            } else {
+                Some(value)
+            };
+            left -= 1;
+            if left == 0 {
+                break;
+            }
+        }
+        out
+    }
     /// The byte range of an attribute's raw value in the document.
     pub fn attr_range(&self, name: &str) -> Option<(usize, usize)> {
         if !self.raw_tag.contains(name) {
@@ -483,6 +512,20 @@ mod tests {
         let segs: Vec<_> = p.text.iter().map(|s| &xml[s.start..s.end]).collect();
         assert_eq!(segs, ["LD x", "&lt;", "ST y"]);
         assert_eq!(p.text[2].kind, SegKind::CData);
+    }
+
+    #[test]
+    fn attrs_in_one_pass_match_attr_one_by_one() {
+        let xml = "<a x=\"1\" p:y=\"a&amp;b\" x=\"2\" z='3' w=\"&lt;\"/>";
+        let (root, err) = parse(xml);
+        assert!(err.is_none());
+        let a = root.unwrap();
+        let names = ["y", "x", "absent", "z", "w"];
+        let got = a.attrs(names);
+        assert_eq!(got, [Some("a&b"), Some("1"), None, Some("3"), Some("<")]);
+        for (k, n) in names.iter().enumerate() {
+            assert_eq!(got[k], a.attr(n), "{n}");
+        }
     }
 
     #[test]
