@@ -302,9 +302,10 @@ fn text_of(ctx: &Ctx, e: &Element, child: &str) -> (String, Span) {
 
 /// Reads the body's elements. `pou` names the POU in diagnostics.
 pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
-    let mut nodes = Vec::new();
-    let mut raw_inputs: Vec<Vec<RawWire>> = Vec::new();
-    let mut raw_pins: Vec<Vec<Vec<RawWire>>> = Vec::new();
+    // At most one node per child element: no regrowth.
+    let mut nodes = Vec::with_capacity(body.children.len());
+    let mut raw_inputs: Vec<Vec<RawWire>> = Vec::with_capacity(body.children.len());
+    let mut raw_pins: Vec<Vec<Vec<RawWire>>> = Vec::with_capacity(body.children.len());
     // localId -> node index; the ids are borrowed from the XML text.
     let mut ids: FxHashMap<&str, usize> =
         FxHashMap::with_capacity_and_hasher(body.children.len(), Default::default());
@@ -317,21 +318,20 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
         ) {
             continue;
         }
-        // Every attribute read below, found in one pass over the start tag.
-        let [local_id, negated, edge, storage, exec_order, negated_in, negated_out, a_name, label, type_name, instance_name] =
-            e.attrs([
-                "localId",
-                "negated",
-                "edge",
-                "storage",
-                "executionOrderId",
-                "negatedIn",
-                "negatedOut",
-                "name",
-                "label",
-                "typeName",
-                "instanceName",
-            ]);
+        // Every attribute read below, found in one pass over the start tag: the element's own ones in
+        // `a`, `b`, `c` (an empty name is never found).
+        let own: [&str; 3] = match e.name {
+            "contact" => ["negated", "edge", ""],
+            "coil" => ["negated", "edge", "storage"],
+            "inVariable" | "outVariable" => ["negated", "", ""],
+            "inOutVariable" => ["negatedIn", "negatedOut", ""],
+            "connector" | "continuation" => ["name", "", ""],
+            "jump" | "label" => ["label", "", ""],
+            "block" => ["typeName", "instanceName", ""],
+            _ => ["", "", ""],
+        };
+        let [local_id, exec_order, a, b, c] =
+            e.attrs(["localId", "executionOrderId", own[0], own[1], own[2]]);
         let kind = match e.name {
             "leftPowerRail" => Kind::LeftRail,
             "rightPowerRail" => Kind::RightRail,
@@ -340,8 +340,8 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::Contact {
                     var,
                     var_span,
-                    negated: truthy(negated),
-                    edge: edge_of(edge),
+                    negated: truthy(a),
+                    edge: edge_of(b),
                 }
             }
             "coil" => {
@@ -349,13 +349,13 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::Coil {
                     var,
                     var_span,
-                    negated: truthy(negated),
-                    storage: match storage.map(str::trim) {
+                    negated: truthy(a),
+                    storage: match c.map(str::trim) {
                         Some("set") => Storage::Set,
                         Some("reset") => Storage::Reset,
                         _ => Storage::None,
                     },
-                    edge: edge_of(edge),
+                    edge: edge_of(b),
                 }
             }
             "inVariable" => {
@@ -363,7 +363,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::InVar {
                     expr,
                     expr_span,
-                    negated: truthy(negated),
+                    negated: truthy(a),
                 }
             }
             "outVariable" => {
@@ -371,7 +371,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::OutVar {
                     expr,
                     expr_span,
-                    negated: truthy(negated),
+                    negated: truthy(a),
                 }
             }
             "inOutVariable" => {
@@ -379,22 +379,22 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 Kind::InOutVar {
                     expr,
                     expr_span,
-                    negated_in: truthy(negated_in),
-                    negated_out: truthy(negated_out),
+                    negated_in: truthy(a),
+                    negated_out: truthy(b),
                 }
             }
             "connector" => Kind::Connector {
-                name: a_name.unwrap_or_default().trim().to_string(),
+                name: a.unwrap_or_default().trim().to_string(),
             },
             "continuation" => Kind::Continuation {
-                name: a_name.unwrap_or_default().trim().to_string(),
+                name: a.unwrap_or_default().trim().to_string(),
             },
             "jump" => Kind::Jump {
-                label: label.unwrap_or_default().trim().to_string(),
+                label: a.unwrap_or_default().trim().to_string(),
                 label_span: ctx.attr_span(e, "label"),
             },
             "label" => Kind::Label {
-                label: label.unwrap_or_default().trim().to_string(),
+                label: a.unwrap_or_default().trim().to_string(),
                 label_span: ctx.attr_span(e, "label"),
             },
             "return" => Kind::Return,
@@ -432,12 +432,12 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                         negated: truthy(negated),
                     });
                 }
-                let instance = instance_name
+                let instance = b
                     .map(str::trim)
                     .filter(|s| !s.is_empty())
                     .map(|s| (s.to_string(), ctx.attr_span(e, "instanceName")));
                 Kind::Block {
-                    type_name: type_name.unwrap_or_default().trim().to_string(),
+                    type_name: a.unwrap_or_default().trim().to_string(),
                     type_span: ctx.attr_span(e, "typeName"),
                     instance,
                     inputs,
@@ -506,7 +506,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     }
     // Resolve wires.
     let resolve = |ctx: &mut Ctx, raws: Vec<RawWire>, node: &Node| -> Vec<Wire> {
-        let mut out = Vec::new();
+        let mut out = Vec::with_capacity(raws.len());
         for r in raws {
             match ids.get(r.ref_id) {
                 Some(&from) => out.push(Wire {
@@ -535,7 +535,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     for (i, (raws, pins)) in raw_inputs.into_iter().zip(raw_pins).enumerate() {
         let wires = resolve(ctx, raws, &nodes[i]);
         nodes[i].input = wires;
-        let mut resolved = Vec::new();
+        let mut resolved = Vec::with_capacity(pins.len());
         for p in pins {
             resolved.push(resolve(ctx, p, &nodes[i]));
         }

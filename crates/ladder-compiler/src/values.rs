@@ -17,6 +17,11 @@ pub fn operand(text: &str, span: Span) -> Option<Operand> {
     if t.is_empty() {
         return None;
     }
+    // A plain name (the usual contact or coil) is no literal unless it is TRUE or FALSE: skip the
+    // literal readers.
+    if is_ident(t) && !t.eq_ignore_ascii_case("TRUE") && !t.eq_ignore_ascii_case("FALSE") {
+        return var_ref(t, span).map(Operand::Var);
+    }
     if let Some(l) = literal(t, span) {
         return Some(Operand::Literal(l));
     }
@@ -179,9 +184,12 @@ fn lit(kind: LiteralKind, prefix: Option<&str>, span: Span) -> Literal {
 /// A literal in IEC syntax, or `None`.
 pub fn literal(t: &str, span: Span) -> Option<Literal> {
     let t = t.trim();
-    let upper = t.to_ascii_uppercase();
-    if upper == "TRUE" || upper == "FALSE" {
-        return Some(lit(LiteralKind::Bool(upper == "TRUE"), None, span));
+    if t.eq_ignore_ascii_case("TRUE") || t.eq_ignore_ascii_case("FALSE") {
+        return Some(lit(
+            LiteralKind::Bool(t.eq_ignore_ascii_case("TRUE")),
+            None,
+            span,
+        ));
     }
     // Strings first: their text may hold `#` (`'Step #1'`) and `$` escapes.
     if let Some(s) = t.strip_prefix('\'').and_then(|s| s.strip_suffix('\'')) {
@@ -686,5 +694,27 @@ mod tests {
             operand("Color#red", sp()),
             Some(Operand::EnumValue { .. })
         ));
+    }
+
+    #[test]
+    fn plain_names_are_variables_but_true_and_false_are_literals() {
+        let Some(Operand::Var(v)) = operand(" a0 ", sp()) else {
+            panic!()
+        };
+        assert_eq!((v.base.name.as_str(), v.accessors.len()), ("a0", 0));
+        let Some(Operand::Var(v)) = operand("_x", sp()) else {
+            panic!()
+        };
+        assert_eq!(v.base.name, "_x");
+        for (text, want) in [("TRUE", true), ("false", false), ("True", true)] {
+            let Some(Operand::Literal(l)) = operand(text, sp()) else {
+                panic!("{text}")
+            };
+            assert!(
+                matches!(l.kind, LiteralKind::Bool(b) if b == want),
+                "{text}"
+            );
+        }
+        assert!(matches!(operand("truex", sp()), Some(Operand::Var(_))));
     }
 }

@@ -100,7 +100,11 @@ impl<'a> Element<'a> {
     /// what [`Element::attr`] would give for `names[k]` (the first attribute of that local name).
     pub fn attrs<const N: usize>(&self, names: [&str; N]) -> [Option<&str>; N] {
         let mut out = [None; N];
-        let mut left = N;
+        // An empty name is never found (every scanned name has a character): it does not count.
+        let mut left = names.iter().filter(|n| !n.is_empty()).count();
+        if left == 0 {
+            return out;
+        }
         for (n, s, e) in scan_attrs(self.raw_tag) {
             let Some(k) = names.iter().position(|x| *x == n) else {
                 continue;
@@ -176,6 +180,20 @@ impl<'a> Element<'a> {
                 }
             }
         })
+    }
+}
+
+/// Whether `text` is empty or only whitespace (`str::trim` would leave nothing): a byte loop for the
+/// usual ASCII indentation, the char test only past a non-ASCII byte.
+fn is_blank(text: &str) -> bool {
+    // `char::is_whitespace` also counts U+000B, which `u8::is_ascii_whitespace` does not.
+    match text
+        .bytes()
+        .position(|b| !(b.is_ascii_whitespace() || b == 0x0b))
+    {
+        None => true,
+        Some(i) if !text.as_bytes()[i].is_ascii() => text[i..].trim().is_empty(),
+        Some(_) => false,
     }
 }
 
@@ -375,7 +393,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 let raw = &body[pos..after];
                 // Indentation between elements is dropped; whitespace after the first text of an
                 // element is kept (it belongs to an embedded body).
-                if tree.is_open() && (tree.top_has_text() || !raw.trim().is_empty()) {
+                if tree.is_open() && (tree.top_has_text() || !is_blank(raw)) {
                     tree.push_text(TextSeg {
                         text: Cow::Borrowed(&body[pos..after]),
                         start: base + pos,
@@ -523,6 +541,7 @@ mod tests {
         let names = ["y", "x", "absent", "z", "w"];
         let got = a.attrs(names);
         assert_eq!(got, [Some("a&b"), Some("1"), None, Some("3"), Some("<")]);
+        assert_eq!(a.attrs(["", "z", ""]), [None, Some("3"), None]);
         for (k, n) in names.iter().enumerate() {
             assert_eq!(got[k], a.attr(n), "{n}");
         }
@@ -548,6 +567,26 @@ mod tests {
         assert_eq!(names, ["a", "b", "c", "d", "e"]);
         let listed: Vec<_> = r.descendants().iter().map(|e| e.name).collect();
         assert_eq!(listed, names);
+    }
+
+    #[test]
+    fn blank_text_is_what_trim_empties() {
+        for t in [
+            "",
+            " ",
+            "\n\t\r ",
+            "\u{a0}",
+            " \u{2003}\n",
+            "\u{b}",
+            "\u{c}",
+        ] {
+            assert!(is_blank(t), "{t:?}");
+            assert!(t.trim().is_empty(), "{t:?}");
+        }
+        for t in ["x", "  x ", "\n\u{e9}", " \u{a0}x"] {
+            assert!(!is_blank(t), "{t:?}");
+            assert!(!t.trim().is_empty(), "{t:?}");
+        }
     }
 
     #[test]
