@@ -309,7 +309,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     // localId -> node index; the ids are borrowed from the XML text.
     let mut ids: FxHashMap<&str, usize> =
         FxHashMap::with_capacity_and_hasher(body.children.len(), Default::default());
-    for e in &body.children {
+    for e in body.children {
         let span = ctx.tag(e);
         let mut pin_wires = Vec::new();
         if matches!(

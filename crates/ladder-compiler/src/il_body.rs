@@ -38,7 +38,7 @@ pub fn embedded_text(e: &Element) -> EmbeddedText {
     let base = h.text.first().map(|s| s.start).unwrap_or(h.tag_end);
     let mut text = String::new();
     let mut in_string: Option<char> = None;
-    for seg in &h.text {
+    for seg in h.text {
         let want = seg.start - base;
         while text.len() < want {
             text.push(' ');
@@ -55,7 +55,7 @@ pub fn embedded_text(e: &Element) -> EmbeddedText {
                 }
             }
             SegKind::Entity => {
-                text.push_str(&seg.text);
+                text.push_str(seg.text);
                 if in_string.is_none() {
                     while text.len() < seg.end - base {
                         text.push(' ');
@@ -97,7 +97,8 @@ mod tests {
     #[test]
     fn text_positions_match_the_xml() {
         let xml = "<IL><p>LD a\nGT b &amp;&lt; <![CDATA[ST c]]></p></IL>";
-        let (root, _) = crate::xml::parse(xml);
+        let arena = crate::xml::Arena::new();
+        let (root, _) = crate::xml::parse(xml, &arena);
         let t = embedded_text(&root.unwrap());
         for word in ["LD a", "GT b", "ST c"] {
             let k = t.text.find(word).unwrap();

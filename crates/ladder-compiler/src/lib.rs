@@ -32,7 +32,8 @@ use diagnostics::{code, Diagnostic, Diagnostics, FileId};
 
 /// Reads a PLCopen XML project and lowers it to the IL syntax tree.
 pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::CompilationUnit {
-    let (root, err) = xml::parse(xml);
+    let arena = xml::Arena::new();
+    let (root, err) = xml::parse(xml, &arena);
     let mut ctx = context::Ctx::new(file, xml, diags);
     if let Some(e) = err {
         let span = ctx.span(e.pos, e.pos);

@@ -26,7 +26,8 @@ impl Locator {
     /// Reads the project's POUs (bad XML gives an empty locator).
     pub fn new(xml_text: &str) -> Self {
         let mut entries = Vec::new();
-        if let (Some(root), _) = xml::parse(xml_text) {
+        let arena = xml::Arena::new();
+        if let (Some(root), _) = xml::parse(xml_text, &arena) {
             let mut pous = Vec::new();
             collect_pous(&root, &mut pous);
             for pou in pous {

@@ -220,7 +220,7 @@ fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<Hash
                         out.push(t.trim().to_ascii_uppercase());
                     }
                 }
-                for seg in &d.text {
+                for seg in d.text {
                     for word in seg
                         .text
                         .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
@@ -274,7 +274,7 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
     let mut found: Vec<&Element> = Vec::new();
     let mut stack = vec![root];
     while let Some(e) = stack.pop() {
-        for c in &e.children {
+        for c in e.children {
             if c.name == "addData" || c.name == "vendorElement" {
                 found.push(c);
             } else {
@@ -345,7 +345,7 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
         None => Default::default(),
     };
     if let Some(iface) = p.child("interface") {
-        for list in &iface.children {
+        for list in iface.children {
             if list.name == "returnType" {
                 return_type = decls::type_ref(ctx, list);
             } else if let Some(k) = decls::var_kind(list.name) {

@@ -112,7 +112,8 @@ mod tests {
     #[test]
     fn entities_that_split_operators_are_joined() {
         let xml = "<ST><p>IF a &lt;&gt; b AND c &gt;= d AND e &lt;= f THEN x(Q =&gt; y);</p></ST>";
-        let (root, _) = crate::xml::parse(xml);
+        let arena = crate::xml::Arena::new();
+        let (root, _) = crate::xml::parse(xml, &arena);
         let mut t = crate::il_body::embedded_text(&root.unwrap());
         join_split_operators(&mut t.text, t.base, xml);
         let words: Vec<&str> = t.text.split_whitespace().collect();

@@ -6,18 +6,43 @@
 //! Invariants: all offsets are byte offsets into the original text (BOM included); text segments keep
 //! their raw position so that bodies embedded in the XML can be mapped back (see [`Element::text`]).
 //! A malformed document yields the tree read so far plus the error position: the caller reports it.
+//!
+//! Storage: the elements, their child lists, text segments and decoded strings live in an [`Arena`]
+//! that the caller owns next to the text: building the tree allocates a few large blocks instead of one
+//! block per element, and freeing it frees those blocks (a 10,000-rung project has 630,000 elements).
 
 use quick_xml::events::Event;
 use quick_xml::Reader;
 use std::borrow::Cow;
+
+/// Where a document's tree is stored (see the module documentation); create one per document, next
+/// to its text, and pass it to [`parse`]. The tree borrows it.
+#[derive(Default)]
+pub struct Arena(bumpalo::Bump);
+
+impl Arena {
+    /// An empty arena.
+    pub fn new() -> Self {
+        Self::default()
+    }
+    /// Moves `items` into the arena: a list of children (or text segments) for an element built in
+    /// memory rather than read from a document.
+    pub fn slice<T>(&self, items: Vec<T>) -> &[T] {
+        self.0.alloc_slice_fill_iter(items)
+    }
+    /// Copies `text` into the arena.
+    pub fn str(&self, text: &str) -> &str {
+        self.0.alloc_str(text)
+    }
+}
 
 /// One attribute: local name, decoded value, byte range of the raw value.
 #[derive(Debug, Clone)]
 pub struct Attr<'a> {
     /// The local name (`xmlns:xhtml` -> `xhtml`), borrowed from the text.
     pub name: &'a str,
-    /// The value with entities decoded.
-    pub value: Cow<'a, str>,
+    /// The value with entities decoded (in the [`Arena`]).
+    pub value: &'a str,
     /// Byte offset of the raw value's first character (after the quote).
     pub start: usize,
     /// Byte offset just after the raw value (before the closing quote).
@@ -38,8 +63,8 @@ pub enum SegKind {
 /// A piece of character data: decoded text and the raw byte range it came from.
 #[derive(Debug, Clone)]
 pub struct TextSeg<'a> {
-    /// The text, entities decoded.
-    pub text: Cow<'a, str>,
+    /// The text, entities decoded (borrowed from the document, or decoded into the [`Arena`]).
+    pub text: &'a str,
     /// Byte offset of the raw piece in the document.
     pub start: usize,
     /// Byte offset just after the raw piece.
@@ -55,12 +80,12 @@ pub struct Element<'a> {
     pub name: &'a str,
     /// The raw start tag between `<` and `>`: attributes are read from it on demand.
     pub raw_tag: &'a str,
-    /// The attributes whose values hold entities, decoded once (usually none: no allocation).
-    pub decoded_attrs: Box<[Attr<'a>]>,
-    /// Exactly sized (boxed slices: 8 bytes less per element than a `Vec`).
-    pub children: Box<[Element<'a>]>,
+    /// The attributes whose values hold entities, decoded once (usually none).
+    pub decoded_attrs: &'a [Attr<'a>],
+    /// The child elements, in document order (in the [`Arena`]).
+    pub children: &'a [Element<'a>],
     /// Direct character data, in order (leading whitespace-only pieces are dropped).
-    pub text: Vec<TextSeg<'a>>,
+    pub text: &'a [TextSeg<'a>],
     /// Byte range of the start tag (`<contact ...>`).
     pub tag_start: usize,
     /// Byte offset just after the start tag's `>`.
@@ -94,7 +119,7 @@ impl<'a> Element<'a> {
         self.decoded_attrs
             .iter()
             .find(|a| a.name == name)
-            .map(|a| a.value.as_ref())
+            .map(|a| a.value)
     }
     /// The values of several attributes (entities decoded) in one pass over the start tag: slot `k` holds
     /// what [`Element::attr`] would give for `names[k]` (the first attribute of that local name).
@@ -118,7 +143,7 @@ impl<'a> Element<'a> {
                 self.decoded_attrs
                     .iter()
                     .find(|a| a.start == at)
-                    .map(|a| a.value.as_ref())
+                    .map(|a| a.value)
             } else {
                 Some(value)
             };
@@ -154,10 +179,10 @@ impl<'a> Element<'a> {
     }
     /// The same text as [`Element::text`], borrowed when it is one segment (the usual case).
     pub fn text_ref(&self) -> Cow<'_, str> {
-        match self.text.as_slice() {
+        match self.text {
             [] => Cow::Borrowed(""),
-            [one] => Cow::Borrowed(one.text.as_ref()),
-            many => Cow::Owned(many.iter().map(|s| s.text.as_ref()).collect()),
+            [one] => Cow::Borrowed(one.text),
+            many => Cow::Owned(many.iter().map(|s| s.text).collect()),
         }
     }
     /// Every descendant (depth first, self excluded).
@@ -321,31 +346,36 @@ fn scan_attrs(raw_tag: &str) -> impl Iterator<Item = (&str, usize, usize)> {
 }
 
 /// The attributes with entities in their value, decoded.
-fn decoded_attrs(raw_tag: &str, tag_pos: usize) -> Box<[Attr<'_>]> {
+fn decoded_attrs<'a>(raw_tag: &'a str, tag_pos: usize, arena: &'a Arena) -> &'a [Attr<'a>] {
     if !raw_tag.contains('&') {
-        return Box::default();
+        return &[];
     }
-    scan_attrs(raw_tag)
+    let attrs: Vec<Attr<'a>> = scan_attrs(raw_tag)
         .filter(|(_, s, e)| raw_tag[*s..*e].contains('&'))
         .map(|(name, s, e)| Attr {
             name,
-            value: decode_attr_value(&raw_tag[s..e]),
+            value: match decode_attr_value(&raw_tag[s..e]) {
+                Cow::Borrowed(v) => v,
+                Cow::Owned(v) => arena.str(&v),
+            },
             start: tag_pos + 1 + s,
             end: tag_pos + 1 + e,
         })
-        .collect()
+        .collect();
+    arena.slice(attrs)
 }
 
 /// Deeper documents are refused (no PLCopen file comes close; the limit keeps recursion bounded).
 pub const MAX_DEPTH: usize = 256;
 
-/// Parses the document; returns the root element (if any start tag was read) and the first error.
-pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
+/// Parses the document into `arena`; returns the root element (if any start tag was read) and the first
+/// error.
+pub fn parse<'a>(xml: &'a str, arena: &'a Arena) -> (Option<Element<'a>>, Option<XmlError>) {
     let base = if xml.starts_with('\u{feff}') { 3 } else { 0 };
     let body = &xml[base..];
     let mut reader = Reader::from_str(body);
     reader.config_mut().trim_text(false);
-    let mut tree = Builder::default();
+    let mut tree = Builder::new(arena);
     loop {
         let pos = reader.buffer_position() as usize;
         let ev = match reader.read_event() {
@@ -366,9 +396,9 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 let el = Element {
                     name: tag_name(raw),
                     raw_tag: raw,
-                    decoded_attrs: decoded_attrs(raw, base + pos),
-                    children: Box::default(),
-                    text: Vec::new(),
+                    decoded_attrs: decoded_attrs(raw, base + pos, arena),
+                    children: &[],
+                    text: &[],
                     tag_start: base + pos,
                     tag_end: base + after,
                     end: base + after,
@@ -395,7 +425,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 // element is kept (it belongs to an embedded body).
                 if tree.is_open() && (tree.top_has_text() || !is_blank(raw)) {
                     tree.push_text(TextSeg {
-                        text: Cow::Borrowed(&body[pos..after]),
+                        text: &body[pos..after],
                         start: base + pos,
                         end: base + after,
                         kind: SegKind::Text,
@@ -403,7 +433,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 }
             }
             Event::CData(_) => tree.push_text(TextSeg {
-                text: Cow::Borrowed(&body[pos + 9..after - 3]),
+                text: &body[pos + 9..after - 3],
                 start: base + pos + 9,
                 end: base + after - 3,
                 kind: SegKind::CData,
@@ -412,7 +442,7 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
                 let name = String::from_utf8_lossy(r.as_ref()).into_owned();
                 let text = decode_entity(&name).unwrap_or_else(|| format!("&{name};"));
                 tree.push_text(TextSeg {
-                    text: Cow::Owned(text),
+                    text: arena.str(&text),
                     start: base + pos,
                     end: base + after,
                     kind: SegKind::Entity,
@@ -435,9 +465,9 @@ pub fn parse(xml: &str) -> (Option<Element<'_>>, Option<XmlError>) {
 /// segments of open ones in `texts`.
 ///
 /// Children and text segments wait in the shared lists until their element closes, then move into
-/// storage of exactly their number: one allocation per element that has any, no regrowth.
-#[derive(Default)]
+/// the arena, exactly sized.
 struct Builder<'a> {
+    arena: &'a Arena,
     stack: Vec<Element<'a>>,
     /// Where each open element's children start in `done` (parallel to `stack`).
     starts: Vec<usize>,
@@ -449,6 +479,17 @@ struct Builder<'a> {
 }
 
 impl<'a> Builder<'a> {
+    fn new(arena: &'a Arena) -> Self {
+        Builder {
+            arena,
+            stack: Vec::new(),
+            starts: Vec::new(),
+            done: Vec::new(),
+            text_starts: Vec::new(),
+            texts: Vec::new(),
+            root: None,
+        }
+    }
     fn open(&mut self, el: Element<'a>) {
         self.starts.push(self.done.len());
         self.text_starts.push(self.texts.len());
@@ -474,15 +515,16 @@ impl<'a> Builder<'a> {
         if let Some(mut el) = self.stack.pop() {
             let start = self.starts.pop().unwrap_or(self.done.len());
             let text_start = self.text_starts.pop().unwrap_or(self.texts.len());
-            // `split_off(0)` would hand over the whole shared buffer and allocate a new one of the
-            // same capacity: most elements have no text, so that was an allocation per element.
             let text_start = text_start.min(self.texts.len());
             if text_start < self.texts.len() {
-                el.text = self.texts.split_off(text_start);
+                el.text = self
+                    .arena
+                    .0
+                    .alloc_slice_fill_iter(self.texts.drain(text_start..));
             }
             let start = start.min(self.done.len());
             if start < self.done.len() {
-                el.children = self.done.split_off(start).into_boxed_slice();
+                el.children = self.arena.0.alloc_slice_fill_iter(self.done.drain(start..));
             }
             if let Some(end) = end {
                 el.end = end;
@@ -516,7 +558,8 @@ mod tests {
     #[test]
     fn keeps_positions_of_tags_attributes_cdata_and_entities() {
         let xml = "\u{feff}<a x=\"1&amp;2\"><b:p>LD x&lt;<![CDATA[ST y]]></b:p></a>";
-        let (root, err) = parse(xml);
+        let arena = Arena::new();
+        let (root, err) = parse(xml, &arena);
         assert!(err.is_none());
         let a = root.unwrap();
         assert_eq!(a.name, "a");
@@ -535,7 +578,8 @@ mod tests {
     #[test]
     fn attrs_in_one_pass_match_attr_one_by_one() {
         let xml = "<a x=\"1\" p:y=\"a&amp;b\" x=\"2\" z='3' w=\"&lt;\"/>";
-        let (root, err) = parse(xml);
+        let arena = Arena::new();
+        let (root, err) = parse(xml, &arena);
         assert!(err.is_none());
         let a = root.unwrap();
         let names = ["y", "x", "absent", "z", "w"];
@@ -550,7 +594,8 @@ mod tests {
     #[test]
     fn one_text_segment_is_borrowed_several_are_joined() {
         let xml = "<a><v> x1 </v><w>a&amp;b</w><e/></a>";
-        let (root, err) = parse(xml);
+        let arena = Arena::new();
+        let (root, err) = parse(xml, &arena);
         assert!(err.is_none());
         let a = root.unwrap();
         let v = a.child("v").unwrap().text_ref();
@@ -561,7 +606,8 @@ mod tests {
 
     #[test]
     fn walks_descendants_depth_first_in_document_order() {
-        let (root, _) = parse("<r><a><b/><c><d/></c></a><e/></r>");
+        let arena = Arena::new();
+        let (root, _) = parse("<r><a><b/><c><d/></c></a><e/></r>", &arena);
         let r = root.unwrap();
         let names: Vec<_> = r.walk().map(|e| e.name).collect();
         assert_eq!(names, ["a", "b", "c", "d", "e"]);
@@ -592,14 +638,16 @@ mod tests {
     #[test]
     fn refuses_absurd_nesting() {
         let xml = "<a>".repeat(MAX_DEPTH + 10);
-        let (root, err) = parse(&xml);
+        let arena = Arena::new();
+        let (root, err) = parse(&xml, &arena);
         assert!(root.is_some());
         assert!(err.unwrap().message.contains("nested deeper"));
     }
 
     #[test]
     fn reports_malformed_documents_with_position() {
-        let (root, err) = parse("<a><b></a>");
+        let arena = Arena::new();
+        let (root, err) = parse("<a><b></a>", &arena);
         assert!(root.is_some());
         let err = err.unwrap();
         assert!(err.pos > 0, "{err:?}");

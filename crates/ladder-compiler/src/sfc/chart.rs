@@ -669,7 +669,8 @@ mod tests {
           <selectionConvergence localId="10"><connectionPointIn><connection refLocalId="5"/></connectionPointIn></selectionConvergence>
           <step localId="11" name="D"><connectionPointIn><connection refLocalId="10"/></connectionPointIn></step>
         </SFC>"#;
-        let (root, err) = crate::xml::parse(xml);
+        let arena = crate::xml::Arena::new();
+        let (root, err) = crate::xml::parse(xml, &arena);
         assert!(err.is_none());
         let root = root.unwrap();
         let mut map = SourceMap::new();

@@ -440,7 +440,7 @@ fn networks(
 ) {
     let pou_name = pou.name.name.clone();
     let body = Element {
-        children: chart.network_elements.clone().into_boxed_slice(),
+        children: &chart.network_elements,
         ..sfc.clone()
     };
     let mut g = graph::read(ctx, &body, &pou_name);

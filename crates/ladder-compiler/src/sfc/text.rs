@@ -11,12 +11,11 @@
 use super::chart::{report, Association, Chart, CondSource, Step, Transition};
 use crate::context::Ctx;
 use crate::project::{Index, PouSig};
-use crate::xml::{Element, SegKind, TextSeg};
+use crate::xml::{Arena, Element, SegKind, TextSeg};
 use diagnostics::{code, Diagnostics};
 use il_frontend::ast::{CompilationUnit, IlStmt, LibraryElement, Pou, PouKind, VarDecl, VarKind};
 use il_frontend::st::sfc::{self, TextCondition};
 use il_frontend::{FileId, Span};
-use std::borrow::Cow;
 use std::ops::Range;
 
 /// The project index of parsed units (ST/IL files): POU interfaces, data types and global variables.
@@ -71,16 +70,16 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
 }
 
 /// An element holding `src[r]` as its text (an `<ST>` or `<IL>` body).
-fn text_element<'a>(name: &'a str, src: &'a str, r: Range<usize>) -> Element<'a> {
+fn text_element<'a>(arena: &'a Arena, name: &'a str, src: &'a str, r: Range<usize>) -> Element<'a> {
     Element {
         name,
         raw_tag: name,
-        text: vec![TextSeg {
-            text: Cow::Borrowed(src.get(r.clone()).unwrap_or("")),
+        text: arena.slice(vec![TextSeg {
+            text: src.get(r.clone()).unwrap_or(""),
             start: r.start,
             end: r.end,
             kind: SegKind::CData,
-        }],
+        }]),
         tag_start: r.start,
         tag_end: r.start,
         end: r.end,
@@ -117,6 +116,8 @@ pub fn lower(
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Vec<VarDecl>) {
     let pou_name = pou.name.name.clone();
+    // Holds the in-memory elements built below.
+    let arena = Arena::new();
     let (tc, found) = sfc::read(file, src, body.clone());
     let broken = !found.is_empty();
     for d in found {
@@ -171,24 +172,28 @@ pub fn lower(
         .zip(&action_tags)
         .map(|(a, tag)| {
             let mut body_el = element("body", "body", a.name_range.clone());
-            body_el.children =
-                vec![text_element(body_lang(src, &a.body), src, a.body.clone())].into();
+            body_el.children = arena.slice(vec![text_element(
+                &arena,
+                body_lang(src, &a.body),
+                src,
+                a.body.clone(),
+            )]);
             let mut act = element("action", tag, a.name_range.clone());
-            act.children = vec![body_el].into();
+            act.children = arena.slice(vec![body_el]);
             act
         })
         .collect();
     let mut actions_el = element("actions", "actions", body.start..body.start);
-    actions_el.children = actions.into();
+    actions_el.children = arena.slice(actions);
     let mut pou_el = element("pou", "pou", body.start..body.start);
-    pou_el.children = vec![actions_el].into();
+    pou_el.children = arena.slice(vec![actions_el]);
 
     let conds: Vec<Element> = tc
         .transitions
         .iter()
         .map(|t| match &t.cond {
-            TextCondition::Expression(r) => text_element("ST", src, r.clone()),
-            TextCondition::Instructions(r) => text_element("IL", src, r.clone()),
+            TextCondition::Expression(r) => text_element(&arena, "ST", src, r.clone()),
+            TextCondition::Instructions(r) => text_element(&arena, "IL", src, r.clone()),
         })
         .collect();
     let assocs: Vec<Vec<Element>> = tc
@@ -201,8 +206,11 @@ pub fn lower(
                 .zip(tags)
                 .map(|(a, (tag, rtag))| {
                     let mut el = element("action", tag, a.range.clone());
-                    el.children =
-                        vec![element("reference", rtag, a.range.start..a.range.start)].into();
+                    el.children = arena.slice(vec![element(
+                        "reference",
+                        rtag,
+                        a.range.start..a.range.start,
+                    )]);
                     el
                 })
                 .collect()
