@@ -253,15 +253,15 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
 /// One `<variable>` of an interface list, a struct, or a global list.
 pub fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
     let span = ctx.tag(v);
-    let Some(name) = v
-        .attr("name")
-        .map(str::trim)
-        .filter(|n| values::is_ident(n))
+    let Some((name, (start, end))) = v
+        .attr_and_range("name")
+        .map(|(n, r)| (n.trim(), r))
+        .filter(|(n, _)| values::is_ident(n))
     else {
         ctx.error(code::E3013, span, "variable without a valid `name`");
         return None;
     };
-    let name = Ident::new(name, ctx.attr_span(v, "name"));
+    let name = Ident::new(name, ctx.span(start, end));
     let Some(ty_el) = v.child("type") else {
         ctx.error(
             code::E3013,

@@ -154,6 +154,19 @@ impl<'a> Element<'a> {
         }
         out
     }
+    /// [`Element::attr`] and [`Element::attr_range`] of one attribute, found in one pass.
+    pub fn attr_and_range(&self, name: &str) -> Option<(&str, (usize, usize))> {
+        let (_, s, e) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
+        let range = (self.tag_start + 1 + s, self.tag_start + 1 + e);
+        let value = &self.raw_tag[s..e];
+        if !value.contains('&') {
+            return Some((value, range));
+        }
+        self.decoded_attrs
+            .iter()
+            .find(|a| a.start == range.0)
+            .map(|a| (a.value, range))
+    }
     /// The byte range of an attribute's raw value in the document.
     pub fn attr_range(&self, name: &str) -> Option<(usize, usize)> {
         if !self.raw_tag.contains(name) {
@@ -586,9 +599,44 @@ mod tests {
         let got = a.attrs(names);
         assert_eq!(got, [Some("a&b"), Some("1"), None, Some("3"), Some("<")]);
         assert_eq!(a.attrs(["", "z", ""]), [None, Some("3"), None]);
+        for n in names {
+            assert_eq!(
+                a.attr_and_range(n),
+                a.attr(n).map(|v| (v, a.attr_range(n).unwrap())),
+                "{n}"
+            );
+        }
         for (k, n) in names.iter().enumerate() {
             assert_eq!(got[k], a.attr(n), "{n}");
         }
+    }
+
+    #[test]
+    fn scans_attributes_of_odd_start_tags() {
+        let all = |tag: &str| -> Vec<(String, String)> {
+            scan_attrs(tag)
+                .map(|(n, s, e)| (n.to_string(), tag[s..e].to_string()))
+                .collect()
+        };
+        let pairs = |v: &[(&str, &str)]| -> Vec<(String, String)> {
+            v.iter()
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+                .collect()
+        };
+        assert_eq!(
+            all("a x=\"1\" xmlns:p = 'two words' p:q=\"\"/"),
+            pairs(&[("x", "1"), ("p", "two words"), ("q", "")])
+        );
+        // A name without a value is skipped; an unquoted value ends the scan.
+        assert_eq!(all("a flag x=\"1\" y=2 z=\"3\""), pairs(&[("x", "1")]));
+        // An unterminated value runs to the end of the tag.
+        assert_eq!(all("a x=\"1"), pairs(&[("x", "1")]));
+        assert_eq!(all("a x="), pairs(&[]));
+        assert_eq!(all("a"), pairs(&[]));
+        assert_eq!(all(""), pairs(&[]));
+        assert_eq!(all("a\tx='1'\ny=\"2\""), pairs(&[("x", "1"), ("y", "2")]));
+        // Only the element name ends at Unicode whitespace; attribute names end at ASCII whitespace.
+        assert_eq!(all("\u{e9}l\u{2003}x=\"1\""), pairs(&[("\u{2003}x", "1")]));
     }
 
     #[test]
