@@ -386,6 +386,161 @@ pub const MAX_DEPTH: usize = 256;
 pub fn parse<'a>(xml: &'a str, arena: &'a Arena) -> (Option<Element<'a>>, Option<XmlError>) {
     let base = if xml.starts_with('\u{feff}') { 3 } else { 0 };
     let body = &xml[base..];
+    if let Some(root) = parse_plain(body, base, arena) {
+        return (root, None);
+    }
+    parse_quick_xml(body, base, arena)
+}
+
+/// A start tag's element (`raw`: between `<` and `>`, the `/` of an empty tag dropped) at byte `pos`
+/// of the body (`<`), its tag ending before `after`.
+fn start_element<'a>(
+    raw: &'a str,
+    base: usize,
+    pos: usize,
+    after: usize,
+    arena: &'a Arena,
+) -> Element<'a> {
+    Element {
+        name: tag_name(raw),
+        raw_tag: raw,
+        decoded_attrs: decoded_attrs(raw, base + pos, arena),
+        children: &[],
+        text: &[],
+        tag_start: base + pos,
+        tag_end: base + after,
+        end: base + after,
+    }
+}
+
+/// XML whitespace as quick-xml counts it (names end there).
+fn xml_space(b: u8) -> bool {
+    matches!(b, b' ' | b'\r' | b'\n' | b'\t')
+}
+
+/// The document read without quick-xml, when it keeps to the subset that generated and most
+/// exported files use: elements, attributes, text without `&`, comments, CDATA sections, the XML
+/// declaration and processing instructions. `None` as soon as anything else turns up (an entity or
+/// character reference, a DOCTYPE, an end tag that does not match, an element left open, nesting past
+/// [`MAX_DEPTH`], a tag cut off by the end): [`parse_quick_xml`] then reads the document and reports
+/// what is wrong. On the subset both give the same tree (tests compare them), with byte positions
+/// taken the way quick-xml 0.38 reports them.
+fn parse_plain<'a>(body: &'a str, base: usize, arena: &'a Arena) -> Option<Option<Element<'a>>> {
+    let b = body.as_bytes();
+    if b.starts_with(&[0xef, 0xbb, 0xbf]) {
+        // A second byte-order mark: quick-xml drops it too.
+        return None;
+    }
+    let mut tree = Builder::new(arena);
+    // The names of the open elements as quick-xml compares them with end tags (up to whitespace).
+    let mut open: Vec<&[u8]> = Vec::new();
+    let mut i = 0;
+    loop {
+        // Text up to the next markup.
+        let next = memchr::memchr2(b'<', b'&', &b[i..]).map(|k| i + k);
+        let end = next.unwrap_or(b.len());
+        if end > i {
+            tree.text(body, base, i, end);
+        }
+        let lt = match next {
+            None => break,
+            Some(k) if b[k] == b'&' => return None,
+            Some(k) => k,
+        };
+        let p = lt + 1;
+        match *b.get(p)? {
+            b'!' if b[p..].starts_with(b"!--") => {
+                // A comment ends at the first `>` after `--`, at least 5 bytes after the `!`.
+                let k = memchr::memchr_iter(b'>', &b[p..])
+                    .find(|&k| k > 4 && b[p..p + k].ends_with(b"--"))?;
+                i = p + k + 1;
+            }
+            b'!' if b[p..].starts_with(b"![CDATA[") => {
+                let k =
+                    memchr::memchr_iter(b'>', &b[p..]).find(|&k| b[p..p + k].ends_with(b"]]"))?;
+                let after = p + k + 1;
+                tree.push_text(TextSeg {
+                    text: &body[lt + 9..after - 3],
+                    start: base + lt + 9,
+                    end: base + after - 3,
+                    kind: SegKind::CData,
+                });
+                i = after;
+            }
+            b'!' => return None,
+            b'?' => {
+                // `?>` ends it; `<?>` is an error for quick-xml.
+                let k =
+                    memchr::memchr_iter(b'>', &b[p..]).find(|&k| k > 0 && b[p + k - 1] == b'?')?;
+                if k < 2 {
+                    return None;
+                }
+                i = p + k + 1;
+            }
+            b'/' => {
+                let k = memchr::memchr3(b'>', b'"', b'\'', &b[p..])?;
+                if b[p + k] != b'>' {
+                    return None;
+                }
+                let content = &b[p + 1..p + k];
+                let name = match content.iter().rposition(|&c| !xml_space(c)) {
+                    Some(e) => &content[..e + 1],
+                    None => content,
+                };
+                if open.pop()? != name {
+                    return None;
+                }
+                let after = p + k + 1;
+                tree.close(Some(base + after));
+                i = after;
+            }
+            c => {
+                if !(c.is_ascii_alphabetic() || c == b'_' || c == b':' || !c.is_ascii()) {
+                    return None;
+                }
+                // The tag ends at the first `>` outside quotes.
+                let mut q = p;
+                let mut quote = 0u8;
+                let gt = loop {
+                    let k = q + memchr::memchr3(b'>', b'"', b'\'', &b[q..])?;
+                    match (quote, b[k]) {
+                        (0, b'>') => break k,
+                        (0, c) => quote = c,
+                        (s, c) if s == c => quote = 0,
+                        _ => {}
+                    }
+                    q = k + 1;
+                };
+                let after = gt + 1;
+                let content = &body[p..gt];
+                match content.strip_suffix('/') {
+                    Some(raw) => tree.attach(start_element(raw, base, lt, after, arena)),
+                    None => {
+                        if tree.stack.len() >= MAX_DEPTH {
+                            return None;
+                        }
+                        let cb = content.as_bytes();
+                        let name_end = cb.iter().position(|&c| xml_space(c)).unwrap_or(cb.len());
+                        open.push(&cb[..name_end]);
+                        tree.open(start_element(content, base, lt, after, arena));
+                    }
+                }
+                i = after;
+            }
+        }
+    }
+    if tree.is_open() {
+        return None;
+    }
+    Some(tree.finish())
+}
+
+/// The document read with quick-xml: any document, errors included.
+fn parse_quick_xml<'a>(
+    body: &'a str,
+    base: usize,
+    arena: &'a Arena,
+) -> (Option<Element<'a>>, Option<XmlError>) {
     let mut reader = Reader::from_str(body);
     reader.config_mut().trim_text(false);
     let mut tree = Builder::new(arena);
@@ -406,16 +561,7 @@ pub fn parse<'a>(xml: &'a str, arena: &'a Arena) -> (Option<Element<'a>>, Option
             Event::Start(_) | Event::Empty(_) => {
                 let raw = &body[pos + 1..after.saturating_sub(1).max(pos + 1)];
                 let raw = raw.strip_suffix('/').unwrap_or(raw);
-                let el = Element {
-                    name: tag_name(raw),
-                    raw_tag: raw,
-                    decoded_attrs: decoded_attrs(raw, base + pos, arena),
-                    children: &[],
-                    text: &[],
-                    tag_start: base + pos,
-                    tag_end: base + after,
-                    end: base + after,
-                };
+                let el = start_element(raw, base, pos, after, arena);
                 if matches!(ev, Event::Start(_)) {
                     if tree.stack.len() >= MAX_DEPTH {
                         let err = XmlError {
@@ -432,19 +578,7 @@ pub fn parse<'a>(xml: &'a str, arena: &'a Arena) -> (Option<Element<'a>>, Option
             Event::End(_) => {
                 tree.close(Some(base + after));
             }
-            Event::Text(_) => {
-                let raw = &body[pos..after];
-                // Indentation between elements is dropped; whitespace after the first text of an
-                // element is kept (it belongs to an embedded body).
-                if tree.is_open() && (tree.top_has_text() || !is_blank(raw)) {
-                    tree.push_text(TextSeg {
-                        text: &body[pos..after],
-                        start: base + pos,
-                        end: base + after,
-                        kind: SegKind::Text,
-                    });
-                }
-            }
+            Event::Text(_) => tree.text(body, base, pos, after),
             Event::CData(_) => tree.push_text(TextSeg {
                 text: &body[pos + 9..after - 3],
                 start: base + pos + 9,
@@ -516,6 +650,20 @@ impl<'a> Builder<'a> {
         self.text_starts
             .last()
             .is_some_and(|&start| self.texts.len() > start)
+    }
+    /// The character data `body[pos..after]` (no entity in it) of the innermost open element.
+    fn text(&mut self, body: &'a str, base: usize, pos: usize, after: usize) {
+        let raw = &body[pos..after];
+        // Indentation between elements is dropped; whitespace after the first text of an
+        // element is kept (it belongs to an embedded body).
+        if self.is_open() && (self.top_has_text() || !is_blank(raw)) {
+            self.push_text(TextSeg {
+                text: raw,
+                start: base + pos,
+                end: base + after,
+                kind: SegKind::Text,
+            });
+        }
     }
     /// A text segment of the innermost open element (dropped when none is open).
     fn push_text(&mut self, seg: TextSeg<'a>) {
@@ -680,6 +828,109 @@ mod tests {
         for t in ["x", "  x ", "\n\u{e9}", " \u{a0}x"] {
             assert!(!is_blank(t), "{t:?}");
             assert!(!t.trim().is_empty(), "{t:?}");
+        }
+    }
+
+    /// Both readers on `xml` (after a byte-order mark): `Some` when the plain one read it, and then
+    /// it must have built what quick-xml builds.
+    fn both(xml: &str) -> Option<String> {
+        let base = if xml.starts_with('\u{feff}') { 3 } else { 0 };
+        let arena = Arena::new();
+        let plain = parse_plain(&xml[base..], base, &arena)?;
+        let (quick, err) = parse_quick_xml(&xml[base..], base, &arena);
+        assert!(
+            err.is_none(),
+            "{xml:?}: plain reader took a document quick-xml rejects: {err:?}"
+        );
+        let (plain, quick) = (format!("{plain:?}"), format!("{quick:?}"));
+        assert_eq!(plain, quick, "{xml:?}");
+        Some(plain)
+    }
+
+    #[test]
+    fn the_plain_reader_builds_what_quick_xml_builds() {
+        let taken = [
+            "<a/>",
+            "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<a x=\"1\" y='2'>\n  <b>t x</b>\n</a>\n",
+            "\u{feff}<a><b/></a>",
+            "<a>  lead <!-- note -- --> tail<![CDATA[ x < y ]]>end</a >",
+            "<a><!----><![CDATA[]]></a>",
+            "<a q=\"x>y\" r='\"'>t</a>",
+            "<p:a xmlns:p=\"u\"><p:b/>text\n  more\n</p:a>",
+            "<a\n  x=\"1\"\n>\u{e9}\u{2003}</a\t>",
+            "<a/ ><b></b></a/>",
+            "<?pi x?><a><?pi?></a>",
+            "",
+            "just text",
+        ];
+        for xml in taken {
+            assert!(both(xml).is_some(), "{xml:?} should take the plain path");
+        }
+        let generated = crate::testgen::generate(8);
+        assert!(both(&generated).is_some());
+        let left = [
+            "<a>x &amp; y</a>",
+            "<a>&</a>",
+            "<!DOCTYPE a><a/>",
+            "<a><b></a>",
+            "<a></b>",
+            "</a>",
+            "<a>",
+            "<a x=\"1>",
+            "<a><!-- open",
+            "<a><![CDATA[ open",
+            "<a><?pi",
+            "<?><a/>",
+            "<a></a x=\"1\">",
+            "<a>< b/></a>",
+            "<1a></1a>",
+            "<a><!-x --></a>",
+            "<a><![cdata[x]]></a>",
+            "\u{feff}\u{feff}<a/>",
+            "<a>x<",
+        ];
+        for xml in left {
+            assert!(both(xml).is_none(), "{xml:?} should be left to quick-xml");
+        }
+        let deep = format!(
+            "{}{}",
+            "<a>".repeat(MAX_DEPTH + 1),
+            "</a>".repeat(MAX_DEPTH + 1)
+        );
+        assert!(both(&deep).is_none());
+    }
+
+    #[test]
+    fn the_plain_reader_agrees_on_every_fixture_and_corpus_file() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let mut dirs = vec![
+            root.join("crates/ladder-compiler/tests/fixtures"),
+            root.join("crates/test-corpus/files"),
+            root.join("tests/corpus"),
+            root.join("tests/tests/fixtures"),
+            root.join("templates"),
+        ];
+        if let Ok(c) = std::env::var("LADDERC_CORPUS") {
+            dirs.push(c.into());
+        }
+        let mut files = Vec::new();
+        while let Some(d) = dirs.pop() {
+            for e in std::fs::read_dir(&d).into_iter().flatten().flatten() {
+                let p = e.path();
+                if p.is_dir() {
+                    dirs.push(p);
+                } else if p.extension().is_some_and(|x| x == "xml") {
+                    files.push(p);
+                }
+            }
+        }
+        assert!(files.len() > 20, "{} XML files found", files.len());
+        for f in files {
+            let Ok(text) = std::fs::read_to_string(&f) else {
+                continue;
+            };
+            // Either reader may be the one that runs; when the plain one does, it matches.
+            let _ = both(&text);
         }
     }
 
