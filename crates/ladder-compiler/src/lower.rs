@@ -2046,24 +2046,22 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 self.materialise(v, out);
             }
         }
+        // A value read after an earlier group's write is captured first. Nothing is written before
+        // the first value, and the last group's targets are read by nothing after it: the usual
+        // one-write rung needs no sets at all.
         let mut written: HashSet<String> = HashSet::default();
-        let mut stage_targets: Vec<HashSet<String>> = Vec::new();
-        for (r, _) in &groups {
-            stage_targets.push(
-                self.writes[r.clone()]
-                    .iter()
-                    .map(|w| target_key(&w.target))
-                    .collect(),
-            );
-        }
         for (gi, &v) in finals.iter().enumerate() {
-            let mut rd = HashSet::default();
-            self.reads(v, &mut rd);
-            if !rd.is_disjoint(&written) {
-                self.materialise(v, out);
+            if !written.is_empty() {
+                let mut rd = HashSet::default();
+                self.reads(v, &mut rd);
+                if !rd.is_disjoint(&written) {
+                    self.materialise(v, out);
+                }
             }
-            if let Some(t) = stage_targets.get(gi) {
-                written.extend(t.iter().cloned());
+            if gi + 1 < finals.len() {
+                if let Some((r, _)) = groups.get(gi) {
+                    written.extend(self.writes[r.clone()].iter().map(|w| target_key(&w.target)));
+                }
             }
         }
         // Phase 2: write.
