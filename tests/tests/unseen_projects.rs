@@ -289,3 +289,76 @@ fn codesys_actions_called_from_an_st_body_run() {
         assert!(stderr.contains(want), "{want}: {stderr}");
     }
 }
+
+/// Checks a source that must be rejected; returns the `short` diagnostics (paths shortened to
+/// `name`) after asserting exit 1.
+fn rejected(name: &str, src: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join(name);
+    std::fs::write(&file, src).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).replace(&file.display().to_string(), name);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    stderr
+}
+
+/// ZPLC's HIL test `master_math_control.st` (and Annex F's `lag1`): `r := SQRT(2.0);` with
+/// `r : REAL`. A real literal is ANY_REAL, so the context types it and SQRT computes in REAL;
+/// before, an ANY_REAL function of literals was LREAL at once ("cannot store LREAL into REAL").
+/// An integer literal (`SQRT(2)`) is still read as LREAL.
+#[test]
+fn a_real_literal_into_an_any_real_function_takes_the_context_type() {
+    let st = "PROGRAM p\nVAR r : REAL; l : LREAL; b : BOOL; END_VAR\n  r := SQRT(2.0);\n  \
+              l := SQRT(2.0);\n  r := 2.0 * SIN(1.0) + LN(1.0);\n  b := SQRT(2.0) > 1.4;\nEND_PROGRAM\n";
+    let (trace, stderr) = run("math.st", st, "1", "p.r,p.l,p.b");
+    assert!(!stderr.contains("error"), "{stderr}");
+    // 2 sin 1 in REAL; SQRT(2) in LREAL for l
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.r,p.l,p.b\n0,0,1.6829419,1.4142135623730951,1\n"
+    );
+    let il = "PROGRAM p\nVAR r : REAL; END_VAR\n  LD 16.0\n  SQRT\n  ST r\nEND_PROGRAM\n";
+    let (trace, _) = run("math.il", il, "1", "p.r");
+    assert_eq!(trace, "cycle,time_ms,p.r\n0,0,4\n");
+    let e = rejected("int.st", &st.replace("SQRT(2.0);\n  l", "SQRT(2);\n  l"));
+    assert!(
+        e.contains("int.st:3:3: error[E1006]: cannot store LREAL into REAL"),
+        "{e}"
+    );
+}
+
+/// matiec's syntax test `enumeration/enumerationvalue.txt`: `c_1 := XXXX;` where several
+/// enumerations declare `XXXX` and `c_1` is one of them. IEC 61131-3 asks for the type prefix only
+/// where the context does not determine the value; before, every such use was E1001 "a value of
+/// several enumerations". Assignments, comparisons and function inputs now take the context's
+/// enumeration; without a context the value stays ambiguous.
+#[test]
+fn an_enumerated_value_of_several_types_takes_the_type_of_its_context() {
+    let src =
+        "TYPE\n  Light : (red, amber, green) := red;\n  Valve : (closed, open, green);\nEND_TYPE\n\
+               PROGRAM p\nVAR l : Light; v : Valve; n : INT; same : BOOL; END_VAR\n  \
+               l := green;\n  v := green;\n  same := (l = green) AND (green = l);\n  \
+               IF v = green THEN n := n + 1; END_IF;\n  l := SEL(same, red, amber);\nEND_PROGRAM\n";
+    let (trace, stderr) = run("enums.st", src, "2", "p.l,p.v,p.n,p.same");
+    assert!(!stderr.contains("error"), "{stderr}");
+    // l = amber (1) after SEL, v = green of Valve (2), n counts
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.l,p.v,p.n,p.same\n0,0,1,2,1,1\n1,10,1,2,2,1\n"
+    );
+    let e = rejected(
+        "ambiguous.st",
+        &src.replace(
+            "same := (l = green) AND (green = l);",
+            "n := SEL(green = green, 1, 2);",
+        ),
+    );
+    assert!(
+        e.contains("error[E1001]: `green` is a value of several enumerations"),
+        "{e}"
+    );
+}
