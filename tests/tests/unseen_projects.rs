@@ -362,3 +362,118 @@ fn an_enumerated_value_of_several_types_takes_the_type_of_its_context() {
         "{e}"
     );
 }
+
+/// The application export of CODESYS and TwinCAT ("Export PLCopenXML" of a whole application, as
+/// in the xPPU pick-and-place corpus exported from TwinCAT 3.5.10): `<types>` and `<instances>`
+/// are empty, and the application lives in the project's vendor data,
+/// `addData/data[.../application]/resource`: its tasks, global lists, and in the resource's own
+/// vendor data its data types (`.../datatype`) and POUs (`.../pou`). The task's period is in its
+/// settings (`TaskSettings Interval="10000" IntervalUnit="us"`; TwinCAT writes `interval="PT0S"`).
+/// Before, the whole program was skipped with one "vendor data ignored" warning: `check` passed and
+/// `run` had nothing to run.
+#[test]
+fn a_codesys_or_twincat_application_export_runs() {
+    let app = |interval: &str, settings: &str| {
+        format!(
+            "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\
+             <fileHeader companyName=\"Beckhoff Automation GmbH\" productName=\"TwinCAT PLC Control\" productVersion=\"3.5.10.30\" creationDateTime=\"2019-09-26T16:12:41\"/>\
+             <contentHeader name=\"LD_EVOLUTION\"><coordinateInfo><fbd><scaling x=\"1\" y=\"1\"/></fbd><ld><scaling x=\"1\" y=\"1\"/></ld>\
+             <sfc><scaling x=\"1\" y=\"1\"/></sfc></coordinateInfo></contentHeader>\
+             <types><dataTypes/><pous/></types><instances><configurations/></instances>\
+             <addData><data name=\"http://www.3s-software.com/plcopenxml/application\" handleUnknown=\"implementation\">\
+             <resource name=\"LD_EVOLUTION\"><task name=\"PlcTask\" interval=\"{interval}\" priority=\"20\">\
+             <pouInstance name=\"Main\" typeName=\"\"/><addData>\
+             <data name=\"http://www.3s-software.com/plcopenxml/tasksettings\" handleUnknown=\"implementation\">{settings}</data>\
+             <data name=\"http://www.3s-software.com/plcopenxml/objectid\" handleUnknown=\"discard\"><ObjectId>7639a151</ObjectId></data>\
+             </addData></task>\
+             <globalVars name=\"GVL\"><variable name=\"Limit\"><type><INT/></type><initialValue><simpleValue value=\"3\"/></initialValue></variable></globalVars>\
+             <addData><data name=\"http://www.3s-software.com/plcopenxml/datatype\" handleUnknown=\"implementation\">\
+             <dataType name=\"E_Mode\"><baseType><enum><values><value name=\"Idle\" value=\"0\"/><value name=\"Busy\" value=\"1\"/></values></enum></baseType></dataType></data>\
+             <data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\
+             <pou name=\"Main\" pouType=\"program\"><interface><localVars>\
+             <variable name=\"A\"><type><BOOL/></type><initialValue><simpleValue value=\"TRUE\"/></initialValue></variable>\
+             <variable name=\"B\"><type><BOOL/></type><initialValue><simpleValue value=\"TRUE\"/></initialValue></variable>\
+             <variable name=\"Open\"><type><BOOL/></type></variable></localVars></interface>\
+             <body><LD><leftPowerRail localId=\"0\"><position x=\"0\" y=\"0\"/><connectionPointOut formalParameter=\"none\"/></leftPowerRail>\
+             <vendorElement localId=\"2\"><position x=\"0\" y=\"0\"/><alternativeText><xhtml xmlns=\"http://www.w3.org/1999/xhtml\"/></alternativeText></vendorElement>\
+             <contact localId=\"3\" negated=\"false\" storage=\"none\" edge=\"none\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"0\"/></connectionPointIn><connectionPointOut/><variable>A</variable></contact>\
+             <contact localId=\"4\" negated=\"false\" storage=\"none\" edge=\"none\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"3\"/></connectionPointIn><connectionPointOut/><variable>B</variable></contact>\
+             <coil localId=\"5\" negated=\"false\" storage=\"none\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"4\"/></connectionPointIn><connectionPointOut/><variable>Open</variable></coil>\
+             <rightPowerRail localId=\"2147483646\"><position x=\"0\" y=\"0\"/><connectionPointIn/></rightPowerRail></LD></body></pou>\
+             <pou name=\"Tally\" pouType=\"program\"><interface><localVars>\
+             <variable name=\"Mode\"><type><derived name=\"E_Mode\"/></type></variable>\
+             <variable name=\"Count\"><type><INT/></type></variable></localVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">\
+             IF Count &lt; GVL.Limit THEN Count := Count + 1; ELSE Mode := E_Mode#Busy; END_IF</xhtml></ST></body></pou>\
+             </data></addData></resource></data>\
+             <data name=\"http://www.3s-software.com/plcopenxml/projectstructure\" handleUnknown=\"discard\"><ProjectStructure/></data>\
+             </addData></project>\n"
+        )
+    };
+    let twincat = app(
+        "PT0S",
+        "<TaskSettings KindOfTask=\"Cyclic\" Interval=\"10000\" IntervalUnit=\"us\"><Watchdog Enabled=\"false\" TimeUnit=\"ms\"/></TaskSettings>",
+    );
+    let (trace, stderr) = run("evolution.xml", &twincat, "2", "Main.Open");
+    assert_eq!(trace, "cycle,time_ms,Main.Open\n0,0,1\n1,10,1\n");
+    // what is still ignored is named: the object ids and the project structure, not the application
+    assert!(
+        stderr.contains("warning[W3002]") && !stderr.contains("plcopenxml/application"),
+        "{stderr}"
+    );
+    // CODESYS writes the period as a duration; a second program uses the data type and the list
+    let codesys = app(
+        "PT0.02S",
+        "<TaskSettings KindOfTask=\"Cyclic\" Interval=\"t#20ms\" IntervalUnit=\"ms\"/>",
+    )
+    .replace(
+        "<pouInstance name=\"Main\" typeName=\"\"/>",
+        "<pouInstance name=\"Main\" typeName=\"\"/><pouInstance name=\"Tally\" typeName=\"\"/>",
+    );
+    let (trace, _) = run("application.xml", &codesys, "8", "Tally.Count,Tally.Mode");
+    // the 20 ms task runs every other 10 ms cycle: Count reaches GVL.Limit (3), then Mode is Busy
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Tally.Count,Tally.Mode\n0,0,1,0\n1,10,1,0\n2,20,2,0\n3,30,2,0\n\
+         4,40,3,0\n5,50,3,0\n6,60,3,1\n7,70,3,1\n"
+    );
+}
+
+/// Beremiz's own examples and test projects (`python`, `logging`, `iec61131_lang_test`, `wxGlade`)
+/// use blocks of Beremiz's extension library (`python_eval`, `python_poll`, `LOGGER`) and matiec's
+/// `RTC`, which the file does not contain. Each missing type is one E3009 naming its uses; before,
+/// every block of that type gave a further E3007 "unknown block type".
+#[test]
+fn a_block_of_a_missing_library_type_is_reported_once() {
+    let xml = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+               <fileHeader companyName=\"Beremiz\" productName=\"Beremiz\" productVersion=\"1\" creationDateTime=\"2024-01-01T00:00:00\"/>\
+               <contentHeader name=\"python\"><coordinateInfo><fbd><scaling x=\"0\" y=\"0\"/></fbd><ld><scaling x=\"0\" y=\"0\"/></ld>\
+               <sfc><scaling x=\"0\" y=\"0\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+               <pou name=\"main_pytest\" pouType=\"program\"><interface><localVars>\
+               <variable name=\"py1\"><type><derived name=\"python_eval\"/></type></variable>\
+               <variable name=\"py2\"><type><derived name=\"python_eval\"/></type></variable>\
+               <variable name=\"go\"><type><BOOL/></type></variable></localVars></interface><body><FBD>\
+               <inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/><expression>go</expression></inVariable>\
+               <block localId=\"2\" typeName=\"python_eval\" instanceName=\"py1\"><position x=\"0\" y=\"0\"/><inputVariables>\
+               <variable formalParameter=\"TRIG\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn></variable>\
+               </inputVariables><inOutVariables/><outputVariables/></block>\
+               <block localId=\"3\" typeName=\"python_eval\" instanceName=\"py2\"><position x=\"0\" y=\"0\"/><inputVariables>\
+               <variable formalParameter=\"TRIG\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn></variable>\
+               </inputVariables><inOutVariables/><outputVariables/></block>\
+               <block localId=\"4\" typeName=\"no_such_block\"><position x=\"0\" y=\"0\"/><inputVariables>\
+               <variable formalParameter=\"IN\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn></variable>\
+               </inputVariables><inOutVariables/><outputVariables/></block>\
+               </FBD></body></pou></pous></types><instances><configurations/></instances></project>\n";
+    let e = rejected("python.xml", xml);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 2, "{e}");
+    assert!(
+        errors[0]
+            .contains("error[E3009]: type `python_eval` is not defined in this project (2 uses)"),
+        "{e}"
+    );
+    // a block whose type nothing declares at all is still named where it is
+    assert!(
+        errors[1].contains("error[E3007]: unknown block type `no_such_block`"),
+        "{e}"
+    );
+}

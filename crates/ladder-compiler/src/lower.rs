@@ -1270,6 +1270,16 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             return;
         }
         let Some(bt) = self.block_type(type_name) else {
+            if self
+                .pou
+                .index
+                .missing_types
+                .contains(&type_name.to_ascii_uppercase())
+            {
+                // the instance's type is missing from the file: E3009 named it with every use
+                self.poisoned.insert(i);
+                return;
+            }
             let is_program = self
                 .pou
                 .index
