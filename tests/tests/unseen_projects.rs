@@ -477,3 +477,75 @@ fn a_block_of_a_missing_library_type_is_reported_once() {
         "{e}"
     );
 }
+
+/// IEC 61131-3 Annex F's gravel example (in matiec's `AnnexF/gravel_st.txt`): one program body
+/// holds three SFC networks (`sequential_function_chart ::= sfc_network {sfc_network}`), each
+/// with its own INITIAL_STEP, one of them a single step that stays active and runs its monitor
+/// action every cycle. Before, the second and third initial steps were E3128 and the lone step
+/// E3121. Two initial steps that transitions link into one network stay E3128, once.
+#[test]
+fn a_body_with_several_sfc_networks_runs_them_all() {
+    let src = "PROGRAM p\nVAR go : BOOL := TRUE; n : INT; ticks : INT; lamp : BOOL; END_VAR\n\
+               INITIAL_STEP Idle: END_STEP\nTRANSITION FROM Idle TO Run := go; END_TRANSITION\n\
+               STEP Run: Count(N); END_STEP\nTRANSITION FROM Run TO Idle := n >= 2; END_TRANSITION\n\
+               ACTION Count: n := n + 1; END_ACTION\n\
+               (* a second network: one initial step, always active *)\n\
+               INITIAL_STEP Monitor: Watch(N); END_STEP\n\
+               ACTION Watch:\n  ticks := ticks + 1;\n  lamp := Run.X;\nEND_ACTION\nEND_PROGRAM\n";
+    let (trace, stderr) = run("nets.st", src, "4", "p.n,p.ticks,p.lamp");
+    assert!(!stderr.contains("error"), "{stderr}");
+    // the monitor network counts every cycle and sees the other network's step
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.n,p.ticks,p.lamp\n0,0,1,1,1\n1,10,2,2,1\n2,20,3,3,0\n3,30,4,4,1\n"
+    );
+    let linked = src.replace(
+        "ACTION Count:",
+        "TRANSITION FROM Monitor TO Run := FALSE; END_TRANSITION\nACTION Count:",
+    );
+    let e = rejected("linked.st", &linked);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0].contains("linked.st:10:14: error[E3128]: a second INITIAL_STEP `Monitor` in the network of `Idle`"),
+        "{e}"
+    );
+}
+
+/// An OpenPLC Editor LD diagram (`SebastianGuevara/PARCIAL2-PROCESOETIQUETAMIENTO`) holds a
+/// stray contact wired on neither side; the editor generates nothing for it. Before, it was E3005
+/// "not connected on its left side" and the project was rejected; now it is W3003 and skipped. A
+/// contact whose output feeds a coil but whose left side is open stays E3005.
+#[test]
+fn a_stray_contact_wired_to_nothing_is_skipped_with_a_warning() {
+    let xml = |stray_out: &str| {
+        format!(
+            "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+             <fileHeader companyName=\"\" productName=\"OpenPLC\" productVersion=\"1\" creationDateTime=\"2024-01-01T00:00:00\"/>\
+             <contentHeader name=\"p\"><coordinateInfo><fbd><scaling x=\"10\" y=\"10\"/></fbd><ld><scaling x=\"10\" y=\"10\"/></ld>\
+             <sfc><scaling x=\"10\" y=\"10\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+             <pou name=\"program0\" pouType=\"program\"><interface><localVars>\
+             <variable name=\"start\"><type><BOOL/></type><initialValue><simpleValue value=\"TRUE\"/></initialValue></variable>\
+             <variable name=\"IR3\"><type><BOOL/></type></variable><variable name=\"motor\"><type><BOOL/></type></variable>\
+             </localVars></interface><body><LD>\
+             <leftPowerRail localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut formalParameter=\"\"/></leftPowerRail>\
+             <contact localId=\"2\" negated=\"false\"><position x=\"50\" y=\"0\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn><connectionPointOut/><variable>start</variable></contact>\
+             <coil localId=\"3\" negated=\"false\"><position x=\"150\" y=\"0\"/><connectionPointIn><connection refLocalId=\"2\"/>{stray_out}</connectionPointIn><connectionPointOut/><variable>motor</variable></coil>\
+             <contact localId=\"45\" negated=\"false\"><position x=\"280\" y=\"650\"/><connectionPointIn/><connectionPointOut/><variable>IR3</variable></contact>\
+             </LD></body></pou></pous></types><instances><configurations><configuration name=\"Config0\"><resource name=\"Res0\">\
+             <task name=\"task0\" priority=\"0\" interval=\"T#20ms\"><pouInstance name=\"instance0\" typeName=\"program0\"/></task>\
+             </resource></configuration></configurations></instances></project>\n"
+        )
+    };
+    let (trace, stderr) = run("stray.xml", &xml(""), "2", "instance0.motor");
+    assert_eq!(trace, "cycle,time_ms,instance0.motor\n0,0,1\n1,10,1\n");
+    assert!(
+        stderr.contains("warning[W3003]: contact `IR3` is connected to nothing and is skipped [POU `program0`, network 2, localId 45]"),
+        "{stderr}"
+    );
+    let e = rejected("open.xml", &xml("<connection refLocalId=\"45\"/>"));
+    assert!(
+        e.contains("error[E3005]: contact `IR3` is not connected on its left side"),
+        "{e}"
+    );
+}

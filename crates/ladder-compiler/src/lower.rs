@@ -979,6 +979,19 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             } => {
                 let input = self.input_val(ctx, &node.input, i);
                 if input.is_none() && !node.wired {
+                    if !g.nodes.iter().any(|n| n.wires().any(|w| w.from == i)) {
+                        // a stray contact, wired on neither side (left in the editor; OpenPLC
+                        // Editor and Beremiz generate nothing for it): it has no effect
+                        let d = Diagnostic::warning(
+                            code::W3003,
+                            format!("contact `{var}` is connected to nothing and is skipped"),
+                        )
+                        .at(span)
+                        .with_xml(self.at(i).xml());
+                        ctx.report(d);
+                        self.poisoned.insert(i);
+                        return;
+                    }
                     let d = self
                         .diag(
                             ctx,
