@@ -549,3 +549,41 @@ fn a_stray_contact_wired_to_nothing_is_skipped_with_a_warning() {
         "{e}"
     );
 }
+
+/// ZPLC's HIL tests (`tools/hil/il_tests/arithmetic.il`) declare `a AT %Q0.0 : INT` (ZPLC reads
+/// `%Q0.0` as "byte 0"). In IEC 61131-3 `%Q0.0` is `%QX0.0`, one bit. Before, ladderc accepted it
+/// and cut every value to a bit (10 + 5 gave 1); now it is E1027 at the address, one per variable.
+/// An array of BOOL may start at a bit address.
+#[test]
+fn a_non_bool_variable_at_a_bit_address_is_rejected() {
+    let src = |a: &str, b: &str| {
+        format!(
+            "PROGRAM Arithmetic\nVAR\n  a AT {a} : INT;\n  b AT {b} : INT;\n  res_add : INT;\n  \
+             flags AT %QX4.0 : ARRAY[0..7] OF BOOL;\n  ok AT %Q5.1 : BOOL;\nEND_VAR\n  \
+             LD 10\n  ST a\n  LD 5\n  ST b\n  LD a\n  ADD b\n  ST res_add\n  GT 10\n  ST ok\nEND_PROGRAM\n"
+        )
+    };
+    let e = rejected("arithmetic.il", &src("%Q0.0", "%IX0.1"));
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(
+        errors,
+        [
+            "arithmetic.il:3:8: error[E1027]: `a` is INT, but `%QX0.0` is a single bit: a bit address holds a BOOL \
+             (hint: locate the variable at an address of its size (%QB byte, %QW word, %QD double word, %QL long word), or declare it BOOL)",
+            "arithmetic.il:4:8: error[E1027]: `b` is INT, but `%IX0.1` is a single bit: a bit address holds a BOOL \
+             (hint: locate the variable at an address of its size (%QB byte, %QW word, %QD double word, %QL long word), or declare it BOOL)",
+        ],
+        "{e}"
+    );
+    let (trace, stderr) = run(
+        "arithmetic.il",
+        &src("%QW0", "%MW1"),
+        "1",
+        "Arithmetic.a,Arithmetic.b,Arithmetic.res_add,Arithmetic.ok",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Arithmetic.a,Arithmetic.b,Arithmetic.res_add,Arithmetic.ok\n0,0,10,5,15,1\n"
+    );
+}
