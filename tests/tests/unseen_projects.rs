@@ -568,9 +568,9 @@ fn a_non_bool_variable_at_a_bit_address_is_rejected() {
     assert_eq!(
         errors,
         [
-            "arithmetic.il:3:8: error[E1027]: `a` is INT, but `%QX0.0` is a single bit: a bit address holds a BOOL \
+            "arithmetic.il:3:8: error[E1027]: `a` has type INT, but `%QX0.0` is a single bit: a bit address holds a BOOL \
              (hint: locate the variable at an address of its size (%QB byte, %QW word, %QD double word, %QL long word), or declare it BOOL)",
-            "arithmetic.il:4:8: error[E1027]: `b` is INT, but `%IX0.1` is a single bit: a bit address holds a BOOL \
+            "arithmetic.il:4:8: error[E1027]: `b` has type INT, but `%IX0.1` is a single bit: a bit address holds a BOOL \
              (hint: locate the variable at an address of its size (%QB byte, %QW word, %QD double word, %QL long word), or declare it BOOL)",
         ],
         "{e}"

@@ -609,7 +609,7 @@ impl Analyzer<'_> {
             code::E1027,
             loc.span,
             format!(
-                "`{}` is {tn}, but `{text}` is a single bit: a bit address holds a BOOL",
+                "`{}` has type {tn}, but `{text}` is a single bit: a bit address holds a BOOL",
                 d.name.name
             ),
         )
