@@ -587,3 +587,28 @@ fn a_non_bool_variable_at_a_bit_address_is_rejected() {
         "cycle,time_ms,Arithmetic.a,Arithmetic.b,Arithmetic.res_add,Arithmetic.ok\n0,0,10,5,15,1\n"
     );
 }
+
+/// An OpenPLC Editor project (`kipariss1/RPA_SEM_TRYSKANI`) comments code out around comments:
+/// `(*ELSIF ... (*note*)` and never closes the outer one (matiec reads comments flat by default;
+/// IEC 61131-3 ed. 3 nests them, ed. 2 forbids the nesting). The one genuine problem is the
+/// unclosed comment; before, an ST body also reported the END_CASE it swallowed.
+#[test]
+fn an_unclosed_comment_in_an_st_body_is_one_error() {
+    let xml = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+               <fileHeader companyName=\"\" productName=\"OpenPLC\" productVersion=\"1\" creationDateTime=\"2024-01-01T00:00:00\"/>\
+               <contentHeader name=\"p\"><coordinateInfo><fbd><scaling x=\"10\" y=\"10\"/></fbd><ld><scaling x=\"10\" y=\"10\"/></ld>\
+               <sfc><scaling x=\"10\" y=\"10\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+               <pou name=\"SuperStavy\" pouType=\"program\"><interface><localVars>\
+               <variable name=\"iTech\"><type><INT/></type></variable><variable name=\"state\"><type><INT/></type></variable>\
+               </localVars></interface><body><ST><xhtml:p xmlns:xhtml=\"http://www.w3.org/1999/xhtml\"><![CDATA[\
+CASE state OF\n  1:\n    IF (iTech > 8) THEN\n      iTech := 0;\n    END_IF;\n\
+   (*ELSIF (iTech = 8) THEN  (*all states done*)\n      iTech := 0;\n  2:\n    state := 1;\nEND_CASE;\n\
+]]></xhtml:p></ST></body></pou></pous></types><instances><configurations/></instances></project>\n";
+    let e = rejected("comment.xml", xml);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0].contains("error[E0102]: comment or pragma is never closed"),
+        "{e}"
+    );
+}
