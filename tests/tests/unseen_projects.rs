@@ -8,6 +8,13 @@
 //! - a POU that writes one of its own inputs (an OpenPLC Editor LD coil on an FB input; OSCAT
 //!   functions): IEC 61131-3 forbids it, matiec, CODESYS and TwinCAT accept it; before, E1015 rejected
 //!   the project, now W1411 warns and the POU's own copy is written.
+//!
+//! A second acceptance run (2026-12-02, branch `corpus`: 30+ more projects, OpenPLC Editor and Beremiz
+//! projects and examples, matiec's Annex F and syntax tests, ZPLC's IL/ST test programs, a TwinCAT
+//! application export, a WAGO e!COCKPIT export) added the tests below the ACTIONS ones: literals and
+//! enumerated values typed by their context, CODESYS/TwinCAT application exports, one diagnostic per
+//! missing library type, several SFC networks in one body, stray LD contacts, non-BOOL variables at
+//! bit addresses, and unclosed comments. Each is a minimal reproduction written here.
 
 mod common;
 use common::ladderc;
@@ -610,5 +617,31 @@ CASE state OF\n  1:\n    IF (iTech > 8) THEN\n      iTech := 0;\n    END_IF;\n\
     assert!(
         errors[0].contains("error[E0102]: comment or pragma is never closed"),
         "{e}"
+    );
+}
+
+/// CODESYS text (`MatGros/2026_Projet_YGO_ExcavatriceDragage`, `CODE/FB_Brake.st`) declares
+/// `FUNCTION_BLOCK PUBLIC FB_Brake`. Before, `PUBLIC` was read as the block's name and every line of
+/// the block was an error (116 errors for the project); now the modifier is W0304 and skipped, also
+/// `FINAL` and `ABSTRACT` of edition 3. A block named `Public` is still a block named `Public`.
+#[test]
+fn a_function_block_modifier_is_skipped_with_a_warning() {
+    let src = "FUNCTION_BLOCK PUBLIC FB_Brake\nVAR_INPUT\n  Enable : BOOL;\nEND_VAR\nVAR_OUTPUT\n  \
+               BrakeCmd : BOOL;\nEND_VAR\n  BrakeCmd := Enable;\nEND_FUNCTION_BLOCK\n\
+               FUNCTION_BLOCK FINAL Public\nVAR_OUTPUT n : INT; END_VAR\n  n := n + 1;\nEND_FUNCTION_BLOCK\n\
+               FUNCTION_BLOCK Internal\nVAR_OUTPUT n : INT; END_VAR\n  n := n + 2;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR b : FB_Brake; p : Public; q : Internal; go : BOOL := TRUE; END_VAR\n  \
+               b(Enable := go);\n  p();\n  q();\nEND_PROGRAM\n";
+    let (trace, stderr) = run("brake.st", src, "2", "main.b.BrakeCmd,main.p.n,main.q.n");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.b.BrakeCmd,main.p.n,main.q.n\n0,0,1,1,2\n1,10,1,2,4\n"
+    );
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("W0304")).collect();
+    assert_eq!(warnings.len(), 2, "{stderr}");
+    assert!(
+        warnings[0].starts_with("brake.st:1:16: warning[W0304]: `FUNCTION_BLOCK PUBLIC` of `FB_Brake`: the modifier is ignored"),
+        "{stderr}"
     );
 }

@@ -59,6 +59,9 @@ pub struct PouText {
     pub actions: Option<Range<usize>>,
     /// The `ACTION name [:] ... END_ACTION` of an `ACTIONS` block: name and its range, text range.
     pub action_list: Vec<(String, Range<usize>, Range<usize>)>,
+    /// A modifier between `FUNCTION_BLOCK` and the name (`PUBLIC`, `INTERNAL`, `FINAL`,
+    /// `ABSTRACT`: CODESYS and edition 3), skipped with W0304.
+    pub modifier: Option<Range<usize>>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -173,6 +176,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     oop: None,
                     actions: Some(start),
                     action_list,
+                    modifier: None,
                 });
                 i = j;
             }
@@ -180,6 +184,25 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
             "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" => {
                 let end_word = format!("END_{w}");
                 i += 1;
+                // `FUNCTION_BLOCK PUBLIC FB_Brake` (CODESYS access specifier; FINAL and ABSTRACT of
+                // edition 3): the modifier is not the name
+                let modifier = (w == "FUNCTION_BLOCK"
+                    && toks.get(i + 1).is_some_and(|t| {
+                        let next = word(src, t).to_ascii_uppercase();
+                        t.tok == Tok::Ident
+                            && !is_var_keyword(&next)
+                            && !["END_FUNCTION_BLOCK", "EXTENDS", "IMPLEMENTS"]
+                                .contains(&next.as_str())
+                    })
+                    && toks.get(i).is_some_and(|t| {
+                        ["PUBLIC", "INTERNAL", "FINAL", "ABSTRACT"]
+                            .iter()
+                            .any(|k| is_word(src, t, k))
+                    }))
+                .then(|| {
+                    i += 1;
+                    toks[i - 1].range.clone()
+                });
                 let Some(name_tok) = toks.get(i).filter(|t| t.tok == Tok::Ident) else {
                     continue;
                 };
@@ -265,6 +288,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     oop,
                     actions: None,
                     action_list: Vec::new(),
+                    modifier,
                 });
                 i = j + 1;
             }
@@ -436,6 +460,21 @@ pub fn parse_text(
         return (unit, pending);
     }
     let mut text = src.to_string();
+    for p in &pous {
+        if let Some(r) = &p.modifier {
+            let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
+            diags.push(
+                Diagnostic::warning(
+                    code::W0304,
+                    format!("`FUNCTION_BLOCK {m}` of `{}`: the modifier is ignored", p.name),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("ignored")
+                .with_hint("ladderc compiles one project without inheritance or namespaces: PUBLIC, INTERNAL, FINAL and ABSTRACT change nothing in it; remove the word to silence this"),
+            );
+            blank(&mut text, r.clone());
+        }
+    }
     // ST: pragmas outside bodies are reported here (those inside ST bodies by the ST parser).
     for pr in &problems {
         if let Problem::Pragma(r) = pr {
