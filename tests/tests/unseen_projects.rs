@@ -618,6 +618,28 @@ CASE state OF\n  1:\n    IF (iTech > 8) THEN\n      iTech := 0;\n    END_IF;\n\
         errors[0].contains("error[E0102]: comment or pragma is never closed"),
         "{e}"
     );
+    // the same body in the project's generated `.st` file: the comment takes END_PROGRAM too
+    let st = "PROGRAM SuperStavy
+VAR iTech : INT; state : INT; END_VAR
+CASE state OF
+  1:
+                  IF (iTech > 8) THEN
+      iTech := 0;
+    END_IF;
+   (*ELSIF (iTech = 8) THEN                (*all states done*)
+      iTech := 0;
+  2:
+    state := 1;
+END_CASE;
+END_PROGRAM
+";
+    let e = rejected("comment.st", st);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0].starts_with("comment.st:8:4: error[E0102]: comment or pragma is never closed"),
+        "{e}"
+    );
 }
 
 /// CODESYS text (`MatGros/2026_Projet_YGO_ExcavatriceDragage`, `CODE/FB_Brake.st`) declares

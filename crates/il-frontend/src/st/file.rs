@@ -580,7 +580,20 @@ pub fn parse_text(
             _ => {}
         }
     }
-    let unit = crate::parse_named(file, &text, implicit_name, diags);
+    // A comment never closed takes the rest of the file, its `END_PROGRAM` ... too: the body's
+    // parse reports it (E0102); a missing `END_*` after its opening follows from it.
+    let unclosed = problems.iter().find_map(|p| match p {
+        Problem::UnterminatedComment(r) => Some(r.start),
+        _ => None,
+    });
+    let mut local = Diagnostics::new();
+    let unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    match unclosed {
+        Some(at) => diags.extend(local.into_vec().into_iter().filter(|d| {
+            !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
+        })),
+        None => diags.extend(local),
+    }
     (unit, pending)
 }
 
