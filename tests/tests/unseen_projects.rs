@@ -667,3 +667,25 @@ fn a_function_block_modifier_is_skipped_with_a_warning() {
         "{stderr}"
     );
 }
+
+/// ZPLC's HIL test `oop_extends.st`: `FUNCTION_BLOCK FB_Child EXTENDS FB_Base` (edition 3
+/// inheritance, not supported). Before, the clause was read as the first instruction of the body
+/// and every declaration after it was E0015 "declarations after instructions"; now the clause is
+/// one E0303 (when the block holds no METHOD, which is E0303 already), and the rest of the file is
+/// checked as usual.
+#[test]
+fn an_extends_clause_is_one_error() {
+    let src = "FUNCTION_BLOCK FB_Base\nVAR_OUTPUT BaseVal : INT; END_VAR\n  BaseVal := 10;\nEND_FUNCTION_BLOCK\n\
+               FUNCTION_BLOCK FB_Child EXTENDS FB_Base\nVAR\n  ChildVal : INT;\nEND_VAR\n  \
+               ChildVal := 20;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR b : FB_Base; n : INT; END_VAR\n  b();\n  n := b.BaseVal;\nEND_PROGRAM\n";
+    let e = rejected("extends.st", src);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(
+        errors,
+        ["extends.st:5:25: error[E0303]: `FB_Child` has an EXTENDS clause: object-oriented extensions \
+          (IEC 61131-3 ed. 3, CODESYS) are not supported (hint: write the method as a FUNCTION (or an \
+          action as part of the body); the body of this POU is not compiled)"],
+        "{e}"
+    );
+}

@@ -62,6 +62,9 @@ pub struct PouText {
     /// A modifier between `FUNCTION_BLOCK` and the name (`PUBLIC`, `INTERNAL`, `FINAL`,
     /// `ABSTRACT`: CODESYS and edition 3), skipped with W0304.
     pub modifier: Option<Range<usize>>,
+    /// The `EXTENDS base` / `IMPLEMENTS itf` clause after the name (edition 3 inheritance: E0303,
+    /// the body is not compiled).
+    pub heritage: Option<Range<usize>>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -177,6 +180,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     actions: Some(start),
                     action_list,
                     modifier: None,
+                    heritage: None,
                 });
                 i = j;
             }
@@ -230,6 +234,8 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                         }
                     }
                 }
+                let heritage_start = toks.get(i).map(|t| t.range.start);
+                let mut heritage = None;
                 while i < n
                     && ["EXTENDS", "IMPLEMENTS"]
                         .iter()
@@ -239,6 +245,9 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     while toks.get(i).is_some_and(|t| t.tok == Tok::Comma) {
                         i += 2;
                     }
+                    heritage = heritage_start
+                        .zip(toks.get(i.min(n) - 1))
+                        .map(|(s, t)| s..t.range.end);
                 }
                 let mut body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
                 while i < n && is_var_keyword(&word(src, &toks[i]).to_ascii_uppercase()) {
@@ -289,6 +298,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     actions: None,
                     action_list: Vec::new(),
                     modifier,
+                    heritage,
                 });
                 i = j + 1;
             }
@@ -536,13 +546,21 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
-        if let Some(r) = &p.oop {
+        if let Some(h) = &p.heritage {
+            // `FUNCTION_BLOCK Child EXTENDS Base`: the declarations are read without the clause
+            blank(&mut text, h.clone());
+        }
+        if let Some(r) = p.oop.as_ref().or(p.heritage.as_ref()) {
             let what = src.get(r.clone()).unwrap_or("METHOD").to_ascii_uppercase();
+            let (has, what) = match what.split_whitespace().next() {
+                Some(k @ ("EXTENDS" | "IMPLEMENTS")) => ("has an", format!("{k} clause")),
+                _ => ("holds a", what),
+            };
             diags.push(
                 Diagnostic::error(
                     code::E0303,
                     format!(
-                        "`{}` holds a {what}: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+                        "`{}` {has} {what}: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
                         p.name
                     ),
                 )
