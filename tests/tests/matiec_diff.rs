@@ -247,6 +247,27 @@ const KNOWN: &[Known] = &[
                  end + 1, matiec end) is implementation-dependent (ed. 2 Annex D).",
     },
     Known {
+        program: "time_real",
+        columns: &[
+            "INST.BUSY",
+            "INST.SECS",
+            "INST.SLOPE.BUSY",
+            "INST.SLOPE.ELAPSED",
+            "INST.WHOLE",
+        ],
+        stops_in: None,
+        reason: "exact time arithmetic, and TIME_TO_REAL's unit. Ten additions of T#100ms make exactly \
+                 T#1s (IEC 61131-3 ed. 2 2.5.1.5.8, Table 30: ADD of durations is a duration), so \
+                 `acc >= T#1s` holds in cycle 9 and the sampled ramp (written as Annex F's RAMP does, \
+                 elapsed time summed from a CYCLE input) ends after ten samples. matiec's sum of ten \
+                 100 ms is not normalized (0 s + 1000000000 ns), compares below 1 s, and its ramp runs \
+                 one sample longer (INST.WHOLE one cycle late, ELAPSED 1.1 s, BUSY one cycle longer). \
+                 INST.SECS: the unit of a TIME converted to a number is implementation-dependent; \
+                 ladderc counts milliseconds (TIME_TO_REAL(T#100ms) = 100.0, as CODESYS and TwinCAT, \
+                 crates/c-backend/README.md), matiec seconds (0.1). The ratio of two durations \
+                 (INST.PART) agrees.",
+    },
+    Known {
         program: "time_arith",
         columns: &["INST.DIVIDED"],
         stops_in: None,

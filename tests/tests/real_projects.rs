@@ -101,6 +101,12 @@ fn codesys_s7rtt_st_motion_runs() {
 }
 
 #[test]
+fn wago_e_cockpit_export_runs() {
+    let t = runs("AandIF_e-COCKPIT_python_scripting_plc.xml", 3);
+    assert_eq!(t, "cycle,time_ms,PLC_PRG.i\n0,0,1\n1,10,2\n2,20,3\n");
+}
+
+#[test]
 fn codesys_home_automation_export_names_its_vendor_libraries() {
     let errors = rejected(
         "MichielVanwelsenaere_HomeAutomation_CoDeSys3_PLCopen.xml",

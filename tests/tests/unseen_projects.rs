@@ -8,6 +8,13 @@
 //! - a POU that writes one of its own inputs (an OpenPLC Editor LD coil on an FB input; OSCAT
 //!   functions): IEC 61131-3 forbids it, matiec, CODESYS and TwinCAT accept it; before, E1015 rejected
 //!   the project, now W1411 warns and the POU's own copy is written.
+//!
+//! A second acceptance run (2026-12-02, branch `corpus`: 30+ more projects, OpenPLC Editor and Beremiz
+//! projects and examples, matiec's Annex F and syntax tests, ZPLC's IL/ST test programs, a TwinCAT
+//! application export, a WAGO e!COCKPIT export) added the tests below the ACTIONS ones: literals and
+//! enumerated values typed by their context, CODESYS/TwinCAT application exports, one diagnostic per
+//! missing library type, several SFC networks in one body, stray LD contacts, non-BOOL variables at
+//! bit addresses, and unclosed comments. Each is a minimal reproduction written here.
 
 mod common;
 use common::ladderc;
@@ -288,4 +295,397 @@ fn codesys_actions_called_from_an_st_body_run() {
         assert_eq!(out.status.code(), Some(1), "{stderr}");
         assert!(stderr.contains(want), "{want}: {stderr}");
     }
+}
+
+/// Checks a source that must be rejected; returns the `short` diagnostics (paths shortened to
+/// `name`) after asserting exit 1.
+fn rejected(name: &str, src: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join(name);
+    std::fs::write(&file, src).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).replace(&file.display().to_string(), name);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    stderr
+}
+
+/// ZPLC's HIL test `master_math_control.st` (and Annex F's `lag1`): `r := SQRT(2.0);` with
+/// `r : REAL`. A real literal is ANY_REAL, so the context types it and SQRT computes in REAL;
+/// before, an ANY_REAL function of literals was LREAL at once ("cannot store LREAL into REAL").
+/// An integer literal (`SQRT(2)`) is still read as LREAL.
+#[test]
+fn a_real_literal_into_an_any_real_function_takes_the_context_type() {
+    let st = "PROGRAM p\nVAR r : REAL; l : LREAL; b : BOOL; END_VAR\n  r := SQRT(2.0);\n  \
+              l := SQRT(2.0);\n  r := 2.0 * SIN(1.0) + LN(1.0);\n  b := SQRT(2.0) > 1.4;\nEND_PROGRAM\n";
+    let (trace, stderr) = run("math.st", st, "1", "p.r,p.l,p.b");
+    assert!(!stderr.contains("error"), "{stderr}");
+    // 2 sin 1 in REAL; SQRT(2) in LREAL for l
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.r,p.l,p.b\n0,0,1.6829419,1.4142135623730951,1\n"
+    );
+    let il = "PROGRAM p\nVAR r : REAL; END_VAR\n  LD 16.0\n  SQRT\n  ST r\nEND_PROGRAM\n";
+    let (trace, _) = run("math.il", il, "1", "p.r");
+    assert_eq!(trace, "cycle,time_ms,p.r\n0,0,4\n");
+    let e = rejected("int.st", &st.replace("SQRT(2.0);\n  l", "SQRT(2);\n  l"));
+    assert!(
+        e.contains("int.st:3:3: error[E1006]: cannot store LREAL into REAL"),
+        "{e}"
+    );
+}
+
+/// matiec's syntax test `enumeration/enumerationvalue.txt`: `c_1 := XXXX;` where several
+/// enumerations declare `XXXX` and `c_1` is one of them. IEC 61131-3 asks for the type prefix only
+/// where the context does not determine the value; before, every such use was E1001 "a value of
+/// several enumerations". Assignments, comparisons and function inputs now take the context's
+/// enumeration; without a context the value stays ambiguous.
+#[test]
+fn an_enumerated_value_of_several_types_takes_the_type_of_its_context() {
+    let src =
+        "TYPE\n  Light : (red, amber, green) := red;\n  Valve : (closed, open, green);\nEND_TYPE\n\
+               PROGRAM p\nVAR l : Light; v : Valve; n : INT; same : BOOL; END_VAR\n  \
+               l := green;\n  v := green;\n  same := (l = green) AND (green = l);\n  \
+               IF v = green THEN n := n + 1; END_IF;\n  l := SEL(same, red, amber);\nEND_PROGRAM\n";
+    let (trace, stderr) = run("enums.st", src, "2", "p.l,p.v,p.n,p.same");
+    assert!(!stderr.contains("error"), "{stderr}");
+    // l = amber (1) after SEL, v = green of Valve (2), n counts
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.l,p.v,p.n,p.same\n0,0,1,2,1,1\n1,10,1,2,2,1\n"
+    );
+    let e = rejected(
+        "ambiguous.st",
+        &src.replace(
+            "same := (l = green) AND (green = l);",
+            "n := SEL(green = green, 1, 2);",
+        ),
+    );
+    assert!(
+        e.contains("error[E1001]: `green` is a value of several enumerations"),
+        "{e}"
+    );
+}
+
+/// The application export of CODESYS and TwinCAT ("Export PLCopenXML" of a whole application, as
+/// in the xPPU pick-and-place corpus exported from TwinCAT 3.5.10): `<types>` and `<instances>`
+/// are empty, and the application lives in the project's vendor data,
+/// `addData/data[.../application]/resource`: its tasks, global lists, and in the resource's own
+/// vendor data its data types (`.../datatype`) and POUs (`.../pou`). The task's period is in its
+/// settings (`TaskSettings Interval="10000" IntervalUnit="us"`; TwinCAT writes `interval="PT0S"`).
+/// Before, the whole program was skipped with one "vendor data ignored" warning: `check` passed and
+/// `run` had nothing to run.
+#[test]
+fn a_codesys_or_twincat_application_export_runs() {
+    let app = |interval: &str, settings: &str| {
+        format!(
+            "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\
+             <fileHeader companyName=\"Beckhoff Automation GmbH\" productName=\"TwinCAT PLC Control\" productVersion=\"3.5.10.30\" creationDateTime=\"2019-09-26T16:12:41\"/>\
+             <contentHeader name=\"LD_EVOLUTION\"><coordinateInfo><fbd><scaling x=\"1\" y=\"1\"/></fbd><ld><scaling x=\"1\" y=\"1\"/></ld>\
+             <sfc><scaling x=\"1\" y=\"1\"/></sfc></coordinateInfo></contentHeader>\
+             <types><dataTypes/><pous/></types><instances><configurations/></instances>\
+             <addData><data name=\"http://www.3s-software.com/plcopenxml/application\" handleUnknown=\"implementation\">\
+             <resource name=\"LD_EVOLUTION\"><task name=\"PlcTask\" interval=\"{interval}\" priority=\"20\">\
+             <pouInstance name=\"Main\" typeName=\"\"/><addData>\
+             <data name=\"http://www.3s-software.com/plcopenxml/tasksettings\" handleUnknown=\"implementation\">{settings}</data>\
+             <data name=\"http://www.3s-software.com/plcopenxml/objectid\" handleUnknown=\"discard\"><ObjectId>7639a151</ObjectId></data>\
+             </addData></task>\
+             <globalVars name=\"GVL\"><variable name=\"Limit\"><type><INT/></type><initialValue><simpleValue value=\"3\"/></initialValue></variable></globalVars>\
+             <addData><data name=\"http://www.3s-software.com/plcopenxml/datatype\" handleUnknown=\"implementation\">\
+             <dataType name=\"E_Mode\"><baseType><enum><values><value name=\"Idle\" value=\"0\"/><value name=\"Busy\" value=\"1\"/></values></enum></baseType></dataType></data>\
+             <data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">\
+             <pou name=\"Main\" pouType=\"program\"><interface><localVars>\
+             <variable name=\"A\"><type><BOOL/></type><initialValue><simpleValue value=\"TRUE\"/></initialValue></variable>\
+             <variable name=\"B\"><type><BOOL/></type><initialValue><simpleValue value=\"TRUE\"/></initialValue></variable>\
+             <variable name=\"Open\"><type><BOOL/></type></variable></localVars></interface>\
+             <body><LD><leftPowerRail localId=\"0\"><position x=\"0\" y=\"0\"/><connectionPointOut formalParameter=\"none\"/></leftPowerRail>\
+             <vendorElement localId=\"2\"><position x=\"0\" y=\"0\"/><alternativeText><xhtml xmlns=\"http://www.w3.org/1999/xhtml\"/></alternativeText></vendorElement>\
+             <contact localId=\"3\" negated=\"false\" storage=\"none\" edge=\"none\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"0\"/></connectionPointIn><connectionPointOut/><variable>A</variable></contact>\
+             <contact localId=\"4\" negated=\"false\" storage=\"none\" edge=\"none\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"3\"/></connectionPointIn><connectionPointOut/><variable>B</variable></contact>\
+             <coil localId=\"5\" negated=\"false\" storage=\"none\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"4\"/></connectionPointIn><connectionPointOut/><variable>Open</variable></coil>\
+             <rightPowerRail localId=\"2147483646\"><position x=\"0\" y=\"0\"/><connectionPointIn/></rightPowerRail></LD></body></pou>\
+             <pou name=\"Tally\" pouType=\"program\"><interface><localVars>\
+             <variable name=\"Mode\"><type><derived name=\"E_Mode\"/></type></variable>\
+             <variable name=\"Count\"><type><INT/></type></variable></localVars></interface><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">\
+             IF Count &lt; GVL.Limit THEN Count := Count + 1; ELSE Mode := E_Mode#Busy; END_IF</xhtml></ST></body></pou>\
+             </data></addData></resource></data>\
+             <data name=\"http://www.3s-software.com/plcopenxml/projectstructure\" handleUnknown=\"discard\"><ProjectStructure/></data>\
+             </addData></project>\n"
+        )
+    };
+    let twincat = app(
+        "PT0S",
+        "<TaskSettings KindOfTask=\"Cyclic\" Interval=\"10000\" IntervalUnit=\"us\"><Watchdog Enabled=\"false\" TimeUnit=\"ms\"/></TaskSettings>",
+    );
+    let (trace, stderr) = run("evolution.xml", &twincat, "2", "Main.Open");
+    assert_eq!(trace, "cycle,time_ms,Main.Open\n0,0,1\n1,10,1\n");
+    // what is still ignored is named: the object ids and the project structure, not the application
+    assert!(
+        stderr.contains("warning[W3002]") && !stderr.contains("plcopenxml/application"),
+        "{stderr}"
+    );
+    // CODESYS writes the period as a duration; a second program uses the data type and the list
+    let codesys = app(
+        "PT0.02S",
+        "<TaskSettings KindOfTask=\"Cyclic\" Interval=\"t#20ms\" IntervalUnit=\"ms\"/>",
+    )
+    .replace(
+        "<pouInstance name=\"Main\" typeName=\"\"/>",
+        "<pouInstance name=\"Main\" typeName=\"\"/><pouInstance name=\"Tally\" typeName=\"\"/>",
+    );
+    let (trace, _) = run("application.xml", &codesys, "8", "Tally.Count,Tally.Mode");
+    // the 20 ms task runs every other 10 ms cycle: Count reaches GVL.Limit (3), then Mode is Busy
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Tally.Count,Tally.Mode\n0,0,1,0\n1,10,1,0\n2,20,2,0\n3,30,2,0\n\
+         4,40,3,0\n5,50,3,0\n6,60,3,1\n7,70,3,1\n"
+    );
+}
+
+/// Beremiz's own examples and test projects (`python`, `logging`, `iec61131_lang_test`, `wxGlade`)
+/// use blocks of Beremiz's extension library (`python_eval`, `python_poll`, `LOGGER`) and matiec's
+/// `RTC`, which the file does not contain. Each missing type is one E3009 naming its uses; before,
+/// every block of that type gave a further E3007 "unknown block type".
+#[test]
+fn a_block_of_a_missing_library_type_is_reported_once() {
+    let xml = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+               <fileHeader companyName=\"Beremiz\" productName=\"Beremiz\" productVersion=\"1\" creationDateTime=\"2024-01-01T00:00:00\"/>\
+               <contentHeader name=\"python\"><coordinateInfo><fbd><scaling x=\"0\" y=\"0\"/></fbd><ld><scaling x=\"0\" y=\"0\"/></ld>\
+               <sfc><scaling x=\"0\" y=\"0\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+               <pou name=\"main_pytest\" pouType=\"program\"><interface><localVars>\
+               <variable name=\"py1\"><type><derived name=\"python_eval\"/></type></variable>\
+               <variable name=\"py2\"><type><derived name=\"python_eval\"/></type></variable>\
+               <variable name=\"go\"><type><BOOL/></type></variable></localVars></interface><body><FBD>\
+               <inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/><expression>go</expression></inVariable>\
+               <block localId=\"2\" typeName=\"python_eval\" instanceName=\"py1\"><position x=\"0\" y=\"0\"/><inputVariables>\
+               <variable formalParameter=\"TRIG\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn></variable>\
+               </inputVariables><inOutVariables/><outputVariables/></block>\
+               <block localId=\"3\" typeName=\"python_eval\" instanceName=\"py2\"><position x=\"0\" y=\"0\"/><inputVariables>\
+               <variable formalParameter=\"TRIG\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn></variable>\
+               </inputVariables><inOutVariables/><outputVariables/></block>\
+               <block localId=\"4\" typeName=\"no_such_block\"><position x=\"0\" y=\"0\"/><inputVariables>\
+               <variable formalParameter=\"IN\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn></variable>\
+               </inputVariables><inOutVariables/><outputVariables/></block>\
+               </FBD></body></pou></pous></types><instances><configurations/></instances></project>\n";
+    let e = rejected("python.xml", xml);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 2, "{e}");
+    assert!(
+        errors[0]
+            .contains("error[E3009]: type `python_eval` is not defined in this project (2 uses)"),
+        "{e}"
+    );
+    // a block whose type nothing declares at all is still named where it is
+    assert!(
+        errors[1].contains("error[E3007]: unknown block type `no_such_block`"),
+        "{e}"
+    );
+}
+
+/// IEC 61131-3 Annex F's gravel example (in matiec's `AnnexF/gravel_st.txt`): one program body
+/// holds three SFC networks (`sequential_function_chart ::= sfc_network {sfc_network}`), each
+/// with its own INITIAL_STEP, one of them a single step that stays active and runs its monitor
+/// action every cycle. Before, the second and third initial steps were E3128 and the lone step
+/// E3121. Two initial steps that transitions link into one network stay E3128, once.
+#[test]
+fn a_body_with_several_sfc_networks_runs_them_all() {
+    let src = "PROGRAM p\nVAR go : BOOL := TRUE; n : INT; ticks : INT; lamp : BOOL; END_VAR\n\
+               INITIAL_STEP Idle: END_STEP\nTRANSITION FROM Idle TO Run := go; END_TRANSITION\n\
+               STEP Run: Count(N); END_STEP\nTRANSITION FROM Run TO Idle := n >= 2; END_TRANSITION\n\
+               ACTION Count: n := n + 1; END_ACTION\n\
+               (* a second network: one initial step, always active *)\n\
+               INITIAL_STEP Monitor: Watch(N); END_STEP\n\
+               ACTION Watch:\n  ticks := ticks + 1;\n  lamp := Run.X;\nEND_ACTION\nEND_PROGRAM\n";
+    let (trace, stderr) = run("nets.st", src, "4", "p.n,p.ticks,p.lamp");
+    assert!(!stderr.contains("error"), "{stderr}");
+    // the monitor network counts every cycle and sees the other network's step
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.n,p.ticks,p.lamp\n0,0,1,1,1\n1,10,2,2,1\n2,20,3,3,0\n3,30,4,4,1\n"
+    );
+    let linked = src.replace(
+        "ACTION Count:",
+        "TRANSITION FROM Monitor TO Run := FALSE; END_TRANSITION\nACTION Count:",
+    );
+    let e = rejected("linked.st", &linked);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0].contains("linked.st:10:14: error[E3128]: a second INITIAL_STEP `Monitor` in the network of `Idle`"),
+        "{e}"
+    );
+}
+
+/// An OpenPLC Editor LD diagram (`SebastianGuevara/PARCIAL2-PROCESOETIQUETAMIENTO`) holds a
+/// stray contact wired on neither side; the editor generates nothing for it. Before, it was E3005
+/// "not connected on its left side" and the project was rejected; now it is W3003 and skipped. A
+/// contact whose output feeds a coil but whose left side is open stays E3005.
+#[test]
+fn a_stray_contact_wired_to_nothing_is_skipped_with_a_warning() {
+    let xml = |stray_out: &str| {
+        format!(
+            "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+             <fileHeader companyName=\"\" productName=\"OpenPLC\" productVersion=\"1\" creationDateTime=\"2024-01-01T00:00:00\"/>\
+             <contentHeader name=\"p\"><coordinateInfo><fbd><scaling x=\"10\" y=\"10\"/></fbd><ld><scaling x=\"10\" y=\"10\"/></ld>\
+             <sfc><scaling x=\"10\" y=\"10\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+             <pou name=\"program0\" pouType=\"program\"><interface><localVars>\
+             <variable name=\"start\"><type><BOOL/></type><initialValue><simpleValue value=\"TRUE\"/></initialValue></variable>\
+             <variable name=\"IR3\"><type><BOOL/></type></variable><variable name=\"motor\"><type><BOOL/></type></variable>\
+             </localVars></interface><body><LD>\
+             <leftPowerRail localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut formalParameter=\"\"/></leftPowerRail>\
+             <contact localId=\"2\" negated=\"false\"><position x=\"50\" y=\"0\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn><connectionPointOut/><variable>start</variable></contact>\
+             <coil localId=\"3\" negated=\"false\"><position x=\"150\" y=\"0\"/><connectionPointIn><connection refLocalId=\"2\"/>{stray_out}</connectionPointIn><connectionPointOut/><variable>motor</variable></coil>\
+             <contact localId=\"45\" negated=\"false\"><position x=\"280\" y=\"650\"/><connectionPointIn/><connectionPointOut/><variable>IR3</variable></contact>\
+             </LD></body></pou></pous></types><instances><configurations><configuration name=\"Config0\"><resource name=\"Res0\">\
+             <task name=\"task0\" priority=\"0\" interval=\"T#20ms\"><pouInstance name=\"instance0\" typeName=\"program0\"/></task>\
+             </resource></configuration></configurations></instances></project>\n"
+        )
+    };
+    let (trace, stderr) = run("stray.xml", &xml(""), "2", "instance0.motor");
+    assert_eq!(trace, "cycle,time_ms,instance0.motor\n0,0,1\n1,10,1\n");
+    assert!(
+        stderr.contains("warning[W3003]: contact `IR3` is connected to nothing and is skipped [POU `program0`, network 2, localId 45]"),
+        "{stderr}"
+    );
+    let e = rejected("open.xml", &xml("<connection refLocalId=\"45\"/>"));
+    assert!(
+        e.contains("error[E3005]: contact `IR3` is not connected on its left side"),
+        "{e}"
+    );
+}
+
+/// ZPLC's HIL tests (`tools/hil/il_tests/arithmetic.il`) declare `a AT %Q0.0 : INT` (ZPLC reads
+/// `%Q0.0` as "byte 0"). In IEC 61131-3 `%Q0.0` is `%QX0.0`, one bit. Before, ladderc accepted it
+/// and cut every value to a bit (10 + 5 gave 1); now it is E1027 at the address, one per variable.
+/// An array of BOOL may start at a bit address.
+#[test]
+fn a_non_bool_variable_at_a_bit_address_is_rejected() {
+    let src = |a: &str, b: &str| {
+        format!(
+            "PROGRAM Arithmetic\nVAR\n  a AT {a} : INT;\n  b AT {b} : INT;\n  res_add : INT;\n  \
+             flags AT %QX4.0 : ARRAY[0..7] OF BOOL;\n  ok AT %Q5.1 : BOOL;\nEND_VAR\n  \
+             LD 10\n  ST a\n  LD 5\n  ST b\n  LD a\n  ADD b\n  ST res_add\n  GT 10\n  ST ok\nEND_PROGRAM\n"
+        )
+    };
+    let e = rejected("arithmetic.il", &src("%Q0.0", "%IX0.1"));
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(
+        errors,
+        [
+            "arithmetic.il:3:8: error[E1027]: `a` has type INT, but `%QX0.0` is a single bit: a bit address holds a BOOL \
+             (hint: locate the variable at an address of its size (%QB byte, %QW word, %QD double word, %QL long word), or declare it BOOL)",
+            "arithmetic.il:4:8: error[E1027]: `b` has type INT, but `%IX0.1` is a single bit: a bit address holds a BOOL \
+             (hint: locate the variable at an address of its size (%QB byte, %QW word, %QD double word, %QL long word), or declare it BOOL)",
+        ],
+        "{e}"
+    );
+    let (trace, stderr) = run(
+        "arithmetic.il",
+        &src("%QW0", "%MW1"),
+        "1",
+        "Arithmetic.a,Arithmetic.b,Arithmetic.res_add,Arithmetic.ok",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Arithmetic.a,Arithmetic.b,Arithmetic.res_add,Arithmetic.ok\n0,0,10,5,15,1\n"
+    );
+}
+
+/// An OpenPLC Editor project (`kipariss1/RPA_SEM_TRYSKANI`) comments code out around comments:
+/// `(*ELSIF ... (*note*)` and never closes the outer one (matiec reads comments flat by default;
+/// IEC 61131-3 ed. 3 nests them, ed. 2 forbids the nesting). The one genuine problem is the
+/// unclosed comment; before, an ST body also reported the END_CASE it swallowed.
+#[test]
+fn an_unclosed_comment_in_an_st_body_is_one_error() {
+    let xml = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+               <fileHeader companyName=\"\" productName=\"OpenPLC\" productVersion=\"1\" creationDateTime=\"2024-01-01T00:00:00\"/>\
+               <contentHeader name=\"p\"><coordinateInfo><fbd><scaling x=\"10\" y=\"10\"/></fbd><ld><scaling x=\"10\" y=\"10\"/></ld>\
+               <sfc><scaling x=\"10\" y=\"10\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+               <pou name=\"SuperStavy\" pouType=\"program\"><interface><localVars>\
+               <variable name=\"iTech\"><type><INT/></type></variable><variable name=\"state\"><type><INT/></type></variable>\
+               </localVars></interface><body><ST><xhtml:p xmlns:xhtml=\"http://www.w3.org/1999/xhtml\"><![CDATA[\
+CASE state OF\n  1:\n    IF (iTech > 8) THEN\n      iTech := 0;\n    END_IF;\n\
+   (*ELSIF (iTech = 8) THEN  (*all states done*)\n      iTech := 0;\n  2:\n    state := 1;\nEND_CASE;\n\
+]]></xhtml:p></ST></body></pou></pous></types><instances><configurations/></instances></project>\n";
+    let e = rejected("comment.xml", xml);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0].contains("error[E0102]: comment or pragma is never closed"),
+        "{e}"
+    );
+    // the same body in the project's generated `.st` file: the comment takes END_PROGRAM too
+    let st = "PROGRAM SuperStavy
+VAR iTech : INT; state : INT; END_VAR
+CASE state OF
+  1:
+                  IF (iTech > 8) THEN
+      iTech := 0;
+    END_IF;
+   (*ELSIF (iTech = 8) THEN                (*all states done*)
+      iTech := 0;
+  2:
+    state := 1;
+END_CASE;
+END_PROGRAM
+";
+    let e = rejected("comment.st", st);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0].starts_with("comment.st:8:4: error[E0102]: comment or pragma is never closed"),
+        "{e}"
+    );
+}
+
+/// CODESYS text (`MatGros/2026_Projet_YGO_ExcavatriceDragage`, `CODE/FB_Brake.st`) declares
+/// `FUNCTION_BLOCK PUBLIC FB_Brake`. Before, `PUBLIC` was read as the block's name and every line of
+/// the block was an error (116 errors for the project); now the modifier is W0304 and skipped, also
+/// `FINAL` and `ABSTRACT` of edition 3. A block named `Public` is still a block named `Public`.
+#[test]
+fn a_function_block_modifier_is_skipped_with_a_warning() {
+    let src = "FUNCTION_BLOCK PUBLIC FB_Brake\nVAR_INPUT\n  Enable : BOOL;\nEND_VAR\nVAR_OUTPUT\n  \
+               BrakeCmd : BOOL;\nEND_VAR\n  BrakeCmd := Enable;\nEND_FUNCTION_BLOCK\n\
+               FUNCTION_BLOCK FINAL Public\nVAR_OUTPUT n : INT; END_VAR\n  n := n + 1;\nEND_FUNCTION_BLOCK\n\
+               FUNCTION_BLOCK Internal\nVAR_OUTPUT n : INT; END_VAR\n  n := n + 2;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR b : FB_Brake; p : Public; q : Internal; go : BOOL := TRUE; END_VAR\n  \
+               b(Enable := go);\n  p();\n  q();\nEND_PROGRAM\n";
+    let (trace, stderr) = run("brake.st", src, "2", "main.b.BrakeCmd,main.p.n,main.q.n");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.b.BrakeCmd,main.p.n,main.q.n\n0,0,1,1,2\n1,10,1,2,4\n"
+    );
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("W0304")).collect();
+    assert_eq!(warnings.len(), 2, "{stderr}");
+    assert!(
+        warnings[0].starts_with("brake.st:1:16: warning[W0304]: `FUNCTION_BLOCK PUBLIC` of `FB_Brake`: the modifier is ignored"),
+        "{stderr}"
+    );
+}
+
+/// ZPLC's HIL test `oop_extends.st`: `FUNCTION_BLOCK FB_Child EXTENDS FB_Base` (edition 3
+/// inheritance, not supported). Before, the clause was read as the first instruction of the body
+/// and every declaration after it was E0015 "declarations after instructions"; now the clause is
+/// one E0303 (when the block holds no METHOD, which is E0303 already), and the rest of the file is
+/// checked as usual.
+#[test]
+fn an_extends_clause_is_one_error() {
+    let src = "FUNCTION_BLOCK FB_Base\nVAR_OUTPUT BaseVal : INT; END_VAR\n  BaseVal := 10;\nEND_FUNCTION_BLOCK\n\
+               FUNCTION_BLOCK FB_Child EXTENDS FB_Base\nVAR\n  ChildVal : INT;\nEND_VAR\n  \
+               ChildVal := 20;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR b : FB_Base; n : INT; END_VAR\n  b();\n  n := b.BaseVal;\nEND_PROGRAM\n";
+    let e = rejected("extends.st", src);
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(
+        errors,
+        ["extends.st:5:25: error[E0303]: `FB_Child` has an EXTENDS clause: object-oriented extensions \
+          (IEC 61131-3 ed. 3, CODESYS) are not supported (hint: write the method as a FUNCTION (or an \
+          action as part of the body); the body of this POU is not compiled)"],
+        "{e}"
+    );
 }

@@ -1073,6 +1073,19 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             } => {
                 let input = self.input_val(ctx, &node.input, i);
                 if input.is_none() && !node.wired {
+                    if !g.nodes.iter().any(|n| n.wires().any(|w| w.from == i)) {
+                        // a stray contact, wired on neither side (left in the editor; OpenPLC
+                        // Editor and Beremiz generate nothing for it): it has no effect
+                        let d = Diagnostic::warning(
+                            code::W3003,
+                            format!("contact `{var}` is connected to nothing and is skipped"),
+                        )
+                        .at(span)
+                        .with_xml(self.at(i).xml());
+                        ctx.report(d);
+                        self.poisoned.insert(i);
+                        return;
+                    }
                     let d = self
                         .diag(
                             ctx,
@@ -1364,6 +1377,16 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             return;
         }
         let Some(bt) = self.block_type(type_name) else {
+            if self
+                .pou
+                .index
+                .missing_types
+                .contains(&type_name.to_ascii_uppercase())
+            {
+                // the instance's type is missing from the file: E3009 named it with every use
+                self.poisoned.insert(i);
+                return;
+            }
             let is_program = self
                 .pou
                 .index

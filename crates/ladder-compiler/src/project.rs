@@ -55,6 +55,9 @@ pub struct Index {
     pub globals: HashMap<String, TypeRef>,
     /// The members of each named global variable list (CODESYS GVL), by list, then member name.
     pub global_lists: HashMap<String, HashMap<String, TypeRef>>,
+    /// Derived types that nothing in the file defines (upper-case names), each already reported
+    /// once (E3009, with every use): a block of such a type is not reported again.
+    pub missing_types: HashSet<String>,
 }
 
 /// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a
@@ -78,20 +81,25 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     ctx.constants = decls::collect_constants(root, true, &|_| None);
 
     let types_el = root.child("types");
+    let apps = application_resources(root);
     let data_types: Vec<TypeDecl> = types_el
         .and_then(|t| t.child("dataTypes"))
-        .map(|d| {
-            d.children_named("dataType")
-                .filter_map(|e| decls::data_type(ctx, e))
-                .collect()
-        })
-        .unwrap_or_default();
+        .into_iter()
+        .flat_map(|d| d.children_named("dataType"))
+        .chain(
+            apps.iter()
+                .flat_map(|r| application_data(r, "/datatype", "dataType")),
+        )
+        .filter_map(|e| decls::data_type(ctx, e))
+        .collect();
 
     // Interfaces first: bodies call each other in any order.
     let pou_els: Vec<&Element> = types_el
         .and_then(|t| t.child("pous"))
-        .map(|p| p.children_named("pou").collect())
-        .unwrap_or_default();
+        .into_iter()
+        .flat_map(|p| p.children_named("pou"))
+        .chain(apps.iter().flat_map(|r| application_data(r, "/pou", "pou")))
+        .collect();
     let mut headers = Vec::new();
     let mut index = Index::default();
     for d in &data_types {
@@ -103,7 +111,7 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             headers.push((*p, h));
         }
     }
-    let configs: Vec<Configuration> = root
+    let mut configs: Vec<Configuration> = root
         .child("instances")
         .and_then(|i| i.child("configurations"))
         .map(|c| {
@@ -112,6 +120,10 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
                 .collect()
         })
         .unwrap_or_default();
+    configs.extend(
+        apps.iter()
+            .filter_map(|r| application_configuration(ctx, r)),
+    );
     let free_globals = project_global_lists(ctx, root);
     let blocks = configs
         .iter()
@@ -133,7 +145,7 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             }
         }
     }
-    check_types(ctx, &index, &data_types, &headers, &configs);
+    index.missing_types = check_types(ctx, &index, &data_types, &headers, &configs);
 
     if !data_types.is_empty() {
         unit.items.push(LibraryElement::DataTypes(data_types));
@@ -181,6 +193,49 @@ fn project_global_lists(ctx: &mut Ctx, root: &Element) -> Vec<VarBlock> {
         .into_iter()
         .flat_map(|g| decls::global_lists(ctx, g))
         .collect()
+}
+
+/// The `<resource>` of each application a CODESYS or TwinCAT export keeps in the project's vendor
+/// data (`addData/data[.../application]/resource`, what "Export PLCopenXML" writes for a whole
+/// application): its tasks and program instances, its global variable lists, and in its own
+/// vendor data its data types (`.../datatype`) and POUs (`.../pou`).
+fn application_resources<'b, 'a>(root: &'b Element<'a>) -> Vec<&'b Element<'a>> {
+    root.children_named("addData")
+        .flat_map(|a| a.children_named("data"))
+        .filter(|d| d.attr("name").is_some_and(|n| n.ends_with("/application")))
+        .flat_map(|d| d.children_named("resource"))
+        .collect()
+}
+
+/// The elements `<element>` of an application resource's vendor data blocks whose name ends
+/// with `suffix`.
+fn application_data<'e, 'a>(
+    resource: &'e Element<'a>,
+    suffix: &'static str,
+    element: &'static str,
+) -> impl Iterator<Item = &'e Element<'a>> {
+    resource
+        .children_named("addData")
+        .flat_map(|a| a.children_named("data"))
+        .filter(move |d| d.attr("name").is_some_and(|n| n.ends_with(suffix)))
+        .flat_map(move |d| d.children_named(element))
+}
+
+/// An application resource's tasks and program instances, as a configuration of its own (named
+/// after the resource; its global variable lists are read by [`project_global_lists`]), or
+/// `None` when it has neither.
+fn application_configuration(ctx: &mut Ctx, r: &Element) -> Option<Configuration> {
+    if r.children_named("task").next().is_none() && r.children_named("pouInstance").next().is_none()
+    {
+        return None;
+    }
+    let res = resource_with(ctx, r, false)?;
+    Some(Configuration {
+        name: res.name.clone(),
+        globals: Vec::new(),
+        span: res.span,
+        resources: vec![res],
+    })
 }
 
 /// The POUs reachable from the configurations' program instances (upper-cased names), or `None` when
@@ -269,13 +324,43 @@ fn version(ctx: &mut Ctx, root: &Element) -> Version {
     }
 }
 
-/// One W3002 for all `addData` / vendor elements of the file.
+/// Whether ladderc reads a vendor data block (`<data name="...">`): the CODESYS/TwinCAT global
+/// variable lists, applications (their tasks, data types and POUs) and task settings.
+fn is_read_vendor_data(name: &str) -> bool {
+    [
+        "/globalvars",
+        "/application",
+        "/datatype",
+        "/pou",
+        "/tasksettings",
+    ]
+    .iter()
+    .any(|s| name.ends_with(s))
+}
+
+/// One W3002 for all `addData` / vendor elements of the file that ladderc does not read (the
+/// blocks it reads are searched for further vendor data inside them).
 fn vendor_data(ctx: &mut Ctx, root: &Element) {
     let mut found: Vec<&Element> = Vec::new();
+    let mut ignored_name: Vec<(usize, &str)> = Vec::new();
     let mut stack = vec![root];
     while let Some(e) = stack.pop() {
         for c in e.children {
-            if c.name == "addData" || c.name == "vendorElement" {
+            if c.name == "addData" {
+                let mut ignored = c.children.iter().any(|d| d.name != "data");
+                for d in c.children_named("data") {
+                    let name = d.attr("name").unwrap_or("");
+                    if is_read_vendor_data(name) {
+                        stack.push(d);
+                    } else {
+                        ignored = true;
+                        ignored_name.push((c.tag_start, name));
+                    }
+                }
+                if ignored || c.children.is_empty() {
+                    found.push(c);
+                }
+            } else if c.name == "vendorElement" {
                 found.push(c);
             } else {
                 stack.push(c);
@@ -295,7 +380,8 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
         )
         .at(ctx.tag(first))
         .with_primary_label("tool-specific data, not part of the program");
-        if let Some(name) = first.child("data").and_then(|d| d.attr("name")) {
+        ignored_name.sort_by_key(|(at, _)| *at);
+        if let Some((_, name)) = ignored_name.iter().find(|(at, _)| *at == first.tag_start) {
             d = d.with_note(format!("first block: {name}"));
         }
         ctx.report(d);
@@ -396,14 +482,15 @@ fn signature(p: &Pou) -> PouSig {
     }
 }
 
-/// E3009: derived types that nothing defines (one diagnostic per missing type, labels on its uses).
+/// E3009: derived types that nothing defines (one diagnostic per missing type, labels on its uses);
+/// returns their upper-case names.
 fn check_types(
     ctx: &mut Ctx,
     index: &Index,
     data_types: &[TypeDecl],
     pous: &[(&Element, Pou)],
     configs: &[Configuration],
-) {
+) -> HashSet<String> {
     let mut uses: Vec<(String, il_frontend::Span, String)> = Vec::new();
     let visit = |ty: &TypeRef, owner: &str, uses: &mut Vec<_>| {
         let mut t = ty;
@@ -458,6 +545,7 @@ fn check_types(
         }
         by_name.entry(key).or_default().push((span, owner));
     }
+    let missing = by_name.keys().cloned().collect();
     for name in order {
         let list = &by_name[&name.to_ascii_uppercase()];
         let (first, owner) = &list[0];
@@ -483,6 +571,7 @@ fn check_types(
         }
         ctx.report(d);
     }
+    missing
 }
 
 fn configuration(ctx: &mut Ctx, c: &Element) -> Option<Configuration> {
@@ -512,6 +601,12 @@ fn configuration(ctx: &mut Ctx, c: &Element) -> Option<Configuration> {
 }
 
 fn resource(ctx: &mut Ctx, r: &Element) -> Option<Resource> {
+    resource_with(ctx, r, true)
+}
+
+/// A `<resource>`; its `<globalVars>` only with `globals` (an application resource's lists are
+/// read with the project's vendor lists).
+fn resource_with(ctx: &mut Ctx, r: &Element, globals: bool) -> Option<Resource> {
     let span = ctx.tag(r);
     let Some(name) = r
         .attr("name")
@@ -523,6 +618,7 @@ fn resource(ctx: &mut Ctx, r: &Element) -> Option<Resource> {
     };
     let globals: Vec<VarBlock> = r
         .children_named("globalVars")
+        .filter(|_| globals)
         .flat_map(|g| decls::global_lists(ctx, g))
         .collect();
     let mut tasks = Vec::new();
@@ -612,6 +708,19 @@ fn task(ctx: &mut Ctx, t: &Element) -> Option<Task> {
             },
         }
     });
+    // CODESYS and TwinCAT keep a cyclic task's period in their task settings too, and TwinCAT
+    // writes `interval="PT0S"` beside them: the settings give the period the task runs with.
+    let zero = matches!(
+        &interval,
+        Some(Operand::Literal(Literal {
+            kind: LiteralKind::Duration(0),
+            ..
+        }))
+    );
+    let interval = match (&interval, zero) {
+        (None, _) | (_, true) => task_settings_interval(ctx, t).or(interval),
+        _ => interval,
+    };
     let single = t.attr("single").and_then(|sg| {
         let s = ctx.attr_span(t, "single");
         let op = values::operand(sg, s);
@@ -631,6 +740,51 @@ fn task(ctx: &mut Ctx, t: &Element) -> Option<Task> {
         single,
         priority,
         span,
+    })
+}
+
+/// The period of a cyclic task from its CODESYS/TwinCAT settings,
+/// `addData/data[.../tasksettings]/TaskSettings KindOfTask="Cyclic" Interval="10000"
+/// IntervalUnit="us"` (or `Interval="t#10ms"`); `None` for another kind of task, a zero or
+/// unreadable period.
+fn task_settings_interval(ctx: &mut Ctx, t: &Element) -> Option<Operand> {
+    let settings = t
+        .children_named("addData")
+        .flat_map(|a| a.children_named("data"))
+        .filter(|d| d.attr("name").is_some_and(|n| n.ends_with("/tasksettings")))
+        .flat_map(|d| d.children_named("TaskSettings"))
+        .next()?;
+    if !settings
+        .attr("KindOfTask")
+        .is_some_and(|k| k.trim().eq_ignore_ascii_case("cyclic"))
+    {
+        return None;
+    }
+    let text = settings.attr("Interval")?.trim();
+    let ns = match text.split_once('#') {
+        Some((prefix, rest))
+            if ["T", "TIME", "LT", "LTIME"].contains(&prefix.to_ascii_uppercase().as_str()) =>
+        {
+            values::duration(rest)?
+        }
+        Some(_) => return None,
+        None => {
+            let n: f64 = text.parse().ok()?;
+            let unit = match settings.attr("IntervalUnit").map(str::trim) {
+                Some("ns") => 1.0,
+                Some("us") => 1e3,
+                Some("s") => 1e9,
+                _ => 1e6,
+            };
+            (n * unit).round() as i128
+        }
+    };
+    (ns > 0).then(|| {
+        Operand::Literal(Literal {
+            kind: LiteralKind::Duration(ns),
+            type_prefix: None,
+            span: ctx.attr_span(settings, "Interval"),
+        })
     })
 }
 

@@ -192,7 +192,10 @@ impl Body<'_, '_> {
                 // a typed name: typed_call binds the literals to its type (or reports E1410/E1017)
                 let _ = t;
                 Ty::Lit(root)
-            } else if class == Class::AnyReal {
+            } else if class == Class::AnyReal && !real {
+                // an integer literal is no ANY_REAL value: read leniently as LREAL (`SQRT(2)`);
+                // a real literal stays untyped, so the context types it (`r := SQRT(2.0)` with
+                // `r : REAL` computes in REAL), LREAL where nothing does
                 let _ = self.lits.bind(root, &Type::LREAL);
                 Ty::Known(Type::LREAL)
             } else if real && !class.accepts_real_literal() {

@@ -560,6 +560,9 @@ impl Analyzer<'_> {
                         consts.insert(d.name.key(), (ty.clone(), v.clone()));
                     }
                 }
+                if let Some(loc) = &d.location {
+                    self.check_bit_location(d, loc, &ty);
+                }
                 let edge = d
                     .edge
                     .filter(|e| self.edge_allowed(*e, d, b.kind, &ty, pou));
@@ -578,6 +581,40 @@ impl Analyzer<'_> {
             }
         }
         out
+    }
+
+    /// E1027: a variable located at a single bit (`%QX0.0`, or `%Q0.0` without a size letter) whose
+    /// type (or array element type) is not BOOL: the bit cannot hold the value (ZPLC's HIL tests
+    /// declare `a AT %Q0.0 : INT`; before, the value was silently cut to one bit).
+    fn check_bit_location(&mut self, d: &ast::VarDecl, loc: &ast::DirectAddress, ty: &Type) {
+        if loc.size != ast::AddressSize::Bit {
+            return;
+        }
+        let mut t = ty;
+        while let Type::Array { element, .. } = t {
+            t = element;
+        }
+        if t.is_error() || matches!(t, Type::Elementary(Elementary::Bool)) {
+            return;
+        }
+        let tn = self.type_name(ty);
+        let area = match loc.area {
+            ast::Area::Input => "I",
+            ast::Area::Output => "Q",
+            ast::Area::Memory => "M",
+        };
+        let path: Vec<String> = loc.path.iter().map(u32::to_string).collect();
+        let text = format!("%{area}X{}", path.join("."));
+        self.error(
+            code::E1027,
+            loc.span,
+            format!(
+                "`{}` has type {tn}, but `{text}` is a single bit: a bit address holds a BOOL",
+                d.name.name
+            ),
+        )
+        .label("a bit address")
+        .hint("locate the variable at an address of its size (%QB byte, %QW word, %QD double word, %QL long word), or declare it BOOL");
     }
 
     /// Whether an edge qualifier is where IEC 61131-3 allows it (a BOOL `VAR_INPUT` of a

@@ -59,6 +59,12 @@ pub struct PouText {
     pub actions: Option<Range<usize>>,
     /// The `ACTION name [:] ... END_ACTION` of an `ACTIONS` block: name and its range, text range.
     pub action_list: Vec<(String, Range<usize>, Range<usize>)>,
+    /// A modifier between `FUNCTION_BLOCK` and the name (`PUBLIC`, `INTERNAL`, `FINAL`,
+    /// `ABSTRACT`: CODESYS and edition 3), skipped with W0304.
+    pub modifier: Option<Range<usize>>,
+    /// The `EXTENDS base` / `IMPLEMENTS itf` clause after the name (edition 3 inheritance: E0303,
+    /// the body is not compiled).
+    pub heritage: Option<Range<usize>>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -173,6 +179,8 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     oop: None,
                     actions: Some(start),
                     action_list,
+                    modifier: None,
+                    heritage: None,
                 });
                 i = j;
             }
@@ -180,6 +188,25 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
             "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" => {
                 let end_word = format!("END_{w}");
                 i += 1;
+                // `FUNCTION_BLOCK PUBLIC FB_Brake` (CODESYS access specifier; FINAL and ABSTRACT of
+                // edition 3): the modifier is not the name
+                let modifier = (w == "FUNCTION_BLOCK"
+                    && toks.get(i + 1).is_some_and(|t| {
+                        let next = word(src, t).to_ascii_uppercase();
+                        t.tok == Tok::Ident
+                            && !is_var_keyword(&next)
+                            && !["END_FUNCTION_BLOCK", "EXTENDS", "IMPLEMENTS"]
+                                .contains(&next.as_str())
+                    })
+                    && toks.get(i).is_some_and(|t| {
+                        ["PUBLIC", "INTERNAL", "FINAL", "ABSTRACT"]
+                            .iter()
+                            .any(|k| is_word(src, t, k))
+                    }))
+                .then(|| {
+                    i += 1;
+                    toks[i - 1].range.clone()
+                });
                 let Some(name_tok) = toks.get(i).filter(|t| t.tok == Tok::Ident) else {
                     continue;
                 };
@@ -207,6 +234,8 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                         }
                     }
                 }
+                let heritage_start = toks.get(i).map(|t| t.range.start);
+                let mut heritage = None;
                 while i < n
                     && ["EXTENDS", "IMPLEMENTS"]
                         .iter()
@@ -216,6 +245,9 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     while toks.get(i).is_some_and(|t| t.tok == Tok::Comma) {
                         i += 2;
                     }
+                    heritage = heritage_start
+                        .zip(toks.get(i.min(n) - 1))
+                        .map(|(s, t)| s..t.range.end);
                 }
                 let mut body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
                 while i < n && is_var_keyword(&word(src, &toks[i]).to_ascii_uppercase()) {
@@ -265,6 +297,8 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     oop,
                     actions: None,
                     action_list: Vec::new(),
+                    modifier,
+                    heritage,
                 });
                 i = j + 1;
             }
@@ -436,6 +470,21 @@ pub fn parse_text(
         return (unit, pending);
     }
     let mut text = src.to_string();
+    for p in &pous {
+        if let Some(r) = &p.modifier {
+            let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
+            diags.push(
+                Diagnostic::warning(
+                    code::W0304,
+                    format!("`FUNCTION_BLOCK {m}` of `{}`: the modifier is ignored", p.name),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("ignored")
+                .with_hint("ladderc compiles one project without inheritance or namespaces: PUBLIC, INTERNAL, FINAL and ABSTRACT change nothing in it; remove the word to silence this"),
+            );
+            blank(&mut text, r.clone());
+        }
+    }
     // ST: pragmas outside bodies are reported here (those inside ST bodies by the ST parser).
     for pr in &problems {
         if let Problem::Pragma(r) = pr {
@@ -497,13 +546,21 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
-        if let Some(r) = &p.oop {
+        if let Some(h) = &p.heritage {
+            // `FUNCTION_BLOCK Child EXTENDS Base`: the declarations are read without the clause
+            blank(&mut text, h.clone());
+        }
+        if let Some(r) = p.oop.as_ref().or(p.heritage.as_ref()) {
             let what = src.get(r.clone()).unwrap_or("METHOD").to_ascii_uppercase();
+            let (has, what) = match what.split_whitespace().next() {
+                Some(k @ ("EXTENDS" | "IMPLEMENTS")) => ("has an", format!("{k} clause")),
+                _ => ("holds a", what),
+            };
             diags.push(
                 Diagnostic::error(
                     code::E0303,
                     format!(
-                        "`{}` holds a {what}: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+                        "`{}` {has} {what}: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
                         p.name
                     ),
                 )
@@ -541,7 +598,20 @@ pub fn parse_text(
             _ => {}
         }
     }
-    let unit = crate::parse_named(file, &text, implicit_name, diags);
+    // A comment never closed takes the rest of the file, its `END_PROGRAM` ... too: the body's
+    // parse reports it (E0102); a missing `END_*` after its opening follows from it.
+    let unclosed = problems.iter().find_map(|p| match p {
+        Problem::UnterminatedComment(r) => Some(r.start),
+        _ => None,
+    });
+    let mut local = Diagnostics::new();
+    let unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    match unclosed {
+        Some(at) => diags.extend(local.into_vec().into_iter().filter(|d| {
+            !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
+        })),
+        None => diags.extend(local),
+    }
     (unit, pending)
 }
 

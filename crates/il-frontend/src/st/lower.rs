@@ -856,6 +856,40 @@ impl<'d> PouLowering<'d> {
 
     /// A plain IL operand for `e` if it needs no code: a literal, an enumerated value, an address, or
     /// a variable whose indices are themselves plain operands.
+    /// A bare name that is no variable but a value of the enumeration the context expects
+    /// (`c := XXXX;` with `c : enum_type00`, where other enumerations also declare `XXXX`): the
+    /// qualified value `enum_type00#XXXX`. IEC 61131-3 asks for the type prefix only where the
+    /// context does not determine the value.
+    fn enum_by_context(&self, e: &Expr, hint: Option<&TypeRef>) -> Option<Operand> {
+        let ExprKind::Place(Place {
+            base: PlaceBase::Name(value),
+            accessors,
+            ..
+        }) = &e.kind
+        else {
+            return None;
+        };
+        if !accessors.is_empty() || self.env().var_type(value).is_some() {
+            return None;
+        }
+        let TypeRef::Named(t) = self.env().resolve(hint?) else {
+            return None;
+        };
+        let decl = self.decls.type_decl(&t.name)?;
+        match &decl.def {
+            crate::ast::TypeDef::Enum { values, .. }
+                if values.iter().any(|v| v.name.is(&value.name)) =>
+            {
+                Some(Operand::EnumValue {
+                    type_name: Ident::new(decl.name.name.clone(), value.span),
+                    value: value.clone(),
+                    span: e.span,
+                })
+            }
+            _ => None,
+        }
+    }
+
     fn pure_operand(&self, e: &Expr) -> Option<Operand> {
         match &e.kind {
             ExprKind::Literal(l) => Some(Operand::Literal(l.clone())),
@@ -947,6 +981,9 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) -> Operand {
+        if let Some(o) = self.enum_by_context(e, hint) {
+            return o;
+        }
         if let ExprKind::Place(p) = &e.kind {
             if let Some(o) = self.place_operand(p, out, diags) {
                 return o;
@@ -991,7 +1028,7 @@ impl<'d> PouLowering<'d> {
                 out.push(ld(Operand::Literal(l), e.span));
             }
             ExprKind::Literal(_) | ExprKind::EnumValue { .. } | ExprKind::Place(_) => {
-                let o = self.operand(e, None, out, diags);
+                let o = self.operand(e, hint.as_ref(), out, diags);
                 out.push(ld(o, e.span));
             }
             ExprKind::Unary { op, operand } => match op {
@@ -1107,7 +1144,10 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
-        if let Some(o) = self.pure_operand(right) {
+        if let Some(o) = self
+            .enum_by_context(right, hint.as_ref())
+            .or_else(|| self.pure_operand(right))
+        {
             out.push(simple(op, false, Some(o), span));
             return;
         }

@@ -23,7 +23,8 @@ const MAX_DEPTH: usize = 200;
 /// Parses a statement list (a POU body, an action or transition body). `base` is the byte offset of `src`
 /// in file `file`; errors are reported, the statements read are returned.
 pub fn statements(file: FileId, src: &str, base: usize, diags: &mut Diagnostics) -> Vec<Stmt> {
-    let mut p = Parser::new(file, src, base, diags);
+    let mut local = Diagnostics::new();
+    let mut p = Parser::new(file, src, base, &mut local);
     let mut list = p.statement_list();
     while !p.at(&Tok::Eof) {
         // A stray block keyword at the top level (`END_IF` without `IF` ...).
@@ -35,6 +36,22 @@ pub fn statements(file: FileId, src: &str, base: usize, diags: &mut Diagnostics)
         );
         p.bump();
         list.extend(p.statement_list());
+    }
+    // A comment that is never closed takes the rest of the text: what is missing after its
+    // opening (`END_CASE`, `END_IF` ...) follows from it and is not reported again.
+    let unclosed = local
+        .iter()
+        .filter(|d| d.code == code::E0102 && d.message.starts_with("comment or pragma"))
+        .filter_map(|d| d.span.map(|s| s.start))
+        .min();
+    match unclosed {
+        Some(at) => diags.extend(
+            local
+                .into_vec()
+                .into_iter()
+                .filter(|d| d.code == code::E0102 || d.span.is_none_or(|s| s.start < at)),
+        ),
+        None => diags.extend(local),
     }
     list
 }

@@ -505,19 +505,6 @@ pub fn read(file: FileId, src: &str, body: Range<usize>) -> (TextChart, Vec<Diag
             .with_hint("write the first step of the sequence as `INITIAL_STEP name: ... END_STEP`"),
         );
     }
-    for s in initials.iter().skip(1) {
-        diags.push(
-            Diagnostic::error(
-                code::E3128,
-                format!(
-                    "the chart has a second INITIAL_STEP `{}` (the first is `{}`): a chart has exactly one",
-                    s.name, initials[0].name
-                ),
-            )
-            .at(span(&s.name_range))
-            .with_primary_label("second initial step"),
-        );
-    }
     let find = |n: &str| {
         chart
             .steps
@@ -560,6 +547,50 @@ pub fn read(file: FileId, src: &str, body: Range<usize>) -> (TextChart, Vec<Diag
         }
     }
     chart.transitions = keep;
+    // A body may hold several SFC networks (IEC 61131-3: `sequential_function_chart ::= sfc_network
+    // {sfc_network}`, as the Annex F gravel example does), each with exactly one initial step: a
+    // second initial step is an error only in a network that already has one, i.e. among steps
+    // that transitions link.
+    let mut root: Vec<usize> = (0..chart.steps.len()).collect();
+    fn net_of(root: &mut [usize], mut i: usize) -> usize {
+        while root[i] != i {
+            root[i] = root[root[i]];
+            i = root[i];
+        }
+        i
+    }
+    for tr in &chart.transitions {
+        let mut linked = tr.from.iter().chain(tr.to.iter());
+        if let Some(&first) = linked.next() {
+            for &k in linked {
+                let (a, b) = (net_of(&mut root, first), net_of(&mut root, k));
+                root[a] = b;
+            }
+        }
+    }
+    let mut first_initial: std::collections::HashMap<usize, usize> = Default::default();
+    for (k, s) in chart.steps.iter().enumerate() {
+        if !s.initial {
+            continue;
+        }
+        let net = net_of(&mut root, k);
+        match first_initial.get(&net) {
+            None => {
+                first_initial.insert(net, k);
+            }
+            Some(&first) => diags.push(
+                Diagnostic::error(
+                    code::E3128,
+                    format!(
+                        "a second INITIAL_STEP `{}` in the network of `{}` (steps linked by transitions): each SFC network has exactly one",
+                        s.name, chart.steps[first].name
+                    ),
+                )
+                .at(span(&s.name_range))
+                .with_primary_label("second initial step"),
+            ),
+        }
+    }
     (chart, diags)
 }
 
@@ -641,9 +672,19 @@ mod tests {
             ]
         );
         assert!(c.transitions.is_empty());
+        // two networks, one initial step each: valid
         let src = "INITIAL_STEP a: END_STEP INITIAL_STEP b: END_STEP";
+        let (_, d) = read_all(src);
+        assert!(d.is_empty(), "{d:?}");
+        // one network (a transition links the steps) with two initial steps
+        let src = "INITIAL_STEP a: END_STEP INITIAL_STEP b: END_STEP STEP c: END_STEP \
+                   TRANSITION FROM c TO (a, b) := x; END_TRANSITION";
         let (_, d) = read_all(src);
         assert_eq!(d.len(), 1);
         assert_eq!(d[0].code.to_string(), "E3128");
+        assert_eq!(
+            d[0].span.map(|s| s.start as usize),
+            src.find(" b:").map(|i| i + 1)
+        );
     }
 }

@@ -379,7 +379,12 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         let has_successor = consumers[ids[&n.id]]
             .iter()
             .any(|&c| nodes[c].kind != NodeKind::ActionBlock);
-        if !has_successor {
+        // an initial step that no transition enters or leaves is a network of its own, always
+        // active (IEC 61131-3 Annex F's gravel example keeps its monitor actions in one)
+        let lone_initial = n
+            .step
+            .is_some_and(|s| steps[s].initial && !transitions.iter().any(|t| t.post.contains(&s)));
+        if !has_successor && !lone_initial {
             let name = n.step.map(|s| steps[s].name.clone()).unwrap_or_default();
             report(
                 ctx,

@@ -256,9 +256,12 @@ pub fn lower(
             });
         }
     }
-    // every step needs a transition leaving it (E3121, as for XML charts)
+    // every step needs a transition leaving it (E3121, as for XML charts), but an initial step
+    // that no transition enters either: a network of one step, always active (IEC 61131-3 Annex
+    // F's gravel example)
     for (k, s) in tc.steps.iter().enumerate() {
-        if !transitions.iter().any(|t| t.pre.contains(&k)) {
+        let lone_initial = s.initial && !transitions.iter().any(|t| t.post.contains(&k));
+        if !lone_initial && !transitions.iter().any(|t| t.pre.contains(&k)) {
             report(
                 &mut ctx,
                 code::E3121,
