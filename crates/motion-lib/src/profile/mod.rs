@@ -286,17 +286,24 @@ impl Profile {
         snap: Option<(usize, f64)>,
     ) -> Profile {
         let mut prof = Profile::new(start);
-        prof.fill(items, trapezoidal, snap);
+        prof.fill(start, items, trapezoidal, snap);
         prof
     }
 
     /// [`Profile::build`] in place: `self` must be `Profile::new(start)` (entries past the
-    /// phase count stay zero, so that equal plans compare equal).
+    /// phase count stay zero, so that equal plans compare equal), `start` passed again.
     #[inline(always)]
-    fn fill(&mut self, items: &[(f64, f64)], trapezoidal: bool, snap: Option<(usize, f64)>) {
-        let start = self.start;
-        // The running state is kept in scalar locals (registers): the arrays are only
-        // written, never read back (no store-to-load forwarding stalls).
+    fn fill(
+        &mut self,
+        start: State,
+        items: &[(f64, f64)],
+        trapezoidal: bool,
+        snap: Option<(usize, f64)>,
+    ) {
+        // The running state is kept in scalar locals (registers), starting from the `start`
+        // argument: the profile is only written, never read back. (Reading `self.start`
+        // right after `Profile::new` stored it is a load spanning two stores, which cannot
+        // be forwarded and stalls the whole integration until the stores reach the cache.)
         let (mut p, mut v, mut a) = (start.p, start.v, start.a);
         let mut total = 0.0;
         let mut n = 0;
@@ -337,9 +344,9 @@ impl Profile {
     /// next free slot and the slot only advances for a phase of positive duration (an
     /// empty phase integrates over 0 s, which leaves the state bit for bit unchanged).
     /// The one slot past the last phase that an empty item may have written is cleared.
+    /// `start` must be `self.start` (see [`Profile::fill`]).
     #[inline(always)]
-    fn fill_fast(&mut self, items: &[(f64, f64); 7], v_peak: f64) {
-        let start = self.start;
+    fn fill_fast(&mut self, start: State, items: &[(f64, f64); 7], v_peak: f64) {
         let (mut p, mut v, mut a) = (start.p, start.v, start.a);
         let mut total = 0.0;
         let mut n = 0;
@@ -463,7 +470,7 @@ impl Profile {
     #[inline(always)]
     pub(crate) fn fast(start: State, items: &[(f64, f64); 7], v_peak: f64) -> Profile {
         let mut prof = Profile::new(start);
-        prof.fill_fast(items, v_peak);
+        prof.fill_fast(start, items, v_peak);
         prof
     }
 
@@ -765,7 +772,7 @@ impl Solved {
                 items[2 + i] = (k.t[i], s * k.j[i]);
             }
         }
-        out.fill(&items, self.trapezoidal, None);
+        out.fill(self.start, &items, self.trapezoidal, None);
     }
 }
 
