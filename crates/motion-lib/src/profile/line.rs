@@ -185,12 +185,12 @@ impl Line {
         };
         let rest = State::default();
         // The common case is built in the returned value itself.
-        if let Some((items, v_peak)) = Profile::position_fast(rest, length, 0.0, &limits) {
+        if let Some(fast) = Profile::position_fast(rest, length, 0.0, &limits) {
             return Ok(Line {
                 geometry,
                 length,
                 limits,
-                profile: Profile::fast(rest, &items, v_peak),
+                profile: Profile::fast(rest, &fast),
             });
         }
         let profile = Profile::position(rest, length, 0.0, &limits)?;

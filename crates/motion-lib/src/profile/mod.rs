@@ -338,41 +338,54 @@ impl Profile {
         self.total = total;
     }
 
-    /// [`Profile::fill`] for a fast path's seven jerk phases, the fourth a cruise at whose
-    /// start the state is snapped to velocity `v_peak`, acceleration 0. Branch-free: which
-    /// phases are empty varies from problem to problem, so every item is written at the
-    /// next free slot and the slot only advances for a phase of positive duration (an
-    /// empty phase integrates over 0 s, which leaves the state bit for bit unchanged).
-    /// The one slot past the last phase that an empty item may have written is cleared.
-    /// `start` must be `self.start` (see [`Profile::fill`]).
+    /// [`Profile::fill`] for a fast path's seven jerk phases, the fourth a cruise that
+    /// starts at `start.p + fast.d_cruise` with velocity `fast.v_peak`, acceleration 0.
+    /// The phases before the cruise are integrated from `start`, the cruise and the phases
+    /// after it from the cruise's start state: two independent chains of three phases
+    /// (instead of one of seven) that the processor runs side by side.
+    /// Branch-free: which phases are empty varies from problem to problem, so every item
+    /// is written at the next free slot and the slot only advances for a phase of
+    /// positive duration (an empty phase integrates over 0 s, which leaves the state bit
+    /// for bit unchanged). The one slot past the last phase that an empty item may have
+    /// written is cleared. `start` must be `self.start` (see [`Profile::fill`]).
     #[inline(always)]
-    fn fill_fast(&mut self, start: State, items: &[(f64, f64); 7], v_peak: f64) {
-        let (mut p, mut v, mut a) = (start.p, start.v, start.a);
-        let mut total = 0.0;
+    fn fill_fast(&mut self, start: State, fast: &velocity::Fast) {
+        let items = &fast.items;
+        let cruise = State {
+            p: start.p + fast.d_cruise,
+            v: fast.v_peak,
+            a: 0.0,
+        };
+        // Phase start times: the first three from 0, the rest from the cruise's start
+        // (the first three's total), so that this sum does not wait for the first chain.
+        let kept = items.map(|(d, _)| if d > 0.0 { d } else { 0.0 });
+        let t_cruise = kept[0] + kept[1] + kept[2];
         let mut n = 0;
-        for (k, &(duration, jerk)) in items.iter().enumerate() {
-            if k == 3 {
-                v = v_peak;
-                a = 0.0;
+        let mut end = start;
+        let mut total = 0.0;
+        for (range, from, t_from) in [(0..3, start, 0.0), (3..7, cruise, t_cruise)] {
+            let (mut p, mut v, mut a) = (from.p, from.v, from.a);
+            total = t_from;
+            for k in range {
+                let (t, jerk) = (kept[k], items[k].1);
+                // n <= k < 7 < MAX_PHASES.
+                self.phases[n] = Phase { duration: t, jerk };
+                self.starts[n] = State { p, v, a };
+                p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
+                v += t * (a + 0.5 * t * jerk);
+                a += t * jerk;
+                total += t;
+                self.ends[n] = total;
+                n += (t > 0.0) as usize;
             }
-            let keep = duration > 0.0;
-            let t = if keep { duration } else { 0.0 };
-            // n <= k < 7 < MAX_PHASES.
-            self.phases[n] = Phase { duration: t, jerk };
-            self.starts[n] = State { p, v, a };
-            p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
-            v += t * (a + 0.5 * t * jerk);
-            a += t * jerk;
-            total += t;
-            self.ends[n] = total;
-            n += keep as usize;
+            end = State { p, v, a };
         }
+        self.last = end;
+        self.total = total;
         self.phases[n] = Phase::default();
         self.starts[n] = State::default();
         self.ends[n] = 0.0;
         self.count = n;
-        self.last = State { p, v, a };
-        self.total = total;
     }
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
@@ -384,8 +397,8 @@ impl Profile {
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
         check_inputs(&start, target_p, target_v, lim)?;
-        if let Some((items, v_peak)) = velocity::fast_path(start, target_p, target_v, lim) {
-            return Ok(Profile::fast(start, &items, v_peak));
+        if let Some(fast) = velocity::fast_path(start, target_p, target_v, lim) {
+            return Ok(Profile::fast(start, &fast));
         }
         Self::position_kernel(start, target_p, target_v, lim)
     }
@@ -459,7 +472,7 @@ impl Profile {
         target_p: f64,
         target_v: f64,
         lim: &Limits,
-    ) -> Option<([(f64, f64); 7], f64)> {
+    ) -> Option<velocity::Fast> {
         if check_inputs(&start, target_p, target_v, lim).is_err() {
             return None;
         }
@@ -468,9 +481,9 @@ impl Profile {
 
     /// A fast path's profile (see [`Profile::fill_fast`]).
     #[inline(always)]
-    pub(crate) fn fast(start: State, items: &[(f64, f64); 7], v_peak: f64) -> Profile {
+    pub(crate) fn fast(start: State, fast: &velocity::Fast) -> Profile {
         let mut prof = Profile::new(start);
-        prof.fill_fast(start, items, v_peak);
+        prof.fill_fast(start, fast);
         prof
     }
 
@@ -558,7 +571,7 @@ impl Profile {
             },
         )?;
         let fastest = match velocity::fast_path(start, target_p, target_v, lim) {
-            Some((items, v_peak)) => Profile::fast(start, &items, v_peak),
+            Some(fast) => Profile::fast(start, &fast),
             None => sol.build(&block.p_min),
         };
         let minimal = fastest.duration();
