@@ -8,7 +8,7 @@
 //! An axis with `jmax` 0 or infinite does not limit the path jerk; when every axis is
 //! trapezoidal, the path profile is trapezoidal.
 
-use super::{Limits, PlanError, Profile, State};
+use super::{slot, Limits, PlanError, Profile, State};
 
 /// Axes whose geometry is stored inline (no allocation).
 const INLINE_AXES: usize = 6;
@@ -21,7 +21,7 @@ enum Geometry {
 }
 
 impl Geometry {
-    #[inline]
+    #[inline(always)]
     fn zeroed(n: usize) -> Geometry {
         if n <= INLINE_AXES {
             Geometry::Inline(2 * n, [0.0; 2 * INLINE_AXES])
@@ -113,93 +113,112 @@ impl Line {
     /// Time-optimal rest-to-rest straight line from `start` to `end`.
     #[inline]
     pub fn plan(start: &[f64], end: &[f64], axes: &[Limits]) -> Result<Line, PlanError> {
-        if start.len() != end.len() {
+        slot::in_place(|out| {
+            let n = start.len();
+            let r = out.write(Ok(Line {
+                geometry: Geometry::zeroed(n),
+                length: 0.0,
+                limits: Limits::default(),
+                profile: Profile::new(State::default()),
+            }));
+            let planned = match r {
+                Ok(line) => line.plan_here(start, end, axes),
+                Err(_) => Ok(()),
+            };
+            if let Err(e) = planned {
+                *r = Err(e);
+            }
+            r
+        })
+    }
+
+    /// [`Line::plan`] in place: `self` holds a zeroed geometry of `start.len()` axes and
+    /// `Profile::new(State::default())`.
+    #[inline(always)]
+    fn plan_here(&mut self, start: &[f64], end: &[f64], axes: &[Limits]) -> Result<(), PlanError> {
+        let n = start.len();
+        if end.len() != n {
             return Err(PlanError::Line(format!(
-                "start has {} axes but end has {}",
-                start.len(),
+                "start has {n} axes but end has {}",
                 end.len()
             )));
         }
-        if start.iter().chain(end).any(|x| !x.is_finite()) {
-            return Err(PlanError::Line("non-finite coordinate".into()));
-        }
-        let n = start.len();
+        let non_finite = || PlanError::Line("non-finite coordinate".into());
         if axes.len() != n {
+            if start.iter().chain(end).any(|x| !x.is_finite()) {
+                return Err(non_finite());
+            }
             return Err(PlanError::Line(format!(
                 "{n} direction components but {} axis limits",
                 axes.len()
             )));
         }
-        let mut geometry = Geometry::zeroed(n);
-        let g = geometry.as_mut_slice();
+        let g = self.geometry.as_mut_slice();
         let (g0, gd) = g.split_at_mut(n);
+        // One pass over the axes, without branches: the coordinates, their differences
+        // and the path limits, min over moving axes of limit_i / |u_i| = limit_i * length /
+        // |d_i| (the reciprocals 1 / |d_i| do not wait for the square root of the length;
+        // an axis that does not move has 1 / |d_i| = infinity and does not limit).
         let mut sq = 0.0;
-        // One pass (no library copy call for a few coordinates).
-        for (((x0, d), a), b) in g0.iter_mut().zip(gd.iter_mut()).zip(start).zip(end) {
-            *x0 = *a;
-            *d = b - a;
-            sq += *d * *d;
-        }
-        let length = sq.sqrt();
-        // The path limits, min over moving axes of limit_i / |u_i| = limit_i * length / |d_i|:
-        // the reciprocals 1 / |d_i| do not wait for the square root.
+        let (mut finite, mut valid) = (true, true);
         let (mut v, mut a, mut d, mut j) =
             (f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY);
-        let mut valid = true;
-        for (di, ax) in g[n..].iter().zip(axes) {
+        for ((((x0, di), ax), &xa), &xb) in g0
+            .iter_mut()
+            .zip(gd.iter_mut())
+            .zip(axes)
+            .zip(start)
+            .zip(end)
+        {
+            finite &= xa.is_finite() & xb.is_finite();
             valid &= ax.is_valid();
-            let di = di.abs();
-            if di > 0.0 {
-                let r = 1.0 / di;
-                v = v.min(ax.vmax * r);
-                a = a.min(ax.amax * r);
-                d = d.min(ax.dmax * r);
-                if !ax.is_trapezoidal() {
-                    j = j.min(ax.jmax * r);
-                }
-            }
+            *x0 = xa;
+            *di = xb - xa;
+            sq += *di * *di;
+            let r = 1.0 / di.abs();
+            let (vi, ai, dd) = (ax.vmax * r, ax.amax * r, ax.dmax * r);
+            // An axis without jerk limit (jmax 0 or infinite) does not limit the path jerk.
+            let ji = if ax.is_trapezoidal() {
+                f64::INFINITY
+            } else {
+                ax.jmax * r
+            };
+            v = if vi < v { vi } else { v };
+            a = if ai < a { ai } else { a };
+            d = if dd < d { dd } else { d };
+            j = if ji < j { ji } else { j };
+        }
+        if !finite {
+            return Err(non_finite());
         }
         if !valid {
             return Err(PlanError::InvalidLimits);
         }
+        let length = sq.sqrt();
         let inv = if length > 0.0 { 1.0 / length } else { 0.0 };
-        for d in &mut g[n..] {
+        for d in gd.iter_mut() {
             *d *= inv;
         }
+        self.length = length;
+        let rest = State::default();
         if !(length.is_finite() && v.is_finite()) {
             // No axis moves, or a coordinate difference overflows: the general path.
-            let limits = path_limits(&g[n..], axes)?;
-            let profile = Profile::position(State::default(), length, 0.0, &limits)?;
-            return Ok(Line {
-                geometry,
-                length,
-                limits,
-                profile,
-            });
+            self.limits = path_limits(gd, axes)?;
+            self.profile = Profile::position(rest, length, 0.0, &self.limits)?;
+            return Ok(());
         }
-        let limits = Limits {
+        self.limits = Limits {
             vmax: v * length,
             amax: a * length,
             dmax: d * length,
             jmax: j * length,
         };
-        let rest = State::default();
-        // The common case is built in the returned value itself.
-        if let Some(fast) = Profile::position_fast(rest, length, 0.0, &limits) {
-            return Ok(Line {
-                geometry,
-                length,
-                limits,
-                profile: Profile::fast(rest, &fast),
-            });
+        // The common case is built in the profile itself.
+        match Profile::position_fast(rest, length, 0.0, &self.limits) {
+            Some(fast) => self.profile.fill_fast(rest, &fast),
+            None => self.profile = Profile::position(rest, length, 0.0, &self.limits)?,
         }
-        let profile = Profile::position(rest, length, 0.0, &limits)?;
-        Ok(Line {
-            geometry,
-            length,
-            limits,
-            profile,
-        })
+        Ok(())
     }
 
     /// Duration of the line (s).

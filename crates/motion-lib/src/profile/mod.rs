@@ -22,10 +22,15 @@
 mod jsonl;
 mod kernel;
 pub mod line;
+// The planners' results built in the caller's return slot: one `MaybeUninit::assume_init`
+// (see the module's safety argument).
+#[allow(unsafe_code)]
+mod slot;
 mod velocity;
 
 pub use jsonl::plan_jsonl;
 
+use std::mem::MaybeUninit;
 use thiserror::Error;
 
 /// Most phases a profile can hold: 2 brake phases + 7 profile phases.
@@ -390,17 +395,38 @@ impl Profile {
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
     /// and acceleration 0.
+    #[inline]
     pub fn position(
         start: State,
         target_p: f64,
         target_v: f64,
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
-        check_inputs(&start, target_p, target_v, lim)?;
-        if let Some(fast) = velocity::fast_path(start, target_p, target_v, lim) {
-            return Ok(Profile::fast(start, &fast));
+        slot::in_place(|out| Self::position_into(out, start, target_p, target_v, lim))
+    }
+
+    /// [`Profile::position`] written into `out` (see [`slot::in_place`]).
+    #[inline(always)]
+    fn position_into<'a>(
+        out: &'a mut MaybeUninit<Result<Profile, PlanError>>,
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> &'a mut Result<Profile, PlanError> {
+        if let Err(e) = check_inputs(&start, target_p, target_v, lim) {
+            return out.write(Err(e));
         }
-        Self::position_kernel(start, target_p, target_v, lim)
+        match velocity::fast_path(start, target_p, target_v, lim) {
+            Some(fast) => {
+                let r = out.write(Ok(Profile::new(start)));
+                if let Ok(p) = r {
+                    p.fill_fast(start, &fast);
+                }
+                r
+            }
+            None => out.write(Self::position_kernel(start, target_p, target_v, lim)),
+        }
     }
 
     /// The kernel's enumeration of every profile family (no fast path applies). Kept out
@@ -789,6 +815,7 @@ impl Solved {
     }
 }
 
+#[inline(always)]
 fn check_inputs(
     start: &State,
     target_p: f64,
