@@ -8,7 +8,7 @@
 //! An axis with `jmax` 0 or infinite does not limit the path jerk; when every axis is
 //! trapezoidal, the path profile is trapezoidal.
 
-use super::{slot, Limits, PlanError, Profile, State};
+use super::{slot, zero_if_finite, Limits, PlanError, Profile, State};
 
 /// Axes whose geometry is stored inline (no allocation).
 const INLINE_AXES: usize = 6;
@@ -109,6 +109,72 @@ pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
     Ok(l)
 }
 
+/// One pass over the axes of a line, without branches: the start coordinates and the
+/// coordinate differences written to the geometry, and the path limits, min over moving
+/// axes of limit_i / |u_i| = limit_i * length / |d_i| (still to be multiplied by the
+/// length: the reciprocals 1 / |d_i| do not wait for its square root; an axis that does
+/// not move has 1 / |d_i| = infinity and does not limit).
+struct AxisPass {
+    /// Sum of the squared differences.
+    sq: f64,
+    /// Every coordinate finite.
+    finite: bool,
+    /// Every axis's limits valid.
+    valid: bool,
+    v: f64,
+    a: f64,
+    d: f64,
+    j: f64,
+}
+
+impl AxisPass {
+    #[inline(always)]
+    fn run(
+        g0: &mut [f64],
+        gd: &mut [f64],
+        start: &[f64],
+        end: &[f64],
+        axes: &[Limits],
+    ) -> AxisPass {
+        let mut p = AxisPass {
+            sq: 0.0,
+            finite: true,
+            valid: true,
+            v: f64::INFINITY,
+            a: f64::INFINITY,
+            d: f64::INFINITY,
+            j: f64::INFINITY,
+        };
+        for ((((x0, di), ax), &xa), &xb) in g0
+            .iter_mut()
+            .zip(gd.iter_mut())
+            .zip(axes)
+            .zip(start)
+            .zip(end)
+        {
+            p.finite &= zero_if_finite(xa) + zero_if_finite(xb) == 0.0;
+            p.valid &= ax.is_valid();
+            let dx = xb - xa;
+            *x0 = xa;
+            *di = dx;
+            p.sq += dx * dx;
+            let r = 1.0 / dx.abs();
+            let (vi, ai, dd) = (ax.vmax * r, ax.amax * r, ax.dmax * r);
+            // An axis without jerk limit (jmax 0 or infinite) does not limit the path jerk.
+            let ji = if ax.is_trapezoidal() {
+                f64::INFINITY
+            } else {
+                ax.jmax * r
+            };
+            p.v = if vi < p.v { vi } else { p.v };
+            p.a = if ai < p.a { ai } else { p.a };
+            p.d = if dd < p.d { dd } else { p.d };
+            p.j = if ji < p.j { ji } else { p.j };
+        }
+        p
+    }
+}
+
 impl Line {
     /// Time-optimal rest-to-rest straight line from `start` to `end`.
     #[inline]
@@ -155,39 +221,33 @@ impl Line {
         }
         let g = self.geometry.as_mut_slice();
         let (g0, gd) = g.split_at_mut(n);
-        // One pass over the axes, without branches: the coordinates, their differences
-        // and the path limits, min over moving axes of limit_i / |u_i| = limit_i * length /
-        // |d_i| (the reciprocals 1 / |d_i| do not wait for the square root of the length;
-        // an axis that does not move has 1 / |d_i| = infinity and does not limit).
-        let mut sq = 0.0;
-        let (mut finite, mut valid) = (true, true);
-        let (mut v, mut a, mut d, mut j) =
-            (f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY);
-        for ((((x0, di), ax), &xa), &xb) in g0
-            .iter_mut()
-            .zip(gd.iter_mut())
-            .zip(axes)
-            .zip(start)
-            .zip(end)
-        {
-            finite &= xa.is_finite() & xb.is_finite();
-            valid &= ax.is_valid();
-            *x0 = xa;
-            *di = xb - xa;
-            sq += *di * *di;
-            let r = 1.0 / di.abs();
-            let (vi, ai, dd) = (ax.vmax * r, ax.amax * r, ax.dmax * r);
-            // An axis without jerk limit (jmax 0 or infinite) does not limit the path jerk.
-            let ji = if ax.is_trapezoidal() {
-                f64::INFINITY
-            } else {
-                ax.jmax * r
-            };
-            v = if vi < v { vi } else { v };
-            a = if ai < a { ai } else { a };
-            d = if dd < d { dd } else { d };
-            j = if ji < j { ji } else { j };
-        }
+        // The common axis counts get a pass of constant length (unrolled, no loop).
+        let pass = match n {
+            2 => AxisPass::run(
+                &mut g0[..2],
+                &mut gd[..2],
+                &start[..2],
+                &end[..2],
+                &axes[..2],
+            ),
+            3 => AxisPass::run(
+                &mut g0[..3],
+                &mut gd[..3],
+                &start[..3],
+                &end[..3],
+                &axes[..3],
+            ),
+            _ => AxisPass::run(g0, gd, start, end, axes),
+        };
+        let AxisPass {
+            sq,
+            finite,
+            valid,
+            v,
+            a,
+            d,
+            j,
+        } = pass;
         if !finite {
             return Err(non_finite());
         }
@@ -262,5 +322,108 @@ impl Line {
             *out = x0 + p * u;
         }
         s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const AX: Limits = Limits {
+        vmax: 10.0,
+        amax: 20.0,
+        dmax: 30.0,
+        jmax: 100.0,
+    };
+
+    /// Every axis count (the unrolled 2 and 3 and the general pass) gives the same line as
+    /// the per-axis definition: path limits min over moving axes of limit / |u_i|, unit
+    /// direction, length, and the rest-to-rest profile of the path with those limits.
+    #[test]
+    fn every_axis_count_plans_the_path_problem() {
+        for n in 1..=8 {
+            let start: Vec<f64> = (0..n).map(|i| i as f64 - 2.0).collect();
+            // Axis 1 does not move (when there is one): it must not limit the path.
+            let end: Vec<f64> = (0..n)
+                .map(|i| {
+                    if i == 1 {
+                        start[i]
+                    } else {
+                        start[i] + 3.0 * (i as f64 + 1.0)
+                    }
+                })
+                .collect();
+            let axes: Vec<Limits> = (0..n)
+                .map(|i| Limits {
+                    vmax: AX.vmax * (1.0 + i as f64),
+                    jmax: if i == 2 { 0.0 } else { AX.jmax },
+                    ..AX
+                })
+                .collect();
+            let line = Line::plan(&start, &end, &axes).unwrap();
+            let d: Vec<f64> = start.iter().zip(&end).map(|(a, b)| b - a).collect();
+            let len = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+            let unit: Vec<f64> = d.iter().map(|x| x / len).collect();
+            let want = path_limits(&unit, &axes).unwrap();
+            let got = line.limits();
+            for (g, w) in [
+                (got.vmax, want.vmax),
+                (got.amax, want.amax),
+                (got.dmax, want.dmax),
+                (got.jmax, want.jmax),
+            ] {
+                assert!((g - w).abs() <= 1e-12 * w, "n {n}: {got:?} vs {want:?}");
+            }
+            assert_eq!(line.length(), len);
+            assert_eq!(line.start(), &start[..]);
+            for (u, w) in line.unit().iter().zip(&unit) {
+                assert!((u - w).abs() <= 1e-15, "n {n}");
+            }
+            let prof = Profile::position(State::default(), len, 0.0, &want).unwrap();
+            let rel = (line.duration() - prof.duration()).abs() / prof.duration();
+            assert!(
+                rel <= 1e-12,
+                "n {n}: {} vs {}",
+                line.duration(),
+                prof.duration()
+            );
+            let e = line.profile().end();
+            assert!(
+                (e.p - len).abs() <= 1e-9 * len && e.v.abs() <= 1e-9,
+                "n {n}: {e:?}"
+            );
+        }
+    }
+
+    /// Bad input gives its error: lengths first, then non-finite coordinates, then
+    /// the axis count, then invalid limits; for the unrolled counts as for the others.
+    #[test]
+    fn bad_lines_give_their_errors() {
+        for n in [2, 3, 5] {
+            let start = vec![0.0; n];
+            let end = vec![1.0; n];
+            let axes = vec![AX; n];
+            let msg = |r: Result<Line, PlanError>| match r {
+                Err(PlanError::Line(m)) => m,
+                other => panic!("{other:?}"),
+            };
+            assert!(msg(Line::plan(&start, &end[1..], &axes)).contains("start has"));
+            for x in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                let mut bad = end.clone();
+                bad[n - 1] = x;
+                assert!(msg(Line::plan(&start, &bad, &axes)).contains("non-finite"));
+                assert!(msg(Line::plan(&bad, &end, &axes)).contains("non-finite"));
+                assert!(msg(Line::plan(&bad, &end, &axes[1..])).contains("non-finite"));
+                let mut lim = axes.clone();
+                lim[n - 1].amax = x;
+                assert_eq!(
+                    Line::plan(&start, &end, &lim).unwrap_err(),
+                    PlanError::InvalidLimits
+                );
+            }
+            assert!(msg(Line::plan(&start, &end, &axes[1..])).contains("direction components"));
+            // A line that does not move is planned (duration 0).
+            assert_eq!(Line::plan(&start, &start, &axes).unwrap().duration(), 0.0);
+        }
     }
 }

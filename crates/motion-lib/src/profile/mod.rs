@@ -73,11 +73,17 @@ impl Limits {
         }
     }
 
-    /// [`Limits::validate`] as a bool (comparisons are false for NaN).
-    #[inline]
+    /// [`Limits::validate`] as a bool (comparisons are false for NaN). Floating-point
+    /// arithmetic, no branches: one sum of [`zero_if_finite`] tells whether all three are
+    /// finite.
+    #[inline(always)]
     pub(crate) fn is_valid(&self) -> bool {
-        let pos = |x: f64| x > 0.0 && x < f64::INFINITY;
-        pos(self.vmax) && pos(self.amax) && pos(self.dmax) && self.jmax >= 0.0
+        let (v, a, d) = (self.vmax, self.amax, self.dmax);
+        (zero_if_finite(v) + zero_if_finite(a) + zero_if_finite(d) == 0.0)
+            & (v > 0.0)
+            & (a > 0.0)
+            & (d > 0.0)
+            & (self.jmax >= 0.0)
     }
 }
 
@@ -815,6 +821,14 @@ impl Solved {
     }
 }
 
+/// `x - x`: 0 for a finite `x`, NaN for an infinite or NaN one (a sum of these is 0
+/// exactly when every term is finite: one comparison, no branch per value).
+#[inline(always)]
+#[allow(clippy::eq_op)]
+pub(crate) fn zero_if_finite(x: f64) -> f64 {
+    x - x
+}
+
 #[inline(always)]
 fn check_inputs(
     start: &State,
@@ -822,14 +836,19 @@ fn check_inputs(
     target_v: f64,
     lim: &Limits,
 ) -> Result<(), PlanError> {
+    // One test for the valid case (see `Limits::is_valid`; |target_v| <= vmax is false
+    // for a NaN or infinite target_v once vmax is finite), then which error.
+    let (p, v, a) = (start.p, start.v, start.a);
+    let finite_state = zero_if_finite(p) + zero_if_finite(v) + zero_if_finite(a) == 0.0;
+    let finite_target = zero_if_finite(target_p) == 0.0;
+    if lim.is_valid() & finite_state & finite_target & (target_v.abs() <= lim.vmax) {
+        return Ok(());
+    }
     lim.validate()?;
-    if !(start.p.is_finite() && start.v.is_finite() && start.a.is_finite()) {
+    if !finite_state {
         return Err(PlanError::InvalidState);
     }
-    if !(target_p.is_finite() && target_v.is_finite() && target_v.abs() <= lim.vmax) {
-        return Err(PlanError::InvalidTarget { vmax: lim.vmax });
-    }
-    Ok(())
+    Err(PlanError::InvalidTarget { vmax: lim.vmax })
 }
 
 #[cfg(test)]
@@ -918,5 +937,81 @@ mod fallback_tests {
         );
         // The fallback is not time-optimal (ruckig 0.19.4: 2.5167 s), but close.
         assert!(d > 2.5167134 && d < 2.7, "{d}");
+    }
+}
+
+#[cfg(test)]
+mod check_tests {
+    use super::*;
+
+    /// The branch-free input check gives the error of the first bad input class (limits,
+    /// then start state, then target) for every field set to +-infinity or NaN, and
+    /// accepts the valid problem (jmax infinite or 0 included).
+    #[test]
+    fn every_non_finite_input_gives_its_error() {
+        let good = Limits {
+            vmax: 2.0,
+            amax: 3.0,
+            dmax: 4.0,
+            jmax: 5.0,
+        };
+        let st = State {
+            p: 1.0,
+            v: 0.5,
+            a: -0.5,
+        };
+        assert_eq!(check_inputs(&st, 3.0, 1.0, &good), Ok(()));
+        for jmax in [0.0, f64::INFINITY] {
+            assert_eq!(
+                check_inputs(&st, 3.0, 1.0, &Limits { jmax, ..good }),
+                Ok(())
+            );
+        }
+        for x in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+            for lim in [
+                Limits { vmax: x, ..good },
+                Limits { amax: x, ..good },
+                Limits { dmax: x, ..good },
+            ] {
+                // A bad start and target too: the limits' error comes first.
+                let bad_start = State { p: x, ..st };
+                assert_eq!(
+                    check_inputs(&bad_start, x, x, &lim),
+                    Err(PlanError::InvalidLimits)
+                );
+            }
+            // jmax: +infinity is valid (no jerk limit), -infinity and NaN are not.
+            if x != f64::INFINITY {
+                let lim = Limits { jmax: x, ..good };
+                assert_eq!(
+                    check_inputs(&st, 3.0, 1.0, &lim),
+                    Err(PlanError::InvalidLimits)
+                );
+            }
+            for bad in [
+                State { p: x, ..st },
+                State { v: x, ..st },
+                State { a: x, ..st },
+            ] {
+                assert_eq!(
+                    check_inputs(&bad, x, x, &good),
+                    Err(PlanError::InvalidState)
+                );
+            }
+            for (p1, v1) in [(x, 1.0), (3.0, x)] {
+                assert_eq!(
+                    check_inputs(&st, p1, v1, &good),
+                    Err(PlanError::InvalidTarget { vmax: 2.0 })
+                );
+            }
+        }
+        assert_eq!(
+            check_inputs(&st, 3.0, -2.5, &good),
+            Err(PlanError::InvalidTarget { vmax: 2.0 })
+        );
+        assert_eq!(
+            check_inputs(&st, 3.0, 0.0, &Limits { vmax: 0.0, ..good }),
+            Err(PlanError::InvalidLimits)
+        );
     }
 }
