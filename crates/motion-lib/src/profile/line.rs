@@ -275,7 +275,7 @@ impl Line {
         };
         // The common case is built in the profile itself.
         match Profile::position_fast(rest, length, 0.0, &self.limits) {
-            Some(fast) => self.profile.fill_fast(rest, &fast),
+            Some(fast) => self.profile.fill_fast(rest, &fast, length, 0.0),
             None => self.profile = Profile::position(rest, length, 0.0, &self.limits)?,
         }
         Ok(())

@@ -349,54 +349,69 @@ impl Profile {
         self.total = total;
     }
 
-    /// [`Profile::fill`] for a fast path's seven jerk phases, the fourth a cruise that
-    /// starts at `start.p + fast.d_cruise` with velocity `fast.v_peak`, acceleration 0.
-    /// The phases before the cruise are integrated from `start`, the cruise and the phases
-    /// after it from the cruise's start state: two independent chains of three phases
-    /// (instead of one of seven) that the processor runs side by side.
+    /// [`Profile::fill`] for a fast path's seven jerk phases to the target (`target_p`,
+    /// `target_v`, acceleration 0), the fourth a cruise at velocity `fast.v_peak` from
+    /// `start.p + fast.d_cruise` to `target_p - fast.d_decel`.
+    ///
+    /// No phase start waits for more than one integration step: the states at the start
+    /// and the end of the cruise and at the end are known, the phase after each of the
+    /// start and the cruise's end is integrated forward from it, the phase before the
+    /// cruise and the last phase backward from the state they reach (the profile of a
+    /// sampled cycle is the same to rounding; the end state is the target exactly). One
+    /// chain of seven integrations made the plan wait about 50 cycles for it.
     /// Branch-free: which phases are empty varies from problem to problem, so every item
     /// is written at the next free slot and the slot only advances for a phase of
-    /// positive duration (an empty phase integrates over 0 s, which leaves the state bit
-    /// for bit unchanged). The one slot past the last phase that an empty item may have
-    /// written is cleared. `start` must be `self.start` (see [`Profile::fill`]).
+    /// positive duration. The one slot past the last phase that an empty item may have
+    /// written is cleared. The phase end times are summed in order.
     #[inline(always)]
-    fn fill_fast(&mut self, start: State, fast: &velocity::Fast) {
+    fn fill_fast(&mut self, start: State, fast: &velocity::Fast, target_p: f64, target_v: f64) {
         let items = &fast.items;
+        let kept = items.map(|(d, _)| if d > 0.0 { d } else { 0.0 });
+        let jerk = items.map(|(_, j)| j);
         let cruise = State {
             p: start.p + fast.d_cruise,
             v: fast.v_peak,
             a: 0.0,
         };
-        // Phase start times: the first three from 0, the rest from the cruise's start
-        // (the first three's total), so that this sum does not wait for the first chain.
-        let kept = items.map(|(d, _)| if d > 0.0 { d } else { 0.0 });
-        let t_cruise = kept[0] + kept[1] + kept[2];
+        let decel = State {
+            p: target_p - fast.d_decel,
+            v: fast.v_peak,
+            a: 0.0,
+        };
+        let end = State {
+            p: target_p,
+            v: target_v,
+            a: 0.0,
+        };
+        let starts = [
+            start,
+            start.integrate(kept[0], jerk[0]),
+            cruise.integrate(-kept[2], jerk[2]),
+            cruise,
+            decel,
+            decel.integrate(kept[4], jerk[4]),
+            end.integrate(-kept[6], jerk[6]),
+        ];
         let mut n = 0;
-        let mut end = start;
         let mut total = 0.0;
-        for (range, from, t_from) in [(0..3, start, 0.0), (3..7, cruise, t_cruise)] {
-            let (mut p, mut v, mut a) = (from.p, from.v, from.a);
-            total = t_from;
-            for k in range {
-                let (t, jerk) = (kept[k], items[k].1);
-                // n <= k < 7 < MAX_PHASES.
-                self.phases[n] = Phase { duration: t, jerk };
-                self.starts[n] = State { p, v, a };
-                p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
-                v += t * (a + 0.5 * t * jerk);
-                a += t * jerk;
-                total += t;
-                self.ends[n] = total;
-                n += (t > 0.0) as usize;
-            }
-            end = State { p, v, a };
+        for k in 0..7 {
+            let t = kept[k];
+            // n <= k < 7 < MAX_PHASES.
+            self.phases[n] = Phase {
+                duration: t,
+                jerk: jerk[k],
+            };
+            self.starts[n] = starts[k];
+            total += t;
+            self.ends[n] = total;
+            n += (t > 0.0) as usize;
         }
-        self.last = end;
-        self.total = total;
         self.phases[n] = Phase::default();
         self.starts[n] = State::default();
         self.ends[n] = 0.0;
         self.count = n;
+        self.last = end;
+        self.total = total;
     }
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
@@ -427,7 +442,7 @@ impl Profile {
             Some(fast) => {
                 let r = out.write(Ok(Profile::new(start)));
                 if let Ok(p) = r {
-                    p.fill_fast(start, &fast);
+                    p.fill_fast(start, &fast, target_p, target_v);
                 }
                 r
             }
@@ -513,9 +528,14 @@ impl Profile {
 
     /// A fast path's profile (see [`Profile::fill_fast`]).
     #[inline(always)]
-    pub(crate) fn fast(start: State, fast: &velocity::Fast) -> Profile {
+    pub(crate) fn fast(
+        start: State,
+        fast: &velocity::Fast,
+        target_p: f64,
+        target_v: f64,
+    ) -> Profile {
         let mut prof = Profile::new(start);
-        prof.fill_fast(start, fast);
+        prof.fill_fast(start, fast, target_p, target_v);
         prof
     }
 
@@ -603,7 +623,7 @@ impl Profile {
             },
         )?;
         let fastest = match velocity::fast_path(start, target_p, target_v, lim) {
-            Some(fast) => Profile::fast(start, &fast),
+            Some(fast) => Profile::fast(start, &fast, target_p, target_v),
             None => sol.build(&block.p_min),
         };
         let minimal = fastest.duration();
@@ -1013,5 +1033,109 @@ mod check_tests {
             check_inputs(&st, 3.0, 0.0, &Limits { vmax: 0.0, ..good }),
             Err(PlanError::InvalidLimits)
         );
+    }
+}
+
+#[cfg(test)]
+mod fast_fill_tests {
+    use super::*;
+
+    /// A fast path's profile, whose phase starts are anchored at the start, the cruise's
+    /// two ends and the target: it ends exactly at the target, and each phase integrated
+    /// over its duration reaches the next phase's start (to rounding), for rest-to-rest
+    /// moves (cruising or not) and moves that cruise from a moving start.
+    #[test]
+    fn fast_profiles_end_at_the_target_and_are_continuous() {
+        let lim = Limits {
+            vmax: 40.0,
+            amax: 300.0,
+            dmax: 500.0,
+            jmax: 4000.0,
+        };
+        let sym = Limits { dmax: 300.0, ..lim };
+        let mut cases = vec![];
+        for (p0, p1) in [(0.0, 100.0), (3.0, -250.0), (1e4, 1e4 + 0.01), (-7.0, -5.0)] {
+            cases.push((
+                State {
+                    p: p0,
+                    v: 0.0,
+                    a: 0.0,
+                },
+                p1,
+                0.0,
+                sym,
+            ));
+        }
+        cases.push((
+            State {
+                p: 0.0,
+                v: 0.0,
+                a: 0.0,
+            },
+            500.0,
+            0.0,
+            lim,
+        ));
+        cases.push((
+            State {
+                p: 2.0,
+                v: 12.0,
+                a: 100.0,
+            },
+            300.0,
+            20.0,
+            lim,
+        ));
+        cases.push((
+            State {
+                p: -2.0,
+                v: 39.0,
+                a: -250.0,
+            },
+            -400.0,
+            -5.0,
+            lim,
+        ));
+        cases.push((
+            State {
+                p: 5.0,
+                v: -30.0,
+                a: 0.0,
+            },
+            900.0,
+            40.0,
+            lim,
+        ));
+        for (start, p1, v1, lim) in cases {
+            let fast = velocity::fast_path(start, p1, v1, &lim);
+            assert!(fast.is_some(), "{start:?} -> {p1}: no fast path");
+            let prof = Profile::position(start, p1, v1, &lim).unwrap();
+            assert_eq!(
+                prof.end(),
+                State {
+                    p: p1,
+                    v: v1,
+                    a: 0.0
+                },
+                "{start:?} -> {p1}"
+            );
+            let (ph, st) = (prof.phases(), prof.phase_starts());
+            assert_eq!(st[0], start);
+            let scale = p1.abs().max(start.p.abs()).max(1.0);
+            for i in 0..ph.len() {
+                let reached = st[i].integrate(ph[i].duration, ph[i].jerk);
+                let next = if i + 1 < ph.len() {
+                    st[i + 1]
+                } else {
+                    prof.end()
+                };
+                assert!(
+                    (reached.p - next.p).abs() <= 1e-12 * scale
+                        && (reached.v - next.v).abs() <= 1e-9 * lim.vmax
+                        && (reached.a - next.a).abs() <= 1e-9 * lim.amax,
+                    "{start:?} -> {p1}: phase {i} reaches {reached:?}, next {next:?}"
+                );
+            }
+        }
     }
 }

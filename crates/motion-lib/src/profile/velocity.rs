@@ -125,6 +125,8 @@ pub(crate) struct Fast {
     pub v_peak: f64,
     /// Signed distance from the start to the start of the cruise.
     pub d_cruise: f64,
+    /// Signed distance from the end of the cruise to the target.
+    pub d_decel: f64,
 }
 
 /// Fast paths of [`Profile::position`]. None when the problem needs the kernel's
@@ -207,12 +209,13 @@ fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<Fast> {
         (td2, 0.0),
         (td1, sj),
     ];
-    // The acceleration ramp is point-symmetric about its middle: it covers vp/2 x its
-    // duration 2 ta1 + ta2.
+    // Each ramp is point-symmetric about its middle: it covers vp/2 x its duration
+    // 2 t1 + t2.
     Some(Fast {
         items,
         v_peak: s * vp,
         d_cruise: s * (0.5 * vp * (2.0 * ta1 + ta2)),
+        d_decel: s * (0.5 * vp * (2.0 * td1 + td2)),
     })
 }
 
@@ -262,5 +265,6 @@ pub(crate) fn position_cruising(
         items,
         v_peak: s * lim.vmax,
         d_cruise: s * c1.dist,
+        d_decel: s * c2.dist,
     })
 }
