@@ -8,7 +8,7 @@
 //! An axis with `jmax` 0 or infinite does not limit the path jerk; when every axis is
 //! trapezoidal, the path profile is trapezoidal.
 
-use super::{slot, zero_if_finite, Limits, PlanError, Profile, State};
+use super::{slot, velocity, zero_if_finite, Limits, PlanError, Profile, State};
 
 /// Axes whose geometry is stored inline (no allocation).
 const INLINE_AXES: usize = 6;
@@ -160,11 +160,12 @@ impl AxisPass {
             p.sq += dx * dx;
             let r = 1.0 / dx.abs();
             let (vi, ai, dd) = (ax.vmax * r, ax.amax * r, ax.dmax * r);
-            // An axis without jerk limit (jmax 0 or infinite) does not limit the path jerk.
-            let ji = if ax.is_trapezoidal() {
-                f64::INFINITY
-            } else {
+            // An axis without jerk limit (jmax 0 or infinite) does not limit the path jerk
+            // (infinite jmax: jmax * r is infinite; valid limits have jmax >= 0).
+            let ji = if ax.jmax > 0.0 {
                 ax.jmax * r
+            } else {
+                f64::INFINITY
             };
             p.v = if vi < p.v { vi } else { p.v };
             p.a = if ai < p.a { ai } else { p.a };
@@ -180,9 +181,8 @@ impl Line {
     #[inline]
     pub fn plan(start: &[f64], end: &[f64], axes: &[Limits]) -> Result<Line, PlanError> {
         slot::in_place(|out| {
-            let n = start.len();
             let r = out.write(Ok(Line {
-                geometry: Geometry::zeroed(n),
+                geometry: Geometry::Inline(0, [0.0; 2 * INLINE_AXES]),
                 length: 0.0,
                 limits: Limits::default(),
                 profile: Profile::new(State::default()),
@@ -198,7 +198,7 @@ impl Line {
         })
     }
 
-    /// [`Line::plan`] in place: `self` holds a zeroed geometry of `start.len()` axes and
+    /// [`Line::plan`] in place: `self` holds an empty inline geometry of zeros and
     /// `Profile::new(State::default())`.
     #[inline(always)]
     fn plan_here(&mut self, start: &[f64], end: &[f64], axes: &[Limits]) -> Result<(), PlanError> {
@@ -218,6 +218,10 @@ impl Line {
                 "{n} direction components but {} axis limits",
                 axes.len()
             )));
+        }
+        match &mut self.geometry {
+            Geometry::Inline(len, _) if n <= INLINE_AXES => *len = 2 * n,
+            g => *g = Geometry::zeroed(n),
         }
         let g = self.geometry.as_mut_slice();
         let (g0, gd) = g.split_at_mut(n);
@@ -261,7 +265,7 @@ impl Line {
         }
         self.length = length;
         let rest = State::default();
-        if !(length.is_finite() && v.is_finite()) {
+        if zero_if_finite(length) + zero_if_finite(v) != 0.0 {
             // No axis moves, or a coordinate difference overflows: the general path.
             self.limits = path_limits(gd, axes)?;
             self.profile = Profile::position(rest, length, 0.0, &self.limits)?;
@@ -273,10 +277,29 @@ impl Line {
             dmax: d * length,
             jmax: j * length,
         };
-        // The common case is built in the profile itself.
-        match Profile::position_fast(rest, length, 0.0, &self.limits) {
-            Some(fast) => self.profile.fill_fast(rest, &fast, length, 0.0),
-            None => self.profile = Profile::position(rest, length, 0.0, &self.limits)?,
+        // The common case is built in the profile itself, planned on the unit path
+        // (s = 0 to 1, limits per unit of s) and scaled by the length: the same times (to
+        // rounding) and positions `length` times as large, but the plan does not wait for
+        // the square root of the length.
+        let unit = Limits {
+            vmax: v,
+            amax: a,
+            dmax: d,
+            jmax: j,
+        };
+        // The unit limits are valid here (positive: min over moving axes of valid limits
+        // / |d_i|, v finite, so a and d too; j infinite when no axis limits the jerk, and
+        // the fast path is then not taken): no input check. The scaled limits must be
+        // finite too (else the general path reports it).
+        let finite = zero_if_finite(self.limits.vmax)
+            + zero_if_finite(self.limits.amax)
+            + zero_if_finite(self.limits.dmax)
+            == 0.0;
+        match velocity::fast_path(rest, 1.0, 0.0, &unit) {
+            Some(fast) if finite => self
+                .profile
+                .fill_fast(rest, &fast.scaled(length), length, 0.0),
+            _ => self.profile = Profile::position(rest, length, 0.0, &self.limits)?,
         }
         Ok(())
     }

@@ -511,21 +511,6 @@ impl Profile {
         Ok(Profile::build(start, &items[..n], false, None))
     }
 
-    /// The phases of [`Profile::position`] when a closed-form fast path applies (valid
-    /// inputs), for [`Profile::fast`]; `None` otherwise.
-    #[inline(always)]
-    pub(crate) fn position_fast(
-        start: State,
-        target_p: f64,
-        target_v: f64,
-        lim: &Limits,
-    ) -> Option<velocity::Fast> {
-        if check_inputs(&start, target_p, target_v, lim).is_err() {
-            return None;
-        }
-        velocity::fast_path(start, target_p, target_v, lim)
-    }
-
     /// A fast path's profile (see [`Profile::fill_fast`]).
     #[inline(always)]
     pub(crate) fn fast(

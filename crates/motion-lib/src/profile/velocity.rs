@@ -8,7 +8,7 @@
 //! velocity interface with target acceleration 0), acceleration never leaves
 //! `[-a_lo, a_hi]` except to come back from a start acceleration beyond it.
 
-use super::{Limits, Profile, State};
+use super::{zero_if_finite, Limits, Profile, State};
 
 /// One velocity change: three pieces (duration, jerk; or duration, acceleration when
 /// trapezoidal), some possibly of zero duration, with the distance covered.
@@ -129,6 +129,21 @@ pub(crate) struct Fast {
     pub d_decel: f64,
 }
 
+impl Fast {
+    /// The same profile with positions (and so velocities, accelerations, jerks) scaled
+    /// by `k`, times unchanged: the profile of the target `k` times as far under limits
+    /// `k` times as high.
+    #[inline(always)]
+    pub(crate) fn scaled(&self, k: f64) -> Fast {
+        Fast {
+            items: self.items.map(|(t, j)| (t, j * k)),
+            v_peak: self.v_peak * k,
+            d_cruise: self.d_cruise * k,
+            d_decel: self.d_decel * k,
+        }
+    }
+}
+
 /// Fast paths of [`Profile::position`]. None when the problem needs the kernel's
 /// enumeration of every profile family.
 #[inline(always)]
@@ -197,7 +212,7 @@ fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<Fast> {
             (t1a, vp * inv_am - t1a, t1d, vp * inv_dm - t1d, vp, 0.0)
         }
     };
-    if !(vp > 0.0 && vp.is_finite()) {
+    if !(vp > 0.0 && zero_if_finite(vp) == 0.0) {
         return None;
     }
     let items = [
