@@ -115,10 +115,8 @@ pub fn path_limits(unit: &[f64], axes: &[Limits]) -> Result<Limits, PlanError> {
 /// length: the reciprocals 1 / |d_i| do not wait for its square root; an axis that does
 /// not move has 1 / |d_i| = infinity and does not limit).
 struct AxisPass {
-    /// Sum of the squared differences.
+    /// Sum of the squared differences (not finite when a coordinate is not).
     sq: f64,
-    /// Every coordinate finite.
-    finite: bool,
     /// Every axis's limits valid.
     valid: bool,
     v: f64,
@@ -138,7 +136,6 @@ impl AxisPass {
     ) -> AxisPass {
         let mut p = AxisPass {
             sq: 0.0,
-            finite: true,
             valid: true,
             v: f64::INFINITY,
             a: f64::INFINITY,
@@ -152,7 +149,6 @@ impl AxisPass {
             .zip(start)
             .zip(end)
         {
-            p.finite &= zero_if_finite(xa) + zero_if_finite(xb) == 0.0;
             p.valid &= ax.is_valid();
             let dx = xb - xa;
             *x0 = xa;
@@ -245,18 +241,22 @@ impl Line {
         };
         let AxisPass {
             sq,
-            finite,
             valid,
             v,
             a,
             d,
             j,
         } = pass;
-        if !finite {
-            return Err(non_finite());
-        }
+        // A non-finite coordinate makes its difference, and so the length, infinite or
+        // NaN: the coordinates are only looked at then (or when the limits are invalid:
+        // a non-finite coordinate is reported first).
+        let coords_finite = || start.iter().chain(end).all(|x| x.is_finite());
         if !valid {
-            return Err(PlanError::InvalidLimits);
+            return Err(if coords_finite() {
+                PlanError::InvalidLimits
+            } else {
+                non_finite()
+            });
         }
         let length = sq.sqrt();
         let inv = if length > 0.0 { 1.0 / length } else { 0.0 };
@@ -266,6 +266,9 @@ impl Line {
         self.length = length;
         let rest = State::default();
         if zero_if_finite(length) + zero_if_finite(v) != 0.0 {
+            if !coords_finite() {
+                return Err(non_finite());
+            }
             // No axis moves, or a coordinate difference overflows: the general path.
             self.limits = path_limits(gd, axes)?;
             self.profile = Profile::position(rest, length, 0.0, &self.limits)?;
