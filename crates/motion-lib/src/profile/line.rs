@@ -299,9 +299,13 @@ impl Line {
             + zero_if_finite(self.limits.dmax)
             == 0.0;
         match velocity::fast_path(rest, 1.0, 0.0, &unit) {
-            Some(fast) if finite => self
-                .profile
-                .fill_fast(rest, &fast.scaled(length), length, 0.0),
+            Some(fast) if finite => {
+                let (prof, all) = Profile::fast(rest, &fast.scaled(length), length, 0.0);
+                self.profile = prof;
+                if !all {
+                    self.profile.compact();
+                }
+            }
             _ => self.profile = Profile::position(rest, length, 0.0, &self.limits)?,
         }
         Ok(())

@@ -349,22 +349,22 @@ impl Profile {
         self.total = total;
     }
 
-    /// [`Profile::fill`] for a fast path's seven jerk phases to the target (`target_p`,
-    /// `target_v`, acceleration 0), the fourth a cruise at velocity `fast.v_peak` from
-    /// `start.p + fast.d_cruise` to `target_p - fast.d_decel`.
+    /// A fast path's profile: seven jerk phases to the target (`target_p`, `target_v`,
+    /// acceleration 0), the fourth a cruise at velocity `fast.v_peak` from
+    /// `start.p + fast.d_cruise` to `target_p - fast.d_decel`. Built as one value, the
+    /// seven phases in the first seven slots (so that it is written straight into its
+    /// destination, without zeroing it first); `true` when every phase has a positive
+    /// duration, else the empty ones must be removed with [`Profile::compact`].
     ///
     /// No phase start waits for more than one integration step: the states at the start
     /// and the end of the cruise and at the end are known, the phase after each of the
     /// start and the cruise's end is integrated forward from it, the phase before the
     /// cruise and the last phase backward from the state they reach (the profile of a
     /// sampled cycle is the same to rounding; the end state is the target exactly). One
-    /// chain of seven integrations made the plan wait about 50 cycles for it.
-    /// Branch-free: which phases are empty varies from problem to problem, so every item
-    /// is written at the next free slot and the slot only advances for a phase of
-    /// positive duration. The one slot past the last phase that an empty item may have
-    /// written is cleared. The phase end times are summed in order.
+    /// chain of seven integrations made the plan wait about 50 cycles for it. The phase
+    /// end times are summed in order.
     #[inline(always)]
-    fn fill_fast(&mut self, start: State, fast: &velocity::Fast, target_p: f64, target_v: f64) {
+    fn fast(start: State, fast: &velocity::Fast, target_p: f64, target_v: f64) -> (Profile, bool) {
         let items = &fast.items;
         let kept = items.map(|(d, _)| if d > 0.0 { d } else { 0.0 });
         let jerk = items.map(|(_, j)| j);
@@ -383,35 +383,78 @@ impl Profile {
             v: target_v,
             a: 0.0,
         };
-        let starts = [
+        let e0 = kept[0];
+        let e1 = e0 + kept[1];
+        let e2 = e1 + kept[2];
+        let e3 = e2 + kept[3];
+        let e4 = e3 + kept[4];
+        let e5 = e4 + kept[5];
+        let e6 = e5 + kept[6];
+        let ph = |k: usize| Phase {
+            duration: kept[k],
+            jerk: jerk[k],
+        };
+        let all = (kept[0] > 0.0)
+            & (kept[1] > 0.0)
+            & (kept[2] > 0.0)
+            & (kept[3] > 0.0)
+            & (kept[4] > 0.0)
+            & (kept[5] > 0.0)
+            & (kept[6] > 0.0);
+        let none = State::default();
+        let prof = Profile {
+            cursor: Cursor::default(),
+            total: e6,
+            count: 7,
+            ends: [e0, e1, e2, e3, e4, e5, e6, 0.0, 0.0],
+            starts: [
+                start,
+                start.integrate(kept[0], jerk[0]),
+                cruise.integrate(-kept[2], jerk[2]),
+                cruise,
+                decel,
+                decel.integrate(kept[4], jerk[4]),
+                end.integrate(-kept[6], jerk[6]),
+                none,
+                none,
+            ],
+            phases: [
+                ph(0),
+                ph(1),
+                ph(2),
+                ph(3),
+                ph(4),
+                ph(5),
+                ph(6),
+                Phase::default(),
+                Phase::default(),
+            ],
             start,
-            start.integrate(kept[0], jerk[0]),
-            cruise.integrate(-kept[2], jerk[2]),
-            cruise,
-            decel,
-            decel.integrate(kept[4], jerk[4]),
-            end.integrate(-kept[6], jerk[6]),
-        ];
+            last: end,
+        };
+        (prof, all)
+    }
+
+    /// Removes the phases of zero duration (moving the others down, clearing the slots
+    /// freed): the profile [`Profile::fast`] leaves when not every phase is needed.
+    #[inline(never)]
+    fn compact(&mut self) {
+        let count = self.count;
         let mut n = 0;
-        let mut total = 0.0;
-        for k in 0..7 {
-            let t = kept[k];
-            // n <= k < 7 < MAX_PHASES.
-            self.phases[n] = Phase {
-                duration: t,
-                jerk: jerk[k],
-            };
-            self.starts[n] = starts[k];
-            total += t;
-            self.ends[n] = total;
-            n += (t > 0.0) as usize;
+        for k in 0..count {
+            if self.phases[k].duration > 0.0 {
+                self.phases[n] = self.phases[k];
+                self.starts[n] = self.starts[k];
+                self.ends[n] = self.ends[k];
+                n += 1;
+            }
         }
-        self.phases[n] = Phase::default();
-        self.starts[n] = State::default();
-        self.ends[n] = 0.0;
+        for k in n..count {
+            self.phases[k] = Phase::default();
+            self.starts[k] = State::default();
+            self.ends[k] = 0.0;
+        }
         self.count = n;
-        self.last = end;
-        self.total = total;
     }
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
@@ -440,9 +483,12 @@ impl Profile {
         }
         match velocity::fast_path(start, target_p, target_v, lim) {
             Some(fast) => {
-                let r = out.write(Ok(Profile::new(start)));
-                if let Ok(p) = r {
-                    p.fill_fast(start, &fast, target_p, target_v);
+                let (prof, all) = Profile::fast(start, &fast, target_p, target_v);
+                let r = out.write(Ok(prof));
+                if !all {
+                    if let Ok(p) = r {
+                        p.compact();
+                    }
                 }
                 r
             }
@@ -509,19 +555,6 @@ impl Profile {
             items[k] = (ph.duration, ph.jerk);
         }
         Ok(Profile::build(start, &items[..n], false, None))
-    }
-
-    /// A fast path's profile (see [`Profile::fill_fast`]).
-    #[inline(always)]
-    pub(crate) fn fast(
-        start: State,
-        fast: &velocity::Fast,
-        target_p: f64,
-        target_v: f64,
-    ) -> Profile {
-        let mut prof = Profile::new(start);
-        prof.fill_fast(start, fast, target_p, target_v);
-        prof
     }
 
     /// Fallback for the rare start states where the kernel finds no profile (inherited from
@@ -608,7 +641,13 @@ impl Profile {
             },
         )?;
         let fastest = match velocity::fast_path(start, target_p, target_v, lim) {
-            Some(fast) => Profile::fast(start, &fast, target_p, target_v),
+            Some(fast) => {
+                let (mut prof, all) = Profile::fast(start, &fast, target_p, target_v);
+                if !all {
+                    prof.compact();
+                }
+                prof
+            }
             None => sol.build(&block.p_min),
         };
         let minimal = fastest.duration();
@@ -1121,6 +1160,67 @@ mod fast_fill_tests {
                     "{start:?} -> {p1}: phase {i} reaches {reached:?}, next {next:?}"
                 );
             }
+        }
+    }
+
+    /// The phases of zero duration of a fast path's profile are removed: the others are
+    /// those of the generic build from the same items (durations and jerks exactly,
+    /// phase starts to rounding), and the freed slots are cleared (so that equal plans
+    /// compare equal and print alike).
+    #[test]
+    fn empty_phases_are_removed_and_their_slots_cleared() {
+        let lim = Limits {
+            vmax: 40.0,
+            amax: 300.0,
+            dmax: 300.0,
+            jmax: 4000.0,
+        };
+        // Short rest-to-rest moves (triangular ramps, no cruise: 4 phases), one with
+        // trapezoidal ramps and no cruise (6), and a cruise from a start at vmax (4).
+        let cases = [
+            (State::default(), 0.01, 0.0),
+            (
+                State {
+                    p: 1.0,
+                    ..State::default()
+                },
+                -2.0,
+                0.0,
+            ),
+            (State::default(), 6.0, 0.0),
+            (
+                State {
+                    p: 0.0,
+                    v: 40.0,
+                    a: 0.0,
+                },
+                300.0,
+                0.0,
+            ),
+        ];
+        for (start, p1, v1) in cases {
+            let fast = velocity::fast_path(start, p1, v1, &lim).expect("fast path");
+            let prof = Profile::position(start, p1, v1, &lim).unwrap();
+            let n = prof.phases().len();
+            assert!(n < 7, "{start:?} -> {p1}: {n} phases");
+            let items: Vec<(f64, f64)> = fast.items.to_vec();
+            let generic = Profile::build(start, &items, false, None);
+            assert_eq!(prof.phases(), generic.phases(), "{start:?} -> {p1}");
+            for (a, b) in prof.phase_starts().iter().zip(generic.phase_starts()) {
+                assert!(
+                    (a.p - b.p).abs() <= 1e-12 * (1.0 + p1.abs())
+                        && (a.v - b.v).abs() <= 1e-12 * lim.vmax
+                        && (a.a - b.a).abs() <= 1e-12 * lim.amax,
+                    "{a:?} vs {b:?}"
+                );
+            }
+            assert!(prof.ends[..n]
+                .iter()
+                .zip(&generic.ends[..n])
+                .all(|(a, b)| a == b));
+            assert!(prof.phases[n..].iter().all(|ph| *ph == Phase::default()));
+            assert!(prof.starts[n..].iter().all(|st| *st == State::default()));
+            assert!(prof.ends[n..].iter().all(|e| *e == 0.0));
         }
     }
 }
