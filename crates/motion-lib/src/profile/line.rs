@@ -9,6 +9,7 @@
 //! trapezoidal, the path profile is trapezoidal.
 
 use super::{slot, velocity, zero_if_finite, Limits, PlanError, Profile, State};
+use std::mem::MaybeUninit;
 
 /// Axes whose geometry is stored inline (no allocation).
 const INLINE_AXES: usize = 6;
@@ -21,12 +22,14 @@ enum Geometry {
 }
 
 impl Geometry {
+    /// The geometry of `n` axes: `inline`'s first 2n values, or `heap` beyond
+    /// [`INLINE_AXES`] axes.
     #[inline(always)]
-    fn zeroed(n: usize) -> Geometry {
+    fn new(n: usize, inline: [f64; 2 * INLINE_AXES], heap: Vec<f64>) -> Geometry {
         if n <= INLINE_AXES {
-            Geometry::Inline(2 * n, [0.0; 2 * INLINE_AXES])
+            Geometry::Inline(2 * n, inline)
         } else {
-            Geometry::Heap(vec![0.0; 2 * n])
+            Geometry::Heap(heap)
         }
     }
 
@@ -34,14 +37,6 @@ impl Geometry {
     fn as_slice(&self) -> &[f64] {
         match self {
             Geometry::Inline(len, data) => &data[..*len],
-            Geometry::Heap(v) => v,
-        }
-    }
-
-    #[inline]
-    fn as_mut_slice(&mut self) -> &mut [f64] {
-        match self {
-            Geometry::Inline(len, data) => &mut data[..*len],
             Geometry::Heap(v) => v,
         }
     }
@@ -176,50 +171,48 @@ impl Line {
     /// Time-optimal rest-to-rest straight line from `start` to `end`.
     #[inline]
     pub fn plan(start: &[f64], end: &[f64], axes: &[Limits]) -> Result<Line, PlanError> {
-        slot::in_place(|out| {
-            let r = out.write(Ok(Line {
-                geometry: Geometry::Inline(0, [0.0; 2 * INLINE_AXES]),
-                length: 0.0,
-                limits: Limits::default(),
-                profile: Profile::new(State::default()),
-            }));
-            let planned = match r {
-                Ok(line) => line.plan_here(start, end, axes),
-                Err(_) => Ok(()),
-            };
-            if let Err(e) = planned {
-                *r = Err(e);
-            }
-            r
-        })
+        slot::in_place(|out| Line::plan_into(out, start, end, axes))
     }
 
-    /// [`Line::plan`] in place: `self` holds an empty inline geometry of zeros and
-    /// `Profile::new(State::default())`.
+    /// [`Line::plan`] written into `out` (see [`slot::in_place`]): the line is written once,
+    /// as one value (geometry, limits and the fast path's profile computed before), so
+    /// that it goes straight into the slot, without zeroing it first.
     #[inline(always)]
-    fn plan_here(&mut self, start: &[f64], end: &[f64], axes: &[Limits]) -> Result<(), PlanError> {
+    fn plan_into<'a>(
+        out: &'a mut MaybeUninit<Result<Line, PlanError>>,
+        start: &[f64],
+        end: &[f64],
+        axes: &[Limits],
+    ) -> &'a mut Result<Line, PlanError> {
         let n = start.len();
         if end.len() != n {
-            return Err(PlanError::Line(format!(
+            return out.write(Err(PlanError::Line(format!(
                 "start has {n} axes but end has {}",
                 end.len()
-            )));
+            ))));
         }
         let non_finite = || PlanError::Line("non-finite coordinate".into());
         if axes.len() != n {
             if start.iter().chain(end).any(|x| !x.is_finite()) {
-                return Err(non_finite());
+                return out.write(Err(non_finite()));
             }
-            return Err(PlanError::Line(format!(
+            return out.write(Err(PlanError::Line(format!(
                 "{n} direction components but {} axis limits",
                 axes.len()
-            )));
+            ))));
         }
-        match &mut self.geometry {
-            Geometry::Inline(len, _) if n <= INLINE_AXES => *len = 2 * n,
-            g => *g = Geometry::zeroed(n),
-        }
-        let g = self.geometry.as_mut_slice();
+        // Start positions then unit direction: inline for up to INLINE_AXES axes.
+        let mut inline = [0.0; 2 * INLINE_AXES];
+        let mut heap = if n > INLINE_AXES {
+            vec![0.0; 2 * n]
+        } else {
+            Vec::new()
+        };
+        let g: &mut [f64] = if n > INLINE_AXES {
+            &mut heap
+        } else {
+            &mut inline[..2 * n]
+        };
         let (g0, gd) = g.split_at_mut(n);
         // The common axis counts get a pass of constant length (unrolled, no loop).
         let pass = match n {
@@ -252,63 +245,82 @@ impl Line {
         // a non-finite coordinate is reported first).
         let coords_finite = || start.iter().chain(end).all(|x| x.is_finite());
         if !valid {
-            return Err(if coords_finite() {
+            return out.write(Err(if coords_finite() {
                 PlanError::InvalidLimits
             } else {
                 non_finite()
-            });
+            }));
         }
         let length = sq.sqrt();
         let inv = if length > 0.0 { 1.0 / length } else { 0.0 };
         for d in gd.iter_mut() {
             *d *= inv;
         }
-        self.length = length;
         let rest = State::default();
         if zero_if_finite(length) + zero_if_finite(v) != 0.0 {
             if !coords_finite() {
-                return Err(non_finite());
+                return out.write(Err(non_finite()));
             }
             // No axis moves, or a coordinate difference overflows: the general path.
-            self.limits = path_limits(gd, axes)?;
-            self.profile = Profile::position(rest, length, 0.0, &self.limits)?;
-            return Ok(());
+            let planned = path_limits(gd, axes).and_then(|limits| {
+                Profile::position(rest, length, 0.0, &limits).map(|p| (limits, p))
+            });
+            let geometry = Geometry::new(n, inline, heap);
+            return out.write(planned.map(|(limits, profile)| Line {
+                geometry,
+                length,
+                limits,
+                profile,
+            }));
         }
-        self.limits = Limits {
+        let limits = Limits {
             vmax: v * length,
             amax: a * length,
             dmax: d * length,
             jmax: j * length,
         };
-        // The common case is built in the profile itself, planned on the unit path
-        // (s = 0 to 1, limits per unit of s) and scaled by the length: the same times (to
-        // rounding) and positions `length` times as large, but the plan does not wait for
-        // the square root of the length.
+        let geometry = Geometry::new(n, inline, heap);
+        // The common case, planned on the unit path (s = 0 to 1, limits per unit of s)
+        // and scaled by the length: the same times (to rounding) and positions `length`
+        // times as large, but the plan does not wait for the square root of the length.
+        // The unit limits are valid here (positive: min over moving axes of valid limits
+        // / |d_i|, v finite, so a and d too; j infinite when no axis limits the jerk, and
+        // the fast path is then not taken): no input check. The scaled limits must be
+        // finite too (else the general path reports it).
         let unit = Limits {
             vmax: v,
             amax: a,
             dmax: d,
             jmax: j,
         };
-        // The unit limits are valid here (positive: min over moving axes of valid limits
-        // / |d_i|, v finite, so a and d too; j infinite when no axis limits the jerk, and
-        // the fast path is then not taken): no input check. The scaled limits must be
-        // finite too (else the general path reports it).
-        let finite = zero_if_finite(self.limits.vmax)
-            + zero_if_finite(self.limits.amax)
-            + zero_if_finite(self.limits.dmax)
-            == 0.0;
+        let finite =
+            zero_if_finite(limits.vmax) + zero_if_finite(limits.amax) + zero_if_finite(limits.dmax)
+                == 0.0;
         match velocity::fast_path(rest, 1.0, 0.0, &unit) {
             Some(fast) if finite => {
-                let (prof, all) = Profile::fast(rest, &fast.scaled(length), length, 0.0);
-                self.profile = prof;
+                let (profile, all) = Profile::fast(rest, &fast.scaled(length), length, 0.0);
+                let r = out.write(Ok(Line {
+                    geometry,
+                    length,
+                    limits,
+                    profile,
+                }));
                 if !all {
-                    self.profile.compact();
+                    if let Ok(line) = r {
+                        line.profile.compact();
+                    }
                 }
+                r
             }
-            _ => self.profile = Profile::position(rest, length, 0.0, &self.limits)?,
+            _ => out.write(
+                Profile::position(rest, length, 0.0, &limits).map(|profile| Line {
+                    geometry,
+                    length,
+                    limits,
+                    profile,
+                }),
+            ),
         }
-        Ok(())
     }
 
     /// Duration of the line (s).
