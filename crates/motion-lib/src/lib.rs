@@ -8,15 +8,12 @@
 //!   the runtime (axes, state machines, buffers, interpolation).
 //! - [`blocks`], [`group_blocks`]: the PLCopen function blocks, called once per scan.
 //! - [`remote`]: the engine on its own thread with a lock-free hand-over to the scan.
-//! - [`ffi`]: the C ABI (with `profile::slot`'s one `assume_init`, the only `unsafe` code
-//!   of the project).
+//! - [`ffi`]: the C ABI, the only `unsafe` code of the project.
 //!
 //! Invariants: no commanded motion exceeds an axis's velocity, acceleration or jerk limit
 //! (a request above them is lowered and, for groups, reported); the engine is
 //! deterministic and its cycle allocates nothing; bad block inputs give an ErrorID
-//! ([`error::ErrorId`]), never a panic; only [`ffi`] contains `unsafe` code, apart from
-//! one `MaybeUninit::assume_init` in `profile::slot` (a planner's result built in the
-//! caller's return slot; its safety argument is in that module). Every public
+//! ([`error::ErrorId`]), never a panic; only [`ffi`] contains `unsafe` code. Every public
 //! item is documented (`missing_docs`).
 #![deny(unsafe_code)]
 #![warn(missing_docs)]

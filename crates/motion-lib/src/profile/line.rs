@@ -9,7 +9,6 @@
 //! trapezoidal, the path profile is trapezoidal.
 
 use super::{slot, velocity, zero_if_finite, Limits, PlanError, Profile, State};
-use std::mem::MaybeUninit;
 
 /// Axes whose geometry is stored inline (no allocation).
 const INLINE_AXES: usize = 6;
@@ -174,19 +173,21 @@ impl Line {
         slot::in_place(|out| Line::plan_into(out, start, end, axes))
     }
 
-    /// [`Line::plan`] written into `out` (see [`slot::in_place`]): the line is written once,
+    /// [`Line::plan`] written once into `out`, a slot the caller keeps and may reuse from plan
+    /// to plan (its previous value is dropped); returns the result in the slot. The line is
+    /// written once,
     /// as one value (geometry, limits and the fast path's profile computed before), so
     /// that it goes straight into the slot, without zeroing it first.
     #[inline(always)]
-    fn plan_into<'a>(
-        out: &'a mut MaybeUninit<Result<Line, PlanError>>,
+    pub fn plan_into<'a>(
+        out: &'a mut Option<Result<Line, PlanError>>,
         start: &[f64],
         end: &[f64],
         axes: &[Limits],
     ) -> &'a mut Result<Line, PlanError> {
         let n = start.len();
         if end.len() != n {
-            return out.write(Err(PlanError::Line(format!(
+            return out.insert(Err(PlanError::Line(format!(
                 "start has {n} axes but end has {}",
                 end.len()
             ))));
@@ -194,9 +195,9 @@ impl Line {
         let non_finite = || PlanError::Line("non-finite coordinate".into());
         if axes.len() != n {
             if start.iter().chain(end).any(|x| !x.is_finite()) {
-                return out.write(Err(non_finite()));
+                return out.insert(Err(non_finite()));
             }
-            return out.write(Err(PlanError::Line(format!(
+            return out.insert(Err(PlanError::Line(format!(
                 "{n} direction components but {} axis limits",
                 axes.len()
             ))));
@@ -245,7 +246,7 @@ impl Line {
         // a non-finite coordinate is reported first).
         let coords_finite = || start.iter().chain(end).all(|x| x.is_finite());
         if !valid {
-            return out.write(Err(if coords_finite() {
+            return out.insert(Err(if coords_finite() {
                 PlanError::InvalidLimits
             } else {
                 non_finite()
@@ -259,14 +260,14 @@ impl Line {
         let rest = State::default();
         if zero_if_finite(length) + zero_if_finite(v) != 0.0 {
             if !coords_finite() {
-                return out.write(Err(non_finite()));
+                return out.insert(Err(non_finite()));
             }
             // No axis moves, or a coordinate difference overflows: the general path.
             let planned = path_limits(gd, axes).and_then(|limits| {
                 Profile::position(rest, length, 0.0, &limits).map(|p| (limits, p))
             });
             let geometry = Geometry::new(n, inline, heap);
-            return out.write(planned.map(|(limits, profile)| Line {
+            return out.insert(planned.map(|(limits, profile)| Line {
                 geometry,
                 length,
                 limits,
@@ -299,7 +300,7 @@ impl Line {
         match velocity::fast_path(rest, 1.0, 0.0, &unit) {
             Some(fast) if finite => {
                 let (profile, all) = Profile::fast(rest, &fast.scaled(length), length, 0.0);
-                let r = out.write(Ok(Line {
+                let r = out.insert(Ok(Line {
                     geometry,
                     length,
                     limits,
@@ -312,7 +313,7 @@ impl Line {
                 }
                 r
             }
-            _ => out.write(
+            _ => out.insert(
                 Profile::position(rest, length, 0.0, &limits).map(|profile| Line {
                     geometry,
                     length,
