@@ -165,16 +165,25 @@ fn main() {
     let mut otg = Ruckig::<1, IgnoreErrorHandler>::new(None, 0.001);
     let mut traj = Trajectory::new(None);
     let inputs: Vec<InputParameter<1>> = problems.iter().map(ruckig_input).collect();
+    // Our planners write into a slot reused from plan to plan, as rsruckig writes `traj`.
+    let mut prof_slot = None;
+    let mut line_slot = None;
     // times[problem][round] = (ours ns, rsruckig ns)
     let mut times = vec![Vec::with_capacity(rounds); problems.len()];
     for round in 0..rounds {
         for (k, pb) in problems.iter().enumerate() {
             let ours = || {
                 if let Some((s, e, axes)) = &pb.line {
-                    let line = Line::plan(black_box(s), black_box(e), black_box(axes));
+                    let line = Line::plan_into(
+                        &mut line_slot,
+                        black_box(s),
+                        black_box(e),
+                        black_box(axes),
+                    );
                     black_box(&line);
                 } else {
-                    let prof = Profile::position(
+                    let prof = Profile::position_into(
+                        &mut prof_slot,
                         black_box(pb.start),
                         black_box(pb.target_p),
                         black_box(pb.target_v),

@@ -8,7 +8,7 @@
 //!   the runtime (axes, state machines, buffers, interpolation).
 //! - [`blocks`], [`group_blocks`]: the PLCopen function blocks, called once per scan.
 //! - [`remote`]: the engine on its own thread with a lock-free hand-over to the scan.
-//! - [`ffi`]: the C ABI (the only `unsafe` code of the project).
+//! - [`ffi`]: the C ABI, the only `unsafe` code of the project.
 //!
 //! Invariants: no commanded motion exceeds an axis's velocity, acceleration or jerk limit
 //! (a request above them is lowered and, for groups, reported); the engine is

@@ -22,6 +22,8 @@
 mod jsonl;
 mod kernel;
 pub mod line;
+// The planners' results written once into a slot (safe code).
+mod slot;
 mod velocity;
 
 pub use jsonl::plan_jsonl;
@@ -68,11 +70,17 @@ impl Limits {
         }
     }
 
-    /// [`Limits::validate`] as a bool (comparisons are false for NaN).
-    #[inline]
+    /// [`Limits::validate`] as a bool (comparisons are false for NaN). Floating-point
+    /// arithmetic, no branches: one sum of [`zero_if_finite`] tells whether all three are
+    /// finite.
+    #[inline(always)]
     pub(crate) fn is_valid(&self) -> bool {
-        let pos = |x: f64| x > 0.0 && x < f64::INFINITY;
-        pos(self.vmax) && pos(self.amax) && pos(self.dmax) && self.jmax >= 0.0
+        let (v, a, d) = (self.vmax, self.amax, self.dmax);
+        (zero_if_finite(v) + zero_if_finite(a) + zero_if_finite(d) == 0.0)
+            & (v > 0.0)
+            & (a > 0.0)
+            & (d > 0.0)
+            & (self.jmax >= 0.0)
     }
 }
 
@@ -286,17 +294,24 @@ impl Profile {
         snap: Option<(usize, f64)>,
     ) -> Profile {
         let mut prof = Profile::new(start);
-        prof.fill(items, trapezoidal, snap);
+        prof.fill(start, items, trapezoidal, snap);
         prof
     }
 
     /// [`Profile::build`] in place: `self` must be `Profile::new(start)` (entries past the
-    /// phase count stay zero, so that equal plans compare equal).
+    /// phase count stay zero, so that equal plans compare equal), `start` passed again.
     #[inline(always)]
-    fn fill(&mut self, items: &[(f64, f64)], trapezoidal: bool, snap: Option<(usize, f64)>) {
-        let start = self.start;
-        // The running state is kept in scalar locals (registers): the arrays are only
-        // written, never read back (no store-to-load forwarding stalls).
+    fn fill(
+        &mut self,
+        start: State,
+        items: &[(f64, f64)],
+        trapezoidal: bool,
+        snap: Option<(usize, f64)>,
+    ) {
+        // The running state is kept in scalar locals (registers), starting from the `start`
+        // argument: the profile is only written, never read back. (Reading `self.start`
+        // right after `Profile::new` stored it is a load spanning two stores, which cannot
+        // be forwarded and stalls the whole integration until the stores reach the cache.)
         let (mut p, mut v, mut a) = (start.p, start.v, start.a);
         let mut total = 0.0;
         let mut n = 0;
@@ -331,56 +346,153 @@ impl Profile {
         self.total = total;
     }
 
-    /// [`Profile::fill`] for a fast path's seven jerk phases, the fourth a cruise at whose
-    /// start the state is snapped to velocity `v_peak`, acceleration 0. Branch-free: which
-    /// phases are empty varies from problem to problem, so every item is written at the
-    /// next free slot and the slot only advances for a phase of positive duration (an
-    /// empty phase integrates over 0 s, which leaves the state bit for bit unchanged).
-    /// The one slot past the last phase that an empty item may have written is cleared.
+    /// A fast path's profile: seven jerk phases to the target (`target_p`, `target_v`,
+    /// acceleration 0), the fourth a cruise at velocity `fast.v_peak` from
+    /// `start.p + fast.d_cruise` to `target_p - fast.d_decel`. Built as one value, the
+    /// seven phases in the first seven slots (so that it is written straight into its
+    /// destination, without zeroing it first); `true` when every phase has a positive
+    /// duration, else the empty ones must be removed with [`Profile::compact`].
+    ///
+    /// No phase start waits for more than one integration step: the states at the start
+    /// and the end of the cruise and at the end are known, the phase after each of the
+    /// start and the cruise's end is integrated forward from it, the phase before the
+    /// cruise and the last phase backward from the state they reach (the profile of a
+    /// sampled cycle is the same to rounding; the end state is the target exactly). One
+    /// chain of seven integrations made the plan wait about 50 cycles for it. The phase
+    /// end times are summed in order.
     #[inline(always)]
-    fn fill_fast(&mut self, items: &[(f64, f64); 7], v_peak: f64) {
-        let start = self.start;
-        let (mut p, mut v, mut a) = (start.p, start.v, start.a);
-        let mut total = 0.0;
+    fn fast(start: State, fast: &velocity::Fast, target_p: f64, target_v: f64) -> (Profile, bool) {
+        let items = &fast.items;
+        let kept = items.map(|(d, _)| if d > 0.0 { d } else { 0.0 });
+        let jerk = items.map(|(_, j)| j);
+        let cruise = State {
+            p: start.p + fast.d_cruise,
+            v: fast.v_peak,
+            a: 0.0,
+        };
+        let decel = State {
+            p: target_p - fast.d_decel,
+            v: fast.v_peak,
+            a: 0.0,
+        };
+        let end = State {
+            p: target_p,
+            v: target_v,
+            a: 0.0,
+        };
+        let e0 = kept[0];
+        let e1 = e0 + kept[1];
+        let e2 = e1 + kept[2];
+        let e3 = e2 + kept[3];
+        let e4 = e3 + kept[4];
+        let e5 = e4 + kept[5];
+        let e6 = e5 + kept[6];
+        let ph = |k: usize| Phase {
+            duration: kept[k],
+            jerk: jerk[k],
+        };
+        let all = (kept[0] > 0.0)
+            & (kept[1] > 0.0)
+            & (kept[2] > 0.0)
+            & (kept[3] > 0.0)
+            & (kept[4] > 0.0)
+            & (kept[5] > 0.0)
+            & (kept[6] > 0.0);
+        let none = State::default();
+        let prof = Profile {
+            cursor: Cursor::default(),
+            total: e6,
+            count: 7,
+            ends: [e0, e1, e2, e3, e4, e5, e6, 0.0, 0.0],
+            starts: [
+                start,
+                start.integrate(kept[0], jerk[0]),
+                cruise.integrate(-kept[2], jerk[2]),
+                cruise,
+                decel,
+                decel.integrate(kept[4], jerk[4]),
+                end.integrate(-kept[6], jerk[6]),
+                none,
+                none,
+            ],
+            phases: [
+                ph(0),
+                ph(1),
+                ph(2),
+                ph(3),
+                ph(4),
+                ph(5),
+                ph(6),
+                Phase::default(),
+                Phase::default(),
+            ],
+            start,
+            last: end,
+        };
+        (prof, all)
+    }
+
+    /// Removes the phases of zero duration (moving the others down, clearing the slots
+    /// freed): the profile [`Profile::fast`] leaves when not every phase is needed.
+    #[inline(never)]
+    fn compact(&mut self) {
+        let count = self.count;
         let mut n = 0;
-        for (k, &(duration, jerk)) in items.iter().enumerate() {
-            if k == 3 {
-                v = v_peak;
-                a = 0.0;
+        for k in 0..count {
+            if self.phases[k].duration > 0.0 {
+                self.phases[n] = self.phases[k];
+                self.starts[n] = self.starts[k];
+                self.ends[n] = self.ends[k];
+                n += 1;
             }
-            let keep = duration > 0.0;
-            let t = if keep { duration } else { 0.0 };
-            // n <= k < 7 < MAX_PHASES.
-            self.phases[n] = Phase { duration: t, jerk };
-            self.starts[n] = State { p, v, a };
-            p += t * (v + t * (0.5 * a + t * jerk * (1.0 / 6.0)));
-            v += t * (a + 0.5 * t * jerk);
-            a += t * jerk;
-            total += t;
-            self.ends[n] = total;
-            n += keep as usize;
         }
-        self.phases[n] = Phase::default();
-        self.starts[n] = State::default();
-        self.ends[n] = 0.0;
+        for k in n..count {
+            self.phases[k] = Phase::default();
+            self.starts[k] = State::default();
+            self.ends[k] = 0.0;
+        }
         self.count = n;
-        self.last = State { p, v, a };
-        self.total = total;
     }
 
     /// Time-optimal profile from `start` to position `target_p` with velocity `target_v`
     /// and acceleration 0.
+    #[inline]
     pub fn position(
         start: State,
         target_p: f64,
         target_v: f64,
         lim: &Limits,
     ) -> Result<Profile, PlanError> {
-        check_inputs(&start, target_p, target_v, lim)?;
-        if let Some((items, v_peak)) = velocity::fast_path(start, target_p, target_v, lim) {
-            return Ok(Profile::fast(start, &items, v_peak));
+        slot::in_place(|out| Self::position_into(out, start, target_p, target_v, lim))
+    }
+
+    /// [`Profile::position`] written once into `out`, a slot the caller keeps and may reuse
+    /// from plan to plan (its previous value is dropped); returns the result in the slot.
+    /// This is the form for hot loops: the 552-byte result is not copied after it is built.
+    #[inline(always)]
+    pub fn position_into<'a>(
+        out: &'a mut Option<Result<Profile, PlanError>>,
+        start: State,
+        target_p: f64,
+        target_v: f64,
+        lim: &Limits,
+    ) -> &'a mut Result<Profile, PlanError> {
+        if let Err(e) = check_inputs(&start, target_p, target_v, lim) {
+            return out.insert(Err(e));
         }
-        Self::position_kernel(start, target_p, target_v, lim)
+        match velocity::fast_path(start, target_p, target_v, lim) {
+            Some(fast) => {
+                let (prof, all) = Profile::fast(start, &fast, target_p, target_v);
+                let r = out.insert(Ok(prof));
+                if !all {
+                    if let Ok(p) = r {
+                        p.compact();
+                    }
+                }
+                r
+            }
+            None => out.insert(Self::position_kernel(start, target_p, target_v, lim)),
+        }
     }
 
     /// The kernel's enumeration of every profile family (no fast path applies). Kept out
@@ -442,29 +554,6 @@ impl Profile {
             items[k] = (ph.duration, ph.jerk);
         }
         Ok(Profile::build(start, &items[..n], false, None))
-    }
-
-    /// The phases of [`Profile::position`] when a closed-form fast path applies (valid
-    /// inputs), for [`Profile::fast`]; `None` otherwise.
-    #[inline(always)]
-    pub(crate) fn position_fast(
-        start: State,
-        target_p: f64,
-        target_v: f64,
-        lim: &Limits,
-    ) -> Option<([(f64, f64); 7], f64)> {
-        if check_inputs(&start, target_p, target_v, lim).is_err() {
-            return None;
-        }
-        velocity::fast_path(start, target_p, target_v, lim)
-    }
-
-    /// A fast path's profile (see [`Profile::fill_fast`]).
-    #[inline(always)]
-    pub(crate) fn fast(start: State, items: &[(f64, f64); 7], v_peak: f64) -> Profile {
-        let mut prof = Profile::new(start);
-        prof.fill_fast(items, v_peak);
-        prof
     }
 
     /// Fallback for the rare start states where the kernel finds no profile (inherited from
@@ -551,7 +640,13 @@ impl Profile {
             },
         )?;
         let fastest = match velocity::fast_path(start, target_p, target_v, lim) {
-            Some((items, v_peak)) => Profile::fast(start, &items, v_peak),
+            Some(fast) => {
+                let (mut prof, all) = Profile::fast(start, &fast, target_p, target_v);
+                if !all {
+                    prof.compact();
+                }
+                prof
+            }
             None => sol.build(&block.p_min),
         };
         let minimal = fastest.duration();
@@ -765,24 +860,38 @@ impl Solved {
                 items[2 + i] = (k.t[i], s * k.j[i]);
             }
         }
-        out.fill(&items, self.trapezoidal, None);
+        out.fill(self.start, &items, self.trapezoidal, None);
     }
 }
 
+/// `x - x`: 0 for a finite `x`, NaN for an infinite or NaN one (a sum of these is 0
+/// exactly when every term is finite: one comparison, no branch per value).
+#[inline(always)]
+#[allow(clippy::eq_op)]
+pub(crate) fn zero_if_finite(x: f64) -> f64 {
+    x - x
+}
+
+#[inline(always)]
 fn check_inputs(
     start: &State,
     target_p: f64,
     target_v: f64,
     lim: &Limits,
 ) -> Result<(), PlanError> {
+    // One test for the valid case (see `Limits::is_valid`; |target_v| <= vmax is false
+    // for a NaN or infinite target_v once vmax is finite), then which error.
+    let (p, v, a) = (start.p, start.v, start.a);
+    let finite_state = zero_if_finite(p) + zero_if_finite(v) + zero_if_finite(a) == 0.0;
+    let finite_target = zero_if_finite(target_p) == 0.0;
+    if lim.is_valid() & finite_state & finite_target & (target_v.abs() <= lim.vmax) {
+        return Ok(());
+    }
     lim.validate()?;
-    if !(start.p.is_finite() && start.v.is_finite() && start.a.is_finite()) {
+    if !finite_state {
         return Err(PlanError::InvalidState);
     }
-    if !(target_p.is_finite() && target_v.is_finite() && target_v.abs() <= lim.vmax) {
-        return Err(PlanError::InvalidTarget { vmax: lim.vmax });
-    }
-    Ok(())
+    Err(PlanError::InvalidTarget { vmax: lim.vmax })
 }
 
 #[cfg(test)]
@@ -871,5 +980,246 @@ mod fallback_tests {
         );
         // The fallback is not time-optimal (ruckig 0.19.4: 2.5167 s), but close.
         assert!(d > 2.5167134 && d < 2.7, "{d}");
+    }
+}
+
+#[cfg(test)]
+mod check_tests {
+    use super::*;
+
+    /// The branch-free input check gives the error of the first bad input class (limits,
+    /// then start state, then target) for every field set to +-infinity or NaN, and
+    /// accepts the valid problem (jmax infinite or 0 included).
+    #[test]
+    fn every_non_finite_input_gives_its_error() {
+        let good = Limits {
+            vmax: 2.0,
+            amax: 3.0,
+            dmax: 4.0,
+            jmax: 5.0,
+        };
+        let st = State {
+            p: 1.0,
+            v: 0.5,
+            a: -0.5,
+        };
+        assert_eq!(check_inputs(&st, 3.0, 1.0, &good), Ok(()));
+        for jmax in [0.0, f64::INFINITY] {
+            assert_eq!(
+                check_inputs(&st, 3.0, 1.0, &Limits { jmax, ..good }),
+                Ok(())
+            );
+        }
+        for x in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+            for lim in [
+                Limits { vmax: x, ..good },
+                Limits { amax: x, ..good },
+                Limits { dmax: x, ..good },
+            ] {
+                // A bad start and target too: the limits' error comes first.
+                let bad_start = State { p: x, ..st };
+                assert_eq!(
+                    check_inputs(&bad_start, x, x, &lim),
+                    Err(PlanError::InvalidLimits)
+                );
+            }
+            // jmax: +infinity is valid (no jerk limit), -infinity and NaN are not.
+            if x != f64::INFINITY {
+                let lim = Limits { jmax: x, ..good };
+                assert_eq!(
+                    check_inputs(&st, 3.0, 1.0, &lim),
+                    Err(PlanError::InvalidLimits)
+                );
+            }
+            for bad in [
+                State { p: x, ..st },
+                State { v: x, ..st },
+                State { a: x, ..st },
+            ] {
+                assert_eq!(
+                    check_inputs(&bad, x, x, &good),
+                    Err(PlanError::InvalidState)
+                );
+            }
+            for (p1, v1) in [(x, 1.0), (3.0, x)] {
+                assert_eq!(
+                    check_inputs(&st, p1, v1, &good),
+                    Err(PlanError::InvalidTarget { vmax: 2.0 })
+                );
+            }
+        }
+        assert_eq!(
+            check_inputs(&st, 3.0, -2.5, &good),
+            Err(PlanError::InvalidTarget { vmax: 2.0 })
+        );
+        assert_eq!(
+            check_inputs(&st, 3.0, 0.0, &Limits { vmax: 0.0, ..good }),
+            Err(PlanError::InvalidLimits)
+        );
+    }
+}
+
+#[cfg(test)]
+mod fast_fill_tests {
+    use super::*;
+
+    /// A fast path's profile, whose phase starts are anchored at the start, the cruise's
+    /// two ends and the target: it ends exactly at the target, and each phase integrated
+    /// over its duration reaches the next phase's start (to rounding), for rest-to-rest
+    /// moves (cruising or not) and moves that cruise from a moving start.
+    #[test]
+    fn fast_profiles_end_at_the_target_and_are_continuous() {
+        let lim = Limits {
+            vmax: 40.0,
+            amax: 300.0,
+            dmax: 500.0,
+            jmax: 4000.0,
+        };
+        let sym = Limits { dmax: 300.0, ..lim };
+        let mut cases = vec![];
+        for (p0, p1) in [(0.0, 100.0), (3.0, -250.0), (1e4, 1e4 + 0.01), (-7.0, -5.0)] {
+            cases.push((
+                State {
+                    p: p0,
+                    v: 0.0,
+                    a: 0.0,
+                },
+                p1,
+                0.0,
+                sym,
+            ));
+        }
+        cases.push((
+            State {
+                p: 0.0,
+                v: 0.0,
+                a: 0.0,
+            },
+            500.0,
+            0.0,
+            lim,
+        ));
+        cases.push((
+            State {
+                p: 2.0,
+                v: 12.0,
+                a: 100.0,
+            },
+            300.0,
+            20.0,
+            lim,
+        ));
+        cases.push((
+            State {
+                p: -2.0,
+                v: 39.0,
+                a: -250.0,
+            },
+            -400.0,
+            -5.0,
+            lim,
+        ));
+        cases.push((
+            State {
+                p: 5.0,
+                v: -30.0,
+                a: 0.0,
+            },
+            900.0,
+            40.0,
+            lim,
+        ));
+        for (start, p1, v1, lim) in cases {
+            let fast = velocity::fast_path(start, p1, v1, &lim);
+            assert!(fast.is_some(), "{start:?} -> {p1}: no fast path");
+            let prof = Profile::position(start, p1, v1, &lim).unwrap();
+            assert_eq!(
+                prof.end(),
+                State {
+                    p: p1,
+                    v: v1,
+                    a: 0.0
+                },
+                "{start:?} -> {p1}"
+            );
+            let (ph, st) = (prof.phases(), prof.phase_starts());
+            assert_eq!(st[0], start);
+            let scale = p1.abs().max(start.p.abs()).max(1.0);
+            for i in 0..ph.len() {
+                let reached = st[i].integrate(ph[i].duration, ph[i].jerk);
+                let next = if i + 1 < ph.len() {
+                    st[i + 1]
+                } else {
+                    prof.end()
+                };
+                assert!(
+                    (reached.p - next.p).abs() <= 1e-12 * scale
+                        && (reached.v - next.v).abs() <= 1e-9 * lim.vmax
+                        && (reached.a - next.a).abs() <= 1e-9 * lim.amax,
+                    "{start:?} -> {p1}: phase {i} reaches {reached:?}, next {next:?}"
+                );
+            }
+        }
+    }
+
+    /// The phases of zero duration of a fast path's profile are removed: the others are
+    /// those of the generic build from the same items (durations and jerks exactly,
+    /// phase starts to rounding), and the freed slots are cleared (so that equal plans
+    /// compare equal and print alike).
+    #[test]
+    fn empty_phases_are_removed_and_their_slots_cleared() {
+        let lim = Limits {
+            vmax: 40.0,
+            amax: 300.0,
+            dmax: 300.0,
+            jmax: 4000.0,
+        };
+        // Short rest-to-rest moves (triangular ramps, no cruise: 4 phases), one with
+        // trapezoidal ramps and no cruise (6), and a cruise from a start at vmax (4).
+        let cases = [
+            (State::default(), 0.01, 0.0),
+            (
+                State {
+                    p: 1.0,
+                    ..State::default()
+                },
+                -2.0,
+                0.0,
+            ),
+            (State::default(), 6.0, 0.0),
+            (
+                State {
+                    p: 0.0,
+                    v: 40.0,
+                    a: 0.0,
+                },
+                300.0,
+                0.0,
+            ),
+        ];
+        for (start, p1, v1) in cases {
+            let fast = velocity::fast_path(start, p1, v1, &lim).expect("fast path");
+            let prof = Profile::position(start, p1, v1, &lim).unwrap();
+            let n = prof.phases().len();
+            assert!(n < 7, "{start:?} -> {p1}: {n} phases");
+            let items: Vec<(f64, f64)> = fast.items.to_vec();
+            let generic = Profile::build(start, &items, false, None);
+            assert_eq!(prof.phases(), generic.phases(), "{start:?} -> {p1}");
+            for (a, b) in prof.phase_starts().iter().zip(generic.phase_starts()) {
+                assert!(
+                    (a.p - b.p).abs() <= 1e-12 * (1.0 + p1.abs())
+                        && (a.v - b.v).abs() <= 1e-12 * lim.vmax
+                        && (a.a - b.a).abs() <= 1e-12 * lim.amax,
+                    "{a:?} vs {b:?}"
+                );
+            }
+            assert!(prof.ends[..n]
+                .iter()
+                .zip(&generic.ends[..n])
+                .all(|(a, b)| a == b));
+            assert!(prof.phases[n..].iter().all(|ph| *ph == Phase::default()));
+            assert!(prof.starts[n..].iter().all(|st| *st == State::default()));
+            assert!(prof.ends[n..].iter().all(|e| *e == 0.0));
+        }
     }
 }

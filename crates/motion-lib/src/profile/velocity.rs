@@ -8,7 +8,7 @@
 //! velocity interface with target acceleration 0), acceleration never leaves
 //! `[-a_lo, a_hi]` except to come back from a start acceleration beyond it.
 
-use super::{Limits, Profile, State};
+use super::{zero_if_finite, Limits, Profile, State};
 
 /// One velocity change: three pieces (duration, jerk; or duration, acceleration when
 /// trapezoidal), some possibly of zero duration, with the distance covered.
@@ -115,25 +115,46 @@ pub(crate) fn velocity_change(cur: State, vt: f64, lim: &Limits) -> Profile {
     Profile::build(cur, &items, j.is_infinite(), None)
 }
 
-/// Fast paths of [`Profile::position`]: phases (duration, jerk), the fourth being a
-/// cruise (possibly empty), and the signed peak velocity at its start. None when the
-/// problem needs the kernel's enumeration of every profile family.
+/// A fast path's profile: seven phases (duration, jerk), the fourth a cruise (possibly
+/// empty), with the state at the start of the cruise.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Fast {
+    /// The phases.
+    pub items: [(f64, f64); 7],
+    /// Signed velocity of the cruise.
+    pub v_peak: f64,
+    /// Signed distance from the start to the start of the cruise.
+    pub d_cruise: f64,
+    /// Signed distance from the end of the cruise to the target.
+    pub d_decel: f64,
+}
+
+impl Fast {
+    /// The same profile with positions (and so velocities, accelerations, jerks) scaled
+    /// by `k`, times unchanged: the profile of the target `k` times as far under limits
+    /// `k` times as high.
+    #[inline(always)]
+    pub(crate) fn scaled(&self, k: f64) -> Fast {
+        Fast {
+            items: self.items.map(|(t, j)| (t, j * k)),
+            v_peak: self.v_peak * k,
+            d_cruise: self.d_cruise * k,
+            d_decel: self.d_decel * k,
+        }
+    }
+}
+
+/// Fast paths of [`Profile::position`]. None when the problem needs the kernel's
+/// enumeration of every profile family.
 #[inline(always)]
-pub(crate) fn fast_path(
-    start: State,
-    target_p: f64,
-    target_v: f64,
-    lim: &Limits,
-) -> Option<([(f64, f64); 7], f64)> {
+pub(crate) fn fast_path(start: State, target_p: f64, target_v: f64, lim: &Limits) -> Option<Fast> {
     if lim.is_trapezoidal() {
         return None;
     }
     if start.v == 0.0 && start.a == 0.0 && target_v == 0.0 {
         return rest_to_rest(start, target_p, lim);
     }
-    let items = position_cruising(start, target_p, target_v, lim)?;
-    let s = if target_p >= start.p { 1.0 } else { -1.0 };
-    Some((items, s * lim.vmax))
+    position_cruising(start, target_p, target_v, lim)
 }
 
 /// Rest-to-rest move (v = a = 0 at both ends), in closed form: accelerate to a peak
@@ -146,7 +167,7 @@ pub(crate) fn fast_path(
 /// trapezoidal (a quadratic in `vp`); the mixed case (`amax != dmax`, a quartic) is left
 /// to the kernel. No loops, no iterations: a handful of divisions and at most one root.
 #[inline(always)]
-fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<([(f64, f64); 7], f64)> {
+fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<Fast> {
     let s = if target_p >= start.p { 1.0 } else { -1.0 };
     let dist = s * (target_p - start.p);
     let (vm, am, dm, j) = (lim.vmax, lim.amax, lim.dmax, lim.jmax);
@@ -191,7 +212,7 @@ fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<([(f64, f64
             (t1a, vp * inv_am - t1a, t1d, vp * inv_dm - t1d, vp, 0.0)
         }
     };
-    if !(vp > 0.0 && vp.is_finite()) {
+    if !(vp > 0.0 && zero_if_finite(vp) == 0.0) {
         return None;
     }
     let items = [
@@ -203,7 +224,14 @@ fn rest_to_rest(start: State, target_p: f64, lim: &Limits) -> Option<([(f64, f64
         (td2, 0.0),
         (td1, sj),
     ];
-    Some((items, s * vp))
+    // Each ramp is point-symmetric about its middle: it covers vp/2 x its duration
+    // 2 t1 + t2.
+    Some(Fast {
+        items,
+        v_peak: s * vp,
+        d_cruise: s * (0.5 * vp * (2.0 * ta1 + ta2)),
+        d_decel: s * (0.5 * vp * (2.0 * td1 + td2)),
+    })
 }
 
 /// Fast path of [`Profile::position`]: when the start is inside the limits and the
@@ -218,7 +246,7 @@ pub(crate) fn position_cruising(
     target_p: f64,
     target_v: f64,
     lim: &Limits,
-) -> Option<[(f64, f64); 7]> {
+) -> Option<Fast> {
     let s = if target_p >= start.p { 1.0 } else { -1.0 };
     let (v0, a0, vf, j) = (s * start.v, s * start.a, s * target_v, lim.jmax);
     let inv_j = 1.0 / j;
@@ -248,5 +276,10 @@ pub(crate) fn position_cruising(
         (c2.t[1], s * c2.x[1]),
         (c2.t[2], s * c2.x[2]),
     ];
-    Some(items)
+    Some(Fast {
+        items,
+        v_peak: s * lim.vmax,
+        d_cruise: s * c1.dist,
+        d_decel: s * c2.dist,
+    })
 }
