@@ -55,6 +55,12 @@ pub struct Index {
     pub globals: HashMap<String, TypeRef>,
     /// The members of each named global variable list (CODESYS GVL), by list, then member name.
     pub global_lists: HashMap<String, HashMap<String, TypeRef>>,
+    /// The ST lowering's view of the fields above ([`crate::st_body::declarations`]), built on first use
+    /// and shared by every body: building it per body cost bodies x POUs. The fields are complete before
+    /// any body is lowered.
+    pub(crate) st_declarations: std::cell::OnceCell<il_frontend::st::Declarations>,
+    /// The same with the SFC step and action flag types ([`crate::sfc::st_bridge::declarations`]).
+    pub(crate) sfc_declarations: std::cell::OnceCell<il_frontend::st::Declarations>,
 }
 
 /// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a
