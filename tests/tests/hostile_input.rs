@@ -946,3 +946,44 @@ fn a_file_of_5000_textual_sfc_charts_is_checked_and_located() {
     let out = run(&["check"], &[&src]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
 }
+
+#[test]
+fn a_parameter_given_twice_in_one_call_is_e1027() {
+    // found by the generator: 20,000 `a := x` in one call were accepted, and the first value won
+    let dir = tempfile::tempdir().unwrap();
+    let f = "FUNCTION f : INT\nVAR_INPUT a : INT; END_VAR\nf := a;\nEND_FUNCTION\n";
+    let src = write(
+        dir.path(),
+        "d.st",
+        &format!("{f}PROGRAM main\nVAR x : INT; t : TON; END_VAR\nx := f(a := 1, A := 2);\nt(IN := TRUE, PT := T#1s, in := FALSE);\nEND_PROGRAM\n"),
+    );
+    let out = run(&["check", "--message-format", "short"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(err.contains("d.st:7:16: error[E1027]"), "{err}");
+    assert!(err.contains("d.st:8:27: error[E1027]"), "{err}");
+    assert_eq!(err.matches("error[").count(), 2, "{err}");
+    let il = write(
+        dir.path(),
+        "d.il",
+        "FUNCTION f : INT\nVAR_INPUT a : INT; END_VAR\nLD a\nST f\nEND_FUNCTION\nPROGRAM main\nVAR x : INT; END_VAR\nf(a := 1, a := 2)\nST x\nEND_PROGRAM\n",
+    );
+    let out = run(&["check", "--message-format", "short"], &[&il]);
+    assert!(
+        stderr(&out).contains("d.il:8:11: error[E1027]"),
+        "{}",
+        stderr(&out)
+    );
+    // 20,000 of them: one report per repeat, the first 50 shown
+    let many = vec!["a := x"; 20_000].join(", ");
+    let src = write(
+        dir.path(),
+        "many.st",
+        &format!("{f}PROGRAM main\nVAR x : INT; END_VAR\nx := f({many});\nEND_PROGRAM\n"),
+    );
+    let out = run(&["check", "--message-format", "short"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert_eq!(err.matches("error[E1027]").count(), 50, "{}", &err[..2000]);
+    assert!(out.stderr.len() < 100_000);
+}
