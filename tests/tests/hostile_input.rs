@@ -987,3 +987,78 @@ fn a_parameter_given_twice_in_one_call_is_e1027() {
     assert_eq!(err.matches("error[E1027]").count(), 50, "{}", &err[..2000]);
     assert!(out.stderr.len() < 100_000);
 }
+
+#[test]
+fn distinct_initial_values_of_an_array_are_one_table_in_the_c_and_run() {
+    // found by the generator: 100,000 distinct initial values were 100,000 assignments in one INIT
+    // function, which cc -O2 did not compile in a minute
+    let vals: Vec<i64> = (0..150)
+        .map(|i| (i * 37) % 1000 - 500)
+        .chain(std::iter::repeat_n(7, 10))
+        .chain((0..90).map(|i| (i * 13) % 200))
+        .collect();
+    let md: Vec<i64> = (0..200).map(|i| (i * 7) % 100).collect();
+    let join = |v: &[i64]| {
+        v.iter()
+            .map(|x| x.to_string())
+            .collect::<Vec<_>>()
+            .join(",")
+    };
+    let reals: Vec<String> = (0..70).map(|i| format!("{i}.5")).collect();
+    let src = format!(
+        "PROGRAM main
+VAR v : ARRAY[0..249] OF DINT := [{}]; m : ARRAY[0..1, 0..99] OF INT := [{}];
+  r : ARRAY[1..70] OF REAL := [{}]; big : ARRAY[0..19999] OF DINT := [{}];
+  s : DINT; w : DINT; q : REAL; i : INT; j : INT; b : DINT; END_VAR
+s := 0; w := 0; q := 0.0;
+FOR i := 0 TO 249 DO s := s + v[i] * (i + 1); END_FOR;
+FOR i := 0 TO 1 DO FOR j := 0 TO 99 DO w := w + m[i, j] * (i * 100 + j + 1); END_FOR; END_FOR;
+FOR i := 1 TO 70 DO q := q + r[i]; END_FOR;
+b := big[19999] + big[12345];
+END_PROGRAM
+",
+        join(&vals),
+        join(&md),
+        reals.join(","),
+        (0..20_000)
+            .map(|i| (i * 3).to_string())
+            .collect::<Vec<_>>()
+            .join(",")
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = write(dir.path(), "tbl.st", &src);
+    let out = run(&["build", "-o"], &[&dir.path().join("out"), &file]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let c = std::fs::read_to_string(dir.path().join("out/program.c")).unwrap();
+    assert_eq!(
+        c.matches("static const IEC_DINT").count(),
+        3,
+        "v before and after its run, big"
+    );
+    assert!(
+        c.matches("self->v_big[").count() < 5,
+        "one copy loop for big"
+    );
+    let out = run(
+        &[
+            "run",
+            "--cycles",
+            "1",
+            "--watch",
+            "main.s,main.w,main.q,main.b",
+        ],
+        &[&file],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let s: i64 = vals
+        .iter()
+        .enumerate()
+        .map(|(i, v)| v * (i as i64 + 1))
+        .sum();
+    let w: i64 = md.iter().enumerate().map(|(i, v)| v * (i as i64 + 1)).sum();
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        trace.contains(&format!("0,0,{s},{w},2450,{}", 3 * 19999 + 3 * 12345)),
+        "{trace}"
+    );
+}
