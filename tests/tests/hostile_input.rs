@@ -1062,3 +1062,41 @@ END_PROGRAM
         "{trace}"
     );
 }
+
+#[test]
+fn a_drive_script_with_lone_cr_line_ends_builds_the_same_image() {
+    // before, the first `//` comment ran to the end of the file: "the script has no Motion block"
+    let lf = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../crates/drive-script/tests/scripts/three_motions.ds"),
+    )
+    .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let mut images = Vec::new();
+    for (name, text) in [("lf.ds", lf.clone()), ("cr.ds", lf.replace('\n', "\r"))] {
+        let src = write(dir.path(), name, &text);
+        let img = dir.path().join(format!("{name}.img"));
+        let out = ladderc()
+            .args(["drive", "build", "-o"])
+            .arg(&img)
+            .arg(&src)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{name}: {}", stderr(&out));
+        images.push(std::fs::read(&img).unwrap());
+    }
+    assert_eq!(images[0], images[1]);
+    // an error after lone-CR lines is located on its line
+    let bad = lf
+        .replacen("S:: P1 = 3;", "S:: P1 = 3 3;", 1)
+        .replace('\n', "\r");
+    let src = write(dir.path(), "bad.ds", &bad);
+    let out = ladderc()
+        .args(["drive", "build", "--message-format", "short", "-o"])
+        .arg(dir.path().join("bad.img"))
+        .arg(&src)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("bad.ds:5:"), "{}", stderr(&out));
+}
