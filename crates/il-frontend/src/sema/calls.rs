@@ -941,14 +941,14 @@ impl Body<'_, '_> {
         }
     }
 
-    /// E1027 for each formal parameter given again in one call (`f(a := 1, a := 2)`): IEC 61131-3 passes
-    /// each parameter at most once, and which value won was the generated code's accident.
+    /// E1027 for each input given again in one call (`f(a := 1, a := 2)`): which value won was the
+    /// generated code's accident. An output may be written to several variables (`Q => a, NOT Q => b`).
     fn duplicate_formals(&mut self, args: &CallArgs) {
         let CallArgs::Formal(fargs) = args else {
             return;
         };
         let mut seen: std::collections::HashMap<String, Span> = std::collections::HashMap::new();
-        for fa in fargs {
+        for fa in fargs.iter().filter(|fa| fa.dir == ArgDir::Input) {
             match seen.entry(fa.name.key()) {
                 std::collections::hash_map::Entry::Vacant(v) => {
                     v.insert(fa.name.span);
@@ -959,11 +959,11 @@ impl Body<'_, '_> {
                         .error(
                             code::E1027,
                             fa.name.span,
-                            format!("parameter `{}` is given twice in one call", fa.name.name),
+                            format!("input `{}` is given twice in one call", fa.name.name),
                         )
                         .label("given again")
                         .also(first, "first given here")
-                        .hint("pass each parameter once");
+                        .hint("pass each input once");
                 }
             }
         }
