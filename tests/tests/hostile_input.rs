@@ -64,15 +64,109 @@ fn nested_il(levels: usize) -> String {
 
 // ------------------------------------------------------------------------------ 1. depth and length
 
+/// One ST program `main` with `x : T` and `a : T := init` whose body is `x := expr;` (line 3).
+fn st_assign(ty: &str, init: &str, expr: &str) -> String {
+    format!(
+        "PROGRAM main\nVAR x : {ty}; a : {ty} := {init}; END_VAR\n  x := {expr};\nEND_PROGRAM\n"
+    )
+}
+
+/// Where the 1,001st operation starts in `expr`, as the 1-based column of line 3 of [`st_assign`].
+fn column_of_operation(expr: &str, op: &str, n: usize) -> usize {
+    let (i, _) = expr.match_indices(op).nth(n - 1).unwrap();
+    "  x := ".len() + i + 1
+}
+
 #[test]
-fn an_st_chain_of_100000_terms_builds() {
+fn an_expression_of_more_than_1000_operations_is_e0109_and_one_of_1000_runs() {
+    // cc -O2 is superlinear in one long function: 100,000 mixed DINT operators took over 4 minutes,
+    // 90,000 nested ABS calls over 2 (the C itself is linear, one line per operation)
     let dir = tempfile::tempdir().unwrap();
-    let chain = vec!["a"; 100_000].join(" + ");
-    let src = write(dir.path(), "chain.xml", &st(&format!("a := {chain};")));
-    let out = run(&["build", "-o"], &[&dir.path().join("out"), &src]);
+    let ops = ["+", "-", "*", "/", "MOD"];
+    let mixed: String = (0..100_000).fold(String::from("a"), |mut s, i| {
+        s.push_str(&format!(" {} a", ops[i % 5]));
+        s
+    });
+    let abs = format!("{}a{}", "ABS(".repeat(150), ")".repeat(150));
+    // (name, type, initial value, expression, the text before each operation, which of them is the
+    // 1,001st operation)
+    let cases = [
+        (
+            "plus",
+            "INT",
+            "1",
+            vec!["a"; 100_000].join(" + "),
+            " + ",
+            1001,
+        ),
+        (
+            "and",
+            "BOOL",
+            "TRUE",
+            vec!["a"; 100_000].join(" AND "),
+            " AND ",
+            1001,
+        ),
+        // every other space precedes an operator
+        ("mixed", "DINT", "1", mixed, " ", 2001),
+        // 150 calls and one `+` per term: the 1,001st operation is the 95th call of the 7th term
+        (
+            "calls",
+            "INT",
+            "1",
+            vec![abs.as_str(); 600].join(" + "),
+            "ABS(",
+            6 * 150 + 95,
+        ),
+    ];
+    for (name, ty, init, expr, op, n) in cases {
+        let src = write(
+            dir.path(),
+            &format!("{name}.st"),
+            &st_assign(ty, init, &expr),
+        );
+        let out = run(&["check", "--message-format", "short"], &[&src]);
+        assert_eq!(out.status.code(), Some(1), "{name}");
+        let err = stderr(&out);
+        let col = column_of_operation(&expr, op, n) + usize::from(op.starts_with(' '));
+        assert!(
+            err.contains(&format!("{name}.st:3:{col}: error[E0109]")),
+            "{name}: {err}"
+        );
+        assert_eq!(err.matches("error[").count(), 1, "{name}: {err}");
+    }
+    // array indexes count: 600 `v[0]` and 599 `+`, the 1,001st operation is the 501st `[`
+    let expr = vec!["v[0]"; 600].join(" + ");
+    let src = write(
+        dir.path(),
+        "index.st",
+        &format!("PROGRAM main\nVAR x : INT; v : ARRAY[0..1] OF INT; END_VAR\n  x := {expr};\nEND_PROGRAM\n"),
+    );
+    let out = run(&["check", "--message-format", "short"], &[&src]);
+    let col = column_of_operation(&expr, "[", 501);
+    assert!(
+        stderr(&out).contains(&format!("index.st:3:{col}: error[E0109]")),
+        "{}",
+        stderr(&out)
+    );
+    // at the cap: 1,000 additions build and run (x = 1,001)
+    let src = write(
+        dir.path(),
+        "cap.st",
+        &st_assign("INT", "1", &vec!["a"; 1001].join(" + ")),
+    );
+    let out = run(&["run", "--cycles", "1", "--watch", "main.x"], &[&src]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
-    let c = std::fs::read_to_string(dir.path().join("out/program.c")).unwrap();
-    assert!(c.matches("self->v_a").count() >= 100_000);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("0,0,1001"));
+    // an XML <expression> is the same ST expression: the cap holds there too
+    let xml = write(
+        dir.path(),
+        "e.xml",
+        &st(&format!("a := {};", vec!["a"; 5000].join(" + "))),
+    );
+    let out = run(&["check", "--message-format", "short"], &[&xml]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("error[E0109]"), "{}", stderr(&out));
 }
 
 #[test]
@@ -703,4 +797,307 @@ END_PROGRAM
     assert!(err.contains("rl.st:3:8: error[E1017]"), "{err}");
     assert!(err.contains("rl.st:4:8: error[E1017]"), "{err}");
     assert_eq!(err.matches("error[").count(), 2, "{err}");
+}
+
+#[test]
+fn untyped_real_literals_beyond_real_are_e1017_in_st_il_and_xml() {
+    let dir = tempfile::tempdir().unwrap();
+    let st_src = write(
+        dir.path(),
+        "u.st",
+        "PROGRAM main
+VAR r : REAL; l : LREAL; q : REAL := -1.0E39; END_VAR
+  r := 1.0E300;
+  l := 1.0E300;
+  r := 3.0E38;
+  l := -3.5E38;
+END_PROGRAM
+",
+    );
+    let out = run(&["check", "--message-format", "short"], &[&st_src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(err.contains("u.st:2:38: error[E1017]"), "{err}");
+    assert!(err.contains("u.st:3:8: error[E1017]"), "{err}");
+    assert_eq!(err.matches("error[").count(), 2, "{err}");
+
+    let il = write(
+        dir.path(),
+        "u.il",
+        "PROGRAM main\nVAR r : REAL; l : LREAL; END_VAR\nLD 1.0E300\nST l\nLD 1.0E300\nST r\nEND_PROGRAM\n",
+    );
+    let out = run(&["check", "--message-format", "short"], &[&il]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(err.contains("u.il:5:4: error[E1017]"), "{err}");
+    assert_eq!(err.matches("error[").count(), 1, "{err}");
+
+    // an FBD <inVariable> expression feeding a REAL
+    let fbd = r#"<FBD>
+<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>1.0E300</expression></inVariable>
+<outVariable localId="2"><position x="0" y="0"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><expression>r</expression></outVariable>
+</FBD>"#;
+    let xml = write(dir.path(), "u.xml", &project(fbd));
+    let out = run(&["check", "--message-format", "short"], &[&xml]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("error[E1017]"), "{}", stderr(&out));
+    let xml = write(dir.path(), "s.xml", &st("r := 1.0E300;"));
+    let out = run(&["check", "--message-format", "short"], &[&xml]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("error[E1017]"), "{}", stderr(&out));
+
+    // in range, the value reaches the trace
+    let ok = write(
+        dir.path(),
+        "ok.st",
+        "PROGRAM main\nVAR r : REAL; l : LREAL; END_VAR\n  r := 3.0E38;\n  l := 1.0E300;\nEND_PROGRAM\n",
+    );
+    let out = run(
+        &["run", "--cycles", "1", "--watch", "main.r,main.l"],
+        &[&ok],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert!(!trace.to_ascii_lowercase().contains("inf"), "{trace}");
+}
+
+#[test]
+fn lone_cr_crlf_and_lf_line_ends_each_count_one_line_in_every_format() {
+    // line 1 ends in \r, line 2 in \r\n, line 3 in \n, lines 4 and 5 (a comment) in \r: `y` is on line 6
+    let text =
+        "PROGRAM main\rVAR x : INT; END_VAR\r\n  x := 1;\n  (* c\r *)\r  y := 2;\rEND_PROGRAM\r";
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["cr.st", "cr.il"] {
+        let body = if name.ends_with(".il") {
+            text.replace("  x := 1;", "LD 1")
+                .replace("  y := 2;", "ST y")
+        } else {
+            text.to_string()
+        };
+        let src = write(dir.path(), name, &body);
+        let (col, end) = if name.ends_with(".il") {
+            (4, 5)
+        } else {
+            (3, 4)
+        };
+        let out = run(&["check", "--message-format", "short"], &[&src]);
+        assert_eq!(out.status.code(), Some(1));
+        let err = stderr(&out);
+        assert!(
+            err.contains(&format!("{name}:6:{col}: error[E1001]")),
+            "{name}: {err}"
+        );
+        assert_eq!(err.matches("error[").count(), 1, "{name}: {err}");
+        let out = run(&["check"], &[&src]);
+        let err = stderr(&out);
+        assert!(err.contains(&format!("{name}:6:{col}")), "{err}");
+        assert!(err.contains("6 │ "), "the excerpt shows line 6: {err}");
+        let out = run(&["check", "--message-format", "json"], &[&src]);
+        let first: serde_json::Value =
+            serde_json::from_str(stderr(&out).lines().next().unwrap()).unwrap();
+        assert_eq!(first["line"], 6, "{first}");
+        assert_eq!(first["column"], col, "{first}");
+        assert_eq!(first["end_line"], 6, "{first}");
+        assert_eq!(first["end_column"], end, "{first}");
+    }
+    // the IL with lone CR line ends is read line by line: it runs
+    let il = write(
+        dir.path(),
+        "run.il",
+        "PROGRAM main\rVAR x : INT; END_VAR\r// note\rLD 2 (* a\r b *)\rADD 3\rST x\rEND_PROGRAM\r",
+    );
+    let out = run(&["run", "--cycles", "1", "--watch", "main.x"], &[&il]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("0,0,5"));
+}
+
+#[test]
+fn a_file_of_5000_textual_sfc_charts_is_checked_and_located() {
+    // each chart was lowered from a copy of the file padded to its offset, and with the project's
+    // declarations rebuilt per chart: charts x file size
+    let mut text = String::new();
+    let n = 5000;
+    for i in 0..n {
+        let back = if i == n - 1 { "Bx" } else { "Off" };
+        text.push_str(&format!(
+            "FUNCTION_BLOCK Blink{i}\n  VAR_OUTPUT q : BOOL; END_VAR\n  INITIAL_STEP Off: END_STEP\n  \
+             TRANSITION FROM Off TO On := Off.T >= T#20ms; END_TRANSITION\n  STEP On: q(N); END_STEP\n  \
+             TRANSITION FROM On TO {back} := On.T >= T#20ms; END_TRANSITION\nEND_FUNCTION_BLOCK\n"
+        ));
+    }
+    text.push_str(
+        "PROGRAM Main\n  VAR b : Blink0; out : BOOL; END_VAR\n  b();\n  out := b.q;\nEND_PROGRAM\n",
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let src = write(dir.path(), "charts.st", &text);
+    let out = run(&["check", "--message-format", "short"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    // the last chart's bad step, at its line: 7 lines per chart
+    let line = 7 * (n - 1) + 6;
+    assert!(
+        err.contains(&format!("charts.st:{line}:25: error[E3120]")),
+        "{err}"
+    );
+    assert_eq!(err.matches("error[").count(), 1, "{err}");
+    // fixed, the whole file passes
+    let fixed = text.replace("TO Bx", "TO Off");
+    let src = write(dir.path(), "charts.st", &fixed);
+    let out = run(&["check"], &[&src]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+}
+
+#[test]
+fn an_input_given_twice_in_one_call_is_e1027() {
+    // found by the generator: 20,000 `a := x` in one call were accepted, and the first value won
+    let dir = tempfile::tempdir().unwrap();
+    let f = "FUNCTION f : INT\nVAR_INPUT a : INT; END_VAR\nf := a;\nEND_FUNCTION\n";
+    let src = write(
+        dir.path(),
+        "d.st",
+        &format!("{f}PROGRAM main\nVAR x : INT; t : TON; q : BOOL; n : BOOL; END_VAR\nx := f(a := 1, A := 2);\nt(IN := TRUE, PT := T#1s, in := FALSE, Q => q, Q => n);\nEND_PROGRAM\n"),
+    );
+    let out = run(&["check", "--message-format", "short"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(err.contains("d.st:7:16: error[E1028]"), "{err}");
+    assert!(err.contains("d.st:8:27: error[E1028]"), "{err}");
+    // an output may go to two variables
+    assert_eq!(err.matches("error[").count(), 2, "{err}");
+    let il = write(
+        dir.path(),
+        "d.il",
+        "FUNCTION f : INT\nVAR_INPUT a : INT; END_VAR\nLD a\nST f\nEND_FUNCTION\nPROGRAM main\nVAR x : INT; END_VAR\nf(a := 1, a := 2)\nST x\nEND_PROGRAM\n",
+    );
+    let out = run(&["check", "--message-format", "short"], &[&il]);
+    assert!(
+        stderr(&out).contains("d.il:8:11: error[E1028]"),
+        "{}",
+        stderr(&out)
+    );
+    // 20,000 of them: one report per repeat, the first 50 shown
+    let many = vec!["a := x"; 20_000].join(", ");
+    let src = write(
+        dir.path(),
+        "many.st",
+        &format!("{f}PROGRAM main\nVAR x : INT; END_VAR\nx := f({many});\nEND_PROGRAM\n"),
+    );
+    let out = run(&["check", "--message-format", "short"], &[&src]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert_eq!(err.matches("error[E1028]").count(), 50, "{}", &err[..2000]);
+    assert!(out.stderr.len() < 100_000);
+}
+
+#[test]
+fn distinct_initial_values_of_an_array_are_one_table_in_the_c_and_run() {
+    // found by the generator: 100,000 distinct initial values were 100,000 assignments in one INIT
+    // function, which cc -O2 did not compile in a minute
+    let vals: Vec<i64> = (0..150)
+        .map(|i| (i * 37) % 1000 - 500)
+        .chain(std::iter::repeat_n(7, 10))
+        .chain((0..90).map(|i| (i * 13) % 200))
+        .collect();
+    let md: Vec<i64> = (0..200).map(|i| (i * 7) % 100).collect();
+    let join = |v: &[i64]| {
+        v.iter()
+            .map(|x| x.to_string())
+            .collect::<Vec<_>>()
+            .join(",")
+    };
+    let reals: Vec<String> = (0..70).map(|i| format!("{i}.5")).collect();
+    let src = format!(
+        "PROGRAM main
+VAR v : ARRAY[0..249] OF DINT := [{}]; m : ARRAY[0..1, 0..99] OF INT := [{}];
+  r : ARRAY[1..70] OF REAL := [{}]; big : ARRAY[0..19999] OF DINT := [{}];
+  s : DINT; w : DINT; q : REAL; i : INT; j : INT; b : DINT; END_VAR
+s := 0; w := 0; q := 0.0;
+FOR i := 0 TO 249 DO s := s + v[i] * (i + 1); END_FOR;
+FOR i := 0 TO 1 DO FOR j := 0 TO 99 DO w := w + m[i, j] * (i * 100 + j + 1); END_FOR; END_FOR;
+FOR i := 1 TO 70 DO q := q + r[i]; END_FOR;
+b := big[19999] + big[12345];
+END_PROGRAM
+",
+        join(&vals),
+        join(&md),
+        reals.join(","),
+        (0..20_000)
+            .map(|i| (i * 3).to_string())
+            .collect::<Vec<_>>()
+            .join(",")
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = write(dir.path(), "tbl.st", &src);
+    let out = run(&["build", "-o"], &[&dir.path().join("out"), &file]);
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let c = std::fs::read_to_string(dir.path().join("out/program.c")).unwrap();
+    assert_eq!(
+        c.matches("static const IEC_DINT").count(),
+        3,
+        "v before and after its run, big"
+    );
+    assert!(
+        c.matches("self->v_big[").count() < 5,
+        "one copy loop for big"
+    );
+    let out = run(
+        &[
+            "run",
+            "--cycles",
+            "1",
+            "--watch",
+            "main.s,main.w,main.q,main.b",
+        ],
+        &[&file],
+    );
+    assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
+    let s: i64 = vals
+        .iter()
+        .enumerate()
+        .map(|(i, v)| v * (i as i64 + 1))
+        .sum();
+    let w: i64 = md.iter().enumerate().map(|(i, v)| v * (i as i64 + 1)).sum();
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        trace.contains(&format!("0,0,{s},{w},2450,{}", 3 * 19999 + 3 * 12345)),
+        "{trace}"
+    );
+}
+
+#[test]
+fn a_drive_script_with_lone_cr_line_ends_builds_the_same_image() {
+    // before, the first `//` comment ran to the end of the file: "the script has no Motion block"
+    let lf = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../crates/drive-script/tests/scripts/three_motions.ds"),
+    )
+    .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let mut images = Vec::new();
+    for (name, text) in [("lf.ds", lf.clone()), ("cr.ds", lf.replace('\n', "\r"))] {
+        let src = write(dir.path(), name, &text);
+        let img = dir.path().join(format!("{name}.img"));
+        let out = ladderc()
+            .args(["drive", "build", "-o"])
+            .arg(&img)
+            .arg(&src)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{name}: {}", stderr(&out));
+        images.push(std::fs::read(&img).unwrap());
+    }
+    assert_eq!(images[0], images[1]);
+    // an error after lone-CR lines is located on its line
+    let bad = lf
+        .replacen("S:: P1 = 3;", "S:: P1 = 3 3;", 1)
+        .replace('\n', "\r");
+    let src = write(dir.path(), "bad.ds", &bad);
+    let out = ladderc()
+        .args(["drive", "build", "--message-format", "short", "-o"])
+        .arg(dir.path().join("bad.img"))
+        .arg(&src)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr(&out).contains("bad.ds:5:"), "{}", stderr(&out));
 }

@@ -257,3 +257,46 @@ fn plcopen_block_inputs_in_hover_and_completion() {
     c.notify("exit", json!(null));
     assert!(c.child.wait().unwrap().success());
 }
+
+#[test]
+fn lone_cr_and_crlf_line_ends_are_lines_as_in_the_cli() {
+    // LSP counts `\n`, `\r\n` and a lone `\r` as line ends; so do ladderc's diagnostics
+    let text = "PROGRAM main\rVAR\r\n    count : INT;\r    limit : INT := 10;\nEND_VAR\r    LD count\r    ADD 1\r\n    ST cuont\r    GT limit\rEND_PROGRAM\r";
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cr.il");
+    std::fs::write(&path, text).unwrap();
+    let uri = format!("file://{}", path.display());
+    let mut c = Client::start(dir.path());
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": uri, "languageId": "iec-il", "version": 1, "text": text}}),
+    );
+    let d = c.diagnostics();
+    let list = d["diagnostics"].as_array().unwrap();
+    assert_eq!(list.len(), 1, "{d}");
+    assert_eq!(list[0]["range"]["start"]["line"], 7, "`ST cuont` is line 8");
+    assert_eq!(list[0]["range"]["start"]["character"], 7);
+    // the command line says the same, 1-based
+    let out = common::ladderc()
+        .args(["check", "--message-format", "short"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("cr.il:8:8: error["),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // hover and definition across the lone-CR lines
+    let pos = json!({"textDocument": {"uri": uri}, "position": {"line": 5, "character": 8}});
+    let h = c.request("textDocument/hover", pos.clone());
+    let md = h["contents"]["value"].as_str().unwrap();
+    assert!(md.contains("**count** : `INT`"), "{md}");
+    let def = c.request("textDocument/definition", pos);
+    assert_eq!(def["range"]["start"]["line"], 2, "{def}");
+    assert_eq!(def["range"]["start"]["character"], 4, "{def}");
+    let r = c.request("shutdown", json!(null));
+    assert_eq!(r, json!(null));
+    c.notify("exit", json!(null));
+    assert!(c.child.wait().unwrap().success());
+}

@@ -20,8 +20,7 @@ impl SourceFile {
     /// A file and its line table.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> Self {
         let text = text.into();
-        let mut line_starts = vec![0];
-        line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        let line_starts = line_starts(&text);
         SourceFile {
             name: name.into(),
             text,
@@ -67,6 +66,20 @@ impl SourceFile {
     }
 }
 
+/// The byte offset of each line's start in `text`: `\n`, `\r\n` and a lone `\r` (old Mac OS) each end
+/// one line, as in the language server protocol. Every diagnostic format and the language server count
+/// lines with this one table.
+pub fn line_starts(text: &str) -> Vec<usize> {
+    let b = text.as_bytes();
+    let mut starts = vec![0];
+    for (i, &c) in b.iter().enumerate() {
+        if c == b'\n' || (c == b'\r' && b.get(i + 1) != Some(&b'\n')) {
+            starts.push(i + 1);
+        }
+    }
+    starts
+}
+
 /// All files of one compilation; a [`FileId`] indexes into it.
 #[derive(Debug, Default, Clone)]
 pub struct SourceMap {
@@ -105,5 +118,19 @@ impl SourceMap {
             .iter()
             .enumerate()
             .map(|(i, f)| (FileId(i as u32), f))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lf_crlf_and_a_lone_cr_each_end_one_line() {
+        assert_eq!(line_starts("a\nb\r\nc\rd\r"), [0, 2, 5, 7, 9]);
+        let f = SourceFile::new("x", "a\rb\r\nc");
+        assert_eq!(f.line_col(2), (2, 1));
+        assert_eq!(f.line_col(5), (3, 1));
+        assert_eq!(f.offset_of(3, 1), 5);
     }
 }

@@ -56,7 +56,7 @@ pub fn lex(text: &str) -> Vec<Token> {
             continue;
         }
         if c == b'/' && bytes.get(i + 1) == Some(&b'/') {
-            while i < bytes.len() && bytes[i] != b'\n' {
+            while i < bytes.len() && !matches!(bytes[i], b'\n' | b'\r') {
                 i += 1;
             }
             continue;

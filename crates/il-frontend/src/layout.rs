@@ -578,7 +578,7 @@ impl<'s> Layout<'s> {
         let rest = self.lex.remainder().as_bytes();
         let blanks = rest
             .iter()
-            .take_while(|b| matches!(b, b' ' | b'\t' | b'\r' | 0x0c))
+            .take_while(|b| matches!(b, b' ' | b'\t' | 0x0c))
             .count();
         match rest.get(blanks) {
             Some(b'(') if rest.get(blanks + 1) != Some(&b'*') => {}
@@ -602,7 +602,7 @@ impl<'s> Layout<'s> {
     /// `; text` in an instruction list: reported, skipped to the end of the line.
     fn semicolon_comment(&mut self, s: usize) {
         let rest = self.lex.remainder();
-        let n = rest.find('\n').unwrap_or(rest.len());
+        let n = rest.find(['\n', '\r']).unwrap_or(rest.len());
         self.lex.bump(n);
         let end = s + 1 + rest[..n].trim_end().len();
         self.diags.push(
@@ -759,7 +759,7 @@ mod tests {
         };
         for src in [
             "MOD(IN1 := a, IN2 := b)\n",
-            "MOD \t\r(IN1 := a, IN2 := b)\n",
+            "MOD \t\u{c}(IN1 := a, IN2 := b)\r\n",
             "MOD (\n IN1 := a, IN2 := b)\n",
             "MOD\u{feff}(IN1 => a)\n",
         ] {
@@ -770,6 +770,8 @@ mod tests {
             "MOD (* c *) b\n",
             "MOD // c\n",
             "MOD(\n LD b\n)\n",
+            // a lone \r ends the line (old Mac OS line ends)
+            "MOD \t\r(IN1 := a, IN2 := b)\n",
             "MOD",
         ] {
             assert_eq!(word_of_mod(src), Some(Word::Mod), "{src:?}");

@@ -46,16 +46,17 @@ pub enum TimeValue {
 #[derive(Logos, Debug, Clone, PartialEq)]
 #[logos(error = LexError)]
 #[logos(extras = Vec<LexWarning>)]
-#[logos(skip r"[ \t\r\f\u{FEFF}]+")]
+#[logos(skip r"[ \t\f\u{FEFF}]+")]
 pub enum RawToken {
-    /// A line end (IL instructions are line-delimited).
-    #[token("\n")]
+    /// A line end (IL instructions are line-delimited): `\n`, `\r\n` or a lone `\r` (old Mac OS), the
+    /// line ends diagnostics count ([`diagnostics::line_starts`]).
+    #[regex(r"\r\n|\r|\n")]
     Newline,
     /// A `(* *)` comment; `true` when it spans lines: then it ends the line like a newline does.
     #[token("(*", block_comment)]
     Comment(bool),
     /// `// ...` to the end of the line (skipped; an extension most tools accept).
-    #[regex(r"//[^\n]*", logos::skip, allow_greedy = true)]
+    #[regex(r"//[^\r\n]*", logos::skip, allow_greedy = true)]
     LineComment,
     /// A word: identifier or keyword, classified later by [`classify`].
     #[regex(r"[A-Za-z_][A-Za-z0-9_]*")]
@@ -169,7 +170,7 @@ pub(crate) enum CommentEnd {
 /// its line.
 pub(crate) fn comment_rest(rest: &str) -> (usize, CommentEnd) {
     if rest.starts_with("DBG:") {
-        let line = rest.find('\n').unwrap_or(rest.len());
+        let line = rest.find(['\n', '\r']).unwrap_or(rest.len());
         let text = rest[..line].trim_end();
         if text.ends_with("*)") {
             return (text.len(), CommentEnd::Closed { newline: false });
@@ -192,7 +193,7 @@ pub(crate) fn comment_rest(rest: &str) -> (usize, CommentEnd) {
                     return (i, CommentEnd::Closed { newline });
                 }
             }
-            (b'\n', _) => {
+            (b'\n' | b'\r', _) => {
                 newline = true;
                 i += 1;
             }
@@ -215,12 +216,12 @@ pub(crate) fn string_rest(
     let mut i = 0;
     while i < bytes.len() {
         match bytes[i] {
-            b'$' if i + 1 < bytes.len() && bytes[i + 1] != b'\n' => {
+            b'$' if i + 1 < bytes.len() && !matches!(bytes[i + 1], b'\n' | b'\r') => {
                 // Skip the escaped character (may be multi-byte UTF-8).
                 let ch_len = rest[i + 1..].chars().next().map_or(1, char::len_utf8);
                 i += 1 + ch_len;
             }
-            b'\n' => break,
+            b'\n' | b'\r' => break,
             c if c == quote => {
                 let (value, errors) = literal::unescape(&rest[..i], wide);
                 for (s, e, why) in errors {

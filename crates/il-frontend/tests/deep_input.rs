@@ -30,7 +30,10 @@ fn chain(n: usize, op: &str, var: &str) -> (usize, String) {
 #[test]
 fn a_chain_of_100000_additions_lowers_to_flat_il() {
     let (lines, diags) = on_small_stack(|| chain(100_000, " + ", "a"));
-    assert_eq!(diags, "", "a well-typed chain has no diagnostics");
+    // well typed, but longer than one expression may be (1,000 operations, for the C compiler's sake):
+    // one E0109, and the chain is still read and lowered in full
+    assert_eq!(diags.lines().count(), 1, "{diags}");
+    assert!(diags.contains("error[E0109]"), "{diags}");
     // LD a, 99,999 x ADD a, ST a, plus the POU's frame
     assert!(lines > 100_000 && lines < 100_020, "{lines} lines of IL");
 }

@@ -58,6 +58,12 @@ pub struct Index {
     /// Derived types that nothing in the file defines (upper-case names), each already reported
     /// once (E3009, with every use): a block of such a type is not reported again.
     pub missing_types: HashSet<String>,
+    /// The ST lowering's view of the fields above ([`crate::st_body::declarations`]), built on first use
+    /// and shared by every body: building it per body cost bodies x POUs. The fields are complete before
+    /// any body is lowered.
+    pub(crate) st_declarations: std::cell::OnceCell<il_frontend::st::Declarations>,
+    /// The same with the SFC step and action flag types ([`crate::sfc::st_bridge::declarations`]).
+    pub(crate) sfc_declarations: std::cell::OnceCell<il_frontend::st::Declarations>,
 }
 
 /// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a

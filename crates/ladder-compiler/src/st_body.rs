@@ -12,8 +12,15 @@ use diagnostics::{Diagnostics, XmlContext};
 use il_frontend::ast::{Ident, IlStmt, Pou, VarBlock};
 use il_frontend::st::{Declarations, PouInterface};
 
-/// What the ST lowering needs to know about the project: data types, POU interfaces, globals.
-pub fn declarations(index: &Index) -> Declarations {
+/// What the ST lowering needs to know about the project: data types, POU interfaces, globals. Built once
+/// per index.
+pub fn declarations(index: &Index) -> &Declarations {
+    index
+        .st_declarations
+        .get_or_init(|| build_declarations(index))
+}
+
+fn build_declarations(index: &Index) -> Declarations {
     let mut d = Declarations::new();
     for t in index.types.values() {
         d.add_type(t.clone());
@@ -61,7 +68,7 @@ pub fn lower(
         })
         .collect();
     let out = il_frontend::st::compile_body_with_actions(
-        ctx.file, &t.text, t.base, &decls, pou, &actions, span, &mut local,
+        ctx.file, &t.text, t.base, decls, pou, &actions, span, &mut local,
     );
     for d in local {
         let d = if d.xml.is_none() {

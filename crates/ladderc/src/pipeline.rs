@@ -334,7 +334,7 @@ impl Session {
             }
         }
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
-        lower_textual_sfc(&mut units, &pending, &mut self.diags);
+        lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         units
     }
 
@@ -687,6 +687,7 @@ impl Session {
 fn lower_textual_sfc(
     units: &mut [CompilationUnit],
     pending: &[il_frontend::st::file::PendingBody],
+    map: &diagnostics::SourceMap,
     diags: &mut diagnostics::Diagnostics,
 ) {
     use il_frontend::ast::{LibraryElement, VarBlock, VarKind};
@@ -694,37 +695,44 @@ fn lower_textual_sfc(
         return;
     }
     let index = ladder_compiler::sfc::text::index_of_units(units);
-    for pb in pending.iter().filter(|pb| pb.sfc) {
-        // the body at its offset in the file: spans of the lowered code point into the file
-        let mut src = " ".repeat(pb.base);
-        src.push_str(&pb.text);
-        for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
-            let LibraryElement::Pou(p) = item else {
-                continue;
-            };
-            if p.name.span.file != pb.file || p.name.span.start as usize != pb.name_start {
-                continue;
-            }
-            let (body, hidden) = ladder_compiler::sfc::text::lower(
-                pb.file,
-                &src,
-                pb.base..src.len(),
-                p,
-                &index,
-                diags,
-            );
-            p.body = body;
-            if !hidden.is_empty() {
-                let span = diagnostics::Span::new(pb.file, pb.base, pb.base);
-                p.var_blocks.push(VarBlock {
-                    name: None,
-                    kind: VarKind::Local,
-                    constant: false,
-                    retain: false,
-                    vars: hidden,
-                    span,
-                });
-            }
+    // each chart's POU by (file, offset of its name): one look-up per chart, not a scan of every POU
+    let mut charts: std::collections::HashMap<(diagnostics::FileId, usize), usize> = pending
+        .iter()
+        .enumerate()
+        .filter(|(_, pb)| pb.sfc)
+        .map(|(k, pb)| ((pb.file, pb.name_start), k))
+        .collect();
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        let LibraryElement::Pou(p) = item else {
+            continue;
+        };
+        let Some(k) = charts.remove(&(p.name.span.file, p.name.span.start as usize)) else {
+            continue;
+        };
+        let pb = &pending[k];
+        // the body in its file's text: spans of the lowered code point into the file, and nothing is
+        // copied per chart (a copy padded to the body's offset cost charts x file size)
+        let src = map.get(pb.file).text.as_str();
+        let body = pb.base..pb.base + pb.text.len();
+        let (body, hidden) = if src.get(body.clone()) == Some(pb.text.as_str()) {
+            ladder_compiler::sfc::text::lower(pb.file, src, body, p, &index, diags)
+        } else {
+            // a body that is not its file's text (parse_text never gives one): padded to its offset
+            let mut padded = " ".repeat(pb.base);
+            padded.push_str(&pb.text);
+            ladder_compiler::sfc::text::lower(pb.file, &padded, body, p, &index, diags)
+        };
+        p.body = body;
+        if !hidden.is_empty() {
+            let span = diagnostics::Span::new(pb.file, pb.base, pb.base);
+            p.var_blocks.push(VarBlock {
+                name: None,
+                kind: VarKind::Local,
+                constant: false,
+                retain: false,
+                vars: hidden,
+                span,
+            });
         }
     }
 }

@@ -15,6 +15,12 @@ use std::fmt::Write as _;
 /// A run of at least this many equal initial values in an array is written as one loop.
 const INIT_LOOP_RUN: usize = 8;
 
+/// At least this many initial values in a row, of an array of an elementary type, that are not in a run
+/// are written as one `static const` table and one copy loop. C compilers are superlinear in the length
+/// of one function: 100,000 assignments in an INIT function did not compile in a minute; a table
+/// compiles in linear time.
+const INIT_TABLE_MIN: usize = 64;
+
 impl Gen<'_> {
     /// Whether a zeroed value of `ty` differs from its IEC default.
     pub fn needs_default_init(&self, ty: &Type) -> bool {
@@ -136,22 +142,46 @@ impl Gen<'_> {
                     // Equal values in a row (`[2000000(7)]`) become one loop over their row-major
                     // positions, so that the C stays proportional to the distinct runs, not to the
                     // array's length.
+                    // row-major index expression of position `r` (a C expression) in the array
+                    let element_at = |r: &str| {
+                        let mut el = lv.to_string();
+                        let mut stride: u128 = 1;
+                        let mut subs = Vec::new();
+                        for len in lens.iter().rev() {
+                            subs.push(format!("[({r} / {stride}u) % {len}u]"));
+                            stride = stride.saturating_mul(*len);
+                        }
+                        for sub in subs.iter().rev() {
+                            el.push_str(sub);
+                        }
+                        el
+                    };
+                    // values not in a run, waiting to be written: from position `single_from`
+                    let mut single_from = 0;
                     let mut k = 0;
-                    while k < elems.len() {
-                        let v = &elems[k];
-                        let run = elems[k..].iter().take_while(|x| *x == v).count();
+                    while k <= elems.len() {
+                        let run = elems
+                            .get(k)
+                            .map_or(0, |v| elems[k..].iter().take_while(|x| *x == v).count());
+                        if run >= INIT_LOOP_RUN || k == elems.len() {
+                            self.init_singles(
+                                out,
+                                indent,
+                                lv,
+                                &lens,
+                                element,
+                                single_from,
+                                &elems[single_from..k],
+                                span,
+                            );
+                        }
+                        if k == elems.len() {
+                            break;
+                        }
                         if run >= INIT_LOOP_RUN {
+                            let v = &elems[k];
                             let r = format!("r_{indent}");
-                            let mut el = lv.to_string();
-                            let mut stride: u128 = 1;
-                            let mut subs = Vec::new();
-                            for len in lens.iter().rev() {
-                                subs.push(format!("[({r} / {stride}u) % {len}u]"));
-                                stride = stride.saturating_mul(*len);
-                            }
-                            for sub in subs.iter().rev() {
-                                el.push_str(sub);
-                            }
+                            let el = element_at(&r);
                             let _ = writeln!(out, "{pad}{{");
                             let _ = writeln!(out, "{pad}    size_t {r};");
                             let _ = writeln!(
@@ -163,21 +193,7 @@ impl Gen<'_> {
                             self.init_value(&mut inner, indent + 2, &el, element, Some(v), span);
                             let _ = writeln!(out, "{pad}    {{\n{inner}{pad}    }}");
                             let _ = writeln!(out, "{pad}}}");
-                        } else {
-                            for (j, v) in elems[k..k + run].iter().enumerate() {
-                                // row-major index decomposition
-                                let mut rest = (k + j) as u128;
-                                let mut el = lv.to_string();
-                                let mut idx = vec![0u128; lens.len()];
-                                for (d, len) in lens.iter().enumerate().rev() {
-                                    idx[d] = rest % len;
-                                    rest /= len;
-                                }
-                                for i in &idx {
-                                    let _ = write!(el, "[{i}]");
-                                }
-                                self.init_value(out, indent, &el, element, Some(v), span);
-                            }
+                            single_from = k + run;
                         }
                         k += run;
                     }
@@ -239,6 +255,80 @@ impl Gen<'_> {
                     None => {}
                 }
             }
+        }
+    }
+}
+
+impl Gen<'_> {
+    /// The initial values `values` of array `lv` (dimensions `lens`) from row-major position `from`, none
+    /// of them in a run: one assignment each, or for [`INIT_TABLE_MIN`] or more of an elementary type, one
+    /// `static const` table and one copy loop.
+    #[allow(clippy::too_many_arguments)]
+    fn init_singles(
+        &mut self,
+        out: &mut String,
+        indent: usize,
+        lv: &str,
+        lens: &[u128],
+        element: &Type,
+        from: usize,
+        values: &[ConstValue],
+        span: Span,
+    ) {
+        let pad = "    ".repeat(indent);
+        let table: Option<Vec<String>> = match element {
+            Type::Elementary(e) if values.len() >= INIT_TABLE_MIN => values
+                .iter()
+                .map(|v| ctypes::const_elementary(self.model, *e, v))
+                .collect(),
+            _ => None,
+        };
+        if let (Some(table), Type::Elementary(e)) = (table, element) {
+            let (r, t) = (format!("r_{indent}"), format!("t_{indent}"));
+            let mut el = lv.to_string();
+            let mut stride: u128 = 1;
+            let mut subs = Vec::new();
+            for len in lens.iter().rev() {
+                subs.push(format!("[({r} / {stride}u) % {len}u]"));
+                stride = stride.saturating_mul(*len);
+            }
+            for sub in subs.iter().rev() {
+                el.push_str(sub);
+            }
+            let _ = writeln!(out, "{pad}{{");
+            let _ = writeln!(
+                out,
+                "{pad}    static const {} {t}[{}] = {{",
+                ctypes::elementary(*e),
+                table.len()
+            );
+            for chunk in table.chunks(8) {
+                let _ = writeln!(out, "{pad}        {},", chunk.join(", "));
+            }
+            let _ = writeln!(out, "{pad}    }};");
+            let _ = writeln!(out, "{pad}    size_t {r};");
+            let _ = writeln!(
+                out,
+                "{pad}    for ({r} = {from}u; {r} < {}u; {r}++)",
+                from + table.len()
+            );
+            let _ = writeln!(out, "{pad}        {el} = {t}[{r} - {from}u];");
+            let _ = writeln!(out, "{pad}}}");
+            return;
+        }
+        for (j, v) in values.iter().enumerate() {
+            // row-major index decomposition
+            let mut rest = (from + j) as u128;
+            let mut el = lv.to_string();
+            let mut idx = vec![0u128; lens.len()];
+            for (d, len) in lens.iter().enumerate().rev() {
+                idx[d] = rest % len;
+                rest /= len;
+            }
+            for i in &idx {
+                let _ = write!(el, "[{i}]");
+            }
+            self.init_value(out, indent, &el, element, Some(v), span);
         }
     }
 }

@@ -296,6 +296,7 @@ impl Body<'_, '_> {
         st: &mut State,
         rec: &mut Rec,
     ) {
+        self.duplicate_formals(args);
         let formal = via_cal || matches!(args, CallArgs::Formal(_));
         let user_fn = self
             .a
@@ -854,6 +855,7 @@ impl Body<'_, '_> {
             Type::Fb(fb) => {
                 rec.callee = Some(Callee::FbInstance { fb, input: None });
                 rec.operand = Some(Ty::Known(Type::Fb(fb)));
+                self.duplicate_formals(args);
                 self.fb_args(fb, args, rec);
             }
             Type::Error => self.args_unchecked(args),
@@ -937,6 +939,34 @@ impl Body<'_, '_> {
             CallArgs::Formal(fargs) => {
                 for (k, fa) in fargs.iter().enumerate() {
                     self.formal_arg(k, fa, &tname, &params, rec);
+                }
+            }
+        }
+    }
+
+    /// E1028 for each input given again in one call (`f(a := 1, a := 2)`): which value won was the
+    /// generated code's accident. An output may be written to several variables (`Q => a, NOT Q => b`).
+    fn duplicate_formals(&mut self, args: &CallArgs) {
+        let CallArgs::Formal(fargs) = args else {
+            return;
+        };
+        let mut seen: std::collections::HashMap<String, Span> = std::collections::HashMap::new();
+        for fa in fargs.iter().filter(|fa| fa.dir == ArgDir::Input) {
+            match seen.entry(fa.name.key()) {
+                std::collections::hash_map::Entry::Vacant(v) => {
+                    v.insert(fa.name.span);
+                }
+                std::collections::hash_map::Entry::Occupied(o) => {
+                    let first = *o.get();
+                    self.a
+                        .error(
+                            code::E1028,
+                            fa.name.span,
+                            format!("input `{}` is given twice in one call", fa.name.name),
+                        )
+                        .label("given again")
+                        .also(first, "first given here")
+                        .hint("pass each input once");
                 }
             }
         }

@@ -1124,7 +1124,19 @@ impl Analyzer<'_> {
                         }
                         Err(FitError::Kind) => false,
                     },
-                    LitType::Real => literal_fits(0, 0, true, ty).is_ok(),
+                    LitType::Real(v) if !super::typing::real_fits(v.abs(), ty) => {
+                        self.error(
+                            code::E1017,
+                            lit.span,
+                            format!("initial value {v:E} is beyond the range of {tn}"),
+                        )
+                        .label("out of range")
+                        .hint(format!(
+                            "{tn} holds magnitudes up to 3.4028235E38; write a smaller value or use LREAL"
+                        ));
+                        return None;
+                    }
+                    LitType::Real(_) => literal_fits(0, 0, true, ty).is_ok(),
                 };
                 if !ok {
                     self.error(

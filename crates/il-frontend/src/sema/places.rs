@@ -68,7 +68,7 @@ impl Body<'_, '_> {
         match literal_type(l) {
             Ok(LitType::Known(t)) => Ty::Known(t),
             Ok(LitType::Int(v)) => Ty::Lit(self.lits.new_int(v, l.span)),
-            Ok(LitType::Real) => Ty::Lit(self.lits.new_real(l.span)),
+            Ok(LitType::Real(v)) => Ty::Lit(self.lits.new_real(v, l.span)),
             Err(e) => {
                 self.a
                     .error(code::E1017, l.span, e.message)
@@ -279,6 +279,20 @@ impl Body<'_, '_> {
                         )
                         .label(format!("used as {t}"))
                         .hint(format!("{range}; use a wider type or a value in range"));
+                    false
+                }
+                Err(BindError::RealRange { span }) => {
+                    let t = self.a.type_name(to);
+                    self.a
+                        .error(
+                            code::E1017,
+                            span,
+                            format!("real literal beyond the range of {t}"),
+                        )
+                        .label(format!("used as {t}"))
+                        .hint(format!(
+                            "{t} holds magnitudes up to 3.4028235E38; write a smaller value or use LREAL"
+                        ));
                     false
                 }
                 Err(BindError::Kind { .. }) => {

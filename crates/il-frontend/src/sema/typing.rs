@@ -93,8 +93,8 @@ pub enum LitType {
     Known(Type),
     /// An untyped integer literal with its value.
     Int(i128),
-    /// An untyped real literal.
-    Real,
+    /// An untyped real literal, with its value.
+    Real(f64),
 }
 
 /// A problem with a typed literal.
@@ -152,7 +152,7 @@ pub fn literal_type(lit: &Literal) -> Result<LitType, LitError> {
                 ),
             })
         }
-        (LiteralKind::Real(_), None) => Ok(LitType::Real),
+        (LiteralKind::Real(v), None) => Ok(LitType::Real(*v)),
         (LiteralKind::Real(_), Some((_, Some(e)))) if e.is_real() => {
             Ok(LitType::Known(Type::Elementary(e)))
         }
@@ -293,6 +293,15 @@ struct LitInfo {
     /// The literals holding the smallest and the largest value, for diagnostics.
     min_span: Span,
     max_span: Span,
+    /// The largest magnitude of the class's real literals (0 without any) and the literal holding it.
+    real_max: f64,
+    real_span: Span,
+}
+
+/// Whether a real value of magnitude `magnitude` fits `ty` without becoming an infinity: every value
+/// fits LREAL (the literal parser already rejects the rest), REAL holds up to 3.4028235E38.
+pub fn real_fits(magnitude: f64, ty: &Type) -> bool {
+    ty.elementary() != Some(E::Real) || magnitude <= f64::from(f32::MAX)
 }
 
 /// Result of trying to fix a literal variable's type.
@@ -301,6 +310,11 @@ pub enum BindError {
     /// literal for a string ...).
     Kind {
         /// One of the literals of the class.
+        span: Span,
+    },
+    /// A real literal of the class is beyond REAL's range (`1.0E300` for a REAL).
+    RealRange {
+        /// The literal.
         span: Span,
     },
     /// A literal of the class does not fit the type's range (`300` for a SINT).
@@ -322,10 +336,12 @@ impl LitVars {
             bound: None,
             min_span: span,
             max_span: span,
+            real_max: 0.0,
+            real_span: span,
         })
     }
-    /// A new variable for an untyped real literal at `span`; returns its index.
-    pub fn new_real(&mut self, span: Span) -> usize {
+    /// A new variable for an untyped real literal of value `v` at `span`; returns its index.
+    pub fn new_real(&mut self, v: f64, span: Span) -> usize {
         self.push(LitInfo {
             min: 0,
             max: 0,
@@ -333,6 +349,8 @@ impl LitVars {
             bound: None,
             min_span: span,
             max_span: span,
+            real_max: v.abs(),
+            real_span: span,
         })
     }
     fn push(&mut self, i: LitInfo) -> usize {
@@ -375,6 +393,9 @@ impl LitVars {
                 Err(BindError::Kind { span: i.min_span })
             };
         }
+        if !real_fits(i.real_max, ty) {
+            return Err(BindError::RealRange { span: i.real_span });
+        }
         match literal_fits(i.min, i.max, i.real, ty) {
             Ok(()) => {
                 self.info[r].bound = Some(ty.clone());
@@ -408,6 +429,10 @@ impl LitVars {
             ia.max_span = ib.max_span;
         }
         ia.real |= ib.real;
+        if ib.real_max > ia.real_max {
+            ia.real_max = ib.real_max;
+            ia.real_span = ib.real_span;
+        }
         if ia.bound.is_none() {
             ia.bound = ib.bound;
         }

@@ -321,7 +321,7 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
         let next_same_line = next.filter(|nt| {
             !src.get(t.range.end..nt.range.start)
                 .unwrap_or("\n")
-                .contains('\n')
+                .contains(['\n', '\r'])
         });
         if line_start {
             let line_end_semi = {
@@ -330,7 +330,7 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                     && !src
                         .get(toks[m].range.end..toks[m + 1].range.start)
                         .unwrap_or("\n")
-                        .contains('\n')
+                        .contains(['\n', '\r'])
                 {
                     m += 1;
                 }
@@ -621,7 +621,7 @@ fn trim_span(src: &str, span: Span) -> Span {
     let part = src.get(s..e).unwrap_or("");
     let lead = part.len() - part.trim_start().len();
     let rest = &part[lead..];
-    let line = rest.split('\n').next().unwrap_or("").trim_end();
+    let line = rest.split(['\n', '\r']).next().unwrap_or("").trim_end();
     Span::new(span.file, s + lead, s + lead + line.len())
 }
 

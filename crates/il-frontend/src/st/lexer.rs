@@ -24,7 +24,7 @@ enum Raw {
     // Comments and pragmas are tokens that `lex` drops, not logos skips: logos restarts after a
     // skip by a call that debug builds do not turn into a loop, so a long run of comments would
     // overflow the stack.
-    #[regex(r"//[^\n]*", allow_greedy = true)]
+    #[regex(r"//[^\r\n]*", allow_greedy = true)]
     LineComment,
     #[regex(r"[A-Za-z_][A-Za-z0-9_]*")]
     Word,

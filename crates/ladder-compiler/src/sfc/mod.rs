@@ -126,7 +126,7 @@ pub fn lower_chart<'e, 'a>(
     let decls = st_bridge::declarations(index, pou.span);
     let step_names: Vec<String> = chart.steps.iter().map(|s| s.name.clone()).collect();
     let action_names: Vec<String> = acts.iter().filter_map(|a| a.name.clone()).collect();
-    let st = st_bridge::StLowering::new(&decls, pou, &step_names, &action_names);
+    let st = st_bridge::StLowering::new(decls, pou, &step_names, &action_names);
     let mut snippets = Snippets::new(index, pou, st);
 
     // Step flags first (the initial ones start TRUE).

@@ -40,9 +40,16 @@ pub enum Delivered {
 const STEP_TYPE: &str = "__SFC_STEP";
 const ACTION_TYPE: &str = "__SFC_ACTION";
 
-/// The declarations the ST lowering needs: the project's, plus the step and action flag types.
-pub fn declarations(index: &Index, file_span: Span) -> Declarations {
-    let mut d = crate::st_body::declarations(index);
+/// The declarations the ST lowering needs: the project's, plus the step and action flag types (declared
+/// at `file_span`, the span of the first chart that asks). Built once per index.
+pub fn declarations(index: &Index, file_span: Span) -> &Declarations {
+    index
+        .sfc_declarations
+        .get_or_init(|| build_declarations(index, file_span))
+}
+
+fn build_declarations(index: &Index, file_span: Span) -> Declarations {
+    let mut d = crate::st_body::declarations(index).clone();
     let field = |n: &str, t: &str| {
         VarDecl::new(
             Ident::new(n, file_span),

@@ -317,7 +317,7 @@ impl Analysis {
     /// `CAL inst(` of a PLCopen block, its inputs as `Name :=`; otherwise the variables in scope.
     pub fn completion(&self, offset: usize) -> Vec<(String, String)> {
         let offset = offset.min(self.text.len());
-        let line_start = self.text[..offset].rfind('\n').map_or(0, |i| i + 1);
+        let line_start = self.text[..offset].rfind(['\n', '\r']).map_or(0, |i| i + 1);
         let line = &self.text[line_start..offset];
         let pou = self.pou_at(offset);
         let scope: Vec<&Variable> = pou

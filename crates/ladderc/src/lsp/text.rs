@@ -6,22 +6,36 @@
 
 use std::path::{Path, PathBuf};
 
-/// Byte offset of an LSP position (`character` counts UTF-16 code units).
+/// Byte offset of an LSP position (`character` counts UTF-16 code units). Lines end at `\n`, `\r\n` or
+/// a lone `\r`, as the protocol says (and as [`diagnostics::line_starts`] counts them).
 pub fn offset(text: &str, line: u32, character: u32) -> usize {
-    let mut start = 0usize;
-    for _ in 0..line {
-        match text[start..].find('\n') {
-            Some(i) => start += i + 1,
-            None => return text.len(),
-        }
-    }
-    let end = text[start..].find('\n').map_or(text.len(), |i| start + i);
+    let starts = diagnostics::line_starts(text);
+    let Some(&start) = starts.get(line as usize) else {
+        return text.len();
+    };
+    let end = line_end(text, &starts, line as usize);
     let mut units = 0u32;
     for (i, c) in text[start..end].char_indices() {
         if units >= character {
             return start + i;
         }
         units += c.len_utf16() as u32;
+    }
+    end
+}
+
+/// The end of line `line` (before its line end) in `text` whose line starts are `starts`.
+fn line_end(text: &str, starts: &[usize], line: usize) -> usize {
+    let Some(&next) = starts.get(line + 1) else {
+        return text.len();
+    };
+    let b = text.as_bytes();
+    let mut end = next;
+    if end > starts[line] && b[end - 1] == b'\n' {
+        end -= 1;
+    }
+    if end > starts[line] && b[end - 1] == b'\r' {
+        end -= 1;
     }
     end
 }
@@ -42,9 +56,10 @@ pub struct LineIndex<'a> {
 impl<'a> LineIndex<'a> {
     /// The index of `text`'s line starts.
     pub fn new(text: &'a str) -> Self {
-        let mut starts = vec![0];
-        starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
-        LineIndex { text, starts }
+        LineIndex {
+            text,
+            starts: diagnostics::line_starts(text),
+        }
     }
 
     /// [`position`] of `offset`, the same answer.
@@ -103,6 +118,19 @@ pub fn path_to_uri(path: &Path) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn lone_cr_and_crlf_end_lines_as_the_protocol_says() {
+        let text = "a\rbc\r\nd\ne\r";
+        assert_eq!(offset(text, 1, 0), 2);
+        assert_eq!(offset(text, 1, 9), 4, "clamped before the \\r\\n");
+        assert_eq!(offset(text, 2, 0), 6);
+        assert_eq!(offset(text, 3, 1), 9, "clamped before the lone \\r");
+        assert_eq!(offset(text, 4, 0), text.len());
+        assert_eq!(position(text, 3), (1, 1));
+        assert_eq!(position(text, 8), (3, 0));
+        assert_eq!(position(text, text.len()), (4, 0));
+    }
 
     #[test]
     fn utf16_columns_round_trip() {
