@@ -368,7 +368,7 @@ pub enum FbType {
 }
 
 /// A resolved type.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub enum Type {
     /// `BOOL`, `INT`, `TIME` ...
     Elementary(Elementary),
@@ -408,7 +408,7 @@ pub enum Type {
 }
 
 /// One array dimension `lower..upper` (inclusive).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub struct Dim {
     /// The first index (inclusive).
     pub lower: i128,
@@ -849,7 +849,7 @@ pub enum ProgramArgValue {
 }
 
 /// What an instruction calls.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub enum Callee {
     /// A standard function (`ADD`, `SEL`, `LIMIT` ...) or a simple operator mapped onto one (the operator
     /// `ADD x` is `Std { name: "ADD", ty: INT, .. }`); `ty` is the type the generic parameters were
@@ -891,7 +891,7 @@ pub enum Callee {
 }
 
 /// How a type conversion function converts (IEC 61131-3 2.5.1.5.1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum ConversionKind {
     /// `INT_TO_REAL`, `REAL_TO_INT` (rounds to nearest, IEC), `DINT_TO_INT` (truncates bits) ...
     Plain,
@@ -904,7 +904,7 @@ pub enum ConversionKind {
 }
 
 /// Where a call argument's value comes from.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub enum ArgSource {
     /// The current result (first input of a function called as an IL operator).
     CurrentResult,
@@ -913,7 +913,7 @@ pub enum ArgSource {
 }
 
 /// One call argument bound to its formal parameter.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub struct ArgBinding {
     /// The formal parameter's canonical name (`IN`, `MN`, `IN0` ...).
     pub param: String,
@@ -955,6 +955,93 @@ pub struct InstrInfo {
     pub callee: Option<Callee>,
     /// Call arguments bound to parameters, in evaluation order (function calls, `CAL` with arguments).
     pub args: Vec<ArgBinding>,
+}
+
+impl InstrInfo {
+    /// The span and the facts (everything else).
+    pub fn split(self) -> (Span, InstrFacts) {
+        let InstrInfo {
+            span,
+            cr_before,
+            cr_after,
+            operand,
+            callee,
+            args,
+        } = self;
+        (
+            span,
+            InstrFacts {
+                cr_before,
+                cr_after,
+                operand,
+                callee,
+                args,
+            },
+        )
+    }
+}
+
+/// What sema knows about an instruction apart from its span: the fields of [`InstrInfo`] but `span`.
+/// Shared by all the instructions with equal facts ([`InstrTable`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
+pub struct InstrFacts {
+    /// See [`InstrInfo::cr_before`].
+    pub cr_before: Option<Type>,
+    /// See [`InstrInfo::cr_after`].
+    pub cr_after: Option<Type>,
+    /// See [`InstrInfo::operand`].
+    pub operand: Option<Type>,
+    /// See [`InstrInfo::callee`].
+    pub callee: Option<Callee>,
+    /// See [`InstrInfo::args`].
+    pub args: Vec<ArgBinding>,
+}
+
+/// One instruction's info as [`Model::instrs`] gives it: its span and its (shared) facts. It derefs to
+/// the facts, so `info.cr_after` and `info.callee` read as on an [`InstrInfo`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InstrRef<'m> {
+    /// The instruction's span (for messages and tools; not unique).
+    pub span: Span,
+    /// Everything else sema knows about it.
+    pub facts: &'m InstrFacts,
+}
+
+impl std::ops::Deref for InstrRef<'_> {
+    type Target = InstrFacts;
+    fn deref(&self) -> &InstrFacts {
+        self.facts
+    }
+}
+
+impl InstrRef<'_> {
+    /// An owned copy, as sema recorded it.
+    pub fn to_info(&self) -> InstrInfo {
+        let f = self.facts.clone();
+        InstrInfo {
+            span: self.span,
+            cr_before: f.cr_before,
+            cr_after: f.cr_after,
+            operand: f.operand,
+            callee: f.callee,
+            args: f.args,
+        }
+    }
+}
+
+/// Serialised as the [`InstrInfo`] it stands for (same fields, same order).
+impl Serialize for InstrRef<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("InstrInfo", 6)?;
+        st.serialize_field("span", &self.span)?;
+        st.serialize_field("cr_before", &self.facts.cr_before)?;
+        st.serialize_field("cr_after", &self.facts.cr_after)?;
+        st.serialize_field("operand", &self.facts.operand)?;
+        st.serialize_field("callee", &self.facts.callee)?;
+        st.serialize_field("args", &self.facts.args)?;
+        st.end()
+    }
 }
 
 /// What a name used in a body refers to (`Model::names[&var_ref.base.span]`).
@@ -1005,8 +1092,86 @@ pub struct Model {
     pub names: SpanTable<NameRef>,
 }
 
-/// The instruction infos by identity ([`KeyTable`]).
-pub type InstrTable = KeyTable<InstrId, InstrInfo>;
+/// The instruction infos by identity. Each instruction stores its identity, its span and the index of
+/// its [`InstrFacts`] (24 bytes); the facts themselves are stored once per distinct value (a program has
+/// few: `BOOL` before and after, an `INT` addition ...), so the table grows by 24 bytes per instruction
+/// instead of the size of a whole [`InstrInfo`] (232 bytes).
+/// Invariants: `pool[ix[f]] == f` for every pooled facts value `f`; every entry's index is below
+/// `facts.len()`.
+#[derive(Debug, Clone, Default)]
+pub struct InstrTable {
+    entries: KeyTable<InstrId, (Span, u32)>,
+    facts: Vec<InstrFacts>,
+    pool: FxHashMap<InstrFacts, u32>,
+}
+
+impl InstrTable {
+    /// Stores the info of instruction `id` (a second insert under `id` replaces it).
+    pub fn insert(&mut self, id: InstrId, info: InstrInfo) {
+        let (span, facts) = info.split();
+        let ix = match self.pool.get(&facts) {
+            Some(&ix) => ix,
+            None => {
+                let ix = self.facts.len() as u32;
+                self.facts.push(facts.clone());
+                self.pool.insert(facts, ix);
+                ix
+            }
+        };
+        self.entries.insert(id, (span, ix));
+    }
+    fn view(&self, &(span, ix): &(Span, u32)) -> InstrRef<'_> {
+        InstrRef {
+            span,
+            facts: &self.facts[ix as usize],
+        }
+    }
+    /// The info of instruction `id`.
+    pub fn get(&self, id: &InstrId) -> Option<InstrRef<'_>> {
+        self.entries.get(id).map(|e| self.view(e))
+    }
+    /// The info of `id` and its position, trying position `hint` first ([`KeyTable::get_near`]).
+    pub fn get_near(&self, id: InstrId, hint: usize) -> Option<(usize, InstrRef<'_>)> {
+        self.entries
+            .get_near(id, hint)
+            .map(|(at, e)| (at, self.view(e)))
+    }
+    /// Makes room for `additional` more instructions.
+    pub fn reserve(&mut self, additional: usize) {
+        self.entries.reserve(additional);
+    }
+    /// The number of instructions.
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+    /// Whether the table is empty.
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+    /// Whether instruction `id` has an info.
+    pub fn contains_key(&self, id: &InstrId) -> bool {
+        self.entries.contains_key(id)
+    }
+    /// The instructions and their infos, in insertion order.
+    pub fn iter(&self) -> impl Iterator<Item = (&InstrId, InstrRef<'_>)> {
+        self.entries.iter().map(|(id, e)| (id, self.view(e)))
+    }
+    /// The infos in insertion order.
+    pub fn values(&self) -> impl Iterator<Item = InstrRef<'_>> {
+        self.entries.values().map(|e| self.view(e))
+    }
+    /// The number of distinct [`InstrFacts`] stored.
+    pub fn distinct_facts(&self) -> usize {
+        self.facts.len()
+    }
+}
+
+/// Serialised as a map from instruction id to [`InstrInfo`], as before the facts were shared.
+impl Serialize for InstrTable {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_map(self.iter())
+    }
+}
 
 /// A map keyed by span ([`KeyTable`]).
 pub type SpanTable<V> = KeyTable<Span, V>;
@@ -1177,11 +1342,11 @@ impl Model {
             .map(|i| TypeId(i as u32))
     }
     /// The info of an instruction of the analysed units.
-    pub fn instr(&self, instruction: &crate::ast::Instruction) -> Option<&InstrInfo> {
+    pub fn instr(&self, instruction: &crate::ast::Instruction) -> Option<InstrRef<'_>> {
         self.instrs.get(&InstrId::of(instruction))
     }
     /// The info of an instruction by its identity (see [`Pou::instrs`]).
-    pub fn instr_by_id(&self, id: InstrId) -> Option<&InstrInfo> {
+    pub fn instr_by_id(&self, id: InstrId) -> Option<InstrRef<'_>> {
         self.instrs.get(&id)
     }
     /// A global by reference.
