@@ -633,7 +633,11 @@ impl<'a> Gen<'a> {
         if let Some(o) = operand {
             // the implicit LD that starts the nested list, typed as the first instruction expects
             let first = body.iter().find_map(|s| match s {
-                IlStmt::Instr(i) => self.model.instr(i).and_then(|x| x.cr_before.clone()),
+                IlStmt::Instr(i) => self
+                    .model
+                    .instrs
+                    .get_near(InstrId::of(i), self.instr_cursor)
+                    .and_then(|(_, x)| x.cr_before.clone()),
                 _ => None,
             });
             let ty = first

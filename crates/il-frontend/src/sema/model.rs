@@ -1096,17 +1096,25 @@ pub struct Model {
 /// its [`InstrFacts`] (24 bytes); the facts themselves are stored once per distinct value (a program has
 /// few: `BOOL` before and after, an `INT` addition ...), so the table grows by 24 bytes per instruction
 /// instead of the size of a whole [`InstrInfo`] (232 bytes).
-/// Invariants: `pool[ix[f]] == f` for every pooled facts value `f`; every entry's index is below
-/// `facts.len()`.
+/// Lookups: readers walk the bodies in the order sema recorded them and pass the position after the
+/// previous instruction ([`InstrTable::get_near`]), which finds the next one at once; while the ids came
+/// in increasing order a lookup bisects; otherwise the first lookup that needs it builds a hash index
+/// (instruction addresses are not in order across bodies, and sema never needs it).
+/// Invariants: `pool[facts[i]] == i` for every stored facts value; every entry's index is below
+/// `facts.len()`; `sorted` says whether the ids are strictly increasing; `index`, once built, maps each
+/// id to its last entry (an id inserted twice: the later info counts; sema records each instruction
+/// once).
 #[derive(Debug, Clone, Default)]
 pub struct InstrTable {
-    entries: KeyTable<InstrId, (Span, u32)>,
+    entries: Vec<(InstrId, Span, u32)>,
+    unsorted: bool,
+    index: std::sync::OnceLock<FxHashMap<InstrId, u32>>,
     facts: Vec<InstrFacts>,
     pool: FxHashMap<InstrFacts, u32>,
 }
 
 impl InstrTable {
-    /// Stores the info of instruction `id` (a second insert under `id` replaces it).
+    /// Stores the info of instruction `id` (a second insert under `id` replaces it for lookups).
     pub fn insert(&mut self, id: InstrId, info: InstrInfo) {
         let (span, facts) = info.split();
         let ix = match self.pool.get(&facts) {
@@ -1118,9 +1126,30 @@ impl InstrTable {
                 ix
             }
         };
-        self.entries.insert(id, (span, ix));
+        if let Some(&(last, _, _)) = self.entries.last() {
+            self.unsorted |= last >= id;
+        }
+        let at = self.entries.len() as u32;
+        self.entries.push((id, span, ix));
+        if let Some(index) = self.index.get_mut() {
+            index.insert(id, at);
+        }
     }
-    fn view(&self, &(span, ix): &(Span, u32)) -> InstrRef<'_> {
+    fn position(&self, id: InstrId) -> Option<usize> {
+        if !self.unsorted {
+            return self.entries.binary_search_by_key(&id, |e| e.0).ok();
+        }
+        let index = self.index.get_or_init(|| {
+            let mut index = FxHashMap::default();
+            index.reserve(self.entries.len());
+            for (i, e) in self.entries.iter().enumerate() {
+                index.insert(e.0, i as u32);
+            }
+            index
+        });
+        index.get(&id).map(|&i| i as usize)
+    }
+    fn view(&self, &(_, span, ix): &(InstrId, Span, u32)) -> InstrRef<'_> {
         InstrRef {
             span,
             facts: &self.facts[ix as usize],
@@ -1128,19 +1157,31 @@ impl InstrTable {
     }
     /// The info of instruction `id`.
     pub fn get(&self, id: &InstrId) -> Option<InstrRef<'_>> {
-        self.entries.get(id).map(|e| self.view(e))
+        self.position(*id).map(|i| self.view(&self.entries[i]))
     }
-    /// The info of `id` and its position, trying position `hint` first ([`KeyTable::get_near`]).
+    /// The info of `id` and its position, trying position `hint` first: a reader walking a body in the
+    /// order sema recorded it passes the position after the previous instruction's.
     pub fn get_near(&self, id: InstrId, hint: usize) -> Option<(usize, InstrRef<'_>)> {
-        self.entries
-            .get_near(id, hint)
-            .map(|(at, e)| (at, self.view(e)))
+        let i = match self.entries.get(hint) {
+            // An id recorded twice (never by sema) is found through the index: the later entry counts.
+            Some(e)
+                if e.0 == id
+                    && self
+                        .index
+                        .get()
+                        .is_none_or(|x| x.len() >= self.entries.len()) =>
+            {
+                hint
+            }
+            _ => self.position(id)?,
+        };
+        Some((i, self.view(&self.entries[i])))
     }
     /// Makes room for `additional` more instructions.
     pub fn reserve(&mut self, additional: usize) {
         self.entries.reserve(additional);
     }
-    /// The number of instructions.
+    /// The number of instructions recorded.
     pub fn len(&self) -> usize {
         self.entries.len()
     }
@@ -1150,15 +1191,15 @@ impl InstrTable {
     }
     /// Whether instruction `id` has an info.
     pub fn contains_key(&self, id: &InstrId) -> bool {
-        self.entries.contains_key(id)
+        self.position(*id).is_some()
     }
     /// The instructions and their infos, in insertion order.
     pub fn iter(&self) -> impl Iterator<Item = (&InstrId, InstrRef<'_>)> {
-        self.entries.iter().map(|(id, e)| (id, self.view(e)))
+        self.entries.iter().map(|e| (&e.0, self.view(e)))
     }
     /// The infos in insertion order.
     pub fn values(&self) -> impl Iterator<Item = InstrRef<'_>> {
-        self.entries.values().map(|e| self.view(e))
+        self.entries.iter().map(|e| self.view(e))
     }
     /// The number of distinct [`InstrFacts`] stored.
     pub fn distinct_facts(&self) -> usize {
@@ -1473,5 +1514,68 @@ mod span_table_tests {
         let long = "a".repeat(100);
         assert_eq!(with_upper(&long, str::to_string), "A".repeat(100));
         assert_eq!(with_upper("grün", str::to_string), "GRüN");
+    }
+}
+
+#[cfg(test)]
+mod instr_table_tests {
+    use super::*;
+
+    fn info(start: u32, ty: Type) -> InstrInfo {
+        InstrInfo {
+            span: Span::new(crate::FileId(0), start as usize, start as usize + 1),
+            cr_before: None,
+            cr_after: Some(ty),
+            operand: None,
+            callee: None,
+            args: Vec::new(),
+        }
+    }
+
+    /// Ids out of order (bodies are separate allocations): lookups still find every instruction, with a
+    /// right or a wrong hint, and equal facts are stored once.
+    #[test]
+    fn lookups_in_and_out_of_order() {
+        let mut t = InstrTable::default();
+        for (id, start) in [(30, 0), (40, 1), (10, 2), (20, 3)] {
+            let ty = if start % 2 == 0 {
+                Type::BOOL
+            } else {
+                Type::INT
+            };
+            t.insert(InstrId(id), info(start, ty));
+        }
+        assert_eq!(t.len(), 4);
+        assert_eq!(t.distinct_facts(), 2);
+        for (pos, (id, start)) in [(30, 0), (40, 1), (10, 2), (20, 3)].into_iter().enumerate() {
+            assert_eq!(t.get(&InstrId(id)).unwrap().span.start, start);
+            let (at, near) = t.get_near(InstrId(id), pos).unwrap();
+            assert_eq!((at, near.span.start), (pos, start));
+            let (at, far) = t.get_near(InstrId(id), (pos + 1) % 4).unwrap();
+            assert_eq!((at, far.span.start), (pos, start));
+        }
+        assert!(t.get(&InstrId(15)).is_none());
+        assert!(!t.contains_key(&InstrId(50)));
+        // Inserted after the index was built: found through it.
+        t.insert(InstrId(5), info(9, Type::INT));
+        assert_eq!(t.get(&InstrId(5)).unwrap().cr_after, Some(Type::INT));
+    }
+
+    /// In increasing order the table bisects; an id recorded twice answers with the later info.
+    #[test]
+    fn sorted_lookups_and_a_repeated_id() {
+        let mut t = InstrTable::default();
+        for id in 1..=100 {
+            t.insert(InstrId(id), info(id as u32, Type::BOOL));
+        }
+        assert_eq!(t.get(&InstrId(57)).unwrap().span.start, 57);
+        t.insert(InstrId(57), info(999, Type::INT));
+        let later = t.get(&InstrId(57)).unwrap();
+        assert_eq!(
+            (later.span.start, later.cr_after.clone()),
+            (999, Some(Type::INT))
+        );
+        let (at, near) = t.get_near(InstrId(57), 56).unwrap();
+        assert_eq!((at, near.span.start), (100, 999));
     }
 }
