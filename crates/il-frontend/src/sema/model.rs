@@ -1117,7 +1117,12 @@ impl InstrTable {
     /// Stores the info of instruction `id` (a second insert under `id` replaces it for lookups).
     pub fn insert(&mut self, id: InstrId, info: InstrInfo) {
         let (span, facts) = info.split();
-        let ix = match self.pool.get(&facts) {
+        let ix = self.intern(facts);
+        self.insert_interned(id, span, ix);
+    }
+    /// The index of `facts` in the shared store (stored first if new).
+    pub(crate) fn intern(&mut self, facts: InstrFacts) -> u32 {
+        match self.pool.get(&facts) {
             Some(&ix) => ix,
             None => {
                 let ix = self.facts.len() as u32;
@@ -1125,7 +1130,10 @@ impl InstrTable {
                 self.pool.insert(facts, ix);
                 ix
             }
-        };
+        }
+    }
+    /// [`InstrTable::insert`] with facts already interned (`ix` from [`InstrTable::intern`]).
+    pub(crate) fn insert_interned(&mut self, id: InstrId, span: Span, ix: u32) {
         if let Some(&(last, _, _)) = self.entries.last() {
             self.unsorted |= last >= id;
         }
