@@ -1,8 +1,8 @@
 //! The IL body checker: the type of the current result (CR) at every instruction, labels and jumps,
 //! simple and deferred operators, stores, `S`/`R`, unused results and unreachable code.
 //!
-//! Input: one POU's body and its variable table (from `decls`). Output: [`InstrInfo`] per instruction
-//! span in `Model::instrs`, diagnostics. Invariants: the body is walked twice: a silent first pass
+//! Input: one POU's body and its variable table (from `decls`). Output: the [`InstrFacts`] of every
+//! instruction in `Model::instrs` (by identity), diagnostics. Invariants: the body is walked twice: a silent first pass
 //! records the CR types that backward jumps bring to their labels, the second pass (which reports) joins
 //! at each label the fall-through, the forward jumps and those recorded backward jumps; untyped literals
 //! are type variables ([`LitVars`]) resolved once the whole body is seen.
