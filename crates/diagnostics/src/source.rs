@@ -108,6 +108,21 @@ impl SourceMap {
         self.files.push(f);
         FileId(self.files.len() as u32 - 1)
     }
+    /// [`SourceMap::add_file`] for a text the caller owns: it is moved into the map, not copied (a
+    /// byte-order mark is removed in place).
+    pub fn add_file_owned(&mut self, name: impl Into<String>, mut text: String) -> FileId {
+        let bom = '\u{feff}'.len_utf8();
+        let base = if text.starts_with('\u{feff}') {
+            text.drain(..bom);
+            bom as u32
+        } else {
+            0
+        };
+        let mut f = SourceFile::new(name, text);
+        f.byte_base = base;
+        self.files.push(f);
+        FileId(self.files.len() as u32 - 1)
+    }
     /// The file `id` (which this map gave out).
     pub fn get(&self, id: FileId) -> &SourceFile {
         &self.files[id.0 as usize]
@@ -132,5 +147,32 @@ mod tests {
         assert_eq!(f.line_col(2), (2, 1));
         assert_eq!(f.line_col(5), (3, 1));
         assert_eq!(f.offset_of(3, 1), 5);
+    }
+}
+
+#[cfg(test)]
+mod add_file_tests {
+    use super::*;
+
+    /// An owned text gives the same file as a borrowed one, byte-order mark or not, and is moved in.
+    #[test]
+    fn owned_and_borrowed_texts_give_the_same_file() {
+        for text in ["\u{feff}LD a\nST b\n", "LD a\nST b\n", "\u{feff}", ""] {
+            let mut m = SourceMap::new();
+            let a = m.add_file("a.il", text);
+            let owned = text.to_string();
+            let ptr = owned.as_ptr();
+            let b = m.add_file_owned("a.il", owned);
+            let (fa, fb) = (m.get(a), m.get(b));
+            assert_eq!(
+                (&fa.text, fa.byte_base, &fa.line_starts),
+                (&fb.text, fb.byte_base, &fb.line_starts),
+                "{text:?}"
+            );
+            assert!(!fb.text.starts_with('\u{feff}'));
+            if !text.starts_with('\u{feff}') && !text.is_empty() {
+                assert_eq!(fb.text.as_ptr(), ptr, "moved, not copied");
+            }
+        }
     }
 }

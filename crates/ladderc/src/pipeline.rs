@@ -294,7 +294,7 @@ impl Session {
             } else {
                 input_lang(p, text_after_bom, lang)
             };
-            let file = self.map.add_file(shown, &text);
+            let file = self.map.add_file_owned(shown, text);
             // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
             let src = &self.map.get(file).text;
             if detected {

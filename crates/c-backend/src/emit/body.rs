@@ -14,7 +14,7 @@ use crate::ctypes;
 use crate::mangle;
 use diagnostics::{code, Diagnostic, Span};
 use il_frontend::ast::{Condition, FbInputOp, IlStmt, InstrKind, Instruction, Op, Operand};
-use il_frontend::sema::{Callee, Elementary, InstrId, InstrInfo, Type};
+use il_frontend::sema::{Callee, Elementary, InstrFacts, InstrId, Type};
 use std::collections::{BTreeMap, HashSet};
 
 use Elementary as E;
@@ -80,7 +80,7 @@ impl<'s, 'm> Body<'s, 'm> {
 /// An open deferred operator, waiting for its nested list.
 struct Deferred {
     span: Span,
-    info: InstrInfo,
+    info: InstrFacts,
     op: Op,
     negate: bool,
     /// The outer current result's type (`None` for `LD(`).
@@ -143,12 +143,12 @@ impl<'a> Gen<'a> {
         Some(name)
     }
 
-    pub(super) fn info(&mut self, i: &Instruction) -> Option<&'a InstrInfo> {
+    pub(super) fn info(&mut self, i: &Instruction) -> Option<&'a InstrFacts> {
         let model: &'a il_frontend::sema::Model = self.model;
         match model.instrs.get_near(InstrId::of(i), self.instr_cursor) {
             Some((at, info)) => {
                 self.instr_cursor = at + 1;
-                Some(info)
+                Some(info.facts)
             }
             None => {
                 self.report_once(
@@ -313,7 +313,7 @@ impl<'a> Gen<'a> {
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
+        info: &InstrFacts,
         op: Op,
         negate: bool,
         operand: Option<&Operand>,
@@ -417,7 +417,7 @@ impl<'a> Gen<'a> {
 
     /// The type to read an operator's operand as: the instantiated generic type, except for the
     /// time overloads (`MUL_TIME` by a number) where the operand keeps its own numeric type.
-    fn operand_ty_for(&self, info: &InstrInfo, common: &Type, op: Op) -> Type {
+    fn operand_ty_for(&self, info: &InstrFacts, common: &Type, op: Op) -> Type {
         if let Some(t) = &info.operand {
             if matches!(op, Op::Mul | Op::Div)
                 && common.elementary().is_some_and(|e| e.is_duration())
@@ -633,7 +633,11 @@ impl<'a> Gen<'a> {
         if let Some(o) = operand {
             // the implicit LD that starts the nested list, typed as the first instruction expects
             let first = body.iter().find_map(|s| match s {
-                IlStmt::Instr(i) => self.model.instr(i).and_then(|x| x.cr_before.clone()),
+                IlStmt::Instr(i) => self
+                    .model
+                    .instrs
+                    .get_near(InstrId::of(i), self.instr_cursor)
+                    .and_then(|(_, x)| x.cr_before.clone()),
                 _ => None,
             });
             let ty = first
@@ -685,7 +689,7 @@ fn fb_input_name(op: FbInputOp) -> &'static str {
 }
 
 /// The instantiated type of an operator from the model (falls back to the CR type).
-fn std_common_type(info: &InstrInfo, before: &Type) -> Type {
+fn std_common_type(info: &InstrFacts, before: &Type) -> Type {
     match &info.callee {
         Some(Callee::Std { ty, .. }) if !ty.is_error() => ty.clone(),
         _ => before.clone(),

@@ -15,7 +15,7 @@ use crate::mangle;
 use diagnostics::Span;
 use il_frontend::ast::{ArgDir, CallArgs, Condition, Instruction, Operand, VarKind, VarRef};
 use il_frontend::sema::{
-    ArgBinding, ArgSource, Callee, ConversionKind, Elementary, FbType, InstrInfo, PouId, Type,
+    ArgBinding, ArgSource, Callee, ConversionKind, Elementary, FbType, InstrFacts, PouId, Type,
 };
 
 use Elementary as E;
@@ -36,7 +36,7 @@ impl Gen<'_> {
     fn arg_value(
         &mut self,
         b: &mut Body,
-        info: &InstrInfo,
+        info: &InstrFacts,
         args: &CallArgs,
         binding: &ArgBinding,
         span: Span,
@@ -59,7 +59,7 @@ impl Gen<'_> {
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
+        info: &InstrFacts,
         cond: Condition,
         instance: &VarRef,
         args: &CallArgs,
@@ -241,7 +241,7 @@ impl Gen<'_> {
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
+        info: &InstrFacts,
         input: &str,
         instance: &VarRef,
     ) {
@@ -262,7 +262,7 @@ impl Gen<'_> {
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
+        info: &InstrFacts,
         fb: FbType,
         input: &str,
         instance: &VarRef,
@@ -303,7 +303,7 @@ impl Gen<'_> {
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
+        info: &InstrFacts,
         args: &CallArgs,
     ) {
         let span = i.span;
@@ -398,7 +398,7 @@ impl Gen<'_> {
         &mut self,
         b: &mut Body,
         i: &Instruction,
-        info: &InstrInfo,
+        info: &InstrFacts,
         id: PouId,
         args: &CallArgs,
     ) {

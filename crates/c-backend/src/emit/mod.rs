@@ -158,7 +158,9 @@ pub fn generate(
 
     let mut files = vec![("ladderc_config.h".to_string(), config_header(profile))];
     let mut h = String::new();
-    let mut c = String::new();
+    // Room for the C of every instruction (about 50 bytes each) from the start: the text is not regrown
+    // (and copied) while it is written. Pages not written are never touched.
+    let mut c = String::with_capacity(C_BYTES_PER_INSTR * model.instrs.len() + 4096);
     g.header(&mut h);
     g.program_c(units, &mut c);
     files.push(("program.h".into(), h));
@@ -530,6 +532,7 @@ impl<'a> Gen<'a> {
                 String::new()
             };
             let mut b = Body::new(&scope, 1, ret.clone());
+            b.out.reserve(C_BYTES_PER_INSTR * p.instrs.len());
             b.targets = targets;
             // locals and the result variable
             let mut pre = String::new();
@@ -600,6 +603,7 @@ impl<'a> Gen<'a> {
         c.push_str("}\n\n");
         // body
         let mut b = Body::new(&scope, 1, String::new());
+        b.out.reserve(C_BYTES_PER_INSTR * p.instrs.len());
         b.targets = targets;
         let mut temps = String::new();
         for v in &p.vars {
@@ -629,6 +633,9 @@ impl<'a> Gen<'a> {
         c.push_str(&edges::wrapper(&sname, p));
     }
 }
+
+/// The C text reserved per instruction (the generated programs average about 50 bytes).
+const C_BYTES_PER_INSTR: usize = 64;
 
 /// Declares the current-result locals (and `EN`/`ENO` when used) at the top of a function.
 fn write_locals(c: &mut String, b: &Body, scope: &Scope) {

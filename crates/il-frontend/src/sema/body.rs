@@ -1,8 +1,8 @@
 //! The IL body checker: the type of the current result (CR) at every instruction, labels and jumps,
 //! simple and deferred operators, stores, `S`/`R`, unused results and unreachable code.
 //!
-//! Input: one POU's body and its variable table (from `decls`). Output: [`InstrInfo`] per instruction
-//! span in `Model::instrs`, diagnostics. Invariants: the body is walked twice: a silent first pass
+//! Input: one POU's body and its variable table (from `decls`). Output: the [`InstrFacts`] of every
+//! instruction in `Model::instrs` (by identity), diagnostics. Invariants: the body is walked twice: a silent first pass
 //! records the CR types that backward jumps bring to their labels, the second pass (which reports) joins
 //! at each label the fall-through, the forward jumps and those recorded backward jumps; untyped literals
 //! are type variables ([`LitVars`]) resolved once the whole body is seen.
@@ -107,6 +107,24 @@ pub(super) struct Rec {
     pub(super) args: Vec<(ArgBinding, Ty)>,
 }
 
+/// The facts index of a record not stored yet.
+pub(super) const PENDING: u32 = u32::MAX;
+
+impl Rec {
+    /// Whether a type of the record is a literal variable (its type is fixed only at the body's end).
+    fn has_literal_types(&self) -> bool {
+        let lit = |t: &Ty| matches!(t, Ty::Lit(_));
+        [&self.cr_before, &self.cr_after, &self.operand]
+            .into_iter()
+            .any(|t| t.as_ref().is_some_and(lit))
+            || self
+                .callee_tys
+                .as_ref()
+                .is_some_and(|(a, b)| lit(a) || lit(b))
+            || self.args.iter().any(|(_, t)| lit(t))
+    }
+}
+
 struct LabelDef {
     span: Span,
     /// Position in walk order.
@@ -128,7 +146,13 @@ pub(super) struct Body<'a, 'd> {
     /// A FUNCTION's result variable was written (ST/S/R/=> into its name).
     pub(super) result_written: bool,
     pub(super) lits: LitVars,
-    pub(super) recs: Vec<(InstrId, Span, Rec)>,
+    /// Every instruction of the body in walk order (pre-order), with the index of its facts in
+    /// `Model::instrs` once known ([`PENDING`] until then).
+    pub(super) recs: Vec<(InstrId, Span, u32)>,
+    /// The records whose types still depend on literal variables (resolved when the body is done),
+    /// by their position in `recs`. Records without them are stored in the model at once, so a long
+    /// body keeps 24 bytes per instruction instead of a whole record.
+    pub(super) pending: Vec<(usize, Rec)>,
     labels: HashMap<String, LabelDef>,
     /// Jumps seen in this pass, by upper-case label.
     edges: HashMap<String, Vec<Edge>>,
@@ -152,6 +176,7 @@ impl Analyzer<'_> {
             pou: id,
             lits: LitVars::default(),
             recs: Vec::new(),
+            pending: Vec::new(),
             labels,
             edges: HashMap::new(),
             backward: HashMap::new(),
@@ -186,13 +211,17 @@ impl Analyzer<'_> {
         b.backward = backward;
         b.lits = LitVars::default();
         b.recs.clear();
+        b.pending.clear();
         b.pos = 0;
         b.walk_top(&pou.body);
+        for (slot, r) in std::mem::take(&mut b.pending) {
+            let facts = b.finish(r);
+            b.recs[slot].2 = b.a.model.instrs.intern(facts);
+        }
         let recs = std::mem::take(&mut b.recs);
         let mut order = Vec::with_capacity(recs.len());
-        for (id, span, r) in recs {
-            let info = b.finish(span, r);
-            b.a.model.instrs.insert(id, info);
+        for (id, span, facts) in recs {
+            b.a.model.instrs.insert_interned(id, span, facts);
             order.push(id);
         }
         b.a.model.pous[id.0 as usize].instrs = order;
@@ -352,7 +381,7 @@ impl Body<'_, '_> {
             ..Rec::default()
         };
         let slot = self.recs.len();
-        self.recs.push((InstrId::of(i), i.span, Rec::default()));
+        self.recs.push((InstrId::of(i), i.span, PENDING));
         let outer = if *op == Op::Ld {
             None
         } else {
@@ -404,7 +433,7 @@ impl Body<'_, '_> {
             }
         }
         rec.cr_after = if st.reach { st.cr.ty.clone() } else { None };
-        self.recs[slot].2 = rec;
+        self.record(slot, rec);
         st.last = Some(i.span);
     }
 
@@ -515,7 +544,22 @@ impl Body<'_, '_> {
         }
     }
 
-    fn finish(&mut self, span: Span, r: Rec) -> InstrInfo {
+    /// Stores the record of the instruction at `slot` of `recs`: in the model at once when its types
+    /// are known, else when the body is done (its literal types are fixed by then). The silent first
+    /// pass stores nothing.
+    fn record(&mut self, slot: usize, rec: Rec) {
+        if self.a.silent {
+            return;
+        }
+        if rec.has_literal_types() {
+            self.pending.push((slot, rec));
+        } else {
+            let facts = self.finish(rec);
+            self.recs[slot].2 = self.a.model.instrs.intern(facts);
+        }
+    }
+
+    fn finish(&mut self, r: Rec) -> InstrFacts {
         let cr_before = r.cr_before.map(|t| self.resolve_owned(t));
         let cr_after = r.cr_after.map(|t| self.resolve_owned(t));
         let operand = r.operand.map(|t| self.resolve_owned(t));
@@ -546,8 +590,7 @@ impl Body<'_, '_> {
                 })
                 .collect()
         };
-        InstrInfo {
-            span,
+        InstrFacts {
             cr_before,
             cr_after,
             operand,
@@ -635,7 +678,7 @@ impl Body<'_, '_> {
         };
         // Reserve the slot: pre-order (a deferred instruction before its nested list).
         let slot = self.recs.len();
-        self.recs.push((InstrId::of(i), i.span, Rec::default()));
+        self.recs.push((InstrId::of(i), i.span, PENDING));
         match &i.kind {
             InstrKind::Simple {
                 op,
@@ -705,7 +748,7 @@ impl Body<'_, '_> {
             }
         }
         rec.cr_after = if st.reach { st.cr.ty.clone() } else { None };
-        self.recs[slot].2 = rec;
+        self.record(slot, rec);
     }
 
     fn simple(

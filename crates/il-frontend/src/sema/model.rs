@@ -368,7 +368,7 @@ pub enum FbType {
 }
 
 /// A resolved type.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub enum Type {
     /// `BOOL`, `INT`, `TIME` ...
     Elementary(Elementary),
@@ -408,7 +408,7 @@ pub enum Type {
 }
 
 /// One array dimension `lower..upper` (inclusive).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub struct Dim {
     /// The first index (inclusive).
     pub lower: i128,
@@ -849,7 +849,7 @@ pub enum ProgramArgValue {
 }
 
 /// What an instruction calls.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub enum Callee {
     /// A standard function (`ADD`, `SEL`, `LIMIT` ...) or a simple operator mapped onto one (the operator
     /// `ADD x` is `Std { name: "ADD", ty: INT, .. }`); `ty` is the type the generic parameters were
@@ -891,7 +891,7 @@ pub enum Callee {
 }
 
 /// How a type conversion function converts (IEC 61131-3 2.5.1.5.1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum ConversionKind {
     /// `INT_TO_REAL`, `REAL_TO_INT` (rounds to nearest, IEC), `DINT_TO_INT` (truncates bits) ...
     Plain,
@@ -904,7 +904,7 @@ pub enum ConversionKind {
 }
 
 /// Where a call argument's value comes from.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub enum ArgSource {
     /// The current result (first input of a function called as an IL operator).
     CurrentResult,
@@ -913,7 +913,7 @@ pub enum ArgSource {
 }
 
 /// One call argument bound to its formal parameter.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
 pub struct ArgBinding {
     /// The formal parameter's canonical name (`IN`, `MN`, `IN0` ...).
     pub param: String,
@@ -955,6 +955,93 @@ pub struct InstrInfo {
     pub callee: Option<Callee>,
     /// Call arguments bound to parameters, in evaluation order (function calls, `CAL` with arguments).
     pub args: Vec<ArgBinding>,
+}
+
+impl InstrInfo {
+    /// The span and the facts (everything else).
+    pub fn split(self) -> (Span, InstrFacts) {
+        let InstrInfo {
+            span,
+            cr_before,
+            cr_after,
+            operand,
+            callee,
+            args,
+        } = self;
+        (
+            span,
+            InstrFacts {
+                cr_before,
+                cr_after,
+                operand,
+                callee,
+                args,
+            },
+        )
+    }
+}
+
+/// What sema knows about an instruction apart from its span: the fields of [`InstrInfo`] but `span`.
+/// Shared by all the instructions with equal facts ([`InstrTable`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
+pub struct InstrFacts {
+    /// See [`InstrInfo::cr_before`].
+    pub cr_before: Option<Type>,
+    /// See [`InstrInfo::cr_after`].
+    pub cr_after: Option<Type>,
+    /// See [`InstrInfo::operand`].
+    pub operand: Option<Type>,
+    /// See [`InstrInfo::callee`].
+    pub callee: Option<Callee>,
+    /// See [`InstrInfo::args`].
+    pub args: Vec<ArgBinding>,
+}
+
+/// One instruction's info as [`Model::instrs`] gives it: its span and its (shared) facts. It derefs to
+/// the facts, so `info.cr_after` and `info.callee` read as on an [`InstrInfo`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InstrRef<'m> {
+    /// The instruction's span (for messages and tools; not unique).
+    pub span: Span,
+    /// Everything else sema knows about it.
+    pub facts: &'m InstrFacts,
+}
+
+impl std::ops::Deref for InstrRef<'_> {
+    type Target = InstrFacts;
+    fn deref(&self) -> &InstrFacts {
+        self.facts
+    }
+}
+
+impl InstrRef<'_> {
+    /// An owned copy, as sema recorded it.
+    pub fn to_info(&self) -> InstrInfo {
+        let f = self.facts.clone();
+        InstrInfo {
+            span: self.span,
+            cr_before: f.cr_before,
+            cr_after: f.cr_after,
+            operand: f.operand,
+            callee: f.callee,
+            args: f.args,
+        }
+    }
+}
+
+/// Serialised as the [`InstrInfo`] it stands for (same fields, same order).
+impl Serialize for InstrRef<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("InstrInfo", 6)?;
+        st.serialize_field("span", &self.span)?;
+        st.serialize_field("cr_before", &self.facts.cr_before)?;
+        st.serialize_field("cr_after", &self.facts.cr_after)?;
+        st.serialize_field("operand", &self.facts.operand)?;
+        st.serialize_field("callee", &self.facts.callee)?;
+        st.serialize_field("args", &self.facts.args)?;
+        st.end()
+    }
 }
 
 /// What a name used in a body refers to (`Model::names[&var_ref.base.span]`).
@@ -1005,8 +1092,135 @@ pub struct Model {
     pub names: SpanTable<NameRef>,
 }
 
-/// The instruction infos by identity ([`KeyTable`]).
-pub type InstrTable = KeyTable<InstrId, InstrInfo>;
+/// The instruction infos by identity. Each instruction stores its identity, its span and the index of
+/// its [`InstrFacts`] (24 bytes); the facts themselves are stored once per distinct value (a program has
+/// few: `BOOL` before and after, an `INT` addition ...), so the table grows by 24 bytes per instruction
+/// instead of the size of a whole [`InstrInfo`] (232 bytes).
+/// Lookups: readers walk the bodies in the order sema recorded them and pass the position after the
+/// previous instruction ([`InstrTable::get_near`]), which finds the next one at once; while the ids came
+/// in increasing order a lookup bisects; otherwise the first lookup that needs it builds a hash index
+/// (instruction addresses are not in order across bodies, and sema never needs it).
+/// Invariants: `pool[facts[i]] == i` for every stored facts value; every entry's index is below
+/// `facts.len()`; `sorted` says whether the ids are strictly increasing; `index`, once built, maps each
+/// id to its last entry (an id inserted twice: the later info counts; sema records each instruction
+/// once).
+#[derive(Debug, Clone, Default)]
+pub struct InstrTable {
+    entries: Vec<(InstrId, Span, u32)>,
+    unsorted: bool,
+    index: std::sync::OnceLock<FxHashMap<InstrId, u32>>,
+    facts: Vec<InstrFacts>,
+    pool: FxHashMap<InstrFacts, u32>,
+}
+
+impl InstrTable {
+    /// Stores the info of instruction `id` (a second insert under `id` replaces it for lookups).
+    pub fn insert(&mut self, id: InstrId, info: InstrInfo) {
+        let (span, facts) = info.split();
+        let ix = self.intern(facts);
+        self.insert_interned(id, span, ix);
+    }
+    /// The index of `facts` in the shared store (stored first if new).
+    pub(crate) fn intern(&mut self, facts: InstrFacts) -> u32 {
+        match self.pool.get(&facts) {
+            Some(&ix) => ix,
+            None => {
+                let ix = self.facts.len() as u32;
+                self.facts.push(facts.clone());
+                self.pool.insert(facts, ix);
+                ix
+            }
+        }
+    }
+    /// [`InstrTable::insert`] with facts already interned (`ix` from [`InstrTable::intern`]).
+    pub(crate) fn insert_interned(&mut self, id: InstrId, span: Span, ix: u32) {
+        if let Some(&(last, _, _)) = self.entries.last() {
+            self.unsorted |= last >= id;
+        }
+        let at = self.entries.len() as u32;
+        self.entries.push((id, span, ix));
+        if let Some(index) = self.index.get_mut() {
+            index.insert(id, at);
+        }
+    }
+    fn position(&self, id: InstrId) -> Option<usize> {
+        if !self.unsorted {
+            return self.entries.binary_search_by_key(&id, |e| e.0).ok();
+        }
+        let index = self.index.get_or_init(|| {
+            let mut index = FxHashMap::default();
+            index.reserve(self.entries.len());
+            for (i, e) in self.entries.iter().enumerate() {
+                index.insert(e.0, i as u32);
+            }
+            index
+        });
+        index.get(&id).map(|&i| i as usize)
+    }
+    fn view(&self, &(_, span, ix): &(InstrId, Span, u32)) -> InstrRef<'_> {
+        InstrRef {
+            span,
+            facts: &self.facts[ix as usize],
+        }
+    }
+    /// The info of instruction `id`.
+    pub fn get(&self, id: &InstrId) -> Option<InstrRef<'_>> {
+        self.position(*id).map(|i| self.view(&self.entries[i]))
+    }
+    /// The info of `id` and its position, trying position `hint` first: a reader walking a body in the
+    /// order sema recorded it passes the position after the previous instruction's.
+    pub fn get_near(&self, id: InstrId, hint: usize) -> Option<(usize, InstrRef<'_>)> {
+        let i = match self.entries.get(hint) {
+            // An id recorded twice (never by sema) is found through the index: the later entry counts.
+            Some(e)
+                if e.0 == id
+                    && self
+                        .index
+                        .get()
+                        .is_none_or(|x| x.len() >= self.entries.len()) =>
+            {
+                hint
+            }
+            _ => self.position(id)?,
+        };
+        Some((i, self.view(&self.entries[i])))
+    }
+    /// Makes room for `additional` more instructions.
+    pub fn reserve(&mut self, additional: usize) {
+        self.entries.reserve(additional);
+    }
+    /// The number of instructions recorded.
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+    /// Whether the table is empty.
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+    /// Whether instruction `id` has an info.
+    pub fn contains_key(&self, id: &InstrId) -> bool {
+        self.position(*id).is_some()
+    }
+    /// The instructions and their infos, in insertion order.
+    pub fn iter(&self) -> impl Iterator<Item = (&InstrId, InstrRef<'_>)> {
+        self.entries.iter().map(|e| (&e.0, self.view(e)))
+    }
+    /// The infos in insertion order.
+    pub fn values(&self) -> impl Iterator<Item = InstrRef<'_>> {
+        self.entries.iter().map(|e| self.view(e))
+    }
+    /// The number of distinct [`InstrFacts`] stored.
+    pub fn distinct_facts(&self) -> usize {
+        self.facts.len()
+    }
+}
+
+/// Serialised as a map from instruction id to [`InstrInfo`], as before the facts were shared.
+impl Serialize for InstrTable {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_map(self.iter())
+    }
+}
 
 /// A map keyed by span ([`KeyTable`]).
 pub type SpanTable<V> = KeyTable<Span, V>;
@@ -1177,11 +1391,11 @@ impl Model {
             .map(|i| TypeId(i as u32))
     }
     /// The info of an instruction of the analysed units.
-    pub fn instr(&self, instruction: &crate::ast::Instruction) -> Option<&InstrInfo> {
+    pub fn instr(&self, instruction: &crate::ast::Instruction) -> Option<InstrRef<'_>> {
         self.instrs.get(&InstrId::of(instruction))
     }
     /// The info of an instruction by its identity (see [`Pou::instrs`]).
-    pub fn instr_by_id(&self, id: InstrId) -> Option<&InstrInfo> {
+    pub fn instr_by_id(&self, id: InstrId) -> Option<InstrRef<'_>> {
         self.instrs.get(&id)
     }
     /// A global by reference.
@@ -1308,5 +1522,68 @@ mod span_table_tests {
         let long = "a".repeat(100);
         assert_eq!(with_upper(&long, str::to_string), "A".repeat(100));
         assert_eq!(with_upper("grün", str::to_string), "GRüN");
+    }
+}
+
+#[cfg(test)]
+mod instr_table_tests {
+    use super::*;
+
+    fn info(start: u32, ty: Type) -> InstrInfo {
+        InstrInfo {
+            span: Span::new(crate::FileId(0), start as usize, start as usize + 1),
+            cr_before: None,
+            cr_after: Some(ty),
+            operand: None,
+            callee: None,
+            args: Vec::new(),
+        }
+    }
+
+    /// Ids out of order (bodies are separate allocations): lookups still find every instruction, with a
+    /// right or a wrong hint, and equal facts are stored once.
+    #[test]
+    fn lookups_in_and_out_of_order() {
+        let mut t = InstrTable::default();
+        for (id, start) in [(30, 0), (40, 1), (10, 2), (20, 3)] {
+            let ty = if start % 2 == 0 {
+                Type::BOOL
+            } else {
+                Type::INT
+            };
+            t.insert(InstrId(id), info(start, ty));
+        }
+        assert_eq!(t.len(), 4);
+        assert_eq!(t.distinct_facts(), 2);
+        for (pos, (id, start)) in [(30, 0), (40, 1), (10, 2), (20, 3)].into_iter().enumerate() {
+            assert_eq!(t.get(&InstrId(id)).unwrap().span.start, start);
+            let (at, near) = t.get_near(InstrId(id), pos).unwrap();
+            assert_eq!((at, near.span.start), (pos, start));
+            let (at, far) = t.get_near(InstrId(id), (pos + 1) % 4).unwrap();
+            assert_eq!((at, far.span.start), (pos, start));
+        }
+        assert!(t.get(&InstrId(15)).is_none());
+        assert!(!t.contains_key(&InstrId(50)));
+        // Inserted after the index was built: found through it.
+        t.insert(InstrId(5), info(9, Type::INT));
+        assert_eq!(t.get(&InstrId(5)).unwrap().cr_after, Some(Type::INT));
+    }
+
+    /// In increasing order the table bisects; an id recorded twice answers with the later info.
+    #[test]
+    fn sorted_lookups_and_a_repeated_id() {
+        let mut t = InstrTable::default();
+        for id in 1..=100 {
+            t.insert(InstrId(id), info(id as u32, Type::BOOL));
+        }
+        assert_eq!(t.get(&InstrId(57)).unwrap().span.start, 57);
+        t.insert(InstrId(57), info(999, Type::INT));
+        let later = t.get(&InstrId(57)).unwrap();
+        assert_eq!(
+            (later.span.start, later.cr_after.clone()),
+            (999, Some(Type::INT))
+        );
+        let (at, near) = t.get_near(InstrId(57), 56).unwrap();
+        assert_eq!((at, near.span.start), (100, 999));
     }
 }
