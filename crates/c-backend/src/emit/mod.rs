@@ -118,7 +118,7 @@ fn collect_address_spans(units: &[CompilationUnit]) -> HashMap<Span, Span> {
                         r.globals.iter().for_each(|b| block(b, &mut map));
                     }
                 }
-                LibraryElement::DataTypes(_) => {}
+                LibraryElement::DataTypes(_) | LibraryElement::Action(_) => {}
             }
         }
     }

@@ -65,6 +65,7 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
                     globals(b, &mut index);
                 }
             }
+            LibraryElement::Action(_) => {}
         }
     }
     index
