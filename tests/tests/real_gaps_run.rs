@@ -116,3 +116,91 @@ fn an_action_of_a_program_called_from_another_pou_is_a_located_error() {
         ]
     );
 }
+
+// ------------------------------------------------------------------ 3. trace columns, `--trace -`
+
+#[test]
+fn trace_dash_writes_the_csv_to_standard_output_and_no_file() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(fixture("actions.st"), dir.path().join("a.st")).unwrap();
+    let out = ladderc()
+        .current_dir(dir.path())
+        .args([
+            "run", "a.st", "--cycles", "2", "--trace", "-", "--watch", "main.n",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,main.n\n0,0,1\n1,10,2\n"
+    );
+    assert!(
+        !dir.path().join("-").exists(),
+        "a file named `-` was written"
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("ran 2 cycles"), "{stderr}");
+    assert!(!stderr.contains("wrote"), "{stderr}");
+}
+
+// ------------------------------------------------------------------ 2. lists sharing member names
+
+#[test]
+fn two_global_lists_with_the_same_member_names_run_qualified() {
+    // GVL_A and GVL_B (resource lists) both declare iSpeed and xOn, GVL_C (a project list) iSpeed:
+    // three variables, each counted on its own; the trace names them by list, with and without
+    // --watch
+    let file = fixture("shared_gvl.xml");
+    let (trace, _) = run(
+        &file,
+        3,
+        "GVL_A.iSpeed,GVL_B.iSpeed,GVL_C.iSpeed,GVL_A.xOn,GVL_B.xOn,PRG_IL.iSum",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,GVL_A.iSpeed,GVL_B.iSpeed,GVL_C.iSpeed,GVL_A.xOn,GVL_B.xOn,PRG_IL.iSum\n\
+         0,0,1,110,111,0,1,109\n\
+         1,10,2,120,122,1,0,118\n\
+         2,20,3,130,133,1,0,127\n"
+    );
+    let out = ladderc()
+        .arg("run")
+        .arg(&file)
+        .args(["--cycles", "1", "--trace", "-"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout).lines().next(),
+        Some(
+            "cycle,time_ms,GVL_C.iSpeed,GVL_A.iSpeed,GVL_A.xOn,GVL_B.iSpeed,GVL_B.xOn,PRG_IL.iSum"
+        )
+    );
+}
+
+#[test]
+fn an_unqualified_use_of_a_shared_list_member_is_one_located_error_naming_the_lists() {
+    let src = std::fs::read_to_string(fixture("shared_gvl.xml")).unwrap();
+    let cases = [
+        (
+            "GVL_A.iSpeed := GVL_A.iSpeed + 1;",
+            "iSpeed := 1;",
+            "q.xml:12:63: error[E1030]: `iSpeed` is declared by the global variable lists `GVL_C`, \
+             `GVL_A` and `GVL_B` [POU `PLC_PRG`] (hint: write GVL_C.iSpeed (or the other list's name))",
+        ),
+        (
+            "SUB GVL_A.iSpeed",
+            "SUB xOn",
+            "q.xml:21:5: error[E1030]: `xOn` is declared by the global variable lists `GVL_A` and \
+             `GVL_B` [POU `PRG_IL`] (hint: write GVL_A.xOn (or the other list's name))",
+        ),
+    ];
+    for (from, to, want) in cases {
+        assert_eq!(src.matches(from).count(), 1, "{from}");
+        let (code, lines) = check_text("q.xml", &src.replace(from, to));
+        let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+        assert_eq!(code, Some(1), "{lines:?}");
+        assert_eq!(errors, vec![want], "{lines:?}");
+    }
+}

@@ -507,6 +507,9 @@ impl Body<'_, '_> {
                 read_only: en.then_some(ReadOnly::PouInput { decl: None }),
             });
         }
+        if self.a.ambiguous_global(base) {
+            return None;
+        }
         if let Some(&i) = self.a.free_globals.get(&base.key()) {
             self.note_name(base.span, NameRef::Global(GlobalRef::Free(i)));
             let g = &self.a.model.globals[i];
