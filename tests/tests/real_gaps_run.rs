@@ -204,3 +204,97 @@ fn an_unqualified_use_of_a_shared_list_member_is_one_located_error_naming_the_li
         assert_eq!(errors, vec![want], "{lines:?}");
     }
 }
+
+// ------------------------------------------------------------------ 4. SFC indicator variables
+
+#[test]
+fn textual_sfc_indicator_variables_follow_the_action_being_active() {
+    // Run is active in cycles 2-4 and 6-8; Tick(N, filling) drives `filling` exactly then; the
+    // boolean action valve(L, T#20ms, draining) is active for 20 ms of each activation, and so is
+    // its indicator `draining`
+    let (trace, _) = run(
+        &fixture("indicators.st"),
+        9,
+        "Fill.n,Fill.__sfc_X_Run,Fill.filling,Fill.valve,Fill.draining",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Fill.n,Fill.__sfc_X_Run,Fill.filling,Fill.valve,Fill.draining\n\
+         0,0,1,0,0,0,0\n\
+         1,10,2,0,0,0,0\n\
+         2,20,13,1,1,1,1\n\
+         3,30,23,1,1,1,1\n\
+         4,40,33,1,1,0,0\n\
+         5,50,44,0,0,0,0\n\
+         6,60,55,1,1,1,1\n\
+         7,70,65,1,1,1,1\n\
+         8,80,75,1,1,0,0\n"
+    );
+}
+
+#[test]
+fn plcopen_action_indicator_attribute_is_set_while_the_action_is_active() {
+    // tests/fixtures/sfc/actions.xml with an indicator on two associations: `lim_on` on the L T#30ms
+    // boolean action `limited`, `pulse_on` on the P action `Pulse` (active for one scan)
+    let src = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/sfc/actions.xml"),
+    )
+    .unwrap();
+    let edits = [
+        (
+            "<variable name=\"go\"><type><BOOL/></type></variable>",
+            "<variable name=\"go\"><type><BOOL/></type></variable>\
+             <variable name=\"lim_on\"><type><BOOL/></type></variable>\
+             <variable name=\"pulse_on\"><type><BOOL/></type></variable>",
+        ),
+        (
+            "qualifier=\"L\" duration=\"T#30ms\">",
+            "qualifier=\"L\" duration=\"T#30ms\" indicator=\"lim_on\">",
+        ),
+        (
+            "qualifier=\"P\"><relPosition x=\"0\" y=\"0\"/><reference name=\"Pulse\"/>",
+            "qualifier=\"P\" indicator=\"pulse_on\"><relPosition x=\"0\" y=\"0\"/><reference name=\"Pulse\"/>",
+        ),
+    ];
+    let mut text = src.clone();
+    for (from, to) in edits {
+        assert_eq!(text.matches(from).count(), 1, "{from}");
+        text = text.replace(from, to);
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("ind.xml");
+    std::fs::write(&f, &text).unwrap();
+    let trace = common::run_with_stimulus(
+        &f,
+        6,
+        "1,main.go,1\n2,main.go,0\n",
+        &[
+            "main.limited",
+            "main.lim_on",
+            "main.pulse_on",
+            "main.p_count",
+        ],
+    );
+    assert_eq!(
+        common::column(&trace, "main.lim_on"),
+        common::column(&trace, "main.limited")
+    );
+    assert_eq!(
+        common::column(&trace, "main.lim_on"),
+        [0.0, 1.0, 1.0, 1.0, 0.0, 0.0]
+    );
+    assert_eq!(
+        common::column(&trace, "main.pulse_on"),
+        [0.0, 1.0, 0.0, 0.0, 0.0, 0.0]
+    );
+    // an indicator that is not a BOOL variable is a located error
+    let (code, lines) = check_text(
+        "bad.xml",
+        &text.replace("indicator=\"lim_on\"", "indicator=\"p_count\""),
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines.iter().any(|l| l.contains("error[E3122]: indicator `p_count` of an action of step `S1` is not a declared BOOL variable")),
+        "{lines:?}"
+    );
+}
