@@ -298,3 +298,54 @@ fn plcopen_action_indicator_attribute_is_set_while_the_action_is_active() {
         "{lines:?}"
     );
 }
+
+// ------------------------------------------------------------------ 5. overlapping CASE labels
+
+#[test]
+fn overlapping_case_labels_warn_with_both_locations_and_the_first_label_wins() {
+    let file = fixture("case_overlap.st");
+    // x counts 1, 2, ...: 2 is in `1..3` (a = 10), not `2:` (20); 6 is in `5..6` (40), not `6..9`;
+    // c = green matches `red, green` (b = 1), not `Color#green` (2)
+    let (trace, _) = run(&file, 8, "main.x,main.a,main.b");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.x,main.a,main.b\n\
+         0,0,1,10,1\n\
+         1,10,2,10,1\n\
+         2,20,3,10,1\n\
+         3,30,4,40,1\n\
+         4,40,5,40,1\n\
+         5,50,6,40,1\n\
+         6,60,7,60,1\n\
+         7,70,8,60,1\n"
+    );
+    let out = ladderc()
+        .args(["--message-format", "json", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    // (line, column) of each W3140 and of its second location
+    let found: Vec<((u64, u64), (u64, u64))> = String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
+        .filter(|d| d["code"] == "W3140")
+        .map(|d| {
+            let at = |v: &serde_json::Value| {
+                (v["line"].as_u64().unwrap(), v["column"].as_u64().unwrap())
+            };
+            let labels = d["labels"].as_array().unwrap();
+            let other = labels
+                .iter()
+                .find(|l| l["line"] != d["line"] || l["column"] != d["column"])
+                .unwrap();
+            (at(&d), at(other))
+        })
+        .collect();
+    assert_eq!(
+        found,
+        vec![((7, 3), (6, 3)), ((9, 3), (8, 6)), ((16, 3), (15, 8))],
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

@@ -503,9 +503,44 @@ impl<'d> PouLowering<'d> {
         out.extend(code);
         let end = self.fresh_label("END_CASE", span);
         let mut targets = Vec::new();
+        let mut seen: Vec<(LabelKey, Span)> = Vec::new();
         for arm in arms {
             let target = self.fresh_label("CASE", arm.span);
             for label in &arm.labels {
+                let key = match label {
+                    CaseLabel::Value(v) => self
+                        .case_value(v, &mut Diagnostics::new())
+                        .and_then(|o| label_key(&o, &o)),
+                    CaseLabel::Range(lo, hi) => {
+                        let mut quiet = Diagnostics::new();
+                        match (
+                            self.case_value(lo, &mut quiet),
+                            self.case_value(hi, &mut quiet),
+                        ) {
+                            (Some(l), Some(h)) => label_key(&l, &h),
+                            _ => None,
+                        }
+                    }
+                };
+                let at = match label {
+                    CaseLabel::Value(v) => v.span,
+                    CaseLabel::Range(lo, hi) => lo.span.to(hi.span),
+                };
+                if let Some(k) = key {
+                    if let Some((_, first)) = seen.iter().find(|(p, _)| p.overlaps(&k)) {
+                        diags.push(
+                            Diagnostic::warning(
+                                code::W3140,
+                                "this CASE label overlaps an earlier one: the earlier label wins",
+                            )
+                            .at(at)
+                            .with_primary_label("never chosen for the values it shares")
+                            .with_label(*first, "earlier label with the same value")
+                            .with_hint("remove the value from one of the labels (IEC 61131-3 requires distinct labels)"),
+                        );
+                    }
+                    seen.push((k, at));
+                }
                 match label {
                     CaseLabel::Value(v) => {
                         let Some(v) = self.case_value(v, diags) else {
@@ -1368,5 +1403,46 @@ fn type_text(t: &TypeRef) -> String {
         TypeRef::Array { .. } => "an array".into(),
         TypeRef::Subrange { base, .. } => format!("a subrange of {}", base.name),
         TypeRef::Enum { .. } => "an enumeration".into(),
+    }
+}
+
+/// What a CASE label selects, for the overlap warning W3140: an integer range, or an enumerated
+/// value by name (`red`, `Color#red`).
+enum LabelKey {
+    Ints(i128, i128),
+    Enum(String),
+}
+
+impl LabelKey {
+    fn overlaps(&self, other: &LabelKey) -> bool {
+        match (self, other) {
+            (LabelKey::Ints(a, b), LabelKey::Ints(c, d)) => a <= d && c <= b,
+            (LabelKey::Enum(a), LabelKey::Enum(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
+/// The key of a label `lo..hi` (`lo` = `hi` for a single value); `None` for what is not an integer
+/// literal or an enumerated value (a constant's value is not known here).
+fn label_key(lo: &Operand, hi: &Operand) -> Option<LabelKey> {
+    let int = |o: &Operand| match o {
+        Operand::Literal(Literal {
+            kind: LiteralKind::Int(v),
+            ..
+        }) => Some(*v),
+        _ => None,
+    };
+    let name = |o: &Operand| match o {
+        Operand::EnumValue { value, .. } => Some(value.key()),
+        Operand::Var(v) if v.accessors.is_empty() => Some(v.base.key()),
+        _ => None,
+    };
+    match (int(lo), int(hi)) {
+        (Some(a), Some(b)) => Some(LabelKey::Ints(a.min(b), a.max(b))),
+        _ => {
+            let (a, b) = (name(lo)?, name(hi)?);
+            (a == b).then_some(LabelKey::Enum(a))
+        }
     }
 }
