@@ -349,3 +349,30 @@ fn overlapping_case_labels_warn_with_both_locations_and_the_first_label_wins() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+// ------------------------------------------------------------------ 6. integer literals divide as integers
+
+#[test]
+fn integer_literals_divide_as_integers_even_into_a_real() {
+    // ST: `r := 7 / 2` is 3 (was 3.5), a REAL literal makes it a real division, `1.5 + 7 / 2` is
+    // 4.5, `-7 / 2` truncates toward zero, MOD stays integer
+    let (st, _) = run(
+        &fixture("int_division.st"),
+        1,
+        "main.r,main.q,main.m,main.l,main.x,main.i",
+    );
+    assert_eq!(
+        st,
+        "cycle,time_ms,main.r,main.q,main.m,main.l,main.x,main.i\n0,0,3,3.5,4.5,-3,3,3\n"
+    );
+    // IL: `LD 7` / `DIV 2` / `ST r` likewise
+    let (il, _) = run(
+        &fixture("int_division.il"),
+        1,
+        "main.r,main.q,main.l,main.i,main.s",
+    );
+    assert_eq!(
+        il,
+        "cycle,time_ms,main.r,main.q,main.l,main.i,main.s\n0,0,3,3.5,-3,3,1\n"
+    );
+}

@@ -1002,6 +1002,26 @@ impl<'d> PouLowering<'d> {
     /// current result is free.
     fn value(&mut self, e: &Expr, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
         let hint = self.lit_hint.take();
+        // IEC 61131-3: integer literals are ANY_INT, so a division of them is an integer division
+        // (`7 / 2` is 3), even where the context is REAL: computed as LINT, then converted.
+        let real_context = hint
+            .as_ref()
+            .and_then(|h| self.env().elementary(h))
+            .filter(|x| x.is_real());
+        if let Some(real) = real_context {
+            if matches!(self.ty(e), Ty::IntLit) && divides_integers(e) {
+                self.lit_hint = Some(named("LINT", e.span));
+                self.value(e, out, diags);
+                out.push(instr(
+                    InstrKind::FunctionCall {
+                        name: Ident::new(format!("LINT_TO_{}", real.name()), e.span),
+                        args: CallArgs::None,
+                    },
+                    e.span,
+                ));
+                return;
+            }
+        }
         match &e.kind {
             ExprKind::Error => {
                 self.poisoned = true;
@@ -1404,6 +1424,29 @@ fn type_text(t: &TypeRef) -> String {
         TypeRef::Subrange { base, .. } => format!("a subrange of {}", base.name),
         TypeRef::Enum { .. } => "an enumeration".into(),
     }
+}
+
+/// Whether an expression of integer literals holds an integer division (`/` or `MOD`) and no `**`
+/// (whose operand must be real). Walked with a stack: chains can be long.
+fn divides_integers(e: &Expr) -> bool {
+    let mut stack = vec![e];
+    let mut divides = false;
+    while let Some(e) = stack.pop() {
+        match &e.kind {
+            ExprKind::Binary { op, left, right } => {
+                match op {
+                    BinaryOp::Div | BinaryOp::Mod => divides = true,
+                    BinaryOp::Power => return false,
+                    _ => {}
+                }
+                stack.push(left);
+                stack.push(right);
+            }
+            ExprKind::Unary { operand, .. } => stack.push(operand),
+            _ => {}
+        }
+    }
+    divides
 }
 
 /// What a CASE label selects, for the overlap warning W3140: an integer range, or an enumerated
