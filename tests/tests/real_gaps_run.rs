@@ -376,3 +376,57 @@ fn integer_literals_divide_as_integers_even_into_a_real() {
         "cycle,time_ms,main.r,main.q,main.l,main.i,main.s\n0,0,3,3.5,-3,3,1\n"
     );
 }
+
+// ------------------------------------------------------------------ 7. reserved names
+
+#[test]
+fn reserved_names_are_one_located_error_and_the_names_real_projects_use_run() {
+    // what the standard reserves and matiec rejects: one error at the declaration, in ST and IL
+    for (name, why) in [
+        ("TON", "a standard function block"),
+        ("TIME", "an elementary data type"),
+        ("STRING", "an elementary data type"),
+        ("IF", "a keyword"),
+        ("MOD", "a keyword"),
+        ("TRUE", "a keyword"),
+    ] {
+        let want = format!(
+            "error[E1031]: `{name}` is reserved in IEC 61131-3 ({why}): it cannot name a variable \
+             (hint: rename the variable, for example `x{name}`)"
+        );
+        let st = format!(
+            "PROGRAM main\nVAR {name} : BOOL; y : BOOL; END_VAR\ny := NOT y;\nEND_PROGRAM\n"
+        );
+        let (code, lines) = check_text("r.st", &st);
+        assert_eq!(code, Some(1), "{name}: {lines:?}");
+        assert_eq!(lines, vec![format!("r.st:2:5: {want}")], "{name}");
+        let il = format!(
+            "PROGRAM main\nVAR {name} : BOOL; y : BOOL; END_VAR\nLD y\nSTN y\nEND_PROGRAM\n"
+        );
+        let (code, lines) = check_text("r.il", &il);
+        assert_eq!(code, Some(1), "{name}: {lines:?}");
+        assert_eq!(lines, vec![format!("r.il:2:5: {want}")], "{name}");
+    }
+    // a keyword used in the ST body too: still the one error at the declaration, no cascade
+    let (code, lines) = check_text(
+        "k.st",
+        "PROGRAM main\nVAR IF : BOOL; y : BOOL; END_VAR\ny := IF;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(lines[0].starts_with("k.st:2:5: error[E1031]"), "{lines:?}");
+    // accepted: IL operator names (Beremiz's traffic light names variables S and R), standard
+    // block parameters (IN, Q, PT, CU) and standard function names (a CODESYS project's LEN)
+    let (out, _) = run(
+        &fixture("accepted_names.st"),
+        3,
+        "main.S,main.R,main.IN,main.Q,main.PT,main.LEN,main.LD",
+    );
+    assert_eq!(
+        out,
+        "cycle,time_ms,main.S,main.R,main.IN,main.Q,main.PT,main.LEN,main.LD\n\
+         0,0,1,0,1,1,T#10ms,1,1\n\
+         1,10,0,1,0,0,T#20ms,2,0\n\
+         2,20,1,0,1,1,T#30ms,3,1\n"
+    );
+}

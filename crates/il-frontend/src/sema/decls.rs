@@ -588,6 +588,23 @@ impl Analyzer<'_> {
                     .hint("each variable of a POU needs its own name (names are case-insensitive)");
                     continue;
                 }
+                if let Some(why) = reserved_name(&d.name.name) {
+                    // reported once, at the declaration; the variable is kept so that its uses
+                    // give no further errors
+                    self.error(
+                        code::E1031,
+                        d.name.span,
+                        format!(
+                            "`{}` is reserved in IEC 61131-3 ({why}): it cannot name a variable",
+                            d.name.name
+                        ),
+                    )
+                    .label("reserved name")
+                    .hint(format!(
+                        "rename the variable, for example `x{}`",
+                        d.name.name
+                    ));
+                }
                 if b.constant {
                     if let Some(v) = &init {
                         consts.insert(d.name.key(), (ty.clone(), v.clone()));
@@ -1274,5 +1291,88 @@ impl Analyzer<'_> {
             .hint(format!("use one of the values declared for {t}"));
         }
         r
+    }
+}
+
+/// Why `name` cannot name a variable (IEC 61131-3 2nd ed. Annex C, 3rd ed. 6.1.3: keywords, the
+/// names of the elementary data types and of the standard function blocks), or `None`. Names the
+/// standard also lists but real programs use and matiec, CODESYS and ladderc read unambiguously are
+/// accepted: the IL operators (`LD`, `ST`, `S`, `R` ...), the parameter names of the standard
+/// blocks (`IN`, `Q`, `PT`, `CU` ...) and the standard function names (`LEN`, `LIMIT` ...).
+pub fn reserved_name(name: &str) -> Option<&'static str> {
+    const KEYWORDS: &[&str] = &[
+        "IF",
+        "THEN",
+        "ELSIF",
+        "ELSE",
+        "END_IF",
+        "CASE",
+        "OF",
+        "END_CASE",
+        "FOR",
+        "TO",
+        "BY",
+        "DO",
+        "END_FOR",
+        "WHILE",
+        "END_WHILE",
+        "REPEAT",
+        "UNTIL",
+        "END_REPEAT",
+        "EXIT",
+        "CONTINUE",
+        "RETURN",
+        "AND",
+        "OR",
+        "XOR",
+        "NOT",
+        "MOD",
+        "TRUE",
+        "FALSE",
+        "VAR",
+        "VAR_INPUT",
+        "VAR_OUTPUT",
+        "VAR_IN_OUT",
+        "VAR_TEMP",
+        "VAR_EXTERNAL",
+        "VAR_GLOBAL",
+        "VAR_ACCESS",
+        "VAR_CONFIG",
+        "END_VAR",
+        "CONSTANT",
+        "RETAIN",
+        "NON_RETAIN",
+        "AT",
+        "ARRAY",
+        "STRUCT",
+        "END_STRUCT",
+        "TYPE",
+        "END_TYPE",
+        "R_EDGE",
+        "F_EDGE",
+        "PROGRAM",
+        "END_PROGRAM",
+        "FUNCTION",
+        "END_FUNCTION",
+        "FUNCTION_BLOCK",
+        "END_FUNCTION_BLOCK",
+        "CONFIGURATION",
+        "END_CONFIGURATION",
+        "RESOURCE",
+        "END_RESOURCE",
+        "ON",
+        "WITH",
+    ];
+    let up = name.to_ascii_uppercase();
+    if KEYWORDS.contains(&up.as_str()) {
+        Some("a keyword")
+    } else if Elementary::from_name(&up).is_some()
+        || matches!(up.as_str(), "STRING" | "WSTRING" | "LTIME")
+    {
+        Some("an elementary data type")
+    } else if StdFb::from_name(&up).is_some() {
+        Some("a standard function block")
+    } else {
+        None
     }
 }

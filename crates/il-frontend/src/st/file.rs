@@ -576,6 +576,17 @@ pub fn compile_pending(
                 if p.name.span.file != pb.file || p.name.span.start as usize != pb.name_start {
                     continue;
                 }
+                // a variable named with a keyword (`IF : BOOL`) cannot be read in ST: sema
+                // reports it once at the declaration (E1031), and the body is not parsed into a
+                // cascade of syntax errors
+                let keyword_var = p
+                    .var_blocks
+                    .iter()
+                    .flat_map(|b| b.vars.iter())
+                    .any(|v| crate::sema::reserved_name(&v.name.name) == Some("a keyword"));
+                if keyword_var {
+                    continue;
+                }
                 let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
                 let (body, temps, actions) = super::compile_body_with_actions(
                     pb.file,
