@@ -101,6 +101,24 @@ fn codesys_fb_actions_run_from_st_and_il_bodies() {
 }
 
 #[test]
+fn an_action_calling_an_action_of_another_instance_runs_it_once() {
+    // main calls p.Press() once a cycle; Press counts and calls l.Switch() on Panel's Lamp, which
+    // toggles `lit`; the Lamp's body (p's own call l()) counts n once a cycle
+    let (trace, _) = run(
+        &fixture("action_chain.st"),
+        3,
+        "main.p.presses,main.p.l.lit,main.p.l.n",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.p.presses,main.p.l.lit,main.p.l.n\n\
+         0,0,1,1,1\n\
+         1,10,2,0,2\n\
+         2,20,3,1,3\n"
+    );
+}
+
+#[test]
 fn an_action_of_a_program_called_from_another_pou_is_a_located_error() {
     let src = "PROGRAM counter\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n\
                ACTIONS\nACTION Reset:\nn := 0;\nEND_ACTION\nEND_ACTIONS\n\

@@ -76,91 +76,110 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             LibraryElement::DataTypes(_) | LibraryElement::Action(_) => {}
         }
     }
-    // the calls: rewritten, and the called actions noted per function block (upper-case names)
-    let mut called: HashMap<String, Vec<String>> = HashMap::new();
-    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
-        let LibraryElement::Pou(p) = item else {
-            continue;
-        };
-        let mut locals: HashMap<String, TypeRef> = HashMap::new();
-        for v in p.var_blocks.iter().flat_map(|b| b.vars.iter()) {
-            locals.insert(v.name.key(), v.ty.clone());
-        }
-        let scope = Scope {
-            locals: &locals,
-            globals: &globals,
-            kinds: &kinds,
-            actions: &actions,
-        };
-        rewrite_calls(&mut p.body, &scope, &mut called, diags);
-    }
-    // the callees: flags, dispatch and the actions' statements
-    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
-        let LibraryElement::Pou(p) = item else {
-            continue;
-        };
-        let Some(names) = called.get(&p.name.key()) else {
-            continue;
-        };
-        let Some(list) = actions.remove(&p.name.key()) else {
-            continue;
-        };
-        let linked: Vec<Action> = list
-            .into_iter()
-            .filter(|a| names.contains(&a.name.key()))
-            .collect();
-        let span = p.span;
-        let end = Ident::new(format!("{LABEL_PREFIX}END"), span);
-        let mut body = Vec::new();
-        let mut tail = vec![jump(Condition::Always, &end, span)];
-        let mut flags = Vec::new();
-        for a in linked {
-            let s = a.name.span;
-            let flag = VarRef {
-                base: Ident::new(flag_name(&a.name), s),
-                accessors: Vec::new(),
-                span: s,
+    // In rounds: the calls are rewritten and the called actions noted per function block
+    // (upper-case names), then linked into their blocks; a linked action's own calls of actions
+    // are rewritten in the next round.
+    let mut linked_before: Vec<(String, String)> = Vec::new();
+    for round in 0.. {
+        let mut called: HashMap<String, Vec<String>> = HashMap::new();
+        for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+            let LibraryElement::Pou(p) = item else {
+                continue;
             };
-            let label = Ident::new(
-                format!("{LABEL_PREFIX}{}", a.name.name.to_ascii_uppercase()),
-                s,
-            );
-            flags.push(VarDecl::new(
-                flag.base.clone(),
-                TypeRef::Named(Ident::new("BOOL", s)),
-                s,
-            ));
-            body.push(simple(Op::Ld, Operand::Var(flag.clone()), s));
-            body.push(jump(Condition::IfTrue, &label, s));
-            tail.push(IlStmt::Label(label));
-            tail.push(simple(Op::Ld, bool_lit(false, s), s));
-            tail.push(simple(Op::St, Operand::Var(flag), s));
-            tail.extend(a.body);
-            tail.push(jump(Condition::Always, &end, s));
-            if let Some(t) = a.temps {
-                p.var_blocks.push(t);
+            let mut locals: HashMap<String, TypeRef> = HashMap::new();
+            for v in p.var_blocks.iter().flat_map(|b| b.vars.iter()) {
+                locals.insert(v.name.key(), v.ty.clone());
             }
-            for d in a.diagnostics {
-                let known = diags
-                    .iter()
-                    .any(|e| e.code == d.code && e.span == d.span && e.message == d.message);
-                if !known {
-                    diags.push(d);
+            let scope = Scope {
+                locals: &locals,
+                globals: &globals,
+                kinds: &kinds,
+                actions: &actions,
+            };
+            rewrite_calls(&mut p.body, &scope, &mut called, diags);
+        }
+        // the callees: flags, dispatch and the actions' statements
+        let mut progress = false;
+        for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+            let LibraryElement::Pou(p) = item else {
+                continue;
+            };
+            let key = p.name.key();
+            let Some(names) = called.get(&key) else {
+                continue;
+            };
+            let Some(list) = actions.get(&key) else {
+                continue;
+            };
+            let linked: Vec<Action> = list
+                .iter()
+                .filter(|a| {
+                    names.contains(&a.name.key())
+                        && !linked_before.contains(&(key.clone(), a.name.key()))
+                })
+                .cloned()
+                .collect();
+            if linked.is_empty() {
+                continue;
+            }
+            linked_before.extend(linked.iter().map(|a| (key.clone(), a.name.key())));
+            progress = true;
+            let span = p.span;
+            let end = Ident::new(format!("{LABEL_PREFIX}END{round}"), span);
+            let mut body = Vec::new();
+            let mut tail = vec![jump(Condition::Always, &end, span)];
+            let mut flags = Vec::new();
+            for a in linked {
+                let s = a.name.span;
+                let flag = VarRef {
+                    base: Ident::new(flag_name(&a.name), s),
+                    accessors: Vec::new(),
+                    span: s,
+                };
+                let label = Ident::new(
+                    format!("{LABEL_PREFIX}{}", a.name.name.to_ascii_uppercase()),
+                    s,
+                );
+                flags.push(VarDecl::new(
+                    flag.base.clone(),
+                    TypeRef::Named(Ident::new("BOOL", s)),
+                    s,
+                ));
+                body.push(simple(Op::Ld, Operand::Var(flag.clone()), s));
+                body.push(jump(Condition::IfTrue, &label, s));
+                tail.push(IlStmt::Label(label));
+                tail.push(simple(Op::Ld, bool_lit(false, s), s));
+                tail.push(simple(Op::St, Operand::Var(flag), s));
+                tail.extend(a.body);
+                tail.push(jump(Condition::Always, &end, s));
+                if let Some(t) = a.temps {
+                    p.var_blocks.push(t);
+                }
+                for d in a.diagnostics {
+                    let known = diags
+                        .iter()
+                        .any(|e| e.code == d.code && e.span == d.span && e.message == d.message);
+                    if !known {
+                        diags.push(d);
+                    }
                 }
             }
+            tail.push(IlStmt::Label(end));
+            body.append(&mut p.body);
+            body.append(&mut tail);
+            p.body = body;
+            p.var_blocks.push(VarBlock {
+                name: None,
+                kind: VarKind::Input,
+                constant: false,
+                retain: false,
+                vars: flags,
+                span,
+            });
         }
-        tail.push(IlStmt::Label(end));
-        body.append(&mut p.body);
-        body.append(&mut tail);
-        p.body = body;
-        p.var_blocks.push(VarBlock {
-            name: None,
-            kind: VarKind::Input,
-            constant: false,
-            retain: false,
-            vars: flags,
-            span,
-        });
+        if !progress {
+            break;
+        }
     }
 }
 
@@ -238,6 +257,12 @@ fn rewrite_calls(
             continue;
         };
         if let Some(a) = scope.program_action(instance) {
+            if diags
+                .iter()
+                .any(|d| d.code == code::E3135 && d.span == Some(instance.span))
+            {
+                continue;
+            }
             diags.push(
                 Diagnostic::error(
                     code::E3135,
