@@ -250,10 +250,8 @@ fn rewrite_calls(
     for s in body.iter_mut() {
         let IlStmt::Instr(i) = s else { continue };
         let span = i.span;
+        // (a CAL is a statement of its own: never inside a deferred operator's nested list)
         let InstrKind::Call { instance, args, .. } = &mut i.kind else {
-            if let InstrKind::Deferred { body, .. } = &mut i.kind {
-                rewrite_calls(body, scope, called, diags);
-            }
             continue;
         };
         if let Some(a) = scope.program_action(instance) {
