@@ -503,7 +503,7 @@ impl<'d> PouLowering<'d> {
         out.extend(code);
         let end = self.fresh_label("END_CASE", span);
         let mut targets = Vec::new();
-        let mut seen: Vec<(LabelKey, Span)> = Vec::new();
+        let mut seen = LabelSet::default();
         for arm in arms {
             let target = self.fresh_label("CASE", arm.span);
             for label in &arm.labels {
@@ -527,7 +527,7 @@ impl<'d> PouLowering<'d> {
                     CaseLabel::Range(lo, hi) => lo.span.to(hi.span),
                 };
                 if let Some(k) = key {
-                    if let Some((_, first)) = seen.iter().find(|(p, _)| p.overlaps(&k)) {
+                    if let Some(first) = seen.first_overlap(&k) {
                         diags.push(
                             Diagnostic::warning(
                                 code::W3140,
@@ -535,11 +535,11 @@ impl<'d> PouLowering<'d> {
                             )
                             .at(at)
                             .with_primary_label("never chosen for the values it shares")
-                            .with_label(*first, "earlier label with the same value")
+                            .with_label(first, "earlier label with the same value")
                             .with_hint("remove the value from one of the labels (IEC 61131-3 requires distinct labels)"),
                         );
                     }
-                    seen.push((k, at));
+                    seen.insert(k, at);
                 }
                 match label {
                     CaseLabel::Value(v) => {
@@ -1456,12 +1456,45 @@ enum LabelKey {
     Enum(String),
 }
 
-impl LabelKey {
-    fn overlaps(&self, other: &LabelKey) -> bool {
-        match (self, other) {
-            (LabelKey::Ints(a, b), LabelKey::Ints(c, d)) => a <= d && c <= b,
-            (LabelKey::Enum(a), LabelKey::Enum(b)) => a == b,
-            _ => false,
+/// The labels of one CASE seen so far, for W3140: single values and enumerated values are looked
+/// up in logarithmic or constant time; ranges are compared one by one, up to [`MAX_CASE_RANGES`]
+/// of them (a generated CASE of thousands of ranges is not compared quadratically).
+#[derive(Default)]
+struct LabelSet {
+    singles: std::collections::BTreeMap<i128, Span>,
+    ranges: Vec<(i128, i128, Span)>,
+    enums: HashMap<String, Span>,
+}
+
+/// How many ranges of one CASE are compared with the labels after them.
+const MAX_CASE_RANGES: usize = 1024;
+
+impl LabelSet {
+    /// The earliest-seen label among those that share a value with `k` (the first found).
+    fn first_overlap(&self, k: &LabelKey) -> Option<Span> {
+        match k {
+            LabelKey::Enum(n) => self.enums.get(n).copied(),
+            LabelKey::Ints(lo, hi) => self
+                .ranges
+                .iter()
+                .find(|(a, b, _)| a <= hi && lo <= b)
+                .map(|r| r.2)
+                .or_else(|| self.singles.range(*lo..=*hi).next().map(|(_, s)| *s)),
+        }
+    }
+    fn insert(&mut self, k: LabelKey, at: Span) {
+        match k {
+            LabelKey::Enum(n) => {
+                self.enums.entry(n).or_insert(at);
+            }
+            LabelKey::Ints(lo, hi) if lo == hi => {
+                self.singles.entry(lo).or_insert(at);
+            }
+            LabelKey::Ints(lo, hi) => {
+                if self.ranges.len() < MAX_CASE_RANGES {
+                    self.ranges.push((lo, hi, at));
+                }
+            }
         }
     }
 }
