@@ -114,7 +114,7 @@ impl Analyzer<'_> {
                             // qualified; an unqualified `x` is ambiguous (E1030)
                             if let Some(list) = &block.name {
                                 let at = GlobalRef::Free(self.model.globals.len());
-                                self.add_list_member(list, at);
+                                self.add_list_member(list, at, &v.name);
                             }
                             self.model.globals.push(v);
                             continue;
@@ -137,7 +137,8 @@ impl Analyzer<'_> {
                             }
                         }
                         if let Some(list) = &block.name {
-                            self.add_list_member(list, GlobalRef::Free(self.model.globals.len()));
+                            let at = GlobalRef::Free(self.model.globals.len());
+                            self.add_list_member(list, at, &v.name);
                         }
                         self.free_globals.insert(key, self.model.globals.len());
                         self.model.globals.push(v);
@@ -200,7 +201,7 @@ impl Analyzer<'_> {
     }
 
     /// Adds a global to the named list `list` (a CODESYS GVL), creating the list on first use.
-    fn add_list_member(&mut self, list: &ast::Ident, r: GlobalRef) {
+    fn add_list_member(&mut self, list: &ast::Ident, r: GlobalRef, name: &str) {
         let lists = &mut self.model.global_lists;
         let at = match lists
             .iter_mut()
@@ -220,6 +221,11 @@ impl Analyzer<'_> {
             }
         };
         self.model.list_of_global.insert(r, at);
+        let key = name.to_ascii_uppercase();
+        let lists = self.model.lists_of_name.entry(key).or_default();
+        if !lists.contains(&at) {
+            lists.push(at);
+        }
     }
 
     /// Records the members of the named blocks among `blocks`, declared as `globals` (in order; a
@@ -234,7 +240,7 @@ impl Analyzer<'_> {
             let Some(list) = &b.name else { continue };
             for v in &b.vars {
                 if let Some(i) = globals.iter().position(|g| g.span == v.name.span) {
-                    self.add_list_member(list, at(i));
+                    self.add_list_member(list, at(i), &v.name.name);
                 }
             }
         }

@@ -997,6 +997,9 @@ pub struct Model {
     /// The list (index into `global_lists`) each member of a named list belongs to.
     #[serde(skip)]
     pub list_of_global: FxHashMap<GlobalRef, usize>,
+    /// Upper-case member name -> the lists (indexes into `global_lists`) declaring it, in order.
+    #[serde(skip)]
+    pub lists_of_name: FxHashMap<String, Vec<usize>>,
     /// Whether a body reads `inst.ENO` of a standard FB instance (then every call stores the
     /// instance's ENO; otherwise only calls with EN do).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
@@ -1238,10 +1241,12 @@ impl Model {
         if self.global_lists.len() < 2 {
             return Vec::new();
         }
-        self.global_lists
-            .iter()
-            .filter(|l| self.list_member(l, name).is_some())
-            .collect()
+        with_upper(name, |key| {
+            self.lists_of_name
+                .get(key)
+                .map(|ls| ls.iter().map(|&l| &self.global_lists[l]).collect())
+                .unwrap_or_default()
+        })
     }
     /// The member `member` of a global variable list.
     pub fn list_member(&self, list: &GlobalList, member: &str) -> Option<GlobalRef> {
