@@ -226,32 +226,33 @@ fn an_unqualified_use_of_a_shared_list_member_is_one_located_error_naming_the_li
 // ------------------------------------------------------------------ 4. SFC indicator variables
 
 #[test]
-fn textual_sfc_indicator_variables_follow_the_action_being_active() {
-    // Run is active in cycles 2-4 and 6-8; Tick(N, filling) drives `filling` exactly then; the
-    // boolean action valve(L, T#20ms, draining) is active for 20 ms of each activation, and so is
-    // its indicator `draining`
+fn textual_sfc_indicator_variables_are_set_by_the_action_never_by_the_chart() {
+    // IEC 61131-3: an indicator variable shows the action's completion, set by the action's own
+    // logic. Run is active in cycles 2-4 and 6-8; Tick(N, done) sets `done` once n >= 30 (cycle 4)
+    // and nothing resets it; the boolean action valve(L, T#20ms, draining) never writes its
+    // indicator `draining`, which stays FALSE. Driven from Q, `done` would be 0,0,1,1,0,0,1,1,0.
     let (trace, _) = run(
         &fixture("indicators.st"),
         9,
-        "Fill.n,Fill.__sfc_X_Run,Fill.filling,Fill.valve,Fill.draining",
+        "Fill.n,Fill.__sfc_X_Run,Fill.done,Fill.valve,Fill.draining",
     );
     assert_eq!(
         trace,
-        "cycle,time_ms,Fill.n,Fill.__sfc_X_Run,Fill.filling,Fill.valve,Fill.draining\n\
+        "cycle,time_ms,Fill.n,Fill.__sfc_X_Run,Fill.done,Fill.valve,Fill.draining\n\
          0,0,1,0,0,0,0\n\
          1,10,2,0,0,0,0\n\
-         2,20,13,1,1,1,1\n\
-         3,30,23,1,1,1,1\n\
+         2,20,13,1,0,1,0\n\
+         3,30,23,1,0,1,0\n\
          4,40,33,1,1,0,0\n\
-         5,50,44,0,0,0,0\n\
-         6,60,55,1,1,1,1\n\
-         7,70,65,1,1,1,1\n\
+         5,50,44,0,1,0,0\n\
+         6,60,55,1,1,1,0\n\
+         7,70,65,1,1,1,0\n\
          8,80,75,1,1,0,0\n"
     );
 }
 
 #[test]
-fn plcopen_action_indicator_attribute_is_set_while_the_action_is_active() {
+fn plcopen_action_indicator_attribute_is_checked_and_left_to_the_action() {
     // tests/fixtures/sfc/actions.xml with an indicator on two associations: `lim_on` on the L T#30ms
     // boolean action `limited`, `pulse_on` on the P action `Pulse` (active for one scan)
     let src = std::fs::read_to_string(
@@ -293,18 +294,14 @@ fn plcopen_action_indicator_attribute_is_set_while_the_action_is_active() {
             "main.p_count",
         ],
     );
+    // the actions are active (limited is TRUE for 30 ms) but no action body writes its
+    // indicator: the chart does not drive them
     assert_eq!(
-        common::column(&trace, "main.lim_on"),
-        common::column(&trace, "main.limited")
-    );
-    assert_eq!(
-        common::column(&trace, "main.lim_on"),
+        common::column(&trace, "main.limited"),
         [0.0, 1.0, 1.0, 1.0, 0.0, 0.0]
     );
-    assert_eq!(
-        common::column(&trace, "main.pulse_on"),
-        [0.0, 1.0, 0.0, 0.0, 0.0, 0.0]
-    );
+    assert_eq!(common::column(&trace, "main.lim_on"), [0.0; 6]);
+    assert_eq!(common::column(&trace, "main.pulse_on"), [0.0; 6]);
     // an indicator that is not a BOOL variable is a located error
     let (code, lines) = check_text(
         "bad.xml",

@@ -110,7 +110,8 @@ pub struct Action<'e, 'a> {
     /// (qualifier, step index, duration) per association.
     pub uses: Vec<(Qualifier, usize, Option<Operand>)>,
     /// The indicator variables of its associations (the `indicator` attribute, textual SFC's
-    /// `act(N, ind)`): BOOL variables that are TRUE while the action is active (its `Q`).
+    /// `act(N, ind)`): declared BOOL variables that the action's own body sets to indicate
+    /// completion, time-out or errors (IEC 61131-3); the chart never drives them.
     pub indicators: Vec<Operand>,
     /// The first association's element.
     pub span: Span,
@@ -203,7 +204,7 @@ pub fn collect<'e, 'a>(
             continue;
         }
         // Indicator variables (IEC 61131-3 2nd ed. 2.6.4.2 field "d", 3rd ed. 6.7.4): declared
-        // BOOL variables, set from the action's Q every scan
+        // BOOL variables, which the action's body sets (the chart does not drive them)
         let mut indicators: Vec<Operand> = Vec::new();
         let mut bad_indicator = false;
         for ind in
@@ -532,10 +533,6 @@ pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<
             q.clone()
         }
     };
-    for ind in &act.indicators {
-        out.push(il::op(Op::Ld, v(&q)));
-        out.push(il::op(Op::St, ind.clone()));
-    }
     match &act.target {
         Target::Variable(var) => {
             out.push(il::op(Op::Ld, v(&q)));
