@@ -22,7 +22,10 @@ fn codesys_global_lists_without_var_external_run() {
         .arg(fixture())
         .args(["--cycles", "4", "--sanitize", "--trace"])
         .arg(&trace)
-        .args(["--watch", "iCount,xLamp,xMotor,PRG_MAIN.iCount,fbPulse.ET"])
+        .args([
+            "--watch",
+            "GVL.iCount,GVL.xLamp,GVL.xMotor,PRG_MAIN.iCount,GVL.fbPulse.ET",
+        ])
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
@@ -33,7 +36,7 @@ fn codesys_global_lists_without_var_external_run() {
     let text = std::fs::read_to_string(&trace).unwrap();
     assert_eq!(
         text,
-        "cycle,time_ms,iCount,xLamp,xMotor,PRG_MAIN.iCount,fbPulse.ET\n\
+        "cycle,time_ms,GVL.iCount,GVL.xLamp,GVL.xMotor,PRG_MAIN.iCount,GVL.fbPulse.ET\n\
          0,0,1,1,1,-1,T#0ms\n\
          1,10,2,1,1,-1,T#10ms\n\
          2,20,3,0,0,-1,T#20ms\n\

@@ -26,7 +26,7 @@ fn qualified_global_list_members_run_in_st_il_ld_and_fbd() {
         .arg(&trace)
         .args([
             "--watch",
-            "iCount,PRG_ST.iCount,iLevel,iPlus,fbTimer.ET,xDone,xLamp",
+            "GVL_Main.iCount,PRG_ST.iCount,GVL_IO.iLevel,GVL_IO.iPlus,GVL_Main.fbTimer.ET,GVL_Main.xDone,GVL_IO.xLamp",
         ])
         .output()
         .unwrap();
@@ -40,7 +40,7 @@ fn qualified_global_list_members_run_in_st_il_ld_and_fbd() {
     let text = std::fs::read_to_string(&trace).unwrap();
     assert_eq!(
         text,
-        "cycle,time_ms,iCount,PRG_ST.iCount,iLevel,iPlus,fbTimer.ET,xDone,xLamp\n\
+        "cycle,time_ms,GVL_Main.iCount,PRG_ST.iCount,GVL_IO.iLevel,GVL_IO.iPlus,GVL_Main.fbTimer.ET,GVL_Main.xDone,GVL_IO.xLamp\n\
          0,0,1,100,10,15,T#0ms,0,0\n\
          1,10,2,100,20,25,T#0ms,0,0\n\
          2,20,3,100,30,35,T#0ms,0,0\n\

@@ -23,7 +23,7 @@ VAR
     mv3 : MC_MoveLinearAbsolute;
     rv : MC_GroupReadActualVelocity;
     rp : MC_GroupReadActualPosition;
-    rs : MC_GroupReadStatus;
+    grs : MC_GroupReadStatus;
     p1 : ARRAY [0..5] OF LREAL := [1600.0, 1200.0, 800.0];
     p2 : ARRAY [0..5] OF LREAL := [2200.0, 3800.0, 5000.0];
     p3 : ARRAY [0..5] OF LREAL := [4500.0, 4200.0, 4800.0];
@@ -63,7 +63,7 @@ END_VAR
             Deceleration := 5.0, Jerk := 2.0, BufferMode := mcBlendingHigh, Done => done3)
     CAL rv(AxesGroup := G1, Enable := TRUE, Velocity => vel, PathVelocity => pv)
     CAL rp(AxesGroup := G1, Enable := TRUE, Position => pos)
-    CAL rs(AxesGroup := G1, Enable := TRUE, GroupMoving => moving)
+    CAL grs(AxesGroup := G1, Enable := TRUE, GroupMoving => moving)
 END_PROGRAM
 ";
 
@@ -535,7 +535,7 @@ VAR
     ung : MC_UngroupAllAxes;
     rp : MC_GroupReadActualPosition;
     rv : MC_GroupReadActualVelocity;
-    rs : MC_GroupReadStatus;
+    grs : MC_GroupReadStatus;
     zero : ARRAY [0..5] OF LREAL;
     dist : ARRAY [0..5] OF LREAL := [10.0, 10.0];
     centre : ARRAY [0..5] OF LREAL := [10.0, 0.0];
@@ -588,7 +588,7 @@ END_VAR
     CAL ung(AxesGroup := G1, Execute := rem.Done)
     CAL rp(AxesGroup := G1, Enable := TRUE, Position => pos)
     CAL rv(AxesGroup := G1, Enable := TRUE, Velocity => vel, PathVelocity => pv)
-    CAL rs(AxesGroup := G1, Enable := TRUE, GroupStandby => standby, GroupDisabled => disabled)
+    CAL grs(AxesGroup := G1, Enable := TRUE, GroupStandby => standby, GroupDisabled => disabled)
     LD add1.ErrorID
     OR add2.ErrorID
     OR en.ErrorID

@@ -426,13 +426,13 @@ VAR_IN_OUT
   v : INT;
 END_VAR
 VAR_INPUT
-  by : INT;
+  step : INT;
 END_VAR
 VAR_TEMP
   tmp : INT;
 END_VAR
   LD v
-  ADD by
+  ADD step
   ST tmp
   LD tmp
   ST v
@@ -462,7 +462,7 @@ VAR
   ok : BOOL;
 END_VAR
   CAL a(total := sum, x := 10)
-  bump(v := n, by := 2)
+  bump(v := n, step := 2)
   ST ok
 END_PROGRAM
 ";

@@ -1,4 +1,5 @@
-//! User text can never become C: identifiers that are C keywords or runtime names, and strings holding
+//! User text can never become C: identifiers that are C keywords or runtime names (those IEC 61131-3
+//! does not reserve itself: `goto`, `long`, `switch`, `static` ...), and strings holding
 //! C syntax, compile and behave as plain data.
 
 mod support;
@@ -8,32 +9,32 @@ use support::*;
 fn c_keywords_and_runtime_names_as_iec_identifiers_compile_safely() {
     let src = "FUNCTION_BLOCK main
 VAR_INPUT
-  return : INT;
+  goto : INT;
 END_VAR
 VAR_OUTPUT
   static : INT;
 END_VAR
-  LD return
+  LD goto
   ADD 1
   ST static
 END_FUNCTION_BLOCK
 PROGRAM printf
 VAR
   self : main;
-  exit : INT;
+  abort : INT;
   ladderc_now : INT;
   int_ : INT;
-  int : DINT;
+  long : DINT;
   char : DINT;
-  while : INT := 41;
+  switch : INT := 41;
   _Bool : BOOL;
 END_VAR
-  CAL self(return := while, static => exit)
-  LD exit
+  CAL self(goto := switch, static => abort)
+  LD abort
   ST ladderc_now
   ST int_
-  ST int
-  LD int
+  ST long
+  LD long
   ADD 1
   ST char
   LD TRUE
@@ -49,18 +50,18 @@ END_PROGRAM
         10.0,
         "",
         &[
-            "printf.exit",
+            "printf.abort",
             "printf.ladderc_now",
             "printf.int_",
             "printf._Bool",
-            "printf.int",
+            "printf.long",
             "printf.char",
         ],
     );
-    assert_eq!(column(&rows, "printf.exit"), ["42", "42"]);
+    assert_eq!(column(&rows, "printf.abort"), ["42", "42"]);
     assert_eq!(column(&rows, "printf.ladderc_now"), ["42", "42"]);
     assert_eq!(column(&rows, "printf._Bool"), ["1", "1"]);
-    assert_eq!(column(&rows, "printf.int"), ["42", "42"]);
+    assert_eq!(column(&rows, "printf.long"), ["42", "42"]);
     assert_eq!(column(&rows, "printf.char"), ["43", "43"]);
 }
 

@@ -274,8 +274,8 @@ fn string_to_date_tod_dt_read_iec_literals_with_or_without_prefix() {
 VAR
   s : STRING;
   d : DATE;
-  tod : TOD;
-  dt : DT;
+  tod1 : TOD;
+  dt1 : DT;
   back : STRING;
 END_VAR
   LD s
@@ -285,10 +285,10 @@ END_VAR
   ST back
   LD s
   STRING_TO_TOD
-  ST tod
+  ST tod1
   LD s
   STRING_TO_DT
-  ST dt
+  ST dt1
 END_PROGRAM
 ",
     );
@@ -298,7 +298,7 @@ END_PROGRAM
         6,
         10.0,
         stim,
-        &["main.d", "main.tod", "main.dt", "main.back"],
+        &["main.d", "main.tod1", "main.dt1", "main.back"],
     );
     assert_eq!(
         column(&rows, "main.d"),
@@ -313,7 +313,7 @@ END_PROGRAM
     );
     assert_eq!(column(&rows, "main.back")[0], "\"D#2024-02-29\"");
     assert_eq!(
-        column(&rows, "main.tod"),
+        column(&rows, "main.tod1"),
         [
             "TOD#00:00:00",
             "TOD#00:00:00",
@@ -323,6 +323,6 @@ END_PROGRAM
             "TOD#00:00:00"
         ]
     );
-    assert_eq!(column(&rows, "main.dt")[4], "DT#2024-01-31-23:59:59");
-    assert_eq!(column(&rows, "main.dt")[5], "DT#1970-01-01-00:00:00");
+    assert_eq!(column(&rows, "main.dt1")[4], "DT#2024-01-31-23:59:59");
+    assert_eq!(column(&rows, "main.dt1")[5], "DT#1970-01-01-00:00:00");
 }

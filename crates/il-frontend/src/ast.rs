@@ -64,6 +64,28 @@ pub enum LibraryElement {
     Configuration(Configuration),
     /// `VAR_GLOBAL` outside a configuration (accepted as an extension; it belongs to every program).
     GlobalVars(VarBlock),
+    /// An action of a program or function block (CODESYS, Beremiz, RuSTy), compiled on its own so that
+    /// another POU can call it (`inst.Act();`, `CAL inst.Act`). [`crate::actions::link`] merges the
+    /// actions that are called from outside their POU into it and drops this element: sema and the
+    /// back end never see it.
+    Action(Action),
+}
+
+/// An action of a program or function block, lowered to IL in the scope of its POU.
+#[derive(Debug, Clone, Serialize)]
+pub struct Action {
+    /// The POU the action belongs to.
+    pub pou: Ident,
+    /// The action's name.
+    pub name: Ident,
+    /// The action's statements (labels unique within the POU).
+    pub body: Vec<IlStmt>,
+    /// Temporaries the lowering of the statements needs (a `VAR_TEMP` block), if any.
+    pub temps: Option<VarBlock>,
+    /// Diagnostics of the lowering, reported only when the action is linked (an action never called
+    /// from outside its POU is checked where its POU calls it, as before).
+    #[serde(skip)]
+    pub diagnostics: Vec<diagnostics::Diagnostic>,
 }
 
 // ---------------------------------------------------------------- types

@@ -915,6 +915,24 @@ impl<'s> Ctx<'s> {
             (format!("unexpected {found}"), format!("expected {expect}"))
         };
         let (s, end) = if tok == Tok::Eol { (s, s) } else { (s, end) };
+        // a keyword where a variable's name is expected (`VAR TRUE : BOOL;`): say it is reserved
+        let word = text.trim();
+        if expect.starts_with("a name")
+            && hint == format!("expected {expect}")
+            && !word.to_ascii_uppercase().starts_with("END_")
+            && !word.is_empty()
+            && crate::sema::reserved_name(word).is_some()
+        {
+            let why = crate::sema::reserved_name(word).unwrap_or("a keyword");
+            self.hint(
+                code::E1031,
+                format!("`{word}` is reserved in IEC 61131-3 ({why}): it cannot name a variable"),
+                s,
+                end,
+                &format!("rename the variable, for example `x{word}`"),
+            );
+            return;
+        }
         self.hint(code::E0011, msg, s, end, &hint);
     }
 }

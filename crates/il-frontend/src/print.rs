@@ -24,6 +24,7 @@ pub fn unit(u: &CompilationUnit) -> String {
             LibraryElement::DataTypes(types) => type_block(&mut out, types),
             LibraryElement::Configuration(c) => configuration(&mut out, c),
             LibraryElement::GlobalVars(v) => var_block(&mut out, v, 0),
+            LibraryElement::Action(_) => {}
         }
     }
     out

@@ -79,7 +79,7 @@ pub fn lower_pou_body(
                 )
                 .at(ctx.tag(first))
                 .with_primary_label("action of a program or function block")
-                .with_hint("actions are compiled as the actions of an SFC chart, and as ST actions called from an ST body (`Act();`); a call of this one is an unknown function (E1019)")
+                .with_hint("actions are compiled as the actions of an SFC chart, and as ST actions of an ST body (called as `Act();` from the body, or as `inst.Act();` / `CAL inst.Act` from other POUs); a call of this one is an unknown function (E1019)")
                 .with_xml(xml_ctx.clone()),
             );
         }

@@ -25,6 +25,9 @@ pub struct Ctx<'a> {
     pub constants: HashMap<String, i128>,
     /// The constants of the POU being read (`VAR CONSTANT`), which shadow the global ones.
     pub local_constants: HashMap<String, i128>,
+    /// The actions of the POUs read so far, each lowered on its own (for calls from other POUs:
+    /// `il_frontend::actions::link`); the unit gets them at its end.
+    pub actions: Vec<il_frontend::ast::Action>,
 }
 
 impl<'a> Ctx<'a> {
@@ -69,6 +72,7 @@ impl<'a> Ctx<'a> {
             diags,
             constants: HashMap::new(),
             local_constants: HashMap::new(),
+            actions: Vec::new(),
         }
     }
     /// The value of a named integer constant (the POU's own first).

@@ -47,7 +47,15 @@ pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::Com
         );
     }
     match root {
-        Some(r) => project::read_project(&mut ctx, &r),
+        Some(r) => {
+            let mut unit = project::read_project(&mut ctx, &r);
+            unit.items.extend(
+                std::mem::take(&mut ctx.actions)
+                    .into_iter()
+                    .map(ast::LibraryElement::Action),
+            );
+            unit
+        }
         None => {
             let span = ctx.span(0, 0);
             ctx.error(

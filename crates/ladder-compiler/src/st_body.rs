@@ -67,9 +67,21 @@ pub fn lower(
             (n.clone(), a.text, a.base)
         })
         .collect();
-    let out = il_frontend::st::compile_body_with_actions(
+    let (body, temps, standalone) = il_frontend::st::compile_body_with_actions(
         ctx.file, &t.text, t.base, decls, pou, &actions, span, &mut local,
     );
+    let xml = XmlContext {
+        pou: Some(pou.name.name.clone()),
+        ..Default::default()
+    };
+    for mut a in standalone {
+        for d in &mut a.diagnostics {
+            if d.xml.is_none() {
+                d.xml = Some(xml.clone());
+            }
+        }
+        ctx.actions.push(a);
+    }
     for d in local {
         let d = if d.xml.is_none() {
             d.with_xml(XmlContext {
@@ -81,7 +93,7 @@ pub fn lower(
         };
         ctx.report(d);
     }
-    out
+    (body, temps)
 }
 
 /// Joins operators that XML entities split: `&lt;=` is rebuilt as `<` plus padding, which would read

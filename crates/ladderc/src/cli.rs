@@ -188,7 +188,8 @@ pub enum Command {
         /// CSV rows `cycle,variable,value`, applied before that cycle.
         #[arg(long)]
         stimulus: Option<PathBuf>,
-        /// CSV trace: `cycle,time_ms,VAR...`, one row per cycle after the cycle.
+        /// CSV trace: `cycle,time_ms,VAR...`, one row per cycle after the cycle; `-` (or no
+        /// `--trace`) writes it to standard output.
         #[arg(long)]
         trace: Option<PathBuf>,
         /// Variables to trace (`main.count`, `inst.count`, `%QX0.1`), comma-separated.
@@ -810,6 +811,10 @@ fn run_program(
             )
         }
     };
+    // `--trace -`: the trace goes to standard output, as it does without `--trace`.
+    if run.trace.as_deref() == Some(std::path::Path::new("-")) {
+        run.trace = None;
+    }
     // The trace is written beside its destination and moved into place only when the run succeeded.
     let final_trace = run.trace.clone();
     if let Some(t) = &final_trace {

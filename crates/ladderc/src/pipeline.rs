@@ -335,6 +335,7 @@ impl Session {
         }
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
+        il_frontend::actions::link(&mut units, &mut self.diags);
         units
     }
 
@@ -827,7 +828,7 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
             LibraryElement::Pou(p) => p.var_blocks.iter().collect(),
             LibraryElement::GlobalVars(b) => vec![b],
             LibraryElement::Configuration(c) => c.globals.iter().chain(c.resources.iter().flat_map(|r| r.globals.iter())).collect(),
-            LibraryElement::DataTypes(_) => vec![],
+            LibraryElement::DataTypes(_) | LibraryElement::Action(_) => vec![],
         };
         blocks.iter().flat_map(|b| b.vars.iter()).any(|v| {
             matches!(&v.ty, TypeRef::Named(t) if lib.get(&t.name).is_some() || t.is("AXIS_REF") || t.is("AXES_GROUP_REF"))

@@ -118,7 +118,7 @@ fn collect_address_spans(units: &[CompilationUnit]) -> HashMap<Span, Span> {
                         r.globals.iter().for_each(|b| block(b, &mut map));
                     }
                 }
-                LibraryElement::DataTypes(_) => {}
+                LibraryElement::DataTypes(_) | LibraryElement::Action(_) => {}
             }
         }
     }
@@ -498,18 +498,10 @@ impl<'a> Gen<'a> {
                 None => g.unsupported(v.span, "a global of unknown type"),
             }
         };
-        for v in &self.model.globals {
-            decl(self, v, mangle::global_free(&v.name));
-        }
-        for (ci, cfg) in self.model.configurations.iter().enumerate() {
-            for v in &cfg.globals {
-                decl(self, v, mangle::global_config(ci, &v.name));
-            }
-            for (ri, r) in cfg.resources.iter().enumerate() {
-                for v in &r.globals {
-                    decl(self, v, mangle::global_resource(ci, ri, &v.name));
-                }
-            }
+        let model: &'a Model = self.model;
+        for r in model.global_refs() {
+            let name = self.global_name(r);
+            decl(self, model.global(r), name);
         }
         c.push('\n');
     }

@@ -114,20 +114,10 @@ impl Gen<'_> {
         if self.motion.is_some() {
             c.push_str("    ladderc_motion_init();\n");
         }
-        for i in 0..self.model.globals.len() {
-            let v = self.model.globals[i].clone();
-            self.init_global(c, &v, mangle::global_free(&v.name));
-        }
-        for ci in 0..self.model.configurations.len() {
-            let cfg = self.model.configurations[ci].clone();
-            for v in &cfg.globals {
-                self.init_global(c, v, mangle::global_config(ci, &v.name));
-            }
-            for (ri, r) in cfg.resources.iter().enumerate() {
-                for v in &r.globals {
-                    self.init_global(c, v, mangle::global_resource(ci, ri, &v.name));
-                }
-            }
+        for r in self.model.global_refs() {
+            let v = self.model.global(r).clone();
+            let name = self.global_name(r);
+            self.init_global(c, &v, name);
         }
         for inst in &instances {
             let s = self.instance_struct(inst.pou);
@@ -328,35 +318,12 @@ impl Gen<'_> {
 
     fn var_table(&mut self, c: &mut String, instances: &[Instance]) {
         let mut entries = Vec::new();
-        for i in 0..self.model.globals.len() {
-            let v = self.model.globals[i].clone();
-            self.watch_var(
-                &v,
-                v.name.clone(),
-                mangle::global_free(&v.name),
-                &mut entries,
-            );
-        }
-        for ci in 0..self.model.configurations.len() {
-            let cfg = self.model.configurations[ci].clone();
-            for v in &cfg.globals {
-                self.watch_var(
-                    v,
-                    v.name.clone(),
-                    mangle::global_config(ci, &v.name),
-                    &mut entries,
-                );
-            }
-            for (ri, r) in cfg.resources.iter().enumerate() {
-                for v in &r.globals {
-                    self.watch_var(
-                        v,
-                        v.name.clone(),
-                        mangle::global_resource(ci, ri, &v.name),
-                        &mut entries,
-                    );
-                }
-            }
+        // a member of a named global variable list is traced as `List.x`
+        for r in self.model.global_refs() {
+            let v = self.model.global(r).clone();
+            let name = self.global_name(r);
+            let watch = self.model.global_qualified_name(r);
+            self.watch_var(&v, watch, name, &mut entries);
         }
         for inst in instances {
             let pou = self.model.pou(inst.pou).clone();

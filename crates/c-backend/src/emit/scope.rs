@@ -111,13 +111,14 @@ impl Gen<'_> {
 
     /// The C name of a global variable.
     pub fn global_name(&self, r: GlobalRef) -> String {
-        let v = self.model.global(r);
+        // `List.x` for a list member: two lists may both declare `x`
+        let name = self.model.global_qualified_name(r);
         match r {
-            GlobalRef::Free(_) => mangle::global_free(&v.name),
-            GlobalRef::Configuration { config, .. } => mangle::global_config(config, &v.name),
+            GlobalRef::Free(_) => mangle::global_free(&name),
+            GlobalRef::Configuration { config, .. } => mangle::global_config(config, &name),
             GlobalRef::Resource {
                 config, resource, ..
-            } => mangle::global_resource(config, resource, &v.name),
+            } => mangle::global_resource(config, resource, &name),
         }
     }
 

@@ -914,6 +914,16 @@ impl Body<'_, '_> {
         if negate {
             self.check_class_bit(&operand, operand_span, &format!("{name}N"));
         }
+        // IEC 61131-3: integer literals are ANY_INT, so `LD 7` / `DIV 2` divides as integers (3),
+        // even when the result is then stored into a REAL
+        if matches!(op, Op::Div | Op::Mod) {
+            if let (Ty::Lit(a), Ty::Lit(b)) = (self.norm(&cr), self.norm(&operand)) {
+                if !self.lits.is_real(a) && !self.lits.is_real(b) {
+                    let v = self.lits.unify(a, b);
+                    self.lits.set_int_only(v);
+                }
+            }
+        }
         let inst = self.instantiate(f, &[(cr, span), (operand, operand_span)], span);
         rec.callee = Some(Callee::Std {
             name: inst.name,

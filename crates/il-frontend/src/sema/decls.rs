@@ -100,6 +100,25 @@ impl Analyzer<'_> {
                     let vars = self.declare_vars(std::slice::from_ref(block), &global_consts, None);
                     for v in vars {
                         let key = v.name.to_ascii_uppercase();
+                        let listed_first = self.free_globals.get(&key).and_then(|&i| {
+                            self.model.list_of_global.get(&GlobalRef::Free(i)).copied()
+                        });
+                        let other_list = match (listed_first, &block.name) {
+                            (Some(l), Some(list)) => !self.model.global_lists[l]
+                                .name
+                                .eq_ignore_ascii_case(&list.name),
+                            _ => false,
+                        };
+                        if other_list {
+                            // CODESYS: GVL_A.x and GVL_B.x are two variables, each reached
+                            // qualified; an unqualified `x` is ambiguous (E1030)
+                            if let Some(list) = &block.name {
+                                let at = GlobalRef::Free(self.model.globals.len());
+                                self.add_list_member(list, at, &v.name);
+                            }
+                            self.model.globals.push(v);
+                            continue;
+                        }
                         if let Some(&i) = self.free_globals.get(&key) {
                             let first = self.model.globals[i].span;
                             self.error(
@@ -118,7 +137,8 @@ impl Analyzer<'_> {
                             }
                         }
                         if let Some(list) = &block.name {
-                            self.add_list_member(list, GlobalRef::Free(self.model.globals.len()));
+                            let at = GlobalRef::Free(self.model.globals.len());
+                            self.add_list_member(list, at, &v.name);
                         }
                         self.free_globals.insert(key, self.model.globals.len());
                         self.model.globals.push(v);
@@ -181,18 +201,30 @@ impl Analyzer<'_> {
     }
 
     /// Adds a global to the named list `list` (a CODESYS GVL), creating the list on first use.
-    fn add_list_member(&mut self, list: &ast::Ident, r: GlobalRef) {
+    fn add_list_member(&mut self, list: &ast::Ident, r: GlobalRef, name: &str) {
         let lists = &mut self.model.global_lists;
-        match lists
+        let at = match lists
             .iter_mut()
-            .find(|l| l.name.eq_ignore_ascii_case(&list.name))
+            .position(|l| l.name.eq_ignore_ascii_case(&list.name))
         {
-            Some(l) => l.members.push(r),
-            None => lists.push(GlobalList {
-                name: list.name.clone(),
-                span: list.span,
-                members: vec![r],
-            }),
+            Some(i) => {
+                lists[i].members.push(r);
+                i
+            }
+            None => {
+                lists.push(GlobalList {
+                    name: list.name.clone(),
+                    span: list.span,
+                    members: vec![r],
+                });
+                lists.len() - 1
+            }
+        };
+        self.model.list_of_global.insert(r, at);
+        let key = name.to_ascii_uppercase();
+        let lists = self.model.lists_of_name.entry(key).or_default();
+        if !lists.contains(&at) {
+            lists.push(at);
         }
     }
 
@@ -207,8 +239,8 @@ impl Analyzer<'_> {
         for b in blocks {
             let Some(list) = &b.name else { continue };
             for v in &b.vars {
-                if let Some(i) = globals.iter().position(|g| v.name.is(&g.name)) {
-                    self.add_list_member(list, at(i));
+                if let Some(i) = globals.iter().position(|g| g.span == v.name.span) {
+                    self.add_list_member(list, at(i), &v.name.name);
                 }
             }
         }
@@ -537,13 +569,20 @@ impl Analyzer<'_> {
         let mut seen: HashMap<String, usize> = HashMap::with_capacity(declared);
         let mut consts = consts.clone();
         for b in blocks {
+            // the members of a named global variable list (CODESYS GVL) are seen per list: two
+            // lists may both declare `x` (reached as GVL_A.x and GVL_B.x)
+            let list_key = match (&b.name, pou) {
+                (Some(l), None) => format!("{}.", l.key()),
+                _ => String::new(),
+            };
             for d in &b.vars {
                 let ty = self.resolve_type(&d.ty);
                 let init = match &d.init {
                     Some(i) => self.const_init(i, &ty, &consts),
                     None => self.type_default_init(&d.ty),
                 };
-                if let Some(&prev) = seen.get(&d.name.key()) {
+                let seen_key = format!("{list_key}{}", d.name.key());
+                if let Some(&prev) = seen.get(&seen_key) {
                     let first = out[prev].span;
                     self.error(
                         code::E1002,
@@ -554,6 +593,23 @@ impl Analyzer<'_> {
                     .also(first, "first declared here")
                     .hint("each variable of a POU needs its own name (names are case-insensitive)");
                     continue;
+                }
+                if let Some(why) = reserved_name(&d.name.name) {
+                    // reported once, at the declaration; the variable is kept so that its uses
+                    // give no further errors
+                    self.error(
+                        code::E1031,
+                        d.name.span,
+                        format!(
+                            "`{}` is reserved in IEC 61131-3 ({why}): it cannot name a variable",
+                            d.name.name
+                        ),
+                    )
+                    .label("reserved name")
+                    .hint(format!(
+                        "rename the variable, for example `x{}`",
+                        d.name.name
+                    ));
                 }
                 if b.constant {
                     if let Some(v) = &init {
@@ -566,7 +622,7 @@ impl Analyzer<'_> {
                 let edge = d
                     .edge
                     .filter(|e| self.edge_allowed(*e, d, b.kind, &ty, pou));
-                seen.insert(d.name.key(), out.len());
+                seen.insert(seen_key, out.len());
                 out.push(Variable {
                     name: d.name.name.clone(),
                     span: d.name.span,
@@ -708,6 +764,9 @@ impl Analyzer<'_> {
 
     /// Finds the global a `VAR_EXTERNAL` refers to and checks the declarations agree.
     fn bind_external(&mut self, v: &Variable) -> Option<GlobalRef> {
+        if self.ambiguous_global(&ast::Ident::new(v.name.clone(), v.span)) {
+            return None;
+        }
         let found = self.find_global(&v.name);
         let Some(r) = found else {
             self.error(code::E1022, v.span, format!("no global variable `{}`", v.name))
@@ -737,6 +796,47 @@ impl Analyzer<'_> {
             .hint("write VAR_EXTERNAL CONSTANT");
         }
         Some(r)
+    }
+
+    /// E1030 when `name` is declared by two or more global variable lists (and nothing nearer has
+    /// that name): an unqualified use cannot choose. Returns whether it was reported.
+    pub(super) fn ambiguous_global(&mut self, name: &ast::Ident) -> bool {
+        let lists: Vec<(String, Span)> = self
+            .model
+            .lists_declaring(&name.name)
+            .iter()
+            .map(|l| {
+                let r = self
+                    .model
+                    .list_member(l, &name.name)
+                    .expect("declared by the list");
+                (l.name.clone(), self.model.global(r).span)
+            })
+            .collect();
+        if lists.len() < 2 {
+            return false;
+        }
+        let names: Vec<String> = lists.iter().map(|(l, _)| format!("`{l}`")).collect();
+        let mut d = self
+            .error(
+                code::E1030,
+                name.span,
+                format!(
+                    "`{}` is declared by the global variable lists {} and {}",
+                    name.name,
+                    names[..names.len() - 1].join(", "),
+                    names[names.len() - 1]
+                ),
+            )
+            .label("ambiguous: qualify it with its list");
+        for (l, at) in &lists {
+            d = d.also(*at, format!("declared in `{l}`"));
+        }
+        drop(d.hint(format!(
+            "write {}.{} (or the other list's name)",
+            lists[0].0, name.name
+        )));
+        true
     }
 
     /// The global variable of a name: outside any configuration first, then of each configuration and
@@ -1246,5 +1346,88 @@ impl Analyzer<'_> {
             .hint(format!("use one of the values declared for {t}"));
         }
         r
+    }
+}
+
+/// Why `name` cannot name a variable (IEC 61131-3 2nd ed. Annex C, 3rd ed. 6.1.3: keywords, the
+/// names of the elementary data types and of the standard function blocks), or `None`. Names the
+/// standard also lists but real programs use and matiec, CODESYS and ladderc read unambiguously are
+/// accepted: the IL operators (`LD`, `ST`, `S`, `R` ...), the parameter names of the standard
+/// blocks (`IN`, `Q`, `PT`, `CU` ...) and the standard function names (`LEN`, `LIMIT` ...).
+pub fn reserved_name(name: &str) -> Option<&'static str> {
+    const KEYWORDS: &[&str] = &[
+        "IF",
+        "THEN",
+        "ELSIF",
+        "ELSE",
+        "END_IF",
+        "CASE",
+        "OF",
+        "END_CASE",
+        "FOR",
+        "TO",
+        "BY",
+        "DO",
+        "END_FOR",
+        "WHILE",
+        "END_WHILE",
+        "REPEAT",
+        "UNTIL",
+        "END_REPEAT",
+        "EXIT",
+        "CONTINUE",
+        "RETURN",
+        "AND",
+        "OR",
+        "XOR",
+        "NOT",
+        "MOD",
+        "TRUE",
+        "FALSE",
+        "VAR",
+        "VAR_INPUT",
+        "VAR_OUTPUT",
+        "VAR_IN_OUT",
+        "VAR_TEMP",
+        "VAR_EXTERNAL",
+        "VAR_GLOBAL",
+        "VAR_ACCESS",
+        "VAR_CONFIG",
+        "END_VAR",
+        "CONSTANT",
+        "RETAIN",
+        "NON_RETAIN",
+        "AT",
+        "ARRAY",
+        "STRUCT",
+        "END_STRUCT",
+        "TYPE",
+        "END_TYPE",
+        "R_EDGE",
+        "F_EDGE",
+        "PROGRAM",
+        "END_PROGRAM",
+        "FUNCTION",
+        "END_FUNCTION",
+        "FUNCTION_BLOCK",
+        "END_FUNCTION_BLOCK",
+        "CONFIGURATION",
+        "END_CONFIGURATION",
+        "RESOURCE",
+        "END_RESOURCE",
+        "ON",
+        "WITH",
+    ];
+    let up = name.to_ascii_uppercase();
+    if KEYWORDS.contains(&up.as_str()) {
+        Some("a keyword")
+    } else if Elementary::from_name(&up).is_some()
+        || matches!(up.as_str(), "STRING" | "WSTRING" | "LTIME")
+    {
+        Some("an elementary data type")
+    } else if StdFb::from_name(&up).is_some() {
+        Some("a standard function block")
+    } else {
+        None
     }
 }

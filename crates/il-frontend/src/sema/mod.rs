@@ -16,6 +16,7 @@ mod places;
 pub mod stdlib;
 pub mod typing;
 
+pub use decls::reserved_name;
 pub use model::*;
 
 use crate::ast::CompilationUnit;

@@ -731,7 +731,7 @@ impl Pou {
 }
 
 /// Where a global variable lives.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum GlobalRef {
     /// `Model::globals[i]` (a `VAR_GLOBAL` block outside any configuration).
     Free(usize),
@@ -1081,6 +1081,12 @@ pub struct Model {
     /// The named global variable lists (CODESYS/TwinCAT GVLs) of every scope, in source order.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub global_lists: Vec<GlobalList>,
+    /// The list (index into `global_lists`) each member of a named list belongs to.
+    #[serde(skip)]
+    pub list_of_global: FxHashMap<GlobalRef, usize>,
+    /// Upper-case member name -> the lists (indexes into `global_lists`) declaring it, in order.
+    #[serde(skip)]
+    pub lists_of_name: FxHashMap<String, Vec<usize>>,
     /// Whether a body reads `inst.ENO` of a standard FB instance (then every call stores the
     /// instance's ENO; otherwise only calls with EN do).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
@@ -1417,6 +1423,44 @@ impl Model {
         self.global_lists
             .iter()
             .find(|l| l.name.eq_ignore_ascii_case(name))
+    }
+    /// Every global variable: outside configurations, then each configuration's and its resources'.
+    pub fn global_refs(&self) -> Vec<GlobalRef> {
+        let mut v: Vec<GlobalRef> = (0..self.globals.len()).map(GlobalRef::Free).collect();
+        for (config, c) in self.configurations.iter().enumerate() {
+            v.extend((0..c.globals.len()).map(|index| GlobalRef::Configuration { config, index }));
+            for (resource, r) in c.resources.iter().enumerate() {
+                v.extend((0..r.globals.len()).map(|index| GlobalRef::Resource {
+                    config,
+                    resource,
+                    index,
+                }));
+            }
+        }
+        v
+    }
+    /// The name a global is known by outside the POUs: `List.x` for a member of a named global
+    /// variable list (two lists may both declare `x`), the plain name otherwise. The trace and
+    /// `--watch` use it, and the C back end mangles it into the global's C name.
+    pub fn global_qualified_name(&self, r: GlobalRef) -> String {
+        let name = &self.global(r).name;
+        match self.list_of_global.get(&r) {
+            Some(&l) => format!("{}.{name}", self.global_lists[l].name),
+            None => name.clone(),
+        }
+    }
+    /// The names of the global variable lists that declare a variable `name` (case-insensitive), in
+    /// list order: two or more make an unqualified use of `name` ambiguous.
+    pub fn lists_declaring(&self, name: &str) -> Vec<&GlobalList> {
+        if self.global_lists.len() < 2 {
+            return Vec::new();
+        }
+        with_upper(name, |key| {
+            self.lists_of_name
+                .get(key)
+                .map(|ls| ls.iter().map(|&l| &self.global_lists[l]).collect())
+                .unwrap_or_default()
+        })
     }
     /// The member `member` of a global variable list.
     pub fn list_member(&self, list: &GlobalList, member: &str) -> Option<GlobalRef> {

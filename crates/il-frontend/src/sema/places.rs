@@ -171,6 +171,10 @@ impl Body<'_, '_> {
         let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
         if let ReadOnly::PouInput { decl: Some(decl) } = ro {
+            if v.base.name.starts_with(crate::actions::FLAG_PREFIX) {
+                // the hidden flag of an action called from another POU, reset by the action itself
+                return;
+            }
             // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)
             // accept it and write the POU's own copy of the input: so does ladderc, with a warning
             drop(
@@ -516,6 +520,9 @@ impl Body<'_, '_> {
                 ty: Type::BOOL,
                 read_only: en.then_some(ReadOnly::PouInput { decl: None }),
             });
+        }
+        if self.a.ambiguous_global(base) {
+            return None;
         }
         if let Some(&i) = self.a.free_globals.get(&base.key()) {
             self.note_name(base.span, NameRef::Global(GlobalRef::Free(i)));

@@ -289,6 +289,10 @@ struct LitInfo {
     min: i128,
     max: i128,
     real: bool,
+    /// The class is the result of an integer division of integer literals (`LD 7` / `DIV 2`):
+    /// IEC 61131-3 makes it an integer (ANY_INT), so it never becomes a real type; stored into a
+    /// real it takes the smallest integer type that widens to it.
+    int_only: bool,
     bound: Option<Type>,
     /// The literals holding the smallest and the largest value, for diagnostics.
     min_span: Span,
@@ -333,6 +337,7 @@ impl LitVars {
             min: v,
             max: v,
             real: false,
+            int_only: false,
             bound: None,
             min_span: span,
             max_span: span,
@@ -346,6 +351,7 @@ impl LitVars {
             min: 0,
             max: 0,
             real: true,
+            int_only: false,
             bound: None,
             min_span: span,
             max_span: span,
@@ -382,10 +388,32 @@ impl LitVars {
         let r = self.find(v);
         self.info[r].real
     }
-    /// Fixes the type of an unbound variable (checks that every literal of the class fits).
+    /// Marks `v`'s class as an integer division of integer literals (see `LitInfo::int_only`).
+    pub fn set_int_only(&mut self, v: usize) {
+        let r = self.find(v);
+        self.info[r].int_only = true;
+    }
+    /// Fixes the type of an unbound variable (checks that every literal of the class fits). A class
+    /// of integer division (`int_only`) asked to be a real type gets the smallest of INT, DINT,
+    /// LINT that holds its literals and widens to that real type.
     pub fn bind(&mut self, v: usize, ty: &Type) -> Result<(), BindError> {
         let r = self.find(v);
         let i = &self.info[r];
+        if i.int_only && i.bound.is_none() && !i.real {
+            if let Some(real) = ty.elementary().filter(|e| e.is_real()) {
+                let int = [E::Int, E::Dint, E::Lint].into_iter().find(|&e| {
+                    widens(e, real)
+                        && literal_fits(i.min, i.max, false, &Type::Elementary(e)).is_ok()
+                });
+                return match int {
+                    Some(e) => {
+                        self.info[r].bound = Some(Type::Elementary(e));
+                        Ok(())
+                    }
+                    None => Err(BindError::Kind { span: i.min_span }),
+                };
+            }
+        }
         if let Some(b) = &i.bound {
             return if assignable(b, ty) {
                 Ok(())
@@ -433,6 +461,7 @@ impl LitVars {
             ia.real_max = ib.real_max;
             ia.real_span = ib.real_span;
         }
+        ia.int_only |= ib.int_only;
         if ia.bound.is_none() {
             ia.bound = ib.bound;
         }

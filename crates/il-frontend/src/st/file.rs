@@ -637,28 +637,45 @@ pub fn compile_pending(
     }
     let decls = super::Declarations::from_units(units);
     for pb in pending.iter().filter(|pb| !pb.sfc) {
-        for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
-            let LibraryElement::Pou(p) = item else {
-                continue;
-            };
-            if p.name.span.file != pb.file || p.name.span.start as usize != pb.name_start {
-                continue;
+        for unit in units.iter_mut() {
+            let mut standalone = Vec::new();
+            for item in unit.items.iter_mut() {
+                let LibraryElement::Pou(p) = item else {
+                    continue;
+                };
+                if p.name.span.file != pb.file || p.name.span.start as usize != pb.name_start {
+                    continue;
+                }
+                // a variable named with a keyword (`IF : BOOL`) cannot be read in ST: sema
+                // reports it once at the declaration (E1031), and the body is not parsed into a
+                // cascade of syntax errors
+                let keyword_var = p
+                    .var_blocks
+                    .iter()
+                    .flat_map(|b| b.vars.iter())
+                    .any(|v| crate::sema::reserved_name(&v.name.name) == Some("a keyword"));
+                if keyword_var {
+                    continue;
+                }
+                let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
+                let (body, temps, actions) = super::compile_body_with_actions(
+                    pb.file,
+                    &pb.text,
+                    pb.base,
+                    &decls,
+                    p,
+                    &pb.actions,
+                    span,
+                    diags,
+                );
+                p.body = body;
+                if let Some(t) = temps {
+                    p.var_blocks.push(t);
+                }
+                standalone.extend(actions);
             }
-            let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
-            let (body, temps) = super::compile_body_with_actions(
-                pb.file,
-                &pb.text,
-                pb.base,
-                &decls,
-                p,
-                &pb.actions,
-                span,
-                diags,
-            );
-            p.body = body;
-            if let Some(t) = temps {
-                p.var_blocks.push(t);
-            }
+            unit.items
+                .extend(standalone.into_iter().map(LibraryElement::Action));
         }
     }
 }

@@ -503,9 +503,44 @@ impl<'d> PouLowering<'d> {
         out.extend(code);
         let end = self.fresh_label("END_CASE", span);
         let mut targets = Vec::new();
+        let mut seen = LabelSet::default();
         for arm in arms {
             let target = self.fresh_label("CASE", arm.span);
             for label in &arm.labels {
+                let key = match label {
+                    CaseLabel::Value(v) => self
+                        .case_value(v, &mut Diagnostics::new())
+                        .and_then(|o| label_key(&o, &o)),
+                    CaseLabel::Range(lo, hi) => {
+                        let mut quiet = Diagnostics::new();
+                        match (
+                            self.case_value(lo, &mut quiet),
+                            self.case_value(hi, &mut quiet),
+                        ) {
+                            (Some(l), Some(h)) => label_key(&l, &h),
+                            _ => None,
+                        }
+                    }
+                };
+                let at = match label {
+                    CaseLabel::Value(v) => v.span,
+                    CaseLabel::Range(lo, hi) => lo.span.to(hi.span),
+                };
+                if let Some(k) = key {
+                    if let Some(first) = seen.first_overlap(&k) {
+                        diags.push(
+                            Diagnostic::warning(
+                                code::W3140,
+                                "this CASE label overlaps an earlier one: the earlier label wins",
+                            )
+                            .at(at)
+                            .with_primary_label("never chosen for the values it shares")
+                            .with_label(first, "earlier label with the same value")
+                            .with_hint("remove the value from one of the labels (IEC 61131-3 requires distinct labels)"),
+                        );
+                    }
+                    seen.insert(k, at);
+                }
                 match label {
                     CaseLabel::Value(v) => {
                         let Some(v) = self.case_value(v, diags) else {
@@ -1004,6 +1039,26 @@ impl<'d> PouLowering<'d> {
     /// current result is free.
     fn value(&mut self, e: &Expr, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
         let hint = self.lit_hint.take();
+        // IEC 61131-3: integer literals are ANY_INT, so a division of them is an integer division
+        // (`7 / 2` is 3), even where the context is REAL: computed as LINT, then converted.
+        let real_context = hint
+            .as_ref()
+            .and_then(|h| self.env().elementary(h))
+            .filter(|x| x.is_real());
+        if let Some(real) = real_context {
+            if matches!(self.ty(e), Ty::IntLit) && divides_integers(e) {
+                self.lit_hint = Some(named("LINT", e.span));
+                self.value(e, out, diags);
+                out.push(instr(
+                    InstrKind::FunctionCall {
+                        name: Ident::new(format!("LINT_TO_{}", real.name()), e.span),
+                        args: CallArgs::None,
+                    },
+                    e.span,
+                ));
+                return;
+            }
+        }
         match &e.kind {
             ExprKind::Error => {
                 self.poisoned = true;
@@ -1408,5 +1463,102 @@ fn type_text(t: &TypeRef) -> String {
         TypeRef::Array { .. } => "an array".into(),
         TypeRef::Subrange { base, .. } => format!("a subrange of {}", base.name),
         TypeRef::Enum { .. } => "an enumeration".into(),
+    }
+}
+
+/// Whether an expression of integer literals holds an integer division (`/` or `MOD`) and no `**`
+/// (whose operand must be real). Walked with a stack: chains can be long.
+fn divides_integers(e: &Expr) -> bool {
+    let mut stack = vec![e];
+    let mut divides = false;
+    while let Some(e) = stack.pop() {
+        match &e.kind {
+            ExprKind::Binary { op, left, right } => {
+                match op {
+                    BinaryOp::Div | BinaryOp::Mod => divides = true,
+                    BinaryOp::Power => return false,
+                    _ => {}
+                }
+                stack.push(left);
+                stack.push(right);
+            }
+            ExprKind::Unary { operand, .. } => stack.push(operand),
+            _ => {}
+        }
+    }
+    divides
+}
+
+/// What a CASE label selects, for the overlap warning W3140: an integer range, or an enumerated
+/// value by name (`red`, `Color#red`).
+enum LabelKey {
+    Ints(i128, i128),
+    Enum(String),
+}
+
+/// The labels of one CASE seen so far, for W3140: single values and enumerated values are looked
+/// up in logarithmic or constant time; ranges are compared one by one, up to [`MAX_CASE_RANGES`]
+/// of them (a generated CASE of thousands of ranges is not compared quadratically).
+#[derive(Default)]
+struct LabelSet {
+    singles: std::collections::BTreeMap<i128, Span>,
+    ranges: Vec<(i128, i128, Span)>,
+    enums: HashMap<String, Span>,
+}
+
+/// How many ranges of one CASE are compared with the labels after them.
+const MAX_CASE_RANGES: usize = 1024;
+
+impl LabelSet {
+    /// The earliest-seen label among those that share a value with `k` (the first found).
+    fn first_overlap(&self, k: &LabelKey) -> Option<Span> {
+        match k {
+            LabelKey::Enum(n) => self.enums.get(n).copied(),
+            LabelKey::Ints(lo, hi) => self
+                .ranges
+                .iter()
+                .find(|(a, b, _)| a <= hi && lo <= b)
+                .map(|r| r.2)
+                .or_else(|| self.singles.range(*lo..=*hi).next().map(|(_, s)| *s)),
+        }
+    }
+    fn insert(&mut self, k: LabelKey, at: Span) {
+        match k {
+            LabelKey::Enum(n) => {
+                self.enums.entry(n).or_insert(at);
+            }
+            LabelKey::Ints(lo, hi) if lo == hi => {
+                self.singles.entry(lo).or_insert(at);
+            }
+            LabelKey::Ints(lo, hi) => {
+                if self.ranges.len() < MAX_CASE_RANGES {
+                    self.ranges.push((lo, hi, at));
+                }
+            }
+        }
+    }
+}
+
+/// The key of a label `lo..hi` (`lo` = `hi` for a single value); `None` for what is not an integer
+/// literal or an enumerated value (a constant's value is not known here).
+fn label_key(lo: &Operand, hi: &Operand) -> Option<LabelKey> {
+    let int = |o: &Operand| match o {
+        Operand::Literal(Literal {
+            kind: LiteralKind::Int(v),
+            ..
+        }) => Some(*v),
+        _ => None,
+    };
+    let name = |o: &Operand| match o {
+        Operand::EnumValue { value, .. } => Some(value.key()),
+        Operand::Var(v) if v.accessors.is_empty() => Some(v.base.key()),
+        _ => None,
+    };
+    match (int(lo), int(hi)) {
+        (Some(a), Some(b)) => Some(LabelKey::Ints(a.min(b), a.max(b))),
+        _ => {
+            let (a, b) = (name(lo)?, name(hi)?);
+            (a == b).then_some(LabelKey::Enum(a))
+        }
     }
 }

@@ -62,12 +62,15 @@ pub fn compile_body(
     span: Span,
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
-    compile_body_with_actions(file, src, base, decls, pou, &[], span, diags)
+    let (body, temps, _) = compile_body_with_actions(file, src, base, decls, pou, &[], span, diags);
+    (body, temps)
 }
 
 /// [`compile_body`] of a POU that has actions with ST bodies (`(name, text, base)`, CODESYS
 /// exports): a call statement `Act();` in the body (or in another action) is lowered as the
-/// action's statements, in place.
+/// action's statements, in place. Each action is also lowered on its own (third result, with the
+/// diagnostics of that lowering kept in it), for calls from other POUs (`inst.Act();`): see
+/// [`crate::actions::link`].
 #[allow(clippy::too_many_arguments)]
 pub fn compile_body_with_actions(
     file: FileId,
@@ -78,16 +81,31 @@ pub fn compile_body_with_actions(
     actions: &[(crate::ast::Ident, String, usize)],
     span: Span,
     diags: &mut Diagnostics,
-) -> (Vec<IlStmt>, Option<VarBlock>) {
+) -> (Vec<IlStmt>, Option<VarBlock>, Vec<crate::ast::Action>) {
     let stmts = parse_statements(file, src, base, diags);
     let mut low = PouLowering::new(decls, pou);
+    let mut parsed: Vec<(crate::ast::Ident, Vec<ast::Stmt>)> = Vec::new();
     if !actions.is_empty() {
-        let parsed = actions
+        parsed = actions
             .iter()
             .map(|(n, text, b)| (n.clone(), parse_statements(file, text, *b, diags)))
             .collect();
-        low.set_actions(parsed);
+        low.set_actions(parsed.clone());
     }
     let body = low.statements(&stmts, diags);
-    (body, low.finish(span))
+    let standalone = parsed
+        .iter()
+        .map(|(name, stmts)| {
+            let mut local = Diagnostics::new();
+            let body = low.statements(stmts, &mut local);
+            crate::ast::Action {
+                pou: pou.name.clone(),
+                name: name.clone(),
+                body,
+                temps: None,
+                diagnostics: local.into_vec(),
+            }
+        })
+        .collect();
+    (body, low.finish(span), standalone)
 }

@@ -50,6 +50,9 @@ pub struct TextAssociation {
     pub qualifier_range: Range<usize>,
     /// Byte range of the duration (`T#5s` or a TIME variable) of a timed qualifier.
     pub time: Option<Range<usize>>,
+    /// Byte ranges of the indicator variables after the qualifier (and duration):
+    /// `act(N, ind)` (IEC 61131-3 ed. 2 B.1.6 `action_association`).
+    pub indicators: Vec<Range<usize>>,
 }
 
 /// How a transition's condition is written.
@@ -225,6 +228,7 @@ impl Reader<'_> {
             qualifier: "N".into(),
             qualifier_range: name_range.clone(),
             time: None,
+            indicators: Vec::new(),
         };
         if self.peek().tok == Tok::LParen {
             self.bump();
@@ -267,14 +271,19 @@ impl Reader<'_> {
                     .trim()
                     .to_ascii_uppercase()
             };
+            let mut rest = 0;
             if let Some(q) = args.first() {
                 let qs = src_of(q);
+                rest = 1;
                 if is_qualifier(&qs) {
                     a.qualifier = qs.clone();
                     a.qualifier_range = q.clone();
                     if timed_qualifier(&qs) {
                         match args.get(1) {
-                            Some(t) => a.time = Some(t.clone()),
+                            Some(t) => {
+                                a.time = Some(t.clone());
+                                rest = 2;
+                            }
                             None => {
                                 let r = q.clone();
                                 self.error_code(
@@ -296,6 +305,7 @@ impl Reader<'_> {
                     );
                 }
             }
+            a.indicators = args.get(rest..).unwrap_or_default().to_vec();
         }
         if self.peek().tok == Tok::Semi {
             self.bump();

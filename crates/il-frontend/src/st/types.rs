@@ -87,6 +87,7 @@ impl Declarations {
                         d.add_global_block(b);
                     }
                 }
+                LibraryElement::Action(_) => {}
             }
         }
         d

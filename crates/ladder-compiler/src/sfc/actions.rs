@@ -109,6 +109,10 @@ pub struct Action<'e, 'a> {
     pub target: Target<'e, 'a>,
     /// (qualifier, step index, duration) per association.
     pub uses: Vec<(Qualifier, usize, Option<Operand>)>,
+    /// The indicator variables of its associations (the `indicator` attribute, textual SFC's
+    /// `act(N, ind)`): declared BOOL variables that the action's own body sets to indicate
+    /// completion, time-out or errors (IEC 61131-3); the chart never drives them.
+    pub indicators: Vec<Operand>,
     /// The first association's element.
     pub span: Span,
 }
@@ -197,6 +201,38 @@ pub fn collect<'e, 'a>(
                     q.tag()
                 ),
             );
+            continue;
+        }
+        // Indicator variables (IEC 61131-3 2nd ed. 2.6.4.2 field "d", 3rd ed. 6.7.4): declared
+        // BOOL variables, which the action's body sets (the chart does not drive them)
+        let mut indicators: Vec<Operand> = Vec::new();
+        let mut bad_indicator = false;
+        for ind in
+            a.el.attr("indicator")
+                .unwrap_or_default()
+                .split(',')
+                .map(str::trim)
+                .filter(|n| !n.is_empty())
+        {
+            let ispan = ctx.attr_span(a.el, "indicator");
+            if values::is_ident(ind) && is_bool_var(pou, index, ind) == Some(true) {
+                indicators.push(il::var(ind, ispan));
+            } else {
+                report(
+                    ctx,
+                    code::E3122,
+                    ispan,
+                    pou_name,
+                    Some(&a.block_id),
+                    format!(
+                        "indicator `{ind}` of an action of step `{}` is not a declared BOOL variable",
+                        steps[a.step].name
+                    ),
+                );
+                bad_indicator = true;
+            }
+        }
+        if bad_indicator {
             continue;
         }
         let step_name = &steps[a.step].name;
@@ -308,13 +344,17 @@ pub fn collect<'e, 'a>(
         };
         let k = key.to_ascii_uppercase();
         match out.iter_mut().find(|x| x.key.to_ascii_uppercase() == k) {
-            Some(x) => x.uses.push((q, a.step, duration)),
+            Some(x) => {
+                x.uses.push((q, a.step, duration));
+                x.indicators.extend(indicators);
+            }
             None => out.push(Action {
                 key,
                 display,
                 name,
                 target,
                 uses: vec![(q, a.step, duration)],
+                indicators,
                 span,
             }),
         }

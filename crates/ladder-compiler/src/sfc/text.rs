@@ -64,6 +64,7 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
                     globals(b, &mut index);
                 }
             }
+            LibraryElement::Action(_) => {}
         }
     }
     index
@@ -158,6 +159,14 @@ pub fn lower(
                     if let Some(d) = &a.time {
                         let text = src.get(d.clone()).unwrap_or("").trim();
                         t.push_str(&format!(" duration=\"{}\"", attr_value(text)));
+                    }
+                    if !a.indicators.is_empty() {
+                        let names: Vec<&str> = a
+                            .indicators
+                            .iter()
+                            .map(|r| src.get(r.clone()).unwrap_or("").trim())
+                            .collect();
+                        t.push_str(&format!(" indicator=\"{}\"", attr_value(&names.join(","))));
                     }
                     (t, format!("reference name=\"{}\"", attr_value(&a.action)))
                 })
