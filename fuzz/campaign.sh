@@ -1,19 +1,26 @@
 #!/bin/sh
-# Runs cargo-fuzz targets one after the other at the lowest priority, each for a given time, with the
-# flags of fuzz/README.md; logs go to $LOG (default /work/fuzzlog): <target>.log (libFuzzer's output),
-# <target>.time (user, system and wall time from /usr/bin/time) and campaign.log (start and end lines).
+# Runs cargo-fuzz targets one after the other, each for a given time, with the flags of fuzz/README.md;
+# logs go to $LOG (default /work/fuzzlog): <name>.log (libFuzzer's output), <name>.time (user, system and
+# wall time from /usr/bin/time) and campaign.log (start and end lines).
 # Usage: fuzz/campaign.sh il:300 st:240 ...   (build first: RUSTC_BOOTSTRAP=1 cargo fuzz build -s none)
+# A spec is target:seconds or target:seconds:name (the log name, for a second run of a target).
+# Environment: NICE (priority, default 19), RUNS (stop after this many executions, default none),
+# MAX_LEN (default 65536), LOG.
 set -u
 cd "$(dirname "$0")" || exit 1
 LOG=${LOG:-/work/fuzzlog}
+NICE=${NICE:-19}
+MAX_LEN=${MAX_LEN:-65536}
+RUNS=${RUNS:--1}
 mkdir -p "$LOG"
 B=target/x86_64-unknown-linux-gnu/release
 for spec in "$@"; do
-    t=${spec%%:*}; s=${spec##*:}
+    t=${spec%%:*}; rest=${spec#*:}; s=${rest%%:*}; n=$t
+    [ "$rest" != "$s" ] && n=${rest#*:}
     mkdir -p "artifacts/$t" "corpus/$t"
-    echo "$(date -u +%FT%TZ) start $t $s s" >> "$LOG/campaign.log"
-    /usr/bin/time -f "%U user %S sys %e wall" -o "$LOG/$t.time" \
-        nice -n 19 "$B/$t" "corpus/$t" -artifact_prefix="artifacts/$t/" -max_total_time="$s" \
-        -max_len=65536 -timeout=1 -rss_limit_mb=2048 -print_final_stats=1 > "$LOG/$t.log" 2>&1
-    echo "$(date -u +%FT%TZ) end $t rc=$? $(tail -1 "$LOG/$t.time")" >> "$LOG/campaign.log"
+    echo "$(date -u +%FT%TZ) start $n ($t) $s s runs=$RUNS max_len=$MAX_LEN nice=$NICE" >> "$LOG/campaign.log"
+    /usr/bin/time -f "%U user %S sys %e wall" -o "$LOG/$n.time" \
+        nice -n "$NICE" "$B/$t" "corpus/$t" -artifact_prefix="artifacts/$t/" -max_total_time="$s" \
+        -runs="$RUNS" -max_len="$MAX_LEN" -timeout=1 -rss_limit_mb=2048 -print_final_stats=1 > "$LOG/$n.log" 2>&1
+    echo "$(date -u +%FT%TZ) end $n rc=$? $(tail -1 "$LOG/$n.time")" >> "$LOG/campaign.log"
 done

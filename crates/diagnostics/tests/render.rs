@@ -100,3 +100,18 @@ fn a_diagnostic_without_its_own_hint_points_at_its_explanation_in_every_format()
         "{text}"
     );
 }
+
+#[test]
+fn texts_are_clipped_at_max_text_chars_characters_not_bytes() {
+    let n = 1000; // MAX_TEXT_CHARS of diagnostic.rs
+                  // at the limit, in ASCII (n bytes) and in 3-byte characters (3n bytes): kept whole
+    let ascii = "a".repeat(n);
+    let wide = "€".repeat(n);
+    let d = Diagnostic::error(code::E9001, ascii.clone()).with_hint(wide.clone());
+    assert_eq!(d.message, ascii);
+    assert_eq!(d.hint.as_deref(), Some(wide.as_str()));
+    // one character more: cut after n characters, with `…`
+    let d = Diagnostic::error(code::E9001, "a".repeat(n + 1)).with_note("€".repeat(n + 1));
+    assert_eq!(d.message, format!("{ascii}…"));
+    assert_eq!(d.notes, vec![format!("{wide}…")]);
+}
