@@ -143,19 +143,7 @@ impl Gen<'_> {
                     // positions, so that the C stays proportional to the distinct runs, not to the
                     // array's length.
                     // row-major index expression of position `r` (a C expression) in the array
-                    let element_at = |r: &str| {
-                        let mut el = lv.to_string();
-                        let mut stride: u128 = 1;
-                        let mut subs = Vec::new();
-                        for len in lens.iter().rev() {
-                            subs.push(format!("[({r} / {stride}u) % {len}u]"));
-                            stride = stride.saturating_mul(*len);
-                        }
-                        for sub in subs.iter().rev() {
-                            el.push_str(sub);
-                        }
-                        el
-                    };
+                    let element_at = |r: &str| row_major_element(lv, r, &lens);
                     // values not in a run, waiting to be written: from position `single_from`
                     let mut single_from = 0;
                     let mut k = 0;
@@ -285,16 +273,7 @@ impl Gen<'_> {
         };
         if let (Some(table), Type::Elementary(e)) = (table, element) {
             let (r, t) = (format!("r_{indent}"), format!("t_{indent}"));
-            let mut el = lv.to_string();
-            let mut stride: u128 = 1;
-            let mut subs = Vec::new();
-            for len in lens.iter().rev() {
-                subs.push(format!("[({r} / {stride}u) % {len}u]"));
-                stride = stride.saturating_mul(*len);
-            }
-            for sub in subs.iter().rev() {
-                el.push_str(sub);
-            }
+            let el = row_major_element(lv, &r, lens);
             let _ = writeln!(out, "{pad}{{");
             let _ = writeln!(
                 out,
@@ -331,4 +310,20 @@ impl Gen<'_> {
             self.init_value(out, indent, &el, element, Some(v), span);
         }
     }
+}
+
+/// The element of array `lv` (dimension lengths `lens`) at row-major position `r`, a C expression:
+/// `lv[(r / stride) % len]...`, one subscript per dimension.
+fn row_major_element(lv: &str, r: &str, lens: &[u128]) -> String {
+    let mut el = lv.to_string();
+    let mut stride: u128 = 1;
+    let mut subs = Vec::new();
+    for len in lens.iter().rev() {
+        subs.push(format!("[({r} / {stride}u) % {len}u]"));
+        stride = stride.saturating_mul(*len);
+    }
+    for sub in subs.iter().rev() {
+        el.push_str(sub);
+    }
+    el
 }
