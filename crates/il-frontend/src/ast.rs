@@ -372,6 +372,21 @@ pub struct VarBlock {
     pub span: Span,
 }
 
+impl VarBlock {
+    /// A plain `VAR` block (no list name, not CONSTANT, not RETAIN) of `vars`, as the lowerings
+    /// add for the hidden variables they introduce (SFC step flags, action flags, temporaries).
+    pub fn locals(vars: Vec<VarDecl>, span: Span) -> VarBlock {
+        VarBlock {
+            name: None,
+            kind: VarKind::Local,
+            constant: false,
+            retain: false,
+            vars,
+            span,
+        }
+    }
+}
+
 /// One declared name (`a, b : INT := 3;` yields two `VarDecl`s sharing type and initial value).
 #[derive(Debug, Clone, Serialize)]
 pub struct VarDecl {

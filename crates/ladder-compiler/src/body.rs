@@ -18,7 +18,7 @@ use crate::lower::BodyLowering;
 use crate::project::Index;
 use crate::xml::Element;
 use diagnostics::{code, Diagnostic, XmlContext};
-use il_frontend::ast::{Ident, IlStmt, Pou, VarBlock, VarKind};
+use il_frontend::ast::{Ident, IlStmt, Pou, VarBlock};
 
 /// The body of one POU in the IL syntax tree, with the hidden variables its lowering needs.
 pub fn lower_pou_body(
@@ -90,14 +90,7 @@ pub fn lower_pou_body(
             let mut low = BodyLowering::new(index, pou, span);
             let stmts = low.lower(ctx, &g);
             let hidden = low.hidden_vars();
-            let block = (!hidden.is_empty()).then_some(VarBlock {
-                name: None,
-                kind: VarKind::Local,
-                constant: false,
-                retain: false,
-                vars: hidden,
-                span,
-            });
+            let block = (!hidden.is_empty()).then_some(VarBlock::locals(hidden, span));
             Some((stmts, block))
         }
         "IL" => Some((crate::il_body::parse(ctx, lang, name), None)),
@@ -118,14 +111,7 @@ pub fn lower_pou_body(
         }
         "SFC" => {
             let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
-            let block = (!hidden.is_empty()).then_some(VarBlock {
-                name: None,
-                kind: VarKind::Local,
-                constant: false,
-                retain: false,
-                vars: hidden,
-                span,
-            });
+            let block = (!hidden.is_empty()).then_some(VarBlock::locals(hidden, span));
             Some((stmts, block))
         }
         other => {

@@ -691,7 +691,7 @@ fn lower_textual_sfc(
     map: &diagnostics::SourceMap,
     diags: &mut diagnostics::Diagnostics,
 ) {
-    use il_frontend::ast::{LibraryElement, VarBlock, VarKind};
+    use il_frontend::ast::{LibraryElement, VarBlock};
     if !pending.iter().any(|pb| pb.sfc) {
         return;
     }
@@ -726,14 +726,7 @@ fn lower_textual_sfc(
         p.body = body;
         if !hidden.is_empty() {
             let span = diagnostics::Span::new(pb.file, pb.base, pb.base);
-            p.var_blocks.push(VarBlock {
-                name: None,
-                kind: VarKind::Local,
-                constant: false,
-                retain: false,
-                vars: hidden,
-                span,
-            });
+            p.var_blocks.push(VarBlock::locals(hidden, span));
         }
     }
 }

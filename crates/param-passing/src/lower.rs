@@ -438,14 +438,7 @@ pub fn lower(
                         span,
                     })
                     .collect();
-                pou.var_blocks.push(VarBlock {
-                    name: None,
-                    kind: VarKind::Local,
-                    constant: false,
-                    retain: false,
-                    vars,
-                    span,
-                });
+                pou.var_blocks.push(VarBlock::locals(vars, span));
             }
         }
         out.units.push(unit);
