@@ -109,10 +109,6 @@ pub struct Action<'e, 'a> {
     pub target: Target<'e, 'a>,
     /// (qualifier, step index, duration) per association.
     pub uses: Vec<(Qualifier, usize, Option<Operand>)>,
-    /// The indicator variables of its associations (the `indicator` attribute, textual SFC's
-    /// `act(N, ind)`): declared BOOL variables that the action's own body sets to indicate
-    /// completion, time-out or errors (IEC 61131-3); the chart never drives them.
-    pub indicators: Vec<Operand>,
     /// The first association's element.
     pub span: Span,
 }
@@ -205,7 +201,6 @@ pub fn collect<'e, 'a>(
         }
         // Indicator variables (IEC 61131-3 2nd ed. 2.6.4.2 field "d", 3rd ed. 6.7.4): declared
         // BOOL variables, which the action's body sets (the chart does not drive them)
-        let mut indicators: Vec<Operand> = Vec::new();
         let mut bad_indicator = false;
         for ind in
             a.el.attr("indicator")
@@ -215,9 +210,7 @@ pub fn collect<'e, 'a>(
                 .filter(|n| !n.is_empty())
         {
             let ispan = ctx.attr_span(a.el, "indicator");
-            if values::is_ident(ind) && is_bool_var(pou, index, ind) == Some(true) {
-                indicators.push(il::var(ind, ispan));
-            } else {
+            if !(values::is_ident(ind) && is_bool_var(pou, index, ind) == Some(true)) {
                 report(
                     ctx,
                     code::E3122,
@@ -344,17 +337,13 @@ pub fn collect<'e, 'a>(
         };
         let k = key.to_ascii_uppercase();
         match out.iter_mut().find(|x| x.key.to_ascii_uppercase() == k) {
-            Some(x) => {
-                x.uses.push((q, a.step, duration));
-                x.indicators.extend(indicators);
-            }
+            Some(x) => x.uses.push((q, a.step, duration)),
             None => out.push(Action {
                 key,
                 display,
                 name,
                 target,
                 uses: vec![(q, a.step, duration)],
-                indicators,
                 span,
             }),
         }
