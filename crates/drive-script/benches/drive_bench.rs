@@ -2,6 +2,7 @@
 //!
 //! Run with `cargo bench -p drive-script`. Prints one line per figure; the interpreter goal is < 50 ns per
 //! Event. A no-op drive isolates the interpreter from the simulated drive's floating-point model.
+#![forbid(unsafe_code)]
 
 use drive_script::*;
 use std::hint::black_box;

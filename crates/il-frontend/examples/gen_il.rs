@@ -2,6 +2,7 @@
 //! (scripts/matiec-anchor.sh): `cargo run --release -p il-frontend --example gen_il -- LINES POUS > p.il`.
 //! Input: body lines per POU and the number of POUs (defaults 2000 and 50). Output: the text of
 //! `il_frontend::testgen::generate(LINES, POUS)`, unchanged.
+#![forbid(unsafe_code)]
 use std::io::Write as _;
 
 fn main() {

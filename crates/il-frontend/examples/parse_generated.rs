@@ -1,4 +1,5 @@
 //! Measures parsing of a generated program: `cargo run --release -p il-frontend --example parse_generated -- LINES POUS`.
+#![forbid(unsafe_code)]
 fn main() {
     let mut args = std::env::args().skip(1);
     let lines: usize = args

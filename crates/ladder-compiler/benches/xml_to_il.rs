@@ -1,5 +1,6 @@
 //! `cargo bench -p ladder-compiler`: time to read and lower generated projects (the "10,000 rungs from
 //! XML to C in under one second" budget; this is the XML -> IL part).
+#![forbid(unsafe_code)]
 
 use diagnostics::{Diagnostics, FileId};
 use std::time::Instant;

@@ -2,6 +2,7 @@
 //! it: `cargo run --release -p ladder-compiler --example gen_ld -- RUNGS > p.xml`.
 //! Input: the rung count (default 10000). Output: the text of `ladder_compiler::testgen::generate(RUNGS)`,
 //! unchanged.
+#![forbid(unsafe_code)]
 use std::io::Write as _;
 
 fn main() {

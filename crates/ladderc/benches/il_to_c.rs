@@ -12,6 +12,7 @@
 //! `LADDERC_BENCH_DUMP=<file>` also writes the generated program (to time `ladderc build` on it).
 //! Invariants: every job runs in its own child process (see `common`), so its peak memory is its own;
 //! the compiled program must produce no error diagnostic, and the bench fails if it does.
+#![forbid(unsafe_code)]
 
 mod common;
 

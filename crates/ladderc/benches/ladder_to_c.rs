@@ -8,6 +8,7 @@
 //! to C through `ladderc build` in at most 0.25 s.
 //! Invariants: every job runs in its own child process (see `common`); the project must compile without
 //! an error diagnostic, and the bench fails if it does not.
+#![forbid(unsafe_code)]
 
 mod common;
 

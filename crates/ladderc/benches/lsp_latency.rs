@@ -7,6 +7,7 @@
 //! to C, until publishDiagnostics), change, hover, go to definition, document symbols and completion.
 //! Invariants: the file has no error; every answer is checked to be non-empty, so a fast wrong answer
 //! does not count.
+#![forbid(unsafe_code)]
 
 use lsp_server::{Connection, Message, Notification, Request, RequestId};
 use serde_json::{json, Value};

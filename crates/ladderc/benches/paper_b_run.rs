@@ -15,6 +15,7 @@
 //!
 //! Run: `cargo bench -p ladderc --bench paper_b_run` (3 repetitions; `cargo test --benches` runs 200
 //! cycles once as a smoke test). The figures are in crates/ladderc/BENCHMARKS.md and the README.
+#![forbid(unsafe_code)]
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -4,6 +4,7 @@
 //! 41 and K = 1 divided by 40 calls and the cycles (both runs step the same engine, so the engine's own
 //! cost cancels). Run: `cargo bench -p ladderc --bench param_passing` (with `cargo test --benches` it
 //! runs a few cycles only, as a smoke test).
+#![forbid(unsafe_code)]
 
 use std::path::Path;
 use std::process::Command;

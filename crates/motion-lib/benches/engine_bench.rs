@@ -10,6 +10,7 @@
 //! cycle). Times are the thread's CPU time (`/proc/thread-self/schedstat`, so that the
 //! other processes of a shared machine do not count; wall time where it is missing).
 //! The report gives the median over the rounds of each and of the per-round ratio.
+#![forbid(unsafe_code)]
 
 use std::hint::black_box;
 use std::time::Instant;

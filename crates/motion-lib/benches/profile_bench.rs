@@ -10,6 +10,7 @@
 //! of each planner counts, which filters out the preemptions of a shared machine. Per problem the
 //! ratio ours / rsruckig is the median over the rounds; the report gives, per kind, the
 //! median plan time of each planner and the median of the per-problem ratios.
+#![forbid(unsafe_code)]
 
 use motion_lib::profile::line::{path_limits, Line};
 use motion_lib::profile::{Limits, Profile, State};

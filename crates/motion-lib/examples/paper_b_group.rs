@@ -1,5 +1,6 @@
 //! Paper B's experiment as CSV (time, then position and velocity of each axis, then the
 //! path speed), for plotting: `cargo run -p motion-lib --example paper_b_group > b.csv`.
+#![forbid(unsafe_code)]
 
 use motion_lib::axis::AxisConfig;
 use motion_lib::buffer::{BufferMode, TransitionMode};

@@ -2,6 +2,7 @@
 //! ruckig-comparable `duration` and `phases` recomputed by this library
 //! (`motion_lib::profile::plan_jsonl`); used to check profiles with exact arithmetic
 //! (`tests/data/check_exact.py`).
+#![forbid(unsafe_code)]
 
 use std::io::Read;
 

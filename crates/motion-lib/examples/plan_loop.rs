@@ -5,6 +5,7 @@
 //! passes over the problems (default 100). Prints the sum of the durations.
 //! With `PLAN_LOOP_TIME` set: the median over the problems of the best of 6 batches of 40
 //! plans (a rough figure for trying changes; the bench is the measurement).
+#![forbid(unsafe_code)]
 
 use motion_lib::profile::line::Line;
 use motion_lib::profile::{Limits, Profile, State};

@@ -8,6 +8,7 @@
 //! (never a silent skip), and with `LADDERC_REQUIRE_CORPUS=1` an unset `LADDERC_CORPUS` is one too.
 
 #![warn(missing_docs)]
+#![forbid(unsafe_code)]
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
