@@ -349,7 +349,11 @@ fn fuzz_findings_stay_fixed() {
     // The committed minimised inputs (fuzz/regressions/<target>/, also seeds of the cargo-fuzz corpora).
     let dir = common::repo_root().join("fuzz/regressions");
     let mut n = 0;
-    for (front_end, sub) in [(FrontEnd::St, "st"), (FrontEnd::Template, "template")] {
+    for (front_end, sub) in [
+        (FrontEnd::St, "st"),
+        (FrontEnd::Template, "template"),
+        (FrontEnd::Xml, "xml"),
+    ] {
         for f in std::fs::read_dir(dir.join(sub)).unwrap() {
             let data = std::fs::read(f.unwrap().path()).unwrap();
             let out = fuzzing::run(front_end, &data);
@@ -357,5 +361,5 @@ fn fuzz_findings_stay_fixed() {
             n += 1;
         }
     }
-    assert!(n >= 2, "{n} regression inputs");
+    assert!(n >= 3, "{n} regression inputs");
 }
