@@ -1101,3 +1101,25 @@ fn a_drive_script_with_lone_cr_line_ends_builds_the_same_image() {
     assert_eq!(out.status.code(), Some(1));
     assert!(stderr(&out).contains("bad.ds:5:"), "{}", stderr(&out));
 }
+
+#[test]
+fn a_field_of_a_direct_address_is_one_e3100_in_every_st_position() {
+    // cargo-fuzz `st` (session 21): `%QD2 .F` as an operand made the ST lowering ask for the
+    // operand's value and the value's operand in turn, without end (a stack overflow, SIGSEGV).
+    let dir = tempfile::tempdir().unwrap();
+    for (k, text) in [
+        "a := %QD2 .F;",
+        "a := -%QD2 .F + 1;",
+        "IF %QX0.0 .F THEN a := 1; END_IF;",
+        "a := ABS(%QD2 .F);",
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let f = write(dir.path(), &format!("addr_field{k}.xml"), &st(text));
+        let out = run(&["check", "--message-format", "short"], &[&f]);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(1), "{text}: {err}");
+        assert_eq!(err.matches("error[E3100]").count(), 1, "{text}: {err}");
+    }
+}

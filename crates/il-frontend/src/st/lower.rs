@@ -984,7 +984,9 @@ impl<'d> PouLowering<'d> {
                         .with_primary_label("direct address"),
                 );
                 self.poisoned = true;
-                return None;
+                // The address itself stands in (the body is poisoned): a `None` here sent
+                // `operand` back to `value`, which asked `operand` again, without end.
+                return Some(Operand::Address(a.clone()));
             }
         };
         let mut accessors = Vec::new();
