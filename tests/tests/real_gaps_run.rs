@@ -101,6 +101,60 @@ fn codesys_fb_actions_run_from_st_and_il_bodies() {
 }
 
 #[test]
+fn il_ld_and_fbd_actions_of_a_codesys_export_run_where_they_are_called() {
+    // FB_Counter's ST body calls its IL action Inc (RETC when step = 0: leaves the action, not the
+    // body) and its LD action Edge (rising-edge contact, a detector of the action's own); PLC_PRG
+    // calls the FBD action fb.Scale() from outside (scaled = total * 10) with step 0 in cycle 2;
+    // PRG_IL (IL body) calls `CAL fb2.Inc(step := 5)` (only the action runs: fb2.n stays 0) and its
+    // own LD action Blink with `CALC Blink` once k > 2. Its SFC action is still W3401.
+    let (trace, stderr) = run(
+        &fixture("il_ld_fbd_actions.xml"),
+        4,
+        "PLC_PRG.fb.n,PLC_PRG.fb.total,PLC_PRG.fb.lamp,PLC_PRG.fb.rises,PLC_PRG.fb.scaled,\
+         PRG_IL.fb2.total,PRG_IL.fb2.n,PRG_IL.k,PRG_IL.led",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.fb.n,PLC_PRG.fb.total,PLC_PRG.fb.lamp,PLC_PRG.fb.rises,\
+         PLC_PRG.fb.scaled,PRG_IL.fb2.total,PRG_IL.fb2.n,PRG_IL.k,PRG_IL.led\n\
+         0,0,1,2,1,1,20,5,0,1,0\n\
+         1,10,2,4,0,1,40,10,0,2,0\n\
+         2,20,3,4,1,2,40,15,0,3,1\n\
+         3,30,4,6,0,2,60,20,0,4,0\n"
+    );
+    let w: Vec<&str> = stderr.lines().filter(|l| l.contains("W3401")).collect();
+    assert_eq!(w.len(), 1, "{stderr}");
+    assert!(
+        w[0].contains("`Chart`") && w[0].contains("<SFC>"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn an_il_action_that_calls_itself_is_one_located_error() {
+    let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <types><pous>
+    <pou name="P" pouType="program">
+      <interface><localVars><variable name="x"><type><INT /></type></variable></localVars></interface>
+      <actions><action name="Loop"><body><IL><xhtml xmlns="http://www.w3.org/1999/xhtml">LD x
+ADD 1
+ST x
+CAL Loop</xhtml></IL></body></action></actions>
+      <body><IL><xhtml xmlns="http://www.w3.org/1999/xhtml">CAL Loop</xhtml></IL></body>
+    </pou>
+  </pous></types>
+</project>"#;
+    let (code, lines) = check_text("loop.xml", xml);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("loop.xml:9:1: error[E0106]: action `Loop` calls itself"),
+        "{lines:?}"
+    );
+}
+
+#[test]
 fn an_action_calling_an_action_of_another_instance_runs_it_once() {
     // main calls p.Press() once a cycle; Press counts and calls l.Switch() on Panel's Lamp, which
     // toggles `lit`; the Lamp's body (p's own call l()) counts n once a cycle

@@ -335,3 +335,129 @@ fn jump(cond: Condition, label: &Ident, span: diagnostics::Span) -> IlStmt {
         span,
     })
 }
+
+/// A copy of an action's IL statements for one place it runs: every label (and jump target) gets
+/// the prefix `tag`, so two copies in one POU never share a label, and `RET`/`RETC`/`RETCN` become
+/// jumps to the copy's end (`<tag>END`): a return leaves the action, not the POU that runs it
+/// (CODESYS). Used for actions written in IL, LD or FBD (PLCopen XML `<actions>`), inlined where
+/// their POU calls them and linked for calls through an instance.
+pub fn instantiate(body: &[IlStmt], tag: &str, span: diagnostics::Span) -> Vec<IlStmt> {
+    let end = Ident::new(format!("{tag}END"), span);
+    let mut returns = false;
+    let mut out = body.to_vec();
+    relabel(&mut out, tag, &end, &mut returns);
+    if returns {
+        out.push(IlStmt::Label(end));
+    }
+    out
+}
+
+fn relabel(stmts: &mut [IlStmt], tag: &str, end: &Ident, returns: &mut bool) {
+    for s in stmts {
+        match s {
+            IlStmt::Label(l) => l.name = format!("{tag}{}", l.name),
+            IlStmt::Instr(i) => match &mut i.kind {
+                InstrKind::Jump { label, .. } => label.name = format!("{tag}{}", label.name),
+                InstrKind::Return { cond } => {
+                    *returns = true;
+                    i.kind = InstrKind::Jump {
+                        cond: *cond,
+                        label: end.clone(),
+                    };
+                }
+                InstrKind::Deferred { body, .. } => relabel(body, tag, end, returns),
+                _ => {}
+            },
+        }
+    }
+}
+
+/// Inlines the calls of a POU's own IL-level actions in `body` (an IL body, or an action's
+/// statements): `CAL Act` (no arguments, `Act` not a variable of the POU, see `is_var`) is replaced
+/// by a copy of the action's statements ([`instantiate`], labels tagged `<prefix><n>_`), `CALC Act` /
+/// `CALCN Act` by the copy behind a conditional jump. `actions` maps upper-case names to
+/// statements; `next` numbers the copies of the POU. An action that calls itself (directly or
+/// through another action) is E0106, at the call.
+pub fn inline_calls(
+    body: Vec<IlStmt>,
+    actions: &HashMap<String, Vec<IlStmt>>,
+    is_var: &dyn Fn(&str) -> bool,
+    prefix: &str,
+    next: &mut usize,
+    diags: &mut Diagnostics,
+) -> Vec<IlStmt> {
+    let mut stack = Vec::new();
+    inline_rec(body, actions, is_var, prefix, next, &mut stack, diags)
+}
+
+fn inline_rec(
+    body: Vec<IlStmt>,
+    actions: &HashMap<String, Vec<IlStmt>>,
+    is_var: &dyn Fn(&str) -> bool,
+    prefix: &str,
+    next: &mut usize,
+    stack: &mut Vec<String>,
+    diags: &mut Diagnostics,
+) -> Vec<IlStmt> {
+    let mut out = Vec::with_capacity(body.len());
+    for s in body {
+        let target = match &s {
+            IlStmt::Instr(Instruction {
+                kind:
+                    InstrKind::Call {
+                        cond,
+                        instance,
+                        args: CallArgs::None,
+                    },
+                span,
+            }) if instance.accessors.is_empty()
+                && actions.contains_key(&instance.base.key())
+                && !is_var(&instance.base.name) =>
+            {
+                Some((
+                    *cond,
+                    instance.base.key(),
+                    instance.base.name.clone(),
+                    *span,
+                ))
+            }
+            _ => None,
+        };
+        let Some((cond, key, written, span)) = target else {
+            out.push(s);
+            continue;
+        };
+        if stack.contains(&key) {
+            diags.push(
+                Diagnostic::error(
+                    code::E0106,
+                    format!("action `{written}` calls itself (directly or through another action)"),
+                )
+                .at(span)
+                .with_primary_label("recursive action call")
+                .with_hint("actions are inlined where they are called; they cannot recurse"),
+            );
+            continue;
+        }
+        *next += 1;
+        let tag = format!("{prefix}{next}_");
+        let copy = instantiate(&actions[&key], &tag, span);
+        stack.push(key);
+        let copy = inline_rec(copy, actions, is_var, prefix, next, stack, diags);
+        stack.pop();
+        let skip = Ident::new(format!("{tag}SKIP"), span);
+        let guard = match cond {
+            Condition::Always => None,
+            Condition::IfTrue => Some(Condition::IfFalse),
+            Condition::IfFalse => Some(Condition::IfTrue),
+        };
+        if let Some(c) = guard {
+            out.push(jump(c, &skip, span));
+        }
+        out.extend(copy);
+        if guard.is_some() {
+            out.push(IlStmt::Label(skip));
+        }
+    }
+    out
+}

@@ -163,9 +163,7 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             continue;
         };
         pou.body = stmts;
-        if let Some(h) = hidden {
-            pou.var_blocks.push(h);
-        }
+        pou.var_blocks.extend(hidden);
         unit.items.push(LibraryElement::Pou(pou));
     }
     unit.items

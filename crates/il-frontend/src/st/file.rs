@@ -665,6 +665,7 @@ pub fn compile_pending(
                     &decls,
                     p,
                     &pb.actions,
+                    &[],
                     span,
                     diags,
                 );
