@@ -484,6 +484,46 @@ fn reserved_names_are_one_located_error_and_the_names_real_projects_use_run() {
     assert_eq!(code, Some(1));
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(lines[0].starts_with("k.st:2:5: error[E1031]"), "{lines:?}");
+    // ... and used in IL or ST bodies (read, written, as an operand of AND): the keywords the lexer
+    // reads as keywords, including the VAR-block qualifiers and TASK, give the one E1031 at the
+    // declaration, never a syntax error at each use
+    for name in [
+        "ON",
+        "OF",
+        "BY",
+        "DO",
+        "TO",
+        "AT",
+        "WITH",
+        "TRUE",
+        "FALSE",
+        "TASK",
+        "RETAIN",
+        "CONSTANT",
+        "NON_RETAIN",
+    ] {
+        let want = format!("error[E1031]: `{name}` is reserved in IEC 61131-3 (a keyword)");
+        let il = format!(
+            "PROGRAM main\nVAR\n  {name} : BOOL;\n  x : BOOL;\nEND_VAR\nLD {name}\nST x\nANDN {name}\nST {name}\nEND_PROGRAM\n"
+        );
+        let (code, lines) = check_text("u.il", &il);
+        assert_eq!(code, Some(1), "{name}: {lines:?}");
+        assert_eq!(lines.len(), 1, "{name}: {lines:?}");
+        assert!(
+            lines[0].starts_with(&format!("u.il:3:3: {want}")),
+            "{lines:?}"
+        );
+        let st = format!(
+            "PROGRAM main\nVAR\n  {name} : BOOL;\n  x : BOOL;\nEND_VAR\n{name} := TRUE;\nx := {name} AND x;\nEND_PROGRAM\n"
+        );
+        let (code, lines) = check_text("u.st", &st);
+        assert_eq!(code, Some(1), "{name}: {lines:?}");
+        assert_eq!(lines.len(), 1, "{name}: {lines:?}");
+        assert!(
+            lines[0].starts_with(&format!("u.st:3:3: {want}")),
+            "{lines:?}"
+        );
+    }
     // accepted: IL operator names (Beremiz's traffic light names variables S and R), standard
     // block parameters (IN, Q, PT, CU) and standard function names (a CODESYS project's LEN)
     let (out, _) = run(

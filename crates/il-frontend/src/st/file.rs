@@ -654,7 +654,14 @@ pub fn compile_pending(
                     .iter()
                     .flat_map(|b| b.vars.iter())
                     .any(|v| crate::sema::reserved_name(&v.name.name) == Some("a keyword"));
-                if keyword_var {
+                // (a declaration the parser could not read, `OF : BOOL;`, is already E1031 there)
+                let dropped_keyword_var = diags.iter().any(|d| {
+                    d.code == code::E1031
+                        && d.span.is_some_and(|s| {
+                            s.file == p.span.file && s.start >= p.span.start && s.end <= p.span.end
+                        })
+                });
+                if keyword_var || dropped_keyword_var {
                     continue;
                 }
                 let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
