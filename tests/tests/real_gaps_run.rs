@@ -539,3 +539,41 @@ fn reserved_names_are_one_located_error_and_the_names_real_projects_use_run() {
          2,20,1,0,1,1,T#30ms,3,1\n"
     );
 }
+
+// ------------------------------------------------------------------ BCD conversions
+
+#[test]
+fn bcd_conversions_have_the_standard_widths_and_documented_results() {
+    // IEC 61131-3 (3rd ed., BCD conversions): the typed forms USINT_TO_BCD_BYTE, UINT_TO_BCD_WORD,
+    // UDINT_TO_BCD_DWORD, ULINT_TO_BCD_LWORD and back (*_BCD_TO_*), the overloaded BCD_TO_INT and
+    // INT_TO_BCD (WORD: the width of an INT). Documented results (crates/c-backend/README.md): an
+    // invalid digit (16#12A4), a negative value, and a value with more digits than the bit string
+    // holds give 0 (and the range flag the run reports)
+    let (trace, stderr) = run(
+        &fixture("bcd.st"),
+        1,
+        "main.b,main.w,main.d,main.l,main.us,main.ui,main.ud,main.ul,main.i,main.bad,main.neg,\
+         main.big,main.ov",
+    );
+    assert_eq!(
+        trace,
+        format!(
+            "cycle,time_ms,main.b,main.w,main.d,main.l,main.us,main.ui,main.ud,main.ul,main.i,\
+             main.bad,main.neg,main.big,main.ov\n0,0,{},{},{},{},99,9876,12345678,1234567890123456,\
+             321,0,0,0,0\n",
+            0x45, 0x1234, 0x1234_5678, 0x1234_5678_9012_3456u64
+        )
+    );
+    assert!(stderr.contains("conversion out of range"), "{stderr}");
+    // INT_TO_BCD gives a WORD: stored into a BYTE it is the one error of any WORD into a BYTE
+    let (code, lines) = check_text(
+        "n.st",
+        "PROGRAM main\nVAR b : BYTE; END_VAR\nb := INT_TO_BCD(12);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("n.st:3:1: error[E1006]: cannot store WORD into BYTE"),
+        "{lines:?}"
+    );
+}
