@@ -173,19 +173,69 @@ fn an_action_calling_an_action_of_another_instance_runs_it_once() {
 }
 
 #[test]
-fn an_action_of_a_program_called_from_another_pou_is_a_located_error() {
+fn an_action_of_a_program_runs_on_its_one_instance_when_called_from_another_program() {
+    // programs run in source order, each as its one implicit instance: Other calls
+    // PLC_PRG.Reset() when n is a multiple of 3, IlSide `CALC PLC_PRG.Reset` when k = 5; the action
+    // runs at once on PLC_PRG's state (count back to 0, resets counted)
+    let (trace, _) = run(
+        &fixture("program_actions.st"),
+        6,
+        "PLC_PRG.count,PLC_PRG.resets,Other.n,IlSide.k",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.count,PLC_PRG.resets,Other.n,IlSide.k\n\
+         0,0,1,0,1,1\n\
+         1,10,2,0,2,2\n\
+         2,20,0,1,3,3\n\
+         3,30,1,1,4,4\n\
+         4,40,0,2,5,5\n\
+         5,50,0,3,6,6\n"
+    );
+}
+
+#[test]
+fn a_program_action_call_is_a_located_error_when_the_program_has_no_single_instance() {
     let src = "PROGRAM counter\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n\
                ACTIONS\nACTION Reset:\nn := 0;\nEND_ACTION\nEND_ACTIONS\n\
-               PROGRAM other\ncounter.Reset();\nEND_PROGRAM\n";
-    let (code, lines) = check_text("p.st", src);
-    assert_eq!(code, Some(1), "{lines:?}");
+               PROGRAM other\ncounter.Reset();\nEND_PROGRAM\n\
+               CONFIGURATION Cfg\nRESOURCE Res ON PLC\nTASK Main(INTERVAL := T#10ms, PRIORITY := 1);\n";
+    let tail = "PROGRAM O WITH Main : other;\nEND_RESOURCE\nEND_CONFIGURATION\n";
+    for (instances, why) in [
+        (
+            "PROGRAM A WITH Main : counter;\nPROGRAM B WITH Main : counter;\n",
+            "program `counter` has 2 instances (`A`, `B`): the call does not say which one",
+        ),
+        (
+            "",
+            "program `counter` has no instance in the configuration, so there is no state to run \
+             the action on",
+        ),
+    ] {
+        let (code, lines) = check_text("p.st", &format!("{src}{instances}{tail}"));
+        assert_eq!(code, Some(1), "{lines:?}");
+        assert_eq!(
+            lines,
+            vec![format!(
+                "p.st:11:1: error[E3135]: action `Reset` of program `counter` cannot be called \
+                 here: {why} (hint: call it from `counter` itself (`Reset();`), or give the \
+                 program one instance)"
+            )]
+        );
+    }
+    // with one instance the call runs on it (named by the instance in the trace): A counts, O
+    // resets it in its second cycle (A runs first: declared first in the task)
+    let one = format!("{src}PROGRAM A WITH Main : counter;\n{tail}").replace(
+        "PROGRAM other\ncounter.Reset();",
+        "PROGRAM other\nVAR m : INT; END_VAR\nm := m + 1;\nIF m = 2 THEN counter.Reset(); END_IF",
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("one.st");
+    std::fs::write(&f, one).unwrap();
+    let (trace, _) = run(&f, 4, "A.n,O.m");
     assert_eq!(
-        lines,
-        vec![
-            "p.st:11:1: error[E3135]: action `Reset` of program `counter` is called from another POU \
-             (hint: call it from `counter` itself (`Reset();`), or make `counter` a FUNCTION_BLOCK and \
-             call the action through an instance)"
-        ]
+        trace,
+        "cycle,time_ms,A.n,O.m\n0,0,1,1\n1,10,0,2\n2,20,1,3\n3,30,2,4\n"
     );
 }
 

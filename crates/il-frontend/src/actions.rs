@@ -13,8 +13,11 @@
 //!   the action runs once.
 //!
 //! Every [`LibraryElement::Action`] is then dropped: a POU none of whose actions is called from
-//! outside is unchanged. An action of a PROGRAM called from another POU (`PLC_PRG.Act();`) is E3135:
-//! ladderc runs each program as its own instance and no POU can call another program.
+//! outside is unchanged. An action of a PROGRAM called from another POU (`PLC_PRG.Act();`) is linked
+//! the same way, the call becoming `CAL PLC_PRG(__ACTION_ACT := TRUE)` on the program's one
+//! instance (sema and the C backend resolve the program's name to it); when the program has no
+//! instance or several (a configuration that instantiates it twice), or calls itself by its name,
+//! the call is E3135.
 
 use crate::ast::{
     Accessor, Action, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt,
@@ -55,6 +58,10 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
     }
     let mut kinds: HashMap<String, PouKind> = HashMap::new();
     let mut globals: HashMap<String, TypeRef> = HashMap::new();
+    // the instances of each program (upper-case type name -> instance names); without a
+    // configuration every program runs as its one implicit instance
+    let mut instances: HashMap<String, Vec<Ident>> = HashMap::new();
+    let mut configured = false;
     for item in units.iter().flat_map(|u| u.items.iter()) {
         let mut add = |b: &VarBlock| {
             for v in &b.vars {
@@ -67,6 +74,13 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             }
             LibraryElement::GlobalVars(b) => add(b),
             LibraryElement::Configuration(c) => {
+                configured = true;
+                for p in c.resources.iter().flat_map(|r| r.programs.iter()) {
+                    instances
+                        .entry(p.type_name.key())
+                        .or_default()
+                        .push(p.name.clone());
+                }
                 c.globals.iter().for_each(&mut add);
                 c.resources
                     .iter()
@@ -95,6 +109,9 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
                 globals: &globals,
                 kinds: &kinds,
                 actions: &actions,
+                instances: &instances,
+                configured,
+                caller: p.name.key(),
             };
             rewrite_calls(&mut p.body, &scope, &mut called, diags);
         }
@@ -194,6 +211,10 @@ struct Scope<'a> {
     globals: &'a HashMap<String, TypeRef>,
     kinds: &'a HashMap<String, PouKind>,
     actions: &'a HashMap<String, Vec<Action>>,
+    instances: &'a HashMap<String, Vec<Ident>>,
+    configured: bool,
+    /// The calling POU (upper-case name).
+    caller: String,
 }
 
 impl Scope<'_> {
@@ -255,28 +276,78 @@ fn rewrite_calls(
             continue;
         };
         if let Some(a) = scope.program_action(instance) {
-            if diags
-                .iter()
-                .any(|d| d.code == code::E3135 && d.span == Some(instance.span))
-            {
-                continue;
-            }
-            diags.push(
-                Diagnostic::error(
-                    code::E3135,
-                    format!(
-                        "action `{}` of program `{}` is called from another POU",
-                        a.name.name, a.pou.name
-                    ),
-                )
-                .at(instance.span)
-                .with_primary_label("action of a program")
-                .with_label(a.name.span, "action declared here")
-                .with_hint(format!(
-                    "call it from `{}` itself (`{}();`), or make `{}` a FUNCTION_BLOCK and call the action through an instance",
-                    a.pou.name, a.name.name, a.pou.name
+            // the program's one instance runs the action (CODESYS: `PLC_PRG.Reset();`), unless
+            // the program has no instance or several, or calls itself by its name
+            let key = a.pou.key();
+            let why = match scope.instances.get(&key).map(Vec::as_slice) {
+                _ if scope.caller == key => Some(format!(
+                    "`{}` calls its own action through its name",
+                    a.pou.name
                 )),
-            );
+                Some([_]) => None,
+                None if !scope.configured => None,
+                None => Some(format!(
+                    "program `{}` has no instance in the configuration, so there is no state to run the action on",
+                    a.pou.name
+                )),
+                Some(list) => Some(format!(
+                    "program `{}` has {} instances ({}): the call does not say which one",
+                    a.pou.name,
+                    list.len(),
+                    list.iter()
+                        .map(|i| format!("`{}`", i.name))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )),
+            };
+            match why {
+                None if !matches!(args, CallArgs::NonFormal(_)) => {
+                    let act_span = match instance.accessors.last() {
+                        Some(Accessor::Field(f)) => f.span,
+                        _ => span,
+                    };
+                    let flag = FormalArg {
+                        name: Ident::new(flag_name(&a.name), act_span),
+                        dir: ArgDir::Input,
+                        value: bool_lit(true, act_span),
+                        span: act_span,
+                    };
+                    let names = called.entry(key).or_default();
+                    if !names.contains(&a.name.key()) {
+                        names.push(a.name.key());
+                    }
+                    instance.accessors.pop();
+                    match args {
+                        CallArgs::Formal(list) => list.push(flag),
+                        _ => *args = CallArgs::Formal(vec![flag]),
+                    }
+                }
+                None => {}
+                Some(why) => {
+                    if diags
+                        .iter()
+                        .any(|d| d.code == code::E3135 && d.span == Some(instance.span))
+                    {
+                        continue;
+                    }
+                    diags.push(
+                        Diagnostic::error(
+                            code::E3135,
+                            format!(
+                                "action `{}` of program `{}` cannot be called here: {why}",
+                                a.name.name, a.pou.name
+                            ),
+                        )
+                        .at(instance.span)
+                        .with_primary_label("action of a program")
+                        .with_label(a.name.span, "action declared here")
+                        .with_hint(format!(
+                            "call it from `{}` itself (`{}();`), or give the program one instance",
+                            a.pou.name, a.name.name
+                        )),
+                    );
+                }
+            }
             continue;
         }
         let Some((fb, action)) = scope.action_of(instance) else {
