@@ -627,3 +627,53 @@ fn bcd_conversions_have_the_standard_widths_and_documented_results() {
         "{lines:?}"
     );
 }
+
+// ------------------------------------------------------------------ methods (edition 3)
+
+#[test]
+fn methods_of_a_function_block_run_from_statements_and_expressions() {
+    // Counter's body adds step; its method Add (VAR_INPUT n, VAR tmp, result INT) adds n * step,
+    // returns the new value, or -1 through RETURN when n * step = 0; Reset sets value to 0.
+    // main: r := c.Add(10) * 2 (the call runs before the statement reads its result), IF
+    // c.Add(0) < 0 counts z (Add returned early), c.Reset() in cycle 3 (k = 3)
+    let (trace, _) = run(
+        &fixture("methods.st"),
+        4,
+        "main.c.value,main.k,main.r,main.z",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.c.value,main.k,main.r,main.z\n\
+         0,0,11,1,22,1\n\
+         1,10,22,2,44,2\n\
+         2,20,0,3,66,3\n\
+         3,30,11,4,22,4\n"
+    );
+}
+
+#[test]
+fn method_calls_that_cannot_run_before_their_statement_are_one_located_error_each() {
+    let fb = "FUNCTION_BLOCK Counter\nVAR_OUTPUT value : INT; END_VAR\n\
+              METHOD Add : INT\nVAR_INPUT n : INT; END_VAR\nvalue := value + n;\nAdd := value;\nEND_METHOD\n\
+              END_FUNCTION_BLOCK\n";
+    for (stmt, want) in [
+        (
+            "r := c.Add(1) + c.Add(2);",
+            "m.st:11:17: error[E0108]: method `Add` is called twice in one statement",
+        ),
+        (
+            "WHILE c.Add(1) < 5 DO r := 1; END_WHILE",
+            "m.st:11:7: error[E0108]: a call of method `Add` in a WHILE, UNTIL or ELSIF condition is not supported",
+        ),
+        (
+            "r := c.Sub(1);",
+            "m.st:11:8: error[E1011]: Counter has no input or output `Sub` (hint: parameters of Counter: value)",
+        ),
+    ] {
+        let src = format!("{fb}PROGRAM main\nVAR c : Counter; r : INT; END_VAR\n{stmt}\nEND_PROGRAM\n");
+        let (code, lines) = check_text("m.st", &src);
+        assert_eq!(code, Some(1), "{stmt}: {lines:?}");
+        assert_eq!(lines.len(), 1, "{stmt}: {lines:?}");
+        assert!(lines[0].starts_with(want), "{stmt}: {lines:?}");
+    }
+}

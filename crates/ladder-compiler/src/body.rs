@@ -292,6 +292,7 @@ fn lower_actions<'e, 'a>(
                 span,
             ),
             temps: None,
+            method_inputs: None,
             diagnostics: Vec::new(),
         });
         out.il.insert(n.key(), body);

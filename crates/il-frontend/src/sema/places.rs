@@ -738,10 +738,14 @@ impl Body<'_, '_> {
                             read_only,
                         })
                     }
+                    // the result of a method that does not exist (`c.Foo(1)` in an expression):
+                    // the call itself is reported
+                    None if f.name.starts_with(crate::actions::METHOD_PREFIX) => None,
                     None => {
+                        // (the hidden variables of actions and methods are not offered)
                         let names: Vec<String> = params
                             .iter()
-                            .filter(|p| p.1 != ParamDir::Internal)
+                            .filter(|p| p.1 != ParamDir::Internal && !p.0.starts_with("__"))
                             .map(|p| p.0.clone())
                             .collect();
                         self.a

@@ -109,6 +109,7 @@ pub fn compile_body_with_actions(
                 name: name.clone(),
                 body,
                 temps: None,
+                method_inputs: None,
                 diagnostics: local.into_vec(),
             }
         })
