@@ -677,3 +677,43 @@ fn method_calls_that_cannot_run_before_their_statement_are_one_located_error_eac
         assert!(lines[0].starts_with(want), "{stmt}: {lines:?}");
     }
 }
+
+#[test]
+fn codesys_methods_in_vendor_data_run_and_a_property_is_one_located_error() {
+    // FB_Axis adds rVelocity every call; its method M_MoveBy (CODESYS: addData .../method, with
+    // returnType, inputVars, outputVars and a localVars rLimit initialised to 100.0 at each call)
+    // moves by rDistance unless the target passes rLimit (then FALSE through RETURN, rTarget
+    // still set); M_Home zeroes the position (in cycle 2). PRG_IL calls `CAL fbAxis.M_MoveBy(5.0)`
+    // only: its instance's body never runs.
+    let (trace, _) = run(
+        &fixture("xml_methods.xml"),
+        5,
+        "PLC_PRG.fbAxis.rPosition,PLC_PRG.xOk,PLC_PRG.rLast,PRG_IL.fbAxis.rPosition",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.fbAxis.rPosition,PLC_PRG.xOk,PLC_PRG.rLast,PRG_IL.fbAxis.rPosition\n\
+         0,0,41,1,41,5\n\
+         1,10,82,1,82,10\n\
+         2,20,0,0,123,15\n\
+         3,30,41,1,41,20\n\
+         4,40,82,1,82,25\n"
+    );
+    let src = std::fs::read_to_string(fixture("xml_methods.xml")).unwrap().replace(
+        "<data name=\"http://www.3s-software.com/plcopenxml/method\" handleUnknown=\"implementation\">\n            <Method name=\"M_Home\"",
+        "<data name=\"http://www.3s-software.com/plcopenxml/property\" handleUnknown=\"implementation\">\n            <Property name=\"P_Home\"",
+    ).replace("</Method>\n          </data>\n        </addData>", "</Property>\n          </data>\n        </addData>");
+    let (code, lines) = check_text("p.xml", &src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(
+        lines.iter().filter(|l| l.contains("error[")).count(),
+        1,
+        "{lines:?}"
+    );
+    assert!(
+        lines.iter().any(|l| l.starts_with(
+            "p.xml:42:13: error[E0303]: `FB_Axis`: PROPERTY `P_Home` is not compiled: a PROPERTY is not supported"
+        )),
+        "{lines:?}"
+    );
+}

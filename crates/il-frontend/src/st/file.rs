@@ -893,7 +893,11 @@ pub fn compile_pending(
 /// VAR_INPUT (an input of the block), VAR_OUTPUT (an output), VAR and VAR_TEMP (a temporary: a
 /// method's variables do not keep their values from call to call), and the result `__M_<METHOD>`
 /// (an output). A VAR_IN_OUT of a method is E0303 (not supported).
-fn add_method_vars(p: &mut crate::ast::Pou, methods: &[PendingMethod], diags: &mut Diagnostics) {
+pub fn add_method_vars(
+    p: &mut crate::ast::Pou,
+    methods: &[PendingMethod],
+    diags: &mut Diagnostics,
+) {
     use crate::actions::{method_result, method_var};
     use crate::ast::{VarBlock, VarKind};
     let mut inputs = Vec::new();
@@ -957,7 +961,7 @@ fn add_method_vars(p: &mut crate::ast::Pou, methods: &[PendingMethod], diags: &m
 /// [`Action`](crate::ast::Action) for [`crate::actions::link`]: its statements are lowered where the
 /// method's own names are its variables (they shadow the block's), then those names become the
 /// hidden ones, its labels get a prefix of their own and `RETURN` leaves the method.
-fn lower_method(
+pub fn lower_method(
     file: FileId,
     decls: &super::Declarations,
     p: &mut crate::ast::Pou,
