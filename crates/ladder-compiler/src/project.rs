@@ -506,6 +506,16 @@ fn read_interface(
     }
 }
 
+/// A constant of the block (`local`), else a global one.
+fn local_or(
+    local: &HashMap<String, i128>,
+    globals: &HashMap<String, i128>,
+    n: &str,
+) -> Option<i128> {
+    let k = n.to_ascii_uppercase();
+    local.get(&k).or_else(|| globals.get(&k)).copied()
+}
+
 /// The METHODs of a POU in CODESYS's vendor data (`addData/data[.../method]/Method`, with an
 /// `<interface>` and an ST `<body>`), read for a function block; a method of another POU, one whose
 /// body is not ST, and a PROPERTY (`.../property`) are E0303.
@@ -560,7 +570,20 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
             let mut ret = None;
             let mut blocks = Vec::new();
             if let Some(iface) = m.child("interface") {
+                // array bounds may name the block's constants or the method's own
+                let globals = std::mem::take(&mut ctx.constants);
+                let lookup = |n: &str| globals.get(&n.to_ascii_uppercase()).copied();
+                let mut local = p
+                    .child("interface")
+                    .map(|i| decls::collect_constants(i, false, &lookup))
+                    .unwrap_or_default();
+                local.extend(decls::collect_constants(iface, false, &|n| {
+                    local_or(&local, &globals, n)
+                }));
+                ctx.constants = globals;
+                ctx.local_constants = local;
                 read_interface(ctx, iface, &mut ret, &mut blocks);
+                ctx.local_constants.clear();
             }
             let ident = Ident::new(name, ctx.attr_span(m, "name"));
             let st = st.expect("checked above");
