@@ -655,19 +655,24 @@ fn methods_of_a_function_block_run_from_statements_and_expressions() {
 fn method_calls_that_cannot_run_before_their_statement_are_one_located_error_each() {
     let fb = "FUNCTION_BLOCK Counter\nVAR_OUTPUT value : INT; END_VAR\n\
               METHOD Add : INT\nVAR_INPUT n : INT; END_VAR\nvalue := value + n;\nAdd := value;\nEND_METHOD\n\
+              METHOD Clear\nvalue := 0;\nEND_METHOD\n\
               END_FUNCTION_BLOCK\n";
     for (stmt, want) in [
         (
             "r := c.Add(1) + c.Add(2);",
-            "m.st:11:17: error[E0108]: method `Add` is called twice in one statement",
+            "m.st:14:17: error[E0108]: method `Add` is called twice in one statement",
         ),
         (
             "WHILE c.Add(1) < 5 DO r := 1; END_WHILE",
-            "m.st:11:7: error[E0108]: a call of method `Add` in a WHILE, UNTIL or ELSIF condition is not supported",
+            "m.st:14:7: error[E0108]: a call of method `Add` in a WHILE, UNTIL or ELSIF condition is not supported",
+        ),
+        (
+            "r := c.Clear();",
+            "m.st:14:8: error[E1011]: method `CLEAR` of Counter returns no value",
         ),
         (
             "r := c.Sub(1);",
-            "m.st:11:8: error[E1011]: Counter has no input or output `Sub` (hint: parameters of Counter: value)",
+            "m.st:14:8: error[E1011]: Counter has no input or output `Sub` (hint: parameters of Counter: value)",
         ),
     ] {
         let src = format!("{fb}PROGRAM main\nVAR c : Counter; r : INT; END_VAR\n{stmt}\nEND_PROGRAM\n");
