@@ -101,6 +101,60 @@ fn codesys_fb_actions_run_from_st_and_il_bodies() {
 }
 
 #[test]
+fn il_ld_and_fbd_actions_of_a_codesys_export_run_where_they_are_called() {
+    // FB_Counter's ST body calls its IL action Inc (RETC when step = 0: leaves the action, not the
+    // body) and its LD action Edge (rising-edge contact, a detector of the action's own); PLC_PRG
+    // calls the FBD action fb.Scale() from outside (scaled = total * 10) with step 0 in cycle 2;
+    // PRG_IL (IL body) calls `CAL fb2.Inc(step := 5)` (only the action runs: fb2.n stays 0) and its
+    // own LD action Blink with `CALC Blink` once k > 2. Its SFC action is still W3401.
+    let (trace, stderr) = run(
+        &fixture("il_ld_fbd_actions.xml"),
+        4,
+        "PLC_PRG.fb.n,PLC_PRG.fb.total,PLC_PRG.fb.lamp,PLC_PRG.fb.rises,PLC_PRG.fb.scaled,\
+         PRG_IL.fb2.total,PRG_IL.fb2.n,PRG_IL.k,PRG_IL.led",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.fb.n,PLC_PRG.fb.total,PLC_PRG.fb.lamp,PLC_PRG.fb.rises,\
+         PLC_PRG.fb.scaled,PRG_IL.fb2.total,PRG_IL.fb2.n,PRG_IL.k,PRG_IL.led\n\
+         0,0,1,2,1,1,20,5,0,1,0\n\
+         1,10,2,4,0,1,40,10,0,2,0\n\
+         2,20,3,4,1,2,40,15,0,3,1\n\
+         3,30,4,6,0,2,60,20,0,4,0\n"
+    );
+    let w: Vec<&str> = stderr.lines().filter(|l| l.contains("W3401")).collect();
+    assert_eq!(w.len(), 1, "{stderr}");
+    assert!(
+        w[0].contains("`Chart`") && w[0].contains("<SFC>"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn an_il_action_that_calls_itself_is_one_located_error() {
+    let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <types><pous>
+    <pou name="P" pouType="program">
+      <interface><localVars><variable name="x"><type><INT /></type></variable></localVars></interface>
+      <actions><action name="Loop"><body><IL><xhtml xmlns="http://www.w3.org/1999/xhtml">LD x
+ADD 1
+ST x
+CAL Loop</xhtml></IL></body></action></actions>
+      <body><IL><xhtml xmlns="http://www.w3.org/1999/xhtml">CAL Loop</xhtml></IL></body>
+    </pou>
+  </pous></types>
+</project>"#;
+    let (code, lines) = check_text("loop.xml", xml);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("loop.xml:9:1: error[E0106]: action `Loop` calls itself"),
+        "{lines:?}"
+    );
+}
+
+#[test]
 fn an_action_calling_an_action_of_another_instance_runs_it_once() {
     // main calls p.Press() once a cycle; Press counts and calls l.Switch() on Panel's Lamp, which
     // toggles `lit`; the Lamp's body (p's own call l()) counts n once a cycle
@@ -119,19 +173,69 @@ fn an_action_calling_an_action_of_another_instance_runs_it_once() {
 }
 
 #[test]
-fn an_action_of_a_program_called_from_another_pou_is_a_located_error() {
+fn an_action_of_a_program_runs_on_its_one_instance_when_called_from_another_program() {
+    // programs run in source order, each as its one implicit instance: Other calls
+    // PLC_PRG.Reset() when n is a multiple of 3, IlSide `CALC PLC_PRG.Reset` when k = 5; the action
+    // runs at once on PLC_PRG's state (count back to 0, resets counted)
+    let (trace, _) = run(
+        &fixture("program_actions.st"),
+        6,
+        "PLC_PRG.count,PLC_PRG.resets,Other.n,IlSide.k",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.count,PLC_PRG.resets,Other.n,IlSide.k\n\
+         0,0,1,0,1,1\n\
+         1,10,2,0,2,2\n\
+         2,20,0,1,3,3\n\
+         3,30,1,1,4,4\n\
+         4,40,0,2,5,5\n\
+         5,50,0,3,6,6\n"
+    );
+}
+
+#[test]
+fn a_program_action_call_is_a_located_error_when_the_program_has_no_single_instance() {
     let src = "PROGRAM counter\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n\
                ACTIONS\nACTION Reset:\nn := 0;\nEND_ACTION\nEND_ACTIONS\n\
-               PROGRAM other\ncounter.Reset();\nEND_PROGRAM\n";
-    let (code, lines) = check_text("p.st", src);
-    assert_eq!(code, Some(1), "{lines:?}");
+               PROGRAM other\ncounter.Reset();\nEND_PROGRAM\n\
+               CONFIGURATION Cfg\nRESOURCE Res ON PLC\nTASK Main(INTERVAL := T#10ms, PRIORITY := 1);\n";
+    let tail = "PROGRAM O WITH Main : other;\nEND_RESOURCE\nEND_CONFIGURATION\n";
+    for (instances, why) in [
+        (
+            "PROGRAM A WITH Main : counter;\nPROGRAM B WITH Main : counter;\n",
+            "program `counter` has 2 instances (`A`, `B`): the call does not say which one",
+        ),
+        (
+            "",
+            "program `counter` has no instance in the configuration, so there is no state to run \
+             the action on",
+        ),
+    ] {
+        let (code, lines) = check_text("p.st", &format!("{src}{instances}{tail}"));
+        assert_eq!(code, Some(1), "{lines:?}");
+        assert_eq!(
+            lines,
+            vec![format!(
+                "p.st:11:1: error[E3135]: action `Reset` of program `counter` cannot be called \
+                 here: {why} (hint: call it from `counter` itself (`Reset();`), or give the \
+                 program one instance)"
+            )]
+        );
+    }
+    // with one instance the call runs on it (named by the instance in the trace): A counts, O
+    // resets it in its second cycle (A runs first: declared first in the task)
+    let one = format!("{src}PROGRAM A WITH Main : counter;\n{tail}").replace(
+        "PROGRAM other\ncounter.Reset();",
+        "PROGRAM other\nVAR m : INT; END_VAR\nm := m + 1;\nIF m = 2 THEN counter.Reset(); END_IF",
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("one.st");
+    std::fs::write(&f, one).unwrap();
+    let (trace, _) = run(&f, 4, "A.n,O.m");
     assert_eq!(
-        lines,
-        vec![
-            "p.st:11:1: error[E3135]: action `Reset` of program `counter` is called from another POU \
-             (hint: call it from `counter` itself (`Reset();`), or make `counter` a FUNCTION_BLOCK and \
-             call the action through an instance)"
-        ]
+        trace,
+        "cycle,time_ms,A.n,O.m\n0,0,1,1\n1,10,0,2\n2,20,1,3\n3,30,2,4\n"
     );
 }
 
@@ -430,6 +534,46 @@ fn reserved_names_are_one_located_error_and_the_names_real_projects_use_run() {
     assert_eq!(code, Some(1));
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(lines[0].starts_with("k.st:2:5: error[E1031]"), "{lines:?}");
+    // ... and used in IL or ST bodies (read, written, as an operand of AND): the keywords the lexer
+    // reads as keywords, including the VAR-block qualifiers and TASK, give the one E1031 at the
+    // declaration, never a syntax error at each use
+    for name in [
+        "ON",
+        "OF",
+        "BY",
+        "DO",
+        "TO",
+        "AT",
+        "WITH",
+        "TRUE",
+        "FALSE",
+        "TASK",
+        "RETAIN",
+        "CONSTANT",
+        "NON_RETAIN",
+    ] {
+        let want = format!("error[E1031]: `{name}` is reserved in IEC 61131-3 (a keyword)");
+        let il = format!(
+            "PROGRAM main\nVAR\n  {name} : BOOL;\n  x : BOOL;\nEND_VAR\nLD {name}\nST x\nANDN {name}\nST {name}\nEND_PROGRAM\n"
+        );
+        let (code, lines) = check_text("u.il", &il);
+        assert_eq!(code, Some(1), "{name}: {lines:?}");
+        assert_eq!(lines.len(), 1, "{name}: {lines:?}");
+        assert!(
+            lines[0].starts_with(&format!("u.il:3:3: {want}")),
+            "{lines:?}"
+        );
+        let st = format!(
+            "PROGRAM main\nVAR\n  {name} : BOOL;\n  x : BOOL;\nEND_VAR\n{name} := TRUE;\nx := {name} AND x;\nEND_PROGRAM\n"
+        );
+        let (code, lines) = check_text("u.st", &st);
+        assert_eq!(code, Some(1), "{name}: {lines:?}");
+        assert_eq!(lines.len(), 1, "{name}: {lines:?}");
+        assert!(
+            lines[0].starts_with(&format!("u.st:3:3: {want}")),
+            "{lines:?}"
+        );
+    }
     // accepted: IL operator names (Beremiz's traffic light names variables S and R), standard
     // block parameters (IN, Q, PT, CU) and standard function names (a CODESYS project's LEN)
     let (out, _) = run(
@@ -443,5 +587,138 @@ fn reserved_names_are_one_located_error_and_the_names_real_projects_use_run() {
          0,0,1,0,1,1,T#10ms,1,1\n\
          1,10,0,1,0,0,T#20ms,2,0\n\
          2,20,1,0,1,1,T#30ms,3,1\n"
+    );
+}
+
+// ------------------------------------------------------------------ BCD conversions
+
+#[test]
+fn bcd_conversions_have_the_standard_widths_and_documented_results() {
+    // IEC 61131-3 (3rd ed., BCD conversions): the typed forms USINT_TO_BCD_BYTE, UINT_TO_BCD_WORD,
+    // UDINT_TO_BCD_DWORD, ULINT_TO_BCD_LWORD and back (*_BCD_TO_*), the overloaded BCD_TO_INT and
+    // INT_TO_BCD (WORD: the width of an INT). Documented results (crates/c-backend/README.md): an
+    // invalid digit (16#12A4), a negative value, and a value with more digits than the bit string
+    // holds give 0 (and the range flag the run reports)
+    let (trace, stderr) = run(
+        &fixture("bcd.st"),
+        1,
+        "main.b,main.w,main.d,main.l,main.us,main.ui,main.ud,main.ul,main.i,main.bad,main.neg,\
+         main.big,main.ov",
+    );
+    assert_eq!(
+        trace,
+        format!(
+            "cycle,time_ms,main.b,main.w,main.d,main.l,main.us,main.ui,main.ud,main.ul,main.i,\
+             main.bad,main.neg,main.big,main.ov\n0,0,{},{},{},{},99,9876,12345678,1234567890123456,\
+             321,0,0,0,0\n",
+            0x45, 0x1234, 0x1234_5678, 0x1234_5678_9012_3456u64
+        )
+    );
+    assert!(stderr.contains("conversion out of range"), "{stderr}");
+    // INT_TO_BCD gives a WORD: stored into a BYTE it is the one error of any WORD into a BYTE
+    let (code, lines) = check_text(
+        "n.st",
+        "PROGRAM main\nVAR b : BYTE; END_VAR\nb := INT_TO_BCD(12);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("n.st:3:1: error[E1006]: cannot store WORD into BYTE"),
+        "{lines:?}"
+    );
+}
+
+// ------------------------------------------------------------------ methods (edition 3)
+
+#[test]
+fn methods_of_a_function_block_run_from_statements_and_expressions() {
+    // Counter's body adds step; its method Add (VAR_INPUT n, VAR tmp, result INT) adds n * step,
+    // returns the new value, or -1 through RETURN when n * step = 0; Reset sets value to 0.
+    // main: r := c.Add(10) * 2 (the call runs before the statement reads its result), IF
+    // c.Add(0) < 0 counts z (Add returned early), c.Reset() in cycle 3 (k = 3)
+    let (trace, _) = run(
+        &fixture("methods.st"),
+        4,
+        "main.c.value,main.k,main.r,main.z",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.c.value,main.k,main.r,main.z\n\
+         0,0,11,1,22,1\n\
+         1,10,22,2,44,2\n\
+         2,20,0,3,66,3\n\
+         3,30,11,4,22,4\n"
+    );
+}
+
+#[test]
+fn method_calls_that_cannot_run_before_their_statement_are_one_located_error_each() {
+    let fb = "FUNCTION_BLOCK Counter\nVAR_OUTPUT value : INT; END_VAR\n\
+              METHOD Add : INT\nVAR_INPUT n : INT; END_VAR\nvalue := value + n;\nAdd := value;\nEND_METHOD\n\
+              METHOD Clear\nvalue := 0;\nEND_METHOD\n\
+              END_FUNCTION_BLOCK\n";
+    for (stmt, want) in [
+        (
+            "r := c.Add(1) + c.Add(2);",
+            "m.st:14:17: error[E0108]: method `Add` is called twice in one statement",
+        ),
+        (
+            "WHILE c.Add(1) < 5 DO r := 1; END_WHILE",
+            "m.st:14:7: error[E0108]: a call of method `Add` in a WHILE, UNTIL or ELSIF condition is not supported",
+        ),
+        (
+            "r := c.Clear();",
+            "m.st:14:8: error[E1011]: method `CLEAR` of Counter returns no value",
+        ),
+        (
+            "r := c.Sub(1);",
+            "m.st:14:8: error[E1011]: Counter has no input or output `Sub` (hint: parameters of Counter: value)",
+        ),
+    ] {
+        let src = format!("{fb}PROGRAM main\nVAR c : Counter; r : INT; END_VAR\n{stmt}\nEND_PROGRAM\n");
+        let (code, lines) = check_text("m.st", &src);
+        assert_eq!(code, Some(1), "{stmt}: {lines:?}");
+        assert_eq!(lines.len(), 1, "{stmt}: {lines:?}");
+        assert!(lines[0].starts_with(want), "{stmt}: {lines:?}");
+    }
+}
+
+#[test]
+fn codesys_methods_in_vendor_data_run_and_a_property_is_one_located_error() {
+    // FB_Axis adds rVelocity every call; its method M_MoveBy (CODESYS: addData .../method, with
+    // returnType, inputVars, outputVars and a localVars rLimit initialised to 100.0 at each call)
+    // moves by rDistance unless the target passes rLimit (then FALSE through RETURN, rTarget
+    // still set); M_Home zeroes the position (in cycle 2). PRG_IL calls `CAL fbAxis.M_MoveBy(5.0)`
+    // only: its instance's body never runs.
+    let (trace, _) = run(
+        &fixture("xml_methods.xml"),
+        5,
+        "PLC_PRG.fbAxis.rPosition,PLC_PRG.xOk,PLC_PRG.rLast,PRG_IL.fbAxis.rPosition",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.fbAxis.rPosition,PLC_PRG.xOk,PLC_PRG.rLast,PRG_IL.fbAxis.rPosition\n\
+         0,0,41,1,41,5\n\
+         1,10,82,1,82,10\n\
+         2,20,0,0,123,15\n\
+         3,30,41,1,41,20\n\
+         4,40,82,1,82,25\n"
+    );
+    let src = std::fs::read_to_string(fixture("xml_methods.xml")).unwrap().replace(
+        "<data name=\"http://www.3s-software.com/plcopenxml/method\" handleUnknown=\"implementation\">\n            <Method name=\"M_Home\"",
+        "<data name=\"http://www.3s-software.com/plcopenxml/property\" handleUnknown=\"implementation\">\n            <Property name=\"P_Home\"",
+    ).replace("</Method>\n          </data>\n        </addData>", "</Property>\n          </data>\n        </addData>");
+    let (code, lines) = check_text("p.xml", &src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(
+        lines.iter().filter(|l| l.contains("error[")).count(),
+        1,
+        "{lines:?}"
+    );
+    assert!(
+        lines.iter().any(|l| l.starts_with(
+            "p.xml:42:13: error[E0303]: `FB_Axis`: PROPERTY `P_Home` is not compiled: a PROPERTY is not supported"
+        )),
+        "{lines:?}"
     );
 }

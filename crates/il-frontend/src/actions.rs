@@ -13,8 +13,11 @@
 //!   the action runs once.
 //!
 //! Every [`LibraryElement::Action`] is then dropped: a POU none of whose actions is called from
-//! outside is unchanged. An action of a PROGRAM called from another POU (`PLC_PRG.Act();`) is E3135:
-//! ladderc runs each program as its own instance and no POU can call another program.
+//! outside is unchanged. An action of a PROGRAM called from another POU (`PLC_PRG.Act();`) is linked
+//! the same way, the call becoming `CAL PLC_PRG(__ACTION_ACT := TRUE)` on the program's one
+//! instance (sema and the C backend resolve the program's name to it); when the program has no
+//! instance or several (a configuration that instantiates it twice), or calls itself by its name,
+//! the call is E3135.
 
 use crate::ast::{
     Accessor, Action, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt,
@@ -55,6 +58,10 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
     }
     let mut kinds: HashMap<String, PouKind> = HashMap::new();
     let mut globals: HashMap<String, TypeRef> = HashMap::new();
+    // the instances of each program (upper-case type name -> instance names); without a
+    // configuration every program runs as its one implicit instance
+    let mut instances: HashMap<String, Vec<Ident>> = HashMap::new();
+    let mut configured = false;
     for item in units.iter().flat_map(|u| u.items.iter()) {
         let mut add = |b: &VarBlock| {
             for v in &b.vars {
@@ -67,6 +74,13 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             }
             LibraryElement::GlobalVars(b) => add(b),
             LibraryElement::Configuration(c) => {
+                configured = true;
+                for p in c.resources.iter().flat_map(|r| r.programs.iter()) {
+                    instances
+                        .entry(p.type_name.key())
+                        .or_default()
+                        .push(p.name.clone());
+                }
                 c.globals.iter().for_each(&mut add);
                 c.resources
                     .iter()
@@ -95,6 +109,9 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
                 globals: &globals,
                 kinds: &kinds,
                 actions: &actions,
+                instances: &instances,
+                configured,
+                caller: p.name.key(),
             };
             rewrite_calls(&mut p.body, &scope, &mut called, diags);
         }
@@ -194,6 +211,10 @@ struct Scope<'a> {
     globals: &'a HashMap<String, TypeRef>,
     kinds: &'a HashMap<String, PouKind>,
     actions: &'a HashMap<String, Vec<Action>>,
+    instances: &'a HashMap<String, Vec<Ident>>,
+    configured: bool,
+    /// The calling POU (upper-case name).
+    caller: String,
 }
 
 impl Scope<'_> {
@@ -255,33 +276,110 @@ fn rewrite_calls(
             continue;
         };
         if let Some(a) = scope.program_action(instance) {
-            if diags
-                .iter()
-                .any(|d| d.code == code::E3135 && d.span == Some(instance.span))
-            {
-                continue;
-            }
-            diags.push(
-                Diagnostic::error(
-                    code::E3135,
-                    format!(
-                        "action `{}` of program `{}` is called from another POU",
-                        a.name.name, a.pou.name
-                    ),
-                )
-                .at(instance.span)
-                .with_primary_label("action of a program")
-                .with_label(a.name.span, "action declared here")
-                .with_hint(format!(
-                    "call it from `{}` itself (`{}();`), or make `{}` a FUNCTION_BLOCK and call the action through an instance",
-                    a.pou.name, a.name.name, a.pou.name
+            // the program's one instance runs the action (CODESYS: `PLC_PRG.Reset();`), unless
+            // the program has no instance or several, or calls itself by its name
+            let key = a.pou.key();
+            let why = match scope.instances.get(&key).map(Vec::as_slice) {
+                _ if scope.caller == key => Some(format!(
+                    "`{}` calls its own action through its name",
+                    a.pou.name
                 )),
-            );
+                Some([_]) => None,
+                None if !scope.configured => None,
+                None => Some(format!(
+                    "program `{}` has no instance in the configuration, so there is no state to run the action on",
+                    a.pou.name
+                )),
+                Some(list) => Some(format!(
+                    "program `{}` has {} instances ({}): the call does not say which one",
+                    a.pou.name,
+                    list.len(),
+                    list.iter()
+                        .map(|i| format!("`{}`", i.name))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )),
+            };
+            match why {
+                None if !matches!(args, CallArgs::NonFormal(_)) => {
+                    let act_span = match instance.accessors.last() {
+                        Some(Accessor::Field(f)) => f.span,
+                        _ => span,
+                    };
+                    let flag = FormalArg {
+                        name: Ident::new(flag_name(&a.name), act_span),
+                        dir: ArgDir::Input,
+                        value: bool_lit(true, act_span),
+                        span: act_span,
+                    };
+                    let names = called.entry(key).or_default();
+                    if !names.contains(&a.name.key()) {
+                        names.push(a.name.key());
+                    }
+                    instance.accessors.pop();
+                    match args {
+                        CallArgs::Formal(list) => list.push(flag),
+                        _ => *args = CallArgs::Formal(vec![flag]),
+                    }
+                }
+                None => {}
+                Some(why) => {
+                    if diags
+                        .iter()
+                        .any(|d| d.code == code::E3135 && d.span == Some(instance.span))
+                    {
+                        continue;
+                    }
+                    diags.push(
+                        Diagnostic::error(
+                            code::E3135,
+                            format!(
+                                "action `{}` of program `{}` cannot be called here: {why}",
+                                a.name.name, a.pou.name
+                            ),
+                        )
+                        .at(instance.span)
+                        .with_primary_label("action of a program")
+                        .with_label(a.name.span, "action declared here")
+                        .with_hint(format!(
+                            "call it from `{}` itself (`{}();`), or give the program one instance",
+                            a.pou.name, a.name.name
+                        )),
+                    );
+                }
+            }
             continue;
         }
         let Some((fb, action)) = scope.action_of(instance) else {
             continue;
         };
+        if let Some(inputs) = &action.method_inputs {
+            // a method's arguments go to its hidden variables
+            let m = &action.name.name;
+            match args {
+                CallArgs::NonFormal(ops) if ops.len() <= inputs.len() => {
+                    let list = std::mem::take(ops)
+                        .into_iter()
+                        .zip(inputs)
+                        .map(|(value, input)| FormalArg {
+                            name: Ident::new(method_var(m, &input.name), value.span()),
+                            dir: ArgDir::Input,
+                            span: value.span(),
+                            value,
+                        })
+                        .collect();
+                    *args = CallArgs::Formal(list);
+                }
+                CallArgs::Formal(list) => {
+                    for a in list.iter_mut() {
+                        if !a.name.is("EN") && !a.name.is("ENO") {
+                            a.name.name = method_var(m, &a.name.name);
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
         if matches!(args, CallArgs::NonFormal(_)) {
             continue;
         }
@@ -335,3 +433,202 @@ fn jump(cond: Condition, label: &Ident, span: diagnostics::Span) -> IlStmt {
         span,
     })
 }
+
+/// A copy of an action's IL statements for one place it runs: every label (and jump target) gets
+/// the prefix `tag`, so two copies in one POU never share a label, and `RET`/`RETC`/`RETCN` become
+/// jumps to the copy's end (`<tag>END`): a return leaves the action, not the POU that runs it
+/// (CODESYS). Used for actions written in IL, LD or FBD (PLCopen XML `<actions>`), inlined where
+/// their POU calls them and linked for calls through an instance.
+pub fn instantiate(body: &[IlStmt], tag: &str, span: diagnostics::Span) -> Vec<IlStmt> {
+    let end = Ident::new(format!("{tag}END"), span);
+    let mut returns = false;
+    let mut out = body.to_vec();
+    relabel(&mut out, tag, &end, &mut returns);
+    if returns {
+        out.push(IlStmt::Label(end));
+    }
+    out
+}
+
+fn relabel(stmts: &mut [IlStmt], tag: &str, end: &Ident, returns: &mut bool) {
+    for s in stmts {
+        match s {
+            IlStmt::Label(l) => l.name = format!("{tag}{}", l.name),
+            IlStmt::Instr(i) => match &mut i.kind {
+                InstrKind::Jump { label, .. } => label.name = format!("{tag}{}", label.name),
+                InstrKind::Return { cond } => {
+                    *returns = true;
+                    i.kind = InstrKind::Jump {
+                        cond: *cond,
+                        label: end.clone(),
+                    };
+                }
+                InstrKind::Deferred { body, .. } => relabel(body, tag, end, returns),
+                _ => {}
+            },
+        }
+    }
+}
+
+/// Inlines the calls of a POU's own IL-level actions in `body` (an IL body, or an action's
+/// statements): `CAL Act` (no arguments, `Act` not a variable of the POU, see `is_var`) is replaced
+/// by a copy of the action's statements ([`instantiate`], labels tagged `<prefix><n>_`), `CALC Act` /
+/// `CALCN Act` by the copy behind a conditional jump. `actions` maps upper-case names to
+/// statements; `next` numbers the copies of the POU. An action that calls itself (directly or
+/// through another action) is E0106, at the call.
+pub fn inline_calls(
+    body: Vec<IlStmt>,
+    actions: &HashMap<String, Vec<IlStmt>>,
+    is_var: &dyn Fn(&str) -> bool,
+    prefix: &str,
+    next: &mut usize,
+    diags: &mut Diagnostics,
+) -> Vec<IlStmt> {
+    let mut stack = Vec::new();
+    inline_rec(body, actions, is_var, prefix, next, &mut stack, diags)
+}
+
+fn inline_rec(
+    body: Vec<IlStmt>,
+    actions: &HashMap<String, Vec<IlStmt>>,
+    is_var: &dyn Fn(&str) -> bool,
+    prefix: &str,
+    next: &mut usize,
+    stack: &mut Vec<String>,
+    diags: &mut Diagnostics,
+) -> Vec<IlStmt> {
+    let mut out = Vec::with_capacity(body.len());
+    for s in body {
+        let target = match &s {
+            IlStmt::Instr(Instruction {
+                kind:
+                    InstrKind::Call {
+                        cond,
+                        instance,
+                        args: CallArgs::None,
+                    },
+                span,
+            }) if instance.accessors.is_empty()
+                && actions.contains_key(&instance.base.key())
+                && !is_var(&instance.base.name) =>
+            {
+                Some((
+                    *cond,
+                    instance.base.key(),
+                    instance.base.name.clone(),
+                    *span,
+                ))
+            }
+            _ => None,
+        };
+        let Some((cond, key, written, span)) = target else {
+            out.push(s);
+            continue;
+        };
+        if stack.contains(&key) {
+            diags.push(
+                Diagnostic::error(
+                    code::E0106,
+                    format!("action `{written}` calls itself (directly or through another action)"),
+                )
+                .at(span)
+                .with_primary_label("recursive action call")
+                .with_hint("actions are inlined where they are called; they cannot recurse"),
+            );
+            continue;
+        }
+        *next += 1;
+        let tag = format!("{prefix}{next}_");
+        let copy = instantiate(&actions[&key], &tag, span);
+        stack.push(key);
+        let copy = inline_rec(copy, actions, is_var, prefix, next, stack, diags);
+        stack.pop();
+        let skip = Ident::new(format!("{tag}SKIP"), span);
+        let guard = match cond {
+            Condition::Always => None,
+            Condition::IfTrue => Some(Condition::IfFalse),
+            Condition::IfFalse => Some(Condition::IfTrue),
+        };
+        if let Some(c) = guard {
+            out.push(jump(c, &skip, span));
+        }
+        out.extend(copy);
+        if guard.is_some() {
+            out.push(IlStmt::Label(skip));
+        }
+    }
+    out
+}
+
+/// Renames variables in `stmts` in place: every variable whose base name's upper-case key is in
+/// `map` gets the new base name (accessors and index operands kept and renamed too). Labels,
+/// function names and formal parameter names are left alone. Used for the variables of a METHOD,
+/// which become hidden variables of its function block.
+pub fn rename_vars(stmts: &mut [IlStmt], map: &HashMap<String, String>) {
+    fn var(v: &mut VarRef, map: &HashMap<String, String>) {
+        for a in &mut v.accessors {
+            if let Accessor::Index(ix) = a {
+                ix.iter_mut().for_each(|o| operand(o, map));
+            }
+        }
+        if let Some(new) = map.get(&v.base.key()) {
+            v.base.name = new.clone();
+        }
+    }
+    fn operand(o: &mut Operand, map: &HashMap<String, String>) {
+        if let Operand::Var(v) = o {
+            var(v, map);
+        }
+    }
+    fn args(a: &mut CallArgs, map: &HashMap<String, String>) {
+        match a {
+            CallArgs::None => {}
+            CallArgs::NonFormal(ops) => ops.iter_mut().for_each(|o| operand(o, map)),
+            CallArgs::Formal(f) => f.iter_mut().for_each(|a| operand(&mut a.value, map)),
+        }
+    }
+    for s in stmts {
+        let IlStmt::Instr(i) = s else { continue };
+        match &mut i.kind {
+            InstrKind::Simple { operand: o, .. } => {
+                if let Some(o) = o {
+                    operand(o, map);
+                }
+            }
+            InstrKind::Deferred {
+                operand: o, body, ..
+            } => {
+                if let Some(o) = o {
+                    operand(o, map);
+                }
+                rename_vars(body, map);
+            }
+            InstrKind::Call {
+                instance, args: a, ..
+            } => {
+                var(instance, map);
+                args(a, map);
+            }
+            InstrKind::FunctionCall { args: a, .. } => args(a, map),
+            InstrKind::FbInput { instance, .. } => var(instance, map),
+            InstrKind::Jump { .. } | InstrKind::Return { .. } | InstrKind::EmbeddedC { .. } => {}
+        }
+    }
+}
+
+/// The hidden variable of a method's parameter or local `var`: `__M_<METHOD>_<VAR>`.
+pub fn method_var(method: &str, var: &str) -> String {
+    format!(
+        "{METHOD_PREFIX}{}_{}",
+        method.to_ascii_uppercase(),
+        var.to_ascii_uppercase()
+    )
+}
+
+/// The hidden output holding a method's result: `__M_<METHOD>`.
+pub fn method_result(method: &str) -> String {
+    format!("{METHOD_PREFIX}{}", method.to_ascii_uppercase())
+}
+
+/// The prefix of a method's hidden variables (see [`method_var`]).
+pub const METHOD_PREFIX: &str = "__M_";

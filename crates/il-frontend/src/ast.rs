@@ -82,6 +82,10 @@ pub struct Action {
     pub body: Vec<IlStmt>,
     /// Temporaries the lowering of the statements needs (a `VAR_TEMP` block), if any.
     pub temps: Option<VarBlock>,
+    /// For a METHOD (edition 3): its VAR_INPUT names in order. A call's arguments are then passed
+    /// to the block's hidden variables `__M_<METHOD>_<name>` (positional ones in this order), see
+    /// [`crate::actions`]. `None` for an action.
+    pub method_inputs: Option<Vec<Ident>>,
     /// Diagnostics of the lowering, reported only when the action is linked (an action never called
     /// from outside its POU is checked where its POU calls it, as before).
     #[serde(skip)]

@@ -915,6 +915,28 @@ impl<'s> Ctx<'s> {
             (format!("unexpected {found}"), format!("expected {expect}"))
         };
         let (s, end) = if tok == Tok::Eol { (s, s) } else { (s, end) };
+        // `RETAIN : BOOL;` in a VAR block: the qualifier keyword was read as the block's, and the
+        // `:` is unexpected; the name is the problem
+        if tok == Tok::Colon
+            && !before.is_empty()
+            && before
+                .bytes()
+                .all(|b| b.is_ascii_alphanumeric() || b == b'_')
+            && crate::sema::reserved_name(before) == Some("a keyword")
+        {
+            let at = line_start
+                + (self.src[line_start..s].len() - self.src[line_start..s].trim_start().len());
+            self.hint(
+                code::E1031,
+                format!(
+                    "`{before}` is reserved in IEC 61131-3 (a keyword): it cannot name a variable"
+                ),
+                at,
+                at + before.len(),
+                &format!("rename the variable, for example `x{before}`"),
+            );
+            return;
+        }
         // a keyword where a variable's name is expected (`VAR TRUE : BOOL;`): say it is reserved
         let word = text.trim();
         if expect.starts_with("a name")
@@ -931,6 +953,16 @@ impl<'s> Ctx<'s> {
                 end,
                 &format!("rename the variable, for example `x{word}`"),
             );
+            return;
+        }
+        // a use of a variable whose reserved name was already reported at its declaration
+        // (`VAR ON : BOOL;` then `LD ON`): E1031 is the one located error, no cascade
+        let reported = format!("`{}` IS RESERVED", word.to_ascii_uppercase());
+        if !word.is_empty()
+            && self.diags.iter().any(|d| {
+                d.code == code::E1031 && d.message.to_ascii_uppercase().starts_with(&reported)
+            })
+        {
             return;
         }
         self.hint(code::E0011, msg, s, end, &hint);

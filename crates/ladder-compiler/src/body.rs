@@ -16,9 +16,11 @@ use crate::context::Ctx;
 use crate::graph;
 use crate::lower::BodyLowering;
 use crate::project::Index;
+use crate::sfc::il::Renames;
 use crate::xml::Element;
-use diagnostics::{code, Diagnostic, XmlContext};
-use il_frontend::ast::{Ident, IlStmt, Pou, VarBlock};
+use diagnostics::{code, Diagnostic, Diagnostics, XmlContext};
+use il_frontend::ast::{Action, Ident, IlStmt, Pou, VarBlock, VarDecl};
+use std::collections::{HashMap, HashSet};
 
 /// The body of one POU in the IL syntax tree, with the hidden variables its lowering needs.
 pub fn lower_pou_body(
@@ -27,16 +29,16 @@ pub fn lower_pou_body(
     pou_el: &Element,
     pou: &Pou,
     used: bool,
-) -> Option<(Vec<IlStmt>, Option<VarBlock>)> {
+) -> Option<(Vec<IlStmt>, Vec<VarBlock>)> {
     let Some(body) = pou_el.child("body") else {
-        return Some((Vec::new(), None));
+        return Some((Vec::new(), Vec::new()));
     };
     let Some(lang) = body
         .children
         .iter()
         .find(|c| !matches!(c.name, "documentation" | "addData"))
     else {
-        return Some((Vec::new(), None));
+        return Some((Vec::new(), Vec::new()));
     };
     let span = ctx.tag(lang);
     let name = &pou.name.name;
@@ -45,55 +47,48 @@ pub fn lower_pou_body(
         ..Default::default()
     };
     // CODESYS exports a program's or FB's actions (called from its body as `Act();`) in the POU's
-    // standard `<actions>`: an ST body inlines its ST actions where it calls them (`st_actions`);
-    // the others are compiled only for SFC bodies
+    // standard `<actions>`: an ST body lowers its ST actions where it calls them (`st_actions`);
+    // actions in IL, LD or FBD (and the ST actions of a body in another language) are lowered to IL
+    // here, copied where the body calls them and linked for calls through an instance. The actions
+    // of an SFC body are its chart's (`crate::sfc`).
     let mut st_actions: Vec<(Ident, &Element)> = Vec::new();
-    let mut other_actions: Vec<&Element> = Vec::new();
-    if lang.name != "SFC" {
-        for a in pou_el
-            .child("actions")
-            .into_iter()
-            .flat_map(|a| a.children_named("action"))
-        {
-            let st = a
-                .child("body")
-                .and_then(|b| b.child("ST"))
-                .filter(|_| lang.name == "ST");
-            match (st, a.attr("name").map(str::trim)) {
-                (Some(st), Some(n)) if !n.is_empty() => {
-                    st_actions.push((Ident::new(n, ctx.attr_span(a, "name")), st))
-                }
-                _ => other_actions.push(a),
-            }
-        }
-        if let Some(first) = other_actions.first() {
-            let count = other_actions.len();
-            let action = first.attr("name").unwrap_or("?").to_string();
-            ctx.report(
-                Diagnostic::warning(
-                    code::W3401,
-                    format!(
-                        "POU `{name}` has {count} action{} (`{action}` ...) that ladderc does not compile here",
-                        if count == 1 { "" } else { "s" }
-                    ),
-                )
-                .at(ctx.tag(first))
-                .with_primary_label("action of a program or function block")
-                .with_hint("actions are compiled as the actions of an SFC chart, and as ST actions of an ST body (called as `Act();` from the body, or as `inst.Act();` / `CAL inst.Act` from other POUs); a call of this one is an unknown function (E1019)")
-                .with_xml(xml_ctx.clone()),
-            );
-        }
+    let mut acts = LoweredActions::default();
+    if lang.name != "SFC" && (lang.name != "ST" || used) {
+        acts = lower_actions(ctx, index, pou_el, pou, lang.name, &mut st_actions);
     }
+    let pou_vars: HashSet<String> = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .map(|v| v.name.key())
+        .collect();
+    let is_var = |n: &str| {
+        let k = n.to_ascii_uppercase();
+        pou_vars.contains(&k) || index.globals.contains_key(&k)
+    };
+    let mut next = 0;
+    let mut inline = |ctx: &mut Ctx, stmts: Vec<IlStmt>| {
+        if acts.il.is_empty() {
+            return stmts;
+        }
+        il_frontend::actions::inline_calls(stmts, &acts.il, &is_var, "__A", &mut next, ctx.diags)
+    };
     match lang.name {
         "LD" | "FBD" => {
             let g = graph::read(ctx, lang, name);
             let mut low = BodyLowering::new(index, pou, span);
             let stmts = low.lower(ctx, &g);
             let hidden = low.hidden_vars();
-            let block = (!hidden.is_empty()).then_some(VarBlock::locals(hidden, span));
-            Some((stmts, block))
+            let mut blocks = acts.blocks;
+            if !hidden.is_empty() {
+                blocks.push(VarBlock::locals(hidden, span));
+            }
+            Some((stmts, blocks))
         }
-        "IL" => Some((crate::il_body::parse(ctx, lang, name), None)),
+        "IL" => {
+            let stmts = crate::il_body::parse(ctx, lang, name);
+            Some((inline(ctx, stmts), acts.blocks))
+        }
         "ST" if !used => {
             ctx.report(
                 Diagnostic::warning(
@@ -106,13 +101,20 @@ pub fn lower_pou_body(
             None
         }
         "ST" => {
-            let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou, &st_actions);
-            Some((stmts, temps))
+            let il: Vec<(Ident, Vec<IlStmt>)> = acts
+                .names
+                .iter()
+                .map(|n| (n.clone(), acts.il[&n.key()].clone()))
+                .collect();
+            let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou, &st_actions, &il);
+            let mut blocks = acts.blocks;
+            blocks.extend(temps);
+            Some((stmts, blocks))
         }
         "SFC" => {
             let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
             let block = (!hidden.is_empty()).then_some(VarBlock::locals(hidden, span));
-            Some((stmts, block))
+            Some((stmts, block.into_iter().collect()))
         }
         other => {
             ctx.report(
@@ -123,7 +125,178 @@ pub fn lower_pou_body(
                 .at(span)
                 .with_xml(xml_ctx),
             );
-            Some((Vec::new(), None))
+            Some((Vec::new(), Vec::new()))
         }
     }
+}
+
+/// The actions of a POU lowered to IL (see [`lower_actions`]).
+#[derive(Default)]
+struct LoweredActions {
+    /// Upper-case name -> statements, with their own calls of actions already copied in.
+    il: HashMap<String, Vec<IlStmt>>,
+    /// The names of `il`, in document order.
+    names: Vec<Ident>,
+    /// What they need declared in the POU: the hidden variables of LD/FBD actions (edge detectors,
+    /// temporaries; one set per action, shared by every place it runs, like the POU's own
+    /// variables) and the temporaries of ST actions of a body in another language.
+    blocks: Vec<VarBlock>,
+}
+
+/// Reads the `<actions>` of a POU whose body is `body_lang` (not SFC): ST actions of an ST body go to
+/// `st_actions` (the ST lowering inlines them); every other action with a name and an IL, LD, FBD
+/// or ST body is lowered to IL, and also handed to [`il_frontend::actions::link`] (through
+/// `ctx.actions`) for calls through an instance. What is left (no name, an SFC body) is W3401.
+fn lower_actions<'e, 'a>(
+    ctx: &mut Ctx,
+    index: &Index,
+    pou_el: &'e Element<'a>,
+    pou: &Pou,
+    body_lang: &str,
+    st_actions: &mut Vec<(Ident, &'e Element<'a>)>,
+) -> LoweredActions {
+    let name = &pou.name.name;
+    let xml_ctx = XmlContext {
+        pou: Some(name.clone()),
+        ..Default::default()
+    };
+    let mut raw: Vec<(Ident, Vec<IlStmt>)> = Vec::new();
+    let mut hidden: Vec<VarDecl> = Vec::new();
+    let mut st_other: Vec<(Ident, &Element)> = Vec::new();
+    let mut unsupported: Vec<(&Element, String)> = Vec::new();
+    for a in pou_el
+        .child("actions")
+        .into_iter()
+        .flat_map(|a| a.children_named("action"))
+    {
+        let Some(n) = a
+            .attr("name")
+            .map(str::trim)
+            .filter(|n| !n.is_empty() && crate::values::is_ident(n))
+        else {
+            unsupported.push((a, "it has no name that is an identifier".into()));
+            continue;
+        };
+        let id = Ident::new(n, ctx.attr_span(a, "name"));
+        let Some(b) = a.child("body").and_then(|b| {
+            b.children
+                .iter()
+                .find(|c| !matches!(c.name, "documentation" | "addData"))
+        }) else {
+            raw.push((id, Vec::new()));
+            continue;
+        };
+        match b.name {
+            "ST" if body_lang == "ST" => st_actions.push((id, b)),
+            "ST" => st_other.push((id, b)),
+            "IL" => raw.push((id, crate::il_body::parse(ctx, b, name))),
+            "LD" | "FBD" => {
+                let g = graph::read(ctx, b, name);
+                let mut low = BodyLowering::new(index, pou, ctx.tag(b));
+                let mut stmts = low.lower(ctx, &g);
+                let mut renames = Renames::default();
+                for mut v in low.hidden_vars() {
+                    let new = format!(
+                        "__A_{}_{}",
+                        n.to_ascii_uppercase(),
+                        v.name.name.trim_start_matches('_')
+                    );
+                    renames.bases.insert(v.name.key(), new.clone());
+                    v.name.name = new;
+                    hidden.push(v);
+                }
+                renames.apply(&mut stmts);
+                raw.push((id, stmts));
+            }
+            other => unsupported.push((a, format!("its body is <{other}>"))),
+        }
+    }
+    let mut out = LoweredActions::default();
+    if !st_other.is_empty() {
+        let decls = crate::st_body::declarations(index);
+        let mut local = Diagnostics::new();
+        let parsed: Vec<(Ident, Vec<il_frontend::st::ast::Stmt>)> = st_other
+            .iter()
+            .map(|(n, el)| {
+                let mut t = crate::il_body::embedded_text(el);
+                crate::st_body::join_split_operators(&mut t.text, t.base, ctx.xml);
+                let stmts =
+                    il_frontend::st::parse_statements(ctx.file, &t.text, t.base, &mut local);
+                (n.clone(), stmts)
+            })
+            .collect();
+        let mut low = il_frontend::st::PouLowering::new(decls, pou);
+        low.set_actions(parsed.clone());
+        low.set_il_actions(raw.clone());
+        for (n, stmts) in &parsed {
+            let body = low.statements(stmts, &mut local);
+            raw.push((n.clone(), body));
+        }
+        out.blocks.extend(low.finish(ctx.tag(pou_el)));
+        for d in local {
+            let d = if d.xml.is_none() {
+                d.with_xml(xml_ctx.clone())
+            } else {
+                d
+            };
+            ctx.report(d);
+        }
+    }
+    if !hidden.is_empty() {
+        out.blocks.push(VarBlock::locals(hidden, ctx.tag(pou_el)));
+    }
+    if let Some((first, why)) = unsupported.first() {
+        let count = unsupported.len();
+        let action = first.attr("name").unwrap_or("?").to_string();
+        ctx.report(
+            Diagnostic::warning(
+                code::W3401,
+                format!(
+                    "POU `{name}` has {count} action{} (`{action}` ...) that ladderc does not compile: {why}",
+                    if count == 1 { "" } else { "s" }
+                ),
+            )
+            .at(ctx.tag(first))
+            .with_primary_label("action of a program or function block")
+            .with_hint("actions with a name and an IL, ST, LD or FBD body are compiled (called as `Act();` / `CAL Act` from the POU's body, or as `inst.Act();` / `CAL inst.Act` from other POUs); a call of this one is an unknown function (E1019)")
+            .with_xml(xml_ctx.clone()),
+        );
+    }
+    if raw.is_empty() {
+        return out;
+    }
+    let pou_vars: HashSet<String> = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .map(|v| v.name.key())
+        .collect();
+    let is_var = |n: &str| {
+        let k = n.to_ascii_uppercase();
+        pou_vars.contains(&k) || index.globals.contains_key(&k)
+    };
+    let raw_map: HashMap<String, Vec<IlStmt>> =
+        raw.iter().map(|(n, b)| (n.key(), b.clone())).collect();
+    let mut next = 0;
+    for (n, body) in raw {
+        let body = il_frontend::actions::inline_calls(
+            body, &raw_map, &is_var, "__P", &mut next, ctx.diags,
+        );
+        let span = n.span;
+        ctx.actions.push(Action {
+            pou: pou.name.clone(),
+            name: n.clone(),
+            body: il_frontend::actions::instantiate(
+                &body,
+                &format!("__AL_{}_", n.name.to_ascii_uppercase()),
+                span,
+            ),
+            temps: None,
+            method_inputs: None,
+            diagnostics: Vec::new(),
+        });
+        out.il.insert(n.key(), body);
+        out.names.push(n);
+    }
+    out
 }

@@ -12,7 +12,7 @@ use crate::context::Ctx;
 use crate::decls;
 use crate::values;
 use crate::xml::Element;
-use diagnostics::{code, Diagnostic};
+use diagnostics::{code, Diagnostic, XmlContext};
 use il_frontend::ast::{
     CompilationUnit, Configuration, Ident, LibraryElement, Literal, LiteralKind, Operand, Pou,
     PouKind, ProgramInstance, Resource, Task, TypeDecl, TypeRef, VarBlock, VarKind,
@@ -111,8 +111,16 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     for d in &data_types {
         index.types.insert(d.name.key(), d.clone());
     }
+    // CODESYS exports a function block's METHODs in its vendor data: their hidden variables are
+    // part of the block's interface (other POUs read a method's result)
+    let mut methods: HashMap<String, Vec<il_frontend::st::file::PendingMethod>> = HashMap::new();
     for p in &pou_els {
-        if let Some(h) = pou_header(ctx, p) {
+        if let Some(mut h) = pou_header(ctx, p) {
+            let ms = xml_methods(ctx, p, &h);
+            if !ms.is_empty() {
+                il_frontend::st::file::add_method_vars(&mut h, &ms, ctx.diags);
+                methods.insert(h.name.key(), ms);
+            }
             index.pous.insert(h.name.key(), signature(&h));
             headers.push((*p, h));
         }
@@ -163,8 +171,24 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             continue;
         };
         pou.body = stmts;
-        if let Some(h) = hidden {
-            pou.var_blocks.push(h);
+        pou.var_blocks.extend(hidden);
+        for m in methods.get(&pou.name.key()).into_iter().flatten() {
+            let decls = crate::st_body::declarations(&index);
+            let mut local = diagnostics::Diagnostics::new();
+            let action =
+                il_frontend::st::file::lower_method(ctx.file, decls, &mut pou, m, &mut local);
+            for d in local {
+                let d = if d.xml.is_none() {
+                    d.with_xml(XmlContext {
+                        pou: Some(pou.name.name.clone()),
+                        ..Default::default()
+                    })
+                } else {
+                    d
+                };
+                ctx.report(d);
+            }
+            ctx.actions.extend(action);
         }
         unit.items.push(LibraryElement::Pou(pou));
     }
@@ -331,10 +355,13 @@ fn version(ctx: &mut Ctx, root: &Element) -> Version {
 }
 
 /// Whether ladderc reads a vendor data block (`<data name="...">`): the CODESYS/TwinCAT global
-/// variable lists, applications (their tasks, data types and POUs) and task settings.
+/// variable lists, applications (their tasks, data types and POUs), task settings, and the methods
+/// (compiled) and properties (E0303) of POUs.
 fn is_read_vendor_data(name: &str) -> bool {
     [
         "/globalvars",
+        "/method",
+        "/property",
         "/application",
         "/datatype",
         "/pou",
@@ -437,19 +464,7 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
         None => Default::default(),
     };
     if let Some(iface) = p.child("interface") {
-        for list in iface.children {
-            if list.name == "returnType" {
-                return_type = decls::type_ref(ctx, list);
-            } else if let Some(k) = decls::var_kind(list.name) {
-                var_blocks.push(decls::var_block(ctx, list, k));
-            } else if list.name == "accessVars" {
-                ctx.error(
-                    code::E3012,
-                    ctx.tag(list),
-                    "VAR_ACCESS lists are not supported",
-                );
-            }
-        }
+        read_interface(ctx, iface, &mut return_type, &mut var_blocks);
     }
     ctx.local_constants.clear();
     if kind == PouKind::Function && return_type.is_none() {
@@ -467,6 +482,123 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
         body: Vec::new(),
         span,
     })
+}
+
+/// The return type and variable lists of an `<interface>` (of a POU or a CODESYS method).
+fn read_interface(
+    ctx: &mut Ctx,
+    iface: &Element,
+    return_type: &mut Option<il_frontend::ast::TypeRef>,
+    var_blocks: &mut Vec<VarBlock>,
+) {
+    for list in iface.children {
+        if list.name == "returnType" {
+            *return_type = decls::type_ref(ctx, list);
+        } else if let Some(k) = decls::var_kind(list.name) {
+            var_blocks.push(decls::var_block(ctx, list, k));
+        } else if list.name == "accessVars" {
+            ctx.error(
+                code::E3012,
+                ctx.tag(list),
+                "VAR_ACCESS lists are not supported",
+            );
+        }
+    }
+}
+
+/// A constant of the block (`local`), else a global one.
+fn local_or(
+    local: &HashMap<String, i128>,
+    globals: &HashMap<String, i128>,
+    n: &str,
+) -> Option<i128> {
+    let k = n.to_ascii_uppercase();
+    local.get(&k).or_else(|| globals.get(&k)).copied()
+}
+
+/// The METHODs of a POU in CODESYS's vendor data (`addData/data[.../method]/Method`, with an
+/// `<interface>` and an ST `<body>`), read for a function block; a method of another POU, one whose
+/// body is not ST, and a PROPERTY (`.../property`) are E0303.
+fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::file::PendingMethod> {
+    let mut out = Vec::new();
+    for data in p
+        .children_named("addData")
+        .flat_map(|a| a.children_named("data"))
+    {
+        let kind = data.attr("name").unwrap_or("");
+        let (method, items) = if kind.ends_with("/method") {
+            (true, data.children_named("Method"))
+        } else if kind.ends_with("/property") {
+            (false, data.children_named("Property"))
+        } else {
+            continue;
+        };
+        for m in items {
+            let name = m.attr("name").map(str::trim).unwrap_or("");
+            let st = m.child("body").and_then(|b| b.child("ST"));
+            let why = if !method {
+                Some("a PROPERTY is not supported".to_string())
+            } else if pou.kind != PouKind::FunctionBlock {
+                Some("methods are compiled for function blocks only".to_string())
+            } else if !values::is_ident(name) {
+                Some("the method has no name that is an identifier".to_string())
+            } else if st.is_none() {
+                Some("the method's body is not ST".to_string())
+            } else {
+                None
+            };
+            if let Some(why) = why {
+                ctx.report(
+                    Diagnostic::error(
+                        code::E0303,
+                        format!(
+                            "`{}`: {} `{name}` is not compiled: {why}",
+                            pou.name.name,
+                            if method { "METHOD" } else { "PROPERTY" }
+                        ),
+                    )
+                    .at(ctx.tag(m))
+                    .with_primary_label("object-oriented extension (IEC 61131-3 ed. 3)")
+                    .with_hint("write it as a METHOD of a function block with an ST body, or as a FUNCTION")
+                    .with_xml(XmlContext {
+                        pou: Some(pou.name.name.clone()),
+                        ..Default::default()
+                    }),
+                );
+                continue;
+            }
+            let mut ret = None;
+            let mut blocks = Vec::new();
+            if let Some(iface) = m.child("interface") {
+                // array bounds may name the block's constants or the method's own
+                let globals = std::mem::take(&mut ctx.constants);
+                let lookup = |n: &str| globals.get(&n.to_ascii_uppercase()).copied();
+                let mut local = p
+                    .child("interface")
+                    .map(|i| decls::collect_constants(i, false, &lookup))
+                    .unwrap_or_default();
+                local.extend(decls::collect_constants(iface, false, &|n| {
+                    local_or(&local, &globals, n)
+                }));
+                ctx.constants = globals;
+                ctx.local_constants = local;
+                read_interface(ctx, iface, &mut ret, &mut blocks);
+                ctx.local_constants.clear();
+            }
+            let ident = Ident::new(name, ctx.attr_span(m, "name"));
+            let st = st.expect("checked above");
+            let mut t = crate::il_body::embedded_text(st);
+            crate::st_body::join_split_operators(&mut t.text, t.base, ctx.xml);
+            out.push(il_frontend::st::file::PendingMethod {
+                ret: ret.map(|ty| il_frontend::ast::VarDecl::new(ident.clone(), ty, ident.span)),
+                name: ident,
+                blocks,
+                text: t.text,
+                base: t.base,
+            });
+        }
+    }
+    out
 }
 
 fn signature(p: &Pou) -> PouSig {

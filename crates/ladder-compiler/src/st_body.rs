@@ -46,13 +46,15 @@ fn build_declarations(index: &Index) -> Declarations {
 
 /// Parses and lowers the ST body of `pou` in place (spans point into the XML file). `actions` are
 /// the `<ST>` elements of the POU's actions (CODESYS), with their names: a call statement `Act();`
-/// is lowered as the action's statements.
+/// is lowered as the action's statements. `il_actions` are the POU's other actions, already IL
+/// (written in IL, LD or FBD): a call statement of one is a copy of its statements.
 pub fn lower(
     ctx: &mut Ctx,
     index: &Index,
     e: &Element,
     pou: &Pou,
     actions: &[(Ident, &Element)],
+    il_actions: &[(Ident, Vec<IlStmt>)],
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
     let mut t = crate::il_body::embedded_text(e);
     join_split_operators(&mut t.text, t.base, ctx.xml);
@@ -68,7 +70,7 @@ pub fn lower(
         })
         .collect();
     let (body, temps, standalone) = il_frontend::st::compile_body_with_actions(
-        ctx.file, &t.text, t.base, decls, pou, &actions, span, &mut local,
+        ctx.file, &t.text, t.base, decls, pou, &actions, il_actions, span, &mut local,
     );
     let xml = XmlContext {
         pou: Some(pou.name.name.clone()),

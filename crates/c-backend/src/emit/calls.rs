@@ -813,6 +813,14 @@ impl Gen<'_> {
 fn invoke(g: &Gen, lv: &str, fb: FbType) -> String {
     match fb {
         FbType::Standard(f) => cfmt!("{}_body(&{lv});", ctypes::std_fb(f).0),
-        FbType::User(id) => cfmt!("{}_BODY(&{lv});", mangle::fb(&g.model.pou(id).name)),
+        FbType::User(id) => {
+            let p = g.model.pou(id);
+            let s = if p.kind == il_frontend::ast::PouKind::Program {
+                mangle::program(&p.name)
+            } else {
+                mangle::fb(&p.name)
+            };
+            cfmt!("{s}_BODY(&{lv});")
+        }
     }
 }

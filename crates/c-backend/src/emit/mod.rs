@@ -399,6 +399,20 @@ impl<'a> Gen<'a> {
         for c in self.embedded.values() {
             let _ = writeln!(h, "void {c}(void);");
         }
+        // the instances (defined with the scan) of the programs whose actions other POUs call
+        // (they have an action flag, see `il_frontend::actions`): the call runs on the instance
+        for inst in self.instances() {
+            let p = self.model.pou(inst.pou);
+            let called = p
+                .vars
+                .iter()
+                .any(|v| v.name.starts_with(il_frontend::actions::FLAG_PREFIX));
+            if !called {
+                continue;
+            }
+            let s = self.pou_struct(p);
+            let _ = writeln!(h, "extern {s} {};", inst.c_name);
+        }
         h.push_str("\n#endif\n");
     }
 

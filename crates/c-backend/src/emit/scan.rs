@@ -24,18 +24,20 @@ const MAX_WATCHED_ARRAY: u128 = 1024;
 const MAX_ENTRIES: usize = 1_000_000;
 
 /// A program instance to run.
-struct Instance {
+pub(super) struct Instance {
     /// C variable name.
-    c_name: String,
+    pub(super) c_name: String,
     /// Table prefix (as written).
     watch_name: String,
-    pou: PouId,
+    pub(super) pou: PouId,
     /// (config, resource, index in resource.programs) for configured instances.
     configured: Option<(usize, usize, usize)>,
 }
 
 impl Gen<'_> {
-    fn instances(&self) -> Vec<Instance> {
+    /// The program instances to run: each configured one, or without a configuration the
+    /// implicit instance of every PROGRAM.
+    pub(super) fn instances(&self) -> Vec<Instance> {
         let mut v = Vec::new();
         if self.model.configurations.is_empty() {
             for (i, p) in self.model.pous.iter().enumerate() {

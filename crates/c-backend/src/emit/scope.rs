@@ -245,6 +245,38 @@ impl Gen<'_> {
         None
     }
 
+    /// The C variable of the one instance of program `name` (its implicit instance without a
+    /// configuration), typed as the program; `None` when `name` is no program or has no single
+    /// instance.
+    pub fn program_instance_place(&self, name: &str) -> Option<Place> {
+        let id = self
+            .model
+            .pous
+            .iter()
+            .position(|p| p.kind == PouKind::Program && p.name.eq_ignore_ascii_case(name))?;
+        let id = PouId(id as u32);
+        let lv = if self.model.configurations.is_empty() {
+            mangle::implicit_instance(&self.model.pou(id).name)
+        } else {
+            let mut found = Vec::new();
+            for (ci, cfg) in self.model.configurations.iter().enumerate() {
+                for (ri, r) in cfg.resources.iter().enumerate() {
+                    for p in r.programs.iter().filter(|p| p.pou == id) {
+                        found.push(mangle::program_instance(ci, ri, &p.name));
+                    }
+                }
+            }
+            if found.len() != 1 {
+                return None;
+            }
+            found.pop()?
+        };
+        Some(Place::Mem {
+            lv,
+            ty: Type::Fb(FbType::User(id)),
+        })
+    }
+
     /// The place a variable reference denotes (None: an error was reported, or it is not a variable).
     pub fn place(&mut self, scope: &Scope, r: &VarRef) -> Option<Place> {
         let mut base = self.base_place(scope, &r.base);
@@ -259,6 +291,11 @@ impl Gen<'_> {
                 base = Some(self.global_place(g, r.base.span));
                 skip = 1;
             }
+        }
+        if base.is_none() && r.accessors.is_empty() {
+            // `CAL PLC_PRG(__ACTION_RESET := TRUE)`: a program's action called from another POU
+            // runs on the program's one instance (sema checked the call)
+            base = self.program_instance_place(&r.base.name).map(Some);
         }
         let Some(base) = base else {
             self.report_once(

@@ -850,7 +850,31 @@ impl Body<'_, '_> {
                 return;
             }
         }
-        let place = self.resolve_var(instance);
+        // `CAL PLC_PRG(__ACTION_RESET := TRUE)`: an action of a program run on the program's one
+        // instance (written `PLC_PRG.Reset();`, linked by `crate::actions::link`)
+        let program = match args {
+            CallArgs::Formal(list)
+                if instance.accessors.is_empty()
+                    && self.pou().var(&instance.base.name).is_none()
+                    && list
+                        .iter()
+                        .any(|a| a.name.name.starts_with(crate::actions::FLAG_PREFIX)) =>
+            {
+                self.a
+                    .pou_names
+                    .get(&instance.base.key())
+                    .copied()
+                    .filter(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Program)
+            }
+            _ => None,
+        };
+        let place = match program {
+            Some(id) => super::places::Place {
+                ty: Type::Fb(FbType::User(id)),
+                read_only: None,
+            },
+            None => self.resolve_var(instance),
+        };
         match place.ty {
             Type::Fb(fb) => {
                 rec.callee = Some(Callee::FbInstance { fb, input: None });

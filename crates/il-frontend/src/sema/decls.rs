@@ -1417,6 +1417,7 @@ pub fn reserved_name(name: &str) -> Option<&'static str> {
         "END_RESOURCE",
         "ON",
         "WITH",
+        "TASK",
     ];
     let up = name.to_ascii_uppercase();
     if KEYWORDS.contains(&up.as_str()) {

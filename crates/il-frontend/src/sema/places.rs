@@ -738,10 +738,30 @@ impl Body<'_, '_> {
                             read_only,
                         })
                     }
+                    // the result of a method that does not exist (`c.Foo(1)` in an expression):
+                    // the call itself is reported
+                    None if f.name.starts_with(crate::actions::METHOD_PREFIX) => {
+                        // ... unless the method exists (it was called: its flag is there) and
+                        // returns nothing
+                        let method = &f.name[crate::actions::METHOD_PREFIX.len()..];
+                        let flag = format!("{}{method}", crate::actions::FLAG_PREFIX);
+                        if params.iter().any(|p| p.0.eq_ignore_ascii_case(&flag)) {
+                            self.a
+                                .error(
+                                    code::E1011,
+                                    f.span,
+                                    format!("method `{}` of {tname} returns no value", f.name.get(crate::actions::METHOD_PREFIX.len()..).unwrap_or("")),
+                                )
+                                .label("used as a value")
+                                .hint("call it as a statement, or give the method a result type (`METHOD M : INT`) and assign it");
+                        }
+                        None
+                    }
                     None => {
+                        // (the hidden variables of actions and methods are not offered)
                         let names: Vec<String> = params
                             .iter()
-                            .filter(|p| p.1 != ParamDir::Internal)
+                            .filter(|p| p.1 != ParamDir::Internal && !p.0.starts_with("__"))
                             .map(|p| p.0.clone())
                             .collect();
                         self.a

@@ -52,8 +52,12 @@ pub struct PouText {
     /// The `INITIAL_STEP` (or first `STEP name :`) of a body in textual SFC (lowered by the caller:
     /// [`PendingBody::sfc`]).
     pub sfc: Option<Range<usize>>,
-    /// The first `METHOD name` / `PROPERTY name` of a body (edition 3 object orientation: E0303).
+    /// The first `PROPERTY name` of a body, or `METHOD name` outside a function block (edition 3
+    /// object orientation not supported: E0303).
     pub oop: Option<Range<usize>>,
+    /// The `METHOD ... END_METHOD` blocks of a function block (edition 3, without inheritance):
+    /// compiled as actions with inputs, outputs and a result ([`MethodText`]).
+    pub methods: Vec<MethodText>,
     /// Not a POU: a CODESYS/RuSTy `ACTIONS ... END_ACTIONS` block (the `ACTIONS` keyword; `body` is
     /// the whole block). Its actions belong to the POU before it (see [`PouText::action_list`]).
     pub actions: Option<Range<usize>>,
@@ -65,6 +69,39 @@ pub struct PouText {
     /// The `EXTENDS base` / `IMPLEMENTS itf` clause after the name (edition 3 inheritance: E0303,
     /// the body is not compiled).
     pub heritage: Option<Range<usize>>,
+}
+
+/// One `METHOD [modifiers] Name [: Type] <VAR blocks> <statements> END_METHOD` of a function block.
+#[derive(Debug, Clone)]
+pub struct MethodText {
+    /// The method's name as written.
+    pub name: String,
+    /// Byte range of the name.
+    pub name_range: Range<usize>,
+    /// End of the result type after `Name :` (`None`: the method returns nothing).
+    pub ret_end: Option<usize>,
+    /// Byte range of its variable blocks (empty when it has none).
+    pub decls: Range<usize>,
+    /// Byte range of its statements.
+    pub stmts: Range<usize>,
+    /// Byte range of the whole block, `METHOD` to `END_METHOD`.
+    pub whole: Range<usize>,
+}
+
+/// A method of a function block read from an ST file, waiting to be lowered with its block
+/// ([`compile_pending`]).
+#[derive(Debug, Clone)]
+pub struct PendingMethod {
+    /// The method's name.
+    pub name: crate::ast::Ident,
+    /// Its result (a variable named like the method), if it returns one.
+    pub ret: Option<crate::ast::VarDecl>,
+    /// Its VAR_INPUT, VAR_OUTPUT, VAR and VAR_TEMP blocks.
+    pub blocks: Vec<crate::ast::VarBlock>,
+    /// Its statements' text and their offset in the file.
+    pub text: String,
+    /// Byte offset of `text` in the file.
+    pub base: usize,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -83,6 +120,10 @@ pub struct PendingBody {
     /// The body is textual SFC ([`super::sfc`]): [`compile_pending`] leaves it to the SFC lowering of
     /// the caller (ladder-compiler's `sfc::text`).
     pub sfc: bool,
+    /// The methods of a function block (see [`crate::actions`]: each runs, when called through an
+    /// instance, as an action with hidden inputs and outputs `__M_<METHOD>_<var>` and result
+    /// `__M_<METHOD>`).
+    pub methods: Vec<PendingMethod>,
 }
 
 /// IL operators (and the `&` forms): a line starting with one of these is an IL instruction.
@@ -177,6 +218,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     lang: Lang::Il,
                     sfc: None,
                     oop: None,
+                    methods: Vec::new(),
                     actions: Some(start),
                     action_list,
                     modifier: None,
@@ -281,10 +323,16 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     })
                     .map(|t| t.range.clone());
                 let body_toks = &toks[first..j.min(n - 1)];
+                let methods = if w == "FUNCTION_BLOCK" {
+                    scan_methods(src, body_toks)
+                } else {
+                    Vec::new()
+                };
                 let oop = body_toks
                     .windows(2)
                     .find(|w| {
-                        (is_word(src, &w[0], "METHOD") || is_word(src, &w[0], "PROPERTY"))
+                        ((is_word(src, &w[0], "METHOD") && methods.is_empty())
+                            || is_word(src, &w[0], "PROPERTY"))
                             && w[1].tok == Tok::Ident
                     })
                     .map(|w| w[0].range.clone());
@@ -295,6 +343,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     lang: body_lang(src, &toks[first..j.min(n - 1)]),
                     sfc,
                     oop,
+                    methods,
                     actions: None,
                     action_list: Vec::new(),
                     modifier,
@@ -304,6 +353,129 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
             }
             _ => i += 1,
         }
+    }
+    out
+}
+
+/// Reads a method's declarations (its variable blocks, and its result as a variable named like the
+/// method) with the IL parser, in place: diagnostics point into the file.
+fn pending_method(
+    file: FileId,
+    src: &str,
+    m: &MethodText,
+    diags: &mut Diagnostics,
+) -> PendingMethod {
+    let vars = |text: &str, base: usize, diags: &mut Diagnostics| -> Vec<crate::ast::VarBlock> {
+        match crate::parser::run(file, text, base, crate::lexer::Tok::UnitStart, diags) {
+            Some(crate::parser::Parsed::Unit(mut top)) => {
+                let mut blocks: Vec<crate::ast::VarBlock> =
+                    top.implicit.take().map(|(_, v, _)| v).unwrap_or_default();
+                // (a VAR_GLOBAL block would be a top-level item: not a method's)
+                blocks.retain(|b| b.kind != crate::ast::VarKind::Global);
+                blocks
+            }
+            _ => Vec::new(),
+        }
+    };
+    let blocks = vars(src.get(m.decls.clone()).unwrap_or(""), m.decls.start, diags);
+    // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
+    // bytes into the file: after `METHOD `)
+    let ret = m.ret_end.and_then(|end| {
+        let decl = src.get(m.name_range.start..end)?;
+        let base = m.name_range.start.checked_sub(4)?;
+        let text = format!("VAR {decl};END_VAR");
+        vars(&text, base, diags)
+            .into_iter()
+            .flat_map(|b| b.vars)
+            .next()
+    });
+    PendingMethod {
+        name: crate::ast::Ident::new(
+            &m.name,
+            Span::new(file, m.name_range.start, m.name_range.end),
+        ),
+        ret,
+        blocks,
+        text: src.get(m.stmts.clone()).unwrap_or("").to_string(),
+        base: m.stmts.start,
+    }
+}
+
+/// The `METHOD ... END_METHOD` blocks among a function block's body tokens. A block that does not
+/// end with `END_METHOD` is left out (the body's parse reports it).
+fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
+    let n = toks.len();
+    let same_line = |a: usize, b: usize| !src.get(a..b).unwrap_or("\n").contains(['\n', '\r']);
+    let mut out = Vec::new();
+    let mut k = 0;
+    while k < n {
+        if !is_word(src, &toks[k], "METHOD") {
+            k += 1;
+            continue;
+        }
+        let mut h = k + 1;
+        while h + 1 < n
+            && toks[h + 1].tok == Tok::Ident
+            && [
+                "PUBLIC",
+                "PRIVATE",
+                "PROTECTED",
+                "INTERNAL",
+                "FINAL",
+                "ABSTRACT",
+            ]
+            .iter()
+            .any(|m| is_word(src, &toks[h], m))
+        {
+            h += 1;
+        }
+        let Some(name_tok) = toks.get(h).filter(|t| t.tok == Tok::Ident) else {
+            k += 1;
+            continue;
+        };
+        h += 1;
+        let mut ret_end = None;
+        if toks.get(h).is_some_and(|t| t.tok == Tok::Colon) {
+            h += 1;
+            while h < n
+                && toks[h].tok != Tok::Semi
+                && same_line(name_tok.range.end, toks[h].range.start)
+                && !is_var_keyword(&word(src, &toks[h]).to_ascii_uppercase())
+            {
+                ret_end = Some(toks[h].range.end);
+                h += 1;
+            }
+        }
+        if toks.get(h).is_some_and(|t| t.tok == Tok::Semi) {
+            h += 1;
+        }
+        let decl_start = toks.get(h).map_or(name_tok.range.end, |t| t.range.start);
+        let mut decl_end = decl_start;
+        while h < n && is_var_keyword(&word(src, &toks[h]).to_ascii_uppercase()) {
+            while h < n && !is_word(src, &toks[h], "END_VAR") {
+                h += 1;
+            }
+            if h < n {
+                decl_end = toks[h].range.end;
+                h += 1;
+            }
+        }
+        let mut e = h;
+        while e < n && !is_word(src, &toks[e], "END_METHOD") {
+            e += 1;
+        }
+        if e >= n {
+            break;
+        }
+        out.push(MethodText {
+            name: word(src, name_tok).to_string(),
+            name_range: name_tok.range.clone(),
+            ret_end,
+            decls: decl_start..decl_end,
+            stmts: decl_end..toks[e].range.start,
+            whole: toks[k].range.start..toks[e].range.end,
+        });
+        k = e + 1;
     }
     out
 }
@@ -542,6 +714,7 @@ pub fn parse_text(
                 text: src.get(p.body.clone()).unwrap_or("").to_string(),
                 actions: Vec::new(),
                 sfc: true,
+                methods: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -573,13 +746,22 @@ pub fn parse_text(
         }
         match p.lang {
             Lang::St => {
+                // the methods are cut out of the body (blanked, so positions stay) and lowered
+                // with the block
+                let mut body = src.to_string();
+                let mut methods = Vec::new();
+                for m in &p.methods {
+                    methods.push(pending_method(file, src, m, diags));
+                    blank(&mut body, m.whole.clone());
+                }
                 pending.push(PendingBody {
                     file,
                     name_start: p.name_range.start,
                     base: p.body.start,
-                    text: src.get(p.body.clone()).unwrap_or("").to_string(),
+                    text: body.get(p.body.clone()).unwrap_or("").to_string(),
                     actions: Vec::new(),
                     sfc: false,
+                    methods,
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -635,6 +817,20 @@ pub fn compile_pending(
     if pending.is_empty() {
         return;
     }
+    // the hidden variables of the methods first: other POUs' calls read their results
+    // (`c.Add(1)` is `c.__M_ADD`)
+    for pb in pending.iter().filter(|pb| !pb.methods.is_empty()) {
+        for unit in units.iter_mut() {
+            for item in unit.items.iter_mut() {
+                let LibraryElement::Pou(p) = item else {
+                    continue;
+                };
+                if p.name.span.file == pb.file && p.name.span.start as usize == pb.name_start {
+                    add_method_vars(p, &pb.methods, diags);
+                }
+            }
+        }
+    }
     let decls = super::Declarations::from_units(units);
     for pb in pending.iter().filter(|pb| !pb.sfc) {
         for unit in units.iter_mut() {
@@ -654,7 +850,14 @@ pub fn compile_pending(
                     .iter()
                     .flat_map(|b| b.vars.iter())
                     .any(|v| crate::sema::reserved_name(&v.name.name) == Some("a keyword"));
-                if keyword_var {
+                // (a declaration the parser could not read, `OF : BOOL;`, is already E1031 there)
+                let dropped_keyword_var = diags.iter().any(|d| {
+                    d.code == code::E1031
+                        && d.span.is_some_and(|s| {
+                            s.file == p.span.file && s.start >= p.span.start && s.end <= p.span.end
+                        })
+                });
+                if keyword_var || dropped_keyword_var {
                     continue;
                 }
                 let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
@@ -665,6 +868,7 @@ pub fn compile_pending(
                     &decls,
                     p,
                     &pb.actions,
+                    &[],
                     span,
                     diags,
                 );
@@ -673,11 +877,159 @@ pub fn compile_pending(
                     p.var_blocks.push(t);
                 }
                 standalone.extend(actions);
+                for m in &pb.methods {
+                    if let Some(a) = lower_method(pb.file, &decls, p, m, diags) {
+                        standalone.push(a);
+                    }
+                }
             }
             unit.items
                 .extend(standalone.into_iter().map(LibraryElement::Action));
         }
     }
+}
+
+/// Declares the hidden variables of a function block's methods: `__M_<METHOD>_<name>` for each
+/// VAR_INPUT (an input of the block), VAR_OUTPUT (an output), VAR and VAR_TEMP (a temporary: a
+/// method's variables do not keep their values from call to call), and the result `__M_<METHOD>`
+/// (an output). A VAR_IN_OUT of a method is E0303 (not supported).
+pub fn add_method_vars(
+    p: &mut crate::ast::Pou,
+    methods: &[PendingMethod],
+    diags: &mut Diagnostics,
+) {
+    use crate::actions::{method_result, method_var};
+    use crate::ast::{VarBlock, VarKind};
+    let mut inputs = Vec::new();
+    let mut outputs = Vec::new();
+    let mut temps = Vec::new();
+    for m in methods {
+        if let Some(r) = &m.ret {
+            let mut v = r.clone();
+            v.name.name = method_result(&m.name.name);
+            v.init = None;
+            outputs.push(v);
+        }
+        for b in &m.blocks {
+            let list = match b.kind {
+                VarKind::Input => &mut inputs,
+                VarKind::Output => &mut outputs,
+                VarKind::Local | VarKind::Temp => &mut temps,
+                _ => {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0303,
+                            format!(
+                                "method `{}`: this variable block is not supported in a method",
+                                m.name.name
+                            ),
+                        )
+                        .at(b.span)
+                        .with_primary_label("not supported in a method")
+                        .with_hint("methods take VAR_INPUT, VAR_OUTPUT, VAR and VAR_TEMP; pass what the method changes through the block's own variables"),
+                    );
+                    continue;
+                }
+            };
+            for v in &b.vars {
+                let mut v = v.clone();
+                v.name.name = method_var(&m.name.name, &v.name.name);
+                list.push(v);
+            }
+        }
+    }
+    let span = p.span;
+    for (kind, vars) in [
+        (VarKind::Input, inputs),
+        (VarKind::Output, outputs),
+        (VarKind::Temp, temps),
+    ] {
+        if !vars.is_empty() {
+            p.var_blocks.push(VarBlock {
+                name: None,
+                kind,
+                constant: false,
+                retain: false,
+                vars,
+                span,
+            });
+        }
+    }
+}
+
+/// Lowers a method of the function block `p` (its hidden variables already declared) into an
+/// [`Action`](crate::ast::Action) for [`crate::actions::link`]: its statements are lowered where the
+/// method's own names are its variables (they shadow the block's), then those names become the
+/// hidden ones, its labels get a prefix of their own and `RETURN` leaves the method.
+pub fn lower_method(
+    file: FileId,
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    m: &PendingMethod,
+    diags: &mut Diagnostics,
+) -> Option<crate::ast::Action> {
+    use crate::actions::{instantiate, method_result, method_var, rename_vars, METHOD_PREFIX};
+    use crate::ast::{VarBlock, VarKind};
+    let mut own: Vec<VarBlock> = m.blocks.clone();
+    if let Some(r) = &m.ret {
+        own.push(VarBlock::locals(vec![r.clone()], r.span));
+    }
+    let mut rename: std::collections::HashMap<String, String> = Default::default();
+    for v in own.iter().flat_map(|b| b.vars.iter()) {
+        let new = if m.ret.as_ref().is_some_and(|r| r.name.key() == v.name.key()) {
+            method_result(&m.name.name)
+        } else {
+            method_var(&m.name.name, &v.name.name)
+        };
+        rename.insert(v.name.key(), new);
+    }
+    // the block as the method sees it: its own variables (not the methods' hidden ones, and not
+    // those the method's names shadow), then the method's
+    let mut view = p.clone();
+    view.body = Vec::new();
+    for b in &mut view.var_blocks {
+        b.vars.retain(|v| {
+            !v.name.name.starts_with(METHOD_PREFIX) && !rename.contains_key(&v.name.key())
+        });
+    }
+    view.var_blocks.extend(own);
+    let stmts = super::parse_statements(file, &m.text, m.base, diags);
+    let mut low = super::PouLowering::new(decls, &view);
+    let mut body = low.statements(&stmts, diags);
+    if let Some(t) = low.finish(m.name.span) {
+        let mut t: VarBlock = t;
+        for v in &mut t.vars {
+            let new = format!(
+                "{}_{}",
+                method_result(&m.name.name),
+                v.name.name.trim_start_matches('_')
+            );
+            rename.insert(v.name.key(), new.clone());
+            v.name.name = new;
+        }
+        t.kind = VarKind::Temp;
+        p.var_blocks.push(t);
+    }
+    rename_vars(&mut body, &rename);
+    let body = instantiate(
+        &body,
+        &format!("{}_L", method_result(&m.name.name)),
+        m.name.span,
+    );
+    let inputs = m
+        .blocks
+        .iter()
+        .filter(|b| b.kind == VarKind::Input)
+        .flat_map(|b| b.vars.iter().map(|v| v.name.clone()))
+        .collect();
+    Some(crate::ast::Action {
+        pou: p.name.clone(),
+        name: m.name.clone(),
+        body,
+        temps: None,
+        method_inputs: Some(inputs),
+        diagnostics: Vec::new(),
+    })
 }
 
 #[cfg(test)]

@@ -50,6 +50,10 @@ pub struct PouLowering<'d> {
     /// The POU's actions (CODESYS: a program's or FB's `<actions>` with ST bodies), by upper-case
     /// name: a call statement `Act();` lowers the action's statements in its place.
     actions: HashMap<String, std::rc::Rc<Vec<Stmt>>>,
+    /// The POU's actions already in IL (PLCopen XML actions written in IL, LD or FBD), by upper-case
+    /// name: a call statement `Act();` puts a copy of them in its place
+    /// ([`crate::actions::instantiate`]).
+    il_actions: HashMap<String, std::rc::Rc<Vec<IlStmt>>>,
     /// Actions being inlined (a call of one inside itself is reported, not expanded forever).
     inlining: Vec<String>,
     /// Types of the subexpressions of the trees being lowered (so lowering a chain of n operators
@@ -132,6 +136,14 @@ enum Callee {
     Other,
 }
 
+/// The statements of an action a call statement names.
+enum ActionBody {
+    /// Written in ST: lowered where it is called.
+    St(std::rc::Rc<Vec<Stmt>>),
+    /// Already IL (an IL, LD or FBD action): copied where it is called.
+    Il(std::rc::Rc<Vec<IlStmt>>),
+}
+
 impl<'d> PouLowering<'d> {
     /// The lowering state for `pou`: its declared variables are known, the other names come from `decls`.
     pub fn new(decls: &'d Declarations, pou: &Pou) -> Self {
@@ -153,6 +165,7 @@ impl<'d> PouLowering<'d> {
             poisoned: false,
             lit_hint: None,
             actions: HashMap::new(),
+            il_actions: HashMap::new(),
             inlining: Vec::new(),
             types: RefCell::new(TypeCache::new()),
         }
@@ -162,6 +175,15 @@ impl<'d> PouLowering<'d> {
     /// arguments, where no variable or POU has that name) is lowered as the action's statements.
     pub fn set_actions(&mut self, actions: Vec<(Ident, Vec<Stmt>)>) {
         self.actions = actions
+            .into_iter()
+            .map(|(n, s)| (n.key(), std::rc::Rc::new(s)))
+            .collect();
+    }
+
+    /// The POU's actions already lowered to IL (name, statements): a call statement `Act();` of one
+    /// (as for [`Self::set_actions`]) is a copy of its statements, with labels of its own.
+    pub fn set_il_actions(&mut self, actions: Vec<(Ident, Vec<IlStmt>)>) {
+        self.il_actions = actions
             .into_iter()
             .map(|(n, s)| (n.key(), std::rc::Rc::new(s)))
             .collect();
@@ -189,18 +211,24 @@ impl<'d> PouLowering<'d> {
 
     /// The action a call statement names: `Act();` without arguments, where `Act` is an action of
     /// the POU and no variable, POU or function result has that name.
-    fn action_of(&self, callee: &Place, args: &[Arg]) -> Option<(String, std::rc::Rc<Vec<Stmt>>)> {
-        if self.actions.is_empty() || !args.is_empty() || !callee.accessors.is_empty() {
+    fn action_of(&self, callee: &Place, args: &[Arg]) -> Option<(String, ActionBody)> {
+        if (self.actions.is_empty() && self.il_actions.is_empty())
+            || !args.is_empty()
+            || !callee.accessors.is_empty()
+        {
             return None;
         }
         let PlaceBase::Name(n) = &callee.base else {
             return None;
         };
-        let body = self.actions.get(&n.key())?;
+        let body = match self.actions.get(&n.key()) {
+            Some(b) => ActionBody::St(b.clone()),
+            None => ActionBody::Il(self.il_actions.get(&n.key())?.clone()),
+        };
         if self.env().var_type(n).is_some() || self.decls.pou(&n.name).is_some() {
             return None;
         }
-        Some((n.key(), body.clone()))
+        Some((n.key(), body))
     }
 
     /// Lowers an expression: the instructions leave its value in the current result.
@@ -360,9 +388,18 @@ impl<'d> PouLowering<'d> {
                         ),
                     );
                 } else {
-                    self.inlining.push(key);
-                    self.stmt_list(&body, out, diags);
-                    self.inlining.pop();
+                    match body {
+                        ActionBody::St(body) => {
+                            self.inlining.push(key);
+                            self.stmt_list(&body, out, diags);
+                            self.inlining.pop();
+                        }
+                        ActionBody::Il(body) => {
+                            self.next_label += 1;
+                            let tag = format!("_ST_A{}_", self.next_label);
+                            out.extend(crate::actions::instantiate(&body, &tag, span));
+                        }
+                    }
                 }
             }
             StmtKind::Call { callee, args } => {

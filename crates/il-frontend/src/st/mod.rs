@@ -62,7 +62,8 @@ pub fn compile_body(
     span: Span,
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
-    let (body, temps, _) = compile_body_with_actions(file, src, base, decls, pou, &[], span, diags);
+    let (body, temps, _) =
+        compile_body_with_actions(file, src, base, decls, pou, &[], &[], span, diags);
     (body, temps)
 }
 
@@ -70,7 +71,8 @@ pub fn compile_body(
 /// exports): a call statement `Act();` in the body (or in another action) is lowered as the
 /// action's statements, in place. Each action is also lowered on its own (third result, with the
 /// diagnostics of that lowering kept in it), for calls from other POUs (`inst.Act();`): see
-/// [`crate::actions::link`].
+/// [`crate::actions::link`]. `il_actions` are the POU's actions already lowered to IL (PLCopen XML
+/// actions in IL, LD or FBD): a call statement `Act();` of one is a copy of its statements.
 #[allow(clippy::too_many_arguments)]
 pub fn compile_body_with_actions(
     file: FileId,
@@ -79,6 +81,7 @@ pub fn compile_body_with_actions(
     decls: &Declarations,
     pou: &Pou,
     actions: &[(crate::ast::Ident, String, usize)],
+    il_actions: &[(crate::ast::Ident, Vec<IlStmt>)],
     span: Span,
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Option<VarBlock>, Vec<crate::ast::Action>) {
@@ -92,6 +95,9 @@ pub fn compile_body_with_actions(
             .collect();
         low.set_actions(parsed.clone());
     }
+    if !il_actions.is_empty() {
+        low.set_il_actions(il_actions.to_vec());
+    }
     let body = low.statements(&stmts, diags);
     let standalone = parsed
         .iter()
@@ -103,6 +109,7 @@ pub fn compile_body_with_actions(
                 name: name.clone(),
                 body,
                 temps: None,
+                method_inputs: None,
                 diagnostics: local.into_vec(),
             }
         })

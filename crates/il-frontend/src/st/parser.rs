@@ -103,6 +103,13 @@ struct Parser<'s, 'd> {
     operations: usize,
     /// Start of the outermost expression (for E0109's label).
     expr_start: usize,
+    /// Method calls read in the expressions of the statement being parsed (`r := c.Add(1);`):
+    /// put before it as call statements, the expression reading the method's result
+    /// (`c.__M_ADD`, see `crate::actions::method_result`).
+    hoisted: Vec<Stmt>,
+    /// Inside a condition evaluated again and again or only sometimes (WHILE, UNTIL, ELSIF): a
+    /// method call there cannot be put before the statement.
+    no_hoist: usize,
     diags: &'d mut Diagnostics,
 }
 
@@ -137,6 +144,8 @@ impl<'s, 'd> Parser<'s, 'd> {
             expr_level: 0,
             operations: 0,
             expr_start: 0,
+            hoisted: Vec::new(),
+            no_hoist: 0,
             diags,
         };
         for pr in problems {
@@ -303,20 +312,27 @@ impl<'s, 'd> Parser<'s, 'd> {
     fn statement_list(&mut self) -> Vec<Stmt> {
         let mut out = Vec::new();
         while !ends_list(self.peek()) {
-            if let Some(s) = self.statement() {
-                out.push(s);
-            }
+            self.statement_into(&mut out);
         }
         out
+    }
+
+    /// Parses one statement into `out`, after the method calls its expressions hold.
+    fn statement_into(&mut self, out: &mut Vec<Stmt>) {
+        let outer = std::mem::take(&mut self.hoisted);
+        let s = self.statement();
+        let calls = std::mem::replace(&mut self.hoisted, outer);
+        if let Some(s) = s {
+            out.extend(calls);
+            out.push(s);
+        }
     }
 
     /// A statement list that stops also before a CASE label (`5:`, `1, 2:`, `3..4:`, `red:`).
     fn case_arm_body(&mut self) -> Vec<Stmt> {
         let mut out = Vec::new();
         while !ends_list(self.peek()) && !self.looks_like_case_label() {
-            if let Some(s) = self.statement() {
-                out.push(s);
-            }
+            self.statement_into(&mut out);
         }
         out
     }
@@ -517,8 +533,13 @@ impl<'s, 'd> Parser<'s, 'd> {
         let mut branches = Vec::new();
         let mut else_body = None;
         let mut bstart = open;
+        let mut first = true;
         loop {
+            // (an ELSIF condition is evaluated only when the ones before are FALSE)
+            self.no_hoist += usize::from(!first);
             let cond = self.expr();
+            self.no_hoist -= usize::from(!first);
+            first = false;
             if !self.expect_kw(Kw::Then, "after the IF condition") {
                 // Garbage before a THEN on the same statement is skipped; without THEN the body
                 // starts right here (`IF a x := 1;` keeps `x := 1`).
@@ -681,7 +702,9 @@ impl<'s, 'd> Parser<'s, 'd> {
 
     fn while_stmt(&mut self) -> Option<StmtKind> {
         let (_, open) = self.block_open()?;
+        self.no_hoist += 1;
         let cond = self.expr();
+        self.no_hoist -= 1;
         if !self.expect_kw(Kw::Do, "after the WHILE condition") {
             return None;
         }
@@ -704,12 +727,62 @@ impl<'s, 'd> Parser<'s, 'd> {
             });
         }
         self.bump();
+        self.no_hoist += 1;
         let until = self.expr();
+        self.no_hoist -= 1;
         self.close_block(Kw::EndRepeat, open, "REPEAT");
         Some(StmtKind::Repeat { body, until })
     }
 
     // ------------------------------------------------------------ places and calls
+
+    /// `inst.M(args)` inside an expression: a call of method `M` (edition 3). The call becomes a
+    /// statement before the current one, and the expression reads the method's result
+    /// `inst.__M_M`. Where the statement cannot run it first (a WHILE, UNTIL or ELSIF condition),
+    /// or when the statement calls the same method of the same instance twice (both would read
+    /// one result), it is E0108.
+    fn method_call_expr(&mut self, callee: Place, m: Ident) -> Expr {
+        let here = callee.span;
+        let Some(args) = self.args() else {
+            return self.error_expr(here);
+        };
+        let span = here.to(self.span(self.prev_end(), self.prev_end()));
+        let text = |p: &Place| {
+            self.src
+                .get(p.span.start as usize - self.base..p.span.end as usize - self.base)
+                .map(|t| t.to_ascii_uppercase().replace(' ', ""))
+        };
+        let twice = self.hoisted.iter().any(
+            |s| matches!(&s.kind, StmtKind::Call { callee: c, .. } if text(c) == text(&callee)),
+        );
+        if self.no_hoist > 0 || twice {
+            let (msg, hint) = if twice {
+                (
+                    format!("method `{}` is called twice in one statement", m.name),
+                    "both calls would give one result: call it in two statements, each storing its result",
+                )
+            } else {
+                (
+                    format!("a call of method `{}` in a WHILE, UNTIL or ELSIF condition is not supported", m.name),
+                    "call the method in a statement of its own and test the variable that holds its result",
+                )
+            };
+            self.error_at(code::E0108, span, msg, hint);
+            return self.error_expr(span);
+        }
+        let mut result = callee.clone();
+        if let Some(last) = result.accessors.last_mut() {
+            *last = Accessor::Field(Ident::new(crate::actions::method_result(&m.name), m.span));
+        }
+        self.hoisted.push(Stmt {
+            kind: StmtKind::Call { callee, args },
+            span,
+        });
+        Expr {
+            kind: ExprKind::Place(result),
+            span,
+        }
+    }
 
     /// `x`, `a.b[i, j].c`, `%QX0.1`.
     fn place(&mut self) -> Option<Place> {
@@ -1163,6 +1236,9 @@ impl<'s, 'd> Parser<'s, 'd> {
             Tok::Ident | Tok::Address(..) => match self.place() {
                 Some(p) => {
                     if self.at(&Tok::LParen) {
+                        if let Some(Accessor::Field(m)) = p.accessors.last() {
+                            return self.method_call_expr(p.clone(), m.clone());
+                        }
                         self.error_here(
                             code::E0108,
                             "only a function name can be called inside an expression",
