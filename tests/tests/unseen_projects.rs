@@ -689,3 +689,89 @@ fn an_extends_clause_is_one_error() {
         "{e}"
     );
 }
+
+/// An OpenPLC Editor project (`Gloworm72/Ride-Engineering-Competition-2025`, `build/plc.st`, and
+/// its `plc.xml`) writes `TON0(IN := ..., PT := T# 30000ms);`: a blank after `T#`, which matiec
+/// accepts (it reads `T#` as a token of its own). Before, the literal was "a duration without
+/// value" and the number after it a second error; now the blanks are skipped, on one line only.
+#[test]
+fn a_blank_after_the_duration_prefix_is_read_as_matiec_reads_it() {
+    let src = "PROGRAM main\nVAR\n  t : TON;\n  q : BOOL;\n  d : TIME := TIME#  1s;\nEND_VAR\n  \
+               t(IN := TRUE, PT := T# 30ms);\n  q := t.Q;\nEND_PROGRAM\n";
+    let (trace, stderr) = run("blank.st", src, "5", "main.q,main.d");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.q,main.d\n0,0,0,T#1000ms\n1,10,0,T#1000ms\n2,20,0,T#1000ms\n\
+         3,30,1,T#1000ms\n4,40,1,T#1000ms\n"
+    );
+    // a line end after `T#` is still a literal without value: one error
+    let e = rejected("line.st", &src.replace("T# 30ms", "T#\n30ms"));
+    assert_eq!(e.matches(": error[").count(), 2, "{e}");
+    assert!(e.contains("line.st:7:23: error[E0103]"), "{e}");
+}
+
+/// IronPLC's parser test `c_style_block_comment.st`: `/* ... */` comments, which IEC 61131-3
+/// edition 3 has beside `(* ... *)` (Table 3, features 2b and 3b: they nest too). Before, the `/`
+/// was an unexpected operator; now the comment is skipped, in ST and in IL bodies, and an unclosed
+/// one is one located error.
+#[test]
+fn c_style_block_comments_are_comments() {
+    let src = "FUNCTION MY_FUNC : INT\nVAR_INPUT\n    x : INT;\nEND_VAR\n    \
+               /* This is a C-style block comment */\n    MY_FUNC := x /* over\n two lines /* nested */ */ * 2;\n\
+               END_FUNCTION\n\
+               FUNCTION_BLOCK Acc\nVAR_OUTPUT n : INT; END_VAR\n  LD n /* an IL body */\n  ADD 1\n  ST n\n\
+               END_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR r : INT; a : Acc; END_VAR\n  r := MY_FUNC(x := 21);\n  a();\nEND_PROGRAM\n";
+    let (trace, stderr) = run("cstyle.st", src, "2", "main.r,main.a.n");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.r,main.a.n\n0,0,42,1\n1,10,42,2\n"
+    );
+    let e = rejected("open.st", &src.replace("comment */", "comment"));
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0].starts_with(
+            "open.st:5:5: error[E0002]: comment is not closed (hint: close it with `*/`)"
+        ),
+        "{e}"
+    );
+}
+
+/// IronPLC's parser test `var_decl.st` declares `AT %IX1.1 : BOOL;` and `AT %QW1 : WORD := 16#FF00;`:
+/// located variables without a name, which IEC 61131-3 allows (`located_var_decl ::=
+/// [variable_name] location ':' ...`; the program reaches them by their address). Before, `AT`
+/// was E1031 "reserved: it cannot name a variable". Now such a variable is declared under the name
+/// `AT_` + its address (`AT_QW2`). The fix also found that no located variable of a program got its
+/// initial value (`q AT %QW2 : WORD := 7` started at 0): it is now written to the process image at
+/// start, as it already was for located globals.
+#[test]
+fn located_variables_without_a_name_and_their_initial_values() {
+    let src = "PROGRAM main\nVAR\n  AT %QW2 : WORD := 7;\n  AT %IX1.1 : BOOL := TRUE;\n  \
+               m AT %MW3 : INT := 9;\n  y : INT;\n  x : BOOL;\n  z : INT;\nEND_VAR\n  \
+               y := WORD_TO_INT(%QW2) + 1;\n  x := %IX1.1;\n  z := m + INT#1;\n  m := z;\nEND_PROGRAM\n";
+    let (trace, stderr) = run("anon.st", src, "2", "main.y,main.x,main.m,main.AT_QW2,%QW2");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.y,main.x,main.m,main.AT_QW2,%QW2\n0,0,8,1,10,7,7\n1,10,8,1,11,7,7\n"
+    );
+}
+
+/// RuSTy's example `program_with_references.st` is `PROGRAM exp a AND NOT b OR c XOR d; END_PROGRAM`:
+/// an expression where a statement belongs (invalid). Before, the body (no assignment, no IL
+/// operator at a line start) was read as IL: three errors, among them "`;` comments are not IEC"
+/// and "missing END_PROGRAM" on a file that has it. A body with `;` and no IL instruction is ST
+/// now: one error, at the expression.
+#[test]
+fn a_body_of_one_expression_with_a_semicolon_is_st() {
+    let e = rejected(
+        "exp.st",
+        "PROGRAM exp a AND NOT b OR c XOR d; END_PROGRAM\n",
+    );
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(errors[0].starts_with("exp.st:1:15: error[E0106]"), "{e}");
+}

@@ -584,9 +584,12 @@ impl<'a> Gen<'a> {
         let _ = writeln!(c, "void {sname}_INIT({sname} *self) {{");
         c.push_str("    memset(self, 0, sizeof *self);\n");
         for v in &p.vars {
-            if v.location.is_some()
-                || matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp)
-            {
+            if matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp) {
+                continue;
+            }
+            if v.location.is_some() {
+                // `q AT %QW2 : WORD := 7`: the initial value goes to the process image
+                self.init_located(c, v);
                 continue;
             }
             let lv = format!("self->{}", mangle::var(&v.name));

@@ -164,8 +164,13 @@ impl<'s, 'd> Parser<'s, 'd> {
             }
             Problem::UnterminatedComment(r) => (
                 code::E0102,
-                // the opener: `(*` or `{` (whatever follows may be a multi-byte character)
-                r.start..r.start + if self.src[r.start..].starts_with("(*") { 2 } else { 1 },
+                // the opener: `(*`, `/*` or `{` (whatever follows may be a multi-byte character)
+                r.start..r.start
+                    + if self.src[r.start..].starts_with("(*") || self.src[r.start..].starts_with("/*") {
+                        2
+                    } else {
+                        1
+                    },
                 "comment or pragma is never closed".to_string(),
                 "close `(*` with `*)` (comments nest: every `(*` needs its own `*)`) and `{` with `}`".to_string(),
             ),
