@@ -775,3 +775,41 @@ fn a_body_of_one_expression_with_a_semicolon_is_st() {
     assert_eq!(errors.len(), 1, "{e}");
     assert!(errors[0].starts_with("exp.st:1:15: error[E0106]"), "{e}");
 }
+
+/// A Beremiz project (`BystrickyK/RPA_semestralka`, `Moore/plc.xml`) begins the ST bodies of its
+/// POUs with `VAR ... END_VAR` blocks (lookup tables with initial values): Beremiz copies a body
+/// after the POU's declarations, so matiec reads such blocks as the POU's own. Before, each block
+/// was read as statements: 8 errors for that file (`expected := after VAR`). Now they are declared
+/// (spans in the XML file), and what follows is the body. (That project still has one genuine
+/// error: a `,` before the `]` of an initializer.)
+#[test]
+fn var_blocks_at_the_start_of_an_xml_st_body_are_declarations() {
+    let body = "<![CDATA[VAR\n  table : ARRAY[0..2] OF INT := [10, 20, (* thirty *) 30];\n  k : INT;\nEND_VAR\n\
+                (* between *)\nVAR_TEMP t : INT; END_VAR\n\
+                t := table[k];\nn := n + t;\nk := (k + 1) MOD 3;]]>";
+    let xml = format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+         <fileHeader companyName=\"t\" productName=\"t\" productVersion=\"1\" creationDateTime=\"2026-01-01T00:00:00\"/>\
+         <contentHeader name=\"t\"><coordinateInfo><fbd><scaling x=\"0\" y=\"0\"/></fbd><ld><scaling x=\"0\" y=\"0\"/></ld>\
+         <sfc><scaling x=\"0\" y=\"0\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+         <pou name=\"main\" pouType=\"program\"><interface><localVars>\
+         <variable name=\"n\"><type><INT/></type></variable></localVars></interface><body><ST>\
+         <xhtml:p xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">{body}</xhtml:p>\
+         </ST></body></pou></pous></types><instances><configurations/></instances></project>\n"
+    );
+    let (trace, stderr) = run("decls.xml", &xml, "4", "main.n,main.k");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.n,main.k\n0,0,10,1\n1,10,30,2\n2,20,60,0\n3,30,70,1\n"
+    );
+    // an error in such a block is located in the XML file, once
+    let e = rejected("bad.xml", &xml.replace("k : INT;", "k : INT"));
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0]
+            .starts_with("bad.xml:5:1: error[E0011]: expected `;` before `END_VAR` [POU `main`]"),
+        "{e}"
+    );
+}

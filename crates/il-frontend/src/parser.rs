@@ -700,7 +700,7 @@ impl<'s> Ctx<'s> {
             .chars()
             .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
             .collect();
-        let name = Ident::new(&format!("AT{name}"), location.span);
+        let name = Ident::new(format!("AT{name}"), location.span);
         vec![VarDecl {
             name,
             location: Some(location),
