@@ -813,3 +813,32 @@ fn var_blocks_at_the_start_of_an_xml_st_body_are_declarations() {
         "{e}"
     );
 }
+
+/// An OpenPLC Editor (v4) build (`vladipirogov/Relay-Control-via-Modbus`,
+/// `build/Raspberry_Pico_W/src/program.st`) calls each block of its diagram as
+/// `CAN_INTERFACE0(EN := TRUE, ...); IF CAN_INTERFACE0.ENO THEN ... END_IF;` with user function
+/// blocks. Before, `inst.ENO` of a user FB was E1011 ("has no input or output ENO") and
+/// `ENO =>` of its call was not supported. Now a user FB instance keeps its ENO: TRUE when its
+/// body ran (unless the body set ENO := FALSE), FALSE when EN was FALSE; the same trace as matiec
+/// (fixture `matiec_diff/user_fb_eno.st`).
+#[test]
+fn the_eno_of_a_user_function_block_instance_is_read() {
+    let src = "FUNCTION_BLOCK Cnt\nVAR_INPUT inc : INT; END_VAR\nVAR_OUTPUT n : INT; END_VAR\n  \
+               n := n + inc;\n  IF n > 5 THEN ENO := FALSE; END_IF;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR c : Cnt; d : Cnt; ok : BOOL; seen : INT; gate : BOOL; k : INT; ok2 : BOOL; END_VAR\n  \
+               k := k + 1;\n  gate := k <> 2;\n  c(EN := gate, inc := 2);\n  \
+               IF c.ENO THEN seen := c.n; END_IF;\n  d(inc := 3, ENO => ok2);\n  ok := c.ENO;\nEND_PROGRAM\n";
+    let (trace, stderr) = run(
+        "eno.st",
+        src,
+        "5",
+        "main.k,main.c.n,main.seen,main.ok,main.d.n,main.ok2",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    // k = 2: c does not run (ENO FALSE); k = 4: c.n = 6 > 5, its body clears ENO; d from n = 6
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.k,main.c.n,main.seen,main.ok,main.d.n,main.ok2\n\
+         0,0,1,2,2,1,3,1\n1,10,2,2,2,0,6,0\n2,20,3,4,4,1,9,0\n3,30,4,6,4,0,12,0\n4,40,5,8,4,0,15,0\n"
+    );
+}

@@ -378,6 +378,11 @@ impl<'a> Gen<'a> {
                     for m in edges::hidden_members(p) {
                         let _ = writeln!(h, "    {m}");
                     }
+                    if p.kind == PouKind::FunctionBlock && model.fb_eno_read {
+                        // the ENO of the instance's last call, as its body left it
+                        h.push_str("    IEC_BOOL ENO;\n");
+                        any = true;
+                    }
                     if !any {
                         h.push_str("    char unused_;\n");
                     }
