@@ -15,6 +15,13 @@
 //! enumerated values typed by their context, CODESYS/TwinCAT application exports, one diagnostic per
 //! missing library type, several SFC networks in one body, stray LD contacts, non-BOOL variables at
 //! bit addresses, and unclosed comments. Each is a minimal reproduction written here.
+//!
+//! A third acceptance run (2026-12-02, branch `corpus`: 29 more repositories, OpenPLC Editor and
+//! Beremiz projects of students and hobbyists, OpenPLC Editor v4 builds, RuSTy's examples,
+//! IronPLC's parser tests) added the tests from `a_blank_after_the_duration_prefix...` on: `T# 30ms`,
+//! `/* */` comments, located variables without a name and the initial values of located program
+//! variables, a body of one expression, `VAR` blocks at the start of an XML ST body, and the ENO of
+//! user function block instances.
 
 mod common;
 use common::ladderc;
