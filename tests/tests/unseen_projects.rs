@@ -849,3 +849,27 @@ fn the_eno_of_a_user_function_block_instance_is_read() {
          0,0,1,2,2,1,3,1\n1,10,2,2,2,0,6,0\n2,20,3,4,4,1,9,0\n3,30,4,6,4,0,12,0\n4,40,5,8,4,0,15,0\n"
     );
 }
+
+/// IronPLC's grammar fixture `structured-text.st` returns a value: `RETURN TRUE;` (not IEC 61131-3:
+/// RETURN takes none; the result is assigned to the function's name). Before, each such line gave
+/// two errors: the missing `;` and "expected a statement, found TRUE"; now the rest of the statement
+/// is skipped with the first one.
+#[test]
+fn a_value_after_return_is_one_error() {
+    let e = rejected(
+        "ret.st",
+        "FUNCTION f : BOOL\nVAR_INPUT x : INT; END_VAR\n  IF x > 0 THEN\n    RETURN TRUE;\n  ELSE\n    \
+         RETURN FALSE;\n  END_IF;\nEND_FUNCTION\n",
+    );
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(
+        errors,
+        [
+            "ret.st:4:11: error[E0104]: missing `;` after the statement (found `TRUE`) (hint: every ST \
+             statement ends with `;` (also `END_IF;`, `END_FOR;` ...))",
+            "ret.st:6:11: error[E0104]: missing `;` after the statement (found `FALSE`) (hint: every ST \
+             statement ends with `;` (also `END_IF;`, `END_FOR;` ...))"
+        ],
+        "{e}"
+    );
+}

@@ -427,6 +427,13 @@ impl<'s, 'd> Parser<'s, 'd> {
                 format!("missing `;` after the statement (found {found})"),
                 "every ST statement ends with `;` (also `END_IF;`, `END_FOR;` ...)",
             );
+            // what follows is no statement (`RETURN TRUE;`): skipped with this one error
+            if !ends_list(self.peek())
+                && !starts_statement(self.peek())
+                && !matches!(self.peek(), Tok::Ident | Tok::Address(..))
+            {
+                self.sync();
+            }
         }
         Some(Stmt {
             kind,
