@@ -120,7 +120,7 @@ fn ld_timer_box_with_en_and_eno_pins() {
 }
 
 #[test]
-fn user_fb_with_en_is_skipped_and_its_eno_output_is_a_located_error() {
+fn user_fb_with_en_is_skipped_and_its_eno_is_kept() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("u.st");
     let src =
@@ -132,17 +132,17 @@ fn user_fb_with_en_is_skipped_and_its_eno_output_is_a_located_error() {
         run(&file, "6", "main.en_in,main.n"),
         "cycle,time_ms,main.en_in,main.n\n0,0,1,1\n1,10,1,2\n2,20,0,2\n3,30,0,2\n4,40,1,3\n5,50,1,4\n"
     );
-    // the ENO a user FB's body sets is not kept yet: refused, located, instead of a wrong value
-    std::fs::write(&file, src.replace("n => n);", "n => n, ENO => en_in);")).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(&file)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert!(
-        stderr.contains("u.st:11:3: error[E2005]: the C backend does not support `ENO =>` of a user function block instance"),
-        "{stderr}"
+    // the instance keeps its ENO (issue #13, acceptance run 3): `ENO => ok` is TRUE when the body
+    // ran, FALSE when EN was FALSE
+    std::fs::write(
+        &file,
+        src.replace("n => n);", "n => n, ENO => ok);")
+            .replace("  n : INT;\n", "  n : INT;\n  ok : BOOL;\n"),
+    )
+    .unwrap();
+    assert_eq!(
+        run(&file, "6", "main.en_in,main.n,main.ok"),
+        "cycle,time_ms,main.en_in,main.n,main.ok\n0,0,1,1,1\n1,10,1,2,1\n2,20,0,2,0\n3,30,0,2,0\n\
+         4,40,1,3,1\n5,50,1,4,1\n"
     );
 }

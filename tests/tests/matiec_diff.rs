@@ -339,6 +339,8 @@ fn matiec() -> Option<Matiec> {
 struct MVar {
     path: String,
     ty: String,
+    /// located (`AT %QX0.0`, class IN/OUT/MEM): matiec's variable holds a pointer to its storage
+    located: bool,
 }
 
 /// The variables worth printing (elementary ones, of program instances) and the tick time in ns.
@@ -375,6 +377,7 @@ fn parse_variables_csv(text: &str) -> (Vec<(String, String)>, Vec<MVar>, u64) {
                     vars.push(MVar {
                         path: f[2].to_string(),
                         ty,
+                        located: f[1] != "VAR",
                     });
                 }
             }
@@ -450,7 +453,11 @@ fn matiec_main(programs: &[(String, String)], vars: &[MVar]) -> String {
          config_run__(k);\n        printf(\"%lu,%lld\", k, t);\n",
     );
     for v in vars {
-        let lv = format!("{}.value", c_path(&v.path));
+        let lv = if v.located {
+            format!("(*{}.value)", c_path(&v.path))
+        } else {
+            format!("{}.value", c_path(&v.path))
+        };
         let stmt = match v.ty.as_str() {
             "BOOL" => format!("printf(\",%d\", {lv} ? 1 : 0);"),
             "SINT" | "INT" | "DINT" | "LINT" => format!("printf(\",%lld\", (long long){lv});"),

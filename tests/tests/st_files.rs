@@ -223,6 +223,10 @@ fn corpus_libraries_check() {
         "first_steps_data_type_decl.st",
         "var_temp.st",
         "array_of_string.st",
+        "c_style_block_comment.st",
+        "sized_string_contexts.st",
+        "time_function_decl.st",
+        "Tc2_System.st",
     ] {
         let p = st_corpus(f);
         let o = cmd(

@@ -15,6 +15,13 @@
 //! enumerated values typed by their context, CODESYS/TwinCAT application exports, one diagnostic per
 //! missing library type, several SFC networks in one body, stray LD contacts, non-BOOL variables at
 //! bit addresses, and unclosed comments. Each is a minimal reproduction written here.
+//!
+//! A third acceptance run (2026-12-02, branch `corpus`: 29 more repositories, OpenPLC Editor and
+//! Beremiz projects of students and hobbyists, OpenPLC Editor v4 builds, RuSTy's examples,
+//! IronPLC's parser tests) added the tests from `a_blank_after_the_duration_prefix...` on: `T# 30ms`,
+//! `/* */` comments, located variables without a name and the initial values of located program
+//! variables, a body of one expression, `VAR` blocks at the start of an XML ST body, and the ENO of
+//! user function block instances.
 
 mod common;
 use common::ladderc;
@@ -687,6 +694,183 @@ fn an_extends_clause_is_one_error() {
         ["extends.st:5:25: error[E0303]: `FB_Child` has an EXTENDS clause: object-oriented extensions \
           (IEC 61131-3 ed. 3, CODESYS) are not supported (hint: write the method as a FUNCTION (or an \
           action as part of the body); the body of this POU is not compiled)"],
+        "{e}"
+    );
+}
+
+/// An OpenPLC Editor project (`Gloworm72/Ride-Engineering-Competition-2025`, `build/plc.st`, and
+/// its `plc.xml`) writes `TON0(IN := ..., PT := T# 30000ms);`: a blank after `T#`, which matiec
+/// accepts (it reads `T#` as a token of its own). Before, the literal was "a duration without
+/// value" and the number after it a second error; now the blanks are skipped, on one line only.
+#[test]
+fn a_blank_after_the_duration_prefix_is_read_as_matiec_reads_it() {
+    let src = "PROGRAM main\nVAR\n  t : TON;\n  q : BOOL;\n  d : TIME := TIME#  1s;\nEND_VAR\n  \
+               t(IN := TRUE, PT := T# 30ms);\n  q := t.Q;\nEND_PROGRAM\n";
+    let (trace, stderr) = run("blank.st", src, "5", "main.q,main.d");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.q,main.d\n0,0,0,T#1000ms\n1,10,0,T#1000ms\n2,20,0,T#1000ms\n\
+         3,30,1,T#1000ms\n4,40,1,T#1000ms\n"
+    );
+    // a line end after `T#` is still a literal without value: one error
+    let e = rejected("line.st", &src.replace("T# 30ms", "T#\n30ms"));
+    assert_eq!(e.matches(": error[").count(), 2, "{e}");
+    assert!(e.contains("line.st:7:23: error[E0103]"), "{e}");
+}
+
+/// IronPLC's parser test `c_style_block_comment.st`: `/* ... */` comments, which IEC 61131-3
+/// edition 3 has beside `(* ... *)` (Table 3, features 2b and 3b: they nest too). Before, the `/`
+/// was an unexpected operator; now the comment is skipped, in ST and in IL bodies, and an unclosed
+/// one is one located error.
+#[test]
+fn c_style_block_comments_are_comments() {
+    let src = "FUNCTION MY_FUNC : INT\nVAR_INPUT\n    x : INT;\nEND_VAR\n    \
+               /* This is a C-style block comment */\n    MY_FUNC := x /* over\n two lines /* nested */ */ * 2;\n\
+               END_FUNCTION\n\
+               FUNCTION_BLOCK Acc\nVAR_OUTPUT n : INT; END_VAR\n  LD n /* an IL body */\n  ADD 1\n  ST n\n\
+               END_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR r : INT; a : Acc; END_VAR\n  r := MY_FUNC(x := 21);\n  a();\nEND_PROGRAM\n";
+    let (trace, stderr) = run("cstyle.st", src, "2", "main.r,main.a.n");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.r,main.a.n\n0,0,42,1\n1,10,42,2\n"
+    );
+    let e = rejected("open.st", &src.replace("comment */", "comment"));
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0].starts_with(
+            "open.st:5:5: error[E0002]: comment is not closed (hint: close it with `*/`)"
+        ),
+        "{e}"
+    );
+}
+
+/// IronPLC's parser test `var_decl.st` declares `AT %IX1.1 : BOOL;` and `AT %QW1 : WORD := 16#FF00;`:
+/// located variables without a name, which IEC 61131-3 allows (`located_var_decl ::=
+/// [variable_name] location ':' ...`; the program reaches them by their address). Before, `AT`
+/// was E1031 "reserved: it cannot name a variable". Now such a variable is declared under the name
+/// `AT_` + its address (`AT_QW2`). The fix also found that no located variable of a program got its
+/// initial value (`q AT %QW2 : WORD := 7` started at 0): it is now written to the process image at
+/// start, as it already was for located globals.
+#[test]
+fn located_variables_without_a_name_and_their_initial_values() {
+    let src = "PROGRAM main\nVAR\n  AT %QW2 : WORD := 7;\n  AT %IX1.1 : BOOL := TRUE;\n  \
+               m AT %MW3 : INT := 9;\n  y : INT;\n  x : BOOL;\n  z : INT;\nEND_VAR\n  \
+               y := WORD_TO_INT(%QW2) + 1;\n  x := %IX1.1;\n  z := m + INT#1;\n  m := z;\nEND_PROGRAM\n";
+    let (trace, stderr) = run("anon.st", src, "2", "main.y,main.x,main.m,main.AT_QW2,%QW2");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.y,main.x,main.m,main.AT_QW2,%QW2\n0,0,8,1,10,7,7\n1,10,8,1,11,7,7\n"
+    );
+}
+
+/// RuSTy's example `program_with_references.st` is `PROGRAM exp a AND NOT b OR c XOR d; END_PROGRAM`:
+/// an expression where a statement belongs (invalid). Before, the body (no assignment, no IL
+/// operator at a line start) was read as IL: three errors, among them "`;` comments are not IEC"
+/// and "missing END_PROGRAM" on a file that has it. A body with `;` and no IL instruction is ST
+/// now: one error, at the expression.
+#[test]
+fn a_body_of_one_expression_with_a_semicolon_is_st() {
+    let e = rejected(
+        "exp.st",
+        "PROGRAM exp a AND NOT b OR c XOR d; END_PROGRAM\n",
+    );
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(errors[0].starts_with("exp.st:1:15: error[E0106]"), "{e}");
+}
+
+/// A Beremiz project (`BystrickyK/RPA_semestralka`, `Moore/plc.xml`) begins the ST bodies of its
+/// POUs with `VAR ... END_VAR` blocks (lookup tables with initial values): Beremiz copies a body
+/// after the POU's declarations, so matiec reads such blocks as the POU's own. Before, each block
+/// was read as statements: 8 errors for that file (`expected := after VAR`). Now they are declared
+/// (spans in the XML file), and what follows is the body. (That project still has one genuine
+/// error: a `,` before the `]` of an initializer.)
+#[test]
+fn var_blocks_at_the_start_of_an_xml_st_body_are_declarations() {
+    let body = "<![CDATA[VAR\n  table : ARRAY[0..2] OF INT := [10, 20, (* thirty *) 30];\n  k : INT;\nEND_VAR\n\
+                (* between *)\nVAR_TEMP t : INT; END_VAR\n\
+                t := table[k];\nn := n + t;\nk := (k + 1) MOD 3;]]>";
+    let xml = format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+         <fileHeader companyName=\"t\" productName=\"t\" productVersion=\"1\" creationDateTime=\"2026-01-01T00:00:00\"/>\
+         <contentHeader name=\"t\"><coordinateInfo><fbd><scaling x=\"0\" y=\"0\"/></fbd><ld><scaling x=\"0\" y=\"0\"/></ld>\
+         <sfc><scaling x=\"0\" y=\"0\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+         <pou name=\"main\" pouType=\"program\"><interface><localVars>\
+         <variable name=\"n\"><type><INT/></type></variable></localVars></interface><body><ST>\
+         <xhtml:p xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">{body}</xhtml:p>\
+         </ST></body></pou></pous></types><instances><configurations/></instances></project>\n"
+    );
+    let (trace, stderr) = run("decls.xml", &xml, "4", "main.n,main.k");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.n,main.k\n0,0,10,1\n1,10,30,2\n2,20,60,0\n3,30,70,1\n"
+    );
+    // an error in such a block is located in the XML file, once
+    let e = rejected("bad.xml", &xml.replace("k : INT;", "k : INT"));
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(errors.len(), 1, "{e}");
+    assert!(
+        errors[0]
+            .starts_with("bad.xml:5:1: error[E0011]: expected `;` before `END_VAR` [POU `main`]"),
+        "{e}"
+    );
+}
+
+/// An OpenPLC Editor (v4) build (`vladipirogov/Relay-Control-via-Modbus`,
+/// `build/Raspberry_Pico_W/src/program.st`) calls each block of its diagram as
+/// `CAN_INTERFACE0(EN := TRUE, ...); IF CAN_INTERFACE0.ENO THEN ... END_IF;` with user function
+/// blocks. Before, `inst.ENO` of a user FB was E1011 ("has no input or output ENO") and
+/// `ENO =>` of its call was not supported. Now a user FB instance keeps its ENO: TRUE when its
+/// body ran (unless the body set ENO := FALSE), FALSE when EN was FALSE; the same trace as matiec
+/// (fixture `matiec_diff/user_fb_eno.st`).
+#[test]
+fn the_eno_of_a_user_function_block_instance_is_read() {
+    let src = "FUNCTION_BLOCK Cnt\nVAR_INPUT inc : INT; END_VAR\nVAR_OUTPUT n : INT; END_VAR\n  \
+               n := n + inc;\n  IF n > 5 THEN ENO := FALSE; END_IF;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR c : Cnt; d : Cnt; ok : BOOL; seen : INT; gate : BOOL; k : INT; ok2 : BOOL; END_VAR\n  \
+               k := k + 1;\n  gate := k <> 2;\n  c(EN := gate, inc := 2);\n  \
+               IF c.ENO THEN seen := c.n; END_IF;\n  d(inc := 3, ENO => ok2);\n  ok := c.ENO;\nEND_PROGRAM\n";
+    let (trace, stderr) = run(
+        "eno.st",
+        src,
+        "5",
+        "main.k,main.c.n,main.seen,main.ok,main.d.n,main.ok2",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    // k = 2: c does not run (ENO FALSE); k = 4: c.n = 6 > 5, its body clears ENO; d from n = 6
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.k,main.c.n,main.seen,main.ok,main.d.n,main.ok2\n\
+         0,0,1,2,2,1,3,1\n1,10,2,2,2,0,6,0\n2,20,3,4,4,1,9,0\n3,30,4,6,4,0,12,0\n4,40,5,8,4,0,15,0\n"
+    );
+}
+
+/// IronPLC's grammar fixture `structured-text.st` returns a value: `RETURN TRUE;` (not IEC 61131-3:
+/// RETURN takes none; the result is assigned to the function's name). Before, each such line gave
+/// two errors: the missing `;` and "expected a statement, found TRUE"; now the rest of the statement
+/// is skipped with the first one.
+#[test]
+fn a_value_after_return_is_one_error() {
+    let e = rejected(
+        "ret.st",
+        "FUNCTION f : BOOL\nVAR_INPUT x : INT; END_VAR\n  IF x > 0 THEN\n    RETURN TRUE;\n  ELSE\n    \
+         RETURN FALSE;\n  END_IF;\nEND_FUNCTION\n",
+    );
+    let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
+    assert_eq!(
+        errors,
+        [
+            "ret.st:4:11: error[E0104]: missing `;` after the statement (found `TRUE`) (hint: every ST \
+             statement ends with `;` (also `END_IF;`, `END_FOR;` ...))",
+            "ret.st:6:11: error[E0104]: missing `;` after the statement (found `FALSE`) (hint: every ST \
+             statement ends with `;` (also `END_IF;`, `END_FOR;` ...))"
+        ],
         "{e}"
     );
 }

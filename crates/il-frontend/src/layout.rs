@@ -407,7 +407,11 @@ impl<'s> Layout<'s> {
                 Diagnostic::error(code::E0002, "comment is not closed")
                     .at(self.span(s, s + 2))
                     .with_primary_label("this comment runs to the end of the file")
-                    .with_hint("close it with `*)`")
+                    .with_hint(if self.src[s..].starts_with("/*") {
+                        "close it with `*/`"
+                    } else {
+                        "close it with `*)`"
+                    })
             }
             LexError::UnterminatedString => {
                 Diagnostic::error(code::E0003, "string is not closed on its line")

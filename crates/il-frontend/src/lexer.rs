@@ -54,6 +54,7 @@ pub enum RawToken {
     Newline,
     /// A `(* *)` comment; `true` when it spans lines: then it ends the line like a newline does.
     #[token("(*", block_comment)]
+    #[token("/*", slash_block_comment)]
     Comment(bool),
     /// `// ...` to the end of the line (skipped; an extension most tools accept).
     #[regex(r"//[^\r\n]*", logos::skip, allow_greedy = true)]
@@ -132,6 +133,17 @@ fn block_comment(lex: &mut logos::Lexer<RawToken>) -> FilterResult<bool, LexErro
     }
 }
 
+/// Skips a possibly nested `/* ... */` comment (IEC 61131-3 ed. 3); reports whether it spanned a
+/// line break.
+fn slash_block_comment(lex: &mut logos::Lexer<RawToken>) -> FilterResult<bool, LexError> {
+    let (n, end) = slash_comment_rest(lex.remainder());
+    lex.bump(n);
+    match end {
+        CommentEnd::Closed { newline } => FilterResult::Emit(newline),
+        CommentEnd::Unterminated => FilterResult::Error(LexError::UnterminatedComment),
+    }
+}
+
 /// Scans a string body after its opening quote, decoding `$` escapes (invalid ones go to `extras`).
 fn string(lex: &mut logos::Lexer<RawToken>, wide: bool) -> Result<(bool, String), LexError> {
     let body_start = lex.span().end;
@@ -176,17 +188,27 @@ pub(crate) fn comment_rest(rest: &str) -> (usize, CommentEnd) {
             return (text.len(), CommentEnd::Closed { newline: false });
         }
     }
-    let rest = rest.as_bytes();
+    nested_comment(rest.as_bytes(), b'(', b')')
+}
+
+/// The rest of a possibly nested `/* ... */` comment after its opening (IEC 61131-3 ed. 3, Table 3,
+/// features 2b and 3b): bytes it takes, how it ended.
+pub(crate) fn slash_comment_rest(rest: &str) -> (usize, CommentEnd) {
+    nested_comment(rest.as_bytes(), b'/', b'/')
+}
+
+/// A nested comment opened by `open *` and closed by `* close`, after its opening.
+fn nested_comment(rest: &[u8], open: u8, close: u8) -> (usize, CommentEnd) {
     let mut depth = 1usize;
     let mut i = 0;
     let mut newline = false;
     while i < rest.len() {
         match (rest[i], rest.get(i + 1)) {
-            (b'(', Some(b'*')) => {
+            (c, Some(b'*')) if c == open => {
                 depth += 1;
                 i += 2;
             }
-            (b'*', Some(b')')) => {
+            (b'*', Some(&c)) if c == close => {
                 depth -= 1;
                 i += 2;
                 if depth == 0 {
@@ -285,13 +307,6 @@ pub(crate) fn prefixed_rest(
     rest: &str,
 ) -> (usize, Result<Option<TimeValue>, LexError>) {
     let prefix = prefix.trim_end_matches('#').to_ascii_uppercase();
-    #[derive(Clone, Copy)]
-    enum Fam {
-        Dur,
-        Date,
-        Tod,
-        Dt,
-    }
     let (fam, long) = match prefix.as_str() {
         "T" | "TIME" => (Fam::Dur, false),
         "LT" | "LTIME" => (Fam::Dur, true),
@@ -303,6 +318,28 @@ pub(crate) fn prefixed_rest(
         "LDT" | "LDATE_AND_TIME" => (Fam::Dt, true),
         _ => return (0, Ok(None)),
     };
+    // `T# 30000ms`: blanks between `#` and the value (matiec reads `T#` as a token of its own, and
+    // OpenPLC Editor projects carry such literals): skipped when a value follows on the same line
+    let blanks = rest.len() - rest.trim_start_matches([' ', '\t']).len();
+    let skip = match rest.as_bytes().get(blanks) {
+        Some(c) if blanks > 0 && (c.is_ascii_digit() || matches!(c, b'+' | b'-')) => blanks,
+        _ => 0,
+    };
+    let (n, value) = prefixed_body(fam, long, &rest[skip..]);
+    (skip + n, value)
+}
+
+/// The date/time family of a `PREFIX#` literal.
+#[derive(Clone, Copy)]
+enum Fam {
+    Dur,
+    Date,
+    Tod,
+    Dt,
+}
+
+/// The body of a date/time literal at the start of `rest`: its length and value.
+fn prefixed_body(fam: Fam, long: bool, rest: &str) -> (usize, Result<Option<TimeValue>, LexError>) {
     let bytes = rest.as_bytes();
     let allowed = |i: usize, c: u8| match fam {
         Fam::Dur => {
@@ -898,6 +935,12 @@ mod tests {
             lex("t#-5s"),
             vec![Ok(Prefixed(Some(TimeValue::Duration(-5 * s, false))))]
         );
+        // blanks after `#` (matiec, OpenPLC Editor projects), not a line end
+        assert_eq!(
+            lex("T# 30ms"),
+            vec![Ok(Prefixed(Some(TimeValue::Duration(30_000_000, false))))]
+        );
+        assert!(matches!(lex("T#\n30ms")[0], Err(LexError::BadLiteral(_))));
         assert_eq!(
             lex("LTIME#1ns"),
             vec![Ok(Prefixed(Some(TimeValue::Duration(1, true))))]

@@ -89,6 +89,33 @@ pub fn implicit_program_name(stem: &str) -> String {
     name
 }
 
+/// Parses the `VAR ... END_VAR` blocks `src` holds (nothing else), with spans as if `src` started at
+/// byte `base` of the file: Beremiz lets the ST body of a PLCopen XML POU begin with declaration
+/// blocks, and matiec reads them as the POU's own.
+pub fn parse_var_blocks(
+    file: FileId,
+    src: &str,
+    base: usize,
+    diags: &mut Diagnostics,
+) -> Vec<ast::VarBlock> {
+    const HEAD: &str = "PROGRAM _\n";
+    let Some(start) = base.checked_sub(HEAD.len()) else {
+        return Vec::new();
+    };
+    let text = format!("{HEAD}{src}\nEND_PROGRAM\n");
+    match parser::run(file, &text, start, Tok::UnitStart, diags) {
+        Some(Parsed::Unit(top)) => top
+            .items
+            .into_iter()
+            .flat_map(|item| match item {
+                LibraryElement::Pou(p) => p.var_blocks,
+                _ => Vec::new(),
+            })
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
 /// Parses an instruction list alone (e.g. the text of a PLCopen XML `<IL>` element). `base_offset` is the
 /// byte offset of `src` in the file `file`, so that spans point into that file.
 pub fn parse_body(

@@ -683,6 +683,34 @@ impl<'s> Ctx<'s> {
             .collect()
     }
 
+    /// `AT %IX1.1 : BOOL := TRUE;`: a located variable without a name, which IEC 61131-3 allows
+    /// (the program reaches it through its address). It gets the name `AT_` and the address's
+    /// letters and numbers (`AT_IX1_1`), so that it is declared, initialised and traced like any other.
+    pub fn anonymous_located(
+        &mut self,
+        location: DirectAddress,
+        ty: TypeRef,
+        init: Option<Initializer>,
+        l: usize,
+        r: usize,
+    ) -> Vec<VarDecl> {
+        let (s, e) = self.local(location.span);
+        let name: String = self
+            .text(s, e)
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+            .collect();
+        let name = Ident::new(format!("AT{name}"), location.span);
+        vec![VarDecl {
+            name,
+            location: Some(location),
+            ty,
+            init,
+            edge: None,
+            span: self.span(l, r),
+        }]
+    }
+
     /// Converts `v` to the integer type the tree stores (a string length, a repeat count, a priority); out
     /// of range is error E0005 and gives `T::default()`.
     pub fn int_in<T>(&mut self, v: i128, what: &str, l: usize, r: usize) -> T

@@ -166,6 +166,10 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     }
     let used = used_pous(&headers, &configs);
     for (el, mut pou) in headers {
+        if let Some(st) = el.child("body").and_then(|b| b.child("ST")) {
+            let blocks = crate::st_body::body_declarations(ctx, st, &pou.name.name);
+            pou.var_blocks.extend(blocks);
+        }
         let is_used = used.as_ref().is_none_or(|u| u.contains(&pou.name.key()));
         let Some((stmts, hidden)) = body::lower_pou_body(ctx, &index, el, &pou, is_used) else {
             continue;

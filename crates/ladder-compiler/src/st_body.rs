@@ -58,6 +58,15 @@ pub fn lower(
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
     let mut t = crate::il_body::embedded_text(e);
     join_split_operators(&mut t.text, t.base, ctx.xml);
+    // the declaration blocks the body begins with are the POU's (read by `body_declarations`)
+    let n = leading_var_blocks(&t.text);
+    if n > 0 {
+        let blank: String = t.text[..n]
+            .chars()
+            .map(|c| if matches!(c, '\n' | '\r') { c } else { ' ' })
+            .collect();
+        t.text.replace_range(..n, &blank);
+    }
     let decls = declarations(index);
     let mut local = Diagnostics::new();
     let span = ctx.tag(e);
@@ -96,6 +105,108 @@ pub fn lower(
         ctx.report(d);
     }
     (body, temps)
+}
+
+/// The `VAR ... END_VAR` blocks an ST body begins with (Beremiz and OpenPLC Editor accept them:
+/// they copy the body after the POU's declarations, and matiec reads the blocks as the POU's own),
+/// parsed with their spans in the XML file; diagnostics go to `ctx`.
+pub fn body_declarations(ctx: &mut Ctx, e: &Element, pou: &str) -> Vec<VarBlock> {
+    let t = crate::il_body::embedded_text(e);
+    let n = leading_var_blocks(&t.text);
+    if n == 0 {
+        return Vec::new();
+    }
+    let mut local = Diagnostics::new();
+    let blocks = il_frontend::parse_var_blocks(ctx.file, &t.text[..n], t.base, &mut local);
+    for d in local {
+        ctx.report(d.with_xml(XmlContext {
+            pou: Some(pou.to_string()),
+            ..Default::default()
+        }));
+    }
+    blocks
+}
+
+/// The length of the declaration blocks (`VAR`, `VAR_TEMP`, ... up to their `END_VAR`, comments
+/// between them) at the start of `text`, or 0 when it does not begin with one.
+pub fn leading_var_blocks(text: &str) -> usize {
+    let b = text.as_bytes();
+    let mut i = 0;
+    let mut end = 0;
+    // skips blanks and (nested) comments from `i`
+    let skip = |i: usize| -> usize {
+        let mut i = i.min(b.len());
+        loop {
+            while i < b.len() && b[i].is_ascii_whitespace() {
+                i += 1;
+            }
+            if b[i..].starts_with(b"(*") {
+                let mut depth = 0usize;
+                while i < b.len() {
+                    if b[i..].starts_with(b"(*") {
+                        depth += 1;
+                        i += 2;
+                    } else if b[i..].starts_with(b"*)") {
+                        depth -= 1;
+                        i += 2;
+                        if depth == 0 {
+                            break;
+                        }
+                    } else {
+                        i += 1;
+                    }
+                }
+            } else if b[i..].starts_with(b"//") {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+            } else {
+                return i;
+            }
+        }
+    };
+    let word = |i: usize| -> &str {
+        let i = i.min(b.len());
+        let n = b[i..]
+            .iter()
+            .take_while(|c| c.is_ascii_alphanumeric() || **c == b'_')
+            .count();
+        &text[i..i + n]
+    };
+    loop {
+        i = skip(i);
+        let w = word(i).to_ascii_uppercase();
+        if !matches!(
+            w.as_str(),
+            "VAR" | "VAR_TEMP" | "VAR_INPUT" | "VAR_OUTPUT" | "VAR_IN_OUT" | "VAR_EXTERNAL"
+        ) {
+            return end;
+        }
+        // up to the END_VAR word (outside comments and strings)
+        i += w.len();
+        loop {
+            i = skip(i);
+            if i >= b.len() {
+                return end;
+            }
+            if b[i] == b'\'' || b[i] == b'"' {
+                let q = b[i];
+                i += 1;
+                while i < b.len() && b[i] != q {
+                    i += 1;
+                }
+                i += 1;
+                continue;
+            }
+            let w = word(i);
+            if w.eq_ignore_ascii_case("END_VAR") {
+                i += w.len();
+                end = i;
+                break;
+            }
+            i += w.len().max(1);
+        }
+    }
 }
 
 /// Joins operators that XML entities split: `&lt;=` is rebuilt as `<` plus padding, which would read

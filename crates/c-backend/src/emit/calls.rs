@@ -99,7 +99,8 @@ impl Gen<'_> {
         // is FALSE; ladderc skips the whole call, inputs and `=>` copies included, as a ladder
         // rung's CALC does)
         let (en, eno_target) = self.en_eno(b, args);
-        if eno_target.is_some() && matches!(fb, FbType::User(_)) {
+        let user_eno = matches!(fb, FbType::User(_)) && self.model.fb_eno_read;
+        if eno_target.is_some() && matches!(fb, FbType::User(_)) && !user_eno {
             self.unsupported(
                 instance.span,
                 "`ENO =>` of a user function block instance (its body's ENO is not kept)",
@@ -155,6 +156,10 @@ impl Gen<'_> {
             let stmt = self.store(&place, &v);
             b.line(&stmt);
         }
+        if user_eno {
+            // TRUE unless the body sets it FALSE (IEC 61131-3: ENO of a block that ran)
+            b.line(&format!("{lv}.ENO = 1;"));
+        }
         b.line(&invoke(self, &lv, fb));
         self.store_outputs(b, &lv, fb, &outputs, args);
         if en.is_some() {
@@ -165,8 +170,13 @@ impl Gen<'_> {
         if stores_eno {
             b.line(&format!("{lv}.ENO = {eno};"));
         }
+        let user_eno_value = format!("{lv}.ENO");
+        if user_eno && en.is_some() {
+            // not called: ENO is FALSE
+            b.line(&format!("if (!ladderc_en) {lv}.ENO = 0;"));
+        }
         if let Some(p) = eno_target {
-            let stmt = self.store(&p, eno);
+            let stmt = self.store(&p, if user_eno { &user_eno_value } else { eno });
             b.line(&stmt);
         }
         b.indent -= 1;
@@ -292,6 +302,9 @@ impl Gen<'_> {
         let v = convert(&cr, &before, &pty);
         let stmt = self.store(&Place::Mem { lv: field, ty: pty }, &v);
         b.line(&stmt);
+        if matches!(fb, FbType::User(_)) && self.model.fb_eno_read {
+            b.line(&format!("{lv}.ENO = 1;"));
+        }
         b.line(&invoke(self, &lv, fb));
         if matches!(fb, FbType::Standard(_)) && self.model.fb_eno_read {
             b.line(&format!("{lv}.ENO = 1;"));

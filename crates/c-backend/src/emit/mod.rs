@@ -378,6 +378,11 @@ impl<'a> Gen<'a> {
                     for m in edges::hidden_members(p) {
                         let _ = writeln!(h, "    {m}");
                     }
+                    if p.kind == PouKind::FunctionBlock && model.fb_eno_read {
+                        // the ENO of the instance's last call, as its body left it
+                        h.push_str("    IEC_BOOL ENO;\n");
+                        any = true;
+                    }
                     if !any {
                         h.push_str("    char unused_;\n");
                     }
@@ -598,9 +603,12 @@ impl<'a> Gen<'a> {
         let _ = writeln!(c, "void {sname}_INIT({sname} *self) {{");
         c.push_str("    memset(self, 0, sizeof *self);\n");
         for v in &p.vars {
-            if v.location.is_some()
-                || matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp)
-            {
+            if matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp) {
+                continue;
+            }
+            if v.location.is_some() {
+                // `q AT %QW2 : WORD := 7`: the initial value goes to the process image
+                self.init_located(c, v);
                 continue;
             }
             let lv = format!("self->{}", mangle::var(&v.name));

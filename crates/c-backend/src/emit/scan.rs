@@ -205,20 +205,24 @@ impl Gen<'_> {
 
     fn init_global(&mut self, c: &mut String, v: &Variable, name: String) {
         if v.location.is_some() {
-            // located globals start from the (zeroed) process image; an initial value is written there
-            if let Some(init) = &v.init {
-                if let Some(e) = v.ty.elementary() {
-                    if let Some(val) = ctypes::const_elementary(self.model, e, init) {
-                        if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
-                            let _ =
-                                writeln!(c, "    {}", super::values::store_expr(&loc, &ty, &val));
-                        }
-                    }
-                }
-            }
+            self.init_located(c, v);
             return;
         }
         self.init_value(c, 1, &name, &v.ty, v.init.as_ref(), v.span);
+    }
+
+    /// A located variable (global or of a POU) starts from the (zeroed) process image; its initial
+    /// value, when it has one, is written there.
+    pub(super) fn init_located(&mut self, c: &mut String, v: &Variable) {
+        if let Some(init) = &v.init {
+            if let Some(e) = v.ty.elementary() {
+                if let Some(val) = ctypes::const_elementary(self.model, e, init) {
+                    if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
+                        let _ = writeln!(c, "    {}", super::values::store_expr(&loc, &ty, &val));
+                    }
+                }
+            }
+        }
     }
 
     fn located_global(&mut self, v: &Variable) -> Option<Place> {

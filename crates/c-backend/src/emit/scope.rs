@@ -209,6 +209,13 @@ impl Gen<'_> {
                 }
             }
             let key = name.key();
+            if key == "ENO" && pou.kind == PouKind::FunctionBlock && self.model.fb_eno_read {
+                // the instance's own ENO, which the caller reads (set to TRUE before each call)
+                return Some(Some(Place::Mem {
+                    lv: "self->ENO".to_string(),
+                    ty: Type::BOOL,
+                }));
+            }
             if key == "EN" || key == "ENO" {
                 scope.uses_en.set(true);
                 return Some(Some(Place::Mem {
@@ -337,8 +344,9 @@ impl Gen<'_> {
                     });
                 }
             }
-            Type::Fb(FbType::Standard(_)) if f.is("ENO") => {
-                // the ENO of the instance's last call (see `cal`)
+            Type::Fb(_) if f.is("ENO") => {
+                // the ENO of the instance's last call (see `cal`; a user FB's struct has the member
+                // when a body reads it)
                 return Some(Place::Mem {
                     lv: format!("{lv}.ENO"),
                     ty: Type::BOOL,

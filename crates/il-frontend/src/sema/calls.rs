@@ -1013,6 +1013,8 @@ impl Body<'_, '_> {
                 if fa.name.is("EN") {
                     Some(("EN".into(), ParamDir::Input, Type::BOOL))
                 } else if fa.name.is("ENO") {
+                    // `inst(..., ENO => ok)`: the instance keeps its ENO (user FBs too)
+                    self.a.model.fb_eno_read = true;
                     Some(("ENO".into(), ParamDir::Output, Type::BOOL))
                 } else {
                     None

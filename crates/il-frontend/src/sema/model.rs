@@ -1087,8 +1087,9 @@ pub struct Model {
     /// Upper-case member name -> the lists (indexes into `global_lists`) declaring it, in order.
     #[serde(skip)]
     pub lists_of_name: FxHashMap<String, Vec<usize>>,
-    /// Whether a body reads `inst.ENO` of a standard FB instance (then every call stores the
-    /// instance's ENO; otherwise only calls with EN do).
+    /// Whether a body reads `inst.ENO` of an FB instance, or writes `ENO =>` of a user FB's call
+    /// (then every call stores the instance's ENO, and user FB instances keep the ENO their body
+    /// sets; otherwise only standard FB calls with EN store it).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub fb_eno_read: bool,
     /// Keyed by the instruction's identity ([`InstrId::of`]).

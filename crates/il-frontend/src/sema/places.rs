@@ -709,7 +709,7 @@ impl Body<'_, '_> {
                     .hint(format!("fields of {t}: {}", names.join(", ")));
                 None
             }
-            Type::Fb(FbType::Standard(_)) if f.is("ENO") => {
+            Type::Fb(_) if f.is("ENO") => {
                 // the ENO of the instance's last call (IEC 61131-3: FALSE when EN was FALSE)
                 self.a.model.fb_eno_read = true;
                 Some(Place {

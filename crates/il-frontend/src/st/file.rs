@@ -482,7 +482,8 @@ fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
 
 /// The language of a body's tokens: ST when ST statements (an assignment `:=` outside parentheses, a
 /// statement keyword, a call statement `f(...)`) outnumber the lines that start like IL instructions
-/// (an IL operator followed by its operand, a label). An empty body is IL.
+/// (an IL operator followed by its operand, a label), or when neither is found but a `;` is. An empty
+/// body is IL.
 fn body_lang(src: &str, toks: &[Token]) -> Lang {
     let mut st = 0usize;
     let mut il = 0usize;
@@ -538,7 +539,8 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
         }
         line_start = next_same_line.is_none();
     }
-    if st > il {
+    // no statement and no instruction either (`a AND NOT b;`): a `;` is ST's, IL has none
+    if st > il || (il == 0 && toks.iter().any(|t| t.tok == Tok::Semi)) {
         Lang::St
     } else {
         Lang::Il

@@ -1,6 +1,6 @@
 //! The ST lexer: source text in, [`Token`]s with byte ranges out (a logos state machine).
 //!
-//! Input: UTF-8 text. Output: tokens (blanks, line ends, `(* *)` nested comments, `//` comments and
+//! Input: UTF-8 text. Output: tokens (blanks, line ends, `(* *)` and `/* */` nested comments, `//` comments and
 //! `{ }` pragmas skipped) and lexing problems, each with its byte range in `src`.
 //! Invariants: keywords are recognised case-insensitively by ONE table ([`keyword`]); number literals
 //! carry no sign (`a-1` is `a`, `-`, `1`; the parser folds `-1`); literal values are decoded by
@@ -18,6 +18,7 @@ use std::ops::Range;
 #[logos(skip r"[ \t\r\n\f\u{FEFF}]+")]
 enum Raw {
     #[token("(*", block_comment)]
+    #[token("/*", slash_block_comment)]
     Comment,
     #[token("{", pragma)]
     Pragma,
@@ -405,6 +406,16 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
 /// Skips a possibly nested `(* ... *)` comment.
 fn block_comment(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
     let (n, end) = lexer::comment_rest(lex.remainder());
+    lex.bump(n);
+    match end {
+        lexer::CommentEnd::Closed { .. } => FilterResult::Emit(()),
+        lexer::CommentEnd::Unterminated => FilterResult::Error(LexError::UnterminatedComment),
+    }
+}
+
+/// Skips a possibly nested `/* ... */` comment (IEC 61131-3 ed. 3, Table 3).
+fn slash_block_comment(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
+    let (n, end) = lexer::slash_comment_rest(lex.remainder());
     lex.bump(n);
     match end {
         lexer::CommentEnd::Closed { .. } => FilterResult::Emit(()),

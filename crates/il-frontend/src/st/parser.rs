@@ -173,8 +173,13 @@ impl<'s, 'd> Parser<'s, 'd> {
             }
             Problem::UnterminatedComment(r) => (
                 code::E0102,
-                // the opener: `(*` or `{` (whatever follows may be a multi-byte character)
-                r.start..r.start + if self.src[r.start..].starts_with("(*") { 2 } else { 1 },
+                // the opener: `(*`, `/*` or `{` (whatever follows may be a multi-byte character)
+                r.start..r.start
+                    + if self.src[r.start..].starts_with("(*") || self.src[r.start..].starts_with("/*") {
+                        2
+                    } else {
+                        1
+                    },
                 "comment or pragma is never closed".to_string(),
                 "close `(*` with `*)` (comments nest: every `(*` needs its own `*)`) and `{` with `}`".to_string(),
             ),
@@ -438,6 +443,13 @@ impl<'s, 'd> Parser<'s, 'd> {
                 format!("missing `;` after the statement (found {found})"),
                 "every ST statement ends with `;` (also `END_IF;`, `END_FOR;` ...)",
             );
+            // what follows is no statement (`RETURN TRUE;`): skipped with this one error
+            if !ends_list(self.peek())
+                && !starts_statement(self.peek())
+                && !matches!(self.peek(), Tok::Ident | Tok::Address(..))
+            {
+                self.sync();
+            }
         }
         Some(Stmt {
             kind,
