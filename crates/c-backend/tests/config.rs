@@ -15,7 +15,7 @@ fn task(file: diagnostics::FileId, name: &str, interval_ms: Option<i128>, priori
     Task {
         name: ident(file, name),
         interval: interval_ms.map(|ms| {
-            Operand::Literal(Literal {
+            Operand::literal(Literal {
                 kind: LiteralKind::Duration(ms * 1_000_000),
                 type_prefix: None,
                 span: sp,
@@ -219,7 +219,7 @@ fn global(f: diagnostics::FileId, name: &str, ty: &str, init: Option<i128>) -> V
         location: None,
         ty: TypeRef::Named(ident(f, ty)),
         init: init.map(|v| {
-            Initializer::Value(Operand::Literal(Literal {
+            Initializer::Value(Operand::literal(Literal {
                 kind: LiteralKind::Int(v),
                 type_prefix: None,
                 span: sp,

@@ -18,7 +18,7 @@ fn var(name: &str, i: usize) -> Operand {
 }
 
 fn int(v: i128, i: usize) -> Operand {
-    Operand::Literal(Literal {
+    Operand::literal(Literal {
         kind: LiteralKind::Int(v),
         type_prefix: None,
         span: sp(i),

@@ -406,7 +406,7 @@ fn rewrite_calls(
 }
 
 fn bool_lit(v: bool, span: diagnostics::Span) -> Operand {
-    Operand::Literal(Literal {
+    Operand::literal(Literal {
         kind: LiteralKind::Bool(v),
         type_prefix: None,
         span,

@@ -305,23 +305,32 @@ pub enum Accessor {
 }
 
 /// What an IL instruction works on.
+///
+/// Literals and typed enumerated values are boxed: they are rarer than variables, and inline their 16-byte
+/// aligned `i128` values and second name would make every operand (and so every statement of a body)
+/// larger; an operand has the size of a [`VarRef`].
 #[derive(Debug, Clone, Serialize)]
 pub enum Operand {
-    /// A constant: `LD 5`, `ADD T#1s`.
-    Literal(Literal),
+    /// A constant: `LD 5`, `ADD T#1s` (build one with [`Operand::literal`]).
+    Literal(Box<Literal>),
     /// A (possibly structured or indexed) variable: `LD x`, `ST inst.IN`.
     Var(VarRef),
     /// A direct address: `LD %IX0.1`.
     Address(DirectAddress),
-    /// An enumerated value written with its type, `Color#red` (a plain `red` parses as a `Var`).
-    EnumValue {
-        /// The enumerated type before `#`.
-        type_name: Ident,
-        /// The value after `#`.
-        value: Ident,
-        /// The whole `Type#value` text.
-        span: Span,
-    },
+    /// An enumerated value written with its type, `Color#red` (a plain `red` parses as a `Var`; build one
+    /// with [`Operand::enum_value`]).
+    EnumValue(Box<EnumOperand>),
+}
+
+/// An enumerated value written with its type, `Color#red`: the payload of [`Operand::EnumValue`].
+#[derive(Debug, Clone, Serialize)]
+pub struct EnumOperand {
+    /// The enumerated type before `#`.
+    pub type_name: Ident,
+    /// The value after `#`.
+    pub value: Ident,
+    /// The whole `Type#value` text.
+    pub span: Span,
 }
 
 impl Operand {
@@ -331,8 +340,20 @@ impl Operand {
             Operand::Literal(l) => l.span,
             Operand::Var(v) => v.span,
             Operand::Address(a) => a.span,
-            Operand::EnumValue { span, .. } => *span,
+            Operand::EnumValue(e) => e.span,
         }
+    }
+    /// A literal operand.
+    pub fn literal(l: Literal) -> Operand {
+        Operand::Literal(Box::new(l))
+    }
+    /// A typed enumerated value, `type_name#value`, spanning `span`.
+    pub fn enum_value(type_name: Ident, value: Ident, span: Span) -> Operand {
+        Operand::EnumValue(Box::new(EnumOperand {
+            type_name,
+            value,
+            span,
+        }))
     }
 }
 
@@ -811,4 +832,18 @@ pub struct ProgramInstance {
     pub args: Vec<FormalArg>,
     /// The whole declaration.
     pub span: Span,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A body holds one `IlStmt` per line (the 1,000,000-line POU of issue #16): literals and typed
+    /// enumerated values are boxed so that an operand is no larger than a variable access.
+    #[test]
+    fn statements_and_operands_stay_small() {
+        assert!(std::mem::size_of::<Operand>() <= std::mem::size_of::<VarRef>());
+        assert!(std::mem::size_of::<Option<Operand>>() <= 80);
+        assert!(std::mem::size_of::<IlStmt>() <= 136);
+    }
 }

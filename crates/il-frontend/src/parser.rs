@@ -830,10 +830,12 @@ impl<'s> Ctx<'s> {
                 "INTERVAL" => task.interval = Some(value),
                 "SINGLE" => task.single = Some(value),
                 "PRIORITY" => match &value {
-                    Operand::Literal(Literal {
-                        kind: LiteralKind::Int(p),
-                        ..
-                    }) if u32::try_from(*p).is_ok() => task.priority = Some(*p as u32),
+                    Operand::Literal(l) if matches!(l.kind, LiteralKind::Int(p) if u32::try_from(p).is_ok()) => {
+                        task.priority = match l.kind {
+                            LiteralKind::Int(p) => u32::try_from(p).ok(),
+                            _ => None,
+                        }
+                    }
                     _ => self.hint(
                         code::E0020,
                         "task priority must be a non-negative integer",

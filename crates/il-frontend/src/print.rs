@@ -245,10 +245,8 @@ pub fn operand(out: &mut String, o: &Operand) {
         Operand::Literal(l) => literal(out, l),
         Operand::Var(v) => var_ref(out, v),
         Operand::Address(a) => address(out, a),
-        Operand::EnumValue {
-            type_name, value, ..
-        } => {
-            let _ = write!(out, "{}#{}", type_name.name, value.name);
+        Operand::EnumValue(e) => {
+            let _ = write!(out, "{}#{}", e.type_name.name, e.value.name);
         }
     }
 }

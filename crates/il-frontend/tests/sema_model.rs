@@ -512,7 +512,7 @@ fn configuration_tasks_and_program_instances() {
             globals: vec![],
             tasks: vec![ast::Task {
                 name: id("Fast"),
-                interval: Some(ast::Operand::Literal(ast::Literal {
+                interval: Some(ast::Operand::literal(ast::Literal {
                     kind: ast::LiteralKind::Duration(10_000_000),
                     type_prefix: None,
                     span: s(),

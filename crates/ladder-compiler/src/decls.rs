@@ -187,7 +187,7 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
             if let Some(TypeRef::String { wide, .. }) = ty {
                 let t = text.trim();
                 if !(t.starts_with('\'') || t.starts_with('"')) {
-                    return Some(Initializer::Value(il_frontend::ast::Operand::Literal(
+                    return Some(Initializer::Value(il_frontend::ast::Operand::literal(
                         il_frontend::ast::Literal {
                             kind: il_frontend::ast::LiteralKind::String {
                                 wide: *wide,
@@ -485,9 +485,7 @@ pub fn data_type(ctx: &mut Ctx, d: &Element) -> Option<TypeDecl> {
                 .unwrap_or_default();
             let init = match init {
                 Some(Initializer::Value(il_frontend::ast::Operand::Var(v))) => Some(v.base),
-                Some(Initializer::Value(il_frontend::ast::Operand::EnumValue {
-                    value, ..
-                })) => Some(value),
+                Some(Initializer::Value(il_frontend::ast::Operand::EnumValue(e))) => Some(e.value),
                 _ => None,
             };
             TypeDef::Enum { values, init }

@@ -542,7 +542,7 @@ fn field_operand(base: &VarRef, field: &str, span: Span) -> Operand {
 }
 
 fn bool_lit(b: bool, span: Span) -> Operand {
-    Operand::Literal(Literal {
+    Operand::literal(Literal {
         kind: LiteralKind::Bool(b),
         type_prefix: None,
         span,
@@ -830,7 +830,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 },
                 a.span,
             ))),
-            Operand::EnumValue { type_name, .. } => Ty::Known(TypeRef::Named(type_name.clone())),
+            Operand::EnumValue(e) => Ty::Known(TypeRef::Named(e.type_name.clone())),
         }
     }
 
@@ -1459,17 +1459,22 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     let to = Ty::Known(expected);
                     // `0` and `1` are BOOL literals too (IEC 61131-3, boolean literals)
                     if type_text(&to) == "BOOL" {
-                        if let Val::Leaf {
-                            op:
-                                Operand::Literal(Literal {
+                        let bit = match &self.vals[v] {
+                            Val::Leaf {
+                                op: Operand::Literal(l),
+                                neg: false,
+                            } => match **l {
+                                Literal {
                                     kind: LiteralKind::Int(n @ (0 | 1)),
                                     type_prefix: None,
                                     ..
-                                }),
-                            neg: false,
-                        } = &self.vals[v]
-                        {
-                            let b = *n == 1;
+                                } => Some(n),
+                                _ => None,
+                            },
+                            _ => None,
+                        };
+                        if let Some(n) = bit {
+                            let b = n == 1;
                             v = self.val(Val::Const(b), self.spans[v]);
                         }
                     }

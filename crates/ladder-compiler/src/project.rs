@@ -805,7 +805,7 @@ fn task(ctx: &mut Ctx, t: &Element) -> Option<Task> {
         if xsd.starts_with('P') {
             // tc6_0200/0201: the attribute is an xsd:duration (CODESYS writes `PT0.05S`)
             return match values::xsd_duration(iv) {
-                Ok(ns) => Some(Operand::Literal(Literal {
+                Ok(ns) => Some(Operand::literal(Literal {
                     kind: LiteralKind::Duration(ns),
                     type_prefix: None,
                     span: s,
@@ -836,7 +836,7 @@ fn task(ctx: &mut Ctx, t: &Element) -> Option<Task> {
             })
         });
         match parsed {
-            Some(l) => Some(Operand::Literal(l)),
+            Some(l) => Some(Operand::literal(l)),
             None => match values::operand(iv, s) {
                 Some(op @ Operand::Var(_)) => Some(op),
                 _ => {
@@ -854,10 +854,7 @@ fn task(ctx: &mut Ctx, t: &Element) -> Option<Task> {
     // writes `interval="PT0S"` beside them: the settings give the period the task runs with.
     let zero = matches!(
         &interval,
-        Some(Operand::Literal(Literal {
-            kind: LiteralKind::Duration(0),
-            ..
-        }))
+        Some(Operand::Literal(l)) if l.kind == LiteralKind::Duration(0)
     );
     let interval = match (&interval, zero) {
         (None, _) | (_, true) => task_settings_interval(ctx, t).or(interval),
@@ -922,7 +919,7 @@ fn task_settings_interval(ctx: &mut Ctx, t: &Element) -> Option<Operand> {
         }
     };
     (ns > 0).then(|| {
-        Operand::Literal(Literal {
+        Operand::literal(Literal {
             kind: LiteralKind::Duration(ns),
             type_prefix: None,
             span: ctx.attr_span(settings, "Interval"),

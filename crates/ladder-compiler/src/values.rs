@@ -23,18 +23,18 @@ pub fn operand(text: &str, span: Span) -> Option<Operand> {
         return var_ref(t, span).map(Operand::Var);
     }
     if let Some(l) = literal(t, span) {
-        return Some(Operand::Literal(l));
+        return Some(Operand::literal(l));
     }
     if t.starts_with('%') {
         return address(t, span).map(Operand::Address);
     }
     if let Some((ty, val)) = t.split_once('#') {
         if is_ident(ty) && is_ident(val) {
-            return Some(Operand::EnumValue {
-                type_name: Ident::new(ty, span),
-                value: Ident::new(val, span),
+            return Some(Operand::enum_value(
+                Ident::new(ty, span),
+                Ident::new(val, span),
                 span,
-            });
+            ));
         }
         return None;
     }
@@ -692,7 +692,7 @@ mod tests {
         assert!(operand("", sp()).is_none());
         assert!(matches!(
             operand("Color#red", sp()),
-            Some(Operand::EnumValue { .. })
+            Some(Operand::EnumValue(_))
         ));
     }
 

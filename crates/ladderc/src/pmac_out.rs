@@ -66,14 +66,11 @@ pub fn coord_system(axes: &AxisConfig) -> CoordSystem {
 
 fn constant(op: &Operand) -> Option<f64> {
     match op {
-        Operand::Literal(Literal {
-            kind: LiteralKind::Real(v),
-            ..
-        }) => Some(*v),
-        Operand::Literal(Literal {
-            kind: LiteralKind::Int(v),
-            ..
-        }) => Some(*v as f64),
+        Operand::Literal(l) => match l.kind {
+            LiteralKind::Real(v) => Some(v),
+            LiteralKind::Int(v) => Some(v as f64),
+            _ => None,
+        },
         _ => None,
     }
 }

@@ -220,7 +220,7 @@ fn element(array: &Operand, index: i64) -> Operand {
 }
 
 fn int_lit(v: i128, span: Span) -> Operand {
-    Operand::Literal(Literal {
+    Operand::literal(Literal {
         kind: LiteralKind::Int(v),
         type_prefix: None,
         span,
@@ -785,7 +785,7 @@ impl PouLowering<'_> {
                         out.push(simple(Op::Ld, false, Some(int_lit(v as i128, span)), span));
                     }
                     (TypeClass::Bool, _) => {
-                        let t = Operand::Literal(Literal {
+                        let t = Operand::literal(Literal {
                             kind: LiteralKind::Bool(true),
                             type_prefix: None,
                             span,

@@ -443,9 +443,9 @@ impl Gen<'_> {
             Operand::Address(a) => {
                 Type::Elementary(il_frontend::sema::Location::of(a).elementary())
             }
-            Operand::EnumValue { type_name, .. } => self
+            Operand::EnumValue(e) => self
                 .model
-                .type_by_name(&type_name.name)
+                .type_by_name(&e.type_name.name)
                 .map(Type::Enum)
                 .unwrap_or(Type::Error),
             Operand::Literal(l) => {
@@ -553,9 +553,8 @@ impl Gen<'_> {
                     }
                 }
             }
-            Operand::EnumValue {
-                type_name, value, ..
-            } => {
+            Operand::EnumValue(e) => {
+                let (type_name, value) = (&e.type_name, &e.value);
                 let id = self.model.type_by_name(&type_name.name);
                 let v = id.and_then(|id| match &self.model.user_type(id).def {
                     UserTypeDef::Enum { values, .. } => values

@@ -869,11 +869,17 @@ impl Analyzer<'_> {
     fn declare_resource(&mut self, ci: usize, ri: usize, r: &ast::Resource) {
         let mut tasks: Vec<Task> = Vec::new();
         for t in &r.tasks {
+            let positive = match &t.interval {
+                Some(Operand::Literal(l)) => match l.kind {
+                    ast::LiteralKind::Duration(ns) if ns > 0 => Some(ns),
+                    _ => None,
+                },
+                _ => None,
+            };
             let interval_ns = match &t.interval {
-                Some(Operand::Literal(ast::Literal {
-                    kind: ast::LiteralKind::Duration(ns),
-                    ..
-                })) if *ns > 0 => u64::try_from(*ns).ok(),
+                Some(Operand::Literal(_)) if positive.is_some() => {
+                    positive.and_then(|ns| u64::try_from(ns).ok())
+                }
                 Some(Operand::Var(_)) | None => None,
                 Some(other) => {
                     self.error(
@@ -1250,11 +1256,8 @@ impl Analyzer<'_> {
                 }
                 Some(literal_value(lit, ty))
             }
-            Operand::EnumValue {
-                type_name,
-                value,
-                span,
-            } => {
+            Operand::EnumValue(e) => {
+                let (type_name, value, span) = (&e.type_name, &e.value, &e.span);
                 let Type::Enum(id) = ty else {
                     self.error(
                         code::E1025,

@@ -58,9 +58,7 @@ impl Body<'_, '_> {
             Operand::Literal(l) => self.literal(l),
             Operand::Var(v) => Ty::Known(self.resolve_var(v).ty),
             Operand::Address(a) => Ty::Known(Type::Elementary(Location::of(a).elementary())),
-            Operand::EnumValue {
-                type_name, value, ..
-            } => Ty::Known(self.enum_value(type_name, value)),
+            Operand::EnumValue(e) => Ty::Known(self.enum_value(&e.type_name, &e.value)),
         }
     }
 
@@ -152,7 +150,7 @@ impl Body<'_, '_> {
                 }
                 Type::Elementary(Location::of(a).elementary())
             }
-            Operand::Literal(_) | Operand::EnumValue { .. } => {
+            Operand::Literal(_) | Operand::EnumValue(_) => {
                 self.a
                     .error(
                         code::E1026,

@@ -92,7 +92,7 @@ fn jump(cond: Condition, label: &Ident, span: Span) -> IlStmt {
 }
 
 fn int_lit(v: i128, span: Span) -> Operand {
-    Operand::Literal(Literal {
+    Operand::literal(Literal {
         kind: LiteralKind::Int(v),
         type_prefix: None,
         span,
@@ -336,7 +336,7 @@ impl<'d> PouLowering<'d> {
         if self.check_bool(e, what, diags) {
             self.value(e, out, diags);
         } else {
-            let f = Operand::Literal(Literal {
+            let f = Operand::literal(Literal {
                 kind: LiteralKind::Bool(false),
                 type_prefix: None,
                 span: e.span,
@@ -952,11 +952,11 @@ impl<'d> PouLowering<'d> {
             crate::ast::TypeDef::Enum { values, .. }
                 if values.iter().any(|v| v.name.is(&value.name)) =>
             {
-                Some(Operand::EnumValue {
-                    type_name: Ident::new(decl.name.name.clone(), value.span),
-                    value: value.clone(),
-                    span: e.span,
-                })
+                Some(Operand::enum_value(
+                    Ident::new(decl.name.name.clone(), value.span),
+                    value.clone(),
+                    e.span,
+                ))
             }
             _ => None,
         }
@@ -964,12 +964,12 @@ impl<'d> PouLowering<'d> {
 
     fn pure_operand(&self, e: &Expr) -> Option<Operand> {
         match &e.kind {
-            ExprKind::Literal(l) => Some(Operand::Literal(l.clone())),
-            ExprKind::EnumValue { type_name, value } => Some(Operand::EnumValue {
-                type_name: type_name.clone(),
-                value: value.clone(),
-                span: e.span,
-            }),
+            ExprKind::Literal(l) => Some(Operand::literal(l.clone())),
+            ExprKind::EnumValue { type_name, value } => Some(Operand::enum_value(
+                type_name.clone(),
+                value.clone(),
+                e.span,
+            )),
             ExprKind::Place(p) => self.pure_place(p),
             _ => None,
         }
@@ -1119,7 +1119,7 @@ impl<'d> PouLowering<'d> {
                         l.type_prefix = Some(Ident::new(x.name(), l.span));
                     }
                 }
-                out.push(ld(Operand::Literal(l), e.span));
+                out.push(ld(Operand::literal(l), e.span));
             }
             ExprKind::Literal(_) | ExprKind::EnumValue { .. } | ExprKind::Place(_) => {
                 let o = self.operand(e, hint.as_ref(), out, diags);
@@ -1146,7 +1146,7 @@ impl<'d> PouLowering<'d> {
                         Ty::Known(t) => self.env().elementary(&t).is_some_and(|x| x.is_real()),
                         _ => false,
                     };
-                    let minus_one = Operand::Literal(Literal {
+                    let minus_one = Operand::literal(Literal {
                         kind: if real {
                             LiteralKind::Real(-1.0)
                         } else {
@@ -1582,14 +1582,14 @@ impl LabelSet {
 /// literal or an enumerated value (a constant's value is not known here).
 fn label_key(lo: &Operand, hi: &Operand) -> Option<LabelKey> {
     let int = |o: &Operand| match o {
-        Operand::Literal(Literal {
-            kind: LiteralKind::Int(v),
-            ..
-        }) => Some(*v),
+        Operand::Literal(l) => match l.kind {
+            LiteralKind::Int(v) => Some(v),
+            _ => None,
+        },
         _ => None,
     };
     let name = |o: &Operand| match o {
-        Operand::EnumValue { value, .. } => Some(value.key()),
+        Operand::EnumValue(e) => Some(e.value.key()),
         Operand::Var(v) if v.accessors.is_empty() => Some(v.base.key()),
         _ => None,
     };

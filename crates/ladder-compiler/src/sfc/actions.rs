@@ -167,7 +167,7 @@ pub fn collect<'e, 'a>(
                 let ds = ctx.attr_span(a.el, "duration");
                 let op = values::literal(d, ds)
                     .filter(|l| matches!(l.kind, LiteralKind::Duration(_)))
-                    .map(Operand::Literal)
+                    .map(Operand::literal)
                     .or_else(|| values::duration(d).map(|ns| il::lit_time(ns, ds)))
                     .or_else(|| values::var_ref(d, ds).map(Operand::Var));
                 if op.is_none() {

@@ -38,7 +38,7 @@ pub fn field(base: &str, f: &str, span: Span) -> Operand {
 
 /// The BOOL literal `b`.
 pub fn lit_bool(b: bool, span: Span) -> Operand {
-    Operand::Literal(Literal {
+    Operand::literal(Literal {
         kind: LiteralKind::Bool(b),
         type_prefix: None,
         span,
@@ -47,7 +47,7 @@ pub fn lit_bool(b: bool, span: Span) -> Operand {
 
 /// The duration literal of `ns` nanoseconds.
 pub fn lit_time(ns: i128, span: Span) -> Operand {
-    Operand::Literal(Literal {
+    Operand::literal(Literal {
         kind: LiteralKind::Duration(ns),
         type_prefix: None,
         span,
