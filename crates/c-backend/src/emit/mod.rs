@@ -15,6 +15,7 @@ mod method;
 mod overlaps;
 mod scan;
 mod scope;
+mod split;
 mod strings;
 mod values;
 
@@ -54,6 +55,8 @@ pub struct Gen<'a> {
     /// The position in `Model::instrs` after the last instruction looked up (bodies are read in
     /// source order, so that is usually where the next one is).
     pub(super) instr_cursor: usize,
+    /// Bodies of more instruction units are split into several C functions (see `split`).
+    pub(super) part_limit: usize,
 }
 
 impl<'a> Gen<'a> {
@@ -147,6 +150,7 @@ pub fn generate(
         reported: HashSet::new(),
         quiet: 0,
         instr_cursor: 0,
+        part_limit: split::part_limit(),
         address_spans: collect_address_spans(units),
         member_index: Default::default(),
         methods: ext.methods.clone(),
@@ -402,6 +406,36 @@ impl<'a> Gen<'a> {
         h.push_str("\n#endif\n");
     }
 
+    /// The frame members of a split FUNCTION: every variable with storage (outputs and in-outs as
+    /// pointers, as passed) and the result variable, each copied from the local of the same name.
+    fn function_frame(&self, p: &il_frontend::sema::Pou) -> Vec<(String, String)> {
+        let mut members = Vec::new();
+        for v in &p.vars {
+            if v.location.is_some() {
+                continue;
+            }
+            let name = mangle::var(&v.name);
+            let decl = match v.kind {
+                VarKind::Output | VarKind::InOut => ctypes::base(self.model, &v.ty)
+                    .map(|b| cfmt!("{b} (*{name}){}", ctypes::dims(&v.ty))),
+                VarKind::Input | VarKind::Local | VarKind::Temp => {
+                    ctypes::declare(self.model, &v.ty, &name)
+                }
+                _ => None,
+            };
+            if let Some(d) = decl {
+                members.push((d, name));
+            }
+        }
+        if let Some(rt) = &p.return_type {
+            let name = mangle::var(&p.name);
+            if let Some(d) = ctypes::declare(self.model, rt, &name) {
+                members.push((d, name));
+            }
+        }
+        members
+    }
+
     fn pou_struct(&self, p: &il_frontend::sema::Pou) -> String {
         match p.kind {
             PouKind::Program => mangle::program(&p.name),
@@ -510,7 +544,11 @@ impl<'a> Gen<'a> {
     fn pou(&mut self, ast: &il_frontend::ast::Pou, id: PouId, c: &mut String) {
         let model: &'a Model = self.model;
         let p = model.pou(id);
-        let scope = Scope::for_pou(self.model.pou(id), id);
+        let mut scope = Scope::for_pou(self.model.pou(id), id);
+        let plan = self.plan_parts(&ast.body);
+        if plan.is_some() {
+            scope.frame();
+        }
         let mut targets = HashSet::new();
         jump_targets(&ast.body, &mut targets);
         if p.kind == PouKind::Function {
@@ -566,6 +604,26 @@ impl<'a> Gen<'a> {
             if let Some(rt) = &p.return_type {
                 self.init_value(&mut init_code, 1, &ret_var, rt, None, p.span);
             }
+            if let Some(plan) = &plan {
+                let frame = split::Frame {
+                    name: cfmt!("{}_FRAME", mangle::function(&p.name)),
+                    prefix: cfmt!("{}_PART_", mangle::function(&p.name)),
+                    self_param: String::new(),
+                    self_arg: "",
+                    members: self.function_frame(p),
+                    leave: if ret.is_empty() {
+                        "return;".into()
+                    } else {
+                        cfmt!("return fr.{ret};")
+                    },
+                };
+                let head = cfmt!("{sig} {{\n{pre}{init_code}");
+                let reserve = C_BYTES_PER_INSTR * self.part_limit;
+                self.emit_parts(
+                    c, &head, &scope, b.targets, &ast.body, plan, &frame, reserve,
+                );
+                return;
+            }
             self.stmts(&mut b, &ast.body);
             let _ = writeln!(c, "{sig} {{");
             c.push_str(&pre);
@@ -613,6 +671,33 @@ impl<'a> Gen<'a> {
                 let lv = mangle::var(&v.name);
                 self.init_value(&mut temp_init, 1, &lv, &v.ty, v.init.as_ref(), v.span);
             }
+        }
+        if let Some(plan) = &plan {
+            let members = p
+                .vars
+                .iter()
+                .filter(|v| v.kind == VarKind::Temp && v.location.is_none())
+                .filter_map(|v| {
+                    let name = mangle::var(&v.name);
+                    ctypes::declare(self.model, &v.ty, &name).map(|d| (d, name))
+                })
+                .collect();
+            let frame = split::Frame {
+                name: cfmt!("{sname}_FRAME"),
+                prefix: cfmt!("{sname}_BODY_PART_"),
+                self_param: cfmt!("{sname} *self, "),
+                self_arg: "self, ",
+                members,
+                leave: "return;".into(),
+            };
+            let sig = edges::body_signature(&sname, p);
+            let head = cfmt!("{sig} {{\n{temps}{temp_init}");
+            let reserve = C_BYTES_PER_INSTR * self.part_limit;
+            self.emit_parts(
+                c, &head, &scope, b.targets, &ast.body, plan, &frame, reserve,
+            );
+            c.push_str(&edges::wrapper(&sname, p));
+            return;
         }
         self.stmts(&mut b, &ast.body);
         let _ = writeln!(c, "{} {{", edges::body_signature(&sname, p));
