@@ -44,7 +44,10 @@ fn rungs(tag: &str, n: usize, out: &mut String) {
                 out,
                 "    LD y{a}\n    JMPCN {tag}{r}\n    LD k{b}\n    ADD 1\n    ST k{b}\n{tag}{r}:"
             ),
-            _ => writeln!(out, "    LD k{b}\n    ST tmp\n    LD tmp\n    SUB k{a}\n    ST k{a}"),
+            _ => writeln!(
+                out,
+                "    LD k{b}\n    ST tmp\n    LD tmp\n    SUB k{a}\n    ST k{a}"
+            ),
         }
         .unwrap();
     }
@@ -78,7 +81,11 @@ fn program() -> String {
     s.push_str("done:\n    LD t\n    ST s\n    LD ENO\n    ST e\nEND_FUNCTION_BLOCK\n\n");
     s.push_str("PROGRAM main\nVAR\n");
     for i in 0..8 {
-        writeln!(s, "    in{i} : BOOL; t{i} : TON; c{i} : CTU; e{i} : R_TRIG;").unwrap();
+        writeln!(
+            s,
+            "    in{i} : BOOL; t{i} : TON; c{i} : CTU; e{i} : R_TRIG;"
+        )
+        .unwrap();
     }
     for i in 0..VARS {
         writeln!(s, "    y{i} : BOOL; k{i} : INT;").unwrap();
@@ -168,7 +175,10 @@ fn a_split_body_runs_cycle_by_cycle_as_the_same_body_in_one_function() {
 
     // parts of about 200 instructions split every body here; 0 keeps each in one function
     let whole = c_text(dir.path(), "0");
-    assert!(!whole.contains("_PART_"), "LADDERC_BODY_PART=0 splits nothing");
+    assert!(
+        !whole.contains("_PART_"),
+        "LADDERC_BODY_PART=0 splits nothing"
+    );
     let split = c_text(dir.path(), "200");
     for f in [
         "P_main_BODY_PART_3(",
@@ -188,7 +198,10 @@ fn a_split_body_runs_cycle_by_cycle_as_the_same_body_in_one_function() {
     let (r, d, t) = (rows(&reference), rows(&medium), rows(&tiny));
     assert_eq!(r.len(), cycles + 1);
     for k in 0..r.len() {
-        assert_eq!(r[k], d[k], "parts of about 200 instructions, trace line {k}");
+        assert_eq!(
+            r[k], d[k],
+            "parts of about 200 instructions, trace line {k}"
+        );
         assert_eq!(r[k], t[k], "parts of 5 instructions, trace line {k}");
     }
 
@@ -213,7 +226,11 @@ fn a_split_body_runs_cycle_by_cycle_as_the_same_body_in_one_function() {
         if in2[k] == "0" {
             ends += 1;
         }
-        assert_eq!(total[k], ends.to_string(), "cycle {k}: RETC leaves before the end");
+        assert_eq!(
+            total[k],
+            ends.to_string(),
+            "cycle {k}: RETC leaves before the end"
+        );
         let go = in4[k] == "1";
         let rose = go && !last_in4;
         last_in4 = go;
@@ -222,7 +239,11 @@ fn a_split_body_runs_cycle_by_cycle_as_the_same_body_in_one_function() {
         }
         assert_eq!(fb_n[k], rises.to_string(), "cycle {k}: R_EDGE count");
         assert_eq!(fb_e[k], if rose { "1" } else { "0" }, "cycle {k}: ENO");
-        assert_eq!(fb_s[k], if rose { "400" } else { "0" }, "cycle {k}: VAR_TEMP");
+        assert_eq!(
+            fb_s[k],
+            if rose { "400" } else { "0" },
+            "cycle {k}: VAR_TEMP"
+        );
     }
     assert!(rises >= 3 && ends < cycles && ends > 0);
 }
@@ -244,10 +265,7 @@ fn split_c_compiles_with_all_warnings_as_errors() {
             .unwrap();
         assert_ok(&out);
         let make = std::process::Command::new("make")
-            .args([
-                "-s",
-                "CFLAGS=-std=c99 -Wall -Wextra -Werror -pedantic -O0",
-            ])
+            .args(["-s", "CFLAGS=-std=c99 -Wall -Wextra -Werror -pedantic -O0"])
             .current_dir(&out_dir)
             .output()
             .unwrap();
@@ -265,7 +283,11 @@ fn no_c_function_of_a_large_body_exceeds_a_bound() {
     let dir = tempfile::tempdir().unwrap();
     let mut s = String::from("PROGRAM main\nVAR\n");
     for i in 0..8 {
-        writeln!(s, "    in{i} : BOOL; t{i} : TON; c{i} : CTU; e{i} : R_TRIG;").unwrap();
+        writeln!(
+            s,
+            "    in{i} : BOOL; t{i} : TON; c{i} : CTU; e{i} : R_TRIG;"
+        )
+        .unwrap();
     }
     for i in 0..VARS {
         writeln!(s, "    y{i} : BOOL; k{i} : INT;").unwrap();

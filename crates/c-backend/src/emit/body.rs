@@ -38,7 +38,7 @@ pub struct Body<'s, 'm> {
     /// For a FUNCTION: the C expression returned by RET.
     pub ret: String,
     /// In a part of a split body (see `split`): its index and the labels entered from another part.
-    pub part: Option<(usize, &'s std::collections::HashMap<String, (usize, u32)>)>,
+    pub part: Option<(usize, &'s super::split::PartLabels)>,
     /// Set when a jump leaves the part (`next_ = <label>; goto exit_;`).
     pub exits: bool,
 }

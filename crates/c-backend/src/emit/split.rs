@@ -34,12 +34,15 @@ pub fn part_limit() -> usize {
         .unwrap_or(DEFAULT_PART_LIMIT)
 }
 
+/// Labels jumped to from another part: upper-case name -> (the label's part, its number, from 1).
+pub type PartLabels = HashMap<String, (usize, u32)>;
+
 /// Where a body is cut.
 pub struct Plan {
     /// The index of the first top-level statement of each part (the first is 0).
     pub starts: Vec<usize>,
-    /// Labels jumped to from another part: upper-case name -> (its part, its number, from 1).
-    pub labels: HashMap<String, (usize, u32)>,
+    /// Labels jumped to from another part.
+    pub labels: PartLabels,
 }
 
 impl Plan {
@@ -267,7 +270,7 @@ impl Gen<'_> {
                 frame.self_param
             );
             for (name, decl) in &b.crs {
-                match carried.get(name).filter(|_| !name.starts_with("cr_array_")) {
+                match carried.get(name) {
                     Some(d) => {
                         let _ = writeln!(c, "    {d} = fr->{name};");
                     }
