@@ -407,8 +407,9 @@ impl<'a> Gen<'a> {
     }
 
     /// The frame members of a split FUNCTION: every variable with storage (outputs and in-outs as
-    /// pointers, as passed) and the result variable, each copied from the local of the same name.
-    fn function_frame(&self, p: &il_frontend::sema::Pou) -> Vec<(String, String)> {
+    /// pointers, as passed) and the result variable; the parameters passed by value or pointer are
+    /// copied from the parameter of the same name (flag `true`), the rest are initialised in the frame.
+    fn function_frame(&self, p: &il_frontend::sema::Pou) -> Vec<(String, String, bool)> {
         let mut members = Vec::new();
         for v in &p.vars {
             if v.location.is_some() {
@@ -423,14 +424,19 @@ impl<'a> Gen<'a> {
                 }
                 _ => None,
             };
+            let param = match v.kind {
+                VarKind::Input => !matches!(v.ty, Type::Array { .. }),
+                VarKind::Output | VarKind::InOut => true,
+                _ => false,
+            };
             if let Some(d) = decl {
-                members.push((d, name));
+                members.push((d, name, param));
             }
         }
         if let Some(rt) = &p.return_type {
             let name = mangle::var(&p.name);
             if let Some(d) = ctypes::declare(self.model, rt, &name) {
-                members.push((d, name));
+                members.push((d, name, false));
             }
         }
         members
@@ -566,26 +572,37 @@ impl<'a> Gen<'a> {
             b.targets = targets;
             // locals and the result variable
             let mut pre = String::new();
+            // a split body keeps its locals in the frame `fr` only (see `split`)
+            let fr = if plan.is_some() { "fr." } else { "" };
             for v in &p.vars {
                 if v.kind == VarKind::Input && matches!(v.ty, Type::Array { .. }) {
                     let name = mangle::var(&v.name);
                     if let Some(d) = ctypes::declare(self.model, &v.ty, &name) {
-                        let _ = writeln!(pre, "    {d};");
-                        let _ = writeln!(pre, "    memcpy(&{name}, {name}__arg, sizeof {name});");
+                        if fr.is_empty() {
+                            let _ = writeln!(pre, "    {d};");
+                        }
+                        let _ = writeln!(
+                            pre,
+                            "    memcpy(&{fr}{name}, {name}__arg, sizeof {fr}{name});"
+                        );
                     }
                 }
             }
             for v in &p.vars {
-                if matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut) {
+                // (in a split body an array input has no local copy: its `__arg` is copied into `fr`)
+                let copied = v.kind == VarKind::Input && matches!(v.ty, Type::Array { .. });
+                if matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut)
+                    && (fr.is_empty() || !copied)
+                {
                     let _ = writeln!(pre, "    (void){};", mangle::var(&v.name));
                 }
             }
-            if let Some(rt) = &p.return_type {
+            if let Some(rt) = p.return_type.as_ref().filter(|_| fr.is_empty()) {
                 let d = ctypes::declare(self.model, rt, &ret_var).unwrap_or_default();
                 let _ = writeln!(pre, "    {d};");
                 let _ = writeln!(pre, "    memset(&{ret_var}, 0, sizeof {ret_var});");
             }
-            for v in &p.vars {
+            for v in p.vars.iter().filter(|_| fr.is_empty()) {
                 if matches!(v.kind, VarKind::Local | VarKind::Temp) && v.location.is_none() {
                     let name = mangle::var(&v.name);
                     if let Some(d) = ctypes::declare(self.model, &v.ty, &name) {
@@ -597,12 +614,13 @@ impl<'a> Gen<'a> {
             let mut init_code = String::new();
             for v in &p.vars {
                 if matches!(v.kind, VarKind::Local | VarKind::Temp) && v.location.is_none() {
-                    let lv = mangle::var(&v.name);
+                    let lv = cfmt!("{fr}{}", mangle::var(&v.name));
                     self.init_value(&mut init_code, 1, &lv, &v.ty, v.init.as_ref(), v.span);
                 }
             }
             if let Some(rt) = &p.return_type {
-                self.init_value(&mut init_code, 1, &ret_var, rt, None, p.span);
+                let lv = cfmt!("{fr}{ret_var}");
+                self.init_value(&mut init_code, 1, &lv, rt, None, p.span);
             }
             if let Some(plan) = &plan {
                 let frame = split::Frame {
@@ -617,10 +635,11 @@ impl<'a> Gen<'a> {
                         cfmt!("return fr.{ret};")
                     },
                 };
-                let head = cfmt!("{sig} {{\n{pre}{init_code}");
-                let reserve = C_BYTES_PER_INSTR * self.part_limit;
+                let head = cfmt!("{sig} {{\n");
+                let prelude = cfmt!("{pre}{init_code}");
+                let reserve = C_BYTES_PER_INSTR.saturating_mul(self.part_limit);
                 self.emit_parts(
-                    c, &head, &scope, b.targets, &ast.body, plan, &frame, reserve,
+                    c, &head, &prelude, &scope, b.targets, &ast.body, plan, &frame, reserve,
                 );
                 return;
             }
@@ -666,9 +685,10 @@ impl<'a> Gen<'a> {
             }
         }
         let mut temp_init = String::new();
+        let fr = if plan.is_some() { "fr." } else { "" };
         for v in &p.vars {
             if v.kind == VarKind::Temp && v.location.is_none() {
-                let lv = mangle::var(&v.name);
+                let lv = cfmt!("{fr}{}", mangle::var(&v.name));
                 self.init_value(&mut temp_init, 1, &lv, &v.ty, v.init.as_ref(), v.span);
             }
         }
@@ -679,7 +699,7 @@ impl<'a> Gen<'a> {
                 .filter(|v| v.kind == VarKind::Temp && v.location.is_none())
                 .filter_map(|v| {
                     let name = mangle::var(&v.name);
-                    ctypes::declare(self.model, &v.ty, &name).map(|d| (d, name))
+                    ctypes::declare(self.model, &v.ty, &name).map(|d| (d, name, false))
                 })
                 .collect();
             let frame = split::Frame {
@@ -691,10 +711,10 @@ impl<'a> Gen<'a> {
                 leave: "return;".into(),
             };
             let sig = edges::body_signature(&sname, p);
-            let head = cfmt!("{sig} {{\n{temps}{temp_init}");
-            let reserve = C_BYTES_PER_INSTR * self.part_limit;
+            let head = cfmt!("{sig} {{\n");
+            let reserve = C_BYTES_PER_INSTR.saturating_mul(self.part_limit);
             self.emit_parts(
-                c, &head, &scope, b.targets, &ast.body, plan, &frame, reserve,
+                c, &head, &temp_init, &scope, b.targets, &ast.body, plan, &frame, reserve,
             );
             c.push_str(&edges::wrapper(&sname, p));
             return;

@@ -62,8 +62,9 @@ pub struct Frame {
     pub self_param: String,
     /// The argument passed for it (`self, `), empty for a FUNCTION.
     pub self_arg: &'static str,
-    /// Frame members copied from the body function's locals of the same name: (declaration, name).
-    pub members: Vec<(String, String)>,
+    /// Frame members: (declaration, name, whether it is copied from the body function's parameter of
+    /// the same name; the others are initialised in the frame by the prelude).
+    pub members: Vec<(String, String, bool)>,
     /// The statement that leaves the body function (`return;`, `return fr.v_f;`).
     pub leave: String,
 }
@@ -208,14 +209,15 @@ impl Gen<'_> {
         Some(plan)
     }
 
-    /// Writes a split body: the frame struct, one function per part, then the body function, whose
-    /// text up to its locals is `head` (the signature line and the code that declares and initialises
-    /// the locals named in `frame.members`).
+    /// Writes a split body: the frame struct, one function per part, then the body function: `head`
+    /// (its signature line), the zeroed frame `fr`, `prelude` (the code that initialises the locals in
+    /// the frame), the copies of the parameters into the frame, and the calls of the parts.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn emit_parts(
         &mut self,
         c: &mut String,
         head: &str,
+        prelude: &str,
         scope: &Scope,
         targets: HashSet<String>,
         body: &[IlStmt],
@@ -244,7 +246,7 @@ impl Gen<'_> {
         }
         let fname = &frame.name;
         c.push_str("typedef struct {\n");
-        for (decl, _) in &frame.members {
+        for (decl, _, _) in &frame.members {
             let _ = writeln!(c, "    {decl};");
         }
         if scope.uses_en.get() {
@@ -313,7 +315,8 @@ impl Gen<'_> {
         }
         c.push_str(head);
         let _ = writeln!(c, "    {fname} fr;\n    memset(&fr, 0, sizeof fr);");
-        for (_, name) in &frame.members {
+        c.push_str(prelude);
+        for (_, name, _) in frame.members.iter().filter(|m| m.2) {
             let _ = writeln!(c, "    memcpy(&fr.{name}, &{name}, sizeof fr.{name});");
         }
         if scope.uses_en.get() {
