@@ -37,6 +37,10 @@ pub struct Body<'s, 'm> {
     cr_names: Vec<(Type, String)>,
     /// For a FUNCTION: the C expression returned by RET.
     pub ret: String,
+    /// In a part of a split body (see `split`): its index and the labels entered from another part.
+    pub part: Option<(usize, &'s super::split::PartLabels)>,
+    /// Set when a jump leaves the part (`next_ = <label>; goto exit_;`).
+    pub exits: bool,
 }
 
 impl<'s, 'm> Body<'s, 'm> {
@@ -51,6 +55,8 @@ impl<'s, 'm> Body<'s, 'm> {
             temps: 0,
             cr_names: Vec::new(),
             ret,
+            part: None,
+            exits: false,
         }
     }
     /// Appends one line of C, indented by the nesting level up to [`MAX_INDENT`] levels (deeper
@@ -219,8 +225,20 @@ impl<'a> Gen<'a> {
     fn instr(&mut self, b: &mut Body, i: &Instruction) {
         match &i.kind {
             InstrKind::Jump { cond, label } => {
-                let target = mangle::label(&label.name);
-                self.conditional(b, i, *cond, &cfmt!("goto {target};"));
+                let far = b.part.and_then(|(k, labels)| {
+                    labels
+                        .get(&label.key())
+                        .filter(|(p, _)| *p != k)
+                        .map(|x| x.1)
+                });
+                let stmt = match far {
+                    Some(id) => {
+                        b.exits = true;
+                        cfmt!("{{ next_ = {id}; goto exit_; }}")
+                    }
+                    None => cfmt!("goto {};", mangle::label(&label.name)),
+                };
+                self.conditional(b, i, *cond, &stmt);
             }
             InstrKind::Return { cond } => {
                 let ret = if b.ret.is_empty() {

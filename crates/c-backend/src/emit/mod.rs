@@ -15,6 +15,7 @@ mod method;
 mod overlaps;
 mod scan;
 mod scope;
+mod split;
 mod strings;
 mod values;
 
@@ -54,6 +55,8 @@ pub struct Gen<'a> {
     /// The position in `Model::instrs` after the last instruction looked up (bodies are read in
     /// source order, so that is usually where the next one is).
     pub(super) instr_cursor: usize,
+    /// Bodies of more instruction units are split into several C functions (see `split`).
+    pub(super) part_limit: usize,
 }
 
 impl<'a> Gen<'a> {
@@ -147,6 +150,7 @@ pub fn generate(
         reported: HashSet::new(),
         quiet: 0,
         instr_cursor: 0,
+        part_limit: split::part_limit(),
         address_spans: collect_address_spans(units),
         member_index: Default::default(),
         methods: ext.methods.clone(),
@@ -421,6 +425,42 @@ impl<'a> Gen<'a> {
         h.push_str("\n#endif\n");
     }
 
+    /// The frame members of a split FUNCTION: every variable with storage (outputs and in-outs as
+    /// pointers, as passed) and the result variable; the parameters passed by value or pointer are
+    /// copied from the parameter of the same name (flag `true`), the rest are initialised in the frame.
+    fn function_frame(&self, p: &il_frontend::sema::Pou) -> Vec<(String, String, bool)> {
+        let mut members = Vec::new();
+        for v in &p.vars {
+            if v.location.is_some() {
+                continue;
+            }
+            let name = mangle::var(&v.name);
+            let decl = match v.kind {
+                VarKind::Output | VarKind::InOut => ctypes::base(self.model, &v.ty)
+                    .map(|b| cfmt!("{b} (*{name}){}", ctypes::dims(&v.ty))),
+                VarKind::Input | VarKind::Local | VarKind::Temp => {
+                    ctypes::declare(self.model, &v.ty, &name)
+                }
+                _ => None,
+            };
+            let param = match v.kind {
+                VarKind::Input => !matches!(v.ty, Type::Array { .. }),
+                VarKind::Output | VarKind::InOut => true,
+                _ => false,
+            };
+            if let Some(d) = decl {
+                members.push((d, name, param));
+            }
+        }
+        if let Some(rt) = &p.return_type {
+            let name = mangle::var(&p.name);
+            if let Some(d) = ctypes::declare(self.model, rt, &name) {
+                members.push((d, name, false));
+            }
+        }
+        members
+    }
+
     fn pou_struct(&self, p: &il_frontend::sema::Pou) -> String {
         match p.kind {
             PouKind::Program => mangle::program(&p.name),
@@ -529,7 +569,11 @@ impl<'a> Gen<'a> {
     fn pou(&mut self, ast: &il_frontend::ast::Pou, id: PouId, c: &mut String) {
         let model: &'a Model = self.model;
         let p = model.pou(id);
-        let scope = Scope::for_pou(self.model.pou(id), id);
+        let mut scope = Scope::for_pou(self.model.pou(id), id);
+        let plan = self.plan_parts(&ast.body);
+        if plan.is_some() {
+            scope.frame();
+        }
         let mut targets = HashSet::new();
         jump_targets(&ast.body, &mut targets);
         if p.kind == PouKind::Function {
@@ -546,26 +590,37 @@ impl<'a> Gen<'a> {
             b.targets = targets;
             // locals and the result variable
             let mut pre = String::new();
+            // a split body keeps its locals in the frame `fr` only (see `split`)
+            let fr = if plan.is_some() { "fr." } else { "" };
             for v in &p.vars {
                 if v.kind == VarKind::Input && matches!(v.ty, Type::Array { .. }) {
                     let name = mangle::var(&v.name);
                     if let Some(d) = ctypes::declare(self.model, &v.ty, &name) {
-                        let _ = writeln!(pre, "    {d};");
-                        let _ = writeln!(pre, "    memcpy(&{name}, {name}__arg, sizeof {name});");
+                        if fr.is_empty() {
+                            let _ = writeln!(pre, "    {d};");
+                        }
+                        let _ = writeln!(
+                            pre,
+                            "    memcpy(&{fr}{name}, {name}__arg, sizeof {fr}{name});"
+                        );
                     }
                 }
             }
             for v in &p.vars {
-                if matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut) {
+                // (in a split body an array input has no local copy: its `__arg` is copied into `fr`)
+                let copied = v.kind == VarKind::Input && matches!(v.ty, Type::Array { .. });
+                if matches!(v.kind, VarKind::Input | VarKind::Output | VarKind::InOut)
+                    && (fr.is_empty() || !copied)
+                {
                     let _ = writeln!(pre, "    (void){};", mangle::var(&v.name));
                 }
             }
-            if let Some(rt) = &p.return_type {
+            if let Some(rt) = p.return_type.as_ref().filter(|_| fr.is_empty()) {
                 let d = ctypes::declare(self.model, rt, &ret_var).unwrap_or_default();
                 let _ = writeln!(pre, "    {d};");
                 let _ = writeln!(pre, "    memset(&{ret_var}, 0, sizeof {ret_var});");
             }
-            for v in &p.vars {
+            for v in p.vars.iter().filter(|_| fr.is_empty()) {
                 if matches!(v.kind, VarKind::Local | VarKind::Temp) && v.location.is_none() {
                     let name = mangle::var(&v.name);
                     if let Some(d) = ctypes::declare(self.model, &v.ty, &name) {
@@ -577,12 +632,34 @@ impl<'a> Gen<'a> {
             let mut init_code = String::new();
             for v in &p.vars {
                 if matches!(v.kind, VarKind::Local | VarKind::Temp) && v.location.is_none() {
-                    let lv = mangle::var(&v.name);
+                    let lv = cfmt!("{fr}{}", mangle::var(&v.name));
                     self.init_value(&mut init_code, 1, &lv, &v.ty, v.init.as_ref(), v.span);
                 }
             }
             if let Some(rt) = &p.return_type {
-                self.init_value(&mut init_code, 1, &ret_var, rt, None, p.span);
+                let lv = cfmt!("{fr}{ret_var}");
+                self.init_value(&mut init_code, 1, &lv, rt, None, p.span);
+            }
+            if let Some(plan) = &plan {
+                let frame = split::Frame {
+                    name: cfmt!("{}_FRAME", mangle::function(&p.name)),
+                    prefix: cfmt!("{}_PART_", mangle::function(&p.name)),
+                    self_param: String::new(),
+                    self_arg: "",
+                    members: self.function_frame(p),
+                    leave: if ret.is_empty() {
+                        "return;".into()
+                    } else {
+                        cfmt!("return fr.{ret};")
+                    },
+                };
+                let head = cfmt!("{sig} {{\n");
+                let prelude = cfmt!("{pre}{init_code}");
+                let reserve = C_BYTES_PER_INSTR.saturating_mul(self.part_limit);
+                self.emit_parts(
+                    c, &head, &prelude, &scope, b.targets, &ast.body, plan, &frame, reserve,
+                );
+                return;
             }
             let _ = writeln!(c, "{sig} {{");
             c.push_str(&pre);
@@ -628,11 +705,39 @@ impl<'a> Gen<'a> {
             }
         }
         let mut temp_init = String::new();
+        let fr = if plan.is_some() { "fr." } else { "" };
         for v in &p.vars {
             if v.kind == VarKind::Temp && v.location.is_none() {
-                let lv = mangle::var(&v.name);
+                let lv = cfmt!("{fr}{}", mangle::var(&v.name));
                 self.init_value(&mut temp_init, 1, &lv, &v.ty, v.init.as_ref(), v.span);
             }
+        }
+        if let Some(plan) = &plan {
+            let members = p
+                .vars
+                .iter()
+                .filter(|v| v.kind == VarKind::Temp && v.location.is_none())
+                .filter_map(|v| {
+                    let name = mangle::var(&v.name);
+                    ctypes::declare(self.model, &v.ty, &name).map(|d| (d, name, false))
+                })
+                .collect();
+            let frame = split::Frame {
+                name: cfmt!("{sname}_FRAME"),
+                prefix: cfmt!("{sname}_BODY_PART_"),
+                self_param: cfmt!("{sname} *self, "),
+                self_arg: "self, ",
+                members,
+                leave: "return;".into(),
+            };
+            let sig = edges::body_signature(&sname, p);
+            let head = cfmt!("{sig} {{\n");
+            let reserve = C_BYTES_PER_INSTR.saturating_mul(self.part_limit);
+            self.emit_parts(
+                c, &head, &temp_init, &scope, b.targets, &ast.body, plan, &frame, reserve,
+            );
+            c.push_str(&edges::wrapper(&sname, p));
+            return;
         }
         let _ = writeln!(c, "{} {{", edges::body_signature(&sname, p));
         c.push_str(&temps);

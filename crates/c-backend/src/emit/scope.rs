@@ -49,6 +49,8 @@ pub struct Scope<'m> {
     pub config: Option<(usize, usize)>,
     /// Set when the body reads or writes the implicit `EN` / `ENO`.
     pub uses_en: std::cell::Cell<bool>,
+    /// A split body (see `split`): the C locals of the POU live in the frame `fr`.
+    framed: bool,
 }
 
 impl<'m> Scope<'m> {
@@ -71,6 +73,29 @@ impl<'m> Scope<'m> {
             externals: pou.externals.iter().copied().collect(),
             config: None,
             uses_en: std::cell::Cell::new(false),
+            framed: false,
+        }
+    }
+    /// For a split body: the POU's C locals (VAR_TEMP; every variable of a FUNCTION, its result, and
+    /// `EN`/`ENO`) are read through the frame pointer `fr` of the part functions.
+    pub fn frame(&mut self) {
+        let Some((pou, _)) = self.pou else { return };
+        for (i, v) in pou.vars.iter().enumerate() {
+            let name = mangle::var(&v.name);
+            self.lvalues[i] = match (pou.kind, v.kind) {
+                (PouKind::Function, VarKind::Output | VarKind::InOut) => cfmt!("(*fr->{name})"),
+                (PouKind::Function, _) | (_, VarKind::Temp) => cfmt!("fr->{name}"),
+                _ => continue,
+            };
+        }
+        self.framed = true;
+    }
+    /// The C name of a local of the body function (`fr->` in front when the body is split).
+    fn local(&self, name: String) -> String {
+        if self.framed {
+            cfmt!("fr->{name}")
+        } else {
+            name
         }
     }
     pub fn for_config(config: usize, resource: usize) -> Self {
@@ -81,6 +106,7 @@ impl<'m> Scope<'m> {
             externals: HashMap::new(),
             config: Some((config, resource)),
             uses_en: std::cell::Cell::new(false),
+            framed: false,
         }
     }
 }
@@ -203,7 +229,7 @@ impl Gen<'_> {
             if pou.kind == PouKind::Function && pou.name.eq_ignore_ascii_case(&name.name) {
                 if let Some(rt) = &pou.return_type {
                     return Some(Some(Place::Mem {
-                        lv: mangle::var(&pou.name),
+                        lv: scope.local(mangle::var(&pou.name)),
                         ty: rt.clone(),
                     }));
                 }
@@ -219,7 +245,7 @@ impl Gen<'_> {
             if key == "EN" || key == "ENO" {
                 scope.uses_en.set(true);
                 return Some(Some(Place::Mem {
-                    lv: mangle::var(&key),
+                    lv: scope.local(mangle::var(&key)),
                     ty: Type::BOOL,
                 }));
             }
