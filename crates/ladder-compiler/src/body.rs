@@ -56,16 +56,7 @@ pub fn lower_pou_body(
     if lang.name != "SFC" && (lang.name != "ST" || used) {
         acts = lower_actions(ctx, index, pou_el, pou, lang.name, &mut st_actions);
     }
-    let pou_vars: HashSet<String> = pou
-        .var_blocks
-        .iter()
-        .flat_map(|b| b.vars.iter())
-        .map(|v| v.name.key())
-        .collect();
-    let is_var = |n: &str| {
-        let k = n.to_ascii_uppercase();
-        pou_vars.contains(&k) || index.globals.contains_key(&k)
-    };
+    let is_var = var_test(pou, index);
     let mut next = 0;
     let mut inline = |ctx: &mut Ctx, stmts: Vec<IlStmt>| {
         if acts.il.is_empty() {
@@ -265,16 +256,7 @@ fn lower_actions<'e, 'a>(
     if raw.is_empty() {
         return out;
     }
-    let pou_vars: HashSet<String> = pou
-        .var_blocks
-        .iter()
-        .flat_map(|b| b.vars.iter())
-        .map(|v| v.name.key())
-        .collect();
-    let is_var = |n: &str| {
-        let k = n.to_ascii_uppercase();
-        pou_vars.contains(&k) || index.globals.contains_key(&k)
-    };
+    let is_var = var_test(pou, index);
     let raw_map: HashMap<String, Vec<IlStmt>> =
         raw.iter().map(|(n, b)| (n.key(), b.clone())).collect();
     let mut next = 0;
@@ -299,4 +281,18 @@ fn lower_actions<'e, 'a>(
         out.names.push(n);
     }
     out
+}
+
+/// Whether a name is one of `pou`'s variables or a global of the project (case-insensitive).
+fn var_test<'i>(pou: &Pou, index: &'i Index) -> impl Fn(&str) -> bool + 'i {
+    let pou_vars: HashSet<String> = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .map(|v| v.name.key())
+        .collect();
+    move |n: &str| {
+        let k = n.to_ascii_uppercase();
+        pou_vars.contains(&k) || index.globals.contains_key(&k)
+    }
 }

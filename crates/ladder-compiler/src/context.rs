@@ -87,6 +87,18 @@ impl<'a> Ctx<'a> {
     pub fn report(&mut self, d: Diagnostic) {
         self.diags.push(d);
     }
+    /// Reports `d`, placed in POU `pou` when it has no XML context of its own.
+    pub fn report_in_pou(&mut self, d: Diagnostic, pou: &str) {
+        let d = if d.xml.is_none() {
+            d.with_xml(diagnostics::XmlContext {
+                pou: Some(pou.to_string()),
+                ..Default::default()
+            })
+        } else {
+            d
+        };
+        self.diags.push(d);
+    }
     /// Reports error `code` at `span`.
     pub fn error(&mut self, code: Code, span: Span, msg: impl Into<String>) {
         self.diags.push(Diagnostic::error(code, msg).at(span));

@@ -182,15 +182,7 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             let action =
                 il_frontend::st::file::lower_method(ctx.file, decls, &mut pou, m, &mut local);
             for d in local {
-                let d = if d.xml.is_none() {
-                    d.with_xml(XmlContext {
-                        pou: Some(pou.name.name.clone()),
-                        ..Default::default()
-                    })
-                } else {
-                    d
-                };
-                ctx.report(d);
+                ctx.report_in_pou(d, &pou.name.name);
             }
             ctx.actions.extend(action);
         }

@@ -94,15 +94,7 @@ pub fn lower(
         ctx.actions.push(a);
     }
     for d in local {
-        let d = if d.xml.is_none() {
-            d.with_xml(XmlContext {
-                pou: Some(pou.name.name.clone()),
-                ..Default::default()
-            })
-        } else {
-            d
-        };
-        ctx.report(d);
+        ctx.report_in_pou(d, &pou.name.name);
     }
     (body, temps)
 }
