@@ -542,12 +542,10 @@ fn parse_quick_xml<'a>(
     arena: &'a Arena,
 ) -> (Option<Element<'a>>, Option<XmlError>) {
     // quick-xml drops a byte-order mark at the start of what it reads without counting it in its
-    // positions; a second mark (the caller strips the first) is skipped here so that every position
-    // stays a byte offset into `body` on a character boundary.
-    let (body, base) = match body.strip_prefix('\u{feff}') {
-        Some(rest) => (rest, base + 3),
-        None => (body, base),
-    };
+    // positions; further marks (the caller strips the first) are skipped here, however many, so
+    // that every position stays a byte offset into `body` on a character boundary.
+    let rest = body.trim_start_matches('\u{feff}');
+    let (body, base) = (rest, base + (body.len() - rest.len()));
     let mut reader = Reader::from_str(body);
     reader.config_mut().trim_text(false);
     let mut tree = Builder::new(arena);
@@ -899,6 +897,8 @@ mod tests {
         // quick-xml must not be handed a leading mark (it drops it and its positions shift).
         for xml in [
             "\u{feff}\u{feff}A",
+            "\u{feff}\u{feff}\u{feff}EJ",
+            "\u{feff}\u{feff}\u{feff}\u{feff}<a>x</a>",
             "\u{feff}\u{feff}<a>x</a>",
             "\u{feff}\u{feff}<a><![CDATA[\u{e9}]]></a>",
         ] {
