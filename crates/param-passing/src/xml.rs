@@ -76,7 +76,9 @@ pub const MAX_DEPTH: usize = 256;
 
 /// Parses `text` into an element tree.
 pub fn parse(file: FileId, text: &str) -> Result<Element, Box<Diagnostic>> {
-    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+    // Every leading byte-order mark is skipped: quick-xml drops one at the start of what it reads
+    // without counting it in its positions, which would shift every span after it.
+    let body = text.trim_start_matches('\u{feff}');
     let bom = text.len() - body.len();
     let mut reader = Reader::from_str(body);
     reader.config_mut().trim_text(false);
