@@ -560,62 +560,6 @@ fn inline_rec(
     out
 }
 
-/// Renames variables in `stmts` in place: every variable whose base name's upper-case key is in
-/// `map` gets the new base name (accessors and index operands kept and renamed too). Labels,
-/// function names and formal parameter names are left alone. Used for the variables of a METHOD,
-/// which become hidden variables of its function block.
-pub fn rename_vars(stmts: &mut [IlStmt], map: &HashMap<String, String>) {
-    fn var(v: &mut VarRef, map: &HashMap<String, String>) {
-        for a in &mut v.accessors {
-            if let Accessor::Index(ix) = a {
-                ix.iter_mut().for_each(|o| operand(o, map));
-            }
-        }
-        if let Some(new) = map.get(&v.base.key()) {
-            v.base.name = new.clone();
-        }
-    }
-    fn operand(o: &mut Operand, map: &HashMap<String, String>) {
-        if let Operand::Var(v) = o {
-            var(v, map);
-        }
-    }
-    fn args(a: &mut CallArgs, map: &HashMap<String, String>) {
-        match a {
-            CallArgs::None => {}
-            CallArgs::NonFormal(ops) => ops.iter_mut().for_each(|o| operand(o, map)),
-            CallArgs::Formal(f) => f.iter_mut().for_each(|a| operand(&mut a.value, map)),
-        }
-    }
-    for s in stmts {
-        let IlStmt::Instr(i) = s else { continue };
-        match &mut i.kind {
-            InstrKind::Simple { operand: o, .. } => {
-                if let Some(o) = o {
-                    operand(o, map);
-                }
-            }
-            InstrKind::Deferred {
-                operand: o, body, ..
-            } => {
-                if let Some(o) = o {
-                    operand(o, map);
-                }
-                rename_vars(body, map);
-            }
-            InstrKind::Call {
-                instance, args: a, ..
-            } => {
-                var(instance, map);
-                args(a, map);
-            }
-            InstrKind::FunctionCall { args: a, .. } => args(a, map),
-            InstrKind::FbInput { instance, .. } => var(instance, map),
-            InstrKind::Jump { .. } | InstrKind::Return { .. } | InstrKind::EmbeddedC { .. } => {}
-        }
-    }
-}
-
 /// The hidden variable of a method's parameter or local `var`: `__M_<METHOD>_<VAR>`.
 pub fn method_var(method: &str, var: &str) -> String {
     format!(

@@ -22,6 +22,7 @@ pub mod lexer;
 pub mod literal;
 pub mod parser;
 pub mod print;
+pub mod rename;
 pub mod sema;
 pub mod st;
 pub mod testgen;

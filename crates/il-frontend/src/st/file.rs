@@ -970,7 +970,7 @@ pub fn lower_method(
     m: &PendingMethod,
     diags: &mut Diagnostics,
 ) -> Option<crate::ast::Action> {
-    use crate::actions::{instantiate, method_result, method_var, rename_vars, METHOD_PREFIX};
+    use crate::actions::{instantiate, method_result, method_var, METHOD_PREFIX};
     use crate::ast::{VarBlock, VarKind};
     let mut own: Vec<VarBlock> = m.blocks.clone();
     if let Some(r) = &m.ret {
@@ -1012,7 +1012,11 @@ pub fn lower_method(
         t.kind = VarKind::Temp;
         p.var_blocks.push(t);
     }
-    rename_vars(&mut body, &rename);
+    crate::rename::Renames {
+        bases: rename,
+        ..Default::default()
+    }
+    .apply(&mut body);
     let body = instantiate(
         &body,
         &format!("{}_L", method_result(&m.name.name)),

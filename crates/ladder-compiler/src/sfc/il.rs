@@ -11,7 +11,9 @@ use il_frontend::ast::{
     Instruction, Literal, LiteralKind, Op, Operand, TypeRef, VarDecl, VarRef,
 };
 use il_frontend::Span;
-use std::collections::{HashMap, HashSet};
+
+pub use il_frontend::rename::Renames;
+use std::collections::HashSet;
 
 /// The variable `name` as an operand.
 pub fn var(name: &str, span: Span) -> Operand {
@@ -168,88 +170,6 @@ impl Hidden {
     pub fn push(&mut self, d: VarDecl) {
         if self.names.insert(d.name.key()) {
             self.vars.push(d);
-        }
-    }
-}
-
-/// What the renaming pass maps.
-#[derive(Default)]
-pub struct Renames {
-    /// Upper-case base name -> new base name (whole variable, accessors kept).
-    pub bases: HashMap<String, String>,
-    /// (upper-case base, upper-case field) -> new variable (the accessor is dropped): `Step.X`.
-    pub fields: HashMap<(String, String), String>,
-    /// Prefix for every label and jump target (empty: labels kept).
-    pub label_prefix: String,
-}
-
-impl Renames {
-    /// Renames every name and label of `stmts` in place.
-    pub fn apply(&self, stmts: &mut [IlStmt]) {
-        for s in stmts {
-            match s {
-                IlStmt::Label(l) => self.label(l),
-                IlStmt::Instr(i) => self.instr(&mut i.kind),
-            }
-        }
-    }
-    fn label(&self, l: &mut Ident) {
-        if !self.label_prefix.is_empty() {
-            l.name = format!("{}{}", self.label_prefix, l.name);
-        }
-    }
-    fn instr(&self, k: &mut InstrKind) {
-        match k {
-            InstrKind::Simple { operand, .. } => {
-                if let Some(o) = operand {
-                    self.operand(o);
-                }
-            }
-            InstrKind::Deferred { operand, body, .. } => {
-                if let Some(o) = operand {
-                    self.operand(o);
-                }
-                self.apply(body);
-            }
-            InstrKind::Jump { label, .. } => self.label(label),
-            InstrKind::Return { .. } | InstrKind::EmbeddedC { .. } => {}
-            InstrKind::Call { instance, args, .. } => {
-                self.var(instance);
-                self.args(args);
-            }
-            InstrKind::FunctionCall { args, .. } => self.args(args),
-            InstrKind::FbInput { instance, .. } => self.var(instance),
-        }
-    }
-    fn args(&self, a: &mut CallArgs) {
-        match a {
-            CallArgs::None => {}
-            CallArgs::NonFormal(ops) => ops.iter_mut().for_each(|o| self.operand(o)),
-            CallArgs::Formal(f) => f.iter_mut().for_each(|a| self.operand(&mut a.value)),
-        }
-    }
-    /// Renames the variable of one operand (indexes included).
-    pub fn operand(&self, o: &mut Operand) {
-        if let Operand::Var(v) = o {
-            self.var(v);
-        }
-    }
-    fn var(&self, v: &mut VarRef) {
-        for a in &mut v.accessors {
-            if let Accessor::Index(ix) = a {
-                ix.iter_mut().for_each(|o| self.operand(o));
-            }
-        }
-        let key = v.base.key();
-        if let [Accessor::Field(f)] = v.accessors.as_slice() {
-            if let Some(new) = self.fields.get(&(key.clone(), f.key())) {
-                v.base.name = new.clone();
-                v.accessors.clear();
-                return;
-            }
-        }
-        if let Some(new) = self.bases.get(&key) {
-            v.base.name = new.clone();
         }
     }
 }
