@@ -89,7 +89,7 @@ impl Gen<'_> {
                     return;
                 };
                 Some(if c == Condition::IfTrue {
-                    cr
+                    cr.to_string()
                 } else {
                     cfmt!("!{cr}")
                 })

@@ -6,7 +6,7 @@
 //! runtime helpers; array indexes go through `ladderc_index` (out-of-range: element 0 and an error flag);
 //! every produced expression is fully parenthesised.
 
-use super::values::{access_bytes, convert, load_expr, store_expr};
+use super::values::{access_bytes, convert_owned, load_expr, store_expr};
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;
@@ -529,11 +529,11 @@ impl Gen<'_> {
             .find_map(find)
     }
 
-    /// Reads a place as a value of type `want`.
-    pub fn read(&self, place: &Place, want: &Type) -> String {
+    /// Reads a place as a value of type `want` (the place's lvalue text is reused).
+    pub fn read_owned(&self, place: Place, want: &Type) -> String {
         match place {
-            Place::Mem { lv, ty } => convert(lv, ty, want),
-            Place::Loc { loc, ty } => convert(&load_expr(loc, ty), ty, want),
+            Place::Mem { lv, ty } => convert_owned(lv, &ty, want),
+            Place::Loc { loc, ty } => convert_owned(load_expr(&loc, &ty), &ty, want),
         }
     }
 
@@ -568,8 +568,8 @@ impl Gen<'_> {
             Operand::Address(a) => {
                 let e = il_frontend::sema::Location::of(a).elementary();
                 match self.profile.locate(a, None) {
-                    Ok(loc) => Some(convert(
-                        &load_expr(&loc, &Type::Elementary(e)),
+                    Ok(loc) => Some(convert_owned(
+                        load_expr(&loc, &Type::Elementary(e)),
                         &Type::Elementary(e),
                         want,
                     )),
@@ -608,7 +608,7 @@ impl Gen<'_> {
                     }
                 }
                 let p = self.place(scope, r)?;
-                Some(self.read(&p, want))
+                Some(self.read_owned(p, want))
             }
         }
     }
