@@ -81,12 +81,13 @@ impl<'m> Scope<'m> {
     pub fn frame(&mut self) {
         let Some((pou, _)) = self.pou else { return };
         for (i, v) in pou.vars.iter().enumerate() {
-            let name = mangle::var(&v.name);
-            self.lvalues[i] = match (pou.kind, v.kind) {
-                (PouKind::Function, VarKind::Output | VarKind::InOut) => cfmt!("(*fr->{name})"),
-                (PouKind::Function, _) | (_, VarKind::Temp) => cfmt!("fr->{name}"),
+            // Only a function's variables and temporaries move into the frame: no name for the rest.
+            let (open, close) = match (pou.kind, v.kind) {
+                (PouKind::Function, VarKind::Output | VarKind::InOut) => ("(*fr->", ")"),
+                (PouKind::Function, _) | (_, VarKind::Temp) => ("fr->", ""),
                 _ => continue,
             };
+            self.lvalues[i] = cfmt!("{open}{}{close}", mangle::var(&v.name));
         }
         self.framed = true;
     }
