@@ -63,11 +63,15 @@ impl<'s, 'm> Body<'s, 'm> {
     /// Appends one line of C, indented by the nesting level up to [`MAX_INDENT`] levels (deeper
     /// blocks stay at that column, so the C grows linearly with the IL however deep `ADD(` nests).
     pub fn line(&mut self, text: &str) {
+        self.begin_line();
+        self.out.push_str(text);
+        self.out.push('\n');
+    }
+    /// Starts a line: its indentation (see [`Body::line`]).
+    pub fn begin_line(&mut self) {
         for _ in 0..self.indent.min(MAX_INDENT) {
             self.out.push_str("    ");
         }
-        self.out.push_str(text);
-        self.out.push('\n');
     }
     /// [`Body::line`] for formatted text, written straight into the body (no `String` per line).
     pub fn line_fmt(&mut self, args: std::fmt::Arguments) {
@@ -381,8 +385,7 @@ impl<'a> Gen<'a> {
                 } else {
                     convert(&cr, &ty, place.ty())
                 };
-                let stmt = self.store(&place, &v);
-                b.line(&stmt);
+                self.store_line(b, &place, &v);
             }
             Op::S | Op::R => {
                 if let Some(Callee::FbInstance {

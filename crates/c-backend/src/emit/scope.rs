@@ -540,26 +540,50 @@ impl Gen<'_> {
 
     /// A statement storing `value` (a C expression of the place's type) into `place`.
     pub fn store(&self, place: &Place, value: &str) -> String {
+        let mut s = String::with_capacity(64);
+        self.write_store(&mut s, place, value);
+        s
+    }
+
+    /// [`Gen::store`], written at the end of `out`.
+    pub fn write_store(&self, out: &mut String, place: &Place, value: &str) {
+        use std::fmt::Write as _;
         match place {
             Place::Mem { lv, ty } => match ty {
                 Type::String { wide: false, .. } => {
-                    cfmt!(
+                    let _ = write!(
+                        out,
                         "{lv} = ladderc_str_cap({value}, {});",
                         ctypes::string_cap(ty)
-                    )
+                    );
                 }
                 Type::String { wide: true, .. } => {
-                    cfmt!(
+                    let _ = write!(
+                        out,
                         "{lv} = ladderc_wstr_cap({value}, {});",
                         ctypes::string_cap(ty)
-                    )
+                    );
                 }
                 // C arrays do not assign: a whole array (`b := a`, an array input) is copied
-                Type::Array { .. } => cfmt!("memcpy({lv}, {value}, sizeof {lv});"),
-                _ => cfmt!("{lv} = {value};"),
+                Type::Array { .. } => {
+                    let _ = write!(out, "memcpy({lv}, {value}, sizeof {lv});");
+                }
+                _ => {
+                    out.push_str(lv);
+                    out.push_str(" = ");
+                    out.push_str(value);
+                    out.push(';');
+                }
             },
-            Place::Loc { loc, ty } => store_expr(loc, ty, value),
+            Place::Loc { loc, ty } => out.push_str(&store_expr(loc, ty, value)),
         }
+    }
+
+    /// [`Gen::store`] as one line of `b` (written in place).
+    pub(super) fn store_line(&self, b: &mut super::body::Body, place: &Place, value: &str) {
+        b.begin_line();
+        self.write_store(&mut b.out, place, value);
+        b.out.push('\n');
     }
 
     /// An operand's value as a C expression of type `want`.
