@@ -16,7 +16,7 @@ pub fn core(name: &str) -> String {
     s
 }
 
-/// Appends [`core`]`(name)` to `s`.
+/// Appends [`core()`] of `name` to `s`.
 pub fn push_core(s: &mut String, name: &str) {
     if !name.is_empty() && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
         s.reserve(name.len());
@@ -32,7 +32,7 @@ pub fn push_core(s: &mut String, name: &str) {
     }
 }
 
-/// `prefix` followed by [`core`]`(name)`, in one allocation.
+/// `prefix` followed by [`core()`] of `name`, in one allocation.
 fn prefixed(prefix: &str, name: &str) -> String {
     let mut s = String::with_capacity(prefix.len() + name.len() + 1);
     s.push_str(prefix);
