@@ -7,51 +7,66 @@
 //! octal escapes for everything but letters, digits and a few harmless punctuation marks, so no user text can end a C literal or
 //! comment; user comments are never copied.
 
-use std::fmt::Write as _;
-
 /// The case-insensitive core of an identifier: lower-case letters, digits and `_` for ordinary IEC names;
 /// for anything else, `X` followed by the upper-case hex of the upper-cased UTF-8 bytes. Plain cores never
 /// contain upper-case letters, so the two forms cannot collide.
 pub fn core(name: &str) -> String {
+    let mut s = String::new();
+    push_core(&mut s, name);
+    s
+}
+
+/// Appends [`core()`] of `name` to `s`.
+pub fn push_core(s: &mut String, name: &str) {
     if !name.is_empty() && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
-        name.to_ascii_lowercase()
+        s.reserve(name.len());
+        s.extend(name.chars().map(|c| c.to_ascii_lowercase()));
     } else {
-        let mut s = String::with_capacity(1 + 2 * name.len());
+        const HEX: &[u8; 16] = b"0123456789ABCDEF";
+        s.reserve(1 + 2 * name.len());
         s.push('X');
-        for b in name.to_ascii_uppercase().bytes() {
-            let _ = write!(s, "{b:02X}");
+        for b in name.bytes().map(|b| b.to_ascii_uppercase()) {
+            s.push(HEX[usize::from(b >> 4)] as char);
+            s.push(HEX[usize::from(b & 15)] as char);
         }
-        s
     }
+}
+
+/// `prefix` followed by [`core()`] of `name`, in one allocation.
+fn prefixed(prefix: &str, name: &str) -> String {
+    let mut s = String::with_capacity(prefix.len() + name.len() + 1);
+    s.push_str(prefix);
+    push_core(&mut s, name);
+    s
 }
 
 /// A variable, parameter or struct field.
 pub fn var(name: &str) -> String {
-    format!("v_{}", core(name))
+    prefixed("v_", name)
 }
 /// A user function block's instance struct (`FB_x`), its init (`FB_x_INIT`) and body (`FB_x_BODY`).
 pub fn fb(name: &str) -> String {
-    format!("FB_{}", core(name))
+    prefixed("FB_", name)
 }
 /// A program's instance struct.
 pub fn program(name: &str) -> String {
-    format!("P_{}", core(name))
+    prefixed("P_", name)
 }
 /// A user function.
 pub fn function(name: &str) -> String {
-    format!("F_{}", core(name))
+    prefixed("F_", name)
 }
 /// A user data type.
 pub fn user_type(name: &str) -> String {
-    format!("T_{}", core(name))
+    prefixed("T_", name)
 }
 /// A jump label.
 pub fn label(name: &str) -> String {
-    format!("L_{}", core(name))
+    prefixed("L_", name)
 }
 /// A global variable: free globals `g_x`, configuration globals `gc<c>_x`, resource globals `gr<c>_<r>_x`.
 pub fn global_free(name: &str) -> String {
-    format!("g_{}", core(name))
+    prefixed("g_", name)
 }
 /// A configuration global: `gc<c>_x`.
 pub fn global_config(config: usize, name: &str) -> String {
@@ -67,7 +82,7 @@ pub fn program_instance(config: usize, resource: usize, name: &str) -> String {
 }
 /// The implicit instance of a program: `pi_name`.
 pub fn implicit_instance(name: &str) -> String {
-    format!("pi_{}", core(name))
+    prefixed("pi_", name)
 }
 
 /// C keywords (C99 and later) and names the generated code or the runtime reserve for themselves.
@@ -158,7 +173,10 @@ pub fn c_string(bytes: &[u8]) -> String {
         if b.is_ascii_alphanumeric() || b" ._,[]%#:-+=".contains(&b) {
             s.push(b as char);
         } else {
-            let _ = write!(s, "\\{b:03o}");
+            s.push('\\');
+            s.push(char::from(b'0' + (b >> 6)));
+            s.push(char::from(b'0' + ((b >> 3) & 7)));
+            s.push(char::from(b'0' + (b & 7)));
         }
     }
     s.push('"');
@@ -176,6 +194,49 @@ mod tests {
         assert_eq!(var("int"), "v_int");
         assert_eq!(fb("main"), "FB_main");
         assert_eq!(label("end"), "L_end");
+    }
+
+    /// The byte-by-byte writers give the text of their `format!` definitions.
+    #[test]
+    fn direct_writers_equal_their_format_definitions() {
+        use std::fmt::Write as _;
+        let fmt_core = |name: &str| {
+            if !name.is_empty() && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+                name.to_ascii_lowercase()
+            } else {
+                let mut s = String::from("X");
+                for b in name.to_ascii_uppercase().bytes() {
+                    let _ = write!(s, "{b:02X}");
+                }
+                s
+            }
+        };
+        for name in [
+            "Count",
+            "a_B9",
+            "",
+            "a-b",
+            "Zähler",
+            "x y\n",
+            "\u{7f}\u{1F600}",
+            "_",
+        ] {
+            assert_eq!(core(name), fmt_core(name), "{name:?}");
+            assert_eq!(var(name), format!("v_{}", fmt_core(name)));
+            assert_eq!(label(name), format!("L_{}", fmt_core(name)));
+            assert_eq!(implicit_instance(name), format!("pi_{}", fmt_core(name)));
+        }
+        let all: Vec<u8> = (0..=255).collect();
+        let mut want = String::from("\"");
+        for &b in &all {
+            if b.is_ascii_alphanumeric() || b" ._,[]%#:-+=".contains(&b) {
+                want.push(b as char);
+            } else {
+                let _ = write!(want, "\\{b:03o}");
+            }
+        }
+        want.push('"');
+        assert_eq!(c_string(&all), want);
     }
 
     #[test]

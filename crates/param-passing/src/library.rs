@@ -8,7 +8,8 @@
 
 use crate::cbody::{self, Scope};
 use crate::template::{self, Template};
-use diagnostics::{code, Diagnostic, Diagnostics, SourceMap};
+use diagnostics::{code, Diagnostic, Diagnostics, FileId, SourceMap};
+use std::cell::OnceCell;
 use std::collections::BTreeSet;
 use std::path::Path;
 
@@ -149,9 +150,17 @@ pub const BUILTIN: &[(&str, &str)] = &[
 ];
 
 /// The parameter templates a program can call, by block name: the built-ins and the user's.
+///
+/// The built-ins are read on first use: [`Library::builtin`] registers their files in the source map
+/// (so file ids do not depend on whether a program uses a block), and their XML is parsed only when a
+/// lookup names a built-in block, when every template is asked for, or when a template is added.
 #[derive(Debug, Default, Clone)]
 pub struct Library {
-    templates: Vec<Template>,
+    /// The built-ins not read yet: their file ids and indexes into [`BUILTIN`] (each block's name is
+    /// its file's stem, test `builtin_block_names_are_their_file_stems`).
+    pending: Vec<(FileId, usize)>,
+    /// Every template once the pending built-ins are read (they come first, in [`BUILTIN`] order).
+    templates: OnceCell<Vec<Template>>,
 }
 
 impl Library {
@@ -160,12 +169,45 @@ impl Library {
         Self::default()
     }
     /// Loads the built-in templates.
+    /// Their files are added to `map` now; their XML is read on first use (a built-in template
+    /// reports no diagnostics: `diags` is kept for the signature).
     pub fn builtin(map: &mut SourceMap, diags: &mut Diagnostics) -> Self {
-        let mut lib = Library::new();
-        for (name, text) in BUILTIN {
-            lib.add_text(map, &format!("templates/{name}"), text, diags);
+        let _ = diags;
+        let pending = BUILTIN
+            .iter()
+            .enumerate()
+            .map(|(k, (name, text))| (map.add(format!("templates/{name}"), *text), k))
+            .collect();
+        Library {
+            pending,
+            templates: OnceCell::new(),
         }
-        lib
+    }
+
+    /// Every template, the pending built-ins read first.
+    fn all(&self) -> &Vec<Template> {
+        self.templates.get_or_init(|| {
+            let mut quiet = Diagnostics::new();
+            let out: Vec<Template> = self
+                .pending
+                .iter()
+                .filter_map(|&(file, k)| template::load(file, BUILTIN[k].1, &mut quiet))
+                .collect();
+            debug_assert!(quiet.is_empty(), "a built-in template reported diagnostics");
+            out
+        })
+    }
+
+    /// [`Library::all`], to change.
+    fn all_mut(&mut self) -> &mut Vec<Template> {
+        self.all();
+        self.pending.clear();
+        self.templates.get_mut().expect("read just above")
+    }
+
+    /// The block name of a pending built-in (its file's stem).
+    fn pending_block(k: usize) -> &'static str {
+        BUILTIN[k].0.strip_suffix(".xml").unwrap_or(BUILTIN[k].0)
     }
     /// Loads every `*.xml` of `dir` (sorted by name); they replace built-ins of the same block name. Each is
     /// checked in full, its function compiled alone with the C compiler ([`Library::add_user_texts`]).
@@ -231,12 +273,13 @@ impl Library {
             }
         }
         let runtime = runtime_symbol_set();
-        let embedded: BTreeSet<String> = self.templates.iter().map(|t| t.block.clone()).collect();
+        let templates = self.all_mut();
+        let embedded: BTreeSet<String> = templates.iter().map(|t| t.block.clone()).collect();
         for block in added {
-            let Some(k) = self.templates.iter().position(|t| t.block == block) else {
+            let Some(k) = templates.iter().position(|t| t.block == block) else {
                 continue;
             };
-            let t = &self.templates[k];
+            let t = &templates[k];
             let clean = cbody::check(
                 &t.body,
                 &Self::scope(t, runtime, &embedded),
@@ -244,7 +287,7 @@ impl Library {
                 diags,
             ) && (!compile_c || crate::ccheck::compile(t, diags));
             if !clean {
-                self.templates.remove(k);
+                templates.remove(k);
             }
         }
     }
@@ -275,27 +318,36 @@ impl Library {
     ) -> Option<String> {
         let file = map.add(name, text);
         let t = template::load(file, text, diags)?;
-        self.templates
-            .retain(|old| !old.block.eq_ignore_ascii_case(&t.block));
+        let templates = self.all_mut();
+        templates.retain(|old| !old.block.eq_ignore_ascii_case(&t.block));
         let block = t.block.clone();
-        self.templates.push(t);
+        templates.push(t);
         Some(block)
     }
-    /// The template of `block` (case-insensitive).
+    /// The template of `block` (case-insensitive). Reads the built-ins only when `block` is one of
+    /// their names.
     pub fn get(&self, block: &str) -> Option<&Template> {
-        self.templates
+        if self.templates.get().is_none()
+            && !self
+                .pending
+                .iter()
+                .any(|&(_, k)| Self::pending_block(k).eq_ignore_ascii_case(block))
+        {
+            return None;
+        }
+        self.all()
             .iter()
             .find(|t| t.block.eq_ignore_ascii_case(block))
     }
     /// Every template.
     pub fn templates(&self) -> &[Template] {
-        &self.templates
+        self.all()
     }
     /// Checks every body against its head and the runtime symbols (see [`crate::cbody`]).
     pub fn check_bodies(&self, runtime: &BTreeSet<String>, diags: &mut Diagnostics) -> bool {
-        let embedded: BTreeSet<String> = self.templates.iter().map(|t| t.block.clone()).collect();
+        let embedded: BTreeSet<String> = self.all().iter().map(|t| t.block.clone()).collect();
         let mut clean = true;
-        for t in &self.templates {
+        for t in self.all() {
             clean &= cbody::check(
                 &t.body,
                 &Self::scope(t, runtime, &embedded),
@@ -309,7 +361,7 @@ impl Library {
     /// Compiles every template's function alone (see [`crate::ccheck`]); the test of the built-in templates.
     pub fn compile_all(&self, diags: &mut Diagnostics) -> bool {
         let mut clean = true;
-        for t in &self.templates {
+        for t in self.all() {
             clean &= crate::ccheck::compile(t, diags);
         }
         clean

@@ -39,6 +39,33 @@ fn every_builtin_template_loads_and_its_body_checks_clean() {
     }
 }
 
+/// `Library::builtin` reads the built-ins lazily and answers `get` for a name that is no built-in's file
+/// stem without reading them: that holds only if every built-in's block name is its file's stem, and
+/// each loads without diagnostics.
+#[test]
+fn builtin_block_names_are_their_file_stems() {
+    let mut map = SourceMap::new();
+    for (name, text) in library::BUILTIN {
+        let mut diags = Diagnostics::new();
+        let file = map.add(*name, *text);
+        let t = param_passing::template::load(file, text, &mut diags).expect(name);
+        assert!(
+            diags.is_empty(),
+            "{}",
+            render(&map, &diags.into_vec(), MessageFormat::Short)
+        );
+        assert_eq!(Some(t.block.as_str()), name.strip_suffix(".xml"), "{name}");
+    }
+    // A lookup reads them only for a built-in's name, and finds it whatever its case.
+    let (_, lib, _) = builtin();
+    assert!(lib.get("TON").is_none());
+    assert_eq!(
+        lib.get("mc_stop").map(|t| t.block.as_str()),
+        Some("MC_Stop")
+    );
+    assert!(lib.get("TON").is_none());
+}
+
 #[test]
 fn move_absolute_tm_layout_is_reported_with_its_size() {
     let (_, lib, _) = builtin();

@@ -8,7 +8,7 @@
 //! `goto L_<label>`; only labels that are jumped to are emitted; work is linear in the body's size (indentation stops growing at `MAX_INDENT` levels).
 
 use super::scope::{Place, Scope};
-use super::values::convert;
+use super::values::{convert, convert_cow, convert_owned};
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;
@@ -16,6 +16,7 @@ use diagnostics::{code, Diagnostic, Span};
 use il_frontend::ast::{Condition, FbInputOp, IlStmt, InstrKind, Instruction, Op, Operand};
 use il_frontend::sema::{Callee, Elementary, InstrFacts, InstrId, Type};
 use std::collections::{BTreeMap, HashSet};
+use std::rc::Rc;
 
 use Elementary as E;
 
@@ -34,7 +35,7 @@ pub struct Body<'s, 'm> {
     depth: usize,
     temps: usize,
     /// The current-result locals already declared, by IEC type (a short list: one per C type used).
-    cr_names: Vec<(Type, String)>,
+    cr_names: Vec<(Type, Rc<str>)>,
     /// For a FUNCTION: the C expression returned by RET.
     pub ret: String,
     /// In a part of a split body (see `split`): its index and the labels entered from another part.
@@ -62,11 +63,15 @@ impl<'s, 'm> Body<'s, 'm> {
     /// Appends one line of C, indented by the nesting level up to [`MAX_INDENT`] levels (deeper
     /// blocks stay at that column, so the C grows linearly with the IL however deep `ADD(` nests).
     pub fn line(&mut self, text: &str) {
+        self.begin_line();
+        self.out.push_str(text);
+        self.out.push('\n');
+    }
+    /// Starts a line: its indentation (see [`Body::line`]).
+    pub fn begin_line(&mut self) {
         for _ in 0..self.indent.min(MAX_INDENT) {
             self.out.push_str("    ");
         }
-        self.out.push_str(text);
-        self.out.push('\n');
     }
     /// [`Body::line`] for formatted text, written straight into the body (no `String` per line).
     pub fn line_fmt(&mut self, args: std::fmt::Arguments) {
@@ -115,7 +120,8 @@ pub fn jump_targets(stmts: &[IlStmt], into: &mut HashSet<String>) {
 
 impl<'a> Gen<'a> {
     /// The current-result local for values of `ty` (declared on first use).
-    pub(super) fn cr(&mut self, b: &mut Body, ty: &Type, span: Span) -> Option<String> {
+    /// The name is shared (`Rc`): most instructions ask for it, and only format it.
+    pub(super) fn cr(&mut self, b: &mut Body, ty: &Type, span: Span) -> Option<Rc<str>> {
         if let Some((_, name)) = b.cr_names.iter().find(|(t, _)| t == ty) {
             return Some(name.clone());
         }
@@ -127,6 +133,7 @@ impl<'a> Gen<'a> {
                 return None;
             };
             b.crs.insert(name.clone(), format!("{decl} = {{0}};"));
+            let name: Rc<str> = name.into();
             b.cr_names.push((ty.clone(), name.clone()));
             return Some(name);
         }
@@ -143,6 +150,7 @@ impl<'a> Gen<'a> {
             };
             b.crs.insert(name.clone(), cfmt!("{base} {name} = {init};"));
         }
+        let name: Rc<str> = name.into();
         if b.cr_names.len() < 16 {
             b.cr_names.push((ty.clone(), name.clone()));
         }
@@ -311,20 +319,23 @@ impl<'a> Gen<'a> {
         let before = found
             .and_then(|(_, x)| x.cr_before.clone())
             .unwrap_or(Type::BOOL);
-        let cr = if before.is_bool() {
-            cr
+        let converted;
+        let cr: &str = if before.is_bool() {
+            &cr
         } else {
             match self.cr(b, &before, i.span) {
-                Some(c) => convert(&c, &before, &Type::BOOL),
+                Some(c) => {
+                    converted = convert(&c, &before, &Type::BOOL);
+                    &converted
+                }
                 None => return,
             }
         };
-        let test = if cond == Condition::IfTrue {
-            cr
+        if cond == Condition::IfTrue {
+            b.line_fmt(format_args!("if ({cr}) {stmt}"));
         } else {
-            cfmt!("!{cr}")
-        };
-        b.line_fmt(format_args!("if ({test}) {stmt}"));
+            b.line_fmt(format_args!("if (!{cr}) {stmt}"));
+        }
     }
 
     fn simple(
@@ -369,10 +380,12 @@ impl<'a> Gen<'a> {
                     self.unsupported(span, "storing a whole array at a direct address");
                     return;
                 }
-                let v = if negate { negated(&cr, &ty) } else { cr };
-                let v = convert(&v, &ty, place.ty());
-                let stmt = self.store(&place, &v);
-                b.line(&stmt);
+                let v = if negate {
+                    convert_owned(negated(&cr, &ty), &ty, place.ty())
+                } else {
+                    convert(&cr, &ty, place.ty())
+                };
+                self.store_line(b, &place, &v);
             }
             Op::S | Op::R => {
                 if let Some(Callee::FbInstance {
@@ -528,12 +541,12 @@ impl<'a> Gen<'a> {
                     _ => "^",
                 };
                 let ct = ctypes::base(self.model, result)?;
-                let v = convert(v, vty, result);
-                let a = convert(a, aty, result);
+                let v = convert_cow(v, vty, result);
+                let a = convert_cow(a, aty, result);
                 Some(cfmt!("(({ct})(({a}) {c} ({v})))"))
             }
             "GT" | "GE" | "EQ" | "NE" | "LE" | "LT" => {
-                let lname = name.to_ascii_lowercase();
+                let lname = lower_op(name);
                 if aty.is_string() {
                     let c = match name {
                         "GT" => ">",
@@ -561,7 +574,7 @@ impl<'a> Gen<'a> {
                     },
                 };
                 let h = ctypes::ordered_helper_type(e);
-                let v = convert(v, vty, aty);
+                let v = convert_cow(v, vty, aty);
                 Some(cfmt!("ladderc_{lname}_{h}(({h})({a}), ({h})({v}))"))
             }
             "ADD" | "SUB" | "MUL" | "DIV" | "MOD" => {
@@ -576,11 +589,11 @@ impl<'a> Gen<'a> {
                     },
                 };
                 let rt = ctypes::elementary(re);
-                let lname = name.to_ascii_lowercase();
+                let lname = lower_op(name);
                 let ve = vty.elementary();
                 if re.is_real() {
-                    let a = convert(a, aty, result);
-                    let v = convert(v, vty, result);
+                    let a = convert_cow(a, aty, result);
+                    let v = convert_cow(v, vty, result);
                     return Some(match name {
                         "MOD" => cfmt!("(({rt})fmod((double)({a}), (double)({v})))"),
                         _ => {
@@ -680,7 +693,11 @@ impl<'a> Gen<'a> {
         let span = d.span;
         if let (Some(vt), Some(after)) = (d.info.operand.clone(), d.info.cr_after.clone()) {
             if let Some(vcr) = self.cr(b, &vt, span) {
-                let v = if d.negate { negated(&vcr, &vt) } else { vcr };
+                let v = if d.negate {
+                    negated(&vcr, &vt)
+                } else {
+                    vcr.to_string()
+                };
                 let res = match &d.outer {
                     None => Some(convert(&v, &vt, &after)),
                     Some(before) => {
@@ -724,5 +741,26 @@ pub fn negated(v: &str, ty: &Type) -> String {
             .map(ctypes::elementary)
             .unwrap_or("IEC_DWORD");
         cfmt!("(({ct})~({v}))")
+    }
+}
+
+/// An operator's name in lower case, as the runtime's helpers spell it (`ladderc_gt_...`).
+fn lower_op(name: &str) -> std::borrow::Cow<'static, str> {
+    let known = [
+        ("GT", "gt"),
+        ("GE", "ge"),
+        ("EQ", "eq"),
+        ("NE", "ne"),
+        ("LE", "le"),
+        ("LT", "lt"),
+        ("ADD", "add"),
+        ("SUB", "sub"),
+        ("MUL", "mul"),
+        ("DIV", "div"),
+        ("MOD", "mod"),
+    ];
+    match known.iter().find(|(n, _)| *n == name) {
+        Some((_, l)) => (*l).into(),
+        None => name.to_ascii_lowercase().into(),
     }
 }

@@ -89,7 +89,7 @@ impl Gen<'_> {
                     return;
                 };
                 Some(if c == Condition::IfTrue {
-                    cr
+                    cr.to_string()
                 } else {
                     cfmt!("!{cr}")
                 })
@@ -153,8 +153,7 @@ impl Gen<'_> {
                 lv: field,
                 ty: binding.ty.clone(),
             };
-            let stmt = self.store(&place, &v);
-            b.line(&stmt);
+            self.store_line(b, &place, &v);
         }
         if user_eno {
             // TRUE unless the body sets it FALSE (IEC 61131-3: ENO of a block that ran)
@@ -176,8 +175,7 @@ impl Gen<'_> {
             b.line(&format!("if (!ladderc_en) {lv}.ENO = 0;"));
         }
         if let Some(p) = eno_target {
-            let stmt = self.store(&p, if user_eno { &user_eno_value } else { eno });
-            b.line(&stmt);
+            self.store_line(b, &p, if user_eno { &user_eno_value } else { eno });
         }
         b.indent -= 1;
         b.line("}");
@@ -208,8 +206,7 @@ impl Gen<'_> {
                 field
             };
             let v = convert(&v, &binding.ty, target.ty());
-            let stmt = self.store(&target, &v);
-            b.line(&stmt);
+            self.store_line(b, &target, &v);
         }
     }
 
@@ -300,8 +297,7 @@ impl Gen<'_> {
         };
         let field = self.fb_param_lvalue(&lv, fb, input);
         let v = convert(&cr, &before, &pty);
-        let stmt = self.store(&Place::Mem { lv: field, ty: pty }, &v);
-        b.line(&stmt);
+        self.store_line(b, &Place::Mem { lv: field, ty: pty }, &v);
         if matches!(fb, FbType::User(_)) && self.model.fb_eno_read {
             b.line(&format!("{lv}.ENO = 1;"));
         }
@@ -402,8 +398,7 @@ impl Gen<'_> {
     /// ENO is EN (TRUE without EN): a standard function or conversion that runs always completes.
     fn store_eno(&mut self, b: &mut Body, en: Option<&str>, eno: Option<Place>) {
         if let Some(p) = eno {
-            let stmt = self.store(&p, &cfmt!("((IEC_BOOL)({}))", en.unwrap_or("1")));
-            b.line(&stmt);
+            self.store_line(b, &p, &cfmt!("((IEC_BOOL)({}))", en.unwrap_or("1")));
         }
     }
 

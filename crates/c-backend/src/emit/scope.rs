@@ -6,7 +6,7 @@
 //! runtime helpers; array indexes go through `ladderc_index` (out-of-range: element 0 and an error flag);
 //! every produced expression is fully parenthesised.
 
-use super::values::{access_bytes, convert, load_expr, store_expr};
+use super::values::{access_bytes, convert_owned, load_expr, store_expr};
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;
@@ -81,12 +81,13 @@ impl<'m> Scope<'m> {
     pub fn frame(&mut self) {
         let Some((pou, _)) = self.pou else { return };
         for (i, v) in pou.vars.iter().enumerate() {
-            let name = mangle::var(&v.name);
-            self.lvalues[i] = match (pou.kind, v.kind) {
-                (PouKind::Function, VarKind::Output | VarKind::InOut) => cfmt!("(*fr->{name})"),
-                (PouKind::Function, _) | (_, VarKind::Temp) => cfmt!("fr->{name}"),
+            // Only a function's variables and temporaries move into the frame: no name for the rest.
+            let (open, close) = match (pou.kind, v.kind) {
+                (PouKind::Function, VarKind::Output | VarKind::InOut) => ("(*fr->", ")"),
+                (PouKind::Function, _) | (_, VarKind::Temp) => ("fr->", ""),
                 _ => continue,
             };
+            self.lvalues[i] = cfmt!("{open}{}{close}", mangle::var(&v.name));
         }
         self.framed = true;
     }
@@ -529,36 +530,60 @@ impl Gen<'_> {
             .find_map(find)
     }
 
-    /// Reads a place as a value of type `want`.
-    pub fn read(&self, place: &Place, want: &Type) -> String {
+    /// Reads a place as a value of type `want` (the place's lvalue text is reused).
+    pub fn read_owned(&self, place: Place, want: &Type) -> String {
         match place {
-            Place::Mem { lv, ty } => convert(lv, ty, want),
-            Place::Loc { loc, ty } => convert(&load_expr(loc, ty), ty, want),
+            Place::Mem { lv, ty } => convert_owned(lv, &ty, want),
+            Place::Loc { loc, ty } => convert_owned(load_expr(&loc, &ty), &ty, want),
         }
     }
 
     /// A statement storing `value` (a C expression of the place's type) into `place`.
     pub fn store(&self, place: &Place, value: &str) -> String {
+        let mut s = String::with_capacity(64);
+        self.write_store(&mut s, place, value);
+        s
+    }
+
+    /// [`Gen::store`], written at the end of `out`.
+    pub fn write_store(&self, out: &mut String, place: &Place, value: &str) {
+        use std::fmt::Write as _;
         match place {
             Place::Mem { lv, ty } => match ty {
                 Type::String { wide: false, .. } => {
-                    cfmt!(
+                    let _ = write!(
+                        out,
                         "{lv} = ladderc_str_cap({value}, {});",
                         ctypes::string_cap(ty)
-                    )
+                    );
                 }
                 Type::String { wide: true, .. } => {
-                    cfmt!(
+                    let _ = write!(
+                        out,
                         "{lv} = ladderc_wstr_cap({value}, {});",
                         ctypes::string_cap(ty)
-                    )
+                    );
                 }
                 // C arrays do not assign: a whole array (`b := a`, an array input) is copied
-                Type::Array { .. } => cfmt!("memcpy({lv}, {value}, sizeof {lv});"),
-                _ => cfmt!("{lv} = {value};"),
+                Type::Array { .. } => {
+                    let _ = write!(out, "memcpy({lv}, {value}, sizeof {lv});");
+                }
+                _ => {
+                    out.push_str(lv);
+                    out.push_str(" = ");
+                    out.push_str(value);
+                    out.push(';');
+                }
             },
-            Place::Loc { loc, ty } => store_expr(loc, ty, value),
+            Place::Loc { loc, ty } => out.push_str(&store_expr(loc, ty, value)),
         }
+    }
+
+    /// [`Gen::store`] as one line of `b` (written in place).
+    pub(super) fn store_line(&self, b: &mut super::body::Body, place: &Place, value: &str) {
+        b.begin_line();
+        self.write_store(&mut b.out, place, value);
+        b.out.push('\n');
     }
 
     /// An operand's value as a C expression of type `want`.
@@ -568,8 +593,8 @@ impl Gen<'_> {
             Operand::Address(a) => {
                 let e = il_frontend::sema::Location::of(a).elementary();
                 match self.profile.locate(a, None) {
-                    Ok(loc) => Some(convert(
-                        &load_expr(&loc, &Type::Elementary(e)),
+                    Ok(loc) => Some(convert_owned(
+                        load_expr(&loc, &Type::Elementary(e)),
                         &Type::Elementary(e),
                         want,
                     )),
@@ -608,7 +633,7 @@ impl Gen<'_> {
                     }
                 }
                 let p = self.place(scope, r)?;
-                Some(self.read(&p, want))
+                Some(self.read_owned(p, want))
             }
         }
     }

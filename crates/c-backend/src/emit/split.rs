@@ -71,9 +71,11 @@ pub struct Frame {
 
 /// An instruction's size for planning: 1, plus one per call argument, plus its nested list.
 fn weight(stmt: &IlStmt) -> usize {
+    // Most statements have no nested list: no stack for them.
     let mut n = 0;
-    let mut stack = vec![stmt];
-    while let Some(s) = stack.pop() {
+    let mut stack = Vec::new();
+    let mut next = Some(stmt);
+    while let Some(s) = next.take().or_else(|| stack.pop()) {
         let IlStmt::Instr(i) = s else { continue };
         n += 1;
         match &i.kind {
@@ -97,8 +99,10 @@ fn labels_and_jumps<'a>(
     labels: &mut Vec<String>,
     jumps: &mut Vec<&'a il_frontend::ast::Instruction>,
 ) {
-    let mut stack = vec![stmt];
-    while let Some(s) = stack.pop() {
+    // Most statements have no nested list: no stack for them.
+    let mut stack = Vec::new();
+    let mut next = Some(stmt);
+    while let Some(s) = next.take().or_else(|| stack.pop()) {
         match s {
             IlStmt::Label(l) => labels.push(l.key()),
             IlStmt::Instr(i) => match &i.kind {

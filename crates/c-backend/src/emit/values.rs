@@ -9,6 +9,7 @@ use crate::ctypes;
 use crate::profile::Located;
 use il_frontend::ast::Area;
 use il_frontend::sema::{Elementary, Type};
+use std::borrow::Cow;
 
 use Elementary as E;
 
@@ -31,8 +32,33 @@ pub fn area_array(area: Area) -> &'static str {
 
 /// Converts a C expression of IEC type `from` to IEC type `to` (implicit conversions: widening, BOOL).
 pub fn convert(expr: &str, from: &Type, to: &Type) -> String {
+    match conversion(from, to) {
+        Some((f, t)) => convert_elementary(expr, f, t),
+        None => expr.to_string(),
+    }
+}
+
+/// [`convert`] that borrows `expr` when its text stays.
+pub fn convert_cow<'e>(expr: &'e str, from: &Type, to: &Type) -> Cow<'e, str> {
+    match conversion(from, to) {
+        Some((f, t)) if f != t => Cow::Owned(convert_elementary(expr, f, t)),
+        _ => Cow::Borrowed(expr),
+    }
+}
+
+/// [`convert`] of an expression the caller gives away: returned as it is (no copy) when its text
+/// stays.
+pub fn convert_owned(expr: String, from: &Type, to: &Type) -> String {
+    match conversion(from, to) {
+        Some((f, t)) if f != t => convert_elementary(&expr, f, t),
+        _ => expr,
+    }
+}
+
+/// The elementary types [`convert`] converts between; `None` when the text stays.
+fn conversion(from: &Type, to: &Type) -> Option<(Elementary, Elementary)> {
     if from == to {
-        return expr.to_string();
+        return None;
     }
     let fe = match from {
         Type::Enum(_) => Some(E::Dint),
@@ -42,12 +68,9 @@ pub fn convert(expr: &str, from: &Type, to: &Type) -> String {
         Type::Enum(_) => Some(E::Dint),
         t => t.elementary(),
     };
-    match (fe, te) {
-        (Some(f), Some(t)) => convert_elementary(expr, f, t),
-        (_, Some(_)) | (Some(_), _) => expr.to_string(),
-        // strings keep their text here; capacities apply when a string is stored
-        (None, None) => expr.to_string(),
-    }
+    // otherwise strings keep their text here (capacities apply when a string is stored), and so
+    // does anything that is not elementary on one side
+    fe.zip(te)
 }
 
 /// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest (halves
