@@ -498,6 +498,15 @@ impl<'s> Layout<'s> {
                     self.semicolon_comment(s);
                     continue;
                 }
+                // `LD w.3`, `ST w.%X0`: a partial access (3rd edition) is a field named `3` or `%X0`
+                // (see `ast::partial_access`)
+                Some(Ok(RawToken::Int(_)) | Err(LexError::BadAddress(_)))
+                    if self.src[..s].ends_with('.')
+                        && !self.src[..s].ends_with("..")
+                        && crate::ast::partial_access(&self.src[s..e]).is_some() =>
+                {
+                    Tok::Word(Word::Ident)
+                }
                 Some(Ok(raw)) => self.convert(raw, s, e),
                 Some(Err(err)) => {
                     self.swallowed |= err == LexError::UnterminatedComment;

@@ -820,13 +820,11 @@ impl<'s, 'd> Parser<'s, 'd> {
                             let f = self.bump();
                             accessors.push(Accessor::Field(self.ident(&f)));
                         }
+                        // `x.3`: a partial access (3rd edition), kept as the field `3` (see
+                        // `ast::partial_access`; `x.%X3` comes as an identifier from the lexer)
                         Tok::Int(_) => {
-                            self.error_here(
-                                code::E0108,
-                                "bit access `x.n` is not supported",
-                                "use a shift and a mask: `(SHR(x, n) AND 1) = 1`",
-                            );
-                            return None;
+                            let f = self.bump();
+                            accessors.push(Accessor::Field(self.ident(&f)));
                         }
                         _ => {
                             let found = self.describe_current();
