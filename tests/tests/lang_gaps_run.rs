@@ -122,3 +122,29 @@ fn partial_access_out_of_range_or_without_bits_is_one_located_e1029_each() {
         "{lines:?}"
     );
 }
+
+// ------------------------------------------------------------------ 2. keyword names in XML IL bodies
+
+#[test]
+fn keyword_named_variables_in_an_xml_il_body_are_one_e1031_at_each_declaration() {
+    // `on` and `task` are IL keywords: the body's `LD on`, `ST task` were E0011 at every use; now,
+    // as in an .il file, the reserved names are reported once, at their declarations, with the POU
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("keyword_names_il.xml"))
+        .args(["--cycles", "1"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 2, "{stderr}");
+    assert!(
+        errors[0].ends_with("keyword_names_il.xml:10:25: error[E1031]: `on` is reserved in IEC 61131-3 (a keyword): it cannot name a variable [POU `main`] (hint: rename the variable, for example `xon`)"),
+        "{stderr}"
+    );
+    assert!(
+        errors[1].contains("keyword_names_il.xml:11:25: error[E1031]: `task` is reserved"),
+        "{stderr}"
+    );
+}

@@ -366,7 +366,14 @@ fn pending_method(
     diags: &mut Diagnostics,
 ) -> PendingMethod {
     let vars = |text: &str, base: usize, diags: &mut Diagnostics| -> Vec<crate::ast::VarBlock> {
-        match crate::parser::run(file, text, base, crate::lexer::Tok::UnitStart, diags) {
+        match crate::parser::run(
+            file,
+            text,
+            base,
+            crate::lexer::Tok::UnitStart,
+            diags,
+            Vec::new(),
+        ) {
             Some(crate::parser::Parsed::Unit(mut top)) => {
                 let mut blocks: Vec<crate::ast::VarBlock> =
                     top.implicit.take().map(|(_, v, _)| v).unwrap_or_default();
