@@ -148,3 +148,74 @@ fn keyword_named_variables_in_an_xml_il_body_are_one_e1031_at_each_declaration()
         "{stderr}"
     );
 }
+
+// ------------------------------------------------------------------ 3. methods called inside their block
+
+#[test]
+fn methods_called_inside_their_own_block_run_in_st_files() {
+    // Counter's body calls Bump() (count += Twice(step), a method in an expression of a method) and
+    // THIS^.Reset() once THIS^.count passes 10 (Reset zeroes count and calls Bump again); main
+    // calls c(step := 2) and reads c.Twice(5) + 1 from outside
+    let (trace, stderr) = run(
+        &fixture("own_methods.st"),
+        5,
+        "main.c.count,main.c.calls,main.x",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.c.count,main.c.calls,main.x\n\
+         0,0,4,1,11\n\
+         1,10,8,2,11\n\
+         2,20,4,3,11\n\
+         3,30,8,4,11\n\
+         4,40,4,5,11\n"
+    );
+    // the hidden inputs a call inside the block sets are no inputs the user wrote (no W1411)
+    assert!(!stderr.contains("W1411"), "{stderr}");
+}
+
+#[test]
+fn codesys_methods_call_each_other_and_are_called_from_their_block() {
+    // the level rises by Fill(2.0) = 10 a cycle; past 50, Drain() halves it (by Half(), a method
+    // called inside a method) before the fill
+    let (trace, _) = run(
+        &fixture("own_methods.xml"),
+        10,
+        "PLC_PRG.fbTank.rLevel,PLC_PRG.fbTank.iCalls",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.fbTank.rLevel,PLC_PRG.fbTank.iCalls\n\
+         0,0,10,1\n1,10,20,2\n2,20,30,3\n3,30,40,4\n4,40,50,5\n\
+         5,50,60,6\n6,60,40,7\n7,70,50,8\n8,80,60,9\n9,90,40,10\n"
+    );
+}
+
+#[test]
+fn own_method_calls_that_cannot_run_are_located_errors() {
+    let src = "FUNCTION_BLOCK Fb\nVAR n : INT; END_VAR\n  A();\n  n := Get(1) + Get(2);\n  \
+               WHILE Get(3) > 0 DO n := 0; END_WHILE;\n  Nothing(q := 1);\n\
+               METHOD A\n  B();\nEND_METHOD\nMETHOD B\n  A();\nEND_METHOD\n\
+               METHOD Get : INT\nVAR_INPUT v : INT; END_VAR\n  Get := v;\nEND_METHOD\n\
+               METHOD Nothing\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR f : Fb; END_VAR\n  f();\nEND_PROGRAM\n";
+    let (code, lines) = check_text("m.st", src);
+    assert_eq!(code, Some(1));
+    let codes: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(": error[").unwrap().0)
+        .collect();
+    // twice in one statement; in a WHILE condition; an unknown parameter; A and B call each other
+    assert_eq!(
+        codes,
+        vec![
+            "m.st:4:17",
+            "m.st:5:9",
+            "m.st:6:11",
+            "m.st:8:3",
+            "m.st:11:3"
+        ],
+        "{lines:?}"
+    );
+    assert!(lines[0].contains("E0108") && lines[2].contains("E1011") && lines[3].contains("E0106"));
+}

@@ -169,8 +169,11 @@ impl Body<'_, '_> {
         let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
         if let ReadOnly::PouInput { decl: Some(decl) } = ro {
-            if v.base.name.starts_with(crate::actions::FLAG_PREFIX) {
-                // the hidden flag of an action called from another POU, reset by the action itself
+            if v.base.name.starts_with(crate::actions::FLAG_PREFIX)
+                || v.base.name.starts_with(crate::actions::METHOD_PREFIX)
+            {
+                // the hidden flag of an action called from another POU, reset by the action itself;
+                // a method's hidden input, set by a call of the method inside its block
                 return;
             }
             // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)

@@ -840,7 +840,22 @@ pub fn compile_pending(
             }
         }
     }
-    let decls = super::Declarations::from_units(units);
+    let mut decls = super::Declarations::from_units(units);
+    for pb in pending.iter().filter(|pb| !pb.methods.is_empty()) {
+        for unit in units.iter() {
+            for item in unit.items.iter() {
+                let LibraryElement::Pou(p) = item else {
+                    continue;
+                };
+                if p.name.span.file == pb.file && p.name.span.start as usize == pb.name_start {
+                    decls.methods.insert(
+                        p.name.key(),
+                        pb.methods.iter().map(super::types::MethodSig::of).collect(),
+                    );
+                }
+            }
+        }
+    }
     for pb in pending.iter().filter(|pb| !pb.sfc) {
         for unit in units.iter_mut() {
             let mut standalone = Vec::new();
@@ -886,11 +901,14 @@ pub fn compile_pending(
                     p.var_blocks.push(t);
                 }
                 standalone.extend(actions);
+                let mut methods = Vec::new();
                 for m in &pb.methods {
                     if let Some(a) = lower_method(pb.file, &decls, p, m, diags) {
-                        standalone.push(a);
+                        methods.push(a);
                     }
                 }
+                inline_own_method_calls(p, &mut methods, diags);
+                standalone.extend(methods);
             }
             unit.items
                 .extend(standalone.into_iter().map(LibraryElement::Action));
@@ -966,6 +984,56 @@ pub fn add_method_vars(
     }
 }
 
+/// Puts a copy of a method's statements where the block's body, or one of its methods, calls it
+/// (`M(...)` inside the block, lowered to `CAL M` by [`super::PouLowering`]); a method that calls
+/// itself, directly or through another, is E0106 at the call.
+pub fn inline_own_method_calls(
+    p: &mut crate::ast::Pou,
+    methods: &mut [crate::ast::Action],
+    diags: &mut Diagnostics,
+) {
+    if methods.is_empty() {
+        return;
+    }
+    let map: std::collections::HashMap<String, Vec<crate::ast::IlStmt>> = methods
+        .iter()
+        .map(|a| (a.name.key(), a.body.clone()))
+        .collect();
+    let vars: std::collections::HashSet<String> = p
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+        .collect();
+    let is_var = |n: &str| vars.contains(&n.to_ascii_uppercase());
+    let mut next = 0;
+    let mut local = Diagnostics::new();
+    p.body = crate::actions::inline_calls(
+        std::mem::take(&mut p.body),
+        &map,
+        &is_var,
+        "__MC",
+        &mut next,
+        &mut local,
+    );
+    for a in methods.iter_mut() {
+        a.body = crate::actions::inline_calls(
+            std::mem::take(&mut a.body),
+            &map,
+            &is_var,
+            "__MC",
+            &mut next,
+            &mut local,
+        );
+    }
+    // a recursion is found from every place that enters it: reported once per call
+    let mut seen = std::collections::HashSet::new();
+    for d in local {
+        if seen.insert((d.code, d.span.map(|s| (s.start, s.end)), d.message.clone())) {
+            diags.push(d);
+        }
+    }
+}
+
 /// Lowers a method of the function block `p` (its hidden variables already declared) into an
 /// [`Action`](crate::ast::Action) for [`crate::actions::link`]: its statements are lowered where the
 /// method's own names are its variables (they shadow the block's), then those names become the
@@ -977,7 +1045,7 @@ pub fn lower_method(
     m: &PendingMethod,
     diags: &mut Diagnostics,
 ) -> Option<crate::ast::Action> {
-    use crate::actions::{instantiate, method_result, method_var, METHOD_PREFIX};
+    use crate::actions::{instantiate, method_result, method_var};
     use crate::ast::{VarBlock, VarKind};
     let mut own: Vec<VarBlock> = m.blocks.clone();
     if let Some(r) = &m.ret {
@@ -997,9 +1065,9 @@ pub fn lower_method(
     let mut view = p.clone();
     view.body = Vec::new();
     for b in &mut view.var_blocks {
-        b.vars.retain(|v| {
-            !v.name.name.starts_with(METHOD_PREFIX) && !rename.contains_key(&v.name.key())
-        });
+        // (the hidden variables of the block's methods stay: a call of another method stores
+        // into them)
+        b.vars.retain(|v| !rename.contains_key(&v.name.key()));
     }
     view.var_blocks.extend(own);
     let stmts = super::parse_statements(file, &m.text, m.base, diags);
