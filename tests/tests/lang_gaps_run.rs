@@ -219,3 +219,55 @@ fn own_method_calls_that_cannot_run_are_located_errors() {
     );
     assert!(lines[0].contains("E0108") && lines[2].contains("E1011") && lines[3].contains("E0106"));
 }
+
+// ------------------------------------------------------------------ 4. library-qualified names
+
+#[test]
+fn names_qualified_with_a_provided_library_run() {
+    // go toggles until n (Standard.LIMIT(0, n + 1, 3)) reaches 3, then stays TRUE: the
+    // Standard.TON sees IN for 20 ms from cycle 2 and its Q rises in cycle 5, where the
+    // Tc2_Standard.R_TRIG counts one edge
+    let (trace, _) = run(
+        &fixture("library_names.st"),
+        6,
+        "main.go,main.t.Q,main.n,main.edges",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.go,main.t.Q,main.n,main.edges\n\
+         0,0,1,0,1,0\n1,10,0,0,2,0\n2,20,1,0,3,0\n3,30,1,0,3,0\n4,40,1,0,3,0\n5,50,1,1,3,1\n"
+    );
+}
+
+#[test]
+fn an_unknown_library_is_one_located_e1032_per_library() {
+    let src =
+        "PROGRAM main\nVAR\n  pid : OSCAT_BASIC.CTRL_PI;\n  lin : OSCAT_BASIC.F_LIN_TYPE;\n  \
+               arr : ARRAY[1..2] OF Lib.Y;\n  x : REAL;\nEND_VAR\n  pid(ACT := x);\n  \
+               x := OSCAT_BASIC.F_LIN(x) + pid.Y;\n  x := CAA.Foo(1);\nEND_PROGRAM\n";
+    let (code, lines) = check_text("lib.st", src);
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "lib.st:3:9: error[E1032]: `OSCAT_BASIC` is neither a variable nor a library ladderc provides",
+            "lib.st:5:24: error[E1032]: `Lib` is neither a variable nor a library ladderc provides",
+            "lib.st:10:8: error[E1032]: `CAA` is neither a variable nor a library ladderc provides",
+        ]
+    );
+    // a Util block ladderc does not have is named where it is declared
+    let (code, lines) = check_text(
+        "util.st",
+        "PROGRAM main\nVAR\n  b : Util.BLINK;\nEND_VAR\n  b(ENABLE := TRUE);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("util.st:3:12: error[E1003]: unknown type `BLINK`"),
+        "{lines:?}"
+    );
+}

@@ -159,6 +159,112 @@ fn is_var_keyword(w: &str) -> bool {
     )
 }
 
+/// The library namespaces whose blocks and functions ladderc provides, upper case: CODESYS's and
+/// TwinCAT's standard libraries (`Standard.TON`, `Tc2_Standard.CTU`), their utility libraries (a block
+/// ladderc does not have is then an unknown type or function, named at its use), and their PLCopen
+/// motion libraries (`SM3_Basic.MC_MoveAbsolute`, `Tc2_MC2.MC_Power`).
+pub const PROVIDED_LIBRARIES: &[&str] = &[
+    "STANDARD",
+    "TC2_STANDARD",
+    "IEC",
+    "UTIL",
+    "TC2_UTILITIES",
+    "SM3_BASIC",
+    "TC2_MC2",
+];
+
+/// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
+/// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
+/// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
+/// after `:` or `OF` in a VAR block, a call `Lib.F(...)` in a body) whose name is no variable, POU or
+/// type of the file is E1032, once per library, and its uses are renamed `__...` (no cascade: sema
+/// leaves unknown types and functions of that form unreported). `None`: nothing to change.
+fn library_qualifiers(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> Option<String> {
+    let ident = |t: &Token| matches!(t.tok, Tok::Ident);
+    // names declared in the file (`x :`, `a, b :`, `TYPE T :`, POU names): not libraries
+    let mut declared = std::collections::HashSet::new();
+    for (k, t) in toks.iter().enumerate() {
+        if !ident(t) {
+            continue;
+        }
+        let next = toks.get(k + 1).map(|n| &n.tok);
+        let prev = k
+            .checked_sub(1)
+            .map(|p| word(src, &toks[p]).to_ascii_uppercase());
+        if matches!(next, Some(Tok::Colon | Tok::Comma))
+            || matches!(
+                prev.as_deref(),
+                Some("PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" | "CONFIGURATION" | "RESOURCE")
+            )
+        {
+            declared.insert(word(src, t).to_ascii_uppercase());
+        }
+    }
+    let mut text: Option<String> = None;
+    let mut reported = std::collections::HashSet::new();
+    let mut in_decl = false;
+    for (k, t) in toks.iter().enumerate() {
+        let w = word(src, t).to_ascii_uppercase();
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            if is_var_keyword(&w) {
+                in_decl = true;
+            } else if w == "END_VAR" {
+                in_decl = false;
+            }
+        }
+        let (Some(dot), Some(member)) = (toks.get(k + 1), toks.get(k + 2)) else {
+            continue;
+        };
+        if !ident(t) || dot.tok != Tok::Dot || !ident(member) || declared.contains(&w) {
+            continue;
+        }
+        let prev = k.checked_sub(1).map(|p| &toks[p]);
+        if prev.is_some_and(|p| p.tok == Tok::Dot) {
+            continue;
+        }
+        let text = text.get_or_insert_with(|| src.to_string());
+        if PROVIDED_LIBRARIES.contains(&w.as_str()) {
+            blank(text, t.range.start..dot.range.end);
+            continue;
+        }
+        let type_position = in_decl
+            && prev.is_some_and(|p| p.tok == Tok::Colon || word(src, p).eq_ignore_ascii_case("OF"));
+        let call_position = !in_decl && toks.get(k + 3).is_some_and(|n| n.tok == Tok::LParen);
+        if !(type_position || call_position) {
+            continue;
+        }
+        let name = word(src, t);
+        if reported.insert(w.clone()) {
+            diags.push(
+                Diagnostic::error(
+                    code::E1032,
+                    format!("`{name}` is neither a variable nor a library ladderc provides"),
+                )
+                .at(Span::new(file, t.range.start, t.range.end))
+                .with_primary_label("library qualifier")
+                .with_hint(format!(
+                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2; `{}` comes from another library: add its POUs and types to the project",
+                    word(src, member)
+                )),
+            );
+        }
+        // `Lib.Name` -> `__b_Name` (same length; sema reports nothing more about it)
+        let mut bytes = std::mem::take(text).into_bytes();
+        bytes[t.range.start] = b'_';
+        if t.range.len() > 1 {
+            bytes[t.range.start + 1] = b'_';
+        }
+        bytes[dot.range.start] = b'_';
+        *text = String::from_utf8(bytes).unwrap_or_default();
+    }
+    text
+}
+
 /// Finds the POUs of a text and the language of each body.
 pub fn scan(src: &str) -> Vec<PouText> {
     let (toks, _) = lex(src);
@@ -612,7 +718,20 @@ pub fn parse_text(
         }
         first_try = Some((unit, local));
     }
-    let (toks, problems) = lex(src);
+    let (mut toks, mut problems) = lex(src);
+    let unqualified;
+    let src = if lang == Lang::St {
+        match library_qualifiers(file, src, &toks, diags) {
+            Some(t) => {
+                unqualified = t;
+                (toks, problems) = lex(&unqualified);
+                unqualified.as_str()
+            }
+            None => src,
+        }
+    } else {
+        src
+    };
     let pous = scan_tokens(src, &toks);
     drop(toks);
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
