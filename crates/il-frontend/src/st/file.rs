@@ -265,6 +265,63 @@ fn library_qualifiers(
     text
 }
 
+/// `r : REF_TO INT;`, `p : POINTER TO S;` (edition 3 references, CODESYS pointers): not supported. Each
+/// declaration is one E0305 at its `REF_TO` / `POINTER TO`, which is blanked (the declaration is read as
+/// the referenced type); `at` gets the offset of each, so that the body of its POU (whose `r^`,
+/// `REF(x)`, `ADR(x)`, `NULL` would each be an error) is not compiled. `None`: no such declaration.
+fn reference_declarations(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+    at: &mut Vec<usize>,
+) -> Option<String> {
+    let mut text: Option<String> = None;
+    let mut in_decl = false;
+    for (k, t) in toks.iter().enumerate() {
+        let w = word(src, t).to_ascii_uppercase();
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            if is_var_keyword(&w) || w == "STRUCT" {
+                in_decl = true;
+            } else if w == "END_VAR" || w == "END_STRUCT" {
+                in_decl = false;
+            }
+        }
+        if !in_decl || t.tok != Tok::Colon {
+            continue;
+        }
+        let Some(first) = toks.get(k + 1) else {
+            continue;
+        };
+        let kw = word(src, first).to_ascii_uppercase();
+        let end = match kw.as_str() {
+            "REF_TO" => first.range.end,
+            "POINTER" => match toks.get(k + 2) {
+                Some(to) if word(src, to).eq_ignore_ascii_case("TO") => to.range.end,
+                _ => continue,
+            },
+            _ => continue,
+        };
+        let name = k.checked_sub(1).map(|p| word(src, &toks[p])).unwrap_or("");
+        let written = src.get(first.range.start..end).unwrap_or("REF_TO");
+        diags.push(
+            Diagnostic::error(
+                code::E0305,
+                format!("`{name}`: references and pointers (`{written}`) are not supported"),
+            )
+            .at(Span::new(file, first.range.start, end))
+            .with_primary_label("reference type")
+            .with_hint("pass the variable as VAR_IN_OUT, or use it directly; the body of this POU is not compiled"),
+        );
+        at.push(first.range.start);
+        blank(
+            text.get_or_insert_with(|| src.to_string()),
+            first.range.start..end,
+        );
+    }
+    text
+}
+
 /// Finds the POUs of a text and the language of each body.
 pub fn scan(src: &str) -> Vec<PouText> {
     let (toks, _) = lex(src);
@@ -719,8 +776,17 @@ pub fn parse_text(
         first_try = Some((unit, local));
     }
     let (mut toks, mut problems) = lex(src);
-    let unqualified;
+    let (unqualified, unreferenced);
+    let mut references = Vec::new();
     let src = if lang == Lang::St {
+        let src = match reference_declarations(file, src, &toks, diags, &mut references) {
+            Some(t) => {
+                unreferenced = t;
+                (toks, problems) = lex(&unreferenced);
+                unreferenced.as_str()
+            }
+            None => src,
+        };
         match library_qualifiers(file, src, &toks, diags) {
             Some(t) => {
                 unqualified = t;
@@ -831,6 +897,14 @@ pub fn parse_text(
                 .with_primary_label("the block starts here; it is not compiled")
                 .with_hint("put the block after the POU whose ST body calls its actions, or write each action's statements where it is called"),
             );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
+        if references
+            .iter()
+            .any(|&k| p.name_range.end <= k && k < p.body.start)
+        {
+            // a reference or pointer declaration (E0305): the body, which uses it, is not compiled
             blank(&mut text, p.body.clone());
             continue;
         }
