@@ -311,3 +311,50 @@ fn reference_and_pointer_declarations_are_one_located_e0305_each_without_cascade
         "{stderr}"
     );
 }
+
+// ------------------------------------------------------------------ 5. VAR_CONFIG
+
+#[test]
+fn var_config_locates_placeholders_per_instance_and_sets_initial_values() {
+    // two Lamp instances, each `out AT %Q*`, get %QX0.1 and %QX0.2; the program's `sw AT %I*` is
+    // %IX0.0 (stimulus: 1 from cycle 1, 0 from cycle 3); `n` starts at 5 instead of 0
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("var_config.st"))
+        .args(["--cycles", "4", "--sanitize", "--trace", "-", "--stimulus"])
+        .arg(fixture("var_config.stimulus.csv"))
+        .args(["--watch", "inst.n,inst.sw,%QX0.1,%QX0.2"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,inst.n,inst.sw,%QX0.1,%QX0.2\n\
+         0,0,6,0,0,1\n1,10,7,1,1,1\n2,20,8,1,1,1\n3,30,9,0,0,1\n"
+    );
+}
+
+#[test]
+fn var_config_entries_that_cannot_apply_are_located_e0306() {
+    let src = std::fs::read_to_string(fixture("var_config.st"))
+        .unwrap()
+        .replace(
+            "res.inst.n : INT := 5;",
+            "res.inst.n AT %QW2 : INT;\n    res.ghost.x : INT := 1;\n    res.inst.l1.nope : BOOL := TRUE;",
+        );
+    let (code, lines) = check_text("vc.st", &src);
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "vc.st:24:5: error[E0306]: this VAR_CONFIG entry cannot be applied: `n` is not declared AT %Q*",
+            "vc.st:25:5: error[E0306]: this VAR_CONFIG entry cannot be applied: `res.ghost` names no program instance",
+            "vc.st:26:5: error[E0306]: this VAR_CONFIG entry cannot be applied: `Lamp` has no variable `nope`",
+        ]
+    );
+}
