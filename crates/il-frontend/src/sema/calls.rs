@@ -331,8 +331,7 @@ impl Body<'_, '_> {
                     )
                     .label("a function block, program or FB instance")
                     .hint("call FB instances with CAL inst(...)");
-            } else if !name.name.starts_with("__") {
-                // (`__...`: a function of a library ladderc does not provide, already E1032)
+            } else {
                 self.a
                     .error(code::E1019, name.span, format!("unknown function `{}`", name.name))
                     .label("no such function")

@@ -548,10 +548,6 @@ impl Analyzer<'_> {
         if let Some(fb) = StdFb::from_name(&n.name) {
             return Type::Fb(FbType::Standard(fb));
         }
-        if n.name.starts_with("__") {
-            // a type of a library ladderc does not provide (`OSCAT.CTRL_PI`), already E1032
-            return Type::Error;
-        }
         self.error(code::E1003, n.span, format!("unknown type `{}`", n.name))
             .label("no such type")
             .hint("declare it in a TYPE block or as a FUNCTION_BLOCK, or use an elementary type");

@@ -177,8 +177,9 @@ pub const PROVIDED_LIBRARIES: &[&str] = &[
 /// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
 /// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
 /// after `:` or `OF` in a VAR block, a call `Lib.F(...)` in a body) whose name is no variable, POU or
-/// type of the file is E1032, once per library, and its uses are renamed `__...` (no cascade: sema
-/// leaves unknown types and functions of that form unreported). `None`: nothing to change.
+/// type of the file is E1032, once per library (an error of the parse stage: the checks that would
+/// report each use as an unknown type or function do not run), and its uses are renamed `__...`.
+/// `None`: nothing to change.
 fn library_qualifiers(
     file: FileId,
     src: &str,
