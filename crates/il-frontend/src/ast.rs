@@ -304,6 +304,46 @@ pub enum Accessor {
     Index(Vec<Operand>),
 }
 
+/// The partial access a field name stands for (IEC 61131-3 3rd edition, 6.5.2.2 "partial access of ANY_BIT
+/// variables"): `x.3` and `x.%X3` name bit 3, `x.%B1` byte 1, `x.%W0` word 0, `x.%D1` double word 1,
+/// `x.%L0` long word 0 of an integer or bit-string variable. The parsers keep such an access as an
+/// [`Accessor::Field`] whose name is the text after the dot (`3`, `%X3`); this reads it back. An index
+/// too large for `u32` is `u32::MAX` (out of range for every type). `None`: an ordinary field name.
+pub fn partial_access(field: &str) -> Option<(AddressSize, u32)> {
+    let (size, digits) = match field.strip_prefix('%') {
+        Some(rest) => {
+            let mut chars = rest.chars();
+            let size = match chars.next()?.to_ascii_uppercase() {
+                'X' => AddressSize::Bit,
+                'B' => AddressSize::Byte,
+                'W' => AddressSize::Word,
+                'D' => AddressSize::DWord,
+                'L' => AddressSize::LWord,
+                _ => return None,
+            };
+            (size, chars.as_str())
+        }
+        None => (AddressSize::Bit, field),
+    };
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    Some((size, digits.parse::<u32>().unwrap_or(u32::MAX)))
+}
+
+impl AddressSize {
+    /// The width in bits of a partial access or direct address of this size (`X`: 1 ... `L`: 64).
+    pub fn bits(self) -> u32 {
+        match self {
+            AddressSize::Bit => 1,
+            AddressSize::Byte => 8,
+            AddressSize::Word => 16,
+            AddressSize::DWord => 32,
+            AddressSize::LWord => 64,
+        }
+    }
+}
+
 /// What an IL instruction works on.
 ///
 /// Literals and typed enumerated values are boxed: they are rarer than variables, and inline their 16-byte

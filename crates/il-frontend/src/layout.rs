@@ -86,6 +86,9 @@ pub struct Layout<'s> {
     decl_start: bool,
     /// An unterminated comment swallowed the rest of the file: blocks it leaves open are not reported.
     swallowed: bool,
+    /// Upper-case names declared outside the text (a PLCopen XML POU's interface): a keyword among them
+    /// is read as that variable's name (its reserved name is E1031 at the declaration, once).
+    declared: Vec<String>,
 }
 
 impl<'s> Layout<'s> {
@@ -106,7 +109,14 @@ impl<'s> Layout<'s> {
             finished: false,
             decl_start: false,
             swallowed: false,
+            declared: Vec::new(),
         }
+    }
+
+    /// Names declared outside the text (upper case): a keyword among them reads as a name.
+    pub fn with_declared(mut self, declared: Vec<String>) -> Self {
+        self.declared = declared;
+        self
     }
 
     fn span(&self, start: usize, end: usize) -> Span {
@@ -440,7 +450,18 @@ impl<'s> Layout<'s> {
 
     fn convert(&self, raw: RawToken, s: usize, e: usize) -> Tok {
         match raw {
-            RawToken::Word => Tok::Word(crate::lexer::classify(&self.src[s..e])),
+            RawToken::Word => {
+                let text = &self.src[s..e];
+                match crate::lexer::classify(text) {
+                    w if !w.is_name()
+                        && !self.declared.is_empty()
+                        && self.declared.iter().any(|d| d.eq_ignore_ascii_case(text)) =>
+                    {
+                        Tok::Word(Word::Ident)
+                    }
+                    w => Tok::Word(w),
+                }
+            }
             RawToken::Prefixed(None) => Tok::TypePrefix,
             RawToken::Prefixed(Some(t)) => Tok::Time(t),
             RawToken::Int(v) => Tok::Int(v),
@@ -497,6 +518,15 @@ impl<'s> Layout<'s> {
                 Some(Ok(RawToken::Semi)) if !self.in_decl() => {
                     self.semicolon_comment(s);
                     continue;
+                }
+                // `LD w.3`, `ST w.%X0`: a partial access (3rd edition) is a field named `3` or `%X0`
+                // (see `ast::partial_access`)
+                Some(Ok(RawToken::Int(_)) | Err(LexError::BadAddress(_)))
+                    if self.src[..s].ends_with('.')
+                        && !self.src[..s].ends_with("..")
+                        && crate::ast::partial_access(&self.src[s..e]).is_some() =>
+                {
+                    Tok::Word(Word::Ident)
                 }
                 Some(Ok(raw)) => self.convert(raw, s, e),
                 Some(Err(err)) => {

@@ -52,7 +52,8 @@ pub fn parse_named(
     implicit_name: &str,
     diags: &mut Diagnostics,
 ) -> CompilationUnit {
-    let Some(Parsed::Unit(mut top)) = parser::run(file, src, 0, Tok::UnitStart, diags) else {
+    let Some(Parsed::Unit(mut top)) = parser::run(file, src, 0, Tok::UnitStart, diags, Vec::new())
+    else {
         return CompilationUnit::default();
     };
     if let Some((at, vars, body)) = top.implicit.take() {
@@ -104,7 +105,7 @@ pub fn parse_var_blocks(
         return Vec::new();
     };
     let text = format!("{HEAD}{src}\nEND_PROGRAM\n");
-    match parser::run(file, &text, start, Tok::UnitStart, diags) {
+    match parser::run(file, &text, start, Tok::UnitStart, diags, Vec::new()) {
         Some(Parsed::Unit(top)) => top
             .items
             .into_iter()
@@ -125,7 +126,22 @@ pub fn parse_body(
     base_offset: usize,
     diags: &mut Diagnostics,
 ) -> Vec<IlStmt> {
-    match parser::run(file, src, base_offset, Tok::BodyStart, diags) {
+    parse_body_declared(file, src, base_offset, diags, &[])
+}
+
+/// [`parse_body`] of a body whose variables are declared outside its text (a PLCopen XML POU's
+/// interface): a keyword among `declared` (`on`, `var`, `task` ...) reads as that variable's name, so
+/// that the reserved name is one E1031 at its declaration, as in an `.il` file, not a syntax error at
+/// every use.
+pub fn parse_body_declared(
+    file: FileId,
+    src: &str,
+    base_offset: usize,
+    diags: &mut Diagnostics,
+    declared: &[&str],
+) -> Vec<IlStmt> {
+    let declared = declared.iter().map(|d| d.to_ascii_uppercase()).collect();
+    match parser::run(file, src, base_offset, Tok::BodyStart, diags, declared) {
         Some(Parsed::Body(body)) => body,
         _ => Vec::new(),
     }

@@ -1055,8 +1055,9 @@ pub(crate) fn run(
     base: usize,
     start: Tok,
     diags: &mut Diagnostics,
+    declared: Vec<String>,
 ) -> Option<Parsed> {
-    let mut layout = Layout::new(file, src, base, start);
+    let mut layout = Layout::new(file, src, base, start).with_declared(declared);
     let mut ctx = Ctx {
         file,
         src,

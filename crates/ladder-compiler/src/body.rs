@@ -77,7 +77,7 @@ pub fn lower_pou_body(
             Some((stmts, blocks))
         }
         "IL" => {
-            let stmts = crate::il_body::parse(ctx, lang, name);
+            let stmts = crate::il_body::parse(ctx, lang, pou);
             Some((inline(ctx, stmts), acts.blocks))
         }
         "ST" if !used => {
@@ -180,7 +180,7 @@ fn lower_actions<'e, 'a>(
         match b.name {
             "ST" if body_lang == "ST" => st_actions.push((id, b)),
             "ST" => st_other.push((id, b)),
-            "IL" => raw.push((id, crate::il_body::parse(ctx, b, name))),
+            "IL" => raw.push((id, crate::il_body::parse(ctx, b, pou))),
             "LD" | "FBD" => {
                 let g = graph::read(ctx, b, name);
                 let mut low = BodyLowering::new(index, pou, ctx.tag(b));

@@ -68,14 +68,24 @@ pub fn embedded_text(e: &Element) -> EmbeddedText {
 }
 
 /// Parses the IL body in place (spans point into the XML file); the parser's diagnostics name the POU.
+/// A keyword declared as one of the POU's variables (`on`, `task`) reads as that name in the body: its
+/// declaration gets the one E1031.
 pub fn parse(
     ctx: &mut crate::context::Ctx,
     e: &Element,
-    pou: &str,
+    pou: &il_frontend::ast::Pou,
 ) -> Vec<il_frontend::ast::IlStmt> {
     let t = embedded_text(e);
     let mut local = diagnostics::Diagnostics::new();
-    let body = il_frontend::parse_body(ctx.file, &t.text, t.base, &mut local);
+    let declared: Vec<&str> = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .map(|v| v.name.name.as_str())
+        .filter(|n| il_frontend::sema::reserved_name(n).is_some())
+        .collect();
+    let pou = pou.name.name.as_str();
+    let body = il_frontend::parse_body_declared(ctx.file, &t.text, t.base, &mut local, &declared);
     for d in local {
         let d = if d.xml.is_none() {
             d.with_xml(diagnostics::XmlContext {

@@ -391,8 +391,19 @@ impl<'i> BodyLowering<'i> {
     }
 
     fn field_type(&self, ty: &TypeRef, field: &Ident) -> Option<TypeRef> {
-        let TypeRef::Named(n) = ty else { return None };
         let span = field.span;
+        if let Some((size, _)) = il_frontend::ast::partial_access(&field.name) {
+            // `flags.2`, `w.%B1`: a part of an integer or bit string (sema checks the range)
+            let t = match size {
+                AddressSize::Bit => "BOOL",
+                AddressSize::Byte => "BYTE",
+                AddressSize::Word => "WORD",
+                AddressSize::DWord => "DWORD",
+                AddressSize::LWord => "LWORD",
+            };
+            return Some(named_type(t, span));
+        }
+        let TypeRef::Named(n) = ty else { return None };
         if let Some(fb) = catalogue::std_fb(&n.name) {
             return fb
                 .inputs

@@ -58,6 +58,9 @@ pub struct Index {
     /// Derived types that nothing in the file defines (upper-case names), each already reported
     /// once (E3009, with every use): a block of such a type is not reported again.
     pub missing_types: HashSet<String>,
+    /// The methods of each function block (CODESYS vendor data), by upper-case block name: a call
+    /// `M(...)` inside the block runs the block's own method.
+    pub method_sigs: HashMap<String, Vec<il_frontend::st::types::MethodSig>>,
     /// The ST lowering's view of the fields above ([`crate::st_body::declarations`]), built on first use
     /// and shared by every body: building it per body cost bodies x POUs. The fields are complete before
     /// any body is lowered.
@@ -119,6 +122,12 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             let ms = xml_methods(ctx, p, &h);
             if !ms.is_empty() {
                 il_frontend::st::file::add_method_vars(&mut h, &ms, ctx.diags);
+                index.method_sigs.insert(
+                    h.name.key(),
+                    ms.iter()
+                        .map(il_frontend::st::types::MethodSig::of)
+                        .collect(),
+                );
                 methods.insert(h.name.key(), ms);
             }
             index.pous.insert(h.name.key(), signature(&h));
@@ -176,16 +185,20 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
         };
         pou.body = stmts;
         pou.var_blocks.extend(hidden);
+        let mut lowered = Vec::new();
+        let mut local = diagnostics::Diagnostics::new();
         for m in methods.get(&pou.name.key()).into_iter().flatten() {
             let decls = crate::st_body::declarations(&index);
-            let mut local = diagnostics::Diagnostics::new();
             let action =
                 il_frontend::st::file::lower_method(ctx.file, decls, &mut pou, m, &mut local);
-            for d in local {
-                ctx.report_in_pou(d, &pou.name.name);
-            }
-            ctx.actions.extend(action);
+            lowered.extend(action);
         }
+        // the block's calls of its own methods (`M(...)`, `THIS^.M(...)`)
+        il_frontend::st::file::inline_own_method_calls(&mut pou, &mut lowered, &mut local);
+        for d in local {
+            ctx.report_in_pou(d, &pou.name.name);
+        }
+        ctx.actions.extend(lowered);
         unit.items.push(LibraryElement::Pou(pou));
     }
     unit.items

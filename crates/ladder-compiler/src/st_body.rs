@@ -22,6 +22,7 @@ pub fn declarations(index: &Index) -> &Declarations {
 
 fn build_declarations(index: &Index) -> Declarations {
     let mut d = Declarations::new();
+    d.methods = index.method_sigs.clone();
     for t in index.types.values() {
         d.add_type(t.clone());
     }

@@ -83,7 +83,16 @@ pub fn var_ref(t: &str, span: Span) -> Option<VarRef> {
             let e = r
                 .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
                 .unwrap_or(r.len());
-            if !is_ident(&r[..e]) {
+            // `flags.2`, `w.%X3`: a partial access (3rd edition), a field named `2` or `%X3`
+            let e = match r.strip_prefix('%') {
+                Some(p) => {
+                    1 + p
+                        .find(|c: char| !c.is_ascii_alphanumeric())
+                        .unwrap_or(p.len())
+                }
+                None => e,
+            };
+            if !is_ident(&r[..e]) && il_frontend::ast::partial_access(&r[..e]).is_none() {
                 return None;
             }
             accessors.push(Accessor::Field(Ident::new(&r[..e], span)));

@@ -12,7 +12,9 @@ use crate::ctypes;
 use crate::mangle;
 use crate::profile::Located;
 use diagnostics::{code, Diagnostic, Span};
-use il_frontend::ast::{Accessor, Literal, LiteralKind, Operand, PouKind, VarKind, VarRef};
+use il_frontend::ast::{
+    Accessor, AddressSize, Literal, LiteralKind, Operand, PouKind, VarKind, VarRef,
+};
 use il_frontend::sema::{
     with_upper, Elementary, FbType, GlobalRef, Pou, PouId, Type, UserTypeDef, Variable,
 };
@@ -28,12 +30,20 @@ pub enum Place {
     Mem { lv: String, ty: Type },
     /// A located variable or a direct address in the process image.
     Loc { loc: Located, ty: Type },
+    /// A partial access `x.3`, `x.%B1` (3rd edition): `width` bits from bit `shift` (LSB 0) of `whole`,
+    /// an integer or bit string, read as `ty` (BOOL, BYTE, WORD, DWORD, LWORD) and written back into it.
+    Part {
+        whole: Box<Place>,
+        shift: u32,
+        width: u32,
+        ty: Type,
+    },
 }
 
 impl Place {
     pub fn ty(&self) -> &Type {
         match self {
-            Place::Mem { ty, .. } | Place::Loc { ty, .. } => ty,
+            Place::Mem { ty, .. } | Place::Loc { ty, .. } | Place::Part { ty, .. } => ty,
         }
     }
 }
@@ -346,9 +356,40 @@ impl Gen<'_> {
         };
         let mut place = base?;
         for acc in r.accessors.iter().skip(skip) {
+            if let Accessor::Field(f) = acc {
+                if let Some((size, index)) = il_frontend::ast::partial_access(&f.name) {
+                    // `x.3`, `x.%B1`: sema checked the type and the range
+                    let width = size.bits();
+                    let Some(e) = place.ty().elementary() else {
+                        self.unsupported(
+                            r.span,
+                            "a partial access of a value that is not elementary",
+                        );
+                        return None;
+                    };
+                    if index >= e.bit_width() / width {
+                        self.unsupported(r.span, "a partial access out of range");
+                        return None;
+                    }
+                    let ty = Type::Elementary(match size {
+                        AddressSize::Bit => E::Bool,
+                        AddressSize::Byte => E::Byte,
+                        AddressSize::Word => E::Word,
+                        AddressSize::DWord => E::Dword,
+                        AddressSize::LWord => E::Lword,
+                    });
+                    place = Place::Part {
+                        whole: Box::new(place),
+                        shift: index * width,
+                        width,
+                        ty,
+                    };
+                    continue;
+                }
+            }
             let (lv, ty) = match place {
                 Place::Mem { lv, ty } => (lv, ty),
-                Place::Loc { .. } => {
+                Place::Loc { .. } | Place::Part { .. } => {
                     self.unsupported(r.span, "fields or indexes of a located variable");
                     return None;
                 }
@@ -535,6 +576,27 @@ impl Gen<'_> {
         match place {
             Place::Mem { lv, ty } => convert_owned(lv, &ty, want),
             Place::Loc { loc, ty } => convert_owned(load_expr(&loc, &ty), &ty, want),
+            Place::Part {
+                whole,
+                shift,
+                width,
+                ty,
+            } => {
+                let wt = whole.ty().clone();
+                let x = self.read_owned(*whole, &wt);
+                let ct = match ty.elementary() {
+                    Some(e) => ctypes::elementary(e),
+                    None => "IEC_BOOL",
+                };
+                convert_owned(
+                    cfmt!(
+                        "(({ct})((((uint64_t)({x})) >> {shift}) & {}))",
+                        part_mask(width)
+                    ),
+                    &ty,
+                    want,
+                )
+            }
         }
     }
 
@@ -576,6 +638,29 @@ impl Gen<'_> {
                 }
             },
             Place::Loc { loc, ty } => out.push_str(&store_expr(loc, ty, value)),
+            Place::Part {
+                whole,
+                shift,
+                width,
+                ..
+            } => {
+                // read, change the part, write the whole back (the whole's own store: a located
+                // variable keeps its byte order)
+                let wt = whole.ty().clone();
+                let x = self.read_owned((**whole).clone(), &wt);
+                let cw = match wt.elementary() {
+                    Some(e) => ctypes::elementary(e),
+                    None => "uint64_t",
+                };
+                let m = part_mask(*width);
+                self.write_store(
+                    out,
+                    whole,
+                    &cfmt!(
+                        "(({cw})((((uint64_t)({x})) & ~({m} << {shift})) | ((((uint64_t)({value})) & {m}) << {shift})))"
+                    ),
+                );
+            }
         }
     }
 
@@ -698,5 +783,14 @@ fn clamp64(v: i128) -> String {
         cfmt!("-INT64_C({})", -v)
     } else {
         cfmt!("INT64_C({v})")
+    }
+}
+
+/// The C constant masking the low `width` bits of a `uint64_t` (a partial access, [`Place::Part`]).
+fn part_mask(width: u32) -> String {
+    if width >= 64 {
+        "UINT64_MAX".to_string()
+    } else {
+        format!("((uint64_t){:#x}u)", (1u64 << width) - 1)
     }
 }

@@ -169,8 +169,11 @@ impl Body<'_, '_> {
         let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
         if let ReadOnly::PouInput { decl: Some(decl) } = ro {
-            if v.base.name.starts_with(crate::actions::FLAG_PREFIX) {
-                // the hidden flag of an action called from another POU, reset by the action itself
+            if v.base.name.starts_with(crate::actions::FLAG_PREFIX)
+                || v.base.name.starts_with(crate::actions::METHOD_PREFIX)
+            {
+                // the hidden flag of an action called from another POU, reset by the action itself;
+                // a method's hidden input, set by a call of the method inside its block
                 return;
             }
             // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)
@@ -684,6 +687,9 @@ impl Body<'_, '_> {
 
     /// `.field` of a structure or FB instance.
     fn field(&mut self, place: &Place, v: &VarRef, at: usize, f: &ast::Ident) -> Option<Place> {
+        if let Some((size, index)) = ast::partial_access(&f.name) {
+            return self.partial(place, v, at, f, size, index);
+        }
         match &place.ty {
             Type::Struct(id) => {
                 let UserTypeDef::Struct { fields } = &self.a.model.types[id.0 as usize].def else {
@@ -787,6 +793,79 @@ impl Body<'_, '_> {
                 None
             }
         }
+    }
+}
+
+impl Body<'_, '_> {
+    /// A partial access `x.3`, `x.%X3`, `x.%B1` ... (IEC 61131-3 3rd edition, 6.5.2.2): a bit, byte, word or
+    /// double word of an integer or bit-string variable, read and written like a variable of type BOOL,
+    /// BYTE, WORD, DWORD or LWORD. E1029 when the variable has no such part.
+    fn partial(
+        &mut self,
+        place: &Place,
+        v: &VarRef,
+        at: usize,
+        f: &ast::Ident,
+        size: ast::AddressSize,
+        index: u32,
+    ) -> Option<Place> {
+        let part = size.bits();
+        let path = path_text(v, at);
+        let t = self.a.type_name(&place.ty);
+        let width = match &place.ty {
+            Type::Elementary(e) if (e.is_integer() || e.is_bit()) && *e != Elementary::Bool => {
+                e.bit_width()
+            }
+            _ => {
+                self.a
+                    .error(
+                        code::E1029,
+                        f.span,
+                        format!("`{path}` is {t}, which has no bits to access with `.{}`", f.name),
+                    )
+                    .label("partial access here")
+                    .hint("partial access (`x.3`, `x.%X3`, `x.%B1`) works on integers and BYTE, WORD, DWORD, LWORD");
+                return None;
+            }
+        };
+        let count = width / part;
+        if part >= width || index >= count {
+            let what = match size {
+                ast::AddressSize::Bit => "bit",
+                ast::AddressSize::Byte => "byte",
+                ast::AddressSize::Word => "word",
+                ast::AddressSize::DWord => "double word",
+                ast::AddressSize::LWord => "long word",
+            };
+            let range = if part >= width {
+                format!("{t} has {width} bits: a {what} is not a part of it")
+            } else {
+                format!("{t} has {what}s 0 to {}", count - 1)
+            };
+            self.a
+                .error(
+                    code::E1029,
+                    f.span,
+                    format!("`{path}.{}` is out of range: {range}", f.name),
+                )
+                .label("no such part")
+                .hint(format!(
+                    "{t} has {width} bits, numbered 0 (the least significant) to {}",
+                    width - 1
+                ));
+            return None;
+        }
+        let ty = match size {
+            ast::AddressSize::Bit => Type::BOOL,
+            ast::AddressSize::Byte => Type::Elementary(Elementary::Byte),
+            ast::AddressSize::Word => Type::Elementary(Elementary::Word),
+            ast::AddressSize::DWord => Type::Elementary(Elementary::Dword),
+            ast::AddressSize::LWord => Type::Elementary(Elementary::Lword),
+        };
+        Some(Place {
+            ty,
+            read_only: place.read_only,
+        })
     }
 }
 

@@ -159,6 +159,512 @@ fn is_var_keyword(w: &str) -> bool {
     )
 }
 
+/// The library namespaces whose blocks and functions ladderc provides, upper case: CODESYS's and
+/// TwinCAT's standard libraries (`Standard.TON`, `Tc2_Standard.CTU`), their utility libraries (a block
+/// ladderc does not have is then an unknown type or function, named at its use), and their PLCopen
+/// motion libraries (`SM3_Basic.MC_MoveAbsolute`, `Tc2_MC2.MC_Power`).
+pub const PROVIDED_LIBRARIES: &[&str] = &[
+    "STANDARD",
+    "TC2_STANDARD",
+    "IEC",
+    "UTIL",
+    "TC2_UTILITIES",
+    "SM3_BASIC",
+    "TC2_MC2",
+];
+
+/// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
+/// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
+/// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
+/// after `:` or `OF` in a VAR block, a call `Lib.F(...)` in a body) whose name is no variable, POU or
+/// type of the file is E1032, once per library (an error of the parse stage: the checks that would
+/// report each use as an unknown type or function do not run), and its uses are renamed `__...`.
+/// `None`: nothing to change.
+fn library_qualifiers(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> Option<String> {
+    let ident = |t: &Token| matches!(t.tok, Tok::Ident);
+    // names declared in the file (`x :`, `a, b :`, `TYPE T :`, POU names): not libraries
+    let mut declared = std::collections::HashSet::new();
+    for (k, t) in toks.iter().enumerate() {
+        if !ident(t) {
+            continue;
+        }
+        let next = toks.get(k + 1).map(|n| &n.tok);
+        let prev = k
+            .checked_sub(1)
+            .map(|p| word(src, &toks[p]).to_ascii_uppercase());
+        if matches!(next, Some(Tok::Colon | Tok::Comma))
+            || matches!(
+                prev.as_deref(),
+                Some("PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" | "CONFIGURATION" | "RESOURCE")
+            )
+        {
+            declared.insert(word(src, t).to_ascii_uppercase());
+        }
+    }
+    let mut text: Option<String> = None;
+    let mut reported = std::collections::HashSet::new();
+    let mut in_decl = false;
+    for (k, t) in toks.iter().enumerate() {
+        let w = word(src, t).to_ascii_uppercase();
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            if is_var_keyword(&w) {
+                in_decl = true;
+            } else if w == "END_VAR" {
+                in_decl = false;
+            }
+        }
+        let (Some(dot), Some(member)) = (toks.get(k + 1), toks.get(k + 2)) else {
+            continue;
+        };
+        if !ident(t) || dot.tok != Tok::Dot || !ident(member) || declared.contains(&w) {
+            continue;
+        }
+        let prev = k.checked_sub(1).map(|p| &toks[p]);
+        if prev.is_some_and(|p| p.tok == Tok::Dot) {
+            continue;
+        }
+        let text = text.get_or_insert_with(|| src.to_string());
+        if PROVIDED_LIBRARIES.contains(&w.as_str()) {
+            blank(text, t.range.start..dot.range.end);
+            continue;
+        }
+        let type_position = in_decl
+            && prev.is_some_and(|p| p.tok == Tok::Colon || word(src, p).eq_ignore_ascii_case("OF"));
+        let call_position = !in_decl && toks.get(k + 3).is_some_and(|n| n.tok == Tok::LParen);
+        if !(type_position || call_position) {
+            continue;
+        }
+        let name = word(src, t);
+        if reported.insert(w.clone()) {
+            diags.push(
+                Diagnostic::error(
+                    code::E1032,
+                    format!("`{name}` is neither a variable nor a library ladderc provides"),
+                )
+                .at(Span::new(file, t.range.start, t.range.end))
+                .with_primary_label("library qualifier")
+                .with_hint(format!(
+                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2; `{}` comes from another library: add its POUs and types to the project",
+                    word(src, member)
+                )),
+            );
+        }
+        // `Lib.Name` -> `__b_Name` (same length; sema reports nothing more about it)
+        let mut bytes = std::mem::take(text).into_bytes();
+        bytes[t.range.start] = b'_';
+        if t.range.len() > 1 {
+            bytes[t.range.start + 1] = b'_';
+        }
+        bytes[dot.range.start] = b'_';
+        *text = String::from_utf8(bytes).unwrap_or_default();
+    }
+    text
+}
+
+/// `r : REF_TO INT;`, `p : POINTER TO S;` (edition 3 references, CODESYS pointers): not supported. Each
+/// declaration is one E0305 at its `REF_TO` / `POINTER TO`, which is blanked (the declaration is read as
+/// the referenced type); `at` gets the offset of each, so that the body of its POU (whose `r^`,
+/// `REF(x)`, `ADR(x)`, `NULL` would each be an error) is not compiled. `None`: no such declaration.
+fn reference_declarations(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+    at: &mut Vec<usize>,
+) -> Option<String> {
+    let mut text: Option<String> = None;
+    let mut in_decl = false;
+    for (k, t) in toks.iter().enumerate() {
+        let w = word(src, t).to_ascii_uppercase();
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            if is_var_keyword(&w) || w == "STRUCT" {
+                in_decl = true;
+            } else if w == "END_VAR" || w == "END_STRUCT" {
+                in_decl = false;
+            }
+        }
+        if !in_decl || t.tok != Tok::Colon {
+            continue;
+        }
+        let Some(first) = toks.get(k + 1) else {
+            continue;
+        };
+        let kw = word(src, first).to_ascii_uppercase();
+        let end = match kw.as_str() {
+            "REF_TO" => first.range.end,
+            "POINTER" => match toks.get(k + 2) {
+                Some(to) if word(src, to).eq_ignore_ascii_case("TO") => to.range.end,
+                _ => continue,
+            },
+            _ => continue,
+        };
+        let name = k.checked_sub(1).map(|p| word(src, &toks[p])).unwrap_or("");
+        let written = src.get(first.range.start..end).unwrap_or("REF_TO");
+        diags.push(
+            Diagnostic::error(
+                code::E0305,
+                format!("`{name}`: references and pointers (`{written}`) are not supported"),
+            )
+            .at(Span::new(file, first.range.start, end))
+            .with_primary_label("reference type")
+            .with_hint("pass the variable as VAR_IN_OUT, or use it directly; the body of this POU is not compiled"),
+        );
+        at.push(first.range.start);
+        blank(
+            text.get_or_insert_with(|| src.to_string()),
+            first.range.start..end,
+        );
+    }
+    text
+}
+
+/// One entry of a `VAR_CONFIG` block (IEC 61131-3 3rd edition 6.5.6): the instance path of a
+/// variable, the location it gets and its initial value.
+struct ConfigEntry {
+    path: Vec<crate::ast::Ident>,
+    location: Option<crate::ast::DirectAddress>,
+    init: Option<crate::ast::Initializer>,
+    span: Span,
+}
+
+/// The `VAR_CONFIG ... END_VAR` blocks of a text: their ranges (blanked before the IL parser reads the
+/// configuration) and their entries `res.inst.fb.x AT %QX0.1 : BOOL := TRUE;`. An entry that cannot
+/// be read is E0306.
+fn var_config_blocks(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> (Vec<Range<usize>>, Vec<ConfigEntry>) {
+    use crate::ast::{DirectAddress, Ident, Initializer, Literal, LiteralKind, Operand};
+    let mut ranges = Vec::new();
+    let mut entries = Vec::new();
+    let mut k = 0;
+    while k < toks.len() {
+        if !is_word(src, &toks[k], "VAR_CONFIG") {
+            k += 1;
+            continue;
+        }
+        let start = toks[k].range.start;
+        k += 1;
+        let mut entry: Vec<&Token> = Vec::new();
+        while k < toks.len() && !is_word(src, &toks[k], "END_VAR") && toks[k].tok != Tok::Eof {
+            if toks[k].tok != Tok::Semi {
+                entry.push(&toks[k]);
+                k += 1;
+                continue;
+            }
+            k += 1;
+            let Some(first) = entry.first() else {
+                continue;
+            };
+            let span = Span::new(file, first.range.start, entry[entry.len() - 1].range.end);
+            let bad = |diags: &mut Diagnostics, why: &str| {
+                diags.push(
+                    Diagnostic::error(code::E0306, format!("this VAR_CONFIG entry cannot be read: {why}"))
+                        .at(span)
+                        .with_hint("write `resource.instance.variable AT %QX0.1 : BOOL;` or `resource.instance.variable : INT := 5;`"),
+                );
+            };
+            let mut i = 0;
+            let mut path = Vec::new();
+            while i < entry.len() && entry[i].tok == Tok::Ident {
+                path.push(Ident::new(
+                    word(src, entry[i]),
+                    Span::new(file, entry[i].range.start, entry[i].range.end),
+                ));
+                i += 1;
+                if i < entry.len() && entry[i].tok == Tok::Dot {
+                    i += 1;
+                } else {
+                    break;
+                }
+            }
+            let mut location = None;
+            if i < entry.len() && word(src, entry[i]).eq_ignore_ascii_case("AT") {
+                if let Some(Tok::Address(area, size, p)) = entry.get(i + 1).map(|t| &t.tok) {
+                    let t = entry[i + 1];
+                    location = Some(DirectAddress {
+                        area: *area,
+                        size: *size,
+                        path: p.clone(),
+                        span: Span::new(file, t.range.start, t.range.end),
+                    });
+                    i += 2;
+                }
+            }
+            if path.len() < 2 || entry.get(i).map(|t| &t.tok) != Some(&Tok::Colon) {
+                bad(diags, "expected `instance.variable [AT %address] : type`");
+                entry.clear();
+                continue;
+            }
+            let assign = entry[i..].iter().position(|t| t.tok == Tok::Assign);
+            let mut init = None;
+            if let Some(a) = assign {
+                let rest = &entry[i + a + 1..];
+                let (neg, rest) = match rest.first().map(|t| &t.tok) {
+                    Some(Tok::Minus) => (true, &rest[1..]),
+                    _ => (false, rest),
+                };
+                let kind = match rest.iter().map(|t| &t.tok).collect::<Vec<_>>().as_slice() {
+                    [Tok::Int(v)] => Some(LiteralKind::Int(if neg { -v } else { *v })),
+                    [Tok::Real(v)] => Some(LiteralKind::Real(if neg { -v } else { *v })),
+                    [Tok::Kw(_)] if !neg && word(src, rest[0]).eq_ignore_ascii_case("TRUE") => {
+                        Some(LiteralKind::Bool(true))
+                    }
+                    [Tok::Kw(_)] if !neg && word(src, rest[0]).eq_ignore_ascii_case("FALSE") => {
+                        Some(LiteralKind::Bool(false))
+                    }
+                    _ => None,
+                };
+                let Some(kind) = kind else {
+                    bad(diags, "the initial value must be a number, TRUE or FALSE");
+                    entry.clear();
+                    continue;
+                };
+                let last = entry[entry.len() - 1];
+                init = Some(Initializer::Value(Operand::literal(Literal {
+                    kind,
+                    type_prefix: None,
+                    span: Span::new(file, entry[i + a + 1].range.start, last.range.end),
+                })));
+            }
+            entries.push(ConfigEntry {
+                path,
+                location,
+                init,
+                span,
+            });
+            entry.clear();
+        }
+        let end = toks.get(k).map_or(src.len(), |t| t.range.end);
+        ranges.push(start..end);
+    }
+    (ranges, entries)
+}
+
+/// Applies the `VAR_CONFIG` entries: the program instance's program, and each function block along
+/// an entry's path, is copied for that instance (`main__CFG1`, same body), and the copy's variable
+/// gets the entry's location (it must be declared `AT %I*` / `%Q*` / `%M*`, of the same area) and
+/// initial value. The instances of one program or block that VAR_CONFIG does not name keep the
+/// original. An entry whose path names no instance variable is E0306.
+fn apply_var_config(
+    unit: &mut CompilationUnit,
+    entries: Vec<ConfigEntry>,
+    diags: &mut Diagnostics,
+) {
+    use crate::ast::{Pou, PouKind, TypeRef};
+    if entries.is_empty() {
+        return;
+    }
+    let mut clones: std::collections::HashMap<String, String> = Default::default();
+    let mut next = 0;
+    let find_pou = |items: &[LibraryElement], name: &str| {
+        items
+            .iter()
+            .position(|i| matches!(i, LibraryElement::Pou(p) if p.name.is(name)))
+    };
+    for e in entries {
+        let fail = |diags: &mut Diagnostics, why: String| {
+            diags.push(
+                Diagnostic::error(code::E0306, format!("this VAR_CONFIG entry cannot be applied: {why}"))
+                    .at(e.span)
+                    .with_hint("name a resource, a program instance and its variables: `res.inst.fb.x`; the variable must be declared `AT %Q*` (or %I*, %M*) to get a location"),
+            );
+        };
+        // `res.inst.rest` (or `inst.rest`): the program instance
+        let mut found = None;
+        for (ii, item) in unit.items.iter().enumerate() {
+            let LibraryElement::Configuration(c) = item else {
+                continue;
+            };
+            for (ri, r) in c.resources.iter().enumerate() {
+                for (pi, p) in r.programs.iter().enumerate() {
+                    if e.path.len() > 2 && r.name == e.path[0] && p.name == e.path[1] {
+                        found = Some((ii, ri, pi, 2));
+                    } else if found.is_none() && p.name == e.path[0] {
+                        found = Some((ii, ri, pi, 1));
+                    }
+                }
+            }
+        }
+        let Some((ii, ri, pi, skip)) = found else {
+            let named: Vec<&str> = e.path.iter().take(2).map(|p| p.name.as_str()).collect();
+            fail(
+                diags,
+                format!("`{}` names no program instance", named.join(".")),
+            );
+            continue;
+        };
+        let LibraryElement::Configuration(c) = &mut unit.items[ii] else {
+            continue;
+        };
+        let inst = &mut c.resources[ri].programs[pi];
+        let prefix_key = |n: usize| {
+            e.path[..n]
+                .iter()
+                .map(|p| p.key())
+                .collect::<Vec<_>>()
+                .join(".")
+        };
+        let ty = inst.type_name.name.clone();
+        let key = prefix_key(skip);
+        let mut current = match clones.get(&key) {
+            Some(c) => c.clone(),
+            None => {
+                next += 1;
+                let name = format!("{ty}__CFG{next}");
+                clones.insert(key, name.clone());
+                inst.type_name.name = name.clone();
+                let Some(k) = find_pou(&unit.items, &ty) else {
+                    fail(diags, format!("no program `{ty}` in this file"));
+                    continue;
+                };
+                let LibraryElement::Pou(p) = &unit.items[k] else {
+                    continue;
+                };
+                let mut copy: Pou = p.clone();
+                copy.name.name = name.clone();
+                unit.items.push(LibraryElement::Pou(copy));
+                name
+            }
+        };
+        let rest = &e.path[skip..];
+        for (depth, v) in rest.iter().enumerate() {
+            let Some(k) = find_pou(&unit.items, &current) else {
+                break;
+            };
+            let LibraryElement::Pou(p) = &mut unit.items[k] else {
+                break;
+            };
+            let Some(decl) = p
+                .var_blocks
+                .iter_mut()
+                .flat_map(|b| b.vars.iter_mut())
+                .find(|d| d.name == *v)
+            else {
+                fail(
+                    diags,
+                    format!(
+                        "`{}` has no variable `{}`",
+                        p.name.name.split("__CFG").next().unwrap_or(""),
+                        v.name
+                    ),
+                );
+                break;
+            };
+            if depth + 1 == rest.len() {
+                if let Some(loc) = &e.location {
+                    match &decl.location {
+                        Some(d) if d.path.is_empty() && d.area == loc.area => {
+                            decl.location = Some(loc.clone());
+                        }
+                        _ => {
+                            fail(
+                                diags,
+                                format!(
+                                    "`{}` is not declared AT {}*",
+                                    v.name,
+                                    match loc.area {
+                                        crate::ast::Area::Input => "%I",
+                                        crate::ast::Area::Output => "%Q",
+                                        crate::ast::Area::Memory => "%M",
+                                    }
+                                ),
+                            );
+                            break;
+                        }
+                    }
+                }
+                if e.init.is_some() {
+                    decl.init = e.init.clone();
+                }
+                break;
+            }
+            let TypeRef::Named(fb) = &decl.ty else {
+                fail(diags, format!("`{}` is no function block instance", v.name));
+                break;
+            };
+            let fb_name = fb.name.clone();
+            let key = prefix_key(skip + depth + 1);
+            let name = match clones.get(&key) {
+                Some(c) => c.clone(),
+                None => {
+                    next += 1;
+                    let name = format!("{fb_name}__CFG{next}");
+                    clones.insert(key, name.clone());
+                    name
+                }
+            };
+            let fb_span = fb.span;
+            decl.ty = TypeRef::Named(crate::ast::Ident::new(name.clone(), fb_span));
+            if find_pou(&unit.items, &name).is_none() {
+                let Some(k) = find_pou(&unit.items, &fb_name) else {
+                    fail(diags, format!("no function block `{fb_name}` in this file"));
+                    break;
+                };
+                let LibraryElement::Pou(p) = &unit.items[k] else {
+                    break;
+                };
+                if p.kind != PouKind::FunctionBlock {
+                    fail(diags, format!("`{}` is no function block instance", v.name));
+                    break;
+                }
+                let mut copy: Pou = p.clone();
+                copy.name.name = name.clone();
+                unit.items.push(LibraryElement::Pou(copy));
+            }
+            current = name;
+        }
+    }
+    // a program or block all of whose instances now use copies is dropped (its placeholders
+    // would have no location)
+    let originals: std::collections::HashSet<String> = clones
+        .values()
+        .filter_map(|c| c.split("__CFG").next())
+        .map(str::to_ascii_uppercase)
+        .collect();
+    loop {
+        let before = unit.items.len();
+        let mut used: std::collections::HashSet<String> = Default::default();
+        for item in &unit.items {
+            match item {
+                LibraryElement::Pou(p) => {
+                    for d in p.var_blocks.iter().flat_map(|b| b.vars.iter()) {
+                        let mut t = &d.ty;
+                        while let TypeRef::Array { element, .. } = t {
+                            t = element;
+                        }
+                        if let TypeRef::Named(n) = t {
+                            used.insert(n.key());
+                        }
+                    }
+                }
+                LibraryElement::Configuration(c) => {
+                    for p in c.resources.iter().flat_map(|r| r.programs.iter()) {
+                        used.insert(p.type_name.key());
+                    }
+                }
+                _ => {}
+            }
+        }
+        unit.items.retain(|i| match i {
+            LibraryElement::Pou(p) => {
+                !originals.contains(&p.name.key()) || used.contains(&p.name.key())
+            }
+            _ => true,
+        });
+        if unit.items.len() == before {
+            break;
+        }
+    }
+}
+
 /// Finds the POUs of a text and the language of each body.
 pub fn scan(src: &str) -> Vec<PouText> {
     let (toks, _) = lex(src);
@@ -366,7 +872,14 @@ fn pending_method(
     diags: &mut Diagnostics,
 ) -> PendingMethod {
     let vars = |text: &str, base: usize, diags: &mut Diagnostics| -> Vec<crate::ast::VarBlock> {
-        match crate::parser::run(file, text, base, crate::lexer::Tok::UnitStart, diags) {
+        match crate::parser::run(
+            file,
+            text,
+            base,
+            crate::lexer::Tok::UnitStart,
+            diags,
+            Vec::new(),
+        ) {
             Some(crate::parser::Parsed::Unit(mut top)) => {
                 let mut blocks: Vec<crate::ast::VarBlock> =
                     top.implicit.take().map(|(_, v, _)| v).unwrap_or_default();
@@ -605,8 +1118,35 @@ pub fn parse_text(
         }
         first_try = Some((unit, local));
     }
-    let (toks, problems) = lex(src);
+    let (mut toks, mut problems) = lex(src);
+    let (unqualified, unreferenced);
+    let mut references = Vec::new();
+    let src = if lang == Lang::St {
+        let src = match reference_declarations(file, src, &toks, diags, &mut references) {
+            Some(t) => {
+                unreferenced = t;
+                (toks, problems) = lex(&unreferenced);
+                unreferenced.as_str()
+            }
+            None => src,
+        };
+        match library_qualifiers(file, src, &toks, diags) {
+            Some(t) => {
+                unqualified = t;
+                (toks, problems) = lex(&unqualified);
+                unqualified.as_str()
+            }
+            None => src,
+        }
+    } else {
+        src
+    };
     let pous = scan_tokens(src, &toks);
+    let var_config = if lang == Lang::St {
+        var_config_blocks(file, src, &toks, diags)
+    } else {
+        (Vec::new(), Vec::new())
+    };
     drop(toks);
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
     if let Some((unit, local)) = first_try {
@@ -708,6 +1248,14 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
+        if references
+            .iter()
+            .any(|&k| p.name_range.end <= k && k < p.body.start)
+        {
+            // a reference or pointer declaration (E0305): the body, which uses it, is not compiled
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         if p.sfc.is_some() {
             pending.push(PendingBody {
                 file,
@@ -788,8 +1336,12 @@ pub fn parse_text(
         Problem::UnterminatedComment(r) => Some(r.start),
         _ => None,
     });
+    for r in &var_config.0 {
+        blank(&mut text, r.clone());
+    }
     let mut local = Diagnostics::new();
-    let unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    apply_var_config(&mut unit, var_config.1, diags);
     match unclosed {
         Some(at) => diags.extend(local.into_vec().into_iter().filter(|d| {
             !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
@@ -833,7 +1385,22 @@ pub fn compile_pending(
             }
         }
     }
-    let decls = super::Declarations::from_units(units);
+    let mut decls = super::Declarations::from_units(units);
+    for pb in pending.iter().filter(|pb| !pb.methods.is_empty()) {
+        for unit in units.iter() {
+            for item in unit.items.iter() {
+                let LibraryElement::Pou(p) = item else {
+                    continue;
+                };
+                if p.name.span.file == pb.file && p.name.span.start as usize == pb.name_start {
+                    decls.methods.insert(
+                        p.name.key(),
+                        pb.methods.iter().map(super::types::MethodSig::of).collect(),
+                    );
+                }
+            }
+        }
+    }
     for pb in pending.iter().filter(|pb| !pb.sfc) {
         for unit in units.iter_mut() {
             let mut standalone = Vec::new();
@@ -879,11 +1446,14 @@ pub fn compile_pending(
                     p.var_blocks.push(t);
                 }
                 standalone.extend(actions);
+                let mut methods = Vec::new();
                 for m in &pb.methods {
                     if let Some(a) = lower_method(pb.file, &decls, p, m, diags) {
-                        standalone.push(a);
+                        methods.push(a);
                     }
                 }
+                inline_own_method_calls(p, &mut methods, diags);
+                standalone.extend(methods);
             }
             unit.items
                 .extend(standalone.into_iter().map(LibraryElement::Action));
@@ -959,6 +1529,56 @@ pub fn add_method_vars(
     }
 }
 
+/// Puts a copy of a method's statements where the block's body, or one of its methods, calls it
+/// (`M(...)` inside the block, lowered to `CAL M` by [`super::PouLowering`]); a method that calls
+/// itself, directly or through another, is E0106 at the call.
+pub fn inline_own_method_calls(
+    p: &mut crate::ast::Pou,
+    methods: &mut [crate::ast::Action],
+    diags: &mut Diagnostics,
+) {
+    if methods.is_empty() {
+        return;
+    }
+    let map: std::collections::HashMap<String, Vec<crate::ast::IlStmt>> = methods
+        .iter()
+        .map(|a| (a.name.key(), a.body.clone()))
+        .collect();
+    let vars: std::collections::HashSet<String> = p
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+        .collect();
+    let is_var = |n: &str| vars.contains(&n.to_ascii_uppercase());
+    let mut next = 0;
+    let mut local = Diagnostics::new();
+    p.body = crate::actions::inline_calls(
+        std::mem::take(&mut p.body),
+        &map,
+        &is_var,
+        "__MC",
+        &mut next,
+        &mut local,
+    );
+    for a in methods.iter_mut() {
+        a.body = crate::actions::inline_calls(
+            std::mem::take(&mut a.body),
+            &map,
+            &is_var,
+            "__MC",
+            &mut next,
+            &mut local,
+        );
+    }
+    // a recursion is found from every place that enters it: reported once per call
+    let mut seen = std::collections::HashSet::new();
+    for d in local {
+        if seen.insert((d.code, d.span.map(|s| (s.start, s.end)), d.message.clone())) {
+            diags.push(d);
+        }
+    }
+}
+
 /// Lowers a method of the function block `p` (its hidden variables already declared) into an
 /// [`Action`](crate::ast::Action) for [`crate::actions::link`]: its statements are lowered where the
 /// method's own names are its variables (they shadow the block's), then those names become the
@@ -970,7 +1590,7 @@ pub fn lower_method(
     m: &PendingMethod,
     diags: &mut Diagnostics,
 ) -> Option<crate::ast::Action> {
-    use crate::actions::{instantiate, method_result, method_var, METHOD_PREFIX};
+    use crate::actions::{instantiate, method_result, method_var};
     use crate::ast::{VarBlock, VarKind};
     let mut own: Vec<VarBlock> = m.blocks.clone();
     if let Some(r) = &m.ret {
@@ -990,9 +1610,9 @@ pub fn lower_method(
     let mut view = p.clone();
     view.body = Vec::new();
     for b in &mut view.var_blocks {
-        b.vars.retain(|v| {
-            !v.name.name.starts_with(METHOD_PREFIX) && !rename.contains_key(&v.name.key())
-        });
+        // (the hidden variables of the block's methods stay: a call of another method stores
+        // into them)
+        b.vars.retain(|v| !rename.contains_key(&v.name.key()));
     }
     view.var_blocks.extend(own);
     let stmts = super::parse_statements(file, &m.text, m.base, diags);

@@ -109,6 +109,17 @@ impl Env<'_> {
 
     /// The type of a member `field` of a value of type `t` (struct field, FB input/output).
     pub fn member(&self, t: &TypeRef, field: &Ident) -> Option<TypeRef> {
+        if let Some((size, _)) = crate::ast::partial_access(&field.name) {
+            // `x.3`, `x.%B1`: a part of an integer or bit string (sema checks the range)
+            let e = match size {
+                AddressSize::Bit => Elementary::Bool,
+                AddressSize::Byte => Elementary::Byte,
+                AddressSize::Word => Elementary::Word,
+                AddressSize::DWord => Elementary::Dword,
+                AddressSize::LWord => Elementary::Lword,
+            };
+            return Some(elem_ref(e, field.span));
+        }
         let TypeRef::Named(n) = self.resolve(t) else {
             return None;
         };

@@ -379,6 +379,14 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
                 continue;
             }
             Ok(Raw::Comment | Raw::LineComment) => continue,
+            // `x.%X3`, `x.%B1`: a partial access after a dot (3rd edition), an identifier for the parser
+            Err(LexError::BadAddress(_))
+                if src[..range.start].ends_with('.')
+                    && !src[..range.start].ends_with("..")
+                    && crate::ast::partial_access(lx.slice()).is_some() =>
+            {
+                Tok::Ident
+            }
             Err(e) => {
                 problems.push(match e {
                     LexError::UnexpectedChar => Problem::UnexpectedChar(range.clone()),

@@ -56,6 +56,9 @@ pub struct PouLowering<'d> {
     il_actions: HashMap<String, std::rc::Rc<Vec<IlStmt>>>,
     /// Actions being inlined (a call of one inside itself is reported, not expanded forever).
     inlining: Vec<String>,
+    /// The methods of the function block being lowered (or of the block of the method being
+    /// lowered), by upper-case name: `M(...)` inside the block is a call of its own method.
+    methods: HashMap<String, super::types::MethodSig>,
     /// Types of the subexpressions of the trees being lowered (so lowering a chain of n operators
     /// types each node once, not n times). Cleared by every public entry point and after lowering a
     /// tree built here, so no entry outlives the node it describes.
@@ -167,6 +170,13 @@ impl<'d> PouLowering<'d> {
             actions: HashMap::new(),
             il_actions: HashMap::new(),
             inlining: Vec::new(),
+            methods: decls
+                .methods
+                .get(&pou.name.key())
+                .into_iter()
+                .flatten()
+                .map(|m| (m.name.to_ascii_uppercase(), m.clone()))
+                .collect(),
             types: RefCell::new(TypeCache::new()),
         }
     }
@@ -229,6 +239,292 @@ impl<'d> PouLowering<'d> {
             return None;
         }
         Some((n.key(), body))
+    }
+
+    /// The method of the block a call statement names: `M(...)` (or `THIS^.M(...)`), where `M` is
+    /// a method of the block and no variable of the POU has that name.
+    fn method_of(&self, callee: &Place) -> Option<&super::types::MethodSig> {
+        let PlaceBase::Name(n) = &callee.base else {
+            return None;
+        };
+        if !callee.accessors.is_empty() || self.vars.contains_key(&n.key()) {
+            return None;
+        }
+        self.methods.get(&n.key())
+    }
+
+    /// A call of the block's own method `M(args)`: the inputs are stored into the method's hidden
+    /// inputs, `CAL M` runs it (replaced by a copy of the method's statements once every method is
+    /// lowered: [`crate::actions::inline_calls`]), then the outputs (`v => x`) are read back.
+    fn method_call(
+        &mut self,
+        sig: &super::types::MethodSig,
+        args: &[Arg],
+        span: Span,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        let place = |name: String, span: Span| Place {
+            base: PlaceBase::Name(Ident::new(name, span)),
+            accessors: Vec::new(),
+            span,
+        };
+        let mut before = Vec::new();
+        let mut after = Vec::new();
+        let mut positional = sig.inputs.iter();
+        for a in args {
+            let (param, list) = match (&a.dir, &a.name) {
+                (ArgDir::Input, Some(n)) => {
+                    (sig.inputs.iter().find(|i| n.is(i)).cloned(), &sig.inputs)
+                }
+                (ArgDir::Input, None) => (positional.next().cloned(), &sig.inputs),
+                (ArgDir::Output { .. }, Some(n)) => {
+                    (sig.outputs.iter().find(|o| n.is(o)).cloned(), &sig.outputs)
+                }
+                (ArgDir::Output { .. }, None) => (None, &sig.outputs),
+            };
+            let Some(param) = param else {
+                let what = match &a.name {
+                    Some(n) => format!("method `{}` has no parameter `{}`", sig.name, n.name),
+                    None => format!("method `{}` takes {} input(s)", sig.name, sig.inputs.len()),
+                };
+                diags.push(
+                    Diagnostic::error(code::E1011, what)
+                        .at(a.span)
+                        .with_primary_label("no such parameter")
+                        .with_hint(format!("parameters of `{}`: {}", sig.name, list.join(", "))),
+                );
+                continue;
+            };
+            let hidden = place(crate::actions::method_var(&sig.name, &param), a.span);
+            match a.dir {
+                ArgDir::Input => before.push(Stmt {
+                    kind: StmtKind::Assign {
+                        target: hidden,
+                        value: a.value.clone(),
+                    },
+                    span: a.span,
+                }),
+                ArgDir::Output { negated } => {
+                    let ExprKind::Place(target) = &a.value.kind else {
+                        continue;
+                    };
+                    let read = Expr {
+                        kind: ExprKind::Place(hidden),
+                        span: a.span,
+                    };
+                    let value = if negated {
+                        Expr {
+                            kind: ExprKind::Unary {
+                                op: UnaryOp::Not,
+                                operand: Box::new(read),
+                            },
+                            span: a.span,
+                        }
+                    } else {
+                        read
+                    };
+                    after.push(Stmt {
+                        kind: StmtKind::Assign {
+                            target: target.clone(),
+                            value,
+                        },
+                        span: a.span,
+                    });
+                }
+            }
+        }
+        self.stmt_list(&before, out, diags);
+        out.push(instr(
+            InstrKind::Call {
+                cond: Condition::Always,
+                instance: VarRef {
+                    base: Ident::new(sig.name.clone(), span),
+                    accessors: Vec::new(),
+                    span,
+                },
+                args: CallArgs::None,
+            },
+            span,
+        ));
+        self.stmt_list(&after, out, diags);
+        self.types.get_mut().clear();
+    }
+
+    /// The calls of the block's own methods inside the expressions `s` evaluates before anything
+    /// else (an assignment's, a call's arguments, the first IF condition, a CASE selector, FOR
+    /// bounds), as call statements, and `s` reading their results instead; `None` when it has none.
+    /// A call in an ELSIF, WHILE or UNTIL condition (evaluated later, or again) is E0108, as from
+    /// outside the block.
+    fn hoist_method_calls(&self, s: &Stmt, diags: &mut Diagnostics) -> Option<(Vec<Stmt>, Stmt)> {
+        let has = |e: &Expr| self.first_method_call(e).is_some();
+        let place_has = |p: &Place| {
+            p.accessors
+                .iter()
+                .any(|a| matches!(a, Accessor::Index(ix) if ix.iter().any(has)))
+        };
+        let any = match &s.kind {
+            StmtKind::Assign { target, value } => place_has(target) || has(value),
+            StmtKind::Call { args, .. } => args.iter().any(|a| has(&a.value)),
+            StmtKind::If { branches, .. } => branches.iter().any(|b| has(&b.cond)),
+            StmtKind::Case { selector, .. } => has(selector),
+            StmtKind::For { from, to, by, .. } => {
+                has(from) || has(to) || by.as_ref().is_some_and(has)
+            }
+            StmtKind::While { cond, .. } => has(cond),
+            StmtKind::Repeat { until, .. } => has(until),
+            _ => false,
+        };
+        if !any {
+            return None;
+        }
+        let mut calls = Vec::new();
+        let mut rest = s.clone();
+        let mut late: Vec<&mut Expr> = Vec::new();
+        {
+            let mut eager: Vec<&mut Expr> = Vec::new();
+            match &mut rest.kind {
+                StmtKind::Assign { target, value } => {
+                    place_exprs(target, &mut eager);
+                    eager.push(value);
+                }
+                StmtKind::Call { args, .. } => eager.extend(args.iter_mut().map(|a| &mut a.value)),
+                StmtKind::If { branches, .. } => {
+                    for (k, b) in branches.iter_mut().enumerate() {
+                        if k == 0 {
+                            eager.push(&mut b.cond);
+                        } else {
+                            late.push(&mut b.cond);
+                        }
+                    }
+                }
+                StmtKind::Case { selector, .. } => eager.push(selector),
+                StmtKind::For { from, to, by, .. } => {
+                    eager.push(from);
+                    eager.push(to);
+                    eager.extend(by.as_mut());
+                }
+                StmtKind::While { cond, .. } => late.push(cond),
+                StmtKind::Repeat { until, .. } => late.push(until),
+                _ => {}
+            }
+            for e in eager {
+                self.hoist_in(e, &mut calls, diags);
+            }
+        }
+        for e in late {
+            if let Some(span) = self.first_method_call(e) {
+                diags.push(
+                    Diagnostic::error(
+                        code::E0108,
+                        "a call of the block's own method in an ELSIF, WHILE or UNTIL condition is not supported",
+                    )
+                    .at(span)
+                    .with_hint("call the method in a statement of its own and test the variable that holds its result"),
+                );
+                *e = Expr {
+                    kind: ExprKind::Error,
+                    span,
+                };
+            }
+        }
+        Some((calls, rest))
+    }
+
+    /// Whether `n` names one of the block's methods (and no variable).
+    fn is_method(&self, n: &Ident) -> bool {
+        self.methods.contains_key(&n.key()) && !self.vars.contains_key(&n.key())
+    }
+
+    /// Replaces the method calls inside `e` (arguments first) by reads of their results.
+    fn hoist_in(&self, e: &mut Expr, calls: &mut Vec<Stmt>, diags: &mut Diagnostics) {
+        match &mut e.kind {
+            ExprKind::Unary { operand, .. } => self.hoist_in(operand, calls, diags),
+            ExprKind::Binary { left, right, .. } => {
+                self.hoist_in(left, calls, diags);
+                self.hoist_in(right, calls, diags);
+            }
+            ExprKind::Call { name, args } => {
+                for a in args.iter_mut() {
+                    self.hoist_in(&mut a.value, calls, diags);
+                }
+                if !self.is_method(name) {
+                    return;
+                }
+                let name = name.clone();
+                let sig = &self.methods[&name.key()];
+                let twice = calls.iter().any(|c| {
+                    matches!(&c.kind, StmtKind::Call { callee: Place { base: PlaceBase::Name(n), .. }, .. } if n.is(&sig.name))
+                });
+                if twice || !sig.returns {
+                    let msg = if twice {
+                        format!("method `{}` is called twice in one statement", name.name)
+                    } else {
+                        format!("method `{}` returns no value", name.name)
+                    };
+                    diags.push(
+                        Diagnostic::error(if twice { code::E0108 } else { code::E1011 }, msg)
+                            .at(e.span)
+                            .with_hint(if twice {
+                                "both calls would give one result: call it in two statements, each storing its result"
+                            } else {
+                                "call it as a statement, or give the method a result type (`METHOD M : INT`) and assign it"
+                            }),
+                    );
+                    e.kind = ExprKind::Error;
+                    return;
+                }
+                let args = std::mem::take(args);
+                calls.push(Stmt {
+                    kind: StmtKind::Call {
+                        callee: Place {
+                            base: PlaceBase::Name(name.clone()),
+                            accessors: Vec::new(),
+                            span: name.span,
+                        },
+                        args,
+                    },
+                    span: e.span,
+                });
+                e.kind = ExprKind::Place(Place {
+                    base: PlaceBase::Name(Ident::new(
+                        crate::actions::method_result(&sig.name),
+                        name.span,
+                    )),
+                    accessors: Vec::new(),
+                    span: e.span,
+                });
+            }
+            ExprKind::Place(p) => {
+                let mut inner = Vec::new();
+                place_exprs(p, &mut inner);
+                for x in inner {
+                    self.hoist_in(x, calls, diags);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// The span of the first call of one of the block's methods inside `e`.
+    fn first_method_call(&self, e: &Expr) -> Option<Span> {
+        match &e.kind {
+            ExprKind::Unary { operand, .. } => self.first_method_call(operand),
+            ExprKind::Binary { left, right, .. } => self
+                .first_method_call(left)
+                .or_else(|| self.first_method_call(right)),
+            ExprKind::Call { name, args } => {
+                if self.is_method(name) {
+                    return Some(e.span);
+                }
+                args.iter().find_map(|a| self.first_method_call(&a.value))
+            }
+            ExprKind::Place(p) => p.accessors.iter().find_map(|a| match a {
+                Accessor::Index(ix) => ix.iter().find_map(|x| self.first_method_call(x)),
+                Accessor::Field(_) => None,
+            }),
+            _ => None,
+        }
     }
 
     /// Lowers an expression: the instructions leave its value in the current result.
@@ -355,7 +651,26 @@ impl<'d> PouLowering<'d> {
 
     fn stmt(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
         let span = s.span;
+        if !self.methods.is_empty() {
+            if let Some((calls, rest)) = self.hoist_method_calls(s, diags) {
+                // `x := M(a) + 1;` inside the block: the call runs first, the statement reads the
+                // result `__M_M` (as `inst.M(a)` from outside, see the parser)
+                for c in &calls {
+                    self.stmt(c, out, diags);
+                }
+                self.stmt(&rest, out, diags);
+                self.types.get_mut().clear();
+                return;
+            }
+        }
         match &s.kind {
+            StmtKind::Call { callee, args } if self.method_of(callee).is_some() => {
+                let sig = self
+                    .method_of(callee)
+                    .expect("checked by the guard")
+                    .clone();
+                self.method_call(&sig, args, span, out, diags);
+            }
             StmtKind::Empty => {}
             StmtKind::Assign { target, value } => {
                 self.poisoned = false;
@@ -1598,6 +1913,15 @@ fn label_key(lo: &Operand, hi: &Operand) -> Option<LabelKey> {
         _ => {
             let (a, b) = (name(lo)?, name(hi)?);
             (a == b).then_some(LabelKey::Enum(a))
+        }
+    }
+}
+
+/// The index expressions of a place (`a[i, M(2)].b`), for [`PouLowering::hoist_method_calls`].
+fn place_exprs<'p>(p: &'p mut Place, out: &mut Vec<&'p mut Expr>) {
+    for a in p.accessors.iter_mut() {
+        if let Accessor::Index(ix) = a {
+            out.extend(ix.iter_mut());
         }
     }
 }

@@ -801,6 +801,19 @@ impl<'s, 'd> Parser<'s, 'd> {
         let t = self.bump();
         let start = t.range.start;
         let base = match t.tok {
+            // `THIS^.x`, `THIS^.M(...)` inside a function block or its method (edition 3): the block's
+            // own variable or method, as `x` and `M(...)`
+            Tok::Ident
+                if self.ident(&t).is("THIS")
+                    && *self.peek() == Tok::Caret
+                    && *self.peek_at(1) == Tok::Dot
+                    && *self.peek_at(2) == Tok::Ident =>
+            {
+                self.bump();
+                self.bump();
+                let f = self.bump();
+                PlaceBase::Name(self.ident(&f))
+            }
             Tok::Ident => PlaceBase::Name(self.ident(&t)),
             Tok::Address(area, size, path) => PlaceBase::Address(DirectAddress {
                 area,
@@ -820,13 +833,11 @@ impl<'s, 'd> Parser<'s, 'd> {
                             let f = self.bump();
                             accessors.push(Accessor::Field(self.ident(&f)));
                         }
+                        // `x.3`: a partial access (3rd edition), kept as the field `3` (see
+                        // `ast::partial_access`; `x.%X3` comes as an identifier from the lexer)
                         Tok::Int(_) => {
-                            self.error_here(
-                                code::E0108,
-                                "bit access `x.n` is not supported",
-                                "use a shift and a mask: `(SHR(x, n) AND 1) = 1`",
-                            );
-                            return None;
+                            let f = self.bump();
+                            accessors.push(Accessor::Field(self.ident(&f)));
                         }
                         _ => {
                             let found = self.describe_current();
@@ -1250,6 +1261,17 @@ impl<'s, 'd> Parser<'s, 'd> {
                     if self.at(&Tok::LParen) {
                         if let Some(Accessor::Field(m)) = p.accessors.last() {
                             return self.method_call_expr(p.clone(), m.clone());
+                        }
+                        // `THIS^.M(...)`: a call of the block's own method `M(...)`
+                        if let (PlaceBase::Name(name), true) = (&p.base, p.accessors.is_empty()) {
+                            let name = name.clone();
+                            return match self.args() {
+                                Some(args) => Expr {
+                                    kind: ExprKind::Call { name, args },
+                                    span: here.to(self.span(self.prev_end(), self.prev_end())),
+                                },
+                                None => self.error_expr(here),
+                            };
                         }
                         self.error_here(
                             code::E0108,

@@ -63,6 +63,43 @@ pub struct Declarations {
     pub globals: HashMap<String, TypeRef>,
     /// Named global variable lists (CODESYS GVLs): list, then member, both upper-case.
     pub global_lists: HashMap<String, HashMap<String, TypeRef>>,
+    /// The methods of each function block (upper-case block name), callable inside the block
+    /// (`M(...)`, `THIS^.M(...)`, see [`super::PouLowering`]).
+    pub methods: HashMap<String, Vec<MethodSig>>,
+}
+
+/// A method's interface as seen from inside its function block: the call `M(a, b)` or `M(v := a)`
+/// stores the arguments into the method's hidden inputs, runs the method there, and reads its
+/// outputs and result (`__M_<METHOD>_<VAR>`, `__M_<METHOD>`: [`crate::actions::method_var`]).
+#[derive(Debug, Clone)]
+pub struct MethodSig {
+    /// The method's name as declared.
+    pub name: String,
+    /// Its VAR_INPUT names, in declaration order (positional arguments bind in this order).
+    pub inputs: Vec<String>,
+    /// Its VAR_OUTPUT names.
+    pub outputs: Vec<String>,
+    /// Whether it returns a value (`METHOD M : INT`).
+    pub returns: bool,
+}
+
+impl MethodSig {
+    /// The interface of a method read from an ST file or a CODESYS export.
+    pub fn of(m: &super::file::PendingMethod) -> MethodSig {
+        let names = |k: crate::ast::VarKind| {
+            m.blocks
+                .iter()
+                .filter(|b| b.kind == k)
+                .flat_map(|b| b.vars.iter().map(|v| v.name.name.clone()))
+                .collect()
+        };
+        MethodSig {
+            name: m.name.name.clone(),
+            inputs: names(crate::ast::VarKind::Input),
+            outputs: names(crate::ast::VarKind::Output),
+            returns: m.ret.is_some(),
+        }
+    }
 }
 
 impl Declarations {

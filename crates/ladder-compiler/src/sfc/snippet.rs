@@ -82,7 +82,7 @@ impl<'i> Snippets<'i> {
         // IL leaves a condition in the current result; LD/FBD write the transition's name.
         let mut delivered = Delivered::CurrentResult;
         let mut stmts = match lang.name {
-            "IL" => crate::il_body::parse(ctx, lang, &pou_name),
+            "IL" => crate::il_body::parse(ctx, lang, self.pou),
             "ST" => {
                 let (part, name) = match purpose {
                     Purpose::Condition { name, .. } => (StPart::Expression, name),

@@ -1,0 +1,360 @@
+//! Constructs of real projects that were still rejected or mishandled after issue #13's first rounds,
+//! each closed end to end through `ladderc run` (traces checked cycle by cycle): partial access to bits
+//! and bytes (`x.3`, `x.%X3`, `x.%B1`) in ST, IL, LD and FBD, and the others added below.
+
+mod common;
+use common::ladderc;
+
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/lang_gaps")
+        .join(name)
+}
+
+/// `ladderc run FILE --cycles N --sanitize --watch WATCH --trace -`: the trace (standard output)
+/// and standard error; asserts exit 0.
+fn run(file: &Path, cycles: u32, watch: &str) -> (String, String) {
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(file)
+        .args([
+            "--cycles",
+            &cycles.to_string(),
+            "--sanitize",
+            "--trace",
+            "-",
+        ])
+        .args(["--watch", watch])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+}
+
+/// `ladderc check` of `src` written to `dir/name`: exit code and the diagnostic lines (short
+/// format), with the temporary folder left out.
+fn check_text(name: &str, src: &str) -> (Option<i32>, Vec<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join(name);
+    std::fs::write(&f, src).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&f)
+        .output()
+        .unwrap();
+    let prefix = format!("{}/", dir.path().display());
+    let lines = String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .filter(|l| l.contains("error[") || l.contains("warning["))
+        .map(|l| l.replace(&prefix, ""))
+        .collect();
+    (out.status.code(), lines)
+}
+
+// ------------------------------------------------------------------ 1. partial access
+
+#[test]
+fn partial_access_reads_and_writes_bits_bytes_and_words_in_st_and_il() {
+    // w = 16#0005: b0 = w.0 (1), b2 = w.%X2 (1); w.15 := TRUE, then w.0 toggles each cycle:
+    // 16#8004, 16#8005, ...; n = -1 with bit 3 cleared is -9; hi = w.%B1 = 16#80; d.%W1 := w puts w
+    // in the high word; q AT %QW0: q.1 := w.0 (after the toggle) and q.%X4 := TRUE. IL: flags = 4:
+    // seen := flags.2; flags.7 toggles; R flags.%X2 while seen
+    let (trace, _) = run(
+        &fixture("partial_access.st"),
+        3,
+        "main.w,main.b0,main.b2,main.n,main.hi,main.d,%QW0,il_side.flags,il_side.seen",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.w,main.b0,main.b2,main.n,main.hi,main.d,%QW0,il_side.flags,il_side.seen\n\
+         0,0,32772,1,1,-9,128,2147745792,16,128,1\n\
+         1,10,32773,0,1,-9,128,2147811328,18,0,0\n\
+         2,20,32772,1,1,-9,128,2147745792,16,128,0\n"
+    );
+}
+
+#[test]
+fn partial_access_in_ld_contacts_coils_and_fbd_variables() {
+    // LD: flags = 4; flags.5 := flags.2; S out.%X0 on flags.5; R flags.2 on out.0: cycle 0 ends with
+    // flags = 16#20, then flags.2 is 0 so flags.5 drops: 0. FBD: bit3 := w.%X3 (w = 8), w.%B1 := 16#A5
+    let (trace, _) = run(
+        &fixture("partial_access.xml"),
+        3,
+        "ladder.flags,ladder.out,fbd.w,fbd.bit3",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,ladder.flags,ladder.out,fbd.w,fbd.bit3\n\
+         0,0,32,1,42248,1\n\
+         1,10,0,1,42248,1\n\
+         2,20,0,1,42248,1\n"
+    );
+}
+
+#[test]
+fn partial_access_out_of_range_or_without_bits_is_one_located_e1029_each() {
+    let src = "PROGRAM main\nVAR\n w : WORD;\n b : BOOL;\n r : REAL;\n bb : BYTE;\nEND_VAR\n \
+               w.16 := TRUE;\n bb := w.%B2;\n r.0 := TRUE;\n b := b.0;\n w.99999999999 := b;\n\
+               END_PROGRAM\n";
+    let (code, lines) = check_text("bad.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        vec![
+            "bad.st:8:4: error[E1029]: `w.16` is out of range: WORD has bits 0 to 15 (hint: WORD has 16 bits, numbered 0 (the least significant) to 15)",
+            "bad.st:9:10: error[E1029]: `w.%B2` is out of range: WORD has bytes 0 to 1 (hint: WORD has 16 bits, numbered 0 (the least significant) to 15)",
+            "bad.st:10:4: error[E1029]: `r` is REAL, which has no bits to access with `.0` (hint: partial access (`x.3`, `x.%X3`, `x.%B1`) works on integers and BYTE, WORD, DWORD, LWORD)",
+            "bad.st:11:9: error[E1029]: `b` is BOOL, which has no bits to access with `.0` (hint: partial access (`x.3`, `x.%X3`, `x.%B1`) works on integers and BYTE, WORD, DWORD, LWORD)",
+            "bad.st:12:4: error[E1029]: `w.99999999999` is out of range: WORD has bits 0 to 15 (hint: WORD has 16 bits, numbered 0 (the least significant) to 15)",
+        ]
+    );
+    // the same in IL: one error at the access
+    let il = "PROGRAM main\nVAR\n w : WORD;\nEND_VAR\n LD w.%X16\n ST w.0\nEND_PROGRAM\n";
+    let (code, lines) = check_text("bad.il", il);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("bad.il:5:7: error[E1029]"),
+        "{lines:?}"
+    );
+}
+
+// ------------------------------------------------------------------ 2. keyword names in XML IL bodies
+
+#[test]
+fn keyword_named_variables_in_an_xml_il_body_are_one_e1031_at_each_declaration() {
+    // `on` and `task` are IL keywords: the body's `LD on`, `ST task` were E0011 at every use; now,
+    // as in an .il file, the reserved names are reported once, at their declarations, with the POU
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("keyword_names_il.xml"))
+        .args(["--cycles", "1"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 2, "{stderr}");
+    assert!(
+        errors[0].ends_with("keyword_names_il.xml:10:25: error[E1031]: `on` is reserved in IEC 61131-3 (a keyword): it cannot name a variable [POU `main`] (hint: rename the variable, for example `xon`)"),
+        "{stderr}"
+    );
+    assert!(
+        errors[1].contains("keyword_names_il.xml:11:25: error[E1031]: `task` is reserved"),
+        "{stderr}"
+    );
+}
+
+// ------------------------------------------------------------------ 3. methods called inside their block
+
+#[test]
+fn methods_called_inside_their_own_block_run_in_st_files() {
+    // Counter's body calls Bump() (count += Twice(step), a method in an expression of a method) and
+    // THIS^.Reset() once THIS^.count passes 10 (Reset zeroes count and calls Bump again); main
+    // calls c(step := 2) and reads c.Twice(5) + 1 from outside
+    let (trace, stderr) = run(
+        &fixture("own_methods.st"),
+        5,
+        "main.c.count,main.c.calls,main.x",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.c.count,main.c.calls,main.x\n\
+         0,0,4,1,11\n\
+         1,10,8,2,11\n\
+         2,20,4,3,11\n\
+         3,30,8,4,11\n\
+         4,40,4,5,11\n"
+    );
+    // the hidden inputs a call inside the block sets are no inputs the user wrote (no W1411)
+    assert!(!stderr.contains("W1411"), "{stderr}");
+}
+
+#[test]
+fn codesys_methods_call_each_other_and_are_called_from_their_block() {
+    // the level rises by Fill(2.0) = 10 a cycle; past 50, Drain() halves it (by Half(), a method
+    // called inside a method) before the fill
+    let (trace, _) = run(
+        &fixture("own_methods.xml"),
+        10,
+        "PLC_PRG.fbTank.rLevel,PLC_PRG.fbTank.iCalls",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.fbTank.rLevel,PLC_PRG.fbTank.iCalls\n\
+         0,0,10,1\n1,10,20,2\n2,20,30,3\n3,30,40,4\n4,40,50,5\n\
+         5,50,60,6\n6,60,40,7\n7,70,50,8\n8,80,60,9\n9,90,40,10\n"
+    );
+}
+
+#[test]
+fn own_method_calls_that_cannot_run_are_located_errors() {
+    let src = "FUNCTION_BLOCK Fb\nVAR n : INT; END_VAR\n  A();\n  n := Get(1) + Get(2);\n  \
+               WHILE Get(3) > 0 DO n := 0; END_WHILE;\n  Nothing(q := 1);\n\
+               METHOD A\n  B();\nEND_METHOD\nMETHOD B\n  A();\nEND_METHOD\n\
+               METHOD Get : INT\nVAR_INPUT v : INT; END_VAR\n  Get := v;\nEND_METHOD\n\
+               METHOD Nothing\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR f : Fb; END_VAR\n  f();\nEND_PROGRAM\n";
+    let (code, lines) = check_text("m.st", src);
+    assert_eq!(code, Some(1));
+    let codes: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(": error[").unwrap().0)
+        .collect();
+    // twice in one statement; in a WHILE condition; an unknown parameter; A and B call each other
+    assert_eq!(
+        codes,
+        vec![
+            "m.st:4:17",
+            "m.st:5:9",
+            "m.st:6:11",
+            "m.st:8:3",
+            "m.st:11:3"
+        ],
+        "{lines:?}"
+    );
+    assert!(lines[0].contains("E0108") && lines[2].contains("E1011") && lines[3].contains("E0106"));
+}
+
+// ------------------------------------------------------------------ 4. library-qualified names
+
+#[test]
+fn names_qualified_with_a_provided_library_run() {
+    // go toggles until n (Standard.LIMIT(0, n + 1, 3)) reaches 3, then stays TRUE: the
+    // Standard.TON sees IN for 20 ms from cycle 2 and its Q rises in cycle 5, where the
+    // Tc2_Standard.R_TRIG counts one edge
+    let (trace, _) = run(
+        &fixture("library_names.st"),
+        6,
+        "main.go,main.t.Q,main.n,main.edges",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.go,main.t.Q,main.n,main.edges\n\
+         0,0,1,0,1,0\n1,10,0,0,2,0\n2,20,1,0,3,0\n3,30,1,0,3,0\n4,40,1,0,3,0\n5,50,1,1,3,1\n"
+    );
+}
+
+#[test]
+fn an_unknown_library_is_one_located_e1032_per_library() {
+    let src =
+        "PROGRAM main\nVAR\n  pid : OSCAT_BASIC.CTRL_PI;\n  lin : OSCAT_BASIC.F_LIN_TYPE;\n  \
+               arr : ARRAY[1..2] OF Lib.Y;\n  x : REAL;\nEND_VAR\n  pid(ACT := x);\n  \
+               x := OSCAT_BASIC.F_LIN(x) + pid.Y;\n  x := CAA.Foo(1);\nEND_PROGRAM\n";
+    let (code, lines) = check_text("lib.st", src);
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "lib.st:3:9: error[E1032]: `OSCAT_BASIC` is neither a variable nor a library ladderc provides",
+            "lib.st:5:24: error[E1032]: `Lib` is neither a variable nor a library ladderc provides",
+            "lib.st:10:8: error[E1032]: `CAA` is neither a variable nor a library ladderc provides",
+        ]
+    );
+    // a Util block ladderc does not have is named where it is declared
+    let (code, lines) = check_text(
+        "util.st",
+        "PROGRAM main\nVAR\n  b : Util.BLINK;\nEND_VAR\n  b(ENABLE := TRUE);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("util.st:3:12: error[E1003]: unknown type `BLINK`"),
+        "{lines:?}"
+    );
+}
+
+// ------------------------------------------------------------------ 6. references and pointers
+
+#[test]
+fn reference_and_pointer_declarations_are_one_located_e0305_each_without_cascade() {
+    // REF_TO and POINTER TO are not compiled: one error per declaration, none for the body's
+    // REF(x), ADR(x), r^, NULL (the body is not compiled)
+    let src = "TYPE S : STRUCT a : INT; END_STRUCT; END_TYPE\nPROGRAM main\nVAR\n  x : INT;\n  \
+               r : REF_TO INT;\n  p : POINTER TO INT;\n  rs : REF_TO S;\nEND_VAR\n  r := REF(x);\n  \
+               p := ADR(x);\n  r^ := 5;\n  IF r <> NULL THEN x := r^ + 1; END_IF;\n  rs^.a := 3;\n\
+               END_PROGRAM\n";
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("refs.st");
+    std::fs::write(&f, src).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&f)
+        .args(["--cycles", "1"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let heads: Vec<String> = stderr
+        .lines()
+        .filter(|l| l.contains("error["))
+        .map(|l| {
+            let l = l.rsplit('/').next().unwrap();
+            l.split_once(" (hint").map_or(l, |x| x.0).to_string()
+        })
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "refs.st:5:7: error[E0305]: `r`: references and pointers (`REF_TO`) are not supported",
+            "refs.st:6:7: error[E0305]: `p`: references and pointers (`POINTER TO`) are not supported",
+            "refs.st:7:8: error[E0305]: `rs`: references and pointers (`REF_TO`) are not supported",
+        ],
+        "{stderr}"
+    );
+}
+
+// ------------------------------------------------------------------ 5. VAR_CONFIG
+
+#[test]
+fn var_config_locates_placeholders_per_instance_and_sets_initial_values() {
+    // two Lamp instances, each `out AT %Q*`, get %QX0.1 and %QX0.2; the program's `sw AT %I*` is
+    // %IX0.0 (stimulus: 1 from cycle 1, 0 from cycle 3); `n` starts at 5 instead of 0
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("var_config.st"))
+        .args(["--cycles", "4", "--sanitize", "--trace", "-", "--stimulus"])
+        .arg(fixture("var_config.stimulus.csv"))
+        .args(["--watch", "inst.n,inst.sw,%QX0.1,%QX0.2"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,inst.n,inst.sw,%QX0.1,%QX0.2\n\
+         0,0,6,0,0,1\n1,10,7,1,1,1\n2,20,8,1,1,1\n3,30,9,0,0,1\n"
+    );
+}
+
+#[test]
+fn var_config_entries_that_cannot_apply_are_located_e0306() {
+    let src = std::fs::read_to_string(fixture("var_config.st"))
+        .unwrap()
+        .replace(
+            "res.inst.n : INT := 5;",
+            "res.inst.n AT %QW2 : INT;\n    res.ghost.x : INT := 1;\n    res.inst.l1.nope : BOOL := TRUE;",
+        );
+    let (code, lines) = check_text("vc.st", &src);
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "vc.st:24:5: error[E0306]: this VAR_CONFIG entry cannot be applied: `n` is not declared AT %Q*",
+            "vc.st:25:5: error[E0306]: this VAR_CONFIG entry cannot be applied: `res.ghost` names no program instance",
+            "vc.st:26:5: error[E0306]: this VAR_CONFIG entry cannot be applied: `Lamp` has no variable `nope`",
+        ]
+    );
+}
