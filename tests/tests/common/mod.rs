@@ -166,3 +166,45 @@ pub fn column(trace: &str, name: &str) -> Vec<f64> {
         .map(|l| l.split(',').nth(k).unwrap().parse::<f64>().unwrap())
         .collect()
 }
+
+/// `ladderc run FILE --cycles N --sanitize --watch WATCH --trace -`: the trace (standard output)
+/// and standard error; asserts exit 0.
+pub fn run_traced(file: &Path, cycles: u32, watch: &str) -> (String, String) {
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(file)
+        .args([
+            "--cycles",
+            &cycles.to_string(),
+            "--sanitize",
+            "--trace",
+            "-",
+        ])
+        .args(["--watch", watch])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+}
+
+/// `ladderc check` of `src` written to `dir/name`: exit code and the diagnostic lines (short
+/// format), with the temporary folder left out.
+pub fn check_text(name: &str, src: &str) -> (Option<i32>, Vec<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join(name);
+    std::fs::write(&f, src).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&f)
+        .output()
+        .unwrap();
+    let prefix = format!("{}/", dir.path().display());
+    let lines = String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .filter(|l| l.contains("error[") || l.contains("warning["))
+        .map(|l| l.replace(&prefix, ""))
+        .collect();
+    (out.status.code(), lines)
+}
