@@ -17,8 +17,10 @@ pub mod infer;
 pub mod lexer;
 pub mod lower;
 pub mod parser;
+mod qualifiers;
 pub mod sfc;
 pub mod types;
+mod var_config;
 
 pub use lower::PouLowering;
 pub use types::{Declarations, PouInterface};

@@ -1,0 +1,175 @@
+//! Vendor syntax in `.st` text, handled before the parser: library-qualified names (`Standard.TON`;
+//! a provided library's qualifier is dropped, any other is one E1032 per library) and references or
+//! pointers (`REF_TO`, `POINTER TO`: one E0305 per declaration, the POU's body not compiled).
+//!
+//! Input: the file's text and tokens. Output: the text with qualifiers and reference keywords blanked
+//! (positions unchanged) and the diagnostics. Invariant: every span stays where the user wrote it.
+
+use super::file::*;
+use super::lexer::{Tok, Token};
+use crate::{FileId, Span};
+use diagnostics::{code, Diagnostic, Diagnostics};
+
+/// The library namespaces whose blocks and functions ladderc provides, upper case: CODESYS's and
+/// TwinCAT's standard libraries (`Standard.TON`, `Tc2_Standard.CTU`), their utility libraries (a block
+/// ladderc does not have is then an unknown type or function, named at its use), and their PLCopen
+/// motion libraries (`SM3_Basic.MC_MoveAbsolute`, `Tc2_MC2.MC_Power`).
+pub const PROVIDED_LIBRARIES: &[&str] = &[
+    "STANDARD",
+    "TC2_STANDARD",
+    "IEC",
+    "UTIL",
+    "TC2_UTILITIES",
+    "SM3_BASIC",
+    "TC2_MC2",
+];
+
+/// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
+/// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
+/// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
+/// after `:` or `OF` in a VAR block, a call `Lib.F(...)` in a body) whose name is no variable, POU or
+/// type of the file is E1032, once per library (an error of the parse stage: the checks that would
+/// report each use as an unknown type or function do not run), and its uses are renamed `__...`.
+/// `None`: nothing to change.
+pub(super) fn library_qualifiers(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> Option<String> {
+    let ident = |t: &Token| matches!(t.tok, Tok::Ident);
+    // names declared in the file (`x :`, `a, b :`, `TYPE T :`, POU names): not libraries
+    let mut declared = std::collections::HashSet::new();
+    for (k, t) in toks.iter().enumerate() {
+        if !ident(t) {
+            continue;
+        }
+        let next = toks.get(k + 1).map(|n| &n.tok);
+        let prev = k
+            .checked_sub(1)
+            .map(|p| word(src, &toks[p]).to_ascii_uppercase());
+        if matches!(next, Some(Tok::Colon | Tok::Comma))
+            || matches!(
+                prev.as_deref(),
+                Some("PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" | "CONFIGURATION" | "RESOURCE")
+            )
+        {
+            declared.insert(word(src, t).to_ascii_uppercase());
+        }
+    }
+    let mut text: Option<String> = None;
+    let mut reported = std::collections::HashSet::new();
+    let mut in_decl = false;
+    for (k, t) in toks.iter().enumerate() {
+        let w = word(src, t).to_ascii_uppercase();
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            if is_var_keyword(&w) {
+                in_decl = true;
+            } else if w == "END_VAR" {
+                in_decl = false;
+            }
+        }
+        let (Some(dot), Some(member)) = (toks.get(k + 1), toks.get(k + 2)) else {
+            continue;
+        };
+        if !ident(t) || dot.tok != Tok::Dot || !ident(member) || declared.contains(&w) {
+            continue;
+        }
+        let prev = k.checked_sub(1).map(|p| &toks[p]);
+        if prev.is_some_and(|p| p.tok == Tok::Dot) {
+            continue;
+        }
+        let text = text.get_or_insert_with(|| src.to_string());
+        if PROVIDED_LIBRARIES.contains(&w.as_str()) {
+            blank(text, t.range.start..dot.range.end);
+            continue;
+        }
+        let type_position = in_decl
+            && prev.is_some_and(|p| p.tok == Tok::Colon || word(src, p).eq_ignore_ascii_case("OF"));
+        let call_position = !in_decl && toks.get(k + 3).is_some_and(|n| n.tok == Tok::LParen);
+        if !(type_position || call_position) {
+            continue;
+        }
+        let name = word(src, t);
+        if reported.insert(w.clone()) {
+            diags.push(
+                Diagnostic::error(
+                    code::E1032,
+                    format!("`{name}` is neither a variable nor a library ladderc provides"),
+                )
+                .at(Span::new(file, t.range.start, t.range.end))
+                .with_primary_label("library qualifier")
+                .with_hint(format!(
+                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2; `{}` comes from another library: add its POUs and types to the project",
+                    word(src, member)
+                )),
+            );
+        }
+        // `Lib.Name` -> `__b_Name` (same length; sema reports nothing more about it)
+        let mut bytes = std::mem::take(text).into_bytes();
+        bytes[t.range.start] = b'_';
+        if t.range.len() > 1 {
+            bytes[t.range.start + 1] = b'_';
+        }
+        bytes[dot.range.start] = b'_';
+        *text = String::from_utf8(bytes).unwrap_or_default();
+    }
+    text
+}
+
+/// `r : REF_TO INT;`, `p : POINTER TO S;` (edition 3 references, CODESYS pointers): not supported. Each
+/// declaration is one E0305 at its `REF_TO` / `POINTER TO`, which is blanked (the declaration is read as
+/// the referenced type); `at` gets the offset of each, so that the body of its POU (whose `r^`,
+/// `REF(x)`, `ADR(x)`, `NULL` would each be an error) is not compiled. `None`: no such declaration.
+pub(super) fn reference_declarations(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+    at: &mut Vec<usize>,
+) -> Option<String> {
+    let mut text: Option<String> = None;
+    let mut in_decl = false;
+    for (k, t) in toks.iter().enumerate() {
+        let w = word(src, t).to_ascii_uppercase();
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            if is_var_keyword(&w) || w == "STRUCT" {
+                in_decl = true;
+            } else if w == "END_VAR" || w == "END_STRUCT" {
+                in_decl = false;
+            }
+        }
+        if !in_decl || t.tok != Tok::Colon {
+            continue;
+        }
+        let Some(first) = toks.get(k + 1) else {
+            continue;
+        };
+        let kw = word(src, first).to_ascii_uppercase();
+        let end = match kw.as_str() {
+            "REF_TO" => first.range.end,
+            "POINTER" => match toks.get(k + 2) {
+                Some(to) if word(src, to).eq_ignore_ascii_case("TO") => to.range.end,
+                _ => continue,
+            },
+            _ => continue,
+        };
+        let name = k.checked_sub(1).map(|p| word(src, &toks[p])).unwrap_or("");
+        let written = src.get(first.range.start..end).unwrap_or("REF_TO");
+        diags.push(
+            Diagnostic::error(
+                code::E0305,
+                format!("`{name}`: references and pointers (`{written}`) are not supported"),
+            )
+            .at(Span::new(file, first.range.start, end))
+            .with_primary_label("reference type")
+            .with_hint("pass the variable as VAR_IN_OUT, or use it directly; the body of this POU is not compiled"),
+        );
+        at.push(first.range.start);
+        blank(
+            text.get_or_insert_with(|| src.to_string()),
+            first.range.start..end,
+        );
+    }
+    text
+}

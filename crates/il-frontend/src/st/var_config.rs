@@ -1,0 +1,355 @@
+//! `VAR_CONFIG` blocks of `.st` configurations (IEC 61131-3 3rd edition 6.5.6): their entries read
+//! from the text, and applied to the parsed unit by copying the program and function blocks along each
+//! entry's path per instance.
+//!
+//! Input: the file's text and the parsed unit. Output: the unit with per-instance locations and initial
+//! values, and E0306 for an entry that names nothing.
+
+use super::file::*;
+use super::lexer::{Tok, Token};
+use crate::ast::{CompilationUnit, LibraryElement};
+use crate::{FileId, Span};
+use diagnostics::{code, Diagnostic, Diagnostics};
+use std::ops::Range;
+
+/// One entry of a `VAR_CONFIG` block (IEC 61131-3 3rd edition 6.5.6): the instance path of a
+/// variable, the location it gets and its initial value.
+pub(super) struct ConfigEntry {
+    path: Vec<crate::ast::Ident>,
+    location: Option<crate::ast::DirectAddress>,
+    init: Option<crate::ast::Initializer>,
+    span: Span,
+}
+
+/// The `VAR_CONFIG ... END_VAR` blocks of a text: their ranges (blanked before the IL parser reads the
+/// configuration) and their entries `res.inst.fb.x AT %QX0.1 : BOOL := TRUE;`. An entry that cannot
+/// be read is E0306.
+pub(super) fn var_config_blocks(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> (Vec<Range<usize>>, Vec<ConfigEntry>) {
+    use crate::ast::{DirectAddress, Ident, Initializer, Literal, LiteralKind, Operand};
+    let mut ranges = Vec::new();
+    let mut entries = Vec::new();
+    let mut k = 0;
+    while k < toks.len() {
+        if !is_word(src, &toks[k], "VAR_CONFIG") {
+            k += 1;
+            continue;
+        }
+        let start = toks[k].range.start;
+        k += 1;
+        let mut entry: Vec<&Token> = Vec::new();
+        while k < toks.len() && !is_word(src, &toks[k], "END_VAR") && toks[k].tok != Tok::Eof {
+            if toks[k].tok != Tok::Semi {
+                entry.push(&toks[k]);
+                k += 1;
+                continue;
+            }
+            k += 1;
+            let Some(first) = entry.first() else {
+                continue;
+            };
+            let span = Span::new(file, first.range.start, entry[entry.len() - 1].range.end);
+            let bad = |diags: &mut Diagnostics, why: &str| {
+                diags.push(
+                    Diagnostic::error(code::E0306, format!("this VAR_CONFIG entry cannot be read: {why}"))
+                        .at(span)
+                        .with_hint("write `resource.instance.variable AT %QX0.1 : BOOL;` or `resource.instance.variable : INT := 5;`"),
+                );
+            };
+            let mut i = 0;
+            let mut path = Vec::new();
+            while i < entry.len() && entry[i].tok == Tok::Ident {
+                path.push(Ident::new(
+                    word(src, entry[i]),
+                    Span::new(file, entry[i].range.start, entry[i].range.end),
+                ));
+                i += 1;
+                if i < entry.len() && entry[i].tok == Tok::Dot {
+                    i += 1;
+                } else {
+                    break;
+                }
+            }
+            let mut location = None;
+            if i < entry.len() && word(src, entry[i]).eq_ignore_ascii_case("AT") {
+                if let Some(Tok::Address(area, size, p)) = entry.get(i + 1).map(|t| &t.tok) {
+                    let t = entry[i + 1];
+                    location = Some(DirectAddress {
+                        area: *area,
+                        size: *size,
+                        path: p.clone(),
+                        span: Span::new(file, t.range.start, t.range.end),
+                    });
+                    i += 2;
+                }
+            }
+            if path.len() < 2 || entry.get(i).map(|t| &t.tok) != Some(&Tok::Colon) {
+                bad(diags, "expected `instance.variable [AT %address] : type`");
+                entry.clear();
+                continue;
+            }
+            let assign = entry[i..].iter().position(|t| t.tok == Tok::Assign);
+            let mut init = None;
+            if let Some(a) = assign {
+                let rest = &entry[i + a + 1..];
+                let (neg, rest) = match rest.first().map(|t| &t.tok) {
+                    Some(Tok::Minus) => (true, &rest[1..]),
+                    _ => (false, rest),
+                };
+                let kind = match rest.iter().map(|t| &t.tok).collect::<Vec<_>>().as_slice() {
+                    [Tok::Int(v)] => Some(LiteralKind::Int(if neg { -v } else { *v })),
+                    [Tok::Real(v)] => Some(LiteralKind::Real(if neg { -v } else { *v })),
+                    [Tok::Kw(_)] if !neg && word(src, rest[0]).eq_ignore_ascii_case("TRUE") => {
+                        Some(LiteralKind::Bool(true))
+                    }
+                    [Tok::Kw(_)] if !neg && word(src, rest[0]).eq_ignore_ascii_case("FALSE") => {
+                        Some(LiteralKind::Bool(false))
+                    }
+                    _ => None,
+                };
+                let Some(kind) = kind else {
+                    bad(diags, "the initial value must be a number, TRUE or FALSE");
+                    entry.clear();
+                    continue;
+                };
+                let last = entry[entry.len() - 1];
+                init = Some(Initializer::Value(Operand::literal(Literal {
+                    kind,
+                    type_prefix: None,
+                    span: Span::new(file, entry[i + a + 1].range.start, last.range.end),
+                })));
+            }
+            entries.push(ConfigEntry {
+                path,
+                location,
+                init,
+                span,
+            });
+            entry.clear();
+        }
+        let end = toks.get(k).map_or(src.len(), |t| t.range.end);
+        ranges.push(start..end);
+    }
+    (ranges, entries)
+}
+
+/// Applies the `VAR_CONFIG` entries: the program instance's program, and each function block along
+/// an entry's path, is copied for that instance (`main__CFG1`, same body), and the copy's variable
+/// gets the entry's location (it must be declared `AT %I*` / `%Q*` / `%M*`, of the same area) and
+/// initial value. The instances of one program or block that VAR_CONFIG does not name keep the
+/// original. An entry whose path names no instance variable is E0306.
+pub(super) fn apply_var_config(
+    unit: &mut CompilationUnit,
+    entries: Vec<ConfigEntry>,
+    diags: &mut Diagnostics,
+) {
+    use crate::ast::{Pou, PouKind, TypeRef};
+    if entries.is_empty() {
+        return;
+    }
+    let mut clones: std::collections::HashMap<String, String> = Default::default();
+    let mut next = 0;
+    let find_pou = |items: &[LibraryElement], name: &str| {
+        items
+            .iter()
+            .position(|i| matches!(i, LibraryElement::Pou(p) if p.name.is(name)))
+    };
+    for e in entries {
+        let fail = |diags: &mut Diagnostics, why: String| {
+            diags.push(
+                Diagnostic::error(code::E0306, format!("this VAR_CONFIG entry cannot be applied: {why}"))
+                    .at(e.span)
+                    .with_hint("name a resource, a program instance and its variables: `res.inst.fb.x`; the variable must be declared `AT %Q*` (or %I*, %M*) to get a location"),
+            );
+        };
+        // `res.inst.rest` (or `inst.rest`): the program instance
+        let mut found = None;
+        for (ii, item) in unit.items.iter().enumerate() {
+            let LibraryElement::Configuration(c) = item else {
+                continue;
+            };
+            for (ri, r) in c.resources.iter().enumerate() {
+                for (pi, p) in r.programs.iter().enumerate() {
+                    if e.path.len() > 2 && r.name == e.path[0] && p.name == e.path[1] {
+                        found = Some((ii, ri, pi, 2));
+                    } else if found.is_none() && p.name == e.path[0] {
+                        found = Some((ii, ri, pi, 1));
+                    }
+                }
+            }
+        }
+        let Some((ii, ri, pi, skip)) = found else {
+            let named: Vec<&str> = e.path.iter().take(2).map(|p| p.name.as_str()).collect();
+            fail(
+                diags,
+                format!("`{}` names no program instance", named.join(".")),
+            );
+            continue;
+        };
+        let LibraryElement::Configuration(c) = &mut unit.items[ii] else {
+            continue;
+        };
+        let inst = &mut c.resources[ri].programs[pi];
+        let prefix_key = |n: usize| {
+            e.path[..n]
+                .iter()
+                .map(|p| p.key())
+                .collect::<Vec<_>>()
+                .join(".")
+        };
+        let ty = inst.type_name.name.clone();
+        let key = prefix_key(skip);
+        let mut current = match clones.get(&key) {
+            Some(c) => c.clone(),
+            None => {
+                next += 1;
+                let name = format!("{ty}__CFG{next}");
+                clones.insert(key, name.clone());
+                inst.type_name.name = name.clone();
+                let Some(k) = find_pou(&unit.items, &ty) else {
+                    fail(diags, format!("no program `{ty}` in this file"));
+                    continue;
+                };
+                let LibraryElement::Pou(p) = &unit.items[k] else {
+                    continue;
+                };
+                let mut copy: Pou = p.clone();
+                copy.name.name = name.clone();
+                unit.items.push(LibraryElement::Pou(copy));
+                name
+            }
+        };
+        let rest = &e.path[skip..];
+        for (depth, v) in rest.iter().enumerate() {
+            let Some(k) = find_pou(&unit.items, &current) else {
+                break;
+            };
+            let LibraryElement::Pou(p) = &mut unit.items[k] else {
+                break;
+            };
+            let Some(decl) = p
+                .var_blocks
+                .iter_mut()
+                .flat_map(|b| b.vars.iter_mut())
+                .find(|d| d.name == *v)
+            else {
+                fail(
+                    diags,
+                    format!(
+                        "`{}` has no variable `{}`",
+                        p.name.name.split("__CFG").next().unwrap_or(""),
+                        v.name
+                    ),
+                );
+                break;
+            };
+            if depth + 1 == rest.len() {
+                if let Some(loc) = &e.location {
+                    match &decl.location {
+                        Some(d) if d.path.is_empty() && d.area == loc.area => {
+                            decl.location = Some(loc.clone());
+                        }
+                        _ => {
+                            fail(
+                                diags,
+                                format!(
+                                    "`{}` is not declared AT {}*",
+                                    v.name,
+                                    match loc.area {
+                                        crate::ast::Area::Input => "%I",
+                                        crate::ast::Area::Output => "%Q",
+                                        crate::ast::Area::Memory => "%M",
+                                    }
+                                ),
+                            );
+                            break;
+                        }
+                    }
+                }
+                if e.init.is_some() {
+                    decl.init = e.init.clone();
+                }
+                break;
+            }
+            let TypeRef::Named(fb) = &decl.ty else {
+                fail(diags, format!("`{}` is no function block instance", v.name));
+                break;
+            };
+            let fb_name = fb.name.clone();
+            let key = prefix_key(skip + depth + 1);
+            let name = match clones.get(&key) {
+                Some(c) => c.clone(),
+                None => {
+                    next += 1;
+                    let name = format!("{fb_name}__CFG{next}");
+                    clones.insert(key, name.clone());
+                    name
+                }
+            };
+            let fb_span = fb.span;
+            decl.ty = TypeRef::Named(crate::ast::Ident::new(name.clone(), fb_span));
+            if find_pou(&unit.items, &name).is_none() {
+                let Some(k) = find_pou(&unit.items, &fb_name) else {
+                    fail(diags, format!("no function block `{fb_name}` in this file"));
+                    break;
+                };
+                let LibraryElement::Pou(p) = &unit.items[k] else {
+                    break;
+                };
+                if p.kind != PouKind::FunctionBlock {
+                    fail(diags, format!("`{}` is no function block instance", v.name));
+                    break;
+                }
+                let mut copy: Pou = p.clone();
+                copy.name.name = name.clone();
+                unit.items.push(LibraryElement::Pou(copy));
+            }
+            current = name;
+        }
+    }
+    // a program or block all of whose instances now use copies is dropped (its placeholders
+    // would have no location)
+    let originals: std::collections::HashSet<String> = clones
+        .values()
+        .filter_map(|c| c.split("__CFG").next())
+        .map(str::to_ascii_uppercase)
+        .collect();
+    loop {
+        let before = unit.items.len();
+        let mut used: std::collections::HashSet<String> = Default::default();
+        for item in &unit.items {
+            match item {
+                LibraryElement::Pou(p) => {
+                    for d in p.var_blocks.iter().flat_map(|b| b.vars.iter()) {
+                        let mut t = &d.ty;
+                        while let TypeRef::Array { element, .. } = t {
+                            t = element;
+                        }
+                        if let TypeRef::Named(n) = t {
+                            used.insert(n.key());
+                        }
+                    }
+                }
+                LibraryElement::Configuration(c) => {
+                    for p in c.resources.iter().flat_map(|r| r.programs.iter()) {
+                        used.insert(p.type_name.key());
+                    }
+                }
+                _ => {}
+            }
+        }
+        unit.items.retain(|i| match i {
+            LibraryElement::Pou(p) => {
+                !originals.contains(&p.name.key()) || used.contains(&p.name.key())
+            }
+            _ => true,
+        });
+        if unit.items.len() == before {
+            break;
+        }
+    }
+}
