@@ -5,6 +5,9 @@
 use ladderc::fuzzing::{run, FrontEnd};
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| {
-    run(FrontEnd::Template, data);
-});
+fuzz_target!(
+    init: ladderc::fuzzing::init_target(),
+    |data: &[u8]| {
+        run(FrontEnd::Template, data);
+    }
+);
