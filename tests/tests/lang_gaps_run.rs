@@ -316,3 +316,153 @@ fn var_config_entries_that_cannot_apply_are_located_e0306() {
         ]
     );
 }
+
+#[test]
+fn var_config_applies_to_programs_of_other_files() {
+    // the configuration in one file, its program and block in another (a project laid out as
+    // trust-platform's and RuSTy's examples are): the same trace as the one-file fixture; before,
+    // each entry was E0306 "no program `main` in this file"
+    let dir = tempfile::tempdir().unwrap();
+    let src = std::fs::read_to_string(fixture("var_config.st")).unwrap();
+    let at = src.find("CONFIGURATION").unwrap();
+    let (pous, config) = (dir.path().join("pous.st"), dir.path().join("config.st"));
+    std::fs::write(&pous, &src[..at]).unwrap();
+    std::fs::write(&config, &src[at..]).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&config)
+        .arg(&pous)
+        .args(["--cycles", "4", "--sanitize", "--trace", "-", "--stimulus"])
+        .arg(fixture("var_config.stimulus.csv"))
+        .args(["--watch", "inst.n,inst.sw,%QX0.1,%QX0.2"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,inst.n,inst.sw,%QX0.1,%QX0.2\n\
+         0,0,6,0,0,1\n1,10,7,1,1,1\n2,20,8,1,1,1\n3,30,9,0,0,1\n"
+    );
+    // a program that no file declares is still one located E0306 per entry
+    std::fs::write(
+        &pous,
+        "FUNCTION_BLOCK Lamp\nVAR out AT %Q* : BOOL; END_VAR\nEND_FUNCTION_BLOCK\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&config)
+        .arg(&pous)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        stderr
+            .matches("error[E0306]: this VAR_CONFIG entry cannot be applied: no program `main` in this project")
+            .count(),
+        4,
+        "{stderr}"
+    );
+}
+
+#[test]
+fn var_config_in_an_il_file_runs() {
+    // the IL twin of var_config.st; before, its VAR_CONFIG block was E0019 (skipped)
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("var_config.il"))
+        .args(["--cycles", "4", "--sanitize", "--trace", "-", "--stimulus"])
+        .arg(fixture("var_config.stimulus.csv"))
+        .args(["--watch", "inst.n,inst.sw,%QX0.1,%QX0.2"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("E0019"), "{stderr}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,inst.n,inst.sw,%QX0.1,%QX0.2\n\
+         0,0,6,0,0,1\n1,10,7,1,1,1\n2,20,8,1,1,1\n3,30,9,0,0,1\n"
+    );
+}
+
+#[test]
+fn an_interface_is_one_located_e0303_without_cascade() {
+    // edition 3's INTERFACE (trust-platform's filling line, CODESYS): before, its METHOD and
+    // PROPERTY lines were read as IL, one E0011 each plus W0001 "instructions outside any POU"
+    let src = "INTERFACE IValve\n    METHOD Open : BOOL\n    END_METHOD\n    PROPERTY IsOpen : BOOL\n        GET\n        END_GET\n    END_PROPERTY\nEND_INTERFACE\n\n\
+               FUNCTION_BLOCK Valve IMPLEMENTS IValve\nVAR_OUTPUT q : BOOL; END_VAR\n  q := TRUE;\nEND_FUNCTION_BLOCK\n\n\
+               PROGRAM main\nVAR v : Valve; END_VAR\n  v();\nEND_PROGRAM\n";
+    let (code, lines) = check_text("itf.st", src);
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "itf.st:1:1: error[E0303]: INTERFACE `IValve`: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+            "itf.st:10:22: error[E0303]: `Valve` has an IMPLEMENTS clause: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+        ]
+    );
+}
+
+#[test]
+fn st_statements_outside_any_pou_are_one_located_e0307() {
+    // a CODESYS body copied out on its own (kedharnath-ry/icss-separator's PLC_PRG.st): before, the
+    // .st file's statements were read as IL, one E0011/E0007/E0001 per line and W0001
+    let src = "// cycle logic\nIF start THEN\n    n := n + 1;\nEND_IF;\nlamp := n > 3;\n";
+    let (code, lines) = check_text("body.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        vec!["body.st:2:1: error[E0307]: statements outside any POU: in a Structured Text file they belong in a PROGRAM, FUNCTION_BLOCK or FUNCTION (hint: wrap them in `PROGRAM body` ... `END_PROGRAM` with their declarations in a VAR block (a CODESYS body exported alone lacks both))"]
+    );
+    // the same statements in a program, after another POU, run; a stray one after it is E0307
+    let prog = format!(
+        "FUNCTION_BLOCK Blink\nVAR_OUTPUT q : BOOL; END_VAR\n  q := NOT q;\nEND_FUNCTION_BLOCK\n\
+         PROGRAM main\nVAR start : BOOL := TRUE; n : INT; lamp : BOOL; END_VAR\n{src}END_PROGRAM\n"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("body.st");
+    std::fs::write(&f, &prog).unwrap();
+    let (trace, _) = run(&f, 5, "main.n,main.lamp");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.n,main.lamp\n0,0,1,0\n1,10,2,0\n2,20,3,0\n3,30,4,1\n4,40,5,1\n"
+    );
+    let (code, lines) = check_text("tail.st", &format!("{prog}x := 1;\n"));
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("tail.st:13:1: error[E0307]"),
+        "{lines:?}"
+    );
+}
+
+#[test]
+fn an_expression_as_initial_value_is_located_with_a_declaration_hint() {
+    // trust-platform's conformance case `c : INT := b + 1;` in an .st file: before, the hint said
+    // "IL has no infix operators: use ... ADD, SUB" (the declarations are read by the IL parser)
+    let src = "PROGRAM Main\nVAR\n    b : INT := 4;\n    c : INT := b + 1;\nEND_VAR\n  b := c;\nEND_PROGRAM\n";
+    let (code, lines) = check_text("init.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        vec!["init.st:4:18: error[E0001]: unexpected character `+` (hint: ladderc reads an initial value in a declaration as a literal: it does not evaluate expressions there (edition 3 allows constant expressions); write the value, or assign it in the body)"]
+    );
+    // in an IL body the operator keeps the IL hint
+    let (_, lines) = check_text(
+        "op.il",
+        "PROGRAM p\nVAR a : INT; END_VAR\n  LD a + 1\n  ST a\nEND_PROGRAM\n",
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("error[E0001]") && l.contains("IL has no infix operators")),
+        "{lines:?}"
+    );
+}

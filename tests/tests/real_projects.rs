@@ -191,3 +191,195 @@ fn st_ironplc_motor() {
 fn st_ironplc_tc2_math_library() {
     rejected("ironplc_Tc2_Math.st", &["E1019"]);
 }
+
+// trust-platform (MIT OR Apache-2.0): tutorials and examples written for another IEC 61131-3
+// runtime, found in issue #13's fourth acceptance run.
+
+const TRUST: &str = "johannesPettersson80_trust-platform_";
+
+/// `ladderc run` of several corpus files together for `cycles` cycles of 10 ms, watching `watch`:
+/// the trace.
+fn runs_together(names: &[&str], cycles: u32, watch: &str) -> String {
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .args(names.iter().map(|n| file(n)))
+        .args([
+            "--cycles",
+            &cycles.to_string(),
+            "--sanitize",
+            "--trace",
+            "-",
+        ])
+        .args(["--watch", watch])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{names:?}: {err}");
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+#[test]
+fn trust_platform_hello_counter_counts_each_cycle() {
+    let t = runs_together(
+        &[&format!("{TRUST}01_hello_counter.st")],
+        3,
+        "HelloCounter.count",
+    );
+    assert_eq!(
+        t,
+        "cycle,time_ms,HelloCounter.count\n0,0,1\n1,10,2\n2,20,3\n"
+    );
+}
+
+#[test]
+fn trust_platform_traffic_light_changes_phase_when_its_ton_elapses() {
+    // TON of 500 ms at 10 ms cycles: Q at cycle 50; the timer is reset for one cycle (IN FALSE)
+    // and restarts at cycle 52, so the next phases come at cycles 102 and 154
+    let t = runs_together(
+        &[&format!("{TRUST}03_traffic_light.st")],
+        160,
+        "TrafficLight.phase,TrafficLight.green",
+    );
+    let changes: Vec<&str> = t
+        .lines()
+        .skip(1)
+        .scan(String::new(), |last, l| {
+            let phase = l.split(',').nth(2).unwrap().to_string();
+            let changed = *last != phase;
+            *last = phase;
+            Some(changed.then_some(l))
+        })
+        .flatten()
+        .collect();
+    assert_eq!(
+        changes,
+        vec!["0,0,0,0", "50,500,1,0", "102,1020,2,0", "154,1540,3,1"]
+    );
+}
+
+#[test]
+fn trust_platform_pid_loop_runs() {
+    let t = runs_together(
+        &[&format!("{TRUST}07_pid_loop.st")],
+        2,
+        "PidLoop.error,PidLoop.control_output",
+    );
+    assert_eq!(
+        t,
+        "cycle,time_ms,PidLoop.error,PidLoop.control_output\n0,0,10,17.1\n1,10,9.658001,11.615182\n"
+    );
+}
+
+#[test]
+fn trust_platform_configuration_and_program_in_two_files_run() {
+    let t = runs_together(
+        &[
+            &format!("{TRUST}opcua_config.st"),
+            &format!("{TRUST}opcua_main.st"),
+        ],
+        2,
+        "TankLevel,PumpRunning",
+    );
+    // the globals of config.st, read by main.st through VAR_EXTERNAL: 42.5 is not above 50
+    assert_eq!(
+        t,
+        "cycle,time_ms,TankLevel,PumpRunning\n0,0,42.5,0\n1,10,42.5,0\n"
+    );
+}
+
+#[test]
+fn trust_platform_var_config_of_an_unnominated_variable_is_a_located_e0306() {
+    // its VAR_CONFIG (in Configuration.st) places `Counter` and `CounterLatched` of Main.st, which
+    // are declared without `AT %M*`/`%Q*`: IEC 61131-3 6.5.6 (and CODESYS) place only variables
+    // nominated with `*`. The entries are applied across the two files (before: "no program
+    // `MainProgram` in this file").
+    let names = [
+        format!("{TRUST}memory_marker_counter_Configuration.st"),
+        format!("{TRUST}memory_marker_counter_Main.st"),
+    ];
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .args(names.iter().map(|n| file(n)))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err =
+        String::from_utf8_lossy(&out.stderr).replace(&format!("{}/", corpus_dir().display()), "");
+    let heads: Vec<&str> = err
+        .lines()
+        .filter(|l| l.contains("error["))
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            format!("{TRUST}memory_marker_counter_Configuration.st:5:5: error[E0306]: this VAR_CONFIG entry cannot be applied: `Counter` is not declared AT %M*"),
+            format!("{TRUST}memory_marker_counter_Configuration.st:6:5: error[E0306]: this VAR_CONFIG entry cannot be applied: `CounterLatched` is not declared AT %Q*"),
+        ]
+    );
+}
+
+#[test]
+fn tank_filling_and_mixing_sequence_runs_through_its_states() {
+    // Syed337/PLC-Tank-Filling-Mixing-System (MIT): START fills three tanks until each level cuts
+    // its valve, then 10 s of transfer (TON), 10 s of mixing (TON), drain until tank 4 is empty;
+    // 1 s cycles
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n0,main.START,1\n1,main.START,0\n2,main.PV_TANK_1,25\n\
+         2,main.PV_TANK_2,20\n2,main.PV_TANK_3,30\n2,main.PV_TANK_4,50\n26,main.PV_TANK_4,0\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .arg("run")
+        .arg(file("Syed337_PLC-Tank-Filling-Mixing-System_main.st"))
+        .args([
+            "--cycles",
+            "30",
+            "--cycle-ms",
+            "1000",
+            "--sanitize",
+            "--trace",
+            "-",
+        ])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args([
+            "--watch",
+            "main.STATE,main.VALVE_X,main.VALVE_OUT_XYZ,main.MIXER,main.VALVE_DRAIN,main.SYSTEM_ON",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let trace = String::from_utf8_lossy(&out.stdout);
+    // the cycles where STATE changes
+    let mut last = String::new();
+    let changes: Vec<&str> = trace
+        .lines()
+        .skip(1)
+        .filter(|l| {
+            let s = l.split(',').nth(2).unwrap().to_string();
+            let changed = s != last;
+            last = s;
+            changed
+        })
+        .collect();
+    assert_eq!(
+        changes,
+        vec![
+            "0,0,1,1,0,0,0,1",
+            "2,2000,2,0,0,0,0,1",
+            "13,13000,3,0,1,0,0,1",
+            "24,24000,4,0,0,1,0,1",
+            "26,26000,5,0,0,0,1,1",
+            "27,27000,0,0,0,0,0,0",
+        ]
+    );
+}

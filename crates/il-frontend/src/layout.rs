@@ -402,7 +402,13 @@ impl<'s> Layout<'s> {
         let text = &self.src[s..e];
         let d = match err {
             LexError::UnexpectedChar => {
+                let in_decl = self.stack.last().is_some_and(|f| f.is_decl());
                 let hint = match text {
+                    // an initial value or a bound written as an expression (`c : INT := b + 1;`,
+                    // in IL and ST files alike: their declarations are read here)
+                    "=" | "<" | ">" | "+" | "-" | "*" | "/" | "<>" | "<=" | ">=" if in_decl => {
+                        "ladderc reads an initial value in a declaration as a literal: it does not evaluate expressions there (edition 3 allows constant expressions); write the value, or assign it in the body"
+                    }
                     "=" | "<" | ">" | "+" | "-" | "*" | "/" | "<>" | "<=" | ">=" => {
                         "IL has no infix operators: use EQ, NE, LT, LE, GT, GE, ADD, SUB, MUL or DIV"
                     }

@@ -236,6 +236,7 @@ impl Session {
     pub fn load_as(&mut self, paths: &[PathBuf], lang: Option<Lang>) -> Vec<CompilationUnit> {
         let mut units = Vec::new();
         let mut pending = Vec::new();
+        let mut var_config = Vec::new();
         let mut stdin_read = false;
         for p in paths {
             let stdin = is_stdin(p);
@@ -322,7 +323,7 @@ impl Session {
                     Some(stem) if is_iec_identifier(stem) => stem,
                     _ => il_frontend::DEFAULT_IMPLICIT_PROGRAM,
                 };
-                let (unit, bodies) = il_frontend::st::file::parse_text(
+                let (unit, bodies, entries) = il_frontend::st::file::parse_text(
                     file,
                     src,
                     implicit,
@@ -331,8 +332,11 @@ impl Session {
                 );
                 units.push(unit);
                 pending.extend(bodies);
+                var_config.extend(entries);
             }
         }
+        // VAR_CONFIG once every file is read: a configuration names programs of other files
+        il_frontend::st::file::apply_var_config(&mut units, var_config, &mut self.diags);
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);

@@ -17,7 +17,8 @@ use std::ops::Range;
 
 pub use super::qualifiers::PROVIDED_LIBRARIES;
 use super::qualifiers::{library_qualifiers, reference_declarations};
-use super::var_config::{apply_var_config, var_config_blocks};
+use super::var_config::var_config_blocks;
+pub use super::var_config::{apply_var_config, ConfigEntry};
 
 /// The language a source text is read in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -73,6 +74,9 @@ pub struct PouText {
     /// The `EXTENDS base` / `IMPLEMENTS itf` clause after the name (edition 3 inheritance: E0303,
     /// the body is not compiled).
     pub heritage: Option<Range<usize>>,
+    /// Not a POU: an `INTERFACE name ... END_INTERFACE` block (edition 3 object orientation: one
+    /// E0303 at `INTERFACE name`, the block skipped; `body` is the whole block).
+    pub interface: Option<Range<usize>>,
 }
 
 /// One `METHOD [modifiers] Name [: Type] <VAR blocks> <statements> END_METHOD` of a function block.
@@ -166,11 +170,14 @@ pub(super) fn is_var_keyword(w: &str) -> bool {
 /// Finds the POUs of a text and the language of each body.
 pub fn scan(src: &str) -> Vec<PouText> {
     let (toks, _) = lex(src);
-    scan_tokens(src, &toks)
+    scan_tokens(src, &toks).0
 }
 
-fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
+/// The POUs of a text (see [`scan`]) and the indexes of the tokens outside every POU, TYPE,
+/// CONFIGURATION, RESOURCE, ACTIONS, INTERFACE and VAR block.
+fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
     let mut out = Vec::new();
+    let mut stray = Vec::new();
     let mut i = 0;
     let n = toks.len();
     // Skips to just after the token `end` (case-insensitive), from `i`.
@@ -227,6 +234,28 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     action_list,
                     modifier: None,
                     heritage: None,
+                    interface: None,
+                });
+                i = j;
+            }
+            "INTERFACE" if toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident) => {
+                let start = t.range.clone();
+                let name_tok = &toks[i + 1];
+                let j = skip_to(i + 2, "END_INTERFACE");
+                let end = toks[j - 1].range.end;
+                out.push(PouText {
+                    name: word(src, name_tok).to_string(),
+                    name_range: name_tok.range.clone(),
+                    body: start.start..end,
+                    lang: Lang::Il,
+                    sfc: None,
+                    oop: None,
+                    methods: Vec::new(),
+                    actions: None,
+                    action_list: Vec::new(),
+                    modifier: None,
+                    heritage: None,
+                    interface: Some(start.start..name_tok.range.end),
                 });
                 i = j;
             }
@@ -352,13 +381,17 @@ fn scan_tokens(src: &str, toks: &[Token]) -> Vec<PouText> {
                     action_list: Vec::new(),
                     modifier,
                     heritage,
+                    interface: None,
                 });
                 i = j + 1;
             }
-            _ => i += 1,
+            _ => {
+                stray.push(i);
+                i += 1;
+            }
         }
     }
-    out
+    (out, stray)
 }
 
 /// Reads a method's declarations (its variable blocks, and its result as a variable named like the
@@ -595,14 +628,16 @@ pub(super) fn blank(text: &mut String, range: Range<usize>) {
 /// Reads a text in `lang` (IL or ST; XML is not read here). IL: the text is parsed as IL, except that
 /// POU bodies written in ST are reported once (E0300) and skipped. ST: declarations are parsed by the
 /// IL parser; IL bodies stay (W0303 note); ST bodies are returned as [`PendingBody`]s for
-/// [`compile_pending`]; pragmas outside bodies are reported (W0300/W0301) and skipped.
+/// [`compile_pending`]; pragmas outside bodies are reported (W0300/W0301) and skipped. The entries of
+/// `VAR_CONFIG` blocks (IL or ST) are returned for [`apply_var_config`], which the caller runs once
+/// every unit of the project is parsed (a configuration may name programs of other files).
 pub fn parse_text(
     file: FileId,
     src: &str,
     implicit_name: &str,
     lang: Lang,
     diags: &mut Diagnostics,
-) -> (CompilationUnit, Vec<PendingBody>) {
+) -> (CompilationUnit, Vec<PendingBody>, Vec<ConfigEntry>) {
     let mut pending = Vec::new();
     let mut first_try = None;
     if lang == Lang::Il {
@@ -612,7 +647,7 @@ pub fn parse_text(
         let unit = crate::parse_named(file, src, implicit_name, &mut local);
         if !local.has_errors() {
             diags.extend(local);
-            return (unit, pending);
+            return (unit, pending, Vec::new());
         }
         first_try = Some((unit, local));
     }
@@ -639,21 +674,35 @@ pub fn parse_text(
     } else {
         src
     };
-    let pous = scan_tokens(src, &toks);
-    let var_config = if lang == Lang::St {
-        var_config_blocks(file, src, &toks, diags)
+    let (pous, stray) = scan_tokens(src, &toks);
+    // ST statements outside any POU (a CODESYS body copied without its `PROGRAM` header): one error,
+    // and the IL parser does not read them (before: one IL error per line)
+    let stray_st = lang == Lang::St
+        && stray.iter().any(|&k| {
+            toks[k].tok == Tok::Assign
+                || ["IF", "CASE", "FOR", "WHILE", "REPEAT"]
+                    .iter()
+                    .any(|w| is_word(src, &toks[k], w))
+        });
+    let stray: Vec<Range<usize>> = if stray_st {
+        stray.iter().map(|&k| toks[k].range.clone()).collect()
     } else {
-        (Vec::new(), Vec::new())
+        Vec::new()
     };
+    let var_config = var_config_blocks(file, src, &toks, diags);
     drop(toks);
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
     if let Some((unit, local)) = first_try {
-        let Some(first) = st_bodies.first() else {
+        if st_bodies.is_empty() && var_config.0.is_empty() {
             diags.extend(local);
-            return (unit, pending);
-        };
+            return (unit, pending, Vec::new());
+        }
         let mut text = src.to_string();
-        {
+        // an IL file's VAR_CONFIG blocks (the IL parser has no rule for them) are read above
+        for r in &var_config.0 {
+            blank(&mut text, r.clone());
+        }
+        if let Some(first) = st_bodies.first() {
             let others = st_bodies.len() - 1;
             let names: Vec<&str> = st_bodies.iter().map(|p| p.name.as_str()).collect();
             let span = Span::new(file, first.body.start, first.body.end);
@@ -679,9 +728,29 @@ pub fn parse_text(
             }
         }
         let unit = crate::parse_named(file, &text, implicit_name, diags);
-        return (unit, pending);
+        return (unit, pending, var_config.1);
     }
     let mut text = src.to_string();
+    if let (Some(first), Some(last)) = (stray.first(), stray.last()) {
+        let lines = src[first.start..last.end].lines().count();
+        diags.push(
+            Diagnostic::error(
+                code::E0307,
+                "statements outside any POU: in a Structured Text file they belong in a PROGRAM, FUNCTION_BLOCK or FUNCTION",
+            )
+            .at(trim_span(src, Span::new(file, first.start, last.end)))
+            .with_primary_label(format!(
+                "not compiled (the statements outside POUs span {lines} line{})",
+                if lines == 1 { "" } else { "s" }
+            ))
+            .with_hint(format!(
+                "wrap them in `PROGRAM {implicit_name}` ... `END_PROGRAM` with their declarations in a VAR block (a CODESYS body exported alone lacks both)"
+            )),
+        );
+        for r in &stray {
+            blank(&mut text, r.clone());
+        }
+    }
     for p in &pous {
         if let Some(r) = &p.modifier {
             let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
@@ -713,6 +782,22 @@ pub fn parse_text(
         }
     }
     for (pi, p) in pous.iter().enumerate() {
+        if let Some(r) = &p.interface {
+            diags.push(
+                Diagnostic::error(
+                    code::E0303,
+                    format!(
+                        "INTERFACE `{}`: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+                        p.name
+                    ),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("skipped up to its END_INTERFACE")
+                .with_hint("an interface declares methods and properties for function blocks that IMPLEMENT it; ladderc compiles function blocks without interfaces or inheritance"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         if let Some(r) = &p.actions {
             // the actions of the ST POU just before the block: inlined where its body calls them
             let owner = pi.checked_sub(1).and_then(|k| pous.get(k)).filter(|q| {
@@ -838,15 +923,14 @@ pub fn parse_text(
         blank(&mut text, r.clone());
     }
     let mut local = Diagnostics::new();
-    let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
-    apply_var_config(&mut unit, var_config.1, diags);
+    let unit = crate::parse_named(file, &text, implicit_name, &mut local);
     match unclosed {
         Some(at) => diags.extend(local.into_vec().into_iter().filter(|d| {
             !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
         })),
         None => diags.extend(local),
     }
-    (unit, pending)
+    (unit, pending, var_config.1)
 }
 
 /// The first line of `span`'s text, without surrounding white space.

@@ -1,9 +1,10 @@
-//! `VAR_CONFIG` blocks of `.st` configurations (IEC 61131-3 3rd edition 6.5.6): their entries read
-//! from the text, and applied to the parsed unit by copying the program and function blocks along each
+//! `VAR_CONFIG` blocks of `.st` and `.il` configurations (IEC 61131-3 3rd edition 6.5.6): their
+//! entries read from the text, and applied to the parsed units of the whole project (the configuration
+//! and its programs may sit in different files) by copying the program and function blocks along each
 //! entry's path per instance.
 //!
-//! Input: the file's text and the parsed unit. Output: the unit with per-instance locations and initial
-//! values, and E0306 for an entry that names nothing.
+//! Input: the file's text, then every parsed unit. Output: the units with per-instance locations and
+//! initial values, and E0306 for an entry that names nothing.
 
 use super::file::*;
 use super::lexer::{Tok, Token};
@@ -14,7 +15,8 @@ use std::ops::Range;
 
 /// One entry of a `VAR_CONFIG` block (IEC 61131-3 3rd edition 6.5.6): the instance path of a
 /// variable, the location it gets and its initial value.
-pub(super) struct ConfigEntry {
+#[derive(Debug, Clone)]
+pub struct ConfigEntry {
     path: Vec<crate::ast::Ident>,
     location: Option<crate::ast::DirectAddress>,
     init: Option<crate::ast::Initializer>,
@@ -141,9 +143,10 @@ pub(super) fn var_config_blocks(
 /// an entry's path, is copied for that instance (`main__CFG1`, same body), and the copy's variable
 /// gets the entry's location (it must be declared `AT %I*` / `%Q*` / `%M*`, of the same area) and
 /// initial value. The instances of one program or block that VAR_CONFIG does not name keep the
-/// original. An entry whose path names no instance variable is E0306.
-pub(super) fn apply_var_config(
-    unit: &mut CompilationUnit,
+/// original. An entry whose path names no instance variable is E0306. `units` are every unit of the
+/// project: a copy goes into the unit of its original.
+pub fn apply_var_config(
+    units: &mut [CompilationUnit],
     entries: Vec<ConfigEntry>,
     diags: &mut Diagnostics,
 ) {
@@ -153,10 +156,13 @@ pub(super) fn apply_var_config(
     }
     let mut clones: std::collections::HashMap<String, String> = Default::default();
     let mut next = 0;
-    let find_pou = |items: &[LibraryElement], name: &str| {
-        items
-            .iter()
-            .position(|i| matches!(i, LibraryElement::Pou(p) if p.name.is(name)))
+    let find_pou = |units: &[CompilationUnit], name: &str| {
+        units.iter().enumerate().find_map(|(u, unit)| {
+            unit.items
+                .iter()
+                .position(|i| matches!(i, LibraryElement::Pou(p) if p.name.is(name)))
+                .map(|k| (u, k))
+        })
     };
     for e in entries {
         let fail = |diags: &mut Diagnostics, why: String| {
@@ -168,21 +174,23 @@ pub(super) fn apply_var_config(
         };
         // `res.inst.rest` (or `inst.rest`): the program instance
         let mut found = None;
-        for (ii, item) in unit.items.iter().enumerate() {
-            let LibraryElement::Configuration(c) = item else {
-                continue;
-            };
-            for (ri, r) in c.resources.iter().enumerate() {
-                for (pi, p) in r.programs.iter().enumerate() {
-                    if e.path.len() > 2 && r.name == e.path[0] && p.name == e.path[1] {
-                        found = Some((ii, ri, pi, 2));
-                    } else if found.is_none() && p.name == e.path[0] {
-                        found = Some((ii, ri, pi, 1));
+        for (ui, unit) in units.iter().enumerate() {
+            for (ii, item) in unit.items.iter().enumerate() {
+                let LibraryElement::Configuration(c) = item else {
+                    continue;
+                };
+                for (ri, r) in c.resources.iter().enumerate() {
+                    for (pi, p) in r.programs.iter().enumerate() {
+                        if e.path.len() > 2 && r.name == e.path[0] && p.name == e.path[1] {
+                            found = Some((ui, ii, ri, pi, 2));
+                        } else if found.is_none() && p.name == e.path[0] {
+                            found = Some((ui, ii, ri, pi, 1));
+                        }
                     }
                 }
             }
         }
-        let Some((ii, ri, pi, skip)) = found else {
+        let Some((ui, ii, ri, pi, skip)) = found else {
             let named: Vec<&str> = e.path.iter().take(2).map(|p| p.name.as_str()).collect();
             fail(
                 diags,
@@ -190,7 +198,12 @@ pub(super) fn apply_var_config(
             );
             continue;
         };
-        let LibraryElement::Configuration(c) = &mut unit.items[ii] else {
+        let Some(pou_of) = find_pou(units, &units_program(units, ui, ii, ri, pi)) else {
+            let ty = units_program(units, ui, ii, ri, pi);
+            fail(diags, format!("no program `{ty}` in this project"));
+            continue;
+        };
+        let LibraryElement::Configuration(c) = &mut units[ui].items[ii] else {
             continue;
         };
         let inst = &mut c.resources[ri].programs[pi];
@@ -210,25 +223,22 @@ pub(super) fn apply_var_config(
                 let name = format!("{ty}__CFG{next}");
                 clones.insert(key, name.clone());
                 inst.type_name.name = name.clone();
-                let Some(k) = find_pou(&unit.items, &ty) else {
-                    fail(diags, format!("no program `{ty}` in this file"));
-                    continue;
-                };
-                let LibraryElement::Pou(p) = &unit.items[k] else {
+                let (u, k) = pou_of;
+                let LibraryElement::Pou(p) = &units[u].items[k] else {
                     continue;
                 };
                 let mut copy: Pou = p.clone();
                 copy.name.name = name.clone();
-                unit.items.push(LibraryElement::Pou(copy));
+                units[u].items.push(LibraryElement::Pou(copy));
                 name
             }
         };
         let rest = &e.path[skip..];
         for (depth, v) in rest.iter().enumerate() {
-            let Some(k) = find_pou(&unit.items, &current) else {
+            let Some((u, k)) = find_pou(units, &current) else {
                 break;
             };
-            let LibraryElement::Pou(p) = &mut unit.items[k] else {
+            let LibraryElement::Pou(p) = &mut units[u].items[k] else {
                 break;
             };
             let Some(decl) = p
@@ -292,12 +302,15 @@ pub(super) fn apply_var_config(
             };
             let fb_span = fb.span;
             decl.ty = TypeRef::Named(crate::ast::Ident::new(name.clone(), fb_span));
-            if find_pou(&unit.items, &name).is_none() {
-                let Some(k) = find_pou(&unit.items, &fb_name) else {
-                    fail(diags, format!("no function block `{fb_name}` in this file"));
+            if find_pou(units, &name).is_none() {
+                let Some((u, k)) = find_pou(units, &fb_name) else {
+                    fail(
+                        diags,
+                        format!("no function block `{fb_name}` in this project"),
+                    );
                     break;
                 };
-                let LibraryElement::Pou(p) = &unit.items[k] else {
+                let LibraryElement::Pou(p) = &units[u].items[k] else {
                     break;
                 };
                 if p.kind != PouKind::FunctionBlock {
@@ -306,7 +319,7 @@ pub(super) fn apply_var_config(
                 }
                 let mut copy: Pou = p.clone();
                 copy.name.name = name.clone();
-                unit.items.push(LibraryElement::Pou(copy));
+                units[u].items.push(LibraryElement::Pou(copy));
             }
             current = name;
         }
@@ -319,9 +332,9 @@ pub(super) fn apply_var_config(
         .map(str::to_ascii_uppercase)
         .collect();
     loop {
-        let before = unit.items.len();
+        let before: usize = units.iter().map(|u| u.items.len()).sum();
         let mut used: std::collections::HashSet<String> = Default::default();
-        for item in &unit.items {
+        for item in units.iter().flat_map(|u| u.items.iter()) {
             match item {
                 LibraryElement::Pou(p) => {
                     for d in p.var_blocks.iter().flat_map(|b| b.vars.iter()) {
@@ -342,14 +355,24 @@ pub(super) fn apply_var_config(
                 _ => {}
             }
         }
-        unit.items.retain(|i| match i {
-            LibraryElement::Pou(p) => {
-                !originals.contains(&p.name.key()) || used.contains(&p.name.key())
-            }
-            _ => true,
-        });
-        if unit.items.len() == before {
+        for unit in units.iter_mut() {
+            unit.items.retain(|i| match i {
+                LibraryElement::Pou(p) => {
+                    !originals.contains(&p.name.key()) || used.contains(&p.name.key())
+                }
+                _ => true,
+            });
+        }
+        if units.iter().map(|u| u.items.len()).sum::<usize>() == before {
             break;
         }
+    }
+}
+
+/// The type name of program instance `pi` of resource `ri` of configuration item `ii` of unit `ui`.
+fn units_program(units: &[CompilationUnit], ui: usize, ii: usize, ri: usize, pi: usize) -> String {
+    match &units[ui].items[ii] {
+        LibraryElement::Configuration(c) => c.resources[ri].programs[pi].type_name.name.clone(),
+        _ => String::new(),
     }
 }
