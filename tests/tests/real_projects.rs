@@ -383,3 +383,22 @@ fn tank_filling_and_mixing_sequence_runs_through_its_states() {
         ]
     );
 }
+
+#[test]
+fn a_watched_name_with_a_wrong_prefix_suggests_the_variable() {
+    // watching the global `PumpRunning` as `Main.PumpRunning` (the program that uses it): before, the
+    // error said "use --list", an option `ladderc run` does not have
+    let out = ladderc()
+        .arg("run")
+        .arg(file(&format!("{TRUST}opcua_config.st")))
+        .arg(file(&format!("{TRUST}opcua_main.st")))
+        .args(["--cycles", "2", "--watch", "Main.PumpRunning"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("error: --watch: unknown variable `Main.PumpRunning`: did you mean `PumpRunning`? (a run without --watch traces every variable; a built program lists them with --list)"),
+        "{err}"
+    );
+}

@@ -67,7 +67,17 @@ static int ieq(const char *a, const char *b) {
     return *a == *b;
 }
 
-/* A variable of the table or a direct address; names compare case-insensitively. */
+/* The part of a dotted name after its last dot (`Main.x` -> `x`). */
+static const char *last_part(const char *s) {
+    const char *p = s;
+    for (; *s; s++) {
+        if (*s == '.') p = s + 1;
+    }
+    return p;
+}
+
+/* A variable of the table or a direct address; names compare case-insensitively. An unknown name
+   suggests a variable with the same last part (`Main.x` for the global `x`, or the reverse). */
 static int resolve(const char *name, ladderc_var *out, char *err, size_t errlen) {
     size_t i;
     if (name[0] == '%') return ladderc_resolve_address(name, out, err, errlen);
@@ -77,7 +87,14 @@ static int resolve(const char *name, ladderc_var *out, char *err, size_t errlen)
             return 0;
         }
     }
-    snprintf(err, errlen, "unknown variable `%s` (use --list to see the watchable variables)", name);
+    for (i = 0; i < ladderc_var_count; i++) {
+        if (ieq(last_part(ladderc_vars[i].name), last_part(name))) {
+            snprintf(err, errlen, "unknown variable `%s`: did you mean `%s`? (a run without --watch traces every variable; a built program lists them with --list)",
+                     name, ladderc_vars[i].name);
+            return -1;
+        }
+    }
+    snprintf(err, errlen, "unknown variable `%s` (a run without --watch traces every variable; a built program lists them with --list)", name);
     return -1;
 }
 
