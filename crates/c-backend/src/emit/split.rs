@@ -230,12 +230,24 @@ impl Gen<'_> {
         reserve: usize,
     ) {
         let mut targets = targets;
-        let mut parts = Vec::with_capacity(plan.starts.len());
+        let nparts = plan.starts.len();
+        let fname = &frame.name;
+        let mut entries: Vec<Vec<(u32, &str)>> = vec![Vec::new(); nparts];
+        for (key, (part, id)) in &plan.labels {
+            entries[*part].push((*id, key.as_str()));
+        }
+        // Each part is written to `c` as soon as it is generated, so the body's C is never held twice
+        // (43 MB for a 1,000,000-line POU); the frame struct, which needs every part's locals, is
+        // inserted before the parts afterwards. A local carried in the frame is known when the first
+        // part that declares it is written: its frame member is that part's declaration.
+        let at = c.len();
         let mut carried: BTreeMap<String, String> = BTreeMap::new();
+        let mut out = String::with_capacity(reserve);
         for (k, &start) in plan.starts.iter().enumerate() {
             let end = plan.starts.get(k + 1).copied().unwrap_or(body.len());
             let mut b = Body::new(scope, 1, "-1".to_string());
-            b.out.reserve(reserve);
+            out.clear();
+            b.out = std::mem::take(&mut out);
             b.targets = std::mem::take(&mut targets);
             b.part = Some((k, &plan.labels));
             self.stmts(&mut b, &body[start..end]);
@@ -246,28 +258,6 @@ impl Gen<'_> {
                     carried.entry(name.clone()).or_insert_with(|| d.to_string());
                 }
             }
-            parts.push(b);
-        }
-        let fname = &frame.name;
-        c.push_str("typedef struct {\n");
-        for (decl, _, _) in &frame.members {
-            let _ = writeln!(c, "    {decl};");
-        }
-        if scope.uses_en.get() {
-            c.push_str("    IEC_BOOL v_en;\n    IEC_BOOL v_eno;\n");
-        }
-        for d in carried.values() {
-            let _ = writeln!(c, "    {d};");
-        }
-        if frame.members.is_empty() && carried.is_empty() && !scope.uses_en.get() {
-            c.push_str("    char unused_;\n");
-        }
-        let _ = writeln!(c, "}} {fname};\n");
-        let mut entries: Vec<Vec<(u32, &str)>> = vec![Vec::new(); parts.len()];
-        for (key, (part, id)) in &plan.labels {
-            entries[*part].push((*id, key.as_str()));
-        }
-        for (k, b) in parts.iter().enumerate() {
             let _ = writeln!(
                 c,
                 "static int {}{}({}{fname} *fr, int entry) {{",
@@ -316,7 +306,24 @@ impl Gen<'_> {
             } else {
                 "    return 0;\n}\n\n"
             });
+            out = std::mem::take(&mut b.out);
         }
+        let mut st = String::new();
+        st.push_str("typedef struct {\n");
+        for (decl, _, _) in &frame.members {
+            let _ = writeln!(st, "    {decl};");
+        }
+        if scope.uses_en.get() {
+            st.push_str("    IEC_BOOL v_en;\n    IEC_BOOL v_eno;\n");
+        }
+        for d in carried.values() {
+            let _ = writeln!(st, "    {d};");
+        }
+        if frame.members.is_empty() && carried.is_empty() && !scope.uses_en.get() {
+            st.push_str("    char unused_;\n");
+        }
+        let _ = writeln!(st, "}} {fname};\n");
+        c.insert_str(at, &st);
         c.push_str(head);
         let _ = writeln!(c, "    {fname} fr;\n    memset(&fr, 0, sizeof fr);");
         c.push_str(prelude);
@@ -331,13 +338,13 @@ impl Gen<'_> {
         }
         let (prefix, arg, leave) = (&frame.prefix, frame.self_arg, &frame.leave);
         if plan.labels.is_empty() {
-            for k in 1..=parts.len() {
+            for k in 1..=nparts {
                 let _ = writeln!(c, "    if ({prefix}{k}({arg}&fr, 0) < 0) {leave}");
             }
         } else {
             c.push_str("    {\n        int part_ = 1, entry_ = 0;\n        for (;;) {\n");
             c.push_str("            int next_;\n            switch (part_) {\n");
-            for k in 1..=parts.len() {
+            for k in 1..=nparts {
                 let _ = writeln!(
                     c,
                     "            case {k}: next_ = {prefix}{k}({arg}&fr, entry_); break;"
