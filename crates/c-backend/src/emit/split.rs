@@ -115,7 +115,7 @@ fn labels_and_jumps<'a>(
 }
 
 /// Adds 1 over the cuts that separate `a` and `b` (a cut at `c` separates them when `min < c <= max`).
-fn cover(d: &mut [i64], a: usize, b: usize) {
+fn cover(d: &mut [i32], a: usize, b: usize) {
     let (lo, hi) = (a.min(b), a.max(b));
     if lo < hi {
         d[lo + 1] += 1;
@@ -133,8 +133,12 @@ impl Gen<'_> {
         if limit == 0 {
             return None;
         }
-        let weights: Vec<usize> = body.iter().map(weight).collect();
-        if weights.iter().sum::<usize>() <= limit {
+        // (per-statement tables of 4 bytes: a 1,000,000-statement body has 1,000,000 entries in each)
+        let weights: Vec<u32> = body
+            .iter()
+            .map(|s| u32::try_from(weight(s)).unwrap_or(u32::MAX))
+            .collect();
+        if weights.iter().map(|&w| w as usize).sum::<usize>() <= limit {
             return None;
         }
         let n = body.len();
@@ -171,8 +175,8 @@ impl Gen<'_> {
             }
         }
         // soft: cuts some jump crosses; hard: cuts a jump carrying a whole array crosses
-        let mut soft = vec![0i64; n + 2];
-        let mut hard = vec![0i64; n + 2];
+        let mut soft = vec![0i32; n + 2];
+        let mut hard = vec![0i32; n + 2];
         for (at, key, array) in &jumps {
             if let Some(&l) = label_at.get(key) {
                 cover(&mut soft, *at, l);
@@ -182,9 +186,9 @@ impl Gen<'_> {
             }
         }
         let mut starts = vec![0];
-        let (mut acc, mut s, mut h) = (0usize, 0i64, 0i64);
+        let (mut acc, mut s, mut h) = (0usize, 0i32, 0i32);
         for i in 1..n {
-            acc += weights[i - 1];
+            acc += weights[i - 1] as usize;
             s += soft[i];
             h += hard[i];
             if acc >= limit && cut_ok[i] && h == 0 && (s == 0 || acc >= 2 * limit) {
