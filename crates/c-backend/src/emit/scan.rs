@@ -325,14 +325,16 @@ impl Gen<'_> {
     fn var_table(&mut self, c: &mut String, instances: &[Instance]) {
         let mut entries = Vec::new();
         // a member of a named global variable list is traced as `List.x`
-        for r in self.model.global_refs() {
-            let v = self.model.global(r).clone();
+        // (the model is borrowed through its own reference: no variable or POU is copied)
+        let model = self.model;
+        for r in model.global_refs() {
+            let v = model.global(r);
             let name = self.global_name(r);
-            let watch = self.model.global_qualified_name(r);
-            self.watch_var(&v, watch, name, &mut entries);
+            let watch = model.global_qualified_name(r);
+            self.watch_var(v, watch, name, &mut entries);
         }
         for inst in instances {
-            let pou = self.model.pou(inst.pou).clone();
+            let pou = model.pou(inst.pou);
             for v in &pou.vars {
                 if matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp) {
                     continue;
@@ -379,17 +381,10 @@ impl Gen<'_> {
             }
             return;
         }
-        self.watch_value(&name, &lv, &v.ty.clone(), 0, out);
+        self.watch_value(&name, &lv, &v.ty, 0, out);
     }
 
-    fn watch_value(
-        &mut self,
-        name: &str,
-        lv: &str,
-        ty: &Type,
-        depth: usize,
-        out: &mut Vec<String>,
-    ) {
+    fn watch_value(&self, name: &str, lv: &str, ty: &Type, depth: usize, out: &mut Vec<String>) {
         if out.len() >= MAX_ENTRIES || depth > 16 {
             return;
         }
@@ -413,8 +408,8 @@ impl Gen<'_> {
                 "{{ {cname}, LADDERC_T_WSTRING, (void *)&{lv}, NULL, 0, 0 }}"
             )),
             Type::Struct(id) => {
-                if let UserTypeDef::Struct { fields } = self.model.user_type(*id).def.clone() {
-                    for f in &fields {
+                if let UserTypeDef::Struct { fields } = &self.model.user_type(*id).def {
+                    for f in fields {
                         self.watch_value(
                             &cfmt!("{name}.{}", f.name),
                             &cfmt!("{lv}.{}", mangle::var(&f.name)),
@@ -435,7 +430,7 @@ impl Gen<'_> {
                 }
             }
             Type::Fb(FbType::User(id)) => {
-                let pou = self.model.pou(*id).clone();
+                let pou = self.model.pou(*id);
                 for v in &pou.vars {
                     if v.location.is_some()
                         || matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp)

@@ -115,7 +115,7 @@ fn labels_and_jumps<'a>(
 }
 
 /// Adds 1 over the cuts that separate `a` and `b` (a cut at `c` separates them when `min < c <= max`).
-fn cover(d: &mut [i64], a: usize, b: usize) {
+fn cover(d: &mut [i32], a: usize, b: usize) {
     let (lo, hi) = (a.min(b), a.max(b));
     if lo < hi {
         d[lo + 1] += 1;
@@ -133,8 +133,12 @@ impl Gen<'_> {
         if limit == 0 {
             return None;
         }
-        let weights: Vec<usize> = body.iter().map(weight).collect();
-        if weights.iter().sum::<usize>() <= limit {
+        // (per-statement tables of 4 bytes: a 1,000,000-statement body has 1,000,000 entries in each)
+        let weights: Vec<u32> = body
+            .iter()
+            .map(|s| u32::try_from(weight(s)).unwrap_or(u32::MAX))
+            .collect();
+        if weights.iter().map(|&w| w as usize).sum::<usize>() <= limit {
             return None;
         }
         let n = body.len();
@@ -171,8 +175,8 @@ impl Gen<'_> {
             }
         }
         // soft: cuts some jump crosses; hard: cuts a jump carrying a whole array crosses
-        let mut soft = vec![0i64; n + 2];
-        let mut hard = vec![0i64; n + 2];
+        let mut soft = vec![0i32; n + 2];
+        let mut hard = vec![0i32; n + 2];
         for (at, key, array) in &jumps {
             if let Some(&l) = label_at.get(key) {
                 cover(&mut soft, *at, l);
@@ -182,9 +186,9 @@ impl Gen<'_> {
             }
         }
         let mut starts = vec![0];
-        let (mut acc, mut s, mut h) = (0usize, 0i64, 0i64);
+        let (mut acc, mut s, mut h) = (0usize, 0i32, 0i32);
         for i in 1..n {
-            acc += weights[i - 1];
+            acc += weights[i - 1] as usize;
             s += soft[i];
             h += hard[i];
             if acc >= limit && cut_ok[i] && h == 0 && (s == 0 || acc >= 2 * limit) {
@@ -230,12 +234,24 @@ impl Gen<'_> {
         reserve: usize,
     ) {
         let mut targets = targets;
-        let mut parts = Vec::with_capacity(plan.starts.len());
+        let nparts = plan.starts.len();
+        let fname = &frame.name;
+        let mut entries: Vec<Vec<(u32, &str)>> = vec![Vec::new(); nparts];
+        for (key, (part, id)) in &plan.labels {
+            entries[*part].push((*id, key.as_str()));
+        }
+        // Each part is written to `c` as soon as it is generated, so the body's C is never held twice
+        // (43 MB for a 1,000,000-line POU); the frame struct, which needs every part's locals, is
+        // inserted before the parts afterwards. A local carried in the frame is known when the first
+        // part that declares it is written: its frame member is that part's declaration.
+        let at = c.len();
         let mut carried: BTreeMap<String, String> = BTreeMap::new();
+        let mut out = String::with_capacity(reserve);
         for (k, &start) in plan.starts.iter().enumerate() {
             let end = plan.starts.get(k + 1).copied().unwrap_or(body.len());
             let mut b = Body::new(scope, 1, "-1".to_string());
-            b.out.reserve(reserve);
+            out.clear();
+            b.out = std::mem::take(&mut out);
             b.targets = std::mem::take(&mut targets);
             b.part = Some((k, &plan.labels));
             self.stmts(&mut b, &body[start..end]);
@@ -246,28 +262,6 @@ impl Gen<'_> {
                     carried.entry(name.clone()).or_insert_with(|| d.to_string());
                 }
             }
-            parts.push(b);
-        }
-        let fname = &frame.name;
-        c.push_str("typedef struct {\n");
-        for (decl, _, _) in &frame.members {
-            let _ = writeln!(c, "    {decl};");
-        }
-        if scope.uses_en.get() {
-            c.push_str("    IEC_BOOL v_en;\n    IEC_BOOL v_eno;\n");
-        }
-        for d in carried.values() {
-            let _ = writeln!(c, "    {d};");
-        }
-        if frame.members.is_empty() && carried.is_empty() && !scope.uses_en.get() {
-            c.push_str("    char unused_;\n");
-        }
-        let _ = writeln!(c, "}} {fname};\n");
-        let mut entries: Vec<Vec<(u32, &str)>> = vec![Vec::new(); parts.len()];
-        for (key, (part, id)) in &plan.labels {
-            entries[*part].push((*id, key.as_str()));
-        }
-        for (k, b) in parts.iter().enumerate() {
             let _ = writeln!(
                 c,
                 "static int {}{}({}{fname} *fr, int entry) {{",
@@ -316,7 +310,24 @@ impl Gen<'_> {
             } else {
                 "    return 0;\n}\n\n"
             });
+            out = std::mem::take(&mut b.out);
         }
+        let mut st = String::new();
+        st.push_str("typedef struct {\n");
+        for (decl, _, _) in &frame.members {
+            let _ = writeln!(st, "    {decl};");
+        }
+        if scope.uses_en.get() {
+            st.push_str("    IEC_BOOL v_en;\n    IEC_BOOL v_eno;\n");
+        }
+        for d in carried.values() {
+            let _ = writeln!(st, "    {d};");
+        }
+        if frame.members.is_empty() && carried.is_empty() && !scope.uses_en.get() {
+            st.push_str("    char unused_;\n");
+        }
+        let _ = writeln!(st, "}} {fname};\n");
+        c.insert_str(at, &st);
         c.push_str(head);
         let _ = writeln!(c, "    {fname} fr;\n    memset(&fr, 0, sizeof fr);");
         c.push_str(prelude);
@@ -331,13 +342,13 @@ impl Gen<'_> {
         }
         let (prefix, arg, leave) = (&frame.prefix, frame.self_arg, &frame.leave);
         if plan.labels.is_empty() {
-            for k in 1..=parts.len() {
+            for k in 1..=nparts {
                 let _ = writeln!(c, "    if ({prefix}{k}({arg}&fr, 0) < 0) {leave}");
             }
         } else {
             c.push_str("    {\n        int part_ = 1, entry_ = 0;\n        for (;;) {\n");
             c.push_str("            int next_;\n            switch (part_) {\n");
-            for k in 1..=parts.len() {
+            for k in 1..=nparts {
                 let _ = writeln!(
                     c,
                     "            case {k}: next_ = {prefix}{k}({arg}&fr, entry_); break;"

@@ -1422,14 +1422,13 @@ pub fn reserved_name(name: &str) -> Option<&'static str> {
         "WITH",
         "TASK",
     ];
-    let up = name.to_ascii_uppercase();
-    if KEYWORDS.contains(&up.as_str()) {
+    let is = |k: &&str| k.eq_ignore_ascii_case(name);
+    if KEYWORDS.iter().any(is) {
         Some("a keyword")
-    } else if Elementary::from_name(&up).is_some()
-        || matches!(up.as_str(), "STRING" | "WSTRING" | "LTIME")
+    } else if Elementary::from_name(name).is_some() || ["STRING", "WSTRING", "LTIME"].iter().any(is)
     {
         Some("an elementary data type")
-    } else if StdFb::from_name(&up).is_some() {
+    } else if StdFb::from_name(name).is_some() {
         Some("a standard function block")
     } else {
         None

@@ -120,13 +120,15 @@ impl Elementary {
 
     /// Looks up a type name, case-insensitively; accepts the long forms `TIME_OF_DAY`, `DATE_AND_TIME`.
     pub fn from_name(name: &str) -> Option<Elementary> {
-        let up = name.to_ascii_uppercase();
-        match up.as_str() {
-            "TIME_OF_DAY" => return Some(E::Tod),
-            "DATE_AND_TIME" => return Some(E::Dt),
-            _ => {}
+        if name.eq_ignore_ascii_case("TIME_OF_DAY") {
+            return Some(E::Tod);
         }
-        Elementary::ALL.into_iter().find(|e| e.name() == up)
+        if name.eq_ignore_ascii_case("DATE_AND_TIME") {
+            return Some(E::Dt);
+        }
+        Elementary::ALL
+            .into_iter()
+            .find(|e| e.name().eq_ignore_ascii_case(name))
     }
 
     /// Storage size in bits (BOOL: 1; TIME: 64 (nanoseconds); DATE/TOD/DT: 64).
@@ -336,14 +338,17 @@ impl StdFb {
     }
     /// Case-insensitive lookup; `CTU_INT` etc. map to the INT counters.
     pub fn from_name(name: &str) -> Option<StdFb> {
-        let up = name.to_ascii_uppercase();
-        let up = match up.as_str() {
-            "CTU_INT" => "CTU",
-            "CTD_INT" => "CTD",
-            "CTUD_INT" => "CTUD",
-            u => u,
-        };
-        StdFb::ALL.into_iter().find(|f| f.name() == up)
+        let alias = [
+            ("CTU_INT", StdFb::Ctu),
+            ("CTD_INT", StdFb::Ctd),
+            ("CTUD_INT", StdFb::Ctud),
+        ];
+        if let Some(&(_, f)) = alias.iter().find(|(a, _)| a.eq_ignore_ascii_case(name)) {
+            return Some(f);
+        }
+        StdFb::ALL
+            .into_iter()
+            .find(|f| f.name().eq_ignore_ascii_case(name))
     }
 }
 
