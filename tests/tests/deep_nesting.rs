@@ -14,8 +14,11 @@ use std::time::{Duration, Instant};
 
 const LEVELS: usize = 100_000;
 
-/// Wall time allowed per run (debug builds on a loaded machine; a release build takes a fraction).
-const LIMIT: Duration = Duration::from_secs(if cfg!(debug_assertions) { 30 } else { 5 });
+/// Wall time allowed per run: a bound on termination, not a speed figure (speed lives in the benches).
+/// A quadratic walk over 100,000 levels takes tens of minutes, so 120 s still catches one, while a debug
+/// build on a loaded 2-core machine (41.6 s seen once for the slowest case beside a release build) passes;
+/// a release build gets issue #12's 20 s.
+const LIMIT: Duration = Duration::from_secs(if cfg!(debug_assertions) { 120 } else { 20 });
 
 /// Runs `ladderc check --message-format short FILE` (or other arguments) in `dir`.
 fn check(dir: &Path, args: &[&str]) -> (Output, String) {
