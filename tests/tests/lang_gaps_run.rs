@@ -466,3 +466,68 @@ fn an_expression_as_initial_value_is_located_with_a_declaration_hint() {
         "{lines:?}"
     );
 }
+
+// ------------------------------------------------------ constant expressions in declarations
+
+#[test]
+fn constant_expressions_size_arrays_and_strings_in_st_files() {
+    // IEC 61131-3 ed. 3 / CODESYS: N = 4 (VAR_GLOBAL CONSTANT), M = 3 (VAR CONSTANT):
+    // a 0..N-1 = 0..3, b 1..2*N = 1..8, c -M..(M + 1) MOD 3, 0..N / 3 = -3..1, 0..1,
+    // s STRING[N+1] = 5 characters (the assigned 8 are truncated). Before: E0011 "expected a number"
+    let out = ladderc()
+        .args(["run"])
+        .arg(fixture("const_bounds.st"))
+        .args(["--cycles", "1", "--sanitize", "--trace", "-"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,N,Main.M,Main.a[0],Main.a[1],Main.a[2],Main.a[3],Main.b[1],Main.b[2],\
+         Main.b[3],Main.b[4],Main.b[5],Main.b[6],Main.b[7],Main.b[8],\"Main.c[-3,0]\",\
+         \"Main.c[-3,1]\",\"Main.c[-2,0]\",\"Main.c[-2,1]\",\"Main.c[-1,0]\",\"Main.c[-1,1]\",\
+         \"Main.c[0,0]\",\"Main.c[0,1]\",\"Main.c[1,0]\",\"Main.c[1,1]\",Main.s,Main.i\n\
+         0,0,4,3,0,10,20,30,0,0,0,0,0,0,0,5,1,0,0,0,0,0,0,0,0,2,\"abcde\",4\n"
+    );
+}
+
+#[test]
+fn constant_expressions_size_arrays_in_il_files() {
+    // the same declarations in an IL file: ARRAY[1..N*2] with N = 3 holds 6 elements
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("bounds.il");
+    std::fs::write(
+        &f,
+        "PROGRAM Main\nVAR CONSTANT\n  N : INT := 3;\nEND_VAR\nVAR\n  a : ARRAY[1..N*2] OF INT;\n\
+         s : STRING[(N - 1) * 2];\nEND_VAR\n  LD 7\n  ST a[6]\n  LD 'abcdef'\n  ST s\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run(&f, 1, "Main.a[1],Main.a[6],Main.s");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.a[1],Main.a[6],Main.s\n0,0,0,7,\"abcd\"\n"
+    );
+}
+
+#[test]
+fn constant_expressions_that_cannot_be_evaluated_are_one_located_e0022_each() {
+    let src = "VAR_GLOBAL CONSTANT\n  N : INT := 4;\n  PI_C : REAL := 3.14;\nEND_VAR\n\
+               PROGRAM Main\nVAR\n  k : INT := 3;\n  a : ARRAY[0..k-1] OF INT;\n\
+               b : ARRAY[0..N / (N - 4)] OF INT;\n  c : ARRAY[1..N * 1000000000] OF INT;\n\
+               s : STRING[N 1];\n  d : ARRAY[0..PI_C] OF INT;\n  e : ARRAY[0..N-1] OF INT;\n\
+               END_VAR\n  e[0] := k;\nEND_PROGRAM\n";
+    let (code, lines) = check_text("bad.st", src);
+    assert_eq!(code, Some(1));
+    let hint = "(hint: use integer literals and integer constants (VAR_GLOBAL CONSTANT or VAR CONSTANT with a literal value, declared before in this file) with + - * / MOD and parentheses)";
+    assert_eq!(
+        lines,
+        vec![
+            format!("bad.st:8:16: error[E0022]: constant expression `k-1`: `k` is not an integer constant declared before {hint}"),
+            format!("bad.st:9:14: error[E0022]: constant expression `N / (N - 4)`: division by zero {hint}"),
+            format!("bad.st:10:16: error[E0022]: constant expression `N * 1000000000`: the value overflows {hint}"),
+            "bad.st:11:14: error[E0022]: an operator is missing in this constant expression (hint: write + - * / or MOD between the operands)".to_string(),
+            format!("bad.st:12:16: error[E0022]: constant expression `PI_C`: `PI_C` is not an integer constant declared before {hint}"),
+        ]
+    );
+}

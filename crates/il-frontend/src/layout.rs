@@ -89,6 +89,9 @@ pub struct Layout<'s> {
     /// Upper-case names declared outside the text (a PLCopen XML POU's interface): a keyword among them
     /// is read as that variable's name (its reserved name is E1031 at the declaration, once).
     declared: Vec<String>,
+    /// `[` opened in declarations and not closed yet: `+ - * /` there are constant-expression
+    /// operators (`ARRAY[0..N-1]`); anywhere else they stay unexpected characters.
+    decl_brackets: u32,
 }
 
 impl<'s> Layout<'s> {
@@ -110,6 +113,7 @@ impl<'s> Layout<'s> {
             decl_start: false,
             swallowed: false,
             declared: Vec::new(),
+            decl_brackets: 0,
         }
     }
 
@@ -485,6 +489,10 @@ impl<'s> Layout<'s> {
             RawToken::Arrow => Tok::Arrow,
             RawToken::DotDot => Tok::DotDot,
             RawToken::Dot => Tok::Dot,
+            RawToken::Op(b'+') => Tok::Plus,
+            RawToken::Op(b'-') => Tok::Minus,
+            RawToken::Op(b'*') => Tok::Star,
+            RawToken::Op(_) => Tok::Slash,
             RawToken::Amp => Tok::Amp,
             RawToken::AmpN => Tok::AmpN,
             // Newlines and comments are handled before conversion.
@@ -534,7 +542,21 @@ impl<'s> Layout<'s> {
                 {
                     Tok::Word(Word::Ident)
                 }
-                Some(Ok(raw)) => self.convert(raw, s, e),
+                Some(Ok(RawToken::Op(_))) if !(self.in_decl() && self.decl_brackets > 0) => {
+                    self.report_lex_error(LexError::UnexpectedChar, s, e);
+                    Tok::Error
+                }
+                Some(Ok(raw)) => {
+                    match raw {
+                        RawToken::LBracket if self.in_decl() => self.decl_brackets += 1,
+                        RawToken::RBracket => {
+                            self.decl_brackets = self.decl_brackets.saturating_sub(1)
+                        }
+                        RawToken::Semi => self.decl_brackets = 0,
+                        _ => {}
+                    }
+                    self.convert(raw, s, e)
+                }
                 Some(Err(err)) => {
                     self.swallowed |= err == LexError::UnterminatedComment;
                     self.report_lex_error(err, s, e);

@@ -135,6 +135,23 @@ pub struct Ctx<'s> {
     pub base: usize,
     /// Syntax problems found by the grammar actions, in order.
     pub diags: Vec<Diagnostic>,
+    /// Integer constants declared so far in the text (`VAR_GLOBAL CONSTANT` / `VAR CONSTANT` with an
+    /// integer literal initial value), by upper-case name: what a bound expression may name.
+    pub consts: std::collections::HashMap<String, i128>,
+}
+
+/// An integer constant expression in an array bound or a string length, as parsed (see
+/// [`Ctx::bound`]).
+#[derive(Debug, Clone)]
+pub enum BoundExpr {
+    /// An integer literal, sign applied.
+    Int(i128, Span),
+    /// A named constant.
+    Name(Ident),
+    /// `-e`.
+    Neg(Box<BoundExpr>, Span),
+    /// `a op b`, `op` one of `+ - * /` and `%` for MOD.
+    Bin(u8, Box<BoundExpr>, Box<BoundExpr>),
 }
 
 impl<'s> Ctx<'s> {
@@ -619,6 +636,84 @@ impl<'s> Ctx<'s> {
         parts
     }
 
+    /// `a -1`: a sum followed by a signed literal (`N-1` lexes as `N` and `-1`) is `a + (-1)` when the
+    /// sign is written right there; anything else juxtaposed is E0022.
+    pub fn bound_sum(&mut self, a: BoundExpr, b: BoundExpr, l: usize, r: usize) -> BoundExpr {
+        if !self.text(l, r).starts_with(['+', '-']) {
+            self.hint(
+                code::E0022,
+                "an operator is missing in this constant expression",
+                l,
+                r,
+                "write + - * / or MOD between the operands",
+            );
+        }
+        BoundExpr::Bin(b'+', Box::new(a), Box::new(b))
+    }
+
+    /// Evaluates a bound expression written at `l..r` (checked integer arithmetic; `/` truncates).
+    /// A name that is not an integer constant declared before, a division by zero or an overflow is
+    /// one E0022 (none if a missing operator was already reported there), and `None`.
+    pub fn bound(&mut self, e: BoundExpr, l: usize, r: usize) -> Option<i128> {
+        fn eval(
+            e: &BoundExpr,
+            consts: &std::collections::HashMap<String, i128>,
+            depth: u32,
+        ) -> Result<i128, String> {
+            if depth > 64 {
+                return Err("the expression is nested too deeply".into());
+            }
+            match e {
+                BoundExpr::Int(v, _) => Ok(*v),
+                BoundExpr::Name(n) => consts
+                    .get(&n.name.to_ascii_uppercase())
+                    .copied()
+                    .ok_or_else(|| {
+                        format!("`{}` is not an integer constant declared before", n.name)
+                    }),
+                BoundExpr::Neg(a, _) => eval(a, consts, depth + 1)?
+                    .checked_neg()
+                    .ok_or_else(|| "the value overflows".into()),
+                BoundExpr::Bin(op, a, b) => {
+                    let (a, b) = (eval(a, consts, depth + 1)?, eval(b, consts, depth + 1)?);
+                    let v = match op {
+                        b'+' => a.checked_add(b),
+                        b'-' => a.checked_sub(b),
+                        b'*' => a.checked_mul(b),
+                        _ if b == 0 => return Err("division by zero".into()),
+                        b'/' => a.checked_div(b),
+                        _ => a.checked_rem(b),
+                    };
+                    // bounds are stored as i128 but must fit a DINT-sized index
+                    v.filter(|v| i32::try_from(*v).is_ok())
+                        .ok_or_else(|| "the value overflows".into())
+                }
+            }
+        }
+        let here = self.span(l, r);
+        if self.diags.iter().any(|d| {
+            d.code == code::E0022
+                && d.span
+                    .is_some_and(|s| s.start >= here.start && s.end <= here.end)
+        }) {
+            return None;
+        }
+        match eval(&e, &self.consts, 0) {
+            Ok(v) => Some(v),
+            Err(why) => {
+                let text = self.text(l, r).trim().to_string();
+                self.hint(
+                    code::E0022,
+                    format!("constant expression `{text}`: {why}"),
+                    l,
+                    r,
+                    "use integer literals and integer constants (VAR_GLOBAL CONSTANT or VAR CONSTANT with a literal value, declared before in this file) with + - * / MOD and parentheses",
+                );
+                None
+            }
+        }
+    }
+
     /// Builds a `VAR*` block with its `CONSTANT` / `RETAIN` qualifiers.
     pub fn var_block(
         &mut self,
@@ -628,6 +723,15 @@ impl<'s> Ctx<'s> {
         l: usize,
         r: usize,
     ) -> VarBlock {
+        if quals.contains(&Word::Constant) {
+            for v in &vars {
+                if let Some(Initializer::Value(Operand::Literal(lit))) = &v.init {
+                    if let LiteralKind::Int(n) = lit.kind {
+                        self.consts.insert(v.name.name.to_ascii_uppercase(), n);
+                    }
+                }
+            }
+        }
         VarBlock {
             name: None,
             kind,
@@ -1063,6 +1167,7 @@ pub(crate) fn run(
         src,
         base,
         diags: Vec::new(),
+        consts: Default::default(),
     };
     let result = grammar::StartParser::new().parse(&mut ctx, &mut layout);
     let mut all = std::mem::take(&mut layout.diags);
