@@ -446,13 +446,14 @@ fn st_statements_outside_any_pou_are_one_located_e0307() {
 #[test]
 fn an_expression_as_initial_value_is_located_with_a_declaration_hint() {
     // trust-platform's conformance case `c : INT := b + 1;` in an .st file: before, the hint said
-    // "IL has no infix operators: use ... ADD, SUB" (the declarations are read by the IL parser)
+    // "IL has no infix operators: use ... ADD, SUB" (the declarations are read by the IL parser);
+    // now the constant expression is evaluated, and `b` is named as not being a constant
     let src = "PROGRAM Main\nVAR\n    b : INT := 4;\n    c : INT := b + 1;\nEND_VAR\n  b := c;\nEND_PROGRAM\n";
     let (code, lines) = check_text("init.st", src);
     assert_eq!(code, Some(1));
     assert_eq!(
         lines,
-        vec!["init.st:4:18: error[E0001]: unexpected character `+` (hint: ladderc reads an initial value in a declaration as a literal: it does not evaluate expressions there (edition 3 allows constant expressions); write the value, or assign it in the body)"]
+        vec!["init.st:4:16: error[E0022]: constant expression `b + 1`: `b` is not an integer constant declared before (hint: use integer literals and integer constants (VAR_GLOBAL CONSTANT or VAR CONSTANT with a literal value, declared before in this file) with + - * / MOD and parentheses)"]
     );
     // in an IL body the operator keeps the IL hint
     let (_, lines) = check_text(
@@ -529,5 +530,38 @@ fn constant_expressions_that_cannot_be_evaluated_are_one_located_e0022_each() {
             "bad.st:11:14: error[E0022]: an operator is missing in this constant expression (hint: write + - * / or MOD between the operands)".to_string(),
             format!("bad.st:12:16: error[E0022]: constant expression `PI_C`: `PI_C` is not an integer constant declared before {hint}"),
         ]
+    );
+}
+
+#[test]
+fn constant_expressions_as_initial_values_are_evaluated() {
+    // M uses N in the same CONSTANT block; a is sized by M; d: (5 * -3) MOD 4 = -3 (MOD keeps the
+    // dividend's sign); e needs LINT. Before: E0001 "unexpected character `*`"
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("init.st");
+    std::fs::write(
+        &f,
+        "VAR_GLOBAL CONSTANT\n  N : INT := 4;\n  M : INT := N * 2 + 1;\nEND_VAR\nPROGRAM Main\nVAR\n\
+         a : ARRAY[0..M-1] OF INT := [1, 2, 3(7)];\n  c : INT := N * 2;\n\
+         d : DINT := (N + 1) * -3 MOD 4;\n  e : LINT := N * 1000000000000;\n  f : INT := -N;\n\
+         END_VAR\nc := c + 1;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run(&f, 2, "M,Main.a[4],Main.a[8],Main.c,Main.d,Main.e,Main.f");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,M,Main.a[4],Main.a[8],Main.c,Main.d,Main.e,Main.f\n\
+         0,0,9,7,0,9,-3,4000000000000,-4\n\
+         1,10,9,7,0,10,-3,4000000000000,-4\n"
+    );
+    // the value is checked against the variable's type like a literal
+    let (code, lines) = check_text(
+        "range.st",
+        "PROGRAM Main\nVAR\n  d : INT := 3 * 20000;\nEND_VAR\nd := d;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        vec!["range.st:3:14: error[E1017]: initial value 60000 does not fit INT (hint: use a value in the range of INT or a wider type)"]
     );
 }

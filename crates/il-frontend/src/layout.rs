@@ -92,6 +92,9 @@ pub struct Layout<'s> {
     /// `[` opened in declarations and not closed yet: `+ - * /` there are constant-expression
     /// operators (`ARRAY[0..N-1]`); anywhere else they stay unexpected characters.
     decl_brackets: u32,
+    /// After `:=` in declarations, up to the `;`: an initial value, which may be a constant
+    /// expression (`c : INT := N * 2;`).
+    decl_init: bool,
 }
 
 impl<'s> Layout<'s> {
@@ -114,6 +117,7 @@ impl<'s> Layout<'s> {
             swallowed: false,
             declared: Vec::new(),
             decl_brackets: 0,
+            decl_init: false,
         }
     }
 
@@ -411,7 +415,7 @@ impl<'s> Layout<'s> {
                     // an initial value or a bound written as an expression (`c : INT := b + 1;`,
                     // in IL and ST files alike: their declarations are read here)
                     "=" | "<" | ">" | "+" | "-" | "*" | "/" | "<>" | "<=" | ">=" if in_decl => {
-                        "ladderc reads an initial value in a declaration as a literal: it does not evaluate expressions there (edition 3 allows constant expressions); write the value, or assign it in the body"
+                        "an initial value in a declaration is a literal or an integer constant expression (+ - * / MOD, parentheses, integer constants); write the value, or assign it in the body"
                     }
                     "=" | "<" | ">" | "+" | "-" | "*" | "/" | "<>" | "<=" | ">=" => {
                         "IL has no infix operators: use EQ, NE, LT, LE, GT, GE, ADD, SUB, MUL or DIV"
@@ -542,7 +546,9 @@ impl<'s> Layout<'s> {
                 {
                     Tok::Word(Word::Ident)
                 }
-                Some(Ok(RawToken::Op(_))) if !(self.in_decl() && self.decl_brackets > 0) => {
+                Some(Ok(RawToken::Op(_)))
+                    if !(self.in_decl() && (self.decl_brackets > 0 || self.decl_init)) =>
+                {
                     self.report_lex_error(LexError::UnexpectedChar, s, e);
                     Tok::Error
                 }
@@ -552,7 +558,11 @@ impl<'s> Layout<'s> {
                         RawToken::RBracket => {
                             self.decl_brackets = self.decl_brackets.saturating_sub(1)
                         }
-                        RawToken::Semi => self.decl_brackets = 0,
+                        RawToken::Assign if self.in_decl() => self.decl_init = true,
+                        RawToken::Semi => {
+                            self.decl_brackets = 0;
+                            self.decl_init = false;
+                        }
                         _ => {}
                     }
                     self.convert(raw, s, e)

@@ -138,6 +138,8 @@ pub struct Ctx<'s> {
     /// Integer constants declared so far in the text (`VAR_GLOBAL CONSTANT` / `VAR CONSTANT` with an
     /// integer literal initial value), by upper-case name: what a bound expression may name.
     pub consts: std::collections::HashMap<String, i128>,
+    /// The declarations being read are in a `CONSTANT` block (their integer values go to `consts`).
+    pub in_constant_block: bool,
 }
 
 /// An integer constant expression in an array bound or a string length, as parsed (see
@@ -655,6 +657,23 @@ impl<'s> Ctx<'s> {
     /// A name that is not an integer constant declared before, a division by zero or an overflow is
     /// one E0022 (none if a missing operator was already reported there), and `None`.
     pub fn bound(&mut self, e: BoundExpr, l: usize, r: usize) -> Option<i128> {
+        self.const_expr(e, l, r, true)
+    }
+
+    /// An integer constant expression as an initial value (`c : INT := N * 2;`): its value as an
+    /// integer literal spanning `l..r` (0 after an E0022; the type's range is checked by sema).
+    pub fn init_expr(&mut self, e: BoundExpr, l: usize, r: usize) -> Initializer {
+        let v = self.const_expr(e, l, r, false).unwrap_or(0);
+        Initializer::Value(Operand::literal(Literal {
+            kind: LiteralKind::Int(v),
+            type_prefix: None,
+            span: self.span(l, r),
+        }))
+    }
+
+    /// Evaluates `e` (see [`Ctx::bound`]); `dint`: the value must fit a DINT (a bound, a length),
+    /// else a LINT.
+    fn const_expr(&mut self, e: BoundExpr, l: usize, r: usize, dint: bool) -> Option<i128> {
         fn eval(
             e: &BoundExpr,
             consts: &std::collections::HashMap<String, i128>,
@@ -684,8 +703,8 @@ impl<'s> Ctx<'s> {
                         b'/' => a.checked_div(b),
                         _ => a.checked_rem(b),
                     };
-                    // bounds are stored as i128 but must fit a DINT-sized index
-                    v.filter(|v| i32::try_from(*v).is_ok())
+                    // checked in the widest integer type (LINT); bounds are narrowed by the caller
+                    v.filter(|v| i64::try_from(*v).is_ok())
                         .ok_or_else(|| "the value overflows".into())
                 }
             }
@@ -698,7 +717,14 @@ impl<'s> Ctx<'s> {
         }) {
             return None;
         }
-        match eval(&e, &self.consts, 0) {
+        let value = eval(&e, &self.consts, 0).and_then(|v| {
+            if dint && i32::try_from(v).is_err() {
+                Err("the value overflows".to_string())
+            } else {
+                Ok(v)
+            }
+        });
+        match value {
             Ok(v) => Some(v),
             Err(why) => {
                 let text = self.text(l, r).trim().to_string();
@@ -723,15 +749,7 @@ impl<'s> Ctx<'s> {
         l: usize,
         r: usize,
     ) -> VarBlock {
-        if quals.contains(&Word::Constant) {
-            for v in &vars {
-                if let Some(Initializer::Value(Operand::Literal(lit))) = &v.init {
-                    if let LiteralKind::Int(n) = lit.kind {
-                        self.consts.insert(v.name.name.to_ascii_uppercase(), n);
-                    }
-                }
-            }
-        }
+        self.in_constant_block = false;
         VarBlock {
             name: None,
             kind,
@@ -772,6 +790,15 @@ impl<'s> Ctx<'s> {
                 e,
                 "declare each located variable on its own line",
             );
+        }
+        if self.in_constant_block {
+            if let Some(Initializer::Value(Operand::Literal(lit))) = &init {
+                if let LiteralKind::Int(n) = lit.kind {
+                    for name in &names {
+                        self.consts.insert(name.name.to_ascii_uppercase(), n);
+                    }
+                }
+            }
         }
         let span = self.span(l, r);
         names
@@ -1168,6 +1195,7 @@ pub(crate) fn run(
         base,
         diags: Vec::new(),
         consts: Default::default(),
+        in_constant_block: false,
     };
     let result = grammar::StartParser::new().parse(&mut ctx, &mut layout);
     let mut all = std::mem::take(&mut layout.diags);
