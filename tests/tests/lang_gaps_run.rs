@@ -446,13 +446,14 @@ fn st_statements_outside_any_pou_are_one_located_e0307() {
 #[test]
 fn an_expression_as_initial_value_is_located_with_a_declaration_hint() {
     // trust-platform's conformance case `c : INT := b + 1;` in an .st file: before, the hint said
-    // "IL has no infix operators: use ... ADD, SUB" (the declarations are read by the IL parser)
+    // "IL has no infix operators: use ... ADD, SUB" (the declarations are read by the IL parser);
+    // now the constant expression is evaluated, and `b` is named as not being a constant
     let src = "PROGRAM Main\nVAR\n    b : INT := 4;\n    c : INT := b + 1;\nEND_VAR\n  b := c;\nEND_PROGRAM\n";
     let (code, lines) = check_text("init.st", src);
     assert_eq!(code, Some(1));
     assert_eq!(
         lines,
-        vec!["init.st:4:18: error[E0001]: unexpected character `+` (hint: ladderc reads an initial value in a declaration as a literal: it does not evaluate expressions there (edition 3 allows constant expressions); write the value, or assign it in the body)"]
+        vec!["init.st:4:16: error[E0022]: constant expression `b + 1`: `b` is not an integer constant declared before (hint: use integer literals and integer constants (VAR_GLOBAL CONSTANT or VAR CONSTANT with a literal value, declared before in this file) with + - * / MOD and parentheses)"]
     );
     // in an IL body the operator keeps the IL hint
     let (_, lines) = check_text(
@@ -464,5 +465,103 @@ fn an_expression_as_initial_value_is_located_with_a_declaration_hint() {
             .iter()
             .any(|l| l.contains("error[E0001]") && l.contains("IL has no infix operators")),
         "{lines:?}"
+    );
+}
+
+// ------------------------------------------------------ constant expressions in declarations
+
+#[test]
+fn constant_expressions_size_arrays_and_strings_in_st_files() {
+    // IEC 61131-3 ed. 3 / CODESYS: N = 4 (VAR_GLOBAL CONSTANT), M = 3 (VAR CONSTANT):
+    // a 0..N-1 = 0..3, b 1..2*N = 1..8, c -M..(M + 1) MOD 3, 0..N / 3 = -3..1, 0..1,
+    // s STRING[N+1] = 5 characters (the assigned 8 are truncated). Before: E0011 "expected a number"
+    let out = ladderc()
+        .args(["run"])
+        .arg(fixture("const_bounds.st"))
+        .args(["--cycles", "1", "--sanitize", "--trace", "-"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,N,Main.M,Main.a[0],Main.a[1],Main.a[2],Main.a[3],Main.b[1],Main.b[2],\
+         Main.b[3],Main.b[4],Main.b[5],Main.b[6],Main.b[7],Main.b[8],\"Main.c[-3,0]\",\
+         \"Main.c[-3,1]\",\"Main.c[-2,0]\",\"Main.c[-2,1]\",\"Main.c[-1,0]\",\"Main.c[-1,1]\",\
+         \"Main.c[0,0]\",\"Main.c[0,1]\",\"Main.c[1,0]\",\"Main.c[1,1]\",Main.s,Main.i\n\
+         0,0,4,3,0,10,20,30,0,0,0,0,0,0,0,5,1,0,0,0,0,0,0,0,0,2,\"abcde\",4\n"
+    );
+}
+
+#[test]
+fn constant_expressions_size_arrays_in_il_files() {
+    // the same declarations in an IL file: ARRAY[1..N*2] with N = 3 holds 6 elements
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("bounds.il");
+    std::fs::write(
+        &f,
+        "PROGRAM Main\nVAR CONSTANT\n  N : INT := 3;\nEND_VAR\nVAR\n  a : ARRAY[1..N*2] OF INT;\n\
+         s : STRING[(N - 1) * 2];\nEND_VAR\n  LD 7\n  ST a[6]\n  LD 'abcdef'\n  ST s\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run(&f, 1, "Main.a[1],Main.a[6],Main.s");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.a[1],Main.a[6],Main.s\n0,0,0,7,\"abcd\"\n"
+    );
+}
+
+#[test]
+fn constant_expressions_that_cannot_be_evaluated_are_one_located_e0022_each() {
+    let src = "VAR_GLOBAL CONSTANT\n  N : INT := 4;\n  PI_C : REAL := 3.14;\nEND_VAR\n\
+               PROGRAM Main\nVAR\n  k : INT := 3;\n  a : ARRAY[0..k-1] OF INT;\n\
+               b : ARRAY[0..N / (N - 4)] OF INT;\n  c : ARRAY[1..N * 1000000000] OF INT;\n\
+               s : STRING[N 1];\n  d : ARRAY[0..PI_C] OF INT;\n  e : ARRAY[0..N-1] OF INT;\n\
+               END_VAR\n  e[0] := k;\nEND_PROGRAM\n";
+    let (code, lines) = check_text("bad.st", src);
+    assert_eq!(code, Some(1));
+    let hint = "(hint: use integer literals and integer constants (VAR_GLOBAL CONSTANT or VAR CONSTANT with a literal value, declared before in this file) with + - * / MOD and parentheses)";
+    assert_eq!(
+        lines,
+        vec![
+            format!("bad.st:8:16: error[E0022]: constant expression `k-1`: `k` is not an integer constant declared before {hint}"),
+            format!("bad.st:9:14: error[E0022]: constant expression `N / (N - 4)`: division by zero {hint}"),
+            format!("bad.st:10:16: error[E0022]: constant expression `N * 1000000000`: the value overflows {hint}"),
+            "bad.st:11:14: error[E0022]: an operator is missing in this constant expression (hint: write + - * / or MOD between the operands)".to_string(),
+            format!("bad.st:12:16: error[E0022]: constant expression `PI_C`: `PI_C` is not an integer constant declared before {hint}"),
+        ]
+    );
+}
+
+#[test]
+fn constant_expressions_as_initial_values_are_evaluated() {
+    // M uses N in the same CONSTANT block; a is sized by M; d: (5 * -3) MOD 4 = -3 (MOD keeps the
+    // dividend's sign); e needs LINT. Before: E0001 "unexpected character `*`"
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("init.st");
+    std::fs::write(
+        &f,
+        "VAR_GLOBAL CONSTANT\n  N : INT := 4;\n  M : INT := N * 2 + 1;\nEND_VAR\nPROGRAM Main\nVAR\n\
+         a : ARRAY[0..M-1] OF INT := [1, 2, 3(7)];\n  c : INT := N * 2;\n\
+         d : DINT := (N + 1) * -3 MOD 4;\n  e : LINT := N * 1000000000000;\n  f : INT := -N;\n\
+         END_VAR\nc := c + 1;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run(&f, 2, "M,Main.a[4],Main.a[8],Main.c,Main.d,Main.e,Main.f");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,M,Main.a[4],Main.a[8],Main.c,Main.d,Main.e,Main.f\n\
+         0,0,9,7,0,9,-3,4000000000000,-4\n\
+         1,10,9,7,0,10,-3,4000000000000,-4\n"
+    );
+    // the value is checked against the variable's type like a literal
+    let (code, lines) = check_text(
+        "range.st",
+        "PROGRAM Main\nVAR\n  d : INT := 3 * 20000;\nEND_VAR\nd := d;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        vec!["range.st:3:14: error[E1017]: initial value 60000 does not fit INT (hint: use a value in the range of INT or a wider type)"]
     );
 }

@@ -89,6 +89,12 @@ pub struct Layout<'s> {
     /// Upper-case names declared outside the text (a PLCopen XML POU's interface): a keyword among them
     /// is read as that variable's name (its reserved name is E1031 at the declaration, once).
     declared: Vec<String>,
+    /// `[` opened in declarations and not closed yet: `+ - * /` there are constant-expression
+    /// operators (`ARRAY[0..N-1]`); anywhere else they stay unexpected characters.
+    decl_brackets: u32,
+    /// After `:=` in declarations, up to the `;`: an initial value, which may be a constant
+    /// expression (`c : INT := N * 2;`).
+    decl_init: bool,
 }
 
 impl<'s> Layout<'s> {
@@ -110,6 +116,8 @@ impl<'s> Layout<'s> {
             decl_start: false,
             swallowed: false,
             declared: Vec::new(),
+            decl_brackets: 0,
+            decl_init: false,
         }
     }
 
@@ -407,7 +415,7 @@ impl<'s> Layout<'s> {
                     // an initial value or a bound written as an expression (`c : INT := b + 1;`,
                     // in IL and ST files alike: their declarations are read here)
                     "=" | "<" | ">" | "+" | "-" | "*" | "/" | "<>" | "<=" | ">=" if in_decl => {
-                        "ladderc reads an initial value in a declaration as a literal: it does not evaluate expressions there (edition 3 allows constant expressions); write the value, or assign it in the body"
+                        "an initial value in a declaration is a literal or an integer constant expression (+ - * / MOD, parentheses, integer constants); write the value, or assign it in the body"
                     }
                     "=" | "<" | ">" | "+" | "-" | "*" | "/" | "<>" | "<=" | ">=" => {
                         "IL has no infix operators: use EQ, NE, LT, LE, GT, GE, ADD, SUB, MUL or DIV"
@@ -485,6 +493,10 @@ impl<'s> Layout<'s> {
             RawToken::Arrow => Tok::Arrow,
             RawToken::DotDot => Tok::DotDot,
             RawToken::Dot => Tok::Dot,
+            RawToken::Op(b'+') => Tok::Plus,
+            RawToken::Op(b'-') => Tok::Minus,
+            RawToken::Op(b'*') => Tok::Star,
+            RawToken::Op(_) => Tok::Slash,
             RawToken::Amp => Tok::Amp,
             RawToken::AmpN => Tok::AmpN,
             // Newlines and comments are handled before conversion.
@@ -534,7 +546,27 @@ impl<'s> Layout<'s> {
                 {
                     Tok::Word(Word::Ident)
                 }
-                Some(Ok(raw)) => self.convert(raw, s, e),
+                Some(Ok(RawToken::Op(_)))
+                    if !(self.in_decl() && (self.decl_brackets > 0 || self.decl_init)) =>
+                {
+                    self.report_lex_error(LexError::UnexpectedChar, s, e);
+                    Tok::Error
+                }
+                Some(Ok(raw)) => {
+                    match raw {
+                        RawToken::LBracket if self.in_decl() => self.decl_brackets += 1,
+                        RawToken::RBracket => {
+                            self.decl_brackets = self.decl_brackets.saturating_sub(1)
+                        }
+                        RawToken::Assign if self.in_decl() => self.decl_init = true,
+                        RawToken::Semi => {
+                            self.decl_brackets = 0;
+                            self.decl_init = false;
+                        }
+                        _ => {}
+                    }
+                    self.convert(raw, s, e)
+                }
                 Some(Err(err)) => {
                     self.swallowed |= err == LexError::UnterminatedComment;
                     self.report_lex_error(err, s, e);

@@ -113,6 +113,13 @@ pub enum RawToken {
     /// `.` (field access, `inst.Q`).
     #[token(".")]
     Dot,
+    /// `+ - * /` written alone (a sign before a digit belongs to the number): an operator of a
+    /// constant expression in a declaration (`ARRAY[0..N-1]`); anywhere else the layout reports it.
+    #[token("+", |_| b'+')]
+    #[token("-", |_| b'-')]
+    #[token("*", |_| b'*')]
+    #[token("/", |_| b'/')]
+    Op(u8),
     /// `&`: the short form of `AND`.
     #[token("&")]
     Amp,
@@ -811,6 +818,14 @@ pub enum Tok {
     Semi,
     /// `:=`
     Assign,
+    /// `+` in a bound of a declaration (`ARRAY[0..N + 1]`, `STRING[N+1]`).
+    Plus,
+    /// `-` in a bound of a declaration (`ARRAY[0..N - 1]`).
+    Minus,
+    /// `*` in a bound of a declaration (`ARRAY[1..2*N]`).
+    Star,
+    /// `/` in a bound of a declaration (`ARRAY[0..N/2]`).
+    Slash,
     /// `=>`
     Arrow,
     /// `..`

@@ -135,6 +135,25 @@ pub struct Ctx<'s> {
     pub base: usize,
     /// Syntax problems found by the grammar actions, in order.
     pub diags: Vec<Diagnostic>,
+    /// Integer constants declared so far in the text (`VAR_GLOBAL CONSTANT` / `VAR CONSTANT` with an
+    /// integer literal initial value), by upper-case name: what a bound expression may name.
+    pub consts: std::collections::HashMap<String, i128>,
+    /// The declarations being read are in a `CONSTANT` block (their integer values go to `consts`).
+    pub in_constant_block: bool,
+}
+
+/// An integer constant expression in an array bound or a string length, as parsed (see
+/// [`Ctx::bound`]).
+#[derive(Debug, Clone)]
+pub enum BoundExpr {
+    /// An integer literal, sign applied.
+    Int(i128, Span),
+    /// A named constant.
+    Name(Ident),
+    /// `-e`.
+    Neg(Box<BoundExpr>, Span),
+    /// `a op b`, `op` one of `+ - * /` and `%` for MOD.
+    Bin(u8, Box<BoundExpr>, Box<BoundExpr>),
 }
 
 impl<'s> Ctx<'s> {
@@ -619,6 +638,108 @@ impl<'s> Ctx<'s> {
         parts
     }
 
+    /// `a -1`: a sum followed by a signed literal (`N-1` lexes as `N` and `-1`) is `a + (-1)` when the
+    /// sign is written right there; anything else juxtaposed is E0022.
+    pub fn bound_sum(&mut self, a: BoundExpr, b: BoundExpr, l: usize, r: usize) -> BoundExpr {
+        if !self.text(l, r).starts_with(['+', '-']) {
+            self.hint(
+                code::E0022,
+                "an operator is missing in this constant expression",
+                l,
+                r,
+                "write + - * / or MOD between the operands",
+            );
+        }
+        BoundExpr::Bin(b'+', Box::new(a), Box::new(b))
+    }
+
+    /// Evaluates a bound expression written at `l..r` (checked integer arithmetic; `/` truncates).
+    /// A name that is not an integer constant declared before, a division by zero or an overflow is
+    /// one E0022 (none if a missing operator was already reported there), and `None`.
+    pub fn bound(&mut self, e: BoundExpr, l: usize, r: usize) -> Option<i128> {
+        self.const_expr(e, l, r, true)
+    }
+
+    /// An integer constant expression as an initial value (`c : INT := N * 2;`): its value as an
+    /// integer literal spanning `l..r` (0 after an E0022; the type's range is checked by sema).
+    pub fn init_expr(&mut self, e: BoundExpr, l: usize, r: usize) -> Initializer {
+        let v = self.const_expr(e, l, r, false).unwrap_or(0);
+        Initializer::Value(Operand::literal(Literal {
+            kind: LiteralKind::Int(v),
+            type_prefix: None,
+            span: self.span(l, r),
+        }))
+    }
+
+    /// Evaluates `e` (see [`Ctx::bound`]); `dint`: the value must fit a DINT (a bound, a length),
+    /// else a LINT.
+    fn const_expr(&mut self, e: BoundExpr, l: usize, r: usize, dint: bool) -> Option<i128> {
+        fn eval(
+            e: &BoundExpr,
+            consts: &std::collections::HashMap<String, i128>,
+            depth: u32,
+        ) -> Result<i128, String> {
+            if depth > 64 {
+                return Err("the expression is nested too deeply".into());
+            }
+            match e {
+                BoundExpr::Int(v, _) => Ok(*v),
+                BoundExpr::Name(n) => consts
+                    .get(&n.name.to_ascii_uppercase())
+                    .copied()
+                    .ok_or_else(|| {
+                        format!("`{}` is not an integer constant declared before", n.name)
+                    }),
+                BoundExpr::Neg(a, _) => eval(a, consts, depth + 1)?
+                    .checked_neg()
+                    .ok_or_else(|| "the value overflows".into()),
+                BoundExpr::Bin(op, a, b) => {
+                    let (a, b) = (eval(a, consts, depth + 1)?, eval(b, consts, depth + 1)?);
+                    let v = match op {
+                        b'+' => a.checked_add(b),
+                        b'-' => a.checked_sub(b),
+                        b'*' => a.checked_mul(b),
+                        _ if b == 0 => return Err("division by zero".into()),
+                        b'/' => a.checked_div(b),
+                        _ => a.checked_rem(b),
+                    };
+                    // checked in the widest integer type (LINT); bounds are narrowed by the caller
+                    v.filter(|v| i64::try_from(*v).is_ok())
+                        .ok_or_else(|| "the value overflows".into())
+                }
+            }
+        }
+        let here = self.span(l, r);
+        if self.diags.iter().any(|d| {
+            d.code == code::E0022
+                && d.span
+                    .is_some_and(|s| s.start >= here.start && s.end <= here.end)
+        }) {
+            return None;
+        }
+        let value = eval(&e, &self.consts, 0).and_then(|v| {
+            if dint && i32::try_from(v).is_err() {
+                Err("the value overflows".to_string())
+            } else {
+                Ok(v)
+            }
+        });
+        match value {
+            Ok(v) => Some(v),
+            Err(why) => {
+                let text = self.text(l, r).trim().to_string();
+                self.hint(
+                    code::E0022,
+                    format!("constant expression `{text}`: {why}"),
+                    l,
+                    r,
+                    "use integer literals and integer constants (VAR_GLOBAL CONSTANT or VAR CONSTANT with a literal value, declared before in this file) with + - * / MOD and parentheses",
+                );
+                None
+            }
+        }
+    }
+
     /// Builds a `VAR*` block with its `CONSTANT` / `RETAIN` qualifiers.
     pub fn var_block(
         &mut self,
@@ -628,6 +749,7 @@ impl<'s> Ctx<'s> {
         l: usize,
         r: usize,
     ) -> VarBlock {
+        self.in_constant_block = false;
         VarBlock {
             name: None,
             kind,
@@ -668,6 +790,15 @@ impl<'s> Ctx<'s> {
                 e,
                 "declare each located variable on its own line",
             );
+        }
+        if self.in_constant_block {
+            if let Some(Initializer::Value(Operand::Literal(lit))) = &init {
+                if let LiteralKind::Int(n) = lit.kind {
+                    for name in &names {
+                        self.consts.insert(name.name.to_ascii_uppercase(), n);
+                    }
+                }
+            }
         }
         let span = self.span(l, r);
         names
@@ -1063,6 +1194,8 @@ pub(crate) fn run(
         src,
         base,
         diags: Vec::new(),
+        consts: Default::default(),
+        in_constant_block: false,
     };
     let result = grammar::StartParser::new().parse(&mut ctx, &mut layout);
     let mut all = std::mem::take(&mut layout.diags);
