@@ -272,25 +272,32 @@ fn reference_and_pointer_declarations_are_one_located_e0305_each_without_cascade
 
 // ------------------------------------------------------------------ 5. VAR_CONFIG
 
-#[test]
-fn var_config_locates_placeholders_per_instance_and_sets_initial_values() {
-    // two Lamp instances, each `out AT %Q*`, get %QX0.1 and %QX0.2; the program's `sw AT %I*` is
-    // %IX0.0 (stimulus: 1 from cycle 1, 0 from cycle 3); `n` starts at 5 instead of 0
+/// `ladderc run` of a VAR_CONFIG fixture for 4 cycles with its stimulus, watching the two Lamp outputs,
+/// the program's `sw` and `n`: the trace and standard error (asserts exit 0).
+fn run_var_config(name: &str) -> (String, String) {
     let out = ladderc()
         .args(["--message-format", "short", "run"])
-        .arg(fixture("var_config.st"))
+        .arg(fixture(name))
         .args(["--cycles", "4", "--sanitize", "--trace", "-", "--stimulus"])
         .arg(fixture("var_config.stimulus.csv"))
         .args(["--watch", "inst.n,inst.sw,%QX0.1,%QX0.2"])
         .output()
         .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     assert_eq!(out.status.code(), Some(0), "{stderr}");
-    assert_eq!(
-        String::from_utf8_lossy(&out.stdout),
-        "cycle,time_ms,inst.n,inst.sw,%QX0.1,%QX0.2\n\
-         0,0,6,0,0,1\n1,10,7,1,1,1\n2,20,8,1,1,1\n3,30,9,0,0,1\n"
-    );
+    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+}
+
+/// The trace both VAR_CONFIG fixtures give.
+const VAR_CONFIG_TRACE: &str = "cycle,time_ms,inst.n,inst.sw,%QX0.1,%QX0.2\n\
+     0,0,6,0,0,1\n1,10,7,1,1,1\n2,20,8,1,1,1\n3,30,9,0,0,1\n";
+
+#[test]
+fn var_config_locates_placeholders_per_instance_and_sets_initial_values() {
+    // two Lamp instances, each `out AT %Q*`, get %QX0.1 and %QX0.2; the program's `sw AT %I*` is
+    // %IX0.0 (stimulus: 1 from cycle 1, 0 from cycle 3); `n` starts at 5 instead of 0
+    let (trace, _) = run_var_config("var_config.st");
+    assert_eq!(trace, VAR_CONFIG_TRACE);
 }
 
 #[test]
@@ -370,22 +377,9 @@ fn var_config_applies_to_programs_of_other_files() {
 #[test]
 fn var_config_in_an_il_file_runs() {
     // the IL twin of var_config.st; before, its VAR_CONFIG block was E0019 (skipped)
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .arg(fixture("var_config.il"))
-        .args(["--cycles", "4", "--sanitize", "--trace", "-", "--stimulus"])
-        .arg(fixture("var_config.stimulus.csv"))
-        .args(["--watch", "inst.n,inst.sw,%QX0.1,%QX0.2"])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let (trace, stderr) = run_var_config("var_config.il");
     assert!(!stderr.contains("E0019"), "{stderr}");
-    assert_eq!(
-        String::from_utf8_lossy(&out.stdout),
-        "cycle,time_ms,inst.n,inst.sw,%QX0.1,%QX0.2\n\
-         0,0,6,0,0,1\n1,10,7,1,1,1\n2,20,8,1,1,1\n3,30,9,0,0,1\n"
-    );
+    assert_eq!(trace, VAR_CONFIG_TRACE);
 }
 
 #[test]

@@ -8,7 +8,7 @@
 mod common;
 use common::ladderc;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// `tests/corpus` of the workspace: the folder beside the `Cargo.lock` above this crate.
 fn corpus_dir() -> PathBuf {
@@ -200,22 +200,9 @@ const TRUST: &str = "johannesPettersson80_trust-platform_";
 /// `ladderc run` of several corpus files together for `cycles` cycles of 10 ms, watching `watch`:
 /// the trace.
 fn runs_together(names: &[&str], cycles: u32, watch: &str) -> String {
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .args(names.iter().map(|n| file(n)))
-        .args([
-            "--cycles",
-            &cycles.to_string(),
-            "--sanitize",
-            "--trace",
-            "-",
-        ])
-        .args(["--watch", watch])
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{names:?}: {err}");
-    String::from_utf8_lossy(&out.stdout).into_owned()
+    let paths: Vec<_> = names.iter().map(|n| file(n)).collect();
+    let refs: Vec<&Path> = paths.iter().map(|p| p.as_ref()).collect();
+    common::run_traced_files(&refs, cycles, watch).0
 }
 
 #[test]

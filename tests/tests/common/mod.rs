@@ -170,9 +170,14 @@ pub fn column(trace: &str, name: &str) -> Vec<f64> {
 /// `ladderc run FILE --cycles N --sanitize --watch WATCH --trace -`: the trace (standard output)
 /// and standard error; asserts exit 0.
 pub fn run_traced(file: &Path, cycles: u32, watch: &str) -> (String, String) {
+    run_traced_files(&[file], cycles, watch)
+}
+
+/// [`run_traced`] of several files compiled together (a project split over files).
+pub fn run_traced_files(files: &[&Path], cycles: u32, watch: &str) -> (String, String) {
     let out = ladderc()
         .args(["--message-format", "short", "run"])
-        .arg(file)
+        .args(files)
         .args([
             "--cycles",
             &cycles.to_string(),
@@ -184,7 +189,7 @@ pub fn run_traced(file: &Path, cycles: u32, watch: &str) -> (String, String) {
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(out.status.code(), Some(0), "{files:?}: {stderr}");
     assert!(!stderr.contains("Sanitizer"), "{stderr}");
     (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
 }
