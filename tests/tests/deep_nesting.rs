@@ -90,6 +90,44 @@ fn array_types_nested_100000_deep_are_e0211() {
 }
 
 #[test]
+fn constant_expressions_of_400000_terms_or_levels_are_one_e0022() {
+    // a bound and an initial value as long or as deep as the user writes them: evaluated with a depth
+    // cap, and the parsed expression is dropped without recursion (the derived drop overflowed
+    // from about 200,000; hence four times LEVELS here)
+    let terms = 4 * LEVELS;
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (
+            "sum.st",
+            format!(
+                "PROGRAM p\nVAR a : ARRAY[0..{}] OF INT; END_VAR\na[0] := 1;\nEND_PROGRAM\n",
+                vec!["1"; terms].join("+")
+            ),
+        ),
+        (
+            "neg.st",
+            format!(
+                "PROGRAM p\nVAR a : ARRAY[0..{}1{}] OF INT; END_VAR\na[0] := 1;\nEND_PROGRAM\n",
+                "-(".repeat(terms),
+                ")".repeat(terms)
+            ),
+        ),
+        (
+            "init.il",
+            format!(
+                "PROGRAM p\nVAR c : LINT := {}; END_VAR\n  LD c\n  ST c\nEND_PROGRAM\n",
+                vec!["1"; terms].join("+")
+            ),
+        ),
+    ];
+    for (name, src) in cases {
+        write(dir.path(), name, &src);
+        let (out, err) = check(dir.path(), &[name]);
+        assert_capped(&out, &err, name, "E0022");
+    }
+}
+
+#[test]
 fn array_types_at_the_cap_are_accepted() {
     let dir = tempfile::tempdir().unwrap();
     let src = format!(

@@ -144,7 +144,7 @@ pub struct Ctx<'s> {
 
 /// An integer constant expression in an array bound or a string length, as parsed (see
 /// [`Ctx::bound`]).
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub enum BoundExpr {
     /// An integer literal, sign applied.
     Int(i128, Span),
@@ -154,6 +154,29 @@ pub enum BoundExpr {
     Neg(Box<BoundExpr>, Span),
     /// `a op b`, `op` one of `+ - * /` and `%` for MOD.
     Bin(u8, Box<BoundExpr>, Box<BoundExpr>),
+}
+
+/// A bound expression is as deep as the user wrote it (`1+1+...`, `-(-(...))`): it is dropped with an
+/// explicit stack, never by recursion (200,000 terms overflowed the stack in the derived drop).
+impl Drop for BoundExpr {
+    fn drop(&mut self) {
+        fn take_children(e: &mut BoundExpr, stack: &mut Vec<BoundExpr>) {
+            let leaf = || BoundExpr::Int(0, Span::default());
+            match e {
+                BoundExpr::Neg(a, _) => stack.push(std::mem::replace(&mut **a, leaf())),
+                BoundExpr::Bin(_, a, b) => {
+                    stack.push(std::mem::replace(&mut **a, leaf()));
+                    stack.push(std::mem::replace(&mut **b, leaf()));
+                }
+                BoundExpr::Int(..) | BoundExpr::Name(_) => {}
+            }
+        }
+        let mut stack = Vec::new();
+        take_children(self, &mut stack);
+        while let Some(mut e) = stack.pop() {
+            take_children(&mut e, &mut stack);
+        }
+    }
 }
 
 impl<'s> Ctx<'s> {
