@@ -93,7 +93,8 @@ fn current_hash(path: &Path) -> Option<Option<String>> {
 /// [`current_hash`], given the contents about to replace the file and their hash: a file that holds
 /// exactly those bytes (the usual rebuild) has that hash, found by comparing instead of hashing again.
 /// The file is read in 64 KiB pieces, never whole (a rebuild of a 43 MB `program.c` allocated and
-/// faulted in 43 MB more for the check).
+/// faulted in 43 MB more for the check), and hashed only from where it differs from the contents (the
+/// equal part before that is hashed from the contents).
 fn current_hash_known(path: &Path, known: Option<(&[u8], &str)>) -> Option<Option<String>> {
     use std::io::Read as _;
     let meta = std::fs::symlink_metadata(path).ok()?;
@@ -103,10 +104,14 @@ fn current_hash_known(path: &Path, known: Option<(&[u8], &str)>) -> Option<Optio
     let Ok(mut file) = std::fs::File::open(path) else {
         return Some(None);
     };
+    let contents = known.map_or(&[][..], |k| k.0);
     let mut buf = vec![0u8; 64 * 1024];
-    let mut hasher = Sha256::new();
-    // While `same` is `Some(n)`, the first `n` bytes read equal the known contents' first `n`.
-    let mut same = known.map(|_| 0usize);
+    // `Err(n)`: the first `n` bytes read equal `contents[..n]`, nothing hashed yet; `Ok(h)`: the
+    // file differs (or there is nothing to compare with) and `h` has hashed all bytes read.
+    let mut state: Result<Sha256, usize> = match known {
+        Some(_) => Err(0),
+        None => Ok(Sha256::new()),
+    };
     loop {
         let n = match file.read(&mut buf) {
             Ok(0) => break,
@@ -115,17 +120,25 @@ fn current_hash_known(path: &Path, known: Option<(&[u8], &str)>) -> Option<Optio
             Err(_) => return Some(None),
         };
         let piece = &buf[..n];
-        hasher.update(piece);
-        if let (Some(done), Some((contents, _))) = (same, known) {
-            same = (contents.get(done..done + n) == Some(piece)).then_some(done + n);
-        }
+        state = match state {
+            Err(done) if contents.get(done..done + n) == Some(piece) => Err(done + n),
+            Err(done) => {
+                let mut h = Sha256::new();
+                h.update(&contents[..done]);
+                h.update(piece);
+                Ok(h)
+            }
+            Ok(mut h) => {
+                h.update(piece);
+                Ok(h)
+            }
+        };
     }
-    if let (Some(done), Some((contents, hash))) = (same, known) {
-        if done == contents.len() {
-            return Some(Some(hash.to_string()));
-        }
-    }
-    Some(Some(hex(&hasher.finalize())))
+    Some(Some(match (state, known) {
+        (Err(done), Some((_, hash))) if done == contents.len() => hash.to_string(),
+        (Err(done), _) => sha256_hex(&contents[..done]),
+        (Ok(h), _) => hex(&h.finalize()),
+    }))
 }
 
 fn hex(digest: &[u8]) -> String {
