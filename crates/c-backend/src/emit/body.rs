@@ -362,27 +362,27 @@ impl<'a> Gen<'a> {
         let span = i.span;
         match op {
             Op::Ld => {
-                let (Some(ty), Some(o)) = (info.cr_after.clone(), operand) else {
+                let (Some(ty), Some(o)) = (info.cr_after.as_ref(), operand) else {
                     return;
                 };
-                let Some(cr) = self.cr(b, &ty, span) else {
+                let Some(cr) = self.cr(b, ty, span) else {
                     return;
                 };
-                let Some(v) = self.value(b.scope, o, &ty) else {
+                let Some(v) = self.value(b.scope, o, ty) else {
                     return;
                 };
                 if let Type::Array { .. } = ty {
                     b.line(&format!("memcpy({cr}, {v}, sizeof {cr});"));
                     return;
                 }
-                let v = if negate { negated(&v, &ty) } else { v };
+                let v = if negate { negated(&v, ty) } else { v };
                 b.line_parts(&[&cr, " = ", &v, ";"]);
             }
             Op::St => {
-                let (Some(ty), Some(o)) = (info.cr_before.clone(), operand) else {
+                let (Some(ty), Some(o)) = (info.cr_before.as_ref(), operand) else {
                     return;
                 };
-                let Some(cr) = self.cr(b, &ty, span) else {
+                let Some(cr) = self.cr(b, ty, span) else {
                     return;
                 };
                 let Some(place) = self.operand_place(b.scope, o) else {
@@ -393,9 +393,9 @@ impl<'a> Gen<'a> {
                     return;
                 }
                 let v = if negate {
-                    convert_owned(negated(&cr, &ty), &ty, place.ty())
+                    convert_owned(negated(&cr, ty), ty, place.ty())
                 } else {
-                    convert(&cr, &ty, place.ty())
+                    convert(&cr, ty, place.ty())
                 };
                 self.store_line(b, &place, &v);
             }
@@ -422,35 +422,35 @@ impl<'a> Gen<'a> {
                 b.line_parts(&["if (", &cr, ") { ", &stmt, " }"]);
             }
             Op::Not => {
-                let Some(ty) = info.cr_before.clone() else {
+                let Some(ty) = info.cr_before.as_ref() else {
                     return;
                 };
-                let Some(cr) = self.cr(b, &ty, span) else {
+                let Some(cr) = self.cr(b, ty, span) else {
                     return;
                 };
-                let v = negated(&cr, &ty);
+                let v = negated(&cr, ty);
                 b.line_parts(&[&cr, " = ", &v, ";"]);
             }
             _ => {
                 let (Some(before), Some(after), Some(o)) =
-                    (info.cr_before.clone(), info.cr_after.clone(), operand)
+                    (info.cr_before.as_ref(), info.cr_after.as_ref(), operand)
                 else {
                     return;
                 };
-                let common = std_common_type(info, &before);
-                let Some(a) = self.cr(b, &before, span) else {
+                let common = std_common_type(info, before);
+                let Some(a) = self.cr(b, before, span) else {
                     return;
                 };
-                let a = convert(&a, &before, &common);
-                let operand_ty = self.operand_ty_for(info, &common, op);
-                let Some(v) = self.value(b.scope, o, &operand_ty) else {
+                let a = convert(&a, before, common);
+                let operand_ty = self.operand_ty_for(info, common, op);
+                let Some(v) = self.value(b.scope, o, operand_ty) else {
                     return;
                 };
-                let v = if negate { negated(&v, &operand_ty) } else { v };
-                let Some(res) = self.binary(span, op, &a, &common, &v, &operand_ty, &after) else {
+                let v = if negate { negated(&v, operand_ty) } else { v };
+                let Some(res) = self.binary(span, op, &a, common, &v, operand_ty, after) else {
                     return;
                 };
-                let Some(cr) = self.cr(b, &after, span) else {
+                let Some(cr) = self.cr(b, after, span) else {
                     return;
                 };
                 b.line_parts(&[&cr, " = ", &res, ";"]);
@@ -460,21 +460,21 @@ impl<'a> Gen<'a> {
 
     /// The type to read an operator's operand as: the instantiated generic type, except for the
     /// time overloads (`MUL_TIME` by a number) where the operand keeps its own numeric type.
-    fn operand_ty_for(&self, info: &InstrFacts, common: &Type, op: Op) -> Type {
+    fn operand_ty_for<'t>(&self, info: &'t InstrFacts, common: &'t Type, op: Op) -> &'t Type {
         if let Some(t) = &info.operand {
             if matches!(op, Op::Mul | Op::Div)
                 && common.elementary().is_some_and(|e| e.is_duration())
             {
-                return t.clone();
+                return t;
             }
             if common.is_error() {
-                return t.clone();
+                return t;
             }
             if matches!(op, Op::Sub | Op::Add) && t.elementary().is_some_and(|e| e.is_duration()) {
-                return t.clone();
+                return t;
             }
         }
-        common.clone()
+        common
     }
 
     /// The place an operand denotes (variables and direct addresses).
@@ -752,10 +752,10 @@ impl<'a> Gen<'a> {
                     None => Some(convert(&v, &vt, &after)),
                     Some(before) => {
                         let common = std_common_type(&d.info, before);
-                        let a = convert(&d.saved, before, &common);
-                        let vty = self.operand_ty_for(&d.info, &common, d.op);
-                        let v = convert(&v, &vt, &vty);
-                        self.binary(span, d.op, &a, &common, &v, &vty, &after)
+                        let a = convert(&d.saved, before, common);
+                        let vty = self.operand_ty_for(&d.info, common, d.op);
+                        let v = convert(&v, &vt, vty);
+                        self.binary(span, d.op, &a, common, &v, vty, &after)
                     }
                 };
                 if let (Some(res), Some(cr)) = (res, self.cr(b, &after, span)) {
@@ -774,10 +774,10 @@ fn fb_input_name(op: FbInputOp) -> &'static str {
 }
 
 /// The instantiated type of an operator from the model (falls back to the CR type).
-fn std_common_type(info: &InstrFacts, before: &Type) -> Type {
+fn std_common_type<'t>(info: &'t InstrFacts, before: &'t Type) -> &'t Type {
     match &info.callee {
-        Some(Callee::Std { ty, .. }) if !ty.is_error() => ty.clone(),
-        _ => before.clone(),
+        Some(Callee::Std { ty, .. }) if !ty.is_error() => ty,
+        _ => before,
     }
 }
 
