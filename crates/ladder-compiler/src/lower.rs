@@ -34,6 +34,7 @@ use il_frontend::ast::{
     Instruction, Literal, LiteralKind, Op, Operand, PouKind, TypeDef, TypeRef, VarDecl, VarKind,
     VarRef,
 };
+use il_frontend::st::{self, PouLowering};
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
 use std::collections::{BTreeMap, BinaryHeap};
@@ -128,6 +129,13 @@ pub struct BodyLowering<'i> {
     hidden_names: HashSet<String>,
     /// Type key -> (type, highest count used by one network).
     pools: BTreeMap<String, (TypeRef, usize)>,
+    /// The POU, for the ST lowering of expressions written in contacts and input variables.
+    pou_ast: &'i il_frontend::ast::Pou,
+    /// That lowering, made at the first such expression.
+    st: Option<PouLowering<'i>>,
+    /// Node (of the graph being lowered) -> the hidden variable holding its expression's value
+    /// (`None`: the expression was reported).
+    exprs: HashMap<usize, Option<Operand>>,
 }
 
 impl<'i> BodyLowering<'i> {
@@ -162,6 +170,9 @@ impl<'i> BodyLowering<'i> {
             hidden: Vec::new(),
             hidden_names: HashSet::default(),
             pools: BTreeMap::new(),
+            pou_ast: pou,
+            st: None,
+            exprs: HashMap::default(),
         }
     }
 
@@ -169,12 +180,14 @@ impl<'i> BodyLowering<'i> {
     pub fn lower(&mut self, ctx: &mut Ctx, g: &Graph) -> Vec<IlStmt> {
         self.check_jumps(ctx, g);
         self.check_double_writes(ctx, g);
+        let mut pre = self.expressions(ctx, g);
         let mut out = Vec::new();
         // One network state for the whole body: cleared per network, its lists keep their room.
         let mut nl = NetLowering::new(self, g, 0);
         for (n, net) in g.networks.iter().enumerate() {
             nl.reset(n + 1);
             if let Some(order) = nl.order(ctx, net) {
+                let start = out.len();
                 nl.build(ctx, &order);
                 if let Some(span) = nl.too_deep {
                     ctx.report(
@@ -199,9 +212,107 @@ impl<'i> BodyLowering<'i> {
                     continue;
                 }
                 nl.emit(&mut out);
+                // the expressions of the network's contacts and input variables, evaluated first
+                // (after the network's labels, so a jump there evaluates them too)
+                let code = std::mem::take(&mut pre[n]);
+                if !code.is_empty() {
+                    let at = start
+                        + out[start..]
+                            .iter()
+                            .take_while(|s| matches!(s, IlStmt::Label(_)))
+                            .count();
+                    out.splice(at..at, code);
+                }
             }
         }
         out
+    }
+
+    /// The ST expressions written where a variable is read (a contact's `<variable>`, an input
+    /// variable's `<expression>`: `NOT Stop`, `A AND C`, `T1 > T#7s OR T1 > T#8s`, as TwinCAT and
+    /// CODESYS export them): each is lowered by the ST front end into a hidden `__expr_<localId>`
+    /// the node then reads, computed at the start of its network (the code per network is returned).
+    /// Text that is neither an operand nor an ST expression is left to [`NetLowering::parse_var`]
+    /// (E3011).
+    fn expressions(&mut self, ctx: &mut Ctx, g: &Graph) -> Vec<Vec<IlStmt>> {
+        self.exprs.clear();
+        let mut pre = vec![Vec::new(); g.networks.len()];
+        for (n, net) in g.networks.iter().enumerate() {
+            for &i in net {
+                let node = &g.nodes[i];
+                let (text, span, contact) = match &node.kind {
+                    Kind::Contact { var, var_span, .. } => (var, *var_span, true),
+                    Kind::InVar {
+                        expr, expr_span, ..
+                    } => (expr, *expr_span, false),
+                    _ => continue,
+                };
+                if text.trim().is_empty() || values::operand(text, span).is_some() {
+                    continue;
+                }
+                let mut local = diagnostics::Diagnostics::new();
+                let Some(e) = st::parse_expression(ctx.file, text, span.start as usize, &mut local)
+                else {
+                    continue; // not ST either: E3011 when the node is built
+                };
+                if local.has_errors() {
+                    continue;
+                }
+                let decls = crate::st_body::declarations(self.index);
+                let pou_ast = self.pou_ast;
+                let low = self
+                    .st
+                    .get_or_insert_with(|| PouLowering::new(decls, pou_ast).with_prefix("_STX_"));
+                let ty = if contact {
+                    Some(bool_ty(span))
+                } else {
+                    low.expression_type(&e)
+                };
+                let mut code = if contact {
+                    low.condition(&e, &mut local)
+                } else {
+                    low.expression(&e, &mut local)
+                };
+                let at = Where {
+                    pou: self.pou.clone(),
+                    network: Some(n + 1),
+                    local_id: Some(node.id.clone()),
+                };
+                let failed = local.has_errors();
+                for d in local {
+                    let d = if d.xml.is_none() {
+                        d.with_xml(at.xml())
+                    } else {
+                        d
+                    };
+                    ctx.report(d);
+                }
+                let Some(ty) = ty.filter(|_| !failed) else {
+                    if !failed {
+                        ctx.report(
+                            Diagnostic::error(
+                                code::E3011,
+                                format!("the type of `{}` cannot be told", text.trim()),
+                            )
+                            .at(span)
+                            .with_hint("write a variable here, or convert the expression to a type (`INT_TO_REAL(...)`)")
+                            .with_xml(at.xml()),
+                        );
+                    }
+                    self.exprs.insert(i, None);
+                    continue;
+                };
+                let name = format!("__expr_{}", sanitize(&node.id));
+                self.declare_hidden(&name, ty, self.body_span);
+                let Some(var) = values::var_ref(&name, span) else {
+                    continue;
+                };
+                code.push(simple(Op::St, false, Some(Operand::Var(var.clone())), span));
+                pre[n].extend(code);
+                self.exprs.insert(i, Some(Operand::Var(var)));
+            }
+        }
+        pre
     }
 
     /// W3400 when one variable (or %Q address) is assigned by plain coils or output variables of two
@@ -308,6 +419,10 @@ impl<'i> BodyLowering<'i> {
     /// The hidden declarations (edge detectors first, then temporaries by type).
     pub fn hidden_vars(mut self) -> Vec<VarDecl> {
         let span = self.body_span;
+        // the temporaries of the ST expressions (`_STX_T<n>`)
+        if let Some(b) = self.st.take().and_then(|low| low.finish(span)) {
+            self.hidden.extend(b.vars);
+        }
         for (key, (ty, count)) in std::mem::take(&mut self.pools) {
             for i in 0..count {
                 self.hidden.push(VarDecl {
@@ -926,6 +1041,9 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     }
 
     fn parse_var(&mut self, ctx: &mut Ctx, node: usize, text: &str, span: Span) -> Option<Operand> {
+        if let Some(op) = self.pou.exprs.get(&node) {
+            return op.clone();
+        }
         match values::operand(text, span) {
             Some(op) => Some(op),
             None => {
@@ -1454,7 +1572,14 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 en = Some(v);
                 continue;
             }
-            match Self::pin_type(&bt, &pin.name, pin.span) {
+            // CODESYS/TwinCAT `RS.SET` is IEC `RS.S` (a user block of that name keeps its pins)
+            let pin_name: &str = match &bt {
+                BlockType::StdFb(_) => {
+                    catalogue::vendor_pin_alias(type_name, &pin.name).unwrap_or(&pin.name)
+                }
+                _ => &pin.name,
+            };
+            match Self::pin_type(&bt, pin_name, pin.span) {
                 None => {
                     let d = self.diag(
                         ctx,
@@ -1515,7 +1640,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 }
                 Some(None) => {}
             }
-            args.push((Ident::new(&pin.name, pin.span), v));
+            args.push((Ident::new(pin_name, pin.span), v));
         }
         let eno = match en {
             Some(e) => e,
