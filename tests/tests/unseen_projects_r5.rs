@@ -233,3 +233,55 @@ fn a_program_variable_read_from_a_function_block_says_why_it_is_rejected() {
         "{lines:?}"
     );
 }
+
+/// `JarrodFranz/soft-plc-simulator`'s FBD fixture wires two undeclared names into an AND block.
+/// Before, the one error was E3017 "cannot tell the result type of AND: no input has a known type",
+/// which hid the cause; now each undeclared input is E1001 at its name.
+#[test]
+fn undeclared_inputs_of_a_generic_block_are_named() {
+    let (code, lines) = check_text(
+        "pins.xml",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\n\
+         <contentHeader name=\"p\"/><types><dataTypes/><pous>\n\
+         <pou name=\"FbdPins\" pouType=\"program\"><interface><localVars><variable name=\"Q\"><type><BOOL/></type></variable></localVars></interface><body><FBD>\n\
+         <inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><expression>A</expression><connectionPointOut/></inVariable>\n\
+         <inVariable localId=\"2\"><position x=\"0\" y=\"0\"/><expression>B</expression><connectionPointOut/></inVariable>\n\
+         <block localId=\"3\" typeName=\"AND\"><position x=\"0\" y=\"0\"/><inputVariables>\
+         <variable formalParameter=\"IN1\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn></variable>\
+         <variable formalParameter=\"IN2\"><connectionPointIn><connection refLocalId=\"2\"/></connectionPointIn></variable>\
+         </inputVariables><outputVariables><variable formalParameter=\"OUT\"><connectionPointOut/></variable></outputVariables></block>\n\
+         <outVariable localId=\"4\"><position x=\"0\" y=\"0\"/><expression>Q</expression><connectionPointIn><connection refLocalId=\"3\" formalParameter=\"OUT\"/></connectionPointIn></outVariable>\n\
+         </FBD></body></pou></pous></types><instances><configurations/></instances></project>\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        [
+            "pins.xml:5:60: error[E1001]: undeclared name `A` [POU `FbdPins`, network 1, localId 3] (hint: declare `A` in a VAR block of `FbdPins` (or VAR_EXTERNAL for a global))",
+            "pins.xml:6:60: error[E1001]: undeclared name `B` [POU `FbdPins`, network 1, localId 3] (hint: declare `B` in a VAR block of `FbdPins` (or VAR_EXTERNAL for a global))",
+        ]
+    );
+}
+
+/// The TwinCAT OOP course exports (`runtimevic/OOP-IEC61131-3--Curso-Youtube`) declare
+/// `<derived name="REFERENCE TO Vehiculo"/>`. References are not compiled; before, the message was
+/// E3013 "<derived> type without a valid `name`", now it is E3012 naming the reference, as for
+/// `<pointer>`.
+#[test]
+fn a_reference_written_as_a_derived_type_says_it_is_a_reference() {
+    let (code, lines) = check_text(
+        "ref.xml",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n\
+         <contentHeader name=\"p\"/><types><dataTypes/><pous>\n\
+         <pou name=\"Conductor\" pouType=\"functionBlock\"><interface><inputVars><variable name=\"vehiculo\"><type>\n\
+         <derived name=\"REFERENCE TO Vehiculo\" /></type></variable></inputVars></interface>\
+         <body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">;</xhtml></ST></body></pou>\n\
+         </pous></types><instances><configurations/></instances></project>\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("ref.xml:5:16: error[E3012]: type `REFERENCE TO Vehiculo` is not supported here: references and pointers are not compiled"),
+        "{lines:?}"
+    );
+}

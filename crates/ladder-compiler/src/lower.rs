@@ -1772,6 +1772,36 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     return;
                 }
                 let Some(result_ty) = result_ty else {
+                    // inputs that are undeclared names: that is the error, not the type
+                    let mut undeclared = false;
+                    for (_, v) in &args {
+                        if let Val::Leaf {
+                            op: Operand::Var(r),
+                            ..
+                        } = &self.vals[*v]
+                        {
+                            if self.pou.var_type(r).is_none() {
+                                undeclared = true;
+                                let d = self
+                                    .diag(
+                                        ctx,
+                                        code::E1001,
+                                        i,
+                                        r.base.span,
+                                        format!("undeclared name `{}`", r.base.name),
+                                    )
+                                    .with_hint(format!(
+                                        "declare `{}` in a VAR block of `{}` (or VAR_EXTERNAL for a global)",
+                                        r.base.name, self.pou.pou
+                                    ));
+                                ctx.report(d);
+                            }
+                        }
+                    }
+                    if undeclared {
+                        self.poisoned.insert(i);
+                        return;
+                    }
                     let d = self.diag(
                         ctx,
                         code::E3017,
