@@ -7,13 +7,16 @@
 //! - ST expressions where LD/FBD/SFC read a variable (a contact's `<variable>`, an input variable's
 //!   `<expression>`: `A AND C`, `NOT EmergencyStop`, `n * 2 + 1`), as TwinCAT and CODESYS export
 //!   them; before, each was E3011 "not a variable, direct address or literal";
+//! - CODESYS EXECUTE boxes (ST statements in an LD/FBD block's vendor data; before, E3007);
 //! - CODESYS/TwinCAT pin names of the bistables (`RS.SET`, `RS.RESET1`, `SR.SET1`, `SR.RESET`);
 //! - an internal variable of an FB instance read or written from outside (W1412, as CODESYS and
 //!   TwinCAT do; before, E1021);
 //! - one E1001 per use of an undeclared name (a FOR loop reported its variable four times at one
 //!   place);
 //! - `AT %Q*` on a non-BOOL variable (before, E1027 "`%QX*` is a single bit");
-//! - `PROGRAM.var` from another POU (CODESYS/TwinCAT): still E1001, with a hint that says why.
+//! - `PROGRAM.var` from another POU (CODESYS/TwinCAT): still E1001, with a hint that says why;
+//! - undeclared inputs of a generic block (before, E3017), `REFERENCE TO` as a derived type name
+//!   (before, E3013).
 
 mod common;
 use common::{check_text, run_traced, run_with_stimulus};
@@ -282,6 +285,47 @@ fn a_reference_written_as_a_derived_type_says_it_is_a_reference() {
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
         lines[0].starts_with("ref.xml:5:16: error[E3012]: type `REFERENCE TO Vehiculo` is not supported here: references and pointers are not compiled"),
+        "{lines:?}"
+    );
+}
+
+/// CODESYS's EXECUTE box (the clone-detection LD/FBD evolution sets and the PPU's FBD/LD scenarios):
+/// a block whose vendor data holds ST statements (`<STCode>`), run where the box sits when its EN
+/// is TRUE (always without EN), ENO following EN. Before, each box was E3007 "unknown block type
+/// `EXECUTE`". An error in the code is the ST front end's, located at the box.
+#[test]
+fn a_codesys_execute_box_runs_its_st_code() {
+    let trace = run_with_stimulus(
+        &fixture("codesys_execute.xml"),
+        8,
+        "1,PLC_PRG.run,TRUE\n6,PLC_PRG.run,FALSE\n",
+        &[
+            "PLC_PRG.run",
+            "PLC_PRG.count",
+            "PLC_PRG.wraps",
+            "PLC_PRG.ran",
+            "PLC_PRG.always",
+        ],
+    );
+    // count wraps at 3 while run is TRUE (the `&gt;=` of the XML is `>=`), frozen after;
+    // the box without EN runs every cycle
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.run,PLC_PRG.count,PLC_PRG.wraps,PLC_PRG.ran,PLC_PRG.always\n\
+         0,0,0,0,0,0,10\n1,10,1,1,0,1,20\n2,20,1,2,0,1,30\n3,30,1,0,1,1,40\n\
+         4,40,1,1,1,1,50\n5,50,1,2,1,1,60\n6,60,0,2,1,0,70\n7,70,0,2,1,0,80\n"
+    );
+    let src = std::fs::read_to_string(fixture("codesys_execute.xml")).unwrap();
+    let (code, lines) = check_text(
+        "bad.xml",
+        &src.replace("wraps := wraps + 1;", "wraps := nope + 1;"),
+    );
+    assert_eq!(code, Some(1));
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0]
+            .starts_with("bad.xml:35:12: error[E1001]: undeclared name `nope` [POU `PLC_PRG`, network 1, localId 2]"),
         "{lines:?}"
     );
 }

@@ -19,6 +19,9 @@
 //! `__trig_<localId>` edge detectors, `__tmp_<TYPE>_<n>` temporaries (reused from network to network),
 //! `__out_<localId>` results of functions called under EN, `__skip_<localId>` EN labels.
 //!
+//! ST written inside the body (expressions in contacts and input variables, CODESYS EXECUTE boxes)
+//! is lowered by the child module `lower_st` (`lower_st.rs`).
+//!
 //! Invariants: every emitted instruction carries the span of the XML element it comes from; a network
 //! that cannot be lowered is reported (with POU, network and localId) and skipped, the others are still
 //! lowered.
@@ -34,10 +37,13 @@ use il_frontend::ast::{
     Instruction, Literal, LiteralKind, Op, Operand, PouKind, TypeDef, TypeRef, VarDecl, VarKind,
     VarRef,
 };
-use il_frontend::st::{self, PouLowering};
+use il_frontend::st::PouLowering;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
 use std::collections::{BTreeMap, BinaryHeap};
+
+#[path = "lower_st.rs"]
+mod lower_st;
 
 type ValId = usize;
 
@@ -103,6 +109,13 @@ enum Action {
         args: Vec<(Ident, ValId)>,
         en: Option<ValId>,
         result: Operand,
+        skip_label: String,
+        span: Span,
+    },
+    /// The ST code of a CODESYS EXECUTE box, already IL: run when `en` is TRUE.
+    Execute {
+        code: Vec<IlStmt>,
+        en: Option<ValId>,
         skip_label: String,
         span: Span,
     },
@@ -226,93 +239,6 @@ impl<'i> BodyLowering<'i> {
             }
         }
         out
-    }
-
-    /// The ST expressions written where a variable is read (a contact's `<variable>`, an input
-    /// variable's `<expression>`: `NOT Stop`, `A AND C`, `T1 > T#7s OR T1 > T#8s`, as TwinCAT and
-    /// CODESYS export them): each is lowered by the ST front end into a hidden `__expr_<localId>`
-    /// the node then reads, computed at the start of its network (the code per network is returned).
-    /// Text that is neither an operand nor an ST expression is left to [`NetLowering::parse_var`]
-    /// (E3011).
-    fn expressions(&mut self, ctx: &mut Ctx, g: &Graph) -> Vec<Vec<IlStmt>> {
-        self.exprs.clear();
-        let mut pre = vec![Vec::new(); g.networks.len()];
-        for (n, net) in g.networks.iter().enumerate() {
-            for &i in net {
-                let node = &g.nodes[i];
-                let (text, span, contact) = match &node.kind {
-                    Kind::Contact { var, var_span, .. } => (var, *var_span, true),
-                    Kind::InVar {
-                        expr, expr_span, ..
-                    } => (expr, *expr_span, false),
-                    _ => continue,
-                };
-                if text.trim().is_empty() || values::operand(text, span).is_some() {
-                    continue;
-                }
-                let mut local = diagnostics::Diagnostics::new();
-                let Some(e) = st::parse_expression(ctx.file, text, span.start as usize, &mut local)
-                else {
-                    continue; // not ST either: E3011 when the node is built
-                };
-                if local.has_errors() {
-                    continue;
-                }
-                let decls = crate::st_body::declarations(self.index);
-                let pou_ast = self.pou_ast;
-                let low = self
-                    .st
-                    .get_or_insert_with(|| PouLowering::new(decls, pou_ast).with_prefix("_STX_"));
-                let ty = if contact {
-                    Some(bool_ty(span))
-                } else {
-                    low.expression_type(&e)
-                };
-                let mut code = if contact {
-                    low.condition(&e, &mut local)
-                } else {
-                    low.expression(&e, &mut local)
-                };
-                let at = Where {
-                    pou: self.pou.clone(),
-                    network: Some(n + 1),
-                    local_id: Some(node.id.clone()),
-                };
-                let failed = local.has_errors();
-                for d in local {
-                    let d = if d.xml.is_none() {
-                        d.with_xml(at.xml())
-                    } else {
-                        d
-                    };
-                    ctx.report(d);
-                }
-                let Some(ty) = ty.filter(|_| !failed) else {
-                    if !failed {
-                        ctx.report(
-                            Diagnostic::error(
-                                code::E3011,
-                                format!("the type of `{}` cannot be told", text.trim()),
-                            )
-                            .at(span)
-                            .with_hint("write a variable here, or convert the expression to a type (`INT_TO_REAL(...)`)")
-                            .with_xml(at.xml()),
-                        );
-                    }
-                    self.exprs.insert(i, None);
-                    continue;
-                };
-                let name = format!("__expr_{}", sanitize(&node.id));
-                self.declare_hidden(&name, ty, self.body_span);
-                let Some(var) = values::var_ref(&name, span) else {
-                    continue;
-                };
-                code.push(simple(Op::St, false, Some(Operand::Var(var.clone())), span));
-                pre[n].extend(code);
-                self.exprs.insert(i, Some(Operand::Var(var)));
-            }
-        }
-        pre
     }
 
     /// W3400 when one variable (or %Q address) is assigned by plain coils or output variables of two
@@ -1495,10 +1421,15 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             instance,
             inputs,
             outputs,
+            code,
         } = &node.kind
         else {
             return;
         };
+        if let Some(code) = code {
+            self.build_execute(ctx, i, code, inputs, outputs);
+            return;
+        }
         if type_name.is_empty() {
             let d = self.diag(ctx, code::E3013, i, span, "block without a typeName".into());
             ctx.report(d);
@@ -1969,6 +1900,11 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                         add(&mut uses, *e);
                     }
                 }
+                Action::Execute { en, .. } => {
+                    if let Some(e) = en {
+                        add(&mut uses, *e);
+                    }
+                }
                 Action::Label(_) => {}
             }
         }
@@ -2220,6 +2156,28 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     }
                     emit_function(name, form, ops, *span, out);
                     out.push(simple(Op::St, false, Some(result.clone()), *span));
+                    if en.is_some() {
+                        out.push(IlStmt::Label(Ident::new(skip_label, *span)));
+                    }
+                }
+                Action::Execute {
+                    code,
+                    en,
+                    skip_label,
+                    span,
+                } => {
+                    if let Some(e) = en {
+                        self.prepare(*e, out);
+                        self.eval(*e, out);
+                        out.push(instr(
+                            InstrKind::Jump {
+                                cond: Condition::IfFalse,
+                                label: Ident::new(skip_label, *span),
+                            },
+                            *span,
+                        ));
+                    }
+                    out.extend(code.iter().cloned());
                     if en.is_some() {
                         out.push(IlStmt::Label(Ident::new(skip_label, *span)));
                     }
