@@ -8,6 +8,7 @@
 //!   `<expression>`: `A AND C`, `NOT EmergencyStop`, `n * 2 + 1`), as TwinCAT and CODESYS export
 //!   them; before, each was E3011 "not a variable, direct address or literal";
 //! - CODESYS EXECUTE boxes (ST statements in an LD/FBD block's vendor data; before, E3007);
+//! - the power flow out of an LD box wired without an output name (before, E3018);
 //! - CODESYS/TwinCAT pin names of the bistables (`RS.SET`, `RS.RESET1`, `SR.SET1`, `SR.RESET`);
 //! - an internal variable of an FB instance read or written from outside (W1412, as CODESYS and
 //!   TwinCAT do; before, E1021);
@@ -326,6 +327,40 @@ fn a_codesys_execute_box_runs_its_st_code() {
     assert!(
         errors[0]
             .starts_with("bad.xml:35:12: error[E1001]: undeclared name `nope` [POU `PLC_PRG`, network 1, localId 2]"),
+        "{lines:?}"
+    );
+}
+
+/// TwinCAT's LD export of the PPU (`PLCOpenXML_Scenario_9_LD.xml`) wires a contact to a TON box
+/// without naming the output, and a coil to it with its own variable as the `formalParameter`
+/// (`formalParameter="isSorting"` into coil `isSorting`). Both are the rung's power flow out of the
+/// box: its ENO, else its first output (TON.Q). Before, E3018 "localId 4 has no output to connect"
+/// and "block TOF has no output `isSorting`". A wire into anything else keeps its pin name.
+#[test]
+fn the_power_flow_out_of_an_ld_box_is_its_first_output() {
+    let trace = run_with_stimulus(
+        &fixture("codesys_ld_box_flow.xml"),
+        9,
+        "1,MAIN.start,TRUE\n6,MAIN.block,TRUE\n7,MAIN.start,FALSE\n",
+        &["MAIN.start", "MAIN.block", "MAIN.done", "MAIN.lamp"],
+    );
+    // TON_0.Q 30 ms after start rises (cycle 1 -> 4); done = Q AND NOT block; lamp = Q
+    assert_eq!(
+        trace,
+        "cycle,time_ms,MAIN.start,MAIN.block,MAIN.done,MAIN.lamp\n\
+         0,0,0,0,0,0\n1,10,1,0,0,0\n2,20,1,0,0,0\n3,30,1,0,0,0\n4,40,1,0,1,1\n\
+         5,50,1,0,1,1\n6,60,1,1,0,1\n7,70,0,1,0,0\n8,80,0,1,0,0\n"
+    );
+    let src = std::fs::read_to_string(fixture("codesys_ld_box_flow.xml")).unwrap();
+    let (code, lines) = check_text(
+        "pin.xml",
+        &src.replace("formalParameter=\"lamp\"", "formalParameter=\"QQ\""),
+    );
+    assert_eq!(code, Some(1));
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("error[E3018]: block TON (localId 3) has no output `QQ`")),
         "{lines:?}"
     );
 }

@@ -920,9 +920,23 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         }
         let key = match &src.kind {
             Kind::Block { outputs, .. } => match &w.pin {
-                Some(p) => p.to_ascii_uppercase(),
+                Some(p) if !self.ld_power_flow_quirk(p, consumer) => p.to_ascii_uppercase(),
                 None if outputs.len() == 1 => outputs[0].name.to_ascii_uppercase(),
-                None => String::new(),
+                // a contact or coil after a box (LD): the rung's power flow leaves the box by
+                // ENO, else by its first output (TON.Q), as CODESYS and TwinCAT draw it
+                _ if matches!(
+                    g.nodes[consumer].kind,
+                    Kind::Contact { .. } | Kind::Coil { .. }
+                ) =>
+                {
+                    outputs
+                        .iter()
+                        .find(|o| o.name.eq_ignore_ascii_case("ENO"))
+                        .or(outputs.first())
+                        .map(|o| o.name.to_ascii_uppercase())
+                        .unwrap_or_default()
+                }
+                _ => String::new(),
             },
             _ => String::new(),
         };
@@ -939,6 +953,18 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 ctx.report(d);
                 None
             }
+        }
+    }
+
+    /// CODESYS/TwinCAT LD exports name the coil's own variable as the `formalParameter` of the wire
+    /// from a box into the coil (`<connection refLocalId="26" formalParameter="isSorting"/>` into
+    /// coil `isSorting`): the wire is then the rung's power flow out of the box.
+    fn ld_power_flow_quirk(&self, pin: &str, consumer: usize) -> bool {
+        match &self.g.nodes[consumer].kind {
+            Kind::Coil { var, .. } | Kind::Contact { var, .. } => {
+                var.trim().eq_ignore_ascii_case(pin.trim())
+            }
+            _ => false,
         }
     }
 
