@@ -221,19 +221,20 @@ fn a_star_address_takes_any_type() {
 
 /// The PPU function blocks read `Main.Stack_WPProvided`: a variable of the program MAIN, which
 /// CODESYS and TwinCAT make visible to every POU. ladderc compiles IEC program types (a program may
-/// have several instances, or none), so it stays E1001; the hint says why instead of "declare an
-/// instance of the type".
+/// have several instances, or none), so it stays E1001, once per POU and program (a PPU crane read
+/// MAIN 49 times); the hint says why instead of "declare an instance of the type".
 #[test]
 fn a_program_variable_read_from_a_function_block_says_why_it_is_rejected() {
     let (code, lines) = check_text(
         "prog.st",
-        "PROGRAM Main\nVAR provided : BOOL; s : Stack; END_VAR\n  s();\nEND_PROGRAM\n\
-         FUNCTION_BLOCK Stack\nVAR ok : BOOL; END_VAR\n  ok := Main.provided;\nEND_FUNCTION_BLOCK\n",
+        "PROGRAM Main\nVAR provided : BOOL; count : INT; s : Stack; END_VAR\n  s();\nEND_PROGRAM\n\
+         FUNCTION_BLOCK Stack\nVAR ok : BOOL; n : INT; END_VAR\n  ok := Main.provided;\n  n := Main.count + 1;\n\
+         IF Main.provided THEN n := 0; END_IF;\nEND_FUNCTION_BLOCK\n",
     );
     assert_eq!(code, Some(1));
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
-        lines[0].starts_with("prog.st:7:9: error[E1001]: undeclared name `Main` (hint: `Main` is a program: IEC 61131-3 gives other POUs no access"),
+        lines[0].starts_with("prog.st:7:9: error[E1001]: undeclared name `Main` (its other uses in this POU are not reported) (hint: `Main` is a program: IEC 61131-3 gives other POUs no access"),
         "{lines:?}"
     );
 }

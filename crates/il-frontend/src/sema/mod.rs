@@ -76,7 +76,8 @@ pub(crate) struct Analyzer<'d> {
     /// Where E1001 "undeclared name" was reported (file, start): one ST statement lowered to several
     /// IL instructions (a FOR loop reads its variable four times) reports the name once.
     pub(crate) undeclared_at: std::collections::HashSet<(crate::FileId, u32)>,
-    /// (POU, upper-case block type, upper-case variable) whose W1412 was given.
+    /// (POU, upper-case block type, upper-case variable) whose W1412 was given; (POU, `program P`,
+    /// empty) once E1001 reported `P.x` in the POU.
     pub(crate) internal_accessed: std::collections::HashSet<(u32, String, String)>,
 }
 

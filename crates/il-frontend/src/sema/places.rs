@@ -578,12 +578,29 @@ impl Body<'_, '_> {
         {
             return None;
         }
+        let program = self
+            .a
+            .pou_names
+            .get(&base.key())
+            .is_some_and(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Program);
+        if program && !self.a.silent {
+            // `MAIN.x` (CODESYS/TwinCAT): one error per POU and program, its other uses unreported
+            let key = (self.pou.0, format!("program {}", base.key()), String::new());
+            if !self.a.internal_accessed.insert(key) {
+                return None;
+            }
+        }
         let hint = self.similar_name(&base.name);
+        let more = if program {
+            " (its other uses in this POU are not reported)"
+        } else {
+            ""
+        };
         self.a
             .error(
                 code::E1001,
                 base.span,
-                format!("undeclared name `{}`", base.name),
+                format!("undeclared name `{}`{more}", base.name),
             )
             .label("not declared in this POU")
             .hint(hint);
