@@ -16,6 +16,7 @@
 //!   place);
 //! - `AT %Q*` on a non-BOOL variable (before, E1027 "`%QX*` is a single bit");
 //! - `PROGRAM.var` from another POU (CODESYS/TwinCAT): still E1001, with a hint that says why;
+//! - a Siemens SCL file given as `.st` is one E0023 (before, an error per line);
 //! - undeclared inputs of a generic block (before, E3017), `REFERENCE TO` as a derived type name
 //!   (before, E3013).
 
@@ -364,4 +365,45 @@ fn the_power_flow_out_of_an_ld_box_is_its_first_output() {
             .any(|l| l.contains("error[E3018]: block TON (localId 3) has no output `QQ`")),
         "{lines:?}"
     );
+}
+
+/// The TIA Portal exercises of `AutomatisierungsLabor/PlcDigitalTwinAutoTest` (`test.st` files) and
+/// `AbyssIzangamer17/Ejercicio_2_3_SCL_IEC61131` are Siemens SCL: `#local`, `"DataBlock".member`.
+/// Before, every line was an error of its own (up to 50, the cap); now the file is one E0023 at the
+/// first SCL mark. An IEC file with a `#` typo keeps its ordinary errors.
+#[test]
+fn a_siemens_scl_file_is_one_error_naming_the_dialect() {
+    let scl = "FUNCTION_BLOCK Door\nVAR\n    Step : INT;\nEND_VAR\n\
+               IF \"DigInput\".S1 THEN #Step := 1; END_IF;\n\
+               IF #Step = 1 THEN \"DigOutput\".Q1 := TRUE; END_IF;\nEND_FUNCTION_BLOCK\n";
+    let (code, lines) = check_text("door.st", scl);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        ["door.st:5:4: error[E0023]: this file is Siemens SCL (TIA Portal), not IEC 61131-3 Structured Text: \
+          `\"DigInput\".S1` is SCL's access to a member of a data block (hint: write IEC 61131-3 ST: locals \
+          without `#`, data blocks as global variables (VAR_GLOBAL) or instances; the rest of the file is not compiled)"]
+    );
+    let (code, lines) = check_text("hash.st", &scl.replace("\"DigInput\".S1", "TRUE"));
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("`#Step` is SCL's prefix of a local variable"),
+        "{lines:?}"
+    );
+    // the IEC form of the same block runs
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("door.st");
+    std::fs::write(
+        &file,
+        "TYPE Inputs : STRUCT S1 : BOOL := TRUE; END_STRUCT; END_TYPE\n\
+         TYPE Outputs : STRUCT Q1 : BOOL; END_STRUCT; END_TYPE\n\
+         VAR_GLOBAL DigInput : Inputs; DigOutput : Outputs; END_VAR\n\
+         PROGRAM Door\nVAR_EXTERNAL DigInput : Inputs; DigOutput : Outputs; END_VAR\nVAR\n    Step : INT;\nEND_VAR\n\
+         IF DigInput.S1 THEN Step := 1; END_IF;\n\
+         IF Step = 1 THEN DigOutput.Q1 := TRUE; END_IF;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run_traced(&file, 1, "Door.Step,DigOutput.Q1");
+    assert_eq!(trace, "cycle,time_ms,Door.Step,DigOutput.Q1\n0,0,1,1\n");
 }
