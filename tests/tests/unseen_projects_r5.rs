@@ -354,6 +354,8 @@ fn the_power_flow_out_of_an_ld_box_is_its_first_output() {
          5,50,1,0,1,1\n6,60,1,1,0,1\n7,70,0,1,0,0\n8,80,0,1,0,0\n"
     );
     let src = std::fs::read_to_string(fixture("codesys_ld_box_flow.xml")).unwrap();
+    // (a coil whose variable is also an output's name reads that output: fb_en_eno_run's
+    // ld_timer_box_with_en_and_eno_pins, coil `q` on TON.Q beside ENO)
     let (code, lines) = check_text(
         "pin.xml",
         &src.replace("formalParameter=\"lamp\"", "formalParameter=\"QQ\""),

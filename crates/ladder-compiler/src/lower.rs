@@ -920,7 +920,14 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         }
         let key = match &src.kind {
             Kind::Block { outputs, .. } => match &w.pin {
-                Some(p) if !self.ld_power_flow_quirk(p, consumer) => p.to_ascii_uppercase(),
+                Some(p)
+                    if outputs
+                        .iter()
+                        .any(|o| o.name.eq_ignore_ascii_case(p.trim()))
+                        || !self.ld_power_flow_quirk(p, consumer) =>
+                {
+                    p.to_ascii_uppercase()
+                }
                 None if outputs.len() == 1 => outputs[0].name.to_ascii_uppercase(),
                 // a contact or coil after a box (LD): the rung's power flow leaves the box by
                 // ENO, else by its first output (TON.Q), as CODESYS and TwinCAT draw it
@@ -958,7 +965,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
 
     /// CODESYS/TwinCAT LD exports name the coil's own variable as the `formalParameter` of the wire
     /// from a box into the coil (`<connection refLocalId="26" formalParameter="isSorting"/>` into
-    /// coil `isSorting`): the wire is then the rung's power flow out of the box.
+    /// coil `isSorting`): when the box has no output of that name, the wire is the rung's power flow
+    /// out of the box.
     fn ld_power_flow_quirk(&self, pin: &str, consumer: usize) -> bool {
         match &self.g.nodes[consumer].kind {
             Kind::Coil { var, .. } | Kind::Contact { var, .. } => {
