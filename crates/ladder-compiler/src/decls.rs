@@ -68,50 +68,38 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
             length: t.attr("length").and_then(|l| l.trim().parse().ok()),
             span,
         }),
-        "derived" => {
-            match t.attr("name") {
-                Some(n) if values::is_ident(n.trim()) => Some(TypeRef::Named(Ident::new(
-                    n.trim(),
-                    ctx.attr_span(t, "name"),
-                ))),
-                // a library-qualified name (CODESYS `MQTT.MQTTClient`, `OSCAT_BASIC.GEN_PULSE`): kept
-                // whole, so that the missing type is reported by the name the file uses (E3009)
-                // `Standard.TON` (CODESYS) and `Tc2_Standard.TON` (TwinCAT) are the IEC standard blocks
-                Some(n) if n.trim().split('.').all(values::is_ident) => {
-                    let n = n.trim();
-                    let name = match n.split_once('.') {
-                        Some((lib, fb))
-                            if ["STANDARD", "TC2_STANDARD"]
-                                .contains(&lib.to_ascii_uppercase().as_str())
-                                && il_frontend::sema::StdFb::from_name(fb).is_some() =>
-                        {
-                            fb
-                        }
-                        _ => n,
-                    };
-                    Some(TypeRef::Named(Ident::new(name, ctx.attr_span(t, "name"))))
-                }
-                // CODESYS/TwinCAT write references and pointers as a derived name
-                // (`REFERENCE TO Vehiculo`, `POINTER TO INT`): what `<pointer>` is, E3012
-                Some(n)
-                    if {
-                        let up = n.trim().to_ascii_uppercase();
-                        up.starts_with("REFERENCE TO ") || up.starts_with("POINTER TO ")
-                    } =>
-                {
-                    ctx.error(
-                    code::E3012,
-                    ctx.attr_span(t, "name"),
-                    format!("type `{}` is not supported here: references and pointers are not compiled", n.trim()),
-                );
-                    None
-                }
-                _ => {
-                    ctx.error(code::E3013, span, "<derived> type without a valid `name`");
-                    None
-                }
+        "derived" => match t.attr("name") {
+            Some(n) if values::is_ident(n.trim()) => Some(TypeRef::Named(Ident::new(
+                n.trim(),
+                ctx.attr_span(t, "name"),
+            ))),
+            // a library-qualified name (CODESYS `MQTT.MQTTClient`, `OSCAT_BASIC.GEN_PULSE`): kept
+            // whole, so that the missing type is reported by the name the file uses (E3009)
+            // `Standard.TON` (CODESYS) and `Tc2_Standard.TON` (TwinCAT) are the IEC standard blocks
+            Some(n) if n.trim().split('.').all(values::is_ident) => {
+                let n = n.trim();
+                let name = match n.split_once('.') {
+                    Some((lib, fb))
+                        if ["STANDARD", "TC2_STANDARD"]
+                            .contains(&lib.to_ascii_uppercase().as_str())
+                            && il_frontend::sema::StdFb::from_name(fb).is_some() =>
+                    {
+                        fb
+                    }
+                    _ => n,
+                };
+                Some(TypeRef::Named(Ident::new(name, ctx.attr_span(t, "name"))))
             }
-        }
+            Some(n) if is_reference(n) => {
+                let msg = format!("type `{}` is not supported here: {REFERENCE}", n.trim());
+                ctx.error(code::E3012, ctx.attr_span(t, "name"), msg);
+                None
+            }
+            _ => {
+                ctx.error(code::E3013, span, "<derived> type without a valid `name`");
+                None
+            }
+        },
         "array" => {
             let mut dims = Vec::new();
             for d in t.children_named("dimension") {
@@ -187,6 +175,15 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
         }
     }
 }
+
+/// CODESYS/TwinCAT write references and pointers as a derived name (`REFERENCE TO Vehiculo`,
+/// `POINTER TO INT`): what `<pointer>` is, E3012.
+fn is_reference(name: &str) -> bool {
+    let up = name.trim().to_ascii_uppercase();
+    up.starts_with("REFERENCE TO ") || up.starts_with("POINTER TO ")
+}
+
+const REFERENCE: &str = "references and pointers are not compiled";
 
 /// `<initialValue>`: simpleValue, arrayValue, structValue.
 /// `ty` is the declared type: a string variable's initial value written without quotes (as v1.0
