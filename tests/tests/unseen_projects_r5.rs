@@ -17,6 +17,8 @@
 //! - `AT %Q*` on a non-BOOL variable (before, E1027 "`%QX*` is a single bit");
 //! - `PROGRAM.var` from another POU (CODESYS/TwinCAT): still E1001, with a hint that says why;
 //! - a Siemens SCL file given as `.st` is one E0023 (before, an error per line);
+//! - the ST parser reports the same error at the same place once (after E0108, one E0100 per open
+//!   level before);
 //! - undeclared inputs of a generic block (before, E3017), `REFERENCE TO` as a derived type name
 //!   (before, E3013).
 
@@ -408,4 +410,40 @@ fn a_siemens_scl_file_is_one_error_naming_the_dialect() {
     .unwrap();
     let (trace, _) = run_traced(&file, 1, "Door.Step,DigOutput.Q1");
     assert_eq!(trace, "cycle,time_ms,Door.Step,DigOutput.Q1\n0,0,1,1\n");
+}
+
+/// Trying the new paths with hostile input (200,000 nested parentheses in the ST code of an EXECUTE
+/// box, or in an `.st` file) showed the ST parser's cascade: after E0108 "nested too deeply", one
+/// E0100 "expected `)`" per open level, all at the end of the text (the 50-diagnostic cap, then
+/// "152 more"). The same error at the same place is now reported once.
+#[test]
+fn a_too_deep_expression_is_not_followed_by_one_error_per_level() {
+    let src = format!(
+        "PROGRAM p\nVAR x : INT; END_VAR\nx := {}1{};\nEND_PROGRAM\n",
+        "(".repeat(200_000),
+        ")".repeat(200_000)
+    );
+    let (code, lines) = check_text("deep.st", &src);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(
+        lines[0].contains("error[E0108]: expression is nested too deeply"),
+        "{lines:?}"
+    );
+    assert!(
+        lines[1].contains("error[E0100]: expected `)`, found end of text"),
+        "{lines:?}"
+    );
+    let ifs = format!(
+        "PROGRAM p\nVAR x : INT; END_VAR\n{}x := 1;{}\nEND_PROGRAM\n",
+        "IF TRUE THEN ".repeat(50_000),
+        " END_IF;".repeat(50_000)
+    );
+    let (code, lines) = check_text("ifs.st", &ifs);
+    assert_eq!(code, Some(1));
+    assert!(lines.len() <= 3, "{lines:?}");
+    assert!(
+        lines[0].contains("error[E0108]: statements are nested too deeply"),
+        "{lines:?}"
+    );
 }
