@@ -92,6 +92,16 @@ fn a_wrong_expression_in_a_contact_is_one_located_error() {
         errors[0].contains("error[E3011]: `A AND` is not a variable, direct address or literal [POU `Ladder`, network 1, localId 3]"),
         "{lines:?}"
     );
+    // a long text is cut in the message
+    let long = format!("A AND {}AND", "B AND ".repeat(5_000));
+    let (code, lines) = check_text("long.xml", &src.replace("A AND C", &long));
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("error[E3011]: `A AND B AND B AND B AND B AND B AND B AND B AND B AND B AND ...` is not a variable")
+            && lines[0].len() < 400,
+        "{lines:?}"
+    );
     // a non-BOOL expression in a contact is the ST front end's condition error
     let (code, lines) = check_text("int.xml", &src.replace("A AND C", "Open + 1"));
     assert_eq!(code, Some(1), "{lines:?}");

@@ -501,6 +501,15 @@ fn temp_name(key: &str, i: usize) -> String {
     format!("__tmp_{key}_{i}")
 }
 
+/// `text` for a message: at most 60 characters, then `...` (an element may hold a whole program).
+fn shown(text: &str) -> std::borrow::Cow<'_, str> {
+    let text = text.trim();
+    match text.char_indices().nth(60) {
+        Some((at, _)) => format!("{}...", &text[..at]).into(),
+        None => text.into(),
+    }
+}
+
 fn sanitize(id: &str) -> String {
     id.chars()
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
@@ -1010,7 +1019,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 let what = if text.is_empty() {
                     "(empty)".to_string()
                 } else {
-                    format!("`{text}`")
+                    format!("`{}`", shown(text))
                 };
                 let d = self.diag(
                     ctx,

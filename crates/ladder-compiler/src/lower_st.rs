@@ -9,7 +9,7 @@
 //! localId); text that is neither an operand nor an ST expression is left to the caller (E3011).
 
 use super::{
-    bool_ty, sanitize, simple, Action, BodyLowering, InPin, Kind, NetLowering, Operand, Val,
+    bool_ty, sanitize, shown, simple, Action, BodyLowering, InPin, Kind, NetLowering, Operand, Val,
 };
 use crate::context::{Ctx, Where};
 use crate::graph::{self, Graph};
@@ -83,7 +83,7 @@ impl BodyLowering<'_> {
                         ctx.report(
                             Diagnostic::error(
                                 code::E3011,
-                                format!("the type of `{}` cannot be told", text.trim()),
+                                format!("the type of `{}` cannot be told", shown(text)),
                             )
                             .at(span)
                             .with_hint("write a variable here, or convert the expression to a type (`INT_TO_REAL(...)`)")
