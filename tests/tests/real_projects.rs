@@ -389,3 +389,59 @@ fn a_watched_name_with_a_wrong_prefix_suggests_the_variable() {
         "{err}"
     );
 }
+
+#[test]
+fn tree_sitter_conveyor_latches_counts_and_stops() {
+    // HeytalePazguato/tree-sitter-iec61131-3-st examples/conveyor.st (MIT): start/stop latch, parts
+    // counted on rising edges of the outfeed sensor, E-stop forces the motor off and the fault lamp on
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n1,Conveyor.start_button,TRUE\n2,Conveyor.start_button,FALSE\n\
+         3,Conveyor.outfeed_sensor,TRUE\n4,Conveyor.outfeed_sensor,FALSE\n5,Conveyor.outfeed_sensor,TRUE\n\
+         6,Conveyor.stop_button,TRUE\n7,Conveyor.stop_button,FALSE\n7,Conveyor.start_button,TRUE\n\
+         8,Conveyor.estop_button,TRUE\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .arg("run")
+        .arg(file(
+            "HeytalePazguato_tree-sitter-iec61131-3-st_conveyor.st",
+        ))
+        .args(["--cycles", "10", "--sanitize", "--trace", "-", "--stimulus"])
+        .arg(&stim)
+        .args([
+            "--watch",
+            "Conveyor.motor_run,Conveyor.fault_lamp,Conveyor.parts_counted",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,Conveyor.motor_run,Conveyor.fault_lamp,Conveyor.parts_counted\n\
+         0,0,0,0,0\n1,10,1,0,0\n2,20,1,0,0\n3,30,1,0,1\n4,40,1,0,1\n5,50,1,0,2\n\
+         6,60,0,0,2\n7,70,1,0,2\n8,80,0,1,2\n9,90,0,1,2\n"
+    );
+}
+
+#[test]
+fn tia_portal_scl_exercise_is_one_error_naming_the_dialect() {
+    // AutomatisierungsLabor/PlcDigitalTwinAutoTest (MIT): a TIA Portal SCL exercise saved as
+    // test.st (`"DigInput".F1`, `#...`, `CONSTANT ... = ...`); before, 50 errors (the cap)
+    let errors = rejected(
+        "AutomatisierungsLabor_PlcDigitalTwinAutoTest_Silosteuerung_test.st",
+        &["E0023"],
+    );
+    assert_eq!(errors.len(), 1, "{errors:?}");
+    assert!(
+        errors[0].contains(":21:9: error[E0023]: this file is Siemens SCL (TIA Portal)"),
+        "{errors:?}"
+    );
+}

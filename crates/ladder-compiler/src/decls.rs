@@ -90,6 +90,11 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 };
                 Some(TypeRef::Named(Ident::new(name, ctx.attr_span(t, "name"))))
             }
+            Some(n) if is_reference(n) => {
+                let msg = format!("type `{}` is not supported here: {REFERENCE}", n.trim());
+                ctx.error(code::E3012, ctx.attr_span(t, "name"), msg);
+                None
+            }
             _ => {
                 ctx.error(code::E3013, span, "<derived> type without a valid `name`");
                 None
@@ -170,6 +175,15 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
         }
     }
 }
+
+/// CODESYS/TwinCAT write references and pointers as a derived name (`REFERENCE TO Vehiculo`,
+/// `POINTER TO INT`): what `<pointer>` is, E3012.
+fn is_reference(name: &str) -> bool {
+    let up = name.trim().to_ascii_uppercase();
+    up.starts_with("REFERENCE TO ") || up.starts_with("POINTER TO ")
+}
+
+const REFERENCE: &str = "references and pointers are not compiled";
 
 /// `<initialValue>`: simpleValue, arrayValue, structValue.
 /// `ty` is the declared type: a string variable's initial value written without quotes (as v1.0

@@ -123,6 +123,9 @@ pub enum Kind {
         inputs: Vec<InPin>,
         /// Output pins in document order.
         outputs: Vec<OutPin>,
+        /// The ST statements of a CODESYS `EXECUTE` box (its vendor data's `<STCode>`), laid out so
+        /// that byte `k` is byte `base + k` of the file; `None` for every other block.
+        code: Option<crate::il_body::EmbeddedText>,
     },
     /// `<inVariable>`: an FBD variable or constant read into the network.
     InVar {
@@ -436,12 +439,25 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                     .map(str::trim)
                     .filter(|s| !s.is_empty())
                     .map(|s| (s.to_string(), ctx.attr_span(e, "instanceName")));
+                let type_name = a.unwrap_or_default().trim().to_string();
+                // CODESYS's EXECUTE box runs the ST code of its vendor data
+                let code = if type_name.eq_ignore_ascii_case("EXECUTE") {
+                    e.children_named("addData")
+                        .flat_map(|d| d.children_named("data"))
+                        .filter(|d| d.attr("name").is_some_and(|n| n.ends_with("/stcode")))
+                        .flat_map(|d| d.children_named("STCode"))
+                        .next()
+                        .map(crate::il_body::embedded_text)
+                } else {
+                    None
+                };
                 Kind::Block {
-                    type_name: a.unwrap_or_default().trim().to_string(),
+                    type_name,
                     type_span: ctx.attr_span(e, "typeName"),
                     instance,
                     inputs,
                     outputs,
+                    code,
                 }
             }
             other => {

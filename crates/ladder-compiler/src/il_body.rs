@@ -11,6 +11,7 @@
 use crate::xml::{Element, SegKind};
 
 /// An `<IL>` body's text laid out so that byte `k` of `text` is byte `base + k` of the XML file.
+#[derive(Debug, Clone)]
 pub struct EmbeddedText {
     /// The body text, padded (see the module header).
     pub text: String,

@@ -19,6 +19,9 @@
 //! `__trig_<localId>` edge detectors, `__tmp_<TYPE>_<n>` temporaries (reused from network to network),
 //! `__out_<localId>` results of functions called under EN, `__skip_<localId>` EN labels.
 //!
+//! ST written inside the body (expressions in contacts and input variables, CODESYS EXECUTE boxes)
+//! is lowered by the child module `lower_st` (`lower_st.rs`).
+//!
 //! Invariants: every emitted instruction carries the span of the XML element it comes from; a network
 //! that cannot be lowered is reported (with POU, network and localId) and skipped, the others are still
 //! lowered.
@@ -34,9 +37,13 @@ use il_frontend::ast::{
     Instruction, Literal, LiteralKind, Op, Operand, PouKind, TypeDef, TypeRef, VarDecl, VarKind,
     VarRef,
 };
+use il_frontend::st::PouLowering;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 use std::borrow::Cow;
 use std::collections::{BTreeMap, BinaryHeap};
+
+#[path = "lower_st.rs"]
+mod lower_st;
 
 type ValId = usize;
 
@@ -105,6 +112,13 @@ enum Action {
         skip_label: String,
         span: Span,
     },
+    /// The ST code of a CODESYS EXECUTE box, already IL: run when `en` is TRUE.
+    Execute {
+        code: Vec<IlStmt>,
+        en: Option<ValId>,
+        skip_label: String,
+        span: Span,
+    },
     Label(Ident),
 }
 
@@ -128,6 +142,13 @@ pub struct BodyLowering<'i> {
     hidden_names: HashSet<String>,
     /// Type key -> (type, highest count used by one network).
     pools: BTreeMap<String, (TypeRef, usize)>,
+    /// The POU, for the ST lowering of expressions written in contacts and input variables.
+    pou_ast: &'i il_frontend::ast::Pou,
+    /// That lowering, made at the first such expression.
+    st: Option<PouLowering<'i>>,
+    /// Node (of the graph being lowered) -> the hidden variable holding its expression's value
+    /// (`None`: the expression was reported).
+    exprs: HashMap<usize, Option<Operand>>,
 }
 
 impl<'i> BodyLowering<'i> {
@@ -162,6 +183,9 @@ impl<'i> BodyLowering<'i> {
             hidden: Vec::new(),
             hidden_names: HashSet::default(),
             pools: BTreeMap::new(),
+            pou_ast: pou,
+            st: None,
+            exprs: HashMap::default(),
         }
     }
 
@@ -169,12 +193,14 @@ impl<'i> BodyLowering<'i> {
     pub fn lower(&mut self, ctx: &mut Ctx, g: &Graph) -> Vec<IlStmt> {
         self.check_jumps(ctx, g);
         self.check_double_writes(ctx, g);
+        let mut pre = self.expressions(ctx, g);
         let mut out = Vec::new();
         // One network state for the whole body: cleared per network, its lists keep their room.
         let mut nl = NetLowering::new(self, g, 0);
         for (n, net) in g.networks.iter().enumerate() {
             nl.reset(n + 1);
             if let Some(order) = nl.order(ctx, net) {
+                let start = out.len();
                 nl.build(ctx, &order);
                 if let Some(span) = nl.too_deep {
                     ctx.report(
@@ -199,6 +225,17 @@ impl<'i> BodyLowering<'i> {
                     continue;
                 }
                 nl.emit(&mut out);
+                // the expressions of the network's contacts and input variables, evaluated first
+                // (after the network's labels, so a jump there evaluates them too)
+                let code = std::mem::take(&mut pre[n]);
+                if !code.is_empty() {
+                    let at = start
+                        + out[start..]
+                            .iter()
+                            .take_while(|s| matches!(s, IlStmt::Label(_)))
+                            .count();
+                    out.splice(at..at, code);
+                }
             }
         }
         out
@@ -308,6 +345,10 @@ impl<'i> BodyLowering<'i> {
     /// The hidden declarations (edge detectors first, then temporaries by type).
     pub fn hidden_vars(mut self) -> Vec<VarDecl> {
         let span = self.body_span;
+        // the temporaries of the ST expressions (`_STX_T<n>`)
+        if let Some(b) = self.st.take().and_then(|low| low.finish(span)) {
+            self.hidden.extend(b.vars);
+        }
         for (key, (ty, count)) in std::mem::take(&mut self.pools) {
             for i in 0..count {
                 self.hidden.push(VarDecl {
@@ -458,6 +499,15 @@ fn type_key(ty: &TypeRef) -> String {
 
 fn temp_name(key: &str, i: usize) -> String {
     format!("__tmp_{key}_{i}")
+}
+
+/// `text` for a message: at most 60 characters, then `...` (an element may hold a whole program).
+fn shown(text: &str) -> std::borrow::Cow<'_, str> {
+    let text = text.trim();
+    match text.char_indices().nth(60) {
+        Some((at, _)) => format!("{}...", &text[..at]).into(),
+        None => text.into(),
+    }
 }
 
 fn sanitize(id: &str) -> String {
@@ -879,9 +929,30 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         }
         let key = match &src.kind {
             Kind::Block { outputs, .. } => match &w.pin {
-                Some(p) => p.to_ascii_uppercase(),
+                Some(p)
+                    if outputs
+                        .iter()
+                        .any(|o| o.name.eq_ignore_ascii_case(p.trim()))
+                        || !self.ld_power_flow_quirk(p, consumer) =>
+                {
+                    p.to_ascii_uppercase()
+                }
                 None if outputs.len() == 1 => outputs[0].name.to_ascii_uppercase(),
-                None => String::new(),
+                // a contact or coil after a box (LD): the rung's power flow leaves the box by
+                // ENO, else by its first output (TON.Q), as CODESYS and TwinCAT draw it
+                _ if matches!(
+                    g.nodes[consumer].kind,
+                    Kind::Contact { .. } | Kind::Coil { .. }
+                ) =>
+                {
+                    outputs
+                        .iter()
+                        .find(|o| o.name.eq_ignore_ascii_case("ENO"))
+                        .or(outputs.first())
+                        .map(|o| o.name.to_ascii_uppercase())
+                        .unwrap_or_default()
+                }
+                _ => String::new(),
             },
             _ => String::new(),
         };
@@ -898,6 +969,19 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 ctx.report(d);
                 None
             }
+        }
+    }
+
+    /// CODESYS/TwinCAT LD exports name the coil's own variable as the `formalParameter` of the wire
+    /// from a box into the coil (`<connection refLocalId="26" formalParameter="isSorting"/>` into
+    /// coil `isSorting`): when the box has no output of that name, the wire is the rung's power flow
+    /// out of the box.
+    fn ld_power_flow_quirk(&self, pin: &str, consumer: usize) -> bool {
+        match &self.g.nodes[consumer].kind {
+            Kind::Coil { var, .. } | Kind::Contact { var, .. } => {
+                var.trim().eq_ignore_ascii_case(pin.trim())
+            }
+            _ => false,
         }
     }
 
@@ -926,13 +1010,16 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     }
 
     fn parse_var(&mut self, ctx: &mut Ctx, node: usize, text: &str, span: Span) -> Option<Operand> {
+        if let Some(op) = self.pou.exprs.get(&node) {
+            return op.clone();
+        }
         match values::operand(text, span) {
             Some(op) => Some(op),
             None => {
                 let what = if text.is_empty() {
                     "(empty)".to_string()
                 } else {
-                    format!("`{text}`")
+                    format!("`{}`", shown(text))
                 };
                 let d = self.diag(
                     ctx,
@@ -1377,10 +1464,15 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             instance,
             inputs,
             outputs,
+            code,
         } = &node.kind
         else {
             return;
         };
+        if let Some(code) = code {
+            self.build_execute(ctx, i, code, inputs, outputs);
+            return;
+        }
         if type_name.is_empty() {
             let d = self.diag(ctx, code::E3013, i, span, "block without a typeName".into());
             ctx.report(d);
@@ -1454,7 +1546,14 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 en = Some(v);
                 continue;
             }
-            match Self::pin_type(&bt, &pin.name, pin.span) {
+            // CODESYS/TwinCAT `RS.SET` is IEC `RS.S` (a user block of that name keeps its pins)
+            let pin_name: &str = match &bt {
+                BlockType::StdFb(_) => {
+                    catalogue::vendor_pin_alias(type_name, &pin.name).unwrap_or(&pin.name)
+                }
+                _ => &pin.name,
+            };
+            match Self::pin_type(&bt, pin_name, pin.span) {
                 None => {
                     let d = self.diag(
                         ctx,
@@ -1515,7 +1614,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 }
                 Some(None) => {}
             }
-            args.push((Ident::new(&pin.name, pin.span), v));
+            args.push((Ident::new(pin_name, pin.span), v));
         }
         let eno = match en {
             Some(e) => e,
@@ -1647,6 +1746,36 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     return;
                 }
                 let Some(result_ty) = result_ty else {
+                    // inputs that are undeclared names: that is the error, not the type
+                    let mut undeclared = false;
+                    for (_, v) in &args {
+                        if let Val::Leaf {
+                            op: Operand::Var(r),
+                            ..
+                        } = &self.vals[*v]
+                        {
+                            if self.pou.var_type(r).is_none() {
+                                undeclared = true;
+                                let d = self
+                                    .diag(
+                                        ctx,
+                                        code::E1001,
+                                        i,
+                                        r.base.span,
+                                        format!("undeclared name `{}`", r.base.name),
+                                    )
+                                    .with_hint(format!(
+                                        "declare `{}` in a VAR block of `{}` (or VAR_EXTERNAL for a global)",
+                                        r.base.name, self.pou.pou
+                                    ));
+                                ctx.report(d);
+                            }
+                        }
+                    }
+                    if undeclared {
+                        self.poisoned.insert(i);
+                        return;
+                    }
                     let d = self.diag(
                         ctx,
                         code::E3017,
@@ -1810,6 +1939,11 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     for (_, v) in args {
                         add(&mut uses, *v);
                     }
+                    if let Some(e) = en {
+                        add(&mut uses, *e);
+                    }
+                }
+                Action::Execute { en, .. } => {
                     if let Some(e) = en {
                         add(&mut uses, *e);
                     }
@@ -2065,6 +2199,28 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     }
                     emit_function(name, form, ops, *span, out);
                     out.push(simple(Op::St, false, Some(result.clone()), *span));
+                    if en.is_some() {
+                        out.push(IlStmt::Label(Ident::new(skip_label, *span)));
+                    }
+                }
+                Action::Execute {
+                    code,
+                    en,
+                    skip_label,
+                    span,
+                } => {
+                    if let Some(e) = en {
+                        self.prepare(*e, out);
+                        self.eval(*e, out);
+                        out.push(instr(
+                            InstrKind::Jump {
+                                cond: Condition::IfFalse,
+                                label: Ident::new(skip_label, *span),
+                            },
+                            *span,
+                        ));
+                    }
+                    out.extend(code.iter().cloned());
                     if en.is_some() {
                         out.push(IlStmt::Label(Ident::new(skip_label, *span)));
                     }

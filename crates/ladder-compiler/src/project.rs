@@ -375,6 +375,8 @@ fn is_read_vendor_data(name: &str) -> bool {
         "/datatype",
         "/pou",
         "/tasksettings",
+        // the ST code of a CODESYS EXECUTE box (graph.rs)
+        "/stcode",
     ]
     .iter()
     .any(|s| name.ends_with(s))

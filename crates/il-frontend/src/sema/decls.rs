@@ -642,8 +642,9 @@ impl Analyzer<'_> {
     /// E1027: a variable located at a single bit (`%QX0.0`, or `%Q0.0` without a size letter) whose
     /// type (or array element type) is not BOOL: the bit cannot hold the value (ZPLC's HIL tests
     /// declare `a AT %Q0.0 : INT`; before, the value was silently cut to one bit).
+    /// `%Q*` (not yet located, no size letter: the VAR_CONFIG or the tool places it) takes any type.
     fn check_bit_location(&mut self, d: &ast::VarDecl, loc: &ast::DirectAddress, ty: &Type) {
-        if loc.size != ast::AddressSize::Bit {
+        if loc.size != ast::AddressSize::Bit || loc.path.is_empty() {
             return;
         }
         let mut t = ty;

@@ -37,6 +37,8 @@ pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
         silent: false,
         enum_counter: 0,
         alias_chain_reported: false,
+        undeclared_at: std::collections::HashSet::new(),
+        internal_accessed: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
     a.check_containment();
@@ -71,6 +73,12 @@ pub(crate) struct Analyzer<'d> {
     pub(crate) enum_counter: u32,
     /// E0213 (an alias chain longer than `parser::MAX_TYPE_NESTING`) was reported.
     pub(crate) alias_chain_reported: bool,
+    /// Where E1001 "undeclared name" was reported (file, start): one ST statement lowered to several
+    /// IL instructions (a FOR loop reads its variable four times) reports the name once.
+    pub(crate) undeclared_at: std::collections::HashSet<(crate::FileId, u32)>,
+    /// (POU, upper-case block type, upper-case variable) whose W1412 was given; (POU, `program P`,
+    /// empty) once E1001 reported `P.x` in the POU.
+    pub(crate) internal_accessed: std::collections::HashSet<(u32, String, String)>,
 }
 
 impl Analyzer<'_> {

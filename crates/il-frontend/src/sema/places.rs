@@ -570,12 +570,37 @@ impl Body<'_, '_> {
         if let Some(place) = self.implicit_external(base) {
             return Some(place);
         }
+        if !self.a.silent
+            && !self
+                .a
+                .undeclared_at
+                .insert((base.span.file, base.span.start))
+        {
+            return None;
+        }
+        let program = self
+            .a
+            .pou_names
+            .get(&base.key())
+            .is_some_and(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Program);
+        if program && !self.a.silent {
+            // `MAIN.x` (CODESYS/TwinCAT): one error per POU and program, its other uses unreported
+            let key = (self.pou.0, format!("program {}", base.key()), String::new());
+            if !self.a.internal_accessed.insert(key) {
+                return None;
+            }
+        }
         let hint = self.similar_name(&base.name);
+        let more = if program {
+            " (its other uses in this POU are not reported)"
+        } else {
+            ""
+        };
         self.a
             .error(
                 code::E1001,
                 base.span,
-                format!("undeclared name `{}`", base.name),
+                format!("undeclared name `{}`{more}", base.name),
             )
             .label("not declared in this POU")
             .hint(hint);
@@ -650,6 +675,18 @@ impl Body<'_, '_> {
     /// A hint naming a declared variable with a similar spelling, or how to declare.
     fn similar_name(&self, name: &str) -> String {
         let up = name.to_ascii_uppercase();
+        if self
+            .a
+            .pou_names
+            .get(&up)
+            .is_some_and(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Program)
+        {
+            // `MAIN.x` from a function block: CODESYS and TwinCAT programs are single instances
+            // whose variables every POU can reach; ladderc compiles IEC 61131-3 program types
+            return format!(
+                "`{name}` is a program: IEC 61131-3 gives other POUs no access to a program's variables (CODESYS and TwinCAT do, ladderc does not); pass the value as an input, or use a global variable (VAR_GLOBAL / VAR_EXTERNAL)"
+            );
+        }
         let is_fb_type = StdFb::from_name(name).is_some()
             || self
                 .a
@@ -730,11 +767,23 @@ impl Body<'_, '_> {
                             ParamDir::Output => Some(ReadOnly::FbOutput { at }),
                             ParamDir::Input | ParamDir::InOut => place.read_only,
                             ParamDir::Internal => {
-                                self.a
-                                    .error(code::E1021, f.span, format!("`{}` is internal to {tname}", f.name))
-                                    .label("not an input or output")
-                                    .hint("only the inputs and outputs of an FB instance are accessible from outside");
-                                return None;
+                                // CODESYS and TwinCAT give access to internal variables (W1412,
+                                // once per POU, block type and variable)
+                                let key = (self.pou.0, tname.to_ascii_uppercase(), f.key());
+                                if !self.a.silent && self.a.internal_accessed.insert(key) {
+                                    self.a
+                                        .warning(
+                                            code::W1412,
+                                            f.span,
+                                            format!(
+                                                "`{}` is internal to {tname}, used from outside",
+                                                f.name
+                                            ),
+                                        )
+                                        .label("not an input or output")
+                                        .hint("IEC 61131-3 gives access only to the inputs and outputs of an FB instance; ladderc, like CODESYS and TwinCAT, accesses the instance's variable. For portable code declare it VAR_OUTPUT or VAR_INPUT");
+                                }
+                                place.read_only
                             }
                         };
                         Some(Place {

@@ -652,6 +652,12 @@ pub fn parse_text(
         first_try = Some((unit, local));
     }
     let (mut toks, mut problems) = lex(src);
+    if lang == Lang::St {
+        if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems) {
+            diags.push(d);
+            return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
+        }
+    }
     let (unqualified, unreferenced);
     let mut references = Vec::new();
     let src = if lang == Lang::St {

@@ -41,6 +41,8 @@ pub struct PouLowering<'d> {
     vars: HashMap<String, TypeRef>,
     temps: Vec<VarDecl>,
     next_label: u32,
+    /// What the names of labels and temporaries start with (`_ST_`; see [`Self::with_prefix`]).
+    prefix: &'static str,
     loops: Vec<LoopLabels>,
     /// Set when an expression contained a syntax error (reported by the parser).
     poisoned: bool,
@@ -164,6 +166,7 @@ impl<'d> PouLowering<'d> {
             vars,
             temps: Vec::new(),
             next_label: 0,
+            prefix: "_ST_",
             loops: Vec::new(),
             poisoned: false,
             lit_hint: None,
@@ -199,6 +202,28 @@ impl<'d> PouLowering<'d> {
             .collect();
     }
 
+    /// Names labels and temporaries `<prefix><WHAT><n>` and `<prefix>T<n>` instead of `_ST_...`, so a
+    /// second lowering of the same POU (ST expressions inside an LD/FBD body) never clashes with the
+    /// first.
+    pub fn with_prefix(mut self, prefix: &'static str) -> Self {
+        self.prefix = prefix;
+        self
+    }
+
+    /// The type of the value [`Self::expression`] leaves in the current result: the declared type,
+    /// DINT / LREAL for an untyped literal, `None` when it cannot be told here.
+    pub fn expression_type(&self, e: &Expr) -> Option<TypeRef> {
+        self.types.borrow_mut().clear();
+        let t = match self.ty(e) {
+            Ty::Known(t) => Some(t),
+            Ty::IntLit => Some(named("DINT", e.span)),
+            Ty::RealLit => Some(named("LREAL", e.span)),
+            Ty::Unknown => None,
+        };
+        self.types.borrow_mut().clear();
+        t
+    }
+
     /// Makes a variable the POU will have (but `pou.var_blocks` did not list when [`Self::new`] ran)
     /// visible to the lowering, e.g. SFC step flags.
     pub fn declare(&mut self, name: &str, ty: TypeRef) {
@@ -208,7 +233,7 @@ impl<'d> PouLowering<'d> {
     /// A label no other snippet of this POU uses: `_ST_<WHAT><n>`.
     pub fn fresh_label(&mut self, what: &str, span: Span) -> Ident {
         self.next_label += 1;
-        Ident::new(format!("_ST_{what}{}", self.next_label), span)
+        Ident::new(format!("{}{what}{}", self.prefix, self.next_label), span)
     }
 
     /// Lowers a statement list.
@@ -581,7 +606,7 @@ impl<'d> PouLowering<'d> {
 
     /// A new temporary of type `ty`, declared in the POU's VAR_TEMP block.
     fn temp(&mut self, ty: TypeRef, span: Span) -> Ident {
-        let name = Ident::new(format!("_ST_T{}", self.temps.len() + 1), span);
+        let name = Ident::new(format!("{}T{}", self.prefix, self.temps.len() + 1), span);
         self.temps.push(VarDecl::new(name.clone(), ty, span));
         self.vars
             .insert(name.key(), self.temps[self.temps.len() - 1].ty.clone());
@@ -711,7 +736,7 @@ impl<'d> PouLowering<'d> {
                         }
                         ActionBody::Il(body) => {
                             self.next_label += 1;
-                            let tag = format!("_ST_A{}_", self.next_label);
+                            let tag = format!("{}A{}_", self.prefix, self.next_label);
                             out.extend(crate::actions::instantiate(&body, &tag, span));
                         }
                     }

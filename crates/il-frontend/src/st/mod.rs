@@ -1,5 +1,6 @@
 //! Structured Text (IEC 61131-3 ST), compiled through the IL syntax tree.
 //!
+//! A `.st` file in Siemens SCL is one E0023 before any stage (`scl`).
 //! Stages: [`lexer`] (logos, case-insensitive keywords, the IL literal decoders) -> [`parser`]
 //! (recursive descent with IEC precedence and statement-level error recovery, codes E0100-E0139) ->
 //! [`ast`] -> [`lower`] (IL instructions with deferred operators, VAR_TEMP temporaries typed by
@@ -18,6 +19,7 @@ pub mod lexer;
 pub mod lower;
 pub mod parser;
 mod qualifiers;
+mod scl;
 pub mod sfc;
 pub mod types;
 mod var_config;

@@ -110,6 +110,9 @@ struct Parser<'s, 'd> {
     /// Inside a condition evaluated again and again or only sometimes (WHILE, UNTIL, ELSIF): a
     /// method call there cannot be put before the statement.
     no_hoist: usize,
+    /// The last error reported (code, span): the same error at the same place again (an unclosed
+    /// `(` or IF per level after E0108 "nested too deeply") is not repeated.
+    last_error: Option<(Code, Span)>,
     diags: &'d mut Diagnostics,
 }
 
@@ -146,6 +149,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             expr_start: 0,
             hoisted: Vec::new(),
             no_hoist: 0,
+            last_error: None,
             diags,
         };
         for pr in problems {
@@ -272,8 +276,17 @@ impl<'s, 'd> Parser<'s, 'd> {
         msg: impl Into<String>,
         hint: impl Into<String>,
     ) {
-        self.diags
-            .push(Diagnostic::error(code, msg).at(span).with_hint(hint));
+        self.push_error(Diagnostic::error(code, msg).at(span).with_hint(hint));
+    }
+    /// Reports `d` unless the last error had the same code at the same place.
+    fn push_error(&mut self, d: Diagnostic) {
+        if let Some(span) = d.span {
+            if self.last_error == Some((d.code, span)) {
+                return;
+            }
+            self.last_error = Some((d.code, span));
+        }
+        self.diags.push(d);
     }
     fn error_here(&mut self, code: Code, msg: impl Into<String>, hint: impl Into<String>) {
         // An error token was already reported by the lexer: one diagnostic per mistake.
@@ -518,7 +531,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             return true;
         }
         let found = self.describe_current();
-        self.diags.push(
+        self.push_error(
             Diagnostic::error(
                 code::E0105,
                 format!(
@@ -1230,7 +1243,7 @@ impl<'s, 'd> Parser<'s, 'd> {
                     self.bump();
                 } else {
                     let found = self.describe_current();
-                    self.diags.push(
+                    self.push_error(
                         Diagnostic::error(code::E0100, format!("expected `)`, found {found}"))
                             .at(self.cur_span())
                             .with_label(here, "this `(` is not closed")
