@@ -360,7 +360,7 @@ fn scan_attrs(raw_tag: &str) -> impl Iterator<Item = (&str, usize, usize)> {
 
 /// The attributes with entities in their value, decoded.
 fn decoded_attrs<'a>(raw_tag: &'a str, tag_pos: usize, arena: &'a Arena) -> &'a [Attr<'a>] {
-    if !raw_tag.contains('&') {
+    if memchr::memchr(b'&', raw_tag.as_bytes()).is_none() {
         return &[];
     }
     let attrs: Vec<Attr<'a>> = scan_attrs(raw_tag)
@@ -401,10 +401,21 @@ fn start_element<'a>(
     after: usize,
     arena: &'a Arena,
 ) -> Element<'a> {
+    plain_element(raw, base, pos, after, decoded_attrs(raw, base + pos, arena))
+}
+
+/// [`start_element`] with the decoded attributes given (none when the tag holds no `&`).
+fn plain_element<'a>(
+    raw: &'a str,
+    base: usize,
+    pos: usize,
+    after: usize,
+    decoded_attrs: &'a [Attr<'a>],
+) -> Element<'a> {
     Element {
         name: tag_name(raw),
         raw_tag: raw,
-        decoded_attrs: decoded_attrs(raw, base + pos, arena),
+        decoded_attrs,
         children: &[],
         text: &[],
         tag_start: base + pos,
@@ -416,6 +427,47 @@ fn start_element<'a>(
 /// XML whitespace as quick-xml counts it (names end there).
 fn xml_space(b: u8) -> bool {
     matches!(b, b' ' | b'\r' | b'\n' | b'\t')
+}
+
+/// The bytes a start tag's scan stops at: `>`, the two quotes and `&`.
+static TAG_STOPS: [bool; 256] = {
+    let mut t = [false; 256];
+    t[b'>' as usize] = true;
+    t[b'"' as usize] = true;
+    t[b'\'' as usize] = true;
+    t[b'&' as usize] = true;
+    t
+};
+
+/// The first `>` outside quotes at or after `p`, and whether the tag holds a `&` (in or out of
+/// quotes); `None` when the document ends first. A byte loop: tags are short, so it beats a `memchr3`
+/// call per quote.
+fn tag_end(b: &[u8], mut k: usize) -> Option<(usize, bool)> {
+    let mut amp = false;
+    let mut quote = 0u8;
+    loop {
+        while k < b.len() && !TAG_STOPS[b[k] as usize] {
+            k += 1;
+        }
+        match (quote, *b.get(k)?) {
+            (_, b'&') => amp = true,
+            (0, b'>') => return Some((k, amp)),
+            (0, c) => quote = c,
+            (s, c) if s == c => quote = 0,
+            _ => {}
+        }
+        k += 1;
+    }
+}
+
+/// The first `<` or `&` at or after `i`: the first bytes by a loop (usually indentation), the rest by
+/// `memchr2`.
+fn next_markup(b: &[u8], i: usize) -> Option<usize> {
+    let near = b.len().min(i + 32);
+    match b[i..near].iter().position(|&c| c == b'<' || c == b'&') {
+        Some(k) => Some(i + k),
+        None => memchr::memchr2(b'<', b'&', &b[near..]).map(|k| near + k),
+    }
 }
 
 /// The document read without quick-xml, when it keeps to the subset that generated and most
@@ -436,8 +488,8 @@ fn parse_plain<'a>(body: &'a str, base: usize, arena: &'a Arena) -> Option<Optio
     let mut open: Vec<&[u8]> = Vec::new();
     let mut i = 0;
     loop {
-        // Text up to the next markup.
-        let next = memchr::memchr2(b'<', b'&', &b[i..]).map(|k| i + k);
+        // Text up to the next markup (usually a few bytes of indentation: a byte loop, then memchr).
+        let next = next_markup(b, i);
         let end = next.unwrap_or(b.len());
         if end > i {
             tree.text(body, base, i, end);
@@ -478,7 +530,9 @@ fn parse_plain<'a>(body: &'a str, base: usize, arena: &'a Arena) -> Option<Optio
                 i = p + k + 1;
             }
             b'/' => {
-                let k = memchr::memchr3(b'>', b'"', b'\'', &b[p..])?;
+                let k = b[p..]
+                    .iter()
+                    .position(|&c| matches!(c, b'>' | b'"' | b'\''))?;
                 if b[p + k] != b'>' {
                     return None;
                 }
@@ -499,22 +553,19 @@ fn parse_plain<'a>(body: &'a str, base: usize, arena: &'a Arena) -> Option<Optio
                     return None;
                 }
                 // The tag ends at the first `>` outside quotes.
-                let mut q = p;
-                let mut quote = 0u8;
-                let gt = loop {
-                    let k = q + memchr::memchr3(b'>', b'"', b'\'', &b[q..])?;
-                    match (quote, b[k]) {
-                        (0, b'>') => break k,
-                        (0, c) => quote = c,
-                        (s, c) if s == c => quote = 0,
-                        _ => {}
-                    }
-                    q = k + 1;
-                };
+                let (gt, amp) = tag_end(b, p)?;
                 let after = gt + 1;
                 let content = &body[p..gt];
+                let element = |raw: &'a str| {
+                    let decoded = if amp {
+                        decoded_attrs(raw, base + lt, arena)
+                    } else {
+                        &[]
+                    };
+                    plain_element(raw, base, lt, after, decoded)
+                };
                 match content.strip_suffix('/') {
-                    Some(raw) => tree.attach(start_element(raw, base, lt, after, arena)),
+                    Some(raw) => tree.attach(element(raw)),
                     None => {
                         if tree.stack.len() >= MAX_DEPTH {
                             return None;
@@ -522,7 +573,7 @@ fn parse_plain<'a>(body: &'a str, base: usize, arena: &'a Arena) -> Option<Optio
                         let cb = content.as_bytes();
                         let name_end = cb.iter().position(|&c| xml_space(c)).unwrap_or(cb.len());
                         open.push(&cb[..name_end]);
-                        tree.open(start_element(content, base, lt, after, arena));
+                        tree.open(element(content));
                     }
                 }
                 i = after;
@@ -867,12 +918,24 @@ mod tests {
             "<?pi x?><a><?pi?></a>",
             "",
             "just text",
+            // `&` in attribute values (the tag scan notes it; the values are decoded), in and out of
+            // quotes, next to a `>` and the other quote inside a value
+            "<a x=\"1&amp;2\" y='&lt;&#x41;'><b z=\"'>&quot;\"/></a>",
+            "<a x=\"&bogus;\" & y=\"2\"/>",
         ];
         for xml in taken {
             assert!(both(xml).is_some(), "{xml:?} should take the plain path");
         }
         let generated = crate::testgen::generate(8);
         assert!(both(&generated).is_some());
+        // Text and indentation longer than the byte loop's 32 bytes before the `memchr` search.
+        let long = format!(
+            "<a>{}<b>{}x</b>{}</a>",
+            " ".repeat(40),
+            "y".repeat(100),
+            "\n".repeat(33)
+        );
+        assert!(both(&long).is_some());
         let left = [
             "<a>x &amp; y</a>",
             "<a>&</a>",
