@@ -106,14 +106,11 @@ pub struct XmlError {
 impl<'a> Element<'a> {
     /// An attribute's value (entities decoded), by local name.
     pub fn attr(&self, name: &str) -> Option<&str> {
-        // Every attribute name the scan yields is a slice of the tag: a name that is nowhere in the tag
-        // (the usual case for optional attributes such as `negated`) is absent without a scan.
-        if !self.raw_tag.contains(name) {
-            return None;
-        }
+        // (No `str::contains(name)` pre-check: its substring search costs more than scanning a
+        // start tag's few attributes.)
         let raw = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
         let value = &self.raw_tag[raw.1..raw.2];
-        if !value.contains('&') {
+        if !has_amp(value) {
             return Some(value);
         }
         self.decoded_attrs
@@ -138,7 +135,7 @@ impl<'a> Element<'a> {
                 continue;
             }
             let value = &self.raw_tag[s..e];
-            out[k] = if value.contains('&') {
+            out[k] = if has_amp(value) {
                 let at = self.tag_start + 1 + s;
                 self.decoded_attrs
                     .iter()
@@ -159,7 +156,7 @@ impl<'a> Element<'a> {
         let (_, s, e) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
         let range = (self.tag_start + 1 + s, self.tag_start + 1 + e);
         let value = &self.raw_tag[s..e];
-        if !value.contains('&') {
+        if !has_amp(value) {
             return Some((value, range));
         }
         self.decoded_attrs
@@ -169,9 +166,6 @@ impl<'a> Element<'a> {
     }
     /// The byte range of an attribute's raw value in the document.
     pub fn attr_range(&self, name: &str) -> Option<(usize, usize)> {
-        if !self.raw_tag.contains(name) {
-            return None;
-        }
         let (_, start, end) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
         Some((self.tag_start + 1 + start, self.tag_start + 1 + end))
     }
@@ -219,6 +213,11 @@ impl<'a> Element<'a> {
             }
         })
     }
+}
+
+/// Whether an attribute value holds a `&` (values are short: a byte loop, no `memchr` call).
+fn has_amp(value: &str) -> bool {
+    value.bytes().any(|b| b == b'&')
 }
 
 /// Whether `text` is empty or only whitespace (`str::trim` would leave nothing): a byte loop for the
