@@ -319,7 +319,7 @@ fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<Hash
                         out.push(t.trim().to_ascii_uppercase());
                     }
                 }
-                for seg in d.text {
+                for seg in d.segments() {
                     for word in seg
                         .text
                         .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
