@@ -263,22 +263,19 @@ fn is_blank(text: &str) -> bool {
     }
 }
 
-/// The local part of a qualified name (`xhtml:p` -> `p`).
-fn local(name: &str) -> &str {
-    // A byte loop: names are short, so this beats `rfind` (memrchr) per call.
-    match name.bytes().rposition(|b| b == b':') {
-        Some(i) => &name[i + 1..],
-        None => name,
-    }
-}
-
-/// The element name at the start of a raw tag (`contact localId="1"` -> `contact`).
+/// The element name at the start of a raw tag, its local part (`contact localId="1"` -> `contact`,
+/// `xhtml:p` -> `p`).
 fn tag_name(raw: &str) -> &str {
-    let end = raw
-        .bytes()
-        .position(|b| b.is_ascii_whitespace() || b == b'/')
-        .unwrap_or(raw.len());
-    local(&raw[..end])
+    // One forward pass: the name ends at whitespace or `/`, its local part starts after its last `:`.
+    let b = raw.as_bytes();
+    let (mut start, mut end) = (0, 0);
+    while end < b.len() && !(b[end].is_ascii_whitespace() || b[end] == b'/') {
+        if b[end] == b':' {
+            start = end + 1;
+        }
+        end += 1;
+    }
+    &raw[start..end]
 }
 
 /// Decodes the five predefined entities and character references; `None` for anything else.
