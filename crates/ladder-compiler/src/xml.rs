@@ -61,7 +61,7 @@ pub enum SegKind {
 }
 
 /// A piece of character data: decoded text and the raw byte range it came from.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy)]
 pub struct TextSeg<'a> {
     /// The text, entities decoded (borrowed from the document, or decoded into the [`Arena`]).
     pub text: &'a str,
@@ -77,7 +77,7 @@ pub struct TextSeg<'a> {
 ///
 /// 80 bytes: the text segments and the decoded attributes, which most elements of a graphical body do
 /// not have, sit behind one pointer ([`Element::segments`]; a 10,000-rung project has 685,000 elements).
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Copy, Default)]
 pub struct Element<'a> {
     /// Local name (`xhtml:p` -> `p`), borrowed from the text.
     pub name: &'a str,
@@ -385,9 +385,7 @@ fn scan_attrs(raw_tag: &str) -> impl Iterator<Item = (&str, usize, usize)> {
 
 /// The attributes with entities in their value, decoded (`None` when there is none).
 fn decoded_attrs<'a>(raw_tag: &'a str, tag_pos: usize, arena: &'a Arena) -> Option<&'a Extra<'a>> {
-    if memchr::memchr(b'&', raw_tag.as_bytes()).is_none() {
-        return None;
-    }
+    memchr::memchr(b'&', raw_tag.as_bytes())?;
     let attrs: Vec<Attr<'a>> = scan_attrs(raw_tag)
         .filter(|(_, s, e)| raw_tag[*s..*e].contains('&'))
         .map(|(name, s, e)| Attr {
@@ -764,10 +762,9 @@ impl<'a> Builder<'a> {
             let text_start = self.text_starts.pop().unwrap_or(self.texts.len());
             let text_start = text_start.min(self.texts.len());
             if text_start < self.texts.len() {
-                let text = self
-                    .arena
-                    .0
-                    .alloc_slice_fill_iter(self.texts.drain(text_start..));
+                // Plain copies (the types are `Copy`): one `memcpy`, not an element-wise drain.
+                let text = self.arena.0.alloc_slice_copy(&self.texts[text_start..]);
+                self.texts.truncate(text_start);
                 el.extra = Some(self.arena.0.alloc(Extra {
                     text,
                     decoded_attrs: el.decoded_attrs(),
@@ -775,7 +772,8 @@ impl<'a> Builder<'a> {
             }
             let start = start.min(self.done.len());
             if start < self.done.len() {
-                el.children = self.arena.0.alloc_slice_fill_iter(self.done.drain(start..));
+                el.children = self.arena.0.alloc_slice_copy(&self.done[start..]);
+                self.done.truncate(start);
             }
             if let Some(end) = end {
                 el.end = end;
