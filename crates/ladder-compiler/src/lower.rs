@@ -226,11 +226,13 @@ impl<'i> BodyLowering<'i> {
                     } => (expr, *expr_span),
                     _ => continue,
                 };
-                let key: String = var
-                    .chars()
-                    .filter(|c| !c.is_whitespace())
-                    .collect::<String>()
-                    .to_ascii_uppercase();
+                // Blanks dropped, ASCII upper-cased: one pass, one allocation.
+                let mut key = String::with_capacity(var.len());
+                key.extend(
+                    var.chars()
+                        .filter(|c| !c.is_whitespace())
+                        .map(|c| c.to_ascii_uppercase()),
+                );
                 if key.is_empty() {
                     continue;
                 }
