@@ -207,7 +207,8 @@ pub fn declare(model: &Model, ty: &Type, name: &str) -> Option<String> {
     Some(format!("{} {name}{}", base(model, ty)?, dims(ty)))
 }
 
-/// An integer constant as a C expression of type `e` (wrapped into the type's range).
+/// An integer constant as a C expression of type `e` (wrapped into the type's range). The wrapped value
+/// fits 64 bits and is printed as one (`i128` formatting costs several times more).
 pub fn int_literal(e: Elementary, v: i128) -> String {
     let ct = elementary(e);
     match e {
@@ -222,7 +223,7 @@ pub fn int_literal(e: Elementary, v: i128) -> String {
                 } else {
                     (1u128 << bits) - 1
                 };
-            cfmt!("(({ct})UINT64_C({masked}))")
+            crate::cat(&["((", ct, ")UINT64_C(", &(masked as u64).to_string(), "))"])
         }
         _ => {
             let bits = e.bit_width().min(64);
@@ -241,9 +242,9 @@ pub fn int_literal(e: Elementary, v: i128) -> String {
             if sv == i64::MIN as i128 {
                 cfmt!("(({ct})(-INT64_C(9223372036854775807) - 1))")
             } else if sv < 0 {
-                cfmt!("(({ct})-INT64_C({}))", -sv)
+                crate::cat(&["((", ct, ")-INT64_C(", &((-sv) as i64).to_string(), "))"])
             } else {
-                cfmt!("(({ct})INT64_C({sv}))")
+                crate::cat(&["((", ct, ")INT64_C(", &(sv as i64).to_string(), "))"])
             }
         }
     }

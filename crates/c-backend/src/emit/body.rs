@@ -76,11 +76,23 @@ impl<'s, 'm> Body<'s, 'm> {
     /// [`Body::line`] for formatted text, written straight into the body (no `String` per line).
     pub fn line_fmt(&mut self, args: std::fmt::Arguments) {
         use std::fmt::Write as _;
+        self.push_indent();
+        let _ = self.out.write_fmt(args);
+        self.out.push('\n');
+    }
+    /// [`Body::line`] for a line made of `parts`, written straight into the body without a format
+    /// template (the per-instruction lines: `cr = value;`).
+    pub fn line_parts(&mut self, parts: &[&str]) {
+        self.push_indent();
+        for p in parts {
+            self.out.push_str(p);
+        }
+        self.out.push('\n');
+    }
+    fn push_indent(&mut self) {
         for _ in 0..self.indent.min(MAX_INDENT) {
             self.out.push_str("    ");
         }
-        let _ = self.out.write_fmt(args);
-        self.out.push('\n');
     }
     pub(super) fn temp(&mut self) -> String {
         self.temps += 1;
@@ -332,9 +344,9 @@ impl<'a> Gen<'a> {
             }
         };
         if cond == Condition::IfTrue {
-            b.line_fmt(format_args!("if ({cr}) {stmt}"));
+            b.line_parts(&["if (", cr, ") ", stmt]);
         } else {
-            b.line_fmt(format_args!("if (!{cr}) {stmt}"));
+            b.line_parts(&["if (!", cr, ") ", stmt]);
         }
     }
 
@@ -350,27 +362,27 @@ impl<'a> Gen<'a> {
         let span = i.span;
         match op {
             Op::Ld => {
-                let (Some(ty), Some(o)) = (info.cr_after.clone(), operand) else {
+                let (Some(ty), Some(o)) = (info.cr_after.as_ref(), operand) else {
                     return;
                 };
-                let Some(cr) = self.cr(b, &ty, span) else {
+                let Some(cr) = self.cr(b, ty, span) else {
                     return;
                 };
-                let Some(v) = self.value(b.scope, o, &ty) else {
+                let Some(v) = self.value(b.scope, o, ty) else {
                     return;
                 };
                 if let Type::Array { .. } = ty {
                     b.line(&format!("memcpy({cr}, {v}, sizeof {cr});"));
                     return;
                 }
-                let v = if negate { negated(&v, &ty) } else { v };
-                b.line_fmt(format_args!("{cr} = {v};"));
+                let v = if negate { negated(&v, ty) } else { v };
+                b.line_parts(&[&cr, " = ", &v, ";"]);
             }
             Op::St => {
-                let (Some(ty), Some(o)) = (info.cr_before.clone(), operand) else {
+                let (Some(ty), Some(o)) = (info.cr_before.as_ref(), operand) else {
                     return;
                 };
-                let Some(cr) = self.cr(b, &ty, span) else {
+                let Some(cr) = self.cr(b, ty, span) else {
                     return;
                 };
                 let Some(place) = self.operand_place(b.scope, o) else {
@@ -381,9 +393,9 @@ impl<'a> Gen<'a> {
                     return;
                 }
                 let v = if negate {
-                    convert_owned(negated(&cr, &ty), &ty, place.ty())
+                    convert_owned(negated(&cr, ty), ty, place.ty())
                 } else {
-                    convert(&cr, &ty, place.ty())
+                    convert(&cr, ty, place.ty())
                 };
                 self.store_line(b, &place, &v);
             }
@@ -407,62 +419,62 @@ impl<'a> Gen<'a> {
                 };
                 let one = convert(if op == Op::S { "1" } else { "0" }, &Type::BOOL, place.ty());
                 let stmt = self.store(&place, &one);
-                b.line_fmt(format_args!("if ({cr}) {{ {stmt} }}"));
+                b.line_parts(&["if (", &cr, ") { ", &stmt, " }"]);
             }
             Op::Not => {
-                let Some(ty) = info.cr_before.clone() else {
+                let Some(ty) = info.cr_before.as_ref() else {
                     return;
                 };
-                let Some(cr) = self.cr(b, &ty, span) else {
+                let Some(cr) = self.cr(b, ty, span) else {
                     return;
                 };
-                let v = negated(&cr, &ty);
-                b.line_fmt(format_args!("{cr} = {v};"));
+                let v = negated(&cr, ty);
+                b.line_parts(&[&cr, " = ", &v, ";"]);
             }
             _ => {
                 let (Some(before), Some(after), Some(o)) =
-                    (info.cr_before.clone(), info.cr_after.clone(), operand)
+                    (info.cr_before.as_ref(), info.cr_after.as_ref(), operand)
                 else {
                     return;
                 };
-                let common = std_common_type(info, &before);
-                let Some(a) = self.cr(b, &before, span) else {
+                let common = std_common_type(info, before);
+                let Some(a) = self.cr(b, before, span) else {
                     return;
                 };
-                let a = convert(&a, &before, &common);
-                let operand_ty = self.operand_ty_for(info, &common, op);
-                let Some(v) = self.value(b.scope, o, &operand_ty) else {
+                let a = convert(&a, before, common);
+                let operand_ty = self.operand_ty_for(info, common, op);
+                let Some(v) = self.value(b.scope, o, operand_ty) else {
                     return;
                 };
-                let v = if negate { negated(&v, &operand_ty) } else { v };
-                let Some(res) = self.binary(span, op, &a, &common, &v, &operand_ty, &after) else {
+                let v = if negate { negated(&v, operand_ty) } else { v };
+                let Some(res) = self.binary(span, op, &a, common, &v, operand_ty, after) else {
                     return;
                 };
-                let Some(cr) = self.cr(b, &after, span) else {
+                let Some(cr) = self.cr(b, after, span) else {
                     return;
                 };
-                b.line_fmt(format_args!("{cr} = {res};"));
+                b.line_parts(&[&cr, " = ", &res, ";"]);
             }
         }
     }
 
     /// The type to read an operator's operand as: the instantiated generic type, except for the
     /// time overloads (`MUL_TIME` by a number) where the operand keeps its own numeric type.
-    fn operand_ty_for(&self, info: &InstrFacts, common: &Type, op: Op) -> Type {
+    fn operand_ty_for<'t>(&self, info: &'t InstrFacts, common: &'t Type, op: Op) -> &'t Type {
         if let Some(t) = &info.operand {
             if matches!(op, Op::Mul | Op::Div)
                 && common.elementary().is_some_and(|e| e.is_duration())
             {
-                return t.clone();
+                return t;
             }
             if common.is_error() {
-                return t.clone();
+                return t;
             }
             if matches!(op, Op::Sub | Op::Add) && t.elementary().is_some_and(|e| e.is_duration()) {
-                return t.clone();
+                return t;
             }
         }
-        common.clone()
+        common
     }
 
     /// The place an operand denotes (variables and direct addresses).
@@ -543,7 +555,9 @@ impl<'a> Gen<'a> {
                 let ct = ctypes::base(self.model, result)?;
                 let v = convert_cow(v, vty, result);
                 let a = convert_cow(a, aty, result);
-                Some(cfmt!("(({ct})(({a}) {c} ({v})))"))
+                Some(crate::cat(&[
+                    "((", &ct, ")((", &a, ") ", c, " (", &v, ")))",
+                ]))
             }
             "GT" | "GE" | "EQ" | "NE" | "LE" | "LT" => {
                 let lname = lower_op(name);
@@ -561,7 +575,17 @@ impl<'a> Gen<'a> {
                     } else {
                         "ladderc_str_cmpv"
                     };
-                    return Some(cfmt!("((IEC_BOOL)({f}({a}, {v}) {c} 0))"));
+                    return Some(crate::cat(&[
+                        "((IEC_BOOL)(",
+                        f,
+                        "(",
+                        a,
+                        ", ",
+                        v,
+                        ") ",
+                        c,
+                        " 0))",
+                    ]));
                 }
                 let e = match aty {
                     Type::Enum(_) => E::Dint,
@@ -575,7 +599,9 @@ impl<'a> Gen<'a> {
                 };
                 let h = ctypes::ordered_helper_type(e);
                 let v = convert_cow(v, vty, aty);
-                Some(cfmt!("ladderc_{lname}_{h}(({h})({a}), ({h})({v}))"))
+                Some(crate::cat(&[
+                    "ladderc_", &lname, "_", h, "((", h, ")(", a, "), (", h, ")(", &v, "))",
+                ]))
             }
             "ADD" | "SUB" | "MUL" | "DIV" | "MOD" => {
                 let re = match result {
@@ -595,7 +621,15 @@ impl<'a> Gen<'a> {
                     let a = convert_cow(a, aty, result);
                     let v = convert_cow(v, vty, result);
                     return Some(match name {
-                        "MOD" => cfmt!("(({rt})fmod((double)({a}), (double)({v})))"),
+                        "MOD" => crate::cat(&[
+                            "((",
+                            rt,
+                            ")fmod((double)(",
+                            &a,
+                            "), (double)(",
+                            &v,
+                            ")))",
+                        ]),
                         _ => {
                             let c = match name {
                                 "ADD" => "+",
@@ -603,7 +637,7 @@ impl<'a> Gen<'a> {
                                 "MUL" => "*",
                                 _ => "/",
                             };
-                            cfmt!("(({rt})(({a}) {c} ({v})))")
+                            crate::cat(&["((", rt, ")((", &a, ") ", c, " (", &v, ")))"])
                         }
                     });
                 }
@@ -617,7 +651,23 @@ impl<'a> Gen<'a> {
                     ));
                 }
                 let h = ctypes::arith_helper_type(re)?;
-                Some(cfmt!("(({rt})ladderc_{lname}_{h}(({h})({a}), ({h})({v})))"))
+                Some(crate::cat(&[
+                    "((",
+                    rt,
+                    ")ladderc_",
+                    &lname,
+                    "_",
+                    h,
+                    "((",
+                    h,
+                    ")(",
+                    a,
+                    "), (",
+                    h,
+                    ")(",
+                    v,
+                    ")))",
+                ]))
             }
             _ => {
                 self.unsupported(span, cfmt!("the operator {name}"));
@@ -658,7 +708,7 @@ impl<'a> Gen<'a> {
                 return None;
             };
             let decl = ctypes::declare(self.model, &before, &d).unwrap_or_default();
-            b.line_fmt(format_args!("{decl} = {cr};"));
+            b.line_parts(&[&decl, " = ", &cr, ";"]);
             Some(before)
         };
         if let Some(o) = operand {
@@ -675,7 +725,7 @@ impl<'a> Gen<'a> {
                 .or_else(|| info.operand.clone())
                 .unwrap_or_else(|| self.operand_type(b.scope, o, None));
             if let (Some(cr), Some(v)) = (self.cr(b, &ty, o.span()), self.value(b.scope, o, &ty)) {
-                b.line_fmt(format_args!("{cr} = {v};"));
+                b.line_parts(&[&cr, " = ", &v, ";"]);
             }
         }
         Some(Deferred {
@@ -702,14 +752,14 @@ impl<'a> Gen<'a> {
                     None => Some(convert(&v, &vt, &after)),
                     Some(before) => {
                         let common = std_common_type(&d.info, before);
-                        let a = convert(&d.saved, before, &common);
-                        let vty = self.operand_ty_for(&d.info, &common, d.op);
-                        let v = convert(&v, &vt, &vty);
-                        self.binary(span, d.op, &a, &common, &v, &vty, &after)
+                        let a = convert(&d.saved, before, common);
+                        let vty = self.operand_ty_for(&d.info, common, d.op);
+                        let v = convert(&v, &vt, vty);
+                        self.binary(span, d.op, &a, common, &v, vty, &after)
                     }
                 };
                 if let (Some(res), Some(cr)) = (res, self.cr(b, &after, span)) {
-                    b.line_fmt(format_args!("{cr} = {res};"));
+                    b.line_parts(&[&cr, " = ", &res, ";"]);
                 }
             }
         }
@@ -724,10 +774,10 @@ fn fb_input_name(op: FbInputOp) -> &'static str {
 }
 
 /// The instantiated type of an operator from the model (falls back to the CR type).
-fn std_common_type(info: &InstrFacts, before: &Type) -> Type {
+fn std_common_type<'t>(info: &'t InstrFacts, before: &'t Type) -> &'t Type {
     match &info.callee {
-        Some(Callee::Std { ty, .. }) if !ty.is_error() => ty.clone(),
-        _ => before.clone(),
+        Some(Callee::Std { ty, .. }) if !ty.is_error() => ty,
+        _ => before,
     }
 }
 

@@ -57,6 +57,9 @@ pub struct Gen<'a> {
     pub(super) instr_cursor: usize,
     /// Bodies of more instruction units are split into several C functions (see `split`).
     pub(super) part_limit: usize,
+    /// Whether the model has an enumerated type: without one no operand name is an enumerated value,
+    /// and the per-operand check is skipped.
+    pub(super) has_enums: bool,
 }
 
 impl<'a> Gen<'a> {
@@ -151,6 +154,10 @@ pub fn generate(
         quiet: 0,
         instr_cursor: 0,
         part_limit: split::part_limit(),
+        has_enums: model
+            .types
+            .iter()
+            .any(|t| matches!(t.def, UserTypeDef::Enum { .. })),
         address_spans: collect_address_spans(units),
         member_index: Default::default(),
         methods: ext.methods.clone(),

@@ -549,6 +549,9 @@ impl Gen<'_> {
         name: &il_frontend::ast::Ident,
         context: Option<&Type>,
     ) -> Option<(il_frontend::sema::TypeId, usize)> {
+        if !self.has_enums {
+            return None;
+        }
         if with_upper(&name.name, |key| {
             scope.vars.contains_key(key) || self.free_globals.contains_key(key)
         }) {

@@ -108,8 +108,15 @@ impl Body<'_, '_> {
             };
         }
         let t = if !known.is_empty() {
-            let types: Vec<Type> = known.iter().map(|k| k.0.clone()).collect();
-            match common_type(&types) {
+            // all of one type (the usual case): that is the common type, without a list of copies
+            let same = known.iter().all(|k| k.0 == known[0].0);
+            let common = if same {
+                common_type(std::slice::from_ref(&known[0].0))
+            } else {
+                let types: Vec<Type> = known.iter().map(|k| k.0.clone()).collect();
+                common_type(&types)
+            };
+            match common {
                 Some(t) => {
                     if !class.contains(&t) {
                         let tn = self.a.type_name(&t);

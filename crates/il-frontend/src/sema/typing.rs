@@ -65,6 +65,10 @@ pub fn assignable(from: &Type, to: &Type) -> bool {
 /// The type all `types` widen to, if one of them is that type (`INT` and `DINT` give `DINT`).
 pub fn common_type(types: &[Type]) -> Option<Type> {
     let first = types.iter().find(|t| !t.is_error())?;
+    // The usual case, without the list of normalised types: all the same type.
+    if types.iter().filter(|t| !t.is_error()).all(|t| t == first) {
+        return Some(first.clone());
+    }
     // Subranges count as their base.
     let norm = |t: &Type| match t.elementary() {
         Some(e) if !t.is_string() => Type::Elementary(e),
