@@ -284,14 +284,19 @@ fn lower_actions<'e, 'a>(
 }
 
 /// Whether a name is one of `pou`'s variables or a global of the project (case-insensitive).
-fn var_test<'i>(pou: &Pou, index: &'i Index) -> impl Fn(&str) -> bool + 'i {
-    let pou_vars: HashSet<String> = pou
-        .var_blocks
-        .iter()
-        .flat_map(|b| b.vars.iter())
-        .map(|v| v.name.key())
-        .collect();
+///
+/// The set of the POU's names is built on the first question: only bodies that call actions ask
+/// (a 10,000-rung program has 32,500 variables and no action).
+fn var_test<'p>(pou: &'p Pou, index: &'p Index) -> impl Fn(&str) -> bool + 'p {
+    let pou_vars: std::cell::OnceCell<HashSet<String>> = std::cell::OnceCell::new();
     move |n: &str| {
+        let pou_vars = pou_vars.get_or_init(|| {
+            pou.var_blocks
+                .iter()
+                .flat_map(|b| b.vars.iter())
+                .map(|v| v.name.key())
+                .collect()
+        });
         let k = n.to_ascii_uppercase();
         pou_vars.contains(&k) || index.globals.contains_key(&k)
     }

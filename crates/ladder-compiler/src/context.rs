@@ -49,7 +49,7 @@ impl<'a> Ctx<'a> {
     }
     /// The span of an element's text content (first to last segment), or its start tag when empty.
     pub fn text_span(&self, e: &Element) -> Span {
-        match (e.text.first(), e.text.last()) {
+        match (e.segments().first(), e.segments().last()) {
             (Some(f), Some(l)) => {
                 // Trim surrounding whitespace so the excerpt underlines the words.
                 let raw = &self.xml[f.start..l.end];

@@ -403,10 +403,12 @@ pub fn var_block(ctx: &mut Ctx, list: &Element, kind: VarKind) -> VarBlock {
         list.attr(n)
             .is_some_and(|v| v.trim() == "true" || v.trim() == "1")
     };
-    let vars = list
-        .children_named("variable")
-        .filter_map(|v| variable(ctx, v))
-        .collect();
+    // Sized once (a 10,000-rung program declares 32,500 variables in one list): no regrowth copies.
+    let mut vars = Vec::with_capacity(list.children.len());
+    vars.extend(
+        list.children_named("variable")
+            .filter_map(|v| variable(ctx, v)),
+    );
     // a CODESYS/TwinCAT global variable list has a name (`GVL.x` reaches its members)
     let name = if kind == VarKind::Global {
         list.attr("name")

@@ -22,7 +22,7 @@ pub struct EmbeddedText {
 /// The element that holds the body's text: the first one (the `<IL>` itself or a descendant) with
 /// non-blank character data.
 fn holder<'e, 'a>(e: &'e Element<'a>) -> Option<&'e Element<'a>> {
-    if e.text.iter().any(|s| !s.text.trim().is_empty()) {
+    if e.segments().iter().any(|s| !s.text.trim().is_empty()) {
         return Some(e);
     }
     e.children.iter().find_map(holder)
@@ -36,10 +36,10 @@ pub fn embedded_text(e: &Element) -> EmbeddedText {
             base: e.tag_end,
         };
     };
-    let base = h.text.first().map(|s| s.start).unwrap_or(h.tag_end);
+    let base = h.segments().first().map(|s| s.start).unwrap_or(h.tag_end);
     let mut text = String::new();
     let mut in_string: Option<char> = None;
-    for seg in h.text {
+    for seg in h.segments() {
         let want = seg.start - base;
         while text.len() < want {
             text.push(' ');

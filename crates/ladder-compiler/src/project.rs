@@ -291,6 +291,11 @@ fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<Hash
         return None;
     }
     let names: HashSet<String> = pous.iter().map(|(_, p)| p.name.key()).collect();
+    if names.len() <= 1 {
+        // One POU name: what it references can only be itself or no POU, and the caller asks only
+        // whether a POU is used: that is whether a configuration instantiates it (no body walk).
+        return Some(roots.into_iter().collect());
+    }
     let mut refs: HashMap<String, Vec<String>> = HashMap::new();
     for (el, p) in pous {
         let mut out: Vec<String> = Vec::new();
@@ -314,7 +319,7 @@ fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<Hash
                         out.push(t.trim().to_ascii_uppercase());
                     }
                 }
-                for seg in d.text {
+                for seg in d.segments() {
                     for word in seg
                         .text
                         .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))

@@ -173,7 +173,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                 if let Some(id) = e.attr("localId") {
                     all_ids.insert(id.trim().to_string());
                 }
-                network_elements.push(e.clone());
+                network_elements.push(*e);
                 continue;
             }
         };

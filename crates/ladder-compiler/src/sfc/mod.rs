@@ -441,7 +441,7 @@ fn networks(
     let pou_name = pou.name.name.clone();
     let body = Element {
         children: &chart.network_elements,
-        ..sfc.clone()
+        ..*sfc
     };
     let mut g = graph::read(ctx, &body, &pou_name);
     let ids: std::collections::HashMap<String, usize> = g

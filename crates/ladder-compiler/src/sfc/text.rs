@@ -72,20 +72,21 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
 
 /// An element holding `src[r]` as its text (an `<ST>` or `<IL>` body).
 fn text_element<'a>(arena: &'a Arena, name: &'a str, src: &'a str, r: Range<usize>) -> Element<'a> {
-    Element {
+    let el = Element {
         name,
         raw_tag: name,
-        text: arena.slice(vec![TextSeg {
-            text: src.get(r.clone()).unwrap_or(""),
-            start: r.start,
-            end: r.end,
-            kind: SegKind::CData,
-        }]),
         tag_start: r.start,
         tag_end: r.start,
         end: r.end,
         ..Default::default()
-    }
+    };
+    let text = arena.slice(vec![TextSeg {
+        text: src.get(r.clone()).unwrap_or(""),
+        start: r.start,
+        end: r.end,
+        kind: SegKind::CData,
+    }]);
+    Element::with_segments(el, text, arena)
 }
 
 fn element<'a>(name: &'a str, raw_tag: &'a str, at: Range<usize>) -> Element<'a> {
