@@ -725,8 +725,9 @@ pub enum InstrKind {
         op: Op,
         /// The `N` modifier (`ANDN(`).
         negate: bool,
-        /// The operand written on the opening line (an implicit `LD`).
-        operand: Option<Operand>,
+        /// The operand written on the opening line (an implicit `LD`); boxed, as a deferred operator is
+        /// rarer than a simple one (see [`IlStmt`]'s size).
+        operand: Option<Box<Operand>>,
         /// The nested instructions up to the matching `)`.
         body: Vec<IlStmt>,
         /// The span of the closing `)`.
@@ -748,8 +749,8 @@ pub enum InstrKind {
     Call {
         /// Unconditional, or on a TRUE/FALSE current result.
         cond: Condition,
-        /// The FB instance called.
-        instance: VarRef,
+        /// The FB instance called (boxed: a call is rarer than a simple instruction, see [`IlStmt`]'s size).
+        instance: Box<VarRef>,
         /// The parameter list, if any.
         args: CallArgs,
     },
@@ -757,8 +758,9 @@ pub enum InstrKind {
     FunctionCall {
         /// The function's name.
         name: Ident,
-        /// Arguments after the current result (the current result is the first input).
-        args: CallArgs,
+        /// Arguments after the current result (the current result is the first input); boxed, see
+        /// [`IlStmt`]'s size.
+        args: Box<CallArgs>,
     },
     /// `S1 inst`, `IN tmr`, `PT tmr` ...
     FbInput {
@@ -884,6 +886,6 @@ mod tests {
     fn statements_and_operands_stay_small() {
         assert!(std::mem::size_of::<Operand>() <= std::mem::size_of::<VarRef>());
         assert!(std::mem::size_of::<Option<Operand>>() <= 80);
-        assert!(std::mem::size_of::<IlStmt>() <= 136);
+        assert!(std::mem::size_of::<IlStmt>() <= 104);
     }
 }

@@ -1959,7 +1959,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             InstrKind::Deferred {
                 op,
                 negate: false,
-                operand,
+                operand: operand.map(Box::new),
                 body,
                 close: span,
             },
@@ -2178,7 +2178,7 @@ fn call(cond: Condition, inst: VarRef, args: Vec<(String, Operand)>, span: Span)
     instr(
         InstrKind::Call {
             cond,
-            instance: inst,
+            instance: Box::new(inst),
             args,
         },
         span,
@@ -2217,7 +2217,7 @@ fn emit_function(
                             InstrKind::Deferred {
                                 op: Op::And,
                                 negate: false,
-                                operand: Some(pair[0].clone()),
+                                operand: Some(Box::new(pair[0].clone())),
                                 body: vec![simple(*o, false, Some(pair[1].clone()), span)],
                                 close: span,
                             },
@@ -2236,11 +2236,11 @@ fn emit_function(
             out.push(instr(
                 InstrKind::FunctionCall {
                     name: name.clone(),
-                    args: if rest.is_empty() {
+                    args: Box::new(if rest.is_empty() {
                         CallArgs::None
                     } else {
                         CallArgs::NonFormal(rest)
-                    },
+                    }),
                 },
                 span,
             ));
@@ -2249,7 +2249,7 @@ fn emit_function(
             out.push(instr(
                 InstrKind::FunctionCall {
                     name: name.clone(),
-                    args: CallArgs::Formal(
+                    args: Box::new(CallArgs::Formal(
                         args.into_iter()
                             .map(|(n, v)| FormalArg {
                                 name: n,
@@ -2258,7 +2258,7 @@ fn emit_function(
                                 value: v,
                             })
                             .collect(),
-                    ),
+                    )),
                 },
                 span,
             ));

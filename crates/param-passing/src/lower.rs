@@ -795,7 +795,7 @@ impl PouLowering<'_> {
                         out.push(instr(
                             InstrKind::FunctionCall {
                                 name: id("BOOL_TO_BYTE", span),
-                                args: CallArgs::None,
+                                args: Box::new(CallArgs::None),
                             },
                             span,
                         ));

@@ -338,11 +338,11 @@ impl<'d> PouLowering<'d> {
         out.push(instr(
             InstrKind::Call {
                 cond: Condition::Always,
-                instance: VarRef {
+                instance: Box::new(VarRef {
                     base: Ident::new(sig.name.clone(), span),
                     accessors: Vec::new(),
                     span,
-                },
+                }),
                 args: CallArgs::None,
             },
             span,
@@ -914,7 +914,7 @@ impl<'d> PouLowering<'d> {
                             InstrKind::Deferred {
                                 op: Op::And,
                                 negate: false,
-                                operand: Some(sel.clone()),
+                                operand: Some(Box::new(sel.clone())),
                                 body: vec![simple(Op::Le, false, Some(hi), at)],
                                 close: at,
                             },
@@ -1070,7 +1070,7 @@ impl<'d> PouLowering<'d> {
                     InstrKind::Deferred {
                         op: Op::And,
                         negate: false,
-                        operand: Some(i.clone()),
+                        operand: Some(Box::new(i.clone())),
                         body: vec![simple(Op::Gt, false, Some(limit.clone()), at)],
                         close: at,
                     },
@@ -1080,14 +1080,14 @@ impl<'d> PouLowering<'d> {
                     InstrKind::Deferred {
                         op: Op::Or,
                         negate: false,
-                        operand: Some(step.clone()),
+                        operand: Some(Box::new(step.clone())),
                         body: vec![
                             simple(Op::Lt, false, Some(int_lit(0, at)), at),
                             instr(
                                 InstrKind::Deferred {
                                     op: Op::And,
                                     negate: false,
-                                    operand: Some(i.clone()),
+                                    operand: Some(Box::new(i.clone())),
                                     body: vec![simple(Op::Lt, false, Some(limit.clone()), at)],
                                     close: at,
                                 },
@@ -1164,7 +1164,7 @@ impl<'d> PouLowering<'d> {
         out.push(instr(
             InstrKind::Call {
                 cond: Condition::Always,
-                instance,
+                instance: Box::new(instance),
                 args,
             },
             span,
@@ -1406,7 +1406,7 @@ impl<'d> PouLowering<'d> {
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: Ident::new(format!("LINT_TO_{}", real.name()), e.span),
-                        args: CallArgs::None,
+                        args: Box::new(CallArgs::None),
                     },
                     e.span,
                 ));
@@ -1534,7 +1534,7 @@ impl<'d> PouLowering<'d> {
                 Then::Expt(exp, span) => out.push(instr(
                     InstrKind::FunctionCall {
                         name: Ident::new("EXPT", span),
-                        args: CallArgs::NonFormal(vec![exp]),
+                        args: Box::new(CallArgs::NonFormal(vec![exp])),
                     },
                     span,
                 )),
@@ -1586,7 +1586,7 @@ impl<'d> PouLowering<'d> {
             InstrKind::Deferred {
                 op,
                 negate: false,
-                operand,
+                operand: operand.map(Box::new),
                 body,
                 close: right.span,
             },
@@ -1676,11 +1676,11 @@ impl<'d> PouLowering<'d> {
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: name.clone(),
-                        args: if ops.is_empty() {
+                        args: Box::new(if ops.is_empty() {
                             CallArgs::None
                         } else {
                             CallArgs::NonFormal(ops)
-                        },
+                        }),
                     },
                     span,
                 ));
@@ -1702,7 +1702,7 @@ impl<'d> PouLowering<'d> {
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: name.clone(),
-                        args,
+                        args: Box::new(args),
                     },
                     span,
                 ));
