@@ -540,7 +540,7 @@ fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt 
 fn var_operand(name: &str, span: Span) -> Operand {
     Operand::Var(VarRef {
         base: Ident::new(name, span),
-        accessors: Vec::new(),
+        accessors: Default::default(),
         span,
     })
 }
@@ -1027,7 +1027,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         });
         let inst = VarRef {
             base: Ident::new(&name, span),
-            accessors: Vec::new(),
+            accessors: Default::default(),
             span,
         };
         self.val(
@@ -2004,7 +2004,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     let clk_op = self.operand(*clk, out);
                     let inst = VarRef {
                         base: Ident::new(inst, *span),
-                        accessors: Vec::new(),
+                        accessors: Default::default(),
                         span: *span,
                     };
                     out.push(call(

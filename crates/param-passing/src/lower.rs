@@ -195,7 +195,7 @@ fn id(name: &str, span: Span) -> Ident {
 fn var(name: &str, span: Span) -> Operand {
     Operand::Var(VarRef {
         base: id(name, span),
-        accessors: vec![],
+        accessors: Default::default(),
         span,
     })
 }

@@ -105,7 +105,7 @@ fn int_lit(v: i128, span: Span) -> Operand {
 fn var_operand(name: &Ident) -> Operand {
     Operand::Var(VarRef {
         base: name.clone(),
-        accessors: Vec::new(),
+        accessors: Default::default(),
         span: name.span,
     })
 }
@@ -340,7 +340,7 @@ impl<'d> PouLowering<'d> {
                 cond: Condition::Always,
                 instance: Box::new(VarRef {
                     base: Ident::new(sig.name.clone(), span),
-                    accessors: Vec::new(),
+                    accessors: Default::default(),
                     span,
                 }),
                 args: CallArgs::None,
@@ -1311,7 +1311,7 @@ impl<'d> PouLowering<'d> {
         }
         Some(Operand::Var(VarRef {
             base,
-            accessors,
+            accessors: accessors.into(),
             span: p.span,
         }))
     }
@@ -1356,7 +1356,7 @@ impl<'d> PouLowering<'d> {
         }
         Some(Operand::Var(VarRef {
             base,
-            accessors,
+            accessors: accessors.into(),
             span: p.span,
         }))
     }

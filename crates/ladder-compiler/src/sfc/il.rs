@@ -24,7 +24,7 @@ pub fn var(name: &str, span: Span) -> Operand {
 pub fn var_ref(name: &str, span: Span) -> VarRef {
     VarRef {
         base: Ident::new(name, span),
-        accessors: Vec::new(),
+        accessors: Default::default(),
         span,
     }
 }
@@ -33,7 +33,7 @@ pub fn var_ref(name: &str, span: Span) -> VarRef {
 pub fn field(base: &str, f: &str, span: Span) -> Operand {
     Operand::Var(VarRef {
         base: Ident::new(base, span),
-        accessors: vec![Accessor::Field(Ident::new(f, span))],
+        accessors: vec![Accessor::Field(Ident::new(f, span))].into(),
         span,
     })
 }
