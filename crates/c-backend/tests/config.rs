@@ -244,7 +244,7 @@ fn globals(f: diagnostics::FileId, vars: Vec<VarDecl>) -> Vec<VarBlock> {
 fn var_operand(f: diagnostics::FileId, name: &str) -> Operand {
     Operand::Var(VarRef {
         base: ident(f, name),
-        accessors: Vec::new(),
+        accessors: Default::default(),
         span: diagnostics::Span::new(f, 0, 0),
     })
 }

@@ -12,7 +12,7 @@ fn sp(i: usize) -> Span {
 fn var(name: &str, i: usize) -> Operand {
     Operand::Var(VarRef {
         base: Ident::new(name, sp(i)),
-        accessors: Vec::new(),
+        accessors: Default::default(),
         span: sp(i),
     })
 }

@@ -150,7 +150,7 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
                 let s = a.name.span;
                 let flag = VarRef {
                     base: Ident::new(flag_name(&a.name), s),
-                    accessors: Vec::new(),
+                    accessors: Default::default(),
                     span: s,
                 };
                 let label = Ident::new(

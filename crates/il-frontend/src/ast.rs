@@ -290,9 +290,89 @@ pub struct VarRef {
     /// The variable (or FB instance) named first.
     pub base: Ident,
     /// The `.field` and `[index]` parts after the base, in order.
-    pub accessors: Vec<Accessor>,
+    pub accessors: Accessors,
     /// The whole access text.
     pub span: Span,
+}
+
+/// The `.field` and `[index]` parts of a [`VarRef`]: a `Vec<Accessor>` held in one pointer, and no
+/// allocation when empty (most operands are plain variables). It reads as a `Vec` (`Deref`); writing
+/// through `DerefMut` (`push`, `pop` ...) allocates the list if it has none. `Debug` and `Serialize` print
+/// the list, as a `Vec` would. Build one with `Vec::into` or [`Accessors::default`] (empty).
+#[derive(Clone, Default)]
+// The box is the point: one word in every operand instead of a `Vec`'s three (or a boxed slice's two); the
+// extra allocation is paid only by the accesses that have parts.
+#[allow(clippy::box_collection)]
+pub struct Accessors(Option<Box<Vec<Accessor>>>);
+
+/// What an empty [`Accessors`] reads as.
+static NO_ACCESSORS: Vec<Accessor> = Vec::new();
+
+impl Accessors {
+    /// The parts as a `Vec`, taking them out.
+    pub fn into_vec(self) -> Vec<Accessor> {
+        self.0.map(|b| *b).unwrap_or_default()
+    }
+}
+
+impl std::ops::Deref for Accessors {
+    type Target = Vec<Accessor>;
+    fn deref(&self) -> &Vec<Accessor> {
+        self.0.as_deref().unwrap_or(&NO_ACCESSORS)
+    }
+}
+
+impl std::ops::DerefMut for Accessors {
+    fn deref_mut(&mut self) -> &mut Vec<Accessor> {
+        self.0.get_or_insert_with(Box::default)
+    }
+}
+
+impl From<Vec<Accessor>> for Accessors {
+    fn from(v: Vec<Accessor>) -> Self {
+        if v.is_empty() {
+            Accessors(None)
+        } else {
+            Accessors(Some(Box::new(v)))
+        }
+    }
+}
+
+impl FromIterator<Accessor> for Accessors {
+    fn from_iter<I: IntoIterator<Item = Accessor>>(iter: I) -> Self {
+        iter.into_iter().collect::<Vec<_>>().into()
+    }
+}
+
+impl<'a> IntoIterator for &'a Accessors {
+    type Item = &'a Accessor;
+    type IntoIter = std::slice::Iter<'a, Accessor>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
+impl<'a> IntoIterator for &'a mut Accessors {
+    type Item = &'a mut Accessor;
+    type IntoIter = std::slice::IterMut<'a, Accessor>;
+    fn into_iter(self) -> Self::IntoIter {
+        match &mut self.0 {
+            Some(v) => v.iter_mut(),
+            None => [].iter_mut(),
+        }
+    }
+}
+
+impl std::fmt::Debug for Accessors {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Debug::fmt(&**self, f)
+    }
+}
+
+impl Serialize for Accessors {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        (**self).serialize(s)
+    }
 }
 
 /// One step of a variable access after its base name.
@@ -725,8 +805,9 @@ pub enum InstrKind {
         op: Op,
         /// The `N` modifier (`ANDN(`).
         negate: bool,
-        /// The operand written on the opening line (an implicit `LD`).
-        operand: Option<Operand>,
+        /// The operand written on the opening line (an implicit `LD`); boxed, as a deferred operator is
+        /// rarer than a simple one (see [`IlStmt`]'s size).
+        operand: Option<Box<Operand>>,
         /// The nested instructions up to the matching `)`.
         body: Vec<IlStmt>,
         /// The span of the closing `)`.
@@ -748,8 +829,8 @@ pub enum InstrKind {
     Call {
         /// Unconditional, or on a TRUE/FALSE current result.
         cond: Condition,
-        /// The FB instance called.
-        instance: VarRef,
+        /// The FB instance called (boxed: a call is rarer than a simple instruction, see [`IlStmt`]'s size).
+        instance: Box<VarRef>,
         /// The parameter list, if any.
         args: CallArgs,
     },
@@ -757,8 +838,9 @@ pub enum InstrKind {
     FunctionCall {
         /// The function's name.
         name: Ident,
-        /// Arguments after the current result (the current result is the first input).
-        args: CallArgs,
+        /// Arguments after the current result (the current result is the first input); boxed, see
+        /// [`IlStmt`]'s size.
+        args: Box<CallArgs>,
     },
     /// `S1 inst`, `IN tmr`, `PT tmr` ...
     FbInput {
@@ -879,11 +961,62 @@ mod tests {
     use super::*;
 
     /// A body holds one `IlStmt` per line (the 1,000,000-line POU of issue #16): literals and typed
-    /// enumerated values are boxed so that an operand is no larger than a variable access.
+    /// enumerated values are boxed so that an operand is no larger than a variable access, a variable
+    /// access keeps its accessors behind one pointer, and the rare big instructions (deferred operators,
+    /// `CAL`, function calls) box their payloads. The sizes are pinned so that they cannot grow back
+    /// unnoticed (they were 80-byte operands and 136-byte statements).
     #[test]
     fn statements_and_operands_stay_small() {
-        assert!(std::mem::size_of::<Operand>() <= std::mem::size_of::<VarRef>());
-        assert!(std::mem::size_of::<Option<Operand>>() <= 80);
-        assert!(std::mem::size_of::<IlStmt>() <= 136);
+        use std::mem::size_of;
+        assert_eq!(size_of::<Accessors>(), 8);
+        assert!(size_of::<VarRef>() <= 64, "{}", size_of::<VarRef>());
+        assert!(size_of::<Operand>() <= size_of::<VarRef>());
+        assert!(size_of::<Option<Operand>>() <= 64);
+        assert!(size_of::<IlStmt>() <= 88, "{}", size_of::<IlStmt>());
+    }
+
+    /// `Accessors` reads, prints and serialises as the `Vec` it stands for, empty or not, and is written
+    /// through like one.
+    #[test]
+    fn accessors_behave_as_a_vec() {
+        let span = Span::default();
+        let field = |n: &str| Accessor::Field(Ident::new(n, span));
+        let empty = Accessors::default();
+        assert!(empty.is_empty());
+        assert_eq!(format!("{empty:?}"), "[]");
+        assert_eq!(serde_json::to_string(&empty).unwrap(), "[]");
+        assert!(Accessors::from(Vec::new()).is_empty());
+        assert!(empty.clone().into_vec().is_empty());
+        assert_eq!((&empty).into_iter().count(), 0);
+
+        let list = vec![field("a"), Accessor::Index(vec![])];
+        let mut acc: Accessors = list.clone().into();
+        assert_eq!(format!("{acc:?}"), format!("{list:?}"));
+        assert_eq!(
+            serde_json::to_string(&acc).unwrap(),
+            serde_json::to_string(&list).unwrap()
+        );
+        acc.push(field("b"));
+        assert_eq!(acc.len(), 3);
+        for a in &mut acc {
+            if let Accessor::Field(f) = a {
+                f.name.push('x');
+            }
+        }
+        let names: Vec<String> = acc
+            .iter()
+            .filter_map(|a| match a {
+                Accessor::Field(f) => Some(f.name.clone()),
+                Accessor::Index(_) => None,
+            })
+            .collect();
+        assert_eq!(names, ["ax", "bx"]);
+        assert_eq!(acc.clone().into_vec().len(), 3);
+
+        let mut grown = Accessors::default();
+        grown.push(field("c"));
+        assert_eq!(format!("{grown:?}"), format!("{:?}", vec![field("c")]));
+        let collected: Accessors = vec![field("d")].into_iter().collect();
+        assert_eq!(collected.len(), 1);
     }
 }

@@ -385,7 +385,7 @@ impl<'s> Ctx<'s> {
         Some(Instruction {
             kind: InstrKind::FunctionCall {
                 name: crate::ast::Ident::new(name, kw_span),
-                args: crate::ast::CallArgs::NonFormal(ops),
+                args: Box::new(crate::ast::CallArgs::NonFormal(ops)),
             },
             span: self.span(l, r),
         })
@@ -418,7 +418,7 @@ impl<'s> Ctx<'s> {
             kind: InstrKind::Deferred {
                 op,
                 negate,
-                operand,
+                operand: operand.map(Box::new),
                 body,
                 close: self.span(close.0, close.1),
             },
@@ -500,7 +500,7 @@ impl<'s> Ctx<'s> {
         Some(Instruction {
             kind: InstrKind::Call {
                 cond,
-                instance,
+                instance: Box::new(instance),
                 args,
             },
             span: self.span(l, r),

@@ -169,7 +169,7 @@ fn instruction(out: &mut String, i: &Instruction, level: usize) {
         }
         InstrKind::FunctionCall { name, args } => {
             out.push_str(&name.name);
-            match args {
+            match &**args {
                 CallArgs::None => {}
                 CallArgs::NonFormal(ops) => {
                     out.push(' ');

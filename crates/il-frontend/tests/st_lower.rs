@@ -176,7 +176,7 @@ fn snippets_lowered_into_one_pou_share_labels_and_temporaries() {
             &mut t,
             &il_frontend::ast::Operand::Var(il_frontend::ast::VarRef {
                 base: v.name.clone(),
-                accessors: vec![],
+                accessors: Default::default(),
                 span: v.span,
             }),
         );

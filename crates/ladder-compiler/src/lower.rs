@@ -594,7 +594,7 @@ fn simple(op: Op, negate: bool, operand: Option<Operand>, span: Span) -> IlStmt 
 fn var_operand(name: &str, span: Span) -> Operand {
     Operand::Var(VarRef {
         base: Ident::new(name, span),
-        accessors: Vec::new(),
+        accessors: Default::default(),
         span,
     })
 }
@@ -1118,7 +1118,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         });
         let inst = VarRef {
             base: Ident::new(&name, span),
-            accessors: Vec::new(),
+            accessors: Default::default(),
             span,
         };
         self.val(
@@ -2097,7 +2097,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             InstrKind::Deferred {
                 op,
                 negate: false,
-                operand,
+                operand: operand.map(Box::new),
                 body,
                 close: span,
             },
@@ -2142,7 +2142,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     let clk_op = self.operand(*clk, out);
                     let inst = VarRef {
                         base: Ident::new(inst, *span),
-                        accessors: Vec::new(),
+                        accessors: Default::default(),
                         span: *span,
                     };
                     out.push(call(
@@ -2338,7 +2338,7 @@ fn call(cond: Condition, inst: VarRef, args: Vec<(String, Operand)>, span: Span)
     instr(
         InstrKind::Call {
             cond,
-            instance: inst,
+            instance: Box::new(inst),
             args,
         },
         span,
@@ -2377,7 +2377,7 @@ fn emit_function(
                             InstrKind::Deferred {
                                 op: Op::And,
                                 negate: false,
-                                operand: Some(pair[0].clone()),
+                                operand: Some(Box::new(pair[0].clone())),
                                 body: vec![simple(*o, false, Some(pair[1].clone()), span)],
                                 close: span,
                             },
@@ -2396,11 +2396,11 @@ fn emit_function(
             out.push(instr(
                 InstrKind::FunctionCall {
                     name: name.clone(),
-                    args: if rest.is_empty() {
+                    args: Box::new(if rest.is_empty() {
                         CallArgs::None
                     } else {
                         CallArgs::NonFormal(rest)
-                    },
+                    }),
                 },
                 span,
             ));
@@ -2409,7 +2409,7 @@ fn emit_function(
             out.push(instr(
                 InstrKind::FunctionCall {
                     name: name.clone(),
-                    args: CallArgs::Formal(
+                    args: Box::new(CallArgs::Formal(
                         args.into_iter()
                             .map(|(n, v)| FormalArg {
                                 name: n,
@@ -2418,7 +2418,7 @@ fn emit_function(
                                 value: v,
                             })
                             .collect(),
-                    ),
+                    )),
                 },
                 span,
             ));

@@ -111,7 +111,7 @@ pub fn var_ref(t: &str, span: Span) -> Option<VarRef> {
     }
     Some(VarRef {
         base: Ident::new(base, span),
-        accessors,
+        accessors: accessors.into(),
         span,
     })
 }

@@ -531,7 +531,7 @@ mod tests {
         let var = |n: &str| {
             Operand::Var(VarRef {
                 base: Ident::new(n, diagnostics::Span::default()),
-                accessors: vec![],
+                accessors: Default::default(),
                 span: diagnostics::Span::default(),
             })
         };

@@ -195,7 +195,7 @@ fn id(name: &str, span: Span) -> Ident {
 fn var(name: &str, span: Span) -> Operand {
     Operand::Var(VarRef {
         base: id(name, span),
-        accessors: vec![],
+        accessors: Default::default(),
         span,
     })
 }
@@ -795,7 +795,7 @@ impl PouLowering<'_> {
                         out.push(instr(
                             InstrKind::FunctionCall {
                                 name: id("BOOL_TO_BYTE", span),
-                                args: CallArgs::None,
+                                args: Box::new(CallArgs::None),
                             },
                             span,
                         ));

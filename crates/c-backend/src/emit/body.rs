@@ -229,7 +229,7 @@ impl<'a> Gen<'a> {
                         ..
                     } = &i.kind
                     {
-                        let d = self.deferred_open(b, i, *op, *negate, operand.as_ref(), body);
+                        let d = self.deferred_open(b, i, *op, *negate, operand.as_deref(), body);
                         if d.is_some() {
                             stack.push(Work::Close(d.map(Box::new)));
                             stack.push(Work::List(body));

@@ -78,16 +78,19 @@ fn weight(stmt: &IlStmt) -> usize {
     while let Some(s) = next.take().or_else(|| stack.pop()) {
         let IlStmt::Instr(i) = s else { continue };
         n += 1;
-        match &i.kind {
-            InstrKind::Deferred { body, .. } => stack.extend(body.iter()),
-            InstrKind::Call { args, .. } | InstrKind::FunctionCall { args, .. } => {
-                n += match args {
-                    CallArgs::None => 0,
-                    CallArgs::NonFormal(a) => a.len(),
-                    CallArgs::Formal(a) => a.len(),
-                }
+        let args = match &i.kind {
+            InstrKind::Deferred { body, .. } => {
+                stack.extend(body.iter());
+                continue;
             }
-            _ => {}
+            InstrKind::Call { args, .. } => args,
+            InstrKind::FunctionCall { args, .. } => &**args,
+            _ => continue,
+        };
+        n += match args {
+            CallArgs::None => 0,
+            CallArgs::NonFormal(a) => a.len(),
+            CallArgs::Formal(a) => a.len(),
         }
     }
     n

@@ -107,7 +107,7 @@ fn int_lit(v: i128, span: Span) -> Operand {
 fn var_operand(name: &Ident) -> Operand {
     Operand::Var(VarRef {
         base: name.clone(),
-        accessors: Vec::new(),
+        accessors: Default::default(),
         span: name.span,
     })
 }
@@ -363,11 +363,11 @@ impl<'d> PouLowering<'d> {
         out.push(instr(
             InstrKind::Call {
                 cond: Condition::Always,
-                instance: VarRef {
+                instance: Box::new(VarRef {
                     base: Ident::new(sig.name.clone(), span),
-                    accessors: Vec::new(),
+                    accessors: Default::default(),
                     span,
-                },
+                }),
                 args: CallArgs::None,
             },
             span,
@@ -939,7 +939,7 @@ impl<'d> PouLowering<'d> {
                             InstrKind::Deferred {
                                 op: Op::And,
                                 negate: false,
-                                operand: Some(sel.clone()),
+                                operand: Some(Box::new(sel.clone())),
                                 body: vec![simple(Op::Le, false, Some(hi), at)],
                                 close: at,
                             },
@@ -1095,7 +1095,7 @@ impl<'d> PouLowering<'d> {
                     InstrKind::Deferred {
                         op: Op::And,
                         negate: false,
-                        operand: Some(i.clone()),
+                        operand: Some(Box::new(i.clone())),
                         body: vec![simple(Op::Gt, false, Some(limit.clone()), at)],
                         close: at,
                     },
@@ -1105,14 +1105,14 @@ impl<'d> PouLowering<'d> {
                     InstrKind::Deferred {
                         op: Op::Or,
                         negate: false,
-                        operand: Some(step.clone()),
+                        operand: Some(Box::new(step.clone())),
                         body: vec![
                             simple(Op::Lt, false, Some(int_lit(0, at)), at),
                             instr(
                                 InstrKind::Deferred {
                                     op: Op::And,
                                     negate: false,
-                                    operand: Some(i.clone()),
+                                    operand: Some(Box::new(i.clone())),
                                     body: vec![simple(Op::Lt, false, Some(limit.clone()), at)],
                                     close: at,
                                 },
@@ -1189,7 +1189,7 @@ impl<'d> PouLowering<'d> {
         out.push(instr(
             InstrKind::Call {
                 cond: Condition::Always,
-                instance,
+                instance: Box::new(instance),
                 args,
             },
             span,
@@ -1336,7 +1336,7 @@ impl<'d> PouLowering<'d> {
         }
         Some(Operand::Var(VarRef {
             base,
-            accessors,
+            accessors: accessors.into(),
             span: p.span,
         }))
     }
@@ -1381,7 +1381,7 @@ impl<'d> PouLowering<'d> {
         }
         Some(Operand::Var(VarRef {
             base,
-            accessors,
+            accessors: accessors.into(),
             span: p.span,
         }))
     }
@@ -1431,7 +1431,7 @@ impl<'d> PouLowering<'d> {
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: Ident::new(format!("LINT_TO_{}", real.name()), e.span),
-                        args: CallArgs::None,
+                        args: Box::new(CallArgs::None),
                     },
                     e.span,
                 ));
@@ -1559,7 +1559,7 @@ impl<'d> PouLowering<'d> {
                 Then::Expt(exp, span) => out.push(instr(
                     InstrKind::FunctionCall {
                         name: Ident::new("EXPT", span),
-                        args: CallArgs::NonFormal(vec![exp]),
+                        args: Box::new(CallArgs::NonFormal(vec![exp])),
                     },
                     span,
                 )),
@@ -1611,7 +1611,7 @@ impl<'d> PouLowering<'d> {
             InstrKind::Deferred {
                 op,
                 negate: false,
-                operand,
+                operand: operand.map(Box::new),
                 body,
                 close: right.span,
             },
@@ -1701,11 +1701,11 @@ impl<'d> PouLowering<'d> {
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: name.clone(),
-                        args: if ops.is_empty() {
+                        args: Box::new(if ops.is_empty() {
                             CallArgs::None
                         } else {
                             CallArgs::NonFormal(ops)
-                        },
+                        }),
                     },
                     span,
                 ));
@@ -1727,7 +1727,7 @@ impl<'d> PouLowering<'d> {
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: name.clone(),
-                        args,
+                        args: Box::new(args),
                     },
                     span,
                 ));

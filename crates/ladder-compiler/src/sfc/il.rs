@@ -24,7 +24,7 @@ pub fn var(name: &str, span: Span) -> Operand {
 pub fn var_ref(name: &str, span: Span) -> VarRef {
     VarRef {
         base: Ident::new(name, span),
-        accessors: Vec::new(),
+        accessors: Default::default(),
         span,
     }
 }
@@ -33,7 +33,7 @@ pub fn var_ref(name: &str, span: Span) -> VarRef {
 pub fn field(base: &str, f: &str, span: Span) -> Operand {
     Operand::Var(VarRef {
         base: Ident::new(base, span),
-        accessors: vec![Accessor::Field(Ident::new(f, span))],
+        accessors: vec![Accessor::Field(Ident::new(f, span))].into(),
         span,
     })
 }
@@ -99,7 +99,7 @@ pub fn call(inst: &str, args: Vec<(&str, Operand)>, span: Span) -> IlStmt {
     IlStmt::Instr(Instruction {
         kind: InstrKind::Call {
             cond: Condition::Always,
-            instance: var_ref(inst, span),
+            instance: Box::new(var_ref(inst, span)),
             args: CallArgs::Formal(
                 args.into_iter()
                     .map(|(n, v)| FormalArg {
@@ -120,7 +120,7 @@ pub fn sel(a: Operand, b: Operand, span: Span) -> IlStmt {
     IlStmt::Instr(Instruction {
         kind: InstrKind::FunctionCall {
             name: Ident::new("SEL", span),
-            args: CallArgs::NonFormal(vec![a, b]),
+            args: Box::new(CallArgs::NonFormal(vec![a, b])),
         },
         span,
     })
