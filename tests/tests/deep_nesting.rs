@@ -421,3 +421,67 @@ fn drive_scripts_with_100000_parentheses_or_operators_are_e6010() {
         assert_capped(&out, &err, name, "E6010");
     }
 }
+
+#[test]
+fn il_subscripts_nested_100000_deep_are_one_e0200() {
+    // `LD a[a[a[...]]]`: the semantic checks resolve subscripts recursively, and 2,500 levels overflowed
+    // the stack (found in session 24 by the perf-il2 helper; the fuzzers never grew an input that deep).
+    // The layout pass now skips a `[` past the cap with everything up to its `]`, reported once.
+    let dir = tempfile::tempdir().unwrap();
+    let deep = format!("{}0{}", "a[".repeat(LEVELS), "]".repeat(LEVELS));
+    let cases = [
+        (
+            "load.il",
+            format!("PROGRAM p\nVAR a : ARRAY[0..9] OF INT; x : INT; END_VAR\n  LD {deep}\n  ST x\nEND_PROGRAM\n"),
+        ),
+        (
+            "call.il",
+            format!(
+                "PROGRAM p\nVAR a : ARRAY[0..9] OF INT; t : TON; END_VAR\n  CAL t(IN := TRUE, PT := T#1s)\n  LD t.Q\n  ST a[{deep}]\nEND_PROGRAM\n"
+            ),
+        ),
+        (
+            "body.xml",
+            format!(
+                r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous>
+<pou name="p" pouType="program"><interface><localVars>
+<variable name="a"><type><array><dimension lower="0" upper="9"/><baseType><INT/></baseType></array></type></variable>
+<variable name="x"><type><INT/></type></variable>
+</localVars></interface><body><IL><xhtml xmlns="http://www.w3.org/1999/xhtml">
+LD {deep}
+ST x
+</xhtml></IL></body></pou></pous></types></project>
+"#
+            ),
+        ),
+    ];
+    for (name, src) in cases {
+        write(dir.path(), name, &src);
+        let (out, err) = check(dir.path(), &[name]);
+        assert_capped(&out, &err, name, "E0200");
+        assert!(
+            err.contains("subscripts are nested more than 64 deep"),
+            "{err}"
+        );
+    }
+}
+
+#[test]
+fn il_subscripts_at_the_cap_are_accepted() {
+    let dir = tempfile::tempdir().unwrap();
+    let n = il_frontend::layout::MAX_SUBSCRIPT_NESTING;
+    let at_cap = format!("{}0{}", "a[".repeat(n), "]".repeat(n));
+    let src = format!(
+        "PROGRAM p\nVAR a : ARRAY[0..9] OF INT; x : INT; END_VAR\n  LD {at_cap}\n  ST x\n  LD a[{at_cap}]\n  ST x\nEND_PROGRAM\n"
+    );
+    write(dir.path(), "at_cap.il", &src);
+    let (out, err) = check(dir.path(), &["at_cap.il"]);
+    // 64 levels are accepted; the second load nests 65 and is the one report
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert_eq!(err.matches("[E0200]").count(), 1, "{err}");
+    assert!(
+        err.contains("at_cap.il:5:"),
+        "the report is on line 5, the 65-deep load:\n{err}"
+    );
+}

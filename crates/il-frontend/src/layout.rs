@@ -95,7 +95,17 @@ pub struct Layout<'s> {
     /// After `:=` in declarations, up to the `;`: an initial value, which may be a constant
     /// expression (`c : INT := N * 2;`).
     decl_init: bool,
+    /// `[` opened in instruction lists and not closed yet (subscripts of operands), capped at
+    /// [`MAX_SUBSCRIPT_NESTING`].
+    code_brackets: usize,
+    /// E0200 for subscripts nested too deeply was reported (once per text).
+    deep_subscript_reported: bool,
 }
+
+/// The deepest nesting of subscripts in an instruction list (`a[b[c[i]]]`: 3) accepted in IL; the
+/// same as PLCopen XML variables' (`ladder_compiler::values::MAX_INDEX_DEPTH`). Real programs nest a
+/// few levels; the semantic checks walk subscripts recursively.
+pub const MAX_SUBSCRIPT_NESTING: usize = 64;
 
 impl<'s> Layout<'s> {
     /// `start` is [`Tok::UnitStart`] or [`Tok::BodyStart`]: which grammar entry to use.
@@ -118,6 +128,8 @@ impl<'s> Layout<'s> {
             declared: Vec::new(),
             decl_brackets: 0,
             decl_init: false,
+            code_brackets: 0,
+            deep_subscript_reported: false,
         }
     }
 
@@ -552,11 +564,21 @@ impl<'s> Layout<'s> {
                     self.report_lex_error(LexError::UnexpectedChar, s, e);
                     Tok::Error
                 }
+                Some(Ok(RawToken::LBracket))
+                    if !self.in_decl() && self.code_brackets >= MAX_SUBSCRIPT_NESTING =>
+                {
+                    self.skip_too_deep_subscript(s, e);
+                    continue;
+                }
                 Some(Ok(raw)) => {
                     match raw {
                         RawToken::LBracket if self.in_decl() => self.decl_brackets += 1,
+                        RawToken::LBracket => self.code_brackets += 1,
                         RawToken::RBracket => {
-                            self.decl_brackets = self.decl_brackets.saturating_sub(1)
+                            self.decl_brackets = self.decl_brackets.saturating_sub(1);
+                            if !self.in_decl() {
+                                self.code_brackets = self.code_brackets.saturating_sub(1);
+                            }
                         }
                         RawToken::Assign if self.in_decl() => self.decl_init = true,
                         RawToken::Semi => {
@@ -603,6 +625,43 @@ impl<'s> Layout<'s> {
                 };
             self.emit(s, tok, e);
         }
+    }
+
+    /// A `[` past [`MAX_SUBSCRIPT_NESTING`] open subscripts in an instruction list: reported once
+    /// per file (E0200), and skipped with everything up to its matching `]` (or the line's end), so
+    /// the grammar sees an operand nested [`MAX_SUBSCRIPT_NESTING`] deep and no later stage (the
+    /// semantic checks walk subscripts recursively) sees unbounded nesting.
+    fn skip_too_deep_subscript(&mut self, s: usize, e: usize) {
+        if !self.deep_subscript_reported {
+            self.deep_subscript_reported = true;
+            self.diags.push(
+                Diagnostic::error(
+                    code::E0200,
+                    format!("subscripts are nested more than {MAX_SUBSCRIPT_NESTING} deep"),
+                )
+                .at(self.span(s, e))
+                .with_primary_label(format!(
+                    "level {}: skipped up to its `]`",
+                    MAX_SUBSCRIPT_NESTING + 1
+                ))
+                .with_hint("compute inner subscripts into variables first (`LD i ... ST k`) and index with those"),
+            );
+        }
+        let mut open = 1usize;
+        loop {
+            let mut ahead = self.lex.clone();
+            match ahead.next() {
+                None | Some(Ok(RawToken::Newline)) => break,
+                Some(Ok(RawToken::LBracket)) => open += 1,
+                Some(Ok(RawToken::RBracket)) => open -= 1,
+                _ => {}
+            }
+            self.lex = ahead;
+            if open == 0 {
+                break;
+            }
+        }
+        self.lex.extras.clear();
     }
 
     /// `VAR_ACCESS` / `VAR_CONFIG` ... `END_VAR`: reported once, skipped whole.
