@@ -5,7 +5,10 @@
 //!   file that is not UTF-8 is read as Windows-1252 with note W0305, a PLCopen XML file is read in the
 //!   encoding its declaration names, UTF-16 with a byte-order mark is read; diagnostics count lines and
 //!   columns in the decoded text and JSON byte offsets in the file. Before, each was E9001 "not valid
-//!   UTF-8", exit 2.
+//!   UTF-8", exit 2;
+//! - `MAIN.x` from another POU (CODESYS, TwinCAT; 25 TwinCAT "Pick and Place Unit" files): a variable
+//!   of the program's one instance, read and written, with warning W1413; a program with no instance
+//!   or several in the configuration stays E1001, saying which. Before, always E1001.
 
 mod common;
 use common::ladderc;
@@ -263,4 +266,112 @@ fn undecodable_files_are_e9001_saying_why() {
     let out = run(&f, "short", "main.n");
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     assert_eq!(text(&out.stdout), "cycle,time_ms,main.n\n0,0,2\n");
+}
+
+/// The program and function block of the `MAIN.x` tests: the block reads `Main.provided`, reads and
+/// writes `Main.count`, and a function reads `Main.count` too; `config` is appended.
+fn main_x(config: &str) -> String {
+    format!(
+        "PROGRAM Main\nVAR provided : BOOL; count : INT; s : Stack; seen : INT; END_VAR\n\
+         provided := NOT provided;\n  s();\n  seen := Twice();\nEND_PROGRAM\n\
+         FUNCTION_BLOCK Stack\nVAR ok : BOOL; END_VAR\n  ok := Main.provided;\n\
+         IF Main.provided THEN Main.count := Main.count + 1; END_IF;\nEND_FUNCTION_BLOCK\n\
+         FUNCTION Twice : INT\n  Twice := Main.count * 2;\nEND_FUNCTION\n{config}"
+    )
+}
+
+/// `MAIN.x` in a function block and a function (TwinCAT's PPU blocks read `Main.Stack_WPProvided`) of a
+/// program that runs alone: the program's variables are read and written, and W1413 is given once per
+/// POU and program.
+#[test]
+fn a_program_variable_is_read_and_written_from_other_pous_with_a_warning() {
+    let (_d, f) = write("ppu.st", main_x("").as_bytes());
+    let out = run(&f, "short", "Main.provided,Main.count,Main.s.ok,Main.seen");
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("warning[")).collect();
+    assert_eq!(warnings.len(), 2, "{stderr}");
+    assert!(
+        warnings[0].contains("/ppu.st:9:9: warning[W1413]: a variable of program `Main` used as `Main.x` (a CODESYS and TwinCAT extension"),
+        "{stderr}"
+    );
+    assert!(
+        warnings[1].contains("/ppu.st:13:12: warning[W1413]"),
+        "{stderr}"
+    );
+    let out = ladderc()
+        .args(["run"])
+        .arg(&f)
+        .args([
+            "--cycles",
+            "4",
+            "--trace",
+            "-",
+            "--watch",
+            "Main.provided,Main.count,Main.s.ok,Main.seen",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    // count goes up when provided is TRUE (every other cycle); seen is twice the count
+    assert_eq!(
+        text(&out.stdout),
+        "cycle,time_ms,Main.provided,Main.count,Main.s.ok,Main.seen\n\
+         0,0,1,1,1,2\n1,10,0,1,0,2\n2,20,1,2,1,4\n3,30,0,2,0,4\n"
+    );
+}
+
+/// With a configuration, `Main.x` is the variable of the one instance the configuration declares (`m1`);
+/// with two instances, or none, it names no one variable: E1001 at `Main`, once per POU, saying which.
+#[test]
+fn a_program_variable_needs_exactly_one_instance_in_the_configuration() {
+    let one = main_x(
+        "CONFIGURATION c RESOURCE r ON PLC TASK t(INTERVAL := T#10ms); PROGRAM m1 WITH t : Main; \
+         END_RESOURCE END_CONFIGURATION\n",
+    );
+    let (_d, f) = write("one.st", one.as_bytes());
+    let out = ladderc()
+        .args(["run"])
+        .arg(&f)
+        .args([
+            "--cycles",
+            "3",
+            "--sanitize",
+            "--trace",
+            "-",
+            "--watch",
+            "m1.count,m1.seen",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert_eq!(
+        text(&out.stdout),
+        "cycle,time_ms,m1.count,m1.seen\n0,0,1,2\n1,10,1,2\n2,20,2,4\n"
+    );
+    for (instances, which) in [
+        (
+            "PROGRAM m1 WITH t : Main; PROGRAM m2 WITH t : Main;",
+            "2 instances",
+        ),
+        ("PROGRAM o WITH t : Other;", "no instance"),
+    ] {
+        let src = main_x(&format!(
+            "PROGRAM Other VAR x : INT; END_VAR x := x + 1; END_PROGRAM\n\
+             CONFIGURATION c RESOURCE r ON PLC TASK t(INTERVAL := T#10ms); {instances} END_RESOURCE END_CONFIGURATION\n"
+        ));
+        let (code, lines) = common::check_text("cfg.st", &src);
+        assert_eq!(code, Some(1), "{lines:?}");
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert!(
+            lines[0].starts_with(&format!(
+                "cfg.st:9:9: error[E1001]: `Main` is a program with {which} in the configuration, not one variable"
+            )),
+            "{lines:?}"
+        );
+        assert!(
+            lines[1].starts_with("cfg.st:13:12: error[E1001]"),
+            "{lines:?}"
+        );
+    }
 }
