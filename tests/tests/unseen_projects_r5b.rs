@@ -375,3 +375,33 @@ fn a_program_variable_needs_exactly_one_instance_in_the_configuration() {
         );
     }
 }
+
+/// `LD Main.count` / `ST Main.count` in an instruction-list body: the same access as in ST.
+#[test]
+fn a_program_variable_is_read_and_written_from_an_il_body() {
+    let src = "PROGRAM Main\nVAR count : INT; s : Stack; END_VAR\n  s();\nEND_PROGRAM\n\
+               FUNCTION_BLOCK Stack\nVAR n : INT; END_VAR\n  LD Main.count\n  ADD 3\n  ST Main.count\n  ST n\n\
+               END_FUNCTION_BLOCK\n";
+    let (_d, f) = write("il.st", src.as_bytes());
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&f)
+        .args([
+            "--cycles",
+            "2",
+            "--sanitize",
+            "--trace",
+            "-",
+            "--watch",
+            "Main.count,Main.s.n",
+        ])
+        .output()
+        .unwrap();
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("/il.st:7:6: warning[W1413]"), "{stderr}");
+    assert_eq!(
+        text(&out.stdout),
+        "cycle,time_ms,Main.count,Main.s.n\n0,0,3,3\n1,10,6,6\n"
+    );
+}

@@ -1,5 +1,6 @@
 //! Operands and variable access inside a body: name lookup (POU variables, the function's result, EN/ENO,
-//! globals, enumerated values), field and index access, literal typing, writability, stores.
+//! globals, enumerated values, `MAIN.x` of a program with one instance), field and index access, literal
+//! typing, writability, stores.
 //!
 //! Input: AST operands. Output: their types (literal variables for untyped literals) and diagnostics.
 //! Invariants: each unresolvable name gives one E1001 and the type `Error`; a write to a constant, an
