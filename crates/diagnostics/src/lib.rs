@@ -24,7 +24,7 @@ pub use render::{
     render_summary_json, set_max_per_file, MessageFormat, RunSummary, Summary,
     DEFAULT_MAX_PER_FILE, JSON_SCHEMA,
 };
-pub use source::{line_starts, SourceFile, SourceMap};
+pub use source::{line_starts, FileEncoding, SourceFile, SourceMap};
 pub use span::{FileId, Span};
 
 /// All codes as constants (`diagnostics::code::E0001`), generated from `explanations/`.

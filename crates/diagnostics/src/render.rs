@@ -466,8 +466,8 @@ fn json_label<'a>(map: &'a SourceMap, span: crate::Span, message: &'a str) -> Js
         column,
         end_line,
         end_column,
-        byte_start: span.start.saturating_add(f.byte_base),
-        byte_end: span.end.saturating_add(f.byte_base),
+        byte_start: f.file_offset(span.start),
+        byte_end: f.file_offset(span.end),
         message,
     }
 }

@@ -13,7 +13,22 @@ pub struct SourceFile {
     /// ([`SourceMap::add_file`]), else 0. Spans count in `text`; JSON's `byte_start`/`byte_end` add it, so
     /// that they are offsets into the file.
     pub byte_base: u32,
+    /// How the file's bytes were decoded into `text` ([`SourceMap::add_decoded`]); JSON's byte offsets
+    /// count in this encoding.
+    pub encoding: FileEncoding,
     line_starts: Vec<usize>,
+}
+
+/// The encoding a file was read in: how an offset into the decoded text maps to one into the file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum FileEncoding {
+    /// UTF-8 (the text's bytes are the file's; offsets above the text pass through).
+    #[default]
+    Utf8,
+    /// One byte per character (ISO-8859-1, Windows-1252).
+    SingleByte,
+    /// UTF-16 (two bytes per code unit).
+    Utf16,
 }
 
 impl SourceFile {
@@ -25,8 +40,23 @@ impl SourceFile {
             name: name.into(),
             text,
             byte_base: 0,
+            encoding: FileEncoding::Utf8,
             line_starts,
         }
+    }
+    /// The offset in the file on disk of byte offset `offset` of the text (clamped to the text): the
+    /// dropped byte-order mark plus the offset counted in the file's [`FileEncoding`].
+    pub fn file_offset(&self, offset: u32) -> u32 {
+        if self.encoding == FileEncoding::Utf8 {
+            return offset.saturating_add(self.byte_base);
+        }
+        let offset = self.floor_char_boundary(offset as usize);
+        let counted = match self.encoding {
+            FileEncoding::Utf8 => offset,
+            FileEncoding::SingleByte => self.text[..offset].chars().count(),
+            FileEncoding::Utf16 => self.text[..offset].encode_utf16().count() * 2,
+        };
+        (counted as u32).saturating_add(self.byte_base)
     }
     /// 1-based line and 1-based column (in characters) of byte offset `offset` (clamped to the text).
     pub fn line_col(&self, offset: usize) -> (usize, usize) {
@@ -127,6 +157,21 @@ impl SourceMap {
         self.files.push(f);
         FileId(self.files.len() as u32 - 1)
     }
+    /// Adds a file decoded from `encoding` (without its byte-order mark, which took `byte_base` bytes of
+    /// the file); its id. JSON's byte offsets are then offsets into the file's bytes.
+    pub fn add_decoded(
+        &mut self,
+        name: impl Into<String>,
+        text: String,
+        encoding: FileEncoding,
+        byte_base: u32,
+    ) -> FileId {
+        let mut f = SourceFile::new(name, text);
+        f.byte_base = byte_base;
+        f.encoding = encoding;
+        self.files.push(f);
+        FileId(self.files.len() as u32 - 1)
+    }
     /// The file `id` (which this map gave out).
     pub fn get(&self, id: FileId) -> &SourceFile {
         &self.files[id.0 as usize]
@@ -143,6 +188,24 @@ impl SourceMap {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Offsets into a decoded file count its bytes: one per character (Windows-1252), two per UTF-16
+    /// code unit plus the byte-order mark; UTF-8 adds the dropped mark only.
+    #[test]
+    fn file_offsets_count_the_bytes_of_the_file_as_encoded() {
+        let text = "ä€x\n𝄞y".to_string();
+        let y = text.find('y').unwrap() as u32;
+        let mut m = SourceMap::new();
+        let single = m.add_decoded("a", text.clone(), FileEncoding::SingleByte, 0);
+        let wide = m.add_decoded("b", text.clone(), FileEncoding::Utf16, 2);
+        let utf8 = m.add_file("c", &format!("\u{feff}{text}"));
+        assert_eq!(m.get(single).file_offset(y), 5);
+        assert_eq!(m.get(wide).file_offset(y), 2 + 2 * 6);
+        assert_eq!(m.get(utf8).file_offset(y), 3 + y);
+        // inside a character: its start
+        assert_eq!(m.get(single).file_offset(1), 0);
+        assert_eq!(m.get(single).file_offset(1000), 6);
+    }
 
     #[test]
     fn lf_crlf_and_a_lone_cr_each_end_one_line() {

@@ -59,6 +59,7 @@
 pub mod axes;
 pub mod cli;
 pub mod depfile;
+pub mod encoding;
 pub mod fuzzing;
 pub mod lsp;
 pub mod motion_link;

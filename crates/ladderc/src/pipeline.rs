@@ -5,7 +5,8 @@
 //! `-` standard input) and [`Options`]; every file is taken from [`Session::overlay`] first, and from the
 //! file system (and standard input) only when [`Session::disk`] allows it. Output: the source map, the
 //! diagnostics, and (when there are no errors) the lowered IL units and the C project.
-//! Stages: read -> parse (IL, ST) or read + lower ladder (XML) ([`Session::parse`]) -> semantic checks
+//! Stages: read (bytes decoded by [`crate::encoding`]: UTF-8, UTF-16, the XML declaration's encoding, else
+//! Windows-1252 with note W0305) -> parse (IL, ST) or read + lower ladder (XML) ([`Session::parse`]) -> semantic checks
 //! against the PLCopen block prelude and the axes ([`Session::check`]) -> parameter passing (block calls by
 //! the chosen strategy) ([`Session::lower_checked`]) -> semantic model of the lowered program -> C
 //! ([`Session::generate`]). Invariants: a stage runs only when the ones before it reported no error; no
@@ -245,8 +246,9 @@ impl Session {
             } else {
                 p.display().to_string()
             };
+            // the overlay holds text (an editor's buffer): it is read as it is
             let bytes = if let Some(t) = self.overlay.get(p) {
-                Ok(t.clone().into_bytes())
+                Ok(Err(t.clone()))
             } else if stdin && !self.disk {
                 Err(not_in_memory())
             } else if stdin {
@@ -259,23 +261,21 @@ impl Session {
                 }
                 stdin_read = true;
                 let mut b = Vec::new();
-                std::io::Read::read_to_end(&mut std::io::stdin(), &mut b).map(|_| b)
+                std::io::Read::read_to_end(&mut std::io::stdin(), &mut b).map(|_| Ok(b))
             } else if self.disk {
-                std::fs::read(p)
+                std::fs::read(p).map(Ok)
             } else {
                 Err(not_in_memory())
             };
-            let text = match bytes {
-                Ok(bytes) => match String::from_utf8(bytes) {
-                    Ok(t) => t,
-                    Err(_) => {
-                        self.diags.push(
-                            Diagnostic::error(code::E9001, format!("{shown} is not valid UTF-8"))
-                                .with_hint("save the file as UTF-8"),
-                        );
-                        continue;
-                    }
-                },
+            // Ok(Ok(bytes)) from a file or standard input, Ok(Err(text)) from the overlay
+            let decoded = match bytes {
+                Ok(Err(text)) => Ok(crate::encoding::Decoded {
+                    text,
+                    encoding: diagnostics::FileEncoding::Utf8,
+                    byte_base: 0,
+                    fallback_at: None,
+                }),
+                Ok(Ok(bytes)) => crate::encoding::decode(bytes),
                 Err(e) => {
                     self.diags.push(
                         Diagnostic::error(code::E9001, format!("cannot read {shown}: {e}"))
@@ -284,9 +284,23 @@ impl Session {
                     continue;
                 }
             };
+            let decoded = match decoded {
+                Ok(d) => d,
+                Err(e) => {
+                    self.diags.push(
+                        Diagnostic::error(code::E9001, format!("{shown} {}", e.message))
+                            .with_hint(e.hint),
+                    );
+                    continue;
+                }
+            };
+            let fallback_at = decoded.fallback_at;
             // A UTF-8 byte-order mark is dropped: positions count from the first character after it
             // (JSON's byte offsets add it back: `SourceMap::add_file`).
-            let text_after_bom = text.strip_prefix('\u{feff}').unwrap_or(&text);
+            let text_after_bom = decoded
+                .text
+                .strip_prefix('\u{feff}')
+                .unwrap_or(&decoded.text);
             let (file_lang, detected) = if stdin {
                 (
                     lang.unwrap_or_else(|| il_frontend::st::file::detect(text_after_bom)),
@@ -295,7 +309,25 @@ impl Session {
             } else {
                 input_lang(p, text_after_bom, lang)
             };
-            let file = self.map.add_file_owned(shown, text);
+            let file =
+                if decoded.encoding == diagnostics::FileEncoding::Utf8 && decoded.byte_base == 0 {
+                    self.map.add_file_owned(shown, decoded.text)
+                } else {
+                    self.map
+                        .add_decoded(shown, decoded.text, decoded.encoding, decoded.byte_base)
+                };
+            if let Some(at) = fallback_at {
+                self.diags.push(
+                    Diagnostic::new(
+                        code::W0305,
+                        diagnostics::Severity::Note,
+                        "not valid UTF-8 from here on: the file is read as Windows-1252 \
+                         (ISO-8859-1 with the CODESYS, TwinCAT and TIA Portal characters)",
+                    )
+                    .at(diagnostics::Span::new(file, at, at))
+                    .with_hint("save the file as UTF-8 to silence this note, or check that the file is not damaged"),
+                );
+            }
             // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
             let src = &self.map.get(file).text;
             if detected {

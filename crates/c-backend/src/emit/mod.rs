@@ -416,13 +416,15 @@ impl<'a> Gen<'a> {
             let _ = writeln!(h, "void {c}(void);");
         }
         // the instances (defined with the scan) of the programs whose actions other POUs call
-        // (they have an action flag, see `il_frontend::actions`): the call runs on the instance
+        // (they have an action flag, see `il_frontend::actions`): the call runs on the instance;
+        // and of those whose variables other POUs use by name (`MAIN.x`)
         for inst in self.instances() {
             let p = self.model.pou(inst.pou);
             let called = p
                 .vars
                 .iter()
-                .any(|v| v.name.starts_with(il_frontend::actions::FLAG_PREFIX));
+                .any(|v| v.name.starts_with(il_frontend::actions::FLAG_PREFIX))
+                || self.model.programs_used_by_name.contains(&inst.pou);
             if !called {
                 continue;
             }

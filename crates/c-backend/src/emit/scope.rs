@@ -336,9 +336,10 @@ impl Gen<'_> {
                 skip = 1;
             }
         }
-        if base.is_none() && r.accessors.is_empty() {
+        if base.is_none() {
             // `CAL PLC_PRG(__ACTION_RESET := TRUE)`: a program's action called from another POU
-            // runs on the program's one instance (sema checked the call)
+            // runs on the program's one instance (sema checked the call); `MAIN.x` (W1413) is a
+            // variable of that instance
             base = self.program_instance_place(&r.base.name).map(Some);
         }
         let Some(base) = base else {

@@ -1097,6 +1097,10 @@ pub struct Model {
     /// sets; otherwise only standard FB calls with EN store it).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub fb_eno_read: bool,
+    /// The programs whose variables other POUs use by name (`MAIN.x`, W1413; each has one instance):
+    /// the C declares their instance in the header.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub programs_used_by_name: Vec<PouId>,
     /// Keyed by the instruction's identity ([`InstrId::of`]).
     pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,

@@ -1,5 +1,6 @@
 //! Operands and variable access inside a body: name lookup (POU variables, the function's result, EN/ENO,
-//! globals, enumerated values), field and index access, literal typing, writability, stores.
+//! globals, enumerated values, `MAIN.x` of a program with one instance), field and index access, literal
+//! typing, writability, stores.
 //!
 //! Input: AST operands. Output: their types (literal variables for untyped literals) and diagnostics.
 //! Invariants: each unresolvable name gives one E1001 and the type `Error`; a write to a constant, an
@@ -570,6 +571,19 @@ impl Body<'_, '_> {
         if let Some(place) = self.implicit_external(base) {
             return Some(place);
         }
+        let program = self
+            .a
+            .pou_names
+            .get(&base.key())
+            .copied()
+            .filter(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Program);
+        if let (Some(id), false) = (program, plain) {
+            if self.program_instances(id) == 1 {
+                return Some(self.program_place(base, id));
+            }
+        }
+        let program_id = program;
+        let program = program.is_some();
         if !self.a.silent
             && !self
                 .a
@@ -578,11 +592,6 @@ impl Body<'_, '_> {
         {
             return None;
         }
-        let program = self
-            .a
-            .pou_names
-            .get(&base.key())
-            .is_some_and(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Program);
         if program && !self.a.silent {
             // `MAIN.x` (CODESYS/TwinCAT): one error per POU and program, its other uses unreported
             let key = (self.pou.0, format!("program {}", base.key()), String::new());
@@ -591,17 +600,24 @@ impl Body<'_, '_> {
             }
         }
         let hint = self.similar_name(&base.name);
-        let more = if program {
-            " (its other uses in this POU are not reported)"
-        } else {
-            ""
+        let message = match program_id {
+            Some(_) if plain => format!("`{}` is a program, not a variable", base.name),
+            Some(id) => {
+                let n = self.program_instances(id);
+                let which = match n {
+                    0 => "no instance".to_string(),
+                    1 => "one instance".to_string(),
+                    n => format!("{n} instances"),
+                };
+                format!(
+                    "`{}` is a program with {which} in the configuration, not one variable (its other uses in this POU are not reported)",
+                    base.name
+                )
+            }
+            None => format!("undeclared name `{}`", base.name),
         };
         self.a
-            .error(
-                code::E1001,
-                base.span,
-                format!("undeclared name `{}`{more}", base.name),
-            )
+            .error(code::E1001, base.span, message)
             .label("not declared in this POU")
             .hint(hint);
         None
@@ -665,6 +681,50 @@ impl Body<'_, '_> {
         })
     }
 
+    /// How many instances program `id` has: 1 without a configuration (it runs alone), else its
+    /// `PROGRAM` declarations in every resource.
+    fn program_instances(&self, id: PouId) -> usize {
+        if self.a.model.configurations.is_empty() {
+            return 1;
+        }
+        self.a
+            .model
+            .configurations
+            .iter()
+            .flat_map(|c| &c.resources)
+            .flat_map(|r| &r.programs)
+            .filter(|p| p.pou == id)
+            .count()
+    }
+
+    /// `MAIN.x` from any POU (CODESYS, TwinCAT): the one instance of program `id`, whose variables the
+    /// field access reads and writes; warning W1413 once per POU and program.
+    fn program_place(&mut self, base: &ast::Ident, id: PouId) -> Place {
+        if !self.a.model.programs_used_by_name.contains(&id) {
+            self.a.model.programs_used_by_name.push(id);
+        }
+        let key = (
+            self.pou.0,
+            format!("program {}", base.key()),
+            "W1413".to_string(),
+        );
+        if !self.a.silent && self.a.internal_accessed.insert(key) {
+            let name = self.a.model.pous[id.0 as usize].name.clone();
+            self.a
+                .warning(
+                    code::W1413,
+                    base.span,
+                    format!("a variable of program `{name}` used as `{}.x` (a CODESYS and TwinCAT extension: the program's one instance)", base.name),
+                )
+                .label("program, not a variable")
+                .hint("IEC 61131-3 gives other POUs no access to a program's variables; for portable code pass the value as an input, or use a global variable (VAR_GLOBAL / VAR_EXTERNAL)");
+        }
+        Place {
+            ty: Type::Fb(FbType::User(id)),
+            read_only: None,
+        }
+    }
+
     /// Records what a name refers to (in the reporting pass only).
     fn note_name(&mut self, span: Span, r: NameRef) {
         if !self.a.silent {
@@ -681,10 +741,10 @@ impl Body<'_, '_> {
             .get(&up)
             .is_some_and(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Program)
         {
-            // `MAIN.x` from a function block: CODESYS and TwinCAT programs are single instances
-            // whose variables every POU can reach; ladderc compiles IEC 61131-3 program types
+            // `MAIN.x` from another POU: CODESYS and TwinCAT programs are single instances whose
+            // variables every POU can reach; ladderc does so when the program has one instance
             return format!(
-                "`{name}` is a program: IEC 61131-3 gives other POUs no access to a program's variables (CODESYS and TwinCAT do, ladderc does not); pass the value as an input, or use a global variable (VAR_GLOBAL / VAR_EXTERNAL)"
+                "`{name}.x` (CODESYS and TwinCAT) names a variable of the program's one instance: declare exactly one instance of `{name}` in the configuration, or pass the value as an input, or use a global variable (VAR_GLOBAL / VAR_EXTERNAL)"
             );
         }
         let is_fb_type = StdFb::from_name(name).is_some()
@@ -757,6 +817,31 @@ impl Body<'_, '_> {
                     ty: Type::BOOL,
                     read_only: Some(ReadOnly::FbOutput { at }),
                 })
+            }
+            Type::Fb(FbType::User(id))
+                if self.a.model.pous[id.0 as usize].kind == PouKind::Program =>
+            {
+                // `MAIN.x` (see `program_place`): every variable, read and written as CODESYS does
+                let prog = &self.a.model.pous[id.0 as usize];
+                if let Some(v) = prog.vars.iter().find(|v| v.is(&f.name)) {
+                    return Some(Place {
+                        ty: v.ty.clone(),
+                        read_only: v.constant.then_some(ReadOnly::Constant { decl: v.span }),
+                    });
+                }
+                let name = prog.name.clone();
+                self.a
+                    .error(
+                        code::E1021,
+                        f.span,
+                        format!("program {name} has no variable `{}`", f.name),
+                    )
+                    .label("unknown variable")
+                    .hint(format!(
+                        "declare `{}` in {name}, or correct the name",
+                        f.name
+                    ));
+                None
             }
             Type::Fb(fb) => {
                 let params = fb_param_list(&self.a.model, *fb);
