@@ -11,7 +11,8 @@
 //!
 //! Storage: the elements, their child lists, text segments and decoded strings live in an [`Arena`]
 //! that the caller owns next to the text: building the tree allocates a few large blocks instead of one
-//! block per element, and freeing it frees those blocks (a 10,000-rung project has 630,000 elements).
+//! block per element, and freeing it frees those blocks (a 10,000-rung project has 630,000 elements, 455,000
+//! of them kept).
 
 use quick_xml::events::Event;
 use quick_xml::Reader;
