@@ -259,21 +259,18 @@ fn edge_of(v: Option<&str>) -> Edge {
     }
 }
 
-struct RawWire<'x> {
-    /// Borrowed from the XML text.
-    ref_id: &'x str,
-    pin: Option<String>,
-    span: Span,
-}
-
-fn raw_wires<'x>(ctx: &Ctx, point: Option<&'x Element>) -> Vec<RawWire<'x>> {
+/// The wires of one `<connectionPointIn>` (none without one), in their final list: each wire's
+/// [`Wire::from`] holds, until [`read`] resolves it, the index in `refs` of its `refLocalId` (borrowed
+/// from the XML text). One list per input, built once: no second list of raw wires per node.
+fn raw_wires<'x>(ctx: &Ctx, point: Option<&'x Element>, refs: &mut Vec<&'x str>) -> Vec<Wire> {
     point
         .map(|p| {
             p.children_named("connection")
                 .map(|c| {
                     let [ref_id, pin] = c.attrs(["refLocalId", "formalParameter"]);
-                    RawWire {
-                        ref_id: ref_id.unwrap_or_default().trim(),
+                    refs.push(ref_id.unwrap_or_default().trim());
+                    Wire {
+                        from: refs.len() - 1,
                         pin: pin
                             .map(str::trim)
                             .filter(|s| !s.is_empty())
@@ -307,14 +304,13 @@ fn text_of(ctx: &Ctx, e: &Element, child: &str) -> (String, Span) {
 pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     // At most one node per child element: no regrowth.
     let mut nodes = Vec::with_capacity(body.children.len());
-    let mut raw_inputs: Vec<Vec<RawWire>> = Vec::with_capacity(body.children.len());
-    let mut raw_pins: Vec<Vec<Vec<RawWire>>> = Vec::with_capacity(body.children.len());
+    // Every wire's `refLocalId`, indexed by the wire's `from` until the wires are resolved below.
+    let mut refs: Vec<&str> = Vec::with_capacity(body.children.len());
     // localId -> node index; the ids are borrowed from the XML text.
     let mut ids: FxHashMap<&str, usize> =
         FxHashMap::with_capacity_and_hasher(body.children.len(), Default::default());
     for e in body.children {
         let span = ctx.tag(e);
-        let mut pin_wires = Vec::new();
         if matches!(
             e.name,
             "comment" | "addData" | "vendorElement" | "documentation"
@@ -411,14 +407,14 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                         .flat_map(|l| l.children_named("variable"))
                     {
                         let point = v.child("connectionPointIn");
-                        pin_wires.push(raw_wires(ctx, point));
+                        let wires = raw_wires(ctx, point, &mut refs);
                         let [formal, negated, edge] =
                             v.attrs(["formalParameter", "negated", "edge"]);
                         inputs.push(InPin {
                             name: formal.unwrap_or_default().trim().to_string(),
                             negated: truthy(negated),
                             edge: edge_of(edge),
-                            wires: Vec::new(),
+                            wires,
                             span: ctx.tag(v),
                             in_out,
                         });
@@ -503,10 +499,8 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
             .map_or([None, None], |p| p.attrs(["x", "y"]));
         let point = e.child("connectionPointIn");
         ids.insert(id, nodes.len());
-        let raws = raw_wires(ctx, point);
-        let wired = !raws.is_empty();
-        raw_inputs.push(raws);
-        raw_pins.push(pin_wires);
+        let input = raw_wires(ctx, point, &mut refs);
+        let wired = !input.is_empty();
         nodes.push(Node {
             id: id.to_string(),
             num: id.parse().unwrap_or(u64::MAX),
@@ -515,49 +509,46 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
             exec_order: exec_order.and_then(|v| v.trim().parse().ok()),
             x: coord(x),
             y: coord(y),
-            input: Vec::new(),
+            input,
             has_input: point.is_some(),
             wired,
         });
     }
-    // Resolve wires.
-    let resolve = |ctx: &mut Ctx, raws: Vec<RawWire>, node: &Node| -> Vec<Wire> {
-        let mut out = Vec::with_capacity(raws.len());
-        for r in raws {
-            match ids.get(r.ref_id) {
-                Some(&from) => out.push(Wire {
-                    from,
-                    pin: r.pin,
-                    span: r.span,
-                }),
-                None => ctx.report(
-                    Diagnostic::error(
-                        code::E3006,
-                        format!("connection to localId {} which does not exist", r.ref_id),
-                    )
-                    .at(r.span)
-                    .with_primary_label("dangling wire")
-                    .with_hint("re-draw the wire in the editor, or set `refLocalId` to the localId of the element that drives it")
-                    .with_xml(diagnostics::XmlContext {
-                        pou: Some(pou.to_string()),
-                        local_id: Some(node.id.clone()),
-                        network: None,
-                    }),
-                ),
+    // Resolve wires in place (`from`: an index in `refs` until now); a dangling one is reported and
+    // dropped, in document order: a node's input, then its pins.
+    let resolve = |ctx: &mut Ctx, wires: &mut Vec<Wire>, node_id: &str| {
+        wires.retain_mut(|w| {
+            let r = refs[w.from];
+            match ids.get(r) {
+                Some(&from) => {
+                    w.from = from;
+                    true
+                }
+                None => {
+                    ctx.report(
+                        Diagnostic::error(
+                            code::E3006,
+                            format!("connection to localId {r} which does not exist"),
+                        )
+                        .at(w.span)
+                        .with_primary_label("dangling wire")
+                        .with_hint("re-draw the wire in the editor, or set `refLocalId` to the localId of the element that drives it")
+                        .with_xml(diagnostics::XmlContext {
+                            pou: Some(pou.to_string()),
+                            local_id: Some(node_id.to_string()),
+                            network: None,
+                        }),
+                    );
+                    false
+                }
             }
-        }
-        out
+        });
     };
-    for (i, (raws, pins)) in raw_inputs.into_iter().zip(raw_pins).enumerate() {
-        let wires = resolve(ctx, raws, &nodes[i]);
-        nodes[i].input = wires;
-        let mut resolved = Vec::with_capacity(pins.len());
-        for p in pins {
-            resolved.push(resolve(ctx, p, &nodes[i]));
-        }
-        if let Kind::Block { inputs, .. } = &mut nodes[i].kind {
-            for (pin, w) in inputs.iter_mut().zip(resolved) {
-                pin.wires = w;
+    for n in &mut nodes {
+        resolve(ctx, &mut n.input, &n.id);
+        if let Kind::Block { inputs, .. } = &mut n.kind {
+            for pin in inputs {
+                resolve(ctx, &mut pin.wires, &n.id);
             }
         }
     }

@@ -960,7 +960,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             },
             _ => String::new(),
         };
-        match self.pin_vals.get(&(w.from, key.clone())) {
+        match self.pin_vals.get(&(w.from, key)) {
             Some(&v) => Some(v),
             None => {
                 let msg = match (&src.kind, &w.pin) {
