@@ -1997,6 +1997,28 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     /// Stores the shared sub-values of `v` (used more than once) into temporaries, innermost first.
     /// Walks each value once: a child already in a temporary is not walked again (walking it again
     /// made a lattice of contacts, each fed by the two before it, cost time exponential in its length).
+    /// A block with an EN input: evaluates EN and jumps past the block to `skip_label` when it is FALSE
+    /// (the caller places the label after the block). Nothing without EN.
+    fn skip_unless_en(
+        &mut self,
+        en: Option<ValId>,
+        skip_label: &str,
+        span: Span,
+        out: &mut Vec<IlStmt>,
+    ) {
+        if let Some(e) = en {
+            self.prepare(e, out);
+            self.eval(e, out);
+            out.push(instr(
+                InstrKind::Jump {
+                    cond: Condition::IfFalse,
+                    label: Ident::new(skip_label, span),
+                },
+                span,
+            ));
+        }
+    }
+
     fn prepare(&mut self, v: ValId, out: &mut Vec<IlStmt>) {
         for c in self.children(v) {
             if self.temps[c].is_some() {
@@ -2190,17 +2212,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     for (n, v) in args {
                         ops.push((n.clone(), self.operand(*v, out)));
                     }
-                    if let Some(e) = en {
-                        self.prepare(*e, out);
-                        self.eval(*e, out);
-                        out.push(instr(
-                            InstrKind::Jump {
-                                cond: Condition::IfFalse,
-                                label: Ident::new(skip_label, *span),
-                            },
-                            *span,
-                        ));
-                    }
+                    self.skip_unless_en(*en, skip_label, *span, out);
                     emit_function(name, form, ops, *span, out);
                     out.push(simple(Op::St, false, Some(result.clone()), *span));
                     if en.is_some() {
@@ -2213,17 +2225,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     skip_label,
                     span,
                 } => {
-                    if let Some(e) = en {
-                        self.prepare(*e, out);
-                        self.eval(*e, out);
-                        out.push(instr(
-                            InstrKind::Jump {
-                                cond: Condition::IfFalse,
-                                label: Ident::new(skip_label, *span),
-                            },
-                            *span,
-                        ));
-                    }
+                    self.skip_unless_en(*en, skip_label, *span, out);
                     out.extend(code.iter().cloned());
                     if en.is_some() {
                         out.push(IlStmt::Label(Ident::new(skip_label, *span)));
