@@ -111,22 +111,9 @@ pub enum Kind {
         /// Transition sensing (`-(P)-`, `-(N)-`).
         edge: Edge,
     },
-    /// `<block>`: a function, function block instance or operator box.
-    Block {
-        /// `typeName`: the function or FB type (`TON`, `ADD`, a user POU).
-        type_name: String,
-        /// The `typeName` attribute.
-        type_span: Span,
-        /// `instanceName` and its span, for function blocks.
-        instance: Option<(String, Span)>,
-        /// Input and in-out pins in document order.
-        inputs: Vec<InPin>,
-        /// Output pins in document order.
-        outputs: Vec<OutPin>,
-        /// The ST statements of a CODESYS `EXECUTE` box (its vendor data's `<STCode>`), laid out so
-        /// that byte `k` is byte `base + k` of the file; `None` for every other block.
-        code: Option<crate::il_body::EmbeddedText>,
-    },
+    /// `<block>`: a function, function block instance or operator box (boxed: inline, its data made
+    /// every `Node` 232 bytes, and a graph holds one `Node` per element).
+    Block(Box<Block>),
     /// `<inVariable>`: an FBD variable or constant read into the network.
     InVar {
         /// The `<expression>` text: a variable, a field, a constant (`T#5s`, `16#FF`).
@@ -184,6 +171,24 @@ pub enum Kind {
     Return,
 }
 
+/// A `<block>` element's data ([`Kind::Block`]).
+#[derive(Debug, Clone)]
+pub struct Block {
+    /// `typeName`: the function or FB type (`TON`, `ADD`, a user POU).
+    pub type_name: String,
+    /// The `typeName` attribute.
+    pub type_span: Span,
+    /// `instanceName` and its span, for function blocks.
+    pub instance: Option<(String, Span)>,
+    /// Input and in-out pins in document order.
+    pub inputs: Vec<InPin>,
+    /// Output pins in document order.
+    pub outputs: Vec<OutPin>,
+    /// The ST statements of a CODESYS `EXECUTE` box (its vendor data's `<STCode>`), laid out so
+    /// that byte `k` is byte `base + k` of the file; `None` for every other block.
+    pub code: Option<crate::il_body::EmbeddedText>,
+}
+
 /// One graphical element of an LD/FBD body, with its position and input wires.
 #[derive(Debug, Clone)]
 pub struct Node {
@@ -217,7 +222,7 @@ impl Node {
     /// The same wires as [`Node::all_wires`], in the same order, without collecting them.
     pub fn wires(&self) -> impl Iterator<Item = &Wire> {
         let pins: &[InPin] = match &self.kind {
-            Kind::Block { inputs, .. } => inputs,
+            Kind::Block(b) => &b.inputs,
             _ => &[],
         };
         self.input
@@ -447,14 +452,14 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 } else {
                     None
                 };
-                Kind::Block {
+                Kind::Block(Box::new(Block {
                     type_name,
                     type_span: ctx.attr_span(e, "typeName"),
                     instance,
                     inputs,
                     outputs,
                     code,
-                }
+                }))
             }
             other => {
                 ctx.report(
@@ -546,8 +551,8 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     };
     for n in &mut nodes {
         resolve(ctx, &mut n.input, &n.id);
-        if let Kind::Block { inputs, .. } = &mut n.kind {
-            for pin in inputs {
+        if let Kind::Block(b) = &mut n.kind {
+            for pin in &mut b.inputs {
                 resolve(ctx, &mut pin.wires, &n.id);
             }
         }

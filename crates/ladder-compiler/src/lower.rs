@@ -719,11 +719,10 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         let instances: HashMap<String, usize> = net
             .iter()
             .filter_map(|&i| match &g.nodes[i].kind {
-                Kind::Block {
-                    instance: Some((name, _)),
-                    type_name,
-                    ..
-                } if self.is_fb_block(type_name) => Some((name.to_ascii_uppercase(), i)),
+                Kind::Block(b) if b.instance.is_some() && self.is_fb_block(&b.type_name) => {
+                    let (name, _) = b.instance.as_ref()?;
+                    Some((name.to_ascii_uppercase(), i))
+                }
                 _ => None,
             })
             .collect();
@@ -769,7 +768,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                         let rank = match &g.nodes[s].kind {
                             _ if implicit.contains(&(t, s)) => 3,
                             Kind::InOutVar { .. } => 2,
-                            Kind::Block { type_name, .. } if self.is_fb_block(type_name) => 1,
+                            Kind::Block(b) if self.is_fb_block(&b.type_name) => 1,
                             _ => continue,
                         };
                         let key = (rank, g.nodes[s].x - g.nodes[t].x, -(g.nodes[s].y));
@@ -807,7 +806,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         let names: Vec<String> = comp
             .iter()
             .map(|&i| match &g.nodes[i].kind {
-                Kind::Block { type_name, .. } => format!("{type_name} (localId {})", g.nodes[i].id),
+                Kind::Block(b) => format!("{} (localId {})", b.type_name, g.nodes[i].id),
                 _ => format!("localId {}", g.nodes[i].id),
             })
             .collect();
@@ -915,15 +914,12 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     let op = values::operand(expr, *expr_span)?;
                     return Some(self.val(Val::Leaf { op, neg: false }, src.span));
                 }
-                Kind::Block {
-                    instance: Some((inst, inst_span)),
-                    outputs,
-                    ..
-                } => {
+                Kind::Block(b) if b.instance.is_some() => {
+                    let (inst, inst_span) = b.instance.as_ref()?;
                     let inst = values::var_ref(inst, *inst_span)?;
                     let pin = match &w.pin {
                         Some(p) => p.clone(),
-                        None => outputs.first()?.name.clone(),
+                        None => b.outputs.first()?.name.clone(),
                     };
                     let op = field_operand(&inst, &pin, w.span);
                     return Some(self.val(Val::Leaf { op, neg: false }, src.span));
@@ -932,40 +928,46 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             }
         }
         let key = match &src.kind {
-            Kind::Block { outputs, .. } => match &w.pin {
-                Some(p)
-                    if outputs
-                        .iter()
-                        .any(|o| o.name.eq_ignore_ascii_case(p.trim()))
-                        || !self.ld_power_flow_quirk(p, consumer) =>
-                {
-                    p.to_ascii_uppercase()
+            Kind::Block(b) => {
+                let outputs = &b.outputs;
+                match &w.pin {
+                    Some(p)
+                        if outputs
+                            .iter()
+                            .any(|o| o.name.eq_ignore_ascii_case(p.trim()))
+                            || !self.ld_power_flow_quirk(p, consumer) =>
+                    {
+                        p.to_ascii_uppercase()
+                    }
+                    None if outputs.len() == 1 => outputs[0].name.to_ascii_uppercase(),
+                    // a contact or coil after a box (LD): the rung's power flow leaves the box by
+                    // ENO, else by its first output (TON.Q), as CODESYS and TwinCAT draw it
+                    _ if matches!(
+                        g.nodes[consumer].kind,
+                        Kind::Contact { .. } | Kind::Coil { .. }
+                    ) =>
+                    {
+                        outputs
+                            .iter()
+                            .find(|o| o.name.eq_ignore_ascii_case("ENO"))
+                            .or(outputs.first())
+                            .map(|o| o.name.to_ascii_uppercase())
+                            .unwrap_or_default()
+                    }
+                    _ => String::new(),
                 }
-                None if outputs.len() == 1 => outputs[0].name.to_ascii_uppercase(),
-                // a contact or coil after a box (LD): the rung's power flow leaves the box by
-                // ENO, else by its first output (TON.Q), as CODESYS and TwinCAT draw it
-                _ if matches!(
-                    g.nodes[consumer].kind,
-                    Kind::Contact { .. } | Kind::Coil { .. }
-                ) =>
-                {
-                    outputs
-                        .iter()
-                        .find(|o| o.name.eq_ignore_ascii_case("ENO"))
-                        .or(outputs.first())
-                        .map(|o| o.name.to_ascii_uppercase())
-                        .unwrap_or_default()
-                }
-                _ => String::new(),
-            },
+            }
             _ => String::new(),
         };
         match self.pin_vals.get(&(w.from, key)) {
             Some(&v) => Some(v),
             None => {
                 let msg = match (&src.kind, &w.pin) {
-                    (Kind::Block { type_name, .. }, Some(p)) => {
-                        format!("block {type_name} (localId {}) has no output `{p}`", src.id)
+                    (Kind::Block(b), Some(p)) => {
+                        format!(
+                            "block {} (localId {}) has no output `{p}`",
+                            b.type_name, src.id
+                        )
                     }
                     _ => format!("localId {} has no output to connect", src.id),
                 };
@@ -1462,17 +1464,17 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         let g = self.g;
         let node = &g.nodes[i];
         let span = node.span;
-        let Kind::Block {
+        let Kind::Block(b) = &node.kind else {
+            return;
+        };
+        let graph::Block {
             type_name,
             type_span,
             instance,
             inputs,
             outputs,
             code,
-        } = &node.kind
-        else {
-            return;
-        };
+        } = &**b;
         if let Some(code) = code {
             self.build_execute(ctx, i, code, inputs, outputs);
             return;
@@ -1880,9 +1882,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                             }
                         }
                     }
-                    Kind::Block {
-                        type_name, inputs, ..
-                    } => {
+                    Kind::Block(blk) => {
+                        let (type_name, inputs) = (&blk.type_name, &blk.inputs);
                         let Some(f) = catalogue::std_function(type_name) else {
                             continue;
                         };

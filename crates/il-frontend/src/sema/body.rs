@@ -175,7 +175,9 @@ impl Analyzer<'_> {
             a: self,
             pou: id,
             lits: LitVars::default(),
-            recs: Vec::new(),
+            // One record per instruction: `pos` counts the statements in walk order (labels too), so
+            // the list is never regrown (each regrowth copied it into fresh pages).
+            recs: Vec::with_capacity(pos),
             pending: Vec::new(),
             labels,
             edges: HashMap::new(),
