@@ -1,0 +1,475 @@
+//! The blocks of a graphical body, for [`super`]: a function, function block, operator or motion block
+//! box ([`NetLowering::build_block`]), its pins typed against the block's declaration, its EN/ENO, and
+//! the result type of an overloaded or literal-typed function.
+//!
+//! Input: one block node of the network being lowered and the values of its input wires. Output: the
+//! block's [`Action`] and the values of its outputs in the network's value table. Invariants: every
+//! diagnostic is located at the block (POU, network, localId); a block that cannot be typed is
+//! reported once and gives no action.
+
+use super::*;
+
+impl NetLowering<'_, '_> {
+    pub(super) fn build_block(&mut self, ctx: &mut Ctx, i: usize) {
+        let g = self.g;
+        let node = &g.nodes[i];
+        let span = node.span;
+        let Kind::Block(b) = &node.kind else {
+            return;
+        };
+        let graph::Block {
+            type_name,
+            type_span,
+            instance,
+            inputs,
+            outputs,
+            code,
+        } = &**b;
+        if let Some(code) = code {
+            self.build_execute(ctx, i, code, inputs, outputs);
+            return;
+        }
+        if type_name.is_empty() {
+            let d = self.diag(ctx, code::E3013, i, span, "block without a typeName".into());
+            ctx.report(d);
+            self.poisoned.insert(i);
+            return;
+        }
+        let Some(bt) = self.block_type(type_name) else {
+            if self
+                .pou
+                .index
+                .missing_types
+                .contains(&type_name.to_ascii_uppercase())
+            {
+                // the instance's type is missing from the file: E3009 named it with every use
+                self.poisoned.insert(i);
+                return;
+            }
+            let is_program = self
+                .pou
+                .index
+                .pous
+                .contains_key(&type_name.to_ascii_uppercase());
+            let d = if is_program {
+                self.diag(
+                    ctx,
+                    code::E3012,
+                    i,
+                    *type_span,
+                    format!("program `{type_name}` cannot be called as a block"),
+                )
+            } else {
+                self.diag(
+                    ctx,
+                    code::E3007,
+                    i,
+                    *type_span,
+                    format!("unknown block type `{type_name}`"),
+                )
+                .with_hint("not a standard function or function block, not MC_*, not a POU of this project")
+            };
+            ctx.report(d);
+            self.poisoned.insert(i);
+            return;
+        };
+        // Inputs.
+        let mut en = None;
+        let mut args: Vec<(Ident, ValId)> = Vec::new();
+        let mut unconnected: Vec<&InPin> = Vec::new();
+        for pin in inputs {
+            let v = self.input_val(ctx, &pin.wires, i);
+            let Some(mut v) = v else {
+                if !pin.wires.is_empty() {
+                    // Fed only by elements that could not be lowered (already reported).
+                    self.poisoned.insert(i);
+                    return;
+                }
+                if !pin.name.eq_ignore_ascii_case("EN") {
+                    unconnected.push(pin);
+                }
+                continue;
+            };
+            if pin.negated {
+                v = self.val(Val::Not(v), pin.span);
+            }
+            if pin.edge != Edge::None {
+                let name = format!("__trig_{}_{}", sanitize(&node.id), sanitize(&pin.name));
+                v = self.trig(name, pin.edge == Edge::Falling, v, pin.span);
+            }
+            if pin.name.eq_ignore_ascii_case("EN") {
+                self.check_bool(ctx, i, v, pin.span, format_args!("EN input"));
+                en = Some(v);
+                continue;
+            }
+            // CODESYS/TwinCAT `RS.SET` is IEC `RS.S` (a user block of that name keeps its pins)
+            let pin_name: &str = match &bt {
+                BlockType::StdFb(_) => {
+                    catalogue::vendor_pin_alias(type_name, &pin.name).unwrap_or(&pin.name)
+                }
+                _ => &pin.name,
+            };
+            match Self::pin_type(&bt, pin_name, pin.span) {
+                None => {
+                    let d = self.diag(
+                        ctx,
+                        code::E3018,
+                        i,
+                        pin.span,
+                        format!("{type_name} has no input `{}`", pin.name),
+                    );
+                    ctx.report(d);
+                    continue;
+                }
+                Some(Some(expected)) => {
+                    let to = Ty::Known(expected);
+                    // `0` and `1` are BOOL literals too (IEC 61131-3, boolean literals)
+                    if type_text(&to) == "BOOL" {
+                        let bit = match &self.vals[v] {
+                            Val::Leaf {
+                                op: Operand::Literal(l),
+                                neg: false,
+                            } => match **l {
+                                Literal {
+                                    kind: LiteralKind::Int(n @ (0 | 1)),
+                                    type_prefix: None,
+                                    ..
+                                } => Some(n),
+                                _ => None,
+                            },
+                            _ => None,
+                        };
+                        if let Some(n) = bit {
+                            let b = n == 1;
+                            v = self.val(Val::Const(b), self.spans[v]);
+                        }
+                    }
+                    let from = self.ty(v);
+                    if let (Some(f), Some(t)) = (family_of(&from), family_of(&to)) {
+                        if !catalogue::compatible(f, t) {
+                            let d = self.diag(
+                                ctx,
+                                code::E3008,
+                                i,
+                                pin.span,
+                                format!(
+                                    "input `{}` of {type_name} is {}, but is driven by {}",
+                                    pin.name,
+                                    type_text(&to),
+                                    type_text(&from)
+                                ),
+                            )
+                            .with_hint(if type_text(&to) == "BOOL" {
+                                "compare the value first (`GT`, `NE`, ...) to get a BOOL"
+                            } else {
+                                "insert a conversion block (`INT_TO_REAL`, ...) before this input"
+                            });
+                            ctx.report(d);
+                        }
+                    }
+                }
+                Some(None) => {}
+            }
+            args.push((Ident::new(pin_name, pin.span), v));
+        }
+        let eno = match en {
+            Some(e) => e,
+            None => self.val(Val::Const(true), span),
+        };
+        match bt {
+            BlockType::UserFb(_) | BlockType::StdFb(_) | BlockType::Motion => {
+                let Some((inst_name, inst_span)) = instance else {
+                    let d = self.diag(
+                        ctx,
+                        code::E3016,
+                        i,
+                        span,
+                        format!("function block {type_name} has no instance name"),
+                    );
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                };
+                let inst = match values::var_ref(inst_name, *inst_span) {
+                    Some(r)
+                        if self
+                            .pou
+                            .var_type(&r)
+                            .is_some_and(|t| self.pou.is_fb_type(&t)) =>
+                    {
+                        r
+                    }
+                    _ => {
+                        let d = self
+                            .diag(
+                                ctx,
+                                code::E3016,
+                                i,
+                                *inst_span,
+                                format!(
+                                    "instance `{inst_name}` of {type_name} is not declared in `{}`",
+                                    self.pou.pou
+                                ),
+                            )
+                            .with_hint(format!(
+                                "declare `{inst_name} : {type_name};` in the POU's variables"
+                            ));
+                        ctx.report(d);
+                        self.poisoned.insert(i);
+                        return;
+                    }
+                };
+                self.actions.push(Action::Fb {
+                    inst: inst.clone(),
+                    args: args.clone(),
+                    en,
+                    en_arg: matches!(bt, BlockType::StdFb(_)),
+                    span,
+                });
+                for out in outputs {
+                    let key = out.name.to_ascii_uppercase();
+                    let v = if key == "ENO" {
+                        eno
+                    } else if let Some((_, v)) = args.iter().find(|(n, _)| n.is(&out.name)) {
+                        // The output side of an in-out pin carries the connected variable.
+                        *v
+                    } else {
+                        self.val(
+                            Val::Leaf {
+                                op: field_operand(&inst, &out.name, span),
+                                neg: false,
+                            },
+                            span,
+                        )
+                    };
+                    let v = if out.negated {
+                        self.val(Val::Not(v), span)
+                    } else {
+                        v
+                    };
+                    self.pin_vals.insert((i, key), v);
+                }
+            }
+            BlockType::UserFn(_) | BlockType::StdFn(_) => {
+                if let Some(pin) = unconnected.first() {
+                    let d = self.diag(
+                        ctx,
+                        code::E3013,
+                        i,
+                        pin.span,
+                        format!(
+                            "input `{}` of function {type_name} is not connected",
+                            pin.name
+                        ),
+                    );
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                }
+                let (form, result_ty) = match &bt {
+                    BlockType::UserFn(sig) => (FuncForm::Formal, sig.ret.clone()),
+                    BlockType::StdFn(f) => {
+                        let form = match f.operator {
+                            Some(op) => FuncForm::Operator(op),
+                            None => FuncForm::NonFormal,
+                        };
+                        let ty = match f.rule {
+                            ResultRule::Fixed(t) => Some(named_type(t, span)),
+                            ResultRule::SameAsInputs => self
+                                .common_type(&args, f.selectors, span)
+                                .map(|t| self.literal_result_type(i, &args, f.selectors, t)),
+                        };
+                        (form, ty)
+                    }
+                    _ => (FuncForm::Formal, None),
+                };
+                let arity_ok = match &form {
+                    FuncForm::Operator(OperatorBlock::Compare(_)) => args.len() >= 2,
+                    FuncForm::Operator(OperatorBlock::Not | OperatorBlock::Move) => args.len() == 1,
+                    FuncForm::Operator(_) => args.len() >= 2,
+                    _ => true,
+                };
+                if !arity_ok {
+                    let d = self.diag(
+                        ctx,
+                        code::E3012,
+                        i,
+                        span,
+                        format!("{type_name} with {} inputs is not supported", args.len()),
+                    );
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                }
+                let Some(result_ty) = result_ty else {
+                    // inputs that are undeclared names: that is the error, not the type
+                    let mut undeclared = false;
+                    for (_, v) in &args {
+                        if let Val::Leaf {
+                            op: Operand::Var(r),
+                            ..
+                        } = &self.vals[*v]
+                        {
+                            if self.pou.var_type(r).is_none() {
+                                undeclared = true;
+                                let d = self
+                                    .diag(
+                                        ctx,
+                                        code::E1001,
+                                        i,
+                                        r.base.span,
+                                        format!("undeclared name `{}`", r.base.name),
+                                    )
+                                    .with_hint(format!(
+                                        "declare `{}` in a VAR block of `{}` (or VAR_EXTERNAL for a global)",
+                                        r.base.name, self.pou.pou
+                                    ));
+                                ctx.report(d);
+                            }
+                        }
+                    }
+                    if undeclared {
+                        self.poisoned.insert(i);
+                        return;
+                    }
+                    let d = self.diag(
+                        ctx,
+                        code::E3017,
+                        i,
+                        span,
+                        format!(
+                            "cannot tell the result type of {type_name}: no input has a known type"
+                        ),
+                    );
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                };
+                // With EN, a skipped call must leave this block's previous result, so the result
+                // gets its own variable instead of a temporary shared with other networks.
+                let result = if en.is_some() {
+                    let name = format!("__out_{}", sanitize(&node.id));
+                    self.pou.declare_hidden(&name, result_ty.clone(), span);
+                    var_operand(&name, span)
+                } else {
+                    self.alloc_temp(&result_ty)
+                };
+                self.actions.push(Action::Func {
+                    name: Ident::new(type_name, *type_span),
+                    form,
+                    args,
+                    en,
+                    result: result.clone(),
+                    skip_label: format!("__skip_{}", sanitize(&node.id)),
+                    span,
+                });
+                let rv = self.val(
+                    Val::Leaf {
+                        op: result,
+                        neg: false,
+                    },
+                    span,
+                );
+                for out in outputs {
+                    let key = out.name.to_ascii_uppercase();
+                    let v = if key == "ENO" { eno } else { rv };
+                    let v = if out.negated {
+                        self.val(Val::Not(v), span)
+                    } else {
+                        v
+                    };
+                    self.pin_vals.insert((i, key), v);
+                }
+                if outputs.is_empty() {
+                    self.pin_vals.insert((i, String::new()), rv);
+                }
+            }
+        }
+    }
+
+    /// The result type of a generic function whose inputs are all untyped literals (`fallback`: DINT
+    /// or LREAL) takes the type of the variable its output is wired to, as IEC 61131-3 types a literal
+    /// by its context: `5` into MOVE into an INT (or a subrange of INT) is INT, not DINT.
+    pub(super) fn literal_result_type(
+        &self,
+        block: usize,
+        args: &[(Ident, ValId)],
+        skip: usize,
+        fallback: TypeRef,
+    ) -> TypeRef {
+        let tys: Vec<Ty> = args.iter().skip(skip).map(|(_, v)| self.ty(*v)).collect();
+        if tys.iter().any(|t| !matches!(t, Ty::WeakInt | Ty::WeakReal)) {
+            return fallback;
+        }
+        let real = tys.iter().any(|t| matches!(t, Ty::WeakReal));
+        // the variables the output reaches, directly or through the data inputs of further generic
+        // functions (`SEL(G, 9, 10)` into `SEL(G2, _, 8)` into an INT: INT)
+        let mut stack = vec![block];
+        let mut seen = HashSet::default();
+        while let Some(b) = stack.pop() {
+            if !seen.insert(b) {
+                continue;
+            }
+            for (ni, n) in self.g.nodes.iter().enumerate() {
+                match &n.kind {
+                    Kind::OutVar {
+                        expr, expr_span, ..
+                    }
+                    | Kind::InOutVar {
+                        expr, expr_span, ..
+                    } => {
+                        if !n.input.iter().any(|w| w.from == b) {
+                            continue;
+                        }
+                        let Some(op) = values::operand(expr, *expr_span) else {
+                            continue;
+                        };
+                        if let Ty::Known(t) = self.operand_ty(&op) {
+                            let dest_real =
+                                matches!(&t, TypeRef::Named(n) if n.is("REAL") || n.is("LREAL"));
+                            if !real || dest_real {
+                                return t;
+                            }
+                        }
+                    }
+                    Kind::Block(blk) => {
+                        let (type_name, inputs) = (&blk.type_name, &blk.inputs);
+                        let Some(f) = catalogue::std_function(type_name) else {
+                            continue;
+                        };
+                        let generic = matches!(f.rule, ResultRule::SameAsInputs);
+                        let feeds_data = inputs
+                            .iter()
+                            .skip(f.selectors)
+                            .any(|p| p.wires.iter().any(|w| w.from == b));
+                        if generic && feeds_data {
+                            stack.push(ni);
+                        }
+                    }
+                    _ => {}
+                }
+            }
+        }
+        fallback
+    }
+
+    /// The result type of a generic function: the first input with a known type, else the literal kind.
+    pub(super) fn common_type(
+        &self,
+        args: &[(Ident, ValId)],
+        skip: usize,
+        span: Span,
+    ) -> Option<TypeRef> {
+        let tys: Vec<Ty> = args.iter().skip(skip).map(|(_, v)| self.ty(*v)).collect();
+        if let Some(Ty::Known(t)) = tys.iter().find(|t| matches!(t, Ty::Known(_))) {
+            return Some(t.clone());
+        }
+        if tys.iter().any(|t| matches!(t, Ty::WeakReal)) {
+            return Some(TypeRef::Named(Ident::new("LREAL", span)));
+        }
+        if tys.iter().any(|t| matches!(t, Ty::WeakInt)) {
+            return Some(TypeRef::Named(Ident::new("DINT", span)));
+        }
+        None
+    }
+}

@@ -1,0 +1,401 @@
+//! Emission, for [`super`]: the values of one lowered network become IL statements: values used more
+//! than once stored in temporaries, phase 1 (blocks, edge detectors, captured values), phase 2 (coil and
+//! output writes sharing one evaluation), then jumps and returns ([`NetLowering::emit`]).
+//!
+//! Input: the network's value table and actions, built by [`super`]. Output: IL statements appended to
+//! the body. Invariants: every value is computed exactly once per network; every statement carries the
+//! span of the element it comes from.
+
+use super::*;
+
+impl NetLowering<'_, '_> {
+    pub(super) fn children(&self, v: ValId) -> Vec<ValId> {
+        match &self.vals[v] {
+            Val::And(a, b) => vec![*a, *b],
+            Val::Or(vs) => vs.clone(),
+            Val::Not(a) => vec![*a],
+            _ => Vec::new(),
+        }
+    }
+
+    pub(super) fn count_uses(&mut self) {
+        let add = |uses: &mut Vec<u32>, v: ValId| uses[v] += 1;
+        let mut uses = std::mem::take(&mut self.uses);
+        for v in 0..self.vals.len() {
+            for c in self.children(v) {
+                add(&mut uses, c);
+            }
+        }
+        for a in &self.actions {
+            match a {
+                Action::Trig { clk, .. } => add(&mut uses, *clk),
+                Action::Fb { args, en, .. } | Action::Func { args, en, .. } => {
+                    for (_, v) in args {
+                        add(&mut uses, *v);
+                    }
+                    if let Some(e) = en {
+                        add(&mut uses, *e);
+                    }
+                }
+                Action::Execute { en, .. } => {
+                    if let Some(e) = en {
+                        add(&mut uses, *e);
+                    }
+                }
+                Action::Label(_) => {}
+            }
+        }
+        for (_, val) in self.write_groups() {
+            add(&mut uses, val);
+        }
+        for c in &self.controls {
+            match c {
+                Control::Jump(_, v, _) | Control::Return(v, _) => add(&mut uses, *v),
+            }
+        }
+        self.uses = uses;
+    }
+
+    /// Consecutive writes of one value form a group: one evaluation, several stores.
+    pub(super) fn write_groups(&self) -> Vec<(std::ops::Range<usize>, ValId)> {
+        let mut out: Vec<(std::ops::Range<usize>, ValId)> = Vec::new();
+        for (i, w) in self.writes.iter().enumerate() {
+            match out.last_mut() {
+                Some((r, v)) if *v == w.val => r.end = i + 1,
+                _ => out.push((i..i + 1, w.val)),
+            }
+        }
+        out
+    }
+
+    /// A value that can be used as an operand without evaluating anything.
+    pub(super) fn direct(&self, v: ValId) -> Option<(Operand, bool)> {
+        if let Some(t) = &self.temps[v] {
+            return Some((t.clone(), false));
+        }
+        match &self.vals[v] {
+            Val::Const(b) => Some((bool_lit(*b, self.spans[v]), false)),
+            Val::Leaf { op, neg } => Some((op.clone(), *neg)),
+            _ => None,
+        }
+    }
+
+    pub(super) fn is_trivial(&self, v: ValId) -> bool {
+        matches!(self.direct(v), Some((_, false)))
+    }
+
+    /// Stores the shared sub-values of `v` (used more than once) into temporaries, innermost first.
+    /// Walks each value once: a child already in a temporary is not walked again (walking it again
+    /// made a lattice of contacts, each fed by the two before it, cost time exponential in its length).
+    /// A block with an EN input: evaluates EN and jumps past the block to `skip_label` when it is FALSE
+    /// (the caller places the label after the block). Nothing without EN.
+    pub(super) fn skip_unless_en(
+        &mut self,
+        en: Option<ValId>,
+        skip_label: &str,
+        span: Span,
+        out: &mut Vec<IlStmt>,
+    ) {
+        if let Some(e) = en {
+            self.prepare(e, out);
+            self.eval(e, out);
+            out.push(instr(
+                InstrKind::Jump {
+                    cond: Condition::IfFalse,
+                    label: Ident::new(skip_label, span),
+                },
+                span,
+            ));
+        }
+    }
+
+    pub(super) fn prepare(&mut self, v: ValId, out: &mut Vec<IlStmt>) {
+        for c in self.children(v) {
+            if self.temps[c].is_some() {
+                continue;
+            }
+            if self.uses[c] > 1 && !self.is_trivial(c) {
+                self.materialise(c, out);
+            } else {
+                self.prepare(c, out);
+            }
+        }
+    }
+
+    /// Evaluates `v` once into a temporary; later uses read the temporary.
+    pub(super) fn materialise(&mut self, v: ValId, out: &mut Vec<IlStmt>) {
+        if self.temps[v].is_some() {
+            return;
+        }
+        self.prepare(v, out);
+        let ty = match self.ty(v) {
+            Ty::Known(t) => t,
+            _ => bool_ty(self.spans[v]),
+        };
+        let t = self.alloc_temp(&ty);
+        self.eval(v, out);
+        out.push(simple(Op::St, false, Some(t.clone()), self.spans[v]));
+        self.temps[v] = Some(t);
+    }
+
+    /// An operand holding `v` (stored in a temporary first when it is an expression).
+    pub(super) fn operand(&mut self, v: ValId, out: &mut Vec<IlStmt>) -> Operand {
+        match self.direct(v) {
+            Some((op, false)) => op,
+            _ => {
+                self.materialise(v, out);
+                self.temps[v]
+                    .clone()
+                    .unwrap_or_else(|| bool_lit(false, self.spans[v]))
+            }
+        }
+    }
+
+    /// Loads `v` into the current result (shared sub-values must already be prepared).
+    pub(super) fn eval(&self, v: ValId, out: &mut Vec<IlStmt>) {
+        let span = self.spans[v];
+        if let Some((op, neg)) = self.direct(v) {
+            out.push(simple(Op::Ld, neg, Some(op), span));
+            return;
+        }
+        match &self.vals[v] {
+            Val::And(a, b) => {
+                self.eval(*a, out);
+                self.apply(Op::And, *b, out);
+            }
+            Val::Or(vs) => {
+                self.eval(vs[0], out);
+                for x in &vs[1..] {
+                    self.apply(Op::Or, *x, out);
+                }
+            }
+            Val::Not(a) => {
+                self.eval(*a, out);
+                out.push(simple(Op::Not, false, None, span));
+            }
+            Val::Const(_) | Val::Leaf { .. } => {}
+        }
+    }
+
+    /// `AND x` / `ANDN x` / `AND( ... )`.
+    pub(super) fn apply(&self, op: Op, v: ValId, out: &mut Vec<IlStmt>) {
+        let span = self.spans[v];
+        if let Some((operand, neg)) = self.direct(v) {
+            out.push(simple(op, neg, Some(operand), span));
+            return;
+        }
+        let mut body = Vec::new();
+        self.eval(v, &mut body);
+        // Hoist the nested list's first load onto the opening line: `AND( a` ... `)`.
+        let mut operand = None;
+        if let Some(IlStmt::Instr(Instruction {
+            kind:
+                InstrKind::Simple {
+                    op: Op::Ld,
+                    negate,
+                    operand: Some(o),
+                },
+            span: s,
+        })) = body.first()
+        {
+            let (negate, o, s) = (*negate, o.clone(), *s);
+            body.remove(0);
+            if negate {
+                body.insert(0, simple(Op::Not, false, None, s));
+            }
+            operand = Some(o);
+        }
+        out.push(instr(
+            InstrKind::Deferred {
+                op,
+                negate: false,
+                operand: operand.map(Box::new),
+                body,
+                close: span,
+            },
+            span,
+        ));
+    }
+
+    /// Variables (base names, upper-cased) that evaluating `v` reads, stopping at stored values.
+    pub(super) fn reads(&self, v: ValId, acc: &mut HashSet<String>) {
+        if self.temps[v].is_some() {
+            return;
+        }
+        match &self.vals[v] {
+            Val::Leaf {
+                op: Operand::Var(r),
+                ..
+            } => {
+                acc.insert(r.base.key());
+            }
+            Val::Leaf {
+                op: Operand::Address(a),
+                ..
+            } => {
+                acc.insert(address_key(a));
+            }
+            _ => {
+                for c in self.children(v) {
+                    self.reads(c, acc);
+                }
+            }
+        }
+    }
+
+    pub(super) fn emit(&mut self, out: &mut Vec<IlStmt>) {
+        self.count_uses();
+        let mut actions = std::mem::take(&mut self.actions);
+        // Phase 1: evaluate.
+        for a in &actions {
+            match a {
+                Action::Label(l) => out.push(IlStmt::Label(l.clone())),
+                Action::Trig { inst, clk, span } => {
+                    let clk_op = self.operand(*clk, out);
+                    let inst = VarRef {
+                        base: Ident::new(inst, *span),
+                        accessors: Default::default(),
+                        span: *span,
+                    };
+                    out.push(call(
+                        Condition::Always,
+                        inst,
+                        vec![("CLK".into(), clk_op)],
+                        *span,
+                    ));
+                }
+                Action::Fb {
+                    inst,
+                    args,
+                    en,
+                    en_arg,
+                    span,
+                } => {
+                    let mut ops = Vec::new();
+                    if let (Some(e), true) = (en, en_arg) {
+                        ops.push(("EN".to_string(), self.operand(*e, out)));
+                    }
+                    for (n, v) in args {
+                        ops.push((n.name.clone(), self.operand(*v, out)));
+                    }
+                    let cond = match en {
+                        Some(_) if *en_arg => Condition::Always,
+                        Some(e) => {
+                            self.prepare(*e, out);
+                            self.eval(*e, out);
+                            Condition::IfTrue
+                        }
+                        None => Condition::Always,
+                    };
+                    out.push(call(cond, inst.clone(), ops, *span));
+                }
+                Action::Func {
+                    name,
+                    form,
+                    args,
+                    en,
+                    result,
+                    skip_label,
+                    span,
+                } => {
+                    let mut ops = Vec::new();
+                    for (n, v) in args {
+                        ops.push((n.clone(), self.operand(*v, out)));
+                    }
+                    self.skip_unless_en(*en, skip_label, *span, out);
+                    emit_function(name, form, ops, *span, out);
+                    out.push(simple(Op::St, false, Some(result.clone()), *span));
+                    if en.is_some() {
+                        out.push(IlStmt::Label(Ident::new(skip_label, *span)));
+                    }
+                }
+                Action::Execute {
+                    code,
+                    en,
+                    skip_label,
+                    span,
+                } => {
+                    self.skip_unless_en(*en, skip_label, *span, out);
+                    out.extend(code.iter().cloned());
+                    if en.is_some() {
+                        out.push(IlStmt::Label(Ident::new(skip_label, *span)));
+                    }
+                }
+            }
+        }
+        // Shared values and captured writes are evaluated before the first write.
+        let groups = self.write_groups();
+        let mut finals: Vec<ValId> = groups.iter().map(|(_, v)| *v).collect();
+        for c in &self.controls {
+            match c {
+                Control::Jump(_, v, _) | Control::Return(v, _) => finals.push(*v),
+            }
+        }
+        for &v in &finals {
+            self.prepare(v, out);
+            if self.uses[v] > 1 && !self.is_trivial(v) {
+                self.materialise(v, out);
+            }
+        }
+        // A value read after an earlier group's write is captured first. Nothing is written before
+        // the first value, and the last group's targets are read by nothing after it: the usual
+        // one-write rung needs no sets at all.
+        let mut written: HashSet<String> = HashSet::default();
+        for (gi, &v) in finals.iter().enumerate() {
+            if !written.is_empty() {
+                let mut rd = HashSet::default();
+                self.reads(v, &mut rd);
+                if !rd.is_disjoint(&written) {
+                    self.materialise(v, out);
+                }
+            }
+            if gi + 1 < finals.len() {
+                if let Some((r, _)) = groups.get(gi) {
+                    written.extend(self.writes[r.clone()].iter().map(|w| target_key(&w.target)));
+                }
+            }
+        }
+        // Phase 2: write.
+        for (r, v) in &groups {
+            self.eval(*v, out);
+            for w in &self.writes[r.clone()] {
+                let (op, neg) = match w.kind {
+                    WriteKind::St { neg } => (Op::St, neg),
+                    WriteKind::Set => (Op::S, false),
+                    WriteKind::Reset => (Op::R, false),
+                };
+                out.push(simple(op, neg, Some(w.target.clone()), w.span));
+            }
+        }
+        // Phase 3: jumps and returns.
+        for c in &self.controls {
+            match c {
+                Control::Jump(label, v, span) => {
+                    let cond = self.cond(*v, out);
+                    out.push(instr(
+                        InstrKind::Jump {
+                            cond,
+                            label: label.clone(),
+                        },
+                        *span,
+                    ));
+                }
+                Control::Return(v, span) => {
+                    let cond = self.cond(*v, out);
+                    out.push(instr(InstrKind::Return { cond }, *span));
+                }
+            }
+        }
+        // The list's room serves the next network.
+        actions.clear();
+        self.actions = actions;
+    }
+
+    pub(super) fn cond(&self, v: ValId, out: &mut Vec<IlStmt>) -> Condition {
+        if matches!(self.vals[v], Val::Const(true)) && self.temps[v].is_none() {
+            return Condition::Always;
+        }
+        self.eval(v, out);
+        Condition::IfTrue
+    }
+}
