@@ -582,8 +582,6 @@ impl Body<'_, '_> {
                 return Some(self.program_place(base, id));
             }
         }
-        let program_id = program;
-        let program = program.is_some();
         if !self.a.silent
             && !self
                 .a
@@ -592,7 +590,7 @@ impl Body<'_, '_> {
         {
             return None;
         }
-        if program && !self.a.silent {
+        if program.is_some() && !self.a.silent {
             // `MAIN.x` (CODESYS/TwinCAT): one error per POU and program, its other uses unreported
             let key = (self.pou.0, format!("program {}", base.key()), String::new());
             if !self.a.internal_accessed.insert(key) {
@@ -600,7 +598,7 @@ impl Body<'_, '_> {
             }
         }
         let hint = self.similar_name(&base.name);
-        let message = match program_id {
+        let message = match program {
             Some(_) if plain => format!("`{}` is a program, not a variable", base.name),
             Some(id) => {
                 let n = self.program_instances(id);
