@@ -68,7 +68,9 @@ pub fn lower_pou_body(
         "LD" | "FBD" => {
             let g = graph::read(ctx, lang, name);
             let mut low = BodyLowering::new(index, pou, span);
+            // a box named after an action is `CAL Act` (lower_block.rs): the action runs there
             let stmts = low.lower(ctx, &g);
+            let stmts = inline(ctx, stmts);
             let hidden = low.hidden_vars();
             let mut blocks = acts.blocks;
             if !hidden.is_empty() {
@@ -192,6 +194,21 @@ fn lower_actions<'e, 'a>(
                         n.to_ascii_uppercase(),
                         v.name.name.trim_start_matches('_')
                     );
+                    renames.bases.insert(v.name.key(), new.clone());
+                    v.name.name = new;
+                    hidden.push(v);
+                }
+                renames.apply(&mut stmts);
+                raw.push((id, stmts));
+            }
+            "SFC" => {
+                // one scan of the chart per call; its state (steps, timers, action control) is
+                // the POU's, namespaced by the action so two charts never share a name
+                let chart = crate::sfc::chart::read(ctx, b, name);
+                let (mut stmts, vars) = crate::sfc::lower_chart(ctx, index, pou_el, pou, b, chart);
+                let mut renames = Renames::default();
+                for mut v in vars {
+                    let new = crate::sfc::names::in_action(n, &v.name.name);
                     renames.bases.insert(v.name.key(), new.clone());
                     v.name.name = new;
                     hidden.push(v);

@@ -10,6 +10,7 @@
 
 use super::{
     bool_ty, sanitize, shown, simple, Action, BodyLowering, InPin, Kind, NetLowering, Operand, Val,
+    ValId,
 };
 use crate::context::{Ctx, Where};
 use crate::graph::{self, Graph};
@@ -180,6 +181,18 @@ impl NetLowering<'_, '_> {
             skip_label: format!("__skip_{}", sanitize(&node.id)),
             span,
         });
+        self.eno_outputs(i, en, outputs);
+    }
+
+    /// The outputs of a box whose ENO is its EN (an EXECUTE box, an action call): every output
+    /// pin, and the box's power flow when it has none, is EN (TRUE without EN).
+    pub(super) fn eno_outputs(
+        &mut self,
+        i: usize,
+        en: Option<ValId>,
+        outputs: &[graph::OutPin],
+    ) {
+        let span = self.g.nodes[i].span;
         let eno = en.unwrap_or_else(|| self.val(Val::Const(true), span));
         for out in outputs {
             let v = if out.negated {

@@ -42,6 +42,9 @@ pub struct PouSig {
     pub pins: Vec<(String, VarKind, TypeRef)>,
     /// A FUNCTION's result type.
     pub ret: Option<TypeRef>,
+    /// The names of a program's or function block's actions (`<actions>`, CODESYS), as written:
+    /// an LD/FBD box of that name calls the action.
+    pub actions: Vec<String>,
 }
 
 /// Everything a body lowering needs to know about the rest of the project.
@@ -130,7 +133,16 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
                 );
                 methods.insert(h.name.key(), ms);
             }
-            index.pous.insert(h.name.key(), signature(&h));
+            let mut sig = signature(&h);
+            sig.actions = p
+                .child("actions")
+                .into_iter()
+                .flat_map(|a| a.children_named("action"))
+                .filter_map(|a| a.attr("name").map(str::trim))
+                .filter(|n| crate::values::is_ident(n))
+                .map(str::to_string)
+                .collect();
+            index.pous.insert(h.name.key(), sig);
             headers.push((*p, h));
         }
     }
@@ -633,6 +645,7 @@ fn signature(p: &Pou) -> PouSig {
         name: p.name.name.clone(),
         pins,
         ret: p.return_type.clone(),
+        actions: Vec::new(),
     }
 }
 

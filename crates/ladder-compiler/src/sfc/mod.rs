@@ -68,6 +68,16 @@ pub mod names {
     pub fn action_part(action: &str, part: &str) -> String {
         format!("__sfc_{part}_{action}")
     }
+    /// The name a hidden variable `hidden` of the chart of action `action` (a POU's action whose
+    /// body is SFC) takes in the POU: `__sfc_X_Fill` of action `Sequence` is
+    /// `__sfc_Sequence__X_Fill`. An identifier never holds two underscores in a row, so the name
+    /// of the action ends at the first `__`, and the charts of two actions never share a variable.
+    pub fn in_action(action: &str, hidden: &str) -> String {
+        let rest = hidden
+            .strip_prefix("__sfc_")
+            .unwrap_or_else(|| hidden.trim_start_matches('_'));
+        format!("__sfc_{action}__{rest}")
+    }
 }
 
 fn sanitize(id: &str) -> String {

@@ -51,6 +51,7 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
                         name: p.name.name.clone(),
                         pins,
                         ret: p.return_type.clone(),
+                        actions: Vec::new(),
                     },
                 );
             }
