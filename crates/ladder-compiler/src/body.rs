@@ -48,9 +48,10 @@ pub fn lower_pou_body(
     };
     // CODESYS exports a program's or FB's actions (called from its body as `Act();`) in the POU's
     // standard `<actions>`: an ST body lowers its ST actions where it calls them (`st_actions`);
-    // actions in IL, LD or FBD (and the ST actions of a body in another language) are lowered to IL
-    // here, copied where the body calls them and linked for calls through an instance. The actions
-    // of an SFC body are its chart's (`crate::sfc`).
+    // actions in IL, LD, FBD or SFC (and the ST actions of a body in another language) are lowered
+    // to IL here, copied where the body calls them (`CAL Act` in IL, an action box in LD/FBD) and
+    // linked for calls through an instance. The actions of an SFC body are its chart's
+    // (`crate::sfc`).
     let mut st_actions: Vec<(Ident, &Element)> = Vec::new();
     let mut acts = LoweredActions::default();
     if lang.name != "SFC" && (lang.name != "ST" || used) {
@@ -137,9 +138,12 @@ struct LoweredActions {
 }
 
 /// Reads the `<actions>` of a POU whose body is `body_lang` (not SFC): ST actions of an ST body go to
-/// `st_actions` (the ST lowering inlines them); every other action with a name and an IL, LD, FBD
-/// or ST body is lowered to IL, and also handed to [`il_frontend::actions::link`] (through
-/// `ctx.actions`) for calls through an instance. What is left (no name, an SFC body) is W3401.
+/// `st_actions` (the ST lowering inlines them); every other action with a name and an IL, LD, FBD,
+/// SFC or ST body is lowered to IL, and also handed to [`il_frontend::actions::link`] (through
+/// `ctx.actions`) for calls through an instance. An SFC body is one scan of its chart
+/// ([`crate::sfc::lower_chart`]), whose hidden variables (steps, step times, action control) are
+/// the POU's, renamed per action ([`crate::sfc::names::in_action`]). What is left (no name, a body
+/// in no known language) is W3401.
 fn lower_actions<'e, 'a>(
     ctx: &mut Ctx,
     index: &Index,
@@ -266,7 +270,7 @@ fn lower_actions<'e, 'a>(
             )
             .at(ctx.tag(first))
             .with_primary_label("action of a program or function block")
-            .with_hint("actions with a name and an IL, ST, LD or FBD body are compiled (called as `Act();` / `CAL Act` from the POU's body, or as `inst.Act();` / `CAL inst.Act` from other POUs); a call of this one is an unknown function (E1019)")
+            .with_hint("actions with a name and an IL, ST, LD, FBD or SFC body are compiled (called as `Act();` / `CAL Act` / a box `Act` from the POU's body, or as `inst.Act();` / `CAL inst.Act` from other POUs); a call of this one is an unknown function (E1019)")
             .with_xml(xml_ctx.clone()),
         );
     }

@@ -1,6 +1,7 @@
 //! The blocks of a graphical body, for [`super`]: a function, function block, operator or motion block
 //! box ([`NetLowering::build_block`]), its pins typed against the block's declaration, its EN/ENO, and
-//! the result type of an overloaded or literal-typed function.
+//! the result type of an overloaded or literal-typed function; a box named after an action of the POU
+//! or of an FB instance (CODESYS), which becomes `CAL Act` / `CAL inst.Act` behind its EN.
 //!
 //! Input: one block node of the network being lowered and the values of its input wires. Output: the
 //! block's [`Action`] and the values of its outputs in the network's value table. Invariants: every

@@ -186,12 +186,7 @@ impl NetLowering<'_, '_> {
 
     /// The outputs of a box whose ENO is its EN (an EXECUTE box, an action call): every output
     /// pin, and the box's power flow when it has none, is EN (TRUE without EN).
-    pub(super) fn eno_outputs(
-        &mut self,
-        i: usize,
-        en: Option<ValId>,
-        outputs: &[graph::OutPin],
-    ) {
+    pub(super) fn eno_outputs(&mut self, i: usize, en: Option<ValId>, outputs: &[graph::OutPin]) {
         let span = self.g.nodes[i].span;
         let eno = en.unwrap_or_else(|| self.val(Val::Const(true), span));
         for out in outputs {

@@ -1,0 +1,297 @@
+//! Constructs of the sixth acceptance run of issue #13 (2026-12-03, branch `lang`): the CODESYS
+//! PLCopen exports of the "Pick and Place Unit" (PPU and xPPU scenarios) of
+//! `KamilRosiak/IEC_61131_3_Clone_Detection`, whose function blocks keep their sequences in actions
+//! whose body is an SFC chart (before, W3401 named them and every call was E1019 or E1011). Each
+//! test is a minimal reproduction written here (`tests/fixtures/unseen/codesys_sfc_actions.xml`,
+//! `codesys_action_boxes.xml`), run through `ladderc run` (C compiled with the sanitizers) or
+//! `ladderc check`:
+//! - an action whose body is an SFC chart runs one scan of its chart per call, from the POU's ST
+//!   body (`Sequence();`), through an instance (`fb2.Sequence(Start := go);`) and from IL
+//!   (`CALC Blink`); its steps, step times and action qualifiers (S, R, N, P, with the final scan of
+//!   an action body) behave as the same chart as a function block's body, and its state is the
+//!   POU's, in hidden variables named after the action (`__sfc_Blink__X_Dark`);
+//! - an LD or FBD box named after an action (`Tick`, `ctr.Inc`, `Blink`) calls it when powered
+//!   (before, E3007 "unknown block type"); its ENO is its EN.
+
+mod common;
+use common::{check_text, ladderc};
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/unseen")
+        .join(name)
+}
+
+/// `ladderc run FILE` (10 ms scans, C built with the sanitizers) with `stimulus` rows
+/// (`cycle,variable,value`), tracing `watch`: the trace and standard error; asserts exit 0 and no
+/// warning that an action is not compiled.
+fn run(file: &Path, cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(file)
+        .args([
+            "--cycles",
+            &cycles.to_string(),
+            "--cycle-ms",
+            "10",
+            "--sanitize",
+        ])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", watch])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{file:?}: {stderr}");
+    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    assert!(!stderr.contains("W3401"), "{stderr}");
+    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+}
+
+/// The end of the `<action>` (a POU's action with an SFC body) that starts at `start`: after the
+/// `</action>` that follows its chart (the chart's action blocks hold `<action>` elements too).
+fn action_end(src: &str, start: usize) -> usize {
+    let chart_end = src[start..].find("</SFC>").unwrap() + start;
+    src[chart_end..].find("</action>").unwrap() + chart_end + "</action>".len()
+}
+
+/// The columns `names` of a trace, one row per cycle (`cycle,time_ms` left out).
+fn columns(trace: &str, names: &[&str]) -> Vec<Vec<String>> {
+    let mut lines = trace.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let ks: Vec<usize> = names
+        .iter()
+        .map(|n| {
+            header
+                .iter()
+                .position(|h| h == n)
+                .unwrap_or_else(|| panic!("no column {n} in {header:?}"))
+        })
+        .collect();
+    lines
+        .map(|l| {
+            let cells: Vec<&str> = l.split(',').collect();
+            ks.iter().map(|&k| cells[k].to_string()).collect()
+        })
+        .collect()
+}
+
+/// Cylinder's body calls its SFC action `Sequence` every scan; PLC_PRG calls `fb(Start := go)` and
+/// `fb2.Sequence(Start := go)` (only the action runs, with the input passed first). Init -> Move
+/// when Start (a condition wired from an input variable, as CODESYS exports it); Move sets Extend
+/// (S) and runs the ST action CountUp (N); Move -> Hold after 30 ms of Move.T; Hold resets Extend (R)
+/// and drives Done (N); Hold -> Init when Start falls.
+#[test]
+fn an_sfc_action_runs_one_scan_of_its_chart_per_call_from_the_body_and_through_an_instance() {
+    let (trace, _) = run(
+        &fixture("codesys_sfc_actions.xml"),
+        11,
+        "2,PLC_PRG.go,TRUE\n8,PLC_PRG.go,FALSE\n",
+        "PLC_PRG.fb.__sfc_Sequence__X_Move,PLC_PRG.fb.__sfc_Sequence__T_Move,PLC_PRG.fb.Extend,\
+         PLC_PRG.fb.Count,PLC_PRG.fb.Done,PLC_PRG.fb2.Extend,PLC_PRG.fb2.Count,PLC_PRG.fb2.Done",
+    );
+    // Move is entered in cycle 2 (Start), Extend is set and CountUp runs from that scan; Move.T
+    // reaches 30 ms in cycle 5, where Hold resets Extend, drives Done and CountUp runs its final
+    // scan (Count 4); Start falls in cycle 8 and Hold is left (Done FALSE)
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.fb.__sfc_Sequence__X_Move,PLC_PRG.fb.__sfc_Sequence__T_Move,\
+         PLC_PRG.fb.Extend,PLC_PRG.fb.Count,PLC_PRG.fb.Done,PLC_PRG.fb2.Extend,PLC_PRG.fb2.Count,\
+         PLC_PRG.fb2.Done\n\
+         0,0,0,T#0ms,0,0,0,0,0,0\n\
+         1,10,0,T#0ms,0,0,0,0,0,0\n\
+         2,20,1,T#0ms,1,1,0,1,1,0\n\
+         3,30,1,T#10ms,1,2,0,1,2,0\n\
+         4,40,1,T#20ms,1,3,0,1,3,0\n\
+         5,50,0,T#30ms,0,4,1,0,4,1\n\
+         6,60,0,T#30ms,0,4,1,0,4,1\n\
+         7,70,0,T#30ms,0,4,1,0,4,1\n\
+         8,80,0,T#30ms,0,4,0,0,4,0\n\
+         9,90,0,T#30ms,0,4,0,0,4,0\n\
+         10,100,0,T#30ms,0,4,0,0,4,0\n"
+    );
+}
+
+/// The same chart as the body of a function block (`Cylinder` with `<SFC>` as its body, called as
+/// `fb(Start := go)`) and as an action called every scan behave alike, cycle by cycle.
+#[test]
+fn an_sfc_action_behaves_as_the_same_chart_as_a_function_block_body() {
+    let src = std::fs::read_to_string(fixture("codesys_sfc_actions.xml")).unwrap();
+    let start = src.find("<SFC>").unwrap();
+    let end = src.find("</SFC>").unwrap() + "</SFC>".len();
+    let chart = &src[start..end];
+    let action_start = src.find("<action name=\"Sequence\">").unwrap();
+    let action_end = action_end(&src, action_start);
+    let body =
+        "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">Sequence();</xhtml></ST></body>";
+    let as_body = format!("{}{}", &src[..action_start], &src[action_end..])
+        .replacen(body, &format!("<body>{chart}</body>"), 1)
+        .replace("fb2.Sequence(Start := go);", "fb2(Start := go);");
+    assert!(as_body.contains("<body><SFC>") && !as_body.contains("Sequence"));
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("as_body.xml");
+    std::fs::write(&file, as_body).unwrap();
+    let stimulus =
+        "1,PLC_PRG.go,TRUE\n3,PLC_PRG.go,FALSE\n6,PLC_PRG.go,TRUE\n13,PLC_PRG.go,FALSE\n";
+    let outputs = "PLC_PRG.fb.Extend,PLC_PRG.fb.Count,PLC_PRG.fb.Done,PLC_PRG.fb2.Extend,\
+                   PLC_PRG.fb2.Count,PLC_PRG.fb2.Done";
+    let names: Vec<&str> = outputs.split(',').map(str::trim).collect();
+    let (as_action, _) = run(&fixture("codesys_sfc_actions.xml"), 16, stimulus, outputs);
+    let (as_body, _) = run(&file, 16, stimulus, outputs);
+    let a = columns(&as_action, &names);
+    assert_eq!(a, columns(&as_body, &names));
+    // the chart did evolve: Extend was set and reset, Done came and went, Count counted
+    assert!(a.iter().any(|r| r[0] == "1") && a.last().unwrap()[0] == "0");
+    assert!(a.iter().any(|r| r[2] == "1"));
+    assert_ne!(a.last().unwrap()[1], "0");
+}
+
+/// Lamp (IL body) calls its SFC action Blink with `CALC Blink` while `enable`: Dark -> Lit after
+/// 20 ms, Lit -> Dark after 10 ms; Lit drives `light` (N) and runs the IL action CountFlash once
+/// per entry (P). While not called, the chart stands still (Dark.T keeps its value, then measures
+/// the time since the step was entered, as a step's TON does).
+#[test]
+fn an_sfc_action_called_from_il_runs_only_when_called() {
+    let (trace, _) = run(
+        &fixture("codesys_sfc_actions.xml"),
+        16,
+        "1,Lamp.enable,TRUE\n9,Lamp.enable,FALSE\n12,Lamp.enable,TRUE\n",
+        "Lamp.enable,Lamp.light,Lamp.flashes,Lamp.__sfc_Blink__X_Dark,Lamp.__sfc_Blink__T_Dark",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Lamp.enable,Lamp.light,Lamp.flashes,Lamp.__sfc_Blink__X_Dark,Lamp.__sfc_Blink__T_Dark\n\
+         0,0,0,0,0,1,T#0ms\n\
+         1,10,1,0,0,1,T#0ms\n\
+         2,20,1,0,0,1,T#10ms\n\
+         3,30,1,1,1,0,T#20ms\n\
+         4,40,1,0,1,1,T#0ms\n\
+         5,50,1,0,1,1,T#10ms\n\
+         6,60,1,1,2,0,T#20ms\n\
+         7,70,1,0,2,1,T#0ms\n\
+         8,80,1,0,2,1,T#10ms\n\
+         9,90,0,0,2,1,T#10ms\n\
+         10,100,0,0,2,1,T#10ms\n\
+         11,110,0,0,2,1,T#10ms\n\
+         12,120,1,1,3,0,T#50ms\n\
+         13,130,1,0,3,1,T#0ms\n\
+         14,140,1,0,3,1,T#10ms\n\
+         15,150,1,1,4,0,T#20ms\n"
+    );
+}
+
+/// Two SFC actions of one POU with the same step names keep separate state: Blink (20 ms dark,
+/// 10 ms lit) and a copy Slow (40 ms dark, 10 ms lit) driving another variable.
+#[test]
+fn two_sfc_actions_with_the_same_step_names_keep_separate_state() {
+    let src = std::fs::read_to_string(fixture("codesys_sfc_actions.xml")).unwrap();
+    let start = src.find("<action name=\"Blink\">").unwrap();
+    let end = action_end(&src, start);
+    let slow = src[start..end]
+        .replace("name=\"Blink\"", "name=\"Slow\"")
+        .replace("T#20ms", "T#40ms")
+        .replace(
+            "<reference name=\"light\" />",
+            "<reference name=\"slowLight\" />",
+        )
+        .replace(
+            "<reference name=\"CountFlash\" />",
+            "<reference name=\"light\" />",
+        );
+    let src = format!("{}\n{slow}{}", &src[..end], &src[end..])
+        .replace(
+            "<variable name=\"flashes\">",
+            "<variable name=\"slowLight\"><type><BOOL /></type></variable>\n<variable name=\"flashes\">",
+        )
+        .replace("CALC Blink", "CALC Blink\nLD enable\nCALC Slow");
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("two.xml");
+    std::fs::write(&file, src).unwrap();
+    let (trace, _) = run(
+        &file,
+        12,
+        "0,Lamp.enable,TRUE\n",
+        "Lamp.__sfc_Blink__X_Lit,Lamp.__sfc_Slow__X_Lit,Lamp.slowLight,Lamp.flashes",
+    );
+    let rows = columns(
+        &trace,
+        &[
+            "Lamp.__sfc_Blink__X_Lit",
+            "Lamp.__sfc_Slow__X_Lit",
+            "Lamp.slowLight",
+            "Lamp.flashes",
+        ],
+    );
+    let lit = |k: usize| -> Vec<usize> {
+        rows.iter()
+            .enumerate()
+            .filter(|(_, r)| r[k] == "1")
+            .map(|(c, _)| c)
+            .collect()
+    };
+    // Blink is lit every third scan from cycle 2, Slow every fifth from cycle 4
+    assert_eq!(lit(0), vec![2, 5, 8, 11], "{trace}");
+    assert_eq!(lit(1), vec![4, 9], "{trace}");
+    assert_eq!(lit(2), vec![4, 9], "{trace}");
+    assert_eq!(rows.last().unwrap()[3], "4", "{trace}");
+}
+
+/// PLC_PRG's LD body: contact `run` powers a box `Tick` (its own ST action: ticks + 1) whose ENO
+/// drives the coil `ticked`; contact `count` powers `ctr.Inc` (an action of the instance ctr);
+/// the left rail powers `Blink`, its own SFC action (Dark 20 ms, Lit 10 ms driving `light`).
+#[test]
+fn ld_boxes_named_after_actions_call_them_when_powered() {
+    let (trace, stderr) = run(
+        &fixture("codesys_action_boxes.xml"),
+        8,
+        "1,PLC_PRG.run,TRUE\n4,PLC_PRG.run,FALSE\n2,PLC_PRG.count,TRUE\n5,PLC_PRG.count,FALSE\n",
+        "PLC_PRG.run,PLC_PRG.ticks,PLC_PRG.ticked,PLC_PRG.count,PLC_PRG.ctr.n,PLC_PRG.light",
+    );
+    assert!(!stderr.contains("E3007"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.run,PLC_PRG.ticks,PLC_PRG.ticked,PLC_PRG.count,PLC_PRG.ctr.n,PLC_PRG.light\n\
+         0,0,0,0,0,0,0,0\n\
+         1,10,1,1,1,0,0,0\n\
+         2,20,1,2,1,1,1,1\n\
+         3,30,1,3,1,1,2,0\n\
+         4,40,0,3,0,1,3,0\n\
+         5,50,0,3,0,0,3,1\n\
+         6,60,0,3,0,0,3,0\n\
+         7,70,0,3,0,0,3,0\n"
+    );
+}
+
+/// An action box wired to an input other than EN is one E3018 at the pin, located in the POU,
+/// network and localId; a box named after nothing stays E3007.
+#[test]
+fn an_action_box_with_another_input_is_one_located_error() {
+    let src = std::fs::read_to_string(fixture("codesys_action_boxes.xml")).unwrap();
+    let wrong = src.replacen(
+        "<variable formalParameter=\"EN\"><connectionPointIn><connection refLocalId=\"21\" />",
+        "<variable formalParameter=\"Step\"><connectionPointIn><connection refLocalId=\"21\" />",
+        1,
+    );
+    let (code, lines) = check_text("boxes.xml", &wrong);
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].starts_with("boxes.xml:101:17:")
+            && errors[0].contains(
+                "error[E3018]: the call of action `ctr.Inc` has no input `Step` [POU `PLC_PRG`, network 2, localId 22]"
+            ),
+        "{lines:?}"
+    );
+    let unknown = src.replacen("typeName=\"ctr.Inc\"", "typeName=\"ctr.Dec\"", 1);
+    let (code, lines) = check_text("boxes.xml", &unknown);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines.len() == 1 && lines[0].contains("error[E3007]: unknown block type `ctr.Dec`"),
+        "{lines:?}"
+    );
+}
