@@ -295,3 +295,63 @@ fn an_action_box_with_another_input_is_one_located_error() {
         "{lines:?}"
     );
 }
+
+/// An ST expression in an FBD input variable (and an SFC condition, as the PPU's charts write
+/// them) may read an internal variable of an FB instance (`NOT sw.DI_Switch`; CODESYS and
+/// TwinCAT allow it, W1412), typed from the block's declaration (before, E3011 "the type of ...
+/// cannot be told").
+#[test]
+fn an_expression_reading_an_internal_variable_of_an_instance_runs() {
+    let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <fileHeader companyName="" productName="CODESYS" productVersion="CODESYS V3.5 SP19" creationDateTime="2024-01-01T00:00:00" />
+  <contentHeader name="Internal" modificationDateTime="2024-01-01T00:00:00"><coordinateInfo><fbd><scaling x="1" y="1" /></fbd><ld><scaling x="1" y="1" /></ld><sfc><scaling x="1" y="1" /></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes /><pous>
+    <pou name="MicroSwitch" pouType="functionBlock">
+      <interface><inputVars><variable name="press"><type><BOOL /></type></variable></inputVars>
+        <localVars><variable name="DI_Switch"><type><BOOL /></type></variable><variable name="count"><type><INT /></type></variable></localVars></interface>
+      <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">DI_Switch := press; count := count + 1;</xhtml></ST></body>
+    </pou>
+    <pou name="PLC_PRG" pouType="program">
+      <interface><localVars>
+        <variable name="go"><type><BOOL /></type></variable>
+        <variable name="y"><type><BOOL /></type></variable>
+        <variable name="n"><type><INT /></type></variable>
+        <variable name="sw"><type><derived name="MicroSwitch" /></type></variable>
+      </localVars></interface>
+      <body><FBD>
+        <inVariable localId="1"><position x="0" y="0" /><connectionPointOut /><expression>go</expression></inVariable>
+        <block localId="2" typeName="MicroSwitch" instanceName="sw"><position x="0" y="0" />
+          <inputVariables><variable formalParameter="press"><connectionPointIn><connection refLocalId="1" /></connectionPointIn></variable></inputVariables>
+          <inOutVariables /><outputVariables /></block>
+        <inVariable localId="3"><position x="0" y="100" /><connectionPointOut /><expression>NOT sw.DI_Switch</expression></inVariable>
+        <outVariable localId="4"><position x="0" y="100" /><connectionPointIn><connection refLocalId="3" /></connectionPointIn><expression>y</expression></outVariable>
+        <inVariable localId="5"><position x="0" y="200" /><connectionPointOut /><expression>sw.count * 2</expression></inVariable>
+        <outVariable localId="6"><position x="0" y="200" /><connectionPointIn><connection refLocalId="5" /></connectionPointIn><expression>n</expression></outVariable>
+      </FBD></body>
+    </pou>
+  </pous></types>
+  <instances><configurations><configuration name="Device"><resource name="Application">
+    <task name="MainTask" interval="PT0.01S" priority="1"><pouInstance name="PLC_PRG" typeName="" /></task>
+  </resource></configuration></configurations></instances>
+</project>"#;
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("internal.xml");
+    std::fs::write(&file, xml).unwrap();
+    // the expressions are evaluated at the start of their network, after sw ran in network 1:
+    // y is NOT go (DI_Switch follows go), n is twice the calls of sw
+    let (trace, stderr) = run(
+        &file,
+        4,
+        "1,PLC_PRG.go,TRUE\n3,PLC_PRG.go,FALSE\n",
+        "PLC_PRG.go,PLC_PRG.y,PLC_PRG.n",
+    );
+    assert!(
+        stderr.contains("W1412") && !stderr.contains("E3011"),
+        "{stderr}"
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.go,PLC_PRG.y,PLC_PRG.n\n0,0,0,1,2\n1,10,1,0,4\n2,20,1,0,6\n3,30,0,1,8\n"
+    );
+}

@@ -466,9 +466,11 @@ impl<'i> BodyLowering<'i> {
             return catalogue::motion_pin_type(&field.name).map(|t| named_type(t, span));
         }
         if let Some(sig) = self.index.pous.get(&n.key()) {
+            // an internal variable of an FB instance too (CODESYS, TwinCAT; W1412)
             return sig
                 .pins
                 .iter()
+                .chain(&sig.internals)
                 .find(|(p, _, _)| field.is(p))
                 .map(|(_, _, t)| t.clone());
         }

@@ -42,6 +42,9 @@ pub struct PouSig {
     pub pins: Vec<(String, VarKind, TypeRef)>,
     /// A FUNCTION's result type.
     pub ret: Option<TypeRef>,
+    /// The other variables (`VAR`, `VAR_TEMP`, `VAR_EXTERNAL` ...) with their block kind and type:
+    /// not pins, only read to type `inst.x` (an FB instance's internal variable, W1412).
+    pub internals: Vec<(String, VarKind, TypeRef)>,
     /// The names of a program's or function block's actions (`<actions>`, CODESYS), as written:
     /// an LD/FBD box of that name calls the action.
     pub actions: Vec<String>,
@@ -630,21 +633,21 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
 }
 
 fn signature(p: &Pou) -> PouSig {
-    let pins = p
+    let (pins, internals) = p
         .var_blocks
         .iter()
-        .filter(|b| matches!(b.kind, VarKind::Input | VarKind::Output | VarKind::InOut))
         .flat_map(|b| {
             b.vars
                 .iter()
                 .map(move |v| (v.name.name.clone(), b.kind, v.ty.clone()))
         })
-        .collect();
+        .partition(|(_, k, _)| matches!(k, VarKind::Input | VarKind::Output | VarKind::InOut));
     PouSig {
         kind: p.kind,
         name: p.name.name.clone(),
         pins,
         ret: p.return_type.clone(),
+        internals,
         actions: Vec::new(),
     }
 }
