@@ -355,3 +355,41 @@ fn an_expression_reading_an_internal_variable_of_an_instance_runs() {
         "cycle,time_ms,PLC_PRG.go,PLC_PRG.y,PLC_PRG.n\n0,0,0,1,2\n1,10,1,0,4\n2,20,1,0,6\n3,30,0,1,8\n"
     );
 }
+
+/// An action block may name an action of a function block instance (`ctr.Inc`, as the PPU's
+/// conveyors name `Motor.ACT_Stop`; before, E3122 "not an IEC identifier"): it is called while the
+/// chart's action is executed, here once per entry of step Lit (qualifier P).
+#[test]
+fn an_action_block_calls_an_action_of_an_instance() {
+    let src = std::fs::read_to_string(fixture("codesys_action_boxes.xml")).unwrap();
+    let src = src.replacen(
+        "<reference name=\"light\" /><connectionPointOut /></action>",
+        "<reference name=\"light\" /><connectionPointOut /></action>\n\
+         <action localId=\"0\" qualifier=\"P\" duration=\"\" indicator=\"\"><relPosition x=\"0\" y=\"0\" />\
+         <reference name=\"ctr.Inc\" /><connectionPointOut /></action>",
+        1,
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("call.xml");
+    std::fs::write(&file, src).unwrap();
+    let (trace, _) = run(&file, 9, "", "PLC_PRG.light,PLC_PRG.ctr.n");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.light,PLC_PRG.ctr.n\n0,0,0,0\n1,10,0,0\n2,20,1,1\n3,30,0,1\n\
+         4,40,0,1\n5,50,1,2\n6,60,0,2\n7,70,0,2\n8,80,1,3\n"
+    );
+    // an instance without that action is still E3122, at the reference
+    let (code, lines) = check_text(
+        "call.xml",
+        &std::fs::read_to_string(&file)
+            .unwrap()
+            .replace("\"ctr.Inc\" />", "\"ctr.Dec\" />"),
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines.len() == 1
+            && lines[0].contains("error[E3122]: step `Lit` names action `ctr.Dec`")
+            && lines[0].contains("[POU `PLC_PRG`, localId 4]"),
+        "{lines:?}"
+    );
+}

@@ -205,6 +205,10 @@ fn lower_actions<'e, 'a>(
                 renames.apply(&mut stmts);
                 raw.push((id, stmts));
             }
+            "SFC" if n.contains("__") => unsupported.push((
+                a,
+                "the name of an action whose body is SFC holds no two underscores in a row (they separate the action's name in its chart's hidden variables)".into(),
+            )),
             "SFC" => {
                 // one scan of the chart per call; its state (steps, timers, action control) is
                 // the POU's, namespaced by the action so two charts never share a name

@@ -95,6 +95,9 @@ pub enum Target<'e, 'a> {
     Body(&'e Element<'a>),
     /// A BOOL variable: gets the action's `Q` every scan.
     Variable(Operand),
+    /// An action of a function block instance (`Motor.ACT_Stop`, CODESYS): called (`CAL
+    /// Motor.ACT_Stop`) while `A` is TRUE, as a body would run.
+    Call(il_frontend::ast::VarRef),
 }
 
 /// One action of the chart with every association that drives it.
@@ -233,6 +236,22 @@ pub fn collect<'e, 'a>(
         let (key, display, name, target) = if let Some(r) = a.el.child("reference") {
             let n = r.attr("name").unwrap_or_default().trim();
             let nspan = ctx.attr_span(r, "name");
+            if let Some(call) = instance_action(pou, index, n, nspan) {
+                // `__` cannot occur in a name the chart's actions take (E3122), so no key clashes
+                let k = n.replace('.', "__");
+                out_push(
+                    &mut out,
+                    Action {
+                        key: k,
+                        display: format!("action `{n}`"),
+                        name: None,
+                        target: Target::Call(call),
+                        uses: vec![(q, a.step, duration)],
+                        span,
+                    },
+                );
+                continue;
+            }
             if !values::is_ident(n) || n.contains("__") {
                 report(
                     ctx,
@@ -335,24 +354,60 @@ pub fn collect<'e, 'a>(
             );
             continue;
         };
-        let k = key.to_ascii_uppercase();
-        match out.iter_mut().find(|x| x.key.to_ascii_uppercase() == k) {
-            Some(x) => x.uses.push((q, a.step, duration)),
-            None => out.push(Action {
+        out_push(
+            &mut out,
+            Action {
                 key,
                 display,
                 name,
                 target,
                 uses: vec![(q, a.step, duration)],
                 span,
-            }),
-        }
+            },
+        );
     }
     out
 }
 
 /// The OR of the step flags associated with qualifier `q`, as one operand (a hidden variable when
 /// several steps); `None` when no association uses `q`.
+/// Adds `act` to the actions, or its association to the action of the same key already there.
+fn out_push<'e, 'a>(out: &mut Vec<Action<'e, 'a>>, act: Action<'e, 'a>) {
+    let k = act.key.to_ascii_uppercase();
+    match out.iter_mut().find(|x| x.key.to_ascii_uppercase() == k) {
+        Some(x) => x.uses.extend(act.uses),
+        None => out.push(act),
+    }
+}
+
+/// `inst.Act` where `inst` is a function block instance of the POU (or a global one) whose type
+/// has the action `Act` (CODESYS names an instance's action in an action block): the call.
+fn instance_action(
+    pou: &Pou,
+    index: &crate::project::Index,
+    name: &str,
+    span: Span,
+) -> Option<il_frontend::ast::VarRef> {
+    let r = values::var_ref(name, span)?;
+    let [il_frontend::ast::Accessor::Field(act)] = r.accessors.as_slice() else {
+        return None;
+    };
+    let key = r.base.key();
+    let ty = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .find(|v| v.name.key() == key)
+        .map(|v| &v.ty)
+        .or_else(|| index.globals.get(&key))?;
+    let TypeRef::Named(fb) = ty else {
+        return None;
+    };
+    let sig = index.pous.get(&fb.key())?;
+    (sig.kind == il_frontend::ast::PouKind::FunctionBlock && sig.actions.iter().any(|x| act.is(x)))
+        .then_some(r)
+}
+
 fn input(
     act: &Action,
     q: Qualifier,
@@ -530,7 +585,7 @@ pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<
             }
             out.push(il::op(Op::St, var.clone()));
         }
-        Target::Body(_) => {
+        Target::Body(_) | Target::Call(_) => {
             // A := Q OR final scan (the non-P part of Q was TRUE last scan) OR pulses.
             let (a, m) = (names::a(k), part("Qm"));
             hidden.declare(&a, "BOOL", None, span);

@@ -350,11 +350,22 @@ pub fn lower_chart<'e, 'a>(
         actions::control(a, &chart.steps, &mut hidden, &mut out);
     }
     for a in &acts {
-        let Target::Body(lang) = a.target else {
-            continue;
-        };
-        let Some(code) = snippets.lower(ctx, lang, Purpose::Action, &mut hidden, &a.display) else {
-            continue;
+        let code = match &a.target {
+            Target::Variable(_) => continue,
+            Target::Call(inst_action) => vec![IlStmt::Instr(il_frontend::ast::Instruction {
+                kind: il_frontend::ast::InstrKind::Call {
+                    cond: il_frontend::ast::Condition::Always,
+                    instance: Box::new(inst_action.clone()),
+                    args: il_frontend::ast::CallArgs::None,
+                },
+                span: a.span,
+            })],
+            Target::Body(lang) => {
+                match snippets.lower(ctx, lang, Purpose::Action, &mut hidden, &a.display) {
+                    Some(code) => code,
+                    None => continue,
+                }
+            }
         };
         let skip = format!("__sfc_skip_{}", a.key);
         out.push(il::op(Op::Ld, il::var(&names::a(&a.key), a.span)));
