@@ -393,3 +393,28 @@ fn an_action_block_calls_an_action_of_an_instance() {
         "{lines:?}"
     );
 }
+
+/// CODESYS ends the branches of an alternative branch with steps and jumps and merges them with a
+/// selection convergence followed by a transition (the xPPU's sorting conveyors; before, E3128
+/// "<selectionConvergence> cannot precede a transition"): the transition leaves whichever branch's
+/// step is active; a branch ending in a jump never reaches it.
+#[test]
+fn a_transition_after_a_convergence_of_branch_end_steps_leaves_the_active_one() {
+    let (trace, _) = run(
+        &fixture("codesys_branch_ends.xml"),
+        15,
+        "1,Sorter.light,TRUE\n2,Sorter.light,FALSE\n3,Sorter.done,TRUE\n4,Sorter.done,FALSE\n\
+         6,Sorter.metal,TRUE\n7,Sorter.metal,FALSE\n8,Sorter.done,TRUE\n9,Sorter.done,FALSE\n\
+         11,Sorter.reject,TRUE\n12,Sorter.reject,FALSE\n13,Sorter.done,TRUE\n",
+        "Sorter.__sfc_X_Wait,Sorter.toRamp1,Sorter.toRamp2,Sorter.pushing",
+    );
+    // light: Ramp1 (cycles 1-2), done: Push (3); metal: Ramp2 (6-7), done: Push (8); reject jumps
+    // back to Wait (11), and done in cycle 13 finds no branch step active
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Sorter.__sfc_X_Wait,Sorter.toRamp1,Sorter.toRamp2,Sorter.pushing\n\
+         0,0,1,0,0,0\n1,10,0,1,0,0\n2,20,0,1,0,0\n3,30,0,0,0,1\n4,40,1,0,0,0\n5,50,1,0,0,0\n\
+         6,60,0,0,1,0\n7,70,0,0,1,0\n8,80,0,0,0,1\n9,90,1,0,0,0\n10,100,1,0,0,0\n11,110,1,0,0,0\n\
+         12,120,1,0,0,0\n13,130,1,0,0,0\n14,140,1,0,0,0\n"
+    );
+}

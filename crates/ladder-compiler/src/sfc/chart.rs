@@ -3,7 +3,9 @@
 //!
 //! Input: the `<SFC>` element. Output: a [`Chart`] where every transition knows its predecessor steps
 //! (through selection divergences and simultaneous convergences) and its successor steps (through
-//! selection convergences, simultaneous divergences and jump steps), in priority order.
+//! selection convergences, simultaneous divergences and jump steps), in priority order. A transition
+//! after a selection convergence of steps and jump steps (CODESYS's alternative branches) is one
+//! transition per step (`<id>`, `<id>_1` ...), the jumps left out.
 //! Invariants: only well-formed parts are kept: a transition whose predecessors or successors cannot be
 //! resolved is reported (E3120 dangling connection, E3128 invalid structure) and dropped; every step
 //! index in the chart is valid; step names are unique identifiers (E3131).
@@ -300,8 +302,30 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         let mut pre = Vec::new();
         let mut ok = true;
         let mut seen = HashSet::new();
-        for &from in &resolved[i] {
-            ok &= pre_steps(ctx, &nodes, &resolved, from, &mut pre, &mut seen, pou);
+        // CODESYS ends the branches of an alternative branch with steps and jumps, merged by a
+        // selection convergence that a transition follows: the transition leaves whichever of
+        // those steps is active (a jump ends its branch, it feeds nothing): one transition each
+        let branch_ends: Option<Vec<usize>> = match resolved[i].as_slice() {
+            [c] if nodes[*c].kind == NodeKind::SelConv
+                && !resolved[*c].is_empty()
+                && resolved[*c]
+                    .iter()
+                    .all(|&f| matches!(nodes[f].kind, NodeKind::Step | NodeKind::Jump)) =>
+            {
+                Some(resolved[*c].iter().filter_map(|&f| nodes[f].step).collect())
+            }
+            _ => None,
+        };
+        if let Some(ends) = &branch_ends {
+            pre.extend(ends.iter().take(1));
+        } else {
+            for &from in &resolved[i] {
+                ok &= pre_steps(ctx, &nodes, &resolved, from, &mut pre, &mut seen, pou);
+            }
+        }
+        if branch_ends.as_ref().is_some_and(|e| e.is_empty()) {
+            // only jumps reach the convergence: the transition can never fire
+            continue;
         }
         if resolved[i].is_empty() {
             // Dangling inputs were reported as E3120 already.
@@ -354,19 +378,32 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                 .filter(|v| a == "priority" || *v > 0)
                 .unwrap_or(u32::MAX)
         };
+        let order = (
+            num("priority"),
+            num("executionOrderId"),
+            pos(n.el, "x"),
+            pos(n.el, "y"),
+            n.id.parse().unwrap_or(u64::MAX),
+        );
+        // the copies for the other branch ends of a CODESYS convergence (`34_1`, `34_2`: no
+        // localId has an underscore's place in a number, so the hidden names stay apart)
+        for (k, &s) in branch_ends.iter().flatten().enumerate().skip(1) {
+            transitions.push(Transition {
+                id: format!("{}_{k}", n.id),
+                span,
+                cond,
+                pre: vec![s],
+                post: post.clone(),
+                order,
+            });
+        }
         transitions.push(Transition {
             id: n.id.clone(),
             span,
             cond,
             pre,
             post,
-            order: (
-                num("priority"),
-                num("executionOrderId"),
-                pos(n.el, "x"),
-                pos(n.el, "y"),
-                n.id.parse().unwrap_or(u64::MAX),
-            ),
+            order,
         });
     }
     transitions.sort_by_key(|t| t.order);
