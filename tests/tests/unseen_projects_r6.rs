@@ -418,3 +418,49 @@ fn a_transition_after_a_convergence_of_branch_end_steps_leaves_the_active_one() 
          12,120,1,0,0,0\n13,130,1,0,0,0\n14,140,1,0,0,0\n"
     );
 }
+
+/// CODESYS keeps a step's entry action, step action and exit action in the step's vendor data
+/// (`addData/data[.../sfc/element]`, attributes by GUID; before, ignored under W3002, so the PPU's
+/// charts ran without them). Run (go): entry Enter (2), step action Tick (3) while active, exit
+/// Leave (1) when left, without a final scan of Tick: `log` reads 2, 3, 3, 3, 1. Sub: entry
+/// `table.Motor.ACT_Turn` and exit `table.Motor.ACT_Stop` (actions of an instance inside an
+/// instance), step action ACT_Sub, an action whose body is a chart (A -> B -> A, B's step action
+/// Flip), run while Sub is active. Other calls `t2.Motor.ACT_Turn();` from ST.
+#[test]
+fn codesys_entry_step_and_exit_actions_of_steps_run() {
+    let (trace, stderr) = run(
+        &fixture("codesys_step_actions.xml"),
+        8,
+        "1,PPU.go,TRUE\n4,PPU.go,FALSE\n",
+        "PPU.__sfc_X_Run,PPU.log,PPU.__sfc_X_Sub,PPU.flips,PPU.__sfc_ACT_Sub__X_B,\
+         PPU.table.Motor.turns,PPU.table.Motor.stops,Other.t2.Motor.turns",
+    );
+    assert!(!stderr.contains("W3002"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PPU.__sfc_X_Run,PPU.log,PPU.__sfc_X_Sub,PPU.flips,PPU.__sfc_ACT_Sub__X_B,\
+         PPU.table.Motor.turns,PPU.table.Motor.stops,Other.t2.Motor.turns\n\
+         0,0,0,0,0,0,0,0,0,1\n\
+         1,10,1,23,0,0,0,0,0,2\n\
+         2,20,1,233,0,0,0,0,0,3\n\
+         3,30,1,2333,0,0,0,0,0,4\n\
+         4,40,0,23331,1,1,1,1,0,5\n\
+         5,50,0,23331,1,1,0,1,0,6\n\
+         6,60,0,23331,0,1,0,1,1,7\n\
+         7,70,0,23331,0,1,0,1,1,8\n"
+    );
+    // a step action naming nothing is one E3122 at its attribute, located at the step
+    let src = std::fs::read_to_string(fixture("codesys_step_actions.xml")).unwrap();
+    let (code, lines) = check_text(
+        "steps.xml",
+        &src.replacen(">Tick</attribute>", ">Tock</attribute>", 1),
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines.len() == 1
+            && lines[0].contains(
+                "error[E3122]: step `Run` names action `Tock`, which is neither an action of the POU nor a BOOL variable [POU `PPU`, localId 3]"
+            ),
+        "{lines:?}"
+    );
+}

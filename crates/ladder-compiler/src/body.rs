@@ -54,7 +54,7 @@ pub fn lower_pou_body(
     // (`crate::sfc`).
     let mut st_actions: Vec<(Ident, &Element)> = Vec::new();
     let mut acts = LoweredActions::default();
-    if lang.name != "SFC" && (lang.name != "ST" || used) {
+    if lang.name != "ST" || used {
         acts = lower_actions(ctx, index, pou_el, pou, lang.name, &mut st_actions);
     }
     let is_var = var_test(pou, index);
@@ -107,8 +107,13 @@ pub fn lower_pou_body(
         }
         "SFC" => {
             let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
-            let block = (!hidden.is_empty()).then_some(VarBlock::locals(hidden, span));
-            Some((stmts, block.into_iter().collect()))
+            // the chart calls the actions whose body is a chart of their own (`CAL Act`)
+            let stmts = inline(ctx, stmts);
+            let mut blocks = acts.blocks;
+            if !hidden.is_empty() {
+                blocks.push(VarBlock::locals(hidden, span));
+            }
+            Some((stmts, blocks))
         }
         other => {
             ctx.report(
@@ -171,7 +176,9 @@ fn lower_actions<'e, 'a>(
             .map(str::trim)
             .filter(|n| !n.is_empty() && crate::values::is_ident(n))
         else {
-            unsupported.push((a, "it has no name that is an identifier".into()));
+            if body_lang != "SFC" {
+                unsupported.push((a, "it has no name that is an identifier".into()));
+            }
             continue;
         };
         let id = Ident::new(n, ctx.attr_span(a, "name"));
@@ -180,10 +187,14 @@ fn lower_actions<'e, 'a>(
                 .iter()
                 .find(|c| !matches!(c.name, "documentation" | "addData"))
         }) else {
-            raw.push((id, Vec::new()));
+            if body_lang != "SFC" {
+                raw.push((id, Vec::new()));
+            }
             continue;
         };
         match b.name {
+            // the other actions of an SFC body are its chart's (`crate::sfc`)
+            _ if body_lang == "SFC" && b.name != "SFC" => {}
             "ST" if body_lang == "ST" => st_actions.push((id, b)),
             "ST" => st_other.push((id, b)),
             "IL" => raw.push((id, crate::il_body::parse(ctx, b, pou))),

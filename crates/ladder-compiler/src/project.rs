@@ -397,6 +397,9 @@ fn is_read_vendor_data(name: &str) -> bool {
         "/tasksettings",
         // the ST code of a CODESYS EXECUTE box (graph.rs)
         "/stcode",
+        // a CODESYS SFC element's attributes: a step's entry, step and exit actions
+        // (`sfc::chart::StepAction`); the others repeat what the element says (names, conditions)
+        "/sfc/element",
     ]
     .iter()
     .any(|s| name.ends_with(s))

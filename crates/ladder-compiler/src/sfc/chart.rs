@@ -81,6 +81,64 @@ pub struct Association<'e, 'a> {
     pub index: usize,
     /// The `<action>` element (qualifier, duration, reference or inline body).
     pub el: &'e Element<'a>,
+    /// A CODESYS step action of the step's vendor data instead (`el` is then its `<attribute>`,
+    /// whose text names the action): which one.
+    pub vendor: Option<StepAction>,
+}
+
+/// The actions CODESYS attaches to a step in its vendor data (`addData/data[.../sfc/element]`,
+/// attributes by GUID), run as IEC qualifiers: entry (P1), the step action (while the step is
+/// active, without the final scan of N) and exit (P0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum StepAction {
+    /// Run once when the step is left (CODESYS runs every exit first).
+    Exit,
+    /// Run once when the step becomes active.
+    Entry,
+    /// Run in every scan the step is active.
+    Active,
+}
+
+impl StepAction {
+    /// CODESYS's attribute GUIDs (`.../sfc/element` vendor data of a `<step>`).
+    const GUIDS: [(&'static str, StepAction); 3] = [
+        ("a2621e18-7de3-4ea6-ae6d-89e9e0b7befd", StepAction::Exit),
+        ("a6b08bd8-b696-47e3-9cbf-7408b61c9ff8", StepAction::Entry),
+        ("700a583f-b4d4-43e4-8c14-629c7cd3bec8", StepAction::Active),
+    ];
+    /// How the engineer calls it.
+    pub fn describe(self) -> &'static str {
+        match self {
+            StepAction::Exit => "exit action",
+            StepAction::Entry => "entry action",
+            StepAction::Active => "step action",
+        }
+    }
+}
+
+/// The CODESYS step actions of a `<step>` (see [`StepAction`]), with the `<attribute>` naming each.
+fn step_actions<'e, 'a>(step: &'e Element<'a>) -> Vec<(StepAction, &'e Element<'a>)> {
+    let mut out = Vec::new();
+    for data in step
+        .children_named("addData")
+        .flat_map(|d| d.children_named("data"))
+        .filter(|d| d.attr("name").is_some_and(|n| n.ends_with("/sfc/element")))
+    {
+        for attr in data
+            .children_named("attributes")
+            .flat_map(|a| a.children_named("attribute"))
+        {
+            let Some(guid) = attr.attr("guid") else {
+                continue;
+            };
+            if let Some((_, k)) = StepAction::GUIDS.iter().find(|(g, _)| *g == guid.trim()) {
+                if !attr.text_ref().trim().is_empty() {
+                    out.push((*k, attr));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// An `<SFC>` body read as a chart: [`super::chart`]'s output, read by the SFC lowering.
@@ -468,6 +526,27 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         .collect();
     blocks.sort_by_key(|b| b.1);
     let mut associations = Vec::new();
+    // CODESYS's step actions first, as CODESYS runs them before the IEC actions: every exit
+    // action, then every entry action, then every step action, steps in document order
+    let mut vendor: Vec<(StepAction, usize, &Element)> = Vec::new();
+    for n in &nodes {
+        let Some(step) = n.step.filter(|_| n.kind == NodeKind::Step) else {
+            continue;
+        };
+        for (k, attr) in step_actions(n.el) {
+            vendor.push((k, step, attr));
+        }
+    }
+    vendor.sort_by_key(|v| v.0);
+    for (k, (kind, step, attr)) in vendor.into_iter().enumerate() {
+        associations.push(Association {
+            step,
+            block_id: steps[step].id.clone(),
+            index: k,
+            el: attr,
+            vendor: Some(kind),
+        });
+    }
     for (i, _) in blocks {
         let n = &nodes[i];
         let step = match resolved[i].as_slice() {
@@ -503,6 +582,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                 block_id: n.id.clone(),
                 index: k,
                 el: a,
+                vendor: None,
             });
         }
     }

@@ -266,6 +266,7 @@ pub fn lower(
                 block_id: s.name.clone(),
                 index: i,
                 el,
+                vendor: None,
             });
         }
     }
