@@ -464,3 +464,63 @@ fn codesys_entry_step_and_exit_actions_of_steps_run() {
         "{lines:?}"
     );
 }
+
+/// An EXECUTE box of an FBD action may call the POU's other actions (`Reset_Variables();`, an ST
+/// action of an ST body; `Sort();`, an FBD action), as the PPU's conveyors do (before, E1019
+/// "unknown function"): Conv's ST body calls its FBD action Auto every scan.
+#[test]
+fn an_execute_box_in_an_fbd_action_calls_other_actions() {
+    let execute = |id: u32, code: &str| {
+        format!(
+            r#"<block localId="{id}" typeName="EXECUTE"><position x="0" y="0" /><inputVariables /><inOutVariables /><outputVariables />
+              <addData><data name="http://www.3s-software.com/plcopenxml/stcode" handleUnknown="implementation"><STCode xmlns="">{code}</STCode></data></addData></block>"#
+        )
+    };
+    let xml = format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <fileHeader companyName="" productName="CODESYS" productVersion="CODESYS V3.5 SP19" creationDateTime="2024-01-01T00:00:00" />
+  <contentHeader name="Execute" modificationDateTime="2024-01-01T00:00:00"><coordinateInfo><fbd><scaling x="1" y="1" /></fbd><ld><scaling x="1" y="1" /></ld><sfc><scaling x="1" y="1" /></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes /><pous>
+    <pou name="Conv" pouType="program">
+      <interface><localVars>
+        <variable name="n"><type><INT /></type></variable>
+        <variable name="m"><type><INT /></type></variable>
+        <variable name="k"><type><INT /></type></variable>
+      </localVars></interface>
+      <actions>
+        <action name="Reset_Variables"><body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">n := n + 1;</xhtml></ST></body></action>
+        <action name="Sort"><body><FBD>{sort}</FBD></body></action>
+        <action name="Auto"><body><FBD>{auto}</FBD></body></action>
+      </actions>
+      <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">Auto();</xhtml></ST></body>
+    </pou>
+  </pous></types>
+  <instances><configurations><configuration name="Device"><resource name="Application">
+    <task name="MainTask" interval="PT0.01S" priority="1"><pouInstance name="Conv" typeName="" /></task>
+  </resource></configuration></configurations></instances>
+</project>"#,
+        sort = execute(1, "k := k + 100;"),
+        auto = execute(2, "Reset_Variables();\nm := m + 10;\nSort();"),
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("execute.xml");
+    std::fs::write(&file, &xml).unwrap();
+    let (trace, _) = run(&file, 3, "", "Conv.n,Conv.m,Conv.k");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Conv.n,Conv.m,Conv.k\n0,0,1,10,100\n1,10,2,20,200\n2,20,3,30,300\n"
+    );
+    // an error in the ST action is reported once, whether the body or an action calls it
+    let (code, lines) = check_text(
+        "execute.xml",
+        &xml.replace("n := n + 1;", "n := n + undeclared;")
+            .replace("Auto();", "Auto(); Reset_Variables();"),
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert!(
+        errors.len() == 1 && errors[0].contains("error[E1001]: undeclared name `undeclared`"),
+        "{lines:?}"
+    );
+}

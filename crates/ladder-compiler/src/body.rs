@@ -68,7 +68,7 @@ pub fn lower_pou_body(
     match lang.name {
         "LD" | "FBD" => {
             let g = graph::read(ctx, lang, name);
-            let mut low = BodyLowering::new(index, pou, span);
+            let mut low = BodyLowering::new(index, pou, span).calling_actions();
             // a box named after an action is `CAL Act` (lower_block.rs): the action runs there
             let stmts = low.lower(ctx, &g);
             let stmts = inline(ctx, stmts);
@@ -101,6 +101,15 @@ pub fn lower_pou_body(
                 .map(|n| (n.clone(), acts.il[&n.key()].clone()))
                 .collect();
             let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou, &st_actions, &il);
+            for d in std::mem::take(&mut acts.pending) {
+                let known = ctx
+                    .diags
+                    .iter()
+                    .any(|e| e.code == d.code && e.span == d.span && e.message == d.message);
+                if !known {
+                    ctx.report(d);
+                }
+            }
             let mut blocks = acts.blocks;
             blocks.extend(temps);
             Some((stmts, blocks))
@@ -140,6 +149,9 @@ struct LoweredActions {
     /// temporaries; one set per action, shared by every place it runs, like the POU's own
     /// variables) and the temporaries of ST actions of a body in another language.
     blocks: Vec<VarBlock>,
+    /// The diagnostics of the ST actions of an ST body, lowered once more for the other actions
+    /// that call them: reported after the body, unless the body's own lowering reported them.
+    pending: Vec<diagnostics::Diagnostic>,
 }
 
 /// Reads the `<actions>` of a POU whose body is `body_lang` (not SFC): ST actions of an ST body go to
@@ -165,6 +177,8 @@ fn lower_actions<'e, 'a>(
     let mut raw: Vec<(Ident, Vec<IlStmt>)> = Vec::new();
     let mut hidden: Vec<VarDecl> = Vec::new();
     let mut st_other: Vec<(Ident, &Element)> = Vec::new();
+    // the ST actions of an ST body, for the other actions that call them
+    let mut st_inline: Vec<(Ident, &Element)> = Vec::new();
     let mut unsupported: Vec<(&Element, String)> = Vec::new();
     for a in pou_el
         .child("actions")
@@ -195,12 +209,15 @@ fn lower_actions<'e, 'a>(
         match b.name {
             // the other actions of an SFC body are its chart's (`crate::sfc`)
             _ if body_lang == "SFC" && b.name != "SFC" => {}
-            "ST" if body_lang == "ST" => st_actions.push((id, b)),
+            "ST" if body_lang == "ST" => {
+                st_actions.push((id.clone(), b));
+                st_inline.push((id, b));
+            }
             "ST" => st_other.push((id, b)),
             "IL" => raw.push((id, crate::il_body::parse(ctx, b, pou))),
             "LD" | "FBD" => {
                 let g = graph::read(ctx, b, name);
-                let mut low = BodyLowering::new(index, pou, ctx.tag(b));
+                let mut low = BodyLowering::new(index, pou, ctx.tag(b)).calling_actions();
                 let mut stmts = low.lower(ctx, &g);
                 let mut renames = Renames::default();
                 for mut v in low.hidden_vars() {
@@ -240,34 +257,32 @@ fn lower_actions<'e, 'a>(
     }
     let mut out = LoweredActions::default();
     if !st_other.is_empty() {
-        let decls = crate::st_body::declarations(index);
-        let mut local = Diagnostics::new();
-        let parsed: Vec<(Ident, Vec<il_frontend::st::ast::Stmt>)> = st_other
-            .iter()
-            .map(|(n, el)| {
-                let mut t = crate::il_body::embedded_text(el);
-                crate::st_body::join_split_operators(&mut t.text, t.base, ctx.xml);
-                let stmts =
-                    il_frontend::st::parse_statements(ctx.file, &t.text, t.base, &mut local);
-                (n.clone(), stmts)
+        let (lowered, blocks, local) =
+            lower_st_actions(ctx, index, pou, &st_other, &raw, "_ST_", ctx.tag(pou_el));
+        raw.extend(lowered);
+        out.blocks.extend(blocks);
+        for d in local {
+            ctx.report_in_pou(d, name);
+        }
+    }
+    // An ST body inlines its ST actions itself; the actions in other languages that call one
+    // (`Reset();` in an EXECUTE box of an FBD action, `CAL Reset` in IL) get a copy in IL.
+    let mut inline_only: Vec<(Ident, Vec<IlStmt>)> = Vec::new();
+    if !st_inline.is_empty() && !raw.is_empty() {
+        let (lowered, blocks, local) =
+            lower_st_actions(ctx, index, pou, &st_inline, &raw, "_STA_", ctx.tag(pou_el));
+        inline_only = lowered;
+        out.blocks.extend(blocks);
+        out.pending = local
+            .into_iter()
+            .map(|d| {
+                if d.xml.is_none() {
+                    d.with_xml(xml_ctx.clone())
+                } else {
+                    d
+                }
             })
             .collect();
-        let mut low = il_frontend::st::PouLowering::new(decls, pou);
-        low.set_actions(parsed.clone());
-        low.set_il_actions(raw.clone());
-        for (n, stmts) in &parsed {
-            let body = low.statements(stmts, &mut local);
-            raw.push((n.clone(), body));
-        }
-        out.blocks.extend(low.finish(ctx.tag(pou_el)));
-        for d in local {
-            let d = if d.xml.is_none() {
-                d.with_xml(xml_ctx.clone())
-            } else {
-                d
-            };
-            ctx.report(d);
-        }
     }
     if !hidden.is_empty() {
         out.blocks.push(VarBlock::locals(hidden, ctx.tag(pou_el)));
@@ -293,8 +308,11 @@ fn lower_actions<'e, 'a>(
         return out;
     }
     let is_var = var_test(pou, index);
-    let raw_map: HashMap<String, Vec<IlStmt>> =
-        raw.iter().map(|(n, b)| (n.key(), b.clone())).collect();
+    let raw_map: HashMap<String, Vec<IlStmt>> = inline_only
+        .iter()
+        .chain(raw.iter())
+        .map(|(n, b)| (n.key(), b.clone()))
+        .collect();
     let mut next = 0;
     for (n, body) in raw {
         let body = il_frontend::actions::inline_calls(
@@ -317,6 +335,39 @@ fn lower_actions<'e, 'a>(
         out.names.push(n);
     }
     out
+}
+
+/// ST actions lowered to IL on their own (`prefix` names their labels and temporaries): the
+/// statements per action, the temporaries' block, and the diagnostics. They call each other and
+/// the actions of `il` (already IL) by name.
+fn lower_st_actions(
+    ctx: &mut Ctx,
+    index: &Index,
+    pou: &Pou,
+    actions: &[(Ident, &Element)],
+    il: &[(Ident, Vec<IlStmt>)],
+    prefix: &'static str,
+    span: il_frontend::Span,
+) -> (Vec<(Ident, Vec<IlStmt>)>, Vec<VarBlock>, Diagnostics) {
+    let decls = crate::st_body::declarations(index);
+    let mut local = Diagnostics::new();
+    let parsed: Vec<(Ident, Vec<il_frontend::st::ast::Stmt>)> = actions
+        .iter()
+        .map(|(n, el)| {
+            let mut t = crate::il_body::embedded_text(el);
+            crate::st_body::join_split_operators(&mut t.text, t.base, ctx.xml);
+            let stmts = il_frontend::st::parse_statements(ctx.file, &t.text, t.base, &mut local);
+            (n.clone(), stmts)
+        })
+        .collect();
+    let mut low = il_frontend::st::PouLowering::new(decls, pou).with_prefix(prefix);
+    low.set_actions(parsed.clone());
+    low.set_il_actions(il.to_vec());
+    let lowered = parsed
+        .iter()
+        .map(|(n, stmts)| (n.clone(), low.statements(stmts, &mut local)))
+        .collect();
+    (lowered, low.finish(span).into_iter().collect(), local)
 }
 
 /// Whether a name is one of `pou`'s variables or a global of the project (case-insensitive).

@@ -487,6 +487,9 @@ impl NetLowering<'_, '_> {
         type_span: Span,
         instance: Option<&(String, Span)>,
     ) -> Option<VarRef> {
+        if !self.pou.calls_actions {
+            return None;
+        }
         let index = self.pou.index;
         let has = |pou: &str, action: &str| {
             index
