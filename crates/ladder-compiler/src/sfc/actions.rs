@@ -1,7 +1,8 @@
 //! Action associations and action control (IEC 61131-3 2nd ed. 2.6.4, the ACTION_CONTROL block).
 //!
-//! Input: the chart's associations (step, `<action>` element), the POU's named actions (`<actions>`)
-//! and declared variables. Output: the actions in first-association order, each with the steps that
+//! Input: the chart's associations (step, `<action>` element, or a CODESYS entry/step/exit action
+//! of the step's vendor data), the POU's named actions (`<actions>`), the actions of the function
+//! block instances it declares, and declared variables. Output: the actions in first-association order, each with the steps that
 //! drive each qualifier and its durations; then the IL that computes every action's `Q` (active) and
 //! `A` (execute: `Q`, plus one final scan after the non-P part of `Q` falls, plus the P1/P0 pulses)
 //! from the step flags.

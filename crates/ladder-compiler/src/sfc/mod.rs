@@ -10,7 +10,11 @@
 //! 3. all fired transitions deactivate their predecessors, then activate their successors (one
 //!    evolution per scan, no cascade);
 //! 4. step elapsed times (`Step.T`, a TON per step);
-//! 5. action control for every action (IEC ACTION_CONTROL), then action bodies whose `A` is TRUE.
+//! 5. action control for every action (IEC ACTION_CONTROL), then action bodies whose `A` is TRUE
+//!    (an action of an FB instance, or one whose body is a chart of its own, is a `CAL` there).
+//!
+//! A chart may also be the body of a POU's action ([`crate::body`]): its hidden variables are then
+//! renamed per action ([`names::in_action`]).
 //!
 //! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
 //! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
