@@ -337,6 +337,10 @@ fn lower_actions<'e, 'a>(
     out
 }
 
+/// What [`lower_st_actions`] gives: the statements per action, the temporaries' block, the
+/// diagnostics.
+type LoweredSt = (Vec<(Ident, Vec<IlStmt>)>, Vec<VarBlock>, Diagnostics);
+
 /// ST actions lowered to IL on their own (`prefix` names their labels and temporaries): the
 /// statements per action, the temporaries' block, and the diagnostics. They call each other and
 /// the actions of `il` (already IL) by name.
@@ -348,7 +352,7 @@ fn lower_st_actions(
     il: &[(Ident, Vec<IlStmt>)],
     prefix: &'static str,
     span: il_frontend::Span,
-) -> (Vec<(Ident, Vec<IlStmt>)>, Vec<VarBlock>, Diagnostics) {
+) -> LoweredSt {
     let decls = crate::st_body::declarations(index);
     let mut local = Diagnostics::new();
     let parsed: Vec<(Ident, Vec<il_frontend::st::ast::Stmt>)> = actions
