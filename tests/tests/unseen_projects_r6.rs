@@ -524,3 +524,24 @@ fn an_execute_box_in_an_fbd_action_calls_other_actions() {
         "{lines:?}"
     );
 }
+
+/// A step name with two underscores in a row (the xPPU's `Move_Forwards__Pos3`; CODESYS accepts
+/// it, IEC 61131-3 does not) is one E3131 at the name; the transitions around the step are not
+/// reported again (before, also E3128 "transition without a following step" and E3120).
+#[test]
+fn a_step_name_that_is_no_identifier_is_one_located_error() {
+    let src = std::fs::read_to_string(fixture("codesys_branch_ends.xml")).unwrap();
+    let (code, lines) = check_text(
+        "steps.xml",
+        &src.replacen("name=\"Ramp1\"", "name=\"Ramp__1\"", 1),
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines.len() == 1
+            && lines[0].starts_with("steps.xml:42:38:")
+            && lines[0].contains(
+                "error[E3131]: step name `Ramp__1` is not an IEC identifier [POU `Sorter`, localId 12]"
+            ),
+        "{lines:?}"
+    );
+}

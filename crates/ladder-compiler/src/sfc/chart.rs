@@ -272,7 +272,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         }
         let mut step = None;
         if kind == NodeKind::Step {
-            let name = e.attr("name").unwrap_or_default().trim().to_string();
+            let mut name = e.attr("name").unwrap_or_default().trim().to_string();
             let nspan = ctx.attr_span(e, "name");
             if !crate::values::is_ident(&name) || name.contains("__") {
                 report(
@@ -283,7 +283,12 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                     Some(id),
                     format!("step name `{name}` is not an IEC identifier"),
                 );
-                continue;
+                // kept under a name of its own (the build fails already), so the transitions and
+                // jumps around it are not reported again
+                if !name.is_empty() {
+                    step_names.insert(name.to_ascii_uppercase(), steps.len());
+                }
+                name = format!("invalid_{}", super::sanitize(id));
             }
             if let Some(&prev) = step_names.get(&name.to_ascii_uppercase()) {
                 let first: &Step = &steps[prev];
