@@ -57,6 +57,8 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
         return;
     }
     let mut kinds: HashMap<String, PouKind> = HashMap::new();
+    // every POU's variables (upper-case names): `Table.Motor.Stop` walks into instances
+    let mut pou_vars: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
     let mut globals: HashMap<String, TypeRef> = HashMap::new();
     // the instances of each program (upper-case type name -> instance names); without a
     // configuration every program runs as its one implicit instance
@@ -71,6 +73,14 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
         match item {
             LibraryElement::Pou(p) => {
                 kinds.insert(p.name.key(), p.kind);
+                pou_vars.insert(
+                    p.name.key(),
+                    p.var_blocks
+                        .iter()
+                        .flat_map(|b| b.vars.iter())
+                        .map(|v| (v.name.key(), v.ty.clone()))
+                        .collect(),
+                );
             }
             LibraryElement::GlobalVars(b) => add(b),
             LibraryElement::Configuration(c) => {
@@ -107,6 +117,7 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             let scope = Scope {
                 locals: &locals,
                 globals: &globals,
+                pou_vars: &pou_vars,
                 kinds: &kinds,
                 actions: &actions,
                 instances: &instances,
@@ -209,6 +220,8 @@ fn flag_name(action: &Ident) -> String {
 struct Scope<'a> {
     locals: &'a HashMap<String, TypeRef>,
     globals: &'a HashMap<String, TypeRef>,
+    /// Every POU's variables by upper-case POU and variable name.
+    pou_vars: &'a HashMap<String, HashMap<String, TypeRef>>,
     kinds: &'a HashMap<String, PouKind>,
     actions: &'a HashMap<String, Vec<Action>>,
     instances: &'a HashMap<String, Vec<Ident>>,
@@ -218,8 +231,9 @@ struct Scope<'a> {
 }
 
 impl Scope<'_> {
-    /// The action `instance` names (`inst.Act`, `insts[i].Act`): the function block's name key and
-    /// the action, when the instance's declared type is a function block that has that action.
+    /// The action `instance` names (`inst.Act`, `insts[i].Act`, `table.motor.Act`, an instance
+    /// inside an instance as CODESYS allows): the function block's name key and the action, when
+    /// the instance's declared type is a function block that has that action.
     fn action_of(&self, instance: &VarRef) -> Option<(String, &Action)> {
         let (Accessor::Field(act), prefix) = instance.accessors.split_last()? else {
             return None;
@@ -229,6 +243,9 @@ impl Scope<'_> {
         for a in prefix {
             match (a, ty) {
                 (Accessor::Index(_), TypeRef::Array { element, .. }) => ty = element,
+                (Accessor::Field(f), TypeRef::Named(fb)) => {
+                    ty = self.pou_vars.get(&fb.key())?.get(&f.key())?;
+                }
                 _ => return None,
             }
         }

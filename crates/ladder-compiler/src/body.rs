@@ -48,12 +48,13 @@ pub fn lower_pou_body(
     };
     // CODESYS exports a program's or FB's actions (called from its body as `Act();`) in the POU's
     // standard `<actions>`: an ST body lowers its ST actions where it calls them (`st_actions`);
-    // actions in IL, LD or FBD (and the ST actions of a body in another language) are lowered to IL
-    // here, copied where the body calls them and linked for calls through an instance. The actions
-    // of an SFC body are its chart's (`crate::sfc`).
+    // actions in IL, LD, FBD or SFC (and the ST actions of a body in another language) are lowered
+    // to IL here, copied where the body calls them (`CAL Act` in IL, an action box in LD/FBD) and
+    // linked for calls through an instance. The actions of an SFC body are its chart's
+    // (`crate::sfc`).
     let mut st_actions: Vec<(Ident, &Element)> = Vec::new();
     let mut acts = LoweredActions::default();
-    if lang.name != "SFC" && (lang.name != "ST" || used) {
+    if lang.name != "ST" || used {
         acts = lower_actions(ctx, index, pou_el, pou, lang.name, &mut st_actions);
     }
     let is_var = var_test(pou, index);
@@ -67,8 +68,10 @@ pub fn lower_pou_body(
     match lang.name {
         "LD" | "FBD" => {
             let g = graph::read(ctx, lang, name);
-            let mut low = BodyLowering::new(index, pou, span);
+            let mut low = BodyLowering::new(index, pou, span).calling_actions();
+            // a box named after an action is `CAL Act` (lower_block.rs): the action runs there
             let stmts = low.lower(ctx, &g);
+            let stmts = inline(ctx, stmts);
             let hidden = low.hidden_vars();
             let mut blocks = acts.blocks;
             if !hidden.is_empty() {
@@ -98,14 +101,28 @@ pub fn lower_pou_body(
                 .map(|n| (n.clone(), acts.il[&n.key()].clone()))
                 .collect();
             let (stmts, temps) = crate::st_body::lower(ctx, index, lang, pou, &st_actions, &il);
+            for d in std::mem::take(&mut acts.pending) {
+                let known = ctx
+                    .diags
+                    .iter()
+                    .any(|e| e.code == d.code && e.span == d.span && e.message == d.message);
+                if !known {
+                    ctx.report(d);
+                }
+            }
             let mut blocks = acts.blocks;
             blocks.extend(temps);
             Some((stmts, blocks))
         }
         "SFC" => {
             let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
-            let block = (!hidden.is_empty()).then_some(VarBlock::locals(hidden, span));
-            Some((stmts, block.into_iter().collect()))
+            // the chart calls the actions whose body is a chart of their own (`CAL Act`)
+            let stmts = inline(ctx, stmts);
+            let mut blocks = acts.blocks;
+            if !hidden.is_empty() {
+                blocks.push(VarBlock::locals(hidden, span));
+            }
+            Some((stmts, blocks))
         }
         other => {
             ctx.report(
@@ -132,12 +149,18 @@ struct LoweredActions {
     /// temporaries; one set per action, shared by every place it runs, like the POU's own
     /// variables) and the temporaries of ST actions of a body in another language.
     blocks: Vec<VarBlock>,
+    /// The diagnostics of the ST actions of an ST body, lowered once more for the other actions
+    /// that call them: reported after the body, unless the body's own lowering reported them.
+    pending: Vec<diagnostics::Diagnostic>,
 }
 
 /// Reads the `<actions>` of a POU whose body is `body_lang` (not SFC): ST actions of an ST body go to
-/// `st_actions` (the ST lowering inlines them); every other action with a name and an IL, LD, FBD
-/// or ST body is lowered to IL, and also handed to [`il_frontend::actions::link`] (through
-/// `ctx.actions`) for calls through an instance. What is left (no name, an SFC body) is W3401.
+/// `st_actions` (the ST lowering inlines them); every other action with a name and an IL, LD, FBD,
+/// SFC or ST body is lowered to IL, and also handed to [`il_frontend::actions::link`] (through
+/// `ctx.actions`) for calls through an instance. An SFC body is one scan of its chart
+/// ([`crate::sfc::lower_chart`]), whose hidden variables (steps, step times, action control) are
+/// the POU's, renamed per action ([`crate::sfc::names::in_action`]). What is left (no name, a body
+/// in no known language) is W3401.
 fn lower_actions<'e, 'a>(
     ctx: &mut Ctx,
     index: &Index,
@@ -154,6 +177,8 @@ fn lower_actions<'e, 'a>(
     let mut raw: Vec<(Ident, Vec<IlStmt>)> = Vec::new();
     let mut hidden: Vec<VarDecl> = Vec::new();
     let mut st_other: Vec<(Ident, &Element)> = Vec::new();
+    // the ST actions of an ST body, for the other actions that call them
+    let mut st_inline: Vec<(Ident, &Element)> = Vec::new();
     let mut unsupported: Vec<(&Element, String)> = Vec::new();
     for a in pou_el
         .child("actions")
@@ -165,7 +190,9 @@ fn lower_actions<'e, 'a>(
             .map(str::trim)
             .filter(|n| !n.is_empty() && crate::values::is_ident(n))
         else {
-            unsupported.push((a, "it has no name that is an identifier".into()));
+            if body_lang != "SFC" {
+                unsupported.push((a, "it has no name that is an identifier".into()));
+            }
             continue;
         };
         let id = Ident::new(n, ctx.attr_span(a, "name"));
@@ -174,16 +201,23 @@ fn lower_actions<'e, 'a>(
                 .iter()
                 .find(|c| !matches!(c.name, "documentation" | "addData"))
         }) else {
-            raw.push((id, Vec::new()));
+            if body_lang != "SFC" {
+                raw.push((id, Vec::new()));
+            }
             continue;
         };
         match b.name {
-            "ST" if body_lang == "ST" => st_actions.push((id, b)),
+            // the other actions of an SFC body are its chart's (`crate::sfc`)
+            _ if body_lang == "SFC" && b.name != "SFC" => {}
+            "ST" if body_lang == "ST" => {
+                st_actions.push((id.clone(), b));
+                st_inline.push((id, b));
+            }
             "ST" => st_other.push((id, b)),
             "IL" => raw.push((id, crate::il_body::parse(ctx, b, pou))),
             "LD" | "FBD" => {
                 let g = graph::read(ctx, b, name);
-                let mut low = BodyLowering::new(index, pou, ctx.tag(b));
+                let mut low = BodyLowering::new(index, pou, ctx.tag(b)).calling_actions();
                 let mut stmts = low.lower(ctx, &g);
                 let mut renames = Renames::default();
                 for mut v in low.hidden_vars() {
@@ -199,39 +233,56 @@ fn lower_actions<'e, 'a>(
                 renames.apply(&mut stmts);
                 raw.push((id, stmts));
             }
+            "SFC" if n.contains("__") => unsupported.push((
+                a,
+                "the name of an action whose body is SFC holds no two underscores in a row (they separate the action's name in its chart's hidden variables)".into(),
+            )),
+            "SFC" => {
+                // one scan of the chart per call; its state (steps, timers, action control) is
+                // the POU's, namespaced by the action so two charts never share a name
+                let chart = crate::sfc::chart::read(ctx, b, name);
+                let (mut stmts, vars) = crate::sfc::lower_chart(ctx, index, pou_el, pou, b, chart);
+                let mut renames = Renames::default();
+                for mut v in vars {
+                    let new = crate::sfc::names::in_action(n, &v.name.name);
+                    renames.bases.insert(v.name.key(), new.clone());
+                    v.name.name = new;
+                    hidden.push(v);
+                }
+                renames.apply(&mut stmts);
+                raw.push((id, stmts));
+            }
             other => unsupported.push((a, format!("its body is <{other}>"))),
         }
     }
     let mut out = LoweredActions::default();
     if !st_other.is_empty() {
-        let decls = crate::st_body::declarations(index);
-        let mut local = Diagnostics::new();
-        let parsed: Vec<(Ident, Vec<il_frontend::st::ast::Stmt>)> = st_other
-            .iter()
-            .map(|(n, el)| {
-                let mut t = crate::il_body::embedded_text(el);
-                crate::st_body::join_split_operators(&mut t.text, t.base, ctx.xml);
-                let stmts =
-                    il_frontend::st::parse_statements(ctx.file, &t.text, t.base, &mut local);
-                (n.clone(), stmts)
+        let (lowered, blocks, local) =
+            lower_st_actions(ctx, index, pou, &st_other, &raw, "_ST_", ctx.tag(pou_el));
+        raw.extend(lowered);
+        out.blocks.extend(blocks);
+        for d in local {
+            ctx.report_in_pou(d, name);
+        }
+    }
+    // An ST body inlines its ST actions itself; the actions in other languages that call one
+    // (`Reset();` in an EXECUTE box of an FBD action, `CAL Reset` in IL) get a copy in IL.
+    let mut inline_only: Vec<(Ident, Vec<IlStmt>)> = Vec::new();
+    if !st_inline.is_empty() && !raw.is_empty() {
+        let (lowered, blocks, local) =
+            lower_st_actions(ctx, index, pou, &st_inline, &raw, "_STA_", ctx.tag(pou_el));
+        inline_only = lowered;
+        out.blocks.extend(blocks);
+        out.pending = local
+            .into_iter()
+            .map(|d| {
+                if d.xml.is_none() {
+                    d.with_xml(xml_ctx.clone())
+                } else {
+                    d
+                }
             })
             .collect();
-        let mut low = il_frontend::st::PouLowering::new(decls, pou);
-        low.set_actions(parsed.clone());
-        low.set_il_actions(raw.clone());
-        for (n, stmts) in &parsed {
-            let body = low.statements(stmts, &mut local);
-            raw.push((n.clone(), body));
-        }
-        out.blocks.extend(low.finish(ctx.tag(pou_el)));
-        for d in local {
-            let d = if d.xml.is_none() {
-                d.with_xml(xml_ctx.clone())
-            } else {
-                d
-            };
-            ctx.report(d);
-        }
     }
     if !hidden.is_empty() {
         out.blocks.push(VarBlock::locals(hidden, ctx.tag(pou_el)));
@@ -249,7 +300,7 @@ fn lower_actions<'e, 'a>(
             )
             .at(ctx.tag(first))
             .with_primary_label("action of a program or function block")
-            .with_hint("actions with a name and an IL, ST, LD or FBD body are compiled (called as `Act();` / `CAL Act` from the POU's body, or as `inst.Act();` / `CAL inst.Act` from other POUs); a call of this one is an unknown function (E1019)")
+            .with_hint("actions with a name and an IL, ST, LD, FBD or SFC body are compiled (called as `Act();` / `CAL Act` / a box `Act` from the POU's body, or as `inst.Act();` / `CAL inst.Act` from other POUs); a call of this one is an unknown function (E1019)")
             .with_xml(xml_ctx.clone()),
         );
     }
@@ -257,8 +308,11 @@ fn lower_actions<'e, 'a>(
         return out;
     }
     let is_var = var_test(pou, index);
-    let raw_map: HashMap<String, Vec<IlStmt>> =
-        raw.iter().map(|(n, b)| (n.key(), b.clone())).collect();
+    let raw_map: HashMap<String, Vec<IlStmt>> = inline_only
+        .iter()
+        .chain(raw.iter())
+        .map(|(n, b)| (n.key(), b.clone()))
+        .collect();
     let mut next = 0;
     for (n, body) in raw {
         let body = il_frontend::actions::inline_calls(
@@ -281,6 +335,43 @@ fn lower_actions<'e, 'a>(
         out.names.push(n);
     }
     out
+}
+
+/// What [`lower_st_actions`] gives: the statements per action, the temporaries' block, the
+/// diagnostics.
+type LoweredSt = (Vec<(Ident, Vec<IlStmt>)>, Vec<VarBlock>, Diagnostics);
+
+/// ST actions lowered to IL on their own (`prefix` names their labels and temporaries): the
+/// statements per action, the temporaries' block, and the diagnostics. They call each other and
+/// the actions of `il` (already IL) by name.
+fn lower_st_actions(
+    ctx: &mut Ctx,
+    index: &Index,
+    pou: &Pou,
+    actions: &[(Ident, &Element)],
+    il: &[(Ident, Vec<IlStmt>)],
+    prefix: &'static str,
+    span: il_frontend::Span,
+) -> LoweredSt {
+    let decls = crate::st_body::declarations(index);
+    let mut local = Diagnostics::new();
+    let parsed: Vec<(Ident, Vec<il_frontend::st::ast::Stmt>)> = actions
+        .iter()
+        .map(|(n, el)| {
+            let mut t = crate::il_body::embedded_text(el);
+            crate::st_body::join_split_operators(&mut t.text, t.base, ctx.xml);
+            let stmts = il_frontend::st::parse_statements(ctx.file, &t.text, t.base, &mut local);
+            (n.clone(), stmts)
+        })
+        .collect();
+    let mut low = il_frontend::st::PouLowering::new(decls, pou).with_prefix(prefix);
+    low.set_actions(parsed.clone());
+    low.set_il_actions(il.to_vec());
+    let lowered = parsed
+        .iter()
+        .map(|(n, stmts)| (n.clone(), low.statements(stmts, &mut local)))
+        .collect();
+    (lowered, low.finish(span).into_iter().collect(), local)
 }
 
 /// Whether a name is one of `pou`'s variables or a global of the project (case-insensitive).

@@ -154,6 +154,10 @@ pub struct BodyLowering<'i> {
     /// Node (of the graph being lowered) -> the hidden variable holding its expression's value
     /// (`None`: the expression was reported).
     exprs: HashMap<usize, Option<Operand>>,
+    /// Whether the statements go where the POU's actions are inlined (a body or an action of a
+    /// POU whose body is not SFC, `crate::body`): an action box, or `Act();` in an EXECUTE box,
+    /// is then `CAL Act`.
+    calls_actions: bool,
 }
 
 impl<'i> BodyLowering<'i> {
@@ -191,7 +195,15 @@ impl<'i> BodyLowering<'i> {
             pou_ast: pou,
             st: None,
             exprs: HashMap::default(),
+            calls_actions: false,
         }
+    }
+
+    /// Lets the body call the POU's actions (see `calls_actions`): the caller inlines every `CAL
+    /// Act` of the statements ([`il_frontend::actions::inline_calls`]).
+    pub fn calling_actions(mut self) -> Self {
+        self.calls_actions = true;
+        self
     }
 
     /// Lowers every network of the graph, in order.
@@ -466,9 +478,11 @@ impl<'i> BodyLowering<'i> {
             return catalogue::motion_pin_type(&field.name).map(|t| named_type(t, span));
         }
         if let Some(sig) = self.index.pous.get(&n.key()) {
+            // an internal variable of an FB instance too (CODESYS, TwinCAT; W1412)
             return sig
                 .pins
                 .iter()
+                .chain(&sig.internals)
                 .find(|(p, _, _)| field.is(p))
                 .map(|(_, _, t)| t.clone());
         }

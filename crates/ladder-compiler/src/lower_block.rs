@@ -1,6 +1,7 @@
 //! The blocks of a graphical body, for [`super`]: a function, function block, operator or motion block
 //! box ([`NetLowering::build_block`]), its pins typed against the block's declaration, its EN/ENO, and
-//! the result type of an overloaded or literal-typed function.
+//! the result type of an overloaded or literal-typed function; a box named after an action of the POU
+//! or of an FB instance (CODESYS), which becomes `CAL Act` / `CAL inst.Act` behind its EN.
 //!
 //! Input: one block node of the network being lowered and the values of its input wires. Output: the
 //! block's [`Action`] and the values of its outputs in the network's value table. Invariants: every
@@ -36,6 +37,10 @@ impl NetLowering<'_, '_> {
             return;
         }
         let Some(bt) = self.block_type(type_name) else {
+            if let Some(callee) = self.action_box(type_name, *type_span, instance.as_ref()) {
+                self.build_action_call(ctx, i, callee, inputs, outputs);
+                return;
+            }
             if self
                 .pou
                 .index
@@ -472,4 +477,125 @@ impl NetLowering<'_, '_> {
         }
         None
     }
+
+    /// The action a box calls: CODESYS draws the call of an action in LD and FBD as a box named
+    /// after it. `Act` is an action of this POU; `inst.Act` (or a box of type `Act` with instance
+    /// `inst`) an action of the function block instance `inst`. `None` when the name is no action.
+    fn action_box(
+        &self,
+        type_name: &str,
+        type_span: Span,
+        instance: Option<&(String, Span)>,
+    ) -> Option<VarRef> {
+        if !self.pou.calls_actions {
+            return None;
+        }
+        let index = self.pou.index;
+        let has = |pou: &str, action: &str| {
+            index
+                .pous
+                .get(&pou.to_ascii_uppercase())
+                .is_some_and(|s| s.actions.iter().any(|a| a.eq_ignore_ascii_case(action)))
+        };
+        let instance_has = |inst: &VarRef, action: &str| match self.pou.var_type(inst) {
+            Some(TypeRef::Named(fb)) => has(&fb.name, action),
+            _ => false,
+        };
+        let callee = values::var_ref(type_name, type_span)?;
+        match callee.accessors.as_slice() {
+            [] => {
+                if let Some((inst, inst_span)) = instance {
+                    let mut r = values::var_ref(inst, *inst_span)?;
+                    if !instance_has(&r, type_name) {
+                        return None;
+                    }
+                    r.accessors
+                        .push(Accessor::Field(Ident::new(type_name, type_span)));
+                    return Some(r);
+                }
+                has(&self.pou.pou, type_name).then_some(callee)
+            }
+            [.., Accessor::Field(action)] => {
+                let mut inst = callee.clone();
+                inst.accessors.pop();
+                instance_has(&inst, &action.name).then_some(callee)
+            }
+            _ => None,
+        }
+    }
+
+    /// A box that calls an action (see [`Self::action_box`]): the action runs where the box sits
+    /// when its EN is TRUE (always without EN); ENO, or the box's one output, is EN. A box has no
+    /// other input (E3018).
+    fn build_action_call(
+        &mut self,
+        ctx: &mut Ctx,
+        i: usize,
+        callee: VarRef,
+        inputs: &[InPin],
+        outputs: &[graph::OutPin],
+    ) {
+        let node = &self.g.nodes[i];
+        let span = node.span;
+        let mut en = None;
+        for pin in inputs {
+            let Some(v) = self.input_val(ctx, &pin.wires, i) else {
+                if !pin.wires.is_empty() {
+                    self.poisoned.insert(i);
+                    return;
+                }
+                continue;
+            };
+            if !pin.name.eq_ignore_ascii_case("EN") {
+                let d = self.diag(
+                    ctx,
+                    code::E3018,
+                    i,
+                    pin.span,
+                    format!(
+                        "the call of action `{}` has no input `{}`",
+                        shown_callee(&callee),
+                        pin.name
+                    ),
+                )
+                .with_hint("an action box takes only EN (and gives ENO); set the block's inputs before the call");
+                ctx.report(d);
+                continue;
+            }
+            let v = if pin.negated {
+                self.val(Val::Not(v), pin.span)
+            } else {
+                v
+            };
+            self.check_bool(ctx, i, v, pin.span, format_args!("EN input"));
+            en = Some(v);
+        }
+        let call = IlStmt::Instr(Instruction {
+            kind: InstrKind::Call {
+                cond: Condition::Always,
+                instance: Box::new(callee),
+                args: CallArgs::None,
+            },
+            span,
+        });
+        self.actions.push(Action::Execute {
+            code: vec![call],
+            en,
+            skip_label: format!("__skip_{}", sanitize(&node.id)),
+            span,
+        });
+        self.eno_outputs(i, en, outputs);
+    }
+}
+
+/// `Act` or `inst.Act`, as the engineer wrote it.
+fn shown_callee(r: &VarRef) -> String {
+    let mut s = r.base.name.clone();
+    for a in r.accessors.iter() {
+        if let Accessor::Field(f) = a {
+            s.push('.');
+            s.push_str(&f.name);
+        }
+    }
+    s
 }

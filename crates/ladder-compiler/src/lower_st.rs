@@ -10,6 +10,7 @@
 
 use super::{
     bool_ty, sanitize, shown, simple, Action, BodyLowering, InPin, Kind, NetLowering, Operand, Val,
+    ValId,
 };
 use crate::context::{Ctx, Where};
 use crate::graph::{self, Graph};
@@ -155,10 +156,42 @@ impl NetLowering<'_, '_> {
         let stmts = st::parse_statements(ctx.file, &src, text.base, &mut local);
         let decls = crate::st_body::declarations(self.pou.index);
         let pou_ast = self.pou.pou_ast;
+        // `Act();` calls an action of the POU: `CAL Act`, which the caller inlines
+        let actions: Vec<(il_frontend::ast::Ident, Vec<IlStmt>)> = if self.pou.calls_actions {
+            self.pou
+                .index
+                .pous
+                .get(&self.pou.pou.to_ascii_uppercase())
+                .map(|sig| sig.actions.as_slice())
+                .unwrap_or_default()
+                .iter()
+                .map(|a| {
+                    let name = il_frontend::ast::Ident::new(a.as_str(), span);
+                    let call = IlStmt::Instr(il_frontend::ast::Instruction {
+                        kind: il_frontend::ast::InstrKind::Call {
+                            cond: il_frontend::ast::Condition::Always,
+                            instance: Box::new(il_frontend::ast::VarRef {
+                                base: name.clone(),
+                                accessors: Default::default(),
+                                span,
+                            }),
+                            args: il_frontend::ast::CallArgs::None,
+                        },
+                        span,
+                    });
+                    (name, vec![call])
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
         let low = self
             .pou
             .st
             .get_or_insert_with(|| PouLowering::new(decls, pou_ast).with_prefix("_STX_"));
+        if !actions.is_empty() {
+            low.set_il_actions(actions);
+        }
         let code = low.statements(&stmts, &mut local);
         let failed = local.has_errors();
         let at = self.at(i).xml();
@@ -180,6 +213,13 @@ impl NetLowering<'_, '_> {
             skip_label: format!("__skip_{}", sanitize(&node.id)),
             span,
         });
+        self.eno_outputs(i, en, outputs);
+    }
+
+    /// The outputs of a box whose ENO is its EN (an EXECUTE box, an action call): every output
+    /// pin, and the box's power flow when it has none, is EN (TRUE without EN).
+    pub(super) fn eno_outputs(&mut self, i: usize, en: Option<ValId>, outputs: &[graph::OutPin]) {
+        let span = self.g.nodes[i].span;
         let eno = en.unwrap_or_else(|| self.val(Val::Const(true), span));
         for out in outputs {
             let v = if out.negated {

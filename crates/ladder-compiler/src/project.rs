@@ -42,6 +42,12 @@ pub struct PouSig {
     pub pins: Vec<(String, VarKind, TypeRef)>,
     /// A FUNCTION's result type.
     pub ret: Option<TypeRef>,
+    /// The other variables (`VAR`, `VAR_TEMP`, `VAR_EXTERNAL` ...) with their block kind and type:
+    /// not pins, only read to type `inst.x` (an FB instance's internal variable, W1412).
+    pub internals: Vec<(String, VarKind, TypeRef)>,
+    /// The names of a program's or function block's actions (`<actions>`, CODESYS), as written:
+    /// an LD/FBD box of that name calls the action.
+    pub actions: Vec<String>,
 }
 
 /// Everything a body lowering needs to know about the rest of the project.
@@ -130,7 +136,16 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
                 );
                 methods.insert(h.name.key(), ms);
             }
-            index.pous.insert(h.name.key(), signature(&h));
+            let mut sig = signature(&h);
+            sig.actions = p
+                .child("actions")
+                .into_iter()
+                .flat_map(|a| a.children_named("action"))
+                .filter_map(|a| a.attr("name").map(str::trim))
+                .filter(|n| crate::values::is_ident(n))
+                .map(str::to_string)
+                .collect();
+            index.pous.insert(h.name.key(), sig);
             headers.push((*p, h));
         }
     }
@@ -382,6 +397,9 @@ fn is_read_vendor_data(name: &str) -> bool {
         "/tasksettings",
         // the ST code of a CODESYS EXECUTE box (graph.rs)
         "/stcode",
+        // a CODESYS SFC element's attributes: a step's entry, step and exit actions
+        // (`sfc::chart::StepAction`); the others repeat what the element says (names, conditions)
+        "/sfc/element",
     ]
     .iter()
     .any(|s| name.ends_with(s))
@@ -618,21 +636,22 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
 }
 
 fn signature(p: &Pou) -> PouSig {
-    let pins = p
+    let (pins, internals) = p
         .var_blocks
         .iter()
-        .filter(|b| matches!(b.kind, VarKind::Input | VarKind::Output | VarKind::InOut))
         .flat_map(|b| {
             b.vars
                 .iter()
                 .map(move |v| (v.name.name.clone(), b.kind, v.ty.clone()))
         })
-        .collect();
+        .partition(|(_, k, _)| matches!(k, VarKind::Input | VarKind::Output | VarKind::InOut));
     PouSig {
         kind: p.kind,
         name: p.name.name.clone(),
         pins,
         ret: p.return_type.clone(),
+        internals,
+        actions: Vec::new(),
     }
 }
 

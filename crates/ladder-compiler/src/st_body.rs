@@ -30,7 +30,7 @@ fn build_declarations(index: &Index) -> Declarations {
         d.add_pou_interface(PouInterface {
             kind: p.kind,
             name: p.name.clone(),
-            vars: p.pins.clone(),
+            vars: p.pins.iter().chain(&p.internals).cloned().collect(),
             ret: p.ret.clone(),
         });
     }

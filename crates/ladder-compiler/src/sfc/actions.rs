@@ -1,7 +1,8 @@
 //! Action associations and action control (IEC 61131-3 2nd ed. 2.6.4, the ACTION_CONTROL block).
 //!
-//! Input: the chart's associations (step, `<action>` element), the POU's named actions (`<actions>`)
-//! and declared variables. Output: the actions in first-association order, each with the steps that
+//! Input: the chart's associations (step, `<action>` element, or a CODESYS entry/step/exit action
+//! of the step's vendor data), the POU's named actions (`<actions>`), the actions of the function
+//! block instances it declares, and declared variables. Output: the actions in first-association order, each with the steps that
 //! drive each qualifier and its durations; then the IL that computes every action's `Q` (active) and
 //! `A` (execute: `Q`, plus one final scan after the non-P part of `Q` falls, plus the P1/P0 pulses)
 //! from the step flags.
@@ -9,7 +10,7 @@
 //! inputs are OR-combined, as IEC requires); timed qualifiers have a duration (else E3123); a name
 //! that is neither a named action nor a declared BOOL variable is E3122.
 
-use super::chart::{report, Association, Step};
+use super::chart::{report, Association, Step, StepAction};
 use super::il::{self, Hidden};
 use super::names;
 use crate::context::Ctx;
@@ -44,6 +45,9 @@ pub enum Qualifier {
     DS,
     /// `SL`: stored and time limited.
     SL,
+    /// A CODESYS step action (vendor data, [`super::chart::StepAction::Active`]): executed while
+    /// the step is active, with no final scan (not a qualifier one can write).
+    StepAction,
 }
 
 impl Qualifier {
@@ -85,6 +89,7 @@ impl Qualifier {
             Qualifier::SD => "SD",
             Qualifier::DS => "DS",
             Qualifier::SL => "SL",
+            Qualifier::StepAction => "SA",
         }
     }
 }
@@ -95,6 +100,9 @@ pub enum Target<'e, 'a> {
     Body(&'e Element<'a>),
     /// A BOOL variable: gets the action's `Q` every scan.
     Variable(Operand),
+    /// An action of a function block instance (`Motor.ACT_Stop`, CODESYS): called (`CAL
+    /// Motor.ACT_Stop`) while `A` is TRUE, as a body would run.
+    Call(il_frontend::ast::VarRef),
 }
 
 /// One action of the chart with every association that drives it.
@@ -142,97 +150,45 @@ pub fn collect<'e, 'a>(
     let mut out: Vec<Action> = Vec::new();
     for a in assocs {
         let span = ctx.tag(a.el);
-        let q_text = a.el.attr("qualifier").unwrap_or("N");
-        let Some(q) = Qualifier::parse(q_text) else {
-            report(
-                ctx,
-                code::E3123,
-                ctx.attr_span(a.el, "qualifier"),
-                pou_name,
-                Some(&a.block_id),
-                format!(
-                    "action qualifier `{}` is not one of N R S L D P P1 P0 SD DS SL",
-                    q_text.trim()
-                ),
-            );
-            continue;
+        let (q, duration) = match a.vendor {
+            Some(StepAction::Exit) => (Qualifier::P0, None),
+            Some(StepAction::Entry) => (Qualifier::P1, None),
+            Some(StepAction::Active) => (Qualifier::StepAction, None),
+            None => match qualifier_of(ctx, a, pou, index, steps, span) {
+                Some(qd) => qd,
+                None => continue,
+            },
         };
-        let duration = match a
-            .el
-            .attr("duration")
-            .map(str::trim)
-            .filter(|d| !d.is_empty())
-        {
-            Some(d) => {
-                let ds = ctx.attr_span(a.el, "duration");
-                let op = values::literal(d, ds)
-                    .filter(|l| matches!(l.kind, LiteralKind::Duration(_)))
-                    .map(Operand::literal)
-                    .or_else(|| values::duration(d).map(|ns| il::lit_time(ns, ds)))
-                    .or_else(|| values::var_ref(d, ds).map(Operand::Var));
-                if op.is_none() {
-                    report(
-                        ctx,
-                        code::E3123,
-                        ds,
-                        pou_name,
-                        Some(&a.block_id),
-                        format!("action duration `{d}` is neither a TIME literal nor a variable"),
-                    );
-                    continue;
-                }
-                op
-            }
-            None => None,
-        };
-        if q.timed() && duration.is_none() {
-            report(
-                ctx,
-                code::E3123,
-                span,
-                pou_name,
-                Some(&a.block_id),
-                format!(
-                    "qualifier {} needs a duration (for example duration=\"T#2s\")",
-                    q.tag()
-                ),
-            );
-            continue;
-        }
-        // Indicator variables (IEC 61131-3 2nd ed. 2.6.4.2 field "d", 3rd ed. 6.7.4): declared
-        // BOOL variables, which the action's body sets (the chart does not drive them)
-        let mut bad_indicator = false;
-        for ind in
-            a.el.attr("indicator")
-                .unwrap_or_default()
-                .split(',')
-                .map(str::trim)
-                .filter(|n| !n.is_empty())
-        {
-            let ispan = ctx.attr_span(a.el, "indicator");
-            if !(values::is_ident(ind) && is_bool_var(pou, index, ind) == Some(true)) {
-                report(
-                    ctx,
-                    code::E3122,
-                    ispan,
-                    pou_name,
-                    Some(&a.block_id),
-                    format!(
-                        "indicator `{ind}` of an action of step `{}` is not a declared BOOL variable",
-                        steps[a.step].name
-                    ),
-                );
-                bad_indicator = true;
-            }
-        }
-        if bad_indicator {
-            continue;
-        }
         let step_name = &steps[a.step].name;
         // Which action.
-        let (key, display, name, target) = if let Some(r) = a.el.child("reference") {
-            let n = r.attr("name").unwrap_or_default().trim();
-            let nspan = ctx.attr_span(r, "name");
+        // the action a CODESYS step action names is its attribute's text
+        let reference: Option<(String, Span)> = match a.vendor {
+            Some(_) => Some((a.el.text_ref().trim().to_string(), span)),
+            None => a.el.child("reference").map(|r| {
+                (
+                    r.attr("name").unwrap_or_default().trim().to_string(),
+                    ctx.attr_span(r, "name"),
+                )
+            }),
+        };
+        let (key, display, name, target) = if let Some((n, nspan)) = &reference {
+            let (n, nspan) = (n.as_str(), *nspan);
+            if let Some(call) = instance_action(pou, index, n, nspan) {
+                // `__` cannot occur in a name the chart's actions take (E3122), so no key clashes
+                let k = n.replace('.', "__");
+                out_push(
+                    &mut out,
+                    Action {
+                        key: k,
+                        display: format!("action `{n}`"),
+                        name: None,
+                        target: Target::Call(call),
+                        uses: vec![(q, a.step, duration)],
+                        span,
+                    },
+                );
+                continue;
+            }
             if !values::is_ident(n) || n.contains("__") {
                 report(
                     ctx,
@@ -265,11 +221,18 @@ pub fn collect<'e, 'a>(
                     );
                     continue;
                 };
+                // an action whose body is a chart of its own (CODESYS) is lowered once for the
+                // POU (`crate::body`), its state the POU's: the chart calls it (`CAL Act`)
+                let target = if lang.name == "SFC" {
+                    Target::Call(il::var_ref(n, nspan))
+                } else {
+                    Target::Body(lang)
+                };
                 (
                     n.to_string(),
                     format!("action `{n}`"),
                     Some(n.to_string()),
-                    Target::Body(lang),
+                    target,
                 )
             } else {
                 match is_bool_var(pou, index, n) {
@@ -335,24 +298,175 @@ pub fn collect<'e, 'a>(
             );
             continue;
         };
-        let k = key.to_ascii_uppercase();
-        match out.iter_mut().find(|x| x.key.to_ascii_uppercase() == k) {
-            Some(x) => x.uses.push((q, a.step, duration)),
-            None => out.push(Action {
+        out_push(
+            &mut out,
+            Action {
                 key,
                 display,
                 name,
                 target,
                 uses: vec![(q, a.step, duration)],
                 span,
-            }),
-        }
+            },
+        );
     }
     out
 }
 
 /// The OR of the step flags associated with qualifier `q`, as one operand (a hidden variable when
 /// several steps); `None` when no association uses `q`.
+/// The qualifier and duration of an `<action>` of an action block, its indicators checked; `None`
+/// (reported) when one is wrong.
+fn qualifier_of(
+    ctx: &mut Ctx,
+    a: &Association,
+    pou: &Pou,
+    index: &crate::project::Index,
+    steps: &[Step],
+    span: Span,
+) -> Option<(Qualifier, Option<Operand>)> {
+    let pou_name = pou.name.name.as_str();
+    let q_text = a.el.attr("qualifier").unwrap_or("N");
+    let Some(q) = Qualifier::parse(q_text) else {
+        report(
+            ctx,
+            code::E3123,
+            ctx.attr_span(a.el, "qualifier"),
+            pou_name,
+            Some(&a.block_id),
+            format!(
+                "action qualifier `{}` is not one of N R S L D P P1 P0 SD DS SL",
+                q_text.trim()
+            ),
+        );
+        return None;
+    };
+    let duration = match a
+        .el
+        .attr("duration")
+        .map(str::trim)
+        .filter(|d| !d.is_empty())
+    {
+        Some(d) => {
+            let ds = ctx.attr_span(a.el, "duration");
+            let op = values::literal(d, ds)
+                .filter(|l| matches!(l.kind, LiteralKind::Duration(_)))
+                .map(Operand::literal)
+                .or_else(|| values::duration(d).map(|ns| il::lit_time(ns, ds)))
+                .or_else(|| values::var_ref(d, ds).map(Operand::Var));
+            if op.is_none() {
+                report(
+                    ctx,
+                    code::E3123,
+                    ds,
+                    pou_name,
+                    Some(&a.block_id),
+                    format!("action duration `{d}` is neither a TIME literal nor a variable"),
+                );
+                return None;
+            }
+            op
+        }
+        None => None,
+    };
+    if q.timed() && duration.is_none() {
+        report(
+            ctx,
+            code::E3123,
+            span,
+            pou_name,
+            Some(&a.block_id),
+            format!(
+                "qualifier {} needs a duration (for example duration=\"T#2s\")",
+                q.tag()
+            ),
+        );
+        return None;
+    }
+    // Indicator variables (IEC 61131-3 2nd ed. 2.6.4.2 field "d", 3rd ed. 6.7.4): declared
+    // BOOL variables, which the action's body sets (the chart does not drive them)
+    let mut bad_indicator = false;
+    for ind in
+        a.el.attr("indicator")
+            .unwrap_or_default()
+            .split(',')
+            .map(str::trim)
+            .filter(|n| !n.is_empty())
+    {
+        let ispan = ctx.attr_span(a.el, "indicator");
+        if !(values::is_ident(ind) && is_bool_var(pou, index, ind) == Some(true)) {
+            report(
+                ctx,
+                code::E3122,
+                ispan,
+                pou_name,
+                Some(&a.block_id),
+                format!(
+                    "indicator `{ind}` of an action of step `{}` is not a declared BOOL variable",
+                    steps[a.step].name
+                ),
+            );
+            bad_indicator = true;
+        }
+    }
+    if bad_indicator {
+        return None;
+    }
+    Some((q, duration))
+}
+
+/// Adds `act` to the actions, or its association to the action of the same key already there.
+fn out_push<'e, 'a>(out: &mut Vec<Action<'e, 'a>>, act: Action<'e, 'a>) {
+    let k = act.key.to_ascii_uppercase();
+    match out.iter_mut().find(|x| x.key.to_ascii_uppercase() == k) {
+        Some(x) => x.uses.extend(act.uses),
+        None => out.push(act),
+    }
+}
+
+/// `inst.Act` where `inst` is a function block instance of the POU (or a global one, or an
+/// instance inside one: `Table.Motor.ACT_Stop`) whose type has the action `Act` (CODESYS names an
+/// instance's action in an action block): the call.
+fn instance_action(
+    pou: &Pou,
+    index: &crate::project::Index,
+    name: &str,
+    span: Span,
+) -> Option<il_frontend::ast::VarRef> {
+    use il_frontend::ast::Accessor;
+    let r = values::var_ref(name, span)?;
+    let (Accessor::Field(act), path) = r.accessors.split_last()? else {
+        return None;
+    };
+    let key = r.base.key();
+    let mut ty = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .find(|v| v.name.key() == key)
+        .map(|v| &v.ty)
+        .or_else(|| index.globals.get(&key))?;
+    // `Table.Motor.ACT_Stop`: an instance inside an instance (CODESYS)
+    for a in path {
+        let (Accessor::Field(f), TypeRef::Named(fb)) = (a, ty) else {
+            return None;
+        };
+        let sig = index.pous.get(&fb.key())?;
+        ty = sig
+            .pins
+            .iter()
+            .chain(&sig.internals)
+            .find(|(n, _, _)| f.is(n))
+            .map(|(_, _, t)| t)?;
+    }
+    let TypeRef::Named(fb) = ty else {
+        return None;
+    };
+    let sig = index.pous.get(&fb.key())?;
+    (sig.kind == il_frontend::ast::PouKind::FunctionBlock && sig.actions.iter().any(|x| act.is(x)))
+        .then_some(r)
+}
+
 fn input(
     act: &Action,
     q: Qualifier,
@@ -462,8 +576,12 @@ pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<
             (Op::And, true, f(&t, "Q")),
         ]);
     }
-    // Pulses (P1 on activation, P0 on deactivation): executed once, no final scan.
+    // Pulses (P1 on activation, P0 on deactivation): executed once, no final scan; a CODESYS
+    // step action runs while its step is active, without a final scan either.
     let mut pulses: Vec<Operand> = Vec::new();
+    if let Some(x) = input(act, Qualifier::StepAction, steps, hidden, out) {
+        pulses.push(x);
+    }
     if let Some(p1) = input(act, Qualifier::P1, steps, hidden, out) {
         let t = part("P1");
         hidden.declare(&t, "R_TRIG", None, span);
@@ -530,7 +648,7 @@ pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<
             }
             out.push(il::op(Op::St, var.clone()));
         }
-        Target::Body(_) => {
+        Target::Body(_) | Target::Call(_) => {
             // A := Q OR final scan (the non-P part of Q was TRUE last scan) OR pulses.
             let (a, m) = (names::a(k), part("Qm"));
             hidden.declare(&a, "BOOL", None, span);

@@ -3,7 +3,9 @@
 //!
 //! Input: the `<SFC>` element. Output: a [`Chart`] where every transition knows its predecessor steps
 //! (through selection divergences and simultaneous convergences) and its successor steps (through
-//! selection convergences, simultaneous divergences and jump steps), in priority order.
+//! selection convergences, simultaneous divergences and jump steps), in priority order. A transition
+//! after a selection convergence of steps and jump steps (CODESYS's alternative branches) is one
+//! transition per step (`<id>`, `<id>_1` ...), the jumps left out.
 //! Invariants: only well-formed parts are kept: a transition whose predecessors or successors cannot be
 //! resolved is reported (E3120 dangling connection, E3128 invalid structure) and dropped; every step
 //! index in the chart is valid; step names are unique identifiers (E3131).
@@ -79,6 +81,64 @@ pub struct Association<'e, 'a> {
     pub index: usize,
     /// The `<action>` element (qualifier, duration, reference or inline body).
     pub el: &'e Element<'a>,
+    /// A CODESYS step action of the step's vendor data instead (`el` is then its `<attribute>`,
+    /// whose text names the action): which one.
+    pub vendor: Option<StepAction>,
+}
+
+/// The actions CODESYS attaches to a step in its vendor data (`addData/data[.../sfc/element]`,
+/// attributes by GUID), run as IEC qualifiers: entry (P1), the step action (while the step is
+/// active, without the final scan of N) and exit (P0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum StepAction {
+    /// Run once when the step is left (CODESYS runs every exit first).
+    Exit,
+    /// Run once when the step becomes active.
+    Entry,
+    /// Run in every scan the step is active.
+    Active,
+}
+
+impl StepAction {
+    /// CODESYS's attribute GUIDs (`.../sfc/element` vendor data of a `<step>`).
+    const GUIDS: [(&'static str, StepAction); 3] = [
+        ("a2621e18-7de3-4ea6-ae6d-89e9e0b7befd", StepAction::Exit),
+        ("a6b08bd8-b696-47e3-9cbf-7408b61c9ff8", StepAction::Entry),
+        ("700a583f-b4d4-43e4-8c14-629c7cd3bec8", StepAction::Active),
+    ];
+    /// How the engineer calls it.
+    pub fn describe(self) -> &'static str {
+        match self {
+            StepAction::Exit => "exit action",
+            StepAction::Entry => "entry action",
+            StepAction::Active => "step action",
+        }
+    }
+}
+
+/// The CODESYS step actions of a `<step>` (see [`StepAction`]), with the `<attribute>` naming each.
+fn step_actions<'e, 'a>(step: &'e Element<'a>) -> Vec<(StepAction, &'e Element<'a>)> {
+    let mut out = Vec::new();
+    for data in step
+        .children_named("addData")
+        .flat_map(|d| d.children_named("data"))
+        .filter(|d| d.attr("name").is_some_and(|n| n.ends_with("/sfc/element")))
+    {
+        for attr in data
+            .children_named("attributes")
+            .flat_map(|a| a.children_named("attribute"))
+        {
+            let Some(guid) = attr.attr("guid") else {
+                continue;
+            };
+            if let Some((_, k)) = StepAction::GUIDS.iter().find(|(g, _)| *g == guid.trim()) {
+                if !attr.text_ref().trim().is_empty() {
+                    out.push((*k, attr));
+                }
+            }
+        }
+    }
+    out
 }
 
 /// An `<SFC>` body read as a chart: [`super::chart`]'s output, read by the SFC lowering.
@@ -212,7 +272,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         }
         let mut step = None;
         if kind == NodeKind::Step {
-            let name = e.attr("name").unwrap_or_default().trim().to_string();
+            let mut name = e.attr("name").unwrap_or_default().trim().to_string();
             let nspan = ctx.attr_span(e, "name");
             if !crate::values::is_ident(&name) || name.contains("__") {
                 report(
@@ -223,7 +283,12 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                     Some(id),
                     format!("step name `{name}` is not an IEC identifier"),
                 );
-                continue;
+                // kept under a name of its own (the build fails already), so the transitions and
+                // jumps around it are not reported again
+                if !name.is_empty() {
+                    step_names.insert(name.to_ascii_uppercase(), steps.len());
+                }
+                name = format!("invalid_{}", super::sanitize(id));
             }
             if let Some(&prev) = step_names.get(&name.to_ascii_uppercase()) {
                 let first: &Step = &steps[prev];
@@ -300,8 +365,30 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         let mut pre = Vec::new();
         let mut ok = true;
         let mut seen = HashSet::new();
-        for &from in &resolved[i] {
-            ok &= pre_steps(ctx, &nodes, &resolved, from, &mut pre, &mut seen, pou);
+        // CODESYS ends the branches of an alternative branch with steps and jumps, merged by a
+        // selection convergence that a transition follows: the transition leaves whichever of
+        // those steps is active (a jump ends its branch, it feeds nothing): one transition each
+        let branch_ends: Option<Vec<usize>> = match resolved[i].as_slice() {
+            [c] if nodes[*c].kind == NodeKind::SelConv
+                && !resolved[*c].is_empty()
+                && resolved[*c]
+                    .iter()
+                    .all(|&f| matches!(nodes[f].kind, NodeKind::Step | NodeKind::Jump)) =>
+            {
+                Some(resolved[*c].iter().filter_map(|&f| nodes[f].step).collect())
+            }
+            _ => None,
+        };
+        if let Some(ends) = &branch_ends {
+            pre.extend(ends.iter().take(1));
+        } else {
+            for &from in &resolved[i] {
+                ok &= pre_steps(ctx, &nodes, &resolved, from, &mut pre, &mut seen, pou);
+            }
+        }
+        if branch_ends.as_ref().is_some_and(|e| e.is_empty()) {
+            // only jumps reach the convergence: the transition can never fire
+            continue;
         }
         if resolved[i].is_empty() {
             // Dangling inputs were reported as E3120 already.
@@ -354,19 +441,32 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                 .filter(|v| a == "priority" || *v > 0)
                 .unwrap_or(u32::MAX)
         };
+        let order = (
+            num("priority"),
+            num("executionOrderId"),
+            pos(n.el, "x"),
+            pos(n.el, "y"),
+            n.id.parse().unwrap_or(u64::MAX),
+        );
+        // the copies for the other branch ends of a CODESYS convergence (`34_1`, `34_2`: no
+        // localId has an underscore's place in a number, so the hidden names stay apart)
+        for (k, &s) in branch_ends.iter().flatten().enumerate().skip(1) {
+            transitions.push(Transition {
+                id: format!("{}_{k}", n.id),
+                span,
+                cond,
+                pre: vec![s],
+                post: post.clone(),
+                order,
+            });
+        }
         transitions.push(Transition {
             id: n.id.clone(),
             span,
             cond,
             pre,
             post,
-            order: (
-                num("priority"),
-                num("executionOrderId"),
-                pos(n.el, "x"),
-                pos(n.el, "y"),
-                n.id.parse().unwrap_or(u64::MAX),
-            ),
+            order,
         });
     }
     transitions.sort_by_key(|t| t.order);
@@ -431,6 +531,27 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         .collect();
     blocks.sort_by_key(|b| b.1);
     let mut associations = Vec::new();
+    // CODESYS's step actions first, as CODESYS runs them before the IEC actions: every exit
+    // action, then every entry action, then every step action, steps in document order
+    let mut vendor: Vec<(StepAction, usize, &Element)> = Vec::new();
+    for n in &nodes {
+        let Some(step) = n.step.filter(|_| n.kind == NodeKind::Step) else {
+            continue;
+        };
+        for (k, attr) in step_actions(n.el) {
+            vendor.push((k, step, attr));
+        }
+    }
+    vendor.sort_by_key(|v| v.0);
+    for (k, (kind, step, attr)) in vendor.into_iter().enumerate() {
+        associations.push(Association {
+            step,
+            block_id: steps[step].id.clone(),
+            index: k,
+            el: attr,
+            vendor: Some(kind),
+        });
+    }
     for (i, _) in blocks {
         let n = &nodes[i];
         let step = match resolved[i].as_slice() {
@@ -466,6 +587,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                 block_id: n.id.clone(),
                 index: k,
                 el: a,
+                vendor: None,
             });
         }
     }

@@ -10,7 +10,11 @@
 //! 3. all fired transitions deactivate their predecessors, then activate their successors (one
 //!    evolution per scan, no cascade);
 //! 4. step elapsed times (`Step.T`, a TON per step);
-//! 5. action control for every action (IEC ACTION_CONTROL), then action bodies whose `A` is TRUE.
+//! 5. action control for every action (IEC ACTION_CONTROL), then action bodies whose `A` is TRUE
+//!    (an action of an FB instance, or one whose body is a chart of its own, is a `CAL` there).
+//!
+//! A chart may also be the body of a POU's action ([`crate::body`]): its hidden variables are then
+//! renamed per action ([`names::in_action`]).
 //!
 //! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
 //! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
@@ -67,6 +71,16 @@ pub mod names {
     /// `__sfc_<part>_<action>`: one internal variable of the action control (`Sin`, `Qm` ...).
     pub fn action_part(action: &str, part: &str) -> String {
         format!("__sfc_{part}_{action}")
+    }
+    /// The name a hidden variable `hidden` of the chart of action `action` (a POU's action whose
+    /// body is SFC) takes in the POU: `__sfc_X_Fill` of action `Sequence` is
+    /// `__sfc_Sequence__X_Fill`. An identifier never holds two underscores in a row, so the name
+    /// of the action ends at the first `__`, and the charts of two actions never share a variable.
+    pub fn in_action(action: &str, hidden: &str) -> String {
+        let rest = hidden
+            .strip_prefix("__sfc_")
+            .unwrap_or_else(|| hidden.trim_start_matches('_'));
+        format!("__sfc_{action}__{rest}")
     }
 }
 
@@ -340,11 +354,22 @@ pub fn lower_chart<'e, 'a>(
         actions::control(a, &chart.steps, &mut hidden, &mut out);
     }
     for a in &acts {
-        let Target::Body(lang) = a.target else {
-            continue;
-        };
-        let Some(code) = snippets.lower(ctx, lang, Purpose::Action, &mut hidden, &a.display) else {
-            continue;
+        let code = match &a.target {
+            Target::Variable(_) => continue,
+            Target::Call(inst_action) => vec![IlStmt::Instr(il_frontend::ast::Instruction {
+                kind: il_frontend::ast::InstrKind::Call {
+                    cond: il_frontend::ast::Condition::Always,
+                    instance: Box::new(inst_action.clone()),
+                    args: il_frontend::ast::CallArgs::None,
+                },
+                span: a.span,
+            })],
+            Target::Body(lang) => {
+                match snippets.lower(ctx, lang, Purpose::Action, &mut hidden, &a.display) {
+                    Some(code) => code,
+                    None => continue,
+                }
+            }
         };
         let skip = format!("__sfc_skip_{}", a.key);
         out.push(il::op(Op::Ld, il::var(&names::a(&a.key), a.span)));

@@ -34,16 +34,17 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
                 }
             }
             LibraryElement::Pou(p) => {
-                let pins = p
+                let (pins, internals) = p
                     .var_blocks
                     .iter()
-                    .filter(|b| matches!(b.kind, VarKind::Input | VarKind::Output | VarKind::InOut))
                     .flat_map(|b| {
                         b.vars
                             .iter()
                             .map(move |v| (v.name.name.clone(), b.kind, v.ty.clone()))
                     })
-                    .collect();
+                    .partition(|(_, k, _)| {
+                        matches!(k, VarKind::Input | VarKind::Output | VarKind::InOut)
+                    });
                 index.pous.insert(
                     p.name.key(),
                     PouSig {
@@ -51,6 +52,8 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
                         name: p.name.name.clone(),
                         pins,
                         ret: p.return_type.clone(),
+                        internals,
+                        actions: Vec::new(),
                     },
                 );
             }
@@ -263,6 +266,7 @@ pub fn lower(
                 block_id: s.name.clone(),
                 index: i,
                 el,
+                vendor: None,
             });
         }
     }
