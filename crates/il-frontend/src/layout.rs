@@ -600,9 +600,11 @@ impl<'s> Layout<'s> {
                 self.skip_unsupported_block(w, s, e);
                 continue;
             }
+            let mut closed = false;
             if let Tok::Word(w) = tok {
                 if w != Word::Ident && w.is_name() && self.instruction_in_declarations() {
                     self.close_top(s);
+                    closed = true;
                 }
             }
             // `MOD(` + `IN1 := ...`: the formal call of the standard function that shares the
@@ -623,8 +625,52 @@ impl<'s> Layout<'s> {
                         other
                     }
                 };
+            if let Tok::Word(w) = tok {
+                if !closed && self.simple_line(s, w) {
+                    continue;
+                }
+            }
             self.emit(s, tok, e);
         }
+    }
+
+    /// At an operator word `w` starting at `s`: when it starts an instruction line and a plain name
+    /// and the line's end follow, passes the two on as one [`Tok::SimpleLine`] and returns `true`
+    /// (nothing is emitted otherwise). The grammar builds the same instruction of it as of the two
+    /// tokens; the layout state after it is the one after the two (see [`Layout::emit`]).
+    fn simple_line(&mut self, s: usize, w: Word) -> bool {
+        if !matches!(self.prev, Last::Start | Last::Eol)
+            || self.in_decl()
+            || self.stack.last() == Some(&Frame::Args)
+        {
+            return false;
+        }
+        let Some(op) = crate::parser::simple_op(w) else {
+            return false;
+        };
+        let mut ahead = self.lex.clone();
+        if ahead.next() != Some(Ok(RawToken::Word)) || !ahead.extras.is_empty() {
+            return false;
+        }
+        let name = ahead.span();
+        if crate::lexer::classify(ahead.slice()) != Word::Ident {
+            return false;
+        }
+        // The line ends right after the name (blanks only between): no accessor, no second
+        // operand, no comment.
+        let rest = ahead.remainder().as_bytes();
+        let blanks = rest
+            .iter()
+            .take_while(|b| matches!(b, b' ' | b'\t'))
+            .count();
+        if !matches!(rest.get(blanks), Some(b'\n' | b'\r')) {
+            return false;
+        }
+        self.lex = ahead;
+        self.emit(s, Tok::SimpleLine(op, name.start, name.end), name.end);
+        // As after the operator word and the name.
+        self.prev2 = Last::Deferrable;
+        true
     }
 
     /// A `[` past [`MAX_SUBSCRIPT_NESTING`] open subscripts in an instruction list: reported once
@@ -876,6 +922,55 @@ mod tests {
         );
     }
 
+    /// `LD x` and a line end: one [`Tok::SimpleLine`] with the operator and the name's range; any
+    /// other line keeps its tokens (an accessor, a literal, a comment, a label, a keyword as the name,
+    /// declarations, call arguments, the end of the text right after the name).
+    #[test]
+    fn simple_lines_pass_as_one_token() {
+        let lines = |src: &str| -> Vec<String> {
+            Layout::new(FileId(0), src, 0, Tok::UnitStart)
+                .filter_map(|t| t.ok())
+                .filter_map(|(s, tok, e)| match tok {
+                    Tok::SimpleLine((op, negated, w), ns, ne) => Some(format!(
+                        "{:?}{} {} [{}]",
+                        op,
+                        if negated { "N" } else { "" },
+                        w.spelling(),
+                        &src[ns..ne]
+                    ))
+                    .filter(|_| src[s..e].ends_with(&src[ns..ne])),
+                    _ => None,
+                })
+                .collect()
+        };
+        assert_eq!(
+            lines("LD a\n  ANDN b_1 \t\r\nst Q\rLT c\n"),
+            ["Ld LD [a]", "AndN ANDN [b_1]", "St ST [Q]", "Lt LT [c]"]
+        );
+        for src in [
+            "LD a.b\n",
+            "LD a[1]\n",
+            "LD a (* c *)\n",
+            "LD a // c\n",
+            "LD 5\n",
+            "LD TRUE\n",
+            "LD IN\n",
+            "ADD a, b\n",
+            "l1: LD a\n",
+            "CAL f\n",
+            "JMP l1\n",
+            "VAR\nLD : BOOL;\nEND_VAR\n",
+            "CAL f(\nLD a\n)\n",
+            "LD a",
+        ] {
+            assert_eq!(lines(src), Vec::<String>::new(), "{src:?}");
+        }
+        // The line after a simple line: the layout state is the one after two tokens.
+        let (s, d) = stream("LD a\nAND( b\nOR c\n)\nST d\n");
+        assert_eq!(s, "LD a / AND ( b / OR c / ) / ST d /");
+        assert!(d.is_empty());
+    }
+
     /// An operator word followed by a formal argument list is passed on as a name (a function call),
     /// also with blanks or a BOM before `(`; `(*` opens a comment and a bare operand is an operand.
     #[test]
@@ -885,6 +980,7 @@ mod tests {
                 .filter_map(|t| t.ok())
                 .find_map(|(s, tok, e)| match tok {
                     Tok::Word(w) if &src[s..e] == "MOD" => Some(w),
+                    Tok::SimpleLine((_, _, w), ..) if src[s..e].starts_with("MOD") => Some(w),
                     _ => None,
                 })
         };

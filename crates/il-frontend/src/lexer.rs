@@ -834,6 +834,12 @@ pub enum Tok {
     Dot,
     /// Text the lexer could not make a token of (already reported).
     Error,
+    /// A whole simple instruction line, `LD x`: an operator word (one of `LD` .. `LT`, see
+    /// [`Word::is_simple_op`], as the grammar reads it: operator, `N` modifier, word) at the start of
+    /// an instruction line and a plain name, its operand, with the name's local byte range. The layout
+    /// pass passes the two tokens on as one when a line end follows the name (the commonest IL line);
+    /// the grammar builds what it builds of the two.
+    SimpleLine((crate::ast::Op, bool, Word), usize, usize),
 }
 
 impl Tok {
@@ -842,7 +848,7 @@ impl Tok {
         match self {
             Tok::UnitStart | Tok::BodyStart => "start of file".into(),
             Tok::Eol => "end of line".into(),
-            Tok::Word(_) | Tok::Amp | Tok::AmpN => format!("`{text}`"),
+            Tok::Word(_) | Tok::Amp | Tok::AmpN | Tok::SimpleLine(..) => format!("`{text}`"),
             Tok::Int(_) | Tok::Real(_) | Tok::Time(_) | Tok::Str(..) => {
                 format!("literal `{text}`")
             }

@@ -143,3 +143,36 @@ fn non_ascii_text_is_reported_on_character_boundaries() {
     assert_eq!(spans, vec!["ü", "é", "€"], "{}", p.short());
     assert!(p.diags.iter().all(|d| d.code.0 == "E0001"));
 }
+
+/// A simple line (`LD x` and the line's end, passed from the layout pass to the grammar as one token)
+/// gives the tree and the diagnostics the operator and the name give as two tokens (a comment after
+/// the name keeps them two): for every simple operator word, spans included, `NOT x` (E0013) too.
+#[test]
+fn simple_lines_parse_as_their_two_tokens() {
+    let parse = |src: &str| {
+        let mut diags = Diagnostics::new();
+        let body = il_frontend::parse_body(FileId(0), src, 7, &mut diags);
+        let diags: Vec<String> = diags
+            .iter()
+            .map(|d| format!("{} {} {:?} {:?}", d.code, d.message, d.span, d.hint))
+            .collect();
+        (format!("{body:?}"), diags)
+    };
+    let words = [
+        "LD", "ldn", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN", "NOT",
+        "ADD", "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT",
+    ];
+    for w in words {
+        let one = parse(&format!("LD a\n  {w} x_1\t\n"));
+        let two = parse(&format!("LD a\n  {w} x_1\t(* two tokens *)\n"));
+        assert_eq!(one, two, "{w}");
+        assert_eq!(one.1.is_empty(), w != "NOT", "{w}: {:?}", one.1);
+        // `NOT x` keeps the recovered `NOT` without its operand
+        assert_eq!(
+            one.0.contains("name: \"x_1\""),
+            w != "NOT",
+            "{w}: {}",
+            one.0
+        );
+    }
+}
