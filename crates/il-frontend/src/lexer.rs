@@ -840,6 +840,15 @@ pub enum Tok {
     /// pass passes the two tokens on as one when a line end follows the name (the commonest IL line);
     /// the grammar builds what it builds of the two.
     SimpleLine((crate::ast::Op, bool, Word), usize, usize),
+    /// `ADD 5`: as [`Tok::SimpleLine`], with an integer literal (sign applied) as the operand, and the
+    /// literal's local byte range.
+    SimpleIntLine((crate::ast::Op, bool, Word), i128, usize, usize),
+    /// `JMPC done`: a jump word (`JMP`, `JMPC`, `JMPCN`), as its condition, and a plain name as the
+    /// label, with the name's local byte range, followed by the line's end.
+    JumpLine(crate::ast::Condition, usize, usize),
+    /// `done:` alone on its line: a plain name at the start of an instruction line and `:`, followed
+    /// by the line's end; the name's local byte range.
+    LabelLine(usize, usize),
 }
 
 impl Tok {
@@ -848,7 +857,13 @@ impl Tok {
         match self {
             Tok::UnitStart | Tok::BodyStart => "start of file".into(),
             Tok::Eol => "end of line".into(),
-            Tok::Word(_) | Tok::Amp | Tok::AmpN | Tok::SimpleLine(..) => format!("`{text}`"),
+            Tok::Word(_)
+            | Tok::Amp
+            | Tok::AmpN
+            | Tok::SimpleLine(..)
+            | Tok::SimpleIntLine(..)
+            | Tok::JumpLine(..)
+            | Tok::LabelLine(..) => format!("`{text}`"),
             Tok::Int(_) | Tok::Real(_) | Tok::Time(_) | Tok::Str(..) => {
                 format!("literal `{text}`")
             }

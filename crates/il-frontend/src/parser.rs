@@ -343,6 +343,18 @@ impl<'s> Ctx<'s> {
         self.simple(op, Some(operand), l, r)
     }
 
+    /// A [`Tok::SimpleIntLine`] (`ADD 5` passed on as one token, the operator at `l`, the literal
+    /// at `nl..nr = r`): what [`Ctx::simple`] builds of the operator and the integer literal.
+    pub fn simple_int_line(
+        &mut self,
+        (op, value, nl, nr): (SimpleOp, i128, usize, usize),
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        let literal = self.literal(LiteralKind::Int(value), None, nl, nr);
+        self.simple(op, Some(Operand::literal(literal)), l, r)
+    }
+
     /// Builds `LD x`, `ANDN y`, `NOT` ...; reports a missing operand (E0012), an operand after `NOT`
     /// (E0013) and extra operands (E0301), returning `None` when the line is unusable.
     pub fn simple(
@@ -1088,10 +1100,21 @@ impl<'s> Ctx<'s> {
         if tok == Tok::Error {
             return;
         }
-        // A simple line is two tokens of the source: the error is at its operator word (the name
-        // after it is skipped with the rest of the line, as it would be on its own).
+        // A simple, jump or label line is two tokens of the source: the error is at its first (the
+        // second is skipped with the rest of the line, as it would be on its own).
         let (tok, end) = match tok {
-            Tok::SimpleLine((_, _, w), ..) => (Tok::Word(w), s + word_len(self.src, s)),
+            Tok::SimpleLine((_, _, w), ..) | Tok::SimpleIntLine((_, _, w), ..) => {
+                (Tok::Word(w), s + word_len(self.src, s))
+            }
+            Tok::JumpLine(c, ..) => {
+                let w = match c {
+                    Condition::Always => Word::Jmp,
+                    Condition::IfTrue => Word::Jmpc,
+                    Condition::IfFalse => Word::Jmpcn,
+                };
+                (Tok::Word(w), s + word_len(self.src, s))
+            }
+            Tok::LabelLine(_, name_end) => (Tok::Word(Word::Ident), name_end),
             other => (other, end),
         };
         let text = self.text(s, end);
@@ -1382,13 +1405,12 @@ pub(crate) fn implicit_program_warning(at: Span, name: &str) -> Diagnostic {
 mod tests {
     use super::*;
 
-    /// A syntax error at a simple line (`LD x` as one token) is the error at its operator word: the
-    /// same message, span and hint as for the word alone.
+    /// A syntax error at a simple, jump or label line (`LD x`, `ADD 5`, `JMPC l`, `l:` as one token)
+    /// is the error at its first token: the same message, span and hint as for that token alone.
     #[test]
-    fn an_error_at_a_simple_line_is_at_its_operator_word() {
-        let src = "FUNCTION f : INT\n  LDN x_1\n";
-        let at = src.find("LDN").expect("in the text");
-        let report = |tok: Tok, end: usize| {
+    fn an_error_at_a_simple_line_is_at_its_first_token() {
+        let src = "FUNCTION f : INT\n  LDN x_1\n  ADD 5\n  JMPC l\n  l:\n";
+        let report = |at: usize, tok: Tok, end: usize| {
             let mut ctx = Ctx {
                 file: FileId(0),
                 src,
@@ -1409,14 +1431,40 @@ mod tests {
                 .map(|d| format!("{} {} {:?} {:?}", d.code, d.message, d.span, d.hint))
                 .collect::<Vec<_>>()
         };
-        let name = src.find("x_1").expect("in the text");
-        let line = report(
-            Tok::SimpleLine((Op::Ld, true, Word::Ldn), name, name + 3),
-            name + 3,
-        );
-        let word = report(Tok::Word(Word::Ldn), at + 3);
-        assert_eq!(line, word);
-        assert_eq!(line.len(), 1);
-        assert!(line[0].contains("`LDN`"), "{line:?}");
+        let find = |t: &str| src.find(t).expect("in the text");
+        let cases = [
+            (
+                "LDN",
+                Tok::SimpleLine((Op::Ld, true, Word::Ldn), find("x_1"), find("x_1") + 3),
+                find("x_1") + 3,
+                Tok::Word(Word::Ldn),
+            ),
+            (
+                "ADD",
+                Tok::SimpleIntLine((Op::Add, false, Word::Add), 5, find("5"), find("5") + 1),
+                find("5") + 1,
+                Tok::Word(Word::Add),
+            ),
+            (
+                "JMPC",
+                Tok::JumpLine(Condition::IfTrue, find("l\n"), find("l\n") + 1),
+                find("l\n") + 1,
+                Tok::Word(Word::Jmpc),
+            ),
+            (
+                "l:",
+                Tok::LabelLine(find("l:"), find("l:") + 1),
+                find("l:") + 2,
+                Tok::Word(Word::Ident),
+            ),
+        ];
+        for (first, line, end, alone) in cases {
+            let at = find(first);
+            let first = first.trim_end_matches(':');
+            let line = report(at, line, end);
+            assert_eq!(line, report(at, alone, at + first.len()), "{first}");
+            assert_eq!(line.len(), 1);
+            assert!(line[0].contains(&format!("`{first}`")), "{line:?}");
+        }
     }
 }
