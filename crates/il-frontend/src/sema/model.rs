@@ -373,7 +373,10 @@ pub enum FbType {
 }
 
 /// A resolved type.
-#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
+///
+/// `Clone` and `PartialEq` are written out (the same as derived): their elementary case, nearly every
+/// type a body's instructions carry, is inlined where they are used; the rest is out of line.
+#[derive(Debug, Eq, Hash, Serialize)]
 pub enum Type {
     /// `BOOL`, `INT`, `TIME` ...
     Elementary(Elementary),
@@ -410,6 +413,87 @@ pub enum Type {
     Fb(FbType),
     /// Stands for a type sema could not determine (a diagnostic was reported); silences follow-on errors.
     Error,
+}
+
+impl Clone for Type {
+    #[inline]
+    fn clone(&self) -> Type {
+        match self {
+            Type::Elementary(e) => Type::Elementary(*e),
+            other => other.clone_other(),
+        }
+    }
+}
+
+impl PartialEq for Type {
+    #[inline]
+    fn eq(&self, other: &Type) -> bool {
+        match (self, other) {
+            (Type::Elementary(a), Type::Elementary(b)) => a == b,
+            (Type::Elementary(_), _) | (_, Type::Elementary(_)) => false,
+            _ => self.eq_other(other),
+        }
+    }
+}
+
+impl Type {
+    /// [`Clone::clone`] of the cases other than [`Type::Elementary`].
+    #[inline(never)]
+    fn clone_other(&self) -> Type {
+        match self {
+            Type::Elementary(e) => Type::Elementary(*e),
+            Type::String { wide, len } => Type::String {
+                wide: *wide,
+                len: *len,
+            },
+            Type::Array { dims, element } => Type::Array {
+                dims: dims.clone(),
+                element: element.clone(),
+            },
+            Type::Struct(id) => Type::Struct(*id),
+            Type::Enum(id) => Type::Enum(*id),
+            Type::Subrange { base, lower, upper } => Type::Subrange {
+                base: *base,
+                lower: lower.clone(),
+                upper: upper.clone(),
+            },
+            Type::Fb(f) => Type::Fb(*f),
+            Type::Error => Type::Error,
+        }
+    }
+    /// [`PartialEq::eq`]: equal variants with equal fields.
+    #[inline(never)]
+    fn eq_other(&self, other: &Type) -> bool {
+        match (self, other) {
+            (Type::Elementary(a), Type::Elementary(b)) => a == b,
+            (
+                Type::String { wide, len },
+                Type::String {
+                    wide: wide2,
+                    len: len2,
+                },
+            ) => wide == wide2 && len == len2,
+            (
+                Type::Array { dims, element },
+                Type::Array {
+                    dims: dims2,
+                    element: element2,
+                },
+            ) => dims == dims2 && element == element2,
+            (Type::Struct(a), Type::Struct(b)) | (Type::Enum(a), Type::Enum(b)) => a == b,
+            (
+                Type::Subrange { base, lower, upper },
+                Type::Subrange {
+                    base: base2,
+                    lower: lower2,
+                    upper: upper2,
+                },
+            ) => base == base2 && lower == lower2 && upper == upper2,
+            (Type::Fb(a), Type::Fb(b)) => a == b,
+            (Type::Error, Type::Error) => true,
+            _ => false,
+        }
+    }
 }
 
 /// One array dimension `lower..upper` (inclusive).
@@ -1511,6 +1595,60 @@ impl Model {
                 .map(|p| p.name.clone())
                 .unwrap_or_else(|| "?".into()),
             Type::Error => "<error>".into(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod type_tests {
+    use super::*;
+
+    /// The written-out `Clone` and `PartialEq` of [`Type`]: a clone equals its original, every
+    /// variant differs from every other, and a different field makes a different type.
+    #[test]
+    fn types_clone_and_compare_field_by_field() {
+        let array = |upper: i128, element: Type| Type::Array {
+            dims: vec![Dim { lower: 0, upper }],
+            element: Box::new(element),
+        };
+        let subrange = |upper: i128| Type::Subrange {
+            base: Elementary::Int,
+            lower: Box::new(0),
+            upper: Box::new(upper),
+        };
+        let all = [
+            Type::BOOL,
+            Type::INT,
+            Type::String {
+                wide: false,
+                len: 10,
+            },
+            Type::String {
+                wide: true,
+                len: 10,
+            },
+            Type::String {
+                wide: false,
+                len: 11,
+            },
+            array(3, Type::INT),
+            array(4, Type::INT),
+            array(3, Type::BOOL),
+            Type::Struct(TypeId(0)),
+            Type::Struct(TypeId(1)),
+            Type::Enum(TypeId(0)),
+            subrange(100),
+            subrange(99),
+            Type::Fb(FbType::Standard(StdFb::RTrig)),
+            Type::Fb(FbType::User(PouId(0))),
+            Type::Error,
+        ];
+        for (i, a) in all.iter().enumerate() {
+            assert_eq!(&a.clone(), a);
+            assert_eq!(format!("{:?}", a.clone()), format!("{a:?}"));
+            for (j, b) in all.iter().enumerate() {
+                assert_eq!(a == b, i == j, "{a:?} == {b:?}");
+            }
         }
     }
 }
