@@ -1200,7 +1200,8 @@ pub struct Model {
 /// previous instruction ([`InstrTable::get_near`]), which finds the next one at once; while the ids came
 /// in increasing order a lookup bisects; otherwise the first lookup that needs it builds a hash index
 /// (instruction addresses are not in order across bodies, and sema never needs it).
-/// Invariants: `pool[facts[i]] == i` for every stored facts value; every entry's index is below
+/// Invariants: `pool[facts[i]] == i` for every stored facts value, and `simple[simple_key(facts[i])]
+/// == i` for those with a key; every entry's index is below
 /// `facts.len()`; `sorted` says whether the ids are strictly increasing; `index`, once built, maps each
 /// id to its last entry (an id inserted twice: the later info counts; sema records each instruction
 /// once).
@@ -1211,6 +1212,23 @@ pub struct InstrTable {
     index: std::sync::OnceLock<FxHashMap<InstrId, u32>>,
     facts: Vec<InstrFacts>,
     pool: FxHashMap<InstrFacts, u32>,
+    /// The pool's entries whose facts have a [`simple_key`] (most: elementary types, no callee, no
+    /// arguments), by that key: found without hashing and comparing whole facts.
+    simple: FxHashMap<u32, u32>,
+}
+
+/// The facts of most instructions in a word: each of the three types absent (0) or elementary (its
+/// index + 1), one byte each; `None` when there is a callee, an argument or another type.
+fn simple_key(f: &InstrFacts) -> Option<u32> {
+    if f.callee.is_some() || !f.args.is_empty() {
+        return None;
+    }
+    let byte = |t: &Option<Type>| match t {
+        None => Some(0),
+        Some(Type::Elementary(e)) => Some(*e as u32 + 1),
+        Some(_) => None,
+    };
+    Some(byte(&f.cr_before)? | byte(&f.cr_after)? << 8 | byte(&f.operand)? << 16)
 }
 
 impl InstrTable {
@@ -1222,6 +1240,19 @@ impl InstrTable {
     }
     /// The index of `facts` in the shared store (stored first if new).
     pub(crate) fn intern(&mut self, facts: InstrFacts) -> u32 {
+        if let Some(key) = simple_key(&facts) {
+            return match self.simple.get(&key) {
+                Some(&ix) => ix,
+                None => {
+                    let ix = self.intern_in_pool(facts);
+                    self.simple.insert(key, ix);
+                    ix
+                }
+            };
+        }
+        self.intern_in_pool(facts)
+    }
+    fn intern_in_pool(&mut self, facts: InstrFacts) -> u32 {
         match self.pool.get(&facts) {
             Some(&ix) => ix,
             None => {
@@ -1759,6 +1790,49 @@ mod instr_table_tests {
         // Inserted after the index was built: found through it.
         t.insert(InstrId(5), info(9, Type::INT));
         assert_eq!(t.get(&InstrId(5)).unwrap().cr_after, Some(Type::INT));
+    }
+
+    /// Facts with a small key (elementary or no types, no callee, no arguments) and without one
+    /// (another type, a callee) are each stored once and read back as given; facts differing in any
+    /// one of the three types are different.
+    #[test]
+    fn equal_facts_are_stored_once_with_or_without_a_small_key() {
+        let types = [
+            None,
+            Some(Type::BOOL),
+            Some(Type::INT),
+            Some(Type::String {
+                wide: false,
+                len: 8,
+            }),
+        ];
+        let mut all = Vec::new();
+        for a in &types {
+            for b in &types {
+                for c in &types {
+                    for callee in [None, Some(Callee::Embedded { name: "f".into() })] {
+                        all.push(InstrFacts {
+                            cr_before: a.clone(),
+                            cr_after: b.clone(),
+                            operand: c.clone(),
+                            callee,
+                            args: Vec::new(),
+                        });
+                    }
+                }
+            }
+        }
+        let mut t = InstrTable::default();
+        for round in 0..2 {
+            for (i, f) in all.iter().enumerate() {
+                let id = InstrId(round * all.len() + i);
+                let ix = t.intern(f.clone());
+                t.insert_interned(id, Span::new(diagnostics::FileId(0), i, i), ix);
+                assert_eq!(t.get(&id).unwrap().facts, f, "{f:?}");
+            }
+            assert_eq!(t.distinct_facts(), all.len());
+        }
+        assert!(simple_key(&all[0]).is_some() && simple_key(&all[1]).is_none());
     }
 
     /// In increasing order the table bisects; an id recorded twice answers with the later info.
