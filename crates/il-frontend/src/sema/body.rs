@@ -910,7 +910,11 @@ impl Body<'_, '_> {
         rec: &mut Rec,
     ) -> Ty {
         let name = op_name(op);
-        let Some(f) = super::stdlib::function(name) else {
+        let f = match self.a.operator_functions.get_mut(op as usize) {
+            Some(known) => *known.get_or_insert_with(|| super::stdlib::function(name)),
+            None => super::stdlib::function(name),
+        };
+        let Some(f) = f else {
             return Ty::ERROR;
         };
         if negate {
