@@ -375,7 +375,9 @@ pub enum FbType {
 /// A resolved type.
 ///
 /// `Clone` and `PartialEq` are written out (the same as derived): their elementary case, nearly every
-/// type a body's instructions carry, is inlined where they are used; the rest is out of line.
+/// type a body's instructions carry, is inlined where they are used; the rest is out of line. The
+/// equality is the derived one (equal variants with equal fields), so the derived `Hash` agrees with it.
+#[allow(clippy::derived_hash_with_manual_eq)]
 #[derive(Debug, Eq, Hash, Serialize)]
 pub enum Type {
     /// `BOOL`, `INT`, `TIME` ...
