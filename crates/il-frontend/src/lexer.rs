@@ -884,6 +884,14 @@ mod tests {
         RawToken::lexer(src).collect()
     }
 
+    /// The grammar moves tokens inside its symbols (the largest symbol is lalrpop's error record,
+    /// which holds a token): the line tokens (`SimpleIntLine` with its `i128`) fit in the size the
+    /// literal tokens already had.
+    #[test]
+    fn tokens_stay_small() {
+        assert_eq!(std::mem::size_of::<Tok>(), 48);
+    }
+
     #[test]
     fn keyword_table_is_case_insensitive_and_keeps_names_usable() {
         assert_eq!(classify("ld"), Word::Ld);
