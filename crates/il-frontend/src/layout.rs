@@ -17,6 +17,7 @@
 //! - Lexer errors are reported here and passed on as [`Tok::Error`], which the grammar recovers from
 //!   without reporting again.
 
+use crate::ast::Condition;
 use crate::lexer::{LexError, RawToken, Tok, Word};
 use diagnostics::{code, Diagnostic, FileId, Span};
 use logos::Logos;
@@ -600,9 +601,11 @@ impl<'s> Layout<'s> {
                 self.skip_unsupported_block(w, s, e);
                 continue;
             }
+            let mut closed = false;
             if let Tok::Word(w) = tok {
                 if w != Word::Ident && w.is_name() && self.instruction_in_declarations() {
                     self.close_top(s);
+                    closed = true;
                 }
             }
             // `MOD(` + `IN1 := ...`: the formal call of the standard function that shares the
@@ -623,8 +626,84 @@ impl<'s> Layout<'s> {
                         other
                     }
                 };
+            if let Tok::Word(w) = tok {
+                if !closed && self.line_token(s, e, w) {
+                    continue;
+                }
+            }
             self.emit(s, tok, e);
         }
+    }
+
+    /// At a word `w` (at `s..e`) that starts an instruction line: when the line is `LD x`,
+    /// `ADD 5`, `JMPC done` (an operator word and a plain name or an integer literal) or `done:`, passes
+    /// its two tokens on as one ([`Tok::SimpleLine`], [`Tok::SimpleIntLine`], [`Tok::JumpLine`],
+    /// [`Tok::LabelLine`]) and returns `true`; nothing is emitted otherwise. The grammar builds the
+    /// same statement of it as of the two tokens; the layout state after it is the one after the two
+    /// (see [`Layout::emit`]). The line's end (blanks before it) must follow: anything else on the
+    /// line (an accessor, a second operand, a comment) keeps the tokens apart.
+    fn line_token(&mut self, s: usize, e: usize, w: Word) -> bool {
+        if !matches!(self.prev, Last::Start | Last::Eol)
+            || self.in_decl()
+            || self.stack.last() == Some(&Frame::Args)
+        {
+            return false;
+        }
+        let op = crate::parser::simple_op(w);
+        let jump = match w {
+            Word::Jmp => Some(Condition::Always),
+            Word::Jmpc => Some(Condition::IfTrue),
+            Word::Jmpcn => Some(Condition::IfFalse),
+            _ => None,
+        };
+        if op.is_none() && jump.is_none() && w != Word::Ident {
+            return false;
+        }
+        let mut ahead = self.lex.clone();
+        let next = ahead.next();
+        if !ahead.extras.is_empty() {
+            return false;
+        }
+        let second = ahead.span();
+        let name = matches!(next, Some(Ok(RawToken::Word)))
+            && crate::lexer::classify(ahead.slice()) == Word::Ident;
+        let (tok, end, prev2, prev) = match (next, op, jump) {
+            (Some(Ok(RawToken::Word)), Some(op), _) if name => (
+                Tok::SimpleLine(op, second.start, second.end),
+                second.end,
+                Last::Deferrable,
+                Last::Other,
+            ),
+            (Some(Ok(RawToken::Int(v))), Some(op), _) => (
+                Tok::SimpleIntLine(op, v, second.start, second.end),
+                second.end,
+                Last::Deferrable,
+                Last::Other,
+            ),
+            (Some(Ok(RawToken::Word)), _, Some(c)) if name => (
+                Tok::JumpLine(c, second.start, second.end),
+                second.end,
+                Last::Other,
+                Last::Other,
+            ),
+            (Some(Ok(RawToken::Colon)), None, None) => {
+                (Tok::LabelLine(s, e), second.end, Last::Other, Last::Colon)
+            }
+            _ => return false,
+        };
+        let rest = ahead.remainder().as_bytes();
+        let blanks = rest
+            .iter()
+            .take_while(|b| matches!(b, b' ' | b'\t'))
+            .count();
+        if !matches!(rest.get(blanks), Some(b'\n' | b'\r')) {
+            return false;
+        }
+        self.lex = ahead;
+        self.emit(s, tok, end);
+        self.prev2 = prev2;
+        self.prev = prev;
+        true
     }
 
     /// A `[` past [`MAX_SUBSCRIPT_NESTING`] open subscripts in an instruction list: reported once
@@ -876,6 +955,76 @@ mod tests {
         );
     }
 
+    /// `LD x`, `ADD 5`, `JMPC l` and `l:` followed by the line's end: one token each, with the
+    /// operator and the second token's range; any other line keeps its tokens (an accessor, another
+    /// literal, a comment, a label before an instruction, a keyword as the name, declarations, call
+    /// arguments, the end of the text right after the name).
+    #[test]
+    fn simple_jump_and_label_lines_pass_as_one_token() {
+        let lines = |src: &str| -> Vec<String> {
+            Layout::new(FileId(0), src, 0, Tok::UnitStart)
+                .filter_map(|t| t.ok())
+                .filter_map(|(s, tok, e)| {
+                    let (what, ns, ne) = match tok {
+                        Tok::SimpleLine((op, negated, w), ns, ne) => {
+                            (format!("{op:?}{negated} {}", w.spelling()), ns, ne)
+                        }
+                        Tok::SimpleIntLine((op, negated, w), v, ns, ne) => {
+                            (format!("{op:?}{negated} {} {v}", w.spelling()), ns, ne)
+                        }
+                        Tok::JumpLine(c, ns, ne) => (format!("{c:?}"), ns, ne),
+                        Tok::LabelLine(ns, ne) => ("label".to_string(), ns, ne),
+                        _ => return None,
+                    };
+                    assert!(s <= ns && ne <= e, "{src:?}");
+                    Some(format!("{what} [{}] [{}]", &src[ns..ne], &src[s..e]))
+                })
+                .collect()
+        };
+        assert_eq!(
+            lines("LD a\n  ANDN b_1 \t\r\nst Q\rLT c\nADD 16#1F\nSUB -7\nJMPCN l2\nl2:\nJMPNC x\n"),
+            [
+                "Ldfalse LD [a] [LD a]",
+                "Andtrue ANDN [b_1] [ANDN b_1]",
+                "Stfalse ST [Q] [st Q]",
+                "Ltfalse LT [c] [LT c]",
+                "Addfalse ADD 31 [16#1F] [ADD 16#1F]",
+                "Subfalse SUB -7 [-7] [SUB -7]",
+                "IfFalse [l2] [JMPCN l2]",
+                "label [l2] [l2:]",
+                "IfFalse [x] [JMPNC x]",
+            ]
+        );
+        for src in [
+            "LD a.b\n",
+            "LD a[1]\n",
+            "LD a (* c *)\n",
+            "LD a // c\n",
+            "LD 5.0\n",
+            "LD INT#5\n",
+            "LD TRUE\n",
+            "LD IN\n",
+            "ADD a, b\n",
+            "ADD 1, 2\n",
+            "l1: LD a\n",
+            "l1: (* c *)\n",
+            "IN:\n",
+            "CAL f\n",
+            "JMP LD\n",
+            "JMP l1 l2\n",
+            "VAR\nLD : BOOL;\nEND_VAR\n",
+            "VAR\nx :\nBOOL;\nEND_VAR\n",
+            "CAL f(\nLD a\n)\n",
+            "LD a",
+        ] {
+            assert_eq!(lines(src), Vec::<String>::new(), "{src:?}");
+        }
+        // The line after such a line: the layout state is the one after its two tokens.
+        let (s, d) = stream("LD a\nAND( b\nOR 1\n)\nl:\nST d\nJMP l\n");
+        assert_eq!(s, "LD a / AND ( b / OR 1 / ) / l: / ST d / JMP l /");
+        assert!(d.is_empty());
+    }
+
     /// An operator word followed by a formal argument list is passed on as a name (a function call),
     /// also with blanks or a BOM before `(`; `(*` opens a comment and a bare operand is an operand.
     #[test]
@@ -885,6 +1034,7 @@ mod tests {
                 .filter_map(|t| t.ok())
                 .find_map(|(s, tok, e)| match tok {
                     Tok::Word(w) if &src[s..e] == "MOD" => Some(w),
+                    Tok::SimpleLine((_, _, w), ..) if src[s..e].starts_with("MOD") => Some(w),
                     _ => None,
                 })
         };

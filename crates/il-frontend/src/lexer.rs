@@ -834,6 +834,21 @@ pub enum Tok {
     Dot,
     /// Text the lexer could not make a token of (already reported).
     Error,
+    /// A whole simple instruction line, `LD x`: an operator word (one of `LD` .. `LT`, see
+    /// [`Word::is_simple_op`], as the grammar reads it: operator, `N` modifier, word) at the start of
+    /// an instruction line and a plain name, its operand, with the name's local byte range. The layout
+    /// pass passes the two tokens on as one when a line end follows the name (the commonest IL line);
+    /// the grammar builds what it builds of the two.
+    SimpleLine((crate::ast::Op, bool, Word), usize, usize),
+    /// `ADD 5`: as [`Tok::SimpleLine`], with an integer literal (sign applied) as the operand, and the
+    /// literal's local byte range.
+    SimpleIntLine((crate::ast::Op, bool, Word), i128, usize, usize),
+    /// `JMPC done`: a jump word (`JMP`, `JMPC`, `JMPCN`), as its condition, and a plain name as the
+    /// label, with the name's local byte range, followed by the line's end.
+    JumpLine(crate::ast::Condition, usize, usize),
+    /// `done:` alone on its line: a plain name at the start of an instruction line and `:`, followed
+    /// by the line's end; the name's local byte range.
+    LabelLine(usize, usize),
 }
 
 impl Tok {
@@ -842,7 +857,13 @@ impl Tok {
         match self {
             Tok::UnitStart | Tok::BodyStart => "start of file".into(),
             Tok::Eol => "end of line".into(),
-            Tok::Word(_) | Tok::Amp | Tok::AmpN => format!("`{text}`"),
+            Tok::Word(_)
+            | Tok::Amp
+            | Tok::AmpN
+            | Tok::SimpleLine(..)
+            | Tok::SimpleIntLine(..)
+            | Tok::JumpLine(..)
+            | Tok::LabelLine(..) => format!("`{text}`"),
             Tok::Int(_) | Tok::Real(_) | Tok::Time(_) | Tok::Str(..) => {
                 format!("literal `{text}`")
             }
@@ -861,6 +882,14 @@ mod tests {
 
     fn lex(src: &str) -> Vec<Result<RawToken, LexError>> {
         RawToken::lexer(src).collect()
+    }
+
+    /// The grammar moves tokens inside its symbols (the largest symbol is lalrpop's error record,
+    /// which holds a token): the line tokens (`SimpleIntLine` with its `i128`) fit in the size the
+    /// literal tokens already had.
+    #[test]
+    fn tokens_stay_small() {
+        assert_eq!(std::mem::size_of::<Tok>(), 48);
     }
 
     #[test]

@@ -125,6 +125,40 @@ pub enum ConfigItem {
 /// Simple operator as written: the operator, its `N` modifier, the keyword (for messages).
 pub type SimpleOp = (Op, bool, Word);
 
+/// The simple operator a word stands for (the grammar's `SimpleOp` rule for the words of
+/// [`Word::is_simple_op`]; `&` and `&N` are not words), `None` for any other word.
+pub fn simple_op(word: Word) -> Option<SimpleOp> {
+    use Word as W;
+    let (op, negated) = match word {
+        W::Ld => (Op::Ld, false),
+        W::Ldn => (Op::Ld, true),
+        W::St => (Op::St, false),
+        W::Stn => (Op::St, true),
+        W::S => (Op::S, false),
+        W::R => (Op::R, false),
+        W::And => (Op::And, false),
+        W::Andn => (Op::And, true),
+        W::Or => (Op::Or, false),
+        W::Orn => (Op::Or, true),
+        W::Xor => (Op::Xor, false),
+        W::Xorn => (Op::Xor, true),
+        W::Not => (Op::Not, false),
+        W::Add => (Op::Add, false),
+        W::Sub => (Op::Sub, false),
+        W::Mul => (Op::Mul, false),
+        W::Div => (Op::Div, false),
+        W::Mod => (Op::Mod, false),
+        W::Gt => (Op::Gt, false),
+        W::Ge => (Op::Ge, false),
+        W::Eq => (Op::Eq, false),
+        W::Ne => (Op::Ne, false),
+        W::Le => (Op::Le, false),
+        W::Lt => (Op::Lt, false),
+        _ => return None,
+    };
+    Some((op, negated, word))
+}
+
 /// Parser state shared by the grammar actions.
 pub struct Ctx<'s> {
     /// The file spans point into.
@@ -292,6 +326,34 @@ impl<'s> Ctx<'s> {
     }
 
     // ------------------------------------------------------------ instructions
+
+    /// A [`Tok::SimpleLine`] (`LD x` passed on as one token, the operator at `l`, the name ending at
+    /// `r`): what [`Ctx::simple`] builds of the operator and the plain variable operand.
+    pub fn simple_line(
+        &mut self,
+        (op, nl, nr): (SimpleOp, usize, usize),
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        let operand = Operand::Var(VarRef {
+            base: self.ident(nl, nr),
+            accessors: Default::default(),
+            span: self.span(nl, nr),
+        });
+        self.simple(op, Some(operand), l, r)
+    }
+
+    /// A [`Tok::SimpleIntLine`] (`ADD 5` passed on as one token, the operator at `l`, the literal
+    /// at `nl..nr = r`): what [`Ctx::simple`] builds of the operator and the integer literal.
+    pub fn simple_int_line(
+        &mut self,
+        (op, value, nl, nr): (SimpleOp, i128, usize, usize),
+        l: usize,
+        r: usize,
+    ) -> Option<Instruction> {
+        let literal = self.literal(LiteralKind::Int(value), None, nl, nr);
+        self.simple(op, Some(Operand::literal(literal)), l, r)
+    }
 
     /// Builds `LD x`, `ANDN y`, `NOT` ...; reports a missing operand (E0012), an operand after `NOT`
     /// (E0013) and extra operands (E0301), returning `None` when the line is unusable.
@@ -1038,6 +1100,23 @@ impl<'s> Ctx<'s> {
         if tok == Tok::Error {
             return;
         }
+        // A simple, jump or label line is two tokens of the source: the error is at its first (the
+        // second is skipped with the rest of the line, as it would be on its own).
+        let (tok, end) = match tok {
+            Tok::SimpleLine((_, _, w), ..) | Tok::SimpleIntLine((_, _, w), ..) => {
+                (Tok::Word(w), s + word_len(self.src, s))
+            }
+            Tok::JumpLine(c, ..) => {
+                let w = match c {
+                    Condition::Always => Word::Jmp,
+                    Condition::IfTrue => Word::Jmpc,
+                    Condition::IfFalse => Word::Jmpcn,
+                };
+                (Tok::Word(w), s + word_len(self.src, s))
+            }
+            Tok::LabelLine(_, name_end) => (Tok::Word(Word::Ident), name_end),
+            other => (other, end),
+        };
         let text = self.text(s, end);
         let found = if end == s && tok != Tok::Eol {
             match &tok {
@@ -1320,4 +1399,72 @@ pub(crate) fn implicit_program_warning(at: Span, name: &str) -> Diagnostic {
     .with_hint(format!(
         "wrap the instructions in `PROGRAM {name}` ... `END_PROGRAM` to silence this warning"
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A syntax error at a simple, jump or label line (`LD x`, `ADD 5`, `JMPC l`, `l:` as one token)
+    /// is the error at its first token: the same message, span and hint as for that token alone.
+    #[test]
+    fn an_error_at_a_simple_line_is_at_its_first_token() {
+        let src = "FUNCTION f : INT\n  LDN x_1\n  ADD 5\n  JMPC l\n  l:\n";
+        let report = |at: usize, tok: Tok, end: usize| {
+            let mut ctx = Ctx {
+                file: FileId(0),
+                src,
+                base: 0,
+                diags: Vec::new(),
+                consts: Default::default(),
+                in_constant_block: false,
+            };
+            ctx.recover(ErrorRecovery {
+                error: ParseError::UnrecognizedToken {
+                    token: (at, tok, end),
+                    expected: vec!["\"END_VAR\"".to_string(), "\";\"".to_string()],
+                },
+                dropped_tokens: Vec::new(),
+            });
+            ctx.diags
+                .iter()
+                .map(|d| format!("{} {} {:?} {:?}", d.code, d.message, d.span, d.hint))
+                .collect::<Vec<_>>()
+        };
+        let find = |t: &str| src.find(t).expect("in the text");
+        let cases = [
+            (
+                "LDN",
+                Tok::SimpleLine((Op::Ld, true, Word::Ldn), find("x_1"), find("x_1") + 3),
+                find("x_1") + 3,
+                Tok::Word(Word::Ldn),
+            ),
+            (
+                "ADD",
+                Tok::SimpleIntLine((Op::Add, false, Word::Add), 5, find("5"), find("5") + 1),
+                find("5") + 1,
+                Tok::Word(Word::Add),
+            ),
+            (
+                "JMPC",
+                Tok::JumpLine(Condition::IfTrue, find("l\n"), find("l\n") + 1),
+                find("l\n") + 1,
+                Tok::Word(Word::Jmpc),
+            ),
+            (
+                "l:",
+                Tok::LabelLine(find("l:"), find("l:") + 1),
+                find("l:") + 2,
+                Tok::Word(Word::Ident),
+            ),
+        ];
+        for (first, line, end, alone) in cases {
+            let at = find(first);
+            let first = first.trim_end_matches(':');
+            let line = report(at, line, end);
+            assert_eq!(line, report(at, alone, at + first.len()), "{first}");
+            assert_eq!(line.len(), 1);
+            assert!(line[0].contains(&format!("`{first}`")), "{line:?}");
+        }
+    }
 }

@@ -143,3 +143,52 @@ fn non_ascii_text_is_reported_on_character_boundaries() {
     assert_eq!(spans, vec!["ü", "é", "€"], "{}", p.short());
     assert!(p.diags.iter().all(|d| d.code.0 == "E0001"));
 }
+
+/// A simple, jump or label line (`LD x`, `ADD 5`, `JMPC l`, `l:`, each followed by the line's end,
+/// passed from the layout pass to the grammar as one token) gives the tree and the diagnostics its two
+/// tokens give (a comment before the line's end keeps them two): for every simple operator word with
+/// a name and with an integer, every jump word, a label; spans included, `NOT x` (E0013) too.
+#[test]
+fn simple_lines_parse_as_their_two_tokens() {
+    let parse = |src: &str| {
+        let mut diags = Diagnostics::new();
+        let body = il_frontend::parse_body(FileId(0), src, 7, &mut diags);
+        let diags: Vec<String> = diags
+            .iter()
+            .map(|d| format!("{} {} {:?} {:?}", d.code, d.message, d.span, d.hint))
+            .collect();
+        (format!("{body:?}"), diags)
+    };
+    let same = |line: &str| {
+        let one = parse(&format!("LD a\n  {line}\t\n"));
+        let two = parse(&format!("LD a\n  {line}\t(* two tokens *)\n"));
+        assert_eq!(one, two, "{line}");
+        one
+    };
+    let words = [
+        "LD", "ldn", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN", "NOT",
+        "ADD", "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT",
+    ];
+    for w in words {
+        let one = same(&format!("{w} x_1"));
+        assert_eq!(one.1.is_empty(), w != "NOT", "{w}: {:?}", one.1);
+        // `NOT x` keeps the recovered `NOT` without its operand
+        assert_eq!(
+            one.0.contains("name: \"x_1\""),
+            w != "NOT",
+            "{w}: {}",
+            one.0
+        );
+        let one = same(&format!("{w} -16"));
+        assert_eq!(one.0.contains("Int(-16)"), w != "NOT", "{w}: {}", one.0);
+    }
+    for w in ["JMP", "jmpc", "JMPCN", "JMPNC"] {
+        let one = same(&format!("{w} done"));
+        assert!(one.1.is_empty() && one.0.contains("Jump"), "{w}: {one:?}");
+    }
+    let one = same("done:");
+    assert!(
+        one.1.is_empty() && one.0.contains("Label(Ident { name: \"done\""),
+        "{one:?}"
+    );
+}

@@ -759,3 +759,48 @@ fn per_instruction_facts_stay_small() {
     assert!(std::ptr::eq(st[0].facts, st[1].facts));
     assert_ne!(st[0].span, st[1].span);
 }
+
+/// Every operator of a body calls the standard function of its own name, the first time and after
+/// (sema looks each operator's function up once).
+#[test]
+fn each_operator_calls_its_own_standard_function_every_time() {
+    let ops = [
+        "ADD", "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT", "AND", "OR", "XOR",
+    ];
+    let mut src = String::from("PROGRAM P\nVAR\n  i : INT;\n  w : WORD;\n  b : BOOL;\nEND_VAR\n");
+    for round in 0..2 {
+        for op in ops {
+            let (load, operand) = if matches!(op, "AND" | "OR" | "XOR") {
+                ("w", "w")
+            } else {
+                ("i", "i")
+            };
+            src.push_str(&format!(
+                "  LD {load}\n  {op} {operand} (* {op}{round} *)\n  ST b\n"
+            ));
+        }
+    }
+    src.push_str("END_PROGRAM\n");
+    let (m, _) = analyze_src(&src);
+    for round in 0..2 {
+        for op in ops {
+            let operand = if matches!(op, "AND" | "OR" | "XOR") {
+                "w"
+            } else {
+                "i"
+            };
+            let at = src
+                .find(&format!("{op} {operand} (* {op}{round} *)"))
+                .expect("in the source") as u32;
+            let info = m
+                .instrs
+                .values()
+                .find(|i| i.span.start == at)
+                .unwrap_or_else(|| panic!("no instruction at {op} #{round}"));
+            match &info.callee {
+                Some(Callee::Std { name, .. }) => assert_eq!(*name, op, "#{round}"),
+                other => panic!("{op} #{round}: {other:?}"),
+            }
+        }
+    }
+}

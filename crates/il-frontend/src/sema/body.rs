@@ -14,7 +14,7 @@ use super::Analyzer;
 use crate::ast::{self, Condition, IlStmt, InstrKind, Op};
 use crate::Span;
 use diagnostics::code;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 /// A current-result type during the walk: a resolved type or an untyped literal's type variable.
 #[derive(Debug, Clone, PartialEq)]
@@ -168,7 +168,7 @@ pub(super) struct Body<'a, 'd> {
 impl Analyzer<'_> {
     /// Checks one POU body and stores its instruction infos in the model.
     pub(crate) fn check_body(&mut self, id: PouId, pou: &ast::Pou) {
-        let mut labels = HashMap::new();
+        let mut labels = HashMap::default();
         let mut pos = 0;
         let any_backward = self.collect_labels(&pou.body, &mut labels, &mut pos);
         let mut b = Body {
@@ -180,8 +180,8 @@ impl Analyzer<'_> {
             recs: Vec::with_capacity(pos),
             pending: Vec::new(),
             labels,
-            edges: HashMap::new(),
-            backward: HashMap::new(),
+            edges: HashMap::default(),
+            backward: HashMap::default(),
             pos: 0,
             result_written: false,
             typed_generic: None,
@@ -189,7 +189,7 @@ impl Analyzer<'_> {
         // Pass 1, silent: what the backward jumps bring. Without backward jumps it would find nothing
         // (its only other effects, name resolutions and `result_written`, pass 2 repeats), so it is
         // skipped.
-        let mut backward: HashMap<String, Vec<(Span, Option<Type>)>> = HashMap::new();
+        let mut backward: HashMap<String, Vec<(Span, Option<Type>)>> = HashMap::default();
         if any_backward {
             b.a.silent = true;
             b.walk_top(&pou.body);
@@ -910,7 +910,11 @@ impl Body<'_, '_> {
         rec: &mut Rec,
     ) -> Ty {
         let name = op_name(op);
-        let Some(f) = super::stdlib::function(name) else {
+        let f = match self.a.operator_functions.get_mut(op as usize) {
+            Some(known) => *known.get_or_insert_with(|| super::stdlib::function(name)),
+            None => super::stdlib::function(name),
+        };
+        let Some(f) = f else {
             return Ty::ERROR;
         };
         if negate {

@@ -39,6 +39,7 @@ pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
         alias_chain_reported: false,
         undeclared_at: std::collections::HashSet::new(),
         internal_accessed: std::collections::HashSet::new(),
+        operator_functions: [None; 32],
     };
     let pous = a.declare(units);
     a.check_containment();
@@ -79,6 +80,9 @@ pub(crate) struct Analyzer<'d> {
     /// (POU, upper-case block type, upper-case variable) whose W1412 was given; (POU, `program P`,
     /// empty) once E1001 reported `P.x` in the POU.
     pub(crate) internal_accessed: std::collections::HashSet<(u32, String, String)>,
+    /// The standard function of each simple operator (`ADD` -> ADD), indexed by `Op as usize`, looked
+    /// up on first use ([`stdlib::function`] searches the catalogue by name).
+    pub(crate) operator_functions: [Option<Option<&'static stdlib::StdFunction>>; 32],
 }
 
 impl Analyzer<'_> {

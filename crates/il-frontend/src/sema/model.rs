@@ -373,7 +373,12 @@ pub enum FbType {
 }
 
 /// A resolved type.
-#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize)]
+///
+/// `Clone` and `PartialEq` are written out (the same as derived): their elementary case, nearly every
+/// type a body's instructions carry, is inlined where they are used; the rest is out of line. The
+/// equality is the derived one (equal variants with equal fields), so the derived `Hash` agrees with it.
+#[allow(clippy::derived_hash_with_manual_eq)]
+#[derive(Debug, Eq, Hash, Serialize)]
 pub enum Type {
     /// `BOOL`, `INT`, `TIME` ...
     Elementary(Elementary),
@@ -410,6 +415,87 @@ pub enum Type {
     Fb(FbType),
     /// Stands for a type sema could not determine (a diagnostic was reported); silences follow-on errors.
     Error,
+}
+
+impl Clone for Type {
+    #[inline]
+    fn clone(&self) -> Type {
+        match self {
+            Type::Elementary(e) => Type::Elementary(*e),
+            other => other.clone_other(),
+        }
+    }
+}
+
+impl PartialEq for Type {
+    #[inline]
+    fn eq(&self, other: &Type) -> bool {
+        match (self, other) {
+            (Type::Elementary(a), Type::Elementary(b)) => a == b,
+            (Type::Elementary(_), _) | (_, Type::Elementary(_)) => false,
+            _ => self.eq_other(other),
+        }
+    }
+}
+
+impl Type {
+    /// [`Clone::clone`] of the cases other than [`Type::Elementary`].
+    #[inline(never)]
+    fn clone_other(&self) -> Type {
+        match self {
+            Type::Elementary(e) => Type::Elementary(*e),
+            Type::String { wide, len } => Type::String {
+                wide: *wide,
+                len: *len,
+            },
+            Type::Array { dims, element } => Type::Array {
+                dims: dims.clone(),
+                element: element.clone(),
+            },
+            Type::Struct(id) => Type::Struct(*id),
+            Type::Enum(id) => Type::Enum(*id),
+            Type::Subrange { base, lower, upper } => Type::Subrange {
+                base: *base,
+                lower: lower.clone(),
+                upper: upper.clone(),
+            },
+            Type::Fb(f) => Type::Fb(*f),
+            Type::Error => Type::Error,
+        }
+    }
+    /// [`PartialEq::eq`]: equal variants with equal fields.
+    #[inline(never)]
+    fn eq_other(&self, other: &Type) -> bool {
+        match (self, other) {
+            (Type::Elementary(a), Type::Elementary(b)) => a == b,
+            (
+                Type::String { wide, len },
+                Type::String {
+                    wide: wide2,
+                    len: len2,
+                },
+            ) => wide == wide2 && len == len2,
+            (
+                Type::Array { dims, element },
+                Type::Array {
+                    dims: dims2,
+                    element: element2,
+                },
+            ) => dims == dims2 && element == element2,
+            (Type::Struct(a), Type::Struct(b)) | (Type::Enum(a), Type::Enum(b)) => a == b,
+            (
+                Type::Subrange { base, lower, upper },
+                Type::Subrange {
+                    base: base2,
+                    lower: lower2,
+                    upper: upper2,
+                },
+            ) => base == base2 && lower == lower2 && upper == upper2,
+            (Type::Fb(a), Type::Fb(b)) => a == b,
+            (Type::Error, Type::Error) => true,
+            _ => false,
+        }
+    }
 }
 
 /// One array dimension `lower..upper` (inclusive).
@@ -1116,7 +1202,8 @@ pub struct Model {
 /// previous instruction ([`InstrTable::get_near`]), which finds the next one at once; while the ids came
 /// in increasing order a lookup bisects; otherwise the first lookup that needs it builds a hash index
 /// (instruction addresses are not in order across bodies, and sema never needs it).
-/// Invariants: `pool[facts[i]] == i` for every stored facts value; every entry's index is below
+/// Invariants: `pool[facts[i]] == i` for every stored facts value, and `simple[simple_key(facts[i])]
+/// == i` for those with a key; every entry's index is below
 /// `facts.len()`; `sorted` says whether the ids are strictly increasing; `index`, once built, maps each
 /// id to its last entry (an id inserted twice: the later info counts; sema records each instruction
 /// once).
@@ -1127,6 +1214,23 @@ pub struct InstrTable {
     index: std::sync::OnceLock<FxHashMap<InstrId, u32>>,
     facts: Vec<InstrFacts>,
     pool: FxHashMap<InstrFacts, u32>,
+    /// The pool's entries whose facts have a [`simple_key`] (most: elementary types, no callee, no
+    /// arguments), by that key: found without hashing and comparing whole facts.
+    simple: FxHashMap<u32, u32>,
+}
+
+/// The facts of most instructions in a word: each of the three types absent (0) or elementary (its
+/// index + 1), one byte each; `None` when there is a callee, an argument or another type.
+fn simple_key(f: &InstrFacts) -> Option<u32> {
+    if f.callee.is_some() || !f.args.is_empty() {
+        return None;
+    }
+    let byte = |t: &Option<Type>| match t {
+        None => Some(0),
+        Some(Type::Elementary(e)) => Some(*e as u32 + 1),
+        Some(_) => None,
+    };
+    Some(byte(&f.cr_before)? | byte(&f.cr_after)? << 8 | byte(&f.operand)? << 16)
 }
 
 impl InstrTable {
@@ -1138,6 +1242,19 @@ impl InstrTable {
     }
     /// The index of `facts` in the shared store (stored first if new).
     pub(crate) fn intern(&mut self, facts: InstrFacts) -> u32 {
+        if let Some(key) = simple_key(&facts) {
+            return match self.simple.get(&key) {
+                Some(&ix) => ix,
+                None => {
+                    let ix = self.intern_in_pool(facts);
+                    self.simple.insert(key, ix);
+                    ix
+                }
+            };
+        }
+        self.intern_in_pool(facts)
+    }
+    fn intern_in_pool(&mut self, facts: InstrFacts) -> u32 {
         match self.pool.get(&facts) {
             Some(&ix) => ix,
             None => {
@@ -1516,6 +1633,60 @@ impl Model {
 }
 
 #[cfg(test)]
+mod type_tests {
+    use super::*;
+
+    /// The written-out `Clone` and `PartialEq` of [`Type`]: a clone equals its original, every
+    /// variant differs from every other, and a different field makes a different type.
+    #[test]
+    fn types_clone_and_compare_field_by_field() {
+        let array = |upper: i128, element: Type| Type::Array {
+            dims: vec![Dim { lower: 0, upper }],
+            element: Box::new(element),
+        };
+        let subrange = |upper: i128| Type::Subrange {
+            base: Elementary::Int,
+            lower: Box::new(0),
+            upper: Box::new(upper),
+        };
+        let all = [
+            Type::BOOL,
+            Type::INT,
+            Type::String {
+                wide: false,
+                len: 10,
+            },
+            Type::String {
+                wide: true,
+                len: 10,
+            },
+            Type::String {
+                wide: false,
+                len: 11,
+            },
+            array(3, Type::INT),
+            array(4, Type::INT),
+            array(3, Type::BOOL),
+            Type::Struct(TypeId(0)),
+            Type::Struct(TypeId(1)),
+            Type::Enum(TypeId(0)),
+            subrange(100),
+            subrange(99),
+            Type::Fb(FbType::Standard(StdFb::RTrig)),
+            Type::Fb(FbType::User(PouId(0))),
+            Type::Error,
+        ];
+        for (i, a) in all.iter().enumerate() {
+            assert_eq!(&a.clone(), a);
+            assert_eq!(format!("{:?}", a.clone()), format!("{a:?}"));
+            for (j, b) in all.iter().enumerate() {
+                assert_eq!(a == b, i == j, "{a:?} == {b:?}");
+            }
+        }
+    }
+}
+
+#[cfg(test)]
 mod span_table_tests {
     use super::*;
     use diagnostics::FileId;
@@ -1621,6 +1792,49 @@ mod instr_table_tests {
         // Inserted after the index was built: found through it.
         t.insert(InstrId(5), info(9, Type::INT));
         assert_eq!(t.get(&InstrId(5)).unwrap().cr_after, Some(Type::INT));
+    }
+
+    /// Facts with a small key (elementary or no types, no callee, no arguments) and without one
+    /// (another type, a callee) are each stored once and read back as given; facts differing in any
+    /// one of the three types are different.
+    #[test]
+    fn equal_facts_are_stored_once_with_or_without_a_small_key() {
+        let types = [
+            None,
+            Some(Type::BOOL),
+            Some(Type::INT),
+            Some(Type::String {
+                wide: false,
+                len: 8,
+            }),
+        ];
+        let mut all = Vec::new();
+        for a in &types {
+            for b in &types {
+                for c in &types {
+                    for callee in [None, Some(Callee::Embedded { name: "f".into() })] {
+                        all.push(InstrFacts {
+                            cr_before: a.clone(),
+                            cr_after: b.clone(),
+                            operand: c.clone(),
+                            callee,
+                            args: Vec::new(),
+                        });
+                    }
+                }
+            }
+        }
+        let mut t = InstrTable::default();
+        for round in 0..2 {
+            for (i, f) in all.iter().enumerate() {
+                let id = InstrId(round * all.len() + i);
+                let ix = t.intern(f.clone());
+                t.insert_interned(id, Span::new(diagnostics::FileId(0), i, i), ix);
+                assert_eq!(t.get(&id).unwrap().facts, f, "{f:?}");
+            }
+            assert_eq!(t.distinct_facts(), all.len());
+        }
+        assert!(simple_key(&all[0]).is_some() && simple_key(&all[1]).is_none());
     }
 
     /// In increasing order the table bisects; an id recorded twice answers with the later info.
