@@ -223,3 +223,25 @@ fn wstring_literals_comments_and_latin1_give_no_w1416() {
     assert_eq!(code, Some(0), "{lines:?}");
     assert!(lines.is_empty(), "{lines:?}");
 }
+
+/// `x : UINT AT %MW0 := 20;` (the location after the type): one located E0011 per declaration, no
+/// cascade into the body, and a hint with the IEC order. Before, the hint said only "end each
+/// declaration with `;`".
+#[test]
+fn a_location_after_the_type_is_one_e0011_per_declaration_with_the_iec_order() {
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(fixture("location_after_type.st"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 2, "{stderr}");
+    for (e, at) in errors.iter().zip(["5:24", "6:16"]) {
+        assert!(
+            e.contains(&format!("location_after_type.st:{at}: error[E0011]: expected `;` before `AT` (hint: IEC 61131-3 writes the location between the name and the type: `name AT %MW0 : UINT := 0;`)")),
+            "{stderr}"
+        );
+    }
+}
