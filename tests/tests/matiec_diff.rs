@@ -5,7 +5,7 @@
 //! from `MATIEC_DIFF_FILES` (a `:`-separated list), programs the suite has never seen.
 //! For each program matiec's side is a trace `NAME.matiec.csv` (header `cycle,time_ns,NAME:TYPE,...`,
 //! one row per cycle, values in a canonical form: integers, `%.9g`/`%.17g` reals, TIME in ns, strings
-//! CSV-quoted). With `MATIEC_BIN` (iec2c) and `MATIEC_LIB` (matiec's `lib/` or `lib/C`) set, the trace
+//! CSV-quoted, each byte written as its ISO 8859-1 character in UTF-8, as ladderc's trace does). With `MATIEC_BIN` (iec2c) and `MATIEC_LIB` (matiec's `lib/` or `lib/C`) set, the trace
 //! is made live: iec2c compiles the program, a generated C main runs `config_init__` and then N times
 //! `config_run__(k)` with `__CURRENT_TIME = k * ticktime` (matiec's tick time, from VARIABLES.csv), and
 //! prints every program variable (and every FB member) after each cycle; located variables get their
@@ -435,7 +435,9 @@ fn matiec_main(programs: &[(String, String)], vars: &[MVar]) -> String {
     }
     c.push_str(
         "static void pstr(const STRING *s) {\n    unsigned i;\n    putchar(',');\n    putchar('\"');\n\
-         for (i = 0; i < s->len; i++) {\n        if (s->body[i] == '\"') putchar('\"');\n        putchar(s->body[i]);\n    }\n\
+         for (i = 0; i < s->len; i++) {\n        unsigned char b = (unsigned char)s->body[i];\n\
+         if (b == '\"') putchar('\"');\n        if (b < 0x80) putchar(b);\n\
+         else { putchar(0xC0 | (b >> 6)); putchar(0x80 | (b & 0x3F)); }\n    }\n\
          putchar('\"');\n}\n\nint main(int argc, char **argv) {\n    unsigned long k, n = argc > 1 ? strtoul(argv[1], 0, 10) : 1;\n\
          config_init__();\n    fputs(\"cycle,time_ns\", stdout);\n",
     );

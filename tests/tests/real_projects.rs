@@ -445,3 +445,54 @@ fn tia_portal_scl_exercise_is_one_error_naming_the_dialect() {
         "{errors:?}"
     );
 }
+
+#[test]
+fn openplc_tutorial_xor_and_xnor_ld_follows_both_truth_tables() {
+    // virajdesai0309/OpenPLC_Tutorials (MIT), an OpenPLC Editor LD lesson: OUTPUT_0 := INPUT_0 XOR
+    // INPUT_1 and OUTPUT_1 := INPUT_2 XNOR INPUT_3, each as two contact branches in parallel (issue
+    // #13, sixth round); its task runs every 20 ms, so one scan per 20 ms cycle
+    let mut stimulus = String::new();
+    for k in 0..4 {
+        let (a, b) = ((k >> 1) & 1, k & 1);
+        stimulus.push_str(&format!(
+            "{k},instance0.INPUT_0,{a}\n{k},instance0.INPUT_1,{b}\n\
+             {k},instance0.INPUT_2,{a}\n{k},instance0.INPUT_3,{b}\n"
+        ));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
+    let out = ladderc()
+        .arg("run")
+        .arg(file(
+            "virajdesai0309_OpenPLC_Tutorials_05_XOR_and_XNOR_Gate_plc.xml",
+        ))
+        .args([
+            "--cycles",
+            "4",
+            "--cycle-ms",
+            "20",
+            "--sanitize",
+            "--trace",
+            "-",
+        ])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args([
+            "--watch",
+            "instance0.INPUT_0,instance0.INPUT_1,instance0.OUTPUT_0,instance0.OUTPUT_1",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,instance0.INPUT_0,instance0.INPUT_1,instance0.OUTPUT_0,instance0.OUTPUT_1\n\
+         0,0,0,0,0,1\n1,20,0,1,1,0\n2,40,1,0,1,0\n3,60,1,1,0,1\n"
+    );
+}

@@ -582,13 +582,23 @@ int ladderc_parse_value(ladderc_type t, const char *text, void *out, char *err, 
         return 0;
     }
     case LADDERC_T_STRING: {
-        size_t len = strlen(text);
+        /* UTF-8 text; a STRING holds each character U+0000-U+00FF as one byte (ISO 8859-1) */
+        size_t len = strlen(text), count = 0, i;
+        uint16_t units[LADDERC_STRING_CAP];
+        char bytes[LADDERC_STRING_CAP];
         if (len >= 2 && (text[0] == '\'' || text[0] == '"') && text[len - 1] == text[0]) {
             text++;
             len -= 2;
         }
-        if (len > LADDERC_STRING_CAP) return fail(err, errlen, "string longer than 254 bytes", text);
-        ladderc_string_set((IEC_STRING *)out, text, len, LADDERC_STRING_CAP);
+        if (utf8_to_utf16(text, len, units, LADDERC_STRING_CAP, &count))
+            return fail(err, errlen, "expected UTF-8 text of at most 254 characters", text);
+        for (i = 0; i < count; i++) {
+            if (units[i] > 0xFF)
+                return fail(err, errlen,
+                            "a STRING holds the characters U+0000-U+00FF, one byte each; use a WSTRING", text);
+            bytes[i] = (char)units[i];
+        }
+        ladderc_string_set((IEC_STRING *)out, bytes, count, LADDERC_STRING_CAP);
         return 0;
     }
     case LADDERC_T_WSTRING: {
@@ -789,14 +799,16 @@ void ladderc_format_value(ladderc_type t, const void *value, char *buf, size_t l
         break;
     }
     case LADDERC_T_STRING: {
-        /* CSV field: always quoted, quotes doubled. */
+        /* CSV field: always quoted, quotes doubled; each byte is its ISO 8859-1 character, in UTF-8. */
         const IEC_STRING *s = (const IEC_STRING *)value;
         size_t o = 0, i;
         if (len < 3) { if (len) buf[0] = '\0'; break; }
         buf[o++] = '"';
-        for (i = 0; i < s->len && o + 3 < len; i++) {
-            if (s->data[i] == '"') buf[o++] = '"';
-            buf[o++] = s->data[i];
+        for (i = 0; i < s->len && o + 4 < len; i++) {
+            unsigned char c = (unsigned char)s->data[i];
+            if (c == '"') buf[o++] = '"';
+            if (c < 0x80) buf[o++] = (char)c;
+            else { buf[o++] = (char)(0xC0 | (c >> 6)); buf[o++] = (char)(0x80 | (c & 0x3F)); }
         }
         buf[o++] = '"';
         buf[o] = '\0';
@@ -844,48 +856,12 @@ IEC_STRING ladderc_str_of(int type, const void *value) {
     return ladderc_str_lit(buf, strlen(buf));
 }
 
-/* One UTF-8 sequence at t[0..n): its code point and length, or 0 when malformed (overlong,
- * surrogate, beyond U+10FFFF, cut short). */
-static int utf8_one(const unsigned char *t, size_t n, uint32_t *cp) {
-    static const uint32_t min[4] = {0, 0x80, 0x800, 0x10000};
-    int more, j;
-    uint32_t c = t[0];
-    if (c < 0x80) { *cp = c; return 1; }
-    if ((c & 0xE0) == 0xC0) { c &= 0x1Fu; more = 1; }
-    else if ((c & 0xF0) == 0xE0) { c &= 0x0Fu; more = 2; }
-    else if ((c & 0xF8) == 0xF0) { c &= 0x07u; more = 3; }
-    else return 0;
-    if ((size_t)more >= n) return 0;
-    for (j = 1; j <= more; j++) {
-        if ((t[j] & 0xC0) != 0x80) return 0;
-        c = (c << 6) | (t[j] & 0x3Fu);
-    }
-    if (c < min[more] || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return 0;
-    *cp = c;
-    return more + 1;
-}
-
 IEC_WSTRING ladderc_wstr_of_str(IEC_STRING s) {
     IEC_WSTRING w;
-    size_t i = 0, n = s.len > LADDERC_STRING_CAP ? LADDERC_STRING_CAP : s.len;
-    uint16_t k = 0;
-    const unsigned char *t = (const unsigned char *)s.data;
-    while (i < n) {
-        uint32_t cp;
-        int used = utf8_one(t + i, n - i, &cp);
-        if (!used) { cp = t[i]; used = 1; } /* a byte that is no UTF-8: its Latin-1 character */
-        if (k + (cp >= 0x10000 ? 2 : 1) > LADDERC_STRING_CAP) { ladderc_errors |= LADDERC_ERR_STRING; break; }
-        if (cp >= 0x10000) {
-            cp -= 0x10000;
-            w.data[k++] = (uint16_t)(0xD800 + (cp >> 10));
-            w.data[k++] = (uint16_t)(0xDC00 + (cp & 0x3FF));
-        } else {
-            w.data[k++] = (uint16_t)cp;
-        }
-        i += (size_t)used;
-    }
-    w.data[k] = 0;
-    w.len = k;
+    uint16_t i, n = s.len > LADDERC_STRING_CAP ? LADDERC_STRING_CAP : s.len;
+    for (i = 0; i < n; i++) w.data[i] = (uint16_t)(unsigned char)s.data[i]; /* ISO 8859-1 */
+    w.data[n] = 0;
+    w.len = n;
     return w;
 }
 
@@ -893,27 +869,15 @@ IEC_STRING ladderc_str_of_wstr(IEC_WSTRING w) {
     IEC_STRING s;
     uint16_t i, o = 0, n = w.len > LADDERC_STRING_CAP ? LADDERC_STRING_CAP : w.len;
     for (i = 0; i < n; i++) {
-        uint32_t cp = w.data[i];
-        unsigned need;
-        if (cp >= 0xD800 && cp <= 0xDBFF && i + 1 < n && w.data[i + 1] >= 0xDC00 && w.data[i + 1] <= 0xDFFF) {
-            cp = 0x10000 + ((cp - 0xD800) << 10) + (uint32_t)(w.data[i + 1] - 0xDC00);
-            i++;
-        } else if (cp >= 0xD800 && cp <= 0xDFFF) {
-            ladderc_errors |= LADDERC_ERR_RANGE; /* an unpaired surrogate is no character */
-            cp = '?';
+        uint16_t u = w.data[i];
+        if (u <= 0xFF) {
+            s.data[o++] = (char)u;
+            continue;
         }
-        need = cp < 0x80 ? 1u : cp < 0x800 ? 2u : cp < 0x10000 ? 3u : 4u;
-        if (o + need > LADDERC_STRING_CAP) { ladderc_errors |= LADDERC_ERR_STRING; break; }
-        if (need == 1) s.data[o++] = (char)cp;
-        else if (need == 2) {
-            s.data[o++] = (char)(0xC0 | (cp >> 6)); s.data[o++] = (char)(0x80 | (cp & 0x3F));
-        } else if (need == 3) {
-            s.data[o++] = (char)(0xE0 | (cp >> 12)); s.data[o++] = (char)(0x80 | ((cp >> 6) & 0x3F));
-            s.data[o++] = (char)(0x80 | (cp & 0x3F));
-        } else {
-            s.data[o++] = (char)(0xF0 | (cp >> 18)); s.data[o++] = (char)(0x80 | ((cp >> 12) & 0x3F));
-            s.data[o++] = (char)(0x80 | ((cp >> 6) & 0x3F)); s.data[o++] = (char)(0x80 | (cp & 0x3F));
-        }
+        /* no single byte holds it: '?', and LADDERC_ERR_RANGE; a surrogate pair is one character */
+        if (u >= 0xD800 && u <= 0xDBFF && i + 1 < n && w.data[i + 1] >= 0xDC00 && w.data[i + 1] <= 0xDFFF) i++;
+        ladderc_errors |= LADDERC_ERR_RANGE;
+        s.data[o++] = '?';
     }
     s.data[o] = '\0';
     s.len = o;

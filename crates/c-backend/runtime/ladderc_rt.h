@@ -311,11 +311,10 @@ IEC_WSTRING ladderc_wstr_cap(IEC_WSTRING s, unsigned cap);
 int ladderc_wstr_cmpv(IEC_WSTRING a, IEC_WSTRING b);
 /* *_TO_STRING: the value's text as the trace prints it (BOOL TRUE/FALSE, T#..., shortest REAL). */
 IEC_STRING ladderc_str_of(int type, const void *value);
-/* STRING_TO_WSTRING: a STRING holds UTF-8 text (as ladderc stores literals and reads stimuli); each
- * UTF-8 character becomes one character (two UTF-16 units beyond U+FFFF), a byte that is not UTF-8 the
- * Latin-1 character of its code. WSTRING_TO_STRING: UTF-8 of the characters; an unpaired surrogate
- * becomes '?' and sets LADDERC_ERR_RANGE. Beyond the capacity: cut at a character, LADDERC_ERR_STRING.
- * *_TO_WSTRING and WSTRING_TO_* go through STRING. */
+/* A STRING holds single-byte characters, ISO 8859-1 (U+0000-U+00FF, one byte each; literals are
+ * stored so and stimuli read so). STRING_TO_WSTRING: each byte becomes the character of its code.
+ * WSTRING_TO_STRING: each character U+0000-U+00FF its byte; any other becomes '?' (a surrogate pair
+ * one '?') and sets LADDERC_ERR_RANGE. *_TO_WSTRING and WSTRING_TO_* go through STRING. */
 IEC_WSTRING ladderc_wstr_of_str(IEC_STRING s);
 IEC_STRING ladderc_str_of_wstr(IEC_WSTRING w);
 /* STRING_TO_*: text after trimming spaces; a malformed text gives 0 (FALSE) and LADDERC_ERR_RANGE. */

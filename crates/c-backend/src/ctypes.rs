@@ -308,12 +308,22 @@ pub fn enum_value(model: &Model, ty: il_frontend::sema::TypeId, index: usize) ->
     }
 }
 
+/// The bytes of a STRING's text: one per character, its ISO 8859-1 code (U+0000-U+00FF, as CODESYS
+/// stores a STRING); a character beyond U+00FF (sema's W1416) is `?`.
+pub fn single_bytes(value: &str) -> Vec<u8> {
+    value
+        .chars()
+        .map(|c| u8::try_from(u32::from(c)).unwrap_or(b'?'))
+        .collect()
+}
+
 /// A string literal as an `IEC_STRING` value expression.
 pub fn string_value(value: &str) -> String {
+    let bytes = single_bytes(value);
     format!(
         "ladderc_str_lit({}, {})",
-        mangle::c_string(value.as_bytes()),
-        value.len()
+        mangle::c_string(&bytes),
+        bytes.len()
     )
 }
 

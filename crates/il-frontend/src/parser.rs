@@ -1159,10 +1159,13 @@ impl<'s> Ctx<'s> {
                 "expected an instruction, a label or a declaration block".to_string(),
             )
         } else if semi_expected && !eol_expected && tok != Tok::Semi {
-            (
-                format!("expected `;` before {found}"),
-                "end each declaration with `;`".to_string(),
-            )
+            let hint = if text.eq_ignore_ascii_case("AT") {
+                // `x : UINT AT %MW0;`: the location written after the type
+                "IEC 61131-3 writes the location between the name and the type: `name AT %MW0 : UINT := 0;`"
+            } else {
+                "end each declaration with `;`"
+            };
+            (format!("expected `;` before {found}"), hint.to_string())
         } else if tok == Tok::Eol {
             (
                 format!("unexpected end of line; expected {expect}"),

@@ -188,11 +188,12 @@ impl Gen<'_> {
                 }
             }
             (Type::String { wide: false, .. }, Some(ConstValue::String { value, .. })) => {
+                let bytes = ctypes::single_bytes(value);
                 let _ = writeln!(
                     out,
                     "{pad}ladderc_string_set(&{lv}, {}, {}, {});",
-                    mangle::c_string(value.as_bytes()),
-                    value.len(),
+                    mangle::c_string(&bytes),
+                    bytes.len(),
                     ctypes::string_cap(ty)
                 );
             }

@@ -1206,6 +1206,7 @@ impl Analyzer<'_> {
         let tn = self.type_name(ty);
         match op {
             Operand::Literal(lit) => {
+                self.check_single_byte(lit);
                 let lt = match literal_type(lit) {
                     Ok(t) => t,
                     Err(e) => {

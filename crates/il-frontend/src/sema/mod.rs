@@ -20,7 +20,7 @@ pub use decls::reserved_name;
 pub use model::*;
 
 use crate::ast::CompilationUnit;
-use diagnostics::{Code, Diagnostic, Diagnostics};
+use diagnostics::{code, Code, Diagnostic, Diagnostics};
 use std::collections::HashMap;
 
 /// Analyses `units` together and returns the resolved model; problems go to `diags`.
@@ -40,6 +40,7 @@ pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
         undeclared_at: std::collections::HashSet::new(),
         internal_accessed: std::collections::HashSet::new(),
         operator_functions: [None; 32],
+        wide_chars_at: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
     a.check_containment();
@@ -83,6 +84,9 @@ pub(crate) struct Analyzer<'d> {
     /// The standard function of each simple operator (`ADD` -> ADD), indexed by `Op as usize`, looked
     /// up on first use ([`stdlib::function`] searches the catalogue by name).
     pub(crate) operator_functions: [Option<Option<&'static stdlib::StdFunction>>; 32],
+    /// Where W1416 (a STRING literal with a character beyond U+00FF) was reported (file, start): a
+    /// literal read twice (an ST statement lowered to several IL instructions) is reported once.
+    pub(crate) wide_chars_at: std::collections::HashSet<(crate::FileId, u32)>,
 }
 
 impl Analyzer<'_> {
@@ -109,6 +113,36 @@ impl Analyzer<'_> {
             sink: self.diags,
             d,
         }
+    }
+    /// W1416 when the single-byte STRING literal `lit` holds a character beyond U+00FF (stored as
+    /// `?`, as the C holds a STRING's characters one byte each, ISO 8859-1); once per literal.
+    pub(crate) fn check_single_byte(&mut self, lit: &crate::ast::Literal) {
+        let crate::ast::LiteralKind::String { wide: false, value } = &lit.kind else {
+            return;
+        };
+        let Some((first, count)) = typing::beyond_single_byte(value) else {
+            return;
+        };
+        if self.silent || !self.wide_chars_at.insert((lit.span.file, lit.span.start)) {
+            return;
+        }
+        let message = if count > 1 {
+            format!(
+                "`{first}` (U+{:04X}) and {} more characters are not single-byte characters (a STRING holds ISO 8859-1, U+0000-U+00FF): each is stored as `?`",
+                u32::from(first),
+                count - 1
+            )
+        } else {
+            format!(
+                "`{first}` (U+{:04X}) is not a single-byte character (a STRING holds ISO 8859-1, U+0000-U+00FF): it is stored as `?`",
+                u32::from(first)
+            )
+        };
+        drop(
+            self.warning(code::W1416, lit.span, message)
+            .label("STRING literal")
+            .hint("write the text as a WSTRING literal in double quotes (\"...\") into a WSTRING variable, or keep STRING text to the characters U+0000-U+00FF ($hh escapes)"),
+        );
     }
     pub(crate) fn type_name(&self, ty: &Type) -> String {
         self.model.type_name(ty)

@@ -64,6 +64,7 @@ impl Body<'_, '_> {
     }
 
     fn literal(&mut self, l: &ast::Literal) -> Ty {
+        self.a.check_single_byte(l);
         match literal_type(l) {
             Ok(LitType::Known(t)) => Ty::Known(t),
             Ok(LitType::Int(v)) => Ty::Lit(self.lits.new_int(v, l.span)),

@@ -200,6 +200,14 @@ pub fn wider_for(v: i128) -> &'static str {
     "LREAL"
 }
 
+/// The first character of a single-byte STRING's text beyond U+00FF (ISO 8859-1 holds U+0000-U+00FF,
+/// one byte each) and how many such characters the text holds; `None` when every one fits.
+pub fn beyond_single_byte(text: &str) -> Option<(char, usize)> {
+    let mut wide = text.chars().filter(|&c| u32::from(c) > 0xFF);
+    let first = wide.next()?;
+    Some((first, 1 + wide.count()))
+}
+
 /// The constant value of a literal, converted to `ty` where the literal is an untyped number.
 pub fn literal_value(lit: &Literal, ty: &Type) -> ConstValue {
     match &lit.kind {
