@@ -137,7 +137,7 @@ impl<'a> Element<'a> {
         self.extra.map_or(&[], |x| x.decoded_attrs)
     }
     /// An attribute's value (entities decoded), by local name.
-    pub fn attr(&self, name: &str) -> Option<&str> {
+    pub fn attr(&self, name: &str) -> Option<&'a str> {
         // (No `str::contains(name)` pre-check: its substring search costs more than scanning a
         // start tag's few attributes.)
         let raw = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
@@ -152,7 +152,7 @@ impl<'a> Element<'a> {
     }
     /// The values of several attributes (entities decoded) in one pass over the start tag: slot `k` holds
     /// what [`Element::attr`] would give for `names[k]` (the first attribute of that local name).
-    pub fn attrs<const N: usize>(&self, names: [&str; N]) -> [Option<&str>; N] {
+    pub fn attrs<const N: usize>(&self, names: [&str; N]) -> [Option<&'a str>; N] {
         let mut out = [None; N];
         // An empty name is never found (every scanned name has a character): it does not count.
         let mut left = names.iter().filter(|n| !n.is_empty()).count();
@@ -221,7 +221,7 @@ impl<'a> Element<'a> {
         self.text_ref().into_owned()
     }
     /// The same text as [`Element::text`], borrowed when it is one segment (the usual case).
-    pub fn text_ref(&self) -> Cow<'_, str> {
+    pub fn text_ref(&self) -> Cow<'a, str> {
         match self.segments() {
             [] => Cow::Borrowed(""),
             [one] => Cow::Borrowed(one.text),
