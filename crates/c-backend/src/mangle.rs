@@ -169,6 +169,14 @@ pub fn is_valid_embedded_name(name: &str) -> bool {
 pub fn c_string(bytes: &[u8]) -> String {
     let mut s = String::with_capacity(bytes.len() * 2 + 2);
     s.push('"');
+    push_c_string_body(&mut s, bytes);
+    s.push('"');
+    s
+}
+
+/// Appends the inside of [`c_string`] of `bytes` (without the quotes) to `s`: the text of a string
+/// literal written in pieces.
+pub fn push_c_string_body(s: &mut String, bytes: &[u8]) {
     for &b in bytes {
         if b.is_ascii_alphanumeric() || b" ._,[]%#:-+=".contains(&b) {
             s.push(b as char);
@@ -179,8 +187,6 @@ pub fn c_string(bytes: &[u8]) -> String {
             s.push(char::from(b'0' + (b & 7)));
         }
     }
-    s.push('"');
-    s
 }
 
 #[cfg(test)]
@@ -237,6 +243,12 @@ mod tests {
         }
         want.push('"');
         assert_eq!(c_string(&all), want);
+        // Written in two pieces, the same text inside the quotes.
+        let mut pieces = String::from("\"");
+        push_c_string_body(&mut pieces, &all[..100]);
+        push_c_string_body(&mut pieces, &all[100..]);
+        pieces.push('"');
+        assert_eq!(pieces, want);
     }
 
     #[test]
