@@ -694,6 +694,8 @@ impl<'a> Gen<'a> {
         // init
         let _ = writeln!(c, "void {sname}_INIT({sname} *self) {{");
         c.push_str("    memset(self, 0, sizeof *self);\n");
+        // `self->v_<name>`, built in one buffer that keeps its room
+        let mut lv = String::new();
         for v in &p.vars {
             if matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp) {
                 continue;
@@ -703,7 +705,9 @@ impl<'a> Gen<'a> {
                 self.init_located(c, v);
                 continue;
             }
-            let lv = format!("self->{}", mangle::var(&v.name));
+            lv.clear();
+            lv.push_str("self->v_");
+            mangle::push_core(&mut lv, &v.name);
             self.init_value(c, 1, &lv, &v.ty, v.init.as_ref(), v.span);
         }
         c.push_str("}\n\n");
