@@ -255,14 +255,24 @@ pub struct Graph<'x> {
     pub continuation_sources: HashMap<usize, Vec<usize>>,
 }
 
+/// `str::trim` of an attribute value or a text: the value itself when it starts and ends with a
+/// printable ASCII character (nearly always), without `trim`'s Unicode checks.
+fn trim(s: &str) -> &str {
+    match s.as_bytes() {
+        [first, .., last] if (0x21..0x7f).contains(first) && (0x21..0x7f).contains(last) => s,
+        [one] if (0x21..0x7f).contains(one) => s,
+        _ => s.trim(),
+    }
+}
+
 /// A boolean attribute's value (`true` or `1`, surrounding blanks ignored).
 fn truthy(v: Option<&str>) -> bool {
-    v.is_some_and(|v| v.trim() == "true" || v.trim() == "1")
+    v.is_some_and(|v| trim(v) == "true" || trim(v) == "1")
 }
 
 /// The `edge` attribute's value.
 fn edge_of(v: Option<&str>) -> Edge {
-    match v.map(str::trim) {
+    match v.map(trim) {
         Some("rising") => Edge::Rising,
         Some("falling") => Edge::Falling,
         _ => Edge::None,
@@ -272,23 +282,16 @@ fn edge_of(v: Option<&str>) -> Edge {
 /// The wires of one `<connectionPointIn>` (none without one), in their final list: each wire's
 /// [`Wire::from`] holds, until [`read`] resolves it, the index in `refs` of its `refLocalId` (borrowed
 /// from the XML text). One list per input, built once: no second list of raw wires per node.
-fn raw_wires<'x>(
-    ctx: &Ctx,
-    point: Option<&Element<'x>>,
-    refs: &mut Vec<&'x str>,
-) -> Vec<Wire<'x>> {
+fn raw_wires<'x>(ctx: &Ctx, point: Option<&Element<'x>>, refs: &mut Vec<&'x str>) -> Vec<Wire<'x>> {
     point
         .map(|p| {
             p.children_named("connection")
                 .map(|c| {
                     let [ref_id, pin] = c.attrs(["refLocalId", "formalParameter"]);
-                    refs.push(ref_id.unwrap_or_default().trim());
+                    refs.push(trim(ref_id.unwrap_or_default()));
                     Wire {
                         from: refs.len() - 1,
-                        pin: pin
-                            .map(str::trim)
-                            .filter(|s| !s.is_empty())
-                            .map(Cow::Borrowed),
+                        pin: pin.map(trim).filter(|s| !s.is_empty()).map(Cow::Borrowed),
                         span: ctx.tag(c),
                     }
                 })
@@ -299,7 +302,7 @@ fn raw_wires<'x>(
 
 /// A `<position>` coordinate in the editor's units, rounded toward zero (0 when absent or not a number).
 fn coord(v: Option<&str>) -> i64 {
-    let Some(v) = v.map(str::trim) else { return 0 };
+    let Some(v) = v.map(trim) else { return 0 };
     // Short integers (the usual case) are exact as f64 too: the same value without the float parser.
     if v.len() <= 15 && v.bytes().all(|b| b.is_ascii_digit()) && !v.is_empty() {
         return v.parse().unwrap_or(0);
@@ -311,8 +314,8 @@ fn text_of<'x>(ctx: &Ctx, e: &Element<'x>, child: &str) -> (Text<'x>, Span) {
     match e.child(child) {
         Some(c) => (
             match c.text_ref() {
-                Cow::Borrowed(t) => Cow::Borrowed(t.trim()),
-                Cow::Owned(t) => Cow::Owned(t.trim().to_string()),
+                Cow::Borrowed(t) => Cow::Borrowed(trim(t)),
+                Cow::Owned(t) => Cow::Owned(trim(&t).to_string()),
             },
             ctx.text_span(c),
         ),
@@ -369,7 +372,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                     var,
                     var_span,
                     negated: truthy(a),
-                    storage: match c.map(str::trim) {
+                    storage: match c.map(trim) {
                         Some("set") => Storage::Set,
                         Some("reset") => Storage::Reset,
                         _ => Storage::None,
@@ -403,17 +406,17 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                 }
             }
             "connector" => Kind::Connector {
-                name: Cow::Borrowed(a.unwrap_or_default().trim()),
+                name: Cow::Borrowed(trim(a.unwrap_or_default())),
             },
             "continuation" => Kind::Continuation {
-                name: Cow::Borrowed(a.unwrap_or_default().trim()),
+                name: Cow::Borrowed(trim(a.unwrap_or_default())),
             },
             "jump" => Kind::Jump {
-                label: Cow::Borrowed(a.unwrap_or_default().trim()),
+                label: Cow::Borrowed(trim(a.unwrap_or_default())),
                 label_span: ctx.attr_span(e, "label"),
             },
             "label" => Kind::Label {
-                label: Cow::Borrowed(a.unwrap_or_default().trim()),
+                label: Cow::Borrowed(trim(a.unwrap_or_default())),
                 label_span: ctx.attr_span(e, "label"),
             },
             "return" => Kind::Return,
@@ -431,7 +434,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                         let [formal, negated, edge] =
                             v.attrs(["formalParameter", "negated", "edge"]);
                         inputs.push(InPin {
-                            name: Cow::Borrowed(formal.unwrap_or_default().trim()),
+                            name: Cow::Borrowed(trim(formal.unwrap_or_default())),
                             negated: truthy(negated),
                             edge: edge_of(edge),
                             wires,
@@ -447,15 +450,15 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                 {
                     let [formal, negated] = v.attrs(["formalParameter", "negated"]);
                     outputs.push(OutPin {
-                        name: Cow::Borrowed(formal.unwrap_or_default().trim()),
+                        name: Cow::Borrowed(trim(formal.unwrap_or_default())),
                         negated: truthy(negated),
                     });
                 }
                 let instance = b
-                    .map(str::trim)
+                    .map(trim)
                     .filter(|s| !s.is_empty())
                     .map(|s| (Cow::Borrowed(s), ctx.attr_span(e, "instanceName")));
-                let type_name: Text = Cow::Borrowed(a.unwrap_or_default().trim());
+                let type_name: Text = Cow::Borrowed(trim(a.unwrap_or_default()));
                 // CODESYS's EXECUTE box runs the ST code of its vendor data
                 let code = if type_name.eq_ignore_ascii_case("EXECUTE") {
                     e.children_named("addData")
@@ -492,7 +495,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                 continue;
             }
         };
-        let Some(id) = local_id.map(str::trim).filter(|s| !s.is_empty()) else {
+        let Some(id) = local_id.map(trim).filter(|s| !s.is_empty()) else {
             ctx.error(code::E3013, span, format!("<{}> without a localId", e.name));
             continue;
         };
@@ -526,7 +529,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
             num: id.parse().unwrap_or(u64::MAX),
             kind,
             span,
-            exec_order: exec_order.and_then(|v| v.trim().parse().ok()),
+            exec_order: exec_order.and_then(|v| trim(v).parse().ok()),
             x: coord(x),
             y: coord(y),
             input,
@@ -734,6 +737,31 @@ pub fn cycles<S: std::hash::BuildHasher>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn trim_is_str_trim() {
+        for s in [
+            "",
+            "x",
+            " x",
+            "x ",
+            " x ",
+            "\u{b}x",
+            "x\u{b}",
+            "\u{a0}x",
+            "x\u{2003}",
+            "\u{e9}",
+            " \u{e9} ",
+            "ab",
+            "a b",
+            "\t1\n",
+            "~",
+            "\u{7f}",
+            "\u{7f}a",
+        ] {
+            assert_eq!(trim(s), s.trim(), "{s:?}");
+        }
+    }
 
     #[test]
     fn coordinates_round_toward_zero_like_the_float_reading() {

@@ -1486,9 +1486,21 @@ mod tests {
             let mixed: String = k
                 .chars()
                 .enumerate()
-                .map(|(i, c)| if i % 2 == 0 { c.to_ascii_lowercase() } else { c })
+                .map(|(i, c)| {
+                    if i % 2 == 0 {
+                        c.to_ascii_lowercase()
+                    } else {
+                        c
+                    }
+                })
                 .collect();
-            names.extend([k.to_string(), lower.clone(), mixed, format!("{k}1"), format!("x{lower}")]);
+            names.extend([
+                k.to_string(),
+                lower.clone(),
+                mixed,
+                format!("{k}1"),
+                format!("x{lower}"),
+            ]);
             names.push(k[..k.len() - 1].to_string());
         }
         for n in &names {
