@@ -176,30 +176,42 @@ pub fn std_fb(fb: StdFb) -> (&'static str, &'static [(&'static str, Elementary, 
 
 /// The C base type of `ty` (arrays: the element's), or `None` for `Type::Error`.
 pub fn base(model: &Model, ty: &Type) -> Option<String> {
-    Some(match ty {
-        Type::Elementary(e) | Type::Subrange { base: e, .. } => elementary(*e).to_string(),
-        Type::String { wide: false, .. } => "IEC_STRING".into(),
-        Type::String { wide: true, .. } => "IEC_WSTRING".into(),
-        Type::Array { element, .. } => return base(model, element),
-        Type::Struct(id) => mangle::user_type(&model.user_type(*id).name),
-        Type::Enum(_) => "IEC_DINT".into(),
-        Type::Fb(FbType::Standard(f)) => std_fb(*f).0.to_string(),
-        Type::Fb(FbType::User(id)) => mangle::fb(&model.pou(*id).name),
-        Type::Error => return None,
-    })
+    let mut s = String::new();
+    push_base(model, ty, &mut s).then_some(s)
+}
+
+/// Appends [`base`] of `ty` to `out`; `false` (nothing appended) where `base` is `None`.
+pub fn push_base(model: &Model, ty: &Type, out: &mut String) -> bool {
+    match ty {
+        Type::Elementary(e) | Type::Subrange { base: e, .. } => out.push_str(elementary(*e)),
+        Type::String { wide: false, .. } => out.push_str("IEC_STRING"),
+        Type::String { wide: true, .. } => out.push_str("IEC_WSTRING"),
+        Type::Array { element, .. } => return push_base(model, element, out),
+        Type::Struct(id) => out.push_str(&mangle::user_type(&model.user_type(*id).name)),
+        Type::Enum(_) => out.push_str("IEC_DINT"),
+        Type::Fb(FbType::Standard(f)) => out.push_str(std_fb(*f).0),
+        Type::Fb(FbType::User(id)) => out.push_str(&mangle::fb(&model.pou(*id).name)),
+        Type::Error => return false,
+    }
+    true
 }
 
 /// `[n1][n2]` for arrays (nested arrays flatten into more dimensions), empty otherwise.
 pub fn dims(ty: &Type) -> String {
     let mut s = String::new();
+    push_dims(ty, &mut s);
+    s
+}
+
+/// Appends [`dims`] of `ty` to `out`.
+pub fn push_dims(ty: &Type, out: &mut String) {
     let mut t = ty;
     while let Type::Array { dims, element } = t {
         for d in dims {
-            s.push_str(&format!("[{}]", d.len().max(1)));
+            out.push_str(&format!("[{}]", d.len().max(1)));
         }
         t = element;
     }
-    s
 }
 
 /// A declaration `T name[dims]` (without the semicolon).

@@ -169,18 +169,47 @@ pub fn is_valid_embedded_name(name: &str) -> bool {
 pub fn c_string(bytes: &[u8]) -> String {
     let mut s = String::with_capacity(bytes.len() * 2 + 2);
     s.push('"');
-    for &b in bytes {
-        if b.is_ascii_alphanumeric() || b" ._,[]%#:-+=".contains(&b) {
-            s.push(b as char);
-        } else {
-            s.push('\\');
-            s.push(char::from(b'0' + (b >> 6)));
-            s.push(char::from(b'0' + ((b >> 3) & 7)));
-            s.push(char::from(b'0' + (b & 7)));
-        }
-    }
+    push_c_string_body(&mut s, bytes);
     s.push('"');
     s
+}
+
+/// Appends the inside of [`c_string`] of `bytes` (without the quotes) to `s`: the text of a string
+/// literal written in pieces.
+pub fn push_c_string_body(s: &mut String, bytes: &[u8]) {
+    /// The bytes written as they are.
+    static PLAIN: [bool; 256] = {
+        let mut t = [false; 256];
+        let mut b = 0;
+        while b < 256 {
+            t[b] = (b as u8).is_ascii_alphanumeric();
+            b += 1;
+        }
+        let extra = b" ._,[]%#:-+=";
+        let mut i = 0;
+        while i < extra.len() {
+            t[extra[i] as usize] = true;
+            i += 1;
+        }
+        t
+    };
+    // Runs of plain bytes (ASCII) are copied whole; the rest is escaped byte by byte.
+    let mut rest = bytes;
+    while !rest.is_empty() {
+        let n = rest
+            .iter()
+            .position(|&b| !PLAIN[b as usize])
+            .unwrap_or(rest.len());
+        if let Ok(run) = std::str::from_utf8(&rest[..n]) {
+            s.push_str(run);
+        }
+        let Some(&b) = rest.get(n) else { break };
+        rest = &rest[n + 1..];
+        s.push('\\');
+        s.push(char::from(b'0' + (b >> 6)));
+        s.push(char::from(b'0' + ((b >> 3) & 7)));
+        s.push(char::from(b'0' + (b & 7)));
+    }
 }
 
 #[cfg(test)]
@@ -237,6 +266,12 @@ mod tests {
         }
         want.push('"');
         assert_eq!(c_string(&all), want);
+        // Written in two pieces, the same text inside the quotes.
+        let mut pieces = String::from("\"");
+        push_c_string_body(&mut pieces, &all[..100]);
+        push_c_string_body(&mut pieces, &all[100..]);
+        pieces.push('"');
+        assert_eq!(pieces, want);
     }
 
     #[test]

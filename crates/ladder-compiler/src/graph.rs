@@ -14,7 +14,12 @@ use crate::context::Ctx;
 use crate::xml::Element;
 use diagnostics::{code, Diagnostic, Span};
 use rustc_hash::FxHashMap;
+use std::borrow::Cow;
 use std::collections::HashMap;
+
+/// A name or text of the graph: borrowed from the XML text (no allocation per element), owned only
+/// where it was decoded (entities, several text pieces) or made up (SFC conditions).
+pub type Text<'x> = Cow<'x, str>;
 
 /// The `edge` attribute of a contact, coil or block pin (transition-sensing elements, IEC 61131-3 4.2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -42,28 +47,28 @@ pub enum Storage {
 
 /// One wire end: the source node and, for blocks, the source output pin.
 #[derive(Debug, Clone)]
-pub struct Wire {
+pub struct Wire<'x> {
     /// Index in [`Graph::nodes`] of the element the wire comes from.
     pub from: usize,
     /// The source block's output pin (`formalParameter` of the `<connection>`); `None` for a single-output
     /// element.
-    pub pin: Option<String>,
+    pub pin: Option<Text<'x>>,
     /// The `<connection>` element.
     pub span: Span,
 }
 
 /// A block input (or in-out) pin.
 #[derive(Debug, Clone)]
-pub struct InPin {
+pub struct InPin<'x> {
     /// The pin's formal parameter name (`IN`, `PT`, `EN`).
-    pub name: String,
+    pub name: Text<'x>,
     /// `negated="true"`: the pin inverts the value (a circle on the pin).
     pub negated: bool,
     /// Edge detection on the pin: with `edge="rising"` (`"falling"`) the block sees TRUE only in the scan
     /// in which the wired value rises (falls), through a hidden R_TRIG (F_TRIG).
     pub edge: Edge,
     /// The wires into the pin (OR-combined when several, as in LD).
-    pub wires: Vec<Wire>,
+    pub wires: Vec<Wire<'x>>,
     /// The pin's `<variable>` element.
     pub span: Span,
     /// Declared under `<inOutVariables>`: the pin is a VAR_IN_OUT of the block.
@@ -72,16 +77,16 @@ pub struct InPin {
 
 /// A block output pin.
 #[derive(Debug, Clone)]
-pub struct OutPin {
+pub struct OutPin<'x> {
     /// The pin's formal parameter name (`Q`, `ET`, `OUT`, `ENO`).
-    pub name: String,
+    pub name: Text<'x>,
     /// `negated="true"`: the pin inverts the value.
     pub negated: bool,
 }
 
 /// What a graphical element is (PLCopen TC6 `<ld>`/`<fbd>`/common elements).
 #[derive(Debug, Clone)]
-pub enum Kind {
+pub enum Kind<'x> {
     /// `<leftPowerRail>`: the source of power flow (TRUE) at the left of a rung.
     LeftRail,
     /// `<rightPowerRail>`: the right end of a rung; nothing is computed there.
@@ -90,7 +95,7 @@ pub enum Kind {
     /// join).
     Contact {
         /// The variable read, as written in `<variable>`.
-        var: String,
+        var: Text<'x>,
         /// The `<variable>` text.
         var_span: Span,
         /// `negated="true"`: a normally closed contact `-|/|-`.
@@ -101,7 +106,7 @@ pub enum Kind {
     /// `<coil>`: writes the power flow into a BOOL variable.
     Coil {
         /// The variable written, as written in `<variable>`.
-        var: String,
+        var: Text<'x>,
         /// The `<variable>` text.
         var_span: Span,
         /// `negated="true"`: a negated coil `-(/)-`.
@@ -113,11 +118,11 @@ pub enum Kind {
     },
     /// `<block>`: a function, function block instance or operator box (boxed: inline, its data made
     /// every `Node` 232 bytes, and a graph holds one `Node` per element).
-    Block(Box<Block>),
+    Block(Box<Block<'x>>),
     /// `<inVariable>`: an FBD variable or constant read into the network.
     InVar {
         /// The `<expression>` text: a variable, a field, a constant (`T#5s`, `16#FF`).
-        expr: String,
+        expr: Text<'x>,
         /// The `<expression>` text.
         expr_span: Span,
         /// `negated="true"`: the value is inverted.
@@ -126,7 +131,7 @@ pub enum Kind {
     /// `<outVariable>`: an FBD variable written from the network.
     OutVar {
         /// The `<expression>` text: the variable written.
-        expr: String,
+        expr: Text<'x>,
         /// The `<expression>` text.
         expr_span: Span,
         /// `negated="true"`: the inverted value is written.
@@ -135,7 +140,7 @@ pub enum Kind {
     /// `<inOutVariable>`: written from its input (if wired), then read on its output.
     InOutVar {
         /// The `<expression>` text: the variable.
-        expr: String,
+        expr: Text<'x>,
         /// The `<expression>` text.
         expr_span: Span,
         /// `negatedIn="true"`: the input value is inverted before it is written.
@@ -146,24 +151,24 @@ pub enum Kind {
     /// `<connector>`: a named wire end; its value continues at the continuations of that name.
     Connector {
         /// The connector's name (matched case-insensitively).
-        name: String,
+        name: Text<'x>,
     },
     /// `<continuation>`: the other end of a named connector.
     Continuation {
         /// The name of the connector it continues.
-        name: String,
+        name: Text<'x>,
     },
     /// `<jump>`: jump to a label when its input is TRUE (IL `JMPC`).
     Jump {
         /// The target label.
-        label: String,
+        label: Text<'x>,
         /// The `label` attribute.
         label_span: Span,
     },
     /// `<label>`: a jump target.
     Label {
         /// The label's name.
-        label: String,
+        label: Text<'x>,
         /// The `label` attribute.
         label_span: Span,
     },
@@ -173,17 +178,17 @@ pub enum Kind {
 
 /// A `<block>` element's data ([`Kind::Block`]).
 #[derive(Debug, Clone)]
-pub struct Block {
+pub struct Block<'x> {
     /// `typeName`: the function or FB type (`TON`, `ADD`, a user POU).
-    pub type_name: String,
+    pub type_name: Text<'x>,
     /// The `typeName` attribute.
     pub type_span: Span,
     /// `instanceName` and its span, for function blocks.
-    pub instance: Option<(String, Span)>,
+    pub instance: Option<(Text<'x>, Span)>,
     /// Input and in-out pins in document order.
-    pub inputs: Vec<InPin>,
+    pub inputs: Vec<InPin<'x>>,
     /// Output pins in document order.
-    pub outputs: Vec<OutPin>,
+    pub outputs: Vec<OutPin<'x>>,
     /// The ST statements of a CODESYS `EXECUTE` box (its vendor data's `<STCode>`), laid out so
     /// that byte `k` is byte `base + k` of the file; `None` for every other block.
     pub code: Option<crate::il_body::EmbeddedText>,
@@ -191,13 +196,13 @@ pub struct Block {
 
 /// One graphical element of an LD/FBD body, with its position and input wires.
 #[derive(Debug, Clone)]
-pub struct Node {
-    /// The `localId` attribute as written.
-    pub id: String,
+pub struct Node<'x> {
+    /// The `localId` attribute as written (trimmed).
+    pub id: Text<'x>,
     /// The localId as a number (`u64::MAX` when it is not one), for ordering.
     pub num: u64,
     /// What the element is, with its element-specific data.
-    pub kind: Kind,
+    pub kind: Kind<'x>,
     /// The element's start tag.
     pub span: Span,
     /// The `executionOrderId` attribute, if given (0 counts as absent for ordering).
@@ -207,21 +212,21 @@ pub struct Node {
     /// `<position y>`, in the editor's units.
     pub y: i64,
     /// Wires into the single input of non-block elements (OR-combined when several).
-    pub input: Vec<Wire>,
+    pub input: Vec<Wire<'x>>,
     /// Whether the element has a `<connectionPointIn>` at all.
     pub has_input: bool,
     /// Whether that point holds at least one `<connection>` (even a dangling one).
     pub wired: bool,
 }
 
-impl Node {
+impl<'x> Node<'x> {
     /// Every wire into this node (block pins included).
-    pub fn all_wires(&self) -> Vec<&Wire> {
+    pub fn all_wires(&self) -> Vec<&Wire<'x>> {
         self.wires().collect()
     }
     /// The same wires as [`Node::all_wires`], in the same order, without collecting them.
-    pub fn wires(&self) -> impl Iterator<Item = &Wire> {
-        let pins: &[InPin] = match &self.kind {
+    pub fn wires(&self) -> impl Iterator<Item = &Wire<'x>> {
+        let pins: &[InPin<'x>] = match &self.kind {
             Kind::Block(b) => &b.inputs,
             _ => &[],
         };
@@ -241,23 +246,33 @@ impl Node {
 }
 
 /// An LD or FBD body read as a graph: [`read`]'s output, [`crate::lower`]'s input.
-pub struct Graph {
+pub struct Graph<'x> {
     /// Every non-comment element, in document order; [`Wire::from`] indexes this.
-    pub nodes: Vec<Node>,
+    pub nodes: Vec<Node<'x>>,
     /// Networks in execution order; each lists its node indexes in increasing order.
     pub networks: Vec<Vec<usize>>,
     /// For each continuation node, the connector nodes of the same name.
     pub continuation_sources: HashMap<usize, Vec<usize>>,
 }
 
+/// `str::trim` of an attribute value or a text: the value itself when it starts and ends with a
+/// printable ASCII character (nearly always), without `trim`'s Unicode checks.
+fn trim(s: &str) -> &str {
+    match s.as_bytes() {
+        [first, .., last] if (0x21..0x7f).contains(first) && (0x21..0x7f).contains(last) => s,
+        [one] if (0x21..0x7f).contains(one) => s,
+        _ => s.trim(),
+    }
+}
+
 /// A boolean attribute's value (`true` or `1`, surrounding blanks ignored).
 fn truthy(v: Option<&str>) -> bool {
-    v.is_some_and(|v| v.trim() == "true" || v.trim() == "1")
+    v.is_some_and(|v| trim(v) == "true" || trim(v) == "1")
 }
 
 /// The `edge` attribute's value.
 fn edge_of(v: Option<&str>) -> Edge {
-    match v.map(str::trim) {
+    match v.map(trim) {
         Some("rising") => Edge::Rising,
         Some("falling") => Edge::Falling,
         _ => Edge::None,
@@ -267,19 +282,16 @@ fn edge_of(v: Option<&str>) -> Edge {
 /// The wires of one `<connectionPointIn>` (none without one), in their final list: each wire's
 /// [`Wire::from`] holds, until [`read`] resolves it, the index in `refs` of its `refLocalId` (borrowed
 /// from the XML text). One list per input, built once: no second list of raw wires per node.
-fn raw_wires<'x>(ctx: &Ctx, point: Option<&'x Element>, refs: &mut Vec<&'x str>) -> Vec<Wire> {
+fn raw_wires<'x>(ctx: &Ctx, point: Option<&Element<'x>>, refs: &mut Vec<&'x str>) -> Vec<Wire<'x>> {
     point
         .map(|p| {
             p.children_named("connection")
                 .map(|c| {
                     let [ref_id, pin] = c.attrs(["refLocalId", "formalParameter"]);
-                    refs.push(ref_id.unwrap_or_default().trim());
+                    refs.push(trim(ref_id.unwrap_or_default()));
                     Wire {
                         from: refs.len() - 1,
-                        pin: pin
-                            .map(str::trim)
-                            .filter(|s| !s.is_empty())
-                            .map(str::to_string),
+                        pin: pin.map(trim).filter(|s| !s.is_empty()).map(Cow::Borrowed),
                         span: ctx.tag(c),
                     }
                 })
@@ -290,7 +302,7 @@ fn raw_wires<'x>(ctx: &Ctx, point: Option<&'x Element>, refs: &mut Vec<&'x str>)
 
 /// A `<position>` coordinate in the editor's units, rounded toward zero (0 when absent or not a number).
 fn coord(v: Option<&str>) -> i64 {
-    let Some(v) = v.map(str::trim) else { return 0 };
+    let Some(v) = v.map(trim) else { return 0 };
     // Short integers (the usual case) are exact as f64 too: the same value without the float parser.
     if v.len() <= 15 && v.bytes().all(|b| b.is_ascii_digit()) && !v.is_empty() {
         return v.parse().unwrap_or(0);
@@ -298,15 +310,21 @@ fn coord(v: Option<&str>) -> i64 {
     v.parse::<f64>().map(|v| v as i64).unwrap_or(0)
 }
 
-fn text_of(ctx: &Ctx, e: &Element, child: &str) -> (String, Span) {
+fn text_of<'x>(ctx: &Ctx, e: &Element<'x>, child: &str) -> (Text<'x>, Span) {
     match e.child(child) {
-        Some(c) => (c.text_ref().trim().to_string(), ctx.text_span(c)),
-        None => (String::new(), ctx.tag(e)),
+        Some(c) => (
+            match c.text_ref() {
+                Cow::Borrowed(t) => Cow::Borrowed(trim(t)),
+                Cow::Owned(t) => Cow::Owned(trim(&t).to_string()),
+            },
+            ctx.text_span(c),
+        ),
+        None => (Cow::Borrowed(""), ctx.tag(e)),
     }
 }
 
 /// Reads the body's elements. `pou` names the POU in diagnostics.
-pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
+pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     // At most one node per child element: no regrowth.
     let mut nodes = Vec::with_capacity(body.children.len());
     // Every wire's `refLocalId`, indexed by the wire's `from` until the wires are resolved below.
@@ -354,7 +372,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                     var,
                     var_span,
                     negated: truthy(a),
-                    storage: match c.map(str::trim) {
+                    storage: match c.map(trim) {
                         Some("set") => Storage::Set,
                         Some("reset") => Storage::Reset,
                         _ => Storage::None,
@@ -388,17 +406,17 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 }
             }
             "connector" => Kind::Connector {
-                name: a.unwrap_or_default().trim().to_string(),
+                name: Cow::Borrowed(trim(a.unwrap_or_default())),
             },
             "continuation" => Kind::Continuation {
-                name: a.unwrap_or_default().trim().to_string(),
+                name: Cow::Borrowed(trim(a.unwrap_or_default())),
             },
             "jump" => Kind::Jump {
-                label: a.unwrap_or_default().trim().to_string(),
+                label: Cow::Borrowed(trim(a.unwrap_or_default())),
                 label_span: ctx.attr_span(e, "label"),
             },
             "label" => Kind::Label {
-                label: a.unwrap_or_default().trim().to_string(),
+                label: Cow::Borrowed(trim(a.unwrap_or_default())),
                 label_span: ctx.attr_span(e, "label"),
             },
             "return" => Kind::Return,
@@ -416,7 +434,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                         let [formal, negated, edge] =
                             v.attrs(["formalParameter", "negated", "edge"]);
                         inputs.push(InPin {
-                            name: formal.unwrap_or_default().trim().to_string(),
+                            name: Cow::Borrowed(trim(formal.unwrap_or_default())),
                             negated: truthy(negated),
                             edge: edge_of(edge),
                             wires,
@@ -432,15 +450,15 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 {
                     let [formal, negated] = v.attrs(["formalParameter", "negated"]);
                     outputs.push(OutPin {
-                        name: formal.unwrap_or_default().trim().to_string(),
+                        name: Cow::Borrowed(trim(formal.unwrap_or_default())),
                         negated: truthy(negated),
                     });
                 }
                 let instance = b
-                    .map(str::trim)
+                    .map(trim)
                     .filter(|s| !s.is_empty())
-                    .map(|s| (s.to_string(), ctx.attr_span(e, "instanceName")));
-                let type_name = a.unwrap_or_default().trim().to_string();
+                    .map(|s| (Cow::Borrowed(s), ctx.attr_span(e, "instanceName")));
+                let type_name: Text = Cow::Borrowed(trim(a.unwrap_or_default()));
                 // CODESYS's EXECUTE box runs the ST code of its vendor data
                 let code = if type_name.eq_ignore_ascii_case("EXECUTE") {
                     e.children_named("addData")
@@ -477,14 +495,14 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                 continue;
             }
         };
-        let Some(id) = local_id.map(str::trim).filter(|s| !s.is_empty()) else {
+        let Some(id) = local_id.map(trim).filter(|s| !s.is_empty()) else {
             ctx.error(code::E3013, span, format!("<{}> without a localId", e.name));
             continue;
         };
         if let Some(&prev) = ids.get(id) {
             let prev_span: Span = nodes
                 .iter()
-                .map(|n: &Node| n.span)
+                .map(|n: &Node<'x>| n.span)
                 .nth(prev)
                 .unwrap_or(span);
             ctx.report(
@@ -507,11 +525,11 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
         let input = raw_wires(ctx, point, &mut refs);
         let wired = !input.is_empty();
         nodes.push(Node {
-            id: id.to_string(),
+            id: Cow::Borrowed(id),
             num: id.parse().unwrap_or(u64::MAX),
             kind,
             span,
-            exec_order: exec_order.and_then(|v| v.trim().parse().ok()),
+            exec_order: exec_order.and_then(|v| trim(v).parse().ok()),
             x: coord(x),
             y: coord(y),
             input,
@@ -521,7 +539,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
     }
     // Resolve wires in place (`from`: an index in `refs` until now); a dangling one is reported and
     // dropped, in document order: a node's input, then its pins.
-    let resolve = |ctx: &mut Ctx, wires: &mut Vec<Wire>, node_id: &str| {
+    let resolve = |ctx: &mut Ctx, wires: &mut Vec<Wire<'x>>, node_id: &str| {
         wires.retain_mut(|w| {
             let r = refs[w.from];
             match ids.get(r) {
@@ -583,7 +601,7 @@ pub fn read(ctx: &mut Ctx, body: &Element, pou: &str) -> Graph {
                     .with_hint("add a connector with this name in the same POU, or rename the continuation")
                     .with_xml(diagnostics::XmlContext {
                         pou: Some(pou.to_string()),
-                        local_id: Some(n.id.clone()),
+                        local_id: Some(n.id.to_string()),
                         network: None,
                     }),
                 ),
@@ -606,7 +624,7 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
     i
 }
 
-fn networks(nodes: &[Node], conts: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize>> {
+fn networks(nodes: &[Node<'_>], conts: &HashMap<usize, Vec<usize>>) -> Vec<Vec<usize>> {
     let mut parent: Vec<usize> = (0..nodes.len()).collect();
     let union = |a: usize, b: usize, parent: &mut Vec<usize>| {
         let (ra, rb) = (find(parent, a), find(parent, b));
@@ -719,6 +737,31 @@ pub fn cycles<S: std::hash::BuildHasher>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn trim_is_str_trim() {
+        for s in [
+            "",
+            "x",
+            " x",
+            "x ",
+            " x ",
+            "\u{b}x",
+            "x\u{b}",
+            "\u{a0}x",
+            "x\u{2003}",
+            "\u{e9}",
+            " \u{e9} ",
+            "ab",
+            "a b",
+            "\t1\n",
+            "~",
+            "\u{7f}",
+            "\u{7f}a",
+        ] {
+            assert_eq!(trim(s), s.trim(), "{s:?}");
+        }
+    }
 
     #[test]
     fn coordinates_round_toward_zero_like_the_float_reading() {

@@ -93,7 +93,7 @@ fn add_pou(xml_text: &str, pou: &Element, entries: &mut Vec<(usize, usize, XmlCo
         let g = graph::read(&mut ctx, lang, &name);
         for (n, net) in g.networks.iter().enumerate() {
             for &i in net {
-                network_of.insert(g.nodes[i].id.clone(), n + 1);
+                network_of.insert(g.nodes[i].id.to_string(), n + 1);
             }
         }
     }

@@ -299,7 +299,7 @@ impl<'i> BodyLowering<'i> {
                         let at = Where {
                             pou: self.pou.clone(),
                             network: Some(net + 1),
-                            local_id: Some(g.nodes[i].id.clone()),
+                            local_id: Some(g.nodes[i].id.to_string()),
                         };
                         let first_span = match &g.nodes[i0].kind {
                             Kind::Coil { var_span, .. } => *var_span,
@@ -347,7 +347,7 @@ impl<'i> BodyLowering<'i> {
                         let at = Where {
                             pou: self.pou.clone(),
                             network: Some(net + 1),
-                            local_id: Some(g.nodes[i].id.clone()),
+                            local_id: Some(g.nodes[i].id.to_string()),
                         };
                         ctx.report(
                             Diagnostic::error(
@@ -636,7 +636,7 @@ fn bool_lit(b: bool, span: Span) -> Operand {
 /// One network being lowered.
 struct NetLowering<'a, 'i> {
     pou: &'a mut BodyLowering<'i>,
-    g: &'a Graph,
+    g: &'a Graph<'a>,
     network: usize,
     vals: Vec<Val>,
     spans: Vec<Span>,
@@ -662,7 +662,7 @@ struct NetLowering<'a, 'i> {
 pub const MAX_VALUE_DEPTH: usize = 2000;
 
 impl<'a, 'i> NetLowering<'a, 'i> {
-    fn new(pou: &'a mut BodyLowering<'i>, g: &'a Graph, network: usize) -> Self {
+    fn new(pou: &'a mut BodyLowering<'i>, g: &'a Graph<'a>, network: usize) -> Self {
         NetLowering {
             pou,
             g,
@@ -706,7 +706,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         Where {
             pou: self.pou.pou.clone(),
             network: Some(self.network),
-            local_id: Some(self.g.nodes[node].id.clone()),
+            local_id: Some(self.g.nodes[node].id.to_string()),
         }
     }
 
@@ -1404,7 +1404,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     .input_val(ctx, &node.input, i)
                     .unwrap_or_else(|| self.val(Val::Const(!node.has_input), span));
                 self.controls
-                    .push(Control::Jump(Ident::new(label, *label_span), v, span));
+                    .push(Control::Jump(Ident::new(&**label, *label_span), v, span));
             }
             Kind::Return => {
                 let v = self
@@ -1414,7 +1414,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             }
             Kind::Label { label, label_span } => {
                 self.actions
-                    .push(Action::Label(Ident::new(label, *label_span)));
+                    .push(Action::Label(Ident::new(&**label, *label_span)));
             }
             Kind::Block { .. } => self.build_block(ctx, i),
         }

@@ -360,7 +360,7 @@ impl NetLowering<'_, '_> {
                     self.alloc_temp(&result_ty)
                 };
                 self.actions.push(Action::Func {
-                    name: Ident::new(type_name, *type_span),
+                    name: Ident::new(&**type_name, *type_span),
                     form,
                     args,
                     en,

@@ -68,7 +68,7 @@ impl BodyLowering<'_> {
                 let at = Where {
                     pou: self.pou.clone(),
                     network: Some(n + 1),
-                    local_id: Some(node.id.clone()),
+                    local_id: Some(node.id.to_string()),
                 };
                 let failed = local.has_errors();
                 for d in local {

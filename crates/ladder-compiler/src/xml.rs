@@ -137,7 +137,7 @@ impl<'a> Element<'a> {
         self.extra.map_or(&[], |x| x.decoded_attrs)
     }
     /// An attribute's value (entities decoded), by local name.
-    pub fn attr(&self, name: &str) -> Option<&str> {
+    pub fn attr(&self, name: &str) -> Option<&'a str> {
         // (No `str::contains(name)` pre-check: its substring search costs more than scanning a
         // start tag's few attributes.)
         let raw = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
@@ -152,7 +152,7 @@ impl<'a> Element<'a> {
     }
     /// The values of several attributes (entities decoded) in one pass over the start tag: slot `k` holds
     /// what [`Element::attr`] would give for `names[k]` (the first attribute of that local name).
-    pub fn attrs<const N: usize>(&self, names: [&str; N]) -> [Option<&str>; N] {
+    pub fn attrs<const N: usize>(&self, names: [&str; N]) -> [Option<&'a str>; N] {
         let mut out = [None; N];
         // An empty name is never found (every scanned name has a character): it does not count.
         let mut left = names.iter().filter(|n| !n.is_empty()).count();
@@ -160,7 +160,11 @@ impl<'a> Element<'a> {
             return out;
         }
         for (n, s, e) in scan_attrs(self.raw_tag) {
-            let Some(k) = names.iter().position(|x| *x == n) else {
+            // Length and first byte before the full compare (a `memcmp` call): most attribute names
+            // of a tag differ from each wanted one in one of them.
+            let Some(k) = names.iter().position(|x| {
+                x.len() == n.len() && x.as_bytes().first() == n.as_bytes().first() && *x == n
+            }) else {
                 continue;
             };
             if out[k].is_some() {
@@ -217,7 +221,7 @@ impl<'a> Element<'a> {
         self.text_ref().into_owned()
     }
     /// The same text as [`Element::text`], borrowed when it is one segment (the usual case).
-    pub fn text_ref(&self) -> Cow<'_, str> {
+    pub fn text_ref(&self) -> Cow<'a, str> {
         match self.segments() {
             [] => Cow::Borrowed(""),
             [one] => Cow::Borrowed(one.text),
@@ -331,12 +335,13 @@ fn decode_attr_value(raw: &str) -> Cow<'_, str> {
 /// The attributes of a raw start tag: local name and the byte range of the raw value inside the tag.
 ///
 /// Byte loops only (this runs for every attribute lookup, so it avoids char decoding and `rfind`).
-fn scan_attrs(raw_tag: &str) -> impl Iterator<Item = (&str, usize, usize)> {
+fn scan_attrs(raw_tag: &str) -> AttrScan<'_> {
     let bytes = raw_tag.as_bytes();
-    let mut i = bytes
-        .iter()
-        .position(|&b| !b.is_ascii() || b.is_ascii_whitespace() || b == 0x0b || b == b'/')
-        .unwrap_or(bytes.len());
+    // The element name ends at the first separator (a table lookup per byte).
+    let mut i = 0;
+    while i < bytes.len() && class(bytes[i]) & NAME_END == 0 {
+        i += 1;
+    }
     if i < bytes.len() && !bytes[i].is_ascii() {
         // A non-ASCII character before the first separator: the rare slow path (Unicode whitespace).
         // (`char::is_whitespace` also counts U+000B, hence the 0x0b above.)
@@ -344,46 +349,106 @@ fn scan_attrs(raw_tag: &str) -> impl Iterator<Item = (&str, usize, usize)> {
             .find(|c: char| c.is_whitespace() || c == '/')
             .unwrap_or(raw_tag.len());
     }
-    std::iter::from_fn(move || loop {
-        while i < bytes.len() && (bytes[i].is_ascii_whitespace() || bytes[i] == b'/') {
-            i += 1;
+    AttrScan { raw: raw_tag, i }
+}
+
+/// ASCII whitespace as `u8::is_ascii_whitespace` counts it (space, tab, LF, FF, CR).
+const SPACE: u8 = 1;
+/// `=`.
+const EQ: u8 = 2;
+/// `:`.
+const COLON: u8 = 4;
+/// `/`.
+const SLASH: u8 = 8;
+/// What ends an element name for [`scan_attrs`]: ASCII whitespace, U+000B, `/`, a non-ASCII byte.
+const NAME_END: u8 = 16;
+
+/// The byte classes of [`AttrScan`]'s loops, one table lookup per byte.
+static CLASS: [u8; 256] = {
+    let mut t = [0u8; 256];
+    t[b' ' as usize] = SPACE;
+    t[b'\t' as usize] = SPACE;
+    t[b'\n' as usize] = SPACE;
+    t[0x0c] = SPACE;
+    t[b'\r' as usize] = SPACE;
+    t[b'=' as usize] = EQ;
+    t[b':' as usize] = COLON;
+    t[b'/' as usize] = SLASH;
+    let mut b = 0;
+    while b < 256 {
+        if t[b] & (SPACE | SLASH) != 0 || b == 0x0b || b >= 0x80 {
+            t[b] |= NAME_END;
         }
-        let name_start = i;
-        // The local part starts after the last `:` of the qualified name.
-        let mut local_start = i;
-        while i < bytes.len() && !bytes[i].is_ascii_whitespace() && bytes[i] != b'=' {
-            if bytes[i] == b':' {
-                local_start = i + 1;
+        b += 1;
+    }
+    t
+};
+
+#[inline(always)]
+fn class(b: u8) -> u8 {
+    CLASS[b as usize]
+}
+
+/// [`scan_attrs`]'s iterator: a plain struct (a `from_fn` closure was not inlined into its callers,
+/// and its loops tested each byte against several characters).
+struct AttrScan<'t> {
+    raw: &'t str,
+    i: usize,
+}
+
+impl<'t> Iterator for AttrScan<'t> {
+    type Item = (&'t str, usize, usize);
+    #[inline]
+    fn next(&mut self) -> Option<Self::Item> {
+        let bytes = self.raw.as_bytes();
+        let mut i = self.i;
+        loop {
+            while i < bytes.len() && class(bytes[i]) & (SPACE | SLASH) != 0 {
+                i += 1;
+            }
+            let name_start = i;
+            // The local part starts after the last `:` of the qualified name.
+            let mut local_start = i;
+            while i < bytes.len() {
+                let c = class(bytes[i]);
+                if c & (SPACE | EQ) != 0 {
+                    break;
+                }
+                if c == COLON {
+                    local_start = i + 1;
+                }
+                i += 1;
+            }
+            if name_start == i {
+                self.i = i;
+                return None;
+            }
+            let name = &self.raw[local_start..i];
+            while i < bytes.len() && class(bytes[i]) & SPACE != 0 {
+                i += 1;
+            }
+            if i >= bytes.len() || bytes[i] != b'=' {
+                continue;
             }
             i += 1;
-        }
-        if name_start == i {
-            return None;
-        }
-        let name = &raw_tag[local_start..i];
-        while i < bytes.len() && bytes[i].is_ascii_whitespace() {
+            while i < bytes.len() && class(bytes[i]) & SPACE != 0 {
+                i += 1;
+            }
+            if i >= bytes.len() || (bytes[i] != b'"' && bytes[i] != b'\'') {
+                self.i = i;
+                return None;
+            }
+            let quote = bytes[i];
             i += 1;
+            let vstart = i;
+            while i < bytes.len() && bytes[i] != quote {
+                i += 1;
+            }
+            let vend = i.min(bytes.len());
+            self.i = i + 1;
+            return Some((name, vstart, vend));
         }
-        if i >= bytes.len() || bytes[i] != b'=' {
-            continue;
-        }
-        i += 1;
-        while i < bytes.len() && bytes[i].is_ascii_whitespace() {
-            i += 1;
-        }
-        if i >= bytes.len() || (bytes[i] != b'"' && bytes[i] != b'\'') {
-            return None;
-        }
-        let quote = bytes[i];
-        i += 1;
-        let vstart = i;
-        while i < bytes.len() && bytes[i] != quote {
-            i += 1;
-        }
-        let vend = i.min(bytes.len());
-        i += 1;
-        return Some((name, vstart, vend));
-    })
+    }
 }
 
 /// The attributes with entities in their value, decoded (`None` when there is none).

@@ -327,27 +327,37 @@ impl<'a> Gen<'a> {
         order
     }
 
-    /// A struct member declaration for a variable (None: no storage, e.g. located or external).
-    fn member_decl(
+    /// A struct member declaration for a variable, written as the line `    T v_name[dims];` at the
+    /// end of `h` (in place: no `String` per variable); `false`, nothing written, when it has no
+    /// storage (located, external) or an unknown type.
+    fn member_line(
         &mut self,
+        h: &mut String,
         pou_kind: PouKind,
         v: &il_frontend::sema::Variable,
-    ) -> Option<String> {
+    ) -> bool {
         if v.location.is_some() || v.kind == VarKind::External {
-            return None;
+            return false;
         }
         if pou_kind != PouKind::Function && v.kind == VarKind::Temp {
-            return None;
+            return false;
         }
-        let name = mangle::var(&v.name);
-        let Some(base) = ctypes::base(self.model, &v.ty) else {
+        let start = h.len();
+        h.push_str("    ");
+        if !ctypes::push_base(self.model, &v.ty, h) {
+            h.truncate(start);
             self.unsupported(v.span, "a variable of unknown type");
-            return None;
-        };
-        if v.kind == VarKind::InOut {
-            return Some(format!("{base} (*{name}){};", ctypes::dims(&v.ty)));
+            return false;
         }
-        Some(format!("{base} {name}{};", ctypes::dims(&v.ty)))
+        let in_out = v.kind == VarKind::InOut;
+        h.push_str(if in_out { " (*v_" } else { " v_" });
+        mangle::push_core(h, &v.name);
+        if in_out {
+            h.push(')');
+        }
+        ctypes::push_dims(&v.ty, h);
+        h.push_str(";\n");
+        true
     }
 
     fn header(&mut self, h: &mut String) {
@@ -366,10 +376,7 @@ impl<'a> Gen<'a> {
                     let _ = writeln!(h, "typedef struct {{");
                     let mut any = false;
                     for f in fields.clone() {
-                        if let Some(m) = self.member_decl(PouKind::FunctionBlock, &f) {
-                            let _ = writeln!(h, "    {m}");
-                            any = true;
-                        }
+                        any |= self.member_line(h, PouKind::FunctionBlock, &f);
                     }
                     if !any {
                         h.push_str("    char unused_;\n");
@@ -384,10 +391,7 @@ impl<'a> Gen<'a> {
                     let _ = writeln!(h, "typedef struct {{");
                     let mut any = false;
                     for v in &p.vars {
-                        if let Some(m) = self.member_decl(p.kind, v) {
-                            let _ = writeln!(h, "    {m}");
-                            any = true;
-                        }
+                        any |= self.member_line(h, p.kind, v);
                     }
                     for m in edges::hidden_members(p) {
                         let _ = writeln!(h, "    {m}");
@@ -690,6 +694,8 @@ impl<'a> Gen<'a> {
         // init
         let _ = writeln!(c, "void {sname}_INIT({sname} *self) {{");
         c.push_str("    memset(self, 0, sizeof *self);\n");
+        // `self->v_<name>`, built in one buffer that keeps its room
+        let mut lv = String::new();
         for v in &p.vars {
             if matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp) {
                 continue;
@@ -699,7 +705,9 @@ impl<'a> Gen<'a> {
                 self.init_located(c, v);
                 continue;
             }
-            let lv = format!("self->{}", mangle::var(&v.name));
+            lv.clear();
+            lv.push_str("self->v_");
+            mangle::push_core(&mut lv, &v.name);
             self.init_value(c, 1, &lv, &v.ty, v.init.as_ref(), v.span);
         }
         c.push_str("}\n\n");

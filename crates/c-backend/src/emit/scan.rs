@@ -323,7 +323,10 @@ impl Gen<'_> {
     }
 
     fn var_table(&mut self, c: &mut String, instances: &[Instance]) {
-        let mut entries = Vec::new();
+        // Each entry is written into `c` as it is made: no `String` per entry (a 10,000-rung
+        // program has 40,000 of them).
+        c.push_str("const ladderc_var ladderc_vars[] = {\n");
+        let mut out = WatchLines { c, count: 0 };
         // a member of a named global variable list is traced as `List.x`
         // (the model is borrowed through its own reference: no variable or POU is copied)
         let model = self.model;
@@ -331,37 +334,41 @@ impl Gen<'_> {
             let v = model.global(r);
             let name = self.global_name(r);
             let watch = model.global_qualified_name(r);
-            self.watch_var(v, watch, name, &mut entries);
+            self.watch_var(v, &watch, &name, &mut out);
         }
+        // The trace name `instance.var` and the C place `instance_c.v_var` of each variable, built
+        // in two buffers that keep their room.
+        let (mut name, mut lv) = (String::new(), String::new());
         for inst in instances {
             let pou = model.pou(inst.pou);
             for v in &pou.vars {
                 if matches!(v.kind, VarKind::External | VarKind::InOut | VarKind::Temp) {
                     continue;
                 }
-                let name = cfmt!("{}.{}", inst.watch_name, v.name);
-                let lv = cfmt!("{}.{}", inst.c_name, mangle::var(&v.name));
-                self.watch_var(v, name, lv, &mut entries);
+                name.clear();
+                name.push_str(&inst.watch_name);
+                name.push('.');
+                name.push_str(&v.name);
+                lv.clear();
+                lv.push_str(&inst.c_name);
+                lv.push_str(".v_");
+                mangle::push_core(&mut lv, &v.name);
+                self.watch_var(v, &name, &lv, &mut out);
             }
         }
         if let Some(m) = &self.motion {
-            entries.extend(m.watch_entries());
+            for e in m.watch_entries() {
+                out.line(&e);
+            }
         }
-        c.push_str("const ladderc_var ladderc_vars[] = {\n");
-        if entries.is_empty() {
+        let count = out.count;
+        if count == 0 {
             c.push_str("    { NULL, LADDERC_T_BOOL, NULL, NULL, 0, 0 }\n");
         }
-        for e in &entries {
-            let _ = writeln!(c, "    {e},");
-        }
-        let _ = writeln!(
-            c,
-            "}};\nconst size_t ladderc_var_count = {};",
-            entries.len()
-        );
+        let _ = writeln!(c, "}};\nconst size_t ladderc_var_count = {count};");
     }
 
-    fn watch_var(&mut self, v: &Variable, name: String, lv: String, out: &mut Vec<String>) {
+    fn watch_var(&mut self, v: &Variable, name: &str, lv: &str, out: &mut WatchLines) {
         if v.location.is_some() {
             if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
                 let tag = match ty {
@@ -371,7 +378,7 @@ impl Gen<'_> {
                         None => return,
                     },
                 };
-                out.push(cfmt!(
+                out.line(&cfmt!(
                     "{{ {}, {tag}, NULL, {}, {}, {} }}",
                     mangle::c_string(name.as_bytes()),
                     area_array(loc.area),
@@ -381,32 +388,22 @@ impl Gen<'_> {
             }
             return;
         }
-        self.watch_value(&name, &lv, &v.ty, 0, out);
+        self.watch_value(name, lv, &v.ty, 0, out);
     }
 
-    fn watch_value(&self, name: &str, lv: &str, ty: &Type, depth: usize, out: &mut Vec<String>) {
-        if out.len() >= MAX_ENTRIES || depth > 16 {
+    fn watch_value(&self, name: &str, lv: &str, ty: &Type, depth: usize, out: &mut WatchLines) {
+        if out.count >= MAX_ENTRIES || depth > 16 {
             return;
         }
-        let cname = mangle::c_string(name.as_bytes());
         match ty {
-            Type::Enum(_) => out.push(cfmt!(
-                "{{ {cname}, LADDERC_T_DINT, (void *)&{lv}, NULL, 0, 0 }}"
-            )),
+            Type::Enum(_) => out.entry(&[name], "LADDERC_T_DINT", &[lv]),
             Type::Elementary(_) | Type::Subrange { .. } => {
                 if let Some(e) = ty.elementary() {
-                    out.push(cfmt!(
-                        "{{ {cname}, {}, (void *)&{lv}, NULL, 0, 0 }}",
-                        ctypes::type_tag(e)
-                    ));
+                    out.entry(&[name], ctypes::type_tag(e), &[lv]);
                 }
             }
-            Type::String { wide: false, .. } => out.push(cfmt!(
-                "{{ {cname}, LADDERC_T_STRING, (void *)&{lv}, NULL, 0, 0 }}"
-            )),
-            Type::String { wide: true, .. } => out.push(cfmt!(
-                "{{ {cname}, LADDERC_T_WSTRING, (void *)&{lv}, NULL, 0, 0 }}"
-            )),
+            Type::String { wide: false, .. } => out.entry(&[name], "LADDERC_T_STRING", &[lv]),
+            Type::String { wide: true, .. } => out.entry(&[name], "LADDERC_T_WSTRING", &[lv]),
             Type::Struct(id) => {
                 if let UserTypeDef::Struct { fields } = &self.model.user_type(*id).def {
                     for f in fields {
@@ -422,11 +419,7 @@ impl Gen<'_> {
             }
             Type::Fb(FbType::Standard(f)) => {
                 for (p, e, _) in ctypes::std_fb(*f).1 {
-                    out.push(cfmt!(
-                        "{{ {}, {}, (void *)&{lv}.{p}, NULL, 0, 0 }}",
-                        mangle::c_string(cfmt!("{name}.{p}").as_bytes()),
-                        ctypes::type_tag(*e)
-                    ));
+                    out.entry(&[name, ".", p], ctypes::type_tag(*e), &[lv, ".", p]);
                 }
             }
             Type::Fb(FbType::User(id)) => {
@@ -475,5 +468,39 @@ impl Gen<'_> {
             }
             _ => {}
         }
+    }
+}
+
+/// The lines of the watch table (`ladderc_vars[]`), written into the C text as they are made.
+struct WatchLines<'c> {
+    c: &'c mut String,
+    /// Entries written so far.
+    count: usize,
+}
+
+impl WatchLines<'_> {
+    /// The entry `{ "name", tag, (void *)&lv, NULL, 0, 0 }` of a value in memory, the name and the
+    /// place given in pieces (the name is written as a C string literal).
+    fn entry(&mut self, name: &[&str], tag: &str, lv: &[&str]) {
+        let c = &mut *self.c;
+        c.push_str("    { \"");
+        for p in name {
+            mangle::push_c_string_body(c, p.as_bytes());
+        }
+        c.push_str("\", ");
+        c.push_str(tag);
+        c.push_str(", (void *)&");
+        for p in lv {
+            c.push_str(p);
+        }
+        c.push_str(", NULL, 0, 0 },\n");
+        self.count += 1;
+    }
+    /// An entry written whole (`{ ... }`).
+    fn line(&mut self, e: &str) {
+        self.c.push_str("    ");
+        self.c.push_str(e);
+        self.c.push_str(",\n");
+        self.count += 1;
     }
 }

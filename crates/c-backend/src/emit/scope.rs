@@ -125,14 +125,19 @@ impl<'m> Scope<'m> {
 /// The C lvalue of POU variable `v` seen from its own body (VAR_TEMP and FUNCTION variables are C
 /// locals, the rest instance members).
 pub fn own_var_lvalue(kind: PouKind, v: &Variable) -> String {
-    let name = mangle::var(&v.name);
-    match (kind, v.kind) {
-        (PouKind::Function, VarKind::Output | VarKind::InOut) => cfmt!("(*{name})"),
-        (PouKind::Function, _) => name,
-        (_, VarKind::Temp) => name,
-        (_, VarKind::InOut) => cfmt!("(*self->{name})"),
-        _ => cfmt!("self->{name}"),
-    }
+    // `open` v_<core> `close`, in one allocation (a POU's every variable gets one: 32,500 for the
+    // 10,000 generated rungs).
+    let (open, close) = match (kind, v.kind) {
+        (PouKind::Function, VarKind::Output | VarKind::InOut) => ("(*v_", ")"),
+        (PouKind::Function, _) | (_, VarKind::Temp) => ("v_", ""),
+        (_, VarKind::InOut) => ("(*self->v_", ")"),
+        _ => ("self->v_", ""),
+    };
+    let mut s = String::with_capacity(open.len() + v.name.len() + close.len());
+    s.push_str(open);
+    mangle::push_core(&mut s, &v.name);
+    s.push_str(close);
+    s
 }
 
 impl Gen<'_> {

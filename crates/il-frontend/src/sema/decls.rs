@@ -1354,78 +1354,113 @@ impl Analyzer<'_> {
     }
 }
 
+/// The keywords [`reserved_name`] refuses.
+const KEYWORDS: &[&str] = &[
+    "IF",
+    "THEN",
+    "ELSIF",
+    "ELSE",
+    "END_IF",
+    "CASE",
+    "OF",
+    "END_CASE",
+    "FOR",
+    "TO",
+    "BY",
+    "DO",
+    "END_FOR",
+    "WHILE",
+    "END_WHILE",
+    "REPEAT",
+    "UNTIL",
+    "END_REPEAT",
+    "EXIT",
+    "CONTINUE",
+    "RETURN",
+    "AND",
+    "OR",
+    "XOR",
+    "NOT",
+    "MOD",
+    "TRUE",
+    "FALSE",
+    "VAR",
+    "VAR_INPUT",
+    "VAR_OUTPUT",
+    "VAR_IN_OUT",
+    "VAR_TEMP",
+    "VAR_EXTERNAL",
+    "VAR_GLOBAL",
+    "VAR_ACCESS",
+    "VAR_CONFIG",
+    "END_VAR",
+    "CONSTANT",
+    "RETAIN",
+    "NON_RETAIN",
+    "AT",
+    "ARRAY",
+    "STRUCT",
+    "END_STRUCT",
+    "TYPE",
+    "END_TYPE",
+    "R_EDGE",
+    "F_EDGE",
+    "PROGRAM",
+    "END_PROGRAM",
+    "FUNCTION",
+    "END_FUNCTION",
+    "FUNCTION_BLOCK",
+    "END_FUNCTION_BLOCK",
+    "CONFIGURATION",
+    "END_CONFIGURATION",
+    "RESOURCE",
+    "END_RESOURCE",
+    "ON",
+    "WITH",
+    "TASK",
+];
+
 /// Why `name` cannot name a variable (IEC 61131-3 2nd ed. Annex C, 3rd ed. 6.1.3: keywords, the
 /// names of the elementary data types and of the standard function blocks), or `None`. Names the
 /// standard also lists but real programs use and matiec, CODESYS and ladderc read unambiguously are
 /// accepted: the IL operators (`LD`, `ST`, `S`, `R` ...), the parameter names of the standard
 /// blocks (`IN`, `Q`, `PT`, `CU` ...) and the standard function names (`LEN`, `LIMIT` ...).
 pub fn reserved_name(name: &str) -> Option<&'static str> {
-    const KEYWORDS: &[&str] = &[
-        "IF",
-        "THEN",
-        "ELSIF",
-        "ELSE",
-        "END_IF",
-        "CASE",
-        "OF",
-        "END_CASE",
-        "FOR",
-        "TO",
-        "BY",
-        "DO",
-        "END_FOR",
-        "WHILE",
-        "END_WHILE",
-        "REPEAT",
-        "UNTIL",
-        "END_REPEAT",
-        "EXIT",
-        "CONTINUE",
-        "RETURN",
-        "AND",
-        "OR",
-        "XOR",
-        "NOT",
-        "MOD",
-        "TRUE",
-        "FALSE",
-        "VAR",
-        "VAR_INPUT",
-        "VAR_OUTPUT",
-        "VAR_IN_OUT",
-        "VAR_TEMP",
-        "VAR_EXTERNAL",
-        "VAR_GLOBAL",
-        "VAR_ACCESS",
-        "VAR_CONFIG",
-        "END_VAR",
-        "CONSTANT",
-        "RETAIN",
-        "NON_RETAIN",
-        "AT",
-        "ARRAY",
-        "STRUCT",
-        "END_STRUCT",
-        "TYPE",
-        "END_TYPE",
-        "R_EDGE",
-        "F_EDGE",
-        "PROGRAM",
-        "END_PROGRAM",
-        "FUNCTION",
-        "END_FUNCTION",
-        "FUNCTION_BLOCK",
-        "END_FUNCTION_BLOCK",
-        "CONFIGURATION",
-        "END_CONFIGURATION",
-        "RESOURCE",
-        "END_RESOURCE",
-        "ON",
-        "WITH",
-        "TASK",
-    ];
+    // A name that no keyword can equal (case-insensitively) skips the comparisons with each of them
+    // (sema checks every declared name: 40,000 for 10,000 generated rungs). `FIRST[c]` has bit `n`
+    // set when a keyword of `n` bytes starts with letter `c`; `DIGITS`: whether a keyword holds a
+    // digit. Both are computed from the list, so the filter never rules out a keyword.
+    const FILTER: ([u64; 26], bool, bool) = {
+        let (mut first, mut digits, mut exact) = ([0u64; 26], false, true);
+        let mut i = 0;
+        while i < KEYWORDS.len() {
+            let k = KEYWORDS[i].as_bytes();
+            if !k.is_empty() && k.len() < 64 && k[0].is_ascii_alphabetic() {
+                first[(k[0].to_ascii_uppercase() - b'A') as usize] |= 1 << k.len();
+            } else {
+                exact = false;
+            }
+            let mut j = 0;
+            while j < k.len() {
+                digits |= k[j].is_ascii_digit();
+                j += 1;
+            }
+            i += 1;
+        }
+        (first, digits, exact)
+    };
+    let (first, digits, exact) = FILTER;
+    let b = name.as_bytes();
+    let may_be_keyword = !exact
+        || match b.first() {
+            Some(&c) if c.is_ascii_alphabetic() && b.len() < 64 => {
+                first[(c.to_ascii_uppercase() - b'A') as usize] & (1 << b.len()) != 0
+                    && (digits || !b.iter().any(u8::is_ascii_digit))
+            }
+            _ => false,
+        };
     let is = |k: &&str| k.eq_ignore_ascii_case(name);
-    if KEYWORDS.iter().any(is) {
+    if may_be_keyword && KEYWORDS.iter().any(is) {
         Some("a keyword")
     } else if Elementary::from_name(name).is_some() || ["STRING", "WSTRING", "LTIME"].iter().any(is)
     {
@@ -1434,5 +1469,46 @@ pub fn reserved_name(name: &str) -> Option<&'static str> {
         Some("a standard function block")
     } else {
         None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The keyword filter of [`reserved_name`] never rules out a keyword: the answer is the one of
+    /// comparing with every keyword, for every keyword in three spellings and names near them.
+    #[test]
+    fn reserved_names_are_found_past_the_filter() {
+        let slow = |n: &str| KEYWORDS.iter().any(|k| k.eq_ignore_ascii_case(n));
+        let mut names: Vec<String> = vec!["".into(), "a0".into(), "_if".into(), "é".into()];
+        for k in KEYWORDS {
+            let lower = k.to_ascii_lowercase();
+            let mixed: String = k
+                .chars()
+                .enumerate()
+                .map(|(i, c)| {
+                    if i % 2 == 0 {
+                        c.to_ascii_lowercase()
+                    } else {
+                        c
+                    }
+                })
+                .collect();
+            names.extend([
+                k.to_string(),
+                lower.clone(),
+                mixed,
+                format!("{k}1"),
+                format!("x{lower}"),
+            ]);
+            names.push(k[..k.len() - 1].to_string());
+        }
+        for n in &names {
+            let got = reserved_name(n) == Some("a keyword");
+            assert_eq!(got, slow(n), "{n:?}");
+        }
+        assert_eq!(reserved_name("End_If"), Some("a keyword"));
+        assert_eq!(reserved_name("a0"), None);
     }
 }

@@ -473,7 +473,7 @@ fn networks(
         .nodes
         .iter()
         .enumerate()
-        .map(|(i, n)| (n.id.clone(), i))
+        .map(|(i, n)| (n.id.to_string(), i))
         .collect();
     for t in &chart.transitions {
         let CondSource::Connection(c) = t.cond else {
@@ -492,8 +492,9 @@ fn networks(
                     from,
                     pin: conn
                         .attr("formalParameter")
-                        .map(|s| s.trim().to_string())
-                        .filter(|s| !s.is_empty()),
+                        .map(str::trim)
+                        .filter(|s| !s.is_empty())
+                        .map(std::borrow::Cow::Borrowed),
                     span: ctx.tag(conn),
                 }),
                 None => report(
@@ -523,10 +524,10 @@ fn networks(
         }
         let idx = g.nodes.len();
         g.nodes.push(Node {
-            id: t.id.clone(),
+            id: t.id.clone().into(),
             num: u64::MAX,
             kind: Kind::OutVar {
-                expr: names::cond(&t.id),
+                expr: names::cond(&t.id).into(),
                 expr_span: t.span,
                 negated: false,
             },
