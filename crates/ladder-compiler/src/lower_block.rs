@@ -485,7 +485,7 @@ impl NetLowering<'_, '_> {
         &self,
         type_name: &str,
         type_span: Span,
-        instance: Option<&(String, Span)>,
+        instance: Option<&(std::borrow::Cow<'_, str>, Span)>,
     ) -> Option<VarRef> {
         if !self.pou.calls_actions {
             return None;
