@@ -32,7 +32,13 @@ fn run(cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
     let out = ladderc()
         .args(["--message-format", "short", "run"])
         .arg(fixture())
-        .args(["--cycles", &cycles.to_string(), "--cycle-ms", "10", "--sanitize"])
+        .args([
+            "--cycles",
+            &cycles.to_string(),
+            "--cycle-ms",
+            "10",
+            "--sanitize",
+        ])
         .arg("--stimulus")
         .arg(&stim)
         .args(["--trace", "-", "--watch", watch])
@@ -40,7 +46,10 @@ fn run(cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     assert_eq!(out.status.code(), Some(0), "{stderr}");
-    assert!(!stderr.contains("Sanitizer") && !stderr.contains("error"), "{stderr}");
+    assert!(
+        !stderr.contains("Sanitizer") && !stderr.contains("error"),
+        "{stderr}"
+    );
     (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
 }
 
@@ -181,10 +190,12 @@ fn an_enabled_flag_ladderc_does_not_implement_is_one_located_warning() {
     assert_eq!(code, Some(0), "{lines:?}");
     assert_eq!(
         lines,
-        ["flags.xml:83:17: warning[W3402]: SFC flag `SFCPause` is enabled but ladderc does not \
+        [
+            "flags.xml:83:17: warning[W3402]: SFC flag `SFCPause` is enabled but ladderc does not \
           implement it: the variable is a plain variable [POU `Chain`] (hint: ladderc implements \
           SFCInit and SFCReset; drive what `SFCPause` would do from the program, or disable the \
-          flag in the SFC settings)"],
+          flag in the SFC settings)"
+        ],
     );
     // a second enabled one is a second warning, in the action's settings too
     let two = src.replacen(
@@ -217,8 +228,10 @@ fn an_enabled_flag_without_a_bool_variable_is_a_located_error() {
     let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
     assert_eq!(errors.len(), 1, "{lines:?}");
     assert!(
-        errors[0].starts_with("flags.xml:17:29: error[E3403]: SFC flag `SFCReset` is enabled, but \
-             the POU declares `SFCReset` with a type other than BOOL [POU `Chain`]"),
+        errors[0].starts_with(
+            "flags.xml:17:29: error[E3403]: SFC flag `SFCReset` is enabled, but \
+             the POU declares `SFCReset` with a type other than BOOL [POU `Chain`]"
+        ),
         "{lines:?}"
     );
     let undeclared = src.replacen(
@@ -231,8 +244,34 @@ fn an_enabled_flag_without_a_bool_variable_is_a_located_error() {
     let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
     assert_eq!(errors.len(), 1, "{lines:?}");
     assert!(
-        errors[0].starts_with("flags.xml:81:17: error[E3403]: SFC flag `SFCInit` is enabled (Use) \
-             but neither declared in POU `Chain` nor declared implicitly"),
+        errors[0].starts_with(
+            "flags.xml:81:17: error[E3403]: SFC flag `SFCInit` is enabled (Use) \
+             but neither declared in POU `Chain` nor declared implicitly"
+        ),
+        "{lines:?}"
+    );
+}
+
+/// The POU's settings serve its body's chart and the chart of an SFC action without settings of
+/// its own (`Sub`, added to `Chain`): still one W3402, and the implicitly declared `SFCInit` is one
+/// variable of the POU, holding both charts.
+#[test]
+fn charts_sharing_the_pou_settings_give_one_warning_and_one_flag_variable() {
+    let src = std::fs::read_to_string(fixture()).unwrap();
+    let sub = "<action name=\"Sub\"><body><SFC>\
+               <step localId=\"1\" initialStep=\"true\" name=\"Only\"><position x=\"0\" y=\"0\" />\
+               </step></SFC></body></action>\n          <action name=\"Count\">";
+    let with_sub = src.replacen(
+        "<action name=\"Count\">\n            <body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">n := n + 1;",
+        &format!("{sub}\n            <body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">n := n + 1;"),
+        1,
+    );
+    assert_ne!(with_sub, src);
+    let (code, lines) = check_text("flags.xml", &with_sub);
+    assert_eq!(code, Some(0), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("warning[W3402]: SFC flag `SFCPause`"),
         "{lines:?}"
     );
 }

@@ -167,7 +167,8 @@ struct LoweredActions {
 /// SFC or ST body is lowered to IL, and also handed to [`il_frontend::actions::link`] (through
 /// `ctx.actions`) for calls through an instance. An SFC body is one scan of its chart
 /// ([`crate::sfc::lower_chart`]), whose hidden variables (steps, step times, action control) are
-/// the POU's, renamed per action ([`crate::sfc::names::in_action`]). What is left (no name, a body
+/// the POU's, renamed per action ([`crate::sfc::names::in_action`]); its SFC flags are read from
+/// the action's vendor data, else the POU's ([`crate::sfc::flags`]). What is left (no name, a body
 /// in no known language) is W3401.
 fn lower_actions<'e, 'a>(
     ctx: &mut Ctx,

@@ -44,7 +44,10 @@ pub fn read(ctx: &Ctx, el: &Element) -> Vec<Flag> {
             .flat_map(|s| s.children_named("Flags"))
             .flat_map(|f| f.children.iter())
         {
-            let on = |a: &str| f.attr(a).is_some_and(|v| v.trim().eq_ignore_ascii_case("true"));
+            let on = |a: &str| {
+                f.attr(a)
+                    .is_some_and(|v| v.trim().eq_ignore_ascii_case("true"))
+            };
             if !on("Use") || !crate::values::is_ident(f.name) {
                 continue;
             }

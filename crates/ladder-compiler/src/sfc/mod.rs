@@ -3,6 +3,9 @@
 //! Input: a POU's `<SFC>` element, the POU (interface) and the project index. Output: IL statements for
 //! one scan of the chart and the hidden variables they use (one extra `VAR` block).
 //! Invariants: every scan runs, in this order (documented in the README):
+//! 0. with CODESYS's SFCInit or SFCReset enabled and TRUE ([`flags`]), the chart's reset: initial
+//!    steps active, the others inactive, step times 0 (SFCInit also keeps transitions from firing
+//!    and the initial steps from the action control while TRUE);
 //! 1. the LD/FBD elements of the body (connection-based conditions), then every transition condition,
 //!    each into `__sfc_c<localId>`, all on the step flags as they were at the start of the scan;
 //! 2. which transitions fire (`__sfc_f<localId>`): all predecessor steps active, condition TRUE, and no
@@ -14,7 +17,8 @@
 //!    (an action of an FB instance, or one whose body is a chart of its own, is a `CAL` there).
 //!
 //! A chart may also be the body of a POU's action ([`crate::body`]): its hidden variables are then
-//! renamed per action ([`names::in_action`]).
+//! renamed per action ([`names::in_action`]), except a flag variable ladderc declares
+//! (`SFCReset`, one variable of the POU).
 //!
 //! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
 //! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
@@ -445,7 +449,11 @@ fn reset(
         out.push(il::op(Op::Ld, il::var(rst, s.span)));
         let set = if s.initial { Op::S } else { Op::R };
         out.push(il::op(set, il::var(&x, s.span)));
-        out.push(il::sel(il::var(&t, s.span), il::lit_time(0, s.span), s.span));
+        out.push(il::sel(
+            il::var(&t, s.span),
+            il::lit_time(0, s.span),
+            s.span,
+        ));
         out.push(il::op(Op::St, il::var(&t, s.span)));
         // the timer sees IN = FALSE in a reset scan (then the step's flag, in `step_times`)
         out.push(il::op(Op::Ld, il::var(&x, s.span)));
