@@ -51,7 +51,11 @@ pub fn read(ctx: &Ctx, el: &Element) -> Vec<Flag> {
             if !on("Use") || !crate::values::is_ident(f.name) {
                 continue;
             }
-            let name = if f.name.len() >= 3 && f.name[..3].eq_ignore_ascii_case("SFC") {
+            let name = if f
+                .name
+                .get(..3)
+                .is_some_and(|p| p.eq_ignore_ascii_case("SFC"))
+            {
                 f.name.to_string()
             } else {
                 format!("SFC{}", f.name)
