@@ -115,10 +115,18 @@ pub fn lower_pou_body(
             Some((stmts, blocks))
         }
         "SFC" => {
-            let (stmts, hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
+            let (stmts, mut hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
             // the chart calls the actions whose body is a chart of their own (`CAL Act`)
             let stmts = inline(ctx, stmts);
             let mut blocks = acts.blocks;
+            // a flag variable declared implicitly (`SFCReset`) is one variable of the POU, also
+            // when a chart of its actions declared it
+            hidden.retain(|v| {
+                !blocks
+                    .iter()
+                    .flat_map(|b| b.vars.iter())
+                    .any(|d| d.name.key() == v.name.key())
+            });
             if !hidden.is_empty() {
                 blocks.push(VarBlock::locals(hidden, span));
             }
@@ -159,7 +167,8 @@ struct LoweredActions {
 /// SFC or ST body is lowered to IL, and also handed to [`il_frontend::actions::link`] (through
 /// `ctx.actions`) for calls through an instance. An SFC body is one scan of its chart
 /// ([`crate::sfc::lower_chart`]), whose hidden variables (steps, step times, action control) are
-/// the POU's, renamed per action ([`crate::sfc::names::in_action`]). What is left (no name, a body
+/// the POU's, renamed per action ([`crate::sfc::names::in_action`]); its SFC flags are read from
+/// the action's vendor data, else the POU's ([`crate::sfc::flags`]). What is left (no name, a body
 /// in no known language) is W3401.
 fn lower_actions<'e, 'a>(
     ctx: &mut Ctx,
@@ -240,10 +249,22 @@ fn lower_actions<'e, 'a>(
             "SFC" => {
                 // one scan of the chart per call; its state (steps, timers, action control) is
                 // the POU's, namespaced by the action so two charts never share a name
-                let chart = crate::sfc::chart::read(ctx, b, name);
+                let mut chart = crate::sfc::chart::read(ctx, b, name);
+                // its SFC flags: the action's own settings, else the POU's
+                chart.flags = crate::sfc::flags::read(ctx, a);
+                if chart.flags.is_empty() {
+                    chart.flags = crate::sfc::flags::read(ctx, pou_el);
+                }
                 let (mut stmts, vars) = crate::sfc::lower_chart(ctx, index, pou_el, pou, b, chart);
                 let mut renames = Renames::default();
                 for mut v in vars {
+                    if !v.name.name.starts_with("__") {
+                        // a flag CODESYS declares implicitly (`SFCReset`): the POU's one variable
+                        if !hidden.iter().any(|h| h.name.key() == v.name.key()) {
+                            hidden.push(v);
+                        }
+                        continue;
+                    }
                     let new = crate::sfc::names::in_action(n, &v.name.name);
                     renames.bases.insert(v.name.key(), new.clone());
                     v.name.name = new;

@@ -385,7 +385,7 @@ fn version(ctx: &mut Ctx, root: &Element) -> Version {
 
 /// Whether ladderc reads a vendor data block (`<data name="...">`): the CODESYS/TwinCAT global
 /// variable lists, applications (their tasks, data types and POUs), task settings, and the methods
-/// (compiled) and properties (E0303) of POUs.
+/// (compiled) and properties (E0303) of POUs, the SFC settings of charts.
 fn is_read_vendor_data(name: &str) -> bool {
     [
         "/globalvars",
@@ -400,6 +400,9 @@ fn is_read_vendor_data(name: &str) -> bool {
         // a CODESYS SFC element's attributes: a step's entry, step and exit actions
         // (`sfc::chart::StepAction`); the others repeat what the element says (names, conditions)
         "/sfc/element",
+        // a CODESYS chart's SFC settings: its flags (`sfc::flags`: SFCInit and SFCReset run,
+        // every other enabled flag is W3402)
+        "/sfcsettings",
     ]
     .iter()
     .any(|s| name.ends_with(s))

@@ -502,13 +502,33 @@ fn duration_of(act: &Action, q: Qualifier) -> Option<Operand> {
 }
 
 /// The action control of one action: computes `Q` (and `A` for body actions, or the variable).
-pub fn control(act: &Action, steps: &[Step], hidden: &mut Hidden, out: &mut Vec<IlStmt>) {
+/// `chart_reset` (CODESYS's SFCInit / SFCReset, [`super::flags`]) resets the stored actions like
+/// an `R` qualifier.
+pub fn control(
+    act: &Action,
+    steps: &[Step],
+    chart_reset: Option<&Operand>,
+    hidden: &mut Hidden,
+    out: &mut Vec<IlStmt>,
+) {
     let span = act.span;
     let k = &act.key;
     let part = |p: &str| names::action_part(k, p);
     let v = |n: &str| il::var(n, span);
     let f = |inst: &str, pin: &str| il::field(inst, pin, span);
-    let r = input(act, Qualifier::R, steps, hidden, out).unwrap_or(il::lit_bool(false, span));
+    let r = input(act, Qualifier::R, steps, hidden, out);
+    let r = match (r, chart_reset) {
+        (r, None) => r.unwrap_or(il::lit_bool(false, span)),
+        (None, Some(c)) => c.clone(),
+        (Some(r), Some(c)) => {
+            let rr = part("Rr");
+            hidden.declare(&rr, "BOOL", None, span);
+            out.push(il::op(Op::Ld, r));
+            out.push(il::op(Op::Or, c.clone()));
+            out.push(il::op(Op::St, v(&rr)));
+            v(&rr)
+        }
+    };
     // Terms of Q: each a list of (op, negate, operand) starting with LD.
     let mut terms: Vec<Vec<(Op, bool, Operand)>> = Vec::new();
     if let Some(n) = input(act, Qualifier::N, steps, hidden, out) {

@@ -151,6 +151,9 @@ pub struct Chart<'e, 'a> {
     pub associations: Vec<Association<'e, 'a>>,
     /// The LD/FBD elements of the body (for connection-based conditions).
     pub network_elements: Vec<Element<'a>>,
+    /// The SFC flags the export enables for the chart (CODESYS vendor data of the POU or action,
+    /// [`super::flags::read`]); empty when read from the body alone.
+    pub flags: Vec<super::flags::Flag>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -597,6 +600,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         transitions,
         associations,
         network_elements,
+        flags: Vec::new(),
     }
 }
 

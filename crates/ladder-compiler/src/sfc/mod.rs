@@ -3,6 +3,9 @@
 //! Input: a POU's `<SFC>` element, the POU (interface) and the project index. Output: IL statements for
 //! one scan of the chart and the hidden variables they use (one extra `VAR` block).
 //! Invariants: every scan runs, in this order (documented in the README):
+//! 0. with CODESYS's SFCInit or SFCReset enabled and TRUE ([`flags`]), the chart's reset: initial
+//!    steps active, the others inactive, step times 0 (SFCInit also keeps transitions from firing
+//!    and the initial steps from the action control while TRUE);
 //! 1. the LD/FBD elements of the body (connection-based conditions), then every transition condition,
 //!    each into `__sfc_c<localId>`, all on the step flags as they were at the start of the scan;
 //! 2. which transitions fire (`__sfc_f<localId>`): all predecessor steps active, condition TRUE, and no
@@ -14,13 +17,15 @@
 //!    (an action of an FB instance, or one whose body is a chart of its own, is a `CAL` there).
 //!
 //! A chart may also be the body of a POU's action ([`crate::body`]): its hidden variables are then
-//! renamed per action ([`names::in_action`]).
+//! renamed per action ([`names::in_action`]), except a flag variable ladderc declares
+//! (`SFCReset`, one variable of the POU).
 //!
 //! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
 //! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
 
 pub mod actions;
 pub mod chart;
+pub mod flags;
 pub mod il;
 pub mod snippet;
 pub mod st_bridge;
@@ -116,7 +121,8 @@ pub fn lower(
         );
         return (Vec::new(), Vec::new());
     }
-    let chart = chart::read(ctx, sfc, &pou_name);
+    let mut chart = chart::read(ctx, sfc, &pou_name);
+    chart.flags = flags::read(ctx, pou_el);
     lower_chart(ctx, index, pou_el, pou, sfc, chart)
 }
 
@@ -149,6 +155,10 @@ pub fn lower_chart<'e, 'a>(
         hidden.declare(&names::x(&s.name), "BOOL", init, s.span);
         hidden.declare(&names::t(&s.name), "TIME", None, s.span);
     }
+
+    // CODESYS's SFCInit / SFCReset: the chart's reset, before anything reads the steps.
+    let ctl = flags::control(ctx, pou, &chart.flags, &mut hidden);
+    let rst = reset(&chart.steps, &ctl, &mut hidden, &mut out);
 
     // Step times, refreshed with this scan's clock before the conditions read them.
     step_times(&chart.steps, &mut hidden, &mut out);
@@ -275,6 +285,9 @@ pub fn lower_chart<'e, 'a>(
             first = false;
         }
         out.push(il::op(Op::And, il::var(&names::cond(&t.id), span)));
+        if let Some(init) = &ctl.init {
+            out.push(il::opn(Op::And, init.clone()));
+        }
         let mut earlier: Vec<usize> = t
             .pre
             .iter()
@@ -349,9 +362,16 @@ pub fn lower_chart<'e, 'a>(
     }
     step_times(&chart.steps, &mut hidden, &mut out);
 
-    // 5. Actions: control, then bodies.
+    // 5. Actions: control, then bodies. While SFCInit holds the chart, the action control sees
+    // its initial steps inactive (they stay active for conditions and bodies).
+    if let Some(init) = &ctl.init {
+        mask_initial(&chart.steps, init, Op::R, &mut out);
+    }
     for a in &acts {
-        actions::control(a, &chart.steps, &mut hidden, &mut out);
+        actions::control(a, &chart.steps, rst.as_ref(), &mut hidden, &mut out);
+    }
+    if let Some(init) = &ctl.init {
+        mask_initial(&chart.steps, init, Op::S, &mut out);
     }
     for a in &acts {
         let code = match &a.target {
@@ -401,6 +421,72 @@ pub fn lower_chart<'e, 'a>(
     }
     renames.apply(&mut out);
     (out, hidden.vars)
+}
+
+/// The chart's reset by CODESYS's SFCInit / SFCReset (either TRUE, `__sfc_rst`): the initial steps
+/// active, every other step inactive, every step timer stopped and `Step.T` zero, so that the
+/// initial steps count from 0 again in this scan. Returns `__sfc_rst` (it also resets the stored
+/// actions, [`actions::control`]), or `None` when neither flag is enabled.
+fn reset(
+    steps: &[chart::Step],
+    ctl: &flags::Control,
+    hidden: &mut Hidden,
+    out: &mut Vec<IlStmt>,
+) -> Option<il_frontend::ast::Operand> {
+    let flags: Vec<&il_frontend::ast::Operand> = ctl.init.iter().chain(&ctl.reset).collect();
+    let (first, rest) = flags.split_first()?;
+    let span = steps.first().map(|s| s.span).unwrap_or_default();
+    let (rst, tin) = ("__sfc_rst", "__sfc_tin");
+    hidden.declare(rst, "BOOL", None, span);
+    hidden.declare(tin, "BOOL", None, span);
+    out.push(il::op(Op::Ld, (*first).clone()));
+    for f in rest {
+        out.push(il::op(Op::Or, (*f).clone()));
+    }
+    out.push(il::op(Op::St, il::var(rst, span)));
+    for s in steps {
+        let (x, t) = (names::x(&s.name), names::t(&s.name));
+        out.push(il::op(Op::Ld, il::var(rst, s.span)));
+        let set = if s.initial { Op::S } else { Op::R };
+        out.push(il::op(set, il::var(&x, s.span)));
+        out.push(il::sel(
+            il::var(&t, s.span),
+            il::lit_time(0, s.span),
+            s.span,
+        ));
+        out.push(il::op(Op::St, il::var(&t, s.span)));
+        // the timer sees IN = FALSE in a reset scan (then the step's flag, in `step_times`)
+        out.push(il::op(Op::Ld, il::var(&x, s.span)));
+        out.push(il::opn(Op::And, il::var(rst, s.span)));
+        out.push(il::op(Op::St, il::var(tin, s.span)));
+        out.push(il::call(
+            &names::timer(&s.name),
+            vec![
+                ("IN", il::var(tin, s.span)),
+                ("PT", il::lit_time(STEP_TIME_LIMIT_NS, s.span)),
+            ],
+            s.span,
+        ));
+    }
+    Some(il::var(rst, span))
+}
+
+/// `LD init; R/S` every initial step flag (`op`): hides them from the action control while SFCInit
+/// holds the chart, then shows them again.
+fn mask_initial(
+    steps: &[chart::Step],
+    init: &il_frontend::ast::Operand,
+    op: Op,
+    out: &mut Vec<IlStmt>,
+) {
+    let initial: Vec<&chart::Step> = steps.iter().filter(|s| s.initial).collect();
+    if initial.is_empty() {
+        return;
+    }
+    out.push(il::op(Op::Ld, init.clone()));
+    for s in initial {
+        out.push(il::op(op, il::var(&names::x(&s.name), s.span)));
+    }
 }
 
 /// `Step.T`: a TON per step (IN = the step flag) gives the time since activation; `T` follows it while

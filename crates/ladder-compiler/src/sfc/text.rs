@@ -294,6 +294,7 @@ pub fn lower(
         transitions,
         associations,
         network_elements: Vec::new(),
+        flags: Vec::new(),
     };
     let sfc_el = element("SFC", "SFC", body.start..body.start);
     super::lower_chart(&mut ctx, index, &pou_el, pou, &sfc_el, chart)
