@@ -346,6 +346,25 @@ fn a_codesys_execute_box_runs_its_st_code() {
             .starts_with("bad.xml:35:12: error[E1001]: undeclared name `nope` [POU `PLC_PRG`, network 1, localId 2]"),
         "{lines:?}"
     );
+    // an input other than EN is one E3018 at the pin, with its hint; the box's code is not run
+    let (code, lines) = check_text(
+        "pins.xml",
+        &src.replacen(
+            "<variable formalParameter=\"EN\"><connectionPointIn><connection refLocalId=\"1\" />",
+            "<variable formalParameter=\"Go\"><connectionPointIn><connection refLocalId=\"1\" />",
+            1,
+        ),
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].starts_with("pins.xml:26:17:")
+            && errors[0].contains(
+                "error[E3018]: EXECUTE has no input `Go` [POU `PLC_PRG`, network 1, localId 2] (hint: an EXECUTE box takes only EN"
+            ),
+        "{lines:?}"
+    );
 }
 
 /// TwinCAT's LD export of the PPU (`PLCOpenXML_Scenario_9_LD.xml`) wires a contact to a TON box

@@ -537,39 +537,17 @@ impl NetLowering<'_, '_> {
     ) {
         let node = &self.g.nodes[i];
         let span = node.span;
-        let mut en = None;
-        for pin in inputs {
-            let Some(v) = self.input_val(ctx, &pin.wires, i) else {
-                if !pin.wires.is_empty() {
-                    self.poisoned.insert(i);
-                    return;
-                }
-                continue;
-            };
-            if !pin.name.eq_ignore_ascii_case("EN") {
-                let d = self.diag(
-                    ctx,
-                    code::E3018,
-                    i,
-                    pin.span,
-                    format!(
-                        "the call of action `{}` has no input `{}`",
-                        shown_callee(&callee),
-                        pin.name
-                    ),
-                )
-                .with_hint("an action box takes only EN (and gives ENO); set the block's inputs before the call");
-                ctx.report(d);
-                continue;
-            }
-            let v = if pin.negated {
-                self.val(Val::Not(v), pin.span)
-            } else {
-                v
-            };
-            self.check_bool(ctx, i, v, pin.span, format_args!("EN input"));
-            en = Some(v);
-        }
+        let Some(en) = self.only_en(ctx, i, inputs, |pin| {
+            (
+                format!(
+                    "the call of action `{}` has no input `{pin}`",
+                    shown_callee(&callee)
+                ),
+                "an action box takes only EN (and gives ENO); set the block's inputs before the call",
+            )
+        }) else {
+            return;
+        };
         let call = IlStmt::Instr(Instruction {
             kind: InstrKind::Call {
                 cond: Condition::Always,

@@ -121,34 +121,14 @@ impl NetLowering<'_, '_> {
     ) {
         let node = &self.g.nodes[i];
         let span = node.span;
-        let mut en = None;
-        for pin in inputs {
-            let Some(v) = self.input_val(ctx, &pin.wires, i) else {
-                if !pin.wires.is_empty() {
-                    self.poisoned.insert(i);
-                    return;
-                }
-                continue;
-            };
-            if !pin.name.eq_ignore_ascii_case("EN") {
-                let d = self.diag(
-                    ctx,
-                    code::E3018,
-                    i,
-                    pin.span,
-                    format!("EXECUTE has no input `{}`", pin.name),
-                );
-                ctx.report(d);
-                continue;
-            }
-            let v = if pin.negated {
-                self.val(Val::Not(v), pin.span)
-            } else {
-                v
-            };
-            self.check_bool(ctx, i, v, pin.span, format_args!("EN input"));
-            en = Some(v);
-        }
+        let Some(en) = self.only_en(ctx, i, inputs, |pin| {
+            (
+                format!("EXECUTE has no input `{pin}`"),
+                "an EXECUTE box takes only EN (and gives ENO); its ST statements read the variables themselves",
+            )
+        }) else {
+            return;
+        };
         let mut local = diagnostics::Diagnostics::new();
         // `&gt;=` is `>` and padding: join the operator again
         let mut src = text.text.clone();
@@ -214,6 +194,44 @@ impl NetLowering<'_, '_> {
             span,
         });
         self.eno_outputs(i, en, outputs);
+    }
+
+    /// The EN of a box that takes only EN (an EXECUTE box, an action call): `Some(None)` without
+    /// EN, `None` when a wired input failed to lower (the box is poisoned). Any other input gets
+    /// E3018 with the message and hint `other` gives for its name.
+    pub(super) fn only_en(
+        &mut self,
+        ctx: &mut Ctx,
+        i: usize,
+        inputs: &[InPin],
+        other: impl Fn(&str) -> (String, &'static str),
+    ) -> Option<Option<ValId>> {
+        let mut en = None;
+        for pin in inputs {
+            let Some(v) = self.input_val(ctx, &pin.wires, i) else {
+                if !pin.wires.is_empty() {
+                    self.poisoned.insert(i);
+                    return None;
+                }
+                continue;
+            };
+            if !pin.name.eq_ignore_ascii_case("EN") {
+                let (msg, hint) = other(&pin.name);
+                let d = self
+                    .diag(ctx, code::E3018, i, pin.span, msg)
+                    .with_hint(hint);
+                ctx.report(d);
+                continue;
+            }
+            let v = if pin.negated {
+                self.val(Val::Not(v), pin.span)
+            } else {
+                v
+            };
+            self.check_bool(ctx, i, v, pin.span, format_args!("EN input"));
+            en = Some(v);
+        }
+        Some(en)
     }
 
     /// The outputs of a box whose ENO is its EN (an EXECUTE box, an action call): every output
