@@ -699,7 +699,13 @@ impl<'s> Ctx<'s> {
     /// Adds one item to a POU being collected; a `VAR` block after the first instruction is error E0015.
     pub fn pou_item(&mut self, mut parts: PouParts, item: PouItem) -> PouParts {
         match item {
-            PouItem::Stmt(Some(s)) => parts.body.push(s),
+            PouItem::Stmt(Some(s)) => {
+                if parts.body.len() == LONG_BODY && parts.body.capacity() == LONG_BODY {
+                    let hint = long_body_hint(&parts.body[0], &s, self.src.len() + self.base);
+                    parts.body.reserve(hint);
+                }
+                parts.body.push(s)
+            }
             PouItem::Stmt(None) => {}
             PouItem::Vars(v) => {
                 if let Some(first) = parts.body.first() {
@@ -1233,6 +1239,27 @@ impl<'s> Ctx<'s> {
         }
         self.hint(code::E0011, msg, s, end, &hint);
     }
+}
+
+/// A body that reaches this many statements (a power of two: the list's capacity then, grown by
+/// doubling from empty) gets room for the rest of its text at once ([`long_body_hint`]).
+const LONG_BODY: usize = 4096;
+
+/// Room for the statements of a long body still to come, estimated from the bytes per statement
+/// of its first [`LONG_BODY`] (`first` and `here`) and the text left up to `text_end`: the list of
+/// a long body is then not regrown by doubling (each regrowth copied it into fresh pages: a
+/// 1,000,000-line POU's 88 MB list touched about 90 MB more). The estimate reaches to the end of the
+/// text, past the POU's end when other POUs follow; the room not used is never touched, and
+/// [`Ctx::pou`] gives it back (`shrink_to_fit` keeps a large list where it is).
+fn long_body_hint(first: &IlStmt, here: &IlStmt, text_end: usize) -> usize {
+    let start = |s: &IlStmt| match s {
+        IlStmt::Label(i) => i.span.start as usize,
+        IlStmt::Instr(i) => i.span.start as usize,
+    };
+    let (first, here) = (start(first), start(here));
+    // at least 4 bytes per statement (`l:` and a line end, `LD a`): a bound on the room asked for
+    let per = (here.saturating_sub(first) / LONG_BODY).max(4);
+    text_end.saturating_sub(here) / per + 1
 }
 
 /// Byte length of the word starting at `at` (an operator keyword).

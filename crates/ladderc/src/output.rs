@@ -12,6 +12,10 @@
 //! - Every file is written to a temporary file in its destination folder and renamed over the old one,
 //!   so a reader never sees a partly written file; an I/O error before the renames leaves the folder as
 //!   it was. The manifest is renamed into place last.
+//! - No file is `fsync`ed (as cc, rustc and make do not): the output is atomic against a crash of
+//!   ladderc, and as durable as the file system makes a rename; durability across a power loss is the
+//!   build system's business. Syncing the nine files of a build made it wait for the disk (about
+//!   50 ms of wall time on 10,000 rungs; crates/ladderc/BENCHMARKS.md, Round 14).
 //! - A regular file at `DIR` is never replaced by a folder. `DIR` may be `.` or any existing folder.
 
 use sha2::{Digest, Sha256};
@@ -302,7 +306,6 @@ fn stage(dir: &Path, contents: &[u8]) -> std::io::Result<tempfile::NamedTempFile
     }
     let mut f = b.tempfile_in(dir)?;
     f.write_all(contents)?;
-    f.as_file().sync_data()?;
     Ok(f)
 }
 

@@ -107,6 +107,10 @@ pub(super) struct Rec {
     pub(super) args: Vec<(ArgBinding, Ty)>,
 }
 
+/// The length at which a body's list of pending records (grown by doubling from empty: a power of two)
+/// gets room for all the rest of the body at once (see [`Body::record`]).
+const LONG_PENDING: usize = 4096;
+
 /// The facts index of a record not stored yet.
 pub(super) const PENDING: u32 = u32::MAX;
 
@@ -554,6 +558,13 @@ impl Body<'_, '_> {
             return;
         }
         if rec.has_literal_types() {
+            if self.pending.len() == LONG_PENDING && self.pending.capacity() == LONG_PENDING {
+                // A long body: room for every instruction still to come (an upper bound), so that
+                // the list is not regrown by doubling (each regrowth copied it into fresh pages);
+                // the room not used is never touched, and the list goes when the body is done.
+                self.pending
+                    .reserve(self.recs.capacity().saturating_sub(slot));
+            }
             self.pending.push((slot, rec));
         } else {
             let facts = self.finish(rec);
