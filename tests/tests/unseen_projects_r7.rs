@@ -8,6 +8,12 @@
 //!   with the POUs (`addData/data[.../pou]/pou`) and data types (`.../datatype`) inside that
 //!   resource's `<addData>`, `<types>` left empty. Before, those POUs were not read and the task's
 //!   `pouInstance` was E1024 "unknown program".
+//! - **EN and ENO of a user function's formal call** (IEC 61131-3 Table 18), in ST and IL: ENO is
+//!   TRUE unless the body resets it (`ENO := FALSE`, `R ENO`), and `ENO => ok` stores it; with
+//!   `EN := FALSE` the function is not executed (its result is its type's initial value, its
+//!   outputs are not written, ENO is FALSE). Before, both were dropped silently: the function ran
+//!   whatever EN said and `ok` kept its value (the C function's ENO was a local). Found running the
+//!   IL function of a PLCopen example project side by side with matiec, which agrees.
 
 mod common;
 use common::{column, run_traced};
@@ -35,4 +41,57 @@ fn codesys_device_export_reads_pous_and_types_from_the_resource_vendor_data() {
         [1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 5.0, 5.0, 0.0, 0.0, 1.0, 1.0],
         "{trace}"
     );
+}
+
+/// ST: `ENO =>` reads what the body left (FALSE once it clamps), and `EN := k MOD 2 = 0` runs the
+/// function on even `k` only: on odd `k` the result is 0, ENO FALSE and the output `over => o2`
+/// keeps its value.
+#[test]
+fn user_function_en_and_eno_in_st() {
+    let (trace, _) = run_traced(
+        &fixture("user_function_en_eno.st"),
+        8,
+        "main.r,main.ok,main.r2,main.ok2,main.o2",
+    );
+    let col = |n: &str| column(&trace, n);
+    assert_eq!(
+        col("main.r"),
+        [1.0, 2.0, 3.0, 4.0, 5.0, 5.0, 5.0, 5.0],
+        "{trace}"
+    );
+    assert_eq!(
+        col("main.ok"),
+        [1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0],
+        "{trace}"
+    );
+    assert_eq!(
+        col("main.r2"),
+        [0.0, 20.0, 0.0, 40.0, 0.0, 45.0, 0.0, 45.0],
+        "{trace}"
+    );
+    assert_eq!(
+        col("main.ok2"),
+        [0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0],
+        "{trace}"
+    );
+    assert_eq!(
+        col("main.o2"),
+        [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+        "{trace}"
+    );
+}
+
+/// IL: the distance function sets ENO (`S ENO`) or resets it (`R ENO`) before `RET`; a formal call
+/// over several lines reads it with `ENO => ok` (TMax 10: TRUE while the distance stays below).
+#[test]
+fn user_function_eno_in_il() {
+    let (trace, _) = run_traced(&fixture("user_function_eno.il"), 12, "inst.d2,inst.ok");
+    let d2 = column(&trace, "inst.d2");
+    let ok = column(&trace, "inst.ok");
+    for (k, (d, o)) in d2.iter().zip(&ok).enumerate() {
+        let want = if *d > 10.0 { 0.0 } else { 1.0 };
+        assert_eq!(*o, want, "cycle {k}: distance {d}\n{trace}");
+    }
+    assert_eq!(ok[..9], [1.0; 9], "{trace}");
+    assert_eq!(ok[9..], [0.0; 3], "{trace}");
 }
