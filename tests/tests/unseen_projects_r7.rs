@@ -14,6 +14,19 @@
 //!   outputs are not written, ENO is FALSE). Before, both were dropped silently: the function ran
 //!   whatever EN said and `ok` kept its value (the C function's ENO was a local). Found running the
 //!   IL function of a PLCopen example project side by side with matiec, which agrees.
+//!
+//! The round's differential run against matiec (`scripts/matiec-diff.sh`, live iec2c): 17 ST
+//! programs of the round (OpenPLC Runtime's generated `program.st` of a school course, with the
+//! editor's `(*DBG:...*)` lines removed, as iec2c cannot read them; matiec's own examples; two
+//! OpenPLC projects) agree cycle by cycle; three differ only in `T#14.7s`, which matiec stores as
+//! 14.699999999 s (its C reads the literal through a double) and ladderc as exactly 14.7 s, as
+//! IEC 61131-3 writes it. IL: the distance function above and the manuals' TON example agree (the
+//! distance function differed in ENO before the fix); the manuals' `CAL inst(PT := t, ET => x)`
+//! with `)` on the last parameter's line is accepted by ladderc and refused by iec2c (IEC 61131-3's
+//! IL grammar ends the last parameter with EOL, so iec2c follows the letter there and ladderc the
+//! CODESYS manuals); nested deferred operators (`AND( i1` / `OR( i2` / `ANDN i3` / `)` / `)`,
+//! valid IEC 61131-3 IL, a simple instruction list may hold an IL expression) are refused by iec2c
+//! with a type mismatch, ladderc runs them and the 16 input combinations give the right output.
 
 mod common;
 use common::{column, run_traced};
@@ -94,4 +107,33 @@ fn user_function_eno_in_il() {
     }
     assert_eq!(ok[..9], [1.0; 9], "{trace}");
     assert_eq!(ok[9..], [0.0; 3], "{trace}");
+}
+
+/// Nested deferred operators (`AND( i1` / `OR( i2` / `ANDN i3` / `)` / `)`), which iec2c refuses:
+/// `o0` is `i0 AND (i1 OR (i2 AND NOT i3))` for every combination of the inputs.
+#[test]
+fn nested_deferred_il_operators_give_the_rung_output() {
+    let (trace, _) = run_traced(
+        &fixture("nested_deferred_il.il"),
+        16,
+        "inst.i0,inst.i1,inst.i2,inst.i3,inst.o0",
+    );
+    let b = |n: &str| -> Vec<bool> { column(&trace, n).iter().map(|v| *v != 0.0).collect() };
+    let (i0, i1, i2, i3, o0) = (
+        b("inst.i0"),
+        b("inst.i1"),
+        b("inst.i2"),
+        b("inst.i3"),
+        b("inst.o0"),
+    );
+    let mut seen = std::collections::HashSet::new();
+    for k in 0..16 {
+        seen.insert((i0[k], i1[k], i2[k], i3[k]));
+        assert_eq!(
+            o0[k],
+            i0[k] && (i1[k] || (i2[k] && !i3[k])),
+            "cycle {k}\n{trace}"
+        );
+    }
+    assert_eq!(seen.len(), 16, "{trace}");
 }
