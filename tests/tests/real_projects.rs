@@ -110,7 +110,13 @@ fn wago_e_cockpit_export_runs() {
 fn codesys_home_automation_export_names_its_vendor_libraries() {
     let errors = rejected(
         "MichielVanwelsenaere_HomeAutomation_CoDeSys3_PLCopen.xml",
-        &["E3009", "E3012"],
+        // E3009/E3012: library types and POINTER TO. Since issue #13's seventh round the POUs in
+        // the vendor data of the device's resource are compiled too, and their pointer code (`^`,
+        // calls passing a pointer-typed parameter the declaration left out) is rejected where it
+        // stands: E0108, E0100, E0107, E1011, E3106
+        &[
+            "E3009", "E3012", "E0108", "E0100", "E0107", "E1011", "E3106",
+        ],
     );
     let all = errors.join("\n");
     // the CODESYS-specific parts that are read now: no error about them any more

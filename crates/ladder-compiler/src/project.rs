@@ -97,12 +97,20 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
 
     let types_el = root.child("types");
     let apps = application_resources(root);
+    // resources whose vendor data may hold data types and POUs: the applications', and those of
+    // the `<instances>` configurations (CODESYS V3.5 SP17+ writes a device's application so)
+    let vendor_resources: Vec<&Element> = apps
+        .iter()
+        .copied()
+        .chain(instance_resources(root))
+        .collect();
     let data_types: Vec<TypeDecl> = types_el
         .and_then(|t| t.child("dataTypes"))
         .into_iter()
         .flat_map(|d| d.children_named("dataType"))
         .chain(
-            apps.iter()
+            vendor_resources
+                .iter()
                 .flat_map(|r| application_data(r, "/datatype", "dataType")),
         )
         .filter_map(|e| decls::data_type(ctx, e))
@@ -113,7 +121,11 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
         .and_then(|t| t.child("pous"))
         .into_iter()
         .flat_map(|p| p.children_named("pou"))
-        .chain(apps.iter().flat_map(|r| application_data(r, "/pou", "pou")))
+        .chain(
+            vendor_resources
+                .iter()
+                .flat_map(|r| application_data(r, "/pou", "pou")),
+        )
         .collect();
     let mut headers = Vec::new();
     let mut index = Index::default();
@@ -259,6 +271,17 @@ fn application_resources<'b, 'a>(root: &'b Element<'a>) -> Vec<&'b Element<'a>> 
         .filter(|d| d.attr("name").is_some_and(|n| n.ends_with("/application")))
         .flat_map(|d| d.children_named("resource"))
         .collect()
+}
+
+/// The `<resource>`s of the configurations under `<instances>`. A CODESYS export of a device
+/// (V3.5 SP17 and later, WAGO e!COCKPIT) keeps the application's POUs and data types in the
+/// vendor data of that resource (`resource/addData/data[.../pou]/pou`), not under `<types>`.
+fn instance_resources<'b, 'a>(root: &'b Element<'a>) -> impl Iterator<Item = &'b Element<'a>> {
+    root.child("instances")
+        .and_then(|i| i.child("configurations"))
+        .into_iter()
+        .flat_map(|c| c.children_named("configuration"))
+        .flat_map(|c| c.children_named("resource"))
 }
 
 /// The elements `<element>` of an application resource's vendor data blocks whose name ends

@@ -361,8 +361,8 @@ impl Gen<'_> {
         }
     }
 
-    /// `EN := e` and `ENO => v` of a formal call of a standard function or conversion: the value of
-    /// EN (None: not given, the function runs) and the place of ENO.
+    /// `EN := e` and `ENO => v` of a formal call of a function or conversion: the value of EN
+    /// (None: not given, the function runs) and the place of ENO.
     fn en_eno(&mut self, b: &Body, args: &CallArgs) -> (Option<String>, Option<Place>) {
         let CallArgs::Formal(fargs) = args else {
             return (None, None);
@@ -484,18 +484,46 @@ impl Gen<'_> {
                 }
             }
         }
+        // EN/ENO (IEC 61131-3 Table 18): with EN FALSE the function is not executed, its result
+        // is its type's initial value, its outputs are not written and ENO is FALSE; else ENO is
+        // TRUE unless the body resets it
+        let (en, eno_target) = self.en_eno(b, args);
+        let eno = b.temp();
+        b.line_fmt(format_args!("IEC_BOOL {eno} = 1;"));
+        call_args.push(cfmt!("&{eno}"));
         let call = cfmt!("{}({})", mangle::function(&pou.name), call_args.join(", "));
+        if let Some(e) = &en {
+            b.line_fmt(format_args!("if ({e}) {{"));
+            b.indent += 1;
+        }
+        let mut result = None;
         match (&pou.return_type, info.cr_after.clone()) {
             (Some(rt), Some(after)) => {
                 if let Some(cr) = self.cr(b, &after, span) {
                     let v = convert(&call, rt, &after);
                     b.line_fmt(format_args!("{cr} = {v};"));
+                    result = Some((cr, after));
                 }
             }
             _ => b.line_fmt(format_args!("{call};")),
         }
         for s in after_call {
             b.line(&s);
+        }
+        if en.is_some() {
+            b.indent -= 1;
+            b.line("} else {");
+            b.indent += 1;
+            if let Some((cr, after)) = result {
+                let d = self.default_value(&after, None, span);
+                b.line_fmt(format_args!("{cr} = {d};"));
+            }
+            b.line_fmt(format_args!("{eno} = 0;"));
+            b.indent -= 1;
+            b.line("}");
+        }
+        if let Some(p) = eno_target {
+            self.store_line(b, &p, &eno);
         }
         b.indent -= 1;
         b.line("}");

@@ -474,6 +474,11 @@ impl<'a> Gen<'a> {
                 members.push((d, name, false));
             }
         }
+        members.push((
+            "IEC_BOOL *ladderc_eno".to_string(),
+            "ladderc_eno".to_string(),
+            true,
+        ));
         members
     }
 
@@ -519,9 +524,9 @@ impl<'a> Gen<'a> {
                 _ => {}
             }
         }
-        if params.is_empty() {
-            params.push("void".into());
-        }
+        // ENO (IEC 61131-3 Table 18): the caller's flag, TRUE before the call; the body may
+        // reset it (`ENO := FALSE`, `R ENO`), the caller stores it where `ENO =>` says
+        params.push("IEC_BOOL *ladderc_eno".into());
         Some(format!(
             "{ret} {}({})",
             mangle::function(&p.name),
@@ -631,6 +636,7 @@ impl<'a> Gen<'a> {
                     let _ = writeln!(pre, "    (void){};", mangle::var(&v.name));
                 }
             }
+            pre.push_str("    (void)ladderc_eno;\n");
             if let Some(rt) = p.return_type.as_ref().filter(|_| fr.is_empty()) {
                 let d = ctypes::declare(self.model, rt, &ret_var).unwrap_or_default();
                 let _ = writeln!(pre, "    {d};");

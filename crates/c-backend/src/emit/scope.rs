@@ -258,6 +258,13 @@ impl Gen<'_> {
                     ty: Type::BOOL,
                 }));
             }
+            if key == "ENO" && pou.kind == PouKind::Function {
+                // the caller's flag (`IEC_BOOL *ladderc_eno`), which `ENO =>` of the call reads
+                return Some(Some(Place::Mem {
+                    lv: cfmt!("(*{})", scope.local("ladderc_eno".to_string())),
+                    ty: Type::BOOL,
+                }));
+            }
             if key == "EN" || key == "ENO" {
                 scope.uses_en.set(true);
                 return Some(Some(Place::Mem {
