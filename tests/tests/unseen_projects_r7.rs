@@ -66,32 +66,16 @@ fn user_function_en_and_eno_in_st() {
         8,
         "main.r,main.ok,main.r2,main.ok2,main.o2",
     );
-    let col = |n: &str| column(&trace, n);
-    assert_eq!(
-        col("main.r"),
-        [1.0, 2.0, 3.0, 4.0, 5.0, 5.0, 5.0, 5.0],
-        "{trace}"
-    );
-    assert_eq!(
-        col("main.ok"),
-        [1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0],
-        "{trace}"
-    );
-    assert_eq!(
-        col("main.r2"),
-        [0.0, 20.0, 0.0, 40.0, 0.0, 45.0, 0.0, 45.0],
-        "{trace}"
-    );
-    assert_eq!(
-        col("main.ok2"),
-        [0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0],
-        "{trace}"
-    );
-    assert_eq!(
-        col("main.o2"),
-        [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
-        "{trace}"
-    );
+    let expected: [(&str, [f64; 8]); 5] = [
+        ("main.r", [1.0, 2.0, 3.0, 4.0, 5.0, 5.0, 5.0, 5.0]),
+        ("main.ok", [1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0]),
+        ("main.r2", [0.0, 20.0, 0.0, 40.0, 0.0, 45.0, 0.0, 45.0]),
+        ("main.ok2", [0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0]),
+        ("main.o2", [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
+    ];
+    for (name, want) in expected {
+        assert_eq!(column(&trace, name), want, "{name}: {trace}");
+    }
 }
 
 /// IL: the distance function sets ENO (`S ENO`) or resets it (`R ENO`) before `RET`; a formal call
