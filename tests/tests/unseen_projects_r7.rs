@@ -14,6 +14,10 @@
 //!   outputs are not written, ENO is FALSE). Before, both were dropped silently: the function ran
 //!   whatever EN said and `ok` kept its value (the C function's ENO was a local). Found running the
 //!   IL function of a PLCopen example project side by side with matiec, which agrees.
+//! - **A FOR loop that changes its own control variable** (`i := 5;` in `FOR i := 1 TO 10`, or a
+//!   nested FOR counting with it): IEC 61131-3 forbids it, CODESYS and TwinCAT accept it, and a
+//!   static checker's test suite of the round looped forever on it. ladderc runs it as written and
+//!   warns W3141 at each write; before, nothing was said.
 //!
 //! The round's differential run against matiec (`scripts/matiec-diff.sh`, live iec2c): 17 ST
 //! programs of the round (OpenPLC Runtime's generated `program.st` of a school course, with the
@@ -120,4 +124,34 @@ fn nested_deferred_il_operators_give_the_rung_output() {
         );
     }
     assert_eq!(seen.len(), 16, "{trace}");
+}
+
+/// A FOR body that changes the control variable runs as written (the step is added to what the
+/// body left: passes 1, 2, 6..10 = 7, and `i` is 11 after the loop; the nested FOR on `j` ends the
+/// outer one after its first pass, as `j` is 3 when the outer loop adds its step) and gets W3141
+/// at each write, located, with its hint. Before, no warning.
+#[test]
+fn a_for_loop_that_changes_its_control_variable_runs_as_written_and_warns() {
+    let (trace, stderr) = run_traced(
+        &fixture("for_control_written.st"),
+        2,
+        "main.passes,main.last,main.inner",
+    );
+    assert_eq!(column(&trace, "main.passes"), [7.0, 7.0], "{trace}");
+    assert_eq!(column(&trace, "main.last"), [11.0, 11.0], "{trace}");
+    assert_eq!(column(&trace, "main.inner"), [2.0, 2.0], "{trace}");
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("[W3141]")).collect();
+    assert_eq!(warnings.len(), 2, "{stderr}");
+    assert!(
+        warnings[0].contains(
+            "for_control_written.st:15:9: warning[W3141]: the FOR control variable `i` is changed inside its loop"
+        ) && warnings[0].contains("IEC 61131-3 forbids it"),
+        "{stderr}"
+    );
+    assert!(
+        warnings[1].contains(
+            "for_control_written.st:21:9: warning[W3141]: the FOR control variable `j` is changed inside its loop"
+        ),
+        "{stderr}"
+    );
 }

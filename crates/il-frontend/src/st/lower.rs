@@ -1021,6 +1021,23 @@ impl<'d> PouLowering<'d> {
                 return;
             }
         }
+        let mut writes = Vec::new();
+        writes_of_control(control, body, &mut writes);
+        for at in writes {
+            diags.push(
+                Diagnostic::warning(
+                    code::W3141,
+                    format!(
+                        "the FOR control variable `{}` is changed inside its loop",
+                        control.name
+                    ),
+                )
+                .at(at)
+                .with_primary_label("written inside the loop")
+                .with_label(control.span, "control variable of this FOR")
+                .with_hint("IEC 61131-3 forbids it and the loop may never end: count with another variable, or leave with EXIT"),
+            );
+        }
         let cty = cty.unwrap_or_else(|| named("DINT", control.span));
         self.poisoned = false;
         let mut code = Vec::new();
@@ -1866,6 +1883,56 @@ fn divides_integers(e: &Expr) -> bool {
         }
     }
     divides
+}
+
+/// Where `body` writes the FOR control variable `control` (W3141): an assignment to the variable
+/// itself (not to a field or element of it) and a nested FOR that counts with it, at any depth.
+fn writes_of_control(control: &Ident, body: &[Stmt], found: &mut Vec<Span>) {
+    let is_control = |id: &Ident| id.name.eq_ignore_ascii_case(&control.name);
+    for s in body {
+        match &s.kind {
+            StmtKind::Assign { target, .. } => {
+                if let PlaceBase::Name(id) = &target.base {
+                    if target.accessors.is_empty() && is_control(id) {
+                        found.push(target.span);
+                    }
+                }
+            }
+            StmtKind::If {
+                branches,
+                else_body,
+            } => {
+                for b in branches {
+                    writes_of_control(control, &b.body, found);
+                }
+                writes_of_control(control, else_body.as_deref().unwrap_or_default(), found);
+            }
+            StmtKind::Case {
+                arms, else_body, ..
+            } => {
+                for a in arms {
+                    writes_of_control(control, &a.body, found);
+                }
+                writes_of_control(control, else_body.as_deref().unwrap_or_default(), found);
+            }
+            StmtKind::For {
+                control: inner,
+                body,
+                ..
+            } => {
+                if is_control(inner) {
+                    // the inner loop reports the writes in its own body
+                    found.push(inner.span);
+                } else {
+                    writes_of_control(control, body, found);
+                }
+            }
+            StmtKind::While { body, .. } | StmtKind::Repeat { body, .. } => {
+                writes_of_control(control, body, found);
+            }
+            _ => {}
+        }
+    }
 }
 
 /// What a CASE label selects, for the overlap warning W3140: an integer range, or an enumerated
