@@ -332,7 +332,9 @@ impl<'s> Layout<'s> {
                     self.stack.push(Frame::Type(s, e));
                 }
                 Word::EndType if self.close_until(s, |f| matches!(f, Frame::Type(..))) => {
-                    self.stack.pop();
+                    if let Some(Frame::Type(_, te)) = self.stack.pop() {
+                        self.missing_type_semi(te, s, e);
+                    }
                 }
                 Word::Struct if decl => self.stack.push(Frame::Struct(s, e)),
                 Word::EndStruct => {
@@ -405,6 +407,28 @@ impl<'s> Layout<'s> {
             );
         }
         Tok::Word(want)
+    }
+
+    /// `END_TYPE` right after a type declaration without its `;` (`END_STRUCT END_TYPE`,
+    /// `(Off, On) END_TYPE`, `T : INT END_TYPE`), as CODESYS and TwinCAT write it: IEC 61131-3's
+    /// grammar ends every type declaration with `;`, so W0013 says so, and a synthetic `;` lets the
+    /// declaration stand. `te` is the end of `TYPE`; an empty block (`TYPE END_TYPE`) gets nothing.
+    fn missing_type_semi(&mut self, te: usize, s: usize, e: usize) {
+        if self.decl_start || self.src.get(te..s).is_none_or(|t| t.trim().is_empty()) {
+            return;
+        }
+        self.diags.push(
+            Diagnostic::warning(
+                code::W0013,
+                "the last type declaration before `END_TYPE` has no `;`",
+            )
+            .at(self.span(s, e))
+            .with_primary_label("`;` expected before this")
+            .with_hint(
+                "IEC 61131-3 ends each type declaration with `;` (`END_STRUCT;`); CODESYS accepts it without, and so does ladderc",
+            ),
+        );
+        self.emit(s, Tok::Semi, s);
     }
 
     fn close_all(&mut self, at: usize) {
