@@ -28,6 +28,9 @@ pub struct Ctx<'a> {
     /// The actions of the POUs read so far, each lowered on its own (for calls from other POUs:
     /// `il_frontend::actions::link`); the unit gets them at its end.
     pub actions: Vec<il_frontend::ast::Action>,
+    /// While a POU's interface (and its methods') are read: the reference and pointer types met
+    /// (span, as written), each read as the type it points to; `None` elsewhere (E3012 there).
+    pub references: Option<Vec<(Span, String)>>,
 }
 
 impl<'a> Ctx<'a> {
@@ -73,6 +76,7 @@ impl<'a> Ctx<'a> {
             constants: HashMap::new(),
             local_constants: HashMap::new(),
             actions: Vec::new(),
+            references: None,
         }
     }
     /// The value of a named integer constant (the POU's own first).

@@ -91,8 +91,17 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 Some(TypeRef::Named(Ident::new(name, ctx.attr_span(t, "name"))))
             }
             Some(n) if is_reference(n) => {
-                let msg = format!("type `{}` is not supported here: {REFERENCE}", n.trim());
-                ctx.error(code::E3012, ctx.attr_span(t, "name"), msg);
+                let span = ctx.attr_span(t, "name");
+                let n = n.trim();
+                if let Some(refs) = ctx.references.as_mut() {
+                    // `REFERENCE TO X` / `POINTER TO X` read as `X` (see `Ctx::references`)
+                    refs.push((span, n.to_string()));
+                    let base = n.split_whitespace().nth(2).unwrap_or("");
+                    let base = elementary(&base.to_ascii_uppercase()).unwrap_or(base);
+                    return values::is_ident(base).then(|| TypeRef::Named(Ident::new(base, span)));
+                }
+                let msg = format!("type `{n}` is not supported here: {REFERENCE}");
+                ctx.error(code::E3012, span, msg);
                 None
             }
             _ => {
@@ -164,6 +173,19 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                     None
                 }
             }
+        }
+        "pointer" if ctx.references.is_some() => {
+            // `<pointer><baseType>X</baseType></pointer>` read as `X` (see `Ctx::references`)
+            let base = t.child("baseType").and_then(|b| b.children.first());
+            let written = match base {
+                Some(b) if b.name == "derived" => b.attr("name").unwrap_or("").trim().to_string(),
+                Some(b) => b.name.to_ascii_uppercase(),
+                None => String::new(),
+            };
+            if let Some(refs) = ctx.references.as_mut() {
+                refs.push((span, format!("POINTER TO {written}")));
+            }
+            type_element(ctx, base?)
         }
         other => {
             ctx.error(
