@@ -174,11 +174,12 @@ fn check_takes_the_axes_file_and_says_where_it_looked_for_one() {
 #[test]
 fn check_rejects_what_build_rejects() {
     let dir = tempfile::tempdir().unwrap();
-    // A hierarchical address: it parses and checks, but the C backend refuses it (E2002).
+    // A DINT at a hierarchical word address: it parses and checks, but the C backend refuses it
+    // (E2002: the address's slot holds 2 bytes).
     let prog = write(
         dir.path(),
         "prog.il",
-        "PROGRAM main\nVAR q AT %QW0.0.0.0 : INT; END_VAR\n    LD 1\n    ST q\nEND_PROGRAM\n",
+        "PROGRAM main\nVAR q AT %QW0.0.0.0 : DINT; END_VAR\n    LD 1\n    ST q\nEND_PROGRAM\n",
     );
     let build = ladderc()
         .arg("build")

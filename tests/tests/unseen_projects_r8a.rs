@@ -117,3 +117,103 @@ fn xml_pou_with_pointer_declarations_is_one_located_error() {
     );
     assert!(l.contains("[POU `FB_Average`]"), "{l}");
 }
+
+/// A pump started by a push button on remote I/O (`%IX1.0.0`, stop `%IX1.0.1`), its speed from an
+/// analog input (`%IW0.0`) to an analog output (`%QW0.0.0.0`): the stimulus sets the hierarchical
+/// inputs by their text, the trace reads the outputs so, and `start_again`, declared at the same
+/// address as `start_pb`, reads the same bit.
+#[test]
+fn hierarchical_addresses_run_and_alias() {
+    let trace = common::run_with_stimulus(
+        &fixture("hierarchical_addresses.st"),
+        7,
+        "0,%IW0.0,400\n1,%IX1.0.0,TRUE\n2,%IX1.0.0,FALSE\n3,%IW0.0,800\n4,%IX1.0.1,TRUE\n5,%IX1.0.1,FALSE\n",
+        &[
+            "pump_station.running",
+            "pump_station.starts",
+            "pump_station.start_again",
+            "%QW0.0.0.0",
+            "%QX1.0.0",
+            "%ix1.0.0",
+        ],
+    );
+    assert_eq!(
+        column(&trace, "pump_station.running"),
+        [0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "pump_station.start_again"),
+        [0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "pump_station.starts"),
+        [0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "%QW0.0.0.0"),
+        [0.0, 100.0, 100.0, 200.0, 0.0, 0.0, 0.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "%QX1.0.0"),
+        [0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0],
+        "{trace}"
+    );
+}
+
+/// Distinct hierarchical addresses never share bytes: `%MW0.1` is not `%MW0.0` nor `%MW0`, and
+/// `%MB0.0` is not `%MW0.0`.
+#[test]
+fn distinct_hierarchical_addresses_do_not_overlap() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("slots.st");
+    std::fs::write(
+        &f,
+        "PROGRAM p\nVAR\n  a AT %MW0.0 : INT;\n  b AT %MW0.1 : INT;\n  c AT %MW0 : INT;\n  d AT %MB0.0 : BYTE;\n  e AT %MX0.0.0 : BOOL;\n  f AT %MX0.0.1 : BOOL;\nEND_VAR\na := 1111; b := 2222; c := 3333; d := 16#44; e := TRUE; f := FALSE;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run_traced(&f, 1, "%MW0.0,%MW0.1,%MW0,%MB0.0,%MX0.0.0,%MX0.0.1");
+    assert_eq!(
+        trace.lines().nth(1),
+        Some("0,0,1111,2222,3333,68,1,0"),
+        "{trace}"
+    );
+}
+
+/// What stays E2002, each located with a hint: a variable larger than its hierarchical address's
+/// size, a bit number above 7 in `%IX1.9`; and a run that names a hierarchical address the program
+/// does not use is refused.
+#[test]
+fn unsupported_address_forms_stay_located_errors() {
+    let (code, lines) = common::check_text(
+        "bad.st",
+        "PROGRAM p\nVAR\n  a AT %IW0.0 : DINT;\n  b AT %IX1.9 : BOOL;\nEND_VAR\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines.iter().any(|l| l.contains("bad.st:3:8: error[E2002]")
+            && l.contains("holds 2 byte(s); the variable needs 4")),
+        "{lines:?}"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("bad.st:4:8: error[E2002]") && l.contains("bit number")),
+        "{lines:?}"
+    );
+    let out = ladderc()
+        .args(["run"])
+        .arg(fixture("hierarchical_addresses.st"))
+        .args(["--cycles", "1", "--watch", "%IX9.9.9"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

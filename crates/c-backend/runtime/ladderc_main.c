@@ -76,11 +76,20 @@ static const char *last_part(const char *s) {
     return p;
 }
 
-/* A variable of the table or a direct address; names compare case-insensitively. An unknown name
+/* A variable of the table or a direct address; names compare case-insensitively. A hierarchical
+   address (`%IX1.0.0`) is a table entry of its own; other addresses are decoded. An unknown name
    suggests a variable with the same last part (`Main.x` for the global `x`, or the reverse). */
 static int resolve(const char *name, ladderc_var *out, char *err, size_t errlen) {
     size_t i;
-    if (name[0] == '%') return ladderc_resolve_address(name, out, err, errlen);
+    if (name[0] == '%') {
+        for (i = 0; i < ladderc_var_count; i++) {
+            if (ladderc_vars[i].name && ieq(ladderc_vars[i].name, name)) {
+                *out = ladderc_vars[i];
+                return 0;
+            }
+        }
+        return ladderc_resolve_address(name, out, err, errlen);
+    }
     for (i = 0; i < ladderc_var_count; i++) {
         if (ieq(ladderc_vars[i].name, name)) {
             *out = ladderc_vars[i];

@@ -627,9 +627,9 @@ int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_
     char *end;
     if (*s++ != '%') return fail(err, errlen, "not an address", text);
     switch (toupper((unsigned char)*s++)) {
-    case 'I': area = ladderc_I; size = LADDERC_I_SIZE; break;
-    case 'Q': area = ladderc_Q; size = LADDERC_Q_SIZE; break;
-    case 'M': area = ladderc_M; size = LADDERC_M_SIZE; break;
+    case 'I': area = ladderc_I; size = LADDERC_I_FLAT_SIZE; break;
+    case 'Q': area = ladderc_Q; size = LADDERC_Q_FLAT_SIZE; break;
+    case 'M': area = ladderc_M; size = LADDERC_M_FLAT_SIZE; break;
     default: return fail(err, errlen, "unknown area (expected %I, %Q or %M)", text);
     }
     switch (toupper((unsigned char)*s)) {

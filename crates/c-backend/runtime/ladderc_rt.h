@@ -23,6 +23,17 @@
 #ifndef LADDERC_I_SIZE
 #error "ladderc_config.h must define LADDERC_I_SIZE"
 #endif
+/* The bytes flat addresses (`%IW3`) reach; the rest of an area holds the slots of hierarchical
+   addresses (`%IX1.0.0`), which the watch table names. */
+#ifndef LADDERC_I_FLAT_SIZE
+#define LADDERC_I_FLAT_SIZE LADDERC_I_SIZE
+#endif
+#ifndef LADDERC_Q_FLAT_SIZE
+#define LADDERC_Q_FLAT_SIZE LADDERC_Q_SIZE
+#endif
+#ifndef LADDERC_M_FLAT_SIZE
+#define LADDERC_M_FLAT_SIZE LADDERC_M_SIZE
+#endif
 
 /* ------------------------------------------------------------------ elementary types */
 typedef uint8_t IEC_BOOL; /* always 0 or 1 */

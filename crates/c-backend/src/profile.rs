@@ -246,7 +246,8 @@ impl TargetProfile {
             Box::new(
                 Diagnostic::error(code::E2002, format!("unsupported address `{text}`: {msg}"))
                     .at(addr.span)
-                    .with_primary_label("this address"),
+                    .with_primary_label("this address")
+                    .with_hint("write a bit as byte.bit with a bit from 0 to 7 (`%IX1.1`); an `AT %I*` variable needs a VAR_CONFIG entry that places it; `ladderc explain E2002`"),
             )
         };
         let (index, bit) =
@@ -265,12 +266,10 @@ impl TargetProfile {
                 // `%IX13` (one number, as matiec and some LD editors write): absolute bit 13 = byte 1, bit 5
                 (AddressSize::Bit, [n]) => (n / 8, Some((n % 8) as u8)),
                 (_, [index]) => (*index, None),
-                (_, [_, _]) => return Err(form(
-                    "a byte, word or double word address has one number (bits are %IX byte.bit)",
-                )),
+                // hierarchical: `Gen::locate` (emit/hier.rs) gives each a slot after the area
                 _ => {
                     return Err(form(
-                        "hierarchical addresses (more than byte.bit) are not supported",
+                        "a hierarchical address has no place in the flat area (the C generator gives it a slot of its own)",
                     ))
                 }
             };

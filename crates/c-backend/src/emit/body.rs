@@ -483,7 +483,7 @@ impl<'a> Gen<'a> {
             Operand::Var(r) => self.place(scope, r),
             Operand::Address(a) => {
                 let e = il_frontend::sema::Location::of(a).elementary();
-                match self.profile.locate(a, None) {
+                match self.locate(a, None) {
                     Ok(loc) => Some(Place::Loc {
                         loc,
                         ty: Type::Elementary(e),

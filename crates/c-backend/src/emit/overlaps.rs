@@ -51,7 +51,7 @@ impl Gen<'_> {
                 span,
             };
             let bytes_arg = if v.ty.is_bool() { None } else { Some(size) };
-            let Ok(l) = self.profile.locate(&addr, bytes_arg) else {
+            let Ok(l) = self.locate(&addr, bytes_arg) else {
                 continue;
             };
             let k = placed.len();

@@ -14,7 +14,7 @@ use super::scope::{Place, Scope};
 use super::values::area_array;
 use super::Gen;
 use crate::{ctypes, mangle};
-use il_frontend::ast::{ArgDir, CompilationUnit, LibraryElement, PouKind, VarKind};
+use il_frontend::ast::{AddressSize, ArgDir, CompilationUnit, LibraryElement, PouKind, VarKind};
 use il_frontend::sema::{FbType, PouId, Type, UserTypeDef, Variable};
 use std::fmt::Write as _;
 
@@ -238,7 +238,7 @@ impl Gen<'_> {
         } else {
             super::values::access_bytes(&v.ty)
         };
-        match self.profile.locate(&addr, bytes) {
+        match self.locate(&addr, bytes) {
             Ok(l) => Some(Place::Loc {
                 loc: l,
                 ty: v.ty.clone(),
@@ -360,6 +360,21 @@ impl Gen<'_> {
             for e in m.watch_entries() {
                 out.line(&e);
             }
+        }
+        // each hierarchical address's slot, by its text (`%IX1.0.0`): the host reads and sets it so
+        for (text, area, offset, size) in &self.hier.list {
+            let tag = match size {
+                AddressSize::Bit => "LADDERC_T_BOOL",
+                AddressSize::Byte => "LADDERC_T_BYTE",
+                AddressSize::Word => "LADDERC_T_WORD",
+                AddressSize::DWord => "LADDERC_T_DWORD",
+                AddressSize::LWord => "LADDERC_T_LWORD",
+            };
+            out.line(&cfmt!(
+                "{{ {}, {tag}, NULL, {}, {offset}, 0 }}",
+                mangle::c_string(text.as_bytes()),
+                area_array(*area)
+            ));
         }
         let count = out.count;
         if count == 0 {

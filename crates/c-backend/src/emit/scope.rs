@@ -193,7 +193,7 @@ impl Gen<'_> {
             span: self.address_spans.get(&v.span).copied().unwrap_or(v.span),
         };
         let bytes = if v.ty.is_bool() { None } else { Some(bytes) };
-        match self.profile.locate(&addr, bytes) {
+        match self.locate(&addr, bytes) {
             Ok(l) => Some(Place::Loc {
                 loc: l,
                 ty: v.ty.clone(),
@@ -693,7 +693,7 @@ impl Gen<'_> {
             Operand::Literal(l) => self.literal(l, want),
             Operand::Address(a) => {
                 let e = il_frontend::sema::Location::of(a).elementary();
-                match self.profile.locate(a, None) {
+                match self.locate(a, None) {
                     Ok(loc) => Some(convert_owned(
                         load_expr(&loc, &Type::Elementary(e)),
                         &Type::Elementary(e),
