@@ -217,3 +217,139 @@ fn unsupported_address_forms_stay_located_errors() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// Access paths of an ST configuration: the stimulus sets `speed_setpoint` (READ_WRITE, the
+/// program's `setpoint`), the ramp follows in steps of 10, and the trace reads it through
+/// `belt_speed` (a member of an FB instance), `belt_running` (a structure's member, path without
+/// the resource), `belt_drive.speed` (a whole structure) and `alarm_lamp` (a direct address).
+#[test]
+fn var_access_paths_are_trace_and_stimulus_names() {
+    let trace = common::run_with_stimulus(
+        &fixture("var_access.st"),
+        9,
+        "1,speed_setpoint,30\n5,speed_setpoint,0\n",
+        &[
+            "speed_setpoint",
+            "belt_speed",
+            "belt_running",
+            "belt_drive.speed",
+            "alarm_lamp",
+            "line.setpoint",
+        ],
+    );
+    let ramp = [0.0, 10.0, 20.0, 30.0, 30.0, 20.0, 10.0, 0.0, 0.0];
+    assert_eq!(column(&trace, "belt_speed"), ramp, "{trace}");
+    assert_eq!(column(&trace, "belt_drive.speed"), ramp, "{trace}");
+    assert_eq!(
+        column(&trace, "belt_running"),
+        [0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0],
+        "{trace}"
+    );
+    // the access name and the program's own variable are one variable
+    assert_eq!(
+        column(&trace, "speed_setpoint"),
+        column(&trace, "line.setpoint"),
+        "{trace}"
+    );
+    assert_eq!(column(&trace, "alarm_lamp"), [0.0; 9], "{trace}");
+}
+
+/// READ_ONLY (written, or by default) refuses a stimulus row, for the access name and for a member
+/// of a structured one; the run stops before any cycle with the row's line.
+#[test]
+fn read_only_access_paths_refuse_writes() {
+    for (name, row) in [
+        ("belt_speed", "1,belt_speed,30"),
+        ("belt_running", "1,belt_running,TRUE"),
+        ("belt_drive.speed", "1,belt_drive.speed,5"),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let stim = dir.path().join("s.csv");
+        std::fs::write(&stim, format!("cycle,variable,value\n{row}\n")).unwrap();
+        let out = ladderc()
+            .arg("run")
+            .arg(fixture("var_access.st"))
+            .args(["--cycles", "3", "--stimulus"])
+            .arg(&stim)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{name}: {err}");
+        assert!(
+            err.contains(&format!("s.csv:2: `{name}` is a READ_ONLY access path")),
+            "{name}: {err}"
+        );
+    }
+}
+
+/// The same in an IL file: the configuration's access paths read the counter and clear it.
+#[test]
+fn var_access_in_an_il_configuration() {
+    let trace = common::run_with_stimulus(
+        &fixture("var_access.il"),
+        6,
+        "3,clear_parts,TRUE\n4,clear_parts,FALSE\n",
+        &["parts", "clear_parts"],
+    );
+    assert_eq!(
+        column(&trace, "parts"),
+        [1.0, 2.0, 3.0, 0.0, 1.0, 2.0],
+        "{trace}"
+    );
+}
+
+/// PLCopen XML (tc6_0201): a configuration's `<accessVars>` are the same access paths
+/// (`direction="readWrite"`, `"readOnly"`, none = READ_ONLY).
+#[test]
+fn xml_access_vars_are_access_paths() {
+    let trace = common::run_with_stimulus(
+        &fixture("var_access_tc6.xml"),
+        5,
+        "0,fill_rate,30\n",
+        &["fill_rate", "tank_level", "tank_high"],
+    );
+    assert_eq!(
+        column(&trace, "tank_level"),
+        [30.0, 60.0, 90.0, 120.0, 150.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "tank_high"),
+        [0.0, 0.0, 0.0, 1.0, 1.0],
+        "{trace}"
+    );
+}
+
+/// Each wrong access path is one located E0308 saying what is wrong.
+#[test]
+fn wrong_access_paths_are_located_errors() {
+    let src = std::fs::read_to_string(fixture("var_access.st")).unwrap().replace(
+        "speed_setpoint : cpu.line.setpoint : INT READ_WRITE;",
+        "speed_setpoint : cpu.line.setpoint : DINT READ_WRITE;\n        ghost : cpu.line.nothing : INT;\n        ghost2 : cpu.other.x : INT;\n        ghost3 : line.ramp.foo : INT;\n        speed_setpoint : line.setpoint : INT;",
+    );
+    let (code, lines) = common::check_text("access.st", &src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    let expect = [
+        "access.st:44:9: error[E0308]: access path `speed_setpoint`: the variable is INT, the access path says DINT",
+        "access.st:45:9: error[E0308]: access path `ghost`: program `conveyor` has no variable `nothing`",
+        "access.st:46:9: error[E0308]: access path `ghost2`: no program instance `other` in this configuration",
+        "access.st:47:9: error[E0308]: access path `ghost3`: `FB_Ramp` has no member `foo`",
+        "access.st:48:9: error[E0308]: access path `speed_setpoint`: the access name `speed_setpoint` is declared twice",
+    ];
+    assert_eq!(lines.len(), expect.len(), "{lines:?}");
+    for (l, e) in lines.iter().zip(expect) {
+        assert!(l.starts_with(e), "{l}\nexpected {e}");
+    }
+    let (code, lines) = common::check_text(
+        "dir.st",
+        &std::fs::read_to_string(fixture("var_access.st"))
+            .unwrap()
+            .replace("INT READ_WRITE;", "INT READ_SOMETIMES;"),
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("dir.st:44:9: error[E0308]: this VAR_ACCESS entry cannot be read: the direction is READ_WRITE or READ_ONLY"),
+        "{lines:?}"
+    );
+}

@@ -58,6 +58,16 @@ static void usage(FILE *f) {
             "  --trace-raw      REAL/LREAL values of the trace as raw bits, for ladderc run to format\n");
 }
 
+/* The first `n` characters of `a` and `b` are equal, ignoring ASCII case. */
+static int strncasecmp_portable(const char *a, const char *b, size_t n) {
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (toupper((unsigned char)a[i]) != toupper((unsigned char)b[i])) return 1;
+        if (!a[i]) return 0;
+    }
+    return 0;
+}
+
 static int ieq(const char *a, const char *b) {
     while (*a && *b) {
         if (toupper((unsigned char)*a) != toupper((unsigned char)*b)) return 0;
@@ -105,6 +115,17 @@ static int resolve(const char *name, ladderc_var *out, char *err, size_t errlen)
     }
     snprintf(err, errlen, "unknown variable `%s` (a run without --watch traces every variable; a built program lists them with --list)", name);
     return -1;
+}
+
+/* Whether `name` is an access path declared READ_ONLY (or a member of a structured one, `NAME.x`). */
+static int read_only(const char *name) {
+    size_t i, n;
+    for (i = 0; i < ladderc_read_only_count; i++) {
+        const char *r = ladderc_read_only[i];
+        n = strlen(r);
+        if (!strncasecmp_portable(name, r, n) && (name[n] == '\0' || name[n] == '.' || name[n] == '[')) return 1;
+    }
+    return 0;
 }
 
 static char *trim(char *s) {
@@ -187,6 +208,11 @@ static int load_stimulus(const char *path, stimulus_row **rows_out, size_t *coun
         row.cycle = cycle;
         if (resolve(name, &row.var, err, sizeof err)) {
             fprintf(stderr, "%s:%lu: %s\n", path, (unsigned long)lineno, err);
+            goto bad;
+        }
+        if (read_only(name)) {
+            fprintf(stderr, "%s:%lu: `%s` is a READ_ONLY access path: it cannot be written (declare it READ_WRITE in VAR_ACCESS)\n",
+                    path, (unsigned long)lineno, name);
             goto bad;
         }
         if (ladderc_parse_value(row.var.type, value, &row.value, err, sizeof err)) {

@@ -468,6 +468,9 @@ typedef struct {
 
 extern const ladderc_var ladderc_vars[];
 extern const size_t ladderc_var_count;
+/* The access names declared READ_ONLY in VAR_ACCESS (NULL-terminated): a stimulus may not write them. */
+extern const char *const ladderc_read_only[];
+extern const size_t ladderc_read_only_count;
 void ladderc_program_init(void);
 void ladderc_program_scan(void);
 

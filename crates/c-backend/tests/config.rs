@@ -52,6 +52,7 @@ fn configuration(
     let sp = diagnostics::Span::new(file, 0, 0);
     LibraryElement::Configuration(Configuration {
         name: ident(file, "cfg"),
+        access: Vec::new(),
         globals,
         resources: vec![Resource {
             name: ident(file, "res"),

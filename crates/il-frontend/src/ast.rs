@@ -903,7 +903,28 @@ pub struct Configuration {
     pub globals: Vec<VarBlock>,
     /// A configuration written without `RESOURCE` gets one resource named after the configuration.
     pub resources: Vec<Resource>,
+    /// The access paths of its `VAR_ACCESS` blocks (IEC 61131-3 2.7.1 / 6.8.2).
+    pub access: Vec<AccessDecl>,
     /// From `CONFIGURATION` to `END_CONFIGURATION`.
+    pub span: Span,
+}
+
+/// One access path of a `VAR_ACCESS` block: `name : resource.program.fb.var : TYPE READ_WRITE;`
+/// (or `name : resource.%IX1.1 : BOOL;`). The outside (the host, the trace) reaches the variable by
+/// `name`; READ_ONLY (the default) refuses writes.
+#[derive(Debug, Clone, Serialize)]
+pub struct AccessDecl {
+    /// The access name.
+    pub name: Ident,
+    /// The path's names, the resource's included when written (`res.prog.x` or `prog.x` or `g`).
+    pub path: Vec<Ident>,
+    /// The direct address of a path to one (`res.%IX1.1`).
+    pub address: Option<DirectAddress>,
+    /// The declared type's name (a non-generic type).
+    pub type_name: Ident,
+    /// READ_ONLY (written or by default) rather than READ_WRITE.
+    pub read_only: bool,
+    /// The whole entry.
     pub span: Span,
 }
 

@@ -988,6 +988,7 @@ impl<'s> Ctx<'s> {
             name,
             globals,
             resources,
+            access: Vec::new(),
             span: self.span(l, r),
         }
     }

@@ -491,6 +491,7 @@ fn configuration_tasks_and_program_instances() {
     };
     let config = ast::Configuration {
         name: id("Cell"),
+        access: Vec::new(),
         globals: vec![ast::VarBlock {
             name: None,
             kind: VarKind::Global,

@@ -333,6 +333,7 @@ fn application_configuration(ctx: &mut Ctx, r: &Element) -> Option<Configuration
         globals: Vec::new(),
         span: res.span,
         resources: vec![res],
+        access: Vec::new(),
     })
 }
 
@@ -842,10 +843,81 @@ fn configuration(ctx: &mut Ctx, c: &Element) -> Option<Configuration> {
         .children_named("resource")
         .filter_map(|r| resource(ctx, r))
         .collect();
+    let access = c
+        .children_named("accessVars")
+        .flat_map(|l| l.children_named("accessVariable"))
+        .filter_map(|v| access_variable(ctx, v))
+        .collect();
     Some(Configuration {
         name: Ident::new(name, ctx.attr_span(c, "name")),
         globals,
         resources,
+        access,
+        span,
+    })
+}
+
+/// `<accessVariable alias="n" instancePathAndName="res.prog.x" direction="readWrite"><type>` of a
+/// configuration's `<accessVars>` (tc6_0201 `varListAccess`): the access path `n : res.prog.x : T
+/// READ_WRITE` of an ST configuration, READ_ONLY without `direction`. The path's names all point at
+/// the attribute. One that cannot be read is E0308.
+fn access_variable(ctx: &mut Ctx, v: &Element) -> Option<il_frontend::ast::AccessDecl> {
+    let span = ctx.tag(v);
+    let bad = |ctx: &mut Ctx, why: &str| {
+        ctx.report(
+            Diagnostic::error(code::E0308, format!("this access variable cannot be read: {why}"))
+                .at(span)
+                .with_hint("write alias=\"name\" instancePathAndName=\"resource.program.variable\" direction=\"readWrite\" with a <type>"),
+        );
+        None
+    };
+    let alias = v.attr("alias").map(str::trim).unwrap_or("");
+    if !values::is_ident(alias) {
+        return bad(ctx, "`alias` is not a name");
+    }
+    let path_text = v.attr("instancePathAndName").map(str::trim).unwrap_or("");
+    let pspan = ctx.attr_span(v, "instancePathAndName");
+    let (names, address) = match path_text.find('%') {
+        Some(k) => {
+            let Some(addr) = values::address(&path_text[k..], pspan) else {
+                return bad(ctx, "the path's direct address cannot be read");
+            };
+            (path_text[..k].trim_end_matches('.'), Some(addr))
+        }
+        None => (path_text, None),
+    };
+    let path: Vec<Ident> = names
+        .split('.')
+        .filter(|n| !n.is_empty())
+        .map(|n| Ident::new(n.trim(), pspan))
+        .collect();
+    if path.iter().any(|n| !values::is_ident(&n.name)) || (path.is_empty() && address.is_none()) {
+        return bad(
+            ctx,
+            "`instancePathAndName` is not `resource.program.variable`",
+        );
+    }
+    let ty = v.child("type").and_then(|t| t.children.first());
+    let type_name = match ty {
+        Some(t) if t.name == "derived" => t.attr("name").unwrap_or("").trim().to_string(),
+        Some(t) => t.name.to_ascii_uppercase(),
+        None => String::new(),
+    };
+    if !values::is_ident(&type_name) {
+        return bad(ctx, "its <type> is not an elementary or named type");
+    }
+    let read_only = match v.attr("direction").map(str::trim) {
+        None => true,
+        Some(d) if d.eq_ignore_ascii_case("readOnly") => true,
+        Some(d) if d.eq_ignore_ascii_case("readWrite") => false,
+        Some(_) => return bad(ctx, "`direction` is readWrite or readOnly"),
+    };
+    Some(il_frontend::ast::AccessDecl {
+        name: Ident::new(alias, ctx.attr_span(v, "alias")),
+        path,
+        address,
+        type_name: Ident::new(type_name, span),
+        read_only,
         span,
     })
 }

@@ -6,6 +6,7 @@
 //! Invariants: struct definitions come in dependency order; every POU's C names derive from [`mangle`];
 //! the program is written into one `String` per file, in time linear in the input.
 
+mod access;
 mod body;
 mod calls;
 mod datetime;

@@ -28,10 +28,10 @@ pub(super) struct Instance {
     /// C variable name.
     pub(super) c_name: String,
     /// Table prefix (as written).
-    watch_name: String,
+    pub(super) watch_name: String,
     pub(super) pou: PouId,
     /// (config, resource, index in resource.programs) for configured instances.
-    configured: Option<(usize, usize, usize)>,
+    pub(super) configured: Option<(usize, usize, usize)>,
 }
 
 impl Gen<'_> {
@@ -192,7 +192,7 @@ impl Gen<'_> {
             c.push_str("    ladderc_motion_step();\n");
         }
         c.push_str("}\n\n");
-        self.var_table(c, &instances);
+        self.var_table(c, &instances, &ast_configs);
     }
 
     fn instance_struct(&self, pou: PouId) -> String {
@@ -322,7 +322,12 @@ impl Gen<'_> {
         }
     }
 
-    fn var_table(&mut self, c: &mut String, instances: &[Instance]) {
+    fn var_table(
+        &mut self,
+        c: &mut String,
+        instances: &[Instance],
+        configs: &[&il_frontend::ast::Configuration],
+    ) {
         // Each entry is written into `c` as it is made: no `String` per entry (a 10,000-rung
         // program has 40,000 of them).
         c.push_str("const ladderc_var ladderc_vars[] = {\n");
@@ -361,6 +366,8 @@ impl Gen<'_> {
                 out.line(&e);
             }
         }
+        // access paths (VAR_ACCESS), by their access names
+        let read_only = self.access_entries(configs, instances, &mut out);
         // each hierarchical address's slot, by its text (`%IX1.0.0`): the host reads and sets it so
         for (text, area, offset, size) in &self.hier.list {
             let tag = match size {
@@ -381,9 +388,19 @@ impl Gen<'_> {
             c.push_str("    { NULL, LADDERC_T_BOOL, NULL, NULL, 0, 0 }\n");
         }
         let _ = writeln!(c, "}};\nconst size_t ladderc_var_count = {count};");
+        // the READ_ONLY access names, which a stimulus may not write
+        c.push_str("const char *const ladderc_read_only[] = {");
+        for n in &read_only {
+            let _ = write!(c, " {},", mangle::c_string(n.as_bytes()));
+        }
+        let _ = writeln!(
+            c,
+            " NULL }};\nconst size_t ladderc_read_only_count = {};",
+            read_only.len()
+        );
     }
 
-    fn watch_var(&mut self, v: &Variable, name: &str, lv: &str, out: &mut WatchLines) {
+    pub(super) fn watch_var(&mut self, v: &Variable, name: &str, lv: &str, out: &mut WatchLines) {
         if v.location.is_some() {
             if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
                 let tag = match ty {
@@ -406,7 +423,14 @@ impl Gen<'_> {
         self.watch_value(name, lv, &v.ty, 0, out);
     }
 
-    fn watch_value(&self, name: &str, lv: &str, ty: &Type, depth: usize, out: &mut WatchLines) {
+    pub(super) fn watch_value(
+        &self,
+        name: &str,
+        lv: &str,
+        ty: &Type,
+        depth: usize,
+        out: &mut WatchLines,
+    ) {
         if out.count >= MAX_ENTRIES || depth > 16 {
             return;
         }
@@ -487,7 +511,7 @@ impl Gen<'_> {
 }
 
 /// The lines of the watch table (`ladderc_vars[]`), written into the C text as they are made.
-struct WatchLines<'c> {
+pub(super) struct WatchLines<'c> {
     c: &'c mut String,
     /// Entries written so far.
     count: usize,
@@ -512,7 +536,7 @@ impl WatchLines<'_> {
         self.count += 1;
     }
     /// An entry written whole (`{ ... }`).
-    fn line(&mut self, e: &str) {
+    pub(super) fn line(&mut self, e: &str) {
         self.c.push_str("    ");
         self.c.push_str(e);
         self.c.push_str(",\n");

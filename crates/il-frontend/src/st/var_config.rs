@@ -21,6 +21,80 @@ pub struct ConfigEntry {
     location: Option<crate::ast::DirectAddress>,
     init: Option<crate::ast::Initializer>,
     span: Span,
+    /// A `VAR_ACCESS` entry instead (given to the configuration whose text holds it).
+    access: Option<crate::ast::AccessDecl>,
+}
+
+/// One `VAR_ACCESS` entry (IEC 61131-3 2.7.1 / 6.8.2): `name : [res.]prog.{fb.}var : TYPE
+/// [READ_WRITE | READ_ONLY]` or `name : [res.]%IX1.1 : TYPE ...` (`entry`: its tokens without the
+/// `;`). No direction is READ_ONLY, as the standard says. `Err`: why it cannot be read.
+fn access_entry(
+    file: FileId,
+    src: &str,
+    entry: &[&Token],
+    span: Span,
+) -> Result<crate::ast::AccessDecl, &'static str> {
+    use crate::ast::{DirectAddress, Ident};
+    let ident = |t: &Token| Ident::new(word(src, t), Span::new(file, t.range.start, t.range.end));
+    let expected = "expected `name : resource.program.variable : TYPE READ_WRITE` (or READ_ONLY)";
+    let (Some(name), Some(colon)) = (entry.first(), entry.get(1)) else {
+        return Err(expected);
+    };
+    if name.tok != Tok::Ident || colon.tok != Tok::Colon {
+        return Err(expected);
+    }
+    let mut i = 2;
+    let mut path = Vec::new();
+    let mut address = None;
+    while let Some(t) = entry.get(i) {
+        match &t.tok {
+            Tok::Ident => path.push(ident(t)),
+            Tok::Address(area, size, p) if address.is_none() => {
+                address = Some(DirectAddress {
+                    area: *area,
+                    size: *size,
+                    path: p.clone(),
+                    span: Span::new(file, t.range.start, t.range.end),
+                })
+            }
+            _ => return Err(expected),
+        }
+        i += 1;
+        match entry.get(i).map(|t| &t.tok) {
+            Some(Tok::Dot) if address.is_none() => i += 1,
+            Some(Tok::Colon) => break,
+            _ => return Err(expected),
+        }
+    }
+    if path.is_empty() && address.is_none() {
+        return Err(expected);
+    }
+    if address.is_some() && path.len() > 1 {
+        return Err("a direct address is reached as `resource.%IX1.1` or `%IX1.1`");
+    }
+    let Some(ty) = entry
+        .get(i + 1)
+        .filter(|t| matches!(t.tok, Tok::Ident | Tok::Kw(_)))
+    else {
+        return Err("expected the access path's type after `:`");
+    };
+    let read_only = match entry.get(i + 2) {
+        None => true,
+        Some(d) if word(src, d).eq_ignore_ascii_case("READ_ONLY") => true,
+        Some(d) if word(src, d).eq_ignore_ascii_case("READ_WRITE") => false,
+        Some(_) => return Err("the direction is READ_WRITE or READ_ONLY"),
+    };
+    if entry.len() > i + 3 {
+        return Err("unexpected text after the direction");
+    }
+    Ok(crate::ast::AccessDecl {
+        name: ident(name),
+        path,
+        address,
+        type_name: ident(ty),
+        read_only,
+        span,
+    })
 }
 
 /// The `VAR_CONFIG ... END_VAR` blocks of a text: their ranges (blanked before the IL parser reads the
@@ -37,7 +111,8 @@ pub(super) fn var_config_blocks(
     let mut entries = Vec::new();
     let mut k = 0;
     while k < toks.len() {
-        if !is_word(src, &toks[k], "VAR_CONFIG") {
+        let access = is_word(src, &toks[k], "VAR_ACCESS");
+        if !access && !is_word(src, &toks[k], "VAR_CONFIG") {
             k += 1;
             continue;
         }
@@ -55,6 +130,27 @@ pub(super) fn var_config_blocks(
                 continue;
             };
             let span = Span::new(file, first.range.start, entry[entry.len() - 1].range.end);
+            if access {
+                match access_entry(file, src, &entry, span) {
+                    Ok(a) => entries.push(ConfigEntry {
+                        path: Vec::new(),
+                        location: None,
+                        init: None,
+                        span,
+                        access: Some(a),
+                    }),
+                    Err(why) => diags.push(
+                        Diagnostic::error(
+                            code::E0308,
+                            format!("this VAR_ACCESS entry cannot be read: {why}"),
+                        )
+                        .at(span)
+                        .with_hint("write `name : resource.program.variable : INT READ_WRITE;` inside CONFIGURATION"),
+                    ),
+                }
+                entry.clear();
+                continue;
+            }
             let bad = |diags: &mut Diagnostics, why: &str| {
                 diags.push(
                     Diagnostic::error(code::E0306, format!("this VAR_CONFIG entry cannot be read: {why}"))
@@ -130,6 +226,7 @@ pub(super) fn var_config_blocks(
                 location,
                 init,
                 span,
+                access: None,
             });
             entry.clear();
         }
@@ -156,6 +253,36 @@ pub fn apply_var_config(
     }
     let mut clones: std::collections::HashMap<String, String> = Default::default();
     let mut next = 0;
+    // VAR_ACCESS entries: to the configuration whose text holds them
+    let (access, entries): (Vec<_>, Vec<_>) = entries.into_iter().partition(|e| e.access.is_some());
+    for a in access.into_iter().filter_map(|e| e.access) {
+        let inside = units
+            .iter_mut()
+            .flat_map(|u| u.items.iter_mut())
+            .find_map(|i| match i {
+                LibraryElement::Configuration(c)
+                    if c.span.file == a.span.file
+                        && c.span.start <= a.span.start
+                        && a.span.end <= c.span.end =>
+                {
+                    Some(c)
+                }
+                _ => None,
+            });
+        match inside {
+            Some(c) => c.access.push(a),
+            None => diags.push(
+                Diagnostic::error(code::E0308, "a VAR_ACCESS block outside a CONFIGURATION")
+                    .at(a.span)
+                    .with_hint(
+                        "access paths are declared inside CONFIGURATION ... END_CONFIGURATION",
+                    ),
+            ),
+        }
+    }
+    if entries.is_empty() {
+        return;
+    }
     let find_pou = |units: &[CompilationUnit], name: &str| {
         units.iter().enumerate().find_map(|(u, unit)| {
             unit.items
