@@ -9,10 +9,11 @@
 //!   compiled, as for an ST file. Before: E3012 per declaration and a cascade from the body (`^`).
 //! - **Hierarchical direct addresses** (`%IX1.0.0`, `%IW0.0`, `%QW0.0.0.0`): each distinct one is
 //!   a slot of its own after the profile's area (see the c-backend README, "Hierarchical
-//!   addresses"); stimulus and trace name it by its text, and two variables at one address alias.
-//!   Before: E2002.
-//! - **VAR_ACCESS** in a configuration (IEC 61131-3 access paths): each path is checked and its
-//!   name is a trace/stimulus name; READ_ONLY refuses a stimulus. Before: E0019.
+//!   addresses"); stimulus and trace name it by its text, and two variables at one address alias
+//!   (ST and XML). Before: E2002.
+//! - **VAR_ACCESS** in a configuration (IEC 61131-3 access paths) of an ST or IL file, and a PLCopen
+//!   XML configuration's `<accessVars>`: each path is checked (E0308, located) and its name is a
+//!   trace/stimulus name; READ_ONLY refuses a stimulus. Before: E0019 (XML: not read).
 
 mod common;
 use common::{column, ladderc, run_traced};
@@ -352,4 +353,28 @@ fn wrong_access_paths_are_located_errors() {
         lines[0].starts_with("dir.st:44:9: error[E0308]: this VAR_ACCESS entry cannot be read: the direction is READ_WRITE or READ_ONLY"),
         "{lines:?}"
     );
+}
+
+/// A PLCopen XML variable at a hierarchical address (`address="%IW2.0.1"`), reached both by its
+/// address and by an access path that names the variable.
+#[test]
+fn xml_variable_at_a_hierarchical_address() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("h.xml");
+    let src = std::fs::read_to_string(fixture("var_access_tc6.xml"))
+        .unwrap()
+        .replace(
+            r#"<variable name="inflow"><type><INT/></type></variable>"#,
+            r#"<variable name="inflow" address="%IW2.0.1"><type><INT/></type></variable>"#,
+        );
+    assert!(src.contains("%IW2.0.1"));
+    std::fs::write(&f, src).unwrap();
+    let trace = common::run_with_stimulus(
+        &f,
+        3,
+        "0,%IW2.0.1,7\n",
+        &["fill_rate", "tank_level", "%IW2.0.1"],
+    );
+    assert_eq!(column(&trace, "fill_rate"), [7.0, 7.0, 7.0], "{trace}");
+    assert_eq!(column(&trace, "tank_level"), [7.0, 14.0, 21.0], "{trace}");
 }
