@@ -70,7 +70,8 @@ pub(super) fn kahn(
     let slot = |i: usize| net.binary_search(&i).ok();
     let mut indeg: Vec<usize> = vec![0; net.len()];
     // Reverse edges as (source slot, user node), grouped by source below.
-    let mut edges: Vec<(usize, usize)> = Vec::new();
+    // (room for one wire per node, the usual rung: no regrowth)
+    let mut edges: Vec<(usize, usize)> = Vec::with_capacity(net.len());
     for (i, s) in deps {
         let Some(ti) = slot(i) else { continue };
         if let Some(si) = slot(s) {
@@ -80,7 +81,7 @@ pub(super) fn kahn(
     }
     // Users of each source in any order: the heap decides the order.
     edges.sort_unstable();
-    let mut heap = BinaryHeap::new();
+    let mut heap = BinaryHeap::with_capacity(net.len());
     for (k, &i) in net.iter().enumerate() {
         if indeg[k] == 0 {
             heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
