@@ -19,8 +19,10 @@ pub fn core(name: &str) -> String {
 /// Appends [`core()`] of `name` to `s`.
 pub fn push_core(s: &mut String, name: &str) {
     if !name.is_empty() && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
-        s.reserve(name.len());
-        s.extend(name.chars().map(|c| c.to_ascii_lowercase()));
+        // All ASCII: copied whole, then lower-cased in place (no `char` at a time).
+        let start = s.len();
+        s.push_str(name);
+        s[start..].make_ascii_lowercase();
     } else {
         const HEX: &[u8; 16] = b"0123456789ABCDEF";
         s.reserve(1 + 2 * name.len());

@@ -289,8 +289,9 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
 /// One `<variable>` of an interface list, a struct, or a global list.
 pub fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
     let span = ctx.tag(v);
-    let Some((name, (start, end))) = v
-        .attr_and_range("name")
+    // `name` and `address` in one pass over the start tag
+    let [name, address] = v.attrs_and_ranges(["name", "address"]);
+    let Some((name, (start, end))) = name
         .map(|(n, r)| (n.trim(), r))
         .filter(|(n, _)| values::is_ident(n))
     else {
@@ -307,9 +308,9 @@ pub fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
         return None;
     };
     let ty = type_ref(ctx, ty_el)?;
-    let location = match v.attr("address") {
-        Some(a) => {
-            let aspan = ctx.attr_span(v, "address");
+    let location = match address {
+        Some((a, (astart, aend))) => {
+            let aspan = ctx.span(astart, aend);
             match values::address(a.trim(), aspan) {
                 Some(addr) => Some(addr),
                 None => {

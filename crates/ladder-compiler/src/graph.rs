@@ -303,9 +303,15 @@ fn raw_wires<'x>(ctx: &Ctx, point: Option<&Element<'x>>, refs: &mut Vec<&'x str>
 /// A `<position>` coordinate in the editor's units, rounded toward zero (0 when absent or not a number).
 fn coord(v: Option<&str>) -> i64 {
     let Some(v) = v.map(trim) else { return 0 };
-    // Short integers (the usual case) are exact as f64 too: the same value without the float parser.
-    if v.len() <= 15 && v.bytes().all(|b| b.is_ascii_digit()) && !v.is_empty() {
-        return v.parse().unwrap_or(0);
+    // Short integers (the usual case) are exact as f64 too: the same value without the float parser,
+    // read digit by digit (at most 15 digits: no overflow).
+    if v.len() <= 15 && !v.is_empty() {
+        let digits = v.bytes().try_fold(0i64, |n, b| {
+            b.is_ascii_digit().then(|| n * 10 + i64::from(b - b'0'))
+        });
+        if let Some(n) = digits {
+            return n;
+        }
     }
     v.parse::<f64>().map(|v| v as i64).unwrap_or(0)
 }
@@ -775,6 +781,11 @@ mod tests {
             ("", 0),
             ("x", 0),
             ("123456789012345", 123_456_789_012_345),
+            ("999999999999999", 999_999_999_999_999),
+            ("007", 7),
+            ("0", 0),
+            ("+5", 5),
+            ("4 0", 0),
             ("9007199254740993", 9_007_199_254_740_992),
         ] {
             assert_eq!(coord(Some(text)), want, "{text:?}");

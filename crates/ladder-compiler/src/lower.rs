@@ -47,8 +47,11 @@ use std::collections::{BTreeMap, BinaryHeap};
 mod lower_block;
 #[path = "lower_emit.rs"]
 mod lower_emit;
+#[path = "lower_order.rs"]
+mod lower_order;
 #[path = "lower_st.rs"]
 mod lower_st;
+use lower_order::{deps_map, kahn, net_deps};
 
 type ValId = usize;
 
@@ -723,15 +726,6 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     /// variable.
     fn order(&mut self, ctx: &mut Ctx, net: &[usize]) -> Option<Vec<usize>> {
         let g = self.g;
-        let mut deps: HashMap<usize, Vec<usize>> =
-            HashMap::with_capacity_and_hasher(net.len(), Default::default());
-        for &i in net {
-            let mut d: Vec<usize> = g.nodes[i].wires().map(|w| w.from).collect();
-            if let Some(srcs) = g.continuation_sources.get(&i) {
-                d.extend(srcs);
-            }
-            deps.insert(i, d);
-        }
         // A contact or input variable that names an output of a block instance of this network
         // (`T1.Q`) reads it after the block runs, like a wire would.
         let mut implicit: HashSet<(usize, usize)> = HashSet::default();
@@ -757,17 +751,19 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 };
                 if let Some(&b) = instances.get(&base.trim().to_ascii_uppercase()) {
                     if b != i {
-                        deps.entry(i).or_default().push(b);
                         implicit.insert((i, b));
                     }
                 }
             }
         }
-        // Most networks have no loop: try the plain topological order first.
-        let order = kahn(g, net, &deps);
+        // Most networks have no loop: try the plain topological order first, straight from the
+        // wires (no list per node).
+        let order = kahn(g, net, net_deps(g, net, &implicit));
         if order.len() == net.len() {
             return Some(order);
         }
+        // The same dependencies as a map, which the loop cutting below edits.
+        let mut deps = deps_map(g, net, &implicit);
         // A loop is cut at a wire leaving a variable or a function block instance: the reader then
         // sees the value from the previous scan. Variables are preferred, then the wire that runs
         // furthest backwards (right to left), as drawn feedback wires do.
@@ -809,7 +805,12 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 }
             }
         }
-        Some(kahn(g, net, &deps))
+        Some(kahn(
+            g,
+            net,
+            deps.iter()
+                .flat_map(|(&i, d)| d.iter().map(move |&s| (i, s))),
+        ))
     }
 
     fn is_fb_block(&self, type_name: &str) -> bool {
@@ -1608,50 +1609,4 @@ fn named_type(name: &str, span: Span) -> TypeRef {
         },
         _ => TypeRef::Named(Ident::new(name, span)),
     }
-}
-
-/// Kahn's algorithm over `net`, ties broken by the documented order key; nodes on a loop are left out.
-fn kahn(g: &Graph, net: &[usize], deps: &HashMap<usize, Vec<usize>>) -> Vec<usize> {
-    // Nodes are numbered by their place in `net` (networks list their nodes in increasing order, see
-    // `Graph::networks`), so the counts and the reverse edges are plain lists: no hashing per node.
-    debug_assert!(net.windows(2).all(|w| w[0] < w[1]));
-    let slot = |i: usize| net.binary_search(&i).ok();
-    let mut indeg: Vec<usize> = vec![0; net.len()];
-    // Reverse edges as (source slot, user node), grouped by source below.
-    let mut edges: Vec<(usize, usize)> = Vec::new();
-    for (&i, d) in deps {
-        let Some(ti) = slot(i) else { continue };
-        for &s in d {
-            if let Some(si) = slot(s) {
-                indeg[ti] += 1;
-                edges.push((si, i));
-            }
-        }
-    }
-    // Users of each source in any order: the heap decides the order.
-    edges.sort_unstable();
-    let mut heap = BinaryHeap::new();
-    for (k, &i) in net.iter().enumerate() {
-        if indeg[k] == 0 {
-            heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
-        }
-    }
-    let mut order = Vec::with_capacity(net.len());
-    while let Some(std::cmp::Reverse((_, i))) = heap.pop() {
-        order.push(i);
-        let Some(si) = slot(i) else { continue };
-        let from = edges.partition_point(|e| e.0 < si);
-        for &(s, u) in &edges[from..] {
-            if s != si {
-                break;
-            }
-            if let Some(k) = slot(u) {
-                indeg[k] -= 1;
-                if indeg[k] == 0 {
-                    heap.push(std::cmp::Reverse((g.nodes[u].order_key(), u)));
-                }
-            }
-        }
-    }
-    order
 }

@@ -152,7 +152,19 @@ impl<'a> Element<'a> {
     }
     /// The values of several attributes (entities decoded) in one pass over the start tag: slot `k` holds
     /// what [`Element::attr`] would give for `names[k]` (the first attribute of that local name).
+    #[inline]
     pub fn attrs<const N: usize>(&self, names: [&str; N]) -> [Option<&'a str>; N] {
+        self.attrs_and_ranges(names)
+            .map(|a| a.map(|(value, _)| value))
+    }
+    /// [`Element::attrs`] with each value's byte range in the document: slot `k` holds what
+    /// [`Element::attr_and_range`] would give for `names[k]`. (Inlined: [`Element::attrs`] then drops
+    /// the ranges at no cost.)
+    #[inline]
+    pub fn attrs_and_ranges<const N: usize>(
+        &self,
+        names: [&str; N],
+    ) -> [Option<(&'a str, (usize, usize))>; N] {
         let mut out = [None; N];
         // An empty name is never found (every scanned name has a character): it does not count.
         let mut left = names.iter().filter(|n| !n.is_empty()).count();
@@ -171,14 +183,14 @@ impl<'a> Element<'a> {
                 continue;
             }
             let value = &self.raw_tag[s..e];
+            let range = (self.tag_start + 1 + s, self.tag_start + 1 + e);
             out[k] = if has_amp(value) {
-                let at = self.tag_start + 1 + s;
                 self.decoded_attrs()
                     .iter()
-                    .find(|a| a.start == at)
-                    .map(|a| a.value)
+                    .find(|a| a.start == range.0)
+                    .map(|a| (a.value, range))
             } else {
-                Some(value)
+                Some((value, range))
             };
             left -= 1;
             if left == 0 {
@@ -409,12 +421,13 @@ impl<'t> Iterator for AttrScan<'t> {
             let name_start = i;
             // The local part starts after the last `:` of the qualified name.
             let mut local_start = i;
+            // One test per byte: a `:` (its class is `COLON` alone) moves the local part's start.
             while i < bytes.len() {
                 let c = class(bytes[i]);
-                if c & (SPACE | EQ) != 0 {
-                    break;
-                }
-                if c == COLON {
+                if c & (SPACE | EQ | COLON) != 0 {
+                    if c != COLON {
+                        break;
+                    }
                     local_start = i + 1;
                 }
                 i += 1;
@@ -932,6 +945,11 @@ mod tests {
         for (k, n) in names.iter().enumerate() {
             assert_eq!(got[k], a.attr(n), "{n}");
         }
+        let ranged = a.attrs_and_ranges(names);
+        for (k, n) in names.iter().enumerate() {
+            assert_eq!(ranged[k], a.attr_and_range(n), "{n}");
+        }
+        assert_eq!(a.attrs_and_ranges(["", "z"])[0], None);
     }
 
     #[test]

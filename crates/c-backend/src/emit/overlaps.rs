@@ -16,21 +16,33 @@ use std::collections::BTreeMap;
 impl Gen<'_> {
     pub(super) fn check_output_overlaps(&mut self) {
         let m = self.model;
-        // (qualified name, declaring POU, declaration)
+        // (qualified name, declaring POU, declaration) of each located output: only they can
+        // overlap, so the names of the others (every variable of a large program) are never made.
         let mut decls: Vec<(String, Option<&str>, &Variable)> = Vec::new();
         for p in &m.pous {
-            for v in p.vars.iter().filter(|v| v.kind != VarKind::External) {
+            for v in p
+                .vars
+                .iter()
+                .filter(|v| v.kind != VarKind::External && located_output(v))
+            {
                 decls.push((format!("{}.{}", p.name, v.name), Some(&p.name), v));
             }
         }
-        decls.extend(m.globals.iter().map(|v| (v.name.clone(), None, v)));
-        for c in &m.configurations {
-            decls.extend(c.globals.iter().map(|v| (v.name.clone(), None, v)));
-            for r in &c.resources {
-                decls.extend(r.globals.iter().map(|v| (v.name.clone(), None, v)));
-            }
-        }
-        // in source order, so that the warning lands on the later declaration
+        let globals = m
+            .globals
+            .iter()
+            .chain(m.configurations.iter().flat_map(|c| {
+                c.globals
+                    .iter()
+                    .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+            }));
+        decls.extend(
+            globals
+                .filter(|v| located_output(v))
+                .map(|v| (v.name.clone(), None, v)),
+        );
+        // in source order, so that the warning lands on the later declaration (a stable sort: the
+        // declarations left out above never changed the order of the ones kept)
         decls.sort_by_key(|(_, _, v)| (v.span.file.0, v.span.start));
         // byte -> (declaration, bit mask) of each located output touching it
         let mut bytes: BTreeMap<u32, Vec<(usize, u8)>> = BTreeMap::new();
@@ -95,6 +107,11 @@ impl Gen<'_> {
             );
         }
     }
+}
+
+/// Whether `v` is located in the output area (`AT %Q...`): the declarations this check compares.
+fn located_output(v: &Variable) -> bool {
+    v.location.as_ref().is_some_and(|l| l.area == Area::Output)
 }
 
 fn address_text(loc: &il_frontend::sema::Location) -> String {
