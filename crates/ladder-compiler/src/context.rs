@@ -28,6 +28,9 @@ pub struct Ctx<'a> {
     /// The actions of the POUs read so far, each lowered on its own (for calls from other POUs:
     /// `il_frontend::actions::link`); the unit gets them at its end.
     pub actions: Vec<il_frontend::ast::Action>,
+    /// The `<configVariable>` entries of the configurations read so far (VAR_CONFIG), applied
+    /// once every input file is read (`il_frontend::st::file::apply_var_config`).
+    pub var_config: Vec<il_frontend::st::file::ConfigEntry>,
 }
 
 impl<'a> Ctx<'a> {
@@ -73,6 +76,7 @@ impl<'a> Ctx<'a> {
             constants: HashMap::new(),
             local_constants: HashMap::new(),
             actions: Vec::new(),
+            var_config: Vec::new(),
         }
     }
     /// The value of a named integer constant (the POU's own first).

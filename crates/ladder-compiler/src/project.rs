@@ -791,6 +791,9 @@ fn configuration(ctx: &mut Ctx, c: &Element) -> Option<Configuration> {
         .children_named("resource")
         .filter_map(|r| resource(ctx, r))
         .collect();
+    for list in c.children_named("configVars") {
+        crate::var_config::read(ctx, list, name);
+    }
     Some(Configuration {
         name: Ident::new(name, ctx.attr_span(c, "name")),
         globals,
