@@ -114,3 +114,24 @@ fn a_jump_out_of_a_parallel_branch_or_a_convergence_of_jumps_only_is_e3128() {
         "{lines:?}"
     );
 }
+
+/// A STRING's initial value in the double quotes of a WSTRING literal, as an OpenPLC Editor project
+/// of the round writes it (`<simpleValue value="&quot;1234&quot;"/>` for a `<string/>`): Beremiz
+/// generates `'"1234"'` from it, the text itself with its quotes, so ladderc reads it the same way
+/// (before, E1025 "this initial value is not a STRING"). A value in the type's own quotes stays a
+/// literal; a WSTRING's value in double quotes too; text without quotes is the string itself.
+#[test]
+fn a_string_initial_value_without_its_own_quotes_is_the_text_itself_as_beremiz_reads_it() {
+    let trace = run(
+        &fixture("beremiz_string_init.xml"),
+        2,
+        "",
+        "instance0.n_code,instance0.n_plain,instance0.n_quoted,instance0.n_wide,instance0.open_,\
+         instance0.same",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,instance0.n_code,instance0.n_plain,instance0.n_quoted,instance0.n_wide,\
+         instance0.open_,instance0.same\n0,0,6,4,4,2,1,1\n1,10,6,4,4,2,1,1\n"
+    );
+}
