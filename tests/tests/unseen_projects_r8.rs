@@ -46,21 +46,22 @@
 //!   left without an address was reported at another instance's VAR_CONFIG entry.
 //!
 //! **Side by side with matiec** (`scripts/matiec-diff.sh`, iec2c of beremiz/matiec). IL: echidna's
-//! `blink.il` (its `dbg` lines removed, the configuration's tasks in a RESOURCE, `t1, t2 : TON`
-//! declared apart, as iec2c's VARIABLES.csv breaks on a list of FB instances) agrees for 250 cycles
-//! on all 14 columns; `ctu.il` is refused by iec2c (its lexer takes the formal input `r :=` for the
-//! IL operator R, and it refuses a SINT wired to the INT input PV, an implicit widening IEC
-//! 61131-3's 3rd edition allows): ladderc runs it as the standard writes it; echidna's other IL
-//! programs are its own dialect, which iec2c refuses as well. ST: of the 109 programs with a
-//! CONFIGURATION that ladderc runs, 88 agree for 100 cycles on every column; in 1 matiec's program
-//! dies in its first cycle (SIGFPE: an integer division by 0, which ladderc runs on, as
-//! documented); 3 differ only where the README's matiec table says why (a TON with PT = T#0s gives
-//! Q in the same scan; a FOR control variable after the loop, 6 against matiec's 5, is
-//! implementation-dependent in IEC 61131-3; a REAL literal in a REAL product is a REAL, 1 ulp); 3
-//! watch a VAR_TEMP or a program's VAR_IN_OUT, which ladderc's trace leaves out; 14 cannot be
-//! compared: matiec's C needs the Beremiz runtime (`LogMessage`, the Python blocks) or its
-//! VARIABLES.csv names columns its C lacks (SFC steps, programs' ENO, two resources), or iec2c
-//! refuses OpenPLC's `(*DBG: ...*)` lines.
+//! `blink.il` (its `dbg` lines removed, `t1, t2 : TON` declared apart, as iec2c's VARIABLES.csv
+//! breaks on a list of FB instances) agrees for 250 cycles on all 14 columns; `ctu.il` is refused
+//! by iec2c (its lexer takes the formal input `r :=` for the IL operator R, and it refuses a SINT
+//! wired to the INT input PV, an implicit widening IEC 61131-3's 3rd edition allows): ladderc runs
+//! it as the standard writes it; echidna's other IL programs are its own dialect, which iec2c
+//! refuses as well. ST: of the 109 programs with a CONFIGURATION that ladderc runs, 88 agree for
+//! 100 cycles on every column; in 1 matiec's program dies in its first cycle (SIGFPE: an integer
+//! division by 0, which ladderc runs on, as documented); 3 differ only where the README's matiec
+//! table says why (a TON with PT = T#0s gives Q in the same scan; a FOR control variable after the
+//! loop, 6 against matiec's 5, is implementation-dependent in IEC 61131-3; a REAL literal in a REAL
+//! product is a REAL, 1 ulp); 3 watch a VAR_TEMP or a program's VAR_IN_OUT, which ladderc's trace
+//! leaves out; 14 cannot be compared: matiec's C needs the Beremiz runtime (`LogMessage`, the
+//! Python blocks) or its VARIABLES.csv names columns its C lacks (SFC steps, programs' ENO, two
+//! resources), or iec2c refuses OpenPLC's `(*DBG: ...*)` lines. The harness
+//! (`tests/matiec_diff.rs`) panicked on a configuration without RESOURCE, as echidna's are (IEC
+//! 61131-3's single resource); it now reads iec2c's `RESOURCE` for it.
 //!
 //! Each test is a minimal reproduction written here (`tests/fixtures/unseen/`), or a bundled file
 //! (`crates/test-corpus/files/il/25_echidna_blink.il`, `26_echidna_ctu.il`, BSD-2-Clause), run
