@@ -160,6 +160,29 @@ fn a_jump_out_of_a_parallel_branch_or_a_convergence_of_jumps_only_is_e3128() {
             && lines[0].contains("hint: end the branch at the simultaneous convergence"),
         "{lines:?}"
     );
+    // two transitions after the convergence (a selection divergence): still one E3128 at the jump
+    let two = src
+        .replace("targetName=\"Stir\"", "targetName=\"Drain\"")
+        .replace(
+            "<connectionPointIn><connection refLocalId=\"40\" formalParameter=\"sfc\" /></connectionPointIn>",
+            "<connectionPointIn><connection refLocalId=\"45\" formalParameter=\"sfc\" /></connectionPointIn>",
+        )
+        .replace(
+            "          </SFC>",
+            "<selectionDivergence localId=\"45\"><connectionPointIn><connection refLocalId=\"40\" />\
+             </connectionPointIn></selectionDivergence>\
+             <transition localId=\"47\"><connectionPointIn><connection refLocalId=\"45\" />\
+             </connectionPointIn><condition><reference name=\"reset\" /></condition></transition>\
+             <jumpStep localId=\"48\" targetName=\"Idle\"><connectionPointIn>\
+             <connection refLocalId=\"47\" /></connectionPointIn></jumpStep>\n          </SFC>",
+        );
+    let (code, lines) = check_text("two.xml", &two);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("error[E3128]: jump to step `Drain` leaves its branch"),
+        "{lines:?}"
+    );
     let (code, lines) = check_text(
         "jumps_only.xml",
         &src.replacen(

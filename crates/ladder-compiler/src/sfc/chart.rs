@@ -362,6 +362,9 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
     }
 
     let mut transitions = Vec::new();
+    // jumps ending a simultaneous branch and convergences of jumps only, checked (and reported)
+    // once however many transitions follow them
+    let mut checked: HashMap<usize, bool> = HashMap::new();
     for (i, n) in nodes.iter().enumerate() {
         if n.kind != NodeKind::Transition {
             continue;
@@ -393,6 +396,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                     &nodes,
                     &resolved,
                     &step_names,
+                    &mut checked,
                     from,
                     &mut pre,
                     &mut seen,
@@ -631,6 +635,7 @@ fn pre_steps(
     nodes: &[Node],
     resolved: &[Vec<usize>],
     step_names: &HashMap<String, usize>,
+    checked: &mut HashMap<usize, bool>,
     from: usize,
     out: &mut Vec<usize>,
     seen: &mut HashSet<usize>,
@@ -658,9 +663,17 @@ fn pre_steps(
                     .iter()
                     .partition(|&&f| nodes[f].kind == NodeKind::Jump);
                 for &j in &jumps {
-                    ok &= jump_loops_in_its_branch(ctx, nodes, resolved, step_names, j, pou);
+                    ok &= match checked.get(&j) {
+                        Some(&loops) => loops,
+                        None => {
+                            let loops =
+                                jump_loops_in_its_branch(ctx, nodes, resolved, step_names, j, pou);
+                            checked.insert(j, loops);
+                            loops
+                        }
+                    };
                 }
-                if rest.is_empty() {
+                if rest.is_empty() && checked.insert(from, false).is_none() {
                     report(
                         ctx,
                         code::E3128,
@@ -671,8 +684,8 @@ fn pre_steps(
                          after it can never fire (IEC 61131-3's unreachable SFC)"
                             .to_string(),
                     );
-                    ok = false;
                 }
+                ok &= !rest.is_empty();
                 stack.extend(rest.iter().rev());
             }
             NodeKind::SelDiv | NodeKind::SimConv => {
