@@ -325,6 +325,97 @@ fn var_config_entries_that_cannot_apply_are_located_e0306() {
 }
 
 #[test]
+fn var_config_of_a_tc6_xml_configuration_locates_placeholders_per_instance() {
+    // the same project in PLCopen TC6 XML 2.01: `<configVars>` of the `<configuration>`, paths
+    // `res.inst.l1.out`, `cfg.res.inst.l2.out` (the configuration's name in front) and `inst.sw`,
+    // an `<initialValue>` for `n`; before, the entries were ignored and each `%Q*` was E2002
+    let (trace, _) = run_var_config("var_config.xml");
+    assert_eq!(trace, VAR_CONFIG_TRACE);
+}
+
+#[test]
+fn var_config_placeholders_left_unconfigured_and_bad_xml_entries_are_located() {
+    let src = std::fs::read_to_string(fixture("var_config.xml")).unwrap();
+    let decl_line = src
+        .lines()
+        .position(|l| l.contains("address=\"%Q*\""))
+        .unwrap()
+        + 1;
+    // l2's `out AT %Q*` named by no entry: E2002 at the placeholder in Lamp's declaration (the copy
+    // made for l1 has the entry's address; before, the error pointed at l1's entry)
+    let without_l2: String = src
+        .lines()
+        .filter(|l| !l.contains("l2.out"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let (code, lines) = check_text("vc.xml", &without_l2);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with(&format!("vc.xml:{decl_line}:43: error[E2002]: unsupported address `%QX*`: a `*` address must be given a location"))
+            && lines[0].contains("[POU `Lamp`]"),
+        "{lines:?}"
+    );
+    // entries that cannot be read or applied: E0306 at their attribute
+    let bad = src
+        .replace("\"res.inst.n\"", "\"res.ghost.n\"")
+        .replace("\"%QX0.2\"", "\"%QX*\"")
+        .replace("\"inst.sw\"", "\"inst..sw\"");
+    let (code, lines) = check_text("vc.xml", &bad);
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "vc.xml:53:78: error[E0306]: this VAR_CONFIG entry cannot be read: `%QX*` is not a complete direct address (%IX0.0, %QW2, %MD4)",
+            "vc.xml:54:48: error[E0306]: this VAR_CONFIG entry cannot be read: `inst..sw` is not an instance path (identifiers joined by dots)",
+            "vc.xml:55:48: error[E0306]: this VAR_CONFIG entry cannot be applied: `res.ghost` names no program instance",
+        ]
+    );
+}
+
+#[test]
+fn var_config_paths_with_and_without_the_resource_reach_one_instance() {
+    // `inst.sw` beside `res.inst.l1.out`: one copy of `main` for the instance (before, the second
+    // form made a second copy, the first copy's Lamp addresses were lost, and l1's `%Q*` was E2002)
+    let src = std::fs::read_to_string(fixture("var_config.st"))
+        .unwrap()
+        .replace("res.inst.sw AT", "inst.sw AT");
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("vc.st");
+    std::fs::write(&f, &src).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&f)
+        .args(["--cycles", "4", "--sanitize", "--trace", "-", "--stimulus"])
+        .arg(fixture("var_config.stimulus.csv"))
+        .args(["--watch", "inst.n,inst.sw,%QX0.1,%QX0.2"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(String::from_utf8_lossy(&out.stdout), VAR_CONFIG_TRACE);
+    // a placeholder no entry locates is E2002 at its declaration, not at another instance's entry
+    let (code, lines) = check_text(
+        "vc.st",
+        &src.replace("res.inst.l2.out AT %QX0.2 : BOOL;", ""),
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("vc.st:4:12: error[E2002]"),
+        "{lines:?}"
+    );
+}
+
+#[test]
 fn var_config_applies_to_programs_of_other_files() {
     // the configuration in one file, its program and block in another (a project laid out as
     // trust-platform's and RuSTy's examples are): the same trace as the one-file fixture; before,

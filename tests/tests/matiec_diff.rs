@@ -344,8 +344,12 @@ struct MVar {
 }
 
 /// The variables worth printing (elementary ones, of program instances) and the tick time in ns.
+/// A configuration without RESOURCE (IEC 61131-3's single resource: tasks and programs directly in
+/// the configuration) lists its programs as `CFG.INST`; iec2c names that resource `RESOURCE`
+/// (`RESOURCE.c`, `RESOURCE__INST`), so its paths are read as `CFG.RESOURCE.INST...`.
 fn parse_variables_csv(text: &str) -> (Vec<(String, String)>, Vec<MVar>, u64) {
     let mut programs = Vec::new();
+    let mut single: Vec<(String, String)> = Vec::new();
     let mut vars = Vec::new();
     let mut tick = 0;
     let mut section = "";
@@ -363,8 +367,24 @@ fn parse_variables_csv(text: &str) -> (Vec<(String, String)>, Vec<MVar>, u64) {
         if line.is_empty() {
             continue;
         }
-        let f: Vec<&str> = line.split(';').collect();
+        let mut f: Vec<&str> = line.split(';').collect();
+        let resourced;
+        if section == "v" && f.len() >= 3 {
+            if let Some((from, to)) = single.iter().find(|(from, _)| {
+                f[2].strip_prefix(from.as_str())
+                    .is_some_and(|r| r.starts_with('.'))
+            }) {
+                resourced = format!("{to}{}", &f[2][from.len()..]);
+                f[2] = &resourced;
+            }
+        }
         match section {
+            "p" if f.len() >= 3 && f[1].split('.').count() == 2 => {
+                let (cfg, inst) = f[1].split_once('.').unwrap();
+                let path = format!("{cfg}.RESOURCE.{inst}");
+                single.push((f[1].to_string(), path.clone()));
+                programs.push((path, f[2].to_string()));
+            }
             "p" if f.len() >= 3 => programs.push((f[1].to_string(), f[2].to_string())),
             // variables of program instances (`CFG.RES.INST.X`); a configuration's or resource's
             // globals (`CFG.X`, `CFG.RES.X`) are read through the programs' copies
@@ -1150,6 +1170,32 @@ fn variables_csv_gives_the_printed_variables_and_the_tick() {
     let main = matiec_main(&p, &v);
     assert!(main.contains("extern MAIN RES__INST;"), "{main}");
     assert!(main.contains("RES__INST.TM.ET.value.tv_sec"), "{main}");
+}
+
+#[test]
+fn variables_csv_of_a_configuration_without_resource_names_iec2c_s_resource() {
+    // echidna's IL examples declare TASK and PROGRAM directly in the CONFIGURATION; before, the
+    // harness indexed a resource part that is not there and panicked
+    let csv = "// Programs\n0;CONFIG1.PROGRAM1;TEST;\n\n// Variables\n\
+               0;FB;CONFIG1.PROGRAM1;CONFIG1.PROGRAM1;TEST;;0;\n\
+               1;VAR;CONFIG1.PROGRAM1.INP;CONFIG1.PROGRAM1.INP;BOOL;BOOL;0;\n\n// Ticktime\n10000000\n";
+    let (p, v, _) = parse_variables_csv(csv);
+    assert_eq!(
+        p,
+        [("CONFIG1.RESOURCE.PROGRAM1".to_string(), "TEST".to_string())]
+    );
+    let paths: Vec<(String, String)> = v
+        .iter()
+        .map(|v| (c_path(&v.path), trace_name(&v.path)))
+        .collect();
+    assert_eq!(
+        paths,
+        [(
+            "RESOURCE__PROGRAM1.INP".to_string(),
+            "PROGRAM1.INP".to_string()
+        )]
+    );
+    assert!(matiec_main(&p, &v).contains("extern TEST RESOURCE__PROGRAM1;"));
 }
 
 #[test]

@@ -93,12 +93,16 @@ fn check(file_name: &str) -> Option<String> {
 }
 
 #[test]
-fn corpus_has_the_seven_il_files() {
+fn corpus_has_the_nine_il_files() {
     let files = common::corpus_il();
     if test_corpus::dir().is_some() {
-        assert_eq!(files.len(), 7, "{files:?}");
+        assert_eq!(files.len(), 9, "{files:?}");
     } else {
-        assert_eq!(files.len(), 2, "the bundled files 18 and 19: {files:?}");
+        assert_eq!(
+            files.len(),
+            4,
+            "the bundled files 18, 19, 25 and 26: {files:?}"
+        );
         test_corpus::skip("il/17_*, il/20_*");
     }
 }
@@ -141,6 +145,20 @@ fn il_parser_test1_nested_deferred() {
 #[test]
 fn il_parser_test2_dialect() {
     if let Some(s) = check("19_il_parser_test2.il") {
+        insta::assert_snapshot!(s);
+    }
+}
+
+#[test]
+fn echidna_blink() {
+    if let Some(s) = check("25_echidna_blink.il") {
+        insta::assert_snapshot!(s);
+    }
+}
+
+#[test]
+fn echidna_ctu_multi_line_formal_call() {
+    if let Some(s) = check("26_echidna_ctu.il") {
         insta::assert_snapshot!(s);
     }
 }

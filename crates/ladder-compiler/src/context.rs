@@ -31,6 +31,9 @@ pub struct Ctx<'a> {
     /// While a POU's interface (and its methods') are read: the reference and pointer types met
     /// (span, as written), each read as the type it points to; `None` elsewhere (E3012 there).
     pub references: Option<Vec<(Span, String)>>,
+    /// The `<configVariable>` entries of the configurations read so far (VAR_CONFIG), applied
+    /// once every input file is read (`il_frontend::st::file::apply_var_config`).
+    pub var_config: Vec<il_frontend::st::file::ConfigEntry>,
 }
 
 impl<'a> Ctx<'a> {
@@ -77,6 +80,7 @@ impl<'a> Ctx<'a> {
             local_constants: HashMap::new(),
             actions: Vec::new(),
             references: None,
+            var_config: Vec::new(),
         }
     }
     /// The value of a named integer constant (the POU's own first).

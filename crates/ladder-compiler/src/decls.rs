@@ -208,8 +208,8 @@ fn is_reference(name: &str) -> bool {
 const REFERENCE: &str = "references and pointers are not compiled";
 
 /// `<initialValue>`: simpleValue, arrayValue, structValue.
-/// `ty` is the declared type: a string variable's initial value written without quotes (as v1.0
-/// exports do) is taken as the string itself.
+/// `ty` is the declared type: a string variable's initial value written without its type's quotes (as v1.0
+/// exports and Beremiz do: `"1234"` for a STRING) is taken as the string itself.
 pub fn initial_value(ctx: &mut Ctx, holder: &Element, ty: Option<&TypeRef>) -> Option<Initializer> {
     let v = holder.children.first()?;
     value_element(ctx, v, ty)
@@ -221,8 +221,10 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
             let text = v.attr("value").unwrap_or_default();
             let span = ctx.attr_span(v, "value");
             if let Some(TypeRef::String { wide, .. }) = ty {
+                // a literal only in the type's own quotes; other text is the string itself, as
+                // Beremiz (OpenPLC Editor) generates it: `"1234"` for a STRING is `'"1234"'`
                 let t = text.trim();
-                if !(t.starts_with('\'') || t.starts_with('"')) {
+                if !t.starts_with(if *wide { '"' } else { '\'' }) {
                     return Some(Initializer::Value(il_frontend::ast::Operand::literal(
                         il_frontend::ast::Literal {
                             kind: il_frontend::ast::LiteralKind::String {

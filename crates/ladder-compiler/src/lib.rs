@@ -24,6 +24,7 @@ pub mod sfc;
 pub mod st_body;
 pub mod testgen;
 pub mod values;
+pub mod var_config;
 pub mod xml;
 
 pub use il_frontend::ast;
@@ -32,6 +33,24 @@ use diagnostics::{code, Diagnostic, Diagnostics, FileId};
 
 /// Reads a PLCopen XML project and lowers it to the IL syntax tree.
 pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::CompilationUnit {
+    let (unit, entries) = compile_xml_with_var_config(file, xml, diags);
+    let mut units = [unit];
+    il_frontend::st::file::apply_var_config(&mut units, entries, diags);
+    let [unit] = units;
+    unit
+}
+
+/// [`compile_xml`] without applying the configurations' `<configVars>` (VAR_CONFIG): the unit and
+/// the entries, for a caller that applies them once every input file is read
+/// (`il_frontend::st::file::apply_var_config`), as the entries may name programs of other files.
+pub fn compile_xml_with_var_config(
+    file: FileId,
+    xml: &str,
+    diags: &mut Diagnostics,
+) -> (
+    ast::CompilationUnit,
+    Vec<il_frontend::st::file::ConfigEntry>,
+) {
     let arena = xml::Arena::new();
     let (root, err) = xml::parse(xml, &arena);
     let mut ctx = context::Ctx::new(file, xml, diags);
@@ -54,7 +73,7 @@ pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::Com
                     .into_iter()
                     .map(ast::LibraryElement::Action),
             );
-            unit
+            (unit, std::mem::take(&mut ctx.var_config))
         }
         None => {
             let span = ctx.span(0, 0);
@@ -63,7 +82,7 @@ pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::Com
                 span,
                 "no <project> element: the file is empty or not XML",
             );
-            ast::CompilationUnit::default()
+            (ast::CompilationUnit::default(), Vec::new())
         }
     }
 }

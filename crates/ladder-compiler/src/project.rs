@@ -848,6 +848,9 @@ fn configuration(ctx: &mut Ctx, c: &Element) -> Option<Configuration> {
         .flat_map(|l| l.children_named("accessVariable"))
         .filter_map(|v| access_variable(ctx, v))
         .collect();
+    for list in c.children_named("configVars") {
+        crate::var_config::read(ctx, list, name);
+    }
     Some(Configuration {
         name: Ident::new(name, ctx.attr_span(c, "name")),
         globals,

@@ -344,7 +344,10 @@ impl Session {
                 );
             }
             if file_lang == Lang::Xml {
-                units.push(ladder_compiler::compile_xml(file, src, &mut self.diags));
+                let (unit, entries) =
+                    ladder_compiler::compile_xml_with_var_config(file, src, &mut self.diags);
+                units.push(unit);
+                var_config.extend(entries);
             } else {
                 let stem = if stdin {
                     None

@@ -136,6 +136,8 @@ mod tests {
         for rel in [
             "il/18_il_parser_test1.il",
             "il/19_il_parser_test2.il",
+            "il/25_echidna_blink.il",
+            "il/26_echidna_ctu.il",
             "24_feecat_S7RTT_codesys_st_motion.xml",
         ] {
             let p = file(rel).expect("bundled");

@@ -45,8 +45,10 @@ pub struct Gen<'a> {
     /// While > 0, diagnostics are suppressed (type probing).
     pub quiet: u32,
     /// The span of the `AT %...` address of each located declaration, by the declaration's name span
-    /// and whole span (the model keeps the variable's span only).
-    pub address_spans: HashMap<Span, Span>,
+    /// and whole span (the model keeps the variable's span only) and whether the address is a `*`
+    /// placeholder: a VAR_CONFIG copy of a POU shares its declarations' spans with the original, and
+    /// its address is the entry's, while the original keeps its `*`.
+    pub address_spans: HashMap<(Span, bool), Span>,
     /// Lazily built name indexes of user POU variables and struct fields (upper-case name -> index),
     /// so that member lookups stay O(1) however many members a type has.
     member_index: std::cell::RefCell<HashMap<(bool, u32), HashMap<String, usize>>>,
@@ -107,13 +109,13 @@ impl<'a> Gen<'a> {
 }
 
 /// Records the address span of every located declaration in the units.
-fn collect_address_spans(units: &[CompilationUnit]) -> HashMap<Span, Span> {
+fn collect_address_spans(units: &[CompilationUnit]) -> HashMap<(Span, bool), Span> {
     let mut map = HashMap::new();
-    let block = |b: &il_frontend::ast::VarBlock, map: &mut HashMap<Span, Span>| {
+    let block = |b: &il_frontend::ast::VarBlock, map: &mut HashMap<(Span, bool), Span>| {
         for d in &b.vars {
             if let Some(a) = &d.location {
-                map.insert(d.name.span, a.span);
-                map.insert(d.span, a.span);
+                map.insert((d.name.span, a.path.is_empty()), a.span);
+                map.insert((d.span, a.path.is_empty()), a.span);
             }
         }
     };

@@ -55,7 +55,11 @@ impl Gen<'_> {
             let Some(size) = access_bytes(&v.ty) else {
                 continue;
             };
-            let span = self.address_spans.get(&v.span).copied().unwrap_or(v.span);
+            let span = self
+                .address_spans
+                .get(&(v.span, loc.path.is_empty()))
+                .copied()
+                .unwrap_or(v.span);
             let addr = DirectAddress {
                 area: loc.area,
                 size: loc.size,

@@ -182,7 +182,11 @@ impl Gen<'_> {
             area: loc.area,
             size: loc.size,
             path: loc.path.clone(),
-            span: self.address_spans.get(&v.span).copied().unwrap_or(v.span),
+            span: self
+                .address_spans
+                .get(&(v.span, loc.path.is_empty()))
+                .copied()
+                .unwrap_or(v.span),
         };
         let bytes = if v.ty.is_bool() { None } else { Some(bytes) };
         match self.locate(&addr, bytes) {

@@ -97,6 +97,25 @@ fn access_entry(
     })
 }
 
+impl ConfigEntry {
+    /// An entry read elsewhere (a TC6 XML `<configVariable>`): the instance path of the variable
+    /// (`res.inst.fb.x` or `inst.x`), the location it gets, its initial value, and where it is written.
+    pub fn new(
+        path: Vec<crate::ast::Ident>,
+        location: Option<crate::ast::DirectAddress>,
+        init: Option<crate::ast::Initializer>,
+        span: Span,
+    ) -> ConfigEntry {
+        ConfigEntry {
+            path,
+            location,
+            init,
+            span,
+            access: None,
+        }
+    }
+}
+
 /// The `VAR_CONFIG ... END_VAR` blocks of a text: their ranges (blanked before the IL parser reads the
 /// configuration) and their entries `res.inst.fb.x AT %QX0.1 : BOOL := TRUE;`. An entry that cannot
 /// be read is E0306.
@@ -334,12 +353,15 @@ pub fn apply_var_config(
             continue;
         };
         let inst = &mut c.resources[ri].programs[pi];
+        // keyed by the program instance, not by how the path names it (`res.inst.x` and
+        // `inst.x` reach one instance, so one copy)
         let prefix_key = |n: usize| {
-            e.path[..n]
-                .iter()
-                .map(|p| p.key())
-                .collect::<Vec<_>>()
-                .join(".")
+            let mut k = format!("{ui}/{ii}/{ri}/{pi}");
+            for p in &e.path[skip..n] {
+                k.push('.');
+                k.push_str(&p.key());
+            }
+            k
         };
         let ty = inst.type_name.name.clone();
         let key = prefix_key(skip);

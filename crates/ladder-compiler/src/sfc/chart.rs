@@ -5,7 +5,9 @@
 //! (through selection divergences and simultaneous convergences) and its successor steps (through
 //! selection convergences, simultaneous divergences and jump steps), in priority order. A transition
 //! after a selection convergence of steps and jump steps (CODESYS's alternative branches) is one
-//! transition per step (`<id>`, `<id>_1` ...), the jumps left out.
+//! transition per step (`<id>`, `<id>_1` ...), the jumps left out. A jump that ends a branch of a
+//! simultaneous sequence and loops back into that branch is left out of the simultaneous convergence
+//! it is connected to (see [`pre_steps`]).
 //! Invariants: only well-formed parts are kept: a transition whose predecessors or successors cannot be
 //! resolved is reported (E3120 dangling connection, E3128 invalid structure) and dropped; every step
 //! index in the chart is valid; step names are unique identifiers (E3131).
@@ -360,6 +362,9 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
     }
 
     let mut transitions = Vec::new();
+    // jumps ending a simultaneous branch and convergences of jumps only, checked (and reported)
+    // once however many transitions follow them
+    let mut checked: HashMap<usize, bool> = HashMap::new();
     for (i, n) in nodes.iter().enumerate() {
         if n.kind != NodeKind::Transition {
             continue;
@@ -386,7 +391,17 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
             pre.extend(ends.iter().take(1));
         } else {
             for &from in &resolved[i] {
-                ok &= pre_steps(ctx, &nodes, &resolved, from, &mut pre, &mut seen, pou);
+                ok &= pre_steps(
+                    ctx,
+                    &nodes,
+                    &resolved,
+                    &step_names,
+                    &mut checked,
+                    from,
+                    &mut pre,
+                    &mut seen,
+                    pou,
+                );
             }
         }
         if branch_ends.as_ref().is_some_and(|e| e.is_empty()) {
@@ -607,10 +622,20 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
 /// The steps that must be active for a transition whose input comes from `from`. An explicit stack, not
 /// recursion: a chain of divergences and convergences is as long as the file makes it (depth-first, in the
 /// order of the connections, as a recursive walk would visit them).
+///
+/// A branch of a simultaneous sequence may end in a jump back to a step of its own branch (CODESYS
+/// connects that jump to the simultaneous convergence): the branch loops and never reaches the
+/// convergence, so the transition after it waits for the other branches only, and leaves the looping
+/// branch active (IEC 61131-3: a transition deactivates its immediately preceding steps). A jump out
+/// of its branch is IEC 61131-3's "unsafe" SFC and a convergence of jumps only its "unreachable"
+/// one: both E3128.
+#[allow(clippy::too_many_arguments)]
 fn pre_steps(
     ctx: &mut Ctx,
     nodes: &[Node],
     resolved: &[Vec<usize>],
+    step_names: &HashMap<String, usize>,
+    checked: &mut HashMap<usize, bool>,
     from: usize,
     out: &mut Vec<usize>,
     seen: &mut HashSet<usize>,
@@ -628,6 +653,40 @@ fn pre_steps(
                 if let Some(s) = n.step {
                     out.push(s);
                 }
+            }
+            NodeKind::SimConv
+                if resolved[from]
+                    .iter()
+                    .any(|&f| nodes[f].kind == NodeKind::Jump) =>
+            {
+                let (jumps, rest): (Vec<usize>, Vec<usize>) = resolved[from]
+                    .iter()
+                    .partition(|&&f| nodes[f].kind == NodeKind::Jump);
+                for &j in &jumps {
+                    ok &= match checked.get(&j) {
+                        Some(&loops) => loops,
+                        None => {
+                            let loops =
+                                jump_loops_in_its_branch(ctx, nodes, resolved, step_names, j, pou);
+                            checked.insert(j, loops);
+                            loops
+                        }
+                    };
+                }
+                if rest.is_empty() && checked.insert(from, false).is_none() {
+                    report(
+                        ctx,
+                        code::E3128,
+                        ctx.tag(n.el),
+                        pou,
+                        Some(&n.id),
+                        "every branch of this simultaneous convergence ends in a jump: the transition \
+                         after it can never fire (IEC 61131-3's unreachable SFC)"
+                            .to_string(),
+                    );
+                }
+                ok &= !rest.is_empty();
+                stack.extend(rest.iter().rev());
             }
             NodeKind::SelDiv | NodeKind::SimConv => {
                 if resolved[from].is_empty() {
@@ -663,6 +722,66 @@ fn pre_steps(
         }
     }
     ok
+}
+
+/// Whether the jump `jump`, which ends a branch of a simultaneous sequence, jumps back to a step of
+/// its own branch: a step met walking back from the jump along the connections, through nested
+/// simultaneous sequences, up to the simultaneous divergence that opens the branch. Reports E3128
+/// (unsafe: the jump leaves the simultaneous sequence) otherwise; an unknown target is E3127, reported
+/// where the jump's transition is read.
+fn jump_loops_in_its_branch(
+    ctx: &mut Ctx,
+    nodes: &[Node],
+    resolved: &[Vec<usize>],
+    step_names: &HashMap<String, usize>,
+    jump: usize,
+    pou: &str,
+) -> bool {
+    let n = &nodes[jump];
+    let target = n.el.attr("targetName").unwrap_or_default().trim();
+    let Some(&target_step) = step_names.get(&target.to_ascii_uppercase()) else {
+        return false;
+    };
+    let mut seen = HashSet::new();
+    // (node, depth of nested simultaneous sequences entered from below)
+    let mut stack = vec![(jump, 0usize)];
+    while let Some((at, depth)) = stack.pop() {
+        if !seen.insert(at) {
+            continue;
+        }
+        let node = &nodes[at];
+        if node.step == Some(target_step) {
+            return true;
+        }
+        let depth = match node.kind {
+            NodeKind::SimConv => depth + 1,
+            NodeKind::SimDiv if depth == 0 => continue, // the start of the jump's branch
+            NodeKind::SimDiv => depth - 1,
+            _ => depth,
+        };
+        stack.extend(resolved[at].iter().map(|&f| (f, depth)));
+    }
+    let span = ctx.attr_span(n.el, "targetName");
+    ctx.report(
+        Diagnostic::error(
+            code::E3128,
+            format!(
+                "jump to step `{target}` leaves its branch of a simultaneous sequence: the other \
+                 branches stay active beside the target (IEC 61131-3's unsafe SFC)"
+            ),
+        )
+        .at(span)
+        .with_hint(
+            "end the branch at the simultaneous convergence and jump after the transition that \
+             follows it, or jump back to a step of the same branch",
+        )
+        .with_xml(XmlContext {
+            pou: Some(pou.to_string()),
+            local_id: Some(n.id.clone()),
+            network: None,
+        }),
+    );
+    false
 }
 
 /// The steps a transition activates: its consumers, through convergences, divergences and jumps. An
