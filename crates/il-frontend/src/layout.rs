@@ -722,8 +722,9 @@ impl<'s> Layout<'s> {
         true
     }
 
-    /// At the start of an instruction line directly in a POU's body (no declaration block, nested
-    /// list or argument list open, no keyword declared as a name outside the text): passes the plain
+    /// At the start of an instruction line of a POU's body, of a nested list (`AND(` .. `)`) or
+    /// outside any block (a bare instruction list; no declaration block or argument list open, no
+    /// keyword declared as a name outside the text): passes the plain
     /// lines from here on as one [`Tok::Lines`] and returns `true` (`false`, nothing consumed, when the
     /// first line is not plain). A plain line ([`plain_line`]) is one [`Layout::line_token`] passes
     /// on as one token, written with ASCII names, decimal digits, spaces and tabs only, and ended by
@@ -733,7 +734,10 @@ impl<'s> Layout<'s> {
     /// another form, a `(`) ends the run and goes the general way, token by token.
     fn line_run(&mut self) -> bool {
         if !(matches!(self.prev, Last::Start | Last::Eol) || self.pending_eol.is_some())
-            || !matches!(self.stack.last(), Some(Frame::Pou(..)))
+            || !matches!(
+                self.stack.last(),
+                None | Some(Frame::Pou(..) | Frame::Deferred(..))
+            )
             || !self.declared.is_empty()
         {
             return false;
@@ -1013,12 +1017,13 @@ mod tests {
         runs
     }
 
-    /// The plain lines directly in a POU's body pass as runs (blank lines skipped); a line that is
-    /// not plain, a nested list, declarations, lines outside a POU and a POU with a keyword declared
-    /// as a name outside the text do not.
+    /// The plain lines of a POU's body, of a nested list and outside any POU pass as runs (blank
+    /// lines skipped, each line's token as [`Layout::line_token`] makes it); a line that is not plain,
+    /// declarations (`y :` there is no label) and a text with a keyword declared as a name outside
+    /// it do not.
     #[test]
-    fn plain_lines_in_a_pou_pass_as_runs() {
-        let src = "PROGRAM p\nVAR x : INT; END_VAR\n  LD x\n  ADD 5\r\n\n l:\n  JMPC l\n  LD x.y\n  ST z\nAND( a\n OR b\n)\nEND_PROGRAM\nLD q\n";
+    fn plain_lines_pass_as_runs() {
+        let src = "PROGRAM p\nVAR\n  y :\n  INT;\nEND_VAR\n  LD x\n  ADD 5\r\n\n l:\n  JMPC l\n  LD x.y\n  ST z\nAND( a\n OR b\n)\nEND_PROGRAM\nLD q\n";
         let runs = |l: Layout| -> Vec<Vec<String>> {
             l.filter_map(|t| match t {
                 Ok((_, Tok::Lines(lines), _)) => Some(
@@ -1031,24 +1036,17 @@ mod tests {
             })
             .collect()
         };
-        let ld = (crate::ast::Op::Ld, false, Word::Ld);
         let at = |t: &str| src.find(t).unwrap();
+        let op = |w: Word| crate::parser::simple_op(w).unwrap();
+        let simple = |w: Word, name: &str| LineTok::Simple(op(w), at(name), at(name) + 1);
         assert_eq!(
             runs(Layout::new(FileId(0), src, 0, Tok::UnitStart)),
             vec![
                 vec![
-                    format!(
-                        "LD x {:?}",
-                        LineTok::Simple(ld, at("x\n  ADD"), at("x\n  ADD") + 1)
-                    ),
+                    format!("LD x {:?}", simple(Word::Ld, "x\n  ADD")),
                     format!(
                         "ADD 5 {:?}",
-                        LineTok::SimpleInt(
-                            (crate::ast::Op::Add, false, Word::Add),
-                            5,
-                            at("5"),
-                            at("5") + 1
-                        )
+                        LineTok::SimpleInt(op(Word::Add), 5, at("5"), at("5") + 1)
                     ),
                     format!("l: {:?}", LineTok::Label(at("l:"), at("l:") + 1)),
                     format!(
@@ -1056,10 +1054,9 @@ mod tests {
                         LineTok::Jump(Condition::IfTrue, at("l\n  LD"), at("l\n  LD") + 1)
                     ),
                 ],
-                vec![format!(
-                    "ST z {:?}",
-                    LineTok::Simple((crate::ast::Op::St, false, Word::St), at("z"), at("z") + 1)
-                )],
+                vec![format!("ST z {:?}", simple(Word::St, "z\n"))],
+                vec![format!("OR b {:?}", simple(Word::Or, "b\n"))],
+                vec![format!("LD q {:?}", simple(Word::Ld, "q\n"))],
             ]
         );
         let declared =
@@ -1153,7 +1150,7 @@ mod tests {
         );
     }
 
-    /// `LD x`, `ADD 5`, `JMPC l` and `l:` followed by the line's end: one token each, with the
+    /// `LD x`, `ADD 5`, `JMPC l` and `l:` followed by the line's end: one token each (without runs), with the
     /// operator and the second token's range; any other line keeps its tokens (an accessor, another
     /// literal, a comment, a label before an instruction, a keyword as the name, declarations, call
     /// arguments, the end of the text right after the name).
@@ -1161,6 +1158,7 @@ mod tests {
     fn simple_jump_and_label_lines_pass_as_one_token() {
         let lines = |src: &str| -> Vec<String> {
             Layout::new(FileId(0), src, 0, Tok::UnitStart)
+                .without_line_runs()
                 .filter_map(|t| t.ok())
                 .filter_map(|(s, tok, e)| {
                     let (what, ns, ne) = match tok {
@@ -1229,6 +1227,7 @@ mod tests {
     fn formal_call_look_ahead_sees_past_blanks_only() {
         let word_of_mod = |src: &str| {
             Layout::new(FileId(0), src, 0, Tok::UnitStart)
+                .without_line_runs()
                 .filter_map(|t| t.ok())
                 .find_map(|(s, tok, e)| match tok {
                     Tok::Word(w) if &src[s..e] == "MOD" => Some(w),

@@ -849,10 +849,10 @@ pub enum Tok {
     /// `done:` alone on its line: a plain name at the start of an instruction line and `:`, followed
     /// by the line's end; the name's local byte range.
     LabelLine(usize, usize),
-    /// A run of consecutive plain lines of a POU's instruction list (see
+    /// A run of consecutive plain lines of an instruction list (see
     /// [`crate::layout::Layout`]'s line runs), each with its line end: what the layout pass would
     /// have passed on as one line token ([`LineTok`], with that token's local byte range) and an
-    /// [`Tok::Eol`] per line. The grammar adds to the body what it builds of those tokens.
+    /// [`Tok::Eol`] per line. The grammar adds to the list what it builds of those tokens.
     Lines(Vec<(usize, LineTok, usize)>),
 }
 

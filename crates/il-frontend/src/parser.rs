@@ -696,28 +696,32 @@ impl<'s> Ctx<'s> {
         }
     }
 
-    /// Adds a run of plain lines ([`Tok::Lines`]) to a POU being collected: each line's statement is
-    /// what the grammar's rule for its line token builds (`BodyItem`: `Instr EOL` of a
-    /// `SIMPLE_LINE`, `SIMPLE_INT_LINE` or `JUMP_LINE`, a `LABEL_LINE`), added with [`Ctx::pou_item`].
+    /// The statement of one line of a run ([`Tok::Lines`]): what the grammar's rule for its line
+    /// token builds (`BodyItem`: `Instr EOL` of a `SIMPLE_LINE`, `SIMPLE_INT_LINE` or `JUMP_LINE`,
+    /// a `LABEL_LINE`), `None` where that rule gives none.
+    pub fn line_stmt(&mut self, (l, line, r): (usize, LineTok, usize)) -> Option<IlStmt> {
+        match line {
+            LineTok::Simple(op, nl, nr) => self.simple_line((op, nl, nr), l, r).map(IlStmt::Instr),
+            LineTok::SimpleInt(op, v, nl, nr) => self
+                .simple_int_line((op, v, nl, nr), l, r)
+                .map(IlStmt::Instr),
+            LineTok::Jump(c, nl, nr) => {
+                let label = self.ident(nl, nr);
+                self.jump(c, Some(label), l, r).map(IlStmt::Instr)
+            }
+            LineTok::Label(nl, nr) => Some(IlStmt::Label(self.ident(nl, nr))),
+        }
+    }
+
+    /// Adds a run of plain lines ([`Tok::Lines`]) to a POU being collected, each line's statement
+    /// ([`Ctx::line_stmt`]) with [`Ctx::pou_item`].
     pub fn pou_lines(
         &mut self,
         mut parts: PouParts,
         lines: Vec<(usize, LineTok, usize)>,
     ) -> PouParts {
-        for (l, line, r) in lines {
-            let stmt = match line {
-                LineTok::Simple(op, nl, nr) => {
-                    self.simple_line((op, nl, nr), l, r).map(IlStmt::Instr)
-                }
-                LineTok::SimpleInt(op, v, nl, nr) => self
-                    .simple_int_line((op, v, nl, nr), l, r)
-                    .map(IlStmt::Instr),
-                LineTok::Jump(c, nl, nr) => {
-                    let label = self.ident(nl, nr);
-                    self.jump(c, Some(label), l, r).map(IlStmt::Instr)
-                }
-                LineTok::Label(nl, nr) => Some(IlStmt::Label(self.ident(nl, nr))),
-            };
+        for line in lines {
+            let stmt = self.line_stmt(line);
             parts = self.pou_item(parts, PouItem::Stmt(stmt));
         }
         parts
@@ -1540,15 +1544,17 @@ mod tests {
         }
     }
 
-    /// `src` parsed as a file with and without runs of plain lines ([`Tok::Lines`]): the tree
-    /// (spans included) and the diagnostics, in the `Debug` notation.
+    /// `src` parsed as a file and as an instruction list alone (at offset 3 of its file), with and
+    /// without runs of plain lines ([`Tok::Lines`]): the trees (spans included) and the diagnostics,
+    /// in the `Debug` notation.
     fn both_ways(src: &str) -> [String; 2] {
         [true, false].map(|runs| {
             LINE_RUNS.set(runs);
             let mut diags = Diagnostics::new();
             let unit = crate::parse(FileId(0), src, &mut diags);
+            let body = crate::parse_body(FileId(0), src, 3, &mut diags);
             LINE_RUNS.set(true);
-            format!("{unit:#?}\n{diags:#?}")
+            format!("{unit:#?}\n{body:#?}\n{diags:#?}")
         })
     }
 
