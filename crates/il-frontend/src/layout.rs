@@ -16,6 +16,10 @@
 //!   does not cascade into the rest of the file.
 //! - Lexer errors are reported here and passed on as [`Tok::Error`], which the grammar recovers from
 //!   without reporting again.
+//! - The commonest lines (`LD x`, `ADD 5`, `JMPC l`, `l:` alone on their line) pass as one token each
+//!   ([`Tok::SimpleLine`] ...); where several follow one another at the start of an instruction line,
+//!   they are scanned without the lexer and pass as one [`Tok::Lines`] run (at most 256 lines). Either
+//!   way the grammar builds the same statements and diagnostics as of the tokens one by one.
 
 use crate::ast::Condition;
 use crate::lexer::{LexError, LineTok, RawToken, Tok, Word};
