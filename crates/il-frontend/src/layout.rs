@@ -750,7 +750,9 @@ impl<'s> Layout<'s> {
         let mut end = at;
         let mut lines = Vec::new();
         while lines.len() < MAX_RUN {
-            let Some((s, line, e, next)) = plain_line(self.src, end) else {
+            // blank lines are skipped between the lines of a run only: before its first line the
+            // lexer takes them (a failed look past many blank lines is not repeated line by line)
+            let Some((s, line, e, next)) = plain_line(self.src, end, !lines.is_empty()) else {
                 break;
             };
             if lines.is_empty() {
@@ -900,14 +902,19 @@ impl<'s> Layout<'s> {
     }
 }
 
-/// The plain line at `pos` of `src` (after blank lines: spaces and tabs only), if it is one: the
+/// The plain line at `pos` of `src` (after blank lines, spaces and tabs only, when `past_blank_lines`),
+/// if it is one: the
 /// local byte range and kind of the line token [`Layout::line_token`] passes on for it, and the
 /// position after the line's end. Plain: blanks, then an operator word (`LD` .. `LT`, see
 /// [`crate::parser::simple_op`]) and a name or a decimal integer (digits only), or a jump word
 /// (`JMP`, `JMPC`, `JMPCN`) and a name, or a name and `:`; then blanks and `\n` or `\r\n`. Names are
 /// `[A-Za-z_][A-Za-z0-9_]*` and not keywords ([`crate::lexer::classify`] gives [`Word::Ident`]); an
 /// operator word and its operand are separated by blanks. Anything else is `None`.
-fn plain_line(src: &str, pos: usize) -> Option<(usize, LineTok, usize, usize)> {
+fn plain_line(
+    src: &str,
+    pos: usize,
+    past_blank_lines: bool,
+) -> Option<(usize, LineTok, usize, usize)> {
     let b = src.as_bytes();
     let blanks = |mut i: usize| {
         while matches!(b.get(i), Some(b' ' | b'\t')) {
@@ -931,7 +938,7 @@ fn plain_line(src: &str, pos: usize) -> Option<(usize, LineTok, usize, usize)> {
         Some(j)
     };
     let mut i = blanks(pos);
-    while let Some(next) = line_end(i) {
+    while let Some(next) = line_end(i).filter(|_| past_blank_lines) {
         i = blanks(next);
     }
     let ws = i;

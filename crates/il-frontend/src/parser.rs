@@ -1737,6 +1737,21 @@ mod tests {
         assert_eq!(sizes[19], 5000 - 19 * 256);
     }
 
+    /// Blank lines are looked past once: 200,000 of them before a line that is not plain (after
+    /// a run and at the start of a body) parse in linear time, as without runs.
+    #[test]
+    fn many_blank_lines_are_looked_past_once() {
+        let blank = "  \n".repeat(200_000);
+        let src = format!(
+            "PROGRAM p\nVAR x : INT; END_VAR\n{blank}  LD x\n{blank}  LD x.y\nEND_PROGRAM\n"
+        );
+        let start = std::time::Instant::now();
+        let [runs, apart] = both_ways(&src);
+        assert!(runs == apart);
+        // quadratic, this would be some 10^11 steps; linear, well under a second in a debug build
+        assert!(start.elapsed().as_secs() < 60, "{:?}", start.elapsed());
+    }
+
     /// A run of lines where the grammar does not take one is reported as its first line's token.
     #[test]
     fn an_error_at_a_run_is_at_its_first_line() {
