@@ -16,9 +16,13 @@
 //!   does not cascade into the rest of the file.
 //! - Lexer errors are reported here and passed on as [`Tok::Error`], which the grammar recovers from
 //!   without reporting again.
+//! - The commonest lines (`LD x`, `ADD 5`, `JMPC l`, `l:` alone on their line) pass as one token each
+//!   ([`Tok::SimpleLine`] ...); where several follow one another at the start of an instruction line,
+//!   they are scanned without the lexer and pass as one [`Tok::Lines`] run (at most 256 lines). Either
+//!   way the grammar builds the same statements and diagnostics as of the tokens one by one.
 
 use crate::ast::Condition;
-use crate::lexer::{LexError, RawToken, Tok, Word};
+use crate::lexer::{LexError, LineTok, RawToken, Tok, Word};
 use diagnostics::{code, Diagnostic, FileId, Span};
 use logos::Logos;
 use std::collections::VecDeque;
@@ -101,7 +105,13 @@ pub struct Layout<'s> {
     code_brackets: usize,
     /// E0200 for subscripts nested too deeply was reported (once per text).
     deep_subscript_reported: bool,
+    /// Runs of plain lines pass on as one [`Tok::Lines`] ([`Layout::line_run`]); off, each line
+    /// passes on as its own line token and line end (the tests compare the two).
+    line_runs: bool,
 }
+
+/// The most lines one [`Tok::Lines`] carries (its list is 64 bytes a line).
+const MAX_RUN: usize = 256;
 
 /// The deepest nesting of subscripts in an instruction list (`a[b[c[i]]]`: 3) accepted in IL; the
 /// same as PLCopen XML variables' (`ladder_compiler::values::MAX_INDEX_DEPTH`). Real programs nest a
@@ -131,7 +141,14 @@ impl<'s> Layout<'s> {
             decl_init: false,
             code_brackets: 0,
             deep_subscript_reported: false,
+            line_runs: true,
         }
+    }
+
+    /// Each plain line passes on as its own line token and line end, never in a [`Tok::Lines`] run.
+    pub fn without_line_runs(mut self) -> Self {
+        self.line_runs = false;
+        self
     }
 
     /// Names declared outside the text (upper case): a keyword among them reads as a name.
@@ -548,6 +565,9 @@ impl<'s> Layout<'s> {
             return;
         }
         while self.out.is_empty() && !self.finished {
+            if self.line_runs && self.line_run() {
+                return;
+            }
             let next = self.lex.next();
             for (range, why) in std::mem::take(&mut self.lex.extras) {
                 self.diags.push(
@@ -730,6 +750,53 @@ impl<'s> Layout<'s> {
         true
     }
 
+    /// At the start of an instruction line of a POU's body, of a nested list (`AND(` .. `)`) or
+    /// outside any block (a bare instruction list; no declaration block or argument list open, no
+    /// keyword declared as a name outside the text): passes the plain
+    /// lines from here on as one [`Tok::Lines`] and returns `true` (`false`, nothing consumed, when the
+    /// first line is not plain). A plain line ([`plain_line`]) is one [`Layout::line_token`] passes
+    /// on as one token, written with ASCII names, decimal digits, spaces and tabs only, and ended by
+    /// `\n` or `\r\n`; blank lines between are skipped. The run stands for that line token and a
+    /// [`Tok::Eol`] per line: a line end pending before it is resolved first, and the layout state
+    /// after it is the one after a line end. Anything else (a comment, an accessor, a literal of
+    /// another form, a `(`) ends the run and goes the general way, token by token.
+    fn line_run(&mut self) -> bool {
+        if !(matches!(self.prev, Last::Start | Last::Eol) || self.pending_eol.is_some())
+            || !matches!(
+                self.stack.last(),
+                None | Some(Frame::Pou(..) | Frame::Deferred(..))
+            )
+            || !self.declared.is_empty()
+        {
+            return false;
+        }
+        let at = self.lex.span().end;
+        let mut end = at;
+        let mut lines = Vec::new();
+        while lines.len() < MAX_RUN {
+            // blank lines are skipped between the lines of a run only: before its first line the
+            // lexer takes them (a failed look past many blank lines is not repeated line by line)
+            let Some((s, line, e, next)) = plain_line(self.src, end, !lines.is_empty()) else {
+                break;
+            };
+            if lines.is_empty() {
+                lines.reserve(32);
+            }
+            lines.push((s, line, e));
+            end = next;
+        }
+        let Some(&(start, ..)) = lines.first() else {
+            return false;
+        };
+        self.lex.bump(end - at);
+        self.resolve_eol(None);
+        self.emit(start, Tok::Lines(lines), end);
+        // as after the last line's `Eol`
+        self.prev2 = Last::Other;
+        self.prev = Last::Eol;
+        true
+    }
+
     /// A `[` past [`MAX_SUBSCRIPT_NESTING`] open subscripts in an instruction list: reported once
     /// per file (E0200), and skipped with everything up to its matching `]` (or the line's end), so
     /// the grammar sees an operand nested [`MAX_SUBSCRIPT_NESTING`] deep and no later stage (the
@@ -859,6 +926,83 @@ impl<'s> Layout<'s> {
     }
 }
 
+/// The plain line at `pos` of `src` (after blank lines, spaces and tabs only, when `past_blank_lines`),
+/// if it is one: the
+/// local byte range and kind of the line token [`Layout::line_token`] passes on for it, and the
+/// position after the line's end. Plain: blanks, then an operator word (`LD` .. `LT`, see
+/// [`crate::parser::simple_op`]) and a name or a decimal integer (digits only), or a jump word
+/// (`JMP`, `JMPC`, `JMPCN`) and a name, or a name and `:`; then blanks and `\n` or `\r\n`. Names are
+/// `[A-Za-z_][A-Za-z0-9_]*` and not keywords ([`crate::lexer::classify`] gives [`Word::Ident`]); an
+/// operator word and its operand are separated by blanks. Anything else is `None`.
+fn plain_line(
+    src: &str,
+    pos: usize,
+    past_blank_lines: bool,
+) -> Option<(usize, LineTok, usize, usize)> {
+    let b = src.as_bytes();
+    let blanks = |mut i: usize| {
+        while matches!(b.get(i), Some(b' ' | b'\t')) {
+            i += 1;
+        }
+        i
+    };
+    let line_end = |i: usize| match (b.get(i), b.get(i + 1)) {
+        (Some(b'\n'), _) => Some(i + 1),
+        (Some(b'\r'), Some(b'\n')) => Some(i + 2),
+        _ => None,
+    };
+    let word = |i: usize| {
+        if !matches!(b.get(i), Some(c) if c.is_ascii_alphabetic() || *c == b'_') {
+            return None;
+        }
+        let mut j = i + 1;
+        while matches!(b.get(j), Some(c) if c.is_ascii_alphanumeric() || *c == b'_') {
+            j += 1;
+        }
+        Some(j)
+    };
+    let mut i = blanks(pos);
+    while let Some(next) = line_end(i).filter(|_| past_blank_lines) {
+        i = blanks(next);
+    }
+    let ws = i;
+    let we = word(ws)?;
+    let w = crate::lexer::classify(&src[ws..we]);
+    let j = blanks(we);
+    let (line, e) = if b.get(j) == Some(&b':') {
+        if w != Word::Ident {
+            return None;
+        }
+        (LineTok::Label(ws, we), j + 1)
+    } else if j == we {
+        // no operand (`NOT`), or the word goes on (`x.y`, `INT#5`, `f(`)
+        return None;
+    } else if b.get(j).is_some_and(u8::is_ascii_digit) {
+        let op = crate::parser::simple_op(w)?;
+        let mut ne = j;
+        while b.get(ne).is_some_and(u8::is_ascii_digit) {
+            ne += 1;
+        }
+        let v = crate::literal::decimal_int(&src[j..ne]).ok()?;
+        (LineTok::SimpleInt(op, v, j, ne), ne)
+    } else {
+        let ne = word(j)?;
+        if crate::lexer::classify(&src[j..ne]) != Word::Ident {
+            return None;
+        }
+        let line = match (crate::parser::simple_op(w), w) {
+            (Some(op), _) => LineTok::Simple(op, j, ne),
+            (None, Word::Jmp) => LineTok::Jump(Condition::Always, j, ne),
+            (None, Word::Jmpc) => LineTok::Jump(Condition::IfTrue, j, ne),
+            (None, Word::Jmpcn) => LineTok::Jump(Condition::IfFalse, j, ne),
+            _ => return None,
+        };
+        (line, ne)
+    };
+    let next = line_end(blanks(e))?;
+    Some((ws, line, e, next))
+}
+
 impl Iterator for Layout<'_> {
     type Item = Result<Spanned, ()>;
     fn next(&mut self) -> Option<Self::Item> {
@@ -874,26 +1018,88 @@ mod tests {
     use super::*;
 
     /// The token stream in a compact notation: words by spelling, `;` for Eol.
+    /// A run of lines ([`Tok::Lines`]) reads as its lines' tokens, each with a line end: the same
+    /// notation with and without runs (asserted).
     fn stream(src: &str) -> (String, Vec<String>) {
-        let mut l = Layout::new(FileId(0), src, 0, Tok::UnitStart);
-        let mut out = Vec::new();
-        for t in l.by_ref() {
-            let (s, tok, e) = t.unwrap();
-            out.push(match tok {
-                Tok::UnitStart => continue,
-                Tok::Eol => "/".to_string(),
-                Tok::Word(w) if s == e => format!("<{}>", w.spelling()),
-                Tok::RParen if s == e => "<)>".to_string(),
-                _ => src[s..e].to_string(),
-            });
-        }
-        (
-            out.join(" "),
-            l.diags
-                .iter()
-                .map(|d| format!("{} {}", d.code, d.message))
-                .collect(),
-        )
+        let render = |mut l: Layout| {
+            let mut out = Vec::new();
+            for t in l.by_ref() {
+                let (s, tok, e) = t.unwrap();
+                out.push(match tok {
+                    Tok::UnitStart => continue,
+                    Tok::Eol => "/".to_string(),
+                    Tok::Word(w) if s == e => format!("<{}>", w.spelling()),
+                    Tok::RParen if s == e => "<)>".to_string(),
+                    Tok::Lines(lines) => lines
+                        .iter()
+                        .map(|(l, _, r)| format!("{} /", &src[*l..*r]))
+                        .collect::<Vec<_>>()
+                        .join(" "),
+                    _ => src[s..e].to_string(),
+                });
+            }
+            (
+                out.join(" "),
+                l.diags
+                    .iter()
+                    .map(|d| format!("{} {}", d.code, d.message))
+                    .collect::<Vec<_>>(),
+            )
+        };
+        let runs = render(Layout::new(FileId(0), src, 0, Tok::UnitStart));
+        let apart = render(Layout::new(FileId(0), src, 0, Tok::UnitStart).without_line_runs());
+        assert_eq!(runs, apart, "with and without runs of lines");
+        runs
+    }
+
+    /// The plain lines of a POU's body, of a nested list and outside any POU pass as runs (blank
+    /// lines skipped, each line's token as [`Layout::line_token`] makes it); a line that is not plain,
+    /// declarations (`y :` there is no label) and a text with a keyword declared as a name outside
+    /// it do not.
+    #[test]
+    fn plain_lines_pass_as_runs() {
+        let src = "PROGRAM p\nVAR\n  y :\n  INT;\nEND_VAR\n  LD x\n  ADD 5\r\n\n l:\n  JMPC l\n  LD x.y\n  ST z\nAND( a\n OR b\n)\nEND_PROGRAM\nLD q\n";
+        let runs = |l: Layout| -> Vec<Vec<String>> {
+            l.filter_map(|t| match t {
+                Ok((_, Tok::Lines(lines), _)) => Some(
+                    lines
+                        .iter()
+                        .map(|(s, line, e)| format!("{} {line:?}", &src[*s..*e]))
+                        .collect(),
+                ),
+                _ => None,
+            })
+            .collect()
+        };
+        let at = |t: &str| src.find(t).unwrap();
+        let op = |w: Word| crate::parser::simple_op(w).unwrap();
+        let simple = |w: Word, name: &str| LineTok::Simple(op(w), at(name), at(name) + 1);
+        assert_eq!(
+            runs(Layout::new(FileId(0), src, 0, Tok::UnitStart)),
+            vec![
+                vec![
+                    format!("LD x {:?}", simple(Word::Ld, "x\n  ADD")),
+                    format!(
+                        "ADD 5 {:?}",
+                        LineTok::SimpleInt(op(Word::Add), 5, at("5"), at("5") + 1)
+                    ),
+                    format!("l: {:?}", LineTok::Label(at("l:"), at("l:") + 1)),
+                    format!(
+                        "JMPC l {:?}",
+                        LineTok::Jump(Condition::IfTrue, at("l\n  LD"), at("l\n  LD") + 1)
+                    ),
+                ],
+                vec![format!("ST z {:?}", simple(Word::St, "z\n"))],
+                vec![format!("OR b {:?}", simple(Word::Or, "b\n"))],
+                vec![format!("LD q {:?}", simple(Word::Ld, "q\n"))],
+            ]
+        );
+        let declared =
+            Layout::new(FileId(0), src, 0, Tok::UnitStart).with_declared(vec!["ON".into()]);
+        assert!(runs(declared).is_empty());
+        assert!(
+            runs(Layout::new(FileId(0), src, 0, Tok::UnitStart).without_line_runs()).is_empty()
+        );
     }
 
     #[test]
@@ -979,7 +1185,7 @@ mod tests {
         );
     }
 
-    /// `LD x`, `ADD 5`, `JMPC l` and `l:` followed by the line's end: one token each, with the
+    /// `LD x`, `ADD 5`, `JMPC l` and `l:` followed by the line's end: one token each (without runs), with the
     /// operator and the second token's range; any other line keeps its tokens (an accessor, another
     /// literal, a comment, a label before an instruction, a keyword as the name, declarations, call
     /// arguments, the end of the text right after the name).
@@ -987,6 +1193,7 @@ mod tests {
     fn simple_jump_and_label_lines_pass_as_one_token() {
         let lines = |src: &str| -> Vec<String> {
             Layout::new(FileId(0), src, 0, Tok::UnitStart)
+                .without_line_runs()
                 .filter_map(|t| t.ok())
                 .filter_map(|(s, tok, e)| {
                     let (what, ns, ne) = match tok {
@@ -1055,6 +1262,7 @@ mod tests {
     fn formal_call_look_ahead_sees_past_blanks_only() {
         let word_of_mod = |src: &str| {
             Layout::new(FileId(0), src, 0, Tok::UnitStart)
+                .without_line_runs()
                 .filter_map(|t| t.ok())
                 .find_map(|(s, tok, e)| match tok {
                     Tok::Word(w) if &src[s..e] == "MOD" => Some(w),

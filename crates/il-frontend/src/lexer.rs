@@ -849,6 +849,36 @@ pub enum Tok {
     /// `done:` alone on its line: a plain name at the start of an instruction line and `:`, followed
     /// by the line's end; the name's local byte range.
     LabelLine(usize, usize),
+    /// A run of consecutive plain lines of an instruction list (see
+    /// [`crate::layout::Layout`]'s line runs), each with its line end: what the layout pass would
+    /// have passed on as one line token ([`LineTok`], with that token's local byte range) and an
+    /// [`Tok::Eol`] per line. The grammar adds to the list what it builds of those tokens.
+    Lines(Vec<(usize, LineTok, usize)>),
+}
+
+/// One line of a [`Tok::Lines`] run: the line token the layout pass passes on for it otherwise.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LineTok {
+    /// As [`Tok::SimpleLine`].
+    Simple((crate::ast::Op, bool, Word), usize, usize),
+    /// As [`Tok::SimpleIntLine`].
+    SimpleInt((crate::ast::Op, bool, Word), i128, usize, usize),
+    /// As [`Tok::JumpLine`].
+    Jump(crate::ast::Condition, usize, usize),
+    /// As [`Tok::LabelLine`].
+    Label(usize, usize),
+}
+
+impl LineTok {
+    /// The line token it stands for.
+    pub fn into_tok(self) -> Tok {
+        match self {
+            LineTok::Simple(op, l, r) => Tok::SimpleLine(op, l, r),
+            LineTok::SimpleInt(op, v, l, r) => Tok::SimpleIntLine(op, v, l, r),
+            LineTok::Jump(c, l, r) => Tok::JumpLine(c, l, r),
+            LineTok::Label(l, r) => Tok::LabelLine(l, r),
+        }
+    }
 }
 
 impl Tok {
@@ -863,7 +893,8 @@ impl Tok {
             | Tok::SimpleLine(..)
             | Tok::SimpleIntLine(..)
             | Tok::JumpLine(..)
-            | Tok::LabelLine(..) => format!("`{text}`"),
+            | Tok::LabelLine(..)
+            | Tok::Lines(..) => format!("`{text}`"),
             Tok::Int(_) | Tok::Real(_) | Tok::Time(_) | Tok::Str(..) => {
                 format!("literal `{text}`")
             }

@@ -10,7 +10,7 @@
 
 use crate::ast::*;
 use crate::layout::Layout;
-use crate::lexer::{TimeValue, Tok, Word};
+use crate::lexer::{LineTok, TimeValue, Tok, Word};
 use diagnostics::{code, Code, Diagnostic, Diagnostics, FileId, Severity, Span};
 use lalrpop_util::{ErrorRecovery, ParseError};
 
@@ -696,6 +696,37 @@ impl<'s> Ctx<'s> {
         }
     }
 
+    /// The statement of one line of a run ([`Tok::Lines`]): what the grammar's rule for its line
+    /// token builds (`BodyItem`: `Instr EOL` of a `SIMPLE_LINE`, `SIMPLE_INT_LINE` or `JUMP_LINE`,
+    /// a `LABEL_LINE`), `None` where that rule gives none.
+    pub fn line_stmt(&mut self, (l, line, r): (usize, LineTok, usize)) -> Option<IlStmt> {
+        match line {
+            LineTok::Simple(op, nl, nr) => self.simple_line((op, nl, nr), l, r).map(IlStmt::Instr),
+            LineTok::SimpleInt(op, v, nl, nr) => self
+                .simple_int_line((op, v, nl, nr), l, r)
+                .map(IlStmt::Instr),
+            LineTok::Jump(c, nl, nr) => {
+                let label = self.ident(nl, nr);
+                self.jump(c, Some(label), l, r).map(IlStmt::Instr)
+            }
+            LineTok::Label(nl, nr) => Some(IlStmt::Label(self.ident(nl, nr))),
+        }
+    }
+
+    /// Adds a run of plain lines ([`Tok::Lines`]) to a POU being collected, each line's statement
+    /// ([`Ctx::line_stmt`]) with [`Ctx::pou_item`].
+    pub fn pou_lines(
+        &mut self,
+        mut parts: PouParts,
+        lines: Vec<(usize, LineTok, usize)>,
+    ) -> PouParts {
+        for line in lines {
+            let stmt = self.line_stmt(line);
+            parts = self.pou_item(parts, PouItem::Stmt(stmt));
+        }
+        parts
+    }
+
     /// Adds one item to a POU being collected; a `VAR` block after the first instruction is error E0015.
     pub fn pou_item(&mut self, mut parts: PouParts, item: PouItem) -> PouParts {
         match item {
@@ -1107,6 +1138,11 @@ impl<'s> Ctx<'s> {
         if tok == Tok::Error {
             return;
         }
+        // A run of lines is reported as its first line's token would be.
+        let tok = match tok {
+            Tok::Lines(mut lines) if !lines.is_empty() => lines.swap_remove(0).1.into_tok(),
+            other => other,
+        };
         // A simple, jump or label line is two tokens of the source: the error is at its first (the
         // second is skipped with the rest of the line, as it would be on its own).
         let (tok, end) = match tok {
@@ -1322,6 +1358,10 @@ pub(crate) fn run(
     declared: Vec<String>,
 ) -> Option<Parsed> {
     let mut layout = Layout::new(file, src, base, start).with_declared(declared);
+    #[cfg(test)]
+    if !tests::LINE_RUNS.get() {
+        layout = layout.without_line_runs();
+    }
     let mut ctx = Ctx {
         file,
         src,
@@ -1436,6 +1476,12 @@ pub(crate) fn implicit_program_warning(at: Span, name: &str) -> Diagnostic {
 mod tests {
     use super::*;
 
+    thread_local! {
+        /// Whether [`run`]'s layout pass passes runs of plain lines as one token (this thread's
+        /// parses; the tests below compare the two ways).
+        pub(super) static LINE_RUNS: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
+    }
+
     /// A syntax error at a simple, jump or label line (`LD x`, `ADD 5`, `JMPC l`, `l:` as one token)
     /// is the error at its first token: the same message, span and hint as for that token alone.
     #[test]
@@ -1497,5 +1543,248 @@ mod tests {
             assert_eq!(line.len(), 1);
             assert!(line[0].contains(&format!("`{first}`")), "{line:?}");
         }
+    }
+
+    /// `src` parsed as a file and as an instruction list alone (at offset 3 of its file), with and
+    /// without runs of plain lines ([`Tok::Lines`]): the trees (spans included) and the diagnostics,
+    /// in the `Debug` notation.
+    fn both_ways(src: &str) -> [String; 2] {
+        [true, false].map(|runs| {
+            LINE_RUNS.set(runs);
+            let mut diags = Diagnostics::new();
+            let unit = crate::parse(FileId(0), src, &mut diags);
+            let body = crate::parse_body(FileId(0), src, 3, &mut diags);
+            LINE_RUNS.set(true);
+            format!("{unit:#?}\n{body:#?}\n{diags:#?}")
+        })
+    }
+
+    /// Lines of IL around the plain ones a run takes (`LD x`, `ADD 5`, `JMPC l`, `l:`): each
+    /// program of them parses to the same tree and diagnostics with and without runs.
+    const LINES: &[&str] = &[
+        "LD x",
+        "ld X_1",
+        "LDN  a",
+        "ST\tb",
+        "STN b",
+        "ADD 5",
+        "ADD 007",
+        "SUB 0",
+        "S q",
+        "R q",
+        "MOD n",
+        "GT 99999999999999999999999999999999999999999",
+        "JMPC l1",
+        "JMP l2",
+        "jmpcn L1",
+        "l1:",
+        "l2 :",
+        "L1:  ",
+        "NOT x",
+        "NOT",
+        "LD",
+        "ST",
+        "JMP",
+        "JMPC 5",
+        "RET",
+        "LD x.y",
+        "LD x.3",
+        "LD a[1]",
+        "LD a[i].b",
+        "LD INT#5",
+        "LD 1_000",
+        "ADD -5",
+        "ADD +5",
+        "ADD 5.0",
+        "ADD 1e3",
+        "ADD 16#FF",
+        "ADD 5x",
+        "LD TRUE",
+        "LD t#5s",
+        "LD 'str'",
+        "LD x (* c *)",
+        "(* c *) LD x",
+        "(* a\nb *) LD x",
+        "LD x // c",
+        "LD x ; c",
+        "AND( b",
+        "AND(",
+        "OR c",
+        ")",
+        "CAL t0(IN := x, PT := T#1s)",
+        "CAL t0(",
+        "IN := x,",
+        "Q => y",
+        "CAL t0",
+        "LD %IX0.1",
+        "LD x, y",
+        "ADD x, 5",
+        "LD END_VAR",
+        "LD ld",
+        "l1: LD x",
+        "LD ?",
+        "LD x y",
+        "ST 5",
+        "LD x\u{feff}",
+        "\u{feff}LD x",
+        "LD \u{e9}",
+        "LD _",
+        "LD x__y",
+        "LD\u{c}x",
+        "x",
+        "5",
+        "VAR x : INT; END_VAR",
+        "VAR",
+        "END_VAR",
+        "END_PROGRAM",
+        "END_FUNCTION",
+        "PROGRAM q",
+        "FUNCTION g : INT",
+        "TYPE t : INT; END_TYPE",
+        "",
+        "   ",
+        "\t",
+        "MOD(IN1 := a, IN2 := b)",
+        "LIMIT(1, 5)",
+        "IN x",
+        "PT t",
+        "END",
+        "LDx",
+        "LD:",
+        "l1::",
+        "l1 := 5",
+        "JMPC l1 l2",
+    ];
+
+    #[test]
+    fn runs_of_plain_lines_parse_as_their_lines() {
+        let lines = LINES;
+        let heads = [
+            "",
+            "PROGRAM p\n",
+            "PROGRAM p\nVAR x : INT; END_VAR\n",
+            "FUNCTION f : INT\n",
+            "FUNCTION_BLOCK fb\nVAR_INPUT a : BOOL; END_VAR\n",
+            "PROGRAM\n",
+            "PROGRAM p :\n",
+        ];
+        let tails = [
+            "",
+            "END_PROGRAM\n",
+            "END_FUNCTION",
+            "END_PROGRAM\nPROGRAM q\nLD x\n",
+        ];
+        let ends = ["\n", "\r\n", "\n\n", " \t\n", "\r"];
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |n: usize| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % n as u64) as usize
+        };
+        let mut with_runs = 0;
+        for case in 0..2000 {
+            let mut src = heads[next(heads.len())].to_string();
+            for _ in 0..1 + next(24) {
+                src += ["", "  ", "\t", " \t "][next(4)];
+                // mostly plain lines, as real programs are
+                src += if next(3) > 0 {
+                    lines[next(20)]
+                } else {
+                    lines[next(lines.len())]
+                };
+                src += ends[if next(4) > 0 {
+                    next(2)
+                } else {
+                    next(ends.len())
+                }];
+            }
+            src += tails[next(tails.len())];
+            let [runs, apart] = both_ways(&src);
+            assert_eq!(runs, apart, "case {case}: {src:?}");
+            with_runs += usize::from(
+                crate::layout::Layout::new(FileId(0), &src, 0, Tok::UnitStart)
+                    .any(|t| matches!(t, Ok((_, Tok::Lines(_), _)))),
+            );
+        }
+        // the runs were taken, not only the general way
+        assert!(with_runs > 500, "{with_runs} of 2000 programs had a run");
+    }
+
+    /// A run is at most 256 lines; a body of 5,000 plain lines (runs, the last one short, and the
+    /// room a long body gets at 4,096 statements) parses as without runs.
+    #[test]
+    fn long_runs_parse_as_their_lines() {
+        let mut src = "PROGRAM p\nVAR x : INT; END_VAR\n".to_string();
+        for i in 0..5000 {
+            src += match i % 4 {
+                0 => "  LD x\n",
+                1 => "  ADD 1\r\n",
+                2 => "  JMPC l\n",
+                _ => "l:\n",
+            };
+        }
+        src += "END_PROGRAM\n";
+        let [runs, apart] = both_ways(&src);
+        assert!(runs == apart);
+        let sizes: Vec<usize> = crate::layout::Layout::new(FileId(0), &src, 0, Tok::UnitStart)
+            .filter_map(|t| match t {
+                Ok((_, Tok::Lines(l), _)) => Some(l.len()),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(sizes.len(), 20);
+        assert!(sizes[..19].iter().all(|&n| n == 256));
+        assert_eq!(sizes[19], 5000 - 19 * 256);
+    }
+
+    /// Blank lines are looked past once: 200,000 of them before a line that is not plain (after
+    /// a run and at the start of a body) parse in linear time, as without runs.
+    #[test]
+    fn many_blank_lines_are_looked_past_once() {
+        let blank = "  \n".repeat(200_000);
+        let src = format!(
+            "PROGRAM p\nVAR x : INT; END_VAR\n{blank}  LD x\n{blank}  LD x.y\nEND_PROGRAM\n"
+        );
+        let start = std::time::Instant::now();
+        let [runs, apart] = both_ways(&src);
+        assert!(runs == apart);
+        // quadratic, this would be some 10^11 steps; linear, well under a second in a debug build
+        assert!(start.elapsed().as_secs() < 60, "{:?}", start.elapsed());
+    }
+
+    /// A run of lines where the grammar does not take one is reported as its first line's token.
+    #[test]
+    fn an_error_at_a_run_is_at_its_first_line() {
+        let src = "  LD x\n  ST y\n";
+        let report = |tok: Tok| {
+            let mut ctx = Ctx {
+                file: FileId(0),
+                src,
+                base: 0,
+                diags: Vec::new(),
+                consts: Default::default(),
+                in_constant_block: false,
+            };
+            ctx.recover(ErrorRecovery {
+                error: ParseError::UnrecognizedToken {
+                    token: (2, tok, src.len()),
+                    expected: vec!["\"END_VAR\"".to_string()],
+                },
+                dropped_tokens: Vec::new(),
+            });
+            format!("{:?}", ctx.diags)
+        };
+        let ld = (Op::Ld, false, Word::Ld);
+        let run = Tok::Lines(vec![
+            (2, LineTok::Simple(ld, 5, 6), 6),
+            (9, LineTok::Simple((Op::St, false, Word::St), 12, 13), 13),
+        ]);
+        let first = report(run);
+        assert_eq!(first, report(Tok::SimpleLine(ld, 5, 6)));
+        assert!(
+            first.contains("unexpected `LD`") && first.contains("end: 4 "),
+            "{first}"
+        );
     }
 }
