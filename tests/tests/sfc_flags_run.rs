@@ -16,41 +16,18 @@
 //!   without a BOOL variable is E3403.
 
 mod common;
-use common::{check_text, ladderc};
+use common::{check_text, ladderc, run_stimulated};
 use std::path::{Path, PathBuf};
 
 fn fixture() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/unseen/codesys_sfc_flags.xml")
 }
 
-/// `ladderc run` of the fixture (10 ms scans, sanitizers) with `stimulus` rows, tracing `watch`:
-/// the trace and standard error; asserts exit 0.
+/// [`run_stimulated`] of the fixture, asserting also that nothing was reported as an error.
 fn run(cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
-    let dir = tempfile::tempdir().unwrap();
-    let stim = dir.path().join("stim.csv");
-    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .arg(fixture())
-        .args([
-            "--cycles",
-            &cycles.to_string(),
-            "--cycle-ms",
-            "10",
-            "--sanitize",
-        ])
-        .arg("--stimulus")
-        .arg(&stim)
-        .args(["--trace", "-", "--watch", watch])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{stderr}");
-    assert!(
-        !stderr.contains("Sanitizer") && !stderr.contains("error"),
-        "{stderr}"
-    );
-    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+    let (trace, stderr) = run_stimulated(&fixture(), cycles, stimulus, watch);
+    assert!(!stderr.contains("error"), "{stderr}");
+    (trace, stderr)
 }
 
 const CHAIN: &str = "Chain.__sfc_X_Init,Chain.__sfc_X_S1,Chain.__sfc_X_S2,Chain.lamp,Chain.n,\

@@ -14,7 +14,7 @@
 //!   (before, E3007 "unknown block type"); its ENO is its EN.
 
 mod common;
-use common::{check_text, ladderc};
+use common::{check_text, run_stimulated};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
@@ -23,33 +23,11 @@ fn fixture(name: &str) -> PathBuf {
         .join(name)
 }
 
-/// `ladderc run FILE` (10 ms scans, C built with the sanitizers) with `stimulus` rows
-/// (`cycle,variable,value`), tracing `watch`: the trace and standard error; asserts exit 0 and no
-/// warning that an action is not compiled.
+/// [`run_stimulated`], asserting also that no action was left uncompiled (W3401).
 fn run(file: &Path, cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
-    let dir = tempfile::tempdir().unwrap();
-    let stim = dir.path().join("stim.csv");
-    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .arg(file)
-        .args([
-            "--cycles",
-            &cycles.to_string(),
-            "--cycle-ms",
-            "10",
-            "--sanitize",
-        ])
-        .arg("--stimulus")
-        .arg(&stim)
-        .args(["--trace", "-", "--watch", watch])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{file:?}: {stderr}");
-    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    let (trace, stderr) = run_stimulated(file, cycles, stimulus, watch);
     assert!(!stderr.contains("W3401"), "{stderr}");
-    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+    (trace, stderr)
 }
 
 /// The end of the `<action>` (a POU's action with an SFC body) that starts at `start`: after the

@@ -68,7 +68,7 @@
 //! through `ladderc run` (C compiled with the sanitizers) or `ladderc check`.
 
 mod common;
-use common::{check_text, ladderc};
+use common::{check_text, run_stimulated};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
@@ -77,31 +77,9 @@ fn fixture(name: &str) -> PathBuf {
         .join(name)
 }
 
-/// `ladderc run FILE` (10 ms scans, C built with the sanitizers) with `stimulus` rows
-/// (`cycle,variable,value`), tracing `watch`: the trace; asserts exit 0.
+/// [`run_stimulated`]: the trace.
 fn run(file: &Path, cycles: u32, stimulus: &str, watch: &str) -> String {
-    let dir = tempfile::tempdir().unwrap();
-    let stim = dir.path().join("stim.csv");
-    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .arg(file)
-        .args([
-            "--cycles",
-            &cycles.to_string(),
-            "--cycle-ms",
-            "10",
-            "--sanitize",
-        ])
-        .arg("--stimulus")
-        .arg(&stim)
-        .args(["--trace", "-", "--watch", watch])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{file:?}: {stderr}");
-    assert!(!stderr.contains("Sanitizer"), "{stderr}");
-    String::from_utf8_lossy(&out.stdout).into_owned()
+    run_stimulated(file, cycles, stimulus, watch).0
 }
 
 /// A branch of a simultaneous sequence that ends in a jump back to a step of its own branch

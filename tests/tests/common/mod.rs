@@ -153,6 +153,34 @@ pub fn run_with_stimulus(file: &Path, cycles: u32, stimulus: &str, watch: &[&str
     std::fs::read_to_string(&trace).unwrap()
 }
 
+/// `ladderc run FILE` (10 ms scans, C built with the sanitizers) with `stimulus` rows
+/// (`cycle,variable,value` after the header), tracing `watch` to standard output: the trace and
+/// standard error; asserts exit 0 and no sanitizer report.
+pub fn run_stimulated(file: &Path, cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(file)
+        .args([
+            "--cycles",
+            &cycles.to_string(),
+            "--cycle-ms",
+            "10",
+            "--sanitize",
+        ])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", watch])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{file:?}: {stderr}");
+    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+}
+
 /// The numeric column `name` of a trace (CSV text with a header row), one value per cycle. Panics when
 /// the column is missing or a value is not a number.
 pub fn column(trace: &str, name: &str) -> Vec<f64> {
