@@ -7,7 +7,7 @@
 //! after a selection convergence of steps and jump steps (CODESYS's alternative branches) is one
 //! transition per step (`<id>`, `<id>_1` ...), the jumps left out. A jump that ends a branch of a
 //! simultaneous sequence and loops back into that branch is left out of the simultaneous convergence
-//! it is connected to (see [`pre_steps`]).
+//! it is connected to (see `pre_steps`).
 //! Invariants: only well-formed parts are kept: a transition whose predecessors or successors cannot be
 //! resolved is reported (E3120 dangling connection, E3128 invalid structure) and dropped; every step
 //! index in the chart is valid; step names are unique identifiers (E3131).
