@@ -3,7 +3,7 @@
 //! and bytes (`x.3`, `x.%X3`, `x.%B1`) in ST, IL, LD and FBD, and the others added below.
 
 mod common;
-use common::{check_text, ladderc, run_traced as run};
+use common::{check_text, ladderc, rejected_heads, run_traced as run};
 
 use std::path::{Path, PathBuf};
 
@@ -203,12 +203,7 @@ fn an_unknown_library_is_one_located_e1032_per_library() {
         "PROGRAM main\nVAR\n  pid : OSCAT_BASIC.CTRL_PI;\n  lin : OSCAT_BASIC.F_LIN_TYPE;\n  \
                arr : ARRAY[1..2] OF Lib.Y;\n  x : REAL;\nEND_VAR\n  pid(ACT := x);\n  \
                x := OSCAT_BASIC.F_LIN(x) + pid.Y;\n  x := CAA.Foo(1);\nEND_PROGRAM\n";
-    let (code, lines) = check_text("lib.st", src);
-    assert_eq!(code, Some(1));
-    let heads: Vec<&str> = lines
-        .iter()
-        .map(|l| l.split_once(" (hint").unwrap().0)
-        .collect();
+    let heads = rejected_heads("lib.st", src);
     assert_eq!(
         heads,
         vec![
@@ -308,12 +303,7 @@ fn var_config_entries_that_cannot_apply_are_located_e0306() {
             "res.inst.n : INT := 5;",
             "res.inst.n AT %QW2 : INT;\n    res.ghost.x : INT := 1;\n    res.inst.l1.nope : BOOL := TRUE;",
         );
-    let (code, lines) = check_text("vc.st", &src);
-    assert_eq!(code, Some(1));
-    let heads: Vec<&str> = lines
-        .iter()
-        .map(|l| l.split_once(" (hint").unwrap().0)
-        .collect();
+    let heads = rejected_heads("vc.st", &src);
     assert_eq!(
         heads,
         vec![
@@ -361,12 +351,7 @@ fn var_config_placeholders_left_unconfigured_and_bad_xml_entries_are_located() {
         .replace("\"res.inst.n\"", "\"res.ghost.n\"")
         .replace("\"%QX0.2\"", "\"%QX*\"")
         .replace("\"inst.sw\"", "\"inst..sw\"");
-    let (code, lines) = check_text("vc.xml", &bad);
-    assert_eq!(code, Some(1));
-    let heads: Vec<&str> = lines
-        .iter()
-        .map(|l| l.split_once(" (hint").unwrap().0)
-        .collect();
+    let heads = rejected_heads("vc.xml", &bad);
     assert_eq!(
         heads,
         vec![
@@ -480,12 +465,7 @@ fn an_interface_is_one_located_e0303_without_cascade() {
     let src = "INTERFACE IValve\n    METHOD Open : BOOL\n    END_METHOD\n    PROPERTY IsOpen : BOOL\n        GET\n        END_GET\n    END_PROPERTY\nEND_INTERFACE\n\n\
                FUNCTION_BLOCK Valve IMPLEMENTS IValve\nVAR_OUTPUT q : BOOL; END_VAR\n  q := TRUE;\nEND_FUNCTION_BLOCK\n\n\
                PROGRAM main\nVAR v : Valve; END_VAR\n  v();\nEND_PROGRAM\n";
-    let (code, lines) = check_text("itf.st", src);
-    assert_eq!(code, Some(1));
-    let heads: Vec<&str> = lines
-        .iter()
-        .map(|l| l.split_once(" (hint").unwrap().0)
-        .collect();
+    let heads = rejected_heads("itf.st", src);
     assert_eq!(
         heads,
         vec![

@@ -195,6 +195,17 @@ pub fn column(trace: &str, name: &str) -> Vec<f64> {
         .collect()
 }
 
+/// [`check_text`] of a text that must be rejected (exit 1): each diagnostic line up to its hint
+/// (`file:line:col: error[CODE]: message`).
+pub fn rejected_heads(name: &str, src: &str) -> Vec<String> {
+    let (code, lines) = check_text(name, src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0.to_string())
+        .collect()
+}
+
 /// `ladderc run FILE --cycles N --sanitize --watch WATCH --trace -`: the trace (standard output)
 /// and standard error; asserts exit 0.
 pub fn run_traced(file: &Path, cycles: u32, watch: &str) -> (String, String) {
