@@ -149,7 +149,9 @@ impl Analyzer<'_> {
     }
 }
 
-/// A diagnostic under construction; pushed when dropped.
+/// A diagnostic under construction; pushed when dropped, unless it repeats one of the last
+/// [`RECENT`] pushed (a declaration of several names, `p1, p2 : UnknownType := (x := 1)`, resolves
+/// its type and its initial value once per name: one diagnostic, not one per name at the same place).
 pub(crate) struct Diag<'a> {
     sink: &'a mut Diagnostics,
     d: Option<Diagnostic>,
@@ -170,10 +172,16 @@ impl Diag<'_> {
     }
 }
 
+/// How many of the diagnostics pushed last a new one is compared with (bounded, so that a file with
+/// many errors costs no quadratic time).
+const RECENT: usize = 32;
+
 impl Drop for Diag<'_> {
     fn drop(&mut self) {
         if let Some(d) = self.d.take() {
-            self.sink.push(d);
+            if !self.sink.iter().rev().take(RECENT).any(|p| *p == d) {
+                self.sink.push(d);
+            }
         }
     }
 }

@@ -934,9 +934,91 @@ pub fn parse_text(
         Some(at) => diags.extend(local.into_vec().into_iter().filter(|d| {
             !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
         })),
-        None => diags.extend(local),
+        None => diags.extend(end_at_end_of_file(file, src, &pous, local)),
     }
     (unit, pending, var_config.1)
+}
+
+/// The diagnostics of an ST file's declarations, with a last POU left open at the end of the file
+/// (`PROGRAM p VAR .. END_VAR x := 1;` and no `END_PROGRAM`: the text of a CODESYS or TwinCAT POU
+/// as their editors show it, declaration and implementation one after the other) taken as closed
+/// there: warning W0014 instead of the E0008 of its missing `END_*`. Only the last POU, only when
+/// nothing else in the file is left open (no other E0008) and only when its body holds no POU,
+/// TYPE or CONFIGURATION keyword (a missing `END_*` before another POU stays E0008).
+fn end_at_end_of_file(
+    file: FileId,
+    src: &str,
+    pous: &[PouText],
+    local: Diagnostics,
+) -> Vec<Diagnostic> {
+    let mut out = local.into_vec();
+    let Some(last) = pous
+        .iter()
+        .rev()
+        .find(|p| p.actions.is_none() && p.interface.is_none())
+    else {
+        return out;
+    };
+    let body = src.get(last.body.clone()).unwrap_or("");
+    let at_end = src.get(last.body.end..).unwrap_or("").trim().is_empty();
+    let kw = src
+        .get(..last.name_range.start)
+        .and_then(|head| head.split_whitespace().last())
+        .map(str::to_ascii_uppercase)
+        .filter(|k| ["PROGRAM", "FUNCTION", "FUNCTION_BLOCK"].contains(&k.as_str()))
+        .or_else(|| {
+            // `FUNCTION_BLOCK PUBLIC name`: the keyword is the word before the modifier
+            let head = src.get(..last.modifier.as_ref()?.start)?;
+            head.split_whitespace().last().map(str::to_ascii_uppercase)
+        });
+    let Some(kw) = kw else {
+        return out;
+    };
+    // words, not comments: `// this program ...` is no POU
+    let nested = lex(body).0.iter().any(|t| {
+        [
+            "PROGRAM",
+            "FUNCTION",
+            "FUNCTION_BLOCK",
+            "TYPE",
+            "CONFIGURATION",
+            "RESOURCE",
+        ]
+        .iter()
+        .any(|k| is_word(body, t, k))
+    });
+    let missing = format!("missing `END_{kw}`");
+    let open: Vec<usize> = (0..out.len())
+        .filter(|&i| out[i].code == code::E0008)
+        .collect();
+    let [only] = open[..] else {
+        return out;
+    };
+    if !at_end
+        || nested
+        || out[only].message != missing
+        || out[only]
+            .span
+            .is_none_or(|s| (s.start as usize) < last.body.end)
+    {
+        return out;
+    }
+    let name = Span::new(file, last.name_range.start, last.name_range.end);
+    let here = out[only].span.unwrap_or(name);
+    out[only] = Diagnostic::warning(
+        code::W0014,
+        format!(
+            "`{}` ends at the end of the file without `END_{kw}`: read as if it were there",
+            last.name
+        ),
+    )
+    .at(here)
+    .with_primary_label(format!("`END_{kw}` supplied here"))
+    .with_label(name, format!("`{kw}` opened here"))
+    .with_hint(format!(
+        "IEC 61131-3 closes every POU with `END_{kw}` (CODESYS and TwinCAT editors show a POU without it); write it to make the file portable"
+    ));
+    out
 }
 
 /// The first line of `span`'s text, without surrounding white space.
