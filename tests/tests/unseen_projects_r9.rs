@@ -30,6 +30,13 @@
 //! E3013: the file is incomplete); two files whose root is not `<project>` (E3002). Traces looked
 //! at: the SFC traffic light cycles red 8 s, red-yellow 3 s, green 4 s, yellow 3 s.
 //!
+//! **Side by side with matiec** (`scripts/matiec-diff.sh`, the 11 `.st` files with a
+//! CONFIGURATION): assemblyArea's `generated_plc.st` (100 cycles x 24 columns) and
+//! OpenPLC_Editor_TestProject's `generated_st_code.st` (100 x 35) agree on every column; 8 cannot
+//! be compared because matiec's C needs the Beremiz runtime (`LogMessage`, the Python blocks) or
+//! its VARIABLES.csv names SFC step columns its C lacks (Pick_and_Place), and iec2c refuses
+//! OpenPLC's `(*DBG: ...*)` lines (conveyor-belt-plc). No IL file turned up in this round.
+//!
 //! **Fixes of the round** (each with a test here):
 //! - the last POU of an ST file ending at the end of the file without its `END_*` (the text of a
 //!   CODESYS or TwinCAT POU as their editors show it) is read as closed there, warning W0014
