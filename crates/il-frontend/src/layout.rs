@@ -100,6 +100,9 @@ pub struct Layout<'s> {
     /// After `:=` in declarations, up to the `;`: an initial value, which may be a constant
     /// expression (`c : INT := N * 2;`).
     decl_init: bool,
+    /// `(` opened in declarations by a string length and not closed yet (`STRING(N * 2)`, CODESYS):
+    /// `+ - * /` there are constant-expression operators too.
+    decl_parens: u32,
     /// `[` opened in instruction lists and not closed yet (subscripts of operands), capped at
     /// [`MAX_SUBSCRIPT_NESTING`].
     code_brackets: usize,
@@ -139,6 +142,7 @@ impl<'s> Layout<'s> {
             declared: Vec::new(),
             decl_brackets: 0,
             decl_init: false,
+            decl_parens: 0,
             code_brackets: 0,
             deep_subscript_reported: false,
             line_runs: true,
@@ -604,7 +608,8 @@ impl<'s> Layout<'s> {
                     Tok::Word(Word::Ident)
                 }
                 Some(Ok(RawToken::Op(_)))
-                    if !(self.in_decl() && (self.decl_brackets > 0 || self.decl_init)) =>
+                    if !(self.in_decl()
+                        && (self.decl_brackets > 0 || self.decl_init || self.decl_parens > 0)) =>
                 {
                     self.report_lex_error(LexError::UnexpectedChar, s, e);
                     Tok::Error
@@ -626,9 +631,20 @@ impl<'s> Layout<'s> {
                             }
                         }
                         RawToken::Assign if self.in_decl() => self.decl_init = true,
+                        RawToken::LParen
+                            if self.in_decl()
+                                && (self.decl_parens > 0
+                                    || after_string_keyword(&self.src[..s])) =>
+                        {
+                            self.decl_parens += 1
+                        }
+                        RawToken::RParen if self.in_decl() => {
+                            self.decl_parens = self.decl_parens.saturating_sub(1)
+                        }
                         RawToken::Semi => {
                             self.decl_brackets = 0;
                             self.decl_init = false;
+                            self.decl_parens = 0;
                         }
                         _ => {}
                     }
@@ -1011,6 +1027,18 @@ impl Iterator for Layout<'_> {
         }
         self.out.pop_front().map(Ok)
     }
+}
+
+/// Whether `before` (the text up to a `(`) ends with the keyword `STRING` or `WSTRING`: the `(`
+/// opens a string length (`STRING(80)`, CODESYS).
+fn after_string_keyword(before: &str) -> bool {
+    let before = before.trim_end();
+    let word_start = before
+        .bytes()
+        .rposition(|b| !(b.is_ascii_alphanumeric() || b == b'_'))
+        .map_or(0, |i| i + 1);
+    let word = &before[word_start..];
+    word.eq_ignore_ascii_case("STRING") || word.eq_ignore_ascii_case("WSTRING")
 }
 
 #[cfg(test)]

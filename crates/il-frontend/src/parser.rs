@@ -855,7 +855,7 @@ impl<'s> Ctx<'s> {
                     format!("constant expression `{text}`: {why}"),
                     l,
                     r,
-                    "use integer literals and integer constants (VAR_GLOBAL CONSTANT or VAR CONSTANT with a literal value, declared before in this file) with + - * / MOD and parentheses",
+                    "use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD and parentheses",
                 );
                 None
             }
@@ -1348,6 +1348,74 @@ fn summarize_expected(expected: &[String]) -> String {
     parts.join(", ")
 }
 
+thread_local! {
+    /// The integer constants of the project's other files (their `VAR_GLOBAL CONSTANT` lists) that
+    /// the bounds and lengths of the text being parsed may name: set for the time of one call of
+    /// [`with_other_files_constants`], empty otherwise.
+    static OTHER_FILES_CONSTANTS: std::cell::RefCell<std::collections::HashMap<String, i128>> =
+        Default::default();
+}
+
+/// Runs `parse` with `constants` (upper-case name to value) known to every bound expression and
+/// integer initial value it parses, as if declared before the text (a text's own constants of the
+/// same name take their place from their declaration on).
+pub fn with_other_files_constants<R>(
+    constants: std::collections::HashMap<String, i128>,
+    parse: impl FnOnce() -> R,
+) -> R {
+    let before = OTHER_FILES_CONSTANTS.with(|c| c.replace(constants));
+    let result = parse();
+    OTHER_FILES_CONSTANTS.with(|c| c.replace(before));
+    result
+}
+
+/// The integer constants `unit` offers the project's other files: the names of its `VAR_GLOBAL
+/// CONSTANT` lists (top level, configuration, resource) whose initial value is an integer literal
+/// or a constant expression that evaluated (one with an E0022 among `diags` is left out), by
+/// upper-case name. A POU's own `VAR CONSTANT` stays in its file.
+pub fn global_integer_constants(
+    unit: &CompilationUnit,
+    diags: &Diagnostics,
+) -> std::collections::HashMap<String, i128> {
+    let mut found = std::collections::HashMap::new();
+    let failed = |span: Span| {
+        diags.iter().any(|d| {
+            d.code == code::E0022
+                && d.span.is_some_and(|s| {
+                    s.file == span.file && s.start >= span.start && s.end <= span.end
+                })
+        })
+    };
+    let mut add = |block: &VarBlock| {
+        if !block.constant || block.kind != VarKind::Global {
+            return;
+        }
+        for v in &block.vars {
+            if let Some(Initializer::Value(Operand::Literal(lit))) = &v.init {
+                if let LiteralKind::Int(n) = lit.kind {
+                    if !failed(v.span) {
+                        found.insert(v.name.name.to_ascii_uppercase(), n);
+                    }
+                }
+            }
+        }
+    };
+    for item in &unit.items {
+        match item {
+            LibraryElement::GlobalVars(b) => add(b),
+            LibraryElement::Configuration(c) => {
+                c.globals.iter().for_each(&mut add);
+                c.resources
+                    .iter()
+                    .flat_map(|r| &r.globals)
+                    .for_each(&mut add);
+            }
+            _ => {}
+        }
+    }
+    found
+}
+
 /// Parses `src` as tokens of `start` kind; diagnostics (lexer, layout, grammar) go to `diags`.
 pub(crate) fn run(
     file: FileId,
@@ -1367,7 +1435,7 @@ pub(crate) fn run(
         src,
         base,
         diags: Vec::new(),
-        consts: Default::default(),
+        consts: OTHER_FILES_CONSTANTS.with(|c| c.borrow().clone()),
         in_constant_block: false,
     };
     let result = grammar::StartParser::new().parse(&mut ctx, &mut layout);

@@ -377,7 +377,8 @@ fn bound(ctx: &Ctx, d: &Element, attr: &str) -> Result<i128, Box<Diagnostic>> {
 
 /// The integer constants declared by the `constant="true"` lists under `scope` (a POU's interface,
 /// or the whole project for the global ones), evaluated in declaration order; a constant may use the
-/// ones before it. Values that are not integer constant expressions are skipped.
+/// ones before it. Values that are not integer constant expressions are skipped. A named list's
+/// constants are found by name and qualified by the list's name (`GVL.N`, upper-case).
 pub fn collect_constants(
     scope: &Element,
     deep: bool,
@@ -409,8 +410,18 @@ pub fn collect_constants(
                             .or_else(|| lookup(n))
                     });
                     if let Ok(x) = val {
+                        // a CODESYS/TwinCAT list's constant is also reached qualified, `GVL.N`
+                        if let Some(list) = c.attr("name").map(str::trim).filter(|l| !l.is_empty())
+                        {
+                            found.insert(format!("{}.{key}", list.to_ascii_uppercase()), x);
+                        }
                         found.insert(key, x);
                     }
+                }
+                if deep {
+                    // CODESYS nests the list's CONSTANT section in the list's own vendor data
+                    // (`mixedattrsvarlist`)
+                    stack.push(c);
                 }
             } else if deep && c.name != "pou" {
                 // a POU's own constants are local to it

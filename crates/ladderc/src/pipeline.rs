@@ -239,6 +239,11 @@ impl Session {
         let mut pending = Vec::new();
         let mut var_config = Vec::new();
         let mut stdin_read = false;
+        // the integer constants each text file's global lists offer, and the text files whose bounds
+        // named a constant they do not declare (index in `units`, file, implicit name, language,
+        // diagnostics)
+        let mut offered = Vec::new();
+        let mut waiting = Vec::new();
         for p in paths {
             let stdin = is_stdin(p);
             let shown = if stdin {
@@ -358,24 +363,95 @@ impl Session {
                     Some(stem) if is_iec_identifier(stem) => stem,
                     _ => il_frontend::DEFAULT_IMPLICIT_PROGRAM,
                 };
-                let (unit, bodies, entries) = il_frontend::st::file::parse_text(
-                    file,
-                    src,
-                    implicit,
-                    file_lang,
-                    &mut self.diags,
-                );
+                let mut local = Diagnostics::new();
+                let (unit, bodies, entries) =
+                    il_frontend::st::file::parse_text(file, src, implicit, file_lang, &mut local);
+                if local.iter().any(|d| d.code == code::E0022) {
+                    // a bound may name a constant of a file read later: parsed again below
+                    offered.push(il_frontend::parser::global_integer_constants(&unit, &local));
+                    waiting.push(WaitingFile {
+                        unit: units.len(),
+                        file,
+                        implicit: implicit.to_string(),
+                        lang: file_lang,
+                        diags: local,
+                    });
+                    units.push(unit);
+                    continue;
+                }
+                offered.push(il_frontend::parser::global_integer_constants(&unit, &local));
+                self.diags.extend(local);
                 units.push(unit);
                 pending.extend(bodies);
                 var_config.extend(entries);
             }
         }
+        self.reparse_with_other_files_constants(
+            waiting,
+            offered,
+            &mut units,
+            &mut pending,
+            &mut var_config,
+        );
         // VAR_CONFIG once every file is read: a configuration names programs of other files
         il_frontend::st::file::apply_var_config(&mut units, var_config, &mut self.diags);
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);
         units
+    }
+
+    /// Parses again the text files in `waiting` (their bounds or lengths named constants they do not
+    /// declare, E0022) with the integer constants of the other files' `VAR_GLOBAL CONSTANT` lists
+    /// known (CODESYS keeps `N_AXES` in `GVL.st`, `ARRAY[1..N_AXES]` in another object's file), until
+    /// no new constant is found: at most once per waiting file, so a chain of constants across files
+    /// resolves and a cycle stops. The last parse of each file is kept, with its diagnostics.
+    fn reparse_with_other_files_constants(
+        &mut self,
+        mut waiting: Vec<WaitingFile>,
+        offered: Vec<std::collections::HashMap<String, i128>>,
+        units: &mut [CompilationUnit],
+        pending: &mut Vec<il_frontend::st::file::PendingBody>,
+        var_config: &mut Vec<il_frontend::st::file::ConfigEntry>,
+    ) {
+        if waiting.is_empty() {
+            return;
+        }
+        let mut known: std::collections::HashMap<String, i128> =
+            offered.into_iter().flatten().collect();
+        let mut results: Vec<_> = waiting.iter().map(|_| None).collect();
+        for _ in 0..waiting.len() {
+            let mut found = known.clone();
+            for (w, result) in waiting.iter_mut().zip(results.iter_mut()) {
+                let src = &self.map.get(w.file).text;
+                let mut local = Diagnostics::new();
+                let parsed = il_frontend::parser::with_other_files_constants(known.clone(), || {
+                    il_frontend::st::file::parse_text(w.file, src, &w.implicit, w.lang, &mut local)
+                });
+                found.extend(il_frontend::parser::global_integer_constants(
+                    &parsed.0, &local,
+                ));
+                w.diags = local;
+                *result = Some(parsed);
+            }
+            let grew = found.len() > known.len();
+            known = found;
+            if !grew
+                || waiting
+                    .iter()
+                    .all(|w| !w.diags.iter().any(|d| d.code == code::E0022))
+            {
+                break;
+            }
+        }
+        for (w, parsed) in waiting.into_iter().zip(results) {
+            self.diags.extend(w.diags);
+            if let Some((unit, bodies, entries)) = parsed {
+                units[w.unit] = unit;
+                pending.extend(bodies);
+                var_config.extend(entries);
+            }
+        }
     }
 
     /// The front half: load, check, lower block calls. `None` when errors were reported.
@@ -882,4 +958,16 @@ pub fn staging_path(path: &Path) -> PathBuf {
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "out".into());
     path.with_file_name(format!(".{name}.partial"))
+}
+
+/// A text file whose bounds or lengths named a constant it does not declare (E0022): parsed again
+/// once every file's constant lists are known.
+struct WaitingFile {
+    /// Its place among the units.
+    unit: usize,
+    file: diagnostics::FileId,
+    implicit: String,
+    lang: il_frontend::st::file::Lang,
+    /// The diagnostics of its last parse.
+    diags: Diagnostics,
 }
