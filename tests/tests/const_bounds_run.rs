@@ -4,8 +4,9 @@
 //! expression of the first's; the same in one file with the list after its use; `STRING(N * 2)`
 //! (CODESYS's parentheses) over constants; and in a CODESYS PLCopen XML export, a bound qualified by
 //! the list's name (`GVL_Main.iLimit - 1`) whose CONSTANT section sits in the list's vendor data.
-//! Each run indexes the arrays up to the constant bound and traces the values. A non-constant, a
-//! non-integer, a cycle between constants and a bound that overflows are one located E0022 each.
+//! An IL program given with the `.st` list reads its bound the same way. Each run indexes the arrays
+//! up to the constant bound and traces the values. A non-constant, a non-integer, a cycle between
+//! constants and a bound that overflows are one located E0022 each.
 
 mod common;
 use common::{ladderc, run_traced, run_traced_files};
@@ -42,6 +43,19 @@ fn constants_of_a_list_in_another_file_size_arrays_strings_and_struct_fields() {
     // ... and before them: the same project
     let (trace, _) = run_traced_files(&[&gvl, &derived, &dut, &prg], 3, WATCH);
     assert_eq!(trace, EXPECTED);
+}
+
+#[test]
+fn an_il_program_sized_by_a_constant_of_an_st_list() {
+    let (trace, _) = run_traced_files(
+        &[&fixture("counts.il"), &fixture("GVL.st")],
+        2,
+        "counts.per_axis[4],counts.last",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,counts.per_axis[4],counts.last\n0,0,5,5\n1,10,10,10\n"
+    );
 }
 
 #[test]
