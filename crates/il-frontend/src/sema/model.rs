@@ -1238,7 +1238,18 @@ pub struct InstrTable {
     /// The pool's entries whose facts have a [`simple_key`] (most: elementary types, no callee, no
     /// arguments), by that key: found without hashing and comparing whole facts.
     simple: FxHashMap<u32, u32>,
+    /// Whether an id may have been stored twice ([`InstrTable::insert`] was used; sema records through
+    /// `insert_interned`, each instruction once): then only the hint and the index find an id.
+    repeats: bool,
+    /// The position of each body's first instruction, by id ([`InstrTable::start_body`]): a reader
+    /// starting a body finds its first instruction here when its hint is still in another body.
+    starts: FxHashMap<InstrId, u32>,
+    /// Set by [`InstrTable::start_body`] until the next instruction is stored.
+    body_starts: bool,
 }
+
+/// How many entries after and before its hint [`InstrTable::get_near`] looks at before the index.
+const NEAR: usize = 32;
 
 /// The facts of most instructions in a word: each of the three types absent (0) or elementary (its
 /// index + 1), one byte each; `None` when there is a callee, an argument or another type.
@@ -1257,6 +1268,7 @@ fn simple_key(f: &InstrFacts) -> Option<u32> {
 impl InstrTable {
     /// Stores the info of instruction `id` (a second insert under `id` replaces it for lookups).
     pub fn insert(&mut self, id: InstrId, info: InstrInfo) {
+        self.repeats = true;
         let (span, facts) = info.split();
         let ix = self.intern(facts);
         self.insert_interned(id, span, ix);
@@ -1292,6 +1304,9 @@ impl InstrTable {
             self.unsorted |= last >= id;
         }
         let at = self.entries.len() as u32;
+        if std::mem::take(&mut self.body_starts) {
+            self.starts.insert(id, at);
+        }
         self.entries.push((id, span, ix));
         if let Some(index) = self.index.get_mut() {
             index.insert(id, at);
@@ -1323,6 +1338,10 @@ impl InstrTable {
     }
     /// The info of `id` and its position, trying position `hint` first: a reader walking a body in the
     /// order sema recorded it passes the position after the previous instruction's.
+    /// When the entry at `hint` is another instruction, the [`NEAR`] entries after and before it are
+    /// tried next (a reader that takes a short stretch of a body in another order than sema, such as
+    /// the C back end at an `AND(` list, lands a few entries off), before bisecting or building the
+    /// index.
     pub fn get_near(&self, id: InstrId, hint: usize) -> Option<(usize, InstrRef<'_>)> {
         let i = match self.entries.get(hint) {
             // An id recorded twice (never by sema) is found through the index: the later entry counts.
@@ -1335,9 +1354,39 @@ impl InstrTable {
             {
                 hint
             }
-            _ => self.position(id)?,
+            _ => match self.near(id, hint) {
+                Some(i) => i,
+                None => self.position(id)?,
+            },
         };
         Some((i, self.view(&self.entries[i])))
+    }
+    /// The position of `id` among the [`NEAR`] entries after `hint` and the [`NEAR`] before it, or as
+    /// the first instruction of a body, when
+    /// no id can have been stored twice (only [`InstrTable::insert`] may repeat one; sema never does)
+    /// and the table is not in id order (there bisecting is as quick).
+    fn near(&self, id: InstrId, hint: usize) -> Option<usize> {
+        if self.repeats || !self.unsorted {
+            return None;
+        }
+        let len = self.entries.len();
+        let after = hint.saturating_add(1).min(len)..hint.saturating_add(1 + NEAR).min(len);
+        let before = hint.saturating_sub(NEAR).min(len)..hint.min(len);
+        let found = |r: std::ops::Range<usize>| {
+            let start = r.start;
+            self.entries[r]
+                .iter()
+                .position(|e| e.0 == id)
+                .map(|k| start + k)
+        };
+        found(after)
+            .or_else(|| found(before))
+            .or_else(|| self.starts.get(&id).map(|&at| at as usize))
+    }
+    /// The next instruction stored begins a body (sema calls this before storing each POU's
+    /// instructions).
+    pub(crate) fn start_body(&mut self) {
+        self.body_starts = true;
     }
     /// Makes room for `additional` more instructions.
     pub fn reserve(&mut self, additional: usize) {
@@ -1813,6 +1862,77 @@ mod instr_table_tests {
         // Inserted after the index was built: found through it.
         t.insert(InstrId(5), info(9, Type::INT));
         assert_eq!(t.get(&InstrId(5)).unwrap().cr_after, Some(Type::INT));
+    }
+
+    /// Sema's way in (each id once, out of order across bodies): a hint up to `NEAR` entries off finds
+    /// the instruction without building the index; one further off, or an absent id, goes through the
+    /// index, which then answers as before.
+    #[test]
+    fn a_hint_a_few_entries_off_finds_the_instruction_without_the_index() {
+        let mut t = InstrTable::default();
+        let ix = t.intern(info(0, Type::BOOL).split().1);
+        // two bodies: ids 1000.. then 10.. (a separate allocation at a lower address)
+        let ids: Vec<usize> = (0..100)
+            .map(|k| 1000 + 8 * k)
+            .chain((0..100).map(|k| 10 + 8 * k))
+            .collect();
+        for (pos, &id) in ids.iter().enumerate() {
+            t.insert_interned(InstrId(id), Span::new(crate::FileId(0), pos, pos + 1), ix);
+        }
+        for (pos, &id) in ids.iter().enumerate() {
+            for hint in [
+                pos,
+                pos + 1,
+                pos + NEAR,
+                pos.saturating_sub(1),
+                pos.saturating_sub(NEAR),
+            ] {
+                let (at, r) = t.get_near(InstrId(id), hint).unwrap();
+                assert_eq!((at, r.span.start), (pos, pos as u32), "id {id} hint {hint}");
+            }
+        }
+        assert!(
+            t.index.get().is_none(),
+            "no lookup within NEAR builds the index"
+        );
+        // further off, and absent: the index, built once, finds it (or nothing)
+        assert_eq!(t.get_near(InstrId(10), 0).map(|(at, _)| at), Some(100));
+        assert!(t.index.get().is_some());
+        assert!(t.get_near(InstrId(11), 100).is_none());
+        assert!(t.get_near(InstrId(11), 5000).is_none());
+        assert_eq!(t.get_near(InstrId(1008), 50).map(|(at, _)| at), Some(1));
+        assert_eq!(
+            t.get_near(InstrId(1008), usize::MAX).map(|(at, _)| at),
+            Some(1)
+        );
+    }
+
+    /// With each body's start marked (as sema does), a reader whose hint is still in another body finds
+    /// a body's first instruction without the index; other far lookups still build it.
+    #[test]
+    fn a_body_s_first_instruction_is_found_from_anywhere() {
+        let mut t = InstrTable::default();
+        let ix = t.intern(info(0, Type::BOOL).split().1);
+        let bodies: [Vec<usize>; 3] = [
+            (0..100).map(|k| 1000 + 8 * k).collect(),
+            (0..100).map(|k| 10 + 8 * k).collect(),
+            (0..100).map(|k| 5000 + 8 * k).collect(),
+        ];
+        for body in &bodies {
+            t.start_body();
+            for &id in body {
+                let at = t.len();
+                t.insert_interned(InstrId(id), Span::new(crate::FileId(0), at, at + 1), ix);
+            }
+        }
+        // the C back end's order: the last body first, then the first, then the middle one
+        for (b, hint) in [(2, 0), (0, 300), (1, 100), (1, 0)] {
+            let (at, _) = t.get_near(InstrId(bodies[b][0]), hint).unwrap();
+            assert_eq!(at, 100 * b);
+        }
+        assert!(t.index.get().is_none());
+        assert_eq!(t.get_near(InstrId(18), 250).map(|(at, _)| at), Some(101));
+        assert!(t.index.get().is_some());
     }
 
     /// Facts with a small key (elementary or no types, no callee, no arguments) and without one
