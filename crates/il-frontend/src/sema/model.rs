@@ -1338,10 +1338,10 @@ impl InstrTable {
     }
     /// The info of `id` and its position, trying position `hint` first: a reader walking a body in the
     /// order sema recorded it passes the position after the previous instruction's.
-    /// When the entry at `hint` is another instruction, the [`NEAR`] entries after and before it are
-    /// tried next (a reader that takes a short stretch of a body in another order than sema, such as
-    /// the C back end at an `AND(` list, lands a few entries off), before bisecting or building the
-    /// index.
+    /// When the entry at `hint` is another instruction and the ids are not in order, the 32 entries
+    /// after and before it are tried next (a reader that takes a short stretch of a body in another
+    /// order than sema, such as the C back end at an `AND(` list, lands a few entries off), then the
+    /// bodies' first instructions, before the hash index is built.
     pub fn get_near(&self, id: InstrId, hint: usize) -> Option<(usize, InstrRef<'_>)> {
         let i = match self.entries.get(hint) {
             // An id recorded twice (never by sema) is found through the index: the later entry counts.
