@@ -53,6 +53,7 @@ impl Analyzer<'_> {
                             externals: Vec::new(),
                             instrs: Vec::new(),
                             var_index: Default::default(),
+                            indexed_vars: 0,
                         });
                         pous.push((id, p));
                     }
