@@ -760,9 +760,10 @@ pub struct Pou {
     /// The body's instructions in source pre-order (a deferred `AND( ... )` before the instructions of
     /// its nested list): keys into `Model::instrs` (stored once, there).
     pub instrs: Vec<InstrId>,
-    /// Upper-case name -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time.
+    /// Name (any case) -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time,
+    /// from a table small enough to stay in the cache ([`crate::name_index`]).
     #[serde(skip)]
-    pub var_index: FxHashMap<String, usize>,
+    pub var_index: crate::name_index::NameIndex,
 }
 
 /// Calls `f` with the ASCII upper-case form of `name` (the key of the name tables), without allocating
@@ -788,17 +789,18 @@ pub fn with_upper<R>(name: &str, f: impl FnOnce(&str) -> R) -> R {
 impl Pou {
     /// Sets the variables (names unique, case-insensitively) and indexes them by name.
     pub fn set_vars(&mut self, vars: Vec<Variable>) {
-        self.var_index = vars
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (v.name.to_ascii_uppercase(), i))
-            .collect();
+        let mut index = crate::name_index::NameIndex::with_capacity(vars.len());
+        for (i, v) in vars.iter().enumerate() {
+            index.insert(&v.name, i, |p| vars[p].name.as_str());
+        }
+        self.var_index = index;
         self.vars = vars;
     }
     /// The index in `vars` of a variable, by name (case-insensitive).
     pub fn var_position(&self, name: &str) -> Option<usize> {
         if self.var_index.len() == self.vars.len() {
-            with_upper(name, |key| self.var_index.get(key).copied())
+            self.var_index
+                .find(name, |p| self.vars[p].name.as_str())
         } else {
             self.vars.iter().position(|v| v.is(name))
         }
