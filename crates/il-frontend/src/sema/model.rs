@@ -799,8 +799,7 @@ impl Pou {
     /// The index in `vars` of a variable, by name (case-insensitive).
     pub fn var_position(&self, name: &str) -> Option<usize> {
         if self.var_index.len() == self.vars.len() {
-            self.var_index
-                .find(name, |p| self.vars[p].name.as_str())
+            self.var_index.find(name, |p| self.vars[p].name.as_str())
         } else {
             self.vars.iter().position(|v| v.is(name))
         }
