@@ -714,15 +714,30 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
 }
 
 fn signature(p: &Pou) -> PouSig {
-    let (pins, internals) = p
+    let is_pin = |k: VarKind| matches!(k, VarKind::Input | VarKind::Output | VarKind::InOut);
+    // Both lists sized once (a 10,000-rung program has 32,500 internals: growing the list by doubling
+    // copied it into fresh pages five times).
+    let pin_count: usize = p
         .var_blocks
         .iter()
-        .flat_map(|b| {
+        .filter(|b| is_pin(b.kind))
+        .map(|b| b.vars.len())
+        .sum();
+    let all: usize = p.var_blocks.iter().map(|b| b.vars.len()).sum();
+    let mut pins = Vec::with_capacity(pin_count);
+    let mut internals = Vec::with_capacity(all - pin_count);
+    for b in &p.var_blocks {
+        let list = if is_pin(b.kind) {
+            &mut pins
+        } else {
+            &mut internals
+        };
+        list.extend(
             b.vars
                 .iter()
-                .map(move |v| (v.name.name.clone(), b.kind, v.ty.clone()))
-        })
-        .partition(|(_, k, _)| matches!(k, VarKind::Input | VarKind::Output | VarKind::InOut));
+                .map(|v| (v.name.name.clone(), b.kind, v.ty.clone())),
+        );
+    }
     PouSig {
         kind: p.kind,
         name: p.name.name.clone(),

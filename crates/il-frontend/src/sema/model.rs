@@ -760,22 +760,10 @@ pub struct Pou {
     /// The body's instructions in source pre-order (a deferred `AND( ... )` before the instructions of
     /// its nested list): keys into `Model::instrs` (stored once, there).
     pub instrs: Vec<InstrId>,
-    /// [`caseless_hash`] of a name -> index into `vars` (built by [`Pou::set_vars`]): lookups in
-    /// constant time without upper-casing the name looked up. Two names with one hash keep the first;
-    /// [`Pou::var_position`] checks the name it finds and searches `vars` when it is another.
+    /// Name (any case) -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time,
+    /// from a table small enough to stay in the cache ([`crate::name_index`]).
     #[serde(skip)]
-    pub var_index: FxHashMap<u64, usize>,
-    /// How many of `vars` [`Pou::set_vars`] indexed (`var_index` may hold fewer entries: equal hashes).
-    #[serde(skip)]
-    pub indexed_vars: usize,
-}
-
-/// A hash of `name` with its ASCII letters upper-cased (FxHash's step, byte by byte): names that differ
-/// only in case (IEC 61131-3 names are case-insensitive) have the same hash, computed without copying.
-pub fn caseless_hash(name: &str) -> u64 {
-    name.as_bytes().iter().fold(name.len() as u64, |h, &b| {
-        (h.rotate_left(5) ^ u64::from(b.to_ascii_uppercase())).wrapping_mul(0xf135_7aea_2e62_a9c5)
-    })
+    pub var_index: crate::name_index::NameIndex,
 }
 
 /// Calls `f` with the ASCII upper-case form of `name` (the key of the name tables), without allocating
@@ -801,25 +789,17 @@ pub fn with_upper<R>(name: &str, f: impl FnOnce(&str) -> R) -> R {
 impl Pou {
     /// Sets the variables (names unique, case-insensitively) and indexes them by name.
     pub fn set_vars(&mut self, vars: Vec<Variable>) {
-        let mut index = FxHashMap::default();
-        index.reserve(vars.len());
+        let mut index = crate::name_index::NameIndex::with_capacity(vars.len());
         for (i, v) in vars.iter().enumerate() {
-            index.entry(caseless_hash(&v.name)).or_insert(i);
+            index.insert(&v.name, i, |p| vars[p].name.as_str());
         }
         self.var_index = index;
-        self.indexed_vars = vars.len();
         self.vars = vars;
     }
     /// The index in `vars` of a variable, by name (case-insensitive).
     pub fn var_position(&self, name: &str) -> Option<usize> {
-        if self.indexed_vars == self.vars.len() && !self.vars.is_empty() {
-            match self.var_index.get(&caseless_hash(name)) {
-                // no variable has this name's hash, so none has this name
-                None => None,
-                Some(&i) if self.vars[i].is(name) => Some(i),
-                // another name with the same hash: the variable may be one whose hash was stored second
-                Some(_) => self.vars.iter().position(|v| v.is(name)),
-            }
+        if self.var_index.len() == self.vars.len() {
+            self.var_index.find(name, |p| self.vars[p].name.as_str())
         } else {
             self.vars.iter().position(|v| v.is(name))
         }
@@ -2027,21 +2007,9 @@ mod var_index_tests {
             externals: Vec::new(),
             instrs: Vec::new(),
             var_index: Default::default(),
-            indexed_vars: 0,
         };
         pou.set_vars(vars);
         pou
-    }
-
-    #[test]
-    fn caseless_hash_ignores_ascii_case_only() {
-        assert_eq!(caseless_hash("Motor_1"), caseless_hash("MOTOR_1"));
-        assert_eq!(caseless_hash("motor_1"), caseless_hash("mOtOr_1"));
-        assert_ne!(caseless_hash("Motor_1"), caseless_hash("Motor_2"));
-        assert_ne!(caseless_hash("ab"), caseless_hash("ba"));
-        assert_ne!(caseless_hash("a"), caseless_hash("a\0"));
-        // non-ASCII letters are not folded, as `eq_ignore_ascii_case` does not fold them
-        assert_ne!(caseless_hash("grün"), caseless_hash("GRÜN"));
     }
 
     #[test]
@@ -2058,20 +2026,6 @@ mod var_index_tests {
             assert_eq!(pou.var_position(absent), None, "{absent}");
         }
         assert_eq!(pou.var("VAR_7").map(|v| v.name.as_str()), Some("Var_7"));
-    }
-
-    #[test]
-    fn a_hash_shared_by_two_names_still_finds_each() {
-        // Two names with one hash (not constructible by hand for 64 bits): the index keeps the first, so
-        // point every entry at variable 0 and check every name is still found, and absent ones not.
-        let mut pou = pou_with(&["a", "b", "c"]);
-        for i in pou.var_index.values_mut() {
-            *i = 0;
-        }
-        assert_eq!(pou.var_position("A"), Some(0));
-        assert_eq!(pou.var_position("b"), Some(1));
-        assert_eq!(pou.var_position("C"), Some(2));
-        assert_eq!(pou.var_position("d"), None);
     }
 
     #[test]
