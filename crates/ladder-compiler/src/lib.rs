@@ -11,6 +11,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod beremiz;
 pub mod body;
 pub mod catalogue;
 pub mod context;

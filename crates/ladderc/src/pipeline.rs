@@ -240,6 +240,9 @@ impl Session {
         let mut var_config = Vec::new();
         let mut stdin_read = false;
         for p in paths {
+            // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals
+            let (resolved, beremiz_dir) = crate::beremiz::resolve(self, p);
+            let p = &resolved;
             let stdin = is_stdin(p);
             let shown = if stdin {
                 STDIN_NAME.to_string()
@@ -344,8 +347,11 @@ impl Session {
                 );
             }
             if file_lang == Lang::Xml {
-                let (unit, entries) =
+                let (mut unit, entries) =
                     ladder_compiler::compile_xml_with_var_config(file, src, &mut self.diags);
+                if let Some(dir) = &beremiz_dir {
+                    crate::beremiz::add_confnodes(self, dir, &mut unit);
+                }
                 units.push(unit);
                 var_config.extend(entries);
             } else {
