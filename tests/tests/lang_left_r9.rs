@@ -6,6 +6,11 @@
 //!   the Python file's `<variables>` with their initial values, the MQTT client's `MQTT_STATUS_3`), and
 //!   each confnode whose code or field bus does not run is one located W0320. Before: the program's
 //!   VAR_EXTERNALs were E1022 ("no global variable").
+//! - **CODESYS V2.3 object files** (`tests/tests/fixtures/codesys_v2/`: `Tank.pou.xml` with an
+//!   action, `PLC_PRG.pou.xml`, `Globals.gvl.xml` in ISO-8859-1, `Tank_State.dut.xml`; the layout of
+//!   CODESYS V2.3's version-control export, as in flhofer/IEC_61131-3_TestLib): the `<interface>` and
+//!   `<st><body>` texts are read as ST in place, so diagnostics keep the file's lines and columns; a
+//!   graphical body is one E0321. Before: E3002 "root element is <pou>".
 
 mod common;
 use common::{column, ladderc, run_stimulated};
@@ -127,5 +132,77 @@ fn a_confnode_variable_that_cannot_be_read_is_one_located_error() {
         [
             "mixer/c_code@c_ext/cfile.xml:8:37: error[E0320]: confnode variable `Setpoint` has no valid type (``); it is not declared",
         ]
+    );
+}
+
+fn codesys_v2_files(dir: &Path) -> Vec<PathBuf> {
+    ["Tank.pou.xml", "PLC_PRG.pou.xml", "Globals.gvl.xml", "Tank_State.dut.xml"]
+        .iter()
+        .map(|f| dir.join(f))
+        .collect()
+}
+
+#[test]
+fn codesys_v2_object_files_run_together() {
+    let dir = common::repo_root().join("tests/tests/fixtures/codesys_v2");
+    let files = codesys_v2_files(&dir);
+    let files: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
+    let (trace, stderr) = common::run_traced_files(
+        &files,
+        6,
+        "PLC_PRG.cycles,PLC_PRG.t.Level,PLC_PRG.t.Full,PLC_PRG.state",
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
+    // Tank fills by 3 per scan; at 12 (>= Max_Level of the GVL) its action Drain empties it, and
+    // PLC_PRG sets the enumeration of the DUT
+    assert_eq!(column(&trace, "PLC_PRG.t.Level"), [3.0, 6.0, 9.0, 0.0, 3.0, 6.0]);
+    assert_eq!(column(&trace, "PLC_PRG.state"), [0.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
+}
+
+#[test]
+fn codesys_v2_object_files_keep_their_lines_and_a_graphical_body_is_one_error() {
+    let src = common::repo_root().join("tests/tests/fixtures/codesys_v2");
+    let dir = tempfile::tempdir().unwrap();
+    for f in codesys_v2_files(&src) {
+        std::fs::copy(&f, dir.path().join(f.file_name().unwrap())).unwrap();
+    }
+    let check = |dir: &Path| {
+        let out = ladderc()
+            .args(["--message-format", "short", "check"])
+            .args(codesys_v2_files(dir))
+            .output()
+            .unwrap();
+        let prefix = format!("{}/", dir.display());
+        let lines: Vec<String> = String::from_utf8_lossy(&out.stderr)
+            .lines()
+            .filter(|l| l.contains("error["))
+            .map(|l| l.replace(&prefix, ""))
+            .map(|l| l.split_once(" (hint").unwrap().0.to_string())
+            .collect();
+        (out.status.code(), lines)
+    };
+    // a misspelt name in the body: located in the XML file (line 18, after three tabs and `<![CDATA[`)
+    let prg = dir.path().join("PLC_PRG.pou.xml");
+    let text = std::fs::read_to_string(&prg).unwrap();
+    std::fs::write(&prg, text.replace("cycles := cycles + 1;", "cycles := cycels + 1;")).unwrap();
+    assert_eq!(
+        check(dir.path()),
+        (
+            Some(1),
+            vec!["PLC_PRG.pou.xml:18:23: error[E1001]: undeclared name `cycels` [POU `PLC_PRG`]".to_string()]
+        )
+    );
+    // a CFC body (CODESYS's own form, not PLCopen): one E0321 at the element
+    let tank = dir.path().join("Tank.pou.xml");
+    let bytes = std::fs::read(&tank).unwrap();
+    let text = String::from_utf8(bytes).unwrap();
+    let text = text.replacen("\t<st>\n", "\t<cfc>\n", 1).replacen("\t</st>\n", "\t</cfc>\n", 1);
+    std::fs::write(&tank, text).unwrap();
+    assert_eq!(
+        check(dir.path()),
+        (
+            Some(1),
+            vec!["Tank.pou.xml:20:2: error[E0321]: CODESYS V2.3 object file: the body of `Tank` is <cfc>, which ladderc cannot read in this format (it reads <st> and <il> bodies) [POU `Tank`]".to_string()]
+        )
     );
 }

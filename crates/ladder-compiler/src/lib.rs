@@ -14,6 +14,7 @@
 pub mod beremiz;
 pub mod body;
 pub mod catalogue;
+pub mod codesys_v2;
 pub mod context;
 pub mod decls;
 pub mod graph;

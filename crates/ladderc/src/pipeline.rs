@@ -346,6 +346,24 @@ impl Session {
                     ),
                 );
             }
+            // a CODESYS V2.3 object file (`<pou>`, `<dut>`, `<gvl>` root): its texts as an ST file
+            let v2_object = if file_lang == Lang::Xml {
+                ladder_compiler::codesys_v2::object_source(file, src)
+            } else {
+                None
+            };
+            let v2_text = match v2_object {
+                Some(Err(d)) => {
+                    self.diags.push(*d);
+                    continue;
+                }
+                Some(Ok(text)) => Some(text),
+                None => None,
+            };
+            let (file_lang, src) = match &v2_text {
+                Some(text) => (Lang::St, text.as_str()),
+                None => (file_lang, src.as_str()),
+            };
             if file_lang == Lang::Xml {
                 let (mut unit, entries) =
                     ladder_compiler::compile_xml_with_var_config(file, src, &mut self.diags);
