@@ -11,6 +11,11 @@
 //!   CODESYS V2.3's version-control export, as in flhofer/IEC_61131-3_TestLib): the `<interface>` and
 //!   `<st><body>` texts are read as ST in place, so diagnostics keep the file's lines and columns; a
 //!   graphical body is one E0321. Before: E3002 "root element is <pou>".
+//! - **A PLCopen file of one POU** (`tests/tests/fixtures/plcopen_pou/ramp.cfc`: root `<pou
+//!   xmlns="http://www.plcopen.org/xml/tc6_0201">`, as RuSTy's and Bachmann's CFC files, with the
+//!   interface written as text in `<addData><data><textDeclaration><content>`): read as the project
+//!   of that POU, the text declarations located in the file. Before: E3002, and the declarations
+//!   were not read.
 
 mod common;
 use common::{column, ladderc, run_stimulated};
@@ -204,5 +209,24 @@ fn codesys_v2_object_files_keep_their_lines_and_a_graphical_body_is_one_error() 
             Some(1),
             vec!["Tank.pou.xml:20:2: error[E0321]: CODESYS V2.3 object file: the body of `Tank` is <cfc>, which ladderc cannot read in this format (it reads <st> and <il> bodies) [POU `Tank`]".to_string()]
         )
+    );
+}
+
+#[test]
+fn a_plcopen_file_of_one_pou_with_text_declarations_runs() {
+    let file = common::repo_root().join("tests/tests/fixtures/plcopen_pou/ramp.cfc");
+    let (trace, stderr) = common::run_traced(&file, 3, "ramp.level");
+    assert_eq!(column(&trace, "ramp.level"), [2.0, 4.0, 6.0]);
+    // the content tells the language (a note), and nothing is ignored silently
+    assert!(stderr.contains("note[W0302]: read as PLCopen XML"), "{stderr}");
+    assert!(!stderr.contains("warning["), "{stderr}");
+    // an error in the text declaration is located in the file
+    let text = std::fs::read_to_string(&file)
+        .unwrap()
+        .replace("    step : DINT := 2;", "    step : DINT := 2");
+    let heads = common::rejected_heads("ramp.xml", &text);
+    assert_eq!(
+        heads[0],
+        "ramp.xml:12:5: error[E0011]: expected `;` before `level` [POU `ramp`]"
     );
 }
