@@ -16,6 +16,12 @@
 //!   interface written as text in `<addData><data><textDeclaration><content>`): read as the project
 //!   of that POU, the text declarations located in the file. Before: E3002, and the declarations
 //!   were not read.
+//! - **A missing `;`** after a STRUCT's last field, before `END_VAR`, or between two declarations:
+//!   no public CODESYS or TwinCAT source or document shows a vendor accepting it (the W0013 case,
+//!   `END_STRUCT END_TYPE`, is the one they do accept), so it stays an error, now one E0011 where
+//!   the `;` belongs, with the declaration completed in the hint. Before: the error was at the next
+//!   token (`END_STRUCT`, the next name), and a missing `;` before `END_STRUCT` also gave a second
+//!   error at `END_TYPE`.
 
 mod common;
 use common::{column, ladderc, run_stimulated};
@@ -228,5 +234,31 @@ fn a_plcopen_file_of_one_pou_with_text_declarations_runs() {
     assert_eq!(
         heads[0],
         "ramp.xml:12:5: error[E0011]: expected `;` before `level` [POU `ramp`]"
+    );
+}
+
+#[test]
+fn a_missing_semicolon_in_declarations_is_one_error_where_it_belongs() {
+    let last_field = "TYPE r :\nSTRUCT\n    a : INT;\n    b : BOOL\nEND_STRUCT;\nEND_TYPE\n\
+                      PROGRAM main\nVAR x : r; END_VAR\nx.a := 1;\nEND_PROGRAM\n";
+    assert_eq!(
+        common::rejected_heads("last_field.st", last_field),
+        ["last_field.st:4:13: error[E0011]: missing `;` after `b : BOOL` before `END_STRUCT`"]
+    );
+    let between = "PROGRAM main\nVAR\n    a : INT := 3 (* start *)\n    b : BOOL;\nEND_VAR\n\
+                   LD a\nST a\nEND_PROGRAM\n";
+    assert_eq!(
+        common::rejected_heads("between.il", between),
+        ["between.il:3:17: error[E0011]: missing `;` after `a : INT := 3` before `b`"]
+    );
+    let (_, lines) = common::check_text(
+        "before_end_var.st",
+        "FUNCTION_BLOCK fb\nVAR_INPUT\n    s : STRING := 'x'\nEND_VAR\nEND_FUNCTION_BLOCK\n",
+    );
+    assert_eq!(
+        lines,
+        ["before_end_var.st:3:22: error[E0011]: missing `;` after `s : STRING := 'x'` before `END_VAR` \
+          (hint: end each declaration with `;` (`s : STRING := 'x';`): IEC 61131-3, CODESYS and \
+          TwinCAT require it, also before `END_VAR`)"]
     );
 }
