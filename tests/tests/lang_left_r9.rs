@@ -22,9 +22,15 @@
 //!   the `;` belongs, with the declaration completed in the hint. Before: the error was at the next
 //!   token (`END_STRUCT`, the next name), and a missing `;` before `END_STRUCT` also gave a second
 //!   error at `END_TYPE`.
+//! - **Access paths in the library API**: `CheckedProject::access_paths`, `LoweredProject::…` and
+//!   `GeneratedProject::access_paths` give each `VAR_ACCESS` entry (ST/IL configurations and PLCopen
+//!   XML `<accessVars>`) with its configuration, name, path, type and direction; the generated
+//!   program, built and run through `c_backend`, traces and sets the variables by those names.
+//!   Before: they were only entries of the command line's watch table.
 
 mod common;
 use common::{column, ladderc, run_stimulated};
+use ladderc::{AccessDirection, AccessPath, Options, Project};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
@@ -46,7 +52,10 @@ fn check_path(path: &Path, strip: &Path) -> (Option<i32>, Vec<String>) {
         .lines()
         .filter(|l| l.contains("error[") || l.contains("warning["))
         .map(|l| l.replace(&prefix, ""))
-        .map(|l| l.split_once(" (hint").map_or(l.clone(), |(h, _)| h.to_string()))
+        .map(|l| {
+            l.split_once(" (hint")
+                .map_or(l.clone(), |(h, _)| h.to_string())
+        })
         .collect();
     (out.status.code(), lines)
 }
@@ -80,19 +89,34 @@ fn a_beremiz_folder_runs_with_the_globals_of_its_confnodes() {
         "plant.total,%QW0.0.0,Setpoint,Pulses,MQTT_STATUS_3",
     );
     assert_eq!(column(&trace, "Setpoint"), [21.0; 6]);
-    assert_eq!(column(&trace, "plant.total"), [0.0, 0.0, 5.0, 10.0, 15.0, 20.0]);
-    assert_eq!(column(&trace, "%QW0.0.0"), [42.0, 42.0, 42.0, 42.0, 43.0, 43.0]);
+    assert_eq!(
+        column(&trace, "plant.total"),
+        [0.0, 0.0, 5.0, 10.0, 15.0, 20.0]
+    );
+    assert_eq!(
+        column(&trace, "%QW0.0.0"),
+        [42.0, 42.0, 42.0, 42.0, 43.0, 43.0]
+    );
     // one located W0320 per confnode whose code or field bus does not run, nothing else
     let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("warning[")).collect();
     assert_eq!(warnings.len(), 4, "{stderr}");
     for (file, what) in [
-        ("modbus_0@modbus/confnode.xml:2:1", "confnode `modbus_0` (modbus) does not run"),
-        ("c_code@c_ext/cfile.xml:10:3", "the C code of confnode `c_code` (c_ext) does not run"),
+        (
+            "modbus_0@modbus/confnode.xml:2:1",
+            "confnode `modbus_0` (modbus) does not run",
+        ),
+        (
+            "c_code@c_ext/cfile.xml:10:3",
+            "the C code of confnode `c_code` (c_ext) does not run",
+        ),
         (
             "py_ext_0@py_ext/pyfile.xml:10:3",
             "the Python code of confnode `py_ext_0` (py_ext) does not run",
         ),
-        ("mqtt_0@mqtt/confnode.xml:2:1", "confnode `mqtt_0` (mqtt) does not run"),
+        (
+            "mqtt_0@mqtt/confnode.xml:2:1",
+            "confnode `mqtt_0` (mqtt) does not run",
+        ),
     ] {
         assert!(
             warnings
@@ -110,7 +134,10 @@ fn the_plc_xml_of_a_beremiz_folder_reads_the_folder_and_alone_it_does_not() {
     let (code, lines) = check_path(&plc, dir.path());
     assert_eq!(code, Some(0), "{lines:?}");
     assert_eq!(lines.len(), 4, "{lines:?}");
-    assert!(lines.iter().all(|l| l.contains("warning[W0320]")), "{lines:?}");
+    assert!(
+        lines.iter().all(|l| l.contains("warning[W0320]")),
+        "{lines:?}"
+    );
     // without beremiz.xml the file is a plain PLCopen project: its externals name no global
     std::fs::remove_file(dir.path().join("mixer/beremiz.xml")).unwrap();
     let (code, lines) = check_path(&plc, dir.path());
@@ -147,10 +174,15 @@ fn a_confnode_variable_that_cannot_be_read_is_one_located_error() {
 }
 
 fn codesys_v2_files(dir: &Path) -> Vec<PathBuf> {
-    ["Tank.pou.xml", "PLC_PRG.pou.xml", "Globals.gvl.xml", "Tank_State.dut.xml"]
-        .iter()
-        .map(|f| dir.join(f))
-        .collect()
+    [
+        "Tank.pou.xml",
+        "PLC_PRG.pou.xml",
+        "Globals.gvl.xml",
+        "Tank_State.dut.xml",
+    ]
+    .iter()
+    .map(|f| dir.join(f))
+    .collect()
 }
 
 #[test]
@@ -166,8 +198,14 @@ fn codesys_v2_object_files_run_together() {
     assert!(!stderr.contains("error["), "{stderr}");
     // Tank fills by 3 per scan; at 12 (>= Max_Level of the GVL) its action Drain empties it, and
     // PLC_PRG sets the enumeration of the DUT
-    assert_eq!(column(&trace, "PLC_PRG.t.Level"), [3.0, 6.0, 9.0, 0.0, 3.0, 6.0]);
-    assert_eq!(column(&trace, "PLC_PRG.state"), [0.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
+    assert_eq!(
+        column(&trace, "PLC_PRG.t.Level"),
+        [3.0, 6.0, 9.0, 0.0, 3.0, 6.0]
+    );
+    assert_eq!(
+        column(&trace, "PLC_PRG.state"),
+        [0.0, 0.0, 0.0, 1.0, 1.0, 1.0]
+    );
 }
 
 #[test]
@@ -195,19 +233,28 @@ fn codesys_v2_object_files_keep_their_lines_and_a_graphical_body_is_one_error() 
     // a misspelt name in the body: located in the XML file (line 18, after three tabs and `<![CDATA[`)
     let prg = dir.path().join("PLC_PRG.pou.xml");
     let text = std::fs::read_to_string(&prg).unwrap();
-    std::fs::write(&prg, text.replace("cycles := cycles + 1;", "cycles := cycels + 1;")).unwrap();
+    std::fs::write(
+        &prg,
+        text.replace("cycles := cycles + 1;", "cycles := cycels + 1;"),
+    )
+    .unwrap();
     assert_eq!(
         check(dir.path()),
         (
             Some(1),
-            vec!["PLC_PRG.pou.xml:18:23: error[E1001]: undeclared name `cycels` [POU `PLC_PRG`]".to_string()]
+            vec![
+                "PLC_PRG.pou.xml:18:23: error[E1001]: undeclared name `cycels` [POU `PLC_PRG`]"
+                    .to_string()
+            ]
         )
     );
     // a CFC body (CODESYS's own form, not PLCopen): one E0321 at the element
     let tank = dir.path().join("Tank.pou.xml");
     let bytes = std::fs::read(&tank).unwrap();
     let text = String::from_utf8(bytes).unwrap();
-    let text = text.replacen("\t<st>\n", "\t<cfc>\n", 1).replacen("\t</st>\n", "\t</cfc>\n", 1);
+    let text = text
+        .replacen("\t<st>\n", "\t<cfc>\n", 1)
+        .replacen("\t</st>\n", "\t</cfc>\n", 1);
     std::fs::write(&tank, text).unwrap();
     assert_eq!(
         check(dir.path()),
@@ -224,7 +271,10 @@ fn a_plcopen_file_of_one_pou_with_text_declarations_runs() {
     let (trace, stderr) = common::run_traced(&file, 3, "ramp.level");
     assert_eq!(column(&trace, "ramp.level"), [2.0, 4.0, 6.0]);
     // the content tells the language (a note), and nothing is ignored silently
-    assert!(stderr.contains("note[W0302]: read as PLCopen XML"), "{stderr}");
+    assert!(
+        stderr.contains("note[W0302]: read as PLCopen XML"),
+        "{stderr}"
+    );
     assert!(!stderr.contains("warning["), "{stderr}");
     // an error in the text declaration is located in the file
     let text = std::fs::read_to_string(&file)
@@ -260,5 +310,86 @@ fn a_missing_semicolon_in_declarations_is_one_error_where_it_belongs() {
         ["before_end_var.st:3:22: error[E0011]: missing `;` after `s : STRING := 'x'` before `END_VAR` \
           (hint: end each declaration with `;` (`s : STRING := 'x';`): IEC 61131-3, CODESYS and \
           TwinCAT require it, also before `END_VAR`)"]
+    );
+}
+
+const ACCESS_ST: &str = "PROGRAM tank\nVAR\n  inflow : INT;\n  level : INT;\nEND_VAR\n\
+  level := level + inflow;\nEND_PROGRAM\n\
+CONFIGURATION plant\nVAR_GLOBAL\n  alarm : BOOL;\nEND_VAR\n\
+VAR_ACCESS\n  fill : cpu.t1.inflow : INT READ_WRITE;\n  shown : t1.level : INT;\n\
+  siren : alarm : BOOL READ_ONLY;\n  pump : cpu.%QX0.1 : BOOL;\nEND_VAR\n\
+RESOURCE cpu ON PLC\n  TASK cyc (INTERVAL := T#10ms, PRIORITY := 1);\n  PROGRAM t1 WITH cyc : tank;\n\
+END_RESOURCE\nEND_CONFIGURATION\n";
+
+fn access(configuration: &str, name: &str, path: &str, ty: &str, rw: bool) -> AccessPath {
+    AccessPath {
+        configuration: configuration.to_string(),
+        name: name.to_string(),
+        path: path.to_string(),
+        type_name: ty.to_string(),
+        direction: if rw {
+            AccessDirection::ReadWrite
+        } else {
+            AccessDirection::ReadOnly
+        },
+    }
+}
+
+#[test]
+fn access_paths_are_in_the_library_api_and_name_the_running_variables() {
+    let checked = Project::from_sources([("plant/cell.st", ACCESS_ST)], Options::default())
+        .check()
+        .expect("checks");
+    let expected = vec![
+        access("plant", "fill", "cpu.t1.inflow", "INT", true),
+        access("plant", "shown", "t1.level", "INT", false),
+        access("plant", "siren", "alarm", "BOOL", false),
+        access("plant", "pump", "cpu.%QX0.1", "BOOL", false),
+    ];
+    assert_eq!(checked.access_paths(), expected);
+    let lowered = checked.lower().expect("lowers");
+    assert_eq!(lowered.access_paths(), expected);
+    let generated = lowered.generate().expect("generates");
+    assert_eq!(generated.access_paths(), expected);
+
+    // the names are the running program's: set `fill` (READ_WRITE), trace `shown`
+    let dir = tempfile::tempdir().unwrap();
+    let exe = c_backend::build(generated.program(), dir.path()).expect("the C builds");
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, "cycle,variable,value\n1,fill,4\n").unwrap();
+    let out = c_backend::run(
+        &exe,
+        &c_backend::RunOptions {
+            cycles: 3,
+            stimulus: Some(stim),
+            watch: vec!["shown".into(), "fill".into()],
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    assert!(out.success(), "{}", out.stderr);
+    assert_eq!(column(&out.stdout, "shown"), [0.0, 4.0, 8.0]);
+    assert_eq!(column(&out.stdout, "fill"), [0.0, 4.0, 4.0]);
+
+    // PLCopen XML `<accessVars>`: the same values (no direction written is READ_ONLY)
+    let xml = std::fs::read_to_string(
+        common::repo_root().join("tests/tests/fixtures/unseen/var_access_tc6.xml"),
+    )
+    .unwrap();
+    let generated = Project::from_sources([("tank.xml", xml.as_str())], Options::default())
+        .compile()
+        .expect("compiles");
+    let paths = generated.access_paths();
+    let names: Vec<(&str, &str, AccessDirection)> = paths
+        .iter()
+        .map(|a| (a.name.as_str(), a.path.as_str(), a.direction))
+        .collect();
+    assert_eq!(
+        names,
+        [
+            ("fill_rate", "cpu.t1.inflow", AccessDirection::ReadWrite),
+            ("tank_level", "cpu.t1.level", AccessDirection::ReadOnly),
+            ("tank_high", "t1.high", AccessDirection::ReadOnly),
+        ]
     );
 }

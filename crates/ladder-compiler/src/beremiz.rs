@@ -94,7 +94,9 @@ pub fn code_file(file: FileId, text: &str, diags: &mut Diagnostics) -> CodeFile 
                 ),
             )
             .at(span)
-            .with_hint("repair or remove the file (Beremiz rewrites it when the confnode is saved)"),
+            .with_hint(
+                "repair or remove the file (Beremiz rewrites it when the confnode is saved)",
+            ),
         );
         return CodeFile::default();
     }

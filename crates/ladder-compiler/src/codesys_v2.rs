@@ -170,7 +170,10 @@ impl Source {
     fn copy(&mut self, el: &Element) -> usize {
         let mut end = el.tag_end;
         for seg in el.segments() {
-            let (start, stop) = (seg.start.min(self.bytes.len()), seg.end.min(self.bytes.len()));
+            let (start, stop) = (
+                seg.start.min(self.bytes.len()),
+                seg.end.min(self.bytes.len()),
+            );
             let room = stop.saturating_sub(start);
             let text = seg.text.as_bytes();
             // text and CDATA pieces are the raw bytes; an entity is shorter than its reference

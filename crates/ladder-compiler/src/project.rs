@@ -663,15 +663,17 @@ fn text_declaration(
         if values::is_ident(ty) && return_type.is_none() {
             let at = seg.start + lead + header.find(ty).unwrap_or(0);
             let span = ctx.span(at, at + ty.len());
-            *return_type = Some(if ty.eq_ignore_ascii_case("STRING") || ty.eq_ignore_ascii_case("WSTRING") {
-                il_frontend::ast::TypeRef::String {
-                    wide: ty.eq_ignore_ascii_case("WSTRING"),
-                    length: None,
-                    span,
-                }
-            } else {
-                il_frontend::ast::TypeRef::Named(Ident::new(ty, span))
-            });
+            *return_type = Some(
+                if ty.eq_ignore_ascii_case("STRING") || ty.eq_ignore_ascii_case("WSTRING") {
+                    il_frontend::ast::TypeRef::String {
+                        wide: ty.eq_ignore_ascii_case("WSTRING"),
+                        length: None,
+                        span,
+                    }
+                } else {
+                    il_frontend::ast::TypeRef::Named(Ident::new(ty, span))
+                },
+            );
         }
     }
     let rest = &text[header_end..];

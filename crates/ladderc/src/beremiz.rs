@@ -89,11 +89,8 @@ fn read(session: &mut Session, path: &Path) -> Option<FileId> {
         Ok(text) => Some(session.map.add_file_owned(path.display().to_string(), text)),
         Err(e) => {
             session.diags.push(
-                Diagnostic::error(
-                    code::E9001,
-                    format!("cannot read {}: {e}", path.display()),
-                )
-                .with_hint("check the path and its permissions (a Beremiz confnode file)"),
+                Diagnostic::error(code::E9001, format!("cannot read {}: {e}", path.display()))
+                    .with_hint("check the path and its permissions (a Beremiz confnode file)"),
             );
             None
         }

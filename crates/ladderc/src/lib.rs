@@ -82,5 +82,6 @@ pub use diagnostics::MessageFormat;
 pub use il_frontend;
 pub use pipeline::{Lang, Options};
 pub use project::{
-    CheckedProject, Failed, GeneratedProject, LoweredProject, ParsedProject, Project,
+    AccessDirection, AccessPath, CheckedProject, Failed, GeneratedProject, LoweredProject,
+    ParsedProject, Project,
 };
