@@ -393,3 +393,37 @@ fn access_paths_are_in_the_library_api_and_name_the_running_variables() {
         ]
     );
 }
+
+#[test]
+fn a_beremiz_folder_in_memory_through_the_library_api() {
+    let dir = fixture("mixer");
+    let read = |rel: &str| std::fs::read_to_string(dir.join(rel)).unwrap();
+    let checked = Project::from_sources([("mem/plc.xml", read("plc.xml"))], Options::default())
+        .with_file("mem/beremiz.xml", read("beremiz.xml"))
+        .with_file(
+            "mem/c_code@c_ext/baseconfnode.xml",
+            read("c_code@c_ext/baseconfnode.xml"),
+        )
+        .with_file("mem/c_code@c_ext/cfile.xml", read("c_code@c_ext/cfile.xml"))
+        .with_file(
+            "mem/py_ext_0@py_ext/baseconfnode.xml",
+            read("py_ext_0@py_ext/baseconfnode.xml"),
+        )
+        .with_file(
+            "mem/py_ext_0@py_ext/pyfile.xml",
+            read("py_ext_0@py_ext/pyfile.xml"),
+        )
+        .with_file(
+            "mem/mqtt_0@mqtt/baseconfnode.xml",
+            read("mqtt_0@mqtt/baseconfnode.xml"),
+        )
+        .check()
+        .expect("the confnodes' globals are declared");
+    let w0320 = checked
+        .diagnostics()
+        .iter()
+        .filter(|d| d.code.0 == "W0320")
+        .count();
+    // the C code, the Python code and the MQTT client (the Modbus confnode was not given)
+    assert_eq!(w0320, 3, "{:?}", checked.diagnostics());
+}
