@@ -283,7 +283,7 @@ fn a_plcopen_file_of_one_pou_with_text_declarations_runs() {
     let heads = common::rejected_heads("ramp.xml", &text);
     assert_eq!(
         heads[0],
-        "ramp.xml:12:5: error[E0011]: expected `;` before `level` [POU `ramp`]"
+        "ramp.xml:11:21: error[E0011]: missing `;` after `step : DINT := 2` before `level` [POU `ramp`]"
     );
 }
 
