@@ -60,6 +60,17 @@ impl NameIndex {
         if self.slots.is_empty() {
             return None;
         }
+        self.probe(name, &name_at).ok().map(|(_, p)| p)
+    }
+
+    /// Walks the slots from `name`'s hash: `Ok((slot, position))` where the name (any case) is indexed,
+    /// `Err((slot, tag))` the free slot where it would go, with its hash tag. The table is not empty and
+    /// never full (at most half its slots are used), so the walk ends.
+    fn probe<'n>(
+        &self,
+        name: &str,
+        name_at: &impl Fn(usize) -> &'n str,
+    ) -> Result<(usize, usize), (usize, u32)> {
         let h = hash_ignoring_case(name);
         let tag = (h >> 32) as u32;
         let mask = self.slots.len() - 1;
@@ -67,11 +78,11 @@ impl NameIndex {
         loop {
             let (slot, slot_tag) = self.slots[k];
             if slot == 0 {
-                return None;
+                return Err((k, tag));
             }
             let p = slot as usize - 1;
             if slot_tag == tag && name_at(p).eq_ignore_ascii_case(name) {
-                return Some(p);
+                return Ok((k, p));
             }
             k = (k + 1) & mask;
         }
@@ -91,23 +102,16 @@ impl NameIndex {
         if (self.len + 1) * 2 > self.slots.len() {
             self.grow(&name_at);
         }
-        let h = hash_ignoring_case(name);
-        let tag = (h >> 32) as u32;
-        let mask = self.slots.len() - 1;
-        let mut k = h as usize & mask;
-        loop {
-            let (slot, slot_tag) = self.slots[k];
-            if slot == 0 {
+        match self.probe(name, &name_at) {
+            Err((k, tag)) => {
                 self.slots[k] = (stored, tag);
                 self.len += 1;
-                return None;
+                None
             }
-            let p = slot as usize - 1;
-            if slot_tag == tag && name_at(p).eq_ignore_ascii_case(name) {
+            Ok((k, p)) => {
                 self.slots[k].0 = stored;
-                return Some(p);
+                Some(p)
             }
-            k = (k + 1) & mask;
         }
     }
 
