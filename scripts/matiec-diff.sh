@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Cycle-by-cycle differential run of ladderc against matiec (tests/tests/matiec_diff.rs, live).
 #
-# Usage:  scripts/matiec-diff.sh [PROGRAM.il|PROGRAM.st ...]
+# Usage:  scripts/matiec-diff.sh [--unseen-only] [PROGRAM.il|PROGRAM.st ...]
 #   without arguments: the corpus tests/tests/fixtures/matiec_diff/ (each program against its known
-#   disagreements); with arguments: those programs as well, every difference reported.
+#   disagreements); with arguments: those programs as well, every difference reported;
+#   --unseen-only: only the programs named (scripts/matiec-fuzz.sh), not the corpus.
 # Input (environment, all optional):
 #   MATIEC_BIN   iec2c; default target/matiec/iec2c (scripts/build-matiec.sh builds it)
 #   MATIEC_LIB   matiec's lib/ folder; default target/matiec/build/lib, else $MATIEC_SRC/lib
@@ -31,6 +32,11 @@ if [[ -z "$lib" || ! -f "$lib/ieclib.txt" ]]; then
 fi
 bin="$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")"
 lib="$(cd "$lib" && pwd)"
+filter=()
+if [[ "${1:-}" == "--unseen-only" ]]; then
+    filter=(unseen_programs_from_the_environment)
+    shift
+fi
 files=()
 for f in "$@"; do
     [[ -f "$f" ]] || { echo "error: no such file: $f" >&2; exit 2; }
@@ -42,4 +48,4 @@ if ((${#files[@]})); then
     export MATIEC_DIFF_FILES
 fi
 cd "$root"
-if cargo test -q -p ladderc-tests --test matiec_diff -- --nocapture --test-threads 1; then exit 0; else exit 1; fi
+if cargo test -q -p ladderc-tests --test matiec_diff -- "${filter[@]}" --nocapture --test-threads 1; then exit 0; else exit 1; fi

@@ -7,8 +7,8 @@
 //! `"motion_lib_std": "trimmed"` and the executable must then be at most 256,000 B. Without rust-src the
 //! library links the prebuilt std (`"full"`), and the executable is bounded at that build's size so that it
 //! cannot grow unseen; `LADDERC_REQUIRE_TRIMMED_STD=1` (set by `.ci/run`) makes that case a failure.
-//! Everything that is not the motion library must fit in 64 KiB (see the README, "Code size for
-//! controllers").
+//! Everything that is not the motion library must fit in 64 KiB with the trimmed std (see the README,
+//! "Code size for controllers"); with the prebuilt std it is bounded at 72 KiB.
 
 mod common;
 use common::{assert_ok, ladderc};
@@ -56,6 +56,15 @@ const TRIMMED_LIMIT: u64 = 256_000;
 /// The bound with the toolchain's prebuilt std: 426,928 B on x86-64 with gcc 12.
 const FULL_STD_LIMIT: u64 = 448 * 1024;
 
+/// Everything but the motion library's own sections, with the trimmed std: the program, ladderc's runtime
+/// and the executable's headers, tables and libc glue (README, "Code size for controllers").
+const TRIMMED_REST_LIMIT: u64 = 64 * 1024;
+
+/// The same with the prebuilt std, which links more of libc dynamically: 67,989 B on x86-64 with gcc 12
+/// (a machine without rust-src, 2026-12-03), where the trimmed build stays under 64 KiB. Without this
+/// bound `cargo test --workspace` failed on every machine without the rust-src component.
+const FULL_STD_REST_LIMIT: u64 = 72 * 1024;
+
 #[test]
 fn a_one_block_program_is_small_and_its_report_says_where_the_bytes_are() {
     let (dir, o) = build_move(&["--report", "json"]);
@@ -86,14 +95,14 @@ fn a_one_block_program_is_small_and_its_report_says_where_the_bytes_are() {
         "the executable is not stripped"
     );
     let std = size["motion_lib_std"].as_str().unwrap_or("?");
-    let limit = match std {
-        "trimmed" => TRIMMED_LIMIT,
+    let (limit, rest_limit) = match std {
+        "trimmed" => (TRIMMED_LIMIT, TRIMMED_REST_LIMIT),
         "full" => {
             assert!(
                 std::env::var_os("LADDERC_REQUIRE_TRIMMED_STD").is_none_or(|v| v != "1"),
                 "the embedded motion library links the prebuilt std (is rust-src installed?): {size}"
             );
-            FULL_STD_LIMIT
+            (FULL_STD_LIMIT, FULL_STD_REST_LIMIT)
         }
         other => panic!("motion_lib_std {other:?}: {size}"),
     };
@@ -106,8 +115,8 @@ fn a_one_block_program_is_small_and_its_report_says_where_the_bytes_are() {
     let library = n("motion_lib_bytes");
     assert!(library > 0 && library < built, "{size}");
     assert!(
-        built - library <= 64 * 1024,
-        "everything but the motion library: {} B ({size})",
+        built - library <= rest_limit,
+        "everything but the motion library: {} B > {rest_limit} B (std: {std}; {size})",
         built - library
     );
 }

@@ -105,14 +105,16 @@ const KNOWN: &[Known] = &[
     },
     Known {
         program: "sel_edges",
-        columns: &["INST.M3"],
+        columns: &["INST.L1", "INST.L2", "INST.M3"],
         stops_in: None,
         reason: "MUX with K outside 0..2. IEC 61131-3 defines MUX only for K within the inputs (ed. 2 \
                  2.5.1.5.4, Table 27) and no result for another K; ladderc's documented choice is IN0 \
                  (7) with the runtime flag `MUX selector K out of range` (as an array index out of \
                  range uses the first element; checked below, mux_out_of_range_selects_in0_and_is_reported), \
-                 matiec returns 0, its type's default. SEL, MUX within range, LIMIT with MN > MX (the \
-                 result is MX) and MAX/MIN agree.",
+                 matiec returns 0, its type's default. INST.L1, INST.L2: LIMIT with MN > MX, as in \
+                 limit_mn_above_mx (MIN(MAX(IN, MN), MX) is MX: 10, 20; matiec gives MN, 50 and tick, \
+                 while IN <= MN; ladderc gave MN too before issue #13's differential round). SEL, MUX \
+                 within range and MAX/MIN agree.",
     },
     Known {
         program: "shift_counts",
@@ -276,6 +278,61 @@ const KNOWN: &[Known] = &[
                  REAL to integer conversion does (ed. 3 Table 22: round to nearest). matiec's __time_div \
                  goes through a double and truncates: T#986ms / 3.0 is 328666666 ns in matiec, 328666667 ns \
                  (328666666.67 rounded) in ladderc.",
+    },
+    Known {
+        program: "time_literals",
+        columns: &["INST.A", "INST.B", "INST.C", "INST.ET", "INST.T1.ET", "INST.T1.PT"],
+        stops_in: None,
+        reason: "exact time literals. T#130ms is 130 ms (IEC 61131-3 ed. 2 2.2.3.1, ed. 3 6.3.3: a \
+                 duration literal is a number of the units written); ladderc holds it as 130000000 ns. \
+                 matiec's __time_to_timespec computes the nanoseconds as (ms / 1e3 - seconds) * 1e9 in a \
+                 long double and truncates, so T#130ms, T#260ms and T#1s130ms are 1 ns short \
+                 (129999999 ns ...), and a TON with PT := T#130ms ends with ET = 129999999 ns; Q rises in \
+                 the same scan on both sides. T#120ms (INST.EXACT) agrees. Found by il_gen's seed 21.",
+    },
+    Known {
+        program: "limit_mn_above_mx",
+        columns: &["INST.FORM", "INST.INF", "INST.RL"],
+        stops_in: None,
+        reason: "LIMIT with MN > MX. IEC 61131-3 defines OUT := MIN(MAX(IN, MN), MX) (ed. 2 Table 27, \
+                 ed. 3 Table 32), which is MX whenever MN > MX; ladderc gives 3 (INT) and 2.5 (REAL). \
+                 matiec's LIMIT is `IN > MN ? (IN < MX ? IN : MX) : MN`, MN (8, 7.5) while IN <= MN. \
+                 Before issue #13's differential round ladderc gave MN too while IN < MN (and MX at \
+                 IN = MN); checked below, limit_with_mn_above_mx_is_mx. With MN <= MX (INST.OK) both agree. \
+                 Found by il_gen's seed 33.",
+    },
+    Known {
+        program: "abs_negative_zero",
+        columns: &["INST.A", "INST.LA", "INST.SQ"],
+        stops_in: None,
+        reason: "ABS of a negative zero. REAL and LREAL are IEC 60559 (IEC 61131-3 ed. 3 Table 10), whose \
+                 absolute value clears the sign: ABS(-0.0) = +0.0 in ladderc (C's fabs). matiec's ABS is \
+                 `IN < 0 ? -IN : IN`, which keeps -0.0 (and SQRT(-0.0) is -0.0). Equal as numbers (EQ \
+                 gives TRUE); the traces differ in the sign. ABS of non-zero values agrees. Found by \
+                 il_gen's seed 40.",
+    },
+    Known {
+        program: "in_out_output_alias",
+        columns: &["INST.V"],
+        stops_in: None,
+        reason: "one variable as a VAR_IN_OUT and as an output target (`CAL u(k := tick, io := v, q => \
+                 v)`). A VAR_IN_OUT is passed by reference (IEC 61131-3 ed. 3 6.5.1.2.4), so the body's \
+                 `ST io` writes v during the call, and the output assignment `=>` is made after the call \
+                 (ed. 3 6.6.1.4.2): v ends as q (10, 20, ...) in ladderc. matiec copies the in-out in and \
+                 out by value and writes it back after the outputs, so v ends as io (1, 3, 6 ...), the \
+                 output lost. Without the alias (INST.W) both agree. Found by il_gen's seed 190.",
+    },
+    Known {
+        program: "lint_compare_literal",
+        columns: &["INST.G"],
+        stops_in: None,
+        reason: "an untyped literal compared with a LINT. In `LD l` / `GE -2966020` with l a LINT the \
+                 literal is a LINT (IEC 61131-3 ed. 3 6.3.2: an untyped literal takes the type the \
+                 operation needs), so 5136616 >= -2966020 is TRUE in ladderc. matiec emits \
+                 `GE_LINT(..., 2, l, -2966020)`, a variadic C function that reads a 64-bit value where \
+                 the call passed a C int, so it compares with a garbage value (FALSE here). The same in \
+                 DINT (INST.GD) agrees, and so does LINT MAX with a positive literal (INST.L). Found by \
+                 il_gen's seed 283.",
     },
 ];
 
@@ -497,18 +554,20 @@ fn matiec_main(programs: &[(String, String)], vars: &[MVar]) -> String {
     c
 }
 
-/// POUS.c without the stray text iec2c glues before a `void NAME_init__(` line.
+/// POUS.c without the stray text iec2c glues before a `void NAME_init__(` line or a
+/// `static inline TYPE NAME(` line (the C of a function called in a program).
 fn drop_stray_literals(pous: &str) -> String {
     let mut out = String::with_capacity(pous.len());
     for line in pous.split_inclusive('\n') {
-        match line.find("void ") {
-            Some(i)
-                if i > 0
-                    && !line.starts_with(char::is_whitespace)
-                    && line[i..].contains("_init__(") =>
-            {
-                out.push_str(&line[i..])
-            }
+        let start = if line.starts_with(char::is_whitespace) {
+            None
+        } else {
+            line.find("void ")
+                .filter(|&i| line[i..].contains("_init__("))
+                .or_else(|| line.find("static inline "))
+        };
+        match start {
+            Some(i) if i > 0 => out.push_str(&line[i..]),
             _ => out.push_str(line),
         }
     }
@@ -536,7 +595,8 @@ fn matiec_trace(m: &Matiec, src: &Path, cycles: u64, work: &Path) -> Result<Stri
     }
     // iec2c (6bb2c33) writes the literal arguments of IL `CAL fb(IN := literal, ...)` once more, as
     // stray text glued before the next POU's `void NAME_init__(` line of POUS.c (e.g.
-    // `865void COUNTERS_init__(...)`, `__time_to_timespec(1, 80, 0, 0, 0, 0)void TIMERS_init__(...)`).
+    // `865void COUNTERS_init__(...)`, `__time_to_timespec(1, 80, 0, 0, 0, 0)void TIMERS_init__(...)`), or
+    // before the `static inline` C of a function that a program calls (`__BOOL_LITERAL(FALSE)static ...`).
     // The calls themselves are right; the stray text is not C, so it is dropped.
     let pous = out.join("POUS.c");
     let text = std::fs::read_to_string(&pous).map_err(|e| e.to_string())?;
@@ -1090,6 +1150,31 @@ fn mux_out_of_range_selects_in0_and_is_reported() {
     );
 }
 
+/// ladderc's side of limit_mn_above_mx: LIMIT(MN := 8, IN := x, MX := 3) is MX = 3 for every x (x runs
+/// 0..11), informal and formal, and LIMIT(7.5, x, 2.5) is 2.5 (before, MN while x < MN).
+#[test]
+fn limit_with_mn_above_mx_is_mx() {
+    let src = repo_root().join("tests/tests/fixtures/matiec_diff/limit_mn_above_mx.il");
+    let work = tempfile::tempdir().unwrap();
+    let t = parse_csv(&ladderc_trace(&src, 12, 10_000_000, work.path()).unwrap());
+    let col = |name: &str| {
+        let i = t.header.iter().position(|h| h == name).unwrap();
+        t.rows.iter().map(|r| r[i].as_str()).collect::<Vec<_>>()
+    };
+    assert_eq!(
+        col("inst.x"),
+        ["0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11"]
+    );
+    assert_eq!(col("inst.inf"), ["3"; 12]);
+    assert_eq!(col("inst.form"), ["3"; 12]);
+    assert_eq!(col("inst.rl"), ["2.5"; 12]);
+    // MN <= MX: x clamped to 3..8
+    assert_eq!(
+        col("inst.ok"),
+        ["3", "3", "3", "3", "4", "5", "6", "7", "8", "8", "8", "8"]
+    );
+}
+
 #[test]
 fn the_comparison_finds_the_first_difference_of_each_column() {
     let m = parse_csv(
@@ -1140,11 +1225,12 @@ fn a_program_without_configuration_gets_one() {
 #[test]
 fn stray_literals_before_an_init_function_are_dropped() {
     let pous = "// FUNCTION\nINT F(void)\n{\n}\n865void MAIN_init__(MAIN *data__, BOOL retain) {\n  x;\n}\n\
-                __time_to_timespec(1, 80, 0, 0, 0, 0)void P_init__(P *data__, BOOL retain) {\n";
+                __time_to_timespec(1, 80, 0, 0, 0, 0)void P_init__(P *data__, BOOL retain) {\n\
+                __BOOL_LITERAL(FALSE)static inline BOOL __PROG0_FN01(BOOL EN,\n";
     assert_eq!(
         drop_stray_literals(pous),
         "// FUNCTION\nINT F(void)\n{\n}\nvoid MAIN_init__(MAIN *data__, BOOL retain) {\n  x;\n}\n\
-         void P_init__(P *data__, BOOL retain) {\n"
+         void P_init__(P *data__, BOOL retain) {\nstatic inline BOOL __PROG0_FN01(BOOL EN,\n"
     );
 }
 
@@ -1224,6 +1310,78 @@ fn every_fixture_declares_its_cycles_and_has_a_recorded_matiec_trace() {
             k.program
         );
     }
+}
+
+/// The generator's programs (tests/src/il_gen.rs, what scripts/matiec-fuzz.sh compares with matiec) are
+/// valid for ladderc too: each of these seeds builds and runs its cycles with exit 0 and no runtime
+/// flag (the generator keeps away from what the standard leaves open), in CI without matiec.
+#[test]
+fn generated_programs_run_in_ladderc_without_a_runtime_flag() {
+    let work = tempfile::tempdir().unwrap();
+    for seed in [2u64, 5, 9, 14, 23, 31] {
+        let text = ladderc_tests::il_gen::generate(seed);
+        assert_eq!(text, ladderc_tests::il_gen::generate(seed), "seed {seed}");
+        let src = work.path().join(format!("gen_{seed}.il"));
+        std::fs::write(&src, &text).unwrap();
+        let out = ladderc()
+            .arg("run")
+            .arg(&src)
+            .args(["--cycles", &cycles_of(&text).to_string()])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "seed {seed}: {stderr}\n{text}");
+        assert!(!stderr.contains("runtime:"), "seed {seed}: {stderr}");
+    }
+}
+
+/// il-gen writes one file per seed and never overwrites a file that is already there.
+#[test]
+fn il_gen_writes_each_seed_once_and_overwrites_nothing() {
+    let work = tempfile::tempdir().unwrap();
+    let il_gen = || {
+        Command::new(env!("CARGO_BIN_EXE_il-gen"))
+            .args(["40", "2"])
+            .arg(work.path())
+            .output()
+            .unwrap()
+    };
+    let out = il_gen();
+    assert_eq!(out.status.code(), Some(0));
+    let first = std::fs::read_to_string(work.path().join("gen_40.il")).unwrap();
+    assert_eq!(first, ladderc_tests::il_gen::generate(40));
+    assert!(work.path().join("gen_41.il").is_file());
+    std::fs::write(work.path().join("gen_40.il"), "mine").unwrap();
+    let again = il_gen();
+    assert_eq!(again.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&again.stderr).contains("gen_40.il"));
+    assert_eq!(
+        std::fs::read_to_string(work.path().join("gen_40.il")).unwrap(),
+        "mine"
+    );
+}
+
+/// scripts/matiec-fuzz.sh without iec2c: a usage error, before anything is generated.
+#[test]
+fn the_fuzz_script_without_iec2c_is_a_usage_error() {
+    let out = Command::new("bash")
+        .arg(repo_root().join("scripts/matiec-fuzz.sh"))
+        .arg("3")
+        .env("MATIEC_BIN", "/nonexistent/iec2c")
+        .output()
+        .expect("bash runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "stderr: {stderr}");
+    assert!(
+        stderr.contains("no iec2c at /nonexistent/iec2c"),
+        "stderr: {stderr}"
+    );
+    let bad = Command::new("bash")
+        .arg(repo_root().join("scripts/matiec-fuzz.sh"))
+        .arg("many")
+        .output()
+        .expect("bash runs");
+    assert_eq!(bad.status.code(), Some(2));
 }
 
 /// scripts/matiec-diff.sh without iec2c: a usage error that says how to build it (before any cargo run).

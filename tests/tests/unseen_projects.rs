@@ -816,8 +816,9 @@ fn var_blocks_at_the_start_of_an_xml_st_body_are_declarations() {
     let errors: Vec<&str> = e.lines().filter(|l| l.contains(": error[")).collect();
     assert_eq!(errors.len(), 1, "{e}");
     assert!(
-        errors[0]
-            .starts_with("bad.xml:5:1: error[E0011]: expected `;` before `END_VAR` [POU `main`]"),
+        errors[0].starts_with(
+            "bad.xml:4:10: error[E0011]: missing `;` after `k : INT` before `END_VAR` [POU `main`]"
+        ),
         "{e}"
     );
 }

@@ -257,7 +257,8 @@ static inline uint64_t ladderc_uint_to_bcd(uint64_t v, unsigned bits) {
  * argument is a plain C value (a local or a constant), so double evaluation is harmless. */
 #define LADDERC_MAX(a, b) ((a) > (b) ? (a) : (b))
 #define LADDERC_MIN(a, b) ((a) < (b) ? (a) : (b))
-#define LADDERC_LIMIT(mn, in, mx) ((in) < (mn) ? (mn) : ((in) > (mx) ? (mx) : (in)))
+/* LIMIT is MIN(MAX(IN, MN), MX) (IEC 61131-3 ed. 2 Table 27, ed. 3 Table 32): MX when MN > MX */
+#define LADDERC_LIMIT(mn, in, mx) LADDERC_MIN(LADDERC_MAX(in, mn), mx)
 #define LADDERC_SEL(g, in0, in1) ((g) ? (in1) : (in0))
 
 /* Comparisons and ordering as functions, so that comparing an unsigned value with a constant 0 never
@@ -271,7 +272,7 @@ static inline uint64_t ladderc_uint_to_bcd(uint64_t v, unsigned bits) {
     static inline IEC_BOOL ladderc_lt_##T(T a, T b) { return a < b; }                              \
     static inline T ladderc_max_##T(T a, T b) { return a > b ? a : b; }                            \
     static inline T ladderc_min_##T(T a, T b) { return a < b ? a : b; }                            \
-    static inline T ladderc_limit_##T(T mn, T in, T mx) { return in < mn ? mn : (in > mx ? mx : in); }
+    static inline T ladderc_limit_##T(T mn, T in, T mx) { return ladderc_min_##T(ladderc_max_##T(in, mn), mx); }
 LADDERC_ORDERED(IEC_SINT)
 LADDERC_ORDERED(IEC_INT)
 LADDERC_ORDERED(IEC_DINT)

@@ -103,6 +103,8 @@ pub struct Layout<'s> {
     /// `(` opened in declarations by a string length and not closed yet (`STRING(N * 2)`, CODESYS):
     /// `+ - * /` there are constant-expression operators too.
     decl_parens: u32,
+    /// The end of the last token emitted that is not a line end: where a missing `;` belongs.
+    last_end: usize,
     /// `[` opened in instruction lists and not closed yet (subscripts of operands), capped at
     /// [`MAX_SUBSCRIPT_NESTING`].
     code_brackets: usize,
@@ -143,6 +145,7 @@ impl<'s> Layout<'s> {
             decl_brackets: 0,
             decl_init: false,
             decl_parens: 0,
+            last_end: 0,
             code_brackets: 0,
             deep_subscript_reported: false,
             line_runs: true,
@@ -179,11 +182,15 @@ impl<'s> Layout<'s> {
             Tok::Word(w) if w.is_simple_op() => Last::Deferrable,
             _ => Last::Other,
         };
+        if !matches!(tok, Tok::Eol | Tok::UnitStart | Tok::BodyStart) {
+            self.last_end = end;
+        }
         self.decl_start = matches!(
             tok,
             Tok::Semi
                 | Tok::Word(
-                    Word::Var
+                    Word::Struct
+                        | Word::Var
                         | Word::VarInput
                         | Word::VarOutput
                         | Word::VarInOut
@@ -343,6 +350,9 @@ impl<'s> Layout<'s> {
                     self.stack.push(Frame::Var(s, e));
                 }
                 Word::EndVar => {
+                    if matches!(self.stack.last(), Some(Frame::Var(..))) && !self.decl_start {
+                        self.missing_decl_semi("END_VAR");
+                    }
                     self.close_until(s, |f| matches!(f, Frame::Var(..)));
                     if matches!(self.stack.last(), Some(Frame::Var(..))) {
                         self.stack.pop();
@@ -359,6 +369,9 @@ impl<'s> Layout<'s> {
                 }
                 Word::Struct if decl => self.stack.push(Frame::Struct(s, e)),
                 Word::EndStruct => {
+                    if matches!(self.stack.last(), Some(Frame::Struct(..))) && !self.decl_start {
+                        self.missing_decl_semi("END_STRUCT");
+                    }
                     if matches!(self.stack.last(), Some(Frame::Struct(..))) {
                         self.stack.pop();
                     }
@@ -450,6 +463,38 @@ impl<'s> Layout<'s> {
             ),
         );
         self.emit(s, Tok::Semi, s);
+    }
+
+    /// `END_VAR` or `END_STRUCT` (`keyword`) right after a declaration without its `;` (`b : BOOL
+    /// END_VAR`): IEC 61131-3, CODESYS and TwinCAT all require it. One E0011 where the `;` belongs,
+    /// with the declaration completed in the hint; a synthetic `;` lets the block close as written
+    /// (no further error).
+    fn missing_decl_semi(&mut self, keyword: &str) {
+        let at = self.last_end;
+        let line_start = self.src[..at].rfind('\n').map_or(0, |i| i + 1);
+        let decl = self.src[line_start..at].trim();
+        let shown = if decl.chars().count() > 60 || decl.is_empty() {
+            "the declaration".to_string()
+        } else {
+            format!("`{decl}`")
+        };
+        let fix = if shown.starts_with('`') {
+            format!(" (`{decl};`)")
+        } else {
+            String::new()
+        };
+        self.diags.push(
+            Diagnostic::error(
+                code::E0011,
+                format!("missing `;` after {shown} before `{keyword}`"),
+            )
+            .at(self.span(at, at))
+            .with_primary_label("`;` expected here")
+            .with_hint(format!(
+                "end each declaration with `;`{fix}: IEC 61131-3, CODESYS and TwinCAT require it, also before `{keyword}`"
+            )),
+        );
+        self.emit(at, Tok::Semi, at);
     }
 
     fn close_all(&mut self, at: usize) {

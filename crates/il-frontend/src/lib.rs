@@ -20,6 +20,7 @@ pub mod ast;
 pub mod layout;
 pub mod lexer;
 pub mod literal;
+pub mod name_index;
 pub mod parser;
 pub mod print;
 pub mod rename;

@@ -1202,13 +1202,35 @@ impl<'s> Ctx<'s> {
                 "expected an instruction, a label or a declaration block".to_string(),
             )
         } else if semi_expected && !eol_expected && tok != Tok::Semi {
-            let hint = if text.eq_ignore_ascii_case("AT") {
+            if text.eq_ignore_ascii_case("AT") {
                 // `x : UINT AT %MW0;`: the location written after the type
-                "IEC 61131-3 writes the location between the name and the type: `name AT %MW0 : UINT := 0;`"
+                (
+                    format!("expected `;` before {found}"),
+                    "IEC 61131-3 writes the location between the name and the type: `name AT %MW0 : UINT := 0;`".to_string(),
+                )
             } else {
-                "end each declaration with `;`"
-            };
-            (format!("expected `;` before {found}"), hint.to_string())
+                // `a : INT` and the next declaration on the following line: the `;` belongs after
+                // the first, where the error is
+                let at = end_of_previous(self.src, s);
+                let decl_start = self.src[..at].rfind('\n').map_or(0, |i| i + 1);
+                let decl = self.src[decl_start..at].trim();
+                if at < s && !decl.is_empty() && decl.chars().count() <= 60 {
+                    self.hint(
+                        code::E0011,
+                        format!("missing `;` after `{decl}` before {found}"),
+                        at,
+                        at,
+                        &format!(
+                            "end each declaration with `;` (`{decl};`): IEC 61131-3, CODESYS and TwinCAT require it"
+                        ),
+                    );
+                    return;
+                }
+                (
+                    format!("expected `;` before {found}"),
+                    "end each declaration with `;`".to_string(),
+                )
+            }
         } else if tok == Tok::Eol {
             (
                 format!("unexpected end of line; expected {expect}"),
@@ -1276,6 +1298,19 @@ impl<'s> Ctx<'s> {
         }
         self.hint(code::E0011, msg, s, end, &hint);
     }
+}
+
+/// The end of the text before `at`, past blanks and one `(* comment *)` that ends there: where a
+/// missing `;` belongs.
+fn end_of_previous(src: &str, at: usize) -> usize {
+    let at = at.min(src.len());
+    let mut t = src[..at].trim_end();
+    if t.ends_with("*)") {
+        if let Some(open) = t.rfind("(*") {
+            t = t[..open].trim_end();
+        }
+    }
+    t.len()
 }
 
 /// A body that reaches this many statements (a power of two: the list's capacity then, grown by

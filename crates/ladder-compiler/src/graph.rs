@@ -280,17 +280,30 @@ fn edge_of(v: Option<&str>) -> Edge {
 }
 
 /// The wires of one `<connectionPointIn>` (none without one), in their final list: each wire's
-/// [`Wire::from`] holds, until [`read`] resolves it, the index in `refs` of its `refLocalId` (borrowed
-/// from the XML text). One list per input, built once: no second list of raw wires per node.
-fn raw_wires<'x>(ctx: &Ctx, point: Option<&Element<'x>>, refs: &mut Vec<&'x str>) -> Vec<Wire<'x>> {
+/// [`Wire::from`] holds, until [`read`] resolves it, the index in `refs.ids` of its `refLocalId`
+/// (borrowed from the XML text). One list per input, built once: no second list of raw wires per node.
+fn raw_wires<'x>(
+    ctx: &Ctx,
+    point: Option<&Element<'x>>,
+    refs: &mut WireRefs<'x>,
+    ids: &LocalIds<'x>,
+) -> Vec<Wire<'x>> {
     point
         .map(|p| {
             p.children_named("connection")
                 .map(|c| {
                     let [ref_id, pin] = c.attrs(["refLocalId", "formalParameter"]);
-                    refs.push(trim(ref_id.unwrap_or_default()));
+                    let r = trim(ref_id.unwrap_or_default());
+                    refs.ids.push(r);
+                    // an element read already (the usual case: editors wire from left to right) is
+                    // its node now, while its id and the table are in the cache
+                    refs.found.push(
+                        ids.get(r)
+                            .and_then(|k| u32::try_from(k + 1).ok())
+                            .unwrap_or(0),
+                    );
                     Wire {
-                        from: refs.len() - 1,
+                        from: refs.ids.len() - 1,
                         pin: pin.map(trim).filter(|s| !s.is_empty()).map(Cow::Borrowed),
                         span: ctx.tag(c),
                     }
@@ -298,6 +311,16 @@ fn raw_wires<'x>(ctx: &Ctx, point: Option<&Element<'x>>, refs: &mut Vec<&'x str>
                 .collect()
         })
         .unwrap_or_default()
+}
+
+/// The `refLocalId` of every wire read by [`raw_wires`], by [`Wire::from`] until [`read`] resolves
+/// the wires.
+struct WireRefs<'x> {
+    /// The `refLocalId` as written (trimmed).
+    ids: Vec<&'x str>,
+    /// Its node + 1 when that element was read before the wire (a later element's id, or an id of no
+    /// element, is looked up once every element is read: 0).
+    found: Vec<u32>,
 }
 
 /// A `<position>` coordinate in the editor's units, rounded toward zero (0 when absent or not a number).
@@ -329,15 +352,79 @@ fn text_of<'x>(ctx: &Ctx, e: &Element<'x>, child: &str) -> (Text<'x>, Span) {
     }
 }
 
+/// The nodes of a body by `localId`, as written (`"7"` and `"07"` are two ids).
+///
+/// The usual id, a decimal number written without a leading zero (editors number elements 1, 2, 3 ...),
+/// is found in a list indexed by its value: ids and the wires that name them come in about document
+/// order, so the list is read where it was just written, where a hash map of 70,000 ids (3 MB for
+/// 10,000 rungs) missed the cache on nearly every wire. Any other id, or a number past
+/// `8 * elements + 64` (kept from sizing the list), is in a hash map.
+struct LocalIds<'x> {
+    /// Node index + 1 by id value (0: no node).
+    by_number: Vec<u32>,
+    /// Ids past `by_number`'s reach: another spelling of a number, a number too large, not a number.
+    other: FxHashMap<&'x str, usize>,
+    /// The largest id value `by_number` may hold, plus one.
+    limit: usize,
+}
+
+impl<'x> LocalIds<'x> {
+    /// An empty table for a body of `elements` child elements.
+    fn new(elements: usize) -> Self {
+        LocalIds {
+            by_number: Vec::with_capacity(elements + 2),
+            other: FxHashMap::default(),
+            limit: elements.saturating_mul(8).saturating_add(64),
+        }
+    }
+    /// `id`'s value when it is a decimal number without sign, blank or leading zero, below `limit`
+    /// (its spelling is then the only one of that value).
+    fn number(&self, id: &str) -> Option<usize> {
+        let b = id.as_bytes();
+        if b.is_empty() || b.len() > 9 || (b[0] == b'0' && b.len() > 1) {
+            return None;
+        }
+        let n = b.iter().try_fold(0usize, |n, &c| {
+            c.is_ascii_digit().then(|| n * 10 + usize::from(c - b'0'))
+        })?;
+        (n < self.limit).then_some(n)
+    }
+    /// The node of `id`.
+    fn get(&self, id: &str) -> Option<usize> {
+        if let Some(&k) = self.number(id).and_then(|n| self.by_number.get(n)) {
+            if k > 0 {
+                return Some(k as usize - 1);
+            }
+        }
+        self.other.get(id).copied()
+    }
+    /// Records `node` as the node of `id` (not yet recorded).
+    fn insert(&mut self, id: &'x str, node: usize) {
+        match (self.number(id), u32::try_from(node + 1)) {
+            (Some(n), Ok(k)) => {
+                if self.by_number.len() <= n {
+                    self.by_number.resize(n + 1, 0);
+                }
+                self.by_number[n] = k;
+            }
+            _ => {
+                self.other.insert(id, node);
+            }
+        }
+    }
+}
+
 /// Reads the body's elements. `pou` names the POU in diagnostics.
 pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     // At most one node per child element: no regrowth.
     let mut nodes = Vec::with_capacity(body.children.len());
     // Every wire's `refLocalId`, indexed by the wire's `from` until the wires are resolved below.
-    let mut refs: Vec<&str> = Vec::with_capacity(body.children.len());
+    let mut refs = WireRefs {
+        ids: Vec::with_capacity(body.children.len()),
+        found: Vec::with_capacity(body.children.len()),
+    };
     // localId -> node index; the ids are borrowed from the XML text.
-    let mut ids: FxHashMap<&str, usize> =
-        FxHashMap::with_capacity_and_hasher(body.children.len(), Default::default());
+    let mut ids = LocalIds::new(body.children.len());
     for e in body.children {
         let span = ctx.tag(e);
         if matches!(
@@ -436,7 +523,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                         .flat_map(|l| l.children_named("variable"))
                     {
                         let point = v.child("connectionPointIn");
-                        let wires = raw_wires(ctx, point, &mut refs);
+                        let wires = raw_wires(ctx, point, &mut refs, &ids);
                         let [formal, negated, edge] =
                             v.attrs(["formalParameter", "negated", "edge"]);
                         inputs.push(InPin {
@@ -505,7 +592,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
             ctx.error(code::E3013, span, format!("<{}> without a localId", e.name));
             continue;
         };
-        if let Some(&prev) = ids.get(id) {
+        if let Some(prev) = ids.get(id) {
             let prev_span: Span = nodes
                 .iter()
                 .map(|n: &Node<'x>| n.span)
@@ -528,7 +615,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
             .map_or([None, None], |p| p.attrs(["x", "y"]));
         let point = e.child("connectionPointIn");
         ids.insert(id, nodes.len());
-        let input = raw_wires(ctx, point, &mut refs);
+        let input = raw_wires(ctx, point, &mut refs, &ids);
         let wired = !input.is_empty();
         nodes.push(Node {
             id: Cow::Borrowed(id),
@@ -547,9 +634,13 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     // dropped, in document order: a node's input, then its pins.
     let resolve = |ctx: &mut Ctx, wires: &mut Vec<Wire<'x>>, node_id: &str| {
         wires.retain_mut(|w| {
-            let r = refs[w.from];
+            if let Some(&k) = refs.found.get(w.from).filter(|&&k| k > 0) {
+                w.from = k as usize - 1;
+                return true;
+            }
+            let r = refs.ids[w.from];
             match ids.get(r) {
-                Some(&from) => {
+                Some(from) => {
                     w.from = from;
                     true
                 }
@@ -742,6 +833,67 @@ pub fn cycles<S: std::hash::BuildHasher>(
 
 #[cfg(test)]
 mod tests {
+    /// Wires to elements read before them (resolved as they are read), after them, to a duplicated
+    /// localId (its first element), to nothing (E3006, dropped) and to another spelling of a number.
+    #[test]
+    fn wires_reach_earlier_and_later_elements_alike() {
+        let xml = r#"<LD>
+<leftPowerRail localId="1"/>
+<contact localId="2"><connectionPointIn><connection refLocalId="1"/><connection refLocalId="3"/></connectionPointIn><variable>a</variable></contact>
+<contact localId="3"><connectionPointIn><connection refLocalId="2"/><connection refLocalId="9"/></connectionPointIn><variable>b</variable></contact>
+<contact localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>c</variable></contact>
+<coil localId="x7"><connectionPointIn><connection refLocalId="2"/><connection refLocalId="07"/><connection refLocalId="x7"/></connectionPointIn><variable>q</variable></coil>
+<coil localId="07"><connectionPointIn><connection refLocalId="3"/><connection refLocalId="7"/></connectionPointIn><variable>r</variable></coil>
+</LD>"#;
+        let arena = crate::xml::Arena::new();
+        let (root, err) = crate::xml::parse(xml, &arena);
+        assert!(err.is_none());
+        let mut diags = diagnostics::Diagnostics::default();
+        let mut ctx = crate::context::Ctx::new(diagnostics::FileId(0), xml, &mut diags);
+        let g = read(&mut ctx, &root.expect("a body"), "P");
+        let from = |node: usize| -> Vec<&str> {
+            g.nodes[node]
+                .input
+                .iter()
+                .map(|w| g.nodes[w.from].id.as_ref())
+                .collect()
+        };
+        let ids: Vec<&str> = g.nodes.iter().map(|n| n.id.as_ref()).collect();
+        assert_eq!(ids, ["1", "2", "3", "x7", "07"]);
+        assert_eq!(from(1), ["1", "3"]);
+        assert_eq!(from(2), ["2"]);
+        assert_eq!(from(3), ["2", "07", "x7"]);
+        assert_eq!(from(4), ["3"]);
+        let codes: Vec<String> = diags.iter().map(|d| d.code.to_string()).collect();
+        // the second localId 2, then the wires to 9 and to 7 (in document order)
+        assert_eq!(codes, ["E3014", "E3006", "E3006"]);
+    }
+
+    #[test]
+    fn local_ids_are_found_as_written_by_number_or_by_name() {
+        let mut ids = super::LocalIds::new(4);
+        // 4 elements: numbers below 8 * 4 + 64 = 96 are listed, the rest hashed
+        for (k, id) in ["1", "07", "95", "96", "x1", "0", "+3", " 5", "123456789012"]
+            .into_iter()
+            .enumerate()
+        {
+            assert_eq!(ids.get(id), None, "{id}");
+            ids.insert(id, k);
+        }
+        for (k, id) in ["1", "07", "95", "96", "x1", "0", "+3", " 5", "123456789012"]
+            .into_iter()
+            .enumerate()
+        {
+            assert_eq!(ids.get(id), Some(k), "{id}");
+        }
+        for absent in ["7", "01", "2", "3", "5", "94", "97", "", "x", "00"] {
+            assert_eq!(ids.get(absent), None, "{absent}");
+        }
+        assert_eq!(ids.number("95"), Some(95));
+        assert_eq!(ids.number("96"), None);
+        assert_eq!(ids.number("07"), None);
+    }
+
     use super::*;
 
     #[test]

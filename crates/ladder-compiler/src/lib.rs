@@ -11,8 +11,10 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod beremiz;
 pub mod body;
 pub mod catalogue;
+pub mod codesys_v2;
 pub mod context;
 pub mod decls;
 pub mod graph;

@@ -68,7 +68,14 @@ fn collect_pous<'a, 'b>(e: &'b Element<'a>, out: &mut Vec<&'b Element<'a>>) {
 }
 
 fn add_pou(xml_text: &str, pou: &Element, entries: &mut Vec<(usize, usize, XmlContext)>) {
-    let name = pou.attr("name").unwrap_or_default().to_string();
+    // PLCopen names a POU by its attribute; a CODESYS V2.3 object file by its `<name>` child
+    let name = match pou.attr("name") {
+        Some(n) => n.to_string(),
+        None => pou
+            .child("name")
+            .map(|n| n.text_ref().trim().to_string())
+            .unwrap_or_default(),
+    };
     let (s, e) = range(pou);
     entries.push((
         s,

@@ -48,7 +48,7 @@
 //! ```
 //!
 //! Modules: [`project`] (the typed API), [`pipeline`] (the stages on a [`pipeline::Session`]), [`cli`]
-//! (arguments and dispatch), [`axes`] (the axes file), [`motion_link`] (the motion library that generated
+//! (arguments and dispatch), [`beremiz`] (Beremiz project folders as inputs), [`axes`] (the axes file), [`motion_link`] (the motion library that generated
 //! programs link), [`output`] (writing into the user's folder), [`depfile`], [`fuzzing`] (the fuzz
 //! harness), [`lsp`] (the language server), [`plot`], [`pmac_out`], [`report`], [`progress`] (running a
 //! built program), [`trace_raw`] (its raw trace turned into CSV), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary)
@@ -57,6 +57,7 @@
 #![warn(missing_docs)]
 
 pub mod axes;
+pub mod beremiz;
 pub mod cli;
 pub mod depfile;
 pub mod encoding;
@@ -81,5 +82,6 @@ pub use diagnostics::MessageFormat;
 pub use il_frontend;
 pub use pipeline::{Lang, Options};
 pub use project::{
-    CheckedProject, Failed, GeneratedProject, LoweredProject, ParsedProject, Project,
+    AccessDirection, AccessPath, CheckedProject, Failed, GeneratedProject, LoweredProject,
+    ParsedProject, Project,
 };

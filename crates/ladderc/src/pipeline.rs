@@ -245,6 +245,9 @@ impl Session {
         let mut offered = Vec::new();
         let mut waiting = Vec::new();
         for p in paths {
+            // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals
+            let (resolved, beremiz_dir) = crate::beremiz::resolve(self, p);
+            let p = &resolved;
             let stdin = is_stdin(p);
             let shown = if stdin {
                 STDIN_NAME.to_string()
@@ -348,9 +351,30 @@ impl Session {
                     ),
                 );
             }
+            // a CODESYS V2.3 object file (`<pou>`, `<dut>`, `<gvl>` root): its texts as an ST file
+            let v2_object = if file_lang == Lang::Xml {
+                ladder_compiler::codesys_v2::object_source(file, src)
+            } else {
+                None
+            };
+            let v2_text = match v2_object {
+                Some(Err(d)) => {
+                    self.diags.push(*d);
+                    continue;
+                }
+                Some(Ok(text)) => Some(text),
+                None => None,
+            };
+            let (file_lang, src) = match &v2_text {
+                Some(text) => (Lang::St, text.as_str()),
+                None => (file_lang, src.as_str()),
+            };
             if file_lang == Lang::Xml {
-                let (unit, entries) =
+                let (mut unit, entries) =
                     ladder_compiler::compile_xml_with_var_config(file, src, &mut self.diags);
+                if let Some(dir) = &beremiz_dir {
+                    crate::beremiz::add_confnodes(self, dir, &mut unit);
+                }
                 units.push(unit);
                 var_config.extend(entries);
             } else {

@@ -102,6 +102,83 @@ pub struct Failed {
     pub diagnostics: Vec<Diagnostic>,
 }
 
+/// One access path of a configuration's `VAR_ACCESS` block (IEC 61131-3 2.7.1 / 6.8.2; PLCopen XML's
+/// `<accessVars>`): the name by which the outside reaches a variable of the running program. It is
+/// a name of the run's watch table: a trace column (`--watch NAME`, a structured one as
+/// `NAME.field`) and, when READ_WRITE, a stimulus target.
+///
+/// ```
+/// use ladderc::{AccessDirection, Options, Project};
+///
+/// let st = "PROGRAM p\nVAR\n  n : INT;\nEND_VAR\n  n := n + 1;\nEND_PROGRAM\n\
+///           CONFIGURATION c\nVAR_ACCESS\n  count : res.inst.n : INT READ_WRITE;\nEND_VAR\n\
+///           RESOURCE res ON PLC\n  TASK t (INTERVAL := T#10ms, PRIORITY := 1);\n\
+///           PROGRAM inst WITH t : p;\nEND_RESOURCE\nEND_CONFIGURATION\n";
+/// let generated = Project::from_sources([("cell.st", st)], Options::default()).compile()?;
+/// let paths = generated.access_paths();
+/// assert_eq!(paths[0].name, "count");
+/// assert_eq!(paths[0].path, "res.inst.n");
+/// assert_eq!(paths[0].type_name, "INT");
+/// assert_eq!(paths[0].direction, AccessDirection::ReadWrite);
+/// # Ok::<(), ladderc::Failed>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct AccessPath {
+    /// The configuration that declares it.
+    pub configuration: String,
+    /// The access name, as declared (the trace and stimulus name).
+    pub name: String,
+    /// The path as written: `resource.program.{fb.}variable`, `program.variable`, a global
+    /// (`resource.g`, `g`) or a direct address (`resource.%IX1.1`).
+    pub path: String,
+    /// The declared type's name, as written.
+    pub type_name: String,
+    /// READ_ONLY (the standard's default when no direction is written) or READ_WRITE.
+    pub direction: AccessDirection,
+}
+
+/// Whether the outside may write through an access path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AccessDirection {
+    /// `READ_ONLY`, or no direction written: a stimulus row for it is refused.
+    ReadOnly,
+    /// `READ_WRITE`: a stimulus row sets the variable.
+    ReadWrite,
+}
+
+/// The access paths of every configuration of `units`, in source order.
+fn access_paths(units: &[CompilationUnit], map: &SourceMap) -> Vec<AccessPath> {
+    use il_frontend::ast::LibraryElement;
+    let mut out = Vec::new();
+    for unit in units {
+        for item in &unit.items {
+            let LibraryElement::Configuration(c) = item else {
+                continue;
+            };
+            for a in &c.access {
+                let mut parts: Vec<String> = a.path.iter().map(|i| i.name.clone()).collect();
+                if let Some(addr) = &a.address {
+                    let text = &map.get(addr.span.file).text;
+                    let (s, e) = (addr.span.start as usize, addr.span.end as usize);
+                    parts.push(text.get(s..e).unwrap_or_default().trim().to_string());
+                }
+                out.push(AccessPath {
+                    configuration: c.name.name.clone(),
+                    name: a.name.name.clone(),
+                    path: parts.join("."),
+                    type_name: a.type_name.name.clone(),
+                    direction: if a.read_only {
+                        AccessDirection::ReadOnly
+                    } else {
+                        AccessDirection::ReadWrite
+                    },
+                });
+            }
+        }
+    }
+    out
+}
+
 impl Project {
     /// A project of in-memory sources `(path, text)`, compiled in the given order. The paths name the
     /// sources in diagnostics and choose their language (`.il`, `.st`, `.xml`; others by content); they
@@ -225,6 +302,12 @@ impl CheckedProject {
         &self.checked.model
     }
 
+    /// The access paths (`VAR_ACCESS`) of the program's configurations, as declared; the C
+    /// generation checks each against the variable it names (E0308).
+    pub fn access_paths(&self) -> Vec<AccessPath> {
+        access_paths(self.units(), &self.session.map)
+    }
+
     /// Lowers the PLCopen block calls by [`Options::strategy`].
     pub fn lower(mut self) -> Result<LoweredProject, Failed> {
         match self.session.lower_checked(self.checked, &self.options) {
@@ -241,6 +324,11 @@ impl LoweredProject {
     /// The user's units after block lowering.
     pub fn units(&self) -> &[CompilationUnit] {
         self.lowered.units()
+    }
+
+    /// The access paths (`VAR_ACCESS`) of the program's configurations, as declared.
+    pub fn access_paths(&self) -> Vec<AccessPath> {
+        access_paths(self.lowered.source_units(), &self.session.map)
     }
 
     /// The lowered program as IL text: what `ladderc build --emit il` prints.
@@ -289,6 +377,12 @@ impl GeneratedProject {
             .files
             .iter()
             .map(|(p, t)| (p.as_str(), t.as_str()))
+    }
+
+    /// The access paths (`VAR_ACCESS`) of the program's configurations: each names a variable of the
+    /// generated program (checked), and is a name of its watch table ([`AccessPath`]).
+    pub fn access_paths(&self) -> Vec<AccessPath> {
+        access_paths(self.lowered.source_units(), &self.session.map)
     }
 
     /// The C sources (`*.c`).

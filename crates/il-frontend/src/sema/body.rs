@@ -226,6 +226,7 @@ impl Analyzer<'_> {
         }
         let recs = std::mem::take(&mut b.recs);
         let mut order = Vec::with_capacity(recs.len());
+        b.a.model.instrs.start_body();
         for (id, span, facts) in recs {
             b.a.model.instrs.insert_interned(id, span, facts);
             order.push(id);

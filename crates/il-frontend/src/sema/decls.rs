@@ -566,7 +566,9 @@ impl Analyzer<'_> {
         // regrowing these (a copy of every `Variable` per doubling) showed in its profile.
         let declared: usize = blocks.iter().map(|b| b.vars.len()).sum();
         let mut out: Vec<Variable> = Vec::with_capacity(declared);
-        let mut seen: HashMap<String, usize> = HashMap::with_capacity(declared);
+        // Names seen so far, as positions in `out`, per global variable list ("" outside named
+        // lists): found ignoring case without an upper-cased key per variable.
+        let mut seen: HashMap<String, crate::name_index::NameIndex> = HashMap::new();
         let mut consts = consts.clone();
         for b in blocks {
             // the members of a named global variable list (CODESYS GVL) are seen per list: two
@@ -581,8 +583,13 @@ impl Analyzer<'_> {
                     Some(i) => self.const_init(i, &ty, &consts),
                     None => self.type_default_init(&d.ty),
                 };
-                let seen_key = format!("{list_key}{}", d.name.key());
-                if let Some(&prev) = seen.get(&seen_key) {
+                let list_seen = match seen.get_mut(&list_key) {
+                    Some(l) => l,
+                    None => seen.entry(list_key.clone()).or_insert_with(|| {
+                        crate::name_index::NameIndex::with_capacity(b.vars.len())
+                    }),
+                };
+                if let Some(prev) = list_seen.find(&d.name.name, |p| out[p].name.as_str()) {
                     let first = out[prev].span;
                     self.error(
                         code::E1002,
@@ -622,7 +629,7 @@ impl Analyzer<'_> {
                 let edge = d
                     .edge
                     .filter(|e| self.edge_allowed(*e, d, b.kind, &ty, pou));
-                seen.insert(seen_key, out.len());
+                let position = out.len();
                 out.push(Variable {
                     name: d.name.name.clone(),
                     span: d.name.span,
@@ -634,6 +641,7 @@ impl Analyzer<'_> {
                     init,
                     edge,
                 });
+                list_seen.insert(&d.name.name, position, |p| out[p].name.as_str());
             }
         }
         out

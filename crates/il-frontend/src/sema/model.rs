@@ -760,9 +760,10 @@ pub struct Pou {
     /// The body's instructions in source pre-order (a deferred `AND( ... )` before the instructions of
     /// its nested list): keys into `Model::instrs` (stored once, there).
     pub instrs: Vec<InstrId>,
-    /// Upper-case name -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time.
+    /// Name (any case) -> index into `vars` (built by [`Pou::set_vars`]): lookups in constant time,
+    /// from a table small enough to stay in the cache ([`crate::name_index`]).
     #[serde(skip)]
-    pub var_index: FxHashMap<String, usize>,
+    pub var_index: crate::name_index::NameIndex,
 }
 
 /// Calls `f` with the ASCII upper-case form of `name` (the key of the name tables), without allocating
@@ -788,17 +789,17 @@ pub fn with_upper<R>(name: &str, f: impl FnOnce(&str) -> R) -> R {
 impl Pou {
     /// Sets the variables (names unique, case-insensitively) and indexes them by name.
     pub fn set_vars(&mut self, vars: Vec<Variable>) {
-        self.var_index = vars
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (v.name.to_ascii_uppercase(), i))
-            .collect();
+        let mut index = crate::name_index::NameIndex::with_capacity(vars.len());
+        for (i, v) in vars.iter().enumerate() {
+            index.insert(&v.name, i, |p| vars[p].name.as_str());
+        }
+        self.var_index = index;
         self.vars = vars;
     }
     /// The index in `vars` of a variable, by name (case-insensitive).
     pub fn var_position(&self, name: &str) -> Option<usize> {
         if self.var_index.len() == self.vars.len() {
-            with_upper(name, |key| self.var_index.get(key).copied())
+            self.var_index.find(name, |p| self.vars[p].name.as_str())
         } else {
             self.vars.iter().position(|v| v.is(name))
         }
@@ -1217,7 +1218,18 @@ pub struct InstrTable {
     /// The pool's entries whose facts have a [`simple_key`] (most: elementary types, no callee, no
     /// arguments), by that key: found without hashing and comparing whole facts.
     simple: FxHashMap<u32, u32>,
+    /// Whether an id may have been stored twice ([`InstrTable::insert`] was used; sema records through
+    /// `insert_interned`, each instruction once): then only the hint and the index find an id.
+    repeats: bool,
+    /// The position of each body's first instruction, by id ([`InstrTable::start_body`]): a reader
+    /// starting a body finds its first instruction here when its hint is still in another body.
+    starts: FxHashMap<InstrId, u32>,
+    /// Set by [`InstrTable::start_body`] until the next instruction is stored.
+    body_starts: bool,
 }
+
+/// How many entries after and before its hint [`InstrTable::get_near`] looks at before the index.
+const NEAR: usize = 32;
 
 /// The facts of most instructions in a word: each of the three types absent (0) or elementary (its
 /// index + 1), one byte each; `None` when there is a callee, an argument or another type.
@@ -1236,6 +1248,7 @@ fn simple_key(f: &InstrFacts) -> Option<u32> {
 impl InstrTable {
     /// Stores the info of instruction `id` (a second insert under `id` replaces it for lookups).
     pub fn insert(&mut self, id: InstrId, info: InstrInfo) {
+        self.repeats = true;
         let (span, facts) = info.split();
         let ix = self.intern(facts);
         self.insert_interned(id, span, ix);
@@ -1271,6 +1284,9 @@ impl InstrTable {
             self.unsorted |= last >= id;
         }
         let at = self.entries.len() as u32;
+        if std::mem::take(&mut self.body_starts) {
+            self.starts.insert(id, at);
+        }
         self.entries.push((id, span, ix));
         if let Some(index) = self.index.get_mut() {
             index.insert(id, at);
@@ -1302,6 +1318,10 @@ impl InstrTable {
     }
     /// The info of `id` and its position, trying position `hint` first: a reader walking a body in the
     /// order sema recorded it passes the position after the previous instruction's.
+    /// When the entry at `hint` is another instruction and the ids are not in order, the 32 entries
+    /// after and before it are tried next (a reader that takes a short stretch of a body in another
+    /// order than sema, such as the C back end at an `AND(` list, lands a few entries off), then the
+    /// bodies' first instructions, before the hash index is built.
     pub fn get_near(&self, id: InstrId, hint: usize) -> Option<(usize, InstrRef<'_>)> {
         let i = match self.entries.get(hint) {
             // An id recorded twice (never by sema) is found through the index: the later entry counts.
@@ -1314,9 +1334,39 @@ impl InstrTable {
             {
                 hint
             }
-            _ => self.position(id)?,
+            _ => match self.near(id, hint) {
+                Some(i) => i,
+                None => self.position(id)?,
+            },
         };
         Some((i, self.view(&self.entries[i])))
+    }
+    /// The position of `id` among the [`NEAR`] entries after `hint` and the [`NEAR`] before it, or as
+    /// the first instruction of a body, when
+    /// no id can have been stored twice (only [`InstrTable::insert`] may repeat one; sema never does)
+    /// and the table is not in id order (there bisecting is as quick).
+    fn near(&self, id: InstrId, hint: usize) -> Option<usize> {
+        if self.repeats || !self.unsorted {
+            return None;
+        }
+        let len = self.entries.len();
+        let after = hint.saturating_add(1).min(len)..hint.saturating_add(1 + NEAR).min(len);
+        let before = hint.saturating_sub(NEAR).min(len)..hint.min(len);
+        let found = |r: std::ops::Range<usize>| {
+            let start = r.start;
+            self.entries[r]
+                .iter()
+                .position(|e| e.0 == id)
+                .map(|k| start + k)
+        };
+        found(after)
+            .or_else(|| found(before))
+            .or_else(|| self.starts.get(&id).map(|&at| at as usize))
+    }
+    /// The next instruction stored begins a body (sema calls this before storing each POU's
+    /// instructions).
+    pub(crate) fn start_body(&mut self) {
+        self.body_starts = true;
     }
     /// Makes room for `additional` more instructions.
     pub fn reserve(&mut self, additional: usize) {
@@ -1794,6 +1844,77 @@ mod instr_table_tests {
         assert_eq!(t.get(&InstrId(5)).unwrap().cr_after, Some(Type::INT));
     }
 
+    /// Sema's way in (each id once, out of order across bodies): a hint up to `NEAR` entries off finds
+    /// the instruction without building the index; one further off, or an absent id, goes through the
+    /// index, which then answers as before.
+    #[test]
+    fn a_hint_a_few_entries_off_finds_the_instruction_without_the_index() {
+        let mut t = InstrTable::default();
+        let ix = t.intern(info(0, Type::BOOL).split().1);
+        // two bodies: ids 1000.. then 10.. (a separate allocation at a lower address)
+        let ids: Vec<usize> = (0..100)
+            .map(|k| 1000 + 8 * k)
+            .chain((0..100).map(|k| 10 + 8 * k))
+            .collect();
+        for (pos, &id) in ids.iter().enumerate() {
+            t.insert_interned(InstrId(id), Span::new(crate::FileId(0), pos, pos + 1), ix);
+        }
+        for (pos, &id) in ids.iter().enumerate() {
+            for hint in [
+                pos,
+                pos + 1,
+                pos + NEAR,
+                pos.saturating_sub(1),
+                pos.saturating_sub(NEAR),
+            ] {
+                let (at, r) = t.get_near(InstrId(id), hint).unwrap();
+                assert_eq!((at, r.span.start), (pos, pos as u32), "id {id} hint {hint}");
+            }
+        }
+        assert!(
+            t.index.get().is_none(),
+            "no lookup within NEAR builds the index"
+        );
+        // further off, and absent: the index, built once, finds it (or nothing)
+        assert_eq!(t.get_near(InstrId(10), 0).map(|(at, _)| at), Some(100));
+        assert!(t.index.get().is_some());
+        assert!(t.get_near(InstrId(11), 100).is_none());
+        assert!(t.get_near(InstrId(11), 5000).is_none());
+        assert_eq!(t.get_near(InstrId(1008), 50).map(|(at, _)| at), Some(1));
+        assert_eq!(
+            t.get_near(InstrId(1008), usize::MAX).map(|(at, _)| at),
+            Some(1)
+        );
+    }
+
+    /// With each body's start marked (as sema does), a reader whose hint is still in another body finds
+    /// a body's first instruction without the index; other far lookups still build it.
+    #[test]
+    fn a_body_s_first_instruction_is_found_from_anywhere() {
+        let mut t = InstrTable::default();
+        let ix = t.intern(info(0, Type::BOOL).split().1);
+        let bodies: [Vec<usize>; 3] = [
+            (0..100).map(|k| 1000 + 8 * k).collect(),
+            (0..100).map(|k| 10 + 8 * k).collect(),
+            (0..100).map(|k| 5000 + 8 * k).collect(),
+        ];
+        for body in &bodies {
+            t.start_body();
+            for &id in body {
+                let at = t.len();
+                t.insert_interned(InstrId(id), Span::new(crate::FileId(0), at, at + 1), ix);
+            }
+        }
+        // the C back end's order: the last body first, then the first, then the middle one
+        for (b, hint) in [(2, 0), (0, 300), (1, 100), (1, 0)] {
+            let (at, _) = t.get_near(InstrId(bodies[b][0]), hint).unwrap();
+            assert_eq!(at, 100 * b);
+        }
+        assert!(t.index.get().is_none());
+        assert_eq!(t.get_near(InstrId(18), 250).map(|(at, _)| at), Some(101));
+        assert!(t.index.get().is_some());
+    }
+
     /// Facts with a small key (elementary or no types, no callee, no arguments) and without one
     /// (another type, a callee) are each stored once and read back as given; facts differing in any
     /// one of the three types are different.
@@ -1853,5 +1974,67 @@ mod instr_table_tests {
         );
         let (at, near) = t.get_near(InstrId(57), 56).unwrap();
         assert_eq!((at, near.span.start), (100, 999));
+    }
+}
+
+#[cfg(test)]
+mod var_index_tests {
+    use super::*;
+    use diagnostics::FileId;
+
+    fn pou_with(names: &[&str]) -> Pou {
+        let vars = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| Variable {
+                name: n.to_string(),
+                span: Span::new(FileId(0), i, i + 1),
+                kind: VarKind::Local,
+                ty: Type::Elementary(Elementary::Int),
+                constant: false,
+                retain: false,
+                location: None,
+                init: None,
+                edge: None,
+            })
+            .collect();
+        let mut pou = Pou {
+            name: "P".into(),
+            span: Span::new(FileId(0), 0, 1),
+            kind: PouKind::Program,
+            return_type: None,
+            vars: Vec::new(),
+            externals: Vec::new(),
+            instrs: Vec::new(),
+            var_index: Default::default(),
+        };
+        pou.set_vars(vars);
+        pou
+    }
+
+    #[test]
+    fn variables_are_found_by_name_in_any_case() {
+        let names: Vec<String> = (0..300).map(|i| format!("Var_{i}")).collect();
+        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+        let pou = pou_with(&refs);
+        for (i, n) in names.iter().enumerate() {
+            assert_eq!(pou.var_position(n), Some(i));
+            assert_eq!(pou.var_position(&n.to_ascii_uppercase()), Some(i));
+            assert_eq!(pou.var_position(&n.to_ascii_lowercase()), Some(i));
+        }
+        for absent in ["Var_300", "Var_", "", "var_1x", "x"] {
+            assert_eq!(pou.var_position(absent), None, "{absent}");
+        }
+        assert_eq!(pou.var("VAR_7").map(|v| v.name.as_str()), Some("Var_7"));
+    }
+
+    #[test]
+    fn variables_added_after_the_index_are_found_by_search() {
+        let mut pou = pou_with(&["a", "b"]);
+        let mut extra = pou.vars[0].clone();
+        extra.name = "Late".into();
+        pou.vars.push(extra);
+        assert_eq!(pou.var_position("LATE"), Some(2));
+        assert_eq!(pou.var_position("B"), Some(1));
     }
 }

@@ -1,0 +1,225 @@
+//! CODESYS V2.3 object files: the one-object-per-file XML that CODESYS V2.3's version control (ENI)
+//! and its per-object export write (`NAME.pou.xml`, `NAME.dut.xml`, `NAME.gvl.xml`), whose root is
+//! `<pou>`, `<dut>` or `<gvl>` (not a PLCopen `<project>`), with the declaration text in
+//! `<interface>` and an ST or IL body in `<st><body>` (`<il><body>`), the POU's actions in
+//! `<action>` elements.
+//!
+//! Input: the XML text of one file. Output: the same text as IEC 61131-3 source: every byte outside the
+//! declaration and body texts blanked (line breaks kept, so every line and column of the source is the
+//! file's own), with `END_PROGRAM`/`END_FUNCTION_BLOCK`/`END_FUNCTION` and the `ACTIONS` block's
+//! keywords written into blank places of the markup after the texts they close. The caller parses it
+//! as an `.st` file. Invariants: never panics; a body in a graphical language (LD, FBD, CFC, SFC) is one
+//! located E0321 naming it; a file that is not such an object file gives `None`.
+
+use crate::xml::{self, Element, SegKind};
+use diagnostics::{code, Diagnostic, FileId, Span};
+
+/// The text of a CODESYS V2.3 object file as IEC 61131-3 source (same length and line breaks as the
+/// file), or the E0321 that says why it cannot be read; `None` when the file is no such object file
+/// (its root is not `<pou>`, `<dut>` or `<gvl>` with an `<interface>` child, or has a namespace).
+pub fn object_source(file: FileId, text: &str) -> Option<Result<String, Box<Diagnostic>>> {
+    let arena = xml::Arena::new();
+    let (root, err) = xml::parse(text, &arena);
+    if err.is_some() {
+        return None;
+    }
+    let root = root?;
+    if !matches!(root.name, "pou" | "dut" | "gvl")
+        || root.attr("xmlns").is_some()
+        || root.child("interface").is_none()
+    {
+        return None;
+    }
+    let mut out = Source::blank(text);
+    let name = child_text(&root, "name");
+    let interface = root.child("interface")?;
+    out.copy(interface);
+    if root.name != "pou" {
+        return Some(Ok(out.finish()));
+    }
+    let header = interface.text_ref();
+    let end_keyword = match header
+        .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+        .find(|w| !w.is_empty())
+        .map(str::to_ascii_uppercase)
+        .as_deref()
+    {
+        Some("PROGRAM") => "END_PROGRAM",
+        Some("FUNCTION_BLOCK") => "END_FUNCTION_BLOCK",
+        Some("FUNCTION") => "END_FUNCTION",
+        _ => {
+            return Some(Err(unreadable(
+                file,
+                interface,
+                format!(
+                    "CODESYS V2.3 object file of POU `{name}`: its <interface> does not begin with \
+                     PROGRAM, FUNCTION_BLOCK or FUNCTION"
+                ),
+            )))
+        }
+    };
+    let mut at = match body_of(file, &root, &name) {
+        Ok(Some(body)) => out.copy(body),
+        Ok(None) => interface.end,
+        Err(d) => return Some(Err(d)),
+    };
+    let actions: Vec<(&Element, String, &Element)> = {
+        let mut v = Vec::new();
+        for action in root.children_named("action") {
+            let action_name = child_text(action, "name");
+            match body_of(file, action, &format!("{name}.{action_name}")) {
+                Ok(Some(b)) => v.push((action, action_name, b)),
+                Ok(None) => {}
+                Err(d) => return Some(Err(d)),
+            }
+        }
+        v
+    };
+    if actions.is_empty() {
+        out.place_last(at, end_keyword);
+        return Some(Ok(out.finish()));
+    }
+    // the POU's end, `ACTIONS` and each `ACTION name:` go into the markup before the action's body
+    // (its `<name>` line has room); the last keyword may have to follow the file's end
+    let mut written = Some(at);
+    for (k, (_, action_name, body)) in actions.iter().enumerate() {
+        let start = body.tag_start;
+        if k == 0 {
+            written = written
+                .and_then(|w| out.place(w, start, end_keyword))
+                .and_then(|w| out.place(w, start, "ACTIONS"));
+        }
+        written = written.and_then(|w| out.place(w, start, &format!("ACTION {action_name}:")));
+        at = out.copy(body);
+        written = written.map(|_| at);
+        if k + 1 < actions.len() {
+            written = written.and_then(|w| out.place(w, actions[k + 1].2.tag_start, "END_ACTION"));
+        }
+    }
+    let Some(w) = written else {
+        return Some(Err(unreadable(
+            file,
+            &root,
+            format!("CODESYS V2.3 object file of POU `{name}` has no room for its keywords"),
+        )));
+    };
+    out.place_last(w, "END_ACTION END_ACTIONS");
+    Some(Ok(out.finish()))
+}
+
+/// The text content of `el`'s child `name` (`<name>assertTrue</name>`), trimmed.
+fn child_text(el: &Element, name: &str) -> String {
+    el.child(name)
+        .map(|c| c.text_ref().trim().to_string())
+        .unwrap_or_default()
+}
+
+/// The `<body>` of `el`'s ST or IL body element (`<st><body>`, `<il><body>`); `Ok(None)` when it has
+/// none; E0321 when the body is in another language.
+fn body_of<'e, 'a>(
+    file: FileId,
+    el: &'e Element<'a>,
+    what: &str,
+) -> Result<Option<&'e Element<'a>>, Box<Diagnostic>> {
+    let Some(lang) = el.children.iter().find(|c| c.child("body").is_some()) else {
+        return Ok(None);
+    };
+    if !lang.name.eq_ignore_ascii_case("st") && !lang.name.eq_ignore_ascii_case("il") {
+        return Err(unreadable(
+            file,
+            lang,
+            format!(
+                "CODESYS V2.3 object file: the body of `{what}` is <{}>, which ladderc cannot read \
+                 in this format (it reads <st> and <il> bodies)",
+                lang.name
+            ),
+        ));
+    }
+    Ok(lang.child("body"))
+}
+
+fn unreadable(file: FileId, el: &Element, msg: String) -> Box<Diagnostic> {
+    Box::new(
+        Diagnostic::error(code::E0321, msg)
+            .at(Span::new(file, el.tag_start, el.tag_end))
+            .with_hint(
+                "export the project from CODESYS as PLCopen XML (Project > Export PLCopenXML) or as \
+                 text (.EXP), and give ladderc that file",
+            ),
+    )
+}
+
+/// The file's text being turned into source: bytes outside the copied texts are blank.
+struct Source {
+    bytes: Vec<u8>,
+}
+
+impl Source {
+    /// Every byte blank but the line breaks (a multi-byte character becomes as many blanks).
+    fn blank(text: &str) -> Source {
+        Source {
+            bytes: text
+                .bytes()
+                .map(|b| if b == b'\n' || b == b'\r' { b } else { b' ' })
+                .collect(),
+        }
+    }
+
+    /// Copies `el`'s text (CDATA and character data; an entity as its character, padded with blanks)
+    /// into place; returns the offset just after the last piece.
+    fn copy(&mut self, el: &Element) -> usize {
+        let mut end = el.tag_end;
+        for seg in el.segments() {
+            let (start, stop) = (
+                seg.start.min(self.bytes.len()),
+                seg.end.min(self.bytes.len()),
+            );
+            let room = stop.saturating_sub(start);
+            let text = seg.text.as_bytes();
+            // text and CDATA pieces are the raw bytes; an entity is shorter than its reference
+            if text.len() > room || (seg.kind != SegKind::Entity && text.len() != room) {
+                continue;
+            }
+            let from = start;
+            self.bytes[from..from + text.len()].copy_from_slice(text);
+            end = end.max(from + text.len());
+        }
+        end
+    }
+
+    /// Writes ` keyword` into the first blank stretch of one line between `from` and `to`; returns
+    /// the offset after it, or `None` when there is no room.
+    fn place(&mut self, from: usize, to: usize, keyword: &str) -> Option<usize> {
+        let need = keyword.len() + 2;
+        let to = to.min(self.bytes.len());
+        let mut run = 0;
+        for i in from..to {
+            if self.bytes[i] == b' ' {
+                run += 1;
+                if run == need {
+                    // one blank before the keyword, one after it
+                    let start = i + 2 - need;
+                    self.bytes[start..start + keyword.len()].copy_from_slice(keyword.as_bytes());
+                    return Some(start + keyword.len());
+                }
+            } else {
+                run = 0;
+            }
+        }
+        None
+    }
+
+    /// [`Source::place`] up to the end of the text, else after it (on a line of its own).
+    fn place_last(&mut self, from: usize, keyword: &str) {
+        if self.place(from, self.bytes.len(), keyword).is_none() {
+            self.bytes.push(b'\n');
+            self.bytes.extend_from_slice(keyword.as_bytes());
+            self.bytes.push(b'\n');
+        }
+    }
+
+    fn finish(self) -> String {
+        // only ASCII was written over blanks, and copied texts are whole UTF-8 pieces
+        String::from_utf8(self.bytes).unwrap_or_default()
+    }
+}
