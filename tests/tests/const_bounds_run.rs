@@ -131,16 +131,7 @@ fn check_files(files: &[(&str, &str)]) -> (Option<i32>, Vec<String>) {
         .args(&paths)
         .output()
         .unwrap();
-    let prefix = format!("{}/", dir.path().display());
-    let lines = String::from_utf8_lossy(&out.stderr)
-        .lines()
-        .filter(|l| l.contains("error["))
-        .map(|l| l.replace(&prefix, ""))
-        .map(|l| {
-            l.split_once(" (hint")
-                .map_or(l.clone(), |(h, _)| h.to_string())
-        })
-        .collect();
+    let lines = common::diagnostic_heads(&out.stderr, dir.path(), false);
     (out.status.code(), lines)
 }
 

@@ -47,16 +47,7 @@ fn check_path(path: &Path, strip: &Path) -> (Option<i32>, Vec<String>) {
         .arg(path)
         .output()
         .unwrap();
-    let prefix = format!("{}/", strip.display());
-    let lines = String::from_utf8_lossy(&out.stderr)
-        .lines()
-        .filter(|l| l.contains("error[") || l.contains("warning["))
-        .map(|l| l.replace(&prefix, ""))
-        .map(|l| {
-            l.split_once(" (hint")
-                .map_or(l.clone(), |(h, _)| h.to_string())
-        })
-        .collect();
+    let lines = common::diagnostic_heads(&out.stderr, strip, true);
     (out.status.code(), lines)
 }
 

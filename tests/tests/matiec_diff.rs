@@ -707,6 +707,14 @@ struct Table {
     stopped: Option<String>,
 }
 
+impl Table {
+    /// The values of column `name`, cycle by cycle (the column must exist).
+    fn column(&self, name: &str) -> Vec<&str> {
+        let i = self.header.iter().position(|h| h == name).unwrap();
+        self.rows.iter().map(|r| r[i].as_str()).collect()
+    }
+}
+
 fn parse_csv(text: &str) -> Table {
     let stopped = text
         .lines()
@@ -1094,10 +1102,7 @@ fn most_negative_divided_by_minus_1_wraps_and_runs_on() {
     let src = repo_root().join("tests/tests/fixtures/matiec_diff/int_div_limits.il");
     let work = tempfile::tempdir().unwrap();
     let t = parse_csv(&ladderc_trace(&src, 7, 10_000_000, work.path()).unwrap());
-    let col = |name: &str| {
-        let i = t.header.iter().position(|h| h == name).unwrap();
-        t.rows.iter().map(|r| r[i].as_str()).collect::<Vec<_>>()
-    };
+    let col = |name: &str| t.column(name);
     // d = 4 - tick, with -1 for 0: 3, 2, 1, -1, -1, -2, -3
     assert_eq!(col("inst.d"), ["3", "2", "1", "-1", "-1", "-2", "-3"]);
     assert_eq!(col("inst.sq")[3..], ["-128", "-128", "64", "42"]);
@@ -1157,10 +1162,7 @@ fn limit_with_mn_above_mx_is_mx() {
     let src = repo_root().join("tests/tests/fixtures/matiec_diff/limit_mn_above_mx.il");
     let work = tempfile::tempdir().unwrap();
     let t = parse_csv(&ladderc_trace(&src, 12, 10_000_000, work.path()).unwrap());
-    let col = |name: &str| {
-        let i = t.header.iter().position(|h| h == name).unwrap();
-        t.rows.iter().map(|r| r[i].as_str()).collect::<Vec<_>>()
-    };
+    let col = |name: &str| t.column(name);
     assert_eq!(
         col("inst.x"),
         ["0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11"]

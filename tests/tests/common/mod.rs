@@ -195,6 +195,21 @@ pub fn column(trace: &str, name: &str) -> Vec<f64> {
         .collect()
 }
 
+/// The diagnostic lines of `stderr` (short format) that are errors, and warnings too with
+/// `with_warnings`, each up to its hint, with the folder `strip` left out of their paths.
+pub fn diagnostic_heads(stderr: &[u8], strip: &Path, with_warnings: bool) -> Vec<String> {
+    let prefix = format!("{}/", strip.display());
+    String::from_utf8_lossy(stderr)
+        .lines()
+        .filter(|l| l.contains("error[") || (with_warnings && l.contains("warning[")))
+        .map(|l| l.replace(&prefix, ""))
+        .map(|l| {
+            l.split_once(" (hint")
+                .map_or(l.clone(), |(h, _)| h.to_string())
+        })
+        .collect()
+}
+
 /// [`check_text`] of a text that must be rejected (exit 1): each diagnostic line up to its hint
 /// (`file:line:col: error[CODE]: message`).
 pub fn rejected_heads(name: &str, src: &str) -> Vec<String> {
