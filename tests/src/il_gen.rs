@@ -38,18 +38,18 @@ impl Rng {
         z ^ (z >> 31)
     }
     /// 0..n (n > 0)
-    fn below(&mut self, n: usize) -> usize {
+    pub fn below(&mut self, n: usize) -> usize {
         (self.next() % n as u64) as usize
     }
     /// lo..=hi
-    fn range(&mut self, lo: i64, hi: i64) -> i64 {
+    pub fn range(&mut self, lo: i64, hi: i64) -> i64 {
         lo + (self.next() % ((hi - lo + 1) as u64)) as i64
     }
     /// true with `percent` % probability
-    fn chance(&mut self, percent: usize) -> bool {
+    pub fn chance(&mut self, percent: usize) -> bool {
         self.below(100) < percent
     }
-    fn pick<'a, T>(&mut self, s: &'a [T]) -> &'a T {
+    pub fn pick<'a, T>(&mut self, s: &'a [T]) -> &'a T {
         &s[self.below(s.len())]
     }
 }

@@ -104,6 +104,28 @@ const KNOWN: &[Known] = &[
                  (its SINT and INT divisions go through C's int and do not trap).",
     },
     Known {
+        program: "find_overlap",
+        columns: &["INST.P2", "INST.P4"],
+        stops_in: None,
+        reason: "FIND gives the position of the first occurrence of IN2 in IN1 (IEC 61131-3 ed. 2 \
+                 2.5.1.5.7, Table 29): FIND('laabder', 'ab') is 3, which ladderc gives. matiec's __pfind \
+                 restarts a failed partial match after the characters it compared (at 'a' of 'aa' it \
+                 skips to the 'b'), so it misses a match that begins inside the partial one and gives \
+                 0. FIND without such an overlap (INST.P1, INST.P3) agrees. Found by st_gen's seed 223.",
+    },
+    Known {
+        program: "real_intermediate_precision",
+        columns: &["INST.SQ"],
+        stops_in: None,
+        reason: "REAL intermediate results. ADD/SUB/MUL/DIV and EXPT of REAL inputs give a REAL (IEC \
+                 61131-3 ed. 2 2.5.1.5.2, Tables 24 and 29; ed. 3 6.6.2.5.6, Table 29), so in `(x / \
+                 100.0) ** 2.0` with x = 5.0 the quotient is the REAL 0.0500000007 and its square, \
+                 rounded to REAL, is 0.0025000002 (the REAL nearest the exact 0.00250000007451), which \
+                 ladderc gives. matiec's C divides in double (its literal 100.0 is a C double) and \
+                 passes the unrounded quotient to __expt, so it squares 0.05 exactly and gets \
+                 0.00249999994. A single REAL operation (INST.SINGLE) agrees. Found by st_gen's seed 25.",
+    },
+    Known {
         program: "sel_edges",
         columns: &["INST.L1", "INST.L2", "INST.M3"],
         stops_in: None,
@@ -1361,6 +1383,99 @@ fn il_gen_writes_each_seed_once_and_overwrites_nothing() {
         std::fs::read_to_string(work.path().join("gen_40.il")).unwrap(),
         "mine"
     );
+}
+
+/// The ST generator's programs (tests/src/st_gen.rs, `scripts/matiec-fuzz.sh --lang st`) are valid
+/// for ladderc too: each seed gives the same text twice, builds and runs its cycles with exit 0 and no
+/// runtime flag, in CI without matiec. Seed 14 is the one ladderc refused before untyped literals in
+/// LIMIT took the REAL of their assignment (see the fixture generic_literal_context).
+#[test]
+fn generated_st_programs_run_in_ladderc_without_a_runtime_flag() {
+    let work = tempfile::tempdir().unwrap();
+    for seed in [3u64, 8, 14, 27, 61, 99] {
+        let text = ladderc_tests::st_gen::generate(seed);
+        assert_eq!(text, ladderc_tests::st_gen::generate(seed), "seed {seed}");
+        let src = work.path().join(format!("gen_{seed}.st"));
+        std::fs::write(&src, &text).unwrap();
+        let out = ladderc()
+            .arg("run")
+            .arg(&src)
+            .args(["--cycles", &cycles_of(&text).to_string()])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "seed {seed}: {stderr}\n{text}");
+        assert!(!stderr.contains("runtime:"), "seed {seed}: {stderr}");
+    }
+}
+
+/// The generated ST fixtures (`stgen_SEED.st`, compared with their recorded matiec traces on every run)
+/// are what st_gen gives for their seed, so a seed named in a report can be made again.
+#[test]
+fn st_generated_fixtures_are_their_seeds_programs() {
+    let dir = repo_root().join("tests/tests/fixtures/matiec_diff");
+    let mut seen = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_str().unwrap().to_string();
+        let Some(seed) = name
+            .strip_prefix("stgen_")
+            .and_then(|n| n.strip_suffix(".st"))
+        else {
+            continue;
+        };
+        let seed: u64 = seed.parse().unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(text, ladderc_tests::st_gen::generate(seed), "{name}");
+        seen += 1;
+    }
+    assert!(seen >= 4, "{seen} generated ST fixtures");
+}
+
+/// st-gen writes one file per seed and never overwrites a file that is already there.
+#[test]
+fn st_gen_writes_each_seed_once_and_overwrites_nothing() {
+    let work = tempfile::tempdir().unwrap();
+    let st_gen = || {
+        Command::new(env!("CARGO_BIN_EXE_st-gen"))
+            .args(["7", "2"])
+            .arg(work.path())
+            .output()
+            .unwrap()
+    };
+    let out = st_gen();
+    assert_eq!(out.status.code(), Some(0));
+    let first = std::fs::read_to_string(work.path().join("gen_7.st")).unwrap();
+    assert_eq!(first, ladderc_tests::st_gen::generate(7));
+    assert!(work.path().join("gen_8.st").is_file());
+    std::fs::write(work.path().join("gen_7.st"), "mine").unwrap();
+    let again = st_gen();
+    assert_eq!(again.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&again.stderr).contains("gen_7.st"));
+    assert_eq!(
+        std::fs::read_to_string(work.path().join("gen_7.st")).unwrap(),
+        "mine"
+    );
+}
+
+/// scripts/matiec-fuzz.sh --lang takes il or st only; anything else is a usage error.
+#[test]
+fn the_fuzz_script_takes_il_or_st() {
+    let bad = Command::new("bash")
+        .arg(repo_root().join("scripts/matiec-fuzz.sh"))
+        .args(["--lang", "fbd", "3"])
+        .output()
+        .expect("bash runs");
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("--lang il|st"));
+    let no_iec2c = Command::new("bash")
+        .arg(repo_root().join("scripts/matiec-fuzz.sh"))
+        .args(["--lang", "st", "3"])
+        .env("MATIEC_BIN", "/nonexistent/iec2c")
+        .output()
+        .expect("bash runs");
+    assert_eq!(no_iec2c.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&no_iec2c.stderr).contains("no iec2c at /nonexistent/iec2c"));
 }
 
 /// scripts/matiec-fuzz.sh without iec2c: a usage error, before anything is generated.

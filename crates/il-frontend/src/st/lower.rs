@@ -19,7 +19,7 @@ use crate::ast::{
     self as il, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind, Instruction, Literal,
     LiteralKind, Op, Operand, Pou, PouKind, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
 };
-use crate::sema::stdlib::{self, ParamTy};
+use crate::sema::stdlib::{self, ParamTy, Ret};
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use std::cell::RefCell;
@@ -1516,7 +1516,9 @@ impl<'d> PouLowering<'d> {
                 }
             },
             ExprKind::Binary { .. } => self.binary_chain(e, hint, out, diags),
-            ExprKind::Call { name, args } => self.function_call(name, args, e.span, out, diags),
+            ExprKind::Call { name, args } => {
+                self.function_call(name, args, hint, e.span, out, diags)
+            }
         }
     }
 
@@ -1665,6 +1667,7 @@ impl<'d> PouLowering<'d> {
         &mut self,
         name: &Ident,
         args: &[Arg],
+        context: Option<TypeRef>,
         span: Span,
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
@@ -1703,9 +1706,23 @@ impl<'d> PouLowering<'d> {
         let formal = args.iter().any(|a| a.name.is_some());
         let ordered = ordered
             .filter(|list| !formal || list.first().is_none_or(|a| !self.is_aggregate(&a.value)));
+        // A generic standard function whose result is its inputs' type (LIMIT, MAX, SEL, ...) and
+        // none of whose generic inputs is typed takes the type of its context (IEC 61131-3: untyped
+        // literals take their type from the context), so `r := MAX(1.0, 0.5 ** 2.0)` is REAL.
         let hint_of =
             |env: &Env, callee: &Callee, k: usize, name: Option<&Ident>, args: &[&Arg]| {
-                param_hint(env, callee, k, name, args)
+                param_hint(env, callee, k, name, args).or_else(|| match callee {
+                    Callee::Standard(f) if matches!(f.result, Ret::T) => {
+                        let idx = match name {
+                            Some(n) => f.param_index(&n.name)?,
+                            None => k,
+                        };
+                        matches!(f.param_ty(idx)?, ParamTy::T(_))
+                            .then(|| context.clone())
+                            .flatten()
+                    }
+                    _ => None,
+                })
             };
         match ordered {
             Some(list) if !list.is_empty() => {
@@ -1714,6 +1731,8 @@ impl<'d> PouLowering<'d> {
                     let hint = hint_of(&self.env(), &callee, k, None, &list);
                     ops.push(self.operand(&list[k].value, hint.as_ref(), out, diags));
                 }
+                self.lit_hint = hint_of(&self.env(), &callee, 0, None, &list)
+                    .filter(|_| !matches!(self.ty(&list[0].value), Ty::Known(_)));
                 self.value(&list[0].value, out, diags);
                 out.push(instr(
                     InstrKind::FunctionCall {
