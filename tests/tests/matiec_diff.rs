@@ -1341,11 +1341,21 @@ fn every_fixture_declares_its_cycles_and_has_a_recorded_matiec_trace() {
 /// flag (the generator keeps away from what the standard leaves open), in CI without matiec.
 #[test]
 fn generated_programs_run_in_ladderc_without_a_runtime_flag() {
+    generated_programs_run(
+        &[2, 5, 9, 14, 23, 31],
+        "il",
+        ladderc_tests::il_gen::generate,
+    );
+}
+
+/// Each seed's program is the same text twice, and `ladderc run` of it for its cycles exits 0 with no
+/// runtime flag.
+fn generated_programs_run(seeds: &[u64], ext: &str, generate: fn(u64) -> String) {
     let work = tempfile::tempdir().unwrap();
-    for seed in [2u64, 5, 9, 14, 23, 31] {
-        let text = ladderc_tests::il_gen::generate(seed);
-        assert_eq!(text, ladderc_tests::il_gen::generate(seed), "seed {seed}");
-        let src = work.path().join(format!("gen_{seed}.il"));
+    for &seed in seeds {
+        let text = generate(seed);
+        assert_eq!(text, generate(seed), "seed {seed}");
+        let src = work.path().join(format!("gen_{seed}.{ext}"));
         std::fs::write(&src, &text).unwrap();
         let out = ladderc()
             .arg("run")
@@ -1362,25 +1372,40 @@ fn generated_programs_run_in_ladderc_without_a_runtime_flag() {
 /// il-gen writes one file per seed and never overwrites a file that is already there.
 #[test]
 fn il_gen_writes_each_seed_once_and_overwrites_nothing() {
+    generator_writes_each_seed_once(
+        env!("CARGO_BIN_EXE_il-gen"),
+        40,
+        "il",
+        ladderc_tests::il_gen::generate,
+    );
+}
+
+/// `BIN FIRST 2 DIR` writes gen_FIRST.EXT (the seed's program) and gen_FIRST+1.EXT, and a second run
+/// over a file changed since is exit 2, naming the file, which keeps its text.
+fn generator_writes_each_seed_once(bin: &str, first: u64, ext: &str, generate: fn(u64) -> String) {
     let work = tempfile::tempdir().unwrap();
-    let il_gen = || {
-        Command::new(env!("CARGO_BIN_EXE_il-gen"))
-            .args(["40", "2"])
+    let run = || {
+        Command::new(bin)
+            .args([first.to_string().as_str(), "2"])
             .arg(work.path())
             .output()
             .unwrap()
     };
-    let out = il_gen();
+    let out = run();
     assert_eq!(out.status.code(), Some(0));
-    let first = std::fs::read_to_string(work.path().join("gen_40.il")).unwrap();
-    assert_eq!(first, ladderc_tests::il_gen::generate(40));
-    assert!(work.path().join("gen_41.il").is_file());
-    std::fs::write(work.path().join("gen_40.il"), "mine").unwrap();
-    let again = il_gen();
+    let name = format!("gen_{first}.{ext}");
+    let written = std::fs::read_to_string(work.path().join(&name)).unwrap();
+    assert_eq!(written, generate(first));
+    assert!(work
+        .path()
+        .join(format!("gen_{}.{ext}", first + 1))
+        .is_file());
+    std::fs::write(work.path().join(&name), "mine").unwrap();
+    let again = run();
     assert_eq!(again.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&again.stderr).contains("gen_40.il"));
+    assert!(String::from_utf8_lossy(&again.stderr).contains(&name));
     assert_eq!(
-        std::fs::read_to_string(work.path().join("gen_40.il")).unwrap(),
+        std::fs::read_to_string(work.path().join(&name)).unwrap(),
         "mine"
     );
 }
@@ -1391,22 +1416,11 @@ fn il_gen_writes_each_seed_once_and_overwrites_nothing() {
 /// LIMIT took the REAL of their assignment (see the fixture generic_literal_context).
 #[test]
 fn generated_st_programs_run_in_ladderc_without_a_runtime_flag() {
-    let work = tempfile::tempdir().unwrap();
-    for seed in [3u64, 8, 14, 27, 61, 99] {
-        let text = ladderc_tests::st_gen::generate(seed);
-        assert_eq!(text, ladderc_tests::st_gen::generate(seed), "seed {seed}");
-        let src = work.path().join(format!("gen_{seed}.st"));
-        std::fs::write(&src, &text).unwrap();
-        let out = ladderc()
-            .arg("run")
-            .arg(&src)
-            .args(["--cycles", &cycles_of(&text).to_string()])
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(0), "seed {seed}: {stderr}\n{text}");
-        assert!(!stderr.contains("runtime:"), "seed {seed}: {stderr}");
-    }
+    generated_programs_run(
+        &[3, 8, 14, 27, 61, 99],
+        "st",
+        ladderc_tests::st_gen::generate,
+    );
 }
 
 /// The generated ST fixtures (`stgen_SEED.st`, compared with their recorded matiec traces on every run)
@@ -1435,26 +1449,11 @@ fn st_generated_fixtures_are_their_seeds_programs() {
 /// st-gen writes one file per seed and never overwrites a file that is already there.
 #[test]
 fn st_gen_writes_each_seed_once_and_overwrites_nothing() {
-    let work = tempfile::tempdir().unwrap();
-    let st_gen = || {
-        Command::new(env!("CARGO_BIN_EXE_st-gen"))
-            .args(["7", "2"])
-            .arg(work.path())
-            .output()
-            .unwrap()
-    };
-    let out = st_gen();
-    assert_eq!(out.status.code(), Some(0));
-    let first = std::fs::read_to_string(work.path().join("gen_7.st")).unwrap();
-    assert_eq!(first, ladderc_tests::st_gen::generate(7));
-    assert!(work.path().join("gen_8.st").is_file());
-    std::fs::write(work.path().join("gen_7.st"), "mine").unwrap();
-    let again = st_gen();
-    assert_eq!(again.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&again.stderr).contains("gen_7.st"));
-    assert_eq!(
-        std::fs::read_to_string(work.path().join("gen_7.st")).unwrap(),
-        "mine"
+    generator_writes_each_seed_once(
+        env!("CARGO_BIN_EXE_st-gen"),
+        7,
+        "st",
+        ladderc_tests::st_gen::generate,
     );
 }
 
