@@ -324,7 +324,7 @@ fn rejected(name: &str, src: &str) -> String {
 /// ZPLC's HIL test `master_math_control.st` (and Annex F's `lag1`): `r := SQRT(2.0);` with
 /// `r : REAL`. A real literal is ANY_REAL, so the context types it and SQRT computes in REAL;
 /// before, an ANY_REAL function of literals was LREAL at once ("cannot store LREAL into REAL").
-/// An integer literal (`SQRT(2)`) is still read as LREAL.
+/// An integer literal (`SQRT(2)`) takes the context's type as well.
 #[test]
 fn a_real_literal_into_an_any_real_function_takes_the_context_type() {
     let st = "PROGRAM p\nVAR r : REAL; l : LREAL; b : BOOL; END_VAR\n  r := SQRT(2.0);\n  \
@@ -339,11 +339,27 @@ fn a_real_literal_into_an_any_real_function_takes_the_context_type() {
     let il = "PROGRAM p\nVAR r : REAL; END_VAR\n  LD 16.0\n  SQRT\n  ST r\nEND_PROGRAM\n";
     let (trace, _) = run("math.il", il, "1", "p.r");
     assert_eq!(trace, "cycle,time_ms,p.r\n0,0,4\n");
-    let e = rejected("int.st", &st.replace("SQRT(2.0);\n  l", "SQRT(2);\n  l"));
-    assert!(
-        e.contains("int.st:3:3: error[E1006]: cannot store LREAL into REAL"),
-        "{e}"
+    // An integer literal takes the context's type too (IEC 61131-3 ed. 3 allows the implicit INT to
+    // REAL conversion; CODESYS accepts it): `r := SQRT(2);` computes in REAL. It was E1006 ("cannot
+    // store LREAL into REAL") until generic functions of untyped inputs took their context's type.
+    let (trace, stderr) = run(
+        "int.st",
+        &st.replace("SQRT(2.0);\n  l", "SQRT(2);\n  l"),
+        "1",
+        "p.r,p.l",
     );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.r,p.l\n0,0,1.6829419,1.4142135623730951\n"
+    );
+    let (trace, _) = run(
+        "int_only.st",
+        "PROGRAM p\nVAR r : REAL; END_VAR\n  r := SQRT(2);\nEND_PROGRAM\n",
+        "1",
+        "p.r",
+    );
+    assert_eq!(trace, "cycle,time_ms,p.r\n0,0,1.4142135\n");
 }
 
 /// matiec's syntax test `enumeration/enumerationvalue.txt`: `c_1 := XXXX;` where several
