@@ -694,6 +694,14 @@ fn tick_ns(matiec: &Table) -> u64 {
         .unwrap_or(10_000_000)
 }
 
+/// ladderc's trace of the IL fixture `NAME.il` of tests/tests/fixtures/matiec_diff over `cycles` cycles
+/// of 10 ms.
+fn fixture_trace(name: &str, cycles: u64) -> Table {
+    let src = repo_root().join(format!("tests/tests/fixtures/matiec_diff/{name}.il"));
+    let work = tempfile::tempdir().unwrap();
+    parse_csv(&ladderc_trace(&src, cycles, 10_000_000, work.path()).unwrap())
+}
+
 /// Runs the program through `ladderc run`: the trace text, or ladderc's diagnostics.
 fn ladderc_trace(src: &Path, cycles: u64, tick_ns: u64, work: &Path) -> Result<String, String> {
     let trace = work.join("ladderc.csv");
@@ -1107,9 +1115,7 @@ fn unseen_programs_from_the_environment() {
 /// with the standard's results for the negative divisors after it.
 #[test]
 fn mod_by_zero_gives_0_and_runs_on() {
-    let src = repo_root().join("tests/tests/fixtures/matiec_diff/mod_by_zero.il");
-    let work = tempfile::tempdir().unwrap();
-    let t = parse_csv(&ladderc_trace(&src, 20, 10_000_000, work.path()).unwrap());
+    let t = fixture_trace("mod_by_zero", 20);
     let col = t.header.iter().position(|h| h == "inst.rest").unwrap();
     let rest: Vec<&str> = t.rows.iter().map(|r| r[col].as_str()).collect();
     assert_eq!(rest.len(), 20);
@@ -1121,9 +1127,7 @@ fn mod_by_zero_gives_0_and_runs_on() {
 /// itself in every width, MOD -1 is 0, and the run goes on to the divisors -2 and -3 (truncating).
 #[test]
 fn most_negative_divided_by_minus_1_wraps_and_runs_on() {
-    let src = repo_root().join("tests/tests/fixtures/matiec_diff/int_div_limits.il");
-    let work = tempfile::tempdir().unwrap();
-    let t = parse_csv(&ladderc_trace(&src, 7, 10_000_000, work.path()).unwrap());
+    let t = fixture_trace("int_div_limits", 7);
     let col = |name: &str| t.column(name);
     // d = 4 - tick, with -1 for 0: 3, 2, 1, -1, -1, -2, -3
     assert_eq!(col("inst.d"), ["3", "2", "1", "-1", "-1", "-2", "-3"]);
@@ -1181,9 +1185,7 @@ fn mux_out_of_range_selects_in0_and_is_reported() {
 /// 0..11), informal and formal, and LIMIT(7.5, x, 2.5) is 2.5 (before, MN while x < MN).
 #[test]
 fn limit_with_mn_above_mx_is_mx() {
-    let src = repo_root().join("tests/tests/fixtures/matiec_diff/limit_mn_above_mx.il");
-    let work = tempfile::tempdir().unwrap();
-    let t = parse_csv(&ladderc_trace(&src, 12, 10_000_000, work.path()).unwrap());
+    let t = fixture_trace("limit_mn_above_mx", 12);
     let col = |name: &str| t.column(name);
     assert_eq!(
         col("inst.x"),
