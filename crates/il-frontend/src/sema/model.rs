@@ -1191,7 +1191,8 @@ pub struct Model {
     /// Keyed by the instruction's identity ([`InstrId::of`]).
     pub instrs: InstrTable,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
-    /// call arguments, indexes, CAL instances).
+    /// call arguments, indexes, CAL instances); from [`crate::sema::analyze_for_code`], only the uses
+    /// of a function's name as its result.
     pub names: SpanTable<NameRef>,
 }
 
@@ -1203,8 +1204,8 @@ pub struct Model {
 /// previous instruction ([`InstrTable::get_near`]), which finds the next one at once; while the ids came
 /// in increasing order a lookup bisects; otherwise the first lookup that needs it builds a hash index
 /// (instruction addresses are not in order across bodies, and sema never needs it).
-/// Invariants: `pool[facts[i]] == i` for every stored facts value, and `simple[simple_key(facts[i])]
-/// == i` for those with a key; every entry's index is below
+/// Invariants: `pool[facts[i]] == i` for every stored facts value, and `simple[k] == i` for every key
+/// `k` in `simple`, `k` being the `simple_key` of facts equal to `facts[i]`; every entry's index is below
 /// `facts.len()`; `sorted` says whether the ids are strictly increasing; `index`, once built, maps each
 /// id to its last entry (an id inserted twice: the later info counts; sema records each instruction
 /// once).
@@ -1215,9 +1216,10 @@ pub struct InstrTable {
     index: std::sync::OnceLock<FxHashMap<InstrId, u32>>,
     facts: Vec<InstrFacts>,
     pool: FxHashMap<InstrFacts, u32>,
-    /// The pool's entries whose facts have a [`simple_key`] (most: elementary types, no callee, no
-    /// arguments), by that key: found without hashing and comparing whole facts.
-    simple: FxHashMap<u32, u32>,
+    /// The pool's entries whose facts have a [`simple_key`] (most: elementary types, no callee or a
+    /// standard function on elementary types, no arguments), by that key: found without hashing and
+    /// comparing whole facts.
+    simple: FxHashMap<SimpleKey, u32>,
     /// Whether an id may have been stored twice ([`InstrTable::insert`] was used; sema records through
     /// `insert_interned`, each instruction once): then only the hint and the index find an id.
     repeats: bool,
@@ -1231,18 +1233,45 @@ pub struct InstrTable {
 /// How many entries after and before its hint [`InstrTable::get_near`] looks at before the index.
 const NEAR: usize = 32;
 
-/// The facts of most instructions in a word: each of the three types absent (0) or elementary (its
-/// index + 1), one byte each; `None` when there is a callee, an argument or another type.
-fn simple_key(f: &InstrFacts) -> Option<u32> {
-    if f.callee.is_some() || !f.args.is_empty() {
+/// The key of the facts of most instructions ([`simple_key`]): the three types, each absent (0) or
+/// elementary (its index + 1), one byte each, and for a standard function on elementary types (the
+/// operators `ADD x`, `GT 5` ...: [`Callee::Std`]) its type and result type in two more bytes, and its
+/// name's address and length (the names are `&'static str`s of the function tables: equal names at two
+/// addresses are two keys of the same facts, which the table then stores once all the same, through
+/// the pool).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+struct SimpleKey {
+    types: u64,
+    std_name: (usize, usize),
+}
+
+/// The [`SimpleKey`] of `f`; `None` when it has arguments, a callee other than a standard function on
+/// elementary types, or another type.
+fn simple_key(f: &InstrFacts) -> Option<SimpleKey> {
+    if !f.args.is_empty() {
         return None;
     }
-    let byte = |t: &Option<Type>| match t {
-        None => Some(0),
-        Some(Type::Elementary(e)) => Some(*e as u32 + 1),
+    fn byte(t: Option<&Type>) -> Option<u64> {
+        match t {
+            None => Some(0),
+            Some(Type::Elementary(e)) => Some(*e as u64 + 1),
+            Some(_) => None,
+        }
+    }
+    let types = byte(f.cr_before.as_ref())?
+        | byte(f.cr_after.as_ref())? << 8
+        | byte(f.operand.as_ref())? << 16;
+    match &f.callee {
+        None => Some(SimpleKey {
+            types,
+            std_name: (0, 0),
+        }),
+        Some(Callee::Std { name, ty, result }) => Some(SimpleKey {
+            types: types | byte(Some(ty))? << 24 | byte(Some(result))? << 32 | 1 << 40,
+            std_name: (name.as_ptr() as usize, name.len()),
+        }),
         Some(_) => None,
-    };
-    Some(byte(&f.cr_before)? | byte(&f.cr_after)? << 8 | byte(&f.operand)? << 16)
+    }
 }
 
 impl InstrTable {
@@ -1257,7 +1286,16 @@ impl InstrTable {
     pub(crate) fn intern(&mut self, facts: InstrFacts) -> u32 {
         if let Some(key) = simple_key(&facts) {
             return match self.simple.get(&key) {
-                Some(&ix) => ix,
+                Some(&ix) => {
+                    // Facts with a key own no memory (elementary types, a `&'static` name, no
+                    // arguments) unless their empty argument list has room: then there is nothing
+                    // to free, and the drop's calls through every field (most of sema's dropping of
+                    // types) are skipped.
+                    if facts.args.capacity() == 0 {
+                        std::mem::forget(facts);
+                    }
+                    ix
+                }
                 None => {
                     let ix = self.intern_in_pool(facts);
                     self.simple.insert(key, ix);
@@ -1915,9 +1953,10 @@ mod instr_table_tests {
         assert!(t.index.get().is_some());
     }
 
-    /// Facts with a small key (elementary or no types, no callee, no arguments) and without one
-    /// (another type, a callee) are each stored once and read back as given; facts differing in any
-    /// one of the three types are different.
+    /// Facts with a small key (elementary or no types, no callee or a standard function on elementary
+    /// types, no arguments) and without one (another type, another callee) are each stored once and
+    /// read back as given; facts differing in any one of the three types, or in the function, are
+    /// different.
     #[test]
     fn equal_facts_are_stored_once_with_or_without_a_small_key() {
         let types = [
@@ -1933,7 +1972,28 @@ mod instr_table_tests {
         for a in &types {
             for b in &types {
                 for c in &types {
-                    for callee in [None, Some(Callee::Embedded { name: "f".into() })] {
+                    for callee in [
+                        None,
+                        Some(Callee::Embedded { name: "f".into() }),
+                        Some(Callee::Std {
+                            name: "ADD",
+                            ty: Type::INT,
+                            result: Type::INT,
+                        }),
+                        Some(Callee::Std {
+                            name: "GT",
+                            ty: Type::INT,
+                            result: Type::BOOL,
+                        }),
+                        Some(Callee::Std {
+                            name: "GT",
+                            ty: Type::String {
+                                wide: false,
+                                len: 8,
+                            },
+                            result: Type::BOOL,
+                        }),
+                    ] {
                         all.push(InstrFacts {
                             cr_before: a.clone(),
                             cr_after: b.clone(),
@@ -1956,6 +2016,23 @@ mod instr_table_tests {
             assert_eq!(t.distinct_facts(), all.len());
         }
         assert!(simple_key(&all[0]).is_some() && simple_key(&all[1]).is_none());
+        assert!(simple_key(&all[2]).is_some() && simple_key(&all[4]).is_none());
+        // the same standard function named by a string at another address: a second key, the same
+        // stored facts
+        let mut moved = all[2].clone();
+        let add: &'static str = Box::leak(String::from("ADD").into_boxed_str());
+        if let Some(Callee::Std { name, .. }) = &mut moved.callee {
+            *name = add;
+        }
+        assert_ne!(simple_key(&moved), simple_key(&all[2]));
+        assert_eq!(t.intern(moved.clone()), t.intern(all[2].clone()));
+        assert_eq!(t.distinct_facts(), all.len());
+        // differing in the function, its type or its result: other facts
+        let mut gt_bool = all[3].clone();
+        if let Some(Callee::Std { result, .. }) = &mut gt_bool.callee {
+            *result = Type::INT;
+        }
+        assert_ne!(t.intern(gt_bool), t.intern(all[3].clone()));
     }
 
     /// In increasing order the table bisects; an id recorded twice answers with the later info.
