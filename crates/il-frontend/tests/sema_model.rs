@@ -805,3 +805,65 @@ fn each_operator_calls_its_own_standard_function_every_time() {
         }
     }
 }
+
+/// The model for code generation (`analyze_for_code`) is the full model but for the name table, which
+/// keeps only the uses of a function's name as its result; the diagnostics are the same, W1003 (a
+/// function that never sets its result, found through that table) included.
+#[test]
+fn the_model_for_code_is_the_full_model_without_the_name_table() {
+    let src = "FUNCTION Twice : INT
+VAR_INPUT
+  v : INT;
+END_VAR
+  LD v
+  MUL 2
+  ST Twice
+END_FUNCTION
+FUNCTION Never : INT
+VAR_INPUT
+  v : INT;
+END_VAR
+  LD v
+END_FUNCTION
+PROGRAM P
+VAR
+  x : INT;
+  t : TON;
+  b : BOOL;
+END_VAR
+  LD x
+  Twice
+  ADD 1
+  ST x
+  CAL t(IN := b, PT := T#5ms, Q => b)
+END_PROGRAM
+";
+    let mut map = diagnostics::SourceMap::new();
+    let file = map.add("test.il", src.to_string());
+    let mut parse_diags = diagnostics::Diagnostics::new();
+    let units = [il_frontend::parse(file, src, &mut parse_diags)];
+    assert!(parse_diags.is_empty());
+    let mut full_diags = diagnostics::Diagnostics::new();
+    let full = analyze(&units, &mut full_diags);
+    let mut code_diags = diagnostics::Diagnostics::new();
+    let code = analyze_for_code(&units, &mut code_diags);
+    let rendered = |d: diagnostics::Diagnostics| diagnostics::render_human(&map, &d.into_sorted());
+    let full_rendered = rendered(full_diags);
+    assert!(full_rendered.contains("W1003"), "{full_rendered}");
+    assert!(!full_rendered.contains("`Twice` never"), "{full_rendered}");
+    assert_eq!(rendered(code_diags), full_rendered);
+    let without_names = |m: &Model| {
+        let mut m = m.clone();
+        m.names = Default::default();
+        format!("{m:?}")
+    };
+    assert_eq!(without_names(&code), without_names(&full));
+    assert!(full.names.len() >= 8, "{}", full.names.len());
+    let results: Vec<_> = full
+        .names
+        .iter()
+        .filter(|(_, r)| **r == NameRef::FunctionResult)
+        .collect();
+    assert_eq!(results.len(), 1);
+    assert_eq!(code.names.iter().collect::<Vec<_>>(), results);
+}

@@ -105,6 +105,10 @@ pub struct Session {
     /// Whether a file that is not in [`Session::overlay`] is read from the file system (and `-` from
     /// standard input). `false`: such a file is an E9001 error ("not given in memory").
     pub disk: bool,
+    /// Whether the semantic models record what every name used in a body refers to
+    /// ([`il_frontend::sema::Model::names`], for tools; the default). `false`: only what the C
+    /// generation reads ([`il_frontend::sema::analyze_for_code`]).
+    pub name_table: bool,
 }
 
 /// What [`Session::parse`] produced: the user's units and what they are compiled with.
@@ -201,6 +205,7 @@ impl Session {
             diags: Diagnostics::new(),
             overlay: std::collections::HashMap::new(),
             disk: true,
+            name_table: true,
         }
     }
 
@@ -635,7 +640,7 @@ impl Session {
             checked.extend(user);
             Vec::new()
         };
-        let model = il_frontend::sema::analyze(&checked, &mut self.diags);
+        let model = self.analyze(&checked);
         if self.diags.has_errors() {
             if uses_blocks && opts.axes.is_none() && axes.axes.is_empty() && axes.groups.is_empty()
             {
@@ -653,6 +658,16 @@ impl Session {
             axes,
             cycle_ms,
         })
+    }
+
+    /// The semantic analysis of `units` into [`Session::diags`], with or without the name table
+    /// ([`Session::name_table`]).
+    fn analyze(&mut self, units: &[CompilationUnit]) -> il_frontend::sema::Model {
+        if self.name_table {
+            il_frontend::sema::analyze(units, &mut self.diags)
+        } else {
+            il_frontend::sema::analyze_for_code(units, &mut self.diags)
+        }
     }
 
     /// Parameter passing: every PLCopen block call lowered by `opts.strategy`. `None` when errors were
@@ -784,7 +799,11 @@ impl Session {
                 // The lowered program: its warnings were given on the user's program already; an error
                 // here would be a lowering bug, and is reported.
                 let mut second = Diagnostics::new();
-                let m = il_frontend::sema::analyze(&lowered.all_units, &mut second);
+                let m = if self.name_table {
+                    il_frontend::sema::analyze(&lowered.all_units, &mut second)
+                } else {
+                    il_frontend::sema::analyze_for_code(&lowered.all_units, &mut second)
+                };
                 self.diags.extend(
                     second
                         .into_iter()

@@ -266,8 +266,11 @@ impl Project {
         self.parse()?.check()
     }
 
-    /// Every stage to the C project: what `ladderc check` runs.
-    pub fn compile(self) -> Result<GeneratedProject, Failed> {
+    /// Every stage to the C project: what `ladderc check` runs. The semantic model it keeps
+    /// ([`GeneratedProject::lowered`]) has no name table ([`Session::name_table`]): nothing on the way
+    /// to C reads it (run the stages one by one, [`Project::check`], for a model with it).
+    pub fn compile(mut self) -> Result<GeneratedProject, Failed> {
+        self.session.name_table = false;
         self.check()?.lower()?.generate()
     }
 }

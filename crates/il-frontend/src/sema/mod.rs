@@ -25,6 +25,18 @@ use std::collections::HashMap;
 
 /// Analyses `units` together and returns the resolved model; problems go to `diags`.
 pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
+    analyze_with(units, diags, true)
+}
+
+/// [`analyze`] for code generation: the same model and diagnostics, but [`Model::names`] (what
+/// each name used in a body refers to, for tools such as the language server; the C generation does
+/// not read it) holds only the uses of a function's own name as its result. The table took a fifth
+/// of the memory pages sema touches on 100,000 IL lines (crates/ladderc/BENCHMARKS.md, Round 17).
+pub fn analyze_for_code(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
+    analyze_with(units, diags, false)
+}
+
+fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: bool) -> Model {
     let mut a = Analyzer {
         diags,
         model: Model::default(),
@@ -35,6 +47,7 @@ pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
         pending_aliases: HashMap::new(),
         resolving: Vec::new(),
         silent: false,
+        all_names,
         enum_counter: 0,
         alias_chain_reported: false,
         undeclared_at: std::collections::HashSet::new(),
@@ -47,7 +60,9 @@ pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
     // Room for every instruction's info (and about one name each) at once: no regrowth of big tables.
     let instrs: usize = pous.iter().map(|(_, p)| body::count_instrs(&p.body)).sum();
     a.model.instrs.reserve(instrs);
-    a.model.names.reserve(instrs);
+    if all_names {
+        a.model.names.reserve(instrs);
+    }
     for (id, pou) in pous {
         a.check_body(id, pou);
     }
@@ -72,6 +87,9 @@ pub(crate) struct Analyzer<'d> {
     pub(crate) resolving: Vec<TypeId>,
     /// While set, diagnostics are dropped (first pass over a body).
     pub(crate) silent: bool,
+    /// Whether [`Model::names`] records every name used in a body, or only a function's own name
+    /// used as its result ([`analyze_for_code`]).
+    pub(crate) all_names: bool,
     pub(crate) enum_counter: u32,
     /// E0213 (an alias chain longer than `parser::MAX_TYPE_NESTING`) was reported.
     pub(crate) alias_chain_reported: bool,

@@ -726,7 +726,8 @@ impl Body<'_, '_> {
 
     /// Records what a name refers to (in the reporting pass only).
     fn note_name(&mut self, span: Span, r: NameRef) {
-        if !self.a.silent {
+        // `write_place` reads the function-result uses back (W1003): those are always recorded
+        if !self.a.silent && (self.a.all_names || r == NameRef::FunctionResult) {
             self.a.model.names.insert(span, r);
         }
     }
