@@ -20,18 +20,73 @@ pub struct NameIndex {
 
 /// A hash of `name` with ASCII letters upper-cased: names equal ignoring ASCII case hash alike.
 pub fn hash_ignoring_case(name: &str) -> u64 {
-    const K: u64 = 0x517c_c1b7_2722_0a95;
     let bytes = name.as_bytes();
     let mut h = bytes.len() as u64;
     for chunk in bytes.chunks(8) {
-        let mut word = [0u8; 8];
-        for (w, b) in word.iter_mut().zip(chunk) {
-            *w = b.to_ascii_uppercase();
-        }
-        h = (h.rotate_left(5) ^ u64::from_le_bytes(word)).wrapping_mul(K);
+        h = hash_step(h, upper_word(load_word(chunk)));
     }
-    // spread the high bits down: the slot comes from the low bits
+    hash_finish(h)
+}
+
+/// One step of [`hash_ignoring_case`]: eight upper-cased bytes into the state.
+#[inline]
+fn hash_step(h: u64, word: u64) -> u64 {
+    const K: u64 = 0x517c_c1b7_2722_0a95;
+    (h.rotate_left(5) ^ word).wrapping_mul(K)
+}
+
+/// The end of [`hash_ignoring_case`]: the high bits spread down (the slot comes from the low bits).
+#[inline]
+fn hash_finish(h: u64) -> u64 {
     h ^ (h >> 29) ^ (h >> 41)
+}
+
+/// Whether `a` and `b` are equal ignoring ASCII case ([`str::eq_ignore_ascii_case`]); `b_upper`:
+/// `b`'s bytes as one upper-cased word ([`upper_word`] of [`load_word`]) when it has at most eight.
+#[inline]
+fn eq_ignoring_case(a: &str, b: &str, b_upper: Option<u64>) -> bool {
+    a.len() == b.len()
+        && match b_upper {
+            Some(word) => upper_word(load_word(a.as_bytes())) == word,
+            None => a.eq_ignore_ascii_case(b),
+        }
+}
+
+/// Up to eight bytes as a little-endian word, zero-padded: read as one or two overlapping words, or
+/// three bytes (a name's few bytes without a loop or a call to copy them).
+#[inline]
+fn load_word(chunk: &[u8]) -> u64 {
+    let n = chunk.len();
+    let u32_at = |at: usize| {
+        u64::from(u32::from_le_bytes([
+            chunk[at],
+            chunk[at + 1],
+            chunk[at + 2],
+            chunk[at + 3],
+        ]))
+    };
+    match n {
+        0 => 0,
+        1..=3 => {
+            u64::from(chunk[0])
+                | u64::from(chunk[n / 2]) << (8 * (n / 2))
+                | u64::from(chunk[n - 1]) << (8 * (n - 1))
+        }
+        4..=7 => u32_at(0) | u32_at(n - 4) << (8 * (n - 4)),
+        _ => u32_at(0) | u32_at(4) << 32,
+    }
+}
+
+/// `word` with each byte that is an ASCII lower-case letter upper-cased, all eight at once: a byte
+/// is one when its low seven bits are `a`..=`z` and its high bit is clear (no carry crosses a byte:
+/// seven bits plus at most 0x1f stay below 0x100).
+fn upper_word(word: u64) -> u64 {
+    const ONES: u64 = 0x0101_0101_0101_0101;
+    let low = word & (ONES * 0x7f);
+    let from_a = low + ONES * (0x80 - u64::from(b'a'));
+    let past_z = low + ONES * (0x80 - u64::from(b'z') - 1);
+    let lower = from_a & !past_z & !word & (ONES * 0x80);
+    word ^ (lower >> 2)
 }
 
 impl NameIndex {
@@ -71,7 +126,15 @@ impl NameIndex {
         name: &str,
         name_at: &impl Fn(usize) -> &'n str,
     ) -> Result<(usize, usize), (usize, u32)> {
-        let h = hash_ignoring_case(name);
+        // most names have at most eight bytes: hashed and compared as one upper-cased word (the hash
+        // is `hash_ignoring_case`'s)
+        let (h, upper) = match name.len() {
+            n @ 1..=8 => {
+                let word = upper_word(load_word(name.as_bytes()));
+                (hash_finish(hash_step(n as u64, word)), Some(word))
+            }
+            _ => (hash_ignoring_case(name), None),
+        };
         let tag = (h >> 32) as u32;
         let mask = self.slots.len() - 1;
         let mut k = h as usize & mask;
@@ -81,7 +144,7 @@ impl NameIndex {
                 return Err((k, tag));
             }
             let p = slot as usize - 1;
-            if slot_tag == tag && name_at(p).eq_ignore_ascii_case(name) {
+            if slot_tag == tag && eq_ignoring_case(name_at(p), name, upper) {
                 return Ok((k, p));
             }
             k = (k + 1) & mask;
@@ -186,6 +249,62 @@ mod tests {
         assert!(NameIndex::default().find("x", |p| names[p]).is_none());
     }
 
+    /// Eight bytes upper-cased at once are the bytes upper-cased one by one, whatever the byte in
+    /// whatever position (non-ASCII bytes stay); the comparison built on it is
+    /// `str::eq_ignore_ascii_case`.
+    #[test]
+    fn words_upper_case_as_their_bytes_do() {
+        for b in 0..=255u8 {
+            for pos in 0..8 {
+                let mut bytes = *b"aZ_9~{`@";
+                bytes[pos] = b;
+                let one_by_one = bytes.map(|c| c.to_ascii_uppercase());
+                assert_eq!(
+                    upper_word(u64::from_le_bytes(bytes)),
+                    u64::from_le_bytes(one_by_one),
+                    "{b:#x} at {pos}"
+                );
+                // the first `pos + 1` bytes (1 to 8, the changed one last), zero-padded
+                assert_eq!(load_word(&bytes[..=pos]), {
+                    let mut padded = [0u8; 8];
+                    padded[..=pos].copy_from_slice(&bytes[..=pos]);
+                    u64::from_le_bytes(padded)
+                });
+            }
+        }
+        assert_eq!(load_word(&[]), 0);
+        let names = [
+            "",
+            "a",
+            "A",
+            "ab",
+            "aB",
+            "abc",
+            "motor_speed",
+            "MOTOR_SPEED",
+            "Motor_Speeds",
+            "grün",
+            "GRüN",
+            "GRÜN",
+            "a_name_past_sixteen_bytes",
+            "A_NAME_PAST_SIXTEEN_BYTES",
+            "x{",
+            "X[",
+        ];
+        for a in names {
+            for b in names {
+                let upper = (b.len() <= 8).then(|| upper_word(load_word(b.as_bytes())));
+                for b_upper in [upper, None] {
+                    assert_eq!(
+                        eq_ignoring_case(a, b, b_upper),
+                        a.eq_ignore_ascii_case(b),
+                        "{a} {b}"
+                    );
+                }
+            }
+        }
+    }
+
     #[test]
     fn names_equal_ignoring_case_hash_alike() {
         assert_eq!(
@@ -193,5 +312,16 @@ mod tests {
             hash_ignoring_case("MOTOR_speed_setPOINT")
         );
         assert_ne!(hash_ignoring_case("A"), hash_ignoring_case("A\0"));
+        // the probe's one-word hash of a short name is the same hash
+        let names = [
+            "a", "Ab", "abc", "abcd", "ABCDE", "abcdef", "AbCdEfG", "abcdefgh",
+        ];
+        for n in names {
+            let word = upper_word(load_word(n.as_bytes()));
+            assert_eq!(
+                hash_finish(hash_step(n.len() as u64, word)),
+                hash_ignoring_case(n)
+            );
+        }
     }
 }
