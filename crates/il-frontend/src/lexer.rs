@@ -553,11 +553,13 @@ pub fn classify(word: &str) -> Word {
     if word.len() > buf.len() {
         return Word::Ident;
     }
-    let up = &mut buf[..word.len()];
-    up.copy_from_slice(word.as_bytes());
-    up.make_ascii_uppercase();
+    // upper-cased byte by byte into the buffer (a word is a few bytes: no call to copy them first)
+    for (d, s) in buf.iter_mut().zip(word.as_bytes()) {
+        *d = s.to_ascii_uppercase();
+    }
+    let up = &buf[..word.len()];
     use Word::*;
-    match &*up {
+    match up {
         b"LD" => Ld,
         b"LDN" => Ldn,
         b"ST" => St,

@@ -364,7 +364,6 @@ impl<'s> Ctx<'s> {
         l: usize,
         r: usize,
     ) -> Option<Instruction> {
-        let kw = self.text(l, l + word_len(self.src, l));
         match (op, &operand) {
             (Op::Not, Some(o)) => {
                 let (os, oe) = self.local(o.span());
@@ -378,6 +377,7 @@ impl<'s> Ctx<'s> {
             }
             (Op::Not | Op::S | Op::R, None) => {}
             (_, None) => {
+                let kw = self.text(l, l + word_len(self.src, l));
                 let what = if op == Op::St {
                     "a variable or address"
                 } else {
@@ -731,7 +731,9 @@ impl<'s> Ctx<'s> {
     pub fn pou_item(&mut self, mut parts: PouParts, item: PouItem) -> PouParts {
         match item {
             PouItem::Stmt(Some(s)) => {
-                if parts.body.len() == LONG_BODY && parts.body.capacity() == LONG_BODY {
+                if parts.body.len() == MEDIUM_BODY && parts.body.capacity() == MEDIUM_BODY {
+                    parts.body.reserve_exact(LONG_BODY - MEDIUM_BODY);
+                } else if parts.body.len() == LONG_BODY && parts.body.capacity() == LONG_BODY {
                     let hint = long_body_hint(&parts.body[0], &s, self.src.len() + self.base);
                     parts.body.reserve(hint);
                 }
@@ -1316,6 +1318,12 @@ fn end_of_previous(src: &str, at: usize) -> usize {
 /// A body that reaches this many statements (a power of two: the list's capacity then, grown by
 /// doubling from empty) gets room for the rest of its text at once ([`long_body_hint`]).
 const LONG_BODY: usize = 4096;
+
+/// A body that reaches this many statements (a power of two, as [`LONG_BODY`]) gets room for
+/// [`LONG_BODY`] at once, instead of being regrown (and copied) three times on the way: the room
+/// not used is never touched, and [`Ctx::pou`] gives it back. The 50 POUs of 2,000 lines of the
+/// benchmark copied 7 MB less (crates/ladderc/BENCHMARKS.md, Round 17).
+const MEDIUM_BODY: usize = 256;
 
 /// Room for the statements of a long body still to come, estimated from the bytes per statement
 /// of its first [`LONG_BODY`] (`first` and `here`) and the text left up to `text_end`: the list of
