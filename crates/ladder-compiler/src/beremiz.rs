@@ -52,7 +52,7 @@ pub fn base_params(text: &str) -> Option<(String, Option<u32>)> {
     let arena = xml::Arena::new();
     let (root, _) = xml::parse(text, &arena);
     let root = root?;
-    if root.name != "BaseParams" {
+    if root.name() != "BaseParams" {
         return None;
     }
     let name = root.attr("Name").unwrap_or_default().trim().to_string();
@@ -69,10 +69,10 @@ pub fn root_tag(file: FileId, text: &str) -> Option<(String, Span)> {
         return None;
     }
     let root = root?;
-    let end = root.tag_end.min(text.len());
+    let end = root.tag_end().min(text.len());
     Some((
-        root.name.to_string(),
-        Span::new(file, root.tag_start.min(end), end),
+        root.name().to_string(),
+        Span::new(file, root.tag_start().min(end), end),
     ))
 }
 
@@ -121,13 +121,13 @@ pub fn code_file(file: FileId, text: &str, diags: &mut Diagnostics) -> CodeFile 
     }
     if out.code.is_none() {
         for section in root.children.iter() {
-            if !CODE_SECTIONS.contains(&section.name) {
+            if !CODE_SECTIONS.contains(&section.name()) {
                 continue;
             }
             let holds_code = !section.text_ref().trim().is_empty()
                 || section.walk().any(|e| !e.text_ref().trim().is_empty());
             if holds_code {
-                out.code = Some((ctx.tag(section), format!("<{}>", section.name)));
+                out.code = Some((ctx.tag(section), format!("<{}>", section.name())));
                 break;
             }
         }

@@ -36,7 +36,7 @@ pub fn lower_pou_body(
     let Some(lang) = body
         .children
         .iter()
-        .find(|c| !matches!(c.name, "documentation" | "addData"))
+        .find(|c| !matches!(c.name(), "documentation" | "addData"))
     else {
         return Some((Vec::new(), Vec::new()));
     };
@@ -54,8 +54,8 @@ pub fn lower_pou_body(
     // (`crate::sfc`).
     let mut st_actions: Vec<(Ident, &Element)> = Vec::new();
     let mut acts = LoweredActions::default();
-    if lang.name != "ST" || used {
-        acts = lower_actions(ctx, index, pou_el, pou, lang.name, &mut st_actions);
+    if lang.name() != "ST" || used {
+        acts = lower_actions(ctx, index, pou_el, pou, lang.name(), &mut st_actions);
     }
     let is_var = var_test(pou, index);
     let mut next = 0;
@@ -65,7 +65,7 @@ pub fn lower_pou_body(
         }
         il_frontend::actions::inline_calls(stmts, &acts.il, &is_var, "__A", &mut next, ctx.diags)
     };
-    match lang.name {
+    match lang.name() {
         "LD" | "FBD" => {
             let g = graph::read(ctx, lang, name);
             let mut low = BodyLowering::new(index, pou, span).calling_actions();
@@ -208,16 +208,16 @@ fn lower_actions<'e, 'a>(
         let Some(b) = a.child("body").and_then(|b| {
             b.children
                 .iter()
-                .find(|c| !matches!(c.name, "documentation" | "addData"))
+                .find(|c| !matches!(c.name(), "documentation" | "addData"))
         }) else {
             if body_lang != "SFC" {
                 raw.push((id, Vec::new()));
             }
             continue;
         };
-        match b.name {
+        match b.name() {
             // the other actions of an SFC body are its chart's (`crate::sfc`)
-            _ if body_lang == "SFC" && b.name != "SFC" => {}
+            _ if body_lang == "SFC" && b.name() != "SFC" => {}
             "ST" if body_lang == "ST" => {
                 st_actions.push((id.clone(), b));
                 st_inline.push((id, b));

@@ -62,7 +62,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<String, Box<Diag
         return None;
     }
     let root = root?;
-    if !matches!(root.name, "pou" | "dut" | "gvl")
+    if !matches!(root.name(), "pou" | "dut" | "gvl")
         || root.attr("xmlns").is_some()
         || root.child("interface").is_none()
     {
@@ -72,7 +72,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<String, Box<Diag
     let name = child_text(&root, "name");
     let interface = root.child("interface")?;
     out.copy(interface);
-    if root.name != "pou" {
+    if root.name() != "pou" {
         return Some(Ok(out.finish()));
     }
     let header = interface.text_ref();
@@ -98,7 +98,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<String, Box<Diag
     };
     let mut at = match body_of(file, &root, &name) {
         Ok(Some(body)) => out.copy(body),
-        Ok(None) => interface.end,
+        Ok(None) => interface.end(),
         Err(d) => return Some(Err(d)),
     };
     let actions: Vec<(&Element, String, &Element)> = {
@@ -121,7 +121,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<String, Box<Diag
     // (its `<name>` line has room); the last keyword may have to follow the file's end
     let mut written = Some(at);
     for (k, (_, action_name, body)) in actions.iter().enumerate() {
-        let start = body.tag_start;
+        let start = body.tag_start();
         if k == 0 {
             written = written
                 .and_then(|w| out.place(w, start, end_keyword))
@@ -131,7 +131,8 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<String, Box<Diag
         at = out.copy(body);
         written = written.map(|_| at);
         if k + 1 < actions.len() {
-            written = written.and_then(|w| out.place(w, actions[k + 1].2.tag_start, "END_ACTION"));
+            written =
+                written.and_then(|w| out.place(w, actions[k + 1].2.tag_start(), "END_ACTION"));
         }
     }
     let Some(w) = written else {
@@ -162,14 +163,14 @@ fn body_of<'e, 'a>(
     let Some(lang) = el.children.iter().find(|c| c.child("body").is_some()) else {
         return Ok(None);
     };
-    if !lang.name.eq_ignore_ascii_case("st") && !lang.name.eq_ignore_ascii_case("il") {
+    if !lang.name().eq_ignore_ascii_case("st") && !lang.name().eq_ignore_ascii_case("il") {
         return Err(unreadable(
             file,
             lang,
             format!(
                 "CODESYS V2.3 object file: the body of `{what}` is <{}>, which ladderc cannot read \
                  in this format (it reads <st> and <il> bodies)",
-                lang.name
+                lang.name()
             ),
         ));
     }
@@ -179,7 +180,7 @@ fn body_of<'e, 'a>(
 fn unreadable(file: FileId, el: &Element, msg: String) -> Box<Diagnostic> {
     Box::new(
         Diagnostic::error(code::E0321, msg)
-            .at(Span::new(file, el.tag_start, el.tag_end))
+            .at(Span::new(file, el.tag_start(), el.tag_end()))
             .with_hint(
                 "export the project from CODESYS as PLCopen XML (Project > Export PLCopenXML) or as \
                  text (.EXP), and give ladderc that file",
@@ -206,7 +207,7 @@ impl Source {
     /// Copies `el`'s text (CDATA and character data; an entity as its character, padded with blanks)
     /// into place; returns the offset just after the last piece.
     fn copy(&mut self, el: &Element) -> usize {
-        let mut end = el.tag_end;
+        let mut end = el.tag_end();
         for seg in el.segments() {
             let (start, stop) = (
                 seg.start.min(self.bytes.len()),

@@ -44,7 +44,7 @@ impl<'a> Ctx<'a> {
     }
     /// The span of an element's start tag: what diagnostics and lowered nodes point at.
     pub fn tag(&self, e: &Element) -> Span {
-        self.span(e.tag_start, e.tag_end)
+        self.span(e.tag_start(), e.tag_end())
     }
     /// The span of an attribute's value, or of the start tag when the attribute is absent.
     pub fn attr_span(&self, e: &Element, name: &str) -> Span {

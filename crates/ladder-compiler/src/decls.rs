@@ -50,7 +50,7 @@ pub fn type_ref(ctx: &mut Ctx, holder: &Element) -> Option<TypeRef> {
         ctx.error(
             code::E3013,
             ctx.tag(holder),
-            format!("<{}> has no type inside", holder.name),
+            format!("<{}> has no type inside", holder.name()),
         );
         return None;
     };
@@ -59,12 +59,12 @@ pub fn type_ref(ctx: &mut Ctx, holder: &Element) -> Option<TypeRef> {
 
 fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
     let span = ctx.tag(t);
-    if let Some(n) = elementary(t.name) {
+    if let Some(n) = elementary(t.name()) {
         return Some(TypeRef::Named(Ident::new(n, span)));
     }
-    match t.name {
+    match t.name() {
         "string" | "wstring" => Some(TypeRef::String {
-            wide: t.name == "wstring",
+            wide: t.name() == "wstring",
             length: t.attr("length").and_then(|l| l.trim().parse().ok()),
             span,
         }),
@@ -156,7 +156,7 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 .and_then(|r| r.attr("upper"))
                 .and_then(|v| v.trim().parse().ok());
             let base = t.child("baseType").and_then(|b| b.children.first());
-            let base = base.and_then(|b| elementary(b.name).map(|n| Ident::new(n, ctx.tag(b))));
+            let base = base.and_then(|b| elementary(b.name()).map(|n| Ident::new(n, ctx.tag(b))));
             match (lo, hi, base) {
                 (Some(lower), Some(upper), Some(base)) => Some(TypeRef::Subrange {
                     base,
@@ -178,8 +178,8 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
             // `<pointer><baseType>X</baseType></pointer>` read as `X` (see `Ctx::references`)
             let base = t.child("baseType").and_then(|b| b.children.first());
             let written = match base {
-                Some(b) if b.name == "derived" => b.attr("name").unwrap_or("").trim().to_string(),
-                Some(b) => b.name.to_ascii_uppercase(),
+                Some(b) if b.name() == "derived" => b.attr("name").unwrap_or("").trim().to_string(),
+                Some(b) => b.name().to_ascii_uppercase(),
                 None => String::new(),
             };
             if let Some(refs) = ctx.references.as_mut() {
@@ -216,7 +216,7 @@ pub fn initial_value(ctx: &mut Ctx, holder: &Element, ty: Option<&TypeRef>) -> O
 }
 
 fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Initializer> {
-    match v.name {
+    match v.name() {
         "simpleValue" => {
             let text = v.attr("value").unwrap_or_default();
             let span = ctx.attr_span(v, "value");
@@ -388,7 +388,7 @@ pub fn collect_constants(
     let mut stack = vec![scope];
     while let Some(e) = stack.pop() {
         for c in e.children.iter().rev() {
-            let is_list = c.name.ends_with("Vars") || c.name == "varList";
+            let is_list = c.name().ends_with("Vars") || c.name() == "varList";
             if is_list
                 && c.attr("constant")
                     .is_some_and(|v| v.trim() == "true" || v.trim() == "1")
@@ -423,7 +423,7 @@ pub fn collect_constants(
                     // (`mixedattrsvarlist`)
                     stack.push(c);
                 }
-            } else if deep && c.name != "pou" {
+            } else if deep && c.name() != "pou" {
                 // a POU's own constants are local to it
                 stack.push(c);
             }
@@ -513,7 +513,7 @@ pub fn data_type(ctx: &mut Ctx, d: &Element) -> Option<TypeDecl> {
     let init = d
         .child("initialValue")
         .and_then(|i| initial_value(ctx, i, None));
-    let def = match base.name {
+    let def = match base.name() {
         "struct" => TypeDef::Struct {
             fields: base
                 .children_named("variable")

@@ -33,10 +33,10 @@ pub fn embedded_text(e: &Element) -> EmbeddedText {
     let Some(h) = holder(e) else {
         return EmbeddedText {
             text: String::new(),
-            base: e.tag_end,
+            base: e.tag_end(),
         };
     };
-    let base = h.segments().first().map(|s| s.start).unwrap_or(h.tag_end);
+    let base = h.segments().first().map(|s| s.start).unwrap_or(h.tag_end());
     let mut text = String::new();
     let mut in_string: Option<char> = None;
     for seg in h.segments() {

@@ -54,11 +54,11 @@ pub fn context_at(xml_text: &str, offset: usize) -> Option<XmlContext> {
 }
 
 fn range(e: &Element) -> (usize, usize) {
-    (e.tag_start, e.end.max(e.tag_end))
+    (e.tag_start(), e.end().max(e.tag_end()))
 }
 
 fn collect_pous<'a, 'b>(e: &'b Element<'a>, out: &mut Vec<&'b Element<'a>>) {
-    if e.name == "pou" {
+    if e.name() == "pou" {
         out.push(e);
         return;
     }
@@ -88,13 +88,13 @@ fn add_pou(xml_text: &str, pou: &Element, entries: &mut Vec<(usize, usize, XmlCo
     let Some(lang) = pou.child("body").and_then(|b| {
         b.children
             .iter()
-            .find(|c| !matches!(c.name, "documentation" | "addData"))
+            .find(|c| !matches!(c.name(), "documentation" | "addData"))
     }) else {
         return;
     };
     // Networks as the lowering numbers them (LD/FBD only).
     let mut network_of: HashMap<String, usize> = HashMap::new();
-    if matches!(lang.name, "LD" | "FBD") {
+    if matches!(lang.name(), "LD" | "FBD") {
         let mut scratch = Diagnostics::new();
         let mut ctx = Ctx::new(FileId(0), xml_text, &mut scratch);
         let g = graph::read(&mut ctx, lang, &name);

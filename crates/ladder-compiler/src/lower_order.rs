@@ -123,7 +123,10 @@ mod tests {
         let mut diags = Diagnostics::default();
         let mut ctx = Ctx::new(FileId(0), text, &mut diags);
         let mut checked = 0;
-        for body in root.walk().filter(|e| e.name == "LD" || e.name == "FBD") {
+        for body in root
+            .walk()
+            .filter(|e| e.name() == "LD" || e.name() == "FBD")
+        {
             let g = graph::read(&mut ctx, body, "P");
             for net in &g.networks {
                 // every second node of a network "names" the first node's instance: implicit pairs too

@@ -81,14 +81,14 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     let mut unit = CompilationUnit::default();
     // a file of one POU (RuSTy's and Bachmann's `.cfc`, tools that export one object per file): the
     // project of that POU
-    let single_pou = root.name == "pou" && root.attr("xmlns").is_some_and(is_plcopen_namespace);
-    if root.name != "project" && !single_pou {
+    let single_pou = root.name() == "pou" && root.attr("xmlns").is_some_and(is_plcopen_namespace);
+    if root.name() != "project" && !single_pou {
         ctx.error(
             code::E3002,
             ctx.tag(root),
             format!(
                 "root element is <{}>, expected a PLCopen <project>",
-                root.name
+                root.name()
             ),
         );
         return unit;
@@ -378,7 +378,7 @@ fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<Hash
             // One upper-case buffer reused for every word: no allocation per word looked up.
             let mut key = String::new();
             for d in body.walk() {
-                if d.name == "block" {
+                if d.name() == "block" {
                     if let Some(t) = d.attr("typeName") {
                         out.push(t.trim().to_ascii_uppercase());
                     }
@@ -470,8 +470,8 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
     let mut stack = vec![root];
     while let Some(e) = stack.pop() {
         for c in e.children {
-            if c.name == "addData" {
-                let mut ignored = c.children.iter().any(|d| d.name != "data");
+            if c.name() == "addData" {
+                let mut ignored = c.children.iter().any(|d| d.name() != "data");
                 for d in c.children_named("data") {
                     let name = d.attr("name").unwrap_or("");
                     if d.child("textDeclaration").is_some() {
@@ -480,34 +480,34 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
                         stack.push(d);
                     } else {
                         ignored = true;
-                        ignored_name.push((c.tag_start, name));
+                        ignored_name.push((c.tag_start(), name));
                     }
                 }
                 if ignored || c.children.is_empty() {
                     found.push(c);
                 }
-            } else if c.name == "vendorElement" {
+            } else if c.name() == "vendorElement" {
                 found.push(c);
             } else {
                 stack.push(c);
             }
         }
     }
-    found.sort_by_key(|e| e.tag_start);
+    found.sort_by_key(|e| e.tag_start());
     if let Some(first) = found.first() {
         let mut d = Diagnostic::warning(
             code::W3002,
             format!(
                 "vendor data ignored ({} <{}> block{})",
                 found.len(),
-                first.name,
+                first.name(),
                 if found.len() == 1 { "" } else { "s" }
             ),
         )
         .at(ctx.tag(first))
         .with_primary_label("tool-specific data, not part of the program");
         ignored_name.sort_by_key(|(at, _)| *at);
-        if let Some((_, name)) = ignored_name.iter().find(|(at, _)| *at == first.tag_start) {
+        if let Some((_, name)) = ignored_name.iter().find(|(at, _)| *at == first.tag_start()) {
             d = d.with_note(format!("first block: {name}"));
         }
         ctx.report(d);
@@ -618,11 +618,11 @@ fn read_interface(
     var_blocks: &mut Vec<VarBlock>,
 ) {
     for list in iface.children {
-        if list.name == "returnType" {
+        if list.name() == "returnType" {
             *return_type = decls::type_ref(ctx, list);
-        } else if let Some(k) = decls::var_kind(list.name) {
+        } else if let Some(k) = decls::var_kind(list.name()) {
             var_blocks.push(decls::var_block(ctx, list, k));
-        } else if list.name == "accessVars" {
+        } else if list.name() == "accessVars" {
             ctx.error(
                 code::E3012,
                 ctx.tag(list),
@@ -991,8 +991,8 @@ fn access_variable(ctx: &mut Ctx, v: &Element) -> Option<il_frontend::ast::Acces
     }
     let ty = v.child("type").and_then(|t| t.children.first());
     let type_name = match ty {
-        Some(t) if t.name == "derived" => t.attr("name").unwrap_or("").trim().to_string(),
-        Some(t) => t.name.to_ascii_uppercase(),
+        Some(t) if t.name() == "derived" => t.attr("name").unwrap_or("").trim().to_string(),
+        Some(t) => t.name().to_ascii_uppercase(),
         None => String::new(),
     };
     if !values::is_ident(&type_name) {

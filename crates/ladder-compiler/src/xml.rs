@@ -78,24 +78,30 @@ pub struct TextSeg<'a> {
 
 /// One XML element: name, attributes, children and text, with byte positions in the document.
 ///
-/// 80 bytes: the text segments and the decoded attributes, which most elements of a graphical body do
-/// not have, sit behind one pointer ([`Element::segments`]; a 10,000-rung project has 685,000 elements).
+/// 56 bytes (a 10,000-rung project keeps 455,000 of them, and they are the largest share of the pages
+/// its build touches): the text segments and the decoded attributes, which most elements of a graphical
+/// body do not have, sit behind one pointer ([`Element::segments`]); the positions are `u32` (documents
+/// of 4 GiB or more are refused by [`parse`], as [`diagnostics::Span`] holds `u32` offsets too); the
+/// local name is a range of the raw start tag ([`Element::name`]).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Element<'a> {
-    /// Local name (`xhtml:p` -> `p`), borrowed from the text.
-    pub name: &'a str,
-    /// The raw start tag between `<` and `>`: attributes are read from it on demand.
+    /// The raw start tag between `<` and `>` (the `/` of an empty tag dropped): the name and the
+    /// attributes are read from it.
     pub raw_tag: &'a str,
     /// The child elements, in document order (in the [`Arena`]).
     pub children: &'a [Element<'a>],
     /// The text segments and decoded attributes, when the element has any (in the [`Arena`]).
     pub(crate) extra: Option<&'a Extra<'a>>,
-    /// Byte range of the start tag (`<contact ...>`).
-    pub tag_start: usize,
+    /// Byte offset of the start tag's `<`.
+    pub(crate) tag_start: u32,
     /// Byte offset just after the start tag's `>`.
-    pub tag_end: usize,
+    pub(crate) tag_end: u32,
     /// Byte offset just after the end tag (or the empty tag).
-    pub end: usize,
+    pub(crate) end: u32,
+    /// The local name's byte range in `raw_tag` (`0..0` for a name that does not fit: longer than
+    /// 65,535 bytes or starting past that, which no schema element does).
+    pub(crate) name_at: u16,
+    pub(crate) name_end: u16,
 }
 
 /// What few elements have: direct text, attributes with entities.
@@ -117,6 +123,48 @@ pub struct XmlError {
 }
 
 impl<'a> Element<'a> {
+    /// An element with start tag `raw_tag` (between `<` and `>`, without the `/` of an empty tag) at
+    /// byte `tag_start`, the tag ending before `tag_end`, the element before `end`; no children, no text.
+    /// Positions past `u32::MAX` are cut to it (a document that large is refused by [`parse`]).
+    pub fn new(raw_tag: &'a str, tag_start: usize, tag_end: usize, end: usize) -> Self {
+        let (at, name_end) = tag_name_range(raw_tag);
+        let (name_at, name_end) = match (u16::try_from(at), u16::try_from(name_end)) {
+            (Ok(a), Ok(e)) => (a, e),
+            _ => (0, 0),
+        };
+        Element {
+            raw_tag,
+            children: &[],
+            extra: None,
+            tag_start: offset(tag_start),
+            tag_end: offset(tag_end),
+            end: offset(end),
+            name_at,
+            name_end,
+        }
+    }
+    /// The local name (`xhtml:p` -> `p`), borrowed from the text.
+    #[inline]
+    pub fn name(&self) -> &'a str {
+        self.raw_tag
+            .get(self.name_at as usize..self.name_end as usize)
+            .unwrap_or("")
+    }
+    /// Byte offset of the start tag's `<`.
+    #[inline]
+    pub fn tag_start(&self) -> usize {
+        self.tag_start as usize
+    }
+    /// Byte offset just after the start tag's `>`.
+    #[inline]
+    pub fn tag_end(&self) -> usize {
+        self.tag_end as usize
+    }
+    /// Byte offset just after the end tag (or the empty tag).
+    #[inline]
+    pub fn end(&self) -> usize {
+        self.end as usize
+    }
     /// An element with the given text segments and no attribute holding an entity (for bodies built in
     /// memory rather than read from a document); the other fields as given in `el`.
     pub fn with_segments(el: Element<'a>, text: &'a [TextSeg<'a>], arena: &'a Arena) -> Self {
@@ -183,7 +231,7 @@ impl<'a> Element<'a> {
                 continue;
             }
             let value = &self.raw_tag[s..e];
-            let range = (self.tag_start + 1 + s, self.tag_start + 1 + e);
+            let range = (self.tag_start() + 1 + s, self.tag_start() + 1 + e);
             out[k] = if has_amp(value) {
                 self.decoded_attrs()
                     .iter()
@@ -202,7 +250,7 @@ impl<'a> Element<'a> {
     /// [`Element::attr`] and [`Element::attr_range`] of one attribute, found in one pass.
     pub fn attr_and_range(&self, name: &str) -> Option<(&str, (usize, usize))> {
         let (_, s, e) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
-        let range = (self.tag_start + 1 + s, self.tag_start + 1 + e);
+        let range = (self.tag_start() + 1 + s, self.tag_start() + 1 + e);
         let value = &self.raw_tag[s..e];
         if !has_amp(value) {
             return Some((value, range));
@@ -215,18 +263,18 @@ impl<'a> Element<'a> {
     /// The byte range of an attribute's raw value in the document.
     pub fn attr_range(&self, name: &str) -> Option<(usize, usize)> {
         let (_, start, end) = scan_attrs(self.raw_tag).find(|(n, _, _)| *n == name)?;
-        Some((self.tag_start + 1 + start, self.tag_start + 1 + end))
+        Some((self.tag_start() + 1 + start, self.tag_start() + 1 + end))
     }
     /// The first direct child with local name `name`.
     pub fn child(&self, name: &str) -> Option<&Element<'a>> {
-        self.children.iter().find(|c| c.name == name)
+        self.children.iter().find(|c| c.name() == name)
     }
     /// The direct children with local name `name`, in document order.
     pub fn children_named<'s>(
         &'s self,
         name: &'s str,
     ) -> impl Iterator<Item = &'s Element<'a>> + 's {
-        self.children.iter().filter(move |c| c.name == name)
+        self.children.iter().filter(move |c| c.name() == name)
     }
     /// The decoded direct text, all segments joined.
     pub fn text(&self) -> String {
@@ -282,9 +330,9 @@ fn is_blank(text: &str) -> bool {
     }
 }
 
-/// The element name at the start of a raw tag, its local part (`contact localId="1"` -> `contact`,
+/// The byte range in a raw tag of the element name's local part (`contact localId="1"` -> `contact`,
 /// `xhtml:p` -> `p`).
-fn tag_name(raw: &str) -> &str {
+fn tag_name_range(raw: &str) -> (usize, usize) {
     // One forward pass: the name ends at whitespace or `/`, its local part starts after its last `:`.
     let b = raw.as_bytes();
     let (mut start, mut end) = (0, 0);
@@ -294,7 +342,13 @@ fn tag_name(raw: &str) -> &str {
         }
         end += 1;
     }
-    &raw[start..end]
+    (start, end)
+}
+
+/// A byte offset as an element stores it ([`parse`] refuses documents of 4 GiB or more, so every
+/// offset of a parsed document fits).
+fn offset(pos: usize) -> u32 {
+    u32::try_from(pos).unwrap_or(u32::MAX)
 }
 
 /// Decodes the five predefined entities and character references; `None` for anything else.
@@ -493,7 +547,33 @@ pub const MAX_DEPTH: usize = 256;
 
 /// Parses the document into `arena`; returns the root element (if any start tag was read) and the first
 /// error.
+///
+/// A document of [`MAX_LEN`] bytes or more is not read: no element, and an error at position 0 (element
+/// positions are `u32`, as are [`diagnostics::Span`]'s).
 pub fn parse<'a>(xml: &'a str, arena: &'a Arena) -> (Option<Element<'a>>, Option<XmlError>) {
+    parse_up_to(xml, arena, MAX_LEN)
+}
+
+/// The largest document [`parse`] reads is one byte shorter: 4 GiB.
+pub const MAX_LEN: usize = u32::MAX as usize;
+
+/// [`parse`], refusing documents of `max_len` bytes or more.
+fn parse_up_to<'a>(
+    xml: &'a str,
+    arena: &'a Arena,
+    max_len: usize,
+) -> (Option<Element<'a>>, Option<XmlError>) {
+    if xml.len() >= max_len {
+        let err = XmlError {
+            message: format!(
+                "the document is {} bytes long; XML files are read up to {} bytes",
+                xml.len(),
+                max_len - 1
+            ),
+            pos: 0,
+        };
+        return (None, Some(err));
+    }
     let base = if xml.starts_with('\u{feff}') { 3 } else { 0 };
     let body = &xml[base..];
     if let Some(root) = parse_plain(body, base, arena) {
@@ -523,13 +603,8 @@ fn plain_element<'a>(
     extra: Option<&'a Extra<'a>>,
 ) -> Element<'a> {
     Element {
-        name: tag_name(raw),
-        raw_tag: raw,
-        children: &[],
         extra,
-        tag_start: base + pos,
-        tag_end: base + after,
-        end: base + after,
+        ..Element::new(raw, base + pos, base + after, base + after)
     }
 }
 
@@ -764,7 +839,10 @@ fn parse_quick_xml<'a>(
             _ => {}
         }
     }
-    let unclosed = tree.stack.last().map(|e| (e.name.to_string(), e.tag_start));
+    let unclosed = tree
+        .stack
+        .last()
+        .map(|e| (e.name().to_string(), e.tag_start()));
     let root = tree.finish();
     let err = unclosed.map(|(name, pos)| XmlError {
         message: format!("element <{name}> is never closed"),
@@ -777,10 +855,10 @@ fn parse_quick_xml<'a>(
 /// `<connectionPointOut>` (no children, once its own `<relPosition>` is left out; no text; no
 /// entity-decoded attribute). Nothing reads them: a wire names its source by `refLocalId`, where a
 /// pin is drawn does not matter, and neither has a `localId` in the schema. They are 28 % of the
-/// elements of a typical LD body (175,000 of the 630,000 of the generated 10,000 rungs): at 80 bytes
-/// each, 14 MB of fresh pages. The document is still checked in full; the root is always kept.
+/// elements of a typical LD body (175,000 of the 630,000 of the generated 10,000 rungs): at 56 bytes
+/// each, 9.8 MB of fresh pages. The document is still checked in full; the root is always kept.
 fn unread(el: &Element) -> bool {
-    matches!(el.name, "relPosition" | "connectionPointOut")
+    matches!(el.name(), "relPosition" | "connectionPointOut")
         && el.children.is_empty()
         && el.extra.is_none()
 }
@@ -874,7 +952,7 @@ impl<'a> Builder<'a> {
                 self.done.truncate(start);
             }
             if let Some(end) = end {
-                el.end = end;
+                el.end = offset(end);
             }
             self.attach(el);
         }
@@ -905,14 +983,56 @@ mod tests {
     use super::*;
 
     #[test]
+    fn documents_at_the_length_limit_are_refused_without_a_tree() {
+        let xml = "<a><b x=\"1\"/></a>";
+        let arena = Arena::new();
+        let (root, err) = parse_up_to(xml, &arena, xml.len());
+        assert!(root.is_none());
+        let err = err.expect("refused");
+        assert_eq!(err.pos, 0);
+        let limit = format!("read up to {} bytes", xml.len() - 1);
+        assert!(err.message.contains(&limit), "{}", err.message);
+        let (root, err) = parse_up_to(xml, &arena, xml.len() + 1);
+        assert!(err.is_none());
+        let a = root.unwrap();
+        assert_eq!((a.tag_start(), a.tag_end(), a.end()), (0, 3, xml.len()));
+        assert_eq!(a.children[0].name(), "b");
+        assert_eq!(a.children[0].attr("x"), Some("1"));
+    }
+
+    #[test]
+    fn a_name_too_long_for_the_element_reads_as_empty_and_its_attributes_still_read() {
+        // 70,000 bytes of name: past the `u16` range of `Element::name`; both readers agree.
+        let long = "n".repeat(70_000);
+        for xml in [
+            format!("<r><{long} a=\"1\"/></r>"),
+            format!("<r><{long} a=\"1\"/><x>&lt;</x></r>"),
+        ] {
+            let arena = Arena::new();
+            let (root, err) = parse(&xml, &arena);
+            assert!(err.is_none());
+            let r = root.unwrap();
+            assert_eq!(r.name(), "r");
+            assert_eq!(r.children[0].name(), "");
+            assert_eq!(r.children[0].attr("a"), Some("1"));
+            assert_eq!(r.children[0].end(), 3 + long.len() + 9);
+        }
+        // A name that ends within range but is prefixed past it: the local part after a long prefix.
+        let xml = format!("<r><{long}:p/></r>");
+        let arena = Arena::new();
+        let (root, _) = parse(&xml, &arena);
+        assert_eq!(root.unwrap().children[0].name(), "");
+    }
+
+    #[test]
     fn keeps_positions_of_tags_attributes_cdata_and_entities() {
         let xml = "\u{feff}<a x=\"1&amp;2\"><b:p>LD x&lt;<![CDATA[ST y]]></b:p></a>";
         let arena = Arena::new();
         let (root, err) = parse(xml, &arena);
         assert!(err.is_none());
         let a = root.unwrap();
-        assert_eq!(a.name, "a");
-        assert_eq!(a.tag_start, 3);
+        assert_eq!(a.name(), "a");
+        assert_eq!(a.tag_start(), 3);
         assert_eq!(a.attr("x"), Some("1&2"));
         let (s, e) = a.attr_range("x").unwrap();
         assert_eq!(&xml[s..e], "1&amp;2");
@@ -995,8 +1115,8 @@ mod tests {
 
     #[test]
     fn elements_stay_small() {
-        // 685,000 of them for 10,000 rungs: every 8 bytes are 5.5 MB at the front end's peak.
-        assert_eq!(std::mem::size_of::<Element>(), 80);
+        // 455,000 of them kept for 10,000 rungs: every 8 bytes are 3.6 MB of fresh pages.
+        assert_eq!(std::mem::size_of::<Element>(), 56);
         // Text and entity-holding attributes hang off one pointer, set only where they exist.
         let arena = Arena::new();
         let (root, _) = parse("<a x=\"1\"><b>t</b><c y=\"&amp;\"/></a>", &arena);
@@ -1012,9 +1132,9 @@ mod tests {
         let arena = Arena::new();
         let (root, _) = parse("<r><a><b/><c><d/></c></a><e/></r>", &arena);
         let r = root.unwrap();
-        let names: Vec<_> = r.walk().map(|e| e.name).collect();
+        let names: Vec<_> = r.walk().map(|e| e.name()).collect();
         assert_eq!(names, ["a", "b", "c", "d", "e"]);
-        let listed: Vec<_> = r.descendants().iter().map(|e| e.name).collect();
+        let listed: Vec<_> = r.descendants().iter().map(|e| e.name()).collect();
         assert_eq!(listed, names);
     }
 
@@ -1032,7 +1152,7 @@ mod tests {
             let (root, err) = parse(&doc, &arena);
             assert!(err.is_none(), "{tail}");
             let r = root.unwrap();
-            let names: Vec<_> = r.walk().map(|e| e.name).collect();
+            let names: Vec<_> = r.walk().map(|e| e.name()).collect();
             let mut want = vec![
                 "c",
                 "connection",
@@ -1048,14 +1168,14 @@ mod tests {
             // Positions of the kept elements still count the dropped ones.
             let conn = r.children[0].children[0];
             assert_eq!(
-                &doc[conn.tag_start..conn.end],
+                &doc[conn.tag_start()..conn.end()],
                 "<connection refLocalId=\"1\"/>"
             );
         }
         // The root is kept whatever it is.
         let arena = Arena::new();
         let (root, _) = parse("<relPosition/>", &arena);
-        assert_eq!(root.unwrap().name, "relPosition");
+        assert_eq!(root.unwrap().name(), "relPosition");
     }
 
     #[test]

@@ -16,7 +16,7 @@ use il_frontend::ast::{
     Accessor, AddressSize, Literal, LiteralKind, Operand, PouKind, VarKind, VarRef,
 };
 use il_frontend::sema::{
-    with_upper, Elementary, FbType, GlobalRef, Pou, PouId, Type, UserTypeDef, Variable,
+    with_upper, Elementary, FbType, GlobalRef, NameRef, Pou, PouId, Type, UserTypeDef, Variable,
 };
 use std::collections::HashMap;
 
@@ -213,6 +213,23 @@ impl Gen<'_> {
         }
     }
 
+    /// The position in `pou.vars` of the variable `name` denotes in the POU's body, `None` when it is
+    /// not one of the POU's variables. Sema's resolution of that very name (`Model::names`, at the
+    /// name's span) is taken when it is a variable of that name: read from a cursor, as the body is
+    /// generated in the order sema resolved it, that costs no hash lookup (the POU's name index,
+    /// `Pou::var_position`, misses the cache once per operand on a large POU). Anything else (a name
+    /// sema did not record, a span shared by lowered code, another POU's variable) is looked up.
+    fn own_var(&mut self, pou: &Pou, name: &il_frontend::ast::Ident) -> Option<usize> {
+        if let Some((at, &NameRef::Var(i))) = self.model.names.get_near(name.span, self.name_cursor)
+        {
+            self.name_cursor = at + 1;
+            if pou.vars.get(i).is_some_and(|v| v.is(&name.name)) {
+                return Some(i);
+            }
+        }
+        pou.var_position(&name.name)
+    }
+
     /// Resolves the base name of a variable reference: `None` when no such name is visible,
     /// `Some(None)` when it is but its place could not be computed (a diagnostic was reported).
     fn base_place(
@@ -221,7 +238,7 @@ impl Gen<'_> {
         name: &il_frontend::ast::Ident,
     ) -> Option<Option<Place>> {
         if let Some((pou, _)) = scope.pou {
-            if let Some(i) = pou.var_position(&name.name) {
+            if let Some(i) = self.own_var(pou, name) {
                 let v = &pou.vars[i];
                 if v.kind == VarKind::External {
                     if let Some(&g) = scope.externals.get(&i) {

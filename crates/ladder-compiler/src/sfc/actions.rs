@@ -209,7 +209,7 @@ pub fn collect<'e, 'a>(
                 let Some(lang) = act.child("body").and_then(|b| {
                     b.children
                         .iter()
-                        .find(|c| !matches!(c.name, "documentation" | "addData"))
+                        .find(|c| !matches!(c.name(), "documentation" | "addData"))
                 }) else {
                     report(
                         ctx,
@@ -223,7 +223,7 @@ pub fn collect<'e, 'a>(
                 };
                 // an action whose body is a chart of its own (CODESYS) is lowered once for the
                 // POU (`crate::body`), its state the POU's: the chart calls it (`CAL Act`)
-                let target = if lang.name == "SFC" {
+                let target = if lang.name() == "SFC" {
                     Target::Call(il::var_ref(n, nspan))
                 } else {
                     Target::Body(lang)
@@ -275,7 +275,7 @@ pub fn collect<'e, 'a>(
         } else if let Some(lang) = a.el.child("inline").and_then(|i| {
             i.children
                 .iter()
-                .find(|c| !matches!(c.name, "documentation" | "addData"))
+                .find(|c| !matches!(c.name(), "documentation" | "addData"))
         }) {
             (
                 format!("b{}_{}", super::sanitize(&a.block_id), a.index),

@@ -223,7 +223,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
     let mut network_elements = Vec::new();
     let mut all_ids: HashSet<String> = HashSet::new();
     for e in sfc.children.iter() {
-        let kind = match e.name {
+        let kind = match e.name() {
             "step" => NodeKind::Step,
             "macroStep" => NodeKind::Macro,
             "transition" => NodeKind::Transition,
@@ -250,7 +250,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                 span,
                 pou,
                 None,
-                format!("<{}> without a localId", e.name),
+                format!("<{}> without a localId", e.name()),
             );
             continue;
         };
@@ -343,7 +343,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
                     let what = if all_ids.contains(ref_id) {
                         format!(
                             "<{}> is connected to localId {ref_id}, which is not an SFC element",
-                            n.el.name
+                            n.el.name()
                         )
                     } else {
                         format!("connection to localId {ref_id} which does not exist")
@@ -696,7 +696,7 @@ fn pre_steps(
                         ctx.tag(n.el),
                         pou,
                         Some(&n.id),
-                        format!("<{}> has no input connection", n.el.name),
+                        format!("<{}> has no input connection", n.el.name()),
                     );
                     ok = false;
                 } else {
@@ -714,7 +714,7 @@ fn pre_steps(
                     format!(
                         "<{}> cannot precede a transition (a step, selection divergence or simultaneous \
                          convergence must)",
-                        n.el.name
+                        n.el.name()
                     ),
                 );
                 ok = false;
@@ -840,7 +840,7 @@ fn post_steps(
                     format!(
                         "<{}> cannot follow a transition (a step, jump, selection convergence or \
                          simultaneous divergence must)",
-                        n.el.name
+                        n.el.name()
                     ),
                 );
                 ok = false;
@@ -866,7 +866,7 @@ fn condition<'e, 'a>(
             let lang = i
                 .children
                 .iter()
-                .find(|e| !matches!(e.name, "documentation" | "addData"))?;
+                .find(|e| !matches!(e.name(), "documentation" | "addData"))?;
             return Some(CondSource::Inline(
                 lang,
                 i.attr("name").unwrap_or_default().trim(),

@@ -48,17 +48,17 @@ pub fn read(ctx: &Ctx, el: &Element) -> Vec<Flag> {
                 f.attr(a)
                     .is_some_and(|v| v.trim().eq_ignore_ascii_case("true"))
             };
-            if !on("Use") || !crate::values::is_ident(f.name) {
+            if !on("Use") || !crate::values::is_ident(f.name()) {
                 continue;
             }
             let name = if f
-                .name
+                .name()
                 .get(..3)
                 .is_some_and(|p| p.eq_ignore_ascii_case("SFC"))
             {
-                f.name.to_string()
+                f.name().to_string()
             } else {
-                format!("SFC{}", f.name)
+                format!("SFC{}", f.name())
             };
             out.push(Flag {
                 name,

@@ -201,7 +201,7 @@ pub fn lower_chart<'e, 'a>(
                     let lang = tr.child("body").and_then(|b| {
                         b.children
                             .iter()
-                            .find(|c| !matches!(c.name, "documentation" | "addData"))
+                            .find(|c| !matches!(c.name(), "documentation" | "addData"))
                     });
                     let Some(lang) = lang else {
                         report(

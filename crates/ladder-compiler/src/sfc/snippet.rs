@@ -81,7 +81,7 @@ impl<'i> Snippets<'i> {
         };
         // IL leaves a condition in the current result; LD/FBD write the transition's name.
         let mut delivered = Delivered::CurrentResult;
-        let mut stmts = match lang.name {
+        let mut stmts = match lang.name() {
             "IL" => crate::il_body::parse(ctx, lang, self.pou),
             "ST" => {
                 let (part, name) = match purpose {
@@ -128,7 +128,7 @@ impl<'i> Snippets<'i> {
                     format!(
                         "{owner}: an {} condition needs a name, written by its coil, output variable \
                          or assignment",
-                        lang.name
+                        lang.name()
                     ),
                 );
                 return None;

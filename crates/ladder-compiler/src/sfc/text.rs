@@ -75,14 +75,7 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
 
 /// An element holding `src[r]` as its text (an `<ST>` or `<IL>` body).
 fn text_element<'a>(arena: &'a Arena, name: &'a str, src: &'a str, r: Range<usize>) -> Element<'a> {
-    let el = Element {
-        name,
-        raw_tag: name,
-        tag_start: r.start,
-        tag_end: r.start,
-        end: r.end,
-        ..Default::default()
-    };
+    let el = Element::new(name, r.start, r.start, r.end);
     let text = arena.slice(vec![TextSeg {
         text: src.get(r.clone()).unwrap_or(""),
         start: r.start,
@@ -92,15 +85,11 @@ fn text_element<'a>(arena: &'a Arena, name: &'a str, src: &'a str, r: Range<usiz
     Element::with_segments(el, text, arena)
 }
 
+/// An element of start tag `raw_tag` (whose name is `name`) over `at`.
 fn element<'a>(name: &'a str, raw_tag: &'a str, at: Range<usize>) -> Element<'a> {
-    Element {
-        name,
-        raw_tag,
-        tag_start: at.start,
-        tag_end: at.end,
-        end: at.end,
-        ..Default::default()
-    }
+    let el = Element::new(raw_tag, at.start, at.end, at.end);
+    debug_assert_eq!(el.name(), name);
+    el
 }
 
 /// Escapes an attribute value for a synthesized start tag.
