@@ -7,7 +7,9 @@
 //! S/R, AND/OR/XOR and their N and deferred `(` forms, ADD/SUB/MUL/DIV/MOD, the comparisons,
 //! JMP/JMPC/JMPCN, RET/RETC, CAL/CALC/CALCN with formal and informal arguments, S1/R1/CLK/IN/PT on
 //! instances), the standard blocks (TON, TOF, TP, CTU, CTD, CTUD, R_TRIG, F_TRIG, SR, RS) and
-//! functions (conversions, SEL, MUX, MAX, MIN, LIMIT, ABS, SQRT, SHL/SHR/ROL/ROR, NOT), on BOOL, SINT,
+//! functions (conversions, SEL, MUX, MAX, MIN, LIMIT, ABS, SQRT, SHL/SHR/ROL/ROR, NOT, extensible
+//! `ADD a, b` / `MUL a, b` / `AND a, b` ... with several inputs), loops made of a backward JMPC/JMPCN
+//! counted by the program's `lc`, on BOOL, SINT,
 //! INT, DINT, LINT, USINT, UINT, UDINT, BYTE, WORD, DWORD, REAL, LREAL, TIME, arrays and structures.
 //! Every program counts its scans (`tick`) and derives its inputs from the count, so edges, timers and
 //! counters fire.
@@ -18,7 +20,10 @@
 //! generated, every stored value is brought back into its variable's range (MOD, or MIN and MAX);
 //! divisors are non-zero literals, shift counts are below the width, MUX selectors are within the
 //! inputs, timers have a fixed PT > 0, counters are reset (loaded) before CV could pass PV (0), TIME
-//! values are only stored and compared, REAL literals are exact in REAL, jumps go forward only.
+//! values are only stored and compared, REAL literals are exact in REAL, a jump goes forward except the
+//! one closing a loop, which runs 1 to 4 passes of a counter (`lc`) nothing else writes; an extensible
+//! call's extra inputs are typed (`KNOWN` lint_compare_literal) and not on REAL (`KNOWN`
+//! real_intermediate_precision).
 
 use std::fmt::Write as _;
 
@@ -213,6 +218,8 @@ struct Scope {
     in_function: bool,
     /// FB or function: RET/RETC allowed
     may_return: bool,
+    /// a PROGRAM, with the loop counter `lc` (DINT) that no other statement writes
+    has_loop_counter: bool,
 }
 
 /// The generator's state for one project.
@@ -558,7 +565,8 @@ impl Gen {
 
     fn program(&mut self, i: usize) -> String {
         let mut sc = Scope::default();
-        let mut text = format!("PROGRAM prog{i}\n  VAR\n    tick : DINT;\n");
+        let mut text = format!("PROGRAM prog{i}\n  VAR\n    tick : DINT;\n    lc : DINT;\n");
+        sc.has_loop_counter = true;
         sc.operands.push(Operand {
             text: "tick".into(),
             ty: Dint,
@@ -634,7 +642,7 @@ impl Gen {
     fn statement(&mut self, sc: &Scope, depth: usize) -> String {
         let can_call = !sc.in_function && (!sc.std_fbs.is_empty() || !sc.user_fbs.is_empty());
         loop {
-            match self.rng.below(12) {
+            match self.rng.below(13) {
                 0..=4 => {
                     let targets: Vec<Operand> =
                         sc.operands.iter().filter(|o| o.writable).cloned().collect();
@@ -665,6 +673,20 @@ impl Gen {
                     }
                     s.push_str(&self.statements(sc, (1, 3), depth + 1));
                     let _ = writeln!(s, "{l}:");
+                    return s;
+                }
+                11 if depth == 0 && sc.has_loop_counter => {
+                    // a backward jump: a loop of 1 to 4 passes counted by `lc`
+                    let l = self.label();
+                    let n = self.rng.range(1, 4);
+                    let mut s = format!("  LD 0\n  ST lc\n{l}:\n");
+                    s.push_str(&self.statements(sc, (1, 2), depth + 1));
+                    let (test, jump) = if self.rng.chance(50) {
+                        ("LT", "JMPC")
+                    } else {
+                        ("GE", "JMPCN")
+                    };
+                    let _ = write!(s, "  LD lc\n  ADD 1\n  ST lc\n  {test} {n}\n  {jump} {l}\n");
                     return s;
                 }
                 8 if sc.may_return && self.rng.chance(30) => {
@@ -1051,6 +1073,13 @@ impl Gen {
                     let n = self.rng.range(0, w - 1);
                     (format!("  {f} {n}\n"), b)
                 }
+                2 if !self.in_parens => {
+                    // an extensible function with two more inputs
+                    let op = *self.rng.pick(&["AND", "OR", "XOR"]);
+                    let (o1, _) = self.typed_operand(sc, ty);
+                    let (o2, _) = self.typed_operand(sc, ty);
+                    (format!("  {op} {o1}, {o2}\n"), b)
+                }
                 _ => {
                     let op = *self.rng.pick(&["AND", "OR", "XOR", "ANDN", "ORN", "XORN"]);
                     let (o, _) = self.operand(sc, ty);
@@ -1064,6 +1093,18 @@ impl Gen {
             return None;
         }
         match k {
+            0..=2 if !self.in_parens && ty != Real && self.rng.chance(25) => {
+                // an extensible function with two more inputs (typed literals: an untyped one in a
+                // variadic 64-bit call is `KNOWN` lint_compare_literal)
+                let op = *self.rng.pick(&["ADD", "MUL"]);
+                let (o1, iv1) = self.typed_operand(sc, ty);
+                let (o2, iv2) = self.typed_operand(sc, ty);
+                let r = arith(op, arith(op, iv, iv1), iv2);
+                if !r.within(b) || !arith(op, iv, iv1).within(b) {
+                    return None;
+                }
+                Some((format!("  {op} {o1}, {o2}\n"), r))
+            }
             0..=2 => {
                 let op = *self.rng.pick(&["ADD", "SUB", "MUL"]);
                 let (o, oiv) = self.operand(sc, ty);
@@ -1298,5 +1339,26 @@ mod tests {
         assert_eq!(generate(7), generate(7));
         assert_ne!(generate(7), generate(8));
         assert!(generate(7).starts_with("(* matiec-diff: cycles="));
+    }
+
+    /// Forty seeds have a loop closed by a backward conditional jump and extensible calls with
+    /// several inputs, arithmetic and bitwise.
+    #[test]
+    fn loops_and_extensible_calls_are_generated() {
+        let all: String = (0..40).map(generate).collect();
+        assert!(all.contains("  ST lc\n"));
+        let backward = all.lines().any(|l| {
+            let l = l.trim();
+            (l.starts_with("JMPC ") || l.starts_with("JMPCN "))
+                && all.contains(&format!("  ST lc\n{}:", &l[l.find(' ').unwrap() + 1..]))
+        });
+        assert!(backward);
+        for op in ["ADD", "MUL", "AND", "XOR"] {
+            assert!(
+                all.lines()
+                    .any(|l| l.starts_with(&format!("  {op} ")) && l.contains(", ")),
+                "no extensible {op}"
+            );
+        }
     }
 }

@@ -1426,7 +1426,8 @@ fn generated_st_programs_run_in_ladderc_without_a_runtime_flag() {
 }
 
 /// The generated ST fixtures (`stgen_SEED.st`, compared with their recorded matiec traces on every run)
-/// are what st_gen gives for their seed, so a seed named in a report can be made again.
+/// are what st_gen gives for their seed, so a seed named in a report can be made again. (`stgen1_SEED.st`
+/// are the first generator's programs, before its typed statements; they stay as plain fixtures.)
 #[test]
 fn st_generated_fixtures_are_their_seeds_programs() {
     let dir = repo_root().join("tests/tests/fixtures/matiec_diff");
