@@ -32,6 +32,15 @@
 //! - CODESYS's short-circuit operators `AND_THEN`/`OR_ELSE` (not IEC 61131-3) were E0100 `expected
 //!   THEN` or E0104 plus E0106 (a cascade that did not name them): one E0322 per use, naming the
 //!   operator; the expression is still read, so nothing else is reported for it;
+//! - `TRUNC` (ANY_REAL to ANY_INT) was always DINT, so `i := TRUNC(r)` into an INT was E1006 and
+//!   OSCAT's `INT_TO_WORD(TRUNC(...))` E1012: its integer type is now its context's, as matiec types
+//!   it (edition 3's `TRUNC_INT`), DINT where the context names no integer type;
+//! - a `(*` comment that holds a `(*` without its own `*)` (code commented out above a closing
+//!   comment line, OSCAT's `FIB`; an ELSIF commented out around a comment, OpenPLC) never closed
+//!   with nested comments: E0102, although matiec (the compiler these projects were built with)
+//!   and IEC 61131-3 edition 2 end a comment at its first `*)`. Such a comment now ends there, with
+//!   warning W0015 at its opening and a label at that `*)` (a comment that nests and closes is
+//!   still read nested; one with no `*)` at all is still E0102);
 //! - a conversion given two inputs in ST (`BYTE_TO_STRING(IN, '%c')`, OSCAT) was reported as
 //!   "takes one input (the current result)" with an IL hint: the message counts inputs and the
 //!   hint names the ST and IL forms.
@@ -179,5 +188,66 @@ fn conversion_with_two_inputs_in_st_names_the_st_form() {
             "b2s.st:4:6: error[E1020]: BYTE_TO_STRING takes one input, 2 given (hint: write \
              BYTE_TO_STRING(value) in ST, or LD value then BYTE_TO_STRING with no operand in IL)"
         ]
+    );
+}
+
+/// `TRUNC` takes its integer type from its context: stored into an INT, given to `INT_TO_WORD`,
+/// multiplied into an INT, added into a DINT, into a LINT. Before: E1006 `cannot store DINT into
+/// INT` and E1012 `INT_TO_WORD converts from INT, not DINT`.
+#[test]
+fn trunc_takes_its_integer_type_from_its_context() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("trunc.st");
+    std::fs::write(
+        &f,
+        "PROGRAM main\nVAR r : REAL := 12.7; i : INT; w : WORD; k : INT; d : DINT; l : LINT; END_VAR\n\
+         i := TRUNC(r);\nw := INT_TO_WORD(TRUNC(r));\nk := TRUNC(-r) * 2;\n\
+         d := TRUNC(r) + 1;\nl := TRUNC(LREAL#1.0E12 + r);\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, stderr) = run_stimulated(
+        &f,
+        3,
+        "1,main.r,-3.9\n2,main.r,300.5\n",
+        "main.i,main.w,main.k,main.d,main.l",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.i,main.w,main.k,main.d,main.l\n\
+         0,0,12,12,-24,13,1000000000012\n\
+         1,10,-3,65533,6,-2,999999999996\n\
+         2,20,300,300,-600,301,1000000000300\n"
+    );
+}
+
+/// A comment that nesting leaves unclosed ends at its first `*)` with W0015, and the code after it
+/// is compiled, as matiec compiles it: FIB returns ten times the Fibonacci number. Before: E0102
+/// `comment or pragma is never closed`.
+#[test]
+fn a_comment_nesting_leaves_unclosed_ends_at_its_first_closing() {
+    let (trace, stderr) = run_traced(
+        &fixture("r10_commented_out_code.st"),
+        6,
+        "main.k,main.f",
+    );
+    assert_eq!(stderr.matches("warning[W0015]").count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("r10_commented_out_code.st:20:3: warning[W0015]: this comment holds a `(*` without its own `*)`"),
+        "{stderr}"
+    );
+    assert_eq!(
+        common::column(&trace, "main.f"),
+        vec![10.0, 10.0, 20.0, 30.0, 50.0, 80.0]
+    );
+    // nested comments that close stay nested (no warning), and one never closed is still E0102
+    let (code, lines) = check_text(
+        "nested.st",
+        "PROGRAM main\nVAR k : INT; END_VAR\n(* a (* b *) k := 5; *)\nk := k + 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!((code, lines), (Some(0), Vec::<String>::new()));
+    assert_eq!(
+        rejected_heads("open.st", "PROGRAM main\nVAR k : INT; END_VAR\nk := 1; (* a (* b\nEND_PROGRAM\n"),
+        vec!["open.st:3:9: error[E0102]: comment or pragma is never closed"]
     );
 }

@@ -792,8 +792,20 @@ pub fn parse_text(
             blank(&mut text, r.clone());
         }
     }
-    // ST: pragmas outside bodies are reported here (those inside ST bodies by the ST parser).
+    // ST: pragmas and comments read without nesting outside bodies are reported here (those inside
+    // ST bodies by the ST parser), and blanked for the declarations' reader
     for pr in &problems {
+        if let Problem::FlatComment(r) = pr {
+            if !st_bodies
+                .iter()
+                .any(|p| p.body.start <= r.start && r.end <= p.body.end)
+            {
+                diags.push(super::lexer::flat_comment_diagnostic(Span::new(
+                    file, r.start, r.end,
+                )));
+                blank(&mut text, r.clone());
+            }
+        }
         if let Problem::Pragma(r) = pr {
             if !st_bodies
                 .iter()

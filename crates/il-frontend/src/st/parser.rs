@@ -166,6 +166,12 @@ impl<'s, 'd> Parser<'s, 'd> {
                 self.diags.push(super::lexer::pragma_diagnostic(text, span));
                 return;
             }
+            Problem::FlatComment(r) => {
+                let whole = self.span(r.start, r.end);
+                self.diags
+                    .push(super::lexer::flat_comment_diagnostic(whole));
+                return;
+            }
             Problem::UnexpectedChar(r) => {
                 let c = self.src[r.clone()].chars().next().unwrap_or(' ');
                 (
