@@ -41,6 +41,9 @@
 //!   and IEC 61131-3 edition 2 end a comment at its first `*)`. Such a comment now ends there, with
 //!   warning W0015 at its opening and a label at that `*)` (a comment that nests and closes is
 //!   still read nested; one with no `*)` at all is still E0102);
+//! - a variable-length array `ARRAY [*, *] OF REAL` (edition 3, CODESYS; the kinematics library's
+//!   matrix blocks) was E0011 `unexpected *`, hint "expected an operand": one E0323 per `*`,
+//!   naming the construct, and nothing else for the declaration or its callers;
 //! - a conversion given two inputs in ST (`BYTE_TO_STRING(IN, '%c')`, OSCAT) was reported as
 //!   "takes one input (the current result)" with an IL hint: the message counts inputs and the
 //!   hint names the ST and IL forms.
@@ -249,5 +252,22 @@ fn a_comment_nesting_leaves_unclosed_ends_at_its_first_closing() {
     assert_eq!(
         rejected_heads("open.st", "PROGRAM main\nVAR k : INT; END_VAR\nk := 1; (* a (* b\nEND_PROGRAM\n"),
         vec!["open.st:3:9: error[E0102]: comment or pragma is never closed"]
+    );
+}
+
+/// `ARRAY [*, *] OF REAL` in a block's VAR_IN_OUT, and a caller passing a matrix: one E0323 at each
+/// `*`, nothing else. Before: E0011 `unexpected *` twice, naming no construct.
+#[test]
+fn a_variable_length_array_is_one_e0323_per_star() {
+    let src = "FUNCTION_BLOCK Inv\nVAR_IN_OUT\n  matSquare : ARRAY [*, *] OF REAL;\nEND_VAR\n\
+               VAR i : INT; END_VAR\n  i := i + 1;\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR inv : Inv; a : ARRAY [1..2, 1..2] OF REAL; END_VAR\n\
+               inv(matSquare := a);\nEND_PROGRAM\n";
+    assert_eq!(
+        rejected_heads("vla.st", src),
+        vec![
+            "vla.st:3:22: error[E0323]: variable-length array dimension `*` (IEC 61131-3 edition 3) is not supported",
+            "vla.st:3:25: error[E0323]: variable-length array dimension `*` (IEC 61131-3 edition 3) is not supported",
+        ]
     );
 }
