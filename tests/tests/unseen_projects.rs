@@ -666,7 +666,9 @@ END_PROGRAM
 ";
     let (trace2, stderr) = run("comment.st", st, "3", "SuperStavy.state,SuperStavy.iTech");
     assert!(
-        stderr.contains("comment.st:8:4: warning[W0015]: this comment holds a `(*` without its own `*)`"),
+        stderr.contains(
+            "comment.st:8:4: warning[W0015]: this comment holds a `(*` without its own `*)`"
+        ),
         "{stderr}"
     );
     assert_eq!(

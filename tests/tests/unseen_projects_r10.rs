@@ -141,10 +141,7 @@ fn own_function_named_like_an_edition2_function_stays_standard() {
 #[test]
 fn global_list_headed_by_a_pragma_is_read_as_st() {
     let (trace, stderr) = run_traced_files(
-        &[
-            &fixture("r10_gvl_pragma.txt"),
-            &fixture("r10_gvl_prg.txt"),
-        ],
+        &[&fixture("r10_gvl_pragma.txt"), &fixture("r10_gvl_prg.txt")],
         5,
         "count,PLC_PRG.pulses",
     );
@@ -229,11 +226,7 @@ fn trunc_takes_its_integer_type_from_its_context() {
 /// `comment or pragma is never closed`.
 #[test]
 fn a_comment_nesting_leaves_unclosed_ends_at_its_first_closing() {
-    let (trace, stderr) = run_traced(
-        &fixture("r10_commented_out_code.st"),
-        6,
-        "main.k,main.f",
-    );
+    let (trace, stderr) = run_traced(&fixture("r10_commented_out_code.st"), 6, "main.k,main.f");
     assert_eq!(stderr.matches("warning[W0015]").count(), 1, "{stderr}");
     assert!(
         stderr.contains("r10_commented_out_code.st:20:3: warning[W0015]: this comment holds a `(*` without its own `*)`"),
@@ -250,7 +243,10 @@ fn a_comment_nesting_leaves_unclosed_ends_at_its_first_closing() {
     );
     assert_eq!((code, lines), (Some(0), Vec::<String>::new()));
     assert_eq!(
-        rejected_heads("open.st", "PROGRAM main\nVAR k : INT; END_VAR\nk := 1; (* a (* b\nEND_PROGRAM\n"),
+        rejected_heads(
+            "open.st",
+            "PROGRAM main\nVAR k : INT; END_VAR\nk := 1; (* a (* b\nEND_PROGRAM\n"
+        ),
         vec!["open.st:3:9: error[E0102]: comment or pragma is never closed"]
     );
 }

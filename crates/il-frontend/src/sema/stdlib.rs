@@ -315,7 +315,10 @@ pub static FUNCTIONS: &[StdFunction] = &[
 /// written for edition 2 (OSCAT) declare functions of these names, and a call of the name calls the
 /// project's own FUNCTION.
 pub fn edition3_only(name: &str) -> bool {
-    matches!(name, "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK")
+    matches!(
+        name,
+        "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK"
+    )
 }
 
 /// Looks up a standard function (not a conversion) by name, case-insensitively. Also the edition 2

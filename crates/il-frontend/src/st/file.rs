@@ -613,11 +613,7 @@ pub fn detect(src: &str) -> Lang {
     }
     let pous = scan(src);
     if pous.iter().any(|p| p.lang == Lang::St)
-        || (pous.is_empty()
-            && lex(src)
-                .1
-                .iter()
-                .any(|p| matches!(p, Problem::Pragma(_))))
+        || (pous.is_empty() && lex(src).1.iter().any(|p| matches!(p, Problem::Pragma(_))))
     {
         Lang::St
     } else {

@@ -1106,7 +1106,10 @@ impl<'s, 'd> Parser<'s, 'd> {
                 let (plain, guard) = if op == BinaryOp::And {
                     ("AND", "nest the IFs (`IF a THEN IF b THEN ...`)")
                 } else {
-                    ("OR", "test it in an ELSIF (`IF a THEN ... ELSIF b THEN ...`)")
+                    (
+                        "OR",
+                        "test it in an ELSIF (`IF a THEN ... ELSIF b THEN ...`)",
+                    )
                 };
                 let span = self.span(t.range.start, t.range.end);
                 self.error_at(
