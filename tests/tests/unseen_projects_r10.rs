@@ -29,7 +29,7 @@
 //! whose globals the `plc.xml` lost (E1022, one per variable), 19 narrowing stores that matiec also
 //! rejects (E1006), an ST body of prose, `LTIME` as a variable name (E1031), `BYTE_TO_STRING` with
 //! two inputs (E1020), `%ML1025` beyond the default profile's `%M` area (E2001), pointers (E0305),
-//! `AND_THEN`/`OR_ELSE` (E0322), mixed formal and non-formal arguments (E3106), a generated export
+//! `AND_THEN`/`OR_ELSE` (E0324), mixed formal and non-formal arguments (E3106), a generated export
 //! with vendor KNX library types and type names holding initial values (E3009, E3013).
 //!
 //! **Side by side with matiec** (`scripts/matiec-diff.sh`): OSCAT's Logic Modules `generated_plc.st`
@@ -55,7 +55,7 @@
 //!   failed at the `{`: a declarations-only text with a pragma is ST (only the ST reader reads
 //!   pragmas);
 //! - CODESYS's short-circuit operators `AND_THEN`/`OR_ELSE` (not IEC 61131-3) were E0100 `expected
-//!   THEN` or E0104 plus E0106 (a cascade that did not name them): one E0322 per use, naming the
+//!   THEN` or E0104 plus E0106 (a cascade that did not name them): one E0324 per use, naming the
 //!   operator; the expression is still read, so nothing else is reported for it;
 //! - `TRUNC` (ANY_REAL to ANY_INT) was always DINT, so `i := TRUNC(r)` into an INT was E1006 and
 //!   OSCAT's `INT_TO_WORD(TRUNC(...))` E1012: its integer type is now its context's, as matiec types
@@ -182,7 +182,7 @@ fn global_list_headed_by_a_pragma_is_read_as_st() {
     );
 }
 
-/// `AND_THEN` in an IF condition and `OR_ELSE` in an assignment: one E0322 each, at the operator,
+/// `AND_THEN` in an IF condition and `OR_ELSE` in an assignment: one E0324 each, at the operator,
 /// and nothing else. Before: E0100 `expected THEN`, and E0104 with E0106 for the assignment.
 #[test]
 fn codesys_short_circuit_operators_are_one_e0322_each() {
@@ -192,8 +192,8 @@ fn codesys_short_circuit_operators_are_one_e0322_each() {
     assert_eq!(
         rejected_heads("guards.st", src),
         vec![
-            "guards.st:3:12: error[E0322]: `AND_THEN` is CODESYS's short-circuit AND, not IEC 61131-3: not supported",
-            "guards.st:6:14: error[E0322]: `OR_ELSE` is CODESYS's short-circuit OR, not IEC 61131-3: not supported",
+            "guards.st:3:12: error[E0324]: `AND_THEN` is CODESYS's short-circuit AND, not IEC 61131-3: not supported",
+            "guards.st:6:14: error[E0324]: `OR_ELSE` is CODESYS's short-circuit OR, not IEC 61131-3: not supported",
         ]
     );
 }

@@ -1081,7 +1081,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             Tok::Slash => (BinaryOp::Div, 6),
             Tok::Kw(Kw::Mod) => (BinaryOp::Mod, 6),
             // CODESYS's short-circuit operators: read as AND/OR so that the expression parses on,
-            // and reported (E0322) in `binary`
+            // and reported (E0324) in `binary`
             Tok::Ident if self.text(self.cur()).eq_ignore_ascii_case("AND_THEN") => {
                 (BinaryOp::And, 2)
             }
@@ -1113,7 +1113,7 @@ impl<'s, 'd> Parser<'s, 'd> {
                 };
                 let span = self.span(t.range.start, t.range.end);
                 self.error_at(
-                    code::E0322,
+                    code::E0324,
                     span,
                     format!("`{word}` is CODESYS's short-circuit {plain}, not IEC 61131-3: not supported"),
                     format!("where the right operand must not be evaluated, {guard}; elsewhere write {plain}"),
