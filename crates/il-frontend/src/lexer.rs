@@ -198,6 +198,13 @@ pub(crate) fn comment_rest(rest: &str) -> (usize, CommentEnd) {
     nested_comment(rest.as_bytes(), b'(', b')')
 }
 
+/// The length of a `(* ... *)` comment's rest after its opening when it is read without nesting (it
+/// ends at the first `*)`, as IEC 61131-3 edition 2 and matiec read comments), or `None` when no `*)`
+/// follows. The ST lexer falls back to it for a comment that nesting leaves unclosed.
+pub(crate) fn flat_comment_len(rest: &str) -> Option<usize> {
+    rest.find("*)").map(|k| k + 2)
+}
+
 /// The rest of a possibly nested `/* ... */` comment after its opening (IEC 61131-3 ed. 3, Table 3,
 /// features 2b and 3b): bytes it takes, how it ended.
 pub(crate) fn slash_comment_rest(rest: &str) -> (usize, CommentEnd) {

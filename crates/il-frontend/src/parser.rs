@@ -254,6 +254,23 @@ impl<'s> Ctx<'s> {
         self.diags.push(d);
     }
 
+    /// A dimension `*` of a variable-length array (`ARRAY [*, *] OF REAL`, IEC 61131-3 edition 3,
+    /// for VAR_IN_OUT of functions and blocks): E0323, and the dimension is read as 0..0.
+    pub fn variable_length_dim(&mut self, l: usize, r: usize) -> ArrayDim {
+        self.hint(
+            code::E0323,
+            "variable-length array dimension `*` (IEC 61131-3 edition 3) is not supported",
+            l,
+            r,
+            "declare the array with constant bounds (`ARRAY [1..N] OF ...`) and pass the length in use as an input",
+        );
+        ArrayDim {
+            lower: 0,
+            upper: 0,
+            span: self.span(l, r),
+        }
+    }
+
     /// `ARRAY [dims] OF element`. Element types nested deeper than [`MAX_TYPE_NESTING`] are E0211 and
     /// cut to their innermost type, so that the tree the later stages walk (recursively) stays shallow.
     pub fn array_type(

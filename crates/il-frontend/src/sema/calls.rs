@@ -313,10 +313,14 @@ impl Body<'_, '_> {
             .filter(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Function);
         let result = if let Some(conv) = stdlib::conversion(&name.name) {
             self.conversion_call(span, name, conv, args, formal, st, rec)
-        } else if let Some(f) = stdlib::function(&name.name)
-            .filter(|f| user_fn.is_none() || f.name.eq_ignore_ascii_case(&name.name))
-        {
-            // a user FUNCTION named like a typed name (`MAX_REAL`) or `MULTIME` is the user's
+        } else if let Some(f) = stdlib::function(&name.name).filter(|f| {
+            user_fn.is_none()
+                || (f.name.eq_ignore_ascii_case(&name.name) && !stdlib::edition3_only(f.name))
+        }) {
+            // a user FUNCTION named like a typed name (`MAX_REAL`) or `MULTIME` is the user's, and
+            // so is one named like a function edition 3 added (OSCAT's `DAY_OF_WEEK(IDATE :
+            // UDINT)`, written for edition 2, as matiec reads it); one named like an edition 2
+            // function (`LIMIT`) is the standard one, as matiec calls it
             self.typed_generic = stdlib::typed_name(&name.name).map(|(_, t)| t);
             let result = self.std_call(span, f, args, formal, st, rec);
             self.typed_generic = None;
@@ -428,17 +432,23 @@ impl Body<'_, '_> {
             _ => {
                 let ins = self.collect_inputs(span, args, formal, st, &cname);
                 if ins.len() != 1 {
+                    // ST's `F(a, b)` is lowered to IL's `LD a` `F b`: the count includes the
+                    // current result, and the hint names both languages' forms
+                    let hint = if formal {
+                        format!("write {cname}(value) with one input")
+                    } else {
+                        format!(
+                            "write {cname}(value) in ST, or LD value then {cname} with no operand in IL"
+                        )
+                    };
                     self.a
                         .error(
                             code::E1020,
                             span,
-                            format!(
-                                "{cname} takes one input (the current result), {} given",
-                                ins.len()
-                            ),
+                            format!("{cname} takes one input, {} given", ins.len()),
                         )
                         .label("wrong number of inputs")
-                        .hint(format!("write LD value then {cname} with no operand"));
+                        .hint(hint);
                     return Ty::ERROR;
                 }
                 ins.into_iter()

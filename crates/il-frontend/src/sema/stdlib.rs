@@ -310,6 +310,17 @@ pub static FUNCTIONS: &[StdFunction] = &[
     f("DAY_OF_WEEK", &[p("IN", Fixed(E::Date))], false, Ret::Fixed(E::Int), "the day of the week of a DATE: 0 Sunday ... 6 Saturday"),
 ];
 
+/// Whether the standard function `name` (upper case, as [`StdFunction::name`]) is one edition 3 added
+/// to edition 2's (Table 37's `CONCAT_DATE`, `CONCAT_TOD`, `CONCAT_DT`, `DAY_OF_WEEK`): libraries
+/// written for edition 2 (OSCAT) declare functions of these names, and a call of the name calls the
+/// project's own FUNCTION.
+pub fn edition3_only(name: &str) -> bool {
+    matches!(
+        name,
+        "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK"
+    )
+}
+
 /// Looks up a standard function (not a conversion) by name, case-insensitively. Also the edition 2
 /// spellings `MULTIME`/`DIVTIME` (edition 3: `MUL_TIME`/`DIV_TIME`) and the typed names of the
 /// overloaded functions (`ADD_INT`, `MAX_REAL`, `SEL_TIME`, `MUX_INT_DINT`; see [`typed_name`]), which

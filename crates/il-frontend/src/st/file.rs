@@ -541,18 +541,30 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                 .contains(['\n', '\r'])
         });
         if line_start {
-            let line_end_semi = {
-                let mut m = k;
-                while m + 1 < toks.len()
-                    && !src
-                        .get(toks[m].range.end..toks[m + 1].range.start)
-                        .unwrap_or("\n")
-                        .contains(['\n', '\r'])
-                {
-                    m += 1;
-                }
-                toks[m].tok == Tok::Semi
-            };
+            let mut m = k;
+            while m + 1 < toks.len()
+                && !src
+                    .get(toks[m].range.end..toks[m + 1].range.start)
+                    .unwrap_or("\n")
+                    .contains(['\n', '\r'])
+            {
+                m += 1;
+            }
+            let line_end_semi = toks[m].tok == Tok::Semi;
+            // a line that closes a parenthesis opened on an earlier line continues an ST
+            // expression (`   OR BOOL_TO_BYTE(b5), 1) OR ...`): IL closes a deferred operation
+            // with a `)` on a line of its own
+            let closes_earlier = toks[k..=m]
+                .iter()
+                .scan(0i32, |d, t| {
+                    match t.tok {
+                        Tok::LParen | Tok::LBracket => *d += 1,
+                        Tok::RParen | Tok::RBracket => *d -= 1,
+                        _ => {}
+                    }
+                    Some(*d)
+                })
+                .any(|d| d < 0);
             let w = word(src, t).to_ascii_uppercase();
             match &t.tok {
                 Tok::Kw(Kw::If | Kw::Case | Kw::For | Kw::While | Kw::Repeat | Kw::EndIf)
@@ -561,7 +573,7 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                     let operand = next_same_line.is_none_or(|nt| {
                         !matches!(nt.tok, Tok::Assign | Tok::LBracket | Tok::Dot | Tok::Caret)
                     });
-                    if operand && !line_end_semi {
+                    if operand && !line_end_semi && !closes_earlier {
                         il += 1;
                     }
                 }
@@ -592,13 +604,17 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
 }
 
 /// The language of a text given no file extension: XML when it starts with `<`, ST when one of its
-/// POU bodies is ST, IL otherwise.
+/// POU bodies is ST, or when it holds no POU but a `{` pragma (a CODESYS global variable list
+/// `{attribute 'qualified_only'} VAR_GLOBAL ...`: only the ST reader reads pragmas), IL otherwise.
 pub fn detect(src: &str) -> Lang {
     let t = src.trim_start_matches('\u{feff}').trim_start();
     if t.starts_with('<') {
         return Lang::Xml;
     }
-    if scan(src).iter().any(|p| p.lang == Lang::St) {
+    let pous = scan(src);
+    if pous.iter().any(|p| p.lang == Lang::St)
+        || (pous.is_empty() && lex(src).1.iter().any(|p| matches!(p, Problem::Pragma(_))))
+    {
         Lang::St
     } else {
         Lang::Il
@@ -772,8 +788,20 @@ pub fn parse_text(
             blank(&mut text, r.clone());
         }
     }
-    // ST: pragmas outside bodies are reported here (those inside ST bodies by the ST parser).
+    // ST: pragmas and comments read without nesting outside bodies are reported here (those inside
+    // ST bodies by the ST parser), and blanked for the declarations' reader
     for pr in &problems {
+        if let Problem::FlatComment(r) = pr {
+            if !st_bodies
+                .iter()
+                .any(|p| p.body.start <= r.start && r.end <= p.body.end)
+            {
+                diags.push(super::lexer::flat_comment_diagnostic(Span::new(
+                    file, r.start, r.end,
+                )));
+                blank(&mut text, r.clone());
+            }
+        }
         if let Problem::Pragma(r) = pr {
             if !st_bodies
                 .iter()

@@ -318,6 +318,11 @@ impl Env<'_> {
                 return p.ret.clone().map_or(Ty::Unknown, Ty::Known);
             }
         }
+        // TRUNC is ANY_REAL to ANY_INT (IEC 61131-3 edition 2): its integer type is its context's,
+        // as matiec types it (`i := TRUNC(r)` is TRUNC to INT); the lowering writes `TRUNC_INT`
+        if name.name.eq_ignore_ascii_case("TRUNC") {
+            return Ty::IntLit;
+        }
         if let Some(f) = stdlib::function(&name.name) {
             return match f.result {
                 Ret::Fixed(e) => Ty::Known(elem_ref(e, span)),

@@ -330,6 +330,9 @@ pub enum Problem {
     BadEscape(Range<usize>, String),
     /// A `{ ... }` or `{{ ... }}` pragma (skipped; reported by [`pragma_diagnostic`]).
     Pragma(Range<usize>),
+    /// A `(* ... *)` comment holding a `(*` without its own `*)`: nesting leaves it unclosed, so it
+    /// ends at its first `*)` (IEC 61131-3 edition 2, matiec); warning W0015.
+    FlatComment(Range<usize>),
 }
 
 /// Lexes `src`; the token list always ends with [`Tok::Eof`].
@@ -378,7 +381,23 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
                 problems.push(Problem::Pragma(range));
                 continue;
             }
-            Ok(Raw::Comment | Raw::LineComment) => continue,
+            Ok(Raw::Comment) => {
+                // a `(*` comment that nesting leaves unclosed inside its own text was closed by
+                // its first `*)` (see `block_comment`)
+                let text = &src[range.clone()];
+                if let Some(inner) = text.strip_prefix("(*") {
+                    if inner.contains("(*")
+                        && matches!(
+                            lexer::comment_rest(inner).1,
+                            lexer::CommentEnd::Unterminated
+                        )
+                    {
+                        problems.push(Problem::FlatComment(range));
+                    }
+                }
+                continue;
+            }
+            Ok(Raw::LineComment) => continue,
             // `x.%X3`, `x.%B1`: a partial access after a dot (3rd edition), an identifier for the parser
             Err(LexError::BadAddress(_))
                 if src[..range.start].ends_with('.')
@@ -411,13 +430,25 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
     (out, problems)
 }
 
-/// Skips a possibly nested `(* ... *)` comment.
+/// Skips a possibly nested `(* ... *)` comment; one that nesting leaves unclosed but a `*)` follows
+/// ends at that first `*)` (not nested, as matiec reads it: `lex` reports it, W0015).
 fn block_comment(lex: &mut logos::Lexer<Raw>) -> FilterResult<(), LexError> {
     let (n, end) = lexer::comment_rest(lex.remainder());
-    lex.bump(n);
     match end {
-        lexer::CommentEnd::Closed { .. } => FilterResult::Emit(()),
-        lexer::CommentEnd::Unterminated => FilterResult::Error(LexError::UnterminatedComment),
+        lexer::CommentEnd::Closed { .. } => {
+            lex.bump(n);
+            FilterResult::Emit(())
+        }
+        lexer::CommentEnd::Unterminated => match lexer::flat_comment_len(lex.remainder()) {
+            Some(m) => {
+                lex.bump(m);
+                FilterResult::Emit(())
+            }
+            None => {
+                lex.bump(n);
+                FilterResult::Error(LexError::UnterminatedComment)
+            }
+        },
     }
 }
 
@@ -548,6 +579,23 @@ pub fn pragma_diagnostic(text: &str, span: crate::Span) -> diagnostics::Diagnost
             "ladderc compiles no C or other code from pragmas; write the behaviour in ST (e.g. assign the output) or call a FUNCTION",
         ),
     }
+}
+
+/// Warning W0015 for a `(*` comment read without nesting (see [`Problem::FlatComment`]): at its
+/// opening, with a label at the `*)` that closes it. `whole` is the whole comment.
+pub fn flat_comment_diagnostic(whole: crate::Span) -> diagnostics::Diagnostic {
+    use diagnostics::{code, Diagnostic};
+    let (start, end) = (whole.start as usize, whole.end as usize);
+    let open = crate::Span::new(whole.file, start, (start + 2).min(end));
+    let close = crate::Span::new(whole.file, end.saturating_sub(2).max(start), end);
+    Diagnostic::warning(
+        code::W0015,
+        "this comment holds a `(*` without its own `*)`: it ends at the first `*)`, not nested",
+    )
+    .at(open)
+    .with_primary_label("comment opened here")
+    .with_label(close, "closed here (what follows is compiled)")
+    .with_hint("IEC 61131-3 edition 2 and matiec end a comment at its first `*)`, edition 3 may nest comments; close each `(*` with its own `*)` if the text after this `*)` belongs to the comment")
 }
 
 /// A pragma's text on one line, at most 60 characters (cut at a character boundary).

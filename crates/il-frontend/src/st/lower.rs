@@ -1695,6 +1695,16 @@ impl<'d> PouLowering<'d> {
             return;
         }
         let callee = self.resolve_callee(name);
+        // `TRUNC` takes its integer type from its context (`i := TRUNC(r)`, `INT_TO_WORD(TRUNC(r))`,
+        // `TRUNC(r) * 2` into an INT): edition 3's `TRUNC_INT`; without an integer context DINT
+        let typed_trunc = name
+            .name
+            .eq_ignore_ascii_case("TRUNC")
+            .then(|| context.as_ref().and_then(|c| self.env().elementary(c)))
+            .flatten()
+            .filter(|e| e.is_integer())
+            .map(|e| Ident::new(format!("TRUNC_{}", e.name()), name.span));
+        let name = typed_trunc.as_ref().unwrap_or(name);
         let has_output = args.iter().any(|a| matches!(a.dir, ArgDir::Output { .. }));
         let ordered = if has_output {
             None
@@ -1709,9 +1719,15 @@ impl<'d> PouLowering<'d> {
         // A generic standard function whose result is its inputs' type (LIMIT, MAX, SEL, ...) and
         // none of whose generic inputs is typed takes the type of its context (IEC 61131-3: untyped
         // literals take their type from the context), so `r := MAX(1.0, 0.5 ** 2.0)` is REAL.
+        let fname = name;
         let hint_of =
             |env: &Env, callee: &Callee, k: usize, name: Option<&Ident>, args: &[&Arg]| {
                 param_hint(env, callee, k, name, args).or_else(|| match callee {
+                    // a typed conversion's input (`INT_TO_WORD(TRUNC(r))`, `INT_TO_WORD(5)`)
+                    Callee::Other if k == 0 => stdlib::conversion(&fname.name)
+                        .and_then(|c| c.from)
+                        .and_then(|t| t.elementary())
+                        .map(|e| named(e.name(), fname.span)),
                     Callee::Standard(f) if matches!(f.result, Ret::T) => {
                         let idx = match name {
                             Some(n) => f.param_index(&n.name)?,

@@ -166,6 +166,12 @@ impl<'s, 'd> Parser<'s, 'd> {
                 self.diags.push(super::lexer::pragma_diagnostic(text, span));
                 return;
             }
+            Problem::FlatComment(r) => {
+                let whole = self.span(r.start, r.end);
+                self.diags
+                    .push(super::lexer::flat_comment_diagnostic(whole));
+                return;
+            }
             Problem::UnexpectedChar(r) => {
                 let c = self.src[r.clone()].chars().next().unwrap_or(' ');
                 (
@@ -1074,6 +1080,14 @@ impl<'s, 'd> Parser<'s, 'd> {
             Tok::Star => (BinaryOp::Mul, 6),
             Tok::Slash => (BinaryOp::Div, 6),
             Tok::Kw(Kw::Mod) => (BinaryOp::Mod, 6),
+            // CODESYS's short-circuit operators: read as AND/OR so that the expression parses on,
+            // and reported (E0324) in `binary`
+            Tok::Ident if self.text(self.cur()).eq_ignore_ascii_case("AND_THEN") => {
+                (BinaryOp::And, 2)
+            }
+            Tok::Ident if self.text(self.cur()).eq_ignore_ascii_case("OR_ELSE") => {
+                (BinaryOp::Or, 0)
+            }
             _ => return None,
         })
     }
@@ -1087,6 +1101,24 @@ impl<'s, 'd> Parser<'s, 'd> {
             }
             let t = self.bump();
             self.count_operation(t.range.start, t.range.end);
+            if t.tok == Tok::Ident {
+                let word = self.text(&t).to_ascii_uppercase();
+                let (plain, guard) = if op == BinaryOp::And {
+                    ("AND", "nest the IFs (`IF a THEN IF b THEN ...`)")
+                } else {
+                    (
+                        "OR",
+                        "test it in an ELSIF (`IF a THEN ... ELSIF b THEN ...`)",
+                    )
+                };
+                let span = self.span(t.range.start, t.range.end);
+                self.error_at(
+                    code::E0324,
+                    span,
+                    format!("`{word}` is CODESYS's short-circuit {plain}, not IEC 61131-3: not supported"),
+                    format!("where the right operand must not be evaluated, {guard}; elsewhere write {plain}"),
+                );
+            }
             let right = self.binary(level + 1);
             let span = left.span.to(right.span);
             left = Expr {
