@@ -1,11 +1,13 @@
 //! TwinCAT 3 source files (issue #13): `.TcPOU`, `.TcDUT`, `.TcGVL`, `.TcIO` and `.TcTTO` objects,
 //! read as ST in place, and a `.plcproj` project (or a folder holding one) standing for the files it
 //! lists, run end to end through `ladderc run`. The fixtures under `fixtures/twincat/` are written for
-//! these tests: a project with a DUT, a `qualified_only` GVL, a task of 20 ms, a function block with a
-//! method and an action, and MAIN; a POU with an LD network body; two programs without a task file.
+//! these tests: a project with a DUT, a `qualified_only` GVL, a GVL of constants used in an array
+//! bound, a task of 20 ms, a visualisation task, a function block with a method and an action, and
+//! MAIN; a GVL of `AT %I*`/`%Q*` I/O links and a PERSISTENT list with a program using them; a POU
+//! with an LD network body; two programs without a task file.
 
 mod common;
-use common::{column, diagnostic_heads, ladderc, run_traced, run_traced_files};
+use common::{assert_ok, column, diagnostic_heads, ladderc, run_traced, run_traced_files};
 
 use std::path::{Path, PathBuf};
 
@@ -15,14 +17,20 @@ fn fixture(rel: &str) -> PathBuf {
         .join(rel)
 }
 
-const WATCH: &str = "MAIN.fbCounter.nCount,MAIN.nScaled,GVL.stData.nTotal,GVL.stData.bHigh";
+const WATCH: &str =
+    "MAIN.fbCounter.nCount,MAIN.nScaled,GVL.stData.nTotal,GVL.stData.bHigh,MAIN.aSeen[3]";
 
 /// The trace of the fixture project's MAIN: the counter counts to GVL.nLimit (5) and is reset by its
-/// action `ResetCount` (then GVL.stData.bHigh is set); the method `Scaled` gives 10 x the count.
+/// action `ResetCount` (then GVL.stData.bHigh is set); the method `Scaled` gives 10 x the count;
+/// `aSeen : ARRAY[1..cSeen]` takes its bound from GVL_Const's constant (another file).
 fn assert_project_trace(trace: &str, cycle_ms: f64) {
     assert_eq!(
         column(trace, "MAIN.fbCounter.nCount"),
         [1.0, 2.0, 3.0, 4.0, 0.0, 1.0, 2.0]
+    );
+    assert_eq!(
+        column(trace, "MAIN.aSeen[3]"),
+        column(trace, "MAIN.fbCounter.nCount")
     );
     assert_eq!(
         column(trace, "MAIN.nScaled"),
@@ -43,7 +51,8 @@ fn assert_project_trace(trace: &str, cycle_ms: f64) {
 #[test]
 fn a_project_folder_runs_with_its_methods_actions_dut_qualified_gvl_and_task_period() {
     let (trace, stderr) = run_traced(&fixture("project"), 7, WATCH);
-    // the task file's CycleTime of 20000 us is the scan cycle
+    // the task file's CycleTime of 20000 us is the scan cycle (the visualisation task, which calls
+    // a library program, is left out)
     assert_project_trace(&trace, 20.0);
     assert!(!stderr.contains("error"), "{stderr}");
 }
@@ -60,6 +69,7 @@ fn object_files_given_one_by_one_run_without_a_task_file() {
         fixture("project/POUs/MAIN.TcPOU"),
         fixture("project/POUs/FB_Counter.TcPOU"),
         fixture("project/GVLs/GVL.TcGVL"),
+        fixture("project/GVLs/GVL_Const.TcGVL"),
         fixture("project/DUTs/ST_Data.TcDUT"),
     ];
     let refs: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
@@ -173,5 +183,74 @@ fn diagnostics_point_into_the_twincat_file_and_a_task_naming_no_program_is_locat
     assert_eq!(
         heads,
         ["MAIN.TcPOU:11:1: error[E1001]: undeclared name `m`"]
+    );
+}
+
+#[test]
+fn io_links_are_plain_variables_set_by_the_stimulus_and_persistent_is_retain() {
+    let dir = fixture("io");
+    let tmp = tempfile::tempdir().unwrap();
+    let stim = tmp.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n1,GVL_IO.bStart,1\n3,GVL_IO.bStart,0\n4,GVL_IO.bStart,1\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(dir.join("GVL_IO.TcGVL"))
+        .arg(dir.join("P_Io.TcPOU"))
+        .args(["--cycles", "6", "--sanitize", "--stimulus"])
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", "GVL_IO.nStarts,GVL_IO.nLamp"])
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let trace = String::from_utf8_lossy(&out.stdout);
+    // each rising edge of the input counts in the PERSISTENT list; the output is 10 x the count
+    assert_eq!(
+        column(&trace, "GVL_IO.nStarts"),
+        [0.0, 1.0, 1.0, 1.0, 2.0, 2.0]
+    );
+    assert_eq!(
+        column(&trace, "GVL_IO.nLamp"),
+        [0.0, 10.0, 10.0, 10.0, 20.0, 20.0]
+    );
+    let notes: Vec<String> = String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .filter(|l| l.contains("W0322"))
+        .map(|l| l.replace(&format!("{}/", dir.display()), ""))
+        .map(|l| {
+            l.split_once(" (hint")
+                .map_or(l.clone(), |(h, _)| h.to_string())
+        })
+        .collect();
+    assert_eq!(
+        notes,
+        [
+            "GVL_IO.TcGVL:6:9: note[W0322]: 2 `AT %I*`/`%Q*`/`%M*` declaration(s) read as plain \
+          variables: TwinCAT links them to I/O in the system configuration (.tsproj), which \
+          ladderc does not read"
+        ]
+    );
+}
+
+#[test]
+fn a_task_calling_a_program_whose_file_failed_is_not_reported_again() {
+    let dir = tempfile::tempdir().unwrap();
+    let main = dir.path().join("MAIN.TcPOU");
+    std::fs::write(
+        &main,
+        std::fs::read_to_string(fixture("graphical/P_Ladder.TcPOU"))
+            .unwrap()
+            .replace("P_Ladder", "MAIN"),
+    )
+    .unwrap();
+    let (code, heads) = check(&[main, fixture("project/PlcTask.TcTTO")], dir.path());
+    assert_eq!(code, Some(1));
+    assert_eq!(heads.len(), 1, "{heads:?}");
+    assert!(
+        heads[0].starts_with("MAIN.TcPOU:11:7: error[E0321]"),
+        "{heads:?}"
     );
 }

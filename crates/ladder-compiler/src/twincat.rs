@@ -29,6 +29,9 @@ pub enum TcObject {
         /// The name of a global variable list (`<GVL Name="GVL_Main">`): its `VAR_GLOBAL` blocks are
         /// that list, so `GVL_Main.x` reaches a member.
         list: Option<String>,
+        /// Notes on what was read otherwise than TwinCAT runs it (W0322: `AT %I*` variables read as
+        /// plain variables).
+        notes: Vec<Diagnostic>,
     },
     /// A task (`.TcTTO`).
     Task(TcTask),
@@ -92,10 +95,123 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
             _ => {}
         }
     }
-    Some(Ok(TcObject::Source {
-        text: out.finish(),
-        list,
-    }))
+    let mut text = out.finish();
+    let unlinked = unlink_io(&mut text);
+    let notes = unlinked
+        .first()
+        .map(|&(s, e)| {
+            Diagnostic::new(
+                code::W0322,
+                diagnostics::Severity::Note,
+                format!(
+                    "{} `AT %I*`/`%Q*`/`%M*` declaration(s) read as plain variables: TwinCAT links \
+                     them to I/O in the system configuration (.tsproj), which ladderc does not read",
+                    unlinked.len()
+                ),
+            )
+            .at(Span::new(file, s, e))
+            .with_hint(
+                "set such inputs with --stimulus and read outputs with --watch, by the variable's \
+                 name; write a full address (`AT %IX0.0`) to place one in the process image",
+            )
+        })
+        .into_iter()
+        .collect();
+    Some(Ok(TcObject::Source { text, list, notes }))
+}
+
+/// Blanks each `AT %I*`, `AT %Q*` and `AT %M*` of the IEC text (outside comments and strings),
+/// so that the variable is a plain one, and writes `VAR PERSISTENT` as `VAR RETAIN`; returns the
+/// byte ranges of the `AT` placeholders.
+fn unlink_io(text: &mut String) -> Vec<(usize, usize)> {
+    let b = text.as_bytes();
+    let n = b.len();
+    let mut found = Vec::new();
+    // `PERSISTENT` after VAR, VAR_GLOBAL (or RETAIN, CONSTANT): start, and whether RETAIN is written
+    let mut persistent: Vec<(usize, bool)> = Vec::new();
+    let mut prev_word: &[u8] = b"";
+    let mut i = 0;
+    while i < n {
+        match b[i] {
+            b'(' if b.get(i + 1) == Some(&b'*') => {
+                i = find_from(b, i + 2, b"*)").map_or(n, |e| e + 2);
+            }
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                i = find_from(b, i + 2, b"\n").unwrap_or(n);
+            }
+            q @ (b'\'' | b'"') => {
+                i += 1;
+                while i < n && b[i] != q && b[i] != b'\n' {
+                    i += if b[i] == b'$' { 2 } else { 1 };
+                }
+                i += 1;
+            }
+            c if c.is_ascii_alphabetic() || c == b'_' => {
+                let start = i;
+                while i < n && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                    i += 1;
+                }
+                let word = &b[start..i];
+                if word.eq_ignore_ascii_case(b"PERSISTENT")
+                    && [&b"VAR"[..], b"VAR_GLOBAL", b"RETAIN", b"CONSTANT"]
+                        .iter()
+                        .any(|w| prev_word.eq_ignore_ascii_case(w))
+                {
+                    let mut k = i;
+                    while k < n && b[k].is_ascii_whitespace() {
+                        k += 1;
+                    }
+                    let retain_next = b
+                        .get(k..k + 6)
+                        .is_some_and(|w| w.eq_ignore_ascii_case(b"RETAIN"));
+                    persistent.push((
+                        start,
+                        retain_next || prev_word.eq_ignore_ascii_case(b"RETAIN"),
+                    ));
+                }
+                prev_word = word;
+                let word_is_at = i - start == 2 && word.eq_ignore_ascii_case(b"AT");
+                let preceded = start == 0 || !b[start - 1].is_ascii_alphanumeric();
+                if word_is_at && preceded {
+                    let mut k = i;
+                    while k < n && (b[k] == b' ' || b[k] == b'\t') {
+                        k += 1;
+                    }
+                    if k + 2 < n
+                        && b[k] == b'%'
+                        && matches!(b[k + 1].to_ascii_uppercase(), b'I' | b'Q' | b'M')
+                        && b[k + 2] == b'*'
+                    {
+                        found.push((start, k + 3));
+                        i = k + 3;
+                    }
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    if !found.is_empty() || !persistent.is_empty() {
+        let mut bytes = std::mem::take(text).into_bytes();
+        for &(s, e) in &found {
+            bytes[s..e].fill(b' ');
+        }
+        // PERSISTENT (TwinCAT, CODESYS: kept over a download too) is read as RETAIN, the same length
+        for &(s, retain) in &persistent {
+            let with: &[u8; 10] = if retain { b"          " } else { b"RETAIN    " };
+            bytes[s..s + 10].copy_from_slice(with);
+        }
+        // only ASCII was blanked
+        *text = String::from_utf8(bytes).unwrap_or_default();
+    }
+    found
+}
+
+/// The offset of `pat` in `b` at or after `from`.
+fn find_from(b: &[u8], from: usize, pat: &[u8]) -> Option<usize> {
+    b.get(from..)?
+        .windows(pat.len())
+        .position(|w| w == pat)
+        .map(|p| p + from)
 }
 
 /// The task of a `<Task>` element.
@@ -337,7 +453,7 @@ VAR n : INT; END_VAR
 
     #[test]
     fn a_function_block_keeps_its_positions_and_gets_its_keywords() {
-        let Some(Ok(TcObject::Source { text, list })) = object_source(FileId(0), FB) else {
+        let Some(Ok(TcObject::Source { text, list, .. })) = object_source(FileId(0), FB) else {
             panic!("a TwinCAT POU");
         };
         assert_eq!(list, None);
@@ -380,5 +496,22 @@ VAR n : INT; END_VAR
         assert!(d.message.contains("LD or FBD"), "{}", d.message);
         assert!(object_source(FileId(0), "<project/>").is_none());
         assert_eq!(first_keyword("(* c *) // x\n {a 'b'} program P"), "PROGRAM");
+    }
+
+    #[test]
+    fn io_links_are_blanked_outside_comments_and_strings() {
+        let mut text = "b AT %I* : BOOL; (* x AT %Q* *) s : STRING := 'AT %M*'; q  at\t%Q* : INT; r AT%I* : INT; cat %I*"
+            .to_string();
+        let found = unlink_io(&mut text);
+        assert_eq!(found.len(), 3);
+        assert!(text.starts_with("b        : BOOL;"), "{text}");
+        assert!(text.contains("(* x AT %Q* *)") && text.contains("'AT %M*'"));
+        assert!(
+            text.contains("q         : INT; r       : INT;") && text.ends_with("cat %I*"),
+            "{text}"
+        );
+        let mut text = "VAR_GLOBAL PERSISTENT x : INT; END_VAR VAR RETAIN PERSISTENT y : INT; END_VAR persistent := 1;".to_string();
+        assert!(unlink_io(&mut text).is_empty());
+        assert_eq!(text, "VAR_GLOBAL RETAIN     x : INT; END_VAR VAR RETAIN            y : INT; END_VAR persistent := 1;");
     }
 }

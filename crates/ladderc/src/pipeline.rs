@@ -257,6 +257,7 @@ impl Session {
         let mut twincat_units: Vec<bool> = Vec::new();
         let mut twincat_lists: Vec<(usize, String)> = Vec::new();
         let mut twincat_tasks = Vec::new();
+        let mut twincat_failed: Vec<String> = Vec::new();
         for p in &paths {
             // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals
             let (resolved, beremiz_dir) = crate::beremiz::resolve(self, p);
@@ -387,13 +388,18 @@ impl Session {
             let tc_text = match tc_object {
                 Some(Err(d)) => {
                     self.diags.push(*d);
+                    // TwinCAT names the file after its object: a task calling it is not told again
+                    if let Some(stem) = p.file_stem().and_then(|s| s.to_str()) {
+                        twincat_failed.push(stem.to_string());
+                    }
                     continue;
                 }
                 Some(Ok(ladder_compiler::twincat::TcObject::Task(task))) => {
                     twincat_tasks.push((file, task));
                     continue;
                 }
-                Some(Ok(ladder_compiler::twincat::TcObject::Source { text, list })) => {
+                Some(Ok(ladder_compiler::twincat::TcObject::Source { text, list, notes })) => {
+                    self.diags.extend(notes);
                     if let Some(list) = list {
                         twincat_lists.push((units.len(), list));
                     }
@@ -436,6 +442,7 @@ impl Session {
                         file,
                         implicit: implicit.to_string(),
                         lang: file_lang,
+                        text: v2_text.clone().or_else(|| tc_text.clone()),
                         diags: local,
                     });
                     units.push(unit);
@@ -466,8 +473,13 @@ impl Session {
             }
         }
         if !twincat_units.is_empty() || !twincat_tasks.is_empty() {
-            self.task_cycle_ms =
-                crate::twincat::configure(self, &mut units, &twincat_units, &twincat_tasks);
+            self.task_cycle_ms = crate::twincat::configure(
+                self,
+                &mut units,
+                &twincat_units,
+                &twincat_tasks,
+                &twincat_failed,
+            );
         }
         // VAR_CONFIG once every file is read: a configuration names programs of other files
         il_frontend::st::file::apply_var_config(&mut units, var_config, &mut self.diags);
@@ -499,7 +511,7 @@ impl Session {
         for _ in 0..waiting.len() {
             let mut found = known.clone();
             for (w, result) in waiting.iter_mut().zip(results.iter_mut()) {
-                let src = &self.map.get(w.file).text;
+                let src = w.text.as_ref().unwrap_or(&self.map.get(w.file).text);
                 let mut local = Diagnostics::new();
                 let parsed = il_frontend::parser::with_other_files_constants(known.clone(), || {
                     il_frontend::st::file::parse_text(w.file, src, &w.implicit, w.lang, &mut local)
@@ -1044,6 +1056,9 @@ struct WaitingFile {
     file: diagnostics::FileId,
     implicit: String,
     lang: il_frontend::st::file::Lang,
+    /// The text parsed when it is not the file's own (a CODESYS V2.3 or TwinCAT object file's
+    /// texts, blanks around them).
+    text: Option<String>,
     /// The diagnostics of its last parse.
     diags: Diagnostics,
 }

@@ -129,7 +129,9 @@ fn listed_files(project: &Path, text: &str) -> Vec<PathBuf> {
 }
 
 /// The configuration that runs a TwinCAT project's programs: from its tasks, else the one PROGRAM
-/// or `MAIN`. `units` are all units read; `twincat` says which came from TwinCAT object files.
+/// or `MAIN`. `units` are all units read; `twincat` says which came from TwinCAT object files;
+/// `failed` names the object files that could not be read (a task calling one is not reported again).
+/// A task's call of a library program (`VisuElems.Visu_Prg`, TwinCAT's visualisation) is left out.
 /// Returns the base cycle in ms when tasks give one. Nothing is added when a unit already has a
 /// CONFIGURATION.
 pub fn configure(
@@ -137,6 +139,7 @@ pub fn configure(
     units: &mut Vec<CompilationUnit>,
     twincat: &[bool],
     tasks: &[(FileId, TcTask)],
+    failed: &[String],
 ) -> Option<f64> {
     let has_config = units.iter().any(|u| {
         u.items
@@ -206,12 +209,16 @@ pub fn configure(
         for (file, t) in tasks {
             let task_name = safe_name(&t.name).unwrap_or_else(|| "PlcTask".to_string());
             let cycle = t.cycle_us.unwrap_or(10_000);
-            cycles.push(cycle);
-            lines.push(format!(
+            let task_line = format!(
                 "TASK {task_name}(INTERVAL := T#{cycle}us, PRIORITY := {});",
                 t.priority.unwrap_or(20)
-            ));
+            );
+            let before = instances.len();
+            let mut calls = Vec::new();
             for (name, (s, e)) in &t.programs {
+                if name.contains('.') || failed.iter().any(|f| f.eq_ignore_ascii_case(name)) {
+                    continue;
+                }
                 let known =
                     safe_name(name).filter(|n| all_programs.contains(&n.to_ascii_uppercase()));
                 let Some(program) = known else {
@@ -231,8 +238,14 @@ pub fn configure(
                 if instances.iter().any(|i| i.eq_ignore_ascii_case(&program)) {
                     continue;
                 }
-                lines.push(format!("PROGRAM {program} WITH {task_name} : {program};"));
+                calls.push(format!("PROGRAM {program} WITH {task_name} : {program};"));
                 instances.push(program);
+            }
+            // a task that runs none of the programs read (only a visualisation) is left out
+            if instances.len() > before {
+                cycles.push(cycle);
+                lines.push(task_line);
+                lines.extend(calls);
             }
         }
         if instances.is_empty() {
