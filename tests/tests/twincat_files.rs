@@ -2,7 +2,8 @@
 //! read as ST in place, and a `.plcproj` project (or a folder holding one) standing for the files it
 //! lists, run end to end through `ladderc run`. The fixtures under `fixtures/twincat/` are written for
 //! these tests: a project with a DUT, a `qualified_only` GVL, a GVL of constants used in an array
-//! bound, a task of 20 ms, a visualisation task, a function block with a method and an action, and
+//! bound, an enumeration with its base type after it used with dotted values (`E_Mode.Full`), a task
+//! of 20 ms, a visualisation task, a function block with a method and an action, and
 //! MAIN; a GVL of `AT %I*`/`%Q*` I/O links and a PERSISTENT list with a program using them; a POU
 //! with an LD network body; two programs without a task file.
 
@@ -18,15 +19,21 @@ fn fixture(rel: &str) -> PathBuf {
 }
 
 const WATCH: &str =
-    "MAIN.fbCounter.nCount,MAIN.nScaled,GVL.stData.nTotal,GVL.stData.bHigh,MAIN.aSeen[3]";
+    "MAIN.fbCounter.nCount,MAIN.nScaled,GVL.stData.nTotal,GVL.stData.bHigh,MAIN.aSeen[3],MAIN.eMode";
 
 /// The trace of the fixture project's MAIN: the counter counts to GVL.nLimit (5) and is reset by its
 /// action `ResetCount` (then GVL.stData.bHigh is set); the method `Scaled` gives 10 x the count;
-/// `aSeen : ARRAY[1..cSeen]` takes its bound from GVL_Const's constant (another file).
+/// `aSeen : ARRAY[1..cSeen]` takes its bound from GVL_Const's constant (another file); `eMode`, of
+/// the enumeration `E_Mode` written with its base type after it (`(Counting := 0, Full := 10) INT`),
+/// starts as `E_Mode.Counting` and becomes `E_Mode.Full` (values qualified with a dot) once bHigh.
 fn assert_project_trace(trace: &str, cycle_ms: f64) {
     assert_eq!(
         column(trace, "MAIN.fbCounter.nCount"),
         [1.0, 2.0, 3.0, 4.0, 0.0, 1.0, 2.0]
+    );
+    assert_eq!(
+        column(trace, "MAIN.eMode"),
+        [0.0, 0.0, 0.0, 0.0, 10.0, 10.0, 10.0]
     );
     assert_eq!(
         column(trace, "MAIN.aSeen[3]"),
@@ -71,6 +78,7 @@ fn object_files_given_one_by_one_run_without_a_task_file() {
         fixture("project/GVLs/GVL.TcGVL"),
         fixture("project/GVLs/GVL_Const.TcGVL"),
         fixture("project/DUTs/ST_Data.TcDUT"),
+        fixture("project/DUTs/E_Mode.TcDUT"),
     ];
     let refs: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
     let (trace, _) = run_traced_files(&refs, 7, WATCH);
@@ -253,4 +261,21 @@ fn a_task_calling_a_program_whose_file_failed_is_not_reported_again() {
         heads[0].starts_with("MAIN.TcPOU:11:7: error[E0321]"),
         "{heads:?}"
     );
+}
+
+#[test]
+fn dotted_enumerated_values_and_base_types_run_in_st_files_too() {
+    let dir = tempfile::tempdir().unwrap();
+    let st = dir.path().join("states.st");
+    std::fs::write(
+        &st,
+        "TYPE E_State :\n(\n\tIdle := 0,\n\tBusy := 10,\n\tDone\n) INT;\nEND_TYPE\n\
+         PROGRAM MAIN\nVAR\n\teState : E_State := E_State.Busy;\n\tn : INT;\nEND_VAR\n\
+         CASE eState OF\nE_State.Busy: n := n + 1; IF n >= 2 THEN eState := E_State.Done; END_IF\n\
+         E_State.Done: n := 100;\nEND_CASE\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run_traced(&st, 4, "MAIN.eState,MAIN.n");
+    assert_eq!(column(&trace, "MAIN.eState"), [10.0, 11.0, 11.0, 11.0]);
+    assert_eq!(column(&trace, "MAIN.n"), [1.0, 2.0, 100.0, 100.0]);
 }

@@ -67,6 +67,12 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
     let root = root?;
     let mut out = Source::blank(text);
     let mut list = None;
+    // the declaration texts (byte ranges): bounds there may name a list's constant qualified
+    let declarations: Vec<(usize, usize)> = root
+        .walk()
+        .filter(|e| e.name == "Declaration")
+        .map(|e| (e.tag_end, e.end))
+        .collect();
     for obj in root.children {
         match obj.name {
             "POU" => {
@@ -97,6 +103,9 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
     }
     let mut text = out.finish();
     let unlinked = unlink_io(&mut text);
+    for &(s, e) in &declarations {
+        unqualify_bounds(&mut text, s, e);
+    }
     let notes = unlinked
         .first()
         .map(|&(s, e)| {
@@ -204,6 +213,65 @@ fn unlink_io(text: &mut String) -> Vec<(usize, usize)> {
         *text = String::from_utf8(bytes).unwrap_or_default();
     }
     found
+}
+
+/// Blanks the list name of each qualified constant (`GVL_Param.cMax` in `ARRAY[1..GVL_Param.cMax]`,
+/// `STRING(GVL.N)`, `DINT(GVL.A..GVL.B)`) inside brackets and parentheses of the declaration text at
+/// `start..end`, so the constant is looked up by its name among the constants of every file given
+/// (the IEC bound grammar has no qualified names; positions stay the file's own).
+fn unqualify_bounds(text: &mut String, start: usize, end: usize) {
+    let b = text.as_bytes();
+    let end = end.min(b.len());
+    let mut blanks = Vec::new();
+    let mut depth = 0usize;
+    let mut i = start.min(end);
+    while i < end {
+        match b[i] {
+            b'(' if b.get(i + 1) == Some(&b'*') => {
+                i = find_from(b, i + 2, b"*)").map_or(end, |e| e + 2);
+            }
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                i = find_from(b, i + 2, b"\n").unwrap_or(end);
+            }
+            b'{' => i = find_from(b, i + 1, b"}").map_or(end, |e| e + 1),
+            q @ (b'\'' | b'"') => {
+                i += 1;
+                while i < end && b[i] != q && b[i] != b'\n' {
+                    i += if b[i] == b'$' { 2 } else { 1 };
+                }
+                i += 1;
+            }
+            b'[' | b'(' => {
+                depth += 1;
+                i += 1;
+            }
+            b']' | b')' => {
+                depth = depth.saturating_sub(1);
+                i += 1;
+            }
+            c if c.is_ascii_alphabetic() || c == b'_' => {
+                let word = i;
+                while i < end && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                    i += 1;
+                }
+                let next_is_name = b
+                    .get(i + 1)
+                    .is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_');
+                if depth > 0 && b.get(i) == Some(&b'.') && next_is_name {
+                    blanks.push((word, i + 1));
+                    i += 1;
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    if !blanks.is_empty() {
+        let mut bytes = std::mem::take(text).into_bytes();
+        for (s, e) in blanks {
+            bytes[s..e].fill(b' ');
+        }
+        *text = String::from_utf8(bytes).unwrap_or_default();
+    }
 }
 
 /// The offset of `pat` in `b` at or after `from`.
@@ -509,6 +577,15 @@ VAR n : INT; END_VAR
         assert!(
             text.contains("q         : INT; r       : INT;") && text.ends_with("cat %I*"),
             "{text}"
+        );
+        let mut text =
+            "a : ARRAY[1..GVL_P.cMax] OF STRING(GVL.N); t : DINT(GVL.A..GVL.B); y := s.x;"
+                .to_string();
+        let len = text.len();
+        unqualify_bounds(&mut text, 0, len);
+        assert_eq!(
+            text,
+            "a : ARRAY[1..      cMax] OF STRING(    N); t : DINT(    A..    B); y := s.x;"
         );
         let mut text = "VAR_GLOBAL PERSISTENT x : INT; END_VAR VAR RETAIN PERSISTENT y : INT; END_VAR persistent := 1;".to_string();
         assert!(unlink_io(&mut text).is_empty());
