@@ -17,7 +17,7 @@ use diagnostics::{code, Diagnostic, FileId, Span};
 /// The name of the document's root element, read without parsing the document: the first start tag
 /// after a byte-order mark, the XML declaration, processing instructions, comments and a DOCTYPE.
 /// `None` when the beginning is anything else (the caller then parses the document to decide).
-fn root_name(text: &str) -> Option<&str> {
+pub(crate) fn root_name(text: &str) -> Option<&str> {
     let mut rest = text.strip_prefix('\u{feff}').unwrap_or(text);
     loop {
         rest = rest.trim_start();
@@ -43,7 +43,7 @@ fn root_name(text: &str) -> Option<&str> {
 }
 
 /// `name` without its namespace prefix (`plc:pou` -> `pou`).
-fn local_name(name: &str) -> &str {
+pub(crate) fn local_name(name: &str) -> &str {
     name.rsplit(':').next().unwrap_or(name)
 }
 
@@ -189,13 +189,13 @@ fn unreadable(file: FileId, el: &Element, msg: String) -> Box<Diagnostic> {
 }
 
 /// The file's text being turned into source: bytes outside the copied texts are blank.
-struct Source {
+pub(crate) struct Source {
     bytes: Vec<u8>,
 }
 
 impl Source {
     /// Every byte blank but the line breaks (a multi-byte character becomes as many blanks).
-    fn blank(text: &str) -> Source {
+    pub(crate) fn blank(text: &str) -> Source {
         Source {
             bytes: text
                 .bytes()
@@ -206,7 +206,7 @@ impl Source {
 
     /// Copies `el`'s text (CDATA and character data; an entity as its character, padded with blanks)
     /// into place; returns the offset just after the last piece.
-    fn copy(&mut self, el: &Element) -> usize {
+    pub(crate) fn copy(&mut self, el: &Element) -> usize {
         let mut end = el.tag_end();
         for seg in el.segments() {
             let (start, stop) = (
@@ -228,7 +228,7 @@ impl Source {
 
     /// Writes ` keyword` into the first blank stretch of one line between `from` and `to`; returns
     /// the offset after it, or `None` when there is no room.
-    fn place(&mut self, from: usize, to: usize, keyword: &str) -> Option<usize> {
+    pub(crate) fn place(&mut self, from: usize, to: usize, keyword: &str) -> Option<usize> {
         let need = keyword.len() + 2;
         let to = to.min(self.bytes.len());
         let mut run = 0;
@@ -249,7 +249,7 @@ impl Source {
     }
 
     /// [`Source::place`] up to the end of the text, else after it (on a line of its own).
-    fn place_last(&mut self, from: usize, keyword: &str) {
+    pub(crate) fn place_last(&mut self, from: usize, keyword: &str) {
         if self.place(from, self.bytes.len(), keyword).is_none() {
             self.bytes.push(b'\n');
             self.bytes.extend_from_slice(keyword.as_bytes());
@@ -257,7 +257,7 @@ impl Source {
         }
     }
 
-    fn finish(self) -> String {
+    pub(crate) fn finish(self) -> String {
         // only ASCII was written over blanks, and copied texts are whole UTF-8 pieces
         String::from_utf8(self.bytes).unwrap_or_default()
     }

@@ -25,6 +25,7 @@ pub mod project;
 pub mod sfc;
 pub mod st_body;
 pub mod testgen;
+pub mod twincat;
 pub mod values;
 pub mod var_config;
 pub mod xml;

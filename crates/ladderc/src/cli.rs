@@ -61,8 +61,10 @@ impl From<Format> for MessageFormat {
 /// `check`, `build` and `run`, so that `check` checks exactly what `build` builds.
 #[derive(clap::Args, Debug, Clone)]
 pub struct ProjectArgs {
-    /// Input files: IL (`.il`), Structured Text (`.st`), PLCopen TC6 XML projects (`.xml`); other
-    /// names by their content; `-` reads standard input.
+    /// Input files: IL (`.il`), Structured Text (`.st`), PLCopen TC6 XML projects (`.xml`), TwinCAT 3
+    /// objects (`.TcPOU`, `.TcDUT`, `.TcGVL`, `.TcIO`, `.TcTTO`) and projects (`.plcproj`, or a
+    /// folder holding one); a Beremiz project folder; other names by their content; `-` reads
+    /// standard input.
     #[arg(required = true)]
     pub inputs: Vec<PathBuf>,
     /// Read every input in this language, whatever its name.
@@ -182,7 +184,8 @@ pub enum Command {
         /// Number of scan cycles.
         #[arg(long, default_value_t = 10)]
         cycles: u64,
-        /// Cycle time in milliseconds (default: the axis configuration's `cycle_ms`, else 10).
+        /// Cycle time in milliseconds (default: the axis configuration's `cycle_ms`, else the
+        /// TwinCAT tasks' cycle time, else 10).
         #[arg(long)]
         cycle_ms: Option<f64>,
         /// CSV rows `cycle,variable,value`, applied before that cycle.

@@ -74,6 +74,7 @@ pub mod report;
 pub mod stdio;
 pub mod summary;
 pub mod trace_raw;
+pub mod twincat;
 pub mod xml_context;
 
 pub use c_backend;

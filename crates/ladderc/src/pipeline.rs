@@ -74,6 +74,7 @@ pub fn input_lang(path: &Path, text: &str, forced: Option<Lang>) -> (Lang, bool)
         Some("xml") => (Lang::Xml, false),
         Some("il") => (Lang::Il, false),
         Some("st") => (Lang::St, false),
+        Some(e) if crate::twincat::OBJECT_EXTENSIONS.contains(&e) => (Lang::Xml, false),
         _ => (il_frontend::st::file::detect(text), true),
     }
 }
@@ -109,6 +110,9 @@ pub struct Session {
     /// ([`il_frontend::sema::Model::names`], for tools; the default). `false`: only what the C
     /// generation reads ([`il_frontend::sema::analyze_for_code`]).
     pub name_table: bool,
+    /// The base scan cycle the tasks of the TwinCAT project read last give (ms; the greatest common
+    /// divisor of their cycle times), used when neither `--cycle-ms` nor the axes file gives one.
+    pub task_cycle_ms: Option<f64>,
 }
 
 /// What [`Session::parse`] produced: the user's units and what they are compiled with.
@@ -206,6 +210,7 @@ impl Session {
             overlay: std::collections::HashMap::new(),
             disk: true,
             name_table: true,
+            task_cycle_ms: None,
         }
     }
 
@@ -249,7 +254,16 @@ impl Session {
         // diagnostics)
         let mut offered = Vec::new();
         let mut waiting = Vec::new();
-        for p in paths {
+        // TwinCAT 3: a .plcproj (or a folder holding one) stands for the object files it lists; the
+        // units read from object files, their global lists' names, their tasks
+        let mut expand_diags = Diagnostics::new();
+        let paths = crate::twincat::expand(self, paths, &mut expand_diags);
+        self.diags.extend(expand_diags);
+        let mut twincat_units: Vec<bool> = Vec::new();
+        let mut twincat_lists: Vec<(usize, String)> = Vec::new();
+        let mut twincat_tasks = Vec::new();
+        let mut twincat_failed: Vec<String> = Vec::new();
+        for p in &paths {
             // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals
             let (resolved, beremiz_dir) = crate::beremiz::resolve(self, p);
             let p = &resolved;
@@ -370,9 +384,39 @@ impl Session {
                 Some(Ok(text)) => Some(text),
                 None => None,
             };
-            let (file_lang, src) = match &v2_text {
-                Some(text) => (Lang::St, text.as_str()),
-                None => (file_lang, src.as_str()),
+            // a TwinCAT 3 object file (`<TcPlcObject>` root): its texts as an ST file, or a task
+            let tc_object = if file_lang == Lang::Xml && v2_text.is_none() {
+                ladder_compiler::twincat::object_source(file, src)
+            } else {
+                None
+            };
+            let tc_text = match tc_object {
+                Some(Err(d)) => {
+                    self.diags.push(*d);
+                    // TwinCAT names the file after its object: a task calling it is not told again
+                    if let Some(stem) = p.file_stem().and_then(|s| s.to_str()) {
+                        twincat_failed.push(stem.to_string());
+                    }
+                    continue;
+                }
+                Some(Ok(ladder_compiler::twincat::TcObject::Task(task))) => {
+                    twincat_tasks.push((file, task));
+                    continue;
+                }
+                Some(Ok(ladder_compiler::twincat::TcObject::Source { text, list, notes })) => {
+                    self.diags.extend(notes);
+                    if let Some(list) = list {
+                        twincat_lists.push((units.len(), list));
+                    }
+                    twincat_units.resize(units.len(), false);
+                    twincat_units.push(true);
+                    Some(text)
+                }
+                None => None,
+            };
+            let (file_lang, src) = match (&v2_text, &tc_text) {
+                (Some(text), _) | (None, Some(text)) => (Lang::St, text.as_str()),
+                (None, None) => (file_lang, src.as_str()),
             };
             if file_lang == Lang::Xml {
                 let (mut unit, entries) =
@@ -403,6 +447,7 @@ impl Session {
                         file,
                         implicit: implicit.to_string(),
                         lang: file_lang,
+                        text: v2_text.clone().or_else(|| tc_text.clone()),
                         diags: local,
                     });
                     units.push(unit);
@@ -422,6 +467,25 @@ impl Session {
             &mut pending,
             &mut var_config,
         );
+        // a TwinCAT global variable list is named after its object (`GVL.x`)
+        for (k, list) in twincat_lists {
+            if let Some(unit) = units.get_mut(k) {
+                for item in &mut unit.items {
+                    if let il_frontend::ast::LibraryElement::GlobalVars(block) = item {
+                        block.name = Some(il_frontend::ast::Ident::new(list.clone(), block.span));
+                    }
+                }
+            }
+        }
+        if !twincat_units.is_empty() || !twincat_tasks.is_empty() {
+            self.task_cycle_ms = crate::twincat::configure(
+                self,
+                &mut units,
+                &twincat_units,
+                &twincat_tasks,
+                &twincat_failed,
+            );
+        }
         // VAR_CONFIG once every file is read: a configuration names programs of other files
         il_frontend::st::file::apply_var_config(&mut units, var_config, &mut self.diags);
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
@@ -452,7 +516,7 @@ impl Session {
         for _ in 0..waiting.len() {
             let mut found = known.clone();
             for (w, result) in waiting.iter_mut().zip(results.iter_mut()) {
-                let src = &self.map.get(w.file).text;
+                let src = w.text.as_ref().unwrap_or(&self.map.get(w.file).text);
                 let mut local = Diagnostics::new();
                 let parsed = il_frontend::parser::with_other_files_constants(known.clone(), || {
                     il_frontend::st::file::parse_text(w.file, src, &w.implicit, w.lang, &mut local)
@@ -620,7 +684,7 @@ impl Session {
             }
             (Some(a), _) => a,
             (None, Some(c)) => c,
-            (None, None) => DEFAULT_CYCLE_MS,
+            (None, None) => self.task_cycle_ms.unwrap_or(DEFAULT_CYCLE_MS),
         };
         // Check the user's program (with the block interfaces and the axes when it uses blocks).
         let mut checked = Vec::new();
@@ -1011,6 +1075,9 @@ struct WaitingFile {
     file: diagnostics::FileId,
     implicit: String,
     lang: il_frontend::st::file::Lang,
+    /// The text parsed when it is not the file's own (a CODESYS V2.3 or TwinCAT object file's
+    /// texts, blanks around them).
+    text: Option<String>,
     /// The diagnostics of its last parse.
     diags: Diagnostics,
 }

@@ -420,7 +420,8 @@ impl GeneratedProject {
         &self.lowered
     }
 
-    /// The scan cycle in ms (the axes file's `cycle_ms`, [`Options::cycle_ms`], else 10).
+    /// The scan cycle in ms (the axes file's `cycle_ms`, [`Options::cycle_ms`], else the TwinCAT
+    /// tasks' cycle time, else 10).
     pub fn cycle_ms(&self) -> f64 {
         self.lowered.cycle_ms
     }

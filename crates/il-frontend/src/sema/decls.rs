@@ -1321,6 +1321,18 @@ impl Analyzer<'_> {
                     }
                 }
             }
+            // `E_State.Init` (CODESYS, TwinCAT): a value qualified by its enumeration's name
+            Operand::Var(v)
+                if matches!(ty, Type::Enum(id)
+                    if v.base.is(&self.model.types[id.0 as usize].name)
+                        && matches!(&v.accessors[..], [crate::ast::Accessor::Field(_)])) =>
+            {
+                let (Type::Enum(id), [crate::ast::Accessor::Field(value)]) = (ty, &v.accessors[..])
+                else {
+                    return None;
+                };
+                self.enum_index(*id, value)
+            }
             other => {
                 self.error(
                     code::E1025,

@@ -95,6 +95,27 @@ impl Env<'_> {
         self.decls.globals.get(&key).cloned()
     }
 
+    /// A value of an enumeration qualified by the type's name with a dot, `E_State.Init` (CODESYS and
+    /// TwinCAT write it so; IEC 61131-3 writes `E_State#Init`): the type's and the value's names as
+    /// declared, when `p` is no variable, no global list and the type declares the value.
+    pub fn qualified_enum_value(&self, p: &Place) -> Option<(Ident, Ident)> {
+        let (PlaceBase::Name(n), [Accessor::Field(v)]) = (&p.base, p.accessors.as_slice()) else {
+            return None;
+        };
+        if self.var_type(n).is_some() || self.decls.global_lists.contains_key(&n.key()) {
+            return None;
+        }
+        let decl = self.decls.types.get(&n.key())?;
+        let TypeDef::Enum { values, .. } = &decl.def else {
+            return None;
+        };
+        let value = values.iter().find(|e| e.name == *v)?;
+        Some((
+            Ident::new(decl.name.name.clone(), n.span),
+            Ident::new(value.name.name.clone(), v.span),
+        ))
+    }
+
     /// The enumeration that declares a bare value `red`, if exactly one does.
     fn enum_of_value(&self, value: &Ident) -> Option<TypeRef> {
         let mut found = self.decls.types.values().filter(|d| {
@@ -144,6 +165,9 @@ impl Env<'_> {
 
     /// The type of a place, or `None` when some part of it is unknown.
     pub fn place_type(&self, p: &Place) -> Option<TypeRef> {
+        if let Some((t, _)) = self.qualified_enum_value(p) {
+            return Some(TypeRef::Named(t));
+        }
         let mut skip = 0;
         let mut t = match &p.base {
             PlaceBase::Name(n) => match self.var_type(n) {

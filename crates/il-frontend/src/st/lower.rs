@@ -1333,6 +1333,9 @@ impl<'d> PouLowering<'d> {
     }
 
     fn pure_place(&self, p: &Place) -> Option<Operand> {
+        if let Some((t, v)) = self.env().qualified_enum_value(p) {
+            return Some(Operand::enum_value(t, v, p.span));
+        }
         let base = match &p.base {
             PlaceBase::Address(a) if p.accessors.is_empty() => {
                 return Some(Operand::Address(a.clone()))

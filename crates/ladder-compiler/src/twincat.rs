@@ -1,0 +1,594 @@
+//! TwinCAT 3 source files: the one-object-per-file XML that TwinCAT 3's PLC projects keep on disk
+//! (`NAME.TcPOU`, `NAME.TcDUT`, `NAME.TcGVL`, `NAME.TcIO`, `NAME.TcTTO`), root `<TcPlcObject>`, with
+//! the declaration text in `<Declaration><![CDATA[...]]>` and an ST body in
+//! `<Implementation><ST><![CDATA[...]]>`; a POU's `<Method>`, `<Action>` and `<Property>` children
+//! carry their own declaration and implementation the same way.
+//!
+//! Input: the XML text of one file. Output: for a POU, DUT, GVL or interface, the same text as IEC
+//! 61131-3 source (as [`crate::codesys_v2`]): every byte outside the declaration and body texts
+//! blanked (line breaks kept, so every line and column is the file's own), with `END_METHOD`,
+//! `END_PROGRAM`/`END_FUNCTION_BLOCK`/`END_FUNCTION`, the `ACTIONS` block's keywords and
+//! `END_INTERFACE` written into blank places of the markup after the texts they close; for a GVL also
+//! its name (its members are reachable qualified, `GVL.x`); for a task (`.TcTTO`) its name, cycle
+//! time, priority and the programs it calls. Invariants: never panics; a body in a graphical language
+//! (TwinCAT's LD/FBD network list `<NWL>`, `<CFC>`, `<SFC>`) is one located E0321 naming it; a file
+//! whose root is not `<TcPlcObject>` gives `None`.
+
+use crate::codesys_v2::{local_name, root_name, Source};
+use crate::xml::{self, Element};
+use diagnostics::{code, Diagnostic, FileId, Span};
+
+/// What a TwinCAT 3 object file holds, read.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TcObject {
+    /// A POU, DUT, GVL or interface (or an object without IEC text, such as a visualisation: blank)
+    /// as IEC 61131-3 source, the file's length and line breaks kept.
+    Source {
+        /// The text, to be parsed as an `.st` file.
+        text: String,
+        /// The name of a global variable list (`<GVL Name="GVL_Main">`): its `VAR_GLOBAL` blocks are
+        /// that list, so `GVL_Main.x` reaches a member.
+        list: Option<String>,
+        /// Notes on what was read otherwise than TwinCAT runs it (W0322: `AT %I*` variables read as
+        /// plain variables).
+        notes: Vec<Diagnostic>,
+    },
+    /// A task (`.TcTTO`).
+    Task(TcTask),
+}
+
+/// One TwinCAT task: `<Task Name="PlcTask"><CycleTime>10000</CycleTime><Priority>20</Priority>
+/// <PouCall><Name>MAIN</Name></PouCall></Task>`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TcTask {
+    /// The task's name.
+    pub name: String,
+    /// The `<Task>` start tag (byte range).
+    pub span: (usize, usize),
+    /// The cycle time in microseconds (`<CycleTime>`), when it is a positive integer.
+    pub cycle_us: Option<u64>,
+    /// `<Priority>`.
+    pub priority: Option<u32>,
+    /// The programs called, in order, with the byte range of each `<Name>`'s text.
+    pub programs: Vec<(String, (usize, usize))>,
+}
+
+/// The object of a TwinCAT 3 file, or the E0321 that says why it cannot be read; `None` when the
+/// file's root is not `<TcPlcObject>` (or the XML is not well-formed: the caller reports that).
+pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Diagnostic>>> {
+    if root_name(text).is_none_or(|n| local_name(n) != "TcPlcObject") {
+        return None;
+    }
+    let arena = xml::Arena::new();
+    let (root, err) = xml::parse(text, &arena);
+    if err.is_some() {
+        return None;
+    }
+    let root = root?;
+    let mut out = Source::blank(text);
+    let mut list = None;
+    // the declaration texts (byte ranges): bounds there may name a list's constant qualified
+    let declarations: Vec<(usize, usize)> = root
+        .walk()
+        .filter(|e| e.name() == "Declaration")
+        .map(|e| (e.tag_end(), e.end()))
+        .collect();
+    for obj in root.children {
+        match obj.name() {
+            "POU" => {
+                if let Err(d) = pou(file, &mut out, obj) {
+                    return Some(Err(d));
+                }
+            }
+            "DUT" => {
+                if let Some(d) = obj.child("Declaration") {
+                    out.copy(d);
+                }
+            }
+            "GVL" => {
+                if let Some(d) = obj.child("Declaration") {
+                    out.copy(d);
+                }
+                list = obj.attr("Name").map(str::to_string);
+            }
+            "Itf" => {
+                if let Some(d) = obj.child("Declaration") {
+                    let at = out.copy(d);
+                    out.place_last(at, "END_INTERFACE");
+                }
+            }
+            "Task" => return Some(Ok(TcObject::Task(task(obj)))),
+            _ => {}
+        }
+    }
+    let mut text = out.finish();
+    let unlinked = unlink_io(&mut text);
+    for &(s, e) in &declarations {
+        unqualify_bounds(&mut text, s, e);
+    }
+    let notes = unlinked
+        .first()
+        .map(|&(s, e)| {
+            Diagnostic::new(
+                code::W0322,
+                diagnostics::Severity::Note,
+                format!(
+                    "{} `AT %I*`/`%Q*`/`%M*` declaration(s) read as plain variables: TwinCAT links \
+                     them to I/O in the system configuration (.tsproj), which ladderc does not read",
+                    unlinked.len()
+                ),
+            )
+            .at(Span::new(file, s, e))
+            .with_hint(
+                "set such inputs with --stimulus and read outputs with --watch, by the variable's \
+                 name; write a full address (`AT %IX0.0`) to place one in the process image",
+            )
+        })
+        .into_iter()
+        .collect();
+    Some(Ok(TcObject::Source { text, list, notes }))
+}
+
+/// Blanks each `AT %I*`, `AT %Q*` and `AT %M*` of the IEC text (outside comments and strings),
+/// so that the variable is a plain one, and writes `VAR PERSISTENT` as `VAR RETAIN`; returns the
+/// byte ranges of the `AT` placeholders.
+fn unlink_io(text: &mut String) -> Vec<(usize, usize)> {
+    let b = text.as_bytes();
+    let n = b.len();
+    let mut found = Vec::new();
+    // `PERSISTENT` after VAR, VAR_GLOBAL (or RETAIN, CONSTANT): start, and whether RETAIN is written
+    let mut persistent: Vec<(usize, bool)> = Vec::new();
+    let mut prev_word: &[u8] = b"";
+    let mut i = 0;
+    while i < n {
+        match b[i] {
+            b'(' if b.get(i + 1) == Some(&b'*') => {
+                i = find_from(b, i + 2, b"*)").map_or(n, |e| e + 2);
+            }
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                i = find_from(b, i + 2, b"\n").unwrap_or(n);
+            }
+            q @ (b'\'' | b'"') => {
+                i += 1;
+                while i < n && b[i] != q && b[i] != b'\n' {
+                    i += if b[i] == b'$' { 2 } else { 1 };
+                }
+                i += 1;
+            }
+            c if c.is_ascii_alphabetic() || c == b'_' => {
+                let start = i;
+                while i < n && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                    i += 1;
+                }
+                let word = &b[start..i];
+                if word.eq_ignore_ascii_case(b"PERSISTENT")
+                    && [&b"VAR"[..], b"VAR_GLOBAL", b"RETAIN", b"CONSTANT"]
+                        .iter()
+                        .any(|w| prev_word.eq_ignore_ascii_case(w))
+                {
+                    let mut k = i;
+                    while k < n && b[k].is_ascii_whitespace() {
+                        k += 1;
+                    }
+                    let retain_next = b
+                        .get(k..k + 6)
+                        .is_some_and(|w| w.eq_ignore_ascii_case(b"RETAIN"));
+                    persistent.push((
+                        start,
+                        retain_next || prev_word.eq_ignore_ascii_case(b"RETAIN"),
+                    ));
+                }
+                prev_word = word;
+                let word_is_at = i - start == 2 && word.eq_ignore_ascii_case(b"AT");
+                let preceded = start == 0 || !b[start - 1].is_ascii_alphanumeric();
+                if word_is_at && preceded {
+                    let mut k = i;
+                    while k < n && (b[k] == b' ' || b[k] == b'\t') {
+                        k += 1;
+                    }
+                    if k + 2 < n
+                        && b[k] == b'%'
+                        && matches!(b[k + 1].to_ascii_uppercase(), b'I' | b'Q' | b'M')
+                        && b[k + 2] == b'*'
+                    {
+                        found.push((start, k + 3));
+                        i = k + 3;
+                    }
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    if !found.is_empty() || !persistent.is_empty() {
+        let mut bytes = std::mem::take(text).into_bytes();
+        for &(s, e) in &found {
+            bytes[s..e].fill(b' ');
+        }
+        // PERSISTENT (TwinCAT, CODESYS: kept over a download too) is read as RETAIN, the same length
+        for &(s, retain) in &persistent {
+            let with: &[u8; 10] = if retain { b"          " } else { b"RETAIN    " };
+            bytes[s..s + 10].copy_from_slice(with);
+        }
+        // only ASCII was blanked
+        *text = String::from_utf8(bytes).unwrap_or_default();
+    }
+    found
+}
+
+/// Blanks the list name of each qualified constant (`GVL_Param.cMax` in `ARRAY[1..GVL_Param.cMax]`,
+/// `STRING(GVL.N)`, `DINT(GVL.A..GVL.B)`) inside brackets and parentheses of the declaration text at
+/// `start..end`, so the constant is looked up by its name among the constants of every file given
+/// (the IEC bound grammar has no qualified names; positions stay the file's own).
+fn unqualify_bounds(text: &mut String, start: usize, end: usize) {
+    let b = text.as_bytes();
+    let end = end.min(b.len());
+    let mut blanks = Vec::new();
+    let mut depth = 0usize;
+    let mut i = start.min(end);
+    while i < end {
+        match b[i] {
+            b'(' if b.get(i + 1) == Some(&b'*') => {
+                i = find_from(b, i + 2, b"*)").map_or(end, |e| e + 2);
+            }
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                i = find_from(b, i + 2, b"\n").unwrap_or(end);
+            }
+            b'{' => i = find_from(b, i + 1, b"}").map_or(end, |e| e + 1),
+            q @ (b'\'' | b'"') => {
+                i += 1;
+                while i < end && b[i] != q && b[i] != b'\n' {
+                    i += if b[i] == b'$' { 2 } else { 1 };
+                }
+                i += 1;
+            }
+            b'[' | b'(' => {
+                depth += 1;
+                i += 1;
+            }
+            b']' | b')' => {
+                depth = depth.saturating_sub(1);
+                i += 1;
+            }
+            c if c.is_ascii_alphabetic() || c == b'_' => {
+                let word = i;
+                while i < end && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                    i += 1;
+                }
+                let next_is_name = b
+                    .get(i + 1)
+                    .is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_');
+                if depth > 0 && b.get(i) == Some(&b'.') && next_is_name {
+                    blanks.push((word, i + 1));
+                    i += 1;
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    if !blanks.is_empty() {
+        let mut bytes = std::mem::take(text).into_bytes();
+        for (s, e) in blanks {
+            bytes[s..e].fill(b' ');
+        }
+        *text = String::from_utf8(bytes).unwrap_or_default();
+    }
+}
+
+/// The offset of `pat` in `b` at or after `from`.
+fn find_from(b: &[u8], from: usize, pat: &[u8]) -> Option<usize> {
+    b.get(from..)?
+        .windows(pat.len())
+        .position(|w| w == pat)
+        .map(|p| p + from)
+}
+
+/// The task of a `<Task>` element.
+fn task(el: &Element) -> TcTask {
+    let number = |name: &str| el.child(name).map(|c| c.text_ref().trim().to_string());
+    TcTask {
+        name: el.attr("Name").unwrap_or("PlcTask").to_string(),
+        span: (el.tag_start(), el.tag_end()),
+        cycle_us: number("CycleTime")
+            .and_then(|t| t.parse::<u64>().ok())
+            .filter(|&c| c > 0),
+        priority: number("Priority").and_then(|t| t.parse::<u32>().ok()),
+        programs: el
+            .children_named("PouCall")
+            .filter_map(|c| c.child("Name"))
+            .map(|n| {
+                let raw = n.text_ref();
+                let name = raw.trim().to_string();
+                let lead = raw.len() - raw.trim_start().len();
+                let start = n.tag_end() + lead;
+                (name.clone(), (start, start + name.len()))
+            })
+            .filter(|(n, _)| !n.is_empty())
+            .collect(),
+    }
+}
+
+/// The first word of a declaration, upper case, after blanks, pragmas (`{attribute ...}`) and
+/// comments (`(* *)`, `//`).
+fn first_keyword(text: &str) -> String {
+    let mut rest = text;
+    loop {
+        rest = rest.trim_start();
+        if let Some(r) = rest.strip_prefix('{') {
+            rest = r.find('}').map_or("", |e| &r[e + 1..]);
+        } else if let Some(r) = rest.strip_prefix("(*") {
+            rest = r.find("*)").map_or("", |e| &r[e + 2..]);
+        } else if let Some(r) = rest.strip_prefix("//") {
+            rest = r.find('\n').map_or("", |e| &r[e..]);
+        } else {
+            break;
+        }
+    }
+    rest.split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+        .next()
+        .unwrap_or("")
+        .to_ascii_uppercase()
+}
+
+/// Copies a `<POU>`: its declaration and body, its methods (and properties, which the ST front end
+/// reports) before the POU's end keyword, its actions in an `ACTIONS` block after it.
+fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnostic>> {
+    let name = el.attr("Name").unwrap_or("?").to_string();
+    let Some(decl) = el.child("Declaration") else {
+        return Err(unreadable(
+            file,
+            el,
+            format!("TwinCAT POU `{name}` has no <Declaration>"),
+            HINT_DECLARATION,
+        ));
+    };
+    let header = decl.text_ref();
+    let (end_keyword, is_fb) = match first_keyword(&header).as_str() {
+        "PROGRAM" => ("END_PROGRAM", false),
+        "FUNCTION_BLOCK" => ("END_FUNCTION_BLOCK", true),
+        "FUNCTION" => ("END_FUNCTION", false),
+        _ => {
+            return Err(unreadable(
+                file,
+                decl,
+                format!(
+                    "TwinCAT POU `{name}`: its <Declaration> does not begin with PROGRAM, \
+                     FUNCTION_BLOCK or FUNCTION"
+                ),
+                HINT_DECLARATION,
+            ))
+        }
+    };
+    let mut at = out.copy(decl);
+    if let Some(body) = body_of(file, el, &name)? {
+        at = out.copy(body);
+    }
+    let members: Vec<&Element> = el
+        .children
+        .iter()
+        .filter(|c| matches!(c.name(), "Method" | "Action" | "Property"))
+        .collect();
+    // an action that comes before a method of a function block is written as a method without
+    // parameters (the block's end must follow its last method); else actions follow the POU's end
+    let last_method = members
+        .iter()
+        .rposition(|m| m.name() != "Action")
+        .map_or(0, |k| k + 1);
+    let no_room = || {
+        unreadable(
+            file,
+            el,
+            format!("TwinCAT POU `{name}` has no room for its keywords"),
+            "check the file: its markup was changed by hand",
+        )
+    };
+    let mut in_actions = false;
+    for (k, m) in members.iter().enumerate() {
+        let m_name = m.attr("Name").unwrap_or("?");
+        let what = format!("{name}.{m_name}");
+        let next = members.get(k + 1).map_or(el.end(), |n| n.tag_start());
+        match m.name() {
+            "Action" => {
+                let body = body_of(file, m, &what)?;
+                // the keywords go into the markup before the body's text
+                let limit = body.map_or(next, |b| b.tag_end());
+                if k >= last_method || !is_fb {
+                    if !in_actions {
+                        at = out
+                            .place(at, limit, end_keyword)
+                            .and_then(|w| out.place(w, limit, "ACTIONS"))
+                            .ok_or_else(no_room)?;
+                        in_actions = true;
+                    }
+                    at = out
+                        .place(at, limit, &format!("ACTION {m_name}:"))
+                        .ok_or_else(no_room)?;
+                } else {
+                    at = out
+                        .place(at, limit, &format!("METHOD {m_name}"))
+                        .ok_or_else(no_room)?;
+                }
+                if let Some(body) = body {
+                    at = out.copy(body);
+                }
+                let end = if in_actions {
+                    "END_ACTION"
+                } else {
+                    "END_METHOD"
+                };
+                at = out.place(at, next, end).ok_or_else(no_room)?;
+            }
+            "Method" => {
+                if let Some(d) = m.child("Declaration") {
+                    at = out.copy(d);
+                }
+                if let Some(body) = body_of(file, m, &what)? {
+                    at = out.copy(body);
+                }
+                at = out.place(at, next, "END_METHOD").ok_or_else(no_room)?;
+            }
+            _ => {
+                // a PROPERTY: its declaration only (the ST front end reports it, E0303)
+                if let Some(d) = m.child("Declaration") {
+                    at = out.copy(d);
+                }
+                at = out.place(at, next, "END_PROPERTY").ok_or_else(no_room)?;
+            }
+        }
+    }
+    if in_actions {
+        out.place_last(at, "END_ACTIONS");
+    } else {
+        out.place_last(at, end_keyword);
+    }
+    Ok(())
+}
+
+/// The ST text element of `el`'s `<Implementation>` (`<ST>`); `Ok(None)` without one; E0321 for a
+/// body in another language.
+fn body_of<'e, 'a>(
+    file: FileId,
+    el: &'e Element<'a>,
+    what: &str,
+) -> Result<Option<&'e Element<'a>>, Box<Diagnostic>> {
+    let Some(imp) = el.child("Implementation") else {
+        return Ok(None);
+    };
+    let Some(lang) = imp.children.first() else {
+        return Ok(None);
+    };
+    if lang.name() == "ST" {
+        return Ok(Some(lang));
+    }
+    let language = match lang.name() {
+        "NWL" => "LD or FBD (TwinCAT's network list, <NWL>)",
+        "CFC" => "CFC",
+        "SFC" => "SFC",
+        "IL" => "IL",
+        other => other,
+    };
+    Err(unreadable(
+        file,
+        lang,
+        format!(
+            "TwinCAT object file: the body of `{what}` is in {language}, which ladderc cannot read in \
+             a TwinCAT source file (it reads ST bodies)"
+        ),
+        "export the POU from TwinCAT as PLCopen XML (right-click > Export PLCopenXML) and give \
+         ladderc that file: it reads LD, FBD and SFC there",
+    ))
+}
+
+/// The hint of a POU that cannot be read for its declaration.
+const HINT_DECLARATION: &str =
+    "check the file: TwinCAT writes a POU's declaration text (PROGRAM, FUNCTION_BLOCK or FUNCTION) first";
+
+fn unreadable(file: FileId, el: &Element, msg: String, hint: &str) -> Box<Diagnostic> {
+    Box::new(
+        Diagnostic::error(code::E0321, msg)
+            .at(Span::new(file, el.tag_start(), el.tag_end()))
+            .with_hint(hint),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const FB: &str = "<?xml version=\"1.0\" encoding=\"utf-8\"?>
+<TcPlcObject Version=\"1.1.0.1\">
+  <POU Name=\"FB_Count\" Id=\"{1}\" SpecialFunc=\"None\">
+    <Declaration><![CDATA[{attribute 'x'}
+FUNCTION_BLOCK FB_Count
+VAR n : INT; END_VAR
+]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[n := n + 1;]]></ST>
+    </Implementation>
+    <Method Name=\"Reset\" Id=\"{2}\">
+      <Declaration><![CDATA[METHOD Reset : BOOL
+]]></Declaration>
+      <Implementation>
+        <ST><![CDATA[n := 0;]]></ST>
+      </Implementation>
+    </Method>
+    <Action Name=\"Twice\" Id=\"{3}\">
+      <Implementation>
+        <ST><![CDATA[n := n * 2;]]></ST>
+      </Implementation>
+    </Action>
+  </POU>
+</TcPlcObject>";
+
+    #[test]
+    fn a_function_block_keeps_its_positions_and_gets_its_keywords() {
+        let Some(Ok(TcObject::Source { text, list, .. })) = object_source(FileId(0), FB) else {
+            panic!("a TwinCAT POU");
+        };
+        assert_eq!(list, None);
+        assert_eq!(text.len(), FB.len());
+        assert_eq!(text.lines().count(), FB.lines().count());
+        let at = |s: &str| text.find(s).unwrap_or_else(|| panic!("{s} in {text}"));
+        assert_eq!(at("n := n + 1;"), FB.find("n := n + 1;").unwrap_or(0));
+        assert!(at("METHOD Reset") < at("n := 0;"));
+        assert!(at("n := 0;") < at("END_METHOD"));
+        assert!(at("END_METHOD") < at("END_FUNCTION_BLOCK"));
+        assert!(at("END_FUNCTION_BLOCK") < at("ACTIONS"));
+        assert!(at("ACTION Twice:") < at("n := n * 2;"));
+        assert!(at("n := n * 2;") < at("END_ACTION "));
+        assert!(text.trim_end().ends_with("END_ACTIONS"));
+    }
+
+    #[test]
+    fn a_task_file_gives_its_cycle_time_and_programs() {
+        let tto = "<?xml version=\"1.0\"?>\n<TcPlcObject><Task Name=\"PlcTask\"><CycleTime>5000</CycleTime>\
+                   <Priority>20</Priority><PouCall><Name> MAIN </Name></PouCall></Task></TcPlcObject>";
+        let Some(Ok(TcObject::Task(t))) = object_source(FileId(0), tto) else {
+            panic!("a task");
+        };
+        assert_eq!(
+            (t.name.as_str(), t.cycle_us, t.priority),
+            ("PlcTask", Some(5000), Some(20))
+        );
+        let (name, (s, e)) = &t.programs[0];
+        assert_eq!((name.as_str(), &tto[*s..*e]), ("MAIN", "MAIN"));
+    }
+
+    #[test]
+    fn a_network_body_is_one_located_error_and_other_roots_are_not_twincat() {
+        let ld = "<TcPlcObject><POU Name=\"P\"><Declaration><![CDATA[PROGRAM P]]></Declaration>\
+                  <Implementation><NWL><XmlArchive/></NWL></Implementation></POU></TcPlcObject>";
+        let Some(Err(d)) = object_source(FileId(0), ld) else {
+            panic!("an error");
+        };
+        assert_eq!(d.code, code::E0321);
+        assert!(d.message.contains("LD or FBD"), "{}", d.message);
+        assert!(object_source(FileId(0), "<project/>").is_none());
+        assert_eq!(first_keyword("(* c *) // x\n {a 'b'} program P"), "PROGRAM");
+    }
+
+    #[test]
+    fn io_links_are_blanked_outside_comments_and_strings() {
+        let mut text = "b AT %I* : BOOL; (* x AT %Q* *) s : STRING := 'AT %M*'; q  at\t%Q* : INT; r AT%I* : INT; cat %I*"
+            .to_string();
+        let found = unlink_io(&mut text);
+        assert_eq!(found.len(), 3);
+        assert!(text.starts_with("b        : BOOL;"), "{text}");
+        assert!(text.contains("(* x AT %Q* *)") && text.contains("'AT %M*'"));
+        assert!(
+            text.contains("q         : INT; r       : INT;") && text.ends_with("cat %I*"),
+            "{text}"
+        );
+        let mut text =
+            "a : ARRAY[1..GVL_P.cMax] OF STRING(GVL.N); t : DINT(GVL.A..GVL.B); y := s.x;"
+                .to_string();
+        let len = text.len();
+        unqualify_bounds(&mut text, 0, len);
+        assert_eq!(
+            text,
+            "a : ARRAY[1..      cMax] OF STRING(    N); t : DINT(    A..    B); y := s.x;"
+        );
+        let mut text = "VAR_GLOBAL PERSISTENT x : INT; END_VAR VAR RETAIN PERSISTENT y : INT; END_VAR persistent := 1;".to_string();
+        assert!(unlink_io(&mut text).is_empty());
+        assert_eq!(text, "VAR_GLOBAL RETAIN     x : INT; END_VAR VAR RETAIN            y : INT; END_VAR persistent := 1;");
+    }
+}

@@ -1,0 +1,286 @@
+//! TwinCAT 3 PLC projects: a `.plcproj` file (MSBuild XML) or a folder holding one stands for the
+//! object files it lists (`<Compile Include="POUs\MAIN.TcPOU">`), and the tasks of its `.TcTTO` files
+//! become the configuration that runs the programs.
+//!
+//! Input: the command line's paths; the units read from TwinCAT object files and their tasks. Output:
+//! the paths of the object files to read, in the project's order; a configuration unit (the tasks,
+//! each program instance named like its program) and the base scan cycle (the greatest common divisor
+//! of the tasks' cycle times). Invariants: never panics; a path that is no TwinCAT project is kept as
+//! it is; without a task file the one PROGRAM runs, else `MAIN`, else one located E0322; a task
+//! calling a program no file declares is one E0322 at its name in the task file.
+
+use crate::pipeline::Session;
+use diagnostics::{code, Diagnostic, Diagnostics, FileId, Span};
+use il_frontend::ast::{CompilationUnit, LibraryElement, PouKind};
+use ladder_compiler::twincat::TcTask;
+use std::path::{Path, PathBuf};
+
+/// The extensions of the TwinCAT object files ladderc reads (lower case).
+pub const OBJECT_EXTENSIONS: [&str; 5] = ["tcpou", "tcdut", "tcgvl", "tcio", "tctto"];
+
+/// Whether `path` names a TwinCAT object file or project file by its extension.
+pub fn is_twincat_file(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .is_some_and(|e| OBJECT_EXTENSIONS.contains(&e.as_str()) || e == "plcproj")
+}
+
+/// `paths` with each `.plcproj` file, and each folder holding one (directly or up to three folders
+/// down, as a `.tsproj`/`.sln` folder does), replaced by the object files the project lists.
+pub fn expand(session: &Session, paths: &[PathBuf], diags: &mut Diagnostics) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for p in paths {
+        let project = if has_extension(p, "plcproj") {
+            Some(p.clone())
+        } else if session.disk && p.is_dir() && !p.join("plc.xml").is_file() {
+            let mut found = Vec::new();
+            find_projects(p, 0, &mut found);
+            found.sort();
+            match found.len() {
+                0 => None,
+                1 => found.pop(),
+                _ => {
+                    let list: Vec<String> = found
+                        .iter()
+                        .map(|f| f.strip_prefix(p).unwrap_or(f).display().to_string())
+                        .collect();
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0322,
+                            format!(
+                                "{} holds {} TwinCAT PLC projects: {}",
+                                p.display(),
+                                found.len(),
+                                list.join(", ")
+                            ),
+                        )
+                        .with_hint("give the .plcproj file of the one to read"),
+                    );
+                    continue;
+                }
+            }
+        } else {
+            None
+        };
+        match project {
+            Some(project) => match session.read_file(&project) {
+                Ok(text) => out.extend(listed_files(&project, &text)),
+                // reading it as an input reports the error
+                Err(_) => out.push(project),
+            },
+            None => out.push(p.clone()),
+        }
+    }
+    out
+}
+
+fn has_extension(p: &Path, ext: &str) -> bool {
+    p.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case(ext))
+}
+
+/// The `.plcproj` files in `dir` and its sub-folders, at most three levels down.
+fn find_projects(dir: &Path, depth: usize, found: &mut Vec<PathBuf>) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    let mut subdirs = Vec::new();
+    for e in entries.flatten() {
+        let path = e.path();
+        if path.is_dir() {
+            subdirs.push(path);
+        } else if has_extension(&path, "plcproj") {
+            found.push(path);
+        }
+    }
+    if found.is_empty() && depth < 3 {
+        subdirs.sort();
+        for d in subdirs {
+            find_projects(&d, depth + 1, found);
+        }
+    }
+}
+
+/// The object files a `.plcproj` lists (`<Compile Include="POUs\MAIN.TcPOU">`), relative to its
+/// folder, in its order; the other items (visualisations, text lists) are left out.
+fn listed_files(project: &Path, text: &str) -> Vec<PathBuf> {
+    let dir = project.parent().unwrap_or(Path::new(""));
+    let arena = ladder_compiler::xml::Arena::new();
+    let (root, _) = ladder_compiler::xml::parse(text, &arena);
+    let Some(root) = root else {
+        return vec![project.to_path_buf()];
+    };
+    let mut out = Vec::new();
+    for el in root.walk() {
+        if el.name() != "Compile" {
+            continue;
+        }
+        let Some(include) = el.attr("Include") else {
+            continue;
+        };
+        let rel: PathBuf = include.split(['\\', '/']).collect();
+        if is_twincat_file(&rel) && !has_extension(&rel, "plcproj") {
+            out.push(dir.join(rel));
+        }
+    }
+    out
+}
+
+/// The configuration that runs a TwinCAT project's programs: from its tasks, else the one PROGRAM
+/// or `MAIN`. `units` are all units read; `twincat` says which came from TwinCAT object files;
+/// `failed` names the object files that could not be read (a task calling one is not reported again).
+/// A task's call of a library program (`VisuElems.Visu_Prg`, TwinCAT's visualisation) is left out.
+/// Returns the base cycle in ms when tasks give one. Nothing is added when a unit already has a
+/// CONFIGURATION.
+pub fn configure(
+    session: &mut Session,
+    units: &mut Vec<CompilationUnit>,
+    twincat: &[bool],
+    tasks: &[(FileId, TcTask)],
+    failed: &[String],
+) -> Option<f64> {
+    let has_config = units.iter().any(|u| {
+        u.items
+            .iter()
+            .any(|i| matches!(i, LibraryElement::Configuration(_)))
+    });
+    if has_config {
+        return None;
+    }
+    // the PROGRAMs of the TwinCAT files (name, span of its name)
+    let programs: Vec<(String, Span)> = units
+        .iter()
+        .zip(twincat.iter().chain(std::iter::repeat(&false)))
+        .filter(|(_, &tc)| tc)
+        .flat_map(|(u, _)| u.items.iter())
+        .filter_map(|i| match i {
+            LibraryElement::Pou(p) if p.kind == PouKind::Program => {
+                Some((p.name.name.clone(), p.name.span))
+            }
+            _ => None,
+        })
+        .collect();
+    let all_programs: Vec<String> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|i| match i {
+            LibraryElement::Pou(p) if p.kind == PouKind::Program => Some(p.name.key()),
+            _ => None,
+        })
+        .collect();
+    let mut lines = Vec::new();
+    let mut instances: Vec<String> = Vec::new();
+    let mut cycles = Vec::new();
+    let tasks: Vec<&(FileId, TcTask)> = tasks
+        .iter()
+        .filter(|(_, t)| !t.programs.is_empty())
+        .collect();
+    if tasks.is_empty() {
+        if programs.len() < 2 {
+            return None;
+        }
+        let Some((main, _)) = programs
+            .iter()
+            .find(|(n, _)| n.eq_ignore_ascii_case("MAIN"))
+        else {
+            let names: Vec<&str> = programs.iter().map(|(n, _)| n.as_str()).collect();
+            session.diags.push(
+                Diagnostic::error(
+                    code::E0322,
+                    format!(
+                        "{} TwinCAT programs ({}) and no task file: which one runs is not said",
+                        programs.len(),
+                        names.join(", ")
+                    ),
+                )
+                .at(programs[0].1)
+                .with_hint(
+                    "give the project's task file (.TcTTO) or its .plcproj, or name the program to \
+                     run MAIN",
+                ),
+            );
+            return None;
+        };
+        lines.push("TASK PlcTask(INTERVAL := T#10ms, PRIORITY := 20);".to_string());
+        lines.push(format!("PROGRAM {main} WITH PlcTask : {main};"));
+    } else {
+        for (file, t) in tasks {
+            let task_name = safe_name(&t.name).unwrap_or_else(|| "PlcTask".to_string());
+            let cycle = t.cycle_us.unwrap_or(10_000);
+            let task_line = format!(
+                "TASK {task_name}(INTERVAL := T#{cycle}us, PRIORITY := {});",
+                t.priority.unwrap_or(20)
+            );
+            let before = instances.len();
+            let mut calls = Vec::new();
+            for (name, (s, e)) in &t.programs {
+                if name.contains('.') || failed.iter().any(|f| f.eq_ignore_ascii_case(name)) {
+                    continue;
+                }
+                let known =
+                    safe_name(name).filter(|n| all_programs.contains(&n.to_ascii_uppercase()));
+                let Some(program) = known else {
+                    session.diags.push(
+                        Diagnostic::error(
+                            code::E0322,
+                            format!(
+                                "task `{}` calls `{name}`, which no file given declares as a PROGRAM",
+                                t.name
+                            ),
+                        )
+                        .at(Span::new(*file, *s, *e))
+                        .with_hint("give the program's .TcPOU file too, or the .plcproj that lists it"),
+                    );
+                    continue;
+                };
+                if instances.iter().any(|i| i.eq_ignore_ascii_case(&program)) {
+                    continue;
+                }
+                calls.push(format!("PROGRAM {program} WITH {task_name} : {program};"));
+                instances.push(program);
+            }
+            // a task that runs none of the programs read (only a visualisation) is left out
+            if instances.len() > before {
+                cycles.push(cycle);
+                lines.push(task_line);
+                lines.extend(calls);
+            }
+        }
+        if instances.is_empty() {
+            return None;
+        }
+    }
+    let text = format!(
+        "CONFIGURATION TwinCAT\nRESOURCE PLC ON PLC\n{}\nEND_RESOURCE\nEND_CONFIGURATION\n",
+        lines.join("\n")
+    );
+    let file = session.map.add("<TwinCAT tasks>", text);
+    let src = session.map.get(file).text.clone();
+    let (unit, _, _) = il_frontend::st::file::parse_text(
+        file,
+        &src,
+        "TwinCAT",
+        il_frontend::st::file::Lang::St,
+        &mut session.diags,
+    );
+    units.push(unit);
+    let gcd = cycles.into_iter().reduce(|a, b| {
+        let (mut a, mut b) = (a, b);
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    })?;
+    Some(gcd as f64 / 1000.0)
+}
+
+/// `name` when it is an IEC identifier (so it can be written into the configuration's text).
+fn safe_name(name: &str) -> Option<String> {
+    let mut chars = name.chars();
+    let first = chars.next()?;
+    ((first.is_ascii_alphabetic() || first == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_'))
+    .then(|| name.to_string())
+}

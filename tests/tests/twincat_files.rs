@@ -1,0 +1,281 @@
+//! TwinCAT 3 source files (issue #13): `.TcPOU`, `.TcDUT`, `.TcGVL`, `.TcIO` and `.TcTTO` objects,
+//! read as ST in place, and a `.plcproj` project (or a folder holding one) standing for the files it
+//! lists, run end to end through `ladderc run`. The fixtures under `fixtures/twincat/` are written for
+//! these tests: a project with a DUT, a `qualified_only` GVL, a GVL of constants used in an array
+//! bound, an enumeration with its base type after it used with dotted values (`E_Mode.Full`), a task
+//! of 20 ms, a visualisation task, a function block with a method and an action, and
+//! MAIN; a GVL of `AT %I*`/`%Q*` I/O links and a PERSISTENT list with a program using them; a POU
+//! with an LD network body; two programs without a task file.
+
+mod common;
+use common::{assert_ok, column, diagnostic_heads, ladderc, run_traced, run_traced_files};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/twincat")
+        .join(rel)
+}
+
+const WATCH: &str =
+    "MAIN.fbCounter.nCount,MAIN.nScaled,GVL.stData.nTotal,GVL.stData.bHigh,MAIN.aSeen[3],MAIN.eMode";
+
+/// The trace of the fixture project's MAIN: the counter counts to GVL.nLimit (5) and is reset by its
+/// action `ResetCount` (then GVL.stData.bHigh is set); the method `Scaled` gives 10 x the count;
+/// `aSeen : ARRAY[1..cSeen]` takes its bound from GVL_Const's constant (another file); `eMode`, of
+/// the enumeration `E_Mode` written with its base type after it (`(Counting := 0, Full := 10) INT`),
+/// starts as `E_Mode.Counting` and becomes `E_Mode.Full` (values qualified with a dot) once bHigh.
+fn assert_project_trace(trace: &str, cycle_ms: f64) {
+    assert_eq!(
+        column(trace, "MAIN.fbCounter.nCount"),
+        [1.0, 2.0, 3.0, 4.0, 0.0, 1.0, 2.0]
+    );
+    assert_eq!(
+        column(trace, "MAIN.eMode"),
+        [0.0, 0.0, 0.0, 0.0, 10.0, 10.0, 10.0]
+    );
+    assert_eq!(
+        column(trace, "MAIN.aSeen[3]"),
+        column(trace, "MAIN.fbCounter.nCount")
+    );
+    assert_eq!(
+        column(trace, "MAIN.nScaled"),
+        [10.0, 20.0, 30.0, 40.0, 0.0, 10.0, 20.0]
+    );
+    assert_eq!(
+        column(trace, "GVL.stData.nTotal"),
+        [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]
+    );
+    assert_eq!(
+        column(trace, "GVL.stData.bHigh"),
+        [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]
+    );
+    let times: Vec<f64> = (0..7).map(|k| k as f64 * cycle_ms).collect();
+    assert_eq!(column(trace, "time_ms"), times);
+}
+
+#[test]
+fn a_project_folder_runs_with_its_methods_actions_dut_qualified_gvl_and_task_period() {
+    let (trace, stderr) = run_traced(&fixture("project"), 7, WATCH);
+    // the task file's CycleTime of 20000 us is the scan cycle (the visualisation task, which calls
+    // a library program, is left out)
+    assert_project_trace(&trace, 20.0);
+    assert!(!stderr.contains("error"), "{stderr}");
+}
+
+#[test]
+fn the_plcproj_file_reads_the_files_it_lists_as_the_folder_does() {
+    let (trace, _) = run_traced(&fixture("project/Demo.plcproj"), 7, WATCH);
+    assert_project_trace(&trace, 20.0);
+}
+
+#[test]
+fn object_files_given_one_by_one_run_without_a_task_file() {
+    let files = [
+        fixture("project/POUs/MAIN.TcPOU"),
+        fixture("project/POUs/FB_Counter.TcPOU"),
+        fixture("project/GVLs/GVL.TcGVL"),
+        fixture("project/GVLs/GVL_Const.TcGVL"),
+        fixture("project/DUTs/ST_Data.TcDUT"),
+        fixture("project/DUTs/E_Mode.TcDUT"),
+    ];
+    let refs: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
+    let (trace, _) = run_traced_files(&refs, 7, WATCH);
+    // no task file: the one PROGRAM runs at ladderc's default cycle of 10 ms
+    assert_project_trace(&trace, 10.0);
+}
+
+/// `ladderc --message-format short check FILES`: exit code and the error lines (up to the hint), the
+/// folder `strip` left out of their paths.
+fn check(files: &[PathBuf], strip: &Path) -> (Option<i32>, Vec<String>) {
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .args(files)
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        diagnostic_heads(&out.stderr, strip, false),
+    )
+}
+
+#[test]
+fn a_graphical_body_is_one_located_error() {
+    let dir = fixture("graphical");
+    let (code, heads) = check(&[dir.join("P_Ladder.TcPOU")], &dir);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        ["P_Ladder.TcPOU:11:7: error[E0321]: TwinCAT object file: the body of `P_Ladder` is in LD \
+          or FBD (TwinCAT's network list, <NWL>), which ladderc cannot read in a TwinCAT source \
+          file (it reads ST bodies)"]
+    );
+}
+
+#[test]
+fn two_programs_without_a_task_file_or_main_are_one_located_error_and_one_alone_runs() {
+    let dir = fixture("two_programs");
+    let (code, heads) = check(&[dir.join("P_Fill.TcPOU"), dir.join("P_Drain.TcPOU")], &dir);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        ["P_Fill.TcPOU:4:35: error[E0322]: 2 TwinCAT programs (P_Fill, P_Drain) and no task file: \
+          which one runs is not said"]
+    );
+    let (trace, _) = run_traced(&dir.join("P_Fill.TcPOU"), 3, "P_Fill.nLevel");
+    assert_eq!(column(&trace, "P_Fill.nLevel"), [1.0, 2.0, 3.0]);
+}
+
+fn pou(name: &str, decl: &str, body: &str, members: &str) -> String {
+    format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
+         <POU Name=\"{name}\" Id=\"{{1}}\" SpecialFunc=\"None\">\n    \
+         <Declaration><![CDATA[{decl}]]></Declaration>\n    <Implementation>\n      \
+         <ST><![CDATA[{body}]]></ST>\n    </Implementation>\n{members}  </POU>\n</TcPlcObject>\n"
+    )
+}
+
+#[test]
+fn diagnostics_point_into_the_twincat_file_and_a_task_naming_no_program_is_located() {
+    let dir = tempfile::tempdir().unwrap();
+    let main = dir.path().join("MAIN.TcPOU");
+    std::fs::write(
+        &main,
+        pou(
+            "MAIN",
+            "PROGRAM MAIN\nVAR\n\tn : INT;\nEND_VAR\n",
+            "n := n + 1;\nm := n;",
+            "",
+        ),
+    )
+    .unwrap();
+    let fb = dir.path().join("FB_Prop.TcPOU");
+    std::fs::write(
+        &fb,
+        pou(
+            "FB_Prop",
+            "FUNCTION_BLOCK FB_Prop\nVAR\n\tx : INT;\nEND_VAR\n",
+            "x := x + 1;",
+            "    <Property Name=\"Value\" Id=\"{2}\">\n      \
+             <Declaration><![CDATA[PROPERTY Value : INT]]></Declaration>\n      \
+             <Get Name=\"Get\" Id=\"{3}\">\n        <Declaration><![CDATA[VAR\nEND_VAR\n]]></Declaration>\n        \
+             <Implementation>\n          <ST><![CDATA[Value := x;]]></ST>\n        </Implementation>\n      \
+             </Get>\n    </Property>\n",
+        ),
+    )
+    .unwrap();
+    let task = dir.path().join("PlcTask.TcTTO");
+    std::fs::write(
+        &task,
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
+         <Task Name=\"PlcTask\" Id=\"{4}\">\n    <CycleTime>10000</CycleTime>\n    \
+         <Priority>20</Priority>\n    <PouCall>\n      <Name>P_Missing</Name>\n    </PouCall>\n  \
+         </Task>\n</TcPlcObject>\n",
+    )
+    .unwrap();
+    let (code, heads) = check(&[fb, task], dir.path());
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        [
+            "FB_Prop.TcPOU:13:29: error[E0303]: `FB_Prop` holds a PROPERTY: object-oriented \
+             extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+            "PlcTask.TcTTO:7:13: error[E0322]: task `PlcTask` calls `P_Missing`, which no file \
+             given declares as a PROGRAM",
+        ]
+    );
+    // a name error in the ST body: the line and column of the .TcPOU file
+    let (code, heads) = check(&[main], dir.path());
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        ["MAIN.TcPOU:11:1: error[E1001]: undeclared name `m`"]
+    );
+}
+
+#[test]
+fn io_links_are_plain_variables_set_by_the_stimulus_and_persistent_is_retain() {
+    let dir = fixture("io");
+    let tmp = tempfile::tempdir().unwrap();
+    let stim = tmp.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n1,GVL_IO.bStart,1\n3,GVL_IO.bStart,0\n4,GVL_IO.bStart,1\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(dir.join("GVL_IO.TcGVL"))
+        .arg(dir.join("P_Io.TcPOU"))
+        .args(["--cycles", "6", "--sanitize", "--stimulus"])
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", "GVL_IO.nStarts,GVL_IO.nLamp"])
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let trace = String::from_utf8_lossy(&out.stdout);
+    // each rising edge of the input counts in the PERSISTENT list; the output is 10 x the count
+    assert_eq!(
+        column(&trace, "GVL_IO.nStarts"),
+        [0.0, 1.0, 1.0, 1.0, 2.0, 2.0]
+    );
+    assert_eq!(
+        column(&trace, "GVL_IO.nLamp"),
+        [0.0, 10.0, 10.0, 10.0, 20.0, 20.0]
+    );
+    let notes: Vec<String> = String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .filter(|l| l.contains("W0322"))
+        .map(|l| l.replace(&format!("{}/", dir.display()), ""))
+        .map(|l| {
+            l.split_once(" (hint")
+                .map_or(l.clone(), |(h, _)| h.to_string())
+        })
+        .collect();
+    assert_eq!(
+        notes,
+        [
+            "GVL_IO.TcGVL:6:9: note[W0322]: 2 `AT %I*`/`%Q*`/`%M*` declaration(s) read as plain \
+          variables: TwinCAT links them to I/O in the system configuration (.tsproj), which \
+          ladderc does not read"
+        ]
+    );
+}
+
+#[test]
+fn a_task_calling_a_program_whose_file_failed_is_not_reported_again() {
+    let dir = tempfile::tempdir().unwrap();
+    let main = dir.path().join("MAIN.TcPOU");
+    std::fs::write(
+        &main,
+        std::fs::read_to_string(fixture("graphical/P_Ladder.TcPOU"))
+            .unwrap()
+            .replace("P_Ladder", "MAIN"),
+    )
+    .unwrap();
+    let (code, heads) = check(&[main, fixture("project/PlcTask.TcTTO")], dir.path());
+    assert_eq!(code, Some(1));
+    assert_eq!(heads.len(), 1, "{heads:?}");
+    assert!(
+        heads[0].starts_with("MAIN.TcPOU:11:7: error[E0321]"),
+        "{heads:?}"
+    );
+}
+
+#[test]
+fn dotted_enumerated_values_and_base_types_run_in_st_files_too() {
+    let dir = tempfile::tempdir().unwrap();
+    let st = dir.path().join("states.st");
+    std::fs::write(
+        &st,
+        "TYPE E_State :\n(\n\tIdle := 0,\n\tBusy := 10,\n\tDone\n) INT;\nEND_TYPE\n\
+         PROGRAM MAIN\nVAR\n\teState : E_State := E_State.Busy;\n\tn : INT;\nEND_VAR\n\
+         CASE eState OF\nE_State.Busy: n := n + 1; IF n >= 2 THEN eState := E_State.Done; END_IF\n\
+         E_State.Done: n := 100;\nEND_CASE\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run_traced(&st, 4, "MAIN.eState,MAIN.n");
+    assert_eq!(column(&trace, "MAIN.eState"), [10.0, 11.0, 11.0, 11.0]);
+    assert_eq!(column(&trace, "MAIN.n"), [1.0, 2.0, 100.0, 100.0]);
+}
