@@ -1001,6 +1001,25 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// Checks the base type of an edition-3 data type with named values (`INT (Low := 1, High := 100)`,
+    /// IEC 61131-3 6.4.4.3): it must be an elementary integer or bit-string type, else error E0011 at
+    /// the base type's name. The values are kept as an enumeration's; the base type is not.
+    pub fn named_values_base(&mut self, base: &Ident, l: usize, r: usize) {
+        const INTEGER_TYPES: [&str; 12] = [
+            "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD",
+            "DWORD", "LWORD",
+        ];
+        if !INTEGER_TYPES.contains(&base.key().as_str()) {
+            self.hint(
+                code::E0011,
+                format!("`{}` cannot carry named values", base.name),
+                l,
+                r,
+                "a data type with named values is based on an integer type: `INT (Low := 1, High := 100)`",
+            );
+        }
+    }
+
     // ------------------------------------------------------------ configurations
 
     /// Builds a configuration; tasks and programs written outside any `RESOURCE` go to a resource named
