@@ -141,20 +141,11 @@ fn unlink_io(text: &mut String) -> Vec<(usize, usize)> {
     let mut prev_word: &[u8] = b"";
     let mut i = 0;
     while i < n {
+        if let Some(after) = skip_comment_or_string(b, i, n) {
+            i = after;
+            continue;
+        }
         match b[i] {
-            b'(' if b.get(i + 1) == Some(&b'*') => {
-                i = find_from(b, i + 2, b"*)").map_or(n, |e| e + 2);
-            }
-            b'/' if b.get(i + 1) == Some(&b'/') => {
-                i = find_from(b, i + 2, b"\n").unwrap_or(n);
-            }
-            q @ (b'\'' | b'"') => {
-                i += 1;
-                while i < n && b[i] != q && b[i] != b'\n' {
-                    i += if b[i] == b'$' { 2 } else { 1 };
-                }
-                i += 1;
-            }
             c if c.is_ascii_alphabetic() || c == b'_' => {
                 let start = i;
                 while i < n && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
@@ -226,21 +217,12 @@ fn unqualify_bounds(text: &mut String, start: usize, end: usize) {
     let mut depth = 0usize;
     let mut i = start.min(end);
     while i < end {
+        if let Some(after) = skip_comment_or_string(b, i, end) {
+            i = after;
+            continue;
+        }
         match b[i] {
-            b'(' if b.get(i + 1) == Some(&b'*') => {
-                i = find_from(b, i + 2, b"*)").map_or(end, |e| e + 2);
-            }
-            b'/' if b.get(i + 1) == Some(&b'/') => {
-                i = find_from(b, i + 2, b"\n").unwrap_or(end);
-            }
             b'{' => i = find_from(b, i + 1, b"}").map_or(end, |e| e + 1),
-            q @ (b'\'' | b'"') => {
-                i += 1;
-                while i < end && b[i] != q && b[i] != b'\n' {
-                    i += if b[i] == b'$' { 2 } else { 1 };
-                }
-                i += 1;
-            }
             b'[' | b'(' => {
                 depth += 1;
                 i += 1;
@@ -271,6 +253,26 @@ fn unqualify_bounds(text: &mut String, start: usize, end: usize) {
             bytes[s..e].fill(b' ');
         }
         *text = String::from_utf8(bytes).unwrap_or_default();
+    }
+}
+
+/// Where the comment (`(* ... *)`, `// ...`) or string (`'...'`, `"..."`, with `$` escapes, ending at
+/// its line at the latest) that starts at `i` ends: the index just after it (`end` when a comment is not
+/// closed); `None` when none starts at `i`.
+fn skip_comment_or_string(b: &[u8], i: usize, end: usize) -> Option<usize> {
+    match b[i] {
+        b'(' if b.get(i + 1) == Some(&b'*') => {
+            Some(find_from(b, i + 2, b"*)").map_or(end, |e| e + 2))
+        }
+        b'/' if b.get(i + 1) == Some(&b'/') => Some(find_from(b, i + 2, b"\n").unwrap_or(end)),
+        q @ (b'\'' | b'"') => {
+            let mut k = i + 1;
+            while k < end && b[k] != q && b[k] != b'\n' {
+                k += if b[k] == b'$' { 2 } else { 1 };
+            }
+            Some(k + 1)
+        }
+        _ => None,
     }
 }
 
