@@ -59,9 +59,6 @@ pub struct Gen<'a> {
     /// The position in `Model::instrs` after the last instruction looked up (bodies are read in
     /// source order, so that is usually where the next one is).
     pub(super) instr_cursor: usize,
-    /// The position in `Model::names` after the last variable name taken from sema's resolution
-    /// (see `scope`'s `own_var`): names are read in source order too.
-    pub(super) name_cursor: usize,
     /// Bodies of more instruction units are split into several C functions (see `split`).
     pub(super) part_limit: usize,
     /// Whether the model has an enumerated type: without one no operand name is an enumerated value,
@@ -162,7 +159,6 @@ pub fn generate(
         reported: HashSet::new(),
         quiet: 0,
         instr_cursor: 0,
-        name_cursor: 0,
         part_limit: split::part_limit(),
         has_enums: model
             .types

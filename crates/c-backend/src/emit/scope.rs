@@ -16,7 +16,7 @@ use il_frontend::ast::{
     Accessor, AddressSize, Literal, LiteralKind, Operand, PouKind, VarKind, VarRef,
 };
 use il_frontend::sema::{
-    with_upper, Elementary, FbType, GlobalRef, NameRef, Pou, PouId, Type, UserTypeDef, Variable,
+    with_upper, Elementary, FbType, GlobalRef, Pou, PouId, Type, UserTypeDef, Variable,
 };
 use std::collections::HashMap;
 
@@ -214,19 +214,8 @@ impl Gen<'_> {
     }
 
     /// The position in `pou.vars` of the variable `name` denotes in the POU's body, `None` when it is
-    /// not one of the POU's variables. Sema's resolution of that very name (`Model::names`, at the
-    /// name's span) is taken when it is a variable of that name: read from a cursor, as the body is
-    /// generated in the order sema resolved it, that costs no hash lookup (the POU's name index,
-    /// `Pou::var_position`, misses the cache once per operand on a large POU). Anything else (a name
-    /// sema did not record, a span shared by lowered code, another POU's variable) is looked up.
-    fn own_var(&mut self, pou: &Pou, name: &il_frontend::ast::Ident) -> Option<usize> {
-        if let Some((at, &NameRef::Var(i))) = self.model.names.get_near(name.span, self.name_cursor)
-        {
-            self.name_cursor = at + 1;
-            if pou.vars.get(i).is_some_and(|v| v.is(&name.name)) {
-                return Some(i);
-            }
-        }
+    /// not one of the POU's variables (the POU's name index, `Pou::var_position`).
+    fn own_var(&self, pou: &Pou, name: &il_frontend::ast::Ident) -> Option<usize> {
         pou.var_position(&name.name)
     }
 
