@@ -227,14 +227,15 @@ impl TargetProfile {
         }
     }
 
-    /// Locates a direct address accessed with `access_bytes` bytes (the located variable's type size;
-    /// `None`: the address's own size). Errors: E2002 (form), E2001 (outside the area), E2006 (alignment).
-    pub fn locate(
+    /// The byte range `(offset, bytes)` a flat direct address accessed with `access_bytes` bytes
+    /// (`None`: the address's own size) takes in its area, whether or not the area holds it; `Err`
+    /// with the reason for a form that has no place in the flat area (a `*` placeholder, a bit
+    /// beyond 7, a hierarchical address).
+    fn byte_range(
         &self,
         addr: &DirectAddress,
         access_bytes: Option<u32>,
-    ) -> Result<Located, Box<Diagnostic>> {
-        let text = address_text(addr);
+    ) -> Result<(u64, u32, Option<u8>), &'static str> {
         let size_bytes = match addr.size {
             AddressSize::Bit => 1,
             AddressSize::Byte => 1,
@@ -242,37 +243,22 @@ impl TargetProfile {
             AddressSize::DWord => 4,
             AddressSize::LWord => 8,
         };
-        let form = |msg: &str| {
-            Box::new(
-                Diagnostic::error(code::E2002, format!("unsupported address `{text}`: {msg}"))
-                    .at(addr.span)
-                    .with_primary_label("this address")
-                    .with_hint("write a bit as byte.bit with a bit from 0 to 7 (`%IX1.1`); an `AT %I*` variable needs a VAR_CONFIG entry that places it; `ladderc explain E2002`"),
-            )
+        let (index, bit) = match (addr.size, addr.path.as_slice()) {
+            (_, []) => return Err("a `*` address must be given a location before it can be compiled"),
+            (AddressSize::Bit, [byte, bit]) => {
+                if *bit > 7 {
+                    return Err("the bit number must be 0 to 7");
+                }
+                (*byte, Some(*bit as u8))
+            }
+            // `%IX13` (one number, as matiec and some LD editors write): absolute bit 13 = byte 1, bit 5
+            (AddressSize::Bit, [n]) => (n / 8, Some((n % 8) as u8)),
+            (_, [index]) => (*index, None),
+            // hierarchical: `Gen::locate` (emit/hier.rs) gives each a slot after the area
+            _ => return Err(
+                "a hierarchical address has no place in the flat area (the C generator gives it a slot of its own)",
+            ),
         };
-        let (index, bit) =
-            match (addr.size, addr.path.as_slice()) {
-                (_, []) => {
-                    return Err(form(
-                        "a `*` address must be given a location before it can be compiled",
-                    ))
-                }
-                (AddressSize::Bit, [byte, bit]) => {
-                    if *bit > 7 {
-                        return Err(form("the bit number must be 0 to 7"));
-                    }
-                    (*byte, Some(*bit as u8))
-                }
-                // `%IX13` (one number, as matiec and some LD editors write): absolute bit 13 = byte 1, bit 5
-                (AddressSize::Bit, [n]) => (n / 8, Some((n % 8) as u8)),
-                (_, [index]) => (*index, None),
-                // hierarchical: `Gen::locate` (emit/hier.rs) gives each a slot after the area
-                _ => {
-                    return Err(form(
-                        "a hierarchical address has no place in the flat area (the C generator gives it a slot of its own)",
-                    ))
-                }
-            };
         let offset = match self.address_unit {
             AddressUnit::Byte => u64::from(index),
             AddressUnit::Element => u64::from(index) * u64::from(size_bytes),
@@ -282,6 +268,33 @@ impl TargetProfile {
         } else {
             access_bytes.unwrap_or(size_bytes).max(1)
         };
+        Ok((offset, bytes, bit))
+    }
+
+    /// The bytes of its area a flat direct address needs (the end of its [`Self::byte_range`]),
+    /// `None` for a form [`Self::locate`] refuses.
+    pub fn needed_bytes(&self, addr: &DirectAddress, access_bytes: Option<u32>) -> Option<u64> {
+        self.byte_range(addr, access_bytes)
+            .ok()
+            .map(|(offset, bytes, _)| offset + u64::from(bytes))
+    }
+
+    /// Locates a direct address accessed with `access_bytes` bytes (the located variable's type size;
+    /// `None`: the address's own size). Errors: E2002 (form), E2001 (outside the area), E2006 (alignment).
+    pub fn locate(
+        &self,
+        addr: &DirectAddress,
+        access_bytes: Option<u32>,
+    ) -> Result<Located, Box<Diagnostic>> {
+        let text = address_text(addr);
+        let (offset, bytes, bit) = self.byte_range(addr, access_bytes).map_err(|msg| {
+            Box::new(
+                Diagnostic::error(code::E2002, format!("unsupported address `{text}`: {msg}"))
+                    .at(addr.span)
+                    .with_primary_label("this address")
+                    .with_hint("write a bit as byte.bit with a bit from 0 to 7 (`%IX1.1`); an `AT %I*` variable needs a VAR_CONFIG entry that places it; `ladderc explain E2002`"),
+            )
+        })?;
         let area_size = self.area_size(addr.area);
         if offset + u64::from(bytes) > u64::from(area_size) {
             return Err(Box::new(
@@ -300,7 +313,11 @@ impl TargetProfile {
                     offset,
                     offset + u64::from(bytes)
                 ))
-                .with_hint("use a smaller address or a target profile with a larger area"),
+                .with_hint(format!(
+                    "use a smaller address, or a target profile (`--profile FILE.json`) whose `{}` is at least {}",
+                    area_field(addr.area),
+                    offset + u64::from(bytes)
+                )),
             ));
         }
         let offset = offset as u32;
@@ -324,6 +341,15 @@ impl TargetProfile {
             bit,
             bytes,
         })
+    }
+}
+
+/// The target profile's field that sizes an area (`input_bytes`, `output_bytes`, `memory_bytes`).
+pub fn area_field(area: Area) -> &'static str {
+    match area {
+        Area::Input => "input_bytes",
+        Area::Output => "output_bytes",
+        Area::Memory => "memory_bytes",
     }
 }
 

@@ -69,6 +69,9 @@ pub struct Gen<'a> {
     pub(super) has_enums: bool,
     /// The slots of hierarchical direct addresses met so far (see `hier`).
     pub(super) hier: hier::Slots,
+    /// Flat addresses outside their area (E2001), by the diagnostic's span: the area (0 %I, 1 %Q,
+    /// 2 %M), the bytes the address needs and its text (see [`Gen::fold_outside_area`]).
+    outside_area: HashMap<Option<Span>, (usize, u64, String)>,
 }
 
 impl<'a> Gen<'a> {
@@ -173,6 +176,7 @@ pub fn generate(
         methods: ext.methods.clone(),
         motion: ext.motion.clone(),
         hier: hier::Slots::default(),
+        outside_area: HashMap::new(),
     };
     g.check_embedded(opts);
     g.check_methods();
@@ -187,6 +191,7 @@ pub fn generate(
     );
     g.header(&mut h);
     g.program_c(units, &mut c);
+    g.fold_outside_area();
     // after the program: the hierarchical addresses' slots extend the areas
     let config = config_header_with(profile, g.hier.used);
     let mut files = vec![("ladderc_config.h".to_string(), config)];

@@ -1,0 +1,152 @@
+//! Constructs of the eleventh acceptance run of issue #13 (2026-12-03, branch `lang13`).
+//!
+//! **The round.** ROUND_TABLE
+//!
+//! Each test is a minimal reproduction written here, run through `ladderc run` (C compiled with
+//! the sanitizers) or `ladderc check`. The repositories' files are not copied here.
+
+mod common;
+use common::{check_text, ladderc, rejected_heads, run_stimulated};
+
+/// OpenPLC Editor v4 writes the declarations of its per-POU `.st` files (`pous/programs/main.st`)
+/// with the location after the type, also before an initial value: `LedBusy : BOOL AT %QX0.0;`,
+/// `Count : INT AT %QW1 := 5;`. They are read as `LedBusy AT %QX0.0 : BOOL;`, with one warning
+/// W0016 each, and the variables are the process image's: the stimulus sets `%IX0.0`, the trace
+/// reads `%QX0.0` and `%QW1`, and `%QW1` starts at its initial value 5. Before: E0011 `expected
+/// `;` before `AT`` at each declaration, and nothing ran.
+#[test]
+fn location_after_the_type_as_openplc_editor_v4_writes_it_runs_with_w0016() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("main.st");
+    std::fs::write(
+        &f,
+        "PROGRAM main\n  VAR\n    Start : BOOL AT %IX0.0 := FALSE;\n    LedBusy : BOOL AT %QX0.0;\n\
+         \x20   Count : INT AT %QW1 := 5;\n    Limit : INT := 6;\n  END_VAR\n\
+         IF Start THEN\n  Count := Count + 1;\nEND_IF;\nLedBusy := Count > Limit;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, stderr) = run_stimulated(&f, 4, "1,%IX0.0,1\n", "%IX0.0,%QW1,%QX0.0,main.Count");
+    assert_eq!(stderr.matches("warning[W0016]").count(), 3, "{stderr}");
+    assert!(
+        stderr.contains(
+            "main.st:5:17: warning[W0016]: the location `AT %QW1` is written after the type: read as if it stood before the `:`"
+        ),
+        "{stderr}"
+    );
+    // cycle 0: Start FALSE, Count stays 5; from cycle 1 it counts; LedBusy once Count > 6
+    assert_eq!(
+        trace,
+        "cycle,time_ms,%IX0.0,%QW1,%QX0.0,main.Count\n\
+         0,0,0,5,0,5\n1,10,1,6,0,6\n2,20,1,7,1,7\n3,30,1,8,1,8\n"
+    );
+}
+
+/// The form after the type keeps the rules of the standard one: a location for several names is
+/// E0017, an INT at a bit address is E1027, and the standard form is not warned about.
+#[test]
+fn location_after_the_type_keeps_the_rules_of_located_variables() {
+    let heads = rejected_heads(
+        "p.st",
+        "PROGRAM p\nVAR\n  a, b : BOOL AT %QX0.0;\n  n : INT;\nEND_VAR\nn := n + 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "p.st:3:6: error[E0017]: one location (`AT`) for several names",
+            "p.st:3:15: warning[W0016]: the location `AT %QX0.0` is written after the type: read as if it stood before the `:`",
+        ]
+    );
+    let heads = rejected_heads(
+        "w.st",
+        "PROGRAM w\nVAR\n  w : INT AT %IX0.1;\nEND_VAR\nw := 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "w.st:3:11: warning[W0016]: the location `AT %IX0.1` is written after the type: read as if it stood before the `:`",
+            "w.st:3:14: error[E1027]: `w` has type INT, but `%IX0.1` is a single bit: a bit address holds a BOOL",
+        ]
+    );
+    let (code, lines) = check_text(
+        "q.st",
+        "PROGRAM q\nVAR\n  x AT %QX0.0 : BOOL;\nEND_VAR\nx := TRUE;\nEND_PROGRAM\n",
+    );
+    assert_eq!((code, lines), (Some(0), Vec::<String>::new()));
+}
+
+/// A program written for a larger process image than the profile's (OpenPLC has 1,024 words of
+/// `%IW` and `%QW`): the first address outside each area, in source order, is one E2001 whose
+/// hint names the size it needs, with a note counting the others and naming the size that holds
+/// them all. Before: one E2001 per variable (891 for a 39-file OpenPLC simulator). With a profile
+/// of that size the same program runs.
+#[test]
+fn addresses_outside_an_area_are_one_error_per_area() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("far.st");
+    std::fs::write(
+        &f,
+        "PROGRAM main\nVAR\n  near AT %QW2 : INT := 7;\n  seq AT %QW200 : INT;\n\
+         \x20 prog AT %QW128 : INT := 1;\n  last AT %QW1023 : INT;\n  cmd AT %IW300 : INT;\n\
+         \x20 ack AT %IW301 : INT;\nEND_VAR\nseq := cmd + 1;\nlast := ack;\n%QW130 := 3;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let out = ladderc().arg("check").arg(&f).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.matches("error[E2001]").count(), 2, "{stderr}");
+    assert!(
+        stderr.contains("error[E2001]: address `%QW200` is outside the %Q area (256 bytes in target profile `default`)"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("whose `output_bytes` is at least 402")
+            && stderr.contains(
+                "note: 3 more addresses outside the %Q area are not reported; the farthest, `%QW1023`, needs a target profile whose `output_bytes` is at least 2048"
+            ),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("error[E2001]: address `%IW300` is outside the %I area")
+            && stderr.contains(
+                "note: 1 more address outside the %I area is not reported: `%IW301`, which needs a target profile whose `input_bytes` is at least 604"
+            ),
+        "{stderr}"
+    );
+    // a profile of that size runs it
+    let profile = dir.path().join("openplc.json");
+    std::fs::write(
+        &profile,
+        r#"{"name": "openplc", "input_bytes": 2048, "output_bytes": 2048, "memory_bytes": 4096,
+            "byte_order": "little", "bit_numbering": "lsb0", "address_unit": "element",
+            "tm_offset": 3840, "tm_bytes": 256, "alignment": 1, "data_bytes": 16777216}"#,
+    )
+    .unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, "cycle,variable,value\n1,%IW300,41\n2,%IW301,9\n").unwrap();
+    let out = ladderc()
+        .arg("run")
+        .arg(&f)
+        .arg("--profile")
+        .arg(&profile)
+        .args(["--cycles", "3", "--stimulus"])
+        .arg(&stim)
+        .args([
+            "--watch",
+            "%QW2,%QW128,%QW130,%QW200,%QW1023",
+            "--trace",
+            "-",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,%QW2,%QW128,%QW130,%QW200,%QW1023\n\
+         0,0,7,1,3,1,0\n1,10,7,1,3,42,0\n2,20,7,1,3,42,9\n"
+    );
+}
