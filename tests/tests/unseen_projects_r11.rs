@@ -150,3 +150,35 @@ fn addresses_outside_an_area_are_one_error_per_area() {
          0,0,7,1,3,1,0\n1,10,7,1,3,42,0\n2,20,7,1,3,42,9\n"
     );
 }
+
+/// A `<derived name="ARRAY[1..MAX_UNITS] OF UNIT_T"/>` (a type written out as the name, as a
+/// project's script generated it for OpenPLC Editor, whose generator copies the text into the ST
+/// it gives matiec) is one E3013 per variable that names the text and says how PLCopen XML writes
+/// an array. Before: "<derived> type without a valid `name`", which did not say what was wrong
+/// with the name.
+#[test]
+fn a_type_expression_as_a_derived_name_is_named() {
+    let xml = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\
+               <fileHeader companyName=\"\" productName=\"OpenPLC\" productVersion=\"1\" creationDateTime=\"2024-01-01T00:00:00\"/>\
+               <contentHeader name=\"p\"><coordinateInfo><fbd><scaling x=\"10\" y=\"10\"/></fbd><ld><scaling x=\"10\" y=\"10\"/></ld>\
+               <sfc><scaling x=\"10\" y=\"10\"/></sfc></coordinateInfo></contentHeader><types><dataTypes/><pous>\
+               <pou name=\"main\" pouType=\"program\"><interface><localVars>\n\
+               <variable name=\"units\"><type><derived name=\"ARRAY[1..MAX_UNITS] OF UNIT_T\"/></type></variable>\n\
+               <variable name=\"names\"><type><derived name=\"STRING[20]\"/></type></variable>\n\
+               <variable name=\"n\"><type><INT/></type></variable>\n\
+               </localVars></interface><body><ST><xhtml:p xmlns:xhtml=\"http://www.w3.org/1999/xhtml\"><![CDATA[n := m + 1;]]></xhtml:p></ST></body></pou>\
+               </pous></types><instances><configurations/></instances></project>\n";
+    let heads = rejected_heads("plc.xml", xml);
+    assert_eq!(
+        heads,
+        [
+            "plc.xml:3:45: error[E3013]: <derived> type name `ARRAY[1..MAX_UNITS] OF UNIT_T` is not a type name [POU `main`]",
+            "plc.xml:4:45: error[E3013]: <derived> type name `STRING[20]` is not a type name [POU `main`]",
+        ]
+    );
+    let (_, lines) = check_text("plc.xml", xml);
+    assert!(
+        lines[0].contains("PLCopen XML writes an array type as <array>"),
+        "{lines:?}"
+    );
+}
