@@ -182,3 +182,32 @@ fn a_type_expression_as_a_derived_name_is_named() {
         "{lines:?}"
     );
 }
+
+/// A file cut off in the middle of an IF condition (`IF (C1F4MemLoc AN`, the last line of a
+/// published elevator program): the misspelt operator is one E0100, the IF the end of the text
+/// leaves open one E0105. Before, the name was read again as a statement at the end of the text, a
+/// third error (E0106 `expected := or ( after AN, found end of text`) about the same word. A name
+/// followed by the end of the text with no error before it is still E0106.
+#[test]
+fn a_file_cut_off_in_a_condition_is_not_reported_twice_at_its_last_word() {
+    let heads = rejected_heads(
+        "cut.st",
+        "PROGRAM p\nVAR a, b, c : BOOL; END_VAR\nIF (a AND b) THEN\n  c := TRUE;\nEND_IF;\nIF (a AN",
+    );
+    assert_eq!(
+        heads,
+        [
+            "cut.st:6:7: error[E0100]: expected `)`, found name `AN`",
+            "cut.st:6:9: error[E0105]: IF is not closed: expected `END_IF`, found end of text",
+            "cut.st:6:9: warning[W0014]: `p` ends at the end of the file without `END_PROGRAM`: read as if it were there",
+        ]
+    );
+    let heads = rejected_heads(
+        "tail.st",
+        "PROGRAM p\nVAR a : BOOL; END_VAR\na := TRUE;\nfoo",
+    );
+    assert_eq!(
+        heads[0],
+        "tail.st:4:4: error[E0106]: expected `:=` or `(` after `foo`, found end of text"
+    );
+}
