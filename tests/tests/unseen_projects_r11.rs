@@ -211,3 +211,90 @@ fn a_file_cut_off_in_a_condition_is_not_reported_twice_at_its_last_word() {
         "tail.st:4:4: error[E0106]: expected `:=` or `(` after `foo`, found end of text"
     );
 }
+
+/// OpenPLC keeps its digital and analog images apart: `%QX0.1` is a digital output, `%QW0` an
+/// analog one, `%QD0` and `%QL0` other registers (matiec gives each located variable its own
+/// storage too). A student's water plant (SFWE511) drives pumps at `%QX0.x` and valve positions at
+/// `%QW0..%QW7`: with the default profile the valve's value overwrites the pump bits (38 W1400).
+/// With `crates/c-backend/profiles/openplc.json` (`"address_unit": "per_size"`) each size has its
+/// own image: no W1400, the pump bit follows its input while the valve holds 50, and an address
+/// given only in `--watch` (`%QB0`, the byte of `%QX0.0..%QX0.7`) is found in the same image.
+#[test]
+fn openplc_profile_keeps_digital_and_analog_images_apart() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("plant.st");
+    std::fs::write(
+        &f,
+        "PROGRAM main\nVAR\n  start AT %IX0.0 : BOOL;\n  level AT %IW0 : INT;\n  pump AT %QX0.1 : BOOL;\n\
+         \x20 valve AT %QW0 : INT;\n  total AT %QD0 : DINT;\n  big AT %QL0 : LINT;\nEND_VAR\n\
+         pump := start;\nvalve := level * 2;\ntotal := total + 1;\nbig := 7;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let profile = common::repo_root().join("crates/c-backend/profiles/openplc.json");
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n1,%IX0.0,1\n1,%IW0,25\n2,%IX0.0,0\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&f)
+        .arg("--profile")
+        .arg(&profile)
+        .args(["--cycles", "3", "--sanitize", "--stimulus"])
+        .arg(&stim)
+        .args([
+            "--watch",
+            "%IX0.0,%IW0,%QX0.1,%QB0,%QW0,%QD0,%QL0",
+            "--trace",
+            "-",
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("W1400"), "{stderr}");
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        "cycle,time_ms,%IX0.0,%IW0,%QX0.1,%QB0,%QW0,%QD0,%QL0\n\
+         0,0,0,0,0,0,0,1,7\n1,10,1,25,1,2,50,2,7\n2,20,0,25,0,0,50,3,7\n"
+    );
+    // the default profile overlaps them, as W1400 says: `valve` (50) is bits of `pump`'s byte
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&f)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.matches("warning[W1400]").count(), 3, "{stderr}");
+}
+
+/// A profile with `"address_unit": "per_size"` keeps each image within its size: `%QW1024` is
+/// outside a 2048-byte word image even though the `%Q` array holds four images.
+#[test]
+fn per_size_images_are_bounded_one_by_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("far.st");
+    std::fs::write(
+        &f,
+        "PROGRAM main\nVAR\n  ok AT %QW1023 : INT;\n  far AT %QW1024 : INT;\n  bit AT %QX2047.7 : BOOL;\nEND_VAR\n\
+         ok := 1;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let profile = common::repo_root().join("crates/c-backend/profiles/openplc.json");
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&f)
+        .arg("--profile")
+        .arg(&profile)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let heads = common::diagnostic_heads(&out.stderr, dir.path(), true);
+    assert_eq!(
+        heads,
+        ["far.st:4:10: error[E2001]: address `%QW1024` is outside the %Q area (2048 bytes in target profile `openplc`)"]
+    );
+}
