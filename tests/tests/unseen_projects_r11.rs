@@ -1,6 +1,39 @@
 //! Constructs of the eleventh acceptance run of issue #13 (2026-12-03, branch `lang13`).
 //!
-//! **The round.** ROUND_TABLE
+//! **The round.** Public repositories no earlier round had tried, checked and run as a new user
+//! would (`ladderc check FILE`, then `ladderc run FILE --cycles 50`; snapshots of 2026-12-03):
+//! OpenPLC Editor projects (`plc.xml`): 3Matich/Lab-2-OpenPLC, 99sp4rky/waterUltra_ESP_PLC,
+//! MatuAcosta/OpenPLC, SaxatileStoner/SFWE511-SemesterProject, angelakmiller/SFWE511 (and its
+//! `.st` exports), simongawar/SFWE511, barbarafv/ModbusRedes, kando-123/Data-Flow-Graph,
+//! mohsin-riad/PLC-into (7 labs), qUINNCYKID/openPCL, robert-brunner/PLC-Arduino, zibiax/PR009G,
+//! Betosteles/CVS-a-XML-para-Proyectos-en-OPENPLC, Matrixas8/Laboratorios-Tecnologias-para-la-
+//! automatizacion-Public-2, MauricioCastro16/control-automatizado-openplc, sorfpavel/RPA_semestalka,
+//! VanAAO/scada-security-middleware, Vangogh911/alphaTags; OpenPLC v4 / STruC++ ST projects:
+//! PiiJar/OpenPLC-Simulator (39 `.st` files, and a `plc.xml` its script generates),
+//! thetdy/D64Programmer (`pous/programs/main.st`); hand-written ST: jhunterh/KEVIN; CODESYS-style
+//! ST sources and a home-made "PLCopen" file: jomestoy/codesys-opcua-interface.
+//!
+//! | | units | run | rejected, naming what is missing | wrong |
+//! |---|---|---|---|---|
+//! | before | 37 (28 XML files, 9 ST files or projects) | 15 | 18 | 4 |
+//! | after | 37 | 17 (2 with `--profile crates/c-backend/profiles/openplc.json`) | 20 | 0 |
+//!
+//! Wrong before: the OpenPLC simulator (891 E2001, one per variable beyond the default 256-byte
+//! `%Q`), an OpenPLC v4 program (E0011 at each `x : BOOL AT %QX0.0;`), the water plant whose valve
+//! positions at `%QW0..` overwrote its pump bits at `%QX0.x` (38 W1400; OpenPLC keeps them apart), a
+//! file cut off at `IF (C1F4MemLoc AN` (a second error about the same word). The rejections name:
+//! INT variables at bit addresses (E1027, matiec refuses the files too), a POU without an interface
+//! (E1001), a misspelt variable (E1001), unwired coils of an unfinished block (E3005), `Power ON` as
+//! a transition (E0107) and a dangling transition (E3128), `1063 M^3` as an initial value (E3011),
+//! a pasted table as a body (E0106), `ARRAY[1..MAX_UNITS] OF UNIT_T` as a `<derived>` name (E3013,
+//! now naming it), three XML files that are not PLCopen projects (E3002: a CODESYS OPC UA symbol
+//! file, a home-made `<plcopenSource>`, a variable list), the C++ blocks of an OpenPLC v4 project and
+//! the enumeration it keeps in `project.json` (E1003), EXTENDS (E0303: needs the `extends` work).
+//!
+//! **Side by side with matiec**: none of the round could be. The XML projects carry no generated
+//! ST; matiec refuses the SFWE511 `.st` files (invalid locations) and the OpenPLC v4 simulator
+//! (VAR_GLOBAL outside a configuration, named constants in bounds without `-a`), which was written
+//! for STruC++.
 //!
 //! Each test is a minimal reproduction written here, run through `ladderc run` (C compiled with
 //! the sanitizers) or `ladderc check`. The repositories' files are not copied here.

@@ -309,7 +309,7 @@ impl TargetProfile {
         Ok((offset, bytes, bit, image))
     }
 
-    /// The bytes of its area a flat direct address needs (the end of its [`Self::byte_range`]),
+    /// The bytes of its image a flat direct address needs (the end of its byte range),
     /// `None` for a form [`Self::locate`] refuses.
     pub fn needed_bytes(&self, addr: &DirectAddress, access_bytes: Option<u32>) -> Option<u64> {
         self.byte_range(addr, access_bytes)
