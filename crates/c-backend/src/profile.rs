@@ -3,7 +3,8 @@
 //! Input: JSON (the embedded default `profiles/default.json`, or a user file). Output: a validated
 //! [`TargetProfile`] and, per direct address, its [`Located`] byte offset and bit in the %I/%Q/%M areas.
 //! Invariants: a validated profile has non-empty areas, the TM window inside %M, a power-of-two alignment;
-//! [`TargetProfile::locate`] only returns locations whose bytes lie inside their area.
+//! [`TargetProfile::locate`] only returns locations whose bytes lie inside their area (inside the
+//! image of their size with `"address_unit": "per_size"`, whose %I and %Q hold one image per size).
 
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{AddressSize, Area, DirectAddress};
