@@ -659,10 +659,19 @@ int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_
         out->type = LADDERC_T_BOOL;
     }
     if (*s) return fail(err, errlen, "unexpected text after the address", text);
-    offset = (uint32_t)(LADDERC_ADDR_BYTE_OFFSET ? idx : idx * nbytes);
-    if ((unsigned long)offset != (LADDERC_ADDR_BYTE_OFFSET ? idx : idx * nbytes) || offset >= size ||
-        size - offset < nbytes)
-        return fail(err, errlen, "address outside the area's size in the target profile", text);
+    {
+        /* per-size images (%I and %Q): X and B, W, D, L, each a quarter of the flat size */
+        uint32_t image = 0;
+        if (LADDERC_PER_SIZE_IO && area != ladderc_M) {
+            size /= 4;
+            image = is_bit || nbytes == 1 ? 0 : nbytes == 2 ? 1 : nbytes == 4 ? 2 : 3;
+        }
+        offset = (uint32_t)(LADDERC_ADDR_BYTE_OFFSET ? idx : idx * nbytes);
+        if ((unsigned long)offset != (LADDERC_ADDR_BYTE_OFFSET ? idx : idx * nbytes) || offset >= size ||
+            size - offset < nbytes)
+            return fail(err, errlen, "address outside the area's size in the target profile", text);
+        offset += image * size;
+    }
     out->name = text;
     out->ptr = NULL;
     out->area = area;

@@ -25,6 +25,9 @@
 #endif
 /* The bytes flat addresses (`%IW3`) reach; the rest of an area holds the slots of hierarchical
    addresses (`%IX1.0.0`), which the watch table names. */
+#ifndef LADDERC_PER_SIZE_IO
+#define LADDERC_PER_SIZE_IO 0
+#endif
 #ifndef LADDERC_I_FLAT_SIZE
 #define LADDERC_I_FLAT_SIZE LADDERC_I_SIZE
 #endif

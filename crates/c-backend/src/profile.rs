@@ -3,7 +3,8 @@
 //! Input: JSON (the embedded default `profiles/default.json`, or a user file). Output: a validated
 //! [`TargetProfile`] and, per direct address, its [`Located`] byte offset and bit in the %I/%Q/%M areas.
 //! Invariants: a validated profile has non-empty areas, the TM window inside %M, a power-of-two alignment;
-//! [`TargetProfile::locate`] only returns locations whose bytes lie inside their area.
+//! [`TargetProfile::locate`] only returns locations whose bytes lie inside their area (inside the
+//! image of their size with `"address_unit": "per_size"`, whose %I and %Q hold one image per size).
 
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{AddressSize, Area, DirectAddress};
@@ -41,6 +42,12 @@ pub enum AddressUnit {
     Element,
     /// `%IW2` starts at byte 2 (Siemens style).
     Byte,
+    /// `%IW2` is the third word of the words' own image: %I and %Q have one image per size (X and B,
+    /// W, D, L), each of `input_bytes` / `output_bytes`, so `%QX0.0` (a digital output) and `%QW0`
+    /// (an analog one) never share bits, as OpenPLC and matiec keep them; %M counts elements as
+    /// [`AddressUnit::Element`] does (the TM window of parameter passing lies there).
+    #[serde(rename = "per_size")]
+    PerSize,
 }
 
 /// Sizes and layout of the process image and the TM area.
@@ -188,9 +195,15 @@ impl TargetProfile {
             ("output_bytes", self.output_bytes),
             ("memory_bytes", self.memory_bytes),
         ] {
-            if size == 0 || size > MAX_AREA {
+            let images = if self.address_unit == AddressUnit::PerSize && name != "memory_bytes" {
+                4
+            } else {
+                1
+            };
+            if size == 0 || size > MAX_AREA / images {
                 return bad(format!(
-                    "{name} must be between 1 and {MAX_AREA}, got {size}"
+                    "{name} must be between 1 and {}, got {size}",
+                    MAX_AREA / images
                 ));
             }
         }
@@ -218,13 +231,91 @@ impl TargetProfile {
         Ok(())
     }
 
-    /// The size of `area` in bytes.
+    /// The size of `area`'s C array in bytes: its images together (see [`Self::images`]).
     pub fn area_size(&self, area: Area) -> u32 {
+        self.image_size(area) * self.images(area)
+    }
+
+    /// The size in bytes of one image of `area`: the profile's `input_bytes`, `output_bytes` or
+    /// `memory_bytes`.
+    pub fn image_size(&self, area: Area) -> u32 {
         match area {
             Area::Input => self.input_bytes,
             Area::Output => self.output_bytes,
             Area::Memory => self.memory_bytes,
         }
+    }
+
+    /// How many images `area` has: 4 for %I and %Q with [`AddressUnit::PerSize`] (X and B, W, D, L,
+    /// in that order in the area's C array), else 1.
+    pub fn images(&self, area: Area) -> u32 {
+        if self.address_unit == AddressUnit::PerSize && area != Area::Memory {
+            4
+        } else {
+            1
+        }
+    }
+
+    /// The byte range `(offset, bytes)` a flat direct address accessed with `access_bytes` bytes
+    /// (`None`: the address's own size) takes in its area, whether or not the area holds it; `Err`
+    /// with the reason for a form that has no place in the flat area (a `*` placeholder, a bit
+    /// beyond 7, a hierarchical address).
+    fn byte_range(
+        &self,
+        addr: &DirectAddress,
+        access_bytes: Option<u32>,
+    ) -> Result<(u64, u32, Option<u8>, u32), &'static str> {
+        let size_bytes = match addr.size {
+            AddressSize::Bit => 1,
+            AddressSize::Byte => 1,
+            AddressSize::Word => 2,
+            AddressSize::DWord => 4,
+            AddressSize::LWord => 8,
+        };
+        let (index, bit) = match (addr.size, addr.path.as_slice()) {
+            (_, []) => return Err("a `*` address must be given a location before it can be compiled"),
+            (AddressSize::Bit, [byte, bit]) => {
+                if *bit > 7 {
+                    return Err("the bit number must be 0 to 7");
+                }
+                (*byte, Some(*bit as u8))
+            }
+            // `%IX13` (one number, as matiec and some LD editors write): absolute bit 13 = byte 1, bit 5
+            (AddressSize::Bit, [n]) => (n / 8, Some((n % 8) as u8)),
+            (_, [index]) => (*index, None),
+            // hierarchical: `Gen::locate` (emit/hier.rs) gives each a slot after the area
+            _ => return Err(
+                "a hierarchical address has no place in the flat area (the C generator gives it a slot of its own)",
+            ),
+        };
+        let offset = match self.address_unit {
+            AddressUnit::Byte => u64::from(index),
+            AddressUnit::Element | AddressUnit::PerSize => u64::from(index) * u64::from(size_bytes),
+        };
+        let bytes = if bit.is_some() {
+            1
+        } else {
+            access_bytes.unwrap_or(size_bytes).max(1)
+        };
+        let image = if self.images(addr.area) > 1 {
+            match addr.size {
+                AddressSize::Bit | AddressSize::Byte => 0,
+                AddressSize::Word => 1,
+                AddressSize::DWord => 2,
+                AddressSize::LWord => 3,
+            }
+        } else {
+            0
+        };
+        Ok((offset, bytes, bit, image))
+    }
+
+    /// The bytes of its image a flat direct address needs (the end of its byte range),
+    /// `None` for a form [`Self::locate`] refuses.
+    pub fn needed_bytes(&self, addr: &DirectAddress, access_bytes: Option<u32>) -> Option<u64> {
+        self.byte_range(addr, access_bytes)
+            .ok()
+            .map(|(offset, bytes, ..)| offset + u64::from(bytes))
     }
 
     /// Locates a direct address accessed with `access_bytes` bytes (the located variable's type size;
@@ -235,54 +326,15 @@ impl TargetProfile {
         access_bytes: Option<u32>,
     ) -> Result<Located, Box<Diagnostic>> {
         let text = address_text(addr);
-        let size_bytes = match addr.size {
-            AddressSize::Bit => 1,
-            AddressSize::Byte => 1,
-            AddressSize::Word => 2,
-            AddressSize::DWord => 4,
-            AddressSize::LWord => 8,
-        };
-        let form = |msg: &str| {
+        let (offset, bytes, bit, image) = self.byte_range(addr, access_bytes).map_err(|msg| {
             Box::new(
                 Diagnostic::error(code::E2002, format!("unsupported address `{text}`: {msg}"))
                     .at(addr.span)
                     .with_primary_label("this address")
                     .with_hint("write a bit as byte.bit with a bit from 0 to 7 (`%IX1.1`); an `AT %I*` variable needs a VAR_CONFIG entry that places it; `ladderc explain E2002`"),
             )
-        };
-        let (index, bit) =
-            match (addr.size, addr.path.as_slice()) {
-                (_, []) => {
-                    return Err(form(
-                        "a `*` address must be given a location before it can be compiled",
-                    ))
-                }
-                (AddressSize::Bit, [byte, bit]) => {
-                    if *bit > 7 {
-                        return Err(form("the bit number must be 0 to 7"));
-                    }
-                    (*byte, Some(*bit as u8))
-                }
-                // `%IX13` (one number, as matiec and some LD editors write): absolute bit 13 = byte 1, bit 5
-                (AddressSize::Bit, [n]) => (n / 8, Some((n % 8) as u8)),
-                (_, [index]) => (*index, None),
-                // hierarchical: `Gen::locate` (emit/hier.rs) gives each a slot after the area
-                _ => {
-                    return Err(form(
-                        "a hierarchical address has no place in the flat area (the C generator gives it a slot of its own)",
-                    ))
-                }
-            };
-        let offset = match self.address_unit {
-            AddressUnit::Byte => u64::from(index),
-            AddressUnit::Element => u64::from(index) * u64::from(size_bytes),
-        };
-        let bytes = if bit.is_some() {
-            1
-        } else {
-            access_bytes.unwrap_or(size_bytes).max(1)
-        };
-        let area_size = self.area_size(addr.area);
+        })?;
+        let area_size = self.image_size(addr.area);
         if offset + u64::from(bytes) > u64::from(area_size) {
             return Err(Box::new(
                 Diagnostic::error(
@@ -300,10 +352,15 @@ impl TargetProfile {
                     offset,
                     offset + u64::from(bytes)
                 ))
-                .with_hint("use a smaller address or a target profile with a larger area"),
+                .with_hint(format!(
+                    "use a smaller address, or a target profile (`--profile FILE.json`) whose `{}` is at least {}",
+                    area_field(addr.area),
+                    offset + u64::from(bytes)
+                )),
             ));
         }
-        let offset = offset as u32;
+        // inside its image, whose size fits in u32 (validated), so this fits too
+        let offset = (u64::from(image) * u64::from(area_size) + offset) as u32;
         let align = self.alignment.min(bytes);
         if bit.is_none() && align > 1 && !offset.is_multiple_of(align) {
             return Err(Box::new(
@@ -324,6 +381,15 @@ impl TargetProfile {
             bit,
             bytes,
         })
+    }
+}
+
+/// The target profile's field that sizes an area (`input_bytes`, `output_bytes`, `memory_bytes`).
+pub fn area_field(area: Area) -> &'static str {
+    match area {
+        Area::Input => "input_bytes",
+        Area::Output => "output_bytes",
+        Area::Memory => "memory_bytes",
     }
 }
 

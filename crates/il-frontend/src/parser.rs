@@ -254,6 +254,25 @@ impl<'s> Ctx<'s> {
         self.diags.push(d);
     }
 
+    /// `x : BOOL AT %QX0.0;`: the location written after the type, as OpenPLC Editor v4 writes the
+    /// declarations of its `.st` files; IEC 61131-3 writes it between the name and the type. The
+    /// declaration is read as `x AT %QX0.0 : BOOL;`, with warning W0016 at `AT %QX0.0`.
+    pub fn location_after_type(&mut self, l: usize, r: usize) {
+        let mut d = Diagnostic::warning(
+            code::W0016,
+            format!(
+                "the location `{}` is written after the type: read as if it stood before the `:`",
+                self.text(l, r)
+            ),
+        )
+        .at(self.span(l, r))
+        .with_primary_label("location after the type");
+        d.hint = Some(
+            "IEC 61131-3 writes the location between the name and the type (`name AT %QX0.0 : BOOL := FALSE;`); OpenPLC Editor v4 writes it after the type, and ladderc reads both".to_string(),
+        );
+        self.diags.push(d);
+    }
+
     /// A dimension `*` of a variable-length array (`ARRAY [*, *] OF REAL`, IEC 61131-3 edition 3,
     /// for VAR_IN_OUT of functions and blocks): E0323, and the dimension is read as 0..0.
     pub fn variable_length_dim(&mut self, l: usize, r: usize) -> ArrayDim {

@@ -104,6 +104,27 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 ctx.error(code::E3012, span, msg);
                 None
             }
+            // a type written out as the name (`ARRAY[1..N] OF T`, `STRING[20]`), as a script may
+            // generate it for Beremiz, which copies the text into its ST: named in the message
+            Some(n)
+                if !n.trim().is_empty()
+                    && n.trim().chars().count() <= 80
+                    && !n.chars().any(char::is_control) =>
+            {
+                let n = n.trim();
+                let msg = format!("<derived> type name `{n}` is not a type name");
+                let hint = if n.to_ascii_uppercase().starts_with("ARRAY") {
+                    "PLCopen XML writes an array type as <array> with <dimension lower=.. upper=..> and <baseType>, or names a declared <dataType>"
+                } else {
+                    "name a declared <dataType> or a block, or write an elementary type as its element (<INT/>, <string length=..>)"
+                };
+                ctx.report(
+                    Diagnostic::error(code::E3013, msg)
+                        .at(ctx.attr_span(t, "name"))
+                        .with_hint(hint),
+                );
+                None
+            }
             _ => {
                 ctx.error(code::E3013, span, "<derived> type without a valid `name`");
                 None

@@ -750,7 +750,8 @@ impl Session {
         let window = TmWindow {
             offset: profile.tm_offset,
             bytes: profile.tm_bytes,
-            element_addressing: profile.address_unit == c_backend::AddressUnit::Element,
+            // %M counts elements also with per-size %I/%Q images
+            element_addressing: profile.address_unit != c_backend::AddressUnit::Byte,
         };
         let mut lowering = if uses_blocks {
             lower::lower(&user, &library, opts.strategy, &window, &mut self.diags)

@@ -11,9 +11,14 @@
 //! `%IW0.0`, and `%IB0.0` is not `%IW0.0`), as matiec makes each one its own external variable. A
 //! variable larger than its address's size is E2002. An area's slots together are at most
 //! [`MAX_EXTENSION`] bytes (E2001 beyond).
+//!
+//! Flat addresses outside their area (E2001) are reported once per area: the first, with a note
+//! counting the others and naming the size that would hold them all ([`Gen::fold_outside_area`]);
+//! a program written for a larger process image (OpenPLC's `%QW0..%QW1023`) is one diagnostic per
+//! area, not one per variable.
 
 use super::Gen;
-use crate::profile::{address_text, Located};
+use crate::profile::{address_text, area_field, area_name, Located};
 use diagnostics::{code, Diagnostic};
 use il_frontend::ast::{AddressSize, Area, DirectAddress};
 
@@ -65,7 +70,18 @@ impl Gen<'_> {
         access_bytes: Option<u32>,
     ) -> Result<Located, Box<Diagnostic>> {
         if !is_hierarchical(addr) {
-            return self.profile.locate(addr, access_bytes);
+            let located = self.profile.locate(addr, access_bytes);
+            if let Err(d) = &located {
+                if d.code == code::E2001 {
+                    let end = self.profile.needed_bytes(addr, access_bytes).unwrap_or(0);
+                    self.outside_area.entry(d.span).or_insert((
+                        area_index(addr.area),
+                        end,
+                        address_text(addr),
+                    ));
+                }
+            }
+            return located;
         }
         let size = size_bytes(addr.size);
         let text = address_text(addr);
@@ -124,5 +140,63 @@ impl Gen<'_> {
             bit,
             bytes: wanted,
         })
+    }
+
+    /// Keeps the first E2001 of each area in source order (flat addresses outside the profile's
+    /// area) and drops the others, noting on the first how many more there were, the farthest of
+    /// them and the area size that holds them all. Runs once the program is generated, over every
+    /// diagnostic reported.
+    pub(super) fn fold_outside_area(&mut self) {
+        if self.outside_area.is_empty() {
+            return;
+        }
+        let list = std::mem::take(&mut *self.diags).into_vec();
+        let area_of = |d: &Diagnostic| {
+            (d.code == code::E2001)
+                .then(|| self.outside_area.get(&d.span))
+                .flatten()
+        };
+        let key = |d: &Diagnostic| d.span.map(|s| (s.file.0, s.start, s.end));
+        // per area: how many, the first in source order (its index), the farthest (bytes, text)
+        let mut count = [0u32; 3];
+        let mut first: [Option<usize>; 3] = [None; 3];
+        let mut farthest: [(u64, String); 3] = Default::default();
+        for (i, d) in list.iter().enumerate() {
+            let Some((a, end, text)) = area_of(d) else {
+                continue;
+            };
+            count[*a] += 1;
+            if first[*a].is_none_or(|f| key(d) < key(&list[f])) {
+                first[*a] = Some(i);
+            }
+            if *end > farthest[*a].0 {
+                farthest[*a] = (*end, text.clone());
+            }
+        }
+        let mut kept = Vec::with_capacity(list.len());
+        for (i, mut d) in list.into_iter().enumerate() {
+            let Some(a) = area_of(&d).map(|(a, ..)| *a) else {
+                kept.push(d);
+                continue;
+            };
+            if first[a] != Some(i) {
+                continue;
+            }
+            if count[a] > 1 {
+                let area = [Area::Input, Area::Output, Area::Memory][a];
+                let (end, text) = &farthest[a];
+                let (area, field) = (area_name(area), area_field(area));
+                d = d.with_note(match count[a] - 1 {
+                    1 => format!(
+                        "1 more address outside the {area} area is not reported: `{text}`, which needs a target profile whose `{field}` is at least {end}"
+                    ),
+                    n => format!(
+                        "{n} more addresses outside the {area} area are not reported; the farthest, `{text}`, needs a target profile whose `{field}` is at least {end}"
+                    ),
+                });
+            }
+            kept.push(d);
+        }
+        self.diags.extend(kept);
     }
 }

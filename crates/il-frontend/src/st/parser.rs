@@ -503,6 +503,15 @@ impl<'s, 'd> Parser<'s, 'd> {
                 );
                 None
             }
+            // a name an error was just reported at, read again as a statement when recovery found
+            // nothing else before the end of the text (a file cut off in `IF (a AN`): no second error
+            Tok::Eof
+                if self
+                    .last_error
+                    .is_some_and(|(_, span)| span.start == target.span.start) =>
+            {
+                None
+            }
             _ => {
                 let found = self.describe_current();
                 self.error_here(
