@@ -222,7 +222,11 @@ fn and_then_and_or_else_evaluate_their_right_operand_only_when_needed() {
                END_PROGRAM\n";
     let dir = tempfile::tempdir().unwrap();
     let f = write(dir.path(), "guards.st", src);
-    let (trace, stderr) = run_traced(&f, 3, "Main.i,Main.a,Main.b,Main.c,Main.d,Main.calls,Main.k");
+    let (trace, stderr) = run_traced(
+        &f,
+        3,
+        "Main.i,Main.a,Main.b,Main.c,Main.d,Main.calls,Main.k",
+    );
     assert_eq!(
         trace,
         "cycle,time_ms,Main.i,Main.a,Main.b,Main.c,Main.d,Main.calls,Main.k\n\
@@ -307,5 +311,28 @@ fn method_calls_and_non_bool_operands_after_and_then_are_located_errors() {
             "m.st:14:6: error[E3105]: the operand of AND_THEN must be BOOL, but this expression \
              is INT",
         ]
+    );
+}
+
+/// An action of a program in no resource, called from the configured program, runs on the
+/// program's own instance (its body never runs: nothing calls the program itself). Before: E3135
+/// "has no instance in the configuration".
+#[test]
+fn an_action_of_a_program_in_no_resource_runs_on_its_own_instance() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(
+        dir.path(),
+        "act.st",
+        "PROGRAM counter\nVAR n : INT; END_VAR\nn := n + 100;\nEND_PROGRAM\n\
+         ACTIONS\nACTION Bump:\nn := n + 5;\nEND_ACTION\nEND_ACTIONS\n\
+         PROGRAM other\nVAR m : INT; seen : INT; END_VAR\nm := m + 1;\n\
+         IF m >= 2 THEN counter.Bump(); END_IF;\nseen := counter.n;\nEND_PROGRAM\n\
+         CONFIGURATION Cfg\nRESOURCE Res ON PLC\nTASK Main(INTERVAL := T#10ms, PRIORITY := 1);\n\
+         PROGRAM O WITH Main : other;\nEND_RESOURCE\nEND_CONFIGURATION\n",
+    );
+    let (trace, _) = run_traced(&f, 3, "O.seen,counter.n");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,O.seen,counter.n\n0,0,0,0\n1,10,5,5\n2,20,10,10\n"
     );
 }

@@ -26,8 +26,7 @@ fn has_short_circuit(mut e: &Expr) -> bool {
     loop {
         match &e.kind {
             ExprKind::Binary { op, left, right } => {
-                if matches!(op, BinaryOp::AndThen | BinaryOp::OrElse) || has_short_circuit(right)
-                {
+                if matches!(op, BinaryOp::AndThen | BinaryOp::OrElse) || has_short_circuit(right) {
                     return true;
                 }
                 e = left;
