@@ -336,3 +336,66 @@ fn an_action_of_a_program_in_no_resource_runs_on_its_own_instance() {
         "cycle,time_ms,O.seen,counter.n\n0,0,0,0\n1,10,5,5\n2,20,10,10\n"
     );
 }
+
+// ------------------------------------------------------------------ 3. `GVL.N` in text files
+
+/// A CODESYS global variable list object exported as text (`GVL.txt`: `{attribute
+/// 'qualified_only'}` and a CONSTANT list, one constant defined by another) is the list `GVL`: a
+/// program's bounds (`ARRAY[1..GVL.nJoints]`, `STRING(GVL.MAX_SIZE)`) and body (`GVL.nJoints`)
+/// name its constants qualified, in `.txt`, `.st` and `.il` files. Before: E0011 at the `.` of
+/// the bound (the remaining wrong file of `unseen_projects_r10.rs`), E1001 at `GVL` in a body.
+#[test]
+fn qualified_list_constants_of_a_text_gvl_object_bound_arrays_and_run_in_bodies() {
+    let dir = tempfile::tempdir().unwrap();
+    let gvl_text = "{attribute 'qualified_only'}\nVAR_GLOBAL\nEND_VAR\nVAR_GLOBAL CONSTANT\n\
+                    \tnJoints:INT:=5;\n\tMAX_SIZE:INT:=nJoints;\nEND_VAR\n";
+    let gvl = write(dir.path(), "GVL.txt", gvl_text);
+    let prg = write(
+        dir.path(),
+        "PLC_PRG.txt",
+        "PROGRAM PLC_PRG\nVAR\n\tq : ARRAY[1..GVL.nJoints] OF REAL;\n\tname : STRING(GVL.MAX_SIZE);\n\
+         \tn : INT;\n\tsum : INT;\nEND_VAR\n\
+         n := GVL.nJoints;\nq[GVL.nJoints] := 1.5;\nsum := sum + GVL.MAX_SIZE * 2;\nname := 'abc';\n\
+         END_PROGRAM\n",
+    );
+    let (trace, _) = run_traced_files(
+        &[&gvl, &prg],
+        2,
+        "PLC_PRG.n,PLC_PRG.sum,PLC_PRG.q[5],PLC_PRG.name",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PLC_PRG.n,PLC_PRG.sum,PLC_PRG.q[5],PLC_PRG.name\n\
+         0,0,5,10,1.5,\"abc\"\n1,10,5,20,1.5,\"abc\"\n"
+    );
+    // `.st` and IL: the same list as `GVL.st`, an IL program bounded and reading it qualified
+    let gvl_st = write(dir.path(), "GVL.st", gvl_text);
+    let il = write(
+        dir.path(),
+        "main_il.il",
+        "PROGRAM MainIl\nVAR\n  buf : ARRAY[0..GVL.nJoints] OF INT;\n  n : INT;\nEND_VAR\n\
+         LD GVL.MAX_SIZE\nADD 1\nST n\nST buf[GVL.nJoints]\nEND_PROGRAM\n",
+    );
+    let (trace, _) = run_traced_files(&[&gvl_st, &il], 1, "MainIl.n,MainIl.buf[5]");
+    assert_eq!(trace, "cycle,time_ms,MainIl.n,MainIl.buf[5]\n0,0,6,6\n");
+}
+
+/// A globals-only file named like a POU of the project (`Main.st` beside `PROGRAM Main`) gives
+/// its list no name (the name is taken): its members are used unqualified, as before.
+#[test]
+fn a_globals_file_named_like_a_pou_stays_an_unnamed_list() {
+    let dir = tempfile::tempdir().unwrap();
+    let globals = write(
+        dir.path(),
+        "Main.st",
+        "VAR_GLOBAL\n  level : INT := 7;\nEND_VAR\n",
+    );
+    let prg = write(
+        dir.path(),
+        "prog.st",
+        "PROGRAM Main\nVAR_EXTERNAL level : INT; END_VAR\nVAR x : INT; END_VAR\n\
+         x := level * 2;\nEND_PROGRAM\n",
+    );
+    let (trace, _) = run_traced_files(&[&globals, &prg], 1, "Main.x");
+    assert_eq!(trace, "cycle,time_ms,Main.x\n0,0,14\n");
+}

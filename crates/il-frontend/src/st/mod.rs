@@ -16,6 +16,7 @@ pub mod ast;
 pub mod file;
 pub mod infer;
 pub mod lexer;
+mod list_bounds;
 pub mod lower;
 pub mod parser;
 mod qualifiers;
