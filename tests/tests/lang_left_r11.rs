@@ -399,3 +399,65 @@ fn a_globals_file_named_like_a_pou_stays_an_unnamed_list() {
     let (trace, _) = run_traced_files(&[&globals, &prg], 1, "Main.x");
     assert_eq!(trace, "cycle,time_ms,Main.x\n0,0,14\n");
 }
+
+// ------------------------------------------------------------------ 4. instances with arguments
+
+/// IEC 61131-3 edition 3's structured initial value of an instance (`t : TON := (PT := T#20ms)`,
+/// `f : FB_X := (a := 1, k := 10)`, inputs and internal variables) runs; CODESYS's and TwinCAT's
+/// `f : FB_X(a := 1);` passes FB_init arguments, which ladderc does not run: one E0329 at the
+/// argument list per declaration (named or positional), in `.st` and TwinCAT files, and nothing
+/// else (a CASE label's call `1: f(a := 2);` is no declaration; `STRING(10)`, `INT(0..10)` are a
+/// length and a subrange). Before: E0011 "unexpected `a`".
+#[test]
+fn structured_instance_values_run_and_fb_init_arguments_are_one_e0329_each() {
+    let fb = "FUNCTION_BLOCK FB_X\nVAR_INPUT a : INT := 5; END_VAR\nVAR_OUTPUT q : INT; END_VAR\n\
+              VAR k : INT; END_VAR\nq := a + k;\nEND_FUNCTION_BLOCK\n";
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(
+        dir.path(),
+        "init.st",
+        &format!(
+            "{fb}PROGRAM Main\nVAR\n  t : TON := (PT := T#20ms);\n  f : FB_X := (a := 1, k := 10);\n  \
+             q : INT; done : BOOL;\nEND_VAR\nt(IN := TRUE);\ndone := t.Q;\nf();\nq := f.q;\nEND_PROGRAM\n"
+        ),
+    );
+    let (trace, _) = run_traced(&f, 3, "Main.q,Main.done");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.q,Main.done\n0,0,11,0\n1,10,11,0\n2,20,11,1\n"
+    );
+    let src = format!(
+        "{fb}PROGRAM Main\nVAR\n  f : FB_X(a := 1);\n  g : FB_X(2);\n  s : STRING(10);\n  \
+         r : INT(0..10);\n  q : INT;\nEND_VAR\nCASE q OF\n  1: f(a := 2);\nEND_CASE;\n\
+         q := f.q + g.q;\nEND_PROGRAM\n"
+    );
+    let want = |line: u32| {
+        format!(
+            "args.st:{line}:11: error[E0329]: `FB_X(...)` in a declaration passes arguments to \
+             `FB_X`'s FB_init method (CODESYS, TwinCAT), which ladderc does not run"
+        )
+    };
+    assert_eq!(rejected_heads("args.st", &src), vec![want(9), want(10)]);
+    // a TwinCAT object: the same, located in the .TcPOU
+    let tc = write(
+        dir.path(),
+        "MAIN.TcPOU",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
+         <POU Name=\"MAIN\" Id=\"{1}\" SpecialFunc=\"None\">\n    \
+         <Declaration><![CDATA[PROGRAM MAIN\nVAR\n\tfbTon : TON(PT := T#1S);\nEND_VAR\n]]></Declaration>\n    \
+         <Implementation>\n      <ST><![CDATA[fbTon(IN := TRUE);]]></ST>\n    </Implementation>\n  \
+         </POU>\n</TcPlcObject>\n",
+    );
+    let out = common::ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&tc)
+        .output()
+        .unwrap();
+    let heads = common::diagnostic_heads(&out.stderr, dir.path(), false);
+    assert_eq!(out.status.code(), Some(1), "{heads:?}");
+    assert_eq!(
+        heads,
+        ["MAIN.TcPOU:6:13: error[E0329]: `TON(...)` in a declaration passes arguments to `TON`'s \
+          FB_init method (CODESYS, TwinCAT), which ladderc does not run"]
+    );
+}

@@ -674,7 +674,7 @@ pub fn parse_text(
             return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
         }
     }
-    let (unqualified, unreferenced, unlisted);
+    let (unqualified, unreferenced, unlisted, uninitialised);
     let mut references = Vec::new();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
@@ -688,6 +688,15 @@ pub fn parse_text(
         None => src,
     };
     let src = if lang == Lang::St {
+        // `fb : FB_X(a := 1);`: FB_init arguments, one E0329 each (`fb_init_args`)
+        let src = match super::fb_init_args::fb_init_arguments(file, src, &toks, diags) {
+            Some(t) => {
+                uninitialised = t;
+                (toks, problems) = lex(&uninitialised);
+                uninitialised.as_str()
+            }
+            None => src,
+        };
         let src = match reference_declarations(file, src, &toks, diags, &mut references) {
             Some(t) => {
                 unreferenced = t;

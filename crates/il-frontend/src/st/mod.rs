@@ -13,6 +13,7 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
+mod fb_init_args;
 pub mod file;
 pub mod infer;
 pub mod lexer;
