@@ -461,3 +461,64 @@ fn structured_instance_values_run_and_fb_init_arguments_are_one_e0329_each() {
           FB_init method (CODESYS, TwinCAT), which ladderc does not run"]
     );
 }
+
+// ------------------------------------------------------------------ 5. subranges with named bounds
+
+/// Subrange bounds that name integer constants or are constant expressions (`INT(cMin..cMax)`,
+/// `UINT(0..cMax + 1)`, `DINT(-cMax..-cMin)`), also qualified by a list (`UINT(0..GVL.N)` in `.st`
+/// and TwinCAT files): the range is the constants' values (a literal outside it is E1017 naming
+/// the evaluated range). Before: E0011 at the name, E0001 at `+`.
+#[test]
+fn subranges_with_named_and_qualified_bounds_take_the_constants_values() {
+    let dir = tempfile::tempdir().unwrap();
+    let consts = "VAR_GLOBAL CONSTANT\n  cMin : INT := 2;\n  cMax : INT := 9;\nEND_VAR\n";
+    let body = |assign: &str| {
+        format!(
+            "{consts}PROGRAM Main\nVAR\n  r : INT(cMin..cMax) := 3;\n  u : UINT(0..cMax + 1) := 10;\n  \
+             w : DINT(-cMax..-cMin) := -5;\nEND_VAR\n{assign}\nEND_PROGRAM\n"
+        )
+    };
+    let f = write(dir.path(), "ranges.st", &body("r := 9;\nu := 0;\nw := -9;"));
+    let (trace, _) = run_traced(&f, 1, "Main.r,Main.u,Main.w");
+    assert_eq!(trace, "cycle,time_ms,Main.r,Main.u,Main.w\n0,0,9,0,-9\n");
+    let heads = rejected_heads("out.st", &body("r := 10;\nu := 11;\nw := -1;"));
+    assert_eq!(
+        heads,
+        [
+            "out.st:11:6: error[E1017]: literal 10 does not fit INT (2..9)",
+            "out.st:12:6: error[E1017]: literal 11 does not fit UINT (0..10)",
+            "out.st:13:6: error[E1017]: literal -1 does not fit DINT (-9..-2)",
+        ]
+    );
+    // qualified by a list: a `.st` GVL object and a TwinCAT GVL
+    let gvl = write(
+        dir.path(),
+        "GVL.st",
+        "VAR_GLOBAL CONSTANT\n  nMax : INT := 5;\nEND_VAR\n",
+    );
+    let main = write(
+        dir.path(),
+        "main.st",
+        "PROGRAM Main\nVAR\n  u : UINT(0..GVL.nMax) := 3;\nEND_VAR\nu := 5;\nEND_PROGRAM\n",
+    );
+    let (trace, _) = run_traced_files(&[&gvl, &main], 1, "Main.u");
+    assert_eq!(trace, "cycle,time_ms,Main.u\n0,0,5\n");
+    let tc_gvl = write(
+        dir.path(),
+        "GVL_Const.TcGVL",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
+         <GVL Name=\"GVL_Const\" Id=\"{9}\">\n    <Declaration><![CDATA[{attribute 'qualified_only'}\n\
+         VAR_GLOBAL CONSTANT\n\tcTop : INT := 4;\nEND_VAR\n]]></Declaration>\n  </GVL>\n</TcPlcObject>\n",
+    );
+    let tc_main = write(
+        dir.path(),
+        "MAIN.TcPOU",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
+         <POU Name=\"MAIN\" Id=\"{1}\" SpecialFunc=\"None\">\n    \
+         <Declaration><![CDATA[PROGRAM MAIN\nVAR\n\tnSlot : UINT(1..GVL_Const.cTop);\nEND_VAR\n]]></Declaration>\n    \
+         <Implementation>\n      <ST><![CDATA[nSlot := 4;]]></ST>\n    </Implementation>\n  \
+         </POU>\n</TcPlcObject>\n",
+    );
+    let (trace, _) = run_traced_files(&[&tc_gvl, &tc_main], 1, "MAIN.nSlot");
+    assert_eq!(trace, "cycle,time_ms,MAIN.nSlot\n0,0,4\n");
+}

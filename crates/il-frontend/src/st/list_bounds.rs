@@ -1,8 +1,9 @@
 //! Constants of a named global variable list in the bounds of `.st` text (CODESYS objects exported as
-//! text): `ARRAY[1..GVL.nJoints]`, `STRING(GVL.N)`, `WSTRING[GVL.N]`.
+//! text): `ARRAY[1..GVL.nJoints]`, `STRING(GVL.N)`, `WSTRING[GVL.N]`, `UINT(0..GVL.N)`.
 //!
 //! Input: the file's text and tokens. Output: the text with each list qualifier (`GVL.`) inside an
-//! ARRAY's bound brackets or a STRING's length blanked, or `None` when there is none. The IEC
+//! ARRAY's bound brackets, a STRING's length or an integer subrange's bounds blanked, or `None`
+//! when there is none. The IEC
 //! declaration grammar has no qualified names there; once blanked, the constant is looked up by its
 //! name among the integer constants of the file and then of every file given with it (E0022 when
 //! none declares it), as TwinCAT objects' bounds are. Invariant: positions unchanged (the qualifier
@@ -22,7 +23,10 @@ pub(super) fn unqualify_list_bounds(src: &str, toks: &[Token]) -> Option<String>
         } else if w.eq_ignore_ascii_case("STRING") || w.eq_ignore_ascii_case("WSTRING") {
             matches!(toks[k + 1].tok, Tok::LBracket | Tok::LParen)
         } else {
-            false
+            // a subrange's bounds: `UINT(0..GVL.N)`
+            toks[k + 1].tok == Tok::LParen
+                && crate::sema::Elementary::from_name(&w.to_ascii_uppercase())
+                    .is_some_and(|e| e.is_integer())
         };
         if !opens {
             k += 1;
