@@ -8,7 +8,7 @@
 //!   is not a plain operand becomes a deferred operator `ADD( ... )`, whose nested list has its own CR;
 //!   call arguments and array indices that are not plain operands are computed first into typed
 //!   temporaries `_ST_T<n>` (IEC evaluates both sides of AND/OR: no short-circuit; CODESYS's
-//!   `AND_THEN`/`OR_ELSE` are computed first into BOOL temporaries, see [`short_circuit`]);
+//!   `AND_THEN`/`OR_ELSE` are computed first into BOOL temporaries, see `lower/short_circuit.rs`);
 //! - control flow becomes `JMP`/`JMPC`/`JMPCN` to labels `_ST_<WHAT><n>` unique in the POU;
 //! - every instruction carries the span of the ST construct it comes from;
 //! - a statement whose text had a syntax error (already reported) produces no code.
