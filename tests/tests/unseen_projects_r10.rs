@@ -168,7 +168,9 @@ fn global_list_headed_by_a_pragma_is_read_as_st() {
     let (trace, stderr) = run_traced_files(
         &[&fixture("r10_gvl_pragma.txt"), &fixture("r10_gvl_prg.txt")],
         5,
-        "count,PLC_PRG.pulses",
+        // (since issue #13's eleventh round a globals-only text file is the list named after
+        // it, so its globals are traced qualified: `tests/tests/lang_left_r11.rs`)
+        "r10_gvl_pragma.count,PLC_PRG.pulses",
     );
     assert!(
         stderr.contains("r10_gvl_pragma.txt:1:1: note[W0302]: read as Structured Text (ST)"),
@@ -178,23 +180,27 @@ fn global_list_headed_by_a_pragma_is_read_as_st() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(
         trace,
-        "cycle,time_ms,count,PLC_PRG.pulses\n0,0,1,1\n1,10,2,2\n2,20,3,3\n3,30,3,4\n4,40,3,5\n"
+        "cycle,time_ms,r10_gvl_pragma.count,PLC_PRG.pulses\n0,0,1,1\n1,10,2,2\n2,20,3,3\n3,30,3,4\n\
+         4,40,3,5\n"
     );
 }
 
-/// `AND_THEN` in an IF condition and `OR_ELSE` in an assignment: one E0324 each, at the operator,
-/// and nothing else. Before: E0100 `expected THEN`, and E0104 with E0106 for the assignment.
+/// `AND_THEN` in an IF condition and `OR_ELSE` in an assignment: since issue #13's eleventh round
+/// they compile (short-circuit, `tests/tests/lang_left_r11.rs`), with one W0324 per text at the
+/// first. Before: one E0324 each; before that, E0100 `expected THEN`, and E0104 with E0106.
 #[test]
-fn codesys_short_circuit_operators_are_one_e0322_each() {
+fn codesys_short_circuit_operators_compile_with_one_w0324() {
     let src = "PROGRAM main\nVAR i : INT; a : ARRAY[1..10] OF INT; n : INT; ok : BOOL; END_VAR\n\
                IF i <= 10 AND_THEN a[i] > 0 THEN\n  n := n + 1;\nEND_IF;\n\
                ok := i > 10 or_else a[i] = 0;\nEND_PROGRAM\n";
-    assert_eq!(
-        rejected_heads("guards.st", src),
-        vec![
-            "guards.st:3:12: error[E0324]: `AND_THEN` is CODESYS's short-circuit AND, not IEC 61131-3: not supported",
-            "guards.st:6:14: error[E0324]: `OR_ELSE` is CODESYS's short-circuit OR, not IEC 61131-3: not supported",
-        ]
+    let (code, lines) = check_text("guards.st", src);
+    assert_eq!(code, Some(0), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with(
+            "guards.st:3:12: warning[W0324]: `AND_THEN` is CODESYS's short-circuit AND, not IEC 61131-3"
+        ),
+        "{lines:?}"
     );
 }
 

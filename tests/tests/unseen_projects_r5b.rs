@@ -349,31 +349,39 @@ fn a_program_variable_needs_exactly_one_instance_in_the_configuration() {
         text(&out.stdout),
         "cycle,time_ms,m1.count,m1.seen\n0,0,1,2\n1,10,1,2\n2,20,2,4\n"
     );
-    for (instances, which) in [
-        (
-            "PROGRAM m1 WITH t : Main; PROGRAM m2 WITH t : Main;",
-            "2 instances",
+    // (a program that the configuration does not instantiate has, since issue #13's eleventh
+    // round, one instance of its own, which only calls from other POUs run: `Main.x` is its
+    // variable, W1413; `tests/tests/lang_left_r11.rs`)
+    let own = main_x(
+        "PROGRAM Other VAR x : INT; END_VAR x := x + 1; END_PROGRAM\n\
+         CONFIGURATION c RESOURCE r ON PLC TASK t(INTERVAL := T#10ms); PROGRAM o WITH t : Other; \
+         END_RESOURCE END_CONFIGURATION\n",
+    );
+    let (code, lines) = common::check_text("cfg.st", &own);
+    assert_eq!(code, Some(0), "{lines:?}");
+    assert!(
+        lines.iter().all(|l| l.contains("warning[W1413]")),
+        "{lines:?}"
+    );
+    let src = main_x(
+        "PROGRAM Other VAR x : INT; END_VAR x := x + 1; END_PROGRAM\n\
+         CONFIGURATION c RESOURCE r ON PLC TASK t(INTERVAL := T#10ms); \
+         PROGRAM m1 WITH t : Main; PROGRAM m2 WITH t : Main; END_RESOURCE END_CONFIGURATION\n",
+    );
+    let (code, lines) = common::check_text("cfg.st", &src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(
+        lines[0].starts_with(
+            "cfg.st:9:9: error[E1001]: `Main` is a program with 2 instances in the configuration, \
+             not one variable"
         ),
-        ("PROGRAM o WITH t : Other;", "no instance"),
-    ] {
-        let src = main_x(&format!(
-            "PROGRAM Other VAR x : INT; END_VAR x := x + 1; END_PROGRAM\n\
-             CONFIGURATION c RESOURCE r ON PLC TASK t(INTERVAL := T#10ms); {instances} END_RESOURCE END_CONFIGURATION\n"
-        ));
-        let (code, lines) = common::check_text("cfg.st", &src);
-        assert_eq!(code, Some(1), "{lines:?}");
-        assert_eq!(lines.len(), 2, "{lines:?}");
-        assert!(
-            lines[0].starts_with(&format!(
-                "cfg.st:9:9: error[E1001]: `Main` is a program with {which} in the configuration, not one variable"
-            )),
-            "{lines:?}"
-        );
-        assert!(
-            lines[1].starts_with("cfg.st:13:12: error[E1001]"),
-            "{lines:?}"
-        );
-    }
+        "{lines:?}"
+    );
+    assert!(
+        lines[1].starts_with("cfg.st:13:12: error[E1001]"),
+        "{lines:?}"
+    );
 }
 
 /// `LD Main.count` / `ST Main.count` in an instruction-list body: the same access as in ST.

@@ -15,9 +15,10 @@
 //! Every [`LibraryElement::Action`] is then dropped: a POU none of whose actions is called from
 //! outside is unchanged. An action of a PROGRAM called from another POU (`PLC_PRG.Act();`) is linked
 //! the same way, the call becoming `CAL PLC_PRG(__ACTION_ACT := TRUE)` on the program's one
-//! instance (sema and the C backend resolve the program's name to it); when the program has no
-//! instance or several (a configuration that instantiates it twice), or calls itself by its name,
-//! the call is E3135.
+//! instance (sema and the C backend resolve the program's name to it; a program that the
+//! configuration does not instantiate has one instance of its own, run only by such calls); when
+//! the program has several instances (a configuration that instantiates it twice), or calls itself
+//! by its name, the call is E3135.
 
 use crate::ast::{
     Accessor, Action, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt,
@@ -63,7 +64,6 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
     // the instances of each program (upper-case type name -> instance names); without a
     // configuration every program runs as its one implicit instance
     let mut instances: HashMap<String, Vec<Ident>> = HashMap::new();
-    let mut configured = false;
     for item in units.iter().flat_map(|u| u.items.iter()) {
         let mut add = |b: &VarBlock| {
             for v in &b.vars {
@@ -84,7 +84,6 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             }
             LibraryElement::GlobalVars(b) => add(b),
             LibraryElement::Configuration(c) => {
-                configured = true;
                 for p in c.resources.iter().flat_map(|r| r.programs.iter()) {
                     instances
                         .entry(p.type_name.key())
@@ -121,7 +120,6 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
                 kinds: &kinds,
                 actions: &actions,
                 instances: &instances,
-                configured,
                 caller: p.name.key(),
             };
             rewrite_calls(&mut p.body, &scope, &mut called, diags);
@@ -225,7 +223,6 @@ struct Scope<'a> {
     kinds: &'a HashMap<String, PouKind>,
     actions: &'a HashMap<String, Vec<Action>>,
     instances: &'a HashMap<String, Vec<Ident>>,
-    configured: bool,
     /// The calling POU (upper-case name).
     caller: String,
 }
@@ -301,12 +298,8 @@ fn rewrite_calls(
                     "`{}` calls its own action through its name",
                     a.pou.name
                 )),
-                Some([_]) => None,
-                None if !scope.configured => None,
-                None => Some(format!(
-                    "program `{}` has no instance in the configuration, so there is no state to run the action on",
-                    a.pou.name
-                )),
+                // (a program in no resource has one instance of its own: `sema::program_calls`)
+                Some([_]) | None => None,
                 Some(list) => Some(format!(
                     "program `{}` has {} instances ({}): the call does not say which one",
                     a.pou.name,

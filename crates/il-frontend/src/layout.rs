@@ -1083,7 +1083,11 @@ fn after_string_keyword(before: &str) -> bool {
         .rposition(|b| !(b.is_ascii_alphanumeric() || b == b'_'))
         .map_or(0, |i| i + 1);
     let word = &before[word_start..];
-    word.eq_ignore_ascii_case("STRING") || word.eq_ignore_ascii_case("WSTRING")
+    word.eq_ignore_ascii_case("STRING")
+        || word.eq_ignore_ascii_case("WSTRING")
+        // a subrange's bounds (`INT(cMin..cMax - 1)`): an elementary integer type's name
+        || crate::sema::Elementary::from_name(&word.to_ascii_uppercase())
+            .is_some_and(|e| e.is_integer())
 }
 
 #[cfg(test)]

@@ -1489,12 +1489,19 @@ pub fn global_integer_constants(
             return;
         }
         for v in &block.vars {
-            if let Some(Initializer::Value(Operand::Literal(lit))) = &v.init {
-                if let LiteralKind::Int(n) = lit.kind {
-                    if !failed(v.span) {
-                        found.insert(v.name.name.to_ascii_uppercase(), n);
-                    }
+            let value = match &v.init {
+                Some(Initializer::Value(Operand::Literal(lit))) => match lit.kind {
+                    LiteralKind::Int(n) => Some(n),
+                    _ => None,
+                },
+                // `MAX_SIZE : INT := nJoints;`: a constant named before (CODESYS GVLs)
+                Some(Initializer::Value(Operand::Var(r))) if r.accessors.is_empty() => {
+                    found.get(&r.base.name.to_ascii_uppercase()).copied()
                 }
+                _ => None,
+            };
+            if let Some(n) = value.filter(|_| !failed(v.span)) {
+                found.insert(v.name.name.to_ascii_uppercase(), n);
             }
         }
     };

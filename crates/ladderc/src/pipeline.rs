@@ -261,6 +261,8 @@ impl Session {
         self.diags.extend(expand_diags);
         let mut twincat_units: Vec<bool> = Vec::new();
         let mut twincat_lists: Vec<(usize, String)> = Vec::new();
+        // text files (`.st`, `.txt`) that may be a CODESYS global variable list object
+        let mut text_lists: Vec<(usize, String)> = Vec::new();
         let mut twincat_tasks = Vec::new();
         let mut twincat_failed: Vec<String> = Vec::new();
         for p in &paths {
@@ -450,11 +452,17 @@ impl Session {
                         text: v2_text.clone().or_else(|| tc_text.clone()),
                         diags: local,
                     });
+                    if v2_text.is_none() && tc_text.is_none() && stem == Some(implicit) {
+                        text_lists.push((units.len(), implicit.to_string()));
+                    }
                     units.push(unit);
                     continue;
                 }
                 offered.push(il_frontend::parser::global_integer_constants(&unit, &local));
                 self.diags.extend(local);
+                if v2_text.is_none() && tc_text.is_none() && stem == Some(implicit) {
+                    text_lists.push((units.len(), implicit.to_string()));
+                }
                 units.push(unit);
                 pending.extend(bodies);
                 var_config.extend(entries);
@@ -477,6 +485,7 @@ impl Session {
                 }
             }
         }
+        crate::text_lists::name_text_lists(&mut units, &text_lists);
         if !twincat_units.is_empty() || !twincat_tasks.is_empty() {
             self.task_cycle_ms = crate::twincat::configure(
                 self,

@@ -7,7 +7,8 @@
 //! 0, I, 2I ...; a task slower than the cycle runs on the first cycle at or after its due time), in
 //! priority order (lower number first, then declaration order), then the program instances without a
 //! task; SINGLE tasks run once per rising edge of their variable; without a configuration, every
-//! PROGRAM runs each cycle in source order. Table names: `<instance>.<var>[.<field>|[i]]...`, globals by
+//! PROGRAM runs each cycle in source order. A program in no resource that other POUs call (`P();`)
+//! has an instance named like it, which only those calls run. Table names: `<instance>.<var>[.<field>|[i]]...`, globals by
 //! their own name, located variables alias the process image.
 
 use super::scope::{Place, Scope};
@@ -32,6 +33,9 @@ pub(super) struct Instance {
     pub(super) pou: PouId,
     /// (config, resource, index in resource.programs) for configured instances.
     pub(super) configured: Option<(usize, usize, usize)>,
+    /// The own instance of a program that the configuration does not instantiate but other POUs
+    /// call or use (`P();`, `P.x`): only those calls run it.
+    pub(super) called_only: bool,
 }
 
 impl Gen<'_> {
@@ -47,6 +51,7 @@ impl Gen<'_> {
                         watch_name: p.name.clone(),
                         pou: PouId(i as u32),
                         configured: None,
+                        called_only: false,
                     });
                 }
             }
@@ -59,8 +64,26 @@ impl Gen<'_> {
                             watch_name: p.name.clone(),
                             pou: p.pou,
                             configured: Some((ci, ri, pi)),
+                            called_only: false,
                         });
                     }
+                }
+            }
+            // programs in no resource that other POUs call, use by name or whose actions they call
+            for (i, p) in self.model.pous.iter().enumerate() {
+                let id = PouId(i as u32);
+                let used = self.model.programs_used_by_name.contains(&id)
+                    || p.vars
+                        .iter()
+                        .any(|v| v.name.starts_with(il_frontend::actions::FLAG_PREFIX));
+                if p.kind == PouKind::Program && used && !v.iter().any(|x| x.pou == id) {
+                    v.push(Instance {
+                        c_name: mangle::implicit_instance(&p.name),
+                        watch_name: p.name.clone(),
+                        pou: id,
+                        configured: None,
+                        called_only: true,
+                    });
                 }
             }
         }
@@ -179,7 +202,7 @@ impl Gen<'_> {
         }
         for inst in &instances {
             let background = match inst.configured {
-                None => true,
+                None => !inst.called_only,
                 Some((ci, ri, pi)) => self.model.configurations[ci].resources[ri].programs[pi]
                     .task
                     .is_none(),

@@ -304,8 +304,8 @@ impl Gen<'_> {
     }
 
     /// The C variable of the one instance of program `name` (its implicit instance without a
-    /// configuration), typed as the program; `None` when `name` is no program or has no single
-    /// instance.
+    /// configuration or when the configuration has none), typed as the program; `None` when `name`
+    /// is no program or has several instances.
     pub fn program_instance_place(&self, name: &str) -> Option<Place> {
         let id = self
             .model
@@ -324,10 +324,13 @@ impl Gen<'_> {
                     }
                 }
             }
-            if found.len() != 1 {
-                return None;
+            match found.len() {
+                // a program in no resource: its own instance, which calls from other POUs run
+                // (defined with the scan when they use it, `scan::instances`)
+                0 => mangle::implicit_instance(&self.model.pou(id).name),
+                1 => found.pop()?,
+                _ => return None,
             }
-            found.pop()?
         };
         Some(Place::Mem {
             lv,

@@ -885,12 +885,17 @@ impl Body<'_, '_> {
             }
             _ => None,
         };
-        let place = match program {
-            Some(id) => super::places::Place {
+        let place = match (program, self.called_program(instance)) {
+            (Some(id), _) => super::places::Place {
                 ty: Type::Fb(FbType::User(id)),
                 read_only: None,
             },
-            None => self.resolve_var(instance),
+            // `CAL P(in := x)`, `P(in := x);` (CODESYS, TwinCAT): the program's one instance
+            (None, Some(id)) => super::places::Place {
+                ty: self.program_call(instance, id).unwrap_or(Type::Error),
+                read_only: None,
+            },
+            (None, None) => self.resolve_var(instance),
         };
         match place.ty {
             Type::Fb(fb) => {

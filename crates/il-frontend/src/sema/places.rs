@@ -682,7 +682,9 @@ impl Body<'_, '_> {
 
     /// How many instances program `id` has: 1 without a configuration (it runs alone), else its
     /// `PROGRAM` declarations in every resource.
-    fn program_instances(&self, id: PouId) -> usize {
+    /// A program the configuration does not instantiate has one instance of its own, which only
+    /// other POUs' calls run (`sema::program_calls`).
+    pub(super) fn program_instances(&self, id: PouId) -> usize {
         if self.a.model.configurations.is_empty() {
             return 1;
         }
@@ -694,6 +696,7 @@ impl Body<'_, '_> {
             .flat_map(|r| &r.programs)
             .filter(|p| p.pou == id)
             .count()
+            .max(1)
     }
 
     /// `MAIN.x` from any POU (CODESYS, TwinCAT): the one instance of program `id`, whose variables the

@@ -310,6 +310,12 @@ pub enum BinaryOp {
     Mod,
     /// `**`: exponentiation, lowered to `EXPT` (highest precedence).
     Power,
+    /// `AND_THEN` (CODESYS, TwinCAT; not IEC 61131-3): Boolean AND whose right operand is evaluated
+    /// only when the left is TRUE (precedence of `AND`).
+    AndThen,
+    /// `OR_ELSE` (CODESYS, TwinCAT; not IEC 61131-3): Boolean OR whose right operand is evaluated
+    /// only when the left is FALSE (precedence of `OR`).
+    OrElse,
 }
 
 impl BinaryOp {
@@ -331,6 +337,8 @@ impl BinaryOp {
             BinaryOp::Div => "/",
             BinaryOp::Mod => "MOD",
             BinaryOp::Power => "**",
+            BinaryOp::AndThen => "AND_THEN",
+            BinaryOp::OrElse => "OR_ELSE",
         }
     }
 }

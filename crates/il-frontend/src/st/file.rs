@@ -674,9 +674,29 @@ pub fn parse_text(
             return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
         }
     }
-    let (unqualified, unreferenced);
+    let (unqualified, unreferenced, unlisted, uninitialised);
     let mut references = Vec::new();
+    // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
+    let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
+    let lists_blanked = blanked_lists.is_some();
+    let src = match blanked_lists {
+        Some(t) => {
+            unlisted = t;
+            (toks, problems) = lex(&unlisted);
+            unlisted.as_str()
+        }
+        None => src,
+    };
     let src = if lang == Lang::St {
+        // `fb : FB_X(a := 1);`: FB_init arguments, one E0329 each (`fb_init_args`)
+        let src = match super::fb_init_args::fb_init_arguments(file, src, &toks, diags) {
+            Some(t) => {
+                uninitialised = t;
+                (toks, problems) = lex(&uninitialised);
+                uninitialised.as_str()
+            }
+            None => src,
+        };
         let src = match reference_declarations(file, src, &toks, diags, &mut references) {
             Some(t) => {
                 unreferenced = t;
@@ -715,7 +735,7 @@ pub fn parse_text(
     drop(toks);
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
     if let Some((unit, local)) = first_try {
-        if st_bodies.is_empty() && var_config.0.is_empty() {
+        if st_bodies.is_empty() && var_config.0.is_empty() && !lists_blanked {
             diags.extend(local);
             return (unit, pending, Vec::new());
         }

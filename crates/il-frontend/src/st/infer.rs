@@ -327,6 +327,7 @@ impl Env<'_> {
                 unify(l, r)
             }
             Mod | And | Or | Xor => unify(l, r),
+            AndThen | OrElse => Ty::Known(elem_ref(Elementary::Bool, span)),
         }
     }
 

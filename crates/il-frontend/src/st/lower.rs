@@ -7,7 +7,8 @@
 //!   with the code of temporaries, then a load), and leaves the value in the CR; a right operand that
 //!   is not a plain operand becomes a deferred operator `ADD( ... )`, whose nested list has its own CR;
 //!   call arguments and array indices that are not plain operands are computed first into typed
-//!   temporaries `_ST_T<n>` (IEC evaluates both sides of AND/OR: no short-circuit);
+//!   temporaries `_ST_T<n>` (IEC evaluates both sides of AND/OR: no short-circuit; CODESYS's
+//!   `AND_THEN`/`OR_ELSE` are computed first into BOOL temporaries, see `lower/short_circuit.rs`);
 //! - control flow becomes `JMP`/`JMPC`/`JMPCN` to labels `_ST_<WHAT><n>` unique in the POU;
 //! - every instruction carries the span of the ST construct it comes from;
 //! - a statement whose text had a syntax error (already reported) produces no code.
@@ -24,6 +25,8 @@ use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use std::cell::RefCell;
 use std::collections::HashMap;
+
+mod short_circuit;
 
 /// Labels of the innermost loop, for EXIT and CONTINUE.
 struct LoopLabels {
@@ -65,6 +68,8 @@ pub struct PouLowering<'d> {
     /// types each node once, not n times). Cleared by every public entry point and after lowering a
     /// tree built here, so no entry outlives the node it describes.
     types: RefCell<TypeCache>,
+    /// Nesting of deferred operators' lists being lowered (`AND( ...`): 0 where jumps may stand.
+    nested: u32,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -128,6 +133,9 @@ fn binop(op: BinaryOp) -> Option<Op> {
         BinaryOp::Mul => Op::Mul,
         BinaryOp::Div => Op::Div,
         BinaryOp::Mod => Op::Mod,
+        // (`value` computes these into temporaries before it gets here: see `short_circuit`)
+        BinaryOp::AndThen => Op::And,
+        BinaryOp::OrElse => Op::Or,
         BinaryOp::Power => return None,
     })
 }
@@ -181,6 +189,7 @@ impl<'d> PouLowering<'d> {
                 .map(|m| (m.name.to_ascii_uppercase(), m.clone()))
                 .collect(),
             types: RefCell::new(TypeCache::new()),
+            nested: 0,
         }
     }
 
@@ -465,6 +474,25 @@ impl<'d> PouLowering<'d> {
     fn hoist_in(&self, e: &mut Expr, calls: &mut Vec<Stmt>, diags: &mut Diagnostics) {
         match &mut e.kind {
             ExprKind::Unary { operand, .. } => self.hoist_in(operand, calls, diags),
+            ExprKind::Binary {
+                op: BinaryOp::AndThen | BinaryOp::OrElse,
+                left,
+                right,
+            } => {
+                self.hoist_in(left, calls, diags);
+                // the right operand runs only sometimes: its method calls cannot run first
+                if let Some(span) = self.first_method_call(right) {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0108,
+                            "a call of the block's own method after AND_THEN or OR_ELSE is not supported",
+                        )
+                        .at(span)
+                        .with_hint("call the method inside an IF that tests the left operand, and test the variable that holds its result"),
+                    );
+                    right.kind = ExprKind::Error;
+                }
+            }
             ExprKind::Binary { left, right, .. } => {
                 self.hoist_in(left, calls, diags);
                 self.hoist_in(right, calls, diags);
@@ -1169,6 +1197,29 @@ impl<'d> PouLowering<'d> {
         // A plain name that is not a variable but a function: a function call whose result is dropped.
         if let Some(name) = callee.name() {
             if self.env().var_type(name).is_none() {
+                if self
+                    .decls
+                    .pou(&name.name)
+                    .is_some_and(|p| p.kind == PouKind::Program)
+                {
+                    // `P(in := x);` (CODESYS, TwinCAT): the program's one instance runs, as
+                    // `CAL P(in := x)` (sema checks that it has one)
+                    let ty = TypeRef::Named(name.clone());
+                    let args = self.call_args(args, |env, n, _| env.member(&ty, n), out, diags);
+                    out.push(instr(
+                        InstrKind::Call {
+                            cond: Condition::Always,
+                            instance: Box::new(VarRef {
+                                base: name.clone(),
+                                accessors: Default::default(),
+                                span: name.span,
+                            }),
+                            args,
+                        },
+                        span,
+                    ));
+                    return;
+                }
                 let e = Expr {
                     kind: ExprKind::Call {
                         name: name.clone(),
@@ -1437,6 +1488,13 @@ impl<'d> PouLowering<'d> {
     /// Code that leaves the value of `e` in the current result; `out` must be at a point where the
     /// current result is free.
     fn value(&mut self, e: &Expr, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        if self.nested == 0 {
+            if let Some(plain) = self.short_circuits(e, out, diags) {
+                self.value(&plain, out, diags);
+                self.types.get_mut().clear();
+                return;
+            }
+        }
         let hint = self.lit_hint.take();
         // IEC 61131-3: integer literals are ANY_INT, so a division of them is an integer division
         // (`7 / 2` is 3), even where the context is REAL: computed as LINT, then converted.
@@ -1609,7 +1667,9 @@ impl<'d> PouLowering<'d> {
         }
         let mut body = Vec::new();
         self.lit_hint = hint;
+        self.nested += 1;
         self.value(right, &mut body, diags);
+        self.nested -= 1;
         // `ADD( x` ...: the nested list's first load goes on the opening line.
         let operand = match body.first() {
             Some(IlStmt::Instr(Instruction {

@@ -13,9 +13,11 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
+mod fb_init_args;
 pub mod file;
 pub mod infer;
 pub mod lexer;
+mod list_bounds;
 pub mod lower;
 pub mod parser;
 mod qualifiers;

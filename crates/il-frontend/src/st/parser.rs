@@ -110,6 +110,10 @@ struct Parser<'s, 'd> {
     /// Inside a condition evaluated again and again or only sometimes (WHILE, UNTIL, ELSIF): a
     /// method call there cannot be put before the statement.
     no_hoist: usize,
+    /// Inside the right operand of AND_THEN / OR_ELSE (for E0108's message).
+    short_operand: usize,
+    /// Whether W0324 (AND_THEN / OR_ELSE) was reported for this text.
+    short_circuit_noted: bool,
     /// The last error reported (code, span): the same error at the same place again (an unclosed
     /// `(` or IF per level after E0108 "nested too deeply") is not repeated.
     last_error: Option<(Code, Span)>,
@@ -149,6 +153,8 @@ impl<'s, 'd> Parser<'s, 'd> {
             expr_start: 0,
             hoisted: Vec::new(),
             no_hoist: 0,
+            short_operand: 0,
+            short_circuit_noted: false,
             last_error: None,
             diags,
         };
@@ -803,7 +809,11 @@ impl<'s, 'd> Parser<'s, 'd> {
                 )
             } else {
                 (
-                    format!("a call of method `{}` in a WHILE, UNTIL or ELSIF condition is not supported", m.name),
+                    if self.short_operand > 0 {
+                        format!("a call of method `{}` after AND_THEN or OR_ELSE is not supported", m.name)
+                    } else {
+                        format!("a call of method `{}` in a WHILE, UNTIL or ELSIF condition is not supported", m.name)
+                    },
                     "call the method in a statement of its own and test the variable that holds its result",
                 )
             };
@@ -1089,13 +1099,12 @@ impl<'s, 'd> Parser<'s, 'd> {
             Tok::Star => (BinaryOp::Mul, 6),
             Tok::Slash => (BinaryOp::Div, 6),
             Tok::Kw(Kw::Mod) => (BinaryOp::Mod, 6),
-            // CODESYS's short-circuit operators: read as AND/OR so that the expression parses on,
-            // and reported (E0324) in `binary`
+            // CODESYS's short-circuit operators, at the precedence of AND and OR (W0324 in `binary`)
             Tok::Ident if self.text(self.cur()).eq_ignore_ascii_case("AND_THEN") => {
-                (BinaryOp::And, 2)
+                (BinaryOp::AndThen, 2)
             }
             Tok::Ident if self.text(self.cur()).eq_ignore_ascii_case("OR_ELSE") => {
-                (BinaryOp::Or, 0)
+                (BinaryOp::OrElse, 0)
             }
             _ => return None,
         })
@@ -1110,25 +1119,33 @@ impl<'s, 'd> Parser<'s, 'd> {
             }
             let t = self.bump();
             self.count_operation(t.range.start, t.range.end);
-            if t.tok == Tok::Ident {
-                let word = self.text(&t).to_ascii_uppercase();
-                let (plain, guard) = if op == BinaryOp::And {
-                    ("AND", "nest the IFs (`IF a THEN IF b THEN ...`)")
+            let short = matches!(op, BinaryOp::AndThen | BinaryOp::OrElse);
+            if short && !self.short_circuit_noted {
+                // once per text: a CODESYS project uses them everywhere
+                self.short_circuit_noted = true;
+                let (word, plain) = if op == BinaryOp::AndThen {
+                    ("AND_THEN", "AND")
                 } else {
-                    (
-                        "OR",
-                        "test it in an ELSIF (`IF a THEN ... ELSIF b THEN ...`)",
-                    )
+                    ("OR_ELSE", "OR")
                 };
                 let span = self.span(t.range.start, t.range.end);
-                self.error_at(
-                    code::E0324,
-                    span,
-                    format!("`{word}` is CODESYS's short-circuit {plain}, not IEC 61131-3: not supported"),
-                    format!("where the right operand must not be evaluated, {guard}; elsewhere write {plain}"),
+                self.diags.push(
+                    Diagnostic::warning(
+                        code::W0324,
+                        format!("`{word}` is CODESYS's short-circuit {plain}, not IEC 61131-3 (its other uses in this text are not reported)"),
+                    )
+                    .at(span)
+                    .with_primary_label("the right operand runs only when the left does not decide")
+                    .with_hint(format!("compiled as CODESYS does; for another IEC compiler nest IFs instead (where the right operand may always be evaluated, write {plain})")),
                 );
             }
+            // a method call in the right operand runs only sometimes: it cannot be put before the
+            // statement (E0108 in `method_call_expr`)
+            self.no_hoist += usize::from(short);
+            self.short_operand += usize::from(short);
             let right = self.binary(level + 1);
+            self.no_hoist -= usize::from(short);
+            self.short_operand -= usize::from(short);
             let span = left.span.to(right.span);
             left = Expr {
                 kind: ExprKind::Binary {

@@ -1,0 +1,69 @@
+//! Constants of a named global variable list in the bounds of `.st` text (CODESYS objects exported as
+//! text): `ARRAY[1..GVL.nJoints]`, `STRING(GVL.N)`, `WSTRING[GVL.N]`, `UINT(0..GVL.N)`.
+//!
+//! Input: the file's text and tokens. Output: the text with each list qualifier (`GVL.`) inside an
+//! ARRAY's bound brackets, a STRING's length or an integer subrange's bounds blanked, or `None`
+//! when there is none. The IEC
+//! declaration grammar has no qualified names there; once blanked, the constant is looked up by its
+//! name among the integer constants of the file and then of every file given with it (E0022 when
+//! none declares it), as TwinCAT objects' bounds are. Invariant: positions unchanged (the qualifier
+//! becomes blanks), so every span stays where the user wrote it.
+
+use super::file::word;
+use super::lexer::{Tok, Token};
+
+/// See the module documentation.
+pub(super) fn unqualify_list_bounds(src: &str, toks: &[Token]) -> Option<String> {
+    let mut blanks = Vec::new();
+    let mut k = 0;
+    while k + 1 < toks.len() {
+        let w = word(src, &toks[k]);
+        let opens = if w.eq_ignore_ascii_case("ARRAY") {
+            toks[k + 1].tok == Tok::LBracket
+        } else if w.eq_ignore_ascii_case("STRING") || w.eq_ignore_ascii_case("WSTRING") {
+            matches!(toks[k + 1].tok, Tok::LBracket | Tok::LParen)
+        } else {
+            // a subrange's bounds: `UINT(0..GVL.N)`
+            toks[k + 1].tok == Tok::LParen
+                && crate::sema::Elementary::from_name(&w.to_ascii_uppercase())
+                    .is_some_and(|e| e.is_integer())
+        };
+        if !opens {
+            k += 1;
+            continue;
+        }
+        // up to the matching bracket (or the end of the text)
+        let mut depth = 0usize;
+        let mut j = k + 1;
+        while j < toks.len() {
+            match toks[j].tok {
+                Tok::LBracket | Tok::LParen => depth += 1,
+                Tok::RBracket | Tok::RParen => {
+                    depth -= 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+                Tok::Ident
+                    if toks.get(j + 1).is_some_and(|t| t.tok == Tok::Dot)
+                        && toks.get(j + 2).is_some_and(|t| t.tok == Tok::Ident) =>
+                {
+                    blanks.push(toks[j].range.start..toks[j + 1].range.end);
+                    j += 1;
+                }
+                _ => {}
+            }
+            j += 1;
+        }
+        k = j + 1;
+    }
+    if blanks.is_empty() {
+        return None;
+    }
+    let mut bytes = src.as_bytes().to_vec();
+    for r in blanks {
+        // (an identifier and a dot: ASCII, so blanking keeps the text UTF-8)
+        bytes[r].fill(b' ');
+    }
+    String::from_utf8(bytes).ok()
+}
