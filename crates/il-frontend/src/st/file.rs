@@ -57,12 +57,15 @@ pub struct PouText {
     /// The `INITIAL_STEP` (or first `STEP name :`) of a body in textual SFC (lowered by the caller:
     /// [`PendingBody::sfc`]).
     pub sfc: Option<Range<usize>>,
-    /// The first `PROPERTY name` of a body, or `METHOD name` outside a function block (edition 3
-    /// object orientation not supported: E0303).
+    /// The first `PROPERTY name` of a body that is not a function block's property (a PROGRAM's),
+    /// or `METHOD name` outside a function block (edition 3 object orientation not supported: E0303).
     pub oop: Option<Range<usize>>,
     /// The `METHOD ... END_METHOD` blocks of a function block (edition 3, without inheritance):
     /// compiled as actions with inputs, outputs and a result ([`MethodText`]).
     pub methods: Vec<MethodText>,
+    /// The `PROPERTY ... END_PROPERTY` blocks of a function block: their accessors are compiled as
+    /// methods ([`super::property`]).
+    pub properties: Vec<super::property::PropertyText>,
     /// Not a POU: a CODESYS/RuSTy `ACTIONS ... END_ACTIONS` block (the `ACTIONS` keyword; `body` is
     /// the whole block). Its actions belong to the POU before it (see [`PouText::action_list`]).
     pub actions: Option<Range<usize>>,
@@ -230,6 +233,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     sfc: None,
                     oop: None,
                     methods: Vec::new(),
+                    properties: Vec::new(),
                     actions: Some(start),
                     action_list,
                     modifier: None,
@@ -251,6 +255,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     sfc: None,
                     oop: None,
                     methods: Vec::new(),
+                    properties: Vec::new(),
                     actions: None,
                     action_list: Vec::new(),
                     modifier: None,
@@ -356,16 +361,22 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     })
                     .map(|t| t.range.clone());
                 let body_toks = &toks[first..j.min(n - 1)];
-                let methods = if w == "FUNCTION_BLOCK" {
-                    scan_methods(src, body_toks)
+                let (methods, properties) = if w == "FUNCTION_BLOCK" {
+                    (
+                        scan_methods(src, body_toks),
+                        super::property::scan_properties(src, body_toks),
+                    )
                 } else {
-                    Vec::new()
+                    (Vec::new(), Vec::new())
                 };
                 let oop = body_toks
                     .windows(2)
                     .find(|w| {
                         ((is_word(src, &w[0], "METHOD") && methods.is_empty())
-                            || is_word(src, &w[0], "PROPERTY"))
+                            || (is_word(src, &w[0], "PROPERTY")
+                                && !properties
+                                    .iter()
+                                    .any(|p| p.whole.contains(&w[0].range.start))))
                             && w[1].tok == Tok::Ident
                     })
                     .map(|w| w[0].range.clone());
@@ -377,6 +388,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     sfc,
                     oop,
                     methods,
+                    properties,
                     actions: None,
                     action_list: Vec::new(),
                     modifier,
@@ -402,25 +414,8 @@ fn pending_method(
     m: &MethodText,
     diags: &mut Diagnostics,
 ) -> PendingMethod {
-    let vars = |text: &str, base: usize, diags: &mut Diagnostics| -> Vec<crate::ast::VarBlock> {
-        match crate::parser::run(
-            file,
-            text,
-            base,
-            crate::lexer::Tok::UnitStart,
-            diags,
-            Vec::new(),
-        ) {
-            Some(crate::parser::Parsed::Unit(mut top)) => {
-                let mut blocks: Vec<crate::ast::VarBlock> =
-                    top.implicit.take().map(|(_, v, _)| v).unwrap_or_default();
-                // (a VAR_GLOBAL block would be a top-level item: not a method's)
-                blocks.retain(|b| b.kind != crate::ast::VarKind::Global);
-                blocks
-            }
-            _ => Vec::new(),
-        }
-    };
+    let vars =
+        |text: &str, base: usize, diags: &mut Diagnostics| read_var_blocks(file, text, base, diags);
     let blocks = vars(src.get(m.decls.clone()).unwrap_or(""), m.decls.start, diags);
     // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
     // bytes into the file: after `METHOD `)
@@ -442,6 +437,33 @@ fn pending_method(
         blocks,
         text: src.get(m.stmts.clone()).unwrap_or("").to_string(),
         base: m.stmts.start,
+    }
+}
+
+/// The variable blocks of a method's (or a property accessor's) declaration text, read by the IL
+/// parser in place (`base`: the text's offset in the file), without VAR_GLOBAL blocks.
+pub(super) fn read_var_blocks(
+    file: FileId,
+    text: &str,
+    base: usize,
+    diags: &mut Diagnostics,
+) -> Vec<crate::ast::VarBlock> {
+    match crate::parser::run(
+        file,
+        text,
+        base,
+        crate::lexer::Tok::UnitStart,
+        diags,
+        Vec::new(),
+    ) {
+        Some(crate::parser::Parsed::Unit(mut top)) => {
+            let mut blocks: Vec<crate::ast::VarBlock> =
+                top.implicit.take().map(|(_, v, _)| v).unwrap_or_default();
+            // (a VAR_GLOBAL block would be a top-level item: not a method's)
+            blocks.retain(|b| b.kind != crate::ast::VarKind::Global);
+            blocks
+        }
+        _ => Vec::new(),
     }
 }
 
@@ -920,6 +942,10 @@ pub fn parse_text(
                 for m in &p.methods {
                     methods.push(pending_method(file, src, m, diags));
                     blank(&mut body, m.whole.clone());
+                }
+                for pr in &p.properties {
+                    methods.extend(super::property::pending_accessors(file, src, pr, diags));
+                    blank(&mut body, pr.whole.clone());
                 }
                 pending.push(PendingBody {
                     file,

@@ -18,6 +18,7 @@ pub mod infer;
 pub mod lexer;
 pub mod lower;
 pub mod parser;
+pub mod property;
 mod qualifiers;
 mod scl;
 pub mod sfc;
