@@ -142,3 +142,58 @@ fn a_property_is_not_a_variable_to_watch() {
     );
     assert_eq!(code, Some(0), "{lines:?}");
 }
+
+#[test]
+fn a_property_that_cannot_be_read_or_compiled_is_one_located_error() {
+    // no END_PROPERTY: the text cannot be read
+    let heads = rejected_heads(
+        "a.st",
+        "FUNCTION_BLOCK F\nVAR x : INT; END_VAR\nPROPERTY P : INT\nGET P := x;\nEND_FUNCTION_BLOCK\n",
+    );
+    assert_eq!(
+        heads,
+        ["a.st:3:1: error[E0100]: `F`: this PROPERTY cannot be read"]
+    );
+    // a block whose body is IL: its properties are not compiled
+    let heads = rejected_heads(
+        "b.st",
+        "FUNCTION_BLOCK F\nVAR x : INT; END_VAR\nPROPERTY P : INT\nGET P := 1; END_GET\n\
+         END_PROPERTY\nLD x\nST x\nEND_FUNCTION_BLOCK\n",
+    );
+    assert_eq!(
+        heads,
+        ["b.st:3:10: error[E0303]: PROPERTY `P` of `F`: the properties of a function block whose \
+          body is instruction list are not compiled"]
+    );
+    // two getters reading each other: named as accessors, not by their hidden names
+    let heads = rejected_heads(
+        "c.st",
+        "FUNCTION_BLOCK F\nPROPERTY P : INT\nGET P := Q; END_GET\nEND_PROPERTY\n\
+         PROPERTY Q : INT\nGET Q := P; END_GET\nEND_PROPERTY\nEND_FUNCTION_BLOCK\n\
+         PROGRAM main VAR f : F; y : INT; END_VAR y := f.P; END_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "c.st:3:10: error[E0106]: the Get accessor of property `Q` calls itself (directly or \
+             through another action)",
+            "c.st:6:10: error[E0106]: the Get accessor of property `P` calls itself (directly or \
+             through another action)",
+        ]
+    );
+}
+
+#[test]
+fn a_block_whose_body_is_only_properties_compiles_them() {
+    // TwinCAT writes an empty body for a block that only holds properties; an empty Get still
+    // returns the type's initial value
+    let src = "FUNCTION_BLOCK F\nVAR x : INT; END_VAR\nPROPERTY Zero : INT\nGET\nEND_GET\n\
+               END_PROPERTY\nPROPERTY Next : INT\nGET x := x + 1; Next := x; END_GET\nEND_PROPERTY\n\
+               END_FUNCTION_BLOCK\n\
+               PROGRAM main VAR f : F; y : INT; z : INT; END_VAR y := f.Next + f.Zero; z := f.Next; END_PROGRAM\n";
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("only.st");
+    std::fs::write(&file, src).unwrap();
+    let (trace, _) = run(&file, 2, "main.y,main.z");
+    assert_eq!(trace, "cycle,time_ms,main.y,main.z\n0,0,1,2\n1,10,3,4\n");
+}

@@ -546,7 +546,10 @@ fn inline_rec(
             diags.push(
                 Diagnostic::error(
                     code::E0106,
-                    format!("action `{written}` calls itself (directly or through another action)"),
+                    format!(
+                        "{} calls itself (directly or through another action)",
+                        crate::st::property::describe_action(&written)
+                    ),
                 )
                 .at(span)
                 .with_primary_label("recursive action call")

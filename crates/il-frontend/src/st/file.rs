@@ -912,6 +912,25 @@ pub fn parse_text(
             // `FUNCTION_BLOCK Child EXTENDS Base`: the declarations are read without the clause
             blank(&mut text, h.clone());
         }
+        let in_block = p.modifier.is_some()
+            || src
+                .get(..p.name_range.start)
+                .and_then(|h| h.split_whitespace().last())
+                .is_some_and(|k| k.eq_ignore_ascii_case("FUNCTION_BLOCK"));
+        if let (Some(r), true) = (&p.oop, in_block) {
+            // a function block's PROPERTY that scan_properties could not read
+            diags.push(
+                Diagnostic::error(
+                    code::E0100,
+                    format!("`{}`: this PROPERTY cannot be read", p.name),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("PROPERTY without its type or its END_PROPERTY")
+                .with_hint("write `PROPERTY name : type`, then `GET ... END_GET` and/or `SET ... END_SET`, then `END_PROPERTY`; the body of this POU is not compiled"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         if let Some(r) = p.oop.as_ref().or(p.heritage.as_ref()) {
             let what = src.get(r.clone()).unwrap_or("METHOD").to_ascii_uppercase();
             let (has, what) = match what.split_whitespace().next() {
@@ -933,7 +952,36 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
-        match p.lang {
+        // a function block whose body holds nothing but its properties and methods (TwinCAT's
+        // empty body) is ST: its accessors are
+        let members_only = !p.properties.is_empty() && {
+            let mut rest = src.get(p.body.clone()).unwrap_or("").to_string();
+            let whole = p.methods.iter().map(|m| &m.whole);
+            for r in p.properties.iter().map(|q| &q.whole).chain(whole) {
+                let end = r.end.saturating_sub(p.body.start).min(rest.len());
+                blank(&mut rest, r.start.saturating_sub(p.body.start)..end);
+            }
+            rest.trim().is_empty()
+        };
+        let lang = if members_only { Lang::St } else { p.lang };
+        if lang != Lang::St {
+            for pr in &p.properties {
+                diags.push(
+                    Diagnostic::error(
+                        code::E0303,
+                        format!(
+                            "PROPERTY `{}` of `{}`: the properties of a function block whose body is instruction list are not compiled",
+                            pr.name, p.name
+                        ),
+                    )
+                    .at(Span::new(file, pr.name_range.start, pr.name_range.end))
+                    .with_primary_label("not compiled")
+                    .with_hint("write the block's body in ST (its accessors are compiled as methods of an ST block), or read the variable the property stands for"),
+                );
+                blank(&mut text, pr.whole.clone());
+            }
+        }
+        match lang {
             Lang::St => {
                 // the methods are cut out of the body (blanked, so positions stay) and lowered
                 // with the block

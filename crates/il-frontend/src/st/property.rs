@@ -56,6 +56,21 @@ pub fn is_accessor(method: &str) -> bool {
     m.starts_with(GET_PREFIX) || m.starts_with(SET_PREFIX)
 }
 
+/// How a message names an action or method: "action `M`", or for a property's accessor "the Get
+/// accessor of property `P`" (not its hidden name `__GET_P`).
+pub fn describe_action(name: &str) -> String {
+    let upper = name.to_ascii_uppercase();
+    for (prefix, what) in [(GET_PREFIX, "Get"), (SET_PREFIX, "Set")] {
+        if upper.starts_with(prefix) {
+            return format!(
+                "the {what} accessor of property `{}`",
+                name.get(prefix.len()..).unwrap_or(name)
+            );
+        }
+    }
+    format!("action `{name}`")
+}
+
 /// One `PROPERTY ... END_PROPERTY` block of a function block's text.
 #[derive(Debug, Clone)]
 pub struct PropertyText {
