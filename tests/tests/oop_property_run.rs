@@ -197,3 +197,14 @@ fn a_block_whose_body_is_only_properties_compiles_them() {
     let (trace, _) = run(&file, 2, "main.y,main.z");
     assert_eq!(trace, "cycle,time_ms,main.y,main.z\n0,0,1,2\n1,10,3,4\n");
 }
+
+#[test]
+fn properties_of_instances_in_arrays_and_structures() {
+    // each c[i] counts its calls (n) and gets Value + i written: c[3].n = 4, 8, 12; p.b.Value is
+    // ten times p.a's count; s = Twice(c[2].Value) + p.b.Value; the CASE reads c[1].Value (2, 4, 6)
+    let (trace, _) = run(&fixture("instances.st"), 3, "main.s,main.t,main.c[3].n");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.s,main.t,main.c[3].n\n0,0,16,1,4\n1,10,32,2,8\n2,20,48,2,12\n"
+    );
+}

@@ -97,7 +97,21 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
                     .flat_map(|r| r.globals.iter())
                     .for_each(&mut add);
             }
-            LibraryElement::DataTypes(_) | LibraryElement::Action(_) => {}
+            // a structure's fields, so that `p.axis.Act` walks into an instance held in a STRUCT
+            // (a property read `p.axis.P` calls its accessor method so)
+            LibraryElement::DataTypes(ts) => {
+                for t in ts {
+                    if let crate::ast::TypeDef::Struct { fields } = &t.def {
+                        pou_vars.entry(t.name.key()).or_insert_with(|| {
+                            fields
+                                .iter()
+                                .map(|f| (f.name.key(), f.ty.clone()))
+                                .collect()
+                        });
+                    }
+                }
+            }
+            LibraryElement::Action(_) => {}
         }
     }
     // In rounds: the calls are rewritten and the called actions noted per function block

@@ -925,7 +925,7 @@ pub fn parse_text(
                     format!("`{}`: this PROPERTY cannot be read", p.name),
                 )
                 .at(Span::new(file, r.start, r.end))
-                .with_primary_label("PROPERTY without its type or its END_PROPERTY")
+                .with_primary_label("PROPERTY without its type, its accessors or its END_PROPERTY")
                 .with_hint("write `PROPERTY name : type`, then `GET ... END_GET` and/or `SET ... END_SET`, then `END_PROPERTY`; the body of this POU is not compiled"),
             );
             blank(&mut text, p.body.clone());

@@ -88,8 +88,8 @@ pub struct PropertyText {
     pub whole: Range<usize>,
 }
 
-/// The `PROPERTY` blocks among a function block's body tokens. A block without `: type` or without
-/// `END_PROPERTY` is left out (the body's parse, or the caller's E0303, reports it).
+/// The `PROPERTY` blocks among a function block's body tokens. A block without `: type` on its
+/// line, without `END_PROPERTY` or without any accessor is left out (the caller reports it, E0100).
 pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
     let n = toks.len();
     let mut out = Vec::new();
@@ -124,8 +124,14 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
             continue;
         }
         h += 2;
+        // the type ends with its line (`PROPERTY P : INT` then the accessors)
+        let line_end = src
+            .get(name_tok.range.end..)
+            .and_then(|r| r.find(['\n', '\r']))
+            .map_or(src.len(), |k| name_tok.range.end + k);
         let stop = |t: &Token| {
-            t.tok == Tok::Semi
+            t.range.start >= line_end
+                || t.tok == Tok::Semi
                 || ["GET", "SET", "END_PROPERTY"]
                     .iter()
                     .any(|w| is_word(src, t, w))
@@ -192,6 +198,11 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
         let Some(e) = end else {
             break;
         };
+        if get.is_none() && set.is_none() {
+            // no accessor: not a property ladderc can read (the caller reports it)
+            k = e + 1;
+            continue;
+        }
         out.push(PropertyText {
             name: word(src, name_tok).to_string(),
             name_range: name_tok.range.clone(),
