@@ -78,14 +78,14 @@ fn a_property_misused_is_one_located_error_each() {
     assert_eq!(
         rejected_heads("p.st", src),
         [
-            "p.st:14:1: error[E0330]: property `Speed` has no Set accessor: it cannot be written",
-            "p.st:24:1: error[E0330]: property `Speed` has no Set accessor: it cannot be written",
-            "p.st:25:6: error[E0330]: property `Target` has no Get accessor: it cannot be read",
-            "p.st:26:12: error[E0331]: property `Speed` cannot be passed to a VAR_IN_OUT of `s`: \
+            "p.st:14:1: error[E0337]: property `Speed` has no Set accessor: it cannot be written",
+            "p.st:24:1: error[E0337]: property `Speed` has no Set accessor: it cannot be written",
+            "p.st:25:6: error[E0337]: property `Target` has no Get accessor: it cannot be read",
+            "p.st:26:12: error[E0338]: property `Speed` cannot be passed to a VAR_IN_OUT of `s`: \
              a property is code, not a variable",
-            "p.st:27:20: error[E0331]: property `Target` cannot be passed to an output of `s`: \
+            "p.st:27:20: error[E0338]: property `Target` cannot be passed to an output of `s`: \
              a property is code, not a variable",
-            "p.st:28:1: error[E0331]: a component of property `Pos` cannot be written: the \
+            "p.st:28:1: error[E0338]: a component of property `Pos` cannot be written: the \
              property's value is a copy",
             "p.st:30:26: error[E0108]: a property read in an UNTIL condition is not supported",
         ]

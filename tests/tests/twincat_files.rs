@@ -180,7 +180,7 @@ fn diagnostics_point_into_the_twincat_file_and_a_task_naming_no_program_is_locat
         heads,
         [
             // (the property is compiled; written without a Set accessor in the body's second line)
-            "FB_Prop.TcPOU:11:1: error[E0330]: property `Value` has no Set accessor: it cannot be \
+            "FB_Prop.TcPOU:11:1: error[E0337]: property `Value` has no Set accessor: it cannot be \
              written",
             "PlcTask.TcTTO:7:13: error[E0322]: task `PlcTask` calls `P_Missing`, which no file \
              given declares as a PROGRAM",

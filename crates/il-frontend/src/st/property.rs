@@ -17,8 +17,8 @@
 //! Invariants: inside an accessor the property's own name is the accessor's variable (the result
 //! or the input), never a call of itself; a statement without properties is not touched; every
 //! misuse is one located diagnostic and the statement is dropped: a write of a property without
-//! Set or a read of one without Get (E0330), a property passed to a VAR_IN_OUT or an output, or a
-//! component of it written (E0331). A property read in an ELSIF or WHILE condition is evaluated
+//! Set or a read of one without Get (E0337), a property passed to a VAR_IN_OUT or an output, or a
+//! component of it written (E0338). A property read in an ELSIF or WHILE condition is evaluated
 //! where the condition is (the IF is split at that ELSIF, the loop tests it after calling the
 //! getter); one in an UNTIL condition is E0108.
 
@@ -477,7 +477,7 @@ impl Rewriter<'_, '_> {
                 if !prop.get {
                     let span = p.span;
                     self.error(
-                        code::E0330,
+                        code::E0337,
                         span,
                         format!("property `{}` has no Get accessor: it cannot be read", name.name),
                         "give the property a Get accessor, or read the variable its Set accessor writes",
@@ -529,7 +529,7 @@ impl Rewriter<'_, '_> {
 
     /// Rewrites a call's arguments: inputs are reads; a property passed to a VAR_IN_OUT
     /// (`in_outs`: the callee's parameters in order, the in-outs' names upper-case, others empty)
-    /// or receiving an output is E0331.
+    /// or receiving an output is E0338.
     fn args(&mut self, callee: &str, args: &mut [Arg], in_outs: &[String]) {
         let mut positional = 0;
         for a in args.iter_mut() {
@@ -548,7 +548,7 @@ impl Rewriter<'_, '_> {
             if let (Some(n), true) = (&is_prop, in_out || output) {
                 let what = if in_out { "a VAR_IN_OUT" } else { "an output" };
                 self.error(
-                    code::E0331,
+                    code::E0338,
                     a.value.span,
                     format!(
                         "property `{}` cannot be passed to {what} of `{callee}`: a property is code, not a variable",
@@ -623,7 +623,7 @@ impl Rewriter<'_, '_> {
                     };
                     if !whole {
                         self.error(
-                            code::E0331,
+                            code::E0338,
                             target.span,
                             format!("a component of property `{}` cannot be written: the property's value is a copy", name.name),
                             "read the property into a variable, change the component there, and write the variable to the property",
@@ -633,7 +633,7 @@ impl Rewriter<'_, '_> {
                     }
                     if !prop.set {
                         self.error(
-                            code::E0330,
+                            code::E0337,
                             target.span,
                             format!("property `{}` has no Set accessor: it cannot be written", name.name),
                             "give the property a Set accessor, or write the variable its Get accessor reads",
