@@ -629,7 +629,7 @@ fn method_calls_that_cannot_run_before_their_statement_are_one_located_error_eac
 }
 
 #[test]
-fn codesys_methods_in_vendor_data_run_and_a_property_is_one_located_error() {
+fn codesys_methods_in_vendor_data_run_and_a_property_without_accessors_is_one_located_error() {
     // FB_Axis adds rVelocity every call; its method M_MoveBy (CODESYS: addData .../method, with
     // returnType, inputVars, outputVars and a localVars rLimit initialised to 100.0 at each call)
     // moves by rDistance unless the target passes rLimit (then FALSE through RETURN, rTarget
@@ -662,7 +662,7 @@ fn codesys_methods_in_vendor_data_run_and_a_property_is_one_located_error() {
     );
     assert!(
         lines.iter().any(|l| l.starts_with(
-            "p.xml:42:13: error[E0303]: `FB_Axis`: PROPERTY `P_Home` is not compiled: a PROPERTY is not supported"
+            "p.xml:42:13: error[E0303]: `FB_Axis`: PROPERTY `P_Home` is not compiled: the property has no Get or Set accessor"
         )),
         "{lines:?}"
     );

@@ -560,7 +560,8 @@ fn fbd_literals_take_the_type_of_their_destination() {
 
 #[test]
 fn methods_and_textual_sfc_are_one_diagnostic_each() {
-    // (a METHOD of a function block is compiled since issue #13's last gaps; a PROPERTY is not)
+    // (a METHOD of a function block is compiled since issue #13's last gaps, a PROPERTY with its
+    // GET/SET accessors too: this one has none, its statements stand in the PROPERTY itself)
     let src = "FUNCTION_BLOCK Motor\nVAR speed : INT; END_VAR\n  PROPERTY PUBLIC Speed : INT\n    Speed := speed;\n  END_PROPERTY\n  speed := speed + 1;\nEND_FUNCTION_BLOCK\n\
                PROGRAM main\nVAR m : Motor; END_VAR\n  m();\nEND_PROGRAM\n";
     let dir = tempfile::tempdir().unwrap();
@@ -570,7 +571,7 @@ fn methods_and_textual_sfc_are_one_diagnostic_each() {
         None,
     );
     assert_eq!(o.status.code(), Some(1));
-    assert_eq!(errors(&o), [("E0303".to_string(), 3)], "{}", stderr(&o));
+    assert_eq!(errors(&o), [("E0100".to_string(), 3)], "{}", stderr(&o));
 }
 
 #[test]

@@ -156,7 +156,7 @@ fn diagnostics_point_into_the_twincat_file_and_a_task_naming_no_program_is_locat
         pou(
             "FB_Prop",
             "FUNCTION_BLOCK FB_Prop\nVAR\n\tx : INT;\nEND_VAR\n",
-            "x := x + 1;",
+            "x := x + 1;\nValue := 3;",
             "    <Property Name=\"Value\" Id=\"{2}\">\n      \
              <Declaration><![CDATA[PROPERTY Value : INT]]></Declaration>\n      \
              <Get Name=\"Get\" Id=\"{3}\">\n        <Declaration><![CDATA[VAR\nEND_VAR\n]]></Declaration>\n        \
@@ -179,8 +179,9 @@ fn diagnostics_point_into_the_twincat_file_and_a_task_naming_no_program_is_locat
     assert_eq!(
         heads,
         [
-            "FB_Prop.TcPOU:13:29: error[E0303]: `FB_Prop` holds a PROPERTY: object-oriented \
-             extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+            // (the property is compiled; written without a Set accessor in the body's second line)
+            "FB_Prop.TcPOU:11:1: error[E0337]: property `Value` has no Set accessor: it cannot be \
+             written",
             "PlcTask.TcTTO:7:13: error[E0322]: task `PlcTask` calls `P_Missing`, which no file \
              given declares as a PROGRAM",
         ]

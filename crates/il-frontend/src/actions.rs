@@ -96,7 +96,21 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
                     .flat_map(|r| r.globals.iter())
                     .for_each(&mut add);
             }
-            LibraryElement::DataTypes(_) | LibraryElement::Action(_) => {}
+            // a structure's fields, so that `p.axis.Act` walks into an instance held in a STRUCT
+            // (a property read `p.axis.P` calls its accessor method so)
+            LibraryElement::DataTypes(ts) => {
+                for t in ts {
+                    if let crate::ast::TypeDef::Struct { fields } = &t.def {
+                        pou_vars.entry(t.name.key()).or_insert_with(|| {
+                            fields
+                                .iter()
+                                .map(|f| (f.name.key(), f.ty.clone()))
+                                .collect()
+                        });
+                    }
+                }
+            }
+            LibraryElement::Action(_) => {}
         }
     }
     // In rounds: the calls are rewritten and the called actions noted per function block
@@ -539,7 +553,10 @@ fn inline_rec(
             diags.push(
                 Diagnostic::error(
                     code::E0106,
-                    format!("action `{written}` calls itself (directly or through another action)"),
+                    format!(
+                        "{} calls itself (directly or through another action)",
+                        crate::st::property::describe_action(&written)
+                    ),
                 )
                 .at(span)
                 .with_primary_label("recursive action call")

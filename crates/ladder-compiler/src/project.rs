@@ -703,8 +703,11 @@ fn local_or(
 }
 
 /// The METHODs of a POU in CODESYS's vendor data (`addData/data[.../method]/Method`, with an
-/// `<interface>` and an ST `<body>`), read for a function block; a method of another POU, one whose
-/// body is not ST, and a PROPERTY (`.../property`) are E0303.
+/// `<interface>` and an ST `<body>`), read for a function block, and its PROPERTYs
+/// (`.../property`: `<Property name="P">` with `<interface><returnType>`, and a `<GetAccessor>`
+/// and/or `<SetAccessor>` each with its own `<interface>` and ST `<body>`) as the methods of their
+/// accessors (`il_frontend::st::property`); a method or property of another POU, or one whose body
+/// is not ST, is E0303.
 fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::file::PendingMethod> {
     let mut out = Vec::new();
     for data in p
@@ -722,14 +725,29 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
         for m in items {
             let name = m.attr("name").map(str::trim).unwrap_or("");
             let st = m.child("body").and_then(|b| b.child("ST"));
-            let why = if !method {
-                Some("a PROPERTY is not supported".to_string())
-            } else if pou.kind != PouKind::FunctionBlock {
-                Some("methods are compiled for function blocks only".to_string())
+            let accessors: Vec<&Element> = m
+                .children
+                .iter()
+                .filter(|c| matches!(c.name(), "GetAccessor" | "SetAccessor"))
+                .collect();
+            let body_st = |a: &Element| a.child("body").and_then(|b| b.child("ST")).is_some();
+            let why = if pou.kind != PouKind::FunctionBlock {
+                Some(if method {
+                    "methods are compiled for function blocks only".to_string()
+                } else {
+                    "properties are compiled for function blocks only".to_string()
+                })
             } else if !values::is_ident(name) {
-                Some("the method has no name that is an identifier".to_string())
-            } else if st.is_none() {
+                Some(format!(
+                    "the {} has no name that is an identifier",
+                    if method { "method" } else { "property" }
+                ))
+            } else if method && st.is_none() {
                 Some("the method's body is not ST".to_string())
+            } else if !method && accessors.is_empty() {
+                Some("the property has no Get or Set accessor".to_string())
+            } else if !method && !accessors.iter().all(|a| body_st(a)) {
+                Some("an accessor's body is not ST".to_string())
             } else {
                 None
             };
@@ -755,6 +773,10 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
             }
             let mut ret = None;
             let mut blocks = Vec::new();
+            if !method {
+                out.extend(xml_property(ctx, p, m, &pou.name.name, name, &accessors));
+                continue;
+            }
             if let Some(iface) = m.child("interface") {
                 // array bounds may name the block's constants or the method's own
                 let globals = std::mem::take(&mut ctx.constants);
@@ -785,6 +807,69 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
         }
     }
     out
+}
+
+/// A PROPERTY of CODESYS's vendor data as the methods of its accessors (see [`xml_methods`]).
+fn xml_property(
+    ctx: &mut Ctx,
+    p: &Element,
+    m: &Element,
+    pou: &str,
+    name: &str,
+    accessors: &[&Element],
+) -> Vec<il_frontend::st::file::PendingMethod> {
+    let ident = Ident::new(name, ctx.attr_span(m, "name"));
+    let mut ty = None;
+    if let Some(iface) = m.child("interface") {
+        read_interface(ctx, iface, &mut ty, &mut Vec::new());
+    }
+    let Some(ty) = ty else {
+        ctx.report(
+            Diagnostic::error(
+                code::E0303,
+                format!("PROPERTY `{name}` has no type (no <returnType> in its <interface>)"),
+            )
+            .at(ctx.tag(m))
+            .with_hint("export the property again from CODESYS: its type is written as its interface's return type")
+            .with_xml(XmlContext {
+                pou: Some(pou.to_string()),
+                ..Default::default()
+            }),
+        );
+        return Vec::new();
+    };
+    let mut get = None;
+    let mut set = None;
+    for a in accessors {
+        let mut blocks = Vec::new();
+        if let Some(iface) = a.child("interface") {
+            let globals = std::mem::take(&mut ctx.constants);
+            let lookup = |n: &str| globals.get(&n.to_ascii_uppercase()).copied();
+            let mut local = p
+                .child("interface")
+                .map(|i| decls::collect_constants(i, false, &lookup))
+                .unwrap_or_default();
+            local.extend(decls::collect_constants(iface, false, &|n| {
+                local_or(&local, &globals, n)
+            }));
+            ctx.constants = globals;
+            ctx.local_constants = local;
+            read_interface(ctx, iface, &mut None, &mut blocks);
+            ctx.local_constants.clear();
+        }
+        let Some(st) = a.child("body").and_then(|b| b.child("ST")) else {
+            continue;
+        };
+        let mut t = crate::il_body::embedded_text(st);
+        crate::st_body::join_split_operators(&mut t.text, t.base, ctx.xml);
+        let slot = if a.name() == "GetAccessor" {
+            &mut get
+        } else {
+            &mut set
+        };
+        *slot = Some((blocks, t.text, t.base));
+    }
+    il_frontend::st::property::accessor_methods(&ident, &ty, get, set)
 }
 
 fn signature(p: &Pou) -> PouSig {

@@ -429,9 +429,35 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                 at = out.place(at, next, "END_METHOD").ok_or_else(no_room)?;
             }
             _ => {
-                // a PROPERTY: its declaration only (the ST front end reports it, E0303)
+                // a PROPERTY: its declaration, then `GET <declaration> <body> END_GET` and the same
+                // for `SET` (the ST front end compiles them as methods of a function block)
                 if let Some(d) = m.child("Declaration") {
                     at = out.copy(d);
+                }
+                let accessors: Vec<&Element> = m
+                    .children
+                    .iter()
+                    .filter(|c| matches!(c.name(), "Get" | "Set"))
+                    .collect();
+                for (j, acc) in accessors.iter().enumerate() {
+                    let (open, close) = if acc.name() == "Get" {
+                        ("GET", "END_GET")
+                    } else {
+                        ("SET", "END_SET")
+                    };
+                    let acc_next = accessors.get(j + 1).map_or(next, |n| n.tag_start());
+                    let what = format!("{what}.{}", acc.name());
+                    let decl = acc.child("Declaration");
+                    let body = body_of(file, acc, &what)?;
+                    let limit = decl.or(body).map_or(acc_next, |e| e.tag_end());
+                    at = out.place(at, limit, open).ok_or_else(no_room)?;
+                    if let Some(d) = decl {
+                        at = out.copy(d);
+                    }
+                    if let Some(body) = body {
+                        at = out.copy(body);
+                    }
+                    at = out.place(at, acc_next, close).ok_or_else(no_room)?;
                 }
                 at = out.place(at, next, "END_PROPERTY").ok_or_else(no_room)?;
             }

@@ -57,12 +57,15 @@ pub struct PouText {
     /// The `INITIAL_STEP` (or first `STEP name :`) of a body in textual SFC (lowered by the caller:
     /// [`PendingBody::sfc`]).
     pub sfc: Option<Range<usize>>,
-    /// The first `PROPERTY name` of a body, or `METHOD name` outside a function block (edition 3
-    /// object orientation not supported: E0303).
+    /// The first `PROPERTY name` of a body that is not a function block's property (a PROGRAM's),
+    /// or `METHOD name` outside a function block (edition 3 object orientation not supported: E0303).
     pub oop: Option<Range<usize>>,
     /// The `METHOD ... END_METHOD` blocks of a function block (edition 3, without inheritance):
     /// compiled as actions with inputs, outputs and a result ([`MethodText`]).
     pub methods: Vec<MethodText>,
+    /// The `PROPERTY ... END_PROPERTY` blocks of a function block: their accessors are compiled as
+    /// methods ([`super::property`]).
+    pub properties: Vec<super::property::PropertyText>,
     /// Not a POU: a CODESYS/RuSTy `ACTIONS ... END_ACTIONS` block (the `ACTIONS` keyword; `body` is
     /// the whole block). Its actions belong to the POU before it (see [`PouText::action_list`]).
     pub actions: Option<Range<usize>>,
@@ -230,6 +233,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     sfc: None,
                     oop: None,
                     methods: Vec::new(),
+                    properties: Vec::new(),
                     actions: Some(start),
                     action_list,
                     modifier: None,
@@ -251,6 +255,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     sfc: None,
                     oop: None,
                     methods: Vec::new(),
+                    properties: Vec::new(),
                     actions: None,
                     action_list: Vec::new(),
                     modifier: None,
@@ -356,16 +361,22 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     })
                     .map(|t| t.range.clone());
                 let body_toks = &toks[first..j.min(n - 1)];
-                let methods = if w == "FUNCTION_BLOCK" {
-                    scan_methods(src, body_toks)
+                let (methods, properties) = if w == "FUNCTION_BLOCK" {
+                    (
+                        scan_methods(src, body_toks),
+                        super::property::scan_properties(src, body_toks),
+                    )
                 } else {
-                    Vec::new()
+                    (Vec::new(), Vec::new())
                 };
                 let oop = body_toks
                     .windows(2)
                     .find(|w| {
                         ((is_word(src, &w[0], "METHOD") && methods.is_empty())
-                            || is_word(src, &w[0], "PROPERTY"))
+                            || (is_word(src, &w[0], "PROPERTY")
+                                && !properties
+                                    .iter()
+                                    .any(|p| p.whole.contains(&w[0].range.start))))
                             && w[1].tok == Tok::Ident
                     })
                     .map(|w| w[0].range.clone());
@@ -377,6 +388,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     sfc,
                     oop,
                     methods,
+                    properties,
                     actions: None,
                     action_list: Vec::new(),
                     modifier,
@@ -402,25 +414,8 @@ fn pending_method(
     m: &MethodText,
     diags: &mut Diagnostics,
 ) -> PendingMethod {
-    let vars = |text: &str, base: usize, diags: &mut Diagnostics| -> Vec<crate::ast::VarBlock> {
-        match crate::parser::run(
-            file,
-            text,
-            base,
-            crate::lexer::Tok::UnitStart,
-            diags,
-            Vec::new(),
-        ) {
-            Some(crate::parser::Parsed::Unit(mut top)) => {
-                let mut blocks: Vec<crate::ast::VarBlock> =
-                    top.implicit.take().map(|(_, v, _)| v).unwrap_or_default();
-                // (a VAR_GLOBAL block would be a top-level item: not a method's)
-                blocks.retain(|b| b.kind != crate::ast::VarKind::Global);
-                blocks
-            }
-            _ => Vec::new(),
-        }
-    };
+    let vars =
+        |text: &str, base: usize, diags: &mut Diagnostics| read_var_blocks(file, text, base, diags);
     let blocks = vars(src.get(m.decls.clone()).unwrap_or(""), m.decls.start, diags);
     // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
     // bytes into the file: after `METHOD `)
@@ -442,6 +437,33 @@ fn pending_method(
         blocks,
         text: src.get(m.stmts.clone()).unwrap_or("").to_string(),
         base: m.stmts.start,
+    }
+}
+
+/// The variable blocks of a method's (or a property accessor's) declaration text, read by the IL
+/// parser in place (`base`: the text's offset in the file), without VAR_GLOBAL blocks.
+pub(super) fn read_var_blocks(
+    file: FileId,
+    text: &str,
+    base: usize,
+    diags: &mut Diagnostics,
+) -> Vec<crate::ast::VarBlock> {
+    match crate::parser::run(
+        file,
+        text,
+        base,
+        crate::lexer::Tok::UnitStart,
+        diags,
+        Vec::new(),
+    ) {
+        Some(crate::parser::Parsed::Unit(mut top)) => {
+            let mut blocks: Vec<crate::ast::VarBlock> =
+                top.implicit.take().map(|(_, v, _)| v).unwrap_or_default();
+            // (a VAR_GLOBAL block would be a top-level item: not a method's)
+            blocks.retain(|b| b.kind != crate::ast::VarKind::Global);
+            blocks
+        }
+        _ => Vec::new(),
     }
 }
 
@@ -910,6 +932,25 @@ pub fn parse_text(
             // `FUNCTION_BLOCK Child EXTENDS Base`: the declarations are read without the clause
             blank(&mut text, h.clone());
         }
+        let in_block = p.modifier.is_some()
+            || src
+                .get(..p.name_range.start)
+                .and_then(|h| h.split_whitespace().last())
+                .is_some_and(|k| k.eq_ignore_ascii_case("FUNCTION_BLOCK"));
+        if let (Some(r), true) = (&p.oop, in_block) {
+            // a function block's PROPERTY that scan_properties could not read
+            diags.push(
+                Diagnostic::error(
+                    code::E0100,
+                    format!("`{}`: this PROPERTY cannot be read", p.name),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("PROPERTY without its type, its accessors or its END_PROPERTY")
+                .with_hint("write `PROPERTY name : type`, then `GET ... END_GET` and/or `SET ... END_SET`, then `END_PROPERTY`; the body of this POU is not compiled"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         if let Some(r) = p.oop.as_ref().or(p.heritage.as_ref()) {
             let what = src.get(r.clone()).unwrap_or("METHOD").to_ascii_uppercase();
             let (has, what) = match what.split_whitespace().next() {
@@ -931,7 +972,36 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
-        match p.lang {
+        // a function block whose body holds nothing but its properties and methods (TwinCAT's
+        // empty body) is ST: its accessors are
+        let members_only = !p.properties.is_empty() && {
+            let mut rest = src.get(p.body.clone()).unwrap_or("").to_string();
+            let whole = p.methods.iter().map(|m| &m.whole);
+            for r in p.properties.iter().map(|q| &q.whole).chain(whole) {
+                let end = r.end.saturating_sub(p.body.start).min(rest.len());
+                blank(&mut rest, r.start.saturating_sub(p.body.start)..end);
+            }
+            rest.trim().is_empty()
+        };
+        let lang = if members_only { Lang::St } else { p.lang };
+        if lang != Lang::St {
+            for pr in &p.properties {
+                diags.push(
+                    Diagnostic::error(
+                        code::E0303,
+                        format!(
+                            "PROPERTY `{}` of `{}`: the properties of a function block whose body is instruction list are not compiled",
+                            pr.name, p.name
+                        ),
+                    )
+                    .at(Span::new(file, pr.name_range.start, pr.name_range.end))
+                    .with_primary_label("not compiled")
+                    .with_hint("write the block's body in ST (its accessors are compiled as methods of an ST block), or read the variable the property stands for"),
+                );
+                blank(&mut text, pr.whole.clone());
+            }
+        }
+        match lang {
             Lang::St => {
                 // the methods are cut out of the body (blanked, so positions stay) and lowered
                 // with the block
@@ -940,6 +1010,10 @@ pub fn parse_text(
                 for m in &p.methods {
                     methods.push(pending_method(file, src, m, diags));
                     blank(&mut body, m.whole.clone());
+                }
+                for pr in &p.properties {
+                    methods.extend(super::property::pending_accessors(file, src, pr, diags));
+                    blank(&mut body, pr.whole.clone());
                 }
                 pending.push(PendingBody {
                     file,

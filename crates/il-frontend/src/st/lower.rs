@@ -64,6 +64,9 @@ pub struct PouLowering<'d> {
     /// The methods of the function block being lowered (or of the block of the method being
     /// lowered), by upper-case name: `M(...)` inside the block is a call of its own method.
     methods: HashMap<String, super::types::MethodSig>,
+    /// Whether some function block of the program has a PROPERTY (its uses are rewritten into
+    /// calls of its accessors before a statement is lowered: `property::rewrite`).
+    properties: bool,
     /// Types of the subexpressions of the trees being lowered (so lowering a chain of n operators
     /// types each node once, not n times). Cleared by every public entry point and after lowering a
     /// tree built here, so no entry outlives the node it describes.
@@ -188,6 +191,11 @@ impl<'d> PouLowering<'d> {
                 .flatten()
                 .map(|m| (m.name.to_ascii_uppercase(), m.clone()))
                 .collect(),
+            properties: decls
+                .methods
+                .values()
+                .flatten()
+                .any(|m| super::property::is_accessor(&m.name)),
             types: RefCell::new(TypeCache::new()),
             nested: 0,
         }
@@ -704,6 +712,19 @@ impl<'d> PouLowering<'d> {
 
     fn stmt(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
         let span = s.span;
+        if self.properties {
+            let rewritten = super::property::rewrite(&self.env(), &self.methods, s, diags);
+            if let Some((calls, rest)) = rewritten {
+                // `x := inst.P + 1;`: the getter runs first, the statement reads its result;
+                // `inst.P := v;` calls the setter
+                for c in &calls {
+                    self.stmt(c, out, diags);
+                }
+                self.stmt(&rest, out, diags);
+                self.types.get_mut().clear();
+                return;
+            }
+        }
         if !self.methods.is_empty() {
             if let Some((calls, rest)) = self.hoist_method_calls(s, diags) {
                 // `x := M(a) + 1;` inside the block: the call runs first, the statement reads the

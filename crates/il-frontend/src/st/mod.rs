@@ -20,6 +20,7 @@ pub mod lexer;
 mod list_bounds;
 pub mod lower;
 pub mod parser;
+pub mod property;
 mod qualifiers;
 mod scl;
 pub mod sfc;
