@@ -15,6 +15,7 @@
 pub mod ast;
 pub mod file;
 pub mod infer;
+pub mod inherit;
 pub mod lexer;
 pub mod lower;
 pub mod parser;
