@@ -868,7 +868,7 @@ pub fn parse_text(
         }
     }
     for (pi, p) in pous.iter().enumerate() {
-        if let Some(r) = &p.interface {
+        if p.interface.is_some() {
             // an INTERFACE: its methods' signatures, checked against the blocks that implement it
             let methods = p
                 .methods
@@ -884,7 +884,7 @@ pub fn parse_text(
                 sfc: false,
                 methods: Vec::new(),
                 oop: Some(Box::new(super::inherit::Oop::interface(
-                    file, src, p, r, methods,
+                    file, src, p, methods,
                 ))),
             });
             blank(&mut text, p.body.clone());

@@ -99,12 +99,11 @@ fn clause_names(file: FileId, src: &str, range: &Range<usize>) -> (Vec<Ident>, V
 }
 
 impl Oop {
-    /// The `Oop` of an `INTERFACE` whose `INTERFACE name` text is `at`.
+    /// The `Oop` of an `INTERFACE` (`p`, read by the scan) with its methods' signatures.
     pub(super) fn interface(
         file: FileId,
         src: &str,
         p: &PouText,
-        _at: &Range<usize>,
         methods: Vec<PendingMethod>,
     ) -> Oop {
         let extends = p
