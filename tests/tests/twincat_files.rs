@@ -6,6 +6,17 @@
 //! of 20 ms, a visualisation task, a function block with a method and an action, and
 //! MAIN; a GVL of `AT %I*`/`%Q*` I/O links and a PERSISTENT list with a program using them; a POU
 //! with an LD network body; two programs without a task file.
+//!
+//! Record of the public projects (README "TwinCAT 3 projects"), issue #13's inheritance round, the
+//! 70 `.plcproj` files of today's snapshots run 50 scans before and after, side by side:
+//!
+//! | | run | rejected | projects with E0303 | with E0336 | with E0330 |
+//! |---|---|---|---|---|---|
+//! | before (EXTENDS, IMPLEMENTS, INTERFACE: E0303) | 23 | 47 | 17 | 0 | 0 |
+//! | after (inheritance compiled) | 23 | 47 | 8 (PROPERTY, METHOD of a PROGRAM) | 5 | 4 (TcUnit's FB_TestSuite as base) |
+//!
+//! (Inheritance itself: `tests/tests/oop_inherit_run.rs`, which runs one pair of blocks as `.TcPOU`
+//! and `.TcIO` files.)
 
 mod common;
 use common::{assert_ok, column, diagnostic_heads, ladderc, run_traced, run_traced_files};

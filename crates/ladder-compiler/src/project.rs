@@ -150,6 +150,13 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
         };
         let refs = ctx.references.take().unwrap_or_default();
         if let Some(mut h) = header {
+            if xml_inheritance(ctx, p, &h) {
+                // EXTENDS / IMPLEMENTS in CODESYS's vendor data (E0303): not compiled
+                by_reference.insert(h.name.key());
+                for m in &mut ms {
+                    m.text.clear();
+                }
+            }
             if !refs.is_empty() {
                 report_references(ctx, &h.name.name, &refs);
                 by_reference.insert(h.name.key());
@@ -457,6 +464,8 @@ fn is_read_vendor_data(name: &str) -> bool {
         // a CODESYS chart's SFC settings: its flags (`sfc::flags`: SFCInit and SFCReset run,
         // every other enabled flag is W3402)
         "/sfcsettings",
+        // EXTENDS / IMPLEMENTS of a POU: E0303 (`xml_inheritance`)
+        "/pouinheritance",
     ]
     .iter()
     .any(|s| name.ends_with(s))
@@ -700,6 +709,55 @@ fn local_or(
 ) -> Option<i128> {
     let k = n.to_ascii_uppercase();
     local.get(&k).or_else(|| globals.get(&k)).copied()
+}
+
+/// CODESYS's inheritance of a POU (`interface/addData/data[.../pouinheritance]/Inheritance` with
+/// `<Extends>` and `<Implements>`): one E0303 at the element, and `true` (the POU's body is not
+/// compiled). ladderc flattens inheritance in `.st` and TwinCAT files (`il_frontend::st::inherit`),
+/// not in PLCopen XML, whose bodies may be graphical.
+fn xml_inheritance(ctx: &mut Ctx, p: &Element, pou: &Pou) -> bool {
+    let Some(data) = p
+        .child("interface")
+        .into_iter()
+        .flat_map(|i| i.children_named("addData"))
+        .flat_map(|a| a.children_named("data"))
+        .find(|d| {
+            d.attr("name")
+                .is_some_and(|n| n.ends_with("/pouinheritance"))
+        })
+    else {
+        return false;
+    };
+    let Some(inh) = data.child("Inheritance") else {
+        return false;
+    };
+    let clause: Vec<String> = inh
+        .children
+        .iter()
+        .filter(|c| matches!(c.name(), "Extends" | "Implements"))
+        .map(|c| format!("{} {}", c.name().to_ascii_uppercase(), c.text_ref().trim()))
+        .collect();
+    if clause.is_empty() {
+        return false;
+    }
+    ctx.report(
+        Diagnostic::error(
+            code::E0303,
+            format!(
+                "`{}` {}: inheritance in PLCopen XML is not compiled",
+                pou.name.name,
+                clause.join(" ")
+            ),
+        )
+        .at(ctx.tag(inh))
+        .with_primary_label("object-oriented extension (IEC 61131-3 ed. 3)")
+        .with_hint("export the POUs as ST text or TwinCAT files, where EXTENDS and IMPLEMENTS are compiled; the body of this POU is not compiled")
+        .with_xml(XmlContext {
+            pou: Some(pou.name.name.clone()),
+            ..Default::default()
+        }),
+    );
+    true
 }
 
 /// The METHODs of a POU in CODESYS's vendor data (`addData/data[.../method]/Method`, with an

@@ -8,7 +8,7 @@
 //! 61131-3 source (as [`crate::codesys_v2`]): every byte outside the declaration and body texts
 //! blanked (line breaks kept, so every line and column is the file's own), with `END_METHOD`,
 //! `END_PROGRAM`/`END_FUNCTION_BLOCK`/`END_FUNCTION`, the `ACTIONS` block's keywords and
-//! `END_INTERFACE` written into blank places of the markup after the texts they close; for a GVL also
+//! `END_INTERFACE` (after an interface's `<Method>` declarations, each closed by `END_METHOD`) written into blank places of the markup after the texts they close; for a GVL also
 //! its name (its members are reachable qualified, `GVL.x`); for a task (`.TcTTO`) its name, cycle
 //! time, priority and the programs it calls. Invariants: never panics; a body in a graphical language
 //! (TwinCAT's LD/FBD network list `<NWL>`, `<CFC>`, `<SFC>`) is one located E0321 naming it; a file
@@ -93,7 +93,32 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
             }
             "Itf" => {
                 if let Some(d) = obj.child("Declaration") {
-                    let at = out.copy(d);
+                    let mut at = out.copy(d);
+                    // its methods' declarations, each closed by END_METHOD (their signatures are
+                    // checked against the blocks that implement the interface)
+                    let methods: Vec<&Element> = obj
+                        .children
+                        .iter()
+                        .filter(|c| c.name() == "Method")
+                        .collect();
+                    for (k, m) in methods.iter().enumerate() {
+                        let Some(md) = m.child("Declaration") else {
+                            continue;
+                        };
+                        let next = methods.get(k + 1).map_or(obj.end(), |n| n.tag_start());
+                        at = out.copy(md);
+                        match out.place(at, next, "END_METHOD") {
+                            Some(w) => at = w,
+                            None => {
+                                return Some(Err(unreadable(
+                                    file,
+                                    obj,
+                                    "TwinCAT interface has no room for its keywords".into(),
+                                    "check the file: its markup was changed by hand",
+                                )))
+                            }
+                        }
+                    }
                     out.place_last(at, "END_INTERFACE");
                 }
             }

@@ -74,11 +74,11 @@ pub struct PouText {
     /// A modifier between `FUNCTION_BLOCK` and the name (`PUBLIC`, `INTERNAL`, `FINAL`,
     /// `ABSTRACT`: CODESYS and edition 3), skipped with W0304.
     pub modifier: Option<Range<usize>>,
-    /// The `EXTENDS base` / `IMPLEMENTS itf` clause after the name (edition 3 inheritance: E0303,
-    /// the body is not compiled).
+    /// The `EXTENDS base` / `IMPLEMENTS itf` clause after the name (edition 3 inheritance, read by
+    /// [`super::inherit`]); for an INTERFACE its `EXTENDS` clause.
     pub heritage: Option<Range<usize>>,
-    /// Not a POU: an `INTERFACE name ... END_INTERFACE` block (edition 3 object orientation: one
-    /// E0303 at `INTERFACE name`, the block skipped; `body` is the whole block).
+    /// Not a POU: an `INTERFACE name ... END_INTERFACE` block (edition 3: its methods are in
+    /// `methods`, checked against the blocks that implement it; `body` is the whole block).
     pub interface: Option<Range<usize>>,
 }
 
@@ -135,6 +135,27 @@ pub struct PendingBody {
     /// instance, as an action with hidden inputs and outputs `__M_<METHOD>_<var>` and result
     /// `__M_<METHOD>`).
     pub methods: Vec<PendingMethod>,
+    /// Edition 3 object orientation: the block's `EXTENDS` / `IMPLEMENTS` / `FINAL` / `ABSTRACT`,
+    /// or (with an empty `text`) an `INTERFACE` ([`super::inherit`] flattens and checks them before
+    /// the bodies are lowered).
+    pub oop: Option<Box<super::inherit::Oop>>,
+}
+
+impl PendingBody {
+    /// The body of a block that EXTENDS another (flattened by [`super::inherit`]).
+    pub fn derived(&self) -> bool {
+        matches!(self.oop.as_deref(), Some(super::inherit::Oop::Block(b)) if !b.extends.is_empty())
+    }
+
+    /// The file of method `k` (an inherited method is in its base's file).
+    pub fn method_file(&self, k: usize) -> FileId {
+        match self.oop.as_deref() {
+            Some(super::inherit::Oop::Block(b)) => {
+                b.method_files.get(k).copied().unwrap_or(self.file)
+            }
+            _ => self.file,
+        }
+    }
 }
 
 /// IL operators (and the `&` forms): a line starting with one of these is an IL instruction.
@@ -247,6 +268,21 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 let name_tok = &toks[i + 1];
                 let j = skip_to(i + 2, "END_INTERFACE");
                 let end = toks[j - 1].range.end;
+                // `INTERFACE I EXTENDS I0, I1`: the clause up to the first METHOD (or the end)
+                let inner = &toks[(i + 2).min(j)..j.saturating_sub(1).max(i + 2).min(n)];
+                let heritage = inner
+                    .first()
+                    .filter(|t| is_word(src, t, "EXTENDS"))
+                    .map(|t| {
+                        let last = inner
+                            .iter()
+                            .take_while(|t| {
+                                !is_word(src, t, "METHOD") && !is_word(src, t, "PROPERTY")
+                            })
+                            .last()
+                            .map_or(t.range.end, |l| l.range.end);
+                        t.range.start..last
+                    });
                 out.push(PouText {
                     name: word(src, name_tok).to_string(),
                     name_range: name_tok.range.clone(),
@@ -254,12 +290,12 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     lang: Lang::Il,
                     sfc: None,
                     oop: None,
-                    methods: Vec::new(),
+                    methods: scan_methods(src, inner),
                     properties: Vec::new(),
                     actions: None,
                     action_list: Vec::new(),
                     modifier: None,
-                    heritage: None,
+                    heritage,
                     interface: Some(start.start..name_tok.range.end),
                 });
                 i = j;
@@ -321,9 +357,22 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                         .iter()
                         .any(|k| is_word(src, &toks[i], k))
                 {
-                    i += 2;
+                    // names, also qualified by a library's namespace (`TcUnit.FB_TestSuite`)
+                    let name_end = |mut i: usize| {
+                        while toks.get(i).is_some_and(|t| t.tok == Tok::Dot)
+                            && toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident)
+                        {
+                            i += 2;
+                        }
+                        i
+                    };
+                    i = name_end(i + 2);
                     while toks.get(i).is_some_and(|t| t.tok == Tok::Comma) {
-                        i += 2;
+                        i = name_end(i + 2);
+                    }
+                    // `IMPLEMENTS I_HMI;` (TwinCAT accepts the `;`): part of the clause
+                    if toks.get(i).is_some_and(|t| t.tok == Tok::Semi) {
+                        i += 1;
                     }
                     heritage = heritage_start
                         .zip(toks.get(i.min(n) - 1))
@@ -818,15 +867,18 @@ pub fn parse_text(
     for p in &pous {
         if let Some(r) = &p.modifier {
             let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
-            diags.push(
-                Diagnostic::warning(
-                    code::W0304,
-                    format!("`FUNCTION_BLOCK {m}` of `{}`: the modifier is ignored", p.name),
-                )
-                .at(Span::new(file, r.start, r.end))
-                .with_primary_label("ignored")
-                .with_hint("ladderc compiles one project without inheritance or namespaces: PUBLIC, INTERNAL, FINAL and ABSTRACT change nothing in it; remove the word to silence this"),
-            );
+            // FINAL and ABSTRACT are checked with inheritance (`super::inherit`)
+            if m != "FINAL" && m != "ABSTRACT" {
+                diags.push(
+                    Diagnostic::warning(
+                        code::W0304,
+                        format!("`FUNCTION_BLOCK {m}` of `{}`: the modifier is ignored", p.name),
+                    )
+                    .at(Span::new(file, r.start, r.end))
+                    .with_primary_label("ignored")
+                    .with_hint("ladderc compiles one project without namespaces: PUBLIC and INTERNAL change nothing in it; remove the word to silence this"),
+                );
+            }
             blank(&mut text, r.clone());
         }
     }
@@ -858,19 +910,25 @@ pub fn parse_text(
         }
     }
     for (pi, p) in pous.iter().enumerate() {
-        if let Some(r) = &p.interface {
-            diags.push(
-                Diagnostic::error(
-                    code::E0303,
-                    format!(
-                        "INTERFACE `{}`: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
-                        p.name
-                    ),
-                )
-                .at(Span::new(file, r.start, r.end))
-                .with_primary_label("skipped up to its END_INTERFACE")
-                .with_hint("an interface declares methods and properties for function blocks that IMPLEMENT it; ladderc compiles function blocks without interfaces or inheritance"),
-            );
+        if p.interface.is_some() {
+            // an INTERFACE: its methods' signatures, checked against the blocks that implement it
+            let methods = p
+                .methods
+                .iter()
+                .map(|m| pending_method(file, src, m, diags))
+                .collect();
+            pending.push(PendingBody {
+                file,
+                name_start: p.name_range.start,
+                base: p.body.start,
+                text: String::new(),
+                actions: Vec::new(),
+                sfc: false,
+                methods: Vec::new(),
+                oop: Some(Box::new(super::inherit::Oop::interface(
+                    file, src, p, methods,
+                ))),
+            });
             blank(&mut text, p.body.clone());
             continue;
         }
@@ -924,6 +982,7 @@ pub fn parse_text(
                 actions: Vec::new(),
                 sfc: true,
                 methods: Vec::new(),
+                oop: None,
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -951,17 +1010,13 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
-        if let Some(r) = p.oop.as_ref().or(p.heritage.as_ref()) {
+        if let Some(r) = p.oop.as_ref() {
             let what = src.get(r.clone()).unwrap_or("METHOD").to_ascii_uppercase();
-            let (has, what) = match what.split_whitespace().next() {
-                Some(k @ ("EXTENDS" | "IMPLEMENTS")) => ("has an", format!("{k} clause")),
-                _ => ("holds a", what),
-            };
             diags.push(
                 Diagnostic::error(
                     code::E0303,
                     format!(
-                        "`{}` {has} {what}: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
+                        "`{}` holds a {what}: object-oriented extensions (IEC 61131-3 ed. 3, CODESYS) are not supported",
                         p.name
                     ),
                 )
@@ -972,18 +1027,41 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
-        // a function block whose body holds nothing but its properties and methods (TwinCAT's
-        // empty body) is ST: its accessors are
-        let members_only = !p.properties.is_empty() && {
-            let mut rest = src.get(p.body.clone()).unwrap_or("").to_string();
-            let whole = p.methods.iter().map(|m| &m.whole);
-            for r in p.properties.iter().map(|q| &q.whole).chain(whole) {
-                let end = r.end.saturating_sub(p.body.start).min(rest.len());
-                blank(&mut rest, r.start.saturating_sub(p.body.start)..end);
-            }
-            rest.trim().is_empty()
-        };
-        let lang = if members_only { Lang::St } else { p.lang };
+        // EXTENDS / IMPLEMENTS / FINAL / ABSTRACT of a function block (edition 3): flattened and
+        // checked by `super::inherit` once every file is read
+        let oop = super::inherit::Oop::block(file, src, p);
+        // (its methods and properties left out: a block whose members are all its code, TwinCAT's
+        // empty body, has no body and is ST)
+        let blank_body = src.get(p.body.clone()).is_none_or(|b| {
+            lex(b).0.iter().all(|t| {
+                let at = p.body.start + t.range.start;
+                matches!(t.tok, Tok::Eof)
+                    || p.methods.iter().any(|m| m.whole.contains(&at))
+                    || p.properties.iter().any(|q| q.whole.contains(&at))
+            })
+        });
+        let lang =
+            if (oop.is_some() || !p.methods.is_empty() || !p.properties.is_empty()) && blank_body {
+                Lang::St
+            } else {
+                p.lang
+            };
+        if let (Some(h), Lang::Il) = (&p.heritage, lang) {
+            diags.push(
+                Diagnostic::error(
+                    code::E0303,
+                    format!(
+                        "`{}` has an EXTENDS or IMPLEMENTS clause and an instruction list body: inheritance is compiled for Structured Text bodies only",
+                        p.name
+                    ),
+                )
+                .at(Span::new(file, h.start, h.end))
+                .with_primary_label("the clause starts here")
+                .with_hint("write the body in Structured Text (SUPER^ is not defined for IL in CODESYS and TwinCAT either); the body of this POU is not compiled"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         if lang != Lang::St {
             for pr in &p.properties {
                 diags.push(
@@ -1007,13 +1085,26 @@ pub fn parse_text(
                 // with the block
                 let mut body = src.to_string();
                 let mut methods = Vec::new();
+                // a derived block's methods are reported once its base is found (no cascade
+                // after E0330 when the base is a library's)
+                let mut oop = oop;
+                let mut deferred = Diagnostics::new();
                 for m in &p.methods {
-                    methods.push(pending_method(file, src, m, diags));
+                    let sink = match &oop {
+                        Some(super::inherit::Oop::Block(b)) if !b.extends.is_empty() => {
+                            &mut deferred
+                        }
+                        _ => &mut *diags,
+                    };
+                    methods.push(pending_method(file, src, m, sink));
                     blank(&mut body, m.whole.clone());
                 }
                 for pr in &p.properties {
                     methods.extend(super::property::pending_accessors(file, src, pr, diags));
                     blank(&mut body, pr.whole.clone());
+                }
+                if let Some(super::inherit::Oop::Block(b)) = &mut oop {
+                    b.deferred = deferred.into_vec();
                 }
                 pending.push(PendingBody {
                     file,
@@ -1023,6 +1114,7 @@ pub fn parse_text(
                     actions: Vec::new(),
                     sfc: false,
                     methods,
+                    oop: oop.map(Box::new),
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -1163,6 +1255,17 @@ pub fn compile_pending(
     if pending.is_empty() {
         return;
     }
+    // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
+    let flat;
+    let pending = match super::inherit::flatten(units, pending, diags) {
+        Some(v) => {
+            flat = v;
+            &flat[..]
+        }
+        None => pending,
+    };
+    // code a derived block inherits is lowered again in it: its errors are reported once
+    let mut inherited = Diagnostics::new();
     // the hidden variables of the methods first: other POUs' calls read their results
     // (`c.Add(1)` is `c.__M_ADD`)
     for pb in pending.iter().filter(|pb| !pb.methods.is_empty()) {
@@ -1194,6 +1297,11 @@ pub fn compile_pending(
         }
     }
     for pb in pending.iter().filter(|pb| !pb.sfc) {
+        let diags: &mut Diagnostics = if pb.derived() {
+            &mut inherited
+        } else {
+            &mut *diags
+        };
         for unit in units.iter_mut() {
             let mut standalone = Vec::new();
             for item in unit.items.iter_mut() {
@@ -1239,8 +1347,8 @@ pub fn compile_pending(
                 }
                 standalone.extend(actions);
                 let mut methods = Vec::new();
-                for m in &pb.methods {
-                    if let Some(a) = lower_method(pb.file, &decls, p, m, diags) {
+                for (k, m) in pb.methods.iter().enumerate() {
+                    if let Some(a) = lower_method(pb.method_file(k), &decls, p, m, diags) {
                         methods.push(a);
                     }
                 }
@@ -1249,6 +1357,17 @@ pub fn compile_pending(
             }
             unit.items
                 .extend(standalone.into_iter().map(LibraryElement::Action));
+        }
+    }
+    let seen: std::collections::HashSet<_> = diags
+        .iter()
+        .map(|d| (d.code, d.message.clone(), d.span.map(|s| (s.start, s.end))))
+        .collect();
+    let mut once = std::collections::HashSet::new();
+    for d in inherited {
+        let key = (d.code, d.message.clone(), d.span.map(|s| (s.start, s.end)));
+        if !seen.contains(&key) && once.insert(key) {
+            diags.push(d);
         }
     }
 }

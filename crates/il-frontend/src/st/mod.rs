@@ -16,6 +16,7 @@ pub mod ast;
 mod fb_init_args;
 pub mod file;
 pub mod infer;
+pub mod inherit;
 pub mod lexer;
 mod list_bounds;
 pub mod lower;

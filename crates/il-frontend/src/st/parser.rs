@@ -909,11 +909,23 @@ impl<'s, 'd> Parser<'s, 'd> {
                     accessors.push(Accessor::Index(idx));
                 }
                 Tok::Caret => {
-                    self.error_here(
-                        code::E0108,
-                        "pointer dereference `^` is not supported",
-                        "use the variable itself, or pass it as VAR_IN_OUT",
-                    );
+                    // (in a block that EXTENDS another, `SUPER^` is rewritten before parsing:
+                    // `super::inherit`)
+                    let is_super = accessors.is_empty()
+                        && matches!(&base, PlaceBase::Name(n) if n.is("SUPER"));
+                    if is_super {
+                        self.error_here(
+                            code::E0108,
+                            "`SUPER^` in a POU that extends no function block",
+                            "SUPER^ reaches the base of a block declared `FUNCTION_BLOCK Name EXTENDS Base`; use THIS^ (or nothing) for the block's own methods and variables",
+                        );
+                    } else {
+                        self.error_here(
+                            code::E0108,
+                            "pointer dereference `^` is not supported",
+                            "use the variable itself, or pass it as VAR_IN_OUT",
+                        );
+                    }
                     return None;
                 }
                 _ => break,

@@ -1,0 +1,833 @@
+//! Edition 3 inheritance of function blocks (`FUNCTION_BLOCK Child EXTENDS Base IMPLEMENTS I1, I2`,
+//! `INTERFACE I ... END_INTERFACE`, `SUPER^`, `FINAL`, `ABSTRACT`), as CODESYS and TwinCAT run it.
+//!
+//! Input: the pending ST bodies of every file (their [`Oop`] read by [`super::file::parse_text`]) and
+//! the parsed units (the blocks' own declarations). Output: the pending bodies to lower, where a
+//! derived block is flattened: its variables are its bases' (root first, every section) then its own;
+//! its methods and actions are its bases' unless it declares one of the same name; its body is its
+//! own (the derived block's body replaces the base's, which runs only where `SUPER^()` calls it, as
+//! CODESYS and Beckhoff document `SUPER`). `SUPER^.M()` in a text of level `j` of the chain calls the
+//! version of `M` visible at level `j - 1` (a hidden method `__S<level>_M`), `SUPER^()` the body of
+//! level `j - 1` (a hidden method `__B<level>`); any other call of a method (`M2()`, `THIS^.M2()`),
+//! also inside an inherited method, calls the derived block's version: late binding on the
+//! instance's own type, without pointers, since each derived block has its own copy.
+//! Invariants: every chain is finite (a cycle is E0331, never followed); texts are rewritten in place
+//! with the same length and line breaks, so every span of inherited code is a position in its file;
+//! each problem is one located diagnostic (E0330-E0336).
+
+use super::file::{PendingBody, PendingMethod, PouText};
+use super::lexer::{lex, Tok};
+use crate::ast::{CompilationUnit, Ident, LibraryElement, PouKind, TypeRef, VarBlock, VarKind};
+use crate::{FileId, Span};
+use diagnostics::{code, Diagnostic, Diagnostics};
+use std::collections::{HashMap, HashSet};
+use std::ops::Range;
+
+/// The object-oriented part of a pending body.
+#[derive(Debug, Clone)]
+pub enum Oop {
+    /// A function block's `EXTENDS` / `IMPLEMENTS` / `FINAL` / `ABSTRACT`.
+    Block(BlockOop),
+    /// An `INTERFACE` (the pending body has no text; it is no POU).
+    Interface(InterfaceOop),
+}
+
+/// What a function block declares about its place among others.
+#[derive(Debug, Clone, Default)]
+pub struct BlockOop {
+    /// The base after `EXTENDS` (more than one is E0330).
+    pub extends: Vec<Ident>,
+    /// The interfaces after `IMPLEMENTS`.
+    pub implements: Vec<Ident>,
+    /// `FUNCTION_BLOCK FINAL`: no block may extend it (E0332).
+    pub is_final: bool,
+    /// `FUNCTION_BLOCK ABSTRACT`: no variable may be an instance of it (E0333).
+    pub is_abstract: bool,
+    /// The diagnostics of its methods' declarations, reported when its base is found (a block
+    /// whose base is missing is not compiled: E0330 only).
+    pub deferred: Vec<Diagnostic>,
+    /// After [`flatten`]: the file of each of the body's methods (inherited ones come from their
+    /// base's file); empty before, when every method is in the body's file.
+    pub method_files: Vec<FileId>,
+}
+
+/// An `INTERFACE name [EXTENDS I0, ...] METHOD ... END_METHOD ... END_INTERFACE`.
+#[derive(Debug, Clone)]
+pub struct InterfaceOop {
+    /// The interface's name.
+    pub name: Ident,
+    /// The interfaces it extends.
+    pub extends: Vec<Ident>,
+    /// Its methods: the signatures a block that implements it must have.
+    pub methods: Vec<PendingMethod>,
+}
+
+/// The identifiers after `EXTENDS` and after `IMPLEMENTS` in `range` of `src`.
+fn clause_names(file: FileId, src: &str, range: &Range<usize>) -> (Vec<Ident>, Vec<Ident>) {
+    let text = src.get(range.clone()).unwrap_or("");
+    let (toks, _) = lex(text);
+    let (mut extends, mut implements): (Vec<Ident>, Vec<Ident>) = (Vec::new(), Vec::new());
+    let mut into_implements = false;
+    let mut after_dot = false;
+    for t in &toks {
+        let w = text.get(t.range.clone()).unwrap_or("");
+        if w.eq_ignore_ascii_case("EXTENDS") {
+            into_implements = false;
+        } else if w.eq_ignore_ascii_case("IMPLEMENTS") {
+            into_implements = true;
+        } else if t.tok == Tok::Ident {
+            let list = if into_implements {
+                &mut implements
+            } else {
+                &mut extends
+            };
+            match list.last_mut().filter(|_| after_dot) {
+                // `TcUnit.FB_TestSuite`: a name qualified by a library's namespace, one name
+                Some(last) => {
+                    last.name = format!("{}.{w}", last.name);
+                    last.span.end = (range.start + t.range.end) as u32;
+                }
+                None => list.push(Ident::new(
+                    w,
+                    Span::new(file, range.start + t.range.start, range.start + t.range.end),
+                )),
+            }
+        }
+        after_dot = t.tok == Tok::Dot;
+    }
+    (extends, implements)
+}
+
+impl Oop {
+    /// The `Oop` of an `INTERFACE` (`p`, read by the scan) with its methods' signatures.
+    pub(super) fn interface(
+        file: FileId,
+        src: &str,
+        p: &PouText,
+        methods: Vec<PendingMethod>,
+    ) -> Oop {
+        let extends = p
+            .heritage
+            .as_ref()
+            .map(|h| clause_names(file, src, h).0)
+            .unwrap_or_default();
+        Oop::Interface(InterfaceOop {
+            name: Ident::new(
+                &p.name,
+                Span::new(file, p.name_range.start, p.name_range.end),
+            ),
+            extends,
+            methods,
+        })
+    }
+
+    /// The `Oop` of a function block: `None` without `EXTENDS`, `IMPLEMENTS`, `FINAL` or `ABSTRACT`.
+    pub(super) fn block(file: FileId, src: &str, p: &PouText) -> Option<Oop> {
+        let modifier = p
+            .modifier
+            .as_ref()
+            .and_then(|r| src.get(r.clone()))
+            .map(str::to_ascii_uppercase);
+        let is_final = modifier.as_deref() == Some("FINAL");
+        let is_abstract = modifier.as_deref() == Some("ABSTRACT");
+        let (extends, implements) = p
+            .heritage
+            .as_ref()
+            .map(|h| clause_names(file, src, h))
+            .unwrap_or_default();
+        (is_final || is_abstract || !extends.is_empty() || !implements.is_empty()).then(|| {
+            Oop::Block(BlockOop {
+                extends,
+                implements,
+                is_final,
+                is_abstract,
+                deferred: Vec::new(),
+                method_files: Vec::new(),
+            })
+        })
+    }
+}
+
+/// One function block as inheritance sees it.
+struct Class {
+    name: Ident,
+    /// Its own variable blocks, as parsed.
+    vars: Vec<VarBlock>,
+    /// Its pending body (ST), if any.
+    pending: Option<usize>,
+    /// Its body is non-empty IL (no pending body): `SUPER^()` cannot run it.
+    il_body: bool,
+    oop: BlockOop,
+}
+
+/// The longest chain of bases followed (a longer one is reported as E0331).
+const MAX_DEPTH: usize = 100;
+
+/// Flattens the derived function blocks of `pending` into `units` (their variables) and returns the
+/// pending bodies to lower (their methods and bodies), and checks `IMPLEMENTS`, `FINAL`, `ABSTRACT`
+/// and variables of an interface type. `None` when no pending body has an [`Oop`] (nothing to do).
+pub fn flatten(
+    units: &mut [CompilationUnit],
+    pending: &[PendingBody],
+    diags: &mut Diagnostics,
+) -> Option<Vec<PendingBody>> {
+    if !pending.iter().any(|pb| pb.oop.is_some()) {
+        return None;
+    }
+    let mut out: Vec<PendingBody> = pending.to_vec();
+    let by_start: HashMap<(FileId, usize), usize> = pending
+        .iter()
+        .enumerate()
+        .filter(|(_, pb)| !pb.sfc)
+        .map(|(k, pb)| ((pb.file, pb.name_start), k))
+        .collect();
+    let mut classes: HashMap<String, Class> = HashMap::new();
+    let mut other_pous: HashSet<String> = HashSet::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        let LibraryElement::Pou(p) = item else {
+            continue;
+        };
+        if p.kind != PouKind::FunctionBlock {
+            other_pous.insert(p.name.key());
+            continue;
+        }
+        let k = by_start
+            .get(&(p.name.span.file, p.name.span.start as usize))
+            .copied();
+        let oop = match k.and_then(|k| pending[k].oop.as_deref()) {
+            Some(Oop::Block(b)) => b.clone(),
+            _ => BlockOop::default(),
+        };
+        classes.entry(p.name.key()).or_insert(Class {
+            name: p.name.clone(),
+            vars: p.var_blocks.clone(),
+            pending: k,
+            il_body: k.is_none() && !p.body.is_empty(),
+            oop,
+        });
+    }
+    let interfaces: HashMap<String, &InterfaceOop> = pending
+        .iter()
+        .filter_map(|pb| match pb.oop.as_deref() {
+            Some(Oop::Interface(i)) => Some((i.name.key(), i)),
+            _ => None,
+        })
+        .collect();
+    // the chain of each derived block, root first; `None` when broken (reported)
+    let mut keys: Vec<String> = classes.keys().cloned().collect();
+    keys.sort_by_key(|k| {
+        let c = &classes[k];
+        (c.name.span.file, c.name.span.start)
+    });
+    let mut chains: HashMap<String, Option<Vec<String>>> = HashMap::new();
+    for key in &keys {
+        let c = &classes[key];
+        if c.oop.extends.is_empty() {
+            continue;
+        }
+        if let Some(extra) = c.oop.extends.get(1) {
+            diags.push(
+                Diagnostic::error(
+                    code::E0330,
+                    format!("`{}` extends more than one function block", c.name.name),
+                )
+                .at(extra.span)
+                .with_primary_label("a second base")
+                .with_hint("a function block has one base (EXTENDS A); several interfaces go after IMPLEMENTS"),
+            );
+        }
+        chains.insert(
+            key.clone(),
+            chain_of(key, &classes, &interfaces, &other_pous, diags),
+        );
+    }
+    // a block with a broken chain compiles without its body and methods (its errors are reported)
+    for key in &keys {
+        let Some(chain) = chains.get(key) else {
+            continue;
+        };
+        let c = &classes[key];
+        let Some(k) = c.pending else { continue };
+        let Some(chain) = chain else {
+            out[k].text = String::new();
+            out[k].methods.clear();
+            continue;
+        };
+        diags.extend(c.oop.deferred.iter().cloned());
+        flatten_one(units, pending, &classes, chain, &mut out[k], diags);
+    }
+    // IMPLEMENTS: each interface's methods, with the same signature, in the block or its bases
+    for key in &keys {
+        let c = &classes[key];
+        if c.oop.implements.is_empty() {
+            continue;
+        }
+        let methods: Vec<&PendingMethod> = match c.pending {
+            Some(k) => out[k].methods.iter().collect(),
+            None => Vec::new(),
+        };
+        for itf in &c.oop.implements {
+            check_implements(c, itf, &methods, &interfaces, diags);
+        }
+    }
+    check_instances(units, &classes, &interfaces, &by_start, &mut out, diags);
+    Some(out)
+}
+
+/// The chain of bases of `key`, root first, ending with `key`; `None` (with one diagnostic at the
+/// block's EXTENDS) when a base is unknown, not a function block, FINAL, or the chain is a cycle.
+fn chain_of(
+    key: &str,
+    classes: &HashMap<String, Class>,
+    interfaces: &HashMap<String, &InterfaceOop>,
+    other_pous: &HashSet<String>,
+    diags: &mut Diagnostics,
+) -> Option<Vec<String>> {
+    let mut chain = vec![key.to_string()];
+    let mut seen: HashSet<String> = chain.iter().cloned().collect();
+    let mut cur = &classes[key];
+    while let Some(base) = cur.oop.extends.first() {
+        let bkey = base.key();
+        let own = cur.name.key() == key;
+        let Some(b) = classes.get(&bkey) else {
+            if own {
+                let what = if interfaces.contains_key(&bkey) {
+                    "is an INTERFACE, which a function block implements (IMPLEMENTS), not extends"
+                } else if other_pous.contains(&bkey) {
+                    "is a PROGRAM or FUNCTION, not a function block"
+                } else {
+                    "names no function block of the project"
+                };
+                diags.push(
+                    Diagnostic::error(
+                        code::E0330,
+                        format!("`{}` EXTENDS `{}`, which {what}", cur.name.name, base.name),
+                    )
+                    .at(base.span)
+                    .with_primary_label("no such base")
+                    .with_hint("name a FUNCTION_BLOCK declared in one of the files given (library blocks such as TON cannot be extended here)"),
+                );
+            }
+            return None;
+        };
+        if seen.contains(&bkey) || chain.len() > MAX_DEPTH {
+            let in_cycle = bkey == key || chain.len() > MAX_DEPTH;
+            if in_cycle {
+                let names: Vec<&str> = chain
+                    .iter()
+                    .map(|k| classes[k].name.name.as_str())
+                    .collect();
+                let first = &classes[key];
+                diags.push(
+                    Diagnostic::error(
+                        code::E0331,
+                        format!(
+                            "`{}` extends itself through its bases: {} -> {}",
+                            first.name.name,
+                            names.join(" -> "),
+                            b.name.name
+                        ),
+                    )
+                    .at(first.oop.extends.first().map_or(first.name.span, |e| e.span))
+                    .with_primary_label("the cycle starts here")
+                    .with_hint("a chain of EXTENDS must end at a block that extends nothing; remove one EXTENDS of the cycle"),
+                );
+            }
+            return None;
+        }
+        if b.oop.is_final {
+            if own {
+                diags.push(
+                    Diagnostic::error(
+                        code::E0332,
+                        format!(
+                            "`{}` EXTENDS `{}`, which is FINAL",
+                            cur.name.name, b.name.name
+                        ),
+                    )
+                    .at(base.span)
+                    .with_primary_label("a FINAL block has no derived blocks")
+                    .with_hint(format!(
+                        "remove FINAL from `{}` or do not extend it",
+                        b.name.name
+                    )),
+                );
+            }
+            return None;
+        }
+        seen.insert(bkey.clone());
+        chain.push(bkey);
+        cur = b;
+    }
+    chain.reverse();
+    Some(chain)
+}
+
+/// The pending body of a class and its file, if it has one.
+fn body_of<'p>(c: &Class, pending: &'p [PendingBody]) -> Option<&'p PendingBody> {
+    c.pending.map(|k| &pending[k])
+}
+
+/// The hidden name of the version of method `m` defined at level `level` of a chain.
+fn super_method(level: usize, m: &str) -> String {
+    format!("__S{level:03}_{}", m.to_ascii_uppercase())
+}
+
+/// The hidden name of the body of level `level` of a chain, run by `SUPER^()`.
+fn super_body(level: usize) -> String {
+    format!("__B{level:03}")
+}
+
+/// Flattens one derived block (`chain`, root first, the block last) into `pb` and its POU.
+fn flatten_one(
+    units: &mut [CompilationUnit],
+    pending: &[PendingBody],
+    classes: &HashMap<String, Class>,
+    chain: &[String],
+    pb: &mut PendingBody,
+    diags: &mut Diagnostics,
+) {
+    let levels: Vec<&Class> = chain.iter().map(|k| &classes[k]).collect();
+    let n = levels.len() - 1;
+    let me = levels[n];
+    // variables: the bases' then the block's own; a name declared again is E0334 (a base's
+    // VAR_TEMP may be declared again, as CODESYS allows: the block's own replaces it)
+    let mut blocks: Vec<VarBlock> = Vec::new();
+    let mut declared: HashMap<String, (VarKind, Span, String)> = HashMap::new();
+    for (j, c) in levels.iter().enumerate() {
+        for b in &c.vars {
+            let mut nb = b.clone();
+            nb.vars.retain(|v| {
+                let key = v.name.key();
+                match declared.get(&key) {
+                    Some((kind, at, owner)) if *kind != VarKind::Temp => {
+                        if j == n {
+                            diags.push(
+                                Diagnostic::error(
+                                    code::E0334,
+                                    format!(
+                                        "`{}` declares `{}`, which its base `{owner}` declares already",
+                                        me.name.name, v.name.name
+                                    ),
+                                )
+                                .at(v.name.span)
+                                .with_primary_label("declared again")
+                                .with_label(*at, "the base's declaration")
+                                .with_hint("a derived block has every variable of its bases: use the base's variable, or rename this one"),
+                            );
+                        }
+                        false
+                    }
+                    _ => {
+                        declared.insert(key, (b.kind, v.name.span, c.name.name.clone()));
+                        true
+                    }
+                }
+            });
+            blocks.push(nb);
+        }
+    }
+    // a base's VAR_TEMP declared again by a later level: the later declaration is kept
+    let mut seen = HashSet::new();
+    for b in blocks.iter_mut().rev() {
+        b.vars.retain(|v| seen.insert(v.name.key()));
+    }
+    blocks.retain(|b| !b.vars.is_empty());
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        if let LibraryElement::Pou(p) = item {
+            if p.name.span == me.name.span {
+                p.var_blocks = blocks.clone();
+            }
+        }
+    }
+    // methods: the version of each name at each level; the last is the block's
+    let mut versions: HashMap<String, Vec<(usize, &PendingMethod, FileId)>> = HashMap::new();
+    let mut order: Vec<String> = Vec::new();
+    for (j, c) in levels.iter().enumerate() {
+        if let Some(b) = body_of(c, pending) {
+            for m in &b.methods {
+                let key = m.name.key();
+                if !versions.contains_key(&key) {
+                    order.push(key.clone());
+                }
+                versions.entry(key).or_default().push((j, m, b.file));
+            }
+        }
+    }
+    let mut ctx = Rewrite {
+        levels: &levels,
+        versions: &versions,
+        needed: Vec::new(),
+    };
+    let mut methods = Vec::new();
+    let mut files = Vec::new();
+    for key in &order {
+        let Some(&(j, m, file)) = versions[key].last() else {
+            continue;
+        };
+        let mut m = m.clone();
+        m.text = ctx.rewrite(file, &m.text, m.base, j, diags);
+        methods.push(m);
+        files.push(file);
+    }
+    let own_text = pb.text.clone();
+    pb.text = ctx.rewrite(pb.file, &own_text, pb.base, n, diags);
+    // the hidden versions SUPER^ calls, and the versions and bodies they call in turn
+    let mut done = HashSet::new();
+    while let Some(h) = ctx.needed.pop() {
+        if !done.insert(h.clone()) {
+            continue;
+        }
+        match h {
+            Hidden::Method(j, key) => {
+                let Some(&(_, m, file)) = versions
+                    .get(&key)
+                    .and_then(|v| v.iter().find(|(l, _, _)| *l == j))
+                else {
+                    continue;
+                };
+                let mut m = m.clone();
+                m.text = ctx.rewrite(file, &m.text, m.base, j, diags);
+                // (the result keeps the method's name: the text assigns it so)
+                m.name = Ident::new(super_method(j, &m.name.name), m.name.span);
+                methods.push(m);
+                files.push(file);
+            }
+            Hidden::Body(j) => {
+                let c = levels[j];
+                let (file, text, base) = match body_of(c, pending) {
+                    Some(b) => (b.file, b.text.clone(), b.base),
+                    None => (c.name.span.file, String::new(), c.name.span.end as usize),
+                };
+                let text = ctx.rewrite(file, &text, base, j, diags);
+                methods.push(PendingMethod {
+                    name: Ident::new(super_body(j), c.name.span),
+                    ret: None,
+                    blocks: Vec::new(),
+                    text,
+                    base,
+                });
+                files.push(file);
+            }
+        }
+    }
+    // actions: the block's own, then its bases' of other names
+    let mut actions = pb.actions.clone();
+    for c in levels[..n].iter().rev() {
+        if let Some(b) = body_of(c, pending) {
+            for a in &b.actions {
+                if !actions.iter().any(|x| x.0.key() == a.0.key()) {
+                    actions.push(a.clone());
+                }
+            }
+        }
+    }
+    pb.actions = actions;
+    pb.methods = methods;
+    if let Some(Oop::Block(b)) = pb.oop.as_deref_mut() {
+        b.method_files = files;
+    }
+}
+
+/// A hidden method [`flatten_one`] must add: a level's version of a method, or a level's body.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+enum Hidden {
+    Method(usize, String),
+    Body(usize),
+}
+
+/// Rewrites `SUPER^.M` and `SUPER^()` in the texts of one chain.
+struct Rewrite<'a> {
+    levels: &'a [&'a Class],
+    versions: &'a HashMap<String, Vec<(usize, &'a PendingMethod, FileId)>>,
+    needed: Vec<Hidden>,
+}
+
+impl Rewrite<'_> {
+    /// `text` (at `base` in `file`), written at level `level` of the chain, with `SUPER^.M` written
+    /// as the name of the version of `M` visible at `level - 1` (`M` itself when that is the
+    /// block's version: blanks before it), `SUPER^.x` of a variable as `x`, and `SUPER^()` as the
+    /// hidden method of the body of `level - 1`. Same length, same line breaks.
+    fn rewrite(
+        &mut self,
+        file: FileId,
+        text: &str,
+        base: usize,
+        level: usize,
+        diags: &mut Diagnostics,
+    ) -> String {
+        let (toks, _) = lex(text);
+        let mut out = text.to_string();
+        let word = |k: usize| {
+            toks.get(k)
+                .and_then(|t| text.get(t.range.clone()))
+                .unwrap_or("")
+        };
+        let adjacent = |a: usize, b: usize| matches!((toks.get(a), toks.get(b)), (Some(x), Some(y)) if x.range.end == y.range.start);
+        for k in 0..toks.len() {
+            if toks[k].tok != Tok::Ident || !word(k).eq_ignore_ascii_case("SUPER") {
+                continue;
+            }
+            if toks.get(k + 1).map(|t| &t.tok) != Some(&Tok::Caret) || !adjacent(k, k + 1) {
+                continue;
+            }
+            let at = Span::new(
+                file,
+                base + toks[k].range.start,
+                base + toks[k + 1].range.end,
+            );
+            if level == 0 {
+                // the root's own SUPER^: E0108 when its text is parsed
+                continue;
+            }
+            let parent = level - 1;
+            match toks.get(k + 2).map(|t| &t.tok) {
+                Some(Tok::Dot)
+                    if adjacent(k + 1, k + 2)
+                        && toks.get(k + 3).is_some_and(|t| t.tok == Tok::Ident)
+                        && adjacent(k + 2, k + 3) =>
+                {
+                    let name = word(k + 3).to_ascii_uppercase();
+                    let prefix = toks[k].range.start..toks[k + 2].range.end;
+                    let visible = self.versions.get(&name).and_then(|v| {
+                        let last = v.last()?.0;
+                        let at = v.iter().rev().find(|(l, _, _)| *l <= parent)?.0;
+                        Some((at, last))
+                    });
+                    let replacement = match visible {
+                        Some((at, last)) if at != last => {
+                            self.needed.push(Hidden::Method(at, name.clone()));
+                            format!("__S{at:03}_")
+                        }
+                        // the block's own version, or a variable of a base (the block has it)
+                        _ => "       ".to_string(),
+                    };
+                    out.replace_range(prefix, &replacement);
+                }
+                Some(Tok::LParen) => {
+                    if self.levels[parent].il_body {
+                        diags.push(
+                            Diagnostic::error(
+                                code::E0303,
+                                format!(
+                                    "SUPER^() runs the body of `{}`, which is instruction list: not supported",
+                                    self.levels[parent].name.name
+                                ),
+                            )
+                            .at(at)
+                            .with_primary_label("the base's body is IL")
+                            .with_hint("write the base's body in Structured Text"),
+                        );
+                        continue;
+                    }
+                    self.needed.push(Hidden::Body(parent));
+                    out.replace_range(
+                        toks[k].range.start..toks[k + 1].range.end,
+                        &super_body(parent),
+                    );
+                }
+                _ => {}
+            }
+        }
+        out
+    }
+}
+
+/// A comparable text of a declared type: its name, or its kind and bounds.
+fn type_key(t: &TypeRef) -> String {
+    match t {
+        TypeRef::Named(i) => i.key(),
+        TypeRef::String { wide, length, .. } => format!("STRING{wide}{length:?}"),
+        TypeRef::Array { dims, element, .. } => {
+            let d: Vec<String> = dims
+                .iter()
+                .map(|d| format!("{}..{}", d.lower, d.upper))
+                .collect();
+            format!("ARRAY[{}] OF {}", d.join(","), type_key(element))
+        }
+        TypeRef::Subrange {
+            base, lower, upper, ..
+        } => format!("{}({lower}..{upper})", base.key()),
+        TypeRef::Enum { values, .. } => {
+            let v: Vec<String> = values.iter().map(Ident::key).collect();
+            format!("({})", v.join(","))
+        }
+    }
+}
+
+/// A method's signature as a text: result type, then each input and output with its type.
+fn signature(m: &PendingMethod) -> String {
+    let mut s = m.ret.as_ref().map_or("-".to_string(), |r| type_key(&r.ty));
+    for kind in [VarKind::Input, VarKind::Output, VarKind::InOut] {
+        for b in m.blocks.iter().filter(|b| b.kind == kind) {
+            for v in &b.vars {
+                s.push_str(&format!(" {kind:?}:{}:{}", v.name.key(), type_key(&v.ty)));
+            }
+        }
+    }
+    s
+}
+
+/// A method's signature for a message: `M(a : INT) : BOOL`.
+fn shown(m: &PendingMethod) -> String {
+    let ins: Vec<String> = m
+        .blocks
+        .iter()
+        .filter(|b| b.kind == VarKind::Input)
+        .flat_map(|b| b.vars.iter())
+        .map(|v| format!("{} : {}", v.name.name, type_key(&v.ty)))
+        .collect();
+    let ret = m
+        .ret
+        .as_ref()
+        .map_or(String::new(), |r| format!(" : {}", type_key(&r.ty)));
+    format!("{}({}){ret}", m.name.name, ins.join(", "))
+}
+
+/// Checks that block `c` (its methods, inherited ones included) has every method of interface
+/// `itf` and of the interfaces it extends, with the same signature.
+fn check_implements(
+    c: &Class,
+    itf: &Ident,
+    methods: &[&PendingMethod],
+    interfaces: &HashMap<String, &InterfaceOop>,
+    diags: &mut Diagnostics,
+) {
+    let mut todo = vec![itf.key()];
+    let mut seen = HashSet::new();
+    while let Some(key) = todo.pop() {
+        if !seen.insert(key.clone()) || seen.len() > MAX_DEPTH {
+            continue;
+        }
+        let Some(i) = interfaces.get(&key) else {
+            if key == itf.key() {
+                diags.push(
+                    Diagnostic::error(
+                        code::E0330,
+                        format!(
+                            "`{}` IMPLEMENTS `{}`, which names no INTERFACE of the project",
+                            c.name.name, itf.name
+                        ),
+                    )
+                    .at(itf.span)
+                    .with_primary_label("no such interface")
+                    .with_hint("name an INTERFACE declared in one of the files given (`.st` INTERFACE ... END_INTERFACE, TwinCAT `.TcIO`)"),
+                );
+            }
+            continue;
+        };
+        todo.extend(i.extends.iter().map(Ident::key));
+        for m in &i.methods {
+            match methods.iter().find(|x| x.name.key() == m.name.key()) {
+                None => diags.push(
+                    Diagnostic::error(
+                        code::E0335,
+                        format!(
+                            "`{}` IMPLEMENTS `{}` but has no method `{}`",
+                            c.name.name, i.name.name, m.name.name
+                        ),
+                    )
+                    .at(itf.span)
+                    .with_primary_label(format!("`{}` missing", shown(m)))
+                    .with_label(m.name.span, "declared by the interface here")
+                    .with_hint(format!(
+                        "add `METHOD {}` to `{}` (or to a block it extends)",
+                        shown(m),
+                        c.name.name
+                    )),
+                ),
+                Some(x) if signature(x) != signature(m) => diags.push(
+                    Diagnostic::error(
+                        code::E0335,
+                        format!(
+                            "method `{}` of `{}` is `{}`, but interface `{}` declares `{}`",
+                            m.name.name,
+                            c.name.name,
+                            shown(x),
+                            i.name.name,
+                            shown(m)
+                        ),
+                    )
+                    .at(x.name.span)
+                    .with_primary_label("another signature")
+                    .with_label(m.name.span, "the interface's method")
+                    .with_hint("give the method the interface's result type and the same inputs and outputs, in the same order, with the same types"),
+                ),
+                Some(_) => {}
+            }
+        }
+    }
+}
+
+/// Variables whose type is an ABSTRACT block (E0333) or an interface (E0336: not compiled, and
+/// the body of their POU neither).
+fn check_instances(
+    units: &mut [CompilationUnit],
+    classes: &HashMap<String, Class>,
+    interfaces: &HashMap<String, &InterfaceOop>,
+    by_start: &HashMap<(FileId, usize), usize>,
+    out: &mut [PendingBody],
+    diags: &mut Diagnostics,
+) {
+    fn named(t: &TypeRef) -> Option<&Ident> {
+        match t {
+            TypeRef::Named(i) => Some(i),
+            TypeRef::Array { element, .. } => named(element),
+            _ => None,
+        }
+    }
+    let abstract_or_interface = |v: &crate::ast::VarDecl,
+                                 dropped: &mut bool,
+                                 diags: &mut Diagnostics| {
+        let Some(ty) = named(&v.ty) else { return true };
+        if let Some(c) = classes.get(&ty.key()).filter(|c| c.oop.is_abstract) {
+            diags.push(
+                Diagnostic::error(
+                    code::E0333,
+                    format!("`{}` is an instance of `{}`, which is ABSTRACT", v.name.name, c.name.name),
+                )
+                .at(ty.span)
+                .with_primary_label("an ABSTRACT block has no instances")
+                .with_hint(format!("declare an instance of a block that EXTENDS `{}` and implements its abstract methods", c.name.name)),
+            );
+            return true;
+        }
+        if let Some(i) = interfaces.get(&ty.key()) {
+            diags.push(
+                Diagnostic::error(
+                    code::E0336,
+                    format!("`{}` has the interface type `{}`: a reference to any block that implements it is not compiled", v.name.name, i.name.name),
+                )
+                .at(ty.span)
+                .with_primary_label("an interface type needs references and dynamic dispatch")
+                .with_hint("declare the variable with the function block type it holds; the body of its POU is not compiled"),
+            );
+            *dropped = true;
+            return false;
+        }
+        true
+    };
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        let mut dropped = false;
+        match item {
+            LibraryElement::Pou(p) => {
+                for b in p.var_blocks.iter_mut() {
+                    b.vars
+                        .retain(|v| abstract_or_interface(v, &mut dropped, diags));
+                }
+                let span = p.name.span;
+                if let (true, Some(&k)) = (dropped, by_start.get(&(span.file, span.start as usize)))
+                {
+                    out[k].text = String::new();
+                    out[k].methods.clear();
+                    out[k].actions.clear();
+                }
+            }
+            LibraryElement::GlobalVars(b) => {
+                b.vars
+                    .retain(|v| abstract_or_interface(v, &mut dropped, diags));
+            }
+            _ => {}
+        }
+    }
+}
