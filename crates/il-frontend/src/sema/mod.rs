@@ -13,6 +13,7 @@ mod decls;
 pub mod model;
 pub mod nesting;
 mod places;
+mod refs;
 pub mod stdlib;
 pub mod typing;
 

@@ -193,11 +193,26 @@ impl Env<'_> {
                 elem_ref(e, a.span)
             }
         };
+        // a `REFERENCE TO` variable reads as the variable it refers to (the lowering adds the `^`)
+        if skip == 0 && !matches!(p.accessors.first(), Some(Accessor::Deref(_))) {
+            if let TypeRef::Ref {
+                kind: crate::ast::RefKind::Reference,
+                target,
+                ..
+            } = self.resolve(&t)
+            {
+                t = *target;
+            }
+        }
         for acc in p.accessors.iter().skip(skip) {
             t = match acc {
                 Accessor::Field(f) => self.member(&t, f)?,
                 Accessor::Index(_) => match self.resolve(&t) {
                     TypeRef::Array { element, .. } => *element,
+                    _ => return None,
+                },
+                Accessor::Deref(_) => match self.resolve(&t) {
+                    TypeRef::Ref { target, .. } => *target,
                     _ => return None,
                 },
             };
@@ -341,6 +356,26 @@ impl Env<'_> {
             if p.kind == PouKind::Function {
                 return p.ret.clone().map_or(Ty::Unknown, Ty::Known);
             }
+        }
+        // references (see `super::refs`): `REF(x)` / `ADR(x)` refer to `x`, `__ISVALIDREF(r)` is BOOL
+        if super::refs::is_address_of(name) {
+            let target = match args {
+                [a] => match &a.value.kind {
+                    ExprKind::Place(p) => self.place_type(p),
+                    _ => None,
+                },
+                _ => None,
+            };
+            return target.map_or(Ty::Unknown, |t| {
+                Ty::Known(TypeRef::Ref {
+                    kind: crate::ast::RefKind::RefTo,
+                    target: Box::new(t),
+                    span,
+                })
+            });
+        }
+        if name.is(super::refs::IS_VALID_REF) {
+            return Ty::Known(elem_ref(Elementary::Bool, span));
         }
         // TRUNC is ANY_REAL to ANY_INT (IEC 61131-3 edition 2): its integer type is its context's,
         // as matiec types it (`i := TRUNC(r)` is TRUNC to INT); the lowering writes `TRUNC_INT`

@@ -19,6 +19,7 @@ pub mod lexer;
 pub mod lower;
 pub mod parser;
 mod qualifiers;
+pub mod refs;
 mod scl;
 pub mod sfc;
 pub mod types;

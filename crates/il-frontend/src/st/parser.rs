@@ -495,6 +495,33 @@ impl<'s, 'd> Parser<'s, 'd> {
                     args,
                 })
             }
+            // `r REF= x` (CODESYS, TwinCAT): `r`, a REFERENCE TO, now refers to `x` (lowered by
+            // `PouLowering`, see `super::refs::REF_ASSIGN`)
+            Tok::Ident if self.ident(self.cur()).is("REF") && *self.peek_at(1) == Tok::Eq => {
+                let op = self.bump();
+                self.bump();
+                let value = self.expr();
+                if matches!(value.kind, ExprKind::Error) {
+                    return None;
+                }
+                let span = self.span(op.range.start, self.prev_end());
+                let arg = Arg {
+                    name: None,
+                    dir: ArgDir::Input,
+                    span: value.span,
+                    value,
+                };
+                Some(StmtKind::Assign {
+                    target,
+                    value: Expr {
+                        kind: ExprKind::Call {
+                            name: Ident::new(super::refs::REF_ASSIGN, span),
+                            args: vec![arg],
+                        },
+                        span,
+                    },
+                })
+            }
             Tok::Eq => {
                 self.error_here(
                     code::E0106,
@@ -890,12 +917,8 @@ impl<'s, 'd> Parser<'s, 'd> {
                     accessors.push(Accessor::Index(idx));
                 }
                 Tok::Caret => {
-                    self.error_here(
-                        code::E0108,
-                        "pointer dereference `^` is not supported",
-                        "use the variable itself, or pass it as VAR_IN_OUT",
-                    );
-                    return None;
+                    let t = self.bump();
+                    accessors.push(Accessor::Deref(self.span(t.range.start, t.range.end)));
                 }
                 _ => break,
             }
