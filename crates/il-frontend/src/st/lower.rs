@@ -1386,6 +1386,31 @@ impl<'d> PouLowering<'d> {
                             },
                         ..
                     }] => p,
+                    [Arg {
+                        name: None,
+                        value:
+                            Expr {
+                                kind: ExprKind::Literal(_),
+                                span: lit,
+                            },
+                        ..
+                    }] => {
+                        // `ADR('auto')` (CODESYS): a literal has no address here
+                        diags.push(
+                            Diagnostic::error(
+                                code::E0305,
+                                format!("`{}` of a literal: a reference must refer to a variable", name.name),
+                            )
+                            .at(*lit)
+                            .with_primary_label("a literal")
+                            .with_hint("declare a variable (or VAR CONSTANT) holding the value and take its address"),
+                        );
+                        self.poisoned = true;
+                        return Some(Operand::Ref(Box::new(il::RefOperand {
+                            of: None,
+                            span: e.span,
+                        })));
+                    }
                     _ => {
                         diags.push(
                             Diagnostic::error(
