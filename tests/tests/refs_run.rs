@@ -87,6 +87,22 @@ fn a_reference_to_input_writes_the_callers_variable() {
     assert_eq!(column(&trace, "main.spare.bound"), [0.0; 4]);
 }
 
+/// A `REFERENCE TO` field of a structure, bound with `l.target REF= x`, doubles `x` each scan
+/// through `l.target := l.target * l.gain`; a block's `REFERENCE TO` output, bound inside it to its
+/// `REFERENCE TO` input, is written by the caller (`pick.chosen := pick.chosen + 1` adds to `y`).
+#[test]
+fn reference_to_fields_and_outputs_read_and_write_their_variables() {
+    let (trace, _) = run_traced(
+        &fixture("reference_fields.st"),
+        3,
+        "main.x,main.y,main.v,main.ok",
+    );
+    assert_eq!(column(&trace, "main.x"), [10.0, 20.0, 40.0], "{trace}");
+    assert_eq!(column(&trace, "main.y"), [2.0, 3.0, 4.0]);
+    assert_eq!(column(&trace, "main.v"), [2.0, 3.0, 4.0]);
+    assert_eq!(column(&trace, "main.ok"), [1.0; 3]);
+}
+
 /// In the second scan `r` is NULL: `got := r^` reads 0 and `r^ := got + 1` is dropped (`value`
 /// stays 8); the run goes on, and its end names the first NULL dereference.
 #[test]

@@ -1080,7 +1080,7 @@ mod tests {
             .iter()
             .filter_map(|a| match a {
                 Accessor::Field(f) => Some(f.name.clone()),
-                Accessor::Index(_) => None,
+                Accessor::Index(_) | Accessor::Deref(_) => None,
             })
             .collect();
         assert_eq!(names, ["ax", "bx"]);

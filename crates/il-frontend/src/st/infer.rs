@@ -193,18 +193,11 @@ impl Env<'_> {
                 elem_ref(e, a.span)
             }
         };
-        // a `REFERENCE TO` variable reads as the variable it refers to (the lowering adds the `^`)
-        if skip == 0 && !matches!(p.accessors.first(), Some(Accessor::Deref(_))) {
-            if let TypeRef::Ref {
-                kind: crate::ast::RefKind::Reference,
-                target,
-                ..
-            } = self.resolve(&t)
-            {
-                t = *target;
-            }
-        }
+        // a `REFERENCE TO` reads as the variable it refers to (the lowering adds the `^`)
         for acc in p.accessors.iter().skip(skip) {
+            if !matches!(acc, Accessor::Deref(_)) {
+                t = self.unreference(t);
+            }
             t = match acc {
                 Accessor::Field(f) => self.member(&t, f)?,
                 Accessor::Index(_) => match self.resolve(&t) {
@@ -217,7 +210,71 @@ impl Env<'_> {
                 },
             };
         }
-        Some(t)
+        Some(self.unreference(t))
+    }
+
+    /// The type a `REFERENCE TO T` stands for where it is used: `T` (any other type: itself).
+    fn unreference(&self, t: TypeRef) -> TypeRef {
+        match self.resolve(&t) {
+            TypeRef::Ref {
+                kind: crate::ast::RefKind::Reference,
+                target,
+                ..
+            } => *target,
+            _ => t,
+        }
+    }
+
+    /// Where the `^` of each `REFERENCE TO` in place `p` goes (the source leaves it out): before
+    /// written accessor `k` for each `k` returned, `p.accessors.len()` meaning after the last one.
+    /// With `raw_last`, a reference the place ends with stands for itself (`r REF= x`,
+    /// `__ISVALIDREF(r)`).
+    pub fn implicit_derefs(&self, p: &Place, raw_last: bool) -> Vec<usize> {
+        let mut out = Vec::new();
+        let PlaceBase::Name(n) = &p.base else {
+            return out;
+        };
+        let (mut t, skip) = match self.var_type(n) {
+            Some(t) => (t, 0),
+            None => match (self.decls.global_lists.get(&n.key()), p.accessors.first()) {
+                (Some(list), Some(Accessor::Field(m))) => match list.get(&m.key()) {
+                    Some(t) => (t.clone(), 1),
+                    None => return out,
+                },
+                _ => return out,
+            },
+        };
+        let len = p.accessors.len();
+        for k in skip..=len {
+            let next = p.accessors.get(k);
+            let reference = matches!(
+                self.resolve(&t),
+                TypeRef::Ref {
+                    kind: crate::ast::RefKind::Reference,
+                    ..
+                }
+            );
+            if reference && !matches!(next, Some(Accessor::Deref(_))) && !(raw_last && k == len) {
+                out.push(k);
+                t = self.unreference(t);
+            }
+            t = match next {
+                None => break,
+                Some(Accessor::Field(f)) => match self.member(&t, f) {
+                    Some(m) => m,
+                    None => break,
+                },
+                Some(Accessor::Index(_)) => match self.resolve(&t) {
+                    TypeRef::Array { element, .. } => *element,
+                    _ => break,
+                },
+                Some(Accessor::Deref(_)) => match self.resolve(&t) {
+                    TypeRef::Ref { target, .. } => *target,
+                    _ => break,
+                },
+            };
+        }
+        out
     }
 
     /// Whether `name` is an FB instance of the POU (a variable whose type is an FB type).

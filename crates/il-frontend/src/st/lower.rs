@@ -1336,31 +1336,6 @@ impl<'d> PouLowering<'d> {
         }
     }
 
-    /// A `REFERENCE TO` variable named first in a place reads as the variable it refers to: the
-    /// `^` the source leaves out goes first into `accessors` (unless [`Self::raw_refs`]).
-    fn implicit_deref(
-        &self,
-        base: &Ident,
-        written: &[Accessor],
-        accessors: &mut Vec<il::Accessor>,
-    ) {
-        if self.raw_refs || matches!(written.first(), Some(Accessor::Deref(_))) {
-            return;
-        }
-        let reference = self.env().var_type(base).is_some_and(|t| {
-            matches!(
-                self.env().resolve(&t),
-                TypeRef::Ref {
-                    kind: il::RefKind::Reference,
-                    ..
-                }
-            )
-        });
-        if reference {
-            accessors.push(il::Accessor::Deref(base.span));
-        }
-    }
-
     /// The reference operand `e` stands for, if it is one: `REF(x)` / `ADR(x)` / `r REF= x`'s `x`,
     /// `NULL`, `0` where a `POINTER TO` is expected, or a variable passed where a `REFERENCE TO`
     /// is expected (`hint`). Index code of `x` goes to `out`.
@@ -1501,8 +1476,11 @@ impl<'d> PouLowering<'d> {
             })));
         }
         let mut accessors = Vec::new();
-        self.implicit_deref(&base, &p.accessors, &mut accessors);
-        for a in &p.accessors {
+        let derefs = self.env().implicit_derefs(p, self.raw_refs);
+        for (k, a) in p.accessors.iter().enumerate() {
+            if derefs.contains(&k) {
+                accessors.push(il::Accessor::Deref(p.span));
+            }
             accessors.push(match a {
                 Accessor::Field(f) => il::Accessor::Field(f.clone()),
                 Accessor::Index(ix) => il::Accessor::Index(
@@ -1512,6 +1490,9 @@ impl<'d> PouLowering<'d> {
                 ),
                 Accessor::Deref(s) => il::Accessor::Deref(*s),
             });
+        }
+        if derefs.contains(&p.accessors.len()) {
+            accessors.push(il::Accessor::Deref(p.span));
         }
         Some(Operand::Var(VarRef {
             base,
@@ -1546,8 +1527,11 @@ impl<'d> PouLowering<'d> {
             }
         };
         let mut accessors = Vec::new();
-        self.implicit_deref(&base, &p.accessors, &mut accessors);
-        for a in &p.accessors {
+        let derefs = self.env().implicit_derefs(p, self.raw_refs);
+        for (k, a) in p.accessors.iter().enumerate() {
+            if derefs.contains(&k) {
+                accessors.push(il::Accessor::Deref(p.span));
+            }
             accessors.push(match a {
                 Accessor::Field(f) => il::Accessor::Field(f.clone()),
                 Accessor::Index(ix) => {
@@ -1559,6 +1543,9 @@ impl<'d> PouLowering<'d> {
                 }
                 Accessor::Deref(s) => il::Accessor::Deref(*s),
             });
+        }
+        if derefs.contains(&p.accessors.len()) {
+            accessors.push(il::Accessor::Deref(p.span));
         }
         Some(Operand::Var(VarRef {
             base,
