@@ -142,19 +142,22 @@ fn pointers_with_adr_read_and_write_their_variables() {
 }
 
 /// A CODESYS export: `<pointer>` to an array as a block input (summed by `pSamples^[i]`), a
-/// `REFERENCE TO DINT` input written by its name, and a data type whose field is a pointer.
+/// `REFERENCE TO DINT` input written by its name, a data type whose field is a pointer, and a
+/// `POINTER TO INT` declared in the VAR block the program's ST body starts with, which increments
+/// `samples[0]` each scan (so the sums of the first three samples grow by one more each scan).
 #[test]
 fn plcopen_xml_pointer_and_reference_types_run() {
     let (trace, _) = run_traced(
         &fixture("codesys_refs.xml"),
         3,
-        "PLC_PRG.grand_total,PLC_PRG.out",
+        "PLC_PRG.grand_total,PLC_PRG.out,PLC_PRG.samples[0]",
     );
     assert_eq!(
         column(&trace, "PLC_PRG.grand_total"),
-        [6.0, 12.0, 18.0],
+        [7.0, 15.0, 24.0],
         "{trace}"
     );
+    assert_eq!(column(&trace, "PLC_PRG.samples[0]"), [2.0, 3.0, 4.0]);
     assert_eq!(column(&trace, "PLC_PRG.out"), [40.0, 40.0, 40.0]);
 }
 
@@ -203,6 +206,28 @@ p := ADR(i);\np := p + 2;\nlt := p < q;\nr := REF(t);\nrb := REF(b);\nrb := REF(
             "refs.st:32:10: error[E1019]: `SIZEOF` is not supported",
         ]
     );
+}
+
+/// A reference starts as NULL: `:= NULL` is accepted (and traced as nothing: the run shows `r`
+/// still NULL through `r = NULL`), `:= REF(x)` is one E0305 at the initial value.
+#[test]
+fn initial_values_of_references() {
+    assert_eq!(
+        rejected_heads(
+            "init.st",
+            "PROGRAM main\nVAR\n  x : INT;\n  r : REF_TO INT := REF(x);\nEND_VAR\nx := 1;\nEND_PROGRAM\n",
+        ),
+        ["init.st:4:18: error[E0305]: a reference cannot have the initial value `REF(x)`"]
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("null.st");
+    std::fs::write(
+        &f,
+        "PROGRAM main\nVAR\n  r : REF_TO INT := NULL;\n  unset : BOOL;\nEND_VAR\nunset := r = NULL;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run_traced(&f, 1, "main.unset");
+    assert_eq!(column(&trace, "main.unset"), [1.0], "{trace}");
 }
 
 /// The C of references builds with `-std=c99 -Wall -Wextra -Werror` (the generated Makefile run

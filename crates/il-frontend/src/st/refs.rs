@@ -8,14 +8,14 @@
 //! the declarations' types wrapped back into [`TypeRef::Ref`] ([`RefTypes::apply`]).
 //! Invariants: every span stays where the user wrote it; a reference type is wrapped exactly where
 //! its keyword stood (a variable, a structure field, an array's element type, a TYPE alias, a
-//! FUNCTION's result); a keyword left without a type to wrap is one E0305 at the keyword.
+//! FUNCTION's result); an initial value other than `NULL` is one E0305.
 
 use super::file::{blank, is_var_keyword, word};
 use super::lexer::{Tok, Token};
 use crate::ast::{CompilationUnit, LibraryElement, RefKind, TypeDef, TypeRef, VarBlock, VarDecl};
 use crate::{FileId, Span};
 use diagnostics::{code, Diagnostic, Diagnostics};
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 
 /// `__ISVALIDREF(r)` (CODESYS): whether reference `r` refers to a variable (is not NULL).
 pub const IS_VALID_REF: &str = "__ISVALIDREF";
@@ -34,8 +34,8 @@ pub fn is_address_of(name: &crate::ast::Ident) -> bool {
 pub struct RefTypes {
     file: Option<FileId>,
     at: HashMap<usize, (Vec<RefKind>, Span)>,
-    /// The offsets whose type was wrapped.
-    used: HashSet<usize>,
+    /// Errors found while blanking (initial values), reported with the others.
+    pending: Vec<Diagnostic>,
 }
 
 impl RefTypes {
@@ -48,11 +48,22 @@ impl RefTypes {
     /// in a VAR, STRUCT or TYPE block, or a FUNCTION's result type) and records them. `None`: the text
     /// has none (nothing blanked).
     pub fn blank_keywords(file: FileId, src: &str, toks: &[Token]) -> (Option<String>, RefTypes) {
+        Self::blank_keywords_at(file, src, toks, 0)
+    }
+
+    /// [`Self::blank_keywords`] of a text that starts at offset `base` of its file (a declaration
+    /// text cut out of an XML element).
+    pub fn blank_keywords_at(
+        file: FileId,
+        src: &str,
+        toks: &[Token],
+        base: usize,
+    ) -> (Option<String>, RefTypes) {
         let mut text: Option<String> = None;
         let mut refs = RefTypes {
             file: Some(file),
             at: HashMap::new(),
-            used: HashSet::new(),
+            pending: Vec::new(),
         };
         let mut in_decl = false;
         for (k, t) in toks.iter().enumerate() {
@@ -88,7 +99,7 @@ impl RefTypes {
                     },
                     _ => break,
                 };
-                first.get_or_insert(Span::new(file, kw.range.start, end));
+                first.get_or_insert(Span::new(file, base + kw.range.start, base + end));
                 kinds.push(kind);
                 blank(
                     text.get_or_insert_with(|| src.to_string()),
@@ -97,15 +108,69 @@ impl RefTypes {
                 j = next;
             }
             if let (Some(span), Some(target)) = (first, toks.get(j)) {
-                refs.at.insert(target.range.start, (kinds, span));
+                refs.at.insert(base + target.range.start, (kinds, span));
+                refs.initial_value(file, src, toks, j, base, &mut text);
             }
         }
         (text, refs)
     }
 
-    /// Wraps the declared types that stood after a reference keyword into [`TypeRef::Ref`]; a
-    /// keyword whose type was not found (an error the parser reported, or a place no type is
-    /// declared) is one E0305.
+    /// The initial value of a reference declared at token `j` (its type), up to the `;`: `:= NULL`
+    /// is what every reference starts with (blanked); `:= REF(x)` / `ADR(x)` is one E0305 (a
+    /// reference starts as NULL; it is set in the body), blanked too, so that the declaration reads.
+    fn initial_value(
+        &mut self,
+        file: FileId,
+        src: &str,
+        toks: &[Token],
+        j: usize,
+        base: usize,
+        text: &mut Option<String>,
+    ) {
+        let mut k = j;
+        while let Some(t) = toks.get(k) {
+            match t.tok {
+                Tok::Semi => return,
+                Tok::Assign => break,
+                _ if is_var_keyword(&word(src, t).to_ascii_uppercase()) => return,
+                _ => k += 1,
+            }
+        }
+        let Some(assign) = toks.get(k) else { return };
+        let mut end = k + 1;
+        while toks.get(end).is_some_and(|t| t.tok != Tok::Semi) {
+            end += 1;
+        }
+        let Some(last) = toks.get(end - 1).filter(|_| end > k + 1) else {
+            return;
+        };
+        let value = src
+            .get(assign.range.end..last.range.end)
+            .unwrap_or("")
+            .trim();
+        if !value.eq_ignore_ascii_case("NULL") {
+            self.pending.push(
+                Diagnostic::error(
+                    code::E0305,
+                    format!("a reference cannot have the initial value `{value}`"),
+                )
+                .at(Span::new(
+                    file,
+                    base + assign.range.start,
+                    base + last.range.end,
+                ))
+                .with_primary_label("initial value")
+                .with_hint("a reference starts as NULL: set it in the body (`r := REF(x);`)"),
+            );
+        }
+        blank(
+            text.get_or_insert_with(|| src.to_string()),
+            assign.range.start..last.range.end,
+        );
+    }
+
+    /// Wraps the declared types that stood after a reference keyword into [`TypeRef::Ref`], and
+    /// reports the refused initial values.
     pub fn apply(mut self, unit: &mut CompilationUnit, diags: &mut Diagnostics) {
         if self.at.is_empty() {
             return;
@@ -148,27 +213,12 @@ impl RefTypes {
         }
     }
 
-    /// E0305 for each keyword whose type was not found.
+    /// Reports the initial values refused (E0305). A keyword whose type was not wrapped stood in
+    /// text the parser did not read (a POU refused as a whole, a declaration with a syntax error):
+    /// that is reported already, and nothing is added.
     pub fn report_left(&mut self, diags: &mut Diagnostics) {
-        let used = std::mem::take(&mut self.used);
-        let mut left: Vec<(Vec<RefKind>, Span)> = self
-            .at
-            .drain()
-            .filter(|(k, _)| !used.contains(k))
-            .map(|(_, v)| v)
-            .collect();
-        left.sort_by_key(|(_, s)| s.start);
-        for (kinds, span) in left {
-            let kw = kinds.first().map_or("REF_TO", |k| k.keyword());
-            diags.push(
-                Diagnostic::error(
-                    code::E0305,
-                    format!("`{kw}` is not supported here"),
-                )
-                .at(span)
-                .with_primary_label("reference type")
-                .with_hint("declare references in VAR blocks, STRUCT fields, array elements or TYPE aliases"),
-            );
+        for d in self.pending.drain(..) {
+            diags.push(d);
         }
     }
 
@@ -207,6 +257,5 @@ impl RefTypes {
                 span: Span::new(span_file, span.start as usize, end as usize),
             };
         }
-        self.used.insert(start);
     }
 }
