@@ -103,6 +103,25 @@ fn reference_to_fields_and_outputs_read_and_write_their_variables() {
     assert_eq!(column(&trace, "main.ok"), [1.0; 3]);
 }
 
+/// Instances called through references: `a` gets 1 through a pointer and 10 through `FB_User`'s
+/// `REFERENCE TO FB_Cnt` input each scan, `b` 2 through the same pointer moved to it; a standard
+/// TON called through `rt^(...)` reaches its 20 ms in the third scan.
+#[test]
+fn function_blocks_are_called_through_references() {
+    let (trace, _) = run_traced(
+        &fixture("fb_through_reference.st"),
+        4,
+        "main.a.n,main.b.n,main.q",
+    );
+    assert_eq!(
+        column(&trace, "main.a.n"),
+        [11.0, 22.0, 33.0, 44.0],
+        "{trace}"
+    );
+    assert_eq!(column(&trace, "main.b.n"), [2.0, 4.0, 6.0, 8.0]);
+    assert_eq!(column(&trace, "main.q"), [0.0, 0.0, 1.0, 1.0]);
+}
+
 /// In the second scan `r` is NULL: `got := r^` reads 0 and `r^ := got + 1` is dropped (`value`
 /// stays 8); the run goes on, and its end names the first NULL dereference.
 #[test]
