@@ -249,6 +249,32 @@ fn initial_values_of_references() {
     assert_eq!(column(&trace, "main.unset"), [1.0], "{trace}");
 }
 
+/// Hostile depth: 100,000 `REF_TO` in one type and 100,000 `^` in one access are one located
+/// error each (E0211, E0108), quickly, without a deep recursion or C that nests 100,000 calls.
+#[test]
+fn deep_references_are_bounded() {
+    let n = 100_000;
+    let types = format!(
+        "PROGRAM main\nVAR\n  r : {}INT;\nEND_VAR\nEND_PROGRAM\n",
+        "REF_TO ".repeat(n)
+    );
+    assert_eq!(
+        rejected_heads("deep_types.st", &types),
+        ["deep_types.st:3:7: error[E0211]: references to references nested more than 64 deep"]
+    );
+    let carets = "^".repeat(n);
+    let derefs = format!(
+        "PROGRAM main\nVAR\n  r : REF_TO INT;\n  x : INT;\nEND_VAR\nx := r{carets};\nr{carets} := 1;\nEND_PROGRAM\n"
+    );
+    assert_eq!(
+        rejected_heads("deep_derefs.st", &derefs),
+        [
+            "deep_derefs.st:6:71: error[E0108]: more than 64 `^` in one access",
+            "deep_derefs.st:7:66: error[E0108]: more than 64 `^` in one access",
+        ]
+    );
+}
+
 /// The C of references builds with `-std=c99 -Wall -Wextra -Werror` (the generated Makefile run
 /// with those flags), and the NULL scratch objects and `ladderc_deref` are in it.
 #[test]

@@ -918,6 +918,24 @@ impl<'s, 'd> Parser<'s, 'd> {
                 }
                 Tok::Caret => {
                     let t = self.bump();
+                    let derefs = accessors
+                        .iter()
+                        .filter(|a| matches!(a, Accessor::Deref(_)))
+                        .count();
+                    if derefs == crate::parser::MAX_TYPE_NESTING {
+                        // as deep as references may nest (`st::refs`): bounds the generated C,
+                        // which nests one call per `^`
+                        self.error_at(
+                            code::E0108,
+                            self.span(t.range.start, t.range.end),
+                            format!(
+                                "more than {} `^` in one access",
+                                crate::parser::MAX_TYPE_NESTING
+                            ),
+                            "references nest at most that deep: follow them in several statements",
+                        );
+                        return None;
+                    }
                     accessors.push(Accessor::Deref(self.span(t.range.start, t.range.end)));
                 }
                 _ => break,

@@ -107,6 +107,22 @@ impl RefTypes {
                 );
                 j = next;
             }
+            if let (Some(span), true) = (first, kinds.len() > crate::parser::MAX_TYPE_NESTING) {
+                // `REF_TO REF_TO ...` deeper than any type may nest: read as the type (no wrap)
+                refs.pending.push(
+                    Diagnostic::error(
+                        code::E0211,
+                        format!(
+                            "references to references nested more than {} deep",
+                            crate::parser::MAX_TYPE_NESTING
+                        ),
+                    )
+                    .at(span)
+                    .with_primary_label("the first of them")
+                    .with_hint("refer to a structure holding the next reference instead"),
+                );
+                continue;
+            }
             if let (Some(span), Some(target)) = (first, toks.get(j)) {
                 refs.at.insert(base + target.range.start, (kinds, span));
                 refs.initial_value(file, src, toks, j, base, &mut text);
@@ -173,6 +189,7 @@ impl RefTypes {
     /// reports the refused initial values.
     pub fn apply(mut self, unit: &mut CompilationUnit, diags: &mut Diagnostics) {
         if self.at.is_empty() {
+            self.report_left(diags);
             return;
         }
         for item in &mut unit.items {
