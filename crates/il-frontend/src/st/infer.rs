@@ -215,6 +215,12 @@ impl Env<'_> {
 
     /// The type a `REFERENCE TO T` stands for where it is used: `T` (any other type: itself).
     fn unreference(&self, t: TypeRef) -> TypeRef {
+        // written out, or through a TYPE alias (which only a program with a `REFERENCE TO` has):
+        // no copy of the type otherwise, this runs for every access
+        let aliased = matches!(t, TypeRef::Named(_)) && self.decls.has_reference_to();
+        if !aliased && !matches!(t, TypeRef::Ref { .. }) {
+            return t;
+        }
         match self.resolve(&t) {
             TypeRef::Ref {
                 kind: crate::ast::RefKind::Reference,

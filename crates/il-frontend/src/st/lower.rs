@@ -68,6 +68,9 @@ pub struct PouLowering<'d> {
     /// While set, a `REFERENCE TO` variable stands for itself, not for the variable it refers to
     /// (`r REF= x`, `__ISVALIDREF(r)`, see [`super::refs`]).
     raw_refs: bool,
+    /// Whether the POU or the program declares a `REFERENCE TO` anywhere: only then are accesses
+    /// looked at for the `^` they leave out.
+    reference_to: bool,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -185,6 +188,12 @@ impl<'d> PouLowering<'d> {
                 .collect(),
             types: RefCell::new(TypeCache::new()),
             raw_refs: false,
+            reference_to: decls.has_reference_to()
+                || pou.var_blocks.iter().any(|b| {
+                    b.vars
+                        .iter()
+                        .any(|v| super::refs::holds_reference_to(&v.ty))
+                }),
         }
     }
 
@@ -1346,7 +1355,20 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) -> Option<Operand> {
-        let expected = hint.map(|h| self.env().resolve(h));
+        // the context's type matters only for a literal `0` and for a variable where a `REFERENCE
+        // TO` may be expected (resolved only then: this runs for every operand)
+        let needs_context = match &e.kind {
+            ExprKind::Literal(Literal {
+                kind: LiteralKind::Int(0),
+                type_prefix: None,
+                ..
+            }) => true,
+            ExprKind::Place(_) => self.reference_to,
+            _ => false,
+        };
+        let expected = hint
+            .filter(|_| needs_context)
+            .map(|h| self.env().resolve(h));
         let place = match (&e.kind, &expected) {
             (ExprKind::Call { name, args }, _)
                 if super::refs::is_address_of(name) || name.is(super::refs::REF_ASSIGN) =>
@@ -1476,7 +1498,11 @@ impl<'d> PouLowering<'d> {
             })));
         }
         let mut accessors = Vec::new();
-        let derefs = self.env().implicit_derefs(p, self.raw_refs);
+        let derefs = if self.reference_to {
+            self.env().implicit_derefs(p, self.raw_refs)
+        } else {
+            Vec::new()
+        };
         for (k, a) in p.accessors.iter().enumerate() {
             if derefs.contains(&k) {
                 accessors.push(il::Accessor::Deref(p.span));
@@ -1527,7 +1553,11 @@ impl<'d> PouLowering<'d> {
             }
         };
         let mut accessors = Vec::new();
-        let derefs = self.env().implicit_derefs(p, self.raw_refs);
+        let derefs = if self.reference_to {
+            self.env().implicit_derefs(p, self.raw_refs)
+        } else {
+            Vec::new()
+        };
         for (k, a) in p.accessors.iter().enumerate() {
             if derefs.contains(&k) {
                 accessors.push(il::Accessor::Deref(p.span));

@@ -28,6 +28,22 @@ pub fn is_address_of(name: &crate::ast::Ident) -> bool {
     name.is("REF") || name.is("ADR")
 }
 
+/// Whether type `t` is or holds (as an array element, or referred to) a `REFERENCE TO`.
+pub fn holds_reference_to(t: &TypeRef) -> bool {
+    let mut t = t;
+    loop {
+        match t {
+            TypeRef::Ref {
+                kind: RefKind::Reference,
+                ..
+            } => return true,
+            TypeRef::Ref { target, .. } => t = target,
+            TypeRef::Array { element, .. } => t = element,
+            _ => return false,
+        }
+    }
+}
+
 /// The reference keywords blanked in one file: by the offset of the type text they stood before,
 /// the kinds outermost first (`REF_TO REF_TO INT` has two) and the span of the first keyword.
 #[derive(Debug, Default)]
