@@ -228,39 +228,21 @@ fn an_unknown_library_is_one_located_e1032_per_library() {
 // ------------------------------------------------------------------ 6. references and pointers
 
 #[test]
-fn reference_and_pointer_declarations_are_one_located_e0305_each_without_cascade() {
-    // REF_TO and POINTER TO are not compiled: one error per declaration, none for the body's
-    // REF(x), ADR(x), r^, NULL (the body is not compiled)
+fn reference_and_pointer_declarations_compile_and_run() {
+    // REF_TO and POINTER TO compile (issue #13, helper `refs`; before, one E0305 per declaration
+    // and the body was not compiled): `x` is 6 after the scan, and `rx^.a` on the NULL `rx` is
+    // the run-time report, not an error (`rs` is now `rx`: RS names the standard block, E1031) (`tests/tests/refs_run.rs` has the rest)
     let src = "TYPE S : STRUCT a : INT; END_STRUCT; END_TYPE\nPROGRAM main\nVAR\n  x : INT;\n  \
-               r : REF_TO INT;\n  p : POINTER TO INT;\n  rs : REF_TO S;\nEND_VAR\n  r := REF(x);\n  \
-               p := ADR(x);\n  r^ := 5;\n  IF r <> NULL THEN x := r^ + 1; END_IF;\n  rs^.a := 3;\n\
+               r : REF_TO INT;\n  p : POINTER TO INT;\n  rx : REF_TO S;\nEND_VAR\n  r := REF(x);\n  \
+               p := ADR(x);\n  r^ := 5;\n  IF r <> NULL THEN x := r^ + 1; END_IF;\n  rx^.a := 3;\n\
                END_PROGRAM\n";
     let dir = tempfile::tempdir().unwrap();
     let f = dir.path().join("refs.st");
     std::fs::write(&f, src).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .arg(&f)
-        .args(["--cycles", "1"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(1));
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    let heads: Vec<String> = stderr
-        .lines()
-        .filter(|l| l.contains("error["))
-        .map(|l| {
-            let l = l.rsplit('/').next().unwrap();
-            l.split_once(" (hint").map_or(l, |x| x.0).to_string()
-        })
-        .collect();
-    assert_eq!(
-        heads,
-        vec![
-            "refs.st:5:7: error[E0305]: `r`: references and pointers (`REF_TO`) are not supported",
-            "refs.st:6:7: error[E0305]: `p`: references and pointers (`POINTER TO`) are not supported",
-            "refs.st:7:8: error[E0305]: `rs`: references and pointers (`REF_TO`) are not supported",
-        ],
+    let (trace, stderr) = common::run_traced(&f, 1, "main.x");
+    assert_eq!(common::column(&trace, "main.x"), [6.0], "{trace}");
+    assert!(
+        stderr.contains("runtime: NULL reference dereferenced (first: rx^ in main"),
         "{stderr}"
     );
 }

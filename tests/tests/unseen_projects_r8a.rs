@@ -5,8 +5,9 @@
 //!   `T : INT (0..100) END_TYPE`): IEC 61131-3's grammar ends each type declaration with `;`, so it
 //!   is warning W0013, and the types work. Before: E0011 "expected `;` before `END_TYPE`".
 //! - **An XML POU whose interface declares `POINTER TO` / `REFERENCE TO`** (a CODESYS export):
-//!   one E0305 for the POU, naming the first such type (the others as labels), and the body is not
-//!   compiled, as for an ST file. Before: E3012 per declaration and a cascade from the body (`^`).
+//!   then one E0305 for the POU and the body not compiled; since the `refs` helper the body is
+//!   compiled and what stays refused (pointer arithmetic) is located. Before: E3012 per
+//!   declaration and a cascade from the body (`^`).
 //! - **Hierarchical direct addresses** (`%IX1.0.0`, `%IW0.0`, `%QW0.0.0.0`): each distinct one is
 //!   a slot of its own after the profile's area (see the c-backend README, "Hierarchical
 //!   addresses"); stimulus and trace name it by its text, and two variables at one address alias
@@ -99,24 +100,37 @@ fn only_the_semicolon_before_end_type_is_supplied() {
     );
 }
 
-/// The function block declares `pSamples : POINTER TO INT` and `total : REFERENCE TO DINT`, and its
-/// body dereferences the pointer: one E0305 at the first, naming both, placed in the POU; nothing
-/// from the body, nothing from the program that calls the block.
+/// The function block declares `pSamples : POINTER TO INT` and `total : REFERENCE TO DINT` (a
+/// VAR_IN_OUT), and its body steps the pointer with `SIZEOF`. Since the `refs` helper the body is
+/// compiled (`tests/tests/refs_run.rs`), and what CODESYS allows and ladderc refuses is one located
+/// error each: `SIZEOF` (pointer arithmetic), `ADR` of an array passed for a pointer to INT (typed
+/// pointers), a VAR_IN_OUT of a reference type. Before: one E0305 for the POU, its body not compiled.
 #[test]
 fn xml_pou_with_pointer_declarations_is_one_located_error() {
     let (code, lines) = check("codesys_pointer_fb.xml");
     assert_eq!(code, Some(1), "{lines:?}");
-    assert_eq!(lines.len(), 1, "{lines:?}");
-    let l = &lines[0];
-    assert!(
-        l.contains("codesys_pointer_fb.xml:14:21: error[E0305]"),
-        "{l}"
-    );
-    assert!(
-        l.contains("`FB_Average` declares `POINTER TO INT` and 1 more"),
-        "{l}"
-    );
-    assert!(l.contains("[POU `FB_Average`]"), "{l}");
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 3, "{lines:?}");
+    for (k, (at, what)) in [
+        (
+            "codesys_pointer_fb.xml:36:26: error[E1019]",
+            "`SIZEOF` is not supported [POU `FB_Average`]",
+        ),
+        (
+            "codesys_pointer_fb.xml:60:23: error[E1012]",
+            "pSamples of FB_Average is REF_TO INT, not REF_TO ARRAY [0..3] OF INT [POU `PLC_PRG`]",
+        ),
+        (
+            "codesys_pointer_fb.xml:60:58: error[E0305]",
+            "`total` of `FB_Average` is a VAR_IN_OUT of a reference type: not supported",
+        ),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        assert!(errors[k].contains(at), "{}", errors[k]);
+        assert!(errors[k].contains(what), "{}", errors[k]);
+    }
 }
 
 /// A pump started by a push button on remote I/O (`%IX1.0.0`, stop `%IX1.0.1`), its speed from an

@@ -70,6 +70,9 @@ typedef struct {
     uint16_t data[LADDERC_STRING_CAP + 1];
 } IEC_WSTRING;
 
+/* A reference (REF_TO, POINTER TO, REFERENCE TO): the address of its variable, or NULL. */
+typedef void *IEC_REF;
+
 /* ------------------------------------------------------------------ runtime state */
 #define LADDERC_ERR_DIV_ZERO 1u /* integer DIV or MOD by zero: result 0 */
 #define LADDERC_ERR_RANGE 2u    /* REAL to integer conversion out of range or NaN: saturated */
@@ -77,10 +80,12 @@ typedef struct {
 #define LADDERC_ERR_STRING 8u   /* string truncated to its capacity */
 #define LADDERC_ERR_STRPOS 16u  /* string function length or position out of range (ladderc_strings.c) */
 #define LADDERC_ERR_MUX 32u     /* MUX selector K outside 0..n-1: IN0 selected */
+#define LADDERC_ERR_NULL_REF 64u /* a NULL reference dereferenced: zero read, write dropped */
 
 extern uint32_t ladderc_errors;  /* sticky error flags, LADDERC_ERR_* */
 extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set before each cycle */
 extern uint64_t ladderc_cycle;   /* the current cycle number, from 0 */
+extern const char *ladderc_null_ref_site; /* where the first NULL reference was dereferenced */
 
 /* The process image (defined by the generated program, sizes from the target profile). */
 extern uint8_t ladderc_I[LADDERC_I_SIZE];
@@ -297,6 +302,17 @@ static inline IEC_LINT ladderc_abs_IEC_LINT(IEC_LINT a) { return a < 0 ? ladderc
 static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi) {
     if (i < lo || i > hi) { ladderc_errors |= LADDERC_ERR_BOUNDS; return 0; }
     return (size_t)((uint64_t)i - (uint64_t)lo);
+}
+
+/* A dereference `r^` of a reference (a `void *`): the variable it refers to, or for NULL the zeroed
+ * scratch object `scratch` of `n` bytes (so a read gives zero and a write is dropped) with
+ * LADDERC_ERR_NULL_REF set and the place of the first one kept. NULL is never dereferenced. */
+static inline void *ladderc_deref(void *p, void *scratch, size_t n, const char *site) {
+    if (p != NULL) return p;
+    if (!(ladderc_errors & LADDERC_ERR_NULL_REF)) ladderc_null_ref_site = site;
+    ladderc_errors |= LADDERC_ERR_NULL_REF;
+    memset(scratch, 0, n);
+    return scratch;
 }
 
 /* Edition 3 date functions: CONCAT_DATE(year, month, day), CONCAT_TOD(hour, minute, second, ms),

@@ -191,6 +191,8 @@ pub fn push_base(model: &Model, ty: &Type, out: &mut String) -> bool {
         Type::Enum(_) => out.push_str("IEC_DINT"),
         Type::Fb(FbType::Standard(f)) => out.push_str(std_fb(*f).0),
         Type::Fb(FbType::User(id)) => out.push_str(&mangle::fb(&model.pou(*id).name)),
+        // a reference: the address of its variable (see `emit::refs`)
+        Type::Ref(_) => out.push_str("IEC_REF"),
         Type::Error => return false,
     }
     true

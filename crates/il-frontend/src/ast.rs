@@ -135,6 +135,41 @@ pub enum TypeRef {
         /// From `(` to `)`.
         span: Span,
     },
+    /// A reference: `REF_TO INT` (IEC 61131-3 edition 3, 6.4.4.10), `POINTER TO INT` or
+    /// `REFERENCE TO INT` (CODESYS, TwinCAT). See [`RefKind`] for how the three differ.
+    Ref {
+        /// How the reference was written (what its uses mean).
+        kind: RefKind,
+        /// The type referred to.
+        target: Box<TypeRef>,
+        /// The whole type text, from the keyword to the end of the target type.
+        span: Span,
+    },
+}
+
+/// How a reference type was written. All three are one thing once compiled (the address of a
+/// variable, or NULL); they differ in the source: `REF_TO` and `POINTER TO` are read with `r^` and
+/// set with `REF(x)` / `ADR(x)`, a `REFERENCE TO` variable is read and written as the variable it
+/// refers to (the ST lowering adds the `^`) and is set with `r REF= x` or by passing `x` to it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum RefKind {
+    /// `REF_TO T` (edition 3).
+    RefTo,
+    /// `POINTER TO T` (CODESYS, TwinCAT).
+    Pointer,
+    /// `REFERENCE TO T` (CODESYS, TwinCAT): dereferenced where it is used.
+    Reference,
+}
+
+impl RefKind {
+    /// The keywords as written (`REF_TO`, `POINTER TO`, `REFERENCE TO`).
+    pub fn keyword(self) -> &'static str {
+        match self {
+            RefKind::RefTo => "REF_TO",
+            RefKind::Pointer => "POINTER TO",
+            RefKind::Reference => "REFERENCE TO",
+        }
+    }
 }
 
 impl TypeRef {
@@ -145,7 +180,8 @@ impl TypeRef {
             TypeRef::String { span, .. }
             | TypeRef::Array { span, .. }
             | TypeRef::Subrange { span, .. }
-            | TypeRef::Enum { span, .. } => *span,
+            | TypeRef::Enum { span, .. }
+            | TypeRef::Ref { span, .. } => *span,
         }
     }
 }
@@ -382,6 +418,9 @@ pub enum Accessor {
     Field(Ident),
     /// `[i, j]`: array subscripts, one per dimension.
     Index(Vec<Operand>),
+    /// `^`: the variable a reference or pointer refers to (edition 3 `r^`, CODESYS `p^`); the span is
+    /// the `^` (for a `REFERENCE TO` variable, the name: the lowering adds it).
+    Deref(Span),
 }
 
 /// The partial access a field name stands for (IEC 61131-3 3rd edition, 6.5.2.2 "partial access of ANY_BIT
@@ -440,6 +479,18 @@ pub enum Operand {
     /// An enumerated value written with its type, `Color#red` (a plain `red` parses as a `Var`; build one
     /// with [`Operand::enum_value`]).
     EnumValue(Box<EnumOperand>),
+    /// A reference value: `REF(x)` / `ADR(x)` (the address of variable `x`) or `NULL` (no variable).
+    Ref(Box<RefOperand>),
+}
+
+/// The payload of [`Operand::Ref`]: the address of a variable, or NULL.
+#[derive(Debug, Clone, Serialize)]
+pub struct RefOperand {
+    /// The variable referred to (`x` of `REF(x)`, an element or field too); `None` for `NULL` (and a
+    /// pointer set to `0`).
+    pub of: Option<VarRef>,
+    /// The whole `REF(x)` / `ADR(x)` / `NULL` text.
+    pub span: Span,
 }
 
 /// An enumerated value written with its type, `Color#red`: the payload of [`Operand::EnumValue`].
@@ -461,6 +512,7 @@ impl Operand {
             Operand::Var(v) => v.span,
             Operand::Address(a) => a.span,
             Operand::EnumValue(e) => e.span,
+            Operand::Ref(r) => r.span,
         }
     }
     /// A literal operand.
@@ -1028,7 +1080,7 @@ mod tests {
             .iter()
             .filter_map(|a| match a {
                 Accessor::Field(f) => Some(f.name.clone()),
-                Accessor::Index(_) => None,
+                Accessor::Index(_) | Accessor::Deref(_) => None,
             })
             .collect();
         assert_eq!(names, ["ax", "bx"]);

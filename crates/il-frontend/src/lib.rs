@@ -106,17 +106,25 @@ pub fn parse_var_blocks(
         return Vec::new();
     };
     let text = format!("{HEAD}{src}\nEND_PROGRAM\n");
-    match parser::run(file, &text, start, Tok::UnitStart, diags, Vec::new()) {
-        Some(Parsed::Unit(top)) => top
-            .items
-            .into_iter()
-            .flat_map(|item| match item {
-                LibraryElement::Pou(p) => p.var_blocks,
-                _ => Vec::new(),
-            })
-            .collect(),
-        _ => Vec::new(),
-    }
+    // `REF_TO` / `POINTER TO` / `REFERENCE TO` (CODESYS vendor texts): see `st::refs`
+    let (toks, _) = st::lexer::lex(&text);
+    let (blanked, mut refs) = st::refs::RefTypes::blank_keywords_at(file, &text, &toks, start);
+    let text = blanked.unwrap_or(text);
+    let mut blocks: Vec<ast::VarBlock> =
+        match parser::run(file, &text, start, Tok::UnitStart, diags, Vec::new()) {
+            Some(Parsed::Unit(top)) => top
+                .items
+                .into_iter()
+                .flat_map(|item| match item {
+                    LibraryElement::Pou(p) => p.var_blocks,
+                    _ => Vec::new(),
+                })
+                .collect(),
+            _ => Vec::new(),
+        };
+    refs.apply_to_method(&mut blocks, None);
+    refs.report_left(diags);
+    blocks
 }
 
 /// Parses an instruction list alone (e.g. the text of a PLCopen XML `<IL>` element). `base_offset` is the

@@ -222,6 +222,13 @@ fn formal_args(out: &mut String, args: &[FormalArg]) {
     out.push(')');
 }
 
+/// A variable access as IL text (`s.a[i]^.b`), for messages.
+pub fn var_ref_text(v: &VarRef) -> String {
+    let mut s = String::new();
+    var_ref(&mut s, v);
+    s
+}
+
 fn var_ref(out: &mut String, v: &VarRef) {
     out.push_str(&v.base.name);
     for a in &v.accessors {
@@ -235,6 +242,7 @@ fn var_ref(out: &mut String, v: &VarRef) {
                 operand_list(out, ix);
                 out.push(']');
             }
+            Accessor::Deref(_) => out.push('^'),
         }
     }
 }
@@ -248,6 +256,14 @@ pub fn operand(out: &mut String, o: &Operand) {
         Operand::EnumValue(e) => {
             let _ = write!(out, "{}#{}", e.type_name.name, e.value.name);
         }
+        Operand::Ref(r) => match &r.of {
+            Some(v) => {
+                out.push_str("REF(");
+                var_ref(out, v);
+                out.push(')');
+            }
+            None => out.push_str("NULL"),
+        },
     }
 }
 
@@ -460,6 +476,11 @@ fn var_decl(out: &mut String, d: &VarDecl, level: usize) {
 fn type_ref(out: &mut String, t: &TypeRef) {
     match t {
         TypeRef::Named(n) => out.push_str(&n.name),
+        TypeRef::Ref { kind, target, .. } => {
+            out.push_str(kind.keyword());
+            out.push(' ');
+            type_ref(out, target);
+        }
         TypeRef::String { wide, length, .. } => {
             out.push_str(if *wide { "WSTRING" } else { "STRING" });
             if let Some(n) = length {

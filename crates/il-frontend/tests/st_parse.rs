@@ -57,6 +57,7 @@ fn place(p: &Place) -> String {
                 "[{}]",
                 ix.iter().map(expr).collect::<Vec<_>>().join(", ")
             )),
+            Accessor::Deref(_) => s.push('^'),
         }
     }
     s

@@ -28,9 +28,6 @@ pub struct Ctx<'a> {
     /// The actions of the POUs read so far, each lowered on its own (for calls from other POUs:
     /// `il_frontend::actions::link`); the unit gets them at its end.
     pub actions: Vec<il_frontend::ast::Action>,
-    /// While a POU's interface (and its methods') are read: the reference and pointer types met
-    /// (span, as written), each read as the type it points to; `None` elsewhere (E3012 there).
-    pub references: Option<Vec<(Span, String)>>,
     /// The `<configVariable>` entries of the configurations read so far (VAR_CONFIG), applied
     /// once every input file is read (`il_frontend::st::file::apply_var_config`).
     pub var_config: Vec<il_frontend::st::file::ConfigEntry>,
@@ -79,7 +76,6 @@ impl<'a> Ctx<'a> {
             constants: HashMap::new(),
             local_constants: HashMap::new(),
             actions: Vec::new(),
-            references: None,
             var_config: Vec::new(),
         }
     }

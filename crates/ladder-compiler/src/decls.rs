@@ -90,19 +90,23 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 };
                 Some(TypeRef::Named(Ident::new(name, ctx.attr_span(t, "name"))))
             }
-            Some(n) if is_reference(n) => {
+            Some(n) if is_reference(n).is_some() => {
+                // `REFERENCE TO X` / `POINTER TO X` (CODESYS, TwinCAT)
                 let span = ctx.attr_span(t, "name");
                 let n = n.trim();
-                if let Some(refs) = ctx.references.as_mut() {
-                    // `REFERENCE TO X` / `POINTER TO X` read as `X` (see `Ctx::references`)
-                    refs.push((span, n.to_string()));
-                    let base = n.split_whitespace().nth(2).unwrap_or("");
-                    let base = elementary(&base.to_ascii_uppercase()).unwrap_or(base);
-                    return values::is_ident(base).then(|| TypeRef::Named(Ident::new(base, span)));
+                let kind = is_reference(n)?;
+                let base = n.split_whitespace().nth(2).unwrap_or("");
+                let base = elementary(&base.to_ascii_uppercase()).unwrap_or(base);
+                if n.split_whitespace().count() != 3 || !values::is_ident(base) {
+                    let msg = format!("type `{n}` is not supported here: a reference or pointer names one type (`POINTER TO INT`, `REFERENCE TO Motor`)");
+                    ctx.error(code::E3012, span, msg);
+                    return None;
                 }
-                let msg = format!("type `{n}` is not supported here: {REFERENCE}");
-                ctx.error(code::E3012, span, msg);
-                None
+                Some(TypeRef::Ref {
+                    kind,
+                    target: Box::new(TypeRef::Named(Ident::new(base, span))),
+                    span,
+                })
             }
             // a type written out as the name (`ARRAY[1..N] OF T`, `STRING[20]`), as a script may
             // generate it for Beremiz, which copies the text into its ST: named in the message
@@ -195,18 +199,15 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 }
             }
         }
-        "pointer" if ctx.references.is_some() => {
-            // `<pointer><baseType>X</baseType></pointer>` read as `X` (see `Ctx::references`)
-            let base = t.child("baseType").and_then(|b| b.children.first());
-            let written = match base {
-                Some(b) if b.name() == "derived" => b.attr("name").unwrap_or("").trim().to_string(),
-                Some(b) => b.name().to_ascii_uppercase(),
-                None => String::new(),
-            };
-            if let Some(refs) = ctx.references.as_mut() {
-                refs.push((span, format!("POINTER TO {written}")));
-            }
-            type_element(ctx, base?)
+        "pointer" => {
+            // `<pointer><baseType>X</baseType></pointer>` (PLCopen TC6 XML 2.01)
+            let base = t.child("baseType").and_then(|b| b.children.first())?;
+            let target = type_element(ctx, base)?;
+            Some(TypeRef::Ref {
+                kind: il_frontend::ast::RefKind::Pointer,
+                target: Box::new(target),
+                span,
+            })
         }
         other => {
             ctx.error(
@@ -220,13 +221,17 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
 }
 
 /// CODESYS/TwinCAT write references and pointers as a derived name (`REFERENCE TO Vehiculo`,
-/// `POINTER TO INT`): what `<pointer>` is, E3012.
-fn is_reference(name: &str) -> bool {
+/// `POINTER TO INT`): which of the two, or `None` for another name.
+fn is_reference(name: &str) -> Option<il_frontend::ast::RefKind> {
     let up = name.trim().to_ascii_uppercase();
-    up.starts_with("REFERENCE TO ") || up.starts_with("POINTER TO ")
+    if up.starts_with("REFERENCE TO ") {
+        Some(il_frontend::ast::RefKind::Reference)
+    } else if up.starts_with("POINTER TO ") {
+        Some(il_frontend::ast::RefKind::Pointer)
+    } else {
+        None
+    }
 }
-
-const REFERENCE: &str = "references and pointers are not compiled";
 
 /// `<initialValue>`: simpleValue, arrayValue, structValue.
 /// `ty` is the declared type: a string variable's initial value written without its type's quotes (as v1.0

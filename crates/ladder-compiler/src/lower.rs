@@ -477,6 +477,10 @@ impl<'i> BodyLowering<'i> {
                     _ => return None,
                 },
                 Accessor::Field(f) => self.field_type(&ty, f)?,
+                Accessor::Deref(_) => match ty {
+                    TypeRef::Ref { target, .. } => *target,
+                    _ => return None,
+                },
             };
         }
         Some(ty)
@@ -943,6 +947,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 }
             }
             Operand::Var(v) => self.pou.var_type(v).map(Ty::Known).unwrap_or(Ty::Unknown),
+            Operand::Ref(_) => Ty::Unknown,
             Operand::Address(a) => Ty::Known(TypeRef::Named(Ident::new(
                 match a.size {
                     AddressSize::Bit => "BOOL",

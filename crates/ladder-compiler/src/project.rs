@@ -139,28 +139,18 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     // CODESYS exports a function block's METHODs in its vendor data: their hidden variables are
     // part of the block's interface (other POUs read a method's result)
     let mut methods: HashMap<String, Vec<il_frontend::st::file::PendingMethod>> = HashMap::new();
-    // POUs that declare a reference or pointer: their bodies (and methods') are not compiled
-    let mut by_reference: HashSet<String> = HashSet::new();
+    // POUs that inherit in CODESYS's vendor data: their bodies (and methods') are not compiled
+    let mut not_compiled: HashSet<String> = HashSet::new();
     for p in &pou_els {
-        ctx.references = Some(Vec::new());
         let header = pou_header(ctx, p);
         let mut ms = match &header {
             Some(h) => xml_methods(ctx, p, h),
             None => Vec::new(),
         };
-        let refs = ctx.references.take().unwrap_or_default();
         if let Some(mut h) = header {
             if xml_inheritance(ctx, p, &h) {
                 // EXTENDS / IMPLEMENTS in CODESYS's vendor data (E0303): not compiled
-                by_reference.insert(h.name.key());
-                for m in &mut ms {
-                    m.text.clear();
-                }
-            }
-            if !refs.is_empty() {
-                report_references(ctx, &h.name.name, &refs);
-                by_reference.insert(h.name.key());
-                // a method stays callable (its interface is read) and does nothing
+                not_compiled.insert(h.name.key());
                 for m in &mut ms {
                     m.text.clear();
                 }
@@ -234,7 +224,7 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             pou.var_blocks.extend(blocks);
         }
         let is_used = used.as_ref().is_none_or(|u| u.contains(&pou.name.key()));
-        let (stmts, hidden) = if by_reference.contains(&pou.name.key()) {
+        let (stmts, hidden) = if not_compiled.contains(&pou.name.key()) {
             (Vec::new(), Vec::new())
         } else {
             match body::lower_pou_body(ctx, &index, el, &pou, is_used) {
@@ -587,36 +577,6 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
         body: Vec::new(),
         span,
     })
-}
-
-/// E0305, once for POU `pou` whose interface (or a method's) declares references or pointers
-/// (`refs`: each type as written, where): the first is the primary label, the others secondary. Each
-/// was read as the type it points to, so calls from other POUs still check; the body is not compiled
-/// (its `^`, `ADR` and pointer arguments would each be an error), as for an ST file.
-fn report_references(ctx: &mut Ctx, pou: &str, refs: &[(il_frontend::Span, String)]) {
-    let Some((first, written)) = refs.first() else {
-        return;
-    };
-    let more = match refs.len() {
-        1 => String::new(),
-        n => format!(" and {} more", n - 1),
-    };
-    let mut d = Diagnostic::error(
-        code::E0305,
-        format!("`{pou}` declares `{written}`{more}: references and pointers are not supported, its body is not compiled"),
-    )
-    .at(*first)
-    .with_primary_label("reference type");
-    for (span, w) in refs.iter().skip(1) {
-        d = d.with_label(*span, format!("`{w}`"));
-    }
-    ctx.report(
-        d.with_hint("pass the variable as VAR_IN_OUT, or use it directly")
-            .with_xml(XmlContext {
-                pou: Some(pou.to_string()),
-                ..Default::default()
-            }),
-    );
 }
 
 /// The return type and variable lists of an `<interface>` (of a POU or a CODESYS method).

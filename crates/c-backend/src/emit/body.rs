@@ -587,6 +587,12 @@ impl<'a> Gen<'a> {
                         " 0))",
                     ]));
                 }
+                if let (Type::Ref(_), "EQ" | "NE") = (aty, name) {
+                    // references: the same variable, or both NULL (equality of pointers is
+                    // defined in C for any two valid pointers or NULL)
+                    let c = if name == "EQ" { "==" } else { "!=" };
+                    return Some(crate::cat(&["((IEC_BOOL)((", a, ") ", c, " (", v, ")))"]));
+                }
                 let e = match aty {
                     Type::Enum(_) => E::Dint,
                     t => match t.elementary() {

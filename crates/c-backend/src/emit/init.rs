@@ -40,6 +40,8 @@ impl Gen<'_> {
             },
             Type::Subrange { lower, upper, .. } => **lower > 0 || **upper < 0,
             Type::Fb(FbType::User(_)) => true,
+            // NULL need not be all zero bits in C
+            Type::Ref(_) => true,
             _ => false,
         }
     }
@@ -55,6 +57,9 @@ impl Gen<'_> {
     ) {
         let pad = "    ".repeat(indent);
         match (ty, init) {
+            (Type::Ref(_), _) => {
+                let _ = writeln!(out, "{pad}{lv} = NULL;");
+            }
             (Type::Fb(fb), init) => {
                 match fb {
                     FbType::Standard(f) => {

@@ -15,6 +15,7 @@ mod hier;
 mod init;
 mod method;
 mod overlaps;
+mod refs;
 mod scan;
 mod scope;
 mod split;
@@ -69,6 +70,8 @@ pub struct Gen<'a> {
     /// Flat addresses outside their area (E2001), by the diagnostic's span: the area (0 %I, 1 %Q,
     /// 2 %M), the bytes the address needs and its text (see [`Gen::fold_outside_area`]).
     outside_area: HashMap<Option<Span>, (usize, u64, String)>,
+    /// The scratch objects of NULL dereferences (see `refs`): (C type, declaration).
+    pub(super) null_refs: Vec<(String, String)>,
 }
 
 impl<'a> Gen<'a> {
@@ -173,6 +176,7 @@ pub fn generate(
         motion: ext.motion.clone(),
         hier: hier::Slots::default(),
         outside_area: HashMap::new(),
+        null_refs: Vec::new(),
     };
     g.check_embedded(opts);
     g.check_methods();
@@ -585,6 +589,8 @@ impl<'a> Gen<'a> {
         if let Some(m) = &self.motion {
             c.push_str(&m.declarations());
         }
+        // the scratch objects of NULL dereferences go here once the bodies are written
+        let scratch_at = c.len();
         self.method_prototypes(c);
         let mut n = 0;
         for u in units {
@@ -599,6 +605,9 @@ impl<'a> Gen<'a> {
         }
         self.method_definitions(c);
         self.scan(units, c);
+        if !self.null_refs.is_empty() {
+            c.insert_str(scratch_at, &self.null_scratch_decls());
+        }
     }
 
     /// Declarations of the global variables (free, configuration, resource).

@@ -373,7 +373,7 @@ impl Gen<'_> {
             return None;
         };
         let mut place = base?;
-        for acc in r.accessors.iter().skip(skip) {
+        for (at, acc) in r.accessors.iter().enumerate().skip(skip) {
             if let Accessor::Field(f) = acc {
                 if let Some((size, index)) = il_frontend::ast::partial_access(&f.name) {
                     // `x.3`, `x.%B1`: sema checked the type and the range
@@ -415,6 +415,7 @@ impl Gen<'_> {
             place = match acc {
                 Accessor::Field(f) => self.field(&lv, &ty, f)?,
                 Accessor::Index(idx) => self.index(scope, &lv, &ty, idx, r.span)?,
+                Accessor::Deref(span) => self.deref_place(scope, &lv, &ty, r, at, *span)?,
             };
         }
         Some(place)
@@ -534,6 +535,18 @@ impl Gen<'_> {
                 .type_by_name(&e.type_name.name)
                 .map(Type::Enum)
                 .unwrap_or(Type::Error),
+            Operand::Ref(r) => match &r.of {
+                None => context
+                    .filter(|c| matches!(c, Type::Ref(_)))
+                    .cloned()
+                    .unwrap_or(Type::Ref(Box::new(Type::Error))),
+                Some(v) => {
+                    self.quiet += 1;
+                    let t = self.place(scope, v).map(|p| p.ty().clone());
+                    self.quiet -= 1;
+                    t.map_or(Type::Error, |t| Type::Ref(Box::new(t)))
+                }
+            },
             Operand::Literal(l) => {
                 if let Some(p) = &l.type_prefix {
                     if let Some(e) = Elementary::from_name(&p.name) {
@@ -698,6 +711,7 @@ impl Gen<'_> {
     pub fn value(&mut self, scope: &Scope, op: &Operand, want: &Type) -> Option<String> {
         match op {
             Operand::Literal(l) => self.literal(l, want),
+            Operand::Ref(r) => self.reference_value(scope, r),
             Operand::Address(a) => {
                 let e = il_frontend::sema::Location::of(a).elementary();
                 match self.locate(a, None) {

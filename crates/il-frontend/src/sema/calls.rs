@@ -58,7 +58,7 @@ impl Body<'_, '_> {
                 Some(ParamTy::Own(c)) => {
                     let n = self.norm(ty);
                     let ok = match &n {
-                        Ty::Known(t) => c.contains(t),
+                        Ty::Known(t) => super::refs::class_admits(f.name, c, t),
                         Ty::Lit(v) => {
                             if self.lits.is_real(*v) {
                                 c.accepts_real_literal()
@@ -118,12 +118,20 @@ impl Body<'_, '_> {
             };
             match common {
                 Some(t) => {
-                    if !class.contains(&t) {
+                    if !super::refs::class_admits(f.name, class, &t) {
                         let tn = self.a.type_name(&t);
                         let span = known
                             .iter()
-                            .find(|k| !class.contains(&k.0))
+                            .find(|k| !super::refs::class_admits(f.name, class, &k.0))
                             .map_or(at, |k| k.1);
+                        if matches!(t, Type::Ref(_)) {
+                            self.pointer_arithmetic(f.name, &tn, span);
+                            return Inst {
+                                name: f.name,
+                                t: Ty::ERROR,
+                                result: fixed_result(Ty::ERROR),
+                            };
+                        }
                         self.a
                             .error(
                                 code::E1004,
@@ -342,6 +350,16 @@ impl Body<'_, '_> {
                     )
                     .label("a function block, program or FB instance")
                     .hint("call FB instances with CAL inst(...)");
+            } else if name.is("SIZEOF") {
+                // CODESYS/TwinCAT: sizes in bytes, for pointer arithmetic and MEMCPY (refused):
+                // its argument (often a type name) is not checked
+                self.a
+                    .error(code::E1019, name.span, "`SIZEOF` is not supported")
+                    .label("a CODESYS/TwinCAT operator")
+                    .hint("ladderc refuses pointer arithmetic and MEMCPY, what SIZEOF serves: index an array (`p^[i]`, `REF(buffer[i])`) and assign whole variables instead");
+                st.cr.fresh = None;
+                st.cr.ty = Some(Ty::ERROR);
+                return;
             } else {
                 self.a
                     .error(code::E1019, name.span, format!("unknown function `{}`", name.name))
@@ -1054,6 +1072,9 @@ impl Body<'_, '_> {
         };
         match (fa.dir, pdir) {
             (ArgDir::Input, ParamDir::Input | ParamDir::InOut) => {
+                if pdir == ParamDir::InOut && matches!(pty, Type::Ref(_)) {
+                    self.in_out_reference(&pname, callee, fa.value.span());
+                }
                 let t = self.read_operand(&fa.value);
                 let s = fa.value.span();
                 let (pn, cn) = (pname.clone(), callee.to_string());

@@ -383,6 +383,10 @@ impl Analyzer<'_> {
     pub(crate) fn resolve_type(&mut self, tr: &TypeRef) -> Type {
         match tr {
             TypeRef::Named(n) => self.resolve_named_type(n),
+            TypeRef::Ref { target, .. } => match self.resolve_type(target) {
+                Type::Error => Type::Error,
+                t => Type::Ref(Box::new(t)),
+            },
             TypeRef::String { wide, length, .. } => Type::String {
                 wide: *wide,
                 len: length.unwrap_or(DEFAULT_STRING_LEN),

@@ -14,6 +14,7 @@ pub mod model;
 pub mod nesting;
 mod places;
 mod program_calls;
+mod refs;
 pub mod stdlib;
 pub mod typing;
 

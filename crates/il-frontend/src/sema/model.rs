@@ -413,6 +413,10 @@ pub enum Type {
     },
     /// An FB instance.
     Fb(FbType),
+    /// A reference to a variable of the boxed type (`REF_TO T`, `POINTER TO T`, `REFERENCE TO T`): in C
+    /// the variable's address, or NULL. NULL itself (`NULL`, a pointer's `0`) is a reference to
+    /// [`Type::Error`], which fits every reference type.
+    Ref(Box<Type>),
     /// Stands for a type sema could not determine (a diagnostic was reported); silences follow-on errors.
     Error,
 }
@@ -460,6 +464,7 @@ impl Type {
                 upper: upper.clone(),
             },
             Type::Fb(f) => Type::Fb(*f),
+            Type::Ref(t) => Type::Ref(t.clone()),
             Type::Error => Type::Error,
         }
     }
@@ -492,6 +497,7 @@ impl Type {
                 },
             ) => base == base2 && lower == lower2 && upper == upper2,
             (Type::Fb(a), Type::Fb(b)) => a == b,
+            (Type::Ref(a), Type::Ref(b)) => a == b,
             (Type::Error, Type::Error) => true,
             _ => false,
         }
@@ -1715,6 +1721,8 @@ impl Model {
                 .get(id.0 as usize)
                 .map(|p| p.name.clone())
                 .unwrap_or_else(|| "?".into()),
+            Type::Ref(t) if t.is_error() => "NULL".into(),
+            Type::Ref(t) => format!("REF_TO {}", self.type_name(t)),
             Type::Error => "<error>".into(),
         }
     }

@@ -60,6 +60,7 @@ impl Body<'_, '_> {
             Operand::Var(v) => Ty::Known(self.resolve_var(v).ty),
             Operand::Address(a) => Ty::Known(Type::Elementary(Location::of(a).elementary())),
             Operand::EnumValue(e) => Ty::Known(self.enum_value(&e.type_name, &e.value)),
+            Operand::Ref(r) => self.reference_operand(r),
         }
     }
 
@@ -152,7 +153,7 @@ impl Body<'_, '_> {
                 }
                 Type::Elementary(Location::of(a).elementary())
             }
-            Operand::Literal(_) | Operand::EnumValue(_) => {
+            Operand::Literal(_) | Operand::EnumValue(_) | Operand::Ref(_) => {
                 self.a
                     .error(
                         code::E1026,
@@ -209,7 +210,7 @@ impl Body<'_, '_> {
             ReadOnly::FbOutput { at } => {
                 let param = match &v.accessors[at] {
                     Accessor::Field(f) => f.name.clone(),
-                    Accessor::Index(_) => String::new(),
+                    Accessor::Index(_) | Accessor::Deref(_) => String::new(),
                 };
                 (
                     code::E1015,
@@ -411,6 +412,12 @@ impl Body<'_, '_> {
                     place = Place {
                         ty: element,
                         read_only: place.read_only,
+                    };
+                }
+                Accessor::Deref(_) => {
+                    place = match self.deref(place, v, at) {
+                        Some(p) => p,
+                        None => return Place::error(),
                     };
                 }
             }
@@ -1056,6 +1063,7 @@ fn path_text(v: &VarRef, upto: usize) -> String {
                 p.push_str(&f.name);
             }
             Accessor::Index(_) => p.push_str("[..]"),
+            Accessor::Deref(_) => p.push('^'),
         }
     }
     p

@@ -55,6 +55,9 @@ pub fn assignable(from: &Type, to: &Type) -> bool {
                 element: eb,
             },
         ) => da.len() == db.len() && da.iter().zip(db).all(|(a, b)| a.len() == b.len()) && ea == eb,
+        // NULL into any reference; otherwise only a reference to the same type
+        (Type::Ref(a), Type::Ref(b)) => a.is_error() || a == b,
+        (Type::Ref(_), _) | (_, Type::Ref(_)) => false,
         _ => match (from.elementary(), to.elementary()) {
             (Some(f), Some(t)) => widens(f, t),
             _ => false,

@@ -150,6 +150,8 @@ pub enum Accessor {
     Field(Ident),
     /// `[i, j + 1]`: index expressions.
     Index(Vec<Expr>),
+    /// `^`: the variable a reference or pointer refers to (the span of the `^`).
+    Deref(crate::Span),
 }
 
 /// One call argument: `x` (non-formal), `IN := x`, `Q => y`, `NOT Q => y`.

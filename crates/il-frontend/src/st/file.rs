@@ -15,8 +15,9 @@ use crate::{FileId, Span};
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
 use std::ops::Range;
 
+use super::qualifiers::library_qualifiers;
 pub use super::qualifiers::PROVIDED_LIBRARIES;
-use super::qualifiers::{library_qualifiers, reference_declarations};
+use super::refs::RefTypes;
 use super::var_config::var_config_blocks;
 pub use super::var_config::{apply_var_config, ConfigEntry};
 
@@ -746,7 +747,7 @@ pub fn parse_text(
         }
     }
     let (unqualified, unreferenced, unlisted, uninitialised);
-    let mut references = Vec::new();
+    let mut references = RefTypes::default();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
     let lists_blanked = blanked_lists.is_some();
@@ -768,7 +769,9 @@ pub fn parse_text(
             }
             None => src,
         };
-        let src = match reference_declarations(file, src, &toks, diags, &mut references) {
+        let (blanked, refs) = RefTypes::blank_keywords(file, src, &toks);
+        references = refs;
+        let src = match blanked {
             Some(t) => {
                 unreferenced = t;
                 (toks, problems) = lex(&unreferenced);
@@ -965,14 +968,6 @@ pub fn parse_text(
             blank(&mut text, p.body.clone());
             continue;
         }
-        if references
-            .iter()
-            .any(|&k| p.name_range.end <= k && k < p.body.start)
-        {
-            // a reference or pointer declaration (E0305): the body, which uses it, is not compiled
-            blank(&mut text, p.body.clone());
-            continue;
-        }
         if p.sfc.is_some() {
             pending.push(PendingBody {
                 file,
@@ -1096,11 +1091,16 @@ pub fn parse_text(
                         }
                         _ => &mut *diags,
                     };
-                    methods.push(pending_method(file, src, m, sink));
+                    let mut pm = pending_method(file, src, m, sink);
+                    references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+                    methods.push(pm);
                     blank(&mut body, m.whole.clone());
                 }
                 for pr in &p.properties {
-                    methods.extend(super::property::pending_accessors(file, src, pr, diags));
+                    for mut pm in super::property::pending_accessors(file, src, pr, diags) {
+                        references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+                        methods.push(pm);
+                    }
                     blank(&mut body, pr.whole.clone());
                 }
                 if let Some(super::inherit::Oop::Block(b)) = &mut oop {
@@ -1143,7 +1143,8 @@ pub fn parse_text(
         blank(&mut text, r.clone());
     }
     let mut local = Diagnostics::new();
-    let unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    references.apply(&mut unit, &mut local);
     match unclosed {
         Some(at) => diags.extend(local.into_vec().into_iter().filter(|d| {
             !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))

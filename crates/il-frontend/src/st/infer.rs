@@ -193,16 +193,94 @@ impl Env<'_> {
                 elem_ref(e, a.span)
             }
         };
+        // a `REFERENCE TO` reads as the variable it refers to (the lowering adds the `^`)
         for acc in p.accessors.iter().skip(skip) {
+            if !matches!(acc, Accessor::Deref(_)) {
+                t = self.unreference(t);
+            }
             t = match acc {
                 Accessor::Field(f) => self.member(&t, f)?,
                 Accessor::Index(_) => match self.resolve(&t) {
                     TypeRef::Array { element, .. } => *element,
                     _ => return None,
                 },
+                Accessor::Deref(_) => match self.resolve(&t) {
+                    TypeRef::Ref { target, .. } => *target,
+                    _ => return None,
+                },
             };
         }
-        Some(t)
+        Some(self.unreference(t))
+    }
+
+    /// The type a `REFERENCE TO T` stands for where it is used: `T` (any other type: itself).
+    fn unreference(&self, t: TypeRef) -> TypeRef {
+        // written out, or through a TYPE alias (which only a program with a `REFERENCE TO` has):
+        // no copy of the type otherwise, this runs for every access
+        let aliased = matches!(t, TypeRef::Named(_)) && self.decls.has_reference_to();
+        if !aliased && !matches!(t, TypeRef::Ref { .. }) {
+            return t;
+        }
+        match self.resolve(&t) {
+            TypeRef::Ref {
+                kind: crate::ast::RefKind::Reference,
+                target,
+                ..
+            } => *target,
+            _ => t,
+        }
+    }
+
+    /// Where the `^` of each `REFERENCE TO` in place `p` goes (the source leaves it out): before
+    /// written accessor `k` for each `k` returned, `p.accessors.len()` meaning after the last one.
+    /// With `raw_last`, a reference the place ends with stands for itself (`r REF= x`,
+    /// `__ISVALIDREF(r)`).
+    pub fn implicit_derefs(&self, p: &Place, raw_last: bool) -> Vec<usize> {
+        let mut out = Vec::new();
+        let PlaceBase::Name(n) = &p.base else {
+            return out;
+        };
+        let (mut t, skip) = match self.var_type(n) {
+            Some(t) => (t, 0),
+            None => match (self.decls.global_lists.get(&n.key()), p.accessors.first()) {
+                (Some(list), Some(Accessor::Field(m))) => match list.get(&m.key()) {
+                    Some(t) => (t.clone(), 1),
+                    None => return out,
+                },
+                _ => return out,
+            },
+        };
+        let len = p.accessors.len();
+        for k in skip..=len {
+            let next = p.accessors.get(k);
+            let reference = matches!(
+                self.resolve(&t),
+                TypeRef::Ref {
+                    kind: crate::ast::RefKind::Reference,
+                    ..
+                }
+            );
+            if reference && !matches!(next, Some(Accessor::Deref(_))) && !(raw_last && k == len) {
+                out.push(k);
+                t = self.unreference(t);
+            }
+            t = match next {
+                None => break,
+                Some(Accessor::Field(f)) => match self.member(&t, f) {
+                    Some(m) => m,
+                    None => break,
+                },
+                Some(Accessor::Index(_)) => match self.resolve(&t) {
+                    TypeRef::Array { element, .. } => *element,
+                    _ => break,
+                },
+                Some(Accessor::Deref(_)) => match self.resolve(&t) {
+                    TypeRef::Ref { target, .. } => *target,
+                    _ => break,
+                },
+            };
+        }
+        out
     }
 
     /// Whether `name` is an FB instance of the POU (a variable whose type is an FB type).
@@ -342,6 +420,26 @@ impl Env<'_> {
             if p.kind == PouKind::Function {
                 return p.ret.clone().map_or(Ty::Unknown, Ty::Known);
             }
+        }
+        // references (see `super::refs`): `REF(x)` / `ADR(x)` refer to `x`, `__ISVALIDREF(r)` is BOOL
+        if super::refs::is_address_of(name) {
+            let target = match args {
+                [a] => match &a.value.kind {
+                    ExprKind::Place(p) => self.place_type(p),
+                    _ => None,
+                },
+                _ => None,
+            };
+            return target.map_or(Ty::Unknown, |t| {
+                Ty::Known(TypeRef::Ref {
+                    kind: crate::ast::RefKind::RefTo,
+                    target: Box::new(t),
+                    span,
+                })
+            });
+        }
+        if name.is(super::refs::IS_VALID_REF) {
+            return Ty::Known(elem_ref(Elementary::Bool, span));
         }
         // TRUNC is ANY_REAL to ANY_INT (IEC 61131-3 edition 2): its integer type is its context's,
         // as matiec types it (`i := TRUNC(r)` is TRUNC to INT); the lowering writes `TRUNC_INT`

@@ -652,6 +652,7 @@ fn type_key(t: &TypeRef) -> String {
             let v: Vec<String> = values.iter().map(Ident::key).collect();
             format!("({})", v.join(","))
         }
+        TypeRef::Ref { kind, target, .. } => format!("{kind:?} TO {}", type_key(target)),
     }
 }
 

@@ -73,6 +73,12 @@ pub struct PouLowering<'d> {
     types: RefCell<TypeCache>,
     /// Nesting of deferred operators' lists being lowered (`AND( ...`): 0 where jumps may stand.
     nested: u32,
+    /// While set, a `REFERENCE TO` variable stands for itself, not for the variable it refers to
+    /// (`r REF= x`, `__ISVALIDREF(r)`, see [`super::refs`]).
+    raw_refs: bool,
+    /// Whether the POU or the program declares a `REFERENCE TO` anywhere: only then are accesses
+    /// looked at for the `^` they leave out.
+    reference_to: bool,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -198,6 +204,13 @@ impl<'d> PouLowering<'d> {
                 .any(|m| super::property::is_accessor(&m.name)),
             types: RefCell::new(TypeCache::new()),
             nested: 0,
+            raw_refs: false,
+            reference_to: decls.has_reference_to()
+                || pou.var_blocks.iter().any(|b| {
+                    b.vars
+                        .iter()
+                        .any(|v| super::refs::holds_reference_to(&v.ty))
+                }),
         }
     }
 
@@ -582,7 +595,7 @@ impl<'d> PouLowering<'d> {
             }
             ExprKind::Place(p) => p.accessors.iter().find_map(|a| match a {
                 Accessor::Index(ix) => ix.iter().find_map(|x| self.first_method_call(x)),
-                Accessor::Field(_) => None,
+                Accessor::Field(_) | Accessor::Deref(_) => None,
             }),
             _ => None,
         }
@@ -746,6 +759,19 @@ impl<'d> PouLowering<'d> {
                 self.method_call(&sig, args, span, out, diags);
             }
             StmtKind::Empty => {}
+            StmtKind::Assign { target, value } if is_ref_assign(value) => {
+                self.poisoned = false;
+                let mut code = Vec::new();
+                self.raw_refs = true;
+                let place = self.place_operand(target, &mut code, diags);
+                self.raw_refs = false;
+                let value = self.reference(value, None, &mut code, diags);
+                if let (Some(p), Some(v), false) = (place, value, self.poisoned) {
+                    code.push(ld(v, span));
+                    code.push(simple(Op::St, false, Some(p), span));
+                    out.extend(code);
+                }
+            }
             StmtKind::Assign { target, value } => {
                 self.poisoned = false;
                 let mut code = Vec::new();
@@ -1391,6 +1417,128 @@ impl<'d> PouLowering<'d> {
         }
     }
 
+    /// The reference operand `e` stands for, if it is one: `REF(x)` / `ADR(x)` / `r REF= x`'s `x`,
+    /// `NULL`, `0` where a `POINTER TO` is expected, or a variable passed where a `REFERENCE TO`
+    /// is expected (`hint`). Index code of `x` goes to `out`.
+    fn reference(
+        &mut self,
+        e: &Expr,
+        hint: Option<&TypeRef>,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> Option<Operand> {
+        // the context's type matters only for a literal `0` and for a variable where a `REFERENCE
+        // TO` may be expected (resolved only then: this runs for every operand)
+        let needs_context = match &e.kind {
+            ExprKind::Literal(Literal {
+                kind: LiteralKind::Int(0),
+                type_prefix: None,
+                ..
+            }) => true,
+            ExprKind::Place(_) => self.reference_to,
+            _ => false,
+        };
+        let expected = hint
+            .filter(|_| needs_context)
+            .map(|h| self.env().resolve(h));
+        let place = match (&e.kind, &expected) {
+            (ExprKind::Call { name, args }, _)
+                if super::refs::is_address_of(name) || name.is(super::refs::REF_ASSIGN) =>
+            {
+                match &args[..] {
+                    [Arg {
+                        name: None,
+                        value:
+                            Expr {
+                                kind: ExprKind::Place(p),
+                                ..
+                            },
+                        ..
+                    }] => p,
+                    [Arg {
+                        name: None,
+                        value:
+                            Expr {
+                                kind: ExprKind::Literal(_),
+                                span: lit,
+                            },
+                        ..
+                    }] => {
+                        // `ADR('auto')` (CODESYS): a literal has no address here
+                        diags.push(
+                            Diagnostic::error(
+                                code::E0305,
+                                format!("`{}` of a literal: a reference must refer to a variable", name.name),
+                            )
+                            .at(*lit)
+                            .with_primary_label("a literal")
+                            .with_hint("declare a variable (or VAR CONSTANT) holding the value and take its address"),
+                        );
+                        self.poisoned = true;
+                        return Some(Operand::Ref(Box::new(il::RefOperand {
+                            of: None,
+                            span: e.span,
+                        })));
+                    }
+                    _ => {
+                        diags.push(
+                            Diagnostic::error(
+                                code::E3103,
+                                format!("`{}` takes one variable", name.name),
+                            )
+                            .at(e.span)
+                            .with_primary_label("not one variable")
+                            .with_hint("write `REF(x)` or `ADR(x)` of a variable, an array element or a structure field"),
+                        );
+                        self.poisoned = true;
+                        return Some(Operand::Ref(Box::new(il::RefOperand {
+                            of: None,
+                            span: e.span,
+                        })));
+                    }
+                }
+            }
+            (
+                ExprKind::Literal(Literal {
+                    kind: LiteralKind::Int(0),
+                    type_prefix: None,
+                    ..
+                }),
+                Some(TypeRef::Ref { .. }),
+            ) => {
+                // `p := 0` (CODESYS, TwinCAT): NULL
+                return Some(Operand::Ref(Box::new(il::RefOperand {
+                    of: None,
+                    span: e.span,
+                })));
+            }
+            (
+                ExprKind::Place(p),
+                Some(TypeRef::Ref {
+                    kind: il::RefKind::Reference,
+                    ..
+                }),
+            ) if !(p.accessors.is_empty() && p.name().is_some_and(|n| n.is("NULL"))) => p,
+            _ => return None,
+        };
+        match self.place_operand(place, out, diags)? {
+            Operand::Var(v) => Some(Operand::Ref(Box::new(il::RefOperand {
+                of: Some(v),
+                span: e.span,
+            }))),
+            other => {
+                diags.push(
+                    Diagnostic::error(code::E0305, "a reference must refer to a variable")
+                        .at(other.span())
+                        .with_primary_label("no variable")
+                        .with_hint("refer to a variable, an array element or a structure field (a direct address has no reference)"),
+                );
+                self.poisoned = true;
+                None
+            }
+        }
+    }
+
     fn pure_operand(&self, e: &Expr) -> Option<Operand> {
         match &e.kind {
             ExprKind::Literal(l) => Some(Operand::literal(l.clone())),
@@ -1415,8 +1563,22 @@ impl<'d> PouLowering<'d> {
             PlaceBase::Address(_) => return None,
             PlaceBase::Name(n) => n.clone(),
         };
+        if p.accessors.is_empty() && base.is("NULL") && self.env().var_type(&base).is_none() {
+            return Some(Operand::Ref(Box::new(il::RefOperand {
+                of: None,
+                span: p.span,
+            })));
+        }
         let mut accessors = Vec::new();
-        for a in &p.accessors {
+        let derefs = if self.reference_to {
+            self.env().implicit_derefs(p, self.raw_refs)
+        } else {
+            Vec::new()
+        };
+        for (k, a) in p.accessors.iter().enumerate() {
+            if derefs.contains(&k) {
+                accessors.push(il::Accessor::Deref(p.span));
+            }
             accessors.push(match a {
                 Accessor::Field(f) => il::Accessor::Field(f.clone()),
                 Accessor::Index(ix) => il::Accessor::Index(
@@ -1424,7 +1586,11 @@ impl<'d> PouLowering<'d> {
                         .map(|e| self.pure_operand(e))
                         .collect::<Option<Vec<_>>>()?,
                 ),
+                Accessor::Deref(s) => il::Accessor::Deref(*s),
             });
+        }
+        if derefs.contains(&p.accessors.len()) {
+            accessors.push(il::Accessor::Deref(p.span));
         }
         Some(Operand::Var(VarRef {
             base,
@@ -1459,7 +1625,15 @@ impl<'d> PouLowering<'d> {
             }
         };
         let mut accessors = Vec::new();
-        for a in &p.accessors {
+        let derefs = if self.reference_to {
+            self.env().implicit_derefs(p, self.raw_refs)
+        } else {
+            Vec::new()
+        };
+        for (k, a) in p.accessors.iter().enumerate() {
+            if derefs.contains(&k) {
+                accessors.push(il::Accessor::Deref(p.span));
+            }
             accessors.push(match a {
                 Accessor::Field(f) => il::Accessor::Field(f.clone()),
                 Accessor::Index(ix) => {
@@ -1469,7 +1643,11 @@ impl<'d> PouLowering<'d> {
                     }
                     il::Accessor::Index(ops)
                 }
+                Accessor::Deref(s) => il::Accessor::Deref(*s),
             });
+        }
+        if derefs.contains(&p.accessors.len()) {
+            accessors.push(il::Accessor::Deref(p.span));
         }
         Some(Operand::Var(VarRef {
             base,
@@ -1487,6 +1665,9 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) -> Operand {
+        if let Some(o) = self.reference(e, hint, out, diags) {
+            return o;
+        }
         if let Some(o) = self.enum_by_context(e, hint) {
             return o;
         }
@@ -1534,6 +1715,13 @@ impl<'d> PouLowering<'d> {
                     },
                     e.span,
                 ));
+                return;
+            }
+        }
+        if matches!(e.kind, ExprKind::Literal(_)) {
+            // `p := 0` for a POINTER TO: NULL
+            if let Some(o) = self.reference(e, hint.as_ref(), out, diags) {
+                out.push(ld(o, e.span));
                 return;
             }
         }
@@ -1679,6 +1867,13 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
+        if matches!(right.kind, ExprKind::Literal(_)) {
+            // `p <> 0` for a POINTER TO: NULL
+            if let Some(o) = self.reference(right, hint.as_ref(), out, diags) {
+                out.push(simple(op, false, Some(o), span));
+                return;
+            }
+        }
         if let Some(o) = self
             .enum_by_context(right, hint.as_ref())
             .or_else(|| self.pure_operand(right))
@@ -1756,6 +1951,59 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
+        let call = Expr {
+            kind: ExprKind::Call {
+                name: name.clone(),
+                args: args.to_vec(),
+            },
+            span,
+        };
+        if let Some(o) = self.reference(&call, None, out, diags) {
+            out.push(ld(o, span));
+            return;
+        }
+        if name.is("SIZEOF") && self.decls.pou(&name.name).is_none() {
+            // refused by sema (E1019) without its argument, often a type name
+            out.push(instr(
+                InstrKind::FunctionCall {
+                    name: name.clone(),
+                    args: Box::new(CallArgs::None),
+                },
+                span,
+            ));
+            return;
+        }
+        if name.is(super::refs::IS_VALID_REF) {
+            // `__ISVALIDREF(r)`: `r <> NULL`, `r` the reference itself
+            let [Arg {
+                name: None,
+                value:
+                    Expr {
+                        kind: ExprKind::Place(p),
+                        ..
+                    },
+                ..
+            }] = args
+            else {
+                diags.push(
+                    Diagnostic::error(code::E3103, "`__ISVALIDREF` takes one reference variable")
+                        .at(span)
+                        .with_primary_label("called here")
+                        .with_hint("write `__ISVALIDREF(r)` with `r` a REFERENCE TO, REF_TO or POINTER TO variable"),
+                );
+                self.poisoned = true;
+                return;
+            };
+            self.raw_refs = true;
+            let r = self.place_operand(p, out, diags);
+            self.raw_refs = false;
+            if let Some(r) = r {
+                out.push(ld(r, span));
+                let null = Operand::Ref(Box::new(il::RefOperand { of: None, span }));
+                out.push(simple(Op::Ne, false, Some(null), span));
+            }
+            return;
+        }
         if let Some(t) = self.env().var_type(name) {
             let fb = self.env().is_fb_type(&t);
             diags.push(
@@ -1978,6 +2226,7 @@ fn type_text(t: &TypeRef) -> String {
         TypeRef::Array { .. } => "an array".into(),
         TypeRef::Subrange { base, .. } => format!("a subrange of {}", base.name),
         TypeRef::Enum { .. } => "an enumeration".into(),
+        TypeRef::Ref { kind, .. } => format!("a reference ({})", kind.keyword()),
     }
 }
 
@@ -2135,4 +2384,9 @@ fn place_exprs<'p>(p: &'p mut Place, out: &mut Vec<&'p mut Expr>) {
             out.extend(ix.iter_mut());
         }
     }
+}
+
+/// Whether an assignment's value is `REF= x` (see [`super::refs::REF_ASSIGN`]).
+fn is_ref_assign(value: &Expr) -> bool {
+    matches!(&value.kind, ExprKind::Call { name, .. } if name.is(super::refs::REF_ASSIGN))
 }

@@ -23,6 +23,7 @@ pub mod lower;
 pub mod parser;
 pub mod property;
 mod qualifiers;
+pub mod refs;
 mod scl;
 pub mod sfc;
 pub mod types;

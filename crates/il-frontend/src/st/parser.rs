@@ -501,6 +501,33 @@ impl<'s, 'd> Parser<'s, 'd> {
                     args,
                 })
             }
+            // `r REF= x` (CODESYS, TwinCAT): `r`, a REFERENCE TO, now refers to `x` (lowered by
+            // `PouLowering`, see `super::refs::REF_ASSIGN`)
+            Tok::Ident if self.ident(self.cur()).is("REF") && *self.peek_at(1) == Tok::Eq => {
+                let op = self.bump();
+                self.bump();
+                let value = self.expr();
+                if matches!(value.kind, ExprKind::Error) {
+                    return None;
+                }
+                let span = self.span(op.range.start, self.prev_end());
+                let arg = Arg {
+                    name: None,
+                    dir: ArgDir::Input,
+                    span: value.span,
+                    value,
+                };
+                Some(StmtKind::Assign {
+                    target,
+                    value: Expr {
+                        kind: ExprKind::Call {
+                            name: Ident::new(super::refs::REF_ASSIGN, span),
+                            args: vec![arg],
+                        },
+                        span,
+                    },
+                })
+            }
             Tok::Eq => {
                 self.error_here(
                     code::E0106,
@@ -911,22 +938,35 @@ impl<'s, 'd> Parser<'s, 'd> {
                 Tok::Caret => {
                     // (in a block that EXTENDS another, `SUPER^` is rewritten before parsing:
                     // `super::inherit`)
-                    let is_super = accessors.is_empty()
-                        && matches!(&base, PlaceBase::Name(n) if n.is("SUPER"));
-                    if is_super {
+                    if accessors.is_empty() && matches!(&base, PlaceBase::Name(n) if n.is("SUPER"))
+                    {
                         self.error_here(
                             code::E0108,
                             "`SUPER^` in a POU that extends no function block",
                             "SUPER^ reaches the base of a block declared `FUNCTION_BLOCK Name EXTENDS Base`; use THIS^ (or nothing) for the block's own methods and variables",
                         );
-                    } else {
-                        self.error_here(
-                            code::E0108,
-                            "pointer dereference `^` is not supported",
-                            "use the variable itself, or pass it as VAR_IN_OUT",
-                        );
+                        return None;
                     }
-                    return None;
+                    let t = self.bump();
+                    let derefs = accessors
+                        .iter()
+                        .filter(|a| matches!(a, Accessor::Deref(_)))
+                        .count();
+                    if derefs == crate::parser::MAX_TYPE_NESTING {
+                        // as deep as references may nest (`st::refs`): bounds the generated C,
+                        // which nests one call per `^`
+                        self.error_at(
+                            code::E0108,
+                            self.span(t.range.start, t.range.end),
+                            format!(
+                                "more than {} `^` in one access",
+                                crate::parser::MAX_TYPE_NESTING
+                            ),
+                            "references nest at most that deep: follow them in several statements",
+                        );
+                        return None;
+                    }
+                    accessors.push(Accessor::Deref(self.span(t.range.start, t.range.end)));
                 }
                 _ => break,
             }

@@ -794,6 +794,7 @@ fn place_key(p: &Place) -> Option<String> {
                 s.push('.');
                 s.push_str(&f.key());
             }
+            Accessor::Deref(_) => s.push('^'),
             Accessor::Index(_) => return None,
         }
     }

@@ -1,8 +1,8 @@
 //! Vendor syntax in `.st` text, handled before the parser: library-qualified names (`Standard.TON`;
-//! a provided library's qualifier is dropped, any other is one E1032 per library) and references or
-//! pointers (`REF_TO`, `POINTER TO`: one E0305 per declaration, the POU's body not compiled).
+//! a provided library's qualifier is dropped, any other is one E1032 per library; references and
+//! pointers are read by [`super::refs`]).
 //!
-//! Input: the file's text and tokens. Output: the text with qualifiers and reference keywords blanked
+//! Input: the file's text and tokens. Output: the text with qualifiers blanked
 //! (positions unchanged) and the diagnostics. Invariant: every span stays where the user wrote it.
 
 use super::file::*;
@@ -113,63 +113,6 @@ pub(super) fn library_qualifiers(
         }
         bytes[dot.range.start] = b'_';
         *text = String::from_utf8(bytes).unwrap_or_default();
-    }
-    text
-}
-
-/// `r : REF_TO INT;`, `p : POINTER TO S;` (edition 3 references, CODESYS pointers): not supported. Each
-/// declaration is one E0305 at its `REF_TO` / `POINTER TO`, which is blanked (the declaration is read as
-/// the referenced type); `at` gets the offset of each, so that the body of its POU (whose `r^`,
-/// `REF(x)`, `ADR(x)`, `NULL` would each be an error) is not compiled. `None`: no such declaration.
-pub(super) fn reference_declarations(
-    file: FileId,
-    src: &str,
-    toks: &[Token],
-    diags: &mut Diagnostics,
-    at: &mut Vec<usize>,
-) -> Option<String> {
-    let mut text: Option<String> = None;
-    let mut in_decl = false;
-    for (k, t) in toks.iter().enumerate() {
-        let w = word(src, t).to_ascii_uppercase();
-        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
-            if is_var_keyword(&w) || w == "STRUCT" {
-                in_decl = true;
-            } else if w == "END_VAR" || w == "END_STRUCT" {
-                in_decl = false;
-            }
-        }
-        if !in_decl || t.tok != Tok::Colon {
-            continue;
-        }
-        let Some(first) = toks.get(k + 1) else {
-            continue;
-        };
-        let kw = word(src, first).to_ascii_uppercase();
-        let end = match kw.as_str() {
-            "REF_TO" => first.range.end,
-            "POINTER" => match toks.get(k + 2) {
-                Some(to) if word(src, to).eq_ignore_ascii_case("TO") => to.range.end,
-                _ => continue,
-            },
-            _ => continue,
-        };
-        let name = k.checked_sub(1).map(|p| word(src, &toks[p])).unwrap_or("");
-        let written = src.get(first.range.start..end).unwrap_or("REF_TO");
-        diags.push(
-            Diagnostic::error(
-                code::E0305,
-                format!("`{name}`: references and pointers (`{written}`) are not supported"),
-            )
-            .at(Span::new(file, first.range.start, end))
-            .with_primary_label("reference type")
-            .with_hint("pass the variable as VAR_IN_OUT, or use it directly; the body of this POU is not compiled"),
-        );
-        at.push(first.range.start);
-        blank(
-            text.get_or_insert_with(|| src.to_string()),
-            first.range.start..end,
-        );
     }
     text
 }

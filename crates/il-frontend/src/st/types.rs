@@ -66,6 +66,9 @@ pub struct Declarations {
     /// The methods of each function block (upper-case block name), callable inside the block
     /// (`M(...)`, `THIS^.M(...)`, see [`super::PouLowering`]).
     pub methods: HashMap<String, Vec<MethodSig>>,
+    /// Whether any declaration holds a `REFERENCE TO` (computed on the first
+    /// [`Declarations::has_reference_to`], once the declarations are complete).
+    references: std::sync::OnceLock<bool>,
 }
 
 /// A method's interface as seen from inside its function block: the call `M(a, b)` or `M(v := a)`
@@ -106,6 +109,24 @@ impl Declarations {
     /// No declarations.
     pub fn new() -> Self {
         Self::default()
+    }
+    /// Whether a data type, POU interface or global holds a `REFERENCE TO` (then the ST lowering
+    /// looks for the `^` each access leaves out: see `Env::implicit_derefs`). Read once the
+    /// declarations are complete: the answer is kept.
+    pub fn has_reference_to(&self) -> bool {
+        *self.references.get_or_init(|| {
+            let holds = super::refs::holds_reference_to;
+            self.types.values().any(|t| match &t.def {
+                crate::ast::TypeDef::Alias { ty, .. } => holds(ty),
+                crate::ast::TypeDef::Struct { fields } => fields.iter().any(|f| holds(&f.ty)),
+                crate::ast::TypeDef::Enum { .. } => false,
+            }) || self
+                .pous
+                .values()
+                .any(|p| p.vars.iter().any(|v| holds(&v.2)))
+                || self.globals.values().any(holds)
+                || self.global_lists.values().any(|l| l.values().any(holds))
+        })
     }
     /// Every data type, POU interface and global variable of `units`.
     pub fn from_units(units: &[CompilationUnit]) -> Self {

@@ -42,7 +42,7 @@ fn has_short_circuit(mut e: &Expr) -> bool {
 fn place_has(p: &Place) -> bool {
     p.accessors.iter().any(|a| match a {
         Accessor::Index(ix) => ix.iter().any(has_short_circuit),
-        Accessor::Field(_) => false,
+        Accessor::Field(_) | Accessor::Deref(_) => false,
     })
 }
 

@@ -1,0 +1,136 @@
+//! References in bodies (IEC 61131-3 edition 3, 6.4.4.10; CODESYS/TwinCAT pointers and
+//! `REFERENCE TO`): the type of `REF(x)` / `ADR(x)` / `NULL`, the dereference `r^`, and the
+//! variables whose address may not be taken.
+//!
+//! Input: operands and accesses of one body. Output: their types and diagnostics. Invariants: a
+//! reference is only ever made to storage that outlives every reference to it: a variable of a
+//! program or function block instance, a global, or what another reference refers to; `REF` of a
+//! VAR_TEMP, of any variable of a FUNCTION (the standard's rule: they live for one call), of a
+//! VAR_IN_OUT (it may be the caller's temporary), of a located variable or of a bit of a variable
+//! is one E0305 at the operand.
+
+use super::body::{Body, Ty};
+use super::model::*;
+use super::places::Place;
+use crate::ast::{self, Accessor, PouKind, RefOperand, VarKind};
+use diagnostics::code;
+
+/// Whether standard function `f` takes `t` for a parameter of class `c`: its class's types, and
+/// references for `EQ` and `NE` (`r = NULL`, `r1 <> r2`: whether they refer to the same variable).
+pub(super) fn class_admits(f: &str, c: super::stdlib::Class, t: &Type) -> bool {
+    c.contains(t) || (matches!(t, Type::Ref(_)) && matches!(f, "EQ" | "NE"))
+}
+
+impl Body<'_, '_> {
+    /// A VAR_IN_OUT declared as a reference (`VAR_IN_OUT total : REFERENCE TO DINT`): refused, one
+    /// E0305 at the argument (a VAR_IN_OUT is already passed by reference).
+    pub(super) fn in_out_reference(&mut self, param: &str, callee: &str, span: crate::Span) {
+        self.a
+            .error(
+                code::E0305,
+                span,
+                format!("`{param}` of `{callee}` is a VAR_IN_OUT of a reference type: not supported"),
+            )
+            .label("passed here")
+            .hint("declare it `VAR_IN_OUT total : DINT` (passed by reference already) or `VAR_INPUT total : REFERENCE TO DINT`");
+    }
+    /// Arithmetic or an ordering on a reference (`p := p + SIZEOF(T)`): refused, one E0305. A
+    /// reference always refers to a whole variable of its type: moving it would let it point
+    /// outside that variable, which C makes undefined behaviour.
+    pub(super) fn pointer_arithmetic(&mut self, f: &str, tn: &str, span: crate::Span) {
+        self.a
+            .error(
+                code::E0305,
+                span,
+                format!("`{f}` on a reference ({tn}): pointer arithmetic and ordering of references are not supported"),
+            )
+            .label("this is a reference")
+            .hint("index an array instead (`REF(buffer[i])`, or `p^[i]` on a reference to the whole array); compare references only with `=` and `<>`");
+    }
+
+    /// The type of `REF(x)` / `ADR(x)` (a reference to `x`'s type) or `NULL` (a reference to
+    /// [`Type::Error`], which fits every reference).
+    pub(super) fn reference_operand(&mut self, r: &RefOperand) -> Ty {
+        let Some(v) = &r.of else {
+            return Ty::Known(Type::Ref(Box::new(Type::Error)));
+        };
+        let place = self.resolve_var(v);
+        if place.ty.is_error() {
+            return Ty::ERROR;
+        }
+        if let Some(why) = self.not_referable(v) {
+            let path = crate::print::var_ref_text(v);
+            self.a
+                .error(
+                    code::E0305,
+                    r.span,
+                    format!("a reference to `{path}` is not allowed: {why}"),
+                )
+                .label("its address is taken here")
+                .hint("refer to a variable of the program or block instance, or to a global (they live as long as the program)");
+            return Ty::ERROR;
+        }
+        Ty::Known(Type::Ref(Box::new(place.ty)))
+    }
+
+    /// Why the address of `v` may not be taken (`None`: it may).
+    fn not_referable(&self, v: &ast::VarRef) -> Option<&'static str> {
+        // what a reference refers to outlives it already
+        if v.accessors.iter().any(|a| matches!(a, Accessor::Deref(_))) {
+            return None;
+        }
+        if v.accessors
+            .iter()
+            .any(|a| matches!(a, Accessor::Field(f) if ast::partial_access(&f.name).is_some()))
+        {
+            return Some("a bit or part of a variable has no address");
+        }
+        let pou = self.pou();
+        let var = pou.var_position(&v.base.name).map(|i| &pou.vars[i]);
+        match var {
+            Some(var) if var.location.is_some() => {
+                Some("a located variable lives in the process image, which has no references")
+            }
+            Some(_) if pou.kind == PouKind::Function => {
+                Some("the variables of a FUNCTION live for one call (IEC 61131-3, 6.4.4.10)")
+            }
+            Some(var) if var.kind == VarKind::Temp => {
+                Some("a VAR_TEMP variable lives for one call (IEC 61131-3, 6.4.4.10)")
+            }
+            Some(var) if var.kind == VarKind::InOut => {
+                Some("a VAR_IN_OUT may stand for a temporary variable of the caller")
+            }
+            None if pou.kind == PouKind::Function && v.base.is(&pou.name) => {
+                Some("the result of a FUNCTION lives for one call")
+            }
+            _ => None,
+        }
+    }
+
+    /// `r^`: the variable `place` (a reference) refers to, writable whatever `place` is.
+    pub(super) fn deref(&mut self, place: Place, v: &ast::VarRef, at: usize) -> Option<Place> {
+        match place.ty {
+            Type::Ref(target) if !target.is_error() => Some(Place {
+                ty: *target,
+                read_only: None,
+            }),
+            other => {
+                let path = crate::print::var_ref_text(&ast::VarRef {
+                    base: v.base.clone(),
+                    accessors: v.accessors.iter().take(at).cloned().collect(),
+                    span: v.span,
+                });
+                let t = self.a.type_name(&other);
+                self.a
+                    .error(
+                        code::E1021,
+                        v.span,
+                        format!("`{path}` is {t}, not a reference: `^` cannot follow it"),
+                    )
+                    .label("dereferenced here")
+                    .hint("only a REF_TO or POINTER TO variable is read with `^`");
+                None
+            }
+        }
+    }
+}

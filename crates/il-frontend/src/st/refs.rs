@@ -1,0 +1,294 @@
+//! References and pointers in `.st` text (IEC 61131-3 edition 3, 6.4.4.10: `REF_TO T`, `REF(x)`,
+//! `r^`, `NULL`; CODESYS and TwinCAT: `POINTER TO T` with `ADR(x)` and `p^`, `REFERENCE TO T`
+//! with `r REF= x` and `__ISVALIDREF(r)`).
+//!
+//! Input: a file's text and tokens, before its declarations are parsed. Output: the text with the
+//! reference keywords blanked (positions unchanged, so the IL parser reads `r : REF_TO INT` as
+//! `r : INT`), a [`RefTypes`] table saying which type texts they stood before, and, after the parse,
+//! the declarations' types wrapped back into [`TypeRef::Ref`] ([`RefTypes::apply`]).
+//! Invariants: every span stays where the user wrote it; a reference type is wrapped exactly where
+//! its keyword stood (a variable, a structure field, an array's element type, a TYPE alias, a
+//! FUNCTION's result); an initial value other than `NULL` is one E0305.
+
+use super::file::{blank, is_var_keyword, word};
+use super::lexer::{Tok, Token};
+use crate::ast::{CompilationUnit, LibraryElement, RefKind, TypeDef, TypeRef, VarBlock, VarDecl};
+use crate::{FileId, Span};
+use diagnostics::{code, Diagnostic, Diagnostics};
+use std::collections::HashMap;
+
+/// `__ISVALIDREF(r)` (CODESYS): whether reference `r` refers to a variable (is not NULL).
+pub const IS_VALID_REF: &str = "__ISVALIDREF";
+
+/// The callee name `r REF= x` is parsed into (`r := REF=(x)`; no identifier can be written so).
+pub const REF_ASSIGN: &str = "REF=";
+
+/// Whether `name` is `REF` (edition 3) or `ADR` (CODESYS, TwinCAT): the address of its argument.
+pub fn is_address_of(name: &crate::ast::Ident) -> bool {
+    name.is("REF") || name.is("ADR")
+}
+
+/// Whether type `t` is or holds (as an array element, or referred to) a `REFERENCE TO`.
+pub fn holds_reference_to(t: &TypeRef) -> bool {
+    let mut t = t;
+    loop {
+        match t {
+            TypeRef::Ref {
+                kind: RefKind::Reference,
+                ..
+            } => return true,
+            TypeRef::Ref { target, .. } => t = target,
+            TypeRef::Array { element, .. } => t = element,
+            _ => return false,
+        }
+    }
+}
+
+/// The reference keywords blanked in one file: by the offset of the type text they stood before,
+/// the kinds outermost first (`REF_TO REF_TO INT` has two) and the span of the first keyword.
+#[derive(Debug, Default)]
+pub struct RefTypes {
+    file: Option<FileId>,
+    at: HashMap<usize, (Vec<RefKind>, Span)>,
+    /// Errors found while blanking (initial values), reported with the others.
+    pending: Vec<Diagnostic>,
+}
+
+impl RefTypes {
+    /// Whether the file declares no reference.
+    pub fn is_empty(&self) -> bool {
+        self.at.is_empty()
+    }
+
+    /// Blanks `REF_TO`, `POINTER TO` and `REFERENCE TO` where a type is declared (after `:` or `OF`
+    /// in a VAR, STRUCT or TYPE block, or a FUNCTION's result type) and records them. `None`: the text
+    /// has none (nothing blanked).
+    pub fn blank_keywords(file: FileId, src: &str, toks: &[Token]) -> (Option<String>, RefTypes) {
+        Self::blank_keywords_at(file, src, toks, 0)
+    }
+
+    /// [`Self::blank_keywords`] of a text that starts at offset `base` of its file (a declaration
+    /// text cut out of an XML element).
+    pub fn blank_keywords_at(
+        file: FileId,
+        src: &str,
+        toks: &[Token],
+        base: usize,
+    ) -> (Option<String>, RefTypes) {
+        let mut text: Option<String> = None;
+        let mut refs = RefTypes {
+            file: Some(file),
+            at: HashMap::new(),
+            pending: Vec::new(),
+        };
+        let mut in_decl = false;
+        for (k, t) in toks.iter().enumerate() {
+            let w = word(src, t).to_ascii_uppercase();
+            if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+                if is_var_keyword(&w) || w == "STRUCT" || w == "TYPE" || w == "FUNCTION" {
+                    in_decl = true;
+                } else if matches!(w.as_str(), "END_VAR" | "END_STRUCT" | "END_TYPE") {
+                    in_decl = false;
+                }
+            }
+            let after_colon = t.tok == Tok::Colon || w == "OF";
+            if !in_decl || !after_colon {
+                continue;
+            }
+            // the keywords, outermost first: `REF_TO`, `POINTER TO`, `REFERENCE TO`
+            let mut j = k + 1;
+            let mut kinds = Vec::new();
+            let mut first: Option<Span> = None;
+            while let Some(kw) = toks.get(j) {
+                let (kind, end, next) = match word(src, kw).to_ascii_uppercase().as_str() {
+                    "REF_TO" => (RefKind::RefTo, kw.range.end, j + 1),
+                    w @ ("POINTER" | "REFERENCE") => match toks.get(j + 1) {
+                        Some(to) if word(src, to).eq_ignore_ascii_case("TO") => {
+                            let kind = if w == "POINTER" {
+                                RefKind::Pointer
+                            } else {
+                                RefKind::Reference
+                            };
+                            (kind, to.range.end, j + 2)
+                        }
+                        _ => break,
+                    },
+                    _ => break,
+                };
+                first.get_or_insert(Span::new(file, base + kw.range.start, base + end));
+                kinds.push(kind);
+                blank(
+                    text.get_or_insert_with(|| src.to_string()),
+                    kw.range.start..end,
+                );
+                j = next;
+            }
+            if let (Some(span), true) = (first, kinds.len() > crate::parser::MAX_TYPE_NESTING) {
+                // `REF_TO REF_TO ...` deeper than any type may nest: read as the type (no wrap)
+                refs.pending.push(
+                    Diagnostic::error(
+                        code::E0211,
+                        format!(
+                            "references to references nested more than {} deep",
+                            crate::parser::MAX_TYPE_NESTING
+                        ),
+                    )
+                    .at(span)
+                    .with_primary_label("the first of them")
+                    .with_hint("refer to a structure holding the next reference instead"),
+                );
+                continue;
+            }
+            if let (Some(span), Some(target)) = (first, toks.get(j)) {
+                refs.at.insert(base + target.range.start, (kinds, span));
+                refs.initial_value(file, src, toks, j, base, &mut text);
+            }
+        }
+        (text, refs)
+    }
+
+    /// The initial value of a reference declared at token `j` (its type), up to the `;`: `:= NULL`
+    /// is what every reference starts with (blanked); `:= REF(x)` / `ADR(x)` is one E0305 (a
+    /// reference starts as NULL; it is set in the body), blanked too, so that the declaration reads.
+    fn initial_value(
+        &mut self,
+        file: FileId,
+        src: &str,
+        toks: &[Token],
+        j: usize,
+        base: usize,
+        text: &mut Option<String>,
+    ) {
+        let mut k = j;
+        while let Some(t) = toks.get(k) {
+            match t.tok {
+                Tok::Semi => return,
+                Tok::Assign => break,
+                _ if is_var_keyword(&word(src, t).to_ascii_uppercase()) => return,
+                _ => k += 1,
+            }
+        }
+        let Some(assign) = toks.get(k) else { return };
+        let mut end = k + 1;
+        while toks.get(end).is_some_and(|t| t.tok != Tok::Semi) {
+            end += 1;
+        }
+        let Some(last) = toks.get(end - 1).filter(|_| end > k + 1) else {
+            return;
+        };
+        let value = src
+            .get(assign.range.end..last.range.end)
+            .unwrap_or("")
+            .trim();
+        if !value.eq_ignore_ascii_case("NULL") {
+            self.pending.push(
+                Diagnostic::error(
+                    code::E0305,
+                    format!("a reference cannot have the initial value `{value}`"),
+                )
+                .at(Span::new(
+                    file,
+                    base + assign.range.start,
+                    base + last.range.end,
+                ))
+                .with_primary_label("initial value")
+                .with_hint("a reference starts as NULL: set it in the body (`r := REF(x);`)"),
+            );
+        }
+        blank(
+            text.get_or_insert_with(|| src.to_string()),
+            assign.range.start..last.range.end,
+        );
+    }
+
+    /// Wraps the declared types that stood after a reference keyword into [`TypeRef::Ref`], and
+    /// reports the refused initial values.
+    pub fn apply(mut self, unit: &mut CompilationUnit, diags: &mut Diagnostics) {
+        if self.at.is_empty() {
+            self.report_left(diags);
+            return;
+        }
+        for item in &mut unit.items {
+            match item {
+                LibraryElement::Pou(p) => {
+                    if let Some(r) = &mut p.return_type {
+                        self.wrap(r);
+                    }
+                    self.blocks(&mut p.var_blocks);
+                }
+                LibraryElement::DataTypes(types) => {
+                    for t in types {
+                        match &mut t.def {
+                            TypeDef::Alias { ty, .. } => self.wrap(ty),
+                            TypeDef::Struct { fields } => self.decls(fields),
+                            TypeDef::Enum { .. } => {}
+                        }
+                    }
+                }
+                LibraryElement::GlobalVars(b) => self.decls(&mut b.vars),
+                LibraryElement::Configuration(c) => {
+                    self.blocks(&mut c.globals);
+                    for r in &mut c.resources {
+                        self.blocks(&mut r.globals);
+                    }
+                }
+                LibraryElement::Action(_) => {}
+            }
+        }
+        self.report_left(diags);
+    }
+
+    /// Wraps the types of a method's declarations (read apart from the unit).
+    pub fn apply_to_method(&mut self, blocks: &mut [VarBlock], ret: Option<&mut VarDecl>) {
+        self.blocks(blocks);
+        if let Some(r) = ret {
+            self.wrap(&mut r.ty);
+        }
+    }
+
+    /// Reports the initial values refused (E0305). A keyword whose type was not wrapped stood in
+    /// text the parser did not read (a POU refused as a whole, a declaration with a syntax error):
+    /// that is reported already, and nothing is added.
+    pub fn report_left(&mut self, diags: &mut Diagnostics) {
+        for d in self.pending.drain(..) {
+            diags.push(d);
+        }
+    }
+
+    fn blocks(&mut self, blocks: &mut [VarBlock]) {
+        for b in blocks {
+            self.decls(&mut b.vars);
+        }
+    }
+
+    fn decls(&mut self, decls: &mut [VarDecl]) {
+        for d in decls {
+            self.wrap(&mut d.ty);
+        }
+    }
+
+    /// Wraps `ty` (and its element types) where a keyword stood before it.
+    fn wrap(&mut self, ty: &mut TypeRef) {
+        if let TypeRef::Array { element, .. } = ty {
+            self.wrap(element);
+        }
+        let start = ty.span().start as usize;
+        let Some(span_file) = self.file else { return };
+        if ty.span().file != span_file {
+            return;
+        }
+        // `a, b : REF_TO INT` gives two declarations sharing the type text: each is wrapped
+        let Some((kinds, span)) = self.at.get(&start).cloned() else {
+            return;
+        };
+        for kind in kinds.iter().rev() {
+            let target = std::mem::replace(ty, TypeRef::Named(crate::ast::Ident::new("", span)));
+            let end = target.span().end;
+            *ty = TypeRef::Ref {
+                kind: *kind,
+                target: Box::new(target),
+                span: Span::new(span_file, span.start as usize, end as usize),
+            };
+        }
+    }
+}
