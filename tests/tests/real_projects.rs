@@ -146,12 +146,12 @@ fn codesys_home_automation_export_names_its_vendor_libraries() {
     ] {
         assert!(all.contains(lib), "{lib}: {all}");
     }
-    // each E0305 is the address of a string literal passed to `StrEquals`
+    // each E0305 would be the address of a string literal passed to `StrEquals`; the POUs that do
+    // that EXTEND another, so their bodies are not compiled (E0303) and none is left
     let e0305: Vec<&String> = errors
         .iter()
         .filter(|e| e.contains("error[E0305]"))
         .collect();
-    assert!(!e0305.is_empty(), "{all}");
     for e in e0305 {
         assert!(
             e.contains("`ADR` of a literal: a reference must refer to a variable"),
