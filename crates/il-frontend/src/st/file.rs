@@ -517,6 +517,27 @@ pub(super) fn read_var_blocks(
     }
 }
 
+/// The position of the name of the METHOD or PROPERTY whose keyword is at `k`, after its access
+/// and inheritance modifiers (`METHOD PUBLIC FINAL M`); a modifier followed by no name is the name.
+pub(super) fn member_name_at(src: &str, toks: &[Token], k: usize) -> usize {
+    const MODIFIERS: [&str; 6] = [
+        "PUBLIC",
+        "PRIVATE",
+        "PROTECTED",
+        "INTERNAL",
+        "FINAL",
+        "ABSTRACT",
+    ];
+    let mut h = k + 1;
+    while h + 1 < toks.len()
+        && toks[h + 1].tok == Tok::Ident
+        && MODIFIERS.iter().any(|m| is_word(src, &toks[h], m))
+    {
+        h += 1;
+    }
+    h
+}
+
 /// The `METHOD ... END_METHOD` blocks among a function block's body tokens. A block that does not
 /// end with `END_METHOD` is left out (the body's parse reports it).
 fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
@@ -529,22 +550,7 @@ fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
             k += 1;
             continue;
         }
-        let mut h = k + 1;
-        while h + 1 < n
-            && toks[h + 1].tok == Tok::Ident
-            && [
-                "PUBLIC",
-                "PRIVATE",
-                "PROTECTED",
-                "INTERNAL",
-                "FINAL",
-                "ABSTRACT",
-            ]
-            .iter()
-            .any(|m| is_word(src, &toks[h], m))
-        {
-            h += 1;
-        }
+        let mut h = member_name_at(src, toks, k);
         let Some(name_tok) = toks.get(h).filter(|t| t.tok == Tok::Ident) else {
             k += 1;
             continue;

@@ -99,22 +99,7 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
             k += 1;
             continue;
         }
-        let mut h = k + 1;
-        while h + 1 < n
-            && toks[h + 1].tok == Tok::Ident
-            && [
-                "PUBLIC",
-                "PRIVATE",
-                "PROTECTED",
-                "INTERNAL",
-                "FINAL",
-                "ABSTRACT",
-            ]
-            .iter()
-            .any(|m| is_word(src, &toks[h], m))
-        {
-            h += 1;
-        }
+        let mut h = super::file::member_name_at(src, toks, k);
         let Some(name_tok) = toks.get(h).filter(|t| t.tok == Tok::Ident) else {
             k += 1;
             continue;
