@@ -661,6 +661,30 @@ fn text_declaration(
     }
 }
 
+/// Reads the interface of a method or property accessor of the POU `p`: its array bounds may name
+/// the block's constants or the member's own.
+fn read_member_interface(
+    ctx: &mut Ctx,
+    p: &Element,
+    iface: &Element,
+    return_type: &mut Option<il_frontend::ast::TypeRef>,
+    var_blocks: &mut Vec<VarBlock>,
+) {
+    let globals = std::mem::take(&mut ctx.constants);
+    let lookup = |n: &str| globals.get(&n.to_ascii_uppercase()).copied();
+    let mut local = p
+        .child("interface")
+        .map(|i| decls::collect_constants(i, false, &lookup))
+        .unwrap_or_default();
+    local.extend(decls::collect_constants(iface, false, &|n| {
+        local_or(&local, &globals, n)
+    }));
+    ctx.constants = globals;
+    ctx.local_constants = local;
+    read_interface(ctx, iface, return_type, var_blocks);
+    ctx.local_constants.clear();
+}
+
 /// A constant of the block (`local`), else a global one.
 fn local_or(
     local: &HashMap<String, i128>,
@@ -796,20 +820,7 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
                 continue;
             }
             if let Some(iface) = m.child("interface") {
-                // array bounds may name the block's constants or the method's own
-                let globals = std::mem::take(&mut ctx.constants);
-                let lookup = |n: &str| globals.get(&n.to_ascii_uppercase()).copied();
-                let mut local = p
-                    .child("interface")
-                    .map(|i| decls::collect_constants(i, false, &lookup))
-                    .unwrap_or_default();
-                local.extend(decls::collect_constants(iface, false, &|n| {
-                    local_or(&local, &globals, n)
-                }));
-                ctx.constants = globals;
-                ctx.local_constants = local;
-                read_interface(ctx, iface, &mut ret, &mut blocks);
-                ctx.local_constants.clear();
+                read_member_interface(ctx, p, iface, &mut ret, &mut blocks);
             }
             let ident = Ident::new(name, ctx.attr_span(m, "name"));
             let st = st.expect("checked above");
@@ -861,19 +872,7 @@ fn xml_property(
     for a in accessors {
         let mut blocks = Vec::new();
         if let Some(iface) = a.child("interface") {
-            let globals = std::mem::take(&mut ctx.constants);
-            let lookup = |n: &str| globals.get(&n.to_ascii_uppercase()).copied();
-            let mut local = p
-                .child("interface")
-                .map(|i| decls::collect_constants(i, false, &lookup))
-                .unwrap_or_default();
-            local.extend(decls::collect_constants(iface, false, &|n| {
-                local_or(&local, &globals, n)
-            }));
-            ctx.constants = globals;
-            ctx.local_constants = local;
-            read_interface(ctx, iface, &mut None, &mut blocks);
-            ctx.local_constants.clear();
+            read_member_interface(ctx, p, iface, &mut None, &mut blocks);
         }
         let Some(st) = a.child("body").and_then(|b| b.child("ST")) else {
             continue;
