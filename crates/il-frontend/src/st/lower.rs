@@ -1570,11 +1570,7 @@ impl<'d> PouLowering<'d> {
             })));
         }
         let mut accessors = Vec::new();
-        let derefs = if self.reference_to {
-            self.env().implicit_derefs(p, self.raw_refs)
-        } else {
-            Vec::new()
-        };
+        let derefs = self.implicit_derefs_of(p);
         for (k, a) in p.accessors.iter().enumerate() {
             if derefs.contains(&k) {
                 accessors.push(il::Accessor::Deref(p.span));
@@ -1597,6 +1593,16 @@ impl<'d> PouLowering<'d> {
             accessors: accessors.into(),
             span: p.span,
         }))
+    }
+
+    /// The positions among `p`'s accessors (its length: after the last) where a `REFERENCE TO`
+    /// leaves its `^` out; none unless the program declares a `REFERENCE TO`.
+    fn implicit_derefs_of(&self, p: &Place) -> Vec<usize> {
+        if self.reference_to {
+            self.env().implicit_derefs(p, self.raw_refs)
+        } else {
+            Vec::new()
+        }
     }
 
     /// The operand for a place; index expressions that are not plain operands are computed into
@@ -1625,11 +1631,7 @@ impl<'d> PouLowering<'d> {
             }
         };
         let mut accessors = Vec::new();
-        let derefs = if self.reference_to {
-            self.env().implicit_derefs(p, self.raw_refs)
-        } else {
-            Vec::new()
-        };
+        let derefs = self.implicit_derefs_of(p);
         for (k, a) in p.accessors.iter().enumerate() {
             if derefs.contains(&k) {
                 accessors.push(il::Accessor::Deref(p.span));

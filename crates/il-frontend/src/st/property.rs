@@ -495,21 +495,7 @@ impl Rewriter<'_, '_> {
 
     /// The VAR_IN_OUT parameters of the function `name` (upper-case).
     fn in_outs_of_function(&self, name: &Ident) -> Vec<String> {
-        self.env
-            .decls
-            .pou(&name.name)
-            .map(|p| {
-                p.params()
-                    .map(|(n, k, _)| {
-                        if *k == VarKind::InOut {
-                            n.to_ascii_uppercase()
-                        } else {
-                            String::new()
-                        }
-                    })
-                    .collect()
-            })
-            .unwrap_or_default()
+        in_out_names(self.env.decls.pou(&name.name))
     }
 
     /// Rewrites a call's arguments: inputs are reads; a property passed to a VAR_IN_OUT
@@ -659,19 +645,7 @@ impl Rewriter<'_, '_> {
                         _ => None,
                     },
                 };
-                let in_outs: Vec<String> = iface
-                    .map(|p| {
-                        p.params()
-                            .map(|(n, k, _)| {
-                                if *k == VarKind::InOut {
-                                    n.to_ascii_uppercase()
-                                } else {
-                                    String::new()
-                                }
-                            })
-                            .collect()
-                    })
-                    .unwrap_or_default();
+                let in_outs = in_out_names(iface);
                 let name = match &callee.base {
                     PlaceBase::Name(n) => n.name.clone(),
                     PlaceBase::Address(_) => String::new(),
@@ -784,6 +758,23 @@ fn place_key(p: &Place) -> Option<String> {
         }
     }
     Some(s)
+}
+
+/// For each parameter of `pou` in order, its upper-case name when it is a VAR_IN_OUT, else an empty
+/// string (no POU: no parameters).
+fn in_out_names(pou: Option<&super::types::PouInterface>) -> Vec<String> {
+    pou.map(|p| {
+        p.params()
+            .map(|(n, k, _)| {
+                if *k == VarKind::InOut {
+                    n.to_ascii_uppercase()
+                } else {
+                    String::new()
+                }
+            })
+            .collect()
+    })
+    .unwrap_or_default()
 }
 
 #[cfg(test)]
