@@ -517,6 +517,23 @@ pub(super) fn read_var_blocks(
     }
 }
 
+/// Skips the `VAR ... END_VAR` blocks that start at `h`: the position after them, and the end of
+/// the last closed one's `END_VAR` (`None` when no block starts there, or none is closed).
+pub(super) fn skip_var_blocks(src: &str, toks: &[Token], mut h: usize) -> (usize, Option<usize>) {
+    let n = toks.len();
+    let mut end = None;
+    while h < n && is_var_keyword(&word(src, &toks[h]).to_ascii_uppercase()) {
+        while h < n && !is_word(src, &toks[h], "END_VAR") {
+            h += 1;
+        }
+        if h < n {
+            end = Some(toks[h].range.end);
+            h += 1;
+        }
+    }
+    (h, end)
+}
+
 /// The position of the name of the METHOD or PROPERTY whose keyword is at `k`, after its access
 /// and inheritance modifiers (`METHOD PUBLIC FINAL M`); a modifier followed by no name is the name.
 pub(super) fn member_name_at(src: &str, toks: &[Token], k: usize) -> usize {
@@ -572,16 +589,9 @@ fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
             h += 1;
         }
         let decl_start = toks.get(h).map_or(name_tok.range.end, |t| t.range.start);
-        let mut decl_end = decl_start;
-        while h < n && is_var_keyword(&word(src, &toks[h]).to_ascii_uppercase()) {
-            while h < n && !is_word(src, &toks[h], "END_VAR") {
-                h += 1;
-            }
-            if h < n {
-                decl_end = toks[h].range.end;
-                h += 1;
-            }
-        }
+        let (after, vars_end) = skip_var_blocks(src, toks, h);
+        h = after;
+        let decl_end = vars_end.unwrap_or(decl_start);
         let mut e = h;
         while e < n && !is_word(src, &toks[e], "END_METHOD") {
             e += 1;

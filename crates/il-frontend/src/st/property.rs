@@ -152,16 +152,9 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
             };
             h += 1;
             let decl_start = toks.get(h).map_or(0, |t| t.range.start);
-            let mut decl_end = decl_start;
-            while h < n && is_var_keyword(&word(src, &toks[h]).to_ascii_uppercase()) {
-                while h < n && !is_word(src, &toks[h], "END_VAR") {
-                    h += 1;
-                }
-                if h < n {
-                    decl_end = toks[h].range.end;
-                    h += 1;
-                }
-            }
+            let (after, vars_end) = super::file::skip_var_blocks(src, toks, h);
+            h = after;
+            let decl_end = vars_end.unwrap_or(decl_start);
             let mut e = h;
             while e < n
                 && !is_word(src, &toks[e], close)
