@@ -441,6 +441,10 @@ impl Session {
                 let mut local = Diagnostics::new();
                 let (unit, bodies, entries) =
                     il_frontend::st::file::parse_text(file, src, implicit, file_lang, &mut local);
+                if v2_text.is_none() && tc_text.is_none() && stem == Some(implicit) {
+                    // (the unit is pushed next, in either branch below)
+                    text_lists.push((units.len(), implicit.to_string()));
+                }
                 if local.iter().any(|d| d.code == code::E0022) {
                     // a bound may name a constant of a file read later: parsed again below
                     offered.push(il_frontend::parser::global_integer_constants(&unit, &local));
@@ -452,17 +456,11 @@ impl Session {
                         text: v2_text.clone().or_else(|| tc_text.clone()),
                         diags: local,
                     });
-                    if v2_text.is_none() && tc_text.is_none() && stem == Some(implicit) {
-                        text_lists.push((units.len(), implicit.to_string()));
-                    }
                     units.push(unit);
                     continue;
                 }
                 offered.push(il_frontend::parser::global_integer_constants(&unit, &local));
                 self.diags.extend(local);
-                if v2_text.is_none() && tc_text.is_none() && stem == Some(implicit) {
-                    text_lists.push((units.len(), implicit.to_string()));
-                }
                 units.push(unit);
                 pending.extend(bodies);
                 var_config.extend(entries);
