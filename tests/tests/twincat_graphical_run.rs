@@ -1,0 +1,242 @@
+//! TwinCAT 3 LD and FBD bodies (issue #13): the network list `<NWL>` of a `.TcPOU` read as ST in
+//! place (`crates/ladder-compiler/src/twincat_nwl.rs`) and run end to end through `ladderc run`.
+//! The fixtures under `fixtures/twincat_graphical/` are written for these tests (README there): an LD
+//! program and an FBD function block whose logic is also written in ST; both runs must trace the
+//! same values, and the values must be the ones the networks say.
+//!
+//! Record of the public projects (README "TwinCAT 3 projects"): the 66 `.plcproj` files of today's
+//! snapshots of tcunit/TcUnit, stefanbesler/struckig, benhar-dev/tc3-object-simple-packml,
+//! Keiji01/TwinCAT3, MatheusNespolo/TwinCAT, SeanyCash/TwinCAT_CNC, ziyuEngineer/TwinCAT,
+//! ergouliu/Twincat, tjkin1201/Twincat, 50 scans each, before and after this change. Their `.TcPOU`
+//! files hold 15 LD/FBD network lists (12 in Keiji01/TwinCAT3, 3 in MatheusNespolo/TwinCAT), one
+//! CFC body and no SFC body.
+//!
+//! | | run | rejected | first error a graphical body (E0321) |
+//! |---|---|---|---|
+//! | before (LD/FBD is E0321) | 22 | 44 | 8 |
+//! | after (LD/FBD read) | 25 | 41 | 1 (CFC, MatheusNespolo's `MAIN`) |
+//!
+//! Of the 7 projects the network lists stopped: the three with Keiji01's `FB_Clock` (an LD blinker
+//! of two TONs) run and blink (Safety Junction TEST: `bEnableClockEK1960_0000` 1 s off, 1 s on); the
+//! other four stop later, at a Beckhoff library type (E1003: `T_AmsNetId`, `FB_S_UPS_CX51x0`,
+//! `FB_WritePersistentData`) or at an ST chained assignment in another POU (E0104), each after all
+//! their network lists were read.
+
+mod common;
+use common::{column, diagnostic_heads, ladderc};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/twincat_graphical")
+        .join(rel)
+}
+
+const WATCH: &str = "MAIN.bMotor,MAIN.bIdle,MAIN.bSeen,MAIN.bPulse,MAIN.bEdge,MAIN.nCount,\
+                     MAIN.nCopy,MAIN.bDone,MAIN.nNotSkipped,MAIN.bLamp,MAIN.bNever,MAIN.bAlways";
+
+/// Start at cycle 2 (for two cycles), stop at cycle 40 (for two cycles).
+const STIMULUS: &str = "cycle,variable,value\n2,MAIN.bStart,1\n4,MAIN.bStart,0\n\
+                        40,MAIN.bStop,1\n42,MAIN.bStop,0\n";
+
+/// `ladderc run FILES` for 50 scans of 10 ms with [`STIMULUS`], C built with the sanitizers: the trace.
+fn run(files: &[PathBuf]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, STIMULUS).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .args(files)
+        .args(["--cycles", "50", "--cycle-ms", "10", "--sanitize"])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", WATCH])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{files:?}: {stderr}");
+    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+fn ld_trace() -> String {
+    run(&[fixture("blink/MAIN.TcPOU"), fixture("blink/FB_Blink.TcPOU")])
+}
+
+fn bools(trace: &str, name: &str) -> Vec<bool> {
+    column(trace, name).iter().map(|&v| v != 0.0).collect()
+}
+
+#[test]
+fn ld_and_fbd_networks_trace_what_the_same_logic_in_st_traces() {
+    let ld = ld_trace();
+    let st = run(&[fixture("blink_st/blink.st")]);
+    for name in WATCH.split(',') {
+        assert_eq!(column(&ld, name), column(&st, name), "{name}");
+    }
+    // the logic is not idle: the motor runs, the blinker blinks, the counter counts
+    assert!(column(&ld, "MAIN.nCount").iter().any(|&n| n >= 5.0));
+}
+
+#[test]
+fn contacts_coils_set_reset_and_the_power_rail() {
+    let t = ld_trace();
+    let motor = bools(&t, "MAIN.bMotor");
+    // network 1: (bStart OR bMotor) AND NOT bStop latches from cycle 2 to cycle 40
+    let want: Vec<bool> = (0..50).map(|c| (2..40).contains(&c)).collect();
+    assert_eq!(motor, want);
+    // its negated coil
+    let idle = bools(&t, "MAIN.bIdle");
+    assert!(idle.iter().zip(&motor).all(|(i, m)| i != m));
+    // networks 2 and 3: set coil on bStart, reset coil on bStop
+    assert_eq!(bools(&t, "MAIN.bSeen"), want);
+    // network 10 is commented out: bNever stays FALSE; network 11's coil sits on the power rail
+    assert!(bools(&t, "MAIN.bNever").iter().all(|b| !b));
+    assert!(bools(&t, "MAIN.bAlways").iter().all(|b| *b));
+}
+
+#[test]
+fn function_block_boxes_en_eno_branches_and_the_fbd_blinker() {
+    let t = ld_trace();
+    // FB_Blink (FBD): enabled at cycle 2, 30 ms low (TON_1), then high until TON_2's 20 ms have
+    // elapsed (the scan after), and again; stopped at cycle 40
+    let pulse = bools(&t, "MAIN.bPulse");
+    let highs: Vec<usize> = (0..50).filter(|&c| pulse[c]).collect();
+    assert_eq!(
+        highs,
+        [5, 6, 7, 12, 13, 14, 19, 20, 21, 26, 27, 28, 33, 34, 35]
+    );
+    // network 5: the branch of R_TRIG's Q is the coil bEdge and the EN of ADD (nCount + 1), whose
+    // ENO is the EN of MOVE (nCopy := nCount)
+    let edge = bools(&t, "MAIN.bEdge");
+    let rising: Vec<usize> = (0..50)
+        .filter(|&c| pulse[c] && (c == 0 || !pulse[c - 1]))
+        .collect();
+    assert_eq!((0..50).filter(|&c| edge[c]).collect::<Vec<_>>(), rising);
+    let count = column(&t, "MAIN.nCount");
+    let mut n = 0.0;
+    for c in 0..50 {
+        if edge[c] {
+            n += 1.0;
+        }
+        assert_eq!(count[c], n, "cycle {c}");
+    }
+    assert_eq!(column(&t, "MAIN.nCopy"), count);
+    // the action box (ACT_Lamp, LD): bMotor AND bPulse
+    let (lamp, motor) = (bools(&t, "MAIN.bLamp"), bools(&t, "MAIN.bMotor"));
+    assert!((0..50).all(|c| lamp[c] == (motor[c] && pulse[c])));
+}
+
+#[test]
+fn a_jump_skips_the_networks_up_to_its_label() {
+    let t = ld_trace();
+    // network 7 jumps to `Skip` (network 9) once nCount >= 3 (network 6): network 8, which counts
+    // the scans, runs until then and never after
+    let done = bools(&t, "MAIN.bDone");
+    let count = column(&t, "MAIN.nCount");
+    assert!((0..50).all(|c| done[c] == (count[c] >= 3.0)));
+    let first_done = done.iter().position(|d| *d).expect("done");
+    let scans = column(&t, "MAIN.nNotSkipped");
+    for (c, &s) in scans.iter().enumerate() {
+        let want = (c.min(first_done - 1) + 1) as f64;
+        assert_eq!(s, want, "cycle {c}");
+    }
+    // the networks after the label still run: the lamp follows the blinker after the jump too
+    assert!((first_done..50).any(|c| bools(&t, "MAIN.bLamp")[c]));
+}
+
+/// `ladderc check FILE`: exit code and the diagnostic heads (short format, folder left out).
+fn check(file: &Path) -> (Option<i32>, Vec<String>) {
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(file)
+        .output()
+        .unwrap();
+    let dir = file.parent().unwrap();
+    (out.status.code(), diagnostic_heads(&out.stderr, dir, false))
+}
+
+#[test]
+fn what_is_not_read_is_one_located_error_naming_the_element_and_its_network() {
+    let cases = [
+        (
+            "P_Unknown.TcPOU",
+            "P_Unknown.TcPOU:89:21: error[E0325]: TwinCAT LD/FBD body of `P_Unknown`, network 2: \
+             element `BoxTreeCoilRange` is not one ladderc reads in a network list",
+        ),
+        (
+            "P_Inject.TcPOU",
+            "P_Inject.TcPOU:56:27: error[E0326]: TwinCAT LD/FBD body of `P_Inject`, network 1: \
+             operand `bA; bB := TRUE` is not one ST operand (it holds `;`)",
+        ),
+        (
+            "P_Back.TcPOU",
+            "P_Back.TcPOU:93:29: error[E0325]: TwinCAT LD/FBD body of `P_Back`, network 2: jump \
+             back to `Top` (network 1): ladderc reads forward jumps only",
+        ),
+        (
+            "P_ActionEn.TcPOU",
+            "P_ActionEn.TcPOU:103:9: error[E0327]: TwinCAT LD/FBD body: the action \
+             `P_ActionEn.ACT_Inc` has no declarations for the variables its networks need (EN, \
+             branches, jumps)",
+        ),
+    ];
+    for (file, head) in cases {
+        let path = fixture("errors").join(file);
+        let (code, heads) = check(&path);
+        assert_eq!(code, Some(1), "{file}");
+        assert_eq!(heads, [head.to_string()], "{file}");
+        // the place is the element named: its line holds it
+        let line: usize = head.split(':').nth(1).unwrap().parse().unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let at = text.lines().nth(line - 1).unwrap();
+        let named = match file {
+            "P_Unknown.TcPOU" => "BoxTreeCoilRange",
+            "P_Inject.TcPOU" => "bA; bB := TRUE",
+            "P_Back.TcPOU" => "\"Top\"",
+            _ => "<NWL>",
+        };
+        assert!(at.contains(named), "{file}:{line}: {at}");
+    }
+}
+
+#[test]
+fn an_error_of_the_st_front_end_points_at_the_operand_in_the_network() {
+    let path = fixture("errors/P_Undeclared.TcPOU");
+    let (code, heads) = check(&path);
+    assert_eq!(code, Some(1));
+    assert_eq!(heads.len(), 1, "{heads:?}");
+    assert!(
+        heads[0].contains("error[E1001]: undeclared name `bMissing`"),
+        "{heads:?}"
+    );
+    let line: usize = heads[0].split(':').nth(1).unwrap().parse().unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        text.lines().nth(line - 1).unwrap().contains("\"bMissing\""),
+        "line {line}"
+    );
+}
+
+#[test]
+fn a_cfc_body_stays_one_located_e0321() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("P_Cfc.TcPOU");
+    std::fs::write(
+        &path,
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
+         <POU Name=\"P_Cfc\">\n    <Declaration><![CDATA[PROGRAM P_Cfc\nVAR x : BOOL; END_VAR\n]]>\
+         </Declaration>\n    <Implementation>\n      <CFC>\n        <XmlArchive />\n      </CFC>\n    \
+         </Implementation>\n  </POU>\n</TcPlcObject>\n",
+    )
+    .unwrap();
+    let (code, heads) = check(&path);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        ["P_Cfc.TcPOU:8:7: error[E0321]: TwinCAT object file: the body of `P_Cfc` is in CFC, which \
+          ladderc cannot read in a TwinCAT source file (it reads ST bodies and LD/FBD network \
+          lists)"]
+    );
+}
