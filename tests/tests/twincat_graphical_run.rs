@@ -146,6 +146,49 @@ fn a_jump_skips_the_networks_up_to_its_label() {
     assert!((first_done..50).any(|c| bools(&t, "MAIN.bLamp")[c]));
 }
 
+#[test]
+fn edge_contacts_and_a_return_coil() {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n3,P_Edges.bIn,1\n6,P_Edges.bIn,0\n8,P_Edges.bIn,1\n9,P_Edges.bIn,0\n\
+         12,P_Edges.bHold,1\n15,P_Edges.bHold,0\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("edges/P_Edges.TcPOU"))
+        .args(["--cycles", "18", "--cycle-ms", "10", "--sanitize"])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args(["--trace", "-", "--watch"])
+        .arg("P_Edges.bIn,P_Edges.nRises,P_Edges.nFalls,P_Edges.nAfter")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let t = String::from_utf8_lossy(&out.stdout);
+    // a rising-edge contact (P) counts the scans where bIn became TRUE, a falling-edge one (N)
+    // those where it became FALSE
+    let b = bools(&t, "P_Edges.bIn");
+    let (mut rises, mut falls) = (0.0, 0.0);
+    let (r, f) = (column(&t, "P_Edges.nRises"), column(&t, "P_Edges.nFalls"));
+    for c in 0..18 {
+        let before = c > 0 && b[c - 1];
+        rises += f64::from(u8::from(b[c] && !before));
+        falls += f64::from(u8::from(!b[c] && before));
+        assert_eq!((r[c], f[c]), (rises, falls), "cycle {c}");
+    }
+    assert_eq!((rises, falls), (2.0, 2.0));
+    // network 3 returns while bHold (cycles 12 to 14): network 4 does not count those scans
+    let after = column(&t, "P_Edges.nAfter");
+    let want: Vec<f64> = (0..18)
+        .map(|c: i32| f64::from(c.min(11) + 1 + (c - 14).max(0)))
+        .collect();
+    assert_eq!(after, want);
+}
+
 /// `ladderc check FILE`: exit code and the diagnostic heads (short format, folder left out).
 fn check(file: &Path) -> (Option<i32>, Vec<String>) {
     let out = ladderc()

@@ -11,10 +11,11 @@
 //! that output), `BoxTreeOperand` (a contact or input: variable or literal), `BoxTreeDemux` (a
 //! branch of the power rail or a fork of a line: its `Input` evaluated once, named by `VarId`, and
 //! each later `BoxTreeDemux` of that `VarId` reads it), `BoxTreeTerminator` (the left power rail: TRUE).
-//! An operand's `Flags` value is what its symbol is: 0 plain, 1 negated (contact `/`, coil `/`),
-//! 2 set coil (S), 3 reset coil (R), 4 jump to the network of that label. (The archive format is not
-//! published; these values are read from the files of public projects: a first-scan flag reset
-//! at the end of its network is 3, a jump to the network labelled `PortaAberta` is 4.)
+//! An operand's `Flags` are the bits of CODESYS's `IFlags` (Negation 1, Set 2, Jump 4, Return 8,
+//! Rtrig 16, Ftrig 32): on a contact or box input, 1 negated (`/`), 16 rising edge (`P`), 32 falling
+//! edge (`N`); on an output, 0 a coil, 1 a negated coil, 2 a set coil (S), 3 a reset coil (R: a
+//! negated set, as a first-scan flag reset at the end of its network is stored in a public project),
+//! 4 a jump to the network of that label, 8 a return.
 //!
 //! Input: the `<NWL>` element and the name of the body (for messages). Output: [`NwlBody`], the ST
 //! tokens in order, each with the byte offset of the archive element it stands for (the caller
@@ -105,7 +106,9 @@ pub(crate) fn lower(file: FileId, nwl: &Element, what: &str) -> Res<NwlBody> {
             && nw.walk().any(|e| {
                 e.attr("n") == Some("OutputItems")
                     && e.name() == "l2"
-                    && e.children.iter().any(|o| operand_flags(o) == Some(4))
+                    && e.children
+                        .iter()
+                        .any(|o| operand_flags(o) == Some(FLAG_JUMP))
             });
     }
     if l.jumps {
@@ -196,10 +199,12 @@ impl Lowering {
                 self.operand(op)
             }
             "BoxTreeAssign" => self.assign(node, true),
-            "BoxTreeTerminator" => Ok(Value {
-                expr: vec![tok("TRUE", node.tag_start())],
-                guard: None,
-            }),
+            "BoxTreeTerminator" if prop(node, "Input").is_none_or(|i| i.name() == "n") => {
+                Ok(Value {
+                    expr: vec![tok("TRUE", node.tag_start())],
+                    guard: None,
+                })
+            }
             "BoxTreeDemux" => self.split(node),
             "BoxTreeBox" => match self.boxed(node)? {
                 Some(v) => Ok(v),
@@ -227,22 +232,67 @@ impl Lowering {
                 "an input of the network is not connected (its operand is empty)".into(),
             ));
         }
-        let mut expr = Vec::new();
-        match operand_flags(op) {
-            Some(0) | None => {}
-            Some(1) => expr.push(tok("NOT", at)),
-            Some(f) => {
-                return Err(self.error_at(
-                    code::E0325,
-                    op,
-                    format!(
-                        "operand `{text}` has flags {f}, which ladderc does not read on an input"
-                    ),
-                ))
+        let v = Value {
+            expr: wrap(&text, at),
+            guard: None,
+        };
+        self.input_flags(
+            v,
+            operand_flags(op).unwrap_or(0),
+            op,
+            &format!("operand `{text}`"),
+        )
+    }
+
+    /// An input's value as its flags say: plain, negated (`/`), rising edge (`P`, 16) or falling
+    /// edge (`N`, 32), each edge with a memory of its own that keeps the last scan's value (as
+    /// R_TRIG and F_TRIG do: IEC 61131-3 edition 3, 6.6.3.5.3 and 8.2.3).
+    fn input_flags(&mut self, v: Value, flags: u32, el: &Element, what: &str) -> Res<Value> {
+        let at = v.expr.first().map_or(el.tag_start(), |t| t.at);
+        match flags {
+            0 => Ok(v),
+            1 => {
+                let mut expr = vec![tok("NOT", at), tok("(", at)];
+                expr.extend(v.expr);
+                expr.push(tok(")", at));
+                Ok(Value {
+                    expr,
+                    guard: v.guard,
+                })
             }
+            FLAG_RISING | FLAG_FALLING => {
+                self.no_guard(&v, el)?;
+                let n = self.body.temps.len() + 1;
+                let (edge, mem) = (format!("_nwl_edge{n}"), format!("_nwl_mem{n}"));
+                self.body.temps.push((edge.clone(), "BOOL".into()));
+                self.body.temps.push((mem.clone(), "BOOL".into()));
+                self.stmt(&[&edge, ":=", "("], at);
+                if flags == FLAG_FALLING {
+                    self.stmt(&["NOT", "("], at);
+                }
+                self.push_all(v.expr.clone());
+                if flags == FLAG_FALLING {
+                    self.stmt(&[")", ")", "AND", &mem, ";"], at);
+                } else {
+                    self.stmt(&[")", "AND", "NOT", &mem, ";"], at);
+                }
+                self.stmt(&[&mem, ":="], at);
+                self.push_all(v.expr);
+                self.push(";", at);
+                Ok(Value {
+                    expr: vec![tok(&edge, at)],
+                    guard: None,
+                })
+            }
+            f => Err(self.error_at(
+                code::E0325,
+                el,
+                format!(
+                    "{what} has flags {f} ({}), which ladderc does not read on an input",
+                    flag_names(f)
+                ),
+            )),
         }
-        expr.extend(wrap(&text, at));
-        Ok(Value { expr, guard: None })
     }
 
     /// The operand text of an `Operand` object (its `"..."` quotes removed), checked to be one ST
@@ -274,7 +324,10 @@ impl Lowering {
         let outs: Vec<&Element> = output_items(node)
             .into_iter()
             .filter(|o| o.name() == "o")
-            .filter(|o| string(o, "Operand").is_some_and(|t| !t.trim().is_empty()))
+            .filter(|o| {
+                string(o, "Operand").is_some_and(|t| !t.trim().is_empty())
+                    || operand_flags(o).unwrap_or(0) & (FLAG_JUMP | FLAG_RETURN) != 0
+            })
             .collect();
         let first_plain = outs
             .first()
@@ -313,7 +366,8 @@ impl Lowering {
     /// for a plain coil, the target (which then holds the value).
     fn coil(&mut self, out: &Element, v: &Value) -> Res<Option<Vec<Tok>>> {
         let target = self.operand_text(out)?;
-        if target.is_empty() {
+        let flags = operand_flags(out).unwrap_or(0);
+        if target.is_empty() && flags != FLAG_RETURN {
             return Ok(None);
         }
         let place = prop(out, "Operand").unwrap_or(out);
@@ -321,7 +375,6 @@ impl Lowering {
         if let Some(g) = &v.guard {
             self.stmt(&["IF", g, "THEN"], at);
         }
-        let flags = operand_flags(out).unwrap_or(0);
         match flags {
             0 | 1 => {
                 self.push_all(wrap(&target, at));
@@ -336,7 +389,8 @@ impl Lowering {
                 }
                 self.push(";", at);
             }
-            2 | 3 => {
+            // a reset coil is a negated set coil (CODESYS and TwinCAT store R as Set + Negation)
+            FLAG_SET | FLAG_RESET => {
                 self.push("IF", at);
                 self.push_all(v.expr.clone());
                 self.push("THEN", at);
@@ -352,7 +406,13 @@ impl Lowering {
                     at,
                 );
             }
-            4 => {
+            FLAG_RETURN => {
+                // IEC 61131-3 edition 3, 8.2.7: a conditional return ends the body
+                self.push("IF", at);
+                self.push_all(v.expr.clone());
+                self.stmt(&["THEN", "RETURN", ";", "END_IF", ";"], at);
+            }
+            FLAG_JUMP => {
                 let Some(&to) = self.labels.get(&target.to_ascii_uppercase()) else {
                     return Err(self.error_at(
                         code::E0325,
@@ -381,7 +441,10 @@ impl Lowering {
                 return Err(self.error_at(
                     code::E0325,
                     place,
-                    format!("output `{target}` has flags {f}, which ladderc does not read"),
+                    format!(
+                        "output `{target}` has flags {f} ({}), which ladderc does not read",
+                        flag_names(f)
+                    ),
                 ))
             }
         }
@@ -526,25 +589,15 @@ impl Lowering {
                 args.push((name, None));
                 continue;
             }
-            let mut v = self.value(input, cet)?;
+            let v = self.value(input, cet)?;
             self.no_guard(&v, input)?;
-            match in_flags.get(k).copied().flatten() {
-                None | Some(0) => {}
-                Some(1) => {
-                    let mut e = vec![tok("NOT", at), tok("(", at)];
-                    e.extend(v.expr);
-                    e.push(tok(")", at));
-                    v.expr = e;
-                }
-                Some(f) => return Err(self.error_at(
-                    code::E0325,
-                    input,
-                    format!(
-                        "input {} of box `{box_type}` has flags {f}, which ladderc does not read",
-                        k + 1
-                    ),
-                )),
-            }
+            let flags = in_flags.get(k).copied().flatten().unwrap_or(0);
+            let v = self.input_flags(
+                v,
+                flags,
+                input,
+                &format!("input {} of box `{box_type}`", k + 1),
+            )?;
             args.push((name, Some(v)));
         }
         // EN: the first input; the power rail (or nothing) is TRUE and needs no test
@@ -880,6 +933,31 @@ impl Lowering {
             format!("box `{name}` does not name a function, block or action"),
         )
     }
+}
+
+/// The bits of an operand's `Flags` (CODESYS's `IFlags`: Negation, Set, Jump, Return, Rtrig,
+/// Ftrig); a reset coil is Set + Negation.
+const FLAG_NEGATION: u32 = 1;
+const FLAG_SET: u32 = 2;
+const FLAG_RESET: u32 = FLAG_SET | FLAG_NEGATION;
+const FLAG_JUMP: u32 = 4;
+const FLAG_RETURN: u32 = 8;
+const FLAG_RISING: u32 = 16;
+const FLAG_FALLING: u32 = 32;
+
+/// The names of the bits set in `f` (`Set+Negation`), for messages.
+fn flag_names(f: u32) -> String {
+    let names = ["Negation", "Set", "Jump", "Return", "Rtrig", "Ftrig"];
+    let mut out: Vec<String> = names
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| f & (1 << k) != 0)
+        .map(|(_, n)| (*n).to_string())
+        .collect();
+    if f >> names.len() != 0 {
+        out.push(format!("{:#x}", f >> names.len() << names.len()));
+    }
+    out.join("+")
 }
 
 /// Operators whose result is BOOL.
