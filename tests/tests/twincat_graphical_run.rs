@@ -222,7 +222,7 @@ fn what_is_not_read_is_one_located_error_naming_the_element_and_its_network() {
             "P_ActionEn.TcPOU",
             "P_ActionEn.TcPOU:103:9: error[E0327]: TwinCAT LD/FBD body: the action \
              `P_ActionEn.ACT_Inc` has no declarations for the variables its networks need (EN, \
-             branches, jumps)",
+             branches, edges, jumps)",
         ),
     ];
     for (file, head) in cases {

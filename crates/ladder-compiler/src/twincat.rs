@@ -575,7 +575,7 @@ fn write_body(
                 format!("TwinCAT LD/FBD body: {what}"),
             )
             .at(Span::new(file, nwl.tag_start(), nwl.tag_end()))
-            .with_hint("write the networks that use EN, branches or jumps in ST, or the action as a METHOD"),
+            .with_hint("write the networks that use EN, branches, edges or jumps in ST, or the action as a METHOD"),
         )
     };
     let limit = nwl.end();
@@ -585,7 +585,7 @@ fn write_body(
         if !declares {
             return Err(fail(&format!(
                 "the action `{}` has no declarations for the variables its networks need (EN, \
-                 branches, jumps)",
+                 branches, edges, jumps)",
                 lowered.what
             )));
         }
