@@ -311,6 +311,44 @@ impl Lowering {
                 format!("operand `{text}` is not one ST operand (it holds `{b}`)"),
             ));
         }
+        // a quote only as one whole string literal (`'on'`, `"x"`): else it would open a string
+        // that takes the following tokens
+        let quoted = |q: char| {
+            text.len() >= 2
+                && text.starts_with(q)
+                && text.ends_with(q)
+                && !text[1..text.len() - 1]
+                    .replace(&format!("${q}"), "")
+                    .contains(q)
+        };
+        if text.contains(['\'', '"']) && !quoted('\'') && !quoted('"') {
+            let at = prop(op, "Operand").unwrap_or(op);
+            return Err(self.error_at(
+                code::E0326,
+                at,
+                format!("operand `{text}` is not one ST operand (a quote that is not one string literal)"),
+            ));
+        }
+        Ok(text)
+    }
+
+    /// [`Lowering::operand_text`] of what is written or called (a coil's variable, a block's
+    /// instance): empty, or beginning with a name.
+    fn target_text(&self, op: &Element) -> Res<String> {
+        let text = self.operand_text(op)?;
+        if text
+            .chars()
+            .next()
+            .is_some_and(|c| !(c.is_ascii_alphabetic() || c == '_'))
+            || ["TRUE", "FALSE"].contains(&text.to_ascii_uppercase().as_str())
+        {
+            let at = prop(op, "Operand").unwrap_or(op);
+            return Err(self.error_at(
+                code::E0326,
+                at,
+                format!("`{text}` is written or called here, and it is not a variable"),
+            ));
+        }
         Ok(text)
     }
 
@@ -365,8 +403,12 @@ impl Lowering {
     /// Writes `v` to the output operand `out` as its flags say (plain, negated, set, reset, jump);
     /// for a plain coil, the target (which then holds the value).
     fn coil(&mut self, out: &Element, v: &Value) -> Res<Option<Vec<Tok>>> {
-        let target = self.operand_text(out)?;
         let flags = operand_flags(out).unwrap_or(0);
+        let target = if flags & (FLAG_JUMP | FLAG_RETURN) != 0 {
+            self.operand_text(out)?
+        } else {
+            self.target_text(out)?
+        };
         if target.is_empty() && flags != FLAG_RETURN {
             return Ok(None);
         }
@@ -626,7 +668,7 @@ impl Lowering {
         }
         // the expression of the box's result (operators and functions) or of its outputs (blocks)
         let instance = prop(node, "Instance")
-            .map(|i| self.operand_text(i))
+            .map(|i| self.target_text(i))
             .transpose()?
             .unwrap_or_default();
         let result: Option<Vec<Tok>> = match call.as_str() {
@@ -865,6 +907,19 @@ impl Lowering {
                 e.extend([tok("NOT", at), tok("(", at)]);
                 e.extend(values.into_iter().flatten());
                 e.push(tok(")", at));
+            }
+            // another standard operator (SEL, MAX, LIMIT, MUX, SHL, ABS, SQRT, a conversion such as
+            // INT_TO_REAL ...): the call type names it, or the box is a conversion; any other call
+            // type (a method, ...) is not read as a function
+            (None, _)
+                if !op.eq_ignore_ascii_case(&box_type.replace('_', ""))
+                    && !box_type.to_ascii_uppercase().contains("_TO_") =>
+            {
+                return Err(self.error_at(
+                    code::E0325,
+                    node,
+                    format!("box `{box_type}` of call type `{op}`, which ladderc does not read"),
+                ))
             }
             (None, _) => {
                 check_name(box_type).map_err(|_| self.bad_name(node, box_type))?;
