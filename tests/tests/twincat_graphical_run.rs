@@ -263,14 +263,79 @@ fn an_error_of_the_st_front_end_points_at_the_operand_in_the_network() {
 }
 
 #[test]
-fn a_cfc_body_stays_one_located_e0321() {
+fn a_cfc_chart_runs_in_data_flow_order() {
     let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("P_Cfc.TcPOU");
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n5,P_Cooler.rTemp,13.5\n15,P_Cooler.rTemp,12\n\
+         20,P_Cooler.rTemp,10.5\n25,P_Cooler.rTemp,12\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("cfc/P_Cooler.TcPOU"))
+        .args(["--cycles", "30", "--cycle-ms", "10", "--sanitize"])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args(["--trace", "-", "--watch"])
+        .arg("P_Cooler.rTemp,P_Cooler.bCooler,P_Cooler.bSeen,P_Cooler.bNotCool,P_Cooler.bLate")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let t = String::from_utf8_lossy(&out.stdout);
+    // SR(SET1 := rTemp > rSet + rBand, RESET := rTemp < rSet - rBand), rSet 12, rBand 1: on above
+    // 13, off below 11, held in between
+    let temp = column(&t, "P_Cooler.rTemp");
+    let cooler = bools(&t, "P_Cooler.bCooler");
+    let mut on = false;
+    for c in 0..30 {
+        if temp[c] > 13.0 {
+            on = true;
+        } else if temp[c] < 11.0 {
+            on = false;
+        }
+        assert_eq!(cooler[c], on, "cycle {c}");
+    }
+    assert!(cooler[5] && cooler[19] && !cooler[20]);
+    // the set output stays TRUE once set; the negated pin gives the opposite of the cooler
+    let seen = bools(&t, "P_Cooler.bSeen");
+    assert!((0..30).all(|c| seen[c] == (c >= 5)));
+    let not_cool = bools(&t, "P_Cooler.bNotCool");
+    assert!((0..30).all(|c| not_cool[c] != cooler[c]));
+    // the TON is listed before the SR box it reads, but runs after it (data flow): its IN is TRUE
+    // from cycle 5, so its 30 ms have elapsed at cycle 8 (cycle 9 in list order)
+    let late = bools(&t, "P_Cooler.bLate");
+    let highs: Vec<usize> = (0..30).filter(|&c| late[c]).collect();
+    assert_eq!(highs, (8..20).collect::<Vec<_>>());
+}
+
+#[test]
+fn a_cfc_feedback_loop_is_one_located_error() {
+    let path = fixture("errors/P_Loop.TcPOU");
+    let (code, heads) = check(&path);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        [
+            "P_Loop.TcPOU:17:19: error[E0325]: TwinCAT CFC body of `P_Loop`: a feedback loop \
+          (ladderc reads charts without feedback)"
+        ]
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.lines().nth(16).unwrap().contains("CFCBoxElement"));
+}
+
+#[test]
+fn an_sfc_body_stays_one_located_e0321() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("P_Sfc.TcPOU");
     std::fs::write(
         &path,
         "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
-         <POU Name=\"P_Cfc\">\n    <Declaration><![CDATA[PROGRAM P_Cfc\nVAR x : BOOL; END_VAR\n]]>\
-         </Declaration>\n    <Implementation>\n      <CFC>\n        <XmlArchive />\n      </CFC>\n    \
+         <POU Name=\"P_Sfc\">\n    <Declaration><![CDATA[PROGRAM P_Sfc\nVAR x : BOOL; END_VAR\n]]>\
+         </Declaration>\n    <Implementation>\n      <SFC>\n        <XmlArchive />\n      </SFC>\n    \
          </Implementation>\n  </POU>\n</TcPlcObject>\n",
     )
     .unwrap();
@@ -278,8 +343,7 @@ fn a_cfc_body_stays_one_located_e0321() {
     assert_eq!(code, Some(1));
     assert_eq!(
         heads,
-        ["P_Cfc.TcPOU:8:7: error[E0321]: TwinCAT object file: the body of `P_Cfc` is in CFC, which \
-          ladderc cannot read in a TwinCAT source file (it reads ST bodies and LD/FBD network \
-          lists)"]
+        ["P_Sfc.TcPOU:8:7: error[E0321]: TwinCAT object file: the body of `P_Sfc` is in SFC, which \
+          ladderc cannot read in a TwinCAT source file (it reads ST, LD/FBD and CFC bodies)"]
     );
 }

@@ -26,6 +26,7 @@ pub mod sfc;
 pub mod st_body;
 pub mod testgen;
 pub mod twincat;
+pub(crate) mod twincat_cfc;
 pub(crate) mod twincat_nwl;
 pub mod values;
 pub mod var_config;

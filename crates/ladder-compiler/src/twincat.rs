@@ -11,14 +11,16 @@
 //! `END_INTERFACE` (after an interface's `<Method>` declarations, each closed by `END_METHOD`) written into blank places of the markup after the texts they close; for a GVL also
 //! its name (its members are reachable qualified, `GVL.x`); for a task (`.TcTTO`) its name, cycle
 //! time, priority and the programs it calls. A body in LD or FBD (TwinCAT's network list `<NWL>`)
-//! is read as ST by [`crate::twincat_nwl`], its tokens written into the blank markup of its own
-//! networks (so a diagnostic points at the operand's or box's line), after a VAR block of the
-//! temporaries it needs. Invariants: never panics; a body in CFC or SFC is one located E0321
-//! naming it, a network element not understood one located E0325/E0326, an action whose networks
-//! need temporaries one E0327 (an action has no declarations); a file whose root is not
+//! is read as ST by [`crate::twincat_nwl`], a body in CFC by [`crate::twincat_cfc`], their tokens
+//! written into the blank markup of their own elements (so a diagnostic points at the operand's or
+//! box's line), after a VAR block of the temporaries they need. Invariants: never panics; a body in
+//! SFC is one located E0321 naming it, a graphical element not understood one located E0325/E0326,
+//! an action whose networks need temporaries one E0327 (an action has no declarations); a file whose
+//! root is not
 //! `<TcPlcObject>` gives `None`.
 
 use crate::codesys_v2::{local_name, root_name, Source};
+use crate::twincat_cfc;
 use crate::twincat_nwl::{self, NwlBody};
 use crate::xml::{self, Element};
 use diagnostics::{code, Diagnostic, FileId, Span};
@@ -508,7 +510,8 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
 enum Body<'e, 'a> {
     /// An ST text element (`<ST>`), copied in place.
     St(&'e Element<'a>),
-    /// An LD/FBD network list (`<NWL>`) read as ST tokens, written into its own markup.
+    /// An LD/FBD network list (`<NWL>`) or a CFC chart (`<CFC>`) read as ST tokens, written into
+    /// its own markup.
     Nwl(&'e Element<'a>, NwlBody),
 }
 
@@ -540,14 +543,17 @@ fn body_of<'e, 'a>(
     if lang.name() == "NWL" {
         return Ok(Some(Body::Nwl(lang, twincat_nwl::lower(file, lang, what)?)));
     }
-    // CFC, SFC, IL (TwinCAT's own forms)
+    if lang.name() == "CFC" {
+        return Ok(Some(Body::Nwl(lang, twincat_cfc::lower(file, lang, what)?)));
+    }
+    // SFC, IL (TwinCAT's own forms)
     let language = lang.name();
     Err(unreadable(
         file,
         lang,
         format!(
             "TwinCAT object file: the body of `{what}` is in {language}, which ladderc cannot read in \
-             a TwinCAT source file (it reads ST bodies and LD/FBD network lists)"
+             a TwinCAT source file (it reads ST, LD/FBD and CFC bodies)"
         ),
         "export the POU from TwinCAT as PLCopen XML (right-click > Export PLCopenXML) and give \
          ladderc that file: it reads LD, FBD and SFC there",
@@ -690,7 +696,7 @@ VAR n : INT; END_VAR
     }
 
     #[test]
-    fn an_empty_network_list_and_a_cfc_body_are_one_located_error_and_other_roots_are_not_twincat()
+    fn an_empty_network_list_and_an_sfc_body_are_one_located_error_and_other_roots_are_not_twincat()
     {
         let ld = "<TcPlcObject><POU Name=\"P\"><Declaration><![CDATA[PROGRAM P]]></Declaration>\
                   <Implementation><NWL><XmlArchive/></NWL></Implementation></POU></TcPlcObject>";
@@ -699,12 +705,12 @@ VAR n : INT; END_VAR
         };
         assert_eq!(d.code, code::E0325);
         assert!(d.message.contains("no network list"), "{}", d.message);
-        let cfc = ld.replace("NWL", "CFC");
-        let Some(Err(d)) = object_source(FileId(0), &cfc) else {
+        let sfc = ld.replace("NWL", "SFC");
+        let Some(Err(d)) = object_source(FileId(0), &sfc) else {
             panic!("an error");
         };
         assert_eq!(d.code, code::E0321);
-        assert!(d.message.contains("in CFC"), "{}", d.message);
+        assert!(d.message.contains("in SFC"), "{}", d.message);
         assert!(object_source(FileId(0), "<project/>").is_none());
         assert_eq!(first_keyword("(* c *) // x\n {a 'b'} program P"), "PROGRAM");
     }

@@ -823,7 +823,11 @@ impl Lowering {
                 self.push(",", at);
             }
             first = false;
-            self.push(n, at);
+            // TwinCAT's names of the bistables' inputs (SR.SET1, RS.RESET1) are IEC's
+            self.push(
+                crate::catalogue::vendor_pin_alias(box_type, n).unwrap_or(n),
+                at,
+            );
             self.push(":=", at);
             self.push_all(v.expr.clone());
         }
@@ -1020,7 +1024,7 @@ const BOOLEAN_OPERATORS: &[&str] = &[
     "And", "Or", "Xor", "Not", "Gt", "Ge", "Eq", "Ne", "Le", "Lt",
 ];
 
-fn tok(text: &str, at: usize) -> Tok {
+pub(crate) fn tok(text: &str, at: usize) -> Tok {
     Tok {
         text: text.to_string(),
         at,
@@ -1028,7 +1032,7 @@ fn tok(text: &str, at: usize) -> Tok {
 }
 
 /// An operand as tokens: one, in parentheses when it holds blanks (an expression).
-fn wrap(text: &str, at: usize) -> Vec<Tok> {
+pub(crate) fn wrap(text: &str, at: usize) -> Vec<Tok> {
     if text.contains(char::is_whitespace) {
         vec![tok("(", at), tok(text, at), tok(")", at)]
     } else {
@@ -1042,7 +1046,7 @@ fn wrap_call(text: &str, at: usize) -> Vec<Tok> {
 }
 
 /// A dotted name (`Act`, `inst.Act`, `INT_TO_REAL`).
-fn check_name(name: &str) -> Result<(), ()> {
+pub(crate) fn check_name(name: &str) -> Result<(), ()> {
     let ok = !name.is_empty()
         && name.split('.').all(|p| {
             p.chars()
@@ -1066,12 +1070,12 @@ fn kind<'a>(el: &Element<'a>, cet: Option<&'a str>) -> &'a str {
 }
 
 /// The child of an archive object with `n="name"`.
-fn prop<'e, 'a>(o: &'e Element<'a>, name: &str) -> Option<&'e Element<'a>> {
+pub(crate) fn prop<'e, 'a>(o: &'e Element<'a>, name: &str) -> Option<&'e Element<'a>> {
     o.children.iter().find(|c| c.attr("n") == Some(name))
 }
 
 /// The text of the `<v n="name">` child, a `"..."` string unquoted.
-fn string(o: &Element, name: &str) -> Option<String> {
+pub(crate) fn string(o: &Element, name: &str) -> Option<String> {
     let v = prop(o, name).filter(|v| v.name() == "v")?;
     let raw = v.text_ref();
     let t = raw.trim();
