@@ -1,26 +1,31 @@
-//! TwinCAT 3 LD and FBD bodies (issue #13): the network list `<NWL>` of a `.TcPOU` read as ST in
-//! place (`crates/ladder-compiler/src/twincat_nwl.rs`) and run end to end through `ladderc run`.
-//! The fixtures under `fixtures/twincat_graphical/` are written for these tests (README there): an LD
-//! program and an FBD function block whose logic is also written in ST; both runs must trace the
-//! same values, and the values must be the ones the networks say.
+//! TwinCAT 3 graphical bodies (issue #13): the LD/FBD network list `<NWL>` and the CFC chart `<CFC>`
+//! of a `.TcPOU`, read as ST in place (`crates/ladder-compiler/src/twincat_nwl.rs`,
+//! `twincat_cfc.rs`) and run end to end through `ladderc run`. The fixtures under
+//! `fixtures/twincat_graphical/` are written for these tests (README there): an LD program and an
+//! FBD function block whose logic is also written in ST (both runs must trace the same values, and
+//! the values must be the ones the networks say), edge contacts and a return, a CFC chart listed
+//! against its data flow, and one rejected body per diagnostic.
 //!
 //! Record of the public projects (README "TwinCAT 3 projects"): the 66 `.plcproj` files of today's
 //! snapshots of tcunit/TcUnit, stefanbesler/struckig, benhar-dev/tc3-object-simple-packml,
 //! Keiji01/TwinCAT3, MatheusNespolo/TwinCAT, SeanyCash/TwinCAT_CNC, ziyuEngineer/TwinCAT,
 //! ergouliu/Twincat, tjkin1201/Twincat, 50 scans each, before and after this change. Their `.TcPOU`
 //! files hold 15 LD/FBD network lists (12 in Keiji01/TwinCAT3, 3 in MatheusNespolo/TwinCAT), one
-//! CFC body and no SFC body.
+//! CFC chart (MatheusNespolo's) and no SFC body.
 //!
 //! | | run | rejected | first error a graphical body (E0321) |
 //! |---|---|---|---|
-//! | before (LD/FBD is E0321) | 22 | 44 | 8 |
-//! | after (LD/FBD read) | 25 | 41 | 1 (CFC, MatheusNespolo's `MAIN`) |
+//! | before (graphical bodies E0321) | 22 | 44 | 8 |
+//! | LD/FBD read | 25 | 41 | 1 (the CFC chart) |
+//! | CFC read too | 26 | 40 | 0 |
 //!
-//! Of the 7 projects the network lists stopped: the three with Keiji01's `FB_Clock` (an LD blinker
-//! of two TONs) run and blink (Safety Junction TEST: `bEnableClockEK1960_0000` 1 s off, 1 s on); the
-//! other four stop later, at a Beckhoff library type (E1003: `T_AmsNetId`, `FB_S_UPS_CX51x0`,
-//! `FB_WritePersistentData`) or at an ST chained assignment in another POU (E0104), each after all
-//! their network lists were read.
+//! The four that run now: the three with Keiji01's `FB_Clock` (an LD blinker of two TONs; Safety
+//! Junction TEST's `bEnableClockEK1960_0000` is 1 s off, 1 s on) and MatheusNespolo's refrigerator
+//! (its CFC `MAIN` switches `GVL_Var.Compressor` on above 13 and off below 11 degrees as its ST
+//! simulation warms and cools `GVL_Var.TempAtual`). The other four the network lists stopped now
+//! stop later, at a Beckhoff library type (E1003: `T_AmsNetId`, `FB_S_UPS_CX51x0`,
+//! `FB_WritePersistentData`) or at an ST chained assignment in another POU (E0104), after all their
+//! network lists were read.
 
 mod common;
 use common::{column, diagnostic_heads, ladderc};

@@ -367,13 +367,15 @@ impl Chart<'_, '_, '_, '_> {
                             self.toks.push(tok(w, at));
                         }
                     }
-                    other => return Err((self.err)(
-                        code::E0325,
-                        node.el,
-                        format!(
+                    other => {
+                        return Err((self.err)(
+                            code::E0325,
+                            node.el,
+                            format!(
                             "output `{text}` with SetReset `{other}`, which ladderc does not read"
                         ),
-                    )),
+                        ))
+                    }
                 }
                 Ok(())
             }
