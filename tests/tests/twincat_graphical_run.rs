@@ -194,6 +194,35 @@ fn edge_contacts_and_a_return_coil() {
     assert_eq!(after, want);
 }
 
+#[test]
+fn an_action_reads_a_one_variable_en_where_it_is_used() {
+    // ACT_Inc (LD) is ADD(EN := bA, n, 1) -> n; an action declares no variables, so EN is read at
+    // the box (no element of the network writes bA)
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n3,P_ActionEn.bA,1\n6,P_ActionEn.bA,0\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("action/P_ActionEn.TcPOU"))
+        .args(["--cycles", "9", "--cycle-ms", "10", "--sanitize"])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", "P_ActionEn.bA,P_ActionEn.n"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let t = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        column(&t, "P_ActionEn.n"),
+        [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0, 3.0]
+    );
+}
+
 /// `ladderc check FILE`: exit code and the diagnostic heads (short format, folder left out).
 fn check(file: &Path) -> (Option<i32>, Vec<String>) {
     let out = ladderc()
@@ -224,10 +253,11 @@ fn what_is_not_read_is_one_located_error_naming_the_element_and_its_network() {
              back to `Top` (network 1): ladderc reads forward jumps only",
         ),
         (
-            "P_ActionEn.TcPOU",
-            "P_ActionEn.TcPOU:103:9: error[E0327]: TwinCAT LD/FBD body: the action \
-             `P_ActionEn.ACT_Inc` has no declarations for the variables its networks need (EN, \
-             branches, edges, jumps)",
+            "P_ActionAnd.TcPOU",
+            "P_ActionAnd.TcPOU:120:23: error[E0327]: TwinCAT LD/FBD body of `P_ActionAnd.ACT_Inc`, \
+             network 1: the EN of box `ADD` needs a variable of its own, and an action has no \
+             declarations (nor can it read the value where it is used: an element of the network \
+             writes it, or it is not one variable)",
         ),
     ];
     for (file, head) in cases {
@@ -243,7 +273,7 @@ fn what_is_not_read_is_one_located_error_naming_the_element_and_its_network() {
             "P_Unknown.TcPOU" => "BoxTreeCoilRange",
             "P_Inject.TcPOU" => "bA; bB := TRUE",
             "P_Back.TcPOU" => "\"Top\"",
-            _ => "<NWL>",
+            _ => "BoxTreeBox",
         };
         assert!(at.contains(named), "{file}:{line}: {at}");
     }

@@ -393,7 +393,7 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
         }
     };
     let mut at = out.copy(decl);
-    if let Some(body) = body_of(file, el, &name)? {
+    if let Some(body) = body_of(file, el, &name, true)? {
         at = write_body(file, out, at, &body, true)?;
     }
     let members: Vec<&Element> = el
@@ -422,7 +422,7 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
         let next = members.get(k + 1).map_or(el.end(), |n| n.tag_start());
         match m.name() {
             "Action" => {
-                let body = body_of(file, m, &what)?;
+                let body = body_of(file, m, &what, false)?;
                 // the keywords go into the markup before the body's text
                 let limit = body.as_ref().map_or(next, Body::tag_end);
                 if k >= last_method || !is_fb {
@@ -455,7 +455,7 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                 if let Some(d) = m.child("Declaration") {
                     at = out.copy(d);
                 }
-                if let Some(body) = body_of(file, m, &what)? {
+                if let Some(body) = body_of(file, m, &what, true)? {
                     at = write_body(file, out, at, &body, true)?;
                 }
                 at = out.place(at, next, "END_METHOD").ok_or_else(no_room)?;
@@ -480,7 +480,7 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                     let acc_next = accessors.get(j + 1).map_or(next, |n| n.tag_start());
                     let what = format!("{what}.{}", acc.name());
                     let decl = acc.child("Declaration");
-                    let body = body_of(file, acc, &what)?;
+                    let body = body_of(file, acc, &what, true)?;
                     let limit = decl
                         .map(|d| d.tag_end())
                         .or(body.as_ref().map(Body::tag_end))
@@ -530,6 +530,7 @@ fn body_of<'e, 'a>(
     file: FileId,
     el: &'e Element<'a>,
     what: &str,
+    declares: bool,
 ) -> Result<Option<Body<'e, 'a>>, Box<Diagnostic>> {
     let Some(imp) = el.child("Implementation") else {
         return Ok(None);
@@ -541,7 +542,10 @@ fn body_of<'e, 'a>(
         return Ok(Some(Body::St(lang)));
     }
     if lang.name() == "NWL" {
-        return Ok(Some(Body::Nwl(lang, twincat_nwl::lower(file, lang, what)?)));
+        return Ok(Some(Body::Nwl(
+            lang,
+            twincat_nwl::lower(file, lang, what, declares)?,
+        )));
     }
     if lang.name() == "CFC" {
         return Ok(Some(Body::Nwl(lang, twincat_cfc::lower(file, lang, what)?)));

@@ -36,7 +36,7 @@
 
 use crate::xml::Element;
 use diagnostics::{code, Diagnostic, FileId, Span};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// One ST token and where it comes from (a byte offset in the file; 0: anywhere after the previous).
 #[derive(Debug, Clone, PartialEq)]
@@ -68,8 +68,11 @@ struct Value {
 
 type Res<T> = Result<T, Box<Diagnostic>>;
 
-/// Reads the `<NWL>` element `nwl` of the body named `what`.
-pub(crate) fn lower(file: FileId, nwl: &Element, what: &str) -> Res<NwlBody> {
+/// Reads the `<NWL>` element `nwl` of the body named `what`; `declares`: whether the body can
+/// declare variables (a POU's or method's can, an action's cannot: there an EN or branch that is
+/// one variable no element of its network writes is read where it is used, and what needs a
+/// variable of its own is E0327).
+pub(crate) fn lower(file: FileId, nwl: &Element, what: &str, declares: bool) -> Res<NwlBody> {
     let mut l = Lowering {
         file,
         what: what.to_string(),
@@ -81,6 +84,8 @@ pub(crate) fn lower(file: FileId, nwl: &Element, what: &str) -> Res<NwlBody> {
         splits: HashMap::new(),
         labels: HashMap::new(),
         jumps: false,
+        declares,
+        written: HashSet::new(),
     };
     let networks: Vec<&Element> = nwl
         .child("XmlArchive")
@@ -112,6 +117,7 @@ pub(crate) fn lower(file: FileId, nwl: &Element, what: &str) -> Res<NwlBody> {
             });
     }
     if l.jumps {
+        l.no_variables(nwl, "a jump")?;
         l.body.temps.push((JUMP.into(), "INT".into()));
         l.stmt(&[JUMP, ":=", "0", ";"], nwl.tag_start());
     }
@@ -137,6 +143,11 @@ struct Lowering {
     labels: HashMap<String, usize>,
     /// Whether any network jumps.
     jumps: bool,
+    /// Whether the body can declare variables (not an action's).
+    declares: bool,
+    /// The names (upper case, up to the first `.` or `[`) that the network being read writes or
+    /// calls.
+    written: HashSet<String>,
 }
 
 impl Lowering {
@@ -167,6 +178,23 @@ impl Lowering {
         let Some(items) = prop(nw, "NetworkItems") else {
             return Ok(());
         };
+        self.written = nw
+            .walk()
+            .flat_map(|e| {
+                let outputs: Vec<&Element> =
+                    if e.name() == "l2" && e.attr("n") == Some("OutputItems") {
+                        e.children.iter().collect()
+                    } else if e.attr("n") == Some("Instance") {
+                        vec![e]
+                    } else {
+                        Vec::new()
+                    };
+                outputs
+                    .into_iter()
+                    .filter_map(|o| string(o, "Operand"))
+                    .map(|t| root_name(&t))
+            })
+            .collect();
         let cet = items.attr("cet");
         for item in items.children {
             if self.jumps {
@@ -262,6 +290,7 @@ impl Lowering {
             }
             FLAG_RISING | FLAG_FALLING => {
                 self.no_guard(&v, el)?;
+                self.no_variables(el, "an edge contact's memory")?;
                 let n = self.body.temps.len() + 1;
                 let (edge, mem) = (format!("_nwl_edge{n}"), format!("_nwl_mem{n}"));
                 self.body.temps.push((edge.clone(), "BOOL".into()));
@@ -386,6 +415,7 @@ impl Lowering {
     /// `v` stored in a new temporary (of the type of `node`'s value); the temporary as the value.
     fn keep(&mut self, node: &Element, v: Value) -> Res<Value> {
         self.no_guard(&v, node)?;
+        self.no_variables(node, "a value written to several outputs")?;
         let ty = self.type_of(node)?;
         let name = format!("_nwl_value{}", self.body.temps.len() + 1);
         self.body.temps.push((name.clone(), ty));
@@ -513,6 +543,15 @@ impl Lowering {
                 )),
             };
         };
+        if !self.declares {
+            let v = self.value(input, None)?;
+            self.no_guard(&v, node)?;
+            let Some(name) = self.read_in_place(&v) else {
+                return Err(self.needs_variable(node, "a branch"));
+            };
+            self.splits.insert(id, name);
+            return Ok(v);
+        }
         let ty = self.type_of(input)?;
         let v = self.value(input, None)?;
         self.no_guard(&v, node)?;
@@ -579,6 +618,42 @@ impl Lowering {
                 "the type of the value that this branch splits is not given in the archive".into(),
             )),
         }
+    }
+
+    /// In a body without declarations: the one variable `v` is, when no element of the network
+    /// writes or calls it (so reading it where it is used gives the value it had here).
+    fn read_in_place(&self, v: &Value) -> Option<String> {
+        match v.expr.as_slice() {
+            [t] if v.guard.is_none()
+                && t.text
+                    .starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+                && !self.written.contains(&root_name(&t.text)) =>
+            {
+                Some(t.text.clone())
+            }
+            _ => None,
+        }
+    }
+
+    /// E0327 at `el` when the body cannot declare the variable that `what` needs.
+    fn no_variables(&self, el: &Element, what: &str) -> Res<()> {
+        if self.declares {
+            return Ok(());
+        }
+        Err(self.needs_variable(el, what))
+    }
+
+    /// E0327 at `el`: `what` needs a variable, and an action declares none.
+    fn needs_variable(&self, el: &Element, what: &str) -> Box<Diagnostic> {
+        self.error_at(
+            code::E0327,
+            el,
+            format!(
+                "{what} needs a variable of its own, and an action has no declarations (nor can \
+                 it read the value where it is used: an element of the network writes it, or it \
+                 is not one variable)"
+            ),
+        )
     }
 
     fn no_guard(&self, v: &Value, at: &Element) -> Res<()> {
@@ -649,14 +724,25 @@ impl Lowering {
                 return Err(self.unsupported(node, "box with EN but no input"));
             }
             let (_, en_value) = args.remove(0);
-            if let Some(v) = en_value.filter(|v| !(v.expr.len() == 1 && v.expr[0].text == "TRUE")) {
-                let name = format!("_nwl_en{}", self.body.temps.len() + 1);
-                self.body.temps.push((name.clone(), "BOOL".into()));
-                self.push(&name, at);
-                self.push(":=", at);
-                self.push_all(v.expr);
-                self.push(";", at);
-                guard = Some(name);
+            let tested = en_value.filter(|v| !(v.expr.len() == 1 && v.expr[0].text == "TRUE"));
+            if let Some(v) = tested {
+                if self.declares {
+                    let name = format!("_nwl_en{}", self.body.temps.len() + 1);
+                    self.body.temps.push((name.clone(), "BOOL".into()));
+                    self.push(&name, at);
+                    self.push(":=", at);
+                    self.push_all(v.expr);
+                    self.push(";", at);
+                    guard = Some(name);
+                } else {
+                    match self.read_in_place(&v) {
+                        Some(t) => guard = Some(t),
+                        None => {
+                            let what = format!("the EN of box `{box_type}`");
+                            return Err(self.needs_variable(node, &what));
+                        }
+                    }
+                }
             }
         }
         let eno = |g: &Option<String>| Value {
@@ -970,6 +1056,8 @@ impl Lowering {
             .at(Span::new(self.file, el.tag_start(), el.tag_end()))
             .with_hint(if c == code::E0326 {
                 "open the network in TwinCAT and write a variable or literal at this place"
+            } else if c == code::E0327 {
+                "write the action as a METHOD (which declares its variables), or this network in ST"
             } else {
                 "write this network in ST, or export the POU from TwinCAT as PLCopen XML \
                  (right-click > Export PLCopenXML), which ladderc reads"
@@ -1115,6 +1203,16 @@ fn output_items<'e, 'a>(node: &'e Element<'a>) -> Vec<&'e Element<'a>> {
         .and_then(|o| prop(o, "OutputItems"))
         .map(|l| l.children.iter().collect())
         .unwrap_or_default()
+}
+
+/// The name an operand starts with, upper case (`fb.Q` -> `FB`, `a[i].x` -> `A`).
+fn root_name(text: &str) -> String {
+    text.trim()
+        .split(['.', '[', '^'])
+        .next()
+        .unwrap_or("")
+        .trim()
+        .to_ascii_uppercase()
 }
 
 /// Whether a network is commented out (TwinCAT does not run it).
