@@ -16,8 +16,7 @@
 //! box's line), after a VAR block of the temporaries they need. Invariants: never panics; a body in
 //! SFC is one located E0321 naming it, a graphical element not understood one located E0325/E0326,
 //! an action whose networks need temporaries one E0327 (an action has no declarations); a file whose
-//! root is not
-//! `<TcPlcObject>` gives `None`.
+//! root is not `<TcPlcObject>` gives `None`.
 
 use crate::codesys_v2::{local_name, root_name, Source};
 use crate::twincat_cfc;
@@ -512,20 +511,21 @@ enum Body<'e, 'a> {
     St(&'e Element<'a>),
     /// An LD/FBD network list (`<NWL>`) or a CFC chart (`<CFC>`) read as ST tokens, written into
     /// its own markup.
-    Nwl(&'e Element<'a>, NwlBody),
+    Graph(&'e Element<'a>, NwlBody),
 }
 
 impl Body<'_, '_> {
     /// The end of the body's start tag (keywords before the body go before it).
     fn tag_end(&self) -> usize {
         match self {
-            Body::St(e) | Body::Nwl(e, _) => e.tag_end(),
+            Body::St(e) | Body::Graph(e, _) => e.tag_end(),
         }
     }
 }
 
-/// The body of `el`'s `<Implementation>`: ST, or LD/FBD (`<NWL>`, read by [`crate::twincat_nwl`]);
-/// `Ok(None)` without one; E0321 for a body in another language.
+/// The body of `el`'s `<Implementation>`: ST, LD/FBD (`<NWL>`, read by [`crate::twincat_nwl`]) or
+/// CFC (`<CFC>`, read by [`crate::twincat_cfc`]); `declares`: whether the body can declare variables
+/// (not an action's); `Ok(None)` without one; E0321 for a body in another language.
 fn body_of<'e, 'a>(
     file: FileId,
     el: &'e Element<'a>,
@@ -542,13 +542,16 @@ fn body_of<'e, 'a>(
         return Ok(Some(Body::St(lang)));
     }
     if lang.name() == "NWL" {
-        return Ok(Some(Body::Nwl(
+        return Ok(Some(Body::Graph(
             lang,
             twincat_nwl::lower(file, lang, what, declares)?,
         )));
     }
     if lang.name() == "CFC" {
-        return Ok(Some(Body::Nwl(lang, twincat_cfc::lower(file, lang, what)?)));
+        return Ok(Some(Body::Graph(
+            lang,
+            twincat_cfc::lower(file, lang, what)?,
+        )));
     }
     // SFC, IL (TwinCAT's own forms)
     let language = lang.name();
@@ -576,7 +579,7 @@ fn write_body(
 ) -> Result<usize, Box<Diagnostic>> {
     let (nwl, lowered) = match body {
         Body::St(e) => return Ok(out.copy(e)),
-        Body::Nwl(e, l) => (e, l),
+        Body::Graph(e, l) => (e, l),
     };
     let fail = |what: &str| {
         Box::new(
