@@ -118,9 +118,8 @@ fn a_graphical_body_is_one_located_error() {
     assert_eq!(code, Some(1));
     assert_eq!(
         heads,
-        ["P_Ladder.TcPOU:11:7: error[E0321]: TwinCAT object file: the body of `P_Ladder` is in LD \
-          or FBD (TwinCAT's network list, <NWL>), which ladderc cannot read in a TwinCAT source \
-          file (it reads ST bodies)"]
+        ["P_Ladder.TcPOU:11:7: error[E0325]: TwinCAT LD/FBD body of `P_Ladder`: its archive has no \
+          network list (`<o t=\"NWLImplementationObject\">` with `<l2 n=\"NetworkList\">`)"]
     );
 }
 
@@ -270,7 +269,7 @@ fn a_task_calling_a_program_whose_file_failed_is_not_reported_again() {
     assert_eq!(code, Some(1));
     assert_eq!(heads.len(), 1, "{heads:?}");
     assert!(
-        heads[0].starts_with("MAIN.TcPOU:11:7: error[E0321]"),
+        heads[0].starts_with("MAIN.TcPOU:11:7: error[E0325]"),
         "{heads:?}"
     );
 }

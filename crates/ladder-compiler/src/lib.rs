@@ -26,6 +26,8 @@ pub mod sfc;
 pub mod st_body;
 pub mod testgen;
 pub mod twincat;
+pub(crate) mod twincat_cfc;
+pub(crate) mod twincat_nwl;
 pub mod values;
 pub mod var_config;
 pub mod xml;

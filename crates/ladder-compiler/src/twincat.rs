@@ -10,11 +10,17 @@
 //! `END_PROGRAM`/`END_FUNCTION_BLOCK`/`END_FUNCTION`, the `ACTIONS` block's keywords and
 //! `END_INTERFACE` (after an interface's `<Method>` declarations, each closed by `END_METHOD`) written into blank places of the markup after the texts they close; for a GVL also
 //! its name (its members are reachable qualified, `GVL.x`); for a task (`.TcTTO`) its name, cycle
-//! time, priority and the programs it calls. Invariants: never panics; a body in a graphical language
-//! (TwinCAT's LD/FBD network list `<NWL>`, `<CFC>`, `<SFC>`) is one located E0321 naming it; a file
-//! whose root is not `<TcPlcObject>` gives `None`.
+//! time, priority and the programs it calls. A body in LD or FBD (TwinCAT's network list `<NWL>`)
+//! is read as ST by [`crate::twincat_nwl`], a body in CFC by [`crate::twincat_cfc`], their tokens
+//! written into the blank markup of their own elements (so a diagnostic points at the operand's or
+//! box's line), after a VAR block of the temporaries they need. Invariants: never panics; a body in
+//! SFC is one located E0321 naming it, a graphical element not understood one located E0325/E0326,
+//! an action whose networks need temporaries one E0327 (an action has no declarations); a file whose
+//! root is not `<TcPlcObject>` gives `None`.
 
 use crate::codesys_v2::{local_name, root_name, Source};
+use crate::twincat_cfc;
+use crate::twincat_nwl::{self, NwlBody};
 use crate::xml::{self, Element};
 use diagnostics::{code, Diagnostic, FileId, Span};
 
@@ -386,8 +392,8 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
         }
     };
     let mut at = out.copy(decl);
-    if let Some(body) = body_of(file, el, &name)? {
-        at = out.copy(body);
+    if let Some(body) = body_of(file, el, &name, true)? {
+        at = write_body(file, out, at, &body, true)?;
     }
     let members: Vec<&Element> = el
         .children
@@ -415,9 +421,9 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
         let next = members.get(k + 1).map_or(el.end(), |n| n.tag_start());
         match m.name() {
             "Action" => {
-                let body = body_of(file, m, &what)?;
+                let body = body_of(file, m, &what, false)?;
                 // the keywords go into the markup before the body's text
-                let limit = body.map_or(next, |b| b.tag_end());
+                let limit = body.as_ref().map_or(next, Body::tag_end);
                 if k >= last_method || !is_fb {
                     if !in_actions {
                         at = out
@@ -435,7 +441,7 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                         .ok_or_else(no_room)?;
                 }
                 if let Some(body) = body {
-                    at = out.copy(body);
+                    at = write_body(file, out, at, &body, false)?;
                 }
                 let end = if in_actions {
                     "END_ACTION"
@@ -448,8 +454,8 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                 if let Some(d) = m.child("Declaration") {
                     at = out.copy(d);
                 }
-                if let Some(body) = body_of(file, m, &what)? {
-                    at = out.copy(body);
+                if let Some(body) = body_of(file, m, &what, true)? {
+                    at = write_body(file, out, at, &body, true)?;
                 }
                 at = out.place(at, next, "END_METHOD").ok_or_else(no_room)?;
             }
@@ -473,14 +479,17 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                     let acc_next = accessors.get(j + 1).map_or(next, |n| n.tag_start());
                     let what = format!("{what}.{}", acc.name());
                     let decl = acc.child("Declaration");
-                    let body = body_of(file, acc, &what)?;
-                    let limit = decl.or(body).map_or(acc_next, |e| e.tag_end());
+                    let body = body_of(file, acc, &what, true)?;
+                    let limit = decl
+                        .map(|d| d.tag_end())
+                        .or(body.as_ref().map(Body::tag_end))
+                        .unwrap_or(acc_next);
                     at = out.place(at, limit, open).ok_or_else(no_room)?;
                     if let Some(d) = decl {
                         at = out.copy(d);
                     }
                     if let Some(body) = body {
-                        at = out.copy(body);
+                        at = write_body(file, out, at, &body, true)?;
                     }
                     at = out.place(at, acc_next, close).ok_or_else(no_room)?;
                 }
@@ -496,13 +505,33 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
     Ok(())
 }
 
-/// The ST text element of `el`'s `<Implementation>` (`<ST>`); `Ok(None)` without one; E0321 for a
-/// body in another language.
+/// A body of a POU, method or action.
+enum Body<'e, 'a> {
+    /// An ST text element (`<ST>`), copied in place.
+    St(&'e Element<'a>),
+    /// An LD/FBD network list (`<NWL>`) or a CFC chart (`<CFC>`) read as ST tokens, written into
+    /// its own markup.
+    Graph(&'e Element<'a>, NwlBody),
+}
+
+impl Body<'_, '_> {
+    /// The end of the body's start tag (keywords before the body go before it).
+    fn tag_end(&self) -> usize {
+        match self {
+            Body::St(e) | Body::Graph(e, _) => e.tag_end(),
+        }
+    }
+}
+
+/// The body of `el`'s `<Implementation>`: ST, LD/FBD (`<NWL>`, read by [`crate::twincat_nwl`]) or
+/// CFC (`<CFC>`, read by [`crate::twincat_cfc`]); `declares`: whether the body can declare variables
+/// (not an action's); `Ok(None)` without one; E0321 for a body in another language.
 fn body_of<'e, 'a>(
     file: FileId,
     el: &'e Element<'a>,
     what: &str,
-) -> Result<Option<&'e Element<'a>>, Box<Diagnostic>> {
+    declares: bool,
+) -> Result<Option<Body<'e, 'a>>, Box<Diagnostic>> {
     let Some(imp) = el.child("Implementation") else {
         return Ok(None);
     };
@@ -510,25 +539,92 @@ fn body_of<'e, 'a>(
         return Ok(None);
     };
     if lang.name() == "ST" {
-        return Ok(Some(lang));
+        return Ok(Some(Body::St(lang)));
     }
-    let language = match lang.name() {
-        "NWL" => "LD or FBD (TwinCAT's network list, <NWL>)",
-        "CFC" => "CFC",
-        "SFC" => "SFC",
-        "IL" => "IL",
-        other => other,
-    };
+    if lang.name() == "NWL" {
+        return Ok(Some(Body::Graph(
+            lang,
+            twincat_nwl::lower(file, lang, what, declares)?,
+        )));
+    }
+    if lang.name() == "CFC" {
+        return Ok(Some(Body::Graph(
+            lang,
+            twincat_cfc::lower(file, lang, what)?,
+        )));
+    }
+    // SFC, IL (TwinCAT's own forms)
+    let language = lang.name();
     Err(unreadable(
         file,
         lang,
         format!(
             "TwinCAT object file: the body of `{what}` is in {language}, which ladderc cannot read in \
-             a TwinCAT source file (it reads ST bodies)"
+             a TwinCAT source file (it reads ST, LD/FBD and CFC bodies)"
         ),
         "export the POU from TwinCAT as PLCopen XML (right-click > Export PLCopenXML) and give \
          ladderc that file: it reads LD, FBD and SFC there",
     ))
+}
+
+/// Writes a body into place from `at` (ST: its text where it is; LD/FBD: its temporaries' VAR
+/// block when `declares`, then its tokens, each at or after the element it comes from, all inside
+/// the `<NWL>` element); the offset after it.
+fn write_body(
+    file: FileId,
+    out: &mut Source,
+    at: usize,
+    body: &Body,
+    declares: bool,
+) -> Result<usize, Box<Diagnostic>> {
+    let (nwl, lowered) = match body {
+        Body::St(e) => return Ok(out.copy(e)),
+        Body::Graph(e, l) => (e, l),
+    };
+    let fail = |what: &str| {
+        Box::new(
+            Diagnostic::error(
+                code::E0327,
+                format!("TwinCAT LD/FBD body: {what}"),
+            )
+            .at(Span::new(file, nwl.tag_start(), nwl.tag_end()))
+            .with_hint("write the networks that use EN, branches, edges or jumps in ST, or the action as a METHOD"),
+        )
+    };
+    let limit = nwl.end();
+    let mut at = at.max(nwl.tag_start());
+    let mut words: Vec<(String, usize)> = Vec::new();
+    if !lowered.temps.is_empty() {
+        if !declares {
+            return Err(fail(&format!(
+                "the action `{}` has no declarations for the variables its networks need (EN, \
+                 branches, edges, jumps)",
+                lowered.what
+            )));
+        }
+        words.push(("VAR".into(), 0));
+        for (name, ty) in &lowered.temps {
+            words.extend([
+                (name.clone(), 0),
+                (":".into(), 0),
+                (ty.clone(), 0),
+                (";".into(), 0),
+            ]);
+        }
+        words.push(("END_VAR".into(), 0));
+    }
+    words.extend(lowered.toks.iter().map(|t| (t.text.clone(), t.at)));
+    for (text, pref) in words {
+        let from = if pref > at && pref < limit { pref } else { at };
+        at = match out
+            .place(from, limit, &text)
+            .or_else(|| out.place(at, limit, &text))
+        {
+            Some(w) => w,
+            None => return Err(fail(&format!("no room in the markup for `{text}`"))),
+        };
+    }
+    Ok(at)
 }
 
 /// The hint of a POU that cannot be read for its declaration.
@@ -607,14 +703,21 @@ VAR n : INT; END_VAR
     }
 
     #[test]
-    fn a_network_body_is_one_located_error_and_other_roots_are_not_twincat() {
+    fn an_empty_network_list_and_an_sfc_body_are_one_located_error_and_other_roots_are_not_twincat()
+    {
         let ld = "<TcPlcObject><POU Name=\"P\"><Declaration><![CDATA[PROGRAM P]]></Declaration>\
                   <Implementation><NWL><XmlArchive/></NWL></Implementation></POU></TcPlcObject>";
         let Some(Err(d)) = object_source(FileId(0), ld) else {
             panic!("an error");
         };
+        assert_eq!(d.code, code::E0325);
+        assert!(d.message.contains("no network list"), "{}", d.message);
+        let sfc = ld.replace("NWL", "SFC");
+        let Some(Err(d)) = object_source(FileId(0), &sfc) else {
+            panic!("an error");
+        };
         assert_eq!(d.code, code::E0321);
-        assert!(d.message.contains("LD or FBD"), "{}", d.message);
+        assert!(d.message.contains("in SFC"), "{}", d.message);
         assert!(object_source(FileId(0), "<project/>").is_none());
         assert_eq!(first_keyword("(* c *) // x\n {a 'b'} program P"), "PROGRAM");
     }
