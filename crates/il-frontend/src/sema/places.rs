@@ -172,11 +172,17 @@ impl Body<'_, '_> {
         let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
         if let ReadOnly::PouInput { decl: Some(decl) } = ro {
+            let hidden_field = v.accessors.iter().any(
+                |a| matches!(a, crate::ast::Accessor::Field(f) if f.name.starts_with("__")),
+            );
             if v.base.name.starts_with(crate::actions::FLAG_PREFIX)
                 || v.base.name.starts_with(crate::actions::METHOD_PREFIX)
+                || hidden_field
             {
                 // the hidden flag of an action called from another POU, reset by the action itself;
-                // a method's hidden input, set by a call of the method inside its block
+                // a method's hidden input, set by a call of the method inside its block; the
+                // hidden fields of an interface input (its tag, a method's result) set by a call
+                // through it
                 return;
             }
             // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)

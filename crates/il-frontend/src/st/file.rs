@@ -1274,9 +1274,11 @@ pub fn compile_pending(
     }
     // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
     let flat;
+    let mut interfaces = Vec::new();
     let pending = match super::inherit::flatten(units, pending, diags) {
         Some(v) => {
-            flat = v;
+            flat = v.bodies;
+            interfaces = v.interfaces;
             &flat[..]
         }
         None => pending,
@@ -1312,6 +1314,11 @@ pub fn compile_pending(
                 }
             }
         }
+    }
+    // variables of an interface type: their calls dispatch on the instance they hold
+    for i in interfaces {
+        decls.methods.insert(i.name.key(), i.methods.clone());
+        decls.interfaces.insert(i.name.key(), i);
     }
     for pb in pending.iter().filter(|pb| !pb.sfc) {
         let diags: &mut Diagnostics = if pb.derived() {

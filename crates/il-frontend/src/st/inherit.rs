@@ -165,12 +165,13 @@ const MAX_DEPTH: usize = 100;
 
 /// Flattens the derived function blocks of `pending` into `units` (their variables) and returns the
 /// pending bodies to lower (their methods and bodies), and checks `IMPLEMENTS`, `FINAL`, `ABSTRACT`
-/// and variables of an interface type. `None` when no pending body has an [`Oop`] (nothing to do).
+/// and the initial values of variables of an interface type, and declares each interface's hidden
+/// structure ([`super::interface_vars`]). `None` when no pending body has an [`Oop`] (nothing to do).
 pub fn flatten(
     units: &mut [CompilationUnit],
     pending: &[PendingBody],
     diags: &mut Diagnostics,
-) -> Option<Vec<PendingBody>> {
+) -> Option<Flat> {
     if !pending.iter().any(|pb| pb.oop.is_some()) {
         return None;
     }
@@ -270,8 +271,37 @@ pub fn flatten(
             check_implements(c, itf, &methods, &interfaces, diags);
         }
     }
-    check_instances(units, &classes, &interfaces, &by_start, &mut out, diags);
-    Some(out)
+    check_instances(units, &classes, &interfaces, diags);
+    // variables of an interface type: each block's interfaces, its bases' included
+    let blocks: Vec<(Ident, bool, Vec<Ident>)> = keys
+        .iter()
+        .map(|key| {
+            let c = &classes[key];
+            let levels = match chains.get(key) {
+                Some(Some(chain)) => chain.clone(),
+                Some(None) => Vec::new(),
+                None => vec![key.clone()],
+            };
+            let implements = levels
+                .iter()
+                .flat_map(|k| classes[k].oop.implements.iter().cloned())
+                .collect();
+            (c.name.clone(), c.oop.is_abstract || levels.is_empty(), implements)
+        })
+        .collect();
+    let table = super::interface_vars::table(units, &blocks, &interfaces);
+    Some(Flat {
+        bodies: out,
+        interfaces: table,
+    })
+}
+
+/// What [`flatten`] returns: the pending bodies to lower and the interfaces variables may have.
+pub struct Flat {
+    /// The pending bodies, derived blocks flattened.
+    pub bodies: Vec<PendingBody>,
+    /// Every interface of the program with the blocks that implement it.
+    pub interfaces: Vec<super::interface_vars::Interface>,
 }
 
 /// The chain of bases of `key`, root first, ending with `key`; `None` (with one diagnostic at the
@@ -760,14 +790,13 @@ fn check_implements(
     }
 }
 
-/// Variables whose type is an ABSTRACT block (E0333) or an interface (E0336: not compiled, and
-/// the body of their POU neither).
+/// Variables whose type is an ABSTRACT block (E0333: not compiled), and variables of an interface
+/// type with an initial value (E0336: the value is left out; an interface variable starts
+/// unassigned and is assigned in the body).
 fn check_instances(
     units: &mut [CompilationUnit],
     classes: &HashMap<String, Class>,
     interfaces: &HashMap<String, &InterfaceOop>,
-    by_start: &HashMap<(FileId, usize), usize>,
-    out: &mut [PendingBody],
     diags: &mut Diagnostics,
 ) {
     fn named(t: &TypeRef) -> Option<&Ident> {
@@ -777,9 +806,7 @@ fn check_instances(
             _ => None,
         }
     }
-    let abstract_or_interface = |v: &crate::ast::VarDecl,
-                                 dropped: &mut bool,
-                                 diags: &mut Diagnostics| {
+    let check = |v: &mut crate::ast::VarDecl, diags: &mut Diagnostics| {
         let Some(ty) = named(&v.ty) else { return true };
         if let Some(c) = classes.get(&ty.key()).filter(|c| c.oop.is_abstract) {
             diags.push(
@@ -793,40 +820,30 @@ fn check_instances(
             );
             return true;
         }
-        if let Some(i) = interfaces.get(&ty.key()) {
+        if let (Some(i), true) = (interfaces.get(&ty.key()), v.init.is_some()) {
+            let at = v.span;
             diags.push(
                 Diagnostic::error(
                     code::E0336,
-                    format!("`{}` has the interface type `{}`: a reference to any block that implements it is not compiled", v.name.name, i.name.name),
+                    format!("`{}` of interface type `{}` has an initial value: not compiled", v.name.name, i.name.name),
                 )
-                .at(ty.span)
-                .with_primary_label("an interface type needs references and dynamic dispatch")
-                .with_hint("declare the variable with the function block type it holds; the body of its POU is not compiled"),
+                .at(at)
+                .with_primary_label("an interface variable starts unassigned")
+                .with_hint(format!("assign it in the body (`{} := fbInstance;`)", v.name.name)),
             );
-            *dropped = true;
-            return false;
+            v.init = None;
         }
         true
     };
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
-        let mut dropped = false;
         match item {
             LibraryElement::Pou(p) => {
                 for b in p.var_blocks.iter_mut() {
-                    b.vars
-                        .retain(|v| abstract_or_interface(v, &mut dropped, diags));
-                }
-                let span = p.name.span;
-                if let (true, Some(&k)) = (dropped, by_start.get(&(span.file, span.start as usize)))
-                {
-                    out[k].text = String::new();
-                    out[k].methods.clear();
-                    out[k].actions.clear();
+                    b.vars.retain_mut(|v| check(v, diags));
                 }
             }
             LibraryElement::GlobalVars(b) => {
-                b.vars
-                    .retain(|v| abstract_or_interface(v, &mut dropped, diags));
+                b.vars.retain_mut(|v| check(v, diags));
             }
             _ => {}
         }

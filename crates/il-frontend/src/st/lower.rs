@@ -750,6 +750,15 @@ impl<'d> PouLowering<'d> {
                 return;
             }
         }
+        if let Some(stmts) = super::interface_vars::rewrite(&self.env(), s, diags) {
+            // `itf := inst;`, `itf.M();`, `itf <> 0`: the hidden tag and references of the
+            // interface variable (see interface_vars)
+            for c in &stmts {
+                self.stmt(c, out, diags);
+            }
+            self.types.get_mut().clear();
+            return;
+        }
         match &s.kind {
             StmtKind::Call { callee, args } if self.method_of(callee).is_some() => {
                 let sig = self

@@ -1,0 +1,615 @@
+//! Variables whose type is an INTERFACE (CODESYS, TwinCAT; IEC 61131-3 edition 3, 6.6.6.5 "interface
+//! as a variable type"): `itf : I_Shape;` holds any instance of a function block that implements
+//! `I_Shape` (itself or through a base it EXTENDS), and `itf.Area()` runs the method of the block the
+//! instance really is (dynamic dispatch).
+//!
+//! Input: every interface with the function blocks that implement it ([`table`], from
+//! [`super::inherit::flatten`]) and the ST statements being lowered ([`rewrite`]).
+//! Output: each interface `I` is also a hidden STRUCT named `I` (so `itf : I`, `ARRAY[1..3] OF I`,
+//! `VAR_INPUT`, `VAR_IN_OUT`, `VAR_GLOBAL` of it are ordinary variables for sema and C):
+//! - `__TAG : UINT`: which block the instance is (a number per block, `0` unassigned);
+//! - `__R_<FB> : REF_TO <FB>` for each block that implements `I`: the instance (only the one of the
+//!   tag is non-NULL);
+//! - `__M_<M> : T` for each method returning `T` (its result, read after the call: the parser reads
+//!   `itf.M()` as `itf.__M_M`, as for any instance), properties' accessors included;
+//! - `__UNASSIGNED : REF_TO I`, always NULL: what a call through an unassigned interface reads.
+//!
+//! The statements using them are rewritten before they are lowered: `itf := inst;` sets the tag and
+//! the references (`REF(inst)`), `itf := 0;` clears them; `itf.M(args);` is a CASE on the tag calling
+//! `itf.__R_<FB>^.M(args)` and copying its result; `itf = 0`, `itf <> 0` test the tag, `i1 = i2`
+//! the tags and the references; an instance passed to an input of interface type is assigned to the
+//! input before the call.
+//! Invariants: a call through an unassigned interface (tag 0) calls nothing: its result reads 0 and
+//! the run reports "NULL reference dereferenced (first: itf.__UNASSIGNED^ in POU)" at its end, like
+//! a NULL `REF_TO`, and goes on; an instance may only be assigned where its address may be taken
+//! (`REF`: no VAR_IN_OUT, temporary or function variable, sema's E0305); assigning what does not
+//! implement the interface is one E0340.
+
+use super::ast::{Accessor, Arg, ArgDir, BinaryOp, CaseArm, CaseLabel, Expr, ExprKind, Place};
+use super::ast::{PlaceBase, Stmt, StmtKind};
+use super::file::PendingMethod;
+use super::infer::Env;
+use super::inherit::InterfaceOop;
+use super::types::MethodSig;
+use crate::ast::{
+    CompilationUnit, Ident, LibraryElement, Literal, LiteralKind, PouKind, RefKind, TypeDecl,
+    TypeDef, TypeRef, VarDecl,
+};
+use crate::Span;
+use diagnostics::{code, Diagnostic, Diagnostics};
+use std::collections::{HashMap, HashSet};
+
+/// The hidden field that tells which block an interface variable holds (`0`: none).
+pub const TAG: &str = "__TAG";
+/// The hidden, always NULL reference a call through an unassigned interface reads.
+pub const UNASSIGNED: &str = "__UNASSIGNED";
+
+/// The hidden field holding an instance of block `fb`: `__R_<FB>`.
+fn ref_field(fb: &str) -> String {
+    format!("__R_{}", fb.to_ascii_uppercase())
+}
+
+/// An interface as variables of its type see it.
+#[derive(Debug, Clone)]
+pub struct Interface {
+    /// Its name as declared.
+    pub name: Ident,
+    /// The blocks that implement it (directly, through a base, or through an interface that
+    /// extends it) with their tags, in declaration order.
+    pub classes: Vec<(Ident, u32)>,
+    /// Its methods and those of the interfaces it extends (properties as their accessors).
+    pub methods: Vec<MethodSig>,
+    /// Its own key and those of the interfaces it extends (an `I2 EXTENDS I1` value is an `I1`).
+    pub within: Vec<String>,
+}
+
+impl Interface {
+    fn tag_of(&self, fb: &str) -> Option<u32> {
+        self.classes
+            .iter()
+            .find(|(c, _)| c.name.eq_ignore_ascii_case(fb))
+            .map(|c| c.1)
+    }
+}
+
+/// The interface `key` and all it extends (keys), itself first.
+fn closure(key: &str, interfaces: &HashMap<String, &InterfaceOop>) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut todo = vec![key.to_string()];
+    let mut seen = HashSet::new();
+    while let Some(k) = todo.pop() {
+        if !seen.insert(k.clone()) || seen.len() > 100 {
+            continue;
+        }
+        if let Some(i) = interfaces.get(&k) {
+            todo.extend(i.extends.iter().map(Ident::key));
+        }
+        out.push(k);
+    }
+    out
+}
+
+/// The interfaces of the program (`interfaces`), each with the blocks of `blocks` (name, whether it
+/// has no instances, the interfaces it and its bases implement) that implement it; declares each
+/// interface's hidden structure (see the module documentation) in `units`.
+pub fn table(
+    units: &mut [CompilationUnit],
+    blocks: &[(Ident, bool, Vec<Ident>)],
+    interfaces: &HashMap<String, &InterfaceOop>,
+) -> Vec<Interface> {
+    let mut keys: Vec<&String> = interfaces.keys().collect();
+    keys.sort();
+    let mut out = Vec::new();
+    let mut types = Vec::new();
+    for key in keys {
+        let i = interfaces[key];
+        let within = closure(key, interfaces);
+        let span = i.name.span;
+        let classes: Vec<(Ident, u32)> = blocks
+            .iter()
+            .enumerate()
+            .filter(|(_, (_, none, implements))| {
+                !none
+                    && implements
+                        .iter()
+                        .any(|x| closure(&x.key(), interfaces).contains(key))
+            })
+            .map(|(k, (name, _, _))| (name.clone(), k as u32 + 1))
+            .collect();
+        let mut methods: Vec<&PendingMethod> = Vec::new();
+        for k in &within {
+            for m in interfaces.get(k).map_or(&[][..], |x| &x.methods[..]) {
+                if !methods.iter().any(|x| x.name.key() == m.name.key()) {
+                    methods.push(m);
+                }
+            }
+        }
+        let named = |n: &str| TypeRef::Named(Ident::new(n, span));
+        let reference = |target: TypeRef| TypeRef::Ref {
+            kind: RefKind::RefTo,
+            target: Box::new(target),
+            span,
+        };
+        let mut fields = vec![
+            VarDecl::new(Ident::new(TAG, span), named("UINT"), span),
+            VarDecl::new(
+                Ident::new(UNASSIGNED, span),
+                reference(named(&i.name.name)),
+                span,
+            ),
+        ];
+        for (c, _) in &classes {
+            fields.push(VarDecl::new(
+                Ident::new(ref_field(&c.name), span),
+                reference(TypeRef::Named(c.clone())),
+                span,
+            ));
+        }
+        for m in &methods {
+            if let Some(r) = &m.ret {
+                fields.push(VarDecl::new(
+                    Ident::new(crate::actions::method_result(&m.name.name), span),
+                    r.ty.clone(),
+                    span,
+                ));
+            }
+        }
+        types.push(TypeDecl {
+            name: i.name.clone(),
+            def: TypeDef::Struct { fields },
+            span,
+        });
+        out.push(Interface {
+            name: i.name.clone(),
+            classes,
+            methods: methods.iter().map(|m| MethodSig::of(m)).collect(),
+            within,
+        });
+    }
+    if let (Some(u), false) = (units.first_mut(), types.is_empty()) {
+        u.items.insert(0, LibraryElement::DataTypes(types));
+    }
+    out
+}
+
+// ------------------------------------------------------------------ building statements
+
+fn field(p: &Place, name: &str, span: Span) -> Place {
+    let mut q = p.clone();
+    q.accessors.push(Accessor::Field(Ident::new(name, span)));
+    q
+}
+
+fn deref(p: &Place, span: Span) -> Place {
+    let mut q = p.clone();
+    q.accessors.push(Accessor::Deref(span));
+    q
+}
+
+fn place_expr(p: Place, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Place(p),
+        span,
+    }
+}
+
+fn int(v: i128, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Literal(Literal {
+            kind: LiteralKind::Int(v),
+            type_prefix: None,
+            span,
+        }),
+        span,
+    }
+}
+
+fn null(span: Span) -> Expr {
+    place_expr(
+        Place {
+            base: PlaceBase::Name(Ident::new("NULL", span)),
+            accessors: Vec::new(),
+            span,
+        },
+        span,
+    )
+}
+
+fn binary(op: BinaryOp, left: Expr, right: Expr, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Binary {
+            op,
+            left: Box::new(left),
+            right: Box::new(right),
+        },
+        span,
+    }
+}
+
+fn assign(target: Place, value: Expr, span: Span) -> Stmt {
+    Stmt {
+        kind: StmtKind::Assign { target, value },
+        span,
+    }
+}
+
+/// Whether `e` is `0` or `NULL` (CODESYS compares and assigns interfaces so).
+fn is_zero(env: &Env<'_>, e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Literal(l) => matches!(l.kind, LiteralKind::Int(0)),
+        ExprKind::Place(p) => {
+            p.accessors.is_empty()
+                && p.name()
+                    .is_some_and(|n| n.is("NULL") && env.var_type(n).is_none())
+        }
+        _ => false,
+    }
+}
+
+/// The rewriting of one statement (see [`rewrite`]).
+struct Rewriter<'a, 'd> {
+    env: &'a Env<'a>,
+    diags: &'d mut Diagnostics,
+    changed: bool,
+}
+
+/// `s` with its uses of interface variables rewritten (see the module documentation): the
+/// statements to lower instead, or `None` when `s` uses none in what it evaluates itself (nested
+/// statements are rewritten when they are lowered).
+pub(super) fn rewrite(env: &Env<'_>, s: &Stmt, diags: &mut Diagnostics) -> Option<Vec<Stmt>> {
+    if env.decls.interfaces.is_empty() {
+        return None;
+    }
+    let mut r = Rewriter {
+        env,
+        diags,
+        changed: false,
+    };
+    let out = r.stmt(s);
+    r.changed.then_some(out)
+}
+
+impl Rewriter<'_, '_> {
+    /// The interface a value of type `t` is, if it is one.
+    fn interface(&self, t: &TypeRef) -> Option<&Interface> {
+        let TypeRef::Named(n) = self.env.resolve(t) else {
+            return None;
+        };
+        self.env.decls.interfaces.get(&n.key())
+    }
+
+    fn place_interface(&self, p: &Place) -> Option<&Interface> {
+        self.interface(&self.env.place_type(p)?)
+    }
+
+    fn expr_interface(&self, e: &Expr) -> Option<&Interface> {
+        match &e.kind {
+            ExprKind::Place(p) => self.place_interface(p),
+            _ => None,
+        }
+    }
+
+    /// The function block type of an instance `e` (a place whose type is a user block).
+    fn block_of(&self, e: &Expr) -> Option<Ident> {
+        let ExprKind::Place(p) = &e.kind else {
+            return None;
+        };
+        let TypeRef::Named(n) = self.env.resolve(&self.env.place_type(p)?) else {
+            return None;
+        };
+        let pou = self.env.decls.pou(&n.name)?;
+        (pou.kind == PouKind::FunctionBlock).then(|| Ident::new(&pou.name, n.span))
+    }
+
+    fn stmt(&mut self, s: &Stmt) -> Vec<Stmt> {
+        let span = s.span;
+        let mut s = s.clone();
+        match &mut s.kind {
+            StmtKind::Assign { target, value } => {
+                if let Some(i) = self.place_interface(target).cloned() {
+                    if let Some(out) = self.assign_interface(target, &i, value, span) {
+                        self.changed = true;
+                        return out;
+                    }
+                }
+                self.compare(value);
+            }
+            StmtKind::Call { callee, args } => {
+                if let Some(out) = self.dispatch(callee, args, span) {
+                    self.changed = true;
+                    return out;
+                }
+                let mut before = self.interface_inputs(callee, args);
+                for a in args.iter_mut() {
+                    self.compare(&mut a.value);
+                }
+                if !before.is_empty() {
+                    self.changed = true;
+                    before.push(s);
+                    return before;
+                }
+            }
+            StmtKind::If { branches, .. } => {
+                for b in branches.iter_mut() {
+                    self.compare(&mut b.cond);
+                }
+            }
+            StmtKind::Case { selector, .. } => self.compare(selector),
+            StmtKind::For { from, to, by, .. } => {
+                self.compare(from);
+                self.compare(to);
+                if let Some(b) = by {
+                    self.compare(b);
+                }
+            }
+            StmtKind::While { cond, .. } => self.compare(cond),
+            StmtKind::Repeat { until, .. } => self.compare(until),
+            _ => {}
+        }
+        vec![s]
+    }
+
+    /// `target := value` where `target` is of interface `i`: the statements setting its tag and
+    /// references; `None` when it is a plain copy of a value of the same interface (or not for
+    /// this rewriting: sema reports it).
+    fn assign_interface(
+        &mut self,
+        target: &Place,
+        i: &Interface,
+        value: &Expr,
+        span: Span,
+    ) -> Option<Vec<Stmt>> {
+        let set = |tag: Expr, refs: &dyn Fn(&Ident) -> Expr| {
+            let mut out = vec![assign(field(target, TAG, span), tag, span)];
+            for (c, _) in &i.classes {
+                out.push(assign(field(target, &ref_field(&c.name), span), refs(c), span));
+            }
+            out
+        };
+        if is_zero(self.env, value) {
+            return Some(set(int(0, span), &|_| null(span)));
+        }
+        if let Some(j) = self.expr_interface(value).cloned() {
+            if j.name.key() == i.name.key() {
+                return None;
+            }
+            let ExprKind::Place(src) = &value.kind else {
+                return None;
+            };
+            if !j.within.contains(&i.name.key()) {
+                self.not_implemented(value.span, &j.name.name, "interface", i);
+                return Some(Vec::new());
+            }
+            // an `I2 EXTENDS I1` value in an `I1`: the same tag, the references the two share
+            let tag = place_expr(field(src, TAG, span), span);
+            return Some(set(tag, &|c| {
+                if j.tag_of(&c.name).is_some() {
+                    place_expr(field(src, &ref_field(&c.name), span), span)
+                } else {
+                    null(span)
+                }
+            }));
+        }
+        let fb = self.block_of(value)?;
+        let Some(tag) = i.tag_of(&fb.name) else {
+            self.not_implemented(value.span, &fb.name, "function block", i);
+            return Some(Vec::new());
+        };
+        Some(set(int(tag.into(), span), &|c| {
+            if c.name.eq_ignore_ascii_case(&fb.name) {
+                Expr {
+                    kind: ExprKind::Call {
+                        name: Ident::new("REF", span),
+                        args: vec![Arg {
+                            name: None,
+                            dir: ArgDir::Input,
+                            value: value.clone(),
+                            span,
+                        }],
+                    },
+                    span,
+                }
+            } else {
+                null(span)
+            }
+        }))
+    }
+
+    fn not_implemented(&mut self, at: Span, what: &str, kind: &str, i: &Interface) {
+        self.diags.push(
+            Diagnostic::error(
+                code::E0340,
+                format!(
+                    "{kind} `{what}` does not implement interface `{}`",
+                    i.name.name
+                ),
+            )
+            .at(at)
+            .with_primary_label(format!("not an `{}`", i.name.name))
+            .with_hint(format!(
+                "assign an instance of a block declared `IMPLEMENTS {}` (or extending one), another `{}`, or 0",
+                i.name.name, i.name.name
+            )),
+        );
+    }
+
+    /// `itf.M(args);` where `itf` is of an interface with method `M`: a CASE on the tag that calls
+    /// the method of the instance held and copies its result.
+    fn dispatch(&mut self, callee: &Place, args: &[Arg], span: Span) -> Option<Vec<Stmt>> {
+        let (Accessor::Field(m), prefix) = callee.accessors.split_last()? else {
+            return None;
+        };
+        let itf = Place {
+            base: callee.base.clone(),
+            accessors: prefix.to_vec(),
+            span: callee.span,
+        };
+        let i = self.place_interface(&itf)?.clone();
+        let sig = i.methods.iter().find(|x| x.name.eq_ignore_ascii_case(&m.name))?;
+        let result = crate::actions::method_result(&sig.name);
+        let mut arms = Vec::new();
+        for (c, tag) in &i.classes {
+            let inst = deref(&field(&itf, &ref_field(&c.name), span), span);
+            let mut body = vec![Stmt {
+                kind: StmtKind::Call {
+                    callee: field(&inst, &m.name, m.span),
+                    args: args.to_vec(),
+                },
+                span,
+            }];
+            if sig.returns {
+                body.push(assign(
+                    field(&itf, &result, span),
+                    place_expr(field(&inst, &result, span), span),
+                    span,
+                ));
+            }
+            arms.push(CaseArm {
+                labels: vec![CaseLabel::Value(int((*tag).into(), span))],
+                body,
+                span,
+            });
+        }
+        // no instance: nothing runs, the result reads 0 through the NULL reference (reported)
+        let none = deref(&field(&itf, UNASSIGNED, span), span);
+        let mut else_body = vec![assign(
+            field(&itf, TAG, span),
+            place_expr(field(&none, TAG, span), span),
+            span,
+        )];
+        if sig.returns {
+            else_body.push(assign(
+                field(&itf, &result, span),
+                place_expr(field(&none, &result, span), span),
+                span,
+            ));
+        }
+        Some(vec![Stmt {
+            kind: StmtKind::Case {
+                selector: place_expr(field(&itf, TAG, span), span),
+                arms,
+                else_body: Some(else_body),
+            },
+            span,
+        }])
+    }
+
+    /// `fb(shape := inst)` where `shape` is an input of interface type: `fb.shape := inst;` (as
+    /// rewritten by [`Self::assign_interface`]) before the call, and the argument left out.
+    fn interface_inputs(&mut self, callee: &Place, args: &mut Vec<Arg>) -> Vec<Stmt> {
+        let Some(TypeRef::Named(fb)) = self.env.place_type(callee).map(|t| self.env.resolve(&t))
+        else {
+            return Vec::new();
+        };
+        let Some(pou) = self.env.decls.pou(&fb.name).cloned() else {
+            return Vec::new();
+        };
+        if pou.kind != PouKind::FunctionBlock {
+            return Vec::new();
+        }
+        let params: Vec<_> = pou.params().cloned().collect();
+        let mut before = Vec::new();
+        let mut k = 0;
+        args.retain(|a| {
+            let at = k;
+            k += 1;
+            if a.dir != ArgDir::Input {
+                return true;
+            }
+            let param = match &a.name {
+                Some(n) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
+                None => params.get(at),
+            };
+            let Some((name, crate::ast::VarKind::Input, ty)) = param else {
+                return true;
+            };
+            let Some(i) = self.interface(ty).cloned() else {
+                return true;
+            };
+            let target = field(callee, name, a.span);
+            match self.assign_interface(&target, &i, &a.value, a.span) {
+                Some(stmts) => {
+                    before.extend(stmts);
+                    false
+                }
+                None => true,
+            }
+        });
+        before
+    }
+
+    /// The comparisons of interfaces inside `e`: `itf = 0` (`<> 0`, `NULL`) tests the tag,
+    /// `i1 = i2` the tags and the references.
+    fn compare(&mut self, e: &mut Expr) {
+        let span = e.span;
+        let replacement = match &mut e.kind {
+            ExprKind::Binary { op, left, right } => {
+                self.compare(left);
+                self.compare(right);
+                let op = *op;
+                if !matches!(op, BinaryOp::Eq | BinaryOp::Ne) {
+                    return;
+                }
+                let (li, ri) = (
+                    self.expr_interface(left).cloned(),
+                    self.expr_interface(right).cloned(),
+                );
+                let tag = |x: &Expr| match &x.kind {
+                    ExprKind::Place(p) => place_expr(field(p, TAG, span), span),
+                    _ => x.clone(),
+                };
+                match (li, ri) {
+                    (Some(_), None) if is_zero(self.env, right) => {
+                        binary(op, tag(left), int(0, span), span)
+                    }
+                    (None, Some(_)) if is_zero(self.env, left) => {
+                        binary(op, int(0, span), tag(right), span)
+                    }
+                    (Some(a), Some(b)) => {
+                        let (ExprKind::Place(l), ExprKind::Place(r)) = (&left.kind, &right.kind)
+                        else {
+                            return;
+                        };
+                        let mut all = binary(BinaryOp::Eq, tag(left), tag(right), span);
+                        for (c, _) in a.classes.iter().filter(|(c, _)| b.tag_of(&c.name).is_some())
+                        {
+                            let f = ref_field(&c.name);
+                            let same = binary(
+                                BinaryOp::Eq,
+                                place_expr(field(l, &f, span), span),
+                                place_expr(field(r, &f, span), span),
+                                span,
+                            );
+                            all = binary(BinaryOp::And, all, same, span);
+                        }
+                        if op == BinaryOp::Ne {
+                            Expr {
+                                kind: ExprKind::Unary {
+                                    op: super::ast::UnaryOp::Not,
+                                    operand: Box::new(all),
+                                },
+                                span,
+                            }
+                        } else {
+                            all
+                        }
+                    }
+                    _ => return,
+                }
+            }
+            ExprKind::Unary { operand, .. } => {
+                self.compare(operand);
+                return;
+            }
+            ExprKind::Call { args, .. } => {
+                for a in args.iter_mut() {
+                    self.compare(&mut a.value);
+                }
+                return;
+            }
+            _ => return,
+        };
+        self.changed = true;
+        *e = replacement;
+    }
+}
