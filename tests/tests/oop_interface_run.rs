@@ -1,0 +1,97 @@
+//! Variables of an interface type and dynamic dispatch (issue #13): `itf : I_Shape;` holds any
+//! instance of a block that implements `I_Shape` (directly or through a base it EXTENDS), and
+//! `itf.Area()` runs the method of the block the instance really is. Run end to end through
+//! `ladderc run` on files written for these tests (`fixtures/oop_interface/`): the classic array of
+//! shapes filled with three block types and summed in a FOR loop, interface inputs, VAR_IN_OUT,
+//! VAR_GLOBAL, function and method variables, comparisons with 0 and between interfaces, a call
+//! through an unassigned interface (result 0, reported at the end of the run), and the located
+//! errors (E0340, E0336).
+
+mod common;
+use common::{column, rejected_heads, run_traced};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/oop_interface")
+        .join(rel)
+}
+
+/// `aShapes : ARRAY[1..3] OF I_Shape` holds a circle (3 r²), a rectangle (w h) and a square, whose
+/// block EXTENDS the rectangle's and overrides `Area` (w² + 1000): the FOR loop adds 3 + 6 + 1016;
+/// in cycle 2 `aShapes[2].Scale(k := 2.0)` doubles the rectangle's sides through the interface, so
+/// cycle 3 adds 3 + 24 + 1016. An instance passed to an interface input (`report(shape :=
+/// circle)`) is called there.
+#[test]
+fn an_array_of_an_interface_dispatches_each_call_on_the_instance_it_holds() {
+    let (trace, stderr) = run_traced(
+        &fixture("shapes.st"),
+        3,
+        "Main.total,Main.rect.w,Main.rect.h,Main.square.w,Main.reported,Main.report.has",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.total"), [1025.0, 1025.0, 1043.0]);
+    assert_eq!(column(&trace, "Main.rect.w"), [2.0, 4.0, 4.0]);
+    assert_eq!(column(&trace, "Main.rect.h"), [3.0, 6.0, 6.0]);
+    // the square (a FB_Rect by EXTENDS) is not scaled: the call went to the rectangle only
+    assert_eq!(column(&trace, "Main.square.w"), [4.0, 4.0, 4.0]);
+    assert_eq!(column(&trace, "Main.reported"), [3.0, 3.0, 3.0]);
+    assert_eq!(column(&trace, "Main.report.has"), [1.0, 1.0, 1.0]);
+}
+
+/// `itf = 0` before the first assignment, `itf <> 0` after; `itf = aShapes[3]` (the same instance)
+/// and `itf <> other` (another one) compare the instances held.
+#[test]
+fn interfaces_compare_with_0_and_with_each_other_by_the_instance_they_hold() {
+    let (trace, stderr) = run_traced(
+        &fixture("shapes.st"),
+        2,
+        "Main.empty,Main.assigned,Main.same,Main.differ",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    // `itf` keeps the square from cycle 1 on
+    assert_eq!(column(&trace, "Main.empty"), [1.0, 0.0]);
+    assert_eq!(column(&trace, "Main.assigned"), [1.0, 1.0]);
+    assert_eq!(column(&trace, "Main.same"), [1.0, 1.0]);
+    assert_eq!(column(&trace, "Main.differ"), [1.0, 1.0]);
+}
+
+/// An `I_Named EXTENDS I_Counter` variable assigned to a VAR_GLOBAL `I_Counter` steps `up` by 100
+/// each cycle; `I_Named.Code()` is the extended interface's own method; a FUNCTION's interface
+/// input and local (two steps of -1 on `down`), a function block's VAR_IN_OUT (-10) and a method's
+/// unassigned local interface (its call reads 0 and is reported once at the end of the run).
+#[test]
+fn interface_variables_work_in_globals_functions_in_outs_and_methods() {
+    let (trace, stderr) = run_traced(
+        &fixture("scopes.st"),
+        2,
+        "Main.viaGlobal,Main.code,Main.viaFunction,Main.viaInOut,Main.probed,Main.up.n,Main.down.n",
+    );
+    assert_eq!(column(&trace, "Main.viaGlobal"), [100.0, 200.0]);
+    assert_eq!(column(&trace, "Main.up.n"), [100.0, 200.0]);
+    assert_eq!(column(&trace, "Main.code"), [1.0, 1.0]);
+    assert_eq!(column(&trace, "Main.viaFunction"), [-2.0, -14.0]);
+    assert_eq!(column(&trace, "Main.viaInOut"), [-12.0, -24.0]);
+    assert_eq!(column(&trace, "Main.down.n"), [-12.0, -24.0]);
+    assert_eq!(column(&trace, "Main.probed"), [0.0, 0.0]);
+    assert!(
+        stderr.contains("NULL reference dereferenced (first: a call through the unassigned interface"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("in FB_Driver"), "{stderr}");
+}
+
+/// An instance of a block that does not implement the interface, assigned or passed to an input
+/// of the interface type: one E0340 at the value each.
+#[test]
+fn an_instance_that_does_not_implement_the_interface_is_one_located_error() {
+    let src = std::fs::read_to_string(fixture("not_implemented.st")).unwrap();
+    assert_eq!(
+        rejected_heads("bad.st", &src),
+        [
+            "bad.st:22:8: error[E0340]: function block `FB_Lamp` does not implement interface `I_Shape`",
+            "bad.st:23:17: error[E0340]: function block `FB_Lamp` does not implement interface `I_Shape`",
+        ]
+    );
+}
