@@ -95,3 +95,48 @@ fn an_instance_that_does_not_implement_the_interface_is_one_located_error() {
         ]
     );
 }
+
+const AXES_WATCH: &str = "speeds[0],speeds[1],positions[0],positions[1],moves";
+
+/// The trace of `properties.st` (program `prog`): `axes[k].Speed := 50` runs the Set accessor of
+/// the block each element holds (the rotary one caps it at 30), `axes[k].Speed` its Get, and
+/// `axes[k].Moves` (a Get-only property: the rotary one counts in hundreds) after one `Move()`.
+fn assert_axes_trace(trace: &str, prog: &str) {
+    let col = |v: &str| column(trace, &format!("{prog}.{v}"));
+    assert_eq!(col("speeds[0]"), [50.0, 50.0, 50.0]);
+    assert_eq!(col("speeds[1]"), [30.0, 30.0, 30.0]);
+    assert_eq!(col("positions[0]"), [50.0, 100.0, 150.0]);
+    assert_eq!(col("positions[1]"), [30.0, 60.0, 90.0]);
+    assert_eq!(col("moves"), [101.0, 202.0, 303.0]);
+}
+
+fn watch(prog: &str) -> String {
+    AXES_WATCH
+        .split(',')
+        .map(|v| format!("{prog}.{v}"))
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// Properties declared in an interface (`PROPERTY Speed : INT GET END_GET SET END_SET
+/// END_PROPERTY`), written and read through an array of the interface.
+#[test]
+fn properties_of_an_interface_run_the_accessors_of_the_instance_held() {
+    let (trace, stderr) = run_traced(&fixture("properties.st"), 3, &watch("Main"));
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_axes_trace(&trace, "Main");
+}
+
+/// The same program as TwinCAT 3 object files: the interface's `<Property>` with its `<Get>` and
+/// `<Set>` in the `.TcIO`, the blocks' properties and method in `.TcPOU` files.
+#[test]
+fn the_same_interface_as_twincat_files_gives_the_same_trace() {
+    let files: Vec<PathBuf> = ["I_Axis.TcIO", "FB_Linear.TcPOU", "FB_Rotary.TcPOU", "MAIN.TcPOU"]
+        .iter()
+        .map(|f| fixture(&format!("twincat/{f}")))
+        .collect();
+    let refs: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
+    let (trace, stderr) = common::run_traced_files(&refs, 3, &watch("MAIN"));
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_axes_trace(&trace, "MAIN");
+}

@@ -292,7 +292,9 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     sfc: None,
                     oop: None,
                     methods: scan_methods(src, inner),
-                    properties: Vec::new(),
+                    // `PROPERTY P : T GET END_GET SET END_SET END_PROPERTY`: the accessors a
+                    // block that implements it must have, called through interface variables
+                    properties: super::property::scan_properties(src, inner),
                     actions: None,
                     action_list: Vec::new(),
                     modifier: None,
@@ -931,11 +933,14 @@ pub fn parse_text(
     for (pi, p) in pous.iter().enumerate() {
         if p.interface.is_some() {
             // an INTERFACE: its methods' signatures, checked against the blocks that implement it
-            let methods = p
+            let mut methods: Vec<PendingMethod> = p
                 .methods
                 .iter()
                 .map(|m| pending_method(file, src, m, diags))
                 .collect();
+            for pr in &p.properties {
+                methods.extend(super::property::pending_accessors(file, src, pr, diags));
+            }
             pending.push(PendingBody {
                 file,
                 name_start: p.name_range.start,
