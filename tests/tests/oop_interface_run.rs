@@ -140,3 +140,44 @@ fn the_same_interface_as_twincat_files_gives_the_same_trace() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert_axes_trace(&trace, "MAIN");
 }
+
+/// `__QUERYINTERFACE(iBase1, iSub1)` succeeds when the instance held (fb1) implements I_Sub1 and
+/// clears the destination when it does not (fb2, tested in an IF condition); an FB instance as
+/// source; `__QUERYPOINTER(iBase1, p1)` gives a `POINTER TO FB_1` whose method runs on fb1 (its
+/// call counter goes on from the interface's call), and fails for a `POINTER TO FB_2`.
+#[test]
+fn query_interface_and_query_pointer_convert_at_run_time() {
+    let (trace, stderr) = run_traced(
+        &fixture("query.st"),
+        2,
+        "Main.ok1,Main.ok2,Main.sub1Set,Main.ok3,Main.sub2Set,Main.ok4,Main.r1,Main.okPtr,Main.viaPointer,Main.okNoPtr",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    for (v, want) in [
+        ("ok1", 1.0),
+        ("ok2", 0.0),
+        ("sub1Set", 0.0),
+        ("ok3", 1.0),
+        ("sub2Set", 1.0),
+        ("ok4", 1.0),
+        ("okPtr", 1.0),
+        ("okNoPtr", 0.0),
+    ] {
+        assert_eq!(column(&trace, &format!("Main.{v}")), [want, want], "{v}");
+    }
+    assert_eq!(column(&trace, "Main.r1"), [11.0, 13.0]);
+    assert_eq!(column(&trace, "Main.viaPointer"), [12.0, 14.0]);
+}
+
+/// A query in a WHILE condition (evaluated again each time round) is one E0341.
+#[test]
+fn a_query_in_a_while_condition_is_one_located_error() {
+    let src = std::fs::read_to_string(fixture("query.st"))
+        .unwrap()
+        .replace("END_PROGRAM", "WHILE __QUERYINTERFACE(iBase1, iSub1) DO\n    r1 := 0;\nEND_WHILE;\nEND_PROGRAM");
+    let heads = rejected_heads("q.st", &src);
+    assert_eq!(
+        heads,
+        ["q.st:66:7: error[E0341]: `__QUERYINTERFACE` in an ELSIF, WHILE or UNTIL condition is not supported"]
+    );
+}

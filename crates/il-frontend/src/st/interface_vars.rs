@@ -132,6 +132,7 @@ pub fn table(
         };
         let mut fields = vec![
             VarDecl::new(Ident::new(TAG, span), named("UINT"), span),
+            VarDecl::new(Ident::new("__QUERIED", span), named("BOOL"), span),
             VarDecl::new(
                 Ident::new(UNASSIGNED, span),
                 reference(named(&i.name.name)),
@@ -215,6 +216,17 @@ fn null(span: Span) -> Expr {
     )
 }
 
+fn bool_lit(v: bool, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Literal(Literal {
+            kind: LiteralKind::Bool(v),
+            type_prefix: None,
+            span,
+        }),
+        span,
+    }
+}
+
 fn binary(op: BinaryOp, left: Expr, right: Expr, span: Span) -> Expr {
     Expr {
         kind: ExprKind::Binary {
@@ -251,6 +263,11 @@ struct Rewriter<'a, 'd> {
     env: &'a Env<'a>,
     diags: &'d mut Diagnostics,
     changed: bool,
+    /// The statements `__QUERYINTERFACE` / `__QUERYPOINTER` run before the statement.
+    before: Vec<Stmt>,
+    /// Whether the expression being rewritten runs once, just after `before` (not an ELSIF,
+    /// WHILE or UNTIL condition).
+    hoistable: bool,
 }
 
 /// `s` with its uses of interface variables rewritten (see the module documentation): the
@@ -264,6 +281,8 @@ pub(super) fn rewrite(env: &Env<'_>, s: &Stmt, diags: &mut Diagnostics) -> Optio
         env,
         diags,
         changed: false,
+        before: Vec::new(),
+        hoistable: true,
     };
     let out = r.stmt(s);
     r.changed.then_some(out)
@@ -319,18 +338,18 @@ impl Rewriter<'_, '_> {
                     self.changed = true;
                     return out;
                 }
-                let mut before = self.interface_inputs(callee, args);
+                let inputs = self.interface_inputs(callee, args);
+                if !inputs.is_empty() {
+                    self.changed = true;
+                    self.before.extend(inputs);
+                }
                 for a in args.iter_mut() {
                     self.compare(&mut a.value);
                 }
-                if !before.is_empty() {
-                    self.changed = true;
-                    before.push(s);
-                    return before;
-                }
             }
             StmtKind::If { branches, .. } => {
-                for b in branches.iter_mut() {
+                for (k, b) in branches.iter_mut().enumerate() {
+                    self.hoistable = k == 0;
                     self.compare(&mut b.cond);
                 }
             }
@@ -342,11 +361,19 @@ impl Rewriter<'_, '_> {
                     self.compare(b);
                 }
             }
-            StmtKind::While { cond, .. } => self.compare(cond),
-            StmtKind::Repeat { until, .. } => self.compare(until),
+            StmtKind::While { cond, .. } => {
+                self.hoistable = false;
+                self.compare(cond);
+            }
+            StmtKind::Repeat { until, .. } => {
+                self.hoistable = false;
+                self.compare(until);
+            }
             _ => {}
         }
-        vec![s]
+        let mut out = std::mem::take(&mut self.before);
+        out.push(s);
+        out
     }
 
     /// `target := value` where `target` is of interface `i`: the statements setting its tag and
@@ -538,6 +565,155 @@ impl Rewriter<'_, '_> {
         before
     }
 
+    /// `__QUERYINTERFACE(src, dst)` (CODESYS, TwinCAT: `dst` takes the instance `src` holds, or
+    /// is for an FB instance, when its block implements `dst`'s interface, else 0) and
+    /// `__QUERYPOINTER(src, p)` (`p : POINTER TO FB` takes the address of the instance `src`
+    /// holds when it is an `FB`, else 0): the statements doing it run before the statement (in
+    /// [`Self::before`]), which reads the BOOL result from the hidden `__QUERIED` of the interface
+    /// variable (`dst`, `src`). Anything else is one E0341; `None` when `name` is no query.
+    fn query(&mut self, name: &Ident, args: &[Arg], span: Span) -> Option<Expr> {
+        let pointer = name.is("__QUERYPOINTER");
+        if !pointer && !name.is("__QUERYINTERFACE") {
+            return None;
+        }
+        let fail = |this: &mut Self, msg: String, hint: &str| {
+            this.diags.push(
+                Diagnostic::error(code::E0341, msg)
+                    .at(span)
+                    .with_primary_label("not compiled")
+                    .with_hint(hint.to_string()),
+            );
+            Some(Expr {
+                kind: ExprKind::Error,
+                span,
+            })
+        };
+        if !self.hoistable {
+            return fail(
+                self,
+                format!("`{}` in an ELSIF, WHILE or UNTIL condition is not supported", name.name),
+                "call it in a statement of its own (`ok := __QUERYINTERFACE(a, b);`) and test `ok`",
+            );
+        }
+        let (Some(src), Some(dst), 2) = (args.first(), args.get(1), args.len()) else {
+            return fail(
+                self,
+                format!("`{}` takes two operands", name.name),
+                "write `__QUERYINTERFACE(itfSource, itfDest)` or `__QUERYPOINTER(itfSource, pDest)`",
+            );
+        };
+        let (ExprKind::Place(sp), ExprKind::Place(dp)) = (&src.value.kind, &dst.value.kind) else {
+            return fail(
+                self,
+                format!("`{}` takes two variables", name.name),
+                "pass the interface (or instance) variable and the variable that receives it",
+            );
+        };
+        if pointer {
+            let target = match self.env.place_type(dp).map(|t| self.env.resolve(&t)) {
+                Some(TypeRef::Ref { target, .. }) => match *target {
+                    TypeRef::Named(n) => Some(n),
+                    _ => None,
+                },
+                _ => None,
+            };
+            let (Some(i), Some(fb)) = (self.place_interface(sp).cloned(), target) else {
+                return fail(
+                    self,
+                    "`__QUERYPOINTER` takes an interface variable and a POINTER TO a function block".into(),
+                    "declare the second operand `POINTER TO FB_X` for a block FB_X that implements the interface",
+                );
+            };
+            let ok = field(sp, "__QUERIED", span);
+            let mut arms = Vec::new();
+            if let Some(tag) = i.tag_of(&fb.name) {
+                arms.push(CaseArm {
+                    labels: vec![CaseLabel::Value(int(tag.into(), span))],
+                    body: vec![
+                        assign(
+                            dp.clone(),
+                            place_expr(field(sp, &ref_field(&fb.name), span), span),
+                            span,
+                        ),
+                        assign(ok.clone(), bool_lit(true, span), span),
+                    ],
+                    span,
+                });
+            }
+            let else_body = vec![
+                assign(dp.clone(), null(span), span),
+                assign(ok.clone(), bool_lit(false, span), span),
+            ];
+            self.before.push(Stmt {
+                kind: StmtKind::Case {
+                    selector: place_expr(field(sp, TAG, span), span),
+                    arms,
+                    else_body: Some(else_body),
+                },
+                span,
+            });
+            return Some(place_expr(ok, span));
+        }
+        let Some(di) = self.place_interface(dp).cloned() else {
+            return fail(
+                self,
+                "the second operand of `__QUERYINTERFACE` is no interface variable".into(),
+                "pass a variable whose type is the interface wanted",
+            );
+        };
+        let ok = field(dp, "__QUERIED", span);
+        let cleared = |this: &mut Self| {
+            this.assign_interface(dp, &di, &int(0, span), span)
+                .unwrap_or_default()
+        };
+        if let Some(si) = self.place_interface(sp).cloned() {
+            // the instance `src` holds, when its block is also one of `dst`'s
+            let mut arms = Vec::new();
+            for (c, tag) in si.classes.iter().filter(|(c, _)| di.tag_of(&c.name).is_some()) {
+                let mut body = vec![assign(field(dp, TAG, span), int((*tag).into(), span), span)];
+                for (d, _) in &di.classes {
+                    let f = ref_field(&d.name);
+                    let v = if d.name.eq_ignore_ascii_case(&c.name) {
+                        place_expr(field(sp, &f, span), span)
+                    } else {
+                        null(span)
+                    };
+                    body.push(assign(field(dp, &f, span), v, span));
+                }
+                body.push(assign(ok.clone(), bool_lit(true, span), span));
+                arms.push(CaseArm {
+                    labels: vec![CaseLabel::Value(int((*tag).into(), span))],
+                    body,
+                    span,
+                });
+            }
+            let mut else_body = cleared(self);
+            else_body.push(assign(ok.clone(), bool_lit(false, span), span));
+            self.before.push(Stmt {
+                kind: StmtKind::Case {
+                    selector: place_expr(field(sp, TAG, span), span),
+                    arms,
+                    else_body: Some(else_body),
+                },
+                span,
+            });
+            return Some(place_expr(ok, span));
+        }
+        // an FB instance: known when compiling
+        let implements = self
+            .block_of(&src.value)
+            .is_some_and(|fb| di.tag_of(&fb.name).is_some());
+        let mut stmts = if implements {
+            self.assign_interface(dp, &di, &src.value, span)
+                .unwrap_or_default()
+        } else {
+            cleared(self)
+        };
+        stmts.push(assign(ok.clone(), bool_lit(implements, span), span));
+        self.before.extend(stmts);
+        Some(place_expr(ok, span))
+    }
+
     /// The comparisons of interfaces inside `e`: `itf = 0` (`<> 0`, `NULL`) tests the tag,
     /// `i1 = i2` the tags and the references.
     fn compare(&mut self, e: &mut Expr) {
@@ -601,11 +777,17 @@ impl Rewriter<'_, '_> {
                 self.compare(operand);
                 return;
             }
-            ExprKind::Call { args, .. } => {
+            ExprKind::Call { name, args } => {
                 for a in args.iter_mut() {
                     self.compare(&mut a.value);
                 }
-                return;
+                let query = ["__QUERYINTERFACE", "__QUERYPOINTER"]
+                    .iter()
+                    .any(|q| name.is(q));
+                match self.query(name, args, span) {
+                    Some(result) if query => result,
+                    _ => return,
+                }
             }
             _ => return,
         };
