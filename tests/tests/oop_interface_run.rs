@@ -181,3 +181,23 @@ fn a_query_in_a_while_condition_is_one_located_error() {
         ["q.st:66:7: error[E0341]: `__QUERYINTERFACE` in an ELSIF, WHILE or UNTIL condition is not supported"]
     );
 }
+
+/// `logger : I_Logger := sum;` (the vendors' and TcUnit's way): the program's interface holds its
+/// FB_Sum from the first cycle (10 a cycle); FB_Runner's is already assigned when its method
+/// `Report` runs before its body does (100, then the body's 1); `spare : I_Logger := 0` stays
+/// unassigned.
+#[test]
+fn interface_variables_start_with_their_initial_instance() {
+    let (trace, stderr) = run_traced(
+        &fixture("initial.st"),
+        3,
+        "Main.viaProgram,Main.viaMethod,Main.viaBody,Main.runner.empty,Main.runner.sum.total",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert!(!stderr.contains("NULL"), "{stderr}");
+    assert_eq!(column(&trace, "Main.viaProgram"), [10.0, 20.0, 30.0]);
+    assert_eq!(column(&trace, "Main.viaMethod"), [100.0, 201.0, 302.0]);
+    assert_eq!(column(&trace, "Main.viaBody"), [101.0, 202.0, 303.0]);
+    assert_eq!(column(&trace, "Main.runner.sum.total"), [101.0, 202.0, 303.0]);
+    assert_eq!(column(&trace, "Main.runner.empty"), [1.0, 1.0, 1.0]);
+}

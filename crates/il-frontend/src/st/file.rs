@@ -1280,10 +1280,12 @@ pub fn compile_pending(
     // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
     let flat;
     let mut interfaces = Vec::new();
+    let mut inits = Vec::new();
     let pending = match super::inherit::flatten(units, pending, diags) {
         Some(v) => {
             flat = v.bodies;
             interfaces = v.interfaces;
+            inits = v.inits;
             &flat[..]
         }
         None => pending,
@@ -1374,10 +1376,25 @@ pub fn compile_pending(
                 if let Some(t) = temps {
                     p.var_blocks.push(t);
                 }
+                // interface variables with an initial value: assigned when the POU first runs
+                let own: Vec<&super::interface_vars::Init> =
+                    inits.iter().filter(|i| i.pou == p.name.span).collect();
+                let init = super::interface_vars::initial_values(&decls, p, &own, diags);
+                if !init.is_empty() {
+                    let mut body = init.clone();
+                    body.append(&mut p.body);
+                    p.body = body;
+                }
                 standalone.extend(actions);
                 let mut methods = Vec::new();
                 for (k, m) in pb.methods.iter().enumerate() {
-                    if let Some(a) = lower_method(pb.method_file(k), &decls, p, m, diags) {
+                    if let Some(mut a) = lower_method(pb.method_file(k), &decls, p, m, diags) {
+                        if !init.is_empty() {
+                            let tag = format!("__ITF{k}_");
+                            let mut body = crate::actions::instantiate(&init, &tag, a.name.span);
+                            body.append(&mut a.body);
+                            a.body = body;
+                        }
                         methods.push(a);
                     }
                 }

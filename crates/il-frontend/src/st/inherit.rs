@@ -271,7 +271,7 @@ pub fn flatten(
             check_implements(c, itf, &methods, &interfaces, diags);
         }
     }
-    check_instances(units, &classes, &interfaces, diags);
+    let inits = check_instances(units, &classes, &interfaces, diags);
     // variables of an interface type: each block's interfaces, its bases' included
     let blocks: Vec<(Ident, bool, Vec<Ident>)> = keys
         .iter()
@@ -293,6 +293,7 @@ pub fn flatten(
     Some(Flat {
         bodies: out,
         interfaces: table,
+        inits,
     })
 }
 
@@ -302,6 +303,9 @@ pub struct Flat {
     pub bodies: Vec<PendingBody>,
     /// Every interface of the program with the blocks that implement it.
     pub interfaces: Vec<super::interface_vars::Interface>,
+    /// The initial values of interface variables (`itf : I_Shape := fbCircle;`), each with the
+    /// POU that declares it (the file and start of its name): assigned when the POU first runs.
+    pub inits: Vec<super::interface_vars::Init>,
 }
 
 /// The chain of bases of `key`, root first, ending with `key`; `None` (with one diagnostic at the
@@ -790,15 +794,17 @@ fn check_implements(
     }
 }
 
-/// Variables whose type is an ABSTRACT block (E0333: not compiled), and variables of an interface
-/// type with an initial value (E0336: the value is left out; an interface variable starts
-/// unassigned and is assigned in the body).
+/// Variables whose type is an ABSTRACT block (E0333: not compiled), and the initial values of
+/// variables of an interface type: `:= 0` is left out (an interface starts unassigned), `:= inst`
+/// of a POU's variable is returned (assigned when the POU first runs); any other, and any of a
+/// VAR_GLOBAL, is E0336 (the value is left out).
 fn check_instances(
     units: &mut [CompilationUnit],
     classes: &HashMap<String, Class>,
     interfaces: &HashMap<String, &InterfaceOop>,
     diags: &mut Diagnostics,
-) {
+) -> Vec<super::interface_vars::Init> {
+    use crate::ast::{Initializer, Operand};
     fn named(t: &TypeRef) -> Option<&Ident> {
         match t {
             TypeRef::Named(i) => Some(i),
@@ -806,8 +812,9 @@ fn check_instances(
             _ => None,
         }
     }
-    let check = |v: &mut crate::ast::VarDecl, diags: &mut Diagnostics| {
-        let Some(ty) = named(&v.ty) else { return true };
+    let mut inits = Vec::new();
+    let mut check = |v: &mut crate::ast::VarDecl, pou: Option<Span>, diags: &mut Diagnostics| {
+        let Some(ty) = named(&v.ty) else { return };
         if let Some(c) = classes.get(&ty.key()).filter(|c| c.oop.is_abstract) {
             diags.push(
                 Diagnostic::error(
@@ -818,34 +825,51 @@ fn check_instances(
                 .with_primary_label("an ABSTRACT block has no instances")
                 .with_hint(format!("declare an instance of a block that EXTENDS `{}` and implements its abstract methods", c.name.name)),
             );
-            return true;
+            return;
         }
-        if let (Some(i), true) = (interfaces.get(&ty.key()), v.init.is_some()) {
-            let at = v.span;
-            diags.push(
+        let Some(i) = interfaces.get(&ty.key()) else { return };
+        let Some(init) = v.init.take() else { return };
+        match (&init, pou, &v.ty) {
+            (Initializer::Value(Operand::Literal(l)), _, _)
+                if matches!(l.kind, crate::ast::LiteralKind::Int(0)) => {}
+            (Initializer::Value(Operand::Var(value)), Some(pou), TypeRef::Named(_))
+                if !value.base.is("NULL") =>
+            {
+                inits.push(super::interface_vars::Init {
+                    pou,
+                    var: v.name.clone(),
+                    value: value.clone(),
+                });
+            }
+            (Initializer::Value(Operand::Var(value)), _, _) if value.base.is("NULL") => {}
+            _ => diags.push(
                 Diagnostic::error(
                     code::E0336,
-                    format!("`{}` of interface type `{}` has an initial value: not compiled", v.name.name, i.name.name),
+                    format!("`{}` of interface type `{}` has an initial value that is not compiled", v.name.name, i.name.name),
                 )
-                .at(at)
-                .with_primary_label("an interface variable starts unassigned")
+                .at(v.span)
+                .with_primary_label("only `:= 0` or `:= instance` of a POU's own variable")
                 .with_hint(format!("assign it in the body (`{} := fbInstance;`)", v.name.name)),
-            );
-            v.init = None;
+            ),
         }
-        true
     };
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
         match item {
             LibraryElement::Pou(p) => {
+                let pou = p.name.span;
                 for b in p.var_blocks.iter_mut() {
-                    b.vars.retain_mut(|v| check(v, diags));
+                    for v in b.vars.iter_mut() {
+                        check(v, Some(pou), diags);
+                    }
                 }
             }
             LibraryElement::GlobalVars(b) => {
-                b.vars.retain_mut(|v| check(v, diags));
+                for v in b.vars.iter_mut() {
+                    check(v, None, diags);
+                }
             }
             _ => {}
         }
     }
+    inits
 }

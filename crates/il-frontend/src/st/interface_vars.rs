@@ -173,6 +173,113 @@ pub fn table(
     out
 }
 
+/// The initial value of an interface variable of a POU: `itf : I_Shape := fbCircle;`.
+#[derive(Debug, Clone)]
+pub struct Init {
+    /// The name of the POU that declares it (its span identifies the POU).
+    pub pou: Span,
+    /// The interface variable.
+    pub var: Ident,
+    /// The instance (or interface) it starts with.
+    pub value: crate::ast::VarRef,
+}
+
+/// The hidden flag of a function block or program whose interface variables have their initial
+/// values: set once they are assigned.
+pub const INIT_FLAG: &str = "__ITF_INIT";
+
+/// The IL that gives the interface variables of `p` their initial values (`inits`, all of `p`):
+/// in a FUNCTION at each call, in a FUNCTION_BLOCK or PROGRAM the first time its body or one of
+/// its methods runs (behind the hidden flag [`INIT_FLAG`], declared in `p`). CODESYS and TwinCAT
+/// assign them before the first cycle; here a call through them before the POU first runs finds
+/// them unassigned. Empty when `inits` is.
+pub fn initial_values(
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    inits: &[&Init],
+    diags: &mut Diagnostics,
+) -> Vec<crate::ast::IlStmt> {
+    let Some(first) = inits.first() else {
+        return Vec::new();
+    };
+    let span = first.var.span;
+    let mut body = Vec::new();
+    for i in inits {
+        let v = &i.value;
+        let mut accessors = Vec::new();
+        for a in v.accessors.iter() {
+            match a {
+                crate::ast::Accessor::Field(f) => accessors.push(Accessor::Field(f.clone())),
+                crate::ast::Accessor::Deref(s) => accessors.push(Accessor::Deref(*s)),
+                crate::ast::Accessor::Index(_) => {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0336,
+                            format!("`{}`: an initial value with an index is not compiled", i.var.name),
+                        )
+                        .at(v.span)
+                        .with_primary_label("an array element")
+                        .with_hint(format!("assign it in the body (`{} := ...;`)", i.var.name)),
+                    );
+                    return Vec::new();
+                }
+            }
+        }
+        let value = Place {
+            base: PlaceBase::Name(v.base.clone()),
+            accessors,
+            span: v.span,
+        };
+        let target = Place {
+            base: PlaceBase::Name(i.var.clone()),
+            accessors: Vec::new(),
+            span: i.var.span,
+        };
+        body.push(assign(target, place_expr(value, v.span), v.span));
+    }
+    let stmts = if p.kind == PouKind::Function {
+        body
+    } else {
+        let flag = Place {
+            base: PlaceBase::Name(Ident::new(INIT_FLAG, span)),
+            accessors: Vec::new(),
+            span,
+        };
+        p.var_blocks.push(crate::ast::VarBlock::locals(
+            vec![VarDecl::new(
+                Ident::new(INIT_FLAG, span),
+                TypeRef::Named(Ident::new("BOOL", span)),
+                span,
+            )],
+            span,
+        ));
+        body.insert(0, assign(flag.clone(), bool_lit(true, span), span));
+        vec![Stmt {
+            kind: StmtKind::If {
+                branches: vec![super::ast::CondBranch {
+                    cond: Expr {
+                        kind: ExprKind::Unary {
+                            op: super::ast::UnaryOp::Not,
+                            operand: Box::new(place_expr(flag, span)),
+                        },
+                        span,
+                    },
+                    body,
+                    span,
+                }],
+                else_body: None,
+            },
+            span,
+        }]
+    };
+    let mut low = super::PouLowering::new(decls, p).with_prefix("_ITF_");
+    let il = low.statements(&stmts, diags);
+    if let Some(t) = low.finish(span) {
+        p.var_blocks.push(t);
+    }
+    il
+}
+
 // ------------------------------------------------------------------ building statements
 
 fn field(p: &Place, name: &str, span: Span) -> Place {
