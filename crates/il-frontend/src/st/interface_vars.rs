@@ -61,6 +61,18 @@ pub struct Interface {
     pub methods: Vec<MethodSig>,
     /// Its own key and those of the interfaces it extends (an `I2 EXTENDS I1` value is an `I1`).
     pub within: Vec<String>,
+    /// The methods (upper-case) whose result is of an interface type: not callable through the
+    /// interface (E0342).
+    pub interface_results: Vec<String>,
+}
+
+/// Whether `t` is an interface type or an array of one.
+fn names_interface(t: &TypeRef, interfaces: &HashMap<String, &InterfaceOop>) -> bool {
+    match t {
+        TypeRef::Named(n) => interfaces.contains_key(&n.key()),
+        TypeRef::Array { element, .. } => names_interface(element, interfaces),
+        _ => false,
+    }
 }
 
 impl Interface {
@@ -146,8 +158,14 @@ pub fn table(
                 span,
             ));
         }
+        let mut interface_results = Vec::new();
         for m in &methods {
             if let Some(r) = &m.ret {
+                if names_interface(&r.ty, interfaces) {
+                    // a result holding an interface would make the structure hold itself
+                    interface_results.push(m.name.key());
+                    continue;
+                }
                 fields.push(VarDecl::new(
                     Ident::new(crate::actions::method_result(&m.name.name), span),
                     r.ty.clone(),
@@ -162,6 +180,7 @@ pub fn table(
         });
         out.push(Interface {
             name: i.name.clone(),
+            interface_results,
             classes,
             methods: methods.iter().map(|m| MethodSig::of(m)).collect(),
             within,
@@ -278,6 +297,21 @@ pub fn initial_values(
         p.var_blocks.push(t);
     }
     il
+}
+
+/// The methods of `i` for a message: `Area, Scale`.
+fn shown_methods(i: &Interface) -> String {
+    let names: Vec<&str> = i
+        .methods
+        .iter()
+        .filter(|m| !super::property::is_accessor(&m.name))
+        .map(|m| m.name.as_str())
+        .collect();
+    if names.is_empty() {
+        "none".into()
+    } else {
+        names.join(", ")
+    }
 }
 
 // ------------------------------------------------------------------ building statements
@@ -579,7 +613,37 @@ impl Rewriter<'_, '_> {
             span: callee.span,
         };
         let i = self.place_interface(&itf)?.clone();
-        let sig = i.methods.iter().find(|x| x.name.eq_ignore_ascii_case(&m.name))?;
+        let Some(sig) = i.methods.iter().find(|x| x.name.eq_ignore_ascii_case(&m.name)) else {
+            self.diags.push(
+                Diagnostic::error(
+                    code::E0342,
+                    format!("interface `{}` has no method `{}`", i.name.name, m.name),
+                )
+                .at(m.span)
+                .with_primary_label("not a method of the interface")
+                .with_hint(format!(
+                    "call one of the methods `{}` declares (or those it extends): {}",
+                    i.name.name,
+                    shown_methods(&i)
+                )),
+            );
+            return Some(Vec::new());
+        };
+        if i.interface_results.contains(&m.key()) {
+            self.diags.push(
+                Diagnostic::error(
+                    code::E0342,
+                    format!(
+                        "method `{}` of interface `{}` returns an interface: not callable through an interface variable",
+                        sig.name, i.name.name
+                    ),
+                )
+                .at(m.span)
+                .with_primary_label("its result would hold an interface")
+                .with_hint("return the result through a VAR_IN_OUT of the interface type, or call the method on the instance itself"),
+            );
+            return Some(Vec::new());
+        }
         let result = crate::actions::method_result(&sig.name);
         let mut arms = Vec::new();
         for (c, tag) in &i.classes {
@@ -670,6 +734,26 @@ impl Rewriter<'_, '_> {
             }
         });
         before
+    }
+
+    /// Whether `p` reads the result of a call through an interface that E0342 refused
+    /// (`itf.__M_M`, as the parser reads `itf.M()`): the statement is dropped, no error more.
+    fn unknown_result(&self, p: &Place) -> bool {
+        let Some((Accessor::Field(f), prefix)) = p.accessors.split_last() else {
+            return false;
+        };
+        let Some(m) = f.name.strip_prefix(crate::actions::METHOD_PREFIX) else {
+            return false;
+        };
+        let itf = Place {
+            base: p.base.clone(),
+            accessors: prefix.to_vec(),
+            span: p.span,
+        };
+        self.place_interface(&itf).is_some_and(|i| {
+            i.interface_results.contains(&m.to_ascii_uppercase())
+                || !i.methods.iter().any(|x| x.name.eq_ignore_ascii_case(m))
+        })
     }
 
     /// `__QUERYINTERFACE(src, dst)` (CODESYS, TwinCAT: `dst` takes the instance `src` holds, or
@@ -884,6 +968,10 @@ impl Rewriter<'_, '_> {
                 self.compare(operand);
                 return;
             }
+            ExprKind::Place(p) if self.unknown_result(p) => Expr {
+                kind: ExprKind::Error,
+                span,
+            },
             ExprKind::Call { name, args } => {
                 for a in args.iter_mut() {
                     self.compare(&mut a.value);
