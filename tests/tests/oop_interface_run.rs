@@ -201,3 +201,35 @@ fn interface_variables_start_with_their_initial_instance() {
     assert_eq!(column(&trace, "Main.runner.sum.total"), [101.0, 202.0, 303.0]);
     assert_eq!(column(&trace, "Main.runner.empty"), [1.0, 1.0, 1.0]);
 }
+
+/// A call through an interface of a method it does not declare, or of one returning an interface
+/// (whose result the interface's hidden structure cannot hold): one E0342 at the method's name,
+/// no error more for the result read.
+#[test]
+fn a_call_through_an_interface_that_cannot_be_compiled_is_one_located_error() {
+    let src = "INTERFACE I_Node\nMETHOD Next : I_Node\nEND_METHOD\nMETHOD Val : INT\nEND_METHOD\nEND_INTERFACE\n\
+FUNCTION_BLOCK FB_N IMPLEMENTS I_Node\nVAR nxt : I_Node; v : INT; END_VAR\n\
+METHOD Next : I_Node\nNext := nxt;\nEND_METHOD\nMETHOD Val : INT\nVal := v;\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+PROGRAM Main\nVAR a : FB_N; i, j : I_Node; x : INT; END_VAR\ni := a;\nx := i.Missing() + 1;\nj := i.Next();\nEND_PROGRAM\n";
+    assert_eq!(
+        rejected_heads("n.st", src),
+        [
+            "n.st:19:8: error[E0342]: interface `I_Node` has no method `Missing`",
+            "n.st:20:8: error[E0342]: method `Next` of interface `I_Node` returns an interface: not callable through an interface variable",
+        ]
+    );
+}
+
+/// A structure holding itself by value (here through an array of another structure) has no size:
+/// one E0343 at the field closing the cycle, and no crash (before: the C generation recursed
+/// without end).
+#[test]
+fn a_structure_that_contains_itself_is_one_located_error() {
+    let src = "TYPE A : STRUCT b : ARRAY[1..2] OF B; END_STRUCT; END_TYPE\n\
+TYPE B : STRUCT a : A; r : REF_TO A; END_STRUCT; END_TYPE\n\
+PROGRAM Main\nVAR x : A; END_VAR\nEND_PROGRAM\n";
+    assert_eq!(
+        rejected_heads("s.st", src),
+        ["s.st:2:17: error[E0343]: structure `A` contains itself (through field `a`)"]
+    );
+}

@@ -15,6 +15,7 @@ pub mod nesting;
 mod places;
 mod program_calls;
 mod refs;
+mod struct_cycles;
 pub mod stdlib;
 pub mod typing;
 
