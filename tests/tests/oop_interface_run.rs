@@ -233,3 +233,21 @@ PROGRAM Main\nVAR x : A; END_VAR\nEND_PROGRAM\n";
         ["s.st:2:17: error[E0343]: structure `A` contains itself (through field `a`)"]
     );
 }
+
+/// Instances handed to a method's input of interface type, positionally (`registry.Add(c, 1)`),
+/// by name in another order, and from inside the block (`Add(own, 1)`): the registry keeps them
+/// in an array of the interface and its body polls them all (7 + the ramp's 1, 2, 3 + 1000). The
+/// third call (weight 0) is refused: its result starts FALSE, not at the previous call's TRUE (a
+/// method's result starts at its default each call).
+#[test]
+fn instances_passed_to_a_methods_interface_input_are_kept_and_called() {
+    let (trace, stderr) = run_traced(
+        &fixture("registry.st"),
+        3,
+        "Main.added,Main.registry.sum,Main.registry.count",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.added"), [3.0, 3.0, 3.0]);
+    assert_eq!(column(&trace, "Main.registry.count"), [3.0, 3.0, 3.0]);
+    assert_eq!(column(&trace, "Main.registry.sum"), [1008.0, 1009.0, 1010.0]);
+}

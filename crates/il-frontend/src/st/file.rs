@@ -1432,12 +1432,16 @@ pub fn add_method_vars(
     let mut inputs = Vec::new();
     let mut outputs = Vec::new();
     let mut temps = Vec::new();
+    let mut defaults = Vec::new();
     for m in methods {
         if let Some(r) = &m.ret {
             let mut v = r.clone();
             v.name.name = method_result(&m.name.name);
             v.init = None;
-            outputs.push(v);
+            outputs.push(v.clone());
+            // never written: the default value the result starts each call with
+            v.name.name = method_default(&m.name.name);
+            defaults.push(v);
         }
         for b in &m.blocks {
             let list = match b.kind {
@@ -1472,6 +1476,7 @@ pub fn add_method_vars(
         (VarKind::Input, inputs),
         (VarKind::Output, outputs),
         (VarKind::Temp, temps),
+        (VarKind::Local, defaults),
     ] {
         if !vars.is_empty() {
             p.var_blocks.push(VarBlock {
@@ -1484,6 +1489,13 @@ pub fn add_method_vars(
             });
         }
     }
+}
+
+/// The hidden, never written variable holding the default value of method `m`'s result: the
+/// result is set to it when the method starts (a method's result, like a function's, does not keep
+/// the value of the previous call: IEC 61131-3 ed. 3, 6.6.1.2; CODESYS "Method").
+fn method_default(m: &str) -> String {
+    format!("__MZ_{}", m.to_ascii_uppercase())
 }
 
 /// Puts a copy of a method's statements where the block's body, or one of its methods, calls it
@@ -1594,6 +1606,33 @@ pub fn lower_method(
         ..Default::default()
     }
     .apply(&mut body);
+    if m.ret.is_some() {
+        // the result starts at its default value each call
+        let var = |name: String| {
+            crate::ast::Operand::Var(crate::ast::VarRef {
+                base: crate::ast::Ident::new(name, m.name.span),
+                accessors: Default::default(),
+                span: m.name.span,
+            })
+        };
+        let simple = |op: crate::ast::Op, operand| {
+            crate::ast::IlStmt::Instr(crate::ast::Instruction {
+                kind: crate::ast::InstrKind::Simple {
+                    op,
+                    negate: false,
+                    operand: Some(operand),
+                },
+                span: m.name.span,
+            })
+        };
+        body.splice(
+            0..0,
+            [
+                simple(crate::ast::Op::Ld, var(method_default(&m.name.name))),
+                simple(crate::ast::Op::St, var(method_result(&m.name.name))),
+            ],
+        );
+    }
     let body = instantiate(
         &body,
         &format!("{}_L", method_result(&m.name.name)),

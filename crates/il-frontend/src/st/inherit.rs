@@ -754,6 +754,37 @@ fn check_implements(
         todo.extend(i.extends.iter().map(Ident::key));
         for m in &i.methods {
             match methods.iter().find(|x| x.name.key() == m.name.key()) {
+                // a property the interface declares (its accessor `__GET_P` / `__SET_P`)
+                None if super::property::is_accessor(&m.name.name) => {
+                    let upper = m.name.name.to_ascii_uppercase();
+                    let (kind, prop) = match upper.strip_prefix(super::property::GET_PREFIX) {
+                        Some(_) => ("Get", &m.name.name[super::property::GET_PREFIX.len()..]),
+                        None => ("Set", &m.name.name[super::property::SET_PREFIX.len()..]),
+                    };
+                    // the property's name as written: the getter's result, the setter's input
+                    let written = m.ret.as_ref().map(|r| r.name.name.as_str()).or_else(|| {
+                        let first = m.blocks.first()?.vars.first()?;
+                        Some(first.name.name.as_str())
+                    });
+                    let prop = written.unwrap_or(prop);
+                    let what = format!("{kind} accessor for property `{prop}`");
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0335,
+                            format!(
+                                "`{}` IMPLEMENTS `{}` but has no {what}",
+                                c.name.name, i.name.name
+                            ),
+                        )
+                        .at(itf.span)
+                        .with_primary_label("property accessor missing")
+                        .with_label(m.name.span, "declared by the interface here")
+                        .with_hint(format!(
+                            "add the PROPERTY with that accessor (GET ... END_GET / SET ... END_SET) to `{}` (or to a block it extends)",
+                            c.name.name
+                        )),
+                    )
+                }
                 None => diags.push(
                     Diagnostic::error(
                         code::E0335,

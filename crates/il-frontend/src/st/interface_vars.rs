@@ -692,48 +692,119 @@ impl Rewriter<'_, '_> {
         }])
     }
 
-    /// `fb(shape := inst)` where `shape` is an input of interface type: `fb.shape := inst;` (as
-    /// rewritten by [`Self::assign_interface`]) before the call, and the argument left out.
+    /// `fb(shape := inst)` where `shape` is an input of interface type (of a block, or of a
+    /// method: `obj.Add(shape := inst)`, `Add(inst)` inside the block): `fb.shape := inst;` (as
+    /// rewritten by [`Self::assign_interface`]) before the call, and the argument left out (the
+    /// positional arguments after it are then named, so that they bind as before).
     fn interface_inputs(&mut self, callee: &Place, args: &mut Vec<Arg>) -> Vec<Stmt> {
-        let Some(TypeRef::Named(fb)) = self.env.place_type(callee).map(|t| self.env.resolve(&t))
+        let params = self.call_inputs(callee);
+        if !params.iter().any(|p| self.interface(&p.2).is_some()) {
+            return Vec::new();
+        }
+        let mut before = Vec::new();
+        let mut kept = Vec::new();
+        let mut positional = Vec::new();
+        for (k, a) in std::mem::take(args).into_iter().enumerate() {
+            let param = match (&a.name, a.dir) {
+                (_, ArgDir::Output { .. }) => None,
+                (Some(n), _) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
+                (None, _) => params.get(k),
+            };
+            if let Some((name, target, ty)) = param {
+                if let Some(i) = self.interface(ty).cloned() {
+                    if let Some(stmts) = self.assign_interface(target, &i, &a.value, a.span) {
+                        before.extend(stmts);
+                        continue;
+                    }
+                }
+                if a.name.is_none() {
+                    positional.push((kept.len(), name.clone()));
+                }
+            }
+            kept.push(a);
+        }
+        if !before.is_empty() {
+            for (k, name) in positional {
+                kept[k].name = Some(Ident::new(name, kept[k].span));
+            }
+        }
+        *args = kept;
+        before
+    }
+
+    /// The inputs a call statement of `callee` passes, in order: each one's name as the caller
+    /// writes it, the place that holds it, its type. Empty when `callee` is no block instance and
+    /// no method of one.
+    fn call_inputs(&self, callee: &Place) -> Vec<(String, Place, TypeRef)> {
+        let block = |t: &TypeRef| match self.env.resolve(t) {
+            TypeRef::Named(n) => self
+                .env
+                .decls
+                .pou(&n.name)
+                .filter(|p| p.kind == PouKind::FunctionBlock)
+                .cloned(),
+            _ => None,
+        };
+        // an instance: its inputs
+        if let Some(pou) = self.env.place_type(callee).and_then(|t| block(&t)) {
+            return pou
+                .params()
+                .filter(|p| p.1 == crate::ast::VarKind::Input)
+                .map(|(n, _, t)| (n.clone(), field(callee, n, callee.span), t.clone()))
+                .collect();
+        }
+        // a method: its hidden inputs in the block
+        let (pou, prefix, m) = match callee.accessors.split_last() {
+            Some((Accessor::Field(m), rest)) => {
+                let prefix = Place {
+                    base: callee.base.clone(),
+                    accessors: rest.to_vec(),
+                    span: callee.span,
+                };
+                match self.env.place_type(&prefix).and_then(|t| block(&t)) {
+                    Some(pou) => (pou, Some(prefix), m.clone()),
+                    None => return Vec::new(),
+                }
+            }
+            None => {
+                let Some(m) = callee.name() else {
+                    return Vec::new();
+                };
+                if self.env.pou_kind != PouKind::FunctionBlock || self.env.var_type(m).is_some() {
+                    return Vec::new();
+                }
+                match self.env.decls.pou(&self.env.pou_name.name) {
+                    Some(pou) => (pou.clone(), None, m.clone()),
+                    None => return Vec::new(),
+                }
+            }
+            _ => return Vec::new(),
+        };
+        let Some(sig) = self
+            .env
+            .decls
+            .methods
+            .get(&pou.name.to_ascii_uppercase())
+            .and_then(|ms| ms.iter().find(|s| s.name.eq_ignore_ascii_case(&m.name)))
         else {
             return Vec::new();
         };
-        let Some(pou) = self.env.decls.pou(&fb.name).cloned() else {
-            return Vec::new();
-        };
-        if pou.kind != PouKind::FunctionBlock {
-            return Vec::new();
-        }
-        let params: Vec<_> = pou.params().cloned().collect();
-        let mut before = Vec::new();
-        let mut k = 0;
-        args.retain(|a| {
-            let at = k;
-            k += 1;
-            if a.dir != ArgDir::Input {
-                return true;
-            }
-            let param = match &a.name {
-                Some(n) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
-                None => params.get(at),
-            };
-            let Some((name, crate::ast::VarKind::Input, ty)) = param else {
-                return true;
-            };
-            let Some(i) = self.interface(ty).cloned() else {
-                return true;
-            };
-            let target = field(callee, name, a.span);
-            match self.assign_interface(&target, &i, &a.value, a.span) {
-                Some(stmts) => {
-                    before.extend(stmts);
-                    false
-                }
-                None => true,
-            }
-        });
-        before
+        sig.inputs
+            .iter()
+            .filter_map(|input| {
+                let hidden = crate::actions::method_var(&sig.name, input);
+                let ty = pou.var(&hidden)?.2.clone();
+                let target = match &prefix {
+                    Some(p) => field(p, &hidden, callee.span),
+                    None => Place {
+                        base: PlaceBase::Name(Ident::new(&hidden, callee.span)),
+                        accessors: Vec::new(),
+                        span: callee.span,
+                    },
+                };
+                Some((input.clone(), target, ty))
+            })
+            .collect()
     }
 
     /// Whether `p` reads the result of a call through an interface that E0342 refused
