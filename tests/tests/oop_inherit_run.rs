@@ -165,7 +165,8 @@ fn each_refused_inheritance_is_one_located_diagnostic() {
 /// `oop_interface_run.rs`): FB_Base does not implement I_Get (E0340 at the value), and an
 /// interface variable's initial value other than 0 or an instance is E0336.
 #[test]
-fn an_interface_variable_given_what_does_not_implement_it_or_an_initial_value_is_one_located_error() {
+fn an_interface_variable_given_what_does_not_implement_it_or_an_initial_value_is_one_located_error()
+{
     assert_eq!(
         heads("INTERFACE I_Get\nMETHOD Get : INT\nVAR_INPUT k : INT; END_VAR\nEND_METHOD\nEND_INTERFACE\n\
 PROGRAM Main\nVAR b : FB_Base; itf : I_Get; j : I_Get := 5; r : INT; END_VAR\nitf := b;\nr := itf.Get(k := 1);\nEND_PROGRAM\n"),

@@ -76,7 +76,9 @@ fn interface_variables_work_in_globals_functions_in_outs_and_methods() {
     assert_eq!(column(&trace, "Main.down.n"), [-12.0, -24.0]);
     assert_eq!(column(&trace, "Main.probed"), [0.0, 0.0]);
     assert!(
-        stderr.contains("NULL reference dereferenced (first: a call through the unassigned interface"),
+        stderr.contains(
+            "NULL reference dereferenced (first: a call through the unassigned interface"
+        ),
         "{stderr}"
     );
     assert!(stderr.contains("in FB_Driver"), "{stderr}");
@@ -131,10 +133,15 @@ fn properties_of_an_interface_run_the_accessors_of_the_instance_held() {
 /// `<Set>` in the `.TcIO`, the blocks' properties and method in `.TcPOU` files.
 #[test]
 fn the_same_interface_as_twincat_files_gives_the_same_trace() {
-    let files: Vec<PathBuf> = ["I_Axis.TcIO", "FB_Linear.TcPOU", "FB_Rotary.TcPOU", "MAIN.TcPOU"]
-        .iter()
-        .map(|f| fixture(&format!("twincat/{f}")))
-        .collect();
+    let files: Vec<PathBuf> = [
+        "I_Axis.TcIO",
+        "FB_Linear.TcPOU",
+        "FB_Rotary.TcPOU",
+        "MAIN.TcPOU",
+    ]
+    .iter()
+    .map(|f| fixture(&format!("twincat/{f}")))
+    .collect();
     let refs: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
     let (trace, stderr) = common::run_traced_files(&refs, 3, &watch("MAIN"));
     assert!(!stderr.contains("error"), "{stderr}");
@@ -174,7 +181,10 @@ fn query_interface_and_query_pointer_convert_at_run_time() {
 fn a_query_in_a_while_condition_is_one_located_error() {
     let src = std::fs::read_to_string(fixture("query.st"))
         .unwrap()
-        .replace("END_PROGRAM", "WHILE __QUERYINTERFACE(iBase1, iSub1) DO\n    r1 := 0;\nEND_WHILE;\nEND_PROGRAM");
+        .replace(
+            "END_PROGRAM",
+            "WHILE __QUERYINTERFACE(iBase1, iSub1) DO\n    r1 := 0;\nEND_WHILE;\nEND_PROGRAM",
+        );
     let heads = rejected_heads("q.st", &src);
     assert_eq!(
         heads,
@@ -198,7 +208,10 @@ fn interface_variables_start_with_their_initial_instance() {
     assert_eq!(column(&trace, "Main.viaProgram"), [10.0, 20.0, 30.0]);
     assert_eq!(column(&trace, "Main.viaMethod"), [100.0, 201.0, 302.0]);
     assert_eq!(column(&trace, "Main.viaBody"), [101.0, 202.0, 303.0]);
-    assert_eq!(column(&trace, "Main.runner.sum.total"), [101.0, 202.0, 303.0]);
+    assert_eq!(
+        column(&trace, "Main.runner.sum.total"),
+        [101.0, 202.0, 303.0]
+    );
     assert_eq!(column(&trace, "Main.runner.empty"), [1.0, 1.0, 1.0]);
 }
 
@@ -249,5 +262,8 @@ fn instances_passed_to_a_methods_interface_input_are_kept_and_called() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(column(&trace, "Main.added"), [3.0, 3.0, 3.0]);
     assert_eq!(column(&trace, "Main.registry.count"), [3.0, 3.0, 3.0]);
-    assert_eq!(column(&trace, "Main.registry.sum"), [1008.0, 1009.0, 1010.0]);
+    assert_eq!(
+        column(&trace, "Main.registry.sum"),
+        [1008.0, 1009.0, 1010.0]
+    );
 }

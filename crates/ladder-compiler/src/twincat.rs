@@ -124,8 +124,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
                                 .filter(|c| matches!(c.name(), "Get" | "Set"))
                                 .collect();
                             for (j, acc) in accessors.iter().enumerate() {
-                                let acc_next =
-                                    accessors.get(j + 1).map_or(next, |n| n.tag_start());
+                                let acc_next = accessors.get(j + 1).map_or(next, |n| n.tag_start());
                                 let (open, close) = if acc.name() == "Get" {
                                     ("GET", "END_GET")
                                 } else {

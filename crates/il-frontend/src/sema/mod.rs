@@ -15,8 +15,8 @@ pub mod nesting;
 mod places;
 mod program_calls;
 mod refs;
-mod struct_cycles;
 pub mod stdlib;
+mod struct_cycles;
 pub mod typing;
 
 pub use decls::reserved_name;

@@ -172,9 +172,10 @@ impl Body<'_, '_> {
         let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
         if let ReadOnly::PouInput { decl: Some(decl) } = ro {
-            let hidden_field = v.accessors.iter().any(
-                |a| matches!(a, crate::ast::Accessor::Field(f) if f.name.starts_with("__")),
-            );
+            let hidden_field = v
+                .accessors
+                .iter()
+                .any(|a| matches!(a, crate::ast::Accessor::Field(f) if f.name.starts_with("__")));
             if v.base.name.starts_with(crate::actions::FLAG_PREFIX)
                 || v.base.name.starts_with(crate::actions::METHOD_PREFIX)
                 || hidden_field

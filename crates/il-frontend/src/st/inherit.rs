@@ -286,7 +286,11 @@ pub fn flatten(
                 .iter()
                 .flat_map(|k| classes[k].oop.implements.iter().cloned())
                 .collect();
-            (c.name.clone(), c.oop.is_abstract || levels.is_empty(), implements)
+            (
+                c.name.clone(),
+                c.oop.is_abstract || levels.is_empty(),
+                implements,
+            )
         })
         .collect();
     let table = super::interface_vars::table(units, &blocks, &interfaces);
@@ -858,7 +862,9 @@ fn check_instances(
             );
             return;
         }
-        let Some(i) = interfaces.get(&ty.key()) else { return };
+        let Some(i) = interfaces.get(&ty.key()) else {
+            return;
+        };
         let Some(init) = v.init.take() else { return };
         match (&init, pou, &v.ty) {
             (Initializer::Value(Operand::Literal(l)), _, _)
@@ -876,11 +882,17 @@ fn check_instances(
             _ => diags.push(
                 Diagnostic::error(
                     code::E0336,
-                    format!("`{}` of interface type `{}` has an initial value that is not compiled", v.name.name, i.name.name),
+                    format!(
+                        "`{}` of interface type `{}` has an initial value that is not compiled",
+                        v.name.name, i.name.name
+                    ),
                 )
                 .at(v.span)
                 .with_primary_label("only `:= 0` or `:= instance` of a POU's own variable")
-                .with_hint(format!("assign it in the body (`{} := fbInstance;`)", v.name.name)),
+                .with_hint(format!(
+                    "assign it in the body (`{} := fbInstance;`)",
+                    v.name.name
+                )),
             ),
         }
     };

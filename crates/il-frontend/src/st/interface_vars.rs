@@ -234,7 +234,10 @@ pub fn initial_values(
                     diags.push(
                         Diagnostic::error(
                             code::E0336,
-                            format!("`{}`: an initial value with an index is not compiled", i.var.name),
+                            format!(
+                                "`{}`: an initial value with an index is not compiled",
+                                i.var.name
+                            ),
                         )
                         .at(v.span)
                         .with_primary_label("an array element")
@@ -530,7 +533,11 @@ impl Rewriter<'_, '_> {
         let set = |tag: Expr, refs: &dyn Fn(&Ident) -> Expr| {
             let mut out = vec![assign(field(target, TAG, span), tag, span)];
             for (c, _) in &i.classes {
-                out.push(assign(field(target, &ref_field(&c.name), span), refs(c), span));
+                out.push(assign(
+                    field(target, &ref_field(&c.name), span),
+                    refs(c),
+                    span,
+                ));
             }
             out
         };
@@ -613,7 +620,11 @@ impl Rewriter<'_, '_> {
             span: callee.span,
         };
         let i = self.place_interface(&itf)?.clone();
-        let Some(sig) = i.methods.iter().find(|x| x.name.eq_ignore_ascii_case(&m.name)) else {
+        let Some(sig) = i
+            .methods
+            .iter()
+            .find(|x| x.name.eq_ignore_ascii_case(&m.name))
+        else {
             self.diags.push(
                 Diagnostic::error(
                     code::E0342,
@@ -853,7 +864,10 @@ impl Rewriter<'_, '_> {
         if !self.hoistable {
             return fail(
                 self,
-                format!("`{}` in an ELSIF, WHILE or UNTIL condition is not supported", name.name),
+                format!(
+                    "`{}` in an ELSIF, WHILE or UNTIL condition is not supported",
+                    name.name
+                ),
                 "call it in a statement of its own (`ok := __QUERYINTERFACE(a, b);`) and test `ok`",
             );
         }
@@ -931,7 +945,11 @@ impl Rewriter<'_, '_> {
         if let Some(si) = self.place_interface(sp).cloned() {
             // the instance `src` holds, when its block is also one of `dst`'s
             let mut arms = Vec::new();
-            for (c, tag) in si.classes.iter().filter(|(c, _)| di.tag_of(&c.name).is_some()) {
+            for (c, tag) in si
+                .classes
+                .iter()
+                .filter(|(c, _)| di.tag_of(&c.name).is_some())
+            {
                 let mut body = vec![assign(field(dp, TAG, span), int((*tag).into(), span), span)];
                 for (d, _) in &di.classes {
                     let f = ref_field(&d.name);
@@ -1009,7 +1027,10 @@ impl Rewriter<'_, '_> {
                             return;
                         };
                         let mut all = binary(BinaryOp::Eq, tag(left), tag(right), span);
-                        for (c, _) in a.classes.iter().filter(|(c, _)| b.tag_of(&c.name).is_some())
+                        for (c, _) in a
+                            .classes
+                            .iter()
+                            .filter(|(c, _)| b.tag_of(&c.name).is_some())
                         {
                             let f = ref_field(&c.name);
                             let same = binary(
