@@ -267,3 +267,37 @@ fn instances_passed_to_a_methods_interface_input_are_kept_and_called() {
         [1008.0, 1009.0, 1010.0]
     );
 }
+
+/// FB_Base IMPLEMENTS I_Get and FB_Derived EXTENDS it, overriding `Get` (q + 10, then
+/// `SUPER^.Get(k) * 100`): an input and a VAR_IN_OUT of the interface take either instance, and
+/// the derived one runs its override (late binding on the instance's real type).
+#[test]
+fn a_parameter_of_an_interface_takes_a_base_or_a_derived_instance() {
+    let (trace, stderr) = run_traced(
+        &fixture("base_or_derived.st"),
+        2,
+        "Main.uBase.x,Main.uBase.y,Main.uDerived.x,Main.uDerived.y,Main.base.q,Main.derived.q",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.uBase.x"), [2.0, 2.0]);
+    assert_eq!(column(&trace, "Main.uBase.y"), [3.0, 3.0]);
+    assert_eq!(column(&trace, "Main.uDerived.x"), [200.0, 200.0]);
+    assert_eq!(column(&trace, "Main.uDerived.y"), [300.0, 300.0]);
+    assert_eq!(column(&trace, "Main.base.q"), [2.0, 4.0]);
+    assert_eq!(column(&trace, "Main.derived.q"), [22.0, 44.0]);
+}
+
+/// A derived instance passed to a VAR_IN_OUT or `REFERENCE TO` of its base block (not compiled:
+/// each derived block is its own flattened copy): one E0344 at each argument, naming the way out.
+#[test]
+fn a_derived_instance_for_a_base_parameter_is_one_located_error() {
+    let src = "FUNCTION_BLOCK FB_Base\nVAR_OUTPUT q : INT; END_VAR\nMETHOD Get : INT\nGet := 1;\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+FUNCTION_BLOCK FB_D EXTENDS FB_Base\nMETHOD Get : INT\nGet := 2;\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+FUNCTION_BLOCK FB_User\nVAR_IN_OUT b : FB_Base; END_VAR\nVAR_INPUT r : REFERENCE TO FB_Base; END_VAR\nVAR_OUTPUT x, y : INT; END_VAR\n\
+x := b.Get();\ny := r.Get();\nEND_FUNCTION_BLOCK\n\
+PROGRAM Main\nVAR d : FB_D; u : FB_User; END_VAR\nu(b := d, r := d);\nEND_PROGRAM\n";
+    let msg = |p: &str, col: u32| {
+        format!("d.st:21:{col}: error[E0344]: an instance of `FB_D`, which extends `FB_Base`, passed to `{p}` of `FB_User`: a derived instance where its base is expected is not supported")
+    };
+    assert_eq!(rejected_heads("d.st", src), [msg("b", 8), msg("r", 16)]);
+}

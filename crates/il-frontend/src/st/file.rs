@@ -1281,11 +1281,13 @@ pub fn compile_pending(
     let flat;
     let mut interfaces = Vec::new();
     let mut inits = Vec::new();
+    let mut bases = std::collections::HashMap::new();
     let pending = match super::inherit::flatten(units, pending, diags) {
         Some(v) => {
             flat = v.bodies;
             interfaces = v.interfaces;
             inits = v.inits;
+            bases = v.bases;
             &flat[..]
         }
         None => pending,
@@ -1327,6 +1329,7 @@ pub fn compile_pending(
         decls.methods.insert(i.name.key(), i.methods.clone());
         decls.interfaces.insert(i.name.key(), i);
     }
+    decls.bases = bases;
     for pb in pending.iter().filter(|pb| !pb.sfc) {
         let diags: &mut Diagnostics = if pb.derived() {
             &mut inherited

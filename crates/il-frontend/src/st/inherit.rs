@@ -294,10 +294,19 @@ pub fn flatten(
         })
         .collect();
     let table = super::interface_vars::table(units, &blocks, &interfaces);
+    // each derived block's bases (upper-case), for E0344
+    let bases = chains
+        .iter()
+        .filter_map(|(k, c)| {
+            let c = c.as_ref()?;
+            Some((k.clone(), c[..c.len().saturating_sub(1)].to_vec()))
+        })
+        .collect();
     Some(Flat {
         bodies: out,
         interfaces: table,
         inits,
+        bases,
     })
 }
 
@@ -310,6 +319,8 @@ pub struct Flat {
     /// The initial values of interface variables (`itf : I_Shape := fbCircle;`), each with the
     /// POU that declares it (the file and start of its name): assigned when the POU first runs.
     pub inits: Vec<super::interface_vars::Init>,
+    /// The bases of each derived block (upper-case names, root first).
+    pub bases: HashMap<String, Vec<String>>,
 }
 
 /// The chain of bases of `key`, root first, ending with `key`; `None` (with one diagnostic at the

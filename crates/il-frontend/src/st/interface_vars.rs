@@ -418,7 +418,7 @@ struct Rewriter<'a, 'd> {
 /// statements to lower instead, or `None` when `s` uses none in what it evaluates itself (nested
 /// statements are rewritten when they are lowered).
 pub(super) fn rewrite(env: &Env<'_>, s: &Stmt, diags: &mut Diagnostics) -> Option<Vec<Stmt>> {
-    if env.decls.interfaces.is_empty() {
+    if env.decls.interfaces.is_empty() && env.decls.bases.is_empty() {
         return None;
     }
     let mut r = Rewriter {
@@ -482,6 +482,7 @@ impl Rewriter<'_, '_> {
                     self.changed = true;
                     return out;
                 }
+                self.derived_for_base(callee, args);
                 let inputs = self.interface_inputs(callee, args);
                 if !inputs.is_empty() {
                     self.changed = true;
@@ -741,6 +742,73 @@ impl Rewriter<'_, '_> {
         }
         *args = kept;
         before
+    }
+
+    /// `fb(io := derived)` where `io` is a VAR_IN_OUT (or `REFERENCE TO`) of a base block of
+    /// `derived`'s: one E0344 each (the argument is left out). ladderc gives each derived block
+    /// its own flattened copy of its bases' code (late binding without pointers), so an instance
+    /// of it is no instance of its base in memory; an interface both implement is the way to pass
+    /// either.
+    fn derived_for_base(&mut self, callee: &Place, args: &mut Vec<Arg>) {
+        if self.env.decls.bases.is_empty() {
+            return;
+        }
+        let Some(TypeRef::Named(fb)) = self.env.place_type(callee).map(|t| self.env.resolve(&t))
+        else {
+            return;
+        };
+        let Some(pou) = self.env.decls.pou(&fb.name).cloned() else {
+            return;
+        };
+        let params: Vec<_> = pou.params().cloned().collect();
+        let mut k = 0;
+        args.retain(|a| {
+            let at = k;
+            k += 1;
+            let param = match &a.name {
+                Some(n) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
+                None => params.get(at),
+            };
+            let Some((name, kind, ty)) = param else {
+                return true;
+            };
+            let expected = match (kind, ty) {
+                (crate::ast::VarKind::InOut, TypeRef::Named(b)) => b,
+                (_, TypeRef::Ref { target, .. }) => match &**target {
+                    TypeRef::Named(b) => b,
+                    _ => return true,
+                },
+                _ => return true,
+            };
+            let Some(given) = self.block_of(&a.value) else {
+                return true;
+            };
+            let derived = self
+                .env
+                .decls
+                .bases
+                .get(&given.key())
+                .is_some_and(|bs| bs.contains(&expected.key()));
+            if !derived {
+                return true;
+            }
+            self.diags.push(
+                Diagnostic::error(
+                    code::E0344,
+                    format!(
+                        "an instance of `{}`, which extends `{}`, passed to `{}` of `{}`: a derived instance where its base is expected is not supported",
+                        given.name, expected.name, name, pou.name
+                    ),
+                )
+                .at(a.value.span)
+                .with_primary_label("a derived instance for its base")
+                .with_hint(format!(
+                    "declare `{name}` with an INTERFACE that `{}` implements (both blocks then pass), or pass a `{}`",
+                    expected.name, expected.name
+                )),
+            );
+            false
+        });
     }
 
     /// The inputs a call statement of `callee` passes, in order: each one's name as the caller
