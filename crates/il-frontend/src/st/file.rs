@@ -582,6 +582,9 @@ fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
                 && toks[h].tok != Tok::Semi
                 && same_line(name_tok.range.end, toks[h].range.start)
                 && !is_var_keyword(&word(src, &toks[h]).to_ascii_uppercase())
+                // `METHOD Next : LREAL END_METHOD` on one line: an interface's method as a
+                // TwinCAT `.TcIO` reads when its declaration ends without a line break
+                && !is_word(src, &toks[h], "END_METHOD")
             {
                 ret_end = Some(toks[h].range.end);
                 h += 1;
