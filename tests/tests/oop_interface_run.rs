@@ -303,3 +303,13 @@ PROGRAM Main\nVAR d : FB_D; u : FB_User; END_VAR\nu(b := d, r := d);\nEND_PROGRA
     };
     assert_eq!(rejected_heads("d.st", src), [msg("b", 8), msg("r", 16)]);
 }
+
+/// `hub.Reg(THIS^)`: each FB_Node passes itself (the instance running the body) to the hub's
+/// interface input once; the hub's body then calls both back (3 + 4).
+#[test]
+fn a_block_passes_itself_as_this_to_an_interface() {
+    let (trace, stderr) = run_traced(&fixture("this_register.st"), 2, "Main.h.sum,Main.h.n");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.h.sum"), [7.0, 7.0]);
+    assert_eq!(column(&trace, "Main.h.n"), [2.0, 2.0]);
+}

@@ -457,6 +457,15 @@ impl Rewriter<'_, '_> {
         let ExprKind::Place(p) = &e.kind else {
             return None;
         };
+        // `THIS^`: the block being lowered (`registry.Add(THIS^)`)
+        if let (PlaceBase::Name(n), [Accessor::Deref(_)]) = (&p.base, p.accessors.as_slice()) {
+            if n.is("THIS")
+                && self.env.pou_kind == PouKind::FunctionBlock
+                && self.env.var_type(n).is_none()
+            {
+                return Some(self.env.pou_name.clone());
+            }
+        }
         let TypeRef::Named(n) = self.env.resolve(&self.env.place_type(p)?) else {
             return None;
         };
