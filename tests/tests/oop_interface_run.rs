@@ -321,3 +321,18 @@ fn a_block_passes_itself_as_this_to_an_interface() {
     assert_eq!(column(&trace, "Main.h.sum"), [7.0, 7.0]);
     assert_eq!(column(&trace, "Main.h.n"), [2.0, 2.0]);
 }
+
+/// `gSlots : ARRAY[1..2] OF ST_Slot` (a VAR_GLOBAL), each slot holding `dev : I_A`: the first
+/// slot's interface is assigned and called (5), the second is unassigned (`= 0`), and its call
+/// reads 0 and is reported with its path.
+#[test]
+fn an_interface_in_a_structure_field_is_assigned_called_and_compared() {
+    let (trace, stderr) = run_traced(&fixture("struct_fields.st"), 1, "Main.x,Main.y,Main.ok");
+    assert_eq!(column(&trace, "Main.x"), [5.0]);
+    assert_eq!(column(&trace, "Main.y"), [0.0]);
+    assert_eq!(column(&trace, "Main.ok"), [1.0]);
+    assert!(
+        stderr.contains("a call through the unassigned interface gSlots[2].dev in Main"),
+        "{stderr}"
+    );
+}
