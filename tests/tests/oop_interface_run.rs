@@ -336,3 +336,14 @@ fn an_interface_in_a_structure_field_is_assigned_called_and_compared() {
         "{stderr}"
     );
 }
+
+/// Instances passed to a FUNCTION's interface input inside an expression (by name, positionally,
+/// twice in one statement): each call gets a temporary interface holding its instance
+/// (100 x 1.5 + 200 x 0.5; 200 x 0.5).
+#[test]
+fn instances_passed_to_a_functions_interface_input_are_called_there() {
+    let (trace, stderr) = run_traced(&fixture("function_input.st"), 2, "Main.total,Main.single");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.total"), [250.0, 250.0]);
+    assert_eq!(column(&trace, "Main.single"), [100.0, 100.0]);
+}

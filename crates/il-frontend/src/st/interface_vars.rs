@@ -412,12 +412,22 @@ struct Rewriter<'a, 'd> {
     /// Whether the expression being rewritten runs once, just after `before` (not an ELSIF,
     /// WHILE or UNTIL condition).
     hoistable: bool,
+    /// The temporaries declared (see [`rewrite`]).
+    temps: Vec<VarDecl>,
+    first: usize,
 }
 
 /// `s` with its uses of interface variables rewritten (see the module documentation): the
 /// statements to lower instead, or `None` when `s` uses none in what it evaluates itself (nested
 /// statements are rewritten when they are lowered).
-pub(super) fn rewrite(env: &Env<'_>, s: &Stmt, diags: &mut Diagnostics) -> Option<Vec<Stmt>> {
+/// `first` numbers the temporaries it declares (`_ITF_A<n>`, returned with the statements: the
+/// interface a FUNCTION's input receives); the caller's temporaries so far, so names never repeat.
+pub(super) fn rewrite(
+    env: &Env<'_>,
+    s: &Stmt,
+    first: usize,
+    diags: &mut Diagnostics,
+) -> Option<(Vec<Stmt>, Vec<VarDecl>)> {
     if env.decls.interfaces.is_empty() && env.decls.bases.is_empty() {
         return None;
     }
@@ -427,9 +437,11 @@ pub(super) fn rewrite(env: &Env<'_>, s: &Stmt, diags: &mut Diagnostics) -> Optio
         changed: false,
         before: Vec::new(),
         hoistable: true,
+        temps: Vec::new(),
+        first,
     };
     let out = r.stmt(s);
-    r.changed.then_some(out)
+    r.changed.then_some((out, r.temps))
 }
 
 impl Rewriter<'_, '_> {
@@ -820,6 +832,52 @@ impl Rewriter<'_, '_> {
         });
     }
 
+    /// `F(shape := inst)` where `shape` is a FUNCTION's input of interface type: a temporary of
+    /// the interface, assigned before the statement, is passed instead (where the statement can
+    /// run it first; elsewhere sema reports the mismatch).
+    fn function_inputs(&mut self, name: &Ident, args: &mut [Arg]) {
+        let Some(pou) = self.env.decls.pou(&name.name).cloned() else {
+            return;
+        };
+        if pou.kind != PouKind::Function || !self.hoistable {
+            return;
+        }
+        let params: Vec<_> = pou
+            .params()
+            .filter(|p| p.1 == crate::ast::VarKind::Input)
+            .cloned()
+            .collect();
+        for (k, a) in args.iter_mut().enumerate() {
+            let param = match (&a.name, a.dir) {
+                (_, ArgDir::Output { .. }) => None,
+                (Some(n), _) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
+                (None, _) => params.get(k),
+            };
+            let Some((_, _, ty)) = param else { continue };
+            let Some(i) = self.interface(ty).cloned() else {
+                continue;
+            };
+            if self.block_of(&a.value).is_none() {
+                continue;
+            }
+            let span = a.span;
+            let temp = Ident::new(format!("_ITF_A{}", self.first + self.temps.len() + 1), span);
+            let place = Place {
+                base: PlaceBase::Name(temp.clone()),
+                accessors: Vec::new(),
+                span,
+            };
+            let Some(stmts) = self.assign_interface(&place, &i, &a.value, span) else {
+                continue;
+            };
+            self.temps
+                .push(VarDecl::new(temp, TypeRef::Named(i.name.clone()), span));
+            self.before.extend(stmts);
+            a.value = place_expr(place, span);
+            self.changed = true;
+        }
+    }
+
     /// The inputs a call statement of `callee` passes, in order: each one's name as the caller
     /// writes it, the place that holds it, its type. Empty when `callee` is no block instance and
     /// no method of one.
@@ -1145,6 +1203,7 @@ impl Rewriter<'_, '_> {
                 for a in args.iter_mut() {
                     self.compare(&mut a.value);
                 }
+                self.function_inputs(name, args);
                 let query = ["__QUERYINTERFACE", "__QUERYPOINTER"]
                     .iter()
                     .any(|q| name.is(q));

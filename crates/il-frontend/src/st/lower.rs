@@ -750,9 +750,15 @@ impl<'d> PouLowering<'d> {
                 return;
             }
         }
-        if let Some(stmts) = super::interface_vars::rewrite(&self.env(), s, diags) {
+        let first = self.temps.len();
+        let rewritten = super::interface_vars::rewrite(&self.env(), s, first, diags);
+        if let Some((stmts, temps)) = rewritten {
             // `itf := inst;`, `itf.M();`, `itf <> 0`: the hidden tag and references of the
-            // interface variable (see interface_vars)
+            // interface variable (see interface_vars); `F(shape := inst)` passes a temporary
+            for t in temps {
+                self.vars.insert(t.name.key(), t.ty.clone());
+                self.temps.push(t);
+            }
             for c in &stmts {
                 self.stmt(c, out, diags);
             }
