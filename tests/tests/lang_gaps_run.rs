@@ -445,14 +445,19 @@ fn an_interface_method_missing_in_the_block_is_one_located_e0335_without_cascade
     // edition 3's INTERFACE (trust-platform's filling line, CODESYS): before, its METHOD and
     // PROPERTY lines were read as IL, one E0011 each plus W0001 "instructions outside any POU";
     // then the interface and the IMPLEMENTS clause were E0303 each; now the interface is read and
-    // the block that implements it lacks its method `Open` (`tests/tests/oop_inherit_run.rs`)
+    // the block that implements it lacks its method `Open` and its property `IsOpen`, which
+    // interfaces declare since their properties are called through interface variables
+    // (`tests/tests/oop_interface_run.rs`)
     let src = "INTERFACE IValve\n    METHOD Open : BOOL\n    END_METHOD\n    PROPERTY IsOpen : BOOL\n        GET\n        END_GET\n    END_PROPERTY\nEND_INTERFACE\n\n\
                FUNCTION_BLOCK Valve IMPLEMENTS IValve\nVAR_OUTPUT q : BOOL; END_VAR\n  q := TRUE;\nEND_FUNCTION_BLOCK\n\n\
                PROGRAM main\nVAR v : Valve; END_VAR\n  v();\nEND_PROGRAM\n";
     let heads = rejected_heads("itf.st", src);
     assert_eq!(
         heads,
-        vec!["itf.st:10:33: error[E0335]: `Valve` IMPLEMENTS `IValve` but has no method `Open`",]
+        vec![
+            "itf.st:10:33: error[E0335]: `Valve` IMPLEMENTS `IValve` but has no method `Open`",
+            "itf.st:10:33: error[E0335]: `Valve` IMPLEMENTS `IValve` but has no Get accessor for property `IsOpen`",
+        ]
     );
 }
 

@@ -3,7 +3,7 @@
 //! `FINAL` and `ABSTRACT`, run end to end through `ladderc run` on files written for these tests
 //! (`fixtures/oop/`): a chain of three levels split over two files, and one pair of blocks with an
 //! interface both as an `.st` file and as TwinCAT 3 object files (`.TcPOU`, `.TcIO`). Each refused
-//! construct is one located diagnostic (E0330-E0336).
+//! construct is one located diagnostic (E0330-E0336, E0340).
 
 mod common;
 use common::{column, rejected_heads, run_traced, run_traced_files};
@@ -161,12 +161,19 @@ fn each_refused_inheritance_is_one_located_diagnostic() {
 
 /// A variable of an interface type (a reference with dynamic dispatch) is one error at its type;
 /// the body of its POU is not compiled, so its uses give nothing more.
+/// A variable of an interface type holds an instance of a block that implements it (see
+/// `oop_interface_run.rs`): FB_Base does not implement I_Get (E0340 at the value), and an
+/// interface variable's initial value other than 0 or an instance is E0336.
 #[test]
-fn a_variable_of_an_interface_type_is_one_located_error() {
+fn an_interface_variable_given_what_does_not_implement_it_or_an_initial_value_is_one_located_error()
+{
     assert_eq!(
         heads("INTERFACE I_Get\nMETHOD Get : INT\nVAR_INPUT k : INT; END_VAR\nEND_METHOD\nEND_INTERFACE\n\
-PROGRAM Main\nVAR b : FB_Base; itf : I_Get; r : INT; END_VAR\nitf := b;\nr := itf.Get(k := 1);\nEND_PROGRAM\n"),
-        ["oop.st:16:24: error[E0336]: `itf` has the interface type `I_Get`: a reference to any block that implements it is not compiled"]
+PROGRAM Main\nVAR b : FB_Base; itf : I_Get; j : I_Get := 5; r : INT; END_VAR\nitf := b;\nr := itf.Get(k := 1);\nEND_PROGRAM\n"),
+        [
+            "oop.st:16:31: error[E0336]: `j` of interface type `I_Get` has an initial value that is not compiled",
+            "oop.st:17:8: error[E0340]: function block `FB_Base` does not implement interface `I_Get`",
+        ]
     );
 }
 

@@ -257,6 +257,8 @@ impl Scope<'_> {
                 (Accessor::Field(f), TypeRef::Named(fb)) => {
                     ty = self.pou_vars.get(&fb.key())?.get(&f.key())?;
                 }
+                // `r^.M`: the instance a reference refers to (an interface's dispatch calls so)
+                (Accessor::Deref(_), TypeRef::Ref { target, .. }) => ty = target,
                 _ => return None,
             }
         }

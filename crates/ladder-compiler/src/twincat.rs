@@ -100,29 +100,59 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
             "Itf" => {
                 if let Some(d) = obj.child("Declaration") {
                     let mut at = out.copy(d);
-                    // its methods' declarations, each closed by END_METHOD (their signatures are
-                    // checked against the blocks that implement the interface)
+                    // its methods' declarations, each closed by END_METHOD, and its properties'
+                    // (`PROPERTY P : T GET END_GET SET END_SET END_PROPERTY`, one accessor per
+                    // `<Get>` / `<Set>`): their signatures are checked against the blocks that
+                    // implement the interface, and calls through interface variables use them
                     let methods: Vec<&Element> = obj
                         .children
                         .iter()
-                        .filter(|c| c.name() == "Method")
+                        .filter(|c| matches!(c.name(), "Method" | "Property"))
                         .collect();
+                    let no_room = || {
+                        unreadable(
+                            file,
+                            obj,
+                            "TwinCAT interface has no room for its keywords".into(),
+                            "check the file: its markup was changed by hand",
+                        )
+                    };
                     for (k, m) in methods.iter().enumerate() {
                         let Some(md) = m.child("Declaration") else {
                             continue;
                         };
                         let next = methods.get(k + 1).map_or(obj.end(), |n| n.tag_start());
                         at = out.copy(md);
-                        match out.place(at, next, "END_METHOD") {
-                            Some(w) => at = w,
-                            None => {
-                                return Some(Err(unreadable(
-                                    file,
-                                    obj,
-                                    "TwinCAT interface has no room for its keywords".into(),
-                                    "check the file: its markup was changed by hand",
-                                )))
+                        if m.name() == "Property" {
+                            let accessors: Vec<&Element> = m
+                                .children
+                                .iter()
+                                .filter(|c| matches!(c.name(), "Get" | "Set"))
+                                .collect();
+                            for (j, acc) in accessors.iter().enumerate() {
+                                let acc_next = accessors.get(j + 1).map_or(next, |n| n.tag_start());
+                                let (open, close) = if acc.name() == "Get" {
+                                    ("GET", "END_GET")
+                                } else {
+                                    ("SET", "END_SET")
+                                };
+                                let placed = out
+                                    .place(at, acc_next, open)
+                                    .and_then(|w| out.place(w, acc_next, close));
+                                match placed {
+                                    Some(w) => at = w,
+                                    None => return Some(Err(no_room())),
+                                }
                             }
+                        }
+                        let end = if m.name() == "Property" {
+                            "END_PROPERTY"
+                        } else {
+                            "END_METHOD"
+                        };
+                        match out.place(at, next, end) {
+                            Some(w) => at = w,
+                            None => return Some(Err(no_room())),
                         }
                     }
                     out.place_last(at, "END_INTERFACE");

@@ -9,7 +9,8 @@
 //! valid to read and write through. A dereference goes through `ladderc_deref`: a NULL reference
 //! reads zero and a write through it is dropped (both into a zeroed scratch object of the target
 //! type, `ladderc_null_<n>`), and the run-time error flag `LADDERC_ERR_NULL_REF` is set with the
-//! place of the first one; no NULL pointer is ever dereferenced in C.
+//! place of the first one; no NULL pointer is ever dereferenced in C. A call through an unassigned
+//! interface variable reads such a NULL reference and is reported as that call.
 
 use super::scope::{Place, Scope};
 use super::Gen;
@@ -62,7 +63,14 @@ impl Gen<'_> {
             .pou
             .map(|(p, _)| p.name.clone())
             .unwrap_or_else(|| "the configuration".into());
-        let site = mangle::c_string(cfmt!("{path} in {pou}").as_bytes());
+        // the hidden, always NULL reference a call through an unassigned interface variable reads
+        // (il_frontend::st::interface_vars): named by the variable, not by the hidden field
+        let unassigned = cfmt!(".{}^", il_frontend::st::interface_vars::UNASSIGNED);
+        let site = match path.strip_suffix(unassigned.as_str()) {
+            Some(itf) => cfmt!("a call through the unassigned interface {itf} in {pou}"),
+            None => cfmt!("{path} in {pou}"),
+        };
+        let site = mangle::c_string(site.as_bytes());
         Some(Place::Mem {
             lv: cfmt!(
                 "(*({base} (*){dims})ladderc_deref({lv}, &{scratch}, sizeof {scratch}, {site}))"

@@ -342,6 +342,18 @@ impl Gen<'_> {
     pub fn place(&mut self, scope: &Scope, r: &VarRef) -> Option<Place> {
         let mut base = self.base_place(scope, &r.base);
         let mut skip = 0;
+        if let (None, Some((p, id)), Some(Accessor::Deref(_))) =
+            (&base, scope.pou, r.accessors.first())
+        {
+            // `THIS^`: the instance running the body (sema checked it is a function block's)
+            if r.base.is("THIS") && p.kind == il_frontend::ast::PouKind::FunctionBlock {
+                base = Some(Some(Place::Mem {
+                    lv: "(*self)".into(),
+                    ty: Type::Fb(il_frontend::sema::FbType::User(id)),
+                }));
+                skip = 1;
+            }
+        }
         if base.is_none() {
             // `GVL.x`: a member of a named global variable list (CODESYS, TwinCAT)
             let member = match (self.model.global_list(&r.base.name), r.accessors.first()) {

@@ -92,6 +92,8 @@ impl Analyzer<'_> {
                 }
             }
         }
+        // a structure that holds itself by value has no size: E0343, the field cut
+        self.check_struct_cycles();
         // Globals outside configurations.
         let mut global_consts = Consts::new();
         for unit in units {

@@ -16,6 +16,7 @@ mod places;
 mod program_calls;
 mod refs;
 pub mod stdlib;
+mod struct_cycles;
 pub mod typing;
 
 pub use decls::reserved_name;

@@ -172,11 +172,18 @@ impl Body<'_, '_> {
         let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
         if let ReadOnly::PouInput { decl: Some(decl) } = ro {
+            let hidden_field = v
+                .accessors
+                .iter()
+                .any(|a| matches!(a, crate::ast::Accessor::Field(f) if f.name.starts_with("__")));
             if v.base.name.starts_with(crate::actions::FLAG_PREFIX)
                 || v.base.name.starts_with(crate::actions::METHOD_PREFIX)
+                || hidden_field
             {
                 // the hidden flag of an action called from another POU, reset by the action itself;
-                // a method's hidden input, set by a call of the method inside its block
+                // a method's hidden input, set by a call of the method inside its block; the
+                // hidden fields of an interface input (its tag, a method's result) set by a call
+                // through it
                 return;
             }
             // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)
@@ -327,9 +334,27 @@ impl Body<'_, '_> {
         }
     }
 
+    /// Whether `v` is `THIS^` in a function block that declares no variable `THIS`.
+    fn is_this_instance(&self, v: &VarRef) -> bool {
+        let pou = self.pou();
+        v.base.is("THIS")
+            && matches!(v.accessors.first(), Some(Accessor::Deref(_)))
+            && pou.kind == crate::ast::PouKind::FunctionBlock
+            && pou.var_position(&v.base.name).is_none()
+    }
+
     /// Resolves a variable access (reports undeclared names and invalid accesses once).
     pub(super) fn resolve_var(&mut self, v: &VarRef) -> Place {
         let (mut place, skip) = match self.list_member(v) {
+            // `THIS^` (edition 3, CODESYS, TwinCAT): the function block instance running the body,
+            // whole (`REF(THIS^)`, `itf := THIS^`; its members are lowered to plain names)
+            _ if self.is_this_instance(v) => (
+                Place {
+                    ty: Type::Fb(FbType::User(self.pou)),
+                    read_only: None,
+                },
+                1,
+            ),
             Some(Some(p)) => (p, 1),
             Some(None) => return Place::error(),
             None => match self.lookup_base(&v.base, v.accessors.is_empty()) {

@@ -292,7 +292,9 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     sfc: None,
                     oop: None,
                     methods: scan_methods(src, inner),
-                    properties: Vec::new(),
+                    // `PROPERTY P : T GET END_GET SET END_SET END_PROPERTY`: the accessors a
+                    // block that implements it must have, called through interface variables
+                    properties: super::property::scan_properties(src, inner),
                     actions: None,
                     action_list: Vec::new(),
                     modifier: None,
@@ -580,6 +582,9 @@ fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
                 && toks[h].tok != Tok::Semi
                 && same_line(name_tok.range.end, toks[h].range.start)
                 && !is_var_keyword(&word(src, &toks[h]).to_ascii_uppercase())
+                // `METHOD Next : LREAL END_METHOD` on one line: an interface's method as a
+                // TwinCAT `.TcIO` reads when its declaration ends without a line break
+                && !is_word(src, &toks[h], "END_METHOD")
             {
                 ret_end = Some(toks[h].range.end);
                 h += 1;
@@ -931,11 +936,14 @@ pub fn parse_text(
     for (pi, p) in pous.iter().enumerate() {
         if p.interface.is_some() {
             // an INTERFACE: its methods' signatures, checked against the blocks that implement it
-            let methods = p
+            let mut methods: Vec<PendingMethod> = p
                 .methods
                 .iter()
                 .map(|m| pending_method(file, src, m, diags))
                 .collect();
+            for pr in &p.properties {
+                methods.extend(super::property::pending_accessors(file, src, pr, diags));
+            }
             pending.push(PendingBody {
                 file,
                 name_start: p.name_range.start,
@@ -1274,9 +1282,15 @@ pub fn compile_pending(
     }
     // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
     let flat;
+    let mut interfaces = Vec::new();
+    let mut inits = Vec::new();
+    let mut bases = std::collections::HashMap::new();
     let pending = match super::inherit::flatten(units, pending, diags) {
         Some(v) => {
-            flat = v;
+            flat = v.bodies;
+            interfaces = v.interfaces;
+            inits = v.inits;
+            bases = v.bases;
             &flat[..]
         }
         None => pending,
@@ -1313,6 +1327,12 @@ pub fn compile_pending(
             }
         }
     }
+    // variables of an interface type: their calls dispatch on the instance they hold
+    for i in interfaces {
+        decls.methods.insert(i.name.key(), i.methods.clone());
+        decls.interfaces.insert(i.name.key(), i);
+    }
+    decls.bases = bases;
     for pb in pending.iter().filter(|pb| !pb.sfc) {
         let diags: &mut Diagnostics = if pb.derived() {
             &mut inherited
@@ -1362,10 +1382,25 @@ pub fn compile_pending(
                 if let Some(t) = temps {
                     p.var_blocks.push(t);
                 }
+                // interface variables with an initial value: assigned when the POU first runs
+                let own: Vec<&super::interface_vars::Init> =
+                    inits.iter().filter(|i| i.pou == p.name.span).collect();
+                let init = super::interface_vars::initial_values(&decls, p, &own, diags);
+                if !init.is_empty() {
+                    let mut body = init.clone();
+                    body.append(&mut p.body);
+                    p.body = body;
+                }
                 standalone.extend(actions);
                 let mut methods = Vec::new();
                 for (k, m) in pb.methods.iter().enumerate() {
-                    if let Some(a) = lower_method(pb.method_file(k), &decls, p, m, diags) {
+                    if let Some(mut a) = lower_method(pb.method_file(k), &decls, p, m, diags) {
+                        if !init.is_empty() {
+                            let tag = format!("__ITF{k}_");
+                            let mut body = crate::actions::instantiate(&init, &tag, a.name.span);
+                            body.append(&mut a.body);
+                            a.body = body;
+                        }
                         methods.push(a);
                     }
                 }
@@ -1403,12 +1438,16 @@ pub fn add_method_vars(
     let mut inputs = Vec::new();
     let mut outputs = Vec::new();
     let mut temps = Vec::new();
+    let mut defaults = Vec::new();
     for m in methods {
         if let Some(r) = &m.ret {
             let mut v = r.clone();
             v.name.name = method_result(&m.name.name);
             v.init = None;
-            outputs.push(v);
+            outputs.push(v.clone());
+            // never written: the default value the result starts each call with
+            v.name.name = method_default(&m.name.name);
+            defaults.push(v);
         }
         for b in &m.blocks {
             let list = match b.kind {
@@ -1443,6 +1482,7 @@ pub fn add_method_vars(
         (VarKind::Input, inputs),
         (VarKind::Output, outputs),
         (VarKind::Temp, temps),
+        (VarKind::Local, defaults),
     ] {
         if !vars.is_empty() {
             p.var_blocks.push(VarBlock {
@@ -1455,6 +1495,13 @@ pub fn add_method_vars(
             });
         }
     }
+}
+
+/// The hidden, never written variable holding the default value of method `m`'s result: the
+/// result is set to it when the method starts (a method's result, like a function's, does not keep
+/// the value of the previous call: IEC 61131-3 ed. 3, 6.6.1.2; CODESYS "Method").
+fn method_default(m: &str) -> String {
+    format!("__MZ_{}", m.to_ascii_uppercase())
 }
 
 /// Puts a copy of a method's statements where the block's body, or one of its methods, calls it
@@ -1565,6 +1612,33 @@ pub fn lower_method(
         ..Default::default()
     }
     .apply(&mut body);
+    if m.ret.is_some() {
+        // the result starts at its default value each call
+        let var = |name: String| {
+            crate::ast::Operand::Var(crate::ast::VarRef {
+                base: crate::ast::Ident::new(name, m.name.span),
+                accessors: Default::default(),
+                span: m.name.span,
+            })
+        };
+        let simple = |op: crate::ast::Op, operand| {
+            crate::ast::IlStmt::Instr(crate::ast::Instruction {
+                kind: crate::ast::InstrKind::Simple {
+                    op,
+                    negate: false,
+                    operand: Some(operand),
+                },
+                span: m.name.span,
+            })
+        };
+        body.splice(
+            0..0,
+            [
+                simple(crate::ast::Op::Ld, var(method_default(&m.name.name))),
+                simple(crate::ast::Op::St, var(method_result(&m.name.name))),
+            ],
+        );
+    }
     let body = instantiate(
         &body,
         &format!("{}_L", method_result(&m.name.name)),

@@ -165,12 +165,13 @@ const MAX_DEPTH: usize = 100;
 
 /// Flattens the derived function blocks of `pending` into `units` (their variables) and returns the
 /// pending bodies to lower (their methods and bodies), and checks `IMPLEMENTS`, `FINAL`, `ABSTRACT`
-/// and variables of an interface type. `None` when no pending body has an [`Oop`] (nothing to do).
+/// and the initial values of variables of an interface type, and declares each interface's hidden
+/// structure ([`super::interface_vars`]). `None` when no pending body has an [`Oop`] (nothing to do).
 pub fn flatten(
     units: &mut [CompilationUnit],
     pending: &[PendingBody],
     diags: &mut Diagnostics,
-) -> Option<Vec<PendingBody>> {
+) -> Option<Flat> {
     if !pending.iter().any(|pb| pb.oop.is_some()) {
         return None;
     }
@@ -270,8 +271,56 @@ pub fn flatten(
             check_implements(c, itf, &methods, &interfaces, diags);
         }
     }
-    check_instances(units, &classes, &interfaces, &by_start, &mut out, diags);
-    Some(out)
+    let inits = check_instances(units, &classes, &interfaces, diags);
+    // variables of an interface type: each block's interfaces, its bases' included
+    let blocks: Vec<(Ident, bool, Vec<Ident>)> = keys
+        .iter()
+        .map(|key| {
+            let c = &classes[key];
+            let levels = match chains.get(key) {
+                Some(Some(chain)) => chain.clone(),
+                Some(None) => Vec::new(),
+                None => vec![key.clone()],
+            };
+            let implements = levels
+                .iter()
+                .flat_map(|k| classes[k].oop.implements.iter().cloned())
+                .collect();
+            (
+                c.name.clone(),
+                c.oop.is_abstract || levels.is_empty(),
+                implements,
+            )
+        })
+        .collect();
+    let table = super::interface_vars::table(units, &blocks, &interfaces);
+    // each derived block's bases (upper-case), for E0344
+    let bases = chains
+        .iter()
+        .filter_map(|(k, c)| {
+            let c = c.as_ref()?;
+            Some((k.clone(), c[..c.len().saturating_sub(1)].to_vec()))
+        })
+        .collect();
+    Some(Flat {
+        bodies: out,
+        interfaces: table,
+        inits,
+        bases,
+    })
+}
+
+/// What [`flatten`] returns: the pending bodies to lower and the interfaces variables may have.
+pub struct Flat {
+    /// The pending bodies, derived blocks flattened.
+    pub bodies: Vec<PendingBody>,
+    /// Every interface of the program with the blocks that implement it.
+    pub interfaces: Vec<super::interface_vars::Interface>,
+    /// The initial values of interface variables (`itf : I_Shape := fbCircle;`), each with the
+    /// POU that declares it (the file and start of its name): assigned when the POU first runs.
+    pub inits: Vec<super::interface_vars::Init>,
+    /// The bases of each derived block (upper-case names, root first).
+    pub bases: HashMap<String, Vec<String>>,
 }
 
 /// The chain of bases of `key`, root first, ending with `key`; `None` (with one diagnostic at the
@@ -720,6 +769,37 @@ fn check_implements(
         todo.extend(i.extends.iter().map(Ident::key));
         for m in &i.methods {
             match methods.iter().find(|x| x.name.key() == m.name.key()) {
+                // a property the interface declares (its accessor `__GET_P` / `__SET_P`)
+                None if super::property::is_accessor(&m.name.name) => {
+                    let upper = m.name.name.to_ascii_uppercase();
+                    let (kind, prop) = match upper.strip_prefix(super::property::GET_PREFIX) {
+                        Some(_) => ("Get", &m.name.name[super::property::GET_PREFIX.len()..]),
+                        None => ("Set", &m.name.name[super::property::SET_PREFIX.len()..]),
+                    };
+                    // the property's name as written: the getter's result, the setter's input
+                    let written = m.ret.as_ref().map(|r| r.name.name.as_str()).or_else(|| {
+                        let first = m.blocks.first()?.vars.first()?;
+                        Some(first.name.name.as_str())
+                    });
+                    let prop = written.unwrap_or(prop);
+                    let what = format!("{kind} accessor for property `{prop}`");
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0335,
+                            format!(
+                                "`{}` IMPLEMENTS `{}` but has no {what}",
+                                c.name.name, i.name.name
+                            ),
+                        )
+                        .at(itf.span)
+                        .with_primary_label("property accessor missing")
+                        .with_label(m.name.span, "declared by the interface here")
+                        .with_hint(format!(
+                            "add the PROPERTY with that accessor (GET ... END_GET / SET ... END_SET) to `{}` (or to a block it extends)",
+                            c.name.name
+                        )),
+                    )
+                }
                 None => diags.push(
                     Diagnostic::error(
                         code::E0335,
@@ -760,16 +840,17 @@ fn check_implements(
     }
 }
 
-/// Variables whose type is an ABSTRACT block (E0333) or an interface (E0336: not compiled, and
-/// the body of their POU neither).
+/// Variables whose type is an ABSTRACT block (E0333: not compiled), and the initial values of
+/// variables of an interface type: `:= 0` is left out (an interface starts unassigned), `:= inst`
+/// of a POU's variable is returned (assigned when the POU first runs); any other, and any of a
+/// VAR_GLOBAL, is E0336 (the value is left out).
 fn check_instances(
     units: &mut [CompilationUnit],
     classes: &HashMap<String, Class>,
     interfaces: &HashMap<String, &InterfaceOop>,
-    by_start: &HashMap<(FileId, usize), usize>,
-    out: &mut [PendingBody],
     diags: &mut Diagnostics,
-) {
+) -> Vec<super::interface_vars::Init> {
+    use crate::ast::{Initializer, Operand};
     fn named(t: &TypeRef) -> Option<&Ident> {
         match t {
             TypeRef::Named(i) => Some(i),
@@ -777,10 +858,9 @@ fn check_instances(
             _ => None,
         }
     }
-    let abstract_or_interface = |v: &crate::ast::VarDecl,
-                                 dropped: &mut bool,
-                                 diags: &mut Diagnostics| {
-        let Some(ty) = named(&v.ty) else { return true };
+    let mut inits = Vec::new();
+    let mut check = |v: &mut crate::ast::VarDecl, pou: Option<Span>, diags: &mut Diagnostics| {
+        let Some(ty) = named(&v.ty) else { return };
         if let Some(c) = classes.get(&ty.key()).filter(|c| c.oop.is_abstract) {
             diags.push(
                 Diagnostic::error(
@@ -791,44 +871,59 @@ fn check_instances(
                 .with_primary_label("an ABSTRACT block has no instances")
                 .with_hint(format!("declare an instance of a block that EXTENDS `{}` and implements its abstract methods", c.name.name)),
             );
-            return true;
+            return;
         }
-        if let Some(i) = interfaces.get(&ty.key()) {
-            diags.push(
+        let Some(i) = interfaces.get(&ty.key()) else {
+            return;
+        };
+        let Some(init) = v.init.take() else { return };
+        match (&init, pou, &v.ty) {
+            (Initializer::Value(Operand::Literal(l)), _, _)
+                if matches!(l.kind, crate::ast::LiteralKind::Int(0)) => {}
+            (Initializer::Value(Operand::Var(value)), Some(pou), TypeRef::Named(_))
+                if !value.base.is("NULL") =>
+            {
+                inits.push(super::interface_vars::Init {
+                    pou,
+                    var: v.name.clone(),
+                    value: value.clone(),
+                });
+            }
+            (Initializer::Value(Operand::Var(value)), _, _) if value.base.is("NULL") => {}
+            _ => diags.push(
                 Diagnostic::error(
                     code::E0336,
-                    format!("`{}` has the interface type `{}`: a reference to any block that implements it is not compiled", v.name.name, i.name.name),
+                    format!(
+                        "`{}` of interface type `{}` has an initial value that is not compiled",
+                        v.name.name, i.name.name
+                    ),
                 )
-                .at(ty.span)
-                .with_primary_label("an interface type needs references and dynamic dispatch")
-                .with_hint("declare the variable with the function block type it holds; the body of its POU is not compiled"),
-            );
-            *dropped = true;
-            return false;
+                .at(v.span)
+                .with_primary_label("only `:= 0` or `:= instance` of a POU's own variable")
+                .with_hint(format!(
+                    "assign it in the body (`{} := fbInstance;`)",
+                    v.name.name
+                )),
+            ),
         }
-        true
     };
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
-        let mut dropped = false;
         match item {
             LibraryElement::Pou(p) => {
+                let pou = p.name.span;
                 for b in p.var_blocks.iter_mut() {
-                    b.vars
-                        .retain(|v| abstract_or_interface(v, &mut dropped, diags));
-                }
-                let span = p.name.span;
-                if let (true, Some(&k)) = (dropped, by_start.get(&(span.file, span.start as usize)))
-                {
-                    out[k].text = String::new();
-                    out[k].methods.clear();
-                    out[k].actions.clear();
+                    for v in b.vars.iter_mut() {
+                        check(v, Some(pou), diags);
+                    }
                 }
             }
             LibraryElement::GlobalVars(b) => {
-                b.vars
-                    .retain(|v| abstract_or_interface(v, &mut dropped, diags));
+                for v in b.vars.iter_mut() {
+                    check(v, None, diags);
+                }
             }
             _ => {}
         }
     }
+    inits
 }

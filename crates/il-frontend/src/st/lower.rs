@@ -750,6 +750,21 @@ impl<'d> PouLowering<'d> {
                 return;
             }
         }
+        let first = self.temps.len();
+        let rewritten = super::interface_vars::rewrite(&self.env(), s, first, diags);
+        if let Some((stmts, temps)) = rewritten {
+            // `itf := inst;`, `itf.M();`, `itf <> 0`: the hidden tag and references of the
+            // interface variable (see interface_vars); `F(shape := inst)` passes a temporary
+            for t in temps {
+                self.vars.insert(t.name.key(), t.ty.clone());
+                self.temps.push(t);
+            }
+            for c in &stmts {
+                self.stmt(c, out, diags);
+            }
+            self.types.get_mut().clear();
+            return;
+        }
         match &s.kind {
             StmtKind::Call { callee, args } if self.method_of(callee).is_some() => {
                 let sig = self

@@ -17,6 +17,7 @@ mod fb_init_args;
 pub mod file;
 pub mod infer;
 pub mod inherit;
+pub mod interface_vars;
 pub mod lexer;
 mod list_bounds;
 pub mod lower;

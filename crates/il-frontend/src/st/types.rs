@@ -66,6 +66,11 @@ pub struct Declarations {
     /// The methods of each function block (upper-case block name), callable inside the block
     /// (`M(...)`, `THIS^.M(...)`, see [`super::PouLowering`]).
     pub methods: HashMap<String, Vec<MethodSig>>,
+    /// The interfaces variables may have (upper-case name), with the blocks that implement each
+    /// ([`super::interface_vars`]).
+    pub interfaces: HashMap<String, super::interface_vars::Interface>,
+    /// The bases of each derived function block (upper-case names, root first).
+    pub bases: HashMap<String, Vec<String>>,
     /// Whether any declaration holds a `REFERENCE TO` (computed on the first
     /// [`Declarations::has_reference_to`], once the declarations are complete).
     references: std::sync::OnceLock<bool>,

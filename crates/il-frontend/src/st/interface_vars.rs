@@ -1,0 +1,1220 @@
+//! Variables whose type is an INTERFACE (CODESYS, TwinCAT; IEC 61131-3 edition 3, 6.6.6.5 "interface
+//! as a variable type"): `itf : I_Shape;` holds any instance of a function block that implements
+//! `I_Shape` (itself or through a base it EXTENDS), and `itf.Area()` runs the method of the block the
+//! instance really is (dynamic dispatch).
+//!
+//! Input: every interface with the function blocks that implement it ([`table`], from
+//! [`super::inherit::flatten`]) and the ST statements being lowered ([`rewrite`]).
+//! Output: each interface `I` is also a hidden STRUCT named `I` (so `itf : I`, `ARRAY[1..3] OF I`,
+//! `VAR_INPUT`, `VAR_IN_OUT`, `VAR_GLOBAL` of it are ordinary variables for sema and C):
+//! - `__TAG : UINT`: which block the instance is (a number per block, `0` unassigned);
+//! - `__R_<FB> : REF_TO <FB>` for each block that implements `I`: the instance (only the one of the
+//!   tag is non-NULL);
+//! - `__M_<M> : T` for each method returning `T` (its result, read after the call: the parser reads
+//!   `itf.M()` as `itf.__M_M`, as for any instance), properties' accessors included;
+//! - `__UNASSIGNED : REF_TO I`, always NULL: what a call through an unassigned interface reads.
+//!
+//! The statements using them are rewritten before they are lowered: `itf := inst;` sets the tag and
+//! the references (`REF(inst)`), `itf := 0;` clears them; `itf.M(args);` is a CASE on the tag calling
+//! `itf.__R_<FB>^.M(args)` and copying its result; `itf = 0`, `itf <> 0` test the tag, `i1 = i2`
+//! the tags and the references; an instance passed to an input of interface type is assigned to the
+//! input before the call.
+//! Invariants: a call through an unassigned interface (tag 0) calls nothing: its result reads 0 and
+//! the run reports "NULL reference dereferenced (first: itf.__UNASSIGNED^ in POU)" at its end, like
+//! a NULL `REF_TO`, and goes on; an instance may only be assigned where its address may be taken
+//! (`REF`: no VAR_IN_OUT, temporary or function variable, sema's E0305); assigning what does not
+//! implement the interface is one E0340.
+
+use super::ast::{Accessor, Arg, ArgDir, BinaryOp, CaseArm, CaseLabel, Expr, ExprKind, Place};
+use super::ast::{PlaceBase, Stmt, StmtKind};
+use super::file::PendingMethod;
+use super::infer::Env;
+use super::inherit::InterfaceOop;
+use super::types::MethodSig;
+use crate::ast::{
+    CompilationUnit, Ident, LibraryElement, Literal, LiteralKind, PouKind, RefKind, TypeDecl,
+    TypeDef, TypeRef, VarDecl,
+};
+use crate::Span;
+use diagnostics::{code, Diagnostic, Diagnostics};
+use std::collections::{HashMap, HashSet};
+
+/// The hidden field that tells which block an interface variable holds (`0`: none).
+pub const TAG: &str = "__TAG";
+/// The hidden, always NULL reference a call through an unassigned interface reads.
+pub const UNASSIGNED: &str = "__UNASSIGNED";
+
+/// The hidden field holding an instance of block `fb`: `__R_<FB>`.
+fn ref_field(fb: &str) -> String {
+    format!("__R_{}", fb.to_ascii_uppercase())
+}
+
+/// An interface as variables of its type see it.
+#[derive(Debug, Clone)]
+pub struct Interface {
+    /// Its name as declared.
+    pub name: Ident,
+    /// The blocks that implement it (directly, through a base, or through an interface that
+    /// extends it) with their tags, in declaration order.
+    pub classes: Vec<(Ident, u32)>,
+    /// Its methods and those of the interfaces it extends (properties as their accessors).
+    pub methods: Vec<MethodSig>,
+    /// Its own key and those of the interfaces it extends (an `I2 EXTENDS I1` value is an `I1`).
+    pub within: Vec<String>,
+    /// The methods (upper-case) whose result is of an interface type: not callable through the
+    /// interface (E0342).
+    pub interface_results: Vec<String>,
+}
+
+/// Whether `t` is an interface type or an array of one.
+fn names_interface(t: &TypeRef, interfaces: &HashMap<String, &InterfaceOop>) -> bool {
+    match t {
+        TypeRef::Named(n) => interfaces.contains_key(&n.key()),
+        TypeRef::Array { element, .. } => names_interface(element, interfaces),
+        _ => false,
+    }
+}
+
+impl Interface {
+    fn tag_of(&self, fb: &str) -> Option<u32> {
+        self.classes
+            .iter()
+            .find(|(c, _)| c.name.eq_ignore_ascii_case(fb))
+            .map(|c| c.1)
+    }
+}
+
+/// The interface `key` and all it extends (keys), itself first.
+fn closure(key: &str, interfaces: &HashMap<String, &InterfaceOop>) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut todo = vec![key.to_string()];
+    let mut seen = HashSet::new();
+    while let Some(k) = todo.pop() {
+        if !seen.insert(k.clone()) || seen.len() > 100 {
+            continue;
+        }
+        if let Some(i) = interfaces.get(&k) {
+            todo.extend(i.extends.iter().map(Ident::key));
+        }
+        out.push(k);
+    }
+    out
+}
+
+/// The interfaces of the program (`interfaces`), each with the blocks of `blocks` (name, whether it
+/// has no instances, the interfaces it and its bases implement) that implement it; declares each
+/// interface's hidden structure (see the module documentation) in `units`.
+pub fn table(
+    units: &mut [CompilationUnit],
+    blocks: &[(Ident, bool, Vec<Ident>)],
+    interfaces: &HashMap<String, &InterfaceOop>,
+) -> Vec<Interface> {
+    let mut keys: Vec<&String> = interfaces.keys().collect();
+    keys.sort();
+    let mut out = Vec::new();
+    let mut types = Vec::new();
+    for key in keys {
+        let i = interfaces[key];
+        let within = closure(key, interfaces);
+        let span = i.name.span;
+        let classes: Vec<(Ident, u32)> = blocks
+            .iter()
+            .enumerate()
+            .filter(|(_, (_, none, implements))| {
+                !none
+                    && implements
+                        .iter()
+                        .any(|x| closure(&x.key(), interfaces).contains(key))
+            })
+            .map(|(k, (name, _, _))| (name.clone(), k as u32 + 1))
+            .collect();
+        let mut methods: Vec<&PendingMethod> = Vec::new();
+        for k in &within {
+            for m in interfaces.get(k).map_or(&[][..], |x| &x.methods[..]) {
+                if !methods.iter().any(|x| x.name.key() == m.name.key()) {
+                    methods.push(m);
+                }
+            }
+        }
+        let named = |n: &str| TypeRef::Named(Ident::new(n, span));
+        let reference = |target: TypeRef| TypeRef::Ref {
+            kind: RefKind::RefTo,
+            target: Box::new(target),
+            span,
+        };
+        let mut fields = vec![
+            VarDecl::new(Ident::new(TAG, span), named("UINT"), span),
+            VarDecl::new(Ident::new("__QUERIED", span), named("BOOL"), span),
+            VarDecl::new(
+                Ident::new(UNASSIGNED, span),
+                reference(named(&i.name.name)),
+                span,
+            ),
+        ];
+        for (c, _) in &classes {
+            fields.push(VarDecl::new(
+                Ident::new(ref_field(&c.name), span),
+                reference(TypeRef::Named(c.clone())),
+                span,
+            ));
+        }
+        let mut interface_results = Vec::new();
+        for m in &methods {
+            if let Some(r) = &m.ret {
+                if names_interface(&r.ty, interfaces) {
+                    // a result holding an interface would make the structure hold itself
+                    interface_results.push(m.name.key());
+                    continue;
+                }
+                fields.push(VarDecl::new(
+                    Ident::new(crate::actions::method_result(&m.name.name), span),
+                    r.ty.clone(),
+                    span,
+                ));
+            }
+        }
+        types.push(TypeDecl {
+            name: i.name.clone(),
+            def: TypeDef::Struct { fields },
+            span,
+        });
+        out.push(Interface {
+            name: i.name.clone(),
+            interface_results,
+            classes,
+            methods: methods.iter().map(|m| MethodSig::of(m)).collect(),
+            within,
+        });
+    }
+    if let (Some(u), false) = (units.first_mut(), types.is_empty()) {
+        u.items.insert(0, LibraryElement::DataTypes(types));
+    }
+    out
+}
+
+/// The initial value of an interface variable of a POU: `itf : I_Shape := fbCircle;`.
+#[derive(Debug, Clone)]
+pub struct Init {
+    /// The name of the POU that declares it (its span identifies the POU).
+    pub pou: Span,
+    /// The interface variable.
+    pub var: Ident,
+    /// The instance (or interface) it starts with.
+    pub value: crate::ast::VarRef,
+}
+
+/// The hidden flag of a function block or program whose interface variables have their initial
+/// values: set once they are assigned.
+pub const INIT_FLAG: &str = "__ITF_INIT";
+
+/// The IL that gives the interface variables of `p` their initial values (`inits`, all of `p`):
+/// in a FUNCTION at each call, in a FUNCTION_BLOCK or PROGRAM the first time its body or one of
+/// its methods runs (behind the hidden flag [`INIT_FLAG`], declared in `p`). CODESYS and TwinCAT
+/// assign them before the first cycle; here a call through them before the POU first runs finds
+/// them unassigned. Empty when `inits` is.
+pub fn initial_values(
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    inits: &[&Init],
+    diags: &mut Diagnostics,
+) -> Vec<crate::ast::IlStmt> {
+    let Some(first) = inits.first() else {
+        return Vec::new();
+    };
+    let span = first.var.span;
+    let mut body = Vec::new();
+    for i in inits {
+        let v = &i.value;
+        let mut accessors = Vec::new();
+        for a in v.accessors.iter() {
+            match a {
+                crate::ast::Accessor::Field(f) => accessors.push(Accessor::Field(f.clone())),
+                crate::ast::Accessor::Deref(s) => accessors.push(Accessor::Deref(*s)),
+                crate::ast::Accessor::Index(_) => {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0336,
+                            format!(
+                                "`{}`: an initial value with an index is not compiled",
+                                i.var.name
+                            ),
+                        )
+                        .at(v.span)
+                        .with_primary_label("an array element")
+                        .with_hint(format!("assign it in the body (`{} := ...;`)", i.var.name)),
+                    );
+                    return Vec::new();
+                }
+            }
+        }
+        let value = Place {
+            base: PlaceBase::Name(v.base.clone()),
+            accessors,
+            span: v.span,
+        };
+        let target = Place {
+            base: PlaceBase::Name(i.var.clone()),
+            accessors: Vec::new(),
+            span: i.var.span,
+        };
+        body.push(assign(target, place_expr(value, v.span), v.span));
+    }
+    let stmts = if p.kind == PouKind::Function {
+        body
+    } else {
+        let flag = Place {
+            base: PlaceBase::Name(Ident::new(INIT_FLAG, span)),
+            accessors: Vec::new(),
+            span,
+        };
+        p.var_blocks.push(crate::ast::VarBlock::locals(
+            vec![VarDecl::new(
+                Ident::new(INIT_FLAG, span),
+                TypeRef::Named(Ident::new("BOOL", span)),
+                span,
+            )],
+            span,
+        ));
+        body.insert(0, assign(flag.clone(), bool_lit(true, span), span));
+        vec![Stmt {
+            kind: StmtKind::If {
+                branches: vec![super::ast::CondBranch {
+                    cond: Expr {
+                        kind: ExprKind::Unary {
+                            op: super::ast::UnaryOp::Not,
+                            operand: Box::new(place_expr(flag, span)),
+                        },
+                        span,
+                    },
+                    body,
+                    span,
+                }],
+                else_body: None,
+            },
+            span,
+        }]
+    };
+    let mut low = super::PouLowering::new(decls, p).with_prefix("_ITF_");
+    let il = low.statements(&stmts, diags);
+    if let Some(t) = low.finish(span) {
+        p.var_blocks.push(t);
+    }
+    il
+}
+
+/// The methods of `i` for a message: `Area, Scale`.
+fn shown_methods(i: &Interface) -> String {
+    let names: Vec<&str> = i
+        .methods
+        .iter()
+        .filter(|m| !super::property::is_accessor(&m.name))
+        .map(|m| m.name.as_str())
+        .collect();
+    if names.is_empty() {
+        "none".into()
+    } else {
+        names.join(", ")
+    }
+}
+
+// ------------------------------------------------------------------ building statements
+
+fn field(p: &Place, name: &str, span: Span) -> Place {
+    let mut q = p.clone();
+    q.accessors.push(Accessor::Field(Ident::new(name, span)));
+    q
+}
+
+fn deref(p: &Place, span: Span) -> Place {
+    let mut q = p.clone();
+    q.accessors.push(Accessor::Deref(span));
+    q
+}
+
+fn place_expr(p: Place, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Place(p),
+        span,
+    }
+}
+
+fn int(v: i128, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Literal(Literal {
+            kind: LiteralKind::Int(v),
+            type_prefix: None,
+            span,
+        }),
+        span,
+    }
+}
+
+fn null(span: Span) -> Expr {
+    place_expr(
+        Place {
+            base: PlaceBase::Name(Ident::new("NULL", span)),
+            accessors: Vec::new(),
+            span,
+        },
+        span,
+    )
+}
+
+fn bool_lit(v: bool, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Literal(Literal {
+            kind: LiteralKind::Bool(v),
+            type_prefix: None,
+            span,
+        }),
+        span,
+    }
+}
+
+fn binary(op: BinaryOp, left: Expr, right: Expr, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Binary {
+            op,
+            left: Box::new(left),
+            right: Box::new(right),
+        },
+        span,
+    }
+}
+
+fn assign(target: Place, value: Expr, span: Span) -> Stmt {
+    Stmt {
+        kind: StmtKind::Assign { target, value },
+        span,
+    }
+}
+
+/// Whether `e` is `0` or `NULL` (CODESYS compares and assigns interfaces so).
+fn is_zero(env: &Env<'_>, e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Literal(l) => matches!(l.kind, LiteralKind::Int(0)),
+        ExprKind::Place(p) => {
+            p.accessors.is_empty()
+                && p.name()
+                    .is_some_and(|n| n.is("NULL") && env.var_type(n).is_none())
+        }
+        _ => false,
+    }
+}
+
+/// The rewriting of one statement (see [`rewrite`]).
+struct Rewriter<'a, 'd> {
+    env: &'a Env<'a>,
+    diags: &'d mut Diagnostics,
+    changed: bool,
+    /// The statements `__QUERYINTERFACE` / `__QUERYPOINTER` run before the statement.
+    before: Vec<Stmt>,
+    /// Whether the expression being rewritten runs once, just after `before` (not an ELSIF,
+    /// WHILE or UNTIL condition).
+    hoistable: bool,
+    /// The temporaries declared (see [`rewrite`]).
+    temps: Vec<VarDecl>,
+    first: usize,
+}
+
+/// `s` with its uses of interface variables rewritten (see the module documentation): the
+/// statements to lower instead, or `None` when `s` uses none in what it evaluates itself (nested
+/// statements are rewritten when they are lowered).
+/// `first` numbers the temporaries it declares (`_ITF_A<n>`, returned with the statements: the
+/// interface a FUNCTION's input receives); the caller's temporaries so far, so names never repeat.
+pub(super) fn rewrite(
+    env: &Env<'_>,
+    s: &Stmt,
+    first: usize,
+    diags: &mut Diagnostics,
+) -> Option<(Vec<Stmt>, Vec<VarDecl>)> {
+    if env.decls.interfaces.is_empty() && env.decls.bases.is_empty() {
+        return None;
+    }
+    let mut r = Rewriter {
+        env,
+        diags,
+        changed: false,
+        before: Vec::new(),
+        hoistable: true,
+        temps: Vec::new(),
+        first,
+    };
+    let out = r.stmt(s);
+    r.changed.then_some((out, r.temps))
+}
+
+impl Rewriter<'_, '_> {
+    /// The interface a value of type `t` is, if it is one.
+    fn interface(&self, t: &TypeRef) -> Option<&Interface> {
+        let TypeRef::Named(n) = self.env.resolve(t) else {
+            return None;
+        };
+        self.env.decls.interfaces.get(&n.key())
+    }
+
+    fn place_interface(&self, p: &Place) -> Option<&Interface> {
+        self.interface(&self.env.place_type(p)?)
+    }
+
+    fn expr_interface(&self, e: &Expr) -> Option<&Interface> {
+        match &e.kind {
+            ExprKind::Place(p) => self.place_interface(p),
+            _ => None,
+        }
+    }
+
+    /// The function block type of an instance `e` (a place whose type is a user block).
+    fn block_of(&self, e: &Expr) -> Option<Ident> {
+        let ExprKind::Place(p) = &e.kind else {
+            return None;
+        };
+        // `THIS^`: the block being lowered (`registry.Add(THIS^)`)
+        if let (PlaceBase::Name(n), [Accessor::Deref(_)]) = (&p.base, p.accessors.as_slice()) {
+            if n.is("THIS")
+                && self.env.pou_kind == PouKind::FunctionBlock
+                && self.env.var_type(n).is_none()
+            {
+                return Some(self.env.pou_name.clone());
+            }
+        }
+        let TypeRef::Named(n) = self.env.resolve(&self.env.place_type(p)?) else {
+            return None;
+        };
+        let pou = self.env.decls.pou(&n.name)?;
+        (pou.kind == PouKind::FunctionBlock).then(|| Ident::new(&pou.name, n.span))
+    }
+
+    fn stmt(&mut self, s: &Stmt) -> Vec<Stmt> {
+        let span = s.span;
+        let mut s = s.clone();
+        match &mut s.kind {
+            StmtKind::Assign { target, value } => {
+                if let Some(i) = self.place_interface(target).cloned() {
+                    if let Some(out) = self.assign_interface(target, &i, value, span) {
+                        self.changed = true;
+                        return out;
+                    }
+                }
+                self.compare(value);
+            }
+            StmtKind::Call { callee, args } => {
+                if let Some(out) = self.dispatch(callee, args, span) {
+                    self.changed = true;
+                    return out;
+                }
+                self.derived_for_base(callee, args);
+                let inputs = self.interface_inputs(callee, args);
+                if !inputs.is_empty() {
+                    self.changed = true;
+                    self.before.extend(inputs);
+                }
+                for a in args.iter_mut() {
+                    self.compare(&mut a.value);
+                }
+            }
+            StmtKind::If { branches, .. } => {
+                for (k, b) in branches.iter_mut().enumerate() {
+                    self.hoistable = k == 0;
+                    self.compare(&mut b.cond);
+                }
+            }
+            StmtKind::Case { selector, .. } => self.compare(selector),
+            StmtKind::For { from, to, by, .. } => {
+                self.compare(from);
+                self.compare(to);
+                if let Some(b) = by {
+                    self.compare(b);
+                }
+            }
+            StmtKind::While { cond, .. } => {
+                self.hoistable = false;
+                self.compare(cond);
+            }
+            StmtKind::Repeat { until, .. } => {
+                self.hoistable = false;
+                self.compare(until);
+            }
+            _ => {}
+        }
+        let mut out = std::mem::take(&mut self.before);
+        out.push(s);
+        out
+    }
+
+    /// `target := value` where `target` is of interface `i`: the statements setting its tag and
+    /// references; `None` when it is a plain copy of a value of the same interface (or not for
+    /// this rewriting: sema reports it).
+    fn assign_interface(
+        &mut self,
+        target: &Place,
+        i: &Interface,
+        value: &Expr,
+        span: Span,
+    ) -> Option<Vec<Stmt>> {
+        let set = |tag: Expr, refs: &dyn Fn(&Ident) -> Expr| {
+            let mut out = vec![assign(field(target, TAG, span), tag, span)];
+            for (c, _) in &i.classes {
+                out.push(assign(
+                    field(target, &ref_field(&c.name), span),
+                    refs(c),
+                    span,
+                ));
+            }
+            out
+        };
+        if is_zero(self.env, value) {
+            return Some(set(int(0, span), &|_| null(span)));
+        }
+        if let Some(j) = self.expr_interface(value).cloned() {
+            if j.name.key() == i.name.key() {
+                return None;
+            }
+            let ExprKind::Place(src) = &value.kind else {
+                return None;
+            };
+            if !j.within.contains(&i.name.key()) {
+                self.not_implemented(value.span, &j.name.name, "interface", i);
+                return Some(Vec::new());
+            }
+            // an `I2 EXTENDS I1` value in an `I1`: the same tag, the references the two share
+            let tag = place_expr(field(src, TAG, span), span);
+            return Some(set(tag, &|c| {
+                if j.tag_of(&c.name).is_some() {
+                    place_expr(field(src, &ref_field(&c.name), span), span)
+                } else {
+                    null(span)
+                }
+            }));
+        }
+        let fb = self.block_of(value)?;
+        let Some(tag) = i.tag_of(&fb.name) else {
+            self.not_implemented(value.span, &fb.name, "function block", i);
+            return Some(Vec::new());
+        };
+        Some(set(int(tag.into(), span), &|c| {
+            if c.name.eq_ignore_ascii_case(&fb.name) {
+                Expr {
+                    kind: ExprKind::Call {
+                        name: Ident::new("REF", span),
+                        args: vec![Arg {
+                            name: None,
+                            dir: ArgDir::Input,
+                            value: value.clone(),
+                            span,
+                        }],
+                    },
+                    span,
+                }
+            } else {
+                null(span)
+            }
+        }))
+    }
+
+    fn not_implemented(&mut self, at: Span, what: &str, kind: &str, i: &Interface) {
+        self.diags.push(
+            Diagnostic::error(
+                code::E0340,
+                format!(
+                    "{kind} `{what}` does not implement interface `{}`",
+                    i.name.name
+                ),
+            )
+            .at(at)
+            .with_primary_label(format!("not an `{}`", i.name.name))
+            .with_hint(format!(
+                "assign an instance of a block declared `IMPLEMENTS {}` (or extending one), another `{}`, or 0",
+                i.name.name, i.name.name
+            )),
+        );
+    }
+
+    /// `itf.M(args);` where `itf` is of an interface with method `M`: a CASE on the tag that calls
+    /// the method of the instance held and copies its result.
+    fn dispatch(&mut self, callee: &Place, args: &[Arg], span: Span) -> Option<Vec<Stmt>> {
+        let (Accessor::Field(m), prefix) = callee.accessors.split_last()? else {
+            return None;
+        };
+        let itf = Place {
+            base: callee.base.clone(),
+            accessors: prefix.to_vec(),
+            span: callee.span,
+        };
+        let i = self.place_interface(&itf)?.clone();
+        let Some(sig) = i
+            .methods
+            .iter()
+            .find(|x| x.name.eq_ignore_ascii_case(&m.name))
+        else {
+            self.diags.push(
+                Diagnostic::error(
+                    code::E0342,
+                    format!("interface `{}` has no method `{}`", i.name.name, m.name),
+                )
+                .at(m.span)
+                .with_primary_label("not a method of the interface")
+                .with_hint(format!(
+                    "call one of the methods `{}` declares (or those it extends): {}",
+                    i.name.name,
+                    shown_methods(&i)
+                )),
+            );
+            return Some(Vec::new());
+        };
+        if i.interface_results.contains(&m.key()) {
+            self.diags.push(
+                Diagnostic::error(
+                    code::E0342,
+                    format!(
+                        "method `{}` of interface `{}` returns an interface: not callable through an interface variable",
+                        sig.name, i.name.name
+                    ),
+                )
+                .at(m.span)
+                .with_primary_label("its result would hold an interface")
+                .with_hint("return the result through a VAR_IN_OUT of the interface type, or call the method on the instance itself"),
+            );
+            return Some(Vec::new());
+        }
+        let result = crate::actions::method_result(&sig.name);
+        let mut arms = Vec::new();
+        for (c, tag) in &i.classes {
+            let inst = deref(&field(&itf, &ref_field(&c.name), span), span);
+            let mut body = vec![Stmt {
+                kind: StmtKind::Call {
+                    callee: field(&inst, &m.name, m.span),
+                    args: args.to_vec(),
+                },
+                span,
+            }];
+            if sig.returns {
+                body.push(assign(
+                    field(&itf, &result, span),
+                    place_expr(field(&inst, &result, span), span),
+                    span,
+                ));
+            }
+            arms.push(CaseArm {
+                labels: vec![CaseLabel::Value(int((*tag).into(), span))],
+                body,
+                span,
+            });
+        }
+        // no instance: nothing runs, the result reads 0 through the NULL reference (reported)
+        let none = deref(&field(&itf, UNASSIGNED, span), span);
+        let mut else_body = vec![assign(
+            field(&itf, TAG, span),
+            place_expr(field(&none, TAG, span), span),
+            span,
+        )];
+        if sig.returns {
+            else_body.push(assign(
+                field(&itf, &result, span),
+                place_expr(field(&none, &result, span), span),
+                span,
+            ));
+        }
+        Some(vec![Stmt {
+            kind: StmtKind::Case {
+                selector: place_expr(field(&itf, TAG, span), span),
+                arms,
+                else_body: Some(else_body),
+            },
+            span,
+        }])
+    }
+
+    /// `fb(shape := inst)` where `shape` is an input of interface type (of a block, or of a
+    /// method: `obj.Add(shape := inst)`, `Add(inst)` inside the block): `fb.shape := inst;` (as
+    /// rewritten by [`Self::assign_interface`]) before the call, and the argument left out (the
+    /// positional arguments after it are then named, so that they bind as before).
+    fn interface_inputs(&mut self, callee: &Place, args: &mut Vec<Arg>) -> Vec<Stmt> {
+        let params = self.call_inputs(callee);
+        if !params.iter().any(|p| self.interface(&p.2).is_some()) {
+            return Vec::new();
+        }
+        let mut before = Vec::new();
+        let mut kept = Vec::new();
+        let mut positional = Vec::new();
+        for (k, a) in std::mem::take(args).into_iter().enumerate() {
+            let param = match (&a.name, a.dir) {
+                (_, ArgDir::Output { .. }) => None,
+                (Some(n), _) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
+                (None, _) => params.get(k),
+            };
+            if let Some((name, target, ty)) = param {
+                if let Some(i) = self.interface(ty).cloned() {
+                    if let Some(stmts) = self.assign_interface(target, &i, &a.value, a.span) {
+                        before.extend(stmts);
+                        continue;
+                    }
+                }
+                if a.name.is_none() {
+                    positional.push((kept.len(), name.clone()));
+                }
+            }
+            kept.push(a);
+        }
+        if !before.is_empty() {
+            for (k, name) in positional {
+                kept[k].name = Some(Ident::new(name, kept[k].span));
+            }
+        }
+        *args = kept;
+        before
+    }
+
+    /// `fb(io := derived)` where `io` is a VAR_IN_OUT (or `REFERENCE TO`) of a base block of
+    /// `derived`'s: one E0344 each (the argument is left out). ladderc gives each derived block
+    /// its own flattened copy of its bases' code (late binding without pointers), so an instance
+    /// of it is no instance of its base in memory; an interface both implement is the way to pass
+    /// either.
+    fn derived_for_base(&mut self, callee: &Place, args: &mut Vec<Arg>) {
+        if self.env.decls.bases.is_empty() {
+            return;
+        }
+        let Some(TypeRef::Named(fb)) = self.env.place_type(callee).map(|t| self.env.resolve(&t))
+        else {
+            return;
+        };
+        let Some(pou) = self.env.decls.pou(&fb.name).cloned() else {
+            return;
+        };
+        let params: Vec<_> = pou.params().cloned().collect();
+        let mut k = 0;
+        args.retain(|a| {
+            let at = k;
+            k += 1;
+            let param = match &a.name {
+                Some(n) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
+                None => params.get(at),
+            };
+            let Some((name, kind, ty)) = param else {
+                return true;
+            };
+            let expected = match (kind, ty) {
+                (crate::ast::VarKind::InOut, TypeRef::Named(b)) => b,
+                (_, TypeRef::Ref { target, .. }) => match &**target {
+                    TypeRef::Named(b) => b,
+                    _ => return true,
+                },
+                _ => return true,
+            };
+            let Some(given) = self.block_of(&a.value) else {
+                return true;
+            };
+            let derived = self
+                .env
+                .decls
+                .bases
+                .get(&given.key())
+                .is_some_and(|bs| bs.contains(&expected.key()));
+            if !derived {
+                return true;
+            }
+            self.diags.push(
+                Diagnostic::error(
+                    code::E0344,
+                    format!(
+                        "an instance of `{}`, which extends `{}`, passed to `{}` of `{}`: a derived instance where its base is expected is not supported",
+                        given.name, expected.name, name, pou.name
+                    ),
+                )
+                .at(a.value.span)
+                .with_primary_label("a derived instance for its base")
+                .with_hint(format!(
+                    "declare `{name}` with an INTERFACE that `{}` implements (both blocks then pass), or pass a `{}`",
+                    expected.name, expected.name
+                )),
+            );
+            false
+        });
+    }
+
+    /// `F(shape := inst)` where `shape` is a FUNCTION's input of interface type: a temporary of
+    /// the interface, assigned before the statement, is passed instead (where the statement can
+    /// run it first; elsewhere sema reports the mismatch).
+    fn function_inputs(&mut self, name: &Ident, args: &mut [Arg]) {
+        let Some(pou) = self.env.decls.pou(&name.name).cloned() else {
+            return;
+        };
+        if pou.kind != PouKind::Function || !self.hoistable {
+            return;
+        }
+        let params: Vec<_> = pou
+            .params()
+            .filter(|p| p.1 == crate::ast::VarKind::Input)
+            .cloned()
+            .collect();
+        for (k, a) in args.iter_mut().enumerate() {
+            let param = match (&a.name, a.dir) {
+                (_, ArgDir::Output { .. }) => None,
+                (Some(n), _) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
+                (None, _) => params.get(k),
+            };
+            let Some((_, _, ty)) = param else { continue };
+            let Some(i) = self.interface(ty).cloned() else {
+                continue;
+            };
+            if self.block_of(&a.value).is_none() {
+                continue;
+            }
+            let span = a.span;
+            let temp = Ident::new(format!("_ITF_A{}", self.first + self.temps.len() + 1), span);
+            let place = Place {
+                base: PlaceBase::Name(temp.clone()),
+                accessors: Vec::new(),
+                span,
+            };
+            let Some(stmts) = self.assign_interface(&place, &i, &a.value, span) else {
+                continue;
+            };
+            self.temps
+                .push(VarDecl::new(temp, TypeRef::Named(i.name.clone()), span));
+            self.before.extend(stmts);
+            a.value = place_expr(place, span);
+            self.changed = true;
+        }
+    }
+
+    /// The inputs a call statement of `callee` passes, in order: each one's name as the caller
+    /// writes it, the place that holds it, its type. Empty when `callee` is no block instance and
+    /// no method of one.
+    fn call_inputs(&self, callee: &Place) -> Vec<(String, Place, TypeRef)> {
+        let block = |t: &TypeRef| match self.env.resolve(t) {
+            TypeRef::Named(n) => self
+                .env
+                .decls
+                .pou(&n.name)
+                .filter(|p| p.kind == PouKind::FunctionBlock)
+                .cloned(),
+            _ => None,
+        };
+        // an instance: its inputs
+        if let Some(pou) = self.env.place_type(callee).and_then(|t| block(&t)) {
+            return pou
+                .params()
+                .filter(|p| p.1 == crate::ast::VarKind::Input)
+                .map(|(n, _, t)| (n.clone(), field(callee, n, callee.span), t.clone()))
+                .collect();
+        }
+        // a method: its hidden inputs in the block
+        let (pou, prefix, m) = match callee.accessors.split_last() {
+            Some((Accessor::Field(m), rest)) => {
+                let prefix = Place {
+                    base: callee.base.clone(),
+                    accessors: rest.to_vec(),
+                    span: callee.span,
+                };
+                match self.env.place_type(&prefix).and_then(|t| block(&t)) {
+                    Some(pou) => (pou, Some(prefix), m.clone()),
+                    None => return Vec::new(),
+                }
+            }
+            None => {
+                let Some(m) = callee.name() else {
+                    return Vec::new();
+                };
+                if self.env.pou_kind != PouKind::FunctionBlock || self.env.var_type(m).is_some() {
+                    return Vec::new();
+                }
+                match self.env.decls.pou(&self.env.pou_name.name) {
+                    Some(pou) => (pou.clone(), None, m.clone()),
+                    None => return Vec::new(),
+                }
+            }
+            _ => return Vec::new(),
+        };
+        let Some(sig) = self
+            .env
+            .decls
+            .methods
+            .get(&pou.name.to_ascii_uppercase())
+            .and_then(|ms| ms.iter().find(|s| s.name.eq_ignore_ascii_case(&m.name)))
+        else {
+            return Vec::new();
+        };
+        sig.inputs
+            .iter()
+            .filter_map(|input| {
+                let hidden = crate::actions::method_var(&sig.name, input);
+                let ty = pou.var(&hidden)?.2.clone();
+                let target = match &prefix {
+                    Some(p) => field(p, &hidden, callee.span),
+                    None => Place {
+                        base: PlaceBase::Name(Ident::new(&hidden, callee.span)),
+                        accessors: Vec::new(),
+                        span: callee.span,
+                    },
+                };
+                Some((input.clone(), target, ty))
+            })
+            .collect()
+    }
+
+    /// Whether `p` reads the result of a call through an interface that E0342 refused
+    /// (`itf.__M_M`, as the parser reads `itf.M()`): the statement is dropped, no error more.
+    fn unknown_result(&self, p: &Place) -> bool {
+        let Some((Accessor::Field(f), prefix)) = p.accessors.split_last() else {
+            return false;
+        };
+        let Some(m) = f.name.strip_prefix(crate::actions::METHOD_PREFIX) else {
+            return false;
+        };
+        let itf = Place {
+            base: p.base.clone(),
+            accessors: prefix.to_vec(),
+            span: p.span,
+        };
+        self.place_interface(&itf).is_some_and(|i| {
+            i.interface_results.contains(&m.to_ascii_uppercase())
+                || !i.methods.iter().any(|x| x.name.eq_ignore_ascii_case(m))
+        })
+    }
+
+    /// `__QUERYINTERFACE(src, dst)` (CODESYS, TwinCAT: `dst` takes the instance `src` holds, or
+    /// is for an FB instance, when its block implements `dst`'s interface, else 0) and
+    /// `__QUERYPOINTER(src, p)` (`p : POINTER TO FB` takes the address of the instance `src`
+    /// holds when it is an `FB`, else 0): the statements doing it run before the statement (in
+    /// [`Self::before`]), which reads the BOOL result from the hidden `__QUERIED` of the interface
+    /// variable (`dst`, `src`). Anything else is one E0341; `None` when `name` is no query.
+    fn query(&mut self, name: &Ident, args: &[Arg], span: Span) -> Option<Expr> {
+        let pointer = name.is("__QUERYPOINTER");
+        if !pointer && !name.is("__QUERYINTERFACE") {
+            return None;
+        }
+        let fail = |this: &mut Self, msg: String, hint: &str| {
+            this.diags.push(
+                Diagnostic::error(code::E0341, msg)
+                    .at(span)
+                    .with_primary_label("not compiled")
+                    .with_hint(hint.to_string()),
+            );
+            Some(Expr {
+                kind: ExprKind::Error,
+                span,
+            })
+        };
+        if !self.hoistable {
+            return fail(
+                self,
+                format!(
+                    "`{}` in an ELSIF, WHILE or UNTIL condition is not supported",
+                    name.name
+                ),
+                "call it in a statement of its own (`ok := __QUERYINTERFACE(a, b);`) and test `ok`",
+            );
+        }
+        let (Some(src), Some(dst), 2) = (args.first(), args.get(1), args.len()) else {
+            return fail(
+                self,
+                format!("`{}` takes two operands", name.name),
+                "write `__QUERYINTERFACE(itfSource, itfDest)` or `__QUERYPOINTER(itfSource, pDest)`",
+            );
+        };
+        let (ExprKind::Place(sp), ExprKind::Place(dp)) = (&src.value.kind, &dst.value.kind) else {
+            return fail(
+                self,
+                format!("`{}` takes two variables", name.name),
+                "pass the interface (or instance) variable and the variable that receives it",
+            );
+        };
+        if pointer {
+            let target = match self.env.place_type(dp).map(|t| self.env.resolve(&t)) {
+                Some(TypeRef::Ref { target, .. }) => match *target {
+                    TypeRef::Named(n) => Some(n),
+                    _ => None,
+                },
+                _ => None,
+            };
+            let (Some(i), Some(fb)) = (self.place_interface(sp).cloned(), target) else {
+                return fail(
+                    self,
+                    "`__QUERYPOINTER` takes an interface variable and a POINTER TO a function block".into(),
+                    "declare the second operand `POINTER TO FB_X` for a block FB_X that implements the interface",
+                );
+            };
+            let ok = field(sp, "__QUERIED", span);
+            let mut arms = Vec::new();
+            if let Some(tag) = i.tag_of(&fb.name) {
+                arms.push(CaseArm {
+                    labels: vec![CaseLabel::Value(int(tag.into(), span))],
+                    body: vec![
+                        assign(
+                            dp.clone(),
+                            place_expr(field(sp, &ref_field(&fb.name), span), span),
+                            span,
+                        ),
+                        assign(ok.clone(), bool_lit(true, span), span),
+                    ],
+                    span,
+                });
+            }
+            let else_body = vec![
+                assign(dp.clone(), null(span), span),
+                assign(ok.clone(), bool_lit(false, span), span),
+            ];
+            self.before.push(Stmt {
+                kind: StmtKind::Case {
+                    selector: place_expr(field(sp, TAG, span), span),
+                    arms,
+                    else_body: Some(else_body),
+                },
+                span,
+            });
+            return Some(place_expr(ok, span));
+        }
+        let Some(di) = self.place_interface(dp).cloned() else {
+            return fail(
+                self,
+                "the second operand of `__QUERYINTERFACE` is no interface variable".into(),
+                "pass a variable whose type is the interface wanted",
+            );
+        };
+        let ok = field(dp, "__QUERIED", span);
+        let cleared = |this: &mut Self| {
+            this.assign_interface(dp, &di, &int(0, span), span)
+                .unwrap_or_default()
+        };
+        if let Some(si) = self.place_interface(sp).cloned() {
+            // the instance `src` holds, when its block is also one of `dst`'s
+            let mut arms = Vec::new();
+            for (c, tag) in si
+                .classes
+                .iter()
+                .filter(|(c, _)| di.tag_of(&c.name).is_some())
+            {
+                let mut body = vec![assign(field(dp, TAG, span), int((*tag).into(), span), span)];
+                for (d, _) in &di.classes {
+                    let f = ref_field(&d.name);
+                    let v = if d.name.eq_ignore_ascii_case(&c.name) {
+                        place_expr(field(sp, &f, span), span)
+                    } else {
+                        null(span)
+                    };
+                    body.push(assign(field(dp, &f, span), v, span));
+                }
+                body.push(assign(ok.clone(), bool_lit(true, span), span));
+                arms.push(CaseArm {
+                    labels: vec![CaseLabel::Value(int((*tag).into(), span))],
+                    body,
+                    span,
+                });
+            }
+            let mut else_body = cleared(self);
+            else_body.push(assign(ok.clone(), bool_lit(false, span), span));
+            self.before.push(Stmt {
+                kind: StmtKind::Case {
+                    selector: place_expr(field(sp, TAG, span), span),
+                    arms,
+                    else_body: Some(else_body),
+                },
+                span,
+            });
+            return Some(place_expr(ok, span));
+        }
+        // an FB instance: known when compiling
+        let implements = self
+            .block_of(&src.value)
+            .is_some_and(|fb| di.tag_of(&fb.name).is_some());
+        let mut stmts = if implements {
+            self.assign_interface(dp, &di, &src.value, span)
+                .unwrap_or_default()
+        } else {
+            cleared(self)
+        };
+        stmts.push(assign(ok.clone(), bool_lit(implements, span), span));
+        self.before.extend(stmts);
+        Some(place_expr(ok, span))
+    }
+
+    /// The comparisons of interfaces inside `e`: `itf = 0` (`<> 0`, `NULL`) tests the tag,
+    /// `i1 = i2` the tags and the references.
+    fn compare(&mut self, e: &mut Expr) {
+        let span = e.span;
+        let replacement = match &mut e.kind {
+            ExprKind::Binary { op, left, right } => {
+                self.compare(left);
+                self.compare(right);
+                let op = *op;
+                if !matches!(op, BinaryOp::Eq | BinaryOp::Ne) {
+                    return;
+                }
+                let (li, ri) = (
+                    self.expr_interface(left).cloned(),
+                    self.expr_interface(right).cloned(),
+                );
+                let tag = |x: &Expr| match &x.kind {
+                    ExprKind::Place(p) => place_expr(field(p, TAG, span), span),
+                    _ => x.clone(),
+                };
+                match (li, ri) {
+                    (Some(_), None) if is_zero(self.env, right) => {
+                        binary(op, tag(left), int(0, span), span)
+                    }
+                    (None, Some(_)) if is_zero(self.env, left) => {
+                        binary(op, int(0, span), tag(right), span)
+                    }
+                    (Some(a), Some(b)) => {
+                        let (ExprKind::Place(l), ExprKind::Place(r)) = (&left.kind, &right.kind)
+                        else {
+                            return;
+                        };
+                        let mut all = binary(BinaryOp::Eq, tag(left), tag(right), span);
+                        for (c, _) in a
+                            .classes
+                            .iter()
+                            .filter(|(c, _)| b.tag_of(&c.name).is_some())
+                        {
+                            let f = ref_field(&c.name);
+                            let same = binary(
+                                BinaryOp::Eq,
+                                place_expr(field(l, &f, span), span),
+                                place_expr(field(r, &f, span), span),
+                                span,
+                            );
+                            all = binary(BinaryOp::And, all, same, span);
+                        }
+                        if op == BinaryOp::Ne {
+                            Expr {
+                                kind: ExprKind::Unary {
+                                    op: super::ast::UnaryOp::Not,
+                                    operand: Box::new(all),
+                                },
+                                span,
+                            }
+                        } else {
+                            all
+                        }
+                    }
+                    _ => return,
+                }
+            }
+            ExprKind::Unary { operand, .. } => {
+                self.compare(operand);
+                return;
+            }
+            ExprKind::Place(p) if self.unknown_result(p) => Expr {
+                kind: ExprKind::Error,
+                span,
+            },
+            ExprKind::Call { name, args } => {
+                for a in args.iter_mut() {
+                    self.compare(&mut a.value);
+                }
+                self.function_inputs(name, args);
+                let query = ["__QUERYINTERFACE", "__QUERYPOINTER"]
+                    .iter()
+                    .any(|q| name.is(q));
+                match self.query(name, args, span) {
+                    Some(result) if query => result,
+                    _ => return,
+                }
+            }
+            _ => return,
+        };
+        self.changed = true;
+        *e = replacement;
+    }
+}
