@@ -140,6 +140,10 @@ pub struct PendingBody {
     /// or (with an empty `text`) an `INTERFACE` ([`super::inherit`] flattens and checks them before
     /// the bodies are lowered).
     pub oop: Option<Box<super::inherit::Oop>>,
+    /// The FB_init arguments of the file's instance declarations (`fb : FB_X(n := 1)`), carried
+    /// by one body of the file that is no POU's (`name_start` is `usize::MAX`, no text): matched
+    /// with the blocks' FB_init inputs by [`super::fb_init`] once every file is read.
+    pub fb_init_args: Vec<super::fb_init_args::DeclArgs>,
 }
 
 impl PendingBody {
@@ -743,6 +747,7 @@ pub fn parse_text(
     diags: &mut Diagnostics,
 ) -> (CompilationUnit, Vec<PendingBody>, Vec<ConfigEntry>) {
     let mut pending = Vec::new();
+    let mut decl_args = Vec::new();
     let mut first_try = None;
     if lang == Lang::Il {
         // A valid IL file costs one parse: the bodies are looked at only when the IL parser
@@ -776,15 +781,16 @@ pub fn parse_text(
         None => src,
     };
     let src = if lang == Lang::St {
-        // `fb : FB_X(a := 1);`: FB_init arguments, one E0329 each (`fb_init_args`)
-        let src = match super::fb_init_args::fb_init_arguments(file, src, &toks, diags) {
-            Some(t) => {
-                uninitialised = t;
-                (toks, problems) = lex(&uninitialised);
-                uninitialised.as_str()
-            }
-            None => src,
-        };
+        // `fb : FB_X(a := 1);`: FB_init arguments, kept for `fb_init` (`fb_init_args`)
+        let src =
+            match super::fb_init_args::fb_init_arguments(file, src, &toks, diags, &mut decl_args) {
+                Some(t) => {
+                    uninitialised = t;
+                    (toks, problems) = lex(&uninitialised);
+                    uninitialised.as_str()
+                }
+                None => src,
+            };
         let (blanked, refs) = RefTypes::blank_keywords(file, src, &toks);
         references = refs;
         let src = match blanked {
@@ -947,6 +953,7 @@ pub fn parse_text(
                 oop: Some(Box::new(super::inherit::Oop::interface(
                     file, src, p, methods,
                 ))),
+                fb_init_args: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -994,6 +1001,7 @@ pub fn parse_text(
                 sfc: true,
                 methods: Vec::new(),
                 oop: None,
+                fb_init_args: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1131,6 +1139,7 @@ pub fn parse_text(
                     sfc: false,
                     methods,
                     oop: oop.map(Box::new),
+                    fb_init_args: Vec::new(),
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -1166,6 +1175,19 @@ pub fn parse_text(
             !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
         })),
         None => diags.extend(end_at_end_of_file(file, src, &pous, local)),
+    }
+    if !decl_args.is_empty() {
+        pending.push(PendingBody {
+            file,
+            name_start: usize::MAX,
+            base: 0,
+            text: String::new(),
+            actions: Vec::new(),
+            sfc: false,
+            methods: Vec::new(),
+            oop: None,
+            fb_init_args: decl_args,
+        });
     }
     (unit, pending, var_config.1)
 }
@@ -1376,6 +1398,8 @@ pub fn compile_pending(
                 .extend(standalone.into_iter().map(LibraryElement::Action));
         }
     }
+    // FB_init: each instance's, before the first cycle, with its declaration's arguments
+    super::fb_init::add_init_calls(units, pending, &mut decls, diags);
     let seen: std::collections::HashSet<_> = diags
         .iter()
         .map(|d| (d.code, d.message.clone(), d.span.map(|s| (s.start, s.end))))

@@ -13,7 +13,8 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
-mod fb_init_args;
+pub mod fb_init;
+pub mod fb_init_args;
 pub mod file;
 pub mod infer;
 pub mod inherit;

@@ -1,0 +1,615 @@
+//! CODESYS's and TwinCAT's `FB_init` method, run once per function block instance before the first
+//! cycle, with the arguments of the instance's declaration (`fb : FB_X(nSize := 10);`).
+//!
+//! What the vendors document, and ladderc follows (Beckhoff Infosys "Methods FB_init, FB_reinit and
+//! FB_exit", "Behavior with derived function blocks"; CODESYS online help "Method: FB_Init,
+//! FB_Reinit, FB_Exit"): on a first download (a cold start, what a simulation run is) every
+//! instance's FB_init runs implicitly, after its variables have their initial values, with
+//! `bInitRetains := TRUE, bInCopyCode := FALSE`; the extra inputs of FB_init get the declaration's
+//! arguments (positional ones in FB_init's order after those two); an instance inside another
+//! block is initialised before the block that holds it; for a block that EXTENDS another, the
+//! base's FB_init runs first, then the block's own (which has the base's parameters, and maybe
+//! more: each base version gets the arguments its own inputs name). FB_reinit runs only after an
+//! online change copied an instance and FB_exit only before one is removed (a new download, an
+//! online change): a simulation does neither, so neither is called (a note, W0345, says so).
+//!
+//! Input: the units after every ST body and method is lowered (each method an
+//! [`Action`](crate::ast::Action) with `method_inputs`; a base's FB_init a hidden method
+//! `__S<level>_FB_INIT`, see [`super::inherit`]) and the FB_init arguments read by
+//! [`super::fb_init_args`]. Output: each PROGRAM or FUNCTION_BLOCK that holds instances to
+//! initialise gets a hidden method [`ACTION`] that initialises them in declaration order (for each:
+//! its own instances first, through its [`ACTION`], then its bases' FB_init, then its FB_init; an
+//! array element by element), and one hidden PROGRAM [`PROGRAM`] does so for the global variables,
+//! then runs every program's [`ACTION`]. The C backend runs that program once, before the first
+//! cycle, never in a cycle. Invariants: a project without FB_init methods is unchanged; every
+//! argument that goes nowhere is one E0329 naming it; an array of more than [`MAX_ELEMENTS`]
+//! instances to initialise is E0345.
+
+use super::ast::{Accessor, Arg, ArgDir, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind};
+use super::fb_init_args::DeclArgs;
+use super::file::PendingBody;
+use super::types::MethodSig;
+use crate::ast::{
+    Action, CompilationUnit, Ident, LibraryElement, Literal, LiteralKind, Pou, PouKind, TypeRef,
+    VarBlock, VarKind,
+};
+use crate::Span;
+use diagnostics::{code, Diagnostic, Diagnostics, Severity};
+use std::collections::{HashMap, HashSet};
+
+/// The hidden method of a PROGRAM or FUNCTION_BLOCK that initialises its instances.
+pub const ACTION: &str = "__FBINIT";
+/// The hidden program that initialises the global instances and runs every program's
+/// [`ACTION`]: run once by the C backend before the first cycle.
+pub const PROGRAM: &str = "__FBINIT_ALL";
+/// The most elements of one array of instances that are initialised one by one.
+pub const MAX_ELEMENTS: u128 = 4096;
+
+/// The two inputs every FB_init has (Beckhoff compiler error C0119 when one is missing).
+const SYSTEM_INPUTS: [&str; 2] = ["bInitRetains", "bInCopyCode"];
+
+/// What a function block runs when one of its instances is initialised.
+#[derive(Default, Clone)]
+struct Block {
+    /// Its bases' FB_init versions, root first: hidden method name and inputs.
+    bases: Vec<(String, Vec<String>)>,
+    /// Its FB_init's inputs (its own, or the nearest base's).
+    fb_init: Option<Vec<String>>,
+}
+
+/// See the module documentation. `pending` holds the FB_init arguments of every file.
+pub fn add_init_calls(
+    units: &mut [CompilationUnit],
+    pending: &[PendingBody],
+    decls: &mut super::Declarations,
+    diags: &mut Diagnostics,
+) {
+    let mut args: HashMap<(crate::FileId, u32), (&DeclArgs, bool)> = pending
+        .iter()
+        .flat_map(|pb| pb.fb_init_args.iter())
+        .map(|a| ((a.ty.file, a.ty.start), (a, false)))
+        .collect();
+    // the FB_init of each block, from its lowered methods
+    let mut blocks: HashMap<String, Block> = HashMap::new();
+    let mut never_called: Vec<(Ident, Ident)> = Vec::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        let LibraryElement::Action(a) = item else {
+            continue;
+        };
+        let Some(inputs) = &a.method_inputs else {
+            continue;
+        };
+        let inputs: Vec<String> = inputs.iter().map(|i| i.name.clone()).collect();
+        let name = a.name.key();
+        let b = blocks.entry(a.pou.key()).or_default();
+        if name == "FB_INIT" {
+            b.fb_init = Some(inputs);
+        } else if name.starts_with("__S") && name.ends_with("_FB_INIT") {
+            b.bases.push((a.name.name.clone(), inputs));
+        } else if (name == "FB_EXIT" || name == "FB_REINIT")
+            // (an inherited method is the base's text: noted once)
+            && !never_called.iter().any(|(_, m)| m.span == a.name.span)
+        {
+            never_called.push((a.pou.clone(), a.name.clone()));
+        }
+    }
+    for b in blocks.values_mut() {
+        // `__S000_...` before `__S001_...`: root first
+        b.bases.sort();
+    }
+    for (pou, m) in never_called {
+        diags.push(
+            Diagnostic::new(
+                code::W0345,
+                Severity::Note,
+                format!(
+                    "`{}.{}` is never called in a simulation",
+                    pou.name, m.name
+                ),
+            )
+            .at(m.span)
+            .with_primary_label("not called")
+            .with_hint(if m.is("FB_exit") {
+                "CODESYS and TwinCAT call FB_exit before an instance is removed (a new download, an online change); a run of ladderc starts once and is never replaced"
+            } else {
+                "CODESYS and TwinCAT call FB_reinit after an online change copied the instance; a run of ladderc has no online change"
+            }),
+        );
+    }
+    let has_fb_init = blocks.values().any(|b| b.fb_init.is_some());
+    if !has_fb_init && args.is_empty() {
+        return;
+    }
+    // every POU's kind and variables
+    let mut pous: HashMap<String, (PouKind, Vec<VarBlock>)> = HashMap::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::Pou(p) = item {
+            pous.entry(p.name.key())
+                .or_insert_with(|| (p.kind, p.var_blocks.clone()));
+        }
+    }
+    // which blocks hold instances to initialise (their ACTION), which need any initialisation
+    let mut holds: HashMap<String, bool> = HashMap::new();
+    let keys: Vec<String> = pous.keys().cloned().collect();
+    for k in &keys {
+        holds_instances(k, &pous, &blocks, &mut holds, &mut HashSet::new());
+    }
+    let needs = |t: &str, holds: &HashMap<String, bool>| {
+        matches!(pous.get(t), Some((PouKind::FunctionBlock, _)))
+            && (blocks.get(t).is_some_and(|b| b.fb_init.is_some())
+                || holds.get(t).copied().unwrap_or(false))
+    };
+    let mut gen = Gen {
+        blocks: &blocks,
+        holds: &holds,
+        needs: &needs,
+        args: &mut args,
+        diags,
+    };
+    // the statements of each POU's ACTION, and of the hidden program
+    let mut bodies: Vec<(String, Vec<Stmt>)> = Vec::new();
+    let mut globals = Vec::new();
+    let mut programs = Vec::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        match item {
+            LibraryElement::Pou(p) if p.kind != PouKind::Function => {
+                let stmts = gen.members(&p.var_blocks);
+                if !stmts.is_empty() {
+                    if p.kind == PouKind::Program {
+                        programs.push(p.name.clone());
+                    }
+                    bodies.push((p.name.key(), stmts));
+                }
+            }
+            LibraryElement::GlobalVars(b) => globals.extend(gen.members(std::slice::from_ref(b))),
+            LibraryElement::Configuration(c) => {
+                globals.extend(gen.members(&c.globals));
+                for r in &c.resources {
+                    globals.extend(gen.members(&r.globals));
+                }
+            }
+            _ => {}
+        }
+    }
+    drop(gen);
+    // arguments no instance took: a declaration of no function block's instance (a method's
+    // variable, a structure's field, an unknown type)
+    let mut left: Vec<&DeclArgs> = args
+        .values()
+        .filter(|(_, used)| !used)
+        .map(|(a, _)| *a)
+        .collect();
+    left.sort_by_key(|a| (a.span.file, a.span.start));
+    for a in left {
+        let has = blocks
+            .get(&a.ty_name.to_ascii_uppercase())
+            .is_some_and(|b| b.fb_init.is_some());
+        let message = if has {
+            format!("this instance of `{}` is not one ladderc initialises (only the instances in programs, function blocks and global lists are)", a.ty_name)
+        } else {
+            format!(
+                "`{}` has no FB_init method to take these arguments",
+                a.ty_name
+            )
+        };
+        diags.push(unplaced(a, message));
+    }
+    if bodies.is_empty() && globals.is_empty() {
+        return;
+    }
+    for (key, _) in &bodies {
+        decls
+            .methods
+            .entry(key.clone())
+            .or_default()
+            .push(MethodSig {
+                name: ACTION.to_string(),
+                inputs: Vec::new(),
+                outputs: Vec::new(),
+                returns: false,
+            });
+    }
+    let bodies: HashMap<String, Vec<Stmt>> = bodies.into_iter().collect();
+    let mut span = None;
+    for unit in units.iter_mut() {
+        let mut actions = Vec::new();
+        for item in &unit.items {
+            let LibraryElement::Pou(p) = item else {
+                continue;
+            };
+            let Some(stmts) = bodies.get(&p.name.key()) else {
+                continue;
+            };
+            if actions.iter().any(|a: &Action| a.pou.is(&p.name.name)) {
+                continue;
+            }
+            span.get_or_insert(p.name.span);
+            actions.push(lower(decls, p, stmts, diags));
+        }
+        unit.items
+            .extend(actions.into_iter().map(LibraryElement::Action));
+    }
+    // the hidden program: the global instances, then each program's instances
+    let Some(span) = span.or_else(|| globals.first().map(|s| s.span)) else {
+        return;
+    };
+    let mut hidden = Pou {
+        kind: PouKind::Program,
+        name: Ident::new(PROGRAM, span),
+        return_type: None,
+        var_blocks: Vec::new(),
+        body: Vec::new(),
+        span,
+    };
+    let mut low = super::PouLowering::new(decls, &hidden);
+    let mut body = low.statements(&globals, diags);
+    if let Some(t) = low.finish(span) {
+        hidden.var_blocks.push(t);
+    }
+    for p in programs {
+        body.push(crate::ast::IlStmt::Instr(crate::ast::Instruction {
+            kind: crate::ast::InstrKind::Call {
+                cond: crate::ast::Condition::Always,
+                instance: Box::new(crate::ast::VarRef {
+                    base: p.clone(),
+                    accessors: vec![crate::ast::Accessor::Field(Ident::new(ACTION, p.span))].into(),
+                    span: p.span,
+                }),
+                args: crate::ast::CallArgs::None,
+            },
+            span: p.span,
+        }));
+    }
+    hidden.body = body;
+    if let Some(unit) = units.last_mut() {
+        unit.items.push(LibraryElement::Pou(hidden));
+    }
+}
+
+/// The hidden method [`ACTION`] of `p`: its statements lowered where `p`'s names are visible.
+fn lower(decls: &super::Declarations, p: &Pou, stmts: &[Stmt], diags: &mut Diagnostics) -> Action {
+    let mut low = super::PouLowering::new(decls, p);
+    let mut body = low.statements(stmts, diags);
+    // its temporaries get names of their own (the body's lowering made the same ones)
+    let mut rename: HashMap<String, String> = HashMap::new();
+    let temps = low.finish(p.name.span).map(|mut t| {
+        t.kind = VarKind::Temp;
+        for v in &mut t.vars {
+            let new = format!("{ACTION}_{}", v.name.name.trim_start_matches('_'));
+            rename.insert(v.name.key(), new.clone());
+            v.name.name = new;
+        }
+        t
+    });
+    crate::rename::Renames {
+        bases: rename,
+        ..Default::default()
+    }
+    .apply(&mut body);
+    Action {
+        pou: p.name.clone(),
+        name: Ident::new(ACTION, p.name.span),
+        body: crate::actions::instantiate(&body, "__FBI_L", p.name.span),
+        temps,
+        method_inputs: Some(Vec::new()),
+        diagnostics: Vec::new(),
+    }
+}
+
+/// Whether the block or program `key` holds an instance that needs initialising (memoised in
+/// `holds`; `visiting` cuts a cycle of types, which sema reports).
+fn holds_instances(
+    key: &str,
+    pous: &HashMap<String, (PouKind, Vec<VarBlock>)>,
+    blocks: &HashMap<String, Block>,
+    holds: &mut HashMap<String, bool>,
+    visiting: &mut HashSet<String>,
+) -> bool {
+    if let Some(&h) = holds.get(key) {
+        return h;
+    }
+    let Some((_, vars)) = pous.get(key) else {
+        return false;
+    };
+    if !visiting.insert(key.to_string()) {
+        return false;
+    }
+    let mut h = false;
+    for v in vars
+        .iter()
+        .filter(|b| initialised(b.kind))
+        .flat_map(|b| b.vars.iter())
+    {
+        if let Some(t) = instance_type(&v.ty) {
+            let t = t.key();
+            let fb = matches!(pous.get(&t), Some((PouKind::FunctionBlock, _)));
+            if fb
+                && (blocks.get(&t).is_some_and(|b| b.fb_init.is_some())
+                    || holds_instances(&t, pous, blocks, holds, visiting))
+            {
+                h = true;
+            }
+        }
+    }
+    visiting.remove(key);
+    holds.insert(key.to_string(), h);
+    h
+}
+
+/// The variable blocks whose instances are initialised: not VAR_IN_OUT, VAR_EXTERNAL (another
+/// POU's instance) or VAR_TEMP (made anew at each call).
+fn initialised(kind: VarKind) -> bool {
+    matches!(
+        kind,
+        VarKind::Local | VarKind::Input | VarKind::Output | VarKind::Global
+    )
+}
+
+/// The block type of an instance or of an array's elements.
+fn instance_type(ty: &TypeRef) -> Option<&Ident> {
+    match ty {
+        TypeRef::Named(n) => Some(n),
+        TypeRef::Array { element, .. } => match element.as_ref() {
+            TypeRef::Named(n) => Some(n),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// The E0329 of arguments that go nowhere.
+fn unplaced(a: &DeclArgs, message: String) -> Diagnostic {
+    Diagnostic::error(code::E0329, message)
+        .at(a.span)
+        .with_primary_label("FB_init arguments")
+        .with_label(a.ty, "instance type")
+        .with_hint(format!(
+            "the arguments go to the extra VAR_INPUTs of `{}`'s `METHOD FB_init` (after bInitRetains and bInCopyCode); or give the instance's inputs initial values: `: {} := (input := value);`",
+            a.ty_name, a.ty_name
+        ))
+}
+
+/// Builds the initialisation statements.
+struct Gen<'a, 'd, F: Fn(&str, &HashMap<String, bool>) -> bool> {
+    blocks: &'a HashMap<String, Block>,
+    holds: &'a HashMap<String, bool>,
+    needs: &'a F,
+    args: &'a mut HashMap<(crate::FileId, u32), (&'d DeclArgs, bool)>,
+    diags: &'a mut Diagnostics,
+}
+
+impl<F: Fn(&str, &HashMap<String, bool>) -> bool> Gen<'_, '_, F> {
+    /// The statements that initialise the instances declared in `blocks`, in declaration order.
+    fn members(&mut self, blocks: &[VarBlock]) -> Vec<Stmt> {
+        let mut out = Vec::new();
+        for b in blocks.iter().filter(|b| initialised(b.kind)) {
+            for v in &b.vars {
+                if v.name.name.starts_with("__") {
+                    continue;
+                }
+                let Some(t) = instance_type(&v.ty) else {
+                    continue;
+                };
+                let key = (t.span.file, t.span.start);
+                let args = self.args.get_mut(&key).map(|e| {
+                    e.1 = true;
+                    e.0
+                });
+                let needs = (self.needs)(&t.key(), self.holds);
+                let block = self.blocks.get(&t.key()).cloned().unwrap_or_default();
+                let base = Place {
+                    base: PlaceBase::Name(v.name.clone()),
+                    accessors: Vec::new(),
+                    span: v.name.span,
+                };
+                match &v.ty {
+                    TypeRef::Array { dims, .. } => {
+                        if let Some(a) = args {
+                            self.diags.push(unplaced(a, format!("FB_init arguments for an array of `{}` instances are not supported", a.ty_name)).with_note("each element's FB_init runs with the inputs' initial values"));
+                        }
+                        if !needs {
+                            continue;
+                        }
+                        let count = dims.iter().fold(1u128, |n, d| {
+                            n.saturating_mul((d.upper - d.lower + 1).max(0) as u128)
+                        });
+                        if count > MAX_ELEMENTS {
+                            self.diags.push(
+                                Diagnostic::error(
+                                    code::E0345,
+                                    format!(
+                                        "`{}` holds {count} instances of `{}` whose FB_init ladderc would run one by one",
+                                        v.name.name, t.name
+                                    ),
+                                )
+                                .at(v.name.span)
+                                .with_primary_label("too many instances to initialise")
+                                .with_hint(format!("ladderc initialises at most {MAX_ELEMENTS} elements of one array; split the array, or initialise the elements in the first cycle")),
+                            );
+                            continue;
+                        }
+                        let mut index: Vec<i128> = dims.iter().map(|d| d.lower).collect();
+                        if dims.iter().any(|d| d.upper < d.lower) {
+                            continue;
+                        }
+                        loop {
+                            let mut place = base.clone();
+                            place.accessors.push(Accessor::Index(
+                                index.iter().map(|&i| int(i, v.name.span)).collect(),
+                            ));
+                            self.instance(&place, t, &block, &[], &mut out);
+                            // the next index, last dimension fastest
+                            let mut d = dims.len();
+                            loop {
+                                if d == 0 {
+                                    break;
+                                }
+                                d -= 1;
+                                if index[d] < dims[d].upper {
+                                    index[d] += 1;
+                                    break;
+                                }
+                                index[d] = dims[d].lower;
+                                if d == 0 {
+                                    d = usize::MAX;
+                                    break;
+                                }
+                            }
+                            if d == usize::MAX || dims.is_empty() {
+                                break;
+                            }
+                        }
+                    }
+                    _ => {
+                        let given = match args {
+                            Some(a) if block.fb_init.is_none() => {
+                                self.diags.push(unplaced(
+                                    a,
+                                    format!(
+                                        "`{}` has no FB_init method to take these arguments",
+                                        a.ty_name
+                                    ),
+                                ));
+                                Vec::new()
+                            }
+                            Some(a) => self.bind(a, block.fb_init.as_deref().unwrap_or(&[])),
+                            None => Vec::new(),
+                        };
+                        if needs {
+                            self.instance(&base, t, &block, &given, &mut out);
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The declaration's arguments bound to FB_init's extra inputs by name: `(input, value)`.
+    fn bind(&mut self, a: &DeclArgs, inputs: &[String]) -> Vec<(String, Expr, Span)> {
+        let extra: Vec<&String> = inputs
+            .iter()
+            .filter(|i| !SYSTEM_INPUTS.iter().any(|s| s.eq_ignore_ascii_case(i)))
+            .collect();
+        let mut out = Vec::new();
+        let mut positional = extra.iter();
+        for arg in &a.args {
+            let param = match (&arg.dir, &arg.name) {
+                (ArgDir::Input, Some(n)) => extra.iter().find(|i| n.is(i)).map(|i| (*i).clone()),
+                (ArgDir::Input, None) => positional.next().map(|i| (*i).clone()),
+                (ArgDir::Output { .. }, _) => None,
+            };
+            match param {
+                Some(p) => out.push((p, arg.value.clone(), arg.span)),
+                None => {
+                    let what = match (&arg.dir, &arg.name) {
+                        (ArgDir::Output { .. }, _) => {
+                            "an output argument (`=>`) goes nowhere: FB_init has inputs only"
+                                .to_string()
+                        }
+                        (_, Some(n)) => format!(
+                            "argument `{}`: the FB_init method of `{}` has no such input",
+                            n.name, a.ty_name
+                        ),
+                        (_, None) => format!(
+                            "the FB_init method of `{}` takes {} argument(s) in a declaration",
+                            a.ty_name,
+                            extra.len()
+                        ),
+                    };
+                    self.diags.push(
+                        Diagnostic::error(code::E0329, what)
+                            .at(arg.span)
+                            .with_primary_label("no FB_init input for this argument")
+                            .with_label(a.ty, "instance type")
+                            .with_hint(if extra.is_empty() {
+                                "its FB_init has only bInitRetains and bInCopyCode, which the system sets".to_string()
+                            } else {
+                                format!(
+                                    "the inputs it takes: {}",
+                                    extra.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(", ")
+                                )
+                            }),
+                    );
+                }
+            }
+        }
+        out
+    }
+
+    /// The statements that initialise the instance at `place` of block `t`: its own instances,
+    /// its bases' FB_init, its FB_init (`given`: the declaration's arguments by input name).
+    fn instance(
+        &mut self,
+        place: &Place,
+        t: &Ident,
+        block: &Block,
+        given: &[(String, Expr, Span)],
+        out: &mut Vec<Stmt>,
+    ) {
+        let span = place.span;
+        if self.holds.get(&t.key()).copied().unwrap_or(false) {
+            out.push(call(place, ACTION, Vec::new(), span));
+        }
+        let versions = block
+            .bases
+            .iter()
+            .map(|(n, i)| (n.as_str(), i))
+            .chain(block.fb_init.iter().map(|i| ("FB_init", i)));
+        for (method, inputs) in versions {
+            let mut args = Vec::new();
+            for (k, sys) in SYSTEM_INPUTS.iter().enumerate() {
+                if let Some(i) = inputs.iter().find(|i| i.eq_ignore_ascii_case(sys)) {
+                    // a cold start: bInitRetains TRUE, bInCopyCode FALSE
+                    args.push(arg(i, boolean(k == 0, span), span));
+                }
+            }
+            for (name, value, at) in given {
+                if let Some(i) = inputs.iter().find(|i| i.eq_ignore_ascii_case(name)) {
+                    args.push(arg(i, value.clone(), *at));
+                }
+            }
+            out.push(call(place, method, args, span));
+        }
+    }
+}
+
+/// `place.method(args);`
+fn call(place: &Place, method: &str, args: Vec<Arg>, span: Span) -> Stmt {
+    let mut callee = place.clone();
+    callee
+        .accessors
+        .push(Accessor::Field(Ident::new(method, span)));
+    Stmt {
+        kind: StmtKind::Call { callee, args },
+        span,
+    }
+}
+
+fn arg(name: &str, value: Expr, span: Span) -> Arg {
+    Arg {
+        name: Some(Ident::new(name, span)),
+        dir: ArgDir::Input,
+        value,
+        span,
+    }
+}
+
+fn literal(kind: LiteralKind, span: Span) -> Expr {
+    Expr {
+        kind: ExprKind::Literal(Literal {
+            kind,
+            type_prefix: None,
+            span,
+        }),
+        span,
+    }
+}
+
+fn boolean(b: bool, span: Span) -> Expr {
+    literal(LiteralKind::Bool(b), span)
+}
+
+fn int(i: i128, span: Span) -> Expr {
+    literal(LiteralKind::Int(i), span)
+}
