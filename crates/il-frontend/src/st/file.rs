@@ -1549,6 +1549,7 @@ pub fn lower_method(
         own.push(VarBlock::locals(vec![r.clone()], r.span));
     }
     let mut rename: std::collections::HashMap<String, String> = Default::default();
+    let mut rename_back: Vec<(String, String)> = Vec::new();
     for v in own.iter().flat_map(|b| b.vars.iter()) {
         let new = if m.ret.as_ref().is_some_and(|r| r.name.key() == v.name.key()) {
             method_result(&m.name.name)
@@ -1567,7 +1568,11 @@ pub fn lower_method(
         b.vars.retain(|v| !rename.contains_key(&v.name.key()));
     }
     view.var_blocks.extend(own);
-    let stmts = super::parse_statements(file, &m.text, m.base, diags);
+    // `THIS^.x` where the method declares its own `x` (`THIS^.nId := nId;` in an FB_init): the
+    // block's variable, read in the text as a hidden name of the same length that the view declares
+    // and the renaming below turns back into `x`
+    let text = this_shadowed(&m.text, p, &rename, &mut view, &mut rename_back);
+    let stmts = super::parse_statements(file, &text, m.base, diags);
     let mut low = super::PouLowering::new(decls, &view);
     let mut body = low.statements(&stmts, diags);
     if let Some(t) = low.finish(m.name.span) {
@@ -1584,6 +1589,7 @@ pub fn lower_method(
         t.kind = VarKind::Temp;
         p.var_blocks.push(t);
     }
+    rename.extend(rename_back);
     crate::rename::Renames {
         bases: rename,
         ..Default::default()
@@ -1608,6 +1614,63 @@ pub fn lower_method(
         method_inputs: Some(inputs),
         diagnostics: Vec::new(),
     })
+}
+
+/// The prefix of the hidden name that reads `THIS^.x` in a method that declares its own `x`: as
+/// long as `THIS^.`, so that positions do not move.
+const THIS_PREFIX: &str = "__THS_";
+
+/// `text` (a method's statements) with each `THIS^.x`, where `x` is a variable of the block `p`
+/// that the method's own `x` shadows (`rename` holds the method's names), written `__THS_x`; `view`
+/// declares `__THS_x` as the block's `x`, and `back` maps it to `x` for the renaming after the
+/// lowering.
+fn this_shadowed(
+    text: &str,
+    p: &crate::ast::Pou,
+    rename: &std::collections::HashMap<String, String>,
+    view: &mut crate::ast::Pou,
+    back: &mut Vec<(String, String)>,
+) -> String {
+    if !text.contains('^') {
+        return text.to_string();
+    }
+    let (toks, _) = lex(text);
+    let mut out = text.to_string();
+    for w in toks.windows(4) {
+        if !(is_word(text, &w[0], "THIS")
+            && w[1].tok == Tok::Caret
+            && w[2].tok == Tok::Dot
+            && w[3].tok == Tok::Ident)
+        {
+            continue;
+        }
+        let x = word(text, &w[3]);
+        let key = x.to_ascii_uppercase();
+        if !rename.contains_key(&key) {
+            continue;
+        }
+        let Some(v) = p
+            .var_blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .find(|v| v.name.key() == key)
+        else {
+            continue;
+        };
+        let hidden = format!("{THIS_PREFIX}{x}");
+        if w[3].range.end - w[0].range.start != hidden.len() {
+            continue;
+        }
+        out.replace_range(w[0].range.start..w[3].range.end, &hidden);
+        if !back.iter().any(|(k, _)| *k == hidden.to_ascii_uppercase()) {
+            back.push((hidden.to_ascii_uppercase(), v.name.name.clone()));
+            let mut decl = v.clone();
+            decl.name.name = hidden;
+            view.var_blocks
+                .push(crate::ast::VarBlock::locals(vec![decl], v.span));
+        }
+    }
+    out
 }
 
 #[cfg(test)]

@@ -1,0 +1,151 @@
+//! CODESYS's and TwinCAT's FB_init (issue #13), run end to end through `ladderc run` on files
+//! written for these tests (`fixtures/fb_init/`): every instance's FB_init runs once before the
+//! first cycle, with `bInitRetains = TRUE, bInCopyCode = FALSE` (a cold start) and the arguments
+//! of its declaration (`fb : FB_X(nId := 1)`, positional or named); instances in a global list, a
+//! program, an array, and inside another block (inner first); for a derived block its bases'
+//! FB_init first; `THIS^.x` inside FB_init is the block's `x` where an input has the same name.
+//! FB_exit and FB_reinit are never called (note W0345). Arguments that go nowhere are one E0329
+//! each; a huge array of such instances is E0345.
+
+mod common;
+use common::{check_text, column, rejected_heads, run_traced, run_traced_files};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/fb_init")
+        .join(rel)
+}
+
+/// `instances.st`: the global `gCounter` first (id 1), then MAIN's `fbMain` (2), `fbPair`'s inner
+/// `fbLeft` (3) and `fbRight` (4) before `fbPair` itself (5), then the three array elements (id 0):
+/// the log reads 1 2 3 4 5 0 0 0 before the first cycle and never changes.
+#[test]
+fn every_instance_runs_its_fb_init_once_before_the_first_cycle() {
+    let (trace, stderr) = run_traced(
+        &fixture("instances.st"),
+        3,
+        "nLog,gCounter.nValue,gCounter.nInits,MAIN.fbMain.nValue,MAIN.fbMain.nInits,\
+         MAIN.fbMain.nId,MAIN.fbMain.bRetains,MAIN.fbMain.bCopy,MAIN.fbMain.nStepSeen,MAIN.nFirst,\
+         MAIN.fbPair.nSum,MAIN.fbPair.fbLeft.nValue,MAIN.fbPair.fbRight.nValue,\
+         MAIN.fbPair.fbRight.nId,MAIN.aCounters[1].nInits,MAIN.aCounters[3].nInits,\
+         MAIN.aCounters[2].nValue",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "nLog"), [12345000.0; 3]);
+    // the global instance: nStart := 100, then one step per cycle
+    assert_eq!(column(&trace, "gCounter.nValue"), [101.0, 102.0, 103.0]);
+    assert_eq!(column(&trace, "gCounter.nInits"), [1.0; 3]);
+    // named arguments in another order than FB_init's inputs; THIS^.nId is the block's nId
+    assert_eq!(column(&trace, "MAIN.fbMain.nId"), [2.0; 3]);
+    assert_eq!(column(&trace, "MAIN.nFirst"), [7.0; 3]);
+    assert_eq!(column(&trace, "MAIN.fbMain.nValue"), [9.0, 11.0, 13.0]);
+    assert_eq!(column(&trace, "MAIN.fbMain.nInits"), [1.0; 3]);
+    // a cold start, after the initial values (bCopy starts TRUE, nStep := 1)
+    assert_eq!(column(&trace, "MAIN.fbMain.bRetains"), [1.0; 3]);
+    assert_eq!(column(&trace, "MAIN.fbMain.bCopy"), [0.0; 3]);
+    assert_eq!(column(&trace, "MAIN.fbMain.nStepSeen"), [1.0; 3]);
+    // the inner instances (positional arguments for fbRight) before the outer block's FB_init
+    assert_eq!(column(&trace, "MAIN.fbPair.nSum"), [70.0; 3]);
+    assert_eq!(
+        column(&trace, "MAIN.fbPair.fbLeft.nValue"),
+        [31.0, 32.0, 33.0]
+    );
+    assert_eq!(
+        column(&trace, "MAIN.fbPair.fbRight.nValue"),
+        [41.0, 42.0, 43.0]
+    );
+    assert_eq!(column(&trace, "MAIN.fbPair.fbRight.nId"), [4.0; 3]);
+    // every element of the array, without arguments
+    assert_eq!(column(&trace, "MAIN.aCounters[1].nInits"), [1.0; 3]);
+    assert_eq!(column(&trace, "MAIN.aCounters[3].nInits"), [1.0; 3]);
+    assert_eq!(column(&trace, "MAIN.aCounters[2].nValue"), [1.0, 2.0, 3.0]);
+}
+
+/// `extends.st`, under a configuration: FB_Mid inherits FB_Base's FB_init (trace 1); FB_Top runs
+/// FB_Base's then its own (trace 13); FB_Base's version got `nAxis` (7) before FB_Top's read it.
+#[test]
+fn a_derived_blocks_bases_run_their_fb_init_first() {
+    let (trace, stderr) = run_traced(
+        &fixture("extends.st"),
+        2,
+        "cell1.fbMid.nTrace,cell1.fbMid.nAxis,cell1.fbTop.nTrace,cell1.fbTop.nAxis,\
+         cell1.fbTop.nGear,cell1.fbTop.nCalls",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "cell1.fbMid.nTrace"), [1.0, 1.0]);
+    assert_eq!(column(&trace, "cell1.fbMid.nAxis"), [4.0, 4.0]);
+    assert_eq!(column(&trace, "cell1.fbTop.nTrace"), [13.0, 13.0]);
+    assert_eq!(column(&trace, "cell1.fbTop.nAxis"), [7.0, 7.0]);
+    assert_eq!(column(&trace, "cell1.fbTop.nGear"), [21.0, 21.0]);
+    assert_eq!(column(&trace, "cell1.fbTop.nCalls"), [1.0, 2.0]);
+}
+
+/// TwinCAT objects: the `<Method Name="FB_init">` of a `.TcPOU` runs with the declaration's
+/// argument (the valve stops at 30); its FB_exit is never called, which a note says.
+#[test]
+fn twincat_fb_init_runs_and_fb_exit_is_a_note() {
+    let files = [
+        fixture("twincat/FB_Valve.TcPOU"),
+        fixture("twincat/MAIN.TcPOU"),
+    ];
+    let files: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
+    let (trace, stderr) = run_traced_files(&files, 4, "MAIN.fbValve.nPosition,MAIN.fbValve.nMax");
+    assert_eq!(column(&trace, "MAIN.fbValve.nMax"), [30.0; 4]);
+    assert_eq!(
+        column(&trace, "MAIN.fbValve.nPosition"),
+        [10.0, 20.0, 30.0, 30.0]
+    );
+    let notes: Vec<&str> = stderr.lines().filter(|l| l.contains("[W0345]")).collect();
+    assert_eq!(notes.len(), 1, "{stderr}");
+    assert!(
+        notes[0].contains("FB_Valve.TcPOU:35:")
+            && notes[0].contains("`FB_Valve.FB_exit` is never called in a simulation"),
+        "{stderr}"
+    );
+}
+
+const FB_X: &str = "FUNCTION_BLOCK FB_X\nVAR a : INT; END_VAR\nMETHOD FB_init : BOOL\n\
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; nSize : INT; END_VAR\na := nSize;\nEND_METHOD\n\
+END_FUNCTION_BLOCK\nFUNCTION_BLOCK FB_Plain\nVAR a : INT; END_VAR\nEND_FUNCTION_BLOCK\n";
+
+/// Each argument list, or argument, with no FB_init input to go to is one E0329 at it: a name
+/// FB_init does not have, one positional argument too many, a block without FB_init (also a
+/// standard block), an array of instances; an array of more than 4096 instances to initialise is
+/// E0345. The instances without such problems still compile (checked by the run below).
+#[test]
+fn arguments_that_go_nowhere_are_one_e0329_each() {
+    let src = format!(
+        "{FB_X}PROGRAM Main\nVAR\n  x : FB_X(nSiz := 5);\n  y : FB_X(1, 2);\n  z : FB_Plain(3);\n  \
+         w : ARRAY[1..2] OF FB_X(4);\n  t : TON(1);\n  big : ARRAY[1..5000] OF FB_X;\n  \
+         ok : FB_X(nSize := 6);\nEND_VAR\nEND_PROGRAM\n"
+    );
+    assert_eq!(
+        rejected_heads("args.st", &src),
+        [
+            "args.st:13:12: error[E0329]: argument `nSiz`: the FB_init method of `FB_X` has no such input",
+            "args.st:14:15: error[E0329]: the FB_init method of `FB_X` takes 1 argument(s) in a declaration",
+            "args.st:15:15: error[E0329]: `FB_Plain` has no FB_init method to take these arguments",
+            "args.st:16:26: error[E0329]: FB_init arguments for an array of `FB_X` instances are not supported",
+            "args.st:17:10: error[E0329]: `TON` has no FB_init method to take these arguments",
+            "args.st:18:3: error[E0345]: `big` holds 5000 instances of `FB_X` whose FB_init ladderc would run one by one",
+        ]
+    );
+    // the one right declaration alone runs
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("ok.st");
+    std::fs::write(
+        &f,
+        format!("{FB_X}PROGRAM Main\nVAR ok : FB_X(nSize := 6); END_VAR\nEND_PROGRAM\n"),
+    )
+    .unwrap();
+    let (trace, _) = run_traced(&f, 1, "Main.ok.a");
+    assert_eq!(column(&trace, "Main.ok.a"), [6.0]);
+    // a block without FB_init and without arguments is untouched
+    let (code, lines) = check_text(
+        "plain.st",
+        &format!("{FB_X}PROGRAM Main\nVAR p : FB_Plain; END_VAR\nEND_PROGRAM\n"),
+    );
+    assert_eq!(code, Some(0), "{lines:?}");
+}
