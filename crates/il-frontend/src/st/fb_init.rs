@@ -58,9 +58,12 @@ struct Block {
 }
 
 /// See the module documentation. `pending` holds the FB_init arguments of every file.
+/// `declared`: the blocks (upper-case names) whose text declares an FB_init, also those that are
+/// not compiled (their own error is reported: arguments for their instances are no E0329 more).
 pub fn add_init_calls(
     units: &mut [CompilationUnit],
     pending: &[PendingBody],
+    declared: &HashSet<String>,
     decls: &mut super::Declarations,
     diags: &mut Diagnostics,
 ) {
@@ -117,6 +120,21 @@ pub fn add_init_calls(
         );
     }
     let has_fb_init = blocks.values().any(|b| b.fb_init.is_some());
+    // a type whose missing FB_init is worth an E0329: a block of the project whose text has none,
+    // or a standard block (an unknown type, or a block not compiled, has its own error)
+    let project_fbs: HashSet<String> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|i| match i {
+            LibraryElement::Pou(p) if p.kind == PouKind::FunctionBlock => Some(p.name.key()),
+            _ => None,
+        })
+        .collect();
+    let reportable = |t: &str| {
+        let key = t.to_ascii_uppercase();
+        (project_fbs.contains(&key) && !declared.contains(&key))
+            || crate::sema::StdFb::from_name(&key).is_some()
+    };
     if !has_fb_init && args.is_empty() {
         return;
     }
@@ -140,6 +158,7 @@ pub fn add_init_calls(
                 || holds.get(t).copied().unwrap_or(false))
     };
     let mut gen = Gen {
+        reportable: &reportable,
         blocks: &blocks,
         holds: &holds,
         needs: &needs,
@@ -184,6 +203,10 @@ pub fn add_init_calls(
         let has = blocks
             .get(&a.ty_name.to_ascii_uppercase())
             .is_some_and(|b| b.fb_init.is_some());
+        if !has && !reportable(&a.ty_name) {
+            // (an unknown type, or a block not compiled: their own error is reported)
+            continue;
+        }
         let message = if has {
             format!("this instance of `{}` is not one ladderc initialises (only the instances in programs, function blocks and global lists are)", a.ty_name)
         } else {
@@ -371,6 +394,7 @@ fn unplaced(a: &DeclArgs, message: String) -> Diagnostic {
 
 /// Builds the initialisation statements.
 struct Gen<'a, 'd, F: Fn(&str, &HashMap<String, bool>) -> bool> {
+    reportable: &'a dyn Fn(&str) -> bool,
     blocks: &'a HashMap<String, Block>,
     holds: &'a HashMap<String, bool>,
     needs: &'a F,
@@ -462,6 +486,9 @@ impl<F: Fn(&str, &HashMap<String, bool>) -> bool> Gen<'_, '_, F> {
                     }
                     _ => {
                         let given = match args {
+                            Some(_) if block.fb_init.is_none() && !(self.reportable)(&t.name) => {
+                                Vec::new()
+                            }
                             Some(a) if block.fb_init.is_none() => {
                                 self.diags.push(unplaced(
                                     a,

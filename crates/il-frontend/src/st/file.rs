@@ -1294,6 +1294,25 @@ pub fn compile_pending(
     if pending.is_empty() {
         return;
     }
+    // the blocks whose text declares an FB_init (before a block that is not compiled loses it)
+    let declares_fb_init: std::collections::HashSet<String> = pending
+        .iter()
+        .filter(|pb| pb.methods.iter().any(|m| m.name.is("FB_init")))
+        .filter_map(|pb| {
+            units
+                .iter()
+                .flat_map(|u| u.items.iter())
+                .find_map(|i| match i {
+                    LibraryElement::Pou(p)
+                        if p.name.span.file == pb.file
+                            && p.name.span.start as usize == pb.name_start =>
+                    {
+                        Some(p.name.key())
+                    }
+                    _ => None,
+                })
+        })
+        .collect();
     // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
     let flat;
     let pending = match super::inherit::flatten(units, pending, diags) {
@@ -1399,7 +1418,7 @@ pub fn compile_pending(
         }
     }
     // FB_init: each instance's, before the first cycle, with its declaration's arguments
-    super::fb_init::add_init_calls(units, pending, &mut decls, diags);
+    super::fb_init::add_init_calls(units, pending, &declares_fb_init, &mut decls, diags);
     let seen: std::collections::HashSet<_> = diags
         .iter()
         .map(|d| (d.code, d.message.clone(), d.span.map(|s| (s.start, s.end))))
