@@ -5,7 +5,8 @@
 //! program, an array, and inside another block (inner first); for a derived block its bases'
 //! FB_init first; `THIS^.x` inside FB_init is the block's `x` where an input has the same name.
 //! FB_exit and FB_reinit are never called (note W0345). Arguments that go nowhere are one E0329
-//! each; a huge array of such instances is E0345.
+//! each; a huge array of such instances is E0345. METHODs and PROPERTYs of a PROGRAM run on its one
+//! instance, called inside it or as `PRG.M(x)` from another POU (also of another TwinCAT object).
 
 mod common;
 use common::{check_text, column, rejected_heads, run_traced, run_traced_files};
@@ -83,15 +84,23 @@ fn a_derived_blocks_bases_run_their_fb_init_first() {
 }
 
 /// TwinCAT objects: the `<Method Name="FB_init">` of a `.TcPOU` runs with the declaration's
-/// argument (the valve stops at 30); its FB_exit is never called, which a note says.
+/// argument (the valve stops at 30); its FB_exit is never called, which a note says; MAIN calls
+/// the method of a program of another object file (`PRG_Counter.Bump(nBy := 2)`).
 #[test]
 fn twincat_fb_init_runs_and_fb_exit_is_a_note() {
     let files = [
         fixture("twincat/FB_Valve.TcPOU"),
         fixture("twincat/MAIN.TcPOU"),
+        fixture("twincat/PRG_Counter.TcPOU"),
     ];
     let files: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
-    let (trace, stderr) = run_traced_files(&files, 4, "MAIN.fbValve.nPosition,MAIN.fbValve.nMax");
+    let (trace, stderr) = run_traced_files(
+        &files,
+        4,
+        "MAIN.fbValve.nPosition,MAIN.fbValve.nMax,MAIN.nBumped,PRG_Counter.nCount",
+    );
+    assert_eq!(column(&trace, "MAIN.nBumped"), [2.0, 4.0, 6.0, 8.0]);
+    assert_eq!(column(&trace, "PRG_Counter.nCount"), [2.0, 4.0, 6.0, 8.0]);
     assert_eq!(column(&trace, "MAIN.fbValve.nMax"), [30.0; 4]);
     assert_eq!(
         column(&trace, "MAIN.fbValve.nPosition"),
@@ -103,6 +112,39 @@ fn twincat_fb_init_runs_and_fb_exit_is_a_note() {
         notes[0].contains("FB_Valve.TcPOU:35:")
             && notes[0].contains("`FB_Valve.FB_exit` is never called in a simulation"),
         "{stderr}"
+    );
+}
+
+/// `program_methods.st`: PRG_Tank drains itself through its own method `Drain(1)`; PRG_Pump
+/// fills it through `PRG_Tank.Fill(nAmount := 30)` (the result is the room left) and, once full,
+/// lowers its limit through the property `PRG_Tank.Limit := 50` (read back as `nSeen`).
+#[test]
+fn methods_and_properties_of_a_program_run_on_its_one_instance() {
+    let (trace, stderr) = run_traced(
+        &fixture("program_methods.st"),
+        6,
+        "PRG_Tank.nLevel,PRG_Tank.nFills,PRG_Tank.nLimit,PRG_Pump.nRoom,PRG_Pump.nSeen",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        column(&trace, "PRG_Tank.nLevel"),
+        [30.0, 59.0, 88.0, 100.0, 50.0, 50.0]
+    );
+    assert_eq!(
+        column(&trace, "PRG_Tank.nFills"),
+        [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
+    );
+    assert_eq!(
+        column(&trace, "PRG_Pump.nRoom"),
+        [70.0, 41.0, 12.0, 0.0, 0.0, 0.0]
+    );
+    assert_eq!(
+        column(&trace, "PRG_Tank.nLimit"),
+        [100.0, 100.0, 100.0, 50.0, 50.0, 50.0]
+    );
+    assert_eq!(
+        column(&trace, "PRG_Pump.nSeen"),
+        [100.0, 100.0, 100.0, 100.0, 50.0, 50.0]
     );
 }
 

@@ -415,7 +415,9 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     })
                     .map(|t| t.range.clone());
                 let body_toks = &toks[first..j.min(n - 1)];
-                let (methods, properties) = if w == "FUNCTION_BLOCK" {
+                // (a PROGRAM's methods and properties too, CODESYS and TwinCAT: `PRG.M(x)` from
+                // another POU runs on the program's one instance, see `crate::actions`)
+                let (methods, properties) = if w == "FUNCTION_BLOCK" || w == "PROGRAM" {
                     (
                         scan_methods(src, body_toks),
                         super::property::scan_properties(src, body_toks),

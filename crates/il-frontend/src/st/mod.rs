@@ -23,7 +23,7 @@ mod list_bounds;
 pub mod lower;
 pub mod parser;
 pub mod property;
-mod qualifiers;
+pub mod qualifiers;
 pub mod refs;
 mod scl;
 pub mod sfc;
