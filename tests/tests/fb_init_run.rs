@@ -7,6 +7,7 @@
 //! FB_exit and FB_reinit are never called (note W0345). Arguments that go nowhere are one E0329
 //! each; a huge array of such instances is E0345. METHODs and PROPERTYs of a PROGRAM run on its one
 //! instance, called inside it or as `PRG.M(x)` from another POU (also of another TwinCAT object).
+//! `{attribute 'call_after_init'}` methods run after FB_init and the structured initial values.
 
 mod common;
 use common::{check_text, column, rejected_heads, run_traced, run_traced_files};
@@ -145,6 +146,57 @@ fn methods_and_properties_of_a_program_run_on_its_one_instance() {
     assert_eq!(
         column(&trace, "PRG_Pump.nSeen"),
         [100.0, 100.0, 100.0, 100.0, 50.0, 50.0]
+    );
+}
+
+/// `after_init.st`: FB_init sets a default setpoint; the declaration's structured initial value
+/// (`:= (nSetpoint := 180)`) is set again after FB_init; then the call_after_init method runs and
+/// finds it (180; 20 where the declaration gives none); order 1 then 2, once each.
+#[test]
+fn call_after_init_methods_run_after_fb_init_and_the_initial_values() {
+    let (trace, stderr) = run_traced(
+        &fixture("after_init.st"),
+        2,
+        "MAIN.fbOven.nSetpoint,MAIN.fbOven.nChecked,MAIN.fbOven.nOrder,MAIN.fbOven.nDefaults,\
+         MAIN.fbRoom.nSetpoint,MAIN.fbRoom.nChecked,MAIN.fbRoom.nOrder",
+    );
+    assert!(
+        !stderr.contains("error") && !stderr.contains("W0301"),
+        "{stderr}"
+    );
+    assert_eq!(column(&trace, "MAIN.fbOven.nSetpoint"), [180.0; 2]);
+    assert_eq!(column(&trace, "MAIN.fbOven.nChecked"), [180.0; 2]);
+    assert_eq!(column(&trace, "MAIN.fbOven.nOrder"), [12.0; 2]);
+    assert_eq!(column(&trace, "MAIN.fbOven.nDefaults"), [1.0; 2]);
+    assert_eq!(column(&trace, "MAIN.fbRoom.nSetpoint"), [20.0; 2]);
+    assert_eq!(column(&trace, "MAIN.fbRoom.nChecked"), [20.0; 2]);
+    assert_eq!(column(&trace, "MAIN.fbRoom.nOrder"), [12.0; 2]);
+}
+
+/// A call_after_init method with an input is E0346; one marked in a block without the attribute
+/// is W0346 and not called.
+#[test]
+fn a_call_after_init_method_with_inputs_or_alone_is_located() {
+    let with_input = "{attribute 'call_after_init'}\nFUNCTION_BLOCK FB_A\nVAR n : INT; END_VAR\n\
+{attribute 'call_after_init'}\nMETHOD Prepare\nVAR_INPUT k : INT; END_VAR\nn := k;\nEND_METHOD\n\
+END_FUNCTION_BLOCK\nPROGRAM Main\nVAR a : FB_A; END_VAR\nEND_PROGRAM\n";
+    assert_eq!(
+        rejected_heads("ai.st", with_input),
+        ["ai.st:5:8: error[E0346]: method `Prepare` of `FB_A` is marked call_after_init but has inputs"]
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("alone.st");
+    std::fs::write(
+        &f,
+        "FUNCTION_BLOCK FB_A\nVAR n : INT; END_VAR\n{attribute 'call_after_init'}\nMETHOD Prepare\n\
+n := 5;\nEND_METHOD\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR a : FB_A; END_VAR\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced(&f, 1, "Main.a.n");
+    assert_eq!(column(&trace, "Main.a.n"), [0.0]);
+    assert!(
+        stderr.contains("alone.st:4:8: warning[W0346]: method `Prepare` is marked call_after_init, but `FB_A` is not"),
+        "{stderr}"
     );
 }
 

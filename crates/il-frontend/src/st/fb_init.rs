@@ -30,8 +30,8 @@ use super::fb_init_args::DeclArgs;
 use super::file::PendingBody;
 use super::types::MethodSig;
 use crate::ast::{
-    Action, CompilationUnit, Ident, LibraryElement, Literal, LiteralKind, Pou, PouKind, TypeRef,
-    VarBlock, VarKind,
+    Action, CompilationUnit, Ident, Initializer, LibraryElement, Literal, LiteralKind, Operand,
+    Pou, PouKind, TypeRef, VarBlock, VarKind,
 };
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
@@ -55,6 +55,18 @@ struct Block {
     bases: Vec<(String, Vec<String>)>,
     /// Its FB_init's inputs (its own, or the nearest base's).
     fb_init: Option<Vec<String>>,
+    /// Its methods marked `{attribute 'call_after_init'}` (with the block): run after FB_init.
+    after_init: Vec<String>,
+    /// Its VAR_INPUT names (upper case): a declaration's structured initial value of one is set
+    /// again after FB_init.
+    inputs: HashSet<String>,
+}
+
+impl Block {
+    /// Whether an instance runs anything when it is initialised.
+    fn runs(&self) -> bool {
+        self.fb_init.is_some() || !self.after_init.is_empty()
+    }
 }
 
 /// See the module documentation. `pending` holds the FB_init arguments of every file.
@@ -100,6 +112,55 @@ pub fn add_init_calls(
         // `__S000_...` before `__S001_...`: root first
         b.bases.sort();
     }
+    // `{attribute 'call_after_init'}` methods: no inputs (CODESYS, TwinCAT: a compile error)
+    for pb in pending.iter().filter(|pb| !pb.after_init.is_empty()) {
+        let Some(pou) = units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .find_map(|i| match i {
+                LibraryElement::Pou(p)
+                    if p.name.span.file == pb.file
+                        && p.name.span.start as usize == pb.name_start =>
+                {
+                    Some(p.name.clone())
+                }
+                _ => None,
+            })
+        else {
+            continue;
+        };
+        for m in &pb.after_init {
+            let inputs = units
+                .iter()
+                .flat_map(|u| u.items.iter())
+                .find_map(|i| match i {
+                    LibraryElement::Action(a) if a.pou.is(&pou.name) && a.name.is(&m.name) => {
+                        a.method_inputs.as_ref().map(Vec::len)
+                    }
+                    _ => None,
+                });
+            match inputs {
+                Some(0) => blocks
+                    .entry(pou.key())
+                    .or_default()
+                    .after_init
+                    .push(m.name.clone()),
+                Some(_) => diags.push(
+                    Diagnostic::error(
+                        code::E0346,
+                        format!(
+                            "method `{}` of `{}` is marked call_after_init but has inputs",
+                            m.name, pou.name
+                        ),
+                    )
+                    .at(m.span)
+                    .with_primary_label("called after initialisation, without arguments")
+                    .with_hint("a call_after_init method runs with no arguments (CODESYS and TwinCAT refuse its VAR_INPUTs too): read what it needs from the block's variables"),
+                ),
+                None => {}
+            }
+        }
+    }
     for (pou, m) in never_called {
         diags.push(
             Diagnostic::new(
@@ -119,7 +180,20 @@ pub fn add_init_calls(
             }),
         );
     }
-    let has_fb_init = blocks.values().any(|b| b.fb_init.is_some());
+    let has_fb_init = blocks.values().any(Block::runs);
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::Pou(p) = item {
+            if let Some(b) = blocks.get_mut(&p.name.key()) {
+                b.inputs = p
+                    .var_blocks
+                    .iter()
+                    .filter(|b| b.kind == VarKind::Input)
+                    .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+                    .filter(|n| !n.starts_with("__"))
+                    .collect();
+            }
+        }
+    }
     // a type whose missing FB_init is worth an E0329: a block of the project whose text has none,
     // or a standard block (an unknown type, or a block not compiled, has its own error)
     let project_fbs: HashSet<String> = units
@@ -154,8 +228,7 @@ pub fn add_init_calls(
     }
     let needs = |t: &str, holds: &HashMap<String, bool>| {
         matches!(pous.get(t), Some((PouKind::FunctionBlock, _)))
-            && (blocks.get(t).is_some_and(|b| b.fb_init.is_some())
-                || holds.get(t).copied().unwrap_or(false))
+            && (blocks.get(t).is_some_and(Block::runs) || holds.get(t).copied().unwrap_or(false))
     };
     let mut gen = Gen {
         reportable: &reportable,
@@ -347,7 +420,7 @@ fn holds_instances(
             let t = t.key();
             let fb = matches!(pous.get(&t), Some((PouKind::FunctionBlock, _)));
             if fb
-                && (blocks.get(&t).is_some_and(|b| b.fb_init.is_some())
+                && (blocks.get(&t).is_some_and(Block::runs)
                     || holds_instances(&t, pous, blocks, holds, visiting))
             {
                 h = true;
@@ -462,6 +535,7 @@ impl<F: Fn(&str, &HashMap<String, bool>) -> bool> Gen<'_, '_, F> {
                                 index.iter().map(|&i| int(i, v.name.span)).collect(),
                             ));
                             self.instance(&place, t, &block, &[], &mut out);
+                            self.initial_inputs(&place, &block, None, &mut out);
                             // the next index, last dimension fastest
                             let mut d = dims.len();
                             loop {
@@ -504,6 +578,7 @@ impl<F: Fn(&str, &HashMap<String, bool>) -> bool> Gen<'_, '_, F> {
                         };
                         if needs {
                             self.instance(&base, t, &block, &given, &mut out);
+                            self.initial_inputs(&base, &block, v.init.as_ref(), &mut out);
                         }
                     }
                 }
@@ -599,6 +674,131 @@ impl<F: Fn(&str, &HashMap<String, bool>) -> bool> Gen<'_, '_, F> {
             out.push(call(place, method, args, span));
         }
     }
+
+    /// After FB_init, the inputs a declaration's structured initial value sets (`fb : FB_X :=
+    /// (in1 := 99)`) get that value again, then the call_after_init methods run: the order the
+    /// CODESYS help shows (`fbDoIt.FB_Init(); fbDoIt.in1 := 99; fbDoIt.FB_AfterInit();`); ladderc
+    /// sets initial values before FB_init too, so FB_init sees them where CODESYS shows the
+    /// default. Only literal, enumerated and plain-name values of inputs are set again.
+    fn initial_inputs(
+        &mut self,
+        place: &Place,
+        block: &Block,
+        init: Option<&Initializer>,
+        out: &mut Vec<Stmt>,
+    ) {
+        let span = place.span;
+        if let (Some(Initializer::Struct(fields, _)), Some(_)) = (init, &block.fb_init) {
+            for (field, value) in fields {
+                if !block.inputs.contains(&field.key()) {
+                    continue;
+                }
+                let Initializer::Value(op) = value else {
+                    continue;
+                };
+                let kind = match op {
+                    Operand::Literal(l) => ExprKind::Literal((**l).clone()),
+                    Operand::EnumValue(e) => ExprKind::EnumValue {
+                        type_name: e.type_name.clone(),
+                        value: e.value.clone(),
+                    },
+                    Operand::Var(r) if r.accessors.is_empty() => ExprKind::Place(Place {
+                        base: PlaceBase::Name(r.base.clone()),
+                        accessors: Vec::new(),
+                        span: r.span,
+                    }),
+                    _ => continue,
+                };
+                let mut target = place.clone();
+                target.accessors.push(Accessor::Field(field.clone()));
+                out.push(Stmt {
+                    kind: StmtKind::Assign {
+                        target,
+                        value: Expr {
+                            kind,
+                            span: field.span,
+                        },
+                    },
+                    span: field.span,
+                });
+            }
+        }
+        for m in &block.after_init {
+            out.push(call(place, m, Vec::new(), span));
+        }
+    }
+}
+
+/// Whether a pragma is `{attribute 'call_after_init'}` (applied, so not reported as ignored).
+pub fn is_call_after_init(pragma: &str) -> bool {
+    let p = pragma.to_ascii_lowercase();
+    p.contains("attribute") && p.contains("'call_after_init'")
+}
+
+/// Whether the text before `at` (a keyword) ends with a `{attribute 'call_after_init'}`, among
+/// the pragmas written just above it.
+fn marked_before(src: &str, at: usize) -> bool {
+    let mut t = src.get(..at).unwrap_or("").trim_end();
+    while t.ends_with('}') {
+        let Some(open) = t.rfind('{') else {
+            return false;
+        };
+        if is_call_after_init(&t[open..]) {
+            return true;
+        }
+        t = t[..open].trim_end();
+    }
+    false
+}
+
+/// The methods of the function block `p` that `{attribute 'call_after_init'}` marks, the block
+/// marked too (Beckhoff, CODESYS: the attribute goes on both; a method marked in a block that is
+/// not is W0346, not called).
+pub(super) fn after_init_methods(
+    file: crate::FileId,
+    src: &str,
+    p: &super::file::PouText,
+    diags: &mut Diagnostics,
+) -> Vec<Ident> {
+    let marked: Vec<&super::file::MethodText> = p
+        .methods
+        .iter()
+        .filter(|m| marked_before(src, m.whole.start))
+        .collect();
+    if marked.is_empty() {
+        return Vec::new();
+    }
+    // the keyword before the name (and its modifier)
+    let mut lo = p.name_range.start.saturating_sub(200);
+    while !src.is_char_boundary(lo) {
+        lo -= 1;
+    }
+    let head = src.get(lo..p.name_range.start).unwrap_or("");
+    let Some(k) = head.to_ascii_uppercase().rfind("FUNCTION_BLOCK") else {
+        return Vec::new();
+    };
+    let block = marked_before(src, lo + k);
+    let mut out = Vec::new();
+    for m in marked {
+        let span = Span::new(file, m.name_range.start, m.name_range.end);
+        if block {
+            out.push(Ident::new(&m.name, span));
+        } else {
+            diags.push(
+                Diagnostic::warning(
+                    code::W0346,
+                    format!(
+                        "method `{}` is marked call_after_init, but `{}` is not: it is not called after initialisation",
+                        m.name, p.name
+                    ),
+                )
+                .at(span)
+                .with_primary_label("not called implicitly")
+                .with_hint(format!("CODESYS and TwinCAT need the attribute on the block too: write {{attribute 'call_after_init'}} above FUNCTION_BLOCK {}", p.name)),
+            );
+        }
+    }
+    out
 }
 
 /// `place.method(args);`

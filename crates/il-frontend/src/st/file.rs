@@ -144,6 +144,9 @@ pub struct PendingBody {
     /// by one body of the file that is no POU's (`name_start` is `usize::MAX`, no text): matched
     /// with the blocks' FB_init inputs by [`super::fb_init`] once every file is read.
     pub fb_init_args: Vec<super::fb_init_args::DeclArgs>,
+    /// The methods that `{attribute 'call_after_init'}` marks (on the method and on the block):
+    /// run after each instance's FB_init ([`super::fb_init`]).
+    pub after_init: Vec<crate::ast::Ident>,
 }
 
 impl PendingBody {
@@ -928,10 +931,10 @@ pub fn parse_text(
                 .iter()
                 .any(|p| p.body.start <= r.start && r.end <= p.body.end)
             {
-                diags.push(pragma_diagnostic(
-                    src.get(r.clone()).unwrap_or("{}"),
-                    Span::new(file, r.start, r.end),
-                ));
+                let pragma = src.get(r.clone()).unwrap_or("{}");
+                if !super::fb_init::is_call_after_init(pragma) {
+                    diags.push(pragma_diagnostic(pragma, Span::new(file, r.start, r.end)));
+                }
                 blank(&mut text, r.clone());
             }
         }
@@ -956,6 +959,7 @@ pub fn parse_text(
                     file, src, p, methods,
                 ))),
                 fb_init_args: Vec::new(),
+                after_init: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1004,6 +1008,7 @@ pub fn parse_text(
                 methods: Vec::new(),
                 oop: None,
                 fb_init_args: Vec::new(),
+                after_init: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1142,6 +1147,7 @@ pub fn parse_text(
                     methods,
                     oop: oop.map(Box::new),
                     fb_init_args: Vec::new(),
+                    after_init: super::fb_init::after_init_methods(file, src, p, diags),
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -1189,6 +1195,7 @@ pub fn parse_text(
             methods: Vec::new(),
             oop: None,
             fb_init_args: decl_args,
+            after_init: Vec::new(),
         });
     }
     (unit, pending, var_config.1)
