@@ -263,7 +263,6 @@ pub fn add_init_calls(
             _ => {}
         }
     }
-    drop(gen);
     // arguments no instance took: a declaration of no function block's instance (a method's
     // variable, a structure's field, an unknown type)
     let mut left: Vec<&DeclArgs> = args
