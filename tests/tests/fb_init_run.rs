@@ -82,6 +82,17 @@ fn a_derived_blocks_bases_run_their_fb_init_first() {
     assert_eq!(column(&trace, "cell1.fbTop.nAxis"), [7.0, 7.0]);
     assert_eq!(column(&trace, "cell1.fbTop.nGear"), [21.0, 21.0]);
     assert_eq!(column(&trace, "cell1.fbTop.nCalls"), [1.0, 2.0]);
+    // the program instantiated twice: its instances' FB_init is not run, one E0347
+    let src = std::fs::read_to_string(fixture("extends.st"))
+        .unwrap()
+        .replace(
+            "PROGRAM cell1 WITH Fast : Cell;",
+            "PROGRAM cell1 WITH Fast : Cell; PROGRAM cell2 WITH Fast : Cell;",
+        );
+    assert_eq!(
+        rejected_heads("two.st", &src),
+        ["two.st:58:49: error[E0347]: program `Cell` has 2 instances (`cell1`, `cell2`): the FB_init of the instances it declares is not run"]
+    );
 }
 
 /// TwinCAT objects: the `<Method Name="FB_init">` of a `.TcPOU` runs with the declaration's
@@ -197,6 +208,32 @@ n := 5;\nEND_METHOD\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR a : FB_A; END_VAR\nEN
     assert!(
         stderr.contains("alone.st:4:8: warning[W0346]: method `Prepare` is marked call_after_init, but `FB_A` is not"),
         "{stderr}"
+    );
+}
+
+/// An instance in a structure's field, in an array field of a structure, in an array of
+/// structures: each runs its FB_init once. FB_init arguments on a structure are E0329.
+#[test]
+fn instances_inside_structures_are_initialised() {
+    let src = "FUNCTION_BLOCK FB_X\nVAR nInits : INT; END_VAR\nMETHOD FB_init : BOOL\n\
+VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR\nnInits := nInits + 1;\nEND_METHOD\n\
+END_FUNCTION_BLOCK\nTYPE ST_Axis : STRUCT\n  n : INT;\n  fb : FB_X;\n  more : ARRAY[0..1] OF FB_X;\n\
+END_STRUCT; END_TYPE\nPROGRAM Main\nVAR s : ST_Axis; a : ARRAY[1..2] OF ST_Axis; END_VAR\nEND_PROGRAM\n";
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("structs.st");
+    std::fs::write(&f, src).unwrap();
+    let watch = "Main.s.fb.nInits,Main.s.more[0].nInits,Main.s.more[1].nInits,Main.a[1].fb.nInits,\
+                 Main.a[2].fb.nInits,Main.a[2].more[0].nInits,Main.a[2].more[1].nInits";
+    let (trace, _) = run_traced(&f, 2, watch);
+    for name in watch.split(',') {
+        assert_eq!(column(&trace, name), [1.0, 1.0], "{name}");
+    }
+    assert_eq!(
+        rejected_heads(
+            "bad.st",
+            "TYPE ST_A : STRUCT n : INT; END_STRUCT; END_TYPE\nPROGRAM Main\nVAR bad : ST_A(3); END_VAR\nEND_PROGRAM\n"
+        ),
+        ["bad.st:3:15: error[E0329]: `ST_A` is a structure: FB_init arguments go to function block instances"]
     );
 }
 

@@ -204,9 +204,19 @@ pub fn add_init_calls(
             _ => None,
         })
         .collect();
+    let data_types: HashSet<String> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|i| match i {
+            LibraryElement::DataTypes(ts) => Some(ts.iter().map(|t| t.name.key())),
+            _ => None,
+        })
+        .flatten()
+        .collect();
     let reportable = |t: &str| {
         let key = t.to_ascii_uppercase();
         (project_fbs.contains(&key) && !declared.contains(&key))
+            || data_types.contains(&key)
             || crate::sema::StdFb::from_name(&key).is_some()
     };
     if !has_fb_init && args.is_empty() {
@@ -220,21 +230,33 @@ pub fn add_init_calls(
                 .or_insert_with(|| (p.kind, p.var_blocks.clone()));
         }
     }
-    // which blocks hold instances to initialise (their ACTION), which need any initialisation
-    let mut holds: HashMap<String, bool> = HashMap::new();
-    let keys: Vec<String> = pous.keys().cloned().collect();
-    for k in &keys {
-        holds_instances(k, &pous, &blocks, &mut holds, &mut HashSet::new());
+    // the structures' fields: an instance in a structure is initialised too
+    let mut structs: HashMap<String, Vec<crate::ast::VarDecl>> = HashMap::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::DataTypes(ts) = item {
+            for t in ts {
+                if let crate::ast::TypeDef::Struct { fields } = &t.def {
+                    structs
+                        .entry(t.name.key())
+                        .or_insert_with(|| fields.clone());
+                }
+            }
+        }
     }
-    let needs = |t: &str, holds: &HashMap<String, bool>| {
-        matches!(pous.get(t), Some((PouKind::FunctionBlock, _)))
-            && (blocks.get(t).is_some_and(Block::runs) || holds.get(t).copied().unwrap_or(false))
+    let types = Types {
+        pous: &pous,
+        structs: &structs,
+        blocks: &blocks,
     };
+    // which blocks, programs and structures hold instances to initialise
+    let mut holds: HashMap<String, bool> = HashMap::new();
+    for k in pous.keys().chain(structs.keys()) {
+        types.holds(k, &mut holds, &mut HashSet::new());
+    }
     let mut gen = Gen {
         reportable: &reportable,
-        blocks: &blocks,
+        types: &types,
         holds: &holds,
-        needs: &needs,
         args: &mut args,
         diags,
     };
@@ -242,16 +264,51 @@ pub fn add_init_calls(
     let mut bodies: Vec<(String, Vec<Stmt>)> = Vec::new();
     let mut globals = Vec::new();
     let mut programs = Vec::new();
+    // the instances of each program in the configurations (`PROGRAM i1 WITH t : P;`)
+    let mut configured: HashMap<String, Vec<Ident>> = HashMap::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::Configuration(c) = item {
+            for p in c.resources.iter().flat_map(|r| r.programs.iter()) {
+                configured
+                    .entry(p.type_name.key())
+                    .or_default()
+                    .push(p.name.clone());
+            }
+        }
+    }
     for item in units.iter().flat_map(|u| u.items.iter()) {
         match item {
             LibraryElement::Pou(p) if p.kind != PouKind::Function => {
                 let stmts = gen.members(&p.var_blocks);
-                if !stmts.is_empty() {
-                    if p.kind == PouKind::Program {
-                        programs.push(p.name.clone());
-                    }
-                    bodies.push((p.name.key(), stmts));
+                if stmts.is_empty() {
+                    continue;
                 }
+                if p.kind == PouKind::Program {
+                    // the hidden program calls the program's ACTION on its one instance
+                    if let Some(list) = configured.get(&p.name.key()).filter(|l| l.len() > 1) {
+                        gen.diags.push(
+                            Diagnostic::error(
+                                code::E0347,
+                                format!(
+                                    "program `{}` has {} instances ({}): the FB_init of the instances it declares is not run",
+                                    p.name.name,
+                                    list.len(),
+                                    list.iter()
+                                        .map(|i| format!("`{}`", i.name))
+                                        .collect::<Vec<_>>()
+                                        .join(", ")
+                                ),
+                            )
+                            .at(list[1].span)
+                            .with_primary_label("a second instance")
+                            .with_label(p.name.span, "declares instances with FB_init")
+                            .with_hint("ladderc runs FB_init on a program's one instance: instantiate the program once, or move its instances into a function block that each program instance holds"),
+                        );
+                        continue;
+                    }
+                    programs.push(p.name.clone());
+                }
+                bodies.push((p.name.key(), stmts));
             }
             LibraryElement::GlobalVars(b) => globals.extend(gen.members(std::slice::from_ref(b))),
             LibraryElement::Configuration(c) => {
@@ -391,44 +448,75 @@ fn lower(decls: &super::Declarations, p: &Pou, stmts: &[Stmt], diags: &mut Diagn
     }
 }
 
-/// Whether the block or program `key` holds an instance that needs initialising (memoised in
-/// `holds`; `visiting` cuts a cycle of types, which sema reports).
-fn holds_instances(
-    key: &str,
-    pous: &HashMap<String, (PouKind, Vec<VarBlock>)>,
-    blocks: &HashMap<String, Block>,
-    holds: &mut HashMap<String, bool>,
-    visiting: &mut HashSet<String>,
-) -> bool {
-    if let Some(&h) = holds.get(key) {
-        return h;
+/// The declarations [`Gen`] walks: blocks and programs, structures, and what blocks run.
+struct Types<'a> {
+    pous: &'a HashMap<String, (PouKind, Vec<VarBlock>)>,
+    structs: &'a HashMap<String, Vec<crate::ast::VarDecl>>,
+    blocks: &'a HashMap<String, Block>,
+}
+
+impl Types<'_> {
+    /// Whether the block, program or structure `key` holds an instance that needs initialising
+    /// (memoised in `memo`; `visiting` cuts a cycle of types, which sema reports).
+    fn holds(
+        &self,
+        key: &str,
+        memo: &mut HashMap<String, bool>,
+        visiting: &mut HashSet<String>,
+    ) -> bool {
+        if let Some(&h) = memo.get(key) {
+            return h;
+        }
+        if !visiting.insert(key.to_string()) {
+            return false;
+        }
+        let vars: Vec<&crate::ast::VarDecl> = match (self.pous.get(key), self.structs.get(key)) {
+            (Some((_, blocks)), _) => blocks
+                .iter()
+                .filter(|b| initialised(b.kind))
+                .flat_map(|b| b.vars.iter())
+                .filter(|v| !v.name.name.starts_with("__"))
+                .collect(),
+            (None, Some(fields)) => fields.iter().collect(),
+            _ => Vec::new(),
+        };
+        let h = vars.iter().any(|v| self.needs(&v.ty, memo, visiting));
+        visiting.remove(key);
+        memo.insert(key.to_string(), h);
+        h
     }
-    let Some((_, vars)) = pous.get(key) else {
-        return false;
-    };
-    if !visiting.insert(key.to_string()) {
-        return false;
-    }
-    let mut h = false;
-    for v in vars
-        .iter()
-        .filter(|b| initialised(b.kind))
-        .flat_map(|b| b.vars.iter())
-    {
-        if let Some(t) = instance_type(&v.ty) {
-            let t = t.key();
-            let fb = matches!(pous.get(&t), Some((PouKind::FunctionBlock, _)));
-            if fb
-                && (blocks.get(&t).is_some_and(Block::runs)
-                    || holds_instances(&t, pous, blocks, holds, visiting))
-            {
-                h = true;
+
+    /// Whether a variable of type `ty` needs initialising: an instance of a block that runs
+    /// FB_init (or call_after_init methods) or holds such an instance, a structure holding one,
+    /// an array of either.
+    fn needs(
+        &self,
+        ty: &TypeRef,
+        memo: &mut HashMap<String, bool>,
+        visiting: &mut HashSet<String>,
+    ) -> bool {
+        match ty {
+            TypeRef::Named(n) => {
+                let k = n.key();
+                match self.pous.get(&k) {
+                    Some((PouKind::FunctionBlock, _)) => {
+                        self.blocks.get(&k).is_some_and(Block::runs)
+                            || self.holds(&k, memo, visiting)
+                    }
+                    Some(_) => false,
+                    None => self.structs.contains_key(&k) && self.holds(&k, memo, visiting),
+                }
             }
+            TypeRef::Array { element, .. } => self.needs(element, memo, visiting),
+            _ => false,
         }
     }
-    visiting.remove(key);
-    holds.insert(key.to_string(), h);
-    h
+
+    /// [`Types::needs`] once every type is in `memo`.
+    fn needs_known(&self, ty: &TypeRef, memo: &HashMap<String, bool>) -> bool {
+        let mut memo = memo.clone();
+        self.needs(ty, &mut memo, &mut HashSet::new())
+    }
 }
 
 /// The variable blocks whose instances are initialised: not VAR_IN_OUT, VAR_EXTERNAL (another
@@ -465,16 +553,15 @@ fn unplaced(a: &DeclArgs, message: String) -> Diagnostic {
 }
 
 /// Builds the initialisation statements.
-struct Gen<'a, 'd, F: Fn(&str, &HashMap<String, bool>) -> bool> {
+struct Gen<'a, 'd> {
     reportable: &'a dyn Fn(&str) -> bool,
-    blocks: &'a HashMap<String, Block>,
+    types: &'a Types<'a>,
     holds: &'a HashMap<String, bool>,
-    needs: &'a F,
     args: &'a mut HashMap<(crate::FileId, u32), (&'d DeclArgs, bool)>,
     diags: &'a mut Diagnostics,
 }
 
-impl<F: Fn(&str, &HashMap<String, bool>) -> bool> Gen<'_, '_, F> {
+impl Gen<'_, '_> {
     /// The statements that initialise the instances declared in `blocks`, in declaration order.
     fn members(&mut self, blocks: &[VarBlock]) -> Vec<Stmt> {
         let mut out = Vec::new();
@@ -483,107 +570,144 @@ impl<F: Fn(&str, &HashMap<String, bool>) -> bool> Gen<'_, '_, F> {
                 if v.name.name.starts_with("__") {
                     continue;
                 }
-                let Some(t) = instance_type(&v.ty) else {
-                    continue;
-                };
-                let key = (t.span.file, t.span.start);
-                let args = self.args.get_mut(&key).map(|e| {
-                    e.1 = true;
-                    e.0
+                let args = instance_type(&v.ty).and_then(|t| {
+                    self.args.get_mut(&(t.span.file, t.span.start)).map(|e| {
+                        e.1 = true;
+                        e.0
+                    })
                 });
-                let needs = (self.needs)(&t.key(), self.holds);
-                let block = self.blocks.get(&t.key()).cloned().unwrap_or_default();
-                let base = Place {
+                let place = Place {
                     base: PlaceBase::Name(v.name.clone()),
                     accessors: Vec::new(),
                     span: v.name.span,
                 };
-                match &v.ty {
-                    TypeRef::Array { dims, .. } => {
-                        if let Some(a) = args {
-                            self.diags.push(unplaced(a, format!("FB_init arguments for an array of `{}` instances are not supported", a.ty_name)).with_note("each element's FB_init runs with the inputs' initial values"));
-                        }
-                        if !needs {
-                            continue;
-                        }
-                        let count = dims.iter().fold(1u128, |n, d| {
-                            n.saturating_mul((d.upper - d.lower + 1).max(0) as u128)
-                        });
-                        if count > MAX_ELEMENTS {
-                            self.diags.push(
-                                Diagnostic::error(
-                                    code::E0345,
-                                    format!(
-                                        "`{}` holds {count} instances of `{}` whose FB_init ladderc would run one by one",
-                                        v.name.name, t.name
-                                    ),
-                                )
-                                .at(v.name.span)
-                                .with_primary_label("too many instances to initialise")
-                                .with_hint(format!("ladderc initialises at most {MAX_ELEMENTS} elements of one array; split the array, or initialise the elements in the first cycle")),
-                            );
-                            continue;
-                        }
-                        let mut index: Vec<i128> = dims.iter().map(|d| d.lower).collect();
-                        if dims.iter().any(|d| d.upper < d.lower) {
-                            continue;
-                        }
-                        loop {
-                            let mut place = base.clone();
-                            place.accessors.push(Accessor::Index(
-                                index.iter().map(|&i| int(i, v.name.span)).collect(),
-                            ));
-                            self.instance(&place, t, &block, &[], &mut out);
-                            self.initial_inputs(&place, &block, None, &mut out);
-                            // the next index, last dimension fastest
-                            let mut d = dims.len();
-                            loop {
-                                if d == 0 {
-                                    break;
-                                }
-                                d -= 1;
-                                if index[d] < dims[d].upper {
-                                    index[d] += 1;
-                                    break;
-                                }
-                                index[d] = dims[d].lower;
-                                if d == 0 {
-                                    d = usize::MAX;
-                                    break;
-                                }
-                            }
-                            if d == usize::MAX || dims.is_empty() {
-                                break;
-                            }
-                        }
-                    }
-                    _ => {
-                        let given = match args {
-                            Some(_) if block.fb_init.is_none() && !(self.reportable)(&t.name) => {
-                                Vec::new()
-                            }
-                            Some(a) if block.fb_init.is_none() => {
-                                self.diags.push(unplaced(
-                                    a,
-                                    format!(
-                                        "`{}` has no FB_init method to take these arguments",
-                                        a.ty_name
-                                    ),
-                                ));
-                                Vec::new()
-                            }
-                            Some(a) => self.bind(a, block.fb_init.as_deref().unwrap_or(&[])),
-                            None => Vec::new(),
-                        };
-                        if needs {
-                            self.instance(&base, t, &block, &given, &mut out);
-                            self.initial_inputs(&base, &block, v.init.as_ref(), &mut out);
-                        }
-                    }
-                }
+                self.place(&place, &v.ty, &v.name, args, v.init.as_ref(), &mut out);
             }
         }
         out
+    }
+
+    /// The statements that initialise what `place` (a variable `name` of type `ty`, declared with
+    /// FB_init arguments `args` and initial value `init`) holds: an instance, the instances in a
+    /// structure's fields, an array's elements one by one.
+    fn place(
+        &mut self,
+        place: &Place,
+        ty: &TypeRef,
+        name: &Ident,
+        args: Option<&DeclArgs>,
+        init: Option<&Initializer>,
+        out: &mut Vec<Stmt>,
+    ) {
+        let needs = self.types.needs_known(ty, self.holds);
+        match ty {
+            TypeRef::Array { dims, element, .. } => {
+                if let Some(a) = args {
+                    self.diags.push(unplaced(a, format!("FB_init arguments for an array of `{}` instances are not supported", a.ty_name)).with_note("each element's FB_init runs with the inputs' initial values"));
+                }
+                if !needs || dims.iter().any(|d| d.upper < d.lower) {
+                    return;
+                }
+                let count = dims.iter().fold(1u128, |n, d| {
+                    n.saturating_mul((d.upper - d.lower + 1).max(0) as u128)
+                });
+                if count > MAX_ELEMENTS {
+                    let what = match element.as_ref() {
+                        TypeRef::Named(t) => format!("`{}`", t.name),
+                        _ => "elements".to_string(),
+                    };
+                    self.diags.push(
+                        Diagnostic::error(
+                            code::E0345,
+                            format!(
+                                "`{}` holds {count} instances of {what} whose FB_init ladderc would run one by one",
+                                name.name
+                            ),
+                        )
+                        .at(name.span)
+                        .with_primary_label("too many instances to initialise")
+                        .with_hint(format!("ladderc initialises at most {MAX_ELEMENTS} elements of one array; split the array, or initialise the elements in the first cycle")),
+                    );
+                    return;
+                }
+                let mut index: Vec<i128> = dims.iter().map(|d| d.lower).collect();
+                loop {
+                    let mut at = place.clone();
+                    at.accessors.push(Accessor::Index(
+                        index.iter().map(|&i| int(i, name.span)).collect(),
+                    ));
+                    self.place(&at, element, name, None, None, out);
+                    // the next index, last dimension fastest; done when the first wraps
+                    let mut d = dims.len();
+                    let done = loop {
+                        if d == 0 {
+                            break true;
+                        }
+                        d -= 1;
+                        if index[d] < dims[d].upper {
+                            index[d] += 1;
+                            break false;
+                        }
+                        index[d] = dims[d].lower;
+                    };
+                    if done {
+                        break;
+                    }
+                }
+            }
+            TypeRef::Named(t)
+                if self.types.structs.contains_key(&t.key())
+                    && !self.types.pous.contains_key(&t.key()) =>
+            {
+                if let Some(a) = args {
+                    self.diags.push(unplaced(
+                        a,
+                        format!(
+                            "`{}` is a structure: FB_init arguments go to function block instances",
+                            a.ty_name
+                        ),
+                    ));
+                }
+                if !needs {
+                    return;
+                }
+                let fields = self.types.structs[&t.key()].clone();
+                for f in &fields {
+                    let mut at = place.clone();
+                    at.accessors.push(Accessor::Field(f.name.clone()));
+                    let args = instance_type(&f.ty).and_then(|t| {
+                        self.args.get_mut(&(t.span.file, t.span.start)).map(|e| {
+                            e.1 = true;
+                            e.0
+                        })
+                    });
+                    self.place(&at, &f.ty, &f.name, args, f.init.as_ref(), out);
+                }
+            }
+            TypeRef::Named(t) => {
+                let block = self.types.blocks.get(&t.key()).cloned().unwrap_or_default();
+                let given = match args {
+                    Some(_) if block.fb_init.is_none() && !(self.reportable)(&t.name) => Vec::new(),
+                    Some(a) if block.fb_init.is_none() => {
+                        self.diags.push(unplaced(
+                            a,
+                            format!(
+                                "`{}` has no FB_init method to take these arguments",
+                                a.ty_name
+                            ),
+                        ));
+                        Vec::new()
+                    }
+                    Some(a) => self.bind(a, block.fb_init.as_deref().unwrap_or(&[])),
+                    None => Vec::new(),
+                };
+                if needs {
+                    self.instance(place, t, &block, &given, out);
+                    self.initial_inputs(place, &block, init, out);
+                }
+            }
+            _ => {}
+        }
     }
 
     /// The declaration's arguments bound to FB_init's extra inputs by name: `(input, value)`.
