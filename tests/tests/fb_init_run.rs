@@ -273,6 +273,19 @@ fn arguments_that_go_nowhere_are_one_e0329_each() {
     .unwrap();
     let (trace, _) = run_traced(&f, 1, "Main.ok.a");
     assert_eq!(column(&trace, "Main.ok.a"), [6.0]);
+    // `PROGRAM INTERNAL Main` (TwinCAT, fisothemes/TwinCat-Dynamic-Collections): the modifier is
+    // W0304, the program compiles and its instance is initialised
+    std::fs::write(
+        &f,
+        format!("{FB_X}PROGRAM INTERNAL Main\nVAR ok : FB_X(nSize := 8); END_VAR\nEND_PROGRAM\n"),
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced(&f, 1, "Main.ok.a");
+    assert_eq!(column(&trace, "Main.ok.a"), [8.0]);
+    assert!(
+        stderr.contains("warning[W0304]: `PROGRAM INTERNAL` of `Main`: the modifier is ignored"),
+        "{stderr}"
+    );
     // a block without FB_init and without arguments is untouched
     let (code, lines) = check_text(
         "plain.st",

@@ -328,7 +328,23 @@ pub fn add_init_calls(
         .map(|(a, _)| *a)
         .collect();
     left.sort_by_key(|a| (a.span.file, a.span.start));
+    // (a declaration in no POU or list that was read: its POU's own errors are reported)
+    let read: Vec<Span> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|i| match i {
+            LibraryElement::Pou(p) => Some(p.span),
+            LibraryElement::GlobalVars(b) => Some(b.span),
+            _ => None,
+        })
+        .collect();
     for a in left {
+        let within = read
+            .iter()
+            .any(|r| r.file == a.span.file && r.start <= a.span.start && a.span.end <= r.end);
+        if !within {
+            continue;
+        }
         let has = blocks
             .get(&a.ty_name.to_ascii_uppercase())
             .is_some_and(|b| b.fb_init.is_some());

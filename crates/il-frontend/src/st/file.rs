@@ -313,20 +313,23 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 let end_word = format!("END_{w}");
                 i += 1;
                 // `FUNCTION_BLOCK PUBLIC FB_Brake` (CODESYS access specifier; FINAL and ABSTRACT of
-                // edition 3): the modifier is not the name
-                let modifier = (w == "FUNCTION_BLOCK"
-                    && toks.get(i + 1).is_some_and(|t| {
-                        let next = word(src, t).to_ascii_uppercase();
-                        t.tok == Tok::Ident
-                            && !is_var_keyword(&next)
-                            && !["END_FUNCTION_BLOCK", "EXTENDS", "IMPLEMENTS"]
-                                .contains(&next.as_str())
-                    })
-                    && toks.get(i).is_some_and(|t| {
-                        ["PUBLIC", "INTERNAL", "FINAL", "ABSTRACT"]
-                            .iter()
-                            .any(|k| is_word(src, t, k))
-                    }))
+                // edition 3), `PROGRAM INTERNAL MAIN` (TwinCAT): the modifier is not the name
+                let modifiers: &[&str] = if w == "FUNCTION_BLOCK" {
+                    &["PUBLIC", "INTERNAL", "FINAL", "ABSTRACT"]
+                } else if w == "PROGRAM" {
+                    &["PUBLIC", "INTERNAL"]
+                } else {
+                    &[]
+                };
+                let modifier = (toks.get(i + 1).is_some_and(|t| {
+                    let next = word(src, t).to_ascii_uppercase();
+                    t.tok == Tok::Ident
+                        && !is_var_keyword(&next)
+                        && !["END_FUNCTION_BLOCK", "END_PROGRAM", "EXTENDS", "IMPLEMENTS"]
+                            .contains(&next.as_str())
+                }) && toks
+                    .get(i)
+                    .is_some_and(|t| modifiers.iter().any(|k| is_word(src, t, k))))
                 .then(|| {
                     i += 1;
                     toks[i - 1].range.clone()
@@ -902,7 +905,21 @@ pub fn parse_text(
                 diags.push(
                     Diagnostic::warning(
                         code::W0304,
-                        format!("`FUNCTION_BLOCK {m}` of `{}`: the modifier is ignored", p.name),
+                        format!(
+                            "`{} {m}` of `{}`: the modifier is ignored",
+                            if src
+                                .get(..r.start)
+                                .unwrap_or("")
+                                .trim_end()
+                                .to_ascii_uppercase()
+                                .ends_with("PROGRAM")
+                            {
+                                "PROGRAM"
+                            } else {
+                                "FUNCTION_BLOCK"
+                            },
+                            p.name
+                        ),
                     )
                     .at(Span::new(file, r.start, r.end))
                     .with_primary_label("ignored")
