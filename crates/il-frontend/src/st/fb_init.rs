@@ -18,12 +18,15 @@
 //! `__S<level>_FB_INIT`, see [`super::inherit`]) and the FB_init arguments read by
 //! [`super::fb_init_args`]. Output: each PROGRAM or FUNCTION_BLOCK that holds instances to
 //! initialise gets a hidden method [`ACTION`] that initialises them in declaration order (for each:
-//! its own instances first, through its [`ACTION`], then its bases' FB_init, then its FB_init; an
-//! array element by element), and one hidden PROGRAM [`PROGRAM`] does so for the global variables,
+//! its own instances first, through its [`ACTION`], then its bases' FB_init, then its FB_init, then
+//! the inputs its declaration's structured initial value sets, again, and its methods marked
+//! `{attribute 'call_after_init'}`; an array element by element, a structure field by field), and
+//! one hidden PROGRAM [`PROGRAM`] does so for the global variables,
 //! then runs every program's [`ACTION`]. The C backend runs that program once, before the first
 //! cycle, never in a cycle. Invariants: a project without FB_init methods is unchanged; every
 //! argument that goes nowhere is one E0329 naming it; an array of more than [`MAX_ELEMENTS`]
-//! instances to initialise is E0345.
+//! instances to initialise, or a POU needing more than [`MAX_STATEMENTS`] calls, is E0345; a
+//! program whose instances need it and that a configuration instantiates twice is E0347.
 
 use super::ast::{Accessor, Arg, ArgDir, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind};
 use super::fb_init_args::DeclArgs;
@@ -44,6 +47,9 @@ pub const ACTION: &str = "__FBINIT";
 pub const PROGRAM: &str = "__FBINIT_ALL";
 /// The most elements of one array of instances that are initialised one by one.
 pub const MAX_ELEMENTS: u128 = 4096;
+
+/// The most initialisation statements of one POU (arrays of structures of arrays multiply).
+pub const MAX_STATEMENTS: usize = 65_536;
 
 /// The two inputs every FB_init has (Beckhoff compiler error C0119 when one is missing).
 const SYSTEM_INPUTS: [&str; 2] = ["bInitRetains", "bInCopyCode"];
@@ -259,6 +265,7 @@ pub fn add_init_calls(
         holds: &holds,
         args: &mut args,
         diags,
+        overflowed: false,
     };
     // the statements of each POU's ACTION, and of the hidden program
     let mut bodies: Vec<(String, Vec<Stmt>)> = Vec::new();
@@ -575,6 +582,8 @@ struct Gen<'a, 'd> {
     holds: &'a HashMap<String, bool>,
     args: &'a mut HashMap<(crate::FileId, u32), (&'d DeclArgs, bool)>,
     diags: &'a mut Diagnostics,
+    /// E0345 for too many statements was reported.
+    overflowed: bool,
 }
 
 impl Gen<'_, '_> {
@@ -625,7 +634,9 @@ impl Gen<'_, '_> {
                     return;
                 }
                 let count = dims.iter().fold(1u128, |n, d| {
-                    n.saturating_mul((d.upper - d.lower + 1).max(0) as u128)
+                    n.saturating_mul(
+                        d.upper.saturating_sub(d.lower).saturating_add(1).max(0) as u128
+                    )
                 });
                 if count > MAX_ELEMENTS {
                     let what = match element.as_ref() {
@@ -653,6 +664,25 @@ impl Gen<'_, '_> {
                         index.iter().map(|&i| int(i, name.span)).collect(),
                     ));
                     self.place(&at, element, name, None, None, out);
+                    if out.len() > MAX_STATEMENTS {
+                        // (arrays in arrays: reported once, where the limit is reached)
+                        if !self.overflowed {
+                            self.overflowed = true;
+                            self.diags.push(
+                                Diagnostic::error(
+                                    code::E0345,
+                                    format!(
+                                        "`{}` holds more instances whose FB_init ladderc would run one by one than it initialises ({MAX_STATEMENTS} calls)",
+                                        name.name
+                                    ),
+                                )
+                                .at(name.span)
+                                .with_primary_label("too many instances to initialise")
+                                .with_hint("split the arrays, or initialise the elements in the first cycle"),
+                            );
+                        }
+                        return;
+                    }
                     // the next index, last dimension fastest; done when the first wraps
                     let mut d = dims.len();
                     let done = loop {
