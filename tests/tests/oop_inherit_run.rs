@@ -225,7 +225,7 @@ PROGRAM Main\nVAR m : FB_M; r : INT; END_VAR\nm(n := 2);\nr := m.Get(k := 1);\nE
         heads("FUNCTION_BLOCK FB_T EXTENDS TcUnit.FB_TestSuite\nMETHOD Test\nVAR_INST x : FB_Base(n := 1) := (n := 2); END_VAR\nx();\nEND_METHOD\nEND_FUNCTION_BLOCK\n"),
         [
             "oop.st:10:29: error[E0330]: `FB_T` EXTENDS `TcUnit.FB_TestSuite`, which names no function block of the project",
-            "oop.st:12:21: error[E0329]: `FB_Base(...)` in a declaration passes arguments to `FB_Base`'s FB_init method (CODESYS, TwinCAT), which ladderc does not run",
+            "oop.st:12:21: error[E0329]: `FB_Base` has no FB_init method to take these arguments",
         ]
     );
 }

@@ -306,6 +306,8 @@ fn rewrite_calls(
             continue;
         };
         if let Some(a) = scope.program_action(instance) {
+            // (a METHOD of a program: `PRG.M(x)`, CODESYS and TwinCAT)
+            method_arguments(a, args);
             // the program's one instance runs the action (CODESYS: `PLC_PRG.Reset();`), unless
             // the program has no instance or several, or calls itself by its name
             let key = a.pou.key();
@@ -379,33 +381,7 @@ fn rewrite_calls(
         let Some((fb, action)) = scope.action_of(instance) else {
             continue;
         };
-        if let Some(inputs) = &action.method_inputs {
-            // a method's arguments go to its hidden variables
-            let m = &action.name.name;
-            match args {
-                CallArgs::NonFormal(ops) if ops.len() <= inputs.len() => {
-                    let list = std::mem::take(ops)
-                        .into_iter()
-                        .zip(inputs)
-                        .map(|(value, input)| FormalArg {
-                            name: Ident::new(method_var(m, &input.name), value.span()),
-                            dir: ArgDir::Input,
-                            span: value.span(),
-                            value,
-                        })
-                        .collect();
-                    *args = CallArgs::Formal(list);
-                }
-                CallArgs::Formal(list) => {
-                    for a in list.iter_mut() {
-                        if !a.name.is("EN") && !a.name.is("ENO") {
-                            a.name.name = method_var(m, &a.name.name);
-                        }
-                    }
-                }
-                _ => {}
-            }
-        }
+        method_arguments(action, args);
         if matches!(args, CallArgs::NonFormal(_)) {
             continue;
         }
@@ -428,6 +404,38 @@ fn rewrite_calls(
             CallArgs::Formal(list) => list.push(flag),
             _ => *args = CallArgs::Formal(vec![flag]),
         }
+    }
+}
+
+/// A method's arguments (of an action with `method_inputs`) go to its hidden variables
+/// `__M_<METHOD>_<input>`: positional ones in the order of its inputs.
+fn method_arguments(action: &Action, args: &mut CallArgs) {
+    let Some(inputs) = &action.method_inputs else {
+        return;
+    };
+    let m = &action.name.name;
+    match args {
+        CallArgs::NonFormal(ops) if ops.len() <= inputs.len() => {
+            let list = std::mem::take(ops)
+                .into_iter()
+                .zip(inputs)
+                .map(|(value, input)| FormalArg {
+                    name: Ident::new(method_var(m, &input.name), value.span()),
+                    dir: ArgDir::Input,
+                    span: value.span(),
+                    value,
+                })
+                .collect();
+            *args = CallArgs::Formal(list);
+        }
+        CallArgs::Formal(list) => {
+            for a in list.iter_mut() {
+                if !a.name.is("EN") && !a.name.is("ENO") {
+                    a.name.name = method_var(m, &a.name.name);
+                }
+            }
+        }
+        _ => {}
     }
 }
 

@@ -265,6 +265,22 @@ impl Session {
         let mut text_lists: Vec<(usize, String)> = Vec::new();
         let mut twincat_tasks = Vec::new();
         let mut twincat_failed: Vec<String> = Vec::new();
+        // the programs of every file, known before any is parsed: `PRG.M(x)` in one file calls a
+        // method of a program of another (TwinCAT: one POU per file), no library's function
+        let mut programs = std::collections::HashSet::new();
+        for p in paths.iter().filter(|p| !is_stdin(p)) {
+            let text = match self.overlay.get(p) {
+                Some(t) => Some(t.clone()),
+                None if self.disk && p.is_file() => std::fs::read(p)
+                    .ok()
+                    .map(|b| String::from_utf8_lossy(&b).into_owned()),
+                None => None,
+            };
+            if let Some(t) = text {
+                programs.extend(il_frontend::st::qualifiers::program_names(&t));
+            }
+        }
+        let programs_before = il_frontend::st::qualifiers::set_project_programs(programs);
         for p in &paths {
             // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals
             let (resolved, beremiz_dir) = crate::beremiz::resolve(self, p);
@@ -498,6 +514,7 @@ impl Session {
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);
+        il_frontend::st::qualifiers::set_project_programs(programs_before);
         units
     }
 

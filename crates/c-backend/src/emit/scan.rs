@@ -24,6 +24,11 @@ const MAX_WATCHED_ARRAY: u128 = 1024;
 /// Upper bound of table entries, so that a huge instance tree cannot make the table unbounded.
 const MAX_ENTRIES: usize = 1_000_000;
 
+/// Whether `name` is the hidden program that runs the FB_init methods before the first cycle.
+fn is_init_program(name: &str) -> bool {
+    name.eq_ignore_ascii_case(il_frontend::st::fb_init::PROGRAM)
+}
+
 /// A program instance to run.
 pub(super) struct Instance {
     /// C variable name.
@@ -45,7 +50,7 @@ impl Gen<'_> {
         let mut v = Vec::new();
         if self.model.configurations.is_empty() {
             for (i, p) in self.model.pous.iter().enumerate() {
-                if p.kind == PouKind::Program {
+                if p.kind == PouKind::Program && !is_init_program(&p.name) {
                     v.push(Instance {
                         c_name: mangle::implicit_instance(&p.name),
                         watch_name: p.name.clone(),
@@ -76,7 +81,11 @@ impl Gen<'_> {
                     || p.vars
                         .iter()
                         .any(|v| v.name.starts_with(il_frontend::actions::FLAG_PREFIX));
-                if p.kind == PouKind::Program && used && !v.iter().any(|x| x.pou == id) {
+                if p.kind == PouKind::Program
+                    && used
+                    && !is_init_program(&p.name)
+                    && !v.iter().any(|x| x.pou == id)
+                {
                     v.push(Instance {
                         c_name: mangle::implicit_instance(&p.name),
                         watch_name: p.name.clone(),
@@ -147,6 +156,29 @@ impl Gen<'_> {
         for inst in &instances {
             let s = self.instance_struct(inst.pou);
             let _ = writeln!(c, "    {s}_INIT(&{});", inst.c_name);
+        }
+        // FB_init: the hidden program that runs every instance's, once, before the first cycle
+        // (`il_frontend::st::fb_init`)
+        if let Some(k) = self
+            .model
+            .pous
+            .iter()
+            .position(|p| p.kind == PouKind::Program && is_init_program(&p.name))
+        {
+            let id = PouId(k as u32);
+            let s = self.instance_struct(id);
+            let name = mangle::implicit_instance(&self.model.pou(id).name);
+            let _ = writeln!(
+                c,
+                "    {{
+        static {s} {name};"
+            );
+            let _ = writeln!(
+                c,
+                "        {s}_INIT(&{name});
+        {s}_BODY(&{name});
+    }}"
+            );
         }
         if n_tasks > 0 {
             c.push_str("    memset(ladderc_task_due, 0, sizeof ladderc_task_due);\n");

@@ -1,20 +1,23 @@
 //! CODESYS's and TwinCAT's FB_init arguments in an instance declaration: `fb : FB_X(nSize := 4);`
 //! (or `fbTest : FB_Test(fbPrep);`) passes the arguments to the extra inputs of the block's
-//! `FB_init` method, which those systems run once before the first cycle. ladderc does not run
-//! FB_init methods, so each such declaration is one E0329 naming it.
+//! `FB_init` method, which those systems run once before the first cycle ([`super::fb_init`] runs
+//! it so).
 //!
 //! Input: the text of an `.st` file (or a TwinCAT or CODESYS object read as one) and its tokens.
-//! Output: the text with each argument list blanked (so the instance is declared, the rest of the
-//! file is checked, and no E0011 cascade follows), and one diagnostic per declaration. Only
-//! declarations inside `VAR...END_VAR` blocks are looked at (`name : Type(` where `Type` is no
-//! elementary type: `STRING(20)`, `INT(0..10)` are lengths and subranges). Invariant: positions
-//! unchanged.
+//! Output: the text with each argument list blanked (so the IL declaration reader declares the
+//! instance as if they were not there), and the arguments of each declaration, read as the
+//! arguments of an ST call (so positional and named arguments and any expression are allowed), to
+//! be matched with the block's FB_init inputs once every file is read. Only declarations inside
+//! `VAR...END_VAR` blocks are looked at (`name : Type(` where `Type` is no elementary type:
+//! `STRING(20)`, `INT(0..10)` are lengths and subranges). Invariant: positions unchanged; the
+//! spans of the arguments are positions in the file.
 
+use super::ast::{Arg, StmtKind};
 use super::file::{blank, is_word, word};
 use super::lexer::{Tok, Token};
 use crate::sema::Elementary;
 use crate::{FileId, Span};
-use diagnostics::{code, Diagnostic, Diagnostics};
+use diagnostics::Diagnostics;
 
 const VAR_KEYWORDS: &[&str] = &[
     "VAR",
@@ -28,12 +31,27 @@ const VAR_KEYWORDS: &[&str] = &[
     "VAR_EXTERNAL",
 ];
 
+/// The FB_init arguments of one instance declaration (`fb : FB_X(nSize := 4)`).
+#[derive(Debug, Clone)]
+pub struct DeclArgs {
+    /// The span of the type's name in the declaration: the key that finds the declaration
+    /// (its `TypeRef::Named` ident, or the element type of an `ARRAY ... OF FB_X(...)`).
+    pub ty: Span,
+    /// The type's name as written.
+    pub ty_name: String,
+    /// The arguments, as in a call.
+    pub args: Vec<Arg>,
+    /// From `(` to `)`.
+    pub span: Span,
+}
+
 /// See the module documentation; `None` when the text has no such declaration.
 pub(super) fn fb_init_arguments(
     file: FileId,
     src: &str,
     toks: &[Token],
     diags: &mut Diagnostics,
+    found: &mut Vec<DeclArgs>,
 ) -> Option<String> {
     let mut in_vars = false;
     let mut text: Option<String> = None;
@@ -45,8 +63,9 @@ pub(super) fn fb_init_arguments(
         } else if is_word(src, t, "END_VAR") {
             in_vars = false;
         }
+        // `name : FB_X(`, or the element type of `ARRAY [..] OF FB_X(`
         let declares = in_vars
-            && t.tok == Tok::Colon
+            && (t.tok == Tok::Colon || is_word(src, t, "OF"))
             && toks.get(k + 1).is_some_and(|n| n.tok == Tok::Ident)
             && toks.get(k + 2).is_some_and(|n| n.tok == Tok::LParen);
         if !declares {
@@ -82,19 +101,22 @@ pub(super) fn fb_init_arguments(
             .filter(|c| c.tok == Tok::RParen)
             .map_or(toks[close.min(toks.len()) - 1].range.end, |c| c.range.end);
         let start = toks[open].range.start;
-        let name_span = Span::new(file, toks[k + 1].range.start, toks[k + 1].range.end);
-        diags.push(
-            Diagnostic::error(
-                code::E0329,
-                format!("`{ty}(...)` in a declaration passes arguments to `{ty}`'s FB_init method (CODESYS, TwinCAT), which ladderc does not run"),
-            )
-            .at(Span::new(file, start, end))
-            .with_primary_label("FB_init arguments")
-            .with_label(name_span, "instance type")
-            .with_hint(format!(
-                "give the instance's inputs initial values instead (`: {ty} := (input := value);`, IEC 61131-3 edition 3), or set them in the first cycle"
-            )),
-        );
+        let ty_range = toks[k + 1].range.clone();
+        // `FB_X(args)` read as a call statement, in place
+        let call = format!("{};", src.get(ty_range.start..end).unwrap_or(""));
+        let mut local = Diagnostics::new();
+        let stmts = super::parse_statements(file, &call, ty_range.start, &mut local);
+        let args = match stmts.into_iter().next().map(|s| s.kind) {
+            Some(StmtKind::Call { args, .. }) => args,
+            _ => Vec::new(),
+        };
+        diags.extend(local);
+        found.push(DeclArgs {
+            ty: Span::new(file, ty_range.start, ty_range.end),
+            ty_name: ty.to_string(),
+            args,
+            span: Span::new(file, start, end),
+        });
         blank(text.get_or_insert_with(|| src.to_string()), start..end);
         k = close + 1;
     }

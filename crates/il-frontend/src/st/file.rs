@@ -140,6 +140,13 @@ pub struct PendingBody {
     /// or (with an empty `text`) an `INTERFACE` ([`super::inherit`] flattens and checks them before
     /// the bodies are lowered).
     pub oop: Option<Box<super::inherit::Oop>>,
+    /// The FB_init arguments of the file's instance declarations (`fb : FB_X(n := 1)`), carried
+    /// by one body of the file that is no POU's (`name_start` is `usize::MAX`, no text): matched
+    /// with the blocks' FB_init inputs by [`super::fb_init`] once every file is read.
+    pub fb_init_args: Vec<super::fb_init_args::DeclArgs>,
+    /// The methods that `{attribute 'call_after_init'}` marks (on the method and on the block):
+    /// run after each instance's FB_init ([`super::fb_init`]).
+    pub after_init: Vec<crate::ast::Ident>,
 }
 
 impl PendingBody {
@@ -308,20 +315,23 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 let end_word = format!("END_{w}");
                 i += 1;
                 // `FUNCTION_BLOCK PUBLIC FB_Brake` (CODESYS access specifier; FINAL and ABSTRACT of
-                // edition 3): the modifier is not the name
-                let modifier = (w == "FUNCTION_BLOCK"
-                    && toks.get(i + 1).is_some_and(|t| {
-                        let next = word(src, t).to_ascii_uppercase();
-                        t.tok == Tok::Ident
-                            && !is_var_keyword(&next)
-                            && !["END_FUNCTION_BLOCK", "EXTENDS", "IMPLEMENTS"]
-                                .contains(&next.as_str())
-                    })
-                    && toks.get(i).is_some_and(|t| {
-                        ["PUBLIC", "INTERNAL", "FINAL", "ABSTRACT"]
-                            .iter()
-                            .any(|k| is_word(src, t, k))
-                    }))
+                // edition 3), `PROGRAM INTERNAL MAIN` (TwinCAT): the modifier is not the name
+                let modifiers: &[&str] = if w == "FUNCTION_BLOCK" {
+                    &["PUBLIC", "INTERNAL", "FINAL", "ABSTRACT"]
+                } else if w == "PROGRAM" {
+                    &["PUBLIC", "INTERNAL"]
+                } else {
+                    &[]
+                };
+                let modifier = (toks.get(i + 1).is_some_and(|t| {
+                    let next = word(src, t).to_ascii_uppercase();
+                    t.tok == Tok::Ident
+                        && !is_var_keyword(&next)
+                        && !["END_FUNCTION_BLOCK", "END_PROGRAM", "EXTENDS", "IMPLEMENTS"]
+                            .contains(&next.as_str())
+                }) && toks
+                    .get(i)
+                    .is_some_and(|t| modifiers.iter().any(|k| is_word(src, t, k))))
                 .then(|| {
                     i += 1;
                     toks[i - 1].range.clone()
@@ -413,7 +423,9 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     })
                     .map(|t| t.range.clone());
                 let body_toks = &toks[first..j.min(n - 1)];
-                let (methods, properties) = if w == "FUNCTION_BLOCK" {
+                // (a PROGRAM's methods and properties too, CODESYS and TwinCAT: `PRG.M(x)` from
+                // another POU runs on the program's one instance, see `crate::actions`)
+                let (methods, properties) = if w == "FUNCTION_BLOCK" || w == "PROGRAM" {
                     (
                         scan_methods(src, body_toks),
                         super::property::scan_properties(src, body_toks),
@@ -748,6 +760,7 @@ pub fn parse_text(
     diags: &mut Diagnostics,
 ) -> (CompilationUnit, Vec<PendingBody>, Vec<ConfigEntry>) {
     let mut pending = Vec::new();
+    let mut decl_args = Vec::new();
     let mut first_try = None;
     if lang == Lang::Il {
         // A valid IL file costs one parse: the bodies are looked at only when the IL parser
@@ -781,15 +794,16 @@ pub fn parse_text(
         None => src,
     };
     let src = if lang == Lang::St {
-        // `fb : FB_X(a := 1);`: FB_init arguments, one E0329 each (`fb_init_args`)
-        let src = match super::fb_init_args::fb_init_arguments(file, src, &toks, diags) {
-            Some(t) => {
-                uninitialised = t;
-                (toks, problems) = lex(&uninitialised);
-                uninitialised.as_str()
-            }
-            None => src,
-        };
+        // `fb : FB_X(a := 1);`: FB_init arguments, kept for `fb_init` (`fb_init_args`)
+        let src =
+            match super::fb_init_args::fb_init_arguments(file, src, &toks, diags, &mut decl_args) {
+                Some(t) => {
+                    uninitialised = t;
+                    (toks, problems) = lex(&uninitialised);
+                    uninitialised.as_str()
+                }
+                None => src,
+            };
         let (blanked, refs) = RefTypes::blank_keywords(file, src, &toks);
         references = refs;
         let src = match blanked {
@@ -896,7 +910,21 @@ pub fn parse_text(
                 diags.push(
                     Diagnostic::warning(
                         code::W0304,
-                        format!("`FUNCTION_BLOCK {m}` of `{}`: the modifier is ignored", p.name),
+                        format!(
+                            "`{} {m}` of `{}`: the modifier is ignored",
+                            if src
+                                .get(..r.start)
+                                .unwrap_or("")
+                                .trim_end()
+                                .to_ascii_uppercase()
+                                .ends_with("PROGRAM")
+                            {
+                                "PROGRAM"
+                            } else {
+                                "FUNCTION_BLOCK"
+                            },
+                            p.name
+                        ),
                     )
                     .at(Span::new(file, r.start, r.end))
                     .with_primary_label("ignored")
@@ -925,10 +953,10 @@ pub fn parse_text(
                 .iter()
                 .any(|p| p.body.start <= r.start && r.end <= p.body.end)
             {
-                diags.push(pragma_diagnostic(
-                    src.get(r.clone()).unwrap_or("{}"),
-                    Span::new(file, r.start, r.end),
-                ));
+                let pragma = src.get(r.clone()).unwrap_or("{}");
+                if !super::fb_init::is_call_after_init(pragma) {
+                    diags.push(pragma_diagnostic(pragma, Span::new(file, r.start, r.end)));
+                }
                 blank(&mut text, r.clone());
             }
         }
@@ -955,6 +983,8 @@ pub fn parse_text(
                 oop: Some(Box::new(super::inherit::Oop::interface(
                     file, src, p, methods,
                 ))),
+                fb_init_args: Vec::new(),
+                after_init: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1002,6 +1032,8 @@ pub fn parse_text(
                 sfc: true,
                 methods: Vec::new(),
                 oop: None,
+                fb_init_args: Vec::new(),
+                after_init: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1139,6 +1171,8 @@ pub fn parse_text(
                     sfc: false,
                     methods,
                     oop: oop.map(Box::new),
+                    fb_init_args: Vec::new(),
+                    after_init: super::fb_init::after_init_methods(file, src, p, diags),
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -1174,6 +1208,20 @@ pub fn parse_text(
             !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
         })),
         None => diags.extend(end_at_end_of_file(file, src, &pous, local)),
+    }
+    if !decl_args.is_empty() {
+        pending.push(PendingBody {
+            file,
+            name_start: usize::MAX,
+            base: 0,
+            text: String::new(),
+            actions: Vec::new(),
+            sfc: false,
+            methods: Vec::new(),
+            oop: None,
+            fb_init_args: decl_args,
+            after_init: Vec::new(),
+        });
     }
     (unit, pending, var_config.1)
 }
@@ -1280,6 +1328,25 @@ pub fn compile_pending(
     if pending.is_empty() {
         return;
     }
+    // the blocks whose text declares an FB_init (before a block that is not compiled loses it)
+    let declares_fb_init: std::collections::HashSet<String> = pending
+        .iter()
+        .filter(|pb| pb.methods.iter().any(|m| m.name.is("FB_init")))
+        .filter_map(|pb| {
+            units
+                .iter()
+                .flat_map(|u| u.items.iter())
+                .find_map(|i| match i {
+                    LibraryElement::Pou(p)
+                        if p.name.span.file == pb.file
+                            && p.name.span.start as usize == pb.name_start =>
+                    {
+                        Some(p.name.key())
+                    }
+                    _ => None,
+                })
+        })
+        .collect();
     // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
     let flat;
     let mut interfaces = Vec::new();
@@ -1411,6 +1478,8 @@ pub fn compile_pending(
                 .extend(standalone.into_iter().map(LibraryElement::Action));
         }
     }
+    // FB_init: each instance's, before the first cycle, with its declaration's arguments
+    super::fb_init::add_init_calls(units, pending, &declares_fb_init, &mut decls, diags);
     let seen: std::collections::HashSet<_> = diags
         .iter()
         .map(|d| (d.code, d.message.clone(), d.span.map(|s| (s.start, s.end))))
@@ -1572,6 +1641,7 @@ pub fn lower_method(
         own.push(VarBlock::locals(vec![r.clone()], r.span));
     }
     let mut rename: std::collections::HashMap<String, String> = Default::default();
+    let mut rename_back: Vec<(String, String)> = Vec::new();
     for v in own.iter().flat_map(|b| b.vars.iter()) {
         let new = if m.ret.as_ref().is_some_and(|r| r.name.key() == v.name.key()) {
             method_result(&m.name.name)
@@ -1590,7 +1660,11 @@ pub fn lower_method(
         b.vars.retain(|v| !rename.contains_key(&v.name.key()));
     }
     view.var_blocks.extend(own);
-    let stmts = super::parse_statements(file, &m.text, m.base, diags);
+    // `THIS^.x` where the method declares its own `x` (`THIS^.nId := nId;` in an FB_init): the
+    // block's variable, read in the text as a hidden name of the same length that the view declares
+    // and the renaming below turns back into `x`
+    let text = this_shadowed(&m.text, p, &rename, &mut view, &mut rename_back);
+    let stmts = super::parse_statements(file, &text, m.base, diags);
     let mut low = super::PouLowering::new(decls, &view);
     let mut body = low.statements(&stmts, diags);
     if let Some(t) = low.finish(m.name.span) {
@@ -1607,6 +1681,7 @@ pub fn lower_method(
         t.kind = VarKind::Temp;
         p.var_blocks.push(t);
     }
+    rename.extend(rename_back);
     crate::rename::Renames {
         bases: rename,
         ..Default::default()
@@ -1658,6 +1733,63 @@ pub fn lower_method(
         method_inputs: Some(inputs),
         diagnostics: Vec::new(),
     })
+}
+
+/// The prefix of the hidden name that reads `THIS^.x` in a method that declares its own `x`: as
+/// long as `THIS^.`, so that positions do not move.
+const THIS_PREFIX: &str = "__THS_";
+
+/// `text` (a method's statements) with each `THIS^.x`, where `x` is a variable of the block `p`
+/// that the method's own `x` shadows (`rename` holds the method's names), written `__THS_x`; `view`
+/// declares `__THS_x` as the block's `x`, and `back` maps it to `x` for the renaming after the
+/// lowering.
+fn this_shadowed(
+    text: &str,
+    p: &crate::ast::Pou,
+    rename: &std::collections::HashMap<String, String>,
+    view: &mut crate::ast::Pou,
+    back: &mut Vec<(String, String)>,
+) -> String {
+    if !text.contains('^') {
+        return text.to_string();
+    }
+    let (toks, _) = lex(text);
+    let mut out = text.to_string();
+    for w in toks.windows(4) {
+        if !(is_word(text, &w[0], "THIS")
+            && w[1].tok == Tok::Caret
+            && w[2].tok == Tok::Dot
+            && w[3].tok == Tok::Ident)
+        {
+            continue;
+        }
+        let x = word(text, &w[3]);
+        let key = x.to_ascii_uppercase();
+        if !rename.contains_key(&key) {
+            continue;
+        }
+        let Some(v) = p
+            .var_blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .find(|v| v.name.key() == key)
+        else {
+            continue;
+        };
+        let hidden = format!("{THIS_PREFIX}{x}");
+        if w[3].range.end - w[0].range.start != hidden.len() {
+            continue;
+        }
+        out.replace_range(w[0].range.start..w[3].range.end, &hidden);
+        if !back.iter().any(|(k, _)| *k == hidden.to_ascii_uppercase()) {
+            back.push((hidden.to_ascii_uppercase(), v.name.name.clone()));
+            let mut decl = v.clone();
+            decl.name.name = hidden;
+            view.var_blocks
+                .push(crate::ast::VarBlock::locals(vec![decl], v.span));
+        }
+    }
+    out
 }
 
 #[cfg(test)]

@@ -521,6 +521,14 @@ fn flatten_one(
     }
     let own_text = pb.text.clone();
     pb.text = ctx.rewrite(pb.file, &own_text, pb.base, n, diags);
+    // FB_init: every base's version runs before the block's own, on the same instance (Beckhoff
+    // "Behavior with derived function blocks", CODESYS "Method: FB_Init": the base's FB_init is
+    // executed implicitly, then the derived block's), see `super::fb_init`
+    if let Some(v) = versions.get("FB_INIT") {
+        for &(j, _, _) in &v[..v.len().saturating_sub(1)] {
+            ctx.needed.push(Hidden::Method(j, "FB_INIT".to_string()));
+        }
+    }
     // the hidden versions SUPER^ calls, and the versions and bodies they call in turn
     let mut done = HashSet::new();
     while let Some(h) = ctx.needed.pop() {

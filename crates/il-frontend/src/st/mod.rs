@@ -13,7 +13,8 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
-mod fb_init_args;
+pub mod fb_init;
+pub mod fb_init_args;
 pub mod file;
 pub mod infer;
 pub mod inherit;
@@ -23,7 +24,7 @@ mod list_bounds;
 pub mod lower;
 pub mod parser;
 pub mod property;
-mod qualifiers;
+pub mod qualifiers;
 pub mod refs;
 mod scl;
 pub mod sfc;

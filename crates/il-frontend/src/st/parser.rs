@@ -169,7 +169,10 @@ impl<'s, 'd> Parser<'s, 'd> {
             Problem::Pragma(r) => {
                 let span = self.span(r.start, r.end);
                 let text = self.src.get(r).unwrap_or("{}");
-                self.diags.push(super::lexer::pragma_diagnostic(text, span));
+                // (`{attribute 'call_after_init'}` is applied: `super::fb_init`)
+                if !super::fb_init::is_call_after_init(text) {
+                    self.diags.push(super::lexer::pragma_diagnostic(text, span));
+                }
                 return;
             }
             Problem::FlatComment(r) => {

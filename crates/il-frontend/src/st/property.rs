@@ -377,7 +377,18 @@ impl Rewriter<'_, '_> {
                 accessors: p.accessors[..k].to_vec(),
                 span: p.span,
             };
-            if let Some(t) = self.env.place_type(&prefix) {
+            // `PRG.P`: a property of a program (CODESYS, TwinCAT), on its one instance
+            let program = match (&p.base, k) {
+                (PlaceBase::Name(n), 0) if !self.env.vars.contains_key(&n.key()) => self
+                    .env
+                    .decls
+                    .pous
+                    .get(&n.key())
+                    .filter(|i| i.kind == crate::ast::PouKind::Program)
+                    .map(|_| TypeRef::Named(n.clone())),
+                _ => None,
+            };
+            if let Some(t) = self.env.place_type(&prefix).or(program) {
                 if let Some(pr) = self.member_prop(&t, f) {
                     return Some((At::Field(k), pr, f.clone()));
                 }

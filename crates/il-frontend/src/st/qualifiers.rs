@@ -24,6 +24,53 @@ pub const PROVIDED_LIBRARIES: &[&str] = &[
     "TC2_MC2",
 ];
 
+thread_local! {
+    /// The PROGRAM names of the project's files (upper case), set by [`set_project_programs`]:
+    /// `PRG.M(x)` in a body calls a method or action of a program of another file (a TwinCAT
+    /// project has one POU per file), not a function of a library `PRG`.
+    static PROJECT_PROGRAMS: std::cell::RefCell<std::collections::HashSet<String>> =
+        Default::default();
+}
+
+/// Sets the PROGRAM names that [`library_qualifiers`] takes as declared (every file of the
+/// project's); returns the names set before, to put back when the project is read.
+pub fn set_project_programs(
+    names: std::collections::HashSet<String>,
+) -> std::collections::HashSet<String> {
+    PROJECT_PROGRAMS.with(|p| p.replace(names))
+}
+
+/// The names after the word `PROGRAM` in `text` (an `.st` file or a TwinCAT object's XML), upper
+/// case: a scan of the raw text, before any file is parsed.
+pub fn program_names(text: &str) -> Vec<String> {
+    let b = text.as_bytes();
+    let word = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i + 7 <= b.len() {
+        let keyword = b[i..i + 7].eq_ignore_ascii_case(b"PROGRAM")
+            && (i == 0 || !word(b[i - 1]))
+            && b.get(i + 7).is_some_and(|c| c.is_ascii_whitespace());
+        if !keyword {
+            i += 1;
+            continue;
+        }
+        let mut j = i + 7;
+        while b.get(j).is_some_and(|c| c.is_ascii_whitespace()) {
+            j += 1;
+        }
+        let start = j;
+        while b.get(j).is_some_and(|&c| word(c)) {
+            j += 1;
+        }
+        if j > start {
+            out.push(text[start..j].to_ascii_uppercase());
+        }
+        i = j;
+    }
+    out
+}
+
 /// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
 /// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
 /// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
@@ -72,7 +119,12 @@ pub(super) fn library_qualifiers(
         let (Some(dot), Some(member)) = (toks.get(k + 1), toks.get(k + 2)) else {
             continue;
         };
-        if !ident(t) || dot.tok != Tok::Dot || !ident(member) || declared.contains(&w) {
+        if !ident(t)
+            || dot.tok != Tok::Dot
+            || !ident(member)
+            || declared.contains(&w)
+            || PROJECT_PROGRAMS.with(|p| p.borrow().contains(&w))
+        {
             continue;
         }
         let prev = k.checked_sub(1).map(|p| &toks[p]);

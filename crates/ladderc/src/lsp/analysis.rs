@@ -309,6 +309,11 @@ impl Analysis {
             .pous
             .iter()
             .filter(|p| Some(p.span.file) == self.file)
+            // (not the hidden program that runs the FB_init methods: no text of the file)
+            .filter(|p| {
+                !p.name
+                    .eq_ignore_ascii_case(il_frontend::st::fb_init::PROGRAM)
+            })
             .map(|p| (p.name.clone(), p.kind, p.span, p.vars.iter().collect()))
             .collect()
     }
