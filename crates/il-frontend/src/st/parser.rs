@@ -19,6 +19,10 @@ use diagnostics::{code, Code, Diagnostic, Diagnostics};
 
 /// Deeper nesting of blocks or parentheses than this is reported (E0108) instead of recursing.
 const MAX_DEPTH: usize = 200;
+/// The most places one chained assignment `a := b := ... := e;` writes (ExST).
+const MAX_ASSIGN_CHAIN: usize = 64;
+/// The most tokens a place may span for the chained-assignment lookahead.
+const MAX_PLACE_LOOKAHEAD: usize = 256;
 
 /// More operations than this in one expression (operators, function calls and array indexes, in its
 /// parentheses and call arguments too) is E0109. The C of a long expression is linear (about one line per
@@ -485,15 +489,57 @@ impl<'s, 'd> Parser<'s, 'd> {
         })
     }
 
+    /// Whether the tokens from the current one are a place followed by `:=` (the `b :=` of
+    /// `a := b := e;`); looks at most [`MAX_PLACE_LOOKAHEAD`] tokens ahead.
+    fn at_place_then_assign(&self) -> bool {
+        if !matches!(self.peek(), Tok::Ident | Tok::Address(..)) {
+            return false;
+        }
+        let mut depth = 0usize;
+        for i in 1..MAX_PLACE_LOOKAHEAD {
+            match self.peek_at(i) {
+                Tok::Assign if depth == 0 => return true,
+                Tok::LBracket => depth += 1,
+                Tok::RBracket if depth > 0 => depth -= 1,
+                Tok::Dot | Tok::Caret | Tok::Ident | Tok::Int(_) => {}
+                Tok::Semi | Tok::Eof | Tok::Assign => return false,
+                _ if depth > 0 => {}
+                _ => return false,
+            }
+        }
+        false
+    }
+
     /// `x := e`, `inst(...)`, `F(...)`; anything else that starts with a name is reported here.
     fn assign_or_call(&mut self) -> Option<StmtKind> {
         let target = self.place()?;
         match self.peek() {
             Tok::Assign => {
                 self.bump();
-                let value = self.expr();
+                // `a := b := e;`: ExST's assignment as an expression (CODESYS, TwinCAT: "int_var1 and
+                // int_var2 receive the value of int_var3 + 9"), read as `b := e; a := b;`
+                let mut chain = vec![target];
+                while chain.len() < MAX_ASSIGN_CHAIN && self.at_place_then_assign() {
+                    let place = self.place()?;
+                    self.bump();
+                    chain.push(place);
+                }
+                let mut value = self.expr();
                 if matches!(value.kind, ExprKind::Error) {
                     return None;
+                }
+                let mut target = chain.pop()?;
+                while let Some(outer) = chain.pop() {
+                    let span = target.span.to(value.span);
+                    let read = Expr {
+                        span: target.span,
+                        kind: ExprKind::Place(target.clone()),
+                    };
+                    self.hoisted.push(Stmt {
+                        kind: StmtKind::Assign { target, value },
+                        span,
+                    });
+                    (target, value) = (outer, read);
                 }
                 Some(StmtKind::Assign { target, value })
             }
