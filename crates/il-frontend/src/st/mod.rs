@@ -13,6 +13,8 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
+mod conditional;
+mod conflict_markers;
 mod fb_init_args;
 pub mod file;
 pub mod infer;
@@ -30,6 +32,7 @@ pub mod types;
 mod var_config;
 
 pub use lower::PouLowering;
+pub use qualifiers::{offered_names, with_other_files_names};
 pub use types::{Declarations, PouInterface};
 
 use crate::ast::{IlStmt, Pou, VarBlock};
