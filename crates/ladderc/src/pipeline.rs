@@ -432,7 +432,9 @@ impl Session {
                 let stem = if stdin {
                     None
                 } else {
-                    p.file_stem().and_then(|s| s.to_str())
+                    p.file_stem()
+                        .and_then(|s| s.to_str())
+                        .map(crate::text_lists::object_name)
                 };
                 let implicit = match stem {
                     Some(stem) if is_iec_identifier(stem) => stem,
@@ -445,8 +447,12 @@ impl Session {
                     // (the unit is pushed next, in either branch below)
                     text_lists.push((units.len(), implicit.to_string()));
                 }
-                if local.iter().any(|d| d.code == code::E0022) {
-                    // a bound may name a constant of a file read later: parsed again below
+                if local
+                    .iter()
+                    .any(|d| d.code == code::E0022 || d.code == code::E1032)
+                {
+                    // a bound may name a constant of a file read later, a qualifier a list or
+                    // variable of a file read later: parsed again below
                     offered.push(il_frontend::parser::global_integer_constants(&unit, &local));
                     waiting.push(WaitingFile {
                         unit: units.len(),
@@ -466,9 +472,21 @@ impl Session {
                 var_config.extend(entries);
             }
         }
+        // the names every file declares, and the global lists named after their files
+        let names: std::collections::HashSet<String> = units
+            .iter()
+            .flat_map(il_frontend::st::offered_names)
+            .chain(
+                text_lists
+                    .iter()
+                    .chain(twincat_lists.iter())
+                    .map(|(_, n)| n.to_ascii_uppercase()),
+            )
+            .collect();
         self.reparse_with_other_files_constants(
             waiting,
             offered,
+            names,
             &mut units,
             &mut pending,
             &mut var_config,
@@ -505,11 +523,14 @@ impl Session {
     /// declare, E0022) with the integer constants of the other files' `VAR_GLOBAL CONSTANT` lists
     /// known (CODESYS keeps `N_AXES` in `GVL.st`, `ARRAY[1..N_AXES]` in another object's file), until
     /// no new constant is found: at most once per waiting file, so a chain of constants across files
-    /// resolves and a cycle stops. The last parse of each file is kept, with its diagnostics.
+    /// resolves and a cycle stops. The last parse of each file is kept, with its diagnostics. A file
+    /// whose qualifier named no library (E1032) is parsed again with `names`, those the project's
+    /// files declare, known: `GVL.fbTimer(...)` with the list `GVL` in another file is no library.
     fn reparse_with_other_files_constants(
         &mut self,
         mut waiting: Vec<WaitingFile>,
         offered: Vec<std::collections::HashMap<String, i128>>,
+        names: std::collections::HashSet<String>,
         units: &mut [CompilationUnit],
         pending: &mut Vec<il_frontend::st::file::PendingBody>,
         var_config: &mut Vec<il_frontend::st::file::ConfigEntry>,
@@ -526,7 +547,15 @@ impl Session {
                 let src = w.text.as_ref().unwrap_or(&self.map.get(w.file).text);
                 let mut local = Diagnostics::new();
                 let parsed = il_frontend::parser::with_other_files_constants(known.clone(), || {
-                    il_frontend::st::file::parse_text(w.file, src, &w.implicit, w.lang, &mut local)
+                    il_frontend::st::with_other_files_names(names.clone(), || {
+                        il_frontend::st::file::parse_text(
+                            w.file,
+                            src,
+                            &w.implicit,
+                            w.lang,
+                            &mut local,
+                        )
+                    })
                 });
                 found.extend(il_frontend::parser::global_integer_constants(
                     &parsed.0, &local,
