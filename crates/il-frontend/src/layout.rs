@@ -569,6 +569,18 @@ impl<'s> Layout<'s> {
         match raw {
             RawToken::Word => {
                 let text = &self.src[s..e];
+                // `TYPE T : UNION ... END_UNION` (CODESYS, TwinCAT) is read as a structure, the
+                // grammar's TypeDecl marks it a union; elsewhere UNION stays a name
+                let top = self.stack.last();
+                if text.eq_ignore_ascii_case("UNION")
+                    && matches!(top, Some(Frame::Type(..)))
+                    && !matches!(self.prev, Last::LParen | Last::Comma)
+                {
+                    return Tok::Word(Word::Struct);
+                }
+                if text.eq_ignore_ascii_case("END_UNION") && matches!(top, Some(Frame::Struct(..))) {
+                    return Tok::Word(Word::EndStruct);
+                }
                 match crate::lexer::classify(text) {
                     w if !w.is_name()
                         && !self.declared.is_empty()
