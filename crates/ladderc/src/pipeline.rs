@@ -472,13 +472,23 @@ impl Session {
                 var_config.extend(entries);
             }
         }
-        // the names every file declares, and the global lists named after their files
+        // the names every file declares, and the global lists named after their files (a text
+        // file is a list when it holds nothing else, as `text_lists::name_text_lists` names it)
+        let is_list = |k: &usize| {
+            units.get(*k).is_some_and(|u| {
+                !u.items.is_empty()
+                    && u.items
+                        .iter()
+                        .all(|i| matches!(i, il_frontend::ast::LibraryElement::GlobalVars(_)))
+            })
+        };
         let names: std::collections::HashSet<String> = units
             .iter()
             .flat_map(il_frontend::st::offered_names)
             .chain(
                 text_lists
                     .iter()
+                    .filter(|(k, _)| is_list(k))
                     .chain(twincat_lists.iter())
                     .map(|(_, n)| n.to_ascii_uppercase()),
             )
