@@ -119,6 +119,39 @@ fn a_twincat_variant_declaration_compiles_the_else_branch() {
     assert!(!stderr.contains("E1002") && !stderr.contains("W0300"), "{stderr}");
 }
 
+/// The same program in a `.plcproj` whose properties define the variant (`<CompilerDefines>`,
+/// TwinCAT's "Compiler defines" field, with a value): the `{IF}` branch is compiled and `hasvalue`
+/// reads the value, without a W1419 note.
+#[test]
+fn a_twincat_project_s_compiler_defines_choose_the_branch() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("POUs")).unwrap();
+    let proj = dir.path().join("P.plcproj");
+    std::fs::write(
+        &proj,
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<Project DefaultTargets=\"Build\" xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\n\
+         \x20 <PropertyGroup>\n    <Name>P</Name>\n    <CompilerDefines>TestVariant1, Speed:='7'</CompilerDefines>\n  </PropertyGroup>\n\
+         \x20 <ItemGroup>\n    <Compile Include=\"POUs\\MAIN.TcPOU\">\n      <SubType>Code</SubType>\n    </Compile>\n  </ItemGroup>\n</Project>\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("POUs").join("MAIN.TcPOU"),
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"3.1.4024.3\">\n\
+         \x20 <POU Name=\"MAIN\" Id=\"{e1a68a50-22b2-4ff7-bc63-b3e286c69b24}\" SpecialFunc=\"None\">\n\
+         \x20   <Declaration><![CDATA[PROGRAM MAIN\nVAR\n\t{IF defined (TestVariant1)}\n\tnLimit : INT := 10;\n\t{ELSE}\n\
+         \tnLimit : INT := 2;\n\t{END_IF}\n\tnStep : INT;\nEND_VAR\n]]></Declaration>\n    <Implementation>\n\
+         \x20     <ST><![CDATA[{IF hasvalue (Speed, '7')}\nnStep := nStep + 7;\n{ELSE}\nnStep := nStep + 1;\n{END_IF}]]></ST>\n\
+         \x20   </Implementation>\n  </POU>\n</TcPlcObject>\n",
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced_files(&[&proj], 3, "MAIN.nLimit,MAIN.nStep");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,MAIN.nLimit,MAIN.nStep\n0,0,10,7\n1,10,10,14\n2,20,10,21\n"
+    );
+    assert!(!stderr.contains("W1419"), "{stderr}");
+}
+
 /// A condition ladderc cannot evaluate is E1037 and compiles none of its sections; an `{ELSE}` or
 /// `{END_IF}` without its `{IF}`, and an `{IF}` never closed, are E1038. Each is one located error.
 #[test]

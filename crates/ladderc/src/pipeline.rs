@@ -257,7 +257,11 @@ impl Session {
         // TwinCAT 3: a .plcproj (or a folder holding one) stands for the object files it lists; the
         // units read from object files, their global lists' names, their tasks
         let mut expand_diags = Diagnostics::new();
-        let paths = crate::twincat::expand(self, paths, &mut expand_diags);
+        let mut defines = Vec::new();
+        let paths = crate::twincat::expand(self, paths, &mut defines, &mut expand_diags);
+        // the projects' compiler defines, known to the conditional pragmas of every file read
+        // below (and read again), until this function returns
+        let _defines = il_frontend::st::ProjectDefines::set(defines);
         self.diags.extend(expand_diags);
         let mut twincat_units: Vec<bool> = Vec::new();
         let mut twincat_lists: Vec<(usize, String)> = Vec::new();

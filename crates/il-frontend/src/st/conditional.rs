@@ -12,20 +12,49 @@
 //! Invariants: sections nest; in a section that is not compiled, nothing is evaluated and no define
 //! changes; a condition that cannot be evaluated (E1037) compiles none of its sections, so that no
 //! branch is chosen by guess. Defines are the text's own (`{define}` before the condition, in text
-//! order) and case-insensitive, as IEC 61131-3 names are.
+//! order), and a TwinCAT project's `<CompilerDefines>` ([`ProjectDefines`]); they are
+//! case-insensitive, as IEC 61131-3 names are.
 //!
 //! The standard leaves pragmas to the implementation (IEC 61131-3 ed. 3, 6.2). Beckhoff documents
 //! that from TwinCAT 3.1 build 4024 these pragmas are evaluated in declarations as in implementations
 //! ("Conditional pragmas", TC3 PLC intro), which is how ladderc reads them everywhere: a variable
-//! declared once in each branch (a variant's value) is declared once. Defines set in a project's
-//! properties (`<CompilerDefines>` of a `.plcproj`) or by a variant are not read: `defined (X)` of
-//! a name the text does not define is FALSE, with the W1419 note saying so.
+//! declared once in each branch (a variant's value) is declared once. Defines set by a project
+//! variant (`.tsproj`) are not read: `defined (X)` of a name that neither the text nor the
+//! project's properties define is FALSE, with the W1419 note saying so.
 
 use super::lexer::Problem;
 use crate::{FileId, Span};
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
 use std::collections::{HashMap, HashSet};
 use std::ops::Range;
+
+thread_local! {
+    /// The compiler defines of the project being read (upper-case name to value), set by
+    /// [`ProjectDefines::set`]; empty otherwise.
+    static PROJECT_DEFINES: std::cell::RefCell<HashMap<String, String>> = Default::default();
+}
+
+/// Holds the project's compiler defines (a TwinCAT `.plcproj`'s `<CompilerDefines>`) known to
+/// every text read while it lives; the defines before it are back when it is dropped.
+pub struct ProjectDefines(HashMap<String, String>);
+
+impl ProjectDefines {
+    /// Makes `defines` (name, value) known until the returned guard is dropped.
+    pub fn set(defines: Vec<(String, String)>) -> ProjectDefines {
+        let map = defines
+            .into_iter()
+            .map(|(n, v)| (n.to_ascii_lowercase(), v))
+            .collect();
+        ProjectDefines(PROJECT_DEFINES.with(|d| d.replace(map)))
+    }
+}
+
+impl Drop for ProjectDefines {
+    fn drop(&mut self) {
+        let before = std::mem::take(&mut self.0);
+        PROJECT_DEFINES.with(|d| d.replace(before));
+    }
+}
 
 /// What a pragma's text asks, when it is a conditional-compilation directive.
 enum Directive<'a> {
@@ -102,7 +131,7 @@ pub(super) fn conditional_sections(
     }
     let mut reader = Reader {
         file,
-        defines: HashMap::new(),
+        defines: PROJECT_DEFINES.with(|d| d.borrow().clone()),
         noted: HashSet::new(),
         diags: Vec::new(),
         current: 0..0,
@@ -256,7 +285,7 @@ impl Reader {
                     format!("`{name}` is not defined at this point of the text: `defined ({name})` is FALSE"),
                 )
                 .at(self.span(at))
-                .with_hint("ladderc reads the text's own `{define ...}` pragmas, not the compiler defines of a project's properties or variants; add `{define NAME}` before the `{IF}` to compile the other branch"),
+                .with_hint("ladderc reads the text's own `{define ...}` pragmas and a TwinCAT project's `<CompilerDefines>`, not a variant's defines; add `{define NAME}` before the `{IF}`, or NAME to the project's compiler defines, to compile the other branch"),
             );
         }
         false

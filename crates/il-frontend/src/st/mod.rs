@@ -32,6 +32,7 @@ pub mod types;
 mod var_config;
 
 pub use lower::PouLowering;
+pub use conditional::ProjectDefines;
 pub use qualifiers::{offered_names, with_other_files_names};
 pub use types::{Declarations, PouInterface};
 
