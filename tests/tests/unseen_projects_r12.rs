@@ -116,7 +116,10 @@ fn a_twincat_variant_declaration_compiles_the_else_branch() {
         stderr.contains("MAIN.TcPOU:6:2: note[W1419]: `TestVariant1` is not defined"),
         "{stderr}"
     );
-    assert!(!stderr.contains("E1002") && !stderr.contains("W0300"), "{stderr}");
+    assert!(
+        !stderr.contains("E1002") && !stderr.contains("W0300"),
+        "{stderr}"
+    );
 }
 
 /// The same program in a `.plcproj` whose properties define the variant (`<CompilerDefines>`,
@@ -253,7 +256,15 @@ fn a_list_exported_as_name_gvl_is_called_from_another_file() {
     let out = ladderc()
         .args(["--message-format", "short", "run"])
         .args([&gvl, &fb, &prg])
-        .args(["--cycles", "4", "--cycle-ms", "10", "--sanitize", "--trace", "-"])
+        .args([
+            "--cycles",
+            "4",
+            "--cycle-ms",
+            "10",
+            "--sanitize",
+            "--trace",
+            "-",
+        ])
         .args(["--watch", "global.Fila.count,global.nTotal"])
         .output()
         .unwrap();

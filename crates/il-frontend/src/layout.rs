@@ -578,7 +578,8 @@ impl<'s> Layout<'s> {
                 {
                     return Tok::Word(Word::Struct);
                 }
-                if text.eq_ignore_ascii_case("END_UNION") && matches!(top, Some(Frame::Struct(..))) {
+                if text.eq_ignore_ascii_case("END_UNION") && matches!(top, Some(Frame::Struct(..)))
+                {
                     return Tok::Word(Word::EndStruct);
                 }
                 match crate::lexer::classify(text) {

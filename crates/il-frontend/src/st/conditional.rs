@@ -148,7 +148,11 @@ pub(super) fn conditional_sections(
         };
         match d {
             Directive::If(cond) => {
-                let value = if was { reader.condition(cond, &r) } else { None };
+                let value = if was {
+                    reader.condition(cond, &r)
+                } else {
+                    None
+                };
                 stack.push(Frame {
                     at: r.clone(),
                     outer: was,
@@ -256,7 +260,9 @@ impl Reader {
         match (v, unknown) {
             (Some(v), None) if complete => Some(v),
             (_, why) => {
-                let why = why.unwrap_or_else(|| format!("`{}` is not a condition ladderc reads", cond.trim()));
+                let why = why.unwrap_or_else(|| {
+                    format!("`{}` is not a condition ladderc reads", cond.trim())
+                });
                 self.diags.push(
                     Diagnostic::error(
                         code::E1037,

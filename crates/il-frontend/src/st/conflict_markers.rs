@@ -48,11 +48,7 @@ struct Open {
 
 /// Blanks the conflict markers and the sides after the first (see the module header); `None`
 /// when `src` holds no closed conflict.
-pub(super) fn conflict_markers(
-    file: FileId,
-    src: &str,
-    diags: &mut Diagnostics,
-) -> Option<String> {
+pub(super) fn conflict_markers(file: FileId, src: &str, diags: &mut Diagnostics) -> Option<String> {
     if !src.contains(">>>>>>>") || !src.contains("<<<<<<<") {
         return None;
     }

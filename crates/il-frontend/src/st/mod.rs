@@ -31,8 +31,8 @@ pub mod sfc;
 pub mod types;
 mod var_config;
 
-pub use lower::PouLowering;
 pub use conditional::ProjectDefines;
+pub use lower::PouLowering;
 pub use qualifiers::{offered_names, with_other_files_names};
 pub use types::{Declarations, PouInterface};
 

@@ -46,9 +46,7 @@ pub fn with_other_files_names<R>(
 
 /// The names `unit` declares for the project's other files (upper case): its POUs, types, global
 /// variables, named global lists and configurations.
-pub fn offered_names(
-    unit: &crate::ast::CompilationUnit,
-) -> impl Iterator<Item = String> + '_ {
+pub fn offered_names(unit: &crate::ast::CompilationUnit) -> impl Iterator<Item = String> + '_ {
     use crate::ast::LibraryElement;
     unit.items.iter().flat_map(|item| -> Vec<String> {
         match item {
@@ -61,7 +59,11 @@ pub fn offered_names(
                 .chain(b.vars.iter().map(|v| v.name.key()))
                 .collect(),
             LibraryElement::Configuration(c) => std::iter::once(c.name.key())
-                .chain(c.globals.iter().flat_map(|b| b.vars.iter().map(|v| v.name.key())))
+                .chain(
+                    c.globals
+                        .iter()
+                        .flat_map(|b| b.vars.iter().map(|v| v.name.key())),
+                )
                 .collect(),
             LibraryElement::Action(_) => Vec::new(),
         }
