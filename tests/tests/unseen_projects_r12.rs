@@ -326,3 +326,23 @@ fn a_union_member_stored_otherwise_is_e1040() {
         ]
     );
 }
+
+/// A `;` after a block's closing keyword (`END_TYPE;`, `END_PROGRAM;`, as snackmasta's machine-
+/// written ST has them) is one E0011 that says so, and only the `;` is skipped. Before: E0007 "`;`
+/// comments are not IEC 61131-3", which took it for an IL dialect's comment and skipped the line.
+#[test]
+fn a_semicolon_after_a_block_end_is_named() {
+    let heads = rejected_heads(
+        "types.st",
+        "TYPE E_Mode : (IDLE, RUN);\nEND_TYPE;\n\nTYPE ST_Car :\nSTRUCT\n  nWidth : INT;\nEND_STRUCT;\nEND_TYPE; // car\n\n\
+         PROGRAM main\nVAR car : ST_Car; mode : E_Mode; END_VAR\ncar.nWidth := car.nWidth + 1;\nEND_PROGRAM;\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "types.st:2:9: error[E0011]: unexpected `;` after `END_TYPE`",
+            "types.st:8:9: error[E0011]: unexpected `;` after `END_TYPE`",
+            "types.st:13:12: error[E0011]: unexpected `;` after `END_PROGRAM`",
+        ]
+    );
+}
