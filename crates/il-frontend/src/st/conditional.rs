@@ -260,8 +260,9 @@ impl Reader {
         match (v, unknown) {
             (Some(v), None) if complete => Some(v),
             (_, why) => {
-                let why = why.unwrap_or_else(|| {
-                    format!("`{}` is not a condition ladderc reads", cond.trim())
+                let why = why.unwrap_or_else(|| match cond.trim() {
+                    "" => "it has no condition".to_string(),
+                    c => format!("`{c}` is not a condition ladderc reads"),
                 });
                 self.diags.push(
                     Diagnostic::error(
