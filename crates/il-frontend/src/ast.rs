@@ -204,6 +204,9 @@ pub struct TypeDecl {
     pub name: Ident,
     /// What the name stands for: an alias/subrange/array, a structure or an enumeration.
     pub def: TypeDef,
+    /// A structure written `UNION ... END_UNION` (CODESYS, TwinCAT): its members share one storage.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub union: bool,
     /// From the name to the terminating `;` (or `END_STRUCT;`).
     pub span: Span,
 }

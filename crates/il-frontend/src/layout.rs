@@ -569,6 +569,19 @@ impl<'s> Layout<'s> {
         match raw {
             RawToken::Word => {
                 let text = &self.src[s..e];
+                // `TYPE T : UNION ... END_UNION` (CODESYS, TwinCAT) is read as a structure, the
+                // grammar's TypeDecl marks it a union; elsewhere UNION stays a name
+                let top = self.stack.last();
+                if text.eq_ignore_ascii_case("UNION")
+                    && matches!(top, Some(Frame::Type(..)))
+                    && !matches!(self.prev, Last::LParen | Last::Comma)
+                {
+                    return Tok::Word(Word::Struct);
+                }
+                if text.eq_ignore_ascii_case("END_UNION") && matches!(top, Some(Frame::Struct(..)))
+                {
+                    return Tok::Word(Word::EndStruct);
+                }
                 match crate::lexer::classify(text) {
                     w if !w.is_name()
                         && !self.declared.is_empty()
@@ -961,8 +974,43 @@ impl<'s> Layout<'s> {
             && matches!(ahead.next(), Some(Ok(RawToken::Assign | RawToken::Arrow)))
     }
 
-    /// `; text` in an instruction list: reported, skipped to the end of the line.
+    /// `; text` in an instruction list: reported, skipped to the end of the line. A `;` right after
+    /// a block's closing keyword (`END_TYPE;`, `END_PROGRAM;`, common in hand-written ST) is no
+    /// comment: it is reported as what it is, and only it is skipped.
     fn semicolon_comment(&mut self, s: usize) {
+        let before = self.src[..s].trim_end();
+        let word_start = before
+            .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .map_or(0, |i| i + 1);
+        let word = &before[word_start..];
+        const BLOCK_ENDS: &[&str] = &[
+            "END_VAR",
+            "END_TYPE",
+            "END_STRUCT",
+            "END_UNION",
+            "END_PROGRAM",
+            "END_FUNCTION",
+            "END_FUNCTION_BLOCK",
+            "END_CONFIGURATION",
+            "END_RESOURCE",
+            "END_ACTION",
+            "END_ACTIONS",
+            "END_METHOD",
+            "END_PROPERTY",
+            "END_INTERFACE",
+        ];
+        if BLOCK_ENDS.iter().any(|k| k.eq_ignore_ascii_case(word)) {
+            let shown = word.to_ascii_uppercase();
+            self.diags.push(
+                Diagnostic::error(code::E0011, format!("unexpected `;` after `{shown}`"))
+                    .at(self.span(s, s + 1))
+                    .with_primary_label("no `;` here")
+                    .with_hint(format!(
+                        "remove the `;`: IEC 61131-3 ends a block with `{shown}` alone"
+                    )),
+            );
+            return;
+        }
         let rest = self.lex.remainder();
         let n = rest.find(['\n', '\r']).unwrap_or(rest.len());
         self.lex.bump(n);

@@ -1226,6 +1226,18 @@ impl<'s> Ctx<'s> {
         } else {
             tok.describe(text)
         };
+        // where a declaration may start (after a `;`, or where the block may end), another `;` is
+        // expected only as an empty declaration (which TwinCAT compiles): it is not what the text
+        // lacks, so it is left out of the message
+        let decl_start = expected
+            .iter()
+            .any(|x| x == "\"END_VAR\"" || x == "\"END_STRUCT\"");
+        let expected: Vec<String> =
+            if decl_start || self.src[..end_of_previous(self.src, s)].ends_with(';') {
+                expected.into_iter().filter(|x| x != "\";\"").collect()
+            } else {
+                expected
+            };
         let expect = summarize_expected(&expected);
         let eol_expected = expected.iter().any(|x| x == "EOL");
         let semi_expected = expected.iter().any(|x| x == "\";\"");

@@ -564,12 +564,17 @@ fn type_block(out: &mut String, types: &[TypeDecl]) {
                 }
             }
             TypeDef::Struct { fields } => {
-                out.push_str("STRUCT\n");
+                let (open, close) = if t.union {
+                    ("UNION\n", "END_UNION")
+                } else {
+                    ("STRUCT\n", "END_STRUCT")
+                };
+                out.push_str(open);
                 for f in fields {
                     var_decl(out, f, 2);
                 }
                 indent(out, 1);
-                out.push_str("END_STRUCT");
+                out.push_str(close);
             }
             TypeDef::Enum { values, init } => {
                 out.push('(');

@@ -573,5 +573,10 @@ pub fn data_type(ctx: &mut Ctx, d: &Element) -> Option<TypeDecl> {
             init,
         },
     };
-    Some(TypeDecl { name, def, span })
+    Some(TypeDecl {
+        name,
+        def,
+        union: false,
+        span,
+    })
 }

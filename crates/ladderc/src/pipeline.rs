@@ -257,7 +257,11 @@ impl Session {
         // TwinCAT 3: a .plcproj (or a folder holding one) stands for the object files it lists; the
         // units read from object files, their global lists' names, their tasks
         let mut expand_diags = Diagnostics::new();
-        let paths = crate::twincat::expand(self, paths, &mut expand_diags);
+        let mut defines = Vec::new();
+        let paths = crate::twincat::expand(self, paths, &mut defines, &mut expand_diags);
+        // the projects' compiler defines, known to the conditional pragmas of every file read
+        // below (and read again), until this function returns
+        let _defines = il_frontend::st::ProjectDefines::set(defines);
         self.diags.extend(expand_diags);
         let mut twincat_units: Vec<bool> = Vec::new();
         let mut twincat_lists: Vec<(usize, String)> = Vec::new();
@@ -448,7 +452,9 @@ impl Session {
                 let stem = if stdin {
                     None
                 } else {
-                    p.file_stem().and_then(|s| s.to_str())
+                    p.file_stem()
+                        .and_then(|s| s.to_str())
+                        .map(crate::text_lists::object_name)
                 };
                 let implicit = match stem {
                     Some(stem) if is_iec_identifier(stem) => stem,
@@ -461,8 +467,12 @@ impl Session {
                     // (the unit is pushed next, in either branch below)
                     text_lists.push((units.len(), implicit.to_string()));
                 }
-                if local.iter().any(|d| d.code == code::E0022) {
-                    // a bound may name a constant of a file read later: parsed again below
+                if local
+                    .iter()
+                    .any(|d| d.code == code::E0022 || d.code == code::E1032)
+                {
+                    // a bound may name a constant of a file read later, a qualifier a list or
+                    // variable of a file read later: parsed again below
                     offered.push(il_frontend::parser::global_integer_constants(&unit, &local));
                     waiting.push(WaitingFile {
                         unit: units.len(),
@@ -482,9 +492,31 @@ impl Session {
                 var_config.extend(entries);
             }
         }
+        // the names every file declares, and the global lists named after their files (a text
+        // file is a list when it holds nothing else, as `text_lists::name_text_lists` names it)
+        let is_list = |k: &usize| {
+            units.get(*k).is_some_and(|u| {
+                !u.items.is_empty()
+                    && u.items
+                        .iter()
+                        .all(|i| matches!(i, il_frontend::ast::LibraryElement::GlobalVars(_)))
+            })
+        };
+        let names: std::collections::HashSet<String> = units
+            .iter()
+            .flat_map(il_frontend::st::offered_names)
+            .chain(
+                text_lists
+                    .iter()
+                    .filter(|(k, _)| is_list(k))
+                    .chain(twincat_lists.iter())
+                    .map(|(_, n)| n.to_ascii_uppercase()),
+            )
+            .collect();
         self.reparse_with_other_files_constants(
             waiting,
             offered,
+            names,
             &mut units,
             &mut pending,
             &mut var_config,
@@ -522,11 +554,14 @@ impl Session {
     /// declare, E0022) with the integer constants of the other files' `VAR_GLOBAL CONSTANT` lists
     /// known (CODESYS keeps `N_AXES` in `GVL.st`, `ARRAY[1..N_AXES]` in another object's file), until
     /// no new constant is found: at most once per waiting file, so a chain of constants across files
-    /// resolves and a cycle stops. The last parse of each file is kept, with its diagnostics.
+    /// resolves and a cycle stops. The last parse of each file is kept, with its diagnostics. A file
+    /// whose qualifier named no library (E1032) is parsed again with `names`, those the project's
+    /// files declare, known: `GVL.fbTimer(...)` with the list `GVL` in another file is no library.
     fn reparse_with_other_files_constants(
         &mut self,
         mut waiting: Vec<WaitingFile>,
         offered: Vec<std::collections::HashMap<String, i128>>,
+        names: std::collections::HashSet<String>,
         units: &mut [CompilationUnit],
         pending: &mut Vec<il_frontend::st::file::PendingBody>,
         var_config: &mut Vec<il_frontend::st::file::ConfigEntry>,
@@ -543,7 +578,15 @@ impl Session {
                 let src = w.text.as_ref().unwrap_or(&self.map.get(w.file).text);
                 let mut local = Diagnostics::new();
                 let parsed = il_frontend::parser::with_other_files_constants(known.clone(), || {
-                    il_frontend::st::file::parse_text(w.file, src, &w.implicit, w.lang, &mut local)
+                    il_frontend::st::with_other_files_names(names.clone(), || {
+                        il_frontend::st::file::parse_text(
+                            w.file,
+                            src,
+                            &w.implicit,
+                            w.lang,
+                            &mut local,
+                        )
+                    })
                 });
                 found.extend(il_frontend::parser::global_integer_constants(
                     &parsed.0, &local,

@@ -6,10 +6,29 @@
 //! blocks of each such unit named after the stem. Invariants: only a unit whose items are all
 //! global variable lists is named, and only when no POU, type or variable of any unit, and no
 //! other list, already has the name (it then stays unnamed, as before: its members are used
-//! unqualified); an unnamed list's members stay reachable without the qualifier.
+//! unqualified); an unnamed list's members stay reachable without the qualifier. A stem of the form
+//! `global (GVL)` (a CODESYS project exported object by object as `NAME (KIND).st`) names `global`
+//! ([`object_name`]).
 
 use il_frontend::ast::{CompilationUnit, Ident, LibraryElement, TypeDecl};
 use std::collections::HashSet;
+
+/// The object's name in a file stem: `global` for `global (GVL)`, `PLC_PRG` for `PLC_PRG (PRG)`
+/// (CODESYS objects exported one per file as `NAME (KIND).st`, KIND the object's kind as CODESYS
+/// abbreviates it: GVL, PRG, FB, FUN, DUT, ITF, METH, PROP, ACT); any other stem as it is.
+pub fn object_name(stem: &str) -> &str {
+    const KINDS: &[&str] = &[
+        "GVL", "PRG", "FB", "FUN", "DUT", "ITF", "METH", "PROP", "ACT",
+    ];
+    let Some(open) = stem.rfind(" (") else {
+        return stem;
+    };
+    let kind = &stem[open + 2..];
+    match kind.strip_suffix(')') {
+        Some(k) if KINDS.iter().any(|x| x.eq_ignore_ascii_case(k)) => stem[..open].trim_end(),
+        _ => stem,
+    }
+}
 
 /// Names the global lists of the units `lists` gives (unit index, file stem); see the module
 /// documentation.
@@ -53,5 +72,18 @@ pub fn name_text_lists(units: &mut [CompilationUnit], lists: &[(usize, String)])
                 block.name = Some(Ident::new(stem.clone(), block.span));
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::object_name;
+
+    #[test]
+    fn object_names_of_exported_stems() {
+        assert_eq!(object_name("global (GVL)"), "global");
+        assert_eq!(object_name("PLC_PRG (PRG)"), "PLC_PRG");
+        assert_eq!(object_name("GVL"), "GVL");
+        assert_eq!(object_name("notes (draft)"), "notes (draft)");
     }
 }

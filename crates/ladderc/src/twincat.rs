@@ -27,8 +27,14 @@ pub fn is_twincat_file(path: &Path) -> bool {
 }
 
 /// `paths` with each `.plcproj` file, and each folder holding one (directly or up to three folders
-/// down, as a `.tsproj`/`.sln` folder does), replaced by the object files the project lists.
-pub fn expand(session: &Session, paths: &[PathBuf], diags: &mut Diagnostics) -> Vec<PathBuf> {
+/// down, as a `.tsproj`/`.sln` folder does), replaced by the object files the project lists. The
+/// compiler defines of the projects' properties (`<CompilerDefines>`) go to `defines`.
+pub fn expand(
+    session: &Session,
+    paths: &[PathBuf],
+    defines: &mut Vec<(String, String)>,
+    diags: &mut Diagnostics,
+) -> Vec<PathBuf> {
     let mut out = Vec::new();
     for p in paths {
         let project = if has_extension(p, "plcproj") {
@@ -65,7 +71,10 @@ pub fn expand(session: &Session, paths: &[PathBuf], diags: &mut Diagnostics) -> 
         };
         match project {
             Some(project) => match session.read_file(&project) {
-                Ok(text) => out.extend(listed_files(&project, &text)),
+                Ok(text) => {
+                    defines.extend(compiler_defines(&text));
+                    out.extend(listed_files(&project, &text));
+                }
                 // reading it as an input reports the error
                 Err(_) => out.push(project),
             },
@@ -101,6 +110,30 @@ fn find_projects(dir: &Path, depth: usize, found: &mut Vec<PathBuf>) {
             find_projects(&d, depth + 1, found);
         }
     }
+}
+
+/// The compiler defines of a `.plcproj`'s properties: `<CompilerDefines>A, B:='1'</CompilerDefines>`
+/// (TwinCAT's "Compiler defines" field, names separated by commas, each with an optional value),
+/// as (name, value) pairs for the conditional pragmas (`{IF defined (A)}`).
+fn compiler_defines(text: &str) -> Vec<(String, String)> {
+    let arena = ladder_compiler::xml::Arena::new();
+    let (root, _) = ladder_compiler::xml::parse(text, &arena);
+    let Some(root) = root else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    for el in root.walk().filter(|e| e.name() == "CompilerDefines") {
+        for item in el.text().split([',', ';']) {
+            let (name, value) = match item.split_once(":=").or_else(|| item.split_once('=')) {
+                Some((n, v)) => (n.trim(), v.trim().trim_matches('\'')),
+                None => (item.trim(), ""),
+            };
+            if !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+                out.push((name.to_string(), value.to_string()));
+            }
+        }
+    }
+    out
 }
 
 /// The object files a `.plcproj` lists (`<Compile Include="POUs\MAIN.TcPOU">`), relative to its

@@ -413,7 +413,10 @@ impl<'a> Gen<'a> {
                         continue;
                     };
                     let name = mangle::user_type(&t.name);
-                    let _ = writeln!(h, "typedef struct {{");
+                    // a UNION's members share one storage (CODESYS and TwinCAT; sema admits only
+                    // members whose C representation is the PLC's, E1040)
+                    let kind = if t.union { "union" } else { "struct" };
+                    let _ = writeln!(h, "typedef {kind} {{");
                     let mut any = false;
                     for f in fields.clone() {
                         any |= self.member_line(h, PouKind::FunctionBlock, &f);

@@ -19,6 +19,57 @@ use std::collections::HashMap;
 pub(crate) type Consts = HashMap<String, (Type, ConstValue)>;
 
 impl Analyzer<'_> {
+    /// E1040 for each member of the UNION `name` whose C representation is not the PLC's memory
+    /// (a member of another type would read other bytes than CODESYS or TwinCAT read): integers, bit
+    /// strings, REAL and LREAL, and arrays and structures of them, share storage as the PLC's do.
+    fn check_union_members(&mut self, name: &str, members: &[Variable]) {
+        for m in members {
+            if self.shares_plc_layout(&m.ty) {
+                continue;
+            }
+            let ty = self.model.type_name(&m.ty);
+            self.error(
+                code::E1040,
+                m.span,
+                format!("UNION `{name}`: member `{}` of type {ty} cannot share its storage", m.name),
+            )
+            .label("ladderc stores this type otherwise than the PLC")
+            .hint("a UNION member is an integer, a bit string (BYTE, WORD, DWORD, LWORD), REAL or LREAL, or an array or structure of them; ladderc stores BOOL as 0/1 bytes and TIME, dates and strings in its own layout");
+        }
+    }
+
+    /// Whether a value of `ty` is stored in C as the PLC stores it (see `check_union_members`).
+    fn shares_plc_layout(&self, ty: &Type) -> bool {
+        use Elementary as E;
+        match ty {
+            Type::Elementary(e) => matches!(
+                e,
+                E::Sint
+                    | E::Int
+                    | E::Dint
+                    | E::Lint
+                    | E::Usint
+                    | E::Uint
+                    | E::Udint
+                    | E::Ulint
+                    | E::Byte
+                    | E::Word
+                    | E::Dword
+                    | E::Lword
+                    | E::Real
+                    | E::Lreal
+            ),
+            Type::Array { element, .. } => self.shares_plc_layout(element),
+            Type::Struct(id) => match &self.model.types[id.0 as usize].def {
+                UserTypeDef::Struct { fields } => {
+                    fields.iter().all(|f| self.shares_plc_layout(&f.ty))
+                }
+                _ => false,
+            },
+            _ => false,
+        }
+    }
+
     /// Runs the declaration stage; returns the POUs whose bodies are to be checked.
     pub(crate) fn declare<'u>(
         &mut self,
@@ -85,6 +136,9 @@ impl Analyzer<'_> {
                                 span: d.span,
                             }];
                             let vars = self.declare_vars(&blocks, &Consts::new(), None);
+                            if d.union {
+                                self.check_union_members(&d.name.name, &vars);
+                            }
                             self.model.types[id.0 as usize].def =
                                 UserTypeDef::Struct { fields: vars };
                         }
@@ -289,6 +343,7 @@ impl Analyzer<'_> {
             name: d.name.name.clone(),
             span: d.span,
             def,
+            union: d.union,
         });
     }
 
@@ -496,6 +551,7 @@ impl Analyzer<'_> {
                     name: format!("__ENUM_{}", self.enum_counter),
                     span: *span,
                     def: UserTypeDef::Enum { values, default },
+                    union: false,
                 });
                 Type::Enum(id)
             }

@@ -719,6 +719,9 @@ pub struct UserType {
     pub span: Span,
     /// Structure, enumeration or alias.
     pub def: UserTypeDef,
+    /// A structure declared `UNION ... END_UNION`: its fields share one storage (C `union`).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub union: bool,
 }
 
 /// What a user data type is, resolved.

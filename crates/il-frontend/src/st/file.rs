@@ -762,6 +762,15 @@ pub fn parse_text(
     let mut pending = Vec::new();
     let mut decl_args = Vec::new();
     let mut first_try = None;
+    // `<<<<<<< HEAD` ... `>>>>>>> branch`: one E1039 per conflict, the first side read (`conflict_markers`)
+    let resolved;
+    let src = match super::conflict_markers::conflict_markers(file, src, diags) {
+        Some(t) => {
+            resolved = t;
+            resolved.as_str()
+        }
+        None => src,
+    };
     if lang == Lang::Il {
         // A valid IL file costs one parse: the bodies are looked at only when the IL parser
         // reported errors (then they are replaced by one E0300 if ST bodies explain them).
@@ -780,7 +789,16 @@ pub fn parse_text(
             return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
         }
     }
-    let (unqualified, unreferenced, unlisted, uninitialised);
+    let (unqualified, unreferenced, unlisted, uninitialised, conditioned);
+    // `{IF defined (X)}` ... `{END_IF}`: the sections not compiled blanked (`conditional`)
+    let src = match super::conditional::conditional_sections(file, src, &problems, diags) {
+        Some(t) => {
+            conditioned = t;
+            (toks, problems) = lex(&conditioned);
+            conditioned.as_str()
+        }
+        None => src,
+    };
     let mut references = RefTypes::default();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);

@@ -176,6 +176,7 @@ pub fn table(
         types.push(TypeDecl {
             name: i.name.clone(),
             def: TypeDef::Struct { fields },
+            union: false,
             span,
         });
         out.push(Interface {

@@ -13,6 +13,8 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
+mod conditional;
+mod conflict_markers;
 pub mod fb_init;
 pub mod fb_init_args;
 pub mod file;
@@ -31,7 +33,9 @@ pub mod sfc;
 pub mod types;
 mod var_config;
 
+pub use conditional::ProjectDefines;
 pub use lower::PouLowering;
+pub use qualifiers::{offered_names, with_other_files_names};
 pub use types::{Declarations, PouInterface};
 
 use crate::ast::{IlStmt, Pou, VarBlock};

@@ -30,6 +30,11 @@ thread_local! {
     /// project has one POU per file), not a function of a library `PRG`.
     static PROJECT_PROGRAMS: std::cell::RefCell<std::collections::HashSet<String>> =
         Default::default();
+
+    /// The names other files of the project declare (upper case), set by
+    /// [`with_other_files_names`]; empty otherwise.
+    static OTHER_FILES_NAMES: std::cell::RefCell<std::collections::HashSet<String>> =
+        Default::default();
 }
 
 /// Sets the PROGRAM names that [`library_qualifiers`] takes as declared (every file of the
@@ -69,6 +74,45 @@ pub fn program_names(text: &str) -> Vec<String> {
         i = j;
     }
     out
+}
+
+/// Runs `parse` with `names` (upper case) known as names the project's other files declare: a
+/// qualifier `X.` among them is not a library (`GVL.fbTimer(...)` with the list `GVL` in another
+/// file, a CODESYS object exported as `GVL (GVL).st`).
+pub fn with_other_files_names<R>(
+    names: std::collections::HashSet<String>,
+    parse: impl FnOnce() -> R,
+) -> R {
+    let before = OTHER_FILES_NAMES.with(|c| c.replace(names));
+    let result = parse();
+    OTHER_FILES_NAMES.with(|c| c.replace(before));
+    result
+}
+
+/// The names `unit` declares for the project's other files (upper case): its POUs, types, global
+/// variables, named global lists and configurations.
+pub fn offered_names(unit: &crate::ast::CompilationUnit) -> impl Iterator<Item = String> + '_ {
+    use crate::ast::LibraryElement;
+    unit.items.iter().flat_map(|item| -> Vec<String> {
+        match item {
+            LibraryElement::Pou(p) => vec![p.name.key()],
+            LibraryElement::DataTypes(types) => types.iter().map(|t| t.name.key()).collect(),
+            LibraryElement::GlobalVars(b) => b
+                .name
+                .iter()
+                .map(|n| n.key())
+                .chain(b.vars.iter().map(|v| v.name.key()))
+                .collect(),
+            LibraryElement::Configuration(c) => std::iter::once(c.name.key())
+                .chain(
+                    c.globals
+                        .iter()
+                        .flat_map(|b| b.vars.iter().map(|v| v.name.key())),
+                )
+                .collect(),
+            LibraryElement::Action(_) => Vec::new(),
+        }
+    })
 }
 
 /// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
@@ -124,6 +168,7 @@ pub(super) fn library_qualifiers(
             || !ident(member)
             || declared.contains(&w)
             || PROJECT_PROGRAMS.with(|p| p.borrow().contains(&w))
+            || OTHER_FILES_NAMES.with(|o| o.borrow().contains(&w))
         {
             continue;
         }

@@ -62,6 +62,7 @@ fn build_declarations(index: &Index, file_span: Span) -> Declarations {
         def: TypeDef::Struct {
             fields: vec![field("X", "BOOL"), field("T", "TIME")],
         },
+        union: false,
         span: file_span,
     });
     d.add_type(TypeDecl {
@@ -69,6 +70,7 @@ fn build_declarations(index: &Index, file_span: Span) -> Declarations {
         def: TypeDef::Struct {
             fields: vec![field("Q", "BOOL"), field("A", "BOOL")],
         },
+        union: false,
         span: file_span,
     });
     d
