@@ -124,11 +124,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
                         let next = methods.get(k + 1).map_or(obj.end(), |n| n.tag_start());
                         at = out.copy(md);
                         if m.name() == "Property" {
-                            let accessors: Vec<&Element> = m
-                                .children
-                                .iter()
-                                .filter(|c| matches!(c.name(), "Get" | "Set"))
-                                .collect();
+                            let accessors = property_accessors(m);
                             for (j, acc) in accessors.iter().enumerate() {
                                 let acc_next = accessors.get(j + 1).map_or(next, |n| n.tag_start());
                                 let (open, close) = if acc.name() == "Get" {
@@ -495,11 +491,7 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                 if let Some(d) = m.child("Declaration") {
                     at = out.copy(d);
                 }
-                let accessors: Vec<&Element> = m
-                    .children
-                    .iter()
-                    .filter(|c| matches!(c.name(), "Get" | "Set"))
-                    .collect();
+                let accessors = property_accessors(m);
                 for (j, acc) in accessors.iter().enumerate() {
                     let (open, close) = if acc.name() == "Get" {
                         ("GET", "END_GET")
@@ -667,6 +659,15 @@ fn unreadable(file: FileId, el: &Element, msg: String, hint: &str) -> Box<Diagno
             .at(Span::new(file, el.tag_start(), el.tag_end()))
             .with_hint(hint),
     )
+}
+
+/// A `<Property>`'s `<Get>` and `<Set>` children, in file order.
+fn property_accessors<'e, 'a>(property: &'e Element<'a>) -> Vec<&'e Element<'a>> {
+    property
+        .children
+        .iter()
+        .filter(|c| matches!(c.name(), "Get" | "Set"))
+        .collect()
 }
 
 #[cfg(test)]

@@ -120,19 +120,7 @@ pub fn add_init_calls(
     }
     // `{attribute 'call_after_init'}` methods: no inputs (CODESYS, TwinCAT: a compile error)
     for pb in pending.iter().filter(|pb| !pb.after_init.is_empty()) {
-        let Some(pou) = units
-            .iter()
-            .flat_map(|u| u.items.iter())
-            .find_map(|i| match i {
-                LibraryElement::Pou(p)
-                    if p.name.span.file == pb.file
-                        && p.name.span.start as usize == pb.name_start =>
-                {
-                    Some(p.name.clone())
-                }
-                _ => None,
-            })
-        else {
+        let Some(pou) = pb.pou_name(units).cloned() else {
             continue;
         };
         for m in &pb.after_init {

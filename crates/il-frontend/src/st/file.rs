@@ -150,6 +150,28 @@ pub struct PendingBody {
 }
 
 impl PendingBody {
+    /// The name of the POU this body belongs to, found among `units` by its file and the start of
+    /// its name; `None` for a body that is no POU's or one not in `units`.
+    pub fn pou_name<'u>(
+        &self,
+        units: &'u [crate::ast::CompilationUnit],
+    ) -> Option<&'u crate::ast::Ident> {
+        units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .find_map(|i| match i {
+                LibraryElement::Pou(p)
+                    if p.name.span.file == self.file
+                        && p.name.span.start as usize == self.name_start =>
+                {
+                    Some(&p.name)
+                }
+                _ => None,
+            })
+    }
+}
+
+impl PendingBody {
     /// The body of a block that EXTENDS another (flattened by [`super::inherit`]).
     pub fn derived(&self) -> bool {
         matches!(self.oop.as_deref(), Some(super::inherit::Oop::Block(b)) if !b.extends.is_empty())
@@ -1350,20 +1372,7 @@ pub fn compile_pending(
     let declares_fb_init: std::collections::HashSet<String> = pending
         .iter()
         .filter(|pb| pb.methods.iter().any(|m| m.name.is("FB_init")))
-        .filter_map(|pb| {
-            units
-                .iter()
-                .flat_map(|u| u.items.iter())
-                .find_map(|i| match i {
-                    LibraryElement::Pou(p)
-                        if p.name.span.file == pb.file
-                            && p.name.span.start as usize == pb.name_start =>
-                    {
-                        Some(p.name.key())
-                    }
-                    _ => None,
-                })
-        })
+        .filter_map(|pb| pb.pou_name(units).map(|n| n.key()))
         .collect();
     // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
     let flat;

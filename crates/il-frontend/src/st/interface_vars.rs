@@ -339,15 +339,19 @@ fn place_expr(p: Place, span: Span) -> Expr {
     }
 }
 
-fn int(v: i128, span: Span) -> Expr {
+fn literal(kind: LiteralKind, span: Span) -> Expr {
     Expr {
         kind: ExprKind::Literal(Literal {
-            kind: LiteralKind::Int(v),
+            kind,
             type_prefix: None,
             span,
         }),
         span,
     }
+}
+
+fn int(v: i128, span: Span) -> Expr {
+    literal(LiteralKind::Int(v), span)
 }
 
 fn null(span: Span) -> Expr {
@@ -362,14 +366,7 @@ fn null(span: Span) -> Expr {
 }
 
 fn bool_lit(v: bool, span: Span) -> Expr {
-    Expr {
-        kind: ExprKind::Literal(Literal {
-            kind: LiteralKind::Bool(v),
-            type_prefix: None,
-            span,
-        }),
-        span,
-    }
+    literal(LiteralKind::Bool(v), span)
 }
 
 fn binary(op: BinaryOp, left: Expr, right: Expr, span: Span) -> Expr {
