@@ -509,7 +509,7 @@ impl Session {
     fn reparse_with_other_files_constants(
         &mut self,
         mut waiting: Vec<WaitingFile>,
-        offered: Vec<std::collections::HashMap<String, i128>>,
+        offered: Vec<il_frontend::parser::Constants>,
         units: &mut [CompilationUnit],
         pending: &mut Vec<il_frontend::st::file::PendingBody>,
         var_config: &mut Vec<il_frontend::st::file::ConfigEntry>,
@@ -517,8 +517,7 @@ impl Session {
         if waiting.is_empty() {
             return;
         }
-        let mut known: std::collections::HashMap<String, i128> =
-            offered.into_iter().flatten().collect();
+        let mut known: il_frontend::parser::Constants = offered.into_iter().flatten().collect();
         let mut results: Vec<_> = waiting.iter().map(|_| None).collect();
         for _ in 0..waiting.len() {
             let mut found = known.clone();

@@ -1,0 +1,137 @@
+//! Issue #13, twelfth round (helper `small3`): small constructs that stopped real TwinCAT and
+//! CODESYS projects, each through `ladderc run` on fixtures written here
+//! (`tests/tests/fixtures/lang_left_r12/`):
+//! - **REAL, LREAL and TIME constant expressions** in declarations (`EPS : LREAL := 16 * 2.2E-016;`,
+//!   `C2 : REAL := GVL_Const.C1 / 2;`, `T_MAX : TIME := T_BASE + T#500MS;`, `LREAL#1.5 / 3`), also
+//!   naming the constants of another file's global list, qualified or not. Before: E0011 at the
+//!   first real or duration operand.
+//! - **`ON`, `WITH` and `TASK` as variable names** (IEC 61131-3 reserves them for textual
+//!   configurations only; CODESYS and TwinCAT accept them): warning W1418. Before: E1031.
+
+mod common;
+use common::{check_text, run_traced, run_traced_files};
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/lang_left_r12")
+        .join(name)
+}
+
+/// Writes `src` to `dir/name` and returns its path.
+fn write(dir: &Path, name: &str, src: &str) -> PathBuf {
+    let f = dir.join(name);
+    std::fs::write(&f, src).unwrap();
+    f
+}
+
+// ------------------------------------------------------------------ 1. constant expressions
+
+/// GVL_Const.st: C1 : REAL := 3 (the REAL 3.0), EPS := 16 * 2.2E-016, T_MAX := T_BASE + T#500MS,
+/// HALF := LREAL#1.5 / 3, N := 4. Main.st: C2 := GVL_Const.C1 / 2 = 1.5 (a REAL division: C1 is
+/// REAL), C3 := C2 * N - 0.5 = 5.5, T_STEP := GVL_Const.T_MAX / 3 * 2 = T#1S, T_SHORT := -T#100MS +
+/// T_STEP * 0.2 = T#100MS (the sign binds tighter than +), which times the TON: Q after 100 ms.
+#[test]
+fn real_lreal_and_time_constant_expressions_run_across_global_lists() {
+    let files = [fixture("consts/GVL_Const.st"), fixture("consts/Main.st")];
+    let files: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
+    let (trace, _) = run_traced_files(
+        &files,
+        11,
+        "Main.x,Main.q,Main.e,Main.h,Main.tAcc,Main.timer.PT,Main.done",
+    );
+    let lines: Vec<&str> = trace.lines().collect();
+    assert_eq!(
+        lines[0],
+        "cycle,time_ms,Main.x,Main.q,Main.e,Main.h,Main.tAcc,Main.timer.PT,Main.done"
+    );
+    assert_eq!(lines[1], "0,0,7,3,3.52e-15,2,T#1000ms,T#100ms,0");
+    assert_eq!(lines[2], "1,10,8.5,3,3.52e-15,2,T#2000ms,T#100ms,0");
+    assert_eq!(lines[10], "9,90,20.5,3,3.52e-15,2,T#10000ms,T#100ms,0");
+    assert_eq!(lines[11], "10,100,22,3,3.52e-15,2,T#11000ms,T#100ms,1");
+}
+
+/// Integer constant expressions keep integer arithmetic, and a leading sign applies to its operand
+/// only: `-N + 1` = -3, `-(N + 1) * 2` = -10, `ARRAY[-N..-N+1]` has indexes -4 and -3.
+#[test]
+fn a_sign_in_a_constant_expression_binds_to_its_operand() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(
+        dir.path(),
+        "neg.st",
+        "PROGRAM Main\nVAR CONSTANT N : INT := 4; END_VAR\n\
+         VAR a : INT := -N + 1; b : INT := -(N + 1) * 2; c : ARRAY[-N..-N+1] OF INT; END_VAR\n\
+         c[-3] := a + b;\nEND_PROGRAM\n",
+    );
+    let (trace, _) = run_traced(&f, 1, "Main.a,Main.b,Main.c[-3]");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.a,Main.b,Main.c[-3]\n0,0,-3,-10,-13\n"
+    );
+}
+
+/// What has no value is one located E0022 each: a duration times a duration, a REAL constant as an
+/// array bound (bounds take integers), a date in an expression.
+#[test]
+fn constant_expressions_without_a_value_are_one_located_e0022_each() {
+    let src = "PROGRAM Main\nVAR CONSTANT\n  C1 : REAL := 2.5;\n  BAD : TIME := T#1S * T#2S;\n\
+               END_VAR\nVAR a : ARRAY[1..C1] OF INT; d : TIME := D#2024-01-01 + T#1S; END_VAR\n\
+               END_PROGRAM\n";
+    let (code, lines) = check_text("e.st", src);
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "e.st:4:17: error[E0022]: constant expression `T#1S * T#2S`: durations only add to and subtract from durations",
+            "e.st:6:18: error[E0022]: constant expression `C1`: `C1` is not an integer constant declared before",
+            "e.st:6:42: error[E0022]: constant expression `D#2024-01-01 + T#1S`: only numbers and durations (T#...) make constant expressions",
+        ]
+    );
+}
+
+// ------------------------------------------------------------------ 5. configuration keywords as names
+
+/// `ON` toggles each cycle and counts its TRUE cycles, in ST and in IL; `WITH` and `TASK` name
+/// variables too. One W1418 at each declaration; a configuration's own `RESOURCE ... ON` and
+/// `PROGRAM ... WITH` still read as keywords.
+#[test]
+fn on_with_and_task_name_variables_with_w1418() {
+    let dir = tempfile::tempdir().unwrap();
+    let st = write(
+        dir.path(),
+        "on.st",
+        "PROGRAM Main\nVAR ON : BOOL; WITH : INT; task : INT; END_VAR\nON := NOT ON;\n\
+         IF ON THEN WITH := WITH + 1; END_IF\ntask := WITH * 10;\nEND_PROGRAM\n",
+    );
+    let (trace, stderr) = run_traced(&st, 3, "Main.ON,Main.WITH,Main.task");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.ON,Main.WITH,Main.task\n0,0,1,1,10\n1,10,0,1,10\n2,20,1,2,20\n"
+    );
+    assert!(
+        stderr.contains(
+            "on.st:2:5: warning[W1418]: `ON` is a keyword of IEC 61131-3 configurations (`RESOURCE r \
+             ON cpu`): accepted as a variable name, as CODESYS and TwinCAT do"
+        ),
+        "{stderr}"
+    );
+    assert_eq!(stderr.matches("W1418").count(), 3, "{stderr}");
+    let il = write(
+        dir.path(),
+        "on.il",
+        "PROGRAM Main\nVAR ON : BOOL; n : INT; END_VAR\nLD ON\nSTN ON\nJMPCN skip\nLD n\nADD 1\n\
+         ST n\nskip:\nEND_PROGRAM\n\
+         CONFIGURATION Cell\nRESOURCE Cpu ON PLC\nTASK Fast (INTERVAL := T#10MS);\n\
+         PROGRAM Inst WITH Fast : Main;\nEND_RESOURCE\nEND_CONFIGURATION\n",
+    );
+    let (trace, stderr) = run_traced(&il, 3, "Inst.ON,Inst.n");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Inst.ON,Inst.n\n0,0,1,0\n1,10,0,1\n2,20,1,1\n"
+    );
+    assert_eq!(stderr.matches("W1418").count(), 1, "{stderr}");
+}
