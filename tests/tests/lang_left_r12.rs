@@ -5,6 +5,11 @@
 //!   `C2 : REAL := GVL_Const.C1 / 2;`, `T_MAX : TIME := T_BASE + T#500MS;`, `LREAL#1.5 / 3`), also
 //!   naming the constants of another file's global list, qualified or not. Before: E0011 at the
 //!   first real or duration operand.
+//! - **Empty formal arguments** (`Add3(a := , b := 1)`, `t(IN := , PT := T#30MS)`, IL `CAL a(step
+//!   := , on_ := TRUE)`), as TwinCAT and CODESYS editors write an unconnected pin: the input is left
+//!   out of the call (a block's keeps its value, a function's takes its initial value). Before:
+//!   E0107 (ST), E0011 (IL). An in-out left unconnected, empty or omitted, is E1033 (CODESYS's
+//!   C0039); before, the block read through a null pointer at run time.
 //! - **`ON`, `WITH` and `TASK` as variable names** (IEC 61131-3 reserves them for textual
 //!   configurations only; CODESYS and TwinCAT accept them): warning W1418. Before: E1031.
 
@@ -134,4 +139,69 @@ fn on_with_and_task_name_variables_with_w1418() {
         "cycle,time_ms,Inst.ON,Inst.n\n0,0,1,0\n1,10,0,1\n2,20,1,1\n"
     );
     assert_eq!(stderr.matches("W1418").count(), 1, "{stderr}");
+}
+
+// ------------------------------------------------------------------ 4. empty formal arguments
+
+/// Add3(a := , b := r MOD 7, c := ): a and c take their initial values 10 and 100; the TON's
+/// `IN :=` keeps the TRUE of its first call, so Q rises after 30 ms.
+#[test]
+fn empty_formal_arguments_leave_the_input_out_of_the_call_in_st() {
+    let (trace, _) = run_traced(
+        &fixture("empty_args.st"),
+        5,
+        "Main.r,Main.t.IN,Main.t.ET,Main.q",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.r,Main.t.IN,Main.t.ET,Main.q\n0,0,110,1,T#0ms,0\n1,10,115,1,T#10ms,0\n\
+         2,20,113,1,T#20ms,0\n3,30,111,1,T#30ms,1\n4,40,116,1,T#30ms,1\n"
+    );
+}
+
+/// IL: `CAL a(step := 2, on_ := TRUE)` once, then `CAL a(step := , on_ := TRUE)`: step keeps 2
+/// (not its initial value 5), so total grows by 2 each cycle.
+#[test]
+fn empty_formal_arguments_leave_the_input_out_of_the_call_in_il() {
+    let (trace, _) = run_traced(
+        &fixture("empty_args.il"),
+        3,
+        "Main.a.total,Main.a.step,Main.r",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.a.total,Main.a.step,Main.r\n0,0,2,2,0\n1,10,4,2,4\n2,20,6,2,6\n"
+    );
+}
+
+/// An in-out has no value to keep: left empty or omitted, it is one located E1033 per call.
+#[test]
+fn an_in_out_left_unconnected_is_e1033() {
+    let fb = "FUNCTION_BLOCK Bump\nVAR_IN_OUT counter : INT; END_VAR\nVAR_INPUT step : INT := 1; END_VAR\n\
+              counter := counter + step;\nEND_FUNCTION_BLOCK\n";
+    let (code, lines) = check_text(
+        "io.st",
+        &format!(
+            "{fb}PROGRAM Main\nVAR b : Bump; n : INT; END_VAR\nb(counter := , step := 2);\nb();\n\
+             b(counter := n, step := );\nEND_PROGRAM\n"
+        ),
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        vec![
+            "io.st:8:1: error[E1033]: VAR_IN_OUT `counter` of Bump is not connected in this call of `b` (hint: connect it to a variable in every call: `b(counter := ...)`)",
+            "io.st:9:1: error[E1033]: VAR_IN_OUT `counter` of Bump is not connected in this call of `b` (hint: connect it to a variable in every call: `b(counter := ...)`)",
+        ]
+    );
+    let (code, lines) = check_text(
+        "io.il",
+        &format!("{}PROGRAM Main\nVAR b : Bump; n : INT; END_VAR\nCAL b(counter := , step := 2)\nEND_PROGRAM\n", fb.replace("counter := counter + step;", "LD counter\nADD step\nST counter")),
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("io.il:10:1: error[E1033]"),
+        "{lines:?}"
+    );
 }

@@ -1027,6 +1027,11 @@ impl<'s, 'd> Parser<'s, 'd> {
                         value,
                         span: self.span(start, self.prev_end()),
                     });
+                } else if self.at(&Tok::Comma) || self.at(&Tok::RParen) {
+                    // `IN :=` with nothing (TwinCAT and CODESYS accept it, as their editors write
+                    // an unconnected input): the input is left out of the call, so it keeps its
+                    // value in a block's instance and takes its initial value in a function's
+                    // call, as IEC 61131-3 ed. 3 (6.6.1.4.2) has an unassigned input do
                 } else {
                     let value = self.expr();
                     args.push(Arg {
