@@ -10,6 +10,8 @@
 //!   out of the call (a block's keeps its value, a function's takes its initial value). Before:
 //!   E0107 (ST), E0011 (IL). An in-out left unconnected, empty or omitted, is E1033 (CODESYS's
 //!   C0039); before, the block read through a null pointer at run time.
+//! - **`SIZEOF(x)` / `SIZEOF(T)`** (CODESYS, TwinCAT) in ST: C's `sizeof` of the variable or type in
+//!   the generated C, typed by its context as an integer literal. Before: E1019.
 //! - **`ON`, `WITH` and `TASK` as variable names** (IEC 61131-3 reserves them for textual
 //!   configurations only; CODESYS and TwinCAT accept them): warning W1418. Before: E1031.
 
@@ -202,6 +204,51 @@ fn an_in_out_left_unconnected_is_e1033() {
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
         lines[0].starts_with("io.il:10:1: error[E1033]"),
+        "{lines:?}"
+    );
+}
+
+// ------------------------------------------------------------------ 2. SIZEOF
+
+/// The CODESYS help's example (`SIZEOF` of ARRAY[0..4] OF INT into an INT: 10), the element count
+/// `SIZEOF(a) / SIZEOF(a[0])`, a struct padded as C pads it (BOOL, LREAL, WORD: 24 bytes, by
+/// variable and by type name, the latter into a USINT), elementary type names and a field (8 + 2 +
+/// 1), a STRING[20] (an `IEC_STRING` of ladderc's memory model: 2 + 255 + 1 padding bytes = 258),
+/// a two-dimensional array and one element (24 + 4).
+#[test]
+fn sizeof_gives_the_bytes_of_variables_and_types_in_the_generated_c() {
+    let (trace, _) = run_traced(
+        &fixture("sizeof.st"),
+        1,
+        "Main.nSize,Main.nElems,Main.nData,Main.nType,Main.nParts,Main.nText,Main.nGrid",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.nSize,Main.nElems,Main.nData,Main.nType,Main.nParts,Main.nText,\
+         Main.nGrid\n0,0,10,5,24,24,11,258,28\n"
+    );
+}
+
+/// An operand that is no variable or type name is one located E1034; an unknown name is E1001.
+#[test]
+fn sizeof_of_an_expression_is_e1034() {
+    let (code, lines) = check_text(
+        "s.st",
+        "PROGRAM Main\nVAR n : UDINT; a : INT; END_VAR\nn := SIZEOF(a + 1);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        vec!["s.st:3:6: error[E1034]: `SIZEOF` takes one variable or one type name (hint: write `SIZEOF(x)`, `SIZEOF(a[1])`, `SIZEOF(st.field)` or `SIZEOF(INT)`)"]
+    );
+    let (code, lines) = check_text(
+        "u.st",
+        "PROGRAM Main\nVAR n : UDINT; END_VAR\nn := SIZEOF(nothing);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("u.st:3:13: error[E1001]: undeclared name `nothing`"),
         "{lines:?}"
     );
 }

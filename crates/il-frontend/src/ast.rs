@@ -481,6 +481,19 @@ pub enum Operand {
     EnumValue(Box<EnumOperand>),
     /// A reference value: `REF(x)` / `ADR(x)` (the address of variable `x`) or `NULL` (no variable).
     Ref(Box<RefOperand>),
+    /// `SIZEOF(x)` / `SIZEOF(T)` (CODESYS, TwinCAT): the bytes variable `x` or type `T` takes in the
+    /// generated C (a UDINT).
+    SizeOf(Box<SizeOfOperand>),
+}
+
+/// The payload of [`Operand::SizeOf`].
+#[derive(Debug, Clone, Serialize)]
+pub struct SizeOfOperand {
+    /// The variable (an element or field too) or, as a bare name that names no variable, the type
+    /// whose size is taken.
+    pub of: VarRef,
+    /// The whole `SIZEOF(x)` text.
+    pub span: Span,
 }
 
 /// The payload of [`Operand::Ref`]: the address of a variable, or NULL.
@@ -513,6 +526,7 @@ impl Operand {
             Operand::Address(a) => a.span,
             Operand::EnumValue(e) => e.span,
             Operand::Ref(r) => r.span,
+            Operand::SizeOf(s) => s.span,
         }
     }
     /// A literal operand.

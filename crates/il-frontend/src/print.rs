@@ -264,6 +264,11 @@ pub fn operand(out: &mut String, o: &Operand) {
             }
             None => out.push_str("NULL"),
         },
+        Operand::SizeOf(s) => {
+            out.push_str("SIZEOF(");
+            var_ref(out, &s.of);
+            out.push(')');
+        }
     }
 }
 

@@ -1610,6 +1610,33 @@ impl Model {
     pub fn user_type(&self, id: TypeId) -> &UserType {
         &self.types[id.0 as usize]
     }
+    /// The type a bare type name stands for, as `SIZEOF(T)` names it: an elementary type, `STRING` /
+    /// `WSTRING` (their default length), a user type (an alias: its target), a
+    /// standard or user function block.
+    pub fn type_named(&self, name: &str) -> Option<Type> {
+        if let Some(e) = Elementary::from_name(name) {
+            return Some(Type::Elementary(e));
+        }
+        if name.eq_ignore_ascii_case("STRING") || name.eq_ignore_ascii_case("WSTRING") {
+            return Some(Type::String {
+                wide: name.eq_ignore_ascii_case("WSTRING"),
+                len: DEFAULT_STRING_LEN,
+            });
+        }
+        if let Some(id) = self.type_by_name(name) {
+            return Some(match &self.user_type(id).def {
+                UserTypeDef::Struct { .. } => Type::Struct(id),
+                UserTypeDef::Enum { .. } => Type::Enum(id),
+                UserTypeDef::Alias { target, .. } => target.clone(),
+            });
+        }
+        if let Some(fb) = StdFb::from_name(name) {
+            return Some(Type::Fb(FbType::Standard(fb)));
+        }
+        self.pou_by_name(name)
+            .filter(|id| self.pou(*id).kind == PouKind::FunctionBlock)
+            .map(|id| Type::Fb(FbType::User(id)))
+    }
     /// A user type's id by name (case-insensitive).
     pub fn type_by_name(&self, name: &str) -> Option<TypeId> {
         self.types

@@ -61,6 +61,7 @@ impl Body<'_, '_> {
             Operand::Address(a) => Ty::Known(Type::Elementary(Location::of(a).elementary())),
             Operand::EnumValue(e) => Ty::Known(self.enum_value(&e.type_name, &e.value)),
             Operand::Ref(r) => self.reference_operand(r),
+            Operand::SizeOf(s) => self.size_of_operand(s),
         }
     }
 
@@ -153,7 +154,7 @@ impl Body<'_, '_> {
                 }
                 Type::Elementary(Location::of(a).elementary())
             }
-            Operand::Literal(_) | Operand::EnumValue(_) | Operand::Ref(_) => {
+            Operand::Literal(_) | Operand::EnumValue(_) | Operand::Ref(_) | Operand::SizeOf(_) => {
                 self.a
                     .error(
                         code::E1026,

@@ -1965,14 +1965,47 @@ impl<'d> PouLowering<'d> {
             return;
         }
         if name.is("SIZEOF") && self.decls.pou(&name.name).is_none() {
-            // refused by sema (E1019) without its argument, often a type name
-            out.push(instr(
-                InstrKind::FunctionCall {
-                    name: name.clone(),
-                    args: Box::new(CallArgs::None),
-                },
-                span,
-            ));
+            // `SIZEOF(x)`, `SIZEOF(arr[1])`, `SIZEOF(T)` (CODESYS, TwinCAT): one operand, a
+            // variable (its accesses lowered as any place's) or a type name (sema tells them apart)
+            if let [Arg {
+                name: None,
+                value:
+                    Expr {
+                        kind: ExprKind::Place(p),
+                        ..
+                    },
+                ..
+            }] = args
+            {
+                let of = match p.name() {
+                    Some(n) if p.accessors.is_empty() => Some(il::VarRef {
+                        base: n.clone(),
+                        accessors: Default::default(),
+                        span: p.span,
+                    }),
+                    _ => match self.place_operand(p, out, diags) {
+                        Some(Operand::Var(v)) => Some(v),
+                        _ => None,
+                    },
+                };
+                if let Some(of) = of {
+                    out.push(ld(
+                        Operand::SizeOf(Box::new(il::SizeOfOperand { of, span })),
+                        span,
+                    ));
+                    return;
+                }
+            }
+            diags.push(
+                Diagnostic::error(code::E1034, "`SIZEOF` takes one variable or one type name")
+                    .at(span)
+                    .with_primary_label("not one variable or type")
+                    .with_hint(
+                        "write `SIZEOF(x)`, `SIZEOF(a[1])`, `SIZEOF(st.field)` or `SIZEOF(INT)`",
+                    ),
+            );
+            self.poisoned = true;
+            out.push(ld(int_lit(0, span), span));
             return;
         }
         if name.is(super::refs::IS_VALID_REF) {
