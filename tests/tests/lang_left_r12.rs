@@ -12,6 +12,10 @@
 //!   C0039); before, the block read through a null pointer at run time.
 //! - **`SIZEOF(x)` / `SIZEOF(T)`** (CODESYS, TwinCAT) in ST: C's `sizeof` of the variable or type in
 //!   the generated C, typed by its context as an integer literal. Before: E1019.
+//! - **`MEMCPY`, `MEMMOVE`, `MEMSET`, `MEMCMP`** (Tc2_System; CODESYS `SysMemCpy` ...) on
+//!   variables named by `ADR(x)`: the count is clipped at run time to the bytes of the variables
+//!   (from an array element to the end of its array) and a clip is reported at the end of the run;
+//!   a pointer whose variable cannot be known is E1035. Before: E1003 (unknown function).
 //! - **`ON`, `WITH` and `TASK` as variable names** (IEC 61131-3 reserves them for textual
 //!   configurations only; CODESYS and TwinCAT accept them): warning W1418. Before: E1031.
 
@@ -250,5 +254,74 @@ fn sizeof_of_an_expression_is_e1034() {
     assert!(
         lines[0].starts_with("u.st:3:13: error[E1001]: undeclared name `nothing`"),
         "{lines:?}"
+    );
+}
+
+// ------------------------------------------------------------------ 3. MEMCPY and its kin
+
+/// memory.st, each cycle: b := [1..10] + cycle; MEMSET fills a with 16#AA; MEMCPY of the 10 bytes
+/// of b into a[5..9] is clipped to the 5 bytes left there (ok1 = 0, a[5..9] = b[0..4]); a struct
+/// copied whole; SysMemCpy of b[2..5] into small (ok2 = 1); MEMCMP of the copied structs (0) and of
+/// a[0] = 170 against b[0] (1); MEMMOVE of b[0..3] onto b[1..4] (overlapping: b[1] = b[0]). The
+/// run is ASan/UBSan clean (`--sanitize`) and reports the clip once, naming its POU.
+#[test]
+fn memory_functions_are_bounded_by_their_variables() {
+    let (trace, stderr) = run_traced(
+        &fixture("memory.st"),
+        2,
+        "Main.a[0],Main.a[4],Main.a[5],Main.a[9],Main.ok1,Main.rec1.n,Main.rec1.r,Main.ok2,\
+         Main.small[0],Main.small[3],Main.same,Main.diff,Main.b[0],Main.b[1],Main.b[4],Main.b[5]",
+    );
+    let lines: Vec<&str> = trace.lines().collect();
+    assert_eq!(lines[1], "0,0,170,170,1,5,0,42,2.5,1,3,6,0,1,1,1,4,6");
+    assert_eq!(lines[2], "1,10,170,170,2,6,0,43,2.5,1,4,7,0,1,2,2,5,7");
+    assert!(
+        stderr.contains(
+            "runtime: memory function count beyond its variables (first: MEMCPY in Main; clipped \
+             to their size)"
+        ),
+        "{stderr}"
+    );
+    assert!(
+        !stderr.contains("W1001"),
+        "a statement call drops its result: {stderr}"
+    );
+}
+
+/// A pointer whose variable cannot be known, a wrong argument list, a count that is no integer and
+/// a located variable: one located error each.
+#[test]
+fn memory_functions_on_unknown_objects_are_refused() {
+    let (code, lines) = check_text(
+        "m.st",
+        "PROGRAM Main\nVAR a, b : ARRAY[0..9] OF BYTE; p : POINTER TO BYTE; END_VAR\np := ADR(a);\n\
+         MEMCPY(destAddr := p, srcAddr := ADR(b), n := SIZEOF(b));\nMEMSET(ADR(a), 1);\n\
+         MEMCPY(dest := ADR(a), srcAddr := ADR(b), n := 1);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        vec![
+            "m.st:4:20: error[E1035]: MEMCPY: the variable this pointer points into cannot be known (hint: pass `ADR(x)` of the variable itself (an element or a field too): ladderc bounds the count by the sizes of the variables it can see)",
+            "m.st:5:1: error[E1035]: `MEMSET` takes three arguments (hint: write `MEMSET(destAddr := ADR(...), fillByte := ..., n := ...)`)",
+            "m.st:6:8: error[E1035]: `MEMCPY` has no such argument (hint: write `MEMCPY(destAddr := ADR(...), srcAddr := ..., n := ...)`)",
+        ]
+    );
+    let (code, lines) = check_text(
+        "t.st",
+        "PROGRAM Main\nVAR a, b : ARRAY[0..9] OF BYTE; x : REAL; q AT %MB10 : BYTE; END_VAR\n\
+         MEMCPY(ADR(a), ADR(b), x);\nMEMSET(ADR(q), 0, 1);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "t.st:3:24: error[E1012]: the byte count of MEMCPY is REAL, not an integer",
+            "t.st:4:12: error[E0305]: MEMSET of `q` is not allowed: a located variable lives in the process image, which has no address",
+        ]
     );
 }

@@ -10,6 +10,7 @@
 mod body;
 mod calls;
 mod decls;
+mod memory;
 pub mod model;
 pub mod nesting;
 mod places;

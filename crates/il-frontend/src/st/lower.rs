@@ -26,6 +26,7 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
+mod memory;
 mod short_circuit;
 
 /// Labels of the innermost loop, for EXIT and CONTINUE.
@@ -1962,6 +1963,9 @@ impl<'d> PouLowering<'d> {
         };
         if let Some(o) = self.reference(&call, None, out, diags) {
             out.push(ld(o, span));
+            return;
+        }
+        if self.decls.pou(&name.name).is_none() && self.memory_call(name, args, span, out, diags) {
             return;
         }
         if name.is("SIZEOF") && self.decls.pou(&name.name).is_none() {
