@@ -16,6 +16,9 @@
 //!   variables named by `ADR(x)`: the count is clipped at run time to the bytes of the variables
 //!   (from an array element to the end of its array) and a clip is reported at the end of the run;
 //!   a pointer whose variable cannot be known is E1035. Before: E1003 (unknown function).
+//! - **`ADR(x)` as the initial value of a `POINTER TO` / `REF_TO` variable** (`p : POINTER TO INT
+//!   := ADR(a);`, `ADR(arr[3])`, `ADR(pair.y)`) of a variable of the same POU: the C initialises the
+//!   pointer with the address. Before: E0305.
 //! - **`ON`, `WITH` and `TASK` as variable names** (IEC 61131-3 reserves them for textual
 //!   configurations only; CODESYS and TwinCAT accept them): warning W1418. Before: E1031.
 
@@ -322,6 +325,50 @@ fn memory_functions_on_unknown_objects_are_refused() {
         vec![
             "t.st:3:24: error[E1012]: the byte count of MEMCPY is REAL, not an integer",
             "t.st:4:12: error[E0305]: MEMSET of `q` is not allowed: a located variable lives in the process image, which has no address",
+        ]
+    );
+}
+
+// ------------------------------------------------------------------ 6. ADR(x) as an initial value
+
+/// Main: p := ADR(a) (a = 5), q := REF(arr[3]) (3), r := ADR(pair.y) (0) written through from the
+/// first cycle on (+1, +10, +2 a cycle); FB_Acc's pTotal := ADR(total) (100) in each instance.
+#[test]
+fn pointers_start_as_the_address_of_a_variable_of_their_pou() {
+    let (trace, _) = run_traced(
+        &fixture("address_init.st"),
+        2,
+        "Main.a,Main.arr[3],Main.pair.y,Main.acc.total,Main.x",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.a,Main.arr[3],Main.pair.y,Main.acc.total,Main.x\n\
+         0,0,6,13,2,101,21\n1,10,7,23,4,102,34\n"
+    );
+}
+
+/// What cannot start as an address: a global list's pointer, another type, an unknown name, a
+/// subscript out of bounds, a VAR_TEMP for a VAR pointer; one located error each.
+#[test]
+fn address_initial_values_that_cannot_hold_are_located_errors() {
+    let src = "VAR_GLOBAL\n  g : INT;\n  pg : POINTER TO INT := ADR(g);\nEND_VAR\nPROGRAM Main\nVAR\n  \
+               a : INT;\n  w : WORD;\n  arr : ARRAY[1..4] OF INT;\n  p1 : POINTER TO INT := ADR(w);\n  \
+               p2 : POINTER TO INT := ADR(nothing);\n  p3 : POINTER TO INT := ADR(arr[7]);\nEND_VAR\n\
+               VAR_TEMP t : INT; END_VAR\nVAR p5 : POINTER TO INT := ADR(t); END_VAR\na := 1;\nEND_PROGRAM\n";
+    let (code, lines) = check_text("a.st", src);
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").unwrap().0)
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "a.st:3:26: error[E0305]: `pg` cannot start as `ADR(g)`: only a variable of a POU starts as the address of another",
+            "a.st:10:26: error[E1006]: cannot store REF_TO WORD into REF_TO INT",
+            "a.st:11:26: error[E0305]: `p2` cannot start as `ADR(nothing)`: `nothing` is no variable of this POU",
+            "a.st:12:26: error[E0305]: `p3` cannot start as `ADR(arr[7])`: subscript 7 is outside 1..4",
+            "a.st:15:28: error[E0305]: `p5` cannot start as `ADR(t)`: a VAR_TEMP variable lives for one call",
         ]
     );
 }

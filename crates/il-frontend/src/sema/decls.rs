@@ -663,6 +663,7 @@ impl Analyzer<'_> {
                 list_seen.insert(&d.name.name, position, |p| out[p].name.as_str());
             }
         }
+        self.address_initial_values(blocks, &mut out, pou);
         out
     }
 
@@ -1358,6 +1359,9 @@ impl Analyzer<'_> {
                 });
                 self.const_value(&plain, ty, consts)
             }
+            // `p : POINTER TO INT := ADR(a);`: set once every variable of the POU is declared
+            // (`address_init`)
+            Operand::Ref(r) if r.of.is_some() && matches!(ty, Type::Ref(_)) => None,
             // `E_State.Init` (CODESYS, TwinCAT): a value qualified by its enumeration's name
             Operand::Var(v)
                 if matches!(ty, Type::Enum(id)

@@ -7,6 +7,7 @@
 //!
 //! Stages: `decls` (types, POU variables, globals, configurations) then `body` (each POU's IL body).
 
+mod address_init;
 mod body;
 mod calls;
 mod decls;

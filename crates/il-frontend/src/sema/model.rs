@@ -644,6 +644,29 @@ pub enum ConstValue {
     Array(Vec<ConstValue>),
     /// Struct fields or FB instance parameters by name as written (`(PT := T#1s)`).
     Struct(Vec<(String, ConstValue)>),
+    /// `p : POINTER TO INT := ADR(a);` (CODESYS, TwinCAT): the address of a variable of the same
+    /// POU (see `sema::decls` for what is accepted).
+    Address(AddressInit),
+}
+
+/// The initial value `ADR(path)` of a reference variable of a POU.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AddressInit {
+    /// The reference variable's own name (its C lvalue ends with it).
+    pub of_var: String,
+    /// The variable of the same POU the address is taken of.
+    pub base: String,
+    /// Its fields and zero-based element offsets, in order.
+    pub steps: Vec<AddressStep>,
+}
+
+/// One step of an [`AddressInit`] path.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum AddressStep {
+    /// `.name`: a structure field.
+    Field(String),
+    /// `[i, j]`: the zero-based offsets of constant subscripts, one per dimension.
+    Index(Vec<u64>),
 }
 
 /// A direct address `%IX0.1` / `%QW3` / `%MD10` (`path` empty for `%I*`).
