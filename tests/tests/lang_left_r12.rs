@@ -19,6 +19,8 @@
 //! - **`ADR(x)` as the initial value of a `POINTER TO` / `REF_TO` variable** (`p : POINTER TO INT
 //!   := ADR(a);`, `ADR(arr[3])`, `ADR(pair.y)`) of a variable of the same POU: the C initialises the
 //!   pointer with the address. Before: E0305.
+//! - **A comma after the last formal argument** (`fb(a := x, q => y, );`) and **an empty
+//!   declaration** (`x : LREAL := 630.0;;`), as TwinCAT accepts them. Before: E3106 + E0107, E0011.
 //! - **`ON`, `WITH` and `TASK` as variable names** (IEC 61131-3 reserves them for textual
 //!   configurations only; CODESYS and TwinCAT accept them): warning W1418. Before: E1031.
 
@@ -371,4 +373,28 @@ fn address_initial_values_that_cannot_hold_are_located_errors() {
             "a.st:15:28: error[E0305]: `p5` cannot start as `ADR(t)`: a VAR_TEMP variable lives for one call",
         ]
     );
+}
+
+// ------------------------------------------------------------------ trailing comma, `;;`
+
+/// ax(fPos := fStop1 - 245.0, ..., fLast => last, ): the call runs (min, last = 5); fStop2's
+/// declaration ends with `;;` and keeps its initial value.
+#[test]
+fn a_trailing_comma_after_formal_arguments_and_an_empty_declaration_are_read() {
+    let (trace, _) = run_traced(
+        &fixture("trailing_comma.st"),
+        1,
+        "Main.min,Main.last,Main.fStop2",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.min,Main.last,Main.fStop2\n0,0,1,5,630\n"
+    );
+    // a positional list keeps its error: the comma there stands for a missing argument
+    let (code, lines) = check_text(
+        "p.st",
+        "PROGRAM Main\nVAR a : INT; END_VAR\na := ADD(a, 1, );\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert!(lines[0].starts_with("p.st:3:16: error[E0107]"), "{lines:?}");
 }

@@ -1053,6 +1053,12 @@ impl<'s, 'd> Parser<'s, 'd> {
             match self.peek() {
                 Tok::Comma => {
                     self.bump();
+                    if formal_so_far(&args) && self.at(&Tok::RParen) {
+                        // `fb(a := x, q => y, )`: a comma after the last formal argument, as
+                        // TwinCAT accepts it (its editor leaves one after a removed pin)
+                        self.bump();
+                        return Some(args);
+                    }
                 }
                 Tok::RParen => {
                     self.bump();
@@ -1476,4 +1482,10 @@ impl<'s, 'd> Parser<'s, 'd> {
         self.bump();
         self.literal(kind, Some(prefix), &p, t.range.end)
     }
+}
+
+/// Whether every argument read so far is formal (`name := x`, `name => y`): only then may a comma
+/// stand before the `)`.
+fn formal_so_far(args: &[Arg]) -> bool {
+    !args.is_empty() && args.iter().all(|a| a.name.is_some())
 }
