@@ -81,11 +81,13 @@ typedef void *IEC_REF;
 #define LADDERC_ERR_STRPOS 16u  /* string function length or position out of range (ladderc_strings.c) */
 #define LADDERC_ERR_MUX 32u     /* MUX selector K outside 0..n-1: IN0 selected */
 #define LADDERC_ERR_NULL_REF 64u /* a NULL reference dereferenced: zero read, write dropped */
+#define LADDERC_ERR_MEM 128u     /* MEMCPY/MEMMOVE/MEMSET/MEMCMP count beyond its variables: clipped */
 
 extern uint32_t ladderc_errors;  /* sticky error flags, LADDERC_ERR_* */
 extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set before each cycle */
 extern uint64_t ladderc_cycle;   /* the current cycle number, from 0 */
 extern const char *ladderc_null_ref_site; /* where the first NULL reference was dereferenced */
+extern const char *ladderc_mem_site;      /* where the first memory function count was clipped */
 
 /* The process image (defined by the generated program, sizes from the target profile). */
 extern uint8_t ladderc_I[LADDERC_I_SIZE];
@@ -313,6 +315,40 @@ static inline void *ladderc_deref(void *p, void *scratch, size_t n, const char *
     ladderc_errors |= LADDERC_ERR_NULL_REF;
     memset(scratch, 0, n);
     return scratch;
+}
+
+/* MEMCPY, MEMMOVE, MEMSET and MEMCMP (Tc2_System, CODESYS SysMem), bounded: `a_room` and `b_room`
+ * are the bytes the variables behind the pointers hold from there on, and a count `n` beyond the
+ * smaller is clipped to it, with LADDERC_ERR_MEM set and the place of the first one kept. Copies go
+ * through memmove (a MEMCPY between overlapping parts of one variable is then well defined). The
+ * copy and fill functions give 1, or 0 when the count was clipped (Tc2_System: 0 on failure);
+ * MEMCMP gives 0 for equal bytes, -1 or 1 as the first differing byte (unsigned) compares. */
+static inline size_t ladderc_mem_count(uint64_t n, size_t a_room, size_t b_room, const char *site) {
+    size_t room = a_room < b_room ? a_room : b_room;
+    if (n > (uint64_t)room) {
+        if (!(ladderc_errors & LADDERC_ERR_MEM)) ladderc_mem_site = site;
+        ladderc_errors |= LADDERC_ERR_MEM;
+        return room;
+    }
+    return (size_t)n;
+}
+static inline IEC_UDINT ladderc_mem_move(void *dst, size_t d_room, const void *src, size_t s_room,
+                                         uint64_t n, const char *site) {
+    size_t k = ladderc_mem_count(n, d_room, s_room, site);
+    if (k > 0) memmove(dst, src, k);
+    return (uint64_t)k == n ? 1u : 0u;
+}
+static inline IEC_UDINT ladderc_mem_set(void *dst, size_t d_room, uint64_t fill, uint64_t n,
+                                        const char *site) {
+    size_t k = ladderc_mem_count(n, d_room, d_room, site);
+    if (k > 0) memset(dst, (int)(fill & 0xFFu), k);
+    return (uint64_t)k == n ? 1u : 0u;
+}
+static inline IEC_DINT ladderc_mem_cmp(const void *a, size_t a_room, const void *b, size_t b_room,
+                                       uint64_t n, const char *site) {
+    size_t k = ladderc_mem_count(n, a_room, b_room, site);
+    int c = k > 0 ? memcmp(a, b, k) : 0;
+    return c < 0 ? -1 : (c > 0 ? 1 : 0);
 }
 
 /* Edition 3 date functions: CONCAT_DATE(year, month, day), CONCAT_TOD(hour, minute, second, ms),

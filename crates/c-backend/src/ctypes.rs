@@ -310,7 +310,10 @@ pub fn const_elementary(model: &Model, e: Elementary, v: &ConstValue) -> Option<
             let value = enum_value(model, *ty, *index)?;
             int_literal(e, value)
         }
-        ConstValue::String { .. } | ConstValue::Array(_) | ConstValue::Struct(_) => return None,
+        ConstValue::String { .. }
+        | ConstValue::Array(_)
+        | ConstValue::Struct(_)
+        | ConstValue::Address(_) => return None,
     })
 }
 

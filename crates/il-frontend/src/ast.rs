@@ -484,6 +484,64 @@ pub enum Operand {
     EnumValue(Box<EnumOperand>),
     /// A reference value: `REF(x)` / `ADR(x)` (the address of variable `x`) or `NULL` (no variable).
     Ref(Box<RefOperand>),
+    /// `SIZEOF(x)` / `SIZEOF(T)` (CODESYS, TwinCAT): the bytes variable `x` or type `T` takes in the
+    /// generated C (a UDINT).
+    SizeOf(Box<SizeOfOperand>),
+    /// `MEMCPY`, `MEMMOVE`, `MEMSET`, `MEMCMP` (Tc2_System; CODESYS SysMem's `SysMemCpy` ...) on
+    /// the variables that `ADR(x)` arguments name, bounded by their sizes.
+    Mem(Box<MemCall>),
+}
+
+/// Which memory function a [`MemCall`] is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum MemFunc {
+    /// `MEMCPY(destAddr, srcAddr, n)`.
+    Copy,
+    /// `MEMMOVE(destAddr, srcAddr, n)`.
+    Move,
+    /// `MEMSET(destAddr, fillByte, n)`.
+    Set,
+    /// `MEMCMP(pBuf1, pBuf2, n)`: 0 when equal, -1 or 1 as the first differing byte compares.
+    Compare,
+}
+
+impl MemFunc {
+    /// The Tc2_System name.
+    pub fn name(self) -> &'static str {
+        match self {
+            MemFunc::Copy => "MEMCPY",
+            MemFunc::Move => "MEMMOVE",
+            MemFunc::Set => "MEMSET",
+            MemFunc::Compare => "MEMCMP",
+        }
+    }
+}
+
+/// The payload of [`Operand::Mem`]: a memory function on known variables.
+#[derive(Debug, Clone, Serialize)]
+pub struct MemCall {
+    /// Which function.
+    pub func: MemFunc,
+    /// The variable the first pointer argument points to (`a` of `ADR(a)`, an element or field).
+    pub dest: VarRef,
+    /// The variable of the second pointer argument (MEMCPY, MEMMOVE, MEMCMP).
+    pub src: Option<VarRef>,
+    /// The fill byte (MEMSET) and the byte count, plain operands.
+    pub fill: Option<Operand>,
+    /// The number of bytes.
+    pub count: Operand,
+    /// The whole call text.
+    pub span: Span,
+}
+
+/// The payload of [`Operand::SizeOf`].
+#[derive(Debug, Clone, Serialize)]
+pub struct SizeOfOperand {
+    /// The variable (an element or field too) or, as a bare name that names no variable, the type
+    /// whose size is taken.
+    pub of: VarRef,
+    /// The whole `SIZEOF(x)` text.
+    pub span: Span,
 }
 
 /// The payload of [`Operand::Ref`]: the address of a variable, or NULL.
@@ -516,6 +574,8 @@ impl Operand {
             Operand::Address(a) => a.span,
             Operand::EnumValue(e) => e.span,
             Operand::Ref(r) => r.span,
+            Operand::SizeOf(s) => s.span,
+            Operand::Mem(m) => m.span,
         }
     }
     /// A literal operand.

@@ -17,6 +17,7 @@
 
 pub mod actions;
 pub mod ast;
+pub mod const_eval;
 pub mod layout;
 pub mod lexer;
 pub mod literal;

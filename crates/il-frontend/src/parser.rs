@@ -9,6 +9,7 @@
 //! here as "expected an operand after `LD`").
 
 use crate::ast::*;
+pub use crate::const_eval::{ConstNum, Constants};
 use crate::layout::Layout;
 use crate::lexer::{LineTok, TimeValue, Tok, Word};
 use diagnostics::{code, Code, Diagnostic, Diagnostics, FileId, Severity, Span};
@@ -169,9 +170,10 @@ pub struct Ctx<'s> {
     pub base: usize,
     /// Syntax problems found by the grammar actions, in order.
     pub diags: Vec<Diagnostic>,
-    /// Integer constants declared so far in the text (`VAR_GLOBAL CONSTANT` / `VAR CONSTANT` with an
-    /// integer literal initial value), by upper-case name: what a bound expression may name.
-    pub consts: std::collections::HashMap<String, i128>,
+    /// Numeric and duration constants declared so far in the text (`VAR_GLOBAL CONSTANT` / `VAR
+    /// CONSTANT` with a literal or constant-expression initial value), by upper-case name: what a
+    /// constant expression may name.
+    pub consts: Constants,
     /// The declarations being read are in a `CONSTANT` block (their integer values go to `consts`).
     pub in_constant_block: bool,
 }
@@ -182,6 +184,12 @@ pub struct Ctx<'s> {
 pub enum BoundExpr {
     /// An integer literal, sign applied.
     Int(i128, Span),
+    /// A real literal (`2.2E-016`, `LREAL#1.5`, `REAL#2`), sign applied.
+    Real(f64, Span),
+    /// A duration literal (`T#500MS`) in nanoseconds.
+    Duration(i128, Span),
+    /// Another literal (`D#2024-01-01`, `'text'`): no value in a constant expression.
+    NotNumber(Span),
     /// A named constant.
     Name(Ident),
     /// `-e`.
@@ -202,7 +210,11 @@ impl Drop for BoundExpr {
                     stack.push(std::mem::replace(&mut **a, leaf()));
                     stack.push(std::mem::replace(&mut **b, leaf()));
                 }
-                BoundExpr::Int(..) | BoundExpr::Name(_) => {}
+                BoundExpr::Int(..)
+                | BoundExpr::Real(..)
+                | BoundExpr::Duration(..)
+                | BoundExpr::NotNumber(_)
+                | BoundExpr::Name(_) => {}
             }
         }
         let mut stack = Vec::new();
@@ -674,6 +686,24 @@ impl<'s> Ctx<'s> {
         self.literal(kind, prefix, l, r)
     }
 
+    /// A `T#`/`LTIME#` literal in a constant expression (a date or time of day has no value there).
+    pub fn bound_time(&self, t: TimeValue, l: usize, r: usize) -> BoundExpr {
+        match t {
+            TimeValue::Duration(v, _) => BoundExpr::Duration(v, self.span(l, r)),
+            _ => BoundExpr::NotNumber(self.span(l, r)),
+        }
+    }
+
+    /// A typed literal in a constant expression (`LREAL#1.5`, `INT#2`, `REAL#3`).
+    pub fn bound_typed(&self, lit: Literal) -> BoundExpr {
+        match ConstNum::of_literal(&lit) {
+            Some(ConstNum::Int(v)) => BoundExpr::Int(v, lit.span),
+            Some(ConstNum::Real(v)) => BoundExpr::Real(v, lit.span),
+            Some(ConstNum::Duration(v)) => BoundExpr::Duration(v, lit.span),
+            None => BoundExpr::NotNumber(lit.span),
+        }
+    }
+
     // ------------------------------------------------------------ declarations
 
     /// Builds a POU; reports a FUNCTION without result type (E0018) and a result type on a program or FB
@@ -820,12 +850,15 @@ impl<'s> Ctx<'s> {
         self.const_expr(e, l, r, true)
     }
 
-    /// An integer constant expression as an initial value (`c : INT := N * 2;`): its value as an
-    /// integer literal spanning `l..r` (0 after an E0022; the type's range is checked by sema).
+    /// A constant expression as an initial value (`c : INT := N * 2;`, `EPS : LREAL := 16 *
+    /// 2.2E-016;`, `T_MAX : TIME := T#1S + T#500MS;`): its value as a literal spanning `l..r` (the
+    /// integer 0 after an E0022; the type's range is checked by sema).
     pub fn init_expr(&mut self, e: BoundExpr, l: usize, r: usize) -> Initializer {
-        let v = self.const_expr(e, l, r, false).unwrap_or(0);
+        let kind = self
+            .const_value(e, l, r)
+            .map_or(LiteralKind::Int(0), ConstNum::literal_kind);
         Initializer::Value(Operand::literal(Literal {
-            kind: LiteralKind::Int(v),
+            kind,
             type_prefix: None,
             span: self.span(l, r),
         }))
@@ -834,41 +867,31 @@ impl<'s> Ctx<'s> {
     /// Evaluates `e` (see [`Ctx::bound`]); `dint`: the value must fit a DINT (a bound, a length),
     /// else a LINT.
     fn const_expr(&mut self, e: BoundExpr, l: usize, r: usize, dint: bool) -> Option<i128> {
-        fn eval(
-            e: &BoundExpr,
-            consts: &std::collections::HashMap<String, i128>,
-            depth: u32,
-        ) -> Result<i128, String> {
-            if depth > 64 {
-                return Err("the expression is nested too deeply".into());
+        let value = self.evaluated(e, l, r, true)?.and_then(|v| match v {
+            ConstNum::Int(v) if dint && i32::try_from(v).is_err() => {
+                Err("the value overflows".to_string())
             }
-            match e {
-                BoundExpr::Int(v, _) => Ok(*v),
-                BoundExpr::Name(n) => consts
-                    .get(&n.name.to_ascii_uppercase())
-                    .copied()
-                    .ok_or_else(|| {
-                        format!("`{}` is not an integer constant declared before", n.name)
-                    }),
-                BoundExpr::Neg(a, _) => eval(a, consts, depth + 1)?
-                    .checked_neg()
-                    .ok_or_else(|| "the value overflows".into()),
-                BoundExpr::Bin(op, a, b) => {
-                    let (a, b) = (eval(a, consts, depth + 1)?, eval(b, consts, depth + 1)?);
-                    let v = match op {
-                        b'+' => a.checked_add(b),
-                        b'-' => a.checked_sub(b),
-                        b'*' => a.checked_mul(b),
-                        _ if b == 0 => return Err("division by zero".into()),
-                        b'/' => a.checked_div(b),
-                        _ => a.checked_rem(b),
-                    };
-                    // checked in the widest integer type (LINT); bounds are narrowed by the caller
-                    v.filter(|v| i64::try_from(*v).is_ok())
-                        .ok_or_else(|| "the value overflows".into())
-                }
-            }
-        }
+            ConstNum::Int(v) => Ok(v),
+            _ => Err("the value is not an integer".to_string()),
+        });
+        self.report_const(value, l, r, true)
+    }
+
+    /// Evaluates `e` as an initial value: a number or a duration (E0022 when it has none).
+    fn const_value(&mut self, e: BoundExpr, l: usize, r: usize) -> Option<ConstNum> {
+        let value = self.evaluated(e, l, r, false)?;
+        self.report_const(value, l, r, false)
+    }
+
+    /// The value of `e` written at `l..r`, `None` when an E0022 was already reported inside it;
+    /// `integers`: a bound or a length (see [`crate::const_eval::eval`]).
+    fn evaluated(
+        &mut self,
+        e: BoundExpr,
+        l: usize,
+        r: usize,
+        integers: bool,
+    ) -> Option<Result<ConstNum, String>> {
         let here = self.span(l, r);
         if self.diags.iter().any(|d| {
             d.code == code::E0022
@@ -877,23 +900,32 @@ impl<'s> Ctx<'s> {
         }) {
             return None;
         }
-        let value = eval(&e, &self.consts, 0).and_then(|v| {
-            if dint && i32::try_from(v).is_err() {
-                Err("the value overflows".to_string())
-            } else {
-                Ok(v)
-            }
-        });
+        Some(crate::const_eval::eval(&e, &self.consts, integers))
+    }
+
+    /// The value, or one E0022 at `l..r` saying why there is none (`integers`: in a bound or length).
+    fn report_const<T>(
+        &mut self,
+        value: Result<T, String>,
+        l: usize,
+        r: usize,
+        integers: bool,
+    ) -> Option<T> {
         match value {
             Ok(v) => Some(v),
             Err(why) => {
                 let text = self.text(l, r).trim().to_string();
+                let hint = if integers {
+                    "use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD and parentheses"
+                } else {
+                    "use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD and parentheses"
+                };
                 self.hint(
                     code::E0022,
                     format!("constant expression `{text}`: {why}"),
                     l,
                     r,
-                    "use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD and parentheses",
+                    hint,
                 );
                 None
             }
@@ -952,11 +984,17 @@ impl<'s> Ctx<'s> {
             );
         }
         if self.in_constant_block {
-            if let Some(Initializer::Value(Operand::Literal(lit))) = &init {
-                if let LiteralKind::Int(n) = lit.kind {
-                    for name in &names {
-                        self.consts.insert(name.name.to_ascii_uppercase(), n);
-                    }
+            let value = match &init {
+                Some(Initializer::Value(Operand::Literal(lit))) => ConstNum::of_literal(lit),
+                // `C3 : REAL := C1;`: a constant named before
+                Some(Initializer::Value(Operand::Var(v))) if v.accessors.is_empty() => {
+                    self.consts.get(&v.base.name.to_ascii_uppercase()).copied()
+                }
+                _ => None,
+            };
+            if let Some(n) = value.and_then(|v| crate::const_eval::as_declared(v, &ty)) {
+                for name in &names {
+                    self.consts.insert(name.name.to_ascii_uppercase(), n);
                 }
             }
         }
@@ -1438,7 +1476,7 @@ fn summarize_expected(expected: &[String]) -> String {
             let name_like = t
                 .chars()
                 .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
-                && crate::lexer::classify(t).is_name();
+                && (crate::lexer::classify(t).is_name() || matches!(t, "ON" | "TASK" | "WITH"));
             if (operand || has("IDENT")) && name_like {
                 continue;
             }
@@ -1462,32 +1500,26 @@ thread_local! {
     /// The integer constants of the project's other files (their `VAR_GLOBAL CONSTANT` lists) that
     /// the bounds and lengths of the text being parsed may name: set for the time of one call of
     /// [`with_other_files_constants`], empty otherwise.
-    static OTHER_FILES_CONSTANTS: std::cell::RefCell<std::collections::HashMap<String, i128>> =
+    static OTHER_FILES_CONSTANTS: std::cell::RefCell<Constants> =
         Default::default();
 }
 
 /// Runs `parse` with `constants` (upper-case name to value) known to every bound expression and
 /// integer initial value it parses, as if declared before the text (a text's own constants of the
 /// same name take their place from their declaration on).
-pub fn with_other_files_constants<R>(
-    constants: std::collections::HashMap<String, i128>,
-    parse: impl FnOnce() -> R,
-) -> R {
+pub fn with_other_files_constants<R>(constants: Constants, parse: impl FnOnce() -> R) -> R {
     let before = OTHER_FILES_CONSTANTS.with(|c| c.replace(constants));
     let result = parse();
     OTHER_FILES_CONSTANTS.with(|c| c.replace(before));
     result
 }
 
-/// The integer constants `unit` offers the project's other files: the names of its `VAR_GLOBAL
-/// CONSTANT` lists (top level, configuration, resource) whose initial value is an integer literal
+/// The constants `unit` offers the project's other files: the names of its `VAR_GLOBAL CONSTANT`
+/// lists (top level, configuration, resource) whose initial value is a numeric or duration literal
 /// or a constant expression that evaluated (one with an E0022 among `diags` is left out), by
-/// upper-case name. A POU's own `VAR CONSTANT` stays in its file.
-pub fn global_integer_constants(
-    unit: &CompilationUnit,
-    diags: &Diagnostics,
-) -> std::collections::HashMap<String, i128> {
-    let mut found = std::collections::HashMap::new();
+/// upper-case name, in their declared types. A POU's own `VAR CONSTANT` stays in its file.
+pub fn global_integer_constants(unit: &CompilationUnit, diags: &Diagnostics) -> Constants {
+    let mut found = Constants::new();
     let failed = |span: Span| {
         diags.iter().any(|d| {
             d.code == code::E0022
@@ -1502,16 +1534,14 @@ pub fn global_integer_constants(
         }
         for v in &block.vars {
             let value = match &v.init {
-                Some(Initializer::Value(Operand::Literal(lit))) => match lit.kind {
-                    LiteralKind::Int(n) => Some(n),
-                    _ => None,
-                },
+                Some(Initializer::Value(Operand::Literal(lit))) => ConstNum::of_literal(lit),
                 // `MAX_SIZE : INT := nJoints;`: a constant named before (CODESYS GVLs)
                 Some(Initializer::Value(Operand::Var(r))) if r.accessors.is_empty() => {
                     found.get(&r.base.name.to_ascii_uppercase()).copied()
                 }
                 _ => None,
             };
+            let value = value.and_then(|n| crate::const_eval::as_declared(n, &v.ty));
             if let Some(n) = value.filter(|_| !failed(v.span)) {
                 found.insert(v.name.name.to_ascii_uppercase(), n);
             }

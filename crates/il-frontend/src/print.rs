@@ -264,6 +264,28 @@ pub fn operand(out: &mut String, o: &Operand) {
             }
             None => out.push_str("NULL"),
         },
+        Operand::SizeOf(s) => {
+            out.push_str("SIZEOF(");
+            var_ref(out, &s.of);
+            out.push(')');
+        }
+        Operand::Mem(m) => {
+            out.push_str(m.func.name());
+            out.push_str("(ADR(");
+            var_ref(out, &m.dest);
+            out.push_str("), ");
+            if let Some(s) = &m.src {
+                out.push_str("ADR(");
+                var_ref(out, s);
+                out.push_str("), ");
+            }
+            if let Some(f) = &m.fill {
+                operand(out, f);
+                out.push_str(", ");
+            }
+            operand(out, &m.count);
+            out.push(')');
+        }
     }
 }
 

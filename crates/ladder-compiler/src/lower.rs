@@ -948,6 +948,15 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             }
             Operand::Var(v) => self.pou.var_type(v).map(Ty::Known).unwrap_or(Ty::Unknown),
             Operand::Ref(_) => Ty::Unknown,
+            Operand::SizeOf(s) => Ty::Known(TypeRef::Named(Ident::new("UDINT", s.span))),
+            Operand::Mem(m) => Ty::Known(TypeRef::Named(Ident::new(
+                if m.func == il_frontend::ast::MemFunc::Compare {
+                    "DINT"
+                } else {
+                    "UDINT"
+                },
+                m.span,
+            ))),
             Operand::Address(a) => Ty::Known(TypeRef::Named(Ident::new(
                 match a.size {
                     AddressSize::Bit => "BOOL",

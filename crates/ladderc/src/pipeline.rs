@@ -560,7 +560,7 @@ impl Session {
     fn reparse_with_other_files_constants(
         &mut self,
         mut waiting: Vec<WaitingFile>,
-        offered: Vec<std::collections::HashMap<String, i128>>,
+        offered: Vec<il_frontend::parser::Constants>,
         names: std::collections::HashSet<String>,
         units: &mut [CompilationUnit],
         pending: &mut Vec<il_frontend::st::file::PendingBody>,
@@ -569,8 +569,7 @@ impl Session {
         if waiting.is_empty() {
             return;
         }
-        let mut known: std::collections::HashMap<String, i128> =
-            offered.into_iter().flatten().collect();
+        let mut known: il_frontend::parser::Constants = offered.into_iter().flatten().collect();
         let mut results: Vec<_> = waiting.iter().map(|_| None).collect();
         for _ in 0..waiting.len() {
             let mut found = known.clone();

@@ -9,7 +9,7 @@
 use super::Gen;
 use crate::{ctypes, mangle};
 use diagnostics::Span;
-use il_frontend::sema::{ConstValue, FbType, Type, UserTypeDef};
+use il_frontend::sema::{AddressStep, ConstValue, FbType, Type, UserTypeDef};
 use std::fmt::Write as _;
 
 /// A run of at least this many equal initial values in an array is written as one loop.
@@ -57,6 +57,30 @@ impl Gen<'_> {
     ) {
         let pad = "    ".repeat(indent);
         match (ty, init) {
+            // `p : POINTER TO INT := ADR(a);`: `a` is a variable of the same POU, so its C lvalue
+            // is the reference's own with the last name replaced (sema: `address_init`)
+            (Type::Ref(_), Some(ConstValue::Address(a))) => {
+                let own = mangle::var(&a.of_var);
+                let Some(prefix) = lv.strip_suffix(own.as_str()) else {
+                    self.unsupported(span, "this address as an initial value");
+                    let _ = writeln!(out, "{pad}{lv} = NULL;");
+                    return;
+                };
+                let mut target = cfmt!("{prefix}{}", mangle::var(&a.base));
+                for step in &a.steps {
+                    match step {
+                        AddressStep::Field(f) => {
+                            let _ = write!(target, ".{}", mangle::var(f));
+                        }
+                        AddressStep::Index(offsets) => {
+                            for o in offsets {
+                                let _ = write!(target, "[{o}]");
+                            }
+                        }
+                    }
+                }
+                let _ = writeln!(out, "{pad}{lv} = (IEC_REF)&{target};");
+            }
             (Type::Ref(_), _) => {
                 let _ = writeln!(out, "{pad}{lv} = NULL;");
             }

@@ -13,6 +13,7 @@ mod datetime;
 mod edges;
 mod hier;
 mod init;
+mod memory;
 mod method;
 mod overlaps;
 mod refs;

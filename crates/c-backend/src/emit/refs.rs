@@ -2,7 +2,8 @@
 //! `REFERENCE TO`): a reference is an `IEC_REF` (`void *`) holding the address of the variable it refers to,
 //! or NULL.
 //!
-//! Input: sema's reference types and operands (`REF(x)`, `NULL`, `r^`). Output: C expressions.
+//! Input: sema's reference types and operands (`REF(x)`, `NULL`, `r^`, and `SIZEOF(x)`, the C
+//! `sizeof` of what a reference would refer to). Output: C expressions.
 //! Invariants: a reference holds only NULL or the address of a whole variable of its target type
 //! that lives as long as the program (sema refuses `REF` of temporaries, function variables,
 //! VAR_IN_OUT and located variables, and all pointer arithmetic), so a non-NULL reference is always
@@ -16,7 +17,7 @@ use super::scope::{Place, Scope};
 use super::Gen;
 use crate::{ctypes, mangle};
 use diagnostics::Span;
-use il_frontend::ast::{RefOperand, VarRef};
+use il_frontend::ast::{RefOperand, SizeOfOperand, VarRef};
 use il_frontend::sema::Type;
 
 impl Gen<'_> {
@@ -31,6 +32,31 @@ impl Gen<'_> {
                 // sema refuses it (E0305); no address of the process image is handed out
                 self.unsupported(r.span, "a reference to a located variable or a bit");
                 None
+            }
+        }
+    }
+
+    /// `SIZEOF(x)` / `SIZEOF(T)`: C's `sizeof` of the variable's lvalue or of the type's C type
+    /// (`IEC_INT[4]` for an array), so the figure is the generated C's own (a STRING of any declared
+    /// length is one `IEC_STRING`, a struct is padded as the C compiler pads it). A located variable
+    /// or a bit of a variable is its elementary type's size.
+    pub(super) fn size_of(&mut self, scope: &Scope, s: &SizeOfOperand) -> Option<String> {
+        // a bare name that is no variable here is a type (sema: `size_of_type`)
+        self.quiet += 1;
+        let place = self.place(scope, &s.of);
+        self.quiet -= 1;
+        if place.is_none() && s.of.accessors.is_empty() {
+            if let Some(ty) = self.model.type_named(&s.of.base.name) {
+                let base = ctypes::base(self.model, &ty)?;
+                let dims = ctypes::dims(&ty);
+                return Some(cfmt!("sizeof({base}{dims})"));
+            }
+        }
+        match self.place(scope, &s.of)? {
+            Place::Mem { lv, .. } => Some(cfmt!("sizeof({lv})")),
+            Place::Loc { ty, .. } | Place::Part { ty, .. } => {
+                let base = ctypes::base(self.model, &ty)?;
+                Some(cfmt!("sizeof({base})"))
             }
         }
     }

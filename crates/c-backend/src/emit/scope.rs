@@ -547,6 +547,16 @@ impl Gen<'_> {
                 .type_by_name(&e.type_name.name)
                 .map(Type::Enum)
                 .unwrap_or(Type::Error),
+            // typed by its context, as an integer literal (sema: `size_of_operand`)
+            Operand::Mem(m) => Type::Elementary(if m.func == il_frontend::ast::MemFunc::Compare {
+                E::Dint
+            } else {
+                E::Udint
+            }),
+            Operand::SizeOf(_) => match context {
+                Some(c) if c.is_numeric() => c.clone(),
+                _ => Type::Elementary(E::Udint),
+            },
             Operand::Ref(r) => match &r.of {
                 None => context
                     .filter(|c| matches!(c, Type::Ref(_)))
@@ -724,6 +734,18 @@ impl Gen<'_> {
         match op {
             Operand::Literal(l) => self.literal(l, want),
             Operand::Ref(r) => self.reference_value(scope, r),
+            Operand::Mem(m) => {
+                let from = self.operand_type(scope, op, None);
+                let call = self.memory_call(scope, m)?;
+                Some(convert_owned(call, &from, want))
+            }
+            Operand::SizeOf(s) => {
+                let size = self.size_of(scope, s)?;
+                let c = ctypes::base(self.model, want)
+                    .filter(|_| want.is_numeric())
+                    .unwrap_or_else(|| "IEC_UDINT".into());
+                Some(cfmt!("(({c}){size})"))
+            }
             Operand::Address(a) => {
                 let e = il_frontend::sema::Location::of(a).elementary();
                 match self.locate(a, None) {

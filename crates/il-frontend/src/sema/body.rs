@@ -794,6 +794,11 @@ impl Body<'_, '_> {
                 }
                 rec.operand = Some(t.clone());
                 self.load(st, t, span);
+                if matches!(o, crate::ast::Operand::Mem(_)) {
+                    // `MEMCPY(...);` as a statement: its result (success) may be dropped, as a
+                    // function call's
+                    st.cr.fresh = None;
+                }
             }
             Op::St => {
                 let cr = self.use_cr(st, span, if negate { "STN" } else { "ST" });

@@ -351,12 +351,12 @@ impl Body<'_, '_> {
                     .label("a function block, program or FB instance")
                     .hint("call FB instances with CAL inst(...)");
             } else if name.is("SIZEOF") {
-                // CODESYS/TwinCAT: sizes in bytes, for pointer arithmetic and MEMCPY (refused):
-                // its argument (often a type name) is not checked
+                // CODESYS/TwinCAT: sizes in bytes; ST reads `SIZEOF(x)` (`Operand::SizeOf`), an IL
+                // function call of it is refused: its argument (often a type name) is not checked
                 self.a
-                    .error(code::E1019, name.span, "`SIZEOF` is not supported")
+                    .error(code::E1019, name.span, "`SIZEOF` is not supported in IL")
                     .label("a CODESYS/TwinCAT operator")
-                    .hint("ladderc refuses pointer arithmetic and MEMCPY, what SIZEOF serves: index an array (`p^[i]`, `REF(buffer[i])`) and assign whole variables instead");
+                    .hint("write `SIZEOF(x)` in a Structured Text body (it takes a variable or type name, not the current result)");
                 st.cr.fresh = None;
                 st.cr.ty = Some(Ty::ERROR);
                 return;
@@ -921,6 +921,7 @@ impl Body<'_, '_> {
                 rec.operand = Some(Ty::Known(Type::Fb(fb)));
                 self.duplicate_formals(args);
                 self.fb_args(fb, args, rec);
+                self.in_outs_connected(fb, span, instance, args, rec);
             }
             Type::Error => self.args_unchecked(args),
             other => {
@@ -1005,6 +1006,54 @@ impl Body<'_, '_> {
                     self.formal_arg(k, fa, &tname, &params, rec);
                 }
             }
+        }
+    }
+
+    /// E1033 for each VAR_IN_OUT of the block that a call of an instance leaves unconnected
+    /// (`inst();`, `inst(io := , a := 1)`): IEC 61131-3 ed. 3 (6.6.1.2.2) requires an in-out to be
+    /// connected, CODESYS and TwinCAT refuse such a call (C0039: "VAR_IN_OUT must be assigned in
+    /// call"), and the block would read through a null reference. A call that runs an action of
+    /// the instance (its `__ACTION_` flag) passes no parameters and is not checked.
+    fn in_outs_connected(
+        &mut self,
+        fb: FbType,
+        span: Span,
+        instance: &VarRef,
+        args: &CallArgs,
+        rec: &Rec,
+    ) {
+        if let CallArgs::Formal(list) = args {
+            if list
+                .iter()
+                .any(|a| a.name.name.starts_with(crate::actions::FLAG_PREFIX))
+            {
+                return;
+            }
+        }
+        let tname = self.a.type_name(&Type::Fb(fb));
+        for (name, dir, _) in fb_param_list(&self.a.model, fb) {
+            if dir != ParamDir::InOut
+                || rec
+                    .args
+                    .iter()
+                    .any(|(b, _)| !b.output && b.param.eq_ignore_ascii_case(&name))
+            {
+                continue;
+            }
+            self.a
+                .error(
+                    code::E1033,
+                    span,
+                    format!(
+                        "VAR_IN_OUT `{name}` of {tname} is not connected in this call of `{}`",
+                        instance.base.name
+                    ),
+                )
+                .label("in-out not connected")
+                .hint(format!(
+                    "connect it to a variable in every call: `{}({name} := ...)`",
+                    instance.base.name
+                ));
         }
     }
 

@@ -663,6 +663,21 @@ impl Analyzer<'_> {
                     .hint("each variable of a POU needs its own name (names are case-insensitive)");
                     continue;
                 }
+                if let Some(word) = configuration_keyword(&d.name.name) {
+                    self.warning(
+                        code::W1418,
+                        d.name.span,
+                        format!(
+                            "`{}` is a keyword of IEC 61131-3 configurations (`{word}`): accepted as a variable name, as CODESYS and TwinCAT do",
+                            d.name.name
+                        ),
+                    )
+                    .label("configuration keyword")
+                    .hint(format!(
+                        "for portable IEC 61131-3 code rename the variable, for example `x{}`",
+                        d.name.name
+                    ));
+                }
                 if let Some(why) = reserved_name(&d.name.name) {
                     // reported once, at the declaration; the variable is kept so that its uses
                     // give no further errors
@@ -706,6 +721,7 @@ impl Analyzer<'_> {
                 list_seen.insert(&d.name.name, position, |p| out[p].name.as_str());
             }
         }
+        self.address_initial_values(blocks, &mut out, pou);
         out
     }
 
@@ -1383,6 +1399,27 @@ impl Analyzer<'_> {
                     }
                 }
             }
+            // `y : REAL := GVL.C1;` (CODESYS, TwinCAT): a constant of a named global list, by
+            // its list's name
+            Operand::Var(v)
+                if !matches!(ty, Type::Enum(_))
+                    && self.model.global_list(&v.base.name).is_some()
+                    && matches!(&v.accessors[..], [crate::ast::Accessor::Field(m)]
+                        if consts.contains_key(&m.key())) =>
+            {
+                let [crate::ast::Accessor::Field(member)] = &v.accessors[..] else {
+                    return None;
+                };
+                let plain = Operand::Var(ast::VarRef {
+                    base: member.clone(),
+                    accessors: Default::default(),
+                    span: v.span,
+                });
+                self.const_value(&plain, ty, consts)
+            }
+            // `p : POINTER TO INT := ADR(a);`: set once every variable of the POU is declared
+            // (`address_init`)
+            Operand::Ref(r) if r.of.is_some() && matches!(ty, Type::Ref(_)) => None,
             // `E_State.Init` (CODESYS, TwinCAT): a value qualified by its enumeration's name
             Operand::Var(v)
                 if matches!(ty, Type::Enum(id)
@@ -1497,10 +1534,25 @@ const KEYWORDS: &[&str] = &[
     "END_CONFIGURATION",
     "RESOURCE",
     "END_RESOURCE",
-    "ON",
-    "WITH",
-    "TASK",
 ];
+
+/// IEC 61131-3 reserves `ON`, `WITH` and `TASK` (ed. 3 Annex C) for textual configurations
+/// (`RESOURCE r ON cpu`, `PROGRAM p WITH t : P;`, `TASK t (...)`). CODESYS and TwinCAT, which
+/// configure tasks in the project tree and have no such text, do not list them among their
+/// keywords (CODESYS help "Keywords", Beckhoff Infosys "Keywords"), and real projects name
+/// variables `ON`. ladderc reads them unambiguously as names (in a configuration they stand where
+/// no variable name can), so they are accepted with warning W1418 instead of E1031. The returned
+/// text shows the word's place in a configuration.
+pub fn configuration_keyword(name: &str) -> Option<&'static str> {
+    [
+        ("ON", "RESOURCE r ON cpu"),
+        ("WITH", "PROGRAM p WITH t : P"),
+        ("TASK", "TASK t (INTERVAL := T#10MS)"),
+    ]
+    .into_iter()
+    .find(|(k, _)| k.eq_ignore_ascii_case(name))
+    .map(|(_, place)| place)
+}
 
 /// Why `name` cannot name a variable (IEC 61131-3 2nd ed. Annex C, 3rd ed. 6.1.3: keywords, the
 /// names of the elementary data types and of the standard function blocks), or `None`. Names the

@@ -7,9 +7,11 @@
 //!
 //! Stages: `decls` (types, POU variables, globals, configurations) then `body` (each POU's IL body).
 
+mod address_init;
 mod body;
 mod calls;
 mod decls;
+mod memory;
 pub mod model;
 pub mod nesting;
 mod places;

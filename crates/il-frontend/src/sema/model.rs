@@ -644,6 +644,29 @@ pub enum ConstValue {
     Array(Vec<ConstValue>),
     /// Struct fields or FB instance parameters by name as written (`(PT := T#1s)`).
     Struct(Vec<(String, ConstValue)>),
+    /// `p : POINTER TO INT := ADR(a);` (CODESYS, TwinCAT): the address of a variable of the same
+    /// POU (see `sema::decls` for what is accepted).
+    Address(AddressInit),
+}
+
+/// The initial value `ADR(path)` of a reference variable of a POU.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AddressInit {
+    /// The reference variable's own name (its C lvalue ends with it).
+    pub of_var: String,
+    /// The variable of the same POU the address is taken of.
+    pub base: String,
+    /// Its fields and zero-based element offsets, in order.
+    pub steps: Vec<AddressStep>,
+}
+
+/// One step of an [`AddressInit`] path.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum AddressStep {
+    /// `.name`: a structure field.
+    Field(String),
+    /// `[i, j]`: the zero-based offsets of constant subscripts, one per dimension.
+    Index(Vec<u64>),
 }
 
 /// A direct address `%IX0.1` / `%QW3` / `%MD10` (`path` empty for `%I*`).
@@ -1612,6 +1635,33 @@ impl Model {
     /// The user type with id `id`.
     pub fn user_type(&self, id: TypeId) -> &UserType {
         &self.types[id.0 as usize]
+    }
+    /// The type a bare type name stands for, as `SIZEOF(T)` names it: an elementary type, `STRING` /
+    /// `WSTRING` (their default length), a user type (an alias: its target), a
+    /// standard or user function block.
+    pub fn type_named(&self, name: &str) -> Option<Type> {
+        if let Some(e) = Elementary::from_name(name) {
+            return Some(Type::Elementary(e));
+        }
+        if name.eq_ignore_ascii_case("STRING") || name.eq_ignore_ascii_case("WSTRING") {
+            return Some(Type::String {
+                wide: name.eq_ignore_ascii_case("WSTRING"),
+                len: DEFAULT_STRING_LEN,
+            });
+        }
+        if let Some(id) = self.type_by_name(name) {
+            return Some(match &self.user_type(id).def {
+                UserTypeDef::Struct { .. } => Type::Struct(id),
+                UserTypeDef::Enum { .. } => Type::Enum(id),
+                UserTypeDef::Alias { target, .. } => target.clone(),
+            });
+        }
+        if let Some(fb) = StdFb::from_name(name) {
+            return Some(Type::Fb(FbType::Standard(fb)));
+        }
+        self.pou_by_name(name)
+            .filter(|id| self.pou(*id).kind == PouKind::FunctionBlock)
+            .map(|id| Type::Fb(FbType::User(id)))
     }
     /// A user type's id by name (case-insensitive).
     pub fn type_by_name(&self, name: &str) -> Option<TypeId> {

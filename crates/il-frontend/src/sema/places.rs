@@ -61,6 +61,8 @@ impl Body<'_, '_> {
             Operand::Address(a) => Ty::Known(Type::Elementary(Location::of(a).elementary())),
             Operand::EnumValue(e) => Ty::Known(self.enum_value(&e.type_name, &e.value)),
             Operand::Ref(r) => self.reference_operand(r),
+            Operand::SizeOf(s) => self.size_of_operand(s),
+            Operand::Mem(m) => self.mem_operand(m),
         }
     }
 
@@ -153,7 +155,11 @@ impl Body<'_, '_> {
                 }
                 Type::Elementary(Location::of(a).elementary())
             }
-            Operand::Literal(_) | Operand::EnumValue(_) | Operand::Ref(_) => {
+            Operand::Literal(_)
+            | Operand::EnumValue(_)
+            | Operand::Ref(_)
+            | Operand::SizeOf(_)
+            | Operand::Mem(_) => {
                 self.a
                     .error(
                         code::E1026,

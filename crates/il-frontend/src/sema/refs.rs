@@ -1,6 +1,7 @@
 //! References in bodies (IEC 61131-3 edition 3, 6.4.4.10; CODESYS/TwinCAT pointers and
-//! `REFERENCE TO`): the type of `REF(x)` / `ADR(x)` / `NULL`, the dereference `r^`, and the
-//! variables whose address may not be taken.
+//! `REFERENCE TO`): the type of `REF(x)` / `ADR(x)` / `NULL`, the dereference `r^`, the
+//! variables whose address may not be taken, and `SIZEOF(x)` / `SIZEOF(T)` (the bytes of a variable
+//! or type in the generated C).
 //!
 //! Input: operands and accesses of one body. Output: their types and diagnostics. Invariants: a
 //! reference is only ever made to storage that outlives every reference to it: a variable of a
@@ -71,6 +72,33 @@ impl Body<'_, '_> {
             return Ty::ERROR;
         }
         Ty::Known(Type::Ref(Box::new(place.ty)))
+    }
+
+    /// `SIZEOF(x)` / `SIZEOF(T)` (CODESYS, TwinCAT): an unsigned integer typed by its context, as
+    /// an integer literal is (CODESYS and TwinCAT give it the smallest unsigned type holding the
+    /// size, which then widens to the context: `nSize : INT := SIZEOF(aArr)` is allowed there); the
+    /// class is made with the value 1, which fits every integer type (the size itself is C's
+    /// `sizeof`, known when the C compiles). A bare name that names no variable of the POU or
+    /// global but a type is the type; anything else must resolve as a variable (E1001 otherwise).
+    pub(super) fn size_of_operand(&mut self, s: &ast::SizeOfOperand) -> Ty {
+        if self.size_of_type(&s.of).is_none() && self.resolve_var(&s.of).ty.is_error() {
+            return Ty::ERROR;
+        }
+        Ty::Lit(self.lits.new_int(1, s.span))
+    }
+
+    /// The type `SIZEOF(v)` measures when `v` is a type name (no variable of that name is visible).
+    pub(super) fn size_of_type(&self, v: &ast::VarRef) -> Option<Type> {
+        if !v.accessors.is_empty() || self.is_visible_var(&v.base.name) {
+            return None;
+        }
+        self.a.model.type_named(&v.base.name)
+    }
+
+    /// Whether `name` is a variable of the POU or a global it reaches without VAR_EXTERNAL.
+    fn is_visible_var(&self, name: &str) -> bool {
+        self.pou().var_position(name).is_some()
+            || self.a.free_globals.contains_key(&name.to_ascii_uppercase())
     }
 
     /// Why the address of `v` may not be taken (`None`: it may).

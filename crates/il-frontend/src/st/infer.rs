@@ -441,6 +441,10 @@ impl Env<'_> {
         if name.is(super::refs::IS_VALID_REF) {
             return Ty::Known(elem_ref(Elementary::Bool, span));
         }
+        // `SIZEOF(x)`: an unsigned integer typed by its context, as an integer literal is
+        if name.is("SIZEOF") {
+            return Ty::IntLit;
+        }
         // TRUNC is ANY_REAL to ANY_INT (IEC 61131-3 edition 2): its integer type is its context's,
         // as matiec types it (`i := TRUNC(r)` is TRUNC to INT); the lowering writes `TRUNC_INT`
         if name.name.eq_ignore_ascii_case("TRUNC") {

@@ -1,9 +1,10 @@
 //! Constants of a named global variable list in the bounds of `.st` text (CODESYS objects exported as
-//! text): `ARRAY[1..GVL.nJoints]`, `STRING(GVL.N)`, `WSTRING[GVL.N]`, `UINT(0..GVL.N)`.
+//! text): `ARRAY[1..GVL.nJoints]`, `STRING(GVL.N)`, `WSTRING[GVL.N]`, `UINT(0..GVL.N)`, and in the
+//! constant expression of an initial value (`C2 : REAL := GVL.C1 / 2.0;`).
 //!
 //! Input: the file's text and tokens. Output: the text with each list qualifier (`GVL.`) inside an
-//! ARRAY's bound brackets, a STRING's length or an integer subrange's bounds blanked, or `None`
-//! when there is none. The IEC
+//! ARRAY's bound brackets, a STRING's length, an integer subrange's bounds or an initial value with
+//! an operator blanked, or `None` when there is none. The IEC
 //! declaration grammar has no qualified names there; once blanked, the constant is looked up by its
 //! name among the integer constants of the file and then of every file given with it (E0022 when
 //! none declares it), as TwinCAT objects' bounds are. Invariant: positions unchanged (the qualifier
@@ -57,6 +58,7 @@ pub(super) fn unqualify_list_bounds(src: &str, toks: &[Token]) -> Option<String>
         }
         k = j + 1;
     }
+    initial_value_qualifiers(src, toks, &mut blanks);
     if blanks.is_empty() {
         return None;
     }
@@ -66,4 +68,53 @@ pub(super) fn unqualify_list_bounds(src: &str, toks: &[Token]) -> Option<String>
         bytes[r].fill(b' ');
     }
     String::from_utf8(bytes).ok()
+}
+
+/// The list qualifiers of the initial values in `VAR` blocks that are constant expressions (an
+/// operator `+ - * / MOD` and no `:=` or `[` inside: not a structure or array initializer):
+/// `GVL.C1` in `C2 : REAL := GVL.C1 / 2.0;`. A lone `GVL.C1` stays (sema reads it as the list's
+/// member), as does a longer path (`GVL.st.x`, `GVL.a[1]`: no constant).
+fn initial_value_qualifiers(src: &str, toks: &[Token], blanks: &mut Vec<std::ops::Range<usize>>) {
+    let is_kw = |t: &Token, w: &str| super::file::is_word(src, t, w);
+    let mut in_vars = false;
+    let mut k = 0;
+    while k < toks.len() {
+        let t = &toks[k];
+        let w = word(src, t);
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident)
+            && (w.eq_ignore_ascii_case("VAR") || w.to_ascii_uppercase().starts_with("VAR_"))
+            && !w.eq_ignore_ascii_case("VAR_CONFIG")
+        {
+            in_vars = true;
+        } else if is_kw(t, "END_VAR") {
+            in_vars = false;
+        } else if in_vars && t.tok == Tok::Assign {
+            let end = (k + 1..toks.len())
+                .find(|&j| toks[j].tok == Tok::Semi || is_kw(&toks[j], "END_VAR"))
+                .unwrap_or(toks.len());
+            let value = &toks[k + 1..end];
+            let expression = value.iter().any(|t| {
+                matches!(t.tok, Tok::Plus | Tok::Minus | Tok::Star | Tok::Slash) || is_kw(t, "MOD")
+            }) && !value
+                .iter()
+                .any(|t| matches!(t.tok, Tok::Assign | Tok::LBracket));
+            if expression {
+                for j in 0..value.len() {
+                    let qualified = value[j].tok == Tok::Ident
+                        && value.get(j + 1).is_some_and(|t| t.tok == Tok::Dot)
+                        && value.get(j + 2).is_some_and(|t| t.tok == Tok::Ident)
+                        && !value.get(j + 3).is_some_and(|t| {
+                            matches!(t.tok, Tok::Dot | Tok::LBracket | Tok::LParen)
+                        })
+                        && (j == 0 || value[j - 1].tok != Tok::Dot);
+                    if qualified {
+                        blanks.push(value[j].range.start..value[j + 1].range.end);
+                    }
+                }
+            }
+            k = end;
+            continue;
+        }
+        k += 1;
+    }
 }

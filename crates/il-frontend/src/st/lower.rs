@@ -26,6 +26,7 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
+mod memory;
 mod short_circuit;
 
 /// Labels of the innermost loop, for EXIT and CONTINUE.
@@ -724,7 +725,17 @@ impl<'d> PouLowering<'d> {
     }
 
     fn stmt(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
-        let span = s.span;
+        if !self.stmt_rewritten(s, out, diags) {
+            self.stmt_lowered(s, out, diags);
+        }
+    }
+
+    /// Lowers `s` when a rewrite applies to it (property accessors, method calls hoisted out of
+    /// it, interface variables) and says whether one did. Kept out of [`Self::stmt`]'s frame:
+    /// statements nest (IF in IF ...), and the rewrites' statements would be on the stack at
+    /// every level of the nesting (the E0108 limit must lower without overflowing a 2 MB stack).
+    #[inline(never)]
+    fn stmt_rewritten(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) -> bool {
         if self.properties {
             let rewritten = super::property::rewrite(&self.env(), &self.methods, s, diags);
             if let Some((calls, rest)) = rewritten {
@@ -735,7 +746,7 @@ impl<'d> PouLowering<'d> {
                 }
                 self.stmt(&rest, out, diags);
                 self.types.get_mut().clear();
-                return;
+                return true;
             }
         }
         if !self.methods.is_empty() {
@@ -747,7 +758,7 @@ impl<'d> PouLowering<'d> {
                 }
                 self.stmt(&rest, out, diags);
                 self.types.get_mut().clear();
-                return;
+                return true;
             }
         }
         let first = self.temps.len();
@@ -763,8 +774,14 @@ impl<'d> PouLowering<'d> {
                 self.stmt(c, out, diags);
             }
             self.types.get_mut().clear();
-            return;
+            return true;
         }
+        false
+    }
+
+    /// Lowers `s` itself (no rewrite applies to it).
+    fn stmt_lowered(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        let span = s.span;
         match &s.kind {
             StmtKind::Call { callee, args } if self.method_of(callee).is_some() => {
                 let sig = self
@@ -1979,15 +1996,51 @@ impl<'d> PouLowering<'d> {
             out.push(ld(o, span));
             return;
         }
+        if self.decls.pou(&name.name).is_none() && self.memory_call(name, args, span, out, diags) {
+            return;
+        }
         if name.is("SIZEOF") && self.decls.pou(&name.name).is_none() {
-            // refused by sema (E1019) without its argument, often a type name
-            out.push(instr(
-                InstrKind::FunctionCall {
-                    name: name.clone(),
-                    args: Box::new(CallArgs::None),
-                },
-                span,
-            ));
+            // `SIZEOF(x)`, `SIZEOF(arr[1])`, `SIZEOF(T)` (CODESYS, TwinCAT): one operand, a
+            // variable (its accesses lowered as any place's) or a type name (sema tells them apart)
+            if let [Arg {
+                name: None,
+                value:
+                    Expr {
+                        kind: ExprKind::Place(p),
+                        ..
+                    },
+                ..
+            }] = args
+            {
+                let of = match p.name() {
+                    Some(n) if p.accessors.is_empty() => Some(il::VarRef {
+                        base: n.clone(),
+                        accessors: Default::default(),
+                        span: p.span,
+                    }),
+                    _ => match self.place_operand(p, out, diags) {
+                        Some(Operand::Var(v)) => Some(v),
+                        _ => None,
+                    },
+                };
+                if let Some(of) = of {
+                    out.push(ld(
+                        Operand::SizeOf(Box::new(il::SizeOfOperand { of, span })),
+                        span,
+                    ));
+                    return;
+                }
+            }
+            diags.push(
+                Diagnostic::error(code::E1034, "`SIZEOF` takes one variable or one type name")
+                    .at(span)
+                    .with_primary_label("not one variable or type")
+                    .with_hint(
+                        "write `SIZEOF(x)`, `SIZEOF(a[1])`, `SIZEOF(st.field)` or `SIZEOF(INT)`",
+                    ),
+            );
+            self.poisoned = true;
+            out.push(ld(int_lit(0, span), span));
             return;
         }
         if name.is(super::refs::IS_VALID_REF) {

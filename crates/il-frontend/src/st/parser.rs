@@ -1076,6 +1076,11 @@ impl<'s, 'd> Parser<'s, 'd> {
                         value,
                         span: self.span(start, self.prev_end()),
                     });
+                } else if self.at(&Tok::Comma) || self.at(&Tok::RParen) {
+                    // `IN :=` with nothing (TwinCAT and CODESYS accept it, as their editors write
+                    // an unconnected input): the input is left out of the call, so it keeps its
+                    // value in a block's instance and takes its initial value in a function's
+                    // call, as IEC 61131-3 ed. 3 (6.6.1.4.2) has an unassigned input do
                 } else {
                     let value = self.expr();
                     args.push(Arg {
@@ -1097,6 +1102,12 @@ impl<'s, 'd> Parser<'s, 'd> {
             match self.peek() {
                 Tok::Comma => {
                     self.bump();
+                    if formal_so_far(&args) && self.at(&Tok::RParen) {
+                        // `fb(a := x, q => y, )`: a comma after the last formal argument, as
+                        // TwinCAT accepts it (its editor leaves one after a removed pin)
+                        self.bump();
+                        return Some(args);
+                    }
                 }
                 Tok::RParen => {
                     self.bump();
@@ -1520,4 +1531,10 @@ impl<'s, 'd> Parser<'s, 'd> {
         self.bump();
         self.literal(kind, Some(prefix), &p, t.range.end)
     }
+}
+
+/// Whether every argument read so far is formal (`name := x`, `name => y`): only then may a comma
+/// stand before the `)`.
+fn formal_so_far(args: &[Arg]) -> bool {
+    !args.is_empty() && args.iter().all(|a| a.name.is_some())
 }

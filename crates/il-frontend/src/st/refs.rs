@@ -8,11 +8,16 @@
 //! the declarations' types wrapped back into [`TypeRef::Ref`] ([`RefTypes::apply`]).
 //! Invariants: every span stays where the user wrote it; a reference type is wrapped exactly where
 //! its keyword stood (a variable, a structure field, an array's element type, a TYPE alias, a
-//! FUNCTION's result); an initial value other than `NULL` is one E0305.
+//! FUNCTION's result); an initial value `ADR(path)` / `REF(path)` (a name with fields and constant
+//! subscripts) is kept for the declaration (`sema::address_init` checks it), any other but `NULL`
+//! is one E0305.
 
 use super::file::{blank, is_var_keyword, word};
 use super::lexer::{Tok, Token};
-use crate::ast::{CompilationUnit, LibraryElement, RefKind, TypeDef, TypeRef, VarBlock, VarDecl};
+use crate::ast::{
+    Accessor, CompilationUnit, Ident, LibraryElement, RefKind, TypeDef, TypeRef, VarBlock, VarDecl,
+    VarRef,
+};
 use crate::{FileId, Span};
 use diagnostics::{code, Diagnostic, Diagnostics};
 use std::collections::HashMap;
@@ -52,6 +57,9 @@ pub struct RefTypes {
     at: HashMap<usize, (Vec<RefKind>, Span)>,
     /// Errors found while blanking (initial values), reported with the others.
     pending: Vec<Diagnostic>,
+    /// `:= ADR(x)` initial values (CODESYS, TwinCAT), by the offset of the type text: set on the
+    /// declarations when they are wrapped (sema checks what `x` is).
+    addresses: HashMap<usize, VarRef>,
 }
 
 impl RefTypes {
@@ -80,6 +88,7 @@ impl RefTypes {
             file: Some(file),
             at: HashMap::new(),
             pending: Vec::new(),
+            addresses: HashMap::new(),
         };
         let mut in_decl = false;
         for (k, t) in toks.iter().enumerate() {
@@ -180,19 +189,25 @@ impl RefTypes {
             .get(assign.range.end..last.range.end)
             .unwrap_or("")
             .trim();
-        if !value.eq_ignore_ascii_case("NULL") {
+        let value_span = Span::new(file, base + assign.range.start, base + last.range.end);
+        let first_value = toks.get(k + 1).map_or(assign.range.end, |t| t.range.start);
+        if let Some(target) = address_initial_value(
+            value,
+            Span::new(file, base + first_value, base + last.range.end),
+        ) {
+            // `p : POINTER TO INT := ADR(a);`: kept for the declaration (see `decls`)
+            if let Some(t) = toks.get(j) {
+                self.addresses.insert(base + t.range.start, target);
+            }
+        } else if !value.eq_ignore_ascii_case("NULL") {
             self.pending.push(
                 Diagnostic::error(
                     code::E0305,
                     format!("a reference cannot have the initial value `{value}`"),
                 )
-                .at(Span::new(
-                    file,
-                    base + assign.range.start,
-                    base + last.range.end,
-                ))
+                .at(value_span)
                 .with_primary_label("initial value")
-                .with_hint("a reference starts as NULL: set it in the body (`r := REF(x);`)"),
+                .with_hint("a reference starts as NULL or as `ADR(x)` of a variable of its POU: set it in the body (`r := REF(x);`)"),
             );
         }
         blank(
@@ -263,6 +278,16 @@ impl RefTypes {
 
     fn decls(&mut self, decls: &mut [VarDecl]) {
         for d in decls {
+            let start = d.ty.span().start as usize;
+            if let Some(target) = self.addresses.get(&start) {
+                let span = target.span;
+                d.init = Some(crate::ast::Initializer::Value(crate::ast::Operand::Ref(
+                    Box::new(crate::ast::RefOperand {
+                        of: Some(target.clone()),
+                        span,
+                    }),
+                )));
+            }
             self.wrap(&mut d.ty);
         }
     }
@@ -291,4 +316,62 @@ impl RefTypes {
             };
         }
     }
+}
+
+/// `ADR(path)` / `REF(path)` written as an initial value, `path` a name with fields and constant
+/// integer subscripts (`ADR(a)`, `ADR(st.f)`, `ADR(buf[2])`), as the variable it names; `None`
+/// for anything else (an expression, a variable subscript: E0305 at the value).
+fn address_initial_value(value: &str, span: Span) -> Option<VarRef> {
+    let up = value.to_ascii_uppercase();
+    if !(up.starts_with("ADR") || up.starts_with("REF")) {
+        return None;
+    }
+    let inner = value[3..]
+        .trim_start()
+        .strip_prefix('(')?
+        .strip_suffix(')')?
+        .trim();
+    let ident = |s: &str| {
+        let s = s.trim();
+        (!s.is_empty()
+            && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            && !s.starts_with(|c: char| c.is_ascii_digit()))
+        .then(|| Ident::new(s, span))
+    };
+    let mut base: Option<Ident> = None;
+    let mut accessors = Vec::new();
+    for segment in inner.split('.') {
+        let (name, mut rest) = match segment.find('[') {
+            Some(i) => (&segment[..i], &segment[i..]),
+            None => (segment, ""),
+        };
+        let name = ident(name)?;
+        if base.is_none() {
+            base = Some(name);
+        } else {
+            accessors.push(Accessor::Field(name));
+        }
+        while let Some(r) = rest.trim().strip_prefix('[') {
+            let close = r.find(']')?;
+            let mut subscripts = Vec::new();
+            for s in r[..close].split(',') {
+                let v: i128 = s.trim().parse().ok()?;
+                subscripts.push(crate::ast::Operand::literal(crate::ast::Literal {
+                    kind: crate::ast::LiteralKind::Int(v),
+                    type_prefix: None,
+                    span,
+                }));
+            }
+            accessors.push(Accessor::Index(subscripts));
+            rest = &r[close + 1..];
+        }
+        if !rest.trim().is_empty() {
+            return None;
+        }
+    }
+    Some(VarRef {
+        base: base?,
+        accessors: accessors.into(),
+        span,
+    })
 }

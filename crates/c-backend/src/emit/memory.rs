@@ -1,0 +1,74 @@
+//! `MEMCPY`, `MEMMOVE`, `MEMSET` and `MEMCMP` in C, bounded by the variables they work on.
+//!
+//! Input: an [`Operand::Mem`](il_frontend::ast::Operand::Mem), whose pointer arguments name
+//! variables (the ST lowering accepts only `ADR(x)` there). Output: a call of the runtime's
+//! `ladderc_mem_move` / `ladderc_mem_set` / `ladderc_mem_cmp` with, for each variable, its address
+//! and its room: the bytes from that address to the end of the variable, `sizeof` of a whole
+//! variable or field, and for an array element (`ADR(buf[i])`) the bytes from the element to the
+//! end of its array (`(char *)&buf + sizeof buf - (char *)&buf[i]`). Invariants: the runtime clips
+//! the count to the smaller room, so no byte outside the named variables is ever read or written
+//! (ASan-clean whatever the count), and reports the first clip at the end of the run.
+
+use super::scope::{Place, Scope};
+use super::Gen;
+use crate::mangle;
+use il_frontend::ast::{Accessor, MemCall, MemFunc, VarRef};
+use il_frontend::sema::{Elementary, Type};
+
+impl Gen<'_> {
+    /// The C value of `m` (IEC_UDINT, or IEC_DINT for MEMCMP).
+    pub(super) fn memory_call(&mut self, scope: &Scope, m: &MemCall) -> Option<String> {
+        let (dst, d_room) = self.mem_object(scope, &m.dest, m)?;
+        let count = self.value(scope, &m.count, &Type::Elementary(Elementary::Ulint))?;
+        let pou = scope
+            .pou
+            .map(|(p, _)| p.name.clone())
+            .unwrap_or_else(|| "the configuration".into());
+        let site = mangle::c_string(cfmt!("{} in {pou}", m.func.name()).as_bytes());
+        match m.func {
+            MemFunc::Set => {
+                let fill = m.fill.as_ref()?;
+                let fill = self.value(scope, fill, &Type::Elementary(Elementary::Ulint))?;
+                Some(cfmt!(
+                    "ladderc_mem_set({dst}, {d_room}, (uint64_t)({fill}), (uint64_t)({count}), {site})"
+                ))
+            }
+            MemFunc::Copy | MemFunc::Move | MemFunc::Compare => {
+                let (src, s_room) = self.mem_object(scope, m.src.as_ref()?, m)?;
+                let f = if m.func == MemFunc::Compare {
+                    "ladderc_mem_cmp"
+                } else {
+                    "ladderc_mem_move"
+                };
+                Some(cfmt!(
+                    "{f}({dst}, {d_room}, {src}, {s_room}, (uint64_t)({count}), {site})"
+                ))
+            }
+        }
+    }
+
+    /// The address of `v` and its room (see the module documentation).
+    fn mem_object(&mut self, scope: &Scope, v: &VarRef, m: &MemCall) -> Option<(String, String)> {
+        let Place::Mem { lv, .. } = self.place(scope, v)? else {
+            self.unsupported(m.span, "a memory function on a located variable or a bit");
+            return None;
+        };
+        let addr = cfmt!("(void *)&({lv})");
+        if let Some((Accessor::Index(_), rest)) = v.accessors.split_last() {
+            let whole = VarRef {
+                base: v.base.clone(),
+                accessors: rest.to_vec().into(),
+                span: v.span,
+            };
+            if let Some(Place::Mem { lv: wl, .. }) = self.place(scope, &whole) {
+                return Some((
+                    addr,
+                    cfmt!(
+                        "(size_t)(((const char *)&({wl}) + sizeof({wl})) - (const char *)&({lv}))"
+                    ),
+                ));
+            }
+        }
+        Some((addr, cfmt!("sizeof({lv})")))
+    }
+}

@@ -1,0 +1,208 @@
+//! Constant expressions of declarations, evaluated while the declarations are parsed: an array
+//! bound, a string length, a subrange bound (integers only) and the initial value of a variable or
+//! constant (`EPS : LREAL := 16 * 2.2E-016;`, `C2 : REAL := C1 / 2.0;`, `T_MAX : TIME := T#1S +
+//! T#500MS;`, `L : LREAL := LREAL#1.5 * 2;`).
+//!
+//! Input: a [`BoundExpr`] and the constants declared before it (by upper-case name). Output: its
+//! value, a [`ConstNum`], or the reason it has none (the caller reports E0022 at the expression).
+//! Invariants: no input panics (checked integer arithmetic, depth cap, finite reals only); the value
+//! of a constant is kept in its declared type ([`as_declared`]), so that `C1 : REAL := 3;` makes
+//! `C1 / 2` a REAL division (1.5), as IEC 61131-3 ed. 3 (7.3.2, constant expressions take the types
+//! of their operands) types it; integers mixed with reals give reals, durations scale by numbers
+//! (`T#1S * 2`) and add to durations, as the standard's arithmetic on ANY_MAGNITUDE does.
+
+use crate::ast::{Literal, LiteralKind, TypeRef};
+use crate::parser::BoundExpr;
+use crate::sema::Elementary;
+use std::collections::HashMap;
+
+/// The value of a constant expression.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ConstNum {
+    /// An integer (checked in the LINT range).
+    Int(i128),
+    /// A real (finite; a REAL constant holds the value rounded to 32 bits).
+    Real(f64),
+    /// A duration in nanoseconds (TIME, LTIME).
+    Duration(i128),
+}
+
+/// The constants known to the expressions of a text, by upper-case name.
+pub type Constants = HashMap<String, ConstNum>;
+
+impl ConstNum {
+    /// The literal that holds this value as an initial value.
+    pub fn literal_kind(self) -> LiteralKind {
+        match self {
+            ConstNum::Int(v) => LiteralKind::Int(v),
+            ConstNum::Real(v) => LiteralKind::Real(v),
+            ConstNum::Duration(v) => LiteralKind::Duration(v),
+        }
+    }
+
+    /// The value of a literal, when it is a number or a duration (`LREAL#2` is the real 2.0).
+    pub fn of_literal(lit: &Literal) -> Option<ConstNum> {
+        let prefix = lit
+            .type_prefix
+            .as_ref()
+            .map(|p| Elementary::from_name(&p.name));
+        let real_prefix = matches!(prefix, Some(Some(e)) if e.is_real());
+        match lit.kind {
+            LiteralKind::Int(v) if real_prefix => Some(ConstNum::Real(v as f64)),
+            LiteralKind::Int(v) if matches!(prefix, None | Some(Some(_))) => Some(ConstNum::Int(v)),
+            LiteralKind::Real(v) if v.is_finite() => Some(ConstNum::Real(v)),
+            LiteralKind::Duration(v) => Some(ConstNum::Duration(v)),
+            _ => None,
+        }
+    }
+}
+
+/// `value` in the type `ty` a constant is declared with: an integer becomes a real in a REAL or
+/// LREAL constant, a REAL's value is rounded to 32 bits; a value of another kind than the type's
+/// (a real for an INT, a number for a TIME) is `None` (sema reports the initial value). A type that
+/// is not elementary (an alias, an enumeration) keeps the value as it is.
+pub fn as_declared(value: ConstNum, ty: &TypeRef) -> Option<ConstNum> {
+    let TypeRef::Named(name) = ty else {
+        return Some(value);
+    };
+    let Some(e) = Elementary::from_name(&name.name) else {
+        return Some(value);
+    };
+    match value {
+        ConstNum::Int(v) if e.is_real() => as_declared(ConstNum::Real(v as f64), ty),
+        ConstNum::Real(v) if e == Elementary::Real => Some(ConstNum::Real(f64::from(v as f32))),
+        ConstNum::Real(_) if e.is_real() => Some(value),
+        ConstNum::Int(_) if !e.is_duration() && !e.is_date() => Some(value),
+        ConstNum::Duration(_) if e.is_duration() => Some(value),
+        _ => None,
+    }
+}
+
+/// Evaluates `e` with `consts` known; the error says why there is no value. `integers`: an integer
+/// expression (a bound, a length), which names integer constants only.
+pub fn eval(e: &BoundExpr, consts: &Constants, integers: bool) -> Result<ConstNum, String> {
+    eval_at(e, &Known { consts, integers }, 0)
+}
+
+/// The constants an expression may name.
+struct Known<'a> {
+    consts: &'a Constants,
+    integers: bool,
+}
+
+fn eval_at(e: &BoundExpr, consts: &Known, depth: u32) -> Result<ConstNum, String> {
+    if depth > 64 {
+        return Err("the expression is nested too deeply".into());
+    }
+    match e {
+        BoundExpr::Int(v, _) => Ok(ConstNum::Int(*v)),
+        BoundExpr::Real(v, _) => Ok(ConstNum::Real(*v)),
+        BoundExpr::Duration(v, _) => Ok(ConstNum::Duration(*v)),
+        BoundExpr::NotNumber(_) => {
+            Err("only numbers and durations (T#...) make constant expressions".into())
+        }
+        BoundExpr::Name(n) => match consts.consts.get(&n.name.to_ascii_uppercase()) {
+            Some(v) if !consts.integers || matches!(v, ConstNum::Int(_)) => Ok(*v),
+            _ if consts.integers => Err(format!(
+                "`{}` is not an integer constant declared before",
+                n.name
+            )),
+            _ => Err(format!("`{}` is not a constant declared before", n.name)),
+        },
+        BoundExpr::Neg(a, _) => match eval_at(a, consts, depth + 1)? {
+            ConstNum::Int(v) => int(v.checked_neg()),
+            ConstNum::Real(v) => Ok(ConstNum::Real(-v)),
+            ConstNum::Duration(v) => duration(v.checked_neg()),
+        },
+        BoundExpr::Bin(op, a, b) => {
+            let (a, b) = (
+                eval_at(a, consts, depth + 1)?,
+                eval_at(b, consts, depth + 1)?,
+            );
+            binary(*op, a, b)
+        }
+    }
+}
+
+/// An integer result, checked in the widest integer type (LINT); bounds are narrowed by the caller.
+fn int(v: Option<i128>) -> Result<ConstNum, String> {
+    v.filter(|v| i64::try_from(*v).is_ok())
+        .map(ConstNum::Int)
+        .ok_or_else(|| "the value overflows".into())
+}
+
+/// A duration result, checked in LTIME's range (64-bit nanoseconds).
+fn duration(v: Option<i128>) -> Result<ConstNum, String> {
+    v.filter(|v| i64::try_from(*v).is_ok())
+        .map(ConstNum::Duration)
+        .ok_or_else(|| "the duration overflows".into())
+}
+
+fn real(v: f64) -> Result<ConstNum, String> {
+    if v.is_finite() {
+        Ok(ConstNum::Real(v))
+    } else {
+        Err("the value overflows".into())
+    }
+}
+
+/// A duration scaled by a real, truncated toward zero nanoseconds.
+fn scaled(v: f64) -> Result<ConstNum, String> {
+    if !v.is_finite() || v.abs() >= i64::MAX as f64 {
+        return Err("the duration overflows".into());
+    }
+    Ok(ConstNum::Duration(v.trunc() as i128))
+}
+
+fn number(v: ConstNum) -> Option<f64> {
+    match v {
+        ConstNum::Int(v) => Some(v as f64),
+        ConstNum::Real(v) => Some(v),
+        ConstNum::Duration(_) => None,
+    }
+}
+
+/// `a op b`, `op` one of `+ - * /` and `%` for MOD.
+fn binary(op: u8, a: ConstNum, b: ConstNum) -> Result<ConstNum, String> {
+    use ConstNum::{Duration as D, Int as I, Real as R};
+    let by_zero = || Err("division by zero".to_string());
+    match (a, b) {
+        (I(a), I(b)) => match op {
+            b'+' => int(a.checked_add(b)),
+            b'-' => int(a.checked_sub(b)),
+            b'*' => int(a.checked_mul(b)),
+            _ if b == 0 => by_zero(),
+            b'/' => int(a.checked_div(b)),
+            _ => int(a.checked_rem(b)),
+        },
+        (D(a), D(b)) => match op {
+            b'+' => duration(a.checked_add(b)),
+            b'-' => duration(a.checked_sub(b)),
+            _ => Err("durations only add to and subtract from durations".into()),
+        },
+        // TIME * number, number * TIME, TIME / number (IEC 61131-3 ed. 3, Table 30: MUL_TIME,
+        // DIV_TIME); the nanoseconds are truncated toward zero
+        (D(t), I(n)) | (I(n), D(t)) if op == b'*' => duration(t.checked_mul(n)),
+        (D(t), R(n)) | (R(n), D(t)) if op == b'*' => scaled(t as f64 * n),
+        (D(_), I(0)) if op == b'/' => by_zero(),
+        (D(t), I(n)) if op == b'/' => duration(t.checked_div(n)),
+        (D(_), R(n)) if op == b'/' && n == 0.0 => by_zero(),
+        (D(t), R(n)) if op == b'/' => scaled(t as f64 / n),
+        (D(_), _) | (_, D(_)) => {
+            Err("a duration is only added to a duration or scaled by a number".into())
+        }
+        (a, b) => {
+            let (Some(a), Some(b)) = (number(a), number(b)) else {
+                return Err("a duration is only added to a duration or scaled by a number".into());
+            };
+            match op {
+                b'+' => real(a + b),
+                b'-' => real(a - b),
+                b'*' => real(a * b),
+                b'/' if b == 0.0 => by_zero(),
+                b'/' => real(a / b),
+                _ => Err("MOD takes integers".into()),
+            }
+        }
+    }
+}

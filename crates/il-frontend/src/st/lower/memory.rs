@@ -1,0 +1,182 @@
+//! `MEMCPY`, `MEMMOVE`, `MEMSET` and `MEMCMP` (Tc2_System: `MEMCPY(destAddr := ADR(a), srcAddr :=
+//! ADR(b), n := SIZEOF(a))`; CODESYS SysMem: `SysMemCpy(pDest, pSrc, udiCount)` ...) in ST
+//! expressions and statements.
+//!
+//! Input: a call of one of those names that no user POU declares, with its arguments (positional,
+//! or formal by the Tc2_System or SysMem parameter names). Output: one [`Operand::Mem`] naming the
+//! variables the pointer arguments point to, loaded into the current result. Invariants: a pointer
+//! argument is accepted only as `ADR(x)` / `REF(x)` of a variable, an element or a field, so the
+//! object it points into is known when the C is generated and the count can be bounded by it
+//! (`emit::memory` in the C backend); any other pointer (a POINTER TO variable, arithmetic on one)
+//! is one E1035 at the argument; a wrong number of arguments or an unknown parameter name is one
+//! E1035 at the call.
+
+use super::super::ast::{Arg, Expr, ExprKind};
+use super::{ld, PouLowering};
+use crate::ast::{self as il, MemFunc, Operand};
+use crate::Span;
+use diagnostics::{code, Diagnostic, Diagnostics};
+
+/// The memory function `name` calls, with its parameter names (Tc2_System, then SysMem).
+pub(super) fn mem_function(name: &str) -> Option<(MemFunc, [&'static str; 3], [&'static str; 3])> {
+    let up = name.to_ascii_uppercase();
+    let copy = (["destAddr", "srcAddr", "n"], ["pDest", "pSrc", "udiCount"]);
+    Some(match up.as_str() {
+        "MEMCPY" | "SYSMEMCPY" => (MemFunc::Copy, copy.0, copy.1),
+        "MEMMOVE" | "SYSMEMMOVE" => (MemFunc::Move, copy.0, copy.1),
+        "MEMSET" | "SYSMEMSET" => (
+            MemFunc::Set,
+            ["destAddr", "fillByte", "n"],
+            ["pDest", "udiValue", "udiCount"],
+        ),
+        "MEMCMP" | "SYSMEMCMP" => (
+            MemFunc::Compare,
+            ["pBuf1", "pBuf2", "n"],
+            ["pBuffer1", "pBuffer2", "udiCount"],
+        ),
+        _ => return None,
+    })
+}
+
+impl PouLowering<'_> {
+    /// Lowers `name(args)` (see the module documentation); `false` when `name` is none of them.
+    pub(super) fn memory_call(
+        &mut self,
+        name: &il::Ident,
+        args: &[Arg],
+        span: Span,
+        out: &mut Vec<il::IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> bool {
+        let Some((func, tc, sys)) = mem_function(&name.name) else {
+            return false;
+        };
+        let refuse = |diags: &mut Diagnostics, at: Span, msg: String, label: &str, hint: &str| {
+            diags.push(
+                Diagnostic::error(code::E1035, msg)
+                    .at(at)
+                    .with_primary_label(label)
+                    .with_hint(hint),
+            );
+        };
+        // the three arguments in parameter order
+        let mut slots: [Option<&Expr>; 3] = [None, None, None];
+        let formal = args.iter().any(|a| a.name.is_some());
+        for (k, a) in args.iter().enumerate() {
+            let at = match &a.name {
+                Some(n) => tc
+                    .iter()
+                    .position(|p| n.is(p))
+                    .or_else(|| sys.iter().position(|p| n.is(p))),
+                None if !formal => Some(k).filter(|&k| k < 3),
+                None => None,
+            };
+            match at {
+                Some(i) if slots[i].is_none() => slots[i] = Some(&a.value),
+                _ => {
+                    refuse(
+                        diags,
+                        a.span,
+                        format!("`{}` has no such argument", name.name),
+                        "not a parameter",
+                        &format!(
+                            "write `{}({} := ADR(...), {} := ..., {} := ...)`",
+                            func.name(),
+                            tc[0],
+                            tc[1],
+                            tc[2]
+                        ),
+                    );
+                    self.poisoned = true;
+                    out.push(ld(super::int_lit(0, span), span));
+                    return true;
+                }
+            }
+        }
+        let [Some(first), Some(second), Some(count)] = slots else {
+            refuse(
+                diags,
+                span,
+                format!("`{}` takes three arguments", name.name),
+                "arguments missing",
+                &format!(
+                    "write `{}({} := ADR(...), {} := ..., {} := ...)`",
+                    func.name(),
+                    tc[0],
+                    tc[1],
+                    tc[2]
+                ),
+            );
+            self.poisoned = true;
+            out.push(ld(super::int_lit(0, span), span));
+            return true;
+        };
+        let dest = self.pointed_variable(func, first, out, diags);
+        let (src, fill) = if func == MemFunc::Set {
+            (None, Some(self.operand(second, None, out, diags)))
+        } else {
+            (self.pointed_variable(func, second, out, diags), None)
+        };
+        let count = self.operand(count, None, out, diags);
+        let (Some(dest), true) = (dest, func == MemFunc::Set || src.is_some()) else {
+            self.poisoned = true;
+            out.push(ld(super::int_lit(0, span), span));
+            return true;
+        };
+        out.push(ld(
+            Operand::Mem(Box::new(il::MemCall {
+                func,
+                dest,
+                src,
+                fill,
+                count,
+                span,
+            })),
+            span,
+        ));
+        true
+    }
+
+    /// The variable a pointer argument points to: `ADR(x)` / `REF(x)` of a place; anything else is
+    /// one E1035 (its object, so the bytes it may reach, cannot be known).
+    fn pointed_variable(
+        &mut self,
+        func: MemFunc,
+        e: &Expr,
+        out: &mut Vec<il::IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> Option<il::VarRef> {
+        if let ExprKind::Call { name, args } = &e.kind {
+            if super::super::refs::is_address_of(name) {
+                if let [Arg {
+                    name: None,
+                    value:
+                        Expr {
+                            kind: ExprKind::Place(p),
+                            ..
+                        },
+                    ..
+                }] = &args[..]
+                {
+                    if let Some(Operand::Var(v)) = self.place_operand(p, out, diags) {
+                        return Some(v);
+                    }
+                    return None;
+                }
+            }
+        }
+        diags.push(
+            Diagnostic::error(
+                code::E1035,
+                format!(
+                    "{}: the variable this pointer points into cannot be known",
+                    func.name()
+                ),
+            )
+            .at(e.span)
+            .with_primary_label("not `ADR(variable)`")
+            .with_hint("pass `ADR(x)` of the variable itself (an element or a field too): ladderc bounds the count by the sizes of the variables it can see"),
+        );
+        None
+    }
+}
