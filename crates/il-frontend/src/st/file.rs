@@ -811,7 +811,7 @@ pub fn parse_text(
             return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
         }
     }
-    let (unqualified, unreferenced, unlisted, uninitialised, conditioned);
+    let (unqualified, unmodified, unreferenced, unlisted, uninitialised, conditioned);
     // `{IF defined (X)}` ... `{END_IF}`: the sections not compiled blanked (`conditional`)
     let src = match super::conditional::conditional_sections(file, src, &problems, diags) {
         Some(t) => {
@@ -854,11 +854,19 @@ pub fn parse_text(
             }
             None => src,
         };
-        match library_qualifiers(file, src, &toks, diags) {
+        let src = match library_qualifiers(file, src, &toks, diags) {
             Some(t) => {
                 unqualified = t;
                 (toks, problems) = lex(&unqualified);
                 unqualified.as_str()
+            }
+            None => src,
+        };
+        match super::qualifiers::type_modifiers(file, src, &toks, diags) {
+            Some(t) => {
+                unmodified = t;
+                (toks, problems) = lex(&unmodified);
+                unmodified.as_str()
             }
             None => src,
         }

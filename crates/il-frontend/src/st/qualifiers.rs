@@ -118,7 +118,7 @@ pub fn offered_names(unit: &crate::ast::CompilationUnit) -> impl Iterator<Item =
 /// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
 /// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
 /// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
-/// after `:` or `OF` in a VAR block, a call `Lib.F(...)` in a body) whose name is no variable, POU or
+/// after `:` or `OF` in a VAR block or a TYPE declaration, a call `Lib.F(...)` in a body) whose name is no variable, POU or
 /// type of the file is E1032, once per library (an error of the parse stage: the checks that would
 /// report each use as an unknown type or function do not run), and its uses are renamed `__...`.
 /// `None`: nothing to change.
@@ -154,9 +154,11 @@ pub(super) fn library_qualifiers(
     for (k, t) in toks.iter().enumerate() {
         let w = word(src, t).to_ascii_uppercase();
         if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
-            if is_var_keyword(&w) {
+            // a type is named after `:` in VAR blocks and in TYPE declarations (a STRUCT's
+            // fields, `TYPE T : Lib.U; END_TYPE`)
+            if is_var_keyword(&w) || w == "TYPE" {
                 in_decl = true;
-            } else if w == "END_VAR" {
+            } else if w == "END_VAR" || w == "END_TYPE" {
                 in_decl = false;
             }
         }
@@ -210,6 +212,47 @@ pub(super) fn library_qualifiers(
         }
         bytes[dot.range.start] = b'_';
         *text = String::from_utf8(bytes).unwrap_or_default();
+    }
+    text
+}
+
+/// `TYPE INTERNAL T : ...` / `TYPE PUBLIC T : ...` (TwinCAT access specifiers on a data type, as in
+/// stefanbesler/struckig): the modifier is blanked with one W0304 note each (ladderc compiles one
+/// project without namespaces, so it changes nothing), as for a PROGRAM's or a FUNCTION_BLOCK's.
+/// `None`: no such modifier.
+pub(super) fn type_modifiers(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> Option<String> {
+    let mut text: Option<String> = None;
+    for k in 0..toks.len().saturating_sub(3) {
+        let (ty, modifier, name, colon) = (&toks[k], &toks[k + 1], &toks[k + 2], &toks[k + 3]);
+        let is_type =
+            matches!(ty.tok, Tok::Kw(_) | Tok::Ident) && word(src, ty).eq_ignore_ascii_case("TYPE");
+        let m = word(src, modifier).to_ascii_uppercase();
+        if !is_type
+            || modifier.tok != Tok::Ident
+            || !matches!(m.as_str(), "INTERNAL" | "PUBLIC")
+            || name.tok != Tok::Ident
+            || colon.tok != Tok::Colon
+        {
+            continue;
+        }
+        diags.push(
+            Diagnostic::warning(
+                code::W0304,
+                format!("`TYPE {m}` of `{}`: the modifier is ignored", word(src, name)),
+            )
+            .at(Span::new(file, modifier.range.start, modifier.range.end))
+            .with_primary_label("ignored")
+            .with_hint("ladderc compiles one project without namespaces: PUBLIC and INTERNAL change nothing in it; remove the word to silence this"),
+        );
+        blank(
+            text.get_or_insert_with(|| src.to_string()),
+            modifier.range.clone(),
+        );
     }
     text
 }
