@@ -979,9 +979,12 @@ impl<'s> Layout<'s> {
     /// comment: it is reported as what it is, and only it is skipped.
     fn semicolon_comment(&mut self, s: usize) {
         let before = self.src[..s].trim_end();
+        // (the character before the word may take several bytes: `�END_TYPE;`)
         let word_start = before
-            .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-            .map_or(0, |i| i + 1);
+            .char_indices()
+            .rev()
+            .find(|&(_, c)| !(c.is_ascii_alphanumeric() || c == '_'))
+            .map_or(0, |(i, c)| i + c.len_utf8());
         let word = &before[word_start..];
         const BLOCK_ENDS: &[&str] = &[
             "END_VAR",
@@ -1259,6 +1262,24 @@ mod tests {
         let (s, d) = stream("VAR a : INT; END_VAR");
         assert_eq!(s, "VAR a : INT ; END_VAR /");
         assert!(d.is_empty());
+    }
+
+    /// A `;` comment after a word that follows a character of several bytes (found by
+    /// `fuzz_inprocess`: `MC_Move\u{fffd}Absolute ;` sliced inside the character and panicked).
+    #[test]
+    fn semicolon_comment_after_a_multibyte_character_is_reported() {
+        for src in [
+            "LD a\u{fffd}b ; note\nST c",
+            "LD \u{e9}; note\nST c",
+            "\u{20ac}END_TYPE; x",
+        ] {
+            let (_, d) = stream(src);
+            assert!(
+                d.iter()
+                    .any(|m| m.starts_with("E0007") || m.starts_with("E0011")),
+                "{src:?}: {d:?}"
+            );
+        }
     }
 
     #[test]
