@@ -184,3 +184,86 @@ fn pins_without_a_counterpart_are_one_e1041_each() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// `Axis.ReadStatus()`, `Axis.Status.*` and `Axis.NcToPlc.*` of a local Tc2_MC2 `AXIS_REF` read the
+/// simulated axis: position and velocity as of the start of the scan (the engine steps after the
+/// program), Moving while the move runs, StandStill and NotMoving once it is done.
+#[test]
+fn axis_ref_status_and_nc_to_plc_read_the_simulated_axis() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("status.st");
+    std::fs::write(
+        &src,
+        "PROGRAM MAIN\nVAR\n  Axis : AXIS_REF;\n  fbPower : MC_Power;\n  fbMove : MC_MoveAbsolute;\n\
+         \x20 bMoving, bStill, bNot, bErr : BOOL;\n  p, v : LREAL;\nEND_VAR\n\
+         fbPower(Axis := Axis, Enable := TRUE, Enable_Positive := TRUE, Enable_Negative := TRUE);\n\
+         fbMove(Axis := Axis, Execute := fbPower.Status, Position := 10.0, Velocity := 100.0);\n\
+         Axis.ReadStatus();\nbMoving := Axis.Status.Moving;\nbNot := Axis.Status.NotMoving;\n\
+         bStill := Axis.Status.StandStill;\np := Axis.NcToPlc.ActPos;\nv := Axis.NcToPlc.ActVelo;\n\
+         IF Axis.Status.Error THEN bErr := TRUE; END_IF\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("status.axes.json"),
+        "{ \"cycle_ms\": 10, \"axes\": [ { \"name\": \"X1\", \"unit\": \"mm\", \"velocity\": 100, \
+         \"acceleration\": 3000, \"deceleration\": 3000 } ] }",
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced_files(
+        &[&src],
+        30,
+        "MAIN.bMoving,MAIN.bNot,MAIN.bStill,MAIN.p,MAIN.v,MAIN.bErr,axis.X1.position,axis.X1.velocity",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let (p, v) = (column(&trace, "MAIN.p"), column(&trace, "MAIN.v"));
+    let (pos, vel) = (
+        column(&trace, "axis.X1.position"),
+        column(&trace, "axis.X1.velocity"),
+    );
+    for k in 1..30 {
+        assert_eq!((p[k], v[k]), (pos[k - 1], vel[k - 1]), "scan {k}");
+    }
+    let moving = column(&trace, "MAIN.bMoving");
+    let still = column(&trace, "MAIN.bStill");
+    let not = column(&trace, "MAIN.bNot");
+    let stop = pos.iter().position(|&x| x == 10.0).unwrap();
+    assert!((1..=stop).all(|k| moving[k] == 1.0 && still[k] == 0.0 && not[k] == 0.0));
+    assert!((stop + 1..30).all(|k| moving[k] == 0.0 && still[k] == 1.0 && not[k] == 1.0));
+    assert!(column(&trace, "MAIN.bErr").iter().all(|&e| e == 0.0));
+}
+
+/// An AXIS_REF member the simulated axis has no counterpart for is one located E1042 (before:
+/// E1021 "AXIS_REF has no field").
+#[test]
+fn axis_ref_members_without_a_counterpart_are_one_e1042_each() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("homed.st");
+    std::fs::write(
+        &src,
+        "PROGRAM MAIN\nVAR\n  Axis : AXIS_REF;\n  fbPower : MC_Power;\n  b : BOOL;\n  d : DWORD;\nEND_VAR\n\
+         fbPower(Axis := Axis, Enable := TRUE);\nAxis.ReadStatus();\nb := Axis.Status.Homed;\n\
+         d := Axis.NcToPlc.StateDWord;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("homed.axes.json"),
+        "{ \"axes\": [ { \"name\": \"X1\", \"velocity\": 10, \"acceleration\": 10, \"deceleration\": 10 } ] }",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&src)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let heads = common::diagnostic_heads(&out.stderr, dir.path(), false);
+    assert_eq!(
+        heads,
+        vec![
+            "homed.st:10:18: error[E1042]: AXIS_REF's `Status.Homed` has no counterpart in ladderc's simulated axis",
+            "homed.st:11:19: error[E1042]: AXIS_REF's `NcToPlc.StateDWord` has no counterpart in ladderc's simulated axis",
+        ],
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

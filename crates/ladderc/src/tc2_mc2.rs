@@ -63,6 +63,7 @@ pub fn read_spellings(
             let LibraryElement::Pou(p) = item else {
                 continue;
             };
+            crate::tc2_axis_ref::read_members(p, diags);
             let instances: HashMap<String, String> = p
                 .var_blocks
                 .iter()
