@@ -24,11 +24,14 @@ fn fixture(rel: &str) -> PathBuf {
 }
 
 const WATCH: &str = "MAIN.nState,MAIN.bPowered,MAIN.bAbsDone,MAIN.bInVelocity,MAIN.bHaltDone,\
-                     MAIN.bError,axis.X1.position,axis.X1.velocity,axis.X1.acceleration";
+                     MAIN.bError,MAIN.rActPos,MAIN.bStandStill,axis.X1.position,axis.X1.velocity,\
+                     axis.X1.acceleration";
 
 /// The TwinCAT project: power on, MC_MoveAbsolute to 200 mm asking 400 mm/s of a 250 mm/s axis
 /// (Acceleration and Deceleration from the axes file: 1000 and 500 mm/s²), MC_MoveVelocity with
-/// `Direction := MC_Negative_Direction` at 50 mm/s for one second, MC_Halt at 100 mm/s².
+/// `Direction := MC_Direction.MC_Negative_Direction` at 50 mm/s for one second, MC_Halt at
+/// 100 mm/s². The axis is a global `AXIS_REF` of `GVL_Axes`, called qualified by the list's name;
+/// `ReadStatus()`, `NcToPlc.ActPos` and `Status.StandStill` read it.
 #[test]
 fn a_twincat_project_written_with_tc2_mc2_moves_the_axis_as_commanded() {
     let (trace, stderr) = run_traced_files(&[&fixture("Motion.plcproj")], 300, WATCH);

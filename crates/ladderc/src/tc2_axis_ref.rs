@@ -52,15 +52,49 @@ const NC_TO_PLC: &[(&str, bool)] = &[
     ("SETVELO", false),
 ];
 
-/// Reads the Tc2_MC2 members of the POU's `AXIS_REF` variables (see the module header).
-pub fn read_members(p: &mut Pou, diags: &mut Diagnostics) {
-    let axes: Vec<Ident> = p
-        .var_blocks
-        .iter()
-        .flat_map(|b| b.vars.iter())
-        .filter(|v| matches!(&v.ty, TypeRef::Named(t) if t.is("AXIS_REF")))
+/// The `AXIS_REF` variables of `vars`.
+pub fn axis_refs<'a>(vars: impl Iterator<Item = &'a VarDecl>) -> Vec<Ident> {
+    vars.filter(|v| matches!(&v.ty, TypeRef::Named(t) if t.is("AXIS_REF")))
         .map(|v| v.name.clone())
-        .collect();
+        .collect()
+}
+
+/// The `AXIS_REF` variables a POU reads: its own and the project's global ones.
+pub struct Axes {
+    /// The variables.
+    pub names: Vec<Ident>,
+    /// (global variable list, variable), upper case: `GVL_Axes.Axis1` names `Axis1`.
+    pub lists: Vec<(String, String)>,
+}
+
+impl Axes {
+    /// `GVL_Axes.Axis1...` -> `Axis1...` when the list holds that axis.
+    fn unqualify(&self, v: &mut VarRef) {
+        let Some(Accessor::Field(f)) = v.accessors.first() else {
+            return;
+        };
+        let pair = (v.base.key(), f.key());
+        if self.lists.contains(&pair) {
+            v.base = f.clone();
+            let rest: Vec<Accessor> = v.accessors[1..].to_vec();
+            v.accessors = rest.into();
+        }
+    }
+    fn find(&self, v: &VarRef) -> Option<&Ident> {
+        self.names.iter().find(|a| a.key() == v.base.key())
+    }
+}
+
+/// Reads the Tc2_MC2 members of the POU's `AXIS_REF` variables and of the project's global ones
+/// (see the module header).
+pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
+    let mut names = axis_refs(p.var_blocks.iter().flat_map(|b| b.vars.iter()));
+    names.extend(globals.names.iter().cloned());
+    let axes = Axes {
+        names,
+        lists: globals.lists.clone(),
+    };
+    let axes = &axes;
     let mut used: Vec<Ident> = Vec::new();
     rewrite(&mut p.body, &axes, &mut used, diags);
     if used.is_empty() {
@@ -188,7 +222,7 @@ fn moving(axis: &Ident) -> Vec<IlStmt> {
     out
 }
 
-fn rewrite(body: &mut [IlStmt], axes: &[Ident], used: &mut Vec<Ident>, diags: &mut Diagnostics) {
+fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Vec<Ident>, diags: &mut Diagnostics) {
     for s in body {
         let IlStmt::Instr(i) = s else { continue };
         let mut replace = None;
@@ -205,7 +239,8 @@ fn rewrite(body: &mut [IlStmt], axes: &[Ident], used: &mut Vec<Ident>, diags: &m
                 rewrite(body, axes, used, diags);
             }
             InstrKind::Call { instance, args, .. } => {
-                let axis = axes.iter().find(|a| a.key() == instance.base.key());
+                axes.unqualify(instance);
+                let axis = axes.find(instance);
                 match (axis, instance.accessors.as_slice()) {
                     (Some(a), [Accessor::Field(m)]) if m.key() == "READSTATUS" => {
                         note_used(a, used);
@@ -243,7 +278,7 @@ fn note_used(a: &Ident, used: &mut Vec<Ident>) {
     }
 }
 
-fn operand(o: &mut Operand, axes: &[Ident], used: &mut Vec<Ident>, diags: &mut Diagnostics) {
+fn operand(o: &mut Operand, axes: &Axes, used: &mut Vec<Ident>, diags: &mut Diagnostics) {
     if let Operand::Var(v) = o {
         if let Some(kind) = member(v, axes, used, diags) {
             // reported: the literal (FALSE for a status flag, 0 for an NC value) stops a second report
@@ -260,12 +295,15 @@ fn operand(o: &mut Operand, axes: &[Ident], used: &mut Vec<Ident>, diags: &mut D
 /// and the literal that stands for it is returned.
 fn member(
     v: &mut VarRef,
-    axes: &[Ident],
+    axes: &Axes,
     used: &mut Vec<Ident>,
     diags: &mut Diagnostics,
 ) -> Option<LiteralKind> {
-    let axis = axes.iter().find(|a| a.key() == v.base.key())?;
-    let [Accessor::Field(group), Accessor::Field(f), ..] = v.accessors.as_slice() else {
+    let mut q = v.clone();
+    axes.unqualify(&mut q);
+    let axis = axes.find(&q)?.clone();
+    let axis = &axis;
+    let [Accessor::Field(group), Accessor::Field(f), ..] = q.accessors.as_slice() else {
         return None;
     };
     let (group, field) = (group.key(), f.key());
@@ -290,7 +328,7 @@ fn member(
         },
         _ => return None,
     };
-    if v.accessors.len() > 2 {
+    if q.accessors.len() > 2 {
         return None;
     }
     note_used(axis, used);

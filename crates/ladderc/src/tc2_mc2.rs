@@ -39,11 +39,23 @@ const NO_COUNTERPART: &[(&str, &str, &str)] = &[
     (
         "MC_POWER",
         "OVERRIDE",
-        "a velocity override other than 100 % (use MC_SetOverride, or `Override := 100.0`)",
+        "ladderc scales velocities with MC_SetOverride; MC_Power takes only `Override := 100.0`",
     ),
-    ("MC_POWER", "BUFFERMODE", "a buffer mode for MC_Power"),
-    ("MC_POWER", "BUSY", "MC_Power's Busy output"),
-    ("MC_POWER", "ACTIVE", "MC_Power's Active output"),
+    (
+        "MC_POWER",
+        "BUFFERMODE",
+        "ladderc's MC_Power has no buffer mode",
+    ),
+    (
+        "MC_POWER",
+        "BUSY",
+        "ladderc's MC_Power has no Busy output (read Status)",
+    ),
+    (
+        "MC_POWER",
+        "ACTIVE",
+        "ladderc's MC_Power has no Active output (read Status)",
+    ),
     (
         "*",
         "OPTIONS",
@@ -58,12 +70,27 @@ pub fn read_spellings(
     axes: &AxisConfig,
     diags: &mut Diagnostics,
 ) {
-    for u in units {
+    let mut globals = crate::tc2_axis_ref::Axes {
+        names: Vec::new(),
+        lists: Vec::new(),
+    };
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::GlobalVars(b) = item {
+            let names = crate::tc2_axis_ref::axis_refs(b.vars.iter());
+            if let Some(list) = &b.name {
+                globals
+                    .lists
+                    .extend(names.iter().map(|n| (list.key(), n.key())));
+            }
+            globals.names.extend(names);
+        }
+    }
+    for u in units.iter_mut() {
         for item in &mut u.items {
             let LibraryElement::Pou(p) = item else {
                 continue;
             };
-            crate::tc2_axis_ref::read_members(p, diags);
+            crate::tc2_axis_ref::read_members(p, &globals, diags);
             let instances: HashMap<String, String> = p
                 .var_blocks
                 .iter()
@@ -159,7 +186,25 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
 
 fn operand(o: &mut Operand, inst: &HashMap<String, String>, diags: &mut Diagnostics) {
     if let Operand::Var(v) = o {
+        enum_value(v);
         var(v, inst, diags);
+    }
+}
+
+/// `MC_Direction.MC_Shortest_Way` (an enumeration value qualified by its type, as TwinCAT
+/// allows) -> `MC_Shortest_Way`.
+fn enum_value(v: &mut VarRef) {
+    let is_enum = param_passing::prelude::ENUM_TYPES
+        .iter()
+        .any(|t| v.base.name.eq_ignore_ascii_case(t));
+    if let (true, [Accessor::Field(f)]) = (is_enum, v.accessors.as_slice()) {
+        let known = param_passing::prelude::ENUM_CONSTANTS
+            .iter()
+            .any(|(c, _)| f.name.eq_ignore_ascii_case(c));
+        if known {
+            v.base = f.clone();
+            v.accessors = Vec::new().into();
+        }
     }
 }
 
@@ -213,7 +258,7 @@ fn e1041(block: &str, pin: &str, what: &str, span: il_frontend::Span) -> Diagnos
     )
     .at(span)
     .with_hint(format!(
-        "ladderc's motion library has no {what}; leave the pin out (see `ladderc explain E1041`)"
+        "{what}; leave the pin out (see `ladderc explain E1041`)"
     ))
 }
 
@@ -225,7 +270,12 @@ fn axis_defaults(block: &str, list: &mut Vec<FormalArg>, at: il_frontend::Span, 
         .iter()
         .find(|a| a.name.key() == "AXIS")
         .and_then(|a| match &a.value {
-            Operand::Var(v) if v.accessors.is_empty() => Some(v.base.key()),
+            Operand::Var(v) => match v.accessors.as_slice() {
+                [] => Some(v.base.key()),
+                // `GVL_Axes.Axis1`: a variable of a global variable list
+                [Accessor::Field(f)] => Some(f.key()),
+                _ => None,
+            },
             _ => None,
         });
     let Some(axis_name) = axis_name else { return };
