@@ -96,7 +96,7 @@ pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
     };
     let axes = &axes;
     let mut used: Vec<Ident> = Vec::new();
-    rewrite(&mut p.body, &axes, &mut used, diags);
+    rewrite(&mut p.body, axes, &mut used, diags);
     if used.is_empty() {
         return;
     }
