@@ -6,11 +6,22 @@
 //! (`crates/ladderc/src/tc2_mc2.rs`). The project under `fixtures/tc2_mc2/` is written for these
 //! tests (README there).
 //!
-//! Record of the public projects tried (snapshots of 2026-12-04, `ladderc run FILES --cycles 20`):
-//! LilKiddy007/twincat3-plc-motion-control `src/main.st` was rejected with E1003 (`MC_Direction`),
-//! E1011 x2 (`Enable_Positive`, `Enable_Negative`) and E1001 x2 (`MC_Positive_Direction`,
-//! `MC_Negative_Direction`); now, with an axes file beside it, it runs and its MC_MoveVelocity
-//! moves the axis at `velvalue` (300, then 1000 units/s) with the axis's own acceleration.
+//! Record of the public projects tried (snapshots of 2026-12-04, `ladderc run FILE --cycles 20
+//! --axes` one 2000 mm/s axis): the five `.plcproj` of the mirrors that declare `AXIS_REF` or call
+//! MC_Power, and LilKiddy007's hand-written `src/main.st`.
+//!
+//! | project | before (errors) | after |
+//! |---|---|---|
+//! | LilKiddy007/twincat3-plc-motion-control `main.st` | E1003 MC_Direction, E1011 x2 Enable_Positive/Negative, E1001 x3 the MC_Direction values | runs |
+//! | MatheusNespolo/TwinCAT Motion-Control/MotionControl | 12: E1011 x6, E1021 x4 (ReadStatus, Status), E1003, E1001 | 2: E1003 MC_MoveModulo (no counterpart block), E1041 `Override := lrOverride_Eixo2` |
+//! | MatheusNespolo/TwinCAT ScopeTest | 4: E1011 x3, E1021 | runs |
+//! | MatheusNespolo/TwinCAT HMI-Supervisorio PLC | 5: E1011 x3, E1021 x2 | runs |
+//! | ergouliu/Twincat PLC_Pro (TC2_MC2.MC_Power ...) | 11: E1011 x10, E1001 | 1: E1001 `aa`, a name the project never declares |
+//! | SeanyCash/TwinCAT_CNC Main | 5 E0001 (`{` attribute pragmas in an enum DUT) | the same: stops before any motion block |
+//!
+//! Known limits: every `AXIS_REF` that is not a configured axis is engine axis 0 (two GVL axes of
+//! one project share it); a rising Execute while the block is still Busy from an aborted command is
+//! ignored by the motion library (LilKiddy's reversal after MC_Halt does not start).
 
 mod common;
 use common::{column, ladderc, run_traced_files};
