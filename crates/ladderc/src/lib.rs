@@ -73,6 +73,8 @@ pub mod project;
 pub mod report;
 pub mod stdio;
 pub mod summary;
+pub mod tc2_axis_ref;
+pub mod tc2_mc2;
 pub mod text_lists;
 pub mod trace_raw;
 pub mod twincat;

@@ -727,12 +727,15 @@ impl Session {
     /// uses blocks. `None` when errors were reported.
     pub fn check(&mut self, parsed: Parsed, paths: &[PathBuf], opts: &Options) -> Option<Checked> {
         let Parsed {
-            units: user,
+            units: mut user,
             library,
             profile,
         } = parsed;
         let axes = self.axis_config(paths, opts.axes.as_deref())?;
         let uses_blocks = uses_library_blocks(&user, &library);
+        if uses_blocks {
+            crate::tc2_mc2::read_spellings(&mut user, &library, &axes, &mut self.diags);
+        }
         let cycle_ms = match (axes.cycle_ms, opts.cycle_ms) {
             (Some(a), Some(c)) if (a - c).abs() > 1e-9 * a.abs().max(1.0) => {
                 self.diags.push(

@@ -49,7 +49,29 @@ pub const ENUM_CONSTANTS: &[(&str, u8)] = &[
     ("mcRadius", 2),
     ("mcClockwise", 0),
     ("mcCounterClockwise", 1),
+    // Beckhoff Tc2_MC2's spellings (Infosys, Tc2_MC2 > Data types > MC_Direction, MC_BufferMode).
+    // Tc2_MC2 numbers MC_Direction from 1 (MC_Positive_Direction := 1, MC_Shortest_Way,
+    // MC_Negative_Direction, MC_Current_Direction, MC_Undefined_Direction := 128); the order is
+    // PLCopen's, so each name is given the PLCopen value the motion library reads. An
+    // uninitialised MC_Direction variable is then MC_Positive_Direction (0), as in TwinCAT (an
+    // enumeration starts at its first value). MC_Undefined_Direction has no PLCopen value: the
+    // blocks refuse it (ErrorID InvalidDirection).
+    ("MC_Positive_Direction", 0),
+    ("MC_Shortest_Way", 1),
+    ("MC_Negative_Direction", 2),
+    ("MC_Current_Direction", 3),
+    ("MC_Undefined_Direction", 128),
+    ("MC_Aborting", 0),
+    ("MC_Buffered", 1),
+    ("MC_BlendingLow", 2),
+    ("MC_BlendingPrevious", 3),
+    ("MC_BlendingNext", 4),
+    ("MC_BlendingHigh", 5),
 ];
+
+/// Enumeration types of the vendor motion libraries, declared as USINT (the values are the constants
+/// above): Tc2_MC2's `MC_Direction` and `MC_BufferMode`.
+pub const ENUM_TYPES: &[&str] = &["MC_Direction", "MC_BufferMode"];
 
 /// The field of a reference type that carries the engine index (`AXIS_REF` -> `AxisNo`).
 pub fn index_field(iec_type: &str) -> &'static str {
@@ -93,6 +115,9 @@ fn common(out: &mut String) {
     }
     for (alias, t) in REFERENCE_ALIASES {
         let _ = writeln!(out, "    {alias} : {t};");
+    }
+    for t in ENUM_TYPES {
+        let _ = writeln!(out, "    {t} : USINT;");
     }
     out.push_str("END_TYPE\n\nVAR_GLOBAL CONSTANT\n");
     for (n, v) in ENUM_CONSTANTS {

@@ -1,0 +1,322 @@
+//! Beckhoff Tc2_MC2 spellings of the PLCopen motion blocks, read as ladderc's own pins.
+//!
+//! Input: the user's parsed units (before the semantic checks) and the block library. Output: the
+//! same units with each call argument and instance field written in a Tc2_MC2 spelling renamed to the
+//! pin it stands for (`fbPower(Enable_Positive := TRUE)` -> `EnablePositive`), and one located E1041
+//! for each Tc2_MC2 pin the simulated axis has no counterpart for (the argument is then dropped, so
+//! that no E1011 follows it). Invariants: only instances of library blocks declared in the POU are
+//! touched; spans stay where the user wrote the names.
+//!
+//! Tc2_MC2 also lets a motion block's `Acceleration` and `Deceleration` be left out or 0: "the
+//! standard acceleration from the axis configuration is applied" (Infosys, MC_MoveAbsolute,
+//! MC_MoveVelocity, MC_Halt, MC_Stop inputs). ladderc's counterpart of that configuration is the
+//! axes file, so such an input is bound to the configured limit of the axis the call names (a
+//! global axis of the axes file, or axis 0 for a local `AXIS_REF`, whose `AxisNo` is 0). Without an
+//! axes file the input stays unbound (E4023, as before).
+//!
+//! Per Beckhoff Infosys (Tc2_MC2 > Function blocks > Administrative > MC_Power), MC_Power's inputs
+//! are `Enable`, `Enable_Positive`, `Enable_Negative`, `Override` (LREAL percent, default 100.0) and
+//! `BufferMode`; its outputs `Status`, `Busy`, `Active`, `Error`, `ErrorID`. `Options` of the motion
+//! blocks (`ST_*Options`) and MC_Power's `Busy`/`Active` have no counterpart in ladderc's axis.
+
+use crate::axes::AxisConfig;
+use diagnostics::{code, Diagnostic, Diagnostics};
+use il_frontend::ast::{
+    Accessor, ArgDir, CallArgs, CompilationUnit, FormalArg, Ident, IlStmt, InstrKind,
+    LibraryElement, Literal, LiteralKind, Operand, TypeRef, VarRef,
+};
+use param_passing::library::Library;
+use std::collections::HashMap;
+
+/// (block, Tc2_MC2 pin, ladderc pin); the Tc2 pin upper case.
+const SPELLINGS: &[(&str, &str, &str)] = &[
+    ("MC_POWER", "ENABLE_POSITIVE", "EnablePositive"),
+    ("MC_POWER", "ENABLE_NEGATIVE", "EnableNegative"),
+];
+
+/// Tc2_MC2 pins without a counterpart: (block or `*` for every block, pin, what it would need).
+const NO_COUNTERPART: &[(&str, &str, &str)] = &[
+    (
+        "MC_POWER",
+        "OVERRIDE",
+        "ladderc scales velocities with MC_SetOverride; MC_Power takes only `Override := 100.0`",
+    ),
+    (
+        "MC_POWER",
+        "BUFFERMODE",
+        "ladderc's MC_Power has no buffer mode",
+    ),
+    (
+        "MC_POWER",
+        "BUSY",
+        "ladderc's MC_Power has no Busy output (read Status)",
+    ),
+    (
+        "MC_POWER",
+        "ACTIVE",
+        "ladderc's MC_Power has no Active output (read Status)",
+    ),
+    (
+        "*",
+        "OPTIONS",
+        "the Tc2_MC2 option structures (ST_*Options)",
+    ),
+];
+
+/// Renames the Tc2_MC2 spellings in every POU of `units`; reports E1041 for pins with no counterpart.
+pub fn read_spellings(
+    units: &mut [CompilationUnit],
+    lib: &Library,
+    axes: &AxisConfig,
+    diags: &mut Diagnostics,
+) {
+    let mut globals = crate::tc2_axis_ref::Axes {
+        names: Vec::new(),
+        lists: Vec::new(),
+    };
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::GlobalVars(b) = item {
+            let names = crate::tc2_axis_ref::axis_refs(b.vars.iter());
+            if let Some(list) = &b.name {
+                globals
+                    .lists
+                    .extend(names.iter().map(|n| (list.key(), n.key())));
+            }
+            globals.names.extend(names);
+        }
+    }
+    for u in units.iter_mut() {
+        for item in &mut u.items {
+            let LibraryElement::Pou(p) = item else {
+                continue;
+            };
+            crate::tc2_axis_ref::read_members(p, &globals, diags);
+            let instances: HashMap<String, String> = p
+                .var_blocks
+                .iter()
+                .flat_map(|b| b.vars.iter())
+                .filter_map(|v| match &v.ty {
+                    TypeRef::Named(t) => lib
+                        .get(&t.name)
+                        .map(|tpl| (v.name.key(), tpl.block.clone())),
+                    _ => None,
+                })
+                .collect();
+            if !instances.is_empty() {
+                let cx = Cx {
+                    inst: &instances,
+                    lib,
+                    axes,
+                };
+                stmts(&mut p.body, &cx, diags);
+            }
+        }
+    }
+}
+
+/// What the walk over a POU's body knows.
+struct Cx<'a> {
+    /// Upper-case instance name -> its block's name.
+    inst: &'a HashMap<String, String>,
+    lib: &'a Library,
+    axes: &'a AxisConfig,
+}
+
+fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
+    let inst = cx.inst;
+    for s in body {
+        let IlStmt::Instr(i) = s else { continue };
+        match &mut i.kind {
+            InstrKind::Simple {
+                operand: Some(o), ..
+            } => operand(o, inst, diags),
+            InstrKind::Deferred {
+                operand: o, body, ..
+            } => {
+                if let Some(o) = o {
+                    operand(o, inst, diags);
+                }
+                stmts(body, cx, diags);
+            }
+            InstrKind::Call { instance, args, .. } => {
+                if let (Some(block), true) = (
+                    inst.get(&instance.base.key()),
+                    instance.accessors.is_empty(),
+                ) {
+                    if let CallArgs::Formal(list) = args {
+                        list.retain_mut(|a| {
+                            let pin = a.name.key();
+                            if let Some(new) = spelling(block, &pin) {
+                                a.name.name = new.to_string();
+                                return true;
+                            }
+                            // `Override := 100.0` is the unscaled velocity: MC_Power without it
+                            if pin == "OVERRIDE" && is_hundred(&a.value) {
+                                return false;
+                            }
+                            match missing(block, &pin) {
+                                Some(what) => {
+                                    diags.push(e1041(block, &a.name.name, what, a.name.span));
+                                    false
+                                }
+                                None => true,
+                            }
+                        });
+                        axis_defaults(block, list, instance.span, cx);
+                    }
+                } else {
+                    var(instance, inst, diags);
+                }
+                if let CallArgs::Formal(list) = args {
+                    list.iter_mut()
+                        .for_each(|a| operand(&mut a.value, inst, diags));
+                }
+            }
+            InstrKind::FunctionCall { args, .. } => match &mut **args {
+                CallArgs::Formal(list) => list
+                    .iter_mut()
+                    .for_each(|a| operand(&mut a.value, inst, diags)),
+                CallArgs::NonFormal(ops) => ops.iter_mut().for_each(|o| operand(o, inst, diags)),
+                CallArgs::None => {}
+            },
+            _ => {}
+        }
+    }
+}
+
+fn operand(o: &mut Operand, inst: &HashMap<String, String>, diags: &mut Diagnostics) {
+    if let Operand::Var(v) = o {
+        enum_value(v);
+        var(v, inst, diags);
+    }
+}
+
+/// `MC_Direction.MC_Shortest_Way` (an enumeration value qualified by its type, as TwinCAT
+/// allows) -> `MC_Shortest_Way`.
+fn enum_value(v: &mut VarRef) {
+    let is_enum = param_passing::prelude::ENUM_TYPES
+        .iter()
+        .any(|t| v.base.name.eq_ignore_ascii_case(t));
+    if let (true, [Accessor::Field(f)]) = (is_enum, v.accessors.as_slice()) {
+        let known = param_passing::prelude::ENUM_CONSTANTS
+            .iter()
+            .any(|(c, _)| f.name.eq_ignore_ascii_case(c));
+        if known {
+            v.base = f.clone();
+            v.accessors = Vec::new().into();
+        }
+    }
+}
+
+/// `fbPower.Enable_Positive` -> `fbPower.EnablePositive`; a pin with no counterpart is one E1041
+/// (the name is kept: sema then has nothing more to say only if the pin exists, so the field is
+/// renamed to the block's `Error` output, which every block has, to stop a second report).
+fn var(v: &mut VarRef, inst: &HashMap<String, String>, diags: &mut Diagnostics) {
+    let Some(block) = inst.get(&v.base.key()) else {
+        return;
+    };
+    if let Some(Accessor::Field(f)) = v.accessors.first_mut() {
+        let pin = f.key();
+        if let Some(new) = spelling(block, &pin) {
+            f.name = new.to_string();
+        } else if let Some(what) = missing(block, &pin) {
+            diags.push(e1041(block, &f.name, what, f.span));
+            f.name = "Error".into();
+        }
+    }
+}
+
+fn spelling(block: &str, pin: &str) -> Option<&'static str> {
+    SPELLINGS
+        .iter()
+        .find(|(b, p, _)| b.eq_ignore_ascii_case(block) && *p == pin)
+        .map(|(_, _, new)| *new)
+}
+
+fn missing(block: &str, pin: &str) -> Option<&'static str> {
+    NO_COUNTERPART
+        .iter()
+        .find(|(b, p, _)| (b.eq_ignore_ascii_case(block) || *b == "*") && *p == pin)
+        .map(|(_, _, what)| *what)
+}
+
+fn is_hundred(o: &Operand) -> bool {
+    match o {
+        Operand::Literal(l) => match l.kind {
+            LiteralKind::Int(i) => i == 100,
+            LiteralKind::Real(r) => r == 100.0,
+            _ => false,
+        },
+        _ => false,
+    }
+}
+
+fn e1041(block: &str, pin: &str, what: &str, span: il_frontend::Span) -> Diagnostic {
+    Diagnostic::error(
+        code::E1041,
+        format!("Tc2_MC2's `{pin}` of {block} has no counterpart in ladderc's simulated axis"),
+    )
+    .at(span)
+    .with_hint(format!(
+        "{what}; leave the pin out (see `ladderc explain E1041`)"
+    ))
+}
+
+/// Binds a left-out (or literal 0) required `Acceleration` / `Deceleration` to the configured
+/// limit of the call's axis (see the module header).
+fn axis_defaults(block: &str, list: &mut Vec<FormalArg>, at: il_frontend::Span, cx: &Cx) {
+    let Some(t) = cx.lib.get(block) else { return };
+    let axis_name = list
+        .iter()
+        .find(|a| a.name.key() == "AXIS")
+        .and_then(|a| match &a.value {
+            Operand::Var(v) => match v.accessors.as_slice() {
+                [] => Some(v.base.key()),
+                // `GVL_Axes.Axis1`: a variable of a global variable list
+                [Accessor::Field(f)] => Some(f.key()),
+                _ => None,
+            },
+            _ => None,
+        });
+    let Some(axis_name) = axis_name else { return };
+    let axis = cx
+        .axes
+        .axes
+        .iter()
+        .find(|a| a.name.eq_ignore_ascii_case(&axis_name))
+        // a local AXIS_REF (no configured global of that name) is engine axis 0
+        .or_else(|| cx.axes.axes.first());
+    let Some(axis) = axis else { return };
+    for (pin, value) in [
+        ("ACCELERATION", axis.limits.acceleration_limit),
+        ("DECELERATION", axis.limits.deceleration_limit),
+    ] {
+        let Some(p) = t.params.iter().find(|p| p.name.eq_ignore_ascii_case(pin)) else {
+            continue;
+        };
+        if !p.required {
+            continue;
+        }
+        let real = |v: f64| {
+            Operand::literal(Literal {
+                kind: LiteralKind::Real(v),
+                type_prefix: None,
+                span: at,
+            })
+        };
+        match list.iter_mut().find(|a| a.name.key() == pin) {
+            Some(a) if is_zero(&a.value) => a.value = real(value),
+            Some(_) => {}
+            None => list.push(FormalArg {
+                name: Ident::new(p.name.clone(), at),
+                dir: ArgDir::Input,
+                value: real(value),
+                span: at,
+            }),
+        }
+    }
+}
+
+fn is_zero(o: &Operand) -> bool {
+    matches!(o, Operand::Literal(l) if matches!(l.kind, LiteralKind::Int(0)) || matches!(l.kind, LiteralKind::Real(r) if r == 0.0))
+}
