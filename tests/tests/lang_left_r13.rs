@@ -1,0 +1,79 @@
+//! Issue #13, thirteenth round (helper `small4`): small constructs that stopped real TwinCAT and
+//! CODESYS projects, each through `ladderc run` on fixtures written here
+//! (`tests/tests/fixtures/lang_left_r13/`):
+//! - **A FOR whose control variable is an array element** (`FOR Offset[1] := 0 TO n DO`, TcUnit's
+//!   FB_TestSuite): IEC 61131-3 ed.3's grammar makes it an identifier, so it is one E1044 per loop
+//!   at the control variable, with no follow-on errors. Before: E0100 at `[`, then E3101 for each
+//!   EXIT inside the loop and E0100 for its `END_FOR`.
+//! - **An attribute pragma without its `}` before an enumeration** (`{attribute 'qualified only'`
+//!   then `{attribute 'strict'}`, SeanyCash/TwinCAT_CNC): attributes do not nest, so the pragma ends
+//!   at the next `}`, with warning W1420; per-value attributes inside the enumeration are notes.
+//!   Before: E0001 at each `{` and `}`, the enumeration unknown.
+
+mod common;
+use common::{ladderc, run_traced};
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/lang_left_r13")
+        .join(name)
+}
+
+/// `ladderc run` of a rejected fixture: exit code and its error/warning lines (short format).
+fn run_rejected(name: &str) -> (Option<i32>, Vec<String>) {
+    let f = fixture(name);
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&f)
+        .args(["--cycles", "1"])
+        .output()
+        .unwrap();
+    let prefix = format!("{}/", f.parent().unwrap().display());
+    let lines = String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .filter(|l| l.contains("error[") || l.contains("warning["))
+        .map(|l| l.replace(&prefix, ""))
+        .collect();
+    (out.status.code(), lines)
+}
+
+// ------------------------------------------------------------------ 1. FOR over an array element
+
+/// Two nested FORs counting in `Offset[1]` and `Offset[2]`, with an EXIT and an `END_FOR` without
+/// `;`: exactly one E1044 per loop, at its control variable, and nothing else.
+#[test]
+fn for_over_an_array_element_is_one_located_diagnostic_per_loop() {
+    let (code, lines) = run_rejected("for_element_control.st");
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").map_or(l.as_str(), |h| h.0))
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "for_element_control.st:8:5: error[E1044]: the FOR control variable `Offset[1]` is not a plain variable name",
+            "for_element_control.st:9:9: error[E1044]: the FOR control variable `Offset[2]` is not a plain variable name",
+        ]
+    );
+}
+
+// ------------------------------------------------------------------ 2. pragmas in an enumeration
+
+/// enum_pragmas.st: `{attribute 'qualified only'` without `}` runs into `{attribute 'strict'}`
+/// (W1420), per-value attributes sit between the values; the enumeration keeps its values
+/// (Idle = 1, Ready = 2, Started = 5): Idle -> Ready -> Started, Code follows the state.
+#[test]
+fn unclosed_attribute_and_value_attributes_leave_the_enumeration_intact() {
+    let (trace, stderr) = run_traced(&fixture("enum_pragmas.st"), 3, "Main.Code,Main.State");
+    let rows: Vec<&str> = trace.lines().collect();
+    assert_eq!(rows[0], "cycle,time_ms,Main.Code,Main.State");
+    assert_eq!(&rows[1..], ["0,0,2,2", "1,10,5,5", "2,20,5,5"]);
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("warning[")).collect();
+    assert_eq!(warnings.len(), 1, "{stderr}");
+    assert!(
+        warnings[0].contains("enum_pragmas.st:3:1: warning[W1420]: pragma `{attribute 'qualified only'` is not closed"),
+        "{stderr}"
+    );
+}
