@@ -9,6 +9,10 @@
 //!   then `{attribute 'strict'}`, SeanyCash/TwinCAT_CNC): attributes do not nest, so the pragma ends
 //!   at the next `}`, with warning W1420; per-value attributes inside the enumeration are notes.
 //!   Before: E0001 at each `{` and `}`, the enumeration unknown.
+//! - **ExST assignment as a condition** (`IF b := (i = 1) THEN`, `WHILE more := (n < 5) DO`): the
+//!   IF's first condition assigns before the IF and tests the variable; a WHILE condition assigns at
+//!   every test (also after a CONTINUE). In an ELSIF or UNTIL condition it is one E1045. Before:
+//!   E0100/E0104 at the `:=`.
 
 mod common;
 use common::{ladderc, run_traced};
@@ -75,5 +79,46 @@ fn unclosed_attribute_and_value_attributes_leave_the_enumeration_intact() {
     assert!(
         warnings[0].contains("enum_pragmas.st:3:1: warning[W1420]: pragma `{attribute 'qualified only'` is not closed"),
         "{stderr}"
+    );
+}
+
+// ------------------------------------------------------------------ 3. ExST assignment as a condition
+
+/// exst_condition_assign.st, per scan: i counts 1, 2, 3; `IF b := (i = 1)` sets b TRUE only in the
+/// first scan (hits stays 1 after it); `WHILE more := (n < 5)` runs for n = 0..4, the body counting
+/// n = 2 as skipped (CONTINUE) and the others as tests, and the last test assigns more FALSE.
+#[test]
+fn assignment_as_if_and_while_condition_runs_before_each_test() {
+    let (trace, _) = run_traced(
+        &fixture("exst_condition_assign.st"),
+        3,
+        "Main.i,Main.b,Main.hits,Main.n,Main.more,Main.skipped,Main.tests",
+    );
+    let rows: Vec<&str> = trace.lines().skip(1).collect();
+    assert_eq!(
+        rows,
+        [
+            "0,0,1,1,1,5,0,1,4",
+            "1,10,2,0,1,5,0,2,8",
+            "2,20,3,0,1,5,0,3,12"
+        ]
+    );
+}
+
+/// An assignment as an ELSIF or an UNTIL condition: one E1045 each, at the assigned variable.
+#[test]
+fn assignment_as_elsif_or_until_condition_is_one_diagnostic() {
+    let (code, lines) = run_rejected("exst_condition_assign_bad.st");
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").map_or(l.as_str(), |h| h.0))
+        .collect();
+    assert_eq!(
+        heads,
+        vec![
+            "exst_condition_assign_bad.st:11:7: error[E1045]: an assignment as an ELSIF condition is not supported",
+            "exst_condition_assign_bad.st:16:7: error[E1045]: an assignment as an UNTIL condition is not supported",
+        ]
     );
 }

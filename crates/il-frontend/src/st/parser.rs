@@ -662,9 +662,29 @@ impl<'s, 'd> Parser<'s, 'd> {
         let mut first = true;
         loop {
             // (an ELSIF condition is evaluated only when the ones before are FALSE)
-            self.no_hoist += usize::from(!first);
-            let cond = self.expr();
-            self.no_hoist -= usize::from(!first);
+            let cond = if first {
+                match self.condition_assignment() {
+                    // `IF b := (i = 1) THEN` (ExST): `b := (i = 1);` runs before the IF, which tests `b`
+                    Some((target, value)) => {
+                        let read = Expr {
+                            span: target.span,
+                            kind: ExprKind::Place(target.clone()),
+                        };
+                        self.hoisted.push(Stmt {
+                            span: target.span.to(value.span),
+                            kind: StmtKind::Assign { target, value },
+                        });
+                        read
+                    }
+                    None => self.expr(),
+                }
+            } else {
+                self.no_hoist += 1;
+                self.reject_condition_assignment("an ELSIF condition");
+                let cond = self.expr();
+                self.no_hoist -= 1;
+                cond
+            };
             first = false;
             if !self.expect_kw(Kw::Then, "after the IF condition") {
                 // Garbage before a THEN on the same statement is skipped; without THEN the body
@@ -887,16 +907,97 @@ impl<'s, 'd> Parser<'s, 'd> {
         Some(StmtKind::Empty)
     }
 
+    /// `b := e` at the start of a condition, as CODESYS/TwinCAT ExST allow it ("assignment as an
+    /// expression": its value is the value assigned): the place and the value; `None` (nothing read)
+    /// when the condition is no assignment.
+    fn condition_assignment(&mut self) -> Option<(Place, Expr)> {
+        if !self.at_place_then_assign() {
+            return None;
+        }
+        let target = self.place()?;
+        self.bump();
+        let value = self.expr();
+        Some((target, value))
+    }
+
+    /// E1045 for an assignment at the start of an ELSIF or UNTIL condition, whose hoisting would
+    /// change when it runs; the assignment is skipped and the value after `:=` read as the condition.
+    fn reject_condition_assignment(&mut self, what: &str) {
+        if !self.at_place_then_assign() {
+            return;
+        }
+        let start = self.cur().range.start;
+        let Some(_) = self.place() else { return };
+        let span = self.span(start, self.cur().range.end);
+        self.bump();
+        self.push_error(
+            Diagnostic::error(
+                code::E1045,
+                format!("an assignment as {what} is not supported"),
+            )
+            .at(span)
+            .with_primary_label("ExST assignment as an expression")
+            .with_hint("assign the variable in a statement before the test (in a REPEAT, as the last statement of its body) and test the variable"),
+        );
+    }
+
     fn while_stmt(&mut self) -> Option<StmtKind> {
         let (_, open) = self.block_open()?;
+        let assignment = self.condition_assignment();
         self.no_hoist += 1;
-        let cond = self.expr();
+        let cond = match &assignment {
+            Some((target, _)) => Expr {
+                span: target.span,
+                kind: ExprKind::Place(target.clone()),
+            },
+            None => self.expr(),
+        };
         self.no_hoist -= 1;
         if !self.expect_kw(Kw::Do, "after the WHILE condition") {
             return None;
         }
-        let body = self.nested(|p| p.statement_list());
+        let mut body = self.nested(|p| p.statement_list());
         self.close_block(Kw::EndWhile, open, "WHILE");
+        if let Some((target, value)) = assignment {
+            // `WHILE b := e DO body END_WHILE` (ExST) runs the assignment at each test: read as
+            // `WHILE TRUE DO b := e; IF NOT b THEN EXIT; END_IF; body END_WHILE` (a CONTINUE in
+            // the body goes back to the test, so the assignment runs again).
+            let span = target.span.to(value.span);
+            let exit = Stmt {
+                span,
+                kind: StmtKind::If {
+                    branches: vec![CondBranch {
+                        cond: Expr {
+                            span: cond.span,
+                            kind: ExprKind::Unary {
+                                op: UnaryOp::Not,
+                                operand: Box::new(cond.clone()),
+                            },
+                        },
+                        body: vec![Stmt {
+                            span,
+                            kind: StmtKind::Exit,
+                        }],
+                        span,
+                    }],
+                    else_body: None,
+                },
+            };
+            let assign = Stmt {
+                span,
+                kind: StmtKind::Assign { target, value },
+            };
+            body.splice(0..0, [assign, exit]);
+            let always = Expr {
+                span: cond.span,
+                kind: ExprKind::Literal(Literal {
+                    kind: LiteralKind::Bool(true),
+                    type_prefix: None,
+                    span: cond.span,
+                }),
+            };
+            return Some(StmtKind::While { cond: always, body });
+        }
         Some(StmtKind::While { cond, body })
     }
 
@@ -915,6 +1016,7 @@ impl<'s, 'd> Parser<'s, 'd> {
         }
         self.bump();
         self.no_hoist += 1;
+        self.reject_condition_assignment("an UNTIL condition");
         let until = self.expr();
         self.no_hoist -= 1;
         self.close_block(Kw::EndRepeat, open, "REPEAT");
