@@ -13,6 +13,8 @@
 //!   IF's first condition assigns before the IF and tests the variable; a WHILE condition assigns at
 //!   every test (also after a CONTINUE). In an ELSIF or UNTIL condition it is one E1045. Before:
 //!   E0100/E0104 at the `:=`.
+//! - **`SIZEOF` in IL** as the TwinCAT help writes it (`LD arr1` / `SIZEOF` / `ST var1`): the bytes
+//!   of the loaded variable, as ST's `SIZEOF(arr1)`. Before: E1019.
 
 mod common;
 use common::{ladderc, run_traced};
@@ -119,6 +121,27 @@ fn assignment_as_elsif_or_until_condition_is_one_diagnostic() {
         vec![
             "exst_condition_assign_bad.st:11:7: error[E1045]: an assignment as an ELSIF condition is not supported",
             "exst_condition_assign_bad.st:16:7: error[E1045]: an assignment as an UNTIL condition is not supported",
+        ]
+    );
+}
+
+// ------------------------------------------------------------------ 4. SIZEOF in IL
+
+/// il_sizeof.il: `LD arr1 SIZEOF` of an ARRAY[0..4] OF INT is 10, of a STRUCT of two DINTs 8, of
+/// one INT element 2; nPair + (nElem + 1) = 11 shows the sizes are ordinary values.
+#[test]
+fn sizeof_in_il_counts_the_bytes_of_the_loaded_variable() {
+    let (trace, _) = run_traced(
+        &fixture("il_sizeof.il"),
+        1,
+        "Main.var1,Main.nPair,Main.nElem,Main.total",
+    );
+    let rows: Vec<&str> = trace.lines().collect();
+    assert_eq!(
+        rows,
+        [
+            "cycle,time_ms,Main.var1,Main.nPair,Main.nElem,Main.total",
+            "0,0,10,8,2,11"
         ]
     );
 }

@@ -485,7 +485,9 @@ fn pragma(lex: &mut logos::Lexer<Raw>) -> Result<(), LexError> {
 /// `}`. So a project whose `{attribute 'qualified only'` lacks its `}` (SeanyCash/TwinCAT_CNC) reads
 /// up to the next pragma's `}` as one informational pragma instead of swallowing the whole file.
 pub fn pragma_len(rest: &str) -> Option<usize> {
-    if !rest.starts_with('{') && pragma_kind(&format!("{{{}", &rest[..rest.len().min(40)])) == PragmaKind::Informational {
+    if !rest.starts_with('{')
+        && pragma_kind(&format!("{{{}", &rest[..rest.len().min(40)])) == PragmaKind::Informational
+    {
         return rest.find('}').map(|i| i + 1);
     }
     let mut depth = 1usize;

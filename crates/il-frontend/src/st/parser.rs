@@ -456,13 +456,13 @@ impl<'s, 'd> Parser<'s, 'd> {
         };
         let block = std::mem::take(&mut self.dropped_block)
             || matches!(
-            kind,
-            StmtKind::If { .. }
-                | StmtKind::Case { .. }
-                | StmtKind::For { .. }
-                | StmtKind::While { .. }
-                | StmtKind::Repeat { .. }
-        );
+                kind,
+                StmtKind::If { .. }
+                    | StmtKind::Case { .. }
+                    | StmtKind::For { .. }
+                    | StmtKind::While { .. }
+                    | StmtKind::Repeat { .. }
+            );
         if self.at(&Tok::Semi) {
             self.bump();
         } else if self.at(&Tok::Error) {
