@@ -907,11 +907,48 @@ impl<'s, 'd> Parser<'s, 'd> {
         Some(StmtKind::Empty)
     }
 
+    /// Whether a condition starts with a well-formed place and `:=` (`b :=`, `st.x :=`, `a[i] :=`,
+    /// `p^ :=`); stricter than [`Self::at_place_then_assign`], so that `IF a x := 5;` (THEN
+    /// missing) still recovers at `x`.
+    fn at_condition_assignment(&self) -> bool {
+        if !matches!(self.peek(), Tok::Ident) {
+            return false;
+        }
+        let mut i = 1;
+        while i < MAX_PLACE_LOOKAHEAD {
+            match self.peek_at(i) {
+                Tok::Assign => return true,
+                Tok::Dot if *self.peek_at(i + 1) == Tok::Ident => i += 2,
+                Tok::Caret => i += 1,
+                Tok::LBracket => {
+                    let mut depth = 0usize;
+                    while i < MAX_PLACE_LOOKAHEAD {
+                        match self.peek_at(i) {
+                            Tok::LBracket => depth += 1,
+                            Tok::RBracket => {
+                                depth -= 1;
+                                if depth == 0 {
+                                    break;
+                                }
+                            }
+                            Tok::Semi | Tok::Eof | Tok::Assign => return false,
+                            _ => {}
+                        }
+                        i += 1;
+                    }
+                    i += 1;
+                }
+                _ => return false,
+            }
+        }
+        false
+    }
+
     /// `b := e` at the start of a condition, as CODESYS/TwinCAT ExST allow it ("assignment as an
     /// expression": its value is the value assigned): the place and the value; `None` (nothing read)
     /// when the condition is no assignment.
     fn condition_assignment(&mut self) -> Option<(Place, Expr)> {
-        if !self.at_place_then_assign() {
+        if !self.at_condition_assignment() {
             return None;
         }
         let target = self.place()?;
@@ -923,7 +960,7 @@ impl<'s, 'd> Parser<'s, 'd> {
     /// E1045 for an assignment at the start of an ELSIF or UNTIL condition, whose hoisting would
     /// change when it runs; the assignment is skipped and the value after `:=` read as the condition.
     fn reject_condition_assignment(&mut self, what: &str) {
-        if !self.at_place_then_assign() {
+        if !self.at_condition_assignment() {
             return;
         }
         let start = self.cur().range.start;
