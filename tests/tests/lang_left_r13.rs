@@ -15,6 +15,8 @@
 //!   E0100/E0104 at the `:=`.
 //! - **`SIZEOF` in IL** as the TwinCAT help writes it (`LD arr1` / `SIZEOF` / `ST var1`): the bytes
 //!   of the loaded variable, as ST's `SIZEOF(arr1)`. Before: E1019.
+//! - **`TYPE INTERNAL Name :`** (an access specifier on a data type, stefanbesler/struckig): one
+//!   W0304, as for `FUNCTION_BLOCK INTERNAL`. Before: E0011 at the name and each member.
 
 mod common;
 use common::{ladderc, run_traced};
@@ -143,5 +145,20 @@ fn sizeof_in_il_counts_the_bytes_of_the_loaded_variable() {
             "cycle,time_ms,Main.var1,Main.nPair,Main.nElem,Main.total",
             "0,0,10,8,2,11"
         ]
+    );
+}
+
+// ------------------------------------------------------------------ 5. TYPE INTERNAL
+
+/// type_internal.st: `TYPE INTERNAL Interval : STRUCT ...`: one W0304 at `INTERNAL`; the struct is
+/// used as declared: width = Right - Left = 2.0 - 1.5, then 4.0 - 1.5.
+#[test]
+fn access_specifier_on_a_data_type_is_one_warning() {
+    let (trace, stderr) = run_traced(&fixture("type_internal.st"), 2, "Main.width");
+    let rows: Vec<&str> = trace.lines().skip(1).collect();
+    assert_eq!(rows, ["0,0,0.5", "1,10,2.5"]);
+    assert!(
+        stderr.contains("type_internal.st:3:6: warning[W0304]: `TYPE INTERNAL` of `Interval`: the modifier is ignored"),
+        "{stderr}"
     );
 }

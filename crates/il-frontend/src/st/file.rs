@@ -881,6 +881,22 @@ pub fn parse_text(
         Vec::new()
     };
     let var_config = var_config_blocks(file, src, &toks, diags);
+    let type_modifiers: Vec<(std::ops::Range<usize>, String)> = (0..toks.len().saturating_sub(3))
+        .filter(|&k| {
+            is_word(src, &toks[k], "TYPE")
+                && ["PUBLIC", "INTERNAL"]
+                    .iter()
+                    .any(|m| is_word(src, &toks[k + 1], m))
+                && toks[k + 2].tok == Tok::Ident
+                && toks[k + 3].tok == Tok::Colon
+        })
+        .map(|k| {
+            (
+                toks[k + 1].range.clone(),
+                word(src, &toks[k + 2]).to_string(),
+            )
+        })
+        .collect();
     drop(toks);
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
     if let Some((unit, local)) = first_try {
@@ -940,6 +956,24 @@ pub fn parse_text(
         );
         for r in &stray {
             blank(&mut text, r.clone());
+        }
+    }
+    // `TYPE INTERNAL BlockInterval : STRUCT ...` (CODESYS/TwinCAT access specifier of a DUT,
+    // stefanbesler/struckig): as for a POU, the modifier changes nothing in one project
+    for (k, type_name) in &type_modifiers {
+        {
+            let r = k.clone();
+            let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
+            diags.push(
+                Diagnostic::warning(
+                    code::W0304,
+                    format!("`TYPE {m}` of `{type_name}`: the modifier is ignored"),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("ignored")
+                .with_hint("ladderc compiles one project without namespaces: PUBLIC and INTERNAL change nothing in it; remove the word to silence this"),
+            );
+            blank(&mut text, r);
         }
     }
     for p in &pous {
