@@ -18,6 +18,7 @@
 pub mod actions;
 pub mod ast;
 pub mod const_eval;
+pub mod il_sizeof;
 pub mod layout;
 pub mod lexer;
 pub mod literal;
@@ -77,6 +78,7 @@ pub fn parse_named(
         top.items
             .insert(at.min(top.items.len()), LibraryElement::Pou(pou));
     }
+    il_sizeof::fold_items(&mut top.items);
     CompilationUnit { items: top.items }
 }
 
@@ -152,7 +154,10 @@ pub fn parse_body_declared(
 ) -> Vec<IlStmt> {
     let declared = declared.iter().map(|d| d.to_ascii_uppercase()).collect();
     match parser::run(file, src, base_offset, Tok::BodyStart, diags, declared) {
-        Some(Parsed::Body(body)) => body,
+        Some(Parsed::Body(mut body)) => {
+            il_sizeof::fold(&mut body);
+            body
+        }
         _ => Vec::new(),
     }
 }

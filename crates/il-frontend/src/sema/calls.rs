@@ -351,12 +351,13 @@ impl Body<'_, '_> {
                     .label("a function block, program or FB instance")
                     .hint("call FB instances with CAL inst(...)");
             } else if name.is("SIZEOF") {
-                // CODESYS/TwinCAT: sizes in bytes; ST reads `SIZEOF(x)` (`Operand::SizeOf`), an IL
-                // function call of it is refused: its argument (often a type name) is not checked
+                // CODESYS/TwinCAT: sizes in bytes; ST reads `SIZEOF(x)` (`Operand::SizeOf`), IL's
+                // `LD x` + `SIZEOF` is folded into `LD SIZEOF(x)` by `crate::il_sizeof`; any other
+                // IL call of it (after a value, not a loaded variable) is refused
                 self.a
-                    .error(code::E1019, name.span, "`SIZEOF` is not supported in IL")
-                    .label("a CODESYS/TwinCAT operator")
-                    .hint("write `SIZEOF(x)` in a Structured Text body (it takes a variable or type name, not the current result)");
+                    .error(code::E1019, name.span, "`SIZEOF` in IL must follow `LD` of a variable")
+                    .label("a CODESYS/TwinCAT operator on a variable")
+                    .hint("load the variable right before it: `LD arr1` then `SIZEOF` (the bytes of a value are not defined)");
                 st.cr.fresh = None;
                 st.cr.ty = Some(Ty::ERROR);
                 return;

@@ -811,7 +811,7 @@ pub fn parse_text(
             return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
         }
     }
-    let (unqualified, unmodified, unreferenced, unlisted, uninitialised, conditioned);
+    let (unqualified, unreferenced, unlisted, uninitialised, conditioned);
     // `{IF defined (X)}` ... `{END_IF}`: the sections not compiled blanked (`conditional`)
     let src = match super::conditional::conditional_sections(file, src, &problems, diags) {
         Some(t) => {
@@ -854,19 +854,11 @@ pub fn parse_text(
             }
             None => src,
         };
-        let src = match library_qualifiers(file, src, &toks, diags) {
+        match library_qualifiers(file, src, &toks, diags) {
             Some(t) => {
                 unqualified = t;
                 (toks, problems) = lex(&unqualified);
                 unqualified.as_str()
-            }
-            None => src,
-        };
-        match super::qualifiers::type_modifiers(file, src, &toks, diags) {
-            Some(t) => {
-                unmodified = t;
-                (toks, problems) = lex(&unmodified);
-                unmodified.as_str()
             }
             None => src,
         }
@@ -889,6 +881,22 @@ pub fn parse_text(
         Vec::new()
     };
     let var_config = var_config_blocks(file, src, &toks, diags);
+    let type_modifiers: Vec<(std::ops::Range<usize>, String)> = (0..toks.len().saturating_sub(3))
+        .filter(|&k| {
+            is_word(src, &toks[k], "TYPE")
+                && ["PUBLIC", "INTERNAL"]
+                    .iter()
+                    .any(|m| is_word(src, &toks[k + 1], m))
+                && toks[k + 2].tok == Tok::Ident
+                && toks[k + 3].tok == Tok::Colon
+        })
+        .map(|k| {
+            (
+                toks[k + 1].range.clone(),
+                word(src, &toks[k + 2]).to_string(),
+            )
+        })
+        .collect();
     drop(toks);
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
     if let Some((unit, local)) = first_try {
@@ -948,6 +956,24 @@ pub fn parse_text(
         );
         for r in &stray {
             blank(&mut text, r.clone());
+        }
+    }
+    // `TYPE INTERNAL BlockInterval : STRUCT ...` (CODESYS/TwinCAT access specifier of a DUT,
+    // stefanbesler/struckig): as for a POU, the modifier changes nothing in one project
+    for (k, type_name) in &type_modifiers {
+        {
+            let r = k.clone();
+            let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
+            diags.push(
+                Diagnostic::warning(
+                    code::W0304,
+                    format!("`TYPE {m}` of `{type_name}`: the modifier is ignored"),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("ignored")
+                .with_hint("ladderc compiles one project without namespaces: PUBLIC and INTERNAL change nothing in it; remove the word to silence this"),
+            );
+            blank(&mut text, r);
         }
     }
     for p in &pous {

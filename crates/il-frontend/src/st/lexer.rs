@@ -479,7 +479,17 @@ fn pragma(lex: &mut logos::Lexer<Raw>) -> Result<(), LexError> {
 
 /// The length of a pragma's rest after its opening `{` (up to and including the matching `}`), or
 /// `None` when it is never closed. Braces inside C string or character literals are not counted.
+///
+/// An attribute or other informational pragma (`{attribute 'strict'}`) does not nest: the CODESYS
+/// help gives its syntax as `{attribute '<name>' ...}` with no braces inside, and it ends at its first
+/// `}`. So a project whose `{attribute 'qualified only'` lacks its `}` (SeanyCash/TwinCAT_CNC) reads
+/// up to the next pragma's `}` as one informational pragma instead of swallowing the whole file.
 pub fn pragma_len(rest: &str) -> Option<usize> {
+    if !rest.starts_with('{')
+        && pragma_kind(&format!("{{{}", &rest[..rest.len().min(40)])) == PragmaKind::Informational
+    {
+        return rest.find('}').map(|i| i + 1);
+    }
     let mut depth = 1usize;
     let mut quote: Option<u8> = None;
     let b = rest.as_bytes();
@@ -562,6 +572,19 @@ pub fn pragma_diagnostic(text: &str, span: crate::Span) -> diagnostics::Diagnost
     use diagnostics::{code, Diagnostic, Severity};
     let shown = short_text(text);
     match pragma_kind(text) {
+        PragmaKind::Informational if text[1..].contains('{') => {
+            // An attribute whose `}` is missing runs into the next pragma (see [`pragma_len`]).
+            let first = text[1..].find('{').map_or(text, |i| text[..=i].trim_end());
+            Diagnostic::warning(
+                code::W1420,
+                format!(
+                    "pragma `{}` is not closed before the next `{{`: both are read as one informational pragma",
+                    short_text(first)
+                ),
+            )
+            .at(span)
+            .with_hint("close the pragma with `}` (`{attribute 'qualified_only'}`); ladderc reads no attributes either way")
+        }
         PragmaKind::Informational => Diagnostic::new(
             code::W0301,
             Severity::Note,

@@ -114,6 +114,8 @@ struct Parser<'s, 'd> {
     /// Inside a condition evaluated again and again or only sometimes (WHILE, UNTIL, ELSIF): a
     /// method call there cannot be put before the statement.
     no_hoist: usize,
+    /// Set when a block statement was read and dropped (E1044): like END_IF, its END_FOR needs no `;`.
+    dropped_block: bool,
     /// Inside the right operand of AND_THEN / OR_ELSE (for E0108's message).
     short_operand: usize,
     /// Whether W0324 (AND_THEN / OR_ELSE) was reported for this text.
@@ -157,6 +159,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             expr_start: 0,
             hoisted: Vec::new(),
             no_hoist: 0,
+            dropped_block: false,
             short_operand: 0,
             short_circuit_noted: false,
             last_error: None,
@@ -451,14 +454,15 @@ impl<'s, 'd> Parser<'s, 'd> {
             self.sync();
             return None;
         };
-        let block = matches!(
-            kind,
-            StmtKind::If { .. }
-                | StmtKind::Case { .. }
-                | StmtKind::For { .. }
-                | StmtKind::While { .. }
-                | StmtKind::Repeat { .. }
-        );
+        let block = std::mem::take(&mut self.dropped_block)
+            || matches!(
+                kind,
+                StmtKind::If { .. }
+                    | StmtKind::Case { .. }
+                    | StmtKind::For { .. }
+                    | StmtKind::While { .. }
+                    | StmtKind::Repeat { .. }
+            );
         if self.at(&Tok::Semi) {
             self.bump();
         } else if self.at(&Tok::Error) {
@@ -658,9 +662,29 @@ impl<'s, 'd> Parser<'s, 'd> {
         let mut first = true;
         loop {
             // (an ELSIF condition is evaluated only when the ones before are FALSE)
-            self.no_hoist += usize::from(!first);
-            let cond = self.expr();
-            self.no_hoist -= usize::from(!first);
+            let cond = if first {
+                match self.condition_assignment() {
+                    // `IF b := (i = 1) THEN` (ExST): `b := (i = 1);` runs before the IF, which tests `b`
+                    Some((target, value)) => {
+                        let read = Expr {
+                            span: target.span,
+                            kind: ExprKind::Place(target.clone()),
+                        };
+                        self.hoisted.push(Stmt {
+                            span: target.span.to(value.span),
+                            kind: StmtKind::Assign { target, value },
+                        });
+                        read
+                    }
+                    None => self.expr(),
+                }
+            } else {
+                self.no_hoist += 1;
+                self.reject_condition_assignment("an ELSIF condition");
+                let cond = self.expr();
+                self.no_hoist -= 1;
+                cond
+            };
             first = false;
             if !self.expect_kw(Kw::Then, "after the IF condition") {
                 // Garbage before a THEN on the same statement is skipped; without THEN the body
@@ -787,6 +811,9 @@ impl<'s, 'd> Parser<'s, 'd> {
         }
         let t = self.bump();
         let control = self.ident(&t);
+        if matches!(self.peek(), Tok::LBracket | Tok::Dot | Tok::Caret) {
+            return self.for_with_non_name_control(t);
+        }
         if !self.at(&Tok::Assign) {
             let found = self.describe_current();
             self.error_here(
@@ -822,16 +849,192 @@ impl<'s, 'd> Parser<'s, 'd> {
         })
     }
 
+    /// `FOR Offset[1] := 0 TO n DO ... END_FOR` (TcUnit): IEC 61131-3 ed.3's grammar makes the control
+    /// variable an identifier (`Control_Variable : Identifier`), and the CODESYS help names it a variable
+    /// of an integer type; an array element, a member or a dereference is therefore E1044, once, at the
+    /// control variable. The rest of the loop is read (so that its `END_FOR`, EXITs and nested blocks
+    /// cause no follow-on errors) and dropped.
+    fn for_with_non_name_control(&mut self, first: Token) -> Option<StmtKind> {
+        let start = first.range.start;
+        let mut depth = 0usize;
+        while !matches!(self.peek(), Tok::Eof | Tok::Semi | Tok::Kw(Kw::Do)) {
+            match self.peek() {
+                Tok::LBracket | Tok::LParen => depth += 1,
+                Tok::RBracket | Tok::RParen => depth = depth.saturating_sub(1),
+                Tok::Assign if depth == 0 => break,
+                _ => {}
+            }
+            self.bump();
+        }
+        let written = self.span(start, self.prev_end());
+        self.push_error(
+            Diagnostic::error(
+                code::E1044,
+                format!(
+                    "the FOR control variable `{}` is not a plain variable name",
+                    {
+                        let s = (written.start as usize).saturating_sub(self.base);
+                        let e = (written.end as usize).saturating_sub(self.base);
+                        self.src.get(s..e).unwrap_or("")
+                    }
+                ),
+            )
+            .at(written)
+            .with_primary_label("an array element, member or dereference")
+            .with_hint(
+                "count with a local integer variable and copy it (`FOR i := 0 TO n DO Offset[1] := i; ... END_FOR;`)",
+            ),
+        );
+        if !self.at(&Tok::Assign) {
+            return None;
+        }
+        self.bump();
+        let _ = self.expr();
+        if !self.expect_kw(Kw::To, "after the FOR start value") {
+            return None;
+        }
+        let _ = self.expr();
+        if self.at_kw(Kw::By) {
+            self.bump();
+            let _ = self.expr();
+        }
+        if !self.expect_kw(Kw::Do, "before the FOR loop body") {
+            return None;
+        }
+        let _ = self.nested(|p| p.statement_list());
+        self.close_block(Kw::EndFor, written, "FOR");
+        self.dropped_block = true;
+        Some(StmtKind::Empty)
+    }
+
+    /// Whether a condition starts with a well-formed place and `:=` (`b :=`, `st.x :=`, `a[i] :=`,
+    /// `p^ :=`); stricter than [`Self::at_place_then_assign`], so that `IF a x := 5;` (THEN
+    /// missing) still recovers at `x`.
+    fn at_condition_assignment(&self) -> bool {
+        if !matches!(self.peek(), Tok::Ident) {
+            return false;
+        }
+        let mut i = 1;
+        while i < MAX_PLACE_LOOKAHEAD {
+            match self.peek_at(i) {
+                Tok::Assign => return true,
+                Tok::Dot if *self.peek_at(i + 1) == Tok::Ident => i += 2,
+                Tok::Caret => i += 1,
+                Tok::LBracket => {
+                    let mut depth = 0usize;
+                    while i < MAX_PLACE_LOOKAHEAD {
+                        match self.peek_at(i) {
+                            Tok::LBracket => depth += 1,
+                            Tok::RBracket => {
+                                depth -= 1;
+                                if depth == 0 {
+                                    break;
+                                }
+                            }
+                            Tok::Semi | Tok::Eof | Tok::Assign => return false,
+                            _ => {}
+                        }
+                        i += 1;
+                    }
+                    i += 1;
+                }
+                _ => return false,
+            }
+        }
+        false
+    }
+
+    /// `b := e` at the start of a condition, as CODESYS/TwinCAT ExST allow it ("assignment as an
+    /// expression": its value is the value assigned): the place and the value; `None` (nothing read)
+    /// when the condition is no assignment.
+    fn condition_assignment(&mut self) -> Option<(Place, Expr)> {
+        if !self.at_condition_assignment() {
+            return None;
+        }
+        let target = self.place()?;
+        self.bump();
+        let value = self.expr();
+        Some((target, value))
+    }
+
+    /// E1045 for an assignment at the start of an ELSIF or UNTIL condition, whose hoisting would
+    /// change when it runs; the assignment is skipped and the value after `:=` read as the condition.
+    fn reject_condition_assignment(&mut self, what: &str) {
+        if !self.at_condition_assignment() {
+            return;
+        }
+        let start = self.cur().range.start;
+        let Some(_) = self.place() else { return };
+        let span = self.span(start, self.cur().range.end);
+        self.bump();
+        self.push_error(
+            Diagnostic::error(
+                code::E1045,
+                format!("an assignment as {what} is not supported"),
+            )
+            .at(span)
+            .with_primary_label("ExST assignment as an expression")
+            .with_hint("assign the variable in a statement before the test (in a REPEAT, as the last statement of its body) and test the variable"),
+        );
+    }
+
     fn while_stmt(&mut self) -> Option<StmtKind> {
         let (_, open) = self.block_open()?;
+        let assignment = self.condition_assignment();
         self.no_hoist += 1;
-        let cond = self.expr();
+        let cond = match &assignment {
+            Some((target, _)) => Expr {
+                span: target.span,
+                kind: ExprKind::Place(target.clone()),
+            },
+            None => self.expr(),
+        };
         self.no_hoist -= 1;
         if !self.expect_kw(Kw::Do, "after the WHILE condition") {
             return None;
         }
-        let body = self.nested(|p| p.statement_list());
+        let mut body = self.nested(|p| p.statement_list());
         self.close_block(Kw::EndWhile, open, "WHILE");
+        if let Some((target, value)) = assignment {
+            // `WHILE b := e DO body END_WHILE` (ExST) runs the assignment at each test: read as
+            // `WHILE TRUE DO b := e; IF NOT b THEN EXIT; END_IF; body END_WHILE` (a CONTINUE in
+            // the body goes back to the test, so the assignment runs again).
+            let span = target.span.to(value.span);
+            let exit = Stmt {
+                span,
+                kind: StmtKind::If {
+                    branches: vec![CondBranch {
+                        cond: Expr {
+                            span: cond.span,
+                            kind: ExprKind::Unary {
+                                op: UnaryOp::Not,
+                                operand: Box::new(cond.clone()),
+                            },
+                        },
+                        body: vec![Stmt {
+                            span,
+                            kind: StmtKind::Exit,
+                        }],
+                        span,
+                    }],
+                    else_body: None,
+                },
+            };
+            let assign = Stmt {
+                span,
+                kind: StmtKind::Assign { target, value },
+            };
+            body.splice(0..0, [assign, exit]);
+            let always = Expr {
+                span: cond.span,
+                kind: ExprKind::Literal(Literal {
+                    kind: LiteralKind::Bool(true),
+                    type_prefix: None,
+                    span: cond.span,
+                }),
+            };
+            return Some(StmtKind::While { cond: always, body });
+        }
         Some(StmtKind::While { cond, body })
     }
 
@@ -850,6 +1053,7 @@ impl<'s, 'd> Parser<'s, 'd> {
         }
         self.bump();
         self.no_hoist += 1;
+        self.reject_condition_assignment("an UNTIL condition");
         let until = self.expr();
         self.no_hoist -= 1;
         self.close_block(Kw::EndRepeat, open, "REPEAT");
