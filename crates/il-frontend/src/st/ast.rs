@@ -8,7 +8,7 @@
 //! enum values reuse the IL tree's nodes, so they print and type exactly as in IL. A construct the
 //! parser could not read becomes [`ExprKind::Error`] (already reported), never a panic.
 
-use crate::ast::{DirectAddress, Ident, Literal};
+use crate::ast::{DirectAddress, Ident, Literal, LiteralKind};
 use crate::Span;
 use serde::Serialize;
 
@@ -228,6 +228,20 @@ pub enum ExprKind {
     },
     /// Text that could not be read (a diagnostic was reported).
     Error,
+}
+
+impl Expr {
+    /// An untyped literal of `kind` (what a rewrite of the tree inserts: `0`, `TRUE`).
+    pub fn literal(kind: LiteralKind, span: Span) -> Expr {
+        Expr {
+            kind: ExprKind::Literal(Literal {
+                kind,
+                type_prefix: None,
+                span,
+            }),
+            span,
+        }
+    }
 }
 
 /// Dropping a tree frees it with a loop: the left operands of a chain `a + b + c ...` nest as deep as

@@ -33,8 +33,8 @@ use super::fb_init_args::DeclArgs;
 use super::file::PendingBody;
 use super::types::MethodSig;
 use crate::ast::{
-    Action, CompilationUnit, Ident, Initializer, LibraryElement, Literal, LiteralKind, Operand,
-    Pou, PouKind, TypeRef, VarBlock, VarKind,
+    Action, CompilationUnit, Ident, Initializer, LibraryElement, LiteralKind, Operand, Pou,
+    PouKind, TypeRef, VarBlock, VarKind,
 };
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
@@ -979,21 +979,10 @@ fn arg(name: &str, value: Expr, span: Span) -> Arg {
     }
 }
 
-fn literal(kind: LiteralKind, span: Span) -> Expr {
-    Expr {
-        kind: ExprKind::Literal(Literal {
-            kind,
-            type_prefix: None,
-            span,
-        }),
-        span,
-    }
-}
-
 fn boolean(b: bool, span: Span) -> Expr {
-    literal(LiteralKind::Bool(b), span)
+    Expr::literal(LiteralKind::Bool(b), span)
 }
 
 fn int(i: i128, span: Span) -> Expr {
-    literal(LiteralKind::Int(i), span)
+    Expr::literal(LiteralKind::Int(i), span)
 }

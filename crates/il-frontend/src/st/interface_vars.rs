@@ -32,8 +32,8 @@ use super::infer::Env;
 use super::inherit::InterfaceOop;
 use super::types::MethodSig;
 use crate::ast::{
-    CompilationUnit, Ident, LibraryElement, Literal, LiteralKind, PouKind, RefKind, TypeDecl,
-    TypeDef, TypeRef, VarDecl,
+    CompilationUnit, Ident, LibraryElement, LiteralKind, PouKind, RefKind, TypeDecl, TypeDef,
+    TypeRef, VarDecl,
 };
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics};
@@ -339,19 +339,8 @@ fn place_expr(p: Place, span: Span) -> Expr {
     }
 }
 
-fn literal(kind: LiteralKind, span: Span) -> Expr {
-    Expr {
-        kind: ExprKind::Literal(Literal {
-            kind,
-            type_prefix: None,
-            span,
-        }),
-        span,
-    }
-}
-
 fn int(v: i128, span: Span) -> Expr {
-    literal(LiteralKind::Int(v), span)
+    Expr::literal(LiteralKind::Int(v), span)
 }
 
 fn null(span: Span) -> Expr {
@@ -366,7 +355,7 @@ fn null(span: Span) -> Expr {
 }
 
 fn bool_lit(v: bool, span: Span) -> Expr {
-    literal(LiteralKind::Bool(v), span)
+    Expr::literal(LiteralKind::Bool(v), span)
 }
 
 fn binary(op: BinaryOp, left: Expr, right: Expr, span: Span) -> Expr {
