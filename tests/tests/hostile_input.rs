@@ -87,7 +87,7 @@ fn an_expression_of_more_than_1000_operations_is_e0109_and_one_of_1000_runs() {
         s.push_str(&format!(" {} a", ops[i % 5]));
         s
     });
-    let abs = format!("{}a{}", "ABS(".repeat(150), ")".repeat(150));
+    let abs = format!("{}a{}", "ABS(".repeat(120), ")".repeat(120));
     // (name, type, initial value, expression, the text before each operation, which of them is the
     // 1,001st operation)
     let cases = [
@@ -109,14 +109,15 @@ fn an_expression_of_more_than_1000_operations_is_e0109_and_one_of_1000_runs() {
         ),
         // every other space precedes an operator
         ("mixed", "DINT", "1", mixed, " ", 2001),
-        // 150 calls and one `+` per term: the 1,001st operation is the 95th call of the 7th term
+        // 120 calls (within the 128 levels of nesting E0108 allows) and one `+` per term: the
+        // 1,001st operation is the 33rd call of the 9th term
         (
             "calls",
             "INT",
             "1",
             vec![abs.as_str(); 600].join(" + "),
             "ABS(",
-            6 * 150 + 95,
+            8 * 120 + 33,
         ),
     ];
     for (name, ty, init, expr, op, n) in cases {
