@@ -11,7 +11,7 @@
 //! `END_INTERFACE` (after an interface's `<Method>` declarations, each closed by `END_METHOD`) written into blank places of the markup after the texts they close; for a GVL also
 //! its name (its members are reachable qualified, `GVL.x`); for a task (`.TcTTO`) its name, cycle
 //! time, priority and the programs it calls. A body in LD or FBD (TwinCAT's network list `<NWL>`)
-//! is read as ST by [`crate::twincat_nwl`], a body in CFC by [`crate::twincat_cfc`], their tokens
+//! is read as ST by `twincat_nwl`, a body in CFC by `twincat_cfc`, their tokens
 //! written into the blank markup of their own elements (so a diagnostic points at the operand's or
 //! box's line), after a VAR block of the temporaries they need. Invariants: never panics; a body in
 //! SFC is one located E0321 naming it, a graphical element not understood one located E0325/E0326,

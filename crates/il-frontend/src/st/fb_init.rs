@@ -14,7 +14,7 @@
 //! online change): a simulation does neither, so neither is called (a note, W0345, says so).
 //!
 //! Input: the units after every ST body and method is lowered (each method an
-//! [`Action`](crate::ast::Action) with `method_inputs`; a base's FB_init a hidden method
+//! [`Action`] with `method_inputs`; a base's FB_init a hidden method
 //! `__S<level>_FB_INIT`, see [`super::inherit`]) and the FB_init arguments read by
 //! [`super::fb_init_args`]. Output: each PROGRAM or FUNCTION_BLOCK that holds instances to
 //! initialise gets a hidden method [`ACTION`] that initialises them in declaration order (for each:

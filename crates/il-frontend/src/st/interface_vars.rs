@@ -4,7 +4,7 @@
 //! instance really is (dynamic dispatch).
 //!
 //! Input: every interface with the function blocks that implement it ([`table`], from
-//! [`super::inherit::flatten`]) and the ST statements being lowered ([`rewrite`]).
+//! [`super::inherit::flatten`]) and the ST statements being lowered (`rewrite`).
 //! Output: each interface `I` is also a hidden STRUCT named `I` (so `itf : I`, `ARRAY[1..3] OF I`,
 //! `VAR_INPUT`, `VAR_IN_OUT`, `VAR_GLOBAL` of it are ordinary variables for sema and C):
 //! - `__TAG : UINT`: which block the instance is (a number per block, `0` unassigned);

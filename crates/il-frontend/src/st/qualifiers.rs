@@ -37,7 +37,7 @@ thread_local! {
         Default::default();
 }
 
-/// Sets the PROGRAM names that [`library_qualifiers`] takes as declared (every file of the
+/// Sets the PROGRAM names that `library_qualifiers` takes as declared (every file of the
 /// project's); returns the names set before, to put back when the project is read.
 pub fn set_project_programs(
     names: std::collections::HashSet<String>,
