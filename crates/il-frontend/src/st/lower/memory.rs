@@ -51,12 +51,20 @@ impl PouLowering<'_> {
         let Some((func, tc, sys)) = mem_function(&name.name) else {
             return false;
         };
-        let refuse = |diags: &mut Diagnostics, at: Span, msg: String, label: &str, hint: &str| {
+        // every refusal shows the call written out with the three parameter names
+        let usage = format!(
+            "write `{}({} := ADR(...), {} := ..., {} := ...)`",
+            func.name(),
+            tc[0],
+            tc[1],
+            tc[2]
+        );
+        let refuse = |diags: &mut Diagnostics, at: Span, msg: String, label: &str| {
             diags.push(
                 Diagnostic::error(code::E1035, msg)
                     .at(at)
                     .with_primary_label(label)
-                    .with_hint(hint),
+                    .with_hint(usage.as_str()),
             );
         };
         // the three arguments in parameter order
@@ -79,13 +87,6 @@ impl PouLowering<'_> {
                         a.span,
                         format!("`{}` has no such argument", name.name),
                         "not a parameter",
-                        &format!(
-                            "write `{}({} := ADR(...), {} := ..., {} := ...)`",
-                            func.name(),
-                            tc[0],
-                            tc[1],
-                            tc[2]
-                        ),
                     );
                     self.poisoned = true;
                     out.push(ld(super::int_lit(0, span), span));
@@ -99,13 +100,6 @@ impl PouLowering<'_> {
                 span,
                 format!("`{}` takes three arguments", name.name),
                 "arguments missing",
-                &format!(
-                    "write `{}({} := ADR(...), {} := ..., {} := ...)`",
-                    func.name(),
-                    tc[0],
-                    tc[1],
-                    tc[2]
-                ),
             );
             self.poisoned = true;
             out.push(ld(super::int_lit(0, span), span));
