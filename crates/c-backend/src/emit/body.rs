@@ -487,6 +487,7 @@ impl<'a> Gen<'a> {
                     Ok(loc) => Some(Place::Loc {
                         loc,
                         ty: Type::Elementary(e),
+                        at: None,
                     }),
                     Err(d) => {
                         self.report_once(*d);

@@ -6,7 +6,7 @@
 //! addresses the profile rejects are skipped here (their errors come from code generation); the
 //! comparison is bit by bit within the bytes each access touches.
 
-use super::values::access_bytes;
+use super::values::located_bytes;
 use super::Gen;
 use diagnostics::{code, Diagnostic, Span, XmlContext};
 use il_frontend::ast::{Area, DirectAddress, VarKind};
@@ -52,7 +52,7 @@ impl Gen<'_> {
             if loc.area != Area::Output {
                 continue;
             }
-            let Some(size) = access_bytes(&v.ty) else {
+            let Some(size) = located_bytes(&v.ty, loc.size) else {
                 continue;
             };
             let span = self

@@ -52,11 +52,13 @@ impl Gen<'_> {
                 return Some(cfmt!("sizeof({base}{dims})"));
             }
         }
-        match self.place(scope, &s.of)? {
+        match self.place_or_located_array(scope, &s.of)? {
             Place::Mem { lv, .. } => Some(cfmt!("sizeof({lv})")),
             Place::Loc { ty, .. } | Place::Part { ty, .. } => {
+                // a located array: the C type's size (`IEC_INT[5]`), as a named array's
                 let base = ctypes::base(self.model, &ty)?;
-                Some(cfmt!("sizeof({base})"))
+                let dims = ctypes::dims(&ty);
+                Some(cfmt!("sizeof({base}{dims})"))
             }
         }
     }

@@ -16,7 +16,7 @@ use super::values::area_array;
 use super::Gen;
 use crate::{ctypes, mangle};
 use il_frontend::ast::{AddressSize, ArgDir, CompilationUnit, LibraryElement, PouKind, VarKind};
-use il_frontend::sema::{FbType, PouId, Type, UserTypeDef, Variable};
+use il_frontend::sema::{ConstValue, FbType, PouId, Type, UserTypeDef, Variable};
 use std::fmt::Write as _;
 
 /// Arrays with more elements than this are left out of the table (they stay usable in the program).
@@ -269,14 +269,55 @@ impl Gen<'_> {
     /// A located variable (global or of a POU) starts from the (zeroed) process image; its initial
     /// value, when it has one, is written there.
     pub(super) fn init_located(&mut self, c: &mut String, v: &Variable) {
+        if let (Some(ConstValue::Array(elems)), Type::Array { element, .. }) = (&v.init, &v.ty) {
+            self.init_located_array(c, v, elems, element);
+            return;
+        }
         if let Some(init) = &v.init {
             if let Some(e) = v.ty.elementary() {
                 if let Some(val) = ctypes::const_elementary(self.model, e, init) {
-                    if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
-                        let _ = writeln!(c, "    {}", super::values::store_expr(&loc, &ty, &val));
+                    if let Some(Place::Loc { loc, ty, .. }) = self.located_global(v) {
+                        let _ = writeln!(
+                            c,
+                            "    {}",
+                            super::values::store_expr(&loc, None, &ty, &val)
+                        );
                     }
                 }
             }
+        }
+    }
+
+    /// A located array's initial values (`regs AT %MW10 : ARRAY[0..3] OF INT := [1, 2, 2(0)];`),
+    /// row-major as C lays out the elements, each stored at its bytes in the area.
+    fn init_located_array(
+        &mut self,
+        c: &mut String,
+        v: &Variable,
+        elems: &[ConstValue],
+        element: &Type,
+    ) {
+        let Some(Place::Loc { loc, .. }) = self.located_global(v) else {
+            return;
+        };
+        let (Some(e), Some(size)) = (
+            element.elementary(),
+            super::values::located_bytes(element, AddressSize::Byte),
+        ) else {
+            return;
+        };
+        let total = loc.bytes / size.max(1);
+        let each = crate::profile::Located { bytes: size, ..loc };
+        for (k, value) in elems.iter().take(total as usize).enumerate() {
+            let Some(val) = ctypes::const_elementary(self.model, e, value) else {
+                continue;
+            };
+            let at = cfmt!("{}u", k as u64 * u64::from(size));
+            let _ = writeln!(
+                c,
+                "    {}",
+                super::values::store_expr(&each, Some(&at), element, &val)
+            );
         }
     }
 
@@ -295,12 +336,18 @@ impl Gen<'_> {
         let bytes = if v.ty.is_bool() {
             None
         } else {
-            super::values::access_bytes(&v.ty)
+            super::values::located_bytes(&v.ty, loc.size)
         };
+        if bytes.is_none() && !v.ty.is_bool() {
+            // no layout in the process image (an array at a bit address, a structure): its uses
+            // are E2005 (`Gen::locate_var`)
+            return None;
+        }
         match self.locate(&addr, bytes) {
             Ok(l) => Some(Place::Loc {
                 loc: l,
                 ty: v.ty.clone(),
+                at: None,
             }),
             Err(d) => {
                 self.report_once(*d);
@@ -461,7 +508,11 @@ impl Gen<'_> {
 
     pub(super) fn watch_var(&mut self, v: &Variable, name: &str, lv: &str, out: &mut WatchLines) {
         if v.location.is_some() {
-            if let Some(Place::Loc { loc, ty }) = self.located_global(v) {
+            if let Some(Place::Loc { loc, ty, .. }) = self.located_global(v) {
+                if let Type::Array { dims, element } = &ty {
+                    self.watch_located_array(name, loc, dims, element, out);
+                    return;
+                }
                 let tag = match ty {
                     Type::Enum(_) => "LADDERC_T_DINT",
                     ref t => match t.elementary() {
@@ -480,6 +531,49 @@ impl Gen<'_> {
             return;
         }
         self.watch_value(name, lv, &v.ty, 0, out);
+    }
+
+    /// One watch entry per element of a located array, named as an array's elements are
+    /// (`regs[3]`, `grid[0,1]`), each at its bytes in the area (see `Gen::located_index`).
+    fn watch_located_array(
+        &self,
+        name: &str,
+        loc: crate::profile::Located,
+        dims: &[il_frontend::sema::Dim],
+        element: &Type,
+        out: &mut WatchLines,
+    ) {
+        let tag = match element {
+            Type::Enum(_) => "LADDERC_T_DINT",
+            t => match t.elementary() {
+                Some(e) => ctypes::type_tag(e),
+                None => return,
+            },
+        };
+        let Some(size) = super::values::located_bytes(element, AddressSize::Byte) else {
+            return;
+        };
+        let total: u128 = dims.iter().map(|d| d.len()).product();
+        if total == 0 || total > MAX_WATCHED_ARRAY {
+            return;
+        }
+        for k in 0..total {
+            if out.count >= MAX_ENTRIES {
+                return;
+            }
+            let mut rest = k;
+            let mut iec = vec![String::new(); dims.len()];
+            for (d, dim) in dims.iter().enumerate().rev() {
+                iec[d] = (dim.lower + (rest % dim.len()) as i128).to_string();
+                rest /= dim.len();
+            }
+            out.line(&cfmt!(
+                "{{ {}, {tag}, NULL, {}, {}, 0 }}",
+                mangle::c_string(cfmt!("{name}[{}]", iec.join(",")).as_bytes()),
+                area_array(loc.area),
+                u128::from(loc.offset) + k * u128::from(size)
+            ));
+        }
     }
 
     pub(super) fn watch_value(

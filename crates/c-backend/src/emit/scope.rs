@@ -6,7 +6,7 @@
 //! runtime helpers; array indexes go through `ladderc_index` (out-of-range: element 0 and an error flag);
 //! every produced expression is fully parenthesised.
 
-use super::values::{access_bytes, convert_owned, load_expr, store_expr};
+use super::values::{convert_owned, load_expr, located_bytes, store_expr};
 use super::Gen;
 use crate::ctypes;
 use crate::mangle;
@@ -27,8 +27,14 @@ use Elementary as E;
 pub enum Place {
     /// A C lvalue (`self->v_x`, `(*v_io)`, `g_x`, `self->v_t.Q`).
     Mem { lv: String, ty: Type },
-    /// A located variable or a direct address in the process image.
-    Loc { loc: Located, ty: Type },
+    /// A located variable or a direct address in the process image; `at`, for an element of a
+    /// located array, is a C expression of the element's byte offset from `loc` (already checked
+    /// against the array's bounds, so the bytes are inside the array).
+    Loc {
+        loc: Located,
+        ty: Type,
+        at: Option<String>,
+    },
     /// A partial access `x.3`, `x.%B1` (3rd edition): `width` bits from bit `shift` (LSB 0) of `whole`,
     /// an integer or bit string, read as `ty` (BOOL, BYTE, WORD, DWORD, LWORD) and written back into it.
     Part {
@@ -174,8 +180,15 @@ impl Gen<'_> {
         loc: &il_frontend::sema::Location,
         span: Span,
     ) -> Option<Place> {
-        let Some(bytes) = access_bytes(&v.ty) else {
-            self.unsupported(span, "a located variable of a non-elementary type");
+        let Some(bytes) = located_bytes(&v.ty, loc.size) else {
+            self.unsupported(
+                span,
+                if matches!(v.ty, Type::Array { .. }) && loc.size == AddressSize::Bit {
+                    "an array located at a bit address (give it a byte address, `%MB`)"
+                } else {
+                    "a located variable of a non-elementary type"
+                },
+            );
             return None;
         };
         let addr = il_frontend::ast::DirectAddress {
@@ -193,6 +206,7 @@ impl Gen<'_> {
             Ok(l) => Some(Place::Loc {
                 loc: l,
                 ty: v.ty.clone(),
+                at: None,
             }),
             Err(d) => {
                 self.report_once(*d);
@@ -340,6 +354,22 @@ impl Gen<'_> {
 
     /// The place a variable reference denotes (None: an error was reported, or it is not a variable).
     pub fn place(&mut self, scope: &Scope, r: &VarRef) -> Option<Place> {
+        let place = self.place_or_located_array(scope, r)?;
+        if let Place::Loc {
+            ty: Type::Array { .. },
+            ..
+        } = place
+        {
+            // its elements are addressed one by one (`located_index`); a whole located array is
+            // no C object to copy or pass
+            self.unsupported(r.span, "a whole located array (use its elements)");
+            return None;
+        }
+        Some(place)
+    }
+
+    /// [`Self::place`], where a whole located array is a place too (for `SIZEOF`).
+    pub(super) fn place_or_located_array(&mut self, scope: &Scope, r: &VarRef) -> Option<Place> {
         let mut base = self.base_place(scope, &r.base);
         let mut skip = 0;
         if let (None, Some((p, id)), Some(Accessor::Deref(_))) =
@@ -419,6 +449,18 @@ impl Gen<'_> {
             }
             let (lv, ty) = match place {
                 Place::Mem { lv, ty } => (lv, ty),
+                Place::Loc {
+                    loc,
+                    ty: ty @ Type::Array { .. },
+                    at: None,
+                } => {
+                    let Accessor::Index(idx) = acc else {
+                        self.unsupported(r.span, "fields of a located array");
+                        return None;
+                    };
+                    place = self.located_index(scope, loc, &ty, idx, r.span)?;
+                    continue;
+                }
                 Place::Loc { .. } | Place::Part { .. } => {
                     self.unsupported(r.span, "fields or indexes of a located variable");
                     return None;
@@ -522,6 +564,48 @@ impl Gen<'_> {
             ty = *element;
         }
         Some(Place::Mem { lv, ty })
+    }
+
+    /// `a[i, j]` of a located array `a` (elementary elements, see [`located_bytes`]): the element
+    /// at byte `((i - lo_i) * len_j + (j - lo_j)) * size` from the array's address, row by row as
+    /// C lays out an array. Each index is checked as for any array (`ladderc_index`: out of range
+    /// gives the first element and the bounds flag), so the access stays inside the array, whose
+    /// bytes the generator checked against the area.
+    fn located_index(
+        &mut self,
+        scope: &Scope,
+        loc: Located,
+        ty: &Type,
+        idx: &[Operand],
+        span: Span,
+    ) -> Option<Place> {
+        let Type::Array { dims, element } = ty else {
+            return None;
+        };
+        if idx.len() != dims.len() {
+            self.unsupported(span, "a partially indexed located array");
+            return None;
+        }
+        let size = located_bytes(element, AddressSize::Byte)?;
+        let mut at = String::new();
+        for (k, (d, op)) in dims.iter().zip(idx).enumerate() {
+            let v = self.value(scope, op, &Type::Elementary(E::Lint))?;
+            let i = cfmt!(
+                "ladderc_index({v}, {}, {})",
+                clamp64(d.lower),
+                clamp64(d.upper)
+            );
+            at = if k == 0 {
+                i
+            } else {
+                cfmt!("({at}) * {}u + {i}", d.len())
+            };
+        }
+        Some(Place::Loc {
+            loc: Located { bytes: size, ..loc },
+            ty: (**element).clone(),
+            at: Some(cfmt!("({at}) * {size}u")),
+        })
     }
 
     /// The type an operand has by itself (literals: their prefix, else the given context type).
@@ -633,7 +717,9 @@ impl Gen<'_> {
     pub fn read_owned(&self, place: Place, want: &Type) -> String {
         match place {
             Place::Mem { lv, ty } => convert_owned(lv, &ty, want),
-            Place::Loc { loc, ty } => convert_owned(load_expr(&loc, &ty), &ty, want),
+            Place::Loc { loc, ty, at } => {
+                convert_owned(load_expr(&loc, at.as_deref(), &ty), &ty, want)
+            }
             Place::Part {
                 whole,
                 shift,
@@ -695,7 +781,7 @@ impl Gen<'_> {
                     out.push(';');
                 }
             },
-            Place::Loc { loc, ty } => out.push_str(&store_expr(loc, ty, value)),
+            Place::Loc { loc, ty, at } => out.push_str(&store_expr(loc, at.as_deref(), ty, value)),
             Place::Part {
                 whole,
                 shift,
@@ -750,7 +836,7 @@ impl Gen<'_> {
                 let e = il_frontend::sema::Location::of(a).elementary();
                 match self.locate(a, None) {
                     Ok(loc) => Some(convert_owned(
-                        load_expr(&loc, &Type::Elementary(e)),
+                        load_expr(&loc, None, &Type::Elementary(e)),
                         &Type::Elementary(e),
                         want,
                     )),

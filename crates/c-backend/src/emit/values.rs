@@ -22,6 +22,27 @@ pub fn access_bytes(ty: &Type) -> Option<u32> {
     Some(e.size_bytes())
 }
 
+/// The bytes a located variable of type `ty` at an address of size `size` takes: an elementary
+/// type's (or an enumeration's) width, or for an array of them (at a byte, word, double or long
+/// word address, never a bit) its elements' widths times their number, a BOOL element one byte
+/// (as CODESYS and TwinCAT lay out `ARRAY OF BOOL AT %MB`). `None`: no layout in the process
+/// image (structures, strings, blocks, arrays of them, more than 4 GiB).
+pub fn located_bytes(ty: &Type, size: il_frontend::ast::AddressSize) -> Option<u32> {
+    match ty {
+        Type::Array { dims, element } if size != il_frontend::ast::AddressSize::Bit => {
+            let each = if element.is_bool() {
+                1
+            } else {
+                access_bytes(element)?
+            };
+            let count = dims.iter().try_fold(1u128, |n, d| n.checked_mul(d.len()))?;
+            u32::try_from(count.checked_mul(u128::from(each))?).ok()
+        }
+        Type::Array { .. } => None,
+        _ => access_bytes(ty),
+    }
+}
+
 pub fn area_array(area: Area) -> &'static str {
     match area {
         Area::Input => "ladderc_I",
@@ -154,7 +175,7 @@ pub fn real_to_int(d: &str, t: Elementary) -> String {
 }
 
 /// Loads a located value of type `ty`.
-pub fn load_expr(loc: &Located, ty: &Type) -> String {
+pub fn load_expr(loc: &Located, at: Option<&str>, ty: &Type) -> String {
     let area = area_array(loc.area);
     if let Some(bit) = loc.bit {
         let v = cfmt!("ladderc_load_bit({area}, {}, {bit})", loc.offset);
@@ -164,7 +185,11 @@ pub fn load_expr(loc: &Located, ty: &Type) -> String {
             convert(&v, &Type::BOOL, ty)
         };
     }
-    let raw = cfmt!("ladderc_load({area}, {}, {})", loc.offset, loc.bytes);
+    let raw = cfmt!(
+        "ladderc_load({area}, {}, {})",
+        byte_offset(loc, at),
+        loc.bytes
+    );
     let e = match ty {
         Type::Enum(_) => E::Dint,
         t => t.elementary().unwrap_or(E::Lword),
@@ -178,7 +203,7 @@ pub fn load_expr(loc: &Located, ty: &Type) -> String {
 }
 
 /// Stores `value` (of type `ty`) into a located place.
-pub fn store_expr(loc: &Located, ty: &Type, value: &str) -> String {
+pub fn store_expr(loc: &Located, at: Option<&str>, ty: &Type, value: &str) -> String {
     let area = area_array(loc.area);
     if let Some(bit) = loc.bit {
         let v = if ty.is_bool() {
@@ -196,7 +221,15 @@ pub fn store_expr(loc: &Located, ty: &Type, value: &str) -> String {
     };
     cfmt!(
         "ladderc_store({area}, {}, {}, {raw});",
-        loc.offset,
+        byte_offset(loc, at),
         loc.bytes
     )
+}
+
+/// The C offset of a located place: the address's, plus an array element's (`at`).
+fn byte_offset(loc: &Located, at: Option<&str>) -> String {
+    match at {
+        None => loc.offset.to_string(),
+        Some(at) => cfmt!("(uint32_t)({}u + {at})", loc.offset),
+    }
 }
