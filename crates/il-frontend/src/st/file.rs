@@ -1402,10 +1402,27 @@ pub fn compile_pending(
     if pending.is_empty() {
         return;
     }
-    // the blocks whose text declares an FB_init (before a block that is not compiled loses it)
+    // the blocks whose text declares an FB_init (before a block that is not compiled loses it),
+    // and the blocks that are not compiled because their base is no block of the project (E0330:
+    // a library's base, `EXTENDS TcBaseModuleRegistered`, may declare the FB_init their instances'
+    // arguments go to, so those arguments are no E0329 more)
+    let blocks: std::collections::HashSet<String> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|i| match i {
+            LibraryElement::Pou(p) if p.kind == crate::ast::PouKind::FunctionBlock => {
+                Some(p.name.key())
+            }
+            _ => None,
+        })
+        .collect();
     let declares_fb_init: std::collections::HashSet<String> = pending
         .iter()
-        .filter(|pb| pb.methods.iter().any(|m| m.name.is("FB_init")))
+        .filter(|pb| {
+            pb.methods.iter().any(|m| m.name.is("FB_init"))
+                || matches!(pb.oop.as_deref(), Some(super::inherit::Oop::Block(b))
+                    if b.extends.iter().any(|e| !blocks.contains(&e.key())))
+        })
         .filter_map(|pb| pb.pou_name(units).map(|n| n.key()))
         .collect();
     // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
