@@ -11,7 +11,7 @@
 
 use super::body::{Body, Ty};
 use super::model::*;
-use crate::ast::{self, Accessor, MemCall, MemFunc, Operand};
+use crate::ast::{self, MemCall, MemFunc, Operand};
 use diagnostics::code;
 
 impl Body<'_, '_> {
@@ -85,14 +85,8 @@ impl Body<'_, '_> {
     /// variable, or a located variable (the process image is read and written through the
     /// profile's byte order, never through an address).
     fn no_storage_of_its_own(&self, v: &ast::VarRef) -> Option<&'static str> {
-        if v.accessors.iter().any(|a| matches!(a, Accessor::Deref(_))) {
-            return None;
-        }
-        if v.accessors
-            .iter()
-            .any(|a| matches!(a, Accessor::Field(f) if ast::partial_access(&f.name).is_some()))
-        {
-            return Some("a bit or part of a variable has no address");
+        if let Some(why) = super::refs::through_reference_or_part(v) {
+            return why;
         }
         let pou = self.pou();
         let located = pou

@@ -103,15 +103,8 @@ impl Body<'_, '_> {
 
     /// Why the address of `v` may not be taken (`None`: it may).
     fn not_referable(&self, v: &ast::VarRef) -> Option<&'static str> {
-        // what a reference refers to outlives it already
-        if v.accessors.iter().any(|a| matches!(a, Accessor::Deref(_))) {
-            return None;
-        }
-        if v.accessors
-            .iter()
-            .any(|a| matches!(a, Accessor::Field(f) if ast::partial_access(&f.name).is_some()))
-        {
-            return Some("a bit or part of a variable has no address");
+        if let Some(why) = through_reference_or_part(v) {
+            return why;
         }
         let pou = self.pou();
         let var = pou.var_position(&v.base.name).map(|i| &pou.vars[i]);
@@ -161,4 +154,17 @@ impl Body<'_, '_> {
             }
         }
     }
+}
+
+/// What `v`'s accessors alone say of its address: `Some(None)` when it goes through a reference
+/// (`r^.x`: what a reference refers to outlives it, and has storage of its own), `Some(Some(why))`
+/// for a bit or part of a variable, which has no address; `None` when its base variable decides.
+pub(super) fn through_reference_or_part(v: &ast::VarRef) -> Option<Option<&'static str>> {
+    if v.accessors.iter().any(|a| matches!(a, Accessor::Deref(_))) {
+        return Some(None);
+    }
+    v.accessors
+        .iter()
+        .any(|a| matches!(a, Accessor::Field(f) if ast::partial_access(&f.name).is_some()))
+        .then_some(Some("a bit or part of a variable has no address"))
 }
