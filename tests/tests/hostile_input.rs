@@ -468,6 +468,25 @@ fn an_unterminated_pragma_before_a_multibyte_character_ends_on_a_boundary() {
     assert_spans_on_boundaries(&out, "pragma");
 }
 
+/// A pragma whose 40th byte after its `{` falls inside a multibyte character (`{attribute 'x...'`
+/// followed by accented letters): its kind is told from whole characters; before, the lexer sliced
+/// the text inside the character and panicked (found by mutating the fixtures).
+#[test]
+fn a_pragma_with_a_multibyte_character_at_its_40th_byte_is_read_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    let pragma = format!("{{attribute '{}\u{e9}\u{e9}\u{e9}' }}", "x".repeat(26));
+    assert!(
+        !pragma[1..].is_char_boundary(40),
+        "the 40th byte must fall inside a character"
+    );
+    let text = format!("PROGRAM Main\nVAR n : INT; END_VAR\n{pragma}\nn := n + 1;\nEND_PROGRAM\n");
+    let src = write(dir.path(), "p.st", &text);
+    let out = run(&["--message-format", "short", "check"], &[&src]);
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("p.st:3:1: note[W0301]"), "{err}");
+}
+
 // ------------------------------------------------------------------------------ 3. bounded output
 
 #[test]

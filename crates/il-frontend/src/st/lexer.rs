@@ -485,9 +485,12 @@ fn pragma(lex: &mut logos::Lexer<Raw>) -> Result<(), LexError> {
 /// `}`. So a project whose `{attribute 'qualified only'` lacks its `}` (SeanyCash/TwinCAT_CNC) reads
 /// up to the next pragma's `}` as one informational pragma instead of swallowing the whole file.
 pub fn pragma_len(rest: &str) -> Option<usize> {
-    if !rest.starts_with('{')
-        && pragma_kind(&format!("{{{}", &rest[..rest.len().min(40)])) == PragmaKind::Informational
-    {
+    // the pragma's first 40 characters tell its kind (a character may be several bytes)
+    let head = rest
+        .char_indices()
+        .nth(40)
+        .map_or(rest, |(i, _)| &rest[..i]);
+    if !rest.starts_with('{') && pragma_kind(&format!("{{{head}")) == PragmaKind::Informational {
         return rest.find('}').map(|i| i + 1);
     }
     let mut depth = 1usize;
