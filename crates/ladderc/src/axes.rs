@@ -59,6 +59,9 @@ struct AxisRepr {
     modulo_period: f64,
     #[serde(default)]
     following_error_limit: f64,
+    /// The program's `AXIS_REF` this axis drives (`GVL_Axes.Axis1`, `MAIN.fbStation.Axis`).
+    #[serde(default)]
+    link: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize)]
@@ -93,6 +96,12 @@ pub struct Axis {
     pub counts_per_unit: f64,
     /// The axis limits and settings the motion runtime gets.
     pub limits: c_backend::motion::MotionAxis,
+    /// `"link"`: the instance path of the program's `AXIS_REF` this axis drives, and where the
+    /// path is written in the axes file ([`crate::axis_links`]).
+    pub link: Option<(String, Span)>,
+    /// The program declares the global `AXIS_REF` of this name itself (a TwinCAT GVL): the axes
+    /// file then declares none ([`AxisConfig::globals_il`]).
+    pub declared_by_program: bool,
 }
 
 /// The axis configuration of a project.
@@ -106,6 +115,9 @@ pub struct AxisConfig {
     pub axes: Vec<Axis>,
     /// The axes groups (Part 4), each a global `AXES_GROUP_REF`.
     pub groups: Vec<c_backend::motion::MotionGroup>,
+    /// The program uses a block ladderc builds ([`crate::tc2_blocks`]): the globals include the
+    /// per-axis tables it reads (modulo period, acceleration and deceleration limits by `AxisNo`).
+    pub tc2_tables: bool,
 }
 
 impl Default for AxisConfig {
@@ -115,6 +127,7 @@ impl Default for AxisConfig {
             queue_depth: default_queue_depth(),
             axes: Vec::new(),
             groups: Vec::new(),
+            tc2_tables: false,
         }
     }
 }
@@ -127,6 +140,15 @@ fn is_identifier(s: &str) -> bool {
     matches!(c.next(), Some(ch) if ch.is_ascii_alphabetic() || ch == '_')
         && c.all(|ch| ch.is_ascii_alphanumeric() || ch == '_')
         && !s.contains("__")
+}
+
+/// `v` as an IEC real literal (`360.0`, `1.5e-3`); `v` is finite (checked when the file is read).
+fn real(v: f64) -> String {
+    let t = format!("{v:e}");
+    match t.split_once('e') {
+        Some((m, e)) if !m.contains('.') => format!("{m}.0e{e}"),
+        _ => t,
+    }
 }
 
 /// The span of the first `"text"` string in the file after byte `from` (the whole file when absent).
@@ -211,7 +233,13 @@ impl AxisConfig {
                     ));
                 }
             }
+            let link = a.link.as_ref().map(|l| {
+                let at = string_span(file, src, l, span.range().start);
+                (l.clone(), at)
+            });
             axes.push(Axis {
+                link,
+                declared_by_program: false,
                 name: a.name.clone(),
                 unit: a.unit.clone(),
                 counts_per_unit: a.counts_per_unit,
@@ -302,17 +330,45 @@ impl AxisConfig {
             queue_depth: repr.queue_depth,
             axes,
             groups,
+            tc2_tables: false,
         })
     }
 
     /// IL declaring one global reference per axis and group (parsed after the block prelude).
     pub fn globals_il(&self) -> String {
         let mut s = String::from("(* axes and groups of the axis configuration *)\n");
-        if self.axes.is_empty() && self.groups.is_empty() {
+        if self.axes.iter().all(|a| a.declared_by_program)
+            && self.groups.is_empty()
+            && !self.tc2_tables
+        {
             return s;
         }
         s.push_str("VAR_GLOBAL\n");
+        if self.tc2_tables {
+            let n = self.axes.len().max(1);
+            let table = |f: &dyn Fn(&Axis) -> f64| -> String {
+                let mut v: Vec<String> = self.axes.iter().map(|a| real(f(a))).collect();
+                if v.is_empty() {
+                    v.push("0.0".into());
+                }
+                v.join(", ")
+            };
+            for (name, values) in [
+                ("MODULO", table(&|a| a.limits.modulo_period)),
+                ("ACC", table(&|a| a.limits.acceleration_limit)),
+                ("DEC", table(&|a| a.limits.deceleration_limit)),
+            ] {
+                let _ = writeln!(
+                    s,
+                    "    __TC2_{name} : ARRAY [0..{}] OF LREAL := [{values}];",
+                    n - 1
+                );
+            }
+        }
         for (i, a) in self.axes.iter().enumerate() {
+            if a.declared_by_program {
+                continue;
+            }
             let _ = writeln!(s, "    {} : AXIS_REF := (AxisNo := {i});", a.name);
         }
         for (j, g) in self.groups.iter().enumerate() {

@@ -57,6 +57,7 @@
 #![warn(missing_docs)]
 
 pub mod axes;
+pub mod axis_links;
 pub mod beremiz;
 pub mod cli;
 pub mod depfile;
@@ -74,6 +75,7 @@ pub mod report;
 pub mod stdio;
 pub mod summary;
 pub mod tc2_axis_ref;
+pub mod tc2_blocks;
 pub mod tc2_mc2;
 pub mod text_lists;
 pub mod trace_raw;
