@@ -59,6 +59,7 @@
 pub mod axes;
 pub mod axis_links;
 pub mod beremiz;
+pub mod block_temps;
 pub mod cli;
 pub mod depfile;
 pub mod encoding;
@@ -77,6 +78,7 @@ pub mod summary;
 pub mod tc2_axis_ref;
 pub mod tc2_blocks;
 pub mod tc2_mc2;
+pub mod tc2_override;
 pub mod text_lists;
 pub mod trace_raw;
 pub mod twincat;

@@ -737,6 +737,7 @@ impl Session {
         if uses_blocks {
             crate::axis_links::link(&mut user, &mut axes, &mut self.diags);
             crate::tc2_mc2::read_spellings(&mut user, &library, &axes, &mut self.diags);
+            crate::block_temps::keep(&mut user, &library);
         }
         let cycle_ms = match (axes.cycle_ms, opts.cycle_ms) {
             (Some(a), Some(c)) if (a - c).abs() > 1e-9 * a.abs().max(1.0) => {

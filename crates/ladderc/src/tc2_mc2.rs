@@ -22,8 +22,8 @@
 use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
-    Accessor, ArgDir, CallArgs, CompilationUnit, FormalArg, Ident, IlStmt, InstrKind,
-    LibraryElement, Literal, LiteralKind, Operand, TypeRef, VarRef,
+    Accessor, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt, Initializer, InstrKind,
+    LibraryElement, Literal, LiteralKind, Operand, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
 };
 use param_passing::library::Library;
 use std::collections::HashMap;
@@ -39,7 +39,7 @@ const NO_COUNTERPART: &[(&str, &str, &str)] = &[
     (
         "MC_POWER",
         "OVERRIDE",
-        "ladderc scales velocities with MC_SetOverride; MC_Power takes only `Override := 100.0`",
+        "a conditional call (CALC/CALCN) of MC_Power cannot carry the override: call MC_SetOverride",
     ),
     (
         "MC_POWER",
@@ -87,6 +87,19 @@ pub fn read_spellings(
     }
     for u in units.iter_mut() {
         for item in &mut u.items {
+            // `eDir : MC_Direction := MC_Direction.MC_Shortest_Way;`
+            match item {
+                LibraryElement::Pou(p) => p
+                    .var_blocks
+                    .iter_mut()
+                    .flat_map(|b| b.vars.iter_mut())
+                    .for_each(|v| init_enum_values(v.init.as_mut())),
+                LibraryElement::GlobalVars(b) => b
+                    .vars
+                    .iter_mut()
+                    .for_each(|v| init_enum_values(v.init.as_mut())),
+                _ => {}
+            }
             let LibraryElement::Pou(p) = item else {
                 continue;
             };
@@ -108,7 +121,18 @@ pub fn read_spellings(
                     lib,
                     axes,
                 };
-                stmts(&mut p.body, &cx, diags);
+                let mut hidden = Vec::new();
+                stmts(&mut p.body, &cx, &mut hidden, diags);
+                if !hidden.is_empty() {
+                    p.var_blocks.push(VarBlock {
+                        name: None,
+                        kind: VarKind::Local,
+                        constant: false,
+                        retain: false,
+                        vars: hidden,
+                        span: p.name.span,
+                    });
+                }
             }
         }
     }
@@ -122,9 +146,10 @@ struct Cx<'a> {
     axes: &'a AxisConfig,
 }
 
-fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
+fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut Diagnostics) {
     let inst = cx.inst;
-    for s in body {
+    let mut after: Vec<(usize, Vec<IlStmt>)> = Vec::new();
+    for (k, s) in body.iter_mut().enumerate() {
         let IlStmt::Instr(i) = s else { continue };
         match &mut i.kind {
             InstrKind::Simple {
@@ -136,14 +161,20 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
                 if let Some(o) = o {
                     operand(o, inst, diags);
                 }
-                stmts(body, cx, diags);
+                stmts(body, cx, hidden, diags);
             }
-            InstrKind::Call { instance, args, .. } => {
+            InstrKind::Call {
+                instance,
+                args,
+                cond,
+            } => {
                 if let (Some(block), true) = (
                     inst.get(&instance.base.key()),
                     instance.accessors.is_empty(),
                 ) {
                     if let CallArgs::Formal(list) = args {
+                        let unconditional = matches!(cond, Condition::Always);
+                        let mut scale = None;
                         list.retain_mut(|a| {
                             let pin = a.name.key();
                             if let Some(new) = spelling(block, &pin) {
@@ -154,6 +185,13 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
                             if pin == "OVERRIDE" && is_hundred(&a.value) {
                                 return false;
                             }
+                            if pin == "OVERRIDE"
+                                && block.eq_ignore_ascii_case("MC_POWER")
+                                && unconditional
+                            {
+                                scale = Some(a.value.clone());
+                                return false;
+                            }
                             match missing(block, &pin) {
                                 Some(what) => {
                                     diags.push(e1041(block, &a.name.name, what, a.name.span));
@@ -162,6 +200,19 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
                                 None => true,
                             }
                         });
+                        if let Some(value) = scale {
+                            let axis = list.iter().find(|a| a.name.key() == "AXIS");
+                            if let Some(axis) = axis {
+                                let (decls, code) =
+                                    crate::tc2_override::set_override(instance, &axis.value, value);
+                                for d in decls {
+                                    if !hidden.iter().any(|h| h.name.key() == d.name.key()) {
+                                        hidden.push(d);
+                                    }
+                                }
+                                after.push((k + 1, code));
+                            }
+                        }
                         axis_defaults(block, list, instance.span, cx);
                     }
                 } else {
@@ -182,12 +233,29 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
             _ => {}
         }
     }
+    for (at, code) in after.into_iter().rev() {
+        body.splice(at..at, code);
+    }
 }
 
 fn operand(o: &mut Operand, inst: &HashMap<String, String>, diags: &mut Diagnostics) {
     if let Operand::Var(v) = o {
         enum_value(v);
         var(v, inst, diags);
+    }
+}
+
+/// The qualified enumeration values of an initialiser (see [`enum_value`]).
+fn init_enum_values(init: Option<&mut Initializer>) {
+    match init {
+        Some(Initializer::Value(Operand::Var(v))) => enum_value(v),
+        Some(Initializer::Array(es, _)) => es
+            .iter_mut()
+            .for_each(|e| init_enum_values(Some(&mut e.value))),
+        Some(Initializer::Struct(fs, _)) => fs
+            .iter_mut()
+            .for_each(|(_, i)| init_enum_values(Some(i))),
+        _ => {}
     }
 }
 
