@@ -20,7 +20,8 @@
 //! and plans the stop, which may then pass the target and come back). Acceleration and
 //! Deceleration left out or 0 take the axis's configured limits. The distance is computed from
 //! the set position when the command is issued, so with `MC_Buffered` it is measured from where
-//! the axis is then, not from the end of the move before.
+//! the axis is then, not from the end of the move before. A position within 1e-9 periods of the
+//! target counts as the target (the rounding of a full turn is no distance).
 
 use diagnostics::Diagnostics;
 use il_frontend::ast::{CompilationUnit, LibraryElement, TypeRef};
@@ -107,6 +108,10 @@ IF bStart THEN
         END_IF
         IF fFwd >= fPeriod THEN
             fFwd := fFwd - fPeriod;
+        END_IF
+        (* the rounding of a full turn (89.99999999999994 for 90) is no distance *)
+        IF fFwd < fPeriod * 1.0E-9 OR fFwd > fPeriod * (1.0 - 1.0E-9) THEN
+            fFwd := 0.0;
         END_IF
         IF fFwd = 0.0 THEN
             fBack := 0.0;

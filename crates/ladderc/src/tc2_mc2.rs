@@ -112,6 +112,13 @@ pub fn read_spellings(
                     TypeRef::Named(t) => lib
                         .get(&t.name)
                         .map(|tpl| (v.name.key(), tpl.block.clone())),
+                    // `aPower : ARRAY [1..2] OF MC_Power`, called `aPower[i](...)`
+                    TypeRef::Array { element, .. } => match &**element {
+                        TypeRef::Named(t) => lib
+                            .get(&t.name)
+                            .map(|tpl| (v.name.key(), tpl.block.clone())),
+                        _ => None,
+                    },
                     _ => None,
                 })
                 .collect();
@@ -168,10 +175,11 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                 args,
                 cond,
             } => {
-                if let (Some(block), true) = (
-                    inst.get(&instance.base.key()),
-                    instance.accessors.is_empty(),
-                ) {
+                let element = instance
+                    .accessors
+                    .iter()
+                    .all(|a| matches!(a, Accessor::Index(_)));
+                if let (Some(block), true) = (inst.get(&instance.base.key()), element) {
                     if let CallArgs::Formal(list) = args {
                         let unconditional = matches!(cond, Condition::Always);
                         let mut scale = None;
@@ -283,7 +291,12 @@ fn var(v: &mut VarRef, inst: &HashMap<String, String>, diags: &mut Diagnostics) 
     let Some(block) = inst.get(&v.base.key()) else {
         return;
     };
-    if let Some(Accessor::Field(f)) = v.accessors.first_mut() {
+    // `aPower[i].Active`: the pin after the element's subscript
+    let pin = v
+        .accessors
+        .iter_mut()
+        .find(|a| !matches!(a, Accessor::Index(_)));
+    if let Some(Accessor::Field(f)) = pin {
         let pin = f.key();
         if let Some(new) = spelling(block, &pin) {
             f.name = new.to_string();

@@ -1,0 +1,198 @@
+//! Beckhoff Tc2_MC2 motion as real TwinCAT projects use it, the rest (issue #13), run end to end
+//! through `ladderc run` (C built with the sanitizers): several `AXIS_REF`s, each its own
+//! simulated axis linked from the axes file (`crates/ladderc/src/axis_links.rs`, E1056, E1057);
+//! MC_MoveModulo (`tc2_blocks.rs`); MC_Power's `Override` (`tc2_override.rs`); a block input
+//! written as an expression (`block_temps.rs`). The fixtures under `fixtures/tc2_mc2_more/` are
+//! written for these tests (README there).
+//!
+//! Record of the public projects tried (snapshots of 2026-12-04, axes file with the project's
+//! axis names): MatheusNespolo/TwinCAT `Motion-Control/MotionControl` (GVL_Axes.Axis1/Axis2,
+//! MC_MoveModulo, `Override := lrOverride_Eixo2`, `Execute := ResetaEixo AND
+//! GVL_Axes.Axis1.Status.Error`): before 14 errors (E1002 x2: the GVL's axes declared again by the
+//! axes file, E1003 MC_MoveModulo, E1041 Override, E1001 x10 cascading), then, once checked, the C
+//! compiler failing on the expression input; after: runs.
+
+mod common;
+use common::{column, ladderc, run_traced_files};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/tc2_mc2_more")
+        .join(rel)
+}
+
+const EPS: f64 = 1e-9;
+
+/// Every value of `v` within `[lo, hi]` (with rounding room).
+fn within(v: &[f64], lo: f64, hi: f64) -> bool {
+    v.iter().all(|&x| x >= lo - 1e-6 && x <= hi + 1e-6)
+}
+
+/// The TwinCAT project `Cell`: two axes of a global variable list (named like the axes of the
+/// axes file), an axis inside each of two FB_Station instances and the two elements of an
+/// `ARRAY [1..2] OF AXIS_REF` (linked with `"link"`). Each moves on its own, as commanded, within
+/// its own limits.
+#[test]
+fn every_axis_ref_instance_is_its_own_axis_with_its_own_limits() {
+    let axes = ["Axis1", "Axis2", "StationA", "StationB", "Table1", "Table2"];
+    let mut watch: Vec<String> = Vec::new();
+    for a in axes {
+        for q in ["position", "velocity", "acceleration"] {
+            watch.push(format!("axis.{a}.{q}"));
+        }
+    }
+    watch.push("MAIN.fbTurn1.Done".into());
+    watch.push("MAIN.fbTurn2.Done".into());
+    let (trace, stderr) =
+        run_traced_files(&[&fixture("Cell.plcproj")], 250, &watch.join(","));
+    assert!(!stderr.contains("error"), "{stderr}");
+    let col = |a: &str, q: &str| column(&trace, &format!("axis.{a}.{q}"));
+    let last = |a: &str| *col(a, "position").last().unwrap();
+    // where each ends: its own command, not another axis's
+    assert!((last("Axis1") - 100.0).abs() < EPS, "{}", last("Axis1"));
+    assert!((last("Axis2") + 50.0).abs() < EPS, "{}", last("Axis2"));
+    assert!((last("StationA") - 30.0).abs() < EPS);
+    assert!((last("StationB") - 70.0).abs() < EPS);
+    assert!((last("Table1") - 90.0).abs() < 1e-6, "{}", last("Table1"));
+    assert!((last("Table2") - 270.0).abs() < 1e-6, "{}", last("Table2"));
+    // the limits of each axis hold; asked 500 mm/s, Axis1 runs at its 200, Axis2 at its 100
+    for (a, v, acc) in [
+        ("Axis1", 200.0, 1000.0),
+        ("Axis2", 100.0, 500.0),
+        ("StationA", 150.0, 1500.0),
+        ("StationB", 250.0, 2500.0),
+        ("Table1", 720.0, 3600.0),
+        ("Table2", 180.0, 1800.0),
+    ] {
+        assert!(within(&col(a, "velocity"), -v, v), "{a} velocity");
+        assert!(within(&col(a, "acceleration"), -acc, acc), "{a} acceleration");
+    }
+    let peak = |a: &str| col(a, "velocity").iter().fold(0.0f64, |m, &x| m.max(x.abs()));
+    assert!((peak("Axis1") - 200.0).abs() < EPS && (peak("Axis2") - 100.0).abs() < EPS);
+    // Table1: MC_MoveModulo to 450 deg, MC_Positive_Direction: one full turn and 90 deg, forward
+    let t1 = col("Table1", "position");
+    assert!(col("Table1", "velocity").iter().all(|&v| v >= 0.0));
+    assert_eq!(t1.windows(2).filter(|w| w[1] < w[0]).count(), 1, "one wrap");
+    // Table2: MC_Shortest_Way to 270 deg from 0: 90 deg back
+    assert!(col("Table2", "velocity").iter().all(|&v| v <= 0.0));
+    assert_eq!(column(&trace, "MAIN.fbTurn1.Done").last(), Some(&1.0));
+    assert_eq!(column(&trace, "MAIN.fbTurn2.Done").last(), Some(&1.0));
+}
+
+/// MC_MoveModulo's rules (Infosys, Tc2_MC2 > MC_MoveModulo): from standstill 450 deg forward is
+/// one turn and 90 deg; 90 deg from 90 deg is no motion; 450 deg backward from 90 deg one turn
+/// back; started while the axis turns forward, MC_Negative_Direction cannot reverse it: it stops
+/// at 10 deg going forward. On an axis without a modulo period: Error, ErrorID 24, no motion.
+#[test]
+fn mc_move_modulo_turns_as_tc2_mc2_documents() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Turn.st")],
+        450,
+        "MAIN.nState,MAIN.mm.Done,MAIN.mmL.Error,MAIN.mmL.ErrorID,axis.T.position,\
+         axis.T.velocity,axis.T.acceleration,axis.L.position",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let state = column(&trace, "MAIN.nState");
+    let pos = column(&trace, "axis.T.position");
+    let vel = column(&trace, "axis.T.velocity");
+    let from = |s: f64| state.iter().position(|&x| x == s).unwrap();
+    let (s2, s3, s4, s5, s6) = (from(2.0), from(3.0), from(4.0), from(5.0), from(6.0));
+    // limits: 360 deg/s (720 asked), 3600 up, 1800 down
+    assert!(within(&vel, -360.0, 360.0));
+    assert!(within(&column(&trace, "axis.T.acceleration"), -3600.0, 3600.0));
+    assert!(vel.iter().any(|&v| (v - 360.0).abs() < EPS));
+    // 1: forward, one wrap, at 90
+    assert!(vel[..s2].iter().all(|&v| v >= 0.0));
+    assert_eq!(pos[..s2].windows(2).filter(|w| w[1] < w[0]).count(), 1);
+    assert!((pos[s2 - 1] - 90.0).abs() < 1e-6, "{}", pos[s2 - 1]);
+    // 2: 90 from 90: Done with no motion
+    assert!(s3 - s2 <= 3, "{s2}..{s3}");
+    assert!(pos[s2..s3].iter().all(|&p| (p - pos[s2 - 1]).abs() < 1e-6));
+    // 3: backward one full turn (about 1 s at 360 deg/s), at 90 again
+    assert!(vel[s3..s4].iter().all(|&v| v <= 0.0));
+    assert!(vel[s3..s4].iter().any(|&v| (v + 360.0).abs() < EPS));
+    assert_eq!(pos[s3..s4].windows(2).filter(|w| w[1] > w[0]).count(), 1);
+    assert!((pos[s4 - 1] - 90.0).abs() < 1e-6);
+    assert!((100..=130).contains(&(s4 - s3)), "{s3}..{s4}");
+    // 5: started while turning forward: stays forward, stops at 10
+    assert!(vel[s5..s6].iter().all(|&v| v >= 0.0));
+    assert!(vel[s5] > 0.0);
+    assert!((pos.last().unwrap() - 10.0).abs() < 1e-6);
+    assert_eq!(*vel.last().unwrap(), 0.0);
+    // the linear axis refuses, and does not move
+    assert!(column(&trace, "MAIN.mmL.Error")[1..].iter().all(|&e| e == 1.0));
+    assert!(column(&trace, "MAIN.mmL.ErrorID")[1..]
+        .iter()
+        .all(|&e| e == 24.0));
+    assert!(column(&trace, "axis.L.position").iter().all(|&p| p == 0.0));
+}
+
+/// MC_Power's `Override` (percent, 0..100) scales the running move: 100 % runs at the commanded
+/// 100 mm/s, 50 % at 50, 150 % is limited to 100 %, 0 % brakes to standstill; each change is a
+/// transition within the axis's acceleration (500 mm/s²) and jerk (5000 mm/s³) limits.
+#[test]
+fn mc_power_override_scales_the_moves_within_the_limits() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Override.st")],
+        400,
+        "MAIN.ovr,axis.X.velocity,axis.X.acceleration",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let v = column(&trace, "axis.X.velocity");
+    let a = column(&trace, "axis.X.acceleration");
+    assert!((v[95] - 100.0).abs() < EPS, "{}", v[95]);
+    assert!((v[195] - 50.0).abs() < EPS, "{}", v[195]);
+    assert!((v[295] - 100.0).abs() < EPS, "{}", v[295]);
+    assert!(v[350..].iter().all(|&x| x == 0.0));
+    // the transitions: from 100 to 50 takes time (no step), and the limits hold throughout
+    assert!(v[100] > 50.0 + 1.0 && v[100] < 100.0);
+    assert!(within(&v, 0.0, 100.0));
+    assert!(within(&a, -500.0, 500.0));
+    let jerk: Vec<f64> = a.windows(2).map(|w| (w[1] - w[0]) / 0.01).collect();
+    assert!(within(&jerk, -5000.0, 5000.0), "jerk");
+    let dv: Vec<f64> = v.windows(2).map(|w| (w[1] - w[0]) / 0.01).collect();
+    assert!(within(&dv, -500.0, 500.0));
+}
+
+/// An `AXIS_REF` without an axis is one located E1056 per declaration, a `"link"` that names no
+/// `AXIS_REF` one E1057 at the path in the axes file.
+#[test]
+fn axis_refs_without_an_axis_and_bad_links_are_located_diagnostics() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("two.st");
+    std::fs::write(
+        &src,
+        "FUNCTION_BLOCK FB_Station\nVAR\n  Axis : AXIS_REF;\n  pw : MC_Power;\nEND_VAR\n\
+         pw(Axis := Axis, Enable := TRUE);\nEND_FUNCTION_BLOCK\n\
+         PROGRAM MAIN\nVAR\n  stA : FB_Station;\n  stB : FB_Station;\n\
+         \x20 aAxes : ARRAY[1..3] OF AXIS_REF;\nEND_VAR\nstA();\nstB();\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("two.axes.json"),
+        "{ \"axes\": [\n\
+         { \"name\": \"A\", \"velocity\": 10, \"acceleration\": 10, \"deceleration\": 10, \"link\": \"MAIN.stA.Axis\" },\n\
+         { \"name\": \"B\", \"velocity\": 10, \"acceleration\": 10, \"deceleration\": 10, \"link\": \"MAIN.aAxes[2]\" },\n\
+         { \"name\": \"C\", \"velocity\": 10, \"acceleration\": 10, \"deceleration\": 10, \"link\": \"MAIN.stC.Axis\" } ] }\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&src)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let heads = common::diagnostic_heads(&out.stderr, dir.path(), false);
+    assert_eq!(
+        heads,
+        vec![
+            "two.st:11:3: error[E1056]: AXIS_REF `MAIN.stB.Axis` is linked to no axis of the axes file",
+            "two.st:12:3: error[E1056]: AXIS_REF `MAIN.aAxes[1]` (and 1 more AXIS_REF of this declaration) is linked to no axis of the axes file",
+            "two.axes.json:4:80: error[E1057]: axis `C` links `MAIN.stC.Axis`, which is no AXIS_REF of the program",
+        ],
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
