@@ -15,7 +15,12 @@
 mod common;
 use common::{column, ladderc, run_traced_files};
 
+use serde_json::{json, Value};
+use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
+use std::process::{Child, ChildStdin, Stdio};
+use std::sync::mpsc::{channel, Receiver};
+use std::time::Duration;
 
 fn fixture(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -195,4 +200,199 @@ fn axis_refs_without_an_axis_and_bad_links_are_located_diagnostics() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+// ---------------------------------------------------------------- the language server
+
+/// A scripted editor over `ladderc lsp`'s JSON-RPC (as in `lsp.rs`).
+struct Client {
+    child: Child,
+    stdin: ChildStdin,
+    messages: Receiver<Value>,
+    next_id: i64,
+}
+
+impl Client {
+    fn start(root: &std::path::Path) -> Client {
+        let mut child = common::ladderc()
+            .arg("lsp")
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .unwrap();
+        let stdin = child.stdin.take().unwrap();
+        let stdout = child.stdout.take().unwrap();
+        let (tx, rx) = channel();
+        std::thread::spawn(move || {
+            let mut r = BufReader::new(stdout);
+            loop {
+                let mut len = 0usize;
+                loop {
+                    let mut line = String::new();
+                    if r.read_line(&mut line).unwrap_or(0) == 0 {
+                        return;
+                    }
+                    let line = line.trim_end();
+                    if line.is_empty() {
+                        break;
+                    }
+                    if let Some(v) = line.strip_prefix("Content-Length: ") {
+                        len = v.parse().unwrap();
+                    }
+                }
+                let mut body = vec![0u8; len];
+                if r.read_exact(&mut body).is_err() {
+                    return;
+                }
+                if tx.send(serde_json::from_slice(&body).unwrap()).is_err() {
+                    return;
+                }
+            }
+        });
+        let mut c = Client {
+            child,
+            stdin,
+            messages: rx,
+            next_id: 1,
+        };
+        let uri = format!("file://{}", root.display());
+        let init = c.request(
+            "initialize",
+            json!({"processId": null, "rootUri": uri, "capabilities": {},
+                   "workspaceFolders": [{"uri": uri, "name": "w"}]}),
+        );
+        assert!(init["capabilities"]["hoverProvider"].as_bool().unwrap());
+        c.notify("initialized", json!({}));
+        c
+    }
+
+    fn send(&mut self, v: Value) {
+        let body = v.to_string();
+        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
+        self.stdin.flush().unwrap();
+    }
+
+    fn notify(&mut self, method: &str, params: Value) {
+        self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
+    }
+
+    fn next(&mut self) -> Value {
+        self.messages
+            .recv_timeout(Duration::from_secs(60))
+            .expect("the server answers")
+    }
+
+    fn request(&mut self, method: &str, params: Value) -> Value {
+        let id = self.next_id;
+        self.next_id += 1;
+        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
+        loop {
+            let m = self.next();
+            if m["id"] == json!(id) {
+                assert!(m.get("error").is_none(), "{m}");
+                return m["result"].clone();
+            }
+        }
+    }
+
+    fn diagnostics(&mut self) -> Value {
+        loop {
+            let m = self.next();
+            if m["method"] == "textDocument/publishDiagnostics" {
+                return m["params"].clone();
+            }
+        }
+    }
+}
+
+
+const TC2_DOC: &str = "VAR_GLOBAL\n    Axis1 : AXIS_REF;\nEND_VAR\nPROGRAM MAIN\nVAR\n    fbPower : MC_Power;\n    fbTurn : Tc2_MC2.MC_MoveModulo;\nEND_VAR\n\
+fbPower(Axis := Axis1, Enable := TRUE, Enable_Positive := TRUE, Enable_Negative := TRUE, Override := 50.0);\n\
+fbTurn(Axis := Axis1, Execute := fbPower.Status, Position := 90.0, Velocity := 100.0,\n\
+    Direction := MC_Direction.MC_Shortest_Way);\nEND_PROGRAM\n";
+
+fn labels(items: &Value) -> Vec<String> {
+    items
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|i| i["label"].as_str().unwrap().to_string())
+        .collect()
+}
+
+/// The language server treats the Tc2_MC2 spellings as `ladderc check` does: no diagnostic for
+/// `Enable_Positive`, `Override`, MC_MoveModulo, a qualified MC_Direction value or a global
+/// `AXIS_REF` named like an axis (before: E1011, E1003, E1002); hover lists the Tc2_MC2 inputs and
+/// MC_MoveModulo's interface; completion offers them, and the members of a Tc2_MC2 `AXIS_REF`.
+#[test]
+fn the_language_server_reads_tc2_mc2_as_the_command_line_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cell.st");
+    std::fs::write(&path, TC2_DOC).unwrap();
+    std::fs::write(
+        dir.path().join("cell.axes.json"),
+        "{ \"axes\": [ { \"name\": \"Axis1\", \"velocity\": 100, \"acceleration\": 1000, \
+         \"deceleration\": 1000, \"modulo_period\": 360 } ] }",
+    )
+    .unwrap();
+    // the command line accepts it
+    let out = ladderc().arg("check").arg(&path).output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let uri = format!("file://{}", path.display());
+    let mut c = Client::start(dir.path());
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": uri, "languageId": "iec-st", "version": 1, "text": TC2_DOC}}),
+    );
+    let d = c.diagnostics();
+    assert_eq!(d["diagnostics"], json!([]), "{d}");
+    // hover on the declarations of fbPower (line 6) and fbTurn (line 7)
+    let hover = |c: &mut Client, line: u32| {
+        let h = c.request(
+            "textDocument/hover",
+            json!({"textDocument": {"uri": uri}, "position": {"line": line, "character": 6}}),
+        );
+        h["contents"]["value"].as_str().unwrap().to_string()
+    };
+    let md = hover(&mut c, 5);
+    assert!(md.contains("`Enable_Positive` : `BOOL`"), "{md}");
+    assert!(md.contains("`Override` : `LREAL`"), "{md}");
+    let md = hover(&mut c, 6);
+    assert!(md.contains("FUNCTION_BLOCK `MC_MoveModulo`"), "{md}");
+    assert!(md.contains("`Direction` : `USINT` (VAR_INPUT)"), "{md}");
+    // completion: in `fbPower(`, after `Axis1.`, after `Axis1.Status.` and `Axis1.NcToPlc.`
+    let edited = TC2_DOC.replace(
+        "END_PROGRAM",
+        "fbPower(\nAxis1.\nAxis1.Status.\nAxis1.NcToPlc.\nEND_PROGRAM",
+    );
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": uri, "version": 2}, "contentChanges": [{"text": edited}]}),
+    );
+    let _ = c.diagnostics();
+    let mut complete = |line: u32, character: u32| {
+        let items = c.request(
+            "textDocument/completion",
+            json!({"textDocument": {"uri": uri}, "position": {"line": line, "character": character}}),
+        );
+        labels(&items)
+    };
+    let l = complete(11, 8);
+    assert!(
+        l.contains(&"Enable_Positive :=".to_string()) && l.contains(&"Override :=".to_string()),
+        "{l:?}"
+    );
+    let l = complete(12, 6);
+    assert_eq!(l, ["ReadStatus", "Status", "NcToPlc"]);
+    let l = complete(13, 13);
+    assert!(
+        l.contains(&"StandStill".to_string()) && l.contains(&"Moving".to_string()),
+        "{l:?}"
+    );
+    let l = complete(14, 14);
+    assert_eq!(l, ["ActPos", "SetPos", "ActVelo", "SetVelo"]);
+    let _ = c.request("shutdown", json!(null));
+    c.notify("exit", json!(null));
+    assert!(c.child.wait().unwrap().success());
 }

@@ -307,6 +307,19 @@ fn var(v: &mut VarRef, inst: &HashMap<String, String>, diags: &mut Diagnostics) 
     }
 }
 
+/// The Tc2_MC2 inputs of `block` that ladderc reads, with their types, for the language server:
+/// the spellings of its own pins and MC_Power's `Override` (percent).
+pub fn tc2_pins(block: &str) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {
+    const PINS: &[(&str, &str, &str)] = &[
+        ("MC_POWER", "Enable_Positive", "BOOL"),
+        ("MC_POWER", "Enable_Negative", "BOOL"),
+        ("MC_POWER", "Override", "LREAL"),
+    ];
+    PINS.iter()
+        .filter(move |(b, _, _)| b.eq_ignore_ascii_case(block))
+        .map(|(_, p, t)| (*p, *t))
+}
+
 fn spelling(block: &str, pin: &str) -> Option<&'static str> {
     SPELLINGS
         .iter()
