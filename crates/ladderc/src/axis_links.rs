@@ -9,11 +9,13 @@
 //! `AXIS_REF`s have no axis, one E1057 per `"link"` that names no `AXIS_REF` of the program.
 //! Invariants: two instances are never silently the same axis; `VAR_IN_OUT`, `VAR_EXTERNAL`,
 //! references and pointers are not instances (they name one); an instance whose declaration
-//! already gives `AxisNo` keeps it.
+//! already gives `AxisNo` keeps it; an `AXIS_REF` whose name no body of the program uses (a field
+//! of an HMI structure that only mirrors an axis) is no axis and needs no link.
 //!
 //! The link, as TwinCAT's System Manager keeps it for an NC axis, is one of (in this order):
 //! the axis's `"link"` key, the instance path (`GVL_Axes.Axis1`, `Axis1` for a global,
-//! `MAIN.fbStation.Axis`, `MAIN.aAxes[2]`); a global `AXIS_REF` named like the axis; and, when
+//! `MAIN.fbStation.Axis`, `MAIN.aAxes[2]`); a global `AXIS_REF` named like the axis; a program's
+//! `AXIS_REF` named like the axis when no other declaration has its name; and, when
 //! the axes file has one axis and the program one `AXIS_REF` instance, those two (there is
 //! nothing to choose). Anything else is E1056: a demanding user wants to hear that an axis is
 //! missing rather than find two axes of the machine moving as one.
@@ -21,11 +23,12 @@
 use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
-    ArrayInitElement, CompilationUnit, Ident, Initializer, LibraryElement, Literal, LiteralKind,
-    Operand, PouKind, TypeDef, TypeRef, VarDecl, VarKind,
+    Accessor, ArrayInitElement, CallArgs, CompilationUnit, Ident, IlStmt, Initializer, InstrKind,
+    LibraryElement, Literal, LiteralKind, Op, Operand, PouKind, TypeDef, TypeRef, VarDecl, VarKind,
+    VarRef,
 };
 use il_frontend::Span;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// Where the `AXIS_REF`s are inside a declared type.
 #[derive(Clone)]
@@ -162,9 +165,100 @@ struct Root {
     leaves: Vec<Leaf>,
 }
 
+/// Every name the program's bodies use: variables, fields and pins (upper case).
+fn used_names(units: &[CompilationUnit]) -> HashSet<String> {
+    fn var(v: &VarRef, out: &mut HashSet<String>) {
+        out.insert(v.base.key());
+        for a in v.accessors.iter() {
+            match a {
+                Accessor::Field(f) => {
+                    out.insert(f.key());
+                }
+                Accessor::Index(ops) => ops.iter().for_each(|o| operand(o, out)),
+                Accessor::Deref(_) => {}
+            }
+        }
+    }
+    fn operand(o: &Operand, out: &mut HashSet<String>) {
+        if let Operand::Var(v) = o {
+            var(v, out);
+        }
+    }
+    fn args(a: &CallArgs, out: &mut HashSet<String>) {
+        match a {
+            CallArgs::Formal(list) => list.iter().for_each(|a| operand(&a.value, out)),
+            CallArgs::NonFormal(ops) => ops.iter().for_each(|o| operand(o, out)),
+            CallArgs::None => {}
+        }
+    }
+    fn body(b: &[IlStmt], out: &mut HashSet<String>) {
+        for s in b {
+            let IlStmt::Instr(i) = s else { continue };
+            match &i.kind {
+                // `stHMI_Out.stYRef := Y_Ref`: the target is a copy of an axis, not an axis
+                InstrKind::Simple {
+                    op: Op::St,
+                    operand: Some(Operand::Var(v)),
+                    ..
+                } => {
+                    let mut v = v.clone();
+                    let mut rest = v.accessors.to_vec();
+                    if matches!(rest.last(), Some(Accessor::Field(_))) {
+                        rest.pop();
+                        v.accessors = rest.into();
+                        var(&v, out);
+                    }
+                }
+                InstrKind::Simple {
+                    operand: Some(o), ..
+                } => operand(o, out),
+                InstrKind::Deferred {
+                    operand: o, body: b, ..
+                } => {
+                    if let Some(o) = o {
+                        operand(o, out);
+                    }
+                    body(b, out);
+                }
+                InstrKind::Call {
+                    instance, args: a, ..
+                } => {
+                    var(instance, out);
+                    args(a, out);
+                }
+                InstrKind::FunctionCall { args: a, .. } => args(a, out),
+                InstrKind::FbInput { instance, .. } => var(instance, out),
+                _ => {}
+            }
+        }
+    }
+    let mut out = HashSet::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        match item {
+            LibraryElement::Pou(p) => body(&p.body, &mut out),
+            LibraryElement::Action(a) => body(&a.body, &mut out),
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The name a leaf is written with last: `MAIN.fbStation.Axis` -> `AXIS`, `MAIN.aAxes[2]` -> `AAXES`.
+fn last_name(path: &str) -> String {
+    let end = path.find('[').map_or(path, |i| &path[..i]);
+    let end = if path.ends_with(']') {
+        // an element: the array's name, before its subscript
+        &path[..path.rfind('[').unwrap_or(path.len())]
+    } else {
+        end
+    };
+    end.rsplit('.').next().unwrap_or(end).to_ascii_uppercase()
+}
+
 /// Links the program's `AXIS_REF` instances to the axes of `axes` (see the module header).
 pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Diagnostics) {
     let mut roots = Vec::new();
+    let used = used_names(units);
     {
         let types = Types::new(units);
         for (u, unit) in units.iter().enumerate() {
@@ -197,8 +291,12 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
                         }
                         let mut out = Vec::new();
                         leaves(&shape, &prefixes[0], &mut Vec::new(), &mut out);
-                        // an `AxisNo` written in the declaration is the user's own link
-                        out.retain(|l| !gives_axis_no(var.init.as_ref(), &l.steps));
+                        // an `AxisNo` written in the declaration is the user's own link; an
+                        // AXIS_REF the program never names is no axis (a structure's copy of one)
+                        out.retain(|l| {
+                            !gives_axis_no(var.init.as_ref(), &l.steps)
+                                && used.contains(&last_name(&l.path))
+                        });
                         if !out.is_empty() {
                             roots.push(Root {
                                 at: (u, i, b, v),
@@ -273,6 +371,28 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
         };
         axes.axes[k].declared_by_program = true;
         if !taken[k] && !chosen.contains_key(&(r, 0)) {
+            chosen.insert((r, 0), k);
+            taken[k] = true;
+        }
+    }
+    // a program's own AXIS_REF named like an axis, when no other declaration has that name
+    for (r, root) in roots.iter().enumerate() {
+        if root.global || root.leaves.len() != 1 || !root.leaves[0].steps.is_empty() {
+            continue;
+        }
+        let alone = roots
+            .iter()
+            .filter(|o| o.name.key() == root.name.key())
+            .count()
+            == 1;
+        let Some(k) = axes
+            .axes
+            .iter()
+            .position(|a| a.name.eq_ignore_ascii_case(&root.name.name))
+        else {
+            continue;
+        };
+        if alone && !taken[k] && !chosen.contains_key(&(r, 0)) {
             chosen.insert((r, 0), k);
             taken[k] = true;
         }
