@@ -74,6 +74,11 @@ fn every_axis_ref_instance_is_its_own_axis_with_its_own_limits() {
         assert!(within(&col(a, "velocity"), -v, v), "{a} velocity");
         assert!(within(&col(a, "acceleration"), -acc, acc), "{a} acceleration");
     }
+    // Acceleration and Deceleration left out: each station's own configured limits (Tc2_MC2: "the
+    // standard acceleration from the axis configuration"), though both run one FB_Station's code
+    assert!(col("StationA", "acceleration").contains(&1500.0));
+    assert!(col("StationB", "acceleration").contains(&2500.0));
+    assert!(col("StationB", "acceleration").contains(&-2500.0));
     let peak = |a: &str| col(a, "velocity").iter().fold(0.0f64, |m, &x| m.max(x.abs()));
     assert!((peak("Axis1") - 200.0).abs() < EPS && (peak("Axis2") - 100.0).abs() < EPS);
     // Table1: MC_MoveModulo to 450 deg, MC_Positive_Direction: one full turn and 90 deg, forward

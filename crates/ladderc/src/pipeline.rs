@@ -736,7 +736,7 @@ impl Session {
         let uses_blocks = uses_library_blocks(&user, &library);
         if uses_blocks {
             crate::axis_links::link(&mut user, &mut axes, &mut self.diags);
-            crate::tc2_mc2::read_spellings(&mut user, &library, &axes, &mut self.diags);
+            crate::tc2_mc2::read_spellings(&mut user, &library, &mut axes, &mut self.diags);
             crate::block_temps::keep(&mut user, &library);
         }
         let cycle_ms = match (axes.cycle_ms, opts.cycle_ms) {

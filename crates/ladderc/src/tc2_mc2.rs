@@ -10,20 +10,23 @@
 //! Tc2_MC2 also lets a motion block's `Acceleration` and `Deceleration` be left out or 0: "the
 //! standard acceleration from the axis configuration is applied" (Infosys, MC_MoveAbsolute,
 //! MC_MoveVelocity, MC_Halt, MC_Stop inputs). ladderc's counterpart of that configuration is the
-//! axes file, so such an input is bound to the configured limit of the axis the call names (a
-//! global axis of the axes file, or axis 0 for a local `AXIS_REF`, whose `AxisNo` is 0). Without an
-//! axes file the input stays unbound (E4023, as before).
+//! axes file, so such an input is bound to the configured limit of the axis the call names, read
+//! when the block runs from a table of the axes' limits by the `AxisNo` of the call's `Axis`
+//! (`__TC2_ACC[Axis.AxisNo]`): an `AXIS_REF` inside a function block is another axis in each
+//! instance ([`crate::axis_links`]). Without an axes file the input stays unbound (E4023, as before).
 //!
 //! Per Beckhoff Infosys (Tc2_MC2 > Function blocks > Administrative > MC_Power), MC_Power's inputs
 //! are `Enable`, `Enable_Positive`, `Enable_Negative`, `Override` (LREAL percent, default 100.0) and
-//! `BufferMode`; its outputs `Status`, `Busy`, `Active`, `Error`, `ErrorID`. `Options` of the motion
-//! blocks (`ST_*Options`) and MC_Power's `Busy`/`Active` have no counterpart in ladderc's axis.
+//! `BufferMode`; its outputs `Status`, `Busy`, `Active`, `Error`, `ErrorID`. `Override` becomes a
+//! hidden MC_SetOverride call after the MC_Power call ([`crate::tc2_override`]). `Options` of the
+//! motion blocks (`ST_*Options`) and MC_Power's `Busy`/`Active` have no counterpart in ladderc's
+//! axis. An array of block instances (`aPower[i](...)`) is read like one instance.
 
 use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
     Accessor, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt, Initializer, InstrKind,
-    LibraryElement, Literal, LiteralKind, Operand, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
+    LibraryElement, LiteralKind, Operand, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
 };
 use param_passing::library::Library;
 use std::collections::HashMap;
@@ -64,12 +67,14 @@ const NO_COUNTERPART: &[(&str, &str, &str)] = &[
 ];
 
 /// Renames the Tc2_MC2 spellings in every POU of `units`; reports E1041 for pins with no counterpart.
+/// Sets `axes.tc2_tables` when a default reads the tables of the axes' limits.
 pub fn read_spellings(
     units: &mut [CompilationUnit],
     lib: &Library,
-    axes: &AxisConfig,
+    axes: &mut AxisConfig,
     diags: &mut Diagnostics,
 ) {
+    let tables = std::cell::Cell::new(false);
     let mut globals = crate::tc2_axis_ref::Axes {
         names: Vec::new(),
         lists: Vec::new(),
@@ -127,6 +132,7 @@ pub fn read_spellings(
                     inst: &instances,
                     lib,
                     axes,
+                    tables: &tables,
                 };
                 let mut hidden = Vec::new();
                 stmts(&mut p.body, &cx, &mut hidden, diags);
@@ -143,6 +149,7 @@ pub fn read_spellings(
             }
         }
     }
+    axes.tc2_tables |= tables.get();
 }
 
 /// What the walk over a POU's body knows.
@@ -151,6 +158,8 @@ struct Cx<'a> {
     inst: &'a HashMap<String, String>,
     lib: &'a Library,
     axes: &'a AxisConfig,
+    /// A default read the tables of the axes' limits ([`AxisConfig::tc2_tables`]).
+    tables: &'a std::cell::Cell<bool>,
 }
 
 fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut Diagnostics) {
@@ -357,54 +366,48 @@ fn e1041(block: &str, pin: &str, what: &str, span: il_frontend::Span) -> Diagnos
 }
 
 /// Binds a left-out (or literal 0) required `Acceleration` / `Deceleration` to the configured
-/// limit of the call's axis (see the module header).
+/// limit of the call's axis (see the module header): `__TC2_ACC[<axis>.AxisNo]`, the table of the
+/// axes' limits, so that the axis an instance is linked to decides (an `AXIS_REF` inside a
+/// function block is a different axis in each instance).
 fn axis_defaults(block: &str, list: &mut Vec<FormalArg>, at: il_frontend::Span, cx: &Cx) {
     let Some(t) = cx.lib.get(block) else { return };
-    let axis_name = list
+    if cx.axes.axes.is_empty() {
+        return;
+    }
+    let axis = list
         .iter()
         .find(|a| a.name.key() == "AXIS")
         .and_then(|a| match &a.value {
-            Operand::Var(v) => match v.accessors.as_slice() {
-                [] => Some(v.base.key()),
-                // `GVL_Axes.Axis1`: a variable of a global variable list
-                [Accessor::Field(f)] => Some(f.key()),
-                _ => None,
-            },
+            Operand::Var(v) => Some(v.clone()),
             _ => None,
         });
-    let Some(axis_name) = axis_name else { return };
-    let axis = cx
-        .axes
-        .axes
-        .iter()
-        .find(|a| a.name.eq_ignore_ascii_case(&axis_name))
-        // a local AXIS_REF (no configured global of that name) is engine axis 0
-        .or_else(|| cx.axes.axes.first());
     let Some(axis) = axis else { return };
-    for (pin, value) in [
-        ("ACCELERATION", axis.limits.acceleration_limit),
-        ("DECELERATION", axis.limits.deceleration_limit),
-    ] {
+    for (pin, table) in [("ACCELERATION", "__TC2_ACC"), ("DECELERATION", "__TC2_DEC")] {
         let Some(p) = t.params.iter().find(|p| p.name.eq_ignore_ascii_case(pin)) else {
             continue;
         };
         if !p.required {
             continue;
         }
-        let real = |v: f64| {
-            Operand::literal(Literal {
-                kind: LiteralKind::Real(v),
-                type_prefix: None,
+        let limit = || {
+            let mut no = axis.clone();
+            let mut acc = no.accessors.to_vec();
+            acc.push(Accessor::Field(Ident::new("AxisNo", at)));
+            no.accessors = acc.into();
+            cx.tables.set(true);
+            Operand::Var(VarRef {
+                base: Ident::new(table, at),
+                accessors: vec![Accessor::Index(vec![Operand::Var(no)])].into(),
                 span: at,
             })
         };
         match list.iter_mut().find(|a| a.name.key() == pin) {
-            Some(a) if is_zero(&a.value) => a.value = real(value),
+            Some(a) if is_zero(&a.value) => a.value = limit(),
             Some(_) => {}
             None => list.push(FormalArg {
                 name: Ident::new(p.name.clone(), at),
                 dir: ArgDir::Input,
-                value: real(value),
+                value: limit(),
                 span: at,
             }),
         }
