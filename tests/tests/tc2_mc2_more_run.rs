@@ -167,7 +167,8 @@ fn mc_power_override_scales_the_moves_within_the_limits() {
 }
 
 /// An `AXIS_REF` without an axis is one located E1056 per declaration, a `"link"` that names no
-/// `AXIS_REF` one E1057 at the path in the axes file.
+/// `AXIS_REF` one E1057 at the path in the axes file; an `AXIS_REF` the program never names
+/// (`spare`) needs no axis.
 #[test]
 fn axis_refs_without_an_axis_and_bad_links_are_located_diagnostics() {
     let dir = tempfile::tempdir().unwrap();
@@ -177,7 +178,8 @@ fn axis_refs_without_an_axis_and_bad_links_are_located_diagnostics() {
         "FUNCTION_BLOCK FB_Station\nVAR\n  Axis : AXIS_REF;\n  pw : MC_Power;\nEND_VAR\n\
          pw(Axis := Axis, Enable := TRUE);\nEND_FUNCTION_BLOCK\n\
          PROGRAM MAIN\nVAR\n  stA : FB_Station;\n  stB : FB_Station;\n\
-         \x20 aAxes : ARRAY[1..3] OF AXIS_REF;\nEND_VAR\nstA();\nstB();\nEND_PROGRAM\n",
+         \x20 aAxes : ARRAY[1..3] OF AXIS_REF;\n  spare : AXIS_REF;\n  mp : MC_Power;\nEND_VAR\n\
+         stA();\nstB();\nmp(Axis := aAxes[1], Enable := TRUE);\nEND_PROGRAM\n",
     )
     .unwrap();
     std::fs::write(

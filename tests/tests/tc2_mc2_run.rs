@@ -162,7 +162,8 @@ fn mc_direction_chooses_the_way_round_a_modulo_axis() {
 }
 
 /// A Tc2_MC2 pin without a counterpart in ladderc's axis is one located E1041, and nothing else is
-/// said about it (before: E1011 "MC_Power has no parameter"); `Override := 100.0` is accepted.
+/// said about it (before: E1011 "MC_Power has no parameter"); `Override := 100.0` is accepted
+/// (any other override scales the moves: `tc2_mc2_more_run.rs`).
 #[test]
 fn pins_without_a_counterpart_are_one_e1041_each() {
     let dir = tempfile::tempdir().unwrap();
@@ -171,7 +172,7 @@ fn pins_without_a_counterpart_are_one_e1041_each() {
         &src,
         "PROGRAM MAIN\nVAR\n  Axis : AXIS_REF;\n  fbPower : MC_Power;\n  rOvr : LREAL := 50.0;\n\
          \x20 b : BOOL;\nEND_VAR\n\
-         fbPower(Axis := Axis, Enable := TRUE, Enable_Positive := TRUE, Override := rOvr);\n\
+         fbPower(Axis := Axis, Enable := TRUE, Enable_Positive := TRUE, BufferMode := MC_Aborting);\n\
          fbPower(Axis := Axis, Enable := TRUE, Enable_Negative := TRUE, Override := 100.0);\n\
          b := fbPower.Busy;\nEND_PROGRAM\n",
     )
@@ -191,7 +192,7 @@ fn pins_without_a_counterpart_are_one_e1041_each() {
     assert_eq!(
         heads,
         vec![
-            "ovr.st:8:64: error[E1041]: Tc2_MC2's `Override` of MC_Power has no counterpart in ladderc's simulated axis",
+            "ovr.st:8:64: error[E1041]: Tc2_MC2's `BufferMode` of MC_Power has no counterpart in ladderc's simulated axis",
             "ovr.st:10:14: error[E1041]: Tc2_MC2's `Busy` of MC_Power has no counterpart in ladderc's simulated axis",
         ],
         "{}",
