@@ -1,7 +1,7 @@
 //! Beckhoff Tc2_MC2 motion as real TwinCAT projects use it, the rest (issue #13), run end to end
 //! through `ladderc run` (C built with the sanitizers): several `AXIS_REF`s, each its own
 //! simulated axis linked from the axes file (`crates/ladderc/src/axis_links.rs`, E1056, E1057);
-//! MC_MoveModulo (`tc2_blocks.rs`); MC_Power's `Override` (`tc2_override.rs`); a block input
+//! MC_MoveModulo and MC_Jog (`tc2_blocks.rs`); MC_Power's `Override` (`tc2_override.rs`); a block input
 //! written as an expression (`block_temps.rs`). The fixtures under `fixtures/tc2_mc2_more/` are
 //! written for these tests (README there).
 //!
@@ -164,6 +164,44 @@ fn mc_power_override_scales_the_moves_within_the_limits() {
     assert!(within(&jerk, -5000.0, 5000.0), "jerk");
     let dv: Vec<f64> = v.windows(2).map(|w| (w[1] - w[0]) / 0.01).collect();
     assert!(within(&dv, -500.0, 500.0));
+}
+
+/// Tc2_MC2 MC_Jog (Infosys): MC_JOGMODE_CONTINOUS moves while the key is held with the block's
+/// Velocity (80 mm/s), Acceleration (400) and Deceleration (800), and stops when it is released;
+/// MC_JOGMODE_INCHING moves `Position` (5 mm) per rising edge, and an edge while the step runs is
+/// not taken; MC_JOGMODE_STANDARD_SLOW runs at the axis's slow manual velocity (`jog_velocity_slow`,
+/// 20 mm/s) with the axis's dynamics. Done once each jog has stopped; the limits hold.
+#[test]
+fn mc_jog_moves_while_held_and_steps_per_edge() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Jog.st")],
+        400,
+        "MAIN.n,MAIN.fbJog.Busy,MAIN.fbJog.Done,MAIN.fbJog.Error,axis.X.position,\
+         axis.X.velocity,axis.X.acceleration",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let pos = column(&trace, "axis.X.position");
+    let vel = column(&trace, "axis.X.velocity");
+    let acc = column(&trace, "axis.X.acceleration");
+    let busy = column(&trace, "MAIN.fbJog.Busy");
+    let done = column(&trace, "MAIN.fbJog.Done");
+    assert!(column(&trace, "MAIN.fbJog.Error").iter().all(|&e| e == 0.0));
+    assert!(within(&vel, -100.0, 100.0) && within(&acc, -1000.0, 1000.0));
+    // continuous: 80 mm/s while held (scans 11..60), ramps of 400 up and 800 down, then Done
+    assert!((vel[40] - 80.0).abs() < EPS);
+    assert!(within(&acc[..100], -800.0, 400.0));
+    assert!(acc[..100].contains(&400.0) && acc[..100].contains(&-800.0));
+    let first_stop = (60..100).find(|&k| vel[k] == 0.0).unwrap();
+    assert!(first_stop <= 72, "{first_stop}");
+    assert!(busy[first_stop + 2] == 0.0 && done[first_stop + 2] == 1.0);
+    // inching: one step of 5 mm back, the second pulse (during the step) not taken
+    assert!(vel[100..240].iter().all(|&v| v <= 0.0));
+    assert!((pos[240] - (pos[140] - 5.0)).abs() < EPS, "{} {}", pos[140], pos[240]);
+    assert_eq!(done[240], 1.0);
+    // standard slow: 20 mm/s, the axis's 1000 mm/s² (not the block's 400)
+    assert!((vel[280] - 20.0).abs() < EPS);
+    assert!(acc[245..260].contains(&1000.0));
+    assert!(vel[320..].iter().all(|&v| v == 0.0) && done[399] == 1.0);
 }
 
 /// An `AXIS_REF` without an axis is one located E1056 per declaration, a `"link"` that names no

@@ -62,6 +62,12 @@ struct AxisRepr {
     /// The program's `AXIS_REF` this axis drives (`GVL_Axes.Axis1`, `MAIN.fbStation.Axis`).
     #[serde(default)]
     link: Option<String>,
+    /// Tc2_MC2 MC_Jog's "low velocity for manual functions" (default 10 % of `velocity`).
+    #[serde(default)]
+    jog_velocity_slow: Option<f64>,
+    /// Tc2_MC2 MC_Jog's "high velocity for manual functions" (default 50 % of `velocity`).
+    #[serde(default)]
+    jog_velocity_fast: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize)]
@@ -102,6 +108,8 @@ pub struct Axis {
     /// The program declares the global `AXIS_REF` of this name itself (a TwinCAT GVL): the axes
     /// file then declares none ([`AxisConfig::globals_il`]).
     pub declared_by_program: bool,
+    /// MC_Jog's slow and fast manual velocities ([`crate::tc2_blocks`]).
+    pub jog_velocities: (f64, f64),
 }
 
 /// The axis configuration of a project.
@@ -237,9 +245,17 @@ impl AxisConfig {
                 let at = string_span(file, src, l, span.range().start);
                 (l.clone(), at)
             });
+            let jog = (
+                a.jog_velocity_slow.unwrap_or(0.1 * a.velocity),
+                a.jog_velocity_fast.unwrap_or(0.5 * a.velocity),
+            );
+            if !(positive(jog.0) && positive(jog.1)) {
+                diags.push(bad("jog_velocity_slow and jog_velocity_fast must be finite and greater than 0"));
+            }
             axes.push(Axis {
                 link,
                 declared_by_program: false,
+                jog_velocities: jog,
                 name: a.name.clone(),
                 unit: a.unit.clone(),
                 counts_per_unit: a.counts_per_unit,
@@ -357,6 +373,8 @@ impl AxisConfig {
                 ("MODULO", table(&|a| a.limits.modulo_period)),
                 ("ACC", table(&|a| a.limits.acceleration_limit)),
                 ("DEC", table(&|a| a.limits.deceleration_limit)),
+                ("JOGSLOW", table(&|a| a.jog_velocities.0)),
+                ("JOGFAST", table(&|a| a.jog_velocities.1)),
             ] {
                 let _ = writeln!(
                     s,

@@ -1,4 +1,4 @@
-//! Beckhoff Tc2_MC2 blocks that ladderc builds from its PLCopen blocks: `MC_MoveModulo`.
+//! Beckhoff Tc2_MC2 blocks that ladderc builds from its PLCopen blocks: `MC_MoveModulo`, `MC_Jog`.
 //!
 //! Input: the user's parsed units. Output: when a variable of the program has a Tc2_MC2 block
 //! type that ladderc builds (and the program does not declare a POU of that name), one unit with
@@ -22,12 +22,170 @@
 //! the set position when the command is issued, so with `MC_Buffered` it is measured from where
 //! the axis is then, not from the end of the move before. A position within 1e-9 periods of the
 //! target counts as the target (the rounding of a full turn is no distance).
+//!
+//! MC_Jog, per Infosys (Tc2_MC2 > Motion > MC_Jog, E_JogMode): a rising edge of `JogForward` (which
+//! wins over a simultaneous `JogBackwards`) or `JogBackwards` starts a jog, and no edge is taken
+//! until it has ended. MC_JOGMODE_STANDARD_SLOW / _FAST move while the key is held at the axis's
+//! manual velocity (axes file `jog_velocity_slow` / `jog_velocity_fast`, by default 10 % / 50 % of
+//! `velocity`) with the axis's acceleration and deceleration, the block's inputs unused;
+//! MC_JOGMODE_CONTINOUS moves while the key is held with the block's Velocity, Acceleration,
+//! Deceleration and Jerk (0: the axis's); releasing the key halts the axis (MC_Halt), and Done
+//! rises once it stands. MC_JOGMODE_INCHING moves `Position` per edge (MC_MoveRelative).
+//! MC_JOGMODE_INCHING_MODULO is refused (Error, ErrorID 32 InvalidMode): ladderc does not round
+//! the stop position.
 
 use diagnostics::Diagnostics;
 use il_frontend::ast::{CompilationUnit, LibraryElement, TypeRef};
 
-/// The blocks ladderc builds: (name, ST text).
-const BLOCKS: &[(&str, &str)] = &[("MC_MoveModulo", MOVE_MODULO)];
+/// The blocks ladderc builds: (name, ST text, the enumeration type it needs and that type's text).
+const BLOCKS: &[(&str, &str, Option<(&str, &str)>)] = &[
+    ("MC_MoveModulo", MOVE_MODULO, None),
+    ("MC_Jog", JOG, Some(("E_JogMode", JOG_MODE))),
+];
+
+/// Infosys, Tc2_MC2 > Data types > E_JogMode (numbered from 0, as TwinCAT numbers an enumeration).
+const JOG_MODE: &str = "TYPE E_JogMode :
+(
+    MC_JOGMODE_STANDARD_SLOW,
+    MC_JOGMODE_STANDARD_FAST,
+    MC_JOGMODE_CONTINOUS,
+    MC_JOGMODE_INCHING,
+    MC_JOGMODE_INCHING_MODULO
+);
+END_TYPE
+";
+
+const JOG: &str = "FUNCTION_BLOCK MC_Jog
+VAR_IN_OUT
+    Axis : AXIS_REF;
+END_VAR
+VAR_INPUT
+    JogForward : BOOL;
+    JogBackwards : BOOL;
+    Mode : E_JogMode;
+    Position : LREAL;
+    Velocity : LREAL;
+    Acceleration : LREAL;
+    Deceleration : LREAL;
+    Jerk : LREAL;
+END_VAR
+VAR_OUTPUT
+    Done : BOOL;
+    Busy : BOOL;
+    Active : BOOL;
+    CommandAborted : BOOL;
+    Error : BOOL;
+    ErrorID : WORD;
+END_VAR
+VAR
+    fbVel : MC_MoveVelocity;
+    fbHalt : MC_Halt;
+    fbStep : MC_MoveRelative;
+    bFwdLast : BOOL;
+    bBwdLast : BOOL;
+    bFwdEdge : BOOL;
+    bBwdEdge : BOOL;
+    bHeld : BOOL;
+    bGoVel : BOOL;
+    bGoHalt : BOOL;
+    bGoStep : BOOL;
+    nDir : INT;
+    nKind : INT;
+    nAxis : UDINT;
+    nRefused : WORD;
+    eDir : MC_Direction;
+    fVel : LREAL;
+    fAcc : LREAL;
+    fDec : LREAL;
+    fDist : LREAL;
+END_VAR
+bFwdEdge := JogForward AND NOT bFwdLast;
+bBwdEdge := JogBackwards AND NOT bBwdLast;
+bFwdLast := JogForward;
+bBwdLast := JogBackwards;
+IF NOT JogForward AND NOT JogBackwards AND nDir = 0 THEN
+    nRefused := 0;
+END_IF
+(* a new jog only while none runs; JogForward first *)
+IF nDir = 0 AND (bFwdEdge OR bBwdEdge) THEN
+    IF bFwdEdge THEN
+        nDir := 1;
+        eDir := MC_Positive_Direction;
+    ELSE
+        nDir := -1;
+        eDir := MC_Negative_Direction;
+    END_IF
+    nAxis := Axis.AxisNo;
+    fVel := Velocity;
+    fAcc := Acceleration;
+    IF fAcc <= 0.0 THEN
+        fAcc := __TC2_ACC[nAxis];
+    END_IF
+    fDec := Deceleration;
+    IF fDec <= 0.0 THEN
+        fDec := __TC2_DEC[nAxis];
+    END_IF
+    nRefused := 0;
+    Done := FALSE;
+    CommandAborted := FALSE;
+    IF Mode = MC_JOGMODE_STANDARD_SLOW OR Mode = MC_JOGMODE_STANDARD_FAST THEN
+        nKind := 1;
+        IF Mode = MC_JOGMODE_STANDARD_SLOW THEN
+            fVel := __TC2_JOGSLOW[nAxis];
+        ELSE
+            fVel := __TC2_JOGFAST[nAxis];
+        END_IF
+        fAcc := __TC2_ACC[nAxis];
+        fDec := __TC2_DEC[nAxis];
+    ELSIF Mode = MC_JOGMODE_CONTINOUS THEN
+        nKind := 1;
+    ELSIF Mode = MC_JOGMODE_INCHING THEN
+        nKind := 2;
+        fDist := Position;
+        IF nDir < 0 THEN
+            fDist := -Position;
+        END_IF
+    ELSE
+        nKind := 0;
+        nDir := 0;
+        nRefused := 32;
+    END_IF
+END_IF
+bHeld := (nDir = 1 AND JogForward) OR (nDir = -1 AND JogBackwards);
+bGoVel := nKind = 1 AND nDir <> 0 AND bHeld;
+bGoHalt := nKind = 1 AND nDir <> 0 AND NOT bHeld;
+bGoStep := nKind = 2 AND nDir <> 0;
+fbVel(Axis := Axis, Execute := bGoVel, Velocity := fVel, Acceleration := fAcc, Deceleration := fDec,
+      Jerk := Jerk, Direction := eDir);
+fbHalt(Axis := Axis, Execute := bGoHalt, Deceleration := fDec, Jerk := Jerk);
+fbStep(Axis := Axis, Execute := bGoStep, Distance := fDist, Velocity := fVel, Acceleration := fAcc,
+       Deceleration := fDec, Jerk := Jerk);
+Active := fbVel.Active OR fbHalt.Active OR fbStep.Active;
+Error := fbVel.Error OR fbHalt.Error OR fbStep.Error OR nRefused <> 0;
+IF nRefused <> 0 THEN
+    ErrorID := nRefused;
+ELSIF fbVel.Error THEN
+    ErrorID := fbVel.ErrorID;
+ELSIF fbHalt.Error THEN
+    ErrorID := fbHalt.ErrorID;
+ELSE
+    ErrorID := fbStep.ErrorID;
+END_IF
+(* the end of a jog: stopped after the key was released, or the step done *)
+IF nKind = 1 AND (fbHalt.Done OR fbHalt.Error OR fbVel.Error OR fbHalt.CommandAborted) THEN
+    Done := fbHalt.Done;
+    CommandAborted := fbHalt.CommandAborted;
+    nDir := 0;
+    nKind := 0;
+ELSIF nKind = 2 AND (fbStep.Done OR fbStep.Error OR fbStep.CommandAborted) THEN
+    Done := fbStep.Done;
+    CommandAborted := fbStep.CommandAborted;
+    nDir := 0;
+    nKind := 0;
+END_IF
+Busy := nDir <> 0;
+END_FUNCTION_BLOCK
+";
 
 const MOVE_MODULO: &str = "FUNCTION_BLOCK MC_MoveModulo
 VAR_IN_OUT
@@ -157,9 +315,9 @@ END_IF
 END_FUNCTION_BLOCK
 ";
 
-/// The names of the blocks ladderc builds, for the language server's completion.
+/// The names of the blocks ladderc builds.
 pub fn names() -> impl Iterator<Item = &'static str> {
-    BLOCKS.iter().map(|(n, _)| *n)
+    BLOCKS.iter().map(|(n, _, _)| *n)
 }
 
 fn declares_type(units: &[CompilationUnit], name: &str) -> bool {
@@ -174,6 +332,7 @@ fn declares_type(units: &[CompilationUnit], name: &str) -> bool {
     let mut used = false;
     for item in units.iter().flat_map(|u| u.items.iter()) {
         match item {
+            LibraryElement::DataTypes(ts) => declared |= ts.iter().any(|t| t.name.is(name)),
             LibraryElement::Pou(p) => {
                 declared |= p.name.is(name);
                 used |= p
@@ -189,6 +348,18 @@ fn declares_type(units: &[CompilationUnit], name: &str) -> bool {
     used && !declared
 }
 
+/// Does the program declare a type or POU named `name`?
+fn declared(units: &[CompilationUnit], name: &str) -> bool {
+    units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .any(|item| match item {
+            LibraryElement::DataTypes(ts) => ts.iter().any(|t| t.name.is(name)),
+            LibraryElement::Pou(p) => p.name.is(name),
+            _ => false,
+        })
+}
+
 /// Adds the blocks the program uses (see the module header); true when one was added.
 pub fn add(
     units: &mut Vec<CompilationUnit>,
@@ -196,14 +367,19 @@ pub fn add(
     diags: &mut Diagnostics,
 ) -> bool {
     let mut added = false;
-    for (name, text) in BLOCKS {
+    for (name, text, ty) in BLOCKS {
         if !declares_type(units, name) {
             continue;
         }
-        let file = map.add(format!("<Tc2_MC2 {name}>"), text.to_string());
+        // the enumeration the block needs, unless the program declares one of that name
+        let text = match ty {
+            Some((ty, ty_text)) if !declared(units, ty) => format!("{ty_text}{text}"),
+            _ => text.to_string(),
+        };
+        let file = map.add(format!("<Tc2_MC2 {name}>"), text.clone());
         let (unit, pending, _) = il_frontend::st::file::parse_text(
             file,
-            text,
+            &text,
             name,
             il_frontend::st::file::Lang::St,
             diags,
