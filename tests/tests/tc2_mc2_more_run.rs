@@ -50,8 +50,7 @@ fn every_axis_ref_instance_is_its_own_axis_with_its_own_limits() {
     }
     watch.push("MAIN.fbTurn1.Done".into());
     watch.push("MAIN.fbTurn2.Done".into());
-    let (trace, stderr) =
-        run_traced_files(&[&fixture("Cell.plcproj")], 250, &watch.join(","));
+    let (trace, stderr) = run_traced_files(&[&fixture("Cell.plcproj")], 250, &watch.join(","));
     assert!(!stderr.contains("error"), "{stderr}");
     let col = |a: &str, q: &str| column(&trace, &format!("axis.{a}.{q}"));
     let last = |a: &str| *col(a, "position").last().unwrap();
@@ -72,14 +71,21 @@ fn every_axis_ref_instance_is_its_own_axis_with_its_own_limits() {
         ("Table2", 180.0, 1800.0),
     ] {
         assert!(within(&col(a, "velocity"), -v, v), "{a} velocity");
-        assert!(within(&col(a, "acceleration"), -acc, acc), "{a} acceleration");
+        assert!(
+            within(&col(a, "acceleration"), -acc, acc),
+            "{a} acceleration"
+        );
     }
     // Acceleration and Deceleration left out: each station's own configured limits (Tc2_MC2: "the
     // standard acceleration from the axis configuration"), though both run one FB_Station's code
     assert!(col("StationA", "acceleration").contains(&1500.0));
     assert!(col("StationB", "acceleration").contains(&2500.0));
     assert!(col("StationB", "acceleration").contains(&-2500.0));
-    let peak = |a: &str| col(a, "velocity").iter().fold(0.0f64, |m, &x| m.max(x.abs()));
+    let peak = |a: &str| {
+        col(a, "velocity")
+            .iter()
+            .fold(0.0f64, |m, &x| m.max(x.abs()))
+    };
     assert!((peak("Axis1") - 200.0).abs() < EPS && (peak("Axis2") - 100.0).abs() < EPS);
     // Table1: MC_MoveModulo to 450 deg, MC_Positive_Direction: one full turn and 90 deg, forward
     let t1 = col("Table1", "position");
@@ -111,7 +117,11 @@ fn mc_move_modulo_turns_as_tc2_mc2_documents() {
     let (s2, s3, s4, s5, s6) = (from(2.0), from(3.0), from(4.0), from(5.0), from(6.0));
     // limits: 360 deg/s (720 asked), 3600 up, 1800 down
     assert!(within(&vel, -360.0, 360.0));
-    assert!(within(&column(&trace, "axis.T.acceleration"), -3600.0, 3600.0));
+    assert!(within(
+        &column(&trace, "axis.T.acceleration"),
+        -3600.0,
+        3600.0
+    ));
     assert!(vel.iter().any(|&v| (v - 360.0).abs() < EPS));
     // 1: forward, one wrap, at 90
     assert!(vel[..s2].iter().all(|&v| v >= 0.0));
@@ -132,7 +142,9 @@ fn mc_move_modulo_turns_as_tc2_mc2_documents() {
     assert!((pos.last().unwrap() - 10.0).abs() < 1e-6);
     assert_eq!(*vel.last().unwrap(), 0.0);
     // the linear axis refuses, and does not move
-    assert!(column(&trace, "MAIN.mmL.Error")[1..].iter().all(|&e| e == 1.0));
+    assert!(column(&trace, "MAIN.mmL.Error")[1..]
+        .iter()
+        .all(|&e| e == 1.0));
     assert!(column(&trace, "MAIN.mmL.ErrorID")[1..]
         .iter()
         .all(|&e| e == 24.0));
@@ -196,7 +208,12 @@ fn mc_jog_moves_while_held_and_steps_per_edge() {
     assert!(busy[first_stop + 2] == 0.0 && done[first_stop + 2] == 1.0);
     // inching: one step of 5 mm back, the second pulse (during the step) not taken
     assert!(vel[100..240].iter().all(|&v| v <= 0.0));
-    assert!((pos[240] - (pos[140] - 5.0)).abs() < EPS, "{} {}", pos[140], pos[240]);
+    assert!(
+        (pos[240] - (pos[140] - 5.0)).abs() < EPS,
+        "{} {}",
+        pos[140],
+        pos[240]
+    );
     assert_eq!(done[240], 1.0);
     // standard slow: 20 mm/s, the axis's 1000 mm/s² (not the block's 400)
     assert!((vel[280] - 20.0).abs() < EPS);
@@ -351,7 +368,6 @@ impl Client {
     }
 }
 
-
 const TC2_DOC: &str = "VAR_GLOBAL\n    Axis1 : AXIS_REF;\nEND_VAR\nPROGRAM MAIN\nVAR\n    fbPower : MC_Power;\n    fbTurn : Tc2_MC2.MC_MoveModulo;\nEND_VAR\n\
 fbPower(Axis := Axis1, Enable := TRUE, Enable_Positive := TRUE, Enable_Negative := TRUE, Override := 50.0);\n\
 fbTurn(Axis := Axis1, Execute := fbPower.Status, Position := 90.0, Velocity := 100.0,\n\
@@ -383,7 +399,12 @@ fn the_language_server_reads_tc2_mc2_as_the_command_line_does() {
     .unwrap();
     // the command line accepts it
     let out = ladderc().arg("check").arg(&path).output().unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let uri = format!("file://{}", path.display());
     let mut c = Client::start(dir.path());
     c.notify(

@@ -250,7 +250,9 @@ impl AxisConfig {
                 a.jog_velocity_fast.unwrap_or(0.5 * a.velocity),
             );
             if !(positive(jog.0) && positive(jog.1)) {
-                diags.push(bad("jog_velocity_slow and jog_velocity_fast must be finite and greater than 0"));
+                diags.push(bad(
+                    "jog_velocity_slow and jog_velocity_fast must be finite and greater than 0",
+                ));
             }
             axes.push(Axis {
                 link,

@@ -213,7 +213,9 @@ fn used_names(units: &[CompilationUnit]) -> HashSet<String> {
                     operand: Some(o), ..
                 } => operand(o, out),
                 InstrKind::Deferred {
-                    operand: o, body: b, ..
+                    operand: o,
+                    body: b,
+                    ..
                 } => {
                     if let Some(o) = o {
                         operand(o, out);
@@ -339,7 +341,10 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
             Some(_) => diags.push(
                 Diagnostic::error(
                     code::E1057,
-                    format!("axis `{}` links `{link}`, which another axis already links", axis.name),
+                    format!(
+                        "axis `{}` links `{link}`, which another axis already links",
+                        axis.name
+                    ),
                 )
                 .at(*at)
                 .with_hint("each AXIS_REF of the program is one axis of the machine: link it once"),
@@ -347,7 +352,10 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
             None => diags.push(
                 Diagnostic::error(
                     code::E1057,
-                    format!("axis `{}` links `{link}`, which is no AXIS_REF of the program", axis.name),
+                    format!(
+                        "axis `{}` links `{link}`, which is no AXIS_REF of the program",
+                        axis.name
+                    ),
                 )
                 .at(*at)
                 .with_hint(
@@ -414,7 +422,13 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
             .map(|l| &root.leaves[l])
             .collect();
         if let Some(first) = missing.first() {
-            diags.push(e1056(&first.path, missing.len(), &free, root.name.span, axes));
+            diags.push(e1056(
+                &first.path,
+                missing.len(),
+                &free,
+                root.name.span,
+                axes,
+            ));
         }
     }
     // the initialisers
@@ -427,7 +441,10 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
         };
         let shape = {
             // the shape again (the borrow of the units for `Types` has ended)
-            root.leaves.iter().map(|l| l.steps.clone()).collect::<Vec<_>>()
+            root.leaves
+                .iter()
+                .map(|l| l.steps.clone())
+                .collect::<Vec<_>>()
         };
         for (l, steps) in shape.iter().enumerate() {
             if let Some(&k) = chosen.get(&(r, l)) {
@@ -507,7 +524,12 @@ fn set_axis_no(init: &mut Option<Initializer>, steps: &[Step], k: usize, at: Spa
             }));
             match init {
                 Some(Initializer::Struct(fs, _)) => fs.push((Ident::new("AxisNo", at), value)),
-                _ => *init = Some(Initializer::Struct(vec![(Ident::new("AxisNo", at), value)], at)),
+                _ => {
+                    *init = Some(Initializer::Struct(
+                        vec![(Ident::new("AxisNo", at), value)],
+                        at,
+                    ))
+                }
             }
         }
         Some((Step::Field(f), rest)) => {
@@ -520,7 +542,10 @@ fn set_axis_no(init: &mut Option<Initializer>, steps: &[Step], k: usize, at: Spa
             let pos = match fs.iter().position(|(n, _)| n.key() == f.key()) {
                 Some(p) => p,
                 None => {
-                    fs.push((Ident::new(f.name.clone(), at), Initializer::Struct(Vec::new(), at)));
+                    fs.push((
+                        Ident::new(f.name.clone(), at),
+                        Initializer::Struct(Vec::new(), at),
+                    ));
                     fs.len() - 1
                 }
             };

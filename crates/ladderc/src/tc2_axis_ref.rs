@@ -67,7 +67,11 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
             .iter()
             .map(|(_, o)| pair(if *o == "Standstill" { "StandStill" } else { o }, "BOOL"))
             .filter(|(n, _)| n != "ErrorID")
-            .chain([pair("ErrorID", "UDINT"), pair("Moving", "BOOL"), pair("NotMoving", "BOOL")])
+            .chain([
+                pair("ErrorID", "UDINT"),
+                pair("Moving", "BOOL"),
+                pair("NotMoving", "BOOL"),
+            ])
             .collect(),
         Some("NCTOPLC") => ["ActPos", "SetPos", "ActVelo", "SetVelo"]
             .iter()

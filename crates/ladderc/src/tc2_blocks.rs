@@ -37,8 +37,11 @@
 use diagnostics::Diagnostics;
 use il_frontend::ast::{CompilationUnit, LibraryElement, TypeRef};
 
-/// The blocks ladderc builds: (name, ST text, the enumeration type it needs and that type's text).
-const BLOCKS: &[(&str, &str, Option<(&str, &str)>)] = &[
+/// A type a block needs: (name, ST text).
+type Needs = Option<(&'static str, &'static str)>;
+
+/// The blocks ladderc builds: (name, ST text, the enumeration type it needs).
+const BLOCKS: &[(&str, &str, Needs)] = &[
     ("MC_MoveModulo", MOVE_MODULO, None),
     ("MC_Jog", JOG, Some(("E_JogMode", JOG_MODE))),
 ];

@@ -25,8 +25,8 @@
 use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
-    Accessor, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt, Initializer, InstrKind,
-    LibraryElement, LiteralKind, Operand, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
+    Accessor, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt, Initializer,
+    InstrKind, LibraryElement, LiteralKind, Operand, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
 };
 use param_passing::library::Library;
 use std::collections::HashMap;
@@ -269,9 +269,9 @@ fn init_enum_values(init: Option<&mut Initializer>) {
         Some(Initializer::Array(es, _)) => es
             .iter_mut()
             .for_each(|e| init_enum_values(Some(&mut e.value))),
-        Some(Initializer::Struct(fs, _)) => fs
-            .iter_mut()
-            .for_each(|(_, i)| init_enum_values(Some(i))),
+        Some(Initializer::Struct(fs, _)) => {
+            fs.iter_mut().for_each(|(_, i)| init_enum_values(Some(i)))
+        }
         _ => {}
     }
 }
