@@ -249,7 +249,8 @@ impl AxisConfig {
                 a.jog_velocity_slow.unwrap_or(0.1 * a.velocity),
                 a.jog_velocity_fast.unwrap_or(0.5 * a.velocity),
             );
-            if !(positive(jog.0) && positive(jog.1)) {
+            let given = [a.jog_velocity_slow, a.jog_velocity_fast];
+            if given.iter().flatten().any(|&v| !positive(v)) {
                 diags.push(bad(
                     "jog_velocity_slow and jog_velocity_fast must be finite and greater than 0",
                 ));
@@ -446,6 +447,45 @@ mod tests {
         );
         assert_eq!(c.cycle_ms, Some(1.0));
         assert_eq!(c.runtime(1.0, "h").cycle_seconds, 0.001);
+    }
+
+    #[test]
+    fn links_jog_velocities_and_the_tc2_tables() {
+        let (c, out) = parse(
+            r#"{ "axes": [
+                { "name": "A", "velocity": 100, "acceleration": 10, "deceleration": 20,
+                  "link": "MAIN.st.Axis", "jog_velocity_slow": 5 },
+                { "name": "B", "velocity": 200, "acceleration": 30, "deceleration": 40,
+                  "modulo_period": 360 } ] }"#,
+        );
+        let mut c = c.unwrap_or_else(|| panic!("{out}"));
+        assert_eq!(
+            c.axes[0].link.as_ref().map(|l| l.0.as_str()),
+            Some("MAIN.st.Axis")
+        );
+        assert_eq!(c.axes[0].jog_velocities, (5.0, 50.0));
+        assert_eq!(c.axes[1].jog_velocities, (20.0, 100.0));
+        c.tc2_tables = true;
+        c.axes[1].declared_by_program = true;
+        let il = c.globals_il();
+        assert!(il.contains("A : AXIS_REF := (AxisNo := 0);"), "{il}");
+        assert!(!il.contains("B : AXIS_REF"), "{il}");
+        assert!(
+            il.contains("__TC2_MODULO : ARRAY [0..1] OF LREAL := [0.0e0, 3.6e2];"),
+            "{il}"
+        );
+        assert!(
+            il.contains("__TC2_DEC : ARRAY [0..1] OF LREAL := [2.0e1, 4.0e1];"),
+            "{il}"
+        );
+        let (c, out) = parse(
+            r#"{ "axes": [ { "name": "A", "velocity": 1, "acceleration": 1, "deceleration": 1,
+                "jog_velocity_fast": -1 } ] }"#,
+        );
+        assert!(
+            c.is_none() && out.contains("jog_velocity_slow and jog_velocity_fast"),
+            "{out}"
+        );
     }
 
     #[test]
