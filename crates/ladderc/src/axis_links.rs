@@ -9,7 +9,8 @@
 //! `AXIS_REF`s have no axis, one E1057 per `"link"` that names no `AXIS_REF` of the program.
 //! Invariants: two instances are never silently the same axis; `VAR_IN_OUT`, `VAR_EXTERNAL`,
 //! references and pointers are not instances (they name one); an instance whose declaration
-//! already gives `AxisNo` keeps it; an `AXIS_REF` whose name no body of the program uses (a field
+//! already gives `AxisNo` keeps it, one located `AT` an address takes it from the I/O (as
+//! Beremiz's EtherCAT motion does); an `AXIS_REF` whose name no body of the program uses (a field
 //! of an HMI structure that only mirrors an axis) is no axis and needs no link.
 //!
 //! The link, as TwinCAT's System Manager keeps it for an NC axis, is one of (in this order):
@@ -281,6 +282,11 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
                         continue;
                     }
                     for (v, var) in block.vars.iter().enumerate() {
+                        // `Axis AT %IW0.0.3.402 : AXIS_REF` (Beremiz's EtherCAT motion): the I/O
+                        // gives it its AxisNo
+                        if var.location.is_some() {
+                            continue;
+                        }
                         let Some(shape) = types.shape(&var.ty, 0) else {
                             continue;
                         };
