@@ -97,6 +97,24 @@ fn every_axis_ref_instance_is_its_own_axis_with_its_own_limits() {
     assert_eq!(column(&trace, "MAIN.fbTurn2.Done").last(), Some(&1.0));
 }
 
+/// A program's own `AXIS_REF`s named like axes of the axes file are those axes (the file lists
+/// them in the other order): the spindle turns at its 60 deg/s limit (100 asked), the feed stops
+/// at 10 mm at its 50 mm/s.
+#[test]
+fn a_programs_axis_refs_named_like_axes_are_those_axes() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Spindle.st")],
+        100,
+        "axis.Spindle.velocity,axis.Feed.velocity,axis.Feed.position",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let spin = column(&trace, "axis.Spindle.velocity");
+    let feed = column(&trace, "axis.Feed.velocity");
+    assert!(within(&spin, 0.0, 60.0) && (spin[99] - 60.0).abs() < EPS);
+    assert!(within(&feed, 0.0, 50.0) && feed.iter().any(|&v| (v - 50.0).abs() < EPS));
+    assert!((column(&trace, "axis.Feed.position")[99] - 10.0).abs() < EPS);
+}
+
 /// MC_MoveModulo's rules (Infosys, Tc2_MC2 > MC_MoveModulo): from standstill 450 deg forward is
 /// one turn and 90 deg; 90 deg from 90 deg is no motion; 450 deg backward from 90 deg one turn
 /// back; started while the axis turns forward, MC_Negative_Direction cannot reverse it: it stops
