@@ -429,6 +429,8 @@ impl Analysis {
             .copied()
             .chain(self.model.globals.iter())
             .chain(self.config_globals())
+            // (not the hidden variables ladderc adds, `__TC2_ACC` ...: no user can write them)
+            .filter(|v| !v.name.starts_with("__"))
             .map(|v| (v.name.clone(), self.type_name(&v.ty)))
             .collect()
     }
