@@ -103,11 +103,21 @@ impl<'a> Types<'a> {
             }
             TypeRef::Array { dims, element, .. } => {
                 let elem = self.shape(element, depth + 1)?;
+                // (bounds as written: any i128, so every step is checked)
                 let dims: Vec<(i128, usize)> = dims
                     .iter()
-                    .map(|d| (d.lower, usize::try_from(d.upper - d.lower + 1).unwrap_or(0)))
+                    .map(|d| {
+                        let len = d.upper.checked_sub(d.lower).and_then(|n| n.checked_add(1));
+                        (
+                            d.lower,
+                            len.and_then(|n| usize::try_from(n).ok()).unwrap_or(0),
+                        )
+                    })
                     .collect();
-                let count: usize = dims.iter().map(|d| d.1).product();
+                let count = dims
+                    .iter()
+                    .try_fold(1usize, |n, d| n.checked_mul(d.1))
+                    .unwrap_or(0);
                 (count > 0 && count <= 4096).then(|| Shape::Array(dims, Box::new(elem)))
             }
             _ => None,
@@ -122,6 +132,24 @@ fn instance_kind(k: VarKind) -> bool {
         VarKind::Local | VarKind::Input | VarKind::Output | VarKind::Global
     )
 }
+
+/// How many `AXIS_REF`s a shape holds (saturating).
+fn count(shape: &Shape) -> usize {
+    match shape {
+        Shape::Axis => 1,
+        Shape::Fields(fs) => fs
+            .iter()
+            .fold(0usize, |n, (_, s)| n.saturating_add(count(s))),
+        Shape::Array(dims, elem) => dims
+            .iter()
+            .fold(1usize, |n, d| n.saturating_mul(d.1))
+            .saturating_mul(count(elem)),
+    }
+}
+
+/// The most `AXIS_REF`s one declaration may hold (a machine has far fewer axes; a hostile
+/// declaration of nested arrays is not enumerated).
+const MOST_AXES: usize = 4096;
 
 fn leaves(shape: &Shape, path: &str, steps: &mut Vec<Step>, out: &mut Vec<Leaf>) {
     match shape {
@@ -142,7 +170,7 @@ fn leaves(shape: &Shape, path: &str, steps: &mut Vec<Step>, out: &mut Vec<Leaf>)
                 let mut rest = k;
                 let mut idx = Vec::new();
                 for (lower, len) in dims.iter().rev() {
-                    idx.push(lower + (rest % len) as i128);
+                    idx.push(lower.saturating_add((rest % len) as i128));
                     rest /= len;
                 }
                 idx.reverse();
@@ -287,7 +315,8 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
                         if var.location.is_some() {
                             continue;
                         }
-                        let Some(shape) = types.shape(&var.ty, 0) else {
+                        let Some(shape) = types.shape(&var.ty, 0).filter(|s| count(s) <= MOST_AXES)
+                        else {
                             continue;
                         };
                         let mut prefixes = Vec::new();
