@@ -7,8 +7,9 @@
 //! `AxisNo` of the axis it is linked to; the configuration's `declared_by_program` set for the
 //! axes whose global the program declares itself; one located E1056 per declaration whose
 //! `AXIS_REF`s have no axis, one E1057 per `"link"` that names no `AXIS_REF` of the program.
-//! Invariants: two instances are never silently the same axis; `VAR_IN_OUT`, `VAR_EXTERNAL`,
-//! references and pointers are not instances (they name one); an instance whose declaration
+//! Invariants: two instances are never silently the same axis; only `VAR` and `VAR_GLOBAL`
+//! variables are instances (`VAR_IN_OUT`, `VAR_EXTERNAL`, references and pointers name one, a
+//! `VAR_INPUT` or `VAR_OUTPUT` is a copy); an instance whose declaration
 //! already gives `AxisNo` keeps it, one located `AT` an address takes it from the I/O (as
 //! Beremiz's EtherCAT motion does); an `AXIS_REF` whose name no body of the program uses (a field
 //! of an HMI structure that only mirrors an axis) is no axis and needs no link.
@@ -125,12 +126,11 @@ impl<'a> Types<'a> {
     }
 }
 
-/// Variables that are instances of their type (not `VAR_IN_OUT`, `VAR_EXTERNAL`, `VAR_TEMP`).
+/// Variables that are instances of their type: `VAR` and `VAR_GLOBAL` (a `VAR_INPUT` /
+/// `VAR_OUTPUT` `AXIS_REF` is a copy its caller or block writes, `VAR_IN_OUT` and `VAR_EXTERNAL`
+/// name another variable, `VAR_TEMP` lives for one call).
 fn instance_kind(k: VarKind) -> bool {
-    matches!(
-        k,
-        VarKind::Local | VarKind::Input | VarKind::Output | VarKind::Global
-    )
+    matches!(k, VarKind::Local | VarKind::Global)
 }
 
 /// How many `AXIS_REF`s a shape holds (saturating).
