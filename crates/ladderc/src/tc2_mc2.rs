@@ -42,7 +42,8 @@ const NO_COUNTERPART: &[(&str, &str, &str)] = &[
     (
         "MC_POWER",
         "OVERRIDE",
-        "a conditional call (CALC/CALCN) of MC_Power cannot carry the override: call MC_SetOverride",
+        "ladderc reads `Override` only as an argument of an unconditional MC_Power call (it then \
+         sets MC_SetOverride); read the override from your own variable, or call MC_SetOverride",
     ),
     (
         "MC_POWER",
