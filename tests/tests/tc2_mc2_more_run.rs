@@ -244,6 +244,38 @@ fn mc_jog_moves_while_held_and_steps_per_edge() {
     assert!(vel[320..].iter().all(|&v| v == 0.0) && done[399] == 1.0);
 }
 
+/// One MC_MoveVelocity instance, halted (MC_Halt aborts it) and started again the other way by
+/// its next rising Execute, as LilKiddy007's project drives its axis: the second command starts
+/// (before: the rising edge came while the block still showed Busy from the aborted command, as
+/// of its last call, and was ignored; the axis stood still). PLCopen: a block that is not Busy
+/// takes a rising Execute; the aborted command ended in the engine's step before this call.
+#[test]
+fn a_halted_move_velocity_starts_again_on_its_next_rising_execute() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Reverse.st")],
+        160,
+        "MAIN.nStep,MAIN.fbVel.Busy,MAIN.fbVel.CommandAborted,axis.X.velocity,axis.X.acceleration",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let step = column(&trace, "MAIN.nStep");
+    let vel = column(&trace, "axis.X.velocity");
+    let one = step.iter().position(|&s| s == 1.0).unwrap();
+    let two = step.iter().position(|&s| s == 2.0).unwrap();
+    assert!(vel[..one].iter().any(|&v| (v - 50.0).abs() < EPS));
+    // halted, then backward at 50 mm/s within the limits
+    assert!(
+        vel[one..two].iter().any(|&v| (v + 50.0).abs() < EPS),
+        "no reversal"
+    );
+    assert!(within(&vel, -100.0, 100.0));
+    assert!(within(
+        &column(&trace, "axis.X.acceleration"),
+        -500.0,
+        500.0
+    ));
+    assert_eq!(column(&trace, "MAIN.fbVel.Busy")[two - 1], 1.0);
+}
+
 /// An `AXIS_REF` without an axis is one located E1056 per declaration, a `"link"` that names no
 /// `AXIS_REF` one E1057 at the path in the axes file; an `AXIS_REF` the program never names
 /// (`spare`) needs no axis.
