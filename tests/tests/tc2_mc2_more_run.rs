@@ -15,7 +15,7 @@
 //! | MatheusNespolo/TwinCAT HMI-Supervisorio PLC (Eixos.Eixo1/Eixo2) | 3: E1002 x2, E1001 | runs |
 //! | ergouliu/Twincat PLC_Pro (five AXIS_REFs of MAIN, axes named like them) | 1: E1001 `aa` (the five shared axis 0) | 1: E1001 `aa`, a name the project never declares (five axes) |
 //! | SeanyCash/TwinCAT_CNC Main (no axes file) | 107 | 100: MC_Jog and E_JogMode known (-8), E1056 for the four axes of `GVL.fbCNC` (+1); NCI, event logger, MC_PowerStepper, MC_TouchProbe remain |
-//! | LilKiddy007/twincat3-plc-motion-control `main.st` | runs | runs (the reversal after MC_Halt still does not start: a rising Execute on the still-Busy, aborted MC_MoveVelocity is ignored by the motion library) |
+//! | LilKiddy007/twincat3-plc-motion-control `main.st` | runs, but the reversal after MC_Halt never starts (the rising Execute on the aborted MC_MoveVelocity was ignored as Busy) | runs, and reverses: +300, -300, +1000 mm/s as programmed |
 
 mod common;
 use common::{column, ladderc, run_traced_files};

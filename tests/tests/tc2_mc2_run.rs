@@ -19,9 +19,8 @@
 //! | ergouliu/Twincat PLC_Pro (TC2_MC2.MC_Power ...) | 11: E1011 x10, E1001 | 1: E1001 `aa`, a name the project never declares |
 //! | SeanyCash/TwinCAT_CNC Main | 5 E0001 (`{` attribute pragmas in an enum DUT) | the same: stops before any motion block |
 //!
-//! Known limits: every `AXIS_REF` that is not a configured axis is engine axis 0 (two GVL axes of
-//! one project share it); a rising Execute while the block is still Busy from an aborted command is
-//! ignored by the motion library (LilKiddy's reversal after MC_Halt does not start).
+//! (The limits this round left, every `AXIS_REF` engine axis 0 and LilKiddy's reversal after
+//! MC_Halt not starting, are lifted in `tc2_mc2_more_run.rs`.)
 
 mod common;
 use common::{column, ladderc, run_traced_files};
