@@ -2,7 +2,7 @@
 //! through `ladderc run` (C built with the sanitizers): several `AXIS_REF`s, each its own
 //! simulated axis linked from the axes file (`crates/ladderc/src/axis_links.rs`, E1056, E1057);
 //! MC_MoveModulo and MC_Jog (`tc2_blocks.rs`); MC_Power's `Override` (`tc2_override.rs`); a block input
-//! written as an expression (`block_temps.rs`). The fixtures under `fixtures/tc2_mc2_more/` are
+//! written as an expression (`block_temps.rs`); the UDINT `ErrorID` (`tc2_error_id.rs`). The fixtures under `fixtures/tc2_mc2_more/` are
 //! written for these tests (README there).
 //!
 //! Record of the public projects tried (snapshots of 2026-12-04; `ladderc run PROJECT --cycles 20`
@@ -14,7 +14,7 @@
 //! | MatheusNespolo/TwinCAT ScopeTest (Axes.Axis1) | 2: E1002, E1001 | runs |
 //! | MatheusNespolo/TwinCAT HMI-Supervisorio PLC (Eixos.Eixo1/Eixo2) | 3: E1002 x2, E1001 | runs |
 //! | ergouliu/Twincat PLC_Pro (five AXIS_REFs of MAIN, axes named like them) | 1: E1001 `aa` (the five shared axis 0) | 1: E1001 `aa`, a name the project never declares (five axes) |
-//! | SeanyCash/TwinCAT_CNC Main (no axes file) | 107 | 100: MC_Jog and E_JogMode known (-8), E1056 for the four axes of `GVL.fbCNC` (+1); NCI, event logger, MC_PowerStepper, MC_TouchProbe remain |
+//! | SeanyCash/TwinCAT_CNC Main (no axes file) | 107 | 95: MC_Jog and E_JogMode known (-8), UDINT ErrorIDs (-5), E1056 for the four axes of `GVL.fbCNC` (+1); NCI, event logger, MC_PowerStepper, MC_TouchProbe remain |
 //! | LilKiddy007/twincat3-plc-motion-control `main.st` | runs, but the reversal after MC_Halt never starts (the rising Execute on the aborted MC_MoveVelocity was ignored as Busy) | runs, and reverses: +300, -300, +1000 mm/s as programmed |
 
 mod common;
@@ -274,6 +274,26 @@ fn a_halted_move_velocity_starts_again_on_its_next_rising_execute() {
         500.0
     ));
     assert_eq!(column(&trace, "MAIN.fbVel.Busy")[two - 1], 1.0);
+}
+
+/// Tc2_MC2's `ErrorID` is UDINT (Infosys): `ErrorID => stOut.nMoveErrorID` (a UDINT field of a
+/// structure) receives ladderc's ErrorID, here 20 InvalidVelocity for Velocity 0 (before: E1012
+/// "output ErrorID of MC_MoveAbsolute is WORD, cannot be stored into UDINT"); a WORD target is
+/// bound as before.
+#[test]
+fn tc2_udint_error_ids_receive_the_block_error() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("ErrorId.st")],
+        5,
+        "MAIN.stOut.bMoveError,MAIN.stOut.nMoveErrorID,MAIN.nPowerErrorID,MAIN.nMove2ErrorID",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    for k in 0..5 {
+        assert_eq!(column(&trace, "MAIN.stOut.bMoveError")[k], 1.0);
+        assert_eq!(column(&trace, "MAIN.stOut.nMoveErrorID")[k], 20.0);
+        assert_eq!(column(&trace, "MAIN.nMove2ErrorID")[k], 20.0);
+        assert_eq!(column(&trace, "MAIN.nPowerErrorID")[k], 0.0);
+    }
 }
 
 /// An `AXIS_REF` without an axis is one located E1056 per declaration, a `"link"` that names no

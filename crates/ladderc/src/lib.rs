@@ -53,7 +53,7 @@
 //! harness), [`lsp`] (the language server), [`plot`], [`pmac_out`], [`report`], [`progress`] (running a
 //! built program), [`trace_raw`] (its raw trace turned into CSV), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary)
 //! and [`xml_context`]. Beckhoff Tc2_MC2 motion: [`tc2_mc2`] (spellings), [`tc2_axis_ref`] (AXIS_REF
-//! members), [`tc2_override`] (MC_Power's Override), [`tc2_blocks`] (MC_MoveModulo, MC_Jog),
+//! members), [`tc2_override`] (MC_Power's Override), [`tc2_error_id`] (UDINT ErrorIDs), [`tc2_blocks`] (MC_MoveModulo, MC_Jog),
 //! [`axis_links`] (each AXIS_REF its own axis), [`block_temps`] (expressions as block inputs).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -79,6 +79,7 @@ pub mod stdio;
 pub mod summary;
 pub mod tc2_axis_ref;
 pub mod tc2_blocks;
+pub mod tc2_error_id;
 pub mod tc2_mc2;
 pub mod tc2_override;
 pub mod text_lists;

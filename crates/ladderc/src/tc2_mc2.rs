@@ -26,7 +26,8 @@ use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
     Accessor, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt, Initializer,
-    InstrKind, LibraryElement, LiteralKind, Operand, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
+    InstrKind, LibraryElement, LiteralKind, Operand, TypeDef, TypeRef, VarBlock, VarDecl, VarKind,
+    VarRef,
 };
 use param_passing::library::Library;
 use std::collections::HashMap;
@@ -91,6 +92,30 @@ pub fn read_spellings(
             globals.names.extend(names);
         }
     }
+    // the declared types, for Tc2_MC2's UDINT ErrorID (`tc2_error_id`)
+    let mut structs: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
+    let mut global_types: HashMap<String, TypeRef> = HashMap::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        match item {
+            LibraryElement::DataTypes(ts) => {
+                for t in ts {
+                    if let TypeDef::Struct { fields } = &t.def {
+                        structs.insert(
+                            t.name.key(),
+                            fields
+                                .iter()
+                                .map(|f| (f.name.key(), f.ty.clone()))
+                                .collect(),
+                        );
+                    }
+                }
+            }
+            LibraryElement::GlobalVars(b) => {
+                global_types.extend(b.vars.iter().map(|v| (v.name.key(), v.ty.clone())))
+            }
+            _ => {}
+        }
+    }
     for u in units.iter_mut() {
         for item in &mut u.items {
             // `eDir : MC_Direction := MC_Direction.MC_Shortest_Way;`
@@ -129,11 +154,23 @@ pub fn read_spellings(
                 })
                 .collect();
             if !instances.is_empty() {
+                let mut vars = global_types.clone();
+                vars.extend(
+                    p.var_blocks
+                        .iter()
+                        .flat_map(|b| b.vars.iter())
+                        .map(|v| (v.name.key(), v.ty.clone())),
+                );
+                let types = crate::tc2_error_id::Types {
+                    vars,
+                    structs: structs.clone(),
+                };
                 let cx = Cx {
                     inst: &instances,
                     lib,
                     axes,
                     tables: &tables,
+                    types: &types,
                 };
                 let mut hidden = Vec::new();
                 stmts(&mut p.body, &cx, &mut hidden, diags);
@@ -161,6 +198,8 @@ struct Cx<'a> {
     axes: &'a AxisConfig,
     /// A default read the tables of the axes' limits ([`AxisConfig::tc2_tables`]).
     tables: &'a std::cell::Cell<bool>,
+    /// The declared types (for `ErrorID => nUdint`).
+    types: &'a crate::tc2_error_id::Types,
 }
 
 fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut Diagnostics) {
@@ -232,6 +271,18 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                             }
                         }
                         axis_defaults(block, list, instance.span, cx);
+                        if unconditional {
+                            let (decls, code) =
+                                crate::tc2_error_id::widen(instance, list, cx.types);
+                            for d in decls {
+                                if !hidden.iter().any(|h| h.name.key() == d.name.key()) {
+                                    hidden.push(d);
+                                }
+                            }
+                            if !code.is_empty() {
+                                after.push((k + 1, code));
+                            }
+                        }
                     }
                 } else {
                     var(instance, inst, diags);
