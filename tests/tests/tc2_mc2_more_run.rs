@@ -1,9 +1,10 @@
 //! Beckhoff Tc2_MC2 motion as real TwinCAT projects use it, the rest (issue #13), run end to end
 //! through `ladderc run` (C built with the sanitizers): several `AXIS_REF`s, each its own
 //! simulated axis linked from the axes file (`crates/ladderc/src/axis_links.rs`, E1056, E1057);
-//! MC_MoveModulo and MC_Jog (`tc2_blocks.rs`); MC_Power's `Override` (`tc2_override.rs`); a block input
-//! written as an expression (`block_temps.rs`); the UDINT `ErrorID` (`tc2_error_id.rs`). The fixtures under `fixtures/tc2_mc2_more/` are
-//! written for these tests (README there).
+//! MC_MoveModulo and MC_Jog (`tc2_blocks.rs`); MC_Power's `Override` (`tc2_override.rs`); a
+//! block input written as an expression (`block_temps.rs`); the UDINT `ErrorID`
+//! (`tc2_error_id.rs`); a halted MC_MoveVelocity started again (motion-lib's `ExecCore`). The
+//! fixtures under `fixtures/tc2_mc2_more/` are written for these tests (README there).
 //!
 //! Record of the public projects tried (snapshots of 2026-12-04; `ladderc run PROJECT --cycles 20`
 //! with an axes file that names the project's axes, 100 mm/s each; "before" is main's ladderc):
