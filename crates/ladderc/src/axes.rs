@@ -59,6 +59,15 @@ struct AxisRepr {
     modulo_period: f64,
     #[serde(default)]
     following_error_limit: f64,
+    /// The program's `AXIS_REF` this axis drives (`GVL_Axes.Axis1`, `MAIN.fbStation.Axis`).
+    #[serde(default)]
+    link: Option<String>,
+    /// Tc2_MC2 MC_Jog's "low velocity for manual functions" (default 10 % of `velocity`).
+    #[serde(default)]
+    jog_velocity_slow: Option<f64>,
+    /// Tc2_MC2 MC_Jog's "high velocity for manual functions" (default 50 % of `velocity`).
+    #[serde(default)]
+    jog_velocity_fast: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, Deserialize)]
@@ -93,6 +102,14 @@ pub struct Axis {
     pub counts_per_unit: f64,
     /// The axis limits and settings the motion runtime gets.
     pub limits: c_backend::motion::MotionAxis,
+    /// `"link"`: the instance path of the program's `AXIS_REF` this axis drives, and where the
+    /// path is written in the axes file ([`crate::axis_links`]).
+    pub link: Option<(String, Span)>,
+    /// The program declares the global `AXIS_REF` of this name itself (a TwinCAT GVL): the axes
+    /// file then declares none ([`AxisConfig::globals_il`]).
+    pub declared_by_program: bool,
+    /// MC_Jog's slow and fast manual velocities ([`crate::tc2_blocks`]).
+    pub jog_velocities: (f64, f64),
 }
 
 /// The axis configuration of a project.
@@ -106,6 +123,9 @@ pub struct AxisConfig {
     pub axes: Vec<Axis>,
     /// The axes groups (Part 4), each a global `AXES_GROUP_REF`.
     pub groups: Vec<c_backend::motion::MotionGroup>,
+    /// The program uses a block ladderc builds ([`crate::tc2_blocks`]): the globals include the
+    /// per-axis tables it reads (modulo period, acceleration and deceleration limits by `AxisNo`).
+    pub tc2_tables: bool,
 }
 
 impl Default for AxisConfig {
@@ -115,6 +135,7 @@ impl Default for AxisConfig {
             queue_depth: default_queue_depth(),
             axes: Vec::new(),
             groups: Vec::new(),
+            tc2_tables: false,
         }
     }
 }
@@ -127,6 +148,15 @@ fn is_identifier(s: &str) -> bool {
     matches!(c.next(), Some(ch) if ch.is_ascii_alphabetic() || ch == '_')
         && c.all(|ch| ch.is_ascii_alphanumeric() || ch == '_')
         && !s.contains("__")
+}
+
+/// `v` as an IEC real literal (`360.0`, `1.5e-3`); `v` is finite (checked when the file is read).
+fn real(v: f64) -> String {
+    let t = format!("{v:e}");
+    match t.split_once('e') {
+        Some((m, e)) if !m.contains('.') => format!("{m}.0e{e}"),
+        _ => t,
+    }
 }
 
 /// The span of the first `"text"` string in the file after byte `from` (the whole file when absent).
@@ -211,7 +241,24 @@ impl AxisConfig {
                     ));
                 }
             }
+            let link = a.link.as_ref().map(|l| {
+                let at = string_span(file, src, l, span.range().start);
+                (l.clone(), at)
+            });
+            let jog = (
+                a.jog_velocity_slow.unwrap_or(0.1 * a.velocity),
+                a.jog_velocity_fast.unwrap_or(0.5 * a.velocity),
+            );
+            let given = [a.jog_velocity_slow, a.jog_velocity_fast];
+            if given.iter().flatten().any(|&v| !positive(v)) {
+                diags.push(bad(
+                    "jog_velocity_slow and jog_velocity_fast must be finite and greater than 0",
+                ));
+            }
             axes.push(Axis {
+                link,
+                declared_by_program: false,
+                jog_velocities: jog,
                 name: a.name.clone(),
                 unit: a.unit.clone(),
                 counts_per_unit: a.counts_per_unit,
@@ -302,17 +349,47 @@ impl AxisConfig {
             queue_depth: repr.queue_depth,
             axes,
             groups,
+            tc2_tables: false,
         })
     }
 
     /// IL declaring one global reference per axis and group (parsed after the block prelude).
     pub fn globals_il(&self) -> String {
         let mut s = String::from("(* axes and groups of the axis configuration *)\n");
-        if self.axes.is_empty() && self.groups.is_empty() {
+        if self.axes.iter().all(|a| a.declared_by_program)
+            && self.groups.is_empty()
+            && !self.tc2_tables
+        {
             return s;
         }
         s.push_str("VAR_GLOBAL\n");
+        if self.tc2_tables {
+            let n = self.axes.len().max(1);
+            let table = |f: &dyn Fn(&Axis) -> f64| -> String {
+                let mut v: Vec<String> = self.axes.iter().map(|a| real(f(a))).collect();
+                if v.is_empty() {
+                    v.push("0.0".into());
+                }
+                v.join(", ")
+            };
+            for (name, values) in [
+                ("MODULO", table(&|a| a.limits.modulo_period)),
+                ("ACC", table(&|a| a.limits.acceleration_limit)),
+                ("DEC", table(&|a| a.limits.deceleration_limit)),
+                ("JOGSLOW", table(&|a| a.jog_velocities.0)),
+                ("JOGFAST", table(&|a| a.jog_velocities.1)),
+            ] {
+                let _ = writeln!(
+                    s,
+                    "    __TC2_{name} : ARRAY [0..{}] OF LREAL := [{values}];",
+                    n - 1
+                );
+            }
+        }
         for (i, a) in self.axes.iter().enumerate() {
+            if a.declared_by_program {
+                continue;
+            }
             let _ = writeln!(s, "    {} : AXIS_REF := (AxisNo := {i});", a.name);
         }
         for (j, g) in self.groups.iter().enumerate() {
@@ -370,6 +447,45 @@ mod tests {
         );
         assert_eq!(c.cycle_ms, Some(1.0));
         assert_eq!(c.runtime(1.0, "h").cycle_seconds, 0.001);
+    }
+
+    #[test]
+    fn links_jog_velocities_and_the_tc2_tables() {
+        let (c, out) = parse(
+            r#"{ "axes": [
+                { "name": "A", "velocity": 100, "acceleration": 10, "deceleration": 20,
+                  "link": "MAIN.st.Axis", "jog_velocity_slow": 5 },
+                { "name": "B", "velocity": 200, "acceleration": 30, "deceleration": 40,
+                  "modulo_period": 360 } ] }"#,
+        );
+        let mut c = c.unwrap_or_else(|| panic!("{out}"));
+        assert_eq!(
+            c.axes[0].link.as_ref().map(|l| l.0.as_str()),
+            Some("MAIN.st.Axis")
+        );
+        assert_eq!(c.axes[0].jog_velocities, (5.0, 50.0));
+        assert_eq!(c.axes[1].jog_velocities, (20.0, 100.0));
+        c.tc2_tables = true;
+        c.axes[1].declared_by_program = true;
+        let il = c.globals_il();
+        assert!(il.contains("A : AXIS_REF := (AxisNo := 0);"), "{il}");
+        assert!(!il.contains("B : AXIS_REF"), "{il}");
+        assert!(
+            il.contains("__TC2_MODULO : ARRAY [0..1] OF LREAL := [0.0e0, 3.6e2];"),
+            "{il}"
+        );
+        assert!(
+            il.contains("__TC2_DEC : ARRAY [0..1] OF LREAL := [2.0e1, 4.0e1];"),
+            "{il}"
+        );
+        let (c, out) = parse(
+            r#"{ "axes": [ { "name": "A", "velocity": 1, "acceleration": 1, "deceleration": 1,
+                "jog_velocity_fast": -1 } ] }"#,
+        );
+        assert!(
+            c.is_none() && out.contains("jog_velocity_slow and jog_velocity_fast"),
+            "{out}"
+        );
     }
 
     #[test]

@@ -52,12 +52,16 @@
 //! programs link), [`output`] (writing into the user's folder), [`depfile`], [`fuzzing`] (the fuzz
 //! harness), [`lsp`] (the language server), [`plot`], [`pmac_out`], [`report`], [`progress`] (running a
 //! built program), [`trace_raw`] (its raw trace turned into CSV), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary)
-//! and [`xml_context`].
+//! and [`xml_context`]. Beckhoff Tc2_MC2 motion: [`tc2_mc2`] (spellings), [`tc2_axis_ref`] (AXIS_REF
+//! members), [`tc2_override`] (MC_Power's Override), [`tc2_error_id`] (UDINT ErrorIDs), [`tc2_blocks`] (MC_MoveModulo, MC_Jog),
+//! [`axis_links`] (each AXIS_REF its own axis), [`block_temps`] (expressions as block inputs).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod axes;
+pub mod axis_links;
 pub mod beremiz;
+pub mod block_temps;
 pub mod cli;
 pub mod depfile;
 pub mod encoding;
@@ -74,7 +78,10 @@ pub mod report;
 pub mod stdio;
 pub mod summary;
 pub mod tc2_axis_ref;
+pub mod tc2_blocks;
+pub mod tc2_error_id;
 pub mod tc2_mc2;
+pub mod tc2_override;
 pub mod text_lists;
 pub mod trace_raw;
 pub mod twincat;

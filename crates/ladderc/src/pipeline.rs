@@ -731,10 +731,13 @@ impl Session {
             library,
             profile,
         } = parsed;
-        let axes = self.axis_config(paths, opts.axes.as_deref())?;
+        let mut axes = self.axis_config(paths, opts.axes.as_deref())?;
+        axes.tc2_tables = crate::tc2_blocks::add(&mut user, &mut self.map, &mut self.diags);
         let uses_blocks = uses_library_blocks(&user, &library);
         if uses_blocks {
-            crate::tc2_mc2::read_spellings(&mut user, &library, &axes, &mut self.diags);
+            crate::axis_links::link(&mut user, &mut axes, &mut self.diags);
+            crate::tc2_mc2::read_spellings(&mut user, &library, &mut axes, &mut self.diags);
+            crate::block_temps::keep(&mut user, &library);
         }
         let cycle_ms = match (axes.cycle_ms, opts.cycle_ms) {
             (Some(a), Some(c)) if (a - c).abs() > 1e-9 * a.abs().max(1.0) => {

@@ -52,6 +52,35 @@ const NC_TO_PLC: &[(&str, bool)] = &[
     ("SETVELO", false),
 ];
 
+/// The members of a Tc2_MC2 `AXIS_REF` ladderc reads, as (name, type) for the language server's
+/// completion: after `Axis.` (`group` None) `ReadStatus`, `Status`, `NcToPlc`; after
+/// `Axis.Status.` the ST_AxisStatus fields; after `Axis.NcToPlc.` the positions and velocities.
+pub fn members(group: Option<&str>) -> Vec<(String, String)> {
+    let pair = |n: &str, t: &str| (n.to_string(), t.to_string());
+    match group.map(|g| g.to_ascii_uppercase()).as_deref() {
+        None => vec![
+            pair("ReadStatus", "method (Tc2_MC2): refreshes Status"),
+            pair("Status", "ST_AxisStatus (Tc2_MC2)"),
+            pair("NcToPlc", "NCTOPLC_AXIS_REF (Tc2_MC2)"),
+        ],
+        Some("STATUS") => STATUS
+            .iter()
+            .map(|(_, o)| pair(if *o == "Standstill" { "StandStill" } else { o }, "BOOL"))
+            .filter(|(n, _)| n != "ErrorID")
+            .chain([
+                pair("ErrorID", "UDINT"),
+                pair("Moving", "BOOL"),
+                pair("NotMoving", "BOOL"),
+            ])
+            .collect(),
+        Some("NCTOPLC") => ["ActPos", "SetPos", "ActVelo", "SetVelo"]
+            .iter()
+            .map(|n| pair(n, "LREAL"))
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
 /// The `AXIS_REF` variables of `vars`.
 pub fn axis_refs<'a>(vars: impl Iterator<Item = &'a VarDecl>) -> Vec<Ident> {
     vars.filter(|v| matches!(&v.ty, TypeRef::Named(t) if t.is("AXIS_REF")))

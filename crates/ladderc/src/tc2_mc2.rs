@@ -10,20 +10,24 @@
 //! Tc2_MC2 also lets a motion block's `Acceleration` and `Deceleration` be left out or 0: "the
 //! standard acceleration from the axis configuration is applied" (Infosys, MC_MoveAbsolute,
 //! MC_MoveVelocity, MC_Halt, MC_Stop inputs). ladderc's counterpart of that configuration is the
-//! axes file, so such an input is bound to the configured limit of the axis the call names (a
-//! global axis of the axes file, or axis 0 for a local `AXIS_REF`, whose `AxisNo` is 0). Without an
-//! axes file the input stays unbound (E4023, as before).
+//! axes file, so such an input is bound to the configured limit of the axis the call names, read
+//! when the block runs from a table of the axes' limits by the `AxisNo` of the call's `Axis`
+//! (`__TC2_ACC[Axis.AxisNo]`): an `AXIS_REF` inside a function block is another axis in each
+//! instance ([`crate::axis_links`]). Without an axes file the input stays unbound (E4023, as before).
 //!
 //! Per Beckhoff Infosys (Tc2_MC2 > Function blocks > Administrative > MC_Power), MC_Power's inputs
 //! are `Enable`, `Enable_Positive`, `Enable_Negative`, `Override` (LREAL percent, default 100.0) and
-//! `BufferMode`; its outputs `Status`, `Busy`, `Active`, `Error`, `ErrorID`. `Options` of the motion
-//! blocks (`ST_*Options`) and MC_Power's `Busy`/`Active` have no counterpart in ladderc's axis.
+//! `BufferMode`; its outputs `Status`, `Busy`, `Active`, `Error`, `ErrorID`. `Override` becomes a
+//! hidden MC_SetOverride call after the MC_Power call ([`crate::tc2_override`]). `Options` of the
+//! motion blocks (`ST_*Options`) and MC_Power's `Busy`/`Active` have no counterpart in ladderc's
+//! axis. An array of block instances (`aPower[i](...)`) is read like one instance.
 
 use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
-    Accessor, ArgDir, CallArgs, CompilationUnit, FormalArg, Ident, IlStmt, InstrKind,
-    LibraryElement, Literal, LiteralKind, Operand, TypeRef, VarRef,
+    Accessor, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt, Initializer,
+    InstrKind, LibraryElement, LiteralKind, Operand, TypeDef, TypeRef, VarBlock, VarDecl, VarKind,
+    VarRef,
 };
 use param_passing::library::Library;
 use std::collections::HashMap;
@@ -39,7 +43,8 @@ const NO_COUNTERPART: &[(&str, &str, &str)] = &[
     (
         "MC_POWER",
         "OVERRIDE",
-        "ladderc scales velocities with MC_SetOverride; MC_Power takes only `Override := 100.0`",
+        "ladderc reads `Override` only as an argument of an unconditional MC_Power call (it then \
+         sets MC_SetOverride); read the override from your own variable, or call MC_SetOverride",
     ),
     (
         "MC_POWER",
@@ -64,12 +69,14 @@ const NO_COUNTERPART: &[(&str, &str, &str)] = &[
 ];
 
 /// Renames the Tc2_MC2 spellings in every POU of `units`; reports E1041 for pins with no counterpart.
+/// Sets `axes.tc2_tables` when a default reads the tables of the axes' limits.
 pub fn read_spellings(
     units: &mut [CompilationUnit],
     lib: &Library,
-    axes: &AxisConfig,
+    axes: &mut AxisConfig,
     diags: &mut Diagnostics,
 ) {
+    let tables = std::cell::Cell::new(false);
     let mut globals = crate::tc2_axis_ref::Axes {
         names: Vec::new(),
         lists: Vec::new(),
@@ -85,8 +92,45 @@ pub fn read_spellings(
             globals.names.extend(names);
         }
     }
+    // the declared types, for Tc2_MC2's UDINT ErrorID (`tc2_error_id`)
+    let mut structs: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
+    let mut global_types: HashMap<String, TypeRef> = HashMap::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        match item {
+            LibraryElement::DataTypes(ts) => {
+                for t in ts {
+                    if let TypeDef::Struct { fields } = &t.def {
+                        structs.insert(
+                            t.name.key(),
+                            fields
+                                .iter()
+                                .map(|f| (f.name.key(), f.ty.clone()))
+                                .collect(),
+                        );
+                    }
+                }
+            }
+            LibraryElement::GlobalVars(b) => {
+                global_types.extend(b.vars.iter().map(|v| (v.name.key(), v.ty.clone())))
+            }
+            _ => {}
+        }
+    }
     for u in units.iter_mut() {
         for item in &mut u.items {
+            // `eDir : MC_Direction := MC_Direction.MC_Shortest_Way;`
+            match item {
+                LibraryElement::Pou(p) => p
+                    .var_blocks
+                    .iter_mut()
+                    .flat_map(|b| b.vars.iter_mut())
+                    .for_each(|v| init_enum_values(v.init.as_mut())),
+                LibraryElement::GlobalVars(b) => b
+                    .vars
+                    .iter_mut()
+                    .for_each(|v| init_enum_values(v.init.as_mut())),
+                _ => {}
+            }
             let LibraryElement::Pou(p) = item else {
                 continue;
             };
@@ -99,19 +143,51 @@ pub fn read_spellings(
                     TypeRef::Named(t) => lib
                         .get(&t.name)
                         .map(|tpl| (v.name.key(), tpl.block.clone())),
+                    // `aPower : ARRAY [1..2] OF MC_Power`, called `aPower[i](...)`
+                    TypeRef::Array { element, .. } => match &**element {
+                        TypeRef::Named(t) => lib
+                            .get(&t.name)
+                            .map(|tpl| (v.name.key(), tpl.block.clone())),
+                        _ => None,
+                    },
                     _ => None,
                 })
                 .collect();
             if !instances.is_empty() {
+                let mut vars = global_types.clone();
+                vars.extend(
+                    p.var_blocks
+                        .iter()
+                        .flat_map(|b| b.vars.iter())
+                        .map(|v| (v.name.key(), v.ty.clone())),
+                );
+                let types = crate::tc2_error_id::Types {
+                    vars,
+                    structs: structs.clone(),
+                };
                 let cx = Cx {
                     inst: &instances,
                     lib,
                     axes,
+                    tables: &tables,
+                    types: &types,
                 };
-                stmts(&mut p.body, &cx, diags);
+                let mut hidden = Vec::new();
+                stmts(&mut p.body, &cx, &mut hidden, diags);
+                if !hidden.is_empty() {
+                    p.var_blocks.push(VarBlock {
+                        name: None,
+                        kind: VarKind::Local,
+                        constant: false,
+                        retain: false,
+                        vars: hidden,
+                        span: p.name.span,
+                    });
+                }
             }
         }
     }
+    axes.tc2_tables |= tables.get();
 }
 
 /// What the walk over a POU's body knows.
@@ -120,11 +196,16 @@ struct Cx<'a> {
     inst: &'a HashMap<String, String>,
     lib: &'a Library,
     axes: &'a AxisConfig,
+    /// A default read the tables of the axes' limits ([`AxisConfig::tc2_tables`]).
+    tables: &'a std::cell::Cell<bool>,
+    /// The declared types (for `ErrorID => nUdint`).
+    types: &'a crate::tc2_error_id::Types,
 }
 
-fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
+fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut Diagnostics) {
     let inst = cx.inst;
-    for s in body {
+    let mut after: Vec<(usize, Vec<IlStmt>)> = Vec::new();
+    for (k, s) in body.iter_mut().enumerate() {
         let IlStmt::Instr(i) = s else { continue };
         match &mut i.kind {
             InstrKind::Simple {
@@ -136,14 +217,21 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
                 if let Some(o) = o {
                     operand(o, inst, diags);
                 }
-                stmts(body, cx, diags);
+                stmts(body, cx, hidden, diags);
             }
-            InstrKind::Call { instance, args, .. } => {
-                if let (Some(block), true) = (
-                    inst.get(&instance.base.key()),
-                    instance.accessors.is_empty(),
-                ) {
+            InstrKind::Call {
+                instance,
+                args,
+                cond,
+            } => {
+                let element = instance
+                    .accessors
+                    .iter()
+                    .all(|a| matches!(a, Accessor::Index(_)));
+                if let (Some(block), true) = (inst.get(&instance.base.key()), element) {
                     if let CallArgs::Formal(list) = args {
+                        let unconditional = matches!(cond, Condition::Always);
+                        let mut scale = None;
                         list.retain_mut(|a| {
                             let pin = a.name.key();
                             if let Some(new) = spelling(block, &pin) {
@@ -154,6 +242,13 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
                             if pin == "OVERRIDE" && is_hundred(&a.value) {
                                 return false;
                             }
+                            if pin == "OVERRIDE"
+                                && block.eq_ignore_ascii_case("MC_POWER")
+                                && unconditional
+                            {
+                                scale = Some(a.value.clone());
+                                return false;
+                            }
                             match missing(block, &pin) {
                                 Some(what) => {
                                     diags.push(e1041(block, &a.name.name, what, a.name.span));
@@ -162,7 +257,32 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
                                 None => true,
                             }
                         });
+                        if let Some(value) = scale {
+                            let axis = list.iter().find(|a| a.name.key() == "AXIS");
+                            if let Some(axis) = axis {
+                                let (decls, code) =
+                                    crate::tc2_override::set_override(instance, &axis.value, value);
+                                for d in decls {
+                                    if !hidden.iter().any(|h| h.name.key() == d.name.key()) {
+                                        hidden.push(d);
+                                    }
+                                }
+                                after.push((k + 1, code));
+                            }
+                        }
                         axis_defaults(block, list, instance.span, cx);
+                        if unconditional {
+                            let (decls, code) =
+                                crate::tc2_error_id::widen(instance, list, cx.types);
+                            for d in decls {
+                                if !hidden.iter().any(|h| h.name.key() == d.name.key()) {
+                                    hidden.push(d);
+                                }
+                            }
+                            if !code.is_empty() {
+                                after.push((k + 1, code));
+                            }
+                        }
                     }
                 } else {
                     var(instance, inst, diags);
@@ -182,12 +302,29 @@ fn stmts(body: &mut [IlStmt], cx: &Cx, diags: &mut Diagnostics) {
             _ => {}
         }
     }
+    for (at, code) in after.into_iter().rev() {
+        body.splice(at..at, code);
+    }
 }
 
 fn operand(o: &mut Operand, inst: &HashMap<String, String>, diags: &mut Diagnostics) {
     if let Operand::Var(v) = o {
         enum_value(v);
         var(v, inst, diags);
+    }
+}
+
+/// The qualified enumeration values of an initialiser (see [`enum_value`]).
+fn init_enum_values(init: Option<&mut Initializer>) {
+    match init {
+        Some(Initializer::Value(Operand::Var(v))) => enum_value(v),
+        Some(Initializer::Array(es, _)) => es
+            .iter_mut()
+            .for_each(|e| init_enum_values(Some(&mut e.value))),
+        Some(Initializer::Struct(fs, _)) => {
+            fs.iter_mut().for_each(|(_, i)| init_enum_values(Some(i)))
+        }
+        _ => {}
     }
 }
 
@@ -215,7 +352,12 @@ fn var(v: &mut VarRef, inst: &HashMap<String, String>, diags: &mut Diagnostics) 
     let Some(block) = inst.get(&v.base.key()) else {
         return;
     };
-    if let Some(Accessor::Field(f)) = v.accessors.first_mut() {
+    // `aPower[i].Active`: the pin after the element's subscript
+    let pin = v
+        .accessors
+        .iter_mut()
+        .find(|a| !matches!(a, Accessor::Index(_)));
+    if let Some(Accessor::Field(f)) = pin {
         let pin = f.key();
         if let Some(new) = spelling(block, &pin) {
             f.name = new.to_string();
@@ -224,6 +366,19 @@ fn var(v: &mut VarRef, inst: &HashMap<String, String>, diags: &mut Diagnostics) 
             f.name = "Error".into();
         }
     }
+}
+
+/// The Tc2_MC2 inputs of `block` that ladderc reads, with their types, for the language server:
+/// the spellings of its own pins and MC_Power's `Override` (percent).
+pub fn tc2_pins(block: &str) -> impl Iterator<Item = (&'static str, &'static str)> + '_ {
+    const PINS: &[(&str, &str, &str)] = &[
+        ("MC_POWER", "Enable_Positive", "BOOL"),
+        ("MC_POWER", "Enable_Negative", "BOOL"),
+        ("MC_POWER", "Override", "LREAL"),
+    ];
+    PINS.iter()
+        .filter(move |(b, _, _)| b.eq_ignore_ascii_case(block))
+        .map(|(_, p, t)| (*p, *t))
 }
 
 fn spelling(block: &str, pin: &str) -> Option<&'static str> {
@@ -263,54 +418,48 @@ fn e1041(block: &str, pin: &str, what: &str, span: il_frontend::Span) -> Diagnos
 }
 
 /// Binds a left-out (or literal 0) required `Acceleration` / `Deceleration` to the configured
-/// limit of the call's axis (see the module header).
+/// limit of the call's axis (see the module header): `__TC2_ACC[<axis>.AxisNo]`, the table of the
+/// axes' limits, so that the axis an instance is linked to decides (an `AXIS_REF` inside a
+/// function block is a different axis in each instance).
 fn axis_defaults(block: &str, list: &mut Vec<FormalArg>, at: il_frontend::Span, cx: &Cx) {
     let Some(t) = cx.lib.get(block) else { return };
-    let axis_name = list
+    if cx.axes.axes.is_empty() {
+        return;
+    }
+    let axis = list
         .iter()
         .find(|a| a.name.key() == "AXIS")
         .and_then(|a| match &a.value {
-            Operand::Var(v) => match v.accessors.as_slice() {
-                [] => Some(v.base.key()),
-                // `GVL_Axes.Axis1`: a variable of a global variable list
-                [Accessor::Field(f)] => Some(f.key()),
-                _ => None,
-            },
+            Operand::Var(v) => Some(v.clone()),
             _ => None,
         });
-    let Some(axis_name) = axis_name else { return };
-    let axis = cx
-        .axes
-        .axes
-        .iter()
-        .find(|a| a.name.eq_ignore_ascii_case(&axis_name))
-        // a local AXIS_REF (no configured global of that name) is engine axis 0
-        .or_else(|| cx.axes.axes.first());
     let Some(axis) = axis else { return };
-    for (pin, value) in [
-        ("ACCELERATION", axis.limits.acceleration_limit),
-        ("DECELERATION", axis.limits.deceleration_limit),
-    ] {
+    for (pin, table) in [("ACCELERATION", "__TC2_ACC"), ("DECELERATION", "__TC2_DEC")] {
         let Some(p) = t.params.iter().find(|p| p.name.eq_ignore_ascii_case(pin)) else {
             continue;
         };
         if !p.required {
             continue;
         }
-        let real = |v: f64| {
-            Operand::literal(Literal {
-                kind: LiteralKind::Real(v),
-                type_prefix: None,
+        let limit = || {
+            let mut no = axis.clone();
+            let mut acc = no.accessors.to_vec();
+            acc.push(Accessor::Field(Ident::new("AxisNo", at)));
+            no.accessors = acc.into();
+            cx.tables.set(true);
+            Operand::Var(VarRef {
+                base: Ident::new(table, at),
+                accessors: vec![Accessor::Index(vec![Operand::Var(no)])].into(),
                 span: at,
             })
         };
         match list.iter_mut().find(|a| a.name.key() == pin) {
-            Some(a) if is_zero(&a.value) => a.value = real(value),
+            Some(a) if is_zero(&a.value) => a.value = limit(),
             Some(_) => {}
             None => list.push(FormalArg {
                 name: Ident::new(p.name.clone(), at),
                 dir: ArgDir::Input,
-                value: real(value),
+                value: limit(),
                 span: at,
             }),
         }

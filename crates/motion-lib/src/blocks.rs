@@ -60,6 +60,12 @@ impl ExecCore {
         let was_final = self.done || self.error || self.command_aborted;
         let rising = execute && !self.prev_execute;
         self.prev_execute = execute;
+        if rising && self.busy {
+            // Busy is as of the last call: the command may have ended since, in the engine's
+            // step (finished, or aborted by another block, as MC_Halt aborts MC_MoveVelocity).
+            // The block is then not Busy, and the rising edge issues the new command.
+            self.track(eng, true);
+        }
         if rising && !self.busy {
             self.done = false;
             self.error = false;

@@ -77,17 +77,23 @@ pub fn analyze(path: &Path, text: &str, root: Option<&Path>) -> Analysis {
     let pre = param_passing::prelude::before_lowering(&library);
     let f = s.map.add("<PLCopen blocks>", pre.clone());
     units.push(il_frontend::parse(f, &pre, &mut quiet));
+    let mut cfg = None;
     if let Some(axes) = pipeline::default_axes_path(path).filter(|p| p.is_file()) {
         if let Ok(t) = std::fs::read_to_string(&axes) {
             let f = s.map.add(axes.display().to_string(), t);
-            if let Some(cfg) = crate::axes::AxisConfig::parse(&s.map, f, &mut quiet) {
-                let il = cfg.globals_il();
-                let f = s.map.add("<axis configuration>", il.clone());
-                units.push(il_frontend::parse(f, &il, &mut quiet));
-            }
+            cfg = crate::axes::AxisConfig::parse(&s.map, f, &mut quiet);
         }
     }
-    units.extend(s.load(&paths));
+    // as `ladderc check` reads them: the Tc2_MC2 blocks ladderc builds, the AXIS_REFs linked to
+    // the axes (a GVL's `Axis1` named like an axis is that axis, declared once)
+    let mut user = s.load(&paths);
+    let mut cfg = cfg.unwrap_or_default();
+    cfg.tc2_tables = crate::tc2_blocks::add(&mut user, &mut s.map, &mut quiet);
+    crate::axis_links::link(&mut user, &mut cfg, &mut quiet);
+    let il = cfg.globals_il();
+    let f = s.map.add("<axis configuration>", il.clone());
+    units.push(il_frontend::parse(f, &il, &mut quiet));
+    units.extend(user);
     let file = s
         .map
         .files()
@@ -266,6 +272,9 @@ impl Analysis {
                 }
                 s.push(')');
             }
+            for (pin, ty) in crate::tc2_mc2::tc2_pins(&t.block) {
+                s.push_str(&format!("\n- `{pin}` : `{ty}` (input, Beckhoff Tc2_MC2)"));
+            }
             return Some(s);
         }
         if let FbType::User(id) = fb {
@@ -348,9 +357,55 @@ impl Analysis {
                 .rev()
                 .collect();
             if let Some(v) = var_named(&inst) {
+                if self.type_name(&v.ty).eq_ignore_ascii_case("AXIS_REF") {
+                    return crate::tc2_axis_ref::members(None);
+                }
                 return self.members(&v.ty, true);
             }
+            // `Axis.Status.`, `GVL_Axes.Axis1.NcToPlc.`: a Tc2_MC2 AXIS_REF's member groups
+            let chain: Vec<&str> = before_dot
+                .rsplit(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '.'))
+                .next()
+                .unwrap_or("")
+                .split('.')
+                .collect();
+            if let [.., axis, group] = chain.as_slice() {
+                if var_named(axis)
+                    .is_some_and(|v| self.type_name(&v.ty).eq_ignore_ascii_case("AXIS_REF"))
+                {
+                    return crate::tc2_axis_ref::members(Some(group));
+                }
+            }
+            if let [_, axis] = chain.as_slice() {
+                // `GVL_Axes.Axis1.`: a variable of a global variable list
+                if let Some(v) = var_named(axis) {
+                    if self.type_name(&v.ty).eq_ignore_ascii_case("AXIS_REF") {
+                        return crate::tc2_axis_ref::members(None);
+                    }
+                }
+            }
             return Vec::new();
+        }
+        // ST `inst(` ... not yet closed: the block's inputs as `Name :=`
+        if let Some(paren) = line.rfind('(') {
+            if !line[paren..].contains(')') {
+                let inst: String = line[..paren]
+                    .trim_end()
+                    .chars()
+                    .rev()
+                    .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                    .collect::<Vec<_>>()
+                    .into_iter()
+                    .rev()
+                    .collect();
+                if let Some(v) = var_named(&inst).filter(|v| matches!(v.ty, Type::Fb(_))) {
+                    return self
+                        .members(&v.ty, false)
+                        .into_iter()
+                        .map(|(l, d)| (format!("{l} :="), d))
+                        .collect();
+                }
+            }
         }
         // `CAL inst(` ... not yet closed
         let upper = line.to_ascii_uppercase();
@@ -374,6 +429,8 @@ impl Analysis {
             .copied()
             .chain(self.model.globals.iter())
             .chain(self.config_globals())
+            // (not the hidden variables ladderc adds, `__TC2_ACC` ...: no user can write them)
+            .filter(|v| !v.name.starts_with("__"))
             .map(|v| (v.name.clone(), self.type_name(&v.ty)))
             .collect()
     }
@@ -383,7 +440,7 @@ impl Analysis {
         let Type::Fb(fb) = ty else { return Vec::new() };
         let name = self.type_name(ty);
         if let Some(t) = self.library.get(&name) {
-            return t
+            let mut out: Vec<(String, String)> = t
                 .params
                 .iter()
                 .filter(|p| match p.direction {
@@ -393,6 +450,12 @@ impl Analysis {
                 })
                 .map(|p| (p.name.clone(), p.iec_type.clone()))
                 .collect();
+            // the Tc2_MC2 spellings `ladderc check` reads (`Enable_Positive`, `Override`)
+            out.extend(
+                crate::tc2_mc2::tc2_pins(&t.block)
+                    .map(|(pin, ty)| (pin.to_string(), format!("{ty} (Tc2_MC2)"))),
+            );
+            return out;
         }
         if let FbType::User(id) = fb {
             if let Some(pou) = self.model.pous.get(id.0 as usize) {

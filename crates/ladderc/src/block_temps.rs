@@ -1,0 +1,85 @@
+//! Temporaries passed to a PLCopen block call kept as instance variables.
+//!
+//! Input: the user's parsed units (IL, before the semantic checks) and the block library.
+//! Output: in each program and function block, every `VAR_TEMP` variable that is an argument of
+//! a library block call (`fbReset(Axis := Axis1, Execute := bReset AND Axis1.Status.Error)`: the
+//! ST lowering stores the expression in a temporary `__st_t1`) moved into a `VAR` block.
+//! Invariants: nothing else moves; a temporary is written before it is read in the same call (the
+//! ST lowering's and, by IEC 61131-3, the user's), so keeping its value between calls changes no
+//! result.
+//!
+//! Why: the template method renders each block call as a C function of its own that reads the
+//! POU's variables through the instance (`self->`); a `VAR_TEMP` is a C local of the POU's body
+//! and was out of that function's sight (the C compiler failed with "`v__st_t1` undeclared").
+
+use il_frontend::ast::{
+    CallArgs, CompilationUnit, IlStmt, InstrKind, LibraryElement, Operand, PouKind, TypeRef,
+    VarBlock, VarKind,
+};
+use param_passing::library::Library;
+use std::collections::HashSet;
+
+/// Moves the temporaries passed to block calls into `VAR` (see the module header).
+pub fn keep(units: &mut [CompilationUnit], lib: &Library) {
+    for u in units.iter_mut() {
+        for item in &mut u.items {
+            let LibraryElement::Pou(p) = item else {
+                continue;
+            };
+            if p.kind == PouKind::Function {
+                continue;
+            }
+            let instances: HashSet<String> = p
+                .var_blocks
+                .iter()
+                .flat_map(|b| b.vars.iter())
+                .filter(|v| matches!(&v.ty, TypeRef::Named(t) if lib.get(&t.name).is_some()))
+                .map(|v| v.name.key())
+                .collect();
+            if instances.is_empty() {
+                continue;
+            }
+            let mut passed = HashSet::new();
+            args(&p.body, &instances, &mut passed);
+            let mut moved = Vec::new();
+            for b in p.var_blocks.iter_mut().filter(|b| b.kind == VarKind::Temp) {
+                let (keep, temp): (Vec<_>, Vec<_>) = std::mem::take(&mut b.vars)
+                    .into_iter()
+                    .partition(|v| passed.contains(&v.name.key()));
+                b.vars = temp;
+                moved.extend(keep);
+            }
+            if !moved.is_empty() {
+                p.var_blocks.push(VarBlock {
+                    name: None,
+                    kind: VarKind::Local,
+                    constant: false,
+                    retain: false,
+                    vars: moved,
+                    span: p.name.span,
+                });
+            }
+        }
+    }
+}
+
+fn args(body: &[IlStmt], instances: &HashSet<String>, out: &mut HashSet<String>) {
+    for s in body {
+        let IlStmt::Instr(i) = s else { continue };
+        match &i.kind {
+            InstrKind::Deferred { body, .. } => args(body, instances, out),
+            InstrKind::Call {
+                instance,
+                args: CallArgs::Formal(list),
+                ..
+            } if instances.contains(&instance.base.key()) => {
+                for a in list {
+                    if let Operand::Var(v) = &a.value {
+                        out.insert(v.base.key());
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
