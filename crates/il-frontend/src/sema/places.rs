@@ -580,6 +580,30 @@ impl Body<'_, '_> {
                         .iter()
                         .map(|(id, _)| self.a.model.types[id.0 as usize].name.clone())
                         .collect();
+                    // an implicit enumeration (`state : (IDLE, RUN);`) has no name to write
+                    // before the value: only the context can tell (ST: `state := IDLE`,
+                    // `state = IDLE`, `CASE state OF IDLE:`); CODESYS warns against writing the
+                    // internal name `IMPLICIT_ENUM_<POU>_<variable>`
+                    let implicit = names.iter().any(|n| {
+                        n.starts_with("__ENUM_") || crate::st::implicit_enums::is_implicit(n)
+                    });
+                    if implicit {
+                        self.a
+                            .error(
+                                code::E1051,
+                                base.span,
+                                format!(
+                                    "`{}` is a value of several enumerations, and nothing here tells which",
+                                    base.name
+                                ),
+                            )
+                            .label("ambiguous: an implicit enumeration declares it")
+                            .hint(format!(
+                                "use it where its enumeration is known (`state := {0}`, `state = {0}`, `CASE state OF {0}:`), or declare a named TYPE and write Type#{0}",
+                                base.name
+                            ));
+                        return None;
+                    }
                     self.a
                         .error(
                             code::E1001,

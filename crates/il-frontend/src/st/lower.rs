@@ -985,6 +985,10 @@ impl<'d> PouLowering<'d> {
             return;
         }
         out.extend(code);
+        // a bare enumerated value as a label is typed by the selector (`CASE state OF IDLE:` with
+        // `IDLE` also a value of another enumeration), as the right side of `state = IDLE` is
+        let sel_ty = self.ty(selector).known().cloned();
+        let hint = sel_ty.as_ref();
         let end = self.fresh_label("END_CASE", span);
         let mut targets = Vec::new();
         let mut seen = LabelSet::default();
@@ -993,13 +997,13 @@ impl<'d> PouLowering<'d> {
             for label in &arm.labels {
                 let key = match label {
                     CaseLabel::Value(v) => self
-                        .case_value(v, &mut Diagnostics::new())
+                        .case_value(v, hint, &mut Diagnostics::new())
                         .and_then(|o| label_key(&o, &o)),
                     CaseLabel::Range(lo, hi) => {
                         let mut quiet = Diagnostics::new();
                         match (
-                            self.case_value(lo, &mut quiet),
-                            self.case_value(hi, &mut quiet),
+                            self.case_value(lo, hint, &mut quiet),
+                            self.case_value(hi, hint, &mut quiet),
                         ) {
                             (Some(l), Some(h)) => label_key(&l, &h),
                             _ => None,
@@ -1027,7 +1031,7 @@ impl<'d> PouLowering<'d> {
                 }
                 match label {
                     CaseLabel::Value(v) => {
-                        let Some(v) = self.case_value(v, diags) else {
+                        let Some(v) = self.case_value(v, hint, diags) else {
                             continue;
                         };
                         out.push(ld(sel.clone(), v.span()));
@@ -1035,7 +1039,7 @@ impl<'d> PouLowering<'d> {
                     }
                     CaseLabel::Range(lo, hi) => {
                         let (Some(lo), Some(hi)) =
-                            (self.case_value(lo, diags), self.case_value(hi, diags))
+                            (self.case_value(lo, hint, diags), self.case_value(hi, hint, diags))
                         else {
                             continue;
                         };
@@ -1078,12 +1082,20 @@ impl<'d> PouLowering<'d> {
         out.push(IlStmt::Label(end));
     }
 
-    /// A CASE label: a literal, an enumerated value or a constant (a plain operand).
-    fn case_value(&mut self, e: &Expr, diags: &mut Diagnostics) -> Option<Operand> {
+    /// A CASE label: a literal, an enumerated value or a constant (a plain operand); `hint` is the
+    /// selector's type.
+    fn case_value(
+        &mut self,
+        e: &Expr,
+        hint: Option<&TypeRef>,
+        diags: &mut Diagnostics,
+    ) -> Option<Operand> {
         if matches!(e.kind, ExprKind::Error) {
             return None;
         }
-        let o = self.pure_operand(e);
+        let o = self
+            .enum_by_context(e, hint)
+            .or_else(|| self.pure_operand(e));
         if o.is_none() {
             diags.push(
                 Diagnostic::error(code::E3104, "a CASE label must be a literal, an enumerated value or a constant")

@@ -1,0 +1,118 @@
+//! Issue #13 (helper `enumctx`): three ST constructs of real TwinCAT/CODESYS projects.
+//! - **Implicit (inline) enumerations typed by their context**: `state : (IDLE, RUN);` gets the
+//!   internal type `IMPLICIT_ENUM_<POU>_<variable>` (as CODESYS documents), so a bare value that
+//!   several enumerations declare is typed by the assignment target, the comparison partner, the
+//!   CASE selector or the input it is passed to; a CASE label is typed by the selector for named
+//!   enumerations too. Truly ambiguous: E1051. Before: E1001 "is a value of several
+//!   enumerations" at each use (54 in benhar-dev/tc3-object-simple-packml).
+//! - **ExST assignment in ELSIF and UNTIL conditions** (and inside parentheses in any condition):
+//!   before, E1045 / E0100.
+//! - **FOR over an array element or structure member**: before, E1044.
+
+mod common;
+use common::{column, ladderc, run_traced, run_with_stimulus};
+use std::path::PathBuf;
+
+fn fixture(name: &str) -> PathBuf {
+    common::repo_root()
+        .join("tests/tests/fixtures/enum_context")
+        .join(name)
+}
+
+/// The short-format diagnostics of `ladderc check` on a fixture that must be rejected (exit 1),
+/// each up to its hint, with the fixture folder left out.
+fn rejected(name: &str) -> Vec<String> {
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(fixture(name))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    common::diagnostic_heads(
+        &out.stderr,
+        &common::repo_root().join("tests/tests/fixtures/enum_context"),
+        false,
+    )
+}
+
+// ------------------------------------------------------------------ 1. implicit enumerations
+
+/// implicit.st: `main.phase : (OFF, SLOW, FAST, DONE)` steps OFF -> SLOW (scan 1) -> FAST (scan 4)
+/// -> DONE (scan 7) in a CASE on it. Two FB_Pump instances (whose `request : (OFF, SLOW, FAST)`
+/// and `mode : (OFF, STARTING, RUNNING, STOPPING)` share `OFF` with the other enumerations): p1
+/// gets the phase as its request, p2 always FAST. Each pump steps OFF -> STARTING -> RUNNING while
+/// requested, then STOPPING -> OFF (an ELSIF with `STOPPING = mode`, the value on the left); its
+/// method `Level` maps the request to its own `step : (OFF, LOW, HIGH)` (a method's implicit
+/// enumeration) and returns 0, 1, 2. `direct` adds the function results for SLOW (formal input)
+/// and FAST (non-formal): 10 + 100.
+#[test]
+fn implicit_enumeration_values_are_typed_by_their_context() {
+    let (trace, _) = run_traced(
+        &fixture("implicit.st"),
+        10,
+        "main.phase,main.p1.mode,main.p2.mode,main.r1,main.r2,main.c1,main.c2,main.direct",
+    );
+    let col = |n: &str| column(&trace, n);
+    assert_eq!(
+        col("main.phase"),
+        [0.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0, 3.0, 3.0, 3.0],
+        "{trace}"
+    );
+    assert_eq!(
+        col("main.p1.mode"),
+        [0.0, 1.0, 2.0, 2.0, 2.0, 2.0, 2.0, 3.0, 0.0, 0.0]
+    );
+    assert_eq!(col("main.p2.mode")[1..], [2.0; 9]);
+    assert_eq!(
+        col("main.r1"),
+        [0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0]
+    );
+    assert_eq!(col("main.r2")[1..], [1.0; 9]);
+    assert_eq!(
+        col("main.c1"),
+        [0.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0, 0.0, 0.0, 0.0]
+    );
+    assert_eq!(col("main.c2"), [2.0; 10]);
+    assert_eq!(col("main.direct"), [110.0; 10]);
+}
+
+/// benhar-dev/tc3-object-simple-packml (MIT, unmodified; README.md): T_Station's
+/// `StationState : (UNINITIALISED, ..., IDLE, ..., COMPLETE, ...)` and the derived
+/// T_LidApplyStation's `processState : (IDLE, ..., COMPLETE)` share value names. The station
+/// initialises (1) and idles (2); `MAIN.start` at scan 3 starts it (3), it executes (4): the
+/// derived block's Execute extends the cylinder (output TRUE), waits 2 s on its TON, retracts it,
+/// completes (5, 6), resets (9) and idles again (2). Before: 54 E1001.
+#[test]
+fn the_packml_station_runs_its_state_machine() {
+    let trace = run_with_stimulus(
+        &fixture("packml/MainProject"),
+        215,
+        "3,MAIN.start,TRUE\n",
+        &[
+            "MAIN.LidApplyStation.StationState",
+            "MAIN.LidApplyStation.processState",
+            "MAIN.LidApplicatiorCylinder.output",
+        ],
+    );
+    let station = column(&trace, "MAIN.LidApplyStation.StationState");
+    let process = column(&trace, "MAIN.LidApplyStation.processState");
+    let output = column(&trace, "MAIN.LidApplicatiorCylinder.output");
+    assert_eq!(station[..6], [1.0, 2.0, 2.0, 3.0, 4.0, 4.0], "{trace}");
+    assert_eq!(process[4..8], [0.0, 1.0, 2.0, 2.0]);
+    assert_eq!(output[..7], [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]);
+    // the 2 s wait (T#2S at 10 ms scans) ends at scan 207: retract, complete, reset, idle
+    assert_eq!(process[206..210], [2.0, 3.0, 4.0, 0.0]);
+    assert_eq!(output[207..210], [1.0, 0.0, 0.0]);
+    assert_eq!(station[208..213], [4.0, 5.0, 6.0, 9.0, 2.0]);
+    assert_eq!(station[213..], [2.0, 2.0]);
+}
+
+/// A value that two enumerations declare, one of them implicit, where nothing tells which: one
+/// E1051 at the value (no `Type#` can be written for an implicit enumeration).
+#[test]
+fn an_implicit_enumeration_value_without_context_is_e1051() {
+    assert_eq!(
+        rejected("implicit_ambiguous.st"),
+        ["implicit_ambiguous.st:9:13: error[E1051]: `IDLE` is a value of several enumerations, and nothing here tells which"]
+    );
+}
