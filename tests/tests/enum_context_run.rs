@@ -116,3 +116,49 @@ fn an_implicit_enumeration_value_without_context_is_e1051() {
         ["implicit_ambiguous.st:9:13: error[E1051]: `IDLE` is a value of several enumerations, and nothing here tells which"]
     );
 }
+
+// ------------------------------------------------------------------ 2. ExST assignments in conditions
+
+/// exst_conditions.st. FB_Seq's ELSIF `(evals := evals + 1) > 0 AND start > 10` runs only when
+/// `start > 100` is FALSE (s2, start 200, never counts), its next ELSIF `(x := start * 2) >= 10`
+/// only when that one is FALSE too (x stays 16 in scan 3). Its method Walk runs a REPEAT whose
+/// `UNTIL (c := c + 1) >= 2` makes two passes, each a WHILE `(w := w - 1) > 0` counting n - 1:
+/// 2 (n - 1) steps. The program's REPEAT with a CONTINUE in its second pass still runs three
+/// passes (the UNTIL assignment runs after the CONTINUE), `UNTIL done := tests >= cycle` runs
+/// `cycle` passes, the WHILE counts 4 and 3 (w ends at 2), the IF `(m := cycle * 3) > 5` counts
+/// from scan 2.
+#[test]
+fn assignments_in_elsif_until_and_while_conditions_run_once_per_test() {
+    let (trace, _) = run_traced(
+        &fixture("exst_conditions.st"),
+        3,
+        "main.s1.evals,main.s1.picked,main.s1.x,main.s1.steps,main.s2.evals,main.s2.picked,\
+         main.s2.steps,main.k,main.loops,main.tests,main.done,main.w,main.cnt,main.m,main.big",
+    );
+    let col = |n: &str| column(&trace, n);
+    assert_eq!(col("main.s1.evals"), [1.0, 2.0, 3.0], "{trace}");
+    assert_eq!(col("main.s1.picked"), [4.0, 3.0, 2.0]);
+    assert_eq!(col("main.s1.x"), [8.0, 16.0, 16.0]);
+    assert_eq!(col("main.s1.steps"), [6.0, 14.0, 22.0]);
+    assert_eq!(col("main.s2.evals"), [0.0; 3]);
+    assert_eq!(col("main.s2.picked"), [1.0; 3]);
+    assert_eq!(col("main.s2.steps"), [398.0; 3]);
+    assert_eq!(col("main.k"), [3.0; 3]);
+    assert_eq!(col("main.loops"), [3.0; 3]);
+    assert_eq!(col("main.tests"), [1.0, 2.0, 3.0]);
+    assert_eq!(col("main.done"), [1.0; 3]);
+    assert_eq!(col("main.w"), [2.0; 3]);
+    assert_eq!(col("main.cnt"), [2.0; 3]);
+    assert_eq!(col("main.m"), [3.0, 6.0, 9.0]);
+    assert_eq!(col("main.big"), [0.0, 1.0, 2.0]);
+}
+
+/// An assignment in the right operand of AND_THEN (which runs only when `ready` is TRUE): one
+/// E1052 at the assignment.
+#[test]
+fn an_assignment_after_and_then_is_e1052() {
+    assert_eq!(
+        rejected("exst_short_circuit.st"),
+        ["exst_short_circuit.st:8:20: error[E1052]: an assignment in the right operand of AND_THEN or OR_ELSE is not supported"]
+    );
+}

@@ -11,7 +11,7 @@
 //!   Before: E0001 at each `{` and `}`, the enumeration unknown.
 //! - **ExST assignment as a condition** (`IF b := (i = 1) THEN`, `WHILE more := (n < 5) DO`): the
 //!   IF's first condition assigns before the IF and tests the variable; a WHILE condition assigns at
-//!   every test (also after a CONTINUE). In an ELSIF or UNTIL condition it is one E1045. Before:
+//!   every test (also after a CONTINUE); in an ELSIF or UNTIL condition too (`enum_context_run.rs`). Before:
 //!   E0100/E0104 at the `:=`.
 //! - **`SIZEOF` in IL** as the TwinCAT help writes it (`LD arr1` / `SIZEOF` / `ST var1`): the bytes
 //!   of the loaded variable, as ST's `SIZEOF(arr1)`. Before: E1019.
@@ -109,22 +109,18 @@ fn assignment_as_if_and_while_condition_runs_before_each_test() {
     );
 }
 
-/// An assignment as an ELSIF or an UNTIL condition: one E1045 each, at the assigned variable.
+/// An assignment as an ELSIF or an UNTIL condition (E1045 until the `enumctx` round, see
+/// `enum_context_run.rs`): the ELSIF assigns `b := (i = 4)`, TRUE in the second scan only (x + 2),
+/// the UNTIL counts i up to 4 in the first scan and stops after one pass in the others.
 #[test]
-fn assignment_as_elsif_or_until_condition_is_one_diagnostic() {
-    let (code, lines) = run_rejected("exst_condition_assign_bad.st");
-    assert_eq!(code, Some(1));
-    let heads: Vec<&str> = lines
-        .iter()
-        .map(|l| l.split_once(" (hint").map_or(l.as_str(), |h| h.0))
-        .collect();
-    assert_eq!(
-        heads,
-        vec![
-            "exst_condition_assign_bad.st:11:7: error[E1045]: an assignment as an ELSIF condition is not supported",
-            "exst_condition_assign_bad.st:16:7: error[E1045]: an assignment as an UNTIL condition is not supported",
-        ]
+fn assignment_as_elsif_or_until_condition_runs() {
+    let (trace, _) = run_traced(
+        &fixture("exst_condition_assign_bad.st"),
+        3,
+        "Main.i,Main.x,Main.b",
     );
+    let rows: Vec<&str> = trace.lines().skip(1).collect();
+    assert_eq!(rows, ["0,0,4,0,1", "1,10,5,2,1", "2,20,6,2,1"], "{trace}");
 }
 
 // ------------------------------------------------------------------ 4. SIZEOF in IL

@@ -79,6 +79,9 @@ pub enum StmtKind {
     Repeat {
         /// The loop body, run at least once.
         body: Vec<Stmt>,
+        /// Statements run before each test of `until`, also after a CONTINUE: the ExST assignments
+        /// of the condition (`UNTIL (n := n + 1) >= 10`; empty otherwise).
+        setup: Vec<Stmt>,
         /// The condition that ends the loop, tested after each iteration.
         until: Expr,
     },

@@ -34,7 +34,10 @@ pub fn is_implicit(type_name: &str) -> bool {
 
 /// Names the implicit enumerations of `units` and of the methods of `pending`. Returns the pending
 /// bodies with their methods' declarations rewritten, when any method declared one.
-pub fn name_all(units: &mut [CompilationUnit], pending: &[PendingBody]) -> Option<Vec<PendingBody>> {
+pub fn name_all(
+    units: &mut [CompilationUnit],
+    pending: &[PendingBody],
+) -> Option<Vec<PendingBody>> {
     let mut namer = Namer {
         taken: units
             .iter()

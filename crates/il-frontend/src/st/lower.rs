@@ -915,7 +915,7 @@ impl<'d> PouLowering<'d> {
                 }
                 out.push(IlStmt::Label(end));
             }
-            StmtKind::Repeat { body, until } => {
+            StmtKind::Repeat { body, setup, until } => {
                 let top = self.fresh_label("REPEAT", span);
                 let cont = self.fresh_label("UNTIL", until.span);
                 let end = self.fresh_label("END_REPEAT", span);
@@ -927,6 +927,8 @@ impl<'d> PouLowering<'d> {
                 self.stmt_list(body, out, diags);
                 self.loops.pop();
                 out.push(IlStmt::Label(cont));
+                // the condition's ExST assignments, before each test (also after a CONTINUE)
+                self.stmt_list(setup, out, diags);
                 self.poisoned = false;
                 self.cond_value(until, "UNTIL condition", out, diags);
                 out.push(jump(Condition::IfFalse, &top, until.span));
@@ -1038,9 +1040,10 @@ impl<'d> PouLowering<'d> {
                         out.push(simple(Op::Eq, false, Some(v.clone()), v.span()));
                     }
                     CaseLabel::Range(lo, hi) => {
-                        let (Some(lo), Some(hi)) =
-                            (self.case_value(lo, hint, diags), self.case_value(hi, hint, diags))
-                        else {
+                        let (Some(lo), Some(hi)) = (
+                            self.case_value(lo, hint, diags),
+                            self.case_value(hi, hint, diags),
+                        ) else {
                             continue;
                         };
                         let at = lo.span().to(hi.span());
