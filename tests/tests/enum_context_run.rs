@@ -7,7 +7,8 @@
 //!   enumerations" at each use (54 in benhar-dev/tc3-object-simple-packml).
 //! - **ExST assignment in ELSIF and UNTIL conditions** (and inside parentheses in any condition):
 //!   before, E1045 / E0100.
-//! - **FOR over an array element or structure member**: before, E1044.
+//! - **FOR over an array element or structure member** (`FOR Offset[1] := 0 TO n DO`, TcUnit),
+//!   as TwinCAT compiles it; the element is chosen once, when the loop starts. Before: E1044.
 
 mod common;
 use common::{column, ladderc, run_traced, run_with_stimulus};
@@ -160,5 +161,47 @@ fn an_assignment_after_and_then_is_e1052() {
     assert_eq!(
         rejected("exst_short_circuit.st"),
         ["exst_short_circuit.st:8:20: error[E1052]: an assignment in the right operand of AND_THEN or OR_ELSE is not supported"]
+    );
+}
+
+// ------------------------------------------------------------------ 3. FOR over an element or member
+
+/// for_element.st. FB_Grid's method Fill counts in `Offset[1]` and `Offset[2]` (nested, as TcUnit
+/// does) over a `size` x `size` grid: g3 fills 9 cells (corner grid[2, 1] = 21), g2 4 (grid[1, 0]
+/// = 10); the elements end at `size`. `FOR slots[k] := 10 TO 14 BY 2` counts in slots[1] although
+/// the body sets k to 3 (the element is chosen when the loop starts): 3 passes, slots[1] ends at
+/// 16, slots[3] untouched. `FOR cur.i := 5 TO 1 BY -1` with a CONTINUE at 3 adds 5 + 4 + 2 + 1.
+#[test]
+fn for_counts_in_an_array_element_or_a_structure_member() {
+    let (trace, _) = run_traced(
+        &fixture("for_element.st"),
+        2,
+        "main.g3.cells,main.g3.corner,main.g2.cells,main.g2.corner,main.g3.Offset[1],\
+         main.g3.Offset[2],main.g2.Offset[1],main.slots[1],main.slots[3],main.k,main.passes,\
+         main.cur.i,main.cur.total,main.skipped",
+    );
+    let col = |n: &str| column(&trace, n);
+    assert_eq!(col("main.g3.cells"), [9.0; 2], "{trace}");
+    assert_eq!(col("main.g3.corner"), [21.0; 2]);
+    assert_eq!(col("main.g2.cells"), [4.0; 2]);
+    assert_eq!(col("main.g2.corner"), [10.0; 2]);
+    assert_eq!(col("main.g3.Offset[1]"), [3.0; 2]);
+    assert_eq!(col("main.g3.Offset[2]"), [3.0; 2]);
+    assert_eq!(col("main.g2.Offset[1]"), [2.0; 2]);
+    assert_eq!(col("main.slots[1]"), [16.0; 2]);
+    assert_eq!(col("main.slots[3]"), [0.0; 2]);
+    assert_eq!(col("main.k"), [3.0; 2]);
+    assert_eq!(col("main.passes"), [3.0; 2]);
+    assert_eq!(col("main.cur.i"), [0.0; 2]);
+    assert_eq!(col("main.cur.total"), [12.0; 2]);
+    assert_eq!(col("main.skipped"), [1.0; 2]);
+}
+
+/// A FOR counting in an element of a REAL array: one E3100 at the element, as for a REAL variable.
+#[test]
+fn a_for_over_a_real_element_is_e3100() {
+    assert_eq!(
+        rejected("for_element_real.st"),
+        ["for_element_real.st:6:5: error[E3100]: the FOR control variable `fa[1]` must be an integer variable, but it is REAL"]
     );
 }

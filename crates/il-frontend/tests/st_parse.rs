@@ -116,6 +116,7 @@ fn stmts(out: &mut String, list: &[Stmt], depth: usize) {
                 to,
                 by,
                 body,
+                ..
             } => {
                 out.push_str(&format!(
                     "{ind}for {} := {} to {}{}\n",

@@ -26,6 +26,7 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
+mod for_control;
 mod memory;
 mod short_circuit;
 
@@ -892,11 +893,21 @@ impl<'d> PouLowering<'d> {
             } => self.case(selector, arms, else_body.as_deref(), span, out, diags),
             StmtKind::For {
                 control,
+                element,
                 from,
                 to,
                 by,
                 body,
-            } => self.for_loop(control, from, to, by.as_ref(), body, span, out, diags),
+            } => self.for_loop(
+                (control, element.as_ref()),
+                from,
+                to,
+                by.as_ref(),
+                body,
+                span,
+                out,
+                diags,
+            ),
             StmtKind::While { cond, body } => {
                 let test = self.fresh_label("WHILE", span);
                 let end = self.fresh_label("END_WHILE", span);
@@ -1113,7 +1124,7 @@ impl<'d> PouLowering<'d> {
     #[allow(clippy::too_many_arguments)]
     fn for_loop(
         &mut self,
-        control: &Ident,
+        (control, element): (&Ident, Option<&Place>),
         from: &Expr,
         to: &Expr,
         by: Option<&Expr>,
@@ -1122,21 +1133,38 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
+        self.poisoned = false;
+        let mut code = Vec::new();
+        // an element or member (`Offset[1]`): its indices evaluated once, here (`for_control`)
+        let (cty, i, written) = match element {
+            Some(p) => {
+                let (t, o) = self.for_control_element(p, &mut code, diags);
+                let Some(o) = o else { return };
+                (t, o, p.span)
+            }
+            None => (
+                self.env().var_type(control),
+                var_operand(control),
+                control.span,
+            ),
+        };
         let env = self.env();
-        let cty = env.var_type(control);
         if let Some(t) = &cty {
             let int = env.elementary(t).is_some_and(|e| e.is_integer());
             if !int {
+                let text = match element {
+                    Some(p) => for_control::place_text(p),
+                    None => control.name.clone(),
+                };
                 diags.push(
                     Diagnostic::error(
                         code::E3100,
                         format!(
-                            "the FOR control variable `{}` must be an integer variable, but it is {}",
-                            control.name,
+                            "the FOR control variable `{text}` must be an integer variable, but it is {}",
                             type_text(t)
                         ),
                     )
-                    .at(control.span)
+                    .at(written)
                     .with_primary_label("control variable")
                     .with_hint("declare it as INT, DINT, SINT, LINT or an unsigned integer"),
                 );
@@ -1144,7 +1172,9 @@ impl<'d> PouLowering<'d> {
             }
         }
         let mut writes = Vec::new();
-        writes_of_control(control, body, &mut writes);
+        if element.is_none() {
+            writes_of_control(control, body, &mut writes);
+        }
         for at in writes {
             diags.push(
                 Diagnostic::warning(
@@ -1161,9 +1191,6 @@ impl<'d> PouLowering<'d> {
             );
         }
         let cty = cty.unwrap_or_else(|| named("DINT", control.span));
-        self.poisoned = false;
-        let mut code = Vec::new();
-        let i = var_operand(control);
         // Bounds are evaluated once, before the first test.
         self.value(from, &mut code, diags);
         code.push(simple(Op::St, false, Some(i.clone()), from.span));

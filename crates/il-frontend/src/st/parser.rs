@@ -120,8 +120,6 @@ struct Parser<'s, 'd> {
     /// Inside a condition evaluated again and again or only sometimes (WHILE, UNTIL, ELSIF): a
     /// method call there cannot be put before the statement.
     no_hoist: usize,
-    /// Set when a block statement was read and dropped (E1044): like END_IF, its END_FOR needs no `;`.
-    dropped_block: bool,
     /// Inside the right operand of AND_THEN / OR_ELSE (for E0108's message, and E1052).
     short_operand: usize,
     /// Reading an expression alone (an SFC transition condition): no statement can run an ExST
@@ -168,7 +166,6 @@ impl<'s, 'd> Parser<'s, 'd> {
             expr_start: 0,
             hoisted: Vec::new(),
             no_hoist: 0,
-            dropped_block: false,
             short_operand: 0,
             no_assign: false,
             short_circuit_noted: false,
@@ -464,15 +461,14 @@ impl<'s, 'd> Parser<'s, 'd> {
             self.sync();
             return None;
         };
-        let block = std::mem::take(&mut self.dropped_block)
-            || matches!(
-                kind,
-                StmtKind::If { .. }
-                    | StmtKind::Case { .. }
-                    | StmtKind::For { .. }
-                    | StmtKind::While { .. }
-                    | StmtKind::Repeat { .. }
-            );
+        let block = matches!(
+            kind,
+            StmtKind::If { .. }
+                | StmtKind::Case { .. }
+                | StmtKind::For { .. }
+                | StmtKind::While { .. }
+                | StmtKind::Repeat { .. }
+        );
         if self.at(&Tok::Semi) {
             self.bump();
         } else if self.at(&Tok::Error) {
@@ -825,11 +821,19 @@ impl<'s, 'd> Parser<'s, 'd> {
             );
             return None;
         }
-        let t = self.bump();
-        let control = self.ident(&t);
-        if matches!(self.peek(), Tok::LBracket | Tok::Dot | Tok::Caret) {
-            return self.for_with_non_name_control(t);
-        }
+        // `FOR Offset[1] := ...`, `FOR st.i := ...` (CODESYS, TwinCAT): an element or member
+        // counts (see `lower::for_control`)
+        let (control, element) = if matches!(self.peek_at(1), Tok::LBracket | Tok::Dot | Tok::Caret)
+        {
+            let p = self.place()?;
+            let PlaceBase::Name(n) = &p.base else {
+                return None;
+            };
+            (n.clone(), Some(p))
+        } else {
+            let t = self.bump();
+            (self.ident(&t), None)
+        };
         if !self.at(&Tok::Assign) {
             let found = self.describe_current();
             self.error_here(
@@ -858,69 +862,12 @@ impl<'s, 'd> Parser<'s, 'd> {
         self.close_block(Kw::EndFor, open, "FOR");
         Some(StmtKind::For {
             control,
+            element,
             from,
             to,
             by,
             body,
         })
-    }
-
-    /// `FOR Offset[1] := 0 TO n DO ... END_FOR` (TcUnit): IEC 61131-3 ed.3's grammar makes the control
-    /// variable an identifier (`Control_Variable : Identifier`), and the CODESYS help names it a variable
-    /// of an integer type; an array element, a member or a dereference is therefore E1044, once, at the
-    /// control variable. The rest of the loop is read (so that its `END_FOR`, EXITs and nested blocks
-    /// cause no follow-on errors) and dropped.
-    fn for_with_non_name_control(&mut self, first: Token) -> Option<StmtKind> {
-        let start = first.range.start;
-        let mut depth = 0usize;
-        while !matches!(self.peek(), Tok::Eof | Tok::Semi | Tok::Kw(Kw::Do)) {
-            match self.peek() {
-                Tok::LBracket | Tok::LParen => depth += 1,
-                Tok::RBracket | Tok::RParen => depth = depth.saturating_sub(1),
-                Tok::Assign if depth == 0 => break,
-                _ => {}
-            }
-            self.bump();
-        }
-        let written = self.span(start, self.prev_end());
-        self.push_error(
-            Diagnostic::error(
-                code::E1044,
-                format!(
-                    "the FOR control variable `{}` is not a plain variable name",
-                    {
-                        let s = (written.start as usize).saturating_sub(self.base);
-                        let e = (written.end as usize).saturating_sub(self.base);
-                        self.src.get(s..e).unwrap_or("")
-                    }
-                ),
-            )
-            .at(written)
-            .with_primary_label("an array element, member or dereference")
-            .with_hint(
-                "count with a local integer variable and copy it (`FOR i := 0 TO n DO Offset[1] := i; ... END_FOR;`)",
-            ),
-        );
-        if !self.at(&Tok::Assign) {
-            return None;
-        }
-        self.bump();
-        let _ = self.expr();
-        if !self.expect_kw(Kw::To, "after the FOR start value") {
-            return None;
-        }
-        let _ = self.expr();
-        if self.at_kw(Kw::By) {
-            self.bump();
-            let _ = self.expr();
-        }
-        if !self.expect_kw(Kw::Do, "before the FOR loop body") {
-            return None;
-        }
-        let _ = self.nested(|p| p.statement_list());
-        self.close_block(Kw::EndFor, written, "FOR");
-        self.dropped_block = true;
-        Some(StmtKind::Empty)
     }
 
     /// Whether a condition starts with a well-formed place and `:=` (`b :=`, `st.x :=`, `a[i] :=`,
