@@ -108,6 +108,22 @@ fn the_packml_station_runs_its_state_machine() {
     assert_eq!(station[213..], [2.0, 2.0]);
 }
 
+/// implicit_scope.il: `ALPHA` is a value of main's and FB_Other's implicit enumerations, and IL's
+/// `LD ALPHA` gives no context: each POU's own enumeration is the one (CODESYS: an implicit
+/// enumeration is valid in its own POU). main.x gets its ALPHA (1), FB_Other's y its ALPHA (0,
+/// from its initial GAMMA). Before: three E1001.
+#[test]
+fn implicit_enumeration_values_belong_to_their_own_pou() {
+    let (trace, _) = run_traced(
+        &fixture("implicit_scope.il"),
+        2,
+        "main.x,main.same,main.o.y",
+    );
+    assert_eq!(column(&trace, "main.x"), [1.0, 1.0], "{trace}");
+    assert_eq!(column(&trace, "main.same"), [1.0, 1.0]);
+    assert_eq!(column(&trace, "main.o.y"), [0.0, 0.0]);
+}
+
 /// A value that two enumerations declare, one of them implicit, where nothing tells which: one
 /// E1051 at the value (no `Type#` can be written for an implicit enumeration).
 #[test]
