@@ -108,6 +108,25 @@ fn the_packml_station_runs_its_state_machine() {
     assert_eq!(station[213..], [2.0, 2.0]);
 }
 
+/// implicit_members.st: the method Set's input `m : (OFF, ON, AUTO)`, called through the
+/// instance `f.Set(m := AUTO)`, `f.Set(ON)` and `f.Set(m := ON)`, adds 10 + 1 + 1 per scan and
+/// sets the block's output `mode : (OFF, ON)`; a structure field `kind : (EMPTY, FULL)` and a
+/// global `g : (EMPTY, HALF, FULL)` share EMPTY and FULL; a user type already named
+/// `IMPLICIT_ENUM_FB_M_mode` keeps its values (q = Q2). Before: 8 errors.
+#[test]
+fn method_inputs_fields_and_globals_type_implicit_values() {
+    let (trace, _) = run_traced(
+        &fixture("implicit_members.st"),
+        3,
+        "main.f.r,main.s.kind,main.f.mode,main.f.q,g",
+    );
+    assert_eq!(column(&trace, "main.f.r"), [12.0, 24.0, 36.0], "{trace}");
+    assert_eq!(column(&trace, "main.s.kind"), [0.0, 1.0, 1.0]);
+    assert_eq!(column(&trace, "main.f.mode"), [1.0; 3]);
+    assert_eq!(column(&trace, "main.f.q"), [1.0; 3]);
+    assert_eq!(column(&trace, "g"), [1.0, 2.0, 2.0]);
+}
+
 /// implicit_scope.il: `ALPHA` is a value of main's and FB_Other's implicit enumerations, and IL's
 /// `LD ALPHA` gives no context: each POU's own enumeration is the one (CODESYS: an implicit
 /// enumeration is valid in its own POU). main.x gets its ALPHA (1), FB_Other's y its ALPHA (0,

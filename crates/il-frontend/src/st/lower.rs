@@ -28,6 +28,7 @@ use std::collections::HashMap;
 
 mod for_control;
 mod memory;
+mod method_args;
 mod short_circuit;
 
 /// Labels of the innermost loop, for EXIT and CONTINUE.
@@ -1366,11 +1367,23 @@ impl<'d> PouLowering<'d> {
             return;
         };
         let fb_ty = self.env().place_type(callee);
+        // `inst.M(...)`: a method's inputs type their arguments too (`method_args`)
+        let method_inputs: Vec<Option<TypeRef>> = match &fb_ty {
+            Some(_) => Vec::new(),
+            None => args
+                .iter()
+                .enumerate()
+                .map(|(k, a)| {
+                    let name = a.name.clone().unwrap_or_else(|| Ident::new("", a.span));
+                    self.method_input_type(&self.env(), callee, &name, k)
+                })
+                .collect(),
+        };
         let args = self.call_args(
             args,
-            |env, name, _| {
-                let t = fb_ty.as_ref()?;
-                env.member(t, name)
+            |env, name, k| match fb_ty.as_ref() {
+                Some(t) => env.member(t, name),
+                None => method_inputs.get(k).cloned().flatten(),
             },
             out,
             diags,
