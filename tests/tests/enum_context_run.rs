@@ -232,6 +232,22 @@ fn for_counts_in_an_array_element_or_a_structure_member() {
     assert_eq!(col("main.skipped"), [1.0; 2]);
 }
 
+/// A write to the control element inside its loop (`Offset[1] := 5;`, never run here) is one
+/// W3141 at the write, as for a control variable; a write to another element is not. The loop
+/// runs its 4 passes.
+#[test]
+fn writing_the_control_element_in_its_loop_is_w3141() {
+    let (trace, stderr) = run_traced(&fixture("for_element_write.st"), 1, "main.n,main.Offset[1]");
+    assert_eq!(column(&trace, "main.n"), [4.0], "{trace}");
+    assert_eq!(column(&trace, "main.Offset[1]"), [4.0]);
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("warning[")).collect();
+    assert_eq!(warnings.len(), 1, "{stderr}");
+    assert!(
+        warnings[0].contains("for_element_write.st:5:21: warning[W3141]: the FOR control variable `Offset[1]` is changed inside its loop"),
+        "{stderr}"
+    );
+}
+
 /// A FOR counting in an element of a REAL array: one E3100 at the element, as for a REAL variable.
 #[test]
 fn a_for_over_a_real_element_is_e3100() {

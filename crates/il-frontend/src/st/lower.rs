@@ -1173,21 +1173,25 @@ impl<'d> PouLowering<'d> {
             }
         }
         let mut writes = Vec::new();
-        if element.is_none() {
-            writes_of_control(control, body, &mut writes);
-        }
+        let shown = match element {
+            None => {
+                writes_of_control(control, body, &mut writes);
+                control.name.clone()
+            }
+            Some(p) => {
+                for_control::writes_of_element(p, body, &mut writes);
+                for_control::place_text(p)
+            }
+        };
         for at in writes {
             diags.push(
                 Diagnostic::warning(
                     code::W3141,
-                    format!(
-                        "the FOR control variable `{}` is changed inside its loop",
-                        control.name
-                    ),
+                    format!("the FOR control variable `{shown}` is changed inside its loop"),
                 )
                 .at(at)
                 .with_primary_label("written inside the loop")
-                .with_label(control.span, "control variable of this FOR")
+                .with_label(written, "control variable of this FOR")
                 .with_hint("IEC 61131-3 forbids it and the loop may never end: count with another variable, or leave with EXIT"),
             );
         }

@@ -15,9 +15,10 @@
 //! increments, with the index code in `out`. Invariants: the index expressions run exactly once
 //! per execution of the FOR statement, before its start value.
 
-use super::super::ast::{Accessor, Expr, ExprKind, Place, PlaceBase};
+use super::super::ast::{Accessor, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind};
 use super::{named, simple, var_operand, PouLowering};
 use crate::ast::{Op, Operand, TypeRef};
+use crate::Span;
 use diagnostics::Diagnostics;
 
 impl PouLowering<'_> {
@@ -85,4 +86,46 @@ pub(super) fn place_text(p: &Place) -> String {
         }
     }
     s
+}
+
+/// Where `body` assigns the control element `p` itself (W3141), at any depth of IF, CASE and
+/// loops: the same text with literal indices only (`Offset[1]`, `st.i`); an element with a
+/// computed index is not compared (its index may differ at run time).
+pub(super) fn writes_of_element(p: &Place, body: &[Stmt], found: &mut Vec<Span>) {
+    let text = place_text(p);
+    if text.contains("..") {
+        return;
+    }
+    let key = text.to_ascii_uppercase();
+    let same = |q: &Place| place_text(q).to_ascii_uppercase() == key;
+    for s in body {
+        match &s.kind {
+            StmtKind::Assign { target, .. } if same(target) => found.push(target.span),
+            StmtKind::If {
+                branches,
+                else_body,
+            } => {
+                for b in branches {
+                    writes_of_element(p, &b.body, found);
+                }
+                writes_of_element(p, else_body.as_deref().unwrap_or_default(), found);
+            }
+            StmtKind::Case {
+                arms, else_body, ..
+            } => {
+                for a in arms {
+                    writes_of_element(p, &a.body, found);
+                }
+                writes_of_element(p, else_body.as_deref().unwrap_or_default(), found);
+            }
+            StmtKind::For {
+                element: Some(inner),
+                ..
+            } if same(inner) => found.push(inner.span),
+            StmtKind::For { body, .. }
+            | StmtKind::While { body, .. }
+            | StmtKind::Repeat { body, .. } => writes_of_element(p, body, found),
+            _ => {}
+        }
+    }
 }
