@@ -2,16 +2,16 @@
 //! CODESYS projects, each through `ladderc run` on fixtures written here
 //! (`tests/tests/fixtures/lang_left_r13/`):
 //! - **A FOR whose control variable is an array element** (`FOR Offset[1] := 0 TO n DO`, TcUnit's
-//!   FB_TestSuite): IEC 61131-3 ed.3's grammar makes it an identifier, so it is one E1044 per loop
-//!   at the control variable, with no follow-on errors. Before: E0100 at `[`, then E3101 for each
-//!   EXIT inside the loop and E0100 for its `END_FOR`.
+//!   FB_TestSuite): one E1044 per loop in this round; compiled since the `enumctx` round, as
+//!   TwinCAT does. Before: E0100 at `[`, then E3101 for each EXIT inside the loop and E0100 for
+//!   its `END_FOR`.
 //! - **An attribute pragma without its `}` before an enumeration** (`{attribute 'qualified only'`
 //!   then `{attribute 'strict'}`, SeanyCash/TwinCAT_CNC): attributes do not nest, so the pragma ends
 //!   at the next `}`, with warning W1420; per-value attributes inside the enumeration are notes.
 //!   Before: E0001 at each `{` and `}`, the enumeration unknown.
 //! - **ExST assignment as a condition** (`IF b := (i = 1) THEN`, `WHILE more := (n < 5) DO`): the
 //!   IF's first condition assigns before the IF and tests the variable; a WHILE condition assigns at
-//!   every test (also after a CONTINUE). In an ELSIF or UNTIL condition it is one E1045. Before:
+//!   every test (also after a CONTINUE); in an ELSIF or UNTIL condition too (`enum_context_run.rs`). Before:
 //!   E0100/E0104 at the `:=`.
 //! - **`SIZEOF` in IL** as the TwinCAT help writes it (`LD arr1` / `SIZEOF` / `ST var1`): the bytes
 //!   of the loaded variable, as ST's `SIZEOF(arr1)`. Before: E1019.
@@ -19,7 +19,7 @@
 //!   W0304, as for `FUNCTION_BLOCK INTERNAL`. Before: E0011 at the name and each member.
 
 mod common;
-use common::{ladderc, run_traced};
+use common::run_traced;
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
@@ -28,43 +28,20 @@ fn fixture(name: &str) -> PathBuf {
         .join(name)
 }
 
-/// `ladderc run` of a rejected fixture: exit code and its error/warning lines (short format).
-fn run_rejected(name: &str) -> (Option<i32>, Vec<String>) {
-    let f = fixture(name);
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .arg(&f)
-        .args(["--cycles", "1"])
-        .output()
-        .unwrap();
-    let prefix = format!("{}/", f.parent().unwrap().display());
-    let lines = String::from_utf8_lossy(&out.stderr)
-        .lines()
-        .filter(|l| l.contains("error[") || l.contains("warning["))
-        .map(|l| l.replace(&prefix, ""))
-        .collect();
-    (out.status.code(), lines)
-}
-
 // ------------------------------------------------------------------ 1. FOR over an array element
 
 /// Two nested FORs counting in `Offset[1]` and `Offset[2]`, with an EXIT and an `END_FOR` without
-/// `;`: exactly one E1044 per loop, at its control variable, and nothing else.
+/// `;` (E1044 until the `enumctx` round, see `enum_context_run.rs`): the inner loop counts 0 and 1
+/// and leaves at 2, four times: Sum grows by 8 + 100 per scan.
 #[test]
-fn for_over_an_array_element_is_one_located_diagnostic_per_loop() {
-    let (code, lines) = run_rejected("for_element_control.st");
-    assert_eq!(code, Some(1));
-    let heads: Vec<&str> = lines
-        .iter()
-        .map(|l| l.split_once(" (hint").map_or(l.as_str(), |h| h.0))
-        .collect();
-    assert_eq!(
-        heads,
-        vec![
-            "for_element_control.st:8:5: error[E1044]: the FOR control variable `Offset[1]` is not a plain variable name",
-            "for_element_control.st:9:9: error[E1044]: the FOR control variable `Offset[2]` is not a plain variable name",
-        ]
+fn for_over_an_array_element_runs() {
+    let (trace, _) = run_traced(
+        &fixture("for_element_control.st"),
+        2,
+        "Main.Sum,Main.Offset[1],Main.Offset[2]",
     );
+    let rows: Vec<&str> = trace.lines().skip(1).collect();
+    assert_eq!(rows, ["0,0,108,4,2", "1,10,216,4,2"], "{trace}");
 }
 
 // ------------------------------------------------------------------ 2. pragmas in an enumeration
@@ -109,22 +86,18 @@ fn assignment_as_if_and_while_condition_runs_before_each_test() {
     );
 }
 
-/// An assignment as an ELSIF or an UNTIL condition: one E1045 each, at the assigned variable.
+/// An assignment as an ELSIF or an UNTIL condition (E1045 until the `enumctx` round, see
+/// `enum_context_run.rs`): the ELSIF assigns `b := (i = 4)`, TRUE in the second scan only (x + 2),
+/// the UNTIL counts i up to 4 in the first scan and stops after one pass in the others.
 #[test]
-fn assignment_as_elsif_or_until_condition_is_one_diagnostic() {
-    let (code, lines) = run_rejected("exst_condition_assign_bad.st");
-    assert_eq!(code, Some(1));
-    let heads: Vec<&str> = lines
-        .iter()
-        .map(|l| l.split_once(" (hint").map_or(l.as_str(), |h| h.0))
-        .collect();
-    assert_eq!(
-        heads,
-        vec![
-            "exst_condition_assign_bad.st:11:7: error[E1045]: an assignment as an ELSIF condition is not supported",
-            "exst_condition_assign_bad.st:16:7: error[E1045]: an assignment as an UNTIL condition is not supported",
-        ]
+fn assignment_as_elsif_or_until_condition_runs() {
+    let (trace, _) = run_traced(
+        &fixture("exst_condition_assign_bad.st"),
+        3,
+        "Main.i,Main.x,Main.b",
     );
+    let rows: Vec<&str> = trace.lines().skip(1).collect();
+    assert_eq!(rows, ["0,0,4,0,1", "1,10,5,2,1", "2,20,6,2,1"], "{trace}");
 }
 
 // ------------------------------------------------------------------ 4. SIZEOF in IL

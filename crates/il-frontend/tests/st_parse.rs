@@ -116,6 +116,7 @@ fn stmts(out: &mut String, list: &[Stmt], depth: usize) {
                 to,
                 by,
                 body,
+                ..
             } => {
                 out.push_str(&format!(
                     "{ind}for {} := {} to {}{}\n",
@@ -132,7 +133,7 @@ fn stmts(out: &mut String, list: &[Stmt], depth: usize) {
                 out.push_str(&format!("{ind}while {}\n", expr(cond)));
                 stmts(out, body, depth + 1);
             }
-            StmtKind::Repeat { body, until } => {
+            StmtKind::Repeat { body, until, .. } => {
                 out.push_str(&format!("{ind}repeat\n"));
                 stmts(out, body, depth + 1);
                 out.push_str(&format!("{ind}until {}\n", expr(until)));

@@ -126,6 +126,23 @@ impl Body<'_, '_> {
         }
     }
 
+    /// The implicit (inline) enumerations the variables of the POU being checked are of (also as
+    /// array elements; an inherited variable and a method's hidden ones are the POU's variables).
+    fn own_implicit_enums(&self) -> Vec<TypeId> {
+        fn enum_of(t: &Type) -> Option<TypeId> {
+            match t {
+                Type::Enum(id) => Some(*id),
+                Type::Array { element, .. } => enum_of(element),
+                _ => None,
+            }
+        }
+        self.pou()
+            .vars
+            .iter()
+            .filter_map(|v| enum_of(&v.ty))
+            .collect()
+    }
+
     /// The type of an operand that is written; reports literals, constants and read-only variables.
     pub(super) fn write_place(&mut self, o: &Operand, what: &str) -> Type {
         match o {
@@ -574,12 +591,54 @@ impl Body<'_, '_> {
             });
         }
         if plain {
-            if let Some(found) = self.a.enum_values.get(&base.key()).cloned() {
+            if let Some(mut found) = self.a.enum_values.get(&base.key()).cloned() {
+                if found.len() > 1 {
+                    // an implicit enumeration is valid only in its own POU (CODESYS, "Data Type:
+                    // Implicit Enumeration"): those of other POUs do not make a value ambiguous
+                    let own = self.own_implicit_enums();
+                    let visible: Vec<(TypeId, usize)> = found
+                        .iter()
+                        .copied()
+                        .filter(|(id, _)| {
+                            let n = &self.a.model.types[id.0 as usize].name;
+                            let implicit = n.starts_with("__ENUM_")
+                                || crate::st::implicit_enums::is_implicit(n);
+                            !implicit || own.contains(id)
+                        })
+                        .collect();
+                    if !visible.is_empty() && visible.len() < found.len() {
+                        found = visible;
+                    }
+                }
                 if found.len() > 1 {
                     let names: Vec<String> = found
                         .iter()
                         .map(|(id, _)| self.a.model.types[id.0 as usize].name.clone())
                         .collect();
+                    // an implicit enumeration (`state : (IDLE, RUN);`) has no name to write
+                    // before the value: only the context can tell (ST: `state := IDLE`,
+                    // `state = IDLE`, `CASE state OF IDLE:`); CODESYS warns against writing the
+                    // internal name `IMPLICIT_ENUM_<POU>_<variable>`
+                    let implicit = names.iter().any(|n| {
+                        n.starts_with("__ENUM_") || crate::st::implicit_enums::is_implicit(n)
+                    });
+                    if implicit {
+                        self.a
+                            .error(
+                                code::E1051,
+                                base.span,
+                                format!(
+                                    "`{}` is a value of several enumerations, and nothing here tells which",
+                                    base.name
+                                ),
+                            )
+                            .label("ambiguous: an implicit enumeration declares it")
+                            .hint(format!(
+                                "use it where its enumeration is known (`state := {0}`, `state = {0}`, `CASE state OF {0}:`), or declare a named TYPE and write Type#{0}",
+                                base.name
+                            ));
+                        return None;
+                    }
                     self.a
                         .error(
                             code::E1001,

@@ -57,8 +57,11 @@ pub enum StmtKind {
     },
     /// `FOR i := from TO to BY step DO ... END_FOR;`
     For {
-        /// The control variable (`i`).
+        /// The control variable (`i`); for an element or member, the variable it is part of.
         control: Ident,
+        /// The control variable when it is an array element or a structure member (`Offset[1]`,
+        /// `st.i`: CODESYS and TwinCAT accept it, see `lower::for_control`); `None` for a name.
+        element: Option<Place>,
         /// The start value, assigned before the first iteration.
         from: Expr,
         /// The end value (inclusive).
@@ -79,6 +82,9 @@ pub enum StmtKind {
     Repeat {
         /// The loop body, run at least once.
         body: Vec<Stmt>,
+        /// Statements run before each test of `until`, also after a CONTINUE: the ExST assignments
+        /// of the condition (`UNTIL (n := n + 1) >= 10`; empty otherwise).
+        setup: Vec<Stmt>,
         /// The condition that ends the loop, tested after each iteration.
         until: Expr,
     },

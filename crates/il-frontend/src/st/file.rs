@@ -1425,6 +1425,15 @@ pub fn compile_pending(
         })
         .filter_map(|pb| pb.pou_name(units).map(|n| n.key()))
         .collect();
+    // implicit enumerations (`state : (IDLE, RUN);`) named, so their values are typed by context
+    let named;
+    let pending = match super::implicit_enums::name_all(units, pending) {
+        Some(v) => {
+            named = v;
+            &named[..]
+        }
+        None => pending,
+    };
     // edition 3 inheritance: derived blocks flattened (their bases' variables, methods, actions)
     let flat;
     let mut interfaces = Vec::new();

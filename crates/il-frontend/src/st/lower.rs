@@ -26,7 +26,9 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
+mod for_control;
 mod memory;
+mod method_args;
 mod short_circuit;
 
 /// Labels of the innermost loop, for EXIT and CONTINUE.
@@ -892,11 +894,21 @@ impl<'d> PouLowering<'d> {
             } => self.case(selector, arms, else_body.as_deref(), span, out, diags),
             StmtKind::For {
                 control,
+                element,
                 from,
                 to,
                 by,
                 body,
-            } => self.for_loop(control, from, to, by.as_ref(), body, span, out, diags),
+            } => self.for_loop(
+                (control, element.as_ref()),
+                from,
+                to,
+                by.as_ref(),
+                body,
+                span,
+                out,
+                diags,
+            ),
             StmtKind::While { cond, body } => {
                 let test = self.fresh_label("WHILE", span);
                 let end = self.fresh_label("END_WHILE", span);
@@ -915,7 +927,7 @@ impl<'d> PouLowering<'d> {
                 }
                 out.push(IlStmt::Label(end));
             }
-            StmtKind::Repeat { body, until } => {
+            StmtKind::Repeat { body, setup, until } => {
                 let top = self.fresh_label("REPEAT", span);
                 let cont = self.fresh_label("UNTIL", until.span);
                 let end = self.fresh_label("END_REPEAT", span);
@@ -927,6 +939,8 @@ impl<'d> PouLowering<'d> {
                 self.stmt_list(body, out, diags);
                 self.loops.pop();
                 out.push(IlStmt::Label(cont));
+                // the condition's ExST assignments, before each test (also after a CONTINUE)
+                self.stmt_list(setup, out, diags);
                 self.poisoned = false;
                 self.cond_value(until, "UNTIL condition", out, diags);
                 out.push(jump(Condition::IfFalse, &top, until.span));
@@ -985,6 +999,10 @@ impl<'d> PouLowering<'d> {
             return;
         }
         out.extend(code);
+        // a bare enumerated value as a label is typed by the selector (`CASE state OF IDLE:` with
+        // `IDLE` also a value of another enumeration), as the right side of `state = IDLE` is
+        let sel_ty = self.ty(selector).known().cloned();
+        let hint = sel_ty.as_ref();
         let end = self.fresh_label("END_CASE", span);
         let mut targets = Vec::new();
         let mut seen = LabelSet::default();
@@ -993,13 +1011,13 @@ impl<'d> PouLowering<'d> {
             for label in &arm.labels {
                 let key = match label {
                     CaseLabel::Value(v) => self
-                        .case_value(v, &mut Diagnostics::new())
+                        .case_value(v, hint, &mut Diagnostics::new())
                         .and_then(|o| label_key(&o, &o)),
                     CaseLabel::Range(lo, hi) => {
                         let mut quiet = Diagnostics::new();
                         match (
-                            self.case_value(lo, &mut quiet),
-                            self.case_value(hi, &mut quiet),
+                            self.case_value(lo, hint, &mut quiet),
+                            self.case_value(hi, hint, &mut quiet),
                         ) {
                             (Some(l), Some(h)) => label_key(&l, &h),
                             _ => None,
@@ -1027,16 +1045,17 @@ impl<'d> PouLowering<'d> {
                 }
                 match label {
                     CaseLabel::Value(v) => {
-                        let Some(v) = self.case_value(v, diags) else {
+                        let Some(v) = self.case_value(v, hint, diags) else {
                             continue;
                         };
                         out.push(ld(sel.clone(), v.span()));
                         out.push(simple(Op::Eq, false, Some(v.clone()), v.span()));
                     }
                     CaseLabel::Range(lo, hi) => {
-                        let (Some(lo), Some(hi)) =
-                            (self.case_value(lo, diags), self.case_value(hi, diags))
-                        else {
+                        let (Some(lo), Some(hi)) = (
+                            self.case_value(lo, hint, diags),
+                            self.case_value(hi, hint, diags),
+                        ) else {
                             continue;
                         };
                         let at = lo.span().to(hi.span());
@@ -1078,12 +1097,20 @@ impl<'d> PouLowering<'d> {
         out.push(IlStmt::Label(end));
     }
 
-    /// A CASE label: a literal, an enumerated value or a constant (a plain operand).
-    fn case_value(&mut self, e: &Expr, diags: &mut Diagnostics) -> Option<Operand> {
+    /// A CASE label: a literal, an enumerated value or a constant (a plain operand); `hint` is the
+    /// selector's type.
+    fn case_value(
+        &mut self,
+        e: &Expr,
+        hint: Option<&TypeRef>,
+        diags: &mut Diagnostics,
+    ) -> Option<Operand> {
         if matches!(e.kind, ExprKind::Error) {
             return None;
         }
-        let o = self.pure_operand(e);
+        let o = self
+            .enum_by_context(e, hint)
+            .or_else(|| self.pure_operand(e));
         if o.is_none() {
             diags.push(
                 Diagnostic::error(code::E3104, "a CASE label must be a literal, an enumerated value or a constant")
@@ -1098,7 +1125,7 @@ impl<'d> PouLowering<'d> {
     #[allow(clippy::too_many_arguments)]
     fn for_loop(
         &mut self,
-        control: &Ident,
+        (control, element): (&Ident, Option<&Place>),
         from: &Expr,
         to: &Expr,
         by: Option<&Expr>,
@@ -1107,21 +1134,38 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
+        self.poisoned = false;
+        let mut code = Vec::new();
+        // an element or member (`Offset[1]`): its indices evaluated once, here (`for_control`)
+        let (cty, i, written) = match element {
+            Some(p) => {
+                let (t, o) = self.for_control_element(p, &mut code, diags);
+                let Some(o) = o else { return };
+                (t, o, p.span)
+            }
+            None => (
+                self.env().var_type(control),
+                var_operand(control),
+                control.span,
+            ),
+        };
         let env = self.env();
-        let cty = env.var_type(control);
         if let Some(t) = &cty {
             let int = env.elementary(t).is_some_and(|e| e.is_integer());
             if !int {
+                let text = match element {
+                    Some(p) => for_control::place_text(p),
+                    None => control.name.clone(),
+                };
                 diags.push(
                     Diagnostic::error(
                         code::E3100,
                         format!(
-                            "the FOR control variable `{}` must be an integer variable, but it is {}",
-                            control.name,
+                            "the FOR control variable `{text}` must be an integer variable, but it is {}",
                             type_text(t)
                         ),
                     )
-                    .at(control.span)
+                    .at(written)
                     .with_primary_label("control variable")
                     .with_hint("declare it as INT, DINT, SINT, LINT or an unsigned integer"),
                 );
@@ -1129,26 +1173,29 @@ impl<'d> PouLowering<'d> {
             }
         }
         let mut writes = Vec::new();
-        writes_of_control(control, body, &mut writes);
+        let shown = match element {
+            None => {
+                writes_of_control(control, body, &mut writes);
+                control.name.clone()
+            }
+            Some(p) => {
+                for_control::writes_of_element(p, body, &mut writes);
+                for_control::place_text(p)
+            }
+        };
         for at in writes {
             diags.push(
                 Diagnostic::warning(
                     code::W3141,
-                    format!(
-                        "the FOR control variable `{}` is changed inside its loop",
-                        control.name
-                    ),
+                    format!("the FOR control variable `{shown}` is changed inside its loop"),
                 )
                 .at(at)
                 .with_primary_label("written inside the loop")
-                .with_label(control.span, "control variable of this FOR")
+                .with_label(written, "control variable of this FOR")
                 .with_hint("IEC 61131-3 forbids it and the loop may never end: count with another variable, or leave with EXIT"),
             );
         }
         let cty = cty.unwrap_or_else(|| named("DINT", control.span));
-        self.poisoned = false;
-        let mut code = Vec::new();
-        let i = var_operand(control);
         // Bounds are evaluated once, before the first test.
         self.value(from, &mut code, diags);
         code.push(simple(Op::St, false, Some(i.clone()), from.span));
@@ -1324,11 +1371,23 @@ impl<'d> PouLowering<'d> {
             return;
         };
         let fb_ty = self.env().place_type(callee);
+        // `inst.M(...)`: a method's inputs type their arguments too (`method_args`)
+        let method_inputs: Vec<Option<TypeRef>> = match &fb_ty {
+            Some(_) => Vec::new(),
+            None => args
+                .iter()
+                .enumerate()
+                .map(|(k, a)| {
+                    let name = a.name.clone().unwrap_or_else(|| Ident::new("", a.span));
+                    self.method_input_type(&self.env(), callee, &name, k)
+                })
+                .collect(),
+        };
         let args = self.call_args(
             args,
-            |env, name, _| {
-                let t = fb_ty.as_ref()?;
-                env.member(t, name)
+            |env, name, k| match fb_ty.as_ref() {
+                Some(t) => env.member(t, name),
+                None => method_inputs.get(k).cloned().flatten(),
             },
             out,
             diags,

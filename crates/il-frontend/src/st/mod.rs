@@ -18,6 +18,7 @@ mod conflict_markers;
 pub mod fb_init;
 pub mod fb_init_args;
 pub mod file;
+pub mod implicit_enums;
 pub mod infer;
 pub mod inherit;
 pub mod interface_vars;

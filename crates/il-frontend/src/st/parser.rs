@@ -17,6 +17,8 @@ use crate::lexer::TimeValue;
 use crate::{FileId, Span};
 use diagnostics::{code, Code, Diagnostic, Diagnostics};
 
+mod exst;
+
 /// Deeper nesting of blocks or parentheses than this is reported (E0108) instead of recursing
 /// (each level costs the parser and the lowering about 12 KB of stack in a debug build: 128 levels
 /// stay within a 2 MB thread, as an IDE embedding the library may give).
@@ -72,6 +74,8 @@ pub fn statements(file: FileId, src: &str, base: usize, diags: &mut Diagnostics)
 /// none or it cannot be read (reported, E0107).
 pub fn expression(file: FileId, src: &str, base: usize, diags: &mut Diagnostics) -> Option<Expr> {
     let mut p = Parser::new(file, src, base, diags);
+    // (no statement runs before a transition condition: an assignment in it is E1052)
+    p.no_assign = true;
     if p.at(&Tok::Eof) {
         p.error_here(
             code::E0107,
@@ -116,10 +120,11 @@ struct Parser<'s, 'd> {
     /// Inside a condition evaluated again and again or only sometimes (WHILE, UNTIL, ELSIF): a
     /// method call there cannot be put before the statement.
     no_hoist: usize,
-    /// Set when a block statement was read and dropped (E1044): like END_IF, its END_FOR needs no `;`.
-    dropped_block: bool,
-    /// Inside the right operand of AND_THEN / OR_ELSE (for E0108's message).
+    /// Inside the right operand of AND_THEN / OR_ELSE (for E0108's message, and E1052).
     short_operand: usize,
+    /// Reading an expression alone (an SFC transition condition): no statement can run an ExST
+    /// assignment `(x := e)` before it (E1052).
+    no_assign: bool,
     /// Whether W0324 (AND_THEN / OR_ELSE) was reported for this text.
     short_circuit_noted: bool,
     /// The last error reported (code, span): the same error at the same place again (an unclosed
@@ -161,8 +166,8 @@ impl<'s, 'd> Parser<'s, 'd> {
             expr_start: 0,
             hoisted: Vec::new(),
             no_hoist: 0,
-            dropped_block: false,
             short_operand: 0,
+            no_assign: false,
             short_circuit_noted: false,
             last_error: None,
             diags,
@@ -456,15 +461,14 @@ impl<'s, 'd> Parser<'s, 'd> {
             self.sync();
             return None;
         };
-        let block = std::mem::take(&mut self.dropped_block)
-            || matches!(
-                kind,
-                StmtKind::If { .. }
-                    | StmtKind::Case { .. }
-                    | StmtKind::For { .. }
-                    | StmtKind::While { .. }
-                    | StmtKind::Repeat { .. }
-            );
+        let block = matches!(
+            kind,
+            StmtKind::If { .. }
+                | StmtKind::Case { .. }
+                | StmtKind::For { .. }
+                | StmtKind::While { .. }
+                | StmtKind::Repeat { .. }
+        );
         if self.at(&Tok::Semi) {
             self.bump();
         } else if self.at(&Tok::Error) {
@@ -662,6 +666,8 @@ impl<'s, 'd> Parser<'s, 'd> {
         let mut else_body = None;
         let mut bstart = open;
         let mut first = true;
+        // the ExST assignments of each ELSIF condition (`exst::nest_elsif`)
+        let mut setups: Vec<Vec<Stmt>> = Vec::new();
         loop {
             // (an ELSIF condition is evaluated only when the ones before are FALSE)
             let cond = if first {
@@ -681,12 +687,14 @@ impl<'s, 'd> Parser<'s, 'd> {
                     None => self.expr(),
                 }
             } else {
-                self.no_hoist += 1;
-                self.reject_condition_assignment("an ELSIF condition");
-                let cond = self.expr();
-                self.no_hoist -= 1;
+                // (its assignments run only when the conditions before are FALSE: `exst`)
+                let (cond, setup) = self.late_condition();
+                setups.push(setup);
                 cond
             };
+            if first {
+                setups.push(Vec::new());
+            }
             first = false;
             if !self.expect_kw(Kw::Then, "after the IF condition") {
                 // Garbage before a THEN on the same statement is skipped; without THEN the body
@@ -723,6 +731,8 @@ impl<'s, 'd> Parser<'s, 'd> {
             break;
         }
         self.close_block(Kw::EndIf, open, "IF");
+        let (branches, else_body) =
+            exst::nest_elsif(branches.into_iter().zip(setups).collect(), else_body);
         Some(StmtKind::If {
             branches,
             else_body,
@@ -811,11 +821,19 @@ impl<'s, 'd> Parser<'s, 'd> {
             );
             return None;
         }
-        let t = self.bump();
-        let control = self.ident(&t);
-        if matches!(self.peek(), Tok::LBracket | Tok::Dot | Tok::Caret) {
-            return self.for_with_non_name_control(t);
-        }
+        // `FOR Offset[1] := ...`, `FOR st.i := ...` (CODESYS, TwinCAT): an element or member
+        // counts (see `lower::for_control`)
+        let (control, element) = if matches!(self.peek_at(1), Tok::LBracket | Tok::Dot | Tok::Caret)
+        {
+            let p = self.place()?;
+            let PlaceBase::Name(n) = &p.base else {
+                return None;
+            };
+            (n.clone(), Some(p))
+        } else {
+            let t = self.bump();
+            (self.ident(&t), None)
+        };
         if !self.at(&Tok::Assign) {
             let found = self.describe_current();
             self.error_here(
@@ -844,69 +862,12 @@ impl<'s, 'd> Parser<'s, 'd> {
         self.close_block(Kw::EndFor, open, "FOR");
         Some(StmtKind::For {
             control,
+            element,
             from,
             to,
             by,
             body,
         })
-    }
-
-    /// `FOR Offset[1] := 0 TO n DO ... END_FOR` (TcUnit): IEC 61131-3 ed.3's grammar makes the control
-    /// variable an identifier (`Control_Variable : Identifier`), and the CODESYS help names it a variable
-    /// of an integer type; an array element, a member or a dereference is therefore E1044, once, at the
-    /// control variable. The rest of the loop is read (so that its `END_FOR`, EXITs and nested blocks
-    /// cause no follow-on errors) and dropped.
-    fn for_with_non_name_control(&mut self, first: Token) -> Option<StmtKind> {
-        let start = first.range.start;
-        let mut depth = 0usize;
-        while !matches!(self.peek(), Tok::Eof | Tok::Semi | Tok::Kw(Kw::Do)) {
-            match self.peek() {
-                Tok::LBracket | Tok::LParen => depth += 1,
-                Tok::RBracket | Tok::RParen => depth = depth.saturating_sub(1),
-                Tok::Assign if depth == 0 => break,
-                _ => {}
-            }
-            self.bump();
-        }
-        let written = self.span(start, self.prev_end());
-        self.push_error(
-            Diagnostic::error(
-                code::E1044,
-                format!(
-                    "the FOR control variable `{}` is not a plain variable name",
-                    {
-                        let s = (written.start as usize).saturating_sub(self.base);
-                        let e = (written.end as usize).saturating_sub(self.base);
-                        self.src.get(s..e).unwrap_or("")
-                    }
-                ),
-            )
-            .at(written)
-            .with_primary_label("an array element, member or dereference")
-            .with_hint(
-                "count with a local integer variable and copy it (`FOR i := 0 TO n DO Offset[1] := i; ... END_FOR;`)",
-            ),
-        );
-        if !self.at(&Tok::Assign) {
-            return None;
-        }
-        self.bump();
-        let _ = self.expr();
-        if !self.expect_kw(Kw::To, "after the FOR start value") {
-            return None;
-        }
-        let _ = self.expr();
-        if self.at_kw(Kw::By) {
-            self.bump();
-            let _ = self.expr();
-        }
-        if !self.expect_kw(Kw::Do, "before the FOR loop body") {
-            return None;
-        }
-        let _ = self.nested(|p| p.statement_list());
-        self.close_block(Kw::EndFor, written, "FOR");
-        self.dropped_block = true;
-        Some(StmtKind::Empty)
     }
 
     /// Whether a condition starts with a well-formed place and `:=` (`b :=`, `st.x :=`, `a[i] :=`,
@@ -959,83 +920,17 @@ impl<'s, 'd> Parser<'s, 'd> {
         Some((target, value))
     }
 
-    /// E1045 for an assignment at the start of an ELSIF or UNTIL condition, whose hoisting would
-    /// change when it runs; the assignment is skipped and the value after `:=` read as the condition.
-    fn reject_condition_assignment(&mut self, what: &str) {
-        if !self.at_condition_assignment() {
-            return;
-        }
-        let start = self.cur().range.start;
-        let Some(_) = self.place() else { return };
-        let span = self.span(start, self.cur().range.end);
-        self.bump();
-        self.push_error(
-            Diagnostic::error(
-                code::E1045,
-                format!("an assignment as {what} is not supported"),
-            )
-            .at(span)
-            .with_primary_label("ExST assignment as an expression")
-            .with_hint("assign the variable in a statement before the test (in a REPEAT, as the last statement of its body) and test the variable"),
-        );
-    }
-
     fn while_stmt(&mut self) -> Option<StmtKind> {
         let (_, open) = self.block_open()?;
-        let assignment = self.condition_assignment();
-        self.no_hoist += 1;
-        let cond = match &assignment {
-            Some((target, _)) => Expr {
-                span: target.span,
-                kind: ExprKind::Place(target.clone()),
-            },
-            None => self.expr(),
-        };
-        self.no_hoist -= 1;
+        let (cond, setup) = self.late_condition();
         if !self.expect_kw(Kw::Do, "after the WHILE condition") {
             return None;
         }
-        let mut body = self.nested(|p| p.statement_list());
+        let body = self.nested(|p| p.statement_list());
         self.close_block(Kw::EndWhile, open, "WHILE");
-        if let Some((target, value)) = assignment {
-            // `WHILE b := e DO body END_WHILE` (ExST) runs the assignment at each test: read as
-            // `WHILE TRUE DO b := e; IF NOT b THEN EXIT; END_IF; body END_WHILE` (a CONTINUE in
-            // the body goes back to the test, so the assignment runs again).
-            let span = target.span.to(value.span);
-            let exit = Stmt {
-                span,
-                kind: StmtKind::If {
-                    branches: vec![CondBranch {
-                        cond: Expr {
-                            span: cond.span,
-                            kind: ExprKind::Unary {
-                                op: UnaryOp::Not,
-                                operand: Box::new(cond.clone()),
-                            },
-                        },
-                        body: vec![Stmt {
-                            span,
-                            kind: StmtKind::Exit,
-                        }],
-                        span,
-                    }],
-                    else_body: None,
-                },
-            };
-            let assign = Stmt {
-                span,
-                kind: StmtKind::Assign { target, value },
-            };
-            body.splice(0..0, [assign, exit]);
-            let always = Expr {
-                span: cond.span,
-                kind: ExprKind::Literal(Literal {
-                    kind: LiteralKind::Bool(true),
-                    type_prefix: None,
-                    span: cond.span,
-                }),
-            };
-            return Some(StmtKind::While { cond: always, body });
+        if !setup.is_empty() {
+            // `WHILE b := e DO`, `WHILE (c := c - 1) > 0 DO` (ExST): the assignment runs at each test
+            return Some(exst::while_with_setup(cond, setup, body));
         }
         Some(StmtKind::While { cond, body })
     }
@@ -1047,6 +942,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             self.close_block(Kw::Until, open, "REPEAT");
             return Some(StmtKind::Repeat {
                 body,
+                setup: Vec::new(),
                 until: Expr {
                     kind: ExprKind::Error,
                     span: open,
@@ -1054,12 +950,10 @@ impl<'s, 'd> Parser<'s, 'd> {
             });
         }
         self.bump();
-        self.no_hoist += 1;
-        self.reject_condition_assignment("an UNTIL condition");
-        let until = self.expr();
-        self.no_hoist -= 1;
+        // `UNTIL (n := n + 1) >= 10` (ExST): the assignment runs before each test (`exst`)
+        let (until, setup) = self.late_condition();
         self.close_block(Kw::EndRepeat, open, "REPEAT");
-        Some(StmtKind::Repeat { body, until })
+        Some(StmtKind::Repeat { body, setup, until })
     }
 
     // ------------------------------------------------------------ places and calls
@@ -1614,6 +1508,10 @@ impl<'s, 'd> Parser<'s, 'd> {
             Tok::TypePrefix => self.typed_literal(),
             Tok::LParen => {
                 self.bump();
+                // `(x := e)`: ExST's assignment as an expression (see `exst`)
+                if self.at_condition_assignment() {
+                    return self.paren_assignment(here);
+                }
                 let mut inner = self.expr();
                 if self.at(&Tok::RParen) {
                     self.bump();
