@@ -1204,6 +1204,25 @@ pub fn parse_text(
                 blank(&mut text, pr.whole.clone());
             }
         }
+        if let Some(at) = begin_il_section(src, p.body.clone()) {
+            // `BEGIN_IL` ... `END_IL`: IL inside an ST body (Straton / K5 / Kollmorgen KAS
+            // workbenches). IEC 61131-3 writes a body in one language; one error, and the body
+            // is not compiled (as ST it would be one error per IL line).
+            diags.push(
+                Diagnostic::error(
+                    code::E1046,
+                    format!(
+                        "`{}`: `BEGIN_IL` ... `END_IL` (an instruction list section inside an ST body) is a workbench extension, not IEC 61131-3",
+                        p.name
+                    ),
+                )
+                .at(Span::new(file, at, at + "BEGIN_IL".len()))
+                .with_primary_label("IL section in an ST body")
+                .with_hint("write the section in ST, or move its instructions into a FUNCTION or FUNCTION_BLOCK whose body is IL and call it; the body of this POU is not compiled"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
+        }
         match lang {
             Lang::St => {
                 // the methods are cut out of the body (blanked, so positions stay) and lowered
@@ -1889,4 +1908,20 @@ mod tests {
         let st = "PROGRAM p\nVAR t : TON; x : BOOL; END_VAR\nt(IN := x,\n  PT := T#1s);\nx := t.Q\n  AND x;\nEND_PROGRAM";
         assert_eq!(scan(st)[0].lang, Lang::St);
     }
+}
+
+/// Where a `BEGIN_IL` line (the IL section of Straton-style workbenches) starts in `body`, if one
+/// does: the word at the start of a line, outside comments as far as a line start shows.
+fn begin_il_section(src: &str, body: std::ops::Range<usize>) -> Option<usize> {
+    let text = src.get(body.clone())?;
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        let word = t.split(|c: char| !c.is_ascii_alphanumeric() && c != '_').next();
+        if word.is_some_and(|w| w.eq_ignore_ascii_case("BEGIN_IL")) {
+            return Some(body.start + at + (line.len() - t.len()));
+        }
+        at += line.len();
+    }
+    None
 }

@@ -406,6 +406,22 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
             {
                 Tok::Ident
             }
+            // `16#D013THEN`: a based literal run into the keyword after it (TwinCAT compiles it:
+            // the literal ends at its last digit, as the longest-match rule of IEC 61131-3's
+            // token grammar reads it). Only a keyword tail splits: `16#FG` stays E0103.
+            Err(LexError::BadLiteral(_)) if based_then_keyword(lx.slice()).is_some() => {
+                let (digits, k) = based_then_keyword(lx.slice()).expect("checked");
+                let v = literal::based_int(&lx.slice()[..digits]).expect("checked");
+                out.push(Token {
+                    tok: Tok::Int(v),
+                    range: range.start..range.start + digits,
+                });
+                out.push(Token {
+                    tok: Tok::Kw(k),
+                    range: range.start + digits..range.end,
+                });
+                continue;
+            }
             Err(e) => {
                 problems.push(match e {
                     LexError::UnexpectedChar => Problem::UnexpectedChar(range.clone()),
@@ -428,6 +444,29 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
         range: src.len()..src.len(),
     });
     (out, problems)
+}
+
+/// For a based literal whose letters run into a keyword (`16#D013THEN`, `2#1010AND`): the length
+/// of the literal (up to its last digit, which must leave at least one) and the keyword.
+fn based_then_keyword(text: &str) -> Option<(usize, Kw)> {
+    let (base, digits) = text.split_once('#')?;
+    let radix = match base {
+        "2" => 2,
+        "8" => 8,
+        "16" => 16,
+        _ => return None,
+    };
+    let end = digits
+        .char_indices()
+        .find(|&(_, c)| c != '_' && !c.is_digit(radix))?
+        .0;
+    if end == 0 || digits[..end].ends_with('_') {
+        return None;
+    }
+    let k = keyword(&digits[end..])?;
+    let len = base.len() + 1 + end;
+    literal::based_int(&text[..len]).ok()?;
+    Some((len, k))
 }
 
 /// Skips a possibly nested `(* ... *)` comment; one that nesting leaves unclosed but a `*)` follows
