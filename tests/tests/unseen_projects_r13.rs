@@ -121,3 +121,43 @@ fn an_il_section_inside_an_st_body_is_one_e1046() {
         ["kw.st:4:3: error[E1046]: `kw`: `BEGIN_IL` ... `END_IL` (an instruction list section inside an ST body) is a workbench extension, not IEC 61131-3"]
     );
 }
+
+/// `USING Siemens.Simatic.S71500.Tasks;` (IEC 61131-3 ed. 3 namespaces; benniredds/ProgettoAx_A_B, a
+/// SIMATIC AX project) is one W1421 warning and ignored: a program that uses nothing from the
+/// namespace runs. Before: the file was read as IL (W0001 "instructions outside any POU", E0007 for
+/// the `;`).
+#[test]
+fn a_using_directive_is_one_warning_and_ignored() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(
+        &dir,
+        "main.st",
+        "USING System.Timer;\nUSING Siemens.Simatic.S71500.Tasks, AxUnit;\n\nPROGRAM main\nVAR\n  n : INT;\n  q : BOOL;\nEND_VAR\n\
+         n := n + 2;\nq := n > 4;\nEND_PROGRAM\n",
+    );
+    let (trace, stderr) = run_traced_files(&[&f], 3, "main.n,main.q");
+    assert_eq!(trace, "cycle,time_ms,main.n,main.q\n0,0,2,0\n1,10,4,0\n2,20,6,1\n");
+    assert!(
+        stderr.contains("main.st:1:1: warning[W1421]: `USING System.Timer`: ladderc has no namespaces; the directive is ignored"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("main.st:2:1: warning[W1421]: `USING Siemens.Simatic.S71500.Tasks, AxUnit`"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("W0001") && !stderr.contains("E0007"), "{stderr}");
+}
+
+/// What only the namespace declares is reported where it is used, naming it (E1003), each error
+/// located; the directive itself stays a warning.
+#[test]
+fn a_block_only_the_namespace_declares_is_named_where_it_is_used() {
+    let heads = rejected_heads(
+        "ax.st",
+        "PROGRAM main\nUSING Siemens.Simatic.S71500.Clocks;\nVAR\n  clock : LocalClock;\n  n : INT;\nEND_VAR\n\
+         n := n + 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!(heads.len(), 2, "{heads:?}");
+    assert!(heads[0].starts_with("ax.st:2:1: warning[W1421]"), "{heads:?}");
+    assert_eq!(heads[1], "ax.st:4:11: error[E1003]: unknown type `LocalClock`");
+}

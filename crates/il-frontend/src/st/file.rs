@@ -811,7 +811,7 @@ pub fn parse_text(
             return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
         }
     }
-    let (unqualified, unreferenced, unlisted, uninitialised, conditioned);
+    let (unqualified, unreferenced, unlisted, uninitialised, conditioned, unimported);
     // `{IF defined (X)}` ... `{END_IF}`: the sections not compiled blanked (`conditional`)
     let src = match super::conditional::conditional_sections(file, src, &problems, diags) {
         Some(t) => {
@@ -854,11 +854,20 @@ pub fn parse_text(
             }
             None => src,
         };
-        match library_qualifiers(file, src, &toks, diags) {
+        let src = match library_qualifiers(file, src, &toks, diags) {
             Some(t) => {
                 unqualified = t;
                 (toks, problems) = lex(&unqualified);
                 unqualified.as_str()
+            }
+            None => src,
+        };
+        // `USING Siemens.Simatic.S71500.Tasks;`: blanked, one W1421 each (`using`)
+        match super::using::namespace_imports(file, src, &toks, diags) {
+            Some(t) => {
+                unimported = t;
+                (toks, problems) = lex(&unimported);
+                unimported.as_str()
             }
             None => src,
         }
