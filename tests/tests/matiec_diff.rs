@@ -467,6 +467,13 @@ fn parse_variables_csv(text: &str) -> (Vec<(String, String)>, Vec<MVar>, u64) {
             "p" if f.len() >= 3 => programs.push((f[1].to_string(), f[2].to_string())),
             // variables of program instances (`CFG.RES.INST.X`); a configuration's or resource's
             // globals (`CFG.X`, `CFG.RES.X`) are read through the programs' copies
+            // an SFC's steps, actions and transitions (`INST.STEP0.X` at `__step_list[0].X`,
+            // `INST.A.Q`, `INST.S0->S1`) are matiec's own state, not variables of the program: the
+            // program's variables that its actions set are compared
+            "v" if f.len() >= 5
+                && ["__step_list", "__action_list", "__debug_transition_list"]
+                    .iter()
+                    .any(|sfc| f[3].contains(sfc)) => {}
             "v" if f.len() >= 5
                 && matches!(f[1], "VAR" | "IN" | "OUT" | "MEM")
                 && f[2].split('.').count() >= 4 =>

@@ -161,3 +161,50 @@ fn a_block_only_the_namespace_declares_is_named_where_it_is_used() {
     assert!(heads[0].starts_with("ax.st:2:1: warning[W1421]"), "{heads:?}");
     assert_eq!(heads[1], "ax.st:4:11: error[E1003]: unknown type `LocalClock`");
 }
+
+/// A textual SFC as the OpenPLC Editor exports it (Sub-Hank/PLC-Traffic-Light-Control's `moteur.st`,
+/// reproduced) runs: the action stored (S) in the initial step runs the
+/// timers in every later scan, N actions set the lamps, the transitions are `:= expr`. Red 2 s, green
+/// 3 s, amber 1 s (at 20 ms a scan: each change one scan after the timer's Q). The same program is in
+/// the matiec_diff corpus (`r13_sfc_light.st`), agreeing with matiec over 700 scans.
+#[test]
+fn an_openplc_text_sfc_with_a_stored_action_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(
+        &dir,
+        "light.st",
+        "PROGRAM light\n  VAR\n    red AT %QX0.0 : BOOL;\n    amber AT %QX0.1 : BOOL;\n    green AT %QX0.2 : BOOL;\n  END_VAR\n\
+         \x20 VAR\n    in_red : BOOL; in_green : BOOL; in_amber : BOOL;\n    t_red : TON; t_green : TON; t_amber : TON;\n  END_VAR\n\
+         \x20 INITIAL_STEP S_Red:\n    red(N);\n    in_red(N);\n    TIMERS(S);\n  END_STEP\n\
+         \x20 ACTION TIMERS:\n    t_red(IN := in_red, PT := T#2s);\n    t_green(IN := in_green, PT := T#3s);\n    t_amber(IN := in_amber, PT := T#1s);\n  END_ACTION\n\
+         \x20 TRANSITION FROM S_Red TO S_Green\n    := t_red.Q;\n  END_TRANSITION\n\
+         \x20 STEP S_Green:\n    green(N);\n    in_green(N);\n  END_STEP\n\
+         \x20 TRANSITION FROM S_Green TO S_Amber\n    := t_green.Q;\n  END_TRANSITION\n\
+         \x20 STEP S_Amber:\n    amber(N);\n    in_amber(N);\n  END_STEP\n\
+         \x20 TRANSITION FROM S_Amber TO S_Red\n    := t_amber.Q;\n  END_TRANSITION\nEND_PROGRAM\n",
+    );
+    let out = common::ladderc()
+        .args(["run"])
+        .arg(&f)
+        .args(["--cycles", "700", "--cycle-ms", "20", "--trace", "-"])
+        .args(["--watch", "light.red,light.green,light.amber"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let trace = String::from_utf8_lossy(&out.stdout);
+    // the scans where the lamps change
+    let mut changes = Vec::new();
+    let mut last = String::new();
+    for line in trace.lines().skip(1) {
+        let (scan, lamps) = line.split_once(',').unwrap();
+        let lamps = lamps.split_once(',').unwrap().1.to_string();
+        if lamps != last {
+            changes.push(format!("{scan}:{lamps}"));
+            last = lamps;
+        }
+    }
+    assert_eq!(
+        changes,
+        ["0:1,0,0", "101:0,1,0", "252:0,0,1", "303:1,0,0", "404:0,1,0", "555:0,0,1", "606:1,0,0"]
+    );
+}
