@@ -208,3 +208,24 @@ fn an_openplc_text_sfc_with_a_stored_action_runs() {
         ["0:1,0,0", "101:0,1,0", "252:0,0,1", "303:1,0,0", "404:0,1,0", "555:0,0,1", "606:1,0,0"]
     );
 }
+
+/// A project that declares its own `MC_Power` (and its own axis type), as the motion library of
+/// anderssandstrom/ecmc_plugin_strucpp does for the ecmc runtime: the block is the project's, run as
+/// written. Before: E1002 "`MC_Power` is declared twice", first declared in `<PLCopen blocks>`,
+/// ladderc's own library block, which the project never asked for.
+#[test]
+fn a_project_s_own_mc_power_is_not_ladderc_s_library_block() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(
+        &dir,
+        "own_motion.st",
+        "TYPE MY_AXIS_REF :\nSTRUCT\n  AxisIndex : DINT;\n  Enabled : BOOL;\nEND_STRUCT;\nEND_TYPE\n\n\
+         FUNCTION_BLOCK MC_Power\nVAR_INPUT\n  Enable : BOOL;\nEND_VAR\nVAR_IN_OUT\n  Axis : MY_AXIS_REF;\nEND_VAR\n\
+         VAR_OUTPUT\n  Status : BOOL;\nEND_VAR\nAxis.Enabled := Enable;\nStatus := Enable AND Axis.AxisIndex > 0;\nEND_FUNCTION_BLOCK\n\n\
+         PROGRAM main\nVAR\n  ax : MY_AXIS_REF := (AxisIndex := 2);\n  pwr : MC_Power;\n  n : INT;\n  on : BOOL;\nEND_VAR\n\
+         n := n + 1;\npwr(Enable := n >= 2, Axis := ax);\non := pwr.Status;\nEND_PROGRAM\n",
+    );
+    let (trace, stderr) = run_traced_files(&[&f], 3, "main.on,main.ax.Enabled");
+    assert_eq!(trace, "cycle,time_ms,main.on,main.ax.Enabled\n0,0,0,0\n1,10,1,1\n2,20,1,1\n");
+    assert!(!stderr.contains("E1002"), "{stderr}");
+}
