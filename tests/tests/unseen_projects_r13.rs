@@ -229,3 +229,27 @@ fn a_project_s_own_mc_power_is_not_ladderc_s_library_block() {
     assert_eq!(trace, "cycle,time_ms,main.on,main.ax.Enabled\n0,0,0,0\n1,10,1,1\n2,20,1,1\n");
     assert!(!stderr.contains("E1002"), "{stderr}");
 }
+
+/// A SIMATIC AX configuration (benniredds/ProgettoAx_A_B's form): tasks declared by their kind
+/// (`TASK Main : ProgramCycle;`, a type of the `Siemens.Simatic.S71500.Tasks` namespace) are one
+/// E1048 each, at the kind; the programs they run are not reported again. Before: W0001
+/// "instructions outside any POU", E0007 for the USING's `;`, one E0011 "unexpected `:`" per task.
+#[test]
+fn a_task_declared_by_its_kind_is_one_e1048() {
+    let heads = rejected_heads(
+        "configuration.st",
+        "USING Siemens.Simatic.S71500.Tasks;\n\nCONFIGURATION Cfg\n    TASK MyStartupTask : Startup;\n    TASK MyProgramCycleTask : ProgramCycle;\n\n\
+         \x20   PROGRAM P1 WITH MyStartupTask : Init;\n    PROGRAM P2 WITH MyProgramCycleTask : Main;\n\n\
+         \x20   VAR_GLOBAL\n        myOutput AT %Q0.0 : BOOL;\n    END_VAR\nEND_CONFIGURATION\n\n\
+         PROGRAM Init\nVAR_EXTERNAL\n  myOutput : BOOL;\nEND_VAR\nmyOutput := TRUE;\nEND_PROGRAM\n\n\
+         PROGRAM Main\nVAR_EXTERNAL\n  myOutput : BOOL;\nEND_VAR\nmyOutput := NOT myOutput;\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "configuration.st:1:1: warning[W1421]: `USING Siemens.Simatic.S71500.Tasks`: ladderc has no namespaces; the directive is ignored",
+            "configuration.st:4:26: error[E1048]: task `MyStartupTask` is declared by its kind `Startup`, not by a schedule",
+            "configuration.st:5:31: error[E1048]: task `MyProgramCycleTask` is declared by its kind `ProgramCycle`, not by a schedule",
+        ]
+    );
+}

@@ -811,7 +811,7 @@ pub fn parse_text(
             return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
         }
     }
-    let (unqualified, unreferenced, unlisted, uninitialised, conditioned, unimported);
+    let (unqualified, unreferenced, unlisted, uninitialised, conditioned, unimported, untasked);
     // `{IF defined (X)}` ... `{END_IF}`: the sections not compiled blanked (`conditional`)
     let src = match super::conditional::conditional_sections(file, src, &problems, diags) {
         Some(t) => {
@@ -863,11 +863,20 @@ pub fn parse_text(
             None => src,
         };
         // `USING Siemens.Simatic.S71500.Tasks;`: blanked, one W1421 each (`using`)
-        match super::using::namespace_imports(file, src, &toks, diags) {
+        let src = match super::using::namespace_imports(file, src, &toks, diags) {
             Some(t) => {
                 unimported = t;
                 (toks, problems) = lex(&unimported);
                 unimported.as_str()
+            }
+            None => src,
+        };
+        // `TASK Main : ProgramCycle;`: one E1048 each, blanked with the `WITH Main` (`using`)
+        match super::using::typed_tasks(file, src, &toks, diags) {
+            Some(t) => {
+                untasked = t;
+                (toks, problems) = lex(&untasked);
+                untasked.as_str()
             }
             None => src,
         }
