@@ -1,33 +1,42 @@
 //! Constructs of the thirteenth acceptance run of issue #13 (2026-12-04, branch `round13`).
 //!
 //! **The round.** Public units no earlier round had tried, checked and run as a new user would
-//! (`ladderc run FILES --cycles 5`, or `check`; snapshots of 2026-12-04), and IL programs never seen
-//! run side by side with matiec (`scripts/matiec-diff.sh`, iec2c 6bb2c33). TwinCAT 3 projects
-//! (`.plcproj`): zhaoshutao/HEPSCollimator, HEPSPLC, IAMWPLC, PSPLC, PWFACLM_PLC, TEST; IL text
-//! files: PickStone78/plc-demo `test.il`, hiperiondev/librelogic_newvm `test.il` and `test2.il`;
-//! IL programs of vendor manuals and an IL tutorial, reproduced here (their text is not
-//! redistributable): Beckhoff TwinCAT 2 PLC Control "Instruction List (IL)" (two examples),
-//! Schneider Electric Machine Expert "Instruction List (IL) Language", IEC 61131-3's table of IL
-//! instruction fields, the K5 / Kollmorgen KAS workbench help (`&`, `BEGIN_IL`), an IL tutorial's
-//! bounded counter, scaling, parentheses, latch and timer examples.
+//! (`ladderc run FILES --cycles 5`, or `check`; snapshots of 2026-12-04), and programs never seen run
+//! side by side with matiec (`scripts/matiec-diff.sh`, iec2c 6bb2c33). TwinCAT 3 projects:
+//! zhaoshutao/HEPSCollimator, HEPSPLC, IAMWPLC, PSPLC, PWFACLM_PLC, TEST; ericocruz/ST01_State_machine,
+//! msabbir007/PLC_Carwashing_Plant, stdaw/lift-hazi, iiisc/SDT200---Styrteknik,
+//! martinmollaian/plc-automation-project. OpenPLC / Beremiz: Sub-Hank/PLC-Traffic-Light-Control,
+//! tomas-lp/tpa-lab2-montecarlo, iruqqoyah/ICDFA_ACIS, nikhilv2/SPLC_Runtime. Other ST:
+//! benniredds/ProgettoAx_A_B (SIMATIC AX), nni537014-collab/st, ghaith/rusty_avr (RuSTy),
+//! anderssandstrom/ecmc_plugin_strucpp (STruCpp), jubnzv/iec-checker's `test/st` (50 files). IL text:
+//! PickStone78/plc-demo `test.il`, hiperiondev/librelogic_newvm `test.il`, `test2.il`. IL of manuals,
+//! reproduced (their text is not redistributable): Beckhoff TwinCAT 2 PLC Control "Instruction List
+//! (IL)", Schneider Electric Machine Expert "Instruction List (IL) Language", IEC 61131-3's table of IL
+//! instruction fields, an IL tutorial (two programs), the K5 / Kollmorgen KAS workbench help (`&`,
+//! `BEGIN_IL`).
 //!
 //! | | units | run (or check) and behave | rejected, naming what is missing or wrong | ladderc gap |
 //! |---|---|---|---|---|
-//! | before | 20 (6 TwinCAT projects, 3 IL files, 11 IL/ST programs of manuals) | 9 | 8 | 3 |
-//! | after | 20 | 10 | 10 | 0 |
+//! | before | 30 (11 TwinCAT, 4 OpenPLC/Beremiz, 5 other ST, 3 IL files, 7 IL/ST of manuals) | 13 | 10 | 7 |
+//! | after | 30 | 13 | 16 | 1: a TwinCAT SFC body (iiisc, E0321) |
 //!
-//! Gaps of this round, fixed here: a variable of a program read by the program's name with an
-//! integer literal beside it (`UserMode.fGap / 2`, zhaoshutao/TEST and HEPSPLC: E1012 "LINT_TO_LREAL
-//! converts from LINT, not LREAL", the literal was typed without its context); a based literal run
-//! into the keyword after it (`16#D013THEN`, zhaoshutao/IAMWPLC: E0103 and E0100); an IL section in
-//! an ST body (`BEGIN_IL` ... `END_IL`, the K5/KAS workbench: one error per ST line, now one E1046).
-//! The rejections name: Beckhoff libraries (Tc2_SoE `FB_SoERead`, Tc2_ModbusSrv `FB_MBReadRegs`,
-//! Tc2_SerialCom `ComBuffer`, Tc2_System `NT_StartProcess`, Tc2_Utilities `TC_Restart`, the UPS
-//! blocks of Tc2_SUPS, Tc2_MC2's `MC_Jog` and `NcToPlc` members without a counterpart, E1003/E1042),
-//! non-IEC IL dialects (`%O:0`, `%i0/4`, `JMP?`, `;` comments: E0006, E0001). The six IL programs
-//! and one ST program are in the matiec_diff corpus (`r13_*`), each agreeing with matiec in every
-//! value; the CODESYS form of a multi-line IL call with its `)` after the last argument, which
-//! matiec refuses (IEC 61131-3 puts it on a line of its own), runs the same in ladderc.
+//! Gaps of this round, fixed here: a program's variable read by the program's name with an integer
+//! literal beside it (`UserMode.fGap / 2`, zhaoshutao/TEST and HEPSPLC: E1012 "LINT_TO_LREAL converts
+//! from LINT, not LREAL"); a based literal run into the keyword after it (`16#D013THEN`,
+//! zhaoshutao/IAMWPLC: E0103 and E0100); `USING ns;` (SIMATIC AX: the file read as IL, W0001, E0007)
+//! now W1421, and a task declared by its kind (`TASK Main : ProgramCycle;`) one E1048; a project's own
+//! `MC_Power` ... (ecmc_plugin_strucpp: E1002 against ladderc's `<PLCopen blocks>`); `BEGIN_IL` ...
+//! `END_IL` in an ST body (one error per ST line, now one E1046). The rejections name: Beckhoff
+//! libraries (Tc2_SoE `FB_SoERead`, Tc2_ModbusSrv `FB_MBReadRegs`, Tc2_SerialCom `ComBuffer`, Tc2_System
+//! `NT_StartProcess`, Tc2_Utilities `TC_Restart`, Tc2_SUPS's UPS blocks, Tc2_MC2's `MC_Jog` and
+//! `NcToPlc` members, E1003/E1042), SIMATIC AX's task kinds (E1048), errors of the sources themselves
+//! (a block instance declared twice, E1002; a configuration naming a program the file lacks, E1024;
+//! initial values with units `0.5 ft`, E3011; `gvl.timer1sec;` as a statement, E0106; a GVL the
+//! repository lacks, E1001; an example reading an output its library block lacks, E1011; `DT` as a
+//! variable name, E1031), RuSTy's bit access by a variable (`%Xpin`) and non-IEC IL dialects (`%O:0`,
+//! `%i0/4`, `JMP?`: E0006, E0001). Side by side with matiec: the seven IL/ST programs and an OpenPLC
+//! text SFC are in the matiec_diff corpus (`r13_*`), each agreeing in every value; OpenPLC programs of
+//! nikhilv2 (100 cycles), tomas-lp (600) and Sub-Hank (400) agree too (not redistributable: no licence).
 //!
 //! Each test is a small reproduction written here, run through `ladderc run` (C compiled with
 //! the sanitizers) or `ladderc check`. The repositories' and manuals' texts are not copied here.
@@ -100,9 +109,13 @@ fn a_based_literal_with_a_wrong_digit_is_still_e0103() {
         "bad.st",
         "PROGRAM main\nVAR w : WORD; END_VAR\nw := 16#FG;\nIF w = 16#D013ELSE w := 1; END_IF;\nEND_PROGRAM\n",
     );
-    assert_eq!(heads[0], "bad.st:3:6: error[E0103]: invalid literal: `G` is not a base-16 digit");
+    assert_eq!(
+        heads[0],
+        "bad.st:3:6: error[E0103]: invalid literal: `G` is not a base-16 digit"
+    );
     assert!(
-        heads[1].starts_with("bad.st:4:8: error[E0103]: invalid literal: `L` is not a base-16 digit"),
+        heads[1]
+            .starts_with("bad.st:4:8: error[E0103]: invalid literal: `L` is not a base-16 digit"),
         "{heads:?}"
     );
 }
@@ -136,16 +149,23 @@ fn a_using_directive_is_one_warning_and_ignored() {
          n := n + 2;\nq := n > 4;\nEND_PROGRAM\n",
     );
     let (trace, stderr) = run_traced_files(&[&f], 3, "main.n,main.q");
-    assert_eq!(trace, "cycle,time_ms,main.n,main.q\n0,0,2,0\n1,10,4,0\n2,20,6,1\n");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.n,main.q\n0,0,2,0\n1,10,4,0\n2,20,6,1\n"
+    );
     assert!(
         stderr.contains("main.st:1:1: warning[W1421]: `USING System.Timer`: ladderc has no namespaces; the directive is ignored"),
         "{stderr}"
     );
     assert!(
-        stderr.contains("main.st:2:1: warning[W1421]: `USING Siemens.Simatic.S71500.Tasks, AxUnit`"),
+        stderr
+            .contains("main.st:2:1: warning[W1421]: `USING Siemens.Simatic.S71500.Tasks, AxUnit`"),
         "{stderr}"
     );
-    assert!(!stderr.contains("W0001") && !stderr.contains("E0007"), "{stderr}");
+    assert!(
+        !stderr.contains("W0001") && !stderr.contains("E0007"),
+        "{stderr}"
+    );
 }
 
 /// What only the namespace declares is reported where it is used, naming it (E1003), each error
@@ -158,8 +178,14 @@ fn a_block_only_the_namespace_declares_is_named_where_it_is_used() {
          n := n + 1;\nEND_PROGRAM\n",
     );
     assert_eq!(heads.len(), 2, "{heads:?}");
-    assert!(heads[0].starts_with("ax.st:2:1: warning[W1421]"), "{heads:?}");
-    assert_eq!(heads[1], "ax.st:4:11: error[E1003]: unknown type `LocalClock`");
+    assert!(
+        heads[0].starts_with("ax.st:2:1: warning[W1421]"),
+        "{heads:?}"
+    );
+    assert_eq!(
+        heads[1],
+        "ax.st:4:11: error[E1003]: unknown type `LocalClock`"
+    );
 }
 
 /// A textual SFC as the OpenPLC Editor exports it (Sub-Hank/PLC-Traffic-Light-Control's `moteur.st`,
@@ -205,7 +231,15 @@ fn an_openplc_text_sfc_with_a_stored_action_runs() {
     }
     assert_eq!(
         changes,
-        ["0:1,0,0", "101:0,1,0", "252:0,0,1", "303:1,0,0", "404:0,1,0", "555:0,0,1", "606:1,0,0"]
+        [
+            "0:1,0,0",
+            "101:0,1,0",
+            "252:0,0,1",
+            "303:1,0,0",
+            "404:0,1,0",
+            "555:0,0,1",
+            "606:1,0,0"
+        ]
     );
 }
 
@@ -226,7 +260,10 @@ fn a_project_s_own_mc_power_is_not_ladderc_s_library_block() {
          n := n + 1;\npwr(Enable := n >= 2, Axis := ax);\non := pwr.Status;\nEND_PROGRAM\n",
     );
     let (trace, stderr) = run_traced_files(&[&f], 3, "main.on,main.ax.Enabled");
-    assert_eq!(trace, "cycle,time_ms,main.on,main.ax.Enabled\n0,0,0,0\n1,10,1,1\n2,20,1,1\n");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.on,main.ax.Enabled\n0,0,0,0\n1,10,1,1\n2,20,1,1\n"
+    );
     assert!(!stderr.contains("E1002"), "{stderr}");
 }
 

@@ -1116,9 +1116,10 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
         .flat_map(|u| u.items.iter())
         .flat_map(|item| match item {
             LibraryElement::Pou(p) => vec![p.name.name.to_ascii_uppercase()],
-            LibraryElement::DataTypes(ts) => {
-                ts.iter().map(|t| t.name.name.to_ascii_uppercase()).collect()
-            }
+            LibraryElement::DataTypes(ts) => ts
+                .iter()
+                .map(|t| t.name.name.to_ascii_uppercase())
+                .collect(),
             _ => vec![],
         })
         .collect();
@@ -1130,12 +1131,17 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
         let blocks: Vec<&il_frontend::ast::VarBlock> = match item {
             LibraryElement::Pou(p) => p.var_blocks.iter().collect(),
             LibraryElement::GlobalVars(b) => vec![b],
-            LibraryElement::Configuration(c) => c.globals.iter().chain(c.resources.iter().flat_map(|r| r.globals.iter())).collect(),
+            LibraryElement::Configuration(c) => c
+                .globals
+                .iter()
+                .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+                .collect(),
             LibraryElement::DataTypes(_) | LibraryElement::Action(_) => vec![],
         };
-        blocks.iter().flat_map(|b| b.vars.iter()).any(|v| {
-            matches!(&v.ty, TypeRef::Named(t) if library_type(t))
-        })
+        blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .any(|v| matches!(&v.ty, TypeRef::Named(t) if library_type(t)))
     })
 }
 

@@ -1935,7 +1935,9 @@ fn begin_il_section(src: &str, body: std::ops::Range<usize>) -> Option<usize> {
     let mut at = 0;
     for line in text.split_inclusive('\n') {
         let t = line.trim_start();
-        let word = t.split(|c: char| !c.is_ascii_alphanumeric() && c != '_').next();
+        let word = t
+            .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .next();
         if word.is_some_and(|w| w.eq_ignore_ascii_case("BEGIN_IL")) {
             return Some(body.start + at + (line.len() - t.len()));
         }

@@ -93,9 +93,15 @@ fn starts_statement(src: &str, toks: &[Token], k: usize) -> bool {
     }
     k >= 2
         && toks[k - 1].tok == Tok::Ident
-        && ["PROGRAM", "FUNCTION_BLOCK", "FUNCTION", "NAMESPACE", "CONFIGURATION"]
-            .iter()
-            .any(|w| is_word(src, &toks[k - 2], w))
+        && [
+            "PROGRAM",
+            "FUNCTION_BLOCK",
+            "FUNCTION",
+            "NAMESPACE",
+            "CONFIGURATION",
+        ]
+        .iter()
+        .any(|w| is_word(src, &toks[k - 2], w))
 }
 
 /// See the module documentation: `TASK name : Kind;` in a CONFIGURATION or RESOURCE.
