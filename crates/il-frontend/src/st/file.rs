@@ -1890,6 +1890,24 @@ fn this_shadowed(
     out
 }
 
+/// Where a `BEGIN_IL` line (the IL section of Straton-style workbenches) starts in `body`, if one
+/// does: the word at the start of a line, outside comments as far as a line start shows.
+fn begin_il_section(src: &str, body: std::ops::Range<usize>) -> Option<usize> {
+    let text = src.get(body.clone())?;
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        let word = t
+            .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+            .next();
+        if word.is_some_and(|w| w.eq_ignore_ascii_case("BEGIN_IL")) {
+            return Some(body.start + at + (line.len() - t.len()));
+        }
+        at += line.len();
+    }
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1926,22 +1944,4 @@ mod tests {
         let st = "PROGRAM p\nVAR t : TON; x : BOOL; END_VAR\nt(IN := x,\n  PT := T#1s);\nx := t.Q\n  AND x;\nEND_PROGRAM";
         assert_eq!(scan(st)[0].lang, Lang::St);
     }
-}
-
-/// Where a `BEGIN_IL` line (the IL section of Straton-style workbenches) starts in `body`, if one
-/// does: the word at the start of a line, outside comments as far as a line start shows.
-fn begin_il_section(src: &str, body: std::ops::Range<usize>) -> Option<usize> {
-    let text = src.get(body.clone())?;
-    let mut at = 0;
-    for line in text.split_inclusive('\n') {
-        let t = line.trim_start();
-        let word = t
-            .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
-            .next();
-        if word.is_some_and(|w| w.eq_ignore_ascii_case("BEGIN_IL")) {
-            return Some(body.start + at + (line.len() - t.len()));
-        }
-        at += line.len();
-    }
-    None
 }

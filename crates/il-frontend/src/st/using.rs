@@ -37,10 +37,7 @@ pub(super) fn namespace_imports(
         // the names: `a.b.c` [`, d.e`]
         let mut j = k + 1;
         let mut names = Vec::new();
-        loop {
-            let Some(first) = toks.get(j).filter(|t| t.tok == Tok::Ident) else {
-                break;
-            };
+        while let Some(first) = toks.get(j).filter(|t| t.tok == Tok::Ident) {
             let mut name = word(src, first).to_string();
             j += 1;
             while toks.get(j).is_some_and(|t| t.tok == Tok::Dot)
