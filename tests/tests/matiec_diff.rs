@@ -1291,6 +1291,22 @@ fn variables_csv_gives_the_printed_variables_and_the_tick() {
     assert!(main.contains("RES__INST.TM.ET.value.tv_sec"), "{main}");
 }
 
+/// An SFC program's steps, actions and transitions (matiec's `__step_list`, `__action_list`,
+/// `__debug_transition_list`) are left out: matiec's state, not variables of the program (and no
+/// `.value` member in its C). The program's own variables, its step lamps among them, are kept.
+#[test]
+fn variables_csv_of_an_sfc_program_leaves_out_matiec_s_chart_state() {
+    let csv = "// Programs\n0;CFG.RES.INST;LIGHT;\n\n// Variables\n\
+               1;OUT;CFG.RES.INST.RED;CFG.RES.INST.RED;BOOL;BOOL;0;\n\
+               2;VAR;CFG.RES.INST.S_RED.X;CFG.RES.INST.__step_list[0].X;BOOL;BOOL;\n\
+               3;VAR;CFG.RES.INST.TIMERS.Q;CFG.RES.INST.__action_list[0].state;BOOL;BOOL;\n\
+               4;VAR;CFG.RES.INST.S_RED->S_GREEN;CFG.RES.INST.__debug_transition_list[0];BOOL;BOOL;\n\
+               5;VAR;CFG.RES.INST.SCANS;CFG.RES.INST.SCANS;INT;INT;0;\n\n// Ticktime\n20000000\n";
+    let (_, v, _) = parse_variables_csv(csv);
+    let names: Vec<String> = v.iter().map(|v| trace_name(&v.path)).collect();
+    assert_eq!(names, ["INST.RED", "INST.SCANS"]);
+}
+
 #[test]
 fn variables_csv_of_a_configuration_without_resource_names_iec2c_s_resource() {
     // echidna's IL examples declare TASK and PROGRAM directly in the CONFIGURATION; before, the
