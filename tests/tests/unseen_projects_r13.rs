@@ -290,3 +290,18 @@ fn a_task_declared_by_its_kind_is_one_e1048() {
         ]
     );
 }
+
+/// Only `BEGIN_IL` alone on its line opens an IL section: a variable named `begin_il` assigned at
+/// the start of a line is a statement as any other.
+#[test]
+fn a_variable_named_begin_il_is_no_il_section() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = write(
+        &dir,
+        "p.st",
+        "PROGRAM p\nVAR begin_il : BOOL; n : INT; END_VAR\nbegin_il := n > 0; (* BEGIN_IL *)\nn := n + 1;\nEND_PROGRAM\n",
+    );
+    let (trace, stderr) = run_traced_files(&[&f], 2, "p.begin_il,p.n");
+    assert_eq!(trace, "cycle,time_ms,p.begin_il,p.n\n0,0,0,1\n1,10,1,2\n");
+    assert!(!stderr.contains("E1046"), "{stderr}");
+}

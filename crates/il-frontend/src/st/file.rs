@@ -1891,16 +1891,17 @@ fn this_shadowed(
 }
 
 /// Where a `BEGIN_IL` line (the IL section of Straton-style workbenches) starts in `body`, if one
-/// does: the word at the start of a line, outside comments as far as a line start shows.
+/// does: the word alone on its line (a comment may follow; `begin_il := x;` is a statement).
 fn begin_il_section(src: &str, body: std::ops::Range<usize>) -> Option<usize> {
     let text = src.get(body.clone())?;
     let mut at = 0;
     for line in text.split_inclusive('\n') {
         let t = line.trim_start();
-        let word = t
-            .split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
-            .next();
-        if word.is_some_and(|w| w.eq_ignore_ascii_case("BEGIN_IL")) {
+        let head = t.get(.."BEGIN_IL".len());
+        let rest = t.get("BEGIN_IL".len()..).map(str::trim);
+        let alone =
+            rest.is_some_and(|r| r.is_empty() || r.starts_with("(*") || r.starts_with("//"));
+        if alone && head.is_some_and(|h| h.eq_ignore_ascii_case("BEGIN_IL")) {
             return Some(body.start + at + (line.len() - t.len()));
         }
         at += line.len();
