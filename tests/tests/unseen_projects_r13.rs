@@ -305,3 +305,18 @@ fn a_variable_named_begin_il_is_no_il_section() {
     assert_eq!(trace, "cycle,time_ms,p.begin_il,p.n\n0,0,0,1\n1,10,1,2\n");
     assert!(!stderr.contains("E1046"), "{stderr}");
 }
+
+/// `register^.%Xpin := TRUE;` (ghaith/rusty_avr, RuSTy's bit access by a variable): one located
+/// E0103 saying what is wrong, a partial access taking a number (`x.%X3`). Before: "`%Xpin` is not a
+/// direct address: the area must be I, Q or M".
+#[test]
+fn a_partial_access_by_a_variable_says_so() {
+    let heads = rejected_heads(
+        "avr.st",
+        "FUNCTION setPin : DINT\nVAR_INPUT\n  register : REF_TO BYTE;\n  pin : DINT;\nEND_VAR\n\tregister^.%Xpin := TRUE;\nEND_FUNCTION\n",
+    );
+    assert_eq!(
+        heads,
+        ["avr.st:6:12: error[E0103]: invalid literal: `%Xpin` names its part by a variable: a partial access takes a number (`x.%X3`), as IEC 61131-3 writes it"]
+    );
+}

@@ -422,6 +422,19 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
                 });
                 continue;
             }
+            // `register^.%Xpin` (RuSTy): a partial access whose bit is a variable
+            Err(LexError::BadAddress(_))
+                if src[..range.start].ends_with('.') && partial_by_variable(lx.slice()) =>
+            {
+                problems.push(Problem::BadLiteral(
+                    range.clone(),
+                    format!(
+                        "`{}` names its part by a variable: a partial access takes a number (`x.%X3`), as IEC 61131-3 writes it",
+                        lx.slice()
+                    ),
+                ));
+                Tok::Error
+            }
             Err(e) => {
                 problems.push(match e {
                     LexError::UnexpectedChar => Problem::UnexpectedChar(range.clone()),
@@ -444,6 +457,19 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
         range: src.len()..src.len(),
     });
     (out, problems)
+}
+
+/// `%Xpin`, `%Bk`: a partial access's size letter followed by a name (RuSTy accepts a variable
+/// there; IEC 61131-3 a number).
+fn partial_by_variable(text: &str) -> bool {
+    let mut c = text.chars();
+    c.next() == Some('%')
+        && matches!(
+            c.next(),
+            Some('X' | 'x' | 'B' | 'b' | 'W' | 'w' | 'D' | 'd' | 'L' | 'l')
+        )
+        && c.next()
+            .is_some_and(|ch| ch.is_ascii_alphabetic() || ch == '_')
 }
 
 /// For a based literal whose letters run into a keyword (`16#D013THEN`, `2#1010AND`): the length
