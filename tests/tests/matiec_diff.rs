@@ -467,6 +467,13 @@ fn parse_variables_csv(text: &str) -> (Vec<(String, String)>, Vec<MVar>, u64) {
             "p" if f.len() >= 3 => programs.push((f[1].to_string(), f[2].to_string())),
             // variables of program instances (`CFG.RES.INST.X`); a configuration's or resource's
             // globals (`CFG.X`, `CFG.RES.X`) are read through the programs' copies
+            // an SFC's steps, actions and transitions (`INST.STEP0.X` at `__step_list[0].X`,
+            // `INST.A.Q`, `INST.S0->S1`) are matiec's own state, not variables of the program: the
+            // program's variables that its actions set are compared
+            "v" if f.len() >= 5
+                && ["__step_list", "__action_list", "__debug_transition_list"]
+                    .iter()
+                    .any(|sfc| f[3].contains(sfc)) => {}
             "v" if f.len() >= 5
                 && matches!(f[1], "VAR" | "IN" | "OUT" | "MEM")
                 && f[2].split('.').count() >= 4 =>
@@ -1282,6 +1289,22 @@ fn variables_csv_gives_the_printed_variables_and_the_tick() {
     let main = matiec_main(&p, &v);
     assert!(main.contains("extern MAIN RES__INST;"), "{main}");
     assert!(main.contains("RES__INST.TM.ET.value.tv_sec"), "{main}");
+}
+
+/// An SFC program's steps, actions and transitions (matiec's `__step_list`, `__action_list`,
+/// `__debug_transition_list`) are left out: matiec's state, not variables of the program (and no
+/// `.value` member in its C). The program's own variables, its step lamps among them, are kept.
+#[test]
+fn variables_csv_of_an_sfc_program_leaves_out_matiec_s_chart_state() {
+    let csv = "// Programs\n0;CFG.RES.INST;LIGHT;\n\n// Variables\n\
+               1;OUT;CFG.RES.INST.RED;CFG.RES.INST.RED;BOOL;BOOL;0;\n\
+               2;VAR;CFG.RES.INST.S_RED.X;CFG.RES.INST.__step_list[0].X;BOOL;BOOL;\n\
+               3;VAR;CFG.RES.INST.TIMERS.Q;CFG.RES.INST.__action_list[0].state;BOOL;BOOL;\n\
+               4;VAR;CFG.RES.INST.S_RED->S_GREEN;CFG.RES.INST.__debug_transition_list[0];BOOL;BOOL;\n\
+               5;VAR;CFG.RES.INST.SCANS;CFG.RES.INST.SCANS;INT;INT;0;\n\n// Ticktime\n20000000\n";
+    let (_, v, _) = parse_variables_csv(csv);
+    let names: Vec<String> = v.iter().map(|v| trace_name(&v.path)).collect();
+    assert_eq!(names, ["INST.RED", "INST.SCANS"]);
 }
 
 #[test]

@@ -1111,16 +1111,40 @@ fn embedded_functions(l: &Lowered) -> Vec<c_backend::EmbeddedFunction> {
 
 fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
     use il_frontend::ast::{LibraryElement, TypeRef};
+    // A block or type the project declares itself (its own `MC_Power` over its own axis type, as
+    // a library written for another runtime has) is the project's: not a use of ladderc's blocks,
+    // which would declare the name a second time (E1002 against `<PLCopen blocks>`).
+    let own: std::collections::HashSet<String> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .flat_map(|item| match item {
+            LibraryElement::Pou(p) => vec![p.name.name.to_ascii_uppercase()],
+            LibraryElement::DataTypes(ts) => ts
+                .iter()
+                .map(|t| t.name.name.to_ascii_uppercase())
+                .collect(),
+            _ => vec![],
+        })
+        .collect();
+    let library_type = |t: &il_frontend::ast::Ident| {
+        !own.contains(&t.name.to_ascii_uppercase())
+            && (lib.get(&t.name).is_some() || t.is("AXIS_REF") || t.is("AXES_GROUP_REF"))
+    };
     units.iter().flat_map(|u| u.items.iter()).any(|item| {
         let blocks: Vec<&il_frontend::ast::VarBlock> = match item {
             LibraryElement::Pou(p) => p.var_blocks.iter().collect(),
             LibraryElement::GlobalVars(b) => vec![b],
-            LibraryElement::Configuration(c) => c.globals.iter().chain(c.resources.iter().flat_map(|r| r.globals.iter())).collect(),
+            LibraryElement::Configuration(c) => c
+                .globals
+                .iter()
+                .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+                .collect(),
             LibraryElement::DataTypes(_) | LibraryElement::Action(_) => vec![],
         };
-        blocks.iter().flat_map(|b| b.vars.iter()).any(|v| {
-            matches!(&v.ty, TypeRef::Named(t) if lib.get(&t.name).is_some() || t.is("AXIS_REF") || t.is("AXES_GROUP_REF"))
-        })
+        blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .any(|v| matches!(&v.ty, TypeRef::Named(t) if library_type(t)))
     })
 }
 

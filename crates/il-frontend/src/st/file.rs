@@ -811,7 +811,7 @@ pub fn parse_text(
             return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
         }
     }
-    let (unqualified, unreferenced, unlisted, uninitialised, conditioned);
+    let (unqualified, unreferenced, unlisted, uninitialised, conditioned, unimported, untasked);
     // `{IF defined (X)}` ... `{END_IF}`: the sections not compiled blanked (`conditional`)
     let src = match super::conditional::conditional_sections(file, src, &problems, diags) {
         Some(t) => {
@@ -854,11 +854,29 @@ pub fn parse_text(
             }
             None => src,
         };
-        match library_qualifiers(file, src, &toks, diags) {
+        let src = match library_qualifiers(file, src, &toks, diags) {
             Some(t) => {
                 unqualified = t;
                 (toks, problems) = lex(&unqualified);
                 unqualified.as_str()
+            }
+            None => src,
+        };
+        // `USING Siemens.Simatic.S71500.Tasks;`: blanked, one W1421 each (`using`)
+        let src = match super::using::namespace_imports(file, src, &toks, diags) {
+            Some(t) => {
+                unimported = t;
+                (toks, problems) = lex(&unimported);
+                unimported.as_str()
+            }
+            None => src,
+        };
+        // `TASK Main : ProgramCycle;`: one E1048 each, blanked with the `WITH Main` (`using`)
+        match super::using::typed_tasks(file, src, &toks, diags) {
+            Some(t) => {
+                untasked = t;
+                (toks, problems) = lex(&untasked);
+                untasked.as_str()
             }
             None => src,
         }
@@ -1203,6 +1221,25 @@ pub fn parse_text(
                 );
                 blank(&mut text, pr.whole.clone());
             }
+        }
+        if let Some(at) = begin_il_section(src, p.body.clone()) {
+            // `BEGIN_IL` ... `END_IL`: IL inside an ST body (Straton / K5 / Kollmorgen KAS
+            // workbenches). IEC 61131-3 writes a body in one language; one error, and the body
+            // is not compiled (as ST it would be one error per IL line).
+            diags.push(
+                Diagnostic::error(
+                    code::E1046,
+                    format!(
+                        "`{}`: `BEGIN_IL` ... `END_IL` (an instruction list section inside an ST body) is a workbench extension, not IEC 61131-3",
+                        p.name
+                    ),
+                )
+                .at(Span::new(file, at, at + "BEGIN_IL".len()))
+                .with_primary_label("IL section in an ST body")
+                .with_hint("write the section in ST, or move its instructions into a FUNCTION or FUNCTION_BLOCK whose body is IL and call it; the body of this POU is not compiled"),
+            );
+            blank(&mut text, p.body.clone());
+            continue;
         }
         match lang {
             Lang::St => {
@@ -1877,6 +1914,25 @@ fn this_shadowed(
         }
     }
     out
+}
+
+/// Where a `BEGIN_IL` line (the IL section of Straton-style workbenches) starts in `body`, if one
+/// does: the word alone on its line (a comment may follow; `begin_il := x;` is a statement).
+fn begin_il_section(src: &str, body: std::ops::Range<usize>) -> Option<usize> {
+    let text = src.get(body.clone())?;
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        let head = t.get(.."BEGIN_IL".len());
+        let rest = t.get("BEGIN_IL".len()..).map(str::trim);
+        let alone =
+            rest.is_some_and(|r| r.is_empty() || r.starts_with("(*") || r.starts_with("//"));
+        if alone && head.is_some_and(|h| h.eq_ignore_ascii_case("BEGIN_IL")) {
+            return Some(body.start + at + (line.len() - t.len()));
+        }
+        at += line.len();
+    }
+    None
 }
 
 #[cfg(test)]

@@ -179,6 +179,16 @@ impl Env<'_> {
                         list.get(&m.key())?.clone()
                     }
                     _ if p.accessors.is_empty() => self.enum_of_value(n)?,
+                    // `MAIN.x`: a variable of a program named by the program (W1413, a CODESYS
+                    // and TwinCAT extension): typed as the program's member, so that a literal
+                    // beside it (`MAIN.fGap / 2`) takes its type as beside any variable
+                    _ if self
+                        .decls
+                        .pou(&n.name)
+                        .is_some_and(|q| q.kind == PouKind::Program) =>
+                    {
+                        TypeRef::Named(n.clone())
+                    }
                     _ => return None,
                 },
             },

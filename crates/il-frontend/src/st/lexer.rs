@@ -406,6 +406,35 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
             {
                 Tok::Ident
             }
+            // `16#D013THEN`: a based literal run into the keyword after it (TwinCAT compiles it:
+            // the literal ends at its last digit, as the longest-match rule of IEC 61131-3's
+            // token grammar reads it). Only a keyword tail splits: `16#FG` stays E0103.
+            Err(LexError::BadLiteral(_)) if based_then_keyword(lx.slice()).is_some() => {
+                let (digits, k) = based_then_keyword(lx.slice()).expect("checked");
+                let v = literal::based_int(&lx.slice()[..digits]).expect("checked");
+                out.push(Token {
+                    tok: Tok::Int(v),
+                    range: range.start..range.start + digits,
+                });
+                out.push(Token {
+                    tok: Tok::Kw(k),
+                    range: range.start + digits..range.end,
+                });
+                continue;
+            }
+            // `register^.%Xpin` (RuSTy): a partial access whose bit is a variable
+            Err(LexError::BadAddress(_))
+                if src[..range.start].ends_with('.') && partial_by_variable(lx.slice()) =>
+            {
+                problems.push(Problem::BadLiteral(
+                    range.clone(),
+                    format!(
+                        "`{}` names its part by a variable: a partial access takes a number (`x.%X3`), as IEC 61131-3 writes it",
+                        lx.slice()
+                    ),
+                ));
+                Tok::Error
+            }
             Err(e) => {
                 problems.push(match e {
                     LexError::UnexpectedChar => Problem::UnexpectedChar(range.clone()),
@@ -428,6 +457,42 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
         range: src.len()..src.len(),
     });
     (out, problems)
+}
+
+/// `%Xpin`, `%Bk`: a partial access's size letter followed by a name (RuSTy accepts a variable
+/// there; IEC 61131-3 a number).
+fn partial_by_variable(text: &str) -> bool {
+    let mut c = text.chars();
+    c.next() == Some('%')
+        && matches!(
+            c.next(),
+            Some('X' | 'x' | 'B' | 'b' | 'W' | 'w' | 'D' | 'd' | 'L' | 'l')
+        )
+        && c.next()
+            .is_some_and(|ch| ch.is_ascii_alphabetic() || ch == '_')
+}
+
+/// For a based literal whose letters run into a keyword (`16#D013THEN`, `2#1010AND`): the length
+/// of the literal (up to its last digit, which must leave at least one) and the keyword.
+fn based_then_keyword(text: &str) -> Option<(usize, Kw)> {
+    let (base, digits) = text.split_once('#')?;
+    let radix = match base {
+        "2" => 2,
+        "8" => 8,
+        "16" => 16,
+        _ => return None,
+    };
+    let end = digits
+        .char_indices()
+        .find(|&(_, c)| c != '_' && !c.is_digit(radix))?
+        .0;
+    if end == 0 || digits[..end].ends_with('_') {
+        return None;
+    }
+    let k = keyword(&digits[end..])?;
+    let len = base.len() + 1 + end;
+    literal::based_int(&text[..len]).ok()?;
+    Some((len, k))
 }
 
 /// Skips a possibly nested `(* ... *)` comment; one that nesting leaves unclosed but a `*)` follows

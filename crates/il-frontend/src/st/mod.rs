@@ -32,6 +32,7 @@ pub mod refs;
 mod scl;
 pub mod sfc;
 pub mod types;
+mod using;
 mod var_config;
 
 pub use conditional::ProjectDefines;

@@ -1,0 +1,155 @@
+//! `USING Siemens.Simatic.S71500.Tasks;`: a namespace import (IEC 61131-3 ed. 3 namespaces, as
+//! SIMATIC AX, CODESYS and other ed. 3 workbenches write them) in `.st` text.
+//!
+//! Input: the file's text and tokens. Output: the text with each `USING` directive blanked, one
+//! W1421 note per directive, or `None` when there is none. ladderc compiles one project without
+//! namespaces: the directive brings nothing in, and a block, type or task kind that only the
+//! namespace declares is then reported where it is used (E1003, E1019 ...), naming it. Before, the
+//! directive made the file look like IL (W0001, E0007 for its `;`).
+//! Invariant: positions unchanged (the directive becomes blanks), so every span stays where the user
+//! wrote it.
+//!
+//! A task declared by its kind, `TASK Main : ProgramCycle;` (SIMATIC AX: the kind is a type of
+//! the `Siemens.Simatic.S71500.Tasks` namespace), is one E1048 naming the kind ([`typed_tasks`]):
+//! IEC 61131-3 declares a task by its schedule. The declaration and the `WITH Main` of the program
+//! instances it runs are blanked, so the instances are not reported again. A directive is `USING` + a name (dotted parts) [`, name` ...] + `;`, at the start of the
+//! text, after a `;` or after a POU header's name: `USING` names nothing else in ST.
+
+use super::file::{is_word, word};
+use super::lexer::{Tok, Token};
+use crate::{FileId, Span};
+use diagnostics::{code, Diagnostic, Diagnostics, Severity};
+
+/// See the module documentation.
+pub(super) fn namespace_imports(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> Option<String> {
+    let mut out: Option<String> = None;
+    let mut k = 0;
+    while k < toks.len() {
+        if !is_word(src, &toks[k], "USING") || !starts_statement(src, toks, k) {
+            k += 1;
+            continue;
+        }
+        // the names: `a.b.c` [`, d.e`]
+        let mut j = k + 1;
+        let mut names = Vec::new();
+        while let Some(first) = toks.get(j).filter(|t| t.tok == Tok::Ident) {
+            let mut name = word(src, first).to_string();
+            j += 1;
+            while toks.get(j).is_some_and(|t| t.tok == Tok::Dot)
+                && toks.get(j + 1).is_some_and(|t| t.tok == Tok::Ident)
+            {
+                name.push('.');
+                name.push_str(word(src, &toks[j + 1]));
+                j += 2;
+            }
+            names.push(name);
+            if toks.get(j).is_some_and(|t| t.tok == Tok::Comma) {
+                j += 1;
+                continue;
+            }
+            break;
+        }
+        if names.is_empty() || !toks.get(j).is_some_and(|t| t.tok == Tok::Semi) {
+            k += 1;
+            continue;
+        }
+        let range = toks[k].range.start..toks[j].range.end;
+        diags.push(
+            Diagnostic::new(
+                code::W1421,
+                Severity::Warning,
+                format!(
+                    "`USING {}`: ladderc has no namespaces; the directive is ignored",
+                    names.join(", ")
+                ),
+            )
+            .at(Span::new(file, range.start, range.end))
+            .with_primary_label("ignored")
+            .with_hint("a block, type or task kind that only this namespace declares (a vendor library's) is reported where it is used; declare it in the project's files, or leave it out"),
+        );
+        let text = out.get_or_insert_with(|| src.to_string());
+        text.replace_range(range.clone(), &" ".repeat(range.len()));
+        k = j + 1;
+    }
+    out
+}
+
+/// Whether token `k` begins a declaration or statement: the first token, or after `;`, or after
+/// a POU header's name (`PROGRAM p USING ns;`).
+fn starts_statement(src: &str, toks: &[Token], k: usize) -> bool {
+    if k == 0 {
+        return true;
+    }
+    if toks[k - 1].tok == Tok::Semi {
+        return true;
+    }
+    k >= 2
+        && toks[k - 1].tok == Tok::Ident
+        && [
+            "PROGRAM",
+            "FUNCTION_BLOCK",
+            "FUNCTION",
+            "NAMESPACE",
+            "CONFIGURATION",
+        ]
+        .iter()
+        .any(|w| is_word(src, &toks[k - 2], w))
+}
+
+/// See the module documentation: `TASK name : Kind;` in a CONFIGURATION or RESOURCE.
+pub(super) fn typed_tasks(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> Option<String> {
+    let mut out: Option<String> = None;
+    let mut names = Vec::new();
+    let mut k = 0;
+    while k + 4 < toks.len() {
+        let typed = is_word(src, &toks[k], "TASK")
+            && toks[k + 1].tok == Tok::Ident
+            && toks[k + 2].tok == Tok::Colon
+            && toks[k + 3].tok == Tok::Ident
+            && toks[k + 4].tok == Tok::Semi;
+        if !typed {
+            k += 1;
+            continue;
+        }
+        let (task, kind) = (word(src, &toks[k + 1]), word(src, &toks[k + 3]));
+        diags.push(
+            Diagnostic::error(
+                code::E1048,
+                format!("task `{task}` is declared by its kind `{kind}`, not by a schedule"),
+            )
+            .at(Span::new(file, toks[k + 3].range.start, toks[k + 3].range.end))
+            .with_primary_label("a task kind of a library (SIMATIC AX's `ProgramCycle`, `Startup` ...)")
+            .with_hint("IEC 61131-3 declares a task by its schedule: `TASK name (INTERVAL := T#10ms, PRIORITY := 1);` (cyclic) or `(SINGLE := trigger, PRIORITY := 1)`; the programs it runs are not compiled into a task"),
+        );
+        names.push(task.to_ascii_uppercase());
+        let range = toks[k].range.start..toks[k + 4].range.end;
+        let text = out.get_or_insert_with(|| src.to_string());
+        text.replace_range(range.clone(), &" ".repeat(range.len()));
+        k += 5;
+    }
+    if names.is_empty() {
+        return None;
+    }
+    // `PROGRAM P WITH Main : T;` -> `PROGRAM P           : T;`
+    let text = out.as_mut().expect("a task was blanked");
+    for j in 0..toks.len().saturating_sub(1) {
+        if is_word(src, &toks[j], "WITH")
+            && toks[j + 1].tok == Tok::Ident
+            && names.contains(&word(src, &toks[j + 1]).to_ascii_uppercase())
+        {
+            let range = toks[j].range.start..toks[j + 1].range.end;
+            text.replace_range(range.clone(), &" ".repeat(range.len()));
+        }
+    }
+    out
+}
