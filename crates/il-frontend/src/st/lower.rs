@@ -27,6 +27,8 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 
 mod memory;
+pub(crate) mod method_in_out;
+mod mixed_args;
 mod short_circuit;
 
 /// Labels of the innermost loop, for EXIT and CONTINUE.
@@ -80,6 +82,11 @@ pub struct PouLowering<'d> {
     /// Whether the POU or the program declares a `REFERENCE TO` anywhere: only then are accesses
     /// looked at for the `^` they leave out.
     reference_to: bool,
+    /// Whether W1422 (positional then formal arguments) was reported for this POU.
+    mixed_args_reported: bool,
+    /// Set while a call statement's function call is lowered: its value is not used (a FUNCTION
+    /// without result type may stand there, nowhere else: E0354).
+    result_dropped: bool,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -206,6 +213,8 @@ impl<'d> PouLowering<'d> {
             types: RefCell::new(TypeCache::new()),
             nested: 0,
             raw_refs: false,
+            mixed_args_reported: false,
+            result_dropped: false,
             reference_to: decls.has_reference_to()
                 || pou.var_blocks.iter().any(|b| {
                     b.vars
@@ -327,6 +336,7 @@ impl<'d> PouLowering<'d> {
         };
         let mut before = Vec::new();
         let mut after = Vec::new();
+        let mut in_outs = Vec::new();
         let mut positional = sig.inputs.iter();
         for a in args {
             let (param, list) = match (&a.dir, &a.name) {
@@ -354,6 +364,9 @@ impl<'d> PouLowering<'d> {
             };
             let hidden = place(crate::actions::method_var(&sig.name, &param), a.span);
             match a.dir {
+                ArgDir::Input if sig.in_outs.iter().any(|i| i.eq_ignore_ascii_case(&param)) => {
+                    in_outs.push((param, a));
+                }
                 ArgDir::Input => before.push(Stmt {
                     kind: StmtKind::Assign {
                         target: hidden,
@@ -391,6 +404,7 @@ impl<'d> PouLowering<'d> {
             }
         }
         self.stmt_list(&before, out, diags);
+        let bound = self.method_in_out_args(sig, &in_outs, out, diags);
         out.push(instr(
             InstrKind::Call {
                 cond: Condition::Always,
@@ -399,7 +413,11 @@ impl<'d> PouLowering<'d> {
                     accessors: Default::default(),
                     span,
                 }),
-                args: CallArgs::None,
+                args: if bound.is_empty() {
+                    CallArgs::None
+                } else {
+                    CallArgs::Formal(bound)
+                },
             },
             span,
         ));
@@ -1273,6 +1291,14 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
+        let named;
+        let args = match self.name_positional_args(callee, args, diags) {
+            Some(n) => {
+                named = n;
+                &named[..]
+            }
+            None => args,
+        };
         // A plain name that is not a variable but a function: a function call whose result is dropped.
         if let Some(name) = callee.name() {
             if self.env().var_type(name).is_none() {
@@ -1306,7 +1332,9 @@ impl<'d> PouLowering<'d> {
                     },
                     span,
                 };
+                self.result_dropped = true;
                 self.value(&e, out, diags);
+                self.result_dropped = false;
                 // `e` is dropped here: forget the types keyed by its nodes' addresses.
                 self.types.get_mut().clear();
                 return;
@@ -1985,6 +2013,42 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
+        let dropped = std::mem::take(&mut self.result_dropped);
+        if !dropped
+            && self
+                .decls
+                .pou(&name.name)
+                .is_some_and(|p| p.kind == PouKind::Function && p.ret.is_none())
+            && self.env().var_type(name).is_none()
+        {
+            diags.push(
+                Diagnostic::error(
+                    code::E0354,
+                    format!("function `{}` returns no value", name.name),
+                )
+                .at(span)
+                .with_primary_label("its value is used here")
+                .with_hint(format!(
+                    "call it as a statement (`{}(...);`) and read what it writes to its VAR_IN_OUT or VAR_OUTPUT parameters, or give it a result type (`FUNCTION {} : LREAL`)",
+                    name.name, name.name
+                )),
+            );
+            self.poisoned = true;
+            return;
+        }
+        let with_names;
+        let callee = Place {
+            base: PlaceBase::Name(name.clone()),
+            accessors: Vec::new(),
+            span: name.span,
+        };
+        let args = match self.name_positional_args(&callee, args, diags) {
+            Some(n) => {
+                with_names = n;
+                &with_names[..]
+            }
+            None => args,
+        };
         let call = Expr {
             kind: ExprKind::Call {
                 name: name.clone(),
