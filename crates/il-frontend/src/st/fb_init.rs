@@ -369,6 +369,7 @@ pub fn add_init_calls(
                 name: ACTION.to_string(),
                 inputs: Vec::new(),
                 in_outs: Vec::new(),
+                constant_in_outs: Vec::new(),
                 outputs: Vec::new(),
                 returns: false,
             });

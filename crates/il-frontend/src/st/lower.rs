@@ -27,6 +27,8 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 
 mod memory;
+mod method_flow;
+pub use method_flow::{method_call_expr, METHOD_CALL};
 pub(crate) mod method_in_out;
 mod mixed_args;
 mod short_circuit;
@@ -425,201 +427,6 @@ impl<'d> PouLowering<'d> {
         self.types.get_mut().clear();
     }
 
-    /// The calls of the block's own methods inside the expressions `s` evaluates before anything
-    /// else (an assignment's, a call's arguments, the first IF condition, a CASE selector, FOR
-    /// bounds), as call statements, and `s` reading their results instead; `None` when it has none.
-    /// A call in an ELSIF, WHILE or UNTIL condition (evaluated later, or again) is E0108, as from
-    /// outside the block.
-    fn hoist_method_calls(&self, s: &Stmt, diags: &mut Diagnostics) -> Option<(Vec<Stmt>, Stmt)> {
-        let has = |e: &Expr| self.first_method_call(e).is_some();
-        let place_has = |p: &Place| {
-            p.accessors
-                .iter()
-                .any(|a| matches!(a, Accessor::Index(ix) if ix.iter().any(has)))
-        };
-        let any = match &s.kind {
-            StmtKind::Assign { target, value } => place_has(target) || has(value),
-            StmtKind::Call { args, .. } => args.iter().any(|a| has(&a.value)),
-            StmtKind::If { branches, .. } => branches.iter().any(|b| has(&b.cond)),
-            StmtKind::Case { selector, .. } => has(selector),
-            StmtKind::For { from, to, by, .. } => {
-                has(from) || has(to) || by.as_ref().is_some_and(has)
-            }
-            StmtKind::While { cond, .. } => has(cond),
-            StmtKind::Repeat { until, .. } => has(until),
-            _ => false,
-        };
-        if !any {
-            return None;
-        }
-        let mut calls = Vec::new();
-        let mut rest = s.clone();
-        let mut late: Vec<&mut Expr> = Vec::new();
-        {
-            let mut eager: Vec<&mut Expr> = Vec::new();
-            match &mut rest.kind {
-                StmtKind::Assign { target, value } => {
-                    place_exprs(target, &mut eager);
-                    eager.push(value);
-                }
-                StmtKind::Call { args, .. } => eager.extend(args.iter_mut().map(|a| &mut a.value)),
-                StmtKind::If { branches, .. } => {
-                    for (k, b) in branches.iter_mut().enumerate() {
-                        if k == 0 {
-                            eager.push(&mut b.cond);
-                        } else {
-                            late.push(&mut b.cond);
-                        }
-                    }
-                }
-                StmtKind::Case { selector, .. } => eager.push(selector),
-                StmtKind::For { from, to, by, .. } => {
-                    eager.push(from);
-                    eager.push(to);
-                    eager.extend(by.as_mut());
-                }
-                StmtKind::While { cond, .. } => late.push(cond),
-                StmtKind::Repeat { until, .. } => late.push(until),
-                _ => {}
-            }
-            for e in eager {
-                self.hoist_in(e, &mut calls, diags);
-            }
-        }
-        for e in late {
-            if let Some(span) = self.first_method_call(e) {
-                diags.push(
-                    Diagnostic::error(
-                        code::E0108,
-                        "a call of the block's own method in an ELSIF, WHILE or UNTIL condition is not supported",
-                    )
-                    .at(span)
-                    .with_hint("call the method in a statement of its own and test the variable that holds its result"),
-                );
-                *e = Expr {
-                    kind: ExprKind::Error,
-                    span,
-                };
-            }
-        }
-        Some((calls, rest))
-    }
-
-    /// Whether `n` names one of the block's methods (and no variable).
-    fn is_method(&self, n: &Ident) -> bool {
-        self.methods.contains_key(&n.key()) && !self.vars.contains_key(&n.key())
-    }
-
-    /// Replaces the method calls inside `e` (arguments first) by reads of their results.
-    fn hoist_in(&self, e: &mut Expr, calls: &mut Vec<Stmt>, diags: &mut Diagnostics) {
-        match &mut e.kind {
-            ExprKind::Unary { operand, .. } => self.hoist_in(operand, calls, diags),
-            ExprKind::Binary {
-                op: BinaryOp::AndThen | BinaryOp::OrElse,
-                left,
-                right,
-            } => {
-                self.hoist_in(left, calls, diags);
-                // the right operand runs only sometimes: its method calls cannot run first
-                if let Some(span) = self.first_method_call(right) {
-                    diags.push(
-                        Diagnostic::error(
-                            code::E0108,
-                            "a call of the block's own method after AND_THEN or OR_ELSE is not supported",
-                        )
-                        .at(span)
-                        .with_hint("call the method inside an IF that tests the left operand, and test the variable that holds its result"),
-                    );
-                    right.kind = ExprKind::Error;
-                }
-            }
-            ExprKind::Binary { left, right, .. } => {
-                self.hoist_in(left, calls, diags);
-                self.hoist_in(right, calls, diags);
-            }
-            ExprKind::Call { name, args } => {
-                for a in args.iter_mut() {
-                    self.hoist_in(&mut a.value, calls, diags);
-                }
-                if !self.is_method(name) {
-                    return;
-                }
-                let name = name.clone();
-                let sig = &self.methods[&name.key()];
-                let twice = calls.iter().any(|c| {
-                    matches!(&c.kind, StmtKind::Call { callee: Place { base: PlaceBase::Name(n), .. }, .. } if n.is(&sig.name))
-                });
-                if twice || !sig.returns {
-                    let msg = if twice {
-                        format!("method `{}` is called twice in one statement", name.name)
-                    } else {
-                        format!("method `{}` returns no value", name.name)
-                    };
-                    diags.push(
-                        Diagnostic::error(if twice { code::E0108 } else { code::E1011 }, msg)
-                            .at(e.span)
-                            .with_hint(if twice {
-                                "both calls would give one result: call it in two statements, each storing its result"
-                            } else {
-                                "call it as a statement, or give the method a result type (`METHOD M : INT`) and assign it"
-                            }),
-                    );
-                    e.kind = ExprKind::Error;
-                    return;
-                }
-                let args = std::mem::take(args);
-                calls.push(Stmt {
-                    kind: StmtKind::Call {
-                        callee: Place {
-                            base: PlaceBase::Name(name.clone()),
-                            accessors: Vec::new(),
-                            span: name.span,
-                        },
-                        args,
-                    },
-                    span: e.span,
-                });
-                e.kind = ExprKind::Place(Place {
-                    base: PlaceBase::Name(Ident::new(
-                        crate::actions::method_result(&sig.name),
-                        name.span,
-                    )),
-                    accessors: Vec::new(),
-                    span: e.span,
-                });
-            }
-            ExprKind::Place(p) => {
-                let mut inner = Vec::new();
-                place_exprs(p, &mut inner);
-                for x in inner {
-                    self.hoist_in(x, calls, diags);
-                }
-            }
-            _ => {}
-        }
-    }
-
-    /// The span of the first call of one of the block's methods inside `e`.
-    fn first_method_call(&self, e: &Expr) -> Option<Span> {
-        match &e.kind {
-            ExprKind::Unary { operand, .. } => self.first_method_call(operand),
-            ExprKind::Binary { left, right, .. } => self
-                .first_method_call(left)
-                .or_else(|| self.first_method_call(right)),
-            ExprKind::Call { name, args } => {
-                if self.is_method(name) {
-                    return Some(e.span);
-                }
-                args.iter().find_map(|a| self.first_method_call(&a.value))
-            }
-            ExprKind::Place(p) => p.accessors.iter().find_map(|a| match a {
-                Accessor::Index(ix) => ix.iter().find_map(|x| self.first_method_call(x)),
-                Accessor::Field(_) | Accessor::Deref(_) => None,
-            }),
-            _ => None,
-        }
-    }
-
     /// Lowers an expression: the instructions leave its value in the current result.
     pub fn expression(&mut self, e: &Expr, diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
@@ -767,7 +574,7 @@ impl<'d> PouLowering<'d> {
                 return true;
             }
         }
-        if !self.methods.is_empty() {
+        {
             if let Some((calls, rest)) = self.hoist_method_calls(s, diags) {
                 // `x := M(a) + 1;` inside the block: the call runs first, the statement reads the
                 // result `__M_M` (as `inst.M(a)` from outside, see the parser)
@@ -1128,8 +935,28 @@ impl<'d> PouLowering<'d> {
         let env = self.env();
         let cty = env.var_type(control);
         if let Some(t) = &cty {
-            let int = env.elementary(t).is_some_and(|e| e.is_integer());
-            if !int {
+            let elem = env.elementary(t);
+            let int = elem.is_some_and(|e| e.is_integer());
+            // BYTE, WORD, DWORD, LWORD: IEC 61131-3 (ed. 3, 7.3.3.4.2) asks for an ANY_INT control
+            // variable, CODESYS and TwinCAT count with a bit string too (stefanbesler/struckig's
+            // `Roots` with a BYTE): compiled as they do, W1423
+            let bits = elem.is_some_and(|e| e.is_bit() && e != crate::sema::model::Elementary::Bool);
+            if bits {
+                diags.push(
+                    Diagnostic::warning(
+                        code::W1423,
+                        format!(
+                            "the FOR control variable `{}` is {}, a bit string: IEC 61131-3 asks for an integer",
+                            control.name,
+                            type_text(t)
+                        ),
+                    )
+                    .at(control.span)
+                    .with_primary_label("bit-string control variable")
+                    .with_hint("compiled as CODESYS and TwinCAT do (counting as the unsigned integer of its size); declare it USINT, UINT, UDINT or ULINT for another IEC compiler"),
+                );
+            }
+            if !int && !bits {
                 diags.push(
                     Diagnostic::error(
                         code::E3100,

@@ -88,6 +88,9 @@ pub struct MethodSig {
     pub inputs: Vec<String>,
     /// Those of [`Self::inputs`] that are VAR_IN_OUT (bound to the argument, not copied).
     pub in_outs: Vec<String>,
+    /// Those of [`Self::in_outs`] declared `VAR_IN_OUT CONSTANT`, with their types: they take any
+    /// value (CODESYS), passed through a temporary when it is not a variable.
+    pub constant_in_outs: Vec<(String, crate::ast::TypeRef)>,
     /// Its VAR_OUTPUT names.
     pub outputs: Vec<String>,
     /// Whether it returns a value (`METHOD M : INT`).
@@ -108,6 +111,12 @@ impl MethodSig {
             name: m.name.name.clone(),
             inputs: names(&[crate::ast::VarKind::Input, crate::ast::VarKind::InOut]),
             in_outs: names(&[crate::ast::VarKind::InOut]),
+            constant_in_outs: m
+                .blocks
+                .iter()
+                .filter(|b| b.kind == crate::ast::VarKind::InOut && b.constant)
+                .flat_map(|b| b.vars.iter().map(|v| (v.name.name.clone(), v.ty.clone())))
+                .collect(),
             outputs: names(&[crate::ast::VarKind::Output]),
             returns: m.ret.is_some(),
         }

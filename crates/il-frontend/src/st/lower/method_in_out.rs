@@ -11,7 +11,8 @@
 //! arguments [`bind_in_outs`] substitutes into the copy of the method's statements.
 //! Invariants: an argument's index expressions are computed once, before the method runs (a
 //! temporary holds each one that is not a literal), so the copy reads and writes the element the
-//! call named, as a reference would; an argument that is not a variable is E0353.
+//! call named, as a reference would; an argument that is not a variable is E0353, except for a
+//! `VAR_IN_OUT CONSTANT` (CODESYS: read-only, takes any value), which reads a temporary holding it.
 
 use super::super::ast::{Accessor as SAccessor, Arg, Expr, ExprKind, Place, PlaceBase};
 use super::super::infer::named;
@@ -34,8 +35,24 @@ impl PouLowering<'_> {
     ) -> Vec<FormalArg> {
         let mut bound = Vec::new();
         for (param, a) in args {
-            let place = match &a.value.kind {
-                ExprKind::Place(p) => Some(self.frozen_indexes(p, out, diags)),
+            let constant = sig
+                .constant_in_outs
+                .iter()
+                .find(|(n, _)| n.eq_ignore_ascii_case(param));
+            let place = match (&a.value.kind, constant) {
+                (ExprKind::Place(p), _) => Some(self.frozen_indexes(p, out, diags)),
+                // `VAR_IN_OUT CONSTANT` takes a value (CODESYS): it is read from a temporary
+                (_, Some((_, ty))) => {
+                    self.lit_hint = Some(ty.clone());
+                    self.value(&a.value, out, diags);
+                    let t = self.temp(ty.clone(), a.value.span);
+                    out.push(simple(Op::St, false, Some(var_operand(&t)), a.value.span));
+                    Some(Place {
+                        base: PlaceBase::Name(t),
+                        accessors: Vec::new(),
+                        span: a.value.span,
+                    })
+                }
                 _ => None,
             };
             let operand = place.and_then(|p| self.place_operand(&p, out, diags));

@@ -1,18 +1,19 @@
-//! Calls that give their first arguments by position and the rest by name:
-//! `Integrate(t, p0 := ps, v0 := vs)`, `Roots.SolveCub(ADR(c), rootCount := n)`.
+//! Calls that give some arguments by position and others by name:
+//! `Integrate(t, p0 := ps, v0 := vs)`, `BubbleSort(data := ADR(d), n, sorted := ADR(ix))`.
 //!
-//! IEC 61131-3 ed. 3 (6.6.1.4.2) makes a call either formal or non-formal, and CODESYS compilers up
-//! to V3.4.10 refused the mix (C0042 "Either all or none formal parameter have to be denoted").
-//! TwinCAT 3 and later CODESYS compilers accept positional arguments followed by formal ones: their
-//! static analysis only flags it (Beckhoff TE1200 SA0107 "Missing formal parameters", whose
-//! example `F_Sample(TRUE, bIn2 := FALSE)` compiles). ladderc accepts what they accept, with one
-//! W1422 per POU (the text is not portable), and keeps E3106 for a positional argument after a
-//! formal one, which no vendor accepts.
+//! IEC 61131-3 ed. 3 (6.6.1.4.2) makes a call either formal or non-formal; CODESYS compilers up to
+//! V3.4.10 refused the mix (C0042 "Either all or none formal parameter have to be denoted"), and
+//! Beckhoff's "Object Function" page still says TwinCAT 3 does. The TwinCAT 3 compiler accepts it in
+//! practice: stefanbesler/struckig, a library built with it, mixes them in 47 calls, and Beckhoff's
+//! static analysis only flags the mix (TE1200 SA0107 "Missing formal parameters", whose example
+//! `F_Sample(TRUE, bIn2 := FALSE)` compiles). The argument at position k binds the k-th parameter
+//! (VAR_INPUT and VAR_IN_OUT in declaration order, as in a non-formal call). ladderc accepts it so,
+//! with one W1422 per POU (another IEC compiler refuses the text).
 //!
-//! Input: a call's callee and arguments. Output: the arguments with the leading positional ones
-//! named after the callee's parameters in declaration order (VAR_INPUT and VAR_IN_OUT, the order
-//! a non-formal call binds); `None` when the call is not such a mix or its callee's parameters are
-//! unknown (then the call is lowered as written and E3106 reports it).
+//! Input: a call's callee and arguments. Output: the arguments with the positional ones named;
+//! `None` when the call does not mix them, its callee's parameters are unknown, a position is past
+//! the last parameter or names a parameter also given by name (then the call is lowered as written
+//! and E3106 reports it).
 
 use super::super::ast::{Arg, ArgDir, Place};
 use super::PouLowering;
@@ -29,33 +30,38 @@ impl PouLowering<'_> {
         diags: &mut Diagnostics,
     ) -> Option<Vec<Arg>> {
         let first_formal = args.iter().position(|a| a.name.is_some())?;
-        if first_formal == 0 || args[first_formal..].iter().any(|a| a.name.is_none()) {
-            return None;
-        }
+        let first_positional = args.iter().position(|a| a.name.is_none())?;
         let params = self.parameter_order(callee)?;
-        if first_formal > params.len() {
-            return None;
-        }
         let mut named = args.to_vec();
-        for (a, p) in named.iter_mut().zip(&params) {
-            if a.name.is_none() {
-                if !matches!(a.dir, ArgDir::Input) {
-                    return None;
-                }
-                a.name = Some(crate::ast::Ident::new(p.clone(), a.span));
+        for (k, a) in named.iter_mut().enumerate() {
+            if a.name.is_some() {
+                continue;
             }
+            let p = params.get(k)?;
+            // the parameter is given by name too: left to E3106
+            if args
+                .iter()
+                .any(|b| b.name.as_ref().is_some_and(|n| n.name.eq_ignore_ascii_case(p)))
+                || !matches!(a.dir, ArgDir::Input)
+            {
+                return None;
+            }
+            a.name = Some(crate::ast::Ident::new(p.clone(), a.span));
         }
+        let at = args[first_formal.min(first_positional)]
+            .span
+            .to(args[first_formal.max(first_positional)].span);
         if !self.mixed_args_reported {
             self.mixed_args_reported = true;
             diags.push(
                 Diagnostic::new(
                     code::W1422,
                     Severity::Warning,
-                    "positional arguments followed by formal ones in one call: IEC 61131-3 makes a call either formal or non-formal (its other uses in this POU are not reported)",
+                    "positional and formal arguments mixed in one call: IEC 61131-3 makes a call either formal or non-formal (its other uses in this POU are not reported)",
                 )
-                .at(args[0].span.to(args[first_formal].span))
-                .with_primary_label("positional, then formal")
-                .with_hint("compiled as TwinCAT does, the positional ones bound in declaration order; name every argument for another IEC compiler"),
+                .at(at)
+                .with_primary_label("positional and formal arguments")
+                .with_hint("compiled as TwinCAT does: the argument at position k binds the k-th parameter; name every argument for another IEC compiler"),
             );
         }
         Some(named)
