@@ -1035,13 +1035,22 @@ pub fn parse_text(
     for (pi, p) in pous.iter().enumerate() {
         if p.interface.is_some() {
             // an INTERFACE: its methods' signatures, checked against the blocks that implement it
+            // (with their POINTER TO / REFERENCE TO parameters, as a block's methods: E0335
+            // compared `POINTER TO LREAL` with `LREAL` before)
             let mut methods: Vec<PendingMethod> = p
                 .methods
                 .iter()
-                .map(|m| pending_method(file, src, m, diags))
+                .map(|m| {
+                    let mut pm = pending_method(file, src, m, diags);
+                    references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+                    pm
+                })
                 .collect();
             for pr in &p.properties {
-                methods.extend(super::property::pending_accessors(file, src, pr, diags));
+                for mut pm in super::property::pending_accessors(file, src, pr, diags) {
+                    references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+                    methods.push(pm);
+                }
             }
             pending.push(PendingBody {
                 file,
