@@ -935,28 +935,8 @@ impl<'d> PouLowering<'d> {
         let env = self.env();
         let cty = env.var_type(control);
         if let Some(t) = &cty {
-            let elem = env.elementary(t);
-            let int = elem.is_some_and(|e| e.is_integer());
-            // BYTE, WORD, DWORD, LWORD: IEC 61131-3 (ed. 3, 7.3.3.4.2) asks for an ANY_INT control
-            // variable, CODESYS and TwinCAT count with a bit string too (stefanbesler/struckig's
-            // `Roots` with a BYTE): compiled as they do, W1423
-            let bits = elem.is_some_and(|e| e.is_bit() && e != crate::sema::model::Elementary::Bool);
-            if bits {
-                diags.push(
-                    Diagnostic::warning(
-                        code::W1423,
-                        format!(
-                            "the FOR control variable `{}` is {}, a bit string: IEC 61131-3 asks for an integer",
-                            control.name,
-                            type_text(t)
-                        ),
-                    )
-                    .at(control.span)
-                    .with_primary_label("bit-string control variable")
-                    .with_hint("compiled as CODESYS and TwinCAT do (counting as the unsigned integer of its size); declare it USINT, UINT, UDINT or ULINT for another IEC compiler"),
-                );
-            }
-            if !int && !bits {
+            let int = env.elementary(t).is_some_and(|e| e.is_integer());
+            if !int {
                 diags.push(
                     Diagnostic::error(
                         code::E3100,
