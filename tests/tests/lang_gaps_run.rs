@@ -171,7 +171,11 @@ fn own_method_calls_that_cannot_run_are_located_errors() {
         .collect();
     // an unknown parameter; A and B call each other (a call twice in one statement and one in a
     // WHILE condition compile since Struckig's round: `tests/tests/struckig_constructs_run.rs`)
-    assert_eq!(codes, vec!["m.st:6:11", "m.st:8:3", "m.st:11:3"], "{lines:?}");
+    assert_eq!(
+        codes,
+        vec!["m.st:6:11", "m.st:8:3", "m.st:11:3"],
+        "{lines:?}"
+    );
     assert!(lines[0].contains("E1011") && lines[1].contains("E0106"));
 }
 

@@ -82,7 +82,10 @@ fn positional_then_formal_arguments_bind_by_position_and_name() {
     );
     let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("W1422")).collect();
     assert_eq!(warnings.len(), 1, "{stderr}");
-    assert!(warnings[0].contains("mixed_args.st:45:16: warning[W1422]"), "{stderr}");
+    assert!(
+        warnings[0].contains("mixed_args.st:45:16: warning[W1422]"),
+        "{stderr}"
+    );
 }
 
 /// A positional argument after a named one for the same parameter stays E3106; the value of a

@@ -355,7 +355,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                             "EXTENDS",
                             "IMPLEMENTS",
                         ]
-                            .contains(&next.as_str())
+                        .contains(&next.as_str())
                 }) && toks
                     .get(i)
                     .is_some_and(|t| modifiers.iter().any(|k| is_word(src, t, k))))

@@ -108,9 +108,9 @@ fn continues(body: &[Stmt]) -> bool {
             branches.iter().any(|b| continues(&b.body))
                 || else_body.as_deref().is_some_and(continues)
         }
-        StmtKind::Case { arms, else_body, .. } => {
-            arms.iter().any(|a| continues(&a.body)) || else_body.as_deref().is_some_and(continues)
-        }
+        StmtKind::Case {
+            arms, else_body, ..
+        } => arms.iter().any(|a| continues(&a.body)) || else_body.as_deref().is_some_and(continues),
         _ => false,
     })
 }
@@ -392,7 +392,11 @@ impl PouLowering<'_> {
                     kind: StmtKind::If {
                         branches: vec![CondBranch {
                             cond,
-                            body: vec![assign(name_place(t.clone()), (**right).clone(), right.span)],
+                            body: vec![assign(
+                                name_place(t.clone()),
+                                (**right).clone(),
+                                right.span,
+                            )],
                             span,
                         }],
                         else_body: None,

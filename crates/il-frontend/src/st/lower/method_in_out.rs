@@ -87,7 +87,12 @@ impl PouLowering<'_> {
     /// `p` with each index that is not a literal replaced by a temporary holding its value now
     /// (`a[i + 1]` -> `t := i + 1;` and `a[t]`): the element is chosen when the method is called,
     /// even if the method changes `i`.
-    fn frozen_indexes(&mut self, p: &Place, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) -> Place {
+    fn frozen_indexes(
+        &mut self,
+        p: &Place,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> Place {
         let mut p = p.clone();
         for a in p.accessors.iter_mut() {
             let SAccessor::Index(ix) = a else {

@@ -39,10 +39,11 @@ impl PouLowering<'_> {
             }
             let p = params.get(k)?;
             // the parameter is given by name too: left to E3106
-            if args
-                .iter()
-                .any(|b| b.name.as_ref().is_some_and(|n| n.name.eq_ignore_ascii_case(p)))
-                || !matches!(a.dir, ArgDir::Input)
+            if args.iter().any(|b| {
+                b.name
+                    .as_ref()
+                    .is_some_and(|n| n.name.eq_ignore_ascii_case(p))
+            }) || !matches!(a.dir, ArgDir::Input)
             {
                 return None;
             }
@@ -87,11 +88,16 @@ impl PouLowering<'_> {
                     }
                 }
                 let f = crate::sema::stdlib::function(&name.name)?;
-                return (!f.extensible).then(|| f.params.iter().map(|p| p.name.to_string()).collect());
+                return (!f.extensible)
+                    .then(|| f.params.iter().map(|p| p.name.to_string()).collect());
             }
         }
         if let Some(TypeRef::Named(t)) = self.env().place_type(callee) {
-            if self.decls.pou(&t.name).is_some_and(|p| p.kind == PouKind::FunctionBlock) {
+            if self
+                .decls
+                .pou(&t.name)
+                .is_some_and(|p| p.kind == PouKind::FunctionBlock)
+            {
                 return of_pou(&t.name);
             }
         }
