@@ -507,7 +507,14 @@ fn pending_method(
 ) -> PendingMethod {
     let vars =
         |text: &str, base: usize, diags: &mut Diagnostics| read_var_blocks(file, text, base, diags);
-    let blocks = vars(src.get(m.decls.clone()).unwrap_or(""), m.decls.start, diags);
+    let decls = src.get(m.decls.clone()).unwrap_or("");
+    // `n : UDINT := SIZEOF(T) * k;`: read without its initial value, assigned when the method starts
+    let inits = super::method_inits::split(decls);
+    let blocks = vars(
+        inits.as_ref().map_or(decls, |(read, _)| read.as_str()),
+        m.decls.start,
+        diags,
+    );
     // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
     // bytes into the file: after `METHOD `)
     let ret = m.ret_end.and_then(|end| {
@@ -519,6 +526,18 @@ fn pending_method(
             .flat_map(|b| b.vars)
             .next()
     });
+    let stmts = src.get(m.stmts.clone()).unwrap_or("");
+    let (text, base) = match inits {
+        // the assignments where they are written, then the statements (positions kept)
+        Some((_, mut t)) if m.decls.end <= m.stmts.start => {
+            t.push_str(&super::method_inits::blank(
+                src.get(m.decls.end..m.stmts.start).unwrap_or(""),
+            ));
+            t.push_str(stmts);
+            (t, m.decls.start)
+        }
+        _ => (stmts.to_string(), m.stmts.start),
+    };
     PendingMethod {
         name: crate::ast::Ident::new(
             &m.name,
@@ -526,8 +545,8 @@ fn pending_method(
         ),
         ret,
         blocks,
-        text: src.get(m.stmts.clone()).unwrap_or("").to_string(),
-        base: m.stmts.start,
+        text,
+        base,
     }
 }
 
