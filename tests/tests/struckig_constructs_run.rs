@@ -189,3 +189,19 @@ fn a_method_variable_initialised_by_an_expression_is_set_at_each_call() {
         "cycle,time_ms,Main.r,Main.r2,Main.p.total\n0,0,24,8,16\n1,10,24,8,32\n"
     );
 }
+
+/// Through an interface variable: `i.Next(1) + i.Next(2) * 10` is 1 + 3 * 10, the ELSIF's
+/// `i.Next(3)` reaches 6, the WHILE tests `i.Next(1)` before each of its 5 passes and once more
+/// (n ends at 12). Before: E0108 at each of these calls.
+#[test]
+fn interface_method_calls_in_late_conditions_run_once_in_order() {
+    let (trace, _) = run_traced(
+        &fixture("interface_method_flow.st"),
+        1,
+        "Main.x,Main.y,Main.z,Main.c.n",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.x,Main.y,Main.z,Main.c.n\n0,0,31,2,5,12\n"
+    );
+}

@@ -17,14 +17,15 @@
 //! Invariants: each call runs exactly once where the source evaluates it, in source order among
 //! the method calls of the statement, and never when a short-circuit operator or an earlier branch
 //! decides first; each call's result is copied into a temporary of its own right after the call,
-//! so two calls of one method in one statement each give their own result.
+//! so two calls of one method in one statement each give their own result (an interface's method,
+//! whose result type is not known here, is read in place).
 
 use super::super::ast::{
     Accessor, Arg, BinaryOp, CondBranch, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind, UnaryOp,
 };
 use super::super::infer::named;
 use super::{place_exprs, PouLowering};
-use crate::ast::{Ident, LiteralKind, TypeRef};
+use crate::ast::{Ident, LiteralKind};
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics};
 
@@ -339,7 +340,9 @@ impl PouLowering<'_> {
             let Some(read) = found else {
                 continue;
             };
-            let ty = self.place_ty(&read);
+            let Some(ty) = self.env().place_type(&read) else {
+                continue;
+            };
             let t = self.temp(ty, read.span);
             calls.push(assign(
                 name_place(t.clone()),
@@ -348,13 +351,6 @@ impl PouLowering<'_> {
             ));
             walk_stmt_exprs(s, &mut |e| replace_place(e, &result_key, &t));
         }
-    }
-
-    /// The declared type of a place (DINT when it cannot be known: sema reports the place).
-    fn place_ty(&self, p: &Place) -> TypeRef {
-        self.env()
-            .place_type(p)
-            .unwrap_or_else(|| named("DINT", p.span))
     }
 
     /// Replaces the method calls inside `e` (arguments first) by temporaries holding their
@@ -454,11 +450,16 @@ impl PouLowering<'_> {
                     kind: StmtKind::Call { callee, args },
                     span,
                 });
-                // the result is copied at once: a later call of the method overwrites it
-                let ty = self.place_ty(&result);
-                let t = self.temp(ty, span);
-                calls.push(assign(name_place(t.clone()), place_expr(result), span));
-                e.kind = ExprKind::Place(name_place(t));
+                // the result is copied at once: a later call of the method overwrites it (an
+                // interface's method, whose result type the lowering does not see, is read in place)
+                match self.env().place_type(&result) {
+                    Some(ty) => {
+                        let t = self.temp(ty, span);
+                        calls.push(assign(name_place(t.clone()), place_expr(result), span));
+                        e.kind = ExprKind::Place(name_place(t));
+                    }
+                    None => e.kind = ExprKind::Place(result),
+                }
             }
             ExprKind::Place(p) => {
                 let mut inner = Vec::new();
