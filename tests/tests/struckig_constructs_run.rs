@@ -205,3 +205,14 @@ fn interface_method_calls_in_late_conditions_run_once_in_order() {
         "cycle,time_ms,Main.x,Main.y,Main.z,Main.c.n\n0,0,31,2,5,12\n"
     );
 }
+
+/// `A(VAR_IN_OUT x)` adds 1 and passes x on to `B(VAR_IN_OUT y)`, which doubles it: from the
+/// block's body on `own` (0 -> 2 -> 6) and from outside on `v` (3 -> 8 -> 18).
+#[test]
+fn a_method_passes_its_in_out_on_to_another_method() {
+    let (trace, _) = run_traced(&fixture("nested_in_out.st"), 2, "Main.v,Main.f.own");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.v,Main.f.own\n0,0,8,2\n1,10,18,6\n"
+    );
+}
