@@ -122,25 +122,35 @@ impl PouLowering<'_> {
         self.methods.contains_key(&n.key()) && !self.vars.contains_key(&n.key())
     }
 
-    /// The span of the first method call inside `e` (an own method's, or [`METHOD_CALL`]).
+    /// The span of the first method call inside `e` (an own method's, or [`METHOD_CALL`]), left
+    /// to right. Without recursion: it looks at every statement's expressions, and a line's chain
+    /// of 1,000 operators (the parser's cap, E0109) must not overflow the stack.
     pub(super) fn first_method_call(&self, e: &Expr) -> Option<Span> {
-        match &e.kind {
-            ExprKind::Unary { operand, .. } => self.first_method_call(operand),
-            ExprKind::Binary { left, right, .. } => self
-                .first_method_call(left)
-                .or_else(|| self.first_method_call(right)),
-            ExprKind::Call { name, args } => {
-                if self.is_method(name) || name.is(METHOD_CALL) {
-                    return Some(e.span);
+        let mut todo = vec![e];
+        while let Some(e) = todo.pop() {
+            match &e.kind {
+                ExprKind::Unary { operand, .. } => todo.push(operand),
+                ExprKind::Binary { left, right, .. } => {
+                    todo.push(right);
+                    todo.push(left);
                 }
-                args.iter().find_map(|a| self.first_method_call(&a.value))
+                ExprKind::Call { name, args } => {
+                    if self.is_method(name) || name.is(METHOD_CALL) {
+                        return Some(e.span);
+                    }
+                    todo.extend(args.iter().rev().map(|a| &a.value));
+                }
+                ExprKind::Place(p) => {
+                    for a in p.accessors.iter().rev() {
+                        if let Accessor::Index(ix) = a {
+                            todo.extend(ix.iter().rev());
+                        }
+                    }
+                }
+                _ => {}
             }
-            ExprKind::Place(p) => p.accessors.iter().find_map(|a| match a {
-                Accessor::Index(ix) => ix.iter().find_map(|x| self.first_method_call(x)),
-                Accessor::Field(_) | Accessor::Deref(_) => None,
-            }),
-            _ => None,
         }
+        None
     }
 
     /// The method calls inside the expressions `s` evaluates, as call statements to run first,
