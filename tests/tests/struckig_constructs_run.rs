@@ -216,3 +216,11 @@ fn a_method_passes_its_in_out_on_to_another_method() {
         "cycle,time_ms,Main.v,Main.f.own\n0,0,8,2\n1,10,18,6\n"
     );
 }
+
+/// `r REF= data[k]` in a method with its own `k`: the method's variables are renamed inside the
+/// reference too (data[1] + data[2] + data[3] = 9). Before: E1001 "undeclared name `k`".
+#[test]
+fn a_reference_assigned_in_a_method_reads_the_methods_own_index() {
+    let (trace, _) = run_traced(&fixture("method_ref_assign.st"), 1, "Main.s");
+    assert_eq!(trace, "cycle,time_ms,Main.s\n0,0,9\n");
+}
