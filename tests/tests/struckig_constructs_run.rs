@@ -224,3 +224,20 @@ fn a_reference_assigned_in_a_method_reads_the_methods_own_index() {
     let (trace, _) = run_traced(&fixture("method_ref_assign.st"), 1, "Main.s");
     assert_eq!(trace, "cycle,time_ms,Main.s\n0,0,9\n");
 }
+
+/// A method's REFERENCE TO input refers to the variable passed: `f.Twice(q := b)` and
+/// `f.Twice(c)` double b and c, the body's `Twice(q := own)` and `Twice(own)` quadruple `own`
+/// per scan. Before: E1012 from outside ("REF_TO INT, not INT"); inside, the value was written
+/// through the reference the input held (none at the first call).
+#[test]
+fn a_methods_reference_input_refers_to_the_variable_passed() {
+    let (trace, _) = run_traced(
+        &fixture("method_reference_input.st"),
+        2,
+        "Main.a,Main.b,Main.c,Main.f.own",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.a,Main.b,Main.c,Main.f.own\n0,0,6,14,2,40\n1,10,7,28,4,160\n"
+    );
+}

@@ -369,10 +369,32 @@ impl<'d> PouLowering<'d> {
                 ArgDir::Input if sig.in_outs.iter().any(|i| i.eq_ignore_ascii_case(&param)) => {
                     in_outs.push((param, a));
                 }
+                // a REFERENCE TO input refers to the argument (`q REF= v`), as in a call of
+                // the method from outside; any other input takes its value
                 ArgDir::Input => before.push(Stmt {
                     kind: StmtKind::Assign {
+                        value: match self
+                            .vars
+                            .get(&crate::actions::method_var(&sig.name, &param))
+                        {
+                            Some(TypeRef::Ref {
+                                kind: il::RefKind::Reference,
+                                ..
+                            }) if matches!(a.value.kind, ExprKind::Place(_)) => Expr {
+                                kind: ExprKind::Call {
+                                    name: Ident::new(super::refs::REF_ASSIGN, a.span),
+                                    args: vec![Arg {
+                                        name: None,
+                                        dir: ArgDir::Input,
+                                        value: a.value.clone(),
+                                        span: a.span,
+                                    }],
+                                },
+                                span: a.span,
+                            },
+                            _ => a.value.clone(),
+                        },
                         target: hidden,
-                        value: a.value.clone(),
                     },
                     span: a.span,
                 }),
@@ -1159,11 +1181,25 @@ impl<'d> PouLowering<'d> {
             return;
         };
         let fb_ty = self.env().place_type(callee);
+        // `inst.M(x := v)`: M's inputs are the block's hidden `__M_M_X` (a REFERENCE TO input
+        // then refers to `v`, as a block's own does)
+        let method = fb_ty
+            .is_none()
+            .then(|| self.method_called(callee))
+            .flatten();
         let args = self.call_args(
             args,
-            |env, name, _| {
-                let t = fb_ty.as_ref()?;
-                env.member(t, name)
+            |env, name, k| match (&fb_ty, &method) {
+                (Some(t), _) => env.member(t, name),
+                (None, Some((owner, sig))) => {
+                    let param = match name.name.as_str() {
+                        "" => sig.inputs.get(k)?.as_str(),
+                        n => n,
+                    };
+                    let hidden = crate::actions::method_var(&sig.name, param);
+                    env.member(owner, &Ident::new(hidden, name.span))
+                }
+                (None, None) => None,
             },
             out,
             diags,

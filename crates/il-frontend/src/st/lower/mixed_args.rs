@@ -102,6 +102,15 @@ impl PouLowering<'_> {
             }
         }
         // `inst.M(...)`, `PRG.M(...)`: a method of the instance's block or of the program
+        self.method_called(callee).map(|(_, sig)| sig.inputs)
+    }
+
+    /// The method a call `inst.M(...)` / `PRG.M(...)` names: the type holding it (the block, or
+    /// the program) and its signature.
+    pub(super) fn method_called(
+        &self,
+        callee: &Place,
+    ) -> Option<(TypeRef, super::super::types::MethodSig)> {
         let (super::super::ast::Accessor::Field(m), rest) = callee.accessors.split_last()? else {
             return None;
         };
@@ -111,15 +120,15 @@ impl PouLowering<'_> {
             span: callee.span,
         };
         let owner = match self.env().place_type(&prefix) {
-            Some(TypeRef::Named(t)) => t.key(),
-            _ => prefix.name()?.key(),
+            Some(TypeRef::Named(t)) => t,
+            _ => prefix.name()?.clone(),
         };
         let sig = self
             .decls
             .methods
-            .get(&owner)?
+            .get(&owner.key())?
             .iter()
             .find(|s| s.name.eq_ignore_ascii_case(&m.name))?;
-        Some(sig.inputs.clone())
+        Some((TypeRef::Named(owner), sig.clone()))
     }
 }
