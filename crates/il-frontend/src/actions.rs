@@ -539,23 +539,29 @@ fn inline_rec(
                     InstrKind::Call {
                         cond,
                         instance,
-                        args: CallArgs::None,
+                        args,
                     },
                 span,
             }) if instance.accessors.is_empty()
                 && actions.contains_key(&instance.base.key())
-                && !is_var(&instance.base.name) =>
+                && !is_var(&instance.base.name)
+                && (matches!(args, CallArgs::None)
+                    || crate::st::lower::method_in_out::is_in_out_binding(
+                        &instance.base.name,
+                        args,
+                    )) =>
             {
                 Some((
                     *cond,
                     instance.base.key(),
                     instance.base.name.clone(),
                     *span,
+                    args.clone(),
                 ))
             }
             _ => None,
         };
-        let Some((cond, key, written, span)) = target else {
+        let Some((cond, key, written, span, args)) = target else {
             out.push(s);
             continue;
         };
@@ -576,7 +582,9 @@ fn inline_rec(
         }
         *next += 1;
         let tag = format!("{prefix}{next}_");
-        let copy = instantiate(&actions[&key], &tag, span);
+        let mut copy = instantiate(&actions[&key], &tag, span);
+        // a method's in-outs: the copy names the call's arguments
+        crate::st::lower::method_in_out::bind_in_outs(&mut copy, &args);
         stack.push(key);
         let copy = inline_rec(copy, actions, is_var, prefix, next, stack, diags);
         stack.pop();

@@ -706,8 +706,7 @@ impl<'s> Ctx<'s> {
 
     // ------------------------------------------------------------ declarations
 
-    /// Builds a POU; reports a FUNCTION without result type (E0018) and a result type on a program or FB
-    /// (E0011, dropped).
+    /// Builds a POU; reports a result type on a program or FB (E0011, dropped).
     pub fn pou(
         &mut self,
         kind: PouKind,
@@ -717,19 +716,9 @@ impl<'s> Ctx<'s> {
         l: usize,
         r: usize,
     ) -> Pou {
-        if kind == PouKind::Function && return_type.is_none() {
-            let (s, e) = self.local(name.span);
-            self.hint(
-                code::E0018,
-                format!("function `{}` has no result type", name.name),
-                s,
-                e,
-                &format!(
-                    "write the result type after the name, e.g. `FUNCTION {} : INT`",
-                    name.name
-                ),
-            );
-        }
+        // A FUNCTION without `: type` returns no value: TwinCAT compiles it (stefanbesler/struckig's
+        // `FUNCTION INTERNAL Integrate`, whose results are its VAR_IN_OUTs), and the C backend
+        // gives it a `void` C function; using its value is E0354 (`st::lower`).
         if kind != PouKind::Function {
             if let Some(t) = &return_type {
                 let (s, e) = self.local(t.span());

@@ -63,10 +63,17 @@ impl Renames {
             CallArgs::Formal(f) => f.iter_mut().for_each(|a| self.operand(&mut a.value)),
         }
     }
-    /// Renames the variable of one operand (indexes included).
+    /// Renames the variable of one operand (indexes included), also the one a reference value
+    /// names (`REF(x[i])`, `r REF= x[i]` in a method: `x` and `i` its own variables).
     pub fn operand(&self, o: &mut Operand) {
-        if let Operand::Var(v) = o {
-            self.var(v);
+        match o {
+            Operand::Var(v) => self.var(v),
+            Operand::Ref(r) => {
+                if let Some(v) = r.of.as_mut() {
+                    self.var(v);
+                }
+            }
+            _ => {}
         }
     }
     fn var(&self, v: &mut VarRef) {

@@ -232,7 +232,11 @@ impl Analyzer<'_> {
             order.push(id);
         }
         b.a.model.pous[id.0 as usize].instrs = order;
-        if pou.kind == ast::PouKind::Function && !b.result_written && !pou.body.is_empty() {
+        if pou.kind == ast::PouKind::Function
+            && pou.return_type.is_some()
+            && !b.result_written
+            && !pou.body.is_empty()
+        {
             self.warning(
                 code::W1003,
                 pou.name.span,

@@ -337,7 +337,18 @@ impl Body<'_, '_> {
                 _ => result,
             }
         } else if let Some(id) = user_fn {
-            self.user_call(span, id, args, formal, st, rec)
+            let result = self.user_call(span, id, args, formal, st, rec);
+            if self.a.model.pous[id.0 as usize].return_type.is_none() {
+                // a FUNCTION without result type leaves no value: a read of the current result
+                // after it is E1007, nothing is left unused (W1001)
+                if formal {
+                    self.load(st, result, span);
+                }
+                st.cr.ty = None;
+                st.cr.fresh = None;
+                return;
+            }
+            result
         } else {
             let is_fb = self.a.pou_names.contains_key(&name.key())
                 || self.pou().var(&name.name).is_some_and(|v| v.ty.is_fb());
@@ -1033,7 +1044,9 @@ impl Body<'_, '_> {
         }
         let tname = self.a.type_name(&Type::Fb(fb));
         for (name, dir, _) in fb_param_list(&self.a.model, fb) {
+            // (a method's in-out, `__M_<M>_X`, is bound by the calls of that method only)
             if dir != ParamDir::InOut
+                || name.starts_with(crate::actions::METHOD_PREFIX)
                 || rec
                     .args
                     .iter()

@@ -815,15 +815,7 @@ impl Analyzer<'_> {
 
     fn declare_pou(&mut self, id: PouId, p: &ast::Pou, global_consts: &Consts) {
         let return_type = p.return_type.as_ref().map(|t| self.resolve_type(t));
-        if p.kind == ast::PouKind::Function && return_type.is_none() {
-            self.error(
-                code::E1003,
-                p.name.span,
-                format!("function `{}` has no result type", p.name.name),
-            )
-            .label("missing `: type`")
-            .hint("write FUNCTION name : type");
-        }
+        // (a FUNCTION without result type returns no value: see `Parser::pou`)
         let vars = self.declare_vars(&p.var_blocks, global_consts, Some(p.kind));
         let mut externals = Vec::new();
         for (i, v) in vars.iter().enumerate() {

@@ -368,6 +368,8 @@ pub fn add_init_calls(
             .push(MethodSig {
                 name: ACTION.to_string(),
                 inputs: Vec::new(),
+                in_outs: Vec::new(),
+                constant_in_outs: Vec::new(),
                 outputs: Vec::new(),
                 returns: false,
             });

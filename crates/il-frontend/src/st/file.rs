@@ -340,17 +340,22 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 // edition 3), `PROGRAM INTERNAL MAIN` (TwinCAT): the modifier is not the name
                 let modifiers: &[&str] = if w == "FUNCTION_BLOCK" {
                     &["PUBLIC", "INTERNAL", "FINAL", "ABSTRACT"]
-                } else if w == "PROGRAM" {
-                    &["PUBLIC", "INTERNAL"]
                 } else {
-                    &[]
+                    // `FUNCTION INTERNAL Integrate` (TwinCAT, stefanbesler/struckig)
+                    &["PUBLIC", "INTERNAL"]
                 };
                 let modifier = (toks.get(i + 1).is_some_and(|t| {
                     let next = word(src, t).to_ascii_uppercase();
                     t.tok == Tok::Ident
                         && !is_var_keyword(&next)
-                        && !["END_FUNCTION_BLOCK", "END_PROGRAM", "EXTENDS", "IMPLEMENTS"]
-                            .contains(&next.as_str())
+                        && ![
+                            "END_FUNCTION_BLOCK",
+                            "END_PROGRAM",
+                            "END_FUNCTION",
+                            "EXTENDS",
+                            "IMPLEMENTS",
+                        ]
+                        .contains(&next.as_str())
                 }) && toks
                     .get(i)
                     .is_some_and(|t| modifiers.iter().any(|k| is_word(src, t, k))))
@@ -502,7 +507,14 @@ fn pending_method(
 ) -> PendingMethod {
     let vars =
         |text: &str, base: usize, diags: &mut Diagnostics| read_var_blocks(file, text, base, diags);
-    let blocks = vars(src.get(m.decls.clone()).unwrap_or(""), m.decls.start, diags);
+    let decls = src.get(m.decls.clone()).unwrap_or("");
+    // `n : UDINT := SIZEOF(T) * k;`: read without its initial value, assigned when the method starts
+    let inits = super::method_inits::split(decls);
+    let blocks = vars(
+        inits.as_ref().map_or(decls, |(read, _)| read.as_str()),
+        m.decls.start,
+        diags,
+    );
     // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
     // bytes into the file: after `METHOD `)
     let ret = m.ret_end.and_then(|end| {
@@ -514,6 +526,18 @@ fn pending_method(
             .flat_map(|b| b.vars)
             .next()
     });
+    let stmts = src.get(m.stmts.clone()).unwrap_or("");
+    let (text, base) = match inits {
+        // the assignments where they are written, then the statements (positions kept)
+        Some((_, mut t)) if m.decls.end <= m.stmts.start => {
+            t.push_str(&super::method_inits::blank(
+                src.get(m.decls.end..m.stmts.start).unwrap_or(""),
+            ));
+            t.push_str(stmts);
+            (t, m.decls.start)
+        }
+        _ => (stmts.to_string(), m.stmts.start),
+    };
     PendingMethod {
         name: crate::ast::Ident::new(
             &m.name,
@@ -521,8 +545,8 @@ fn pending_method(
         ),
         ret,
         blocks,
-        text: src.get(m.stmts.clone()).unwrap_or("").to_string(),
-        base: m.stmts.start,
+        text,
+        base,
     }
 }
 
@@ -1004,17 +1028,9 @@ pub fn parse_text(
                         code::W0304,
                         format!(
                             "`{} {m}` of `{}`: the modifier is ignored",
-                            if src
-                                .get(..r.start)
-                                .unwrap_or("")
-                                .trim_end()
-                                .to_ascii_uppercase()
-                                .ends_with("PROGRAM")
-                            {
-                                "PROGRAM"
-                            } else {
-                                "FUNCTION_BLOCK"
-                            },
+                            src.get(..r.start)
+                                .and_then(|h| h.split_whitespace().last())
+                                .map_or("FUNCTION_BLOCK".to_string(), str::to_ascii_uppercase),
                             p.name
                         ),
                     )
@@ -1056,13 +1072,22 @@ pub fn parse_text(
     for (pi, p) in pous.iter().enumerate() {
         if p.interface.is_some() {
             // an INTERFACE: its methods' signatures, checked against the blocks that implement it
+            // (with their POINTER TO / REFERENCE TO parameters, as a block's methods: E0335
+            // compared `POINTER TO LREAL` with `LREAL` before)
             let mut methods: Vec<PendingMethod> = p
                 .methods
                 .iter()
-                .map(|m| pending_method(file, src, m, diags))
+                .map(|m| {
+                    let mut pm = pending_method(file, src, m, diags);
+                    references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+                    pm
+                })
                 .collect();
             for pr in &p.properties {
-                methods.extend(super::property::pending_accessors(file, src, pr, diags));
+                for mut pm in super::property::pending_accessors(file, src, pr, diags) {
+                    references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+                    methods.push(pm);
+                }
             }
             pending.push(PendingBody {
                 file,
@@ -1134,11 +1159,10 @@ pub fn parse_text(
             // `FUNCTION_BLOCK Child EXTENDS Base`: the declarations are read without the clause
             blank(&mut text, h.clone());
         }
-        let in_block = p.modifier.is_some()
-            || src
-                .get(..p.name_range.start)
-                .and_then(|h| h.split_whitespace().last())
-                .is_some_and(|k| k.eq_ignore_ascii_case("FUNCTION_BLOCK"));
+        let in_block = src
+            .get(..p.modifier.as_ref().map_or(p.name_range.start, |m| m.start))
+            .and_then(|h| h.split_whitespace().last())
+            .is_some_and(|k| k.eq_ignore_ascii_case("FUNCTION_BLOCK"));
         if let (Some(r), true) = (&p.oop, in_block) {
             // a function block's PROPERTY that scan_properties could not read
             diags.push(
@@ -1620,7 +1644,9 @@ pub fn compile_pending(
 /// Declares the hidden variables of a function block's methods: `__M_<METHOD>_<name>` for each
 /// VAR_INPUT (an input of the block), VAR_OUTPUT (an output), VAR and VAR_TEMP (a temporary: a
 /// method's variables do not keep their values from call to call), and the result `__M_<METHOD>`
-/// (an output). A VAR_IN_OUT of a method is E0303 (not supported).
+/// (an output). A VAR_IN_OUT of a method is a VAR_IN_OUT of the block: a call from outside
+/// (`inst.M(x := v)`) binds it as a call of the instance binds the block's own; a call inside the
+/// block reads and writes the argument itself (see [`super::method_in_out`]).
 pub fn add_method_vars(
     p: &mut crate::ast::Pou,
     methods: &[PendingMethod],
@@ -1631,6 +1657,7 @@ pub fn add_method_vars(
     let mut inputs = Vec::new();
     let mut outputs = Vec::new();
     let mut temps = Vec::new();
+    let mut in_outs = Vec::new();
     let mut defaults = Vec::new();
     for m in methods {
         if let Some(r) = &m.ret {
@@ -1647,6 +1674,7 @@ pub fn add_method_vars(
                 VarKind::Input => &mut inputs,
                 VarKind::Output => &mut outputs,
                 VarKind::Local | VarKind::Temp => &mut temps,
+                VarKind::InOut => &mut in_outs,
                 _ => {
                     diags.push(
                         Diagnostic::error(
@@ -1658,7 +1686,7 @@ pub fn add_method_vars(
                         )
                         .at(b.span)
                         .with_primary_label("not supported in a method")
-                        .with_hint("methods take VAR_INPUT, VAR_OUTPUT, VAR and VAR_TEMP; pass what the method changes through the block's own variables"),
+                        .with_hint("methods take VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR and VAR_TEMP; pass what the method changes through the block's own variables"),
                     );
                     continue;
                 }
@@ -1674,6 +1702,7 @@ pub fn add_method_vars(
     for (kind, vars) in [
         (VarKind::Input, inputs),
         (VarKind::Output, outputs),
+        (VarKind::InOut, in_outs),
         (VarKind::Temp, temps),
         (VarKind::Local, defaults),
     ] {
@@ -1843,10 +1872,11 @@ pub fn lower_method(
         &format!("{}_L", method_result(&m.name.name)),
         m.name.span,
     );
+    // (a non-formal call binds the inputs and in-outs in declaration order, CODESYS)
     let inputs = m
         .blocks
         .iter()
-        .filter(|b| b.kind == VarKind::Input)
+        .filter(|b| matches!(b.kind, VarKind::Input | VarKind::InOut))
         .flat_map(|b| b.vars.iter().map(|v| v.name.clone()))
         .collect();
     Some(crate::ast::Action {

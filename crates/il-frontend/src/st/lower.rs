@@ -28,7 +28,10 @@ use std::collections::HashMap;
 
 mod for_control;
 mod memory;
-mod method_args;
+mod method_flow;
+pub use method_flow::{method_call_expr, METHOD_CALL};
+pub(crate) mod method_in_out;
+mod mixed_args;
 mod short_circuit;
 
 /// Labels of the innermost loop, for EXIT and CONTINUE.
@@ -82,6 +85,11 @@ pub struct PouLowering<'d> {
     /// Whether the POU or the program declares a `REFERENCE TO` anywhere: only then are accesses
     /// looked at for the `^` they leave out.
     reference_to: bool,
+    /// Whether W1422 (positional then formal arguments) was reported for this POU.
+    mixed_args_reported: bool,
+    /// Set while a call statement's function call is lowered: its value is not used (a FUNCTION
+    /// without result type may stand there, nowhere else: E0354).
+    result_dropped: bool,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -208,6 +216,8 @@ impl<'d> PouLowering<'d> {
             types: RefCell::new(TypeCache::new()),
             nested: 0,
             raw_refs: false,
+            mixed_args_reported: false,
+            result_dropped: false,
             reference_to: decls.has_reference_to()
                 || pou.var_blocks.iter().any(|b| {
                     b.vars
@@ -329,6 +339,7 @@ impl<'d> PouLowering<'d> {
         };
         let mut before = Vec::new();
         let mut after = Vec::new();
+        let mut in_outs = Vec::new();
         let mut positional = sig.inputs.iter();
         for a in args {
             let (param, list) = match (&a.dir, &a.name) {
@@ -356,10 +367,35 @@ impl<'d> PouLowering<'d> {
             };
             let hidden = place(crate::actions::method_var(&sig.name, &param), a.span);
             match a.dir {
+                ArgDir::Input if sig.in_outs.iter().any(|i| i.eq_ignore_ascii_case(&param)) => {
+                    in_outs.push((param, a));
+                }
+                // a REFERENCE TO input refers to the argument (`q REF= v`), as in a call of
+                // the method from outside; any other input takes its value
                 ArgDir::Input => before.push(Stmt {
                     kind: StmtKind::Assign {
+                        value: match self
+                            .vars
+                            .get(&crate::actions::method_var(&sig.name, &param))
+                        {
+                            Some(TypeRef::Ref {
+                                kind: il::RefKind::Reference,
+                                ..
+                            }) if matches!(a.value.kind, ExprKind::Place(_)) => Expr {
+                                kind: ExprKind::Call {
+                                    name: Ident::new(super::refs::REF_ASSIGN, a.span),
+                                    args: vec![Arg {
+                                        name: None,
+                                        dir: ArgDir::Input,
+                                        value: a.value.clone(),
+                                        span: a.span,
+                                    }],
+                                },
+                                span: a.span,
+                            },
+                            _ => a.value.clone(),
+                        },
                         target: hidden,
-                        value: a.value.clone(),
                     },
                     span: a.span,
                 }),
@@ -393,6 +429,7 @@ impl<'d> PouLowering<'d> {
             }
         }
         self.stmt_list(&before, out, diags);
+        let bound = self.method_in_out_args(sig, &in_outs, out, diags);
         out.push(instr(
             InstrKind::Call {
                 cond: Condition::Always,
@@ -401,207 +438,16 @@ impl<'d> PouLowering<'d> {
                     accessors: Default::default(),
                     span,
                 }),
-                args: CallArgs::None,
+                args: if bound.is_empty() {
+                    CallArgs::None
+                } else {
+                    CallArgs::Formal(bound)
+                },
             },
             span,
         ));
         self.stmt_list(&after, out, diags);
         self.types.get_mut().clear();
-    }
-
-    /// The calls of the block's own methods inside the expressions `s` evaluates before anything
-    /// else (an assignment's, a call's arguments, the first IF condition, a CASE selector, FOR
-    /// bounds), as call statements, and `s` reading their results instead; `None` when it has none.
-    /// A call in an ELSIF, WHILE or UNTIL condition (evaluated later, or again) is E0108, as from
-    /// outside the block.
-    fn hoist_method_calls(&self, s: &Stmt, diags: &mut Diagnostics) -> Option<(Vec<Stmt>, Stmt)> {
-        let has = |e: &Expr| self.first_method_call(e).is_some();
-        let place_has = |p: &Place| {
-            p.accessors
-                .iter()
-                .any(|a| matches!(a, Accessor::Index(ix) if ix.iter().any(has)))
-        };
-        let any = match &s.kind {
-            StmtKind::Assign { target, value } => place_has(target) || has(value),
-            StmtKind::Call { args, .. } => args.iter().any(|a| has(&a.value)),
-            StmtKind::If { branches, .. } => branches.iter().any(|b| has(&b.cond)),
-            StmtKind::Case { selector, .. } => has(selector),
-            StmtKind::For { from, to, by, .. } => {
-                has(from) || has(to) || by.as_ref().is_some_and(has)
-            }
-            StmtKind::While { cond, .. } => has(cond),
-            StmtKind::Repeat { until, .. } => has(until),
-            _ => false,
-        };
-        if !any {
-            return None;
-        }
-        let mut calls = Vec::new();
-        let mut rest = s.clone();
-        let mut late: Vec<&mut Expr> = Vec::new();
-        {
-            let mut eager: Vec<&mut Expr> = Vec::new();
-            match &mut rest.kind {
-                StmtKind::Assign { target, value } => {
-                    place_exprs(target, &mut eager);
-                    eager.push(value);
-                }
-                StmtKind::Call { args, .. } => eager.extend(args.iter_mut().map(|a| &mut a.value)),
-                StmtKind::If { branches, .. } => {
-                    for (k, b) in branches.iter_mut().enumerate() {
-                        if k == 0 {
-                            eager.push(&mut b.cond);
-                        } else {
-                            late.push(&mut b.cond);
-                        }
-                    }
-                }
-                StmtKind::Case { selector, .. } => eager.push(selector),
-                StmtKind::For { from, to, by, .. } => {
-                    eager.push(from);
-                    eager.push(to);
-                    eager.extend(by.as_mut());
-                }
-                StmtKind::While { cond, .. } => late.push(cond),
-                StmtKind::Repeat { until, .. } => late.push(until),
-                _ => {}
-            }
-            for e in eager {
-                self.hoist_in(e, &mut calls, diags);
-            }
-        }
-        for e in late {
-            if let Some(span) = self.first_method_call(e) {
-                diags.push(
-                    Diagnostic::error(
-                        code::E0108,
-                        "a call of the block's own method in an ELSIF, WHILE or UNTIL condition is not supported",
-                    )
-                    .at(span)
-                    .with_hint("call the method in a statement of its own and test the variable that holds its result"),
-                );
-                *e = Expr {
-                    kind: ExprKind::Error,
-                    span,
-                };
-            }
-        }
-        Some((calls, rest))
-    }
-
-    /// Whether `n` names one of the block's methods (and no variable).
-    fn is_method(&self, n: &Ident) -> bool {
-        self.methods.contains_key(&n.key()) && !self.vars.contains_key(&n.key())
-    }
-
-    /// Replaces the method calls inside `e` (arguments first) by reads of their results.
-    fn hoist_in(&self, e: &mut Expr, calls: &mut Vec<Stmt>, diags: &mut Diagnostics) {
-        match &mut e.kind {
-            ExprKind::Unary { operand, .. } => self.hoist_in(operand, calls, diags),
-            ExprKind::Binary {
-                op: BinaryOp::AndThen | BinaryOp::OrElse,
-                left,
-                right,
-            } => {
-                self.hoist_in(left, calls, diags);
-                // the right operand runs only sometimes: its method calls cannot run first
-                if let Some(span) = self.first_method_call(right) {
-                    diags.push(
-                        Diagnostic::error(
-                            code::E0108,
-                            "a call of the block's own method after AND_THEN or OR_ELSE is not supported",
-                        )
-                        .at(span)
-                        .with_hint("call the method inside an IF that tests the left operand, and test the variable that holds its result"),
-                    );
-                    right.kind = ExprKind::Error;
-                }
-            }
-            ExprKind::Binary { left, right, .. } => {
-                self.hoist_in(left, calls, diags);
-                self.hoist_in(right, calls, diags);
-            }
-            ExprKind::Call { name, args } => {
-                for a in args.iter_mut() {
-                    self.hoist_in(&mut a.value, calls, diags);
-                }
-                if !self.is_method(name) {
-                    return;
-                }
-                let name = name.clone();
-                let sig = &self.methods[&name.key()];
-                let twice = calls.iter().any(|c| {
-                    matches!(&c.kind, StmtKind::Call { callee: Place { base: PlaceBase::Name(n), .. }, .. } if n.is(&sig.name))
-                });
-                if twice || !sig.returns {
-                    let msg = if twice {
-                        format!("method `{}` is called twice in one statement", name.name)
-                    } else {
-                        format!("method `{}` returns no value", name.name)
-                    };
-                    diags.push(
-                        Diagnostic::error(if twice { code::E0108 } else { code::E1011 }, msg)
-                            .at(e.span)
-                            .with_hint(if twice {
-                                "both calls would give one result: call it in two statements, each storing its result"
-                            } else {
-                                "call it as a statement, or give the method a result type (`METHOD M : INT`) and assign it"
-                            }),
-                    );
-                    e.kind = ExprKind::Error;
-                    return;
-                }
-                let args = std::mem::take(args);
-                calls.push(Stmt {
-                    kind: StmtKind::Call {
-                        callee: Place {
-                            base: PlaceBase::Name(name.clone()),
-                            accessors: Vec::new(),
-                            span: name.span,
-                        },
-                        args,
-                    },
-                    span: e.span,
-                });
-                e.kind = ExprKind::Place(Place {
-                    base: PlaceBase::Name(Ident::new(
-                        crate::actions::method_result(&sig.name),
-                        name.span,
-                    )),
-                    accessors: Vec::new(),
-                    span: e.span,
-                });
-            }
-            ExprKind::Place(p) => {
-                let mut inner = Vec::new();
-                place_exprs(p, &mut inner);
-                for x in inner {
-                    self.hoist_in(x, calls, diags);
-                }
-            }
-            _ => {}
-        }
-    }
-
-    /// The span of the first call of one of the block's methods inside `e`.
-    fn first_method_call(&self, e: &Expr) -> Option<Span> {
-        match &e.kind {
-            ExprKind::Unary { operand, .. } => self.first_method_call(operand),
-            ExprKind::Binary { left, right, .. } => self
-                .first_method_call(left)
-                .or_else(|| self.first_method_call(right)),
-            ExprKind::Call { name, args } => {
-                if self.is_method(name) {
-                    return Some(e.span);
-                }
-                args.iter().find_map(|a| self.first_method_call(&a.value))
-            }
-            ExprKind::Place(p) => p.accessors.iter().find_map(|a| match a {
-                Accessor::Index(ix) => ix.iter().find_map(|x| self.first_method_call(x)),
-                Accessor::Field(_) | Accessor::Deref(_) => None,
-            }),
-            _ => None,
-        }
     }
 
     /// Lowers an expression: the instructions leave its value in the current result.
@@ -751,7 +597,7 @@ impl<'d> PouLowering<'d> {
                 return true;
             }
         }
-        if !self.methods.is_empty() {
+        {
             if let Some((calls, rest)) = self.hoist_method_calls(s, diags) {
                 // `x := M(a) + 1;` inside the block: the call runs first, the statement reads the
                 // result `__M_M` (as `inst.M(a)` from outside, see the parser)
@@ -1320,6 +1166,14 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
+        let named;
+        let args = match self.name_positional_args(callee, args, diags) {
+            Some(n) => {
+                named = n;
+                &named[..]
+            }
+            None => args,
+        };
         // A plain name that is not a variable but a function: a function call whose result is dropped.
         if let Some(name) = callee.name() {
             if self.env().var_type(name).is_none() {
@@ -1353,7 +1207,9 @@ impl<'d> PouLowering<'d> {
                     },
                     span,
                 };
+                self.result_dropped = true;
                 self.value(&e, out, diags);
+                self.result_dropped = false;
                 // `e` is dropped here: forget the types keyed by its nodes' addresses.
                 self.types.get_mut().clear();
                 return;
@@ -1371,23 +1227,25 @@ impl<'d> PouLowering<'d> {
             return;
         };
         let fb_ty = self.env().place_type(callee);
-        // `inst.M(...)`: a method's inputs type their arguments too (`method_args`)
-        let method_inputs: Vec<Option<TypeRef>> = match &fb_ty {
-            Some(_) => Vec::new(),
-            None => args
-                .iter()
-                .enumerate()
-                .map(|(k, a)| {
-                    let name = a.name.clone().unwrap_or_else(|| Ident::new("", a.span));
-                    self.method_input_type(&self.env(), callee, &name, k)
-                })
-                .collect(),
-        };
+        // `inst.M(x := v)`: M's inputs are the block's hidden `__M_M_X` (a REFERENCE TO input
+        // then refers to `v`, as a block's own does)
+        let method = fb_ty
+            .is_none()
+            .then(|| self.method_called(callee))
+            .flatten();
         let args = self.call_args(
             args,
-            |env, name, k| match fb_ty.as_ref() {
-                Some(t) => env.member(t, name),
-                None => method_inputs.get(k).cloned().flatten(),
+            |env, name, k| match (&fb_ty, &method) {
+                (Some(t), _) => env.member(t, name),
+                (None, Some((owner, sig))) => {
+                    let param = match name.name.as_str() {
+                        "" => sig.inputs.get(k)?.as_str(),
+                        n => n,
+                    };
+                    let hidden = crate::actions::method_var(&sig.name, param);
+                    env.member(owner, &Ident::new(hidden, name.span))
+                }
+                (None, None) => None,
             },
             out,
             diags,
@@ -2044,6 +1902,42 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) {
+        let dropped = std::mem::take(&mut self.result_dropped);
+        if !dropped
+            && self
+                .decls
+                .pou(&name.name)
+                .is_some_and(|p| p.kind == PouKind::Function && p.ret.is_none())
+            && self.env().var_type(name).is_none()
+        {
+            diags.push(
+                Diagnostic::error(
+                    code::E0354,
+                    format!("function `{}` returns no value", name.name),
+                )
+                .at(span)
+                .with_primary_label("its value is used here")
+                .with_hint(format!(
+                    "call it as a statement (`{}(...);`) and read what it writes to its VAR_IN_OUT or VAR_OUTPUT parameters, or give it a result type (`FUNCTION {} : LREAL`)",
+                    name.name, name.name
+                )),
+            );
+            self.poisoned = true;
+            return;
+        }
+        let with_names;
+        let callee = Place {
+            base: PlaceBase::Name(name.clone()),
+            accessors: Vec::new(),
+            span: name.span,
+        };
+        let args = match self.name_positional_args(&callee, args, diags) {
+            Some(n) => {
+                with_names = n;
+                &with_names[..]
+            }
+            None => args,
+        };
         let call = Expr {
             kind: ExprKind::Call {
                 name: name.clone(),

@@ -25,6 +25,7 @@ pub mod interface_vars;
 pub mod lexer;
 mod list_bounds;
 pub mod lower;
+mod method_inits;
 pub mod parser;
 pub mod property;
 pub mod qualifiers;

@@ -960,9 +960,10 @@ impl<'s, 'd> Parser<'s, 'd> {
 
     /// `inst.M(args)` inside an expression: a call of method `M` (edition 3). The call becomes a
     /// statement before the current one, and the expression reads the method's result
-    /// `inst.__M_M`. Where the statement cannot run it first (a WHILE, UNTIL or ELSIF condition),
-    /// or when the statement calls the same method of the same instance twice (both would read
-    /// one result), it is E0108.
+    /// `inst.__M_M`. Where the statement cannot run it first (a WHILE, UNTIL or ELSIF condition,
+    /// the right operand of AND_THEN / OR_ELSE), or when the statement calls the same method of
+    /// the same instance twice (both would read one result), the call stays in the expression
+    /// ([`super::lower::method_call_expr`]) and the lowering places it.
     fn method_call_expr(&mut self, callee: Place, m: Ident) -> Expr {
         let here = callee.span;
         let Some(args) = self.args() else {
@@ -978,23 +979,9 @@ impl<'s, 'd> Parser<'s, 'd> {
             |s| matches!(&s.kind, StmtKind::Call { callee: c, .. } if text(c) == text(&callee)),
         );
         if self.no_hoist > 0 || twice {
-            let (msg, hint) = if twice {
-                (
-                    format!("method `{}` is called twice in one statement", m.name),
-                    "both calls would give one result: call it in two statements, each storing its result",
-                )
-            } else {
-                (
-                    if self.short_operand > 0 {
-                        format!("a call of method `{}` after AND_THEN or OR_ELSE is not supported", m.name)
-                    } else {
-                        format!("a call of method `{}` in a WHILE, UNTIL or ELSIF condition is not supported", m.name)
-                    },
-                    "call the method in a statement of its own and test the variable that holds its result",
-                )
-            };
-            self.error_at(code::E0108, span, msg, hint);
-            return self.error_expr(span);
+            // left in the expression: the lowering runs it where the source evaluates it
+            // (`super::lower::method_flow`)
+            return super::lower::method_call_expr(callee, args, span);
         }
         let mut result = callee.clone();
         if let Some(last) = result.accessors.last_mut() {

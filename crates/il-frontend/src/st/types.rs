@@ -83,8 +83,14 @@ pub struct Declarations {
 pub struct MethodSig {
     /// The method's name as declared.
     pub name: String,
-    /// Its VAR_INPUT names, in declaration order (positional arguments bind in this order).
+    /// Its VAR_INPUT and VAR_IN_OUT names, in declaration order (positional arguments bind in
+    /// this order).
     pub inputs: Vec<String>,
+    /// Those of [`Self::inputs`] that are VAR_IN_OUT (bound to the argument, not copied).
+    pub in_outs: Vec<String>,
+    /// Those of [`Self::in_outs`] declared `VAR_IN_OUT CONSTANT`, with their types: they take any
+    /// value (CODESYS), passed through a temporary when it is not a variable.
+    pub constant_in_outs: Vec<(String, crate::ast::TypeRef)>,
     /// Its VAR_OUTPUT names.
     pub outputs: Vec<String>,
     /// Whether it returns a value (`METHOD M : INT`).
@@ -94,17 +100,24 @@ pub struct MethodSig {
 impl MethodSig {
     /// The interface of a method read from an ST file or a CODESYS export.
     pub fn of(m: &super::file::PendingMethod) -> MethodSig {
-        let names = |k: crate::ast::VarKind| {
+        let names = |k: &[crate::ast::VarKind]| {
             m.blocks
                 .iter()
-                .filter(|b| b.kind == k)
+                .filter(|b| k.contains(&b.kind))
                 .flat_map(|b| b.vars.iter().map(|v| v.name.name.clone()))
                 .collect()
         };
         MethodSig {
             name: m.name.name.clone(),
-            inputs: names(crate::ast::VarKind::Input),
-            outputs: names(crate::ast::VarKind::Output),
+            inputs: names(&[crate::ast::VarKind::Input, crate::ast::VarKind::InOut]),
+            in_outs: names(&[crate::ast::VarKind::InOut]),
+            constant_in_outs: m
+                .blocks
+                .iter()
+                .filter(|b| b.kind == crate::ast::VarKind::InOut && b.constant)
+                .flat_map(|b| b.vars.iter().map(|v| (v.name.name.clone(), v.ty.clone())))
+                .collect(),
+            outputs: names(&[crate::ast::VarKind::Output]),
             returns: m.ret.is_some(),
         }
     }
