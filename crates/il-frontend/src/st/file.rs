@@ -108,12 +108,16 @@ pub struct PendingMethod {
     pub name: crate::ast::Ident,
     /// Its result (a variable named like the method), if it returns one.
     pub ret: Option<crate::ast::VarDecl>,
-    /// Its VAR_INPUT, VAR_OUTPUT, VAR and VAR_TEMP blocks.
+    /// Its VAR_INPUT, VAR_OUTPUT, VAR, VAR_TEMP and VAR_INST blocks (a VAR_INST block is read as
+    /// a `VAR` block; its variables are in [`Self::inst`]).
     pub blocks: Vec<crate::ast::VarBlock>,
     /// Its statements' text and their offset in the file.
     pub text: String,
     /// Byte offset of `text` in the file.
     pub base: usize,
+    /// The variables of its VAR_INST blocks (upper-case; TwinCAT): kept in the instance from call
+    /// to call, where its other variables start again at each call.
+    pub inst: Vec<String>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -502,7 +506,13 @@ fn pending_method(
 ) -> PendingMethod {
     let vars =
         |text: &str, base: usize, diags: &mut Diagnostics| read_var_blocks(file, text, base, diags);
-    let blocks = vars(src.get(m.decls.clone()).unwrap_or(""), m.decls.start, diags);
+    let (decls, inst_at) = var_inst_as_var(src.get(m.decls.clone()).unwrap_or(""));
+    let blocks = vars(&decls, m.decls.start, diags);
+    let inst = blocks
+        .iter()
+        .filter(|b| inst_at.contains(&(b.span.start as usize - m.decls.start)))
+        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+        .collect();
     // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
     // bytes into the file: after `METHOD `)
     let ret = m.ret_end.and_then(|end| {
@@ -523,7 +533,27 @@ fn pending_method(
         blocks,
         text: src.get(m.stmts.clone()).unwrap_or("").to_string(),
         base: m.stmts.start,
+        inst,
     }
+}
+
+/// A method's declaration text with each `VAR_INST` keyword (TwinCAT, Beckhoff Infosys "VAR_INST":
+/// a method variable stored in the function block instance, kept between calls) read as `VAR` of
+/// the same length, and the offsets of those keywords in the text.
+fn var_inst_as_var(text: &str) -> (String, Vec<usize>) {
+    let (toks, _) = lex(text);
+    let mut out = text.to_string();
+    let mut at = Vec::new();
+    for t in &toks {
+        if text
+            .get(t.range.clone())
+            .is_some_and(|w| w.eq_ignore_ascii_case("VAR_INST"))
+        {
+            out.replace_range(t.range.clone(), "VAR     ");
+            at.push(t.range.start);
+        }
+    }
+    (out, at)
 }
 
 /// The variable blocks of a method's (or a property accessor's) declaration text, read by the IL
@@ -1556,8 +1586,8 @@ pub fn compile_pending(
 
 /// Declares the hidden variables of a function block's methods: `__M_<METHOD>_<name>` for each
 /// VAR_INPUT (an input of the block), VAR_OUTPUT (an output), VAR and VAR_TEMP (a temporary: a
-/// method's variables do not keep their values from call to call), and the result `__M_<METHOD>`
-/// (an output). A VAR_IN_OUT of a method is E0303 (not supported).
+/// method's variables do not keep their values from call to call), VAR_INST (a local of the block:
+/// kept, initialised once with the instance), and the result `__M_<METHOD>` (an output). A VAR_IN_OUT of a method is E0303 (not supported).
 pub fn add_method_vars(
     p: &mut crate::ast::Pou,
     methods: &[PendingMethod],
@@ -1569,6 +1599,7 @@ pub fn add_method_vars(
     let mut outputs = Vec::new();
     let mut temps = Vec::new();
     let mut defaults = Vec::new();
+    let mut kept = Vec::new();
     for m in methods {
         if let Some(r) = &m.ret {
             let mut v = r.clone();
@@ -1602,8 +1633,14 @@ pub fn add_method_vars(
             };
             for v in &b.vars {
                 let mut v = v.clone();
+                let inst = m.inst.contains(&v.name.key());
                 v.name.name = method_var(&m.name.name, &v.name.name);
-                list.push(v);
+                if inst {
+                    // VAR_INST: a variable of the instance, initialised once with it
+                    kept.push(v);
+                } else {
+                    list.push(v);
+                }
             }
         }
     }
@@ -1613,6 +1650,7 @@ pub fn add_method_vars(
         (VarKind::Output, outputs),
         (VarKind::Temp, temps),
         (VarKind::Local, defaults),
+        (VarKind::Local, kept),
     ] {
         if !vars.is_empty() {
             p.var_blocks.push(VarBlock {

@@ -563,6 +563,7 @@ fn flatten_one(
                     blocks: Vec::new(),
                     text,
                     base,
+                    inst: Vec::new(),
                 });
                 files.push(file);
             }

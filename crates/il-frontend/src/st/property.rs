@@ -257,6 +257,7 @@ pub fn accessor_methods(
             blocks,
             text,
             base,
+            inst: Vec::new(),
         });
     }
     if let Some((mut blocks, text, base)) = set {
@@ -277,6 +278,7 @@ pub fn accessor_methods(
             blocks,
             text,
             base,
+            inst: Vec::new(),
         });
     }
     out
