@@ -36,3 +36,53 @@ fn var_inst_of_a_method_is_kept_in_each_instance_between_calls() {
     assert_eq!(column(&trace, "Main.b.total"), [5.0, 10.0, 15.0]);
     assert_eq!(column(&trace, "Main.t.total"), [2.0, 4.0, 6.0]);
 }
+
+/// One `FB_Meter`, called four times a cycle, gets a plain `FB_Shape`, an `FB_Circle`, an
+/// `FB_Square` and an `FB_BigSquare` (which EXTENDS `FB_Square`) in its `VAR_IN_OUT shape :
+/// FB_Shape`: `shape.Area()` runs each block's own override (0, 3 r², s², s² + 1000 through
+/// `SUPER^.Area()`), `shape.calls` is the base part of each instance, and `shape(...)` runs each
+/// instance's own body (`bodies` +1, +10, +100; `FB_BigSquare` has no body of its own, so none).
+#[test]
+fn a_derived_instance_in_a_base_in_out_runs_its_own_methods_and_body() {
+    let (trace, stderr) = run_traced(
+        &fixture("shapes.st"),
+        2,
+        "Main.viaPlain,Main.viaCircle,Main.viaSquare,Main.viaBig,Main.meter.total,\
+         Main.plain.calls,Main.circle.calls,Main.square.calls,Main.big.calls,\
+         Main.plain.bodies,Main.circle.bodies,Main.square.bodies,Main.big.bodies",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.viaPlain"), [0.0, 0.0]);
+    assert_eq!(column(&trace, "Main.viaCircle"), [12.0, 12.0]);
+    assert_eq!(column(&trace, "Main.viaSquare"), [9.0, 9.0]);
+    // big.size is 4, then 5 (written through a REFERENCE TO FB_Shape below)
+    assert_eq!(column(&trace, "Main.viaBig"), [1016.0, 1025.0]);
+    assert_eq!(column(&trace, "Main.meter.total"), [1037.0, 2083.0]);
+    for shape in ["plain", "circle", "square", "big"] {
+        assert_eq!(column(&trace, &format!("Main.{shape}.calls")), [1.0, 2.0]);
+    }
+    assert_eq!(column(&trace, "Main.plain.bodies"), [1.0, 2.0]);
+    assert_eq!(column(&trace, "Main.circle.bodies"), [10.0, 20.0]);
+    assert_eq!(column(&trace, "Main.square.bodies"), [100.0, 200.0]);
+    assert_eq!(column(&trace, "Main.big.bodies"), [0.0, 0.0]);
+}
+
+/// `pShape : POINTER TO FB_Shape := ADR(circle)`: `pShape^.Area()` is the circle's (12, and its
+/// own counter `own` counts this call and the meter's); `rShape : REFERENCE TO FB_Shape`,
+/// `rShape REF= big`: `rShape.Area()` is the big square's, and `rShape.size := rShape.size + 1.0`
+/// changes `big.size`; a FUNCTION's `REFERENCE TO FB_Shape` input given the square calls its
+/// `Area` (9 + 0.5).
+#[test]
+fn pointers_and_references_to_a_base_reach_the_derived_instance() {
+    let (trace, stderr) = run_traced(
+        &fixture("shapes.st"),
+        2,
+        "Main.viaPointer,Main.circle.own,Main.viaReference,Main.bigSize,Main.viaFunction",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.viaPointer"), [12.0, 12.0]);
+    assert_eq!(column(&trace, "Main.circle.own"), [2.0, 4.0]);
+    assert_eq!(column(&trace, "Main.viaReference"), [1016.0, 1025.0]);
+    assert_eq!(column(&trace, "Main.bigSize"), [5.0, 6.0]);
+    assert_eq!(column(&trace, "Main.viaFunction"), [9.5, 9.5]);
+}

@@ -1443,12 +1443,14 @@ pub fn compile_pending(
     let mut interfaces = Vec::new();
     let mut inits = Vec::new();
     let mut bases = std::collections::HashMap::new();
+    let mut derived = std::collections::HashMap::new();
     let pending = match super::inherit::flatten(units, pending, diags) {
         Some(v) => {
             flat = v.bodies;
             interfaces = v.interfaces;
             inits = v.inits;
             bases = v.bases;
+            derived = v.derived;
             &flat[..]
         }
         None => pending,
@@ -1491,6 +1493,7 @@ pub fn compile_pending(
         decls.interfaces.insert(i.name.key(), i);
     }
     decls.bases = bases;
+    decls.derived = derived;
     for pb in pending.iter().filter(|pb| !pb.sfc) {
         let diags: &mut Diagnostics = if pb.derived() {
             &mut inherited

@@ -490,7 +490,6 @@ impl Rewriter<'_, '_> {
                     self.changed = true;
                     return out;
                 }
-                self.derived_for_base(callee, args);
                 let inputs = self.interface_inputs(callee, args);
                 if !inputs.is_empty() {
                     self.changed = true;
@@ -750,73 +749,6 @@ impl Rewriter<'_, '_> {
         }
         *args = kept;
         before
-    }
-
-    /// `fb(io := derived)` where `io` is a VAR_IN_OUT (or `REFERENCE TO`) of a base block of
-    /// `derived`'s: one E0344 each (the argument is left out). ladderc gives each derived block
-    /// its own flattened copy of its bases' code (late binding without pointers), so an instance
-    /// of it is no instance of its base in memory; an interface both implement is the way to pass
-    /// either.
-    fn derived_for_base(&mut self, callee: &Place, args: &mut Vec<Arg>) {
-        if self.env.decls.bases.is_empty() {
-            return;
-        }
-        let Some(TypeRef::Named(fb)) = self.env.place_type(callee).map(|t| self.env.resolve(&t))
-        else {
-            return;
-        };
-        let Some(pou) = self.env.decls.pou(&fb.name).cloned() else {
-            return;
-        };
-        let params: Vec<_> = pou.params().cloned().collect();
-        let mut k = 0;
-        args.retain(|a| {
-            let at = k;
-            k += 1;
-            let param = match &a.name {
-                Some(n) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
-                None => params.get(at),
-            };
-            let Some((name, kind, ty)) = param else {
-                return true;
-            };
-            let expected = match (kind, ty) {
-                (crate::ast::VarKind::InOut, TypeRef::Named(b)) => b,
-                (_, TypeRef::Ref { target, .. }) => match &**target {
-                    TypeRef::Named(b) => b,
-                    _ => return true,
-                },
-                _ => return true,
-            };
-            let Some(given) = self.block_of(&a.value) else {
-                return true;
-            };
-            let derived = self
-                .env
-                .decls
-                .bases
-                .get(&given.key())
-                .is_some_and(|bs| bs.contains(&expected.key()));
-            if !derived {
-                return true;
-            }
-            self.diags.push(
-                Diagnostic::error(
-                    code::E0344,
-                    format!(
-                        "an instance of `{}`, which extends `{}`, passed to `{}` of `{}`: a derived instance where its base is expected is not supported",
-                        given.name, expected.name, name, pou.name
-                    ),
-                )
-                .at(a.value.span)
-                .with_primary_label("a derived instance for its base")
-                .with_hint(format!(
-                    "declare `{name}` with an INTERFACE that `{}` implements (both blocks then pass), or pass a `{}`",
-                    expected.name, expected.name
-                )),
-            );
-            false
-        });
     }
 
     /// `F(shape := inst)` where `shape` is a FUNCTION's input of interface type: a temporary of

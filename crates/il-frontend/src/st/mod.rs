@@ -13,6 +13,7 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
+pub mod base_view;
 mod conditional;
 mod conflict_markers;
 pub mod fb_init;
