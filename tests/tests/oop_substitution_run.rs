@@ -86,3 +86,23 @@ fn pointers_and_references_to_a_base_reach_the_derived_instance() {
     assert_eq!(column(&trace, "Main.bigSize"), [5.0, 6.0]);
     assert_eq!(column(&trace, "Main.viaFunction"), [9.5, 9.5]);
 }
+
+/// `itf := itf.Next()` walks the list n1 (1) -> n2 (20) -> n3 (300) through the interface until
+/// the unassigned end (`itf <> 0`): 321; `n1.Next()` on the instance is n2 (20); a FUNCTION
+/// returning `I_Node` gives n3 (300); `list.First` (a block's PROPERTY of type `I_Node`, set to
+/// n2) and `itf.Following` (an interface's PROPERTY of type `I_Node`, through the interface)
+/// give n2 (20) and n3 (300).
+#[test]
+fn methods_and_properties_returning_an_interface_are_called_through_an_interface() {
+    let (trace, stderr) = run_traced(
+        &fixture("interface_results.st"),
+        2,
+        "Main.sum,Main.direct,Main.viaFunction,Main.viaProperty,Main.viaItfProperty",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.sum"), [321.0, 321.0]);
+    assert_eq!(column(&trace, "Main.direct"), [20.0, 20.0]);
+    assert_eq!(column(&trace, "Main.viaFunction"), [300.0, 300.0]);
+    assert_eq!(column(&trace, "Main.viaProperty"), [20.0, 20.0]);
+    assert_eq!(column(&trace, "Main.viaItfProperty"), [300.0, 300.0]);
+}

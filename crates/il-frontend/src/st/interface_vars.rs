@@ -49,6 +49,12 @@ fn ref_field(fb: &str) -> String {
     format!("__R_{}", fb.to_ascii_uppercase())
 }
 
+/// The variable of the caller holding the result, of an interface type, of method `m` called
+/// through the interface at `at` (the call's callee).
+fn interface_result(at: Span, m: &str) -> String {
+    format!("__IR_{}_{}", at.start, m.to_ascii_uppercase())
+}
+
 /// An interface as variables of its type see it.
 #[derive(Debug, Clone)]
 pub struct Interface {
@@ -61,9 +67,10 @@ pub struct Interface {
     pub methods: Vec<MethodSig>,
     /// Its own key and those of the interfaces it extends (an `I2 EXTENDS I1` value is an `I1`).
     pub within: Vec<String>,
-    /// The methods (upper-case) whose result is of an interface type: not callable through the
-    /// interface (E0342).
-    pub interface_results: Vec<String>,
+    /// The methods (upper-case) whose result is of an interface type, with that type: their
+    /// result is no field of the structure (it would hold itself); a call through the interface
+    /// copies it into a variable of the caller ([`interface_result`]).
+    pub interface_results: Vec<(String, TypeRef)>,
 }
 
 /// Whether `t` is an interface type or an array of one.
@@ -163,7 +170,7 @@ pub fn table(
             if let Some(r) = &m.ret {
                 if names_interface(&r.ty, interfaces) {
                     // a result holding an interface would make the structure hold itself
-                    interface_results.push(m.name.key());
+                    interface_results.push((m.name.key(), r.ty.clone()));
                     continue;
                 }
                 fields.push(VarDecl::new(
@@ -648,21 +655,25 @@ impl Rewriter<'_, '_> {
             );
             return Some(Vec::new());
         };
-        if i.interface_results.contains(&m.key()) {
-            self.diags.push(
-                Diagnostic::error(
-                    code::E0342,
-                    format!(
-                        "method `{}` of interface `{}` returns an interface: not callable through an interface variable",
-                        sig.name, i.name.name
-                    ),
-                )
-                .at(m.span)
-                .with_primary_label("its result would hold an interface")
-                .with_hint("return the result through a VAR_IN_OUT of the interface type, or call the method on the instance itself"),
-            );
-            return Some(Vec::new());
-        }
+        // a result of an interface type: copied into a variable of the caller, which the
+        // statement reading `itf.M()` (the parser's `itf.__M_M`) reads instead
+        let itf_result = i
+            .interface_results
+            .iter()
+            .find(|(k, _)| *k == m.key())
+            .map(|(_, ty)| {
+                let name = interface_result(callee.span, &m.name);
+                let at = Ident::new(&name, span);
+                if self.env.var_type(&at).is_none() && !self.temps.iter().any(|t| t.name.is(&name))
+                {
+                    self.temps.push(VarDecl::new(at, ty.clone(), span));
+                }
+                Place {
+                    base: PlaceBase::Name(Ident::new(name, span)),
+                    accessors: Vec::new(),
+                    span,
+                }
+            });
         let result = crate::actions::method_result(&sig.name);
         let mut arms = Vec::new();
         for (c, tag) in &i.classes {
@@ -674,7 +685,13 @@ impl Rewriter<'_, '_> {
                 },
                 span,
             }];
-            if sig.returns {
+            if let Some(r) = &itf_result {
+                body.push(assign(
+                    r.clone(),
+                    place_expr(field(&inst, &result, span), span),
+                    span,
+                ));
+            } else if sig.returns {
                 body.push(assign(
                     field(&itf, &result, span),
                     place_expr(field(&inst, &result, span), span),
@@ -694,7 +711,9 @@ impl Rewriter<'_, '_> {
             place_expr(field(&none, TAG, span), span),
             span,
         )];
-        if sig.returns {
+        if let Some(r) = &itf_result {
+            else_body.push(assign(r.clone(), int(0, span), span));
+        } else if sig.returns {
             else_body.push(assign(
                 field(&itf, &result, span),
                 place_expr(field(&none, &result, span), span),
@@ -872,6 +891,29 @@ impl Rewriter<'_, '_> {
             .collect()
     }
 
+    /// The variable holding the result, of an interface type, of the call through an interface
+    /// that `p` reads (`itf.__M_NEXT` after `itf.Next()`), if `p` reads one.
+    fn interface_result_read(&self, p: &Place) -> Option<Place> {
+        let (Accessor::Field(f), prefix) = p.accessors.split_last()? else {
+            return None;
+        };
+        let m = f.name.strip_prefix(crate::actions::METHOD_PREFIX)?;
+        let itf = Place {
+            base: p.base.clone(),
+            accessors: prefix.to_vec(),
+            span: p.span,
+        };
+        let i = self.place_interface(&itf)?;
+        i.interface_results
+            .iter()
+            .any(|(k, _)| k.eq_ignore_ascii_case(m))
+            .then(|| Place {
+                base: PlaceBase::Name(Ident::new(interface_result(p.span, m), p.span)),
+                accessors: Vec::new(),
+                span: p.span,
+            })
+    }
+
     /// Whether `p` reads the result of a call through an interface that E0342 refused
     /// (`itf.__M_M`, as the parser reads `itf.M()`): the statement is dropped, no error more.
     fn unknown_result(&self, p: &Place) -> bool {
@@ -886,10 +928,8 @@ impl Rewriter<'_, '_> {
             accessors: prefix.to_vec(),
             span: p.span,
         };
-        self.place_interface(&itf).is_some_and(|i| {
-            i.interface_results.contains(&m.to_ascii_uppercase())
-                || !i.methods.iter().any(|x| x.name.eq_ignore_ascii_case(m))
-        })
+        self.place_interface(&itf)
+            .is_some_and(|i| !i.methods.iter().any(|x| x.name.eq_ignore_ascii_case(m)))
     }
 
     /// `__QUERYINTERFACE(src, dst)` (CODESYS, TwinCAT: `dst` takes the instance `src` holds, or
@@ -1117,6 +1157,10 @@ impl Rewriter<'_, '_> {
             ExprKind::Place(p) if self.unknown_result(p) => Expr {
                 kind: ExprKind::Error,
                 span,
+            },
+            ExprKind::Place(p) => match self.interface_result_read(p) {
+                Some(r) => place_expr(r, span),
+                None => return,
             },
             ExprKind::Call { name, args } => {
                 for a in args.iter_mut() {
