@@ -106,3 +106,23 @@ fn methods_and_properties_returning_an_interface_are_called_through_an_interface
     assert_eq!(column(&trace, "Main.viaProperty"), [20.0, 20.0]);
     assert_eq!(column(&trace, "Main.viaItfProperty"), [300.0, 300.0]);
 }
+
+/// Inside a METHOD of a derived block, `other.Get()` through its `VAR_IN_OUT other : FB_Base`:
+/// given the base instance, the base's `Get` (n + 1); given another `FB_D`, its override
+/// (n + 100); plus the method's input 1000.
+#[test]
+fn a_base_view_in_a_method_of_a_derived_block_dispatches() {
+    let (trace, stderr) = run_traced(&fixture("in_method.st"), 1, "Main.x,Main.y");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [1001.0]);
+    assert_eq!(column(&trace, "Main.y"), [1100.0]);
+}
+
+/// An IL body's `CAL u(io := d)` passes a derived instance to an ST block's VAR_IN_OUT of the base
+/// (which ladderc passes by reference): `io.Get()` runs `FB_D`'s override (100).
+#[test]
+fn an_il_body_passes_a_derived_instance_to_a_base_in_out() {
+    let (trace, stderr) = run_traced(&fixture("il_caller.st"), 1, "Main.x");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [100.0]);
+}

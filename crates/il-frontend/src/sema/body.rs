@@ -820,7 +820,7 @@ impl Body<'_, '_> {
                 rec.operand = Some(Ty::Known(place.clone()));
                 // the hidden view of a dispatch through a base (st::base_view): its class tested
                 let view = matches!(o, crate::ast::Operand::Var(v)
-                    if v.accessors.is_empty() && v.base.name.starts_with(crate::st::base_view::VIEW_PREFIX));
+                    if v.accessors.is_empty() && crate::st::base_view::is_view_name(&v.base.name));
                 let down = view
                     && matches!(&cr, super::body::Ty::Known(t)
                         if super::refs::substitutes(&self.a.model, t, &place, true));

@@ -56,6 +56,12 @@ pub fn class_var(chain: &[String]) -> String {
     s
 }
 
+/// Whether `name` is one of the hidden views of a dispatch (`__VIEW_<n>`, or inside a method
+/// `__M_<METHOD>_VIEW_<n>` once the method's temporaries are renamed).
+pub fn is_view_name(name: &str) -> bool {
+    name.starts_with(VIEW_PREFIX) || (name.starts_with("__") && name.contains("_VIEW_"))
+}
+
 /// The chain of block names (upper-case, root first) a class variable's name encodes; `None` when
 /// `name` is no class variable.
 pub fn class_chain(name: &str) -> Option<Vec<String>> {

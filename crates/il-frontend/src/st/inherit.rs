@@ -345,6 +345,7 @@ fn declare_classes(
     if members.is_empty() {
         return derived;
     }
+    let mut by_reference: HashMap<String, Vec<String>> = HashMap::new();
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
         let LibraryElement::Pou(p) = item else {
             continue;
@@ -370,6 +371,7 @@ fn declare_classes(
             }
         }
         // VAR_IN_OUT of a base: a REFERENCE TO it, which a derived instance may be passed to
+        let mut converted = Vec::new();
         let mut blocks = Vec::with_capacity(p.var_blocks.len());
         for b in std::mem::take(&mut p.var_blocks) {
             let is_base =
@@ -381,6 +383,7 @@ fn declare_classes(
             for v in b.vars.iter().cloned() {
                 let mut nb = b.clone();
                 if is_base(&v) {
+                    converted.push(v.name.key());
                     let span = v.span;
                     nb.kind = VarKind::Input;
                     nb.vars = vec![VarDecl {
@@ -398,8 +401,67 @@ fn declare_classes(
             }
         }
         p.var_blocks = blocks;
+        if !converted.is_empty() {
+            by_reference.insert(key, converted);
+        }
+    }
+    // IL bodies (read already) that call a block with such a parameter pass the instance's
+    // address, as the ST lowering does for a `REFERENCE TO` input
+    if !by_reference.is_empty() {
+        for item in units.iter_mut() {
+            for e in item.items.iter_mut() {
+                if let LibraryElement::Pou(p) = e {
+                    pass_by_reference(p, &by_reference);
+                }
+            }
+        }
     }
     derived
+}
+
+/// In the IL body of `p`, `CAL inst(x := v)` where `x` is a converted VAR_IN_OUT of `inst`'s block
+/// (`by_reference`: block -> parameters, upper-case): `x := REF(v)`.
+fn pass_by_reference(p: &mut crate::ast::Pou, by_reference: &HashMap<String, Vec<String>>) {
+    use crate::ast::{CallArgs, IlStmt, InstrKind, Operand, RefOperand};
+    let types: HashMap<String, String> = p
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .filter_map(|v| match &v.ty {
+            TypeRef::Named(n) => Some((v.name.key(), n.key())),
+            _ => None,
+        })
+        .collect();
+    for s in p.body.iter_mut() {
+        let IlStmt::Instr(i) = s else { continue };
+        let InstrKind::Call { instance, args, .. } = &mut i.kind else {
+            continue;
+        };
+        if !instance.accessors.is_empty() {
+            continue;
+        }
+        let Some(params) = types
+            .get(&instance.base.key())
+            .and_then(|t| by_reference.get(t))
+        else {
+            continue;
+        };
+        let CallArgs::Formal(list) = args else {
+            continue;
+        };
+        for a in list.iter_mut() {
+            if !params.contains(&a.name.key()) {
+                continue;
+            }
+            if let Operand::Var(v) = &a.value {
+                let span = v.span;
+                a.value = Operand::Ref(Box::new(RefOperand {
+                    of: Some(v.clone()),
+                    span,
+                }));
+            }
+        }
+    }
 }
 
 /// What [`flatten`] returns: the pending bodies to lower and the interfaces variables may have.
