@@ -6,7 +6,7 @@
 //! dispatched to the derived block's overrides.
 
 mod common;
-use common::{column, run_traced};
+use common::{column, rejected_heads, run_traced};
 
 use std::path::{Path, PathBuf};
 
@@ -125,4 +125,37 @@ fn an_il_body_passes_a_derived_instance_to_a_base_in_out() {
     let (trace, stderr) = run_traced(&fixture("il_caller.st"), 1, "Main.x");
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(column(&trace, "Main.x"), [100.0]);
+}
+
+/// A TON in a method's VAR_INST keeps its elapsed time from call to call (one call per cycle of
+/// 10 ms): with `PT := T#20MS` it elapses in cycle 2; `IN := NOT t.Q` resets it in cycle 3 and
+/// starts it again in cycle 4, so it elapses again in cycle 6; `n` counts the elapses (so `q`,
+/// `n > 1`, from cycle 6).
+#[test]
+fn a_timer_in_var_inst_keeps_running_between_calls() {
+    let (trace, stderr) = run_traced(&fixture("var_inst_timer.st"), 9, "Main.r,Main.b.q");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        column(&trace, "Main.r"),
+        [0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0]
+    );
+    assert_eq!(
+        column(&trace, "Main.b.q"),
+        [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]
+    );
+}
+
+/// VAR_INST outside a method (a FUNCTION, a PROGRAM): one E0348 at each keyword, the rest of the
+/// file still checked (the block read as VAR).
+#[test]
+fn var_inst_outside_a_method_is_one_located_error() {
+    let src = "FUNCTION F : INT\nVAR_INST k : INT; END_VAR\nk := k + 1;\nF := k;\nEND_FUNCTION\n\
+PROGRAM Main\nVAR_INST n : INT; END_VAR\nn := F();\nEND_PROGRAM\n";
+    assert_eq!(
+        rejected_heads("v.st", src),
+        [
+            "v.st:2:1: error[E0348]: VAR_INST in a FUNCTION: only a METHOD declares VAR_INST",
+            "v.st:7:1: error[E0348]: VAR_INST in a PROGRAM: only a METHOD declares VAR_INST",
+        ]
+    );
 }

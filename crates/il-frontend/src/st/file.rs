@@ -852,6 +852,7 @@ pub fn parse_text(
         None => src,
     };
     let mut references = RefTypes::default();
+    let uninstanced: String;
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
     let lists_blanked = blanked_lists.is_some();
@@ -884,11 +885,20 @@ pub fn parse_text(
             }
             None => src,
         };
-        match library_qualifiers(file, src, &toks, diags) {
+        let src = match library_qualifiers(file, src, &toks, diags) {
             Some(t) => {
                 unqualified = t;
                 (toks, problems) = lex(&unqualified);
                 unqualified.as_str()
+            }
+            None => src,
+        };
+        // `VAR_INST` outside a method: E0348, read as VAR
+        match super::var_inst::var_inst_outside_methods(file, src, &toks, diags) {
+            Some(t) => {
+                uninstanced = t;
+                (toks, problems) = lex(&uninstanced);
+                uninstanced.as_str()
             }
             None => src,
         }

@@ -33,6 +33,7 @@ mod scl;
 pub mod sfc;
 pub mod types;
 mod var_config;
+mod var_inst;
 
 pub use conditional::ProjectDefines;
 pub use lower::PouLowering;
