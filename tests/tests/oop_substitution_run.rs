@@ -159,3 +159,12 @@ PROGRAM Main\nVAR_INST n : INT; END_VAR\nn := F();\nEND_PROGRAM\n";
         ]
     );
 }
+
+/// `VAR_INST p : FB_Part;` in a method: `FB_Part`'s FB_init (id := 42) runs before the first
+/// cycle, as for the block's own instances.
+#[test]
+fn fb_init_runs_for_an_instance_in_var_inst() {
+    let (trace, stderr) = run_traced(&fixture("var_inst_fb_init.st"), 2, "Main.r");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.r"), [42.0, 42.0]);
+}
