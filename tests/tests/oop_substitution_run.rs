@@ -168,3 +168,22 @@ fn fb_init_runs_for_an_instance_in_var_inst() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(column(&trace, "Main.r"), [42.0, 42.0]);
 }
+
+/// Through `VAR_IN_OUT io : FB_Base`, `io.Level := 5` runs the setter of the instance's block
+/// (FB_D: n := 6), `io.Level` its getter (n * 10 = 60) and `io.Both(a := 7, twice => o)` its
+/// method with the output (3 * 7); given the base, the base's versions (5, 5, 14).
+#[test]
+fn properties_and_method_outputs_through_a_base_view_dispatch() {
+    let (trace, stderr) = run_traced(
+        &fixture("properties.st"),
+        1,
+        "Main.u1.got,Main.u1.o,Main.u2.got,Main.u2.o,Main.b.n,Main.d.n",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.u1.got"), [5.0]);
+    assert_eq!(column(&trace, "Main.u1.o"), [14.0]);
+    assert_eq!(column(&trace, "Main.b.n"), [5.0]);
+    assert_eq!(column(&trace, "Main.u2.got"), [60.0]);
+    assert_eq!(column(&trace, "Main.u2.o"), [21.0]);
+    assert_eq!(column(&trace, "Main.d.n"), [6.0]);
+}
