@@ -187,3 +187,16 @@ fn properties_and_method_outputs_through_a_base_view_dispatch() {
     assert_eq!(column(&trace, "Main.u2.o"), [21.0]);
     assert_eq!(column(&trace, "Main.d.n"), [6.0]);
 }
+
+/// `p^.Get()` with `p : POINTER TO FB_Base` never assigned: nothing crashes, the result reads 0
+/// (read through the NULL reference, as any), and the run reports "NULL reference dereferenced
+/// (first: p^ in Main ...)", the read of the instance's class.
+#[test]
+fn a_call_through_a_null_base_pointer_is_reported_not_crashed() {
+    let (trace, stderr) = run_traced(&fixture("null_view.st"), 1, "Main.x");
+    assert_eq!(column(&trace, "Main.x"), [0.0]);
+    assert!(
+        stderr.contains("NULL reference dereferenced (first: p^ in Main"),
+        "{stderr}"
+    );
+}

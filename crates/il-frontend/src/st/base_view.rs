@@ -14,11 +14,11 @@
 //! chain of names read by sema: [`class_chain`]); through a base view it tells which block the
 //! instance really is.
 //!
-//! Input: the flattened units ([`declare`], from [`super::inherit::flatten`]) and the ST statements
-//! being lowered ([`rewrite`]). Output: the class variables; each `VAR_IN_OUT x : B` of a block `B`
-//! that has derived blocks becomes `VAR_INPUT x : REFERENCE TO B` (CODESYS passes a VAR_IN_OUT by
-//! reference: the same calls, `fb(x := d)`, and the same uses of `x` compile, now also with a
-//! derived `d`); sema lets a reference to a derived block be stored where a reference to its base is
+//! Input: the flattened units (`super::inherit::flatten` declares the class variables and converts
+//! the VAR_IN_OUTs) and the ST statements being lowered (`rewrite`). Output: the class variables;
+//! each `VAR_IN_OUT x : B` of a block `B` that has derived blocks becomes `VAR_INPUT x : REFERENCE
+//! TO B` (CODESYS passes a VAR_IN_OUT by reference: the same calls, `fb(x := d)`, also from IL
+//! bodies, and the same uses of `x` compile, now also with a derived `d`); sema lets a reference to a derived block be stored where a reference to its base is
 //! expected (`REFERENCE TO B`, `POINTER TO B := ADR(d)`, `REF_TO B`, `r REF= d`). Through a base view
 //! (a place that dereferences a reference, `r.M()`, `p^.M()`, `io.M()`), a method call `v.M(args)`
 //! and a call of the block `v(args)` are a CASE on the class: for each derived block `D`, the view
@@ -28,9 +28,11 @@
 //! Invariants: only the base's declared variables are ever accessed through a base view (a
 //! method's hidden inputs and results lie elsewhere in a derived block, so every method call
 //! through a view dispatches before its arguments are stored); the generated C views the derived
-//! struct through the base's (`-fno-strict-aliasing` in the C build, see the C backend's
-//! toolchain); a NULL view reads class 0 and calls the base's version, which the NULL dereference
-//! check reports.
+//! struct through the base's, so the C backend declares the structs of a family
+//! `__may_alias__` (GCC, Clang: no type-based alias assumption between them); the views take the
+//! reference itself (`p` of `p^`), never the address of a NULL dereference's scratch object; a
+//! NULL view reads class 0 and calls the base's version, which the NULL dereference check
+//! reports.
 
 use super::ast::{Accessor, Arg, ArgDir, CaseArm, CaseLabel, Expr, ExprKind, Place, PlaceBase};
 use super::ast::{Stmt, StmtKind};

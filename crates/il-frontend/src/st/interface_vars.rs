@@ -69,7 +69,7 @@ pub struct Interface {
     pub within: Vec<String>,
     /// The methods (upper-case) whose result is of an interface type, with that type: their
     /// result is no field of the structure (it would hold itself); a call through the interface
-    /// copies it into a variable of the caller ([`interface_result`]).
+    /// copies it into a variable of the caller (`interface_result`).
     pub interface_results: Vec<(String, TypeRef)>,
 }
 
