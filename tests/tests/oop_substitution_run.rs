@@ -200,3 +200,13 @@ fn a_call_through_a_null_base_pointer_is_reported_not_crashed() {
         "{stderr}"
     );
 }
+
+/// `VAR_INST n : INT := 10;` in a PROPERTY's Get accessor (TwinCAT, as `TcDynCollections` writes
+/// it): each read adds one to the instance's own `n` (a: two reads a cycle, b: one).
+#[test]
+fn var_inst_of_a_property_accessor_is_kept_in_each_instance() {
+    let (trace, stderr) = run_traced(&fixture("var_inst_property.st"), 2, "Main.x,Main.y");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [12.0, 14.0]);
+    assert_eq!(column(&trace, "Main.y"), [11.0, 12.0]);
+}

@@ -506,13 +506,12 @@ fn pending_method(
 ) -> PendingMethod {
     let vars =
         |text: &str, base: usize, diags: &mut Diagnostics| read_var_blocks(file, text, base, diags);
-    let (decls, inst_at) = var_inst_as_var(src.get(m.decls.clone()).unwrap_or(""));
-    let blocks = vars(&decls, m.decls.start, diags);
-    let inst = blocks
-        .iter()
-        .filter(|b| inst_at.contains(&(b.span.start as usize - m.decls.start)))
-        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
-        .collect();
+    let (blocks, inst) = read_member_var_blocks(
+        file,
+        src.get(m.decls.clone()).unwrap_or(""),
+        m.decls.start,
+        diags,
+    );
     // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
     // bytes into the file: after `METHOD `)
     let ret = m.ret_end.and_then(|end| {
@@ -535,6 +534,25 @@ fn pending_method(
         base: m.stmts.start,
         inst,
     }
+}
+
+/// The variable blocks of a method's or property accessor's declaration text (see
+/// [`read_var_blocks`]), a `VAR_INST` block read as `VAR`, and the variables of its `VAR_INST`
+/// blocks (upper-case).
+pub(super) fn read_member_var_blocks(
+    file: FileId,
+    text: &str,
+    base: usize,
+    diags: &mut Diagnostics,
+) -> (Vec<crate::ast::VarBlock>, Vec<String>) {
+    let (decls, inst_at) = var_inst_as_var(text);
+    let blocks = read_var_blocks(file, &decls, base, diags);
+    let inst = blocks
+        .iter()
+        .filter(|b| inst_at.contains(&(b.span.start as usize).saturating_sub(base)))
+        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+        .collect();
+    (blocks, inst)
 }
 
 /// A method's declaration text with each `VAR_INST` keyword (TwinCAT, Beckhoff Infosys "VAR_INST":

@@ -222,13 +222,16 @@ pub(super) fn pending_accessors(
         &p.name,
         Span::new(file, p.name_range.start, p.name_range.end),
     );
-    let part = |(decls, stmts): &(Range<usize>, Range<usize>), diags: &mut Diagnostics| {
-        let blocks = super::file::read_var_blocks(
+    // (an accessor's VAR_INST, TwinCAT: kept in the instance, as a method's)
+    let mut inst = Vec::new();
+    let mut part = |(decls, stmts): &(Range<usize>, Range<usize>), diags: &mut Diagnostics| {
+        let (blocks, kept) = super::file::read_member_var_blocks(
             file,
             src.get(decls.clone()).unwrap_or(""),
             decls.start,
             diags,
         );
+        inst.extend(kept);
         (
             blocks,
             src.get(stmts.clone()).unwrap_or("").to_string(),
@@ -237,7 +240,11 @@ pub(super) fn pending_accessors(
     };
     let get = p.get.as_ref().map(|g| part(g, diags));
     let set = p.set.as_ref().map(|s| part(s, diags));
-    accessor_methods(&name, &value.ty, get, set)
+    let mut out = accessor_methods(&name, &value.ty, get, set);
+    for m in &mut out {
+        m.inst = inst.clone();
+    }
+    out
 }
 
 /// The methods of a property `name : ty` with the given accessors (each: its variable blocks, its

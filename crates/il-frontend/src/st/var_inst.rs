@@ -1,12 +1,14 @@
 //! `VAR_INST` (TwinCAT, Beckhoff Infosys "VAR_INST": "method variables stored in the function block
-//! instance") outside a method: one located E0348 each, the block then read as a `VAR` block.
+//! instance") outside a method or a property's accessor: one located E0348 each, the block then
+//! read as a `VAR` block.
 //!
 //! Input: a file's text and tokens. Output: the text with each such `VAR_INST` keyword replaced by
 //! `VAR` of the same length (so every span stays where it was), or `None` when there is none. The
-//! `VAR_INST` blocks of methods are left for [`super::file`], which keeps their variables in the
-//! instance (`PendingMethod::inst`). Invariants: a keyword belongs to the nearest `METHOD`,
-//! `PROPERTY`, `FUNCTION_BLOCK`, `FUNCTION` or `PROGRAM` keyword before it (after an `END_METHOD`
-//! or `END_PROPERTY`, to none); only one belonging to a `METHOD` is a method's.
+//! `VAR_INST` blocks of methods and accessors are left for [`super::file`] and
+//! [`super::property`], which keep their variables in the instance (`PendingMethod::inst`).
+//! Invariants: a keyword belongs to the nearest `METHOD`, `PROPERTY`, `FUNCTION_BLOCK`, `FUNCTION`
+//! or `PROGRAM` keyword before it (after an `END_METHOD` or `END_PROPERTY`, to none); only one
+//! belonging to a `METHOD` or `PROPERTY` is a member's.
 
 use super::file::word;
 use super::lexer::{Tok, Token};
@@ -30,9 +32,8 @@ pub fn var_inst_outside_methods(
         match w.as_str() {
             "METHOD" | "PROPERTY" | "FUNCTION_BLOCK" | "FUNCTION" | "PROGRAM" => owner = Some(w),
             "END_METHOD" | "END_PROPERTY" => owner = None,
-            "VAR_INST" if owner.as_deref() != Some("METHOD") => {
+            "VAR_INST" if !matches!(owner.as_deref(), Some("METHOD" | "PROPERTY")) => {
                 let what = match owner.as_deref() {
-                    Some("PROPERTY") => "a PROPERTY",
                     Some("FUNCTION_BLOCK") => "a FUNCTION_BLOCK's own declarations",
                     Some("FUNCTION") => "a FUNCTION",
                     Some("PROGRAM") => "a PROGRAM",
