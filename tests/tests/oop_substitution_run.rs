@@ -210,3 +210,13 @@ fn var_inst_of_a_property_accessor_is_kept_in_each_instance() {
     assert_eq!(column(&trace, "Main.x"), [12.0, 14.0]);
     assert_eq!(column(&trace, "Main.y"), [11.0, 12.0]);
 }
+
+/// `METHOD Take : POINTER TO ST_Node` returning `ADR(pool[i])` (`i` the method's input): the
+/// caller's `q^.v := q^.v + 5` changes `p.pool[2].v` (5, then 10), `q^.v := 7` `p.pool[1].v`.
+#[test]
+fn a_method_returns_a_pointer_into_its_instance() {
+    let (trace, stderr) = run_traced(&fixture("method_pointer.st"), 2, "Main.x,Main.y");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [5.0, 10.0]);
+    assert_eq!(column(&trace, "Main.y"), [7.0, 7.0]);
+}

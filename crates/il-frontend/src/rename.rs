@@ -65,8 +65,26 @@ impl Renames {
     }
     /// Renames the variable of one operand (indexes included).
     pub fn operand(&self, o: &mut Operand) {
-        if let Operand::Var(v) = o {
-            self.var(v);
+        match o {
+            Operand::Var(v) => self.var(v),
+            // `ADR(pool[i])` in a method: `i` is the method's (renamed) input
+            Operand::Ref(r) => {
+                if let Some(v) = &mut r.of {
+                    self.var(v);
+                }
+            }
+            Operand::SizeOf(s) => self.var(&mut s.of),
+            Operand::Mem(m) => {
+                self.var(&mut m.dest);
+                if let Some(v) = &mut m.src {
+                    self.var(v);
+                }
+                if let Some(f) = &mut m.fill {
+                    self.operand(f);
+                }
+                self.operand(&mut m.count);
+            }
+            _ => {}
         }
     }
     fn var(&self, v: &mut VarRef) {
