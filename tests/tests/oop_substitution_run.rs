@@ -220,3 +220,13 @@ fn a_method_returns_a_pointer_into_its_instance() {
     assert_eq!(column(&trace, "Main.x"), [5.0, 10.0]);
     assert_eq!(column(&trace, "Main.y"), [7.0, 7.0]);
 }
+
+/// An INTERFACE method `Take : POINTER TO ST_Node` and the block's implementation have the same
+/// signature (before: the interface's result read without its `POINTER TO`, E0335), and
+/// `itf.Take(i := 2)` gives the pointer into the instance (3 added per cycle).
+#[test]
+fn an_interface_method_returning_a_pointer_is_implemented_and_called() {
+    let (trace, stderr) = run_traced(&fixture("interface_pointer.st"), 2, "Main.x");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [3.0, 6.0]);
+}

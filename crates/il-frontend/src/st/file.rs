@@ -1104,6 +1104,10 @@ pub fn parse_text(
             for pr in &p.properties {
                 methods.extend(super::property::pending_accessors(file, src, pr, diags));
             }
+            // their `POINTER TO` / `REFERENCE TO` types, as the blocks' methods get them
+            for pm in &mut methods {
+                references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+            }
             pending.push(PendingBody {
                 file,
                 name_start: p.name_range.start,
