@@ -230,3 +230,12 @@ fn an_interface_method_returning_a_pointer_is_implemented_and_called() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(column(&trace, "Main.x"), [3.0, 6.0]);
 }
+
+/// `SET PROTECTED VAR END_VAR ...`: the accessor's own access modifier (TwinCAT) is read past
+/// (before: E0106 at it); `Grow` sets `Size := Size + 1` through it (n := 2 (n + 1)): 2, 6, 14.
+#[test]
+fn an_accessor_with_its_own_access_modifier_runs() {
+    let (trace, stderr) = run_traced(&fixture("accessor_modifier.st"), 3, "Main.x");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [2.0, 6.0, 14.0]);
+}

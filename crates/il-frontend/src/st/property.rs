@@ -151,6 +151,14 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
                 continue;
             };
             h += 1;
+            // an accessor's own access modifier (TwinCAT: `SET` declared `PROTECTED`): read past
+            while h + 1 < n
+                && ["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
+                    .iter()
+                    .any(|w| is_word(src, &toks[h], w))
+            {
+                h += 1;
+            }
             let decl_start = toks.get(h).map_or(0, |t| t.range.start);
             let (after, vars_end) = super::file::skip_var_blocks(src, toks, h);
             h = after;
