@@ -239,3 +239,19 @@ fn an_accessor_with_its_own_access_modifier_runs() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(column(&trace, "Main.x"), [2.0, 6.0, 14.0]);
 }
+
+/// `TYPE ST_Point3 EXTENDS ST_Point2 : STRUCT z ... END_STRUCT`: `p3` has `x`, `y` (with their
+/// initial values 1, 2) and `z` (3), `x` written (+10 per cycle); `ST_Point4` extends `ST_Point3`
+/// and is declared before it: 1 + 2 + 3 + 4.
+#[test]
+fn a_structure_that_extends_another_has_its_fields() {
+    let (trace, stderr) = run_traced(
+        &fixture("struct_extends.st"),
+        2,
+        "Main.sum3,Main.sum4,Main.p4.w,Main.p3.x",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.sum3"), [16.0, 26.0]);
+    assert_eq!(column(&trace, "Main.sum4"), [10.0, 10.0]);
+    assert_eq!(column(&trace, "Main.p3.x"), [11.0, 21.0]);
+}

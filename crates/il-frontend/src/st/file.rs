@@ -870,7 +870,7 @@ pub fn parse_text(
         None => src,
     };
     let mut references = RefTypes::default();
-    let uninstanced: String;
+    let (uninstanced, unextended): (String, String);
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
     let lists_blanked = blanked_lists.is_some();
@@ -912,11 +912,20 @@ pub fn parse_text(
             None => src,
         };
         // `VAR_INST` outside a method: E0348, read as VAR
-        match super::var_inst::var_inst_outside_methods(file, src, &toks, diags) {
+        let src = match super::var_inst::var_inst_outside_methods(file, src, &toks, diags) {
             Some(t) => {
                 uninstanced = t;
                 (toks, problems) = lex(&uninstanced);
                 uninstanced.as_str()
+            }
+            None => src,
+        };
+        // `TYPE ST_B EXTENDS ST_A : STRUCT`: a hidden first field of the base (struct_extends)
+        match super::struct_extends::hide_bases(src, &toks) {
+            Some(t) => {
+                unextended = t;
+                (toks, problems) = lex(&unextended);
+                unextended.as_str()
             }
             None => src,
         }
@@ -1461,6 +1470,8 @@ pub fn compile_pending(
     pending: &[PendingBody],
     diags: &mut Diagnostics,
 ) {
+    // structures that EXTEND others get their bases' fields (from any unit)
+    super::struct_extends::flatten(units);
     if pending.is_empty() {
         return;
     }

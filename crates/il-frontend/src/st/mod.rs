@@ -31,6 +31,7 @@ pub mod qualifiers;
 pub mod refs;
 mod scl;
 pub mod sfc;
+mod struct_extends;
 pub mod types;
 mod var_config;
 mod var_inst;
