@@ -68,10 +68,22 @@ impl Renames {
     pub fn operand(&self, o: &mut Operand) {
         match o {
             Operand::Var(v) => self.var(v),
+            // `ADR(pool[i])` in a method: `i` is the method's (renamed) input
             Operand::Ref(r) => {
-                if let Some(v) = r.of.as_mut() {
+                if let Some(v) = &mut r.of {
                     self.var(v);
                 }
+            }
+            Operand::SizeOf(s) => self.var(&mut s.of),
+            Operand::Mem(m) => {
+                self.var(&mut m.dest);
+                if let Some(v) = &mut m.src {
+                    self.var(v);
+                }
+                if let Some(f) = &mut m.fill {
+                    self.operand(f);
+                }
+                self.operand(&mut m.count);
             }
             _ => {}
         }

@@ -832,6 +832,7 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
                 blocks,
                 text: t.text,
                 base: t.base,
+                inst: Vec::new(),
             });
         }
     }

@@ -406,6 +406,7 @@ impl<'a> Gen<'a> {
         h.push_str(
             "#ifndef LADDERC_PROGRAM_H\n#define LADDERC_PROGRAM_H\n#include \"ladderc_rt.h\"\n\n",
         );
+        let mut base_view_macro = false;
         for n in self.struct_order() {
             match n {
                 Node::Struct(id) => {
@@ -432,6 +433,16 @@ impl<'a> Gen<'a> {
                     let model: &'a Model = self.model;
                     let p = &model.pous[id as usize];
                     let name = self.pou_struct(p);
+                    // a block of a family (EXTENDS) may be read through its base's struct, whose
+                    // members are a prefix of its own (il_frontend::st::base_view): GCC and Clang
+                    // must not assume the two struct types never alias
+                    let viewed = p.vars.first().is_some_and(|v| {
+                        v.name.starts_with(il_frontend::st::base_view::CLASS_PREFIX)
+                    });
+                    if viewed && !base_view_macro {
+                        base_view_macro = true;
+                        h.push_str("#if defined(__GNUC__)\n#define LADDERC_BASE_VIEW __attribute__((__may_alias__))\n#else\n#define LADDERC_BASE_VIEW\n#endif\n\n");
+                    }
                     let _ = writeln!(h, "typedef struct {{");
                     let mut any = false;
                     for v in &p.vars {
@@ -448,7 +459,8 @@ impl<'a> Gen<'a> {
                     if !any {
                         h.push_str("    char unused_;\n");
                     }
-                    let _ = writeln!(h, "}} {name};");
+                    let view = if viewed { "LADDERC_BASE_VIEW " } else { "" };
+                    let _ = writeln!(h, "}} {view}{name};");
                     let _ = writeln!(h, "void {name}_INIT({name} *self);");
                     let _ = writeln!(h, "void {name}_BODY({name} *self);\n");
                 }

@@ -822,7 +822,15 @@ impl Body<'_, '_> {
                     place = Type::Error;
                 }
                 rec.operand = Some(Ty::Known(place.clone()));
-                self.coerce_store(&cr, &place, o.span(), span);
+                // the hidden view of a dispatch through a base (st::base_view): its class tested
+                let view = matches!(o, crate::ast::Operand::Var(v)
+                    if v.accessors.is_empty() && crate::st::base_view::is_view_name(&v.base.name));
+                let down = view
+                    && matches!(&cr, super::body::Ty::Known(t)
+                        if super::refs::substitutes(&self.a.model, t, &place, true));
+                if !down {
+                    self.coerce_store(&cr, &place, o.span(), span);
+                }
             }
             Op::S | Op::R => {
                 let name = if op == Op::S { "S" } else { "R" };

@@ -290,7 +290,7 @@ impl Body<'_, '_> {
         let n = self.norm(from);
         match n {
             Ty::Known(t) => {
-                if assignable(&t, to) {
+                if assignable(&t, to) || super::refs::substitutes(&self.a.model, &t, to, false) {
                     return true;
                 }
                 let (f, tt) = (self.a.type_name(&t), self.a.type_name(to));
@@ -955,7 +955,10 @@ impl Body<'_, '_> {
                                 // CODESYS and TwinCAT give access to internal variables (W1412,
                                 // once per POU, block type and variable)
                                 let key = (self.pou.0, tname.to_ascii_uppercase(), f.key());
-                                if !self.a.silent && self.a.internal_accessed.insert(key) {
+                                // (not the hidden class a dispatch through a base reads)
+                                let hidden = f.name.starts_with(crate::st::base_view::CLASS_PREFIX);
+                                if !self.a.silent && !hidden && self.a.internal_accessed.insert(key)
+                                {
                                     self.a
                                         .warning(
                                             code::W1412,

@@ -22,6 +22,30 @@ pub(super) fn class_admits(f: &str, c: super::stdlib::Class, t: &Type) -> bool {
     c.contains(t) || (matches!(t, Type::Ref(_)) && matches!(f, "EQ" | "NE"))
 }
 
+/// The chain of blocks (upper-case, root first) of user block `fb`, read from its class variable
+/// (`crate::st::base_view`); `None` for a block that no block extends and that extends none.
+fn fb_chain(model: &Model, fb: &Type) -> Option<Vec<String>> {
+    let Type::Fb(FbType::User(id)) = fb else {
+        return None;
+    };
+    crate::st::base_view::class_chain(&model.pou(*id).vars.first()?.name)
+}
+
+/// Whether a reference to `from` may be stored where a reference to `to` is expected: `from` is
+/// a block that EXTENDS `to` (directly or through others; IEC 61131-3 edition 3, 6.6.5: a derived
+/// instance stands wherever its base may). With `down`, also the other way (only the hidden views
+/// of `crate::st::base_view`, after their class was tested).
+pub(super) fn substitutes(model: &Model, from: &Type, to: &Type, down: bool) -> bool {
+    let (Type::Ref(f), Type::Ref(t)) = (from, to) else {
+        return false;
+    };
+    let (Some(fc), Some(tc)) = (fb_chain(model, f), fb_chain(model, t)) else {
+        return false;
+    };
+    let is_prefix = |a: &[String], b: &[String]| b.len() >= a.len() && b[..a.len()] == *a;
+    is_prefix(&tc, &fc) || (down && is_prefix(&fc, &tc))
+}
+
 impl Body<'_, '_> {
     /// A VAR_IN_OUT declared as a reference (`VAR_IN_OUT total : REFERENCE TO DINT`): refused, one
     /// E0305 at the argument (a VAR_IN_OUT is already passed by reference).

@@ -487,8 +487,7 @@ impl Types<'_> {
             (Some((_, blocks)), _) => blocks
                 .iter()
                 .filter(|b| initialised(b.kind))
-                .flat_map(|b| b.vars.iter())
-                .filter(|v| !v.name.name.starts_with("__"))
+                .flat_map(|b| b.vars.iter().filter(|v| !hidden(b.kind, v)))
                 .collect(),
             (None, Some(fields)) => fields.iter().collect(),
             _ => Vec::new(),
@@ -541,6 +540,13 @@ fn initialised(kind: VarKind) -> bool {
     )
 }
 
+/// Whether `v`, of a block of `kind`, is a hidden variable of ladderc whose instances are not
+/// initialised; a method's VAR_INST (`__M_<METHOD>_<VAR>` in a VAR block, see
+/// `super::file::add_method_vars`) is an instance of the block like its own.
+fn hidden(kind: VarKind, v: &crate::ast::VarDecl) -> bool {
+    v.name.name.starts_with("__") && !(kind == VarKind::Local && v.name.name.starts_with("__M_"))
+}
+
 /// The block type of an instance or of an array's elements.
 fn instance_type(ty: &TypeRef) -> Option<&Ident> {
     match ty {
@@ -582,7 +588,7 @@ impl Gen<'_, '_> {
         let mut out = Vec::new();
         for b in blocks.iter().filter(|b| initialised(b.kind)) {
             for v in &b.vars {
-                if v.name.name.starts_with("__") {
+                if hidden(b.kind, v) {
                     continue;
                 }
                 let args = instance_type(&v.ty).and_then(|t| {

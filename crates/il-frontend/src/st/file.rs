@@ -108,12 +108,16 @@ pub struct PendingMethod {
     pub name: crate::ast::Ident,
     /// Its result (a variable named like the method), if it returns one.
     pub ret: Option<crate::ast::VarDecl>,
-    /// Its VAR_INPUT, VAR_OUTPUT, VAR and VAR_TEMP blocks.
+    /// Its VAR_INPUT, VAR_OUTPUT, VAR, VAR_TEMP and VAR_INST blocks (a VAR_INST block is read as
+    /// a `VAR` block; its variables are in [`Self::inst`]).
     pub blocks: Vec<crate::ast::VarBlock>,
     /// Its statements' text and their offset in the file.
     pub text: String,
     /// Byte offset of `text` in the file.
     pub base: usize,
+    /// The variables of its VAR_INST blocks (upper-case; TwinCAT): kept in the instance from call
+    /// to call, where its other variables start again at each call.
+    pub inst: Vec<String>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -510,7 +514,8 @@ fn pending_method(
     let decls = src.get(m.decls.clone()).unwrap_or("");
     // `n : UDINT := SIZEOF(T) * k;`: read without its initial value, assigned when the method starts
     let inits = super::method_inits::split(decls);
-    let blocks = vars(
+    let (blocks, inst) = read_member_var_blocks(
+        file,
         inits.as_ref().map_or(decls, |(read, _)| read.as_str()),
         m.decls.start,
         diags,
@@ -547,7 +552,46 @@ fn pending_method(
         blocks,
         text,
         base,
+        inst,
     }
+}
+
+/// The variable blocks of a method's or property accessor's declaration text (see
+/// [`read_var_blocks`]), a `VAR_INST` block read as `VAR`, and the variables of its `VAR_INST`
+/// blocks (upper-case).
+pub(super) fn read_member_var_blocks(
+    file: FileId,
+    text: &str,
+    base: usize,
+    diags: &mut Diagnostics,
+) -> (Vec<crate::ast::VarBlock>, Vec<String>) {
+    let (decls, inst_at) = var_inst_as_var(text);
+    let blocks = read_var_blocks(file, &decls, base, diags);
+    let inst = blocks
+        .iter()
+        .filter(|b| inst_at.contains(&(b.span.start as usize).saturating_sub(base)))
+        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+        .collect();
+    (blocks, inst)
+}
+
+/// A method's declaration text with each `VAR_INST` keyword (TwinCAT, Beckhoff Infosys "VAR_INST":
+/// a method variable stored in the function block instance, kept between calls) read as `VAR` of
+/// the same length, and the offsets of those keywords in the text.
+fn var_inst_as_var(text: &str) -> (String, Vec<usize>) {
+    let (toks, _) = lex(text);
+    let mut out = text.to_string();
+    let mut at = Vec::new();
+    for t in &toks {
+        if text
+            .get(t.range.clone())
+            .is_some_and(|w| w.eq_ignore_ascii_case("VAR_INST"))
+        {
+            out.replace_range(t.range.clone(), "VAR     ");
+            at.push(t.range.start);
+        }
+    }
+    (out, at)
 }
 
 /// The variable blocks of a method's (or a property accessor's) declaration text, read by the IL
@@ -846,6 +890,7 @@ pub fn parse_text(
         None => src,
     };
     let mut references = RefTypes::default();
+    let (uninstanced, unextended): (String, String);
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
     let lists_blanked = blanked_lists.is_some();
@@ -896,11 +941,29 @@ pub fn parse_text(
             None => src,
         };
         // `TASK Main : ProgramCycle;`: one E1048 each, blanked with the `WITH Main` (`using`)
-        match super::using::typed_tasks(file, src, &toks, diags) {
+        let src = match super::using::typed_tasks(file, src, &toks, diags) {
             Some(t) => {
                 untasked = t;
                 (toks, problems) = lex(&untasked);
                 untasked.as_str()
+            }
+            None => src,
+        };
+        // `VAR_INST` outside a method: E0348, read as VAR
+        let src = match super::var_inst::var_inst_outside_methods(file, src, &toks, diags) {
+            Some(t) => {
+                uninstanced = t;
+                (toks, problems) = lex(&uninstanced);
+                uninstanced.as_str()
+            }
+            None => src,
+        };
+        // `TYPE ST_B EXTENDS ST_A : STRUCT`: a hidden first field of the base (struct_extends)
+        match super::struct_extends::hide_bases(src, &toks) {
+            Some(t) => {
+                unextended = t;
+                (toks, problems) = lex(&unextended);
+                unextended.as_str()
             }
             None => src,
         }
@@ -1088,6 +1151,10 @@ pub fn parse_text(
                     references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
                     methods.push(pm);
                 }
+            }
+            // their `POINTER TO` / `REFERENCE TO` types, as the blocks' methods get them
+            for pm in &mut methods {
+                references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
             }
             pending.push(PendingBody {
                 file,
@@ -1460,6 +1527,8 @@ pub fn compile_pending(
     pending: &[PendingBody],
     diags: &mut Diagnostics,
 ) {
+    // structures that EXTEND others get their bases' fields (from any unit)
+    super::struct_extends::flatten(units);
     if pending.is_empty() {
         return;
     }
@@ -1500,12 +1569,14 @@ pub fn compile_pending(
     let mut interfaces = Vec::new();
     let mut inits = Vec::new();
     let mut bases = std::collections::HashMap::new();
+    let mut derived = std::collections::HashMap::new();
     let pending = match super::inherit::flatten(units, pending, diags) {
         Some(v) => {
             flat = v.bodies;
             interfaces = v.interfaces;
             inits = v.inits;
             bases = v.bases;
+            derived = v.derived;
             &flat[..]
         }
         None => pending,
@@ -1548,6 +1619,7 @@ pub fn compile_pending(
         decls.interfaces.insert(i.name.key(), i);
     }
     decls.bases = bases;
+    decls.derived = derived;
     for pb in pending.iter().filter(|pb| !pb.sfc) {
         let diags: &mut Diagnostics = if pb.derived() {
             &mut inherited
@@ -1643,10 +1715,11 @@ pub fn compile_pending(
 
 /// Declares the hidden variables of a function block's methods: `__M_<METHOD>_<name>` for each
 /// VAR_INPUT (an input of the block), VAR_OUTPUT (an output), VAR and VAR_TEMP (a temporary: a
-/// method's variables do not keep their values from call to call), and the result `__M_<METHOD>`
-/// (an output). A VAR_IN_OUT of a method is a VAR_IN_OUT of the block: a call from outside
-/// (`inst.M(x := v)`) binds it as a call of the instance binds the block's own; a call inside the
-/// block reads and writes the argument itself (see [`super::method_in_out`]).
+/// method's variables do not keep their values from call to call), VAR_INST (a local of the block:
+/// kept, initialised once with the instance), and the result `__M_<METHOD>` (an output). A
+/// VAR_IN_OUT of a method is a VAR_IN_OUT of the block: a call from outside (`inst.M(x := v)`) binds
+/// it as a call of the instance binds the block's own; a call inside the block reads and writes the
+/// argument itself (see [`super::method_in_out`]).
 pub fn add_method_vars(
     p: &mut crate::ast::Pou,
     methods: &[PendingMethod],
@@ -1659,6 +1732,7 @@ pub fn add_method_vars(
     let mut temps = Vec::new();
     let mut in_outs = Vec::new();
     let mut defaults = Vec::new();
+    let mut kept = Vec::new();
     for m in methods {
         if let Some(r) = &m.ret {
             let mut v = r.clone();
@@ -1693,8 +1767,14 @@ pub fn add_method_vars(
             };
             for v in &b.vars {
                 let mut v = v.clone();
+                let inst = m.inst.contains(&v.name.key());
                 v.name.name = method_var(&m.name.name, &v.name.name);
-                list.push(v);
+                if inst {
+                    // VAR_INST: a variable of the instance, initialised once with it
+                    kept.push(v);
+                } else {
+                    list.push(v);
+                }
             }
         }
     }
@@ -1705,6 +1785,7 @@ pub fn add_method_vars(
         (VarKind::InOut, in_outs),
         (VarKind::Temp, temps),
         (VarKind::Local, defaults),
+        (VarKind::Local, kept),
     ] {
         if !vars.is_empty() {
             p.var_blocks.push(VarBlock {

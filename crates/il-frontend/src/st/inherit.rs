@@ -302,12 +302,166 @@ pub fn flatten(
             Some((k.clone(), c[..c.len().saturating_sub(1)].to_vec()))
         })
         .collect();
+    let derived = declare_classes(units, &classes, &keys, &chains);
     Some(Flat {
         bodies: out,
         interfaces: table,
         inits,
         bases,
+        derived,
     })
+}
+
+/// Gives each block of a family (extended, or extending another) its class variable, first of its
+/// variables, and makes each `VAR_IN_OUT x : B` of a block `B` that has derived blocks a
+/// `VAR_INPUT x : REFERENCE TO B` (see [`super::base_view`]); returns the derived blocks of each
+/// base with their class numbers (a block's number is its place in `keys`, plus one).
+fn declare_classes(
+    units: &mut [CompilationUnit],
+    classes: &HashMap<String, Class>,
+    keys: &[String],
+    chains: &HashMap<String, Option<Vec<String>>>,
+) -> super::base_view::Derived {
+    use crate::ast::{Initializer, Operand, RefKind, VarDecl};
+    let id = |k: &str| keys.iter().position(|x| x == k).map_or(0, |p| p as u32 + 1);
+    let mut derived: super::base_view::Derived = HashMap::new();
+    // each member's chain, root first
+    let mut members: HashMap<String, Vec<String>> = HashMap::new();
+    for key in keys {
+        let Some(Some(chain)) = chains.get(key) else {
+            continue;
+        };
+        for (j, b) in chain[..chain.len() - 1].iter().enumerate() {
+            derived
+                .entry(b.clone())
+                .or_default()
+                .push((classes[key].name.clone(), id(key)));
+            members
+                .entry(b.clone())
+                .or_insert_with(|| chain[..=j].to_vec());
+        }
+        members.insert(key.clone(), chain.clone());
+    }
+    if members.is_empty() {
+        return derived;
+    }
+    let mut by_reference: HashMap<String, Vec<String>> = HashMap::new();
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        let LibraryElement::Pou(p) = item else {
+            continue;
+        };
+        let key = p.name.key();
+        if let (Some(chain), Some(c)) = (members.get(&key), classes.get(&key)) {
+            if p.name.span == c.name.span && p.kind == PouKind::FunctionBlock {
+                let names: Vec<String> =
+                    chain.iter().map(|k| classes[k].name.name.clone()).collect();
+                let span = p.name.span;
+                let literal = Operand::literal(crate::ast::Literal {
+                    kind: crate::ast::LiteralKind::Int(id(&key).into()),
+                    type_prefix: None,
+                    span,
+                });
+                let v = VarDecl::new(
+                    Ident::new(super::base_view::class_var(&names), span),
+                    TypeRef::Named(Ident::new("UINT", span)),
+                    span,
+                )
+                .with_init(Initializer::Value(literal));
+                p.var_blocks.insert(0, VarBlock::locals(vec![v], span));
+            }
+        }
+        // VAR_IN_OUT of a base: a REFERENCE TO it, which a derived instance may be passed to
+        let mut converted = Vec::new();
+        let mut blocks = Vec::with_capacity(p.var_blocks.len());
+        for b in std::mem::take(&mut p.var_blocks) {
+            let is_base =
+                |v: &VarDecl| matches!(&v.ty, TypeRef::Named(n) if derived.contains_key(&n.key()));
+            if b.kind != VarKind::InOut || !b.vars.iter().any(is_base) {
+                blocks.push(b);
+                continue;
+            }
+            for v in b.vars.iter().cloned() {
+                let mut nb = b.clone();
+                if is_base(&v) {
+                    converted.push(v.name.key());
+                    let span = v.span;
+                    nb.kind = VarKind::Input;
+                    nb.vars = vec![VarDecl {
+                        ty: TypeRef::Ref {
+                            kind: RefKind::Reference,
+                            target: Box::new(v.ty.clone()),
+                            span,
+                        },
+                        ..v
+                    }];
+                } else {
+                    nb.vars = vec![v];
+                }
+                blocks.push(nb);
+            }
+        }
+        p.var_blocks = blocks;
+        if !converted.is_empty() {
+            by_reference.insert(key, converted);
+        }
+    }
+    // IL bodies (read already) that call a block with such a parameter pass the instance's
+    // address, as the ST lowering does for a `REFERENCE TO` input
+    if !by_reference.is_empty() {
+        for item in units.iter_mut() {
+            for e in item.items.iter_mut() {
+                if let LibraryElement::Pou(p) = e {
+                    pass_by_reference(p, &by_reference);
+                }
+            }
+        }
+    }
+    derived
+}
+
+/// In the IL body of `p`, `CAL inst(x := v)` where `x` is a converted VAR_IN_OUT of `inst`'s block
+/// (`by_reference`: block -> parameters, upper-case): `x := REF(v)`.
+fn pass_by_reference(p: &mut crate::ast::Pou, by_reference: &HashMap<String, Vec<String>>) {
+    use crate::ast::{CallArgs, IlStmt, InstrKind, Operand, RefOperand};
+    let types: HashMap<String, String> = p
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .filter_map(|v| match &v.ty {
+            TypeRef::Named(n) => Some((v.name.key(), n.key())),
+            _ => None,
+        })
+        .collect();
+    for s in p.body.iter_mut() {
+        let IlStmt::Instr(i) = s else { continue };
+        let InstrKind::Call { instance, args, .. } = &mut i.kind else {
+            continue;
+        };
+        if !instance.accessors.is_empty() {
+            continue;
+        }
+        let Some(params) = types
+            .get(&instance.base.key())
+            .and_then(|t| by_reference.get(t))
+        else {
+            continue;
+        };
+        let CallArgs::Formal(list) = args else {
+            continue;
+        };
+        for a in list.iter_mut() {
+            if !params.contains(&a.name.key()) {
+                continue;
+            }
+            if let Operand::Var(v) = &a.value {
+                let span = v.span;
+                a.value = Operand::Ref(Box::new(RefOperand {
+                    of: Some(v.clone()),
+                    span,
+                }));
+            }
+        }
+    }
 }
 
 /// What [`flatten`] returns: the pending bodies to lower and the interfaces variables may have.
@@ -321,6 +475,8 @@ pub struct Flat {
     pub inits: Vec<super::interface_vars::Init>,
     /// The bases of each derived block (upper-case names, root first).
     pub bases: HashMap<String, Vec<String>>,
+    /// The derived blocks of each block that has some, with their class numbers.
+    pub derived: super::base_view::Derived,
 }
 
 /// The chain of bases of `key`, root first, ending with `key`; `None` (with one diagnostic at the
@@ -563,6 +719,7 @@ fn flatten_one(
                     blocks: Vec::new(),
                     text,
                     base,
+                    inst: Vec::new(),
                 });
                 files.push(file);
             }

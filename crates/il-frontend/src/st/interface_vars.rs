@@ -49,6 +49,12 @@ fn ref_field(fb: &str) -> String {
     format!("__R_{}", fb.to_ascii_uppercase())
 }
 
+/// The variable of the caller holding the result, of an interface type, of method `m` called
+/// through the interface at `at` (the call's callee).
+fn interface_result(at: Span, m: &str) -> String {
+    format!("__IR_{}_{}", at.start, m.to_ascii_uppercase())
+}
+
 /// An interface as variables of its type see it.
 #[derive(Debug, Clone)]
 pub struct Interface {
@@ -61,9 +67,10 @@ pub struct Interface {
     pub methods: Vec<MethodSig>,
     /// Its own key and those of the interfaces it extends (an `I2 EXTENDS I1` value is an `I1`).
     pub within: Vec<String>,
-    /// The methods (upper-case) whose result is of an interface type: not callable through the
-    /// interface (E0342).
-    pub interface_results: Vec<String>,
+    /// The methods (upper-case) whose result is of an interface type, with that type: their
+    /// result is no field of the structure (it would hold itself); a call through the interface
+    /// copies it into a variable of the caller (`interface_result`).
+    pub interface_results: Vec<(String, TypeRef)>,
 }
 
 /// Whether `t` is an interface type or an array of one.
@@ -163,7 +170,7 @@ pub fn table(
             if let Some(r) = &m.ret {
                 if names_interface(&r.ty, interfaces) {
                     // a result holding an interface would make the structure hold itself
-                    interface_results.push(m.name.key());
+                    interface_results.push((m.name.key(), r.ty.clone()));
                     continue;
                 }
                 fields.push(VarDecl::new(
@@ -490,7 +497,6 @@ impl Rewriter<'_, '_> {
                     self.changed = true;
                     return out;
                 }
-                self.derived_for_base(callee, args);
                 let inputs = self.interface_inputs(callee, args);
                 if !inputs.is_empty() {
                     self.changed = true;
@@ -649,21 +655,25 @@ impl Rewriter<'_, '_> {
             );
             return Some(Vec::new());
         };
-        if i.interface_results.contains(&m.key()) {
-            self.diags.push(
-                Diagnostic::error(
-                    code::E0342,
-                    format!(
-                        "method `{}` of interface `{}` returns an interface: not callable through an interface variable",
-                        sig.name, i.name.name
-                    ),
-                )
-                .at(m.span)
-                .with_primary_label("its result would hold an interface")
-                .with_hint("return the result through a VAR_IN_OUT of the interface type, or call the method on the instance itself"),
-            );
-            return Some(Vec::new());
-        }
+        // a result of an interface type: copied into a variable of the caller, which the
+        // statement reading `itf.M()` (the parser's `itf.__M_M`) reads instead
+        let itf_result = i
+            .interface_results
+            .iter()
+            .find(|(k, _)| *k == m.key())
+            .map(|(_, ty)| {
+                let name = interface_result(callee.span, &m.name);
+                let at = Ident::new(&name, span);
+                if self.env.var_type(&at).is_none() && !self.temps.iter().any(|t| t.name.is(&name))
+                {
+                    self.temps.push(VarDecl::new(at, ty.clone(), span));
+                }
+                Place {
+                    base: PlaceBase::Name(Ident::new(name, span)),
+                    accessors: Vec::new(),
+                    span,
+                }
+            });
         let result = crate::actions::method_result(&sig.name);
         let mut arms = Vec::new();
         for (c, tag) in &i.classes {
@@ -675,7 +685,13 @@ impl Rewriter<'_, '_> {
                 },
                 span,
             }];
-            if sig.returns {
+            if let Some(r) = &itf_result {
+                body.push(assign(
+                    r.clone(),
+                    place_expr(field(&inst, &result, span), span),
+                    span,
+                ));
+            } else if sig.returns {
                 body.push(assign(
                     field(&itf, &result, span),
                     place_expr(field(&inst, &result, span), span),
@@ -695,7 +711,9 @@ impl Rewriter<'_, '_> {
             place_expr(field(&none, TAG, span), span),
             span,
         )];
-        if sig.returns {
+        if let Some(r) = &itf_result {
+            else_body.push(assign(r.clone(), int(0, span), span));
+        } else if sig.returns {
             else_body.push(assign(
                 field(&itf, &result, span),
                 place_expr(field(&none, &result, span), span),
@@ -750,73 +768,6 @@ impl Rewriter<'_, '_> {
         }
         *args = kept;
         before
-    }
-
-    /// `fb(io := derived)` where `io` is a VAR_IN_OUT (or `REFERENCE TO`) of a base block of
-    /// `derived`'s: one E0344 each (the argument is left out). ladderc gives each derived block
-    /// its own flattened copy of its bases' code (late binding without pointers), so an instance
-    /// of it is no instance of its base in memory; an interface both implement is the way to pass
-    /// either.
-    fn derived_for_base(&mut self, callee: &Place, args: &mut Vec<Arg>) {
-        if self.env.decls.bases.is_empty() {
-            return;
-        }
-        let Some(TypeRef::Named(fb)) = self.env.place_type(callee).map(|t| self.env.resolve(&t))
-        else {
-            return;
-        };
-        let Some(pou) = self.env.decls.pou(&fb.name).cloned() else {
-            return;
-        };
-        let params: Vec<_> = pou.params().cloned().collect();
-        let mut k = 0;
-        args.retain(|a| {
-            let at = k;
-            k += 1;
-            let param = match &a.name {
-                Some(n) => params.iter().find(|p| p.0.eq_ignore_ascii_case(&n.name)),
-                None => params.get(at),
-            };
-            let Some((name, kind, ty)) = param else {
-                return true;
-            };
-            let expected = match (kind, ty) {
-                (crate::ast::VarKind::InOut, TypeRef::Named(b)) => b,
-                (_, TypeRef::Ref { target, .. }) => match &**target {
-                    TypeRef::Named(b) => b,
-                    _ => return true,
-                },
-                _ => return true,
-            };
-            let Some(given) = self.block_of(&a.value) else {
-                return true;
-            };
-            let derived = self
-                .env
-                .decls
-                .bases
-                .get(&given.key())
-                .is_some_and(|bs| bs.contains(&expected.key()));
-            if !derived {
-                return true;
-            }
-            self.diags.push(
-                Diagnostic::error(
-                    code::E0344,
-                    format!(
-                        "an instance of `{}`, which extends `{}`, passed to `{}` of `{}`: a derived instance where its base is expected is not supported",
-                        given.name, expected.name, name, pou.name
-                    ),
-                )
-                .at(a.value.span)
-                .with_primary_label("a derived instance for its base")
-                .with_hint(format!(
-                    "declare `{name}` with an INTERFACE that `{}` implements (both blocks then pass), or pass a `{}`",
-                    expected.name, expected.name
-                )),
-            );
-            false
-        });
     }
 
     /// `F(shape := inst)` where `shape` is a FUNCTION's input of interface type: a temporary of
@@ -940,6 +891,29 @@ impl Rewriter<'_, '_> {
             .collect()
     }
 
+    /// The variable holding the result, of an interface type, of the call through an interface
+    /// that `p` reads (`itf.__M_NEXT` after `itf.Next()`), if `p` reads one.
+    fn interface_result_read(&self, p: &Place) -> Option<Place> {
+        let (Accessor::Field(f), prefix) = p.accessors.split_last()? else {
+            return None;
+        };
+        let m = f.name.strip_prefix(crate::actions::METHOD_PREFIX)?;
+        let itf = Place {
+            base: p.base.clone(),
+            accessors: prefix.to_vec(),
+            span: p.span,
+        };
+        let i = self.place_interface(&itf)?;
+        i.interface_results
+            .iter()
+            .any(|(k, _)| k.eq_ignore_ascii_case(m))
+            .then(|| Place {
+                base: PlaceBase::Name(Ident::new(interface_result(p.span, m), p.span)),
+                accessors: Vec::new(),
+                span: p.span,
+            })
+    }
+
     /// Whether `p` reads the result of a call through an interface that E0342 refused
     /// (`itf.__M_M`, as the parser reads `itf.M()`): the statement is dropped, no error more.
     fn unknown_result(&self, p: &Place) -> bool {
@@ -954,10 +928,8 @@ impl Rewriter<'_, '_> {
             accessors: prefix.to_vec(),
             span: p.span,
         };
-        self.place_interface(&itf).is_some_and(|i| {
-            i.interface_results.contains(&m.to_ascii_uppercase())
-                || !i.methods.iter().any(|x| x.name.eq_ignore_ascii_case(m))
-        })
+        self.place_interface(&itf)
+            .is_some_and(|i| !i.methods.iter().any(|x| x.name.eq_ignore_ascii_case(m)))
     }
 
     /// `__QUERYINTERFACE(src, dst)` (CODESYS, TwinCAT: `dst` takes the instance `src` holds, or
@@ -1185,6 +1157,10 @@ impl Rewriter<'_, '_> {
             ExprKind::Place(p) if self.unknown_result(p) => Expr {
                 kind: ExprKind::Error,
                 span,
+            },
+            ExprKind::Place(p) => match self.interface_result_read(p) {
+                Some(r) => place_expr(r, span),
+                None => return,
             },
             ExprKind::Call { name, args } => {
                 for a in args.iter_mut() {

@@ -610,6 +610,19 @@ impl<'d> PouLowering<'d> {
             }
         }
         let first = self.temps.len();
+        if let Some((stmts, temps)) = super::base_view::rewrite(&self.env(), s, first) {
+            // `r.M()` through a reference to a base: a CASE on the instance's class (base_view)
+            for t in temps {
+                self.vars.insert(t.name.key(), t.ty.clone());
+                self.temps.push(t);
+            }
+            for c in &stmts {
+                self.stmt(c, out, diags);
+            }
+            self.types.get_mut().clear();
+            return true;
+        }
+        let first = self.temps.len();
         let rewritten = super::interface_vars::rewrite(&self.env(), s, first, diags);
         if let Some((stmts, temps)) = rewritten {
             // `itf := inst;`, `itf.M();`, `itf <> 0`: the hidden tag and references of the
@@ -1387,6 +1400,25 @@ impl<'d> PouLowering<'d> {
             ExprKind::Place(_) => self.reference_to,
             _ => false,
         };
+        if let ExprKind::Call { name, args } = &e.kind {
+            if name.is(super::base_view::RAW_REF) {
+                // the reference a base view reads through, itself (base_view's dispatch)
+                if let [Arg {
+                    value:
+                        Expr {
+                            kind: ExprKind::Place(p),
+                            ..
+                        },
+                    ..
+                }] = &args[..]
+                {
+                    self.raw_refs = true;
+                    let o = self.place_operand(p, out, diags);
+                    self.raw_refs = false;
+                    return o;
+                }
+            }
+        }
         let expected = hint
             .filter(|_| needs_context)
             .map(|h| self.env().resolve(h));
@@ -2102,9 +2134,15 @@ impl<'d> PouLowering<'d> {
                     let hint = hint_of(&self.env(), &callee, k, None, &list);
                     ops.push(self.operand(&list[k].value, hint.as_ref(), out, diags));
                 }
-                self.lit_hint = hint_of(&self.env(), &callee, 0, None, &list)
-                    .filter(|_| !matches!(self.ty(&list[0].value), Ty::Known(_)));
-                self.value(&list[0].value, out, diags);
+                let first = hint_of(&self.env(), &callee, 0, None, &list);
+                // a first input `REFERENCE TO T` given a variable: its address (as any other input)
+                if let Some(o) = self.reference(&list[0].value, first.as_ref(), out, diags) {
+                    out.push(ld(o, list[0].value.span));
+                } else {
+                    self.lit_hint =
+                        first.filter(|_| !matches!(self.ty(&list[0].value), Ty::Known(_)));
+                    self.value(&list[0].value, out, diags);
+                }
                 out.push(instr(
                     InstrKind::FunctionCall {
                         name: name.clone(),

@@ -13,6 +13,7 @@
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
 pub mod ast;
+pub mod base_view;
 mod conditional;
 mod conflict_markers;
 pub mod fb_init;
@@ -32,9 +33,11 @@ pub mod qualifiers;
 pub mod refs;
 mod scl;
 pub mod sfc;
+mod struct_extends;
 pub mod types;
 mod using;
 mod var_config;
+mod var_inst;
 
 pub use conditional::ProjectDefines;
 pub use lower::PouLowering;

@@ -151,6 +151,14 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
                 continue;
             };
             h += 1;
+            // an accessor's own access modifier (TwinCAT: `SET` declared `PROTECTED`): read past
+            while h + 1 < n
+                && ["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
+                    .iter()
+                    .any(|w| is_word(src, &toks[h], w))
+            {
+                h += 1;
+            }
             let decl_start = toks.get(h).map_or(0, |t| t.range.start);
             let (after, vars_end) = super::file::skip_var_blocks(src, toks, h);
             h = after;
@@ -222,13 +230,16 @@ pub(super) fn pending_accessors(
         &p.name,
         Span::new(file, p.name_range.start, p.name_range.end),
     );
-    let part = |(decls, stmts): &(Range<usize>, Range<usize>), diags: &mut Diagnostics| {
-        let blocks = super::file::read_var_blocks(
+    // (an accessor's VAR_INST, TwinCAT: kept in the instance, as a method's)
+    let mut inst = Vec::new();
+    let mut part = |(decls, stmts): &(Range<usize>, Range<usize>), diags: &mut Diagnostics| {
+        let (blocks, kept) = super::file::read_member_var_blocks(
             file,
             src.get(decls.clone()).unwrap_or(""),
             decls.start,
             diags,
         );
+        inst.extend(kept);
         (
             blocks,
             src.get(stmts.clone()).unwrap_or("").to_string(),
@@ -237,7 +248,11 @@ pub(super) fn pending_accessors(
     };
     let get = p.get.as_ref().map(|g| part(g, diags));
     let set = p.set.as_ref().map(|s| part(s, diags));
-    accessor_methods(&name, &value.ty, get, set)
+    let mut out = accessor_methods(&name, &value.ty, get, set);
+    for m in &mut out {
+        m.inst = inst.clone();
+    }
+    out
 }
 
 /// The methods of a property `name : ty` with the given accessors (each: its variable blocks, its
@@ -257,6 +272,7 @@ pub fn accessor_methods(
             blocks,
             text,
             base,
+            inst: Vec::new(),
         });
     }
     if let Some((mut blocks, text, base)) = set {
@@ -277,6 +293,7 @@ pub fn accessor_methods(
             blocks,
             text,
             base,
+            inst: Vec::new(),
         });
     }
     out

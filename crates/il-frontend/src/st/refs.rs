@@ -94,7 +94,10 @@ impl RefTypes {
         for (k, t) in toks.iter().enumerate() {
             let w = word(src, t).to_ascii_uppercase();
             if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
-                if is_var_keyword(&w) || w == "STRUCT" || w == "TYPE" || w == "FUNCTION" {
+                // (a METHOD's result type too: `METHOD Take : POINTER TO ST_Node`)
+                if is_var_keyword(&w)
+                    || matches!(w.as_str(), "STRUCT" | "TYPE" | "FUNCTION" | "METHOD")
+                {
                     in_decl = true;
                 } else if matches!(w.as_str(), "END_VAR" | "END_STRUCT" | "END_TYPE") {
                     in_decl = false;

@@ -71,6 +71,9 @@ pub struct Declarations {
     pub interfaces: HashMap<String, super::interface_vars::Interface>,
     /// The bases of each derived function block (upper-case names, root first).
     pub bases: HashMap<String, Vec<String>>,
+    /// The derived blocks of each block that has some, with their class numbers
+    /// ([`super::base_view`]).
+    pub derived: super::base_view::Derived,
     /// Whether any declaration holds a `REFERENCE TO` (computed on the first
     /// [`Declarations::has_reference_to`], once the declarations are complete).
     references: std::sync::OnceLock<bool>,
