@@ -20,6 +20,9 @@ pub const PROVIDED_LIBRARIES: &[&str] = &[
     "IEC",
     "UTIL",
     "TC2_UTILITIES",
+    // MEMCPY, MEMMOVE, MEMSET, MEMCMP, SIZEOF-based code (`Tc2_System.MEMMOVE(...)`); its ADS and
+    // file blocks are then unknown functions or types, named at their use
+    "TC2_SYSTEM",
     "SM3_BASIC",
     "TC2_MC2",
 ];
@@ -199,7 +202,7 @@ pub(super) fn library_qualifiers(
                 .at(Span::new(file, t.range.start, t.range.end))
                 .with_primary_label("library qualifier")
                 .with_hint(format!(
-                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2; `{}` comes from another library: add its POUs and types to the project",
+                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, Tc2_System (its memory functions), SM3_Basic and Tc2_MC2; `{}` comes from another library: add its POUs and types to the project",
                     word(src, member)
                 )),
             );

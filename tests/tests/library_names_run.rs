@@ -1,12 +1,19 @@
+//! Names of the libraries a TwinCAT project links, as ladderc reads them.
+//!
 //! A function block that EXTENDS a block of a library ladderc does not have (TwinCAT's
 //! `EXTENDS TcBaseModuleRegistered`, ziyuEngineer/TwinCAT's Portal project) is not compiled, with one
 //! E0330 naming the base. The base may declare the FB_init that its instances' declaration
 //! arguments (`m : FB_Module(nObjectId := ...)`) go to, so those arguments are no second error;
 //! before, each such instance was also an E0329 ("has no FB_init method"). A block whose project
 //! base is known and declares no FB_init still gets its E0329.
+//!
+//! `Tc2_System.MEMMOVE(...)` (fisothemes/TwinCat-Dynamic-Collections' FB_Array_List): ladderc
+//! provides Tc2_System's memory functions, so the qualifier is dropped as Tc2_Standard's is; before,
+//! it was E1032 ("`Tc2_System` is neither a variable nor a library ladderc provides"). A Tc2_System
+//! function ladderc lacks is then one E1019 at its name.
 
 mod common;
-use common::rejected_heads;
+use common::{rejected_heads, run_traced};
 
 #[test]
 fn instances_of_a_block_with_a_library_base_are_no_second_error() {
@@ -24,5 +31,28 @@ fn instances_of_a_block_with_a_library_base_are_no_second_error() {
             "lib.st:1:34: error[E0330]: `FB_Module` EXTENDS `TcBaseModuleRegistered`, which names no function block of the project",
             "lib.st:12:17: error[E0329]: `FB_Derived` has no FB_init method to take these arguments",
         ]
+    );
+}
+
+/// MEMMOVE of a[0..2] onto a[1..3] (overlapping) through the `Tc2_System.` qualifier.
+#[test]
+fn tc2_system_memory_functions_run_with_their_qualifier() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("mm.st");
+    std::fs::write(
+        &f,
+        "PROGRAM Main\nVAR a : ARRAY[0..3] OF INT := [1, 2, 3, 4]; END_VAR\n\
+         Tc2_System.MEMMOVE(ADR(a[1]), ADR(a[0]), 3 * SIZEOF(a[0]));\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run_traced(&f, 1, "Main.a[0],Main.a[1],Main.a[2],Main.a[3]");
+    assert_eq!(trace.lines().nth(1), Some("0,0,1,1,2,3"), "{trace}");
+    let heads = rejected_heads(
+        "ads.st",
+        "PROGRAM Main\nVAR b : BOOL; END_VAR\nb := Tc2_System.F_GetVersion(1);\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        ["ads.st:3:17: error[E1019]: unknown function `F_GetVersion`"]
     );
 }
