@@ -19,14 +19,12 @@
 //! | LilKiddy007/twincat3-plc-motion-control `main.st` | runs, but the reversal after MC_Halt never starts (the rising Execute on the aborted MC_MoveVelocity was ignored as Busy) | runs, and reverses: +300, -300, +1000 mm/s as programmed |
 
 mod common;
+mod lsp_client;
 use common::{column, ladderc, run_traced_files};
 
+use lsp_client::Client;
 use serde_json::{json, Value};
-use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
-use std::process::{Child, ChildStdin, Stdio};
-use std::sync::mpsc::{channel, Receiver};
-use std::time::Duration;
 
 fn fixture(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -341,108 +339,6 @@ fn axis_refs_without_an_axis_and_bad_links_are_located_diagnostics() {
 }
 
 // ---------------------------------------------------------------- the language server
-
-/// A scripted editor over `ladderc lsp`'s JSON-RPC (as in `lsp.rs`).
-struct Client {
-    child: Child,
-    stdin: ChildStdin,
-    messages: Receiver<Value>,
-    next_id: i64,
-}
-
-impl Client {
-    fn start(root: &std::path::Path) -> Client {
-        let mut child = common::ladderc()
-            .arg("lsp")
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::inherit())
-            .spawn()
-            .unwrap();
-        let stdin = child.stdin.take().unwrap();
-        let stdout = child.stdout.take().unwrap();
-        let (tx, rx) = channel();
-        std::thread::spawn(move || {
-            let mut r = BufReader::new(stdout);
-            loop {
-                let mut len = 0usize;
-                loop {
-                    let mut line = String::new();
-                    if r.read_line(&mut line).unwrap_or(0) == 0 {
-                        return;
-                    }
-                    let line = line.trim_end();
-                    if line.is_empty() {
-                        break;
-                    }
-                    if let Some(v) = line.strip_prefix("Content-Length: ") {
-                        len = v.parse().unwrap();
-                    }
-                }
-                let mut body = vec![0u8; len];
-                if r.read_exact(&mut body).is_err() {
-                    return;
-                }
-                if tx.send(serde_json::from_slice(&body).unwrap()).is_err() {
-                    return;
-                }
-            }
-        });
-        let mut c = Client {
-            child,
-            stdin,
-            messages: rx,
-            next_id: 1,
-        };
-        let uri = format!("file://{}", root.display());
-        let init = c.request(
-            "initialize",
-            json!({"processId": null, "rootUri": uri, "capabilities": {},
-                   "workspaceFolders": [{"uri": uri, "name": "w"}]}),
-        );
-        assert!(init["capabilities"]["hoverProvider"].as_bool().unwrap());
-        c.notify("initialized", json!({}));
-        c
-    }
-
-    fn send(&mut self, v: Value) {
-        let body = v.to_string();
-        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
-        self.stdin.flush().unwrap();
-    }
-
-    fn notify(&mut self, method: &str, params: Value) {
-        self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
-    }
-
-    fn next(&mut self) -> Value {
-        self.messages
-            .recv_timeout(Duration::from_secs(60))
-            .expect("the server answers")
-    }
-
-    fn request(&mut self, method: &str, params: Value) -> Value {
-        let id = self.next_id;
-        self.next_id += 1;
-        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
-        loop {
-            let m = self.next();
-            if m["id"] == json!(id) {
-                assert!(m.get("error").is_none(), "{m}");
-                return m["result"].clone();
-            }
-        }
-    }
-
-    fn diagnostics(&mut self) -> Value {
-        loop {
-            let m = self.next();
-            if m["method"] == "textDocument/publishDiagnostics" {
-                return m["params"].clone();
-            }
-        }
-    }
-}
 
 const TC2_DOC: &str = "VAR_GLOBAL\n    Axis1 : AXIS_REF;\nEND_VAR\nPROGRAM MAIN\nVAR\n    fbPower : MC_Power;\n    fbTurn : Tc2_MC2.MC_MoveModulo;\nEND_VAR\n\
 fbPower(Axis := Axis1, Enable := TRUE, Enable_Positive := TRUE, Enable_Negative := TRUE, Override := 50.0);\n\
