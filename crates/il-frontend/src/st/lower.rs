@@ -577,6 +577,23 @@ impl<'d> PouLowering<'d> {
             self.stmt_lowered(s, out, diags);
         }
     }
+    /// Lowers the statements a rewrite gave for one statement, with the temporaries it declared.
+    fn lower_rewritten(
+        &mut self,
+        stmts: &[Stmt],
+        temps: Vec<VarDecl>,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        for t in temps {
+            self.vars.insert(t.name.key(), t.ty.clone());
+            self.temps.push(t);
+        }
+        for c in stmts {
+            self.stmt(c, out, diags);
+        }
+        self.types.get_mut().clear();
+    }
 
     /// Lowers `s` when a rewrite applies to it (property accessors, method calls hoisted out of
     /// it, interface variables) and says whether one did. Kept out of [`Self::stmt`]'s frame:
@@ -612,14 +629,7 @@ impl<'d> PouLowering<'d> {
         let first = self.temps.len();
         if let Some((stmts, temps)) = super::base_view::rewrite(&self.env(), s, first) {
             // `r.M()` through a reference to a base: a CASE on the instance's class (base_view)
-            for t in temps {
-                self.vars.insert(t.name.key(), t.ty.clone());
-                self.temps.push(t);
-            }
-            for c in &stmts {
-                self.stmt(c, out, diags);
-            }
-            self.types.get_mut().clear();
+            self.lower_rewritten(&stmts, temps, out, diags);
             return true;
         }
         let first = self.temps.len();
@@ -627,14 +637,7 @@ impl<'d> PouLowering<'d> {
         if let Some((stmts, temps)) = rewritten {
             // `itf := inst;`, `itf.M();`, `itf <> 0`: the hidden tag and references of the
             // interface variable (see interface_vars); `F(shape := inst)` passes a temporary
-            for t in temps {
-                self.vars.insert(t.name.key(), t.ty.clone());
-                self.temps.push(t);
-            }
-            for c in &stmts {
-                self.stmt(c, out, diags);
-            }
-            self.types.get_mut().clear();
+            self.lower_rewritten(&stmts, temps, out, diags);
             return true;
         }
         false

@@ -671,21 +671,8 @@ impl<'s, 'd> Parser<'s, 'd> {
         loop {
             // (an ELSIF condition is evaluated only when the ones before are FALSE)
             let cond = if first {
-                match self.condition_assignment() {
-                    // `IF b := (i = 1) THEN` (ExST): `b := (i = 1);` runs before the IF, which tests `b`
-                    Some((target, value)) => {
-                        let read = Expr {
-                            span: target.span,
-                            kind: ExprKind::Place(target.clone()),
-                        };
-                        self.hoisted.push(Stmt {
-                            span: target.span.to(value.span),
-                            kind: StmtKind::Assign { target, value },
-                        });
-                        read
-                    }
-                    None => self.expr(),
-                }
+                // `IF b := (i = 1) THEN` (ExST): `b := (i = 1);` runs before the IF, which tests `b`
+                self.assigned_condition()
             } else {
                 // (its assignments run only when the conditions before are FALSE: `exst`)
                 let (cond, setup) = self.late_condition();

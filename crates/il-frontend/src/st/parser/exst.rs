@@ -81,13 +81,11 @@ impl Parser<'_, '_> {
         read
     }
 
-    /// A condition evaluated only sometimes or again and again (ELSIF, UNTIL, WHILE): the
-    /// condition and the assignments to run before each evaluation of it (`b := e` at its start,
-    /// `(x := e)` inside). A method call there stays E0108 ([`Parser::method_call_expr`]).
-    pub(super) fn late_condition(&mut self) -> (Expr, Vec<Stmt>) {
-        let outer = std::mem::take(&mut self.hoisted);
-        self.no_hoist += 1;
-        let cond = match self.condition_assignment() {
+    /// A condition that may begin with an ExST assignment `b := e` (IF, WHILE, ELSIF, UNTIL): the
+    /// assignment is hoisted to run before the test ([`Parser::hoisted`]), and the condition reads
+    /// `b`; otherwise the expression itself.
+    pub(super) fn assigned_condition(&mut self) -> Expr {
+        match self.condition_assignment() {
             Some((target, value)) => {
                 let read = Expr {
                     span: target.span,
@@ -100,7 +98,16 @@ impl Parser<'_, '_> {
                 read
             }
             None => self.expr(),
-        };
+        }
+    }
+
+    /// A condition evaluated only sometimes or again and again (ELSIF, UNTIL, WHILE): the
+    /// condition and the assignments to run before each evaluation of it (`b := e` at its start,
+    /// `(x := e)` inside). A method call there stays E0108 ([`Parser::method_call_expr`]).
+    pub(super) fn late_condition(&mut self) -> (Expr, Vec<Stmt>) {
+        let outer = std::mem::take(&mut self.hoisted);
+        self.no_hoist += 1;
+        let cond = self.assigned_condition();
         self.no_hoist -= 1;
         let setup = std::mem::replace(&mut self.hoisted, outer);
         (cond, setup)
