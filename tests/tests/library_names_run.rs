@@ -8,9 +8,10 @@
 //! base is known and declares no FB_init still gets its E0329.
 //!
 //! `Tc2_System.MEMMOVE(...)` (fisothemes/TwinCat-Dynamic-Collections' FB_Array_List): ladderc
-//! provides Tc2_System's memory functions, so the qualifier is dropped as Tc2_Standard's is; before,
-//! it was E1032 ("`Tc2_System` is neither a variable nor a library ladderc provides"). A Tc2_System
-//! function ladderc lacks is then one E1019 at its name.
+//! provides Tc2_System's memory functions, so the qualifier is dropped before them as Tc2_Standard's
+//! is; before, it was E1032 ("`Tc2_System` is neither a variable nor a library ladderc provides").
+//! Before any other name of the library (`Tc2_System.F_GetVersion`) it stays that E1032, which names
+//! the library.
 
 mod common;
 use common::{rejected_heads, run_traced};
@@ -53,6 +54,6 @@ fn tc2_system_memory_functions_run_with_their_qualifier() {
     );
     assert_eq!(
         heads,
-        ["ads.st:3:17: error[E1019]: unknown function `F_GetVersion`"]
+        ["ads.st:3:6: error[E1032]: `Tc2_System` is neither a variable nor a library ladderc provides"]
     );
 }

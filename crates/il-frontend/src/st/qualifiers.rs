@@ -20,12 +20,15 @@ pub const PROVIDED_LIBRARIES: &[&str] = &[
     "IEC",
     "UTIL",
     "TC2_UTILITIES",
-    // MEMCPY, MEMMOVE, MEMSET, MEMCMP, SIZEOF-based code (`Tc2_System.MEMMOVE(...)`); its ADS and
-    // file blocks are then unknown functions or types, named at their use
-    "TC2_SYSTEM",
     "SM3_BASIC",
     "TC2_MC2",
 ];
+
+/// Libraries of which ladderc provides some names only, upper case: their qualifier is dropped
+/// before those names (`Tc2_System.MEMMOVE(...)`), and before any other it is E1032 naming the
+/// library (`Tc2_System.ADSREAD`: its ADS and file blocks are not ladderc's).
+pub const PARTLY_PROVIDED_LIBRARIES: &[(&str, &[&str])] =
+    &[("TC2_SYSTEM", &["MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP"])];
 
 thread_local! {
     /// The PROGRAM names of the project's files (upper case), set by [`set_project_programs`]:
@@ -182,7 +185,12 @@ pub(super) fn library_qualifiers(
             continue;
         }
         let text = text.get_or_insert_with(|| src.to_string());
-        if PROVIDED_LIBRARIES.contains(&w.as_str()) {
+        let member_name = word(src, member).to_ascii_uppercase();
+        let provided = PROVIDED_LIBRARIES.contains(&w.as_str())
+            || PARTLY_PROVIDED_LIBRARIES
+                .iter()
+                .any(|(lib, names)| *lib == w && names.contains(&member_name.as_str()));
+        if provided {
             blank(text, t.range.start..dot.range.end);
             continue;
         }
@@ -202,7 +210,7 @@ pub(super) fn library_qualifiers(
                 .at(Span::new(file, t.range.start, t.range.end))
                 .with_primary_label("library qualifier")
                 .with_hint(format!(
-                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, Tc2_System (its memory functions), SM3_Basic and Tc2_MC2; `{}` comes from another library: add its POUs and types to the project",
+                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2 (and Tc2_System's MEMCPY, MEMMOVE, MEMSET, MEMCMP); `{}` comes from another library: add its POUs and types to the project",
                     word(src, member)
                 )),
             );
