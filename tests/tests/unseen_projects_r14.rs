@@ -1,0 +1,245 @@
+//! Ladder diagrams of the fourteenth acceptance run of issue #13 (2026-12-04, branch `round14`).
+//!
+//! **The round.** Public OpenPLC Editor / Beremiz projects (PLCopen XML `tc6_0201`, `plc.xml`) that
+//! no earlier round had tried, with LD or FBD bodies, run as a new user would (`ladderc run FILE
+//! --cycles 20`, inputs driven with `--stimulus`, values checked against the rungs; snapshots of
+//! 2026-12-04): 1ioo/FactoryIO-Weight-Sorter, riverobruno/TPLA, charliehernandez97/WaterIrrigation
+//! (two projects), jtuttas/CBasicModel (FBD), jtuttas/IHKBand (FBD), estidlore/parking-automation,
+//! lsofia20/auto-segundo-examen, lsofia20/auto-workshop-4, kbuaaaaaa/COTS_ICS_Security,
+//! Anubhab-lang/Redes, sakunamary/Roaster_s7-200 (two projects, LD and FBD). Beside them, two of
+//! text bodies: AlessioP04/automatic-system (SFC and ST) and denisynx/WaterTank-Automation (ST).
+//!
+//! | | LD/FBD files | run and behave | rejected, naming what is missing or wrong | ladderc gap |
+//! |---|---|---|---|---|
+//! | before | 13 (12 repositories) | 11 | 2 | 0 |
+//! | after | 13 | 11 | 2 | 0 |
+//!
+//! The rejections: a variable the project never declares (`Height_Out` written by an output
+//! variable of kbuaaaaaa's `water_tank`, E1001 located at the element) and the blocks of an OpenPLC
+//! board library the file does not hold (`I2C_OLED`, `I2C_AHT20` of sakunamary's `I2C_test`, E3009).
+//! denisynx's ST body writes an undeclared `Pump` (E1001); AlessioP04's SFC runs.
+//!
+//! One difference from the Beremiz/OpenPLC code generator, left as it is: inside one network ladderc
+//! evaluates every rung before it writes any coil (`crates/ladder-compiler/src/lower.rs`, "every
+//! contact sees the value the variable had before the rung"), while Beremiz's `PLCGenerator` assigns
+//! coil after coil from top to bottom, so a contact on a coil of the same network written above it
+//! reads the new value. In sakunamary's roaster a push-button toggle therefore settles one scan later
+//! here (the same values once it has); the tests below check the values after they settle.
+//!
+//! Two projects are MIT-licensed and copied unchanged (`tests/fixtures/unseen/r14/`, with their
+//! licences and `README.md`); the rejections are reproduced here in small files of our own.
+
+mod common;
+use common::{column, rejected_heads, run_stimulated};
+use std::path::PathBuf;
+
+fn fixture(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/unseen/r14")
+        .join(name)
+        .join("plc.xml")
+}
+
+/// The value of column `name` after `cycle`.
+fn at(trace: &str, name: &str, cycle: usize) -> f64 {
+    column(trace, &format!("instance0.{name}"))[cycle]
+}
+
+/// estidlore/parking-automation: the entry barrier opens while a car coming in holds a ticket and
+/// stays open 3 s (TOF `TofIn`, PT T#3000ms) after; the exit barrier likewise for a paid ticket;
+/// switching the system off drops the `isComingIn`/`isComingOut` coils (each `x := x AND
+/// isSystemOn`) and with them the tickets; the counters are reset while the system is on (their R is
+/// `isSystemOn`), so `carsCameIn`/`carsCameOut` stay 0. The task runs every 20 ms: on even cycles.
+#[test]
+fn an_openplc_car_park_opens_and_closes_its_barriers() {
+    let p = "instance0";
+    let stimulus = format!(
+        "0,{p}.isSystemOn,1\n0,{p}.isComingIn,1\n0,{p}.hasTicket,1\n10,{p}.isComingIn,0\n\
+         20,{p}.isComingOut,1\n20,{p}.hasPaid,1\n100,{p}.isSystemOn,0\n"
+    );
+    let watch = [
+        "isComingIn",
+        "hasTicket",
+        "isBarrierInOpen",
+        "TofIn_ET",
+        "isComingOut",
+        "hasPaid",
+        "isBarrierOutOpen",
+        "carsCameIn",
+        "carsCameOut",
+    ]
+    .map(|v| format!("{p}.{v}"))
+    .join(",");
+    let (trace, _) = run_stimulated(&fixture("parking"), 420, &stimulus, &watch);
+    // entry: open from the first scan; the ticket drops with the car at 100 ms, the TOF holds 3 s
+    assert_eq!(at(&trace, "isBarrierInOpen", 0), 1.0);
+    assert_eq!(at(&trace, "hasTicket", 8), 1.0);
+    assert_eq!(at(&trace, "hasTicket", 10), 0.0);
+    assert_eq!(at(&trace, "isBarrierInOpen", 308), 1.0);
+    assert_eq!(at(&trace, "isBarrierInOpen", 310), 0.0);
+    // the ET output wired to an output variable: 2 s after the falling edge (t = 100 ms + 2000 ms)
+    let et = trace.lines().nth(1 + 210).unwrap();
+    assert!(et.contains(",T#2000ms,"), "{et}");
+    // exit: open at 200 ms; the system switched off at 1 s drops the car and the payment, the
+    // barrier closes 3 s later
+    assert_eq!(at(&trace, "isBarrierOutOpen", 18), 0.0);
+    assert_eq!(at(&trace, "isBarrierOutOpen", 20), 1.0);
+    assert_eq!(at(&trace, "isComingOut", 98), 1.0);
+    assert_eq!(at(&trace, "isComingOut", 100), 0.0);
+    assert_eq!(at(&trace, "hasPaid", 100), 0.0);
+    assert_eq!(at(&trace, "isBarrierOutOpen", 398), 1.0);
+    assert_eq!(at(&trace, "isBarrierOutOpen", 400), 0.0);
+    assert!(column(&trace, "instance0.carsCameIn")
+        .iter()
+        .all(|&c| c == 0.0));
+    assert!(column(&trace, "instance0.carsCameOut")
+        .iter()
+        .all(|&c| c == 0.0));
+}
+
+/// sakunamary/Roaster_s7-200: RUN, heat and cooling push-buttons each toggle a latch (a rising-edge
+/// contact sets it, a second press sets the `*_run` coil that breaks the latch, the falling edge
+/// resets that coil); `system_out` is a TON of 2 s on the run latch; STOP drops every latch.
+#[test]
+fn an_openplc_roaster_toggles_its_latches_with_edge_contacts() {
+    let p = "instance0";
+    let rows = [
+        (0, "RUN_BUTTON", 1),
+        (4, "RUN_BUTTON", 0),
+        (50, "heat_BUTTON", 1),
+        (54, "heat_BUTTON", 0),
+        (60, "cooling_BUTTON", 1),
+        (64, "cooling_BUTTON", 0),
+        (100, "heat_BUTTON", 1),
+        (104, "heat_BUTTON", 0),
+        (250, "STOP_BUTTON", 1),
+        (254, "STOP_BUTTON", 0),
+    ];
+    let stimulus: String = rows
+        .iter()
+        .map(|(c, v, x)| format!("{c},{p}.{v},{x}\n"))
+        .collect();
+    let watch = [
+        "RUN_STATUS",
+        "system_out",
+        "heat_out",
+        "cooling_out",
+        "stop_status",
+        "sys_run",
+        "heat_run",
+    ]
+    .map(|v| format!("{p}.{v}"))
+    .join(",");
+    let (trace, _) = run_stimulated(&fixture("roaster"), 270, &stimulus, &watch);
+    let states = |cycle: usize| {
+        [
+            "RUN_STATUS",
+            "system_out",
+            "heat_out",
+            "cooling_out",
+            "stop_status",
+        ]
+        .map(|v| at(&trace, v, cycle) as u8)
+    };
+    assert_eq!(
+        states(0),
+        [1, 0, 0, 0, 0],
+        "RUN pressed: the run latch sets"
+    );
+    assert_eq!(states(40), [1, 0, 0, 0, 0], "released: it holds");
+    assert_eq!(states(56), [1, 0, 1, 0, 0], "heat pressed: its latch sets");
+    assert_eq!(states(66), [1, 0, 1, 1, 0], "cooling pressed too");
+    assert_eq!(states(106), [1, 0, 0, 1, 0], "heat pressed again: off");
+    assert_eq!(states(190), [1, 0, 0, 1, 0], "TON of 2 s still running");
+    assert_eq!(states(210), [1, 1, 0, 1, 0], "TON elapsed: system_out");
+    assert_eq!(
+        states(250),
+        [1, 1, 0, 0, 1],
+        "STOP: cooling (a later network) drops at once"
+    );
+    assert_eq!(
+        states(256),
+        [0, 0, 0, 0, 0],
+        "STOP released: every latch stays off"
+    );
+    assert_eq!(states(268), [0, 0, 0, 0, 0]);
+    // the second heat press set heat_run for the scan of its rising edge, which broke the latch in
+    // the next scan; the falling edge reset it. RUN was pressed once: sys_run never set
+    assert_eq!(at(&trace, "heat_run", 98), 0.0);
+    assert_eq!(at(&trace, "heat_run", 100), 1.0);
+    assert_eq!(at(&trace, "heat_run", 102), 0.0);
+    assert!(column(&trace, "instance0.sys_run")
+        .iter()
+        .all(|&c| c == 0.0));
+}
+
+/// The OpenPLC Editor project header, an LD program `water_tank` with `vars` and `body`, and a task
+/// running it every 20 ms.
+fn openplc_ld(vars: &str, body: &str) -> String {
+    format!(
+        "<?xml version='1.0' encoding='utf-8'?>\n\
+<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\n\
+<fileHeader companyName=\"t\" productName=\"r14\" productVersion=\"1\" creationDateTime=\"2026-12-04T00:00:00\"/>\n\
+<contentHeader name=\"tank\"><coordinateInfo><fbd><scaling x=\"10\" y=\"10\"/></fbd><ld><scaling x=\"10\" y=\"10\"/></ld><sfc><scaling x=\"10\" y=\"10\"/></sfc></coordinateInfo></contentHeader>\n\
+<types><dataTypes/><pous>\n\
+<pou name=\"water_tank\" pouType=\"program\">\n\
+<interface><localVars>\n{vars}</localVars></interface>\n\
+<body><LD>\n{body}</LD></body>\n\
+</pou>\n</pous></types>\n\
+<instances><configurations><configuration name=\"Config0\"><resource name=\"Res0\">\n\
+<task name=\"task0\" priority=\"0\" interval=\"T#20ms\"><pouInstance name=\"instance0\" typeName=\"water_tank\"/></task>\n\
+</resource></configuration></configurations></instances>\n</project>\n"
+    )
+}
+
+const RUNG: &str = "<leftPowerRail localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut formalParameter=\"\"/></leftPowerRail>\n\
+<contact localId=\"2\" negated=\"false\"><position x=\"50\" y=\"0\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn><connectionPointOut/><variable>Start</variable></contact>\n\
+<coil localId=\"3\" negated=\"false\"><position x=\"150\" y=\"0\"/><connectionPointIn><connection refLocalId=\"2\"/></connectionPointIn><connectionPointOut/><variable>Pump</variable></coil>\n\
+<rightPowerRail localId=\"4\"><position x=\"250\" y=\"0\"/><connectionPointIn><connection refLocalId=\"3\"/></connectionPointIn></rightPowerRail>\n";
+
+const VARS: &str = "<variable name=\"Start\"><type><BOOL/></type></variable>\n\
+<variable name=\"Height\"><type><INT/></type></variable>\n\
+<variable name=\"Pump\"><type><BOOL/></type></variable>\n";
+
+/// kbuaaaaaa/COTS_ICS_Security: an output variable of the LD body names a variable the POU never
+/// declares. One located E1001 at the element (network and localId), exit 1.
+#[test]
+fn an_output_variable_naming_an_undeclared_variable_is_one_located_e1001() {
+    let body = format!(
+        "{RUNG}<inVariable localId=\"5\"><position x=\"50\" y=\"100\"/><connectionPointOut/><expression>Height</expression></inVariable>\n\
+<outVariable localId=\"6\"><position x=\"150\" y=\"100\"/><connectionPointIn><connection refLocalId=\"5\"/></connectionPointIn><expression>Height_Out</expression></outVariable>\n"
+    );
+    let heads = rejected_heads("tank.xml", &openplc_ld(VARS, &body));
+    assert_eq!(heads.len(), 1, "{heads:?}");
+    assert!(
+        heads[0].ends_with(
+            "error[E1001]: undeclared name `Height_Out` [POU `water_tank`, network 2, localId 6]"
+        ),
+        "{heads:?}"
+    );
+    assert!(heads[0].starts_with("tank.xml:"), "{heads:?}");
+}
+
+/// sakunamary/Roaster_s7-200 `I2C_test`: a block of an OpenPLC board library (`I2C_AHT20`, the
+/// Arduino I2C sensor blocks of the editor's library) that the file does not hold. One located E3009
+/// naming the type, exit 1; the rest of the body is not reported.
+#[test]
+fn a_block_of_an_openplc_board_library_is_one_located_e3009() {
+    let vars = format!(
+        "{VARS}<variable name=\"AHT20\"><type><derived name=\"I2C_AHT20\"/></type></variable>\n\
+<variable name=\"temp\"><type><REAL/></type></variable>\n"
+    );
+    let body = format!(
+        "{RUNG}<block localId=\"7\" typeName=\"I2C_AHT20\" instanceName=\"AHT20\"><position x=\"100\" y=\"100\"/>\n\
+<inputVariables><variable formalParameter=\"EN\"><connectionPointIn><connection refLocalId=\"2\"/></connectionPointIn></variable></inputVariables>\n\
+<inOutVariables/><outputVariables><variable formalParameter=\"TEMP\"><connectionPointOut/></variable></outputVariables></block>\n\
+<outVariable localId=\"8\"><position x=\"250\" y=\"100\"/><connectionPointIn><connection refLocalId=\"7\" formalParameter=\"TEMP\"/></connectionPointIn><expression>temp</expression></outVariable>\n"
+    );
+    let heads = rejected_heads("i2c.xml", &openplc_ld(&vars, &body));
+    assert_eq!(heads.len(), 1, "{heads:?}");
+    assert!(
+        heads[0].contains("error[E3009]: type `I2C_AHT20` is not defined in this project"),
+        "{heads:?}"
+    );
+    assert!(heads[0].starts_with("i2c.xml:"), "{heads:?}");
+}
