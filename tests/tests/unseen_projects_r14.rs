@@ -243,3 +243,27 @@ fn a_block_of_an_openplc_board_library_is_one_located_e3009() {
     );
     assert!(heads[0].starts_with("i2c.xml:"), "{heads:?}");
 }
+
+/// Anubhab-lang/Redes (reproduced in `clamp_under_en.xml`): an output variable wired to the result
+/// of a function box with EN is written only when EN is TRUE (the box runs), so `erro := setpoint -
+/// temp` is clamped at 0 by `MOVE(EN := erro < 0, IN := 0)` only when it is negative, as Beremiz /
+/// OpenPLC generate it (`IF MOVE_ENO THEN erro := MOVE_OUT; END_IF`) and the vendors document ("the
+/// connected variable keeps its value"). Before: the box's last result (0) was written every scan,
+/// `erro` and `power` stayed 0, and W3400 said the later network "wins every scan".
+#[test]
+fn an_output_of_a_function_box_under_en_is_written_only_when_it_runs() {
+    let f = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/unseen/r14/clamp_under_en.xml");
+    let p = "instance0";
+    let stimulus = format!("0,{p}.setpoint,100\n0,{p}.temp,60\n4,{p}.temp,150\n8,{p}.temp,90\n");
+    let (trace, stderr) = run_stimulated(&f, 12, &stimulus, &format!("{p}.erro,{p}.power"));
+    // 100 - 60 = 40 (not clamped), 100 - 150 = -50 clamped to 0, 100 - 90 = 10
+    assert_eq!(
+        trace,
+        "cycle,time_ms,instance0.erro,instance0.power\n\
+         0,0,40,120\n1,10,40,120\n2,20,40,120\n3,30,40,120\n\
+         4,40,0,0\n5,50,0,0\n6,60,0,0\n7,70,0,0\n\
+         8,80,10,30\n9,90,10,30\n10,100,10,30\n11,110,10,30\n"
+    );
+    assert!(!stderr.contains("W3400"), "{stderr}");
+}

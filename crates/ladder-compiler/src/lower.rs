@@ -84,6 +84,10 @@ struct Write {
     kind: WriteKind,
     val: ValId,
     span: Span,
+    /// An output variable wired to the result of a function box called under EN: the box's ENO and
+    /// the label after the write. The write is skipped when ENO is FALSE, so the variable keeps its
+    /// value (see [`NetLowering::en_results`]).
+    guard: Option<(ValId, String)>,
 }
 
 enum Control {
@@ -282,6 +286,27 @@ impl<'i> BodyLowering<'i> {
         out
     }
 
+    /// Whether node `i` is wired straight to a result pin of a function box (no instance) whose EN
+    /// is wired.
+    fn from_function_under_en(g: &Graph, i: usize) -> bool {
+        g.nodes[i]
+            .input
+            .iter()
+            .any(|w| match &g.nodes[w.from].kind {
+                Kind::Block(b) => {
+                    b.instance.is_none()
+                        && !w
+                            .pin
+                            .as_ref()
+                            .is_some_and(|p| p.trim().eq_ignore_ascii_case("ENO"))
+                        && b.inputs.iter().any(|p| {
+                            p.name.trim().eq_ignore_ascii_case("EN") && !p.wires.is_empty()
+                        })
+                }
+                _ => false,
+            })
+    }
+
     /// W3400 when one variable (or %Q address) is assigned by plain coils or output variables of two
     /// networks: the later network silently overrides the earlier one every scan ("double coil").
     /// Set/reset coils are left alone (latching from several rungs is the normal use).
@@ -297,6 +322,9 @@ impl<'i> BodyLowering<'i> {
                         storage: Storage::None,
                         ..
                     } => (var, *var_span),
+                    // written only when a function box under EN runs (see
+                    // `NetLowering::en_results`): it overrides nothing while the box is off
+                    Kind::OutVar { .. } if Self::from_function_under_en(g, i) => continue,
                     Kind::OutVar {
                         expr, expr_span, ..
                     } => (expr, *expr_span),
@@ -700,6 +728,17 @@ struct NetLowering<'a, 'i> {
     depth: Vec<usize>,
     /// The first value that would have nested deeper than [`MAX_VALUE_DEPTH`] (reported as E3200).
     too_deep: Option<Span>,
+    /// The result values (as read from the box's output pins, negated or not) of function boxes
+    /// called under EN, each with the box's ENO. An output variable (or in-out variable) wired to
+    /// one is written only when ENO is TRUE: a box that does not run leaves the variable as it was,
+    /// as the vendors document for LD/FBD boxes with EN/ENO (Panasonic FPWIN Pro "EN/ENO": "the
+    /// function result is not changed and the connected variable keeps its value") and as Beremiz /
+    /// OpenPLC generate (`IF <box>_ENO THEN var := <box>_OUT; END_IF`). IEC 61131-3 only says the
+    /// body is not executed and ENO is FALSE.
+    en_results: HashMap<ValId, ValId>,
+    /// The ENO values of [`Self::en_results`] that a write is guarded by: stored once, when the box
+    /// is called, so the write sees the EN the box saw.
+    guards: HashSet<ValId>,
 }
 
 /// The deepest nesting of a network's logic (contacts in series, parallel branches, negations) that
@@ -726,7 +765,17 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             used: HashMap::default(),
             depth: Vec::new(),
             too_deep: None,
+            en_results: HashMap::default(),
+            guards: HashSet::default(),
         }
+    }
+
+    /// The guard of a write of `v` by the output element `id`: the ENO of the function box whose
+    /// result `v` is, when that box has EN (see [`Self::en_results`]), and the label after the write.
+    fn write_guard(&mut self, v: ValId, id: &str) -> Option<(ValId, String)> {
+        let eno = *self.en_results.get(&v)?;
+        self.guards.insert(eno);
+        Some((eno, format!("__keep_{}", sanitize(id))))
     }
 
     /// The state for network `network` (1-based), as [`NetLowering::new`] makes it, keeping the
@@ -746,6 +795,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         self.used.clear();
         self.depth.clear();
         self.too_deep = None;
+        self.en_results.clear();
+        self.guards.clear();
     }
 
     fn at(&self, node: usize) -> Where {
@@ -1348,6 +1399,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     kind,
                     val,
                     span,
+                    guard: None,
                 });
             }
             Kind::InVar {
@@ -1383,11 +1435,13 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     return;
                 };
                 self.check_assign(ctx, i, v, &target, span);
+                let guard = self.write_guard(v, &node.id);
                 self.writes.push(Write {
                     target,
                     kind: WriteKind::St { neg: *negated },
                     val: v,
                     span,
+                    guard,
                 });
             }
             Kind::InOutVar {
@@ -1403,11 +1457,13 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 let out = match self.input_val(ctx, &node.input, i) {
                     Some(v) => {
                         self.check_assign(ctx, i, v, &op, span);
+                        let guard = self.write_guard(v, &node.id);
                         self.writes.push(Write {
                             target: op.clone(),
                             kind: WriteKind::St { neg: *negated_in },
                             val: v,
                             span,
+                            guard,
                         });
                         if *negated_in {
                             self.val(Val::Not(v), span)

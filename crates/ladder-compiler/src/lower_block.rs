@@ -383,9 +383,15 @@ impl NetLowering<'_, '_> {
                     } else {
                         v
                     };
+                    if key != "ENO" && en.is_some() {
+                        self.en_results.insert(v, eno);
+                    }
                     self.pin_vals.insert((i, key), v);
                 }
                 if outputs.is_empty() {
+                    if en.is_some() {
+                        self.en_results.insert(rv, eno);
+                    }
                     self.pin_vals.insert((i, String::new()), rv);
                 }
             }

@@ -56,12 +56,19 @@ impl NetLowering<'_, '_> {
         self.uses = uses;
     }
 
-    /// Consecutive writes of one value form a group: one evaluation, several stores.
+    /// Consecutive writes of one value (and one guard: none, or the same) form a group: one
+    /// evaluation, several stores.
     pub(super) fn write_groups(&self) -> Vec<(std::ops::Range<usize>, ValId)> {
         let mut out: Vec<(std::ops::Range<usize>, ValId)> = Vec::new();
         for (i, w) in self.writes.iter().enumerate() {
             match out.last_mut() {
-                Some((r, v)) if *v == w.val => r.end = i + 1,
+                Some((r, v))
+                    if *v == w.val
+                        && self.writes[r.start].guard.as_ref().map(|g| g.0)
+                            == w.guard.as_ref().map(|g| g.0) =>
+                {
+                    r.end = i + 1
+                }
                 _ => out.push((i..i + 1, w.val)),
             }
         }
@@ -98,6 +105,10 @@ impl NetLowering<'_, '_> {
     ) {
         if let Some(e) = en {
             self.prepare(e, out);
+            // a write guarded by this box's ENO reads the EN stored here, as the box saw it
+            if self.guards.contains(&e) && !matches!(self.vals[e], Val::Const(_)) {
+                self.materialise(e, out);
+            }
             self.eval(e, out);
             out.push(instr(
                 InstrKind::Jump {
@@ -357,6 +368,19 @@ impl NetLowering<'_, '_> {
         }
         // Phase 2: write.
         for (r, v) in &groups {
+            // a write of a function box's result under EN: skipped when the box did not run
+            let guard = self.writes[r.start].guard.clone();
+            let span = self.writes[r.start].span;
+            if let Some((eno, label)) = &guard {
+                self.eval(*eno, out);
+                out.push(instr(
+                    InstrKind::Jump {
+                        cond: Condition::IfFalse,
+                        label: Ident::new(label, span),
+                    },
+                    span,
+                ));
+            }
             self.eval(*v, out);
             for w in &self.writes[r.clone()] {
                 let (op, neg) = match w.kind {
@@ -365,6 +389,9 @@ impl NetLowering<'_, '_> {
                     WriteKind::Reset => (Op::R, false),
                 };
                 out.push(simple(op, neg, Some(w.target.clone()), w.span));
+            }
+            if let Some((_, label)) = guard {
+                out.push(IlStmt::Label(Ident::new(&label, span)));
             }
         }
         // Phase 3: jumps and returns.
