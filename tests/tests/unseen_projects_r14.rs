@@ -11,8 +11,18 @@
 //!
 //! | | LD/FBD files | run and behave | rejected, naming what is missing or wrong | ladderc gap |
 //! |---|---|---|---|---|
-//! | before | 13 (12 repositories) | 11 | 2 | 0 |
-//! | after | 13 | 11 | 2 | 0 |
+//! | before | 13 (12 repositories) | 9 | 2 | 2 |
+//! | after | 13 | 10 | 2 | 1: 1ioo (below) |
+//!
+//! Gap of this round, fixed here: an output variable wired to the result of a function box with EN
+//! was written every scan with the box's last result, so Anubhab-lang/Redes's `Erro` (clamped at 0
+//! by `MOVE` under `EN := Erro < 0`) was 0 in every scan (and W3400 claimed the later network
+//! "wins every scan"); it is now written only when the box runs. Left: 1ioo/FactoryIO-Weight-Sorter
+//! chains `GT` -> `LE` by EN into a TON's IN; with EN FALSE ladderc's box keeps its last result
+//! (`crates/ladder-compiler/README.md`), matiec (OpenPLC) returns the type's initial value, so the
+//! TON stays on after the box leaves the scale and the sorter re-latches its `SendRight` coil.
+//! IEC 61131-3 leaves the result of a function that did not run open; ladderc's ST calls already
+//! take the initial value, the graphical rule is the lead's call (it changes CODESYS/TwinCAT LD too).
 //!
 //! The rejections: a variable the project never declares (`Height_Out` written by an output
 //! variable of kbuaaaaaa's `water_tank`, E1001 located at the element) and the blocks of an OpenPLC
