@@ -1719,7 +1719,7 @@ pub fn compile_pending(
 /// kept, initialised once with the instance), and the result `__M_<METHOD>` (an output). A
 /// VAR_IN_OUT of a method is a VAR_IN_OUT of the block: a call from outside (`inst.M(x := v)`) binds
 /// it as a call of the instance binds the block's own; a call inside the block reads and writes the
-/// argument itself (see [`super::method_in_out`]).
+/// argument itself (see `st::lower::method_in_out`).
 pub fn add_method_vars(
     p: &mut crate::ast::Pou,
     methods: &[PendingMethod],
