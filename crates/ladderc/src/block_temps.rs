@@ -50,14 +50,7 @@ pub fn keep(units: &mut [CompilationUnit], lib: &Library) {
                 moved.extend(keep);
             }
             if !moved.is_empty() {
-                p.var_blocks.push(VarBlock {
-                    name: None,
-                    kind: VarKind::Local,
-                    constant: false,
-                    retain: false,
-                    vars: moved,
-                    span: p.name.span,
-                });
+                add_hidden_vars(p, moved);
             }
         }
     }
@@ -82,4 +75,21 @@ fn args(body: &[IlStmt], instances: &HashSet<String>, out: &mut HashSet<String>)
             _ => {}
         }
     }
+}
+
+/// Adds `vars` to `pou` as a VAR block of its own (variables a rewrite introduces: kept in the
+/// instance, declared at the POU's name).
+pub(crate) fn add_hidden_vars(
+    pou: &mut il_frontend::ast::Pou,
+    vars: Vec<il_frontend::ast::VarDecl>,
+) {
+    let span = pou.name.span;
+    pou.var_blocks.push(VarBlock {
+        name: None,
+        kind: VarKind::Local,
+        constant: false,
+        retain: false,
+        vars,
+        span,
+    });
 }

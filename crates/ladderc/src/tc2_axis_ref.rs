@@ -17,7 +17,7 @@
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
     Accessor, ArgDir, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind, Instruction,
-    Literal, LiteralKind, Op, Operand, Pou, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
+    Literal, LiteralKind, Op, Operand, Pou, TypeRef, VarDecl, VarRef,
 };
 use il_frontend::Span;
 
@@ -160,14 +160,7 @@ pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
         }
         prologue.extend(moving(axis));
     }
-    p.var_blocks.push(VarBlock {
-        name: None,
-        kind: VarKind::Local,
-        constant: false,
-        retain: false,
-        vars: hidden,
-        span: p.name.span,
-    });
+    crate::block_temps::add_hidden_vars(p, hidden);
     p.body.splice(0..0, prologue);
 }
 

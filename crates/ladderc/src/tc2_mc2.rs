@@ -26,8 +26,7 @@ use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
     Accessor, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt, Initializer,
-    InstrKind, LibraryElement, LiteralKind, Operand, TypeDef, TypeRef, VarBlock, VarDecl, VarKind,
-    VarRef,
+    InstrKind, LibraryElement, LiteralKind, Operand, TypeDef, TypeRef, VarDecl, VarRef,
 };
 use param_passing::library::Library;
 use std::collections::HashMap;
@@ -175,14 +174,7 @@ pub fn read_spellings(
                 let mut hidden = Vec::new();
                 stmts(&mut p.body, &cx, &mut hidden, diags);
                 if !hidden.is_empty() {
-                    p.var_blocks.push(VarBlock {
-                        name: None,
-                        kind: VarKind::Local,
-                        constant: false,
-                        retain: false,
-                        vars: hidden,
-                        span: p.name.span,
-                    });
+                    crate::block_temps::add_hidden_vars(p, hidden);
                 }
             }
         }

@@ -1487,17 +1487,7 @@ impl<'s, 'd> Parser<'s, 'd> {
                     return self.paren_assignment(here);
                 }
                 let mut inner = self.expr();
-                if self.at(&Tok::RParen) {
-                    self.bump();
-                } else {
-                    let found = self.describe_current();
-                    self.push_error(
-                        Diagnostic::error(code::E0100, format!("expected `)`, found {found}"))
-                            .at(self.cur_span())
-                            .with_label(here, "this `(` is not closed")
-                            .with_hint("close the parenthesis"),
-                    );
-                }
+                self.close_paren(here);
                 inner.span = here.to(self.span(self.prev_end(), self.prev_end()));
                 inner
             }

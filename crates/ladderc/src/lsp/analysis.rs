@@ -348,15 +348,8 @@ impl Analysis {
         // `inst.` + partial member
         let trimmed = line.trim_end_matches(|c: char| c.is_ascii_alphanumeric() || c == '_');
         if let Some(before_dot) = trimmed.strip_suffix('.') {
-            let inst: String = before_dot
-                .chars()
-                .rev()
-                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
-                .collect::<Vec<_>>()
-                .into_iter()
-                .rev()
-                .collect();
-            if let Some(v) = var_named(&inst) {
+            let inst = last_word(before_dot);
+            if let Some(v) = var_named(inst) {
                 if self.type_name(&v.ty).eq_ignore_ascii_case("AXIS_REF") {
                     return crate::tc2_axis_ref::members(None);
                 }
@@ -389,16 +382,8 @@ impl Analysis {
         // ST `inst(` ... not yet closed: the block's inputs as `Name :=`
         if let Some(paren) = line.rfind('(') {
             if !line[paren..].contains(')') {
-                let inst: String = line[..paren]
-                    .trim_end()
-                    .chars()
-                    .rev()
-                    .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
-                    .collect::<Vec<_>>()
-                    .into_iter()
-                    .rev()
-                    .collect();
-                if let Some(v) = var_named(&inst).filter(|v| matches!(v.ty, Type::Fb(_))) {
+                let inst = last_word(line[..paren].trim_end());
+                if let Some(v) = var_named(inst).filter(|v| matches!(v.ty, Type::Fb(_))) {
                     return self
                         .members(&v.ty, false)
                         .into_iter()
@@ -473,4 +458,12 @@ impl Analysis {
         }
         Vec::new()
     }
+}
+
+/// The identifier that ends `text` (`fb` of `x := fb`), empty when none does.
+fn last_word(text: &str) -> &str {
+    let word = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    // the word's characters are ASCII, so its length in bytes is its length in characters
+    let len = text.chars().rev().take_while(|&c| word(c)).count();
+    &text[text.len() - len..]
 }

@@ -29,14 +29,8 @@ use crate::Span;
 use diagnostics::{code, Diagnostic};
 
 impl Parser<'_, '_> {
-    /// `(place := value)` after its `(` (`here`): the assignment goes into the hoisted statements,
-    /// the expression reads `place`.
-    pub(super) fn paren_assignment(&mut self, here: Span) -> Expr {
-        let Some(target) = self.place() else {
-            return self.error_expr(here);
-        };
-        self.bump(); // `:=` (checked by `at_condition_assignment`)
-        let value = self.expr();
+    /// The `)` of the parenthesis opened at `here`; E0100 when something else stands there.
+    pub(super) fn close_paren(&mut self, here: Span) {
         if self.at(&super::Tok::RParen) {
             self.bump();
         } else {
@@ -48,6 +42,17 @@ impl Parser<'_, '_> {
                     .with_hint("close the parenthesis"),
             );
         }
+    }
+
+    /// `(place := value)` after its `(` (`here`): the assignment goes into the hoisted statements,
+    /// the expression reads `place`.
+    pub(super) fn paren_assignment(&mut self, here: Span) -> Expr {
+        let Some(target) = self.place() else {
+            return self.error_expr(here);
+        };
+        self.bump(); // `:=` (checked by `at_condition_assignment`)
+        let value = self.expr();
+        self.close_paren(here);
         let span = here.to(self.span(self.prev_end(), self.prev_end()));
         if self.short_operand > 0 || self.no_assign {
             let what = if self.no_assign {
