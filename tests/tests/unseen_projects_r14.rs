@@ -13,16 +13,18 @@
 //! |---|---|---|---|---|
 //! | before | 13 (12 repositories) | 9 | 2 | 2 |
 //! | after | 13 | 10 | 2 | 1: 1ioo (below) |
+//! | after Session 33 | 13 | 11 | 2 | 0 |
 //!
 //! Gap of this round, fixed here: an output variable wired to the result of a function box with EN
 //! was written every scan with the box's last result, so Anubhab-lang/Redes's `Erro` (clamped at 0
 //! by `MOVE` under `EN := Erro < 0`) was 0 in every scan (and W3400 claimed the later network
-//! "wins every scan"); it is now written only when the box runs. Left: 1ioo/FactoryIO-Weight-Sorter
-//! chains `GT` -> `LE` by EN into a TON's IN; with EN FALSE ladderc's box keeps its last result
-//! (`crates/ladder-compiler/README.md`), matiec (OpenPLC) returns the type's initial value, so the
-//! TON stays on after the box leaves the scale and the sorter re-latches its `SendRight` coil.
-//! IEC 61131-3 leaves the result of a function that did not run open; ladderc's ST calls already
-//! take the initial value, the graphical rule is the lead's call (it changes CODESYS/TwinCAT LD too).
+//! "wins every scan"); it is now written only when the box runs. Fixed in Session 33:
+//! 1ioo/FactoryIO-Weight-Sorter chains `GT` -> `LE` by EN into a TON's IN; with EN FALSE ladderc's
+//! box kept its last result, so the TON stayed on after the box left the scale and the sorter
+//! re-latched its `SendRight` coil. A box that does not run now passes its result type's initial
+//! value on, as matiec (OpenPLC) and Schneider's EN/ENO rule ("the outputs of the function are set
+//! to 0") give it and as ladderc's ST calls already did: IEC 61131-3 gives functions no memory,
+//! so a result kept from an earlier scan is not a function's (`chain_under_en.xml`, below).
 //!
 //! The rejections: a variable the project never declares (`Height_Out` written by an output
 //! variable of kbuaaaaaa's `water_tank`, E1001 located at the element) and the blocks of an OpenPLC
@@ -276,4 +278,31 @@ fn an_output_of_a_function_box_under_en_is_written_only_when_it_runs() {
          8,80,10,30\n9,90,10,30\n10,100,10,30\n11,110,10,30\n"
     );
     assert!(!stderr.contains("W3400"), "{stderr}");
+}
+
+/// 1ioo/FactoryIO-Weight-Sorter (a repository without a licence; reproduced in
+/// `chain_under_en.xml`): a `GT` box under `EN := AtScale` feeds a TON's IN. While the box is on the
+/// scale the TON times and `SendRight` comes on; when `AtScale` drops, the box does not run and
+/// passes FALSE (BOOL's initial value) on, so the TON resets and `SendRight` drops. The output
+/// variable `Heavy`, wired straight to the box, is not written and keeps TRUE. Before: the box kept
+/// its last result TRUE, the TON stayed on and `SendRight` stayed latched.
+#[test]
+fn a_function_box_that_does_not_run_passes_its_initial_value_on() {
+    let f = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/unseen/r14/chain_under_en.xml");
+    let p = "instance0";
+    let stimulus = format!("0,{p}.AtScale,TRUE\n0,{p}.Weight,9\n6,{p}.AtScale,FALSE\n");
+    let (trace, _) = run_stimulated(
+        &f,
+        10,
+        &stimulus,
+        &format!("{p}.Heavy,{p}.Settle.ET,{p}.SendRight"),
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,instance0.Heavy,instance0.Settle.ET,instance0.SendRight\n\
+         0,0,1,T#0ms,0\n1,10,1,T#10ms,0\n2,20,1,T#20ms,0\n3,30,1,T#30ms,1\n\
+         4,40,1,T#30ms,1\n5,50,1,T#30ms,1\n\
+         6,60,1,T#0ms,0\n7,70,1,T#0ms,0\n8,80,1,T#0ms,0\n9,90,1,T#0ms,0\n"
+    );
 }

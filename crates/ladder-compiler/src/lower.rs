@@ -122,6 +122,10 @@ enum Action {
         args: Vec<(Ident, ValId)>,
         en: Option<ValId>,
         result: Operand,
+        /// With EN: a hidden variable of the result type that is never written, so it holds the
+        /// type's initial value; stored into `result` before EN is tested, so a box that does not
+        /// run passes that value on (a function has no memory).
+        initial: Option<Operand>,
         skip_label: String,
         span: Span,
     },

@@ -350,14 +350,20 @@ impl NetLowering<'_, '_> {
                     self.poisoned.insert(i);
                     return;
                 };
-                // With EN, a skipped call must leave this block's previous result, so the result
-                // gets its own variable instead of a temporary shared with other networks.
-                let result = if en.is_some() {
+                // With EN, a skipped call passes on the initial value of its result type: a
+                // function has no memory (IEC 61131-3 2.5.1: the same inputs give the same result),
+                // as matiec and Schneider's EN/ENO rule give it, and as ladderc's ST calls with EN
+                // do. A variable wired straight to the result is not written at all (see
+                // `NetLowering::en_results`). The result and that never-written initial value get
+                // their own hidden variables.
+                let (result, initial) = if en.is_some() {
                     let name = format!("__out_{}", sanitize(&node.id));
                     self.pou.declare_hidden(&name, result_ty.clone(), span);
-                    var_operand(&name, span)
+                    let init = format!("__init_{}", sanitize(&node.id));
+                    self.pou.declare_hidden(&init, result_ty.clone(), span);
+                    (var_operand(&name, span), Some(var_operand(&init, span)))
                 } else {
-                    self.alloc_temp(&result_ty)
+                    (self.alloc_temp(&result_ty), None)
                 };
                 self.actions.push(Action::Func {
                     name: Ident::new(&**type_name, *type_span),
@@ -365,6 +371,7 @@ impl NetLowering<'_, '_> {
                     args,
                     en,
                     result: result.clone(),
+                    initial,
                     skip_label: format!("__skip_{}", sanitize(&node.id)),
                     span,
                 });

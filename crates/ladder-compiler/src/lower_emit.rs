@@ -306,12 +306,17 @@ impl NetLowering<'_, '_> {
                     args,
                     en,
                     result,
+                    initial,
                     skip_label,
                     span,
                 } => {
                     let mut ops = Vec::new();
                     for (n, v) in args {
                         ops.push((n.clone(), self.operand(*v, out)));
+                    }
+                    if let Some(init) = initial {
+                        out.push(simple(Op::Ld, false, Some(init.clone()), *span));
+                        out.push(simple(Op::St, false, Some(result.clone()), *span));
                     }
                     self.skip_unless_en(*en, skip_label, *span, out);
                     emit_function(name, form, ops, *span, out);
