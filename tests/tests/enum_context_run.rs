@@ -7,6 +7,10 @@
 //!   enumerations" at each use (54 in benhar-dev/tc3-object-simple-packml).
 //! - **ExST assignment in ELSIF and UNTIL conditions** (and inside parentheses in any condition):
 //!   before, E1045 / E0100.
+//! - **Fixed values in implicit enumerations** (`(Zero, Alfa := 10, Bravo := 20, Echo)`, as CODESYS
+//!   documents them; before, E0011 at `:=`), and **implicit enumerations of PLCopen XML
+//!   interfaces** (`<type><enum>`, with `value="10"`) typed by context like ST's (before, E1051 at
+//!   `mode := Run` when two of them declare `Run`).
 //! - **FOR over an array element or structure member** (`FOR Offset[1] := 0 TO n DO`, TcUnit),
 //!   as TwinCAT compiles it; the element is chosen once, when the loop starts. Before: E1044.
 
@@ -145,6 +149,37 @@ fn implicit_enumeration_values_belong_to_their_own_pou() {
 
 /// A value that two enumerations declare, one of them implicit, where nothing tells which: one
 /// E1051 at the value (no `Type#` can be written for an implicit enumeration).
+/// implicit_values.st: `st : (Zero, Alfa := 10, Bravo := 20, Echo) := Echo` starts at 21 (a value
+/// without `:=` is the one before plus 1, as CODESYS numbers them), is set to Zero in scan 1 and to
+/// Bravo (20) in scan 2, and the CASE on it takes the matching branch; the named `E_Named : (A :=
+/// 5, B, C := 1) := B` starts at B = 6. Before: E0011 "unexpected `:=`" at `Alfa :=`.
+#[test]
+fn implicit_enumerations_take_fixed_values() {
+    let (trace, _) = run_traced(
+        &fixture("implicit_values.st"),
+        4,
+        "Main.st,Main.hit,Main.nm",
+    );
+    let col = |n: &str| column(&trace, n);
+    assert_eq!(col("Main.st"), [21.0, 0.0, 20.0, 20.0], "{trace}");
+    assert_eq!(col("Main.hit"), [41.0, 0.0, 20.0, 20.0], "{trace}");
+    assert_eq!(col("Main.nm"), [6.0; 4], "{trace}");
+}
+
+/// implicit_xml.xml: a PLCopen XML program whose interface declares `mode` as `<enum>` of Idle,
+/// Run (`value="10"`), Fault and `light` as `<enum>` of Off, Run. Its ST body writes `mode := Run;
+/// light := Run;` in scan 1 and `mode := Fault` in scan 2, and a CASE on `mode` has a `Run:` label:
+/// each `Run` is typed by its context, as in an ST file. Before: three E1051 ("a value of several
+/// enumerations").
+#[test]
+fn implicit_enumerations_of_an_xml_interface_are_typed_by_context() {
+    let (trace, _) = run_traced(&fixture("implicit_xml.xml"), 4, "i0.mode,i0.light,i0.hit");
+    let col = |n: &str| column(&trace, n);
+    assert_eq!(col("i0.mode"), [0.0, 10.0, 11.0, 11.0], "{trace}");
+    assert_eq!(col("i0.light"), [0.0, 1.0, 1.0, 1.0], "{trace}");
+    assert_eq!(col("i0.hit"), [1.0, 2.0, 3.0, 3.0], "{trace}");
+}
+
 #[test]
 fn an_implicit_enumeration_value_without_context_is_e1051() {
     assert_eq!(

@@ -128,10 +128,11 @@ pub enum TypeRef {
         /// The whole type text.
         span: Span,
     },
-    /// An inline enumeration `(red, green)`.
+    /// An inline enumeration `(red, green)`, also with fixed values `(zero, alfa := 10, bravo)` as
+    /// CODESYS documents for implicit enumerations.
     Enum {
         /// The values in order.
-        values: Vec<Ident>,
+        values: Vec<EnumValue>,
         /// From `(` to `)`.
         span: Span,
     },

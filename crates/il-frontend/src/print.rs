@@ -531,7 +531,10 @@ fn type_ref(out: &mut String, t: &TypeRef) {
                 if i > 0 {
                     out.push_str(", ");
                 }
-                out.push_str(&v.name);
+                out.push_str(&v.name.name);
+                if let Some(n) = v.value {
+                    let _ = write!(out, " := {n}");
+                }
             }
             out.push(')');
         }

@@ -164,8 +164,11 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 .map(|v| {
                     v.children_named("value")
                         .filter_map(|e| {
-                            e.attr("name")
-                                .map(|n| Ident::new(n, ctx.attr_span(e, "name")))
+                            e.attr("name").map(|n| EnumValue {
+                                name: Ident::new(n, ctx.attr_span(e, "name")),
+                                // TC6 XML: `<value name="run" value="10"/>`, a fixed value
+                                value: e.attr("value").and_then(|v| v.trim().parse().ok()),
+                            })
                         })
                         .collect()
                 })

@@ -107,7 +107,7 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
         .copied()
         .chain(instance_resources(root))
         .collect();
-    let data_types: Vec<TypeDecl> = types_el
+    let mut data_types: Vec<TypeDecl> = types_el
         .and_then(|t| t.child("dataTypes"))
         .into_iter()
         .flat_map(|d| d.children_named("dataType"))
@@ -141,8 +141,14 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     let mut methods: HashMap<String, Vec<il_frontend::st::file::PendingMethod>> = HashMap::new();
     // POUs that inherit in CODESYS's vendor data: their bodies (and methods') are not compiled
     let mut not_compiled: HashSet<String> = HashSet::new();
+    // implicit enumerations of the interfaces (`<type><enum>`) get CODESYS's internal type name, so
+    // an ST body types their values by context (`mode := Run` where two enumerations have `Run`)
+    let mut enum_namer = il_frontend::st::implicit_enums::PouNamer::new(&data_types);
     for p in &pou_els {
-        let header = pou_header(ctx, p);
+        let header = pou_header(ctx, p).map(|mut h| {
+            enum_namer.pou(&mut h);
+            h
+        });
         let mut ms = match &header {
             Some(h) => xml_methods(ctx, p, h),
             None => Vec::new(),
@@ -177,6 +183,10 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             index.pous.insert(h.name.key(), sig);
             headers.push((*p, h));
         }
+    }
+    for d in enum_namer.finish() {
+        index.types.insert(d.name.key(), d.clone());
+        data_types.push(d);
     }
     let mut configs: Vec<Configuration> = root
         .child("instances")

@@ -539,14 +539,7 @@ impl Analyzer<'_> {
             TypeRef::Enum { values, span } => {
                 let id = TypeId(self.model.types.len() as u32);
                 self.enum_counter += 1;
-                let vals: Vec<ast::EnumValue> = values
-                    .iter()
-                    .map(|v| ast::EnumValue {
-                        name: v.clone(),
-                        value: None,
-                    })
-                    .collect();
-                let (values, default) = self.enum_values_of(id, &vals, None);
+                let (values, default) = self.enum_values_of(id, values, None);
                 self.model.types.push(UserType {
                     name: format!("__ENUM_{}", self.enum_counter),
                     span: *span,

@@ -18,9 +18,7 @@
 //! a unit without inline enumerations is left as it was.
 
 use super::file::PendingBody;
-use crate::ast::{
-    CompilationUnit, EnumValue, Ident, LibraryElement, TypeDecl, TypeDef, TypeRef, VarDecl,
-};
+use crate::ast::{CompilationUnit, Ident, LibraryElement, TypeDecl, TypeDef, TypeRef, VarDecl};
 use crate::Span;
 use std::collections::{HashMap, HashSet};
 
@@ -119,6 +117,36 @@ pub fn name_all(
     out
 }
 
+/// The naming of [`name_all`] for PLCopen XML, whose POU interfaces are read one POU at a time: a
+/// [`PouNamer`] made beside the project's declared types names the implicit enumerations of each
+/// POU's variables (`<type><enum>...</enum></type>`), so their values are typed by context as in an
+/// ST file; [`PouNamer::finish`] gives the new declarations.
+pub struct PouNamer(Namer);
+
+impl PouNamer {
+    /// A namer beside the declared `types` (their names are taken).
+    pub fn new(types: &[TypeDecl]) -> Self {
+        PouNamer(Namer {
+            taken: types.iter().map(|t| t.name.key()).collect(),
+            by_span: HashMap::new(),
+            new: Vec::new(),
+        })
+    }
+
+    /// Names the implicit enumerations of `pou`'s variables.
+    pub fn pou(&mut self, pou: &mut crate::ast::Pou) {
+        let owner = pou.name.name.clone();
+        for v in pou.var_blocks.iter_mut().flat_map(|b| b.vars.iter_mut()) {
+            self.0.var(&owner, v);
+        }
+    }
+
+    /// The declarations made, in the order their variables were named.
+    pub fn finish(self) -> Vec<TypeDecl> {
+        self.0.new
+    }
+}
+
 fn has_inline(t: &TypeRef) -> bool {
     match t {
         TypeRef::Enum { .. } => true,
@@ -161,13 +189,7 @@ impl Namer {
                         self.new.push(TypeDecl {
                             name: id.clone(),
                             def: TypeDef::Enum {
-                                values: values
-                                    .iter()
-                                    .map(|v| EnumValue {
-                                        name: v.clone(),
-                                        value: None,
-                                    })
-                                    .collect(),
+                                values: values.clone(),
                                 init: None,
                             },
                             union: false,

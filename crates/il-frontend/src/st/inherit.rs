@@ -863,7 +863,13 @@ fn type_key(t: &TypeRef) -> String {
             base, lower, upper, ..
         } => format!("{}({lower}..{upper})", base.key()),
         TypeRef::Enum { values, .. } => {
-            let v: Vec<String> = values.iter().map(Ident::key).collect();
+            let v: Vec<String> = values
+                .iter()
+                .map(|v| match v.value {
+                    Some(n) => format!("{}:={n}", v.name.key()),
+                    None => v.name.key(),
+                })
+                .collect();
             format!("({})", v.join(","))
         }
         TypeRef::Ref { kind, target, .. } => format!("{kind:?} TO {}", type_key(target)),
