@@ -87,6 +87,7 @@ fn big_program(lines: usize) -> CompilationUnit {
             body,
             span: sp(0),
         })],
+        ..Default::default()
     }
 }
 

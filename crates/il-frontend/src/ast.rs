@@ -51,6 +51,10 @@ impl PartialEq for Ident {
 pub struct CompilationUnit {
     /// The `TYPE` blocks, POUs, configurations and global variable blocks, in source order.
     pub items: Vec<LibraryElement>,
+    /// The enumerations declared under `{attribute 'to_string'}` (CODESYS, TwinCAT): `TO_STRING`
+    /// of one of their values gives the value's name, not its number.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub to_string_types: Vec<Ident>,
 }
 
 /// One top-level element of a source file (IEC 61131-3 library element: data types, POU, configuration).

@@ -79,7 +79,10 @@ pub fn parse_named(
             .insert(at.min(top.items.len()), LibraryElement::Pou(pou));
     }
     il_sizeof::fold_items(&mut top.items);
-    CompilationUnit { items: top.items }
+    CompilationUnit {
+        items: top.items,
+        ..CompilationUnit::default()
+    }
 }
 
 /// A valid IEC identifier made from a file stem: other characters become `_`, a leading digit gets a `_`

@@ -551,6 +551,7 @@ fn operators_without_their_operand_in_a_built_tree() {
             ],
             span: s(0, 11),
         })],
+        ..Default::default()
     };
     let mut diags = diagnostics::Diagnostics::new();
     il_frontend::sema::analyze(&[unit], &mut diags);

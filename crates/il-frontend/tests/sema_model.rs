@@ -539,6 +539,7 @@ fn configuration_tasks_and_program_instances() {
             ast::LibraryElement::Pou(prog),
             ast::LibraryElement::Configuration(config),
         ],
+        ..Default::default()
     }];
     let mut diags = diagnostics::Diagnostics::new();
     let m = analyze(&units, &mut diags);

@@ -768,6 +768,40 @@ impl Gen<'_> {
         let widen = |v: String| cfmt!("ladderc_wstr_of_str({v})");
         let (f, t) = match (from.elementary(), to.elementary()) {
             (Some(f), Some(t)) => (f, t),
+            // an enumerated value (CODESYS/TwinCAT `TO_INT(eState)`, `TO_STRING(eState)`): its
+            // number, held as a DINT; its name for `TO_STRING` under `{attribute 'to_string'}`
+            (None, _) if matches!(from, Type::Enum(_)) => {
+                let Type::Enum(id) = from else { return None };
+                if let Some(t) = to.elementary() {
+                    return Some(convert_elementary(v, E::Dint, t));
+                }
+                let ut = self.model.user_type(*id);
+                let text = match &ut.def {
+                    il_frontend::sema::model::UserTypeDef::Enum { values, .. } if ut.to_string => {
+                        // a value outside the enumeration (written through a pointer or a
+                        // located variable) gives its number, as a non-attributed one would
+                        let mut e = cfmt!(
+                            "ladderc_str_of({}, &({}){{(int32_t)({v})}})",
+                            ctypes::type_tag(E::Dint),
+                            ctypes::elementary(E::Dint)
+                        );
+                        for (name, n) in values.iter().rev() {
+                            e = cfmt!("(({v}) == {n} ? {} : {e})", ctypes::string_value(name));
+                        }
+                        e
+                    }
+                    _ => cfmt!(
+                        "ladderc_str_of({}, &({}){{(int32_t)({v})}})",
+                        ctypes::type_tag(E::Dint),
+                        ctypes::elementary(E::Dint)
+                    ),
+                };
+                return Some(if matches!(to, Type::String { wide: true, .. }) {
+                    widen(text)
+                } else {
+                    text
+                });
+            }
             (Some(f), None) if to.is_string() && !to.is_error() => {
                 let ct = ctypes::elementary(f);
                 let text = cfmt!("ladderc_str_of({}, &({ct}){{{v}}})", ctypes::type_tag(f));

@@ -507,7 +507,10 @@ impl Body<'_, '_> {
                 Ty::Known(t) if conv.from_class == Class::Any => {
                     // TO_INT ...: the input's type, as X_TO_Y would take it
                     let ok = match &conv.to {
-                        ConvTarget::Fixed(to) => stdlib::conversion_allowed(&t, to),
+                        ConvTarget::Fixed(to) => {
+                            stdlib::conversion_allowed(&t, to)
+                                || stdlib::enum_conversion_allowed(&t, to, conv.kind)
+                        }
                         ConvTarget::BcdOfWidth => false,
                     };
                     if ok || t.is_error() {

@@ -111,6 +111,12 @@ impl Analyzer<'_> {
                 }
             }
         }
+        // `{attribute 'to_string'}` enumerations
+        for n in units.iter().flat_map(|u| u.to_string_types.iter()) {
+            if let Some(&id) = self.type_names.get(&n.key()) {
+                self.model.types[id.0 as usize].to_string = true;
+            }
+        }
         // Type bodies (structs; aliases are resolved on demand).
         let ids: Vec<TypeId> = (0..self.model.types.len() as u32).map(TypeId).collect();
         for id in ids {
@@ -344,6 +350,7 @@ impl Analyzer<'_> {
             span: d.span,
             def,
             union: d.union,
+            to_string: false,
         });
     }
 
@@ -545,6 +552,7 @@ impl Analyzer<'_> {
                     span: *span,
                     def: UserTypeDef::Enum { values, default },
                     union: false,
+                    to_string: false,
                 });
                 Type::Enum(id)
             }

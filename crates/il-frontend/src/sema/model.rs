@@ -745,6 +745,10 @@ pub struct UserType {
     /// A structure declared `UNION ... END_UNION`: its fields share one storage (C `union`).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub union: bool,
+    /// An enumeration declared under `{attribute 'to_string'}` (CODESYS, TwinCAT): `TO_STRING` /
+    /// `TO_WSTRING` of its values give their names; without it, their numbers.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub to_string: bool,
 }
 
 /// What a user data type is, resolved.

@@ -486,6 +486,19 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
     }
 }
 
+/// `TO_STRING`, `TO_WSTRING` and `TO_<integer or bit string>` of an enumerated value, as CODESYS and
+/// TwinCAT document them ("TO_STRING/TO_WSTRING for enumeration variables", "Attribute
+/// 'to_string'"): the value's number (its name under `{attribute 'to_string'}` for the strings).
+/// IEC 61131-3 defines no conversion of an enumerated type; only the overloaded `TO_` forms take one.
+pub fn enum_conversion_allowed(from: &Type, to: &Type, kind: super::model::ConversionKind) -> bool {
+    matches!(from, Type::Enum(_))
+        && kind == super::model::ConversionKind::Plain
+        && (to.is_string()
+            || to
+                .elementary()
+                .is_some_and(|e| e.is_integer() || (e.is_bit() && e != E::Bool)))
+}
+
 /// Parses a conversion function name.
 pub fn conversion(name: &str) -> Option<Conversion> {
     use super::model::ConversionKind as K;

@@ -876,7 +876,7 @@ pub fn parse_text(
     if lang == Lang::St {
         if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems) {
             diags.push(d);
-            return (CompilationUnit { items: Vec::new() }, pending, Vec::new());
+            return (CompilationUnit::default(), pending, Vec::new());
         }
     }
     let (unqualified, unreferenced, unlisted, uninitialised, conditioned, unimported, untasked);
@@ -1106,7 +1106,9 @@ pub fn parse_text(
         }
     }
     // ST: pragmas and comments read without nesting outside bodies are reported here (those inside
-    // ST bodies by the ST parser), and blanked for the declarations' reader
+    // ST bodies by the ST parser), and blanked for the declarations' reader; an `{attribute
+    // 'to_string'}` is read (the first type declared after it gets it)
+    let mut to_string_at: Vec<usize> = Vec::new();
     for pr in &problems {
         if let Problem::FlatComment(r) = pr {
             if !st_bodies
@@ -1125,7 +1127,9 @@ pub fn parse_text(
                 .any(|p| p.body.start <= r.start && r.end <= p.body.end)
             {
                 let pragma = src.get(r.clone()).unwrap_or("{}");
-                if !super::fb_init::is_call_after_init(pragma) {
+                if is_to_string(pragma) {
+                    to_string_at.push(r.end);
+                } else if !super::fb_init::is_call_after_init(pragma) {
                     diags.push(pragma_diagnostic(pragma, Span::new(file, r.start, r.end)));
                 }
                 blank(&mut text, r.clone());
@@ -1405,6 +1409,7 @@ pub fn parse_text(
     let mut local = Diagnostics::new();
     let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
     references.apply(&mut unit, &mut local);
+    mark_to_string(&mut unit, &to_string_at);
     match unclosed {
         Some(at) => diags.extend(local.into_vec().into_iter().filter(|d| {
             !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
@@ -2044,6 +2049,43 @@ fn begin_il_section(src: &str, body: std::ops::Range<usize>) -> Option<usize> {
         at += line.len();
     }
     None
+}
+
+/// Whether a pragma is `{attribute 'to_string'}` (CODESYS, TwinCAT: `TO_STRING` of the enumeration
+/// declared below it gives the value's name).
+fn is_to_string(pragma: &str) -> bool {
+    let p = pragma.to_ascii_lowercase();
+    let p = p.trim_start_matches('{').trim_end_matches('}').trim();
+    p.strip_prefix("attribute")
+        .is_some_and(|rest| rest.trim() == "'to_string'")
+}
+
+/// Gives each `{attribute 'to_string'}` ending at an offset of `ends` to the first type declared
+/// after it in `unit` (an attribute is written on the line above its TYPE).
+fn mark_to_string(unit: &mut CompilationUnit, ends: &[usize]) {
+    if ends.is_empty() {
+        return;
+    }
+    let types: Vec<&crate::ast::TypeDecl> = unit
+        .items
+        .iter()
+        .filter_map(|i| match i {
+            LibraryElement::DataTypes(ts) => Some(ts.iter()),
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    let mut marked = Vec::new();
+    for &end in ends {
+        if let Some(t) = types
+            .iter()
+            .filter(|t| t.name.span.start as usize >= end)
+            .min_by_key(|t| t.name.span.start)
+        {
+            marked.push(t.name.clone());
+        }
+    }
+    unit.to_string_types.extend(marked);
 }
 
 #[cfg(test)]

@@ -651,7 +651,7 @@ pub fn pragma_diagnostic(text: &str, span: crate::Span) -> diagnostics::Diagnost
                 ),
             )
             .at(span)
-            .with_hint("close the pragma with `}` (`{attribute 'qualified_only'}`); ladderc reads no attributes either way")
+            .with_hint("close the pragma with `}` (`{attribute 'qualified_only'}`); ladderc reads neither attribute either way")
         }
         PragmaKind::Informational => Diagnostic::new(
             code::W0301,
@@ -659,7 +659,7 @@ pub fn pragma_diagnostic(text: &str, span: crate::Span) -> diagnostics::Diagnost
             format!("pragma `{shown}` is informational and is ignored"),
         )
         .at(span)
-        .with_hint("ladderc reads no attributes; the pragma changes nothing in the compiled program"),
+        .with_hint("of the attributes ladderc reads only 'to_string' and 'call_after_init'; this pragma changes nothing in the compiled program"),
         PragmaKind::Code => Diagnostic::warning(
             code::W0300,
             format!("pragma `{shown}` holds code that does not run"),

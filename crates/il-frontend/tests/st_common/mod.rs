@@ -28,6 +28,7 @@ pub fn compile(decls: &str, pou: &str, body: &str) -> (String, String) {
                 }
                 printed = il_frontend::print::unit(&CompilationUnit {
                     items: vec![LibraryElement::Pou(p.clone())],
+                    ..Default::default()
                 });
             }
         }
