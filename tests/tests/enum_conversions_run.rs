@@ -77,3 +77,28 @@ fn to_real_of_an_enumerated_value_is_e1004() {
     );
     assert_eq!(err.matches("error[").count(), 1, "{err}");
 }
+
+/// An enumerated value beyond 32 bits, written (`Huge := 99999999999`) or counted on from the one
+/// before (`Beyond` after 2147483647): ladderc stores an enumeration as a DINT, so each is one
+/// located E1017. Before: accepted, and `Huge` ran as 1215752191.
+#[test]
+fn an_enumerated_value_beyond_32_bits_is_e1017() {
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(fixture("too_big.st"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("too_big.st:1:45: error[E1017]: enumerated value `Huge` = 99999999999 does not fit an enumeration's 32 bits"),
+        "{err}"
+    );
+    assert!(
+        err.contains(
+            "too_big.st:6:31: error[E1017]: enumerated value `Beyond` = 2147483648 does not fit"
+        ),
+        "{err}"
+    );
+    assert_eq!(err.matches("error[").count(), 2, "{err}");
+}

@@ -378,6 +378,20 @@ impl Analyzer<'_> {
             }
             let value = v.value.unwrap_or(next);
             next = value + 1;
+            // an enumeration is stored as a DINT (README "Memory model"): a value beyond it
+            // would silently become another number in the C
+            if i32::try_from(value).is_err() {
+                self.error(
+                    code::E1017,
+                    v.name.span,
+                    format!(
+                        "enumerated value `{}` = {value} does not fit an enumeration's 32 bits",
+                        v.name.name
+                    ),
+                )
+                .label("out of range")
+                .hint("ladderc stores an enumeration as a DINT: give its values from -2147483648 to 2147483647");
+            }
             self.enum_values
                 .entry(v.name.key())
                 .or_default()
