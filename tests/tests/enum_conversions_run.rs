@@ -17,6 +17,17 @@ fn fixture(name: &str) -> PathBuf {
         .join(name)
 }
 
+/// The short-format diagnostics of `ladderc check` on a fixture that must be rejected (exit 1).
+fn rejected(name: &str) -> String {
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(fixture(name))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
 /// to_string.st: `s : E_Sample` (under `{attribute 'to_string'}`, eInit := 0, eStart, eStop) is
 /// eInit in scan 0 and eStop from scan 1; `p : E_Plain := C` (no attribute; A, B := 7, C) is 8.
 /// `Pick(k)` returns eStart for k <= 1, eStop after. Each conversion, under the sanitizers.
@@ -64,13 +75,7 @@ fn a_twincat_enumeration_under_to_string_gives_names() {
 /// `TO_REAL` of an enumerated value: no vendor documents it, IEC defines none: one located E1004.
 #[test]
 fn to_real_of_an_enumerated_value_is_e1004() {
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(fixture("to_real.st"))
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(1), "{out:?}");
-    let err = String::from_utf8_lossy(&out.stderr);
+    let err = rejected("to_real.st");
     assert!(
         err.contains("to_real.st:7:6: error[E1004]: TO_REAL cannot convert E_Valve"),
         "{err}"
@@ -83,13 +88,7 @@ fn to_real_of_an_enumerated_value_is_e1004() {
 /// located E1017. Before: accepted, and `Huge` ran as 1215752191.
 #[test]
 fn an_enumerated_value_beyond_32_bits_is_e1017() {
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(fixture("too_big.st"))
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(1), "{out:?}");
-    let err = String::from_utf8_lossy(&out.stderr);
+    let err = rejected("too_big.st");
     assert!(
         err.contains("too_big.st:1:45: error[E1017]: enumerated value `Huge` = 99999999999 does not fit an enumeration's 32 bits"),
         "{err}"
