@@ -785,7 +785,11 @@ impl<'d> PouLowering<'d> {
                 self.stmt_list(body, out, diags);
                 self.loops.pop();
                 if !ends_with_transfer(out) {
-                    out.push(jump(Condition::Always, &test, span));
+                    // the jump back is located at `WHILE cond` (the loop guard of `ladderc run`
+                    // reports a loop that never ends there)
+                    let head = Span::new(span.file, span.start as usize, cond.span.end as usize);
+                    let head = if cond.span.end >= span.start { head } else { span };
+                    out.push(jump(Condition::Always, &test, head));
                 }
                 out.push(IlStmt::Label(end));
             }
