@@ -151,6 +151,20 @@ impl Body<'_, '_> {
                         };
                     }
                     let t = string_generic(f, t, &known);
+                    // IEC 61131-3 (3rd edition, implicit conversions): an integer operand beside a
+                    // real literal widens to the smallest real type it converts to implicitly (INT
+                    // to REAL, DINT to LREAL), as it does beside a real variable (`1.0 / n`)
+                    let t = if t.is_integer()
+                        && class.accepts_real_literal()
+                        && lit_args.iter().any(|(v, _)| self.lits.is_real(*v))
+                    {
+                        [Type::REAL, Type::LREAL]
+                            .into_iter()
+                            .find(|r| common_type(&[t.clone(), r.clone()]).as_ref() == Some(r))
+                            .unwrap_or(t)
+                    } else {
+                        t
+                    };
                     for (v, span) in &lit_args {
                         let name = f.name;
                         self.coerce(&Ty::Lit(*v), &t, *span, |b, from, to| {
