@@ -12,7 +12,7 @@
 //!
 //! | | units | run (or check) and behave | rejected, naming what is missing or wrong | ladderc gap |
 //! |---|---|---|---|---|
-//! | before | 22 (15 TwinCAT 3, 2 TwinCAT 2 EXP, 5 CODESYS 3 ST) | 8 | 9 | 5 |
+//! | before | 22 (15 TwinCAT 3, 2 TwinCAT 2 EXP, 5 CODESYS 3 ST) | 7 | 9 | 6 |
 //! | after | 22 | 10 | 11 | 1: methods exported one per file (below) |
 //!
 //! Gaps of this round, fixed here:
@@ -27,6 +27,9 @@
 //!   FB_NoFindings) was E1005 "DIV of DINT with a real literal", while `f / nRaw` with `f` an LREAL
 //!   variable compiled: the integer now widens as IEC 61131-3's implicit conversions allow (INT to
 //!   REAL, DINT to LREAL), beside a literal as beside a variable.
+//! - a reference initialised in its declaration (`refTarget : REFERENCE TO INT REF= nTarget;`,
+//!   SionVerhoef's FB_DeclarationShapes) was E0011 and E0001; it now starts referring to the
+//!   variable, as a pointer declared `:= ADR(x)` starts pointing at it.
 //!
 //! The rejections name: the source's own mistakes (a TON preset written `PT := 250`, E1012, IEC
 //! 61131-3 and Beckhoff's TIME constants need `T#`; prose left in a VAR block, E0011; `AND` on UINT,
@@ -36,9 +39,7 @@
 //! E1001; `FLOOR` of Tc2_Math / FloatingPointUtils, E1019) and review fixtures without the types
 //! they use (`ST_Cfg`, `FB_Op`, E1003). Left: kevin00156's export script writes each method of a
 //! block to a file of its own (`BaseStateMachine.Raise.st`, `METHOD Raise : BOOL` ...); ladderc reads
-//! methods inside their block's text, so such a file is one E0307 (statements outside any POU), and a
-//! TwinCAT reference initialised in its declaration (`r : REFERENCE TO INT REF= n;`, FB_DeclarationShapes)
-//! is one E1062 (bind it in the body with `r REF= n;`).
+//! methods inside their block's text, so such a file is one E0307 (statements outside any POU).
 //!
 //! SionVerhoef/twincat-st is MIT-licensed: its files are copied under `tests/fixtures/unseen/r16/`
 //! with the licence and a README; the other repositories have no licence, their constructs are
@@ -451,4 +452,27 @@ fn vendor_library_names_and_the_sources_own_mistakes_are_located_errors() {
         ),
         ["disk.st:3:13: error[E1004]: AND is not defined for UINT"]
     );
+}
+
+/// A reference initialised in its declaration (`REF=`, TwinCAT and CODESYS; SionVerhoef's
+/// FB_DeclarationShapes): it refers to the variable from the first scan, reads and writes go
+/// through to it. Before: E0011 ("missing `;`") and E0001 at the `=`.
+#[test]
+fn a_reference_declared_with_ref_eq_refers_to_its_variable() {
+    let tmp = tempfile::tempdir().unwrap();
+    let f = write(
+        tmp.path(),
+        "shapes.st",
+        "FUNCTION_BLOCK FB_Shapes\nVAR_INPUT\n    iEnable : INT;\nEND_VAR\nVAR_OUTPUT\n    nSeen : INT;\nEND_VAR\n\
+         VAR\n    nTarget : INT := 5;\n    refTarget : REFERENCE TO INT REF= nTarget;\nEND_VAR\n\
+         nSeen := refTarget;\nrefTarget := refTarget + iEnable;\nEND_FUNCTION_BLOCK\n\
+         PROGRAM main\nVAR a, b : FB_Shapes; END_VAR\na(iEnable := 1);\nb(iEnable := 10);\nEND_PROGRAM\n",
+    );
+    let (code, trace, stderr) = run(&[f], 3, "", "main.a.nSeen,main.a.nTarget,main.b.nSeen,main.b.nTarget", true);
+    assert_eq!(code, Some(0), "{stderr}");
+    // each instance's reference refers to its own nTarget
+    assert_eq!(column(&trace, "main.a.nSeen"), [5., 6., 7.]);
+    assert_eq!(column(&trace, "main.a.nTarget"), [6., 7., 8.]);
+    assert_eq!(column(&trace, "main.b.nSeen"), [5., 15., 25.]);
+    assert_eq!(column(&trace, "main.b.nTarget"), [15., 25., 35.]);
 }
