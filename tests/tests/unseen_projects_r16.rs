@@ -4,16 +4,17 @@
 //! **The round.** Public units no earlier round had tried, checked and run as a new user would
 //! (`ladderc run FILES --cycles N --stimulus ...`, or `check`; snapshots of 2026-12-04).
 //! TwinCAT 3: SionVerhoef/twincat-st (a bottling line of nine POUs, a filler project of three, the
-//! FB_Sequence template, eight single-block review fixtures), MONIN013/Mayfes-HDD-TwinCAT (a CiA 402
-//! drive program and its GVL). TwinCAT 2 `.EXP` (the CODESYS V2.3 export):
+//! FB_Sequence template, eight single-block review fixtures), MONIN013/Mayfes-HDD-TwinCAT (two CiA
+//! 402 drive programs with their GVLs). TwinCAT 2 `.EXP` (the CODESYS V2.3 export):
 //! ghettipetrinimarco-dev/twincat-plc (the robot queue of six exports; the encoder program with the
 //! global list). Plain `.st` of a CODESYS 3 export script: kevin00156/codesys_template_public
-//! (MC_IntegralPosition, LMOD, ValueChangeDetector, BaseStateMachine with its method files).
+//! (MC_IntegralPosition, LMOD, ValueChangeDetector, Clear, PLC_PRG, BaseStateMachine with its method
+//! files).
 //!
 //! | | units | run (or check) and behave | rejected, naming what is missing or wrong | ladderc gap |
 //! |---|---|---|---|---|
-//! | before | 22 (15 TwinCAT 3, 2 TwinCAT 2 EXP, 5 CODESYS 3 ST) | 7 | 9 | 6 |
-//! | after | 22 | 10 | 11 | 1: methods exported one per file (below) |
+//! | before | 21 (13 TwinCAT 3, 2 TwinCAT 2 EXP, 6 CODESYS 3 ST) | 5 | 10 | 6 |
+//! | after | 21 | 7 | 13 | 1: methods exported one per file (below) |
 //!
 //! Gaps of this round, fixed here:
 //! - a scan that never ends (SionVerhoef's `REPEAT ... UNTIL bLinePressureOk` purge and `WHILE
@@ -36,10 +37,13 @@
 //! E1004, Beckhoff and CODESYS document AND for BOOL and the bit strings only; globals the
 //! repository does not declare, E1001), the vendors' libraries (TwinCAT 2 `TIMESTRUCT` of
 //! TcUtilities and `SystemTaskInfoArr` of TcSystem, CODESYS SoftMotion's `AXIS_REF_SM3`, E1003 and
-//! E1001; `FLOOR` of Tc2_Math / FloatingPointUtils, E1019) and review fixtures without the types
-//! they use (`ST_Cfg`, `FB_Op`, E1003). Left: kevin00156's export script writes each method of a
+//! E1001; `FLOOR` of Tc2_Math / FloatingPointUtils, E1019; a function input of type `ANY`, a
+//! CODESYS extension, in kevin00156's Clear, which hands it to SysMem's `SysMemSet`, E1003) and review fixtures without the types
+//! they use (`ST_Cfg`, `FB_Op`, E1003; FB_AllRules' deliberate defects). Left: kevin00156's export script writes each method of a
 //! block to a file of its own (`BaseStateMachine.Raise.st`, `METHOD Raise : BOOL` ...); ladderc reads
-//! methods inside their block's text, so such a file is one E0307 (statements outside any POU).
+//! methods inside their block's text, so such a file was E0307 ("statements outside any POU",
+//! with the hint to wrap them in a PROGRAM) and a W0001; it is now one E1063 at the method's header,
+//! whose hint says where the text belongs.
 //!
 //! SionVerhoef/twincat-st is MIT-licensed: its files are copied under `tests/fixtures/unseen/r16/`
 //! with the licence and a README; the other repositories have no licence, their constructs are
@@ -108,7 +112,10 @@ fn errors(stderr: &str, strip: &Path) -> Vec<String> {
         .lines()
         .filter(|l| l.contains("error["))
         .map(|l| l.replace(&prefix, ""))
-        .map(|l| l.split_once(" (hint").map_or(l.clone(), |(h, _)| h.to_string()))
+        .map(|l| {
+            l.split_once(" (hint")
+                .map_or(l.clone(), |(h, _)| h.to_string())
+        })
         .collect()
 }
 
@@ -135,10 +142,16 @@ fn a_twincat_bottling_line_purges_caps_and_transfers_a_bottle() {
     assert_eq!(code, Some(0), "{stderr}");
     let col = |n: &str| column(&trace, n);
     // one purge, on the start edge; the valve is closed again when the action ends
-    assert_eq!(col("MAIN.fbInfeed.nPurgeCount"), [0., 1., 1., 1., 1., 1., 1., 1., 1., 1.]);
+    assert_eq!(
+        col("MAIN.fbInfeed.nPurgeCount"),
+        [0., 1., 1., 1., 1., 1., 1., 1., 1., 1.]
+    );
     assert!(col("MAIN.fbInfeed.bPurgeValve").iter().all(|&v| v == 0.0));
     // Idle (0) -> Lower (10) with the bottle -> Torque (20) with the cap -> Raise (30) -> Done (40)
-    assert_eq!(col("MAIN.fbCapper.eStep"), [0., 0., 10., 10., 20., 30., 40., 40., 40., 40.]);
+    assert_eq!(
+        col("MAIN.fbCapper.eStep"),
+        [0., 0., 10., 10., 20., 30., 40., 40., 40., 40.]
+    );
     // the head goes down in the scan after the step is entered (the CASE runs that step's branch)
     assert_eq!(col("MAIN.fbCapper.bHeadDown")[2..6], [0., 1., 1., 1.]);
     assert_eq!(col("MAIN.fbCapper.bHeadDown")[6], 0.0);
@@ -168,7 +181,10 @@ fn a_purge_that_waits_inside_the_scan_is_one_e1061_at_its_until() {
         errors(&stderr, &dir),
         ["POUs/FB_Infeed.TcPOU:32:7: error[E1061]: the scan of cycle 1 never ends: this loop went round 10000000 times"]
     );
-    assert_eq!(trace.lines().collect::<Vec<_>>(), ["cycle,time_ms,MAIN.fbInfeed.bPurgeValve", "0,0,0"]);
+    assert_eq!(
+        trace.lines().collect::<Vec<_>>(),
+        ["cycle,time_ms,MAIN.fbInfeed.bPurgeValve", "0,0,0"]
+    );
 }
 
 /// SionVerhoef's filler project as published: `fbDoseTimer(IN := TRUE, PT := 250)` is one E1012
@@ -192,20 +208,38 @@ fn the_filler_s_bare_preset_is_e1012_and_its_dose_loop_one_e1061() {
     let tmp = tempfile::tempdir().unwrap();
     let mut files = Vec::new();
     for f in files_under(&dir) {
-        let text = std::fs::read_to_string(&f).unwrap().replace("PT := 250)", "PT := T#250MS)");
-        files.push(write(tmp.path(), f.file_name().unwrap().to_str().unwrap(), &text));
+        let text = std::fs::read_to_string(&f)
+            .unwrap()
+            .replace("PT := 250)", "PT := T#250MS)");
+        files.push(write(
+            tmp.path(),
+            f.file_name().unwrap().to_str().unwrap(),
+            &text,
+        ));
     }
     let stimulus = "0,GVL_Machine.xRunRequest,1\n2,GVL_Machine.xHomeSensor,1\n\
                     4,GVL_Machine.xProductPresent,1\n";
-    let (code, trace, stderr) = run(&files, 10, stimulus, "MAIN.fbHoming.qxHomed,MAIN.fbFiller.eState", false);
+    let (code, trace, stderr) = run(
+        &files,
+        10,
+        stimulus,
+        "MAIN.fbHoming.qxHomed,MAIN.fbFiller.eState",
+        false,
+    );
     assert_eq!(code, Some(1), "{stderr}");
     assert_eq!(
         errors(&stderr, tmp.path()),
         ["FB_Filler.TcPOU:62:1: error[E1061]: the scan of cycle 5 never ends: this loop went round 10000000 times"]
     );
     // homed at cycle 2; the filler enters Dosing (10) at cycle 4 and its next scan never ends
-    assert_eq!(column(&trace, "MAIN.fbHoming.qxHomed"), [0., 0., 1., 1., 1.]);
-    assert_eq!(column(&trace, "MAIN.fbFiller.eState"), [0., 0., 0., 0., 10.]);
+    assert_eq!(
+        column(&trace, "MAIN.fbHoming.qxHomed"),
+        [0., 0., 1., 1., 1.]
+    );
+    assert_eq!(
+        column(&trace, "MAIN.fbFiller.eState"),
+        [0., 0., 0., 0., 10.]
+    );
 }
 
 /// SionVerhoef's FB_Sequence template (a PLCopen-style Execute sequence over an enumeration of
@@ -236,7 +270,10 @@ fn the_sequence_template_steps_times_out_and_resets() {
     );
     assert_eq!(code, Some(0), "{stderr}");
     let state = column(&trace, "MAIN.seq.eState");
-    assert_eq!(state[..13], [0., 10., 10., 10., 10., 20., 20., 20., 80., 0., 0., 0., 10.]);
+    assert_eq!(
+        state[..13],
+        [0., 10., 10., 10., 10., 20., 20., 20., 80., 0., 0., 0., 10.]
+    );
     assert_eq!(column(&trace, "MAIN.seq.bDone")[8..10], [0., 1.]);
     // step 1 entered at cycle 12, the timer runs from cycle 14 (10 ms cycles): 100 ms later, Error
     assert_eq!(state[23..25], [10., 90.]);
@@ -334,7 +371,10 @@ fn persistent_globals_of_a_twincat2_export_are_read_as_retain() {
     // one note for the qualifier, where it stands
     let notes: Vec<&str> = stderr.lines().filter(|l| l.contains("W1424")).collect();
     assert_eq!(notes.len(), 1, "{stderr}");
-    assert!(notes[0].contains("GLOBALS.EXP:19:12: note[W1424]"), "{stderr}");
+    assert!(
+        notes[0].contains("GLOBALS.EXP:19:12: note[W1424]"),
+        "{stderr}"
+    );
     let col = |n: &str| column(&trace, &format!("{g}.{n}"));
     assert_eq!(col("TARGETS[0].Id")[1], 1.0);
     assert_eq!(col("NEXT_ID")[1..3], [2., 2.]);
@@ -468,11 +508,33 @@ fn a_reference_declared_with_ref_eq_refers_to_its_variable() {
          nSeen := refTarget;\nrefTarget := refTarget + iEnable;\nEND_FUNCTION_BLOCK\n\
          PROGRAM main\nVAR a, b : FB_Shapes; END_VAR\na(iEnable := 1);\nb(iEnable := 10);\nEND_PROGRAM\n",
     );
-    let (code, trace, stderr) = run(&[f], 3, "", "main.a.nSeen,main.a.nTarget,main.b.nSeen,main.b.nTarget", true);
+    let (code, trace, stderr) = run(
+        &[f],
+        3,
+        "",
+        "main.a.nSeen,main.a.nTarget,main.b.nSeen,main.b.nTarget",
+        true,
+    );
     assert_eq!(code, Some(0), "{stderr}");
     // each instance's reference refers to its own nTarget
     assert_eq!(column(&trace, "main.a.nSeen"), [5., 6., 7.]);
     assert_eq!(column(&trace, "main.a.nTarget"), [6., 7., 8.]);
     assert_eq!(column(&trace, "main.b.nSeen"), [5., 15., 25.]);
     assert_eq!(column(&trace, "main.b.nTarget"), [15., 25., 35.]);
+}
+
+/// kevin00156's export script writes each method to a file of its own (`BaseStateMachine.Raise.st`:
+/// `METHOD Raise : BOOL`, its inputs, its statements). ladderc reads methods inside their block;
+/// such a file is one E1063 at the method's header (before: E0307 with the hint to wrap the text
+/// in a PROGRAM, and W0001 for its VAR_INPUT block).
+#[test]
+fn a_method_exported_alone_is_one_e1063_at_its_header() {
+    assert_eq!(
+        rejected_heads(
+            "BaseStateMachine.Raise.st",
+            "METHOD Raise : BOOL\nVAR_INPUT \n\tiErrorID : INT; \n\tiNextStep : INT;\nEND_VAR\n\n\
+             // === IMPLEMENTATION ===\nIF NOT xError THEN\n    iStep := iNextStep;\n    Raise := TRUE;\nEND_IF"
+        ),
+        ["BaseStateMachine.Raise.st:1:1: error[E1063]: a METHOD outside any FUNCTION_BLOCK"]
+    );
 }

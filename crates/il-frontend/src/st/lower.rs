@@ -788,7 +788,11 @@ impl<'d> PouLowering<'d> {
                     // the jump back is located at `WHILE cond` (the loop guard of `ladderc run`
                     // reports a loop that never ends there)
                     let head = Span::new(span.file, span.start as usize, cond.span.end as usize);
-                    let head = if cond.span.end >= span.start { head } else { span };
+                    let head = if cond.span.end >= span.start {
+                        head
+                    } else {
+                        span
+                    };
                     out.push(jump(Condition::Always, &test, head));
                 }
                 out.push(IlStmt::Label(end));
