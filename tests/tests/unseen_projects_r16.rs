@@ -21,7 +21,7 @@
 //!   fbDoseTimer.Q = FALSE` dose loop, which wait inside one scan for what only changes between
 //!   scans) hung `ladderc run` for ever; the run now stops after ten million jumps back in one scan
 //!   with one E1061 at the loop (`crates/ladderc/src/loop_guard.rs`), as a controller's watchdog
-//!   stops such a task, the trace of the cycles before kept;
+//!   stops such a task (a trace on standard output keeps the cycles before);
 //! - `VAR_GLOBAL PERSISTENT` (TwinCAT 2, CODESYS V2.3; ghettipetrinimarco's global lists) was
 //!   E0011 at the first variable; `PERSISTENT` is now read as `RETAIN`, with one note W1424;
 //! - a real literal beside an integer operand (`fResult := 1.0 / nRaw`, SionVerhoef's
