@@ -386,6 +386,20 @@ impl Body<'_, '_> {
                 st.cr.fresh = None;
                 st.cr.ty = Some(Ty::ERROR);
                 return;
+            } else if name.is("__NEW") || name.is("__DELETE") {
+                // CODESYS/TwinCAT dynamic memory: one error, the argument (a type name for
+                // `__NEW`) not looked up as a variable
+                self.a
+                    .error(
+                        code::E1062,
+                        name.span,
+                        format!("dynamic memory (`{}`) is not supported", name.name),
+                    )
+                    .label("a CODESYS/TwinCAT operator")
+                    .hint("declare the variable (or an array of them) instead: every variable of a ladderc program exists before the first scan");
+                st.cr.fresh = None;
+                st.cr.ty = Some(Ty::ERROR);
+                return;
             } else {
                 self.a
                     .error(code::E1019, name.span, format!("unknown function `{}`", name.name))
