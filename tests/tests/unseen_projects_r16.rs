@@ -5,7 +5,8 @@
 //! (`ladderc run FILES --cycles N --stimulus ...`, or `check`; snapshots of 2026-12-04).
 //! TwinCAT 3: SionVerhoef/twincat-st (a bottling line of nine POUs, a filler project of three, the
 //! FB_Sequence template, eight single-block review fixtures), MONIN013/Mayfes-HDD-TwinCAT (two CiA
-//! 402 drive programs with their GVLs). TwinCAT 2 `.EXP` (the CODESYS V2.3 export):
+//! 402 drive programs with their GVLs), becky112358/twincat (the `plc/home` test project of an ADS
+//! client: rooms, a kitchen that EXTENDS a room, enumerations, nested arrays). TwinCAT 2 `.EXP` (the CODESYS V2.3 export):
 //! ghettipetrinimarco-dev/twincat-plc (the robot queue of six exports; the encoder program with the
 //! global list). Plain `.st` of a CODESYS 3 export script: kevin00156/codesys_template_public
 //! (MC_IntegralPosition, LMOD, ValueChangeDetector, Clear, PLC_PRG, BaseStateMachine with its method
@@ -13,8 +14,8 @@
 //!
 //! | | units | run (or check) and behave | rejected, naming what is missing or wrong | ladderc gap |
 //! |---|---|---|---|---|
-//! | before | 21 (13 TwinCAT 3, 2 TwinCAT 2 EXP, 6 CODESYS 3 ST) | 5 | 10 | 6 |
-//! | after | 21 | 7 | 13 | 1: methods exported one per file (below) |
+//! | before | 22 (14 TwinCAT 3, 2 TwinCAT 2 EXP, 6 CODESYS 3 ST) | 5 | 10 | 7 |
+//! | after | 22 | 7 | 13 | 2: methods exported one per file, `TO_STRING` of an enumeration (below) |
 //!
 //! Gaps of this round, fixed here:
 //! - a scan that never ends (SionVerhoef's `REPEAT ... UNTIL bLinePressureOk` purge and `WHILE
@@ -46,7 +47,11 @@
 //! block to a file of its own (`BaseStateMachine.Raise.st`, `METHOD Raise : BOOL` ...); ladderc reads
 //! methods inside their block's text, so such a file was E0307 ("statements outside any POU",
 //! with the hint to wrap them in a PROGRAM) and a W0001; it is now one E1063 at the method's header,
-//! whose hint says where the text belongs.
+//! whose hint says where the text belongs. And becky112358's kitchen writes `description :=
+//! TO_STRING(fridge.top_shelf[0])` of an enumeration declared with `{attribute 'to_string'}`, which
+//! in TwinCAT gives the value's name (`'Broccoli'`); ladderc reads no attributes and has no
+//! conversion of an enumeration to STRING: one E1004 at the call (the rest of the project, with
+//! EXTENDS, VAR_INST in a method and a call ending `PT := TIME#30S, );`, runs).
 //!
 //! SionVerhoef/twincat-st is MIT-licensed: its files are copied under `tests/fixtures/unseen/r16/`
 //! with the licence and a README; the other repositories have no licence, their constructs are
@@ -498,6 +503,16 @@ fn vendor_library_names_and_the_sources_own_mistakes_are_located_errors() {
             "alloc.st:3:9: error[E1062]: dynamic memory (`__NEW`) is not supported",
             "alloc.st:5:1: error[E1062]: dynamic memory (`__DELETE`) is not supported"
         ]
+    );
+    // becky112358's kitchen: an enumeration's name by TwinCAT's `to_string` attribute (left)
+    assert_eq!(
+        rejected_heads(
+            "kitchen.st",
+            "{attribute 'to_string'}\nTYPE Food : (Nothing, Carrot, Broccoli); END_TYPE\n\
+             PROGRAM kitchen\nVAR shelf : Food := Food.Broccoli; description : STRING; END_VAR\n\
+             description := TO_STRING(shelf);\nEND_PROGRAM\n"
+        ),
+        ["kitchen.st:5:16: error[E1004]: TO_STRING cannot convert Food"]
     );
     // MONIN013's drive program: AND of a UINT status word
     assert_eq!(
