@@ -11,7 +11,10 @@
  * read every 256 cycles only, so the run is not slowed measurably.
  * Cycle k runs with the scan clock at k * cycle time (cycle 0 at 0 ms); time_ms is that clock.
  * Exit status: 0 on success, 2 on bad usage or a bad stimulus row (with `file:line: message` on stderr).
- * Runtime error flags (division by zero, saturated conversions) are reported on stderr at the end. */
+ * Runtime error flags (division by zero, saturated conversions) are reported on stderr at the end.
+ * Loop guard (compiled with -DLADDERC_LOOP_LIMIT=N, as `ladderc run` does): a scan that jumps back more
+ * than N times never ends; the harness writes the trace so far, then `ladderc-loop-guard FILE START END
+ * CYCLE N` on stderr, and exits with status 3. */
 #include "ladderc_rt.h"
 
 /* The default scan cycle (--cycle-ms); a program with motion defines it as its engine cycle. */
@@ -450,6 +453,19 @@ static void trace_value(const ladderc_var *var, trace_column *c, char *text, siz
     }
 }
 
+#ifdef LADDERC_LOOP_LIMIT
+uint64_t ladderc_loop_steps;
+
+void ladderc_loop_stuck(unsigned file, unsigned long start, unsigned long end) {
+    trace_flush();
+    fflush(stdout);
+    fprintf(stderr, "ladderc-loop-guard %u %lu %lu %llu %llu\n", file, start, end,
+            (unsigned long long)ladderc_cycle, (unsigned long long)(LADDERC_LOOP_LIMIT));
+    fflush(stderr);
+    exit(3);
+}
+#endif
+
 int main(int argc, char **argv) {
     unsigned long long cycles = 1;
     int64_t cycle_ns = LADDERC_DEFAULT_CYCLE_NS;
@@ -591,6 +607,9 @@ int main(int argc, char **argv) {
                 ladderc_write_var(&rows[next_row].var, &rows[next_row].value);
                 next_row++;
             }
+#ifdef LADDERC_LOOP_LIMIT
+            ladderc_loop_steps = 0;
+#endif
             ladderc_program_scan();
             trace_room();
             trace_u64(k);

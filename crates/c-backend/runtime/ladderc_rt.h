@@ -89,6 +89,23 @@ extern uint64_t ladderc_cycle;   /* the current cycle number, from 0 */
 extern const char *ladderc_null_ref_site; /* where the first NULL reference was dereferenced */
 extern const char *ladderc_mem_site;      /* where the first memory function count was clipped */
 
+/* The loop guard. Every jump back in the generated code (the end of a WHILE, REPEAT or FOR pass, an IL
+ * jump to an earlier label) passes LADDERC_LOOP_GUARD(file, start, end) with the source span of the
+ * loop. `ladderc run` compiles with -DLADDERC_LOOP_LIMIT=N: the harness (ladderc_main.c) then counts the
+ * jumps back of each scan and, past N, reports the span (`ladderc_loop_stuck`) and stops the run, as a
+ * controller's watchdog stops a task whose cycle never ends. Without the definition (a build for a
+ * controller) the guard is nothing. */
+#ifdef LADDERC_LOOP_LIMIT
+extern uint64_t ladderc_loop_steps; /* jumps back in the current scan, reset before each */
+void ladderc_loop_stuck(unsigned file, unsigned long start, unsigned long end);
+#define LADDERC_LOOP_GUARD(f, s, e) \
+    do { \
+        if (++ladderc_loop_steps > (uint64_t)(LADDERC_LOOP_LIMIT)) ladderc_loop_stuck((f), (s), (e)); \
+    } while (0)
+#else
+#define LADDERC_LOOP_GUARD(f, s, e) ((void)0)
+#endif
+
 /* The process image (defined by the generated program, sizes from the target profile). */
 extern uint8_t ladderc_I[LADDERC_I_SIZE];
 extern uint8_t ladderc_Q[LADDERC_Q_SIZE];

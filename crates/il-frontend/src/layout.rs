@@ -89,6 +89,9 @@ pub struct Layout<'s> {
     finished: bool,
     /// The last token emitted ends a declaration or opens a `VAR` block: a new declaration may start.
     decl_start: bool,
+    /// The last token emitted is a `VAR*` keyword or one of its qualifiers (`CONSTANT`, `RETAIN`):
+    /// `PERSISTENT` there is the CODESYS / TwinCAT qualifier, read as `RETAIN` (W1424).
+    var_head: bool,
     /// An unterminated comment swallowed the rest of the file: blocks it leaves open are not reported.
     swallowed: bool,
     /// Upper-case names declared outside the text (a PLCopen XML POU's interface): a keyword among them
@@ -140,6 +143,7 @@ impl<'s> Layout<'s> {
             start: Some(start),
             finished: false,
             decl_start: false,
+            var_head: false,
             swallowed: false,
             declared: Vec::new(),
             decl_brackets: 0,
@@ -185,6 +189,21 @@ impl<'s> Layout<'s> {
         if !matches!(tok, Tok::Eol | Tok::UnitStart | Tok::BodyStart) {
             self.last_end = end;
         }
+        self.var_head = matches!(
+            tok,
+            Tok::Word(
+                Word::Var
+                    | Word::VarInput
+                    | Word::VarOutput
+                    | Word::VarInOut
+                    | Word::VarTemp
+                    | Word::VarGlobal
+                    | Word::VarExternal
+                    | Word::Constant
+                    | Word::Retain
+                    | Word::NonRetain
+            )
+        );
         self.decl_start = matches!(
             tok,
             Tok::Semi
@@ -565,6 +584,25 @@ impl<'s> Layout<'s> {
         self.diags.push(d);
     }
 
+    /// `VAR_GLOBAL PERSISTENT`, `VAR RETAIN PERSISTENT` (CODESYS V2.3, TwinCAT): the vendors'
+    /// qualifier for values kept over a download and a cold start, which IEC 61131-3 does not have.
+    /// A `ladderc run` has neither, so it is read as `RETAIN` (which keeps values over a warm
+    /// restart), with one note.
+    fn persistent_read_as_retain(&mut self, s: usize, e: usize) -> Tok {
+        self.diags.push(
+            Diagnostic::new(
+                code::W1424,
+                diagnostics::Severity::Note,
+                "`PERSISTENT` (CODESYS, TwinCAT) is read as `RETAIN`",
+            )
+            .at(self.span(s, e))
+            .with_hint(
+                "a run has no download or restart: the variables keep their values from scan to scan either way",
+            ),
+        );
+        Tok::Word(Word::Retain)
+    }
+
     fn convert(&self, raw: RawToken, s: usize, e: usize) -> Tok {
         match raw {
             RawToken::Word => {
@@ -706,7 +744,14 @@ impl<'s> Layout<'s> {
                         }
                         _ => {}
                     }
-                    self.convert(raw, s, e)
+                    if matches!(raw, RawToken::Word)
+                        && self.var_head
+                        && self.src[s..e].eq_ignore_ascii_case("PERSISTENT")
+                    {
+                        self.persistent_read_as_retain(s, e)
+                    } else {
+                        self.convert(raw, s, e)
+                    }
                 }
                 Some(Err(err)) => {
                     self.swallowed |= err == LexError::UnterminatedComment;

@@ -804,6 +804,7 @@ fn run_program(
             "-g".into(),
         ];
     }
+    bopts.extra_flags.push(crate::loop_guard::c_flag());
     let exe = match c_backend::build_with(program, work.path(), &bopts) {
         Ok(e) => e,
         Err(e) => {
@@ -842,13 +843,23 @@ fn run_program(
             )
         }
     };
-    let out = timed.output;
+    let mut out = timed.output;
+    let stuck = crate::loop_guard::take(&mut out.stderr, g.sources());
     if out.success() {
         summary::set_run(summary::run_figures(run.cycles, run.cycle_ms, timed.wall));
     }
     // A closed standard output (`| head`) is no reason to skip the files asked for.
     let stdout_failed = stdio::out(&out.stdout).err();
-    program_stderr(&out, format);
+    match &stuck {
+        // the loop guard's E1061 says why the run failed: no E9201 beside it
+        Some(d) => {
+            if !out.stderr.trim().is_empty() {
+                program_stderr(&out, format);
+            }
+            emit(g.sources(), std::slice::from_ref(d), format);
+        }
+        None => program_stderr(&out, format),
+    }
     // The trace, read once for the junction summary, the plot and the PVT program.
     let text = match (out.success(), &run.trace) {
         (false, _) => String::new(),

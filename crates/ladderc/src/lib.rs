@@ -66,6 +66,7 @@ pub mod cli;
 pub mod depfile;
 pub mod encoding;
 pub mod fuzzing;
+pub mod loop_guard;
 pub mod lsp;
 pub mod motion_link;
 pub mod output;

@@ -32,6 +32,8 @@ pub struct Body<'s, 'm> {
     pub crs: BTreeMap<String, String>,
     /// Labels that some jump targets (keys).
     pub targets: HashSet<String>,
+    /// Labels already passed (keys): a jump to one of them goes back, it closes a loop.
+    placed: HashSet<String>,
     depth: usize,
     temps: usize,
     /// The current-result locals already declared, by IEC type (a short list: one per C type used).
@@ -52,6 +54,7 @@ impl<'s, 'm> Body<'s, 'm> {
             indent,
             crs: BTreeMap::new(),
             targets: HashSet::new(),
+            placed: HashSet::new(),
             depth: 0,
             temps: 0,
             cr_names: Vec::new(),
@@ -213,6 +216,7 @@ impl<'a> Gen<'a> {
             stack.push(Work::List(rest));
             match s {
                 IlStmt::Label(l) => {
+                    b.placed.insert(l.key());
                     if b.targets.contains(&l.key()) {
                         let ind = b.indent;
                         b.indent = ind.saturating_sub(1);
@@ -249,13 +253,30 @@ impl<'a> Gen<'a> {
                     labels
                         .get(&label.key())
                         .filter(|(p, _)| *p != k)
-                        .map(|x| x.1)
+                        .map(|&(p, id)| (p < k, id))
                 });
+                // a jump back closes a loop: under `ladderc run` it counts against the scan's loop
+                // budget (`LADDERC_LOOP_GUARD`, `ladderc_rt.h`), located by the jump's span
+                let back = match far {
+                    Some((earlier, _)) => earlier,
+                    None => b.placed.contains(&label.key()),
+                };
+                let guard = if back {
+                    cfmt!(
+                        "LADDERC_LOOP_GUARD({}u, {}u, {}u); ",
+                        i.span.file.0,
+                        i.span.start,
+                        i.span.end
+                    )
+                } else {
+                    String::new()
+                };
                 let stmt = match far {
-                    Some(id) => {
+                    Some((_, id)) => {
                         b.exits = true;
-                        cfmt!("{{ next_ = {id}; goto exit_; }}")
+                        cfmt!("{{ {guard}next_ = {id}; goto exit_; }}")
                     }
+                    None if back => cfmt!("{{ {guard}goto {}; }}", mangle::label(&label.name)),
                     None => cfmt!("goto {};", mangle::label(&label.name)),
                 };
                 self.conditional(b, i, *cond, &stmt);

@@ -151,6 +151,20 @@ impl Body<'_, '_> {
                         };
                     }
                     let t = string_generic(f, t, &known);
+                    // IEC 61131-3 (3rd edition, implicit conversions): an integer operand beside a
+                    // real literal widens to the smallest real type it converts to implicitly (INT
+                    // to REAL, DINT to LREAL), as it does beside a real variable (`1.0 / n`)
+                    let t = if t.is_integer()
+                        && class.accepts_real_literal()
+                        && lit_args.iter().any(|(v, _)| self.lits.is_real(*v))
+                    {
+                        [Type::REAL, Type::LREAL]
+                            .into_iter()
+                            .find(|r| common_type(&[t.clone(), r.clone()]).as_ref() == Some(r))
+                            .unwrap_or(t)
+                    } else {
+                        t
+                    };
                     for (v, span) in &lit_args {
                         let name = f.name;
                         self.coerce(&Ty::Lit(*v), &t, *span, |b, from, to| {
@@ -369,6 +383,20 @@ impl Body<'_, '_> {
                     .error(code::E1019, name.span, "`SIZEOF` in IL must follow `LD` of a variable")
                     .label("a CODESYS/TwinCAT operator on a variable")
                     .hint("load the variable right before it: `LD arr1` then `SIZEOF` (the bytes of a value are not defined)");
+                st.cr.fresh = None;
+                st.cr.ty = Some(Ty::ERROR);
+                return;
+            } else if name.is("__NEW") || name.is("__DELETE") {
+                // CODESYS/TwinCAT dynamic memory: one error, the argument (a type name for
+                // `__NEW`) not looked up as a variable
+                self.a
+                    .error(
+                        code::E1062,
+                        name.span,
+                        format!("dynamic memory (`{}`) is not supported", name.name),
+                    )
+                    .label("a CODESYS/TwinCAT operator")
+                    .hint("declare the variable (or an array of them) instead: every variable of a ladderc program exists before the first scan");
                 st.cr.fresh = None;
                 st.cr.ty = Some(Ty::ERROR);
                 return;

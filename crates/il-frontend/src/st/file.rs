@@ -1043,7 +1043,31 @@ pub fn parse_text(
         return (unit, pending, var_config.1);
     }
     let mut text = src.to_string();
-    if let (Some(first), Some(last)) = (stray.first(), stray.last()) {
+    let lone_member = stray.first().and_then(|first| {
+        let head = src.get(first.start..)?;
+        ["METHOD", "PROPERTY"].into_iter().find(|w| {
+            head.get(..w.len())
+                .is_some_and(|h| h.eq_ignore_ascii_case(w))
+                && head[w.len()..].starts_with(|c: char| c.is_whitespace())
+        })
+    });
+    if let (Some(kind), Some(first), Some(last)) = (lone_member, stray.first(), stray.last()) {
+        // a CODESYS export script's `Block.Method.st`: the method without its block (one error,
+        // its declarations and statements blanked with it, so nothing else is read from them)
+        let name_end = src[first.start..]
+            .find(['\n', ':', '('])
+            .map_or(first.end, |k| first.start + k);
+        diags.push(
+            Diagnostic::error(
+                code::E1063,
+                format!("a {} outside any FUNCTION_BLOCK", kind),
+            )
+            .at(trim_span(src, Span::new(file, first.start, name_end)))
+            .with_primary_label(format!("this {} has no block", kind.to_ascii_lowercase()))
+            .with_hint("ladderc reads a method or property inside its block: move this text before the block's END_FUNCTION_BLOCK (CODESYS export scripts write each method to a file of its own, `Block.Method.st`)"),
+        );
+        blank(&mut text, first.start..last.end);
+    } else if let (Some(first), Some(last)) = (stray.first(), stray.last()) {
         let lines = src[first.start..last.end].lines().count();
         diags.push(
             Diagnostic::error(

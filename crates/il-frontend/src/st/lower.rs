@@ -785,7 +785,15 @@ impl<'d> PouLowering<'d> {
                 self.stmt_list(body, out, diags);
                 self.loops.pop();
                 if !ends_with_transfer(out) {
-                    out.push(jump(Condition::Always, &test, span));
+                    // the jump back is located at `WHILE cond` (the loop guard of `ladderc run`
+                    // reports a loop that never ends there)
+                    let head = Span::new(span.file, span.start as usize, cond.span.end as usize);
+                    let head = if cond.span.end >= span.start {
+                        head
+                    } else {
+                        span
+                    };
+                    out.push(jump(Condition::Always, &test, head));
                 }
                 out.push(IlStmt::Label(end));
             }
@@ -1938,6 +1946,14 @@ impl<'d> PouLowering<'d> {
         diags: &mut Diagnostics,
     ) {
         let dropped = std::mem::take(&mut self.result_dropped);
+        // CODESYS/TwinCAT dynamic memory (`__NEW(BYTE)`: a type name for argument): the call is
+        // lowered without its arguments, so that sema's one E1062 is all that is said of it
+        let args: &[Arg] =
+            if (name.is("__NEW") || name.is("__DELETE")) && self.decls.pou(&name.name).is_none() {
+                &[]
+            } else {
+                args
+            };
         if !dropped
             && self
                 .decls

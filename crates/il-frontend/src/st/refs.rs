@@ -172,28 +172,43 @@ impl RefTypes {
         text: &mut Option<String>,
     ) {
         let mut k = j;
+        // `r : REFERENCE TO INT REF= x;` (TwinCAT, CODESYS): the reference starts referring to
+        // `x`, as a pointer declared `:= ADR(x)` starts pointing at it
+        let mut ref_eq = false;
         while let Some(t) = toks.get(k) {
             match t.tok {
                 Tok::Semi => return,
                 Tok::Assign => break,
+                Tok::Ident
+                    if word(src, t).eq_ignore_ascii_case("REF")
+                        && toks.get(k + 1).is_some_and(|e| e.tok == Tok::Eq) =>
+                {
+                    ref_eq = true;
+                    break;
+                }
                 _ if is_var_keyword(&word(src, t).to_ascii_uppercase()) => return,
                 _ => k += 1,
             }
         }
         let Some(assign) = toks.get(k) else { return };
-        let mut end = k + 1;
+        let from = if ref_eq { k + 2 } else { k + 1 };
+        let mut end = from;
         while toks.get(end).is_some_and(|t| t.tok != Tok::Semi) {
             end += 1;
         }
-        let Some(last) = toks.get(end - 1).filter(|_| end > k + 1) else {
+        let Some(last) = toks.get(end.wrapping_sub(1)).filter(|_| end > from) else {
             return;
         };
-        let value = src
-            .get(assign.range.end..last.range.end)
-            .unwrap_or("")
-            .trim();
+        let first_value = toks.get(from).map_or(assign.range.end, |t| t.range.start);
+        let value = src.get(first_value..last.range.end).unwrap_or("").trim();
         let value_span = Span::new(file, base + assign.range.start, base + last.range.end);
-        let first_value = toks.get(k + 1).map_or(assign.range.end, |t| t.range.start);
+        let as_address;
+        let value = if ref_eq {
+            as_address = format!("ADR({value})");
+            as_address.as_str()
+        } else {
+            value
+        };
         if let Some(target) = address_initial_value(
             value,
             Span::new(file, base + first_value, base + last.range.end),
