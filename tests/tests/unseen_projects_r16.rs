@@ -16,6 +16,7 @@
 //! |---|---|---|---|---|
 //! | before | 22 (14 TwinCAT 3, 2 TwinCAT 2 EXP, 6 CODESYS 3 ST) | 5 | 10 | 7 |
 //! | after | 22 | 7 | 13 | 2: methods exported one per file, `TO_STRING` of an enumeration (below) |
+//! | after Session 33 (lead) | 22 | 8 | 13 | 1: methods exported one per file |
 //!
 //! Gaps of this round, fixed here:
 //! - a scan that never ends (SionVerhoef's `REPEAT ... UNTIL bLinePressureOk` purge and `WHILE
@@ -49,9 +50,9 @@
 //! with the hint to wrap them in a PROGRAM) and a W0001; it is now one E1063 at the method's header,
 //! whose hint says where the text belongs. And becky112358's kitchen writes `description :=
 //! TO_STRING(fridge.top_shelf[0])` of an enumeration declared with `{attribute 'to_string'}`, which
-//! in TwinCAT gives the value's name (`'Broccoli'`); ladderc reads no attributes and has no
-//! conversion of an enumeration to STRING: one E1004 at the call (the rest of the project, with
-//! EXTENDS, VAR_INST in a method and a call ending `PT := TIME#30S, );`, runs).
+//! in TwinCAT gives the value's name (`'Broccoli'`): one E1004 at the call in this round; since the
+//! lead's `TO_STRING` of enumerations (same session) it gives the name, and the rest of the project
+//! (EXTENDS, VAR_INST in a method, a call ending `PT := TIME#30S, );`) runs.
 //!
 //! SionVerhoef/twincat-st is MIT-licensed: its files are copied under `tests/fixtures/unseen/r16/`
 //! with the licence and a README; the other repositories have no licence, their constructs are
@@ -504,16 +505,6 @@ fn vendor_library_names_and_the_sources_own_mistakes_are_located_errors() {
             "alloc.st:5:1: error[E1062]: dynamic memory (`__DELETE`) is not supported"
         ]
     );
-    // becky112358's kitchen: an enumeration's name by TwinCAT's `to_string` attribute (left)
-    assert_eq!(
-        rejected_heads(
-            "kitchen.st",
-            "{attribute 'to_string'}\nTYPE Food : (Nothing, Carrot, Broccoli); END_TYPE\n\
-             PROGRAM kitchen\nVAR shelf : Food := Food.Broccoli; description : STRING; END_VAR\n\
-             description := TO_STRING(shelf);\nEND_PROGRAM\n"
-        ),
-        ["kitchen.st:5:16: error[E1004]: TO_STRING cannot convert Food"]
-    );
     // MONIN013's drive program: AND of a UINT status word
     assert_eq!(
         rejected_heads(
@@ -523,6 +514,24 @@ fn vendor_library_names_and_the_sources_own_mistakes_are_located_errors() {
         ),
         ["disk.st:3:13: error[E1004]: AND is not defined for UINT"]
     );
+}
+
+/// becky112358's kitchen: `TO_STRING` of an enumeration declared under TwinCAT's `{attribute
+/// 'to_string'}` gives the value's name (Session 33, lead; `tests/tests/enum_conversions_run.rs`).
+/// Before: one E1004 "TO_STRING cannot convert Food".
+#[test]
+fn the_kitchen_names_its_shelf_with_to_string() {
+    let tmp = tempfile::tempdir().unwrap();
+    let f = write(
+        tmp.path(),
+        "kitchen.st",
+        "{attribute 'to_string'}\nTYPE Food : (Nothing, Carrot, Broccoli); END_TYPE\n\
+         PROGRAM kitchen\nVAR shelf : Food := Food.Broccoli; description : STRING; END_VAR\n\
+         description := TO_STRING(shelf);\nEND_PROGRAM\n",
+    );
+    let (code, trace, stderr) = run(&[f], 1, "", "kitchen.description", true);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(trace.lines().nth(1), Some("0,0,\"Broccoli\""), "{trace}");
 }
 
 /// A reference initialised in its declaration (`REF=`, TwinCAT and CODESYS; SionVerhoef's
