@@ -345,6 +345,22 @@ const KNOWN: &[Known] = &[
                  output lost. Without the alias (INST.W) both agree. Found by il_gen's seed 190.",
     },
     Known {
+        program: "r15_codesys_add_ctu",
+        columns: &["P.C1.CV", "P.ICOUNT"],
+        stops_in: None,
+        reason: "counter CV limits, as in counter_limits (IEC 61131-3 ed. 2 2.5.2.3.3: CTU counts while \
+                 CV < PVmax). CODESYS's help example: C1 (PV 5) counts on to 6 ... in ladderc, sticks at 5 \
+                 in matiec until the reset; Q, the ADD network and the call's `Q =>`/`CV =>` agree.",
+    },
+    Known {
+        program: "r15_panasonic_calc",
+        columns: &["P.CTU1.CV", "P.CTU2.CV", "P.ICV1", "P.ICV2"],
+        stops_in: None,
+        reason: "counter CV limits, as in counter_limits: the two counters called by CALC and CALCN \
+                 count past PV = 3 in ladderc and stop at 3 in matiec. Which counter runs in which scan \
+                 (CALC on TRUE, CALCN on FALSE) and their Q agree.",
+    },
+    Known {
         program: "lint_compare_literal",
         columns: &["INST.G"],
         stops_in: None,
