@@ -10,7 +10,9 @@
 //!   bits, set/reset coils, two TONs), `Tele` (LD, a reversing starter), `Tapparella` (LD, a roller
 //!   shutter), `FDB_TEMP_SR` (a project without POUs: checks, runs nothing);
 //!   codermery/OpenPLC-with-julide `gate` (LD as the OpenPLC Editor v4 writes it); matiec's own
-//!   `tests/SFC_TEST.xml` (tc6 v1, SFC with simultaneous and selection branches, P and N actions).
+//!   `tests/SFC_TEST.xml` (tc6 v1, SFC with simultaneous and selection branches, P and N actions);
+//!   elian15122000/TINF19C-PLCOpen-Editor's test project `plc_valid.xml` (FBD, a variable named
+//!   `Input/OutputVariable`: rejected, located).
 //! - IL, after vendor manuals and IL teaching pages (reproduced, no licence to copy): CODESYS's help
 //!   "Programming in IL" (ADD network, CTU call), KVPAC's Beremiz manual (`LD A / ANDN B / ST C`),
 //!   Panasonic FPWIN Pro's CALC/CALCN pages, Fuji Electric's SPF manual (a label on a line of its
@@ -22,8 +24,8 @@
 //!
 //! | | units | run and behave | rejected, naming what is missing | ladderc gap |
 //! |---|---|---|---|---|
-//! | before | 20 (13 PLCopen XML, 7 IL) | 20 | 0 | 1: a double coil in one network went unreported |
-//! | after | 20 | 20 | 0 | 0 (W1423 below) |
+//! | before | 21 (14 PLCopen XML, 7 IL) | 20 | 1: a name that is no identifier | 1: a double coil in one network went unreported |
+//! | after | 21 | 20 | 1 (the error now names the bad name, at it) | 0 (W1423 below) |
 //!
 //! matiec side by side (`scripts/matiec-diff.sh`, iec2c 6bb2c33): of the seven IL programs five
 //! agree in every value; two differ only in counter CV past PV, the documented counter-limit row
@@ -265,4 +267,42 @@ fn edge_marks_on_counter_inputs_count_presses_and_releases() {
     assert_eq!(at("rising_q")[9], 1.0);
     assert_eq!(at("falling_q")[7], 1.0);
     assert_eq!([rise[17], fall[17], at("rising_q")[17]], [0.0, 0.0, 0.0]);
+}
+
+/// elian15122000/TINF19C-PLCOpen-Editor's test project `plc_valid.xml` (an FBD program written by
+/// Beremiz's editor) names a variable `Input/OutputVariable`, which no IEC 61131-3 compiler takes:
+/// rejected, exit 1, each error located at the name, the declaration's saying which name is wrong
+/// (before: "variable without a valid `name`" at the element).
+#[test]
+fn a_variable_name_that_is_not_an_identifier_is_named_where_it_is_declared() {
+    let src = r#"<?xml version='1.0' encoding='utf-8'?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="Unknown" productName="Unnamed" productVersion="1" creationDateTime="2021-04-23T13:43:33"/>
+  <contentHeader name="Unnamed"><coordinateInfo><fbd><scaling x="10" y="10"/></fbd><ld><scaling x="10" y="10"/></ld><sfc><scaling x="10" y="10"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Connections" pouType="program">
+      <interface><localVars>
+        <variable name="InputVariable"><type><DINT/></type></variable>
+        <variable name="Input/OutputVariable"><type><DINT/></type></variable>
+        <variable name="OutputVariable"><type><DINT/></type></variable>
+      </localVars></interface>
+      <body><FBD>
+        <inVariable localId="1" height="30" width="90"><position x="170" y="70"/><connectionPointOut><relPosition x="90" y="20"/></connectionPointOut><expression>InputVariable</expression></inVariable>
+        <inOutVariable localId="2" height="30" width="90"><position x="350" y="130"/><connectionPointIn><relPosition x="0" y="20"/><connection refLocalId="1"/></connectionPointIn><connectionPointOut><relPosition x="90" y="20"/></connectionPointOut><expression>Input/OutputVariable</expression></inOutVariable>
+        <outVariable localId="3" height="30" width="90"><position x="550" y="70"/><connectionPointIn><relPosition x="0" y="20"/><connection refLocalId="2"/></connectionPointIn><expression>OutputVariable</expression></outVariable>
+      </FBD></body>
+    </pou></pous></types>
+  <instances><configurations><configuration name="Config0"><resource name="Res0">
+    <task name="task0" priority="0" interval="T#20ms"><pouInstance name="instance0" typeName="Connections"/></task>
+  </resource></configuration></configurations></instances>
+</project>
+"#;
+    let heads = common::rejected_heads("plc_valid.xml", src);
+    assert_eq!(
+        heads,
+        [
+            "plc_valid.xml:9:25: error[E3013]: variable name `Input/OutputVariable` is not an IEC 61131-3 identifier (letters, digits and `_`, not starting with a digit) [POU `Connections`]",
+            "plc_valid.xml:14:261: error[E3011]: `Input/OutputVariable` is not a variable, direct address or literal [POU `Connections`, network 1, localId 2]",
+        ]
+    );
 }
