@@ -361,6 +361,19 @@ const KNOWN: &[Known] = &[
                  (CALC on TRUE, CALCN on FALSE) and their Q agree.",
     },
     Known {
+        program: "r15_sfc_final_scan",
+        columns: &["P.A_ENTRIES", "P.A_SCANS", "P.B_SCANS", "P.LAST_A"],
+        stops_in: None,
+        reason: "SFC action control. IEC 61131-3's action control executes an action's body once more \
+                 after its Q falls (the final scan), so each N action counts one scan more per \
+                 activation in ladderc (A_SCANS, B_SCANS; LAST_A keeps the tick of A's final scan); \
+                 matiec runs an N action only while its step is active. And the initial step becomes \
+                 active in the first scan: the standard's ACTION_CONTROL takes P through an R_TRIG, \
+                 whose memory starts FALSE, so A's P action runs in scan 0 in ladderc (A_ENTRIES one \
+                 more throughout); matiec runs it only when the chart comes back to A. The steps, the \
+                 transitions and B's P action (B_ENTRIES) agree.",
+    },
+    Known {
         program: "lint_compare_literal",
         columns: &["INST.G"],
         stops_in: None,

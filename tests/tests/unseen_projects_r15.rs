@@ -34,7 +34,11 @@
 //! reads R as the IL operator) and a parenthesised list nested in another whose inner list goes past
 //! its operand ("Data type mismatch"). iec2c also crashed (SIGSEGV) on the first version of
 //! `r15_plc3000_parens`, which declared nine BOOLs in two declarations (`I0, I1, I2, I3, I4 : BOOL;`),
-//! as round 13 saw with three TONs; the corpus file declares one name a declaration.
+//! as round 13 saw with three TONs; the corpus file declares one name a declaration. matiec's
+//! `SFC_TEST.xml` chart, written as textual SFC, agrees with matiec in every value (live only: GPL);
+//! a chart of our own with the same constructs (`r15_sfc_branches`) does too, and
+//! `r15_sfc_final_scan` documents the two SFC rows where ladderc follows the standard's action
+//! control and matiec does not (an N action's final scan, the initial step's P action in scan 0).
 //!
 //! The gap, fixed here: Salnet86's `Tapparella` writes `LAMPADA1` from two coils of one network (the
 //! down rung's lamp names the up lamp; `LAMPADA2` is declared and never written). The coil written
