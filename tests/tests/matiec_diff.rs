@@ -345,6 +345,35 @@ const KNOWN: &[Known] = &[
                  output lost. Without the alias (INST.W) both agree. Found by il_gen's seed 190.",
     },
     Known {
+        program: "r15_codesys_add_ctu",
+        columns: &["P.C1.CV", "P.ICOUNT"],
+        stops_in: None,
+        reason: "counter CV limits, as in counter_limits (IEC 61131-3 ed. 2 2.5.2.3.3: CTU counts while \
+                 CV < PVmax). CODESYS's help example: C1 (PV 5) counts on to 6 ... in ladderc, sticks at 5 \
+                 in matiec until the reset; Q, the ADD network and the call's `Q =>`/`CV =>` agree.",
+    },
+    Known {
+        program: "r15_panasonic_calc",
+        columns: &["P.CTU1.CV", "P.CTU2.CV", "P.ICV1", "P.ICV2"],
+        stops_in: None,
+        reason: "counter CV limits, as in counter_limits: the two counters called by CALC and CALCN \
+                 count past PV = 3 in ladderc and stop at 3 in matiec. Which counter runs in which scan \
+                 (CALC on TRUE, CALCN on FALSE) and their Q agree.",
+    },
+    Known {
+        program: "r15_sfc_final_scan",
+        columns: &["P.A_ENTRIES", "P.A_SCANS", "P.B_SCANS", "P.LAST_A"],
+        stops_in: None,
+        reason: "SFC action control. IEC 61131-3's action control executes an action's body once more \
+                 after its Q falls (the final scan), so each N action counts one scan more per \
+                 activation in ladderc (A_SCANS, B_SCANS; LAST_A keeps the tick of A's final scan); \
+                 matiec runs an N action only while its step is active. And the initial step becomes \
+                 active in the first scan: the standard's ACTION_CONTROL takes P through an R_TRIG, \
+                 whose memory starts FALSE, so A's P action runs in scan 0 in ladderc (A_ENTRIES one \
+                 more throughout); matiec runs it only when the chart comes back to A. The steps, the \
+                 transitions and B's P action (B_ENTRIES) agree.",
+    },
+    Known {
         program: "lint_compare_literal",
         columns: &["INST.G"],
         stops_in: None,

@@ -326,7 +326,18 @@ pub fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
         .map(|(n, r)| (n.trim(), r))
         .filter(|(n, _)| values::is_ident(n))
     else {
-        ctx.error(code::E3013, span, "variable without a valid `name`");
+        match name.map(|(n, r)| (n.trim(), r)) {
+            // a name that is there but not an identifier (`Input/OutputVariable`, written by an
+            // editor that does not check it): say which, at the attribute
+            Some((bad, (start, end))) if !bad.is_empty() => ctx.error(
+                code::E3013,
+                ctx.span(start, end),
+                format!(
+                    "variable name `{bad}` is not an IEC 61131-3 identifier (letters, digits and `_`, not starting with a digit)"
+                ),
+            ),
+            _ => ctx.error(code::E3013, span, "variable without a valid `name`"),
+        }
         return None;
     };
     let name = Ident::new(name, ctx.span(start, end));

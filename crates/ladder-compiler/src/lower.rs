@@ -21,7 +21,8 @@
 //!
 //! ST written inside the body (expressions in contacts and input variables, CODESYS EXECUTE boxes)
 //! is lowered by the child module `lower_st` (`lower_st.rs`); blocks are built by `lower_block`
-//! (`lower_block.rs`) and a lowered network becomes IL in `lower_emit` (`lower_emit.rs`).
+//! (`lower_block.rs`), a lowered network becomes IL in `lower_emit` (`lower_emit.rs`) and double
+//! coils are reported by `lower_double` (`lower_double.rs`).
 //!
 //! Invariants: every emitted instruction carries the span of the XML element it comes from; a network
 //! that cannot be lowered is reported (with POU, network and localId) and skipped, the others are still
@@ -46,6 +47,8 @@ use std::collections::{BTreeMap, BinaryHeap};
 
 #[path = "lower_block.rs"]
 mod lower_block;
+#[path = "lower_double.rs"]
+mod lower_double;
 #[path = "lower_emit.rs"]
 mod lower_emit;
 #[path = "lower_order.rs"]
@@ -240,6 +243,7 @@ impl<'i> BodyLowering<'i> {
     pub fn lower(&mut self, ctx: &mut Ctx, g: &Graph) -> Vec<IlStmt> {
         self.check_jumps(ctx, g);
         self.check_double_writes(ctx, g);
+        self.check_double_writes_in_networks(ctx, g);
         let mut pre = self.expressions(ctx, g);
         // About one statement per element in a ladder body: sized once instead of doubling (with
         // 10,000 rungs the list grows to 9 MB).
@@ -292,7 +296,7 @@ impl<'i> BodyLowering<'i> {
 
     /// Whether node `i` is wired straight to a result pin of a function box (no instance) whose EN
     /// is wired.
-    fn from_function_under_en(g: &Graph, i: usize) -> bool {
+    pub(super) fn from_function_under_en(g: &Graph, i: usize) -> bool {
         g.nodes[i]
             .input
             .iter()
@@ -309,79 +313,6 @@ impl<'i> BodyLowering<'i> {
                 }
                 _ => false,
             })
-    }
-
-    /// W3400 when one variable (or %Q address) is assigned by plain coils or output variables of two
-    /// networks: the later network silently overrides the earlier one every scan ("double coil").
-    /// Set/reset coils are left alone (latching from several rungs is the normal use).
-    fn check_double_writes(&self, ctx: &mut Ctx, g: &Graph) {
-        let mut first: HashMap<String, (usize, usize)> = HashMap::default();
-        let mut warned: HashSet<String> = HashSet::default();
-        for (net, nodes) in g.networks.iter().enumerate() {
-            for &i in nodes {
-                let (var, span) = match &g.nodes[i].kind {
-                    Kind::Coil {
-                        var,
-                        var_span,
-                        storage: Storage::None,
-                        ..
-                    } => (var, *var_span),
-                    // written only when a function box under EN runs (see
-                    // `NetLowering::en_results`): it overrides nothing while the box is off
-                    Kind::OutVar { .. } if Self::from_function_under_en(g, i) => continue,
-                    Kind::OutVar {
-                        expr, expr_span, ..
-                    } => (expr, *expr_span),
-                    _ => continue,
-                };
-                // Blanks dropped, ASCII upper-cased: one pass, one allocation.
-                let mut key = String::with_capacity(var.len());
-                key.extend(
-                    var.chars()
-                        .filter(|c| !c.is_whitespace())
-                        .map(|c| c.to_ascii_uppercase()),
-                );
-                if key.is_empty() {
-                    continue;
-                }
-                match first.get(&key) {
-                    None => {
-                        first.insert(key, (net, i));
-                    }
-                    Some(&(n0, i0)) if n0 != net && !warned.contains(&key) => {
-                        warned.insert(key);
-                        let at = Where {
-                            pou: self.pou.clone(),
-                            network: Some(net + 1),
-                            local_id: Some(g.nodes[i].id.to_string()),
-                        };
-                        let first_span = match &g.nodes[i0].kind {
-                            Kind::Coil { var_span, .. } => *var_span,
-                            Kind::OutVar { expr_span, .. } => *expr_span,
-                            _ => span,
-                        };
-                        ctx.report(
-                            Diagnostic::warning(
-                                code::W3400,
-                                format!(
-                                    "`{}` is written by network {} (localId {}) and again by network {}; the later one wins every scan",
-                                    var.trim(),
-                                    n0 + 1,
-                                    g.nodes[i0].id,
-                                    net + 1
-                                ),
-                            )
-                            .at(span)
-                            .with_primary_label("written again here")
-                            .with_label(first_span, "first written here")
-                            .with_hint("drive it from one network (OR the conditions), or use set/reset coils")
-                            .with_xml(at.xml()),
-                        );
-                    }
-                    _ => {}
-                }
-            }
-        }
     }
 
     /// E3015 for every jump whose label no `<label>` of the body defines.
