@@ -1144,7 +1144,14 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
         blocks
             .iter()
             .flat_map(|b| b.vars.iter())
-            .any(|v| matches!(&v.ty, TypeRef::Named(t) if library_type(t)))
+            .any(|v| match &v.ty {
+                TypeRef::Named(t) => library_type(t),
+                // `fbPower : ARRAY [1..4] OF MC_Power;`, `axes : ARRAY [1..4] OF AXIS_REF;`
+                TypeRef::Array { element, .. } => {
+                    matches!(element.as_ref(), TypeRef::Named(t) if library_type(t))
+                }
+                _ => false,
+            })
     })
 }
 

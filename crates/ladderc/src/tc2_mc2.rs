@@ -252,8 +252,13 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                         if let Some(value) = scale {
                             let axis = list.iter().find(|a| a.name.key() == "AXIS");
                             if let Some(axis) = axis {
-                                let (decls, code) =
-                                    crate::tc2_override::set_override(instance, &axis.value, value);
+                                let declared = cx.types.vars.get(&instance.base.key());
+                                let (decls, code) = crate::tc2_override::set_override(
+                                    instance,
+                                    declared,
+                                    &axis.value,
+                                    value,
+                                );
                                 for d in decls {
                                     if !hidden.iter().any(|h| h.name.key() == d.name.key()) {
                                         hidden.push(d);

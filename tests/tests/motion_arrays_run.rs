@@ -1,0 +1,140 @@
+//! Motion blocks as real projects hold them (issue #13), run end to end through `ladderc run` (C
+//! built with the sanitizers): arrays of motion block instances called in a FOR loop with a
+//! variable index (`fbPower[i](Axis := axes[i], ...)`, param-passing's lowering of an element of
+//! an array of instances), motion blocks inside a function block that is itself in an array, and
+//! each element its own block state bound to the axis it is called with, within that axis's
+//! limits. The fixtures under `fixtures/motion_arrays/` are written for these tests (README there).
+
+mod common;
+use common::{column, run_traced_files};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/motion_arrays")
+        .join(rel)
+}
+
+const EPS: f64 = 1e-9;
+
+/// Every value of `v` within `[lo, hi]` (with rounding room).
+fn within(v: &[f64], lo: f64, hi: f64) -> bool {
+    v.iter().all(|&x| x >= lo - 1e-6 && x <= hi + 1e-6)
+}
+
+/// The largest magnitude of `v`.
+fn peak(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |m, &x| m.max(x.abs()))
+}
+
+/// `fbPower : ARRAY[1..4] OF Tc2_MC2.MC_Power`, `fbMove : ARRAY[0..2] OF MC_MoveAbsolute` and
+/// `fbMod : ARRAY[1..1] OF MC_MoveModulo` over `axes : ARRAY[1..4] OF AXIS_REF`, called in FOR
+/// loops (`fbMove[i - 1](Axis := axes[i], ...)`): each element moves its own axis to its own
+/// target, at most at that axis's velocity and acceleration (500 mm/s and 10000 mm/s² asked),
+/// with MC_Power's `Override` of its own element (50 % on the third axis); Done and Busy read as
+/// `fbMove[i - 1].Done` belong to that element.
+#[test]
+fn arrays_of_motion_blocks_each_drive_their_own_axis() {
+    let watch = [
+        "MAIN.nDone",
+        "MAIN.aDone[1]",
+        "MAIN.aDone[2]",
+        "MAIN.aDone[3]",
+        "MAIN.aBusy[1]",
+        "MAIN.aBusy[2]",
+        "MAIN.bModDone",
+        "MAIN.fbMove[1].Done",
+    ]
+    .into_iter()
+    .map(String::from)
+    .chain(["Lift", "Slide", "Gripper", "Table"].iter().flat_map(|a| {
+        ["position", "velocity", "acceleration"]
+            .iter()
+            .map(move |q| format!("axis.{a}.{q}"))
+    }))
+    .collect::<Vec<_>>()
+    .join(",");
+    let (trace, stderr) = run_traced_files(&[&fixture("Arrays.st")], 150, &watch);
+    assert!(!stderr.contains("error"), "{stderr}");
+    let col = |a: &str, q: &str| column(&trace, &format!("axis.{a}.{q}"));
+    let last = |a: &str| *col(a, "position").last().unwrap();
+    // each axis at its own element's target
+    assert!((last("Lift") - 40.0).abs() < 1e-6, "{}", last("Lift"));
+    assert!((last("Slide") + 30.0).abs() < 1e-6, "{}", last("Slide"));
+    assert!((last("Gripper") - 25.0).abs() < 1e-6, "{}", last("Gripper"));
+    // MC_MoveModulo to 270 deg in MC_Negative_Direction from 0: 90 deg backward
+    assert!((last("Table") - 270.0).abs() < 1e-6, "{}", last("Table"));
+    assert!(col("Table", "velocity").iter().all(|&v| v <= 0.0));
+    // the limits of each axis hold; the Gripper's element has 50 % override: 40 of its 80 mm/s
+    for (a, v, acc) in [
+        ("Lift", 100.0, 1000.0),
+        ("Slide", 50.0, 500.0),
+        ("Gripper", 40.0, 800.0),
+        ("Table", 180.0, 900.0),
+    ] {
+        assert!(within(&col(a, "velocity"), -v, v), "{a} velocity");
+        assert!((peak(&col(a, "velocity")) - v).abs() < EPS, "{a} peak");
+        assert!(within(&col(a, "acceleration"), -acc, acc), "{a} acceleration");
+    }
+    // the Slide accelerates at its 250 and brakes at its 500
+    assert!(peak(&col("Slide", "acceleration")) <= 500.0 + 1e-6);
+    // Done per element, when its axis arrives: Lift (40 mm at 100) first, Slide (30 at 50) last
+    let done = |k: usize| column(&trace, &format!("MAIN.aDone[{k}]"));
+    let first = |v: &[f64]| v.iter().position(|&x| x == 1.0).unwrap();
+    let lift_at = col("Lift", "position")
+        .iter()
+        .position(|&p| (p - 40.0).abs() < 1e-9)
+        .unwrap();
+    assert!(first(&done(1)) >= lift_at && first(&done(1)) <= lift_at + 1);
+    assert!(first(&done(1)) < first(&done(3)) && first(&done(3)) < first(&done(2)));
+    assert_eq!(column(&trace, "MAIN.fbMove[1].Done"), done(2));
+    // Busy while its own axis moves, not another's
+    let busy2 = column(&trace, "MAIN.aBusy[2]");
+    let busy1 = column(&trace, "MAIN.aBusy[1]");
+    let k = first(&done(1)) + 2;
+    assert_eq!((busy1[k], busy2[k]), (0.0, 1.0));
+    assert_eq!(column(&trace, "MAIN.nDone").last(), Some(&3.0));
+    assert_eq!(column(&trace, "MAIN.bModDone").last(), Some(&1.0));
+}
+
+/// `stations : ARRAY[1..3] OF FB_Station`, each FB_Station with its own `AXIS_REF` and PLCopen
+/// `MC_Power` / `MC_MoveAbsolute` (spelled `EnablePositive`), linked `MAIN.stations[k].Axis` in
+/// the axes file: each station's axis goes to 15 k mm when its start comes (20 cycles apart), at
+/// its own limits (1000 mm/s asked).
+#[test]
+fn motion_blocks_in_an_array_of_function_blocks_one_axis_each() {
+    let watch = "MAIN.nInPos,MAIN.stations[2].bMoving,MAIN.stations[2].bInPos,\
+                 axis.Feeder.position,axis.Feeder.velocity,axis.Press.position,\
+                 axis.Press.velocity,axis.Press.acceleration,axis.Stacker.position,\
+                 axis.Stacker.velocity";
+    let (trace, stderr) = run_traced_files(&[&fixture("Stations.st")], 200, watch);
+    assert!(!stderr.contains("error"), "{stderr}");
+    let pos = |a: &str| column(&trace, &format!("axis.{a}.position"));
+    let vel = |a: &str| column(&trace, &format!("axis.{a}.velocity"));
+    let moved = |a: &str| pos(a).iter().position(|&p| p != 0.0).unwrap();
+    // each starts with its own station's start: 0, 20, 40 cycles
+    assert!(moved("Feeder") < 3);
+    assert!((20..23).contains(&moved("Press")), "{}", moved("Press"));
+    assert!((40..43).contains(&moved("Stacker")), "{}", moved("Stacker"));
+    for (a, target, v) in [("Feeder", 15.0, 60.0), ("Press", 30.0, 30.0), ("Stacker", 45.0, 90.0)]
+    {
+        assert!((pos(a).last().unwrap() - target).abs() < 1e-6, "{a}");
+        assert!(within(&vel(a), 0.0, v), "{a} velocity");
+        assert!((peak(&vel(a)) - v).abs() < EPS, "{a} peak");
+    }
+    // the Press brakes at its 150 mm/s², accelerates at its 300
+    let acc = column(&trace, "axis.Press.acceleration");
+    assert!(within(&acc, -150.0, 300.0));
+    assert!(acc.contains(&-150.0) && acc.contains(&300.0));
+    // station 2's Busy and Done are its own
+    let busy = column(&trace, "MAIN.stations[2].bMoving");
+    let done = column(&trace, "MAIN.stations[2].bInPos");
+    let press = pos("Press");
+    let arrived = press.iter().position(|&p| (p - 30.0).abs() < 1e-9).unwrap();
+    assert_eq!(busy[moved("Press")], 1.0);
+    assert_eq!(busy[arrived + 2], 0.0);
+    assert_eq!(done[arrived + 2], 1.0);
+    assert_eq!(done[moved("Press")], 0.0);
+    assert_eq!(column(&trace, "MAIN.nInPos").last(), Some(&3.0));
+}
