@@ -138,3 +138,108 @@ fn motion_blocks_in_an_array_of_function_blocks_one_axis_each() {
     assert_eq!(done[moved("Press")], 0.0);
     assert_eq!(column(&trace, "MAIN.nInPos").last(), Some(&3.0));
 }
+
+/// The travel of a modulo axis from its wrapped positions (each step taken the short way).
+fn unwrapped(pos: &[f64], period: f64) -> Vec<f64> {
+    let mut out = vec![pos[0]];
+    for w in pos.windows(2) {
+        let d = (w[1] - w[0] + period / 2.0).rem_euclid(period) - period / 2.0;
+        out.push(out.last().unwrap() + d);
+    }
+    out
+}
+
+/// MC_MoveModulo queued (Infosys, Tc2_MC2 > MC_MoveModulo: a start with MC_Buffered is a start
+/// from standstill): m2 (MC_Buffered, 180 deg) issued while m1 turns to 90 deg starts where m1
+/// ends and goes 90 deg further (before: measured from where the axis was when m2 was issued, it
+/// stopped at 262 deg); m3 (MC_BlendingLow, 405 deg: one full turn and 45) blends onto m2 at 180
+/// deg without stopping and ends at 45 deg after 585 deg; the axis's 360 deg/s (720 asked) and
+/// 1800 deg/s² hold. m4 asks queued full turns the shortest way: ErrorID 25, no motion.
+#[test]
+fn a_buffered_mc_move_modulo_measures_from_the_end_of_the_queue() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Buffered.st")],
+        400,
+        "MAIN.m1.Done,MAIN.m2.Done,MAIN.m2.Busy,MAIN.m2.Active,MAIN.m3.Done,MAIN.m3.Active,\
+         MAIN.m4.Error,MAIN.m4.ErrorID,axis.T.position,axis.T.velocity,axis.T.acceleration",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let pos = column(&trace, "axis.T.position");
+    let vel = column(&trace, "axis.T.velocity");
+    let travel = unwrapped(&pos, 360.0);
+    let first = |c: &str| {
+        column(&trace, c)
+            .iter()
+            .position(|&x| x == 1.0)
+            .unwrap_or_else(|| panic!("{c} never rises"))
+    };
+    // m1 ends at 90, at standstill (m2 may start within the same cycle: the engine runs into
+    // the successor); m2 is Busy (queued) before, Active only after
+    let m1 = first("MAIN.m1.Done");
+    assert!(travel[m1 - 1] <= 90.0 + 1e-6 && travel[m1] >= 90.0 - 1e-6);
+    assert!(vel[m1 - 1] + vel[m1] < 2.0 * 1800.0 * 0.01, "no stop at 90");
+    assert!(first("MAIN.m2.Busy") < m1);
+    assert!(first("MAIN.m2.Active") >= m1 - 1);
+    // m2 ends 90 further, at 180, passed at speed (m3 blends onto it)
+    let m2 = first("MAIN.m2.Done");
+    assert!(travel[m2 - 1] <= 180.0 + 1e-6 && travel[m2] >= 180.0 - 1e-6);
+    assert!(vel[m2] > 100.0, "{}", vel[m2]);
+    // m3: 225 to 45 and one full turn, blended: no stop after m2's start until the end
+    let m3 = first("MAIN.m3.Done");
+    assert!((travel[m3] - 765.0).abs() < 1e-6, "{}", travel[m3]);
+    assert!((pos[m3] - 45.0).abs() < 1e-6, "{}", pos[m3]);
+    let started2 = (m1..).find(|&k| vel[k] > 0.0).unwrap();
+    assert!(vel[started2..m3 - 1].iter().all(|&v| v > 0.0), "a stop inside");
+    // the limits hold; 720 asked of m3, 360 run
+    assert!(within(&vel, 0.0, 360.0));
+    assert!((peak(&vel) - 360.0).abs() < EPS);
+    assert!(within(&column(&trace, "axis.T.acceleration"), -1800.0, 1800.0));
+    // m4: refused, the axis stays at 45
+    assert_eq!(column(&trace, "MAIN.m4.Error")[380], 1.0);
+    assert_eq!(column(&trace, "MAIN.m4.ErrorID")[380], 25.0);
+    assert!(pos[m3..].iter().all(|&p| (p - 45.0).abs() < 1e-6));
+}
+
+/// MC_Jog in MC_JOGMODE_INCHING_MODULO (Infosys, E_JogMode: "stop position is rounded to the
+/// distance value"): from 22.5 mm with Position 10, forward to 30 then 40, backward to 30 then
+/// 20, each step Done at a multiple of 10 (before: Error, ErrorID 32, no motion); 80 mm/s asked,
+/// the axis's 50 run, the block's 400 / 800 mm/s² held. A Position of 0: ErrorID 24, no motion.
+#[test]
+fn inching_modulo_steps_stop_on_multiples_of_the_step() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Inching.st")],
+        330,
+        "MAIN.fbJog.Done,MAIN.fbJog.Busy,MAIN.fbJog.Error,MAIN.fbJog.ErrorID,axis.X.position,\
+         axis.X.velocity,axis.X.acceleration",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let pos = column(&trace, "axis.X.position");
+    let vel = column(&trace, "axis.X.velocity");
+    let done = column(&trace, "MAIN.fbJog.Done");
+    // standing before each edge (cycles 60, 120, 180, 240 are rows 59 ...), and where each step ends
+    for (row, before, after) in [
+        (59, 22.5, 30.0),
+        (119, 30.0, 40.0),
+        (179, 40.0, 30.0),
+        (239, 30.0, 20.0),
+    ] {
+        assert!((pos[row - 1] - before).abs() < 1e-6, "{row}: {}", pos[row - 1]);
+        assert!((pos[row + 55] - after).abs() < 1e-6, "{row}: {}", pos[row + 55]);
+        assert_eq!(done[row + 55], 1.0, "{row}");
+        assert_eq!(done[row + 1], 0.0, "{row}");
+        // the step runs the jog's way only
+        let sign = (after - before).signum();
+        assert!(vel[row..row + 55].iter().all(|&v| v * sign >= 0.0));
+    }
+    assert_eq!(column(&trace, "MAIN.fbJog.Busy")[70], 1.0);
+    assert!(within(&vel, -50.0, 50.0) && (peak(&vel) - 50.0).abs() < EPS);
+    let acc = column(&trace, "axis.X.acceleration");
+    // the block's 400 up and 800 down during the steps (the first move, MC_MoveAbsolute, takes
+    // the axis's 1000)
+    assert!(within(&acc[59..], -800.0, 800.0));
+    assert!(acc[59..].contains(&400.0) && acc[59..].contains(&-400.0));
+    // Position 0: refused, the axis stays at 20
+    assert_eq!(column(&trace, "MAIN.fbJog.Error")[299], 1.0);
+    assert_eq!(column(&trace, "MAIN.fbJog.ErrorID")[299], 24.0);
+    assert!(pos[280..].iter().all(|&p| (p - 20.0).abs() < 1e-6));
+}
