@@ -243,3 +243,51 @@ fn inching_modulo_steps_stop_on_multiples_of_the_step() {
     assert_eq!(column(&trace, "MAIN.fbJog.ErrorID")[299], 24.0);
     assert!(pos[280..].iter().all(|&p| (p - 20.0).abs() < 1e-6));
 }
+
+/// A TwinCAT project laid out as zhaoshutao/PWFACLM_PLC's collimator is (our own code):
+/// `GVL.axisRefs : ARRAY[1..cMaxAxes] OF AXIS_REF`, `fbAxes : ARRAY[1..GVL.cMaxAxes] OF
+/// FB_AxisControl` (each with `VAR_IN_OUT Axis : AXIS_REF` and its own MC_Power and
+/// MC_MoveAbsolute, instances named like their types), `mcSetPos : ARRAY[1..GVL.cMaxAxes] OF
+/// MC_SetPosition` whose inputs are written as `mcSetPos[_i].Position := ...`, and the axes' members
+/// read per element: `GVL.axisRefs[_i].NcToPlc.ActPos` / `ActVelo` (before: E1021 "AXIS_REF has no
+/// field NcToPlc"), `Axis.Status.Moving` inside the array's FB. Each axis is set to 5 mm, then
+/// moves to its own target within its own limits (500 mm/s asked).
+#[test]
+fn an_array_of_axes_in_a_global_list_read_and_driven_element_by_element() {
+    let watch = "GVL.bInit,GVL.aActPos[1],GVL.aActPos[2],GVL.aActPos[3],GVL.aActVelo[2],\
+                 GVL.aMoving[2],MAIN.fbAxes[2].bDone,axis.Jaw1.position,axis.Jaw2.position,\
+                 axis.Jaw3.position,axis.Jaw1.velocity,axis.Jaw2.velocity,axis.Jaw3.velocity";
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Collimator/Collimator.plcproj")],
+        200,
+        watch,
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    for (k, axis, target, v) in [
+        (1, "Jaw1", 12.0, 40.0),
+        (2, "Jaw2", -8.0, 20.0),
+        (3, "Jaw3", 30.0, 60.0),
+    ] {
+        let pos = column(&trace, &format!("axis.{axis}.position"));
+        let vel = column(&trace, &format!("axis.{axis}.velocity"));
+        // MC_SetPosition per element: each starts from 5 mm (set in cycle 1, moving from there)
+        assert_eq!(pos[0], 0.0);
+        assert!((pos[1] - 5.0).abs() < 0.1, "{axis} {}", pos[1]);
+        assert!((pos.last().unwrap() - target).abs() < 1e-6, "{axis}");
+        assert!(within(&vel, -v, v) && (peak(&vel) - v).abs() < EPS, "{axis}");
+        // `GVL.axisRefs[k].NcToPlc.ActPos` is this axis's position as of the scan's start
+        let act = column(&trace, &format!("GVL.aActPos[{k}]"));
+        for c in 1..pos.len() {
+            assert!((act[c] - pos[c - 1]).abs() < 1e-9, "{axis} cycle {c}");
+        }
+    }
+    let velo = column(&trace, "GVL.aActVelo[2]");
+    let vel2 = column(&trace, "axis.Jaw2.velocity");
+    assert!((1..vel2.len()).all(|c| (velo[c] - vel2[c - 1]).abs() < 1e-9));
+    // Status.Moving of the second FB's own axis, and its Done
+    let moving = column(&trace, "GVL.aMoving[2]");
+    let done = column(&trace, "MAIN.fbAxes[2].bDone");
+    assert_eq!(moving[40], 1.0);
+    assert_eq!((moving[150], done[150]), (0.0, 1.0));
+    assert_eq!(done[40], 0.0);
+}

@@ -78,10 +78,18 @@ pub fn read_spellings(
     let tables = std::cell::Cell::new(false);
     let mut globals = crate::tc2_axis_ref::Axes {
         names: Vec::new(),
+        arrays: Vec::new(),
         lists: Vec::new(),
     };
     for item in units.iter().flat_map(|u| u.items.iter()) {
         if let LibraryElement::GlobalVars(b) = item {
+            let arrays = crate::tc2_axis_ref::axis_ref_arrays(b.vars.iter());
+            if let Some(list) = &b.name {
+                globals
+                    .lists
+                    .extend(arrays.iter().map(|(n, _)| (list.key(), n.key())));
+            }
+            globals.arrays.extend(arrays);
             let names = crate::tc2_axis_ref::axis_refs(b.vars.iter());
             if let Some(list) = &b.name {
                 globals
