@@ -75,7 +75,10 @@ fn arrays_of_motion_blocks_each_drive_their_own_axis() {
     ] {
         assert!(within(&col(a, "velocity"), -v, v), "{a} velocity");
         assert!((peak(&col(a, "velocity")) - v).abs() < EPS, "{a} peak");
-        assert!(within(&col(a, "acceleration"), -acc, acc), "{a} acceleration");
+        assert!(
+            within(&col(a, "acceleration"), -acc, acc),
+            "{a} acceleration"
+        );
     }
     // the Slide accelerates at its 250 and brakes at its 500
     assert!(peak(&col("Slide", "acceleration")) <= 500.0 + 1e-6);
@@ -117,8 +120,11 @@ fn motion_blocks_in_an_array_of_function_blocks_one_axis_each() {
     assert!(moved("Feeder") < 3);
     assert!((20..23).contains(&moved("Press")), "{}", moved("Press"));
     assert!((40..43).contains(&moved("Stacker")), "{}", moved("Stacker"));
-    for (a, target, v) in [("Feeder", 15.0, 60.0), ("Press", 30.0, 30.0), ("Stacker", 45.0, 90.0)]
-    {
+    for (a, target, v) in [
+        ("Feeder", 15.0, 60.0),
+        ("Press", 30.0, 30.0),
+        ("Stacker", 45.0, 90.0),
+    ] {
         assert!((pos(a).last().unwrap() - target).abs() < 1e-6, "{a}");
         assert!(within(&vel(a), 0.0, v), "{a} velocity");
         assert!((peak(&vel(a)) - v).abs() < EPS, "{a} peak");
@@ -189,11 +195,18 @@ fn a_buffered_mc_move_modulo_measures_from_the_end_of_the_queue() {
     assert!((travel[m3] - 765.0).abs() < 1e-6, "{}", travel[m3]);
     assert!((pos[m3] - 45.0).abs() < 1e-6, "{}", pos[m3]);
     let started2 = (m1..).find(|&k| vel[k] > 0.0).unwrap();
-    assert!(vel[started2..m3 - 1].iter().all(|&v| v > 0.0), "a stop inside");
+    assert!(
+        vel[started2..m3 - 1].iter().all(|&v| v > 0.0),
+        "a stop inside"
+    );
     // the limits hold; 720 asked of m3, 360 run
     assert!(within(&vel, 0.0, 360.0));
     assert!((peak(&vel) - 360.0).abs() < EPS);
-    assert!(within(&column(&trace, "axis.T.acceleration"), -1800.0, 1800.0));
+    assert!(within(
+        &column(&trace, "axis.T.acceleration"),
+        -1800.0,
+        1800.0
+    ));
     // m4: refused, the axis stays at 45
     assert_eq!(column(&trace, "MAIN.m4.Error")[380], 1.0);
     assert_eq!(column(&trace, "MAIN.m4.ErrorID")[380], 25.0);
@@ -223,8 +236,16 @@ fn inching_modulo_steps_stop_on_multiples_of_the_step() {
         (179, 40.0, 30.0),
         (239, 30.0, 20.0),
     ] {
-        assert!((pos[row - 1] - before).abs() < 1e-6, "{row}: {}", pos[row - 1]);
-        assert!((pos[row + 55] - after).abs() < 1e-6, "{row}: {}", pos[row + 55]);
+        assert!(
+            (pos[row - 1] - before).abs() < 1e-6,
+            "{row}: {}",
+            pos[row - 1]
+        );
+        assert!(
+            (pos[row + 55] - after).abs() < 1e-6,
+            "{row}: {}",
+            pos[row + 55]
+        );
         assert_eq!(done[row + 55], 1.0, "{row}");
         assert_eq!(done[row + 1], 0.0, "{row}");
         // the step runs the jog's way only
@@ -257,11 +278,8 @@ fn an_array_of_axes_in_a_global_list_read_and_driven_element_by_element() {
     let watch = "GVL.bInit,GVL.aActPos[1],GVL.aActPos[2],GVL.aActPos[3],GVL.aActVelo[2],\
                  GVL.aMoving[2],MAIN.fbAxes[2].bDone,axis.Jaw1.position,axis.Jaw2.position,\
                  axis.Jaw3.position,axis.Jaw1.velocity,axis.Jaw2.velocity,axis.Jaw3.velocity";
-    let (trace, stderr) = run_traced_files(
-        &[&fixture("Collimator/Collimator.plcproj")],
-        200,
-        watch,
-    );
+    let (trace, stderr) =
+        run_traced_files(&[&fixture("Collimator/Collimator.plcproj")], 200, watch);
     assert!(!stderr.contains("error"), "{stderr}");
     for (k, axis, target, v) in [
         (1, "Jaw1", 12.0, 40.0),
@@ -274,7 +292,10 @@ fn an_array_of_axes_in_a_global_list_read_and_driven_element_by_element() {
         assert_eq!(pos[0], 0.0);
         assert!((pos[1] - 5.0).abs() < 0.1, "{axis} {}", pos[1]);
         assert!((pos.last().unwrap() - target).abs() < 1e-6, "{axis}");
-        assert!(within(&vel, -v, v) && (peak(&vel) - v).abs() < EPS, "{axis}");
+        assert!(
+            within(&vel, -v, v) && (peak(&vel) - v).abs() < EPS,
+            "{axis}"
+        );
         // `GVL.axisRefs[k].NcToPlc.ActPos` is this axis's position as of the scan's start
         let act = column(&trace, &format!("GVL.aActPos[{k}]"));
         for c in 1..pos.len() {

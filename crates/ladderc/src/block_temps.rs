@@ -14,8 +14,8 @@
 //! and was out of that function's sight (the C compiler failed with "`v__st_t1` undeclared").
 
 use il_frontend::ast::{
-    Accessor, CallArgs, CompilationUnit, IlStmt, InstrKind, LibraryElement, Operand, PouKind, TypeRef,
-    VarBlock, VarKind,
+    Accessor, CallArgs, CompilationUnit, IlStmt, InstrKind, LibraryElement, Operand, PouKind,
+    TypeRef, VarBlock, VarKind,
 };
 use param_passing::library::Library;
 use std::collections::HashSet;

@@ -685,8 +685,7 @@ impl PouLowering<'_> {
                             args,
                         },
                     span,
-                }) if called_block(self.instances, instance).is_some() =>
-                {
+                }) if called_block(self.instances, instance).is_some() => {
                     let (cond, span) = (*cond, *span);
                     let out = &mut top.out;
                     let block = called_block(self.instances, instance)
