@@ -312,3 +312,39 @@ fn an_array_of_axes_in_a_global_list_read_and_driven_element_by_element() {
     assert_eq!((moving[150], done[150]), (0.0, 1.0));
     assert_eq!(done[40], 0.0);
 }
+
+/// Both of paper A's lowering methods call the element the index names: `Arrays.st` run with
+/// `--strategy il` (TM transfers of `fbMove[i - 1]`'s fields, one static function) and with
+/// `--strategy template` (one synthesised function per call site, reading the element's fields)
+/// traces the same axes, cycle by cycle, each axis at its own target.
+#[test]
+fn both_lowering_methods_call_the_element_the_index_names() {
+    let run = |strategy: &str| {
+        let out = common::ladderc()
+            .args(["--message-format", "short", "run"])
+            .arg(fixture("Arrays.st"))
+            .args(["--strategy", strategy, "--cycles", "150", "--sanitize"])
+            .args(["--trace", "-", "--watch"])
+            .arg(
+                "axis.Lift.position,axis.Slide.position,axis.Gripper.position,\
+                 axis.Table.position,MAIN.nDone",
+            )
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+        assert_eq!(out.status.code(), Some(0), "{strategy}: {stderr}");
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let (il, template) = (run("il"), run("template"));
+    assert_eq!(il, template);
+    for (a, target) in [
+        ("Lift", 40.0),
+        ("Slide", -30.0),
+        ("Gripper", 25.0),
+        ("Table", 270.0),
+    ] {
+        let last = *column(&il, &format!("axis.{a}.position")).last().unwrap();
+        assert!((last - target).abs() < 1e-6, "{a}: {last}");
+    }
+    assert_eq!(column(&il, "MAIN.nDone").last(), Some(&3.0));
+}
