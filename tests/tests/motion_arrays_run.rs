@@ -348,3 +348,44 @@ fn both_lowering_methods_call_the_element_the_index_names() {
     }
     assert_eq!(column(&il, "MAIN.nDone").last(), Some(&3.0));
 }
+
+/// `axes : ARRAY[0..2] OF AXIS_REF` whose elements' members are read in a FOR loop as a scope
+/// trigger (the pattern of ta-ichihashi/TwinCATHowTo's Scope view example):
+/// `axes[i].Status.InTargetPosition` (Infosys, ST_AxisStatus: in the target position window; the
+/// simulated drive follows its set point exactly, so: standing with no motion) and
+/// `axes[i].NcToPlc.SetPos`. Before: a program whose only motion declarations are arrays was not
+/// read as a motion program (E1003 `AXIS_REF`, `MC_Power`, `MC_MoveAbsolute`).
+#[test]
+fn members_of_axis_array_elements_trigger_per_axis() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("Trigger.st")],
+        60,
+        "MAIN.export_trigger[0],MAIN.export_trigger[1],MAIN.export_trigger[2],\
+         MAIN.aInTarget[0],MAIN.aInTarget[2],axis.X.position,axis.Z.position,axis.Z.velocity",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let x = column(&trace, "axis.X.position");
+    let z = column(&trace, "axis.Z.position");
+    let zv = column(&trace, "axis.Z.velocity");
+    // in target exactly when its own axis stands at its goal (read as of the scan's start)
+    let at_x = x.iter().position(|&p| (p - 20.0).abs() < 1e-9).unwrap();
+    let at_z = z.iter().position(|&p| (p + 20.0).abs() < 1e-9).unwrap();
+    let in0 = column(&trace, "MAIN.aInTarget[0]");
+    let in2 = column(&trace, "MAIN.aInTarget[2]");
+    assert!(in0[..=at_x].iter().all(|&b| b == 0.0));
+    assert!(in0[at_x + 2..].iter().all(|&b| b == 1.0));
+    assert!(in2[..=at_z].iter().all(|&b| b == 0.0));
+    assert!(in2[at_z + 2..].iter().all(|&b| b == 1.0));
+    assert!(at_z > at_x, "Z runs at its 50 mm/s");
+    assert!(within(&zv, -50.0, 0.0) && (peak(&zv) - 50.0).abs() < EPS);
+    // the trigger: in target with the set position 0 (only the second axis, whose goal is 0)
+    assert!(column(&trace, "MAIN.export_trigger[0]")
+        .iter()
+        .all(|&b| b == 0.0));
+    assert!(column(&trace, "MAIN.export_trigger[2]")
+        .iter()
+        .all(|&b| b == 0.0));
+    assert!(column(&trace, "MAIN.export_trigger[1]")[1..]
+        .iter()
+        .all(|&b| b == 1.0));
+}

@@ -38,6 +38,28 @@ const STATUS: &[(&str, &str)] = &[
     ("CONTINUOUSMOTION", "ContinuousMotion"),
     ("SYNCHRONIZEDMOTION", "SynchronizedMotion"),
     ("HOMING", "Homing"),
+    // Infosys, ST_AxisStatus: `InTargetPosition` "axis is in target position (position window)",
+    // `InPositionArea` "axis is in the position range". The simulated drive follows its set
+    // point exactly, so an axis that stands with no motion (PLCopen Standstill) stands at the end
+    // of its last move; one in motion is not (yet) there.
+    ("INTARGETPOSITION", "Standstill"),
+    ("INPOSITIONAREA", "Standstill"),
+];
+
+/// The ST_AxisStatus names of [`STATUS`]'s entries, as Tc2_MC2 spells them.
+const STATUS_NAMES: &[&str] = &[
+    "Error",
+    "ErrorID",
+    "ErrorStop",
+    "Disabled",
+    "Stopping",
+    "StandStill",
+    "DiscreteMotion",
+    "ContinuousMotion",
+    "SynchronizedMotion",
+    "Homing",
+    "InTargetPosition",
+    "InPositionArea",
 ];
 
 /// The MC_ReadStatus outputs whose OR is `Moving`.
@@ -68,9 +90,9 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
             pair("Status", "ST_AxisStatus (Tc2_MC2)"),
             pair("NcToPlc", "NCTOPLC_AXIS_REF (Tc2_MC2)"),
         ],
-        Some("STATUS") => STATUS
+        Some("STATUS") => STATUS_NAMES
             .iter()
-            .map(|(_, o)| pair(if *o == "Standstill" { "StandStill" } else { o }, "BOOL"))
+            .map(|n| pair(n, "BOOL"))
             .filter(|(n, _)| n != "ErrorID")
             .chain([
                 pair("ErrorID", "UDINT"),
@@ -481,6 +503,7 @@ fn e1042(member: &str, span: Span) -> Diagnostic {
     .at(span)
     .with_hint(
         "ladderc reads Status.Error, ErrorID, ErrorStop, Disabled, Stopping, StandStill, DiscreteMotion, \
-         ContinuousMotion, SynchronizedMotion, Homing, Moving, NotMoving and NcToPlc.ActPos, SetPos, ActVelo, SetVelo",
+         ContinuousMotion, SynchronizedMotion, Homing, InTargetPosition, InPositionArea, Moving, \
+         NotMoving and NcToPlc.ActPos, SetPos, ActVelo, SetVelo",
     )
 }
