@@ -389,3 +389,27 @@ fn members_of_axis_array_elements_trigger_per_axis() {
         .iter()
         .all(|&b| b == 1.0));
 }
+
+/// Tc2_MC2's `NcToPlc.ErrorCode` (UDINT, 0 while the axis has no error; zhaoshutao's projects
+/// test `IF Axis.NcToPlc.ErrorCode = 0`, before: E1042) of each element of an array of axes: the
+/// Lift runs into its positive software limit (20 mm) and stops there, its ErrorCode is the axis
+/// error (100, SoftwareLimitPositive) until MC_Reset; the Feed's stays 0.
+#[test]
+fn nc_to_plc_error_code_reads_each_axis_s_own_error() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("ErrorCode.st")],
+        200,
+        "MAIN.aCode[1],MAIN.aCode[2],MAIN.aFault[2],axis.Lift.position,axis.Lift.velocity",
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
+    let pos = column(&trace, "axis.Lift.position");
+    let code = column(&trace, "MAIN.aCode[2]");
+    assert!(within(&pos, -10.0, 20.0), "the software limit holds");
+    let stopped = pos.iter().position(|&p| (p - 20.0).abs() < 1e-9).unwrap();
+    assert!(code[..stopped].iter().all(|&c| c == 0.0));
+    assert!(code[stopped + 2..150].iter().all(|&c| c == 100.0));
+    assert_eq!(column(&trace, "MAIN.aFault[2]")[120], 1.0);
+    // MC_Reset (cycle 151) clears it
+    assert!(code[155..].iter().all(|&c| c == 0.0));
+    assert!(column(&trace, "MAIN.aCode[1]").iter().all(|&c| c == 0.0));
+}

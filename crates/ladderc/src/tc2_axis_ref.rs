@@ -103,6 +103,7 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
         Some("NCTOPLC") => ["ActPos", "SetPos", "ActVelo", "SetVelo"]
             .iter()
             .map(|n| pair(n, "LREAL"))
+            .chain([pair("ErrorCode", "UDINT")])
             .collect(),
         _ => Vec::new(),
     }
@@ -153,6 +154,8 @@ pub struct Axes {
 struct Used {
     scalars: Vec<Ident>,
     arrays: Vec<(Ident, ArrayDim)>,
+    /// The axes (upper case) whose `NcToPlc.ErrorCode` is read.
+    error_codes: Vec<String>,
 }
 
 impl Used {
@@ -273,6 +276,27 @@ pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
         for ix in &elements {
             prologue.extend(moving(axis, ix.clone()));
         }
+        if used.error_codes.contains(&axis.key()) {
+            hidden.push(VarDecl {
+                name: Ident::new(hidden_name(axis, "AXERR"), at),
+                location: None,
+                ty: ty("MC_ReadAxisError"),
+                init: None,
+                edge: None,
+                span: at,
+            });
+            hidden.push(VarDecl {
+                name: Ident::new(hidden_name(axis, "ERRORCODE"), at),
+                location: None,
+                ty: ty("UDINT"),
+                init: None,
+                edge: None,
+                span: at,
+            });
+            for ix in &elements {
+                prologue.extend(error_code(axis, ix.clone()));
+            }
+        }
     }
     crate::block_temps::add_hidden_vars(p, hidden);
     p.body.splice(0..0, prologue);
@@ -332,6 +356,47 @@ fn call(axis: &Ident, suffix: &str, index: Option<Vec<Operand>>) -> IlStmt {
         },
         at,
     )
+}
+
+/// `CAL __TC2_<AXIS>_AXERR(...)`, `LD __TC2_<AXIS>_AXERR.AxisErrorID WORD_TO_UDINT ST
+/// __TC2_<AXIS>_ERRORCODE` (of the element `index` of an array of axes): Tc2_MC2's
+/// `NcToPlc.ErrorCode` (UDINT, 0 while the axis has no error) read as the simulated axis's error
+/// (MC_ReadAxisError's AxisErrorID, ladderc's ErrorID numbers).
+fn error_code(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
+    let at = axis.span;
+    let simple = |op: Op, v: VarRef| {
+        instr(
+            InstrKind::Simple {
+                op,
+                negate: false,
+                operand: Some(Operand::Var(v)),
+            },
+            at,
+        )
+    };
+    vec![
+        call(axis, "AXERR", index.clone()),
+        simple(
+            Op::Ld,
+            indexed(
+                hidden_name(axis, "AXERR"),
+                index.clone(),
+                Some("AxisErrorID"),
+                at,
+            ),
+        ),
+        instr(
+            InstrKind::FunctionCall {
+                name: Ident::new("WORD_TO_UDINT", at),
+                args: Box::new(CallArgs::None),
+            },
+            at,
+        ),
+        simple(
+            Op::St,
+            indexed(hidden_name(axis, "ERRORCODE"), index, None, at),
+        ),
+    ]
 }
 
 /// `LD status.DiscreteMotion OR ... ST __TC2_<AXIS>_MOVING STN __TC2_<AXIS>_NOTMOVING` (of
@@ -476,6 +541,12 @@ fn member(
                 }
             },
         },
+        "NCTOPLC" if field == "ERRORCODE" => {
+            if !used.error_codes.contains(&axis.key()) {
+                used.error_codes.push(axis.key());
+            }
+            (hidden_name(axis, "ERRORCODE"), None)
+        }
         "NCTOPLC" => match NC_TO_PLC.iter().find(|(k, _)| *k == field) {
             Some((_, true)) => (hidden_name(axis, "POS"), Some("Position")),
             Some((_, false)) => (hidden_name(axis, "VELO"), Some("Velocity")),
@@ -504,6 +575,6 @@ fn e1042(member: &str, span: Span) -> Diagnostic {
     .with_hint(
         "ladderc reads Status.Error, ErrorID, ErrorStop, Disabled, Stopping, StandStill, DiscreteMotion, \
          ContinuousMotion, SynchronizedMotion, Homing, InTargetPosition, InPositionArea, Moving, \
-         NotMoving and NcToPlc.ActPos, SetPos, ActVelo, SetVelo",
+         NotMoving and NcToPlc.ActPos, SetPos, ActVelo, SetVelo, ErrorCode",
     )
 }
