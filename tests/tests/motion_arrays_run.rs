@@ -413,3 +413,42 @@ fn nc_to_plc_error_code_reads_each_axis_s_own_error() {
     assert!(code[155..].iter().all(|&c| c == 0.0));
     assert!(column(&trace, "MAIN.aCode[1]").iter().all(|&c| c == 0.0));
 }
+
+/// PLCopen MC_GearOut (before: no such block, E1003; SeanyCash/TwinCAT_CNC declares one) per
+/// element of an array: two slaves geared 1:2 to a master at 40 mm/s run at 20; slave 1 geared
+/// out at cycle 101 keeps its 20 mm/s (ContinuousMotion) when the master goes to 80 at cycle 121,
+/// slave 2, still geared, follows to 40; the limits hold.
+#[test]
+fn mc_gear_out_releases_its_own_slave_only() {
+    let (trace, stderr) = run_traced_files(
+        &[&fixture("GearOut.st")],
+        200,
+        "MAIN.gin[1].InGear,MAIN.gin[2].InGear,MAIN.gout[1].Done,MAIN.gout[2].Done,\
+         MAIN.gout[2].Busy,axis.M.velocity,axis.S1.velocity,axis.S2.velocity,\
+         axis.S1.acceleration,axis.S2.acceleration",
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
+    let s1 = column(&trace, "axis.S1.velocity");
+    let s2 = column(&trace, "axis.S2.velocity");
+    let m = column(&trace, "axis.M.velocity");
+    assert_eq!((m[95], s1[95], s2[95]), (40.0, 20.0, 20.0));
+    let done1 = column(&trace, "MAIN.gout[1].Done");
+    assert_eq!(done1[99], 0.0);
+    assert!(done1[101..].iter().all(|&d| d == 1.0));
+    assert!(column(&trace, "MAIN.gin[1].InGear")[101..]
+        .iter()
+        .all(|&g| g == 0.0));
+    // after the master's change: slave 1 stays at 20, slave 2 follows at half the master's 80
+    assert!(s1[100..].iter().all(|&v| (v - 20.0).abs() < EPS));
+    assert_eq!((m[199], s2[199]), (80.0, 40.0));
+    assert!(column(&trace, "MAIN.gin[2].InGear")[150..]
+        .iter()
+        .all(|&g| g == 1.0));
+    assert!(column(&trace, "MAIN.gout[2].Done")
+        .iter()
+        .all(|&d| d == 0.0));
+    for a in ["S1", "S2"] {
+        let acc = column(&trace, &format!("axis.{a}.acceleration"));
+        assert!(within(&acc, -1000.0, 1000.0), "{a}");
+    }
+}
