@@ -452,3 +452,58 @@ fn mc_gear_out_releases_its_own_slave_only() {
         assert!(within(&acc, -1000.0, 1000.0), "{a}");
     }
 }
+
+/// A motion block instance held in a structure field, also of an array of structures, is one
+/// located E1053 per call (before: an E1018 "`st` is MC_Power, not an FB instance" from the check
+/// of the lowered program, as if the user's program were wrong); an array of arrays of instances
+/// is called like an array (`pw[1][i](...)`) and runs.
+#[test]
+fn a_motion_block_inside_a_structure_is_one_e1053_an_array_of_arrays_runs() {
+    let src = "TYPE ST_Axis :\nSTRUCT\n  pw : MC_Power;\nEND_STRUCT;\nEND_TYPE\n\
+               FUNCTION_BLOCK FB_Station\nVAR_IN_OUT\n  ax : AXIS_REF;\nEND_VAR\n\
+               VAR\n  st : ST_Axis;\n  ast : ARRAY[1..2] OF ST_Axis;\n  i : INT := 1;\nEND_VAR\n\
+               st.pw(Axis := ax, Enable := TRUE);\n\
+               ast[i].pw(Axis := ax, Enable := TRUE);\nEND_FUNCTION_BLOCK\n";
+    let heads = common::rejected_heads("Station.st", src);
+    assert_eq!(
+        heads,
+        [
+            "Station.st:15:1: error[E1053]: `st.pw` is an instance of MC_Power inside a \
+             structure: ladderc calls motion blocks declared in a POU, a global list or an array",
+            "Station.st:16:1: error[E1053]: `ast[..].pw` is an instance of MC_Power inside a \
+             structure: ladderc calls motion blocks declared in a POU, a global list or an array",
+        ]
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("Grid.st");
+    std::fs::write(
+        &f,
+        "PROGRAM MAIN\nVAR\n  axes : ARRAY[1..2] OF AXIS_REF;\n\
+         pw : ARRAY[1..2] OF ARRAY[1..2] OF MC_Power;\n\
+         mv : ARRAY[1..2] OF ARRAY[1..2] OF MC_MoveRelative;\n  i : INT;\nEND_VAR\n\
+         FOR i := 1 TO 2 DO\n\
+         pw[2][i](Axis := axes[i], Enable := TRUE, EnablePositive := TRUE, EnableNegative := TRUE);\n\
+         mv[2][i](Axis := axes[i], Execute := pw[2][i].Status, Distance := 5.0 * INT_TO_LREAL(i),\n\
+         Velocity := 100.0, Acceleration := 1000.0, Deceleration := 1000.0);\nEND_FOR\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("Grid.axes.json"),
+        r#"{ "cycle_ms": 10, "axes": [
+            { "name": "A", "velocity": 50, "acceleration": 500, "deceleration": 500, "link": "MAIN.axes[1]" },
+            { "name": "B", "velocity": 50, "acceleration": 500, "deceleration": 500, "link": "MAIN.axes[2]" } ] }"#,
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced_files(
+        &[&f],
+        60,
+        "axis.A.position,axis.B.position,MAIN.mv[2][2].Done,MAIN.mv[1][1].Busy",
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
+    assert!((column(&trace, "axis.A.position").last().unwrap() - 5.0).abs() < 1e-9);
+    assert!((column(&trace, "axis.B.position").last().unwrap() - 10.0).abs() < 1e-9);
+    assert_eq!(column(&trace, "MAIN.mv[2][2].Done").last(), Some(&1.0));
+    assert!(column(&trace, "MAIN.mv[1][1].Busy")
+        .iter()
+        .all(|&b| b == 0.0));
+}

@@ -15,7 +15,7 @@
 
 use il_frontend::ast::{
     Accessor, CallArgs, CompilationUnit, IlStmt, InstrKind, LibraryElement, Operand, PouKind,
-    TypeRef, VarBlock, VarKind,
+    VarBlock, VarKind,
 };
 use param_passing::library::Library;
 use std::collections::HashSet;
@@ -34,14 +34,8 @@ pub fn keep(units: &mut [CompilationUnit], lib: &Library) {
                 .var_blocks
                 .iter()
                 .flat_map(|b| b.vars.iter())
-                .filter(|v| match &v.ty {
-                    TypeRef::Named(t) => lib.get(&t.name).is_some(),
-                    // an array of instances, `fbMove : ARRAY [0..2] OF MC_MoveAbsolute`
-                    TypeRef::Array { element, .. } => {
-                        matches!(element.as_ref(), TypeRef::Named(t) if lib.get(&t.name).is_some())
-                    }
-                    _ => false,
-                })
+                // an instance, or an array of them (`fbMove : ARRAY [0..2] OF MC_MoveAbsolute`)
+                .filter(|v| param_passing::lower::instance_block(&v.ty, lib).is_some())
                 .map(|v| v.name.key())
                 .collect();
             if instances.is_empty() {

@@ -67,6 +67,7 @@ pub mod depfile;
 pub mod encoding;
 pub mod fuzzing;
 pub mod lsp;
+pub mod motion_in_struct;
 pub mod motion_link;
 pub mod output;
 pub mod pipeline;

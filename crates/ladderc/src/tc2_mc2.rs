@@ -146,18 +146,11 @@ pub fn read_spellings(
                 .var_blocks
                 .iter()
                 .flat_map(|b| b.vars.iter())
-                .filter_map(|v| match &v.ty {
-                    TypeRef::Named(t) => lib
-                        .get(&t.name)
-                        .map(|tpl| (v.name.key(), tpl.block.clone())),
-                    // `aPower : ARRAY [1..2] OF MC_Power`, called `aPower[i](...)`
-                    TypeRef::Array { element, .. } => match &**element {
-                        TypeRef::Named(t) => lib
-                            .get(&t.name)
-                            .map(|tpl| (v.name.key(), tpl.block.clone())),
-                        _ => None,
-                    },
-                    _ => None,
+                // an instance, or an array of them (`aPower : ARRAY [1..2] OF MC_Power`, called
+                // `aPower[i](...)`)
+                .filter_map(|v| {
+                    param_passing::lower::instance_block(&v.ty, lib)
+                        .map(|(tpl, _)| (v.name.key(), tpl.block.clone()))
                 })
                 .collect();
             if !instances.is_empty() {

@@ -250,31 +250,37 @@ struct BlockUse<'a> {
     first_call: Span,
 }
 
-/// A variable that holds instances of a template block: the block's name, and whether the variable
-/// is an array of instances (`fbPower : ARRAY [1..4] OF MC_Power;`, each element its own instance,
-/// called as `fbPower[i](...)`).
+/// A variable that holds instances of a template block: the block's name, and how many arrays
+/// deep the instances lie (0: the variable is one instance; 1: `fbPower : ARRAY [1..4] OF
+/// MC_Power;`, each element its own instance, called as `fbPower[i](...)`; 2: an array of arrays,
+/// `fbPower[i][j](...)`).
 #[derive(Debug, Clone)]
 struct InstanceVar {
     block: String,
-    array: bool,
+    depth: usize,
 }
 
-/// The block a declared type holds instances of: `MC_Power`, or `ARRAY [..] OF MC_Power`.
-fn instance_var(ty: &TypeRef, lib: &Library) -> Option<InstanceVar> {
+/// The template block a declared type holds instances of (`MC_Power`, `ARRAY [..] OF MC_Power`,
+/// arrays of arrays of it), with the number of array levels around it.
+pub fn instance_block<'l>(ty: &TypeRef, lib: &'l Library) -> Option<(&'l Template, usize)> {
+    let mut depth = 0;
+    let mut ty = ty;
+    while let TypeRef::Array { element, .. } = ty {
+        depth += 1;
+        ty = element;
+    }
     match ty {
-        TypeRef::Named(t) => lib.get(&t.name).map(|tpl| InstanceVar {
-            block: tpl.block.clone(),
-            array: false,
-        }),
-        TypeRef::Array { element, .. } => match element.as_ref() {
-            TypeRef::Named(t) => lib.get(&t.name).map(|tpl| InstanceVar {
-                block: tpl.block.clone(),
-                array: true,
-            }),
-            _ => None,
-        },
+        TypeRef::Named(t) => lib.get(&t.name).map(|tpl| (tpl, depth)),
         _ => None,
     }
+}
+
+/// The block a declared type holds instances of (see [`instance_block`]).
+fn instance_var(ty: &TypeRef, lib: &Library) -> Option<InstanceVar> {
+    instance_block(ty, lib).map(|(tpl, depth)| InstanceVar {
+        block: tpl.block.clone(),
+        depth,
+    })
 }
 
 /// Instances of template blocks declared in a POU (and in global blocks): variable key -> block.
@@ -295,18 +301,19 @@ fn instances(
 }
 
 /// The block a call's instance is an instance of: a plain instance called as itself, or an
-/// element of an array of instances (`fbMove[i]`, one subscript list, any index expression: the
-/// generated code reads and writes that element's fields, so each element keeps its own state).
+/// element of an array of instances (`fbMove[i]`, one subscript list per array level, any index
+/// expression: the generated code reads and writes that element's fields, so each element keeps
+/// its own state).
 fn called_block<'m>(
     instances: &'m HashMap<String, InstanceVar>,
     instance: &VarRef,
 ) -> Option<&'m str> {
     let iv = instances.get(&instance.base.key())?;
-    let fits = match instance.accessors.as_slice() {
-        [] => !iv.array,
-        [Accessor::Index(_)] => iv.array,
-        _ => false,
-    };
+    let fits = instance.accessors.len() == iv.depth
+        && instance
+            .accessors
+            .iter()
+            .all(|a| matches!(a, Accessor::Index(_)));
     fits.then_some(iv.block.as_str())
 }
 
@@ -598,10 +605,12 @@ fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
             } if v.base == *inst => {
                 // `ST mv.Position` or, for an array input, `ST mv.Position[0]`; of an array of
                 // instances, `ST mv[i].Position` (some element's)
-                let fields = match v.accessors.as_slice() {
-                    [Accessor::Index(_), rest @ ..] => rest,
-                    all => all,
-                };
+                let lead = v
+                    .accessors
+                    .iter()
+                    .take_while(|a| matches!(a, Accessor::Index(_)))
+                    .count();
+                let fields = &v.accessors[lead..];
                 if let [Accessor::Field(f)] | [Accessor::Field(f), Accessor::Index(_)] = fields {
                     out.push(f.name.clone());
                 }
