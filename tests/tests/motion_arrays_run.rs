@@ -178,14 +178,16 @@ fn unwrapped(pos: &[f64], period: f64) -> Vec<f64> {
 /// ends and goes 90 deg further (before: measured from where the axis was when m2 was issued, it
 /// stopped at 262 deg); m3 (MC_BlendingLow, 405 deg: one full turn and 45) blends onto m2 at 180
 /// deg without stopping and ends at 45 deg after 585 deg; the axis's 360 deg/s (720 asked) and
-/// 1800 deg/s² hold. m4 asks queued full turns the shortest way: ErrorID 25, no motion.
+/// 1800 deg/s² hold. m4 and m5 ask queued full turns the shortest way and in the current
+/// direction (which only the end of the queue decides): ErrorID 25, no motion.
 #[test]
 fn a_buffered_mc_move_modulo_measures_from_the_end_of_the_queue() {
     let (trace, stderr) = run_traced_files(
         &[&fixture("Buffered.st")],
         400,
         "MAIN.m1.Done,MAIN.m2.Done,MAIN.m2.Busy,MAIN.m2.Active,MAIN.m3.Done,MAIN.m3.Active,\
-         MAIN.m4.Error,MAIN.m4.ErrorID,axis.T.position,axis.T.velocity,axis.T.acceleration",
+         MAIN.m4.Error,MAIN.m4.ErrorID,MAIN.m5.ErrorID,axis.T.position,axis.T.velocity,\
+         axis.T.acceleration",
     );
     assert!(!stderr.contains("error"), "{stderr}");
     let pos = column(&trace, "axis.T.position");
@@ -225,9 +227,10 @@ fn a_buffered_mc_move_modulo_measures_from_the_end_of_the_queue() {
         -1800.0,
         1800.0
     ));
-    // m4: refused, the axis stays at 45
+    // m4, m5: refused, the axis stays at 45
     assert_eq!(column(&trace, "MAIN.m4.Error")[380], 1.0);
     assert_eq!(column(&trace, "MAIN.m4.ErrorID")[380], 25.0);
+    assert_eq!(column(&trace, "MAIN.m5.ErrorID")[380], 25.0);
     assert!(pos[m3..].iter().all(|&p| (p - 45.0).abs() < 1e-6));
 }
 

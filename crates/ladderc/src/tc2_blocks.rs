@@ -28,9 +28,9 @@
 //! measures from the last commanded target, and the full turns of a Position of one period or
 //! more follow as an MC_MoveAdditive blended onto it (MC_BlendingLow, same direction, so the axis
 //! does not stop between them); Done comes with the last of them. Queued full turns with
-//! `MC_Shortest_Way` are refused with ErrorID 25 (InvalidDirection): which way is shorter is only
-//! known where the queue ends (Beckhoff's TC3 MC3 MC_MoveModulo likewise requires a direction
-//! other than ShortestDistance for additional turns).
+//! `MC_Shortest_Way` or `MC_Current_Direction` are refused with ErrorID 25 (InvalidDirection):
+//! which way is shorter, or current, is only known where the queue ends (Beckhoff's TC3 MC3
+//! MC_MoveModulo likewise requires a direction other than ShortestDistance for additional turns).
 //!
 //! MC_Jog, per Infosys (Tc2_MC2 > Motion > MC_Jog, E_JogMode): a rising edge of `JogForward` (which
 //! wins over a simultaneous `JogBackwards`) or `JogBackwards` starts a jog, and no edge is taken
