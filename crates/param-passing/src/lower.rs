@@ -1,7 +1,8 @@
 //! Lowering of PLCopen block calls (paper A). Runs after the semantic check of the user's program (which
 //! typed every `CAL` against the block prelude) and before C generation.
 //!
-//! Input: compilation units whose POUs declare instances of template blocks and `CAL` them; the library;
+//! Input: compilation units whose POUs declare instances of template blocks (or arrays of them, whose
+//! elements are called `CAL fbMove[i](...)`) and `CAL` them; the library;
 //! the TM window; a strategy. Output: the units with every such `CAL` replaced, the hidden TM views declared,
 //! the instance types turned into plain structs (see `prelude`), plus the C of the embedded functions and a
 //! per-block report. Invariants: with the IL method a call becomes input transfer + one `FUNC Name()` +
