@@ -528,3 +528,22 @@ fn a_motion_block_inside_a_structure_is_one_e1053_an_array_of_arrays_runs() {
         .iter()
         .all(|&b| b == 0.0));
 }
+
+/// A member of an `ARRAY OF AXIS_REF` element read with the wrong number of indexes is reported
+/// on the user's names (E1021 at `axes`), never on the hidden blocks that read the members.
+#[test]
+fn a_wrong_index_count_on_an_axis_array_names_the_user_s_array() {
+    let src =
+        "PROGRAM MAIN\nVAR\n  axes : ARRAY[1..2] OF AXIS_REF;\n  pw : ARRAY[1..2] OF MC_Power;\n\
+               b : BOOL;\nEND_VAR\npw[1](Axis := axes[1], Enable := TRUE);\n\
+               b := axes[1, 2].Status.Error;\nEND_PROGRAM\n";
+    let heads = common::rejected_heads("Axes.st", src);
+    assert!(heads.iter().all(|h| !h.contains("__TC2")), "{heads:?}");
+    assert!(
+        heads.contains(
+            &"Axes.st:8:6: error[E1021]: `axes` has 1 dimension(s) but 2 index(es) are given"
+                .to_string()
+        ),
+        "{heads:?}"
+    );
+}

@@ -459,7 +459,7 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagno
                     }
                     // `axisRefs[i].ReadStatus()`
                     (None, Some((a, d)), [Accessor::Index(ix), Accessor::Field(m)])
-                        if m.key() == "READSTATUS" =>
+                        if m.key() == "READSTATUS" && ix.len() == 1 =>
                     {
                         used.note(a, Some(d));
                         replace = Some(call(a, "STATUS", Some(ix.clone())));
@@ -517,8 +517,10 @@ fn member(
     // (`axisRefs[i].Status.Error`): the axis, its bounds and index, the members after it
     let (axis, dim, index, rest) = match (axes.find(&q), axes.find_array(&q)) {
         (Some(a), _) => (a.clone(), None, None, q.accessors.to_vec()),
+        // one index (the arrays read are one-dimensional; another count is the semantic
+        // checks' error, on the user's names)
         (None, Some((a, d))) => match q.accessors.split_first() {
-            Some((Accessor::Index(ix), rest)) => {
+            Some((Accessor::Index(ix), rest)) if ix.len() == 1 => {
                 (a.clone(), Some(d.clone()), Some(ix.clone()), rest.to_vec())
             }
             _ => return None,
