@@ -5,8 +5,9 @@
 //! the block written in ST on top of ladderc's own blocks; the axis configuration marked so that
 //! its globals include the per-axis tables the block reads (`__TC2_MODULO`, `__TC2_ACC`,
 //! `__TC2_DEC`, indexed by `AxisNo`). Invariants: the block's text is fixed (nothing of the user's
-//! input enters it); the block only commands motion through MC_MoveRelative, so every axis limit
-//! holds as for any other move.
+//! input enters it; `tc2_blocks/*.st`); the blocks only command motion through ladderc's PLCopen
+//! blocks (MC_MoveRelative, MC_MoveAbsolute, MC_MoveAdditive, MC_MoveVelocity, MC_Halt), so every
+//! axis limit holds as for any other move.
 //!
 //! MC_MoveModulo, per Infosys (Tc2_MC2 > Motion > MC_MoveModulo): a positioning to a modulo
 //! position of the axis; the modulo period is the axis's `modulo_period` in the axes file (an
