@@ -3,7 +3,8 @@
 //! Input: the user's parsed units (IL, before the semantic checks) and the block library.
 //! Output: in each program and function block, every `VAR_TEMP` variable that is an argument of
 //! a library block call (`fbReset(Axis := Axis1, Execute := bReset AND Axis1.Status.Error)`: the
-//! ST lowering stores the expression in a temporary `__st_t1`) moved into a `VAR` block.
+//! ST lowering stores the expression in a temporary `__st_t1`), or an index of the called
+//! element or of an argument (`fbMove[i + 1](Axis := axes[i + 1])`), moved into a `VAR` block.
 //! Invariants: nothing else moves; a temporary is written before it is read in the same call (the
 //! ST lowering's and, by IEC 61131-3, the user's), so keeping its value between calls changes no
 //! result.
@@ -13,7 +14,7 @@
 //! and was out of that function's sight (the C compiler failed with "`v__st_t1` undeclared").
 
 use il_frontend::ast::{
-    CallArgs, CompilationUnit, IlStmt, InstrKind, LibraryElement, Operand, PouKind, TypeRef,
+    Accessor, CallArgs, CompilationUnit, IlStmt, InstrKind, LibraryElement, Operand, PouKind,
     VarBlock, VarKind,
 };
 use param_passing::library::Library;
@@ -33,7 +34,8 @@ pub fn keep(units: &mut [CompilationUnit], lib: &Library) {
                 .var_blocks
                 .iter()
                 .flat_map(|b| b.vars.iter())
-                .filter(|v| matches!(&v.ty, TypeRef::Named(t) if lib.get(&t.name).is_some()))
+                // an instance, or an array of them (`fbMove : ARRAY [0..2] OF MC_MoveAbsolute`)
+                .filter(|v| param_passing::lower::instance_block(&v.ty, lib).is_some())
                 .map(|v| v.name.key())
                 .collect();
             if instances.is_empty() {
@@ -66,13 +68,35 @@ fn args(body: &[IlStmt], instances: &HashSet<String>, out: &mut HashSet<String>)
                 args: CallArgs::Formal(list),
                 ..
             } if instances.contains(&instance.base.key()) => {
+                // the element's index (`fbMove[i + 1]` indexes with a temporary) and every
+                // variable an argument names, with its own indexes (`axes[i + 1]`)
+                for a in instance.accessors.iter() {
+                    accessor_vars(a, out);
+                }
                 for a in list {
                     if let Operand::Var(v) = &a.value {
                         out.insert(v.base.key());
+                        for a in v.accessors.iter() {
+                            accessor_vars(a, out);
+                        }
                     }
                 }
             }
             _ => {}
+        }
+    }
+}
+
+/// The variables an index names (`[i, __st_t2]`), with their own indexes.
+fn accessor_vars(a: &Accessor, out: &mut HashSet<String>) {
+    if let Accessor::Index(ix) = a {
+        for o in ix {
+            if let Operand::Var(v) = o {
+                out.insert(v.base.key());
+                for a in v.accessors.iter() {
+                    accessor_vars(a, out);
+                }
+            }
         }
     }
 }

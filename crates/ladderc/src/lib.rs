@@ -68,6 +68,7 @@ pub mod encoding;
 pub mod fuzzing;
 pub mod loop_guard;
 pub mod lsp;
+pub mod motion_in_struct;
 pub mod motion_link;
 pub mod output;
 pub mod pipeline;

@@ -738,6 +738,7 @@ impl Session {
             crate::axis_links::link(&mut user, &mut axes, &mut self.diags);
             crate::tc2_mc2::read_spellings(&mut user, &library, &mut axes, &mut self.diags);
             crate::block_temps::keep(&mut user, &library);
+            crate::motion_in_struct::report(&user, &library, &mut self.diags);
         }
         let cycle_ms = match (axes.cycle_ms, opts.cycle_ms) {
             (Some(a), Some(c)) if (a - c).abs() > 1e-9 * a.abs().max(1.0) => {
@@ -1141,10 +1142,14 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
                 .collect(),
             LibraryElement::DataTypes(_) | LibraryElement::Action(_) => vec![],
         };
-        blocks
-            .iter()
-            .flat_map(|b| b.vars.iter())
-            .any(|v| matches!(&v.ty, TypeRef::Named(t) if library_type(t)))
+        blocks.iter().flat_map(|b| b.vars.iter()).any(|v| {
+            // `fbPower : ARRAY [1..4] OF MC_Power;`, `axes : ARRAY [1..4] OF AXIS_REF;`
+            let mut ty = &v.ty;
+            while let TypeRef::Array { element, .. } = ty {
+                ty = element;
+            }
+            matches!(ty, TypeRef::Named(t) if library_type(t))
+        })
     })
 }
 

@@ -13,11 +13,16 @@
 //! moves" (here: discrete, continuous, synchronized motion, homing or stopping), `NotMoving` its
 //! negation; the simulated drive's actual values equal its set values, so `ActPos`/`SetPos` and
 //! `ActVelo`/`SetVelo` read the same.
+//!
+//! An element of a one-dimensional `ARRAY [l..u] OF AXIS_REF` (`GVL.axisRefs[i].NcToPlc.ActPos`,
+//! any index) reads the same members: the hidden blocks are arrays of the same bounds, each
+//! element called on its axis at the start of the body (unrolled, so at most
+//! [`MAX_ARRAY_AXES`] elements; a larger array's members stay unknown, E1021).
 
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
-    Accessor, ArgDir, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind, Instruction,
-    Literal, LiteralKind, Op, Operand, Pou, TypeRef, VarDecl, VarRef,
+    Accessor, ArgDir, ArrayDim, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind,
+    Instruction, Literal, LiteralKind, Op, Operand, Pou, TypeRef, VarDecl, VarRef,
 };
 use il_frontend::Span;
 
@@ -33,6 +38,28 @@ const STATUS: &[(&str, &str)] = &[
     ("CONTINUOUSMOTION", "ContinuousMotion"),
     ("SYNCHRONIZEDMOTION", "SynchronizedMotion"),
     ("HOMING", "Homing"),
+    // Infosys, ST_AxisStatus: `InTargetPosition` "axis is in target position (position window)",
+    // `InPositionArea` "axis is in the position range". The simulated drive follows its set
+    // point exactly, so an axis that stands with no motion (PLCopen Standstill) stands at the end
+    // of its last move; one in motion is not (yet) there.
+    ("INTARGETPOSITION", "Standstill"),
+    ("INPOSITIONAREA", "Standstill"),
+];
+
+/// The ST_AxisStatus names of [`STATUS`]'s entries, as Tc2_MC2 spells them.
+const STATUS_NAMES: &[&str] = &[
+    "Error",
+    "ErrorID",
+    "ErrorStop",
+    "Disabled",
+    "Stopping",
+    "StandStill",
+    "DiscreteMotion",
+    "ContinuousMotion",
+    "SynchronizedMotion",
+    "Homing",
+    "InTargetPosition",
+    "InPositionArea",
 ];
 
 /// The MC_ReadStatus outputs whose OR is `Moving`.
@@ -63,9 +90,9 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
             pair("Status", "ST_AxisStatus (Tc2_MC2)"),
             pair("NcToPlc", "NCTOPLC_AXIS_REF (Tc2_MC2)"),
         ],
-        Some("STATUS") => STATUS
+        Some("STATUS") => STATUS_NAMES
             .iter()
-            .map(|(_, o)| pair(if *o == "Standstill" { "StandStill" } else { o }, "BOOL"))
+            .map(|n| pair(n, "BOOL"))
             .filter(|(n, _)| n != "ErrorID")
             .chain([
                 pair("ErrorID", "UDINT"),
@@ -76,6 +103,7 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
         Some("NCTOPLC") => ["ActPos", "SetPos", "ActVelo", "SetVelo"]
             .iter()
             .map(|n| pair(n, "LREAL"))
+            .chain([pair("ErrorCode", "UDINT")])
             .collect(),
         _ => Vec::new(),
     }
@@ -88,12 +116,63 @@ pub fn axis_refs<'a>(vars: impl Iterator<Item = &'a VarDecl>) -> Vec<Ident> {
         .collect()
 }
 
+/// The most elements of an `ARRAY OF AXIS_REF` whose members are read (the hidden blocks are
+/// called element by element, unrolled).
+pub const MAX_ARRAY_AXES: i128 = 64;
+
+/// The one-dimensional `ARRAY [l..u] OF AXIS_REF` variables of `vars` (of at most
+/// [`MAX_ARRAY_AXES`] elements), with their bounds.
+pub fn axis_ref_arrays<'a>(vars: impl Iterator<Item = &'a VarDecl>) -> Vec<(Ident, ArrayDim)> {
+    vars.filter_map(|v| match &v.ty {
+        TypeRef::Array { dims, element, .. }
+            if matches!(element.as_ref(), TypeRef::Named(t) if t.is("AXIS_REF")) =>
+        {
+            match dims.as_slice() {
+                [d] if d.upper >= d.lower && d.upper - d.lower < MAX_ARRAY_AXES => {
+                    Some((v.name.clone(), d.clone()))
+                }
+                _ => None,
+            }
+        }
+        _ => None,
+    })
+    .collect()
+}
+
 /// The `AXIS_REF` variables a POU reads: its own and the project's global ones.
 pub struct Axes {
     /// The variables.
     pub names: Vec<Ident>,
+    /// The arrays of axes ([`axis_ref_arrays`]).
+    pub arrays: Vec<(Ident, ArrayDim)>,
     /// (global variable list, variable), upper case: `GVL_Axes.Axis1` names `Axis1`.
     pub lists: Vec<(String, String)>,
+}
+
+/// The axes whose members a body reads: scalars and arrays (each once).
+#[derive(Default)]
+struct Used {
+    scalars: Vec<Ident>,
+    arrays: Vec<(Ident, ArrayDim)>,
+    /// The axes (upper case) whose `NcToPlc.ErrorCode` is read.
+    error_codes: Vec<String>,
+}
+
+impl Used {
+    fn note(&mut self, a: &Ident, dim: Option<&ArrayDim>) {
+        match dim {
+            None => {
+                if !self.scalars.iter().any(|u| u.key() == a.key()) {
+                    self.scalars.push(a.clone());
+                }
+            }
+            Some(d) => {
+                if !self.arrays.iter().any(|(u, _)| u.key() == a.key()) {
+                    self.arrays.push((a.clone(), d.clone()));
+                }
+            }
+        }
+    }
 }
 
 impl Axes {
@@ -112,27 +191,63 @@ impl Axes {
     fn find(&self, v: &VarRef) -> Option<&Ident> {
         self.names.iter().find(|a| a.key() == v.base.key())
     }
+    fn find_array(&self, v: &VarRef) -> Option<&(Ident, ArrayDim)> {
+        self.arrays.iter().find(|(a, _)| a.key() == v.base.key())
+    }
 }
 
 /// Reads the Tc2_MC2 members of the POU's `AXIS_REF` variables and of the project's global ones
 /// (see the module header).
 pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
-    let mut names = axis_refs(p.var_blocks.iter().flat_map(|b| b.vars.iter()));
+    let own = p.var_blocks.iter().flat_map(|b| b.vars.iter());
+    let mut names = axis_refs(own.clone());
     names.extend(globals.names.iter().cloned());
+    let mut arrays = axis_ref_arrays(own);
+    arrays.extend(globals.arrays.iter().cloned());
     let axes = Axes {
         names,
+        arrays,
         lists: globals.lists.clone(),
     };
     let axes = &axes;
-    let mut used: Vec<Ident> = Vec::new();
+    let mut used = Used::default();
     rewrite(&mut p.body, axes, &mut used, diags);
-    if used.is_empty() {
+    if used.scalars.is_empty() && used.arrays.is_empty() {
         return;
     }
     let mut hidden = Vec::new();
     let mut prologue = Vec::new();
-    for axis in &used {
+    let axes_used = used
+        .scalars
+        .iter()
+        .map(|a| (a, None))
+        .chain(used.arrays.iter().map(|(a, d)| (a, Some(d))));
+    for (axis, dim) in axes_used {
         let at = axis.span;
+        let ty = |name: &str| {
+            let one = TypeRef::Named(Ident::new(name, at));
+            match dim {
+                None => one,
+                Some(d) => TypeRef::Array {
+                    dims: vec![d.clone()],
+                    element: Box::new(one),
+                    span: at,
+                },
+            }
+        };
+        // the elements, in order (a scalar axis: one, without an index)
+        let elements: Vec<Option<Vec<Operand>>> = match dim {
+            None => vec![None],
+            Some(d) => (d.lower..=d.upper)
+                .map(|k| {
+                    Some(vec![Operand::literal(Literal {
+                        kind: LiteralKind::Int(k),
+                        type_prefix: None,
+                        span: at,
+                    })])
+                })
+                .collect(),
+        };
         for (suffix, block) in [
             ("STATUS", "MC_ReadStatus"),
             ("POS", "MC_ReadActualPosition"),
@@ -141,24 +256,47 @@ pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
             hidden.push(VarDecl {
                 name: Ident::new(hidden_name(axis, suffix), at),
                 location: None,
-                ty: TypeRef::Named(Ident::new(block, at)),
+                ty: ty(block),
                 init: None,
                 edge: None,
                 span: at,
             });
-            prologue.push(call(axis, suffix));
+            prologue.extend(elements.iter().map(|ix| call(axis, suffix, ix.clone())));
         }
         for flag in ["MOVING", "NOTMOVING"] {
             hidden.push(VarDecl {
                 name: Ident::new(hidden_name(axis, flag), at),
                 location: None,
-                ty: TypeRef::Named(Ident::new("BOOL", at)),
+                ty: ty("BOOL"),
                 init: None,
                 edge: None,
                 span: at,
             });
         }
-        prologue.extend(moving(axis));
+        for ix in &elements {
+            prologue.extend(moving(axis, ix.clone()));
+        }
+        if used.error_codes.contains(&axis.key()) {
+            hidden.push(VarDecl {
+                name: Ident::new(hidden_name(axis, "AXERR"), at),
+                location: None,
+                ty: ty("MC_ReadAxisError"),
+                init: None,
+                edge: None,
+                span: at,
+            });
+            hidden.push(VarDecl {
+                name: Ident::new(hidden_name(axis, "ERRORCODE"), at),
+                location: None,
+                ty: ty("UDINT"),
+                init: None,
+                edge: None,
+                span: at,
+            });
+            for ix in &elements {
+                prologue.extend(error_code(axis, ix.clone()));
+            }
+        }
     }
     crate::block_temps::add_hidden_vars(p, hidden);
     p.body.splice(0..0, prologue);
@@ -168,10 +306,12 @@ fn hidden_name(axis: &Ident, what: &str) -> String {
     format!("__TC2_{}_{what}", axis.key())
 }
 
-fn var(name: String, field: Option<&str>, at: Span) -> VarRef {
-    let accessors: Vec<Accessor> = field
-        .map(|f| Accessor::Field(Ident::new(f, at)))
+/// `name[index].field`, each part when given.
+fn indexed(name: String, index: Option<Vec<Operand>>, field: Option<&str>, at: Span) -> VarRef {
+    let accessors: Vec<Accessor> = index
+        .map(Accessor::Index)
         .into_iter()
+        .chain(field.map(|f| Accessor::Field(Ident::new(f, at))))
         .collect();
     VarRef {
         base: Ident::new(name, at),
@@ -184,8 +324,9 @@ fn instr(kind: InstrKind, at: Span) -> IlStmt {
     IlStmt::Instr(Instruction { kind, span: at })
 }
 
-/// `CAL __TC2_<AXIS>_<suffix>(Axis := <axis>, Enable := TRUE)`.
-fn call(axis: &Ident, suffix: &str) -> IlStmt {
+/// `CAL __TC2_<AXIS>_<suffix>(Axis := <axis>, Enable := TRUE)`; of an array of axes, of the
+/// element `index` (`CAL __TC2_<AXIS>_<suffix>[i](Axis := <axis>[i], ...)`).
+fn call(axis: &Ident, suffix: &str, index: Option<Vec<Operand>>) -> IlStmt {
     let at = axis.span;
     let arg = |name: &str, value: Operand| FormalArg {
         name: Ident::new(name, at),
@@ -194,7 +335,10 @@ fn call(axis: &Ident, suffix: &str) -> IlStmt {
         span: at,
     };
     let args = vec![
-        arg("Axis", Operand::Var(var(axis.name.clone(), None, at))),
+        arg(
+            "Axis",
+            Operand::Var(indexed(axis.name.clone(), index.clone(), None, at)),
+        ),
         arg(
             "Enable",
             Operand::literal(Literal {
@@ -207,15 +351,57 @@ fn call(axis: &Ident, suffix: &str) -> IlStmt {
     instr(
         InstrKind::Call {
             cond: Condition::Always,
-            instance: Box::new(var(hidden_name(axis, suffix), None, at)),
+            instance: Box::new(indexed(hidden_name(axis, suffix), index, None, at)),
             args: CallArgs::Formal(args),
         },
         at,
     )
 }
 
-/// `LD status.DiscreteMotion OR ... ST __TC2_<AXIS>_MOVING STN __TC2_<AXIS>_NOTMOVING`.
-fn moving(axis: &Ident) -> Vec<IlStmt> {
+/// `CAL __TC2_<AXIS>_AXERR(...)`, `LD __TC2_<AXIS>_AXERR.AxisErrorID WORD_TO_UDINT ST
+/// __TC2_<AXIS>_ERRORCODE` (of the element `index` of an array of axes): Tc2_MC2's
+/// `NcToPlc.ErrorCode` (UDINT, 0 while the axis has no error) read as the simulated axis's error
+/// (MC_ReadAxisError's AxisErrorID, ladderc's ErrorID numbers).
+fn error_code(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
+    let at = axis.span;
+    let simple = |op: Op, v: VarRef| {
+        instr(
+            InstrKind::Simple {
+                op,
+                negate: false,
+                operand: Some(Operand::Var(v)),
+            },
+            at,
+        )
+    };
+    vec![
+        call(axis, "AXERR", index.clone()),
+        simple(
+            Op::Ld,
+            indexed(
+                hidden_name(axis, "AXERR"),
+                index.clone(),
+                Some("AxisErrorID"),
+                at,
+            ),
+        ),
+        instr(
+            InstrKind::FunctionCall {
+                name: Ident::new("WORD_TO_UDINT", at),
+                args: Box::new(CallArgs::None),
+            },
+            at,
+        ),
+        simple(
+            Op::St,
+            indexed(hidden_name(axis, "ERRORCODE"), index, None, at),
+        ),
+    ]
+}
+
+/// `LD status.DiscreteMotion OR ... ST __TC2_<AXIS>_MOVING STN __TC2_<AXIS>_NOTMOVING` (of
+/// the element `index` of an array of axes).
+fn moving(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
     let at = axis.span;
     let simple = |op: Op, v: VarRef| {
         instr(
@@ -230,21 +416,23 @@ fn moving(axis: &Ident) -> Vec<IlStmt> {
     let mut out = Vec::new();
     for (k, f) in MOVING.iter().enumerate() {
         let op = if k == 0 { Op::Ld } else { Op::Or };
-        out.push(simple(op, var(hidden_name(axis, "STATUS"), Some(f), at)));
+        let status = indexed(hidden_name(axis, "STATUS"), index.clone(), Some(f), at);
+        out.push(simple(op, status));
     }
-    out.push(simple(Op::St, var(hidden_name(axis, "MOVING"), None, at)));
+    let flag = |name: &str| indexed(hidden_name(axis, name), index.clone(), None, at);
+    out.push(simple(Op::St, flag("MOVING")));
     out.push(instr(
         InstrKind::Simple {
             op: Op::St,
             negate: true,
-            operand: Some(Operand::Var(var(hidden_name(axis, "NOTMOVING"), None, at))),
+            operand: Some(Operand::Var(flag("NOTMOVING"))),
         },
         at,
     ));
     out
 }
 
-fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Vec<Ident>, diags: &mut Diagnostics) {
+fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagnostics) {
     for s in body {
         let IlStmt::Instr(i) = s else { continue };
         let mut replace = None;
@@ -263,10 +451,18 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Vec<Ident>, diags: &mut 
             InstrKind::Call { instance, args, .. } => {
                 axes.unqualify(instance);
                 let axis = axes.find(instance);
-                match (axis, instance.accessors.as_slice()) {
-                    (Some(a), [Accessor::Field(m)]) if m.key() == "READSTATUS" => {
-                        note_used(a, used);
-                        replace = Some(call(a, "STATUS"));
+                let array = axes.find_array(instance);
+                match (axis, array, instance.accessors.as_slice()) {
+                    (Some(a), _, [Accessor::Field(m)]) if m.key() == "READSTATUS" => {
+                        used.note(a, None);
+                        replace = Some(call(a, "STATUS", None));
+                    }
+                    // `axisRefs[i].ReadStatus()`
+                    (None, Some((a, d)), [Accessor::Index(ix), Accessor::Field(m)])
+                        if m.key() == "READSTATUS" && ix.len() == 1 =>
+                    {
+                        used.note(a, Some(d));
+                        replace = Some(call(a, "STATUS", Some(ix.clone())));
                     }
                     _ => {
                         let _ = member(instance, axes, used, diags);
@@ -294,13 +490,7 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Vec<Ident>, diags: &mut 
     }
 }
 
-fn note_used(a: &Ident, used: &mut Vec<Ident>) {
-    if !used.iter().any(|u| u.key() == a.key()) {
-        used.push(a.clone());
-    }
-}
-
-fn operand(o: &mut Operand, axes: &Axes, used: &mut Vec<Ident>, diags: &mut Diagnostics) {
+fn operand(o: &mut Operand, axes: &Axes, used: &mut Used, diags: &mut Diagnostics) {
     if let Operand::Var(v) = o {
         if let Some(kind) = member(v, axes, used, diags) {
             // reported: the literal (FALSE for a status flag, 0 for an NC value) stops a second report
@@ -318,14 +508,27 @@ fn operand(o: &mut Operand, axes: &Axes, used: &mut Vec<Ident>, diags: &mut Diag
 fn member(
     v: &mut VarRef,
     axes: &Axes,
-    used: &mut Vec<Ident>,
+    used: &mut Used,
     diags: &mut Diagnostics,
 ) -> Option<LiteralKind> {
     let mut q = v.clone();
     axes.unqualify(&mut q);
-    let axis = axes.find(&q)?.clone();
+    // a scalar axis (`Axis.Status.Error`) or an element of an array of axes
+    // (`axisRefs[i].Status.Error`): the axis, its bounds and index, the members after it
+    let (axis, dim, index, rest) = match (axes.find(&q), axes.find_array(&q)) {
+        (Some(a), _) => (a.clone(), None, None, q.accessors.to_vec()),
+        // one index (the arrays read are one-dimensional; another count is the semantic
+        // checks' error, on the user's names)
+        (None, Some((a, d))) => match q.accessors.split_first() {
+            Some((Accessor::Index(ix), rest)) if ix.len() == 1 => {
+                (a.clone(), Some(d.clone()), Some(ix.clone()), rest.to_vec())
+            }
+            _ => return None,
+        },
+        (None, None) => return None,
+    };
     let axis = &axis;
-    let [Accessor::Field(group), Accessor::Field(f), ..] = q.accessors.as_slice() else {
+    let [Accessor::Field(group), Accessor::Field(f), ..] = rest.as_slice() else {
         return None;
     };
     let (group, field) = (group.key(), f.key());
@@ -340,6 +543,12 @@ fn member(
                 }
             },
         },
+        "NCTOPLC" if field == "ERRORCODE" => {
+            if !used.error_codes.contains(&axis.key()) {
+                used.error_codes.push(axis.key());
+            }
+            (hidden_name(axis, "ERRORCODE"), None)
+        }
         "NCTOPLC" => match NC_TO_PLC.iter().find(|(k, _)| *k == field) {
             Some((_, true)) => (hidden_name(axis, "POS"), Some("Position")),
             Some((_, false)) => (hidden_name(axis, "VELO"), Some("Velocity")),
@@ -350,12 +559,12 @@ fn member(
         },
         _ => return None,
     };
-    if q.accessors.len() > 2 {
+    if rest.len() > 2 {
         return None;
     }
-    note_used(axis, used);
+    used.note(axis, dim.as_ref());
     let at = v.span;
-    *v = var(name, out, at);
+    *v = indexed(name, index, out, at);
     None
 }
 
@@ -367,6 +576,7 @@ fn e1042(member: &str, span: Span) -> Diagnostic {
     .at(span)
     .with_hint(
         "ladderc reads Status.Error, ErrorID, ErrorStop, Disabled, Stopping, StandStill, DiscreteMotion, \
-         ContinuousMotion, SynchronizedMotion, Homing, Moving, NotMoving and NcToPlc.ActPos, SetPos, ActVelo, SetVelo",
+         ContinuousMotion, SynchronizedMotion, Homing, InTargetPosition, InPositionArea, Moving, \
+         NotMoving and NcToPlc.ActPos, SetPos, ActVelo, SetVelo, ErrorCode",
     )
 }

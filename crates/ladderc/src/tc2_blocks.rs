@@ -5,8 +5,9 @@
 //! the block written in ST on top of ladderc's own blocks; the axis configuration marked so that
 //! its globals include the per-axis tables the block reads (`__TC2_MODULO`, `__TC2_ACC`,
 //! `__TC2_DEC`, indexed by `AxisNo`). Invariants: the block's text is fixed (nothing of the user's
-//! input enters it); the block only commands motion through MC_MoveRelative, so every axis limit
-//! holds as for any other move.
+//! input enters it; `tc2_blocks/*.st`); the blocks only command motion through ladderc's PLCopen
+//! blocks (MC_MoveRelative, MC_MoveAbsolute, MC_MoveAdditive, MC_MoveVelocity, MC_Halt), so every
+//! axis limit holds as for any other move.
 //!
 //! MC_MoveModulo, per Infosys (Tc2_MC2 > Motion > MC_MoveModulo): a positioning to a modulo
 //! position of the axis; the modulo period is the axis's `modulo_period` in the axes file (an
@@ -18,10 +19,19 @@
 //! cannot reverse it) and the target is the first one ahead at which the axis can stop with the
 //! block's deceleration (v^2 / 2d; with a jerk limit the motion library still keeps every limit
 //! and plans the stop, which may then pass the target and come back). Acceleration and
-//! Deceleration left out or 0 take the axis's configured limits. The distance is computed from
-//! the set position when the command is issued, so with `MC_Buffered` it is measured from where
-//! the axis is then, not from the end of the move before. A position within 1e-9 periods of the
-//! target counts as the target (the rounding of a full turn is no distance).
+//! Deceleration left out or 0 take the axis's configured limits. With `MC_Aborting` the distance
+//! is computed from the set position when the command is issued; a position within 1e-9 periods
+//! of the target counts as the target (the rounding of a full turn is no distance). With
+//! `MC_Buffered` or a blending mode the command waits in the axis's queue and its target is
+//! computed from where the queue ends (Infosys: "the same applies to a start with the BufferMode
+//! MC_Buffered", the rule of a start from standstill): the modulo position is the motion
+//! library's MC_MoveAbsolute on the modulo axis with the block's Direction and BufferMode, which
+//! measures from the last commanded target, and the full turns of a Position of one period or
+//! more follow as an MC_MoveAdditive blended onto it (MC_BlendingLow, same direction, so the axis
+//! does not stop between them); Done comes with the last of them. Queued full turns with
+//! `MC_Shortest_Way` or `MC_Current_Direction` are refused with ErrorID 25 (InvalidDirection):
+//! which way is shorter, or current, is only known where the queue ends (Beckhoff's TC3 MC3
+//! MC_MoveModulo likewise requires a direction other than ShortestDistance for additional turns).
 //!
 //! MC_Jog, per Infosys (Tc2_MC2 > Motion > MC_Jog, E_JogMode): a rising edge of `JogForward` (which
 //! wins over a simultaneous `JogBackwards`) or `JogBackwards` starts a jog, and no edge is taken
@@ -31,8 +41,12 @@
 //! MC_JOGMODE_CONTINOUS moves while the key is held with the block's Velocity, Acceleration,
 //! Deceleration and Jerk (0: the axis's); releasing the key halts the axis (MC_Halt), and Done
 //! rises once it stands. MC_JOGMODE_INCHING moves `Position` per edge (MC_MoveRelative).
-//! MC_JOGMODE_INCHING_MODULO is refused (Error, ErrorID 32 InvalidMode): ladderc does not round
-//! the stop position.
+//! MC_JOGMODE_INCHING_MODULO (Infosys, E_JogMode: "axis moves for a certain relative distance -
+//! stop position is rounded to the distance value") moves per edge to the whole multiple of
+//! `Position` nearest to one step ahead of the axis's actual position (on a modulo axis its
+//! position within the period), a tie going ahead: a step of between a half and one and a half
+//! `Position`, always in the jog's direction; a `Position` of 0 is ErrorID 24 (InvalidPosition).
+//! Any other mode is refused with ErrorID 32 (InvalidMode).
 
 use diagnostics::Diagnostics;
 use il_frontend::ast::{CompilationUnit, LibraryElement, TypeRef};
@@ -58,265 +72,11 @@ const JOG_MODE: &str = "TYPE E_JogMode :
 END_TYPE
 ";
 
-const JOG: &str = "FUNCTION_BLOCK MC_Jog
-VAR_IN_OUT
-    Axis : AXIS_REF;
-END_VAR
-VAR_INPUT
-    JogForward : BOOL;
-    JogBackwards : BOOL;
-    Mode : E_JogMode;
-    Position : LREAL;
-    Velocity : LREAL;
-    Acceleration : LREAL;
-    Deceleration : LREAL;
-    Jerk : LREAL;
-END_VAR
-VAR_OUTPUT
-    Done : BOOL;
-    Busy : BOOL;
-    Active : BOOL;
-    CommandAborted : BOOL;
-    Error : BOOL;
-    ErrorID : WORD;
-END_VAR
-VAR
-    fbVel : MC_MoveVelocity;
-    fbHalt : MC_Halt;
-    fbStep : MC_MoveRelative;
-    bFwdLast : BOOL;
-    bBwdLast : BOOL;
-    bFwdEdge : BOOL;
-    bBwdEdge : BOOL;
-    bHeld : BOOL;
-    bGoVel : BOOL;
-    bGoHalt : BOOL;
-    bGoStep : BOOL;
-    nDir : INT;
-    nKind : INT;
-    nAxis : UDINT;
-    nRefused : WORD;
-    eDir : MC_Direction;
-    fVel : LREAL;
-    fAcc : LREAL;
-    fDec : LREAL;
-    fDist : LREAL;
-END_VAR
-bFwdEdge := JogForward AND NOT bFwdLast;
-bBwdEdge := JogBackwards AND NOT bBwdLast;
-bFwdLast := JogForward;
-bBwdLast := JogBackwards;
-IF NOT JogForward AND NOT JogBackwards AND nDir = 0 THEN
-    nRefused := 0;
-END_IF
-(* a new jog only while none runs; JogForward first *)
-IF nDir = 0 AND (bFwdEdge OR bBwdEdge) THEN
-    IF bFwdEdge THEN
-        nDir := 1;
-        eDir := MC_Positive_Direction;
-    ELSE
-        nDir := -1;
-        eDir := MC_Negative_Direction;
-    END_IF
-    nAxis := Axis.AxisNo;
-    fVel := Velocity;
-    fAcc := Acceleration;
-    IF fAcc <= 0.0 THEN
-        fAcc := __TC2_ACC[nAxis];
-    END_IF
-    fDec := Deceleration;
-    IF fDec <= 0.0 THEN
-        fDec := __TC2_DEC[nAxis];
-    END_IF
-    nRefused := 0;
-    Done := FALSE;
-    CommandAborted := FALSE;
-    IF Mode = MC_JOGMODE_STANDARD_SLOW OR Mode = MC_JOGMODE_STANDARD_FAST THEN
-        nKind := 1;
-        IF Mode = MC_JOGMODE_STANDARD_SLOW THEN
-            fVel := __TC2_JOGSLOW[nAxis];
-        ELSE
-            fVel := __TC2_JOGFAST[nAxis];
-        END_IF
-        fAcc := __TC2_ACC[nAxis];
-        fDec := __TC2_DEC[nAxis];
-    ELSIF Mode = MC_JOGMODE_CONTINOUS THEN
-        nKind := 1;
-    ELSIF Mode = MC_JOGMODE_INCHING THEN
-        nKind := 2;
-        fDist := Position;
-        IF nDir < 0 THEN
-            fDist := -Position;
-        END_IF
-    ELSE
-        nKind := 0;
-        nDir := 0;
-        nRefused := 32;
-    END_IF
-END_IF
-bHeld := (nDir = 1 AND JogForward) OR (nDir = -1 AND JogBackwards);
-bGoVel := nKind = 1 AND nDir <> 0 AND bHeld;
-bGoHalt := nKind = 1 AND nDir <> 0 AND NOT bHeld;
-bGoStep := nKind = 2 AND nDir <> 0;
-fbVel(Axis := Axis, Execute := bGoVel, Velocity := fVel, Acceleration := fAcc, Deceleration := fDec,
-      Jerk := Jerk, Direction := eDir);
-fbHalt(Axis := Axis, Execute := bGoHalt, Deceleration := fDec, Jerk := Jerk);
-fbStep(Axis := Axis, Execute := bGoStep, Distance := fDist, Velocity := fVel, Acceleration := fAcc,
-       Deceleration := fDec, Jerk := Jerk);
-Active := fbVel.Active OR fbHalt.Active OR fbStep.Active;
-Error := fbVel.Error OR fbHalt.Error OR fbStep.Error OR nRefused <> 0;
-IF nRefused <> 0 THEN
-    ErrorID := nRefused;
-ELSIF fbVel.Error THEN
-    ErrorID := fbVel.ErrorID;
-ELSIF fbHalt.Error THEN
-    ErrorID := fbHalt.ErrorID;
-ELSE
-    ErrorID := fbStep.ErrorID;
-END_IF
-(* the end of a jog: stopped after the key was released, or the step done *)
-IF nKind = 1 AND (fbHalt.Done OR fbHalt.Error OR fbVel.Error OR fbHalt.CommandAborted) THEN
-    Done := fbHalt.Done;
-    CommandAborted := fbHalt.CommandAborted;
-    nDir := 0;
-    nKind := 0;
-ELSIF nKind = 2 AND (fbStep.Done OR fbStep.Error OR fbStep.CommandAborted) THEN
-    Done := fbStep.Done;
-    CommandAborted := fbStep.CommandAborted;
-    nDir := 0;
-    nKind := 0;
-END_IF
-Busy := nDir <> 0;
-END_FUNCTION_BLOCK
-";
+/// MC_Jog in ST (the module header says what it does).
+const JOG: &str = include_str!("tc2_blocks/MC_Jog.st");
 
-const MOVE_MODULO: &str = "FUNCTION_BLOCK MC_MoveModulo
-VAR_IN_OUT
-    Axis : AXIS_REF;
-END_VAR
-VAR_INPUT
-    Execute : BOOL;
-    Position : LREAL;
-    Velocity : LREAL;
-    Acceleration : LREAL;
-    Deceleration : LREAL;
-    Jerk : LREAL;
-    Direction : MC_Direction;
-    BufferMode : MC_BufferMode;
-END_VAR
-VAR_OUTPUT
-    Done : BOOL;
-    Busy : BOOL;
-    Active : BOOL;
-    CommandAborted : BOOL;
-    Error : BOOL;
-    ErrorID : WORD;
-END_VAR
-VAR
-    fbMove : MC_MoveRelative;
-    fbPos : MC_ReadActualPosition;
-    fbVel : MC_ReadActualVelocity;
-    bLast : BOOL;
-    bStart : BOOL;
-    bGo : BOOL;
-    nRefused : WORD;
-    nAxis : UDINT;
-    nTurns : DINT;
-    fPeriod : LREAL;
-    fAcc : LREAL;
-    fDec : LREAL;
-    fTurns : LREAL;
-    fGoal : LREAL;
-    fFwd : LREAL;
-    fBack : LREAL;
-    fVel : LREAL;
-    fStop : LREAL;
-    fDist : LREAL;
-END_VAR
-fbPos(Axis := Axis, Enable := TRUE);
-fbVel(Axis := Axis, Enable := TRUE);
-bStart := Execute AND NOT bLast;
-bLast := Execute;
-IF NOT Execute THEN
-    nRefused := 0;
-END_IF
-IF bStart THEN
-    nAxis := Axis.AxisNo;
-    fPeriod := __TC2_MODULO[nAxis];
-    fAcc := Acceleration;
-    IF fAcc <= 0.0 THEN
-        fAcc := __TC2_ACC[nAxis];
-    END_IF
-    fDec := Deceleration;
-    IF fDec <= 0.0 THEN
-        fDec := __TC2_DEC[nAxis];
-    END_IF
-    nRefused := 0;
-    IF fPeriod <= 0.0 THEN
-        nRefused := 24;
-    ELSIF Direction > MC_Current_Direction THEN
-        nRefused := 25;
-    ELSE
-        nTurns := LREAL_TO_DINT(Position / fPeriod);
-        IF DINT_TO_LREAL(nTurns) > Position / fPeriod THEN
-            nTurns := nTurns - 1;
-        END_IF
-        fTurns := DINT_TO_LREAL(nTurns);
-        fGoal := Position - fTurns * fPeriod;
-        fFwd := fGoal - fbPos.Position;
-        IF fFwd < 0.0 THEN
-            fFwd := fFwd + fPeriod;
-        END_IF
-        IF fFwd >= fPeriod THEN
-            fFwd := fFwd - fPeriod;
-        END_IF
-        (* the rounding of a full turn (89.99999999999994 for 90) is no distance *)
-        IF fFwd < fPeriod * 1.0E-9 OR fFwd > fPeriod * (1.0 - 1.0E-9) THEN
-            fFwd := 0.0;
-        END_IF
-        IF fFwd = 0.0 THEN
-            fBack := 0.0;
-        ELSE
-            fBack := fFwd - fPeriod;
-        END_IF
-        fVel := fbVel.Velocity;
-        IF fVel = 0.0 THEN
-            IF Direction = MC_Negative_Direction OR (Direction = MC_Shortest_Way AND -fBack < fFwd) THEN
-                fDist := fBack - fTurns * fPeriod;
-            ELSE
-                fDist := fFwd + fTurns * fPeriod;
-            END_IF
-        ELSE
-            fStop := fVel * fVel / (2.0 * fDec);
-            IF fVel > 0.0 THEN
-                fDist := fFwd;
-                WHILE fDist < fStop DO
-                    fDist := fDist + fPeriod;
-                END_WHILE
-            ELSE
-                fDist := fBack;
-                WHILE -fDist < fStop DO
-                    fDist := fDist - fPeriod;
-                END_WHILE
-            END_IF
-        END_IF
-    END_IF
-END_IF
-bGo := Execute AND nRefused = 0;
-fbMove(Axis := Axis, Execute := bGo, Distance := fDist, Velocity := Velocity,
-       Acceleration := fAcc, Deceleration := fDec, Jerk := Jerk, BufferMode := BufferMode);
-Done := fbMove.Done;
-Busy := fbMove.Busy;
-Active := fbMove.Active;
-CommandAborted := fbMove.CommandAborted;
-Error := fbMove.Error OR nRefused <> 0;
-IF nRefused <> 0 THEN
-    ErrorID := nRefused;
-ELSE
-    ErrorID := fbMove.ErrorID;
-END_IF
-END_FUNCTION_BLOCK
-";
+/// MC_MoveModulo in ST (the module header says what it does).
+const MOVE_MODULO: &str = include_str!("tc2_blocks/MC_MoveModulo.st");
 
 /// The names of the blocks ladderc builds.
 pub fn names() -> impl Iterator<Item = &'static str> {

@@ -78,10 +78,18 @@ pub fn read_spellings(
     let tables = std::cell::Cell::new(false);
     let mut globals = crate::tc2_axis_ref::Axes {
         names: Vec::new(),
+        arrays: Vec::new(),
         lists: Vec::new(),
     };
     for item in units.iter().flat_map(|u| u.items.iter()) {
         if let LibraryElement::GlobalVars(b) = item {
+            let arrays = crate::tc2_axis_ref::axis_ref_arrays(b.vars.iter());
+            if let Some(list) = &b.name {
+                globals
+                    .lists
+                    .extend(arrays.iter().map(|(n, _)| (list.key(), n.key())));
+            }
+            globals.arrays.extend(arrays);
             let names = crate::tc2_axis_ref::axis_refs(b.vars.iter());
             if let Some(list) = &b.name {
                 globals
@@ -138,18 +146,11 @@ pub fn read_spellings(
                 .var_blocks
                 .iter()
                 .flat_map(|b| b.vars.iter())
-                .filter_map(|v| match &v.ty {
-                    TypeRef::Named(t) => lib
-                        .get(&t.name)
-                        .map(|tpl| (v.name.key(), tpl.block.clone())),
-                    // `aPower : ARRAY [1..2] OF MC_Power`, called `aPower[i](...)`
-                    TypeRef::Array { element, .. } => match &**element {
-                        TypeRef::Named(t) => lib
-                            .get(&t.name)
-                            .map(|tpl| (v.name.key(), tpl.block.clone())),
-                        _ => None,
-                    },
-                    _ => None,
+                // an instance, or an array of them (`aPower : ARRAY [1..2] OF MC_Power`, called
+                // `aPower[i](...)`)
+                .filter_map(|v| {
+                    param_passing::lower::instance_block(&v.ty, lib)
+                        .map(|(tpl, _)| (v.name.key(), tpl.block.clone()))
                 })
                 .collect();
             if !instances.is_empty() {
@@ -252,8 +253,13 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                         if let Some(value) = scale {
                             let axis = list.iter().find(|a| a.name.key() == "AXIS");
                             if let Some(axis) = axis {
-                                let (decls, code) =
-                                    crate::tc2_override::set_override(instance, &axis.value, value);
+                                let declared = cx.types.vars.get(&instance.base.key());
+                                let (decls, code) = crate::tc2_override::set_override(
+                                    instance,
+                                    declared,
+                                    &axis.value,
+                                    value,
+                                );
                                 for d in decls {
                                     if !hidden.iter().any(|h| h.name.key() == d.name.key()) {
                                         hidden.push(d);

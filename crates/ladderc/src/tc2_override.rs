@@ -67,9 +67,13 @@ fn function(name: &str, arg: Operand, at: Span) -> IlStmt {
 }
 
 /// The hidden variables and the IL that give `axis` the override `value` (percent) after the
-/// MC_Power call of `instance` (see the module header).
+/// MC_Power call of `instance` (see the module header). `declared` is the instance variable's
+/// type: for an element of an array of MC_Power (`fbPower[i](..., Override := f)`) the hidden
+/// MC_SetOverride is an array of the same bounds, called at the same index, so each axis keeps
+/// its own override block.
 pub fn set_override(
     instance: &VarRef,
+    declared: Option<&TypeRef>,
     axis: &Operand,
     value: Operand,
 ) -> (Vec<VarDecl>, Vec<IlStmt>) {
@@ -84,7 +88,19 @@ pub fn set_override(
         edge: None,
         span: at,
     };
-    let decls = vec![decl(&block, "MC_SetOverride"), decl(&factor, "LREAL")];
+    let mut block_decl = decl(&block, "MC_SetOverride");
+    let mut called = var(&block, at);
+    if let (false, Some(TypeRef::Array { dims, span, .. })) =
+        (instance.accessors.is_empty(), declared)
+    {
+        block_decl.ty = TypeRef::Array {
+            dims: dims.clone(),
+            element: Box::new(TypeRef::Named(Ident::new("MC_SetOverride", at))),
+            span: *span,
+        };
+        called.accessors = instance.accessors.clone();
+    }
+    let decls = vec![block_decl, decl(&factor, "LREAL")];
     // an integer literal (`Override := 50`) is the LREAL it stands for
     let value = match &value {
         Operand::Literal(l) => match l.kind {
@@ -111,7 +127,7 @@ pub fn set_override(
         instr(
             InstrKind::Call {
                 cond: Condition::Always,
-                instance: Box::new(var(&block, at)),
+                instance: Box::new(called),
                 args: CallArgs::Formal(vec![
                     arg("Axis", axis.clone()),
                     arg(

@@ -24,6 +24,10 @@ pub const BUILTIN: &[(&str, &str)] = &[
         include_str!("../../../templates/MC_GearIn.xml"),
     ),
     (
+        "MC_GearOut.xml",
+        include_str!("../../../templates/MC_GearOut.xml"),
+    ),
+    (
         "MC_GroupDisable.xml",
         include_str!("../../../templates/MC_GroupDisable.xml"),
     ),

@@ -1,7 +1,8 @@
 //! Lowering of PLCopen block calls (paper A). Runs after the semantic check of the user's program (which
 //! typed every `CAL` against the block prelude) and before C generation.
 //!
-//! Input: compilation units whose POUs declare instances of template blocks and `CAL` them; the library;
+//! Input: compilation units whose POUs declare instances of template blocks (or arrays of them, whose
+//! elements are called `CAL fbMove[i](...)`) and `CAL` them; the library;
 //! the TM window; a strategy. Output: the units with every such `CAL` replaced, the hidden TM views declared,
 //! the instance types turned into plain structs (see `prelude`), plus the C of the embedded functions and a
 //! per-block report. Invariants: with the IL method a call becomes input transfer + one `FUNC Name()` +
@@ -250,23 +251,71 @@ struct BlockUse<'a> {
     first_call: Span,
 }
 
-/// Instances of template blocks declared in a POU (and in global blocks): variable key -> block name.
+/// A variable that holds instances of a template block: the block's name, and how many arrays
+/// deep the instances lie (0: the variable is one instance; 1: `fbPower : ARRAY [1..4] OF
+/// MC_Power;`, each element its own instance, called as `fbPower[i](...)`; 2: an array of arrays,
+/// `fbPower[i][j](...)`).
+#[derive(Debug, Clone)]
+struct InstanceVar {
+    block: String,
+    depth: usize,
+}
+
+/// The template block a declared type holds instances of (`MC_Power`, `ARRAY [..] OF MC_Power`,
+/// arrays of arrays of it), with the number of array levels around it.
+pub fn instance_block<'l>(ty: &TypeRef, lib: &'l Library) -> Option<(&'l Template, usize)> {
+    let mut depth = 0;
+    let mut ty = ty;
+    while let TypeRef::Array { element, .. } = ty {
+        depth += 1;
+        ty = element;
+    }
+    match ty {
+        TypeRef::Named(t) => lib.get(&t.name).map(|tpl| (tpl, depth)),
+        _ => None,
+    }
+}
+
+/// The block a declared type holds instances of (see [`instance_block`]).
+fn instance_var(ty: &TypeRef, lib: &Library) -> Option<InstanceVar> {
+    instance_block(ty, lib).map(|(tpl, depth)| InstanceVar {
+        block: tpl.block.clone(),
+        depth,
+    })
+}
+
+/// Instances of template blocks declared in a POU (and in global blocks): variable key -> block.
 fn instances(
-    unit_globals: &HashMap<String, String>,
+    unit_globals: &HashMap<String, InstanceVar>,
     pou: &Pou,
     lib: &Library,
-) -> HashMap<String, String> {
+) -> HashMap<String, InstanceVar> {
     let mut m = unit_globals.clone();
     for b in &pou.var_blocks {
         for v in &b.vars {
-            if let TypeRef::Named(t) = &v.ty {
-                if let Some(tpl) = lib.get(&t.name) {
-                    m.insert(v.name.key(), tpl.block.clone());
-                }
+            if let Some(iv) = instance_var(&v.ty, lib) {
+                m.insert(v.name.key(), iv);
             }
         }
     }
     m
+}
+
+/// The block a call's instance is an instance of: a plain instance called as itself, or an
+/// element of an array of instances (`fbMove[i]`, one subscript list per array level, any index
+/// expression: the generated code reads and writes that element's fields, so each element keeps
+/// its own state).
+fn called_block<'m>(
+    instances: &'m HashMap<String, InstanceVar>,
+    instance: &VarRef,
+) -> Option<&'m str> {
+    let iv = instances.get(&instance.base.key())?;
+    let fits = instance.accessors.len() == iv.depth
+        && instance
+            .accessors
+            .iter()
+            .all(|a| matches!(a, Accessor::Index(_)));
+    fits.then_some(iv.block.as_str())
 }
 
 fn calls_in<'a>(body: &'a [IlStmt], out: &mut Vec<&'a Instruction>) {
@@ -304,10 +353,8 @@ pub fn lower(
             };
             for b in blocks {
                 for v in &b.vars {
-                    if let TypeRef::Named(t) = &v.ty {
-                        if let Some(tpl) = lib.get(&t.name) {
-                            globals.insert(v.name.key(), tpl.block.clone());
-                        }
+                    if let Some(iv) = instance_var(&v.ty, lib) {
+                        globals.insert(v.name.key(), iv);
                     }
                 }
             }
@@ -328,10 +375,7 @@ pub fn lower(
                 let InstrKind::Call { instance, args, .. } = &c.kind else {
                     continue;
                 };
-                if !instance.accessors.is_empty() {
-                    continue;
-                }
-                let Some(block) = inst.get(&instance.base.key()) else {
+                let Some(block) = called_block(&inst, instance) else {
                     continue;
                 };
                 let t = lib.get(block).expect("instances come from the library");
@@ -560,10 +604,15 @@ fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
                 operand: Some(Operand::Var(v)),
                 ..
             } if v.base == *inst => {
-                // `ST mv.Position` or, for an array input, `ST mv.Position[0]`
-                if let [Accessor::Field(f)] | [Accessor::Field(f), Accessor::Index(_)] =
-                    v.accessors.as_slice()
-                {
+                // `ST mv.Position` or, for an array input, `ST mv.Position[0]`; of an array of
+                // instances, `ST mv[i].Position` (some element's)
+                let lead = v
+                    .accessors
+                    .iter()
+                    .take_while(|a| matches!(a, Accessor::Index(_)))
+                    .count();
+                let fields = &v.accessors[lead..];
+                if let [Accessor::Field(f)] | [Accessor::Field(f), Accessor::Index(_)] = fields {
                     out.push(f.name.clone());
                 }
             }
@@ -578,7 +627,7 @@ struct PouLowering<'a> {
     lib: &'a Library,
     window: &'a TmWindow,
     methods: &'a HashMap<String, (Method, Option<TmLayout>)>,
-    instances: &'a HashMap<String, String>,
+    instances: &'a HashMap<String, InstanceVar>,
     pou_name: String,
     /// TM views used in this POU: key -> (name, address, type).
     used_views: BTreeMap<String, (String, DirectAddress, &'static str)>,
@@ -646,12 +695,12 @@ impl PouLowering<'_> {
                             args,
                         },
                     span,
-                }) if instance.accessors.is_empty()
-                    && self.instances.contains_key(&instance.base.key()) =>
-                {
+                }) if called_block(self.instances, instance).is_some() => {
                     let (cond, span) = (*cond, *span);
                     let out = &mut top.out;
-                    let block = self.instances[&instance.base.key()].clone();
+                    let block = called_block(self.instances, instance)
+                        .expect("matched above")
+                        .to_string();
                     let t = self.lib.get(&block).expect("known block");
                     let (method, layout) = self.methods[&block.to_ascii_uppercase()].clone();
                     *self.site += 1;
