@@ -31,12 +31,13 @@
 //! board library the file does not hold (`I2C_OLED`, `I2C_AHT20` of sakunamary's `I2C_test`, E3009).
 //! denisynx's ST body writes an undeclared `Pump` (E1001); AlessioP04's SFC runs.
 //!
-//! One difference from the Beremiz/OpenPLC code generator, left as it is: inside one network ladderc
-//! evaluates every rung before it writes any coil (`crates/ladder-compiler/src/lower.rs`, "every
-//! contact sees the value the variable had before the rung"), while Beremiz's `PLCGenerator` assigns
-//! coil after coil from top to bottom, so a contact on a coil of the same network written above it
-//! reads the new value. In sakunamary's roaster a push-button toggle therefore settles one scan later
-//! here (the same values once it has); the tests below check the values after they settle.
+//! One difference from the Beremiz/OpenPLC code generator, closed in Session 33: these editors draw
+//! one left power rail for the whole body, and ladderc joined every rung hanging on it into one
+//! network, evaluated before any of its coils was written, so a rung read the coils of the rungs
+//! above it one scan late (sakunamary's roaster dropped its latches one scan after STOP). A rail now
+//! joins no rungs: each rung is a network, run top to bottom as IEC 61131-3 and Beremiz run them, and
+//! STOP drops every latch in its own scan. Inside one rung a contact still reads the value from before
+//! the rung (`crates/ladder-compiler/README.md`).
 //!
 //! Two projects are MIT-licensed and copied unchanged (`tests/fixtures/unseen/r14/`, with their
 //! licences and `README.md`); the rejections are reproduced here in small files of our own.
@@ -166,8 +167,8 @@ fn an_openplc_roaster_toggles_its_latches_with_edge_contacts() {
     assert_eq!(states(210), [1, 1, 0, 1, 0], "TON elapsed: system_out");
     assert_eq!(
         states(250),
-        [1, 1, 0, 0, 1],
-        "STOP: cooling (a later network) drops at once"
+        [0, 0, 0, 0, 1],
+        "STOP: every latch drops in the same scan (its rung reads stop_status below the STOP rung)"
     );
     assert_eq!(
         states(256),

@@ -43,11 +43,12 @@
 //! The gap, fixed here: Salnet86's `Tapparella` writes `LAMPADA1` from two coils of one network (the
 //! down rung's lamp names the up lamp; `LAMPADA2` is declared and never written). The coil written
 //! last wins every scan and the other never shows; W3400 only compared networks, so nothing was said.
-//! W1423 now reports it (the second writer located, the first labelled). Left as it is: inside one
-//! network ladderc evaluates every rung before it writes any coil (round 14,
-//! `crates/ladder-compiler/src/lower.rs`), so `Tapparella`'s self-holding contactors, each wired
-//! through a normally closed contact of its own coil, both switch on in the first scan and then
-//! blink together, where Beremiz's generator (coil after coil) lets the up contactor win; the chart
+//! W1423 now reports it (the second writer located, the first labelled). Closed in Session 33 (lead):
+//! ladderc joined every rung hanging on the body's one left rail into one network, evaluated before
+//! any coil was written, so `Tapparella`'s interlocked contactors both switched on in the first scan
+//! and then blinked together, where Beremiz's generator (coil after coil) lets the up contactor win;
+//! a rail now joins no rungs (`tests/tests/ladder_rungs_run.rs`), the two lamp coils are in two
+//! networks (W3400, W1423 stays for one rung), and the chart
 //! of `Tele` (interlock contacts not negated) never starts either contactor, in both.
 //!
 //! No project carries a licence: the constructs are reproduced in files of our own
@@ -128,9 +129,11 @@ fn il_call_gives_a_counters_reset_by_name() {
     assert_eq!(cv[35], 2.0);
 }
 
-/// Tapparella's slip: LAMP_UP written by the up rung and again by the down rung of one network.
-/// W1423 points at the second coil (line 75) and names both localIds; the lamp follows the down
-/// rung, the coil written last; SEEN_UP, two coils in series on one power flow, is not reported.
+/// Tapparella's slip: LAMP_UP written by the up rung and again by the down rung, two rungs on one
+/// left rail. Since Session 33 each rung is a network of its own (a rail joins none), so this is
+/// W3400 (two networks), at the second coil (line 75); the lamp follows the down rung, the rung
+/// run last; SEEN_UP, two coils in series on one power flow, is not reported. The same slip inside
+/// one rung (the second lamp coil on the up rung's first contact) is W1423, naming both localIds.
 #[test]
 fn two_coils_of_one_variable_in_one_network_are_reported() {
     let p = fixture("shutter_double_coil.xml");
@@ -141,10 +144,13 @@ fn two_coils_of_one_variable_in_one_network_are_reported() {
         &stimulus(&rows),
         &watch(&["K_UP", "K_DOWN", "LAMP_UP", "LAMP_DOWN", "SEEN_UP"]),
     );
-    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("W1423")).collect();
+    let warnings: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("W1423") || l.contains("W3400"))
+        .collect();
     assert_eq!(warnings.len(), 1, "{stderr}");
     assert!(
-        warnings[0].contains("shutter_double_coil.xml:75:19: warning[W1423]: `LAMP_UP` is written twice in network 1 (localId 5 and 9)"),
+        warnings[0].contains("shutter_double_coil.xml:75:19: warning[W3400]: `LAMP_UP` is written by network 1 (localId 5) and again by network 2"),
         "{stderr}"
     );
     assert!(warnings[0].contains("localId 9"), "{stderr}");
@@ -158,6 +164,29 @@ fn two_coils_of_one_variable_in_one_network_are_reported() {
     assert_eq!(at("K_UP")[6], 0.0);
     assert_eq!(at("LAMP_UP")[6], 1.0);
     assert!(at("LAMP_DOWN").iter().all(|&v| v == 0.0));
+
+    // the slip inside one rung: the second lamp coil hangs on the up rung's UP contact (localId 2),
+    // a different power flow than the first lamp coil's (after NOT K_DOWN): W1423
+    let one_rung = std::fs::read_to_string(&p).unwrap().replacen(
+        "<position x=\"430\" y=\"240\"/>\n        <connectionPointIn><relPosition x=\"0\" y=\"10\"/><connection refLocalId=\"7\"/>",
+        "<position x=\"430\" y=\"240\"/>\n        <connectionPointIn><relPosition x=\"0\" y=\"10\"/><connection refLocalId=\"2\"/>",
+        1,
+    );
+    assert_ne!(one_rung, std::fs::read_to_string(&p).unwrap());
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("shutter_one_rung.xml");
+    std::fs::write(&f, one_rung).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&f)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(
+        err.contains("warning[W1423]: `LAMP_UP` is written twice in network 1 (localId 5 and 9)"),
+        "{err}"
+    );
 
     // without the slip (the second lamp coil names LAMP_DOWN) nothing is reported
     let fixed = std::fs::read_to_string(&p).unwrap().replacen(
@@ -175,11 +204,8 @@ fn two_coils_of_one_variable_in_one_network_are_reported() {
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(0));
-    assert!(
-        !String::from_utf8_lossy(&out.stderr).contains("W1423"),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("W1423") && !err.contains("W3400"), "{err}");
 }
 
 /// The OpenPLC Editor v4 way of writing LD (codermery's gate): a rail pair per rung, connections

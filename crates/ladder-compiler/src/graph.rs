@@ -6,7 +6,8 @@
 //! Order (documented in the README): networks by the smallest non-zero `executionOrderId` of their
 //! elements, networks without one after them by the top-most then left-most element position (y, then x);
 //! inside a network, data flow first, ties broken the same way, then by localId.
-//! Invariants: every [`Wire::from`] indexes [`Graph::nodes`]; every node belongs to exactly one network;
+//! Invariants: every [`Wire::from`] indexes [`Graph::nodes`]; every node but a power rail belongs to exactly
+//! one network (rails join no rungs and are in none);
 //! a duplicate localId (E3014), an element without localId (E3013) or an unsupported element (E3012) is
 //! reported and left out of the graph.
 
@@ -672,6 +673,15 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     // misses the cache on every node): their wires resolved, each node joined with its sources in
     // the networks' union-find, connectors and continuations noted.
     let mut parent: Vec<usize> = (0..nodes.len()).collect();
+    // A power rail joins no networks: Beremiz and the OpenPLC Editor draw one left rail (and one
+    // right rail) for the whole body, each rung on its own connection point, and each rung is a
+    // network of its own, evaluated top to bottom (IEC 61131-3 4.2.7 / 8.2.7), so a rung reads the
+    // coils written by the rungs above it in the same scan. Joined through the rails, every rung of
+    // the body read the values from before the body (interlocked contactors both switched on).
+    let rail: Vec<bool> = nodes
+        .iter()
+        .map(|n| matches!(n.kind, Kind::LeftRail | Kind::RightRail))
+        .collect();
     let mut connector_nodes = Vec::new();
     let mut continuation_nodes = Vec::new();
     for (i, n) in nodes.iter_mut().enumerate() {
@@ -686,8 +696,13 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
             Kind::Continuation { .. } => continuation_nodes.push(i),
             _ => {}
         }
+        if rail[i] {
+            continue;
+        }
         for w in n.wires() {
-            union(i, w.from, &mut parent);
+            if !rail.get(w.from).copied().unwrap_or(false) {
+                union(i, w.from, &mut parent);
+            }
         }
     }
     // Connectors and continuations.
@@ -767,7 +782,16 @@ fn networks(
         let r = find(&mut parent, i);
         groups[r].push(i);
     }
-    let mut nets: Vec<Vec<usize>> = groups.into_iter().filter(|g| !g.is_empty()).collect();
+    // a power rail alone is no network (nothing is computed there; its rungs read it as TRUE)
+    let mut nets: Vec<Vec<usize>> = groups
+        .into_iter()
+        .filter(|g| {
+            !g.is_empty()
+                && !g
+                    .iter()
+                    .all(|&i| matches!(nodes[i].kind, Kind::LeftRail | Kind::RightRail))
+        })
+        .collect();
     let key = |net: &Vec<usize>| {
         let exec = net
             .iter()
@@ -779,7 +803,21 @@ fn networks(
             .map(|&i| (nodes[i].y, nodes[i].x))
             .min()
             .unwrap_or((0, 0));
-        (exec, top.0, top.1, net[0])
+        // the first element in document order, counting the rail a rung hangs on (a rung drawn
+        // after its rail and a label without position keep their document order)
+        let first = net
+            .iter()
+            .flat_map(|&i| {
+                std::iter::once(i).chain(
+                    nodes[i]
+                        .wires()
+                        .map(|w| w.from)
+                        .filter(|&f| matches!(nodes[f].kind, Kind::LeftRail)),
+                )
+            })
+            .min()
+            .unwrap_or(net[0]);
+        (exec, top.0, top.1, first, net[0])
     };
     // Each key is computed once; keys are unique (`net[0]` is in one network only), so the order is
     // the same as a stable sort's.

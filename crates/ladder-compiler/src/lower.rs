@@ -964,6 +964,10 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         if self.poisoned.contains(&w.from) {
             return None;
         }
+        if matches!(src.kind, Kind::LeftRail) {
+            // a rail is no network's node (`graph::read`): power flow, TRUE
+            return Some(self.val(Val::Const(true), src.span));
+        }
         if !self.built.contains(&w.from) {
             // Only a cut loop gets here: read the previous value of the variable or instance output.
             match &src.kind {

@@ -28,8 +28,8 @@ fn parallel_coils_share_one_evaluation_and_contacts_see_old_values() {
     let st_motor = pos(&ls, "ST Motor");
     assert_eq!(ls[st_motor + 1], "ST Lamp", "{il}");
     assert_eq!(ls[st_motor - 1], "ANDN Stop", "{il}");
-    // The branch that reads Motor was captured before Motor was written.
-    let capture = pos(&ls, "LD Motor");
+    // The branch that reads Motor (after the seal-in contact) was captured before Motor was written.
+    let capture = pos(&ls, "AND Motor");
     assert!(capture < st_motor, "{il}");
     assert!(ls[capture + 1].starts_with("ST __tmp_BOOL_"), "{il}");
     let was = pos(&ls, "ST WasRunning");
@@ -62,7 +62,11 @@ fn contacts_naming_a_block_output_read_it_after_the_block() {
     let il = dump_unit(&unit);
     let ls = lines(&il);
     let t1 = ls.iter().position(|l| l.starts_with("CAL T1(")).unwrap();
-    assert!(t1 < pos(&ls, "CAL C1(CU := T1.Q)"), "{il}");
+    assert!(t1 < pos(&ls, "AND T1.Q"), "{il}");
+    assert!(
+        pos(&ls, "AND T1.Q") < pos(&ls, "CAL C1(CU := __tmp_BOOL_0)"),
+        "{il}"
+    );
     // The self-resetting pulse reads P1.Q before calling P1: the previous scan's value.
     let p1 = ls.iter().position(|l| l.starts_with("CAL P1(")).unwrap();
     assert!(pos(&ls, "LDN P1.Q") < p1, "{il}");
