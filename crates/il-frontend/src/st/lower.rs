@@ -26,6 +26,7 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
+mod call_chain;
 mod for_control;
 mod memory;
 mod method_flow;
@@ -601,6 +602,18 @@ impl<'d> PouLowering<'d> {
     /// every level of the nesting (the E0108 limit must lower without overflowing a 2 MB stack).
     #[inline(never)]
     fn stmt_rewritten(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) -> bool {
+        if call_chain::stmt_has_chain(s) {
+            // `x := stack.Get(1).Pop();`: the chain's calls first, each result in a temporary
+            // (call_chain), then the statement on the temporaries with every other rewrite
+            if let Some((calls, rest)) = self.hoist_method_calls(s, diags) {
+                for c in &calls {
+                    self.stmt(c, out, diags);
+                }
+                self.stmt(&rest, out, diags);
+                self.types.get_mut().clear();
+                return true;
+            }
+        }
         if self.properties {
             let rewritten = super::property::rewrite(&self.env(), &self.methods, s, diags);
             if let Some((calls, rest)) = rewritten {
@@ -1567,6 +1580,7 @@ impl<'d> PouLowering<'d> {
                         .collect::<Option<Vec<_>>>()?,
                 ),
                 Accessor::Deref(s) => il::Accessor::Deref(*s),
+                Accessor::Call { .. } => return None,
             });
         }
         if derefs.contains(&p.accessors.len()) {
@@ -1630,6 +1644,20 @@ impl<'d> PouLowering<'d> {
                     il::Accessor::Index(ops)
                 }
                 Accessor::Deref(s) => il::Accessor::Deref(*s),
+                // every chain is taken apart before its statement is lowered (call_chain); one
+                // left here stands where no statement could run its calls first
+                Accessor::Call { span, .. } => {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0349,
+                            "a method's result cannot be accessed here",
+                        )
+                        .at(*span)
+                        .with_hint("call the method in a statement before, store its result in a variable and access that"),
+                    );
+                    self.poisoned = true;
+                    return None;
+                }
             });
         }
         if derefs.contains(&p.accessors.len()) {

@@ -775,7 +775,7 @@ fn place_key(p: &Place) -> Option<String> {
                 s.push_str(&f.key());
             }
             Accessor::Deref(_) => s.push('^'),
-            Accessor::Index(_) => return None,
+            Accessor::Index(_) | Accessor::Call { .. } => return None,
         }
     }
     Some(s)

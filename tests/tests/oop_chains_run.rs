@@ -1,0 +1,100 @@
+//! Object-oriented ST the way TwinCAT and CODESYS libraries write it, the rest (issue #13), run
+//! end to end through `ladderc run --sanitize` on files written for these tests
+//! (`fixtures/oop_chains/`): calls on a call's result (`stack.Get(i).Pop()`,
+//! `list.Item(2).Value := 5;`, `.Next()^.Value`, a method returning an interface), also in
+//! conditions, each call once and in source order; REPEAT ... CONTINUE ... UNTIL with a method
+//! call in the condition.
+
+mod common;
+use common::{column, rejected_heads, run_traced};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/oop_chains")
+        .join(rel)
+}
+
+/// `FB_Stack.Get(i)` returns a `REFERENCE TO FB_Item`; every method notes its number (Get 1, Pop
+/// 2, Next 3, IsEmpty 4) in `stack.order` and counts itself in `stack.calls`. Items start at 5,
+/// 15 (`10 + Get(0).Value`, written through the chain) and 100.
+#[test]
+fn calls_on_a_methods_result_run_once_each_in_source_order() {
+    let (trace, stderr) = run_traced(
+        &fixture("chains.st"),
+        2,
+        "Main.popped,Main.sum,Main.orderAssign,Main.viaPtr,Main.top,Main.orderIf,Main.branch,\
+         Main.callsWhile,Main.loops,Main.orderAndThen,Main.stack.items[0].Value,\
+         Main.stack.items[1].Value,Main.stack.items[2].Value",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    // `stack.Get(1).Pop()`: 15 -> 14, then the statement `stack.Get(1).Pop();` -> 13
+    assert_eq!(column(&trace, "Main.popped"), [14.0, 14.0]);
+    // `Get(0).Pop() * 100 + Get(1).Pop()`: 4 * 100 + 12, calls Get Pop Get Pop
+    assert_eq!(column(&trace, "Main.sum"), [412.0, 412.0]);
+    assert_eq!(column(&trace, "Main.orderAssign"), [1212.0, 1212.0]);
+    // `Get(0).Next()^.Next()^.Value` is items[2]; `Top` is `Get(2).Value` inside the block
+    assert_eq!(column(&trace, "Main.viaPtr"), [100.0, 100.0]);
+    assert_eq!(column(&trace, "Main.top"), [100.0, 100.0]);
+    // IF Get(0).IsEmpty() (4: no) ELSIF Get(1).Pop() > 0 (11: yes)
+    assert_eq!(column(&trace, "Main.orderIf"), [1412.0, 1412.0]);
+    // the ELSIF branch; the AND_THEN conditions later are false
+    assert_eq!(column(&trace, "Main.branch"), [2.0, 2.0]);
+    // WHILE NOT Get(2).IsEmpty(): 4 tests (2 calls each) and 3 bodies (Get, Pop)
+    assert_eq!(column(&trace, "Main.callsWhile"), [14.0, 14.0]);
+    assert_eq!(column(&trace, "Main.loops"), [3.0, 3.0]);
+    // `Get(2).IsEmpty() AND_THEN Get(0).Pop() > 100` (left TRUE: the right runs), then
+    // `NOT Get(2).IsEmpty() AND_THEN ...` (left FALSE: the right does not run)
+    assert_eq!(column(&trace, "Main.orderAndThen"), [141214.0, 141214.0]);
+    assert_eq!(column(&trace, "Main.stack.items[0].Value"), [3.0, 3.0]);
+    assert_eq!(column(&trace, "Main.stack.items[1].Value"), [11.0, 11.0]);
+    assert_eq!(column(&trace, "Main.stack.items[2].Value"), [0.0, 0.0]);
+}
+
+/// `head.Next().Val()`, `head.Next().Next().Val()` through an interface whose method returns the
+/// interface, and `a.Next().Next().Val()` from an instance: nodes 1 -> 2 -> 3.
+#[test]
+fn a_method_returning_an_interface_is_called_on_at_once() {
+    let (trace, stderr) = run_traced(&fixture("interface_chain.st"), 1, "Main.x,Main.y,Main.z");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [2.0]);
+    assert_eq!(column(&trace, "Main.y"), [3.0]);
+    assert_eq!(column(&trace, "Main.z"), [3.0]);
+}
+
+/// `REPEAT ... CONTINUE ... UNTIL c.Done(limit := 7)`: the CONTINUE goes on with the UNTIL test,
+/// which calls the method (IEC 61131-3 ed. 3, CODESYS): 7 iterations, 7 tests, 3 of them after a
+/// CONTINUE; the same with a call chain in the condition (`d.Self().Done(limit := 5)`).
+#[test]
+fn continue_in_a_repeat_still_runs_the_until_condition_with_its_method_call() {
+    let (trace, stderr) = run_traced(
+        &fixture("repeat_continue.st"),
+        2,
+        "Main.c.n,Main.c.tests,Main.odd,Main.skipped,Main.d.n,Main.d.tests",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.c.n"), [7.0, 7.0]);
+    assert_eq!(column(&trace, "Main.c.tests"), [7.0, 7.0]);
+    assert_eq!(column(&trace, "Main.odd"), [4.0, 4.0]);
+    assert_eq!(column(&trace, "Main.skipped"), [3.0, 3.0]);
+    assert_eq!(column(&trace, "Main.d.n"), [5.0, 5.0]);
+    assert_eq!(column(&trace, "Main.d.tests"), [5.0, 5.0]);
+}
+
+/// A call inside an access whose callee is no method (an output, a variable) is one E0349 at
+/// the call; the rest of the text is still checked.
+#[test]
+fn a_call_inside_an_access_that_is_no_method_is_one_located_error() {
+    let heads = rejected_heads(
+        "bad_chain.st",
+        "FUNCTION_BLOCK FB_A\nVAR_OUTPUT q : INT; END_VAR\nEND_FUNCTION_BLOCK\n\
+         PROGRAM Main\nVAR a : FB_A; x : INT; END_VAR\n\
+         x := a.q(1).v;\nx := 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!(heads.len(), 1, "{heads:?}");
+    assert!(
+        heads[0].ends_with("bad_chain.st:6:6: error[E0349]: `a.q` is no method: its result cannot be accessed"),
+        "{heads:?}"
+    );
+}
