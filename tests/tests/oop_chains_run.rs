@@ -98,3 +98,56 @@ fn a_call_inside_an_access_that_is_no_method_is_one_located_error() {
         "{heads:?}"
     );
 }
+
+/// FB_init arguments for arrays of instances, as CODESYS declares them: one list per element in
+/// index order (`ARRAY[0..2] OF FB_Axis[(nId := 10, fScale := 0.5), (nId := 11), (12, 2.0)]`; the
+/// last index fastest in two dimensions), one list for every element (`[(nId := 7)]`), and
+/// `ARRAY[1..2] OF FB_Axis(nId := 9, fScale := 3.0)`. Each element's FB_init runs once.
+#[test]
+fn fb_init_arguments_for_arrays_of_instances_go_to_each_element() {
+    let (trace, stderr) = run_traced(
+        &fixture("fb_init_array.st"),
+        1,
+        "Main.axes[0].nId,Main.axes[0].fScale,Main.axes[1].nId,Main.axes[1].fScale,\
+         Main.axes[2].nId,Main.axes[2].fScale,Main.gridIds,Main.gridInits,Main.same[1].nId,\
+         Main.same[3].nId,Main.same[3].inits,Main.plain[2].nId,Main.plain[2].fScale,Main.sumIds",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.axes[0].nId"), [10.0]);
+    assert_eq!(column(&trace, "Main.axes[0].fScale"), [0.5]);
+    // FB_init's own default for the input not given
+    assert_eq!(column(&trace, "Main.axes[1].nId"), [11.0]);
+    assert_eq!(column(&trace, "Main.axes[1].fScale"), [1.0]);
+    // positional
+    assert_eq!(column(&trace, "Main.axes[2].nId"), [12.0]);
+    assert_eq!(column(&trace, "Main.axes[2].fScale"), [2.0]);
+    assert_eq!(column(&trace, "Main.gridIds"), [1234.0]);
+    assert_eq!(column(&trace, "Main.gridInits"), [4.0]);
+    assert_eq!(column(&trace, "Main.same[1].nId"), [7.0]);
+    assert_eq!(column(&trace, "Main.same[3].nId"), [7.0]);
+    assert_eq!(column(&trace, "Main.same[3].inits"), [1.0]);
+    assert_eq!(column(&trace, "Main.plain[2].nId"), [9.0]);
+    assert_eq!(column(&trace, "Main.plain[2].fScale"), [3.0]);
+    assert_eq!(column(&trace, "Main.sumIds"), [33.0]);
+}
+
+/// Several lists whose number is not the array's number of elements are one E0350 at the lists;
+/// an argument of a list that FB_init does not take is E0329 at it, as for one instance.
+#[test]
+fn fb_init_lists_that_do_not_match_the_elements_are_one_located_error() {
+    let heads = rejected_heads(
+        "bad_lists.st",
+        "FUNCTION_BLOCK FB_X\nVAR nId : INT; END_VAR\nMETHOD FB_init : BOOL\n\
+         VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; nId : INT; END_VAR\n\
+         THIS^.nId := nId;\nEND_METHOD\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR\n  \
+         afb : ARRAY[0..2] OF FB_X[(nId := 1), (nId := 2)];\n  \
+         bfb : ARRAY[0..1] OF FB_X[(nId := 1), (nOther := 2)];\nEND_VAR\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "bad_lists.st:10:28: error[E0350]: 2 FB_init argument lists for the 3 elements of `afb`",
+            "bad_lists.st:11:42: error[E0329]: argument `nOther`: the FB_init method of `FB_X` has no such input",
+        ]
+    );
+}
