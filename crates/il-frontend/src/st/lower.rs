@@ -27,6 +27,7 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 
 mod call_chain;
+mod dynamic_memory;
 mod for_control;
 mod memory;
 mod method_flow;
@@ -602,6 +603,10 @@ impl<'d> PouLowering<'d> {
     /// every level of the nesting (the E0108 limit must lower without overflowing a 2 MB stack).
     #[inline(never)]
     fn stmt_rewritten(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) -> bool {
+        if self.refuse_dynamic_memory(s, diags) {
+            // `p := __NEW(FB_Item);`: one E0351 each, the statement dropped (dynamic_memory)
+            return true;
+        }
         if call_chain::stmt_has_chain(s) {
             // `x := stack.Get(1).Pop();`: the chain's calls first, each result in a temporary
             // (call_chain), then the statement on the temporaries with every other rewrite
