@@ -8,9 +8,10 @@
 //! names, and memory that a cycle's timing would depend on (allocation, fragmentation), which a
 //! PLC scan should not.
 //!
-//! Input: one ST statement about to be lowered. Output: one E0351 at each `__NEW` / `__DELETE`
-//! call the statement evaluates, the statement dropped (its type argument is no variable, so no
-//! E1001 follows, and no unused result either). Invariant: a statement without them is untouched.
+//! Input: one ST statement about to be lowered. Output: one E0351 at the first `__NEW` /
+//! `__DELETE` call of a POU (a library built on the heap uses them everywhere: the others are not
+//! reported), each statement holding one dropped (its type argument is no variable, so no E1001
+//! follows, and no unused result either). Invariant: a statement without them is untouched.
 
 use super::super::ast::{Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind};
 use super::PouLowering;
@@ -92,9 +93,10 @@ fn calls_in(s: &Stmt) -> Vec<(String, Span)> {
 impl PouLowering<'_> {
     /// Reports each `__NEW` / `__DELETE` of `s` (E0351) and says whether there was one (the
     /// statement is then dropped).
-    pub(super) fn refuse_dynamic_memory(&self, s: &Stmt, diags: &mut Diagnostics) -> bool {
+    pub(super) fn refuse_dynamic_memory(&mut self, s: &Stmt, diags: &mut Diagnostics) -> bool {
         let found = calls_in(s);
-        for (name, span) in &found {
+        if let Some((name, span)) = found.first().filter(|_| !self.heap_reported) {
+            self.heap_reported = true;
             let hint = if name == "__NEW" {
                 "declare the instance or variable (`VAR item : FB_Item; END_VAR`) and take its address (`p := ADR(item);`); for a number of them, an ARRAY of instances used as a pool"
             } else {
@@ -103,7 +105,7 @@ impl PouLowering<'_> {
             diags.push(
                 Diagnostic::error(
                     code::E0351,
-                    format!("`{name}`: ladderc has no dynamic memory (no heap) to create or free variables at run time"),
+                    format!("`{name}`: ladderc has no dynamic memory (no heap) to create or free variables at run time (its other uses in this POU are not reported)"),
                 )
                 .at(*span)
                 .with_primary_label("dynamic memory")
