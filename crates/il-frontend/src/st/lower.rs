@@ -57,8 +57,6 @@ pub struct PouLowering<'d> {
     loops: Vec<LoopLabels>,
     /// Set when an expression contained a syntax error (reported by the parser).
     poisoned: bool,
-    /// E0351 (`__NEW` / `__DELETE`) was reported in this POU: its other uses are not.
-    heap_reported: bool,
     /// The type an untyped literal loaded first by the next [`Self::value`] should get (`LD REAL#2.0`
     /// where the context is REAL), so IL sema does not default it to DINT/LREAL.
     lit_hint: Option<TypeRef>,
@@ -201,7 +199,6 @@ impl<'d> PouLowering<'d> {
             prefix: "_ST_",
             loops: Vec::new(),
             poisoned: false,
-            heap_reported: false,
             lit_hint: None,
             actions: HashMap::new(),
             il_actions: HashMap::new(),

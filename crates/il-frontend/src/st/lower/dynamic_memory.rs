@@ -9,7 +9,7 @@
 //! PLC scan should not.
 //!
 //! Input: one ST statement about to be lowered. Output: one E0351 at the first `__NEW` /
-//! `__DELETE` call of a POU (a library built on the heap uses them everywhere: the others are not
+//! `__DELETE` call of a file (a library built on the heap uses them everywhere: the others are not
 //! reported), each statement holding one dropped (its type argument is no variable, so no E1001
 //! follows, and no unused result either). Invariant: a statement without them is untouched.
 
@@ -95,8 +95,14 @@ impl PouLowering<'_> {
     /// statement is then dropped).
     pub(super) fn refuse_dynamic_memory(&mut self, s: &Stmt, diags: &mut Diagnostics) -> bool {
         let found = calls_in(s);
-        if let Some((name, span)) = found.first().filter(|_| !self.heap_reported) {
-            self.heap_reported = true;
+        let first_in_file = |span: &Span| {
+            self.decls
+                .heap_reported
+                .lock()
+                .map(|mut files| files.insert(span.file))
+                .unwrap_or(true)
+        };
+        if let Some((name, span)) = found.first().filter(|(_, span)| first_in_file(span)) {
             let hint = if name == "__NEW" {
                 "declare the instance or variable (`VAR item : FB_Item; END_VAR`) and take its address (`p := ADR(item);`); for a number of them, an ARRAY of instances used as a pool"
             } else {
@@ -105,7 +111,7 @@ impl PouLowering<'_> {
             diags.push(
                 Diagnostic::error(
                     code::E0351,
-                    format!("`{name}`: ladderc has no dynamic memory (no heap) to create or free variables at run time (its other uses in this POU are not reported)"),
+                    format!("`{name}`: ladderc has no dynamic memory (no heap) to create or free variables at run time (its other uses in this file are not reported)"),
                 )
                 .at(*span)
                 .with_primary_label("dynamic memory")
