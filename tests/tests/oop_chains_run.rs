@@ -185,3 +185,37 @@ fn new_and_delete_are_one_e0351_per_file_without_a_cascade() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(stderr.matches("error[").count(), 1, "{stderr}");
 }
+
+/// Several modifiers between `FUNCTION_BLOCK` and the name (`INTERNAL ABSTRACT`, `PUBLIC FINAL`;
+/// TwinCAT, fisothemes/TwinCat-Dynamic-Collections): PUBLIC and INTERNAL are W0304, ABSTRACT and
+/// FINAL keep their meaning; the blocks run (the override, the base's body through `SUPER^()`).
+/// Before, the second word was read as the block's name and the declaration fell apart (E0106).
+#[test]
+fn several_modifiers_of_a_function_block_are_read() {
+    let (trace, stderr) = run_traced(&fixture("modifiers.st"), 2, "Main.a,Main.sq.calls");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert!(
+        stderr.contains("warning[W0304]: `FUNCTION_BLOCK INTERNAL` of `FB_Shape`: the modifier is ignored"),
+        "{stderr}"
+    );
+    assert_eq!(column(&trace, "Main.a"), [16.0, 16.0]);
+    assert_eq!(column(&trace, "Main.sq.calls"), [1.0, 2.0]);
+    // ABSTRACT and FINAL after INTERNAL are still checked; `__NEW(POINTER TO INT, 3)`, whose
+    // first argument is a type, is the one E0351 (no syntax error at `TO`)
+    let heads = rejected_heads(
+        "mods.st",
+        "FUNCTION_BLOCK INTERNAL ABSTRACT FB_A\nEND_FUNCTION_BLOCK\n\
+         FUNCTION_BLOCK INTERNAL FINAL FB_B\nEND_FUNCTION_BLOCK\n\
+         FUNCTION_BLOCK FB_C EXTENDS FB_B\nEND_FUNCTION_BLOCK\n\
+         PROGRAM Main\nVAR a : FB_A; p : POINTER TO INT; END_VAR\n\
+         p := __NEW(POINTER TO INT, 3);\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "mods.st:5:29: error[E0332]: `FB_C` EXTENDS `FB_B`, which is FINAL",
+            "mods.st:8:9: error[E0333]: `a` is an instance of `FB_A`, which is ABSTRACT",
+            "mods.st:9:6: error[E0351]: `__NEW`: ladderc has no dynamic memory (no heap) to create or free variables at run time (its other uses in this file are not reported)",
+        ]
+    );
+}

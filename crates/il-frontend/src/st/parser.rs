@@ -1172,6 +1172,34 @@ impl<'s, 'd> Parser<'s, 'd> {
         })
     }
 
+    /// A call whose arguments are not read (`__NEW(POINTER TO T, n)`): its text up to the
+    /// matching `)` is skipped, the call kept without arguments.
+    fn skipped_call(&mut self, name: Ident, here: Span) -> Expr {
+        let mut depth = 0usize;
+        loop {
+            match self.peek() {
+                Tok::LParen => depth += 1,
+                Tok::RParen => {
+                    depth = depth.saturating_sub(1);
+                    if depth == 0 {
+                        self.bump();
+                        break;
+                    }
+                }
+                Tok::Semi | Tok::Eof => break,
+                _ => {}
+            }
+            self.bump();
+        }
+        Expr {
+            kind: ExprKind::Call {
+                name,
+                args: Vec::new(),
+            },
+            span: here.to(self.span(self.prev_end(), self.prev_end())),
+        }
+    }
+
     /// `( args )` after a call target.
     fn args(&mut self) -> Option<Vec<Arg>> {
         let open = self.bump();
@@ -1571,6 +1599,11 @@ impl<'s, 'd> Parser<'s, 'd> {
                 let n = self.bump();
                 self.count_operation(n.range.start, n.range.end);
                 let name = self.ident(&n);
+                if name.is("__NEW") {
+                    // `__NEW(POINTER TO T, n)` (CODESYS, TwinCAT): its first argument is a type,
+                    // no expression; the lowering refuses the call (E0351, `lower::dynamic_memory`)
+                    return self.skipped_call(name, here);
+                }
                 match self.args() {
                     Some(args) => Expr {
                         kind: ExprKind::Call { name, args },
