@@ -213,6 +213,8 @@ fn several_modifiers_of_a_function_block_are_read() {
     assert_eq!(
         heads,
         [
+            "mods.st:1:16: warning[W0304]: `FUNCTION_BLOCK INTERNAL` of `FB_A`: the modifier is ignored",
+            "mods.st:3:16: warning[W0304]: `FUNCTION_BLOCK INTERNAL` of `FB_B`: the modifier is ignored",
             "mods.st:5:29: error[E0332]: `FB_C` EXTENDS `FB_B`, which is FINAL",
             "mods.st:8:9: error[E0333]: `a` is an instance of `FB_A`, which is ABSTRACT",
             "mods.st:9:6: error[E0351]: `__NEW`: ladderc has no dynamic memory (no heap) to create or free variables at run time (its other uses in this file are not reported)",
