@@ -221,3 +221,17 @@ fn several_modifiers_of_a_function_block_are_read() {
         ]
     );
 }
+
+/// Property chains (`PROPERTY Child : REFERENCE TO FB_Tree`, tree a -> b -> c, c.v = 7):
+/// `a.Child.Child.Value` reads c's `Value` through two getters; `a.Child.Value := 5;` writes
+/// through the reference, running b's `Value` setter (before: E0338, and the property's
+/// `REFERENCE TO` type was E0011); `a.Kid().Child.Value + a.Child.Kid().Value` mixes methods and
+/// properties in chains.
+#[test]
+fn property_chains_read_and_write_through_reference_properties() {
+    let (trace, stderr) = run_traced(&fixture("property_chain.st"), 2, "Main.x,Main.y,Main.z");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [7.0, 7.0]);
+    assert_eq!(column(&trace, "Main.y"), [5.0, 5.0]);
+    assert_eq!(column(&trace, "Main.z"), [14.0, 14.0]);
+}

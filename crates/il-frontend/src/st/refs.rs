@@ -94,9 +94,13 @@ impl RefTypes {
         for (k, t) in toks.iter().enumerate() {
             let w = word(src, t).to_ascii_uppercase();
             if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
-                // (a METHOD's result type too: `METHOD Take : POINTER TO ST_Node`)
+                // (a METHOD's result type too: `METHOD Take : POINTER TO ST_Node`, and a
+                // PROPERTY's: `PROPERTY Child : REFERENCE TO FB_Tree`)
                 if is_var_keyword(&w)
-                    || matches!(w.as_str(), "STRUCT" | "TYPE" | "FUNCTION" | "METHOD")
+                    || matches!(
+                        w.as_str(),
+                        "STRUCT" | "TYPE" | "FUNCTION" | "METHOD" | "PROPERTY"
+                    )
                 {
                     in_decl = true;
                 } else if matches!(w.as_str(), "END_VAR" | "END_STRUCT" | "END_TYPE") {

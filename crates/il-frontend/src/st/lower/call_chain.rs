@@ -73,6 +73,8 @@ impl PouLowering<'_> {
                 self.hoist_in(&mut a.value, calls, diags);
             }
             let call_span = callee.span.to(span);
+            // `a.Child.Kid()` with `PROPERTY Child`: the property's value in a temporary first
+            self.property_holder(&mut callee, calls);
             let Some(result) = self.chain_result(&callee) else {
                 diags.push(
                     Diagnostic::error(
@@ -168,6 +170,70 @@ impl PouLowering<'_> {
             }
             _ => None,
         }
+    }
+
+    /// When the block `callee` (`a.Child.Kid`) calls a method of is a PROPERTY's value
+    /// (`a.Child`), that value goes into a temporary first (`T REF= a.Child;` for a `REFERENCE
+    /// TO`, `T := a.Child;` otherwise; the property's getter runs there) and `callee` becomes
+    /// `T.Kid`.
+    fn property_holder(&mut self, callee: &mut Place, calls: &mut Vec<Stmt>) {
+        let n = callee.accessors.len();
+        if n < 2 {
+            return;
+        }
+        let Accessor::Field(prop) = &callee.accessors[n - 2] else {
+            return;
+        };
+        let prefix = Place {
+            base: callee.base.clone(),
+            accessors: callee.accessors[..n - 2].to_vec(),
+            span: callee.span,
+        };
+        let env = self.env();
+        let Some(holder_type) = env.place_type(&prefix) else {
+            return;
+        };
+        if env.member(&holder_type, prop).is_some() {
+            return; // a variable, no property
+        }
+        let result = Ident::new(
+            crate::actions::method_result(&super::super::property::getter(&prop.name)),
+            prop.span,
+        );
+        let Some(ty) = env.member(&holder_type, &result) else {
+            return;
+        };
+        let holder = Place {
+            base: callee.base.clone(),
+            accessors: callee.accessors[..n - 1].to_vec(),
+            span: callee.span,
+        };
+        let span = holder.span;
+        let read = Expr {
+            span,
+            kind: ExprKind::Place(holder),
+        };
+        let value = if matches!(ty, TypeRef::Ref { kind: RefKind::Reference, .. }) {
+            Expr {
+                span,
+                kind: ExprKind::Call {
+                    name: Ident::new(REF_ASSIGN, span),
+                    args: vec![Arg {
+                        name: None,
+                        dir: super::super::ast::ArgDir::Input,
+                        span,
+                        value: read,
+                    }],
+                },
+            }
+        } else {
+            read
+        };
+        let t = self.temp(ty, span);
+        calls.push(assign(name_place(t.clone()), value, span));
+        let method = callee.accessors[n - 1].clone();
+        callee.base = PlaceBase::Name(t);
+        callee.accessors = vec![method];
     }
 
     /// The type `p` is declared with, a `REFERENCE TO` kept as such (`place_type` reads it as
