@@ -34,7 +34,8 @@ fn calls_on_a_methods_result_run_once_each_in_source_order() {
     // `Get(0).Pop() * 100 + Get(1).Pop()`: 4 * 100 + 12, calls Get Pop Get Pop
     assert_eq!(column(&trace, "Main.sum"), [412.0, 412.0]);
     assert_eq!(column(&trace, "Main.orderAssign"), [1212.0, 1212.0]);
-    // `Get(0).Next()^.Next()^.Value` is items[2]; `Top` is `Get(2).Value` inside the block
+    // `Get(0).Next()^.Next()^.Value` is items[2] (`METHOD Next : POINTER TO FB_Item` with its
+    // body right after the result type); `Top` is `Get(2).Value` inside the block
     assert_eq!(column(&trace, "Main.viaPtr"), [100.0, 100.0]);
     assert_eq!(column(&trace, "Main.top"), [100.0, 100.0]);
     // IF Get(0).IsEmpty() (4: no) ELSIF Get(1).Pop() > 0 (11: yes)

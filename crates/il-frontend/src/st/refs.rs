@@ -157,7 +157,11 @@ impl RefTypes {
             }
             if let (Some(span), Some(target)) = (first, toks.get(j)) {
                 refs.at.insert(base + target.range.start, (kinds, span));
-                refs.initial_value(file, src, toks, j, base, &mut text);
+                // a METHOD's, FUNCTION's or PROPERTY's result type has no initial value: the
+                // body follows (`METHOD Next : POINTER TO FB_Item` then `Next := pNext;`)
+                if !result_type_at(src, toks, k) {
+                    refs.initial_value(file, src, toks, j, base, &mut text);
+                }
             }
         }
         (text, refs)
@@ -323,6 +327,26 @@ impl RefTypes {
             };
         }
     }
+}
+
+/// Whether the `:` at token `colon` starts the result type of a POU header: `METHOD [modifiers]
+/// Name :`, `FUNCTION Name :`, `PROPERTY [modifiers] Name :`.
+fn result_type_at(src: &str, toks: &[Token], colon: usize) -> bool {
+    let Some(mut k) = colon.checked_sub(1) else {
+        return false;
+    };
+    if toks[k].tok != Tok::Ident {
+        return false;
+    }
+    while let Some(before) = k.checked_sub(1) {
+        let w = word(src, &toks[before]).to_ascii_uppercase();
+        match w.as_str() {
+            "METHOD" | "FUNCTION" | "PROPERTY" => return true,
+            "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL" | "FINAL" | "ABSTRACT" => k = before,
+            _ => return false,
+        }
+    }
+    false
 }
 
 /// `ADR(path)` / `REF(path)` written as an initial value, `path` a name with fields and constant
