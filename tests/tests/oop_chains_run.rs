@@ -95,7 +95,9 @@ fn a_call_inside_an_access_that_is_no_method_is_one_located_error() {
     );
     assert_eq!(heads.len(), 1, "{heads:?}");
     assert!(
-        heads[0].ends_with("bad_chain.st:6:6: error[E0349]: `a.q` is no method: its result cannot be accessed"),
+        heads[0].ends_with(
+            "bad_chain.st:6:6: error[E0349]: `a.q` is no method: its result cannot be accessed"
+        ),
         "{heads:?}"
     );
 }
@@ -169,9 +171,7 @@ fn new_and_delete_are_one_e0351_per_file_without_a_cascade() {
     let no_heap = "ladderc has no dynamic memory (no heap) to create or free variables at run time (its other uses in this file are not reported)";
     assert_eq!(
         heads,
-        [
-            format!("heap.st:10:6: error[E0351]: `__NEW`: {no_heap}"),
-        ]
+        [format!("heap.st:10:6: error[E0351]: `__NEW`: {no_heap}"),]
     );
     let dir = tempfile::tempdir().unwrap();
     let f = dir.path().join("heap.st");
@@ -196,7 +196,9 @@ fn several_modifiers_of_a_function_block_are_read() {
     let (trace, stderr) = run_traced(&fixture("modifiers.st"), 2, "Main.a,Main.sq.calls");
     assert!(!stderr.contains("error"), "{stderr}");
     assert!(
-        stderr.contains("warning[W0304]: `FUNCTION_BLOCK INTERNAL` of `FB_Shape`: the modifier is ignored"),
+        stderr.contains(
+            "warning[W0304]: `FUNCTION_BLOCK INTERNAL` of `FB_Shape`: the modifier is ignored"
+        ),
         "{stderr}"
     );
     assert_eq!(column(&trace, "Main.a"), [16.0, 16.0]);

@@ -103,10 +103,12 @@ impl PouLowering<'_> {
             };
             let base = match ty {
                 // bound, not copied: the rest of the chain reaches the instance itself
-                Some(ty @ TypeRef::Ref {
-                    kind: RefKind::Reference,
-                    ..
-                }) => {
+                Some(
+                    ty @ TypeRef::Ref {
+                        kind: RefKind::Reference,
+                        ..
+                    },
+                ) => {
                     let t = self.temp(ty, call_span);
                     let bind = Expr {
                         span: call_span,
@@ -149,8 +151,8 @@ impl PouLowering<'_> {
                 *m = Ident::new(crate::actions::method_result(&m.name), m.span);
                 // a method of the instance's block, or of the interface it holds
                 let env = self.env();
-                let known = env.place_type(&result).is_some()
-                    || self.through_interface(callee).is_some();
+                let known =
+                    env.place_type(&result).is_some() || self.through_interface(callee).is_some();
                 known.then_some(result)
             }
             None => {
@@ -162,10 +164,7 @@ impl PouLowering<'_> {
                 }
                 let sig = &self.methods[&n.key()];
                 sig.returns.then(|| {
-                    name_place(Ident::new(
-                        crate::actions::method_result(&sig.name),
-                        n.span,
-                    ))
+                    name_place(Ident::new(crate::actions::method_result(&sig.name), n.span))
                 })
             }
             _ => None,
@@ -213,7 +212,13 @@ impl PouLowering<'_> {
             span,
             kind: ExprKind::Place(holder),
         };
-        let value = if matches!(ty, TypeRef::Ref { kind: RefKind::Reference, .. }) {
+        let value = if matches!(
+            ty,
+            TypeRef::Ref {
+                kind: RefKind::Reference,
+                ..
+            }
+        ) {
             Expr {
                 span,
                 kind: ExprKind::Call {
@@ -273,7 +278,11 @@ impl PouLowering<'_> {
             return None;
         };
         let i = env.decls.interfaces.get(&n.key())?;
-        if !i.methods.iter().any(|x| x.name.eq_ignore_ascii_case(&m.name)) {
+        if !i
+            .methods
+            .iter()
+            .any(|x| x.name.eq_ignore_ascii_case(&m.name))
+        {
             return None;
         }
         Some(

@@ -178,7 +178,8 @@ impl PouLowering<'_> {
         let mut rest = s.clone();
         self.keep_earlier_results(&mut rest, &mut calls);
         // a chain in the place written or called: its calls first (`list.Item(2).Value := 5;`)
-        if let StmtKind::Assign { target: p, .. } | StmtKind::Call { callee: p, .. } = &mut rest.kind
+        if let StmtKind::Assign { target: p, .. } | StmtKind::Call { callee: p, .. } =
+            &mut rest.kind
         {
             if super::call_chain::is_chain(p) && !self.unchain(p, &mut calls, diags) {
                 let span = rest.span;
@@ -336,7 +337,12 @@ impl PouLowering<'_> {
 
     /// Replaces the method calls inside `e` (arguments first) by temporaries holding their
     /// results, the calls and copies appended to `calls` in evaluation order.
-    pub(super) fn hoist_in(&mut self, e: &mut Expr, calls: &mut Vec<Stmt>, diags: &mut Diagnostics) {
+    pub(super) fn hoist_in(
+        &mut self,
+        e: &mut Expr,
+        calls: &mut Vec<Stmt>,
+        diags: &mut Diagnostics,
+    ) {
         let span = e.span;
         match &mut e.kind {
             ExprKind::Unary { operand, .. } => self.hoist_in(operand, calls, diags),
