@@ -238,3 +238,15 @@ fn property_chains_read_and_write_through_reference_properties() {
     assert_eq!(column(&trace, "Main.y"), [5.0, 5.0]);
     assert_eq!(column(&trace, "Main.z"), [14.0, 14.0]);
 }
+
+/// A method's `POINTER TO` variable initialised from the instance (`pCurrent : POINTER TO ST_Node
+/// := THIS^.pRoot;`, `pSecond : ... := pRoot^.pNext;`) is assigned when the method starts, at each
+/// call, as a method's other computed initial values (before: E0305). The list 1 -> 20 -> 300
+/// sums to 321; `* 100 + pSecond^.value` adds 20; the second call walks the list again.
+#[test]
+fn a_methods_pointer_initialised_from_the_instance_is_set_at_each_call() {
+    let (trace, stderr) = run_traced(&fixture("pointer_inits.st"), 2, "Main.first,Main.second");
+    assert!(!stderr.contains("error") && !stderr.contains("warning"), "{stderr}");
+    assert_eq!(column(&trace, "Main.first"), [32120.0, 32120.0]);
+    assert_eq!(column(&trace, "Main.second"), [32120.0, 32120.0]);
+}
