@@ -250,3 +250,20 @@ fn a_methods_pointer_initialised_from_the_instance_is_set_at_each_call() {
     assert_eq!(column(&trace, "Main.first"), [32120.0, 32120.0]);
     assert_eq!(column(&trace, "Main.second"), [32120.0, 32120.0]);
 }
+
+/// A method's local variable named like one of its block's methods (`Hash : DINT` in `Resize`
+/// beside `THIS^.Hash(key)`, fisothemes/TwinCat-Dynamic-Collections): `THIS^.Hash(...)` calls the
+/// method (twice per call of Resize), `Hash` alone is the variable (before: E3103, `Hash` is a
+/// variable, not a function). r = (5 * 2) MOD 7; seen = 99 + 1.
+#[test]
+fn a_method_call_is_not_taken_for_a_local_variable_of_the_same_name() {
+    let (trace, stderr) = run_traced(
+        &fixture("shadowed_method.st"),
+        2,
+        "Main.m.r,Main.m.seen,Main.m.hashes",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.m.r"), [3.0, 3.0]);
+    assert_eq!(column(&trace, "Main.m.seen"), [100.0, 100.0]);
+    assert_eq!(column(&trace, "Main.m.hashes"), [2.0, 4.0]);
+}

@@ -1927,8 +1927,19 @@ pub fn lower_method(
         p.var_blocks.push(t);
     }
     rename.extend(rename_back);
+    // `THIS^.Hash(k)` where the method declares `Hash : DWORD`: the call stays the block's method
+    let methods = decls.methods.get(&p.name.key());
+    let calls_kept = m
+        .blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .filter(|v| methods.is_some_and(|ms| ms.iter().any(|s| v.name.is(&s.name))))
+        .filter(|v| !matches!(&v.ty, crate::ast::TypeRef::Named(t) if decls.pou(&t.name).is_some()))
+        .map(|v| v.name.key())
+        .collect();
     crate::rename::Renames {
         bases: rename,
+        calls_kept,
         ..Default::default()
     }
     .apply(&mut body);

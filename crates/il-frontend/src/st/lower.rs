@@ -317,7 +317,7 @@ impl<'d> PouLowering<'d> {
         let PlaceBase::Name(n) = &callee.base else {
             return None;
         };
-        if !callee.accessors.is_empty() || self.vars.contains_key(&n.key()) {
+        if !callee.accessors.is_empty() || self.callable_var(n) {
             return None;
         }
         self.methods.get(&n.key())

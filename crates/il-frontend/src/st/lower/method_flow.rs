@@ -26,7 +26,7 @@ use super::super::ast::{
 };
 use super::super::infer::named;
 use super::{place_exprs, PouLowering};
-use crate::ast::{Ident, LiteralKind};
+use crate::ast::{Ident, LiteralKind, TypeRef};
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics};
 
@@ -102,7 +102,22 @@ fn field_key(p: &Place) -> Option<String> {
 impl PouLowering<'_> {
     /// Whether `n` names one of the block's methods (and no variable).
     pub(super) fn is_method(&self, n: &Ident) -> bool {
-        self.methods.contains_key(&n.key()) && !self.vars.contains_key(&n.key())
+        self.methods.contains_key(&n.key()) && !self.callable_var(n)
+    }
+
+    /// Whether `n` is a variable that a call could name: one that is no data, a function block
+    /// instance. A method's local variable named like one of the block's methods (`Hash : DWORD`
+    /// beside `THIS^.Hash(Key)`, fisothemes/TwinCat-Dynamic-Collections) cannot be called, so a
+    /// call of that name is the method's (before: E3103).
+    pub(super) fn callable_var(&self, n: &Ident) -> bool {
+        let Some(ty) = self.vars.get(&n.key()) else {
+            return false;
+        };
+        let env = self.env();
+        match env.resolve(ty) {
+            TypeRef::Named(t) => env.decls.pou(&t.name).is_some(),
+            _ => false,
+        }
     }
 
     /// The span of the first method call inside `e` (an own method's, or [`METHOD_CALL`]), left
