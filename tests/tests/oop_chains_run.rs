@@ -246,7 +246,10 @@ fn property_chains_read_and_write_through_reference_properties() {
 #[test]
 fn a_methods_pointer_initialised_from_the_instance_is_set_at_each_call() {
     let (trace, stderr) = run_traced(&fixture("pointer_inits.st"), 2, "Main.first,Main.second");
-    assert!(!stderr.contains("error") && !stderr.contains("warning"), "{stderr}");
+    assert!(
+        !stderr.contains("error") && !stderr.contains("warning"),
+        "{stderr}"
+    );
     assert_eq!(column(&trace, "Main.first"), [32120.0, 32120.0]);
     assert_eq!(column(&trace, "Main.second"), [32120.0, 32120.0]);
 }

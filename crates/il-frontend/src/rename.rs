@@ -52,8 +52,8 @@ impl Renames {
             InstrKind::Jump { label, .. } => self.label(label),
             InstrKind::Return { .. } | InstrKind::EmbeddedC { .. } => {}
             InstrKind::Call { instance, args, .. } => {
-                let kept = instance.accessors.is_empty()
-                    && self.calls_kept.contains(&instance.base.key());
+                let kept =
+                    instance.accessors.is_empty() && self.calls_kept.contains(&instance.base.key());
                 if !kept {
                     self.var(instance);
                 }

@@ -60,6 +60,9 @@ pub struct RefTypes {
     /// `:= ADR(x)` initial values (CODESYS, TwinCAT), by the offset of the type text: set on the
     /// declarations when they are wrapped (sema checks what `x` is).
     addresses: HashMap<usize, VarRef>,
+    /// While blanking: inside `METHOD ... END_METHOD`, where a variable's initial value may be an
+    /// expression assigned when the method starts (`super::method_inits`).
+    in_method: bool,
 }
 
 impl RefTypes {
@@ -89,18 +92,16 @@ impl RefTypes {
             at: HashMap::new(),
             pending: Vec::new(),
             addresses: HashMap::new(),
+            in_method: false,
         };
         let mut in_decl = false;
-        // inside `METHOD ... END_METHOD`: a variable's initial value may be an expression,
-        // assigned when the method starts (`super::method_inits`)
-        let mut in_method = false;
         for (k, t) in toks.iter().enumerate() {
             let w = word(src, t).to_ascii_uppercase();
             if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
                 if w == "METHOD" {
-                    in_method = true;
+                    refs.in_method = true;
                 } else if w == "END_METHOD" {
-                    in_method = false;
+                    refs.in_method = false;
                 }
                 // (a METHOD's result type too: `METHOD Take : POINTER TO ST_Node`, and a
                 // PROPERTY's: `PROPERTY Child : REFERENCE TO FB_Tree`)
@@ -168,7 +169,7 @@ impl RefTypes {
                 // a METHOD's, FUNCTION's or PROPERTY's result type has no initial value: the
                 // body follows (`METHOD Next : POINTER TO FB_Item` then `Next := pNext;`)
                 if !result_type_at(src, toks, k) {
-                    refs.initial_value(file, src, toks, j, base, in_method, &mut text);
+                    refs.initial_value(file, src, toks, j, base, &mut text);
                 }
             }
         }
@@ -185,7 +186,6 @@ impl RefTypes {
         toks: &[Token],
         j: usize,
         base: usize,
-        in_method: bool,
         text: &mut Option<String>,
     ) {
         let mut k = j;
@@ -219,7 +219,7 @@ impl RefTypes {
             if let Some(t) = toks.get(j) {
                 self.addresses.insert(base + t.range.start, target);
             }
-        } else if in_method && super::method_inits::is_run_time_value(&toks[k + 1..end]) {
+        } else if self.in_method && super::method_inits::is_run_time_value(&toks[k + 1..end]) {
             // `pCurrent : POINTER TO T := THIS^.pRoot;` in a method (CODESYS, TwinCAT,
             // fisothemes/TwinCat-Dynamic-Collections): assigned when the method starts
             // (`method_inits`), left in the text for it
