@@ -93,6 +93,23 @@ impl PouLowering<'_> {
             let ty = self
                 .declared_type(&result)
                 .or_else(|| self.through_interface(&callee).flatten());
+            // `a.M().x`, `a.M()[1]`, `a.M()^` where `M` returns an INT: nothing to access
+            if let Some(e) = ty.as_ref().and_then(|t| self.env().elementary(t)) {
+                diags.push(
+                    Diagnostic::error(
+                        code::E0349,
+                        format!(
+                            "`{}` returns {}: its result has nothing the rest of the access can reach",
+                            super::for_control::place_text(&callee),
+                            e.name()
+                        ),
+                    )
+                    .at(call_span)
+                    .with_primary_label("called inside an access")
+                    .with_hint("use the result as a value (`x := a.M();`), or give the method a result type with fields, elements or a reference"),
+                );
+                return false;
+            }
             calls.push(Stmt {
                 kind: StmtKind::Call { callee, args },
                 span: call_span,
