@@ -230,14 +230,23 @@ fn several_modifiers_of_a_function_block_are_read() {
 /// `a.Child.Child.Value` reads c's `Value` through two getters; `a.Child.Value := 5;` writes
 /// through the reference, running b's `Value` setter (before: E0338, and the property's
 /// `REFERENCE TO` type was E0011); `a.Kid().Child.Value + a.Child.Kid().Value` mixes methods and
-/// properties in chains.
+/// properties in chains; `w := a.Child.Depth();` calls a method on the property's value (b.v +
+/// 100; before: E1011). Each use runs the getter once: a's 4 and b's 2 per cycle.
 #[test]
 fn property_chains_read_and_write_through_reference_properties() {
-    let (trace, stderr) = run_traced(&fixture("property_chain.st"), 2, "Main.x,Main.y,Main.z");
+    let (trace, stderr) = run_traced(
+        &fixture("property_chain.st"),
+        2,
+        "Main.x,Main.y,Main.z,Main.w,Main.a.gets,Main.b.gets,Main.c.gets",
+    );
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(column(&trace, "Main.x"), [7.0, 7.0]);
     assert_eq!(column(&trace, "Main.y"), [5.0, 5.0]);
     assert_eq!(column(&trace, "Main.z"), [14.0, 14.0]);
+    assert_eq!(column(&trace, "Main.w"), [105.0, 105.0]);
+    assert_eq!(column(&trace, "Main.a.gets"), [4.0, 8.0]);
+    assert_eq!(column(&trace, "Main.b.gets"), [2.0, 4.0]);
+    assert_eq!(column(&trace, "Main.c.gets"), [0.0, 0.0]);
 }
 
 /// A method's `POINTER TO` variable initialised from the instance (`pCurrent : POINTER TO ST_Node

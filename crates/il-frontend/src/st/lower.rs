@@ -57,6 +57,9 @@ pub struct PouLowering<'d> {
     loops: Vec<LoopLabels>,
     /// Set when an expression contained a syntax error (reported by the parser).
     poisoned: bool,
+    /// Results of methods called on a property's value (`a.Child.Depth()`, `call_chain`): the
+    /// text the parser reads the result by (`A.CHILD.__M_DEPTH`) and the temporary holding it.
+    property_results: Vec<(String, Ident)>,
     /// The type an untyped literal loaded first by the next [`Self::value`] should get (`LD REAL#2.0`
     /// where the context is REAL), so IL sema does not default it to DINT/LREAL.
     lit_hint: Option<TypeRef>,
@@ -199,6 +202,7 @@ impl<'d> PouLowering<'d> {
             prefix: "_ST_",
             loops: Vec::new(),
             poisoned: false,
+            property_results: Vec::new(),
             lit_hint: None,
             actions: HashMap::new(),
             il_actions: HashMap::new(),
@@ -605,6 +609,20 @@ impl<'d> PouLowering<'d> {
     fn stmt_rewritten(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) -> bool {
         if self.refuse_dynamic_memory(s, diags) {
             // `p := __NEW(FB_Item);`: one E0351 each, the statement dropped (dynamic_memory)
+            return true;
+        }
+        if let Some(s) = self.read_property_results(s) {
+            // the statement after `a.Child.Depth();`: reads the result kept below
+            self.stmt(&s, out, diags);
+            return true;
+        }
+        if let Some(calls) = self.call_on_property(s) {
+            // `a.Child.Depth(...)` (the parser put it before its statement): the property's
+            // value first, then the call on it, its result kept (call_chain)
+            for c in &calls {
+                self.stmt(c, out, diags);
+            }
+            self.types.get_mut().clear();
             return true;
         }
         if call_chain::stmt_has_chain(s) {

@@ -192,7 +192,7 @@ impl PouLowering<'_> {
     /// (`a.Child`), that value goes into a temporary first (`T REF= a.Child;` for a `REFERENCE
     /// TO`, `T := a.Child;` otherwise; the property's getter runs there) and `callee` becomes
     /// `T.Kid`.
-    fn property_holder(&mut self, callee: &mut Place, calls: &mut Vec<Stmt>) {
+    pub(super) fn property_holder(&mut self, callee: &mut Place, calls: &mut Vec<Stmt>) {
         let n = callee.accessors.len();
         if n < 2 {
             return;
@@ -256,6 +256,78 @@ impl PouLowering<'_> {
         let method = callee.accessors[n - 1].clone();
         callee.base = PlaceBase::Name(t);
         callee.accessors = vec![method];
+    }
+
+    /// `a.Child.Depth(args);` as the parser puts it before the statement reading its result
+    /// `a.Child.__M_DEPTH`, where `Child` is a PROPERTY: the property's value into a temporary,
+    /// the call on it, and its result copied into another, which [`Self::read_property_results`]
+    /// gives the next statement (so the getter and the method run once each). `None` for any
+    /// other statement.
+    pub(super) fn call_on_property(&mut self, s: &Stmt) -> Option<Vec<Stmt>> {
+        let StmtKind::Call { callee, args } = &s.kind else {
+            return None;
+        };
+        if is_chain(callee) || callee.accessors.len() < 2 {
+            return None;
+        }
+        let key = super::method_flow::field_key(callee)?;
+        let mut calls = Vec::new();
+        let mut on = callee.clone();
+        self.property_holder(&mut on, &mut calls);
+        if calls.is_empty() {
+            return None;
+        }
+        let result = self.chain_result(&on)?;
+        calls.push(Stmt {
+            kind: StmtKind::Call {
+                callee: on,
+                args: args.clone(),
+            },
+            span: s.span,
+        });
+        if let Some(ty) = self.declared_type(&result) {
+            let (prefix, method) = key.rsplit_once('.')?;
+            let read_key = format!(
+                "{prefix}.{}",
+                crate::actions::method_result(method).to_ascii_uppercase()
+            );
+            let t = self.temp(ty, s.span);
+            calls.push(assign(
+                name_place(t.clone()),
+                Expr {
+                    span: s.span,
+                    kind: ExprKind::Place(result),
+                },
+                s.span,
+            ));
+            self.property_results.retain(|(k, _)| *k != read_key);
+            self.property_results.push((read_key, t));
+        }
+        Some(calls)
+    }
+
+    /// `s` reading the results [`Self::call_on_property`] kept, from their temporaries (each
+    /// used once); `None` when it reads none.
+    pub(super) fn read_property_results(&mut self, s: &Stmt) -> Option<Stmt> {
+        if self.property_results.is_empty() {
+            return None;
+        }
+        let mut out = s.clone();
+        let mut used = Vec::new();
+        for (key, t) in &self.property_results {
+            let mut hit = false;
+            super::method_flow::walk_stmt_exprs(&mut out, &mut |e| {
+                hit |= super::method_flow::replace_place(e, key, t);
+            });
+            if hit {
+                used.push(key.clone());
+            }
+        }
+        if used.is_empty() {
+            return None;
+        }
+        self.property_results.retain(|(k, _)| !used.contains(k));
+        Some(out)
     }
 
     /// The type `p` is declared with, a `REFERENCE TO` kept as such (`place_type` reads it as

@@ -84,7 +84,7 @@ fn bool_lit(v: bool, span: Span) -> Expr {
 }
 
 /// The text key of a place made of names and fields only (`Roots.PolyEval`), upper-case.
-fn field_key(p: &Place) -> Option<String> {
+pub(super) fn field_key(p: &Place) -> Option<String> {
     let PlaceBase::Name(n) = &p.base else {
         return None;
     };
@@ -346,7 +346,9 @@ impl PouLowering<'_> {
                 place_expr(read.clone()),
                 read.span,
             ));
-            walk_stmt_exprs(s, &mut |e| replace_place(e, &result_key, &t));
+            walk_stmt_exprs(s, &mut |e| {
+                replace_place(e, &result_key, &t);
+            });
         }
     }
 
@@ -490,7 +492,7 @@ impl PouLowering<'_> {
 
 /// Calls `f` on each expression `s` evaluates before its body (the ones [`PouLowering::hoist_method_calls`]
 /// hoists from).
-fn walk_stmt_exprs(s: &mut Stmt, f: &mut dyn FnMut(&mut Expr)) {
+pub(super) fn walk_stmt_exprs(s: &mut Stmt, f: &mut dyn FnMut(&mut Expr)) {
     match &mut s.kind {
         StmtKind::Assign { target, value } => {
             let mut v = Vec::new();
@@ -559,12 +561,16 @@ fn find_place(e: &mut Expr, key: &str, found: &mut Option<Place>) {
     });
 }
 
-fn replace_place(e: &mut Expr, key: &str, t: &Ident) {
+/// Replaces each read of the place `key` in `e` by `t`; whether there was one.
+pub(super) fn replace_place(e: &mut Expr, key: &str, t: &Ident) -> bool {
+    let mut hit = false;
     each_expr(e, &mut |x| {
         if let ExprKind::Place(p) = &x.kind {
             if field_key(p).as_deref() == Some(key) {
                 x.kind = ExprKind::Place(name_place(Ident::new(t.name.clone(), p.span)));
+                hit = true;
             }
         }
     });
+    hit
 }
