@@ -262,6 +262,17 @@ fn a_methods_pointer_initialised_from_the_instance_is_set_at_each_call() {
     );
     assert_eq!(column(&trace, "Main.first"), [32120.0, 32120.0]);
     assert_eq!(column(&trace, "Main.second"), [32120.0, 32120.0]);
+    // several names sharing one such initial value are not assigned so: E0305 stays, at the value
+    let heads = rejected_heads(
+        "shared.st",
+        "FUNCTION_BLOCK FB_L\nVAR n : INT; END_VAR\nMETHOD M : INT\n\
+         VAR a, b : POINTER TO INT := THIS^.p; END_VAR\nM := 1;\nEND_METHOD\n\
+         END_FUNCTION_BLOCK\n",
+    );
+    assert_eq!(
+        heads,
+        ["shared.st:4:27: error[E0305]: a reference cannot have the initial value `THIS^.p`"]
+    );
 }
 
 /// A method's local variable named like one of its block's methods (`Hash : DINT` in `Resize`

@@ -63,6 +63,9 @@ pub struct RefTypes {
     /// While blanking: inside `METHOD ... END_METHOD`, where a variable's initial value may be an
     /// expression assigned when the method starts (`super::method_inits`).
     in_method: bool,
+    /// While blanking: the declaration being read is of one name in a method (`p : T := e`), whose
+    /// initial value `method_inits` can assign (`a, b : T := e` it cannot: E0305 stays).
+    one_method_var: bool,
 }
 
 impl RefTypes {
@@ -93,6 +96,7 @@ impl RefTypes {
             pending: Vec::new(),
             addresses: HashMap::new(),
             in_method: false,
+            one_method_var: false,
         };
         let mut in_decl = false;
         for (k, t) in toks.iter().enumerate() {
@@ -169,6 +173,10 @@ impl RefTypes {
                 // a METHOD's, FUNCTION's or PROPERTY's result type has no initial value: the
                 // body follows (`METHOD Next : POINTER TO FB_Item` then `Next := pNext;`)
                 if !result_type_at(src, toks, k) {
+                    refs.one_method_var = refs.in_method
+                        && k >= 1
+                        && toks[k - 1].tok == Tok::Ident
+                        && (k < 2 || toks[k - 2].tok != Tok::Comma);
                     refs.initial_value(file, src, toks, j, base, &mut text);
                 }
             }
@@ -219,7 +227,7 @@ impl RefTypes {
             if let Some(t) = toks.get(j) {
                 self.addresses.insert(base + t.range.start, target);
             }
-        } else if self.in_method && super::method_inits::is_run_time_value(&toks[k + 1..end]) {
+        } else if self.one_method_var && super::method_inits::is_run_time_value(&toks[k + 1..end]) {
             // `pCurrent : POINTER TO T := THIS^.pRoot;` in a method (CODESYS, TwinCAT,
             // fisothemes/TwinCat-Dynamic-Collections): assigned when the method starts
             // (`method_inits`), left in the text for it
