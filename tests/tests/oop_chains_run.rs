@@ -302,3 +302,15 @@ fn a_method_call_is_not_taken_for_a_local_variable_of_the_same_name() {
     assert_eq!(column(&trace, "Main.m.seen"), [100.0, 100.0]);
     assert_eq!(column(&trace, "Main.m.hashes"), [2.0, 4.0]);
 }
+
+/// A chain through a base view (`VAR_IN_OUT b : FB_Base` holding an `FB_Derived`):
+/// `b.Get(0).Value := 42;` runs the derived override (`items[1 - i]`), and the `REFERENCE TO`
+/// result is bound through the dispatch, so the write reaches `d.items[1]` (before: E1021, also
+/// for `t REF= b.Get(0);` without a chain).
+#[test]
+fn a_chain_through_a_base_view_runs_the_override_and_writes_through() {
+    let (trace, stderr) = run_traced(&fixture("base_view_chain.st"), 1, "Main.x,Main.y");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.x"), [42.0]);
+    assert_eq!(column(&trace, "Main.y"), [43.0]);
+}
