@@ -16,6 +16,9 @@ pub struct Renames {
     pub fields: HashMap<(String, String), String>,
     /// Prefix for every label and jump target (empty: labels kept).
     pub label_prefix: String,
+    /// Upper-case names whose `CAL name` is not renamed: a block's method called inside another
+    /// method that declares a variable of the same name (`Hash : DWORD` beside `THIS^.Hash(k)`).
+    pub calls_kept: std::collections::HashSet<String>,
 }
 
 impl Renames {
@@ -49,7 +52,11 @@ impl Renames {
             InstrKind::Jump { label, .. } => self.label(label),
             InstrKind::Return { .. } | InstrKind::EmbeddedC { .. } => {}
             InstrKind::Call { instance, args, .. } => {
-                self.var(instance);
+                let kept =
+                    instance.accessors.is_empty() && self.calls_kept.contains(&instance.base.key());
+                if !kept {
+                    self.var(instance);
+                }
                 self.args(args);
             }
             InstrKind::FunctionCall { args, .. } => self.args(args),

@@ -58,6 +58,7 @@ fn place(p: &Place) -> String {
                 ix.iter().map(expr).collect::<Vec<_>>().join(", ")
             )),
             Accessor::Deref(_) => s.push('^'),
+            Accessor::Call { args: a, .. } => s.push_str(&format!("({})", args(a))),
         }
     }
     s

@@ -158,6 +158,16 @@ pub enum Accessor {
     Index(Vec<Expr>),
     /// `^`: the variable a reference or pointer refers to (the span of the `^`).
     Deref(crate::Span),
+    /// `(args)` after a method (or function) name inside a place, where more accessors follow:
+    /// `stack.Get(i).Pop()`, `list.Item(2).Value := 5;`, `n.Next()^.Value` (CODESYS, TwinCAT
+    /// call chains). Only the parser makes it; the lowering replaces it (`lower::call_chain`)
+    /// by the call and a temporary holding the result, before anything else reads the place.
+    Call {
+        /// The call's arguments in written order.
+        args: Vec<Arg>,
+        /// From `(` to `)`.
+        span: crate::Span,
+    },
 }
 
 /// One call argument: `x` (non-formal), `IN := x`, `Q => y`, `NOT Q => y`.

@@ -285,10 +285,18 @@ fn dispatch(
     let result = method.and_then(|m| {
         let ty = result_type(env, base, &m.name)?;
         let name = result_var(view.span, &m.name);
+        // a `REFERENCE TO` result is bound, not copied (`METHOD Get : REFERENCE TO FB_Item`)
+        let bound = matches!(
+            ty,
+            TypeRef::Ref {
+                kind: RefKind::Reference,
+                ..
+            }
+        );
         if env.var_type(&Ident::new(&name, span)).is_none() {
             temps.push(VarDecl::new(Ident::new(&name, span), ty, span));
         }
-        Some((name, crate::actions::method_result(&m.name)))
+        Some((name, crate::actions::method_result(&m.name), bound))
     });
     let call_on = |target: &Place| -> Vec<Stmt> {
         let callee = match method {
@@ -302,12 +310,25 @@ fn dispatch(
             },
             span,
         }];
-        if let Some((r, hidden)) = &result {
-            body.push(assign(
-                name_place(r, span),
-                place_expr(field(target, hidden, span), span),
-                span,
-            ));
+        if let Some((r, hidden, bound)) = &result {
+            let read = place_expr(field(target, hidden, span), span);
+            let value = if *bound {
+                Expr {
+                    span,
+                    kind: ExprKind::Call {
+                        name: Ident::new(super::refs::REF_ASSIGN, span),
+                        args: vec![Arg {
+                            name: None,
+                            dir: super::ast::ArgDir::Input,
+                            span,
+                            value: read,
+                        }],
+                    },
+                }
+            } else {
+                read
+            };
+            body.push(assign(name_place(r, span), value, span));
         }
         body
     };

@@ -623,9 +623,6 @@ impl Gen<'_, '_> {
         let needs = self.types.needs_known(ty, self.holds);
         match ty {
             TypeRef::Array { dims, element, .. } => {
-                if let Some(a) = args {
-                    self.diags.push(unplaced(a, format!("FB_init arguments for an array of `{}` instances are not supported", a.ty_name)).with_note("each element's FB_init runs with the inputs' initial values"));
-                }
                 if !needs || dims.iter().any(|d| d.upper < d.lower) {
                     return;
                 }
@@ -634,6 +631,42 @@ impl Gen<'_, '_> {
                         d.upper.saturating_sub(d.lower).saturating_add(1).max(0) as u128
                     )
                 });
+                // each element's arguments (CODESYS): `OF FB_X(a := 1)` the same for every
+                // element, `OF FB_X[(a := 1), (a := 2)]` one list per element in index order
+                // (the last dimension fastest), a single list for all of them
+                let lists: Vec<DeclArgs> = match args {
+                    Some(a) if a.elements.is_empty() => vec![a.clone()],
+                    Some(a) => a
+                        .elements
+                        .iter()
+                        .map(|(args, span)| DeclArgs {
+                            args: args.clone(),
+                            span: *span,
+                            elements: Vec::new(),
+                            ..a.clone()
+                        })
+                        .collect(),
+                    None => Vec::new(),
+                };
+                if let Some(a) = args.filter(|a| a.elements.len() > 1) {
+                    if a.elements.len() as u128 != count {
+                        self.diags.push(
+                            Diagnostic::error(
+                                code::E0350,
+                                format!(
+                                    "{} FB_init argument lists for the {count} elements of `{}`",
+                                    a.elements.len(),
+                                    name.name
+                                ),
+                            )
+                            .at(a.span)
+                            .with_primary_label("one list per element")
+                            .with_label(name.span, "array of instances")
+                            .with_hint("give one `(...)` per element, in index order, or a single list that every element takes"),
+                        );
+                        return;
+                    }
+                }
                 if count > MAX_ELEMENTS {
                     let what = match element.as_ref() {
                         TypeRef::Named(t) => format!("`{}`", t.name),
@@ -654,12 +687,19 @@ impl Gen<'_, '_> {
                     return;
                 }
                 let mut index: Vec<i128> = dims.iter().map(|d| d.lower).collect();
+                let mut nth = 0usize;
                 loop {
                     let mut at = place.clone();
                     at.accessors.push(Accessor::Index(
                         index.iter().map(|&i| int(i, name.span)).collect(),
                     ));
-                    self.place(&at, element, name, None, None, out);
+                    let own = match lists.len() {
+                        0 => None,
+                        1 => lists.first(),
+                        _ => lists.get(nth),
+                    };
+                    nth += 1;
+                    self.place(&at, element, name, own, None, out);
                     if out.len() > MAX_STATEMENTS {
                         // (arrays in arrays: reported once, where the limit is reached)
                         if !self.overflowed {

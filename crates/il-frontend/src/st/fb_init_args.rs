@@ -41,8 +41,11 @@ pub struct DeclArgs {
     pub ty_name: String,
     /// The arguments, as in a call.
     pub args: Vec<Arg>,
-    /// From `(` to `)`.
+    /// From `(` to `)` (for a list per element, from `[` to `]`).
     pub span: Span,
+    /// An array's arguments element by element (`ARRAY[0..1] OF FB_X[(a := 1), (a := 2)]`,
+    /// CODESYS): each list with its span, `(` to `)`; empty for one list `FB_X(...)`.
+    pub elements: Vec<(Vec<Arg>, Span)>,
 }
 
 /// See the module documentation; `None` when the text has no such declaration.
@@ -62,6 +65,16 @@ pub(super) fn fb_init_arguments(
             in_vars = true;
         } else if is_word(src, t, "END_VAR") {
             in_vars = false;
+        }
+        // `ARRAY [..] OF FB_X[(a := 1), (a := 2)]`: a list per element (CODESYS)
+        let per_element = in_vars
+            && is_word(src, t, "OF")
+            && toks.get(k + 1).is_some_and(|n| n.tok == Tok::Ident)
+            && toks.get(k + 2).is_some_and(|n| n.tok == Tok::LBracket)
+            && toks.get(k + 3).is_some_and(|n| n.tok == Tok::LParen);
+        if per_element {
+            k = element_lists(file, src, toks, k + 1, diags, found, &mut text);
+            continue;
         }
         // `name : FB_X(`, or the element type of `ARRAY [..] OF FB_X(`
         let declares = in_vars
@@ -116,9 +129,84 @@ pub(super) fn fb_init_arguments(
             ty_name: ty.to_string(),
             args,
             span: Span::new(file, start, end),
+            elements: Vec::new(),
         });
         blank(text.get_or_insert_with(|| src.to_string()), start..end);
         k = close + 1;
     }
     text
+}
+
+/// `FB_X[(args), (args) ...]` from the type's name at `ty` (an array's element type): the lists
+/// read as calls of `FB_X`, one [`DeclArgs`] pushed to `found`, the bracketed text blanked.
+/// Returns the index of the token after the `]` (or where reading stopped).
+fn element_lists(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    ty: usize,
+    diags: &mut Diagnostics,
+    found: &mut Vec<DeclArgs>,
+    text: &mut Option<String>,
+) -> usize {
+    let ty_range = toks[ty].range.clone();
+    let open = ty + 1;
+    let mut elements = Vec::new();
+    let mut k = open + 1;
+    let mut end = toks[open].range.end;
+    while toks.get(k).is_some_and(|t| t.tok == Tok::LParen) {
+        let mut depth = 0usize;
+        let mut close = k;
+        while close < toks.len() {
+            match toks[close].tok {
+                Tok::LParen => depth += 1,
+                Tok::RParen => {
+                    depth -= 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+                Tok::Semi | Tok::Eof => break,
+                _ => {}
+            }
+            close += 1;
+        }
+        let Some(c) = toks.get(close).filter(|c| c.tok == Tok::RParen) else {
+            break;
+        };
+        // `(args)` read as the call `FB_X(args)`, the arguments' spans in the file
+        let pad = " ".repeat(toks[k].range.start - ty_range.end);
+        let call = format!(
+            "{}{pad}{};",
+            &src[ty_range.clone()],
+            src.get(toks[k].range.start..c.range.end).unwrap_or("")
+        );
+        let mut local = Diagnostics::new();
+        let stmts = super::parse_statements(file, &call, ty_range.start, &mut local);
+        diags.extend(local);
+        let args = match stmts.into_iter().next().map(|s| s.kind) {
+            Some(StmtKind::Call { args, .. }) => args,
+            _ => Vec::new(),
+        };
+        elements.push((args, Span::new(file, toks[k].range.start, c.range.end)));
+        end = c.range.end;
+        k = close + 1;
+        if toks.get(k).is_some_and(|t| t.tok == Tok::Comma) {
+            k += 1;
+        }
+    }
+    if let Some(c) = toks.get(k).filter(|t| t.tok == Tok::RBracket) {
+        end = c.range.end;
+        k += 1;
+    }
+    let start = toks[open].range.start;
+    found.push(DeclArgs {
+        ty: Span::new(file, ty_range.start, ty_range.end),
+        ty_name: src[ty_range].to_string(),
+        args: Vec::new(),
+        span: Span::new(file, start, end),
+        elements,
+    });
+    blank(text.get_or_insert_with(|| src.to_string()), start..end);
+    k
 }

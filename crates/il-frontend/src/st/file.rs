@@ -348,7 +348,10 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     // `FUNCTION INTERNAL Integrate` (TwinCAT, stefanbesler/struckig)
                     &["PUBLIC", "INTERNAL"]
                 };
-                let modifier = (toks.get(i + 1).is_some_and(|t| {
+                // several in a row (`FUNCTION_BLOCK INTERNAL ABSTRACT FB_Enumerator`, TwinCAT,
+                // fisothemes/TwinCat-Dynamic-Collections): one range over all of them
+                let mut modifier: Option<Range<usize>> = None;
+                while toks.get(i + 1).is_some_and(|t| {
                     let next = word(src, t).to_ascii_uppercase();
                     t.tok == Tok::Ident
                         && !is_var_keyword(&next)
@@ -362,11 +365,12 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                         .contains(&next.as_str())
                 }) && toks
                     .get(i)
-                    .is_some_and(|t| modifiers.iter().any(|k| is_word(src, t, k))))
-                .then(|| {
+                    .is_some_and(|t| modifiers.iter().any(|k| is_word(src, t, k)))
+                {
+                    let r = toks[i].range.clone();
+                    modifier = Some(modifier.map_or(r.clone(), |m| m.start..r.end));
                     i += 1;
-                    toks[i - 1].range.clone()
-                });
+                }
                 let Some(name_tok) = toks.get(i).filter(|t| t.tok == Tok::Ident) else {
                     continue;
                 };
@@ -1107,9 +1111,16 @@ pub fn parse_text(
     }
     for p in &pous {
         if let Some(r) = &p.modifier {
-            let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
             // FINAL and ABSTRACT are checked with inheritance (`super::inherit`)
-            if m != "FINAL" && m != "ABSTRACT" {
+            let m = src
+                .get(r.clone())
+                .unwrap_or("")
+                .to_ascii_uppercase()
+                .split_whitespace()
+                .filter(|w| *w != "FINAL" && *w != "ABSTRACT")
+                .collect::<Vec<_>>()
+                .join(" ");
+            if !m.is_empty() {
                 diags.push(
                     Diagnostic::warning(
                         code::W0304,
@@ -1945,8 +1956,19 @@ pub fn lower_method(
         p.var_blocks.push(t);
     }
     rename.extend(rename_back);
+    // `THIS^.Hash(k)` where the method declares `Hash : DWORD`: the call stays the block's method
+    let methods = decls.methods.get(&p.name.key());
+    let calls_kept = m
+        .blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .filter(|v| methods.is_some_and(|ms| ms.iter().any(|s| v.name.is(&s.name))))
+        .filter(|v| !matches!(&v.ty, crate::ast::TypeRef::Named(t) if decls.pou(&t.name).is_some()))
+        .map(|v| v.name.key())
+        .collect();
     crate::rename::Renames {
         bases: rename,
+        calls_kept,
         ..Default::default()
     }
     .apply(&mut body);

@@ -218,6 +218,8 @@ impl Env<'_> {
                     TypeRef::Ref { target, .. } => *target,
                     _ => return None,
                 },
+                // a call inside the place: typed once `lower::call_chain` has replaced it
+                Accessor::Call { .. } => return None,
             };
         }
         Some(self.unreference(t))
@@ -288,6 +290,7 @@ impl Env<'_> {
                     TypeRef::Ref { target, .. } => *target,
                     _ => break,
                 },
+                Some(Accessor::Call { .. }) => break,
             };
         }
         out

@@ -128,8 +128,14 @@ impl Oop {
             .as_ref()
             .and_then(|r| src.get(r.clone()))
             .map(str::to_ascii_uppercase);
-        let is_final = modifier.as_deref() == Some("FINAL");
-        let is_abstract = modifier.as_deref() == Some("ABSTRACT");
+        // one word or several (`INTERNAL ABSTRACT`)
+        let has = |w: &str| {
+            modifier
+                .as_deref()
+                .is_some_and(|m| m.split_whitespace().any(|x| x == w))
+        };
+        let is_final = has("FINAL");
+        let is_abstract = has("ABSTRACT");
         let (extends, implements) = p
             .heritage
             .as_ref()

@@ -26,6 +26,8 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 use std::cell::RefCell;
 use std::collections::HashMap;
 
+mod call_chain;
+mod dynamic_memory;
 mod for_control;
 mod memory;
 mod method_flow;
@@ -55,6 +57,9 @@ pub struct PouLowering<'d> {
     loops: Vec<LoopLabels>,
     /// Set when an expression contained a syntax error (reported by the parser).
     poisoned: bool,
+    /// Results of methods called on a property's value (`a.Child.Depth()`, `call_chain`): the
+    /// text the parser reads the result by (`A.CHILD.__M_DEPTH`) and the temporary holding it.
+    property_results: Vec<(String, Ident)>,
     /// The type an untyped literal loaded first by the next [`Self::value`] should get (`LD REAL#2.0`
     /// where the context is REAL), so IL sema does not default it to DINT/LREAL.
     lit_hint: Option<TypeRef>,
@@ -197,6 +202,7 @@ impl<'d> PouLowering<'d> {
             prefix: "_ST_",
             loops: Vec::new(),
             poisoned: false,
+            property_results: Vec::new(),
             lit_hint: None,
             actions: HashMap::new(),
             il_actions: HashMap::new(),
@@ -315,7 +321,7 @@ impl<'d> PouLowering<'d> {
         let PlaceBase::Name(n) = &callee.base else {
             return None;
         };
-        if !callee.accessors.is_empty() || self.vars.contains_key(&n.key()) {
+        if !callee.accessors.is_empty() || self.callable_var(n) {
             return None;
         }
         self.methods.get(&n.key())
@@ -601,6 +607,36 @@ impl<'d> PouLowering<'d> {
     /// every level of the nesting (the E0108 limit must lower without overflowing a 2 MB stack).
     #[inline(never)]
     fn stmt_rewritten(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) -> bool {
+        if self.refuse_dynamic_memory(s, diags) {
+            // `p := __NEW(FB_Item);`: one E0351 each, the statement dropped (dynamic_memory)
+            return true;
+        }
+        if let Some(s) = self.read_property_results(s) {
+            // the statement after `a.Child.Depth();`: reads the result kept below
+            self.stmt(&s, out, diags);
+            return true;
+        }
+        if let Some(calls) = self.call_on_property(s) {
+            // `a.Child.Depth(...)` (the parser put it before its statement): the property's
+            // value first, then the call on it, its result kept (call_chain)
+            for c in &calls {
+                self.stmt(c, out, diags);
+            }
+            self.types.get_mut().clear();
+            return true;
+        }
+        if call_chain::stmt_has_chain(s) {
+            // `x := stack.Get(1).Pop();`: the chain's calls first, each result in a temporary
+            // (call_chain), then the statement on the temporaries with every other rewrite
+            if let Some((calls, rest)) = self.hoist_method_calls(s, diags) {
+                for c in &calls {
+                    self.stmt(c, out, diags);
+                }
+                self.stmt(&rest, out, diags);
+                self.types.get_mut().clear();
+                return true;
+            }
+        }
         if self.properties {
             let rewritten = super::property::rewrite(&self.env(), &self.methods, s, diags);
             if let Some((calls, rest)) = rewritten {
@@ -1575,6 +1611,7 @@ impl<'d> PouLowering<'d> {
                         .collect::<Option<Vec<_>>>()?,
                 ),
                 Accessor::Deref(s) => il::Accessor::Deref(*s),
+                Accessor::Call { .. } => return None,
             });
         }
         if derefs.contains(&p.accessors.len()) {
@@ -1638,6 +1675,20 @@ impl<'d> PouLowering<'d> {
                     il::Accessor::Index(ops)
                 }
                 Accessor::Deref(s) => il::Accessor::Deref(*s),
+                // every chain is taken apart before its statement is lowered (call_chain); one
+                // left here stands where no statement could run its calls first
+                Accessor::Call { span, .. } => {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0349,
+                            "a method's result cannot be accessed here",
+                        )
+                        .at(*span)
+                        .with_hint("call the method in a statement before, store its result in a variable and access that"),
+                    );
+                    self.poisoned = true;
+                    return None;
+                }
             });
         }
         if derefs.contains(&p.accessors.len()) {

@@ -11,7 +11,8 @@
 //! assignments (`blockSize          := SIZEOF(Block) * SINT_TO_UDINT(dofs);`, the name and the
 //! expression where they are written, everything else blanked). `None` when there is none.
 //! Invariants: positions do not move (the assignments are parsed in place); only single-name
-//! declarations of VAR / VAR_TEMP blocks whose initial value holds a `(` are taken (a constant or
+//! declarations of VAR / VAR_TEMP blocks whose initial value holds a call or a `^` (a pointer's
+//! `THIS^.pRoot`, fisothemes/TwinCat-Dynamic-Collections) are taken (a constant or
 //! an array/structure initialiser `[..]`, `(a := 1)` after a type stays a declaration's).
 
 use super::lexer::{lex, Tok};
@@ -55,10 +56,7 @@ pub(super) fn split(decls: &str) -> Option<(String, String)> {
                 // a call right after `:=` or inside the expression, not an initialiser after the
                 // type (`(a := 1, b := 2)` of a structure starts at `:=` + 1 with `(` and holds `:=`)
                 let value = &toks[k + 1..end];
-                let calls = value
-                    .windows(2)
-                    .any(|p| p[0].tok == Tok::Ident && p[1].tok == Tok::LParen);
-                if single && calls && toks[end].tok == Tok::Semi {
+                if single && is_run_time_value(value) && toks[end].tok == Tok::Semi {
                     let from = toks[k].range.start;
                     let to = toks[end - 1].range.end;
                     // the declaration reads without `:= expr`
@@ -78,6 +76,16 @@ pub(super) fn split(decls: &str) -> Option<(String, String)> {
         k += 1;
     }
     found.then_some((read, inits))
+}
+
+/// Whether an initial value's tokens compute at run time: a call (`SIZEOF(T) * k`), or a
+/// dereference (`THIS^.pRoot`, `pX^.pRight` for a pointer; not `ADR(x)` alone, which a declaration
+/// holds).
+pub(super) fn is_run_time_value(value: &[super::lexer::Token]) -> bool {
+    value
+        .windows(2)
+        .any(|p| p[0].tok == Tok::Ident && p[1].tok == Tok::LParen)
+        || value.iter().any(|t| t.tok == Tok::Caret)
 }
 
 /// `text` with every character but line breaks replaced by a space (byte lengths kept: a

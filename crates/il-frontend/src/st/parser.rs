@@ -27,6 +27,8 @@ const MAX_DEPTH: usize = 128;
 const MAX_ASSIGN_CHAIN: usize = 64;
 /// The most tokens a place may span for the chained-assignment lookahead.
 const MAX_PLACE_LOOKAHEAD: usize = 256;
+/// The most tokens looked at for a call chain (`)` then `.`) ahead of a statement or call.
+const MAX_CHAIN_LOOKAHEAD: usize = 4096;
 
 /// More operations than this in one expression (operators, function calls and array indexes, in its
 /// parentheses and call arguments too) is E0109. The C of a long expression is linear (about one line per
@@ -367,12 +369,66 @@ impl<'s, 'd> Parser<'s, 'd> {
     /// Parses one statement into `out`, after the method calls its expressions hold.
     fn statement_into(&mut self, out: &mut Vec<Stmt>) {
         let outer = std::mem::take(&mut self.hoisted);
+        // a call chain (`x := a.M() + s.Get(1).Pop();`) is taken apart by the lowering: the
+        // statement's other method calls stay in place too, so that all run in source order
+        let chained = self.chain_ahead();
+        let outer_no_hoist = std::mem::replace(&mut self.no_hoist, usize::from(chained));
         let s = self.statement();
+        self.no_hoist = outer_no_hoist;
         let calls = std::mem::replace(&mut self.hoisted, outer);
         if let Some(s) = s {
             out.extend(calls);
             out.push(s);
         }
+    }
+
+    /// Whether the statement starting here holds a call chain (`)` followed by `.`, `^` or `[`)
+    /// before its first `;` outside parentheses (looking at most [`MAX_CHAIN_LOOKAHEAD`] tokens).
+    fn chain_ahead(&self) -> bool {
+        let mut depth = 0usize;
+        for i in 0..MAX_CHAIN_LOOKAHEAD {
+            match self.peek_at(i) {
+                Tok::LParen => depth += 1,
+                Tok::RParen => {
+                    depth = depth.saturating_sub(1);
+                    if matches!(self.peek_at(i + 1), Tok::Dot | Tok::Caret | Tok::LBracket) {
+                        return true;
+                    }
+                }
+                Tok::Semi if depth == 0 => return false,
+                Tok::Eof => return false,
+                _ => {}
+            }
+        }
+        false
+    }
+
+    /// Whether the `(` at `self.peek_at(at)` opens a call whose `)` is followed by `.`, `^` or `[`
+    /// (a call chain: `stack.Get(1).Pop()`, `Next()^.Value`).
+    fn call_then_access(&self, at: usize) -> bool {
+        if *self.peek_at(at) != Tok::LParen {
+            return false;
+        }
+        let mut depth = 0usize;
+        let mut i = at;
+        while i < at + MAX_CHAIN_LOOKAHEAD {
+            match self.peek_at(i) {
+                Tok::LParen => depth += 1,
+                Tok::RParen => {
+                    depth -= 1;
+                    if depth == 0 {
+                        return matches!(
+                            self.peek_at(i + 1),
+                            Tok::Dot | Tok::Caret | Tok::LBracket
+                        );
+                    }
+                }
+                Tok::Semi | Tok::Eof => return false,
+                _ => {}
+            }
+            i += 1;
+        }
+        false
     }
 
     /// A statement list that stops also before a CASE label (`5:`, `1, 2:`, `3..4:`, `red:`).
@@ -965,7 +1021,11 @@ impl<'s, 'd> Parser<'s, 'd> {
         let twice = self.hoisted.iter().any(
             |s| matches!(&s.kind, StmtKind::Call { callee: c, .. } if text(c) == text(&callee)),
         );
-        if self.no_hoist > 0 || twice {
+        let chain = callee
+            .accessors
+            .iter()
+            .any(|a| matches!(a, Accessor::Call { .. }));
+        if self.no_hoist > 0 || twice || chain {
             // left in the expression: the lowering runs it where the source evaluates it
             // (`super::lower::method_flow`)
             return super::lower::method_call_expr(callee, args, span);
@@ -1091,6 +1151,17 @@ impl<'s, 'd> Parser<'s, 'd> {
                     }
                     accessors.push(Accessor::Deref(self.span(t.range.start, t.range.end)));
                 }
+                // `stack.Get(1).Pop`, `Get(1).Value`, `Next()^.x`: a call chain (CODESYS, TwinCAT)
+                Tok::LParen
+                    if matches!(accessors.last(), None | Some(Accessor::Field(_)))
+                        && matches!(base, PlaceBase::Name(_))
+                        && self.call_then_access(0) =>
+                {
+                    let open = self.cur().range.start;
+                    let args = self.args()?;
+                    let span = self.span(open, self.prev_end());
+                    accessors.push(Accessor::Call { args, span });
+                }
                 _ => break,
             }
         }
@@ -1099,6 +1170,34 @@ impl<'s, 'd> Parser<'s, 'd> {
             accessors,
             span: self.span(start, self.prev_end()),
         })
+    }
+
+    /// A call whose arguments are not read (`__NEW(POINTER TO T, n)`): its text up to the
+    /// matching `)` is skipped, the call kept without arguments.
+    fn skipped_call(&mut self, name: Ident, here: Span) -> Expr {
+        let mut depth = 0usize;
+        loop {
+            match self.peek() {
+                Tok::LParen => depth += 1,
+                Tok::RParen => {
+                    depth = depth.saturating_sub(1);
+                    if depth == 0 {
+                        self.bump();
+                        break;
+                    }
+                }
+                Tok::Semi | Tok::Eof => break,
+                _ => {}
+            }
+            self.bump();
+        }
+        Expr {
+            kind: ExprKind::Call {
+                name,
+                args: Vec::new(),
+            },
+            span: here.to(self.span(self.prev_end(), self.prev_end())),
+        }
     }
 
     /// `( args )` after a call target.
@@ -1494,11 +1593,17 @@ impl<'s, 'd> Parser<'s, 'd> {
             // `XOR(a, b)`, `MOD(x, 2)`, `AND(a, b, c)`: the standard functions named like operators,
             // in functional form.
             Tok::Kw(Kw::Xor | Kw::Mod | Kw::And | Kw::Or) | Tok::Ident
-                if *self.peek_at(1) == Tok::LParen =>
+                if *self.peek_at(1) == Tok::LParen
+                    && !(t.tok == Tok::Ident && self.call_then_access(1)) =>
             {
                 let n = self.bump();
                 self.count_operation(n.range.start, n.range.end);
                 let name = self.ident(&n);
+                if name.is("__NEW") {
+                    // `__NEW(POINTER TO T, n)` (CODESYS, TwinCAT): its first argument is a type,
+                    // no expression; the lowering refuses the call (E0351, `lower::dynamic_memory`)
+                    return self.skipped_call(name, here);
+                }
                 match self.args() {
                     Some(args) => Expr {
                         kind: ExprKind::Call { name, args },

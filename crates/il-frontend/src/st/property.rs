@@ -380,6 +380,44 @@ impl Rewriter<'_, '_> {
         (get || set).then_some(Prop { get, set })
     }
 
+    /// Whether a write to `p` past its property `name` (at `at`) goes through the property's
+    /// value to a variable: the property is a `REFERENCE TO`, or a `^` follows it.
+    fn writes_through(&self, p: &Place, at: At, name: &Ident) -> bool {
+        let next = match at {
+            At::Base => 0,
+            At::Field(k) => k + 1,
+        };
+        if matches!(p.accessors.get(next), Some(Accessor::Deref(_))) {
+            return true;
+        }
+        let result = Ident::new(
+            crate::actions::method_result(&getter(&name.name)),
+            name.span,
+        );
+        let ty = match at {
+            At::Base => self.env.var_type(&result),
+            At::Field(k) => {
+                let prefix = Place {
+                    base: p.base.clone(),
+                    accessors: p.accessors[..k].to_vec(),
+                    span: p.span,
+                };
+                self.env
+                    .place_type(&prefix)
+                    .and_then(|t| self.env.member(&t, &result))
+            }
+        };
+        ty.is_some_and(|t| {
+            matches!(
+                self.env.resolve(&t),
+                TypeRef::Ref {
+                    kind: crate::ast::RefKind::Reference,
+                    ..
+                }
+            )
+        })
+    }
+
     /// The property a place names (or starts with: `inst.P.x`), its name and where it stands.
     fn find(&self, p: &Place) -> Option<(At, Prop, Ident)> {
         if let PlaceBase::Name(n) = &p.base {
@@ -613,6 +651,28 @@ impl Rewriter<'_, '_> {
                         At::Base => target.accessors.is_empty(),
                         At::Field(k) => k + 1 == target.accessors.len(),
                     };
+                    if !whole && self.writes_through(target, at, &name) {
+                        // `a.Child.Value := 5;` with `PROPERTY Child : REFERENCE TO FB_Tree`
+                        // (or `P^.x := 1;` of a POINTER TO): the getter runs, and the write goes
+                        // to what its result refers to (CODESYS, TwinCAT)
+                        let mut read = Expr {
+                            span: target.span,
+                            kind: ExprKind::Place(target.clone()),
+                        };
+                        self.read(&mut read);
+                        if let ExprKind::Place(p) = &mut read.kind {
+                            *target = std::mem::replace(
+                                p,
+                                Place {
+                                    base: PlaceBase::Name(name.clone()),
+                                    accessors: Vec::new(),
+                                    span,
+                                },
+                            );
+                        }
+                        self.read(value);
+                        return;
+                    }
                     if !whole {
                         self.error(
                             code::E0338,
@@ -775,7 +835,7 @@ fn place_key(p: &Place) -> Option<String> {
                 s.push_str(&f.key());
             }
             Accessor::Deref(_) => s.push('^'),
-            Accessor::Index(_) => return None,
+            Accessor::Index(_) | Accessor::Call { .. } => return None,
         }
     }
     Some(s)

@@ -60,6 +60,12 @@ pub struct RefTypes {
     /// `:= ADR(x)` initial values (CODESYS, TwinCAT), by the offset of the type text: set on the
     /// declarations when they are wrapped (sema checks what `x` is).
     addresses: HashMap<usize, VarRef>,
+    /// While blanking: inside `METHOD ... END_METHOD`, where a variable's initial value may be an
+    /// expression assigned when the method starts (`super::method_inits`).
+    in_method: bool,
+    /// While blanking: the declaration being read is of one name in a method (`p : T := e`), whose
+    /// initial value `method_inits` can assign (`a, b : T := e` it cannot: E0305 stays).
+    one_method_var: bool,
 }
 
 impl RefTypes {
@@ -89,14 +95,25 @@ impl RefTypes {
             at: HashMap::new(),
             pending: Vec::new(),
             addresses: HashMap::new(),
+            in_method: false,
+            one_method_var: false,
         };
         let mut in_decl = false;
         for (k, t) in toks.iter().enumerate() {
             let w = word(src, t).to_ascii_uppercase();
             if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
-                // (a METHOD's result type too: `METHOD Take : POINTER TO ST_Node`)
+                if w == "METHOD" {
+                    refs.in_method = true;
+                } else if w == "END_METHOD" {
+                    refs.in_method = false;
+                }
+                // (a METHOD's result type too: `METHOD Take : POINTER TO ST_Node`, and a
+                // PROPERTY's: `PROPERTY Child : REFERENCE TO FB_Tree`)
                 if is_var_keyword(&w)
-                    || matches!(w.as_str(), "STRUCT" | "TYPE" | "FUNCTION" | "METHOD")
+                    || matches!(
+                        w.as_str(),
+                        "STRUCT" | "TYPE" | "FUNCTION" | "METHOD" | "PROPERTY"
+                    )
                 {
                     in_decl = true;
                 } else if matches!(w.as_str(), "END_VAR" | "END_STRUCT" | "END_TYPE") {
@@ -153,7 +170,15 @@ impl RefTypes {
             }
             if let (Some(span), Some(target)) = (first, toks.get(j)) {
                 refs.at.insert(base + target.range.start, (kinds, span));
-                refs.initial_value(file, src, toks, j, base, &mut text);
+                // a METHOD's, FUNCTION's or PROPERTY's result type has no initial value: the
+                // body follows (`METHOD Next : POINTER TO FB_Item` then `Next := pNext;`)
+                if !result_type_at(src, toks, k) {
+                    refs.one_method_var = refs.in_method
+                        && k >= 1
+                        && toks[k - 1].tok == Tok::Ident
+                        && (k < 2 || toks[k - 2].tok != Tok::Comma);
+                    refs.initial_value(file, src, toks, j, base, &mut text);
+                }
             }
         }
         (text, refs)
@@ -217,6 +242,11 @@ impl RefTypes {
             if let Some(t) = toks.get(j) {
                 self.addresses.insert(base + t.range.start, target);
             }
+        } else if self.one_method_var && super::method_inits::is_run_time_value(&toks[k + 1..end]) {
+            // `pCurrent : POINTER TO T := THIS^.pRoot;` in a method (CODESYS, TwinCAT,
+            // fisothemes/TwinCat-Dynamic-Collections): assigned when the method starts
+            // (`method_inits`), left in the text for it
+            return;
         } else if !value.eq_ignore_ascii_case("NULL") {
             self.pending.push(
                 Diagnostic::error(
@@ -334,6 +364,26 @@ impl RefTypes {
             };
         }
     }
+}
+
+/// Whether the `:` at token `colon` starts the result type of a POU header: `METHOD [modifiers]
+/// Name :`, `FUNCTION Name :`, `PROPERTY [modifiers] Name :`.
+fn result_type_at(src: &str, toks: &[Token], colon: usize) -> bool {
+    let Some(mut k) = colon.checked_sub(1) else {
+        return false;
+    };
+    if toks[k].tok != Tok::Ident {
+        return false;
+    }
+    while let Some(before) = k.checked_sub(1) {
+        let w = word(src, &toks[before]).to_ascii_uppercase();
+        match w.as_str() {
+            "METHOD" | "FUNCTION" | "PROPERTY" => return true,
+            "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL" | "FINAL" | "ABSTRACT" => k = before,
+            _ => return false,
+        }
+    }
+    false
 }
 
 /// `ADR(path)` / `REF(path)` written as an initial value, `path` a name with fields and constant

@@ -77,6 +77,9 @@ pub struct Declarations {
     /// Whether any declaration holds a `REFERENCE TO` (computed on the first
     /// [`Declarations::has_reference_to`], once the declarations are complete).
     references: std::sync::OnceLock<bool>,
+    /// The files where E0351 (`__NEW` / `__DELETE`) was reported: once per file (`lower::dynamic_memory`).
+    pub(super) heap_reported:
+        std::sync::Arc<std::sync::Mutex<std::collections::HashSet<crate::FileId>>>,
 }
 
 /// A method's interface as seen from inside its function block: the call `M(a, b)` or `M(v := a)`

@@ -83,6 +83,7 @@ pub(super) fn place_text(p: &Place) -> String {
                 s.push_str(&format!("[{}]", parts.join(", ")));
             }
             Accessor::Deref(_) => s.push('^'),
+            Accessor::Call { .. } => s.push_str("(..)"),
         }
     }
     s

@@ -9,8 +9,9 @@
 //! call stands where it can run first:
 //! - `IF a THEN .. ELSIF M() THEN .. END_IF` -> `IF a THEN .. ELSE IF M() THEN .. END_IF END_IF`;
 //! - `WHILE c(M()) DO body END_WHILE` -> `WHILE TRUE DO IF NOT c THEN EXIT; END_IF; body END_WHILE`;
-//! - `REPEAT body UNTIL c(M()) END_REPEAT` -> `REPEAT body; IF c THEN EXIT; END_IF; UNTIL FALSE
-//!   END_REPEAT` (E0108 when the body holds a CONTINUE of this loop, which would skip the test);
+//! - `REPEAT body UNTIL c(M()) END_REPEAT` -> `REPEAT body UNTIL t END_REPEAT` with `t := c` in
+//!   the loop's setup, which runs before each test, also after a CONTINUE of the body (before
+//!   issue #13's round on call chains a CONTINUE there was E0108);
 //! - `a AND_THEN M()` -> `t := a; IF t THEN t := M(); END_IF` before the statement, which reads `t`
 //!   (`OR_ELSE`: `IF NOT t`).
 //!
@@ -25,7 +26,7 @@ use super::super::ast::{
 };
 use super::super::infer::named;
 use super::{place_exprs, PouLowering};
-use crate::ast::{Ident, LiteralKind};
+use crate::ast::{Ident, LiteralKind, TypeRef};
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics};
 
@@ -83,7 +84,7 @@ fn bool_lit(v: bool, span: Span) -> Expr {
 }
 
 /// The text key of a place made of names and fields only (`Roots.PolyEval`), upper-case.
-fn field_key(p: &Place) -> Option<String> {
+pub(super) fn field_key(p: &Place) -> Option<String> {
     let PlaceBase::Name(n) = &p.base else {
         return None;
     };
@@ -98,28 +99,25 @@ fn field_key(p: &Place) -> Option<String> {
     Some(k)
 }
 
-/// Whether `body` holds a CONTINUE of its own loop (not of a loop nested in it).
-fn continues(body: &[Stmt]) -> bool {
-    body.iter().any(|s| match &s.kind {
-        StmtKind::Continue => true,
-        StmtKind::If {
-            branches,
-            else_body,
-        } => {
-            branches.iter().any(|b| continues(&b.body))
-                || else_body.as_deref().is_some_and(continues)
-        }
-        StmtKind::Case {
-            arms, else_body, ..
-        } => arms.iter().any(|a| continues(&a.body)) || else_body.as_deref().is_some_and(continues),
-        _ => false,
-    })
-}
-
 impl PouLowering<'_> {
     /// Whether `n` names one of the block's methods (and no variable).
     pub(super) fn is_method(&self, n: &Ident) -> bool {
-        self.methods.contains_key(&n.key()) && !self.vars.contains_key(&n.key())
+        self.methods.contains_key(&n.key()) && !self.callable_var(n)
+    }
+
+    /// Whether `n` is a variable that a call could name: one that is no data, a function block
+    /// instance. A method's local variable named like one of the block's methods (`Hash : DWORD`
+    /// beside `THIS^.Hash(Key)`, fisothemes/TwinCat-Dynamic-Collections) cannot be called, so a
+    /// call of that name is the method's (before: E3103).
+    pub(super) fn callable_var(&self, n: &Ident) -> bool {
+        let Some(ty) = self.vars.get(&n.key()) else {
+            return false;
+        };
+        let env = self.env();
+        match env.resolve(ty) {
+            TypeRef::Named(t) => env.decls.pou(&t.name).is_some(),
+            _ => false,
+        }
     }
 
     /// The span of the first method call inside `e` (an own method's, or [`METHOD_CALL`]), left
@@ -141,6 +139,9 @@ impl PouLowering<'_> {
                     todo.extend(args.iter().rev().map(|a| &a.value));
                 }
                 ExprKind::Place(p) => {
+                    if super::call_chain::is_chain(p) {
+                        return Some(p.span);
+                    }
                     for a in p.accessors.iter().rev() {
                         if let Accessor::Index(ix) = a {
                             todo.extend(ix.iter().rev());
@@ -163,9 +164,10 @@ impl PouLowering<'_> {
     ) -> Option<(Vec<Stmt>, Stmt)> {
         let has = |e: &Expr| self.first_method_call(e).is_some();
         let place_has = |p: &Place| {
-            p.accessors
-                .iter()
-                .any(|a| matches!(a, Accessor::Index(ix) if ix.iter().any(has)))
+            super::call_chain::is_chain(p)
+                || p.accessors
+                    .iter()
+                    .any(|a| matches!(a, Accessor::Index(ix) if ix.iter().any(has)))
         };
         let any = match &s.kind {
             StmtKind::Assign { target, value } => place_has(target) || has(value),
@@ -184,12 +186,27 @@ impl PouLowering<'_> {
         if !any {
             return None;
         }
-        if let Some(rewritten) = self.calls_made_eager(s, diags) {
+        if let Some(rewritten) = self.calls_made_eager(s) {
             return Some((Vec::new(), rewritten));
         }
         let mut calls = Vec::new();
         let mut rest = s.clone();
         self.keep_earlier_results(&mut rest, &mut calls);
+        // a chain in the place written or called: its calls first (`list.Item(2).Value := 5;`)
+        if let StmtKind::Assign { target: p, .. } | StmtKind::Call { callee: p, .. } =
+            &mut rest.kind
+        {
+            if super::call_chain::is_chain(p) && !self.unchain(p, &mut calls, diags) {
+                let span = rest.span;
+                return Some((
+                    calls,
+                    Stmt {
+                        kind: StmtKind::Empty,
+                        span,
+                    },
+                ));
+            }
+        }
         let mut eager: Vec<&mut Expr> = Vec::new();
         match &mut rest.kind {
             StmtKind::Assign { target, value } => {
@@ -217,7 +234,7 @@ impl PouLowering<'_> {
 
     /// `s` rewritten when a method call stands in a condition evaluated later than the statement
     /// starts (ELSIF, WHILE, UNTIL); `None` when none does.
-    fn calls_made_eager(&self, s: &Stmt, diags: &mut Diagnostics) -> Option<Stmt> {
+    fn calls_made_eager(&mut self, s: &Stmt) -> Option<Stmt> {
         let span = s.span;
         match &s.kind {
             StmtKind::If {
@@ -279,53 +296,19 @@ impl PouLowering<'_> {
                 })
             }
             StmtKind::Repeat { body, until, setup } => {
-                let at = self.first_method_call(until)?;
-                if continues(body) {
-                    diags.push(
-                        Diagnostic::error(
-                            code::E0108,
-                            "a method call in the UNTIL condition of a REPEAT whose body holds CONTINUE is not supported",
-                        )
-                        .at(at)
-                        .with_hint("call the method at the end of the body and test the variable that holds its result"),
-                    );
-                    let mut body = body.clone();
-                    body.push(Stmt {
-                        kind: StmtKind::Exit,
-                        span: at,
-                    });
-                    return Some(Stmt {
-                        kind: StmtKind::Repeat {
-                            body,
-                            setup: setup.clone(),
-                            until: bool_lit(true, at),
-                        },
-                        span,
-                    });
-                }
+                self.first_method_call(until)?;
+                // the test computed into a temporary by the loop's setup, which runs before each
+                // test, also after a CONTINUE: IEC 61131-3 ed. 3 (7.3.3.4.10) and CODESYS's
+                // CONTINUE go on with the next iteration, whose REPEAT test comes first
                 let c = until.span;
-                // the body, the condition's ExST assignments, then the test
-                let mut inner = body.clone();
-                inner.extend(setup.iter().cloned());
-                inner.push(Stmt {
-                    kind: StmtKind::If {
-                        branches: vec![CondBranch {
-                            cond: until.clone(),
-                            body: vec![Stmt {
-                                kind: StmtKind::Exit,
-                                span: c,
-                            }],
-                            span: c,
-                        }],
-                        else_body: None,
-                    },
-                    span: c,
-                });
+                let t = self.temp(named("BOOL", c), c);
+                let mut setup = setup.clone();
+                setup.push(assign(name_place(t.clone()), until.clone(), c));
                 Some(Stmt {
                     kind: StmtKind::Repeat {
-                        body: inner,
-                        setup: Vec::new(),
-                        until: bool_lit(false, c),
+                        body: body.clone(),
+                        setup,
+                        until: place_expr(name_place(t)),
                     },
                     span,
                 })
@@ -363,13 +346,20 @@ impl PouLowering<'_> {
                 place_expr(read.clone()),
                 read.span,
             ));
-            walk_stmt_exprs(s, &mut |e| replace_place(e, &result_key, &t));
+            walk_stmt_exprs(s, &mut |e| {
+                replace_place(e, &result_key, &t);
+            });
         }
     }
 
     /// Replaces the method calls inside `e` (arguments first) by temporaries holding their
     /// results, the calls and copies appended to `calls` in evaluation order.
-    fn hoist_in(&mut self, e: &mut Expr, calls: &mut Vec<Stmt>, diags: &mut Diagnostics) {
+    pub(super) fn hoist_in(
+        &mut self,
+        e: &mut Expr,
+        calls: &mut Vec<Stmt>,
+        diags: &mut Diagnostics,
+    ) {
         let span = e.span;
         match &mut e.kind {
             ExprKind::Unary { operand, .. } => self.hoist_in(operand, calls, diags),
@@ -421,6 +411,15 @@ impl PouLowering<'_> {
             }
             ExprKind::Call { name, args } => {
                 let instance_call = name.is(METHOD_CALL);
+                if instance_call {
+                    // `stack.Get(1).Pop()`: the calls before the last one first
+                    if let Some(ExprKind::Place(p)) = args.first_mut().map(|a| &mut a.value.kind) {
+                        if super::call_chain::is_chain(p) && !self.unchain(p, calls, diags) {
+                            e.kind = ExprKind::Error;
+                            return;
+                        }
+                    }
+                }
                 let skip = usize::from(instance_call);
                 for a in args.iter_mut().skip(skip) {
                     self.hoist_in(&mut a.value, calls, diags);
@@ -476,6 +475,10 @@ impl PouLowering<'_> {
                 }
             }
             ExprKind::Place(p) => {
+                if super::call_chain::is_chain(p) && !self.unchain(p, calls, diags) {
+                    e.kind = ExprKind::Error;
+                    return;
+                }
                 let mut inner = Vec::new();
                 place_exprs(p, &mut inner);
                 for x in inner {
@@ -489,7 +492,7 @@ impl PouLowering<'_> {
 
 /// Calls `f` on each expression `s` evaluates before its body (the ones [`PouLowering::hoist_method_calls`]
 /// hoists from).
-fn walk_stmt_exprs(s: &mut Stmt, f: &mut dyn FnMut(&mut Expr)) {
+pub(super) fn walk_stmt_exprs(s: &mut Stmt, f: &mut dyn FnMut(&mut Expr)) {
     match &mut s.kind {
         StmtKind::Assign { target, value } => {
             let mut v = Vec::new();
@@ -558,12 +561,16 @@ fn find_place(e: &mut Expr, key: &str, found: &mut Option<Place>) {
     });
 }
 
-fn replace_place(e: &mut Expr, key: &str, t: &Ident) {
+/// Replaces each read of the place `key` in `e` by `t`; whether there was one.
+pub(super) fn replace_place(e: &mut Expr, key: &str, t: &Ident) -> bool {
+    let mut hit = false;
     each_expr(e, &mut |x| {
         if let ExprKind::Place(p) = &x.kind {
             if field_key(p).as_deref() == Some(key) {
                 x.kind = ExprKind::Place(name_place(Ident::new(t.name.clone(), p.span)));
+                hit = true;
             }
         }
     });
+    hit
 }

@@ -42,6 +42,7 @@ fn has_short_circuit(mut e: &Expr) -> bool {
 fn place_has(p: &Place) -> bool {
     p.accessors.iter().any(|a| match a {
         Accessor::Index(ix) => ix.iter().any(has_short_circuit),
+        Accessor::Call { args, .. } => args.iter().any(|a| has_short_circuit(&a.value)),
         Accessor::Field(_) | Accessor::Deref(_) => false,
     })
 }
