@@ -387,13 +387,17 @@ impl Body<'_, '_> {
                 st.cr.ty = Some(Ty::ERROR);
                 return;
             } else if name.is("__NEW") || name.is("__DELETE") {
-                // CODESYS/TwinCAT dynamic memory: one error, the argument (a type name for
-                // `__NEW`) not looked up as a variable
+                // CODESYS/TwinCAT dynamic memory (an IL call; ST's are E0351 once per file,
+                // `st::lower::dynamic_memory`): one error, the argument (a type name for `__NEW`)
+                // not looked up as a variable
                 self.a
                     .error(
-                        code::E1062,
+                        code::E0351,
                         name.span,
-                        format!("dynamic memory (`{}`) is not supported", name.name),
+                        format!(
+                            "`{}`: ladderc has no dynamic memory (no heap) to create or free variables at run time",
+                            name.name
+                        ),
                     )
                     .label("a CODESYS/TwinCAT operator")
                     .hint("declare the variable (or an array of them) instead: every variable of a ladderc program exists before the first scan");

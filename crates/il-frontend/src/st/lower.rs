@@ -1998,7 +1998,7 @@ impl<'d> PouLowering<'d> {
     ) {
         let dropped = std::mem::take(&mut self.result_dropped);
         // CODESYS/TwinCAT dynamic memory (`__NEW(BYTE)`: a type name for argument): the call is
-        // lowered without its arguments, so that sema's one E1062 is all that is said of it
+        // lowered without its arguments, so that one E0351 is all that is said of it
         let args: &[Arg] =
             if (name.is("__NEW") || name.is("__DELETE")) && self.decls.pou(&name.name).is_none() {
                 &[]
