@@ -189,6 +189,7 @@ impl<'s> Layout<'s> {
         if !matches!(tok, Tok::Eol | Tok::UnitStart | Tok::BodyStart) {
             self.last_end = end;
         }
+        // a VAR block's keyword (`VAR`, `VAR_INPUT`, ..., `CONSTANT`, `RETAIN`, `NON_RETAIN`)
         self.var_head = matches!(
             tok,
             Tok::Word(
@@ -204,23 +205,7 @@ impl<'s> Layout<'s> {
                     | Word::NonRetain
             )
         );
-        self.decl_start = matches!(
-            tok,
-            Tok::Semi
-                | Tok::Word(
-                    Word::Struct
-                        | Word::Var
-                        | Word::VarInput
-                        | Word::VarOutput
-                        | Word::VarInOut
-                        | Word::VarTemp
-                        | Word::VarGlobal
-                        | Word::VarExternal
-                        | Word::Constant
-                        | Word::Retain
-                        | Word::NonRetain
-                )
-        );
+        self.decl_start = self.var_head || matches!(tok, Tok::Semi | Tok::Word(Word::Struct));
         self.prev2 = self.prev;
         self.prev = last;
         self.out.push_back((start, tok, end));

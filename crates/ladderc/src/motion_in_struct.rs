@@ -14,36 +14,14 @@
 
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
-    Accessor, CompilationUnit, IlStmt, InstrKind, LibraryElement, TypeDef, TypeRef, VarRef,
+    Accessor, CompilationUnit, IlStmt, InstrKind, LibraryElement, TypeRef, VarRef,
 };
 use param_passing::library::Library;
 use std::collections::HashMap;
 
 /// Reports the calls of motion blocks held in structures (see the module header).
 pub fn report(units: &[CompilationUnit], lib: &Library, diags: &mut Diagnostics) {
-    let mut structs: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
-    let mut globals: HashMap<String, TypeRef> = HashMap::new();
-    for item in units.iter().flat_map(|u| u.items.iter()) {
-        match item {
-            LibraryElement::DataTypes(ts) => {
-                for t in ts {
-                    if let TypeDef::Struct { fields } = &t.def {
-                        structs.insert(
-                            t.name.key(),
-                            fields
-                                .iter()
-                                .map(|f| (f.name.key(), f.ty.clone()))
-                                .collect(),
-                        );
-                    }
-                }
-            }
-            LibraryElement::GlobalVars(b) => {
-                globals.extend(b.vars.iter().map(|v| (v.name.key(), v.ty.clone())))
-            }
-            _ => {}
-        }
-    }
+    let (structs, globals) = crate::tc2_mc2::declared_types(units);
     if structs.is_empty() {
         return;
     }

@@ -364,16 +364,7 @@ fn call(axis: &Ident, suffix: &str, index: Option<Vec<Operand>>) -> IlStmt {
 /// (MC_ReadAxisError's AxisErrorID, ladderc's ErrorID numbers).
 fn error_code(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
     let at = axis.span;
-    let simple = |op: Op, v: VarRef| {
-        instr(
-            InstrKind::Simple {
-                op,
-                negate: false,
-                operand: Some(Operand::Var(v)),
-            },
-            at,
-        )
-    };
+    let simple = |op: Op, v: VarRef| var_instr(op, v, at);
     vec![
         call(axis, "AXERR", index.clone()),
         simple(
@@ -403,16 +394,7 @@ fn error_code(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
 /// the element `index` of an array of axes).
 fn moving(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
     let at = axis.span;
-    let simple = |op: Op, v: VarRef| {
-        instr(
-            InstrKind::Simple {
-                op,
-                negate: false,
-                operand: Some(Operand::Var(v)),
-            },
-            at,
-        )
-    };
+    let simple = |op: Op, v: VarRef| var_instr(op, v, at);
     let mut out = Vec::new();
     for (k, f) in MOVING.iter().enumerate() {
         let op = if k == 0 { Op::Ld } else { Op::Or };
@@ -578,5 +560,17 @@ fn e1042(member: &str, span: Span) -> Diagnostic {
         "ladderc reads Status.Error, ErrorID, ErrorStop, Disabled, Stopping, StandStill, DiscreteMotion, \
          ContinuousMotion, SynchronizedMotion, Homing, InTargetPosition, InPositionArea, Moving, \
          NotMoving and NcToPlc.ActPos, SetPos, ActVelo, SetVelo, ErrorCode",
+    )
+}
+
+/// `op v` (`LD v`, `ST v`, ...): a simple IL instruction on a variable, at `at`.
+fn var_instr(op: Op, v: VarRef, at: il_frontend::Span) -> IlStmt {
+    instr(
+        InstrKind::Simple {
+            op,
+            negate: false,
+            operand: Some(Operand::Var(v)),
+        },
+        at,
     )
 }

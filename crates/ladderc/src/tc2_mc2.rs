@@ -100,29 +100,7 @@ pub fn read_spellings(
         }
     }
     // the declared types, for Tc2_MC2's UDINT ErrorID (`tc2_error_id`)
-    let mut structs: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
-    let mut global_types: HashMap<String, TypeRef> = HashMap::new();
-    for item in units.iter().flat_map(|u| u.items.iter()) {
-        match item {
-            LibraryElement::DataTypes(ts) => {
-                for t in ts {
-                    if let TypeDef::Struct { fields } = &t.def {
-                        structs.insert(
-                            t.name.key(),
-                            fields
-                                .iter()
-                                .map(|f| (f.name.key(), f.ty.clone()))
-                                .collect(),
-                        );
-                    }
-                }
-            }
-            LibraryElement::GlobalVars(b) => {
-                global_types.extend(b.vars.iter().map(|v| (v.name.key(), v.ty.clone())))
-            }
-            _ => {}
-        }
-    }
+    let (structs, global_types) = declared_types(units);
     for u in units.iter_mut() {
         for item in &mut u.items {
             // `eDir : MC_Direction := MC_Direction.MC_Shortest_Way;`
@@ -193,6 +171,41 @@ struct Cx<'a> {
     tables: &'a std::cell::Cell<bool>,
     /// The declared types (for `ErrorID => nUdint`).
     types: &'a crate::tc2_error_id::Types,
+}
+
+/// The fields of every structure type (by type key, each field's type by its key) and the type of
+/// every global variable (by key), as declared in `units`.
+pub(crate) type DeclaredTypes = (
+    HashMap<String, HashMap<String, TypeRef>>,
+    HashMap<String, TypeRef>,
+);
+
+/// See [`DeclaredTypes`]: the structures' fields and the globals' types of `units`.
+pub(crate) fn declared_types(units: &[CompilationUnit]) -> DeclaredTypes {
+    let mut structs: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
+    let mut globals: HashMap<String, TypeRef> = HashMap::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        match item {
+            LibraryElement::DataTypes(ts) => {
+                for t in ts {
+                    if let TypeDef::Struct { fields } = &t.def {
+                        structs.insert(
+                            t.name.key(),
+                            fields
+                                .iter()
+                                .map(|f| (f.name.key(), f.ty.clone()))
+                                .collect(),
+                        );
+                    }
+                }
+            }
+            LibraryElement::GlobalVars(b) => {
+                globals.extend(b.vars.iter().map(|v| (v.name.key(), v.ty.clone())))
+            }
+            _ => {}
+        }
+    }
+    (structs, globals)
 }
 
 fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut Diagnostics) {
