@@ -675,7 +675,8 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     let mut parent: Vec<usize> = (0..nodes.len()).collect();
     // A power rail joins no networks: Beremiz and the OpenPLC Editor draw one left rail (and one
     // right rail) for the whole body, each rung on its own connection point, and each rung is a
-    // network of its own, evaluated top to bottom (IEC 61131-3 4.2.7 / 8.2.7), so a rung reads the
+    // network of its own, evaluated top to bottom (Schneider's IEC LD reference: a network is a group
+    // of objects linked together "excluding the power rail", processed "from top to bottom"), so a rung reads the
     // coils written by the rungs above it in the same scan. Joined through the rails, every rung of
     // the body read the values from before the body (interlocked contactors both switched on).
     let rail: Vec<bool> = nodes
