@@ -93,22 +93,7 @@ pub(super) fn fb_init_arguments(
         }
         // the argument list, up to its closing parenthesis (or the end of the declaration)
         let open = k + 2;
-        let mut depth = 0usize;
-        let mut close = open;
-        while close < toks.len() {
-            match toks[close].tok {
-                Tok::LParen => depth += 1,
-                Tok::RParen => {
-                    depth -= 1;
-                    if depth == 0 {
-                        break;
-                    }
-                }
-                Tok::Semi => break,
-                _ => {}
-            }
-            close += 1;
-        }
+        let close = group_close(toks, open, false);
         let end = toks
             .get(close)
             .filter(|c| c.tok == Tok::RParen)
@@ -155,22 +140,7 @@ fn element_lists(
     let mut k = open + 1;
     let mut end = toks[open].range.end;
     while toks.get(k).is_some_and(|t| t.tok == Tok::LParen) {
-        let mut depth = 0usize;
-        let mut close = k;
-        while close < toks.len() {
-            match toks[close].tok {
-                Tok::LParen => depth += 1,
-                Tok::RParen => {
-                    depth -= 1;
-                    if depth == 0 {
-                        break;
-                    }
-                }
-                Tok::Semi | Tok::Eof => break,
-                _ => {}
-            }
-            close += 1;
-        }
+        let close = group_close(toks, k, true);
         let Some(c) = toks.get(close).filter(|c| c.tok == Tok::RParen) else {
             break;
         };
@@ -209,4 +179,27 @@ fn element_lists(
     });
     blank(text.get_or_insert_with(|| src.to_string()), start..end);
     k
+}
+
+/// The index of the `)` closing the parenthesis at `open`, or of the token that ends the declaration
+/// first (`;`, and the end of the text when `eof_stops`), or the token count.
+fn group_close(toks: &[Token], open: usize, eof_stops: bool) -> usize {
+    let mut depth = 0usize;
+    let mut close = open;
+    while close < toks.len() {
+        match toks[close].tok {
+            Tok::LParen => depth += 1,
+            Tok::RParen => {
+                depth -= 1;
+                if depth == 0 {
+                    break;
+                }
+            }
+            Tok::Semi => break,
+            Tok::Eof if eof_stops => break,
+            _ => {}
+        }
+        close += 1;
+    }
+    close
 }
