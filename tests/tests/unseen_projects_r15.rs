@@ -165,46 +165,43 @@ fn two_coils_of_one_variable_in_one_network_are_reported() {
     assert_eq!(at("LAMP_UP")[6], 1.0);
     assert!(at("LAMP_DOWN").iter().all(|&v| v == 0.0));
 
+    // `ladderc check` of the fixture with `from` replaced by `to` (once): exit code and stderr
+    let variant = |name: &str, from: &str, to: &str| {
+        let text = std::fs::read_to_string(&p).unwrap();
+        let changed = text.replacen(from, to, 1);
+        assert_ne!(changed, text);
+        let dir = tempfile::tempdir().unwrap();
+        let f = dir.path().join(name);
+        std::fs::write(&f, changed).unwrap();
+        let out = ladderc()
+            .args(["--message-format", "short", "check"])
+            .arg(&f)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr).into_owned();
+        (out.status.code(), err)
+    };
+
     // the slip inside one rung: the second lamp coil hangs on the up rung's UP contact (localId 2),
     // a different power flow than the first lamp coil's (after NOT K_DOWN): W1423
-    let one_rung = std::fs::read_to_string(&p).unwrap().replacen(
+    let (code, err) = variant(
+        "shutter_one_rung.xml",
         "<position x=\"430\" y=\"240\"/>\n        <connectionPointIn><relPosition x=\"0\" y=\"10\"/><connection refLocalId=\"7\"/>",
         "<position x=\"430\" y=\"240\"/>\n        <connectionPointIn><relPosition x=\"0\" y=\"10\"/><connection refLocalId=\"2\"/>",
-        1,
     );
-    assert_ne!(one_rung, std::fs::read_to_string(&p).unwrap());
-    let dir = tempfile::tempdir().unwrap();
-    let f = dir.path().join("shutter_one_rung.xml");
-    std::fs::write(&f, one_rung).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(&f)
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert_eq!(code, Some(0), "{err}");
     assert!(
         err.contains("warning[W1423]: `LAMP_UP` is written twice in network 1 (localId 5 and 9)"),
         "{err}"
     );
 
     // without the slip (the second lamp coil names LAMP_DOWN) nothing is reported
-    let fixed = std::fs::read_to_string(&p).unwrap().replacen(
+    let (code, err) = variant(
+        "shutter_fixed.xml",
         "<variable>LAMP_UP</variable>\n      </coil>\n      <contact localId=\"10\"",
         "<variable>LAMP_DOWN</variable>\n      </coil>\n      <contact localId=\"10\"",
-        1,
     );
-    assert_ne!(fixed, std::fs::read_to_string(&p).unwrap());
-    let dir = tempfile::tempdir().unwrap();
-    let f = dir.path().join("shutter_fixed.xml");
-    std::fs::write(&f, fixed).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(&f)
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0));
-    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(code, Some(0), "{err}");
     assert!(!err.contains("W1423") && !err.contains("W3400"), "{err}");
 }
 
