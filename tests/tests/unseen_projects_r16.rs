@@ -128,6 +128,18 @@ fn errors(stderr: &str, strip: &Path) -> Vec<String> {
         .collect()
 }
 
+/// `ladderc check` of every file under `dir`, which must be rejected (exit 1): its errors, relative
+/// to `dir`.
+fn rejected_files(dir: &Path) -> Vec<String> {
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .args(files_under(dir))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    errors(&String::from_utf8_lossy(&out.stderr), dir)
+}
+
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let f = dir.join(name);
     std::fs::write(&f, text).unwrap();
@@ -204,14 +216,8 @@ fn a_purge_that_waits_inside_the_scan_is_one_e1061_at_its_until() {
 #[test]
 fn the_filler_s_bare_preset_is_e1012_and_its_dose_loop_one_e1061() {
     let dir = fixture("filler");
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .args(files_under(&dir))
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(1));
     assert_eq!(
-        errors(&String::from_utf8_lossy(&out.stderr), &dir),
+        rejected_files(&dir),
         ["POUs/FB_Filler.TcPOU:64:35: error[E1012]: PT of TON is TIME, not an integer literal"]
     );
     let tmp = tempfile::tempdir().unwrap();
@@ -297,14 +303,8 @@ fn the_sequence_template_steps_times_out_and_resets() {
 #[test]
 fn prose_left_in_a_var_block_is_one_located_error() {
     let dir = fixture("stray");
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .args(files_under(&dir))
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(1));
     assert_eq!(
-        errors(&String::from_utf8_lossy(&out.stderr), &dir),
+        rejected_files(&dir),
         ["FB_StrayAndMethodMachine.TcPOU:14:11: error[E0011]: unexpected `is`"]
     );
 }
