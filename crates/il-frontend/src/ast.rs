@@ -57,6 +57,19 @@ pub struct CompilationUnit {
     pub to_string_types: Vec<Ident>,
 }
 
+impl CompilationUnit {
+    /// The type declarations of every `TYPE` block, in source order.
+    pub fn type_decls(&self) -> impl Iterator<Item = &TypeDecl> {
+        self.items
+            .iter()
+            .filter_map(|i| match i {
+                LibraryElement::DataTypes(ts) => Some(ts.iter()),
+                _ => None,
+            })
+            .flatten()
+    }
+}
+
 /// One top-level element of a source file (IEC 61131-3 library element: data types, POU, configuration).
 #[derive(Debug, Clone, Serialize)]
 pub enum LibraryElement {

@@ -324,16 +324,21 @@ fn instr(kind: InstrKind, at: Span) -> IlStmt {
     IlStmt::Instr(Instruction { kind, span: at })
 }
 
-/// `CAL __TC2_<AXIS>_<suffix>(Axis := <axis>, Enable := TRUE)`; of an array of axes, of the
-/// element `index` (`CAL __TC2_<AXIS>_<suffix>[i](Axis := <axis>[i], ...)`).
-fn call(axis: &Ident, suffix: &str, index: Option<Vec<Operand>>) -> IlStmt {
-    let at = axis.span;
-    let arg = |name: &str, value: Operand| FormalArg {
+/// The formal input argument `name := value` of a generated call, at `at`.
+pub(crate) fn input_arg(name: &str, value: Operand, at: Span) -> FormalArg {
+    FormalArg {
         name: Ident::new(name, at),
         dir: ArgDir::Input,
         value,
         span: at,
-    };
+    }
+}
+
+/// `CAL __TC2_<AXIS>_<suffix>(Axis := <axis>, Enable := TRUE)`; of an array of axes, of the
+/// element `index` (`CAL __TC2_<AXIS>_<suffix>[i](Axis := <axis>[i], ...)`).
+fn call(axis: &Ident, suffix: &str, index: Option<Vec<Operand>>) -> IlStmt {
+    let at = axis.span;
+    let arg = |name: &str, value: Operand| input_arg(name, value, at);
     let args = vec![
         arg(
             "Axis",

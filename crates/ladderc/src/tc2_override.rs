@@ -16,8 +16,8 @@
 //! velocity limit is never exceeded either way).
 
 use il_frontend::ast::{
-    ArgDir, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind, Instruction, Literal,
-    LiteralKind, Op, Operand, TypeRef, VarDecl, VarRef,
+    CallArgs, Condition, Ident, IlStmt, InstrKind, Instruction, Literal, LiteralKind, Op, Operand,
+    TypeRef, VarDecl, VarRef,
 };
 use il_frontend::Span;
 
@@ -110,12 +110,7 @@ pub fn set_override(
         _ => value,
     };
     let f = || Operand::Var(var(&factor, at));
-    let arg = |name: &str, value: Operand| FormalArg {
-        name: Ident::new(name, at),
-        dir: ArgDir::Input,
-        value,
-        span: at,
-    };
+    let arg = |name: &str, value: Operand| crate::tc2_axis_ref::input_arg(name, value, at);
     let code = vec![
         simple(Op::Ld, value, at),
         simple(Op::St, f(), at),

@@ -200,12 +200,8 @@ pub fn add_init_calls(
         .collect();
     let data_types: HashSet<String> = units
         .iter()
-        .flat_map(|u| u.items.iter())
-        .filter_map(|i| match i {
-            LibraryElement::DataTypes(ts) => Some(ts.iter().map(|t| t.name.key())),
-            _ => None,
-        })
-        .flatten()
+        .flat_map(CompilationUnit::type_decls)
+        .map(|t| t.name.key())
         .collect();
     let reportable = |t: &str| {
         let key = t.to_ascii_uppercase();

@@ -2112,15 +2112,7 @@ fn mark_to_string(unit: &mut CompilationUnit, ends: &[usize]) {
     if ends.is_empty() {
         return;
     }
-    let types: Vec<&crate::ast::TypeDecl> = unit
-        .items
-        .iter()
-        .filter_map(|i| match i {
-            LibraryElement::DataTypes(ts) => Some(ts.iter()),
-            _ => None,
-        })
-        .flatten()
-        .collect();
+    let types: Vec<&crate::ast::TypeDecl> = unit.type_decls().collect();
     let mut marked = Vec::new();
     for &end in ends {
         if let Some(t) = types

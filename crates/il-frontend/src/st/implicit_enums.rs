@@ -39,12 +39,8 @@ pub fn name_all(
     let mut namer = Namer {
         taken: units
             .iter()
-            .flat_map(|u| u.items.iter())
-            .filter_map(|i| match i {
-                LibraryElement::DataTypes(ts) => Some(ts.iter().map(|t| t.name.key())),
-                _ => None,
-            })
-            .flatten()
+            .flat_map(CompilationUnit::type_decls)
+            .map(|t| t.name.key())
             .collect(),
         by_span: HashMap::new(),
         new: Vec::new(),
