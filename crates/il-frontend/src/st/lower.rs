@@ -583,6 +583,22 @@ impl<'d> PouLowering<'d> {
             self.stmt_lowered(s, out, diags);
         }
     }
+    /// Lowers the calls a rewrite hoisted out of a statement, then the statement `rest` reading
+    /// their results.
+    fn lower_hoisted(
+        &mut self,
+        calls: &[Stmt],
+        rest: &Stmt,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        for c in calls {
+            self.stmt(c, out, diags);
+        }
+        self.stmt(rest, out, diags);
+        self.types.get_mut().clear();
+    }
+
     /// Lowers the statements a rewrite gave for one statement, with the temporaries it declared.
     fn lower_rewritten(
         &mut self,
@@ -629,11 +645,7 @@ impl<'d> PouLowering<'d> {
             // `x := stack.Get(1).Pop();`: the chain's calls first, each result in a temporary
             // (call_chain), then the statement on the temporaries with every other rewrite
             if let Some((calls, rest)) = self.hoist_method_calls(s, diags) {
-                for c in &calls {
-                    self.stmt(c, out, diags);
-                }
-                self.stmt(&rest, out, diags);
-                self.types.get_mut().clear();
+                self.lower_hoisted(&calls, &rest, out, diags);
                 return true;
             }
         }
@@ -642,11 +654,7 @@ impl<'d> PouLowering<'d> {
             if let Some((calls, rest)) = rewritten {
                 // `x := inst.P + 1;`: the getter runs first, the statement reads its result;
                 // `inst.P := v;` calls the setter
-                for c in &calls {
-                    self.stmt(c, out, diags);
-                }
-                self.stmt(&rest, out, diags);
-                self.types.get_mut().clear();
+                self.lower_hoisted(&calls, &rest, out, diags);
                 return true;
             }
         }
@@ -654,11 +662,7 @@ impl<'d> PouLowering<'d> {
             if let Some((calls, rest)) = self.hoist_method_calls(s, diags) {
                 // `x := M(a) + 1;` inside the block: the call runs first, the statement reads the
                 // result `__M_M` (as `inst.M(a)` from outside, see the parser)
-                for c in &calls {
-                    self.stmt(c, out, diags);
-                }
-                self.stmt(&rest, out, diags);
-                self.types.get_mut().clear();
+                self.lower_hoisted(&calls, &rest, out, diags);
                 return true;
             }
         }
