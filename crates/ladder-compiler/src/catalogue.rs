@@ -174,18 +174,16 @@ pub fn std_fb(name: &str) -> Option<&'static StdFb> {
     STD_FBS.iter().find(|f| f.name.eq_ignore_ascii_case(name))
 }
 
-/// The IEC 61131-3 name of a bistable's input as CODESYS and TwinCAT name it (their standard
-/// library's `SR(SET1, RESET)` and `RS(SET, RESET1)`, which their LD/FBD exports write): `None` for
-/// any other block or pin.
+/// The IEC 61131-3 name of a standard block's input as CODESYS and TwinCAT name it (their standard
+/// library's `SR(SET1, RESET)`, `RS(SET, RESET1)`, `CTU(CU, RESET, PV)`, `CTD(CD, LOAD, PV)`,
+/// `CTUD(..., RESET, LOAD, PV)`, which their LD/FBD exports write): `None` for any other block or
+/// pin (see `il_frontend::sema::stdlib::vendor_param_alias`).
 pub fn vendor_pin_alias(block: &str, pin: &str) -> Option<&'static str> {
-    let pin = pin.trim();
-    match block.trim().to_ascii_uppercase().as_str() {
-        "SR" if pin.eq_ignore_ascii_case("SET1") => Some("S1"),
-        "SR" if pin.eq_ignore_ascii_case("RESET") => Some("R"),
-        "RS" if pin.eq_ignore_ascii_case("SET") => Some("S"),
-        "RS" if pin.eq_ignore_ascii_case("RESET1") => Some("R1"),
-        _ => None,
-    }
+    let block = block.trim();
+    let fb = il_frontend::sema::StdFb::ALL
+        .into_iter()
+        .find(|f| f.name().eq_ignore_ascii_case(block))?;
+    il_frontend::sema::stdlib::vendor_param_alias(fb, pin)
 }
 
 /// PLCopen motion blocks (Part 1 and Part 4 names start with `MC_`).

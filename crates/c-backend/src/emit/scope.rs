@@ -495,7 +495,9 @@ impl Gen<'_> {
             }
             Type::Fb(FbType::Standard(fb)) => {
                 let (_, params) = ctypes::std_fb(*fb);
-                if let Some((n, e, _)) = params.iter().find(|p| p.0.eq_ignore_ascii_case(&f.name)) {
+                let name =
+                    il_frontend::sema::stdlib::vendor_param_alias(*fb, &f.name).unwrap_or(&f.name);
+                if let Some((n, e, _)) = params.iter().find(|p| p.0.eq_ignore_ascii_case(name)) {
                     return Some(Place::Mem {
                         lv: cfmt!("{lv}.{n}"),
                         ty: Type::Elementary(*e),

@@ -1050,7 +1050,19 @@ impl Body<'_, '_> {
             }
             CallArgs::Formal(fargs) => {
                 for (k, fa) in fargs.iter().enumerate() {
-                    self.formal_arg(k, fa, &tname, &params, rec);
+                    // `CTU(CU := x, RESET := r)`: the CODESYS/TwinCAT name of an IEC input
+                    let alias = match fb {
+                        FbType::Standard(s) => super::stdlib::vendor_param_alias(s, &fa.name.name),
+                        FbType::User(_) => None,
+                    };
+                    match alias {
+                        Some(iec) => {
+                            let mut named = fa.clone();
+                            named.name.name = iec.to_string();
+                            self.formal_arg(k, &named, &tname, &params, rec);
+                        }
+                        None => self.formal_arg(k, fa, &tname, &params, rec),
+                    }
                 }
             }
         }

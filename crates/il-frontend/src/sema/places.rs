@@ -946,7 +946,15 @@ impl Body<'_, '_> {
             Type::Fb(fb) => {
                 let params = fb_param_list(&self.a.model, *fb);
                 let tname = self.a.type_name(&place.ty);
-                match params.iter().find(|p| f.is(&p.0)) {
+                // `ctu.RESET` (CODESYS/TwinCAT) is the IEC input `ctu.R`
+                let alias = match fb {
+                    FbType::Standard(s) => super::stdlib::vendor_param_alias(*s, &f.name),
+                    FbType::User(_) => None,
+                };
+                match params
+                    .iter()
+                    .find(|p| f.is(&p.0) || alias == Some(p.0.as_str()))
+                {
                     Some((_, dir, ty)) => {
                         let read_only = match dir {
                             ParamDir::Output => Some(ReadOnly::FbOutput { at }),

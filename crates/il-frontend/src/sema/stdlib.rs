@@ -699,6 +699,27 @@ pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
     }
 }
 
+/// The IEC 61131-3 name of a standard FB's parameter written by its CODESYS/TwinCAT name, `None`
+/// when `name` is no such name. CODESYS's Standard and TwinCAT's Tc2_Standard library call the
+/// counters' R and LD `RESET` and `LOAD` (`CTU(CU, RESET, PV)`, `CTD(CD, LOAD, PV)`,
+/// `CTUD(CU, CD, RESET, LOAD, PV)`; CODESYS online help "CTU", Beckhoff Infosys "Tc2_Standard CTU")
+/// and the bistables' inputs `SR(SET1, RESET)`, `RS(SET, RESET1)`. The instance keeps the IEC
+/// names; these are only other names for the same inputs, in calls and in `inst.RESET`.
+pub fn vendor_param_alias(fb: StdFb, name: &str) -> Option<&'static str> {
+    let alias = match name.trim().to_ascii_uppercase().as_str() {
+        "RESET" => "R",
+        "LOAD" => "LD",
+        "SET1" => "S1",
+        "SET" => "S",
+        "RESET1" => "R1",
+        _ => return None,
+    };
+    fb_params(fb)
+        .iter()
+        .any(|p| p.dir == Dir::Input && p.name == alias)
+        .then_some(alias)
+}
+
 /// Documentation of a standard FB (one line).
 pub fn fb_doc(fb: StdFb) -> &'static str {
     match fb {

@@ -1017,6 +1017,34 @@ fn check_implements(
     }
 }
 
+/// The elements of an array initialiser of an ARRAY OF an interface, at most `len` of them, repeat
+/// counts expanded: each an instance (`Some`) or `0`/`NULL` (`None`, unassigned). `None` when an
+/// element is anything else, or there are more than `len`.
+fn array_of_instances(
+    elems: &[crate::ast::ArrayInitElement],
+    len: i128,
+) -> Option<Vec<Option<&crate::ast::VarRef>>> {
+    use crate::ast::{Initializer, LiteralKind, Operand};
+    let mut out = Vec::new();
+    for e in elems {
+        let one = match &e.value {
+            Initializer::Value(Operand::Literal(l)) if matches!(l.kind, LiteralKind::Int(0)) => {
+                None
+            }
+            Initializer::Value(Operand::Var(v)) if v.base.is("NULL") => None,
+            Initializer::Value(Operand::Var(v)) => Some(v),
+            _ => return None,
+        };
+        for _ in 0..e.repeat.unwrap_or(1) {
+            if out.len() as i128 >= len {
+                return None;
+            }
+            out.push(one);
+        }
+    }
+    Some(out)
+}
+
 /// Variables whose type is an ABSTRACT block (E0333: not compiled), and the initial values of
 /// variables of an interface type: `:= 0` is left out (an interface starts unassigned), `:= inst`
 /// of a POU's variable is returned (assigned when the POU first runs); any other, and any of a
@@ -1063,10 +1091,29 @@ fn check_instances(
                 inits.push(super::interface_vars::Init {
                     pou,
                     var: v.name.clone(),
+                    index: None,
                     value: value.clone(),
                 });
             }
             (Initializer::Value(Operand::Var(value)), _, _) if value.base.is("NULL") => {}
+            // `LampCtrl : ARRAY[0..1] OF I_LampCtrl := [fbLamp1, fbLamp2];` (TwinCAT): element
+            // by element, from the first index; `0`/`NULL` elements start unassigned
+            (Initializer::Array(elems, _), Some(pou), TypeRef::Array { dims, .. })
+                if dims.len() == 1
+                    && array_of_instances(elems, dims[0].upper - dims[0].lower + 1).is_some() =>
+            {
+                let values = array_of_instances(elems, dims[0].upper - dims[0].lower + 1);
+                for (k, value) in values.into_iter().flatten().enumerate() {
+                    if let Some(value) = value {
+                        inits.push(super::interface_vars::Init {
+                            pou,
+                            var: v.name.clone(),
+                            index: Some(dims[0].lower + k as i128),
+                            value: value.clone(),
+                        });
+                    }
+                }
+            }
             _ => diags.push(
                 Diagnostic::error(
                     code::E0336,

@@ -207,6 +207,9 @@ pub struct Init {
     pub pou: Span,
     /// The interface variable.
     pub var: Ident,
+    /// The element of an ARRAY OF an interface (`itfs : ARRAY[0..1] OF I_Lamp := [fb1, fb2];`):
+    /// its index; `None` for a plain interface variable.
+    pub index: Option<i128>,
     /// The instance (or interface) it starts with.
     pub value: crate::ast::VarRef,
 }
@@ -262,7 +265,10 @@ pub fn initial_values(
         };
         let target = Place {
             base: PlaceBase::Name(i.var.clone()),
-            accessors: Vec::new(),
+            accessors: i
+                .index
+                .map(|k| vec![Accessor::Index(vec![int(k, v.span)])])
+                .unwrap_or_default(),
             span: i.var.span,
         };
         body.push(assign(target, place_expr(value, v.span), v.span));

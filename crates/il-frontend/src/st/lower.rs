@@ -1860,6 +1860,11 @@ impl<'d> PouLowering<'d> {
         let mut pending = Vec::new();
         let mut e = top;
         while let ExprKind::Binary { op, left, right } = &e.kind {
+            let (left, right) = if *op == BinaryOp::Mul && self.number_times_duration(left, right) {
+                (right, left)
+            } else {
+                (left, right)
+            };
             match binop(*op) {
                 Some(il_op) => {
                     let (lt, rt) = (self.ty(left), self.ty(right));
@@ -1903,6 +1908,28 @@ impl<'d> PouLowering<'d> {
                 )),
             }
         }
+    }
+
+    /// `2 * tCycle`: a number times a duration, both plain operands (a literal, a variable).
+    /// IEC 61131-3 defines MUL_TIME as TIME * ANY_NUM only; CODESYS and TwinCAT also accept the
+    /// number first, and real projects write it (`PT := 2 * tCycletime`). Multiplication
+    /// commutes and plain operands have no side effects, so it is lowered as `tCycle * 2`.
+    fn number_times_duration(&self, left: &Expr, right: &Expr) -> bool {
+        let env = self.env();
+        let duration = |t: &Ty| {
+            t.known()
+                .and_then(|t| env.elementary(t))
+                .is_some_and(|e| e.is_duration())
+        };
+        let number = |t: &Ty| match t {
+            Ty::IntLit | Ty::RealLit => true,
+            Ty::Known(t) => env.elementary(t).is_some_and(|e| e.is_numeric()),
+            Ty::Unknown => false,
+        };
+        duration(&self.ty(right))
+            && number(&self.ty(left))
+            && self.pure_operand(left).is_some()
+            && self.pure_operand(right).is_some()
     }
 
     /// `OP right` applied to the current result: a plain operand directly, anything else as a
