@@ -57,3 +57,29 @@ fn tc2_system_memory_functions_run_with_their_qualifier() {
         ["ads.st:3:6: error[E1032]: `Tc2_System` is neither a variable nor a library ladderc provides"]
     );
 }
+
+/// A name qualified by a library and its namespace (`SysFile.SysTypes.RTS_IEC_HANDLE`, TcUnit's
+/// FB_FileControl), as a variable's type, a METHOD's result type and in a call: one E1032 naming
+/// the library, hinting at the name used; before, E1032 and then E0011 "expected `;` before `.`"
+/// at every declaration, the method's result type unreported.
+#[test]
+fn a_name_qualified_by_library_and_namespace_is_one_e1032() {
+    let heads = rejected_heads(
+        "sysfile.st",
+        "FUNCTION_BLOCK FB_File\nVAR\n  h : SysFile.SysTypes.RTS_IEC_HANDLE;\n  n : INT;\nEND_VAR\n\
+         METHOD PUBLIC Close : SysFile.SysTypes.RTS_IEC_RESULT\nClose := SysFile.SysTypes.Go(h);\n\
+         END_METHOD\nn := n + 1;\nEND_FUNCTION_BLOCK\n",
+    );
+    assert_eq!(
+        heads,
+        ["sysfile.st:3:7: error[E1032]: `SysFile` is neither a variable nor a library ladderc provides"]
+    );
+    let (_, lines) = common::check_text(
+        "sysfile.st",
+        "PROGRAM Main\nVAR h : SysFile.SysTypes.RTS_IEC_HANDLE; END_VAR\nEND_PROGRAM\n",
+    );
+    assert!(
+        lines[0].contains("`RTS_IEC_HANDLE` comes from another library"),
+        "{lines:?}"
+    );
+}

@@ -194,9 +194,33 @@ pub(super) fn library_qualifiers(
             blank(text, t.range.start..dot.range.end);
             continue;
         }
-        let type_position = in_decl
-            && prev.is_some_and(|p| p.tok == Tok::Colon || word(src, p).eq_ignore_ascii_case("OF"));
-        let call_position = !in_decl && toks.get(k + 3).is_some_and(|n| n.tok == Tok::LParen);
+        // `Lib.Sub.Name` (`SysFile.SysTypes.RTS_IEC_HANDLE`): the last token of the chain
+        let mut last = k + 2;
+        while toks.get(last + 1).is_some_and(|d| d.tok == Tok::Dot)
+            && toks.get(last + 2).is_some_and(ident)
+        {
+            last += 2;
+        }
+        // a result type: `METHOD PUBLIC Close : Lib.T;`, `FUNCTION F : Lib.T`
+        let header_result = prev.is_some_and(|p| p.tok == Tok::Colon)
+            && toks[..k]
+                .iter()
+                .rev()
+                .skip(1)
+                .take(6)
+                .take_while(|b| b.tok != Tok::Semi)
+                .any(|b| {
+                    let w = word(src, b);
+                    ["METHOD", "FUNCTION", "PROPERTY"]
+                        .iter()
+                        .any(|h| w.eq_ignore_ascii_case(h))
+                });
+        let type_position = header_result
+            || in_decl
+                && prev.is_some_and(|p| {
+                    p.tok == Tok::Colon || word(src, p).eq_ignore_ascii_case("OF")
+                });
+        let call_position = !in_decl && toks.get(last + 1).is_some_and(|n| n.tok == Tok::LParen);
         if !(type_position || call_position) {
             continue;
         }
@@ -211,7 +235,7 @@ pub(super) fn library_qualifiers(
                 .with_primary_label("library qualifier")
                 .with_hint(format!(
                     "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2 (and Tc2_System's MEMCPY, MEMMOVE, MEMSET, MEMCMP); `{}` comes from another library: add its POUs and types to the project",
-                    word(src, member)
+                    word(src, &toks[last])
                 )),
             );
         }
@@ -222,6 +246,9 @@ pub(super) fn library_qualifiers(
             bytes[t.range.start + 1] = b'_';
         }
         bytes[dot.range.start] = b'_';
+        for d in (k + 3..last).step_by(2) {
+            bytes[toks[d].range.start] = b'_';
+        }
         *text = String::from_utf8(bytes).unwrap_or_default();
     }
     text
