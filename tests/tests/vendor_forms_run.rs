@@ -154,3 +154,40 @@ fn an_interface_array_initialiser_that_does_not_fit_is_e0336() {
         "{lines:?}"
     );
 }
+
+/// array_bounds.st: `LOWER_BOUND`/`UPPER_BOUND` (IEC 61131-3 edition 3, also CODESYS and TwinCAT;
+/// TcUnit's assertions write them) of a two-dimensional array, an element of an array of arrays, a
+/// structure field, and as the bounds of a FOR loop (3 + 4 + 5 + 6 + 7 = 25). Before: E1019
+/// "unknown function".
+#[test]
+fn lower_and_upper_bound_of_declared_arrays() {
+    let (trace, _) = run_traced(
+        &fixture("array_bounds.st"),
+        1,
+        "Main.lo,Main.hi,Main.lo2,Main.hi2,Main.inner,Main.field,Main.sum",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.lo,Main.hi,Main.lo2,Main.hi2,Main.inner,Main.field,Main.sum\n\
+         0,0,3,7,0,1,12,-2,25\n"
+    );
+}
+
+/// A dimension the array does not have, one that is not a literal, a value that is not an array:
+/// one E1070 each.
+#[test]
+fn a_bound_of_no_array_or_dimension_is_e1070() {
+    let heads = common::rejected_heads(
+        "bounds.st",
+        "PROGRAM Main\nVAR a : ARRAY[3..7, 0..1] OF INT; k : INT := 1; n : DINT; x : INT; END_VAR\n\
+         n := UPPER_BOUND(a, 3);\nn := LOWER_BOUND(a, k);\nn := LOWER_BOUND(x, 1);\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "bounds.st:3:6: error[E1070]: `UPPER_BOUND`: the dimension must be an integer literal from 1 to 2",
+            "bounds.st:4:6: error[E1070]: `LOWER_BOUND`: the dimension must be an integer literal from 1 to 2",
+            "bounds.st:5:6: error[E1070]: `LOWER_BOUND` takes a declared array and the number of one of its dimensions",
+        ]
+    );
+}

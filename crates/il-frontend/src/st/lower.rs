@@ -1910,6 +1910,79 @@ impl<'d> PouLowering<'d> {
         }
     }
 
+    /// `LOWER_BOUND(arr, dim)` / `UPPER_BOUND(arr, dim)` (IEC 61131-3 edition 3, the bounds of an
+    /// array, DINT): `arr` a declared array (a variable, a field, an element of an array of arrays),
+    /// `dim` an integer literal from 1 to its number of dimensions. The bounds are known when
+    /// compiling, so the call is that DINT constant. Anything else is one E1070 (the call reads 0).
+    fn array_bound(
+        &mut self,
+        name: &Ident,
+        args: &[Arg],
+        span: Span,
+        diags: &mut Diagnostics,
+    ) -> Operand {
+        let upper = name.is("UPPER_BOUND");
+        let dims = match args {
+            [Arg {
+                name: None,
+                value:
+                    Expr {
+                        kind: ExprKind::Place(p),
+                        ..
+                    },
+                ..
+            }, Arg {
+                name: None,
+                value: dim,
+                ..
+            }] => {
+                let env = self.env();
+                match env.place_type(p).map(|t| env.resolve(&t)) {
+                    Some(TypeRef::Array { dims, .. }) => {
+                        if let ExprKind::Literal(Literal {
+                            kind: LiteralKind::Int(k),
+                            ..
+                        }) = &dim.kind
+                        {
+                            if *k >= 1 && *k <= dims.len() as i128 {
+                                let d = &dims[(*k - 1) as usize];
+                                return Operand::literal(Literal {
+                                    kind: LiteralKind::Int(if upper { d.upper } else { d.lower }),
+                                    type_prefix: Some(Ident::new("DINT", span)),
+                                    span,
+                                });
+                            }
+                        }
+                        Some(dims.len())
+                    }
+                    _ => None,
+                }
+            }
+            _ => None,
+        };
+        let message = match dims {
+            Some(n) => format!(
+                "`{}`: the dimension must be an integer literal from 1 to {n}",
+                name.name
+            ),
+            None => format!(
+                "`{}` takes a declared array and the number of one of its dimensions",
+                name.name
+            ),
+        };
+        diags.push(
+            Diagnostic::error(code::E1070, message)
+                .at(span)
+                .with_primary_label("not an array and a dimension")
+                .with_hint(format!(
+                    "write `{}(arr, 1)` for the first dimension of `arr`",
+                    name.name
+                )),
+        );
+        self.poisoned = true;
+        int_lit(0, span)
+    }
+
     /// `2 * tCycle`: a number times a duration, both plain operands (a literal, a variable).
     /// IEC 61131-3 defines MUL_TIME as TIME * ANY_NUM only; CODESYS and TwinCAT also accept the
     /// number first, and real projects write it (`PT := 2 * tCycletime`). Multiplication
@@ -2127,6 +2200,13 @@ impl<'d> PouLowering<'d> {
             );
             self.poisoned = true;
             out.push(ld(int_lit(0, span), span));
+            return;
+        }
+        if (name.is("LOWER_BOUND") || name.is("UPPER_BOUND"))
+            && self.decls.pou(&name.name).is_none()
+        {
+            let v = self.array_bound(name, args, span, diags);
+            out.push(ld(v, span));
             return;
         }
         if name.is(super::refs::IS_VALID_REF) {
