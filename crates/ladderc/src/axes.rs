@@ -110,6 +110,13 @@ pub struct Axis {
     pub declared_by_program: bool,
     /// MC_Jog's slow and fast manual velocities ([`crate::tc2_blocks`]).
     pub jog_velocities: (f64, f64),
+    /// Tc2_MC2's standard acceleration and deceleration (a block's `Acceleration` /
+    /// `Deceleration` left out or 0), when they differ from the limits (a TwinCAT NC axis's
+    /// `Dynamic Acceleration` below its `AccelerationMaximum`, [`crate::nc_axes`]).
+    pub standard_dynamics: Option<(f64, f64)>,
+    /// The period MC_MoveModulo positions in when it is not the engine's modulo period (a TwinCAT
+    /// NC axis's modulo factor: the axis itself stays linear, [`crate::nc_axes`]).
+    pub modulo_factor: Option<f64>,
 }
 
 /// The axis configuration of a project.
@@ -259,6 +266,8 @@ impl AxisConfig {
                 link,
                 declared_by_program: false,
                 jog_velocities: jog,
+                standard_dynamics: None,
+                modulo_factor: None,
                 name: a.name.clone(),
                 unit: a.unit.clone(),
                 counts_per_unit: a.counts_per_unit,
@@ -373,9 +382,18 @@ impl AxisConfig {
                 v.join(", ")
             };
             for (name, values) in [
-                ("MODULO", table(&|a| a.limits.modulo_period)),
-                ("ACC", table(&|a| a.limits.acceleration_limit)),
-                ("DEC", table(&|a| a.limits.deceleration_limit)),
+                (
+                    "MODULO",
+                    table(&|a| a.modulo_factor.unwrap_or(a.limits.modulo_period)),
+                ),
+                (
+                    "ACC",
+                    table(&|a| a.standard_dynamics.map_or(a.limits.acceleration_limit, |d| d.0)),
+                ),
+                (
+                    "DEC",
+                    table(&|a| a.standard_dynamics.map_or(a.limits.deceleration_limit, |d| d.1)),
+                ),
                 ("JOGSLOW", table(&|a| a.jog_velocities.0)),
                 ("JOGFAST", table(&|a| a.jog_velocities.1)),
             ] {

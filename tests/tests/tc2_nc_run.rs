@@ -1,0 +1,201 @@
+//! TwinCAT solutions as they are written (issue #13): without an axes file, `ladderc run` takes
+//! the axes from the solution's NC configuration (`_Config/NC`, or inside the `.tsproj`), links
+//! each to the PLC `AXIS_REF` its "Link To PLC" mapping names, and the simulated axes honour the
+//! NC's limits (`crates/ladderc/src/nc_axes.rs`). The solution under `fixtures/tc2_nc/Cell/` is
+//! written for these tests in the format of the public solutions read for them (README there).
+
+mod common;
+use common::{column, ladderc, run_traced_files};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/tc2_nc")
+        .join(rel)
+}
+
+const WATCH: &str = "MAIN.nState,MAIN.bTableDone,MAIN.bLiftDone,MAIN.bLiftError,\
+                     MAIN.nLiftErrorID,MAIN.rLiftPos,axis.Lift.position,axis.Lift.velocity,\
+                     axis.Lift.acceleration,axis.Table_Axis.position,axis.Table_Axis.velocity,\
+                     axis.Table_Axis.acceleration";
+
+/// A copy of the `Cell` solution in a temporary folder, for the tests that change it.
+fn copy_of_cell() -> tempfile::TempDir {
+    fn copy(from: &Path, to: &Path) {
+        std::fs::create_dir_all(to).unwrap();
+        for e in std::fs::read_dir(from).unwrap() {
+            let e = e.unwrap();
+            let target = to.join(e.file_name());
+            if e.path().is_dir() {
+                copy(&e.path(), &target);
+            } else {
+                std::fs::copy(e.path(), target).unwrap();
+            }
+        }
+    }
+    let dir = tempfile::tempdir().unwrap();
+    copy(&fixture("Cell"), dir.path());
+    dir
+}
+
+fn max(v: &[f64]) -> f64 {
+    v.iter().copied().fold(f64::MIN, f64::max)
+}
+
+fn min(v: &[f64]) -> f64 {
+    v.iter().copied().fold(f64::MAX, f64::min)
+}
+
+/// The NC limits of `Lift.xti` hold on the trace: 150 mm/s (400 asked), the standard dynamics
+/// 500 / 250 mm/s² for the Acceleration and Deceleration the program leaves out (below the NC's
+/// maxima 800 / 400), the software limit at 300 mm (a move to 400 mm is refused, the axis stays).
+/// `Table Axis.xti` gives only `Velo Maximum="90"`: 90 mm/s, and TwinCAT's default 15000 mm/s²
+/// caps the program's 100000. Each NC axis moves its own PLC `AXIS_REF`, as the mappings link
+/// them (`GVL_Axes.LiftAxis`, `MAIN.Table`); the axis names become trace names (`Table_Axis`).
+#[test]
+fn nc_axes_of_the_solution_are_the_simulated_axes_with_their_limits() {
+    let (trace, stderr) = run_traced_files(&[&fixture("Cell/Cell/Cell.plcproj")], 400, WATCH);
+    assert!(!stderr.contains("error"), "{stderr}");
+    let (lv, la, lp) = (
+        column(&trace, "axis.Lift.velocity"),
+        column(&trace, "axis.Lift.acceleration"),
+        column(&trace, "axis.Lift.position"),
+    );
+    assert!((max(&lv) - 150.0).abs() < 1e-9, "{}", max(&lv));
+    assert!(min(&lv) >= -1e-9);
+    assert!((max(&la) - 500.0).abs() < 1e-9, "{}", max(&la));
+    assert!((min(&la) + 250.0).abs() < 1e-9, "{}", min(&la));
+    assert!(max(&lp) <= 300.0, "{}", max(&lp));
+    let done = column(&trace, "MAIN.bTableDone");
+    let at = done.iter().position(|&d| d == 1.0).expect("both moves Done");
+    assert!((lp[at] - 280.0).abs() < 1e-9 && (column(&trace, "MAIN.rLiftPos")[at] - 280.0).abs() < 1e-9);
+    // the move beyond the software limit: Error, the axis stays at 280 mm
+    let err = column(&trace, "MAIN.bLiftError");
+    assert_eq!(*err.last().unwrap(), 1.0);
+    assert!(column(&trace, "MAIN.nLiftErrorID").last().unwrap() > &0.0);
+    assert!(column(&trace, "MAIN.bLiftDone").iter().all(|&d| d == 0.0));
+    assert!((lp.last().unwrap() - 280.0).abs() < 1e-9);
+    let (tv, ta, tp) = (
+        column(&trace, "axis.Table_Axis.velocity"),
+        column(&trace, "axis.Table_Axis.acceleration"),
+        column(&trace, "axis.Table_Axis.position"),
+    );
+    assert!((max(&tv) - 90.0).abs() < 1e-9, "{}", max(&tv));
+    assert!(max(&ta) <= 15000.0 + 1e-6 && min(&ta) >= -15000.0 - 1e-6);
+    assert!((tp[at] - 100.0).abs() < 1e-9);
+    // one located note names what `Table Axis.xti` does not give, with the defaults used
+    let note = stderr
+        .lines()
+        .find(|l| l.contains("W1428"))
+        .expect("W1428 note");
+    assert!(
+        note.contains("_Config/NC/Axes/Table Axis.xti:3:2: note[W1428]")
+            && note.contains("acceleration 15000")
+            && note.contains("jerk 2250000"),
+        "{note}"
+    );
+    assert_eq!(stderr.matches("[W1428]").count(), 1, "{stderr}");
+}
+
+/// `--axes FILE` replaces the NC configuration (documented precedence: `--axes`, then
+/// `<stem>.axes.json`, then `_Config/NC`): its 50 mm/s axis is the lift, and no NC file is read.
+#[test]
+fn an_axes_file_given_replaces_the_nc_configuration() {
+    let dir = tempfile::tempdir().unwrap();
+    let axes = dir.path().join("cell.axes.json");
+    std::fs::write(
+        &axes,
+        r#"{ "axes": [
+  { "name": "Lift", "velocity": 50, "acceleration": 1000, "deceleration": 1000,
+    "link": "GVL_Axes.LiftAxis" },
+  { "name": "Table_Axis", "velocity": 40, "acceleration": 1000, "deceleration": 1000,
+    "link": "MAIN.Table" } ] }"#,
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("Cell/Cell/Cell.plcproj"))
+        .arg("--axes")
+        .arg(&axes)
+        .args(["--cycles", "300", "--trace", "-", "--watch", WATCH])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("W1428"), "{stderr}");
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert!((max(&column(&trace, "axis.Lift.velocity")) - 50.0).abs() < 1e-9);
+    assert!((max(&column(&trace, "axis.Table_Axis.velocity")) - 40.0).abs() < 1e-9);
+}
+
+/// The NC configuration inside the `.tsproj` (as TwinCAT 3.1.4022 and earlier save it, or with
+/// "independent files" off): `<NC>` holds the `<Axis>` elements with their names and parameters,
+/// and the mapping's owners are the other way round (`OwnerA` the PLC instance, `OwnerB` the
+/// axis). The same limits hold; the folder holding the `.tsproj` is given instead of the
+/// `.plcproj`.
+#[test]
+fn nc_axes_inside_the_tsproj_are_read_too() {
+    let dir = copy_of_cell();
+    let lift = std::fs::read_to_string(dir.path().join("_Config/NC/Axes/Lift.xti")).unwrap();
+    let table = std::fs::read_to_string(dir.path().join("_Config/NC/Axes/Table Axis.xti")).unwrap();
+    let axis = |xti: &str, name: &str| -> String {
+        let s = xti.find("<Axis ").unwrap();
+        let e = xti.find("</Axis>").unwrap() + "</Axis>".len();
+        xti[s..e].replace("__FILENAME__", name)
+    };
+    let tsproj = dir.path().join("Cell.tsproj");
+    let text = std::fs::read_to_string(&tsproj).unwrap().replace(
+        "<NC File=\"NC.xti\"/>",
+        &format!(
+            "<NC>\n<SafTask Priority=\"4\" CycleTime=\"20000\"><Name>NC-Task 1 SAF</Name></SafTask>\n{}\n{}\n</NC>",
+            axis(&lift, "Lift"),
+            axis(&table, "Table Axis")
+        ),
+    );
+    std::fs::write(&tsproj, text).unwrap();
+    std::fs::remove_dir_all(dir.path().join("_Config")).unwrap();
+    let (trace, stderr) = run_traced_files(&[dir.path()], 400, WATCH);
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert!((max(&column(&trace, "axis.Lift.velocity")) - 150.0).abs() < 1e-9);
+    assert!((max(&column(&trace, "axis.Table_Axis.velocity")) - 90.0).abs() < 1e-9);
+    assert!(stderr.contains("Cell.tsproj") && stderr.contains("note[W1428]"), "{stderr}");
+}
+
+/// An axis file the NC configuration names but the solution lacks: one located E1047 (exit 1),
+/// not an axis silently left out; a value that is no number: one located W1428 warning, the
+/// default used.
+#[test]
+fn a_missing_nc_file_is_e1047_and_an_unreadable_value_w1428() {
+    let dir = copy_of_cell();
+    std::fs::remove_file(dir.path().join("_Config/NC/Axes/Table Axis.xti")).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(dir.path().join("Cell/Cell.plcproj"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let e = stderr.lines().find(|l| l.contains("E1047")).expect("E1047");
+    assert!(
+        e.contains("_Config/NC/NC.xti:17:15: error[E1047]") && e.contains("Table Axis.xti"),
+        "{e}"
+    );
+    assert_eq!(stderr.matches("error[").count(), 1, "{stderr}");
+
+    let dir = copy_of_cell();
+    let lift = dir.path().join("_Config/NC/Axes/Lift.xti");
+    let text = std::fs::read_to_string(&lift)
+        .unwrap()
+        .replace("Maximum=\"150\"", "Maximum=\"fast\"");
+    std::fs::write(&lift, text).unwrap();
+    let (trace, stderr) = run_traced_files(&[&dir.path().join("Cell/Cell.plcproj")], 200, WATCH);
+    let w = stderr
+        .lines()
+        .find(|l| l.contains("warning[W1428]"))
+        .expect("W1428 warning");
+    assert!(w.contains("Lift.xti:8:") && w.contains("Velo Maximum"), "{w}");
+    assert_eq!(stderr.matches("[W1428]").count(), 2, "{stderr}");
+    // TwinCAT's default maximum velocity, 2000 mm/s, instead of the 150 mm/s it could not read
+    assert!(max(&column(&trace, "axis.Lift.velocity")) > 150.0 + 1.0);
+}
