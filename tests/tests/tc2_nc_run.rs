@@ -68,8 +68,13 @@ fn nc_axes_of_the_solution_are_the_simulated_axes_with_their_limits() {
     assert!((min(&la) + 250.0).abs() < 1e-9, "{}", min(&la));
     assert!(max(&lp) <= 300.0, "{}", max(&lp));
     let done = column(&trace, "MAIN.bTableDone");
-    let at = done.iter().position(|&d| d == 1.0).expect("both moves Done");
-    assert!((lp[at] - 280.0).abs() < 1e-9 && (column(&trace, "MAIN.rLiftPos")[at] - 280.0).abs() < 1e-9);
+    let at = done
+        .iter()
+        .position(|&d| d == 1.0)
+        .expect("both moves Done");
+    assert!(
+        (lp[at] - 280.0).abs() < 1e-9 && (column(&trace, "MAIN.rLiftPos")[at] - 280.0).abs() < 1e-9
+    );
     // the move beyond the software limit: Error, the axis stays at 280 mm
     let err = column(&trace, "MAIN.bLiftError");
     assert_eq!(*err.last().unwrap(), 1.0);
@@ -159,7 +164,10 @@ fn nc_axes_inside_the_tsproj_are_read_too() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert!((max(&column(&trace, "axis.Lift.velocity")) - 150.0).abs() < 1e-9);
     assert!((max(&column(&trace, "axis.Table_Axis.velocity")) - 90.0).abs() < 1e-9);
-    assert!(stderr.contains("Cell.tsproj") && stderr.contains("note[W1428]"), "{stderr}");
+    assert!(
+        stderr.contains("Cell.tsproj") && stderr.contains("note[W1428]"),
+        "{stderr}"
+    );
 }
 
 /// An axis file the NC configuration names but the solution lacks: one located E1047 (exit 1),
@@ -194,8 +202,84 @@ fn a_missing_nc_file_is_e1047_and_an_unreadable_value_w1428() {
         .lines()
         .find(|l| l.contains("warning[W1428]"))
         .expect("W1428 warning");
-    assert!(w.contains("Lift.xti:8:") && w.contains("Velo Maximum"), "{w}");
+    assert!(
+        w.contains("Lift.xti:8:") && w.contains("Velo Maximum"),
+        "{w}"
+    );
     assert_eq!(stderr.matches("[W1428]").count(), 2, "{stderr}");
     // TwinCAT's default maximum velocity, 2000 mm/s, instead of the 150 mm/s it could not read
     assert!(max(&column(&trace, "axis.Lift.velocity")) > 150.0 + 1.0);
+}
+
+const PRESS: &str =
+    "MAIN.nStep,MAIN.bHomed,MAIN.rPos,MAIN.nStateDWord,MAIN.bHasJob,MAIN.bPositive,\
+                     MAIN.bOperational,MAIN.rPosDiff,MAIN.rTorque,MAIN.nCouple,MAIN.bBitHomed,\
+                     MAIN.bHomeError,MAIN.nHomeErrorID,axis.Press.position,axis.Press.velocity,\
+                     axis.Press.acceleration";
+
+/// Tc2_MC2's MC_Home with each HomingMode on the `Press` solution (its NC axis inside the
+/// `.tsproj`, linked to `MAIN.fbStation.Axis`), and the AXIS_REF members real code reads, each
+/// from the simulated axis: not homed at the start; `MC_AbsoluteHoming` sets 50 mm without motion
+/// and homes; the move to 120 mm keeps the NC's 100 mm/s and 1000 mm/s² (80 mm/s asked) while
+/// `Status.HasJob`, `PositiveDirection` and the state word's bits say so; `MC_RelativeHoming`
+/// shifts by 10 mm (130); `MC_ResetCalibration` / `MC_ForceCalibration` clear and set `Homed`
+/// without motion; `MC_DefaultHoming` with `DEFAULT_HOME_POSITION` homes to the calibration value
+/// 0; `MC_AbsoluteHoming` without a position is ErrorID 24. `PosDiff` is 0 (the drive follows
+/// exactly), `ActTorque` 0 with one W1429 note, `CoupleState` 0 (a single axis).
+#[test]
+fn tc2_homing_modes_and_axis_ref_members_follow_the_simulated_axis() {
+    let (trace, stderr) = run_traced_files(&[&fixture("Press/Press/Press.plcproj")], 200, PRESS);
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(stderr.matches("note[W1429]").count(), 1, "{stderr}");
+    let step = column(&trace, "MAIN.nStep");
+    let homed = column(&trace, "MAIN.bHomed");
+    let pos = column(&trace, "axis.Press.position");
+    let word = column(&trace, "MAIN.nStateDWord");
+    let first = |s: f64| step.iter().position(|&x| x == s).unwrap();
+    // powered, not homed: Operational (bit 0), NotMoving (2), in position (3, 4), loop closed (20)
+    assert_eq!(homed[0], 0.0);
+    assert_eq!(word[1] as u32, 1 | 4 | 8 | 16 | 1 << 20);
+    // absolute homing: 50 mm, homed, no motion
+    let moving = first(20.0);
+    assert!((pos[moving] - 50.0).abs() < 1e-9 && homed[moving] == 1.0);
+    assert!(column(&trace, "axis.Press.velocity")[..moving]
+        .iter()
+        .all(|&v| v == 0.0));
+    // the move: within the NC's limits; the state word of an axis moving forward, homed
+    let vel = column(&trace, "axis.Press.velocity");
+    let acc = column(&trace, "axis.Press.acceleration");
+    assert!(
+        (max(&vel) - 80.0).abs() < 1e-9
+            && max(&acc) <= 1000.0 + 1e-9
+            && min(&acc) >= -1000.0 - 1e-9
+    );
+    let mid = moving + 20;
+    assert_eq!(
+        word[mid] as u32,
+        1 | 2 | 1 << 8 | 1 << 9 | 1 << 20,
+        "{}",
+        word[mid]
+    );
+    assert_eq!(column(&trace, "MAIN.bHasJob")[mid], 1.0);
+    assert_eq!(column(&trace, "MAIN.bPositive")[mid], 1.0);
+    assert_eq!(column(&trace, "MAIN.bBitHomed")[mid], 1.0);
+    assert_eq!(column(&trace, "MAIN.bOperational")[mid], 1.0);
+    // relative homing: 120 + 10
+    let rel = first(40.0);
+    assert!((pos[rel] - 130.0).abs() < 1e-9, "{}", pos[rel]);
+    // reset and force calibration: Homed follows, the position stays
+    let reset = first(50.0);
+    assert_eq!(homed[reset], 0.0);
+    assert_eq!(homed[first(55.0)], 1.0);
+    assert_eq!(homed[first(60.0)], 0.0);
+    assert!((pos[first(60.0)] - 130.0).abs() < 1e-9);
+    // default homing to DEFAULT_HOME_POSITION: the calibration value 0
+    let default = first(70.0);
+    assert!(pos[default].abs() < 1e-9 && homed[default] == 1.0);
+    // absolute homing without a position: ErrorID 24
+    assert_eq!(*column(&trace, "MAIN.bHomeError").last().unwrap(), 1.0);
+    assert_eq!(*column(&trace, "MAIN.nHomeErrorID").last().unwrap(), 24.0);
+    for c in ["MAIN.rPosDiff", "MAIN.rTorque", "MAIN.nCouple"] {
+        assert!(column(&trace, c).iter().all(|&v| v == 0.0), "{c}");
+    }
 }

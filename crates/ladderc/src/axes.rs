@@ -388,11 +388,17 @@ impl AxisConfig {
                 ),
                 (
                     "ACC",
-                    table(&|a| a.standard_dynamics.map_or(a.limits.acceleration_limit, |d| d.0)),
+                    table(&|a| {
+                        a.standard_dynamics
+                            .map_or(a.limits.acceleration_limit, |d| d.0)
+                    }),
                 ),
                 (
                     "DEC",
-                    table(&|a| a.standard_dynamics.map_or(a.limits.deceleration_limit, |d| d.1)),
+                    table(&|a| {
+                        a.standard_dynamics
+                            .map_or(a.limits.deceleration_limit, |d| d.1)
+                    }),
                 ),
                 ("JOGSLOW", table(&|a| a.jog_velocities.0)),
                 ("JOGFAST", table(&|a| a.jog_velocities.1)),
@@ -403,6 +409,8 @@ impl AxisConfig {
                     n - 1
                 );
             }
+            // Tc2_MC2's `Status.Homed` per axis: not homed at the start (crate::tc2_blocks)
+            let _ = writeln!(s, "    __TC2_HOMED : ARRAY [0..{}] OF BOOL;", n - 1);
         }
         for (i, a) in self.axes.iter().enumerate() {
             if a.declared_by_program {

@@ -79,7 +79,13 @@ pub fn solution(session: &Session, inputs: &[PathBuf]) -> Option<PathBuf> {
         v.sort();
         v
     };
-    let one = |v: Vec<PathBuf>| if v.len() == 1 { v.into_iter().next() } else { None };
+    let one = |v: Vec<PathBuf>| {
+        if v.len() == 1 {
+            v.into_iter().next()
+        } else {
+            None
+        }
+    };
     if has_ext(first, "plcproj") {
         let mut dir = first.parent()?.to_path_buf();
         for _ in 0..4 {
@@ -258,7 +264,10 @@ fn not_xml(session: &mut Session, path: &Path, at: Span) {
     session.diags.push(
         Diagnostic::error(
             code::E1047,
-            format!("{} is not a well-formed NC configuration file", path.display()),
+            format!(
+                "{} is not a well-formed NC configuration file",
+                path.display()
+            ),
         )
         .at(at)
         .with_hint("TwinCAT writes it as XML: restore it, or give an axes file (--axes FILE.json)"),
@@ -269,11 +278,22 @@ fn not_xml(session: &mut Session, path: &Path, at: Span) {
 /// a number, `None` when absent.
 fn number(el: &Element, attr: &str) -> Option<Result<f64, (usize, usize)>> {
     let (v, range) = el.attr_and_range(attr)?;
-    Some(v.trim().parse::<f64>().ok().filter(|x| x.is_finite()).ok_or(range))
+    Some(
+        v.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or(range),
+    )
 }
 
 /// Reads one `<Axis>` element of `file`; `stem` names it when it says `__FILENAME__` or nothing.
-fn read_axis(session: &mut Session, axis: &Element, file: diagnostics::FileId, stem: &str) -> NcAxis {
+fn read_axis(
+    session: &mut Session,
+    axis: &Element,
+    file: diagnostics::FileId,
+    stem: &str,
+) -> NcAxis {
     let at = Span::new(file, axis.tag_start(), axis.tag_end());
     let name = match axis.child("Name").map(|n| n.text().trim().to_string()) {
         Some(n) if !n.is_empty() && n != "__FILENAME__" => n,
@@ -281,19 +301,27 @@ fn read_axis(session: &mut Session, axis: &Element, file: diagnostics::FileId, s
     };
     let mut v = Values::default();
     let mut bad: Vec<(String, (usize, usize))> = Vec::new();
-    let mut take = |el: &Element, attr: &str, slot: &mut Option<f64>, positive: bool| {
-        match number(el, attr) {
+    let mut take =
+        |el: &Element, attr: &str, slot: &mut Option<f64>, positive: bool| match number(el, attr) {
             Some(Ok(x)) if !positive || x > 0.0 => *slot = Some(x),
             Some(Ok(_)) | Some(Err(_)) => {
-                let range = el.attr_range(attr).unwrap_or((el.tag_start(), el.tag_end()));
+                let range = el
+                    .attr_range(attr)
+                    .unwrap_or((el.tag_start(), el.tag_end()));
                 bad.push((format!("{} {attr}", el.name()), range));
             }
             None => {}
-        }
+        };
+    let enabled = |el: &Element| {
+        el.attr("Enable")
+            .is_none_or(|e| !e.eq_ignore_ascii_case("false"))
     };
-    let enabled = |el: &Element| el.attr("Enable").is_none_or(|e| !e.eq_ignore_ascii_case("false"));
     // the parameter elements of the axis itself, not of its process image (`Vars`)
-    let mut stack: Vec<&Element> = axis.children.iter().filter(|c| c.name() != "Vars").collect();
+    let mut stack: Vec<&Element> = axis
+        .children
+        .iter()
+        .filter(|c| c.name() != "Vars")
+        .collect();
     while let Some(el) = stack.pop() {
         stack.extend(el.children.iter().filter(|c| c.name() != "Vars"));
         match el.name() {
@@ -401,7 +429,10 @@ fn mappings(root: &Element, file: diagnostics::FileId) -> Vec<(String, String, S
     };
     for owner_a in m.children_named("OwnerA") {
         for owner_b in owner_a.children_named("OwnerB") {
-            let (a, b) = (owner_a.attr("Name").unwrap_or(""), owner_b.attr("Name").unwrap_or(""));
+            let (a, b) = (
+                owner_a.attr("Name").unwrap_or(""),
+                owner_b.attr("Name").unwrap_or(""),
+            );
             // the NC side is `TINC^<task>^Axes^[folder^]<axis>`, on either owner
             let axis = [a, b]
                 .into_iter()
@@ -471,8 +502,14 @@ fn config(
         let dec = v.dec_max.unwrap_or(std_dec).max(f64::MIN_POSITIVE);
         let (std_acc, std_dec) = (std_acc.min(acc), std_dec.min(dec));
         let jerk = v.jerk.unwrap_or(default("jerk"));
-        let fast = v.fast.unwrap_or(default("manual velocity (fast)")).min(velocity);
-        let slow = v.slow.unwrap_or(default("manual velocity (slow)")).min(velocity);
+        let fast = v
+            .fast
+            .unwrap_or(default("manual velocity (fast)"))
+            .min(velocity);
+        let slow = v
+            .slow
+            .unwrap_or(default("manual velocity (slow)"))
+            .min(velocity);
         let lag = match v.lag {
             Some(Some(r)) => r,
             _ => default("position lag limit"),
@@ -501,7 +538,9 @@ fn config(
                     ),
                 )
                 .at(a.at)
-                .with_hint("set them in the axis's parameters, or give an axes file (--axes FILE.json)"),
+                .with_hint(
+                    "set them in the axis's parameters, or give an axes file (--axes FILE.json)",
+                ),
             );
         }
         let link = links
