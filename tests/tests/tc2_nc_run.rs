@@ -283,3 +283,33 @@ fn tc2_homing_modes_and_axis_ref_members_follow_the_simulated_axis() {
         assert!(column(&trace, c).iter().all(|&v| v == 0.0), "{c}");
     }
 }
+
+/// An `AXIS_REF` inside a function block instance that is a global (SeanyCash/TwinCAT_CNC's
+/// `GVL.fbCNC.X_Ref`, linked by its NC mapping) is linked and moves: the link gives the global
+/// instance an initializer naming the block's own variable (before: E1025 "FB_CNC has no field or
+/// input `X_Ref`", the block's variables being declared after the globals).
+#[test]
+fn an_axis_ref_inside_a_global_function_block_instance_is_linked() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("cnc.st");
+    std::fs::write(
+        &src,
+        "FUNCTION_BLOCK FB_CNC\nVAR\n  X_Ref : AXIS_REF;\n  fbPower : MC_Power;\n  fbMove : MC_MoveAbsolute;\nEND_VAR\n\
+         fbPower(Axis := X_Ref, Enable := TRUE, Enable_Positive := TRUE, Enable_Negative := TRUE);\n\
+         fbMove(Axis := X_Ref, Execute := fbPower.Status, Position := 20.0, Velocity := 10.0);\n\
+         END_FUNCTION_BLOCK\n\
+         VAR_GLOBAL\n  fbCNC : FB_CNC;\nEND_VAR\n\
+         PROGRAM MAIN\nfbCNC();\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("cnc.axes.json"),
+        r#"{ "axes": [ { "name": "X", "velocity": 10, "acceleration": 100, "deceleration": 100,
+            "link": "fbCNC.X_Ref" } ] }"#,
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced_files(&[&src], 300, "axis.X.position,axis.X.velocity");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert!((column(&trace, "axis.X.position").last().unwrap() - 20.0).abs() < 1e-9);
+    assert!((max(&column(&trace, "axis.X.velocity")) - 10.0).abs() < 1e-9);
+}
