@@ -313,3 +313,32 @@ fn an_axis_ref_inside_a_global_function_block_instance_is_linked() {
     assert!((column(&trace, "axis.X.position").last().unwrap() - 20.0).abs() < 1e-9);
     assert!((max(&column(&trace, "axis.X.velocity")) - 10.0).abs() < 1e-9);
 }
+
+/// An `AXIS_REF` no NC axis is linked to (its "Link To PLC" mapping missing from the `.tsproj`, as
+/// in several public solutions) is E1056 naming the solution and the unlinked NC axes.
+#[test]
+fn an_axis_ref_without_an_nc_link_is_e1056_naming_the_nc_axes() {
+    let dir = copy_of_cell();
+    let tsproj = dir.path().join("Cell.tsproj");
+    let text = std::fs::read_to_string(&tsproj).unwrap();
+    let s = text
+        .find("<OwnerB Name=\"TINC^NC-Task 1 SAF^Axes^Table Axis\">")
+        .unwrap();
+    let e = s + text[s..].find("</OwnerB>").unwrap() + "</OwnerB>".len();
+    std::fs::write(&tsproj, format!("{}{}", &text[..s], &text[e..])).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(dir.path().join("Cell/Cell.plcproj"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let e = stderr.lines().find(|l| l.contains("E1056")).expect("E1056");
+    assert!(
+        e.contains(
+            "MAIN.TcPOU:6:2: error[E1056]: AXIS_REF `MAIN.Table` is linked to no NC axis of "
+        ) && e.contains("Cell.tsproj")
+            && e.contains("link one of the NC axes (Table_Axis) to it in TwinCAT"),
+        "{e}"
+    );
+}

@@ -133,6 +133,8 @@ pub struct AxisConfig {
     /// The program uses a block ladderc builds ([`crate::tc2_blocks`]): the globals include the
     /// per-axis tables it reads (modulo period, acceleration and deceleration limits by `AxisNo`).
     pub tc2_tables: bool,
+    /// The axes are a TwinCAT solution's NC axes: its `.tsproj` ([`crate::nc_axes`]).
+    pub nc_solution: Option<String>,
 }
 
 impl Default for AxisConfig {
@@ -143,6 +145,7 @@ impl Default for AxisConfig {
             axes: Vec::new(),
             groups: Vec::new(),
             tc2_tables: false,
+            nc_solution: None,
         }
     }
 }
@@ -359,6 +362,7 @@ impl AxisConfig {
             axes,
             groups,
             tc2_tables: false,
+            nc_solution: None,
         })
     }
 

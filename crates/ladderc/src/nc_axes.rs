@@ -226,7 +226,9 @@ pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
         return None;
     }
     let links = mappings(&root, file);
-    Some(config(session, axes, &links))
+    let mut config = config(session, axes, &links);
+    config.nc_solution = Some(tsproj.display().to_string());
+    Some(config)
 }
 
 fn fail(_session: &mut Session) -> Option<AxisConfig> {
