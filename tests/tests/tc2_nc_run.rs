@@ -342,3 +342,55 @@ fn an_axis_ref_without_an_nc_link_is_e1056_naming_the_nc_axes() {
         "{e}"
     );
 }
+
+/// `NcToPlc.CoupleState` of an `AXIS_REF` geared to a master (MC_GearIn; zhaoshutao's IDPLC
+/// projects read it 304 times): 3 ("slave") while the coupling runs, 0 ("single axis") before it
+/// and after MC_GearOut; `Status.CoupledMode` the same as a BOOL.
+#[test]
+fn couple_state_follows_the_gear_coupling() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("gear.st");
+    std::fs::write(
+        &src,
+        "PROGRAM MAIN\nVAR\n  Slave : AXIS_REF;\n  pwM : MC_Power;\n  pwS : MC_Power;\n  mvM : MC_MoveVelocity;\n\
+         gin : MC_GearIn;\n  gout : MC_GearOut;\n  n : INT;\n  nCouple : UDINT;\n  bCoupled : BOOL;\nEND_VAR\n\
+         n := n + 1;\n\
+         pwM(Axis := M, Enable := TRUE, Enable_Positive := TRUE, Enable_Negative := TRUE);\n\
+         pwS(Axis := Slave, Enable := TRUE, Enable_Positive := TRUE, Enable_Negative := TRUE);\n\
+         mvM(Axis := M, Execute := pwM.Status, Velocity := 40.0, Acceleration := 400.0, Deceleration := 400.0);\n\
+         gin(Master := M, Slave := Slave, Execute := pwS.Status AND n > 5, RatioNumerator := 1.0,\n\
+             RatioDenominator := 2.0, Acceleration := 1000.0, Deceleration := 1000.0);\n\
+         gout(Slave := Slave, Execute := n > 60);\n\
+         nCouple := Slave.NcToPlc.CoupleState;\n\
+         bCoupled := Slave.Status.CoupledMode;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("gear.axes.json"),
+        r#"{ "axes": [
+  { "name": "M", "velocity": 100, "acceleration": 1000, "deceleration": 1000 },
+  { "name": "S", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "link": "MAIN.Slave" } ] }"#,
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced_files(
+        &[&src],
+        100,
+        "MAIN.n,MAIN.nCouple,MAIN.bCoupled,axis.S.velocity",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    let couple = column(&trace, "MAIN.nCouple");
+    let coupled = column(&trace, "MAIN.bCoupled");
+    assert_eq!(couple[0], 0.0);
+    let on = couple.iter().position(|&c| c == 3.0).expect("slave");
+    let off = on
+        + couple[on..]
+            .iter()
+            .position(|&c| c == 0.0)
+            .expect("geared out");
+    assert!(
+        (5..=10).contains(&on) && (60..=64).contains(&off),
+        "{on} {off}"
+    );
+    assert!((0..couple.len()).all(|k| (couple[k] == 3.0) == (coupled[k] == 1.0)));
+    assert!((column(&trace, "axis.S.velocity")[on + 20] - 20.0).abs() < 1e-9);
+}

@@ -632,9 +632,8 @@ fn member(
             if !used.computed.contains(&axis.key()) {
                 used.computed.push(axis.key());
             }
-            if field == "STATEDWORD" {
-                used.homed = true;
-            }
+            // the state word's prologue reads the calibration table
+            used.homed = true;
             (hidden_name(axis, &field), None)
         }
         "STATUS" => match field.as_str() {
