@@ -159,17 +159,13 @@ pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
     let mut axes: Vec<NcAxis> = Vec::new();
     let mut failed = false;
     // the NC element: in the .tsproj, or in the file it names
-    let Some(nc) = root.walk().find(|e| e.name() == "NC") else {
-        return None;
-    };
+    let nc = root.walk().find(|e| e.name() == "NC")?;
     let nc_file;
     let nc_arena = Arena::new();
     let nc_el: Element = match nc.attr_and_range("File") {
         Some((name, (s, e))) => {
             let path = nc_dir.join(name);
-            let Some((f, src)) = read_xml(session, &path, Span::new(file, s, e)) else {
-                return fail(session);
-            };
+            let (f, src) = read_xml(session, &path, Span::new(file, s, e))?;
             nc_file = f;
             let src = nc_arena.str(&src);
             match ladder_compiler::xml::parse(src, &nc_arena) {
@@ -179,7 +175,7 @@ pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
                 },
                 _ => {
                     not_xml(session, &path, Span::new(file, s, e));
-                    return fail(session);
+                    return None;
                 }
             }
         }
@@ -220,7 +216,7 @@ pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
         }
     }
     if failed {
-        return fail(session);
+        return None;
     }
     if axes.is_empty() {
         return None;
@@ -229,10 +225,6 @@ pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
     let mut config = config(session, axes, &links);
     config.nc_solution = Some(tsproj.display().to_string());
     Some(config)
-}
-
-fn fail(_session: &mut Session) -> Option<AxisConfig> {
-    None
 }
 
 /// The text of an NC file named at `at`, registered in the source map; E1047 when it cannot be read.
