@@ -441,6 +441,7 @@ fn the_language_server_reads_tc2_mc2_as_the_command_line_does() {
             "SetTorque",
             "ErrorCode",
             "CoupleState",
+            "AxisId",
             "StateDWord"
         ]
     );

@@ -214,8 +214,8 @@ fn a_missing_nc_file_is_e1047_and_an_unreadable_value_w1428() {
 const PRESS: &str =
     "MAIN.nStep,MAIN.bHomed,MAIN.rPos,MAIN.nStateDWord,MAIN.bHasJob,MAIN.bPositive,\
                      MAIN.bOperational,MAIN.rPosDiff,MAIN.rTorque,MAIN.nCouple,MAIN.bBitHomed,\
-                     MAIN.bHomeError,MAIN.nHomeErrorID,axis.Press.position,axis.Press.velocity,\
-                     axis.Press.acceleration";
+                     MAIN.bHomeError,MAIN.nHomeErrorID,MAIN.nAxisId,axis.Press.position,\
+                     axis.Press.velocity,axis.Press.acceleration";
 
 /// Tc2_MC2's MC_Home with each HomingMode on the `Press` solution (its NC axis inside the
 /// `.tsproj`, linked to `MAIN.fbStation.Axis`), and the AXIS_REF members real code reads, each
@@ -225,7 +225,8 @@ const PRESS: &str =
 /// shifts by 10 mm (130); `MC_ResetCalibration` / `MC_ForceCalibration` clear and set `Homed`
 /// without motion; `MC_DefaultHoming` with `DEFAULT_HOME_POSITION` homes to the calibration value
 /// 0; `MC_AbsoluteHoming` without a position is ErrorID 24. `PosDiff` is 0 (the drive follows
-/// exactly), `ActTorque` 0 with one W1429 note, `CoupleState` 0 (a single axis).
+/// exactly), `ActTorque` 0 with one W1429 note, `CoupleState` 0 (a single axis), `AxisId` the NC
+/// axis's `Id` (4).
 #[test]
 fn tc2_homing_modes_and_axis_ref_members_follow_the_simulated_axis() {
     let (trace, stderr) = run_traced_files(&[&fixture("Press/Press/Press.plcproj")], 200, PRESS);
@@ -279,6 +280,7 @@ fn tc2_homing_modes_and_axis_ref_members_follow_the_simulated_axis() {
     // absolute homing without a position: ErrorID 24
     assert_eq!(*column(&trace, "MAIN.bHomeError").last().unwrap(), 1.0);
     assert_eq!(*column(&trace, "MAIN.nHomeErrorID").last().unwrap(), 24.0);
+    assert!(column(&trace, "MAIN.nAxisId").iter().all(|&v| v == 4.0));
     for c in ["MAIN.rPosDiff", "MAIN.rTorque", "MAIN.nCouple"] {
         assert!(column(&trace, c).iter().all(|&v| v == 0.0), "{c}");
     }

@@ -117,6 +117,8 @@ pub struct Axis {
     /// The period MC_MoveModulo positions in when it is not the engine's modulo period (a TwinCAT
     /// NC axis's modulo factor: the axis itself stays linear, [`crate::nc_axes`]).
     pub modulo_factor: Option<f64>,
+    /// The NC axis's `Id` (Tc2_MC2's `NcToPlc.AxisId`), for an axis read from a TwinCAT solution.
+    pub nc_id: Option<u32>,
 }
 
 /// The axis configuration of a project.
@@ -271,6 +273,7 @@ impl AxisConfig {
                 jog_velocities: jog,
                 standard_dynamics: None,
                 modulo_factor: None,
+                nc_id: None,
                 name: a.name.clone(),
                 unit: a.unit.clone(),
                 counts_per_unit: a.counts_per_unit,
@@ -415,6 +418,19 @@ impl AxisConfig {
             }
             // Tc2_MC2's `Status.Homed` per axis: not homed at the start (crate::tc2_blocks)
             let _ = writeln!(s, "    __TC2_HOMED : ARRAY [0..{}] OF BOOL;", n - 1);
+            // `NcToPlc.AxisId`: the NC axis's Id, else the axis's place in the file from 1
+            let mut ids: Vec<String> = (self.axes.iter().enumerate())
+                .map(|(i, a)| a.nc_id.unwrap_or(i as u32 + 1).to_string())
+                .collect();
+            if ids.is_empty() {
+                ids.push("0".into());
+            }
+            let _ = writeln!(
+                s,
+                "    __TC2_AXISID : ARRAY [0..{}] OF UDINT := [{}];",
+                n - 1,
+                ids.join(", ")
+            );
         }
         for (i, a) in self.axes.iter().enumerate() {
             if a.declared_by_program {

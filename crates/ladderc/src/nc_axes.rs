@@ -121,6 +121,7 @@ pub fn solution(session: &Session, inputs: &[PathBuf]) -> Option<PathBuf> {
 /// One NC axis as read: its name, where it is declared, its parameters.
 struct NcAxis {
     name: String,
+    id: Option<u32>,
     at: Span,
     values: Values,
     missing: Vec<&'static str>,
@@ -409,6 +410,7 @@ fn read_axis(
     });
     NcAxis {
         name,
+        id: axis.attr("Id").and_then(|i| i.trim().parse().ok()),
         at,
         values: v,
         missing,
@@ -564,6 +566,7 @@ fn config(
             jog_velocities: (slow, fast),
             standard_dynamics: Some((std_acc, std_dec)),
             modulo_factor: Some(v.modulo.unwrap_or(default("modulo factor"))),
+            nc_id: a.id,
         });
     }
     AxisConfig {

@@ -137,6 +137,7 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
         .chain([
             pair("ErrorCode", "UDINT"),
             pair("CoupleState", "UDINT"),
+            pair("AxisId", "UDINT"),
             pair("StateDWord", "DWORD"),
         ])
         .collect(),
@@ -609,7 +610,16 @@ fn member(
         _ => None,
     };
     let (name, out): (String, Option<&str>) = match group.as_str() {
-        "STATUS" if field == "HOMED" => {
+        // tables by `AxisNo`: the calibration flag, the NC axis's Id
+        "STATUS" | "NCTOPLC"
+            if (group == "STATUS" && field == "HOMED")
+                || (group == "NCTOPLC" && field == "AXISID") =>
+        {
+            let table = if field == "HOMED" {
+                "__TC2_HOMED"
+            } else {
+                "__TC2_AXISID"
+            };
             if rest.len() > 2 {
                 return None;
             }
@@ -622,7 +632,7 @@ fn member(
                 r
             };
             *v = VarRef {
-                base: Ident::new("__TC2_HOMED", at),
+                base: Ident::new(table, at),
                 accessors: vec![Accessor::Index(vec![Operand::Var(axis_no)])].into(),
                 span: at,
             };
@@ -799,7 +809,7 @@ fn e1042(member: &str, span: Span) -> Diagnostic {
          ContinuousMotion, SynchronizedMotion, Homing, HomingBusy, CoupledMode, InTargetPosition, \
          InPositionArea, Moving, NotMoving, HasJob, Homed, Operational, ControlLoopClosed, \
          PositiveDirection, NegativeDirection and NcToPlc.ActPos, SetPos, ActVelo, SetVelo, PosDiff, \
-         ActTorque, SetTorque, ErrorCode, CoupleState, StateDWord",
+         ActTorque, SetTorque, ErrorCode, CoupleState, AxisId, StateDWord",
     )
 }
 
