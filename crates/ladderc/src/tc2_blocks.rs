@@ -59,7 +59,7 @@
 //! to `Position` (on the spot, from standstill), `MC_RelativeHoming` shifts it by `Position`
 //! (MC_SetPosition, `Relative := TRUE`); both refuse `DEFAULT_HOME_POSITION` with ErrorID 24;
 //! `MC_ForceCalibration` marks the axis homed and `MC_ResetCalibration` not homed, without
-//! motion, Done at once; another value is ErrorID 32. The axis is homed (`Status.Homed`, the
+//! motion, Done at once; another value is ErrorID 32 (`ErrorID` is UDINT, as Tc2_MC2's). The axis is homed (`Status.Homed`, the
 //! table `__TC2_HOMED` by `AxisNo`) when a homing ends, not homed at the start of the run and
 //! from the start of a default homing on.
 
