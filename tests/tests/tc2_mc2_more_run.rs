@@ -429,7 +429,22 @@ fn the_language_server_reads_tc2_mc2_as_the_command_line_does() {
         "{l:?}"
     );
     let l = complete(14, 14);
-    assert_eq!(l, ["ActPos", "SetPos", "ActVelo", "SetVelo", "ErrorCode"]);
+    assert_eq!(
+        l,
+        [
+            "ActPos",
+            "SetPos",
+            "ActVelo",
+            "SetVelo",
+            "PosDiff",
+            "ActTorque",
+            "SetTorque",
+            "ErrorCode",
+            "CoupleState",
+            "AxisId",
+            "StateDWord"
+        ]
+    );
     let _ = c.request("shutdown", json!(null));
     c.notify("exit", json!(null));
     assert!(c.child.wait().unwrap().success());

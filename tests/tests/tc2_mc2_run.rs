@@ -247,7 +247,8 @@ fn axis_ref_status_and_nc_to_plc_read_the_simulated_axis() {
 }
 
 /// An AXIS_REF member the simulated axis has no counterpart for is one located E1042 (before:
-/// E1021 "AXIS_REF has no field").
+/// E1021 "AXIS_REF has no field"). (`Status.Homed` and `NcToPlc.StateDWord`, once such members,
+/// are read since: `tc2_nc_run.rs`.)
 #[test]
 fn axis_ref_members_without_a_counterpart_are_one_e1042_each() {
     let dir = tempfile::tempdir().unwrap();
@@ -255,8 +256,8 @@ fn axis_ref_members_without_a_counterpart_are_one_e1042_each() {
     std::fs::write(
         &src,
         "PROGRAM MAIN\nVAR\n  Axis : AXIS_REF;\n  fbPower : MC_Power;\n  b : BOOL;\n  d : DWORD;\nEND_VAR\n\
-         fbPower(Axis := Axis, Enable := TRUE);\nAxis.ReadStatus();\nb := Axis.Status.Homed;\n\
-         d := Axis.NcToPlc.StateDWord;\nEND_PROGRAM\n",
+         fbPower(Axis := Axis, Enable := TRUE);\nAxis.ReadStatus();\nb := Axis.Status.ExtSetPointGenEnabled;\n\
+         d := Axis.NcToPlc.TouchProbeState;\nEND_PROGRAM\n",
     )
     .unwrap();
     std::fs::write(
@@ -274,8 +275,8 @@ fn axis_ref_members_without_a_counterpart_are_one_e1042_each() {
     assert_eq!(
         heads,
         vec![
-            "homed.st:10:18: error[E1042]: AXIS_REF's `Status.Homed` has no counterpart in ladderc's simulated axis",
-            "homed.st:11:19: error[E1042]: AXIS_REF's `NcToPlc.StateDWord` has no counterpart in ladderc's simulated axis",
+            "homed.st:10:18: error[E1042]: AXIS_REF's `Status.ExtSetPointGenEnabled` has no counterpart in ladderc's simulated axis",
+            "homed.st:11:19: error[E1042]: AXIS_REF's `NcToPlc.TouchProbeState` has no counterpart in ladderc's simulated axis",
         ],
         "{}",
         String::from_utf8_lossy(&out.stderr)

@@ -110,6 +110,15 @@ pub struct Axis {
     pub declared_by_program: bool,
     /// MC_Jog's slow and fast manual velocities ([`crate::tc2_blocks`]).
     pub jog_velocities: (f64, f64),
+    /// Tc2_MC2's standard acceleration and deceleration (a block's `Acceleration` /
+    /// `Deceleration` left out or 0), when they differ from the limits (a TwinCAT NC axis's
+    /// `Dynamic Acceleration` below its `AccelerationMaximum`, [`crate::nc_axes`]).
+    pub standard_dynamics: Option<(f64, f64)>,
+    /// The period MC_MoveModulo positions in when it is not the engine's modulo period (a TwinCAT
+    /// NC axis's modulo factor: the axis itself stays linear, [`crate::nc_axes`]).
+    pub modulo_factor: Option<f64>,
+    /// The NC axis's `Id` (Tc2_MC2's `NcToPlc.AxisId`), for an axis read from a TwinCAT solution.
+    pub nc_id: Option<u32>,
 }
 
 /// The axis configuration of a project.
@@ -126,6 +135,8 @@ pub struct AxisConfig {
     /// The program uses a block ladderc builds ([`crate::tc2_blocks`]): the globals include the
     /// per-axis tables it reads (modulo period, acceleration and deceleration limits by `AxisNo`).
     pub tc2_tables: bool,
+    /// The axes are a TwinCAT solution's NC axes: its `.tsproj` ([`crate::nc_axes`]).
+    pub nc_solution: Option<String>,
 }
 
 impl Default for AxisConfig {
@@ -136,6 +147,7 @@ impl Default for AxisConfig {
             axes: Vec::new(),
             groups: Vec::new(),
             tc2_tables: false,
+            nc_solution: None,
         }
     }
 }
@@ -259,6 +271,9 @@ impl AxisConfig {
                 link,
                 declared_by_program: false,
                 jog_velocities: jog,
+                standard_dynamics: None,
+                modulo_factor: None,
+                nc_id: None,
                 name: a.name.clone(),
                 unit: a.unit.clone(),
                 counts_per_unit: a.counts_per_unit,
@@ -350,6 +365,7 @@ impl AxisConfig {
             axes,
             groups,
             tc2_tables: false,
+            nc_solution: None,
         })
     }
 
@@ -373,9 +389,24 @@ impl AxisConfig {
                 v.join(", ")
             };
             for (name, values) in [
-                ("MODULO", table(&|a| a.limits.modulo_period)),
-                ("ACC", table(&|a| a.limits.acceleration_limit)),
-                ("DEC", table(&|a| a.limits.deceleration_limit)),
+                (
+                    "MODULO",
+                    table(&|a| a.modulo_factor.unwrap_or(a.limits.modulo_period)),
+                ),
+                (
+                    "ACC",
+                    table(&|a| {
+                        a.standard_dynamics
+                            .map_or(a.limits.acceleration_limit, |d| d.0)
+                    }),
+                ),
+                (
+                    "DEC",
+                    table(&|a| {
+                        a.standard_dynamics
+                            .map_or(a.limits.deceleration_limit, |d| d.1)
+                    }),
+                ),
                 ("JOGSLOW", table(&|a| a.jog_velocities.0)),
                 ("JOGFAST", table(&|a| a.jog_velocities.1)),
             ] {
@@ -385,6 +416,21 @@ impl AxisConfig {
                     n - 1
                 );
             }
+            // Tc2_MC2's `Status.Homed` per axis: not homed at the start (crate::tc2_blocks)
+            let _ = writeln!(s, "    __TC2_HOMED : ARRAY [0..{}] OF BOOL;", n - 1);
+            // `NcToPlc.AxisId`: the NC axis's Id, else the axis's place in the file from 1
+            let mut ids: Vec<String> = (self.axes.iter().enumerate())
+                .map(|(i, a)| a.nc_id.unwrap_or(i as u32 + 1).to_string())
+                .collect();
+            if ids.is_empty() {
+                ids.push("0".into());
+            }
+            let _ = writeln!(
+                s,
+                "    __TC2_AXISID : ARRAY [0..{}] OF UDINT := [{}];",
+                n - 1,
+                ids.join(", ")
+            );
         }
         for (i, a) in self.axes.iter().enumerate() {
             if a.declared_by_program {

@@ -496,9 +496,26 @@ fn e1056(path: &str, count: usize, free: &[&str], at: Span, axes: &AxisConfig) -
     } else {
         String::new()
     };
+    if let Some(solution) = &axes.nc_solution {
+        let which = if free.is_empty() {
+            "every NC axis is linked already: add an NC axis".to_string()
+        } else {
+            format!("link one of the NC axes ({}) to it", free.join(", "))
+        };
+        return Diagnostic::error(
+            code::E1056,
+            format!("AXIS_REF `{path}`{more} is linked to no NC axis of {solution}"),
+        )
+        .at(at)
+        .with_hint(format!(
+            "{which} in TwinCAT (the axis's \"Link To PLC\", saved in the .tsproj's <Mappings>), or \
+             give an axes file (--axes FILE.json) with `\"link\": \"{path}\"`"
+        ));
+    }
     let hint = if axes.axes.is_empty() {
         "declare the machine's axes in an axes file (`<input stem>.axes.json` or --axes FILE, \
-         crates/ladderc/AXES.md) and link each AXIS_REF with `\"link\"`"
+         crates/ladderc/AXES.md) and link each AXIS_REF with `\"link\"`, or give the TwinCAT \
+         solution's NC configuration (its .tsproj and `_Config/NC`) with the project"
             .to_string()
     } else if free.is_empty() {
         format!(

@@ -70,6 +70,7 @@ pub mod loop_guard;
 pub mod lsp;
 pub mod motion_in_struct;
 pub mod motion_link;
+pub mod nc_axes;
 pub mod output;
 pub mod pipeline;
 pub mod plot;

@@ -889,7 +889,8 @@ impl Session {
     }
 
     /// The axis configuration: `explicit`, else `<stem>.axes.json` beside the first input when it
-    /// exists, else the empty default. `None`: it could not be read or had errors.
+    /// exists, else the NC axes of the TwinCAT solution the input belongs to ([`crate::nc_axes`]),
+    /// else the empty default. `None`: it could not be read or had errors.
     fn axis_config(&mut self, paths: &[PathBuf], explicit: Option<&Path>) -> Option<AxisConfig> {
         let path = match explicit {
             Some(p) => p.to_path_buf(),
@@ -899,7 +900,16 @@ impl Session {
                 .and_then(|p| default_axes_path(p))
             {
                 Some(p) if self.file_exists(&p) => p,
-                _ => return Some(AxisConfig::default()),
+                // a TwinCAT solution's NC axes (`_Config/NC`), else none
+                _ => {
+                    let before = self.diags.error_count();
+                    let imported = crate::nc_axes::solution(self, paths)
+                        .and_then(|tsproj| crate::nc_axes::import(self, &tsproj));
+                    if self.diags.error_count() > before {
+                        return None;
+                    }
+                    return Some(imported.unwrap_or_default());
+                }
             },
         };
         let text = match self.read_file(&path) {

@@ -44,6 +44,21 @@ const STATUS: &[(&str, &str)] = &[
     // of its last move; one in motion is not (yet) there.
     ("INTARGETPOSITION", "Standstill"),
     ("INPOSITIONAREA", "Standstill"),
+    // ST_AxisStatus `HomingBusy` ("homing is running"), `CoupledMode` ("the axis is a coupled
+    // slave"): MC_Home running, synchronized motion (MC_GearIn, MC_CamIn)
+    ("HOMINGBUSY", "Homing"),
+    ("COUPLEDMODE", "SynchronizedMotion"),
+];
+
+/// ST_AxisStatus / NCTOPLC_AXIS_REF members computed in the body's prologue from the hidden
+/// blocks (BOOL, BOOL, BOOL, BOOL, UDINT, DWORD): see [`computed`].
+const COMPUTED: &[(&str, &str)] = &[
+    ("OPERATIONAL", "BOOL"),
+    ("CONTROLLOOPCLOSED", "BOOL"),
+    ("POSITIVEDIRECTION", "BOOL"),
+    ("NEGATIVEDIRECTION", "BOOL"),
+    ("COUPLESTATE", "UDINT"),
+    ("STATEDWORD", "DWORD"),
 ];
 
 /// The ST_AxisStatus names of [`STATUS`]'s entries, as Tc2_MC2 spells them.
@@ -60,6 +75,8 @@ const STATUS_NAMES: &[&str] = &[
     "Homing",
     "InTargetPosition",
     "InPositionArea",
+    "HomingBusy",
+    "CoupledMode",
 ];
 
 /// The MC_ReadStatus outputs whose OR is `Moving`.
@@ -98,13 +115,32 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
                 pair("ErrorID", "UDINT"),
                 pair("Moving", "BOOL"),
                 pair("NotMoving", "BOOL"),
+                pair("HasJob", "BOOL"),
+                pair("Homed", "BOOL"),
+                pair("Operational", "BOOL"),
+                pair("ControlLoopClosed", "BOOL"),
+                pair("PositiveDirection", "BOOL"),
+                pair("NegativeDirection", "BOOL"),
             ])
             .collect(),
-        Some("NCTOPLC") => ["ActPos", "SetPos", "ActVelo", "SetVelo"]
-            .iter()
-            .map(|n| pair(n, "LREAL"))
-            .chain([pair("ErrorCode", "UDINT")])
-            .collect(),
+        Some("NCTOPLC") => [
+            "ActPos",
+            "SetPos",
+            "ActVelo",
+            "SetVelo",
+            "PosDiff",
+            "ActTorque",
+            "SetTorque",
+        ]
+        .iter()
+        .map(|n| pair(n, "LREAL"))
+        .chain([
+            pair("ErrorCode", "UDINT"),
+            pair("CoupleState", "UDINT"),
+            pair("AxisId", "UDINT"),
+            pair("StateDWord", "DWORD"),
+        ])
+        .collect(),
         _ => Vec::new(),
     }
 }
@@ -147,6 +183,11 @@ pub struct Axes {
     pub arrays: Vec<(Ident, ArrayDim)>,
     /// (global variable list, variable), upper case: `GVL_Axes.Axis1` names `Axis1`.
     pub lists: Vec<(String, String)>,
+    /// Set when a body reads an axis's calibration (`Status.Homed`, `NcToPlc.StateDWord`): the
+    /// `__TC2_HOMED` table is needed.
+    pub homed_read: std::cell::Cell<bool>,
+    /// Set once the note on the torque a simulated axis has none of (W1429) was given.
+    pub torque_noted: std::cell::Cell<bool>,
 }
 
 /// The axes whose members a body reads: scalars and arrays (each once).
@@ -156,6 +197,12 @@ struct Used {
     arrays: Vec<(Ident, ArrayDim)>,
     /// The axes (upper case) whose `NcToPlc.ErrorCode` is read.
     error_codes: Vec<String>,
+    /// The axes (upper case) with a [`COMPUTED`] member read.
+    computed: Vec<String>,
+    /// `Status.Homed` or `NcToPlc.StateDWord` is read.
+    homed: bool,
+    /// Where a torque (`NcToPlc.ActTorque`, `SetTorque`) is first read.
+    torque: Option<Span>,
 }
 
 impl Used {
@@ -208,10 +255,27 @@ pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
         names,
         arrays,
         lists: globals.lists.clone(),
+        homed_read: Default::default(),
+        torque_noted: Default::default(),
     };
     let axes = &axes;
     let mut used = Used::default();
     rewrite(&mut p.body, axes, &mut used, diags);
+    if used.homed {
+        globals.homed_read.set(true);
+    }
+    if let Some(at) = used.torque.filter(|_| !globals.torque_noted.get()) {
+        globals.torque_noted.set(true);
+        diags.push(
+            Diagnostic::new(
+                code::W1429,
+                diagnostics::Severity::Note,
+                "a simulated axis has no drive torque: `NcToPlc.ActTorque` and `SetTorque` read 0.0",
+            )
+            .at(at)
+            .with_hint("ladderc's drive follows its set point without a load; the run has no torque to report"),
+        );
+    }
     if used.scalars.is_empty() && used.arrays.is_empty() {
         return;
     }
@@ -275,6 +339,21 @@ pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
         }
         for ix in &elements {
             prologue.extend(moving(axis, ix.clone()));
+        }
+        if used.computed.contains(&axis.key()) {
+            for (name, ty_name) in COMPUTED {
+                hidden.push(VarDecl {
+                    name: Ident::new(hidden_name(axis, name), at),
+                    location: None,
+                    ty: ty(ty_name),
+                    init: None,
+                    edge: None,
+                    span: at,
+                });
+            }
+            for ix in &elements {
+                prologue.extend(computed(axis, ix.clone()));
+            }
         }
         if used.error_codes.contains(&axis.key()) {
             hidden.push(VarDecl {
@@ -519,9 +598,57 @@ fn member(
         return None;
     };
     let (group, field) = (group.key(), f.key());
+    // `Axis.NcToPlc.StateDWord.1`: a bit of the computed state word
+    let bit = match rest.get(2) {
+        Some(Accessor::Field(b))
+            if group == "NCTOPLC"
+                && field == "STATEDWORD"
+                && il_frontend::ast::partial_access(&b.name).is_some() =>
+        {
+            Some(Accessor::Field(b.clone()))
+        }
+        _ => None,
+    };
     let (name, out): (String, Option<&str>) = match group.as_str() {
+        // tables by `AxisNo`: the calibration flag, the NC axis's Id
+        "STATUS" | "NCTOPLC"
+            if (group == "STATUS" && field == "HOMED")
+                || (group == "NCTOPLC" && field == "AXISID") =>
+        {
+            let table = if field == "HOMED" {
+                "__TC2_HOMED"
+            } else {
+                "__TC2_AXISID"
+            };
+            if rest.len() > 2 {
+                return None;
+            }
+            used.homed = true;
+            used.note(axis, dim.as_ref());
+            let at = v.span;
+            let axis_no = {
+                let mut r = indexed(axis.name.clone(), index, Some("AxisNo"), at);
+                r.base.span = axis.span;
+                r
+            };
+            *v = VarRef {
+                base: Ident::new(table, at),
+                accessors: vec![Accessor::Index(vec![Operand::Var(axis_no)])].into(),
+                span: at,
+            };
+            return None;
+        }
+        "STATUS" | "NCTOPLC" if COMPUTED.iter().any(|(c, _)| *c == field) => {
+            if !used.computed.contains(&axis.key()) {
+                used.computed.push(axis.key());
+            }
+            // the state word's prologue reads the calibration table
+            used.homed = true;
+            (hidden_name(axis, &field), None)
+        }
         "STATUS" => match field.as_str() {
             "MOVING" | "NOTMOVING" => (hidden_name(axis, &field), None),
+            "HASJOB" => (hidden_name(axis, "MOVING"), None),
             _ => match STATUS.iter().find(|(k, _)| *k == field) {
                 Some((_, o)) => (hidden_name(axis, "STATUS"), Some(o)),
                 None => {
@@ -530,6 +657,12 @@ fn member(
                 }
             },
         },
+        // the simulated drive follows its set point exactly: no following error
+        "NCTOPLC" if field == "POSDIFF" => return Some(LiteralKind::Real(0.0)),
+        "NCTOPLC" if field == "ACTTORQUE" || field == "SETTORQUE" => {
+            used.torque.get_or_insert(f.span);
+            return Some(LiteralKind::Real(0.0));
+        }
         "NCTOPLC" if field == "ERRORCODE" => {
             if !used.error_codes.contains(&axis.key()) {
                 used.error_codes.push(axis.key());
@@ -546,13 +679,123 @@ fn member(
         },
         _ => return None,
     };
-    if rest.len() > 2 {
+    if rest.len() > 2 + usize::from(bit.is_some()) {
         return None;
     }
     used.note(axis, dim.as_ref());
     let at = v.span;
     *v = indexed(name, index, out, at);
+    if let Some(b) = bit {
+        let mut acc = v.accessors.to_vec();
+        acc.push(b);
+        v.accessors = acc.into();
+    }
     None
+}
+
+/// The prologue of the [`COMPUTED`] members of one axis (of the element `index` of an array of
+/// axes), from the hidden MC_ReadStatus and MC_ReadActualVelocity and the calibration table:
+/// `Operational` (powered, no error), `ControlLoopClosed` (powered), `PositiveDirection` /
+/// `NegativeDirection` (the sign of the velocity), `CoupleState` (3 "slave" in synchronized
+/// motion, else 0 "single axis": ladderc's status does not tell a master), `StateDWord`
+/// (NCTOPLC_AXIS_REF_STATE's bits: 0 Operational, 1 Homed, 2 NotMoving, 3 InPositionArea,
+/// 4 InTargetPosition, 8 HasJob, 9 PositiveDirection, 10 NegativeDirection, 11 HomingBusy,
+/// 19 ContinuousMotion, 20 ControlLoopClosed, 31 Error; the others 0).
+fn computed(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
+    let at = axis.span;
+    let hidden = |name: &str, field: Option<&str>| {
+        indexed(hidden_name(axis, name), index.clone(), field, at)
+    };
+    let status = |f: &str| hidden("STATUS", Some(f));
+    let op = |op: Op, negate: bool, v: VarRef| {
+        instr(
+            InstrKind::Simple {
+                op,
+                negate,
+                operand: Some(Operand::Var(v)),
+            },
+            at,
+        )
+    };
+    let lit = |op: Op, kind: LiteralKind| {
+        instr(
+            InstrKind::Simple {
+                op,
+                negate: false,
+                operand: Some(Operand::literal(Literal {
+                    kind,
+                    type_prefix: None,
+                    span: at,
+                })),
+            },
+            at,
+        )
+    };
+    let word = hidden("STATEDWORD", None);
+    let bit = |n: u32| {
+        let mut w = word.clone();
+        let mut acc = w.accessors.to_vec();
+        acc.push(Accessor::Field(Ident::new(n.to_string(), at)));
+        w.accessors = acc.into();
+        op(Op::St, false, w)
+    };
+    let homed = VarRef {
+        base: Ident::new("__TC2_HOMED", at),
+        accessors: vec![Accessor::Index(vec![Operand::Var(indexed(
+            axis.name.clone(),
+            index.clone(),
+            Some("AxisNo"),
+            at,
+        ))])]
+        .into(),
+        span: at,
+    };
+    vec![
+        op(Op::Ld, true, status("Disabled")),
+        op(Op::And, true, status("Error")),
+        op(Op::St, false, hidden("OPERATIONAL", None)),
+        op(Op::Ld, true, status("Disabled")),
+        op(Op::St, false, hidden("CONTROLLOOPCLOSED", None)),
+        op(Op::Ld, false, hidden("VELO", Some("Velocity"))),
+        lit(Op::Gt, LiteralKind::Real(0.0)),
+        op(Op::St, false, hidden("POSITIVEDIRECTION", None)),
+        op(Op::Ld, false, hidden("VELO", Some("Velocity"))),
+        lit(Op::Lt, LiteralKind::Real(0.0)),
+        op(Op::St, false, hidden("NEGATIVEDIRECTION", None)),
+        op(Op::Ld, false, status("SynchronizedMotion")),
+        instr(
+            InstrKind::FunctionCall {
+                name: Ident::new("BOOL_TO_UDINT", at),
+                args: Box::new(CallArgs::None),
+            },
+            at,
+        ),
+        lit(Op::Mul, LiteralKind::Int(3)),
+        op(Op::St, false, hidden("COUPLESTATE", None)),
+        op(Op::Ld, false, hidden("OPERATIONAL", None)),
+        bit(0),
+        op(Op::Ld, false, homed),
+        bit(1),
+        op(Op::Ld, false, hidden("NOTMOVING", None)),
+        bit(2),
+        op(Op::Ld, false, status("Standstill")),
+        bit(3),
+        bit(4),
+        op(Op::Ld, false, hidden("MOVING", None)),
+        bit(8),
+        op(Op::Ld, false, hidden("POSITIVEDIRECTION", None)),
+        bit(9),
+        op(Op::Ld, false, hidden("NEGATIVEDIRECTION", None)),
+        bit(10),
+        op(Op::Ld, false, status("Homing")),
+        bit(11),
+        op(Op::Ld, false, status("ContinuousMotion")),
+        bit(19),
+        op(Op::Ld, false, hidden("CONTROLLOOPCLOSED", None)),
+        bit(20),
+        op(Op::Ld, false, status("Error")),
+        bit(31),
+    ]
 }
 
 fn e1042(member: &str, span: Span) -> Diagnostic {
@@ -563,8 +806,10 @@ fn e1042(member: &str, span: Span) -> Diagnostic {
     .at(span)
     .with_hint(
         "ladderc reads Status.Error, ErrorID, ErrorStop, Disabled, Stopping, StandStill, DiscreteMotion, \
-         ContinuousMotion, SynchronizedMotion, Homing, InTargetPosition, InPositionArea, Moving, \
-         NotMoving and NcToPlc.ActPos, SetPos, ActVelo, SetVelo, ErrorCode",
+         ContinuousMotion, SynchronizedMotion, Homing, HomingBusy, CoupledMode, InTargetPosition, \
+         InPositionArea, Moving, NotMoving, HasJob, Homed, Operational, ControlLoopClosed, \
+         PositiveDirection, NegativeDirection and NcToPlc.ActPos, SetPos, ActVelo, SetVelo, PosDiff, \
+         ActTorque, SetTorque, ErrorCode, CoupleState, AxisId, StateDWord",
     )
 }
 

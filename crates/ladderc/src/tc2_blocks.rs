@@ -1,4 +1,5 @@
-//! Beckhoff Tc2_MC2 blocks that ladderc builds from its PLCopen blocks: `MC_MoveModulo`, `MC_Jog`.
+//! Beckhoff Tc2_MC2 blocks that ladderc builds from its PLCopen blocks: `MC_MoveModulo`, `MC_Jog`,
+//! and Tc2_MC2's `MC_Home` with its `HomingMode`.
 //!
 //! Input: the user's parsed units. Output: when a variable of the program has a Tc2_MC2 block
 //! type that ladderc builds (and the program does not declare a POU of that name), one unit with
@@ -47,9 +48,26 @@
 //! position within the period), a tie going ahead: a step of between a half and one and a half
 //! `Position`, always in the jog's direction; a `Position` of 0 is ErrorID 24 (InvalidPosition).
 //! Any other mode is refused with ErrorID 32 (InvalidMode).
+//!
+//! MC_Home, per Infosys (Tc2_MC2 > Motion > MC_Home, MC_HomingMode): when the program passes a
+//! Tc2_MC2 pin (`HomingMode`, `bCalibrationCam`) or reads an axis's calibration (`Status.Homed`,
+//! `NcToPlc.StateDWord`, a `MC_HomingMode` value), every `MC_Home` instance is the Tc2_MC2 block
+//! (`__TC2_MC_HOME`, `tc2_blocks/MC_Home.st`), built on the PLCopen MC_Home and MC_SetPosition:
+//! `MC_DefaultHoming` homes on the spot (the simulated drive has no reference cam; PLCopen MC_Home
+//! in the motion library) to `Position`, or to the NC's calibration value 0 for
+//! `DEFAULT_HOME_POSITION` (1E+308, the input's default); `MC_AbsoluteHoming` sets the position
+//! to `Position` (on the spot, from standstill), `MC_RelativeHoming` shifts it by `Position`
+//! (MC_SetPosition, `Relative := TRUE`); both refuse `DEFAULT_HOME_POSITION` with ErrorID 24;
+//! `MC_ForceCalibration` marks the axis homed and `MC_ResetCalibration` not homed, without
+//! motion, Done at once; another value is ErrorID 32 (`ErrorID` is UDINT, as Tc2_MC2's). The axis is homed (`Status.Homed`, the
+//! table `__TC2_HOMED` by `AxisNo`) when a homing ends, not homed at the start of the run and
+//! from the start of a default homing on.
 
 use diagnostics::Diagnostics;
-use il_frontend::ast::{CompilationUnit, LibraryElement, TypeRef};
+use il_frontend::ast::{
+    Accessor, CallArgs, CompilationUnit, Ident, IlStmt, InstrKind, LibraryElement, Operand,
+    TypeRef, VarRef,
+};
 
 /// A type a block needs: (name, ST text).
 type Needs = Option<(&'static str, &'static str)>;
@@ -74,6 +92,30 @@ END_TYPE
 
 /// MC_Jog in ST (the module header says what it does).
 const JOG: &str = include_str!("tc2_blocks/MC_Jog.st");
+
+/// Infosys, Tc2_MC2 > Data types > MC_HomingMode.
+const HOMING_MODE: &str = "TYPE MC_HomingMode :
+(
+    MC_DefaultHoming,
+    MC_AbsoluteHoming,
+    MC_RelativeHoming,
+    MC_ForceCalibration,
+    MC_ResetCalibration
+);
+END_TYPE
+";
+
+/// Tc2_MC2's global constant: MC_Home's `Position` that means the configured calibration value.
+const DEFAULT_HOME_POSITION: &str = "VAR_GLOBAL CONSTANT
+    DEFAULT_HOME_POSITION : LREAL := 1.0E308;
+END_VAR
+";
+
+/// Tc2_MC2's MC_Home in ST (the module header says what it does).
+const HOME: &str = include_str!("tc2_blocks/MC_Home.st");
+
+/// The name the Tc2_MC2 MC_Home is given (the PLCopen MC_Home keeps its name).
+pub const TC2_HOME: &str = "__TC2_MC_HOME";
 
 /// MC_MoveModulo in ST (the module header says what it does).
 const MOVE_MODULO: &str = include_str!("tc2_blocks/MC_MoveModulo.st");
@@ -152,5 +194,135 @@ pub fn add(
         units.splice(0..0, one);
         added = true;
     }
-    added
+    added | add_home(units, map, diags)
+}
+
+/// Whether the program reads a Tc2_MC2 homing pin or an axis's calibration (module header).
+fn reads_calibration(units: &[CompilationUnit]) -> bool {
+    const NAMES: &[&str] = &[
+        "HOMINGMODE",
+        "BCALIBRATIONCAM",
+        "HOMED",
+        "STATEDWORD",
+        "MC_DEFAULTHOMING",
+        "MC_ABSOLUTEHOMING",
+        "MC_RELATIVEHOMING",
+        "MC_FORCECALIBRATION",
+        "MC_RESETCALIBRATION",
+    ];
+    fn var(v: &VarRef) -> bool {
+        NAMES.contains(&v.base.key().as_str())
+            || v.accessors.iter().any(|a| match a {
+                Accessor::Field(f) => NAMES.contains(&f.key().as_str()),
+                Accessor::Index(ops) => ops.iter().any(operand),
+                Accessor::Deref(_) => false,
+            })
+    }
+    fn operand(o: &Operand) -> bool {
+        matches!(o, Operand::Var(v) if var(v))
+    }
+    fn args(a: &CallArgs) -> bool {
+        match a {
+            CallArgs::Formal(list) => list
+                .iter()
+                .any(|a| NAMES.contains(&a.name.key().as_str()) || operand(&a.value)),
+            CallArgs::NonFormal(ops) => ops.iter().any(operand),
+            CallArgs::None => false,
+        }
+    }
+    fn body(b: &[IlStmt]) -> bool {
+        b.iter().any(|s| {
+            let IlStmt::Instr(i) = s else { return false };
+            match &i.kind {
+                InstrKind::Simple {
+                    operand: Some(o), ..
+                } => operand(o),
+                InstrKind::Deferred {
+                    operand: o,
+                    body: b,
+                    ..
+                } => o.as_ref().is_some_and(|o| operand(o)) || body(b),
+                InstrKind::Call {
+                    instance, args: a, ..
+                } => var(instance) || args(a),
+                InstrKind::FunctionCall { args: a, .. } => args(a),
+                _ => false,
+            }
+        })
+    }
+    units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .any(|item| match item {
+            LibraryElement::Pou(p) => body(&p.body),
+            LibraryElement::Action(a) => body(&a.body),
+            _ => false,
+        })
+}
+
+/// `MC_Home` (or `Tc2_MC2.MC_Home`) as a type, also as an array's element.
+fn home_type(t: &mut TypeRef) -> Option<&mut Ident> {
+    match t {
+        TypeRef::Named(n) if n.is("MC_Home") || n.key().ends_with(".MC_HOME") => Some(n),
+        TypeRef::Array { element, .. } => home_type(element),
+        _ => None,
+    }
+}
+
+/// Tc2_MC2's MC_Home (module header): the `MC_Home` instances retyped, the block, its
+/// enumeration and `DEFAULT_HOME_POSITION` added, when the program reads a Tc2_MC2 homing pin or an
+/// axis's calibration. True when the program reads one (the `__TC2_HOMED` table is then needed).
+fn add_home(
+    units: &mut Vec<CompilationUnit>,
+    map: &mut diagnostics::SourceMap,
+    diags: &mut Diagnostics,
+) -> bool {
+    if !reads_calibration(units) {
+        return false;
+    }
+    if declared(units, "MC_Home") {
+        return true;
+    }
+    let mut retyped = false;
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        let blocks: Vec<&mut il_frontend::ast::VarBlock> = match item {
+            LibraryElement::Pou(p) => p.var_blocks.iter_mut().collect(),
+            LibraryElement::GlobalVars(b) => vec![b],
+            _ => Vec::new(),
+        };
+        for v in blocks.into_iter().flat_map(|b| b.vars.iter_mut()) {
+            if let Some(n) = home_type(&mut v.ty) {
+                *n = Ident::new(TC2_HOME, n.span);
+                retyped = true;
+            }
+        }
+    }
+    let mut text = String::new();
+    if !declared(units, "MC_HomingMode") {
+        text.push_str(HOMING_MODE);
+    }
+    if retyped {
+        text.push_str(HOME);
+    }
+    let constant_declared = units.iter().flat_map(|u| u.items.iter()).any(|i| {
+        matches!(i, LibraryElement::GlobalVars(b)
+            if b.vars.iter().any(|v| v.name.is("DEFAULT_HOME_POSITION")))
+    });
+    if !constant_declared {
+        text.push_str(DEFAULT_HOME_POSITION);
+    }
+    if !text.is_empty() {
+        let file = map.add("<Tc2_MC2 MC_Home>", text.clone());
+        let (unit, pending, _) = il_frontend::st::file::parse_text(
+            file,
+            &text,
+            "MC_Home",
+            il_frontend::st::file::Lang::St,
+            diags,
+        );
+        let mut one = vec![unit];
+        il_frontend::st::file::compile_pending(&mut one, &pending, diags);
+        units.splice(0..0, one);
+    }
+    true
 }

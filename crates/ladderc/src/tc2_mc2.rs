@@ -80,6 +80,8 @@ pub fn read_spellings(
         names: Vec::new(),
         arrays: Vec::new(),
         lists: Vec::new(),
+        homed_read: Default::default(),
+        torque_noted: Default::default(),
     };
     for item in units.iter().flat_map(|u| u.items.iter()) {
         if let LibraryElement::GlobalVars(b) = item {
@@ -158,7 +160,7 @@ pub fn read_spellings(
             }
         }
     }
-    axes.tc2_tables |= tables.get();
+    axes.tc2_tables |= tables.get() || globals.homed_read.get();
 }
 
 /// What the walk over a POU's body knows.

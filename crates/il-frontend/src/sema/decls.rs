@@ -156,11 +156,39 @@ impl Analyzer<'_> {
         self.check_struct_cycles();
         // Globals outside configurations.
         let mut global_consts = Consts::new();
+        let mut deferred_inits: Vec<(usize, ast::Initializer)> = Vec::new();
         for unit in units {
             for item in &unit.items {
                 if let LibraryElement::GlobalVars(block) = item {
-                    let vars = self.declare_vars(std::slice::from_ref(block), &global_consts, None);
+                    // a global instance of the program's own function block initialized by its
+                    // variables (`fb : FB_Cell := (Axis := (AxisNo := 1))`): the block's
+                    // variables are declared below (after the globals, whose constants they may
+                    // use), so its initializer is read then
+                    let held: Vec<(Span, ast::Initializer)> = block
+                        .vars
+                        .iter()
+                        .filter(|d| matches!(d.init, Some(ast::Initializer::Struct(..))))
+                        .filter(|d| {
+                            matches!(&d.ty, TypeRef::Named(n) if self.pou_names.contains_key(&n.key()))
+                        })
+                        .filter_map(|d| d.init.clone().map(|i| (d.name.span, i)))
+                        .collect();
+                    let vars = if held.is_empty() {
+                        self.declare_vars(std::slice::from_ref(block), &global_consts, None)
+                    } else {
+                        let mut b = block.clone();
+                        for d in &mut b.vars {
+                            if held.iter().any(|(at, _)| *at == d.name.span) {
+                                d.init = None;
+                            }
+                        }
+                        self.declare_vars(std::slice::from_ref(&b), &global_consts, None)
+                    };
                     for v in vars {
+                        let mut held_init = held
+                            .iter()
+                            .find(|(at, _)| *at == v.span)
+                            .map(|(_, i)| i.clone());
                         let key = v.name.to_ascii_uppercase();
                         let listed_first = self.free_globals.get(&key).and_then(|&i| {
                             self.model.list_of_global.get(&GlobalRef::Free(i)).copied()
@@ -177,6 +205,9 @@ impl Analyzer<'_> {
                             if let Some(list) = &block.name {
                                 let at = GlobalRef::Free(self.model.globals.len());
                                 self.add_list_member(list, at, &v.name);
+                            }
+                            if let Some(i) = held_init.take() {
+                                deferred_inits.push((self.model.globals.len(), i));
                             }
                             self.model.globals.push(v);
                             continue;
@@ -203,6 +234,9 @@ impl Analyzer<'_> {
                             self.add_list_member(list, at, &v.name);
                         }
                         self.free_globals.insert(key, self.model.globals.len());
+                        if let Some(i) = held_init.take() {
+                            deferred_inits.push((self.model.globals.len(), i));
+                        }
                         self.model.globals.push(v);
                     }
                 }
@@ -252,6 +286,12 @@ impl Analyzer<'_> {
         // POU variables.
         for (id, p) in &pous {
             self.declare_pou(*id, p, &global_consts);
+        }
+        // the initializers of global instances of the program's function blocks (see above)
+        for (i, init) in deferred_inits {
+            let ty = self.model.globals[i].ty.clone();
+            let value = self.const_init(&init, &ty, &global_consts);
+            self.model.globals[i].init = value;
         }
         // Tasks and program instances.
         for (ci, c) in configs.iter().enumerate() {
