@@ -151,6 +151,9 @@ pub struct PendingBody {
     /// The methods that `{attribute 'call_after_init'}` marks (on the method and on the block):
     /// run after each instance's FB_init ([`super::fb_init`]).
     pub after_init: Vec<crate::ast::Ident>,
+    /// Not a POU's body: the methods (in `methods`) of a file that holds them without their block,
+    /// `Block.Method.st` ([`super::lone_members`]), until they are attached to it.
+    pub lone: Option<Box<super::lone_members::LoneMembers>>,
 }
 
 impl PendingBody {
@@ -184,10 +187,11 @@ impl PendingBody {
     /// The file of method `k` (an inherited method is in its base's file).
     pub fn method_file(&self, k: usize) -> FileId {
         match self.oop.as_deref() {
-            Some(super::inherit::Oop::Block(b)) => {
+            Some(super::inherit::Oop::Block(b)) if !b.method_files.is_empty() => {
                 b.method_files.get(k).copied().unwrap_or(self.file)
             }
-            _ => self.file,
+            // (a method exported to a file of its own is in that file: `lone_members`)
+            _ => self.methods.get(k).map_or(self.file, |m| m.name.span.file),
         }
     }
 }
@@ -507,7 +511,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
 
 /// Reads a method's declarations (its variable blocks, and its result as a variable named like the
 /// method) with the IL parser, in place: diagnostics point into the file.
-fn pending_method(
+pub(super) fn pending_method(
     file: FileId,
     src: &str,
     m: &MethodText,
@@ -665,7 +669,7 @@ pub(super) fn member_name_at(src: &str, toks: &[Token], k: usize) -> usize {
 
 /// The `METHOD ... END_METHOD` blocks among a function block's body tokens. A block that does not
 /// end with `END_METHOD` is left out (the body's parse reports it).
-fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
+pub(super) fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
     let n = toks.len();
     let same_line = |a: usize, b: usize| !src.get(a..b).unwrap_or("\n").contains(['\n', '\r']);
     let mut out = Vec::new();
@@ -1061,15 +1065,33 @@ pub fn parse_text(
         let name_end = src[first.start..]
             .find(['\n', ':', '('])
             .map_or(first.end, |k| first.start + k);
-        diags.push(
-            Diagnostic::error(
-                code::E1063,
-                format!("a {} outside any FUNCTION_BLOCK", kind),
-            )
-            .at(trim_span(src, Span::new(file, first.start, name_end)))
-            .with_primary_label(format!("this {} has no block", kind.to_ascii_lowercase()))
-            .with_hint("ladderc reads a method or property inside its block: move this text before the block's END_FUNCTION_BLOCK (CODESYS export scripts write each method to a file of its own, `Block.Method.st`)"),
-        );
+        let unowned = Diagnostic::error(
+            code::E1063,
+            format!("a {} outside any FUNCTION_BLOCK", kind),
+        )
+        .at(trim_span(src, Span::new(file, first.start, name_end)))
+        .with_primary_label(format!("this {} has no block", kind.to_ascii_lowercase()))
+        .with_hint("give the block's file on the same command line, named so that this file's name is `Block.Member.st`, or move this text before the block's END_FUNCTION_BLOCK");
+        // joined to its block once every file is read (`lone_members`)
+        match super::lone_members::read(file, src, first.start, &mut references, diags) {
+            Some(methods) => pending.push(PendingBody {
+                file,
+                name_start: usize::MAX,
+                base: 0,
+                text: String::new(),
+                actions: Vec::new(),
+                sfc: false,
+                methods,
+                oop: None,
+                fb_init_args: Vec::new(),
+                after_init: Vec::new(),
+                lone: Some(Box::new(super::lone_members::LoneMembers {
+                    unowned,
+                    owner: None,
+                })),
+            }),
+            None => diags.push(unowned),
+        }
         blank(&mut text, first.start..last.end);
     } else if let (Some(first), Some(last)) = (stray.first(), stray.last()) {
         let lines = src[first.start..last.end].lines().count();
@@ -1208,6 +1230,7 @@ pub fn parse_text(
                 ))),
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
+                lone: None,
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1257,6 +1280,7 @@ pub fn parse_text(
                 oop: None,
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
+                lone: None,
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1414,6 +1438,7 @@ pub fn parse_text(
                     oop: oop.map(Box::new),
                     fb_init_args: Vec::new(),
                     after_init: super::fb_init::after_init_methods(file, src, p, diags),
+                    lone: None,
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -1463,6 +1488,7 @@ pub fn parse_text(
             oop: None,
             fb_init_args: decl_args,
             after_init: Vec::new(),
+            lone: None,
         });
     }
     (unit, pending, var_config.1)
@@ -1572,6 +1598,15 @@ pub fn compile_pending(
     if pending.is_empty() {
         return;
     }
+    // methods exported one file each joined to their blocks
+    let joined;
+    let pending = match super::lone_members::attach(units, pending, diags) {
+        Some(v) => {
+            joined = v;
+            &joined[..]
+        }
+        None => pending,
+    };
     // the blocks whose text declares an FB_init (before a block that is not compiled loses it),
     // and the blocks that are not compiled because their base is no block of the project (E0330:
     // a library's base, `EXTENDS TcBaseModuleRegistered`, may declare the FB_init their instances'

@@ -25,6 +25,7 @@ pub mod inherit;
 pub mod interface_vars;
 pub mod lexer;
 mod list_bounds;
+pub mod lone_members;
 pub mod lower;
 mod method_inits;
 pub mod parser;

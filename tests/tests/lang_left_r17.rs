@@ -1,0 +1,188 @@
+//! Issue #13, round 17 (helper `stlang`): the ST / CODESYS / TwinCAT language items the last closing
+//! note left, each through `ladderc run` on fixtures written here
+//! (`tests/tests/fixtures/lang_left_r17/`, see its README for the public projects they reproduce):
+//! - **Methods exported one file each** (a CODESYS 3 export script: `Block.st` holds the
+//!   FUNCTION_BLOCK, `Block.Method.st` each method, `END_METHOD` and `END_FUNCTION_BLOCK` often
+//!   missing; kevin00156/codesys_template_public, greenforge-labs/codescribe): a method file is
+//!   joined to the block its name names when that block is among the given files, and runs as if its
+//!   text stood inside the block; a property file (`PROPERTY P : T GET ... END_GET END_PROPERTY`)
+//!   too. Before: one E1063 per file ("a METHOD outside any FUNCTION_BLOCK"). E1063 stays when no
+//!   block of that name is given; a method written both in its block and in a file of its own is
+//!   one E1066.
+
+mod common;
+use common::{column, ladderc, run_traced_files};
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/lang_left_r17")
+        .join(name)
+}
+
+/// `ladderc run FILES --stimulus ...` with the trace of `watch`; asserts exit 0 and no sanitizer
+/// report.
+fn run_stimulated_files(files: &[PathBuf], cycles: u32, stimulus: &str, watch: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .args(files)
+        .args(["--cycles", &cycles.to_string(), "--sanitize", "--stimulus"])
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", watch])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{files:?}: {stderr}");
+    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// `ladderc check FILES` of texts written to a temporary folder: exit code and the error lines up
+/// to their hints, with the folder left out.
+fn check_files(files: &[(&str, &str)]) -> (Option<i32>, Vec<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    let paths: Vec<PathBuf> = files
+        .iter()
+        .map(|(name, text)| {
+            let p = dir.path().join(name);
+            std::fs::write(&p, text).unwrap();
+            p
+        })
+        .collect();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .args(&paths)
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        common::diagnostic_heads(&out.stderr, dir.path(), false),
+    )
+}
+
+// ------------------------------------------------------------------ 1. methods one file each
+
+fn sequencer_files() -> Vec<PathBuf> {
+    [
+        "Sequencer.st",
+        "Sequencer.Advance.st",
+        "Sequencer.Raise.st",
+        "Sequencer.Reset.st",
+        "Sequencer.Busy.st",
+        "Valve.st",
+        "Valve.Open.st",
+        "PLC_PRG.st",
+    ]
+    .iter()
+    .map(|f| fixture(&format!("methods/{f}")))
+    .collect()
+}
+
+/// methods/: `Sequencer.st` calls `Advance(iBy := 1)` while xExecute; at step 3 it calls
+/// `Raise(iErrorID := 42, iNextStep := 1)`, which sets the error, remembers the step to go back to
+/// and parks the sequence at 999; `Reset()` (cycle 4, with xExecute FALSE) goes back to step 1. The
+/// property `Busy` (its own file) reads step > 0 and no error. `Valve` has no body of its own (all
+/// its code is in `Valve.Open.st`): each scan opens it once more.
+#[test]
+fn methods_exported_one_file_each_run_in_their_block() {
+    let trace = run_stimulated_files(
+        &sequencer_files(),
+        7,
+        "4,PLC_PRG.xClear,1\n4,PLC_PRG.xRun,0\n5,PLC_PRG.xClear,0\n",
+        "PLC_PRG.seq.iStep,PLC_PRG.seq.xError,PLC_PRG.seq.iErrorID,PLC_PRG.xBusy,PLC_PRG.iOpened",
+    );
+    assert_eq!(
+        column(&trace, "PLC_PRG.seq.iStep"),
+        [1., 2., 999., 999., 1., 1., 1.]
+    );
+    assert_eq!(
+        column(&trace, "PLC_PRG.seq.xError"),
+        [0., 0., 1., 1., 0., 0., 0.]
+    );
+    assert_eq!(
+        column(&trace, "PLC_PRG.seq.iErrorID"),
+        [0., 0., 42., 42., 0., 0., 0.]
+    );
+    assert_eq!(
+        column(&trace, "PLC_PRG.xBusy"),
+        [1., 1., 0., 0., 1., 1., 1.]
+    );
+    assert_eq!(
+        column(&trace, "PLC_PRG.iOpened"),
+        [1., 2., 3., 4., 5., 6., 7.]
+    );
+}
+
+/// A block that EXTENDS one whose methods are files of their own inherits them (the base's method
+/// runs on the derived instance), and an error inside a method file is located in that file.
+#[test]
+fn an_exported_method_is_inherited_and_its_errors_point_into_its_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    let files = [
+        write("Tank.st", "FUNCTION_BLOCK Tank\nVAR\n    rLevel : REAL;\nEND_VAR\n"),
+        write(
+            "Tank.Fill.st",
+            "METHOD Fill\nVAR_INPUT\n    rBy : REAL;\nEND_VAR\nrLevel := rLevel + rBy;\n",
+        ),
+        write(
+            "BigTank.st",
+            "FUNCTION_BLOCK BigTank EXTENDS Tank\nVAR_OUTPUT seen : REAL; END_VAR\n\
+             Fill(rBy := 1.5);\nseen := rLevel;\nEND_FUNCTION_BLOCK\n",
+        ),
+        write(
+            "main.st",
+            "PROGRAM main\nVAR b : BigTank; END_VAR\nb();\nEND_PROGRAM\n",
+        ),
+    ];
+    let refs: Vec<&Path> = files.iter().map(|p| p.as_path()).collect();
+    let (trace, _) = run_traced_files(&refs, 3, "main.b.seen");
+    assert_eq!(column(&trace, "main.b.seen"), [1.5, 3., 4.5]);
+    let (code, errors) = check_files(&[
+        (
+            "Tank.st",
+            "FUNCTION_BLOCK Tank\nVAR\n    rLevel : REAL;\nEND_VAR\nFill();\n",
+        ),
+        ("Tank.Fill.st", "METHOD Fill\nrLevel := rLevel + 1.0;\nundeclared := 1;\n"),
+    ]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        errors,
+        ["Tank.Fill.st:3:1: error[E1001]: undeclared name `undeclared`"]
+    );
+}
+
+/// Without its block among the given files (given alone, or its name naming no block), a method
+/// file stays one E1063 at its header; a method both inside its block and in a file of its own is
+/// one E1066 at the file's copy, which is not compiled.
+#[test]
+fn a_method_file_without_its_block_or_written_twice_is_one_located_error() {
+    let (code, errors) = check_files(&[("Motor.Start.st", "METHOD Start : BOOL\nStart := TRUE;\n")]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        errors,
+        ["Motor.Start.st:1:1: error[E1063]: a METHOD outside any FUNCTION_BLOCK"]
+    );
+    let block = "FUNCTION_BLOCK Motor\nVAR on : BOOL; END_VAR\nMETHOD Start : BOOL\non := TRUE;\n\
+                 END_METHOD\nEND_FUNCTION_BLOCK\n";
+    let (code, errors) = check_files(&[
+        ("Motor.st", block),
+        ("Pump.Start.st", "METHOD Start : BOOL\nStart := TRUE;\n"),
+        ("Motor.Start.st", "METHOD Start : BOOL\non := FALSE;\n"),
+    ]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        errors,
+        [
+            "Pump.Start.st:1:1: error[E1063]: a METHOD outside any FUNCTION_BLOCK",
+            "Motor.Start.st:1:8: error[E1066]: `Start` of `Motor` is written twice: in the block and in a file of its own",
+        ]
+    );
+}
