@@ -9,6 +9,11 @@
 //!   too. Before: one E1063 per file ("a METHOD outside any FUNCTION_BLOCK"). E1063 stays when no
 //!   block of that name is given; a method written both in its block and in a file of its own is
 //!   one E1066.
+//! - **VAR_STAT** (CODESYS "VAR_STAT"; TwinCAT accepts it too): the static variables of a
+//!   FUNCTION_BLOCK, FUNCTION or PROGRAM, one copy shared by every instance and every call, kept
+//!   between calls and initialised once; the block's methods see them. They are global variables
+//!   `__STAT_<POU>_<NAME>` (the name `--watch` takes). Before: E0011 and E0007 at each declaration,
+//!   E0015 at the next block. In a METHOD: one E1067 (read as VAR).
 
 mod common;
 use common::{column, ladderc, run_traced_files};
@@ -127,7 +132,10 @@ fn an_exported_method_is_inherited_and_its_errors_point_into_its_file() {
         p
     };
     let files = [
-        write("Tank.st", "FUNCTION_BLOCK Tank\nVAR\n    rLevel : REAL;\nEND_VAR\n"),
+        write(
+            "Tank.st",
+            "FUNCTION_BLOCK Tank\nVAR\n    rLevel : REAL;\nEND_VAR\n",
+        ),
         write(
             "Tank.Fill.st",
             "METHOD Fill\nVAR_INPUT\n    rBy : REAL;\nEND_VAR\nrLevel := rLevel + rBy;\n",
@@ -150,7 +158,10 @@ fn an_exported_method_is_inherited_and_its_errors_point_into_its_file() {
             "Tank.st",
             "FUNCTION_BLOCK Tank\nVAR\n    rLevel : REAL;\nEND_VAR\nFill();\n",
         ),
-        ("Tank.Fill.st", "METHOD Fill\nrLevel := rLevel + 1.0;\nundeclared := 1;\n"),
+        (
+            "Tank.Fill.st",
+            "METHOD Fill\nrLevel := rLevel + 1.0;\nundeclared := 1;\n",
+        ),
     ]);
     assert_eq!(code, Some(1));
     assert_eq!(
@@ -164,7 +175,8 @@ fn an_exported_method_is_inherited_and_its_errors_point_into_its_file() {
 /// one E1066 at the file's copy, which is not compiled.
 #[test]
 fn a_method_file_without_its_block_or_written_twice_is_one_located_error() {
-    let (code, errors) = check_files(&[("Motor.Start.st", "METHOD Start : BOOL\nStart := TRUE;\n")]);
+    let (code, errors) =
+        check_files(&[("Motor.Start.st", "METHOD Start : BOOL\nStart := TRUE;\n")]);
     assert_eq!(code, Some(1));
     assert_eq!(
         errors,
@@ -184,5 +196,53 @@ fn a_method_file_without_its_block_or_written_twice_is_one_located_error() {
             "Pump.Start.st:1:1: error[E1063]: a METHOD outside any FUNCTION_BLOCK",
             "Motor.Start.st:1:8: error[E1066]: `Start` of `Motor` is written twice: in the block and in a file of its own",
         ]
+    );
+}
+
+// ------------------------------------------------------------------ 2. VAR_STAT
+
+/// var_stat.st: two FB_Station instances draw tickets from one counter (`nNextTicket`, a static of
+/// the block, initialised once to 100, incremented by the block's method `Take`): A gets 101, B
+/// 102, then 103 and 104 ...; the first-scan flag kept in VAR_STAT is TRUE for the very first
+/// call of any instance only (stA in cycle 0). `aLast` is shared too. F_Total's static `dTotal`
+/// sums over every call while its VAR `dCall` starts again at each call: 2, then 2 + 3 = 5 in
+/// the first scan, 10 and 15 after.
+#[test]
+fn var_stat_is_one_copy_for_every_instance_and_call() {
+    let (trace, _) = common::run_traced(
+        &fixture("var_stat.st"),
+        3,
+        "Main.stA.nTicket,Main.stB.nTicket,Main.stA.xFirst,Main.stB.xFirst,Main.dSum,\
+         __STAT_FB_STATION_ALAST[0],__STAT_FB_STATION_ALAST[1],__STAT_F_TOTAL_DTOTAL",
+    );
+    assert_eq!(column(&trace, "Main.stA.nTicket"), [101., 103., 105.]);
+    assert_eq!(column(&trace, "Main.stB.nTicket"), [102., 104., 106.]);
+    assert_eq!(column(&trace, "Main.stA.xFirst"), [1., 0., 0.]);
+    assert_eq!(column(&trace, "Main.stB.xFirst"), [0., 0., 0.]);
+    assert_eq!(
+        column(&trace, "__STAT_FB_STATION_ALAST[0]"),
+        [101., 103., 105.]
+    );
+    assert_eq!(
+        column(&trace, "__STAT_FB_STATION_ALAST[1]"),
+        [102., 104., 106.]
+    );
+    assert_eq!(column(&trace, "Main.dSum"), [5., 10., 15.]);
+    assert_eq!(column(&trace, "__STAT_F_TOTAL_DTOTAL"), [5., 10., 15.]);
+}
+
+/// A VAR_STAT block of a METHOD (CODESYS shares it among the block's instances) is one E1067 at
+/// its keyword; nothing else is reported (the block is read as VAR).
+#[test]
+fn var_stat_in_a_method_is_one_e1067() {
+    let (code, errors) = check_files(&[(
+        "counter.st",
+        "FUNCTION_BLOCK Counter\nMETHOD Next : INT\nVAR_STAT\n    nCalls : INT;\nEND_VAR\n\
+         nCalls := nCalls + 1;\nNext := nCalls;\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        errors,
+        ["counter.st:3:1: error[E1067]: VAR_STAT in a METHOD or PROPERTY accessor is not supported"]
     );
 }

@@ -898,7 +898,8 @@ pub fn parse_text(
         None => src,
     };
     let mut references = RefTypes::default();
-    let (uninstanced, unextended): (String, String);
+    let (uninstanced, unextended, unstatic): (String, String, String);
+    let mut stat_at = Vec::new();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
     let lists_blanked = blanked_lists.is_some();
@@ -963,6 +964,16 @@ pub fn parse_text(
                 uninstanced = t;
                 (toks, problems) = lex(&uninstanced);
                 uninstanced.as_str()
+            }
+            None => src,
+        };
+        // `VAR_STAT`: read as VAR, the blocks named after the parse, hoisted once lowered (`var_stat`)
+        let src = match super::var_stat::mark(file, src, &toks, diags) {
+            Some((t, at)) => {
+                unstatic = t;
+                stat_at = at;
+                (toks, problems) = lex(&unstatic);
+                unstatic.as_str()
             }
             None => src,
         };
@@ -1468,6 +1479,7 @@ pub fn parse_text(
     }
     let mut local = Diagnostics::new();
     let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    super::var_stat::name_blocks(&mut unit, file, &stat_at);
     references.apply(&mut unit, &mut local);
     mark_to_string(&mut unit, &to_string_at);
     match unclosed {
@@ -1596,6 +1608,7 @@ pub fn compile_pending(
     // structures that EXTEND others get their bases' fields (from any unit)
     super::struct_extends::flatten(units);
     if pending.is_empty() {
+        super::var_stat::hoist(units);
         return;
     }
     // methods exported one file each joined to their blocks
@@ -1775,6 +1788,8 @@ pub fn compile_pending(
     }
     // FB_init: each instance's, before the first cycle, with its declaration's arguments
     super::fb_init::add_init_calls(units, pending, &declares_fb_init, &mut decls, diags);
+    // VAR_STAT: one copy for every instance and call, now that the bodies are lowered
+    super::var_stat::hoist(units);
     let seen: std::collections::HashSet<_> = diags
         .iter()
         .map(|d| (d.code, d.message.clone(), d.span.map(|s| (s.start, s.end))))

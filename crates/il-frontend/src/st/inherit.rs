@@ -661,7 +661,10 @@ fn flatten_one(
                 if !versions.contains_key(&key) {
                     order.push(key.clone());
                 }
-                versions.entry(key).or_default().push((j, m, m.name.span.file));
+                versions
+                    .entry(key)
+                    .or_default()
+                    .push((j, m, m.name.span.file));
             }
         }
     }

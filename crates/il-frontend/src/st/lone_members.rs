@@ -43,7 +43,9 @@ impl LoneMembers {
             .rsplit_once('.')
             .map(|(head, _)| head.rsplit('.').next().unwrap_or(head).trim().to_string())
             .filter(|o| {
-                o.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+                o.chars()
+                    .next()
+                    .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
                     && o.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
             });
     }
@@ -63,9 +65,10 @@ pub(super) fn read(
     let head = src.get(start..)?;
     let (probe, _) = super::lexer::lex(head);
     let has = |w: &str| {
-        probe
-            .iter()
-            .any(|t| head.get(t.range.clone()).is_some_and(|x| x.eq_ignore_ascii_case(w)))
+        probe.iter().any(|t| {
+            head.get(t.range.clone())
+                .is_some_and(|x| x.eq_ignore_ascii_case(w))
+        })
     };
     let mut text = src.to_string();
     if has("METHOD") && !has("END_METHOD") {

@@ -39,6 +39,7 @@ pub mod types;
 mod using;
 mod var_config;
 mod var_inst;
+pub mod var_stat;
 
 pub use conditional::ProjectDefines;
 pub use lower::PouLowering;
