@@ -14,6 +14,12 @@
 //!   between calls and initialised once; the block's methods see them. They are global variables
 //!   `__STAT_<POU>_<NAME>` (the name `--watch` takes). Before: E0011 and E0007 at each declaration,
 //!   E0015 at the next block. In a METHOD: one E1067 (read as VAR).
+//! - **VAR_INST initial values computed from the instance** (TwinCAT): `nSeed : INT :=
+//!   THIS^.nBase * 10;`, `pSelf : POINTER TO FB_X := THIS;`, and an instance with one input given
+//!   `(ipList := THIS^.fbList)` (fisothemes/TwinCat-Dynamic-Collections' `_Values` accessor): computed
+//!   once per instance when it is initialised, before its FB_init, as TwinCAT initialises
+//!   declarations. `THIS` alone is the instance's address (`ADR(THIS^)`) anywhere in a block's code.
+//!   Before: E0001 at the `^`, E0305 "a reference cannot have the initial value `THIS`".
 
 mod common;
 use common::{column, ladderc, run_traced_files};
@@ -245,4 +251,47 @@ fn var_stat_in_a_method_is_one_e1067() {
         errors,
         ["counter.st:3:1: error[E1067]: VAR_STAT in a METHOD or PROPERTY accessor is not supported"]
     );
+}
+
+// ------------------------------------------------------------------ 3. VAR_INST := THIS ...
+
+/// var_inst_this.st: `Next`'s `nSeed := THIS^.nBase * 10` is computed when each instance is
+/// initialised (a: nBase 7 -> 70; b, declared `(nBase := 2)` -> 20), before the body first adds 1
+/// to nBase, then counts up by one per call; `pSelf := THIS` points at the calling instance, whose
+/// nVisits it counts. `_Values`' VAR_INST view gets `ipList := THIS^.fbList` once and reads the
+/// list's count through the interface (1, 2, 3 as fbList counts its calls).
+#[test]
+fn var_inst_initial_values_from_this_are_computed_once_per_instance() {
+    let (trace, _) = common::run_traced(
+        &fixture("var_inst_this.st"),
+        3,
+        "Main.ra,Main.rb,Main.ca,Main.a.nVisits,Main.b.nVisits",
+    );
+    assert_eq!(column(&trace, "Main.ra"), [71., 72., 73.]);
+    assert_eq!(column(&trace, "Main.rb"), [21., 22., 23.]);
+    assert_eq!(column(&trace, "Main.ca"), [1., 2., 3.]);
+    assert_eq!(column(&trace, "Main.a.nVisits"), [1., 2., 3.]);
+    assert_eq!(column(&trace, "Main.b.nVisits"), [1., 2., 3.]);
+}
+
+/// The VAR_INST initial value is computed before the block's FB_init (TwinCAT initialises the
+/// declarations first): FB_init sets nBase to 100 after `n := THIS^.nBase` took 7; an instance in
+/// an array is initialised the same way.
+#[test]
+fn var_inst_initial_values_are_computed_before_fb_init() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("fbi.st");
+    std::fs::write(
+        &f,
+        "FUNCTION_BLOCK FB_A\nVAR nBase : INT := 7; END_VAR\nMETHOD FB_init : BOOL\n\
+         VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR\nnBase := 100;\nEND_METHOD\n\
+         METHOD Seed : INT\nVAR_INST n : INT := THIS^.nBase; END_VAR\nSeed := n;\nEND_METHOD\n\
+         END_FUNCTION_BLOCK\nPROGRAM main\nVAR a : FB_A; arr : ARRAY[0..1] OF FB_A; r, r1 : INT; END_VAR\n\
+         r := a.Seed();\nr1 := arr[1].Seed();\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = common::run_traced(&f, 1, "main.r,main.r1,main.a.nBase");
+    assert_eq!(column(&trace, "main.r"), [7.]);
+    assert_eq!(column(&trace, "main.r1"), [7.]);
+    assert_eq!(column(&trace, "main.a.nBase"), [100.]);
 }

@@ -118,6 +118,11 @@ pub struct PendingMethod {
     /// The variables of its VAR_INST blocks (upper-case; TwinCAT): kept in the instance from call
     /// to call, where its other variables start again at each call.
     pub inst: Vec<String>,
+    /// The byte ranges (in the file) of the assignments, among the statements, that give VAR_INST
+    /// variables an initial value computed at run time (`pSelf : POINTER TO FB_X := THIS;`,
+    /// `n : INT := THIS^.nBase;`, TwinCAT): run once per instance, at the method's first call
+    /// ([`super::method_inits`]).
+    pub once: Vec<Range<usize>>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -519,13 +524,19 @@ pub(super) fn pending_method(
 ) -> PendingMethod {
     let vars =
         |text: &str, base: usize, diags: &mut Diagnostics| read_var_blocks(file, text, base, diags);
-    let decls = src.get(m.decls.clone()).unwrap_or("");
     // `n : UDINT := SIZEOF(T) * k;`: read without its initial value, assigned when the method starts
-    let inits = super::method_inits::split(decls);
-    let (blocks, inst) = read_member_var_blocks(
+    let super::method_inits::MemberText {
+        blocks,
+        inst,
+        text,
+        base,
+        once,
+    } = super::method_inits::member_text(
         file,
-        inits.as_ref().map_or(decls, |(read, _)| read.as_str()),
-        m.decls.start,
+        src,
+        m.decls.clone(),
+        m.stmts.clone(),
+        Span::new(file, m.name_range.start, m.name_range.end),
         diags,
     );
     // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
@@ -539,18 +550,6 @@ pub(super) fn pending_method(
             .flat_map(|b| b.vars)
             .next()
     });
-    let stmts = src.get(m.stmts.clone()).unwrap_or("");
-    let (text, base) = match inits {
-        // the assignments where they are written, then the statements (positions kept)
-        Some((_, mut t)) if m.decls.end <= m.stmts.start => {
-            t.push_str(&super::method_inits::blank(
-                src.get(m.decls.end..m.stmts.start).unwrap_or(""),
-            ));
-            t.push_str(stmts);
-            (t, m.decls.start)
-        }
-        _ => (stmts.to_string(), m.stmts.start),
-    };
     PendingMethod {
         name: crate::ast::Ident::new(
             &m.name,
@@ -561,6 +560,7 @@ pub(super) fn pending_method(
         text,
         base,
         inst,
+        once,
     }
 }
 
@@ -1769,6 +1769,10 @@ pub fn compile_pending(
                 standalone.extend(actions);
                 let mut methods = Vec::new();
                 for (k, m) in pb.methods.iter().enumerate() {
+                    // VAR_INST initial values computed from the instance: when it is initialised
+                    if let Some(a) = lower_instance_init(pb.method_file(k), &decls, p, m) {
+                        standalone.push(a);
+                    }
                     if let Some(mut a) = lower_method(pb.method_file(k), &decls, p, m, diags) {
                         if !init.is_empty() {
                             let tag = format!("__ITF{k}_");
@@ -1958,6 +1962,59 @@ pub fn lower_method(
     m: &PendingMethod,
     diags: &mut Diagnostics,
 ) -> Option<crate::ast::Action> {
+    lower_method_as(file, decls, p, m, None, diags)
+}
+
+/// The hidden method that computes the VAR_INST initial values of method `m` (its
+/// [`PendingMethod::once`] assignments, guarded by their flag) when an instance is initialised,
+/// before its FB_init ([`super::fb_init`]), named [`super::method_inits::INIT_PREFIX`] + the
+/// method's name. `None` when `m` has none.
+pub fn lower_instance_init(
+    file: FileId,
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    m: &PendingMethod,
+) -> Option<crate::ast::Action> {
+    if m.once.is_empty() {
+        return None;
+    }
+    let mut only = m.clone();
+    // the assignments alone, where they are written (their diagnostics come with the method's)
+    only.text = super::method_inits::blank(&m.text);
+    for r in &m.once {
+        let (Some(a), Some(b)) = (r.start.checked_sub(m.base), r.end.checked_sub(m.base)) else {
+            continue;
+        };
+        if let Some(t) = m.text.get(a..b) {
+            only.text.replace_range(a..b, t);
+        }
+    }
+    let name = crate::ast::Ident::new(
+        format!(
+            "{}{}",
+            super::method_inits::INIT_PREFIX,
+            m.name.name.to_ascii_uppercase()
+        ),
+        m.name.span,
+    );
+    let mut quiet = Diagnostics::new();
+    let a = lower_method_as(file, decls, p, &only, Some(&name), &mut quiet);
+    if quiet.has_errors() {
+        return None;
+    }
+    a
+}
+
+/// [`lower_method`], the action named `action` (default: the method's name; the method's variables
+/// keep the method's hidden names either way).
+fn lower_method_as(
+    file: FileId,
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    m: &PendingMethod,
+    action: Option<&crate::ast::Ident>,
+    diags: &mut Diagnostics,
+) -> Option<crate::ast::Action> {
     use crate::actions::{instantiate, method_result, method_var};
     use crate::ast::{VarBlock, VarKind};
     let mut own: Vec<VarBlock> = m.blocks.clone();
@@ -1988,7 +2045,8 @@ pub fn lower_method(
     // block's variable, read in the text as a hidden name of the same length that the view declares
     // and the renaming below turns back into `x`
     let text = this_shadowed(&m.text, p, &rename, &mut view, &mut rename_back);
-    let stmts = super::parse_statements(file, &text, m.base, diags);
+    let mut stmts = super::parse_statements(file, &text, m.base, diags);
+    super::method_inits::run_once(&mut stmts, &m.once, m.name.span);
     let mut low = super::PouLowering::new(decls, &view);
     let mut body = low.statements(&stmts, diags);
     if let Some(t) = low.finish(m.name.span) {
@@ -2051,7 +2109,7 @@ pub fn lower_method(
     }
     let body = instantiate(
         &body,
-        &format!("{}_L", method_result(&m.name.name)),
+        &format!("{}_L", method_result(&action.unwrap_or(&m.name).name)),
         m.name.span,
     );
     // (a non-formal call binds the inputs and in-outs in declaration order, CODESYS)
@@ -2063,10 +2121,10 @@ pub fn lower_method(
         .collect();
     Some(crate::ast::Action {
         pou: p.name.clone(),
-        name: m.name.clone(),
+        name: action.unwrap_or(&m.name).clone(),
         body,
         temps: None,
-        method_inputs: Some(inputs),
+        method_inputs: Some(if action.is_some() { Vec::new() } else { inputs }),
         diagnostics: Vec::new(),
     })
 }

@@ -729,6 +729,7 @@ fn flatten_one(
                     text,
                     base,
                     inst: Vec::new(),
+                    once: Vec::new(),
                 });
                 files.push(file);
             }
