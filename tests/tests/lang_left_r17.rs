@@ -20,6 +20,12 @@
 //!   once per instance when it is initialised, before its FB_init, as TwinCAT initialises
 //!   declarations. `THIS` alone is the instance's address (`ADR(THIS^)`) anywhere in a block's code.
 //!   Before: E0001 at the `^`, E0305 "a reference cannot have the initial value `THIS`".
+//! - **A FUNCTION input of type ANY** (`ANY_NUM`, `ANY_INT`, `ANY_REAL`, `ANY_BIT`; CODESYS "ANY
+//!   and ANY_<type>"): the function reads the argument's `.diSize` and `.TypeClass` (compared with
+//!   `__SYSTEM.TYPE_CLASS.TYPE_INT` ...), calls pass any variable, element or field of the family,
+//!   formally or by position. `.pValue` and the input read as a value, a literal argument and an
+//!   argument outside the family are E1068 (a pointer to an unknown type is left: it needs pointer
+//!   indexing and casts). Before: E1003 "unknown type `ANY`".
 
 mod common;
 use common::{column, ladderc, run_traced_files};
@@ -294,4 +300,49 @@ fn var_inst_initial_values_are_computed_before_fb_init() {
     assert_eq!(column(&trace, "main.r"), [7.]);
     assert_eq!(column(&trace, "main.r1"), [7.]);
     assert_eq!(column(&trace, "main.a.nBase"), [100.]);
+}
+
+// ------------------------------------------------------------------ 4. ANY inputs
+
+/// any_input.st: F_Describe sees each argument's class and size: INT i (2 bytes) 1002, LREAL r
+/// (8) 2008, ARRAY[0..9] OF BYTE (10) 3010, STRING 4000, an element `buf[2]` (a BYTE) 9001; each
+/// plus its nTag * 10000, given formally, in another order or by position. F_Bytes (ANY_NUM):
+/// 8 + 2.
+#[test]
+fn an_any_input_sees_the_size_and_class_of_its_argument() {
+    let (trace, _) = common::run_traced(
+        &fixture("any_input.st"),
+        1,
+        "Main.nInt,Main.nReal,Main.nArr,Main.nStr,Main.nPos,Main.nBytes",
+    );
+    assert_eq!(column(&trace, "Main.nInt"), [11002.]);
+    assert_eq!(column(&trace, "Main.nReal"), [22008.]);
+    assert_eq!(column(&trace, "Main.nArr"), [33010.]);
+    assert_eq!(column(&trace, "Main.nStr"), [44000.]);
+    assert_eq!(column(&trace, "Main.nPos"), [59001.]);
+    assert_eq!(column(&trace, "Main.nBytes"), [10.]);
+}
+
+/// What an ANY input does not compile is one E1068 each: `.pValue` and the input read as a value
+/// (kevin00156's Clear hands `ADR(In)` and `SIZEOF(In)` to SysMemSet), a BOOL given to an
+/// ANY_NUM input, an expression given to an ANY input.
+#[test]
+fn what_an_any_input_does_not_compile_is_one_e1068_each() {
+    let (code, errors) = check_files(&[(
+        "any_bad.st",
+        "FUNCTION Clear : BOOL\nVAR_INPUT\n    In : ANY;\nEND_VAR\nMEMSET(In.pValue, 0, In.diSize);\n\
+         Clear := SIZEOF(In) > 0;\nEND_FUNCTION\nFUNCTION F_Num : DINT\nVAR_INPUT v : ANY_NUM; END_VAR\n\
+         F_Num := v.diSize;\nEND_FUNCTION\nPROGRAM Main\nVAR x : INT; b : BOOL; r : DINT; END_VAR\n\
+         b := Clear(x);\nr := F_Num(b);\nr := F_Num(3 + x);\nEND_PROGRAM\n",
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        errors,
+        [
+            "any_bad.st:5:11: error[E1068]: `In.pValue`: the address of an ANY input is not supported",
+            "any_bad.st:6:17: error[E1068]: `In` is an ANY input: its value is not read as a variable",
+            "any_bad.st:15:12: error[E1068]: the input `v` of `F_Num` is ANY_NUM: `BOOL` is not one of its types",
+            "any_bad.st:16:12: error[E1068]: the ANY input `v` of `F_Num` takes a variable",
+        ]
+    );
 }

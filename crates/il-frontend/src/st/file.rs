@@ -1611,6 +1611,8 @@ pub fn compile_pending(
         super::var_stat::hoist(units);
         return;
     }
+    // a FUNCTION's ANY inputs: their hidden size and class inputs (`any_inputs`)
+    super::any_inputs::split_decls(units);
     // methods exported one file each joined to their blocks
     let joined;
     let pending = match super::lone_members::attach(units, pending, diags) {

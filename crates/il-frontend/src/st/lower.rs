@@ -627,6 +627,17 @@ impl<'d> PouLowering<'d> {
             // `p := __NEW(FB_Item);`: one E0351 each, the statement dropped (dynamic_memory)
             return true;
         }
+        let type_of = |e: &Expr| self.expression_type(e);
+        match super::any_inputs::rewrite(&self.env(), &type_of, s, diags) {
+            // `F(In := x)` of a function's ANY input `In`, `In.diSize` in it (any_inputs)
+            Some(Some(s)) => {
+                self.stmt(&s, out, diags);
+                return true;
+            }
+            // (reported; the statement is dropped)
+            Some(None) => return true,
+            None => {}
+        }
         if let Some(s) = self.read_property_results(s) {
             // the statement after `a.Child.Depth();`: reads the result kept below
             self.stmt(&s, out, diags);
