@@ -324,8 +324,9 @@ fn an_any_input_sees_the_size_and_class_of_its_argument() {
 }
 
 /// What an ANY input does not compile is one E1068 each: `.pValue` and the input read as a value
-/// (kevin00156's Clear hands `ADR(In)` and `SIZEOF(In)` to SysMemSet), a BOOL given to an
-/// ANY_NUM input, an expression given to an ANY input.
+/// (kevin00156's Clear hands `ADR(In)` and `SIZEOF(In)` to SysMemSet), once per input of the
+/// function however often it is used; a BOOL given to an ANY_NUM input; an expression given to an
+/// ANY input.
 #[test]
 fn what_an_any_input_does_not_compile_is_one_e1068_each() {
     let (code, errors) = check_files(&[(
@@ -339,8 +340,7 @@ fn what_an_any_input_does_not_compile_is_one_e1068_each() {
     assert_eq!(
         errors,
         [
-            "any_bad.st:5:11: error[E1068]: `In.pValue`: the address of an ANY input is not supported",
-            "any_bad.st:6:17: error[E1068]: `In` is an ANY input: its value is not read as a variable",
+            "any_bad.st:5:11: error[E1068]: `In` of `Clear` is an ANY input: its address (`.pValue`) and its value are not compiled",
             "any_bad.st:15:12: error[E1068]: the input `v` of `F_Num` is ANY_NUM: `BOOL` is not one of its types",
             "any_bad.st:16:12: error[E1068]: the ANY input `v` of `F_Num` takes a variable",
         ]

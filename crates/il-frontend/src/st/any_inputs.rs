@@ -229,6 +229,101 @@ fn class_var(env: &Env, base: &str) -> Option<String> {
     env.vars.keys().find(|k| k.starts_with(&prefix)).cloned()
 }
 
+/// Whether some FUNCTION of the project has an ANY input (else [`rewrite`] has nothing to do).
+pub fn in_project(decls: &super::Declarations) -> bool {
+    decls.pous.values().any(|i| {
+        i.kind == PouKind::Function
+            && i.vars
+                .iter()
+                .any(|(n, k, _)| *k == VarKind::Input && n.to_ascii_uppercase().ends_with(SIZE))
+    })
+}
+
+/// Whether `s`'s own expressions hold something [`rewrite`] changes: looked at without recursion
+/// and without copying (a statement may hold an expression of a thousand operations).
+fn needs(env: &Env, s: &Stmt) -> bool {
+    let mut stack: Vec<&Expr> = Vec::new();
+    let mut places: Vec<&Place> = Vec::new();
+    match &s.kind {
+        StmtKind::Assign { target, value } => {
+            places.push(target);
+            stack.push(value);
+        }
+        StmtKind::Call { callee, args } => {
+            places.push(callee);
+            if let PlaceBase::Name(n) = &callee.base {
+                if inputs_of(env, &n.name).is_some() {
+                    return true;
+                }
+            }
+            stack.extend(args.iter().map(|a| &a.value));
+        }
+        StmtKind::If { branches, .. } => stack.extend(branches.iter().map(|b| &b.cond)),
+        StmtKind::Case { selector, arms, .. } => {
+            stack.push(selector);
+            for a in arms {
+                for l in &a.labels {
+                    match l {
+                        CaseLabel::Value(e) => stack.push(e),
+                        CaseLabel::Range(a, b) => {
+                            stack.push(a);
+                            stack.push(b);
+                        }
+                    }
+                }
+            }
+        }
+        StmtKind::For { from, to, by, .. } => {
+            stack.push(from);
+            stack.push(to);
+            stack.extend(by.iter());
+        }
+        StmtKind::While { cond, .. } => stack.push(cond),
+        StmtKind::Repeat { until, .. } => stack.push(until),
+        _ => {}
+    }
+    loop {
+        if let Some(p) = places.pop() {
+            if let PlaceBase::Name(n) = &p.base {
+                let up = n.key();
+                if up == "__SYSTEM"
+                    || up == "TYPE_CLASS"
+                    || (!env.vars.contains_key(&up)
+                        && env.vars.contains_key(&format!("{up}{SIZE}")))
+                {
+                    return true;
+                }
+            }
+            for a in &p.accessors {
+                match a {
+                    Accessor::Index(ix) => stack.extend(ix.iter()),
+                    Accessor::Call { args, .. } => stack.extend(args.iter().map(|a| &a.value)),
+                    _ => {}
+                }
+            }
+            continue;
+        }
+        let Some(e) = stack.pop() else {
+            return false;
+        };
+        match &e.kind {
+            ExprKind::Place(p) => places.push(p),
+            ExprKind::Unary { operand, .. } => stack.push(operand),
+            ExprKind::Binary { left, right, .. } => {
+                stack.push(left);
+                stack.push(right);
+            }
+            ExprKind::Call { name, args } => {
+                if inputs_of(env, &name.name).is_some() {
+                    return true;
+                }
+                stack.extend(args.iter().map(|a| &a.value));
+            }
+            _ => {}
+        }
+    }
+}
+
 /// Rewrites `s` (see the module documentation): `None` when nothing in it is an ANY input's call or
 /// use. Errors are reported and the offending argument or place is left as written (its lowering
 /// then reports nothing more of it: the statement is dropped when one is found).
@@ -238,6 +333,9 @@ pub fn rewrite(
     s: &Stmt,
     diags: &mut Diagnostics,
 ) -> Option<Option<Stmt>> {
+    if !needs(env, s) {
+        return None;
+    }
     let mut r = Rewrite {
         env,
         type_of,
@@ -395,24 +493,29 @@ impl Rewrite<'_, '_> {
         let field = match p.accessors.first() {
             Some(Accessor::Field(f)) if f.is("diSize") => size,
             Some(Accessor::Field(f)) if f.is("TypeClass") => class,
-            Some(Accessor::Field(f)) if f.is("pValue") => {
-                let at = f.span;
-                let name = n.name.clone();
+            _ => {
+                // once per input of the function (every use is dropped, the first reported)
+                let at = match p.accessors.first() {
+                    Some(Accessor::Field(f)) if f.is("pValue") => f.span,
+                    _ => p.span,
+                };
+                let msg = format!(
+                    "`{}` of `{}` is an ANY input: its address (`.pValue`) and its value are not compiled",
+                    n.name, self.env.pou_name.name
+                );
+                self.failed = true;
+                if self
+                    .diags
+                    .iter()
+                    .any(|d| d.code == code::E1068 && d.message == msg)
+                {
+                    return;
+                }
                 self.refuse(
                     at,
-                    format!("`{name}.pValue`: the address of an ANY input is not supported"),
-                    "pointer to an argument of any type",
-                    "read `.diSize` and `.TypeClass`, or give the function an input of the argument's own type (or a VAR_IN_OUT) to read or change its value",
-                );
-                return;
-            }
-            _ => {
-                let name = n.name.clone();
-                self.refuse(
-                    p.span,
-                    format!("`{name}` is an ANY input: its value is not read as a variable"),
-                    "ANY input",
-                    "an ANY input is read through `.diSize` and `.TypeClass` (CODESYS's __SYSTEM.AnyType); give the function an input of the argument's own type to read its value",
+                    msg,
+                    "reads the argument through a pointer of an unknown type",
+                    "an ANY input is read through `.diSize` and `.TypeClass` here (CODESYS's __SYSTEM.AnyType); give the function an input of the argument's own type (a VAR_IN_OUT to change it) to read its value",
                 );
                 return;
             }
