@@ -17,6 +17,7 @@
 //! | before | 22 (14 TwinCAT 3, 2 TwinCAT 2 EXP, 6 CODESYS 3 ST) | 5 | 10 | 7 |
 //! | after | 22 | 7 | 13 | 2: methods exported one per file, `TO_STRING` of an enumeration (below) |
 //! | after Session 33 (lead) | 22 | 8 | 13 | 1: methods exported one per file |
+//! | after round 17 (`stlang`) | 22 | 8 | 14 | 0 |
 //!
 //! Gaps of this round, fixed here:
 //! - a scan that never ends (SionVerhoef's `REPEAT ... UNTIL bLinePressureOk` purge and `WHILE
@@ -48,7 +49,10 @@
 //! block to a file of its own (`BaseStateMachine.Raise.st`, `METHOD Raise : BOOL` ...); ladderc reads
 //! methods inside their block's text, so such a file was E0307 ("statements outside any POU",
 //! with the hint to wrap them in a PROGRAM) and a W0001; it is now one E1063 at the method's header,
-//! whose hint says where the text belongs. And becky112358's kitchen writes `description :=
+//! whose hint says where the text belongs. Since round 17 (`stlang`, `lang_left_r17.rs`) a method
+//! file is joined to its block when the block's file is given too: BaseStateMachine with its five
+//! method files is then rejected for what the export lacks (the interface `IStateMachine` it
+//! IMPLEMENTS, E0330), no more for the layout. And becky112358's kitchen writes `description :=
 //! TO_STRING(fridge.top_shelf[0])` of an enumeration declared with `{attribute 'to_string'}`, which
 //! in TwinCAT gives the value's name (`'Broccoli'`): one E1004 at the call in this round; since the
 //! lead's `TO_STRING` of enumerations (same session) it gives the name, and the rest of the project
@@ -562,9 +566,11 @@ fn a_reference_declared_with_ref_eq_refers_to_its_variable() {
 }
 
 /// kevin00156's export script writes each method to a file of its own (`BaseStateMachine.Raise.st`:
-/// `METHOD Raise : BOOL`, its inputs, its statements). ladderc reads methods inside their block;
-/// such a file is one E1063 at the method's header (before: E0307 with the hint to wrap the text
-/// in a PROGRAM, and W0001 for its VAR_INPUT block).
+/// `METHOD Raise : BOOL`, its inputs, its statements). Given alone, such a file is one E1063 at the
+/// method's header (before this round: E0307 with the hint to wrap the text in a PROGRAM, and W0001
+/// for its VAR_INPUT block); given with its block's file, it is joined to the block (round 17,
+/// `lang_left_r17.rs`), and what is left is what the export lacks: the interface the block
+/// IMPLEMENTS.
 #[test]
 fn a_method_exported_alone_is_one_e1063_at_its_header() {
     assert_eq!(
@@ -574,5 +580,27 @@ fn a_method_exported_alone_is_one_e1063_at_its_header() {
              // === IMPLEMENTATION ===\nIF NOT xError THEN\n    iStep := iNextStep;\n    Raise := TRUE;\nEND_IF"
         ),
         ["BaseStateMachine.Raise.st:1:1: error[E1063]: a METHOD outside any FUNCTION_BLOCK"]
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let block = write(
+        dir.path(),
+        "BaseStateMachine.st",
+        "FUNCTION_BLOCK ABSTRACT BaseStateMachine IMPLEMENTS IStateMachine\nVAR_OUTPUT\n\tiStep : INT;\n\
+         \tiErrorID : INT;\n\txError : BOOL;\nEND_VAR\n\n// === IMPLEMENTATION ===\nRaise(1, 2);\n",
+    );
+    let method = write(
+        dir.path(),
+        "BaseStateMachine.Raise.st",
+        "METHOD Raise : BOOL\nVAR_INPUT \n\tiErrorID : INT; \n\tiNextStep : INT;\nEND_VAR\n\n\
+         // === IMPLEMENTATION ===\nIF NOT xError THEN\n    iStep := iNextStep;\n    Raise := TRUE;\nEND_IF",
+    );
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .args([&block, &method])
+        .output()
+        .unwrap();
+    assert_eq!(
+        common::diagnostic_heads(&out.stderr, dir.path(), false),
+        ["BaseStateMachine.st:1:53: error[E0330]: `BaseStateMachine` IMPLEMENTS `IStateMachine`, which names no INTERFACE of the project"]
     );
 }

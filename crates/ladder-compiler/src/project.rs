@@ -843,6 +843,7 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
                 text: t.text,
                 base: t.base,
                 inst: Vec::new(),
+                once: Vec::new(),
             });
         }
     }

@@ -543,6 +543,12 @@ impl Session {
         }
         // VAR_CONFIG once every file is read: a configuration names programs of other files
         il_frontend::st::file::apply_var_config(&mut units, var_config, &mut self.diags);
+        // a file of methods without their block (`Block.Method.st`): its block named by its name
+        for pb in &mut pending {
+            if let Some(lone) = pb.lone.as_mut() {
+                lone.name_owner(&self.map.get(pb.file).name);
+            }
+        }
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);

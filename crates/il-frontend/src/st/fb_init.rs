@@ -63,6 +63,9 @@ struct Block {
     fb_init: Option<Vec<String>>,
     /// Its methods marked `{attribute 'call_after_init'}` (with the block): run after FB_init.
     after_init: Vec<String>,
+    /// The hidden methods that compute its methods' VAR_INST initial values
+    /// ([`super::method_inits::INIT_PREFIX`]): run before its bases' FB_init.
+    inst_inits: Vec<String>,
     /// Its VAR_INPUT names (upper case): a declaration's structured initial value of one is set
     /// again after FB_init.
     inputs: HashSet<String>,
@@ -71,7 +74,7 @@ struct Block {
 impl Block {
     /// Whether an instance runs anything when it is initialised.
     fn runs(&self) -> bool {
-        self.fb_init.is_some() || !self.after_init.is_empty()
+        self.fb_init.is_some() || !self.after_init.is_empty() || !self.inst_inits.is_empty()
     }
 }
 
@@ -107,6 +110,8 @@ pub fn add_init_calls(
             b.fb_init = Some(inputs);
         } else if name.starts_with("__S") && name.ends_with("_FB_INIT") {
             b.bases.push((a.name.name.clone(), inputs));
+        } else if name.starts_with(super::method_inits::INIT_PREFIX) {
+            b.inst_inits.push(a.name.name.clone());
         } else if (name == "FB_EXIT" || name == "FB_REINIT")
             // (an inherited method is the base's text: noted once)
             && !never_called.iter().any(|(_, m)| m.span == a.name.span)
@@ -853,6 +858,10 @@ impl Gen<'_, '_> {
         let span = place.span;
         if self.holds.get(&t.key()).copied().unwrap_or(false) {
             out.push(call(place, ACTION, Vec::new(), span));
+        }
+        // its methods' VAR_INST initial values, as its declarations' (before FB_init)
+        for m in &block.inst_inits {
+            out.push(call(place, m, Vec::new(), span));
         }
         let versions = block
             .bases

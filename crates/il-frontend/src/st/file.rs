@@ -118,6 +118,11 @@ pub struct PendingMethod {
     /// The variables of its VAR_INST blocks (upper-case; TwinCAT): kept in the instance from call
     /// to call, where its other variables start again at each call.
     pub inst: Vec<String>,
+    /// The byte ranges (in the file) of the assignments, among the statements, that give VAR_INST
+    /// variables an initial value computed at run time (`pSelf : POINTER TO FB_X := THIS;`,
+    /// `n : INT := THIS^.nBase;`, TwinCAT): run once per instance, at the method's first call
+    /// ([`super::method_inits`]).
+    pub once: Vec<Range<usize>>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -151,6 +156,9 @@ pub struct PendingBody {
     /// The methods that `{attribute 'call_after_init'}` marks (on the method and on the block):
     /// run after each instance's FB_init ([`super::fb_init`]).
     pub after_init: Vec<crate::ast::Ident>,
+    /// Not a POU's body: the methods (in `methods`) of a file that holds them without their block,
+    /// `Block.Method.st` ([`super::lone_members`]), until they are attached to it.
+    pub lone: Option<Box<super::lone_members::LoneMembers>>,
 }
 
 impl PendingBody {
@@ -184,10 +192,11 @@ impl PendingBody {
     /// The file of method `k` (an inherited method is in its base's file).
     pub fn method_file(&self, k: usize) -> FileId {
         match self.oop.as_deref() {
-            Some(super::inherit::Oop::Block(b)) => {
+            Some(super::inherit::Oop::Block(b)) if !b.method_files.is_empty() => {
                 b.method_files.get(k).copied().unwrap_or(self.file)
             }
-            _ => self.file,
+            // (a method exported to a file of its own is in that file: `lone_members`)
+            _ => self.methods.get(k).map_or(self.file, |m| m.name.span.file),
         }
     }
 }
@@ -507,7 +516,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
 
 /// Reads a method's declarations (its variable blocks, and its result as a variable named like the
 /// method) with the IL parser, in place: diagnostics point into the file.
-fn pending_method(
+pub(super) fn pending_method(
     file: FileId,
     src: &str,
     m: &MethodText,
@@ -515,13 +524,19 @@ fn pending_method(
 ) -> PendingMethod {
     let vars =
         |text: &str, base: usize, diags: &mut Diagnostics| read_var_blocks(file, text, base, diags);
-    let decls = src.get(m.decls.clone()).unwrap_or("");
     // `n : UDINT := SIZEOF(T) * k;`: read without its initial value, assigned when the method starts
-    let inits = super::method_inits::split(decls);
-    let (blocks, inst) = read_member_var_blocks(
+    let super::method_inits::MemberText {
+        blocks,
+        inst,
+        text,
+        base,
+        once,
+    } = super::method_inits::member_text(
         file,
-        inits.as_ref().map_or(decls, |(read, _)| read.as_str()),
-        m.decls.start,
+        src,
+        m.decls.clone(),
+        m.stmts.clone(),
+        Span::new(file, m.name_range.start, m.name_range.end),
         diags,
     );
     // `Name : TYPE` read as the declaration `VAR Name : TYPE; END_VAR` (the name is at least 7
@@ -535,18 +550,6 @@ fn pending_method(
             .flat_map(|b| b.vars)
             .next()
     });
-    let stmts = src.get(m.stmts.clone()).unwrap_or("");
-    let (text, base) = match inits {
-        // the assignments where they are written, then the statements (positions kept)
-        Some((_, mut t)) if m.decls.end <= m.stmts.start => {
-            t.push_str(&super::method_inits::blank(
-                src.get(m.decls.end..m.stmts.start).unwrap_or(""),
-            ));
-            t.push_str(stmts);
-            (t, m.decls.start)
-        }
-        _ => (stmts.to_string(), m.stmts.start),
-    };
     PendingMethod {
         name: crate::ast::Ident::new(
             &m.name,
@@ -557,6 +560,7 @@ fn pending_method(
         text,
         base,
         inst,
+        once,
     }
 }
 
@@ -665,7 +669,7 @@ pub(super) fn member_name_at(src: &str, toks: &[Token], k: usize) -> usize {
 
 /// The `METHOD ... END_METHOD` blocks among a function block's body tokens. A block that does not
 /// end with `END_METHOD` is left out (the body's parse reports it).
-fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
+pub(super) fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
     let n = toks.len();
     let same_line = |a: usize, b: usize| !src.get(a..b).unwrap_or("\n").contains(['\n', '\r']);
     let mut out = Vec::new();
@@ -894,7 +898,8 @@ pub fn parse_text(
         None => src,
     };
     let mut references = RefTypes::default();
-    let (uninstanced, unextended): (String, String);
+    let (uninstanced, unextended, unstatic): (String, String, String);
+    let mut stat_at = Vec::new();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
     let lists_blanked = blanked_lists.is_some();
@@ -959,6 +964,16 @@ pub fn parse_text(
                 uninstanced = t;
                 (toks, problems) = lex(&uninstanced);
                 uninstanced.as_str()
+            }
+            None => src,
+        };
+        // `VAR_STAT`: read as VAR, the blocks named after the parse, hoisted once lowered (`var_stat`)
+        let src = match super::var_stat::mark(file, src, &toks, diags) {
+            Some((t, at)) => {
+                unstatic = t;
+                stat_at = at;
+                (toks, problems) = lex(&unstatic);
+                unstatic.as_str()
             }
             None => src,
         };
@@ -1061,15 +1076,33 @@ pub fn parse_text(
         let name_end = src[first.start..]
             .find(['\n', ':', '('])
             .map_or(first.end, |k| first.start + k);
-        diags.push(
-            Diagnostic::error(
-                code::E1063,
-                format!("a {} outside any FUNCTION_BLOCK", kind),
-            )
-            .at(trim_span(src, Span::new(file, first.start, name_end)))
-            .with_primary_label(format!("this {} has no block", kind.to_ascii_lowercase()))
-            .with_hint("ladderc reads a method or property inside its block: move this text before the block's END_FUNCTION_BLOCK (CODESYS export scripts write each method to a file of its own, `Block.Method.st`)"),
-        );
+        let unowned = Diagnostic::error(
+            code::E1063,
+            format!("a {} outside any FUNCTION_BLOCK", kind),
+        )
+        .at(trim_span(src, Span::new(file, first.start, name_end)))
+        .with_primary_label(format!("this {} has no block", kind.to_ascii_lowercase()))
+        .with_hint("give the block's file on the same command line, named so that this file's name is `Block.Member.st`, or move this text before the block's END_FUNCTION_BLOCK");
+        // joined to its block once every file is read (`lone_members`)
+        match super::lone_members::read(file, src, first.start, &mut references, diags) {
+            Some(methods) => pending.push(PendingBody {
+                file,
+                name_start: usize::MAX,
+                base: 0,
+                text: String::new(),
+                actions: Vec::new(),
+                sfc: false,
+                methods,
+                oop: None,
+                fb_init_args: Vec::new(),
+                after_init: Vec::new(),
+                lone: Some(Box::new(super::lone_members::LoneMembers {
+                    unowned,
+                    owner: None,
+                })),
+            }),
+            None => diags.push(unowned),
+        }
         blank(&mut text, first.start..last.end);
     } else if let (Some(first), Some(last)) = (stray.first(), stray.last()) {
         let lines = src[first.start..last.end].lines().count();
@@ -1208,6 +1241,7 @@ pub fn parse_text(
                 ))),
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
+                lone: None,
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1257,6 +1291,7 @@ pub fn parse_text(
                 oop: None,
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
+                lone: None,
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1414,6 +1449,7 @@ pub fn parse_text(
                     oop: oop.map(Box::new),
                     fb_init_args: Vec::new(),
                     after_init: super::fb_init::after_init_methods(file, src, p, diags),
+                    lone: None,
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -1443,6 +1479,7 @@ pub fn parse_text(
     }
     let mut local = Diagnostics::new();
     let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    super::var_stat::name_blocks(&mut unit, file, &stat_at);
     references.apply(&mut unit, &mut local);
     mark_to_string(&mut unit, &to_string_at);
     match unclosed {
@@ -1463,6 +1500,7 @@ pub fn parse_text(
             oop: None,
             fb_init_args: decl_args,
             after_init: Vec::new(),
+            lone: None,
         });
     }
     (unit, pending, var_config.1)
@@ -1570,8 +1608,20 @@ pub fn compile_pending(
     // structures that EXTEND others get their bases' fields (from any unit)
     super::struct_extends::flatten(units);
     if pending.is_empty() {
+        super::var_stat::hoist(units);
         return;
     }
+    // a FUNCTION's ANY inputs: their hidden size and class inputs (`any_inputs`)
+    super::any_inputs::split_decls(units);
+    // methods exported one file each joined to their blocks
+    let joined;
+    let pending = match super::lone_members::attach(units, pending, diags) {
+        Some(v) => {
+            joined = v;
+            &joined[..]
+        }
+        None => pending,
+    };
     // the blocks whose text declares an FB_init (before a block that is not compiled loses it),
     // and the blocks that are not compiled because their base is no block of the project (E0330:
     // a library's base, `EXTENDS TcBaseModuleRegistered`, may declare the FB_init their instances'
@@ -1721,6 +1771,10 @@ pub fn compile_pending(
                 standalone.extend(actions);
                 let mut methods = Vec::new();
                 for (k, m) in pb.methods.iter().enumerate() {
+                    // VAR_INST initial values computed from the instance: when it is initialised
+                    if let Some(a) = lower_instance_init(pb.method_file(k), &decls, p, m) {
+                        standalone.push(a);
+                    }
                     if let Some(mut a) = lower_method(pb.method_file(k), &decls, p, m, diags) {
                         if !init.is_empty() {
                             let tag = format!("__ITF{k}_");
@@ -1740,6 +1794,8 @@ pub fn compile_pending(
     }
     // FB_init: each instance's, before the first cycle, with its declaration's arguments
     super::fb_init::add_init_calls(units, pending, &declares_fb_init, &mut decls, diags);
+    // VAR_STAT: one copy for every instance and call, now that the bodies are lowered
+    super::var_stat::hoist(units);
     let seen: std::collections::HashSet<_> = diags
         .iter()
         .map(|d| (d.code, d.message.clone(), d.span.map(|s| (s.start, s.end))))
@@ -1908,6 +1964,59 @@ pub fn lower_method(
     m: &PendingMethod,
     diags: &mut Diagnostics,
 ) -> Option<crate::ast::Action> {
+    lower_method_as(file, decls, p, m, None, diags)
+}
+
+/// The hidden method that computes the VAR_INST initial values of method `m` (its
+/// [`PendingMethod::once`] assignments, guarded by their flag) when an instance is initialised,
+/// before its FB_init ([`super::fb_init`]), named [`super::method_inits::INIT_PREFIX`] + the
+/// method's name. `None` when `m` has none.
+pub fn lower_instance_init(
+    file: FileId,
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    m: &PendingMethod,
+) -> Option<crate::ast::Action> {
+    if m.once.is_empty() {
+        return None;
+    }
+    let mut only = m.clone();
+    // the assignments alone, where they are written (their diagnostics come with the method's)
+    only.text = super::method_inits::blank(&m.text);
+    for r in &m.once {
+        let (Some(a), Some(b)) = (r.start.checked_sub(m.base), r.end.checked_sub(m.base)) else {
+            continue;
+        };
+        if let Some(t) = m.text.get(a..b) {
+            only.text.replace_range(a..b, t);
+        }
+    }
+    let name = crate::ast::Ident::new(
+        format!(
+            "{}{}",
+            super::method_inits::INIT_PREFIX,
+            m.name.name.to_ascii_uppercase()
+        ),
+        m.name.span,
+    );
+    let mut quiet = Diagnostics::new();
+    let a = lower_method_as(file, decls, p, &only, Some(&name), &mut quiet);
+    if quiet.has_errors() {
+        return None;
+    }
+    a
+}
+
+/// [`lower_method`], the action named `action` (default: the method's name; the method's variables
+/// keep the method's hidden names either way).
+fn lower_method_as(
+    file: FileId,
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    m: &PendingMethod,
+    action: Option<&crate::ast::Ident>,
+    diags: &mut Diagnostics,
+) -> Option<crate::ast::Action> {
     use crate::actions::{instantiate, method_result, method_var};
     use crate::ast::{VarBlock, VarKind};
     let mut own: Vec<VarBlock> = m.blocks.clone();
@@ -1938,7 +2047,8 @@ pub fn lower_method(
     // block's variable, read in the text as a hidden name of the same length that the view declares
     // and the renaming below turns back into `x`
     let text = this_shadowed(&m.text, p, &rename, &mut view, &mut rename_back);
-    let stmts = super::parse_statements(file, &text, m.base, diags);
+    let mut stmts = super::parse_statements(file, &text, m.base, diags);
+    super::method_inits::run_once(&mut stmts, &m.once, m.name.span);
     let mut low = super::PouLowering::new(decls, &view);
     let mut body = low.statements(&stmts, diags);
     if let Some(t) = low.finish(m.name.span) {
@@ -2001,7 +2111,7 @@ pub fn lower_method(
     }
     let body = instantiate(
         &body,
-        &format!("{}_L", method_result(&m.name.name)),
+        &format!("{}_L", method_result(&action.unwrap_or(&m.name).name)),
         m.name.span,
     );
     // (a non-formal call binds the inputs and in-outs in declaration order, CODESYS)
@@ -2013,10 +2123,10 @@ pub fn lower_method(
         .collect();
     Some(crate::ast::Action {
         pou: p.name.clone(),
-        name: m.name.clone(),
+        name: action.unwrap_or(&m.name).clone(),
         body,
         temps: None,
-        method_inputs: Some(inputs),
+        method_inputs: Some(if action.is_some() { Vec::new() } else { inputs }),
         diagnostics: Vec::new(),
     })
 }

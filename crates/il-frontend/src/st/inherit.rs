@@ -661,7 +661,10 @@ fn flatten_one(
                 if !versions.contains_key(&key) {
                     order.push(key.clone());
                 }
-                versions.entry(key).or_default().push((j, m, b.file));
+                versions
+                    .entry(key)
+                    .or_default()
+                    .push((j, m, m.name.span.file));
             }
         }
     }
@@ -726,6 +729,7 @@ fn flatten_one(
                     text,
                     base,
                     inst: Vec::new(),
+                    once: Vec::new(),
                 });
                 files.push(file);
             }

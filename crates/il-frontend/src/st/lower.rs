@@ -78,6 +78,9 @@ pub struct PouLowering<'d> {
     /// Whether some function block of the program has a PROPERTY (its uses are rewritten into
     /// calls of its accessors before a statement is lowered: `property::rewrite`).
     properties: bool,
+    /// Some FUNCTION of the project has an ANY input (`any_inputs`): its calls and uses are
+    /// rewritten before they are lowered.
+    any_inputs: bool,
     /// Types of the subexpressions of the trees being lowered (so lowering a chain of n operators
     /// types each node once, not n times). Cleared by every public entry point and after lowering a
     /// tree built here, so no entry outlives the node it describes.
@@ -219,6 +222,7 @@ impl<'d> PouLowering<'d> {
                 .values()
                 .flatten()
                 .any(|m| super::property::is_accessor(&m.name)),
+            any_inputs: super::any_inputs::in_project(decls),
             types: RefCell::new(TypeCache::new()),
             nested: 0,
             raw_refs: false,
@@ -626,6 +630,22 @@ impl<'d> PouLowering<'d> {
         if self.refuse_dynamic_memory(s, diags) {
             // `p := __NEW(FB_Item);`: one E0351 each, the statement dropped (dynamic_memory)
             return true;
+        }
+        let type_of = |e: &Expr| self.expression_type(e);
+        let any = if self.any_inputs {
+            super::any_inputs::rewrite(&self.env(), &type_of, s, diags)
+        } else {
+            None
+        };
+        match any {
+            // `F(In := x)` of a function's ANY input `In`, `In.diSize` in it (any_inputs)
+            Some(Some(s)) => {
+                self.stmt(&s, out, diags);
+                return true;
+            }
+            // (reported; the statement is dropped)
+            Some(None) => return true,
+            None => {}
         }
         if let Some(s) = self.read_property_results(s) {
             // the statement after `a.Child.Depth();`: reads the result kept below

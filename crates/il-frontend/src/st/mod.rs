@@ -12,6 +12,7 @@
 //! gives one diagnostic and the next statements are still read; the lowering of several snippets into
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
+pub mod any_inputs;
 pub mod ast;
 pub mod base_view;
 mod conditional;
@@ -25,6 +26,7 @@ pub mod inherit;
 pub mod interface_vars;
 pub mod lexer;
 mod list_bounds;
+pub mod lone_members;
 pub mod lower;
 mod method_inits;
 pub mod parser;
@@ -38,6 +40,7 @@ pub mod types;
 mod using;
 mod var_config;
 mod var_inst;
+pub mod var_stat;
 
 pub use conditional::ProjectDefines;
 pub use lower::PouLowering;

@@ -1590,6 +1590,31 @@ impl<'s, 'd> Parser<'s, 'd> {
                 inner.span = here.to(self.span(self.prev_end(), self.prev_end()));
                 inner
             }
+            // `THIS` alone (not `THIS^`): the instance's address, `ADR(THIS^)` (CODESYS, TwinCAT:
+            // `pSelf := THIS;`, `pSelf : POINTER TO FB_X := THIS;` in a method's VAR_INST)
+            Tok::Ident if self.ident(&t).is("THIS") && *self.peek_at(1) != Tok::Caret => {
+                self.bump();
+                let this = Expr {
+                    kind: ExprKind::Place(Place {
+                        base: PlaceBase::Name(self.ident(&t)),
+                        accessors: vec![Accessor::Deref(here)],
+                        span: here,
+                    }),
+                    span: here,
+                };
+                Expr {
+                    kind: ExprKind::Call {
+                        name: Ident::new("ADR", here),
+                        args: vec![Arg {
+                            name: None,
+                            dir: ArgDir::Input,
+                            value: this,
+                            span: here,
+                        }],
+                    },
+                    span: here,
+                }
+            }
             // `XOR(a, b)`, `MOD(x, 2)`, `AND(a, b, c)`: the standard functions named like operators,
             // in functional form.
             Tok::Kw(Kw::Xor | Kw::Mod | Kw::And | Kw::Or) | Tok::Ident

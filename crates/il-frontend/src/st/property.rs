@@ -232,25 +232,29 @@ pub(super) fn pending_accessors(
     );
     // (an accessor's VAR_INST, TwinCAT: kept in the instance, as a method's)
     let mut inst = Vec::new();
+    // (and its VAR_INST initial values computed at run time, `fbView : FB_View := (ipList :=
+    // THIS^.fbList);` in fisothemes/TwinCat-Dynamic-Collections: at its first call, see
+    // `method_inits`)
+    let mut once = Vec::new();
     let mut part = |(decls, stmts): &(Range<usize>, Range<usize>), diags: &mut Diagnostics| {
-        let (blocks, kept) = super::file::read_member_var_blocks(
+        let t = super::method_inits::member_text(
             file,
-            src.get(decls.clone()).unwrap_or(""),
-            decls.start,
+            src,
+            decls.clone(),
+            stmts.clone(),
+            name.span,
             diags,
         );
-        inst.extend(kept);
-        (
-            blocks,
-            src.get(stmts.clone()).unwrap_or("").to_string(),
-            stmts.start,
-        )
+        inst.extend(t.inst);
+        once.push(t.once);
+        (t.blocks, t.text, t.base)
     };
     let get = p.get.as_ref().map(|g| part(g, diags));
     let set = p.set.as_ref().map(|s| part(s, diags));
     let mut out = accessor_methods(&name, &value.ty, get, set);
-    for m in &mut out {
+    for (m, once) in out.iter_mut().zip(once) {
         m.inst = inst.clone();
+        m.once = once;
     }
     out
 }
@@ -273,6 +277,7 @@ pub fn accessor_methods(
             text,
             base,
             inst: Vec::new(),
+            once: Vec::new(),
         });
     }
     if let Some((mut blocks, text, base)) = set {
@@ -294,6 +299,7 @@ pub fn accessor_methods(
             text,
             base,
             inst: Vec::new(),
+            once: Vec::new(),
         });
     }
     out

@@ -242,9 +242,13 @@ impl RefTypes {
             if let Some(t) = toks.get(j) {
                 self.addresses.insert(base + t.range.start, target);
             }
-        } else if self.one_method_var && super::method_inits::is_run_time_value(&toks[k + 1..end]) {
+        } else if self.one_method_var
+            && (super::method_inits::is_run_time_value(&toks[k + 1..end])
+                || value.eq_ignore_ascii_case("THIS"))
+        {
             // `pCurrent : POINTER TO T := THIS^.pRoot;` in a method (CODESYS, TwinCAT,
-            // fisothemes/TwinCat-Dynamic-Collections): assigned when the method starts
+            // fisothemes/TwinCat-Dynamic-Collections), `pSelf : POINTER TO FB_X := THIS;` in its
+            // VAR_INST: assigned when the method starts, or at its first call on the instance
             // (`method_inits`), left in the text for it
             return;
         } else if !value.eq_ignore_ascii_case("NULL") {

@@ -1,0 +1,617 @@
+//! A user FUNCTION's input of a generic type, `In : ANY;` (`ANY_NUM`, `ANY_INT` ...: CODESYS online
+//! help "ANY and ANY_<type>", TwinCAT likewise): the function accepts an argument of any type of
+//! the family and sees, instead of the value, its description `__SYSTEM.AnyType`: `In.diSize` (the
+//! argument's size in bytes), `In.TypeClass` (its class, compared with `__SYSTEM.TYPE_CLASS.TYPE_INT`
+//! ...) and `In.pValue` (its address).
+//!
+//! What ladderc compiles (safe and bounded: no pointer of an unknown type is made): `In.diSize`
+//! and `In.TypeClass`. The input is two hidden inputs of the function, `In__DISIZE : DINT` and
+//! `In__TYPECLASS : INT` ([`split_decls`]); a call `F(In := x)` (formal or positional) passes
+//! `SIZEOF(x)` and the class of `x`'s type ([`rewrite`], before the statement is lowered). A call
+//! may give any variable, element or field; an argument that is no variable (a literal, an
+//! expression) is E1068, as is an argument outside the input's family (`ANY_NUM` given a BOOL).
+//! `In.pValue`, and `In` read as a value (`ADR(In)`, `SIZEOF(In)`), are E1068 in the function: its
+//! use needs a pointer to an unknown type (left: pointer indexing and casts).
+//!
+//! Input: the parsed units (before the declarations are indexed), then each ST statement being
+//! lowered. Output: the functions' ANY inputs split; the statements rewritten.
+//! Invariants: only FUNCTIONs' VAR_INPUTs of the ANY family are split; a statement without such a
+//! call or use is not touched; a rewritten statement holds no rewritable part any more (the
+//! lowering may run the rewrite again on it).
+
+use super::ast::{
+    Accessor, Arg, ArgDir, CaseLabel, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind,
+};
+use super::infer::Env;
+use crate::ast::{CompilationUnit, Ident, LibraryElement, LiteralKind, PouKind, TypeRef, VarKind};
+use diagnostics::{code, Diagnostic, Diagnostics};
+
+/// The hidden input holding an ANY input's size.
+pub const SIZE: &str = "__DISIZE";
+/// The hidden input holding an ANY input's type class.
+pub const CLASS: &str = "__TYPECLASS";
+
+/// The generic types an input may have, with the elementary types each accepts (`None`: any type).
+fn family(ty: &str) -> Option<Option<&'static [&'static str]>> {
+    const INT: &[&str] = &[
+        "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT",
+    ];
+    const REAL: &[&str] = &["REAL", "LREAL"];
+    const NUM: &[&str] = &[
+        "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "REAL", "LREAL",
+    ];
+    const BIT: &[&str] = &["BOOL", "BYTE", "WORD", "DWORD", "LWORD"];
+    Some(match ty.to_ascii_uppercase().as_str() {
+        "ANY" | "ANY_DERIVED" | "ANY_ELEMENTARY" => None,
+        "ANY_INT" => Some(INT),
+        "ANY_REAL" => Some(REAL),
+        "ANY_NUM" | "ANY_MAGNITUDE" => Some(NUM),
+        "ANY_BIT" => Some(BIT),
+        _ => return None,
+    })
+}
+
+/// `__SYSTEM.TYPE_CLASS`'s values, in CODESYS's order (compared by name in the source; the numbers
+/// are what `--watch` shows).
+const CLASSES: &[&str] = &[
+    "TYPE_BOOL",
+    "TYPE_BIT",
+    "TYPE_BYTE",
+    "TYPE_WORD",
+    "TYPE_DWORD",
+    "TYPE_LWORD",
+    "TYPE_SINT",
+    "TYPE_INT",
+    "TYPE_DINT",
+    "TYPE_LINT",
+    "TYPE_USINT",
+    "TYPE_UINT",
+    "TYPE_UDINT",
+    "TYPE_ULINT",
+    "TYPE_REAL",
+    "TYPE_LREAL",
+    "TYPE_STRING",
+    "TYPE_WSTRING",
+    "TYPE_TIME",
+    "TYPE_DATE",
+    "TYPE_DATEANDTIME",
+    "TYPE_TIMEOFDAY",
+    "TYPE_POINTER",
+    "TYPE_REFERENCE",
+    "TYPE_SUBRANGE",
+    "TYPE_ENUM",
+    "TYPE_ARRAY",
+    "TYPE_PARAMS",
+    "TYPE_USERDEF",
+    "TYPE_NONE",
+    "TYPE_ANY",
+    "TYPE_ANYBIT",
+    "TYPE_ANYDATE",
+    "TYPE_ANYINT",
+    "TYPE_ANYNUM",
+    "TYPE_ANYREAL",
+    "TYPE_LAZY",
+    "TYPE_LTIME",
+];
+
+fn class_number(name: &str) -> Option<i128> {
+    CLASSES
+        .iter()
+        .position(|c| c.eq_ignore_ascii_case(name))
+        .map(|k| k as i128)
+}
+
+/// The class of a value of type `ty` (elementary names, then the kind of the type).
+fn class_of(env: &Env, ty: &TypeRef) -> i128 {
+    let named = |n: &str| {
+        let up = n.to_ascii_uppercase();
+        let class = match up.as_str() {
+            "DT" | "DATE_AND_TIME" | "LDT" => "TYPE_DATEANDTIME",
+            "TOD" | "TIME_OF_DAY" | "LTOD" => "TYPE_TIMEOFDAY",
+            "LDATE" => "TYPE_DATE",
+            _ => "",
+        };
+        if !class.is_empty() {
+            return class_number(class);
+        }
+        class_number(&format!("TYPE_{up}"))
+    };
+    match ty {
+        TypeRef::Named(n) => named(&n.name).unwrap_or_else(|| {
+            if env
+                .decls
+                .types
+                .get(&n.key())
+                .is_some_and(|t| matches!(t.def, crate::ast::TypeDef::Enum { .. }))
+            {
+                class_number("TYPE_ENUM").unwrap_or(0)
+            } else {
+                class_number("TYPE_USERDEF").unwrap_or(0)
+            }
+        }),
+        TypeRef::String { wide, .. } => {
+            class_number(if *wide { "TYPE_WSTRING" } else { "TYPE_STRING" }).unwrap_or(0)
+        }
+        TypeRef::Array { .. } => class_number("TYPE_ARRAY").unwrap_or(0),
+        TypeRef::Subrange { .. } => class_number("TYPE_SUBRANGE").unwrap_or(0),
+        TypeRef::Enum { .. } => class_number("TYPE_ENUM").unwrap_or(0),
+        TypeRef::Ref { kind, .. } => class_number(if *kind == crate::ast::RefKind::Reference {
+            "TYPE_REFERENCE"
+        } else {
+            "TYPE_POINTER"
+        })
+        .unwrap_or(0),
+    }
+}
+
+/// Splits each ANY-family VAR_INPUT of every FUNCTION into its two hidden inputs (see the module
+/// documentation). The split inputs keep their order among the others.
+pub fn split_decls(units: &mut [CompilationUnit]) {
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        let LibraryElement::Pou(p) = item else {
+            continue;
+        };
+        if p.kind != PouKind::Function {
+            continue;
+        }
+        for b in p.var_blocks.iter_mut().filter(|b| b.kind == VarKind::Input) {
+            if !b.vars.iter().any(|v| is_any(&v.ty)) {
+                continue;
+            }
+            let mut vars = Vec::with_capacity(b.vars.len() + 2);
+            for v in std::mem::take(&mut b.vars) {
+                if !is_any(&v.ty) {
+                    vars.push(v);
+                    continue;
+                }
+                // (the class input's name ends with the generic type: `In__TYPECLASS_ANY_NUM`,
+                // which the calls check their argument against)
+                let generic = match &v.ty {
+                    TypeRef::Named(n) => n.name.to_ascii_uppercase(),
+                    _ => "ANY".into(),
+                };
+                for (suffix, ty) in [
+                    (SIZE.to_string(), "DINT"),
+                    (format!("{CLASS}_{generic}"), "INT"),
+                ] {
+                    let mut h = v.clone();
+                    h.name = Ident::new(format!("{}{suffix}", v.name.name), v.name.span);
+                    h.ty = TypeRef::Named(Ident::new(ty, v.name.span));
+                    h.init = None;
+                    vars.push(h);
+                }
+            }
+            b.vars = vars;
+        }
+    }
+}
+
+fn is_any(ty: &TypeRef) -> bool {
+    matches!(ty, TypeRef::Named(n) if family(&n.name).is_some())
+}
+
+/// One input of a function with ANY inputs: its name, and for an ANY input its generic type
+/// (`ANY_NUM` ...) and the name of its hidden class input.
+type Input = (String, Option<(String, String)>);
+
+/// The inputs of function `f` in declaration order, each split ANY input once by its own name;
+/// `None` when `f` is no function with ANY inputs.
+fn inputs_of(env: &Env, f: &str) -> Option<Vec<Input>> {
+    let i = env.decls.pou(f)?;
+    if i.kind != PouKind::Function {
+        return None;
+    }
+    let mut out: Vec<Input> = Vec::new();
+    let mut any = false;
+    for (name, kind, _) in &i.vars {
+        if *kind != VarKind::Input {
+            continue;
+        }
+        let up = name.to_ascii_uppercase();
+        if up.ends_with(SIZE) {
+            continue;
+        }
+        match up.find(CLASS) {
+            Some(k) if k > 0 => {
+                let generic = up[k + CLASS.len()..].trim_start_matches('_').to_string();
+                out.push((name[..k].to_string(), Some((generic, name.clone()))));
+                any = true;
+            }
+            _ => out.push((name.clone(), None)),
+        }
+    }
+    any.then_some(out)
+}
+
+/// The hidden class input of the ANY input `base` among the POU's variables (upper-case keys).
+fn class_var(env: &Env, base: &str) -> Option<String> {
+    let prefix = format!("{}{CLASS}", base.to_ascii_uppercase());
+    env.vars.keys().find(|k| k.starts_with(&prefix)).cloned()
+}
+
+/// Whether some FUNCTION of the project has an ANY input (else [`rewrite`] has nothing to do).
+pub fn in_project(decls: &super::Declarations) -> bool {
+    decls.pous.values().any(|i| {
+        i.kind == PouKind::Function
+            && i.vars
+                .iter()
+                .any(|(n, k, _)| *k == VarKind::Input && n.to_ascii_uppercase().ends_with(SIZE))
+    })
+}
+
+/// Whether `s`'s own expressions hold something [`rewrite`] changes: looked at without recursion
+/// and without copying (a statement may hold an expression of a thousand operations).
+fn needs(env: &Env, s: &Stmt) -> bool {
+    let mut stack: Vec<&Expr> = Vec::new();
+    let mut places: Vec<&Place> = Vec::new();
+    match &s.kind {
+        StmtKind::Assign { target, value } => {
+            places.push(target);
+            stack.push(value);
+        }
+        StmtKind::Call { callee, args } => {
+            places.push(callee);
+            if let PlaceBase::Name(n) = &callee.base {
+                if inputs_of(env, &n.name).is_some() {
+                    return true;
+                }
+            }
+            stack.extend(args.iter().map(|a| &a.value));
+        }
+        StmtKind::If { branches, .. } => stack.extend(branches.iter().map(|b| &b.cond)),
+        StmtKind::Case { selector, arms, .. } => {
+            stack.push(selector);
+            for a in arms {
+                for l in &a.labels {
+                    match l {
+                        CaseLabel::Value(e) => stack.push(e),
+                        CaseLabel::Range(a, b) => {
+                            stack.push(a);
+                            stack.push(b);
+                        }
+                    }
+                }
+            }
+        }
+        StmtKind::For { from, to, by, .. } => {
+            stack.push(from);
+            stack.push(to);
+            stack.extend(by.iter());
+        }
+        StmtKind::While { cond, .. } => stack.push(cond),
+        StmtKind::Repeat { until, .. } => stack.push(until),
+        _ => {}
+    }
+    loop {
+        if let Some(p) = places.pop() {
+            if let PlaceBase::Name(n) = &p.base {
+                let up = n.key();
+                if up == "__SYSTEM"
+                    || up == "TYPE_CLASS"
+                    || (!env.vars.contains_key(&up)
+                        && env.vars.contains_key(&format!("{up}{SIZE}")))
+                {
+                    return true;
+                }
+            }
+            for a in &p.accessors {
+                match a {
+                    Accessor::Index(ix) => stack.extend(ix.iter()),
+                    Accessor::Call { args, .. } => stack.extend(args.iter().map(|a| &a.value)),
+                    _ => {}
+                }
+            }
+            continue;
+        }
+        let Some(e) = stack.pop() else {
+            return false;
+        };
+        match &e.kind {
+            ExprKind::Place(p) => places.push(p),
+            ExprKind::Unary { operand, .. } => stack.push(operand),
+            ExprKind::Binary { left, right, .. } => {
+                stack.push(left);
+                stack.push(right);
+            }
+            ExprKind::Call { name, args } => {
+                if inputs_of(env, &name.name).is_some() {
+                    return true;
+                }
+                stack.extend(args.iter().map(|a| &a.value));
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Rewrites `s` (see the module documentation): `None` when nothing in it is an ANY input's call or
+/// use. Errors are reported and the offending argument or place is left as written (its lowering
+/// then reports nothing more of it: the statement is dropped when one is found).
+pub fn rewrite(
+    env: &Env,
+    type_of: &dyn Fn(&Expr) -> Option<TypeRef>,
+    s: &Stmt,
+    diags: &mut Diagnostics,
+) -> Option<Option<Stmt>> {
+    if !needs(env, s) {
+        return None;
+    }
+    let mut r = Rewrite {
+        env,
+        type_of,
+        changed: false,
+        failed: false,
+        diags,
+    };
+    let mut out = s.clone();
+    match &mut out.kind {
+        StmtKind::Assign { target, value } => {
+            r.place(target);
+            r.expr(value);
+        }
+        StmtKind::Call { callee, args } => {
+            r.place(callee);
+            if let PlaceBase::Name(n) = &callee.base {
+                if callee.accessors.is_empty() {
+                    let n = n.clone();
+                    r.call(&n, args);
+                }
+            }
+            for a in args.iter_mut() {
+                r.expr(&mut a.value);
+            }
+        }
+        StmtKind::If { branches, .. } => {
+            for b in branches {
+                r.expr(&mut b.cond);
+            }
+        }
+        StmtKind::Case { selector, arms, .. } => {
+            r.expr(selector);
+            for a in arms {
+                for l in &mut a.labels {
+                    match l {
+                        CaseLabel::Value(e) => r.expr(e),
+                        CaseLabel::Range(a, b) => {
+                            r.expr(a);
+                            r.expr(b);
+                        }
+                    }
+                }
+            }
+        }
+        StmtKind::For { from, to, by, .. } => {
+            r.expr(from);
+            r.expr(to);
+            if let Some(b) = by {
+                r.expr(b);
+            }
+        }
+        StmtKind::While { cond, .. } => r.expr(cond),
+        StmtKind::Repeat { until, .. } => r.expr(until),
+        _ => {}
+    }
+    if r.failed {
+        return Some(None);
+    }
+    r.changed.then_some(Some(out))
+}
+
+struct Rewrite<'a, 'e> {
+    env: &'a Env<'e>,
+    type_of: &'a dyn Fn(&Expr) -> Option<TypeRef>,
+    changed: bool,
+    failed: bool,
+    diags: &'a mut Diagnostics,
+}
+
+impl Rewrite<'_, '_> {
+    fn refuse(&mut self, at: crate::Span, msg: String, label: &str, hint: &str) {
+        self.diags.push(
+            Diagnostic::error(code::E1068, msg)
+                .at(at)
+                .with_primary_label(label)
+                .with_hint(hint),
+        );
+        self.failed = true;
+    }
+
+    fn expr(&mut self, e: &mut Expr) {
+        match &mut e.kind {
+            ExprKind::Place(p) => {
+                if let Some(v) = self.constant(p) {
+                    *e = Expr::literal(LiteralKind::Int(v), e.span);
+                    self.changed = true;
+                } else {
+                    self.place(p);
+                }
+            }
+            ExprKind::Unary { operand, .. } => self.expr(operand),
+            ExprKind::Binary { left, right, .. } => {
+                self.expr(left);
+                self.expr(right);
+            }
+            ExprKind::Call { name, args } => {
+                let n = name.clone();
+                self.call(&n, args);
+                for a in args.iter_mut() {
+                    self.expr(&mut a.value);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// `__SYSTEM.TYPE_CLASS.TYPE_INT` (or `TYPE_CLASS.TYPE_INT`): the class's number, when no
+    /// variable has the name.
+    fn constant(&self, p: &Place) -> Option<i128> {
+        let PlaceBase::Name(n) = &p.base else {
+            return None;
+        };
+        let fields: Vec<&Ident> = p
+            .accessors
+            .iter()
+            .map(|a| match a {
+                Accessor::Field(f) => Some(f),
+                _ => None,
+            })
+            .collect::<Option<_>>()?;
+        let value = match (n.name.to_ascii_uppercase().as_str(), fields.as_slice()) {
+            ("__SYSTEM", [t, v]) if t.is("TYPE_CLASS") => v,
+            ("TYPE_CLASS", [v]) => v,
+            _ => return None,
+        };
+        if self.env.var_type(n).is_some() {
+            return None;
+        }
+        class_number(&value.name)
+    }
+
+    /// `In.diSize` / `In.TypeClass` of an ANY input `In` of the function being lowered: its hidden
+    /// input; `In.pValue` or `In` alone: E1068.
+    fn place(&mut self, p: &mut Place) {
+        for a in p.accessors.iter_mut() {
+            if let Accessor::Index(ix) = a {
+                for e in ix.iter_mut() {
+                    self.expr(e);
+                }
+            }
+        }
+        let PlaceBase::Name(n) = &p.base else {
+            return;
+        };
+        if self.env.vars.contains_key(&n.key()) {
+            return;
+        }
+        let size = format!("{}{SIZE}", n.key());
+        if !self.env.vars.contains_key(&size) {
+            return;
+        }
+        let Some(class) = class_var(self.env, &n.name) else {
+            return;
+        };
+        let field = match p.accessors.first() {
+            Some(Accessor::Field(f)) if f.is("diSize") => size,
+            Some(Accessor::Field(f)) if f.is("TypeClass") => class,
+            _ => {
+                // once per input of the function (every use is dropped, the first reported)
+                let at = match p.accessors.first() {
+                    Some(Accessor::Field(f)) if f.is("pValue") => f.span,
+                    _ => p.span,
+                };
+                let msg = format!(
+                    "`{}` of `{}` is an ANY input: its address (`.pValue`) and its value are not compiled",
+                    n.name, self.env.pou_name.name
+                );
+                self.failed = true;
+                if self
+                    .diags
+                    .iter()
+                    .any(|d| d.code == code::E1068 && d.message == msg)
+                {
+                    return;
+                }
+                self.refuse(
+                    at,
+                    msg,
+                    "reads the argument through a pointer of an unknown type",
+                    "an ANY input is read through `.diSize` and `.TypeClass` here (CODESYS's __SYSTEM.AnyType); give the function an input of the argument's own type (a VAR_IN_OUT to change it) to read its value",
+                );
+                return;
+            }
+        };
+        p.base = PlaceBase::Name(Ident::new(field, n.span));
+        p.accessors.remove(0);
+        self.changed = true;
+    }
+
+    /// A call of a function with ANY inputs: each argument of one replaced by its size and class.
+    fn call(&mut self, f: &Ident, args: &mut Vec<Arg>) {
+        let Some(inputs) = inputs_of(self.env, &f.name) else {
+            return;
+        };
+        let formal = args.iter().any(|a| a.name.is_some());
+        let mut out = Vec::with_capacity(args.len() + 2);
+        for (k, a) in std::mem::take(args).into_iter().enumerate() {
+            let target = match &a.name {
+                Some(n) => inputs.iter().find(|(i, _)| n.is(i)),
+                None if !formal && a.dir == ArgDir::Input => inputs.get(k),
+                None => None,
+            };
+            let Some((input, Some((generic, class_input)))) = target else {
+                // (a positional argument becomes formal: the hidden inputs moved the others)
+                let mut a = a;
+                if let (None, Some((input, None))) = (&a.name, target) {
+                    a.name = Some(Ident::new(input.clone(), a.span));
+                }
+                out.push(a);
+                continue;
+            };
+            let (input, generic, class_input) =
+                (input.clone(), generic.clone(), class_input.clone());
+            self.changed = true;
+            let ExprKind::Place(place) = &a.value.kind else {
+                self.refuse(
+                    a.value.span,
+                    format!("the ANY input `{input}` of `{}` takes a variable", f.name),
+                    "not a variable",
+                    "pass a variable, an element or a field (its size and type class are passed): store the value in a variable first",
+                );
+                out.push(a);
+                continue;
+            };
+            let Some(ty) = (self.type_of)(&a.value) else {
+                // (an undeclared name: its own error comes from the lowering of the argument)
+                out.push(a);
+                continue;
+            };
+            if let Some(allowed) = family(&generic).flatten() {
+                let elementary = self.env.elementary(&ty).map(|e| e.name().to_string());
+                if !elementary
+                    .as_deref()
+                    .is_some_and(|e| allowed.iter().any(|x| x.eq_ignore_ascii_case(e)))
+                {
+                    self.refuse(
+                        a.value.span,
+                        format!(
+                            "the input `{input}` of `{}` is {generic}: {} is not one of its types",
+                            f.name,
+                            elementary
+                                .map_or("this argument's type".to_string(), |e| format!("`{e}`"))
+                        ),
+                        "argument",
+                        &format!("pass a value of one of: {}", allowed.join(", ")),
+                    );
+                    out.push(a);
+                    continue;
+                }
+            }
+            let span = a.span;
+            let size = Expr {
+                kind: ExprKind::Call {
+                    name: Ident::new("SIZEOF", span),
+                    args: vec![Arg {
+                        name: None,
+                        dir: ArgDir::Input,
+                        value: Expr {
+                            kind: ExprKind::Place(place.clone()),
+                            span: a.value.span,
+                        },
+                        span,
+                    }],
+                },
+                span,
+            };
+            let class = Expr::literal(LiteralKind::Int(class_of(self.env, &ty)), span);
+            for (name, value) in [(format!("{input}{SIZE}"), size), (class_input, class)] {
+                out.push(Arg {
+                    name: Some(Ident::new(name, span)),
+                    dir: ArgDir::Input,
+                    value,
+                    span,
+                });
+            }
+        }
+        *args = out;
+    }
+}
