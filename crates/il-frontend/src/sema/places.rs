@@ -293,6 +293,10 @@ impl Body<'_, '_> {
                 if assignable(&t, to) || super::refs::substitutes(&self.a.model, &t, to, false) {
                     return true;
                 }
+                if super::typing::pointer_reinterprets(&t, to, &self.a.model) {
+                    self.pointer_reinterpreted(&t, to, at);
+                    return true;
+                }
                 let (f, tt) = (self.a.type_name(&t), self.a.type_name(to));
                 mismatch(self, &f, &tt);
                 false
@@ -396,6 +400,32 @@ impl Body<'_, '_> {
                         None => return Place::error(),
                     };
                 }
+                // `p[i]` on a `POINTER TO T` (CODESYS, TwinCAT): the i-th T after `p^`, read and
+                // written as `p^` is; bounded at run time (c-backend refs.rs)
+                Accessor::Index(ixs) if matches!(place.ty, Type::Ref(_)) => {
+                    let Type::Ref(target) = &place.ty else {
+                        return Place::error();
+                    };
+                    if target.is_error() || ixs.len() != 1 {
+                        let path = path_text(v, at);
+                        let t = self.a.type_name(&place.ty);
+                        self.a
+                            .error(
+                                code::E1021,
+                                v.span,
+                                format!("`{path}` is {t}: a pointer takes one index"),
+                            )
+                            .label("indexed here")
+                            .hint("`p[i]` is the i-th element after `p^`; index a pointer to an array as `p^[i, j]`");
+                        return Place::error();
+                    }
+                    let target = (**target).clone();
+                    self.index_operand(&ixs[0]);
+                    place = Place {
+                        ty: target,
+                        read_only: None,
+                    };
+                }
                 Accessor::Index(ixs) => {
                     let Type::Array { dims, element } = &place.ty else {
                         let path = path_text(v, at);
@@ -427,6 +457,26 @@ impl Body<'_, '_> {
                         return Place::error();
                     }
                     for ix in ixs {
+                        self.index_operand(ix);
+                    }
+                    place = Place {
+                        ty: element,
+                        read_only: place.read_only,
+                    };
+                }
+                Accessor::Deref(_) => {
+                    place = match self.deref(place, v, at) {
+                        Some(p) => p,
+                        None => return Place::error(),
+                    };
+                }
+            }
+        }
+        place
+    }
+
+    /// Checks one index of an array (or pointer) access: an integer.
+    fn index_operand(&mut self, ix: &Operand) {
                         let t = self.read_operand(ix);
                         let n = self.norm(&t);
                         match n {
@@ -456,21 +506,6 @@ impl Body<'_, '_> {
                                     .hint("convert the index (REAL_TO_DINT ...)");
                             }
                         }
-                    }
-                    place = Place {
-                        ty: element,
-                        read_only: place.read_only,
-                    };
-                }
-                Accessor::Deref(_) => {
-                    place = match self.deref(place, v, at) {
-                        Some(p) => p,
-                        None => return Place::error(),
-                    };
-                }
-            }
-        }
-        place
     }
 
     /// Whether `v` is a qualified access to a global variable list, `GVL.x` (CODESYS, TwinCAT): its base

@@ -13,13 +13,16 @@
 use super::body::{Body, Ty};
 use super::model::*;
 use super::places::Place;
+use super::stdlib::StdFunction;
 use crate::ast::{self, Accessor, PouKind, RefOperand, VarKind};
 use diagnostics::code;
 
 /// Whether standard function `f` takes `t` for a parameter of class `c`: its class's types, and
-/// references for `EQ` and `NE` (`r = NULL`, `r1 <> r2`: whether they refer to the same variable).
+/// references for the comparisons (`r = NULL`, `r1 <> r2`: whether they stand for the same
+/// address; `p < q`: the addresses ordered, meaningful for two pointers into one variable).
 pub(super) fn class_admits(f: &str, c: super::stdlib::Class, t: &Type) -> bool {
-    c.contains(t) || (matches!(t, Type::Ref(_)) && matches!(f, "EQ" | "NE"))
+    c.contains(t)
+        || (matches!(t, Type::Ref(_)) && matches!(f, "EQ" | "NE" | "LT" | "LE" | "GT" | "GE"))
 }
 
 /// The chain of blocks (upper-case, root first) of user block `fb`, read from its class variable
@@ -59,18 +62,89 @@ impl Body<'_, '_> {
             .label("passed here")
             .hint("declare it `VAR_IN_OUT total : DINT` (passed by reference already) or `VAR_INPUT total : REFERENCE TO DINT`");
     }
-    /// Arithmetic or an ordering on a reference (`p := p + SIZEOF(T)`): refused, one E0305. A
-    /// reference always refers to a whole variable of its type: moving it would let it point
-    /// outside that variable, which C makes undefined behaviour.
+    /// Arithmetic on a reference other than `p + n`, `p - n` and `p - q` (`p * 2`, `p AND 3`):
+    /// refused, one E0305.
     pub(super) fn pointer_arithmetic(&mut self, f: &str, tn: &str, span: crate::Span) {
         self.a
             .error(
                 code::E0305,
                 span,
-                format!("`{f}` on a reference ({tn}): pointer arithmetic and ordering of references are not supported"),
+                format!("`{f}` on a reference ({tn}): only a byte count may be added to or subtracted from a pointer"),
             )
             .label("this is a reference")
-            .hint("index an array instead (`REF(buffer[i])`, or `p^[i]` on a reference to the whole array); compare references only with `=` and `<>`");
+            .hint("move a pointer with `p + n` / `p - n` (n bytes, e.g. `p + SIZEOF(p^)`) or index it (`p[i]`); compare pointers with `=`, `<>`, `<` ...");
+    }
+
+    /// `p + n` / `p - n` (CODESYS, TwinCAT pointer arithmetic: `n` counts bytes): a reference of
+    /// `p`'s type, when the first input is a reference and the second an integer; `p - q` of two
+    /// references: their distance in bytes, an LINT; `None` when the call is not that. The moved pointer is checked when it is dereferenced (c-backend refs.rs).
+    pub(super) fn pointer_step(
+        &mut self,
+        f: &StdFunction,
+        args: &[(Ty, crate::Span)],
+    ) -> Option<super::calls::Inst> {
+        if !matches!(f.name, "ADD" | "SUB") || args.len() != 2 {
+            return None;
+        }
+        let Ty::Known(p) = self.norm(&args[0].0) else {
+            return None;
+        };
+        if !matches!(&p, Type::Ref(target) if !target.is_error()) {
+            return None;
+        }
+        let ok = match self.norm(&args[1].0) {
+            // `p - q`: the bytes from q to p (an LINT), meaningful for two pointers into one
+            // variable
+            Ty::Known(Type::Ref(_)) if f.name == "SUB" => {
+                return Some(super::calls::Inst {
+                    name: f.name,
+                    t: Ty::Known(p),
+                    result: Ty::Known(Type::Elementary(Elementary::Lint)),
+                });
+            }
+            Ty::Known(t) => t.is_error() || t.is_integer(),
+            Ty::Lit(v) => self.lits.bind(v, &Type::Elementary(Elementary::Lint)).is_ok(),
+        };
+        if !ok {
+            let d = self.describe(&args[1].0);
+            let tn = self.a.type_name(&p);
+            self.a
+                .error(
+                    code::E1004,
+                    args[1].1,
+                    format!("{} of {tn} and {d}: a pointer moves by an integer number of bytes", f.name),
+                )
+                .label(format!("this is {d}"))
+                .hint("add a byte count: `p + SIZEOF(p^)`, `p + i * SIZEOF(T)`");
+            return Some(super::calls::Inst {
+                name: f.name,
+                t: Ty::ERROR,
+                result: Ty::ERROR,
+            });
+        }
+        Some(super::calls::Inst {
+            name: f.name,
+            t: Ty::Known(p.clone()),
+            result: Ty::Known(p),
+        })
+    }
+
+    /// W1425, once per POU: a reference stored into a reference to another type, which reads the
+    /// same bytes as that type (CODESYS and TwinCAT convert pointers freely; IEC 61131-3 keeps
+    /// references typed).
+    pub(super) fn pointer_reinterpreted(&mut self, from: &Type, to: &Type, at: crate::Span) {
+        if self.a.silent || !self.a.reinterpreting_pous.insert(self.pou) {
+            return;
+        }
+        let (f, t) = (self.a.type_name(from), self.a.type_name(to));
+        self.a
+            .warning(
+                code::W1425,
+                at,
+                format!("{f} stored into {t}: the pointer reads the same bytes as another type (its other uses in this POU are not reported)"),
+            )
+            .label(format!("this is {f}"))
+            .hint("IEC 61131-3 keeps references typed; CODESYS and TwinCAT convert pointers freely. Accesses stay inside the variable the pointer was made from and must be aligned for the new type");
     }
 
     /// The type of `REF(x)` / `ADR(x)` (a reference to `x`'s type) or `NULL` (a reference to
