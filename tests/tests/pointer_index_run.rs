@@ -66,14 +66,16 @@ fn methods_and_functions_index_pointer_inputs() {
 /// buf[6] becomes 600 and buf[2] grows); one DINT back from one past the end is the last element;
 /// `mid := ADR(buf[3])` reads `mid[-1]` and `mid[1]` (20 + 40 * 1000, growing with buf[2]);
 /// `ADR(mid[2])` is buf[5] (50), after `mid`; `q[1]` writes buf[6]; `ADR(buf[1]) = ADR(buf)`;
-/// `pEnd - first` is 20 bytes (five DINTs).
+/// `pEnd - first` is 20 bytes (five DINTs). `ps[k].x` / `ps[k].y` write the points through a
+/// `POINTER TO Pt` (x is k plus the last scan's sy); `py := ADR(ps[1].y)` keeps the whole array,
+/// so `py^ + py[1]` is pts[1].y + pts[2].x (12, 24, 36).
 #[test]
 fn pointer_arithmetic_counts_bytes_and_pointers_compare() {
     let (trace, _) = run_traced(
         &fixture("pointer_step.st"),
         3,
         "Main.sum,Main.count,Main.back,Main.around,Main.viaAdr,Main.ordered,Main.same,\
-         Main.buf[6],Main.buf[2],Main.dist",
+         Main.buf[6],Main.buf[2],Main.dist,Main.sy,Main.pts[2].x,Main.pts[1].y",
     );
     assert_eq!(column(&trace, "Main.sum"), [210.0, 751.0, 752.0], "{trace}");
     assert_eq!(column(&trace, "Main.count"), [6.0; 3]);
@@ -85,6 +87,9 @@ fn pointer_arithmetic_counts_bytes_and_pointers_compare() {
     assert_eq!(column(&trace, "Main.buf[6]"), [600.0; 3]);
     assert_eq!(column(&trace, "Main.buf[2]"), [21.0, 22.0, 23.0]);
     assert_eq!(column(&trace, "Main.dist"), [20.0; 3]);
+    assert_eq!(column(&trace, "Main.pts[1].y"), [10.0; 3]);
+    assert_eq!(column(&trace, "Main.pts[2].x"), [2.0, 14.0, 26.0]);
+    assert_eq!(column(&trace, "Main.sy"), [12.0, 24.0, 36.0]);
 }
 
 /// The bits of 1.0, 2.0, 4.0 through a `POINTER TO ULINT` started as `ADR(x)` of a FUNCTION's
@@ -122,7 +127,8 @@ fn pointers_to_another_type_read_the_same_bytes() {
     let w1425: Vec<&String> = lines.iter().filter(|l| l.contains("W1425")).collect();
     assert_eq!(w1425.len(), 3, "{lines:?}");
     assert!(
-        w1425[0].starts_with("casts.st:11:29: warning[W1425]: REF_TO LREAL stored into REF_TO ULINT"),
+        w1425[0]
+            .starts_with("casts.st:11:29: warning[W1425]: REF_TO LREAL stored into REF_TO ULINT"),
         "{lines:?}"
     );
     assert!(

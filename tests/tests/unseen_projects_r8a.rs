@@ -120,7 +120,8 @@ fn xml_pou_with_pointer_declarations_is_one_located_error() {
         errors[0]
     );
     assert!(
-        errors[0].contains("`total` of `FB_Average` is a VAR_IN_OUT of a reference type: not supported"),
+        errors[0]
+            .contains("`total` of `FB_Average` is a VAR_IN_OUT of a reference type: not supported"),
         "{}",
         errors[0]
     );

@@ -669,13 +669,7 @@ impl<'a> Gen<'a> {
                 } else {
                     "ladderc_ref_add("
                 };
-                Some(crate::cat(&[
-                    f,
-                    a,
-                    ", (int64_t)(",
-                    v,
-                    "))",
-                ]))
+                Some(crate::cat(&[f, a, ", (int64_t)(", v, "))"]))
             }
             "ADD" | "SUB" | "MUL" | "DIV" | "MOD" => {
                 let re = match result {

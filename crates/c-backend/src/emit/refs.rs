@@ -25,44 +25,16 @@ use il_frontend::ast::{Accessor, Operand, RefOperand, SizeOfOperand, VarRef};
 use il_frontend::sema::{Elementary, Type};
 
 impl Gen<'_> {
-    /// The value of `REF(x)` / `ADR(x)` / `NULL` as a C `IEC_REF` expression. `ADR(p^)` is `p`
-    /// itself and `ADR(p[i])` is `p` moved by `i` elements (they keep the variable `p` was made
-    /// from); `ADR(a[i])` of an array element refers into the whole array `a`.
+    /// The value of `REF(x)` / `ADR(x)` / `NULL` as a C `IEC_REF` expression. An address taken
+    /// through a pointer keeps the variable that pointer was made from: `ADR(p^)` is `p`,
+    /// `ADR(p[i])` is `p` moved by i elements, `ADR(ps[i].y)` moved on to the field `y` (see
+    /// [`Self::through_pointer`]); `ADR(a[i])` of an array element refers into the whole array `a`.
     pub(super) fn reference_value(&mut self, scope: &Scope, r: &RefOperand) -> Option<String> {
         let Some(v) = &r.of else {
             return Some("ladderc_ref(NULL, 0)".into());
         };
-        if let Some((last, rest)) = v.accessors.split_last() {
-            let prefix = VarRef {
-                base: v.base.clone(),
-                accessors: rest.to_vec().into(),
-                span: v.span,
-            };
-            let through = !(v.base.is("THIS") && rest.is_empty());
-            match last {
-                Accessor::Deref(_) if through => {
-                    if let Place::Mem { lv, ty: Type::Ref(_) } = self.place(scope, &prefix)? {
-                        return Some(lv);
-                    }
-                }
-                Accessor::Index(ix) if ix.len() == 1 => {
-                    if let Place::Mem {
-                        lv,
-                        ty: Type::Ref(target),
-                    } = self.place(scope, &prefix)?
-                    {
-                        let i = self.value(scope, &ix[0], &Type::Elementary(Elementary::Lint))?;
-                        let (base, dims) = (
-                            ctypes::base(self.model, &target)?,
-                            ctypes::dims(&target),
-                        );
-                        return Some(cfmt!(
-                            "ladderc_ref_index({lv}, (int64_t)({i}), sizeof({base}{dims}))"
-                        ));
-                    }
-                }
-                _ => {}
-            }
+        if let Some(moved) = self.through_pointer(scope, v) {
+            return moved;
         }
         match self.place(scope, v)? {
             Place::Mem { lv, .. } => {
@@ -81,15 +53,100 @@ impl Gen<'_> {
         }
     }
 
+    /// `ADR(path)` when `path` goes through a pointer (its last `p^` or `p[i]`, followed by fields
+    /// and array indexes only): that pointer, moved by i elements for `p[i]`, then by the byte
+    /// offset of the rest of the path inside the pointer's target type, measured on the target
+    /// type's scratch object (so no access is made: `ADR` of a place outside the variable is a
+    /// pointer outside it, a fault only when dereferenced). `None` when `path` goes through no
+    /// pointer; `Some(None)` when its C cannot be generated (reported).
+    fn through_pointer(&mut self, scope: &Scope, v: &VarRef) -> Option<Option<String>> {
+        for k in (0..v.accessors.len()).rev() {
+            let index = match &v.accessors[k] {
+                Accessor::Deref(_) if !(k == 0 && v.base.is("THIS")) => None,
+                Accessor::Index(ix) if ix.len() == 1 => Some(&ix[0]),
+                _ => continue,
+            };
+            let prefix = VarRef {
+                base: v.base.clone(),
+                accessors: v.accessors[..k].to_vec().into(),
+                span: v.span,
+            };
+            self.quiet += 1;
+            let place = self.place(scope, &prefix);
+            self.quiet -= 1;
+            let Some(Place::Mem {
+                lv,
+                ty: Type::Ref(target),
+            }) = place
+            else {
+                continue;
+            };
+            return Some(self.moved_pointer(
+                scope,
+                &lv,
+                &target,
+                index,
+                &v.accessors[k + 1..],
+                v.span,
+            ));
+        }
+        None
+    }
+
+    /// The pointer `lv` (to `target`) moved by `index` elements and then to the place `rest`
+    /// (fields and array indexes) inside its target.
+    fn moved_pointer(
+        &mut self,
+        scope: &Scope,
+        lv: &str,
+        target: &Type,
+        index: Option<&Operand>,
+        rest: &[Accessor],
+        span: Span,
+    ) -> Option<String> {
+        let base = ctypes::base(self.model, target)?;
+        let dims = ctypes::dims(target);
+        let (scratch, _) = self.null_scratch(&base, &dims);
+        let mut p = match index {
+            None => lv.to_string(),
+            Some(i) => {
+                let i = self.value(scope, i, &Type::Elementary(Elementary::Lint))?;
+                cfmt!("ladderc_ref_index({lv}, (int64_t)({i}), sizeof {scratch})")
+            }
+        };
+        if !rest.is_empty() {
+            let mut at = Place::Mem {
+                lv: scratch.clone(),
+                ty: target.clone(),
+            };
+            for acc in rest {
+                let Place::Mem { lv: l, ty } = at else {
+                    return None;
+                };
+                at = match acc {
+                    Accessor::Field(f) => self.field(&l, &ty, f)?,
+                    Accessor::Index(ix) => self.index(scope, &l, &ty, ix, span)?,
+                    Accessor::Deref(d) => {
+                        self.unsupported(*d, "this address");
+                        return None;
+                    }
+                };
+            }
+            let Place::Mem { lv: inner, .. } = at else {
+                return None;
+            };
+            p = cfmt!(
+                "ladderc_ref_add({p}, (int64_t)((const unsigned char *)&({inner}) - (const unsigned char *)&{scratch}))"
+            );
+        }
+        Some(p)
+    }
+
     /// The C lvalue of the array variable whose element `v` is (the array of its last index, when
     /// no reference is followed on the way: `buf[i]`, `s.rows[i].x`), the object a reference to
     /// `v` is made from.
     fn enclosing_array(&mut self, scope: &Scope, v: &VarRef) -> Option<String> {
-        if v
-            .accessors
-            .iter()
-            .any(|a| matches!(a, Accessor::Deref(_)))
-        {
+        if v.accessors.iter().any(|a| matches!(a, Accessor::Deref(_))) {
             return None;
         }
         let k = v

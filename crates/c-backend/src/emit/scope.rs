@@ -479,7 +479,12 @@ impl Gen<'_> {
         Some(place)
     }
 
-    fn field(&mut self, lv: &str, ty: &Type, f: &il_frontend::ast::Ident) -> Option<Place> {
+    pub(super) fn field(
+        &mut self,
+        lv: &str,
+        ty: &Type,
+        f: &il_frontend::ast::Ident,
+    ) -> Option<Place> {
         match ty {
             Type::Struct(id) => {
                 if let Some(v) = self.struct_field(*id, &f.name) {
@@ -536,7 +541,7 @@ impl Gen<'_> {
         None
     }
 
-    fn index(
+    pub(super) fn index(
         &mut self,
         scope: &Scope,
         lv: &str,

@@ -144,7 +144,10 @@ impl Analyzer<'_> {
                 Accessor::Deref(_) => return refuse("a dereference has no fixed address"),
             }
         }
-        let (from, to) = (Type::Ref(Box::new(ty.clone())), Type::Ref(Box::new(target.clone())));
+        let (from, to) = (
+            Type::Ref(Box::new(ty.clone())),
+            Type::Ref(Box::new(target.clone())),
+        );
         if &ty != target
             && !ty.is_error()
             && !target.is_error()

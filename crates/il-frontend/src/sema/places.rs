@@ -477,35 +477,31 @@ impl Body<'_, '_> {
 
     /// Checks one index of an array (or pointer) access: an integer.
     fn index_operand(&mut self, ix: &Operand) {
-                        let t = self.read_operand(ix);
-                        let n = self.norm(&t);
-                        match n {
-                            Ty::Known(k) if k.is_error() || k.is_integer() => {}
-                            Ty::Lit(var) => {
-                                // An index literal is a DINT unless it does not fit.
-                                if self.lits.bind(var, &Type::DINT).is_err() {
-                                    self.a
-                                        .error(
-                                            code::E1021,
-                                            ix.span(),
-                                            "an array index must be an integer",
-                                        )
-                                        .label("not an integer")
-                                        .hint("index with an integer variable or literal");
-                                }
-                            }
-                            other => {
-                                let d = self.describe(&other);
-                                self.a
-                                    .error(
-                                        code::E1021,
-                                        ix.span(),
-                                        format!("an array index must be an integer, not {d}"),
-                                    )
-                                    .label(format!("this is {d}"))
-                                    .hint("convert the index (REAL_TO_DINT ...)");
-                            }
-                        }
+        let t = self.read_operand(ix);
+        let n = self.norm(&t);
+        match n {
+            Ty::Known(k) if k.is_error() || k.is_integer() => {}
+            Ty::Lit(var) => {
+                // An index literal is a DINT unless it does not fit.
+                if self.lits.bind(var, &Type::DINT).is_err() {
+                    self.a
+                        .error(code::E1021, ix.span(), "an array index must be an integer")
+                        .label("not an integer")
+                        .hint("index with an integer variable or literal");
+                }
+            }
+            other => {
+                let d = self.describe(&other);
+                self.a
+                    .error(
+                        code::E1021,
+                        ix.span(),
+                        format!("an array index must be an integer, not {d}"),
+                    )
+                    .label(format!("this is {d}"))
+                    .hint("convert the index (REAL_TO_DINT ...)");
+            }
+        }
     }
 
     /// Whether `v` is a qualified access to a global variable list, `GVL.x` (CODESYS, TwinCAT): its base

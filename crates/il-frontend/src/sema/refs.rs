@@ -103,7 +103,10 @@ impl Body<'_, '_> {
                 });
             }
             Ty::Known(t) => t.is_error() || t.is_integer(),
-            Ty::Lit(v) => self.lits.bind(v, &Type::Elementary(Elementary::Lint)).is_ok(),
+            Ty::Lit(v) => self
+                .lits
+                .bind(v, &Type::Elementary(Elementary::Lint))
+                .is_ok(),
         };
         if !ok {
             let d = self.describe(&args[1].0);
@@ -112,7 +115,10 @@ impl Body<'_, '_> {
                 .error(
                     code::E1004,
                     args[1].1,
-                    format!("{} of {tn} and {d}: a pointer moves by an integer number of bytes", f.name),
+                    format!(
+                        "{} of {tn} and {d}: a pointer moves by an integer number of bytes",
+                        f.name
+                    ),
                 )
                 .label(format!("this is {d}"))
                 .hint("add a byte count: `p + SIZEOF(p^)`, `p + i * SIZEOF(T)`");

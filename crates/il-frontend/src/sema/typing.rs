@@ -83,7 +83,10 @@ pub fn decays_to(from: &Type, to: &Type) -> bool {
 pub fn pointer_reinterprets(from: &Type, to: &Type, model: &super::model::Model) -> bool {
     match (from, to) {
         (Type::Ref(a), Type::Ref(b)) => {
-            !a.is_error() && !b.is_error() && holds_no_reference(a, model) && holds_no_reference(b, model)
+            !a.is_error()
+                && !b.is_error()
+                && holds_no_reference(a, model)
+                && holds_no_reference(b, model)
         }
         _ => false,
     }
