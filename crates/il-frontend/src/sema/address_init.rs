@@ -17,6 +17,10 @@ use super::Analyzer;
 use crate::ast::{self, Accessor, LiteralKind, Operand, VarKind};
 use diagnostics::{code, Span};
 
+/// The steps of an `ADR(path)` initial value from its base variable, and the type names (from, to)
+/// when the pointer reads the variable as another type (W1425).
+type AddressOf = (Vec<AddressStep>, Option<(String, String)>);
+
 impl Analyzer<'_> {
     /// Sets the `ADR(path)` initial values of `out`, declared from `blocks` (see the module
     /// documentation); `pou`: the kind of the POU, `None` for a structure or global list.
@@ -72,7 +76,7 @@ impl Analyzer<'_> {
         target: &Type,
         out: &[Variable],
         pou: Option<ast::PouKind>,
-    ) -> Result<(Vec<AddressStep>, Option<(String, String)>), (diagnostics::Code, String)> {
+    ) -> Result<AddressOf, (diagnostics::Code, String)> {
         let text = crate::print::var_ref_text(path);
         let refuse = |why: &str| {
             Err((
