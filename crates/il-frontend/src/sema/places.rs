@@ -400,30 +400,11 @@ impl Body<'_, '_> {
                         None => return Place::error(),
                     };
                 }
-                // `p[i]` on a `POINTER TO T` (CODESYS, TwinCAT): the i-th T after `p^`, read and
-                // written as `p^` is; bounded at run time (c-backend refs.rs)
+                // `p[i]` on a `POINTER TO T` (CODESYS, TwinCAT): refs.rs
                 Accessor::Index(ixs) if matches!(place.ty, Type::Ref(_)) => {
-                    let Type::Ref(target) = &place.ty else {
-                        return Place::error();
-                    };
-                    if target.is_error() || ixs.len() != 1 {
-                        let path = path_text(v, at);
-                        let t = self.a.type_name(&place.ty);
-                        self.a
-                            .error(
-                                code::E1021,
-                                v.span,
-                                format!("`{path}` is {t}: a pointer takes one index"),
-                            )
-                            .label("indexed here")
-                            .hint("`p[i]` is the i-th element after `p^`; index a pointer to an array as `p^[i, j]`");
-                        return Place::error();
-                    }
-                    let target = (**target).clone();
-                    self.index_operand(&ixs[0]);
-                    place = Place {
-                        ty: target,
-                        read_only: None,
+                    place = match self.pointer_index(place, v, at, ixs) {
+                        Some(p) => p,
+                        None => return Place::error(),
                     };
                 }
                 Accessor::Index(ixs) => {
@@ -476,7 +457,7 @@ impl Body<'_, '_> {
     }
 
     /// Checks one index of an array (or pointer) access: an integer.
-    fn index_operand(&mut self, ix: &Operand) {
+    pub(super) fn index_operand(&mut self, ix: &Operand) {
         let t = self.read_operand(ix);
         let n = self.norm(&t);
         match n {
@@ -1178,7 +1159,7 @@ pub(super) fn fb_param_list(model: &Model, fb: FbType) -> Vec<(String, ParamDir,
 }
 
 /// The text of `v` up to (not including) accessor `upto`: `s.a[..]` (for messages).
-fn path_text(v: &VarRef, upto: usize) -> String {
+pub(super) fn path_text(v: &VarRef, upto: usize) -> String {
     let mut p = v.base.name.clone();
     for acc in v.accessors.iter().take(upto) {
         match acc {

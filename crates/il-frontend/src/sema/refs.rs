@@ -1,14 +1,18 @@
 //! References in bodies (IEC 61131-3 edition 3, 6.4.4.10; CODESYS/TwinCAT pointers and
-//! `REFERENCE TO`): the type of `REF(x)` / `ADR(x)` / `NULL`, the dereference `r^`, the
-//! variables whose address may not be taken, and `SIZEOF(x)` / `SIZEOF(T)` (the bytes of a variable
-//! or type in the generated C).
+//! `REFERENCE TO`): the type of `REF(x)` / `ADR(x)` / `NULL`, the dereference `r^`, pointer
+//! arithmetic (`p + n` / `p - n` in bytes, `p - q`, comparisons), a pointer stored into a pointer to
+//! another type (W1425), the variables whose address may not be taken, and `SIZEOF(x)` /
+//! `SIZEOF(T)` (the bytes of a variable or type in the generated C). `p[i]` is typed in
+//! `places.rs`.
 //!
 //! Input: operands and accesses of one body. Output: their types and diagnostics. Invariants: a
 //! reference is only ever made to storage that outlives every reference to it: a variable of a
 //! program or function block instance, a global, or what another reference refers to; `REF` of a
 //! VAR_TEMP, of any variable of a FUNCTION (the standard's rule: they live for one call), of a
 //! VAR_IN_OUT (it may be the caller's temporary), of a located variable or of a bit of a variable
-//! is one E0305 at the operand.
+//! is one E0305 at the operand. Moving a pointer is allowed because the C bounds every access
+//! through it to the variable it was made from (c-backend `emit/refs.rs`); converting one is
+//! allowed only between types that hold no reference, so that no reference is made from bytes.
 
 use super::body::{Body, Ty};
 use super::model::*;
@@ -230,6 +234,38 @@ impl Body<'_, '_> {
             }
             _ => None,
         }
+    }
+
+    /// `p[i]` on a `POINTER TO T` (CODESYS, TwinCAT): the i-th T after `p^`, read and written as
+    /// `p^` is (bounded at run time: c-backend refs.rs); one integer index (E1021 otherwise).
+    pub(super) fn pointer_index(
+        &mut self,
+        place: Place,
+        v: &ast::VarRef,
+        at: usize,
+        ixs: &[ast::Operand],
+    ) -> Option<Place> {
+        let Type::Ref(target) = place.ty else {
+            return None;
+        };
+        if target.is_error() || ixs.len() != 1 {
+            let path = super::places::path_text(v, at);
+            let t = self.a.type_name(&Type::Ref(target));
+            self.a
+                .error(
+                    code::E1021,
+                    v.span,
+                    format!("`{path}` is {t}: a pointer takes one index"),
+                )
+                .label("indexed here")
+                .hint("`p[i]` is the i-th element after `p^`; index a pointer to an array as `p^[i, j]`");
+            return None;
+        }
+        self.index_operand(&ixs[0]);
+        Some(Place {
+            ty: *target,
+            read_only: None,
+        })
     }
 
     /// `r^`: the variable `place` (a reference) refers to, writable whatever `place` is.
