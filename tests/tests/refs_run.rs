@@ -10,9 +10,11 @@
 //!   main; ...)`): no NULL pointer is ever dereferenced in C (the runs use `--sanitize`).
 //! - What stays refused, one located diagnostic each: `REF` of a VAR_TEMP, of a FUNCTION's
 //!   variable, of a VAR_IN_OUT, of a located variable or a bit (they could dangle or have no
-//!   address: E0305), pointer arithmetic and ordering (E0305, also `p + SIZEOF(INT)`), `^` on what is no
-//!   reference (E1021), a reference to another type (E1006), a VAR_IN_OUT of a reference type
-//!   (E0305).
+//!   address: E0305), arithmetic on a pointer other than `p + n` / `p - n` (E0305), `^` on what is
+//!   no reference (E1021), a reference to a type holding references stored into one to another type
+//!   (E1006), a VAR_IN_OUT of a reference type (E0305). (Pointer indexing, byte arithmetic,
+//!   ordering and conversions between pointer types run since issue #13's pointer round:
+//!   `tests/tests/pointer_index_run.rs`.)
 //!
 //! Before: every such declaration was E0305 and the POU's body was not compiled.
 
@@ -209,21 +211,24 @@ fn dangling_references_and_pointer_arithmetic_are_located_errors() {
     let src = "FUNCTION f : INT\nVAR_INPUT x : INT; END_VAR\nVAR r : REF_TO INT; END_VAR\nr := REF(x);\nf := r^;\nEND_FUNCTION\n\
 FUNCTION_BLOCK fb\nVAR_IN_OUT io : INT; END_VAR\nVAR r : REF_TO INT; END_VAR\nr := REF(io);\nEND_FUNCTION_BLOCK\n\
 PROGRAM main\nVAR\n  p : POINTER TO INT;\n  q : POINTER TO INT;\n  r : REF_TO INT;\n  i : INT;\n  b AT %IX0.0 : BOOL;\n  rb : REF_TO BOOL;\n  w : WORD;\n  lt : BOOL;\nEND_VAR\nVAR_TEMP t : INT; END_VAR\n\
-p := ADR(i);\np := p + 2;\nlt := p < q;\nr := REF(t);\nrb := REF(b);\nrb := REF(w.3);\ni := i^;\nr := REF(w);\np := p + SIZEOF(INT);\ni := f(1);\nEND_PROGRAM\n";
+p := ADR(i);\np := p * 2;\nlt := p AND q;\nr := REF(t);\nrb := REF(b);\nrb := REF(w.3);\ni := i^;\nrb := REF(p);\np := p + 1.5;\ni := f(1);\nEND_PROGRAM\n";
     assert_eq!(
         rejected_heads("refs.st", src),
         [
             "refs.st:4:6: error[E0305]: a reference to `x` is not allowed: the variables of a FUNCTION live for one call (IEC 61131-3, 6.4.4.10)",
             "refs.st:10:6: error[E0305]: a reference to `io` is not allowed: a VAR_IN_OUT may stand for a temporary variable of the caller",
-            "refs.st:25:6: error[E0305]: `ADD` on a reference (REF_TO INT): pointer arithmetic and ordering of references are not supported",
-            "refs.st:26:7: error[E0305]: `LT` on a reference (REF_TO INT): pointer arithmetic and ordering of references are not supported",
+            // `p + n` / `p - n` (bytes), `p[i]`, `p < q` and pointers to other types are
+            // allowed since issue #13's pointer round (tests/tests/pointer_index_run.rs): other
+            // arithmetic on a pointer, a pointer to a type holding references and a pointer
+            // moved by a non-integer stay errors
+            "refs.st:25:6: error[E0305]: `MUL` on a reference (REF_TO INT): only a byte count may be added to or subtracted from a pointer",
+            "refs.st:26:7: error[E0305]: `AND` on a reference (REF_TO INT): only a byte count may be added to or subtracted from a pointer",
             "refs.st:27:6: error[E0305]: a reference to `t` is not allowed: a VAR_TEMP variable lives for one call (IEC 61131-3, 6.4.4.10)",
             "refs.st:28:7: error[E0305]: a reference to `b` is not allowed: a located variable lives in the process image, which has no references",
             "refs.st:29:7: error[E0305]: a reference to `w.3` is not allowed: a bit or part of a variable has no address",
             "refs.st:30:6: error[E1021]: `i` is INT, not a reference: `^` cannot follow it",
-            "refs.st:31:1: error[E1006]: cannot store REF_TO WORD into REF_TO INT",
-            // SIZEOF(INT) is a size now (tests/tests/lang_left_r12.rs): the arithmetic is the error
-            "refs.st:32:6: error[E0305]: `ADD` on a reference (REF_TO INT): pointer arithmetic and ordering of references are not supported",
+            "refs.st:31:1: error[E1006]: cannot store REF_TO REF_TO INT into REF_TO BOOL",
+            "refs.st:32:10: error[E1004]: ADD of REF_TO INT and a real literal: a pointer moves by an integer number of bytes",
         ]
     );
 }

@@ -649,5 +649,6 @@ int main(int argc, char **argv) {
     if (ladderc_errors & LADDERC_ERR_MUX) fprintf(stderr, "runtime: MUX selector K out of range (IN0 selected)\n");
     if (ladderc_errors & LADDERC_ERR_NULL_REF) fprintf(stderr, "runtime: NULL reference dereferenced (first: %s; zero read, write dropped)\n", ladderc_null_ref_site);
     if (ladderc_errors & LADDERC_ERR_MEM) fprintf(stderr, "runtime: memory function count beyond its variables (first: %s; clipped to their size)\n", ladderc_mem_site);
+    if (ladderc_errors & LADDERC_ERR_POINTER) fprintf(stderr, "runtime: pointer outside its variable dereferenced (first: %s; zero read, write dropped)\n", ladderc_pointer_site);
     return 0;
 }

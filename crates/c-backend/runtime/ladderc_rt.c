@@ -11,6 +11,7 @@
 uint32_t ladderc_errors = 0;
 const char *ladderc_null_ref_site = "";
 const char *ladderc_mem_site = "";
+const char *ladderc_pointer_site = "";
 IEC_TIME ladderc_now = 0;
 uint64_t ladderc_cycle = 0;
 

@@ -70,8 +70,15 @@ typedef struct {
     uint16_t data[LADDERC_STRING_CAP + 1];
 } IEC_WSTRING;
 
-/* A reference (REF_TO, POINTER TO, REFERENCE TO): the address of its variable, or NULL. */
-typedef void *IEC_REF;
+/* A reference (REF_TO, POINTER TO, REFERENCE TO), bounded: the variable it was made from (`base`, its
+ * address, NULL for NULL; `size`, its bytes) and the byte offset `off` into it that pointer arithmetic and
+ * indexing moved to (0 as made by REF/ADR). Every access through it goes through ladderc_deref, which
+ * checks `off` against `size`, so no reference reaches outside the variable it was made from. */
+typedef struct {
+    unsigned char *base;
+    uint32_t size;
+    int32_t off;
+} IEC_REF;
 
 /* ------------------------------------------------------------------ runtime state */
 #define LADDERC_ERR_DIV_ZERO 1u /* integer DIV or MOD by zero: result 0 */
@@ -82,12 +89,14 @@ typedef void *IEC_REF;
 #define LADDERC_ERR_MUX 32u     /* MUX selector K outside 0..n-1: IN0 selected */
 #define LADDERC_ERR_NULL_REF 64u /* a NULL reference dereferenced: zero read, write dropped */
 #define LADDERC_ERR_MEM 128u     /* MEMCPY/MEMMOVE/MEMSET/MEMCMP count beyond its variables: clipped */
+#define LADDERC_ERR_POINTER 256u /* a pointer moved outside its variable dereferenced: zero read, write dropped */
 
 extern uint32_t ladderc_errors;  /* sticky error flags, LADDERC_ERR_* */
 extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set before each cycle */
 extern uint64_t ladderc_cycle;   /* the current cycle number, from 0 */
 extern const char *ladderc_null_ref_site; /* where the first NULL reference was dereferenced */
 extern const char *ladderc_mem_site;      /* where the first memory function count was clipped */
+extern const char *ladderc_pointer_site;  /* where the first pointer outside its variable was dereferenced */
 
 /* The loop guard. Every jump back in the generated code (the end of a WHILE, REPEAT or FOR pass, an IL
  * jump to an earlier label) passes LADDERC_LOOP_GUARD(file, start, end) with the source span of the
@@ -323,13 +332,64 @@ static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi) {
     return (size_t)((uint64_t)i - (uint64_t)lo);
 }
 
-/* A dereference `r^` of a reference (a `void *`): the variable it refers to, or for NULL the zeroed
- * scratch object `scratch` of `n` bytes (so a read gives zero and a write is dropped) with
- * LADDERC_ERR_NULL_REF set and the place of the first one kept. NULL is never dereferenced. */
-static inline void *ladderc_deref(void *p, void *scratch, size_t n, const char *site) {
-    if (p != NULL) return p;
-    if (!(ladderc_errors & LADDERC_ERR_NULL_REF)) ladderc_null_ref_site = site;
-    ladderc_errors |= LADDERC_ERR_NULL_REF;
+/* REF(x) / ADR(x): a reference to the `size` bytes at `base` (NULL for NULL). */
+static inline IEC_REF ladderc_ref(void *base, size_t size) {
+    IEC_REF r;
+    r.base = (unsigned char *)base;
+    r.size = (uint32_t)size;
+    r.off = 0;
+    return r;
+}
+/* ADR(a[i]): the element at `at` of the array `whole` of `size` bytes, as a reference into the whole
+ * array (so that indexing and arithmetic may move it to the other elements). `at` lies in `whole`. */
+static inline IEC_REF ladderc_ref_in(void *whole, size_t size, const void *at) {
+    IEC_REF r = ladderc_ref(whole, size);
+    r.off = (int32_t)((const unsigned char *)at - (const unsigned char *)whole);
+    return r;
+}
+/* `r + bytes` (CODESYS/TwinCAT pointer arithmetic counts bytes): the offset moved, computed without
+ * overflow and saturated far outside any variable (the data budget is far below 2^31 bytes). */
+static inline IEC_REF ladderc_ref_add(IEC_REF r, int64_t bytes) {
+    int64_t o = (int64_t)r.off;
+    if (bytes > INT32_MAX || bytes < INT32_MIN) o = bytes > 0 ? INT32_MAX : INT32_MIN;
+    else o += bytes;
+    if (o > INT32_MAX) o = INT32_MAX;
+    if (o < INT32_MIN) o = INT32_MIN;
+    r.off = (int32_t)o;
+    return r;
+}
+/* `r - bytes`. */
+static inline IEC_REF ladderc_ref_sub(IEC_REF r, int64_t bytes) {
+    return ladderc_ref_add(r, bytes == INT64_MIN ? INT64_MAX : -bytes);
+}
+/* `p[i]` of a POINTER TO T: `p` moved by i elements of `n` bytes (the i-th T after p^). */
+static inline IEC_REF ladderc_ref_index(IEC_REF r, int64_t i, size_t n) {
+    if (n != 0 && (i > INT32_MAX / (int64_t)n || i < INT32_MIN / (int64_t)n)) i = i > 0 ? INT32_MAX : INT32_MIN;
+    else i *= (int64_t)n;
+    return ladderc_ref_add(r, i);
+}
+/* The address a reference stands for, as an integer (NULL counts as address 0): what `=`, `<>`, `<`
+ * ... compare. Computed in integers, so it is defined for any offset. */
+static inline uintptr_t ladderc_ref_addr(IEC_REF r) {
+    return (uintptr_t)r.base + (uintptr_t)(intptr_t)r.off;
+}
+
+/* A dereference `r^` (or `p[i]`, after ladderc_ref_index) of a reference: the address of the `n` bytes
+ * (of alignment `align`) it refers to, or the zeroed scratch object `scratch` of `n` bytes (so a read
+ * gives zero and a write is dropped) for NULL (LADDERC_ERR_NULL_REF) and for a reference moved outside
+ * its variable or to a misaligned place (LADDERC_ERR_POINTER), with the place of the first of each
+ * kept. No NULL pointer is dereferenced and no byte outside the variable is reached. */
+static inline void *ladderc_deref(IEC_REF r, size_t n, size_t align, void *scratch, const char *site) {
+    if (r.base == NULL) {
+        if (!(ladderc_errors & LADDERC_ERR_NULL_REF)) ladderc_null_ref_site = site;
+        ladderc_errors |= LADDERC_ERR_NULL_REF;
+    } else if (r.off >= 0 && (uint64_t)r.off + (uint64_t)n <= (uint64_t)r.size &&
+               ((uintptr_t)(r.base + r.off)) % (align ? align : 1) == 0) {
+        return r.base + r.off;
+    } else {
+        if (!(ladderc_errors & LADDERC_ERR_POINTER)) ladderc_pointer_site = site;
+        ladderc_errors |= LADDERC_ERR_POINTER;
+    }
     memset(scratch, 0, n);
     return scratch;
 }

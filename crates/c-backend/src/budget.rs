@@ -34,7 +34,7 @@ impl Sizer<'_> {
     fn try_size(&self, ty: &Type) -> Result<Size, Key> {
         Ok(match ty {
             Type::Elementary(e) => Some(u64::from(e.size_bytes())),
-            Type::Ref(_) => Some(8),
+            Type::Ref(_) => Some(16),
             Type::String { wide, len } => {
                 let unit = if *wide { 2 } else { 1 };
                 u64::from(*len)

@@ -1,7 +1,7 @@
 //! Building and running a generated C project with the system C compiler.
 //!
 //! Input: a [`CProgram`] and a directory. Output: the files written there, an executable compiled with
-//! `$CC` (default `cc`) `-std=c99 -O2`, and [`run`] results (exit status, stdout, stderr).
+//! `$CC` (default `cc`) `-std=c99 -O2 -fno-strict-aliasing`, and [`run`] results (exit status, stdout, stderr).
 //! Invariants: the compiler is invoked directly (no shell, no make); a failed compilation returns the
 //! compiler's output in the error.
 
@@ -91,7 +91,7 @@ pub fn makefile(program: &CProgram) -> String {
          HDRS = {hdrs}\n\
          \n\
          {exe}: $(SRCS) $(HDRS){motion_dep}\n\
-         \t$(CC) -std=c99 $(CFLAGS) $(SECTIONS) -o $@ $(SRCS) {link} $(LDFLAGS)\n\
+         \t$(CC) -std=c99 -fno-strict-aliasing $(CFLAGS) $(SECTIONS) -o $@ $(SRCS) {link} $(LDFLAGS)\n\
          \n\
          clean:\n\
          \trm -f {exe}\n\
@@ -153,6 +153,8 @@ pub fn build_with(
     cmd.args(words)
         .arg("-std=c99")
         .arg("-O2")
+        // a pointer may read a variable's bytes as another type (W1425), as CODESYS and TwinCAT do
+        .arg("-fno-strict-aliasing")
         .args(&opts.extra_flags)
         .arg("-o")
         .arg(&exe)

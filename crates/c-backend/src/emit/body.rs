@@ -494,6 +494,10 @@ impl<'a> Gen<'a> {
             if matches!(op, Op::Sub | Op::Add) && t.elementary().is_some_and(|e| e.is_duration()) {
                 return t;
             }
+            // `p + n`: the byte count keeps its integer type
+            if matches!(op, Op::Sub | Op::Add) && matches!(common, Type::Ref(_)) {
+                return t;
+            }
         }
         common
     }
@@ -609,11 +613,27 @@ impl<'a> Gen<'a> {
                         " 0))",
                     ]));
                 }
-                if let (Type::Ref(_), "EQ" | "NE") = (aty, name) {
-                    // references: the same variable, or both NULL (equality of pointers is
-                    // defined in C for any two valid pointers or NULL)
-                    let c = if name == "EQ" { "==" } else { "!=" };
-                    return Some(crate::cat(&["((IEC_BOOL)((", a, ") ", c, " (", v, ")))"]));
+                if let Type::Ref(_) = aty {
+                    // references: the addresses they stand for (NULL is 0), compared as integers
+                    // (`ladderc_ref_addr`), so any two references compare without undefined
+                    // behaviour; ordering is meaningful between references into one variable
+                    let c = match name {
+                        "GT" => ">",
+                        "GE" => ">=",
+                        "EQ" => "==",
+                        "NE" => "!=",
+                        "LE" => "<=",
+                        _ => "<",
+                    };
+                    return Some(crate::cat(&[
+                        "((IEC_BOOL)(ladderc_ref_addr(",
+                        a,
+                        ") ",
+                        c,
+                        " ladderc_ref_addr(",
+                        v,
+                        ")))",
+                    ]));
                 }
                 let e = match aty {
                     Type::Enum(_) => E::Dint,
@@ -630,6 +650,26 @@ impl<'a> Gen<'a> {
                 Some(crate::cat(&[
                     "ladderc_", &lname, "_", h, "((", h, ")(", a, "), (", h, ")(", &v, "))",
                 ]))
+            }
+            "SUB" if matches!(aty, Type::Ref(_)) && matches!(vty, Type::Ref(_)) => {
+                // `p - q`: the distance in bytes of the addresses they stand for
+                Some(crate::cat(&[
+                    "((IEC_LINT)(ladderc_ref_addr(",
+                    a,
+                    ") - ladderc_ref_addr(",
+                    v,
+                    ")))",
+                ]))
+            }
+            "ADD" | "SUB" if matches!(aty, Type::Ref(_)) => {
+                // pointer arithmetic (CODESYS, TwinCAT): `p + n` moves `p` by n bytes; the offset
+                // is checked when the pointer is dereferenced (refs.rs)
+                let f = if name == "SUB" {
+                    "ladderc_ref_sub("
+                } else {
+                    "ladderc_ref_add("
+                };
+                Some(crate::cat(&[f, a, ", (int64_t)(", v, "))"]))
             }
             "ADD" | "SUB" | "MUL" | "DIV" | "MOD" => {
                 let re = match result {

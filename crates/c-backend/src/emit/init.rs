@@ -63,26 +63,39 @@ impl Gen<'_> {
                 let own = mangle::var(&a.of_var);
                 let Some(prefix) = lv.strip_suffix(own.as_str()) else {
                     self.unsupported(span, "this address as an initial value");
-                    let _ = writeln!(out, "{pad}{lv} = NULL;");
+                    let _ = writeln!(out, "{pad}{lv} = ladderc_ref(NULL, 0);");
                     return;
                 };
                 let mut target = cfmt!("{prefix}{}", mangle::var(&a.base));
+                // the array of the last index, which a reference to an element is made from (as
+                // `ADR(a[i])` in a body: refs.rs)
+                let mut whole = None;
                 for step in &a.steps {
                     match step {
                         AddressStep::Field(f) => {
                             let _ = write!(target, ".{}", mangle::var(f));
                         }
                         AddressStep::Index(offsets) => {
+                            whole = Some(target.clone());
                             for o in offsets {
                                 let _ = write!(target, "[{o}]");
                             }
                         }
                     }
                 }
-                let _ = writeln!(out, "{pad}{lv} = (IEC_REF)&{target};");
+                let _ = match whole {
+                    Some(w) => writeln!(
+                        out,
+                        "{pad}{lv} = ladderc_ref_in((void *)&{w}, sizeof {w}, (const void *)&{target});"
+                    ),
+                    None => writeln!(
+                        out,
+                        "{pad}{lv} = ladderc_ref((void *)&{target}, sizeof {target});"
+                    ),
+                };
             }
             (Type::Ref(_), _) => {
-                let _ = writeln!(out, "{pad}{lv} = NULL;");
+                let _ = writeln!(out, "{pad}{lv} = ladderc_ref(NULL, 0);");
             }
             (Type::Fb(fb), init) => {
                 match fb {

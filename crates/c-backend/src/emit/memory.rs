@@ -60,7 +60,13 @@ impl Gen<'_> {
                 accessors: rest.to_vec().into(),
                 span: v.span,
             };
-            if let Some(Place::Mem { lv: wl, .. }) = self.place(scope, &whole) {
+            // only an array's element (`p[i]` of a pointer is its own `sizeof`: the runtime
+            // checked those bytes)
+            if let Some(Place::Mem {
+                lv: wl,
+                ty: Type::Array { .. },
+            }) = self.place(scope, &whole)
+            {
                 return Some((
                     addr,
                     cfmt!(

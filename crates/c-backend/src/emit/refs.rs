@@ -1,38 +1,172 @@
 //! References in C (IEC 61131-3 edition 3 `REF_TO`, CODESYS/TwinCAT `POINTER TO` and
-//! `REFERENCE TO`): a reference is an `IEC_REF` (`void *`) holding the address of the variable it refers to,
-//! or NULL.
+//! `REFERENCE TO`): a reference is an `IEC_REF`, a bounded pointer: the address and byte size of
+//! the variable it was made from (NULL and 0 for NULL) and a byte offset into it.
 //!
-//! Input: sema's reference types and operands (`REF(x)`, `NULL`, `r^`, and `SIZEOF(x)`, the C
-//! `sizeof` of what a reference would refer to). Output: C expressions.
-//! Invariants: a reference holds only NULL or the address of a whole variable of its target type
-//! that lives as long as the program (sema refuses `REF` of temporaries, function variables,
-//! VAR_IN_OUT and located variables, and all pointer arithmetic), so a non-NULL reference is always
-//! valid to read and write through. A dereference goes through `ladderc_deref`: a NULL reference
+//! Input: sema's reference types and operands (`REF(x)`, `NULL`, `r^`, `p[i]`, `p + n`, and
+//! `SIZEOF(x)`, the C `sizeof` of what a reference would refer to). Output: C expressions.
+//! Invariants: a reference is only ever made from a whole variable that lives as long as the
+//! program (sema refuses `REF` of temporaries, function variables, VAR_IN_OUT and located
+//! variables), or from an element of such an array variable (then it is made from the whole array,
+//! so that indexing may reach the other elements). Pointer arithmetic (`p + n`, bytes) and indexing
+//! (`p[i]`, the i-th element after `p^`) only move the offset; the C pointer is formed only by the
+//! runtime's `ladderc_deref`, after checking that the `sizeof` bytes of the access lie inside the
+//! variable and are aligned for their type. A NULL reference, or one moved outside its variable,
 //! reads zero and a write through it is dropped (both into a zeroed scratch object of the target
-//! type, `ladderc_null_<n>`), and the run-time error flag `LADDERC_ERR_NULL_REF` is set with the
-//! place of the first one; no NULL pointer is ever dereferenced in C. A call through an unassigned
-//! interface variable reads such a NULL reference and is reported as that call.
+//! type, `ladderc_null_<n>`), and the run-time error flag `LADDERC_ERR_NULL_REF` or
+//! `LADDERC_ERR_POINTER` is set with the place of the first one: no byte outside a variable is ever
+//! reached, whatever the index or offset. A call through an unassigned interface variable reads
+//! such a NULL reference and is reported as that call.
 
 use super::scope::{Place, Scope};
 use super::Gen;
 use crate::{ctypes, mangle};
 use diagnostics::Span;
-use il_frontend::ast::{RefOperand, SizeOfOperand, VarRef};
-use il_frontend::sema::Type;
+use il_frontend::ast::{Accessor, Operand, RefOperand, SizeOfOperand, VarRef};
+use il_frontend::sema::{Elementary, Type};
 
 impl Gen<'_> {
-    /// The value of `REF(x)` / `ADR(x)` / `NULL` as a C `void *` expression.
+    /// The value of `REF(x)` / `ADR(x)` / `NULL` as a C `IEC_REF` expression. An address taken
+    /// through a pointer keeps the variable that pointer was made from: `ADR(p^)` is `p`,
+    /// `ADR(p[i])` is `p` moved by i elements, `ADR(ps[i].y)` moved on to the field `y` (see
+    /// [`Self::through_pointer`]); `ADR(a[i])` of an array element refers into the whole array `a`.
     pub(super) fn reference_value(&mut self, scope: &Scope, r: &RefOperand) -> Option<String> {
         let Some(v) = &r.of else {
-            return Some("((IEC_REF)0)".into());
+            return Some("ladderc_ref(NULL, 0)".into());
         };
+        if let Some(moved) = self.through_pointer(scope, v) {
+            return moved;
+        }
         match self.place(scope, v)? {
-            Place::Mem { lv, .. } => Some(cfmt!("((IEC_REF)&{lv})")),
+            Place::Mem { lv, .. } => {
+                if let Some(whole) = self.enclosing_array(scope, v) {
+                    return Some(cfmt!(
+                        "ladderc_ref_in((void *)&({whole}), sizeof({whole}), (const void *)&({lv}))"
+                    ));
+                }
+                Some(cfmt!("ladderc_ref((void *)&({lv}), sizeof({lv}))"))
+            }
             Place::Loc { .. } | Place::Part { .. } => {
                 // sema refuses it (E0305); no address of the process image is handed out
                 self.unsupported(r.span, "a reference to a located variable or a bit");
                 None
             }
+        }
+    }
+
+    /// `ADR(path)` when `path` goes through a pointer (its last `p^` or `p[i]`, followed by fields
+    /// and array indexes only): that pointer, moved by i elements for `p[i]`, then by the byte
+    /// offset of the rest of the path inside the pointer's target type, measured on the target
+    /// type's scratch object (so no access is made: `ADR` of a place outside the variable is a
+    /// pointer outside it, a fault only when dereferenced). `None` when `path` goes through no
+    /// pointer; `Some(None)` when its C cannot be generated (reported).
+    fn through_pointer(&mut self, scope: &Scope, v: &VarRef) -> Option<Option<String>> {
+        for k in (0..v.accessors.len()).rev() {
+            let index = match &v.accessors[k] {
+                Accessor::Deref(_) if !(k == 0 && v.base.is("THIS")) => None,
+                Accessor::Index(ix) if ix.len() == 1 => Some(&ix[0]),
+                _ => continue,
+            };
+            let prefix = VarRef {
+                base: v.base.clone(),
+                accessors: v.accessors[..k].to_vec().into(),
+                span: v.span,
+            };
+            self.quiet += 1;
+            let place = self.place(scope, &prefix);
+            self.quiet -= 1;
+            let Some(Place::Mem {
+                lv,
+                ty: Type::Ref(target),
+            }) = place
+            else {
+                continue;
+            };
+            return Some(self.moved_pointer(
+                scope,
+                &lv,
+                &target,
+                index,
+                &v.accessors[k + 1..],
+                v.span,
+            ));
+        }
+        None
+    }
+
+    /// The pointer `lv` (to `target`) moved by `index` elements and then to the place `rest`
+    /// (fields and array indexes) inside its target.
+    fn moved_pointer(
+        &mut self,
+        scope: &Scope,
+        lv: &str,
+        target: &Type,
+        index: Option<&Operand>,
+        rest: &[Accessor],
+        span: Span,
+    ) -> Option<String> {
+        let base = ctypes::base(self.model, target)?;
+        let dims = ctypes::dims(target);
+        let (scratch, _) = self.null_scratch(&base, &dims);
+        let mut p = match index {
+            None => lv.to_string(),
+            Some(i) => {
+                let i = self.value(scope, i, &Type::Elementary(Elementary::Lint))?;
+                cfmt!("ladderc_ref_index({lv}, (int64_t)({i}), sizeof {scratch})")
+            }
+        };
+        if !rest.is_empty() {
+            let mut at = Place::Mem {
+                lv: scratch.clone(),
+                ty: target.clone(),
+            };
+            for acc in rest {
+                let Place::Mem { lv: l, ty } = at else {
+                    return None;
+                };
+                at = match acc {
+                    Accessor::Field(f) => self.field(&l, &ty, f)?,
+                    Accessor::Index(ix) => self.index(scope, &l, &ty, ix, span)?,
+                    Accessor::Deref(d) => {
+                        self.unsupported(*d, "this address");
+                        return None;
+                    }
+                };
+            }
+            let Place::Mem { lv: inner, .. } = at else {
+                return None;
+            };
+            p = cfmt!(
+                "ladderc_ref_add({p}, (int64_t)((const unsigned char *)&({inner}) - (const unsigned char *)&{scratch}))"
+            );
+        }
+        Some(p)
+    }
+
+    /// The C lvalue of the array variable whose element `v` is (the array of its last index, when
+    /// no reference is followed on the way: `buf[i]`, `s.rows[i].x`), the object a reference to
+    /// `v` is made from.
+    fn enclosing_array(&mut self, scope: &Scope, v: &VarRef) -> Option<String> {
+        if v.accessors.iter().any(|a| matches!(a, Accessor::Deref(_))) {
+            return None;
+        }
+        let k = v
+            .accessors
+            .iter()
+            .rposition(|a| matches!(a, Accessor::Index(_)))?;
+        let whole = VarRef {
+            base: v.base.clone(),
+            accessors: v.accessors[..k].to_vec().into(),
+            span: v.span,
+        };
+        self.quiet += 1;
+        let place = self.place(scope, &whole);
+        self.quiet -= 1;
+        match place? {
+            Place::Mem {
+                lv,
+                ty: Type::Array { .. },
+            } => Some(lv),
+            _ => None,
         }
     }
 
@@ -63,8 +197,10 @@ impl Gen<'_> {
         }
     }
 
-    /// `lv^`: the variable the reference `lv` (of type `ty`) refers to. `v` and `at` name the
-    /// place for the run-time message (`r^` in POU `main`).
+    /// `lv^`: the variable the reference `lv` (of type `ty`) refers to; with `index`, `lv[i]`, the
+    /// i-th element of the reference's target type after `lv^` (TwinCAT `p[i]` on a `POINTER TO
+    /// T`). `v` and `at` name the place for the run-time message (`r^` in POU `main`).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn deref_place(
         &mut self,
         scope: &Scope,
@@ -73,6 +209,7 @@ impl Gen<'_> {
         v: &VarRef,
         at: usize,
         span: Span,
+        index: Option<&Operand>,
     ) -> Option<Place> {
         let Type::Ref(target) = ty else {
             self.unsupported(span, "`^` on a value that is not a reference");
@@ -81,7 +218,7 @@ impl Gen<'_> {
         let target = (**target).clone();
         let base = ctypes::base(self.model, &target)?;
         let dims = ctypes::dims(&target);
-        let scratch = self.null_scratch(&base, &dims);
+        let (scratch, align) = self.null_scratch(&base, &dims);
         let path = il_frontend::print::var_ref_text(&VarRef {
             base: v.base.clone(),
             accessors: v.accessors.iter().take(at + 1).cloned().collect(),
@@ -99,25 +236,41 @@ impl Gen<'_> {
             None => cfmt!("{path} in {pou}"),
         };
         let site = mangle::c_string(site.as_bytes());
+        let r = match index {
+            None => lv.to_string(),
+            Some(i) => {
+                let i = self.value(scope, i, &Type::Elementary(Elementary::Lint))?;
+                cfmt!("ladderc_ref_index({lv}, (int64_t)({i}), sizeof {scratch})")
+            }
+        };
         Some(Place::Mem {
             lv: cfmt!(
-                "(*({base} (*){dims})ladderc_deref({lv}, &{scratch}, sizeof {scratch}, {site}))"
+                "(*({base} (*){dims})ladderc_deref({r}, sizeof {scratch}, offsetof({align}, t), &{scratch}, {site}))"
             ),
             ty: target,
         })
     }
 
     /// The name of the zeroed scratch object of C type `base dims` that a NULL dereference reads
-    /// and writes (declared once per type, at file scope: see [`Self::null_scratch_decls`]).
-    fn null_scratch(&mut self, base: &str, dims: &str) -> String {
+    /// and writes, and of the structure whose member `t` has that type (its `offsetof` is the
+    /// type's alignment in C99), declared once per type, at file scope: see
+    /// [`Self::null_scratch_decls`].
+    fn null_scratch(&mut self, base: &str, dims: &str) -> (String, String) {
         let key = cfmt!("{base}{dims}");
-        if let Some(i) = self.null_refs.iter().position(|(k, _)| *k == key) {
-            return cfmt!("ladderc_null_{i}");
-        }
-        let name = cfmt!("ladderc_null_{}", self.null_refs.len());
-        self.null_refs
-            .push((key, cfmt!("static {base} {name}{dims};")));
-        name
+        let i = match self.null_refs.iter().position(|(k, _)| *k == key) {
+            Some(i) => i,
+            None => {
+                let i = self.null_refs.len();
+                self.null_refs.push((
+                    key,
+                    cfmt!(
+                        "static {base} ladderc_null_{i}{dims};\ntypedef struct {{ char c; {base} t{dims}; }} ladderc_align_{i};"
+                    ),
+                ));
+                i
+            }
+        };
+        (cfmt!("ladderc_null_{i}"), cfmt!("ladderc_align_{i}"))
     }
 
     /// The declarations of the scratch objects used so far, one per line.

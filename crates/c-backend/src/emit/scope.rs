@@ -468,14 +468,23 @@ impl Gen<'_> {
             };
             place = match acc {
                 Accessor::Field(f) => self.field(&lv, &ty, f)?,
+                // `p[i]` on a `POINTER TO T` (sema: one index): the i-th T after `p^`
+                Accessor::Index(idx) if matches!(ty, Type::Ref(_)) && idx.len() == 1 => {
+                    self.deref_place(scope, &lv, &ty, r, at, r.span, idx.first())?
+                }
                 Accessor::Index(idx) => self.index(scope, &lv, &ty, idx, r.span)?,
-                Accessor::Deref(span) => self.deref_place(scope, &lv, &ty, r, at, *span)?,
+                Accessor::Deref(span) => self.deref_place(scope, &lv, &ty, r, at, *span, None)?,
             };
         }
         Some(place)
     }
 
-    fn field(&mut self, lv: &str, ty: &Type, f: &il_frontend::ast::Ident) -> Option<Place> {
+    pub(super) fn field(
+        &mut self,
+        lv: &str,
+        ty: &Type,
+        f: &il_frontend::ast::Ident,
+    ) -> Option<Place> {
         match ty {
             Type::Struct(id) => {
                 if let Some(v) = self.struct_field(*id, &f.name) {
@@ -534,7 +543,7 @@ impl Gen<'_> {
         None
     }
 
-    fn index(
+    pub(super) fn index(
         &mut self,
         scope: &Scope,
         lv: &str,

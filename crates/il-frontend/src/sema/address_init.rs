@@ -8,13 +8,18 @@
 //! as long as the reference: a variable of the same POU that is not located, not a VAR_IN_OUT or
 //! VAR_EXTERNAL (no storage of the POU) and not a VAR_TEMP unless the reference is one too; fields
 //! are structure fields, subscripts are in their bounds, and the variable's type is the
-//! reference's target type (E0305, E1006 otherwise). In a global variable list or a structure no
+//! reference's target type, an array of it, or (W1425) another type holding no reference (E0305,
+//! E1006 otherwise). In a global variable list or a structure no
 //! address is taken (E0305): their storage is laid out apart from the POUs'.
 
 use super::model::*;
 use super::Analyzer;
 use crate::ast::{self, Accessor, LiteralKind, Operand, VarKind};
 use diagnostics::{code, Span};
+
+/// The steps of an `ADR(path)` initial value from its base variable, and the type names (from, to)
+/// when the pointer reads the variable as another type (W1425).
+type AddressOf = (Vec<AddressStep>, Option<(String, String)>);
 
 impl Analyzer<'_> {
     /// Sets the `ADR(path)` initial values of `out`, declared from `blocks` (see the module
@@ -37,7 +42,16 @@ impl Analyzer<'_> {
                 continue;
             };
             match self.address_of(path, r.span, &out[i], &target, out, pou) {
-                Ok(steps) => {
+                Ok((steps, reinterpreted)) => {
+                    if let Some((from, to)) = reinterpreted {
+                        self.warning(
+                            code::W1425,
+                            r.span,
+                            format!("{from} stored into {to}: the pointer reads the same bytes as another type"),
+                        )
+                        .label("initial value")
+                        .hint("IEC 61131-3 keeps references typed; CODESYS and TwinCAT convert pointers freely. Accesses stay inside the variable the pointer was made from and must be aligned for the new type");
+                    }
                     out[i].init = Some(ConstValue::Address(AddressInit {
                         of_var: out[i].name.clone(),
                         base: path.base.name.clone(),
@@ -62,7 +76,7 @@ impl Analyzer<'_> {
         target: &Type,
         out: &[Variable],
         pou: Option<ast::PouKind>,
-    ) -> Result<Vec<AddressStep>, (diagnostics::Code, String)> {
+    ) -> Result<AddressOf, (diagnostics::Code, String)> {
         let text = crate::print::var_ref_text(path);
         let refuse = |why: &str| {
             Err((
@@ -134,13 +148,22 @@ impl Analyzer<'_> {
                 Accessor::Deref(_) => return refuse("a dereference has no fixed address"),
             }
         }
-        if &ty != target && !ty.is_error() && !target.is_error() {
-            let (from, to) = (
-                self.type_name(&Type::Ref(Box::new(ty))),
-                self.type_name(&Type::Ref(Box::new(target.clone()))),
-            );
+        let (from, to) = (
+            Type::Ref(Box::new(ty.clone())),
+            Type::Ref(Box::new(target.clone())),
+        );
+        if &ty != target
+            && !ty.is_error()
+            && !target.is_error()
+            && !super::typing::decays_to(&ty, target)
+        {
+            let names = (self.type_name(&from), self.type_name(&to));
+            if super::typing::pointer_reinterprets(&from, &to, &self.model) {
+                return Ok((steps, Some(names)));
+            }
+            let (from, to) = names;
             return Err((code::E1006, format!("cannot store {from} into {to}")));
         }
-        Ok(steps)
+        Ok((steps, None))
     }
 }

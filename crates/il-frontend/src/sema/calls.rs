@@ -41,6 +41,9 @@ impl Body<'_, '_> {
                 }
             }
         }
+        if let Some(inst) = self.pointer_step(f, args) {
+            return inst;
+        }
         let mut known: Vec<(Type, Span)> = Vec::new();
         let mut lit_args: Vec<(usize, Span)> = Vec::new();
         let mut error = false;

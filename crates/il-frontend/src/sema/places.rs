@@ -293,6 +293,10 @@ impl Body<'_, '_> {
                 if assignable(&t, to) || super::refs::substitutes(&self.a.model, &t, to, false) {
                     return true;
                 }
+                if super::typing::pointer_reinterprets(&t, to, &self.a.model) {
+                    self.pointer_reinterpreted(&t, to, at);
+                    return true;
+                }
                 let (f, tt) = (self.a.type_name(&t), self.a.type_name(to));
                 mismatch(self, &f, &tt);
                 false
@@ -396,6 +400,13 @@ impl Body<'_, '_> {
                         None => return Place::error(),
                     };
                 }
+                // `p[i]` on a `POINTER TO T` (CODESYS, TwinCAT): refs.rs
+                Accessor::Index(ixs) if matches!(place.ty, Type::Ref(_)) => {
+                    place = match self.pointer_index(place, v, at, ixs) {
+                        Some(p) => p,
+                        None => return Place::error(),
+                    };
+                }
                 Accessor::Index(ixs) => {
                     let Type::Array { dims, element } = &place.ty else {
                         let path = path_text(v, at);
@@ -427,35 +438,7 @@ impl Body<'_, '_> {
                         return Place::error();
                     }
                     for ix in ixs {
-                        let t = self.read_operand(ix);
-                        let n = self.norm(&t);
-                        match n {
-                            Ty::Known(k) if k.is_error() || k.is_integer() => {}
-                            Ty::Lit(var) => {
-                                // An index literal is a DINT unless it does not fit.
-                                if self.lits.bind(var, &Type::DINT).is_err() {
-                                    self.a
-                                        .error(
-                                            code::E1021,
-                                            ix.span(),
-                                            "an array index must be an integer",
-                                        )
-                                        .label("not an integer")
-                                        .hint("index with an integer variable or literal");
-                                }
-                            }
-                            other => {
-                                let d = self.describe(&other);
-                                self.a
-                                    .error(
-                                        code::E1021,
-                                        ix.span(),
-                                        format!("an array index must be an integer, not {d}"),
-                                    )
-                                    .label(format!("this is {d}"))
-                                    .hint("convert the index (REAL_TO_DINT ...)");
-                            }
-                        }
+                        self.index_operand(ix);
                     }
                     place = Place {
                         ty: element,
@@ -471,6 +454,35 @@ impl Body<'_, '_> {
             }
         }
         place
+    }
+
+    /// Checks one index of an array (or pointer) access: an integer.
+    pub(super) fn index_operand(&mut self, ix: &Operand) {
+        let t = self.read_operand(ix);
+        let n = self.norm(&t);
+        match n {
+            Ty::Known(k) if k.is_error() || k.is_integer() => {}
+            Ty::Lit(var) => {
+                // An index literal is a DINT unless it does not fit.
+                if self.lits.bind(var, &Type::DINT).is_err() {
+                    self.a
+                        .error(code::E1021, ix.span(), "an array index must be an integer")
+                        .label("not an integer")
+                        .hint("index with an integer variable or literal");
+                }
+            }
+            other => {
+                let d = self.describe(&other);
+                self.a
+                    .error(
+                        code::E1021,
+                        ix.span(),
+                        format!("an array index must be an integer, not {d}"),
+                    )
+                    .label(format!("this is {d}"))
+                    .hint("convert the index (REAL_TO_DINT ...)");
+            }
+        }
     }
 
     /// Whether `v` is a qualified access to a global variable list, `GVL.x` (CODESYS, TwinCAT): its base
@@ -1155,7 +1167,7 @@ pub(super) fn fb_param_list(model: &Model, fb: FbType) -> Vec<(String, ParamDir,
 }
 
 /// The text of `v` up to (not including) accessor `upto`: `s.a[..]` (for messages).
-fn path_text(v: &VarRef, upto: usize) -> String {
+pub(super) fn path_text(v: &VarRef, upto: usize) -> String {
     let mut p = v.base.name.clone();
     for acc in v.accessors.iter().take(upto) {
         match acc {

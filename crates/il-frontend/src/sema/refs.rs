@@ -1,25 +1,32 @@
 //! References in bodies (IEC 61131-3 edition 3, 6.4.4.10; CODESYS/TwinCAT pointers and
-//! `REFERENCE TO`): the type of `REF(x)` / `ADR(x)` / `NULL`, the dereference `r^`, the
-//! variables whose address may not be taken, and `SIZEOF(x)` / `SIZEOF(T)` (the bytes of a variable
-//! or type in the generated C).
+//! `REFERENCE TO`): the type of `REF(x)` / `ADR(x)` / `NULL`, the dereference `r^`, pointer
+//! arithmetic (`p + n` / `p - n` in bytes, `p - q`, comparisons), a pointer stored into a pointer to
+//! another type (W1425), the variables whose address may not be taken, and `SIZEOF(x)` /
+//! `SIZEOF(T)` (the bytes of a variable or type in the generated C). `p[i]` is typed in
+//! `places.rs`.
 //!
 //! Input: operands and accesses of one body. Output: their types and diagnostics. Invariants: a
 //! reference is only ever made to storage that outlives every reference to it: a variable of a
 //! program or function block instance, a global, or what another reference refers to; `REF` of a
 //! VAR_TEMP, of any variable of a FUNCTION (the standard's rule: they live for one call), of a
 //! VAR_IN_OUT (it may be the caller's temporary), of a located variable or of a bit of a variable
-//! is one E0305 at the operand.
+//! is one E0305 at the operand. Moving a pointer is allowed because the C bounds every access
+//! through it to the variable it was made from (c-backend `emit/refs.rs`); converting one is
+//! allowed only between types that hold no reference, so that no reference is made from bytes.
 
 use super::body::{Body, Ty};
 use super::model::*;
 use super::places::Place;
+use super::stdlib::StdFunction;
 use crate::ast::{self, Accessor, PouKind, RefOperand, VarKind};
 use diagnostics::code;
 
 /// Whether standard function `f` takes `t` for a parameter of class `c`: its class's types, and
-/// references for `EQ` and `NE` (`r = NULL`, `r1 <> r2`: whether they refer to the same variable).
+/// references for the comparisons (`r = NULL`, `r1 <> r2`: whether they stand for the same
+/// address; `p < q`: the addresses ordered, meaningful for two pointers into one variable).
 pub(super) fn class_admits(f: &str, c: super::stdlib::Class, t: &Type) -> bool {
-    c.contains(t) || (matches!(t, Type::Ref(_)) && matches!(f, "EQ" | "NE"))
+    c.contains(t)
+        || (matches!(t, Type::Ref(_)) && matches!(f, "EQ" | "NE" | "LT" | "LE" | "GT" | "GE"))
 }
 
 /// The chain of blocks (upper-case, root first) of user block `fb`, read from its class variable
@@ -59,18 +66,95 @@ impl Body<'_, '_> {
             .label("passed here")
             .hint("declare it `VAR_IN_OUT total : DINT` (passed by reference already) or `VAR_INPUT total : REFERENCE TO DINT`");
     }
-    /// Arithmetic or an ordering on a reference (`p := p + SIZEOF(T)`): refused, one E0305. A
-    /// reference always refers to a whole variable of its type: moving it would let it point
-    /// outside that variable, which C makes undefined behaviour.
+    /// Arithmetic on a reference other than `p + n`, `p - n` and `p - q` (`p * 2`, `p AND 3`):
+    /// refused, one E0305.
     pub(super) fn pointer_arithmetic(&mut self, f: &str, tn: &str, span: crate::Span) {
         self.a
             .error(
                 code::E0305,
                 span,
-                format!("`{f}` on a reference ({tn}): pointer arithmetic and ordering of references are not supported"),
+                format!("`{f}` on a reference ({tn}): only a byte count may be added to or subtracted from a pointer"),
             )
             .label("this is a reference")
-            .hint("index an array instead (`REF(buffer[i])`, or `p^[i]` on a reference to the whole array); compare references only with `=` and `<>`");
+            .hint("move a pointer with `p + n` / `p - n` (n bytes, e.g. `p + SIZEOF(p^)`) or index it (`p[i]`); compare pointers with `=`, `<>`, `<` ...");
+    }
+
+    /// `p + n` / `p - n` (CODESYS, TwinCAT pointer arithmetic: `n` counts bytes): a reference of
+    /// `p`'s type, when the first input is a reference and the second an integer; `p - q` of two
+    /// references: their distance in bytes, an LINT; `None` when the call is not that. The moved pointer is checked when it is dereferenced (c-backend refs.rs).
+    pub(super) fn pointer_step(
+        &mut self,
+        f: &StdFunction,
+        args: &[(Ty, crate::Span)],
+    ) -> Option<super::calls::Inst> {
+        if !matches!(f.name, "ADD" | "SUB") || args.len() != 2 {
+            return None;
+        }
+        let Ty::Known(p) = self.norm(&args[0].0) else {
+            return None;
+        };
+        if !matches!(&p, Type::Ref(target) if !target.is_error()) {
+            return None;
+        }
+        let ok = match self.norm(&args[1].0) {
+            // `p - q`: the bytes from q to p (an LINT), meaningful for two pointers into one
+            // variable
+            Ty::Known(Type::Ref(_)) if f.name == "SUB" => {
+                return Some(super::calls::Inst {
+                    name: f.name,
+                    t: Ty::Known(p),
+                    result: Ty::Known(Type::Elementary(Elementary::Lint)),
+                });
+            }
+            Ty::Known(t) => t.is_error() || t.is_integer(),
+            Ty::Lit(v) => self
+                .lits
+                .bind(v, &Type::Elementary(Elementary::Lint))
+                .is_ok(),
+        };
+        if !ok {
+            let d = self.describe(&args[1].0);
+            let tn = self.a.type_name(&p);
+            self.a
+                .error(
+                    code::E1004,
+                    args[1].1,
+                    format!(
+                        "{} of {tn} and {d}: a pointer moves by an integer number of bytes",
+                        f.name
+                    ),
+                )
+                .label(format!("this is {d}"))
+                .hint("add a byte count: `p + SIZEOF(p^)`, `p + i * SIZEOF(T)`");
+            return Some(super::calls::Inst {
+                name: f.name,
+                t: Ty::ERROR,
+                result: Ty::ERROR,
+            });
+        }
+        Some(super::calls::Inst {
+            name: f.name,
+            t: Ty::Known(p.clone()),
+            result: Ty::Known(p),
+        })
+    }
+
+    /// W1425, once per POU: a reference stored into a reference to another type, which reads the
+    /// same bytes as that type (CODESYS and TwinCAT convert pointers freely; IEC 61131-3 keeps
+    /// references typed).
+    pub(super) fn pointer_reinterpreted(&mut self, from: &Type, to: &Type, at: crate::Span) {
+        if self.a.silent || !self.a.reinterpreting_pous.insert(self.pou) {
+            return;
+        }
+        let (f, t) = (self.a.type_name(from), self.a.type_name(to));
+        self.a
+            .warning(
+                code::W1425,
+                at,
+                format!("{f} stored into {t}: the pointer reads the same bytes as another type (its other uses in this POU are not reported)"),
+            )
+            .label(format!("this is {f}"))
+            .hint("IEC 61131-3 keeps references typed; CODESYS and TwinCAT convert pointers freely. Accesses stay inside the variable the pointer was made from and must be aligned for the new type");
     }
 
     /// The type of `REF(x)` / `ADR(x)` (a reference to `x`'s type) or `NULL` (a reference to
@@ -150,6 +234,38 @@ impl Body<'_, '_> {
             }
             _ => None,
         }
+    }
+
+    /// `p[i]` on a `POINTER TO T` (CODESYS, TwinCAT): the i-th T after `p^`, read and written as
+    /// `p^` is (bounded at run time: c-backend refs.rs); one integer index (E1021 otherwise).
+    pub(super) fn pointer_index(
+        &mut self,
+        place: Place,
+        v: &ast::VarRef,
+        at: usize,
+        ixs: &[ast::Operand],
+    ) -> Option<Place> {
+        let Type::Ref(target) = place.ty else {
+            return None;
+        };
+        if target.is_error() || ixs.len() != 1 {
+            let path = super::places::path_text(v, at);
+            let t = self.a.type_name(&Type::Ref(target));
+            self.a
+                .error(
+                    code::E1021,
+                    v.span,
+                    format!("`{path}` is {t}: a pointer takes one index"),
+                )
+                .label("indexed here")
+                .hint("`p[i]` is the i-th element after `p^`; index a pointer to an array as `p^[i, j]`");
+            return None;
+        }
+        self.index_operand(&ixs[0]);
+        Some(Place {
+            ty: *target,
+            read_only: None,
+        })
     }
 
     /// `r^`: the variable `place` (a reference) refers to, writable whatever `place` is.

@@ -55,14 +55,63 @@ pub fn assignable(from: &Type, to: &Type) -> bool {
                 element: eb,
             },
         ) => da.len() == db.len() && da.iter().zip(db).all(|(a, b)| a.len() == b.len()) && ea == eb,
-        // NULL into any reference; otherwise only a reference to the same type
-        (Type::Ref(a), Type::Ref(b)) => a.is_error() || a == b,
+        // NULL into any reference; a reference to the same type; a reference to an array into
+        // a reference to its element type (the first element, as C's arrays decay: `pData :
+        // POINTER TO LREAL := ADR(samples)`, CODESYS and TwinCAT). Other pointer types only
+        // through `pointer_reinterprets` (sema: `coerce`, with W1425).
+        (Type::Ref(a), Type::Ref(b)) => a.is_error() || a == b || decays_to(a, b),
         (Type::Ref(_), _) | (_, Type::Ref(_)) => false,
         _ => match (from.elementary(), to.elementary()) {
             (Some(f), Some(t)) => widens(f, t),
             _ => false,
         },
     }
+}
+
+/// Whether an array of `from` (any dimensions, nested arrays too) has `to` as its element type.
+pub fn decays_to(from: &Type, to: &Type) -> bool {
+    match from {
+        Type::Array { element, .. } => **element == *to || decays_to(element, to),
+        _ => false,
+    }
+}
+
+/// Whether a reference to `from` may be stored into a reference to `to` that reads the same bytes
+/// as another type (`b : POINTER TO ULINT := ADR(x)` of an LREAL `x`, CODESYS and TwinCAT; IEC
+/// 61131-3 keeps references typed): only between types that hold no reference and no function
+/// block instance (see [`holds_no_reference`]), so that no reference can be forged from bytes.
+pub fn pointer_reinterprets(from: &Type, to: &Type, model: &super::model::Model) -> bool {
+    match (from, to) {
+        (Type::Ref(a), Type::Ref(b)) => {
+            !a.is_error()
+                && !b.is_error()
+                && holds_no_reference(a, model)
+                && holds_no_reference(b, model)
+        }
+        _ => false,
+    }
+}
+
+/// Whether the bytes of a value of type `t` hold no reference and no function block instance
+/// (elementary values, strings, enumerations, and arrays and structures of these).
+pub fn holds_no_reference(t: &Type, model: &super::model::Model) -> bool {
+    fn go(t: &Type, model: &super::model::Model, depth: u32) -> bool {
+        if depth > 64 {
+            return false;
+        }
+        match t {
+            Type::Ref(_) | Type::Fb(_) | Type::Error => false,
+            Type::Array { element, .. } => go(element, model, depth + 1),
+            Type::Struct(id) => match &model.user_type(*id).def {
+                super::model::UserTypeDef::Struct { fields } => {
+                    fields.iter().all(|f| go(&f.ty, model, depth + 1))
+                }
+                _ => false,
+            },
+            _ => true,
+        }
+    }
+    go(t, model, 0)
 }
 
 /// The type all `types` widen to, if one of them is that type (`INT` and `DINT` give `DINT`).
