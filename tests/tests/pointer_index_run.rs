@@ -241,3 +241,45 @@ fn pointer_c_is_warning_free() {
         );
     }
 }
+
+/// pointer_mem.st (lead, after the pointer round): `MEMCPY(pD, pS, 100)` with `POINTER TO INT`
+/// variables (TcUnit's and fisothemes' collections pass pointers, not `ADR(x)`; before: E1035 at
+/// each) copies only the bytes from where `pD` points (`dst[1]`) to the end of `dst`, so `guard`
+/// beside it keeps 77 and the clip is reported; `MEMSET` through a `REF_TO` clears `dst[0]`; a NULL
+/// pointer touches nothing; `MEMCMP` of a pointer and `ADR` of the same array is 0.
+#[test]
+fn memory_functions_take_pointer_variables_bounded_by_their_variable() {
+    let (trace, stderr) = run_traced(
+        &fixture("pointer_mem.st"),
+        1,
+        "Main.dst[0],Main.dst[1],Main.dst[2],Main.dst[3],Main.guard[0],Main.n2,Main.cmp",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.dst[0],Main.dst[1],Main.dst[2],Main.dst[3],Main.guard[0],Main.n2,Main.cmp\n\
+         0,0,0,1,2,3,77,1,0\n"
+    );
+    assert!(
+        stderr.contains("memory function count beyond its variables (first: MEMCPY in Main"),
+        "{stderr}"
+    );
+}
+
+/// A pointer moved by arithmetic, or a value that is no pointer, is still one E1035.
+#[test]
+fn a_memory_function_on_pointer_arithmetic_is_e1035() {
+    let heads = rejected_heads(
+        "memarith.st",
+        "PROGRAM Main\nVAR a : ARRAY[0..3] OF INT; p : POINTER TO INT; n : UDINT; k : UDINT; END_VAR\n\
+         p := ADR(a);\nn := MEMSET(p + 2, 0, 2);\nn := MEMSET(k, 0, 2);\nEND_PROGRAM\n",
+    );
+    assert_eq!(heads.len(), 2, "{heads:?}");
+    assert!(
+        heads[0].starts_with("memarith.st:4:13: error[E1035]: MEMSET: the variable this pointer points into cannot be known"),
+        "{heads:?}"
+    );
+    assert!(
+        heads[1].starts_with("memarith.st:5:13: error[E1035]"),
+        "{heads:?}"
+    );
+}

@@ -374,6 +374,19 @@ static inline uintptr_t ladderc_ref_addr(IEC_REF r) {
     return (uintptr_t)r.base + (uintptr_t)(intptr_t)r.off;
 }
 
+/* The bytes a memory function (MEMCPY ...) given a pointer variable may reach: from where it points
+ * to the end of the variable it was made from; 0 for NULL or a pointer moved outside it. */
+static inline size_t ladderc_ref_room(IEC_REF r) {
+    if (r.base == NULL || r.off < 0 || (uint32_t)r.off > r.size) return 0;
+    return (size_t)(r.size - (uint32_t)r.off);
+}
+/* Where it points, for a memory function: a valid address even when its room is 0 (then no byte is
+ * touched, the count is clipped to 0). */
+static inline void *ladderc_ref_at(IEC_REF r) {
+    static unsigned char nowhere[1];
+    return ladderc_ref_room(r) != 0 ? (void *)(r.base + r.off) : (void *)nowhere;
+}
+
 /* A dereference `r^` (or `p[i]`, after ladderc_ref_index) of a reference: the address of the `n` bytes
  * (of alignment `align`) it refers to, or the zeroed scratch object `scratch` of `n` bytes (so a read
  * gives zero and a write is dropped) for NULL (LADDERC_ERR_NULL_REF) and for a reference moved outside

@@ -544,6 +544,10 @@ pub struct MemCall {
     pub dest: VarRef,
     /// The variable of the second pointer argument (MEMCPY, MEMMOVE, MEMCMP).
     pub src: Option<VarRef>,
+    /// `dest` (and `src`) is a pointer variable (`POINTER TO`/`REF_TO`) passed as it is, whose
+    /// value is the address: the call works on the bytes from where it points to the end of the
+    /// variable it was made from (a bounded reference carries both). False: `ADR(dest)`.
+    pub through_pointer: [bool; 2],
     /// The fill byte (MEMSET) and the byte count, plain operands.
     pub fill: Option<Operand>,
     /// The number of bytes.

@@ -1,7 +1,8 @@
 //! `MEMCPY`, `MEMMOVE`, `MEMSET` and `MEMCMP` in C, bounded by the variables they work on.
 //!
 //! Input: an [`Operand::Mem`](il_frontend::ast::Operand::Mem), whose pointer arguments name
-//! variables (the ST lowering accepts only `ADR(x)` there). Output: a call of the runtime's
+//! variables (`ADR(x)`) or pointer variables passed as they are (their bounded reference gives the
+//! address and the room at run time: `ladderc_ref_at`, `ladderc_ref_room`). Output: a call of the runtime's
 //! `ladderc_mem_move` / `ladderc_mem_set` / `ladderc_mem_cmp` with, for each variable, its address
 //! and its room: the bytes from that address to the end of the variable, `sizeof` of a whole
 //! variable or field, and for an array element (`ADR(buf[i])`) the bytes from the element to the
@@ -18,7 +19,7 @@ use il_frontend::sema::{Elementary, Type};
 impl Gen<'_> {
     /// The C value of `m` (IEC_UDINT, or IEC_DINT for MEMCMP).
     pub(super) fn memory_call(&mut self, scope: &Scope, m: &MemCall) -> Option<String> {
-        let (dst, d_room) = self.mem_object(scope, &m.dest, m)?;
+        let (dst, d_room) = self.mem_object(scope, &m.dest, m.through_pointer[0], m)?;
         let count = self.value(scope, &m.count, &Type::Elementary(Elementary::Ulint))?;
         let pou = scope
             .pou
@@ -34,7 +35,8 @@ impl Gen<'_> {
                 ))
             }
             MemFunc::Copy | MemFunc::Move | MemFunc::Compare => {
-                let (src, s_room) = self.mem_object(scope, m.src.as_ref()?, m)?;
+                let (src, s_room) =
+                    self.mem_object(scope, m.src.as_ref()?, m.through_pointer[1], m)?;
                 let f = if m.func == MemFunc::Compare {
                     "ladderc_mem_cmp"
                 } else {
@@ -47,8 +49,31 @@ impl Gen<'_> {
         }
     }
 
-    /// The address of `v` and its room (see the module documentation).
-    fn mem_object(&mut self, scope: &Scope, v: &VarRef, m: &MemCall) -> Option<(String, String)> {
+    /// The address of `v` and its room (see the module documentation); with `through_pointer`, `v`
+    /// is a pointer variable and both come from its bounded reference at run time (the bytes from
+    /// where it points to the end of the variable it was made from; none for NULL or a pointer moved
+    /// outside it).
+    fn mem_object(
+        &mut self,
+        scope: &Scope,
+        v: &VarRef,
+        through_pointer: bool,
+        m: &MemCall,
+    ) -> Option<(String, String)> {
+        if through_pointer {
+            let Place::Mem {
+                lv,
+                ty: Type::Ref(_),
+            } = self.place(scope, v)?
+            else {
+                self.unsupported(m.span, "a memory function on a pointer that is no variable");
+                return None;
+            };
+            return Some((
+                cfmt!("ladderc_ref_at({lv})"),
+                cfmt!("ladderc_ref_room({lv})"),
+            ));
+        }
         let Place::Mem { lv, .. } = self.place(scope, v)? else {
             self.unsupported(m.span, "a memory function on a located variable or a bit");
             return None;

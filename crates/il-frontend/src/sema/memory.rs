@@ -2,7 +2,8 @@
 //! bodies: the types of their operands and of their result.
 //!
 //! Input: one [`ast::MemCall`], whose pointer arguments the ST lowering has already reduced to the
-//! variables `ADR(x)` named (a pointer whose variable cannot be known is refused there, E1035).
+//! variables `ADR(x)` named, or to POINTER TO / REF_TO variables passed as they are (a pointer
+//! whose variable cannot be known is refused there, E1035).
 //! Output: the call's type (DINT for MEMCMP, UDINT for the others) and diagnostics. Invariants: the
 //! variables resolve (E1001 otherwise) and have storage of their own: no located variable or bit
 //! (E0305, as `ADR` of them); a written destination is writable (a CONSTANT is E1026, an input
@@ -18,7 +19,7 @@ impl Body<'_, '_> {
     /// The type of `MEMCPY(...)` and its kin; see the module documentation.
     pub(super) fn mem_operand(&mut self, m: &MemCall) -> Ty {
         let what = m.func.name();
-        let dest = if m.func == MemFunc::Compare {
+        let dest = if m.func == MemFunc::Compare || m.through_pointer[0] {
             self.read_operand(&Operand::Var(m.dest.clone()))
         } else {
             Ty::Known(self.write_place(&Operand::Var(m.dest.clone()), what))
@@ -28,7 +29,36 @@ impl Body<'_, '_> {
             .as_ref()
             .map(|s| self.read_operand(&Operand::Var(s.clone())));
         let mut ok = !dest.is_error() && !src.as_ref().is_some_and(Ty::is_error);
-        for v in std::iter::once(&m.dest).chain(m.src.as_ref()) {
+        // a pointer variable passed as it is: its value is the address (the ST lowering took only
+        // POINTER TO / REF_TO variables there)
+        let pointers = [
+            Some((&dest, &m.dest)).filter(|_| m.through_pointer[0]),
+            src.as_ref()
+                .zip(m.src.as_ref())
+                .filter(|_| m.through_pointer[1]),
+        ];
+        for (t, v) in pointers.into_iter().flatten() {
+            if !matches!(
+                self.norm(t),
+                Ty::Known(Type::Ref(_)) | Ty::Known(Type::Error)
+            ) {
+                let path = crate::print::var_ref_text(v);
+                self.a
+                    .error(
+                        code::E1035,
+                        v.span,
+                        format!("{what}: `{path}` is not a pointer"),
+                    )
+                    .label("its value is no address")
+                    .hint("pass `ADR(x)` of a variable, or a POINTER TO variable");
+                ok = false;
+            }
+        }
+        let objects = [
+            Some(&m.dest).filter(|_| !m.through_pointer[0]),
+            m.src.as_ref().filter(|_| !m.through_pointer[1]),
+        ];
+        for v in objects.into_iter().flatten() {
             if let Some(why) = self.no_storage_of_its_own(v) {
                 let path = crate::print::var_ref_text(v);
                 self.a

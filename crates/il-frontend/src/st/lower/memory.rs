@@ -5,11 +5,12 @@
 //! Input: a call of one of those names that no user POU declares, with its arguments (positional,
 //! or formal by the Tc2_System or SysMem parameter names). Output: one [`Operand::Mem`] naming the
 //! variables the pointer arguments point to, loaded into the current result. Invariants: a pointer
-//! argument is accepted only as `ADR(x)` / `REF(x)` of a variable, an element or a field, so the
-//! object it points into is known when the C is generated and the count can be bounded by it
-//! (`emit::memory` in the C backend); any other pointer (a POINTER TO variable, arithmetic on one)
-//! is one E1035 at the argument; a wrong number of arguments or an unknown parameter name is one
-//! E1035 at the call.
+//! argument is accepted as `ADR(x)` / `REF(x)` of a variable, an element or a field, so the object
+//! it points into is known when the C is generated and the count can be bounded by it
+//! (`emit::memory` in the C backend), or as a `POINTER TO` / `REF_TO` variable (a field, an element)
+//! whose bounded reference carries the variable it was made from, bounding the count at run time;
+//! any other pointer (arithmetic, a call's result) is one E1035 at the argument; a wrong number of
+//! arguments or an unknown parameter name is one E1035 at the call.
 
 use super::super::ast::{Arg, Expr, ExprKind};
 use super::{ld, PouLowering};
@@ -112,6 +113,11 @@ impl PouLowering<'_> {
             (self.pointed_variable(func, second, out, diags), None)
         };
         let count = self.operand(count, None, out, diags);
+        let through_pointer = [
+            dest.as_ref().is_some_and(|d| d.1),
+            src.as_ref().is_some_and(|s| s.1),
+        ];
+        let (dest, src) = (dest.map(|d| d.0), src.map(|s| s.0));
         let (Some(dest), true) = (dest, func == MemFunc::Set || src.is_some()) else {
             self.poisoned = true;
             out.push(ld(super::int_lit(0, span), span));
@@ -122,6 +128,7 @@ impl PouLowering<'_> {
                 func,
                 dest,
                 src,
+                through_pointer,
                 fill,
                 count,
                 span,
@@ -131,15 +138,32 @@ impl PouLowering<'_> {
         true
     }
 
-    /// The variable a pointer argument points to: `ADR(x)` / `REF(x)` of a place; anything else is
-    /// one E1035 (its object, so the bytes it may reach, cannot be known).
+    /// The variable a pointer argument points to: `ADR(x)` / `REF(x)` of a place (`false`), or a
+    /// `POINTER TO` / `REF_TO` variable itself (`true`: its value is the address, bounded at run
+    /// time); anything else is one E1035 (its object, so the bytes it may reach, cannot be known).
     fn pointed_variable(
         &mut self,
         func: MemFunc,
         e: &Expr,
         out: &mut Vec<il::IlStmt>,
         diags: &mut Diagnostics,
-    ) -> Option<il::VarRef> {
+    ) -> Option<(il::VarRef, bool)> {
+        if let ExprKind::Place(p) = &e.kind {
+            let env = self.env();
+            let pointer = matches!(
+                env.place_type(p).map(|t| env.resolve(&t)),
+                Some(il::TypeRef::Ref {
+                    kind: il::RefKind::Pointer | il::RefKind::RefTo,
+                    ..
+                })
+            );
+            if pointer {
+                if let Some(Operand::Var(v)) = self.place_operand(p, out, diags) {
+                    return Some((v, true));
+                }
+                return None;
+            }
+        }
         if let ExprKind::Call { name, args } = &e.kind {
             if super::super::refs::is_address_of(name) {
                 if let [Arg {
@@ -153,7 +177,7 @@ impl PouLowering<'_> {
                 }] = &args[..]
                 {
                     if let Some(Operand::Var(v)) = self.place_operand(p, out, diags) {
-                        return Some(v);
+                        return Some((v, false));
                     }
                     return None;
                 }
@@ -168,8 +192,8 @@ impl PouLowering<'_> {
                 ),
             )
             .at(e.span)
-            .with_primary_label("not `ADR(variable)`")
-            .with_hint("pass `ADR(x)` of the variable itself (an element or a field too): ladderc bounds the count by the sizes of the variables it can see"),
+            .with_primary_label("not `ADR(variable)` or a pointer variable")
+            .with_hint("pass `ADR(x)` of the variable itself (an element or a field too), or a POINTER TO variable: ladderc bounds the count by the variable the address belongs to"),
         );
         None
     }
