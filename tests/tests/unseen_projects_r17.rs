@@ -158,7 +158,7 @@ fn openplc_sensor_pulse_and_off_delay_run() {
 fn openplc_dimmer_words_share_bytes_unless_openplc_profile() {
     let watch = "instance0.lamp_ok,instance0.lamp_fault,instance0.dimmer_r,instance0.dimmer_g";
     let file = fixture("proximity_hold_dimmers.xml");
-    let (trace, stderr) = run(&[file.clone()], &[], 400, SENSOR_PULSE, watch);
+    let (trace, stderr) = run(std::slice::from_ref(&file), &[], 400, SENSOR_PULSE, watch);
     assert!(
         stderr.contains("warning[W1400]: `program0.dimmer_r` at %QW0 shares output bits with `program0.lamp_ok` at %QX0.0"),
         "{stderr}"

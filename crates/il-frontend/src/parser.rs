@@ -1541,10 +1541,12 @@ pub fn global_integer_constants(unit: &CompilationUnit, diags: &Diagnostics) -> 
         match item {
             LibraryElement::GlobalVars(b) => add(b),
             // a TwinCAT DUT's enumeration bounds the arrays of other objects
-            LibraryElement::DataTypes(types) => enums.extend(types.iter().filter_map(|t| match &t.def {
-                TypeDef::Enum { values, .. } => Some(values),
-                _ => None,
-            })),
+            LibraryElement::DataTypes(types) => {
+                enums.extend(types.iter().filter_map(|t| match &t.def {
+                    TypeDef::Enum { values, .. } => Some(values),
+                    _ => None,
+                }))
+            }
             LibraryElement::Configuration(c) => {
                 c.globals.iter().for_each(&mut add);
                 c.resources
