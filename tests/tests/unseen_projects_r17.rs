@@ -163,6 +163,10 @@ fn openplc_dimmer_words_share_bytes_unless_openplc_profile() {
         stderr.contains("warning[W1400]: `program0.dimmer_r` at %QW0 shares output bits with `program0.lamp_ok` at %QX0.0"),
         "{stderr}"
     );
+    assert!(
+        stderr.contains("OpenPLC and matiec keep one image per size, where they are apart: `--profile crates/c-backend/profiles/openplc.json`"),
+        "{stderr}"
+    );
     // the red dimmer (lamp_fault as 0/1) written as a word after the lamps: bit 0 (lamp_ok) follows
     // it, bit 1 (lamp_fault) is cleared
     assert_eq!(
