@@ -383,3 +383,71 @@ fn blark_fragments_rejected_located() {
         assert_eq!(got, *expected, "{name}");
     }
 }
+
+/// beta591414/-CMC-'s watering project (a vendor's editor): a `<projects version="2.0">` wrapper
+/// around the TC6 project, and typed function names on blocks (`MAX_UDINT`, `EQ_UDINT`, as ST reads
+/// `ADD_INT`). Before: E3002 at the root; after, the project inside runs.
+#[test]
+fn vendor_wrapper_and_typed_block_names_run() {
+    let (trace, _) = run(
+        &[fixture("watering/level.xml")],
+        &[],
+        6,
+        "0,instance0.AI_CH2,1000\n2,instance0.AI_CH2,5000\n4,instance0.AI_CH2,7000\n",
+        "instance0.high,instance0.DO_CH3",
+    );
+    // high := MAX_UDINT(AI_CH2, 5000); DO_CH3 := EQ_UDINT(high, 5000)
+    assert_eq!(
+        column(&trace, "instance0.high"),
+        [5000.0, 5000.0, 5000.0, 5000.0, 7000.0, 7000.0]
+    );
+    assert_eq!(
+        column(&trace, "instance0.DO_CH3"),
+        [1.0, 1.0, 1.0, 1.0, 0.0, 0.0]
+    );
+}
+
+/// The same project's comparison contacts (`typeName="EQ_UDINT"` with `<variable1>`): one E1054 at
+/// the contact, no E3008 about its UDINT variable; and Beau28713's selector, whose enumeration values
+/// are also the names of its BOOL inputs (names ignore case): E1006 as matiec's "Incompatible data
+/// types", each with W1430 saying which name hid the value.
+#[test]
+fn comparison_contact_and_hidden_enumeration_values_rejected() {
+    assert_eq!(
+        rejected(&fixture("rejected/comparison_contact.xml")),
+        ["comparison_contact.xml:69:13: error[E1054]: contact `high` compares (`typeName=\"EQ_UDINT\"`): a vendor's comparison contact, not PLCopen TC6 [POU `level`, network 2, localId 7]"]
+    );
+    let file = fixture("rejected/selector_names.xml");
+    assert_eq!(
+        rejected(&file),
+        [
+            "selector_names.xml:48:3: error[E1006]: cannot store BOOL into SELECTOR_POS [POU `Selector`]",
+            "selector_names.xml:51:3: error[E1006]: cannot store BOOL into SELECTOR_POS [POU `Selector`]",
+        ]
+    );
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let notes: Vec<&str> = stderr.lines().filter(|l| l.contains("W1430")).collect();
+    assert_eq!(notes.len(), 2, "{stderr}");
+    assert!(
+        notes[0].contains("selector_names.xml:48:15: warning[W1430]: `SEL_MANUAL` is a variable here, not the value SELECTOR_POS#SEL_MANUAL the assignment expects"),
+        "{stderr}"
+    );
+    // the fix the hint names: the value with its type
+    let text = std::fs::read_to_string(&file)
+        .unwrap()
+        .replace(
+            "Position := SEL_MANUAL;",
+            "Position := SELECTOR_POS#SEL_MANUAL;",
+        )
+        .replace(
+            "Position := SEL_AUTO;",
+            "Position := SELECTOR_POS#SEL_AUTO;",
+        );
+    let (code, lines) = common::check_text("selector_fixed.xml", &text);
+    assert_eq!((code, lines.len()), (Some(0), 0), "{lines:?}");
+}
