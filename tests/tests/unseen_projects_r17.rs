@@ -7,7 +7,10 @@
 //!   versions of its lab 2 `plc.xml` (commits 0bdc5a7 and b5bf2b2): a proximity sensor (active low)
 //!   through NOT into a 500 ms TP and a 10 s / 30 s TOF that drive a relay and a green and a red lamp;
 //!   the second version adds three RGB dimmer words at `%QW0..2` blinking from TP chains while the
-//!   TOF's elapsed time is inside a window.
+//!   TOF's elapsed time is inside a window. Beau28713/Waste_Water_VFD_Control (OpenPLC Editor v4, LD
+//!   seal-in rungs and two ST function blocks with an enumeration). beta591414/-CMC- (a watering
+//!   controller from a vendor's PLCopen editor: `<projects version="2.0">` around a `tc6.xsd`
+//!   project, typed blocks `MAX_UDINT`/`MIN_UDINT`, comparison contacts, the vendor's I/O names).
 //! - The ST and TwinCAT test files of klauer/blark (a TwinCAT ST parser, `blark/tests/source/*.st`
 //!   and `blark/tests/POUs/*.TcPOU`, 21 files): `commas_in_case`, `type_and_fb`,
 //!   `var_declarations_var_attrib`, `fb_w_public_access`, `fb_initializer`, `pointer_to_pointer_to`,
@@ -18,17 +21,24 @@
 //!
 //! | | units | run (or check) and behave | rejected, naming what is missing or wrong | ladderc gap |
 //! |---|---|---|---|---|
-//! | before | 23 (2 OpenPLC LD, 18 ST, 3 TcPOU) | 6 | 15 | 2: a header ending with `;`, enumeration values in array bounds |
-//! | after | 23 | 6 | 17 | 0 in this round's scope (left for others: below) |
+//! | before | 25 (4 PLCopen XML, 18 ST, 3 TcPOU) | 6 | 12 | 7: a header ending with `;` (F_SetStateParams); the `<projects>` wrapper (-CMC-, E3002 at the root); a METHOD after a pragma read as IL (4 files); E0349 for a block type not declared (object_oriented_dotaccess) |
+//! | after | 25 | 6 | 14 | 5 left, none in this round's scope (below) |
+//!
+//! Besides the units' own verdicts, constructs they use were gaps, fixed here and run from texts of
+//! our own: enumeration values in array bounds (blark's `array_initializer`, `station/`), typed
+//! function names on PLCopen blocks (-CMC-'s `MAX_UDINT`, `watering/level.xml`).
 //!
 //! Measured with main's binary at the start of the round (`before`) and this branch's (`after`), same
-//! files: `F_SetStateParams.TcPOU` 7 errors (E0106 at each declaration line: the `VAR_INPUT` block
-//! read as statements) before, 3 after (E1003 naming `ST_BeamParams`, `FB_LinearDeviceStateTable`
-//! and `ST_DeviceState`, types of the library it belongs to); blark's `array_initializer.st` with its
-//! enumeration declared (`station/` here) 2 E0022 before, runs after. Every other unit gives the same
-//! diagnostics before and after.
+//! files, `ladderc check`: `F_SetStateParams.TcPOU` 7 errors before (E0106 at each declaration line:
+//! the `VAR_INPUT` block read as statements), 3 after (E1003 naming `ST_BeamParams`,
+//! `FB_LinearDeviceStateTable` and `ST_DeviceState`, the types of the library it belongs to);
+//! `header_semi/F_InWindow.st` 10 errors before, runs after; `station/` (the enumeration-bounded
+//! array of blocks) 3 errors before, runs after; `watering/level.xml` 1 E3002 before, runs after;
+//! `rejected/comparison_contact.xml` E3002 at the root before, one E1054 at the contact after;
+//! `rejected/selector_names.xml` 2 E1006 before, the same with 2 W1430 saying which variable hid the
+//! value after. Every other unit gives the same diagnostics before and after.
 //!
-//! Gaps of this round, fixed here:
+//! Fixed here:
 //! - `FUNCTION F_SetStateParams : BOOL;` (TwinCAT accepts a `;` after a POU's header) read the
 //!   declarations as statements: one E0106 per line. The `;` now ends the header of a FUNCTION,
 //!   FUNCTION_BLOCK or PROGRAM (`st::file`, `header_semi`).
@@ -39,6 +49,20 @@
 //!   bounds, numbered as sema numbers them (implicit values count on from the previous one); an
 //!   initial value's expression still may not name one (IEC 61131-3 gives enumerations no
 //!   arithmetic), and a constant of the same name wins (`const_eval::enum_key`).
+//! - `<projects version="2.0">` holding one `<project>` (with its own copy of the headers) is the
+//!   project inside; several projects stay E3002.
+//! - A block named by a typed function name (`MAX_UDINT`, `EQ_UDINT`, `ADD_INT`, `MUX_INT_DINT`: IEC
+//!   61131-3 edition 2, 2.5.1.4) was E3007 "unknown block type" in LD/FBD while ST read it: it is the
+//!   function with its generic type fixed, as in ST.
+//! - A `<contact typeName="EQ_UDINT">` with `<variable1>` (a vendor's comparison contact, no TC6
+//!   element) gave E3008 about its UDINT variable; it is one E1054 naming it, nothing else read of it
+//!   (its meaning is the vendor's: a compare block does the same in TC6).
+//! - `Position := SEL_MANUAL;` where the block has an input `Sel_Manual : BOOL` (Beau28713's
+//!   selector: IEC 61131-3 names ignore case): the variable is read, as matiec reads it (its
+//!   "Incompatible data types for ':=' operation" at the same lines, so OpenPLC rejects the project
+//!   too), and E1006 follows; W1430 now says that the variable hid the value and names
+//!   `SELECTOR_POS#SEL_MANUAL`.
+//! - W1400 for outputs of two sizes (`%QW0` over `%QX0.0`) names the OpenPLC profile in its hint.
 //!
 //! The runs: the OpenPLC sensor timer (reproduced in `proximity_hold.xml`, shorter times) follows
 //! its comments: the lamp shows the sensor, a 500 ms pulse starts the off-delay, relay and green lamp
@@ -51,13 +75,17 @@
 //! them) they are apart and the lamps behave as in the first version (`proximity_hold_dimmers.xml`).
 //! blark's runnable constructs (typed CASE ranges, an enumeration in a block, PUBLIC, a CONSTANT
 //! without initial value, FB_init arguments with an initial value, `POINTER TO POINTER TO`, a UNION,
-//! `AND_THEN`/`OR_ELSE`) run in `constructs.st`.
+//! `AND_THEN`/`OR_ELSE`) run in `constructs.st`. -CMC-'s level network (the maximum of an analog
+//! input and 5000, compared with 5000) runs in `watering/level.xml` with its I/O declared; as
+//! published, its comparison contacts are E1054 and its I/O names (`AIO211_AI_CH2`, `DO211_CH3`,
+//! the vendor's hardware configuration, not in the file) E1001.
 //!
 //! The rejections name: types of libraries the files need and do not bring (`ST_LibVersion`,
 //! `ST_BeamParams`, `library.TPUDO`: E1003, E1032), an interface not given (`I_SendLog`, E0330),
 //! enumerations or constants the fragment does not declare (E0022, E1003), enumeration values
 //! computed by calls (E0011: IEC 61131-3 and TwinCAT want constants), a METHOD without its block
-//! (E1063). Left, recorded for the lead: a method file whose `METHOD` follows an `{attribute ...}`
+//! (E1063), a vendor's comparison contact (E1054), a variable hiding an enumeration value (E1006 with
+//! W1430). Left, recorded for the lead: a method file whose `METHOD` follows an `{attribute ...}`
 //! pragma (`array_of_arrays.st`, `array_of_objects.st`, `array_with_integer_initializer.st`,
 //! `stray_comment.st`) is read as IL (E0011 "after the instruction" and W0001) instead of one E1063:
 //! methods in files of their own are branch stlang's; array bounds from `SIZEOF` of TwinCAT's system
@@ -65,9 +93,17 @@
 //! that EXTENDS (`extended_union.st`) is two E0011; a chain of method calls on an undeclared block
 //! (`object_oriented_dotaccess.st`) is E0349 "no method" rather than the unknown type.
 //!
-//! No repository of this round carries a licence that allows copying (Federico19: none; blark:
-//! GPL-2.0): every fixture under `tests/fixtures/unseen/r17/` is a text of our own reproducing the
-//! constructs. No new IL program was found, so the matiec side-by-side corpus is unchanged.
+//! matiec side by side (`scripts/matiec-diff.sh`, iec2c 6bb2c33): blark's CASE and enumeration
+//! constructs as `tests/fixtures/matiec_diff/r17_case_ranges.st` agree in every value (300 cycles x
+//! 7 columns). matiec refuses the typed labels of blark's `CASE character OF BYTE#9..BYTE#10, ...`
+//! ("invalid case element(s)": edition 2's grammar has untyped integers there, edition 3 constant
+//! expressions) and a BYTE selector (IEC 61131-3: ANY_INT or an enumeration; TwinCAT takes a BYTE):
+//! the corpus program writes untyped labels on a USINT, and the typed form runs here
+//! (`constructs.st`). No new IL program was found this round.
+//!
+//! No repository of this round carries a licence that allows copying (Federico19, Beau28713,
+//! beta591414: none; blark: GPL-2.0): every fixture under `tests/fixtures/unseen/r17/` is a text of
+//! our own reproducing the constructs.
 
 mod common;
 use common::{column, ladderc};
