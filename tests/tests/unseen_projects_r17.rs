@@ -22,7 +22,7 @@
 //! | | units | run (or check) and behave | rejected, naming what is missing or wrong | ladderc gap |
 //! |---|---|---|---|---|
 //! | before | 25 (4 PLCopen XML, 18 ST, 3 TcPOU) | 6 | 12 | 7: a header ending with `;` (F_SetStateParams); the `<projects>` wrapper (-CMC-, E3002 at the root); a METHOD after a pragma read as IL (4 files); E0349 for a block type not declared (object_oriented_dotaccess) |
-//! | after | 25 | 6 | 14 | 5 left, none in this round's scope (below) |
+//! | after | 25 | 6 | 15 | 4 left, branch stlang's (below) |
 //!
 //! Besides the units' own verdicts, constructs they use were gaps, fixed here and run from texts of
 //! our own: enumeration values in array bounds (blark's `array_initializer`, `station/`), typed
@@ -36,7 +36,8 @@
 //! array of blocks) 3 errors before, runs after; `watering/level.xml` 1 E3002 before, runs after;
 //! `rejected/comparison_contact.xml` E3002 at the root before, one E1054 at the contact after;
 //! `rejected/selector_names.xml` 2 E1006 before, the same with 2 W1430 saying which variable hid the
-//! value after. Every other unit gives the same diagnostics before and after.
+//! value after; `object_oriented_dotaccess.st` 3 E0349 before, 1 E1003 (`SomeFunctionBlock`) after.
+//! Every other unit gives the same diagnostics before and after.
 //!
 //! Fixed here:
 //! - `FUNCTION F_SetStateParams : BOOL;` (TwinCAT accepts a `;` after a POU's header) read the
@@ -62,6 +63,8 @@
 //!   "Incompatible data types for ':=' operation" at the same lines, so OpenPLC rejects the project
 //!   too), and E1006 follows; W1430 now says that the variable hid the value and names
 //!   `SELECTOR_POS#SEL_MANUAL`.
+//! - A chain of method calls on an instance whose type is declared nowhere was E0349 "no method" at
+//!   each chain; it is the unknown type, E1003 at the declaration, once (`st/lower/call_chain.rs`).
 //! - W1400 for outputs of two sizes (`%QW0` over `%QX0.0`) names the OpenPLC profile in its hint.
 //!
 //! The runs: the OpenPLC sensor timer (reproduced in `proximity_hold.xml`, shorter times) follows
@@ -85,13 +88,13 @@
 //! enumerations or constants the fragment does not declare (E0022, E1003), enumeration values
 //! computed by calls (E0011: IEC 61131-3 and TwinCAT want constants), a METHOD without its block
 //! (E1063), a vendor's comparison contact (E1054), a variable hiding an enumeration value (E1006 with
-//! W1430). Left, recorded for the lead: a method file whose `METHOD` follows an `{attribute ...}`
+//! W1430), a block type declared nowhere under a chain of method calls (E1003 at the declaration,
+//! once; before, E0349 "no method" at each chain). Left, recorded for the lead: a method file whose `METHOD` follows an `{attribute ...}`
 //! pragma (`array_of_arrays.st`, `array_of_objects.st`, `array_with_integer_initializer.st`,
 //! `stray_comment.st`) is read as IL (E0011 "after the instruction" and W0001) instead of one E1063:
 //! methods in files of their own are branch stlang's; array bounds from `SIZEOF` of TwinCAT's system
 //! information (`FB_Log.TcPOU`) are one E0011 at the `(` (located, without naming SIZEOF); a UNION
-//! that EXTENDS (`extended_union.st`) is two E0011; a chain of method calls on an undeclared block
-//! (`object_oriented_dotaccess.st`) is E0349 "no method" rather than the unknown type.
+//! that EXTENDS (`extended_union.st`) is two E0011.
 //!
 //! matiec side by side (`scripts/matiec-diff.sh`, iec2c 6bb2c33): blark's CASE and enumeration
 //! constructs as `tests/fixtures/matiec_diff/r17_case_ranges.st` agree in every value (300 cycles x
@@ -407,6 +410,10 @@ fn blark_fragments_rejected_located() {
             &["task_info_bounds.st:4:33: error[E0011]: unexpected `(`"],
         ),
         (
+            "chain_undeclared.st",
+            &["chain_undeclared.st:5:16: error[E1003]: unknown type `FB_Recipe`"],
+        ),
+        (
             "union_extends.st",
             &[
                 "union_extends.st:2:14: error[E0011]: unexpected `EXTENDS`",
@@ -486,4 +493,20 @@ fn comparison_contact_and_hidden_enumeration_values_rejected() {
         );
     let (code, lines) = common::check_text("selector_fixed.xml", &text);
     assert_eq!((code, lines.len()), (Some(0), 0), "{lines:?}");
+}
+
+/// blark's object_oriented_dotaccess.st: methods chained on one statement, each returning a
+/// reference to its block (runs), and the same on a block whose type is declared nowhere: one
+/// E1003 at the declaration (before: E0349 "no method" at each chain, the type not named).
+#[test]
+fn chained_method_calls_run() {
+    let (trace, _) = run(
+        &[fixture("chain/fluent.st")],
+        &[],
+        2,
+        "",
+        "MAIN.fbRecipe.nAmount",
+    );
+    // (0 + 5 + 2) * 10, then (70 + 7) * 10
+    assert_eq!(column(&trace, "MAIN.fbRecipe.nAmount"), [70.0, 770.0]);
 }
