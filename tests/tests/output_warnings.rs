@@ -123,10 +123,18 @@ END_PROGRAM
             "ov.il:4:12: warning[W1400]: `other` at %QX1.0 shares output bits with `panel` at %QW0",
             "ov.il:6:11: warning[W1400]: `same` at %QX2.0 shares output bits with `free` at %QX2.0",
         ]
-        .map(|s| format!(
-            "{}{s} (hint: give each output its own address; writing one changes the other)",
-            src.parent().unwrap().display().to_string() + "/"
-        )),
+        .map(|s| {
+            // two sizes: apart in OpenPLC's and matiec's memory, which a profile models
+            let apart = if s.contains("%QW0") {
+                " (OpenPLC and matiec keep one image per size, where they are apart: `--profile crates/c-backend/profiles/openplc.json`)"
+            } else {
+                ""
+            };
+            format!(
+                "{}{s} (hint: give each output its own address; writing one changes the other{apart})",
+                src.parent().unwrap().display().to_string() + "/"
+            )
+        }),
         "{err}"
     );
 }

@@ -27,8 +27,30 @@ pub enum ConstNum {
     Duration(i128),
 }
 
-/// The constants known to the expressions of a text, by upper-case name.
+/// The constants known to the expressions of a text, by upper-case name; the values of
+/// enumerations under [`enum_key`] of theirs.
 pub type Constants = HashMap<String, ConstNum>;
+
+/// The key of an enumeration's value among the [`Constants`] (`ENUM RUNNER_END`: a space, so no
+/// constant's name): an integer bound may name it (`ARRAY[E_Task.First..E_Task.Last]`, the
+/// qualifier blanked in `.st` text), as CODESYS and TwinCAT allow, while an initial value's
+/// expression may not (an enumeration is no number in IEC 61131-3's arithmetic).
+pub fn enum_key(value: &str) -> String {
+    format!("ENUM {}", value.to_ascii_uppercase())
+}
+
+/// Adds the values of the enumeration `values` (implicit ones count on from the previous, as sema
+/// numbers them) under [`enum_key`]; a value already known (another enumeration's) is kept.
+pub fn add_enum_values(consts: &mut Constants, values: &[crate::ast::EnumValue]) {
+    let mut next = 0i128;
+    for v in values {
+        let value = v.value.unwrap_or(next);
+        next = value.saturating_add(1);
+        consts
+            .entry(enum_key(&v.name.name))
+            .or_insert(ConstNum::Int(value));
+    }
+}
 
 impl ConstNum {
     /// The literal that holds this value as an initial value.
@@ -101,7 +123,12 @@ fn eval_at(e: &BoundExpr, consts: &Known, depth: u32) -> Result<ConstNum, String
         BoundExpr::NotNumber(_) => {
             Err("only numbers and durations (T#...) make constant expressions".into())
         }
-        BoundExpr::Name(n) => match consts.consts.get(&n.name.to_ascii_uppercase()) {
+        BoundExpr::Name(n) => match consts.consts.get(&n.name.to_ascii_uppercase()).or_else(|| {
+            consts
+                .consts
+                .get(&enum_key(&n.name))
+                .filter(|_| consts.integers)
+        }) {
             Some(v) if !consts.integers || matches!(v, ConstNum::Int(_)) => Ok(*v),
             _ if consts.integers => Err(format!(
                 "`{}` is not an integer constant declared before",

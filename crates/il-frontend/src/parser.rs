@@ -1536,9 +1536,17 @@ pub fn global_integer_constants(unit: &CompilationUnit, diags: &Diagnostics) -> 
             }
         }
     };
+    let mut enums = Vec::new();
     for item in &unit.items {
         match item {
             LibraryElement::GlobalVars(b) => add(b),
+            // a TwinCAT DUT's enumeration bounds the arrays of other objects
+            LibraryElement::DataTypes(types) => {
+                enums.extend(types.iter().filter_map(|t| match &t.def {
+                    TypeDef::Enum { values, .. } => Some(values),
+                    _ => None,
+                }))
+            }
             LibraryElement::Configuration(c) => {
                 c.globals.iter().for_each(&mut add);
                 c.resources
@@ -1548,6 +1556,9 @@ pub fn global_integer_constants(unit: &CompilationUnit, diags: &Diagnostics) -> 
             }
             _ => {}
         }
+    }
+    for values in enums {
+        crate::const_eval::add_enum_values(&mut found, values);
     }
     found
 }

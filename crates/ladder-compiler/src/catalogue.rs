@@ -360,6 +360,16 @@ pub fn std_function(name: &str) -> Option<StdFunction> {
             f(ResultRule::Fixed("STRING"), None, 0)
         }
         _ => {
+            // A typed name (`MAX_UDINT`, `ADD_INT`, `MUX_INT_DINT`: IEC 61131-3 edition 2,
+            // 2.5.1.4, as ST reads them): the function with its generic type fixed
+            if let Some((base, _)) = il_frontend::sema::stdlib::typed_name(&u) {
+                let mut typed = std_function(base.name)?;
+                if typed.rule == ResultRule::SameAsInputs {
+                    let t = u.rsplit('_').next()?;
+                    typed.rule = ResultRule::Fixed(static_name(t)?);
+                }
+                return Some(typed);
+            }
             // Conversions: X_TO_Y, and the BCD conversions.
             let (_, target) = u.split_once("_TO_")?;
             let target = target.strip_prefix("BCD_").unwrap_or(target);

@@ -103,6 +103,9 @@ pub enum Kind<'x> {
         negated: bool,
         /// Transition sensing (`-|P|-`, `-|N|-`).
         edge: Edge,
+        /// A vendor's comparison contact, not PLCopen TC6: `typeName="EQ_UDINT"` and the second
+        /// operand in `<variable1>` (beta591414/-CMC-): the type name and where it is written.
+        compare: Option<(Text<'x>, Span)>,
     },
     /// `<coil>`: writes the power flow into a BOOL variable.
     Coil {
@@ -453,11 +456,16 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
             "rightPowerRail" => Kind::RightRail,
             "contact" => {
                 let (var, var_span) = text_of(ctx, e, "variable");
+                let compare = match (e.attr("typeName"), e.child("variable1")) {
+                    (None, None) => None,
+                    (name, _) => Some((Cow::Borrowed(name.map_or("", trim)), span)),
+                };
                 Kind::Contact {
                     var,
                     var_span,
                     negated: truthy(a),
                     edge: edge_of(b),
+                    compare,
                 }
             }
             "coil" => {

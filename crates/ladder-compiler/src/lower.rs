@@ -1234,7 +1234,28 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 var_span,
                 negated,
                 edge,
+                compare,
             } => {
+                if let Some((name, at)) = compare {
+                    // the vendor's comparison contact: one error, nothing else read of it
+                    let what = if name.is_empty() {
+                        "a second operand (`<variable1>`)".to_string()
+                    } else {
+                        format!("`typeName=\"{name}\"`")
+                    };
+                    let d = self
+                        .diag(
+                            ctx,
+                            code::E1054,
+                            i,
+                            *at,
+                            format!("contact `{var}` compares ({what}): a vendor's comparison contact, not PLCopen TC6"),
+                        )
+                        .with_hint("a TC6 contact reads one BOOL variable: compare with a block (`EQ`, `GT`, ...) wired into the rung, or into a BOOL variable the contact reads");
+                    ctx.report(d);
+                    self.poisoned.insert(i);
+                    return;
+                }
                 let input = self.input_val(ctx, &node.input, i);
                 if input.is_none() && !node.wired {
                     if !g.nodes.iter().any(|n| n.wires().any(|w| w.from == i)) {

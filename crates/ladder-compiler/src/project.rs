@@ -82,6 +82,12 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     // a file of one POU (RuSTy's and Bachmann's `.cfc`, tools that export one object per file): the
     // project of that POU
     let single_pou = root.name() == "pou" && root.attr("xmlns").is_some_and(is_plcopen_namespace);
+    // `<projects version="2.0">` around one `<project>` (a vendor's IDE, beta591414/-CMC-: its own
+    // copy of the headers, then the PLCopen project): the project inside
+    let mut inner = root.children_named("project");
+    if let (true, Some(project), None) = (root.name() == "projects", inner.next(), inner.next()) {
+        return read_project(ctx, project);
+    }
     if root.name() != "project" && !single_pou {
         ctx.error(
             code::E3002,

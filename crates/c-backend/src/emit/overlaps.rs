@@ -4,12 +4,14 @@
 //! globals, configuration and resource globals) placed by the target profile. Output: one warning per
 //! overlapping pair, at the later declaration's address with a label at the earlier one. Invariants:
 //! addresses the profile rejects are skipped here (their errors come from code generation); the
-//! comparison is bit by bit within the bytes each access touches.
+//! comparison is bit by bit within the bytes each access touches. A pair of different sizes (`%QX`
+//! and `%QW`) is apart where the project comes from (OpenPLC and matiec keep one image per size):
+//! its hint names the profile that models that (`profiles/openplc.json`).
 
 use super::values::located_bytes;
 use super::Gen;
 use diagnostics::{code, Diagnostic, Span, XmlContext};
-use il_frontend::ast::{Area, DirectAddress, VarKind};
+use il_frontend::ast::{AddressSize, Area, DirectAddress, VarKind};
 use il_frontend::sema::Variable;
 use std::collections::BTreeMap;
 
@@ -46,7 +48,7 @@ impl Gen<'_> {
         decls.sort_by_key(|(_, _, v)| (v.span.file.0, v.span.start));
         // byte -> (declaration, bit mask) of each located output touching it
         let mut bytes: BTreeMap<u32, Vec<(usize, u8)>> = BTreeMap::new();
-        let mut placed: Vec<(String, Span, String, Option<&str>)> = Vec::new();
+        let mut placed: Vec<(String, Span, String, Option<&str>, AddressSize)> = Vec::new();
         for (name, pou, v) in &decls {
             let Some(loc) = &v.location else { continue };
             if loc.area != Area::Output {
@@ -71,7 +73,7 @@ impl Gen<'_> {
                 continue;
             };
             let k = placed.len();
-            placed.push((name.clone(), span, address_text(loc), *pou));
+            placed.push((name.clone(), span, address_text(loc), *pou, loc.size));
             match l.bit {
                 Some(b) => bytes.entry(l.offset).or_default().push((k, 1u8 << b)),
                 None => {
@@ -92,8 +94,13 @@ impl Gen<'_> {
             }
         }
         for (a, b) in pairs.into_keys() {
-            let (an, asp, aa, _) = &placed[a];
-            let (bn, bsp, ba, bpou) = &placed[b];
+            let (an, asp, aa, _, asize) = &placed[a];
+            let (bn, bsp, ba, bpou, bsize) = &placed[b];
+            let hint = if asize == bsize {
+                "give each output its own address; writing one changes the other"
+            } else {
+                "give each output its own address; writing one changes the other (OpenPLC and matiec keep one image per size, where they are apart: `--profile crates/c-backend/profiles/openplc.json`)"
+            };
             let xml = XmlContext {
                 pou: bpou.map(str::to_string),
                 ..Default::default()
@@ -106,7 +113,7 @@ impl Gen<'_> {
                 .at(*bsp)
                 .with_primary_label("overlaps")
                 .with_label(*asp, "this output")
-                .with_hint("give each output its own address; writing one changes the other")
+                .with_hint(hint)
                 .with_xml(xml),
             );
         }
@@ -119,7 +126,7 @@ fn located_output(v: &Variable) -> bool {
 }
 
 fn address_text(loc: &il_frontend::sema::Location) -> String {
-    use il_frontend::ast::AddressSize as S;
+    use AddressSize as S;
     let size = match loc.size {
         S::Bit => "X",
         S::Byte => "B",

@@ -78,6 +78,9 @@ pub struct PouText {
     /// The `EXTENDS base` / `IMPLEMENTS itf` clause after the name (edition 3 inheritance, read by
     /// [`super::inherit`]); for an INTERFACE its `EXTENDS` clause.
     pub heritage: Option<Range<usize>>,
+    /// The `;` that ends a POU's header (`FUNCTION F : BOOL;`, accepted by TwinCAT): blanked for
+    /// the declarations' reader.
+    pub header_semi: Option<Range<usize>>,
     /// Not a POU: an `INTERFACE name ... END_INTERFACE` block (edition 3: its methods are in
     /// `methods`, checked against the blocks that implement it; `body` is the whole block).
     pub interface: Option<Range<usize>>,
@@ -302,6 +305,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     action_list,
                     modifier: None,
                     heritage: None,
+                    header_semi: None,
                     interface: None,
                 });
                 i = j;
@@ -341,6 +345,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     action_list: Vec::new(),
                     modifier: None,
                     heritage,
+                    header_semi: None,
                     interface: Some(start.start..name_tok.range.end),
                 });
                 i = j;
@@ -406,6 +411,15 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                             i += 1;
                         }
                     }
+                }
+                // `FUNCTION F_SetStateParams : BOOL;` (TwinCAT accepts the `;` after the header,
+                // pcdshub's lcls-twincat-motion): the header ends there
+                let header_semi = toks
+                    .get(i)
+                    .filter(|t| t.tok == Tok::Semi)
+                    .map(|t| t.range.clone());
+                if header_semi.is_some() {
+                    i += 1;
                 }
                 let heritage_start = toks.get(i).map(|t| t.range.start);
                 let mut heritage = None;
@@ -501,6 +515,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     action_list: Vec::new(),
                     modifier,
                     heritage,
+                    header_semi,
                     interface: None,
                 });
                 i = j + 1;
@@ -1278,6 +1293,9 @@ pub fn parse_text(
             );
             blank(&mut text, p.body.clone());
             continue;
+        }
+        if let Some(r) = &p.header_semi {
+            blank(&mut text, r.clone());
         }
         if p.sfc.is_some() {
             pending.push(PendingBody {

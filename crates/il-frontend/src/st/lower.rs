@@ -736,6 +736,8 @@ impl<'d> PouLowering<'d> {
                     Ty::Known(_) => None,
                     _ => self.env().place_type(target),
                 };
+                let target_type = self.env().place_type(target);
+                self.shadowed_enum_value(value, target_type.as_ref(), diags);
                 self.value(value, &mut code, diags);
                 if let (Some(p), false) = (place, self.poisoned) {
                     code.push(simple(Op::St, false, Some(p), span));
@@ -1448,6 +1450,57 @@ impl<'d> PouLowering<'d> {
             }
             _ => None,
         }
+    }
+
+    /// W1430 when `e` is a bare name that is a variable (of another type) and also a value of the
+    /// enumeration `hint` (`Position := SEL_MANUAL;` with an input `Sel_Manual : BOOL`): IEC 61131-3
+    /// names ignore case, the variable is read (as matiec reads it; sema then reports the type), and
+    /// the note says why.
+    fn shadowed_enum_value(&self, e: &Expr, hint: Option<&TypeRef>, diags: &mut Diagnostics) {
+        let ExprKind::Place(Place {
+            base: PlaceBase::Name(value),
+            accessors,
+            ..
+        }) = &e.kind
+        else {
+            return;
+        };
+        let (true, Some(var_type), Some(hint)) =
+            (accessors.is_empty(), self.env().var_type(value), hint)
+        else {
+            return;
+        };
+        let TypeRef::Named(t) = self.env().resolve(hint) else {
+            return;
+        };
+        let Some(decl) = self.decls.type_decl(&t.name) else {
+            return;
+        };
+        let crate::ast::TypeDef::Enum { values, .. } = &decl.def else {
+            return;
+        };
+        let same_type = matches!(self.env().resolve(&var_type), TypeRef::Named(v) if v.is(&t.name));
+        let Some(declared) = values.iter().find(|v| v.name.is(&value.name)) else {
+            return;
+        };
+        if same_type {
+            return;
+        }
+        let (ty, val) = (&decl.name.name, &declared.name.name);
+        diags.push(
+            Diagnostic::warning(
+                code::W1430,
+                format!(
+                    "`{}` is a variable here, not the value {ty}#{val} the assignment expects",
+                    value.name
+                ),
+            )
+            .at(value.span)
+            .with_primary_label("the variable is read")
+            .with_hint(format!(
+                "IEC 61131-3 names ignore case, and a variable hides an enumeration's value of the same name: write {ty}#{val} for the value, or rename the variable"
+            )),
+        );
     }
 
     /// The reference operand `e` stands for, if it is one: `REF(x)` / `ADR(x)` / `r REF= x`'s `x`,

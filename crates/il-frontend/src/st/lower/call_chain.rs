@@ -12,7 +12,8 @@
 //! copied, so a write through the chain reaches the referenced instance; a `POINTER TO`, a
 //! structure or an interface result is copied into its temporary right after the call, so a second
 //! call of the same method later in the statement cannot change what the chain reads. A call that
-//! is no method (nor the block's own method) is one E0349 at the call, the statement dropped.
+//! is no method (nor the block's own method) is one E0349 at the call, the statement dropped; when
+//! the instance's type is declared nowhere, that is the error instead (E1003 at its declaration).
 
 use super::super::ast::{Accessor, Arg, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind};
 use super::super::refs::REF_ASSIGN;
@@ -37,6 +38,25 @@ fn name_place(n: Ident) -> Place {
 }
 
 impl PouLowering<'_> {
+    /// The type name of `callee`'s instance (`uut` of `uut.M`) when no declaration of the project
+    /// and no standard block has it (sema reports it E1003).
+    fn undeclared_block_type(&self, callee: &Place) -> Option<Ident> {
+        let (PlaceBase::Name(n), [Accessor::Field(_)]) =
+            (&callee.base, callee.accessors.as_slice())
+        else {
+            return None;
+        };
+        let TypeRef::Named(t) = self.env().var_type(n)? else {
+            return None;
+        };
+        let known = crate::sema::model::Elementary::from_name(&t.name.to_ascii_uppercase())
+            .is_some()
+            || self.decls.type_decl(&t.name).is_some()
+            || self.decls.pou(&t.name).is_some()
+            || crate::sema::model::StdFb::from_name(&t.name).is_some();
+        (!known).then_some(t)
+    }
+
     /// Replaces every call inside `p` (left to right) by a temporary holding its result; the
     /// calls and the bindings go to `calls`. `false` (after one E0349) when a call is no method
     /// call or its result cannot be accessed.
@@ -76,6 +96,24 @@ impl PouLowering<'_> {
             // `a.Child.Kid()` with `PROPERTY Child`: the property's value in a temporary first
             self.property_holder(&mut callee, calls);
             let Some(result) = self.chain_result(&callee) else {
+                if let Some(t) = self.undeclared_block_type(&callee) {
+                    // `uut.DoSomething(...).Finish()` with `uut : SomeFunctionBlock` declared
+                    // nowhere: the missing type is the cause (sema's E1003 at the declaration,
+                    // once), not the chain
+                    let here = Some(t.span);
+                    if !diags
+                        .iter()
+                        .any(|d| d.code == code::E1003 && d.span == here)
+                    {
+                        diags.push(
+                            Diagnostic::error(code::E1003, format!("unknown type `{}`", t.name))
+                                .at(t.span)
+                                .with_primary_label("no such type")
+                                .with_hint("declare it in a TYPE block or as a FUNCTION_BLOCK, or use an elementary type"),
+                        );
+                    }
+                    return false;
+                }
                 diags.push(
                     Diagnostic::error(
                         code::E0349,
