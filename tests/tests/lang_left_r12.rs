@@ -293,21 +293,22 @@ fn memory_functions_are_bounded_by_their_variables() {
     );
 }
 
-/// A pointer whose variable cannot be known, a wrong argument list, a count that is no integer and
-/// a located variable: one located error each.
+/// A pointer whose variable cannot be known (arithmetic on a pointer; a pointer variable itself is
+/// bounded by its reference since Session 34, `pointer_index_run`), a wrong argument list, a count
+/// that is no integer and a located variable: one located error each.
 #[test]
 fn memory_functions_on_unknown_objects_are_refused() {
     let (code, lines) = check_text(
         "m.st",
         "PROGRAM Main\nVAR a, b : ARRAY[0..9] OF BYTE; p : POINTER TO BYTE; END_VAR\np := ADR(a);\n\
-         MEMCPY(destAddr := p, srcAddr := ADR(b), n := SIZEOF(b));\nMEMSET(ADR(a), 1);\n\
+         MEMCPY(destAddr := p + 1, srcAddr := ADR(b), n := SIZEOF(b));\nMEMSET(ADR(a), 1);\n\
          MEMCPY(dest := ADR(a), srcAddr := ADR(b), n := 1);\nEND_PROGRAM\n",
     );
     assert_eq!(code, Some(1));
     assert_eq!(
         lines,
         vec![
-            "m.st:4:20: error[E1035]: MEMCPY: the variable this pointer points into cannot be known (hint: pass `ADR(x)` of the variable itself (an element or a field too): ladderc bounds the count by the sizes of the variables it can see)",
+            "m.st:4:20: error[E1035]: MEMCPY: the variable this pointer points into cannot be known (hint: pass `ADR(x)` of the variable itself (an element or a field too), or a POINTER TO variable: ladderc bounds the count by the variable the address belongs to)",
             "m.st:5:1: error[E1035]: `MEMSET` takes three arguments (hint: write `MEMSET(destAddr := ADR(...), fillByte := ..., n := ...)`)",
             "m.st:6:8: error[E1035]: `MEMCPY` has no such argument (hint: write `MEMCPY(destAddr := ADR(...), srcAddr := ..., n := ...)`)",
         ]
