@@ -1,5 +1,5 @@
 //! A user FUNCTION's input of a generic type, `In : ANY;` (`ANY_NUM`, `ANY_INT` ...: CODESYS online
-//! help "ANY and ANY_<type>", TwinCAT likewise): the function accepts an argument of any type of
+//! help "ANY and `ANY_<type>`", TwinCAT likewise): the function accepts an argument of any type of
 //! the family and sees, instead of the value, its description `__SYSTEM.AnyType`: `In.diSize` (the
 //! argument's size in bytes), `In.TypeClass` (its class, compared with `__SYSTEM.TYPE_CLASS.TYPE_INT`
 //! ...) and `In.pValue` (its address).

@@ -124,7 +124,7 @@ pub struct PendingMethod {
     /// The byte ranges (in the file) of the assignments, among the statements, that give VAR_INST
     /// variables an initial value computed at run time (`pSelf : POINTER TO FB_X := THIS;`,
     /// `n : INT := THIS^.nBase;`, TwinCAT): run once per instance, at the method's first call
-    /// ([`super::method_inits`]).
+    /// (`method_inits`).
     pub once: Vec<Range<usize>>,
 }
 
@@ -1987,7 +1987,7 @@ pub fn lower_method(
 
 /// The hidden method that computes the VAR_INST initial values of method `m` (its
 /// [`PendingMethod::once`] assignments, guarded by their flag) when an instance is initialised,
-/// before its FB_init ([`super::fb_init`]), named [`super::method_inits::INIT_PREFIX`] + the
+/// before its FB_init ([`super::fb_init`]), named `method_inits::INIT_PREFIX` + the
 /// method's name. `None` when `m` has none.
 pub fn lower_instance_init(
     file: FileId,
