@@ -9,7 +9,7 @@
 //! constants and a bound that overflows are one located E0022 each.
 
 mod common;
-use common::{ladderc, run_traced, run_traced_files};
+use common::{check_files, ladderc, run_traced, run_traced_files};
 
 use std::path::{Path, PathBuf};
 
@@ -112,27 +112,6 @@ fn a_bound_qualified_by_the_list_name_in_a_codesys_export() {
          2,20,10,20,30\n\
          3,30,10,20,30\n"
     );
-}
-
-/// `ladderc check` of the files (name, text) written together: exit code and the error lines
-/// up to their hints, with the temporary folder left out.
-fn check_files(files: &[(&str, &str)]) -> (Option<i32>, Vec<String>) {
-    let dir = tempfile::tempdir().unwrap();
-    let paths: Vec<PathBuf> = files
-        .iter()
-        .map(|(name, src)| {
-            let p = dir.path().join(name);
-            std::fs::write(&p, src).unwrap();
-            p
-        })
-        .collect();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .args(&paths)
-        .output()
-        .unwrap();
-    let lines = common::diagnostic_heads(&out.stderr, dir.path(), false);
-    (out.status.code(), lines)
 }
 
 #[test]

@@ -28,56 +28,13 @@
 //!   indexing and casts). Before: E1003 "unknown type `ANY`".
 
 mod common;
-use common::{column, ladderc, run_traced_files};
+use common::{check_files, column, ladderc, run_stimulated_files, run_traced_files};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/fixtures/lang_left_r17")
         .join(name)
-}
-
-/// `ladderc run FILES --stimulus ...` with the trace of `watch`; asserts exit 0 and no sanitizer
-/// report.
-fn run_stimulated_files(files: &[PathBuf], cycles: u32, stimulus: &str, watch: &str) -> String {
-    let dir = tempfile::tempdir().unwrap();
-    let stim = dir.path().join("stim.csv");
-    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .args(files)
-        .args(["--cycles", &cycles.to_string(), "--sanitize", "--stimulus"])
-        .arg(&stim)
-        .args(["--trace", "-", "--watch", watch])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{files:?}: {stderr}");
-    assert!(!stderr.contains("Sanitizer"), "{stderr}");
-    String::from_utf8_lossy(&out.stdout).into_owned()
-}
-
-/// `ladderc check FILES` of texts written to a temporary folder: exit code and the error lines up
-/// to their hints, with the folder left out.
-fn check_files(files: &[(&str, &str)]) -> (Option<i32>, Vec<String>) {
-    let dir = tempfile::tempdir().unwrap();
-    let paths: Vec<PathBuf> = files
-        .iter()
-        .map(|(name, text)| {
-            let p = dir.path().join(name);
-            std::fs::write(&p, text).unwrap();
-            p
-        })
-        .collect();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .args(&paths)
-        .output()
-        .unwrap();
-    (
-        out.status.code(),
-        common::diagnostic_heads(&out.stderr, dir.path(), false),
-    )
 }
 
 // ------------------------------------------------------------------ 1. methods one file each
@@ -105,8 +62,9 @@ fn sequencer_files() -> Vec<PathBuf> {
 /// its code is in `Valve.Open.st`): each scan opens it once more.
 #[test]
 fn methods_exported_one_file_each_run_in_their_block() {
-    let trace = run_stimulated_files(
+    let (trace, _) = run_stimulated_files(
         &sequencer_files(),
+        &[],
         7,
         "4,PLC_PRG.xClear,1\n4,PLC_PRG.xRun,0\n5,PLC_PRG.xClear,0\n",
         "PLC_PRG.seq.iStep,PLC_PRG.seq.xError,PLC_PRG.seq.iErrorID,PLC_PRG.xBusy,PLC_PRG.iOpened",

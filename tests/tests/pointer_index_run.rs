@@ -215,30 +215,11 @@ fn pointer_c_is_warning_free() {
         "pointer_casts.st",
         "pointer_faults.st",
     ] {
-        let dir = tempfile::tempdir().unwrap();
-        let out_dir = dir.path().join("out");
-        let out = ladderc()
-            .arg("build")
-            .arg(fixture(name))
-            .arg("-o")
-            .arg(&out_dir)
-            .output()
-            .unwrap();
-        common::assert_ok(&out);
-        let c = std::fs::read_to_string(out_dir.join("program.c")).unwrap();
+        let (dir, c) =
+            common::build_and_make(&fixture(name), "-Wall -Wextra -Werror -pedantic -O1");
         assert!(c.contains("ladderc_deref("), "{name}");
-        let make = std::fs::read_to_string(out_dir.join("Makefile")).unwrap();
+        let make = std::fs::read_to_string(dir.path().join("out/Makefile")).unwrap();
         assert!(make.contains("-fno-strict-aliasing"), "{make}");
-        let built = Command::new("make")
-            .args(["-s", "CFLAGS=-Wall -Wextra -Werror -pedantic -O1"])
-            .current_dir(&out_dir)
-            .output()
-            .unwrap();
-        assert!(
-            built.status.success(),
-            "{name}: {}",
-            String::from_utf8_lossy(&built.stderr)
-        );
     }
 }
 

@@ -288,28 +288,9 @@ fn deep_references_are_bounded() {
 #[test]
 fn reference_c_is_warning_free() {
     for name in ["ref_walk.st", "pointers.st", "reference_input.st"] {
-        let dir = tempfile::tempdir().unwrap();
-        let out_dir = dir.path().join("out");
-        let out = ladderc()
-            .arg("build")
-            .arg(fixture(name))
-            .arg("-o")
-            .arg(&out_dir)
-            .output()
-            .unwrap();
-        common::assert_ok(&out);
-        let c = std::fs::read_to_string(out_dir.join("program.c")).unwrap();
+        let (_dir, c) =
+            common::build_and_make(&fixture(name), "-std=c99 -Wall -Wextra -Werror -O1");
         assert!(c.contains("ladderc_deref("), "{name}");
         assert!(c.contains("static IEC_"), "{name}: no NULL scratch object");
-        let make = Command::new("make")
-            .args(["-s", "CFLAGS=-std=c99 -Wall -Wextra -Werror -O1"])
-            .current_dir(&out_dir)
-            .output()
-            .unwrap();
-        assert!(
-            make.status.success(),
-            "{name}: {}",
-            String::from_utf8_lossy(&make.stderr)
-        );
     }
 }

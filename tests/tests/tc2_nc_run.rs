@@ -177,13 +177,8 @@ fn nc_axes_inside_the_tsproj_are_read_too() {
 fn a_missing_nc_file_is_e1047_and_an_unreadable_value_w1428() {
     let dir = copy_of_cell();
     std::fs::remove_file(dir.path().join("_Config/NC/Axes/Table Axis.xti")).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(dir.path().join("Cell/Cell.plcproj"))
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let (code, stderr) = common::check_stderr(&dir.path().join("Cell/Cell.plcproj"));
+    assert_eq!(code, Some(1), "{stderr}");
     let e = stderr.lines().find(|l| l.contains("E1047")).expect("E1047");
     assert!(
         e.contains("_Config/NC/NC.xti:17:15: error[E1047]") && e.contains("Table Axis.xti"),
@@ -328,13 +323,8 @@ fn an_axis_ref_without_an_nc_link_is_e1056_naming_the_nc_axes() {
         .unwrap();
     let e = s + text[s..].find("</OwnerB>").unwrap() + "</OwnerB>".len();
     std::fs::write(&tsproj, format!("{}{}", &text[..s], &text[e..])).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(dir.path().join("Cell/Cell.plcproj"))
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let (code, stderr) = common::check_stderr(&dir.path().join("Cell/Cell.plcproj"));
+    assert_eq!(code, Some(1), "{stderr}");
     let e = stderr.lines().find(|l| l.contains("E1056")).expect("E1056");
     assert!(
         e.contains(

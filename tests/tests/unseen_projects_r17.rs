@@ -109,40 +109,13 @@
 //! our own reproducing the constructs.
 
 mod common;
-use common::{column, ladderc};
+use common::{column, ladderc, run_stimulated_files};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("tests/fixtures/unseen/r17")
         .join(name)
-}
-
-/// `ladderc run FILES --cycles N --stimulus S --watch W --trace - --sanitize` (and `extra`): the
-/// trace; asserts exit 0 and no sanitizer report. Standard error is returned too.
-fn run(
-    files: &[PathBuf],
-    extra: &[&str],
-    cycles: u32,
-    stimulus: &str,
-    watch: &str,
-) -> (String, String) {
-    let dir = tempfile::tempdir().unwrap();
-    let stim = dir.path().join("stim.csv");
-    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .args(files)
-        .args(extra)
-        .args(["--cycles", &cycles.to_string(), "--sanitize", "--stimulus"])
-        .arg(&stim)
-        .args(["--trace", "-", "--watch", watch])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{files:?}: {stderr}");
-    assert!(!stderr.contains("Sanitizer"), "{stderr}");
-    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
 }
 
 /// The cycles at which the column `name` changes, with its new value (the first row included).
@@ -164,7 +137,7 @@ const SENSOR_PULSE: &str =
 /// Federico19's lab 2: NOT sensor -> TP 500 ms -> TOF (2 s here); lamp, relay and the two lamps.
 #[test]
 fn openplc_sensor_pulse_and_off_delay_run() {
-    let (trace, _) = run(
+    let (trace, _) = run_stimulated_files(
         &[fixture("proximity_hold.xml")],
         &[],
         400,
@@ -197,7 +170,8 @@ fn openplc_sensor_pulse_and_off_delay_run() {
 fn openplc_dimmer_words_share_bytes_unless_openplc_profile() {
     let watch = "instance0.lamp_ok,instance0.lamp_fault,instance0.dimmer_r,instance0.dimmer_g";
     let file = fixture("proximity_hold_dimmers.xml");
-    let (trace, stderr) = run(std::slice::from_ref(&file), &[], 400, SENSOR_PULSE, watch);
+    let (trace, stderr) =
+        run_stimulated_files(std::slice::from_ref(&file), &[], 400, SENSOR_PULSE, watch);
     assert!(
         stderr.contains("warning[W1400]: `program0.dimmer_r` at %QW0 shares output bits with `program0.lamp_ok` at %QX0.0"),
         "{stderr}"
@@ -215,7 +189,8 @@ fn openplc_dimmer_words_share_bytes_unless_openplc_profile() {
     assert_eq!(changes(&trace, "instance0.lamp_fault"), [(0, 0.0)]);
     let profile = common::repo_root().join("crates/c-backend/profiles/openplc.json");
     let profile = profile.to_string_lossy();
-    let (trace, stderr) = run(&[file], &["--profile", &profile], 400, SENSOR_PULSE, watch);
+    let (trace, stderr) =
+        run_stimulated_files(&[file], &["--profile", &profile], 400, SENSOR_PULSE, watch);
     assert!(!stderr.contains("W1400"), "{stderr}");
     assert_eq!(
         changes(&trace, "instance0.lamp_ok"),
@@ -239,7 +214,7 @@ fn openplc_dimmer_words_share_bytes_unless_openplc_profile() {
 /// and a PROGRAM's name) ends the header; before, each declaration line was an E0106.
 #[test]
 fn header_ending_with_semicolon_runs() {
-    let (trace, _) = run(
+    let (trace, _) = run_stimulated_files(
         &[fixture("header_semi/F_InWindow.st")],
         &[],
         5,
@@ -267,7 +242,7 @@ fn enumeration_values_bound_an_array_of_blocks() {
         [fixture("station/E_Station.st"), fixture("station/MAIN.st")],
         [fixture("station/MAIN.st"), fixture("station/E_Station.st")],
     ] {
-        let (trace, _) = run(
+        let (trace, _) = run_stimulated_files(
             &files,
             &[],
             5,
@@ -317,7 +292,7 @@ fn enumeration_values_are_no_numbers_in_initial_values() {
         ),
     )
     .unwrap();
-    let (trace, _) = run(&[file], &[], 3, "", "MAIN.a[5],MAIN.a[6]");
+    let (trace, _) = run_stimulated_files(&[file], &[], 3, "", "MAIN.a[5],MAIN.a[6]");
     assert_eq!(column(&trace, "MAIN.a[5]"), [1.0, 2.0, 3.0]);
     assert_eq!(column(&trace, "MAIN.a[6]"), [10.0, 20.0, 30.0]);
 }
@@ -325,7 +300,7 @@ fn enumeration_values_are_no_numbers_in_initial_values() {
 /// blark's runnable constructs, in one program of our own.
 #[test]
 fn blark_constructs_run() {
-    let (trace, stderr) = run(
+    let (trace, stderr) = run_stimulated_files(
         &[fixture("constructs.st")],
         &[],
         256,
@@ -352,13 +327,8 @@ fn blark_constructs_run() {
 
 /// `ladderc check FILE`: exit 1 and the error lines up to their hints, the folder left out.
 fn rejected(file: &Path) -> Vec<String> {
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(file)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let (code, stderr) = common::check_stderr(file);
+    assert_eq!(code, Some(1), "{stderr}");
     let prefix = format!("{}/", file.parent().unwrap().display());
     stderr
         .lines()
@@ -432,7 +402,7 @@ fn blark_fragments_rejected_located() {
 /// `ADD_INT`). Before: E3002 at the root; after, the project inside runs.
 #[test]
 fn vendor_wrapper_and_typed_block_names_run() {
-    let (trace, _) = run(
+    let (trace, _) = run_stimulated_files(
         &[fixture("watering/level.xml")],
         &[],
         6,
@@ -468,12 +438,7 @@ fn comparison_contact_and_hidden_enumeration_values_rejected() {
             "selector_names.xml:51:3: error[E1006]: cannot store BOOL into SELECTOR_POS [POU `Selector`]",
         ]
     );
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(&file)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (_, stderr) = common::check_stderr(&file);
     let notes: Vec<&str> = stderr.lines().filter(|l| l.contains("W1430")).collect();
     assert_eq!(notes.len(), 2, "{stderr}");
     assert!(
@@ -500,7 +465,7 @@ fn comparison_contact_and_hidden_enumeration_values_rejected() {
 /// E1003 at the declaration (before: E0349 "no method" at each chain, the type not named).
 #[test]
 fn chained_method_calls_run() {
-    let (trace, _) = run(
+    let (trace, _) = run_stimulated_files(
         &[fixture("chain/fluent.st")],
         &[],
         2,

@@ -157,28 +157,97 @@ pub fn run_with_stimulus(file: &Path, cycles: u32, stimulus: &str, watch: &[&str
 /// (`cycle,variable,value` after the header), tracing `watch` to standard output: the trace and
 /// standard error; asserts exit 0 and no sanitizer report.
 pub fn run_stimulated(file: &Path, cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
+    run_stimulated_files(&[file], &["--cycle-ms", "10"], cycles, stimulus, watch)
+}
+
+/// `ladderc run FILES EXTRA --cycles N --sanitize --stimulus S --trace - --watch W` (the cycle
+/// time is the project's unless `extra` gives one): the trace and standard error; asserts exit 0
+/// and no sanitizer report.
+pub fn run_stimulated_files<P: AsRef<std::ffi::OsStr> + std::fmt::Debug>(
+    files: &[P],
+    extra: &[&str],
+    cycles: u32,
+    stimulus: &str,
+    watch: &str,
+) -> (String, String) {
     let dir = tempfile::tempdir().unwrap();
     let stim = dir.path().join("stim.csv");
     std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
     let out = ladderc()
         .args(["--message-format", "short", "run"])
-        .arg(file)
-        .args([
-            "--cycles",
-            &cycles.to_string(),
-            "--cycle-ms",
-            "10",
-            "--sanitize",
-        ])
-        .arg("--stimulus")
+        .args(files)
+        .args(extra)
+        .args(["--cycles", &cycles.to_string(), "--sanitize", "--stimulus"])
         .arg(&stim)
         .args(["--trace", "-", "--watch", watch])
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{file:?}: {stderr}");
+    assert_eq!(out.status.code(), Some(0), "{files:?}: {stderr}");
     assert!(!stderr.contains("Sanitizer"), "{stderr}");
     (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+}
+
+/// `ladderc check` of the files (name, text) written together to a temporary folder: exit code
+/// and the error lines up to their hints, with the folder left out.
+pub fn check_files(files: &[(&str, &str)]) -> (Option<i32>, Vec<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    let paths: Vec<PathBuf> = files
+        .iter()
+        .map(|(name, src)| {
+            let p = dir.path().join(name);
+            std::fs::write(&p, src).unwrap();
+            p
+        })
+        .collect();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .args(&paths)
+        .output()
+        .unwrap();
+    let lines = diagnostic_heads(&out.stderr, dir.path(), false);
+    (out.status.code(), lines)
+}
+
+/// `ladderc --message-format short check FILE`: exit code and standard error.
+pub fn check_stderr(file: &Path) -> (Option<i32>, String) {
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(file)
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// `ladderc build FILE -o DIR`, then the generated Makefile run with `CFLAGS=cflags`; panics
+/// (with the compiler's messages) when either fails. Gives the folder (removed when dropped)
+/// and the generated `program.c`.
+pub fn build_and_make(file: &Path, cflags: &str) -> (tempfile::TempDir, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = dir.path().join("out");
+    let out = ladderc()
+        .arg("build")
+        .arg(file)
+        .arg("-o")
+        .arg(&out_dir)
+        .output()
+        .unwrap();
+    assert_ok(&out);
+    let c = std::fs::read_to_string(out_dir.join("program.c")).unwrap();
+    let built = Command::new("make")
+        .args(["-s", &format!("CFLAGS={cflags}")])
+        .current_dir(&out_dir)
+        .output()
+        .unwrap();
+    assert!(
+        built.status.success(),
+        "{file:?}: {}",
+        String::from_utf8_lossy(&built.stderr)
+    );
+    (dir, c)
 }
 
 /// The numeric column `name` of a trace (CSV text with a header row), one value per cycle. Panics when

@@ -587,15 +587,8 @@ impl<'a> Gen<'a> {
             }
             "GT" | "GE" | "EQ" | "NE" | "LE" | "LT" => {
                 let lname = lower_op(name);
+                let c = c_comparison(name);
                 if aty.is_string() {
-                    let c = match name {
-                        "GT" => ">",
-                        "GE" => ">=",
-                        "EQ" => "==",
-                        "NE" => "!=",
-                        "LE" => "<=",
-                        _ => "<",
-                    };
                     let f = if matches!(aty, Type::String { wide: true, .. }) {
                         "ladderc_wstr_cmpv"
                     } else {
@@ -617,14 +610,6 @@ impl<'a> Gen<'a> {
                     // references: the addresses they stand for (NULL is 0), compared as integers
                     // (`ladderc_ref_addr`), so any two references compare without undefined
                     // behaviour; ordering is meaningful between references into one variable
-                    let c = match name {
-                        "GT" => ">",
-                        "GE" => ">=",
-                        "EQ" => "==",
-                        "NE" => "!=",
-                        "LE" => "<=",
-                        _ => "<",
-                    };
                     return Some(crate::cat(&[
                         "((IEC_BOOL)(ladderc_ref_addr(",
                         a,
@@ -859,6 +844,18 @@ pub fn negated(v: &str, ty: &Type) -> String {
             .map(ctypes::elementary)
             .unwrap_or("IEC_DWORD");
         cfmt!("(({ct})~({v}))")
+    }
+}
+
+/// The C operator of an IEC comparison (`GT` ... `LT`).
+fn c_comparison(name: &str) -> &'static str {
+    match name {
+        "GT" => ">",
+        "GE" => ">=",
+        "EQ" => "==",
+        "NE" => "!=",
+        "LE" => "<=",
+        _ => "<",
     }
 }
 

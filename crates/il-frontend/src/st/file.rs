@@ -165,6 +165,24 @@ pub struct PendingBody {
 }
 
 impl PendingBody {
+    /// A body with no text, no action, method or FB_init argument, at `name_start` of `file`
+    /// (`usize::MAX`: no POU's; the caller fills what it carries).
+    pub fn empty(file: FileId, name_start: usize) -> Self {
+        PendingBody {
+            file,
+            name_start,
+            base: 0,
+            text: String::new(),
+            actions: Vec::new(),
+            sfc: false,
+            methods: Vec::new(),
+            oop: None,
+            fb_init_args: Vec::new(),
+            after_init: Vec::new(),
+            lone: None,
+        }
+    }
+
     /// The name of the POU this body belongs to, found among `units` by its file and the start of
     /// its name; `None` for a body that is no POU's or one not in `units`.
     pub fn pou_name<'u>(
@@ -1101,20 +1119,12 @@ pub fn parse_text(
         // joined to its block once every file is read (`lone_members`)
         match super::lone_members::read(file, src, first.start, &mut references, diags) {
             Some(methods) => pending.push(PendingBody {
-                file,
-                name_start: usize::MAX,
-                base: 0,
-                text: String::new(),
-                actions: Vec::new(),
-                sfc: false,
                 methods,
-                oop: None,
-                fb_init_args: Vec::new(),
-                after_init: Vec::new(),
                 lone: Some(Box::new(super::lone_members::LoneMembers {
                     unowned,
                     owner: None,
                 })),
+                ..PendingBody::empty(file, usize::MAX)
             }),
             None => diags.push(unowned),
         }
@@ -1508,17 +1518,8 @@ pub fn parse_text(
     }
     if !decl_args.is_empty() {
         pending.push(PendingBody {
-            file,
-            name_start: usize::MAX,
-            base: 0,
-            text: String::new(),
-            actions: Vec::new(),
-            sfc: false,
-            methods: Vec::new(),
-            oop: None,
             fb_init_args: decl_args,
-            after_init: Vec::new(),
-            lone: None,
+            ..PendingBody::empty(file, usize::MAX)
         });
     }
     (unit, pending, var_config.1)

@@ -137,17 +137,8 @@ pub fn attach(
             // instruction: its ST body is empty
             None if p.body.is_empty() => {
                 out.push(PendingBody {
-                    file: p.name.span.file,
-                    name_start: at.1,
                     base: p.name.span.end as usize,
-                    text: String::new(),
-                    actions: Vec::new(),
-                    sfc: false,
-                    methods: Vec::new(),
-                    oop: None,
-                    fb_init_args: Vec::new(),
-                    after_init: Vec::new(),
-                    lone: None,
+                    ..PendingBody::empty(p.name.span.file, at.1)
                 });
                 out.len() - 1
             }
