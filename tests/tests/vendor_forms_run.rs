@@ -191,3 +191,20 @@ fn a_bound_of_no_array_or_dimension_is_e1070() {
         ]
     );
 }
+
+/// flow_pragmas.st: TwinCAT's `{flow}` / `{noflow}` (flow control of online monitoring), `{analysis
+/// -33}` and an empty `{}` hold no code: each is a W0301 note (was W0300 "holds code that does not
+/// run", 20 times in Keiji01's HTTPS_Request and 12 in Struckig), and the code between them runs.
+#[test]
+fn flow_control_and_empty_pragmas_are_notes() {
+    let (trace, stderr) = run_stimulated(&fixture("flow_pragmas.st"), 4, "", "Main.n,Main.big");
+    assert_eq!(column(&trace, "Main.n"), [1., 2., 3., 4.]);
+    assert_eq!(column(&trace, "Main.big"), [0., 0., 1., 1.]);
+    assert!(!stderr.contains("W0300"), "{stderr}");
+    for p in ["{flow}", "{noflow}", "{analysis -33}", "{}"] {
+        assert!(
+            stderr.contains(&format!("note[W0301]: pragma `{p}` is informational")),
+            "{p}: {stderr}"
+        );
+    }
+}

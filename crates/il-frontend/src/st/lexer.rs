@@ -593,7 +593,8 @@ pub fn pragma_len(rest: &str) -> Option<usize> {
 /// that IEC leaves to the implementation) or code (Beremiz `{ C code }` / `{{ C code }}`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PragmaKind {
-    /// Attributes, messages, regions, conditional text: ignored, with note W0301.
+    /// Attributes, messages, regions, TwinCAT's `{flow}` / `{noflow}` / `{analysis ...}`, an empty
+    /// `{}`: ignored, with note W0301.
     Informational,
     /// Beremiz embedded C (`{ C code }`, `{{ ... }}`): not compiled, warning W0300.
     Code,
@@ -626,8 +627,12 @@ pub fn pragma_kind(text: &str) -> PragmaKind {
         "version",
         "description",
         "implicit",
+        // TwinCAT / CODESYS: flow control of online monitoring, static-analysis switches
+        "flow",
+        "noflow",
+        "analysis",
     ];
-    if !text.starts_with("{{") && INFO.contains(&word.as_str()) {
+    if !text.starts_with("{{") && (inner.trim().is_empty() || INFO.contains(&word.as_str())) {
         PragmaKind::Informational
     } else {
         PragmaKind::Code
