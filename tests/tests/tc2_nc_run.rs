@@ -22,21 +22,7 @@ const WATCH: &str = "MAIN.nState,MAIN.bTableDone,MAIN.bLiftDone,MAIN.bLiftError,
 
 /// A copy of the `Cell` solution in a temporary folder, for the tests that change it.
 fn copy_of_cell() -> tempfile::TempDir {
-    fn copy(from: &Path, to: &Path) {
-        std::fs::create_dir_all(to).unwrap();
-        for e in std::fs::read_dir(from).unwrap() {
-            let e = e.unwrap();
-            let target = to.join(e.file_name());
-            if e.path().is_dir() {
-                copy(&e.path(), &target);
-            } else {
-                std::fs::copy(e.path(), target).unwrap();
-            }
-        }
-    }
-    let dir = tempfile::tempdir().unwrap();
-    copy(&fixture("Cell"), dir.path());
-    dir
+    common::copy_of_folder(&fixture("Cell"))
 }
 
 fn max(v: &[f64]) -> f64 {

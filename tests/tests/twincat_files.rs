@@ -290,3 +290,37 @@ fn dotted_enumerated_values_and_base_types_run_in_st_files_too() {
     assert_eq!(column(&trace, "MAIN.eState"), [10.0, 11.0, 11.0, 11.0]);
     assert_eq!(column(&trace, "MAIN.n"), [1.0, 2.0, 100.0, 100.0]);
 }
+
+/// A project written on Windows names `POUs\MAIN.TcPOU` while the file on disk is `pous/Main.tcpou`
+/// (Windows names ignore case): it is found and runs. A listed file that is not there at all
+/// (koreacomp5/real_press_plc's `Axis04_Set_Work_End_Speed.TcPOU`, was E9001 without a location
+/// and exit 2) is one E1079 at its `Include` in the project, exit 1, and the rest is checked.
+#[test]
+fn listed_files_are_found_whatever_their_case_and_a_missing_one_is_located() {
+    let dir = common::copy_of_folder(&fixture("project"));
+    let root = dir.path();
+    std::fs::rename(root.join("POUs"), root.join("pous")).unwrap();
+    std::fs::rename(root.join("pous/MAIN.TcPOU"), root.join("pous/Main.tcpou")).unwrap();
+    let (trace, _) = run_traced(&root.join("Demo.plcproj"), 7, WATCH);
+    assert_project_trace(&trace, 20.0);
+
+    let project = root.join("Demo.plcproj");
+    let text = std::fs::read_to_string(&project).unwrap().replace(
+        "    <Compile Include=\"VisuTask.TcTTO\">",
+        "    <Compile Include=\"POUs\\Gone.TcPOU\" />\n    <Compile Include=\"VisuTask.TcTTO\">",
+    );
+    std::fs::write(&project, text).unwrap();
+    let (code, stderr) = common::check_stderr(&project);
+    assert_eq!(code, Some(1), "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error")).collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    let shown = format!(
+        "{}:29:23: error[E1079]: the project lists ",
+        project.display()
+    );
+    assert!(errors[0].starts_with(&shown), "{stderr}");
+    assert!(
+        errors[0].contains("Gone.TcPOU, which is not there"),
+        "{stderr}"
+    );
+}

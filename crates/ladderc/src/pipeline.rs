@@ -258,7 +258,14 @@ impl Session {
         // units read from object files, their global lists' names, their tasks
         let mut expand_diags = Diagnostics::new();
         let mut defines = Vec::new();
-        let paths = crate::twincat::expand(self, paths, &mut defines, &mut expand_diags);
+        let mut twincat_failed: Vec<String> = Vec::new();
+        let paths = crate::twincat::expand(
+            self,
+            paths,
+            &mut defines,
+            &mut twincat_failed,
+            &mut expand_diags,
+        );
         // the projects' compiler defines, known to the conditional pragmas of every file read
         // below (and read again), until this function returns
         let _defines = il_frontend::st::ProjectDefines::set(defines);
@@ -268,7 +275,6 @@ impl Session {
         // text files (`.st`, `.txt`) that may be a CODESYS global variable list object
         let mut text_lists: Vec<(usize, String)> = Vec::new();
         let mut twincat_tasks = Vec::new();
-        let mut twincat_failed: Vec<String> = Vec::new();
         // the programs of every file, known before any is parsed: `PRG.M(x)` in one file calls a
         // method of a program of another (TwinCAT: one POU per file), no library's function
         let mut programs = std::collections::HashSet::new();

@@ -29,10 +29,13 @@ pub fn is_twincat_file(path: &Path) -> bool {
 /// `paths` with each `.plcproj` file, and each folder holding one (directly or up to three folders
 /// down, as a `.tsproj`/`.sln` folder does), replaced by the object files the project lists. The
 /// compiler defines of the projects' properties (`<CompilerDefines>`) go to `defines`.
+/// A listed file that does not exist is one E1079 at its `<Compile>` element (the project's text is
+/// added to the session's sources for it), and its stem goes to `missing`.
 pub fn expand(
-    session: &Session,
+    session: &mut Session,
     paths: &[PathBuf],
     defines: &mut Vec<(String, String)>,
+    missing: &mut Vec<String>,
     diags: &mut Diagnostics,
 ) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -73,7 +76,27 @@ pub fn expand(
             Some(project) => match session.read_file(&project) {
                 Ok(text) => {
                     defines.extend(compiler_defines(&text));
-                    out.extend(listed_files(&project, &text));
+                    let mut project_file = None;
+                    for (path, include) in listed_files(&project, &text) {
+                        if session.file_exists(&path) || !session.disk {
+                            out.push(path);
+                            continue;
+                        }
+                        // written on Windows, whose names ignore case
+                        if let Some(found) = case_insensitive(&path) {
+                            out.push(found);
+                            continue;
+                        }
+                        let file = *project_file.get_or_insert_with(|| {
+                            session
+                                .map
+                                .add_file_owned(project.display().to_string(), text.clone())
+                        });
+                        diags.push(missing_object(file, &path, include));
+                        if let Some(stem) = path.file_stem().and_then(|s| s.to_str()) {
+                            missing.push(stem.to_string());
+                        }
+                    }
                 }
                 // reading it as an input reports the error
                 Err(_) => out.push(project),
@@ -136,26 +159,72 @@ fn compiler_defines(text: &str) -> Vec<(String, String)> {
     out
 }
 
+/// The file `path` names when the case of its letters is ignored (the project's folder first, then
+/// each component matched among its folder's entries without regard to case); `None` when none or
+/// several match.
+fn case_insensitive(path: &Path) -> Option<PathBuf> {
+    let mut at = PathBuf::new();
+    for part in path.components() {
+        let next = at.join(part);
+        if next.exists() || !matches!(part, std::path::Component::Normal(_)) {
+            at = next;
+            continue;
+        }
+        let want = part.as_os_str().to_str()?;
+        let dir = if at.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            at.as_path()
+        };
+        let mut found = std::fs::read_dir(dir)
+            .ok()?
+            .flatten()
+            .map(|e| e.file_name())
+            .filter(|n| n.to_str().is_some_and(|n| n.eq_ignore_ascii_case(want)));
+        let name = found.next()?;
+        if found.next().is_some() {
+            return None;
+        }
+        at = at.join(name);
+    }
+    at.is_file().then_some(at)
+}
+
+/// E1079 at the `Include` attribute (byte range `include` of the project `file`) of `path`.
+fn missing_object(file: FileId, path: &Path, include: (usize, usize)) -> Diagnostic {
+    Diagnostic::error(
+        code::E1079,
+        format!(
+            "the project lists {}, which is not there",
+            path.display()
+        ),
+    )
+    .at(Span::new(file, include.0, include.1))
+    .with_primary_label("listed here")
+    .with_hint("restore the file (e.g. from version control), or remove its `<Compile>` element from the project; the other files are checked as usual")
+}
+
 /// The object files a `.plcproj` lists (`<Compile Include="POUs\MAIN.TcPOU">`), relative to its
-/// folder, in its order; the other items (visualisations, text lists) are left out.
-fn listed_files(project: &Path, text: &str) -> Vec<PathBuf> {
+/// folder, in its order, each with the byte range of its `Include` value in `text`; the other items
+/// (visualisations, text lists) are left out.
+fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, usize))> {
     let dir = project.parent().unwrap_or(Path::new(""));
     let arena = ladder_compiler::xml::Arena::new();
     let (root, _) = ladder_compiler::xml::parse(text, &arena);
     let Some(root) = root else {
-        return vec![project.to_path_buf()];
+        return vec![(project.to_path_buf(), (0, 0))];
     };
     let mut out = Vec::new();
     for el in root.walk() {
         if el.name() != "Compile" {
             continue;
         }
-        let Some(include) = el.attr("Include") else {
+        let Some((include, range)) = el.attr_and_range("Include") else {
             continue;
         };
         let rel: PathBuf = include.split(['\\', '/']).collect();
         if is_twincat_file(&rel) && !has_extension(&rel, "plcproj") {
-            out.push(dir.join(rel));
+            out.push((dir.join(rel), range));
         }
     }
     out

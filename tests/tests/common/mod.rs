@@ -209,6 +209,25 @@ pub fn check_files(files: &[(&str, &str)]) -> (Option<i32>, Vec<String>) {
     (out.status.code(), lines)
 }
 
+/// A copy of the folder `from` (and everything under it) in a new temporary folder.
+pub fn copy_of_folder(from: &Path) -> tempfile::TempDir {
+    fn copy(from: &Path, to: &Path) {
+        std::fs::create_dir_all(to).unwrap();
+        for e in std::fs::read_dir(from).unwrap() {
+            let e = e.unwrap();
+            let target = to.join(e.file_name());
+            if e.path().is_dir() {
+                copy(&e.path(), &target);
+            } else {
+                std::fs::copy(e.path(), target).unwrap();
+            }
+        }
+    }
+    let dir = tempfile::tempdir().unwrap();
+    copy(from, dir.path());
+    dir
+}
+
 /// `ladderc --message-format short check FILE`: exit code and standard error.
 pub fn check_stderr(file: &Path) -> (Option<i32>, String) {
     let out = ladderc()
