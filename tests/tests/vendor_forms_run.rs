@@ -11,7 +11,9 @@
 //!   With both sides plain operands (no call, so no order of side effects to keep) it is read as the
 //!   duration times the number. Was E1004 "MUL is not defined for TIME";
 //! - an ARRAY OF an interface started with instances, `LampCtrl : ARRAY[0..1] OF I_LampCtrl :=
-//!   [fbLamp1, fbLamp2];` (MatheusNespolo's LightControl tutorial). Was E0336.
+//!   [fbLamp1, fbLamp2];` (MatheusNespolo's LightControl tutorial). Was E0336;
+//! - TwinCAT's `{flow}`/`{noflow}`, `{analysis ...}` and an empty `{}` pragma are notes (were W0300);
+//! - the string functions with the vendors' input names (`LEFT(STR := s, SIZE := n)`; was E1011).
 
 mod common;
 use common::{column, run_stimulated, run_traced};
@@ -207,4 +209,23 @@ fn flow_control_and_empty_pragmas_are_notes() {
             "{p}: {stderr}"
         );
     }
+}
+
+/// string_names.st: the string functions called with CODESYS's / TwinCAT's input names (`LEFT(STR,
+/// SIZE)`, `FIND(STR1, STR2)`, `MID(STR, LEN, POS)`, ... CODESYS online help "String functions",
+/// Beckhoff Infosys "Tc2_Standard"), each the same input as IEC 61131-3's `IN`/`IN1`/`IN2`/`L`/`P`
+/// (was E1011 "LEFT has no parameter `STR`" in Keiji01's IPC diagnostics). The values are IEC's.
+#[test]
+fn string_functions_take_the_vendor_input_names() {
+    let (trace, stderr) = run_stimulated(
+        &fixture("string_names.st"),
+        1,
+        "",
+        "Main.sLeft,Main.nAt,Main.sRight,Main.sMid,Main.sCat,Main.sIns,Main.sDel,Main.sRep,Main.nLen",
+    );
+    assert_eq!(
+        trace.lines().nth(1),
+        Some(r#"0,0,"CPU ",6,"2]","slot","CPU !","ABC","CPUt 2]","CPU [bay 2]",12"#),
+        "{stderr}"
+    );
 }

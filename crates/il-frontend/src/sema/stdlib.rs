@@ -382,13 +382,18 @@ impl StdFunction {
             None => None,
         }
     }
-    /// The index of a formal input name (`IN3` of an extensible function too).
+    /// The index of a formal input name (`IN3` of an extensible function too; a string function's
+    /// input also by its CODESYS/TwinCAT name, [`vendor_string_param`]).
     pub fn param_index(&self, name: &str) -> Option<usize> {
-        if let Some(i) = self
-            .params
-            .iter()
-            .position(|p| p.name.eq_ignore_ascii_case(name))
-        {
+        let own = |name: &str| {
+            self.params
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case(name))
+        };
+        if let Some(i) = own(name) {
+            return Some(i);
+        }
+        if let Some(i) = vendor_string_param(self.name, name).and_then(own) {
             return Some(i);
         }
         if !self.extensible {
@@ -718,6 +723,31 @@ pub fn vendor_param_alias(fb: StdFb, name: &str) -> Option<&'static str> {
         .iter()
         .any(|p| p.dir == Dir::Input && p.name == alias)
         .then_some(alias)
+}
+
+/// The IEC name of a string function's input that CODESYS's Standard library and TwinCAT's
+/// Tc2_Standard name otherwise: `LEFT(STR, SIZE)`, `RIGHT(STR, SIZE)`, `MID(STR, LEN, POS)`,
+/// `FIND(STR1, STR2)`, `CONCAT(STR1, STR2)`, `INSERT(STR1, STR2, POS)`, `DELETE(STR, LEN, POS)`,
+/// `REPLACE(STR1, STR2, LEN, POS)`, `LEN(STR)` (CODESYS online help "String functions", Beckhoff
+/// Infosys "Tc2_Standard: LEFT" ...), in the same order as IEC 61131-3's `IN`, `IN1`, `IN2`, `L`, `P`.
+pub fn vendor_string_param(function: &str, name: &str) -> Option<&'static str> {
+    const STRING_FUNCTIONS: [&str; 9] = [
+        "LEFT", "RIGHT", "MID", "FIND", "CONCAT", "INSERT", "DELETE", "REPLACE", "LEN",
+    ];
+    if !STRING_FUNCTIONS
+        .iter()
+        .any(|f| f.eq_ignore_ascii_case(function))
+    {
+        return None;
+    }
+    Some(match name.trim().to_ascii_uppercase().as_str() {
+        "STR" => "IN",
+        "STR1" => "IN1",
+        "STR2" => "IN2",
+        "SIZE" | "LEN" => "L",
+        "POS" => "P",
+        _ => return None,
+    })
 }
 
 /// Documentation of a standard FB (one line).
