@@ -9,7 +9,7 @@
 //! constants and a bound that overflows are one located E0022 each.
 
 mod common;
-use common::{check_files, ladderc, run_traced, run_traced_files};
+use common::{check_files, run_traced, run_traced_files};
 
 use std::path::{Path, PathBuf};
 

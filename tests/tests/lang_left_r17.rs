@@ -28,7 +28,7 @@
 //!   indexing and casts). Before: E1003 "unknown type `ANY`".
 
 mod common;
-use common::{check_files, column, ladderc, run_stimulated_files, run_traced_files};
+use common::{check_files, column, run_stimulated_files, run_traced_files};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {

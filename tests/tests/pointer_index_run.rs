@@ -24,9 +24,8 @@
 //! "Struckig").
 
 mod common;
-use common::{check_text, column, ladderc, rejected_heads, run_traced};
+use common::{check_text, column, rejected_heads, run_traced};
 use std::path::PathBuf;
-use std::process::Command;
 
 fn fixture(name: &str) -> PathBuf {
     common::repo_root()

@@ -19,9 +19,8 @@
 //! Before: every such declaration was E0305 and the POU's body was not compiled.
 
 mod common;
-use common::{column, ladderc, rejected_heads, run_traced, run_traced_files};
+use common::{column, rejected_heads, run_traced, run_traced_files};
 use std::path::PathBuf;
-use std::process::Command;
 
 fn fixture(name: &str) -> PathBuf {
     common::repo_root()

@@ -66,12 +66,7 @@ fn corpus_std_test_has_no_unknown_function_left() {
     let Some(file) = common::corpus_file("15_matiec_STD_TEST_tc6v1_fbd.xml") else {
         return;
     };
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(&file)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (_, stderr) = common::check_stderr(&file);
     let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
     assert_eq!(errors.len(), 1, "{stderr}");
     assert!(

@@ -294,12 +294,7 @@ fn openplc_profile_keeps_digital_and_analog_images_apart() {
          0,0,0,0,0,0,0,1,7\n1,10,1,25,1,2,50,2,7\n2,20,0,25,0,0,50,3,7\n"
     );
     // the default profile overlaps them, as W1400 says: `valve` (50) is bits of `pump`'s byte
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(&f)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (_, stderr) = common::check_stderr(&f);
     assert_eq!(stderr.matches("warning[W1400]").count(), 3, "{stderr}");
 }
 

@@ -109,7 +109,7 @@
 //! our own reproducing the constructs.
 
 mod common;
-use common::{column, ladderc, run_stimulated_files};
+use common::{column, run_stimulated_files};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
