@@ -812,4 +812,18 @@ mod tests {
         assert!(matches!(p[0], Problem::BadLiteral(..)));
         assert!(matches!(p[1], Problem::UnexpectedChar(_)));
     }
+
+    #[test]
+    fn doubled_quote_is_one_string_and_a_problem() {
+        let (t, p) = lex("s := 'it''s' + \"a\"\"b\";");
+        assert_eq!(t[2].tok, Tok::Str(false, "it's".into()));
+        assert_eq!(t[2].range, 5..12);
+        assert_eq!(t[4].tok, Tok::Str(true, "a\"b".into()));
+        assert_eq!(p.len(), 2);
+        assert!(matches!(&p[0], Problem::DoubledQuote(r) if *r == (8..10)));
+        // a space between two literals: two strings, no problem
+        let (t, p) = lex("'a' 'b'");
+        assert_eq!(t.len(), 3);
+        assert!(p.is_empty());
+    }
 }
