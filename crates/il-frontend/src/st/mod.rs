@@ -64,7 +64,7 @@ pub fn parse_statements(
 }
 
 /// [`parse_statements`] of a body or method of `pou`: in a function block that declares no variable
-/// `THIS`, edition 3's `THIS.x` is read as `THIS^.x` (see [`parser::statements_in`]).
+/// `THIS`, edition 3's `THIS.x` is read as `THIS^.x` (the parser's `statements_in`).
 pub fn parse_statements_of(
     file: FileId,
     src: &str,
