@@ -385,6 +385,20 @@ const KNOWN: &[Known] = &[
                  DINT (INST.GD) agrees, and so does LINT MAX with a positive literal (INST.L). Found by \
                  il_gen's seed 283.",
     },
+    Known {
+        program: "r18_int_scaling",
+        columns: &["P.MV_INT", "P.TEMP_INT"],
+        stops_in: None,
+        reason: "an INT product past INT's range. `raw * 3300 / 4096` with raw an INT is an INT \
+                 multiplication (IEC 61131-3 ed. 3 Table 29: the result has its operands' type; an \
+                 untyped literal takes the operation's type, 6.3.2), so for raw = 70 the product \
+                 231000 is outside INT; the standard gives no value for it and ladderc's documented \
+                 choice (crates/c-backend/README.md: integer arithmetic wraps at the type's width) is \
+                 the wrapped -31144, / 4096 = -7. matiec emits the C `raw * 3300 / 4096`, which C \
+                 computes in int after promoting the INT: 56, as if the operation were DINT. The same \
+                 scaling with raw converted to DINT first (P.TEMP_DINT) agrees. From \
+                 eduardojvieira/ZPLC's analog_test project (round 18).",
+    },
 ];
 
 /// Programs of the fixture folder, sorted.

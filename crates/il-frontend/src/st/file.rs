@@ -680,15 +680,17 @@ pub(super) fn skip_var_blocks(src: &str, toks: &[Token], mut h: usize) -> (usize
 }
 
 /// The position of the name of the METHOD or PROPERTY whose keyword is at `k`, after its access
-/// and inheritance modifiers (`METHOD PUBLIC FINAL M`); a modifier followed by no name is the name.
+/// and inheritance modifiers (`METHOD PUBLIC FINAL M`, edition 3's `METHOD PUBLIC OVERRIDE M`); a
+/// modifier followed by no name is the name.
 pub(super) fn member_name_at(src: &str, toks: &[Token], k: usize) -> usize {
-    const MODIFIERS: [&str; 6] = [
+    const MODIFIERS: [&str; 7] = [
         "PUBLIC",
         "PRIVATE",
         "PROTECTED",
         "INTERNAL",
         "FINAL",
         "ABSTRACT",
+        "OVERRIDE",
     ];
     let mut h = k + 1;
     while h + 1 < toks.len()
@@ -2066,7 +2068,7 @@ fn lower_method_as(
     // block's variable, read in the text as a hidden name of the same length that the view declares
     // and the renaming below turns back into `x`
     let text = this_shadowed(&m.text, p, &rename, &mut view, &mut rename_back);
-    let mut stmts = super::parse_statements(file, &text, m.base, diags);
+    let mut stmts = super::parse_statements_of(file, &text, m.base, p, diags);
     super::method_inits::run_once(&mut stmts, &m.once, m.name.span);
     let mut low = super::PouLowering::new(decls, &view);
     let mut body = low.statements(&stmts, diags);

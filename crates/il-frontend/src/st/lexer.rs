@@ -333,6 +333,10 @@ pub enum Problem {
     /// A `(* ... *)` comment holding a `(*` without its own `*)`: nesting leaves it unclosed, so it
     /// ends at its first `*)` (IEC 61131-3 edition 2, matiec); warning W0015.
     FlatComment(Range<usize>),
+    /// Two string literals with nothing between them (`'it''s'`): a quote written doubled, as SQL
+    /// and STruCpp read it, where IEC 61131-3 writes `$'` (`$"` in a WSTRING). The range is the two
+    /// quotes; the literals are read as one string holding the quote, so nothing else follows.
+    DoubledQuote(Range<usize>),
 }
 
 /// Lexes `src`; the token list always ends with [`Tok::Eof`].
@@ -351,7 +355,24 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
             Ok(Raw::Prefixed(None)) => Tok::TypePrefix,
             Ok(Raw::Int(v)) => Tok::Int(v),
             Ok(Raw::Real(v)) => Tok::Real(v),
-            Ok(Raw::Str((w, s))) => Tok::Str(w, s),
+            Ok(Raw::Str((w, s))) => match out.last() {
+                // `'it''s'`: one string holding a quote, and E0103 at the doubled quote
+                Some(Token {
+                    tok: Tok::Str(pw, ps),
+                    range: pr,
+                }) if *pw == w && pr.end == range.start => {
+                    let merged = format!("{ps}{}{s}", if w { '"' } else { '\'' });
+                    let start = pr.start;
+                    out.pop();
+                    problems.push(Problem::DoubledQuote(range.start - 1..range.start + 1));
+                    out.push(Token {
+                        tok: Tok::Str(w, merged),
+                        range: start..range.end,
+                    });
+                    continue;
+                }
+                _ => Tok::Str(w, s),
+            },
             Ok(Raw::Address((a, s, p))) => Tok::Address(a, s, p),
             Ok(Raw::LParen) => Tok::LParen,
             Ok(Raw::RParen) => Tok::RParen,
@@ -795,5 +816,19 @@ mod tests {
         assert_eq!(t[0].tok, Error);
         assert!(matches!(p[0], Problem::BadLiteral(..)));
         assert!(matches!(p[1], Problem::UnexpectedChar(_)));
+    }
+
+    #[test]
+    fn doubled_quote_is_one_string_and_a_problem() {
+        let (t, p) = lex("s := 'it''s' + \"a\"\"b\";");
+        assert_eq!(t[2].tok, Tok::Str(false, "it's".into()));
+        assert_eq!(t[2].range, 5..12);
+        assert_eq!(t[4].tok, Tok::Str(true, "a\"b".into()));
+        assert_eq!(p.len(), 2);
+        assert!(matches!(&p[0], Problem::DoubledQuote(r) if *r == (8..10)));
+        // a space between two literals: two strings, no problem
+        let (t, p) = lex("'a' 'b'");
+        assert_eq!(t.len(), 3);
+        assert!(p.is_empty());
     }
 }

@@ -63,6 +63,24 @@ pub fn parse_statements(
     parser::statements(file, src, base, diags)
 }
 
+/// [`parse_statements`] of a body or method of `pou`: in a function block that declares no variable
+/// `THIS`, edition 3's `THIS.x` is read as `THIS^.x` (the parser's `statements_in`).
+pub fn parse_statements_of(
+    file: FileId,
+    src: &str,
+    base: usize,
+    pou: &Pou,
+    diags: &mut Diagnostics,
+) -> Vec<ast::Stmt> {
+    let this_dot = pou.kind == crate::ast::PouKind::FunctionBlock
+        && !pou
+            .var_blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .any(|v| v.name.is("THIS"));
+    parser::statements_in(file, src, base, this_dot, diags)
+}
+
 /// Parses one expression (an SFC transition condition, `:= expr;` forms are not accepted here).
 /// `None` (with a diagnostic) when the text is not an expression.
 pub fn parse_expression(
@@ -109,13 +127,13 @@ pub fn compile_body_with_actions(
     span: Span,
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Option<VarBlock>, Vec<crate::ast::Action>) {
-    let stmts = parse_statements(file, src, base, diags);
+    let stmts = parse_statements_of(file, src, base, pou, diags);
     let mut low = PouLowering::new(decls, pou);
     let mut parsed: Vec<(crate::ast::Ident, Vec<ast::Stmt>)> = Vec::new();
     if !actions.is_empty() {
         parsed = actions
             .iter()
-            .map(|(n, text, b)| (n.clone(), parse_statements(file, text, *b, diags)))
+            .map(|(n, text, b)| (n.clone(), parse_statements_of(file, text, *b, pou, diags)))
             .collect();
         low.set_actions(parsed.clone());
     }

@@ -39,8 +39,22 @@ pub const MAX_EXPRESSION_OPERATIONS: usize = 1000;
 /// Parses a statement list (a POU body, an action or transition body). `base` is the byte offset of `src`
 /// in file `file`; errors are reported, the statements read are returned.
 pub fn statements(file: FileId, src: &str, base: usize, diags: &mut Diagnostics) -> Vec<Stmt> {
+    statements_in(file, src, base, false, diags)
+}
+
+/// [`statements`] of a function block's body or method; `this_dot`: `THIS.x` and `THIS.M(...)`
+/// (IEC 61131-3 edition 3, Annex A: `Symbolic_Variable : ( 'THIS' '.' )? ...`) are read as
+/// `THIS^.x`, `THIS^.M(...)` (CODESYS, TwinCAT). Only where the block declares no variable `THIS`.
+pub fn statements_in(
+    file: FileId,
+    src: &str,
+    base: usize,
+    this_dot: bool,
+    diags: &mut Diagnostics,
+) -> Vec<Stmt> {
     let mut local = Diagnostics::new();
     let mut p = Parser::new(file, src, base, &mut local);
+    p.this_dot = this_dot;
     let mut list = p.statement_list();
     while !p.at(&Tok::Eof) {
         // A stray block keyword at the top level (`END_IF` without `IF` ...).
@@ -129,6 +143,8 @@ struct Parser<'s, 'd> {
     no_assign: bool,
     /// Whether W0324 (AND_THEN / OR_ELSE) was reported for this text.
     short_circuit_noted: bool,
+    /// `THIS.x` is `THIS^.x` (edition 3's spelling; see [`statements_in`]).
+    this_dot: bool,
     /// The last error reported (code, span): the same error at the same place again (an unclosed
     /// `(` or IF per level after E0108 "nested too deeply") is not repeated.
     last_error: Option<(Code, Span)>,
@@ -171,6 +187,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             short_operand: 0,
             no_assign: false,
             short_circuit_noted: false,
+            this_dot: false,
             last_error: None,
             diags,
         };
@@ -230,6 +247,15 @@ impl<'s, 'd> Parser<'s, 'd> {
                 format!("invalid literal: {why}"),
                 "see the literal forms: 16#FF, 2#1010, 1.5E3, T#1h2m3s, D#2024-01-31, TOD#12:00:00".to_string(),
             ),
+            Problem::DoubledQuote(r) => {
+                let q = &self.src[r.start..r.start + 1];
+                (
+                    code::E0103,
+                    r,
+                    format!("invalid escape in string: `{q}{q}` ends the string and starts another"),
+                    format!("IEC 61131-3 writes the quote inside a string as `${q}` (`'it$'s'`)"),
+                )
+            }
             Problem::BadEscape(r, why) => (
                 code::E0103,
                 r,
@@ -1049,8 +1075,8 @@ impl<'s, 'd> Parser<'s, 'd> {
         let t = self.bump();
         let start = t.range.start;
         let base = match t.tok {
-            // `THIS^.x`, `THIS^.M(...)` inside a function block or its method (edition 3): the block's
-            // own variable or method, as `x` and `M(...)`
+            // `THIS^.x`, `THIS^.M(...)` inside a function block or its method (CODESYS, TwinCAT):
+            // the block's own variable or method, as `x` and `M(...)`
             Tok::Ident
                 if self.ident(&t).is("THIS")
                     && *self.peek() == Tok::Caret
@@ -1058,6 +1084,17 @@ impl<'s, 'd> Parser<'s, 'd> {
                     && *self.peek_at(2) == Tok::Ident =>
             {
                 self.bump();
+                self.bump();
+                let f = self.bump();
+                PlaceBase::Name(self.ident(&f))
+            }
+            // `THIS.x`, `THIS.M(...)`: edition 3's spelling of the same
+            Tok::Ident
+                if self.this_dot
+                    && self.ident(&t).is("THIS")
+                    && *self.peek() == Tok::Dot
+                    && *self.peek_at(1) == Tok::Ident =>
+            {
                 self.bump();
                 let f = self.bump();
                 PlaceBase::Name(self.ident(&f))
@@ -1592,7 +1629,11 @@ impl<'s, 'd> Parser<'s, 'd> {
             }
             // `THIS` alone (not `THIS^`): the instance's address, `ADR(THIS^)` (CODESYS, TwinCAT:
             // `pSelf := THIS;`, `pSelf : POINTER TO FB_X := THIS;` in a method's VAR_INST)
-            Tok::Ident if self.ident(&t).is("THIS") && *self.peek_at(1) != Tok::Caret => {
+            Tok::Ident
+                if self.ident(&t).is("THIS")
+                    && *self.peek_at(1) != Tok::Caret
+                    && !(self.this_dot && *self.peek_at(1) == Tok::Dot) =>
+            {
                 self.bump();
                 let this = Expr {
                     kind: ExprKind::Place(Place {

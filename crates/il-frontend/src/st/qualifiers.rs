@@ -174,6 +174,8 @@ pub(super) fn library_qualifiers(
         if !ident(t)
             || dot.tok != Tok::Dot
             || !ident(member)
+            // `THIS.M(...)`: edition 3's call of the block's own method (`parser::statements_in`)
+            || w == "THIS"
             || declared.contains(&w)
             || PROJECT_PROGRAMS.with(|p| p.borrow().contains(&w))
             || OTHER_FILES_NAMES.with(|o| o.borrow().contains(&w))

@@ -383,7 +383,9 @@ fn result_type_at(src: &str, toks: &[Token], colon: usize) -> bool {
         let w = word(src, &toks[before]).to_ascii_uppercase();
         match w.as_str() {
             "METHOD" | "FUNCTION" | "PROPERTY" => return true,
-            "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL" | "FINAL" | "ABSTRACT" => k = before,
+            "PUBLIC" | "PRIVATE" | "PROTECTED" | "INTERNAL" | "FINAL" | "ABSTRACT" | "OVERRIDE" => {
+                k = before
+            }
             _ => return false,
         }
     }
