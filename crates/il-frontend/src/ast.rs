@@ -215,6 +215,19 @@ pub struct ArrayDim {
     pub span: Span,
 }
 
+impl ArrayDim {
+    /// The bound both ends of a variable-length dimension `*` hold (`ARRAY [*] OF T`, IEC 61131-3
+    /// edition 3, 6.5.3): the bounds are the caller's, known at run time only. Such a dimension is
+    /// compiled only in a VAR_IN_OUT of an ST FUNCTION, FUNCTION_BLOCK or METHOD
+    /// (`st::varlen` replaces it before sema); sema reports any other as E1072.
+    pub const VARIABLE: i128 = i128::MIN;
+
+    /// Whether this is a variable-length dimension `*`.
+    pub fn is_variable(&self) -> bool {
+        self.lower == Self::VARIABLE && self.upper == Self::VARIABLE
+    }
+}
+
 /// `TYPE name : ... ; END_TYPE` entry.
 #[derive(Debug, Clone, Serialize)]
 pub struct TypeDecl {

@@ -81,6 +81,9 @@ pub struct PouLowering<'d> {
     /// Some FUNCTION of the project has an ANY input (`any_inputs`): its calls and uses are
     /// rewritten before they are lowered.
     any_inputs: bool,
+    /// Some POU of the project has a variable-length in-out (`varlen`): its calls and uses are
+    /// rewritten.
+    varlen: bool,
     /// Types of the subexpressions of the trees being lowered (so lowering a chain of n operators
     /// types each node once, not n times). Cleared by every public entry point and after lowering a
     /// tree built here, so no entry outlives the node it describes.
@@ -223,6 +226,7 @@ impl<'d> PouLowering<'d> {
                 .flatten()
                 .any(|m| super::property::is_accessor(&m.name)),
             any_inputs: super::any_inputs::in_project(decls),
+            varlen: super::varlen::in_project(decls),
             types: RefCell::new(TypeCache::new()),
             nested: 0,
             raw_refs: false,
@@ -639,6 +643,21 @@ impl<'d> PouLowering<'d> {
         };
         match any {
             // `F(In := x)` of a function's ANY input `In`, `In.diSize` in it (any_inputs)
+            Some(Some(s)) => {
+                self.stmt(&s, out, diags);
+                return true;
+            }
+            // (reported; the statement is dropped)
+            Some(None) => return true,
+            None => {}
+        }
+        let varlen = if self.varlen {
+            super::varlen::rewrite(&self.env(), &type_of, s, diags)
+        } else {
+            None
+        };
+        match varlen {
+            // `F(xs := arr)` of an `ARRAY [*]` in-out, `xs[i]`, `UPPER_BOUND(xs, 1)` (varlen)
             Some(Some(s)) => {
                 self.stmt(&s, out, diags);
                 return true;
