@@ -1,0 +1,122 @@
+//! Variable-length arrays, `ARRAY [*] OF T` VAR_IN_OUTs (IEC 61131-3 edition 3, 6.5.3; issue #13,
+//! TcUnit's array assertions): each run below goes through `ladderc run --sanitize` and checks the
+//! values. One function sums arrays of different sizes and lower bounds, forwards its parameter to
+//! another function, and a 2-D `ARRAY [*, *]` is summed row by row; an FB and FB methods take
+//! `ARRAY [*]` in-outs (of INT, STRING, a STRUCT, an FB type, BOOL; a structure's array field);
+//! an index past the actual upper bound reads zero, drops the write and is named at the end of the
+//! run, with no byte outside the array touched; a TcUnit-shaped `AssertArrayEquals_INT` counts the
+//! failed assertions. Wrong arguments are E1071, misplaced `ARRAY [*]` E1072, each located.
+
+mod common;
+use common::{rejected_heads, run_traced};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/varlen_arrays")
+        .join(name)
+}
+
+/// `SumArr` of `[1..5]` (15) and of `[-2..0]` (60); `Fwd` passes its own `ARRAY [*]` on (600);
+/// `Sum2` of `[1..2, 0..2]` weighs each row by its index: (1+2+3)*1 + (4+5+6)*2 = 36.
+#[test]
+fn one_function_sums_arrays_of_any_size_and_lower_bound() {
+    let (trace, stderr) = run_traced(&fixture("sums.st"), 2, "p.s,p.t,p.u,p.w");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.s,p.t,p.u,p.w\n0,0,15,60,600,36\n1,10,15,60,600,36\n"
+    );
+    assert!(!stderr.contains("runtime:"), "{stderr}");
+}
+
+/// The FB's maximum (9 of `xs`, then 7 of the structure's `vals[3..4]`, the last call); its read
+/// past the upper bound gives 0 and its write there is dropped (`xs[1]` stays 1, nothing after
+/// the arrays changes), named at the end of the run; the methods count one failed assertion per
+/// scan (`a` against `c`); `Cat` joins `ARRAY [*] OF STRING`, `SumPt` reads and writes STRUCT
+/// elements, `RunAll` calls each FB element (1 + 1 + 1 per scan, summed), `AnyTrue` reads BOOLs.
+#[test]
+fn blocks_methods_and_element_types() {
+    let (trace, stderr) = run_traced(
+        &fixture("blocks.st"),
+        2,
+        "p.st.mx,p.st.last,p.su.fails,p.txt,p.q,p.ps[0].y,p.r,p.any,p.xs[1],p.h.vals[4]",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.st.mx,p.st.last,p.su.fails,p.txt,p.q,p.ps[0].y,p.r,p.any,p.xs[1],p.h.vals[4]\n\
+         0,0,7,0,1,\"abcd\",7,42,3,1,1,7\n\
+         1,10,7,0,2,\"abcd\",7,42,6,1,1,7\n"
+    );
+    assert!(
+        stderr.contains("runtime: pointer outside its variable dereferenced (first: data__VLA"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("in Stats; zero read, write dropped)"), "{stderr}");
+}
+
+/// `AssertEq(a, b)`: equal values at other bounds pass; `AssertEq(a, c)` fails once a scan.
+#[test]
+fn a_tcunit_shaped_array_assertion() {
+    let (trace, _) = run_traced(&fixture("assertions.st"), 3, "p.su.fails");
+    assert_eq!(trace, "cycle,time_ms,p.su.fails\n0,0,1\n1,10,2\n2,20,3\n");
+}
+
+const FUNC: &str = "FUNCTION SumArr : DINT\nVAR_IN_OUT a : ARRAY[*] OF INT; END_VAR\n\
+                    SumArr := a[LOWER_BOUND(a, 1)];\nEND_FUNCTION\n";
+
+/// Arguments that do not fit: another element type, another rank, no array, a missing in-out.
+#[test]
+fn arguments_that_do_not_fit_are_e1071() {
+    let src = format!(
+        "{FUNC}PROGRAM main\nVAR d : ARRAY[1..3] OF DINT; m : ARRAY[1..2, 1..2] OF INT; s : DINT; k : INT; END_VAR\n\
+         s := SumArr(a := d);\ns := SumArr(m);\ns := SumArr(k);\ns := SumArr();\nEND_PROGRAM\n"
+    );
+    assert_eq!(
+        rejected_heads("args.st", &src),
+        vec![
+            "args.st:7:18: error[E1071]: the `ARRAY [*]` in-out `a` of `SumArr` is `ARRAY [*] OF INT`: `ARRAY [1..3] OF DINT` does not fit",
+            "args.st:8:13: error[E1071]: the `ARRAY [*]` in-out `a` of `SumArr` is `ARRAY [*] OF INT`: `ARRAY [1..2, 1..2] OF INT` does not fit",
+            "args.st:9:13: error[E1071]: the `ARRAY [*]` in-out `a` of `SumArr` is `ARRAY [*] OF INT`: `INT` does not fit",
+            "args.st:10:6: error[E1071]: the `ARRAY [*]` in-out `a` of `SumArr` is not given",
+        ]
+    );
+}
+
+/// The parameter used as a whole (also given to a fixed-size parameter), a wrong dimension, a wrong
+/// number of indexes: E1072 at each.
+#[test]
+fn whole_uses_and_wrong_dimensions_are_e1072() {
+    let src = "FUNCTION Fixed : DINT\nVAR_IN_OUT f : ARRAY[1..3] OF INT; END_VAR\nFixed := 1;\nEND_FUNCTION\n\
+               FUNCTION SumArr : DINT\nVAR_IN_OUT a : ARRAY[*] OF INT; END_VAR\n\
+               VAR copy : ARRAY[1..3] OF INT; END_VAR\ncopy := a;\nSumArr := Fixed(a);\n\
+               SumArr := UPPER_BOUND(a, 2) + a[1, 2];\nEND_FUNCTION\n";
+    assert_eq!(
+        rejected_heads("uses.st", src),
+        vec![
+            "uses.st:8:9: error[E1072]: `a` is a variable-length array (`ARRAY [*]`): it is used by element, with LOWER_BOUND/UPPER_BOUND, or passed to another `ARRAY [*]` in-out",
+            "uses.st:9:17: error[E1072]: `a` is a variable-length array (`ARRAY [*]`): it is used by element, with LOWER_BOUND/UPPER_BOUND, or passed to another `ARRAY [*]` in-out",
+            "uses.st:10:11: error[E1072]: `UPPER_BOUND(a, ...)`: `a` has 1 dimension; the dimension must be an integer literal from 1 to 1",
+            "uses.st:10:31: error[E1072]: `a` has 1 dimension: 2 indexes given",
+        ]
+    );
+}
+
+/// `ARRAY [*]` outside a VAR_IN_OUT (a VAR, a TYPE, a PROGRAM's in-out) and mixed with fixed bounds.
+#[test]
+fn misplaced_variable_length_arrays_are_e1072() {
+    let src = "FUNCTION_BLOCK Bad\nVAR buf : ARRAY[*] OF INT; END_VAR\n\
+               VAR_IN_OUT mix : ARRAY[1..2, *] OF INT; END_VAR\nEND_FUNCTION_BLOCK\n\
+               TYPE row : ARRAY[*] OF INT; END_TYPE\n\
+               PROGRAM main\nVAR_IN_OUT pio : ARRAY[*] OF INT; END_VAR\nEND_PROGRAM\n";
+    let place = "a variable-length array `ARRAY [*]` is allowed only as a VAR_IN_OUT of a FUNCTION, FUNCTION_BLOCK or METHOD (IEC 61131-3 edition 3, 6.5.3)";
+    assert_eq!(
+        rejected_heads("placed.st", src),
+        vec![
+            format!("placed.st:2:17: error[E1072]: {place}"),
+            "placed.st:3:30: error[E1072]: a variable-length array has `*` in every dimension or in none".to_string(),
+            format!("placed.st:5:18: error[E1072]: {place}"),
+            format!("placed.st:7:24: error[E1072]: {place}"),
+        ]
+    );
+}
