@@ -657,9 +657,12 @@ impl<'d> PouLowering<'d> {
             None
         };
         match varlen {
-            // `F(xs := arr)` of an `ARRAY [*]` in-out, `xs[i]`, `UPPER_BOUND(xs, 1)` (varlen)
+            // `F(xs := arr)` of an `ARRAY [*]` in-out, `xs[i]`, `UPPER_BOUND(xs, 1)` (varlen);
+            // the type cache is keyed by node address: cleared around the new tree's life
             Some(Some(s)) => {
+                self.types.get_mut().clear();
                 self.stmt(&s, out, diags);
+                self.types.get_mut().clear();
                 return true;
             }
             // (reported; the statement is dropped)
