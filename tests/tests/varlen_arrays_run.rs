@@ -52,7 +52,10 @@ fn blocks_methods_and_element_types() {
         stderr.contains("runtime: pointer outside its variable dereferenced (first: data__VLA"),
         "{stderr}"
     );
-    assert!(stderr.contains("in Stats; zero read, write dropped)"), "{stderr}");
+    assert!(
+        stderr.contains("in Stats; zero read, write dropped)"),
+        "{stderr}"
+    );
 }
 
 /// `AssertEq(a, b)`: equal values at other bounds pass; `AssertEq(a, c)` fails once a scan.
@@ -118,5 +121,45 @@ fn misplaced_variable_length_arrays_are_e1072() {
             format!("placed.st:5:18: error[E1072]: {place}"),
             format!("placed.st:7:24: error[E1072]: {place}"),
         ]
+    );
+}
+
+/// Indexes at the ends of LINT (read 0, write dropped, no byte outside reached under the
+/// sanitizers); `m[0, 2]` of `[0..1, 0..1]` is out of its second dimension although its row-major
+/// offset (2) lies inside the array: dropped, `mm[1, 0]` stays 0; an element passed to a fixed
+/// in-out (`Inc(v := a[1])`) is incremented in the caller's array; an element as a CASE selector.
+#[test]
+fn indexes_out_of_the_actual_bounds_are_harmless_and_named() {
+    let (trace, stderr) = run_traced(
+        &fixture("edges.st"),
+        1,
+        "p.big,p.neg,p.ok,p.xs[1],p.xs[2],p.xs[3],p.q1,p.q2,p.r10",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.big,p.neg,p.ok,p.xs[1],p.xs[2],p.xs[3],p.q1,p.q2,p.r10\n\
+         0,0,100,0,5,4,5,3,0,7,0\n"
+    );
+    assert!(
+        stderr.contains("runtime: pointer outside its variable dereferenced (first: a__VLA["),
+        "{stderr}"
+    );
+}
+
+/// A TwinCAT block (`.TcPOU`) whose `<Method>` takes two `ARRAY [*] OF BOOL` in-outs, as TcUnit's
+/// `AssertArrayEquals_BOOL`: equal arrays at other bounds pass, different values fail, different
+/// sizes fail with their message; two failures a scan.
+#[test]
+fn a_twincat_method_with_variable_length_in_outs() {
+    let (trace, _) = common::run_traced_files(
+        &[&fixture("FB_ArraySuite.TcPOU"), &fixture("MAIN.st")],
+        2,
+        "MAIN.suite.Failed,MAIN.suite.LastMessage",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,MAIN.suite.Failed,MAIN.suite.LastMessage\n\
+         0,0,2,\"a = d, size of arrays not matching.\"\n\
+         1,10,4,\"a = d, size of arrays not matching.\"\n"
     );
 }
