@@ -163,3 +163,22 @@ fn a_twincat_method_with_variable_length_in_outs() {
          1,10,4,\"a = d, size of arrays not matching.\"\n"
     );
 }
+
+/// An index of a 2-D `ARRAY [*]` that calls a function is evaluated twice: W1432 at it (the
+/// program still compiles); a variable index is no warning.
+#[test]
+fn a_2d_index_calling_a_function_is_w1432() {
+    let src = "FUNCTION Row : DINT\nRow := 1;\nEND_FUNCTION\n\
+               FUNCTION Fill : BOOL\nVAR_IN_OUT m : ARRAY[*, *] OF INT; END_VAR\nVAR k : DINT := 1; END_VAR\n\
+               m[Row(), 1] := 0;\nm[k, 1] := 0;\nFill := TRUE;\nEND_FUNCTION\n";
+    let (code, lines) = common::check_text("twice.st", src);
+    assert_eq!(code, Some(0), "{lines:?}");
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split_once(" (hint").map_or(l.as_str(), |(h, _)| h))
+        .collect();
+    assert_eq!(
+        heads,
+        vec!["twice.st:7:3: warning[W1432]: this index of `m` (a 2-dimensional `ARRAY [*]`) calls a function: it is evaluated twice"]
+    );
+}

@@ -14,7 +14,8 @@
 //!   parameter of the calling POU; an array of another element type or rank, no array, an
 //!   expression or a missing argument is E1071;
 //! - `x[i]` is `x__VLA[i - x__LB1]`; `x[i, j]` is `x__VLA[SEL(<every index within its bounds>, -1,
-//!   <row-major offset>)]` (each index is then evaluated twice). An index outside the actual bounds
+//!   <row-major offset>)]` (each index is then evaluated twice: W1432 when one calls a function).
+//!   An index outside the actual bounds
 //!   is thus an access outside the pointer's variable: zero read, write dropped, the first one
 //!   named at the end of the run; no byte outside the array is ever reached;
 //! - `LOWER_BOUND(x, d)` / `UPPER_BOUND(x, d)` are `x__LB<d>` / `x__UB<d>`;
@@ -426,6 +427,32 @@ fn call(name: &str, values: Vec<Expr>, span: Span) -> Expr {
     }
 }
 
+/// Whether `e` calls a function or a method (walked with a stack: chains can be long).
+fn calls_something(e: &Expr) -> bool {
+    let mut stack = vec![e];
+    while let Some(e) = stack.pop() {
+        match &e.kind {
+            ExprKind::Call { .. } => return true,
+            ExprKind::Unary { operand, .. } => stack.push(operand),
+            ExprKind::Binary { left, right, .. } => {
+                stack.push(left);
+                stack.push(right);
+            }
+            ExprKind::Place(p) => {
+                for a in &p.accessors {
+                    match a {
+                        Accessor::Call { .. } => return true,
+                        Accessor::Index(ix) => stack.extend(ix.iter()),
+                        _ => {}
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    false
+}
+
 /// Whether two types as written are the same type (through aliases; names case-insensitive).
 fn same(env: &Env, a: &TypeRef, b: &TypeRef) -> bool {
     match (env.resolve(a), env.resolve(b)) {
@@ -646,6 +673,23 @@ impl Rewrite<'_, '_> {
                 "give one index per dimension: `x[i, j]` for `ARRAY [*, *]`",
             );
             return;
+        }
+        if rank > 1 {
+            if let Some(e) = ix.iter().find(|e| calls_something(e)) {
+                // each index is evaluated twice (its bounds test, then the offset)
+                self.diags.push(
+                    Diagnostic::warning(
+                        code::W1432,
+                        format!(
+                            "this index of `{}` (a {rank}-dimensional `ARRAY [*]`) calls a function: it is evaluated twice",
+                            n.name
+                        ),
+                    )
+                    .at(e.span)
+                    .with_primary_label("evaluated twice")
+                    .with_hint("store the index in a variable first (`k := F(); x[k, j] := ...`)"),
+                );
+            }
         }
         let span = p.span;
         let bound = |suffix: &str, d: usize| name_expr(format!("{}{suffix}{d}", n.name), span);
