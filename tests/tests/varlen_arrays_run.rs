@@ -182,3 +182,51 @@ fn a_2d_index_calling_a_function_is_w1432() {
         vec!["twice.st:7:3: warning[W1432]: this index of `m` (a 2-dimensional `ARRAY [*]`) calls a function: it is evaluated twice"]
     );
 }
+
+/// TcUnit's own pattern: `MyTests EXTENDS Suite`, each test METHOD declaring its arrays in its VAR
+/// (they live for the method's call) and calling the inherited `AssertEq`: one pass and one
+/// failure a scan. Before the call-scoped address, each argument was E0305.
+#[test]
+fn test_methods_pass_their_own_arrays_to_an_inherited_assertion() {
+    let (trace, _) = run_traced(&fixture("inherited.st"), 2, "p.t.fails,p.t.passes");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.t.fails,p.t.passes\n0,0,1,1\n1,10,2,2\n"
+    );
+}
+
+/// A FUNCTION's own VAR array (5+6+7+8), a function's fixed VAR_IN_OUT passed on (1+2), a
+/// program's VAR_TEMP (4+4+4) to a function's `ARRAY [*]` (read during the call only); a block's
+/// `ARRAY [*]` passed on to a function (1+2).
+#[test]
+fn arrays_that_live_for_one_call_go_to_functions() {
+    let (trace, _) = run_traced(&fixture("one_call.st"), 2, "p.s1,p.s2,p.s3,p.s4");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,p.s1,p.s2,p.s3,p.s4\n0,0,26,3,12,3\n1,10,26,3,12,3\n"
+    );
+}
+
+/// An FB keeps its `ARRAY [*]` in the instance (its methods may read it between calls): a
+/// program's VAR_TEMP given to it is E0305, a function's `ARRAY [*]` passed on to it E1071.
+#[test]
+fn a_block_takes_only_arrays_that_live_as_long_as_the_program() {
+    let keeper =
+        "FUNCTION_BLOCK Keeper\nVAR_IN_OUT data : ARRAY[*] OF INT; END_VAR\nEND_FUNCTION_BLOCK\n";
+    let temp = format!(
+        "{keeper}PROGRAM main\nVAR k : Keeper; END_VAR\nVAR_TEMP t : ARRAY[1..3] OF INT; END_VAR\n\
+         k(data := t);\nEND_PROGRAM\n"
+    );
+    assert_eq!(
+        rejected_heads("temp.st", &temp),
+        vec!["temp.st:7:11: error[E0305]: a reference to `t` is not allowed: a VAR_TEMP variable lives for one call (IEC 61131-3, 6.4.4.10)"]
+    );
+    let forward = format!(
+        "{keeper}FUNCTION Fwd : DINT\nVAR_IN_OUT a : ARRAY[*] OF INT; END_VAR\n\
+         VAR_EXTERNAL gk : Keeper; END_VAR\ngk(data := a);\nEND_FUNCTION\n"
+    );
+    assert_eq!(
+        rejected_heads("fwd.st", &forward),
+        vec!["fwd.st:7:12: error[E1071]: the `ARRAY [*]` in-out `data` of `gk` keeps its array in the instance: `a` of a function or method may be an array that lives for one call"]
+    );
+}

@@ -587,6 +587,11 @@ pub struct RefOperand {
     pub of: Option<VarRef>,
     /// The whole `REF(x)` / `ADR(x)` / `NULL` text.
     pub span: Span,
+    /// Made for one call only: the address of an array passed to a FUNCTION's or METHOD's
+    /// `ARRAY [*]` in-out (`st::varlen`), which nothing reads after the call; it may then refer to
+    /// a variable that lives for one call (a FUNCTION's, a VAR_TEMP, a method's VAR, a VAR_IN_OUT).
+    #[serde(skip)]
+    pub call_scoped: bool,
 }
 
 /// An enumerated value written with its type, `Color#red`: the payload of [`Operand::EnumValue`].

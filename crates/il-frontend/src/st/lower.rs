@@ -1605,6 +1605,7 @@ impl<'d> PouLowering<'d> {
                         return Some(Operand::Ref(Box::new(il::RefOperand {
                             of: None,
                             span: e.span,
+                            call_scoped: false,
                         })));
                     }
                     _ => {
@@ -1621,6 +1622,7 @@ impl<'d> PouLowering<'d> {
                         return Some(Operand::Ref(Box::new(il::RefOperand {
                             of: None,
                             span: e.span,
+                            call_scoped: false,
                         })));
                     }
                 }
@@ -1637,6 +1639,7 @@ impl<'d> PouLowering<'d> {
                 return Some(Operand::Ref(Box::new(il::RefOperand {
                     of: None,
                     span: e.span,
+                    call_scoped: false,
                 })));
             }
             (
@@ -1648,10 +1651,14 @@ impl<'d> PouLowering<'d> {
             ) if !(p.accessors.is_empty() && p.name().is_some_and(|n| n.is("NULL"))) => p,
             _ => return None,
         };
+        // (`st::varlen`'s address of an array passed to a function's or method's ARRAY [*])
+        let call_scoped =
+            matches!(&e.kind, ExprKind::Call { name, .. } if name.is(super::varlen::CALL_ADDRESS));
         match self.place_operand(place, out, diags)? {
             Operand::Var(v) => Some(Operand::Ref(Box::new(il::RefOperand {
                 of: Some(v),
                 span: e.span,
+                call_scoped,
             }))),
             other => {
                 diags.push(
@@ -1694,6 +1701,7 @@ impl<'d> PouLowering<'d> {
             return Some(Operand::Ref(Box::new(il::RefOperand {
                 of: None,
                 span: p.span,
+                call_scoped: false,
             })));
         }
         let mut accessors = Vec::new();
@@ -2330,7 +2338,11 @@ impl<'d> PouLowering<'d> {
             self.raw_refs = false;
             if let Some(r) = r {
                 out.push(ld(r, span));
-                let null = Operand::Ref(Box::new(il::RefOperand { of: None, span }));
+                let null = Operand::Ref(Box::new(il::RefOperand {
+                    of: None,
+                    span,
+                    call_scoped: false,
+                }));
                 out.push(simple(Op::Ne, false, Some(null), span));
             }
             return;

@@ -42,6 +42,11 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 
 /// The suffix of the hidden input holding the actual array's address.
 pub const ADDRESS: &str = "__VLA";
+/// The address of an array passed to a FUNCTION's or METHOD's `ARRAY [*]` in-out: `ADR` for one
+/// call ([`crate::ast::RefOperand::call_scoped`]), so that it may be a variable that lives for one
+/// call (a function's, a method's VAR, a VAR_TEMP, a VAR_IN_OUT). No identifier can be written so
+/// (IEC names do not start with two underscores).
+pub const CALL_ADDRESS: &str = "__VLA_ADR";
 /// The suffix (then the dimension, from 1) of the hidden inputs holding the lower bounds.
 pub const LOWER: &str = "__LB";
 /// The suffix (then the dimension, from 1) of the hidden inputs holding the upper bounds.
@@ -242,8 +247,19 @@ fn own(env: &Env, name: &str) -> Option<(usize, TypeRef)> {
     (rank > 0).then(|| (rank, (**target).clone()))
 }
 
+/// What a call calls, as far as the lifetime of the descriptors it is given matters.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Callee {
+    /// A FUNCTION or a METHOD: the descriptor is read during the call only (a method's hidden
+    /// inputs stay in the instance, but only the method reads them, and every call gives them).
+    OneCall,
+    /// An FB instance: the descriptor stays in the instance, and its methods and actions may read
+    /// it between calls: it must refer to storage that lives as long as the program.
+    Block,
+}
+
 /// The positional parameters of the POU `callee` calls, when one is variable-length.
-fn params_of(env: &Env, callee: &Place) -> Option<Vec<Param>> {
+fn params_of(env: &Env, callee: &Place) -> Option<(Vec<Param>, Callee)> {
     let PlaceBase::Name(n) = &callee.base else {
         return None;
     };
@@ -251,7 +267,13 @@ fn params_of(env: &Env, callee: &Place) -> Option<Vec<Param>> {
         collapse(
             i.vars
                 .iter()
-                .filter(|(_, k, _)| matches!(k, VarKind::Input | VarKind::InOut))
+                .filter(|(n, k, _)| {
+                    // (a method's hidden inputs are the method's, not the block's)
+                    matches!(k, VarKind::Input | VarKind::InOut)
+                        && !n
+                            .to_ascii_uppercase()
+                            .starts_with(crate::actions::METHOD_PREFIX)
+                })
                 .map(|(n, _, t)| (n.clone(), Some(t.clone())))
                 .collect(),
         )
@@ -287,18 +309,18 @@ fn params_of(env: &Env, callee: &Place) -> Option<Vec<Param>> {
     match callee.accessors.as_slice() {
         [] => {
             if let Some(b) = block_of(n) {
-                return interface(b);
+                return interface(b).map(|p| (p, Callee::Block));
             }
             if let Some(i) = env.decls.pou(&n.name) {
                 if i.kind == PouKind::Function {
-                    return interface(i);
+                    return interface(i).map(|p| (p, Callee::OneCall));
                 }
             }
             // a method of the block being lowered, `M(...)` / `THIS^.M(...)`
             let block = env.decls.pou(&env.pou_name.name)?;
-            method(block, n)
+            method(block, n).map(|p| (p, Callee::OneCall))
         }
-        [Accessor::Field(m)] => method(block_of(n)?, m),
+        [Accessor::Field(m)] => method(block_of(n)?, m).map(|p| (p, Callee::OneCall)),
         _ => None,
     }
 }
@@ -751,7 +773,7 @@ impl Rewrite<'_, '_> {
         } else {
             params_of(self.env, callee)
         };
-        let Some(params) = params else {
+        let Some((params, kind)) = params else {
             for a in args.iter_mut() {
                 self.expr(&mut a.value);
             }
@@ -801,7 +823,7 @@ impl Rewrite<'_, '_> {
                 continue;
             };
             self.changed = true;
-            if let Some(descriptor) = self.descriptor(&called, name, *rank, element, &a) {
+            if let Some(descriptor) = self.descriptor(&called, kind, name, *rank, element, &a) {
                 out.extend(descriptor);
             } else {
                 out.push(a);
@@ -826,6 +848,7 @@ impl Rewrite<'_, '_> {
     fn descriptor(
         &mut self,
         called: &str,
+        kind: Callee,
         name: &str,
         rank: usize,
         element: &TypeRef,
@@ -857,6 +880,29 @@ impl Rewrite<'_, '_> {
         // another ARRAY [*] parameter of this POU: its descriptor passed on
         if let (PlaceBase::Name(n), true) = (&place.base, place.accessors.is_empty()) {
             if let Some((r, e)) = own(self.env, &n.name) {
+                // a FUNCTION's or a METHOD's may be an array that lives for one call
+                let lasting = self.env.pou_kind == PouKind::FunctionBlock
+                    && self
+                        .env
+                        .decls
+                        .pou(&self.env.pou_name.name)
+                        .is_some_and(|b| {
+                            b.var(&format!("{}{ADDRESS}", n.name))
+                                .is_some_and(|v| v.1 == VarKind::Input)
+                        });
+                if kind == Callee::Block && !lasting {
+                    self.refuse(
+                        code::E1071,
+                        a.value.span,
+                        format!(
+                            "{what} keeps its array in the instance: `{}` of a function or method may be an array that lives for one call",
+                            n.name
+                        ),
+                        "passed on to a block",
+                        "pass the block an array of a program, a block instance or a global list, or call a function or a method with it",
+                    );
+                    return None;
+                }
                 if r != rank || !same(self.env, &e, element) {
                     let got = format!(
                         "ARRAY [{}] OF {}",
@@ -904,9 +950,13 @@ impl Rewrite<'_, '_> {
             self.mismatch(&what, &expected, &got, a.value.span);
             return None;
         }
+        let address = match kind {
+            Callee::OneCall => CALL_ADDRESS,
+            Callee::Block => "ADR",
+        };
         let mut v = vec![formal(
             format!("{name}{ADDRESS}"),
-            call("ADR", vec![value], a.value.span),
+            call(address, vec![value], a.value.span),
         )];
         for (k, d) in dims.iter().enumerate() {
             v.push(formal(
