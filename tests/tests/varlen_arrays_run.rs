@@ -230,3 +230,33 @@ fn a_block_takes_only_arrays_that_live_as_long_as_the_program() {
         vec!["fwd.st:7:12: error[E1071]: the `ARRAY [*]` in-out `data` of `gk` keeps its array in the instance: `a` of a function or method may be an array that lives for one call"]
     );
 }
+
+/// An IL `CAL` of a block with an `ARRAY [*]` in-out (declared in ST): one E1071 naming the
+/// in-out, not an unknown parameter listing the hidden inputs.
+#[test]
+fn an_il_call_of_a_variable_length_in_out_is_e1071() {
+    let dir = tempfile::tempdir().unwrap();
+    let st = dir.path().join("keeper.st");
+    let il = dir.path().join("main.il");
+    std::fs::write(
+        &st,
+        "FUNCTION_BLOCK Keeper\nVAR_IN_OUT data : ARRAY[*] OF INT; END_VAR\nVAR_OUTPUT n : DINT; END_VAR\n\
+         n := UPPER_BOUND(data, 1);\nEND_FUNCTION_BLOCK\n",
+    )
+    .unwrap();
+    std::fs::write(
+        &il,
+        "PROGRAM main\nVAR k : Keeper; xs : ARRAY[1..4] OF INT; END_VAR\nCAL k(data := xs)\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let out = common::ladderc()
+        .args(["--message-format", "short", "check"])
+        .args([&st, &il])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(
+        common::diagnostic_heads(&out.stderr, dir.path(), true),
+        vec!["main.il:3:7: error[E1071]: `data` of Keeper is an `ARRAY [*]` in-out: only calls in Structured Text pass a variable-length array"]
+    );
+}
