@@ -260,3 +260,18 @@ fn an_il_call_of_a_variable_length_in_out_is_e1071() {
         vec!["main.il:3:7: error[E1071]: `data` of Keeper is an `ARRAY [*]` in-out: only calls in Structured Text pass a variable-length array"]
     );
 }
+
+/// A statement of 100,000 operators that also reads an `ARRAY [*]` element: E0109 (more than 1,000
+/// operations) as for any array, and no crash (the rewrite looks at it without recursion and
+/// leaves it; before, copying it overflowed the stack).
+#[test]
+fn a_very_long_statement_with_a_variable_length_array_is_rejected_without_a_crash() {
+    let chain = vec!["k"; 100_000].join(" + ");
+    let src = format!(
+        "FUNCTION SumArr : DINT\nVAR_IN_OUT a : ARRAY[*] OF INT; END_VAR\nVAR k : DINT := 1; END_VAR\n\
+         SumArr := {chain} + a[LOWER_BOUND(a, 1)];\nEND_FUNCTION\n"
+    );
+    let (code, lines) = common::check_text("chain.st", &src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(lines[0].contains("error[E0109]"), "{lines:?}");
+}

@@ -24,7 +24,8 @@
 //! Input: the parsed units and pending bodies (before the declarations are indexed), then each ST
 //! statement being lowered. Output: the declarations split; the statements rewritten.
 //! Invariants: only VAR_IN_OUTs of FUNCTIONs, FUNCTION_BLOCKs and METHODs whose every dimension is
-//! `*` are split (any other `ARRAY [*]` reaches sema, which reports E1072); a statement that holds
+//! `*` are split; a statement is looked at without recursion first, and one of more than
+//! [`MAX_NODES`] nodes (already E0109) is left as it is (any other `ARRAY [*]` reaches sema, which reports E1072); a statement that holds
 //! no such parameter and no call of a POU that has one is not touched; a rewritten statement holds
 //! no rewritable part any more.
 
@@ -334,6 +335,9 @@ pub fn rewrite(
     s: &Stmt,
     diags: &mut Diagnostics,
 ) -> Option<Option<Stmt>> {
+    if !needs(env, s) {
+        return None;
+    }
     let mut r = Rewrite {
         env,
         type_of,
@@ -395,6 +399,103 @@ pub fn rewrite(
         return Some(None);
     }
     r.changed.then_some(Some(out))
+}
+
+/// The most nodes [`needs`] walks in one statement: a longer expression is already E0109 (more
+/// than 1,000 operations) and is not rewritten (nor copied: its copy would recurse as deep).
+const MAX_NODES: usize = 4_000;
+
+/// Whether `s`'s own expressions name a variable-length parameter of the POU being lowered or call
+/// a POU that has one: looked at without recursion and without copying.
+fn needs(env: &Env, s: &Stmt) -> bool {
+    let mut stack: Vec<&Expr> = Vec::new();
+    let mut places: Vec<&Place> = Vec::new();
+    let mut calls: Vec<(Place, &Vec<Arg>)> = Vec::new();
+    match &s.kind {
+        StmtKind::Assign { target, value } => {
+            places.push(target);
+            stack.push(value);
+        }
+        StmtKind::Call { callee, args } => {
+            places.push(callee);
+            calls.push((callee.clone(), args));
+        }
+        StmtKind::If { branches, .. } => stack.extend(branches.iter().map(|b| &b.cond)),
+        StmtKind::Case { selector, arms, .. } => {
+            stack.push(selector);
+            for a in arms {
+                for l in &a.labels {
+                    match l {
+                        CaseLabel::Value(e) => stack.push(e),
+                        CaseLabel::Range(a, b) => {
+                            stack.push(a);
+                            stack.push(b);
+                        }
+                    }
+                }
+            }
+        }
+        StmtKind::For {
+            from,
+            to,
+            by,
+            element,
+            ..
+        } => {
+            places.extend(element.iter());
+            stack.push(from);
+            stack.push(to);
+            stack.extend(by.iter());
+        }
+        StmtKind::While { cond, .. } => stack.push(cond),
+        StmtKind::Repeat { until, .. } => stack.push(until),
+        _ => {}
+    }
+    let (mut nodes, mut found) = (0, false);
+    loop {
+        nodes += 1;
+        if nodes > MAX_NODES {
+            return false;
+        }
+        if let Some((callee, args)) = calls.pop() {
+            found = found || params_of(env, &callee).is_some();
+            stack.extend(args.iter().map(|a| &a.value));
+            continue;
+        }
+        if let Some(p) = places.pop() {
+            if let PlaceBase::Name(n) = &p.base {
+                found = found || own(env, &n.name).is_some();
+            }
+            for a in &p.accessors {
+                match a {
+                    Accessor::Index(ix) => stack.extend(ix.iter()),
+                    Accessor::Call { args, .. } => stack.extend(args.iter().map(|a| &a.value)),
+                    _ => {}
+                }
+            }
+            continue;
+        }
+        let Some(e) = stack.pop() else {
+            return found;
+        };
+        match &e.kind {
+            ExprKind::Place(p) => places.push(p),
+            ExprKind::Unary { operand, .. } => stack.push(operand),
+            ExprKind::Binary { left, right, .. } => {
+                stack.push(left);
+                stack.push(right);
+            }
+            ExprKind::Call { name, args } => calls.push((
+                Place {
+                    base: PlaceBase::Name(name.clone()),
+                    accessors: Vec::new(),
+                    span: name.span,
+                },
+                args,
+            )),
+            _ => {}
+        }
+    }
 }
 
 struct Rewrite<'a, 'e> {
@@ -568,28 +669,35 @@ impl Rewrite<'_, '_> {
         self.failed = true;
     }
 
+    /// Rewrites `e` and what it holds; operator chains are walked with a stack (a chain of
+    /// 100,000 operators does not recurse).
     fn expr(&mut self, e: &mut Expr) {
-        match &mut e.kind {
-            ExprKind::Place(p) => self.place(p),
-            ExprKind::Unary { operand, .. } => self.expr(operand),
-            ExprKind::Binary { left, right, .. } => {
-                self.expr(left);
-                self.expr(right);
-            }
-            ExprKind::Call { name, args } => {
+        let mut stack: Vec<&mut Expr> = vec![e];
+        while let Some(e) = stack.pop() {
+            if let ExprKind::Call { name, args } = &e.kind {
                 if let Some(b) = self.bound(name, args, e.span) {
                     *e = b;
                     self.changed = true;
-                    return;
+                    continue;
                 }
-                let callee = Place {
-                    base: PlaceBase::Name(name.clone()),
-                    accessors: Vec::new(),
-                    span: name.span,
-                };
-                self.call(&callee, args);
             }
-            _ => {}
+            match &mut e.kind {
+                ExprKind::Place(p) => self.place(p),
+                ExprKind::Unary { operand, .. } => stack.push(operand),
+                ExprKind::Binary { left, right, .. } => {
+                    stack.push(left);
+                    stack.push(right);
+                }
+                ExprKind::Call { name, args } => {
+                    let callee = Place {
+                        base: PlaceBase::Name(name.clone()),
+                        accessors: Vec::new(),
+                        span: name.span,
+                    };
+                    self.call(&callee, args);
+                }
+                _ => {}
+            }
         }
     }
 
