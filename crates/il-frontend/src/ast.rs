@@ -215,6 +215,19 @@ pub struct ArrayDim {
     pub span: Span,
 }
 
+impl ArrayDim {
+    /// The bound both ends of a variable-length dimension `*` hold (`ARRAY [*] OF T`, IEC 61131-3
+    /// edition 3, 6.5.3): the bounds are the caller's, known at run time only. Such a dimension is
+    /// compiled only in a VAR_IN_OUT of an ST FUNCTION, FUNCTION_BLOCK or METHOD
+    /// (`st::varlen` replaces it before sema); sema reports any other as E1072.
+    pub const VARIABLE: i128 = i128::MIN;
+
+    /// Whether this is a variable-length dimension `*`.
+    pub fn is_variable(&self) -> bool {
+        self.lower == Self::VARIABLE && self.upper == Self::VARIABLE
+    }
+}
+
 /// `TYPE name : ... ; END_TYPE` entry.
 #[derive(Debug, Clone, Serialize)]
 pub struct TypeDecl {
@@ -574,6 +587,11 @@ pub struct RefOperand {
     pub of: Option<VarRef>,
     /// The whole `REF(x)` / `ADR(x)` / `NULL` text.
     pub span: Span,
+    /// Made for one call only: the address of an array passed to a FUNCTION's or METHOD's
+    /// `ARRAY [*]` in-out (`st::varlen`), which nothing reads after the call; it may then refer to
+    /// a variable that lives for one call (a FUNCTION's, a VAR_TEMP, a method's VAR, a VAR_IN_OUT).
+    #[serde(skip)]
+    pub call_scoped: bool,
 }
 
 /// An enumerated value written with its type, `Color#red`: the payload of [`Operand::EnumValue`].

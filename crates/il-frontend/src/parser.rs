@@ -286,18 +286,12 @@ impl<'s> Ctx<'s> {
     }
 
     /// A dimension `*` of a variable-length array (`ARRAY [*, *] OF REAL`, IEC 61131-3 edition 3,
-    /// for VAR_IN_OUT of functions and blocks): E0323, and the dimension is read as 0..0.
+    /// 6.5.3): both bounds [`ArrayDim::VARIABLE`]. Where it is allowed (a VAR_IN_OUT of an ST POU)
+    /// `st::varlen` compiles it; anywhere else sema reports E1072.
     pub fn variable_length_dim(&mut self, l: usize, r: usize) -> ArrayDim {
-        self.hint(
-            code::E0323,
-            "variable-length array dimension `*` (IEC 61131-3 edition 3) is not supported",
-            l,
-            r,
-            "declare the array with constant bounds (`ARRAY [1..N] OF ...`) and pass the length in use as an input",
-        );
         ArrayDim {
-            lower: 0,
-            upper: 0,
+            lower: ArrayDim::VARIABLE,
+            upper: ArrayDim::VARIABLE,
             span: self.span(l, r),
         }
     }

@@ -1268,6 +1268,27 @@ impl Body<'_, '_> {
     }
 
     fn unknown_param(&mut self, name: &ast::Ident, callee: &str, params: &[String]) {
+        let address = format!("{}{}", name.name, crate::st::varlen::ADDRESS);
+        if params.iter().any(|p| p.eq_ignore_ascii_case(&address)) {
+            // an `ARRAY [*]` in-out given by a call the ST rewrite did not see (an IL `CAL`)
+            self.a
+                .error(
+                    code::E1071,
+                    name.span,
+                    format!(
+                        "`{}` of {callee} is an `ARRAY [*]` in-out: only calls in Structured Text pass a variable-length array",
+                        name.name
+                    ),
+                )
+                .label("variable-length array argument")
+                .hint("call it from an ST body (`inst(data := arr);`), which passes the array's address and bounds");
+            return;
+        }
+        let params: Vec<String> = params
+            .iter()
+            .filter(|p| !is_hidden_varlen(p))
+            .cloned()
+            .collect();
         self.a
             .error(
                 code::E1011,
@@ -1441,4 +1462,20 @@ fn same_type(a: &Type, b: &Type) -> bool {
         (Type::String { wide: x, .. }, Type::String { wide: y, .. }) => x == y,
         _ => a == b,
     }
+}
+
+/// Whether `p` is one of the hidden inputs of an `ARRAY [*]` in-out (`st::varlen`), which a
+/// parameter list shown to the user leaves out.
+fn is_hidden_varlen(p: &str) -> bool {
+    let up = p.to_ascii_uppercase();
+    up.ends_with(crate::st::varlen::ADDRESS)
+        || [crate::st::varlen::LOWER, crate::st::varlen::UPPER]
+            .iter()
+            .any(|s| {
+                up.rfind(s).is_some_and(|k| {
+                    k > 0
+                        && up[k + s.len()..].chars().all(|c| c.is_ascii_digit())
+                        && up.len() > k + s.len()
+                })
+            })
 }

@@ -536,6 +536,27 @@ impl Analyzer<'_> {
                     .hint("use one array with several dimensions: ARRAY [0..9, 0..9] OF INT");
                     return Type::Error;
                 }
+                if let Some(d) = dims.iter().find(|d| d.is_variable()) {
+                    // (`st::varlen` compiles the allowed ones before sema: what reaches here is
+                    // misplaced, or mixes `*` with fixed bounds)
+                    let mixed = !dims.iter().all(|d| d.is_variable());
+                    self.error(
+                        code::E1072,
+                        d.span,
+                        if mixed {
+                            "a variable-length array has `*` in every dimension or in none".to_string()
+                        } else {
+                            "a variable-length array `ARRAY [*]` is allowed only as a VAR_IN_OUT of a FUNCTION, FUNCTION_BLOCK or METHOD (IEC 61131-3 edition 3, 6.5.3)".to_string()
+                        },
+                    )
+                    .label("variable-length dimension")
+                    .hint(if mixed {
+                        "write `ARRAY [*, *] OF T` (the caller's bounds in every dimension) or constant bounds in every dimension"
+                    } else {
+                        "declare it in a VAR_IN_OUT block of a function, function block or method with an ST body, or give it constant bounds (`ARRAY [1..N] OF T`)"
+                    });
+                    return Type::Error;
+                }
                 for d in dims {
                     if d.upper < d.lower {
                         self.error(

@@ -167,7 +167,7 @@ impl Body<'_, '_> {
         if place.ty.is_error() {
             return Ty::ERROR;
         }
-        if let Some(why) = self.not_referable(v) {
+        if let Some(why) = self.not_referable(v, r.call_scoped) {
             let path = crate::print::var_ref_text(v);
             self.a
                 .error(
@@ -209,8 +209,10 @@ impl Body<'_, '_> {
             || self.a.free_globals.contains_key(&name.to_ascii_uppercase())
     }
 
-    /// Why the address of `v` may not be taken (`None`: it may).
-    fn not_referable(&self, v: &ast::VarRef) -> Option<&'static str> {
+    /// Why the address of `v` may not be taken (`None`: it may). A `call_scoped` reference
+    /// (read during one call only, see [`RefOperand::call_scoped`]) may refer to what lives for
+    /// one call.
+    fn not_referable(&self, v: &ast::VarRef, call_scoped: bool) -> Option<&'static str> {
         if let Some(why) = through_reference_or_part(v) {
             return why;
         }
@@ -220,6 +222,7 @@ impl Body<'_, '_> {
             Some(var) if var.location.is_some() => {
                 Some("a located variable lives in the process image, which has no references")
             }
+            Some(_) if call_scoped => None,
             Some(_) if pou.kind == PouKind::Function => {
                 Some("the variables of a FUNCTION live for one call (IEC 61131-3, 6.4.4.10)")
             }

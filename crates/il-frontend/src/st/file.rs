@@ -1643,6 +1643,15 @@ pub fn compile_pending(
         }
         None => pending,
     };
+    // variable-length in-outs (`ARRAY [*] OF T`): their hidden address and bound inputs (`varlen`)
+    let split;
+    let pending = match super::varlen::split_decls(units, pending) {
+        Some(v) => {
+            split = v;
+            &split[..]
+        }
+        None => pending,
+    };
     // the blocks whose text declares an FB_init (before a block that is not compiled loses it),
     // and the blocks that are not compiled because their base is no block of the project (E0330:
     // a library's base, `EXTENDS TcBaseModuleRegistered`, may declare the FB_init their instances'

@@ -464,6 +464,7 @@ fn pass_by_reference(p: &mut crate::ast::Pou, by_reference: &HashMap<String, Vec
                 a.value = Operand::Ref(Box::new(RefOperand {
                     of: Some(v.clone()),
                     span,
+                    call_scoped: false,
                 }));
             }
         }

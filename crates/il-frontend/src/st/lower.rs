@@ -81,6 +81,9 @@ pub struct PouLowering<'d> {
     /// Some FUNCTION of the project has an ANY input (`any_inputs`): its calls and uses are
     /// rewritten before they are lowered.
     any_inputs: bool,
+    /// Some POU of the project has a variable-length in-out (`varlen`): its calls and uses are
+    /// rewritten.
+    varlen: bool,
     /// Types of the subexpressions of the trees being lowered (so lowering a chain of n operators
     /// types each node once, not n times). Cleared by every public entry point and after lowering a
     /// tree built here, so no entry outlives the node it describes.
@@ -223,6 +226,7 @@ impl<'d> PouLowering<'d> {
                 .flatten()
                 .any(|m| super::property::is_accessor(&m.name)),
             any_inputs: super::any_inputs::in_project(decls),
+            varlen: super::varlen::in_project(decls),
             types: RefCell::new(TypeCache::new()),
             nested: 0,
             raw_refs: false,
@@ -641,6 +645,24 @@ impl<'d> PouLowering<'d> {
             // `F(In := x)` of a function's ANY input `In`, `In.diSize` in it (any_inputs)
             Some(Some(s)) => {
                 self.stmt(&s, out, diags);
+                return true;
+            }
+            // (reported; the statement is dropped)
+            Some(None) => return true,
+            None => {}
+        }
+        let varlen = if self.varlen {
+            super::varlen::rewrite(&self.env(), &type_of, s, diags)
+        } else {
+            None
+        };
+        match varlen {
+            // `F(xs := arr)` of an `ARRAY [*]` in-out, `xs[i]`, `UPPER_BOUND(xs, 1)` (varlen);
+            // the type cache is keyed by node address: cleared around the new tree's life
+            Some(Some(s)) => {
+                self.types.get_mut().clear();
+                self.stmt(&s, out, diags);
+                self.types.get_mut().clear();
                 return true;
             }
             // (reported; the statement is dropped)
@@ -1583,6 +1605,7 @@ impl<'d> PouLowering<'d> {
                         return Some(Operand::Ref(Box::new(il::RefOperand {
                             of: None,
                             span: e.span,
+                            call_scoped: false,
                         })));
                     }
                     _ => {
@@ -1599,6 +1622,7 @@ impl<'d> PouLowering<'d> {
                         return Some(Operand::Ref(Box::new(il::RefOperand {
                             of: None,
                             span: e.span,
+                            call_scoped: false,
                         })));
                     }
                 }
@@ -1615,6 +1639,7 @@ impl<'d> PouLowering<'d> {
                 return Some(Operand::Ref(Box::new(il::RefOperand {
                     of: None,
                     span: e.span,
+                    call_scoped: false,
                 })));
             }
             (
@@ -1626,10 +1651,14 @@ impl<'d> PouLowering<'d> {
             ) if !(p.accessors.is_empty() && p.name().is_some_and(|n| n.is("NULL"))) => p,
             _ => return None,
         };
+        // (`st::varlen`'s address of an array passed to a function's or method's ARRAY [*])
+        let call_scoped =
+            matches!(&e.kind, ExprKind::Call { name, .. } if name.is(super::varlen::CALL_ADDRESS));
         match self.place_operand(place, out, diags)? {
             Operand::Var(v) => Some(Operand::Ref(Box::new(il::RefOperand {
                 of: Some(v),
                 span: e.span,
+                call_scoped,
             }))),
             other => {
                 diags.push(
@@ -1672,6 +1701,7 @@ impl<'d> PouLowering<'d> {
             return Some(Operand::Ref(Box::new(il::RefOperand {
                 of: None,
                 span: p.span,
+                call_scoped: false,
             })));
         }
         let mut accessors = Vec::new();
@@ -2308,7 +2338,11 @@ impl<'d> PouLowering<'d> {
             self.raw_refs = false;
             if let Some(r) = r {
                 out.push(ld(r, span));
-                let null = Operand::Ref(Box::new(il::RefOperand { of: None, span }));
+                let null = Operand::Ref(Box::new(il::RefOperand {
+                    of: None,
+                    span,
+                    call_scoped: false,
+                }));
                 out.push(simple(Op::Ne, false, Some(null), span));
             }
             return;

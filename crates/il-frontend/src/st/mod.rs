@@ -41,6 +41,7 @@ mod using;
 mod var_config;
 mod var_inst;
 pub mod var_stat;
+pub mod varlen;
 
 pub use conditional::ProjectDefines;
 pub use lower::PouLowering;

@@ -30,7 +30,7 @@ pub const REF_ASSIGN: &str = "REF=";
 
 /// Whether `name` is `REF` (edition 3) or `ADR` (CODESYS, TwinCAT): the address of its argument.
 pub fn is_address_of(name: &crate::ast::Ident) -> bool {
-    name.is("REF") || name.is("ADR")
+    name.is("REF") || name.is("ADR") || name.is(super::varlen::CALL_ADDRESS)
 }
 
 /// Whether type `t` is or holds (as an array element, or referred to) a `REFERENCE TO`.
@@ -337,6 +337,7 @@ impl RefTypes {
                     Box::new(crate::ast::RefOperand {
                         of: Some(target.clone()),
                         span,
+                        call_scoped: false,
                     }),
                 )));
             }
