@@ -1,0 +1,142 @@
+//! Issue #13, round 18 (helper `stleft`): the ST / CODESYS / TwinCAT language items the last closing
+//! note left, each through `ladderc run` on fixtures written here
+//! (`tests/tests/fixtures/lang_left_r18/`, see its README for the public projects they reproduce):
+//! - **`SIZEOF(T)` and `SIZEOF(v)` in constant expressions** (array bounds, string lengths, `VAR
+//!   CONSTANT` values; TcUnit's `ARRAY[0..((N * (SIZEOF(ST_ADSLogStringMessage) + K)) - 1)] OF
+//!   BYTE`): the bytes of the type in the C ladderc generates, computed while the declarations are
+//!   read (`crates/il-frontend/src/type_sizes.rs`), the same number as the run-time `SIZEOF` (C's
+//!   `sizeof`) for structures with padding, a structure that EXTENDS another, a union, strings,
+//!   pointers, enumerations and arrays, types of another file in any order. A function block, an
+//!   unknown type and another call are one E0022 each saying why. Before: E0011 at the `(`.
+
+mod common;
+use common::{column, ladderc};
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/lang_left_r18")
+        .join(name)
+}
+
+/// `ladderc run FILES --cycles N --sanitize --trace - --watch WATCH`: the trace; asserts exit 0 and
+/// no sanitizer report.
+fn run_files(files: &[PathBuf], cycles: u32, watch: &str) -> String {
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .args(files)
+        .args(["--cycles", &cycles.to_string(), "--sanitize"])
+        .args(["--trace", "-", "--watch", watch])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(0), "{files:?}: {stderr}");
+    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// `ladderc check FILES` of texts written to a temporary folder: exit code and the error lines up
+/// to their hints, with the folder left out.
+fn check_files(files: &[(&str, &str)]) -> (Option<i32>, Vec<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    let paths: Vec<PathBuf> = files
+        .iter()
+        .map(|(name, text)| {
+            let p = dir.path().join(name);
+            std::fs::write(&p, text).unwrap();
+            p
+        })
+        .collect();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .args(&paths)
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        common::diagnostic_heads(&out.stderr, dir.path(), false),
+    )
+}
+
+// ------------------------------------------------------------------ 1. SIZEOF in constants
+
+/// sizeof/: `Main.st` measures the types of `Types.st` (given after it, or before) in `VAR CONSTANT`
+/// values and array bounds, and each constant is compared with the run-time `SIZEOF` of a variable
+/// of that type: `cX` (the constant) equals `rX` (C's `sizeof`) for each. The numbers are the
+/// README's memory model on a 64-bit host: `ST_Record` EXTENDS `ST_Header` (LREAL, BYTE) with one
+/// BYTE more, flattened: 16; `ST_LogMessage` DWORD + two STRINGs of 258: 520, so TcUnit's ring
+/// buffer of 4 messages of 520 + 4 bytes is 2096.
+#[test]
+fn sizeof_in_constant_expressions_is_the_run_time_size() {
+    let names = [
+        "Record", "Mixed", "Raw", "Samples", "Mode", "Lreal", "String", "Buffer", "Copy", "Ring",
+    ];
+    let watch: Vec<String> = names
+        .iter()
+        .flat_map(|n| [format!("Main.c{n}"), format!("Main.r{n}")])
+        .collect();
+    for files in [["Main.st", "Types.st"], ["Types.st", "Main.st"]] {
+        let files: Vec<PathBuf> = files
+            .iter()
+            .map(|f| fixture(&format!("sizeof/{f}")))
+            .collect();
+        let trace = run_files(&files, 1, &watch.join(","));
+        for n in names {
+            let (c, r) = (
+                column(&trace, &format!("Main.c{n}")),
+                column(&trace, &format!("Main.r{n}")),
+            );
+            assert_eq!(c, r, "{n}: the constant and the run-time SIZEOF differ");
+        }
+        let sizes: Vec<f64> = names
+            .iter()
+            .map(|n| column(&trace, &format!("Main.c{n}"))[0])
+            .collect();
+        if cfg!(target_pointer_width = "64") {
+            assert_eq!(
+                sizes,
+                [16., 832., 8., 40., 4., 16., 258., 832., 832., 2096.],
+                "{trace}"
+            );
+        }
+    }
+}
+
+/// One file: a type declared after the array its size bounds, a string length, and a constant
+/// computed from a SIZEOF constant.
+#[test]
+fn sizeof_of_a_type_declared_later_in_the_same_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = dir.path().join("later.st");
+    std::fs::write(
+        &src,
+        "PROGRAM Main\nVAR CONSTANT\n    N_PAIR : UDINT := SIZEOF(ST_Pair);\n    N_TWICE : UDINT := N_PAIR * 2;\nEND_VAR\n\
+         VAR\n    aPairs : ARRAY[1..N_TWICE] OF BYTE;\n    sName : STRING(SIZEOF(ST_Pair));\n    nLen : INT;\n    nPairs, nPair : UDINT;\n    pair : ST_Pair;\nEND_VAR\n\
+         sName := 'abcdefghijklmnopqrstuvwxyz';\nnLen := LEN(sName);\nnPairs := SIZEOF(aPairs);\nnPair := SIZEOF(pair);\nEND_PROGRAM\n\n\
+         TYPE ST_Pair :\nSTRUCT\n    a : INT;\n    b : DINT;\nEND_STRUCT;\nEND_TYPE\n",
+    )
+    .unwrap();
+    let trace = run_files(&[src], 1, "Main.nLen,Main.nPairs,Main.nPair");
+    // INT, 2 bytes of padding, DINT: 8 bytes; a STRING(8) keeps 8 characters
+    assert_eq!(column(&trace, "Main.nPair"), [8.]);
+    assert_eq!(column(&trace, "Main.nPairs"), [16.]);
+    assert_eq!(column(&trace, "Main.nLen"), [8.]);
+}
+
+/// A function block's instance, an unknown type and another call have no size in a constant
+/// expression: one E0022 each, saying why.
+#[test]
+fn sizeof_without_a_value_is_one_located_error_each() {
+    let src = "FUNCTION_BLOCK FB_Worker\nVAR\n    n : INT;\nEND_VAR\nn := n + 1;\nEND_FUNCTION_BLOCK\n\n\
+               PROGRAM Main\nVAR\n    aBlock : ARRAY[0..SIZEOF(FB_Worker)] OF BYTE;\n    aNothing : ARRAY[0..SIZEOF(ST_Missing) - 1] OF BYTE;\n    aCall : ARRAY[0..LEN(x)] OF BYTE;\n    n : UDINT;\nEND_VAR\nn := 1;\nEND_PROGRAM\n";
+    let (code, lines) = check_files(&[("bad.st", src)]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        [
+            "bad.st:10:23: error[E0022]: constant expression `SIZEOF(FB_Worker)`: `FB_Worker` is a function block: the size of its instance is known in code (`SIZEOF(x)` in a body), not while declarations are read",
+            "bad.st:11:25: error[E0022]: constant expression `SIZEOF(ST_Missing) - 1`: the size of `ST_Missing` is not known (no data type or variable of that name declared before, in this file or another given file)",
+            "bad.st:12:22: error[E0022]: constant expression `LEN(x)`: `LEN(...)` is a call: only `SIZEOF(T)` and `SIZEOF(v)` are computed in a constant expression",
+        ]
+    );
+}
