@@ -23,8 +23,8 @@
 //! - **A FUNCTION input of type ANY** (`ANY_NUM`, `ANY_INT`, `ANY_REAL`, `ANY_BIT`; CODESYS "ANY
 //!   and ANY_<type>"): the function reads the argument's `.diSize` and `.TypeClass` (compared with
 //!   `__SYSTEM.TYPE_CLASS.TYPE_INT` ...), calls pass any variable, element or field of the family,
-//!   formally or by position. `.pValue` and the input read as a value, a literal argument and an
-//!   argument outside the family are E1068 (a pointer to an unknown type is left: it needs pointer
+//!   formally or by position. The input read as a value, a literal argument and an argument
+//!   outside the family are E1068 (`.pValue` compiles since round 18; before it, a pointer to an unknown type was left: it needs pointer
 //!   indexing and casts). Before: E1003 "unknown type `ANY`".
 
 mod common;
@@ -323,8 +323,9 @@ fn an_any_input_sees_the_size_and_class_of_its_argument() {
     assert_eq!(column(&trace, "Main.nBytes"), [10.]);
 }
 
-/// What an ANY input does not compile is one E1068 each: `.pValue` and the input read as a value
-/// (kevin00156's Clear hands `ADR(In)` and `SIZEOF(In)` to SysMemSet), once per input of the
+/// What an ANY input does not compile is one E1068 each: the input read as a value (kevin00156's
+/// Clear hands `ADR(In)` and `SIZEOF(In)` to SysMemSet; `.pValue` compiles since round 18,
+/// `tests/tests/lang_left_r18.rs`), once per input of the
 /// function however often it is used; a BOOL given to an ANY_NUM input; an expression given to an
 /// ANY input.
 #[test]
@@ -340,7 +341,7 @@ fn what_an_any_input_does_not_compile_is_one_e1068_each() {
     assert_eq!(
         errors,
         [
-            "any_bad.st:5:11: error[E1068]: `In` of `Clear` is an ANY input: its address (`.pValue`) and its value are not compiled",
+            "any_bad.st:6:17: error[E1068]: `In` of `Clear` is an ANY input: it is read through `.diSize`, `.TypeClass` and `.pValue`, not as a value",
             "any_bad.st:15:12: error[E1068]: the input `v` of `F_Num` is ANY_NUM: `BOOL` is not one of its types",
             "any_bad.st:16:12: error[E1068]: the ANY input `v` of `F_Num` takes a variable",
         ]

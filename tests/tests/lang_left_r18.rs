@@ -8,6 +8,15 @@
 //!   `sizeof`) for structures with padding, a structure that EXTENDS another, a union, strings,
 //!   pointers, enumerations and arrays, types of another file in any order. A function block, an
 //!   unknown type and another call are one E0022 each saying why. Before: E0011 at the `(`.
+//! - **An ANY input's `.pValue`** (CODESYS/TwinCAT `__SYSTEM.AnyType`): a `POINTER TO BYTE` to the
+//!   argument's bytes, bounded by the argument (ladderc's bounded pointers), so `In.pValue[i]`,
+//!   `MEMCPY(ADR(buf), In.pValue, In.diSize)`, `MEMSET(In.pValue, 0, In.diSize)` and byte loops
+//!   read and write the caller's variable, and any index outside it reads 0 and drops the write
+//!   (clean under `--sanitize`). A function whose body reads `.pValue` gets a third hidden input
+//!   `In__PVALUE`, given `ADR(x)` by each call. A literal or expression argument stays E1068 (it has
+//!   no storage), a variable that has no address for the whole run (a FUNCTION's variable, a
+//!   VAR_TEMP) E0305, a variable whose type holds a reference or an FB instance E1068. Before:
+//!   E1068 at `.pValue`.
 
 mod common;
 use common::{column, ladderc};
@@ -137,6 +146,110 @@ fn sizeof_without_a_value_is_one_located_error_each() {
             "bad.st:10:23: error[E0022]: constant expression `SIZEOF(FB_Worker)`: `FB_Worker` is a function block: the size of its instance is known in code (`SIZEOF(x)` in a body), not while declarations are read",
             "bad.st:11:25: error[E0022]: constant expression `SIZEOF(ST_Missing) - 1`: the size of `ST_Missing` is not known (no data type or variable of that name declared before, in this file or another given file)",
             "bad.st:12:22: error[E0022]: constant expression `LEN(x)`: `LEN(...)` is a call: only `SIZEOF(T)` and `SIZEOF(v)` are computed in a constant expression",
+        ]
+    );
+}
+
+// ------------------------------------------------------------------ 2. an ANY input's .pValue
+
+/// any_pvalue.st: `F_Checksum` adds the bytes of its ANY argument through `Data.pValue[i]` for i
+/// below `Data.diSize` (a DINT 16#01020304: 10; an ARRAY OF INT [1, 2, 3, 4]: 10; one element, 4;
+/// a STRING 'AB': ladderc's IEC_STRING, a 2-byte length then the characters: 2 + 65 + 66 = 133);
+/// `F_CopyOut` MEMCPYs its argument into a local buffer and reads one byte at `nIndex`; `F_Poke`
+/// writes a byte of the caller's UINT through `.pValue`; `F_Clear` MEMSETs the caller's array
+/// (cycle 2). Indexes -1, 2 (past the UINT's 2 bytes) and the largest DINT read 0 and drop the
+/// write, named once at the end of the run.
+#[test]
+fn an_any_inputs_pvalue_is_a_bounded_pointer_to_the_argument() {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n1,Main.nIndex,-1\n2,Main.nIndex,2\n3,Main.nIndex,2147483647\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("any_pvalue.st"))
+        .args(["--cycles", "4", "--sanitize", "--stimulus"])
+        .arg(&stim)
+        .args([
+            "--trace",
+            "-",
+            "--watch",
+            "Main.nSumW,Main.nSumArr,Main.nSumElem,Main.nSumText,Main.nCopy,Main.nFar,Main.n,Main.xCleared,Main.arr[1]",
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("Sanitizer"), "{stderr}");
+    // no W1425: the hidden address is a POINTER TO BYTE to any argument by design
+    assert!(!stderr.contains("warning"), "{stderr}");
+    assert!(
+        stderr.contains("runtime: pointer outside its variable dereferenced (first: SRC__PVALUE[nIndex] in F_CopyOut; zero read, write dropped)"),
+        "{stderr}"
+    );
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(column(&trace, "Main.nSumW"), [10., 10., 10., 10.]);
+    assert_eq!(column(&trace, "Main.nSumArr"), [10., 10., 10., 0.]);
+    assert_eq!(column(&trace, "Main.nSumElem"), [4., 4., 4., 0.]);
+    assert_eq!(column(&trace, "Main.nSumText"), [133., 133., 133., 133.]);
+    // 16#0A0B: bytes 16#0B, 16#0A; the first scan's F_Poke makes it 16#0AFF
+    assert_eq!(
+        column(&trace, "Main.nCopy"),
+        [11010., 255010., 255010., 255010.]
+    );
+    assert_eq!(
+        column(&trace, "Main.nFar"),
+        [11011., 255000., 255000., 255000.]
+    );
+    assert_eq!(column(&trace, "Main.n"), [2815., 2815., 2815., 2815.]);
+    assert_eq!(column(&trace, "Main.xCleared"), [0., 0., 1., 1.]);
+    assert_eq!(column(&trace, "Main.arr[1]"), [2., 2., 0., 0.]);
+}
+
+/// What `.pValue` cannot point into is one located error each: a FUNCTION's variable and a
+/// VAR_TEMP live for one call (E0305, as `ADR` of them), a literal has no storage (E1068), a
+/// variable holding a pointer or an FB instance could be forged through its bytes (E1068).
+#[test]
+fn pvalue_of_an_argument_without_lasting_storage_is_refused() {
+    let f = "FUNCTION F_Sum : DINT\nVAR_INPUT\n    Data : ANY;\nEND_VAR\nF_Sum := BYTE_TO_DINT(Data.pValue[0]);\nEND_FUNCTION\n\n";
+    let (code, lines) = check_files(&[(
+        "temp.st",
+        &format!(
+            "{f}FUNCTION F_Outer : DINT\nVAR\n    nLocal : DINT := 7;\nEND_VAR\nF_Outer := F_Sum(nLocal);\nEND_FUNCTION\n\n\
+             PROGRAM Main\nVAR\n    b : DINT;\nEND_VAR\nVAR_TEMP\n    t : INT;\nEND_VAR\nb := F_Sum(t) + F_Outer();\nEND_PROGRAM\n"
+        ),
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        [
+            "temp.st:12:18: error[E0305]: a reference to `nLocal` is not allowed: the variables of a FUNCTION live for one call (IEC 61131-3, 6.4.4.10)",
+            "temp.st:22:12: error[E0305]: a reference to `t` is not allowed: a VAR_TEMP variable lives for one call (IEC 61131-3, 6.4.4.10)",
+        ]
+    );
+    let (code, lines) = check_files(&[(
+        "literal.st",
+        &format!("{f}PROGRAM Main\nVAR\n    a : DINT;\nEND_VAR\na := F_Sum(5);\nEND_PROGRAM\n"),
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        ["literal.st:12:12: error[E1068]: the ANY input `Data` of `F_Sum` takes a variable"]
+    );
+    // bytes written through `.pValue` could forge a pointer or a block's own members
+    let (code, lines) = check_files(&[(
+        "refs.st",
+        &format!("TYPE ST_P : STRUCT p : POINTER TO INT; END_STRUCT; END_TYPE\n{f}PROGRAM Main\nVAR\n    s : ST_P;\n    t : TON;\n    b : DINT;\nEND_VAR\nb := F_Sum(s) + F_Sum(t);\nEND_PROGRAM\n"),
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        [
+            "refs.st:15:12: error[E1068]: `Data.pValue` of `F_Sum` cannot point into a ST_P: it holds a reference or a function block instance",
+            "refs.st:15:23: error[E1068]: `Data.pValue` of `F_Sum` cannot point into a TON: it holds a reference or a function block instance",
         ]
     );
 }

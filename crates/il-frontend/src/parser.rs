@@ -11,10 +11,10 @@
 use crate::ast::*;
 pub use crate::const_eval::{ConstNum, Constants};
 use crate::layout::Layout;
-use std::collections::HashMap;
 use crate::lexer::{LineTok, TimeValue, Tok, Word};
 use diagnostics::{code, Code, Diagnostic, Diagnostics, FileId, Severity, Span};
 use lalrpop_util::{ErrorRecovery, ParseError};
+use std::collections::HashMap;
 
 #[allow(
     clippy::all,

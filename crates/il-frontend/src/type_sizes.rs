@@ -260,7 +260,9 @@ fn insert(consts: &mut Constants, name: &str, l: Layout) {
 /// The layouts of every data type `units` declare that can be computed (a type of another unit
 /// too, in any order), and the names of their function blocks ([`block_key`]): the keys
 /// [`size_key`], [`align_key`] and [`block_key`] offered to the constant expressions of every file.
-pub fn project_sizes<'a>(units: impl IntoIterator<Item = &'a CompilationUnit> + Clone) -> Constants {
+pub fn project_sizes<'a>(
+    units: impl IntoIterator<Item = &'a CompilationUnit> + Clone,
+) -> Constants {
     let decls: Vec<&TypeDecl> = units
         .clone()
         .into_iter()

@@ -4,14 +4,15 @@
 //! argument's size in bytes), `In.TypeClass` (its class, compared with `__SYSTEM.TYPE_CLASS.TYPE_INT`
 //! ...) and `In.pValue` (its address).
 //!
-//! What ladderc compiles (safe and bounded: no pointer of an unknown type is made): `In.diSize`
-//! and `In.TypeClass`. The input is two hidden inputs of the function, `In__DISIZE : DINT` and
-//! `In__TYPECLASS : INT` ([`split_decls`]); a call `F(In := x)` (formal or positional) passes
-//! `SIZEOF(x)` and the class of `x`'s type ([`rewrite`], before the statement is lowered). A call
-//! may give any variable, element or field; an argument that is no variable (a literal, an
-//! expression) is E1068, as is an argument outside the input's family (`ANY_NUM` given a BOOL).
-//! `In.pValue`, and `In` read as a value (`ADR(In)`, `SIZEOF(In)`), are E1068 in the function: its
-//! use needs a pointer to an unknown type (left: pointer indexing and casts).
+//! What ladderc compiles (safe and bounded): `In.diSize`, `In.TypeClass` and `In.pValue`. The
+//! input is hidden inputs of the function, `In__DISIZE : DINT`, `In__TYPECLASS : INT` and, when
+//! the function's body reads `.pValue`, `In__PVALUE : POINTER TO BYTE` ([`split_decls`]); a call
+//! `F(In := x)` (formal or positional) passes `SIZEOF(x)`, the class of `x`'s type and `ADR(x)`
+//! ([`rewrite`], before the statement is lowered), so `.pValue` is a bounded pointer to the
+//! argument's bytes (sema refuses, E0305, an argument with no address for the whole run, as `ADR`
+//! of it). A call may give any variable, element or field; an argument that is no variable (a
+//! literal, an expression) is E1068, as is an argument outside the input's family (`ANY_NUM` given
+//! a BOOL). `In` read as a value (`ADR(In)`, `SIZEOF(In)`) is E1068 in the function.
 //!
 //! Input: the parsed units (before the declarations are indexed), then each ST statement being
 //! lowered. Output: the functions' ANY inputs split; the statements rewritten.
@@ -30,6 +31,9 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 pub const SIZE: &str = "__DISIZE";
 /// The hidden input holding an ANY input's type class.
 pub const CLASS: &str = "__TYPECLASS";
+/// The hidden input holding an ANY input's address, a bounded `POINTER TO BYTE` (declared only
+/// by a function whose body reads `.pValue`).
+pub const VALUE: &str = "__PVALUE";
 
 /// The generic types an input may have, with the elementary types each accepts (`None`: any type).
 fn family(ty: &str) -> Option<Option<&'static [&'static str]>> {
@@ -144,9 +148,11 @@ fn class_of(env: &Env, ty: &TypeRef) -> i128 {
     }
 }
 
-/// Splits each ANY-family VAR_INPUT of every FUNCTION into its two hidden inputs (see the module
-/// documentation). The split inputs keep their order among the others.
-pub fn split_decls(units: &mut [CompilationUnit]) {
+/// Splits each ANY-family VAR_INPUT of every FUNCTION into its hidden inputs (see the module
+/// documentation): size and class, and the address when `reads_value` says that the function's
+/// body (found by its name's position) reads `.pValue`. The split inputs keep their order among
+/// the others.
+pub fn split_decls(units: &mut [CompilationUnit], reads_value: &dyn Fn(crate::Span) -> bool) {
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
         let LibraryElement::Pou(p) = item else {
             continue;
@@ -154,6 +160,7 @@ pub fn split_decls(units: &mut [CompilationUnit]) {
         if p.kind != PouKind::Function {
             continue;
         }
+        let with_value = reads_value(p.name.span);
         for b in p.var_blocks.iter_mut().filter(|b| b.kind == VarKind::Input) {
             if !b.vars.iter().any(|v| is_any(&v.ty)) {
                 continue;
@@ -180,10 +187,30 @@ pub fn split_decls(units: &mut [CompilationUnit]) {
                     h.init = None;
                     vars.push(h);
                 }
+                if with_value {
+                    let mut h = v.clone();
+                    let at = v.name.span;
+                    h.name = Ident::new(format!("{}{VALUE}", v.name.name), at);
+                    h.ty = TypeRef::Ref {
+                        kind: crate::ast::RefKind::Pointer,
+                        target: Box::new(TypeRef::Named(Ident::new("BYTE", at))),
+                        span: at,
+                    };
+                    h.init = None;
+                    vars.push(h);
+                }
             }
             b.vars = vars;
         }
     }
+}
+
+/// Whether `input` is the hidden address input of an ANY input (`In__PVALUE`).
+pub fn is_address_input(input: &str) -> bool {
+    input.len() > VALUE.len()
+        && input
+            .get(input.len() - VALUE.len()..)
+            .is_some_and(|end| end.eq_ignore_ascii_case(VALUE))
 }
 
 fn is_any(ty: &TypeRef) -> bool {
@@ -208,7 +235,7 @@ fn inputs_of(env: &Env, f: &str) -> Option<Vec<Input>> {
             continue;
         }
         let up = name.to_ascii_uppercase();
-        if up.ends_with(SIZE) {
+        if up.ends_with(SIZE) || up.ends_with(VALUE) {
             continue;
         }
         match up.find(CLASS) {
@@ -490,9 +517,13 @@ impl Rewrite<'_, '_> {
         let Some(class) = class_var(self.env, &n.name) else {
             return;
         };
+        let value = format!("{}{VALUE}", n.key());
         let field = match p.accessors.first() {
             Some(Accessor::Field(f)) if f.is("diSize") => size,
             Some(Accessor::Field(f)) if f.is("TypeClass") => class,
+            Some(Accessor::Field(f)) if f.is("pValue") && self.env.vars.contains_key(&value) => {
+                value
+            }
             _ => {
                 // once per input of the function (every use is dropped, the first reported)
                 let at = match p.accessors.first() {
@@ -500,7 +531,7 @@ impl Rewrite<'_, '_> {
                     _ => p.span,
                 };
                 let msg = format!(
-                    "`{}` of `{}` is an ANY input: its address (`.pValue`) and its value are not compiled",
+                    "`{}` of `{}` is an ANY input: it is read through `.diSize`, `.TypeClass` and `.pValue`, not as a value",
                     n.name, self.env.pou_name.name
                 );
                 self.failed = true;
@@ -514,8 +545,8 @@ impl Rewrite<'_, '_> {
                 self.refuse(
                     at,
                     msg,
-                    "reads the argument through a pointer of an unknown type",
-                    "an ANY input is read through `.diSize` and `.TypeClass` here (CODESYS's __SYSTEM.AnyType); give the function an input of the argument's own type (a VAR_IN_OUT to change it) to read its value",
+                    "the argument's value has no type here",
+                    "read its bytes through `.pValue` (a POINTER TO BYTE to the argument: `In.pValue[i]`, `MEMCPY(ADR(buf), In.pValue, In.diSize)`), or give the function an input of the argument's own type (a VAR_IN_OUT to change it)",
                 );
                 return;
             }
@@ -603,7 +634,34 @@ impl Rewrite<'_, '_> {
                 span,
             };
             let class = Expr::literal(LiteralKind::Int(class_of(self.env, &ty)), span);
-            for (name, value) in [(format!("{input}{SIZE}"), size), (class_input, class)] {
+            let mut hidden = vec![(format!("{input}{SIZE}"), size), (class_input, class)];
+            // `.pValue`: the argument's address, bounded by the argument (a variable, an element
+            // or a field: sema refuses, E0305, what has no address for the whole run)
+            let value_input = format!("{input}{VALUE}");
+            let reads_value = self.env.decls.pou(&f.name).is_some_and(|i| {
+                i.vars
+                    .iter()
+                    .any(|(n, k, _)| *k == VarKind::Input && n.eq_ignore_ascii_case(&value_input))
+            });
+            if reads_value {
+                let address = Expr {
+                    kind: ExprKind::Call {
+                        name: Ident::new("ADR", span),
+                        args: vec![Arg {
+                            name: None,
+                            dir: ArgDir::Input,
+                            value: Expr {
+                                kind: ExprKind::Place(place.clone()),
+                                span: a.value.span,
+                            },
+                            span,
+                        }],
+                    },
+                    span,
+                };
+                hidden.push((value_input, address));
+            }
+            for (name, value) in hidden {
                 out.push(Arg {
                     name: Some(Ident::new(name, span)),
                     dir: ArgDir::Input,

@@ -1629,8 +1629,16 @@ pub fn compile_pending(
         super::var_stat::hoist(units);
         return;
     }
-    // a FUNCTION's ANY inputs: their hidden size and class inputs (`any_inputs`)
-    super::any_inputs::split_decls(units);
+    // a FUNCTION's ANY inputs: their hidden size, class and address inputs (`any_inputs`), the
+    // address when the function's body reads `.pValue`
+    let reads_value = |at: Span| {
+        pending.iter().any(|b| {
+            b.file == at.file
+                && b.name_start == at.start as usize
+                && b.text.to_ascii_lowercase().contains(".pvalue")
+        })
+    };
+    super::any_inputs::split_decls(units, &reads_value);
     // methods exported one file each joined to their blocks
     let joined;
     let pending = match super::lone_members::attach(units, pending, diags) {
