@@ -13,7 +13,8 @@
 //!   FUNCTION_BLOCK, FUNCTION or PROGRAM, one copy shared by every instance and every call, kept
 //!   between calls and initialised once; the block's methods see them. They are global variables
 //!   `__STAT_<POU>_<NAME>` (the name `--watch` takes). Before: E0011 and E0007 at each declaration,
-//!   E0015 at the next block. In a METHOD: one E1067 (read as VAR).
+//!   E0015 at the next block. In a PROPERTY accessor: one E1067 (read as VAR; a METHOD's compiles
+//!   since round 18).
 //! - **VAR_INST initial values computed from the instance** (TwinCAT): `nSeed : INT :=
 //!   THIS^.nBase * 10;`, `pSelf : POINTER TO FB_X := THIS;`, and an instance with one input given
 //!   `(ipList := THIS^.fbList)` (fisothemes/TwinCat-Dynamic-Collections' `_Values` accessor): computed
@@ -243,19 +244,20 @@ fn var_stat_is_one_copy_for_every_instance_and_call() {
     assert_eq!(column(&trace, "__STAT_F_TOTAL_DTOTAL"), [5., 10., 15.]);
 }
 
-/// A VAR_STAT block of a METHOD (CODESYS shares it among the block's instances) is one E1067 at
-/// its keyword; nothing else is reported (the block is read as VAR).
+/// A VAR_STAT block of a PROPERTY accessor is one E1067 at its keyword; nothing else is reported
+/// (the block is read as VAR). A METHOD's VAR_STAT compiles since round 18
+/// (`tests/tests/lang_left_r18.rs`).
 #[test]
-fn var_stat_in_a_method_is_one_e1067() {
+fn var_stat_in_a_property_accessor_is_one_e1067() {
     let (code, errors) = check_files(&[(
         "counter.st",
-        "FUNCTION_BLOCK Counter\nMETHOD Next : INT\nVAR_STAT\n    nCalls : INT;\nEND_VAR\n\
-         nCalls := nCalls + 1;\nNext := nCalls;\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
+        "FUNCTION_BLOCK Counter\nVAR\n    n : INT;\nEND_VAR\nPROPERTY Calls : INT\nGET\nVAR_STAT\n    nCalls : INT;\nEND_VAR\n\
+         nCalls := nCalls + 1;\nCalls := nCalls;\nEND_GET\nEND_PROPERTY\nEND_FUNCTION_BLOCK\n",
     )]);
     assert_eq!(code, Some(1));
     assert_eq!(
         errors,
-        ["counter.st:3:1: error[E1067]: VAR_STAT in a METHOD or PROPERTY accessor is not supported"]
+        ["counter.st:7:1: error[E1067]: VAR_STAT in a PROPERTY accessor is not supported"]
     );
 }
 

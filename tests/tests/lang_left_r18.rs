@@ -17,6 +17,11 @@
 //!   no storage), a variable that has no address for the whole run (a FUNCTION's variable, a
 //!   VAR_TEMP) E0305, a variable whose type holds a reference or an FB instance E1068. Before:
 //!   E1068 at `.pValue`.
+//! - **VAR_STAT in a METHOD** (CODESYS "VAR_STAT": in a method, one copy per method shared by all
+//!   the block's instances, kept between calls, initialised once): the global
+//!   `__STAT_<BLOCK>___M_<METHOD>_<NAME>`, in a `.st` block, a TwinCAT `<Method>` and a method file
+//!   of its own (`Block.Method.st`). Before: E1067 (read as VAR). A PROPERTY accessor's VAR_STAT
+//!   stays E1067.
 
 mod common;
 use common::{column, ladderc};
@@ -252,4 +257,62 @@ fn pvalue_of_an_argument_without_lasting_storage_is_refused() {
             "refs.st:15:23: error[E1068]: `Data.pValue` of `F_Sum` cannot point into a TON: it holds a reference or a function block instance",
         ]
     );
+}
+
+// ------------------------------------------------------------------ 3. VAR_STAT in a METHOD
+
+/// method_stat/: two instances of a TwinCAT block draw tickets from their method's VAR_STAT
+/// `nTicket` (initialised once to 1000): each call adds one whichever instance calls; the method's
+/// VAR `nLocal` starts at 5 at each call, the block's `nOwnCalls` counts per instance. Station B
+/// draws a second ticket from cycle 1 on. The static array `aHistory` keeps the tickets by number
+/// MOD 4.
+#[test]
+fn var_stat_of_a_method_is_shared_by_every_instance() {
+    let files = [
+        fixture("method_stat/FB_Station.TcPOU"),
+        fixture("method_stat/Main.st"),
+    ];
+    let trace = run_files(
+        &files,
+        3,
+        "Main.nA,Main.nB,__STAT_FB_STATION___M_NEXTTICKET_NTICKET,__STAT_FB_STATION___M_NEXTTICKET_AHISTORY[1]",
+    );
+    assert_eq!(column(&trace, "Main.nA"), [1001601., 1003602., 1006603.]);
+    assert_eq!(column(&trace, "Main.nB"), [1002601., 1005603., 1008605.]);
+    assert_eq!(
+        column(&trace, "__STAT_FB_STATION___M_NEXTTICKET_NTICKET"),
+        [1002., 1005., 1008.]
+    );
+    assert_eq!(
+        column(&trace, "__STAT_FB_STATION___M_NEXTTICKET_AHISTORY[1]"),
+        [1001., 1005., 1005.]
+    );
+}
+
+/// The same in a method exported to a file of its own (`Counter.Next.st`, CODESYS export scripts).
+#[test]
+fn var_stat_of_a_method_in_a_file_of_its_own() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    let files = [
+        write(
+            "Counter.st",
+            "FUNCTION_BLOCK Counter\nVAR\n    n : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n",
+        ),
+        write(
+            "Counter.Next.st",
+            "METHOD Next : INT\nVAR_STAT\n    nCalls : INT;\nEND_VAR\nnCalls := nCalls + 1;\nNext := nCalls;\n",
+        ),
+        write(
+            "Main.st",
+            "PROGRAM Main\nVAR\n    a, b : Counter;\n    ra, rb : INT;\nEND_VAR\nra := a.Next();\nrb := b.Next();\nEND_PROGRAM\n",
+        ),
+    ];
+    let trace = run_files(&files, 2, "Main.ra,Main.rb");
+    assert_eq!(column(&trace, "Main.ra"), [1., 3.]);
+    assert_eq!(column(&trace, "Main.rb"), [2., 4.]);
 }

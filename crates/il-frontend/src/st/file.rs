@@ -1099,7 +1099,7 @@ pub fn parse_text(
         .with_primary_label(format!("this {} has no block", kind.to_ascii_lowercase()))
         .with_hint("give the block's file on the same command line, named so that this file's name is `Block.Member.st`, or move this text before the block's END_FUNCTION_BLOCK");
         // joined to its block once every file is read (`lone_members`)
-        match super::lone_members::read(file, src, first.start, &mut references, diags) {
+        match super::lone_members::read(file, src, first.start, &stat_at, &mut references, diags) {
             Some(methods) => pending.push(PendingBody {
                 file,
                 name_start: usize::MAX,
@@ -1229,6 +1229,7 @@ pub fn parse_text(
                 .iter()
                 .map(|m| {
                     let mut pm = pending_method(file, src, m, diags);
+                    super::var_stat::name_method_blocks(&mut pm, &stat_at);
                     references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
                     pm
                 })
@@ -1442,6 +1443,7 @@ pub fn parse_text(
                         _ => &mut *diags,
                     };
                     let mut pm = pending_method(file, src, m, sink);
+                    super::var_stat::name_method_blocks(&mut pm, &stat_at);
                     references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
                     methods.push(pm);
                     blank(&mut body, m.whole.clone());
@@ -1855,6 +1857,7 @@ pub fn add_method_vars(
     let mut in_outs = Vec::new();
     let mut defaults = Vec::new();
     let mut kept = Vec::new();
+    let mut stat = Vec::new();
     for m in methods {
         if let Some(r) = &m.ret {
             let mut v = r.clone();
@@ -1887,11 +1890,18 @@ pub fn add_method_vars(
                     continue;
                 }
             };
+            let is_stat = b
+                .name
+                .as_ref()
+                .is_some_and(|n| n.name == super::var_stat::MARK);
             for v in &b.vars {
                 let mut v = v.clone();
                 let inst = m.inst.contains(&v.name.key());
                 v.name.name = method_var(&m.name.name, &v.name.name);
-                if inst {
+                if is_stat {
+                    // VAR_STAT: one copy per method, shared by every instance (`var_stat::hoist`)
+                    stat.push(v);
+                } else if inst {
                     // VAR_INST: a variable of the instance, initialised once with it
                     kept.push(v);
                 } else {
@@ -1901,17 +1911,22 @@ pub fn add_method_vars(
         }
     }
     let span = p.span;
-    for (kind, vars) in [
-        (VarKind::Input, inputs),
-        (VarKind::Output, outputs),
-        (VarKind::InOut, in_outs),
-        (VarKind::Temp, temps),
-        (VarKind::Local, defaults),
-        (VarKind::Local, kept),
+    for (kind, vars, name) in [
+        (VarKind::Input, inputs, None),
+        (VarKind::Output, outputs, None),
+        (VarKind::InOut, in_outs, None),
+        (VarKind::Temp, temps, None),
+        (VarKind::Local, defaults, None),
+        (VarKind::Local, kept, None),
+        (
+            VarKind::Local,
+            stat,
+            Some(crate::ast::Ident::new(super::var_stat::MARK, span)),
+        ),
     ] {
         if !vars.is_empty() {
             p.var_blocks.push(VarBlock {
-                name: None,
+                name,
                 kind,
                 constant: false,
                 retain: false,
