@@ -17,6 +17,11 @@
 //!   no storage), a variable that has no address for the whole run (a FUNCTION's variable, a
 //!   VAR_TEMP) E0305, a variable whose type holds a reference or an FB instance E1068. Before:
 //!   E1068 at `.pValue`.
+//! - **ANY inputs of METHODs** (as a FUNCTION's: `.diSize`, `.TypeClass`, `.pValue`), called
+//!   through an instance (`rec.Record(3, w)`, formal or positional), inside the block (`Record(1,
+//!   n)`, `THIS^.Record(...)`), and an ANY input **passed on** to another ANY input (a function's
+//!   or a method's: its size, class and address go with it; a narrower family is E1068). Before:
+//!   E1003 "unknown type `ANY`" in a method, E1068 for an input passed on.
 //! - **VAR_STAT in a METHOD** (CODESYS "VAR_STAT": in a method, one copy per method shared by all
 //!   the block's instances, kept between calls, initialised once): the global
 //!   `__STAT_<BLOCK>___M_<METHOD>_<NAME>`, in a `.st` block, a TwinCAT `<Method>` and a method file
@@ -315,4 +320,50 @@ fn var_stat_of_a_method_in_a_file_of_its_own() {
     let trace = run_files(&files, 2, "Main.ra,Main.rb");
     assert_eq!(column(&trace, "Main.ra"), [1., 3.]);
     assert_eq!(column(&trace, "Main.rb"), [2., 4.]);
+}
+
+// ------------------------------------------------------------------ 3. ANY inputs of METHODs
+
+/// any_method.st: `FB_Recorder.Record(nTag, Value : ANY)` keeps the argument's size, class and
+/// byte sum (through `F_ByteSum(Value)`, the ANY input passed on with its address):
+/// `rec.Record(3, w)` of a DINT is 3000 + 4 * 10 + 1 (the first entry); `rec.Record(Value :=
+/// aBytes, nTag := 4)` of an ARRAY[0..2] OF BYTE is 4000 + 30 + 2 (class TYPE_ARRAY, 26);
+/// `RecordTwice(n)` of a UINT calls `Record(1, Number)` and `THIS^.Record(nTag := 2, Value :=
+/// Number)` inside the block: 1023 + 2024, the byte sum 16#0B + 16#0A = 21; `F_Forward(w)` of a
+/// function passes its ANY_NUM input on to `F_ByteSum`'s ANY: 10 * 10 + 4.
+#[test]
+fn any_inputs_of_methods_and_any_inputs_passed_on() {
+    let trace = run_files(
+        &[fixture("any_method.st")],
+        2,
+        "Main.nA,Main.nB,Main.nLastClass,Main.nC,Main.nD,Main.rec.nLastSum,Main.rec.nEntries",
+    );
+    assert_eq!(column(&trace, "Main.nA"), [3041., 3045.]);
+    assert_eq!(column(&trace, "Main.nB"), [4033., 4037.]);
+    assert_eq!(column(&trace, "Main.nLastClass"), [26., 26.]);
+    assert_eq!(column(&trace, "Main.nC"), [3047., 3055.]);
+    assert_eq!(column(&trace, "Main.nD"), [104., 104.]);
+    assert_eq!(column(&trace, "Main.rec.nLastSum"), [21., 21.]);
+    assert_eq!(column(&trace, "Main.rec.nEntries"), [4., 8.]);
+}
+
+/// An ANY input passed on to a narrower family, and a literal given to a method's ANY input: one
+/// E1068 each.
+#[test]
+fn any_input_passed_on_to_a_narrower_family_is_e1068() {
+    let (code, lines) = check_files(&[(
+        "fwd.st",
+        "FUNCTION F_Int : DINT\nVAR_INPUT\n    i : ANY_INT;\nEND_VAR\nF_Int := i.diSize;\nEND_FUNCTION\n\
+         FUNCTION F_Num : DINT\nVAR_INPUT\n    x : ANY_NUM;\nEND_VAR\nF_Num := F_Int(x);\nEND_FUNCTION\n\
+         FUNCTION_BLOCK FB_A\nMETHOD M : DINT\nVAR_INPUT\n    v : ANY;\nEND_VAR\nM := v.diSize;\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+         PROGRAM Main\nVAR\n    a : FB_A;\n    r : DINT;\nEND_VAR\nr := F_Num(r) + a.M(5);\nEND_PROGRAM\n",
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        [
+            "fwd.st:11:16: error[E1068]: the input `i` of `F_Int` is ANY_INT: `x` (ANY_NUM) may hold a type it does not take",
+            "fwd.st:26:21: error[E1068]: the ANY input `V` of `FB_A.M` takes a variable",
+        ]
+    );
 }

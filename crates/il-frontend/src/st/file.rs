@@ -1632,21 +1632,29 @@ pub fn compile_pending(
         return;
     }
     // a FUNCTION's ANY inputs: their hidden size, class and address inputs (`any_inputs`), the
-    // address when the function's body reads `.pValue`
-    let reads_value = |at: Span| {
-        pending.iter().any(|b| {
-            b.file == at.file
-                && b.name_start == at.start as usize
-                && b.text.to_ascii_lowercase().contains(".pvalue")
-        })
+    // address when the function's body reads `.pValue` or passes the input on
+    let body_of = |at: Span| {
+        pending
+            .iter()
+            .find(|b| b.file == at.file && b.name_start == at.start as usize)
+            .map(|b| b.text.as_str())
     };
-    super::any_inputs::split_decls(units, &reads_value);
+    super::any_inputs::split_decls(units, &body_of);
     // methods exported one file each joined to their blocks
     let joined;
     let pending = match super::lone_members::attach(units, pending, diags) {
         Some(v) => {
             joined = v;
             &joined[..]
+        }
+        None => pending,
+    };
+    // a METHOD's ANY inputs split as a function's (`any_inputs`), before the methods join
+    let split_methods;
+    let pending = match super::any_inputs::split_method_inputs(pending) {
+        Some(v) => {
+            split_methods = v;
+            &split_methods[..]
         }
         None => pending,
     };
