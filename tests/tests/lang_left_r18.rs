@@ -22,6 +22,11 @@
 //!   n)`, `THIS^.Record(...)`), and an ANY input **passed on** to another ANY input (a function's
 //!   or a method's: its size, class and address go with it; a narrower family is E1068). Before:
 //!   E1003 "unknown type `ANY`" in a method, E1068 for an input passed on.
+//! - **A VAR_INST structured initial value of several fields** computed from the instance
+//!   (`cfg : ST_Cfg := (b := THIS^.x, a := 1, c := 2.5, d := THIS^.y * 2);`, an instance's several
+//!   inputs `(nIn := THIS^.x, nScale := 10)`): the computed fields are assigned once per instance,
+//!   the constant ones stay the declaration's. Two computed fields next to each other are one
+//!   E1075 (no room to write the assignment in place). Before: E0001 at each `^`.
 //! - **VAR_STAT in a METHOD** (CODESYS "VAR_STAT": in a method, one copy per method shared by all
 //!   the block's instances, kept between calls, initialised once): the global
 //!   `__STAT_<BLOCK>___M_<METHOD>_<NAME>`, in a `.st` block, a TwinCAT `<Method>` and a method file
@@ -365,5 +370,34 @@ fn any_input_passed_on_to_a_narrower_family_is_e1068() {
             "fwd.st:11:16: error[E1068]: the input `i` of `F_Int` is ANY_INT: `x` (ANY_NUM) may hold a type it does not take",
             "fwd.st:26:21: error[E1068]: the ANY input `V` of `FB_A.M` takes a variable",
         ]
+    );
+}
+
+// ------------------------------------------------------------------ 5. VAR_INST of several fields
+
+/// var_inst_fields.st: `cfg`'s `b` and `d` are computed from the instance (7 and 3 * 2), `a` and
+/// `c` are constants; the instance `child` gets `nIn` from the instance and `nScale` 10; all once
+/// per instance (the second call sees `a` incremented, `b` not computed again although `x`
+/// changed). `other` starts with `x := 20`.
+#[test]
+fn var_inst_structured_initial_value_of_several_fields() {
+    let trace = run_files(&[fixture("var_inst_fields.st")], 2, "Main.r,Main.rOther");
+    assert_eq!(column(&trace, "Main.r"), [107002708.5, 107003708.5]);
+    assert_eq!(column(&trace, "Main.rOther"), [120004008.5, 120005008.5]);
+}
+
+/// Two computed fields next to each other: one E1075 at the second, nothing else.
+#[test]
+fn two_computed_fields_next_to_each_other_are_one_e1075() {
+    let (code, lines) = check_files(&[(
+        "pair.st",
+        "TYPE ST_Pair : STRUCT a : INT; b : INT; END_STRUCT; END_TYPE\n\
+         FUNCTION_BLOCK FB_X\nVAR\n    x : INT := 7;\n    y : INT := 3;\nEND_VAR\n\
+         METHOD Get : INT\nVAR_INST\n    pair : ST_Pair := (a := THIS^.x, b := THIS^.y);\nEND_VAR\nGet := pair.a + pair.b;\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        ["pair.st:9:38: error[E1075]: this field's initial value is computed next to another one: ladderc cannot place its assignment"]
     );
 }
