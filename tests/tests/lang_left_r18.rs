@@ -27,6 +27,12 @@
 //!   inputs `(nIn := THIS^.x, nScale := 10)`): the computed fields are assigned once per instance,
 //!   the constant ones stay the declaration's. Two computed fields next to each other are one
 //!   E1075 (no room to write the assignment in place). Before: E0001 at each `^`.
+//! - **A string literal over several lines** in a declaration (`s : STRING(500) := 'User-Agent:
+//!   X<line break>Accept: */*';`, Keiji01/TwinCAT3's `FB_TestHTTP_HeaderAuth`): IEC 61131-3 has no
+//!   line break in a string literal (it is written `$N`), so it stays one E0003, but the literal
+//!   now ends at its closing quote (when that quote ends the declaration or statement, within 64
+//!   lines) and the rest of the file is read as written. Before: E0003 and a cascade (31 error
+//!   lines on that file, 2 after).
 //! - **VAR_STAT in a METHOD** (CODESYS "VAR_STAT": in a method, one copy per method shared by all
 //!   the block's instances, kept between calls, initialised once): the global
 //!   `__STAT_<BLOCK>___M_<METHOD>_<NAME>`, in a `.st` block, a TwinCAT `<Method>` and a method file
@@ -399,5 +405,36 @@ fn two_computed_fields_next_to_each_other_are_one_e1075() {
     assert_eq!(
         lines,
         ["pair.st:9:38: error[E1075]: this field's initial value is computed next to another one: ladderc cannot place its assignment"]
+    );
+}
+
+// ------------------------------------------------------------------ 6. a string over several lines
+
+/// One E0003 at the string written over three lines (its `*/` is no comment), then the file is
+/// read as written: the next error is the one of line 8.
+#[test]
+fn a_string_over_several_lines_is_one_error_and_the_file_goes_on() {
+    let (code, lines) = check_files(&[(
+        "header.st",
+        "PROGRAM Main\nVAR\n    n : INT;\n    sHeader : STRING(200) := 'User-Agent: X\nContent-Type: application/json\nAccept: */*';\n\
+         \x20   m : INT := 5;\n    k : INT := 1 2;\nEND_VAR\nn := m + LEN(sHeader);\nEND_PROGRAM\n",
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        [
+            "header.st:4:30: error[E0003]: string is not closed on its line",
+            "header.st:8:18: error[E0022]: an operator is missing in this constant expression",
+        ]
+    );
+    // a quote forgotten on one line is not read into the next statement
+    let (code, lines) = check_files(&[(
+        "forgot.st",
+        "PROGRAM Main\nVAR\n    s : STRING := 'abc;\n    t : STRING := 'def';\nEND_VAR\nEND_PROGRAM\n",
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines.first().map(String::as_str),
+        Some("forgot.st:3:19: error[E0003]: string is not closed on its line")
     );
 }
