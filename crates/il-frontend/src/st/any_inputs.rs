@@ -152,7 +152,7 @@ fn class_of(env: &Env, ty: &TypeRef) -> i128 {
 
 /// Splits each ANY-family VAR_INPUT of every FUNCTION into its hidden inputs (see the module
 /// documentation): size and class, and the address when the function's body (`body_of` its
-/// name's position) needs it ([`reads_address`]). The split inputs keep their order among the
+/// name's position) needs it (`reads_address`). The split inputs keep their order among the
 /// others.
 pub fn split_decls<'b>(
     units: &mut [CompilationUnit],
