@@ -33,6 +33,12 @@
 //!   now ends at its closing quote (when that quote ends the declaration or statement, within 64
 //!   lines) and the rest of the file is read as written. Before: E0003 and a cascade (31 error
 //!   lines on that file, 2 after).
+//! - **FB_init arguments on a METHOD's own instances** (`p : Randomizer(_low, _low + nWidth);` in
+//!   a method's VAR, stefanbesler/struckig's tests write 17 of them): CODESYS creates such an
+//!   instance again at each call, so the method starts with its `FB_init(TRUE, FALSE, args)` (after
+//!   the initial values computed before the declaration), formal or positional arguments. Before:
+//!   E0329 "this instance of `Randomizer` is not one ladderc initialises". A type without FB_init
+//!   stays E0329, now saying that the instance is a METHOD's.
 //! - **VAR_STAT in a METHOD** (CODESYS "VAR_STAT": in a method, one copy per method shared by all
 //!   the block's instances, kept between calls, initialised once): the global
 //!   `__STAT_<BLOCK>___M_<METHOD>_<NAME>`, in a `.st` block, a TwinCAT `<Method>` and a method file
@@ -436,5 +442,39 @@ fn a_string_over_several_lines_is_one_error_and_the_file_goes_on() {
     assert_eq!(
         lines.first().map(String::as_str),
         Some("forgot.st:3:19: error[E0003]: string is not closed on its line")
+    );
+}
+
+// ------------------------------------------------------------------ 4. FB_init on a method's instances
+
+/// method_fb_init.st: `Draw(nWidth)` declares `p : Randomizer(_low, _low + nWidth)` (positional,
+/// from the block's variable and the method's input) and `q : Randomizer(nMin := 100, nMax :=
+/// 101)`; both are created again at each call: `p` starts at 10 and steps by 3 within 10..10 +
+/// nWidth, `q` wraps to 101, and `p.nInits` is 1 at every call (a fresh instance, one FB_init).
+#[test]
+fn fb_init_arguments_of_a_methods_own_instances_run_at_each_call() {
+    let trace = run_files(
+        &[fixture("method_fb_init.st")],
+        2,
+        "Main.nFirst,Main.nSecond,Main.test.nTotal",
+    );
+    assert_eq!(column(&trace, "Main.nFirst"), [1013101., 1013101.]);
+    assert_eq!(column(&trace, "Main.nSecond"), [1011101., 1011101.]);
+    assert_eq!(column(&trace, "Main.test.nTotal"), [2., 4.]);
+}
+
+/// A method's instance of a block without FB_init given arguments: E0329 saying so.
+#[test]
+fn fb_init_arguments_for_a_block_without_fb_init_stay_e0329() {
+    let (code, lines) = check_files(&[(
+        "nofbinit.st",
+        "FUNCTION_BLOCK FB_Plain\nVAR\n    n : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n\
+         FUNCTION_BLOCK FB_User\nMETHOD M : INT\nVAR\n    p : FB_Plain(5);\nEND_VAR\nM := p.n;\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+         PROGRAM Main\nVAR\n    u : FB_User;\n    r : INT;\nEND_VAR\nr := u.M();\nEND_PROGRAM\n",
+    )]);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        ["nofbinit.st:9:17: error[E0329]: `FB_Plain` has no FB_init method to take these arguments"]
     );
 }

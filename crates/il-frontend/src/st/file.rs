@@ -126,6 +126,10 @@ pub struct PendingMethod {
     /// `n : INT := THIS^.nBase;`, TwinCAT): run once per instance, at the method's first call
     /// (`method_inits`).
     pub once: Vec<Range<usize>>,
+    /// The FB_init arguments of its own VAR / VAR_TEMP instances (`p : Randomizer(dist);`):
+    /// CODESYS creates such an instance again at each call of the method, FB_init included, so
+    /// the method starts with `p.FB_init(TRUE, FALSE, dist)` ([`lower_method`]).
+    pub local_inits: Vec<super::fb_init_args::DeclArgs>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -576,6 +580,7 @@ pub(super) fn pending_method(
         base,
         inst,
         once,
+        local_inits: Vec::new(),
     }
 }
 
@@ -1681,6 +1686,15 @@ pub fn compile_pending(
         })
         .filter_map(|pb| pb.pou_name(units).map(|n| n.key()))
         .collect();
+    // a METHOD's own instances declared with FB_init arguments: FB_init at each call
+    let localised;
+    let pending = match methods_take_local_args(pending, &declares_fb_init) {
+        Some(v) => {
+            localised = v;
+            &localised[..]
+        }
+        None => pending,
+    };
     // implicit enumerations (`state : (IDLE, RUN);`) named, so their values are typed by context
     let named;
     let pending = match super::implicit_enums::name_all(units, pending) {
@@ -1945,6 +1959,109 @@ pub fn add_method_vars(
     }
 }
 
+/// The pending bodies with the FB_init arguments of each METHOD's own VAR / VAR_TEMP instance
+/// (struckig's `p : Randomizer(_positionDist);`) moved from the file's list to the method's
+/// [`PendingMethod::local_inits`], when the instance's block declares an FB_init (`declares`,
+/// upper-case) and one list is given for it (not an array's); `None` when there is none.
+fn methods_take_local_args(
+    pending: &[PendingBody],
+    declares: &std::collections::HashSet<String>,
+) -> Option<Vec<PendingBody>> {
+    use crate::ast::{TypeRef, VarKind};
+    let local_of = |m: &PendingMethod, a: &super::fb_init_args::DeclArgs| {
+        a.elements.is_empty()
+            && declares.contains(&a.ty_name.to_ascii_uppercase())
+            && m.blocks
+                .iter()
+                .filter(|b| matches!(b.kind, VarKind::Local | VarKind::Temp))
+                .flat_map(|b| b.vars.iter())
+                .any(|v| {
+                    !m.inst.contains(&v.name.key())
+                        && matches!(&v.ty, TypeRef::Named(n) if n.span == a.ty)
+                })
+    };
+    let any = pending.iter().any(|pb| {
+        pb.fb_init_args.iter().any(|a| {
+            pending
+                .iter()
+                .flat_map(|q| &q.methods)
+                .any(|m| local_of(m, a))
+        })
+    });
+    if !any {
+        return None;
+    }
+    let mut out = pending.to_vec();
+    let mut taken = Vec::new();
+    for pb in out.iter_mut() {
+        pb.fb_init_args.retain(|a| {
+            let local = pending
+                .iter()
+                .flat_map(|q| &q.methods)
+                .any(|m| local_of(m, a));
+            if local {
+                taken.push(a.clone());
+            }
+            !local
+        });
+    }
+    for pb in out.iter_mut() {
+        for m in pb.methods.iter_mut() {
+            for a in &taken {
+                if local_of(m, a) {
+                    m.local_inits.push(a.clone());
+                }
+            }
+        }
+    }
+    Some(out)
+}
+
+/// `p.FB_init(TRUE, FALSE, args)` for each of `m`'s own instances declared with FB_init
+/// arguments ([`PendingMethod::local_inits`]), placed before the first statement written after
+/// the declaration (after the initial values computed before it): the instance is created again
+/// at each call, as CODESYS does, a fresh one (`bInitRetains := TRUE, bInCopyCode := FALSE`, as
+/// at a download).
+fn add_local_fb_inits(m: &PendingMethod, stmts: &mut Vec<super::ast::Stmt>) {
+    use super::ast::{Accessor, Arg, ArgDir, Expr, Place, PlaceBase, Stmt, StmtKind};
+    use crate::ast::{LiteralKind, TypeRef};
+    for a in m.local_inits.iter().rev() {
+        let Some(v) = m
+            .blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .find(|v| matches!(&v.ty, TypeRef::Named(n) if n.span == a.ty))
+        else {
+            continue;
+        };
+        let formal = a.args.iter().any(|x| x.name.is_some());
+        let system = |name: &str, value: bool| Arg {
+            name: formal.then(|| crate::ast::Ident::new(name, a.span)),
+            dir: ArgDir::Input,
+            value: Expr::literal(LiteralKind::Bool(value), a.span),
+            span: a.span,
+        };
+        let mut args = vec![system("bInitRetains", true), system("bInCopyCode", false)];
+        args.extend(a.args.iter().cloned());
+        let call = Stmt {
+            kind: StmtKind::Call {
+                callee: Place {
+                    base: PlaceBase::Name(v.name.clone()),
+                    accessors: vec![Accessor::Field(crate::ast::Ident::new("FB_init", a.span))],
+                    span: a.span,
+                },
+                args,
+            },
+            span: a.span,
+        };
+        let at = stmts
+            .iter()
+            .position(|s| s.span.start >= a.span.end)
+            .unwrap_or(stmts.len());
+        stmts.insert(at, call);
+    }
+}
+
 /// The hidden, never written variable holding the default value of method `m`'s result: the
 /// result is set to it when the method starts (a method's result, like a function's, does not keep
 /// the value of the previous call: IEC 61131-3 ed. 3, 6.6.1.2; CODESYS "Method").
@@ -2098,6 +2215,9 @@ fn lower_method_as(
     let text = this_shadowed(&m.text, p, &rename, &mut view, &mut rename_back);
     let mut stmts = super::parse_statements(file, &text, m.base, diags);
     super::method_inits::run_once(&mut stmts, &m.once, m.name.span);
+    if action.is_none() {
+        add_local_fb_inits(m, &mut stmts);
+    }
     let mut low = super::PouLowering::new(decls, &view);
     let mut body = low.statements(&stmts, diags);
     if let Some(t) = low.finish(m.name.span) {

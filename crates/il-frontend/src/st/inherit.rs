@@ -730,6 +730,7 @@ fn flatten_one(
                     base,
                     inst: Vec::new(),
                     once: Vec::new(),
+                    local_inits: Vec::new(),
                 });
                 files.push(file);
             }
