@@ -505,7 +505,7 @@ fn an_expression_as_initial_value_is_located_with_a_declaration_hint() {
     assert_eq!(code, Some(1));
     assert_eq!(
         lines,
-        vec!["init.st:4:16: error[E0022]: constant expression `b + 1`: `b` is not a constant declared before (hint: use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD and parentheses)"]
+        vec!["init.st:4:16: error[E0022]: constant expression `b + 1`: `b` is not a constant declared before (hint: use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type)"]
     );
     // in an IL body the operator keeps the IL hint
     let (_, lines) = check_text(
@@ -572,7 +572,7 @@ fn constant_expressions_that_cannot_be_evaluated_are_one_located_e0022_each() {
                END_VAR\n  e[0] := k;\nEND_PROGRAM\n";
     let (code, lines) = check_text("bad.st", src);
     assert_eq!(code, Some(1));
-    let hint = "(hint: use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD and parentheses)";
+    let hint = "(hint: use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type)";
     assert_eq!(
         lines,
         vec![

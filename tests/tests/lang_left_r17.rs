@@ -13,7 +13,8 @@
 //!   FUNCTION_BLOCK, FUNCTION or PROGRAM, one copy shared by every instance and every call, kept
 //!   between calls and initialised once; the block's methods see them. They are global variables
 //!   `__STAT_<POU>_<NAME>` (the name `--watch` takes). Before: E0011 and E0007 at each declaration,
-//!   E0015 at the next block. In a METHOD: one E1067 (read as VAR).
+//!   E0015 at the next block. In a PROPERTY accessor: one E1067 (read as VAR; a METHOD's compiles
+//!   since round 18).
 //! - **VAR_INST initial values computed from the instance** (TwinCAT): `nSeed : INT :=
 //!   THIS^.nBase * 10;`, `pSelf : POINTER TO FB_X := THIS;`, and an instance with one input given
 //!   `(ipList := THIS^.fbList)` (fisothemes/TwinCat-Dynamic-Collections' `_Values` accessor): computed
@@ -23,8 +24,8 @@
 //! - **A FUNCTION input of type ANY** (`ANY_NUM`, `ANY_INT`, `ANY_REAL`, `ANY_BIT`; CODESYS "ANY
 //!   and ANY_<type>"): the function reads the argument's `.diSize` and `.TypeClass` (compared with
 //!   `__SYSTEM.TYPE_CLASS.TYPE_INT` ...), calls pass any variable, element or field of the family,
-//!   formally or by position. `.pValue` and the input read as a value, a literal argument and an
-//!   argument outside the family are E1068 (a pointer to an unknown type is left: it needs pointer
+//!   formally or by position. The input read as a value, a literal argument and an argument
+//!   outside the family are E1068 (`.pValue` compiles since round 18; before it, a pointer to an unknown type was left: it needs pointer
 //!   indexing and casts). Before: E1003 "unknown type `ANY`".
 
 mod common;
@@ -201,19 +202,20 @@ fn var_stat_is_one_copy_for_every_instance_and_call() {
     assert_eq!(column(&trace, "__STAT_F_TOTAL_DTOTAL"), [5., 10., 15.]);
 }
 
-/// A VAR_STAT block of a METHOD (CODESYS shares it among the block's instances) is one E1067 at
-/// its keyword; nothing else is reported (the block is read as VAR).
+/// A VAR_STAT block of a PROPERTY accessor is one E1067 at its keyword; nothing else is reported
+/// (the block is read as VAR). A METHOD's VAR_STAT compiles since round 18
+/// (`tests/tests/lang_left_r18.rs`).
 #[test]
-fn var_stat_in_a_method_is_one_e1067() {
+fn var_stat_in_a_property_accessor_is_one_e1067() {
     let (code, errors) = check_files(&[(
         "counter.st",
-        "FUNCTION_BLOCK Counter\nMETHOD Next : INT\nVAR_STAT\n    nCalls : INT;\nEND_VAR\n\
-         nCalls := nCalls + 1;\nNext := nCalls;\nEND_METHOD\nEND_FUNCTION_BLOCK\n",
+        "FUNCTION_BLOCK Counter\nVAR\n    n : INT;\nEND_VAR\nPROPERTY Calls : INT\nGET\nVAR_STAT\n    nCalls : INT;\nEND_VAR\n\
+         nCalls := nCalls + 1;\nCalls := nCalls;\nEND_GET\nEND_PROPERTY\nEND_FUNCTION_BLOCK\n",
     )]);
     assert_eq!(code, Some(1));
     assert_eq!(
         errors,
-        ["counter.st:3:1: error[E1067]: VAR_STAT in a METHOD or PROPERTY accessor is not supported"]
+        ["counter.st:7:1: error[E1067]: VAR_STAT in a PROPERTY accessor is not supported"]
     );
 }
 
@@ -281,8 +283,9 @@ fn an_any_input_sees_the_size_and_class_of_its_argument() {
     assert_eq!(column(&trace, "Main.nBytes"), [10.]);
 }
 
-/// What an ANY input does not compile is one E1068 each: `.pValue` and the input read as a value
-/// (kevin00156's Clear hands `ADR(In)` and `SIZEOF(In)` to SysMemSet), once per input of the
+/// What an ANY input does not compile is one E1068 each: the input read as a value (kevin00156's
+/// Clear hands `ADR(In)` and `SIZEOF(In)` to SysMemSet; `.pValue` compiles since round 18,
+/// `tests/tests/lang_left_r18.rs`), once per input of the
 /// function however often it is used; a BOOL given to an ANY_NUM input; an expression given to an
 /// ANY input.
 #[test]
@@ -298,7 +301,7 @@ fn what_an_any_input_does_not_compile_is_one_e1068_each() {
     assert_eq!(
         errors,
         [
-            "any_bad.st:5:11: error[E1068]: `In` of `Clear` is an ANY input: its address (`.pValue`) and its value are not compiled",
+            "any_bad.st:6:17: error[E1068]: `In` of `Clear` is an ANY input: it is read through `.diSize`, `.TypeClass` and `.pValue`, not as a value",
             "any_bad.st:15:12: error[E1068]: the input `v` of `F_Num` is ANY_NUM: `BOOL` is not one of its types",
             "any_bad.st:16:12: error[E1068]: the ANY input `v` of `F_Num` takes a variable",
         ]

@@ -120,6 +120,7 @@ fn eval_at(e: &BoundExpr, consts: &Known, depth: u32) -> Result<ConstNum, String
         BoundExpr::Int(v, _) => Ok(ConstNum::Int(*v)),
         BoundExpr::Real(v, _) => Ok(ConstNum::Real(*v)),
         BoundExpr::Duration(v, _) => Ok(ConstNum::Duration(*v)),
+        BoundExpr::NoValue(why, _) => Err(why.clone()),
         BoundExpr::NotNumber(_) => {
             Err("only numbers and durations (T#...) make constant expressions".into())
         }

@@ -257,7 +257,16 @@ pub(crate) fn string_rest(
                 let ch_len = rest[i + 1..].chars().next().map_or(1, char::len_utf8);
                 i += 1 + ch_len;
             }
-            b'\n' | b'\r' => break,
+            b'\n' | b'\r' => {
+                // a string written over several lines (TwinCAT projects hold them: an HTTP
+                // header in a declaration): still an error (IEC 61131-3 writes a line break in a
+                // string as `$N`), but the token ends at its closing quote, so that the rest of
+                // the file is read as written, when that quote ends the declaration or statement
+                if let Some(end) = closed_on_a_later_line(&rest[i..], quote) {
+                    return (i + end, Err(LexError::UnterminatedString));
+                }
+                break;
+            }
             c if c == quote => {
                 let (value, errors) = literal::unescape(&rest[..i], wide);
                 for (s, e, why) in errors {
@@ -269,6 +278,40 @@ pub(crate) fn string_rest(
         }
     }
     (i, Err(LexError::UnterminatedString))
+}
+
+/// The most lines a string written over several lines may take to be read to its closing quote.
+const MAX_STRING_LINES: usize = 64;
+
+/// Where a string that reaches a line end (`rest` starts at that line end) is closed on a later
+/// line: the bytes to its closing quote, included, when the next unescaped `quote` comes within
+/// [`MAX_STRING_LINES`] lines, with no `;` before it, and only blanks and then a `;` after it (the
+/// end of the declaration or statement: `s : STRING := 'a<line break>b';`). `None` otherwise: an
+/// unclosed string then ends at its line, as before (a quote forgotten on one line is not read
+/// into the next statement).
+fn closed_on_a_later_line(rest: &str, quote: u8) -> Option<usize> {
+    let bytes = rest.as_bytes();
+    let mut lines = 0;
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'$' => i += 2,
+            b'\n' => {
+                lines += 1;
+                if lines > MAX_STRING_LINES {
+                    return None;
+                }
+                i += 1;
+            }
+            b';' => return None,
+            c if c == quote => {
+                let after = rest[i + 1..].trim_start_matches([' ', '\t']);
+                return after.starts_with(';').then_some(i + 1);
+            }
+            _ => i += 1,
+        }
+    }
+    None
 }
 
 /// A direct address `%IX0.1`, `%QW3`, `%MD10`, `%i0.0`, `%I*` (the whole token's text).

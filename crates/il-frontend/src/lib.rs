@@ -29,6 +29,7 @@ pub mod rename;
 pub mod sema;
 pub mod st;
 pub mod testgen;
+pub mod type_sizes;
 
 pub use diagnostics::{FileId, Span};
 

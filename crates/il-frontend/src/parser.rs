@@ -14,6 +14,7 @@ use crate::layout::Layout;
 use crate::lexer::{LineTok, TimeValue, Tok, Word};
 use diagnostics::{code, Code, Diagnostic, Diagnostics, FileId, Severity, Span};
 use lalrpop_util::{ErrorRecovery, ParseError};
+use std::collections::HashMap;
 
 #[allow(
     clippy::all,
@@ -176,6 +177,11 @@ pub struct Ctx<'s> {
     pub consts: Constants,
     /// The declarations being read are in a `CONSTANT` block (their integer values go to `consts`).
     pub in_constant_block: bool,
+    /// The types of the variables declared so far in the POU being read, by upper-case name: what
+    /// `SIZEOF(v)` in a constant expression measures ([`Ctx::size_of`]).
+    pub sized_vars: HashMap<String, TypeRef>,
+    /// The same for the global variables declared so far in the text (kept from POU to POU).
+    pub sized_globals: HashMap<String, TypeRef>,
 }
 
 /// An integer constant expression in an array bound or a string length, as parsed (see
@@ -196,6 +202,8 @@ pub enum BoundExpr {
     Neg(Box<BoundExpr>, Span),
     /// `a op b`, `op` one of `+ - * /` and `%` for MOD.
     Bin(u8, Box<BoundExpr>, Box<BoundExpr>),
+    /// An operand without a value, and why (`SIZEOF(FB_X)`: a function block's size).
+    NoValue(String, Span),
 }
 
 /// A bound expression is as deep as the user wrote it (`1+1+...`, `-(-(...))`): it is dropped with an
@@ -214,6 +222,7 @@ impl Drop for BoundExpr {
                 | BoundExpr::Real(..)
                 | BoundExpr::Duration(..)
                 | BoundExpr::NotNumber(_)
+                | BoundExpr::NoValue(..)
                 | BoundExpr::Name(_) => {}
             }
         }
@@ -710,6 +719,8 @@ impl<'s> Ctx<'s> {
         l: usize,
         r: usize,
     ) -> Pou {
+        // `SIZEOF(v)` of the next POU's declarations no more sees this one's variables
+        self.sized_vars.clear();
         // A FUNCTION without `: type` returns no value: TwinCAT compiles it (stefanbesler/struckig's
         // `FUNCTION INTERNAL Integrate`, whose results are its VAR_IN_OUTs), and the C backend
         // gives it a `void` C function; using its value is E0354 (`st::lower`).
@@ -826,6 +837,38 @@ impl<'s> Ctx<'s> {
         BoundExpr::Bin(b'+', Box::new(a), Box::new(b))
     }
 
+    /// `SIZEOF(x)` written at `l..r` in a constant expression, `x` at `a..b`: the bytes of the
+    /// variable `x` declared before (in this POU, or a global of the text), else of the data type
+    /// `x`, in the generated C ([`crate::type_sizes`]); `x` must be a name and the call `SIZEOF`.
+    pub fn size_of(&mut self, l: usize, a: usize, b: usize, r: usize) -> BoundExpr {
+        let span = self.span(l, r);
+        let call = self.text(l, a);
+        let call = call.trim_end_matches(|c: char| c == '(' || c.is_whitespace());
+        if !call.eq_ignore_ascii_case("SIZEOF") {
+            return BoundExpr::NoValue(
+                format!("`{call}(...)` is a call: only `SIZEOF(T)` and `SIZEOF(v)` are computed in a constant expression"),
+                span,
+            );
+        }
+        let name = self.text(a, b).trim().to_string();
+        let key = name.to_ascii_uppercase();
+        let layout = match self
+            .sized_vars
+            .get(&key)
+            .or_else(|| self.sized_globals.get(&key))
+        {
+            Some(ty) => crate::type_sizes::of_type(ty, &self.consts),
+            None => crate::type_sizes::of_type(
+                &TypeRef::Named(Ident::new(name.clone(), self.span(a, b))),
+                &self.consts,
+            ),
+        };
+        match layout {
+            Ok(l) => BoundExpr::Int(i128::from(l.size), span),
+            Err(why) => BoundExpr::NoValue(why, span),
+        }
+    }
+
     /// Evaluates a bound expression written at `l..r` (checked integer arithmetic; `/` truncates).
     /// A name that is not an integer constant declared before, a division by zero or an overflow is
     /// one E0022 (none if a missing operator was already reported there), and `None`.
@@ -899,9 +942,9 @@ impl<'s> Ctx<'s> {
             Err(why) => {
                 let text = self.text(l, r).trim().to_string();
                 let hint = if integers {
-                    "use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD and parentheses"
+                    "use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type"
                 } else {
-                    "use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD and parentheses"
+                    "use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type"
                 };
                 self.hint(
                     code::E0022,
@@ -925,6 +968,14 @@ impl<'s> Ctx<'s> {
         r: usize,
     ) -> VarBlock {
         self.in_constant_block = false;
+        if kind == VarKind::Global {
+            for v in &vars {
+                let name = v.name.name.to_ascii_uppercase();
+                if let Some(ty) = self.sized_vars.remove(&name) {
+                    self.sized_globals.insert(name, ty);
+                }
+            }
+        }
         VarBlock {
             name: None,
             kind,
@@ -965,6 +1016,10 @@ impl<'s> Ctx<'s> {
                 e,
                 "declare each located variable on its own line",
             );
+        }
+        for name in &names {
+            self.sized_vars
+                .insert(name.name.to_ascii_uppercase(), ty.clone());
         }
         if self.in_constant_block {
             let value = match &init {
@@ -1578,6 +1633,8 @@ pub(crate) fn run(
         diags: Vec::new(),
         consts: OTHER_FILES_CONSTANTS.with(|c| c.borrow().clone()),
         in_constant_block: false,
+        sized_vars: Default::default(),
+        sized_globals: Default::default(),
     };
     let result = grammar::StartParser::new().parse(&mut ctx, &mut layout);
     let mut all = std::mem::take(&mut layout.diags);
@@ -1704,6 +1761,8 @@ mod tests {
                 diags: Vec::new(),
                 consts: Default::default(),
                 in_constant_block: false,
+                sized_vars: Default::default(),
+                sized_globals: Default::default(),
             };
             ctx.recover(ErrorRecovery {
                 error: ParseError::UnrecognizedToken {
@@ -1974,6 +2033,8 @@ mod tests {
                 diags: Vec::new(),
                 consts: Default::default(),
                 in_constant_block: false,
+                sized_vars: Default::default(),
+                sized_globals: Default::default(),
             };
             ctx.recover(ErrorRecovery {
                 error: ParseError::UnrecognizedToken {

@@ -850,6 +850,7 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
                 base: t.base,
                 inst: Vec::new(),
                 once: Vec::new(),
+                local_inits: Vec::new(),
             });
         }
     }

@@ -582,7 +582,10 @@ impl Session {
             return;
         }
         let mut known: il_frontend::parser::Constants = offered.into_iter().flatten().collect();
-        let mut results: Vec<_> = waiting.iter().map(|_| None).collect();
+        // `SIZEOF(T)` in a bound: the sizes of every file's data types
+        known.extend(il_frontend::type_sizes::project_sizes(units.iter()));
+        let mut results: Vec<Option<(CompilationUnit, _, _)>> =
+            waiting.iter().map(|_| None).collect();
         for _ in 0..waiting.len() {
             let mut found = known.clone();
             for (w, result) in waiting.iter_mut().zip(results.iter_mut()) {
@@ -605,7 +608,23 @@ impl Session {
                 w.diags = local;
                 *result = Some(parsed);
             }
-            let grew = found.len() > known.len();
+            // the data types of the files parsed again may have sizes now
+            let latest: Vec<&CompilationUnit> = units
+                .iter()
+                .enumerate()
+                .map(|(k, u)| {
+                    waiting
+                        .iter()
+                        .zip(&results)
+                        .find(|(w, _)| w.unit == k)
+                        .and_then(|(_, r)| r.as_ref().map(|r| &r.0))
+                        .unwrap_or(u)
+                })
+                .collect();
+            found.extend(il_frontend::type_sizes::project_sizes(
+                latest.iter().copied(),
+            ));
+            let grew = found != known;
             known = found;
             if !grew
                 || waiting

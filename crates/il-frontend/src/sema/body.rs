@@ -829,7 +829,12 @@ impl Body<'_, '_> {
                     && matches!(&cr, super::body::Ty::Known(t)
                         if super::refs::substitutes(&self.a.model, t, &place, true));
                 if !down {
+                    // `ST __M_M_In__PVALUE`: a method's ANY input given its argument's address
+                    self.a.passing_any_address = matches!(o, crate::ast::Operand::Var(v)
+                        if v.accessors.is_empty()
+                            && crate::st::any_inputs::is_address_input(&v.base.name));
                     self.coerce_store(&cr, &place, o.span(), span);
+                    self.a.passing_any_address = false;
                 }
             }
             Op::S | Op::R => {

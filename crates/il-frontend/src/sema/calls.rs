@@ -884,7 +884,11 @@ impl Body<'_, '_> {
                 for ((t, s, source), p) in ins.into_iter().zip(inputs) {
                     let pname = p.name.clone();
                     let fname = pou.name.clone();
+                    self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                     self.coerce(&t, &p.ty, s, |b, from, to| {
+                        if b.a.passing_any_address {
+                            return any_address_refused(b, s, &pname, &fname, from);
+                        }
                         b.a.error(
                             code::E1012,
                             s,
@@ -893,6 +897,7 @@ impl Body<'_, '_> {
                         .label(format!("this is {from}"))
                         .hint(conversion_hint(from, to));
                     });
+                    self.a.passing_any_address = false;
                     rec.args.push((
                         ArgBinding {
                             param: p.name.clone(),
@@ -1029,7 +1034,11 @@ impl Body<'_, '_> {
                     let t = self.read_operand(o);
                     let s = o.span();
                     let (pname, tn) = (p.0.clone(), tname.clone());
+                    self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                     self.coerce(&t, &p.2, s, |b, from, to| {
+                        if b.a.passing_any_address {
+                            return any_address_refused(b, s, &pname, &tn, from);
+                        }
                         b.a.error(
                             code::E1012,
                             s,
@@ -1038,6 +1047,7 @@ impl Body<'_, '_> {
                         .label(format!("this is {from}"))
                         .hint(conversion_hint(from, to));
                     });
+                    self.a.passing_any_address = false;
                     if !p.0.is_empty() {
                         rec.args.push((
                             ArgBinding {
@@ -1191,11 +1201,16 @@ impl Body<'_, '_> {
                 let t = self.read_operand(&fa.value);
                 let s = fa.value.span();
                 let (pn, cn) = (pname.clone(), callee.to_string());
+                self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                 self.coerce(&t, &pty, s, |b, from, to| {
+                    if b.a.passing_any_address {
+                        return any_address_refused(b, s, &pn, &cn, from);
+                    }
                     b.a.error(code::E1012, s, format!("{pn} of {cn} is {to}, not {from}"))
                         .label(format!("this is {from}"))
                         .hint(conversion_hint(from, to));
                 });
+                self.a.passing_any_address = false;
                 rec.args.push((
                     ArgBinding {
                         param: pname,
@@ -1478,4 +1493,21 @@ fn is_hidden_varlen(p: &str) -> bool {
                         && up.len() > k + s.len()
                 })
             })
+}
+
+/// E1068 at an ANY input's argument whose bytes `.pValue` may not reach (`pname` is the hidden
+/// `In__PVALUE`, `crate::st::any_inputs`): its type holds a reference or a function block instance,
+/// which bytes written through a `POINTER TO BYTE` could forge.
+fn any_address_refused(b: &mut Body, at: Span, pname: &str, callee: &str, from: &str) {
+    let input = &pname[..pname
+        .len()
+        .saturating_sub(crate::st::any_inputs::VALUE.len())];
+    let of = from.strip_prefix("REF_TO ").unwrap_or(from);
+    b.a.error(
+        code::E1068,
+        at,
+        format!("`{input}.pValue` of `{callee}` cannot point into a {of}: it holds a reference or a function block instance"),
+    )
+    .label(format!("this is {of}"))
+    .hint("bytes written through `.pValue` could make a reference; pass a variable whose type holds numbers, strings, enumerations, arrays and structures of these");
 }

@@ -60,6 +60,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         operator_functions: [None; 32],
         wide_chars_at: std::collections::HashSet::new(),
         reinterpreting_pous: std::collections::HashSet::new(),
+        passing_any_address: false,
     };
     let pous = a.declare(units);
     a.check_containment();
@@ -114,6 +115,9 @@ pub(crate) struct Analyzer<'d> {
     /// The POUs where W1425 (a pointer stored into a pointer to another type) was reported: once
     /// per POU.
     pub(crate) reinterpreting_pous: std::collections::HashSet<PouId>,
+    /// The argument being checked is the hidden address of an ANY input (`In__PVALUE`,
+    /// `crate::st::any_inputs`): a `POINTER TO BYTE` to any argument by design, no W1425.
+    pub(crate) passing_any_address: bool,
 }
 
 impl Analyzer<'_> {

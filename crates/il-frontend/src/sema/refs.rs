@@ -143,7 +143,10 @@ impl Body<'_, '_> {
     /// same bytes as that type (CODESYS and TwinCAT convert pointers freely; IEC 61131-3 keeps
     /// references typed).
     pub(super) fn pointer_reinterpreted(&mut self, from: &Type, to: &Type, at: crate::Span) {
-        if self.a.silent || !self.a.reinterpreting_pous.insert(self.pou) {
+        if self.a.silent
+            || self.a.passing_any_address
+            || !self.a.reinterpreting_pous.insert(self.pou)
+        {
             return;
         }
         let (f, t) = (self.a.type_name(from), self.a.type_name(to));

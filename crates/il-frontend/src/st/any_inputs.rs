@@ -4,14 +4,17 @@
 //! argument's size in bytes), `In.TypeClass` (its class, compared with `__SYSTEM.TYPE_CLASS.TYPE_INT`
 //! ...) and `In.pValue` (its address).
 //!
-//! What ladderc compiles (safe and bounded: no pointer of an unknown type is made): `In.diSize`
-//! and `In.TypeClass`. The input is two hidden inputs of the function, `In__DISIZE : DINT` and
-//! `In__TYPECLASS : INT` ([`split_decls`]); a call `F(In := x)` (formal or positional) passes
-//! `SIZEOF(x)` and the class of `x`'s type ([`rewrite`], before the statement is lowered). A call
-//! may give any variable, element or field; an argument that is no variable (a literal, an
-//! expression) is E1068, as is an argument outside the input's family (`ANY_NUM` given a BOOL).
-//! `In.pValue`, and `In` read as a value (`ADR(In)`, `SIZEOF(In)`), are E1068 in the function: its
-//! use needs a pointer to an unknown type (left: pointer indexing and casts).
+//! What ladderc compiles (safe and bounded): `In.diSize`, `In.TypeClass` and `In.pValue`. The
+//! input is hidden inputs of the function, `In__DISIZE : DINT`, `In__TYPECLASS : INT` and, when
+//! the function's body reads `In.pValue` or passes `In` on to another ANY input,
+//! `In__PVALUE : POINTER TO BYTE` ([`split_decls`]; a METHOD's likewise, before it joins its
+//! block: [`split_method_inputs`]); a call
+//! `F(In := x)` (formal or positional) passes `SIZEOF(x)`, the class of `x`'s type and `ADR(x)`
+//! ([`rewrite`], before the statement is lowered), so `.pValue` is a bounded pointer to the
+//! argument's bytes (sema refuses, E0305, an argument with no address for the whole run, as `ADR`
+//! of it). A call may give any variable, element or field; an argument that is no variable (a
+//! literal, an expression) is E1068, as is an argument outside the input's family (`ANY_NUM` given
+//! a BOOL). `In` read as a value (`ADR(In)`, `SIZEOF(In)`) is E1068 in the function.
 //!
 //! Input: the parsed units (before the declarations are indexed), then each ST statement being
 //! lowered. Output: the functions' ANY inputs split; the statements rewritten.
@@ -30,6 +33,9 @@ use diagnostics::{code, Diagnostic, Diagnostics};
 pub const SIZE: &str = "__DISIZE";
 /// The hidden input holding an ANY input's type class.
 pub const CLASS: &str = "__TYPECLASS";
+/// The hidden input holding an ANY input's address, a bounded `POINTER TO BYTE` (declared only
+/// by a function whose body reads `.pValue`).
+pub const VALUE: &str = "__PVALUE";
 
 /// The generic types an input may have, with the elementary types each accepts (`None`: any type).
 fn family(ty: &str) -> Option<Option<&'static [&'static str]>> {
@@ -144,9 +150,14 @@ fn class_of(env: &Env, ty: &TypeRef) -> i128 {
     }
 }
 
-/// Splits each ANY-family VAR_INPUT of every FUNCTION into its two hidden inputs (see the module
-/// documentation). The split inputs keep their order among the others.
-pub fn split_decls(units: &mut [CompilationUnit]) {
+/// Splits each ANY-family VAR_INPUT of every FUNCTION into its hidden inputs (see the module
+/// documentation): size and class, and the address when the function's body (`body_of` its
+/// name's position) needs it (`reads_address`). The split inputs keep their order among the
+/// others.
+pub fn split_decls<'b>(
+    units: &mut [CompilationUnit],
+    body_of: &dyn Fn(crate::Span) -> Option<&'b str>,
+) {
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
         let LibraryElement::Pou(p) = item else {
             continue;
@@ -154,36 +165,116 @@ pub fn split_decls(units: &mut [CompilationUnit]) {
         if p.kind != PouKind::Function {
             continue;
         }
-        for b in p.var_blocks.iter_mut().filter(|b| b.kind == VarKind::Input) {
-            if !b.vars.iter().any(|v| is_any(&v.ty)) {
-                continue;
-            }
-            let mut vars = Vec::with_capacity(b.vars.len() + 2);
-            for v in std::mem::take(&mut b.vars) {
-                if !is_any(&v.ty) {
-                    vars.push(v);
-                    continue;
-                }
-                // (the class input's name ends with the generic type: `In__TYPECLASS_ANY_NUM`,
-                // which the calls check their argument against)
-                let generic = match &v.ty {
-                    TypeRef::Named(n) => n.name.to_ascii_uppercase(),
-                    _ => "ANY".into(),
-                };
-                for (suffix, ty) in [
-                    (SIZE.to_string(), "DINT"),
-                    (format!("{CLASS}_{generic}"), "INT"),
-                ] {
-                    let mut h = v.clone();
-                    h.name = Ident::new(format!("{}{suffix}", v.name.name), v.name.span);
-                    h.ty = TypeRef::Named(Ident::new(ty, v.name.span));
-                    h.init = None;
-                    vars.push(h);
-                }
-            }
-            b.vars = vars;
+        let body = body_of(p.name.span).unwrap_or("");
+        for b in p.var_blocks.iter_mut() {
+            split_block(b, body);
         }
     }
+}
+
+/// Whether the statements `text` need the address of the ANY input `name`: they read
+/// `name.pValue`, or pass `name` itself on (to another ANY input, which may read it).
+fn reads_address(text: &str, name: &str) -> bool {
+    let (text, name) = (text.to_ascii_lowercase(), name.to_ascii_lowercase());
+    let ident = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    let mut from = 0;
+    while let Some(k) = text[from..].find(&name) {
+        let at = from + k;
+        from = at + name.len();
+        if text[..at].chars().next_back().is_some_and(ident)
+            || text[from..].chars().next().is_some_and(ident)
+        {
+            continue;
+        }
+        let rest = text[from..].trim_start();
+        match rest.strip_prefix('.') {
+            Some(field) if field.trim_start().starts_with("pvalue") => return true,
+            Some(_) => {}
+            // `name` alone: passed on (or an error reported where it is used)
+            None => return true,
+        }
+    }
+    false
+}
+
+/// The pending bodies with each METHOD's ANY-family VAR_INPUTs split as a function's are
+/// ([`split_decls`]; the address when the method's statements need it), before the
+/// methods join their blocks (their hidden inputs become `__M_<METHOD>_<In>__DISIZE` ...);
+/// `None` when no method has one.
+pub fn split_method_inputs(
+    pending: &[super::file::PendingBody],
+) -> Option<Vec<super::file::PendingBody>> {
+    let has = |pb: &super::file::PendingBody| {
+        pb.methods.iter().any(|m| {
+            m.blocks
+                .iter()
+                .any(|b| b.kind == VarKind::Input && b.vars.iter().any(|v| is_any(&v.ty)))
+        })
+    };
+    if !pending.iter().any(has) {
+        return None;
+    }
+    let mut out = pending.to_vec();
+    for pb in out.iter_mut() {
+        for m in pb.methods.iter_mut() {
+            for b in m.blocks.iter_mut() {
+                split_block(b, &m.text);
+            }
+        }
+    }
+    Some(out)
+}
+
+/// Splits the ANY-family variables of `b`, a VAR_INPUT block, into their hidden inputs (the
+/// address of those whose address the statements `body` need: [`reads_address`]).
+fn split_block(b: &mut crate::ast::VarBlock, body: &str) {
+    if b.kind != VarKind::Input || !b.vars.iter().any(|v| is_any(&v.ty)) {
+        return;
+    }
+    let mut vars = Vec::with_capacity(b.vars.len() + 2);
+    for v in std::mem::take(&mut b.vars) {
+        if !is_any(&v.ty) {
+            vars.push(v);
+            continue;
+        }
+        // (the class input's name ends with the generic type: `In__TYPECLASS_ANY_NUM`, which
+        // the calls check their argument against)
+        let generic = match &v.ty {
+            TypeRef::Named(n) => n.name.to_ascii_uppercase(),
+            _ => "ANY".into(),
+        };
+        for (suffix, ty) in [
+            (SIZE.to_string(), "DINT"),
+            (format!("{CLASS}_{generic}"), "INT"),
+        ] {
+            let mut h = v.clone();
+            h.name = Ident::new(format!("{}{suffix}", v.name.name), v.name.span);
+            h.ty = TypeRef::Named(Ident::new(ty, v.name.span));
+            h.init = None;
+            vars.push(h);
+        }
+        if reads_address(body, &v.name.name) {
+            let mut h = v.clone();
+            let at = v.name.span;
+            h.name = Ident::new(format!("{}{VALUE}", v.name.name), at);
+            h.ty = TypeRef::Ref {
+                kind: crate::ast::RefKind::Pointer,
+                target: Box::new(TypeRef::Named(Ident::new("BYTE", at))),
+                span: at,
+            };
+            h.init = None;
+            vars.push(h);
+        }
+    }
+    b.vars = vars;
+}
+
+/// Whether `input` is the hidden address input of an ANY input (`In__PVALUE`).
+pub fn is_address_input(input: &str) -> bool {
+    input.len() > VALUE.len()
+        && input
+            .get(input.len() - VALUE.len()..)
+            .is_some_and(|end| end.eq_ignore_ascii_case(VALUE))
 }
 
 fn is_any(ty: &TypeRef) -> bool {
@@ -194,33 +285,108 @@ fn is_any(ty: &TypeRef) -> bool {
 /// (`ANY_NUM` ...) and the name of its hidden class input.
 type Input = (String, Option<(String, String)>);
 
-/// The inputs of function `f` in declaration order, each split ANY input once by its own name;
-/// `None` when `f` is no function with ANY inputs.
-fn inputs_of(env: &Env, f: &str) -> Option<Vec<Input>> {
+/// What a call with ANY inputs calls: its name for messages, its inputs in declaration order
+/// (each split ANY input once by its own name), and the names of its hidden address inputs
+/// (upper-case, as the call names them).
+struct Callee {
+    name: String,
+    inputs: Vec<Input>,
+    addresses: Vec<String>,
+}
+
+/// The inputs of function `f` (see [`Callee`]); `None` when `f` is no function with ANY inputs.
+fn inputs_of(env: &Env, f: &str) -> Option<Callee> {
     let i = env.decls.pou(f)?;
     if i.kind != PouKind::Function {
         return None;
     }
+    split_inputs(f, i.vars.iter().map(|(n, k, _)| (n.as_str(), *k)), "")
+}
+
+/// The callee of a call inside an expression, `F(...)`: a function, or a method of the block
+/// being lowered, with ANY inputs.
+fn callee_of_call(env: &Env, name: &Ident) -> Option<Callee> {
+    inputs_of(env, &name.name).or_else(|| {
+        let own = Place {
+            base: PlaceBase::Name(name.clone()),
+            accessors: Vec::new(),
+            span: name.span,
+        };
+        method_inputs_of(env, &own)
+    })
+}
+
+/// The inputs of the method a call statement's callee names (`inst.M`, or `M` / `THIS^.M` of the
+/// block being lowered), read from its block's hidden variables `__M_<M>_<input>`; `None` when it
+/// is no method with ANY inputs.
+fn method_inputs_of(env: &Env, callee: &Place) -> Option<Callee> {
+    let PlaceBase::Name(n) = &callee.base else {
+        return None;
+    };
+    let (block, method) = match callee.accessors.as_slice() {
+        [] if env.pou_kind == PouKind::FunctionBlock && env.var_type(n).is_none() => {
+            (env.pou_name.name.clone(), n)
+        }
+        [Accessor::Deref(_), Accessor::Field(m)] if n.is("THIS") => (env.pou_name.name.clone(), m),
+        [Accessor::Field(m)] => match env.var_type(n).map(|t| env.resolve(&t)) {
+            Some(TypeRef::Named(b)) => (b.name, m),
+            _ => return None,
+        },
+        _ => return None,
+    };
+    let i = env.decls.pou(&block)?;
+    if i.kind != PouKind::FunctionBlock {
+        return None;
+    }
+    let prefix = crate::actions::method_var(&method.name, "");
+    split_inputs(
+        &format!("{block}.{}", method.name),
+        i.vars.iter().map(|(n, k, _)| (n.as_str(), *k)),
+        &prefix,
+    )
+}
+
+/// [`Callee`] of the inputs among `vars` whose names start with `prefix` (upper-case compared),
+/// the prefix left out; `None` when none of them is a split ANY input.
+fn split_inputs<'v>(
+    name: &str,
+    vars: impl Iterator<Item = (&'v str, VarKind)>,
+    prefix: &str,
+) -> Option<Callee> {
     let mut out: Vec<Input> = Vec::new();
+    let mut addresses = Vec::new();
     let mut any = false;
-    for (name, kind, _) in &i.vars {
-        if *kind != VarKind::Input {
+    let prefix = prefix.to_ascii_uppercase();
+    for (name, kind) in vars {
+        if kind != VarKind::Input {
             continue;
         }
         let up = name.to_ascii_uppercase();
+        let Some(up) = up.strip_prefix(prefix.as_str()) else {
+            continue;
+        };
+        let name = &name[prefix.len()..];
         if up.ends_with(SIZE) {
+            continue;
+        }
+        if up.ends_with(VALUE) {
+            addresses.push(up.to_string());
             continue;
         }
         match up.find(CLASS) {
             Some(k) if k > 0 => {
                 let generic = up[k + CLASS.len()..].trim_start_matches('_').to_string();
-                out.push((name[..k].to_string(), Some((generic, name.clone()))));
+                out.push((name[..k].to_string(), Some((generic, name.to_string()))));
                 any = true;
             }
-            _ => out.push((name.clone(), None)),
+            _ => out.push((name.to_string(), None)),
         }
     }
-    any.then_some(out)
+    any.then(|| Callee {
+        name: name.to_string(),
+        inputs: out,
+        addresses,
+    })
 }
 
 /// The hidden class input of the ANY input `base` among the POU's variables (upper-case keys).
@@ -229,13 +395,13 @@ fn class_var(env: &Env, base: &str) -> Option<String> {
     env.vars.keys().find(|k| k.starts_with(&prefix)).cloned()
 }
 
-/// Whether some FUNCTION of the project has an ANY input (else [`rewrite`] has nothing to do).
+/// Whether some FUNCTION or METHOD of the project has an ANY input (else [`rewrite`] has nothing
+/// to do).
 pub fn in_project(decls: &super::Declarations) -> bool {
     decls.pous.values().any(|i| {
-        i.kind == PouKind::Function
-            && i.vars
-                .iter()
-                .any(|(n, k, _)| *k == VarKind::Input && n.to_ascii_uppercase().ends_with(SIZE))
+        i.vars
+            .iter()
+            .any(|(n, k, _)| *k == VarKind::Input && n.to_ascii_uppercase().ends_with(SIZE))
     })
 }
 
@@ -252,9 +418,12 @@ fn needs(env: &Env, s: &Stmt) -> bool {
         StmtKind::Call { callee, args } => {
             places.push(callee);
             if let PlaceBase::Name(n) = &callee.base {
-                if inputs_of(env, &n.name).is_some() {
+                if callee.accessors.is_empty() && inputs_of(env, &n.name).is_some() {
                     return true;
                 }
+            }
+            if method_inputs_of(env, callee).is_some() {
+                return true;
             }
             stack.extend(args.iter().map(|a| &a.value));
         }
@@ -314,7 +483,7 @@ fn needs(env: &Env, s: &Stmt) -> bool {
                 stack.push(right);
             }
             ExprKind::Call { name, args } => {
-                if inputs_of(env, &name.name).is_some() {
+                if callee_of_call(env, name).is_some() {
                     return true;
                 }
                 stack.extend(args.iter().map(|a| &a.value));
@@ -351,11 +520,12 @@ pub fn rewrite(
         }
         StmtKind::Call { callee, args } => {
             r.place(callee);
-            if let PlaceBase::Name(n) = &callee.base {
-                if callee.accessors.is_empty() {
-                    let n = n.clone();
-                    r.call(&n, args);
-                }
+            let function = match &callee.base {
+                PlaceBase::Name(n) if callee.accessors.is_empty() => inputs_of(env, &n.name),
+                _ => None,
+            };
+            if let Some(c) = function.or_else(|| method_inputs_of(env, callee)) {
+                r.call(&c, args);
             }
             for a in args.iter_mut() {
                 r.expr(&mut a.value);
@@ -432,8 +602,9 @@ impl Rewrite<'_, '_> {
                 self.expr(right);
             }
             ExprKind::Call { name, args } => {
-                let n = name.clone();
-                self.call(&n, args);
+                if let Some(c) = callee_of_call(self.env, name) {
+                    self.call(&c, args);
+                }
                 for a in args.iter_mut() {
                     self.expr(&mut a.value);
                 }
@@ -490,9 +661,13 @@ impl Rewrite<'_, '_> {
         let Some(class) = class_var(self.env, &n.name) else {
             return;
         };
+        let value = format!("{}{VALUE}", n.key());
         let field = match p.accessors.first() {
             Some(Accessor::Field(f)) if f.is("diSize") => size,
             Some(Accessor::Field(f)) if f.is("TypeClass") => class,
+            Some(Accessor::Field(f)) if f.is("pValue") && self.env.vars.contains_key(&value) => {
+                value
+            }
             _ => {
                 // once per input of the function (every use is dropped, the first reported)
                 let at = match p.accessors.first() {
@@ -500,7 +675,7 @@ impl Rewrite<'_, '_> {
                     _ => p.span,
                 };
                 let msg = format!(
-                    "`{}` of `{}` is an ANY input: its address (`.pValue`) and its value are not compiled",
+                    "`{}` of `{}` is an ANY input: it is read through `.diSize`, `.TypeClass` and `.pValue`, not as a value",
                     n.name, self.env.pou_name.name
                 );
                 self.failed = true;
@@ -514,8 +689,8 @@ impl Rewrite<'_, '_> {
                 self.refuse(
                     at,
                     msg,
-                    "reads the argument through a pointer of an unknown type",
-                    "an ANY input is read through `.diSize` and `.TypeClass` here (CODESYS's __SYSTEM.AnyType); give the function an input of the argument's own type (a VAR_IN_OUT to change it) to read its value",
+                    "the argument's value has no type here",
+                    "read its bytes through `.pValue` (a POINTER TO BYTE to the argument: `In.pValue[i]`, `MEMCPY(ADR(buf), In.pValue, In.diSize)`), or give the function an input of the argument's own type (a VAR_IN_OUT to change it)",
                 );
                 return;
             }
@@ -525,11 +700,82 @@ impl Rewrite<'_, '_> {
         self.changed = true;
     }
 
-    /// A call of a function with ANY inputs: each argument of one replaced by its size and class.
-    fn call(&mut self, f: &Ident, args: &mut Vec<Arg>) {
-        let Some(inputs) = inputs_of(self.env, &f.name) else {
-            return;
+    /// The hidden arguments that pass the caller's own ANY input `place` (a bare name) on to the
+    /// ANY input `input` of `f`: its size, class and address inputs. `None` when `place` is no ANY
+    /// input of the caller; an empty list after an E1068 (a family the target does not take, or
+    /// an address the caller does not have: its body does not read `.pValue`).
+    fn forwarded(
+        &mut self,
+        f: &Callee,
+        place: &Place,
+        input: &str,
+        generic: &str,
+        class_input: &str,
+    ) -> Option<Vec<(String, Expr)>> {
+        let PlaceBase::Name(n) = &place.base else {
+            return None;
         };
+        if !place.accessors.is_empty() || self.env.vars.contains_key(&n.key()) {
+            return None;
+        }
+        let size = format!("{}{SIZE}", n.key());
+        if !self.env.vars.contains_key(&size) {
+            return None;
+        }
+        let class = class_var(self.env, &n.name)?;
+        let own = class[n.key().len() + CLASS.len()..].trim_start_matches('_');
+        let fits = match (family(generic).flatten(), family(own).flatten()) {
+            (None, _) => true,
+            (Some(to), Some(from)) => from.iter().all(|t| to.contains(t)),
+            (Some(_), None) => false,
+        };
+        if !fits {
+            self.refuse(
+                place.span,
+                format!(
+                    "the input `{input}` of `{}` is {generic}: `{}` ({own}) may hold a type it does not take",
+                    f.name, n.name
+                ),
+                "an ANY input passed on",
+                &format!("pass it to an input of {own} or a wider family (ANY)"),
+            );
+            return Some(Vec::new());
+        }
+        let var = |name: String| Expr {
+            kind: ExprKind::Place(Place {
+                base: PlaceBase::Name(Ident::new(name, n.span)),
+                accessors: Vec::new(),
+                span: n.span,
+            }),
+            span: n.span,
+        };
+        let mut hidden = vec![
+            (format!("{input}{SIZE}"), var(size)),
+            (class_input.to_string(), var(class)),
+        ];
+        let value_input = format!("{input}{VALUE}");
+        if f.addresses.contains(&value_input.to_ascii_uppercase()) {
+            let own_value = format!("{}{VALUE}", n.key());
+            if !self.env.vars.contains_key(&own_value) {
+                self.refuse(
+                    place.span,
+                    format!(
+                        "`{}` reads `{input}.pValue`: `{}` of `{}` has no address to pass on",
+                        f.name, n.name, self.env.pou_name.name
+                    ),
+                    "an ANY input passed on",
+                    "read `.pValue` of the input in the caller too (its address is passed only to a body that reads it), or pass a variable",
+                );
+                return Some(Vec::new());
+            }
+            hidden.push((value_input, var(own_value)));
+        }
+        Some(hidden)
+    }
+
+    /// A call of a function with ANY inputs: each argument of one replaced by its size and class.
+    fn call(&mut self, f: &Callee, args: &mut Vec<Arg>) {
+        let inputs = &f.inputs;
         let formal = args.iter().any(|a| a.name.is_some());
         let mut out = Vec::with_capacity(args.len() + 2);
         for (k, a) in std::mem::take(args).into_iter().enumerate() {
@@ -560,6 +806,16 @@ impl Rewrite<'_, '_> {
                 out.push(a);
                 continue;
             };
+            if let Some(hidden) = self.forwarded(f, place, &input, &generic, &class_input) {
+                // an ANY input of the caller passed on: its own hidden inputs
+                out.extend(hidden.into_iter().map(|(name, value)| Arg {
+                    name: Some(Ident::new(name, a.span)),
+                    dir: ArgDir::Input,
+                    value,
+                    span: a.span,
+                }));
+                continue;
+            }
             let Some(ty) = (self.type_of)(&a.value) else {
                 // (an undeclared name: its own error comes from the lowering of the argument)
                 out.push(a);
@@ -603,7 +859,29 @@ impl Rewrite<'_, '_> {
                 span,
             };
             let class = Expr::literal(LiteralKind::Int(class_of(self.env, &ty)), span);
-            for (name, value) in [(format!("{input}{SIZE}"), size), (class_input, class)] {
+            let mut hidden = vec![(format!("{input}{SIZE}"), size), (class_input, class)];
+            // `.pValue`: the argument's address, bounded by the argument (a variable, an element
+            // or a field: sema refuses, E0305, what has no address for the whole run)
+            let value_input = format!("{input}{VALUE}");
+            if f.addresses.contains(&value_input.to_ascii_uppercase()) {
+                let address = Expr {
+                    kind: ExprKind::Call {
+                        name: Ident::new("ADR", span),
+                        args: vec![Arg {
+                            name: None,
+                            dir: ArgDir::Input,
+                            value: Expr {
+                                kind: ExprKind::Place(place.clone()),
+                                span: a.value.span,
+                            },
+                            span,
+                        }],
+                    },
+                    span,
+                };
+                hidden.push((value_input, address));
+            }
+            for (name, value) in hidden {
                 out.push(Arg {
                     name: Some(Ident::new(name, span)),
                     dir: ArgDir::Input,

@@ -348,7 +348,18 @@ pub fn add_init_calls(
             // (an unknown type, or a block not compiled: their own error is reported)
             continue;
         }
-        let message = if has {
+        // a METHOD's own instance (struckig's `p : Randomizer(_positionDist);`): CODESYS makes
+        // it again, FB_init included, at each call of the method
+        let in_method = pending.iter().flat_map(|pb| &pb.methods).any(|m| {
+            m.blocks.iter().any(|b| {
+                b.span.file == a.span.file
+                    && b.span.start <= a.span.start
+                    && a.span.end <= b.span.end
+            })
+        });
+        let message = if has && in_method {
+            format!("this instance of `{}` is a METHOD's variable: CODESYS and TwinCAT create it again, FB_init with these arguments, at each call; ladderc initialises only the instances in programs, function blocks and global lists", a.ty_name)
+        } else if has {
             format!("this instance of `{}` is not one ladderc initialises (only the instances in programs, function blocks and global lists are)", a.ty_name)
         } else {
             format!(
@@ -356,7 +367,14 @@ pub fn add_init_calls(
                 a.ty_name
             )
         };
-        diags.push(unplaced(a, message));
+        let mut d = unplaced(a, message);
+        if has && in_method {
+            d = d.with_hint(format!(
+                "declare the instance in the block's VAR (initialised once, with its FB_init), or call its FB_init in the method: `inst.FB_init(bInitRetains := FALSE, bInCopyCode := FALSE, ...)`; `{}`'s FB_init takes the arguments after those two",
+                a.ty_name
+            ));
+        }
+        diags.push(d);
     }
     if bodies.is_empty() && globals.is_empty() {
         return;

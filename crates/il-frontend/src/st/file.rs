@@ -126,6 +126,10 @@ pub struct PendingMethod {
     /// `n : INT := THIS^.nBase;`, TwinCAT): run once per instance, at the method's first call
     /// (`method_inits`).
     pub once: Vec<Range<usize>>,
+    /// The FB_init arguments of its own VAR / VAR_TEMP instances (`p : Randomizer(dist);`):
+    /// CODESYS creates such an instance again at each call of the method, FB_init included, so
+    /// the method starts with `p.FB_init(TRUE, FALSE, dist)` ([`lower_method`]).
+    pub local_inits: Vec<super::fb_init_args::DeclArgs>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -594,6 +598,7 @@ pub(super) fn pending_method(
         base,
         inst,
         once,
+        local_inits: Vec::new(),
     }
 }
 
@@ -1119,7 +1124,7 @@ pub fn parse_text(
         .with_primary_label(format!("this {} has no block", kind.to_ascii_lowercase()))
         .with_hint("give the block's file on the same command line, named so that this file's name is `Block.Member.st`, or move this text before the block's END_FUNCTION_BLOCK");
         // joined to its block once every file is read (`lone_members`)
-        match super::lone_members::read(file, src, first.start, &mut references, diags) {
+        match super::lone_members::read(file, src, first.start, &stat_at, &mut references, diags) {
             Some(methods) => pending.push(PendingBody {
                 methods,
                 lone: Some(Box::new(super::lone_members::LoneMembers {
@@ -1241,6 +1246,7 @@ pub fn parse_text(
                 .iter()
                 .map(|m| {
                     let mut pm = pending_method(file, src, m, diags);
+                    super::var_stat::name_method_blocks(&mut pm, &stat_at);
                     references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
                     pm
                 })
@@ -1454,6 +1460,7 @@ pub fn parse_text(
                         _ => &mut *diags,
                     };
                     let mut pm = pending_method(file, src, m, sink);
+                    super::var_stat::name_method_blocks(&mut pm, &stat_at);
                     references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
                     methods.push(pm);
                     blank(&mut body, m.whole.clone());
@@ -1632,8 +1639,15 @@ pub fn compile_pending(
         super::var_stat::hoist(units);
         return;
     }
-    // a FUNCTION's ANY inputs: their hidden size and class inputs (`any_inputs`)
-    super::any_inputs::split_decls(units);
+    // a FUNCTION's ANY inputs: their hidden size, class and address inputs (`any_inputs`), the
+    // address when the function's body reads `.pValue` or passes the input on
+    let body_of = |at: Span| {
+        pending
+            .iter()
+            .find(|b| b.file == at.file && b.name_start == at.start as usize)
+            .map(|b| b.text.as_str())
+    };
+    super::any_inputs::split_decls(units, &body_of);
     // methods exported one file each joined to their blocks
     let joined;
     let pending = match super::lone_members::attach(units, pending, diags) {
@@ -1649,6 +1663,15 @@ pub fn compile_pending(
         Some(v) => {
             split = v;
             &split[..]
+        }
+        None => pending,
+    };
+    // a METHOD's ANY inputs split as a function's (`any_inputs`), before the methods join
+    let split_methods;
+    let pending = match super::any_inputs::split_method_inputs(pending) {
+        Some(v) => {
+            split_methods = v;
+            &split_methods[..]
         }
         None => pending,
     };
@@ -1675,6 +1698,15 @@ pub fn compile_pending(
         })
         .filter_map(|pb| pb.pou_name(units).map(|n| n.key()))
         .collect();
+    // a METHOD's own instances declared with FB_init arguments: FB_init at each call
+    let localised;
+    let pending = match methods_take_local_args(pending, &declares_fb_init) {
+        Some(v) => {
+            localised = v;
+            &localised[..]
+        }
+        None => pending,
+    };
     // implicit enumerations (`state : (IDLE, RUN);`) named, so their values are typed by context
     let named;
     let pending = match super::implicit_enums::name_all(units, pending) {
@@ -1859,6 +1891,7 @@ pub fn add_method_vars(
     let mut in_outs = Vec::new();
     let mut defaults = Vec::new();
     let mut kept = Vec::new();
+    let mut stat = Vec::new();
     for m in methods {
         if let Some(r) = &m.ret {
             let mut v = r.clone();
@@ -1891,11 +1924,18 @@ pub fn add_method_vars(
                     continue;
                 }
             };
+            let is_stat = b
+                .name
+                .as_ref()
+                .is_some_and(|n| n.name == super::var_stat::MARK);
             for v in &b.vars {
                 let mut v = v.clone();
                 let inst = m.inst.contains(&v.name.key());
                 v.name.name = method_var(&m.name.name, &v.name.name);
-                if inst {
+                if is_stat {
+                    // VAR_STAT: one copy per method, shared by every instance (`var_stat::hoist`)
+                    stat.push(v);
+                } else if inst {
                     // VAR_INST: a variable of the instance, initialised once with it
                     kept.push(v);
                 } else {
@@ -1905,17 +1945,22 @@ pub fn add_method_vars(
         }
     }
     let span = p.span;
-    for (kind, vars) in [
-        (VarKind::Input, inputs),
-        (VarKind::Output, outputs),
-        (VarKind::InOut, in_outs),
-        (VarKind::Temp, temps),
-        (VarKind::Local, defaults),
-        (VarKind::Local, kept),
+    for (kind, vars, name) in [
+        (VarKind::Input, inputs, None),
+        (VarKind::Output, outputs, None),
+        (VarKind::InOut, in_outs, None),
+        (VarKind::Temp, temps, None),
+        (VarKind::Local, defaults, None),
+        (VarKind::Local, kept, None),
+        (
+            VarKind::Local,
+            stat,
+            Some(crate::ast::Ident::new(super::var_stat::MARK, span)),
+        ),
     ] {
         if !vars.is_empty() {
             p.var_blocks.push(VarBlock {
-                name: None,
+                name,
                 kind,
                 constant: false,
                 retain: false,
@@ -1923,6 +1968,109 @@ pub fn add_method_vars(
                 span,
             });
         }
+    }
+}
+
+/// The pending bodies with the FB_init arguments of each METHOD's own VAR / VAR_TEMP instance
+/// (struckig's `p : Randomizer(_positionDist);`) moved from the file's list to the method's
+/// [`PendingMethod::local_inits`], when the instance's block declares an FB_init (`declares`,
+/// upper-case) and one list is given for it (not an array's); `None` when there is none.
+fn methods_take_local_args(
+    pending: &[PendingBody],
+    declares: &std::collections::HashSet<String>,
+) -> Option<Vec<PendingBody>> {
+    use crate::ast::{TypeRef, VarKind};
+    let local_of = |m: &PendingMethod, a: &super::fb_init_args::DeclArgs| {
+        a.elements.is_empty()
+            && declares.contains(&a.ty_name.to_ascii_uppercase())
+            && m.blocks
+                .iter()
+                .filter(|b| matches!(b.kind, VarKind::Local | VarKind::Temp))
+                .flat_map(|b| b.vars.iter())
+                .any(|v| {
+                    !m.inst.contains(&v.name.key())
+                        && matches!(&v.ty, TypeRef::Named(n) if n.span == a.ty)
+                })
+    };
+    let any = pending.iter().any(|pb| {
+        pb.fb_init_args.iter().any(|a| {
+            pending
+                .iter()
+                .flat_map(|q| &q.methods)
+                .any(|m| local_of(m, a))
+        })
+    });
+    if !any {
+        return None;
+    }
+    let mut out = pending.to_vec();
+    let mut taken = Vec::new();
+    for pb in out.iter_mut() {
+        pb.fb_init_args.retain(|a| {
+            let local = pending
+                .iter()
+                .flat_map(|q| &q.methods)
+                .any(|m| local_of(m, a));
+            if local {
+                taken.push(a.clone());
+            }
+            !local
+        });
+    }
+    for pb in out.iter_mut() {
+        for m in pb.methods.iter_mut() {
+            for a in &taken {
+                if local_of(m, a) {
+                    m.local_inits.push(a.clone());
+                }
+            }
+        }
+    }
+    Some(out)
+}
+
+/// `p.FB_init(TRUE, FALSE, args)` for each of `m`'s own instances declared with FB_init
+/// arguments ([`PendingMethod::local_inits`]), placed before the first statement written after
+/// the declaration (after the initial values computed before it): the instance is created again
+/// at each call, as CODESYS does, a fresh one (`bInitRetains := TRUE, bInCopyCode := FALSE`, as
+/// at a download).
+fn add_local_fb_inits(m: &PendingMethod, stmts: &mut Vec<super::ast::Stmt>) {
+    use super::ast::{Accessor, Arg, ArgDir, Expr, Place, PlaceBase, Stmt, StmtKind};
+    use crate::ast::{LiteralKind, TypeRef};
+    for a in m.local_inits.iter().rev() {
+        let Some(v) = m
+            .blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .find(|v| matches!(&v.ty, TypeRef::Named(n) if n.span == a.ty))
+        else {
+            continue;
+        };
+        let formal = a.args.iter().any(|x| x.name.is_some());
+        let system = |name: &str, value: bool| Arg {
+            name: formal.then(|| crate::ast::Ident::new(name, a.span)),
+            dir: ArgDir::Input,
+            value: Expr::literal(LiteralKind::Bool(value), a.span),
+            span: a.span,
+        };
+        let mut args = vec![system("bInitRetains", true), system("bInCopyCode", false)];
+        args.extend(a.args.iter().cloned());
+        let call = Stmt {
+            kind: StmtKind::Call {
+                callee: Place {
+                    base: PlaceBase::Name(v.name.clone()),
+                    accessors: vec![Accessor::Field(crate::ast::Ident::new("FB_init", a.span))],
+                    span: a.span,
+                },
+                args,
+            },
+            span: a.span,
+        };
+        let at = stmts
+            .iter()
+            .position(|s| s.span.start >= a.span.end)
+            .unwrap_or(stmts.len());
+        stmts.insert(at, call);
     }
 }
 
@@ -2079,6 +2227,9 @@ fn lower_method_as(
     let text = this_shadowed(&m.text, p, &rename, &mut view, &mut rename_back);
     let mut stmts = super::parse_statements_of(file, &text, m.base, p, diags);
     super::method_inits::run_once(&mut stmts, &m.once, m.name.span);
+    if action.is_none() {
+        add_local_fb_inits(m, &mut stmts);
+    }
     let mut low = super::PouLowering::new(decls, &view);
     let mut body = low.statements(&stmts, diags);
     if let Some(t) = low.finish(m.name.span) {

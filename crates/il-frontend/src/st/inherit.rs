@@ -731,6 +731,7 @@ fn flatten_one(
                     base,
                     inst: Vec::new(),
                     once: Vec::new(),
+                    local_inits: Vec::new(),
                 });
                 files.push(file);
             }

@@ -52,13 +52,15 @@ impl LoneMembers {
 }
 
 /// Reads the members of a file from the keyword at `start` (`METHOD` or `PROPERTY`) to the end of
-/// `src`: the methods (and properties' accessors, as methods) as the block's own would be read.
+/// `src`: the methods (and properties' accessors, as methods) as the block's own would be read (a
+/// method's `VAR_STAT` blocks are those whose keyword is at one of `stat_at`).
 /// `END_METHOD` / `END_PROPERTY` may be missing at the end of the file (the export scripts leave it
 /// out). `None` when nothing could be read (the caller reports E1063 at once).
 pub(super) fn read(
     file: crate::FileId,
     src: &str,
     start: usize,
+    stat_at: &[usize],
     refs: &mut super::refs::RefTypes,
     diags: &mut Diagnostics,
 ) -> Option<Vec<PendingMethod>> {
@@ -82,6 +84,7 @@ pub(super) fn read(
     let mut methods = Vec::new();
     for m in super::file::scan_methods(&text, members) {
         let mut pm = super::file::pending_method(file, &text, &m, diags);
+        super::var_stat::name_method_blocks(&mut pm, stat_at);
         refs.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
         methods.push(pm);
     }

@@ -35,8 +35,8 @@ pub const ONCE_FLAG: &str = "__INST_INIT_DONE";
 pub const INIT_PREFIX: &str = "__INSTINIT_";
 
 /// See the module documentation: (declarations, assignments, ranges in the text of the VAR_INST
-/// assignments) or `None`.
-pub(super) fn split(decls: &str) -> Option<(String, String, Vec<Range<usize>>)> {
+/// assignments, fields without room) or `None`.
+pub(super) fn split(decls: &str) -> Option<Split> {
     let toks = lex(decls).0;
     let word = |k: usize| decls.get(toks[k].range.clone()).unwrap_or("");
     let word_at = |t: &super::lexer::Token| decls.get(t.range.clone()).unwrap_or("");
@@ -44,6 +44,7 @@ pub(super) fn split(decls: &str) -> Option<(String, String, Vec<Range<usize>>)> 
     let mut inits = blank(decls);
     let mut found = false;
     let mut once = Vec::new();
+    let mut crowded = Vec::new();
     let mut in_local = false;
     let mut in_inst = false;
     let mut start = None;
@@ -91,6 +92,36 @@ pub(super) fn split(decls: &str) -> Option<(String, String, Vec<Range<usize>>)> 
                     && value[2].tok == Tok::Assign
                     && value.last().is_some_and(|t| t.tok == Tok::RParen)
                     && top_level_commas(&value[1..value.len() - 1]) == 0;
+                // `(a := 1, b := THIS^.x, c := 2.5)`: several fields, some computed at run time
+                if single
+                    && structured
+                    && !one_field
+                    && toks[end].tok == Tok::Semi
+                    && (is_run_time_value(value) || this)
+                {
+                    let name = toks[s].range.clone();
+                    match several_fields(decls, value, name.clone(), &mut read, &mut inits) {
+                        Ok(stmt) => {
+                            let semi = toks[end].range.clone();
+                            inits.replace_range(semi.clone(), &decls[semi.clone()]);
+                            if in_inst {
+                                once.push(name.start..stmt.end.max(semi.end));
+                            }
+                            found = true;
+                        }
+                        Err(Some(field)) => {
+                            // read without its initial value; one E1075 at the field
+                            let from = toks[k].range.start;
+                            let to = toks[end - 1].range.end;
+                            read.replace_range(from..to, &blank(&decls[from..to]));
+                            crowded.push(field);
+                            found = true;
+                        }
+                        Err(None) => {}
+                    }
+                    k = end;
+                    continue;
+                }
                 if single
                     && (!structured || one_field)
                     && (is_run_time_value(value) || this)
@@ -127,7 +158,119 @@ pub(super) fn split(decls: &str) -> Option<(String, String, Vec<Range<usize>>)> 
         }
         k += 1;
     }
-    found.then_some((read, inits, once))
+    found.then_some((read, inits, once, crowded))
+}
+
+/// What [`split`] gives: the declarations to parse, the assignments, the ranges of the VAR_INST
+/// ones, and the fields of structured initial values with no room for their assignment (E1075).
+type Split = (String, String, Vec<Range<usize>>, Vec<Range<usize>>);
+
+/// A structured initial value `value` (`(a := 1, b := THIS^.x, c := 2.5)`, its tokens from `(` to
+/// `)`) of the variable whose name is at `name`: the fields computed at run time (a call, a `^`,
+/// `THIS`) become assignments `name.b := THIS^.x;` in `inits`, in place (the name where it is
+/// written for the first, then in the blank room just before each next one's separator), and are
+/// blanked in `read`, which keeps the other fields as the declaration's constant initial value.
+/// Returns the range of the assignments; `Err(None)`, both texts unchanged, when a field is not
+/// `field := expr` or none is computed at run time; `Err(Some(field))` when there is no room for
+/// the name before that field (two computed fields next to each other: `(a := THIS^.x, b :=
+/// THIS^.y)`), which the caller reports (E1075).
+fn several_fields(
+    decls: &str,
+    value: &[super::lexer::Token],
+    name: Range<usize>,
+    read: &mut String,
+    inits: &mut String,
+) -> Result<Range<usize>, Option<Range<usize>>> {
+    let inner = value
+        .get(1..value.len().checked_sub(1).ok_or(None)?)
+        .ok_or(None)?;
+    // the fields, each with the separator before it (`(` or `,`) and after it (`,` or `)`)
+    let mut fields: Vec<(usize, usize, usize)> = Vec::new(); // (sep before, first tok, last tok)
+    let mut depth = 0i32;
+    let mut first = 1;
+    for (j, t) in inner.iter().enumerate() {
+        match t.tok {
+            Tok::LParen | Tok::LBracket => depth += 1,
+            Tok::RParen | Tok::RBracket => depth -= 1,
+            Tok::Comma if depth == 0 => {
+                fields.push((first - 1, first, j));
+                first = j + 2;
+            }
+            _ => {}
+        }
+    }
+    fields.push((first - 1, first, inner.len()));
+    // (indexes into `value`: a field's tokens are value[first..=last], separators around them)
+    let word_is_this = |t: &super::lexer::Token| {
+        t.tok == Tok::Ident
+            && decls
+                .get(t.range.clone())
+                .is_some_and(|w| w.eq_ignore_ascii_case("THIS"))
+    };
+    let mut run_time = Vec::new();
+    for &(sep, a, b) in &fields {
+        let toks = value.get(a..=b).ok_or(None)?;
+        if toks.len() < 3 || toks[0].tok != Tok::Ident || toks[1].tok != Tok::Assign {
+            return Err(None);
+        }
+        let rest = &toks[2..];
+        if is_run_time_value(rest) || rest.iter().any(word_is_this) {
+            run_time.push((sep, a, b));
+        }
+    }
+    if run_time.is_empty() {
+        return Err(None);
+    }
+    let mut new_read = read.clone();
+    let mut new_inits = inits.clone();
+    let label = &decls[name.clone()];
+    let mut last_end = name.end;
+    for (n, &(sep, a, b)) in run_time.iter().enumerate() {
+        let sep_at = value[sep].range.start;
+        if n == 0 {
+            new_inits.replace_range(name.clone(), label);
+        } else {
+            // `name` in the blank room before the separator
+            let field = value[a].range.start..value[b].range.end;
+            let from = sep_at.checked_sub(label.len()).ok_or(Some(field.clone()))?;
+            if from <= last_end {
+                return Err(Some(field));
+            }
+            new_inits.replace_range(from..sep_at, label);
+        }
+        new_inits.replace_range(sep_at..sep_at + 1, ".");
+        let field = value[a].range.start..value[b].range.end;
+        new_inits.replace_range(field.clone(), &decls[field.clone()]);
+        let after = value[b + 1].range.start;
+        new_inits.replace_range(after..after + 1, ";");
+        last_end = after + 1;
+    }
+    // the declaration keeps the other fields; none left: no initial value at all
+    if run_time.len() == fields.len() {
+        let from = value[0].range.start;
+        let to = value[value.len() - 1].range.end;
+        // (the `:=` before the value too)
+        let assign = decls[..from].rfind(":=").ok_or(None)?;
+        new_read.replace_range(assign..to, &blank(&decls[assign..to]));
+    } else {
+        for (n, &(sep, a, b)) in fields.iter().enumerate() {
+            if !run_time.contains(&(sep, a, b)) {
+                continue;
+            }
+            // the field and one comma: its own after it, or (the last) the one before it
+            let (from, to) = if b + 1 < value.len() - 1 {
+                (value[a].range.start, value[b + 1].range.end)
+            } else if n > 0 {
+                (value[sep].range.start, value[b].range.end)
+            } else {
+                (value[a].range.start, value[b].range.end)
+            };
+            new_read.replace_range(from..to, &blank(&decls[from..to]));
+        }
+    }
+    *read = new_read;
+    *inits = new_inits;
+    Ok(name.start..last_end)
 }
 
 /// The commas of `toks` outside parentheses and brackets.
@@ -260,15 +403,27 @@ pub(super) fn member_text(
     use crate::ast::{Ident, TypeRef, VarBlock, VarDecl};
     let decl_text = src.get(decls.clone()).unwrap_or("");
     let inits = split(decl_text);
+    for r in inits.iter().flat_map(|(_, _, _, crowded)| crowded) {
+        let at = crate::Span::new(file, decls.start + r.start, decls.start + r.end);
+        diags.push(
+            diagnostics::Diagnostic::error(
+                diagnostics::code::E1075,
+                "this field's initial value is computed next to another one: ladderc cannot place its assignment",
+            )
+            .at(at)
+            .with_primary_label("computed at run time, right after another computed field")
+            .with_hint("put a field with a constant value between the two, or assign this one in FB_init"),
+        );
+    }
     let (mut blocks, mut inst) = super::file::read_member_var_blocks(
         file,
         inits
             .as_ref()
-            .map_or(decl_text, |(read, _, _)| read.as_str()),
+            .map_or(decl_text, |(read, _, _, _)| read.as_str()),
         decls.start,
         diags,
     );
-    let once: Vec<Range<usize>> = inits.as_ref().map_or(Vec::new(), |(_, _, o)| {
+    let once: Vec<Range<usize>> = inits.as_ref().map_or(Vec::new(), |(_, _, o, _)| {
         o.iter()
             .map(|r| decls.start + r.start..decls.start + r.end)
             .collect()
@@ -288,7 +443,7 @@ pub(super) fn member_text(
     let stmt_text = src.get(stmts.clone()).unwrap_or("");
     let (text, base) = match inits {
         // the assignments where they are written, then the statements (positions kept)
-        Some((_, mut t, _)) if decls.end <= stmts.start => {
+        Some((_, mut t, _, _)) if decls.end <= stmts.start => {
             t.push_str(&blank(src.get(decls.end..stmts.start).unwrap_or("")));
             t.push_str(stmt_text);
             (t, decls.start)

@@ -278,6 +278,7 @@ pub fn accessor_methods(
             base,
             inst: Vec::new(),
             once: Vec::new(),
+            local_inits: Vec::new(),
         });
     }
     if let Some((mut blocks, text, base)) = set {
@@ -300,6 +301,7 @@ pub fn accessor_methods(
             base,
             inst: Vec::new(),
             once: Vec::new(),
+            local_inits: Vec::new(),
         });
     }
     out

@@ -10,9 +10,11 @@
 //! each marked block's variables out of the POU into a global variable `__STAT_<POU>_<NAME>` (one
 //! per program, the same for every instance and call) and renames their uses in the POU's body
 //! and in its methods and actions.
-//! Invariants: a `VAR_STAT` inside a METHOD or a PROPERTY accessor is one E1067 (read as VAR, a
-//! variable of the call: CODESYS shares it among the instances, which ladderc does not do there);
-//! outside any POU the keyword is left to the parser. A marked block is never left in a POU after
+//! A METHOD's `VAR_STAT` ([`name_method_blocks`]) is one copy per method shared by every instance
+//! of the block (CODESYS "VAR_STAT": static variables of a method are shared by all instances),
+//! the global `__STAT_<BLOCK>___M_<METHOD>_<NAME>`.
+//! Invariants: a `VAR_STAT` inside a PROPERTY accessor is one E1067 (read as VAR, a variable of
+//! the call); outside any POU the keyword is left to the parser. A marked block is never left in a POU after
 //! [`hoist`]; its variables keep their types and initial values.
 
 use super::file::word;
@@ -56,15 +58,15 @@ pub fn mark(
             "VAR_STAT" if owner.is_some() => {
                 let o = out.get_or_insert_with(|| (src.to_string(), Vec::new()));
                 o.0.replace_range(t.range.clone(), "VAR     ");
-                if matches!(owner.as_deref(), Some("METHOD" | "PROPERTY")) {
+                if owner.as_deref() == Some("PROPERTY") {
                     diags.push(
                         Diagnostic::error(
                             code::E1067,
-                            "VAR_STAT in a METHOD or PROPERTY accessor is not supported",
+                            "VAR_STAT in a PROPERTY accessor is not supported",
                         )
                         .at(Span::new(file, t.range.start, t.range.end))
-                        .with_primary_label("static variables of a method")
-                        .with_hint("declare the variables in the block's own VAR_STAT (one copy shared by every instance), or in the method's VAR_INST (one copy per instance, TwinCAT)"),
+                        .with_primary_label("static variables of an accessor")
+                        .with_hint("declare the variables in the block's own VAR_STAT (one copy shared by every instance), or in the accessor's VAR_INST (one copy per instance, TwinCAT)"),
                     );
                 } else {
                     o.1.push(t.range.start);
@@ -86,6 +88,17 @@ pub fn name_blocks(unit: &mut CompilationUnit, file: FileId, at: &[usize]) {
             if b.span.file == file && at.contains(&(b.span.start as usize)) {
                 b.name = Some(Ident::new(MARK, b.span));
             }
+        }
+    }
+}
+
+/// Names [`MARK`] the blocks of method `m` whose keyword is at one of `at` (a METHOD's `VAR_STAT`:
+/// its variables join the block's marked variables as `__M_<METHOD>_<NAME>`, so [`hoist`] makes
+/// them one global per method, shared by every instance).
+pub fn name_method_blocks(m: &mut super::file::PendingMethod, at: &[usize]) {
+    for b in &mut m.blocks {
+        if at.contains(&(b.span.start as usize)) {
+            b.name = Some(Ident::new(MARK, b.span));
         }
     }
 }
