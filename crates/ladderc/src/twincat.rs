@@ -28,11 +28,13 @@ pub fn is_twincat_file(path: &Path) -> bool {
 
 /// `paths` with each `.plcproj` file, and each folder holding one (directly or up to three folders
 /// down, as a `.tsproj`/`.sln` folder does), replaced by the object files the project lists. The
-/// compiler defines of the projects' properties (`<CompilerDefines>`) go to `defines`.
+/// compiler defines of the projects' properties (`<CompilerDefines>`) go to `defines`, their
+/// library references to `references` (`None` when no input is a project).
 pub fn expand(
     session: &Session,
     paths: &[PathBuf],
     defines: &mut Vec<(String, String)>,
+    references: &mut Option<Vec<crate::user_libraries::Reference>>,
     diags: &mut Diagnostics,
 ) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -73,6 +75,9 @@ pub fn expand(
             Some(project) => match session.read_file(&project) {
                 Ok(text) => {
                     defines.extend(compiler_defines(&text));
+                    references
+                        .get_or_insert_with(Vec::new)
+                        .extend(crate::user_libraries::references(&text));
                     out.extend(listed_files(&project, &text));
                 }
                 // reading it as an input reports the error
@@ -84,14 +89,14 @@ pub fn expand(
     out
 }
 
-fn has_extension(p: &Path, ext: &str) -> bool {
+pub(crate) fn has_extension(p: &Path, ext: &str) -> bool {
     p.extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case(ext))
 }
 
 /// The `.plcproj` files in `dir` and its sub-folders, at most three levels down.
-fn find_projects(dir: &Path, depth: usize, found: &mut Vec<PathBuf>) {
+pub(crate) fn find_projects(dir: &Path, depth: usize, found: &mut Vec<PathBuf>) {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return;
     };
@@ -138,7 +143,7 @@ fn compiler_defines(text: &str) -> Vec<(String, String)> {
 
 /// The object files a `.plcproj` lists (`<Compile Include="POUs\MAIN.TcPOU">`), relative to its
 /// folder, in its order; the other items (visualisations, text lists) are left out.
-fn listed_files(project: &Path, text: &str) -> Vec<PathBuf> {
+pub(crate) fn listed_files(project: &Path, text: &str) -> Vec<PathBuf> {
     let dir = project.parent().unwrap_or(Path::new(""));
     let arena = ladder_compiler::xml::Arena::new();
     let (root, _) = ladder_compiler::xml::parse(text, &arena);

@@ -54,6 +54,16 @@ impl Body<'_, '_> {
                     class = c;
                     match self.norm(ty) {
                         Ty::Known(Type::Error) => error = true,
+                        // CODESYS, TwinCAT: a bit string in arithmetic counts as its unsigned
+                        // integer (W1436)
+                        Ty::Known(Type::Elementary(e))
+                            if super::bit_arith::is_arithmetic(c)
+                                && super::bit_arith::counted_as(e).is_some() =>
+                        {
+                            self.bit_string_counted(e, *span);
+                            let u = super::bit_arith::counted_as(e).unwrap_or(e);
+                            known.push((Type::Elementary(u), *span))
+                        }
                         Ty::Known(t) => known.push((t, *span)),
                         Ty::Lit(v) => lit_args.push((v, *span)),
                     }

@@ -8,6 +8,7 @@
 //! Stages: `decls` (types, POU variables, globals, configurations) then `body` (each POU's IL body).
 
 mod address_init;
+mod bit_arith;
 mod body;
 mod calls;
 mod decls;
@@ -60,6 +61,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         operator_functions: [None; 32],
         wide_chars_at: std::collections::HashSet::new(),
         reinterpreting_pous: std::collections::HashSet::new(),
+        counting_bit_string_pous: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
     a.check_containment();
@@ -114,6 +116,9 @@ pub(crate) struct Analyzer<'d> {
     /// The POUs where W1425 (a pointer stored into a pointer to another type) was reported: once
     /// per POU.
     pub(crate) reinterpreting_pous: std::collections::HashSet<PouId>,
+    /// The POUs where W1436 (a bit string counted as an unsigned integer) was reported: once per
+    /// POU.
+    pub(crate) counting_bit_string_pous: std::collections::HashSet<PouId>,
 }
 
 impl Analyzer<'_> {
