@@ -267,8 +267,13 @@ impl Session {
         let mut expand_diags = Diagnostics::new();
         let mut defines = Vec::new();
         let mut references = None;
-        let paths =
-            crate::twincat::expand(self, paths, &mut defines, &mut references, &mut expand_diags);
+        let paths = crate::twincat::expand(
+            self,
+            paths,
+            &mut defines,
+            &mut references,
+            &mut expand_diags,
+        );
         // user libraries given as source projects (`--lib`): their object files first, their
         // namespaces' qualifiers dropped while this function reads
         let libraries = crate::user_libraries::resolve(

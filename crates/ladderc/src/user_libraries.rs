@@ -41,7 +41,13 @@ pub fn references(text: &str) -> Vec<Reference> {
     let Some(root) = root else {
         return Vec::new();
     };
-    let title = |s: &str| s.split(',').next().unwrap_or("").trim().to_ascii_uppercase();
+    let title = |s: &str| {
+        s.split(',')
+            .next()
+            .unwrap_or("")
+            .trim()
+            .to_ascii_uppercase()
+    };
     let mut out = Vec::new();
     for el in root.walk() {
         if !matches!(el.name(), "PlaceholderReference" | "LibraryReference") {
@@ -68,7 +74,14 @@ pub fn references(text: &str) -> Vec<Reference> {
         };
         let namespace = child("Namespace")
             .filter(|n| !n.is_empty())
-            .unwrap_or_else(|| include.split(',').next().unwrap_or(&first).trim().to_string());
+            .unwrap_or_else(|| {
+                include
+                    .split(',')
+                    .next()
+                    .unwrap_or(&first)
+                    .trim()
+                    .to_string()
+            });
         let qualified_only = child("QualifiedOnly").is_some_and(|q| q.eq_ignore_ascii_case("true"));
         out.push(Reference {
             names,
@@ -85,6 +98,8 @@ struct LibraryProject {
     project: PathBuf,
     /// Its names, upper case: `<Title>`, `<Name>`, the file's stem.
     names: Vec<String>,
+    /// `<Title>`, else `<Name>`, else the file's stem, as written.
+    title: String,
     /// `<DefaultNamespace>`, else its title.
     default_namespace: String,
     /// Its object files, without task files.
@@ -144,18 +159,28 @@ pub fn resolve(
         if !used[k] {
             if has_project {
                 diags.push(
-                    Diagnostic::warning(
-                        code::W1437,
+                    Diagnostic::error(
+                        code::E1077,
                         format!(
-                            "the library project {} is given with --lib, but no project references it",
-                            p.project.display()
+                            "--lib {}: no input project references the library `{}`",
+                            p.project.display(),
+                            p.title
                         ),
                     )
                     .with_hint(format!(
-                        "its names are available as {}.Name and unqualified; add the library to the project's references, or check that --lib names the library it references",
-                        p.default_namespace
+                        "the projects reference {}; add the library to the project's references (TwinCAT: References, Add library), or give with --lib the library the project references",
+                        if references.is_empty() {
+                            "no library".to_string()
+                        } else {
+                            references
+                                .iter()
+                                .map(|r| r.namespace.clone())
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        }
                     )),
                 );
+                continue;
             }
             let ns = p.default_namespace.to_ascii_uppercase();
             if namespaces.insert(ns.clone()) {
@@ -200,7 +225,9 @@ fn read_library(session: &Session, lib: &Path, diags: &mut Diagnostics) -> Optio
                 code::E1078,
                 format!("--lib {} is no TwinCAT PLC project", lib.display()),
             )
-            .with_hint("give the library's .plcproj file (or its folder); other source files are inputs"),
+            .with_hint(
+                "give the library's .plcproj file (or its folder); other source files are inputs",
+            ),
         );
         return None;
     } else {
@@ -210,8 +237,11 @@ fn read_library(session: &Session, lib: &Path, diags: &mut Diagnostics) -> Optio
         Ok(t) => t,
         Err(e) => {
             diags.push(
-                Diagnostic::error(code::E9001, format!("cannot read {}: {e}", project.display()))
-                    .with_hint("check the path given with --lib and its permissions"),
+                Diagnostic::error(
+                    code::E9001,
+                    format!("cannot read {}: {e}", project.display()),
+                )
+                .with_hint("check the path given with --lib and its permissions"),
             );
             return None;
         }
@@ -244,7 +274,7 @@ fn read_library(session: &Session, lib: &Path, diags: &mut Diagnostics) -> Optio
             names.push(n);
         }
     }
-    let default_namespace = property("DefaultNamespace").unwrap_or(title);
+    let default_namespace = property("DefaultNamespace").unwrap_or(title.clone());
     let files = crate::twincat::listed_files(&project, &text)
         .into_iter()
         .filter(|f| !crate::twincat::has_extension(f, "tctto"))
@@ -253,6 +283,7 @@ fn read_library(session: &Session, lib: &Path, diags: &mut Diagnostics) -> Optio
         references: references(&text),
         project,
         names,
+        title,
         default_namespace,
         files,
     })

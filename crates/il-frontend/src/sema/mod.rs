@@ -62,6 +62,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         wide_chars_at: std::collections::HashSet::new(),
         reinterpreting_pous: std::collections::HashSet::new(),
         counting_bit_string_pous: std::collections::HashSet::new(),
+        copying_instance_pous: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
     a.check_containment();
@@ -119,6 +120,8 @@ pub(crate) struct Analyzer<'d> {
     /// The POUs where W1436 (a bit string counted as an unsigned integer) was reported: once per
     /// POU.
     pub(crate) counting_bit_string_pous: std::collections::HashSet<PouId>,
+    /// The POUs where W1437 (an FB instance copied whole) was reported: once per POU.
+    pub(crate) copying_instance_pous: std::collections::HashSet<PouId>,
 }
 
 impl Analyzer<'_> {

@@ -1086,13 +1086,14 @@ impl<'d> PouLowering<'d> {
             // a bit string counts as its unsigned integer (CODESYS, TwinCAT; W1436 from sema at
             // its first arithmetic in the POU)
             let int = env.elementary(t).is_some_and(|e| {
-                e.is_integer() || matches!(
-                    e,
-                    crate::sema::model::Elementary::Byte
-                        | crate::sema::model::Elementary::Word
-                        | crate::sema::model::Elementary::Dword
-                        | crate::sema::model::Elementary::Lword
-                )
+                e.is_integer()
+                    || matches!(
+                        e,
+                        crate::sema::model::Elementary::Byte
+                            | crate::sema::model::Elementary::Word
+                            | crate::sema::model::Elementary::Dword
+                            | crate::sema::model::Elementary::Lword
+                    )
             });
             if !int {
                 let text = match element {
@@ -1138,15 +1139,15 @@ impl<'d> PouLowering<'d> {
             );
         }
         let cty = cty.unwrap_or_else(|| named("DINT", control.span));
-        let cty_is_bits = env
-            .elementary(&cty)
-            .is_some_and(|e| matches!(
-                    e,
-                    crate::sema::model::Elementary::Byte
-                        | crate::sema::model::Elementary::Word
-                        | crate::sema::model::Elementary::Dword
-                        | crate::sema::model::Elementary::Lword
-                ));
+        let cty_is_bits = env.elementary(&cty).is_some_and(|e| {
+            matches!(
+                e,
+                crate::sema::model::Elementary::Byte
+                    | crate::sema::model::Elementary::Word
+                    | crate::sema::model::Elementary::Dword
+                    | crate::sema::model::Elementary::Lword
+            )
+        });
         // Bounds are evaluated once, before the first test.
         self.value(from, &mut code, diags);
         code.push(simple(Op::St, false, Some(i.clone()), from.span));
