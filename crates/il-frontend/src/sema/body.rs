@@ -794,7 +794,6 @@ impl Body<'_, '_> {
                 }
                 // an FB instance loaded is only stored whole into another of its type (W1437,
                 // at the ST); any other use is a type error there
-                let t = t;
                 rec.operand = Some(t.clone());
                 self.load(st, t, span);
                 if matches!(o, crate::ast::Operand::Mem(_)) {
