@@ -10,13 +10,13 @@
 //!
 //! Input: the references of the application's projects and the `--lib` paths. Output: the
 //! library object files to read (without their task files: a library runs nothing by itself),
-//! the namespaces whose qualifier is dropped, the (namespace, library names) pairs the application
-//! may use only qualified (`<QualifiedOnly>true</QualifiedOnly>`), and diagnostics: W1437 for a
-//! `--lib` no project references (its names are still available under its default namespace),
-//! E1078 for a `--lib` that is no TwinCAT project, E9001 for one that cannot be read. Invariants:
-//! never panics; each library project is read once, whatever the number of references to it; a
-//! library's names join the application's (one namespace in the compiled C: a library POU and an
-//! application POU of one name are a duplicate, as with two files).
+//! the namespaces whose qualifier is dropped, and diagnostics: E1077 for a `--lib` no input
+//! project references (without a project, `ladderc run main.st --lib L.plcproj`, its names are
+//! available under its default namespace), E1078 for a `--lib` that is no TwinCAT project, E9001
+//! for one that cannot be read. Invariants: never panics; each library project is read once,
+//! whatever the number of references to it; a library's names join the application's (one
+//! namespace in the compiled C: a library POU and an application POU of one name are a
+//! duplicate, as with two files).
 
 use crate::pipeline::Session;
 use diagnostics::{code, Diagnostic, Diagnostics};
@@ -30,7 +30,8 @@ pub struct Reference {
     pub names: Vec<String>,
     /// The namespace the referencing project uses (`<Namespace>`, else the library's name).
     pub namespace: String,
-    /// `<QualifiedOnly>true</QualifiedOnly>`: the library's names only as `Namespace.Name`.
+    /// `<QualifiedOnly>true</QualifiedOnly>`: TwinCAT takes the library's names only as
+    /// `Namespace.Name`. Read, not enforced: ladderc accepts them unqualified too (README).
     pub qualified_only: bool,
 }
 
