@@ -207,7 +207,8 @@ fn generated_c_of_edge_inputs() {
     );
     let h = p.file("program.h").unwrap();
     let c = p.file("program.c").unwrap();
-    let strct = &h[h.find("typedef struct").unwrap()..h.find("} FB_edges;").unwrap() + 11];
+    let start = h.find("struct FB_edges {").unwrap();
+    let strct = &h[start..start + h[start..].find("\n};").unwrap() + 3];
     let body = &c[c.find("static void FB_edges_BODY_LEVELS").unwrap()..];
     let wrapper = body.find("void FB_edges_BODY(").unwrap();
     let body = &body[..wrapper + body[wrapper..].find("\n}\n").unwrap() + 3];

@@ -439,6 +439,8 @@ VAR
 END_VAR
   LD t
   ST u
+  LD t
+  ST n
   CAL n
   LD n
   IN n

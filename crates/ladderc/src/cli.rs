@@ -83,6 +83,10 @@ pub struct ProjectArgs {
     /// beside the first input, when it exists.
     #[arg(long)]
     pub axes: Option<PathBuf>,
+    /// A user library given as its TwinCAT source project (`.plcproj`, or a folder holding one),
+    /// for the library references of the inputs' projects (`Struckig.Otg`); repeatable.
+    #[arg(long = "lib", value_name = "PLCPROJ")]
+    pub libraries: Vec<PathBuf>,
 }
 
 /// The arguments of `build` and `run`: the project and the PMAC output.
@@ -494,6 +498,7 @@ fn options(c: &ProjectArgs) -> pipeline::Options {
         },
         templates: c.templates.clone(),
         compile_templates: true,
+        libraries: c.libraries.clone(),
     }
 }
 

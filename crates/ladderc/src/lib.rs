@@ -88,6 +88,7 @@ pub mod tc2_override;
 pub mod text_lists;
 pub mod trace_raw;
 pub mod twincat;
+pub mod user_libraries;
 pub mod xml_context;
 
 pub use c_backend;

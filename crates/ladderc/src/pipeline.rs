@@ -40,6 +40,9 @@ pub struct Options {
     /// is loaded (the command line does; it starts a process). Without it the templates still get every
     /// other check (schema, body tokens and names).
     pub compile_templates: bool,
+    /// User libraries given as source projects (`--lib`): TwinCAT `.plcproj` files (or folders
+    /// holding one) whose POUs, types and global lists the inputs use (`Struckig.Otg`).
+    pub libraries: Vec<PathBuf>,
 }
 
 impl Default for Options {
@@ -54,6 +57,7 @@ impl Default for Options {
             cycle_ms: None,
             lang: None,
             compile_templates: false,
+            libraries: Vec::new(),
         }
     }
 }
@@ -113,6 +117,9 @@ pub struct Session {
     /// The base scan cycle the tasks of the TwinCAT project read last give (ms; the greatest common
     /// divisor of their cycle times), used when neither `--cycle-ms` nor the axes file gives one.
     pub task_cycle_ms: Option<f64>,
+    /// The user libraries' source projects (`--lib`, [`Options::libraries`]): read with the inputs,
+    /// see [`crate::user_libraries`].
+    pub libraries: Vec<PathBuf>,
 }
 
 /// What [`Session::parse`] produced: the user's units and what they are compiled with.
@@ -211,6 +218,7 @@ impl Session {
             disk: true,
             name_table: true,
             task_cycle_ms: None,
+            libraries: Vec::new(),
         }
     }
 
@@ -259,13 +267,26 @@ impl Session {
         let mut expand_diags = Diagnostics::new();
         let mut defines = Vec::new();
         let mut twincat_failed: Vec<String> = Vec::new();
+        let mut references = None;
         let paths = crate::twincat::expand(
             self,
             paths,
             &mut defines,
             &mut twincat_failed,
+            &mut references,
             &mut expand_diags,
         );
+        // user libraries given as source projects (`--lib`): their object files first, their
+        // namespaces' qualifiers dropped while this function reads
+        let libraries = crate::user_libraries::resolve(
+            self,
+            references.as_deref().unwrap_or_default(),
+            &self.libraries,
+            references.is_some(),
+            &mut expand_diags,
+        );
+        let paths: Vec<PathBuf> = libraries.files.iter().cloned().chain(paths).collect();
+        let _libraries = il_frontend::st::qualifiers::UserLibraries::set(libraries.namespaces);
         // the projects' compiler defines, known to the conditional pragmas of every file read
         // below (and read again), until this function returns
         let _defines = il_frontend::st::ProjectDefines::set(defines);
@@ -664,6 +685,7 @@ impl Session {
             // when asked).
             self.user_templates(&mut library, dir, opts.compile_templates);
         }
+        self.libraries = opts.libraries.clone();
         let units = self.load_as(paths, opts.lang);
         if self.diags.has_errors() {
             return None;

@@ -28,14 +28,16 @@ pub fn is_twincat_file(path: &Path) -> bool {
 
 /// `paths` with each `.plcproj` file, and each folder holding one (directly or up to three folders
 /// down, as a `.tsproj`/`.sln` folder does), replaced by the object files the project lists. The
-/// compiler defines of the projects' properties (`<CompilerDefines>`) go to `defines`.
-/// A listed file that does not exist is one E1079 at its `<Compile>` element (the project's text is
-/// added to the session's sources for it), and its stem goes to `missing`.
+/// compiler defines of the projects' properties (`<CompilerDefines>`) go to `defines`, their
+/// library references to `references` (`None` when no input is a project). A listed file that
+/// does not exist is one E1079 at its `<Compile>` element (the project's text is added to the
+/// session's sources for it), and its stem goes to `missing`.
 pub fn expand(
     session: &mut Session,
     paths: &[PathBuf],
     defines: &mut Vec<(String, String)>,
     missing: &mut Vec<String>,
+    references: &mut Option<Vec<crate::user_libraries::Reference>>,
     diags: &mut Diagnostics,
 ) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -76,6 +78,9 @@ pub fn expand(
             Some(project) => match session.read_file(&project) {
                 Ok(text) => {
                     defines.extend(compiler_defines(&text));
+                    references
+                        .get_or_insert_with(Vec::new)
+                        .extend(crate::user_libraries::references(&text));
                     let mut project_file = None;
                     for (path, include) in listed_files(&project, &text) {
                         if session.file_exists(&path) || !session.disk {
@@ -107,14 +112,14 @@ pub fn expand(
     out
 }
 
-fn has_extension(p: &Path, ext: &str) -> bool {
+pub(crate) fn has_extension(p: &Path, ext: &str) -> bool {
     p.extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case(ext))
 }
 
 /// The `.plcproj` files in `dir` and its sub-folders, at most three levels down.
-fn find_projects(dir: &Path, depth: usize, found: &mut Vec<PathBuf>) {
+pub(crate) fn find_projects(dir: &Path, depth: usize, found: &mut Vec<PathBuf>) {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return;
     };
@@ -207,7 +212,7 @@ fn missing_object(file: FileId, path: &Path, include: (usize, usize)) -> Diagnos
 /// The object files a `.plcproj` lists (`<Compile Include="POUs\MAIN.TcPOU">`), relative to its
 /// folder, in its order, each with the byte range of its `Include` value in `text`; the other items
 /// (visualisations, text lists) are left out.
-fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, usize))> {
+pub(crate) fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, usize))> {
     let dir = project.parent().unwrap_or(Path::new(""));
     let arena = ladder_compiler::xml::Arena::new();
     let (root, _) = ladder_compiler::xml::parse(text, &arena);

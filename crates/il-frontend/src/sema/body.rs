@@ -788,14 +788,12 @@ impl Body<'_, '_> {
                     self.load(st, Ty::ERROR, span);
                     return;
                 };
-                let mut t = self.read_operand(o);
+                let t = self.read_operand(o);
                 if negate {
                     self.check_class_bit(&t, o.span(), "LDN");
                 }
-                if let Ty::Known(Type::Fb(_)) = t {
-                    self.not_a_value(o);
-                    t = Ty::ERROR;
-                }
+                // an FB instance loaded is only stored whole into another of its type (W1437,
+                // at the ST); any other use is a type error there
                 rec.operand = Some(t.clone());
                 self.load(st, t, span);
                 if matches!(o, crate::ast::Operand::Mem(_)) {
@@ -818,8 +816,12 @@ impl Body<'_, '_> {
                 }
                 let mut place = self.write_place(o, "ST");
                 if place.is_fb() {
-                    self.not_a_value(o);
-                    place = Type::Error;
+                    if matches!(&cr, Ty::Known(c) if *c == place) {
+                        self.instance_copied(o.span());
+                    } else {
+                        self.not_a_value(o);
+                        place = Type::Error;
+                    }
                 }
                 rec.operand = Some(Ty::Known(place.clone()));
                 // the hidden view of a dispatch through a base (st::base_view): its class tested
@@ -906,6 +908,22 @@ impl Body<'_, '_> {
                 st.cr.fresh = Some(span);
             }
         }
+    }
+
+    /// W1437, once per POU: an FB instance stored whole into another instance of its block
+    /// (CODESYS, TwinCAT: `a := b;` copies every variable of `b` into `a`).
+    fn instance_copied(&mut self, at: Span) {
+        if self.a.silent || !self.a.copying_instance_pous.insert(self.pou) {
+            return;
+        }
+        self.a
+            .warning(
+                code::W1437,
+                at,
+                "a function block instance copied whole: IEC 61131-3 defines no assignment of instances (its other uses in this POU are not reported)",
+            )
+            .label("every variable of the instance is written")
+            .hint("compiled as CODESYS and TwinCAT do (a copy of each variable, nested instances too); copy the inputs and outputs one by one for another IEC compiler");
     }
 
     fn not_a_value(&mut self, o: &ast::Operand) {

@@ -45,6 +45,8 @@ impl Body<'_, '_> {
             return inst;
         }
         let mut known: Vec<(Type, Span)> = Vec::new();
+        // the bit strings counted as unsigned integers: (index in `known`, the bit string, where)
+        let mut counted: Vec<(usize, Elementary, Span)> = Vec::new();
         let mut lit_args: Vec<(usize, Span)> = Vec::new();
         let mut error = false;
         let mut class = Class::Any;
@@ -54,6 +56,16 @@ impl Body<'_, '_> {
                     class = c;
                     match self.norm(ty) {
                         Ty::Known(Type::Error) => error = true,
+                        // CODESYS, TwinCAT: a bit string in arithmetic counts as its unsigned
+                        // integer (W1436)
+                        Ty::Known(Type::Elementary(e))
+                            if super::bit_arith::is_arithmetic(c)
+                                && super::bit_arith::counted_as(e).is_some() =>
+                        {
+                            let u = super::bit_arith::counted_as(e).unwrap_or(e);
+                            counted.push((known.len(), e, *span));
+                            known.push((Type::Elementary(u), *span))
+                        }
                         Ty::Known(t) => known.push((t, *span)),
                         Ty::Lit(v) => lit_args.push((v, *span)),
                     }
@@ -109,6 +121,20 @@ impl Body<'_, '_> {
                 t: Ty::ERROR,
                 result: fixed_result(Ty::ERROR),
             };
+        }
+        // W1436 when counting the bit strings as unsigned integers gives the inputs a common
+        // type; otherwise they are reported as written
+        if !counted.is_empty() {
+            let types: Vec<Type> = known.iter().map(|k| k.0.clone()).collect();
+            if common_type(&types).is_some() {
+                for (_, e, span) in &counted {
+                    self.bit_string_counted(*e, *span);
+                }
+            } else {
+                for (k, e, _) in &counted {
+                    known[*k].0 = Type::Elementary(*e);
+                }
+            }
         }
         let t = if !known.is_empty() {
             // all of one type (the usual case): that is the common type, without a list of copies

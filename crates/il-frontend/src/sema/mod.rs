@@ -8,6 +8,7 @@
 //! Stages: `decls` (types, POU variables, globals, configurations) then `body` (each POU's IL body).
 
 mod address_init;
+mod bit_arith;
 mod body;
 mod calls;
 mod decls;
@@ -61,6 +62,8 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         wide_chars_at: std::collections::HashSet::new(),
         reinterpreting_pous: std::collections::HashSet::new(),
         passing_any_address: false,
+        counting_bit_string_pous: std::collections::HashSet::new(),
+        copying_instance_pous: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
     a.check_containment();
@@ -118,6 +121,11 @@ pub(crate) struct Analyzer<'d> {
     /// The argument being checked is the hidden address of an ANY input (`In__PVALUE`,
     /// `crate::st::any_inputs`): a `POINTER TO BYTE` to any argument by design, no W1425.
     pub(crate) passing_any_address: bool,
+    /// The POUs where W1436 (a bit string counted as an unsigned integer) was reported: once per
+    /// POU.
+    pub(crate) counting_bit_string_pous: std::collections::HashSet<PouId>,
+    /// The POUs where W1437 (an FB instance copied whole) was reported: once per POU.
+    pub(crate) copying_instance_pous: std::collections::HashSet<PouId>,
 }
 
 impl Analyzer<'_> {

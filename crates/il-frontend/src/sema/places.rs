@@ -297,6 +297,16 @@ impl Body<'_, '_> {
                     self.pointer_reinterpreted(&t, to, at);
                     return true;
                 }
+                if super::bit_arith::assignable_counted(&t, to) {
+                    let bits = [&t, to]
+                        .into_iter()
+                        .filter_map(|x| x.elementary())
+                        .find(|e| super::bit_arith::counted_as(*e).is_some());
+                    if let Some(b) = bits {
+                        self.bit_string_counted(b, at);
+                    }
+                    return true;
+                }
                 let (f, tt) = (self.a.type_name(&t), self.a.type_name(to));
                 mismatch(self, &f, &tt);
                 false
@@ -462,6 +472,10 @@ impl Body<'_, '_> {
         let n = self.norm(&t);
         match n {
             Ty::Known(k) if k.is_error() || k.is_integer() => {}
+            // CODESYS, TwinCAT: a bit string indexes as its unsigned integer (W1436)
+            Ty::Known(Type::Elementary(e)) if super::bit_arith::counted_as(e).is_some() => {
+                self.bit_string_counted(e, ix.span());
+            }
             Ty::Lit(var) => {
                 // An index literal is a DINT unless it does not fit.
                 if self.lits.bind(var, &Type::DINT).is_err() {

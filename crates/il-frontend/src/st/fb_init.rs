@@ -69,6 +69,10 @@ struct Block {
     /// Its VAR_INPUT names (upper case): a declaration's structured initial value of one is set
     /// again after FB_init.
     inputs: HashSet<String>,
+    /// The lower bound of each one-dimensional array VAR_INPUT (upper-case name): an array
+    /// initial value of one (`MaxVelocity := [ 1.2, 0.6 ]`, Struckig's examples) is set again
+    /// element by element.
+    array_inputs: HashMap<String, i128>,
 }
 
 impl Block {
@@ -189,6 +193,18 @@ pub fn add_init_calls(
                     .filter(|b| b.kind == VarKind::Input)
                     .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
                     .filter(|n| !n.starts_with("__"))
+                    .collect();
+                b.array_inputs = p
+                    .var_blocks
+                    .iter()
+                    .filter(|b| b.kind == VarKind::Input)
+                    .flat_map(|b| b.vars.iter())
+                    .filter_map(|v| match &v.ty {
+                        TypeRef::Array { dims, .. } if dims.len() == 1 => {
+                            Some((v.name.key(), dims[0].lower))
+                        }
+                        _ => None,
+                    })
                     .collect();
             }
         }
@@ -921,6 +937,29 @@ impl Gen<'_, '_> {
                 if !block.inputs.contains(&field.key()) {
                     continue;
                 }
+                // an array input's initial value, element by element (repeats expanded)
+                if let (Initializer::Array(elems, _), Some(lower)) =
+                    (value, block.array_inputs.get(&field.key()))
+                {
+                    let mut k = *lower;
+                    for e in elems {
+                        for _ in 0..e.repeat.unwrap_or(1) {
+                            if let Some(v) = initial_expr(&e.value, field.span) {
+                                let mut target = place.clone();
+                                target.accessors.push(Accessor::Field(field.clone()));
+                                target
+                                    .accessors
+                                    .push(Accessor::Index(vec![int(k, field.span)]));
+                                out.push(Stmt {
+                                    kind: StmtKind::Assign { target, value: v },
+                                    span: field.span,
+                                });
+                            }
+                            k += 1;
+                        }
+                    }
+                    continue;
+                }
                 let Initializer::Value(op) = value else {
                     continue;
                 };
@@ -955,6 +994,27 @@ impl Gen<'_, '_> {
             out.push(call(place, m, Vec::new(), span));
         }
     }
+}
+
+/// A literal, enumerated or plain-name initial value as an expression (`None` for others).
+fn initial_expr(value: &Initializer, span: Span) -> Option<Expr> {
+    let Initializer::Value(op) = value else {
+        return None;
+    };
+    let kind = match op {
+        Operand::Literal(l) => ExprKind::Literal((**l).clone()),
+        Operand::EnumValue(e) => ExprKind::EnumValue {
+            type_name: e.type_name.clone(),
+            value: e.value.clone(),
+        },
+        Operand::Var(r) if r.accessors.is_empty() => ExprKind::Place(Place {
+            base: PlaceBase::Name(r.base.clone()),
+            accessors: Vec::new(),
+            span: r.span,
+        }),
+        _ => return None,
+    };
+    Some(Expr { kind, span })
 }
 
 /// Whether a pragma is `{attribute 'call_after_init'}` (applied, so not reported as ignored).

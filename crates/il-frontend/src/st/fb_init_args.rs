@@ -76,15 +76,26 @@ pub(super) fn fb_init_arguments(
             k = element_lists(file, src, toks, k + 1, diags, found, &mut text);
             continue;
         }
-        // `name : FB_X(`, or the element type of `ARRAY [..] OF FB_X(`
-        let declares = in_vars
-            && (t.tok == Tok::Colon || is_word(src, t, "OF"))
-            && toks.get(k + 1).is_some_and(|n| n.tok == Tok::Ident)
-            && toks.get(k + 2).is_some_and(|n| n.tok == Tok::LParen);
+        // `name : FB_X(`, or the element type of `ARRAY [..] OF FB_X(`; the type may be
+        // qualified by its library's namespace (`otg : Struckig.Otg(dofs := 6)`): `k` then
+        // moves to the token before the type's own name
+        let starts = in_vars && (t.tok == Tok::Colon || is_word(src, t, "OF"));
+        let mut name_at = k + 1;
+        while starts
+            && toks.get(name_at).is_some_and(|n| n.tok == Tok::Ident)
+            && toks.get(name_at + 1).is_some_and(|n| n.tok == Tok::Dot)
+            && toks.get(name_at + 2).is_some_and(|n| n.tok == Tok::Ident)
+        {
+            name_at += 2;
+        }
+        let declares = starts
+            && toks.get(name_at).is_some_and(|n| n.tok == Tok::Ident)
+            && toks.get(name_at + 1).is_some_and(|n| n.tok == Tok::LParen);
         if !declares {
             k += 1;
             continue;
         }
+        k = name_at - 1;
         let ty = word(src, &toks[k + 1]);
         let upper = ty.to_ascii_uppercase();
         if Elementary::from_name(&upper).is_some() || upper == "STRING" || upper == "WSTRING" {

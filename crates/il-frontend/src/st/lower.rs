@@ -1105,7 +1105,18 @@ impl<'d> PouLowering<'d> {
         };
         let env = self.env();
         if let Some(t) = &cty {
-            let int = env.elementary(t).is_some_and(|e| e.is_integer());
+            // a bit string counts as its unsigned integer (CODESYS, TwinCAT; W1436 from sema at
+            // its first arithmetic in the POU)
+            let int = env.elementary(t).is_some_and(|e| {
+                e.is_integer()
+                    || matches!(
+                        e,
+                        crate::sema::model::Elementary::Byte
+                            | crate::sema::model::Elementary::Word
+                            | crate::sema::model::Elementary::Dword
+                            | crate::sema::model::Elementary::Lword
+                    )
+            });
             if !int {
                 let text = match element {
                     Some(p) => for_control::place_text(p),
@@ -1150,6 +1161,15 @@ impl<'d> PouLowering<'d> {
             );
         }
         let cty = cty.unwrap_or_else(|| named("DINT", control.span));
+        let cty_is_bits = env.elementary(&cty).is_some_and(|e| {
+            matches!(
+                e,
+                crate::sema::model::Elementary::Byte
+                    | crate::sema::model::Elementary::Word
+                    | crate::sema::model::Elementary::Dword
+                    | crate::sema::model::Elementary::Lword
+            )
+        });
         // Bounds are evaluated once, before the first test.
         self.value(from, &mut code, diags);
         code.push(simple(Op::St, false, Some(i.clone()), from.span));
@@ -1258,7 +1278,9 @@ impl<'d> PouLowering<'d> {
         self.stmt_list(body, out, diags);
         self.loops.pop();
         out.push(IlStmt::Label(cont));
-        let bspan = by.map_or(span, |b| b.span);
+        // a bit-string counter's step is reported (W1436) at the counter
+        let bit_counter = cty_is_bits;
+        let bspan = by.map_or(if bit_counter { written } else { span }, |b| b.span);
         out.push(ld(i.clone(), bspan));
         out.push(simple(Op::Add, false, Some(step), bspan));
         out.push(simple(Op::St, false, Some(i), bspan));

@@ -37,10 +37,39 @@ thread_local! {
     static PROJECT_PROGRAMS: std::cell::RefCell<std::collections::HashSet<String>> =
         Default::default();
 
+    /// The namespaces of the user libraries given as source projects (upper case, `--lib`), set
+    /// by [`UserLibraries::set`]: their qualifier is dropped as a provided library's is.
+    static USER_LIBRARIES: std::cell::RefCell<std::collections::HashSet<String>> =
+        Default::default();
+
     /// The names other files of the project declare (upper case), set by
     /// [`with_other_files_names`]; empty otherwise.
     static OTHER_FILES_NAMES: std::cell::RefCell<std::collections::HashSet<String>> =
         Default::default();
+}
+
+/// The namespaces of the user libraries read with the project (`Struckig` of `Struckig.Otg`),
+/// known to [`library_qualifiers`] while the guard lives: `UserLibraries::set(names)`.
+pub struct UserLibraries {
+    before: std::collections::HashSet<String>,
+}
+
+impl UserLibraries {
+    /// Makes `namespaces` (upper case) known until the guard is dropped (then the ones known
+    /// before are again).
+    pub fn set(namespaces: impl IntoIterator<Item = String>) -> UserLibraries {
+        let names = namespaces.into_iter().collect();
+        UserLibraries {
+            before: USER_LIBRARIES.with(|u| u.replace(names)),
+        }
+    }
+}
+
+impl Drop for UserLibraries {
+    fn drop(&mut self) {
+        let before = std::mem::take(&mut self.before);
+        USER_LIBRARIES.with(|u| u.replace(before));
+    }
 }
 
 /// Sets the PROGRAM names that `library_qualifiers` takes as declared (every file of the
@@ -189,6 +218,7 @@ pub(super) fn library_qualifiers(
         let text = text.get_or_insert_with(|| src.to_string());
         let member_name = word(src, member).to_ascii_uppercase();
         let provided = PROVIDED_LIBRARIES.contains(&w.as_str())
+            || USER_LIBRARIES.with(|u| u.borrow().contains(&w))
             || PARTLY_PROVIDED_LIBRARIES
                 .iter()
                 .any(|(lib, names)| *lib == w && names.contains(&member_name.as_str()));
@@ -236,7 +266,7 @@ pub(super) fn library_qualifiers(
                 .at(Span::new(file, t.range.start, t.range.end))
                 .with_primary_label("library qualifier")
                 .with_hint(format!(
-                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2 (and Tc2_System's MEMCPY, MEMMOVE, MEMSET, MEMCMP); `{}` comes from another library: add its POUs and types to the project",
+                    "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2 (and Tc2_System's MEMCPY, MEMMOVE, MEMSET, MEMCMP); `{}` comes from another library: give its source project with --lib, or add its POUs and types to the project",
                     word(src, &toks[last])
                 )),
             );

@@ -43,6 +43,7 @@ pub fn options(root: Option<&Path>) -> Options {
         cycle_ms: None,
         lang: None,
         compile_templates: true,
+        libraries: Vec::new(),
     }
 }
 

@@ -1,0 +1,76 @@
+//! Bit strings counted as unsigned integers (CODESYS, TwinCAT): `n := coeffsCount - 1` of a BYTE,
+//! `FOR i := 1 TO 5 DO` of a BYTE `i`, `PolyEval(p, degree, x)` passing a BYTE to an INT input.
+//!
+//! IEC 61131-3 (ed. 3, 6.4.2 and Table 22) gives bit strings (BYTE, WORD, DWORD, LWORD) no arithmetic
+//! and requires ANY_INT for a FOR control variable; CODESYS and TwinCAT count them as the unsigned
+//! integer of the same width (BYTE as USINT, WORD as UINT, DWORD as UDINT, LWORD as ULINT), wrapping
+//! around exactly as that type. ladderc does so, with one W1436 per POU (another IEC compiler refuses
+//! the text). BOOL is no number here: its arithmetic stays E1004.
+//!
+//! Input: the types an arithmetic operator, a numeric standard function or an assignment sees.
+//! Output: the unsigned type to count with, and W1436 once per POU. Invariant: a value only changes
+//! type between types of one width (BYTE and USINT are both 8-bit unsigned in the generated C), or
+//! widens from the unsigned type as IEC allows (USINT to INT).
+
+use super::body::Body;
+use super::model::{Elementary, Type};
+use super::stdlib::Class;
+use super::typing::widens;
+use crate::Span;
+use diagnostics::code;
+use Elementary as E;
+
+/// The unsigned integer a bit string counts as (`BYTE` -> `USINT`); `None` for other types and BOOL.
+pub(super) fn counted_as(e: Elementary) -> Option<Elementary> {
+    match e {
+        E::Byte => Some(E::Usint),
+        E::Word => Some(E::Uint),
+        E::Dword => Some(E::Udint),
+        E::Lword => Some(E::Ulint),
+        _ => None,
+    }
+}
+
+/// Whether a generic input of class `c` is arithmetic (a bit string in it counts as unsigned).
+pub(super) fn is_arithmetic(c: Class) -> bool {
+    matches!(c, Class::AnyNum | Class::AnyInt)
+}
+
+/// Whether a value of `from` may be stored into `to` when bit strings count as unsigned integers:
+/// a bit string into an integer or real its unsigned integer widens to (`BYTE` into `INT`), an
+/// unsigned integer into a bit string of the same width or wider (`USINT` into `BYTE`).
+pub(super) fn assignable_counted(from: &Type, to: &Type) -> bool {
+    let (Some(f), Some(t)) = (from.elementary(), to.elementary()) else {
+        return false;
+    };
+    if let Some(u) = counted_as(f) {
+        if !t.is_bit() && widens(u, t) {
+            return true;
+        }
+    }
+    if let Some(u) = counted_as(t) {
+        if f.is_unsigned_integer() && widens(f, u) {
+            return true;
+        }
+    }
+    false
+}
+
+impl Body<'_, '_> {
+    /// W1436 at `at`, once per POU: the bit string `bits` counted as its unsigned integer.
+    pub(super) fn bit_string_counted(&mut self, bits: Elementary, at: Span) {
+        if self.a.silent || !self.a.counting_bit_string_pous.insert(self.pou) {
+            return;
+        }
+        let b = bits.name();
+        let u = counted_as(bits).map_or("an unsigned integer", Elementary::name);
+        self.a
+            .warning(
+                code::W1436,
+                at,
+                format!("{b} counted as the unsigned integer {u}: IEC 61131-3 gives bit strings no arithmetic (its other uses in this POU are not reported)"),
+            )
+            .label(format!("this is {b}"))
+            .hint(format!("compiled as CODESYS and TwinCAT do ({b} wraps around as {u}); declare the variable {u} for another IEC compiler"));
+    }
+}
