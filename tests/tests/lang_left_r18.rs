@@ -46,7 +46,7 @@
 //!   stays E1067.
 
 mod common;
-use common::{column, ladderc};
+use common::{check_files, column, ladderc};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
@@ -58,40 +58,7 @@ fn fixture(name: &str) -> PathBuf {
 /// `ladderc run FILES --cycles N --sanitize --trace - --watch WATCH`: the trace; asserts exit 0 and
 /// no sanitizer report.
 fn run_files(files: &[PathBuf], cycles: u32, watch: &str) -> String {
-    let out = ladderc()
-        .args(["--message-format", "short", "run"])
-        .args(files)
-        .args(["--cycles", &cycles.to_string(), "--sanitize"])
-        .args(["--trace", "-", "--watch", watch])
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(out.status.code(), Some(0), "{files:?}: {stderr}");
-    assert!(!stderr.contains("Sanitizer"), "{stderr}");
-    String::from_utf8_lossy(&out.stdout).into_owned()
-}
-
-/// `ladderc check FILES` of texts written to a temporary folder: exit code and the error lines up
-/// to their hints, with the folder left out.
-fn check_files(files: &[(&str, &str)]) -> (Option<i32>, Vec<String>) {
-    let dir = tempfile::tempdir().unwrap();
-    let paths: Vec<PathBuf> = files
-        .iter()
-        .map(|(name, text)| {
-            let p = dir.path().join(name);
-            std::fs::write(&p, text).unwrap();
-            p
-        })
-        .collect();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .args(&paths)
-        .output()
-        .unwrap();
-    (
-        out.status.code(),
-        common::diagnostic_heads(&out.stderr, dir.path(), false),
-    )
+    common::run_stimulated_files(files, &[], cycles, "", watch).0
 }
 
 // ------------------------------------------------------------------ 1. SIZEOF in constants
