@@ -445,3 +445,46 @@ fn fb_init_arguments_for_a_block_without_fb_init_stay_e0329() {
         ["nofbinit.st:9:17: error[E0329]: `FB_Plain` has no FB_init method to take these arguments"]
     );
 }
+
+/// any_method_override.st: a method with an ANY input called through `pA^` (a `POINTER TO FB_A`,
+/// positional and formal) and on an array element: the call passes the size, class and address
+/// as on an instance (was: no rewrite, the argument 7 landing in the size input). `pA` pointing to
+/// an `FB_B` runs B's override, which reads the argument's first byte through `.pValue`
+/// (7 -> 4 * 100 + 7; INT 5 -> 2 * 100 + 5).
+#[test]
+fn a_methods_any_input_through_a_pointer_to_its_base_and_an_array_element() {
+    let trace = run_files(
+        &[fixture("any_method_override.st")],
+        1,
+        "Main.rA,Main.rB,Main.rViaA,Main.rViaB,Main.rFormal,Main.rElem",
+    );
+    assert_eq!(
+        trace.lines().nth(1),
+        Some("0,0,4,407,4,407,205,205"),
+        "{trace}"
+    );
+}
+
+/// An INTERFACE's method with an ANY input: the implementing block's method (whose ANY input is
+/// split into hidden inputs) does not match the interface's declaration (E0335), and a call through
+/// the interface is one E1068 (its arguments would land in the hidden inputs), never compiled.
+#[test]
+fn a_methods_any_input_through_an_interface_is_refused() {
+    let src = "INTERFACE I_Bag\nMETHOD Contains : BOOL\nVAR_INPUT\n    Item : ANY;\nEND_VAR\nEND_METHOD\nEND_INTERFACE\n\
+FUNCTION_BLOCK FB_Bag IMPLEMENTS I_Bag\nMETHOD Contains : BOOL\nVAR_INPUT\n    Item : ANY;\nEND_VAR\nContains := Item.diSize = 4;\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+PROGRAM Main\nVAR\n    bag : FB_Bag;\n    itf : I_Bag;\n    d : DINT;\n    b : BOOL;\nEND_VAR\nitf := bag;\nb := itf.Contains(d);\nEND_PROGRAM\n";
+    let (code, lines) = check_files(&[("bag.st", src)]);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with("bag.st:9:8: error[E0335]")),
+        "{lines:?}"
+    );
+    assert!(
+        lines.iter().any(|l| l.starts_with(
+            "bag.st:24:6: error[E1068]: a method with ANY inputs called through a place"
+        )),
+        "{lines:?}"
+    );
+}

@@ -167,7 +167,7 @@ pub fn split_decls<'b>(
         }
         let body = body_of(p.name.span).unwrap_or("");
         for b in p.var_blocks.iter_mut() {
-            split_block(b, body);
+            split_block(b, body, false);
         }
     }
 }
@@ -218,7 +218,9 @@ pub fn split_method_inputs(
     for pb in out.iter_mut() {
         for m in pb.methods.iter_mut() {
             for b in m.blocks.iter_mut() {
-                split_block(b, &m.text);
+                // always with the address: an override and the method it overrides share one
+                // signature, whichever of them reads `.pValue`
+                split_block(b, &m.text, true);
             }
         }
     }
@@ -226,8 +228,9 @@ pub fn split_method_inputs(
 }
 
 /// Splits the ANY-family variables of `b`, a VAR_INPUT block, into their hidden inputs (the
-/// address of those whose address the statements `body` need: [`reads_address`]).
-fn split_block(b: &mut crate::ast::VarBlock, body: &str) {
+/// address of those whose address the statements `body` need, [`reads_address`], or of every one
+/// when `always_address`).
+fn split_block(b: &mut crate::ast::VarBlock, body: &str, always_address: bool) {
     if b.kind != VarKind::Input || !b.vars.iter().any(|v| is_any(&v.ty)) {
         return;
     }
@@ -253,7 +256,7 @@ fn split_block(b: &mut crate::ast::VarBlock, body: &str) {
             h.init = None;
             vars.push(h);
         }
-        if reads_address(body, &v.name.name) {
+        if always_address || reads_address(body, &v.name.name) {
             let mut h = v.clone();
             let at = v.name.span;
             h.name = Ident::new(format!("{}{VALUE}", v.name.name), at);
@@ -320,6 +323,16 @@ fn callee_of_call(env: &Env, name: &Ident) -> Option<Callee> {
 /// block being lowered), read from its block's hidden variables `__M_<M>_<input>`; `None` when it
 /// is no method with ANY inputs.
 fn method_inputs_of(env: &Env, callee: &Place) -> Option<Callee> {
+    method_inputs_typed(env, callee, None)
+}
+
+/// [`method_inputs_of`], the block of any other callee (`p^.M`, `a[i].M`, `inst.sub.M`) found
+/// by `type_of` its place before the method's name.
+fn method_inputs_typed(
+    env: &Env,
+    callee: &Place,
+    type_of: Option<&dyn Fn(&Expr) -> Option<TypeRef>>,
+) -> Option<Callee> {
     let PlaceBase::Name(n) = &callee.base else {
         return None;
     };
@@ -332,6 +345,20 @@ fn method_inputs_of(env: &Env, callee: &Place) -> Option<Callee> {
             Some(TypeRef::Named(b)) => (b.name, m),
             _ => return None,
         },
+        [prefix @ .., Accessor::Field(m)] => {
+            let owner = Expr {
+                kind: ExprKind::Place(Place {
+                    base: callee.base.clone(),
+                    accessors: prefix.to_vec(),
+                    span: callee.span,
+                }),
+                span: callee.span,
+            };
+            match type_of.and_then(|t| t(&owner)).map(|t| env.resolve(&t)) {
+                Some(TypeRef::Named(b)) => (b.name, m),
+                _ => return None,
+            }
+        }
         _ => return None,
     };
     let i = env.decls.pou(&block)?;
@@ -344,6 +371,56 @@ fn method_inputs_of(env: &Env, callee: &Place) -> Option<Callee> {
         i.vars.iter().map(|(n, k, _)| (n.as_str(), *k)),
         &prefix,
     )
+}
+
+/// Whether the place before the method's name in `callee` has no function block type that
+/// [`method_inputs_typed`] can read (an INTERFACE, an unknown type).
+fn method_block_unknown(
+    env: &Env,
+    callee: &Place,
+    type_of: &dyn Fn(&Expr) -> Option<TypeRef>,
+) -> bool {
+    let Some((Accessor::Field(_), prefix)) = callee.accessors.split_last() else {
+        return false;
+    };
+    let owner_type = if prefix.is_empty() {
+        let PlaceBase::Name(n) = &callee.base else {
+            return true;
+        };
+        env.var_type(n)
+    } else {
+        type_of(&Expr {
+            kind: ExprKind::Place(Place {
+                base: callee.base.clone(),
+                accessors: prefix.to_vec(),
+                span: callee.span,
+            }),
+            span: callee.span,
+        })
+    };
+    match owner_type.map(|t| env.resolve(&t)) {
+        Some(TypeRef::Named(b)) => env
+            .decls
+            .pou(&b.name)
+            .is_none_or(|i| i.kind != PouKind::FunctionBlock),
+        _ => true,
+    }
+}
+
+/// Whether `callee` ends with the name of a method that some function block of the project
+/// declares with ANY inputs (`x.y.M`, `p^.M`): a call [`rewrite`] must look at.
+fn may_name_any_method(env: &Env, callee: &Place) -> bool {
+    let Some(Accessor::Field(m)) = callee.accessors.last() else {
+        return false;
+    };
+    let prefix = crate::actions::method_var(&m.name, "").to_ascii_uppercase();
+    env.decls.pous.values().any(|i| {
+        i.kind == PouKind::FunctionBlock
+            && i.vars.iter().any(|(n, k, _)| {
+                let up = n.to_ascii_uppercase();
+                *k == VarKind::Input && up.starts_with(&prefix) && up.ends_with(SIZE)
+            })
+    })
 }
 
 /// [`Callee`] of the inputs among `vars` whose names start with `prefix` (upper-case compared),
@@ -422,7 +499,7 @@ fn needs(env: &Env, s: &Stmt) -> bool {
                     return true;
                 }
             }
-            if method_inputs_of(env, callee).is_some() {
+            if method_inputs_of(env, callee).is_some() || may_name_any_method(env, callee) {
                 return true;
             }
             stack.extend(args.iter().map(|a| &a.value));
@@ -524,8 +601,26 @@ pub fn rewrite(
                 PlaceBase::Name(n) if callee.accessors.is_empty() => inputs_of(env, &n.name),
                 _ => None,
             };
-            if let Some(c) = function.or_else(|| method_inputs_of(env, callee)) {
-                r.call(&c, args);
+            match function.or_else(|| method_inputs_typed(env, callee, Some(type_of))) {
+                Some(c) => r.call(&c, args),
+                // a method with ANY inputs on a place whose block is not known here (an
+                // INTERFACE's method, a reference of another kind): its arguments would land
+                // in the hidden inputs, so the call is refused
+                None if may_name_any_method(env, callee)
+                    && method_block_unknown(env, callee, type_of) =>
+                {
+                    r.failed = true;
+                    r.diags.push(
+                        Diagnostic::error(
+                            code::E1068,
+                            "a method with ANY inputs called through a place whose function block ladderc does not know here (an INTERFACE, a pointer of another type)",
+                        )
+                        .at(callee.span)
+                        .with_primary_label("the block of this method is not known")
+                        .with_hint("call the method on an instance of its function block (`inst.M(x)`, `THIS^.M(x)`, `pInst^.M(x)` with `pInst : POINTER TO FB_X`)"),
+                    );
+                }
+                None => {}
             }
             for a in args.iter_mut() {
                 r.expr(&mut a.value);
