@@ -198,18 +198,21 @@ fn reads_address(text: &str, name: &str) -> bool {
 }
 
 /// The pending bodies with each METHOD's ANY-family VAR_INPUTs split as a function's are
-/// ([`split_decls`]; the address when the method's statements need it), before the
-/// methods join their blocks (their hidden inputs become `__M_<METHOD>_<In>__DISIZE` ...);
-/// `None` when no method has one.
+/// ([`split_decls`]; always with the address), before the methods join their blocks (their hidden
+/// inputs become `__M_<METHOD>_<In>__DISIZE` ...), an INTERFACE's methods too (so that the blocks
+/// implementing them match them; a call through an interface is refused by [`rewrite`]); `None`
+/// when no method has one.
 pub fn split_method_inputs(
     pending: &[super::file::PendingBody],
 ) -> Option<Vec<super::file::PendingBody>> {
+    let any_input = |m: &super::file::PendingMethod| {
+        m.blocks
+            .iter()
+            .any(|b| b.kind == VarKind::Input && b.vars.iter().any(|v| is_any(&v.ty)))
+    };
     let has = |pb: &super::file::PendingBody| {
-        pb.methods.iter().any(|m| {
-            m.blocks
-                .iter()
-                .any(|b| b.kind == VarKind::Input && b.vars.iter().any(|v| is_any(&v.ty)))
-        })
+        pb.methods.iter().any(any_input)
+            || matches!(pb.oop.as_deref(), Some(super::inherit::Oop::Interface(i)) if i.methods.iter().any(any_input))
     };
     if !pending.iter().any(has) {
         return None;
@@ -221,6 +224,13 @@ pub fn split_method_inputs(
                 // always with the address: an override and the method it overrides share one
                 // signature, whichever of them reads `.pValue`
                 split_block(b, &m.text, true);
+            }
+        }
+        if let Some(super::inherit::Oop::Interface(i)) = pb.oop.as_deref_mut() {
+            for m in i.methods.iter_mut() {
+                for b in m.blocks.iter_mut() {
+                    split_block(b, "", true);
+                }
             }
         }
     }
