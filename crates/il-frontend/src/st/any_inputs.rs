@@ -336,13 +336,12 @@ fn method_inputs_of(env: &Env, callee: &Place) -> Option<Callee> {
     method_inputs_typed(env, callee, None)
 }
 
+/// The type of an expression, as the lowering knows it.
+type TypeOf<'t> = &'t dyn Fn(&Expr) -> Option<TypeRef>;
+
 /// [`method_inputs_of`], the block of any other callee (`p^.M`, `a[i].M`, `inst.sub.M`) found
 /// by `type_of` its place before the method's name.
-fn method_inputs_typed(
-    env: &Env,
-    callee: &Place,
-    type_of: Option<&dyn Fn(&Expr) -> Option<TypeRef>>,
-) -> Option<Callee> {
+fn method_inputs_typed(env: &Env, callee: &Place, type_of: Option<TypeOf<'_>>) -> Option<Callee> {
     let PlaceBase::Name(n) = &callee.base else {
         return None;
     };
