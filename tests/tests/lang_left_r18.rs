@@ -450,17 +450,19 @@ fn fb_init_arguments_for_a_block_without_fb_init_stay_e0329() {
 /// positional and formal) and on an array element: the call passes the size, class and address
 /// as on an instance (was: no rewrite, the argument 7 landing in the size input). `pA` pointing to
 /// an `FB_B` runs B's override, which reads the argument's first byte through `.pValue`
-/// (7 -> 4 * 100 + 7; INT 5 -> 2 * 100 + 5).
+/// (7 -> 4 * 100 + 7; INT 5 -> 2 * 100 + 5). An ANY input given by position in a call that also
+/// names an output (`b.Probe(i, big => bBig)`, and `THIS^.Probe(w, big => Forward)` passing an ANY
+/// input on: fisothemes' form, was E1068 25 times there) reaches the input.
 #[test]
 fn a_methods_any_input_through_a_pointer_to_its_base_and_an_array_element() {
     let trace = run_files(
         &[fixture("any_method_override.st")],
         1,
-        "Main.rA,Main.rB,Main.rViaA,Main.rViaB,Main.rFormal,Main.rElem",
+        "Main.rA,Main.rB,Main.rViaA,Main.rViaB,Main.rFormal,Main.rElem,Main.rMixed,Main.bBig,Main.bFwdD,Main.bFwdI",
     );
     assert_eq!(
         trace.lines().nth(1),
-        Some("0,0,4,407,4,407,205,205"),
+        Some("0,0,4,407,4,407,205,205,2,0,1,0"),
         "{trace}"
     );
 }

@@ -880,12 +880,14 @@ impl Rewrite<'_, '_> {
     /// A call of a function with ANY inputs: each argument of one replaced by its size and class.
     fn call(&mut self, f: &Callee, args: &mut Vec<Arg>) {
         let inputs = &f.inputs;
-        let formal = args.iter().any(|a| a.name.is_some());
+        // the positional arguments before the first named one (all of a non-formal call; the
+        // leading ones of a call that mixes them, CODESYS's form, W1422)
+        let leading = args.iter().take_while(|a| a.name.is_none()).count();
         let mut out = Vec::with_capacity(args.len() + 2);
         for (k, a) in std::mem::take(args).into_iter().enumerate() {
             let target = match &a.name {
                 Some(n) => inputs.iter().find(|(i, _)| n.is(i)),
-                None if !formal && a.dir == ArgDir::Input => inputs.get(k),
+                None if k < leading && a.dir == ArgDir::Input => inputs.get(k),
                 None => None,
             };
             let Some((input, Some((generic, class_input)))) = target else {
