@@ -329,16 +329,7 @@ fn blark_constructs_run() {
 fn rejected(file: &Path) -> Vec<String> {
     let (code, stderr) = common::check_stderr(file);
     assert_eq!(code, Some(1), "{stderr}");
-    let prefix = format!("{}/", file.parent().unwrap().display());
-    stderr
-        .lines()
-        .filter(|l| l.contains("error["))
-        .map(|l| l.replace(&prefix, ""))
-        .map(|l| {
-            l.split_once(" (hint")
-                .map_or(l.clone(), |(h, _)| h.to_string())
-        })
-        .collect()
+    common::diagnostic_heads(stderr.as_bytes(), file.parent().unwrap(), false)
 }
 
 /// blark's fragments that need what they do not bring, or are not valid: each error located.

@@ -131,18 +131,13 @@ fn rejected(files: &[PathBuf]) -> Vec<String> {
         .args(files)
         .output()
         .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
-    let prefix = format!("{}/", files[0].parent().unwrap().display());
-    stderr
-        .lines()
-        .filter(|l| l.contains("error["))
-        .map(|l| l.replace(&prefix, ""))
-        .map(|l| {
-            l.split_once(" (hint")
-                .map_or(l.clone(), |(h, _)| h.to_string())
-        })
-        .collect()
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    common::diagnostic_heads(&out.stderr, files[0].parent().unwrap(), false)
 }
 
 /// STruCpp's fb_inheritance, fb_abstract and fb_this_super: `METHOD PUBLIC OVERRIDE` and `THIS.x`,
