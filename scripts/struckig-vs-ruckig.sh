@@ -2,8 +2,8 @@
 # Struckig (the TwinCAT port of ruckig) compiled by ladderc, measured against ruckig and motion-lib.
 #
 # Struckig (github stefanbesler/struckig) is GPL-3: it is not in this repository. Give its checkout
-# (or the bare mirror's work tree); the script copies it to a scratch folder, applies the few
-# source edits ladderc still needs (printed below), writes one ST driver program with one
+# (or the bare mirror's work tree); the script copies it to a scratch folder, applies the one
+# source edit ladderc still needs (printed below), writes one ST driver program with one
 # `Struckig.Otg(cycletime := 0.001, dofs := 1)` per oracle case (the first N of each single-axis
 # kind of the ruckig oracle: rest, blend, abort), runs it one scan with
 # `ladderc run driver.st --lib Struckig.plcproj --sanitize`, and prints, case by case, the
@@ -39,17 +39,6 @@ def edit(rel, pairs, why):
         t = t.replace(a, b)
     p.write_text(t, encoding="utf-8")
     print(f"edited {rel}: {why}", file=sys.stderr)
-edit("Otg.TcPOU", [("  _errorId : INT;", "  _errorId : TrajectoryErrorCode;"),
-                   ("  errorId : INT;", "  errorId : TrajectoryErrorCode;"),
-                   ("CASE TRUNC(idx[i] / Dofs)", "CASE (idx[i] / Dofs)")],
-     "a non-strict enumeration passed to an INT (E1006); TRUNC of an integer (E1004)")
-edit("Math/Cbrt.TcPOU", [
-    ("SHL(B1, 32)", "LWORD_TO_ULINT(SHL(ULINT_TO_LWORD(B1), 32))"),
-    ("SHL(B2, 32)", "LWORD_TO_ULINT(SHL(ULINT_TO_LWORD(B2), 32))"),
-    ("LrealFromBits(SHL(J, 54))", "LrealFromBits(LWORD_TO_ULINT(SHL(ULINT_TO_LWORD(J), 54)))"),
-    ("LrealFromBits((LrealBits(t) + AMask) AND Mask)",
-     "LrealFromBits(LWORD_TO_ULINT(ULINT_TO_LWORD(LrealBits(t) + AMask) AND ULINT_TO_LWORD(Mask)))")],
-     "SHL and AND of ULINT values (E1004)")
 for f in ["Velocity/VelocityThirdOrderStep1.TcPOU", "Velocity/VelocitySecondOrderStep1.TcPOU"]:
     edit(f, [("VAR_IN_OUT\n  block : Block; \nEND_VAR", "VAR_INPUT\n  block : REFERENCE TO Block;\nEND_VAR")],
          "a method's VAR_IN_OUT passed on to a REFERENCE TO input (E0305)")

@@ -91,22 +91,29 @@ fn named_values_on_a_non_integer_base_are_rejected() {
     );
 }
 
-/// The values keep the enumeration's semantics: adding to one, or storing an INT into the type
-/// and the type into an INT, are refused as for `(Low := 1, High := 100)`.
+/// The values keep the enumeration's semantics: under `{attribute 'strict'}`, adding to one, or
+/// storing an INT into the type and the type into an INT, are refused as for `(Low := 1, High :=
+/// 100)`; without it they count as their numbers, with one W1439 (CODESYS and TwinCAT;
+/// `tests/tests/codesys_loose_types_run.rs`).
 #[test]
 fn named_values_refuse_arithmetic_and_base_type_stores() {
-    let heads = rejected_heads(
-        "arith.st",
-        "TYPE Lvl : INT (Low := 1, High := 100); END_TYPE\n\
+    let body = "TYPE Lvl : INT (Low := 1, High := 100); END_TYPE\n\
          PROGRAM main\nVAR l : Lvl; n : INT; END_VAR\n\
-         n := l;\nl := 5;\nn := l + 1;\nEND_PROGRAM\n",
-    );
+         n := l;\nl := 5;\nn := l + 1;\nEND_PROGRAM\n";
+    let heads = rejected_heads("arith.st", &format!("{{attribute 'strict'}}\n{body}"));
     assert_eq!(
         heads,
         [
-            "arith.st:4:1: error[E1006]: cannot store Lvl into INT",
-            "arith.st:5:1: error[E1006]: cannot store an integer literal into Lvl",
-            "arith.st:6:6: error[E1004]: ADD is not defined for Lvl",
+            "arith.st:5:1: error[E1006]: cannot store Lvl into INT",
+            "arith.st:6:1: error[E1006]: cannot store an integer literal into Lvl",
+            "arith.st:7:6: error[E1004]: ADD is not defined for Lvl",
         ]
     );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("loose.st");
+    std::fs::write(&f, body).unwrap();
+    let (trace, stderr) = run_traced(&f, 1, "main.l,main.n");
+    // l = 5 (no named value), n := l + 1 = 6
+    assert_eq!(trace.lines().nth(1), Some("0,0,5,6"), "{trace}");
+    assert_eq!(stderr.matches("warning[W1439]").count(), 1, "{stderr}");
 }

@@ -55,6 +55,10 @@ pub struct CompilationUnit {
     /// of one of their values gives the value's name, not its number.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub to_string_types: Vec<Ident>,
+    /// The enumerations declared under `{attribute 'strict'}` (CODESYS, TwinCAT): their values are
+    /// no integers (without it, W1439 converts between them).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub strict_types: Vec<Ident>,
 }
 
 impl CompilationUnit {

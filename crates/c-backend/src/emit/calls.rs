@@ -730,11 +730,14 @@ impl Gen<'_> {
                     return None;
                 }
                 let e = e?;
+                // an integer (CODESYS, TwinCAT; W1438) shifts its bit pattern of the same width,
+                // zero fill: a signed value goes through its unsigned bits (no C shift of a
+                // negative value) and back (two's complement)
                 let h = match e {
-                    E::Byte | E::Usint => "IEC_BYTE",
-                    E::Word | E::Uint => "IEC_WORD",
-                    E::Dword | E::Udint => "IEC_DWORD",
-                    E::Lword | E::Ulint => "IEC_LWORD",
+                    E::Byte | E::Usint | E::Sint => "IEC_BYTE",
+                    E::Word | E::Uint | E::Int => "IEC_WORD",
+                    E::Dword | E::Udint | E::Dint => "IEC_DWORD",
+                    E::Lword | E::Ulint | E::Lint => "IEC_LWORD",
                     _ => {
                         self.unsupported(span, cfmt!("{name} on this type"));
                         return None;

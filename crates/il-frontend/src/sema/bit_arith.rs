@@ -73,4 +73,33 @@ impl Body<'_, '_> {
             .label(format!("this is {b}"))
             .hint(format!("compiled as CODESYS and TwinCAT do ({b} wraps around as {u}); declare the variable {u} for another IEC compiler"));
     }
+
+    /// W1438 at `at`, once per POU: the integer `int` given to the bit-string function `f` (`AND`,
+    /// `SHL` ...), which works on its bit pattern of the same width.
+    pub(super) fn integer_as_bits(&mut self, f: &str, int: Elementary, at: Span) {
+        if self.a.silent || !self.a.integer_bits_pous.insert(self.pou) {
+            return;
+        }
+        let i = int.name();
+        let b = bits_of(int).map_or("a bit string", Elementary::name);
+        self.a
+            .warning(
+                code::W1438,
+                at,
+                format!("{f} of {i}: IEC 61131-3 defines bit-string functions for ANY_BIT only (its other uses in this POU are not reported)"),
+            )
+            .label(format!("this is {i}"))
+            .hint(format!("compiled as CODESYS and TwinCAT do, on the {i}'s bit pattern as {b}; convert with {i}_TO_{b} for another IEC compiler"));
+    }
+}
+
+/// The bit string of an integer's width (`INT` and `UINT` -> `WORD`); `None` for other types.
+pub(super) fn bits_of(e: Elementary) -> Option<Elementary> {
+    match e {
+        E::Sint | E::Usint => Some(E::Byte),
+        E::Int | E::Uint => Some(E::Word),
+        E::Dint | E::Udint => Some(E::Dword),
+        E::Lint | E::Ulint => Some(E::Lword),
+        _ => None,
+    }
 }

@@ -938,6 +938,11 @@ impl Body<'_, '_> {
         let n = self.norm(t);
         match &n {
             Ty::Known(k) if k.is_error() || k.is_bit() => {}
+            // CODESYS, TwinCAT: the complement of an integer's bit pattern (W1438)
+            Ty::Known(Type::Elementary(e)) if super::bit_arith::bits_of(*e).is_some() => {
+                let f = if what == "LDN" { "NOT" } else { what };
+                self.integer_as_bits(f, *e, at);
+            }
             Ty::Lit(v) if !self.lits.is_real(*v) => {}
             _ => {
                 let d = self.describe(&n);

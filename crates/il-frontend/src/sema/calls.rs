@@ -16,6 +16,16 @@ use crate::ast::{self, ArgDir, CallArgs, Condition, Operand, PouKind, VarKind, V
 use crate::Span;
 use diagnostics::code;
 
+/// The smallest real an integer of type `t` converts to implicitly (IEC 61131-3 ed. 3, Figure 11:
+/// SINT, INT, USINT, UINT to REAL; DINT, UDINT to LREAL); `None` for LINT, ULINT and non-integers.
+fn implicit_real(t: &Type) -> Option<Type> {
+    let e = t.elementary().filter(|e| e.is_integer())?;
+    [Elementary::Real, Elementary::Lreal]
+        .into_iter()
+        .find(|r| super::typing::widens(e, *r))
+        .map(Type::Elementary)
+}
+
 /// A generic instantiation: the overload's name, the generic type, the result type.
 pub(super) struct Inst {
     pub(super) name: &'static str,
@@ -65,6 +75,11 @@ impl Body<'_, '_> {
                             let u = super::bit_arith::counted_as(e).unwrap_or(e);
                             counted.push((known.len(), e, *span));
                             known.push((Type::Elementary(u), *span))
+                        }
+                        // IEC 61131-3 (ed. 3, Figure 11): an integer given to an ANY_REAL input
+                        // converts implicitly to the real it widens to (`SQRT(n)` of an INT)
+                        Ty::Known(t) if c == Class::AnyReal => {
+                            known.push((implicit_real(&t).unwrap_or(t), *span))
                         }
                         Ty::Known(t) => known.push((t, *span)),
                         Ty::Lit(v) => lit_args.push((v, *span)),
@@ -122,6 +137,29 @@ impl Body<'_, '_> {
                 result: fixed_result(Ty::ERROR),
             };
         }
+        // CODESYS, TwinCAT: an enumeration without {attribute 'strict'} beside an integer (or an
+        // integer literal) counts as its number: an INT, CODESYS's base type, or a DINT where a
+        // value does not fit INT (W1439)
+        if matches!(
+            class,
+            Class::Any | Class::AnyElementary | Class::AnyNum | Class::AnyInt
+        ) && known
+            .iter()
+            .any(|k| super::loose_enum::is_loose(&self.a.model, &k.0))
+            && (known.iter().any(|k| k.0.is_integer())
+                || lit_args.iter().any(|(v, _)| !self.lits.is_real(*v)))
+        {
+            let mut first = None;
+            for (t, span) in known.iter_mut() {
+                if super::loose_enum::is_loose(&self.a.model, t) {
+                    first.get_or_insert((t.clone(), *span));
+                    *t = super::loose_enum::number_type(&self.a.model, t);
+                }
+            }
+            if let Some((t, span)) = first {
+                self.enum_as_integer(&t, span);
+            }
+        }
         // W1436 when counting the bit strings as unsigned integers gives the inputs a common
         // type; otherwise they are reported as written
         if !counted.is_empty() {
@@ -147,7 +185,17 @@ impl Body<'_, '_> {
             };
             match common {
                 Some(t) => {
-                    if !super::refs::class_admits(f.name, class, &t) {
+                    // CODESYS, TwinCAT: AND, OR, XOR, NOT and the shifts of an integer work on its
+                    // bit pattern (W1438)
+                    let int_bits = class == Class::AnyBit
+                        && t.elementary().and_then(super::bit_arith::bits_of).is_some();
+                    if int_bits {
+                        if let Some(e) = t.elementary() {
+                            let span = known.first().map_or(at, |k| k.1);
+                            self.integer_as_bits(f.name, e, span);
+                        }
+                    }
+                    if !int_bits && !super::refs::class_admits(f.name, class, &t) {
                         let tn = self.a.type_name(&t);
                         let span = known
                             .iter()
@@ -586,6 +634,28 @@ impl Body<'_, '_> {
                     }
                 }
                 Ty::Known(t) if conv.from_class.contains(&t) => Ty::Known(t),
+                // IEC 61131-3 (ed. 3, 6.4.2, Figure 11): an integer converts implicitly to the
+                // real it widens to (`TRUNC(n / 2)` of an INT `n` takes REAL, of a DINT LREAL)
+                Ty::Known(t) if conv.from_class == Class::AnyReal && t.is_integer() => {
+                    match implicit_real(&t) {
+                        Some(r) => Ty::Known(r),
+                        None => {
+                            let tn = self.a.type_name(&t);
+                            self.a
+                                .error(
+                                    code::E1004,
+                                    ispan,
+                                    format!("{cname} is not defined for {tn}"),
+                                )
+                                .label(format!("this is {tn}"))
+                                .hint(format!(
+                                    "{cname} needs {}; {tn} converts implicitly to no real (convert it explicitly)",
+                                    conv.from_class.name()
+                                ));
+                            Ty::ERROR
+                        }
+                    }
+                }
                 Ty::Lit(v) => {
                     let t = if conv.from_class == Class::AnyReal
                         || (conv.from_class == Class::Any && self.lits.is_real(v))

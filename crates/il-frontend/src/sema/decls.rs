@@ -117,6 +117,12 @@ impl Analyzer<'_> {
                 self.model.types[id.0 as usize].to_string = true;
             }
         }
+        // `{attribute 'strict'}` enumerations
+        for n in units.iter().flat_map(|u| u.strict_types.iter()) {
+            if let Some(&id) = self.type_names.get(&n.key()) {
+                self.model.types[id.0 as usize].strict = true;
+            }
+        }
         // Type bodies (structs; aliases are resolved on demand).
         let ids: Vec<TypeId> = (0..self.model.types.len() as u32).map(TypeId).collect();
         for id in ids {
@@ -391,6 +397,7 @@ impl Analyzer<'_> {
             def,
             union: d.union,
             to_string: false,
+            strict: false,
         });
     }
 
@@ -628,6 +635,7 @@ impl Analyzer<'_> {
                     def: UserTypeDef::Enum { values, default },
                     union: false,
                     to_string: false,
+                    strict: false,
                 });
                 Type::Enum(id)
             }

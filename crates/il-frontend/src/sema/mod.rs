@@ -12,6 +12,7 @@ mod bit_arith;
 mod body;
 mod calls;
 mod decls;
+mod loose_enum;
 mod memory;
 pub mod model;
 pub mod nesting;
@@ -63,6 +64,8 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         reinterpreting_pous: std::collections::HashSet::new(),
         passing_any_address: false,
         counting_bit_string_pous: std::collections::HashSet::new(),
+        integer_bits_pous: std::collections::HashSet::new(),
+        loose_enum_pous: std::collections::HashSet::new(),
         copying_instance_pous: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
@@ -124,6 +127,10 @@ pub(crate) struct Analyzer<'d> {
     /// The POUs where W1436 (a bit string counted as an unsigned integer) was reported: once per
     /// POU.
     pub(crate) counting_bit_string_pous: std::collections::HashSet<PouId>,
+    /// The POUs where W1438 (an integer used as a bit string) was reported: once per POU.
+    pub(crate) integer_bits_pous: std::collections::HashSet<PouId>,
+    /// The POUs where W1439 (an enumeration used as an integer) was reported: once per POU.
+    pub(crate) loose_enum_pous: std::collections::HashSet<PouId>,
     /// The POUs where W1437 (an FB instance copied whole) was reported: once per POU.
     pub(crate) copying_instance_pous: std::collections::HashSet<PouId>,
 }

@@ -749,6 +749,10 @@ pub struct UserType {
     /// `TO_WSTRING` of its values give their names; without it, their numbers.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub to_string: bool,
+    /// An enumeration declared under `{attribute 'strict'}` (CODESYS, TwinCAT): its values are no
+    /// integers; without it, an enumerated value and an integer convert into each other (W1439).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub strict: bool,
 }
 
 /// What a user data type is, resolved.

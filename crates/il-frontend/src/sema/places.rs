@@ -307,6 +307,11 @@ impl Body<'_, '_> {
                     }
                     return true;
                 }
+                if super::loose_enum::assignable_loose(&self.a.model, &t, to) {
+                    let e = if matches!(t, Type::Enum(_)) { &t } else { to };
+                    self.enum_as_integer(&e.clone(), at);
+                    return true;
+                }
                 let (f, tt) = (self.a.type_name(&t), self.a.type_name(to));
                 mismatch(self, &f, &tt);
                 false
@@ -346,6 +351,16 @@ impl Body<'_, '_> {
                             "{t} holds magnitudes up to 3.4028235E38; write a smaller value or use LREAL"
                         ));
                     false
+                }
+                // CODESYS, TwinCAT: an integer literal into an enumeration without {attribute
+                // 'strict'} (W1439)
+                Err(BindError::Kind { .. })
+                    if super::loose_enum::is_loose(&self.a.model, to)
+                        && !self.lits.is_real(v)
+                        && self.lits.bind(v, &Type::DINT).is_ok() =>
+                {
+                    self.enum_as_integer(to, at);
+                    true
                 }
                 Err(BindError::Kind { .. }) => {
                     let (f, t) = (self.lits.describe(v), self.a.type_name(to));

@@ -1209,6 +1209,7 @@ pub fn parse_text(
     // ST bodies by the ST parser), and blanked for the declarations' reader; an `{attribute
     // 'to_string'}` is read (the first type declared after it gets it)
     let mut to_string_at: Vec<usize> = Vec::new();
+    let mut strict_at: Vec<usize> = Vec::new();
     for pr in &problems {
         if let Problem::FlatComment(r) = pr {
             if !st_bodies
@@ -1227,8 +1228,10 @@ pub fn parse_text(
                 .any(|p| p.body.start <= r.start && r.end <= p.body.end)
             {
                 let pragma = src.get(r.clone()).unwrap_or("{}");
-                if is_to_string(pragma) {
+                if is_attribute(pragma, "to_string") {
                     to_string_at.push(r.end);
+                } else if is_attribute(pragma, "strict") {
+                    strict_at.push(r.end);
                 } else if !super::fb_init::is_call_after_init(pragma) {
                     diags.push(pragma_diagnostic(pragma, Span::new(file, r.start, r.end)));
                 }
@@ -1518,7 +1521,10 @@ pub fn parse_text(
     let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
     super::var_stat::name_blocks(&mut unit, file, &stat_at);
     references.apply(&mut unit, &mut local);
-    mark_to_string(&mut unit, &to_string_at);
+    let marked = types_after(&unit, &to_string_at);
+    unit.to_string_types.extend(marked);
+    let marked = types_after(&unit, &strict_at);
+    unit.strict_types.extend(marked);
     match unclosed {
         Some(at) => diags.extend(local.into_vec().into_iter().filter(|d| {
             !(d.code == code::E0008 && d.span.is_some_and(|s| s.start as usize >= at))
@@ -2388,33 +2394,36 @@ fn begin_il_section(src: &str, body: std::ops::Range<usize>) -> Option<usize> {
     None
 }
 
-/// Whether a pragma is `{attribute 'to_string'}` (CODESYS, TwinCAT: `TO_STRING` of the enumeration
-/// declared below it gives the value's name).
-fn is_to_string(pragma: &str) -> bool {
+/// Whether a pragma is `{attribute 'name'}` (`name` in lower case): `'to_string'` (CODESYS, TwinCAT:
+/// `TO_STRING` of the enumeration declared below it gives the value's name), `'strict'` (its
+/// values are no integers).
+fn is_attribute(pragma: &str, name: &str) -> bool {
     let p = pragma.to_ascii_lowercase();
     let p = p.trim_start_matches('{').trim_end_matches('}').trim();
-    p.strip_prefix("attribute")
-        .is_some_and(|rest| rest.trim() == "'to_string'")
+    p.strip_prefix("attribute").is_some_and(|rest| {
+        rest.trim()
+            .strip_prefix('\'')
+            .and_then(|r| r.strip_suffix('\''))
+            == Some(name)
+    })
 }
 
-/// Gives each `{attribute 'to_string'}` ending at an offset of `ends` to the first type declared
-/// after it in `unit` (an attribute is written on the line above its TYPE).
-fn mark_to_string(unit: &mut CompilationUnit, ends: &[usize]) {
+/// The first type declared after each attribute ending at an offset of `ends` in `unit` (an
+/// attribute is written on the line above its TYPE).
+fn types_after(unit: &CompilationUnit, ends: &[usize]) -> Vec<crate::ast::Ident> {
     if ends.is_empty() {
-        return;
+        return Vec::new();
     }
     let types: Vec<&crate::ast::TypeDecl> = unit.type_decls().collect();
-    let mut marked = Vec::new();
-    for &end in ends {
-        if let Some(t) = types
-            .iter()
-            .filter(|t| t.name.span.start as usize >= end)
-            .min_by_key(|t| t.name.span.start)
-        {
-            marked.push(t.name.clone());
-        }
-    }
-    unit.to_string_types.extend(marked);
+    ends.iter()
+        .filter_map(|&end| {
+            types
+                .iter()
+                .filter(|t| t.name.span.start as usize >= end)
+                .min_by_key(|t| t.name.span.start)
+                .map(|t| t.name.clone())
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -685,7 +685,7 @@ pub fn pragma_diagnostic(text: &str, span: crate::Span) -> diagnostics::Diagnost
             format!("pragma `{shown}` is informational and is ignored"),
         )
         .at(span)
-        .with_hint("of the attributes ladderc reads only 'to_string' and 'call_after_init'; this pragma changes nothing in the compiled program"),
+        .with_hint("of the attributes ladderc reads only 'to_string', 'strict' and 'call_after_init'; this pragma changes nothing in the compiled program"),
         PragmaKind::Code => Diagnostic::warning(
             code::W0300,
             format!("pragma `{shown}` holds code that does not run"),

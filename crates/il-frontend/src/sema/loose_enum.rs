@@ -1,0 +1,82 @@
+//! Enumerations without `{attribute 'strict'}` used as integers (CODESYS, TwinCAT): `CASE nErr OF
+//! E_Err.Timeout: ...` of an INT `nErr`, `AbortErrorId(errorId := E_Err.Timeout)` into an INT
+//! input, `ErrorCode := _errorId` storing an INT into an enumeration.
+//!
+//! IEC 61131-3 (ed. 3, 6.4.4.3) types enumerations strongly: a value is no number. CODESYS and
+//! TwinCAT convert between an enumeration and an integer implicitly unless the type is declared
+//! under `{attribute 'strict'}` (their DUT editor adds it; older code and libraries such as Struckig
+//! have none). ladderc does so, with one W1439 per POU; a strict enumeration keeps IEC's rule.
+//!
+//! Input: the types an assignment, an input or a generic function (comparison, arithmetic) sees.
+//! Output: whether they meet through the enumeration's number, and W1439 once per POU. Invariant:
+//! an enumerated value is held as a DINT (c-backend), so an integer is stored into a loose
+//! enumeration only where it widens to DINT, and a value leaves it only into an integer that holds
+//! every value declared.
+
+use super::body::Body;
+use super::model::{Elementary, Model, Type, UserTypeDef};
+use super::typing::widens;
+use crate::Span;
+use diagnostics::code;
+
+/// The values of `t` if it is an enumeration declared without `{attribute 'strict'}`.
+fn loose_values<'m>(model: &'m Model, t: &Type) -> Option<&'m [(String, i128)]> {
+    let Type::Enum(id) = t else { return None };
+    let ut = model.user_type(*id);
+    match &ut.def {
+        UserTypeDef::Enum { values, .. } if !ut.strict => Some(values),
+        _ => None,
+    }
+}
+
+/// Whether `t` is an enumeration declared without `{attribute 'strict'}`.
+pub(super) fn is_loose(model: &Model, t: &Type) -> bool {
+    loose_values(model, t).is_some()
+}
+
+/// The integer type a loose enumeration counts as beside integers: INT (CODESYS's and TwinCAT's
+/// default base type) when every value fits it, else DINT.
+pub(super) fn number_type(model: &Model, t: &Type) -> Type {
+    let fits_int = loose_values(model, t).is_some_and(|vs| {
+        vs.iter()
+            .all(|(_, v)| i128::from(i16::MIN) <= *v && *v <= i128::from(i16::MAX))
+    });
+    if fits_int {
+        Type::INT
+    } else {
+        Type::DINT
+    }
+}
+
+/// Whether a value of `from` may be stored into `to` through an enumeration's number: a loose
+/// enumeration into an integer that holds all its values, an integer that widens to DINT into a
+/// loose enumeration.
+pub(super) fn assignable_loose(model: &Model, from: &Type, to: &Type) -> bool {
+    if let (Some(values), Some(t)) = (loose_values(model, from), to.elementary()) {
+        if let (true, Some((lo, hi))) = (t.is_integer(), t.int_range()) {
+            return values.iter().all(|(_, v)| lo <= *v && *v <= hi);
+        }
+    }
+    if let (Some(f), true) = (from.elementary(), is_loose(model, to)) {
+        return f.is_integer() && widens(f, Elementary::Dint);
+    }
+    false
+}
+
+impl Body<'_, '_> {
+    /// W1439 at `at`, once per POU: the enumeration `t` and an integer met through its number.
+    pub(super) fn enum_as_integer(&mut self, t: &Type, at: Span) {
+        if self.a.silent || !self.a.loose_enum_pous.insert(self.pou) {
+            return;
+        }
+        let n = self.a.type_name(t);
+        self.a
+            .warning(
+                code::W1439,
+                at,
+                format!("the enumeration {n} used as an integer: IEC 61131-3 enumerations are no numbers (its other uses in this POU are not reported)"),
+            )
+            .label("an enumerated value and an integer meet here")
+            .hint(format!("compiled as CODESYS and TwinCAT do for an enumeration without {{attribute 'strict'}} (its number); convert with TO_DINT or declare the variable {n} for another IEC compiler"));
+    }
+}
