@@ -2,8 +2,8 @@
 # Struckig (the TwinCAT port of ruckig) compiled by ladderc, measured against ruckig and motion-lib.
 #
 # Struckig (github stefanbesler/struckig) is GPL-3: it is not in this repository. Give its checkout
-# (or the bare mirror's work tree); the script copies it to a scratch folder, applies the one
-# source edit ladderc still needs (printed below), writes one ST driver program with one
+# (or the bare mirror's work tree); the script copies it to a scratch folder (unedited: since
+# Session 36 ladderc compiles the library as it is), writes one ST driver program with one
 # `Struckig.Otg(cycletime := 0.001, dofs := 1)` per oracle case (the first N of each single-axis
 # kind of the ruckig oracle: rest, blend, abort), runs it one scan with
 # `ladderc run driver.st --lib Struckig.plcproj --sanitize`, and prints, case by case, the
@@ -26,23 +26,6 @@ work=$(mktemp -d)
 [ "${KEEP:-}" = 1 ] || trap 'rm -rf "$work"' EXIT
 
 cp -r "$src/Struckig" "$work/"
-python3 - "$work" <<'EOF'
-# Source edits of the copy, for the forms ladderc does not compile yet.
-import pathlib, sys
-S = pathlib.Path(sys.argv[1]) / "Struckig/Struckig/Struckig/Struckig"
-def edit(rel, pairs, why):
-    p = S / rel
-    t = p.read_text(encoding="utf-8-sig")
-    for a, b in pairs:
-        if a not in t:
-            sys.exit(f"edit: `{a}` not found in {rel} (another Struckig version?)")
-        t = t.replace(a, b)
-    p.write_text(t, encoding="utf-8")
-    print(f"edited {rel}: {why}", file=sys.stderr)
-for f in ["Velocity/VelocityThirdOrderStep1.TcPOU", "Velocity/VelocitySecondOrderStep1.TcPOU"]:
-    edit(f, [("VAR_IN_OUT\n  block : Block; \nEND_VAR", "VAR_INPUT\n  block : REFERENCE TO Block;\nEND_VAR")],
-         "a method's VAR_IN_OUT passed on to a REFERENCE TO input (E0305)")
-EOF
 
 python3 - "$oracle" "$work" "$per_kind" <<'EOF'
 # The driver: one Otg per case, its limits and states as the declaration's initial value.

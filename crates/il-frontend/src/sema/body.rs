@@ -167,6 +167,10 @@ pub(super) struct Body<'a, 'd> {
     /// The generic type a typed name fixes (`ADD_INT`: INT) for the call being instantiated: literals
     /// alone take it instead of their default type.
     pub(super) typed_generic: Option<Type>,
+    /// The hidden `REFERENCE TO` inputs of the block's own methods that a call binds to what may
+    /// live for one call (a VAR_IN_OUT, a temporary: `crate::st::refs::REF_ASSIGN_CALL`), by
+    /// upper-case name: no reference may be kept through them (E0305).
+    pub(super) scoped_refs: std::collections::HashSet<String>,
 }
 
 impl Analyzer<'_> {
@@ -189,7 +193,9 @@ impl Analyzer<'_> {
             pos: 0,
             result_written: false,
             typed_generic: None,
+            scoped_refs: Default::default(),
         };
+        b.scope_reference_inputs(&pou.body);
         // Pass 1, silent: what the backward jumps bring. Without backward jumps it would find nothing
         // (its only other effects, name resolutions and `result_written`, pass 2 repeats), so it is
         // skipped.

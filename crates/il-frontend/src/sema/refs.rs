@@ -170,8 +170,30 @@ impl Body<'_, '_> {
         if place.ty.is_error() {
             return Ty::ERROR;
         }
+        if !r.call_scoped && self.scoped_refs.contains(&v.base.key()) {
+            let input = shown_method_var(&v.base.name);
+            // as written: `block.n`, not the hidden `__M_CALC_BLOCK^.n`
+            let path = crate::print::var_ref_text(v)
+                .replacen(&format!("{}^", v.base.name), input, 1)
+                .replacen(&v.base.name, input, 1);
+            self.a
+                .error(
+                    code::E0305,
+                    r.span,
+                    format!("a reference to `{path}` is not allowed: the method's `{input}` may refer to a VAR_IN_OUT or a temporary of a caller, which lives for one call"),
+                )
+                .label("a reference kept through it")
+                .hint(format!("`{input}` is given a VAR_IN_OUT (or a temporary) of a calling method and is read during the call only: pass it on to a method of the block, or copy the value"));
+            return Ty::ERROR;
+        }
         if let Some(why) = self.not_referable(v, r.call_scoped) {
             let path = crate::print::var_ref_text(v);
+            // a method's variable as written (`block.Pmin`, not `__M_GET_BLOCK.Pmin`)
+            let path = if v.base.name.starts_with(crate::actions::METHOD_PREFIX) {
+                path.replacen(&v.base.name, shown_method_var(&v.base.name), 1)
+            } else {
+                path
+            };
             self.a
                 .error(
                     code::E0305,
@@ -183,6 +205,64 @@ impl Body<'_, '_> {
             return Ty::ERROR;
         }
         Ty::Known(Type::Ref(Box::new(place.ty)))
+    }
+
+    /// Finds [`Body::scoped_refs`]: the hidden inputs a call-scoped `LD REF(v)` / `ST __M_M_X` pair
+    /// binds to a `v` that may live for one call, or that is reached through another such input
+    /// (`AddInterval(block.A)` inside `CalculateBlock(block)`), to a fixpoint.
+    pub(super) fn scope_reference_inputs(&mut self, body: &[ast::IlStmt]) {
+        use ast::{IlStmt, InstrKind, Op};
+        let mut bindings: Vec<(String, &ast::VarRef)> = Vec::new();
+        for w in body.windows(2) {
+            let (
+                IlStmt::Instr(ast::Instruction {
+                    kind:
+                        InstrKind::Simple {
+                            op: Op::Ld,
+                            negate: false,
+                            operand: Some(ast::Operand::Ref(r)),
+                        },
+                    ..
+                }),
+                IlStmt::Instr(ast::Instruction {
+                    kind:
+                        InstrKind::Simple {
+                            op: Op::St,
+                            negate: false,
+                            operand: Some(ast::Operand::Var(x)),
+                        },
+                    ..
+                }),
+            ) = (&w[0], &w[1])
+            else {
+                continue;
+            };
+            if let (true, Some(v), true) = (
+                r.call_scoped,
+                &r.of,
+                x.accessors.is_empty() && x.base.name.starts_with(crate::actions::METHOD_PREFIX),
+            ) {
+                bindings.push((x.base.key(), v));
+            }
+        }
+        if bindings.is_empty() {
+            return;
+        }
+        loop {
+            let mut grown = false;
+            for (x, v) in &bindings {
+                if !self.scoped_refs.contains(x)
+                    && (self.scoped_refs.contains(&v.base.key())
+                        || self.not_referable(v, false).is_some())
+                {
+                    self.scoped_refs.insert(x.clone());
+                    grown = true;
+                }
+            }
+            if !grown {
+                break;
+            }
+        }
     }
 
     /// `SIZEOF(x)` / `SIZEOF(T)` (CODESYS, TwinCAT): an unsigned integer typed by its context, as
@@ -299,6 +379,18 @@ impl Body<'_, '_> {
                 None
             }
         }
+    }
+}
+
+/// A method's hidden variable `__M_<METHOD>_<VAR>` as the user wrote it (`<VAR>`, where the method's
+/// name holds no `_`; else the hidden name after `__M_`).
+fn shown_method_var(hidden: &str) -> &str {
+    let rest = hidden
+        .strip_prefix(crate::actions::METHOD_PREFIX)
+        .unwrap_or(hidden);
+    match rest.split_once('_') {
+        Some((_, var)) if !var.is_empty() => var,
+        _ => rest,
     }
 }
 

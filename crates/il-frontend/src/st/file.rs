@@ -2237,6 +2237,24 @@ fn lower_method_as(
         add_local_fb_inits(m, &mut stmts);
     }
     let mut low = super::PouLowering::new(decls, &view);
+    // its REFERENCE TO variables that start again at each call (not VAR_INST, not VAR_STAT)
+    low.per_call_refs = m
+        .blocks
+        .iter()
+        .filter(|b| matches!(b.kind, VarKind::Local | VarKind::Temp) && b.name.is_none())
+        .flat_map(|b| b.vars.iter())
+        .filter(|v| !m.inst.contains(&v.name.key()))
+        .filter(|v| {
+            matches!(
+                v.ty,
+                crate::ast::TypeRef::Ref {
+                    kind: crate::ast::RefKind::Reference,
+                    ..
+                }
+            )
+        })
+        .map(|v| v.name.key())
+        .collect();
     let mut body = low.statements(&stmts, diags);
     if let Some(t) = low.finish(m.name.span) {
         let mut t: VarBlock = t;

@@ -101,6 +101,12 @@ pub struct PouLowering<'d> {
     /// Set while a call statement's function call is lowered: its value is not used (a FUNCTION
     /// without result type may stand there, nowhere else: E0354).
     result_dropped: bool,
+    /// A METHOD's `REFERENCE TO` variables (VAR, VAR_TEMP; upper-case) that start again at each
+    /// call: `p REF= block.Pmin` into one is call-scoped (see `refs::REF_ASSIGN_CALL`), so it may
+    /// refer to the method's VAR_IN_OUT, and sema keeps no reference through it (E0305).
+    pub(super) per_call_refs: std::collections::HashSet<String>,
+    /// Set while the value of an assignment to one of [`Self::per_call_refs`] is lowered.
+    per_call_target: bool,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -232,6 +238,8 @@ impl<'d> PouLowering<'d> {
             raw_refs: false,
             mixed_args_reported: false,
             result_dropped: false,
+            per_call_refs: Default::default(),
+            per_call_target: false,
             reference_to: decls.has_reference_to()
                 || pou.var_blocks.iter().any(|b| {
                     b.vars
@@ -354,6 +362,8 @@ impl<'d> PouLowering<'d> {
         let mut before = Vec::new();
         let mut after = Vec::new();
         let mut in_outs = Vec::new();
+        // the REFERENCE TO inputs bound for this call: reset to NULL when it returns
+        let mut bound_refs = Vec::new();
         let mut positional = sig.inputs.iter();
         for a in args {
             let (param, list) = match (&a.dir, &a.name) {
@@ -384,8 +394,8 @@ impl<'d> PouLowering<'d> {
                 ArgDir::Input if sig.in_outs.iter().any(|i| i.eq_ignore_ascii_case(&param)) => {
                     in_outs.push((param, a));
                 }
-                // a REFERENCE TO input refers to the argument (`q REF= v`), as in a call of
-                // the method from outside; any other input takes its value
+                // a REFERENCE TO input refers to the argument for this call (`q REF= v`, call-
+                // scoped: see `refs::REF_ASSIGN_CALL`); any other input takes its value
                 ArgDir::Input => before.push(Stmt {
                     kind: StmtKind::Assign {
                         value: match self
@@ -397,7 +407,13 @@ impl<'d> PouLowering<'d> {
                                 ..
                             }) if matches!(a.value.kind, ExprKind::Place(_)) => Expr {
                                 kind: ExprKind::Call {
-                                    name: Ident::new(super::refs::REF_ASSIGN, a.span),
+                                    name: {
+                                        bound_refs.push(Ident::new(
+                                            crate::actions::method_var(&sig.name, &param),
+                                            a.span,
+                                        ));
+                                        Ident::new(super::refs::REF_ASSIGN_CALL, a.span)
+                                    },
                                     args: vec![Arg {
                                         name: None,
                                         dir: ArgDir::Input,
@@ -460,6 +476,17 @@ impl<'d> PouLowering<'d> {
             },
             span,
         ));
+        for hidden in &bound_refs {
+            out.push(ld(
+                Operand::Ref(Box::new(il::RefOperand {
+                    of: None,
+                    span,
+                    call_scoped: false,
+                })),
+                span,
+            ));
+            out.push(simple(Op::St, false, Some(var_operand(hidden)), span));
+        }
         self.stmt_list(&after, out, diags);
         self.types.get_mut().clear();
     }
@@ -743,7 +770,12 @@ impl<'d> PouLowering<'d> {
                 self.raw_refs = true;
                 let place = self.place_operand(target, &mut code, diags);
                 self.raw_refs = false;
+                self.per_call_target = target.accessors.is_empty()
+                    && target
+                        .name()
+                        .is_some_and(|n| self.per_call_refs.contains(&n.key()));
                 let value = self.reference(value, None, &mut code, diags);
+                self.per_call_target = false;
                 if let (Some(p), Some(v), false) = (place, value, self.poisoned) {
                     code.push(ld(v, span));
                     code.push(simple(Op::St, false, Some(p), span));
@@ -1592,7 +1624,9 @@ impl<'d> PouLowering<'d> {
             .map(|h| self.env().resolve(h));
         let place = match (&e.kind, &expected) {
             (ExprKind::Call { name, args }, _)
-                if super::refs::is_address_of(name) || name.is(super::refs::REF_ASSIGN) =>
+                if super::refs::is_address_of(name)
+                    || name.is(super::refs::REF_ASSIGN)
+                    || name.is(super::refs::REF_ASSIGN_CALL) =>
             {
                 match &args[..] {
                     [Arg {
@@ -1674,8 +1708,10 @@ impl<'d> PouLowering<'d> {
             _ => return None,
         };
         // (`st::varlen`'s address of an array passed to a function's or method's ARRAY [*])
-        let call_scoped =
-            matches!(&e.kind, ExprKind::Call { name, .. } if name.is(super::varlen::CALL_ADDRESS));
+        // (and a `REFERENCE TO` input of the block's own method bound for one call)
+        let call_scoped = self.per_call_target
+            || matches!(&e.kind, ExprKind::Call { name, .. }
+            if name.is(super::varlen::CALL_ADDRESS) || name.is(super::refs::REF_ASSIGN_CALL));
         match self.place_operand(place, out, diags)? {
             Operand::Var(v) => Some(Operand::Ref(Box::new(il::RefOperand {
                 of: Some(v),
@@ -2759,5 +2795,6 @@ fn place_exprs<'p>(p: &'p mut Place, out: &mut Vec<&'p mut Expr>) {
 
 /// Whether an assignment's value is `REF= x` (see [`super::refs::REF_ASSIGN`]).
 fn is_ref_assign(value: &Expr) -> bool {
-    matches!(&value.kind, ExprKind::Call { name, .. } if name.is(super::refs::REF_ASSIGN))
+    matches!(&value.kind, ExprKind::Call { name, .. }
+        if name.is(super::refs::REF_ASSIGN) || name.is(super::refs::REF_ASSIGN_CALL))
 }

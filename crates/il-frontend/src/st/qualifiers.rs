@@ -49,7 +49,7 @@ thread_local! {
 }
 
 /// The namespaces of the user libraries read with the project (`Struckig` of `Struckig.Otg`),
-/// known to [`library_qualifiers`] while the guard lives: `UserLibraries::set(names)`.
+/// known to `library_qualifiers` while the guard lives: `UserLibraries::set(names)`.
 pub struct UserLibraries {
     before: std::collections::HashSet<String>,
 }

@@ -28,6 +28,12 @@ pub const IS_VALID_REF: &str = "__ISVALIDREF";
 /// The callee name `r REF= x` is parsed into (`r := REF=(x)`; no identifier can be written so).
 pub const REF_ASSIGN: &str = "REF=";
 
+/// `REF=` binding a `REFERENCE TO` input of the block's own method for one call (`CalculateBlock(block)`
+/// inside a method of the block): the reference is call-scoped ([`crate::ast::RefOperand::call_scoped`]),
+/// so it may refer to a VAR_IN_OUT or a temporary of the caller, and the input is reset to NULL when
+/// the call returns; sema refuses a reference kept through such an input (E0305).
+pub const REF_ASSIGN_CALL: &str = "REF=CALL";
+
 /// Whether `name` is `REF` (edition 3) or `ADR` (CODESYS, TwinCAT): the address of its argument.
 pub fn is_address_of(name: &crate::ast::Ident) -> bool {
     name.is("REF") || name.is("ADR") || name.is(super::varlen::CALL_ADDRESS)

@@ -25,7 +25,7 @@
 //! statement being lowered. Output: the declarations split; the statements rewritten.
 //! Invariants: only VAR_IN_OUTs of FUNCTIONs, FUNCTION_BLOCKs and METHODs whose every dimension is
 //! `*` are split; a statement is looked at without recursion first, and one of more than
-//! [`MAX_NODES`] nodes (already E0109) is left as it is (any other `ARRAY [*]` reaches sema, which reports E1072); a statement that holds
+//! `MAX_NODES` nodes (already E0109) is left as it is (any other `ARRAY [*]` reaches sema, which reports E1072); a statement that holds
 //! no such parameter and no call of a POU that has one is not touched; a rewritten statement holds
 //! no rewritable part any more.
 
