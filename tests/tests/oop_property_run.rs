@@ -87,9 +87,23 @@ fn a_property_misused_is_one_located_error_each() {
              a property is code, not a variable",
             "p.st:28:1: error[E0338]: a component of property `Pos` cannot be written: the \
              property's value is a copy",
-            "p.st:30:26: error[E0108]: a property read in an UNTIL condition is not supported",
         ]
     );
+}
+
+/// A property read in an UNTIL condition (Struckig's tests: `UNTIL otg.State <> ... Busy
+/// END_REPEAT`; E0108 before Session 36): its getter runs before each test, also after a CONTINUE.
+/// `Step` counts 1, 2, ... and the loop ends at 5 in the first scan (5 rounds, the even counts 2
+/// and 4 skipped by CONTINUE, 10 getter calls: one in the body and one in the test per round), at
+/// 6 in the second.
+#[test]
+fn a_property_read_in_an_until_condition_runs_its_getter_before_each_test() {
+    let (trace, stderr) = run(&fixture("until.st"), 2, "main.loops,main.skipped,main.gets");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.loops,main.skipped,main.gets\n0,0,5,2,10\n1,10,6,3,12\n"
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
 }
 
 #[test]

@@ -275,3 +275,14 @@ fn a_very_long_statement_with_a_variable_length_array_is_rejected_without_a_cras
     assert_eq!(code, Some(1), "{lines:?}");
     assert!(lines[0].contains("error[E0109]"), "{lines:?}");
 }
+
+/// Struckig's tests call TcUnit's `AssertArrayEquals_LREAL(otg.CurrentPosition, NewPosition, 1E-9,
+/// message := '...')`: the arrays by position, in a call that names a later argument (CODESYS's
+/// mixed form). Before, both in-outs were E1071 "not given" (62 errors in Struckig_unittest). The
+/// sum of |a[i] - b[i]| + Delta over [0..2] is 0.5 + 3 * 0.25 = 1.25; the upper bound is 2.
+#[test]
+fn positional_arrays_in_a_call_that_names_a_later_argument() {
+    let (trace, stderr) = run_traced(&fixture("mixed_positional.st"), 1, "main.d.sum,main.d.n");
+    assert_eq!(trace, "cycle,time_ms,main.d.sum,main.d.n\n0,0,1.25,2\n");
+    assert!(!stderr.contains("error["), "{stderr}");
+}

@@ -166,6 +166,11 @@ pub struct PendingBody {
     /// Not a POU's body: the methods (in `methods`) of a file that holds them without their block,
     /// `Block.Method.st` ([`super::lone_members`]), until they are attached to it.
     pub lone: Option<Box<super::lone_members::LoneMembers>>,
+    /// The run-time initial values of the POU's own VAR / VAR_TEMP variables (a function called:
+    /// `n : UDINT := MIN(250000, k / 25);`, CODESYS and TwinCAT), as assignments where they are
+    /// written, and the text's offset in the file ([`super::method_inits::pou_run_time_inits`]):
+    /// run before the instance's FB_init and, where that does not reach, when the POU first runs.
+    pub var_inits: Option<(String, usize)>,
 }
 
 impl PendingBody {
@@ -184,6 +189,7 @@ impl PendingBody {
             fb_init_args: Vec::new(),
             after_init: Vec::new(),
             lone: None,
+            var_inits: None,
         }
     }
 
@@ -1278,6 +1284,7 @@ pub fn parse_text(
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
                 lone: None,
+                var_inits: None,
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1331,6 +1338,7 @@ pub fn parse_text(
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
                 lone: None,
+                var_inits: None,
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1476,8 +1484,43 @@ pub fn parse_text(
                     blank(&mut body, pr.whole.clone());
                 }
                 if let Some(super::inherit::Oop::Block(b)) = &mut oop {
-                    b.deferred = deferred.into_vec();
+                    // a bound naming another file's constant (E0022) is reported now: the file is
+                    // then read again with the other files' constants known (Struckig's tests:
+                    // `ARRAY[0..ParameterList.MaxDoFs]` in a method of a TcUnit test suite)
+                    let (now, later): (Vec<_>, Vec<_>) = deferred
+                        .into_vec()
+                        .into_iter()
+                        .partition(|d| d.code == code::E0022);
+                    diags.extend(now);
+                    b.deferred = later;
                 }
+                // the run-time initial values of its own variables: assignments, left out of the
+                // declarations
+                let from = p.name_range.end;
+                // (the keyword before the name, past modifiers: `FUNCTION_BLOCK PUBLIC B`)
+                let function = src
+                    .get(..p.name_range.start)
+                    .unwrap_or("")
+                    .split_whitespace()
+                    .rev()
+                    .take(3)
+                    .find(|w| {
+                        ["FUNCTION", "FUNCTION_BLOCK", "PROGRAM", "CLASS"]
+                            .iter()
+                            .any(|k| w.eq_ignore_ascii_case(k))
+                    })
+                    .is_some_and(|w| w.eq_ignore_ascii_case("FUNCTION"));
+                let found = (from < p.body.start)
+                    .then(|| {
+                        super::method_inits::pou_run_time_inits(&text, from..p.body.start, function)
+                    })
+                    .flatten();
+                let var_inits = found.map(|(cut, inits)| {
+                    for r in cut {
+                        blank(&mut text, r);
+                    }
+                    (inits, from)
+                });
                 pending.push(PendingBody {
                     file,
                     name_start: p.name_range.start,
@@ -1490,6 +1533,7 @@ pub fn parse_text(
                     fb_init_args: Vec::new(),
                     after_init: super::fb_init::after_init_methods(file, src, p, diags),
                     lone: None,
+                    var_inits,
                 });
                 blank(&mut text, p.body.clone());
             }
@@ -1827,10 +1871,34 @@ pub fn compile_pending(
                 if let Some(t) = temps {
                     p.var_blocks.push(t);
                 }
-                // interface variables with an initial value: assigned when the POU first runs
+                // interface variables with an initial value, and variables whose initial value
+                // calls a function: assigned when the POU first runs
                 let own: Vec<&super::interface_vars::Init> =
                     inits.iter().filter(|i| i.pou == p.name.span).collect();
-                let init = super::interface_vars::initial_values(&decls, p, &own, diags);
+                let computed = match &pb.var_inits {
+                    Some((text, base)) => {
+                        super::parse_statements_of(pb.file, text, *base, p, diags)
+                    }
+                    None => Vec::new(),
+                };
+                let at_instance_init = !computed.is_empty();
+                let init = super::interface_vars::initial_values(&decls, p, &own, computed, diags);
+                // ... and when each instance is initialised, before its FB_init, as CODESYS and
+                // TwinCAT initialise declarations (`fb_init` calls every `INIT_PREFIX` method)
+                if at_instance_init && p.kind == crate::ast::PouKind::FunctionBlock {
+                    let span = p.name.span;
+                    standalone.push(crate::ast::Action {
+                        pou: p.name.clone(),
+                        name: crate::ast::Ident::new(
+                            format!("{}_VARS", super::method_inits::INIT_PREFIX),
+                            span,
+                        ),
+                        body: crate::actions::instantiate(&init, "__VINIT_", span),
+                        temps: None,
+                        method_inputs: Some(Vec::new()),
+                        diagnostics: Vec::new(),
+                    });
+                }
                 if !init.is_empty() {
                     let mut body = init.clone();
                     body.append(&mut p.body);

@@ -218,7 +218,8 @@ pub struct Init {
 /// values: set once they are assigned.
 pub const INIT_FLAG: &str = "__ITF_INIT";
 
-/// The IL that gives the interface variables of `p` their initial values (`inits`, all of `p`):
+/// The IL that gives the interface variables of `p` their initial values (`inits`, all of `p`),
+/// then the variables whose initial value is computed at run time (`computed`, assignments):
 /// in a FUNCTION at each call, in a FUNCTION_BLOCK or PROGRAM the first time its body or one of
 /// its methods runs (behind the hidden flag [`INIT_FLAG`], declared in `p`). CODESYS and TwinCAT
 /// assign them before the first cycle; here a call through them before the POU first runs finds
@@ -227,12 +228,14 @@ pub fn initial_values(
     decls: &super::Declarations,
     p: &mut crate::ast::Pou,
     inits: &[&Init],
+    computed: Vec<Stmt>,
     diags: &mut Diagnostics,
 ) -> Vec<crate::ast::IlStmt> {
-    let Some(first) = inits.first() else {
-        return Vec::new();
+    let span = match (inits.first(), computed.first()) {
+        (Some(first), _) => first.var.span,
+        (None, Some(s)) => s.span,
+        (None, None) => return Vec::new(),
     };
-    let span = first.var.span;
     let mut body = Vec::new();
     for i in inits {
         let v = &i.value;
@@ -273,6 +276,9 @@ pub fn initial_values(
         };
         body.push(assign(target, place_expr(value, v.span), v.span));
     }
+    // the run-time initial values of other variables (`n : UDINT := MIN(250000, k / 25);`,
+    // `super::method_inits::pou_run_time_inits`), in declaration order
+    body.extend(computed);
     let stmts = if p.kind == PouKind::Function {
         body
     } else {

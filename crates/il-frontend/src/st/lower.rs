@@ -30,7 +30,7 @@ mod call_chain;
 mod dynamic_memory;
 mod for_control;
 mod memory;
-mod method_flow;
+pub(super) mod method_flow;
 pub use method_flow::{method_call_expr, METHOD_CALL};
 pub(crate) mod method_in_out;
 mod mixed_args;

@@ -458,3 +458,93 @@ pub(super) fn member_text(
         once,
     }
 }
+
+/// The run-time initial values of a POU's own `VAR` / `VAR_TEMP` variables, and of its
+/// `VAR_INPUT` / `VAR_OUTPUT` unless it is a FUNCTION (`function`: they are set at each call, where
+/// an input holds its argument) (CODESYS, TwinCAT:
+/// `_position_random_3 : UDINT := MIN(250000, _number_trajectories / 25);` in Struckig's
+/// `RandomTest`): a declaration of one name whose value calls a function (not `ADR`, `REF` or
+/// `SIZEOF`, which a declaration holds), outside CONSTANT blocks, in `text[region]` (the POU's
+/// declarations). Returns the ranges of `:= expr` for the declarations' parse to leave out, and
+/// the assignments `name := expr;` where they are written in a text of `region`'s length (the rest
+/// blanked); `None` when there is none.
+pub(super) fn pou_run_time_inits(
+    text: &str,
+    region: std::ops::Range<usize>,
+    function: bool,
+) -> Option<(Vec<std::ops::Range<usize>>, String)> {
+    let decls = text.get(region.clone())?;
+    let toks = lex(decls).0;
+    let word = |k: usize| decls.get(toks[k].range.clone()).unwrap_or("");
+    let mut inits = blank(decls);
+    let mut cut = Vec::new();
+    let mut in_local = false;
+    let mut start = None;
+    let mut k = 0;
+    while k < toks.len() {
+        let w = word(k).to_ascii_uppercase();
+        match toks[k].tok {
+            Tok::Eof => break,
+            _ if w == "END_VAR" => {
+                in_local = false;
+                start = None;
+            }
+            _ if super::file::is_var_keyword(&w) => {
+                let constant = toks
+                    .get(k + 1)
+                    .is_some_and(|_| word(k + 1).eq_ignore_ascii_case("CONSTANT"));
+                in_local = (w == "VAR"
+                    || w == "VAR_TEMP"
+                    || (!function && (w == "VAR_INPUT" || w == "VAR_OUTPUT")))
+                    && !constant;
+                start = Some(k + 1);
+            }
+            Tok::Semi => start = Some(k + 1),
+            Tok::Assign if in_local => {
+                let Some(s) = start else {
+                    k += 1;
+                    continue;
+                };
+                let single = k > s + 2
+                    && toks[s].tok == Tok::Ident
+                    && toks[s + 1].tok == Tok::Colon
+                    && !toks[s + 2..k].iter().any(|t| t.tok == Tok::Assign);
+                let Some(end) =
+                    (k..toks.len()).find(|&j| matches!(toks[j].tok, Tok::Semi | Tok::Eof))
+                else {
+                    break;
+                };
+                let value = &toks[k + 1..end];
+                let calls = value.windows(2).any(|p| {
+                    p[0].tok == Tok::Ident
+                        && p[1].tok == Tok::LParen
+                        && !["ADR", "REF", "SIZEOF"].iter().any(|f| {
+                            decls
+                                .get(p[0].range.clone())
+                                .is_some_and(|n| n.eq_ignore_ascii_case(f))
+                        })
+                });
+                let plain = value
+                    .first()
+                    .is_some_and(|t| !matches!(t.tok, Tok::LParen | Tok::LBracket))
+                    && !value
+                        .iter()
+                        .any(|t| matches!(t.tok, Tok::Caret | Tok::Assign));
+                if single && calls && plain && toks[end].tok == Tok::Semi {
+                    let from = toks[k].range.start;
+                    let to = toks[end - 1].range.end;
+                    cut.push(region.start + from..region.start + to);
+                    let name = toks[s].range.clone();
+                    inits.replace_range(name.clone(), &decls[name]);
+                    let stmt = from..toks[end].range.end;
+                    inits.replace_range(stmt.clone(), &decls[stmt]);
+                }
+                k = end;
+                continue;
+            }
+            _ => {}
+        }
+        k += 1;
+    }
+    (!cut.is_empty()).then_some((cut, inits))
+}

@@ -20,7 +20,8 @@
 //! Set or a read of one without Get (E0337), a property passed to a VAR_IN_OUT or an output, or a
 //! component of it written (E0338). A property read in an ELSIF or WHILE condition is evaluated
 //! where the condition is (the IF is split at that ELSIF, the loop tests it after calling the
-//! getter); one in an UNTIL condition is E0108.
+//! getter); one in an UNTIL condition is a getter call in place, run before each test as a method
+//! call there is (`super::lower::method_flow`; E0108 before issue #13's Session 36).
 
 use super::ast::{
     Accessor, Arg, ArgDir, CondBranch, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind,
@@ -329,6 +330,9 @@ struct Rewriter<'a, 'd> {
     own: &'a HashMap<String, MethodSig>,
     /// The getter calls to run before the statement.
     calls: Vec<Stmt>,
+    /// Reads become getter calls in place (an UNTIL condition: `super::lower::method_flow` runs
+    /// them before each test), not calls before the statement.
+    in_place: bool,
     changed: bool,
     diags: &'d mut Diagnostics,
 }
@@ -347,6 +351,7 @@ pub(super) fn rewrite(
         env,
         own,
         calls: Vec::new(),
+        in_place: false,
         changed: false,
         diags,
     };
@@ -538,6 +543,11 @@ impl Rewriter<'_, '_> {
                     return;
                 }
                 let callee = Self::with_member(p, at, getter(&name.name), name.span, false);
+                if self.in_place {
+                    *e = super::lower::method_flow::method_call_expr(callee, Vec::new(), e.span);
+                    self.changed = true;
+                    return;
+                }
                 let key = place_key(&callee);
                 let known = key.is_some()
                     && self.calls.iter().any(|c| {
@@ -815,14 +825,11 @@ impl Rewriter<'_, '_> {
                 self.changed = true;
             }
             StmtKind::Repeat { until, .. } if self.reads_property(until) => {
-                let uspan = until.span;
-                self.error(
-                    code::E0108,
-                    uspan,
-                    "a property read in an UNTIL condition is not supported".to_string(),
-                    "read the property into a variable at the end of the loop's body and test the variable",
-                );
-                until.kind = ExprKind::Error;
+                // the getters called in the condition, which the lowering runs before each test
+                // (after the body, also after a CONTINUE), as it does an instance's method call
+                self.in_place = true;
+                self.read(until);
+                self.in_place = false;
             }
             _ => {}
         }

@@ -751,13 +751,14 @@ impl Rewrite<'_, '_> {
             }
             PlaceBase::Address(_) => String::new(),
         };
-        let formal = args.iter().any(|a| a.name.is_some());
         let mut out = Vec::with_capacity(args.len() + 4);
         let mut given = vec![false; params.len()];
         for (k, a) in std::mem::take(args).into_iter().enumerate() {
             let target = match &a.name {
                 Some(n) => params.iter().position(|p| n.is(p.name())),
-                None if !formal && a.dir == ArgDir::Input => (k < params.len()).then_some(k),
+                // (also in a call that names later arguments, CODESYS's mixed form: the argument
+                // at position k binds the k-th parameter, as for other calls; W1422 from the call)
+                None if a.dir == ArgDir::Input => (k < params.len()).then_some(k),
                 None => None,
             };
             let Some(t) = target else {

@@ -1,0 +1,68 @@
+//! Initial values that call a function (CODESYS, TwinCAT; issue #13): Struckig's `RandomTest`
+//! declares `_position_random_3 : UDINT := MIN(250000, _number_trajectories / 25);`, which was
+//! E0011 ("unexpected literal"). A FUNCTION_BLOCK's or PROGRAM's VAR, VAR_INPUT, VAR_OUTPUT (and
+//! VAR_TEMP) declared so is assigned in declaration order when each instance is initialised,
+//! before its FB_init, as CODESYS initialises declarations, and, for an instance that
+//! initialisation does not reach, when it first runs; a FUNCTION's VAR at each call. `ADR(x)`
+//! initial values stay the declaration's (the C starts the pointer with the address).
+
+mod common;
+use common::{column, rejected_heads, run_traced};
+
+use std::path::{Path, PathBuf};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/run_time_inits")
+        .join(name)
+}
+
+/// `b := MIN(250000, n / 25)` of `n = 262144` is 10485, which FB_init already sees (`seen`);
+/// the body adds 1 to `b` each scan, and the initial value is not computed again.
+#[test]
+fn a_blocks_computed_initial_values_come_before_fb_init() {
+    let (trace, _) = run_traced(
+        &fixture("block.st"),
+        2,
+        "main.f.out,main.f.r,main.f.viaP,main.f.seen",
+    );
+    assert_eq!(column(&trace, "main.f.seen"), [10485.0, 10485.0]);
+    assert_eq!(column(&trace, "main.f.out"), [20970.0, 20971.0]);
+    assert_eq!(column(&trace, "main.f.r"), [4.0, 4.0]);
+    // the ADR initial value stays the declaration's
+    assert_eq!(column(&trace, "main.f.viaP"), [262144.0, 262144.0]);
+}
+
+/// The program reads `f.b` (`MAX(3, 7, 5)`) before `f` first runs: 7; `k := MIN(b, 4)` comes
+/// after `b` in declaration order.
+#[test]
+fn an_output_is_initialised_before_the_first_scan() {
+    let (trace, _) = run_traced(&fixture("before_first_run.st"), 2, "main.before,main.f.b");
+    assert_eq!(column(&trace, "main.before"), [7.0, 11.0]);
+    assert_eq!(column(&trace, "main.f.b"), [11.0, 15.0]);
+}
+
+/// A FUNCTION's `t : INT := ABS(-10)` starts at 10 at each call; the program's `n := MAX(2, 5)`
+/// once.
+#[test]
+fn a_functions_computed_initial_value_is_assigned_at_each_call() {
+    let (trace, _) = run_traced(&fixture("function.st"), 2, "main.n,main.r1,main.r2");
+    assert_eq!(column(&trace, "main.r1"), [11.0, 11.0]);
+    assert_eq!(column(&trace, "main.r2"), [15.0, 16.0]);
+    assert_eq!(column(&trace, "main.n"), [6.0, 7.0]);
+}
+
+/// A FUNCTION's input keeps its argument: an initial value calling a function there stays E0011,
+/// as in a VAR CONSTANT block (a constant's value is no run-time value).
+#[test]
+fn a_functions_input_and_a_constant_keep_the_declarations_rule() {
+    let heads = rejected_heads(
+        "f.st",
+        "FUNCTION F : INT\nVAR_INPUT\n  a : INT := ABS(-3);\nEND_VAR\nF := a;\nEND_FUNCTION\n\
+         PROGRAM main\nVAR CONSTANT\n  c : INT := ABS(-3);\nEND_VAR\nVAR\n  r : INT;\nEND_VAR\n\
+         r := F(a := c);\nEND_PROGRAM\n",
+    );
+    assert_eq!(heads.len(), 2, "{heads:?}");
+    assert!(heads[0].starts_with("f.st:3:18: error[E0011]"), "{heads:?}");
+    assert!(heads[1].starts_with("f.st:9:18: error[E0011]"), "{heads:?}");
+}
