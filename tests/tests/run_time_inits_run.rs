@@ -1,6 +1,6 @@
 //! Initial values that call a function (CODESYS, TwinCAT; issue #13): Struckig's `RandomTest`
 //! declares `_position_random_3 : UDINT := MIN(250000, _number_trajectories / 25);`, which was
-//! E0011 ("unexpected literal"). A FUNCTION_BLOCK's or PROGRAM's VAR, VAR_INPUT, VAR_OUTPUT (and
+//! E0011 ("unexpected literal"); one naming a variable declared before it, E0022. A FUNCTION_BLOCK's or PROGRAM's VAR, VAR_INPUT, VAR_OUTPUT (and
 //! VAR_TEMP) declared so is assigned in declaration order when each instance is initialised,
 //! before its FB_init, as CODESYS initialises declarations, and, for an instance that
 //! initialisation does not reach, when it first runs; a FUNCTION's VAR at each call. `ADR(x)`
@@ -65,4 +65,13 @@ fn a_functions_input_and_a_constant_keep_the_declarations_rule() {
     assert_eq!(heads.len(), 2, "{heads:?}");
     assert!(heads[0].starts_with("f.st:3:18: error[E0011]"), "{heads:?}");
     assert!(heads[1].starts_with("f.st:9:18: error[E0011]"), "{heads:?}");
+}
+
+/// `a : UDINT := n / 25;` names a variable declared before it (was E0022 "not a constant"); the
+/// block's body is empty (read as ST for its initial values): both are 10485 before the first scan.
+#[test]
+fn an_initial_value_naming_a_variable_in_a_block_with_an_empty_body() {
+    let (trace, _) = run_traced(&fixture("empty_body.st"), 1, "main.f.a,main.f.b");
+    assert_eq!(column(&trace, "main.f.a"), [10485.0]);
+    assert_eq!(column(&trace, "main.f.b"), [10485.0]);
 }

@@ -1395,12 +1395,39 @@ pub fn parse_text(
                     || p.properties.iter().any(|q| q.whole.contains(&at))
             })
         });
-        let lang =
-            if (oop.is_some() || !p.methods.is_empty() || !p.properties.is_empty()) && blank_body {
-                Lang::St
-            } else {
-                p.lang
-            };
+        // (the keyword before the name, past modifiers: `FUNCTION_BLOCK PUBLIC B`)
+        let function = src
+            .get(..p.name_range.start)
+            .unwrap_or("")
+            .split_whitespace()
+            .rev()
+            .take(3)
+            .find(|w| {
+                ["FUNCTION", "FUNCTION_BLOCK", "PROGRAM", "CLASS"]
+                    .iter()
+                    .any(|k| w.eq_ignore_ascii_case(k))
+            })
+            .is_some_and(|w| w.eq_ignore_ascii_case("FUNCTION"));
+        // initial values computed at run time (`method_inits::pou_run_time_inits`) are ST
+        // statements: an empty body is then ST
+        let run_time_inits = blank_body
+            && p.name_range.end < p.body.start
+            && super::method_inits::pou_run_time_inits(
+                &text,
+                p.name_range.end..p.body.start,
+                function,
+            )
+            .is_some();
+        let lang = if (oop.is_some()
+            || !p.methods.is_empty()
+            || !p.properties.is_empty()
+            || run_time_inits)
+            && blank_body
+        {
+            Lang::St
+        } else {
+            p.lang
+        };
         if let (Some(h), Lang::Il) = (&p.heritage, lang) {
             diags.push(
                 Diagnostic::error(
@@ -1497,19 +1524,6 @@ pub fn parse_text(
                 // the run-time initial values of its own variables: assignments, left out of the
                 // declarations
                 let from = p.name_range.end;
-                // (the keyword before the name, past modifiers: `FUNCTION_BLOCK PUBLIC B`)
-                let function = src
-                    .get(..p.name_range.start)
-                    .unwrap_or("")
-                    .split_whitespace()
-                    .rev()
-                    .take(3)
-                    .find(|w| {
-                        ["FUNCTION", "FUNCTION_BLOCK", "PROGRAM", "CLASS"]
-                            .iter()
-                            .any(|k| w.eq_ignore_ascii_case(k))
-                    })
-                    .is_some_and(|w| w.eq_ignore_ascii_case("FUNCTION"));
                 let found = (from < p.body.start)
                     .then(|| {
                         super::method_inits::pou_run_time_inits(&text, from..p.body.start, function)

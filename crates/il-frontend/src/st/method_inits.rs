@@ -479,10 +479,21 @@ pub(super) fn pou_run_time_inits(
     let mut inits = blank(decls);
     let mut cut = Vec::new();
     let mut in_local = false;
+    let mut constant = false;
     let mut start = None;
+    // the variables declared before (upper-case, not constants): an initial value naming one is
+    // computed at run time too (`_position_random_3 : UDINT := _number_trajectories / 25;`)
+    let mut variables: std::collections::HashSet<String> = Default::default();
     let mut k = 0;
     while k < toks.len() {
         let w = word(k).to_ascii_uppercase();
+        if toks[k].tok == Tok::Colon && !constant {
+            if let Some(s) = start {
+                for t in toks[s..k].iter().filter(|t| t.tok == Tok::Ident) {
+                    variables.insert(decls[t.range.clone()].to_ascii_uppercase());
+                }
+            }
+        }
         match toks[k].tok {
             Tok::Eof => break,
             _ if w == "END_VAR" => {
@@ -490,7 +501,7 @@ pub(super) fn pou_run_time_inits(
                 start = None;
             }
             _ if super::file::is_var_keyword(&w) => {
-                let constant = toks
+                constant = toks
                     .get(k + 1)
                     .is_some_and(|_| word(k + 1).eq_ignore_ascii_case("CONSTANT"));
                 in_local = (w == "VAR"
@@ -524,6 +535,13 @@ pub(super) fn pou_run_time_inits(
                                 .is_some_and(|n| n.eq_ignore_ascii_case(f))
                         })
                 });
+                let names_variable = value.iter().enumerate().any(|(j, t)| {
+                    t.tok == Tok::Ident
+                        && variables.contains(&decls[t.range.clone()].to_ascii_uppercase())
+                        && !value.get(j + 1).is_some_and(|n| n.tok == Tok::LParen)
+                        && !(j > 0 && value[j - 1].tok == Tok::Dot)
+                });
+                let calls = calls || names_variable;
                 let plain = value
                     .first()
                     .is_some_and(|t| !matches!(t.tok, Tok::LParen | Tok::LBracket))
