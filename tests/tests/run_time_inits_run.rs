@@ -75,3 +75,20 @@ fn an_initial_value_naming_a_variable_in_a_block_with_an_empty_body() {
     assert_eq!(column(&trace, "main.f.a"), [10485.0]);
     assert_eq!(column(&trace, "main.f.b"), [10485.0]);
 }
+
+/// A derived block's instance gets its base's computed initial value (`k := MAX(1, 4)`) before its
+/// own, which reads it (`j := MIN(k, 9) + 1`). Before this was tested, the derived instance's `k`
+/// stayed 0 and `j` was 1: the base's assignments were not inherited.
+#[test]
+fn a_derived_block_computes_its_bases_initial_values_first() {
+    let (trace, _) = run_traced(&fixture("inherited.st"), 1, "main.b.k,main.d.k,main.d.j");
+    assert_eq!(trace.lines().nth(1), Some("0,0,4,4,5"), "{trace}");
+}
+
+/// `p : POINTER TO UDINT := ADR(n)` stays the declaration's (the C starts the pointer with the
+/// address: `other`, which runs first, reads 5 through it); `m := n + SIZEOF(n)` is computed.
+#[test]
+fn an_address_initial_value_stays_the_declarations() {
+    let (trace, _) = run_traced(&fixture("program_pointer.st"), 1, "o.seen,i.s,i.m");
+    assert_eq!(trace.lines().nth(1), Some("0,0,5,4,9"), "{trace}");
+}

@@ -170,7 +170,9 @@ pub struct PendingBody {
     /// `n : UDINT := MIN(250000, k / 25);`, CODESYS and TwinCAT), as assignments where they are
     /// written, and the text's offset in the file ([`super::method_inits::pou_run_time_inits`]):
     /// run before the instance's FB_init and, where that does not reach, when the POU first runs.
-    pub var_inits: Option<(String, usize)>,
+    /// A derived block's list starts with its bases' ([`super::inherit`]), root first, each in
+    /// its file.
+    pub var_inits: Vec<(FileId, String, usize)>,
 }
 
 impl PendingBody {
@@ -189,7 +191,7 @@ impl PendingBody {
             fb_init_args: Vec::new(),
             after_init: Vec::new(),
             lone: None,
-            var_inits: None,
+            var_inits: Vec::new(),
         }
     }
 
@@ -1284,7 +1286,7 @@ pub fn parse_text(
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
                 lone: None,
-                var_inits: None,
+                var_inits: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1338,7 +1340,7 @@ pub fn parse_text(
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
                 lone: None,
-                var_inits: None,
+                var_inits: Vec::new(),
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -1529,12 +1531,15 @@ pub fn parse_text(
                         super::method_inits::pou_run_time_inits(&text, from..p.body.start, function)
                     })
                     .flatten();
-                let var_inits = found.map(|(cut, inits)| {
-                    for r in cut {
-                        blank(&mut text, r);
-                    }
-                    (inits, from)
-                });
+                let var_inits: Vec<(FileId, String, usize)> = found
+                    .map(|(cut, inits)| {
+                        for r in cut {
+                            blank(&mut text, r);
+                        }
+                        (file, inits, from)
+                    })
+                    .into_iter()
+                    .collect();
                 pending.push(PendingBody {
                     file,
                     name_start: p.name_range.start,
@@ -1889,12 +1894,13 @@ pub fn compile_pending(
                 // calls a function: assigned when the POU first runs
                 let own: Vec<&super::interface_vars::Init> =
                     inits.iter().filter(|i| i.pou == p.name.span).collect();
-                let computed = match &pb.var_inits {
-                    Some((text, base)) => {
-                        super::parse_statements_of(pb.file, text, *base, p, diags)
-                    }
-                    None => Vec::new(),
-                };
+                let computed: Vec<super::ast::Stmt> = pb
+                    .var_inits
+                    .iter()
+                    .flat_map(|(file, text, base)| {
+                        super::parse_statements_of(*file, text, *base, p, diags)
+                    })
+                    .collect();
                 let at_instance_init = !computed.is_empty();
                 let init = super::interface_vars::initial_values(&decls, p, &own, computed, diags);
                 // ... and when each instance is initialised, before its FB_init, as CODESYS and

@@ -652,6 +652,13 @@ fn flatten_one(
             }
         }
     }
+    // initial values computed at run time: the bases' then the block's own (each level's
+    // variables are the derived block's too)
+    pb.var_inits = levels
+        .iter()
+        .filter_map(|c| body_of(c, pending))
+        .flat_map(|b| b.var_inits.iter().cloned())
+        .collect();
     // methods: the version of each name at each level; the last is the block's
     let mut versions: HashMap<String, Vec<(usize, &PendingMethod, FileId)>> = HashMap::new();
     let mut order: Vec<String> = Vec::new();

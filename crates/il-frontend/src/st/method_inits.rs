@@ -535,12 +535,35 @@ pub(super) fn pou_run_time_inits(
                                 .is_some_and(|n| n.eq_ignore_ascii_case(f))
                         })
                 });
-                let names_variable = value.iter().enumerate().any(|(j, t)| {
-                    t.tok == Tok::Ident
-                        && variables.contains(&decls[t.range.clone()].to_ascii_uppercase())
-                        && !value.get(j + 1).is_some_and(|n| n.tok == Tok::LParen)
-                        && !(j > 0 && value[j - 1].tok == Tok::Dot)
-                });
+                // (a variable inside `ADR(..)`, `REF(..)`, `SIZEOF(..)` is no value read: the
+                // declaration keeps `p : POINTER TO INT := ADR(n);`)
+                let mut names_variable = false;
+                let mut inside: Option<usize> = None;
+                let mut depth = 0usize;
+                for (j, t) in value.iter().enumerate() {
+                    match t.tok {
+                        Tok::LParen => depth += 1,
+                        Tok::RParen => {
+                            depth = depth.saturating_sub(1);
+                            if inside.is_some_and(|d| depth < d) {
+                                inside = None;
+                            }
+                        }
+                        Tok::Ident if inside.is_none() => {
+                            let n = decls[t.range.clone()].to_ascii_uppercase();
+                            let called = value.get(j + 1).is_some_and(|n| n.tok == Tok::LParen);
+                            if called && ["ADR", "REF", "SIZEOF"].contains(&n.as_str()) {
+                                inside = Some(depth + 1);
+                            } else if !called
+                                && variables.contains(&n)
+                                && !(j > 0 && value[j - 1].tok == Tok::Dot)
+                            {
+                                names_variable = true;
+                            }
+                        }
+                        _ => {}
+                    }
+                }
                 let calls = calls || names_variable;
                 let plain = value
                     .first()
