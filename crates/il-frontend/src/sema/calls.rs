@@ -636,25 +636,10 @@ impl Body<'_, '_> {
                 Ty::Known(t) if conv.from_class.contains(&t) => Ty::Known(t),
                 // IEC 61131-3 (ed. 3, 6.4.2, Figure 11): an integer converts implicitly to the
                 // real it widens to (`TRUNC(n / 2)` of an INT `n` takes REAL, of a DINT LREAL)
-                Ty::Known(t) if conv.from_class == Class::AnyReal && t.is_integer() => {
-                    match implicit_real(&t) {
-                        Some(r) => Ty::Known(r),
-                        None => {
-                            let tn = self.a.type_name(&t);
-                            self.a
-                                .error(
-                                    code::E1004,
-                                    ispan,
-                                    format!("{cname} is not defined for {tn}"),
-                                )
-                                .label(format!("this is {tn}"))
-                                .hint(format!(
-                                    "{cname} needs {}; {tn} converts implicitly to no real (convert it explicitly)",
-                                    conv.from_class.name()
-                                ));
-                            Ty::ERROR
-                        }
-                    }
+                Ty::Known(t)
+                    if conv.from_class == Class::AnyReal && implicit_real(&t).is_some() =>
+                {
+                    Ty::Known(implicit_real(&t).unwrap_or(t))
                 }
                 Ty::Lit(v) => {
                     let t = if conv.from_class == Class::AnyReal
@@ -681,7 +666,14 @@ impl Body<'_, '_> {
                             format!("{cname} is not defined for {tn}"),
                         )
                         .label(format!("this is {tn}"))
-                        .hint(format!("{cname} needs {}", conv.from_class.name()));
+                        .hint(if t.is_integer() {
+                            format!(
+                                "{cname} needs {}; {tn} converts implicitly to no real (convert it explicitly)",
+                                conv.from_class.name()
+                            )
+                        } else {
+                            format!("{cname} needs {}", conv.from_class.name())
+                        });
                     Ty::ERROR
                 }
             },

@@ -68,14 +68,7 @@ pub(super) fn split(decls: &str) -> Option<Split> {
                     k += 1;
                     continue;
                 };
-                // `name : TYPE := expr ;`: one name, a colon right after it
-                let single = k > s + 2
-                    && toks[s].tok == Tok::Ident
-                    && toks[s + 1].tok == Tok::Colon
-                    && !toks[s + 2..k].iter().any(|t| t.tok == Tok::Assign);
-                let end = (k..toks.len())
-                    .find(|&j| matches!(toks[j].tok, Tok::Semi | Tok::Eof))
-                    .unwrap_or(toks.len() - 1);
+                let (single, end) = declaration_at(&toks, s, k);
                 // a call right after `:=` or inside the expression, not an initialiser after the
                 // type (`(a := 1, b := 2)` of a structure starts at `:=` + 1 with `(` and holds `:=`)
                 let value = &toks[k + 1..end];
@@ -360,6 +353,20 @@ pub(super) fn is_run_time_value(value: &[super::lexer::Token]) -> bool {
         || value.iter().any(|t| t.tok == Tok::Caret)
 }
 
+/// The declaration whose `:=` is token `k`, starting at token `s`: whether it declares one name
+/// (`name : TYPE := expr ;`, a colon right after the name), and the token that ends it (its `;`,
+/// or the end of the text).
+fn declaration_at(toks: &[super::lexer::Token], s: usize, k: usize) -> (bool, usize) {
+    let single = k > s + 2
+        && toks[s].tok == Tok::Ident
+        && toks[s + 1].tok == Tok::Colon
+        && !toks[s + 2..k].iter().any(|t| t.tok == Tok::Assign);
+    let end = (k..toks.len())
+        .find(|&j| matches!(toks[j].tok, Tok::Semi | Tok::Eof))
+        .unwrap_or(toks.len() - 1);
+    (single, end)
+}
+
 /// `text` with every character but line breaks replaced by a space (byte lengths kept: a
 /// multi-byte character becomes as many spaces as it has bytes).
 pub(super) fn blank(text: &str) -> String {
@@ -516,15 +523,7 @@ pub(super) fn pou_run_time_inits(
                     k += 1;
                     continue;
                 };
-                let single = k > s + 2
-                    && toks[s].tok == Tok::Ident
-                    && toks[s + 1].tok == Tok::Colon
-                    && !toks[s + 2..k].iter().any(|t| t.tok == Tok::Assign);
-                let Some(end) =
-                    (k..toks.len()).find(|&j| matches!(toks[j].tok, Tok::Semi | Tok::Eof))
-                else {
-                    break;
-                };
+                let (single, end) = declaration_at(&toks, s, k);
                 let value = &toks[k + 1..end];
                 let calls = value.windows(2).any(|p| {
                     p[0].tok == Tok::Ident
