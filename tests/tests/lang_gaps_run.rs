@@ -499,13 +499,27 @@ fn st_statements_outside_any_pou_are_one_located_e0307() {
 fn an_expression_as_initial_value_is_located_with_a_declaration_hint() {
     // trust-platform's conformance case `c : INT := b + 1;` in an .st file: before, the hint said
     // "IL has no infix operators: use ... ADD, SUB" (the declarations are read by the IL parser);
-    // now the constant expression is evaluated, and `b` is named as not being a constant
+    // then the constant expression was evaluated, and `b` named as not being a constant (E0022);
+    // since Session 36 it is computed at run time, as CODESYS and TwinCAT do, with W1433
+    // (`tests/tests/run_time_inits_run.rs`)
     let src = "PROGRAM Main\nVAR\n    b : INT := 4;\n    c : INT := b + 1;\nEND_VAR\n  b := c;\nEND_PROGRAM\n";
     let (code, lines) = check_text("init.st", src);
-    assert_eq!(code, Some(1));
+    assert_eq!(code, Some(0));
     assert_eq!(
         lines,
-        vec!["init.st:4:16: error[E0022]: constant expression `b + 1`: `b` is not a constant declared before (hint: use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type)"]
+        vec!["init.st:4:13: warning[W1433]: the initial value of `c` is computed at run time: IEC 61131-3 takes a constant expression (the POU's other such initial values are not reported) (hint: compiled as CODESYS and TwinCAT do: assigned in declaration order when the instance is initialised, before FB_init; for another IEC compiler assign it in the body)"]
+    );
+    // a real variable in a bound stays E0022: a bound is no initial value
+    let (code, lines) = check_text(
+        "bound.st",
+        "PROGRAM Main\nVAR\n    b : INT := 4;\n    a : ARRAY[0..b] OF INT;\nEND_VAR\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("error[E0022]") && l.contains("`b` is not")),
+        "{lines:?}"
     );
     // in an IL body the operator keeps the IL hint
     let (_, lines) = check_text(

@@ -21,7 +21,7 @@ fn fixture(name: &str) -> PathBuf {
 /// the body adds 1 to `b` each scan, and the initial value is not computed again.
 #[test]
 fn a_blocks_computed_initial_values_come_before_fb_init() {
-    let (trace, _) = run_traced(
+    let (trace, stderr) = run_traced(
         &fixture("block.st"),
         2,
         "main.f.out,main.f.r,main.f.viaP,main.f.seen",
@@ -31,6 +31,14 @@ fn a_blocks_computed_initial_values_come_before_fb_init() {
     assert_eq!(column(&trace, "main.f.r"), [4.0, 4.0]);
     // the ADR initial value stays the declaration's
     assert_eq!(column(&trace, "main.f.viaP"), [262144.0, 262144.0]);
+    // W1433 once per POU, at the first (`b`; `c` is not reported)
+    assert_eq!(stderr.matches("warning[W1433]").count(), 1, "{stderr}");
+    assert!(
+        stderr.contains(
+            "block.st:5:13: warning[W1433]: the initial value of `b` is computed at run time"
+        ),
+        "{stderr}"
+    );
 }
 
 /// The program reads `f.b` (`MAX(3, 7, 5)`) before `f` first runs: 7; `k := MIN(b, 4)` comes

@@ -168,7 +168,7 @@ pub struct PendingBody {
     pub lone: Option<Box<super::lone_members::LoneMembers>>,
     /// The run-time initial values of the POU's own VAR / VAR_TEMP variables (a function called:
     /// `n : UDINT := MIN(250000, k / 25);`, CODESYS and TwinCAT), as assignments where they are
-    /// written, and the text's offset in the file ([`super::method_inits::pou_run_time_inits`]):
+    /// written, and the text's offset in the file (`st::pou_inits`):
     /// run before the instance's FB_init and, where that does not reach, when the POU first runs.
     /// A derived block's list starts with its bases' ([`super::inherit`]), root first, each in
     /// its file.
@@ -1410,11 +1410,11 @@ pub fn parse_text(
                     .any(|k| w.eq_ignore_ascii_case(k))
             })
             .is_some_and(|w| w.eq_ignore_ascii_case("FUNCTION"));
-        // initial values computed at run time (`method_inits::pou_run_time_inits`) are ST
+        // initial values computed at run time (`pou_inits::pou_run_time_inits`) are ST
         // statements: an empty body is then ST
         let run_time_inits = blank_body
             && p.name_range.end < p.body.start
-            && super::method_inits::pou_run_time_inits(
+            && super::pou_inits::pou_run_time_inits(
                 &text,
                 p.name_range.end..p.body.start,
                 function,
@@ -1528,12 +1528,19 @@ pub fn parse_text(
                 let from = p.name_range.end;
                 let found = (from < p.body.start)
                     .then(|| {
-                        super::method_inits::pou_run_time_inits(&text, from..p.body.start, function)
+                        super::pou_inits::pou_run_time_inits(&text, from..p.body.start, function)
                     })
                     .flatten();
                 let var_inits: Vec<(FileId, String, usize)> = found
                     .map(|(cut, inits)| {
-                        for r in cut {
+                        // W1433 once per POU, at the first
+                        if let Some((name, value)) = cut.first() {
+                            diags.push(super::pou_inits::computed_warning(
+                                src.get(name.clone()).unwrap_or(""),
+                                Span::new(file, value.start, value.end),
+                            ));
+                        }
+                        for (_, r) in cut {
                             blank(&mut text, r);
                         }
                         (file, inits, from)

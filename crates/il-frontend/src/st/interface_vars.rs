@@ -277,7 +277,7 @@ pub fn initial_values(
         body.push(assign(target, place_expr(value, v.span), v.span));
     }
     // the run-time initial values of other variables (`n : UDINT := MIN(250000, k / 25);`,
-    // `super::method_inits::pou_run_time_inits`), in declaration order
+    // `super::pou_inits::pou_run_time_inits`), in declaration order
     body.extend(computed);
     let stmts = if p.kind == PouKind::Function {
         body

@@ -38,118 +38,96 @@ pub const INIT_PREFIX: &str = "__INSTINIT_";
 /// assignments, fields without room) or `None`.
 pub(super) fn split(decls: &str) -> Option<Split> {
     let toks = lex(decls).0;
-    let word = |k: usize| decls.get(toks[k].range.clone()).unwrap_or("");
     let word_at = |t: &super::lexer::Token| decls.get(t.range.clone()).unwrap_or("");
     let mut read = decls.to_string();
     let mut inits = blank(decls);
     let mut found = false;
     let mut once = Vec::new();
     let mut crowded = Vec::new();
-    let mut in_local = false;
-    let mut in_inst = false;
-    let mut start = None;
-    let mut k = 0;
-    while k < toks.len() {
-        let w = word(k).to_ascii_uppercase();
-        match toks[k].tok {
-            Tok::Eof => break,
-            _ if w == "END_VAR" => {
-                in_local = false;
-                start = None;
-            }
-            _ if super::file::is_var_keyword(&w) => {
-                in_inst = w == "VAR_INST";
-                in_local = w == "VAR" || w == "VAR_TEMP" || in_inst;
-                start = Some(k + 1);
-            }
-            Tok::Semi => start = Some(k + 1),
-            Tok::Assign if in_local => {
-                let Some(s) = start else {
-                    k += 1;
-                    continue;
-                };
-                let (single, end) = declaration_at(&toks, s, k);
-                // a call right after `:=` or inside the expression, not an initialiser after the
-                // type (`(a := 1, b := 2)` of a structure starts at `:=` + 1 with `(` and holds `:=`)
-                let value = &toks[k + 1..end];
-                let this = value
-                    .iter()
-                    .any(|t| t.tok == Tok::Ident && word_at(t).eq_ignore_ascii_case("THIS"));
-                let structured = value.first().is_some_and(|t| t.tok == Tok::LParen)
-                    && value.iter().any(|t| t.tok == Tok::Assign);
-                // `(field := expr)`: one field of a structure or an instance's input, assigned
-                // as `name.field := expr;` (several fields are left to the declaration's parse)
-                let one_field = structured
-                    && value.len() > 4
-                    && value[1].tok == Tok::Ident
-                    && value[2].tok == Tok::Assign
-                    && value.last().is_some_and(|t| t.tok == Tok::RParen)
-                    && top_level_commas(&value[1..value.len() - 1]) == 0;
-                // `(a := 1, b := THIS^.x, c := 2.5)`: several fields, some computed at run time
-                if single
-                    && structured
-                    && !one_field
-                    && toks[end].tok == Tok::Semi
-                    && (is_run_time_value(value) || this)
-                {
-                    let name = toks[s].range.clone();
-                    match several_fields(decls, value, name.clone(), &mut read, &mut inits) {
-                        Ok(stmt) => {
-                            let semi = toks[end].range.clone();
-                            inits.replace_range(semi.clone(), &decls[semi.clone()]);
-                            if in_inst {
-                                once.push(name.start..stmt.end.max(semi.end));
-                            }
-                            found = true;
-                        }
-                        Err(Some(field)) => {
-                            // read without its initial value; one E1075 at the field
-                            let from = toks[k].range.start;
-                            let to = toks[end - 1].range.end;
-                            read.replace_range(from..to, &blank(&decls[from..to]));
-                            crowded.push(field);
-                            found = true;
-                        }
-                        Err(None) => {}
-                    }
-                    k = end;
-                    continue;
-                }
-                if single
-                    && (!structured || one_field)
-                    && (is_run_time_value(value) || this)
-                    && toks[end].tok == Tok::Semi
-                {
-                    let from = toks[k].range.start;
-                    let to = toks[end - 1].range.end;
-                    // the declaration reads without `:= expr`
-                    read.replace_range(from..to, &blank(&decls[from..to]));
-                    // the assignment: the name, then `:= expr;` where they are
-                    let name = toks[s].range.clone();
-                    inits.replace_range(name.clone(), &decls[name.clone()]);
-                    let stmt = from..toks[end].range.end;
-                    if one_field {
-                        // `name   .field := expr ;`: the `(` read as the `.`, the `)` blanked
-                        let open = value[0].range.clone();
-                        inits.replace_range(open.start..open.start + 1, ".");
-                        let inner = value[1].range.start..value[value.len() - 2].range.end;
-                        inits.replace_range(inner.clone(), &decls[inner]);
-                        let semi = toks[end].range.clone();
-                        inits.replace_range(semi.clone(), &decls[semi]);
-                    } else {
-                        inits.replace_range(stmt.clone(), &decls[stmt.clone()]);
-                    }
+    for d in declarations(decls, &toks) {
+        let in_inst = d.block == "VAR_INST";
+        let (Some(k), true) = (
+            d.assign,
+            matches!(d.block.as_str(), "VAR" | "VAR_TEMP") || in_inst,
+        ) else {
+            continue;
+        };
+        let (s, end) = (d.start, d.end);
+        let single = d.single;
+        // a call right after `:=` or inside the expression, not an initialiser after the
+        // type (`(a := 1, b := 2)` of a structure starts at `:=` + 1 with `(` and holds `:=`)
+        let value = &toks[k + 1..end];
+        let this = value
+            .iter()
+            .any(|t| t.tok == Tok::Ident && word_at(t).eq_ignore_ascii_case("THIS"));
+        let structured = value.first().is_some_and(|t| t.tok == Tok::LParen)
+            && value.iter().any(|t| t.tok == Tok::Assign);
+        // `(field := expr)`: one field of a structure or an instance's input, assigned
+        // as `name.field := expr;` (several fields are left to the declaration's parse)
+        let one_field = structured
+            && value.len() > 4
+            && value[1].tok == Tok::Ident
+            && value[2].tok == Tok::Assign
+            && value.last().is_some_and(|t| t.tok == Tok::RParen)
+            && top_level_commas(&value[1..value.len() - 1]) == 0;
+        // `(a := 1, b := THIS^.x, c := 2.5)`: several fields, some computed at run time
+        if single
+            && structured
+            && !one_field
+            && toks[end].tok == Tok::Semi
+            && (is_run_time_value(value) || this)
+        {
+            let name = toks[s].range.clone();
+            match several_fields(decls, value, name.clone(), &mut read, &mut inits) {
+                Ok(stmt) => {
+                    let semi = toks[end].range.clone();
+                    inits.replace_range(semi.clone(), &decls[semi.clone()]);
                     if in_inst {
-                        once.push(name.start..stmt.end);
+                        once.push(name.start..stmt.end.max(semi.end));
                     }
                     found = true;
                 }
-                k = end;
-                continue;
+                Err(Some(field)) => {
+                    // read without its initial value; one E1075 at the field
+                    let from = toks[k].range.start;
+                    let to = toks[end - 1].range.end;
+                    read.replace_range(from..to, &blank(&decls[from..to]));
+                    crowded.push(field);
+                    found = true;
+                }
+                Err(None) => {}
             }
-            _ => {}
+            continue;
         }
-        k += 1;
+        if single
+            && (!structured || one_field)
+            && (is_run_time_value(value) || this)
+            && toks[end].tok == Tok::Semi
+        {
+            let from = toks[k].range.start;
+            let to = toks[end - 1].range.end;
+            // the declaration reads without `:= expr`
+            read.replace_range(from..to, &blank(&decls[from..to]));
+            // the assignment: the name, then `:= expr;` where they are
+            let name = toks[s].range.clone();
+            inits.replace_range(name.clone(), &decls[name.clone()]);
+            let stmt = from..toks[end].range.end;
+            if one_field {
+                // `name   .field := expr ;`: the `(` read as the `.`, the `)` blanked
+                let open = value[0].range.clone();
+                inits.replace_range(open.start..open.start + 1, ".");
+                let inner = value[1].range.start..value[value.len() - 2].range.end;
+                inits.replace_range(inner.clone(), &decls[inner]);
+                let semi = toks[end].range.clone();
+                inits.replace_range(semi.clone(), &decls[semi]);
+            } else {
+                inits.replace_range(stmt.clone(), &decls[stmt.clone()]);
+            }
+            if in_inst {
+                once.push(name.start..stmt.end);
+            }
+            found = true;
+        }
     }
     found.then_some((read, inits, once, crowded))
 }
@@ -353,18 +331,68 @@ pub(super) fn is_run_time_value(value: &[super::lexer::Token]) -> bool {
         || value.iter().any(|t| t.tok == Tok::Caret)
 }
 
-/// The declaration whose `:=` is token `k`, starting at token `s`: whether it declares one name
-/// (`name : TYPE := expr ;`, a colon right after the name), and the token that ends it (its `;`,
-/// or the end of the text).
-fn declaration_at(toks: &[super::lexer::Token], s: usize, k: usize) -> (bool, usize) {
-    let single = k > s + 2
-        && toks[s].tok == Tok::Ident
-        && toks[s + 1].tok == Tok::Colon
-        && !toks[s + 2..k].iter().any(|t| t.tok == Tok::Assign);
-    let end = (k..toks.len())
-        .find(|&j| matches!(toks[j].tok, Tok::Semi | Tok::Eof))
-        .unwrap_or(toks.len() - 1);
-    (single, end)
+/// One declaration of a variable block (see [`declarations`]).
+pub(super) struct Declaration {
+    /// The block's keyword, upper-case (`VAR`, `VAR_INST`, `VAR_INPUT` ...).
+    pub(super) block: String,
+    /// The block is `CONSTANT`.
+    pub(super) constant: bool,
+    /// The declaration's first token.
+    pub(super) start: usize,
+    /// Its first `:=`, when it has one.
+    pub(super) assign: Option<usize>,
+    /// The token that ends it: its `;` (or the end of the text).
+    pub(super) end: usize,
+    /// It declares one name: `name : TYPE := expr ;`, a colon right after the name.
+    pub(super) single: bool,
+}
+
+/// The declarations of the variable blocks of `decls` (tokens `toks`), in order: a declaration
+/// ends at its `;`, or at the `;` after its `:=` (whose value may hold `:=`, `(a := 1)`).
+pub(super) fn declarations(decls: &str, toks: &[super::lexer::Token]) -> Vec<Declaration> {
+    let word = |k: usize| decls.get(toks[k].range.clone()).unwrap_or("");
+    let mut out = Vec::new();
+    let mut block: Option<(String, bool)> = None;
+    let mut start = 0;
+    let mut k = 0;
+    while k < toks.len() {
+        let w = word(k).to_ascii_uppercase();
+        match toks[k].tok {
+            Tok::Eof => break,
+            _ if w == "END_VAR" => block = None,
+            _ if super::file::is_var_keyword(&w) => {
+                let constant = k + 1 < toks.len() && word(k + 1).eq_ignore_ascii_case("CONSTANT");
+                block = Some((w, constant));
+                start = k + 1;
+            }
+            Tok::Semi | Tok::Assign => {
+                if let Some((name, constant)) = &block {
+                    let assign = (toks[k].tok == Tok::Assign).then_some(k);
+                    let end = (k..toks.len())
+                        .find(|&j| matches!(toks[j].tok, Tok::Semi | Tok::Eof))
+                        .unwrap_or(toks.len() - 1);
+                    let single = assign.is_some()
+                        && k > start + 2
+                        && toks[start].tok == Tok::Ident
+                        && toks[start + 1].tok == Tok::Colon
+                        && !toks[start + 2..k].iter().any(|t| t.tok == Tok::Assign);
+                    out.push(Declaration {
+                        block: name.clone(),
+                        constant: *constant,
+                        start,
+                        assign,
+                        end,
+                        single,
+                    });
+                    k = end;
+                    start = end + 1;
+                }
+            }
+            _ => {}
+        }
+        k += 1;
+    }
+    out
 }
 
 /// `text` with every character but line breaks replaced by a space (byte lengths kept: a
@@ -464,127 +492,4 @@ pub(super) fn member_text(
         base,
         once,
     }
-}
-
-/// The run-time initial values of a POU's own `VAR` / `VAR_TEMP` variables, and of its
-/// `VAR_INPUT` / `VAR_OUTPUT` unless it is a FUNCTION (`function`: they are set at each call, where
-/// an input holds its argument) (CODESYS, TwinCAT:
-/// `_position_random_3 : UDINT := MIN(250000, _number_trajectories / 25);` in Struckig's
-/// `RandomTest`): a declaration of one name whose value calls a function (not `ADR`, `REF` or
-/// `SIZEOF`, which a declaration holds), outside CONSTANT blocks, in `text[region]` (the POU's
-/// declarations). Returns the ranges of `:= expr` for the declarations' parse to leave out, and
-/// the assignments `name := expr;` where they are written in a text of `region`'s length (the rest
-/// blanked); `None` when there is none.
-pub(super) fn pou_run_time_inits(
-    text: &str,
-    region: std::ops::Range<usize>,
-    function: bool,
-) -> Option<(Vec<std::ops::Range<usize>>, String)> {
-    let decls = text.get(region.clone())?;
-    let toks = lex(decls).0;
-    let word = |k: usize| decls.get(toks[k].range.clone()).unwrap_or("");
-    let mut inits = blank(decls);
-    let mut cut = Vec::new();
-    let mut in_local = false;
-    let mut constant = false;
-    let mut start = None;
-    // the variables declared before (upper-case, not constants): an initial value naming one is
-    // computed at run time too (`_position_random_3 : UDINT := _number_trajectories / 25;`)
-    let mut variables: std::collections::HashSet<String> = Default::default();
-    let mut k = 0;
-    while k < toks.len() {
-        let w = word(k).to_ascii_uppercase();
-        if toks[k].tok == Tok::Colon && !constant {
-            if let Some(s) = start {
-                for t in toks[s..k].iter().filter(|t| t.tok == Tok::Ident) {
-                    variables.insert(decls[t.range.clone()].to_ascii_uppercase());
-                }
-            }
-        }
-        match toks[k].tok {
-            Tok::Eof => break,
-            _ if w == "END_VAR" => {
-                in_local = false;
-                start = None;
-            }
-            _ if super::file::is_var_keyword(&w) => {
-                constant = toks
-                    .get(k + 1)
-                    .is_some_and(|_| word(k + 1).eq_ignore_ascii_case("CONSTANT"));
-                in_local = (w == "VAR"
-                    || w == "VAR_TEMP"
-                    || (!function && (w == "VAR_INPUT" || w == "VAR_OUTPUT")))
-                    && !constant;
-                start = Some(k + 1);
-            }
-            Tok::Semi => start = Some(k + 1),
-            Tok::Assign if in_local => {
-                let Some(s) = start else {
-                    k += 1;
-                    continue;
-                };
-                let (single, end) = declaration_at(&toks, s, k);
-                let value = &toks[k + 1..end];
-                let calls = value.windows(2).any(|p| {
-                    p[0].tok == Tok::Ident
-                        && p[1].tok == Tok::LParen
-                        && !["ADR", "REF", "SIZEOF"].iter().any(|f| {
-                            decls
-                                .get(p[0].range.clone())
-                                .is_some_and(|n| n.eq_ignore_ascii_case(f))
-                        })
-                });
-                // (a variable inside `ADR(..)`, `REF(..)`, `SIZEOF(..)` is no value read: the
-                // declaration keeps `p : POINTER TO INT := ADR(n);`)
-                let mut names_variable = false;
-                let mut inside: Option<usize> = None;
-                let mut depth = 0usize;
-                for (j, t) in value.iter().enumerate() {
-                    match t.tok {
-                        Tok::LParen => depth += 1,
-                        Tok::RParen => {
-                            depth = depth.saturating_sub(1);
-                            if inside.is_some_and(|d| depth < d) {
-                                inside = None;
-                            }
-                        }
-                        Tok::Ident if inside.is_none() => {
-                            let n = decls[t.range.clone()].to_ascii_uppercase();
-                            let called = value.get(j + 1).is_some_and(|n| n.tok == Tok::LParen);
-                            if called && ["ADR", "REF", "SIZEOF"].contains(&n.as_str()) {
-                                inside = Some(depth + 1);
-                            } else if !called
-                                && variables.contains(&n)
-                                && !(j > 0 && value[j - 1].tok == Tok::Dot)
-                            {
-                                names_variable = true;
-                            }
-                        }
-                        _ => {}
-                    }
-                }
-                let calls = calls || names_variable;
-                let plain = value
-                    .first()
-                    .is_some_and(|t| !matches!(t.tok, Tok::LParen | Tok::LBracket))
-                    && !value
-                        .iter()
-                        .any(|t| matches!(t.tok, Tok::Caret | Tok::Assign));
-                if single && calls && plain && toks[end].tok == Tok::Semi {
-                    let from = toks[k].range.start;
-                    let to = toks[end - 1].range.end;
-                    cut.push(region.start + from..region.start + to);
-                    let name = toks[s].range.clone();
-                    inits.replace_range(name.clone(), &decls[name]);
-                    let stmt = from..toks[end].range.end;
-                    inits.replace_range(stmt.clone(), &decls[stmt]);
-                }
-                k = end;
-                continue;
-            }
-            _ => {}
-        }
-        k += 1;
-    }
-    (!cut.is_empty()).then_some((cut, inits))
 }

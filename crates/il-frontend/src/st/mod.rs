@@ -30,6 +30,7 @@ pub mod lone_members;
 pub mod lower;
 mod method_inits;
 pub mod parser;
+mod pou_inits;
 pub mod property;
 pub mod qualifiers;
 pub mod refs;
