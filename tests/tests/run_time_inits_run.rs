@@ -100,3 +100,24 @@ fn an_address_initial_value_stays_the_declarations() {
     let (trace, _) = run_traced(&fixture("program_pointer.st"), 1, "o.seen,i.s,i.m");
     assert_eq!(trace.lines().nth(1), Some("0,0,5,4,9"), "{trace}");
 }
+
+/// An interface variable started with an instance (`iDrive : I_Drive := fbNc;`, MatheusNespolo's
+/// AbstractDrive tutorial) keeps the interface's own initial value (no W1433): a variable alone
+/// given to a variable of a user type is no computed value.
+#[test]
+fn an_interface_started_with_an_instance_is_no_computed_value() {
+    let (code, lines) = common::check_text(
+        "itf.st",
+        "INTERFACE I_Drive\nMETHOD Speed : INT\nEND_METHOD\nEND_INTERFACE\n\
+         FUNCTION_BLOCK FB_Nc IMPLEMENTS I_Drive\nMETHOD Speed : INT\nSpeed := 3;\nEND_METHOD\nEND_FUNCTION_BLOCK\n\
+         PROGRAM main\nVAR\n  fbNc : FB_Nc;\n  iDrive : I_Drive := fbNc;\n  n : INT := MAX(1, 2);\nEND_VAR\n\
+         n := iDrive.Speed();\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(0), "{lines:?}");
+    // only `n` is reported
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("itf.st:14:11: warning[W1433]: the initial value of `n`"),
+        "{lines:?}"
+    );
+}

@@ -12,8 +12,9 @@
 //! call; a derived block its bases' first ([`super::inherit`]).
 //! Invariants: positions do not move; only single-name declarations of VAR, VAR_TEMP (and of
 //! VAR_INPUT, VAR_OUTPUT outside a FUNCTION, whose inputs hold their arguments) outside CONSTANT
-//! blocks are taken; a value that is a structure or array initialiser, holds a `^` or a `:=`, or
-//! reads variables only inside `ADR(..)`, `REF(..)`, `SIZEOF(..)` stays the declaration's.
+//! blocks are taken; a value that is a structure or array initialiser, holds a `^` or a `:=`,
+//! reads variables only inside `ADR(..)`, `REF(..)`, `SIZEOF(..)`, or is a variable alone given to
+//! a variable of a user type (an interface started with an instance) stays the declaration's.
 
 use super::lexer::{lex, Tok, Token};
 use super::method_inits::{blank, declarations};
@@ -63,7 +64,17 @@ pub(super) fn pou_run_time_inits(
             && !value
                 .iter()
                 .any(|t| matches!(t.tok, Tok::Caret | Tok::Assign));
-        if plain && run_time(decls, value, &variables) {
+        // a variable alone given to a variable of a user type (`iDrive : I_DriveBase :=
+        // fbDriveNc;`, an interface started with an instance: `super::interface_vars`) stays
+        // the declaration's
+        let elementary = toks
+            .get(d.start + 2)
+            .and_then(|t| decls.get(t.range.clone()))
+            .is_some_and(|ty| {
+                crate::sema::Elementary::from_name(&ty.to_ascii_uppercase()).is_some()
+            });
+        let alone = value.len() == 1;
+        if plain && (elementary || !alone) && run_time(decls, value, &variables) {
             let from = toks[k].range.start;
             let to = toks[d.end - 1].range.end;
             let name = toks[d.start].range.clone();
