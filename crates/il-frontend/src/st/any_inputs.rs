@@ -22,9 +22,7 @@
 //! call or use is not touched; a rewritten statement holds no rewritable part any more (the
 //! lowering may run the rewrite again on it).
 
-use super::ast::{
-    Accessor, Arg, ArgDir, CaseLabel, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind,
-};
+use super::ast::{Accessor, Arg, ArgDir, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind};
 use super::infer::Env;
 use crate::ast::{CompilationUnit, Ident, LibraryElement, LiteralKind, PouKind, TypeRef, VarKind};
 use diagnostics::{code, Diagnostic, Diagnostics};
@@ -513,29 +511,7 @@ fn needs(env: &Env, s: &Stmt) -> bool {
             }
             stack.extend(args.iter().map(|a| &a.value));
         }
-        StmtKind::If { branches, .. } => stack.extend(branches.iter().map(|b| &b.cond)),
-        StmtKind::Case { selector, arms, .. } => {
-            stack.push(selector);
-            for a in arms {
-                for l in &a.labels {
-                    match l {
-                        CaseLabel::Value(e) => stack.push(e),
-                        CaseLabel::Range(a, b) => {
-                            stack.push(a);
-                            stack.push(b);
-                        }
-                    }
-                }
-            }
-        }
-        StmtKind::For { from, to, by, .. } => {
-            stack.push(from);
-            stack.push(to);
-            stack.extend(by.iter());
-        }
-        StmtKind::While { cond, .. } => stack.push(cond),
-        StmtKind::Repeat { until, .. } => stack.push(until),
-        _ => {}
+        kind => stack.extend(kind.control_exprs()),
     }
     loop {
         if let Some(p) = places.pop() {
@@ -635,35 +611,11 @@ pub fn rewrite(
                 r.expr(&mut a.value);
             }
         }
-        StmtKind::If { branches, .. } => {
-            for b in branches {
-                r.expr(&mut b.cond);
+        kind => {
+            for e in kind.control_exprs_mut() {
+                r.expr(e);
             }
         }
-        StmtKind::Case { selector, arms, .. } => {
-            r.expr(selector);
-            for a in arms {
-                for l in &mut a.labels {
-                    match l {
-                        CaseLabel::Value(e) => r.expr(e),
-                        CaseLabel::Range(a, b) => {
-                            r.expr(a);
-                            r.expr(b);
-                        }
-                    }
-                }
-            }
-        }
-        StmtKind::For { from, to, by, .. } => {
-            r.expr(from);
-            r.expr(to);
-            if let Some(b) = by {
-                r.expr(b);
-            }
-        }
-        StmtKind::While { cond, .. } => r.expr(cond),
-        StmtKind::Repeat { until, .. } => r.expr(until),
-        _ => {}
     }
     if r.failed {
         return Some(None);

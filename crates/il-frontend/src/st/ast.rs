@@ -129,6 +129,61 @@ pub enum CaseLabel {
     Range(Expr, Expr),
 }
 
+impl StmtKind {
+    /// The expressions a control statement evaluates itself (IF/ELSIF conditions, the CASE
+    /// selector and labels, FOR bounds and step, WHILE and UNTIL conditions), not those of the
+    /// statements it holds; empty for other statements (an assignment's or call's own parts are
+    /// their callers' to take).
+    pub fn control_exprs(&self) -> Vec<&Expr> {
+        let mut out = Vec::new();
+        match self {
+            StmtKind::If { branches, .. } => out.extend(branches.iter().map(|b| &b.cond)),
+            StmtKind::Case { selector, arms, .. } => {
+                out.push(selector);
+                for l in arms.iter().flat_map(|a| a.labels.iter()) {
+                    match l {
+                        CaseLabel::Value(e) => out.push(e),
+                        CaseLabel::Range(a, b) => out.extend([a, b]),
+                    }
+                }
+            }
+            StmtKind::For { from, to, by, .. } => {
+                out.extend([from, to]);
+                out.extend(by.iter());
+            }
+            StmtKind::While { cond, .. } => out.push(cond),
+            StmtKind::Repeat { until, .. } => out.push(until),
+            _ => {}
+        }
+        out
+    }
+
+    /// [`Self::control_exprs`], to rewrite them.
+    pub fn control_exprs_mut(&mut self) -> Vec<&mut Expr> {
+        let mut out = Vec::new();
+        match self {
+            StmtKind::If { branches, .. } => out.extend(branches.iter_mut().map(|b| &mut b.cond)),
+            StmtKind::Case { selector, arms, .. } => {
+                out.push(selector);
+                for l in arms.iter_mut().flat_map(|a| a.labels.iter_mut()) {
+                    match l {
+                        CaseLabel::Value(e) => out.push(e),
+                        CaseLabel::Range(a, b) => out.extend([a, b]),
+                    }
+                }
+            }
+            StmtKind::For { from, to, by, .. } => {
+                out.extend([from, to]);
+                out.extend(by.iter_mut());
+            }
+            StmtKind::While { cond, .. } => out.push(cond),
+            StmtKind::Repeat { until, .. } => out.push(until),
+            _ => {}
+        }
+        out
+    }
+}
+
 /// An assignable place or a call target: `x`, `s.a[i + 1].b`, `inst.Q`, `%QX0.1`.
 #[derive(Debug, Clone, Serialize)]
 pub struct Place {

@@ -30,7 +30,7 @@
 //! no rewritable part any more.
 
 use super::ast::{
-    Accessor, Arg, ArgDir, BinaryOp, CaseLabel, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind,
+    Accessor, Arg, ArgDir, BinaryOp, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind,
 };
 use super::file::PendingBody;
 use super::infer::Env;
@@ -359,44 +359,17 @@ pub fn rewrite(
             let callee = callee.clone();
             r.call(&callee, args);
         }
-        StmtKind::If { branches, .. } => {
-            for b in branches {
-                r.expr(&mut b.cond);
-            }
-        }
-        StmtKind::Case { selector, arms, .. } => {
-            r.expr(selector);
-            for a in arms {
-                for l in &mut a.labels {
-                    match l {
-                        CaseLabel::Value(e) => r.expr(e),
-                        CaseLabel::Range(a, b) => {
-                            r.expr(a);
-                            r.expr(b);
-                        }
-                    }
-                }
-            }
-        }
-        StmtKind::For {
-            from,
-            to,
-            by,
-            element,
-            ..
-        } => {
-            if let Some(p) = element {
+        kind => {
+            if let StmtKind::For {
+                element: Some(p), ..
+            } = kind
+            {
                 r.place(p);
             }
-            r.expr(from);
-            r.expr(to);
-            if let Some(b) = by {
-                r.expr(b);
+            for e in kind.control_exprs_mut() {
+                r.expr(e);
             }
         }
-        StmtKind::While { cond, .. } => r.expr(cond),
-        StmtKind::Repeat { until, .. } => r.expr(until),
-        _ => {}
     }
     if r.failed {
         return Some(None);
@@ -423,36 +396,15 @@ fn needs(env: &Env, s: &Stmt) -> bool {
             places.push(callee);
             calls.push((callee.clone(), args));
         }
-        StmtKind::If { branches, .. } => stack.extend(branches.iter().map(|b| &b.cond)),
-        StmtKind::Case { selector, arms, .. } => {
-            stack.push(selector);
-            for a in arms {
-                for l in &a.labels {
-                    match l {
-                        CaseLabel::Value(e) => stack.push(e),
-                        CaseLabel::Range(a, b) => {
-                            stack.push(a);
-                            stack.push(b);
-                        }
-                    }
-                }
+        kind => {
+            if let StmtKind::For {
+                element: Some(p), ..
+            } = kind
+            {
+                places.push(p);
             }
+            stack.extend(kind.control_exprs());
         }
-        StmtKind::For {
-            from,
-            to,
-            by,
-            element,
-            ..
-        } => {
-            places.extend(element.iter());
-            stack.push(from);
-            stack.push(to);
-            stack.extend(by.iter());
-        }
-        StmtKind::While { cond, .. } => stack.push(cond),
-        StmtKind::Repeat { until, .. } => stack.push(until),
-        _ => {}
     }
     let (mut nodes, mut found) = (0, false);
     loop {
