@@ -229,3 +229,37 @@ PROGRAM Main\nVAR m : FB_M; r : INT; END_VAR\nm(n := 2);\nr := m.Get(k := 1);\nE
         ]
     );
 }
+
+/// Without `--watch`, the trace holds the variables the program declares and none of the
+/// compiler's own (method locals, class tags: a name part starting with `__`, which no IEC
+/// identifier does); `--watch` still names one, and `ladderc run` passes `--list` no such name.
+#[test]
+fn the_default_trace_leaves_out_the_compilers_own_variables() {
+    let out = common::ladderc()
+        .args(["--message-format", "short", "run"])
+        .args([fixture("chain.st"), fixture("chain_base.st")])
+        .args(["--cycles", "2", "--trace", "-"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let trace = String::from_utf8_lossy(&out.stdout);
+    let header: Vec<String> = common::split_csv(trace.lines().next().unwrap());
+    assert!(
+        header
+            .iter()
+            .all(|h| !h.split('.').any(|p| p.starts_with("__"))),
+        "{header:?}"
+    );
+    for want in ["Main.top.count", "Main.top.log", "Main.top.extra", "Main.r"] {
+        assert!(header.iter().any(|h| h == want), "{want} in {header:?}");
+    }
+    assert_eq!(column(&trace, "Main.top.count"), [3.0, 6.0]);
+    // a hidden variable is still there for --watch: Twice's input `v` of the last call
+    let (hidden, _) = run_traced_files(
+        &[&fixture("chain.st"), &fixture("chain_base.st")],
+        1,
+        "Main.top.__M_TWICE_V",
+    );
+    assert_eq!(column(&hidden, "Main.top.__M_TWICE_V"), [5.0]);
+}

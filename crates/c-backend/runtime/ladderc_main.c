@@ -55,7 +55,7 @@ static void usage(FILE *f) {
             "  --cycle-ms X     cycle time in milliseconds, may be fractional (default 10)\n"
             "  --stimulus FILE  CSV rows `cycle,variable,value` applied before that cycle\n"
             "  --trace FILE     CSV trace `cycle,time_ms,VAR...` after each cycle (default: standard output)\n"
-            "  --watch LIST     comma-separated variables or addresses to trace (default: every variable)\n"
+            "  --watch LIST     comma-separated variables or addresses to trace (default: every variable but the compiler's own `__` ones)\n"
             "  --list           print the watchable variables with their types and exit\n"
             "  --progress FILE  write the number of cycles done into FILE, about ten times a second\n"
             "  --trace-raw      REAL/LREAL values of the trace as raw bits, for ladderc run to format\n");
@@ -129,6 +129,18 @@ static int read_only(const char *name) {
         if (!strncasecmp_portable(name, r, n) && (name[n] == '\0' || name[n] == '.' || name[n] == '[')) return 1;
     }
     return 0;
+}
+
+/* A name the compiler made (a part of it starts with `__`, which no IEC identifier does): left out
+ * of the default trace and of --list; --watch still finds it. */
+static int hidden_name(const char *name) {
+    const char *p = name;
+    for (;;) {
+        if (p[0] == '_' && p[1] == '_') return 1;
+        p = strchr(p, '.');
+        if (!p) return 0;
+        p++;
+    }
 }
 
 static char *trim(char *s) {
@@ -525,7 +537,8 @@ int main(int argc, char **argv) {
     if (list) {
         size_t k;
         for (k = 0; k < ladderc_var_count; k++)
-            printf("%s : %s\n", ladderc_vars[k].name, ladderc_type_name(ladderc_vars[k].type));
+            if (!hidden_name(ladderc_vars[k].name))
+                printf("%s : %s\n", ladderc_vars[k].name, ladderc_type_name(ladderc_vars[k].type));
         return 0;
     }
 
@@ -555,8 +568,9 @@ int main(int argc, char **argv) {
     } else {
         watch = (ladderc_var *)calloc(ladderc_var_count + 1, sizeof *watch);
         if (!watch) return 2;
-        for (w = 0; w < ladderc_var_count; w++) watch[w] = ladderc_vars[w];
-        watch_count = ladderc_var_count;
+        watch_count = 0;
+        for (w = 0; w < ladderc_var_count; w++)
+            if (!hidden_name(ladderc_vars[w].name)) watch[watch_count++] = ladderc_vars[w];
     }
 
     if (stimulus_path && load_stimulus(stimulus_path, &rows, &row_count)) return 2;
