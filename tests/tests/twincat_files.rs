@@ -137,6 +137,58 @@ fn two_programs_without_a_task_file_or_main_are_one_located_error_and_one_alone_
     assert_eq!(column(&trace, "P_Fill.nLevel"), [1.0, 2.0, 3.0]);
 }
 
+/// The same two programs listed by a library's project (`<Company>`, `<Released>`, `<Title>`, as
+/// TwinCAT writes a project saved as a library): a library has no task, so `check` passes with one
+/// note (W1434) and `run` calls both programs each cycle; the project without those properties is
+/// E0322 again.
+#[test]
+fn a_library_project_with_several_programs_and_no_task_checks_with_one_note() {
+    let dir = fixture("library");
+    let project = dir.join("Tank_Library.plcproj");
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&project)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let prefix = format!("{}/", dir.join("..").join("two_programs").display());
+    let heads: Vec<String> = stderr
+        .lines()
+        .map(|l| l.replace(&prefix, ""))
+        .map(|l| l.split_once(" (hint").map_or(l.clone(), |(h, _)| h.to_string()))
+        .collect();
+    assert_eq!(
+        heads,
+        ["P_Fill.TcPOU:4:35: note[W1434]: `Tank_Library.plcproj` is a library's project: its 2 \
+          programs (P_Fill, P_Drain) are compiled, and no task says which runs"],
+        "{stderr}"
+    );
+    let (trace, _) = run_traced(&project, 3, "P_Fill.nLevel,P_Drain.nLevel");
+    assert_eq!(column(&trace, "P_Fill.nLevel"), [1.0, 2.0, 3.0]);
+    assert_eq!(column(&trace, "P_Drain.nLevel"), [1.0, 2.0, 3.0]);
+    // an application's project (no library properties): which program runs is not said
+    let plain = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(&project)
+        .unwrap()
+        .replace("<Company>ladderc tests</Company>", "")
+        .replace("<Released>false</Released>", "")
+        .replace("<Title>Tank library</Title>", "")
+        .replace("..\\two_programs\\", "");
+    for f in ["P_Fill.TcPOU", "P_Drain.TcPOU"] {
+        std::fs::copy(fixture("two_programs").join(f), plain.path().join(f)).unwrap();
+    }
+    let app = plain.path().join("Tank.plcproj");
+    std::fs::write(&app, text).unwrap();
+    let (code, heads) = check(&[app], plain.path());
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        ["P_Fill.TcPOU:4:35: error[E0322]: 2 TwinCAT programs (P_Fill, P_Drain) and no task file: \
+          which one runs is not said"]
+    );
+}
+
 fn pou(name: &str, decl: &str, body: &str, members: &str) -> String {
     format!(
         "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \

@@ -268,12 +268,14 @@ impl Session {
         let mut defines = Vec::new();
         let mut twincat_failed: Vec<String> = Vec::new();
         let mut references = None;
+        let mut library_projects = Vec::new();
         let paths = crate::twincat::expand(
             self,
             paths,
             &mut defines,
             &mut twincat_failed,
             &mut references,
+            &mut library_projects,
             &mut expand_diags,
         );
         // user libraries given as source projects (`--lib`): their object files first, their
@@ -566,6 +568,7 @@ impl Session {
                 &twincat_units,
                 &twincat_tasks,
                 &twincat_failed,
+                &library_projects,
             );
         }
         // VAR_CONFIG once every file is read: a configuration names programs of other files

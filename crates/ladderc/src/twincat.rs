@@ -31,13 +31,15 @@ pub fn is_twincat_file(path: &Path) -> bool {
 /// compiler defines of the projects' properties (`<CompilerDefines>`) go to `defines`, their
 /// library references to `references` (`None` when no input is a project). A listed file that
 /// does not exist is one E1079 at its `<Compile>` element (the project's text is added to the
-/// session's sources for it), and its stem goes to `missing`.
+/// session's sources for it), and its stem goes to `missing`. The file name of each project saved
+/// as a library ([`is_library_project`]) goes to `library_projects`.
 pub fn expand(
     session: &mut Session,
     paths: &[PathBuf],
     defines: &mut Vec<(String, String)>,
     missing: &mut Vec<String>,
     references: &mut Option<Vec<crate::user_libraries::Reference>>,
+    library_projects: &mut Vec<String>,
     diags: &mut Diagnostics,
 ) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -78,6 +80,13 @@ pub fn expand(
             Some(project) => match session.read_file(&project) {
                 Ok(text) => {
                     defines.extend(compiler_defines(&text));
+                    if is_library_project(&text) {
+                        library_projects.push(
+                            project
+                                .file_name()
+                                .map_or_else(String::new, |n| n.to_string_lossy().into_owned()),
+                        );
+                    }
                     references
                         .get_or_insert_with(Vec::new)
                         .extend(crate::user_libraries::references(&text));
@@ -110,6 +119,14 @@ pub fn expand(
         }
     }
     out
+}
+
+/// Whether a `.plcproj` is a library's project: TwinCAT writes the library's properties
+/// (`<Released>`, `<LibraryCategories>`, `<Company>` with `<Title>`) into the projects saved as
+/// libraries, and no task (a library's programs run when the code using it calls them).
+pub(crate) fn is_library_project(text: &str) -> bool {
+    let has = |tag: &str| text.contains(&format!("<{tag}>")) || text.contains(&format!("<{tag} "));
+    has("Released") || has("LibraryCategories") || (has("Company") && has("Title"))
 }
 
 pub(crate) fn has_extension(p: &Path, ext: &str) -> bool {
@@ -240,13 +257,15 @@ pub(crate) fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, 
 /// `failed` names the object files that could not be read (a task calling one is not reported again).
 /// A task's call of a library program (`VisuElems.Visu_Prg`, TwinCAT's visualisation) is left out.
 /// Returns the base cycle in ms when tasks give one. Nothing is added when a unit already has a
-/// CONFIGURATION.
+/// CONFIGURATION. A library's project (`library_projects` names those read) has no task and no
+/// program to choose: its programs are compiled, with one note (W1434), and none is configured.
 pub fn configure(
     session: &mut Session,
     units: &mut Vec<CompilationUnit>,
     twincat: &[bool],
     tasks: &[(FileId, TcTask)],
     failed: &[String],
+    library_projects: &[String],
 ) -> Option<f64> {
     let has_config = units.iter().any(|u| {
         u.items
@@ -293,13 +312,33 @@ pub fn configure(
             .find(|(n, _)| n.eq_ignore_ascii_case("MAIN"))
         else {
             let names: Vec<&str> = programs.iter().map(|(n, _)| n.as_str()).collect();
+            if let Some(library) = library_projects.first() {
+                session.diags.push(
+                    Diagnostic::new(
+                        code::W1434,
+                        diagnostics::Severity::Note,
+                        format!(
+                            "`{library}` is a library's project: its {} programs ({}) are compiled, \
+                             and no task says which runs",
+                            programs.len(),
+                            shown_names(&names)
+                        ),
+                    )
+                    .at(programs[0].1)
+                    .with_hint(
+                        "`check` and `build` need nothing more; `run` calls every program each \
+                         cycle in file order: to run one, give a project whose task calls it",
+                    ),
+                );
+                return None;
+            }
             session.diags.push(
                 Diagnostic::error(
                     code::E0322,
                     format!(
                         "{} TwinCAT programs ({}) and no task file: which one runs is not said",
                         programs.len(),
-                        names.join(", ")
+                        shown_names(&names)
                     ),
                 )
                 .at(programs[0].1)
@@ -384,6 +423,14 @@ pub fn configure(
 }
 
 /// `name` when it is an IEC identifier (so it can be written into the configuration's text).
+/// At most five names, then how many more: `A, B, C, D, E and 28 more`.
+fn shown_names(names: &[&str]) -> String {
+    match names.len() {
+        0..=5 => names.join(", "),
+        n => format!("{} and {} more", names[..5].join(", "), n - 5),
+    }
+}
+
 fn safe_name(name: &str) -> Option<String> {
     let mut chars = name.chars();
     let first = chars.next()?;
