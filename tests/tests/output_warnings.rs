@@ -126,7 +126,7 @@ END_PROGRAM
         .map(|s| {
             // two sizes: apart in OpenPLC's and matiec's memory, which a profile models
             let apart = if s.contains("%QW0") {
-                " (OpenPLC and matiec keep one image per size, where they are apart: `--profile crates/c-backend/profiles/openplc.json`)"
+                " (OpenPLC and matiec keep one image per size, where they are apart: `--profile openplc`)"
             } else {
                 ""
             };

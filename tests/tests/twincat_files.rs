@@ -156,12 +156,17 @@ fn a_library_project_with_several_programs_and_no_task_checks_with_one_note() {
     let heads: Vec<String> = stderr
         .lines()
         .map(|l| l.replace(&prefix, ""))
-        .map(|l| l.split_once(" (hint").map_or(l.clone(), |(h, _)| h.to_string()))
+        .map(|l| {
+            l.split_once(" (hint")
+                .map_or(l.clone(), |(h, _)| h.to_string())
+        })
         .collect();
     assert_eq!(
         heads,
-        ["P_Fill.TcPOU:4:35: note[W1434]: `Tank_Library.plcproj` is a library's project: its 2 \
-          programs (P_Fill, P_Drain) are compiled, and no task says which runs"],
+        [
+            "P_Fill.TcPOU:4:35: note[W1434]: `Tank_Library.plcproj` is a library's project: its 2 \
+          programs (P_Fill, P_Drain) are compiled, and no task says which runs"
+        ],
         "{stderr}"
     );
     let (trace, _) = run_traced(&project, 3, "P_Fill.nLevel,P_Drain.nLevel");

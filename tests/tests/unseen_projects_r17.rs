@@ -177,7 +177,9 @@ fn openplc_dimmer_words_share_bytes_unless_openplc_profile() {
         "{stderr}"
     );
     assert!(
-        stderr.contains("OpenPLC and matiec keep one image per size, where they are apart: `--profile crates/c-backend/profiles/openplc.json`"),
+        stderr.contains(
+            "OpenPLC and matiec keep one image per size, where they are apart: `--profile openplc`"
+        ),
         "{stderr}"
     );
     // the red dimmer (lamp_fault as 0/1) written as a word after the lamps: bit 0 (lamp_ok) follows
@@ -187,10 +189,9 @@ fn openplc_dimmer_words_share_bytes_unless_openplc_profile() {
         [(0, 1.0), (100, 0.0), (350, 1.0)]
     );
     assert_eq!(changes(&trace, "instance0.lamp_fault"), [(0, 0.0)]);
-    let profile = common::repo_root().join("crates/c-backend/profiles/openplc.json");
-    let profile = profile.to_string_lossy();
+    // the built-in profile the hint names (a release binary has no source tree beside it)
     let (trace, stderr) =
-        run_stimulated_files(&[file], &["--profile", &profile], 400, SENSOR_PULSE, watch);
+        run_stimulated_files(&[file], &["--profile", "openplc"], 400, SENSOR_PULSE, watch);
     assert!(!stderr.contains("W1400"), "{stderr}");
     assert_eq!(
         changes(&trace, "instance0.lamp_ok"),
@@ -467,4 +468,58 @@ fn chained_method_calls_run() {
     );
     // (0 + 5 + 2) * 10, then (70 + 7) * 10
     assert_eq!(column(&trace, "MAIN.fbRecipe.nAmount"), [70.0, 770.0]);
+}
+
+/// `--profile openplc` and `--profile default` are built in (a release binary has no source tree
+/// beside it): OpenPLC's one image per size keeps `lamp AT %QX0.0` apart from `state AT %QW0`, the
+/// default overlaps them (W1400, whose hint names `--profile openplc`); a bare name that is neither
+/// is E9001 naming the built-in ones.
+#[test]
+fn the_openplc_profile_is_built_in_by_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("overlap.st");
+    std::fs::write(
+        &file,
+        "PROGRAM p\nVAR\n  lamp AT %QX0.0 : BOOL;\n  state AT %QW0 : UINT;\nEND_VAR\n\
+         lamp := TRUE;\nstate := 0;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let run = |profile: &[&str]| {
+        let out = common::ladderc()
+            .current_dir(dir.path())
+            .args([
+                "--message-format",
+                "short",
+                "run",
+                "overlap.st",
+                "--cycles",
+                "1",
+            ])
+            .args(profile)
+            .args(["--watch", "p.lamp"])
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let (code, trace, stderr) = run(&["--profile", "openplc"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(!stderr.contains("W1400"), "{stderr}");
+    assert_eq!(column(&trace, "p.lamp"), [1.0]);
+    for default in [&[][..], &["--profile", "default"][..]] {
+        let (code, trace, stderr) = run(default);
+        assert_eq!(code, Some(0), "{stderr}");
+        assert!(stderr.contains("warning[W1400]"), "{stderr}");
+        assert!(stderr.contains("`--profile openplc`"), "{stderr}");
+        assert_eq!(column(&trace, "p.lamp"), [0.0]);
+    }
+    let (code, _, stderr) = run(&["--profile", "openplcx"]);
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(
+        stderr.contains("error[E9001]") && stderr.contains("`default`, `openplc`"),
+        "{stderr}"
+    );
 }

@@ -13,6 +13,15 @@ use std::path::Path;
 
 /// The default profile as shipped (documented in the crate README).
 pub const DEFAULT_PROFILE_JSON: &str = include_str!("../profiles/default.json");
+/// The OpenPLC profile: one image per size (`%QX0.0` and `%QW0` apart), OpenPLC's area sizes.
+pub const OPENPLC_PROFILE_JSON: &str = include_str!("../profiles/openplc.json");
+
+/// The profiles built into the compiler, by the name `--profile` takes (`--profile openplc`), with
+/// their JSON.
+pub const BUILT_IN_PROFILES: &[(&str, &str)] = &[
+    ("default", DEFAULT_PROFILE_JSON),
+    ("openplc", OPENPLC_PROFILE_JSON),
+];
 
 /// Byte order of multi-byte addresses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -151,6 +160,19 @@ impl TargetProfile {
         Ok(p)
     }
 
+    /// The built-in profile called `name` (`default`, `openplc`; see [`BUILT_IN_PROFILES`]), when
+    /// `name` is a bare name: no folder, no extension.
+    pub fn built_in(name: &Path) -> Option<Self> {
+        if name.components().count() != 1 || name.extension().is_some() {
+            return None;
+        }
+        let name = name.to_str()?;
+        BUILT_IN_PROFILES
+            .iter()
+            .find(|(n, _)| n.eq_ignore_ascii_case(name))
+            .and_then(|(_, json)| Self::from_json(json).ok())
+    }
+
     /// A profile from a JSON file, validated.
     pub fn load(path: &Path) -> Result<Self, ProfileError> {
         let text = std::fs::read_to_string(path).map_err(|e| ProfileError::Io {
@@ -168,7 +190,7 @@ impl TargetProfile {
             Err(e @ ProfileError::Io { .. }) => {
                 diags.push(
                     Diagnostic::error(code::E9001, e.to_string())
-                        .with_hint("check the --profile path and its permissions"),
+                        .with_hint("check the --profile path and its permissions, or name a built-in profile: `default`, `openplc`"),
                 );
                 None
             }

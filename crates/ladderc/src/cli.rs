@@ -70,7 +70,8 @@ pub struct ProjectArgs {
     /// Read every input in this language, whatever its name.
     #[arg(long, value_enum)]
     pub lang: Option<LangArg>,
-    /// Target profile (memory model) as JSON; the default profile when absent.
+    /// Target profile (memory model): a JSON file, or a built-in name: `openplc` (OpenPLC's areas,
+    /// one image per size: `%QX0.0` apart from `%QW0`) or `default`; the default profile when absent.
     #[arg(long)]
     pub profile: Option<PathBuf>,
     /// How PLCopen block calls are lowered (paper A).

@@ -701,7 +701,13 @@ impl Session {
     }
 
     /// The target profile at `path` (E9001 when it cannot be read, E2003 when it is not a valid one).
+    /// A bare built-in name (`openplc`, `default`) that names no file is that built-in profile.
     fn profile(&mut self, path: &Path) -> Option<c_backend::TargetProfile> {
+        if !self.overlay.contains_key(path) && !(self.disk && path.exists()) {
+            if let Some(p) = c_backend::TargetProfile::built_in(path) {
+                return Some(p);
+            }
+        }
         if self.disk && !self.overlay.contains_key(path) {
             return c_backend::TargetProfile::load_or_report(path, &mut self.diags);
         }
@@ -710,7 +716,7 @@ impl Session {
             Err(e) => {
                 self.diags.push(
                     Diagnostic::error(code::E9001, format!("cannot read {}: {e}", path.display()))
-                        .with_hint("check the --profile path and its permissions"),
+                        .with_hint("check the --profile path and its permissions, or name a built-in profile: `default`, `openplc`"),
                 );
                 return None;
             }

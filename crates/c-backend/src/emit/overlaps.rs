@@ -6,7 +6,7 @@
 //! addresses the profile rejects are skipped here (their errors come from code generation); the
 //! comparison is bit by bit within the bytes each access touches. A pair of different sizes (`%QX`
 //! and `%QW`) is apart where the project comes from (OpenPLC and matiec keep one image per size):
-//! its hint names the profile that models that (`profiles/openplc.json`).
+//! its hint names the built-in profile that models that (`--profile openplc`, `profiles/openplc.json`).
 
 use super::values::located_bytes;
 use super::Gen;
@@ -99,7 +99,7 @@ impl Gen<'_> {
             let hint = if asize == bsize {
                 "give each output its own address; writing one changes the other"
             } else {
-                "give each output its own address; writing one changes the other (OpenPLC and matiec keep one image per size, where they are apart: `--profile crates/c-backend/profiles/openplc.json`)"
+                "give each output its own address; writing one changes the other (OpenPLC and matiec keep one image per size, where they are apart: `--profile openplc`)"
             };
             let xml = XmlContext {
                 pou: bpou.map(str::to_string),
