@@ -399,6 +399,47 @@ const KNOWN: &[Known] = &[
                  scaling with raw converted to DINT first (P.TEMP_DINT) agrees. From \
                  eduardojvieira/ZPLC's analog_test project (round 18).",
     },
+    Known {
+        program: "additional_blocks",
+        columns: &[
+            "INST.ACC.XIN",
+            "INST.ALARM.XIN1",
+            "INST.CTRL.DTERM.X1",
+            "INST.CTRL.DTERM.X2",
+            "INST.CTRL.DTERM.X3",
+            "INST.CTRL.DTERM.XIN",
+            "INST.CTRL.DTERM.XOUT",
+            "INST.CTRL.ERROR",
+            "INST.CTRL.ITERM.X0",
+            "INST.CTRL.ITERM.XIN",
+            "INST.CTRL.ITERM.XOUT",
+            "INST.CTRL.PV",
+            "INST.CTRL.XOUT",
+            "INST.LEVEL",
+            "INST.RAMPING",
+            "INST.RAMP_SP.BUSY",
+            "INST.RAMP_SP.T",
+            "INST.RATE",
+            "INST.SLOPE.X1",
+            "INST.SLOPE.X2",
+            "INST.SLOPE.X3",
+            "INST.SLOPE.XIN",
+            "INST.SLOPE.XOUT",
+            "INST.VALVE",
+        ],
+        stops_in: None,
+        reason: "REAL intermediate results and exact time arithmetic, in the Annex F blocks \
+                 (`real_intermediate_precision`, `time_real`). DERIVATIVE's `(3.0 * (XIN - X3) + X1 - \
+                 X2) / (10.0 * CYCLE)`: each operation of REALs gives a REAL (IEC 61131-3 ed. 3 Table \
+                 29), as ladderc computes; matiec's literals are C doubles, so its quotient is taken in \
+                 double and rounded once, a last-bit difference that the PID's output and the tank's \
+                 level carry on (every such value within 1e-5 of its column's scale of matiec's: \
+                 additional_blocks_agree_with_matiec_to_real_rounding). RAMP's elapsed time: twenty \
+                 T#100ms make T#2s exactly, so the ramp ends there (T >= TR); matiec's unnormalized sum \
+                 compares below 2 s and its ramp runs one sample longer (BUSY one cycle later, T \
+                 2.1 s). HYSTERESIS, INTEGRAL without DERIVATIVE (INST.TOTAL), RAMP's output, SEMA, and \
+                 PID before the derivative sees a change agree exactly.",
+    },
 ];
 
 /// Programs of the fixture folder, sorted.
@@ -1584,4 +1625,58 @@ fn the_script_without_iec2c_is_a_usage_error() {
             && stderr.contains("scripts/build-matiec.sh"),
         "stderr: {stderr}"
     );
+}
+
+/// The additional function blocks (`fixtures/matiec_diff/additional_blocks.st`, ladderc's built-in
+/// copy of Annex F's blocks, W1435) against matiec's library: every REAL value within 1e-5 of its
+/// column's largest magnitude (and 1e-6) of matiec's recorded value in every cycle, so the blocks' algorithms
+/// and their TIME in seconds are matiec's, and only REAL rounding differs (KNOWN's entry); the
+/// other columns but the ramp's elapsed time exactly.
+#[test]
+fn additional_blocks_agree_with_matiec_to_real_rounding() {
+    let src = repo_root().join("tests/tests/fixtures/matiec_diff/additional_blocks.st");
+    let matiec = parse_csv(&std::fs::read_to_string(src.with_extension("matiec.csv")).unwrap());
+    let work = tempfile::tempdir().unwrap();
+    let lad = parse_csv(&ladderc_trace(&src, 120, tick_ns(&matiec), work.path()).unwrap());
+    assert_eq!(matiec.rows.len(), 120);
+    let mut compared = 0;
+    for (mi, h) in matiec.header.iter().enumerate().skip(2) {
+        let (name, ty) = h.rsplit_once(':').unwrap();
+        let Some(li) = lad.header.iter().position(|l| l.eq_ignore_ascii_case(name)) else {
+            continue;
+        };
+        let ramp_time = ["INST.RAMP_SP.T", "INST.RAMP_SP.BUSY", "INST.RAMPING"].contains(&name);
+        // (a derivative subtracts near values: the tolerance is relative to the column's scale)
+        let scale = matiec
+            .rows
+            .iter()
+            .filter_map(|r| r[mi].parse::<f64>().ok())
+            .fold(0.0f64, |a, v| a.max(v.abs()));
+        for (k, (mr, lr)) in matiec.rows.iter().zip(&lad.rows).enumerate() {
+            if ty == "REAL" {
+                let (m, l): (f64, f64) = (mr[mi].parse().unwrap(), lr[li].parse().unwrap());
+                assert!(
+                    (m - l).abs() <= 1e-6 + 1e-5 * scale,
+                    "{name} in cycle {k}: matiec {m}, ladderc {l}"
+                );
+            } else if !ramp_time {
+                assert_eq!(
+                    normalise(ty, &mr[mi], false),
+                    normalise(ty, &lr[li], true),
+                    "{name} in cycle {k}"
+                );
+            }
+            compared += 1;
+        }
+    }
+    assert!(compared >= 60 * 120, "{compared} values compared");
+    // under AUTO (cycles 3..98) the PID drives the level to the ramped set point 8.0; after, the
+    // manual output X0 lets it fall
+    let level: Vec<f64> = lad
+        .column("inst.level")
+        .iter()
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert!((level[89] - 8.0).abs() < 0.3, "level {}", level[89]);
+    assert!(level[119] < level[99] - 2.0, "{} {}", level[99], level[119]);
 }

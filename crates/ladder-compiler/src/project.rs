@@ -228,7 +228,22 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             }
         }
     }
-    index.missing_types = check_types(ctx, &index, &data_types, &headers, &configs);
+    let additional;
+    (index.missing_types, additional) = check_types(ctx, &index, &data_types, &headers, &configs);
+    // Beremiz's and OpenPLC's additional blocks (`PID`, `INTEGRAL`, ...) the file uses and does not
+    // define: their interfaces (ladderc's copy is compiled with the project, see
+    // `il_frontend::st::additional_blocks`)
+    for pou in il_frontend::st::additional_blocks::declarations() {
+        let key = pou.name.key();
+        let called = pou
+            .var_blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .any(|v| matches!(&v.ty, TypeRef::Named(n) if additional.contains(&n.key())));
+        if additional.contains(&key) || called {
+            index.pous.entry(key).or_insert_with(|| signature(pou));
+        }
+    }
 
     if !data_types.is_empty() {
         unit.items.push(LibraryElement::DataTypes(data_types));
@@ -944,15 +959,17 @@ fn signature(p: &Pou) -> PouSig {
 }
 
 /// E3009: derived types that nothing defines (one diagnostic per missing type, labels on its uses);
-/// returns their upper-case names.
+/// returns their upper-case names, and those of the additional blocks of Beremiz and OpenPLC
+/// (`PID`, ...) used and not defined, which are no error.
 fn check_types(
     ctx: &mut Ctx,
     index: &Index,
     data_types: &[TypeDecl],
     pous: &[(&Element, Pou)],
     configs: &[Configuration],
-) -> HashSet<String> {
+) -> (HashSet<String>, HashSet<String>) {
     let mut uses: Vec<(String, il_frontend::Span, String)> = Vec::new();
+    let additional = std::cell::RefCell::new(HashSet::new());
     let visit = |ty: &TypeRef, owner: &str, uses: &mut Vec<_>| {
         let mut t = ty;
         while let TypeRef::Array { element, .. } = t {
@@ -963,7 +980,11 @@ fn check_types(
                 && !index.types.contains_key(&n.key())
                 && !index.pous.contains_key(&n.key())
             {
-                uses.push((n.name.clone(), n.span, owner.to_string()));
+                if il_frontend::st::additional_blocks::is_additional(&n.name) {
+                    additional.borrow_mut().insert(n.key());
+                } else {
+                    uses.push((n.name.clone(), n.span, owner.to_string()));
+                }
             }
         }
     };
@@ -1032,7 +1053,7 @@ fn check_types(
         }
         ctx.report(d);
     }
-    missing
+    (missing, additional.into_inner())
 }
 
 fn configuration(ctx: &mut Ctx, c: &Element) -> Option<Configuration> {

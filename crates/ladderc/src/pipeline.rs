@@ -561,6 +561,7 @@ impl Session {
             }
         }
         crate::text_lists::name_text_lists(&mut units, &text_lists);
+        self.add_additional_blocks(&mut units, &mut pending);
         if !twincat_units.is_empty() || !twincat_tasks.is_empty() {
             self.task_cycle_ms = crate::twincat::configure(
                 self,
@@ -584,6 +585,61 @@ impl Session {
         il_frontend::actions::link(&mut units, &mut self.diags);
         il_frontend::st::qualifiers::set_project_programs(programs_before);
         units
+    }
+
+    /// Beremiz's and OpenPLC's additional blocks (`PID`, `INTEGRAL`, ...) that `units` use without
+    /// declaring them: ladderc's copy read as one more ST file (unit and bodies appended), with one
+    /// note W1435 naming them at the first use of the first.
+    fn add_additional_blocks(
+        &mut self,
+        units: &mut Vec<CompilationUnit>,
+        pending: &mut Vec<il_frontend::st::file::PendingBody>,
+    ) {
+        use il_frontend::st::additional_blocks as additional;
+        let wanted = additional::wanted(units);
+        let names: Vec<&str> = wanted.iter().map(|(n, _)| *n).collect();
+        // those the project names, in the order of their first uses
+        let mut used: Vec<(&str, diagnostics::Span)> = wanted
+            .iter()
+            .filter_map(|(n, s)| s.map(|s| (*n, s)))
+            .collect();
+        used.sort_by_key(|(_, s)| (s.file, s.start));
+        let Some(&(_, at)) = used.first() else {
+            return;
+        };
+        let used: Vec<&str> = used.into_iter().map(|(n, _)| n).collect();
+        let file = self.map.add_file_owned(
+            additional::FILE_NAME.to_string(),
+            additional::source_for(&names),
+        );
+        let mut local = Diagnostics::new();
+        let (unit, bodies, _) = il_frontend::st::file::parse_text(
+            file,
+            &self.map.get(file).text,
+            "additional_blocks",
+            Lang::St,
+            &mut local,
+        );
+        self.diags.extend(local);
+        self.diags.push(
+            Diagnostic::new(
+                code::W1435,
+                diagnostics::Severity::Note,
+                format!(
+                    "{} {} of the additional function blocks of Beremiz and OpenPLC Editor: ladderc's \
+                     built-in copy is compiled with the project",
+                    used.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
+                    if used.len() == 1 { "is one" } else { "are" }
+                ),
+            )
+            .at(at)
+            .with_hint(
+                "IEC 61131-3 Annex F's algorithms, a TIME counted in seconds as in those runtimes \
+                 (`ladderc explain W1435`); declare a block of the same name to use your own",
+            ),
+        );
+        units.push(unit);
+        pending.extend(bodies);
     }
 
     /// Parses again the text files in `waiting` (their bounds or lengths named constants they do not
@@ -703,7 +759,7 @@ impl Session {
     /// The target profile at `path` (E9001 when it cannot be read, E2003 when it is not a valid one).
     /// A bare built-in name (`openplc`, `default`) that names no file is that built-in profile.
     fn profile(&mut self, path: &Path) -> Option<c_backend::TargetProfile> {
-        if !self.overlay.contains_key(path) && !(self.disk && path.exists()) {
+        if !(self.overlay.contains_key(path) || (self.disk && path.exists())) {
             if let Some(p) = c_backend::TargetProfile::built_in(path) {
                 return Some(p);
             }

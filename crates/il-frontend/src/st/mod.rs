@@ -12,6 +12,7 @@
 //! gives one diagnostic and the next statements are still read; the lowering of several snippets into
 //! one POU through one [`PouLowering`] gives unique labels and temporaries.
 
+pub mod additional_blocks;
 pub mod any_inputs;
 pub mod ast;
 pub mod base_view;
