@@ -95,7 +95,9 @@ fn st_pid_ramp_and_semaphore_compute_as_annex_f() {
     assert_eq!(column(&trace, "Main.busy"), [0.0, 0.0, 1.0, 1.0, 0.0, 0.0]);
 }
 
-/// A project's own `PID` is its own (no note, its pins); `RTC`, not provided, stays one E1003.
+/// A project's own `PID` is its own (no note, its pins); `RTC`, not provided, stays one E1003
+/// that names its library; CODESYS Util's `PID` (its pins `ACTUAL`, `SET_POINT` ...) is one error
+/// saying so, not one per pin.
 #[test]
 fn a_declared_block_of_that_name_wins_and_rtc_is_not_provided() {
     let (code, lines) = check_text(
@@ -107,13 +109,31 @@ fn a_declared_block_of_that_name_wins_and_rtc_is_not_provided() {
     assert_eq!(code, Some(0), "{lines:?}");
     assert!(lines.iter().all(|l| !l.contains("W1435")), "{lines:?}");
     let (code, lines) = check_text(
+        "util.st",
+        "PROGRAM PLC_PRG\nVAR ctrl : PID; t : REAL; y : REAL; END_VAR\n\
+         ctrl(ACTUAL := t, SET_POINT := 20.0, KP := 2.0, TN := 10.0, Y_MIN := 0.0);\n\
+         y := ctrl.Y;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].starts_with(
+            "util.st:3:6: error[E1011]: this `PID` is another library's (its pins `ACTUAL`, \
+             `SET_POINT`, `TN`, `Y_MIN`, `Y`): ladderc provides the `PID` of Beremiz and OpenPLC \
+             Editor (IEC 61131-3 Annex F) only"
+        ),
+        "{lines:?}"
+    );
+    let (code, lines) = check_text(
         "clock.st",
         "PROGRAM Main\nVAR clock : RTC; END_VAR\nclock(IN := FALSE);\nEND_PROGRAM\n",
     );
     assert_eq!(code, Some(1));
     assert_eq!(
         lines,
-        ["clock.st:2:13: error[E1003]: unknown type `RTC` (hint: declare it in a TYPE block or as a \
-          FUNCTION_BLOCK, or use an elementary type)"]
+        ["clock.st:2:13: error[E1003]: unknown type `RTC` (hint: `RTC` is a block of the additional \
+          blocks of Beremiz and OpenPLC Editor (a real-time clock), which ladderc does not provide: \
+          declare it as a FUNCTION_BLOCK in the project (or give its library's source with --lib))"]
     );
 }

@@ -497,7 +497,10 @@ fn many_errors_show_the_first_fifty_per_file_and_count_the_rest() {
         "many.il",
         &format!(
             "PROGRAM p\nVAR a : INT; END_VAR\nLD a\n{}END_PROGRAM\n",
-            "ST nope\n".repeat(5000)
+            // (5000 names: an undeclared name is reported once per POU)
+            (0..5000)
+                .map(|k| format!("ST nope{k}\n"))
+                .collect::<String>()
         ),
     );
     let out = run(&["check"], &[&src]);

@@ -381,3 +381,24 @@ fn listed_files_are_found_whatever_their_case_and_a_missing_one_is_located() {
         "{stderr}"
     );
 }
+
+/// A truncated `.TcPOU` (round 19) is one E3001 at its root, not also E3002 "expected a PLCopen
+/// <project>", which a TwinCAT file is not.
+#[test]
+fn a_truncated_object_file_is_one_e3001() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("MAIN.TcPOU");
+    std::fs::write(
+        &path,
+        "<?xml version=\"1.0\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  <POU Name=\"MAIN\">\n    \
+         <Declaration><![CDATA[PROGRAM MAIN\nVAR n : INT; END_VAR\n]]></Declaration>\n  </POU>\n",
+    )
+    .unwrap();
+    let (code, heads) = check(&[path], dir.path());
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        ["MAIN.TcPOU:2:1: error[E3001]: the XML file is not well-formed: element <TcPlcObject> is \
+          never closed"]
+    );
+}

@@ -382,3 +382,34 @@ fn an_sfc_body_stays_one_located_e0321() {
           ladderc cannot read in a TwinCAT source file (it reads ST, LD/FBD and CFC bodies)"]
     );
 }
+
+/// TwinCAT's EXECUTE box (round 19, purushothaman2310/IEC61131-OOPS-TwiCAT; before: E0326 "box
+/// `EXECUTE` has no input"): its ST statements (two, a comment, a line break written `\r\n` in the
+/// archive) run in the scans its EN is TRUE.
+#[test]
+fn an_execute_box_runs_its_st_statements_when_en_is_true() {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n1,MAIN.bRun,1\n4,MAIN.bRun,0\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture("execute/MAIN.TcPOU"))
+        .args(["--cycles", "6", "--sanitize", "--stimulus"])
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", "MAIN.n,MAIN.nTwice"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("error["), "{stderr}");
+    let trace = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(column(&trace, "MAIN.n"), [0.0, 1.0, 2.0, 3.0, 3.0, 3.0]);
+    assert_eq!(
+        column(&trace, "MAIN.nTwice"),
+        [0.0, 2.0, 4.0, 6.0, 6.0, 6.0]
+    );
+}

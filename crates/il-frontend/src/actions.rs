@@ -307,7 +307,7 @@ fn rewrite_calls(
         };
         if let Some(a) = scope.program_action(instance) {
             // (a METHOD of a program: `PRG.M(x)`, CODESYS and TwinCAT)
-            method_arguments(a, args);
+            method_arguments(a, args, instance);
             // the program's one instance runs the action (CODESYS: `PLC_PRG.Reset();`), unless
             // the program has no instance or several, or calls itself by its name
             let key = a.pou.key();
@@ -381,7 +381,7 @@ fn rewrite_calls(
         let Some((fb, action)) = scope.action_of(instance) else {
             continue;
         };
-        method_arguments(action, args);
+        method_arguments(action, args, instance);
         if matches!(args, CallArgs::NonFormal(_)) {
             continue;
         }
@@ -409,7 +409,7 @@ fn rewrite_calls(
 
 /// A method's arguments (of an action with `method_inputs`) go to its hidden variables
 /// `__M_<METHOD>_<input>`: positional ones in the order of its inputs.
-fn method_arguments(action: &Action, args: &mut CallArgs) {
+fn method_arguments(action: &Action, args: &mut CallArgs, called: &VarRef) {
     let Some(inputs) = &action.method_inputs else {
         return;
     };
@@ -435,7 +435,37 @@ fn method_arguments(action: &Action, args: &mut CallArgs) {
                 }
             }
         }
+        CallArgs::None if !action.method_defaults.is_empty() => {
+            *args = CallArgs::Formal(Vec::new());
+        }
         _ => {}
+    }
+    // the value inputs the call leaves out start again at their initial values
+    if let CallArgs::Formal(list) = args {
+        for input in &action.method_defaults {
+            let hidden = method_var(m, &input.name);
+            if list.iter().any(|a| a.name.is(&hidden)) {
+                continue;
+            }
+            let span = called.span;
+            // the instance's own default (`inst.__MD_M_X`; `called` is `inst.M`, or the
+            // program's name)
+            let mut value = called.clone();
+            if value.accessors.is_empty() {
+                value.accessors.push(Accessor::Field(Ident::new(
+                    method_input_default(m, &input.name),
+                    span,
+                )));
+            } else if let Some(Accessor::Field(f)) = value.accessors.last_mut() {
+                *f = Ident::new(method_input_default(m, &input.name), span);
+            }
+            list.push(FormalArg {
+                name: Ident::new(hidden, span),
+                dir: ArgDir::Input,
+                value: Operand::Var(value),
+                span,
+            });
+        }
     }
 }
 
@@ -566,7 +596,27 @@ fn inline_rec(
             continue;
         };
         if stack.contains(&key) {
-            diags.push(
+            // (the copies of a block's own method calls are tagged so, `inline_own_method_calls`)
+            let upper = written.to_ascii_uppercase();
+            let accessor = [
+                crate::st::property::GET_PREFIX,
+                crate::st::property::SET_PREFIX,
+            ]
+            .iter()
+            .any(|p| upper.starts_with(p));
+            let method = prefix == METHOD_CALL_PREFIX && !accessor;
+            let d = if method {
+                // (a METHOD's variables are the instance's hidden ones: one set per instance)
+                Diagnostic::error(
+                    code::E0106,
+                    format!(
+                        "method `{written}` calls itself (directly or through another method): ladderc does not compile recursive methods"
+                    ),
+                )
+                .at(span)
+                .with_primary_label("recursive method call")
+                .with_hint("IEC 61131-3 forbids recursion (CODESYS and TwinCAT allow it in methods); ladderc keeps a method's variables once per instance, so a call cannot nest in itself: write the recursion as a loop with an explicit stack (an array)")
+            } else {
                 Diagnostic::error(
                     code::E0106,
                     format!(
@@ -576,8 +626,9 @@ fn inline_rec(
                 )
                 .at(span)
                 .with_primary_label("recursive action call")
-                .with_hint("actions are inlined where they are called; they cannot recurse"),
-            );
+                .with_hint("actions are inlined where they are called; they cannot recurse")
+            };
+            diags.push(d);
             continue;
         }
         *next += 1;
@@ -614,10 +665,25 @@ pub fn method_var(method: &str, var: &str) -> String {
     )
 }
 
+/// The hidden, never written variable holding the initial value of a method's value input:
+/// `__MD_<METHOD>_<INPUT>`, passed when a call does not give the input (see
+/// [`crate::ast::Action::method_defaults`]).
+pub fn method_input_default(method: &str, input: &str) -> String {
+    format!(
+        "__MD_{}_{}",
+        method.to_ascii_uppercase(),
+        input.to_ascii_uppercase()
+    )
+}
+
 /// The hidden output holding a method's result: `__M_<METHOD>`.
 pub fn method_result(method: &str) -> String {
     format!("{METHOD_PREFIX}{}", method.to_ascii_uppercase())
 }
+
+/// The tag of the copies of a function block's calls of its own methods (the `prefix` of
+/// [`inline_calls`] for them).
+pub const METHOD_CALL_PREFIX: &str = "__MC";
 
 /// The prefix of a method's hidden variables (see [`method_var`]).
 pub const METHOD_PREFIX: &str = "__M_";

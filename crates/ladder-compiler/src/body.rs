@@ -350,6 +350,7 @@ fn lower_actions<'e, 'a>(
             ),
             temps: None,
             method_inputs: None,
+            method_defaults: Vec::new(),
             diagnostics: Vec::new(),
         });
         out.il.insert(n.key(), body);

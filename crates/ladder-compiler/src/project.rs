@@ -88,6 +88,11 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     if let (true, Some(project), None) = (root.name() == "projects", inner.next(), inner.next()) {
         return read_project(ctx, project);
     }
+    if root.name() == "TcPlcObject" {
+        // a TwinCAT object file that reaches here is not well-formed (`crate::twincat` reads the
+        // others): E3001 said so, and it is no PLCopen project to expect
+        return unit;
+    }
     if root.name() != "project" && !single_pou {
         ctx.error(
             code::E3002,

@@ -8,7 +8,8 @@
 //! the assignments of FBD), `BoxTreeBox` (an operator, function, function block or action call,
 //! `InputItems` aligned with `InputParam` names, `OutputItems` with `OutputParam` names: a null
 //! output item is the one that flows on to the box's parent, an operand is a variable written from
-//! that output), `BoxTreeOperand` (a contact or input: variable or literal), `BoxTreeDemux` (a
+//! that output; an `EXECUTE` box holds ST statements in its `STSnippet`, which run when its EN is
+//! TRUE), `BoxTreeOperand` (a contact or input: variable or literal), `BoxTreeDemux` (a
 //! branch of the power rail or a fork of a line: its `Input` evaluated once, named by `VarId`, and
 //! each later `BoxTreeDemux` of that `VarId` reads it), `BoxTreeTerminator` (the left power rail: TRUE).
 //! An operand's `Flags` are the bits of CODESYS's `IFlags` (Negation 1, Set 2, Jump 4, Return 8,
@@ -752,6 +753,17 @@ impl Lowering {
         if let Some(g) = &guard {
             self.stmt(&["IF", g, "THEN"], at);
         }
+        if box_type.eq_ignore_ascii_case("EXECUTE")
+            && string(node, "ProvidesSTSnippet").as_deref() == Some("true")
+        {
+            // TwinCAT's EXECUTE box: its ST statements run when EN is TRUE; ENO is EN
+            self.st_snippet(node)?;
+            if guard.is_some() {
+                self.stmt(&["END_IF", ";"], 0);
+            }
+            let flows = output_items(node).iter().any(|i| i.name() == "n");
+            return Ok(flows.then(|| eno(&guard)));
+        }
         // the expression of the box's result (operators and functions) or of its outputs (blocks)
         let instance = prop(node, "Instance")
             .map(|i| self.target_text(i))
@@ -885,6 +897,43 @@ impl Lowering {
             flowing = flowing.filter(|v| v.guard.is_none());
         }
         Ok(flowing)
+    }
+
+    /// The ST statements of an EXECUTE box (`STSnippet` / `TextDocument` /
+    /// `TextBlobForSerialisation`), as tokens at that element (a diagnostic in them points at its
+    /// line); its text is ST the front end reads as any body's.
+    fn st_snippet(&mut self, node: &Element) -> Res<()> {
+        let document = prop(node, "STSnippet")
+            .and_then(|s| prop(s, "STSnippet"))
+            .and_then(|s| prop(s, "TextDocument"));
+        let Some((document, blob)) =
+            document.and_then(|d| prop(d, "TextBlobForSerialisation").map(|b| (d, b)))
+        else {
+            return Err(self.unsupported(node, "EXECUTE box without its ST text"));
+        };
+        let at = blob.tag_start();
+        // (the archive writes line breaks in the string as `\r\n`)
+        let text = string(document, "TextBlobForSerialisation")
+            .unwrap_or_default()
+            .replace("\\r\\n", "\n")
+            .replace("\\n", "\n")
+            .replace("\\t", " ");
+        let (toks, problems) = il_frontend::st::lexer::lex(&text);
+        if !problems.is_empty() {
+            return Err(self.error_at(
+                code::E0326,
+                blob,
+                "the ST statements of an EXECUTE box cannot be read (a character ST does not have)"
+                    .into(),
+            ));
+        }
+        for t in toks
+            .iter()
+            .filter(|t| !matches!(t.tok, il_frontend::st::lexer::Tok::Eof))
+        {
+            self.push(&text[t.range.clone()], at);
+        }
+        Ok(())
     }
 
     /// `name := value, ...` of a block call: the connected inputs.

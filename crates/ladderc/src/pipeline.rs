@@ -918,10 +918,75 @@ impl Session {
     /// The semantic analysis of `units` into [`Session::diags`], with or without the name table
     /// ([`Session::name_table`]).
     fn analyze(&mut self, units: &[CompilationUnit]) -> il_frontend::sema::Model {
-        if self.name_table {
+        let model = if self.name_table {
             il_frontend::sema::analyze(units, &mut self.diags)
         } else {
             il_frontend::sema::analyze_for_code(units, &mut self.diags)
+        };
+        self.foreign_additional_blocks();
+        model
+    }
+
+    /// A block that ladderc's additional blocks name (W1435) called with pins they lack: another
+    /// library's block of that name (CODESYS Util's `PID(ACTUAL, SET_POINT, ...)`,
+    /// `HYSTERESIS(IN, HIGH, LOW)`). Its E1011s (one per pin) become one error at the first.
+    fn foreign_additional_blocks(&mut self) {
+        use il_frontend::st::additional_blocks::is_additional;
+        let noted = |d: &Diagnostic| d.code == code::W1435;
+        if !self.diags.iter().any(noted) {
+            return;
+        }
+        // the block named by an E1011 `PID has no parameter `ACTUAL``, and the pin
+        let foreign = |d: &Diagnostic| -> Option<(String, String)> {
+            if d.code != code::E1011 {
+                return None;
+            }
+            let (block, rest) = d.message.split_once(" has no ")?;
+            let pin = rest.split('`').nth(1)?;
+            is_additional(block).then(|| (block.to_string(), pin.to_string()))
+        };
+        let list = std::mem::take(&mut self.diags).into_vec();
+        let mut pins: Vec<(String, Vec<String>)> = Vec::new();
+        for d in &list {
+            if let Some((block, pin)) = foreign(d) {
+                match pins.iter_mut().find(|(b, _)| *b == block) {
+                    Some((_, p)) if !p.contains(&pin) => p.push(pin),
+                    Some(_) => {}
+                    None => pins.push((block, vec![pin])),
+                }
+            }
+        }
+        let mut done: Vec<String> = Vec::new();
+        for d in list {
+            let Some((block, _)) = foreign(&d) else {
+                self.diags.push(d);
+                continue;
+            };
+            if done.contains(&block) {
+                continue;
+            }
+            let theirs = &pins.iter().find(|(b, _)| *b == block).expect("collected").1;
+            let shown: Vec<String> = theirs.iter().map(|p| format!("`{p}`")).collect();
+            let ours = d.hint.clone().unwrap_or_default();
+            let mut e = Diagnostic::error(
+                code::E1011,
+                format!(
+                    "this `{block}` is another library's (its pins {}): ladderc provides the `{block}` of Beremiz and OpenPLC Editor (IEC 61131-3 Annex F) only",
+                    shown.join(", ")
+                ),
+            )
+            .with_primary_label("a pin of another library's block")
+            .with_hint(format!(
+                "{ours}; a CODESYS Util or vendor `{block}` is not provided: declare the FUNCTION_BLOCK `{block}` in the project (it is then used), or give its library's source with --lib"
+            ));
+            if let Some(span) = d.span {
+                e = e.at(span);
+            }
+            if let Some(x) = d.xml {
+                e = e.with_xml(x);
+            }
+            self.diags.push(e);
+            done.push(block);
         }
     }
 

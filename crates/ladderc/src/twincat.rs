@@ -32,7 +32,7 @@ pub fn is_twincat_file(path: &Path) -> bool {
 /// library references to `references` (`None` when no input is a project). A listed file that
 /// does not exist is one E1079 at its `<Compile>` element (the project's text is added to the
 /// session's sources for it), and its stem goes to `missing`. The file name of each project saved
-/// as a library ([`is_library_project`]) goes to `library_projects`.
+/// as a library (`is_library_project`) goes to `library_projects`.
 pub fn expand(
     session: &mut Session,
     paths: &[PathBuf],

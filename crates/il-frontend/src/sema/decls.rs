@@ -694,9 +694,23 @@ impl Analyzer<'_> {
         if let Some(fb) = StdFb::from_name(&n.name) {
             return Type::Fb(FbType::Standard(fb));
         }
+        if n.is("EXCEPTIONCODE") {
+            // TwinCAT's `__SYSTEM.ExceptionCode`, the type of `__CATCH(exc)`'s variable (W1427:
+            // never written): its 32-bit code
+            return Type::Elementary(Elementary::Udint);
+        }
+        let hint = match vendor_block(&n.name) {
+            Some(library) => format!(
+                "`{}` is a block of {library}, which ladderc does not provide: declare it as a FUNCTION_BLOCK in the project (or give its library's source with --lib)",
+                n.name
+            ),
+            None => {
+                "declare it in a TYPE block or as a FUNCTION_BLOCK, or use an elementary type".into()
+            }
+        };
         self.error(code::E1003, n.span, format!("unknown type `{}`", n.name))
             .label("no such type")
-            .hint("declare it in a TYPE block or as a FUNCTION_BLOCK, or use an elementary type");
+            .hint(hint);
         Type::Error
     }
 
@@ -1677,6 +1691,36 @@ pub fn reserved_name(name: &str) -> Option<&'static str> {
         Some("an elementary data type")
     } else if StdFb::from_name(name).is_some() {
         Some("a standard function block")
+    } else {
+        None
+    }
+}
+
+/// The vendor library whose block `name` is, for the blocks real projects use most that ladderc
+/// does not provide: CODESYS's Util (TwinCAT's Tc2_Utilities has most of them too) and the
+/// real-time clock of Beremiz's and OpenPLC Editor's additional blocks.
+fn vendor_block(name: &str) -> Option<&'static str> {
+    const UTIL: &[&str] = &[
+        "PID_FIXCYCLE",
+        "PD",
+        "BLINK",
+        "LIMITALARM",
+        "RAMP_INT",
+        "RAMP_REAL",
+        "CHARCURVE",
+        "LIN_TRAFO",
+        "STATISTICS_INT",
+        "STATISTICS_REAL",
+        "VARIANCE",
+        "FREQ_MEASURE",
+        "GEN",
+        "MANUAL",
+    ];
+    let u = name.to_ascii_uppercase();
+    if UTIL.contains(&u.as_str()) {
+        Some("CODESYS's Util library")
+    } else if u == "RTC" {
+        Some("the additional blocks of Beremiz and OpenPLC Editor (a real-time clock)")
     } else {
         None
     }

@@ -110,7 +110,8 @@ pub(crate) struct Analyzer<'d> {
     /// IL instructions (a FOR loop reads its variable four times) reports the name once.
     pub(crate) undeclared_at: std::collections::HashSet<(crate::FileId, u32)>,
     /// (POU, upper-case block type, upper-case variable) whose W1412 was given; (POU, `program P`,
-    /// empty) once E1001 reported `P.x` in the POU.
+    /// empty) once E1001 reported `P.x` in the POU; (POU, `undeclared X`, empty) once E1001
+    /// reported the undeclared name `X` there (its other uses are not reported).
     pub(crate) internal_accessed: std::collections::HashSet<(u32, String, String)>,
     /// The standard function of each simple operator (`ADD` -> ADD), indexed by `Op as usize`, looked
     /// up on first use ([`stdlib::function`] searches the catalogue by name).

@@ -409,7 +409,12 @@ impl Body<'_, '_> {
             ),
             Some(Some(p)) => (p, 1),
             Some(None) => return Place::error(),
-            None => match self.lookup_base(&v.base, v.accessors.is_empty()) {
+            None => match self.lookup_base(
+                &v.base,
+                v.accessors.is_empty(),
+                // (a hidden member: `PRG.__MD_M_X`, a method's default the call passes)
+                matches!(v.accessors.first(), Some(crate::ast::Accessor::Field(f)) if f.name.starts_with("__")),
+            ) {
                 Some(p) => (p, 0),
                 None => return Place::error(),
             },
@@ -583,7 +588,7 @@ impl Body<'_, '_> {
     }
 
     /// The variable a name refers to in this POU.
-    fn lookup_base(&mut self, base: &ast::Ident, plain: bool) -> Option<Place> {
+    fn lookup_base(&mut self, base: &ast::Ident, plain: bool, hidden: bool) -> Option<Place> {
         let kind = self.pou().kind;
         let found = self
             .pou()
@@ -718,7 +723,7 @@ impl Body<'_, '_> {
             .filter(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Program);
         if let (Some(id), false) = (program, plain) {
             if self.program_instances(id) == 1 {
-                return Some(self.program_place(base, id));
+                return Some(self.program_place(base, id, hidden));
             }
         }
         if !self.a.silent
@@ -732,6 +737,18 @@ impl Body<'_, '_> {
         if program.is_some() && !self.a.silent {
             // `MAIN.x` (CODESYS/TwinCAT): one error per POU and program, its other uses unreported
             let key = (self.pou.0, format!("program {}", base.key()), String::new());
+            if !self.a.internal_accessed.insert(key) {
+                return None;
+            }
+        } else if !self.a.silent {
+            // an undeclared name: one error per POU and name, at its first use (as C compilers
+            // report an undeclared identifier once per function): a file of 51 undeclared names
+            // used 109 times gives 51 errors
+            let key = (
+                self.pou.0,
+                format!("undeclared {}", base.key()),
+                String::new(),
+            );
             if !self.a.internal_accessed.insert(key) {
                 return None;
             }
@@ -839,7 +856,7 @@ impl Body<'_, '_> {
 
     /// `MAIN.x` from any POU (CODESYS, TwinCAT): the one instance of program `id`, whose variables the
     /// field access reads and writes; warning W1413 once per POU and program.
-    fn program_place(&mut self, base: &ast::Ident, id: PouId) -> Place {
+    fn program_place(&mut self, base: &ast::Ident, id: PouId, hidden: bool) -> Place {
         if !self.a.model.programs_used_by_name.contains(&id) {
             self.a.model.programs_used_by_name.push(id);
         }
@@ -848,7 +865,7 @@ impl Body<'_, '_> {
             format!("program {}", base.key()),
             "W1413".to_string(),
         );
-        if !self.a.silent && self.a.internal_accessed.insert(key) {
+        if !self.a.silent && !hidden && self.a.internal_accessed.insert(key) {
             let name = self.a.model.pous[id.0 as usize].name.clone();
             self.a
                 .warning(
@@ -1005,7 +1022,9 @@ impl Body<'_, '_> {
                                 // once per POU, block type and variable)
                                 let key = (self.pou.0, tname.to_ascii_uppercase(), f.key());
                                 // (not the hidden class a dispatch through a base reads)
-                                let hidden = f.name.starts_with(crate::st::base_view::CLASS_PREFIX);
+                                // (nor a method input's default a call passes, `__MD_`)
+                                let hidden = f.name.starts_with(crate::st::base_view::CLASS_PREFIX)
+                                    || f.name.starts_with("__MD_");
                                 if !self.a.silent && !hidden && self.a.internal_accessed.insert(key)
                                 {
                                     self.a

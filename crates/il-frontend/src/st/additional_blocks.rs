@@ -39,7 +39,7 @@ pub fn is_additional(name: &str) -> bool {
 /// The additional blocks `units` use as a type (of a variable, a structure field, an array's
 /// elements, a function's result) and declare nowhere, each with its first use, then the blocks
 /// those call that the units do not declare either (no use of their own); upper case, in
-/// [`BLOCKS`] order. Empty for nearly every project.
+/// the file's order. Empty for nearly every project.
 pub fn wanted(units: &[CompilationUnit]) -> Vec<(&'static str, Option<Span>)> {
     let mut declared: HashSet<String> = HashSet::new();
     let mut used: HashMap<String, Span> = HashMap::new();

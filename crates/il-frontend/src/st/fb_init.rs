@@ -492,6 +492,7 @@ fn lower(decls: &super::Declarations, p: &Pou, stmts: &[Stmt], diags: &mut Diagn
         body: crate::actions::instantiate(&body, "__FBI_L", p.name.span),
         temps,
         method_inputs: Some(Vec::new()),
+        method_defaults: Vec::new(),
         diagnostics: Vec::new(),
     }
 }
@@ -1116,4 +1117,14 @@ fn boolean(b: bool, span: Span) -> Expr {
 
 fn int(i: i128, span: Span) -> Expr {
     Expr::literal(LiteralKind::Int(i), span)
+}
+
+/// Whether a method is one the runtime calls with every argument (`FB_init`, `FB_reinit`,
+/// `FB_exit`, and a base's `__S<level>_FB_INIT`): its inputs get no per-call defaults.
+pub fn is_special_method(name: &str) -> bool {
+    let u = name.to_ascii_uppercase();
+    u == "FB_INIT"
+        || u == "FB_EXIT"
+        || u == "FB_REINIT"
+        || (u.starts_with("__S") && u.ends_with("_FB_INIT"))
 }

@@ -1923,6 +1923,7 @@ pub fn compile_pending(
                         body: crate::actions::instantiate(&init, "__VINIT_", span),
                         temps: None,
                         method_inputs: Some(Vec::new()),
+                        method_defaults: Vec::new(),
                         diagnostics: Vec::new(),
                     });
                 }
@@ -2032,6 +2033,18 @@ pub fn add_method_vars(
             for v in &b.vars {
                 let mut v = v.clone();
                 let inst = m.inst.contains(&v.name.key());
+                let per_call = match b.kind {
+                    VarKind::Input => true,
+                    VarKind::Local | VarKind::Temp => !inst && !is_stat,
+                    _ => false,
+                };
+                if per_call && !matches!(v.ty, crate::ast::TypeRef::Ref { .. }) {
+                    // never written: the value a call that leaves the input out passes, and the
+                    // value a local starts each call with
+                    let mut d = v.clone();
+                    d.name.name = crate::actions::method_input_default(&m.name.name, &v.name.name);
+                    defaults.push(d);
+                }
                 v.name.name = method_var(&m.name.name, &v.name.name);
                 if is_stat {
                     // VAR_STAT: one copy per method, shared by every instance (`var_stat::hoist`)
@@ -2209,7 +2222,7 @@ pub fn inline_own_method_calls(
         std::mem::take(&mut p.body),
         &map,
         &is_var,
-        "__MC",
+        crate::actions::METHOD_CALL_PREFIX,
         &mut next,
         &mut local,
     );
@@ -2218,7 +2231,7 @@ pub fn inline_own_method_calls(
             std::mem::take(&mut a.body),
             &map,
             &is_var,
-            "__MC",
+            crate::actions::METHOD_CALL_PREFIX,
             &mut next,
             &mut local,
         );
@@ -2409,6 +2422,55 @@ fn lower_method_as(
             ],
         );
     }
+    if action.is_none() {
+        // its VAR and VAR_TEMP start at their initial values at each call, also at the second of
+        // two calls in one scan (the block's temporaries start so once per scan)
+        let var = |name: String| {
+            crate::ast::Operand::Var(crate::ast::VarRef {
+                base: crate::ast::Ident::new(name, m.name.span),
+                accessors: Default::default(),
+                span: m.name.span,
+            })
+        };
+        let simple = |op: crate::ast::Op, operand| {
+            crate::ast::IlStmt::Instr(crate::ast::Instruction {
+                kind: crate::ast::InstrKind::Simple {
+                    op,
+                    negate: false,
+                    operand: Some(operand),
+                },
+                span: m.name.span,
+            })
+        };
+        let resets: Vec<crate::ast::IlStmt> = m
+            .blocks
+            .iter()
+            .filter(|b| matches!(b.kind, VarKind::Local | VarKind::Temp))
+            .filter(|b| {
+                b.name
+                    .as_ref()
+                    .is_none_or(|n| n.name != super::var_stat::MARK)
+            })
+            .flat_map(|b| b.vars.iter())
+            .filter(|v| !m.inst.contains(&v.name.key()) && decls.resets_per_call(&v.ty))
+            .flat_map(|v| {
+                [
+                    simple(
+                        crate::ast::Op::Ld,
+                        var(crate::actions::method_input_default(
+                            &m.name.name,
+                            &v.name.name,
+                        )),
+                    ),
+                    simple(
+                        crate::ast::Op::St,
+                        var(method_var(&m.name.name, &v.name.name)),
+                    ),
+                ]
+            })
+            .collect();
+        body.splice(0..0, resets);
+    }
     let body = instantiate(
         &body,
         &format!("{}_L", method_result(&action.unwrap_or(&m.name).name)),
@@ -2427,6 +2489,17 @@ fn lower_method_as(
         body,
         temps: None,
         method_inputs: Some(if action.is_some() { Vec::new() } else { inputs }),
+        method_defaults: if action.is_some() || super::fb_init::is_special_method(&m.name.name) {
+            Vec::new()
+        } else {
+            m.blocks
+                .iter()
+                .filter(|b| b.kind == VarKind::Input)
+                .flat_map(|b| b.vars.iter())
+                .filter(|v| decls.resets_per_call(&v.ty))
+                .map(|v| v.name.clone())
+                .collect()
+        },
         diagnostics: Vec::new(),
     })
 }

@@ -779,8 +779,9 @@ struct Rewrite<'a> {
 impl Rewrite<'_> {
     /// `text` (at `base` in `file`), written at level `level` of the chain, with `SUPER^.M` written
     /// as the name of the version of `M` visible at `level - 1` (`M` itself when that is the
-    /// block's version: blanks before it), `SUPER^.x` of a variable as `x`, and `SUPER^()` as the
-    /// hidden method of the body of `level - 1`. Same length, same line breaks.
+    /// block's version: blanks before it), `SUPER^.x` of a variable as `x`, `SUPER^()` as the
+    /// hidden method of the body of `level - 1`, and `SUPER^` alone (a value) as `THIS^`. Same
+    /// length, same line breaks.
     fn rewrite(
         &mut self,
         file: FileId,
@@ -859,7 +860,10 @@ impl Rewrite<'_> {
                         &super_body(parent),
                     );
                 }
-                _ => {}
+                // `SUPER^` as a value (`itf := SUPER^;`, an argument): the instance itself, seen
+                // as its base; an interface call through it dispatches on the instance, as
+                // through THIS^ (purushothaman2310/IEC61131-OOPS-TwiCAT)
+                _ => out.replace_range(toks[k].range.start..toks[k + 1].range.end, "THIS^ "),
             }
         }
         out

@@ -52,6 +52,8 @@ pub struct PouLowering<'d> {
     vars: HashMap<String, TypeRef>,
     temps: Vec<VarDecl>,
     next_label: u32,
+    /// Whether a jump or label in ST was reported in this POU (W1426, once).
+    st_jump_noted: bool,
     /// What the names of labels and temporaries start with (`_ST_`; see [`Self::with_prefix`]).
     prefix: &'static str,
     loops: Vec<LoopLabels>,
@@ -211,6 +213,7 @@ impl<'d> PouLowering<'d> {
             vars,
             temps: Vec::new(),
             next_label: 0,
+            st_jump_noted: false,
             prefix: "_ST_",
             loops: Vec::new(),
             poisoned: false,
@@ -457,6 +460,36 @@ impl<'d> PouLowering<'d> {
                     });
                 }
             }
+        }
+        // the value inputs the call leaves out start again at their initial values (the
+        // never-written `__MD_<M>_<X>` of `crate::actions::method_input_default`)
+        let given: Vec<String> = before
+            .iter()
+            .filter_map(|s| match &s.kind {
+                StmtKind::Assign { target, .. } => target.name().map(|n| n.key()),
+                _ => None,
+            })
+            .collect();
+        for input in &sig.inputs {
+            let hidden = crate::actions::method_var(&sig.name, input);
+            let default = crate::actions::method_input_default(&sig.name, input);
+            let resets = self
+                .vars
+                .get(&default)
+                .is_some_and(|t| self.decls.resets_per_call(t));
+            if given.contains(&hidden) || !resets || super::fb_init::is_special_method(&sig.name) {
+                continue;
+            }
+            before.push(Stmt {
+                kind: StmtKind::Assign {
+                    target: place(hidden, span),
+                    value: Expr {
+                        kind: ExprKind::Place(place(default, span)),
+                        span,
+                    },
+                },
+                span,
+            });
         }
         self.stmt_list(&before, out, diags);
         let bound = self.method_in_out_args(sig, &in_outs, out, diags);
@@ -956,6 +989,27 @@ impl<'d> PouLowering<'d> {
                 },
                 span,
             )),
+            // the label and the jump keep the user's name (the generated ones start with `_ST_`):
+            // a jump to a label the body does not have, or a label written twice, is the IL's
+            // E1009 / E1010 at the name
+            StmtKind::Label(_) | StmtKind::Jump(_) if !self.st_jump_noted => {
+                self.st_jump_noted = true;
+                diags.push(
+                    Diagnostic::warning(
+                        code::W1426,
+                        format!(
+                            "`{}` jumps in Structured Text (CODESYS and TwinCAT): IEC 61131-3 has jumps in IL, LD and FBD only (the POU's other jumps and labels are not reported)",
+                            self.pou.name
+                        ),
+                    )
+                    .at(span)
+                    .with_primary_label("a jump or its label")
+                    .with_hint("compiled as CODESYS does: `JMP name;` goes on at `name:` of the same body; for another IEC compiler write the logic with IF, CASE and the loops"),
+                );
+                self.stmt_lowered(s, out, diags);
+            }
+            StmtKind::Label(l) => out.push(IlStmt::Label(l.clone())),
+            StmtKind::Jump(l) => out.push(jump(Condition::Always, l, span)),
         }
     }
 

@@ -155,6 +155,7 @@ pub fn compile_body_with_actions(
                 body,
                 temps: None,
                 method_inputs: None,
+                method_defaults: Vec::new(),
                 diagnostics: local.into_vec(),
             }
         })

@@ -143,6 +143,8 @@ struct Parser<'s, 'd> {
     no_assign: bool,
     /// Whether W0324 (AND_THEN / OR_ELSE) was reported for this text.
     short_circuit_noted: bool,
+    /// Whether W1427 (`__TRY`) was reported for this text.
+    try_noted: bool,
     /// `THIS.x` is `THIS^.x` (edition 3's spelling; see [`statements_in`]).
     this_dot: bool,
     /// The last error reported (code, span): the same error at the same place again (an unclosed
@@ -187,6 +189,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             short_operand: 0,
             no_assign: false,
             short_circuit_noted: false,
+            try_noted: false,
             this_dot: false,
             last_error: None,
             diags,
@@ -386,10 +389,100 @@ impl<'s, 'd> Parser<'s, 'd> {
 
     fn statement_list(&mut self) -> Vec<Stmt> {
         let mut out = Vec::new();
-        while !ends_list(self.peek()) {
+        while !ends_list(self.peek()) && self.try_word().is_none_or(|w| w == "__TRY") {
             self.statement_into(&mut out);
         }
         out
+    }
+
+    /// The word of TwinCAT's exception handling here (`__TRY`, `__CATCH`, `__FINALLY`,
+    /// `__ENDTRY`, upper case), if any.
+    fn try_word(&self) -> Option<&'static str> {
+        if !matches!(self.peek(), Tok::Ident) {
+            return None;
+        }
+        let w = self.text(self.cur());
+        ["__TRY", "__CATCH", "__FINALLY", "__ENDTRY"]
+            .into_iter()
+            .find(|k| w.eq_ignore_ascii_case(k))
+    }
+
+    /// `__TRY s __CATCH(exc) c __FINALLY f __ENDTRY` (TwinCAT 3.1.4024): read as `IF TRUE THEN s f
+    /// ELSE c f END_IF`: ladderc's runtime raises no exception (a division by zero gives 0 and is
+    /// reported while the program runs), so the `__CATCH` statements are checked and never run
+    /// (W1427, once per text). The current token is `__TRY`.
+    fn try_stmt(&mut self) -> Option<StmtKind> {
+        let t = self.cur().clone();
+        let try_span = self.span(t.range.start, t.range.end);
+        self.bump();
+        let mut body = self.statement_list();
+        let mut catch = Vec::new();
+        let mut finally = Vec::new();
+        if self.try_word() == Some("__CATCH") {
+            self.bump();
+            // `(exc)`: the variable that would receive the exception code (never written)
+            if self.at(&Tok::LParen) {
+                self.bump();
+                if matches!(self.peek(), Tok::Ident) {
+                    self.bump();
+                }
+                if self.at(&Tok::RParen) {
+                    self.bump();
+                } else {
+                    let found = self.describe_current();
+                    self.error_here(
+                        code::E0100,
+                        format!("expected `)` after the exception variable, found {found}"),
+                        "write `__CATCH(exc)` with one variable",
+                    );
+                }
+            }
+            catch = self.statement_list();
+        }
+        if self.try_word() == Some("__FINALLY") {
+            self.bump();
+            finally = self.statement_list();
+        }
+        if self.try_word() != Some("__ENDTRY") {
+            let found = self.describe_current();
+            self.error_here(
+                code::E0100,
+                format!("expected `__ENDTRY`, found {found}"),
+                "close the block: `__TRY ... __CATCH(exc) ... __FINALLY ... __ENDTRY`",
+            );
+            return None;
+        }
+        self.bump();
+        if !self.try_noted {
+            self.try_noted = true;
+            self.diags.push(
+                Diagnostic::warning(
+                    code::W1427,
+                    "`__TRY` (TwinCAT exception handling): ladderc's runtime raises no exception, so the `__CATCH` statements never run (the text's other such blocks are not reported)",
+                )
+                .at(try_span)
+                .with_primary_label("its statements run, then the __FINALLY ones")
+                .with_hint("a division by zero gives 0, a conversion out of range saturates, an index out of bounds stops the run, each reported while the program runs; test the divisor (or the index) before the operation to handle it in the program"),
+            );
+        }
+        body.extend(finally.iter().cloned());
+        catch.extend(finally);
+        let cond = Expr {
+            kind: ExprKind::Literal(Literal {
+                kind: LiteralKind::Bool(true),
+                type_prefix: None,
+                span: try_span,
+            }),
+            span: try_span,
+        };
+        Some(StmtKind::If {
+            branches: vec![CondBranch {
+                cond,
+                body,
+                span: try_span,
+            }],
+            else_body: Some(catch),
+        })
     }
 
     /// Parses one statement into `out`, after the method calls its expressions hold.
@@ -521,6 +614,27 @@ impl<'s, 'd> Parser<'s, 'd> {
             Tok::Kw(Kw::Return) => {
                 self.bump();
                 Some(StmtKind::Return)
+            }
+            Tok::Ident if self.try_word() == Some("__TRY") => self.try_stmt(),
+            // `START:` (a jump label, CODESYS and TwinCAT): a statement of its own, no `;`
+            Tok::Ident if matches!(self.peek_at(1), Tok::Colon) => {
+                let label = self.ident(self.cur());
+                self.bump();
+                self.bump();
+                return Some(Stmt {
+                    kind: StmtKind::Label(label),
+                    span: self.span(start, self.prev_end()),
+                });
+            }
+            // `JMP START;` (CODESYS and TwinCAT)
+            Tok::Ident
+                if self.text(self.cur()).eq_ignore_ascii_case("JMP")
+                    && matches!(self.peek_at(1), Tok::Ident) =>
+            {
+                self.bump();
+                let label = self.ident(self.cur());
+                self.bump();
+                Some(StmtKind::Jump(label))
             }
             Tok::Ident | Tok::Address(..) => self.assign_or_call(),
             Tok::Error => {

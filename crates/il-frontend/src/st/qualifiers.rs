@@ -27,8 +27,11 @@ pub const PROVIDED_LIBRARIES: &[&str] = &[
 /// Libraries of which ladderc provides some names only, upper case: their qualifier is dropped
 /// before those names (`Tc2_System.MEMMOVE(...)`), and before any other it is E1032 naming the
 /// library (`Tc2_System.ADSREAD`: its ADS and file blocks are not ladderc's).
-pub const PARTLY_PROVIDED_LIBRARIES: &[(&str, &[&str])] =
-    &[("TC2_SYSTEM", &["MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP"])];
+pub const PARTLY_PROVIDED_LIBRARIES: &[(&str, &[&str])] = &[
+    ("TC2_SYSTEM", &["MEMCPY", "MEMMOVE", "MEMSET", "MEMCMP"]),
+    // the type of `__CATCH(exc)`'s variable (`__TRY`, W1427), read as a UDINT
+    ("__SYSTEM", &["EXCEPTIONCODE"]),
+];
 
 thread_local! {
     /// The PROGRAM names of the project's files (upper case), set by [`set_project_programs`]:

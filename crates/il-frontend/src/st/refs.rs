@@ -257,7 +257,7 @@ impl RefTypes {
             // VAR_INST: assigned when the method starts, or at its first call on the instance
             // (`method_inits`), left in the text for it
             return;
-        } else if !value.eq_ignore_ascii_case("NULL") {
+        } else if !value.eq_ignore_ascii_case("NULL") && !is_zero_literal(value) {
             self.pending.push(
                 Diagnostic::error(
                     code::E0305,
@@ -455,4 +455,14 @@ fn address_initial_value(value: &str, span: Span) -> Option<VarRef> {
         accessors: accessors.into(),
         span,
     })
+}
+
+/// `0`, `16#0`, `2#0000` ...: the null address CODESYS and TwinCAT write for a pointer or
+/// reference (`p : POINTER TO INT := 0;`), the same as NULL.
+fn is_zero_literal(value: &str) -> bool {
+    let digits = ["16#", "8#", "2#"]
+        .iter()
+        .find_map(|p| value.strip_prefix(p))
+        .unwrap_or(value);
+    !digits.is_empty() && digits.chars().all(|c| c == '0' || c == '_')
 }

@@ -5,7 +5,9 @@
 //! by case-folded name. Invariants: bodies are never read (a POU can be registered before its body is
 //! lowered); later registrations of the same name replace earlier ones.
 
-use crate::ast::{CompilationUnit, LibraryElement, Pou, PouKind, TypeDecl, TypeRef, VarKind};
+use crate::ast::{
+    CompilationUnit, LibraryElement, Pou, PouKind, TypeDecl, TypeDef, TypeRef, VarKind,
+};
 use std::collections::HashMap;
 
 /// The interface of a POU as a caller sees it.
@@ -133,6 +135,27 @@ impl Declarations {
     /// No declarations.
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// Whether a method's variable of type `ty` is given its initial value again at each call
+    /// from a never-written copy (`crate::actions::method_input_default`): a value of an
+    /// elementary, string, enumerated or structured type, not a reference, an interface (its
+    /// hidden tag and references are set by the call) or a function block instance.
+    pub fn resets_per_call(&self, ty: &TypeRef) -> bool {
+        match ty {
+            TypeRef::Named(n) => {
+                let key = n.key();
+                !self.interfaces.contains_key(&key)
+                    && !self.pous.contains_key(&key)
+                    && crate::sema::StdFb::from_name(&n.name).is_none()
+                    && !self
+                        .types
+                        .get(&key)
+                        .is_some_and(|t| matches!(&t.def, TypeDef::Alias { ty, .. } if !self.resets_per_call(ty)))
+            }
+            TypeRef::String { .. } | TypeRef::Subrange { .. } | TypeRef::Enum { .. } => true,
+            TypeRef::Array { .. } | TypeRef::Ref { .. } => false,
+        }
     }
     /// Whether a data type, POU interface or global holds a `REFERENCE TO` (then the ST lowering
     /// looks for the `^` each access leaves out: see `Env::implicit_derefs`). Read once the
