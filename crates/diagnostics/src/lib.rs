@@ -33,9 +33,23 @@ pub mod code {
 }
 
 /// A sink that stages push diagnostics into; keeps the count of errors so a stage can stop before codegen.
-#[derive(Debug, Default, Clone)]
+/// A diagnostic equal to one already pushed (same code, severity, place and message: a text read
+/// twice by two stages) is left out, so the user reads each once.
+#[derive(Default, Clone)]
 pub struct Diagnostics {
     list: Vec<Diagnostic>,
+    /// The hashes of the diagnostics pushed (code, severity, place, message).
+    seen: std::collections::HashSet<u64>,
+}
+
+/// The list alone (the hashes are bookkeeping): two sinks that hold the same diagnostics print the
+/// same.
+impl std::fmt::Debug for Diagnostics {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Diagnostics")
+            .field("list", &self.list)
+            .finish()
+    }
 }
 
 impl Diagnostics {
@@ -43,13 +57,20 @@ impl Diagnostics {
     pub fn new() -> Self {
         Self::default()
     }
-    /// Adds one.
+    /// Adds one, unless an equal one is there.
     pub fn push(&mut self, d: Diagnostic) {
-        self.list.push(d);
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        (d.code, d.severity, d.span, &d.message).hash(&mut h);
+        if self.seen.insert(h.finish()) {
+            self.list.push(d);
+        }
     }
-    /// Adds several.
+    /// Adds several (each as [`Diagnostics::push`]).
     pub fn extend(&mut self, ds: impl IntoIterator<Item = Diagnostic>) {
-        self.list.extend(ds);
+        for d in ds {
+            self.push(d);
+        }
     }
     /// Whether one is an error.
     pub fn has_errors(&self) -> bool {
@@ -105,5 +126,29 @@ impl IntoIterator for Diagnostics {
     type IntoIter = std::vec::IntoIter<Diagnostic>;
     fn into_iter(self) -> Self::IntoIter {
         self.list.into_iter()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_equal_diagnostic_is_kept_once_and_a_different_one_is_not_lost() {
+        let at = |s: usize| Span::new(FileId(0), s, s + 2);
+        let d = |s: usize, m: &str| Diagnostic::error(code::E0100, m).at(at(s));
+        let mut ds = Diagnostics::new();
+        ds.push(d(4, "expected `)`"));
+        ds.extend([d(4, "expected `)`"), d(4, "expected `)`")]);
+        // another place, another message, another severity: kept
+        ds.push(d(9, "expected `)`"));
+        ds.push(d(4, "expected `,`"));
+        ds.push(Diagnostic::warning(code::E0100, "expected `)`").at(at(4)));
+        assert_eq!(ds.len(), 4);
+        assert_eq!(ds.error_count(), 3);
+        // a list taken out and pushed again keeps them all
+        let again: Vec<Diagnostic> = std::mem::take(&mut ds).into_vec();
+        ds.extend(again);
+        assert_eq!(ds.len(), 4);
     }
 }
