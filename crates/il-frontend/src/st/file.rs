@@ -2395,8 +2395,8 @@ fn lower_method_as(
         ..Default::default()
     }
     .apply(&mut body);
-    if m.ret.is_some() {
-        // the result starts at its default value each call
+    // `LD from` `ST to` of hidden variables, at the start of the method's statements
+    let copy = |from: String, to: String| {
         let var = |name: String| {
             crate::ast::Operand::Var(crate::ast::VarRef {
                 base: crate::ast::Ident::new(name, m.name.span),
@@ -2404,44 +2404,27 @@ fn lower_method_as(
                 span: m.name.span,
             })
         };
-        let simple = |op: crate::ast::Op, operand| {
+        [(crate::ast::Op::Ld, from), (crate::ast::Op::St, to)].map(|(op, name)| {
             crate::ast::IlStmt::Instr(crate::ast::Instruction {
                 kind: crate::ast::InstrKind::Simple {
                     op,
                     negate: false,
-                    operand: Some(operand),
+                    operand: Some(var(name)),
                 },
                 span: m.name.span,
             })
-        };
+        })
+    };
+    if m.ret.is_some() {
+        // the result starts at its default value each call
         body.splice(
             0..0,
-            [
-                simple(crate::ast::Op::Ld, var(method_default(&m.name.name))),
-                simple(crate::ast::Op::St, var(method_result(&m.name.name))),
-            ],
+            copy(method_default(&m.name.name), method_result(&m.name.name)),
         );
     }
     if action.is_none() {
         // its VAR and VAR_TEMP start at their initial values at each call, also at the second of
         // two calls in one scan (the block's temporaries start so once per scan)
-        let var = |name: String| {
-            crate::ast::Operand::Var(crate::ast::VarRef {
-                base: crate::ast::Ident::new(name, m.name.span),
-                accessors: Default::default(),
-                span: m.name.span,
-            })
-        };
-        let simple = |op: crate::ast::Op, operand| {
-            crate::ast::IlStmt::Instr(crate::ast::Instruction {
-                kind: crate::ast::InstrKind::Simple {
-                    op,
-                    negate: false,
-                    operand: Some(operand),
-                },
-                span: m.name.span,
-            })
-        };
         let resets: Vec<crate::ast::IlStmt> = m
             .blocks
             .iter()
@@ -2454,19 +2437,10 @@ fn lower_method_as(
             .flat_map(|b| b.vars.iter())
             .filter(|v| !m.inst.contains(&v.name.key()) && decls.resets_per_call(&v.ty))
             .flat_map(|v| {
-                [
-                    simple(
-                        crate::ast::Op::Ld,
-                        var(crate::actions::method_input_default(
-                            &m.name.name,
-                            &v.name.name,
-                        )),
-                    ),
-                    simple(
-                        crate::ast::Op::St,
-                        var(method_var(&m.name.name, &v.name.name)),
-                    ),
-                ]
+                copy(
+                    crate::actions::method_input_default(&m.name.name, &v.name.name),
+                    method_var(&m.name.name, &v.name.name),
+                )
             })
             .collect();
         body.splice(0..0, resets);
