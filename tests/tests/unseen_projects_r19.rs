@@ -154,3 +154,54 @@ fn justkuchkorov_util_pid_is_one_error_naming_its_library() {
         "{stderr}"
     );
 }
+
+/// OpenPLC Editor v4 (yaseralie/OpenPLC_Arduino, round 19): a `.ld` POU is declarations then JSON
+/// graphics: one located E1073 (before: 7,649 errors, one per JSON line), exit 1; its project
+/// folder (`project.json`, no plc.xml) is one E9001 that says so and names the generated XML
+/// (before: "Is a directory (os error 21)", "check the permissions"), exit 2.
+#[test]
+fn an_openplc_editor_v4_json_body_and_project_folder_are_one_diagnostic_each() {
+    let dir = tempfile::tempdir().unwrap();
+    let programs = dir.path().join("pous/programs");
+    std::fs::create_dir_all(&programs).unwrap();
+    std::fs::write(
+        dir.path().join("project.json"),
+        "{ \"type\": \"plc-project\" }\n",
+    )
+    .unwrap();
+    let ld = programs.join("main.ld");
+    std::fs::write(
+        &ld,
+        "PROGRAM main\nVAR\n\tLED1 : bool AT %QX0.0;\nEND_VAR\n\n{\n  \"name\": \"main\",\n  \
+         \"rungs\": [\n    {\n      \"id\": \"rung_1\",\n      \"nodes\": [],\n      \"edges\": []\n    \
+         }\n  ]\n}\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&ld)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    assert!(
+        errors[0].contains("main.ld:6:1: error[E1073]: an OpenPLC Editor v4 graphical body"),
+        "{stderr}"
+    );
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("is a folder that holds no project ladderc reads")
+            && stderr.contains("OpenPLC Editor v4 project (project.json)")
+            && !stderr.contains("permissions"),
+        "{stderr}"
+    );
+}

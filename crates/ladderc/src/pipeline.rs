@@ -354,6 +354,24 @@ impl Session {
                     fallback_at: None,
                 }),
                 Ok(Ok(bytes)) => crate::encoding::decode(bytes),
+                Err(_) if self.disk && p.is_dir() => {
+                    // a folder that is no project ladderc reads (beremiz.rs, twincat.rs took those)
+                    let v4 = p.join("project.json").is_file();
+                    self.diags.push(
+                        Diagnostic::error(
+                            code::E9001,
+                            format!(
+                                "{shown} is a folder that holds no project ladderc reads (no plc.xml of Beremiz or OpenPLC, no TwinCAT .plcproj)"
+                            ),
+                        )
+                        .with_hint(if v4 {
+                            "an OpenPLC Editor v4 project (project.json): give its generated PLCopen XML (build/<target>/src/plc.xml) or its .st files"
+                        } else {
+                            "give the source files (.st, .il, .xml), or the folder of a Beremiz, OpenPLC or TwinCAT project"
+                        }),
+                    );
+                    continue;
+                }
                 Err(e) => {
                     self.diags.push(
                         Diagnostic::error(code::E9001, format!("cannot read {shown}: {e}"))
@@ -489,6 +507,20 @@ impl Session {
                     Some(stem) if is_iec_identifier(stem) => stem,
                     _ => il_frontend::DEFAULT_IMPLICIT_PROGRAM,
                 };
+                if let Some(at) = openplc_v4_json_body(src) {
+                    // OpenPLC Editor v4's `.ld` / `.fbd` POU: declarations, then the graphics as
+                    // JSON (each of its lines would be an error of the text's language)
+                    self.diags.push(
+                        Diagnostic::error(
+                            code::E1073,
+                            "an OpenPLC Editor v4 graphical body (JSON after the declarations), which ladderc does not read",
+                        )
+                        .at(diagnostics::Span::new(file, at, at + 1))
+                        .with_primary_label("the JSON body starts here")
+                        .with_hint("give the PLCopen XML the editor generates for the project (build/<target>/src/plc.xml), or write the POU in ST"),
+                    );
+                    continue;
+                }
                 let mut local = Diagnostics::new();
                 let (unit, bodies, entries) =
                     il_frontend::st::file::parse_text(file, src, implicit, file_lang, &mut local);
@@ -1344,6 +1376,23 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
             matches!(ty, TypeRef::Named(t) if library_type(t))
         })
     })
+}
+
+/// Where the JSON body of an OpenPLC Editor v4 graphical POU (`main.ld`: `PROGRAM main VAR ...
+/// END_VAR` then `{ "name": ..., "rungs": [...] }`) starts: the `{` of a text that, after its
+/// last `END_VAR` line, holds only a JSON object with a `"rungs"`, `"nodes"` or `"blocks"` member.
+fn openplc_v4_json_body(src: &str) -> Option<usize> {
+    let upper = src.to_ascii_uppercase();
+    let end_var = upper.rfind("END_VAR")? + "END_VAR".len();
+    let rest = &src[end_var..];
+    let start = end_var + (rest.len() - rest.trim_start().len());
+    let body = src[start..].trim_end();
+    let json = body.starts_with('{')
+        && body.ends_with('}')
+        && ["\"rungs\"", "\"nodes\"", "\"blocks\""]
+            .iter()
+            .any(|k| body.contains(k));
+    json.then_some(start)
 }
 
 fn is_iec_identifier(s: &str) -> bool {
