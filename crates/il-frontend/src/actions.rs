@@ -442,12 +442,26 @@ fn method_arguments(action: &Action, args: &mut CallArgs, called: &VarRef) {
     }
     // the value inputs the call leaves out start again at their initial values
     if let CallArgs::Formal(list) = args {
-        for input in &action.method_defaults {
+        for (input, reference) in &action.method_defaults {
             let hidden = method_var(m, &input.name);
             if list.iter().any(|a| a.name.is(&hidden)) {
                 continue;
             }
             let span = called.span;
+            if *reference {
+                // a reference left out refers to nothing (not to the previous call's variable)
+                list.push(FormalArg {
+                    name: Ident::new(hidden, span),
+                    dir: ArgDir::Input,
+                    value: Operand::Ref(Box::new(crate::ast::RefOperand {
+                        of: None,
+                        span,
+                        call_scoped: false,
+                    })),
+                    span,
+                });
+                continue;
+            }
             // the instance's own default (`inst.__MD_M_X`; `called` is `inst.M`, or the
             // program's name)
             let mut value = called.clone();

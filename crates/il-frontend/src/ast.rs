@@ -107,12 +107,12 @@ pub struct Action {
     /// to the block's hidden variables `__M_<METHOD>_<name>` (positional ones in this order), see
     /// [`crate::actions`]. `None` for an action.
     pub method_inputs: Option<Vec<Ident>>,
-    /// For a METHOD: its VAR_INPUTs of a value type (not references). A call that does not give
-    /// one passes its initial value (the never-written `__MD_<METHOD>_<name>`), as a method's
-    /// variables start again at each call (IEC 61131-3 ed. 3, 6.6.1.2; CODESYS, TwinCAT): an input
-    /// left out does not keep the previous call's value.
+    /// For a METHOD: its VAR_INPUTs that start again at each call (IEC 61131-3 ed. 3, 6.6.1.2;
+    /// CODESYS, TwinCAT), each with whether it is a reference or pointer. A call that does not give
+    /// one passes its initial value (the never-written `__MD_<METHOD>_<name>`), or NULL for a
+    /// reference: an input left out does not keep the previous call's value or binding.
     #[serde(skip)]
-    pub method_defaults: Vec<Ident>,
+    pub method_defaults: Vec<(Ident, bool)>,
     /// Diagnostics of the lowering, reported only when the action is linked (an action never called
     /// from outside its POU is checked where its POU calls it, as before).
     #[serde(skip)]

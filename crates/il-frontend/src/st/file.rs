@@ -2470,8 +2470,10 @@ fn lower_method_as(
                 .iter()
                 .filter(|b| b.kind == VarKind::Input)
                 .flat_map(|b| b.vars.iter())
-                .filter(|v| decls.resets_per_call(&v.ty))
-                .map(|v| v.name.clone())
+                .filter_map(|v| {
+                    let reference = matches!(v.ty, crate::ast::TypeRef::Ref { .. });
+                    (reference || decls.resets_per_call(&v.ty)).then(|| (v.name.clone(), reference))
+                })
                 .collect()
         },
         diagnostics: Vec::new(),
