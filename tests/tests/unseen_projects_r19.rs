@@ -140,19 +140,24 @@ fn lilkiddy007_motion_sequence_runs_its_steps() {
 /// A CODESYS PLC_PRG using Util's PID_FIXCYCLE: one located E1003 naming the library, exit 1.
 #[test]
 fn justkuchkorov_util_pid_is_one_error_naming_its_library() {
+    one_error(
+        &file("justkuchkorov_tcs_PLC_PRG.st"),
+        "justkuchkorov_tcs_PLC_PRG.st:23:25: error[E1003]: unknown type `PID_FIXCYCLE` (hint: `PID_FIXCYCLE` is a block of CODESYS's Util library",
+    );
+}
+
+/// `ladderc check FILE` exits 1 with one error line, which holds `want`.
+fn one_error(path: &std::path::Path, want: &str) {
     let out = ladderc()
         .args(["--message-format", "short", "check"])
-        .arg(file("justkuchkorov_tcs_PLC_PRG.st"))
+        .arg(path)
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(1));
     let stderr = String::from_utf8_lossy(&out.stderr);
     let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
     assert_eq!(errors.len(), 1, "{stderr}");
-    assert!(
-        errors[0].contains("justkuchkorov_tcs_PLC_PRG.st:23:25: error[E1003]: unknown type `PID_FIXCYCLE` (hint: `PID_FIXCYCLE` is a block of CODESYS's Util library"),
-        "{stderr}"
-    );
+    assert!(errors[0].contains(want), "{stderr}");
 }
 
 /// OpenPLC Editor v4 (yaseralie/OpenPLC_Arduino, round 19): a `.ld` POU is declarations then JSON
@@ -177,18 +182,9 @@ fn an_openplc_editor_v4_json_body_and_project_folder_are_one_diagnostic_each() {
          }\n  ]\n}\n",
     )
     .unwrap();
-    let out = ladderc()
-        .args(["--message-format", "short", "check"])
-        .arg(&ld)
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(1));
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
-    assert_eq!(errors.len(), 1, "{stderr}");
-    assert!(
-        errors[0].contains("main.ld:6:1: error[E1073]: an OpenPLC Editor v4 graphical body"),
-        "{stderr}"
+    one_error(
+        &ld,
+        "main.ld:6:1: error[E1073]: an OpenPLC Editor v4 graphical body",
     );
     let out = ladderc()
         .args(["--message-format", "short", "check"])

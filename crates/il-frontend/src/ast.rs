@@ -92,6 +92,23 @@ pub enum LibraryElement {
     Action(Action),
 }
 
+impl LibraryElement {
+    /// Its variable blocks: a POU's, a global list, a configuration's and its resources' globals;
+    /// none for data types and actions.
+    pub fn var_blocks(&self) -> Vec<&VarBlock> {
+        match self {
+            LibraryElement::Pou(p) => p.var_blocks.iter().collect(),
+            LibraryElement::GlobalVars(b) => vec![b],
+            LibraryElement::Configuration(c) => c
+                .globals
+                .iter()
+                .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+                .collect(),
+            LibraryElement::DataTypes(_) | LibraryElement::Action(_) => Vec::new(),
+        }
+    }
+}
+
 /// An action of a program or function block, lowered to IL in the scope of its POU.
 #[derive(Debug, Clone, Serialize)]
 pub struct Action {

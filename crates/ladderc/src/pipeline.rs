@@ -1357,24 +1357,17 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
             && (lib.get(&t.name).is_some() || t.is("AXIS_REF") || t.is("AXES_GROUP_REF"))
     };
     units.iter().flat_map(|u| u.items.iter()).any(|item| {
-        let blocks: Vec<&il_frontend::ast::VarBlock> = match item {
-            LibraryElement::Pou(p) => p.var_blocks.iter().collect(),
-            LibraryElement::GlobalVars(b) => vec![b],
-            LibraryElement::Configuration(c) => c
-                .globals
-                .iter()
-                .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
-                .collect(),
-            LibraryElement::DataTypes(_) | LibraryElement::Action(_) => vec![],
-        };
-        blocks.iter().flat_map(|b| b.vars.iter()).any(|v| {
-            // `fbPower : ARRAY [1..4] OF MC_Power;`, `axes : ARRAY [1..4] OF AXIS_REF;`
-            let mut ty = &v.ty;
-            while let TypeRef::Array { element, .. } = ty {
-                ty = element;
-            }
-            matches!(ty, TypeRef::Named(t) if library_type(t))
-        })
+        item.var_blocks()
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .any(|v| {
+                // `fbPower : ARRAY [1..4] OF MC_Power;`, `axes : ARRAY [1..4] OF AXIS_REF;`
+                let mut ty = &v.ty;
+                while let TypeRef::Array { element, .. } = ty {
+                    ty = element;
+                }
+                matches!(ty, TypeRef::Named(t) if library_type(t))
+            })
     })
 }
 

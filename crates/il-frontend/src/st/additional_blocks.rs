@@ -11,7 +11,7 @@
 //! every line of `additional_blocks.st` (blocks left out are blanked), so a position in it is the
 //! file's own; a TIME counts in seconds inside these blocks, as in the runtimes they come from.
 
-use crate::ast::{CompilationUnit, LibraryElement, TypeDef, TypeRef, VarBlock};
+use crate::ast::{CompilationUnit, LibraryElement, TypeDef, TypeRef};
 use diagnostics::Span;
 use std::collections::{HashMap, HashSet};
 
@@ -55,20 +55,13 @@ pub fn wanted(units: &[CompilationUnit]) -> Vec<(&'static str, Option<Span>)> {
         }
     };
     for item in units.iter().flat_map(|u| u.items.iter()) {
-        let blocks: Vec<&VarBlock> = match item {
+        match item {
             LibraryElement::Pou(p) => {
                 declared.insert(p.name.name.to_ascii_uppercase());
                 if let Some(r) = &p.return_type {
                     use_type(r);
                 }
-                p.var_blocks.iter().collect()
             }
-            LibraryElement::GlobalVars(b) => vec![b],
-            LibraryElement::Configuration(c) => c
-                .globals
-                .iter()
-                .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
-                .collect(),
             LibraryElement::DataTypes(types) => {
                 for d in types {
                     declared.insert(d.name.name.to_ascii_uppercase());
@@ -76,11 +69,10 @@ pub fn wanted(units: &[CompilationUnit]) -> Vec<(&'static str, Option<Span>)> {
                         fields.iter().for_each(|f| use_type(&f.ty));
                     }
                 }
-                Vec::new()
             }
-            LibraryElement::Action(_) => Vec::new(),
-        };
-        for v in blocks.iter().flat_map(|b| b.vars.iter()) {
+            _ => {}
+        }
+        for v in item.var_blocks().iter().flat_map(|b| b.vars.iter()) {
             use_type(&v.ty);
         }
     }

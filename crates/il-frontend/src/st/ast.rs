@@ -135,31 +135,6 @@ pub enum CaseLabel {
 }
 
 impl StmtKind {
-    /// The statement lists a control statement holds (IF branches and ELSE, CASE arms and ELSE,
-    /// loop bodies, REPEAT's condition setup); empty for other statements.
-    pub fn bodies(&self) -> Vec<&[Stmt]> {
-        match self {
-            StmtKind::If {
-                branches,
-                else_body,
-            } => branches
-                .iter()
-                .map(|b| b.body.as_slice())
-                .chain(else_body.as_deref())
-                .collect(),
-            StmtKind::Case {
-                arms, else_body, ..
-            } => arms
-                .iter()
-                .map(|a| a.body.as_slice())
-                .chain(else_body.as_deref())
-                .collect(),
-            StmtKind::For { body, .. } | StmtKind::While { body, .. } => vec![body],
-            StmtKind::Repeat { body, setup, .. } => vec![body, setup],
-            _ => Vec::new(),
-        }
-    }
-
     /// The expressions a control statement evaluates itself (IF/ELSIF conditions, the CASE
     /// selector and labels, FOR bounds and step, WHILE and UNTIL conditions), not those of the
     /// statements it holds; empty for other statements (an assignment's or call's own parts are
