@@ -342,16 +342,11 @@ pub fn lower(
     let mut globals = HashMap::new();
     for u in units {
         for item in &u.items {
-            let blocks: Vec<&VarBlock> = match item {
-                LibraryElement::GlobalVars(b) => vec![b],
-                LibraryElement::Configuration(c) => c
-                    .globals
-                    .iter()
-                    .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
-                    .collect(),
-                _ => vec![],
-            };
-            for b in blocks {
+            // (the global lists and configurations: a POU's variables are no globals)
+            if matches!(item, LibraryElement::Pou(_)) {
+                continue;
+            }
+            for b in item.var_blocks() {
                 for v in &b.vars {
                     if let Some(iv) = instance_var(&v.ty, lib) {
                         globals.insert(v.name.key(), iv);
