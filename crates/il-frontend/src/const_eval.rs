@@ -149,6 +149,145 @@ fn eval_at(e: &BoundExpr, consts: &Known, depth: u32) -> Result<ConstNum, String
             );
             binary(*op, a, b)
         }
+        BoundExpr::Call(f, args, _) => {
+            let args = args
+                .iter()
+                .map(|a| eval_at(a, consts, depth + 1))
+                .collect::<Result<Vec<_>, _>>()?;
+            call(&f.name, &args)
+        }
+    }
+}
+
+/// The standard function `f` (IEC 61131-3 ed. 3, Tables 22-29: numerical, selection and type
+/// conversion functions) of the constant arguments `args`. A real result may be NaN or infinite
+/// (`LOG(-1)`, TwinCAT's way to write NaN): it is the value the function gives at run time.
+fn call(f: &str, args: &[ConstNum]) -> Result<ConstNum, String> {
+    let upper = f.to_ascii_uppercase();
+    let arity = |n: usize| {
+        if args.len() == n {
+            Ok(())
+        } else {
+            Err(format!("`{f}` takes {n} argument(s), {} given", args.len()))
+        }
+    };
+    let real_arg = |k: usize| {
+        number(args[k]).ok_or_else(|| format!("`{f}` takes a number, not a duration"))
+    };
+    let math: Option<fn(f64) -> f64> = match upper.as_str() {
+        "SQRT" => Some(f64::sqrt),
+        "LN" => Some(f64::ln),
+        "LOG" => Some(f64::log10),
+        "EXP" => Some(f64::exp),
+        "SIN" => Some(f64::sin),
+        "COS" => Some(f64::cos),
+        "TAN" => Some(f64::tan),
+        "ASIN" => Some(f64::asin),
+        "ACOS" => Some(f64::acos),
+        "ATAN" => Some(f64::atan),
+        _ => None,
+    };
+    if let Some(m) = math {
+        arity(1)?;
+        return Ok(ConstNum::Real(m(real_arg(0)?)));
+    }
+    match upper.as_str() {
+        "ABS" => {
+            arity(1)?;
+            match args[0] {
+                ConstNum::Int(v) => int(v.checked_abs()),
+                ConstNum::Real(v) => Ok(ConstNum::Real(v.abs())),
+                ConstNum::Duration(v) => duration(v.checked_abs()),
+            }
+        }
+        "EXPT" => {
+            arity(2)?;
+            Ok(ConstNum::Real(real_arg(0)?.powf(real_arg(1)?)))
+        }
+        "ATAN2" => {
+            arity(2)?;
+            Ok(ConstNum::Real(real_arg(0)?.atan2(real_arg(1)?)))
+        }
+        "MIN" | "MAX" if !args.is_empty() => {
+            let max = upper == "MAX";
+            let mut best = args[0];
+            for &a in &args[1..] {
+                let better = match (best, a) {
+                    (ConstNum::Int(b), ConstNum::Int(a)) => (a > b) == max && a != b,
+                    (ConstNum::Duration(b), ConstNum::Duration(a)) => (a > b) == max && a != b,
+                    (ConstNum::Duration(_), _) | (_, ConstNum::Duration(_)) => {
+                        return Err(format!("`{f}` compares numbers or durations, not both"));
+                    }
+                    (b, a) => {
+                        let (b, a) = (number(b).unwrap_or(0.0), number(a).unwrap_or(0.0));
+                        (a > b) == max && a != b
+                    }
+                };
+                if better {
+                    best = a;
+                }
+            }
+            Ok(best)
+        }
+        "LIMIT" => {
+            arity(3)?;
+            let lo = call("MAX", &args[..2])?;
+            call("MIN", &[lo, args[2]])
+        }
+        "TRUNC" => {
+            arity(1)?;
+            to_int(real_arg(0)?.trunc(), f).map(ConstNum::Int)
+        }
+        _ => convert(&upper, f, args),
+    }
+}
+
+/// A type conversion `X_TO_Y(v)`, `TO_Y(v)` (CODESYS, TwinCAT) or `Y_TRUNC(v)` of a number to a
+/// number type: a real goes to an integer rounded to the nearest, halves to even (IEC 60559, as
+/// the run time converts).
+fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> {
+    let target = upper
+        .rsplit_once("_TO_")
+        .map(|(_, t)| t)
+        .or_else(|| upper.strip_prefix("TO_"));
+    let Some(e) = target.and_then(Elementary::from_name) else {
+        return Err(format!(
+            "`{f}(...)` is a call: only standard numeric functions of constants (SQRT, LOG, MAX, \
+             TO_REAL, ...) and SIZEOF are computed in a constant expression"
+        ));
+    };
+    if args.len() != 1 {
+        return Err(format!("`{f}` takes 1 argument, {} given", args.len()));
+    }
+    let v = args[0];
+    if e.is_real() {
+        let x = number(v).ok_or_else(|| format!("`{f}` converts a number, not a duration"))?;
+        return Ok(ConstNum::Real(if e == Elementary::Real {
+            f64::from(x as f32)
+        } else {
+            x
+        }));
+    }
+    if !(e.is_integer() || e.is_bit()) {
+        return Err(format!("`{f}` is computed at run time, not in a constant expression"));
+    }
+    let i = match v {
+        ConstNum::Int(i) => i,
+        ConstNum::Real(x) => to_int(x.round_ties_even(), f)?,
+        ConstNum::Duration(_) => return Err(format!("`{f}` converts a number, not a duration")),
+    };
+    match e.int_range() {
+        Some((lo, hi)) if i < lo || i > hi => Err(format!("`{f}({i})` is out of {}'s range", e.name())),
+        _ => Ok(ConstNum::Int(i)),
+    }
+}
+
+/// A real already rounded or truncated as an integer (checked in LINT's range).
+fn to_int(x: f64, f: &str) -> Result<i128, String> {
+    if x.is_finite() && x.abs() < 9.2e18 {
+        Ok(x as i128)
+    } else {
+        Err(format!("`{f}` of this value has no integer result"))
     }
 }
 

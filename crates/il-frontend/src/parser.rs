@@ -204,6 +204,9 @@ pub enum BoundExpr {
     Bin(u8, Box<BoundExpr>, Box<BoundExpr>),
     /// An operand without a value, and why (`SIZEOF(FB_X)`: a function block's size).
     NoValue(String, Span),
+    /// `F(a, b)`: a standard function of constant arguments (`SQRT(2.0)`, `MAX(A, B)`,
+    /// `TO_REAL(LOG(-1))`), computed by `const_eval`.
+    Call(Ident, Vec<BoundExpr>, Span),
 }
 
 /// A bound expression is as deep as the user wrote it (`1+1+...`, `-(-(...))`): it is dropped with an
@@ -218,6 +221,7 @@ impl Drop for BoundExpr {
                     stack.push(std::mem::replace(&mut **a, leaf()));
                     stack.push(std::mem::replace(&mut **b, leaf()));
                 }
+                BoundExpr::Call(_, args, _) => stack.append(args),
                 BoundExpr::Int(..)
                 | BoundExpr::Real(..)
                 | BoundExpr::Duration(..)
@@ -837,20 +841,23 @@ impl<'s> Ctx<'s> {
         BoundExpr::Bin(b'+', Box::new(a), Box::new(b))
     }
 
-    /// `SIZEOF(x)` written at `l..r` in a constant expression, `x` at `a..b`: the bytes of the
-    /// variable `x` declared before (in this POU, or a global of the text), else of the data type
-    /// `x`, in the generated C ([`crate::type_sizes`]); `x` must be a name and the call `SIZEOF`.
-    pub fn size_of(&mut self, l: usize, a: usize, b: usize, r: usize) -> BoundExpr {
+    /// A call `F(args)` written at `l..r` in a constant expression, `F` at `l..n`. `SIZEOF(x)`: the
+    /// bytes of the variable `x` declared before (in this POU, or a global of the text), else of
+    /// the data type `x`, in the generated C ([`crate::type_sizes`]); `x` must be a name. Another
+    /// call is a standard function that `const_eval` computes (or explains why not).
+    pub fn const_call(&mut self, l: usize, n: usize, args: Vec<BoundExpr>, r: usize) -> BoundExpr {
         let span = self.span(l, r);
-        let call = self.text(l, a);
-        let call = call.trim_end_matches(|c: char| c == '(' || c.is_whitespace());
-        if !call.eq_ignore_ascii_case("SIZEOF") {
+        let name = self.ident(l, n);
+        if !name.name.eq_ignore_ascii_case("SIZEOF") {
+            return BoundExpr::Call(name, args, span);
+        }
+        let [BoundExpr::Name(arg)] = args.as_slice() else {
             return BoundExpr::NoValue(
-                format!("`{call}(...)` is a call: only `SIZEOF(T)` and `SIZEOF(v)` are computed in a constant expression"),
+                "`SIZEOF(...)` is computed in a constant expression for a type or a variable's name".into(),
                 span,
             );
-        }
-        let name = self.text(a, b).trim().to_string();
+        };
+        let name = arg.name.clone();
         let key = name.to_ascii_uppercase();
         let layout = match self
             .sized_vars
@@ -858,10 +865,7 @@ impl<'s> Ctx<'s> {
             .or_else(|| self.sized_globals.get(&key))
         {
             Some(ty) => crate::type_sizes::of_type(ty, &self.consts),
-            None => crate::type_sizes::of_type(
-                &TypeRef::Named(Ident::new(name.clone(), self.span(a, b))),
-                &self.consts,
-            ),
+            None => crate::type_sizes::of_type(&TypeRef::Named(arg.clone()), &self.consts),
         };
         match layout {
             Ok(l) => BoundExpr::Int(i128::from(l.size), span),

@@ -33,7 +33,7 @@ const HINT_INPUT_WRITE: &str = "IEC 61131-3 makes inputs read-only inside the PO
      TwinCAT and matiec, writes the POU's own copy (the caller's variable is not changed). For portable \
      code write a local copy, or declare it VAR_IN_OUT / VAR_OUTPUT";
 const HINT_FB_OUTPUT: &str =
-    "outputs of an FB instance are written by the instance itself; read them with LD";
+    "outputs of an FB instance are written by the instance itself; read them (`LD inst.Q` in IL, `x := inst.Q;` in ST), or give the block an input";
 const HINT_ENUM: &str = "store into a variable";
 
 /// A resolved variable access.
@@ -194,11 +194,24 @@ impl Body<'_, '_> {
         let qualified = self.is_list_access(v).then(|| path_text(v, 1));
         let name = qualified.as_ref().unwrap_or(&v.base.name);
         let pou = self.pou().name.clone();
+        let hidden_field = v
+            .accessors
+            .iter()
+            .any(|a| matches!(a, crate::ast::Accessor::Field(f) if f.name.starts_with("__")));
+        if let ReadOnly::FbOutput { at } = ro {
+            let result_field = v.accessors.len() == at + 2
+                && matches!(&v.accessors[at + 1], crate::ast::Accessor::Field(f)
+                    if f.name.starts_with(crate::actions::METHOD_PREFIX)
+                        || f.is(crate::st::interface_vars::TAG));
+            if result_field {
+                // a call through an interface that is an instance's output (`d.itf.Get()`)
+                // writes the interface's hidden result field (`d.itf.__M_GET`), and its tag when
+                // it holds no instance (to 0, reading the NULL reference that reports it), not
+                // the output itself: assigning it writes its references too, still E1015
+                return;
+            }
+        }
         if let ReadOnly::PouInput { decl: Some(decl) } = ro {
-            let hidden_field = v
-                .accessors
-                .iter()
-                .any(|a| matches!(a, crate::ast::Accessor::Field(f) if f.name.starts_with("__")));
             if v.base.name.starts_with(crate::actions::FLAG_PREFIX)
                 || v.base.name.starts_with(crate::actions::METHOD_PREFIX)
                 || hidden_field

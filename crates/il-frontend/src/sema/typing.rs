@@ -190,8 +190,9 @@ pub fn literal_type(lit: &Literal) -> Result<LitType, LitError> {
         },
         // A real literal beyond LREAL's range (1.8E308) or a REAL# one beyond REAL's (3.4E38) would
         // silently become an infinity.
+        // (A NaN comes from a constant expression only, `LOG(-1)`: it is the value itself.)
         (LiteralKind::Real(v), p)
-            if !v.is_finite()
+            if v.is_infinite()
                 || p.as_ref().is_some_and(|(_, e)| *e == Some(E::Real))
                     && v.abs() > f64::from(f32::MAX) =>
         {
@@ -369,7 +370,7 @@ struct LitInfo {
 /// Whether a real value of magnitude `magnitude` fits `ty` without becoming an infinity: every value
 /// fits LREAL (the literal parser already rejects the rest), REAL holds up to 3.4028235E38.
 pub fn real_fits(magnitude: f64, ty: &Type) -> bool {
-    ty.elementary() != Some(E::Real) || magnitude <= f64::from(f32::MAX)
+    ty.elementary() != Some(E::Real) || magnitude.is_nan() || magnitude <= f64::from(f32::MAX)
 }
 
 /// Result of trying to fix a literal variable's type.

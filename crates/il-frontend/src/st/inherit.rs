@@ -220,6 +220,7 @@ pub fn flatten(
             _ => None,
         })
         .collect();
+    unknown_interface_bases(&interfaces, diags);
     // the chain of each derived block, root first; `None` when broken (reported)
     let mut keys: Vec<String> = classes.keys().cloned().collect();
     keys.sort_by_key(|k| {
@@ -467,6 +468,33 @@ fn pass_by_reference(p: &mut crate::ast::Pou, by_reference: &HashMap<String, Vec
                     call_scoped: false,
                 }));
             }
+        }
+    }
+}
+
+/// An INTERFACE that EXTENDS a name that is no interface of the project: one E0330 at the name
+/// (TwinCAT's own `__SYSTEM.IQueryInterface`, which every interface may extend, is known).
+fn unknown_interface_bases(interfaces: &HashMap<String, &InterfaceOop>, diags: &mut Diagnostics) {
+    let mut all: Vec<&&InterfaceOop> = interfaces.values().collect();
+    all.sort_by_key(|i| (i.name.span.file, i.name.span.start));
+    for i in all {
+        for base in &i.extends {
+            let key = base.key();
+            if interfaces.contains_key(&key) || key.starts_with("__SYSTEM.") {
+                continue;
+            }
+            diags.push(
+                Diagnostic::error(
+                    code::E0330,
+                    format!(
+                        "`{}` EXTENDS `{}`, which names no INTERFACE of the project",
+                        i.name.name, base.name
+                    ),
+                )
+                .at(base.span)
+                .with_primary_label("no such interface")
+                .with_hint("name an INTERFACE declared in one of the files given (`.st` INTERFACE ... END_INTERFACE, TwinCAT `.TcIO`), or add the library that declares it"),
+            );
         }
     }
 }

@@ -2373,9 +2373,10 @@ impl<'d> PouLowering<'d> {
         if self.decls.pou(&name.name).is_none() && self.memory_call(name, args, span, out, diags) {
             return;
         }
-        if name.is("SIZEOF") && self.decls.pou(&name.name).is_none() {
-            // `SIZEOF(x)`, `SIZEOF(arr[1])`, `SIZEOF(T)` (CODESYS, TwinCAT): one operand, a
-            // variable (its accesses lowered as any place's) or a type name (sema tells them apart)
+        if (name.is("SIZEOF") || name.is("XSIZEOF")) && self.decls.pou(&name.name).is_none() {
+            // `SIZEOF(x)`, `SIZEOF(arr[1])`, `SIZEOF(T)` (CODESYS, TwinCAT; TwinCAT's XSIZEOF is
+            // the same size, typed for the platform): one operand, a variable (its accesses
+            // lowered as any place's) or a type name (sema tells them apart)
             if let [Arg {
                 name: None,
                 value:
