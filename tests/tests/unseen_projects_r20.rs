@@ -6,7 +6,17 @@
 //! - standard functions of constants in a declaration's constant expression (`SQRT(4.0)`,
 //!   `MAX(3, 7, 5)`, `REAL_TO_INT(2.5)`, `TO_REAL(LOG(-1))`, TwinCAT's way to write NaN; before:
 //!   E0011 "unexpected literal `-1` (hint: expected a name)");
-//! - TwinCAT's `XSIZEOF` (before: E1003, an unknown function).
+//! - TwinCAT's `XSIZEOF` (before: E1003, an unknown function);
+//! - an open input of a standard function box (Beremiz's LD `MOVE` with no wire at `IN`, and the
+//!   ST Beremiz generates for it, `MOVE(EN := go, ENO => ok)`: legsano/FactoryIO-OpenPLCEditor's
+//!   Pick_and_Place_XYZ) takes 0 as IEC 61131-3 and matiec give it (before: E3013, E1020);
+//! - OpenPLC Editor v4: an array variable exported as `<derived name="ARRAY [0..4999] OF INT"/>`
+//!   (VBlackie/PLC_FIFO_Optimization; before: E3013), and a v4 project folder (`project.json`,
+//!   `pous/**.st`) read with its tasks, instances and globals (before: E9001);
+//! - a TwinCAT solution given as its `.sln` or `.tsproj` (before: the `.sln` read as IL, 227-332
+//!   errors on real solutions; the `.tsproj` E3002), and MSBuild's `%28`/`%29` escapes in a
+//!   `.plcproj`'s paths (Beckhoff's XTS_Base: `XTS %28Do Not Edit%29\...`; before: E1079, 25 files
+//!   missing).
 
 mod common;
 use common::{check_text, column, run_traced};
@@ -61,9 +71,8 @@ END_PROGRAM
     );
     assert_eq!(code, Some(1));
     assert!(
-        lines.iter().any(|l| l.starts_with(
-            "itf_write.st:27:3: error[E1015]: `itf` is an output of FB instance `d`"
-        )),
+        lines.iter().any(|l| l
+            .starts_with("itf_write.st:27:3: error[E1015]: `itf` is an output of FB instance `d`")),
         "{lines:?}"
     );
 }
@@ -143,8 +152,9 @@ END_PROGRAM
 }
 
 /// An INTERFACE that extends an unknown interface is one located E0330 (before: accepted
-/// silently, its missing methods unchecked); TwinCAT's `__SYSTEM.IQueryInterface` stays known,
-/// and a method through such an interface runs.
+/// silently, its missing methods unchecked); TwinCAT's `__SYSTEM.IQueryInterface` stays known
+/// (also as `_SYSTEM.`, as purushothaman2310's project writes it), and a method through such an
+/// interface runs.
 #[test]
 fn an_interface_extending_an_unknown_interface_is_one_error() {
     let (code, lines) = check_text(
@@ -165,6 +175,8 @@ fn an_interface_extending_an_unknown_interface_is_one_error() {
 METHOD Get : INT
 END_METHOD
 END_INTERFACE
+INTERFACE I_B EXTENDS _SYSTEM.IQueryInterface
+END_INTERFACE
 FUNCTION_BLOCK B IMPLEMENTS I_A
 METHOD Get : INT
 Get := 4;
@@ -178,4 +190,251 @@ END_PROGRAM
 ";
     let (trace, stderr) = run_text("itf_system.st", src, 1, "main.x");
     assert_eq!(column(&trace, "main.x"), [4.0], "{stderr}");
+}
+
+/// Beremiz's LD `MOVE` whose `IN` has no wire moves 0 (warning W3005 at the pin, located with the
+/// POU and localId), and the ST form Beremiz generates for it, with a user function's input left
+/// out taking its declared initial value beside it.
+#[test]
+fn an_open_input_of_a_standard_function_takes_zero() {
+    let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <fileHeader companyName="x" productName="x" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="p"><coordinateInfo><fbd><scaling x="10" y="10"/></fbd><ld><scaling x="10" y="10"/></ld><sfc><scaling x="10" y="10"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="main" pouType="program">
+      <interface><localVars>
+        <variable name="go"><type><BOOL/></type><initialValue><simpleValue value="TRUE"/></initialValue></variable>
+        <variable name="spz"><type><INT/></type><initialValue><simpleValue value="7"/></initialValue></variable>
+      </localVars></interface>
+      <body><FBD>
+        <inVariable localId="1" height="20" width="40"><position x="10" y="10"/>
+          <connectionPointOut><relPosition x="40" y="10"/></connectionPointOut><expression>go</expression></inVariable>
+        <block localId="2" typeName="MOVE" height="60" width="60"><position x="100" y="10"/>
+          <inputVariables>
+            <variable formalParameter="EN"><connectionPointIn><relPosition x="0" y="30"/><connection refLocalId="1"/></connectionPointIn></variable>
+            <variable formalParameter="IN"><connectionPointIn><relPosition x="0" y="50"/></connectionPointIn></variable>
+          </inputVariables>
+          <inOutVariables/>
+          <outputVariables>
+            <variable formalParameter="ENO"><connectionPointOut><relPosition x="60" y="30"/></connectionPointOut></variable>
+            <variable formalParameter="OUT"><connectionPointOut><relPosition x="60" y="50"/></connectionPointOut></variable>
+          </outputVariables>
+        </block>
+        <outVariable localId="3" height="20" width="40"><position x="200" y="30"/>
+          <connectionPointIn><relPosition x="0" y="10"/><connection refLocalId="2" formalParameter="OUT"/></connectionPointIn><expression>spz</expression></outVariable>
+      </FBD></body>
+    </pou>
+  </pous></types>
+  <instances><configurations><configuration name="c"><resource name="r"><task name="t" interval="T#10ms" priority="0"><pouInstance name="p" typeName="main"/></task></resource></configuration></configurations></instances>
+</project>
+"#;
+    let (trace, stderr) = run_text("move_open_in.xml", xml, 1, "p.spz");
+    assert_eq!(column(&trace, "p.spz"), [0.0], "{stderr}");
+    let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("warning[")).collect();
+    assert_eq!(warnings.len(), 1, "{stderr}");
+    assert!(
+        warnings[0].contains(
+            "move_open_in.xml:17:13: warning[W3005]: input `IN` of function MOVE is not connected: it takes 0 [POU `main`, network 1, localId 2]"
+        ),
+        "{stderr}"
+    );
+
+    let st = "FUNCTION ADD1 : INT
+  VAR_INPUT a : INT; b : INT := 5; END_VAR
+  ADD1 := a + b;
+END_FUNCTION
+
+PROGRAM main
+  VAR go : BOOL := TRUE; out1 : INT := 7; eno1 : BOOL; r : INT; lim : INT := 9; END_VAR
+  out1 := MOVE(EN := go, ENO => eno1);
+  r := ADD1(a := 1);
+  lim := LIMIT(MN := 2, IN := lim);
+END_PROGRAM
+";
+    let (trace, stderr) = run_text(
+        "move_missing_in.st",
+        st,
+        1,
+        "main.out1,main.eno1,main.r,main.lim",
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
+    assert_eq!(column(&trace, "main.out1"), [0.0]);
+    assert_eq!(column(&trace, "main.eno1"), [1.0]);
+    assert_eq!(column(&trace, "main.r"), [6.0]);
+    // MX left out is 0: LIMIT(2, 9, 0) = MIN(MAX(9, 2), 0) = 0
+    assert_eq!(column(&trace, "main.lim"), [0.0]);
+}
+
+/// `<derived name="ARRAY [0..4] OF INT"/>`, as OpenPLC Editor v4 exports an array variable of an
+/// ST POU, is the array (a FIFO filled cycle by cycle reads back what it stored).
+#[test]
+fn an_array_written_as_a_derived_name_is_the_array() {
+    let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="Unknown" productName="Unnamed" productVersion="1" creationDateTime="2026-02-02T14:07:16"/>
+  <contentHeader name="Unnamed"><coordinateInfo><fbd><scaling x="10" y="10"/></fbd><ld><scaling x="10" y="10"/></ld><sfc><scaling x="10" y="10"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="main" pouType="program">
+      <interface><localVars>
+        <variable name="Buffer"><type><derived name="ARRAY [0..4] OF INT"/></type></variable>
+        <variable name="Grid"><type><derived name="ARRAY[1..2, 0..1] OF BOOL"/></type></variable>
+        <variable name="n"><type><INT/></type></variable>
+        <variable name="back"><type><INT/></type></variable>
+        <variable name="corner"><type><BOOL/></type></variable>
+      </localVars></interface>
+      <body><ST><xhtml:p><![CDATA[Buffer[n] := n * 10; back := Buffer[n]; Grid[2, 1] := TRUE; corner := Grid[2, 1] AND NOT Grid[1, 0]; n := n + 1; IF n > 4 THEN n := 0; END_IF;]]></xhtml:p></ST></body>
+    </pou>
+  </pous></types>
+  <instances><configurations><configuration name="Config0"><resource name="Res0"><task name="task0" interval="T#10ms" priority="0"><pouInstance name="instance0" typeName="main"/></task></resource></configuration></configurations></instances>
+</project>
+"#;
+    let (trace, stderr) = run_text(
+        "v4_array.xml",
+        xml,
+        6,
+        "instance0.back,instance0.Buffer[4],instance0.corner",
+    );
+    assert_eq!(
+        column(&trace, "instance0.back"),
+        [0.0, 10.0, 20.0, 30.0, 40.0, 0.0],
+        "{stderr}"
+    );
+    assert_eq!(
+        column(&trace, "instance0.Buffer[4]"),
+        [0.0, 0.0, 0.0, 0.0, 40.0, 40.0]
+    );
+    assert_eq!(column(&trace, "instance0.corner"), [1.0; 6]);
+}
+
+/// An OpenPLC Editor v4 project folder runs: its POU files under `pous/`, its task (T#50ms: the
+/// program runs every fifth 10 ms cycle), its instance name and its global variable; an entry that
+/// could carry text of its own (an initial value with `;`) is one E1074 and is left out.
+#[test]
+fn an_openplc_editor_v4_project_folder_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = dir.path().join("garage");
+    std::fs::create_dir_all(root.join("pous/programs")).unwrap();
+    std::fs::create_dir_all(root.join("pous/function-blocks")).unwrap();
+    std::fs::write(
+        root.join("project.json"),
+        r#"{"meta":{"name":"garage","type":"plc-project"},"data":{"dataTypes":[],"pous":[],
+        "configuration":{"resource":{"tasks":[{"name":"task0","triggering":"Cyclic","interval":"T#50ms","priority":1}],
+        "instances":[{"name":"instance0","task":"task0","program":"main"}],
+        "globalVariables":[{"name":"step","type":{"definition":"base-type","value":"INT"},"location":"","initialValue":"3"}]}}}}"#,
+    )
+    .unwrap();
+    std::fs::write(
+        root.join("pous/programs/main.st"),
+        "PROGRAM main\nVAR_EXTERNAL step : INT; END_VAR\nVAR c : Counter; count : INT AT %QW0; END_VAR\n\
+         c(inc := step);\ncount := c.n;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    std::fs::write(
+        root.join("pous/function-blocks/Counter.st"),
+        "FUNCTION_BLOCK Counter\nVAR_INPUT inc : INT; END_VAR\nVAR_OUTPUT n : INT; END_VAR\n\
+         n := n + inc;\nEND_FUNCTION_BLOCK\n",
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced(&root, 11, "instance0.count,step");
+    assert!(!stderr.contains("error["), "{stderr}");
+    assert_eq!(
+        column(&trace, "instance0.count"),
+        [3.0, 3.0, 3.0, 3.0, 3.0, 6.0, 6.0, 6.0, 6.0, 6.0, 9.0]
+    );
+    assert_eq!(column(&trace, "step"), [3.0; 11]);
+
+    std::fs::write(
+        root.join("project.json"),
+        r#"{"meta":{"name":"garage","type":"plc-project"},"data":{"dataTypes":[],"pous":[],
+        "configuration":{"resource":{"tasks":[],"instances":[],
+        "globalVariables":[{"name":"step","type":{"definition":"base-type","value":"INT"},"location":"","initialValue":"3; END_VAR"}]}}}}"#,
+    )
+    .unwrap();
+    let out = common::ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&root)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert!(
+        errors[0].contains("error[E1074]")
+            && errors[0].contains("the initial value `3; END_VAR` of `step` is not read"),
+        "{stderr}"
+    );
+    // the variable left out: `step` is then undeclared where the program names it
+    assert!(
+        errors.iter().skip(1).all(|e| e.contains("step")),
+        "{stderr}"
+    );
+}
+
+/// A TwinCAT project given as its solution (`.sln`), its system project (`.tsproj`) or its
+/// `.plcproj` whose `<Compile>` paths MSBuild escapes (`%28` is `(`) runs its MAIN.
+#[test]
+fn a_twincat_solution_and_escaped_project_paths_are_read() {
+    let pou = |name: &str, decl: &str, body: &str| {
+        format!(
+            "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"3.1.4024.12\">\n\
+             <POU Name=\"{name}\" Id=\"{{11111111-1111-1111-1111-111111111111}}\" SpecialFunc=\"None\">\n\
+             <Declaration><![CDATA[{decl}]]></Declaration>\n<Implementation><ST><![CDATA[{body}]]></ST></Implementation>\n\
+             </POU>\n</TcPlcObject>\n"
+        )
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let plc = dir.path().join("Demo/PLC");
+    std::fs::create_dir_all(plc.join("Lib (Do Not Edit)")).unwrap();
+    std::fs::write(
+        dir.path().join("Demo.sln"),
+        "\nMicrosoft Visual Studio Solution File, Format Version 12.00\n# Visual Studio Version 17\n\
+         VisualStudioVersion = 17.0.0.0\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("Demo/Demo.tsproj"),
+        "<?xml version=\"1.0\"?>\n<TcSmProject TcSmVersion=\"1.0\"><Project><Plc>\
+         <Project Name=\"PLC\" PrjFilePath=\"PLC\\PLC.plcproj\"/></Plc></Project></TcSmProject>\n",
+    )
+    .unwrap();
+    std::fs::write(
+        plc.join("PLC.plcproj"),
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<Project DefaultTargets=\"Build\" \
+         xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\n<PropertyGroup><Name>PLC</Name></PropertyGroup>\n\
+         <ItemGroup>\n<Compile Include=\"Lib %28Do Not Edit%29\\FB_Count.TcPOU\"/>\n\
+         <Compile Include=\"MAIN.TcPOU\"/>\n</ItemGroup>\n</Project>\n",
+    )
+    .unwrap();
+    std::fs::write(
+        plc.join("Lib (Do Not Edit)/FB_Count.TcPOU"),
+        pou(
+            "FB_Count",
+            "FUNCTION_BLOCK FB_Count\nVAR_OUTPUT n : INT; END_VAR\n",
+            "n := n + 1;",
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        plc.join("MAIN.TcPOU"),
+        pou(
+            "MAIN",
+            "PROGRAM MAIN\nVAR c : FB_Count; k : INT; END_VAR\n",
+            "c();\nk := c.n * 2;",
+        ),
+    )
+    .unwrap();
+    for input in [
+        dir.path().join("Demo.sln"),
+        dir.path().join("Demo/Demo.tsproj"),
+        plc.join("PLC.plcproj"),
+    ] {
+        let (trace, stderr) = run_traced(&input, 3, "MAIN.k");
+        assert_eq!(
+            column(&trace, "MAIN.k"),
+            [2.0, 4.0, 6.0],
+            "{input:?}: {stderr}"
+        );
+        assert!(!stderr.contains("error["), "{stderr}");
+    }
 }

@@ -171,9 +171,8 @@ fn call(f: &str, args: &[ConstNum]) -> Result<ConstNum, String> {
             Err(format!("`{f}` takes {n} argument(s), {} given", args.len()))
         }
     };
-    let real_arg = |k: usize| {
-        number(args[k]).ok_or_else(|| format!("`{f}` takes a number, not a duration"))
-    };
+    let real_arg =
+        |k: usize| number(args[k]).ok_or_else(|| format!("`{f}` takes a number, not a duration"));
     let math: Option<fn(f64) -> f64> = match upper.as_str() {
         "SQRT" => Some(f64::sqrt),
         "LN" => Some(f64::ln),
@@ -269,7 +268,9 @@ fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> 
         }));
     }
     if !(e.is_integer() || e.is_bit()) {
-        return Err(format!("`{f}` is computed at run time, not in a constant expression"));
+        return Err(format!(
+            "`{f}` is computed at run time, not in a constant expression"
+        ));
     }
     let i = match v {
         ConstNum::Int(i) => i,
@@ -277,7 +278,9 @@ fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> 
         ConstNum::Duration(_) => return Err(format!("`{f}` converts a number, not a duration")),
     };
     match e.int_range() {
-        Some((lo, hi)) if i < lo || i > hi => Err(format!("`{f}({i})` is out of {}'s range", e.name())),
+        Some((lo, hi)) if i < lo || i > hi => {
+            Err(format!("`{f}({i})` is out of {}'s range", e.name()))
+        }
         _ => Ok(ConstNum::Int(i)),
     }
 }

@@ -108,6 +108,11 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                     span,
                 })
             }
+            // `ARRAY [0..4999] OF INT`, as OpenPLC Editor v4 writes an array variable of an ST
+            // POU into its build's plc.xml (its own compiler, matiec, reads the text as ST)
+            Some(n) if array_text(ctx, n, ctx.attr_span(t, "name")).is_some() => {
+                array_text(ctx, n, ctx.attr_span(t, "name"))
+            }
             // a type written out as the name (`ARRAY[1..N] OF T`, `STRING[20]`), as a script may
             // generate it for Beremiz, which copies the text into its ST: named in the message
             Some(n)
@@ -221,6 +226,38 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
             None
         }
     }
+}
+
+/// A `<derived name>` that writes an array type out (`ARRAY [0..4999] OF INT`, `ARRAY[1..2, 0..N]
+/// OF Motor`): bounds that are integer constant expressions, an element that is one elementary or
+/// declared type's name. `None` for other text (E3013 then names it).
+fn array_text(ctx: &Ctx, n: &str, span: diagnostics::Span) -> Option<TypeRef> {
+    let t = n.trim();
+    let rest = t.get(..5).filter(|a| a.eq_ignore_ascii_case("ARRAY"))?;
+    let rest = t[rest.len()..].trim_start().strip_prefix('[')?;
+    let (dims_text, tail) = rest.split_once(']')?;
+    let tail = tail.trim_start();
+    let of = tail.get(..2).filter(|o| o.eq_ignore_ascii_case("OF"))?;
+    let base = tail[of.len()..].trim();
+    if !tail[of.len()..].starts_with(char::is_whitespace) || !values::is_ident(base) {
+        return None;
+    }
+    let mut dims = Vec::new();
+    for d in dims_text.split(',') {
+        let (lo, hi) = d.split_once("..")?;
+        let int = |x: &str| values::const_int_expr(x, &|c| ctx.constant(c)).ok();
+        dims.push(ArrayDim {
+            lower: int(lo)?,
+            upper: int(hi)?,
+            span,
+        });
+    }
+    let base = elementary(&base.to_ascii_uppercase()).unwrap_or(base);
+    Some(TypeRef::Array {
+        dims,
+        element: Box::new(TypeRef::Named(Ident::new(base, span))),
+        span,
+    })
 }
 
 /// CODESYS/TwinCAT write references and pointers as a derived name (`REFERENCE TO Vehiculo`,

@@ -84,6 +84,47 @@ impl NetLowering<'_, '_> {
         let mut unconnected: Vec<&InPin> = Vec::new();
         for pin in inputs {
             let v = self.input_val(ctx, &pin.wires, i);
+            let v = match (v, &bt) {
+                // an open input of a standard function takes its type's initial value, 0 or FALSE
+                // (IEC 61131-3 ed. 3, 6.6.1.2: an input a call leaves out; matiec compiles
+                // Beremiz's open `MOVE.IN` so), with a warning
+                (None, BlockType::StdFn(_))
+                    if pin.wires.is_empty() && !pin.name.eq_ignore_ascii_case("EN") =>
+                {
+                    let bool_pin = matches!(
+                        Self::pin_type(&bt, &pin.name, pin.span),
+                        Some(Some(t)) if type_text(&Ty::Known(t.clone())) == "BOOL"
+                    );
+                    let d = Diagnostic::warning(
+                        code::W3005,
+                        format!(
+                            "input `{}` of function {type_name} is not connected: it takes {}",
+                            pin.name,
+                            if bool_pin { "FALSE" } else { "0" }
+                        ),
+                    )
+                    .at(pin.span)
+                    .with_xml(self.at(i).xml())
+                    .with_hint("connect the input, or wire the constant it should have");
+                    ctx.report(d);
+                    Some(if bool_pin {
+                        self.val(Val::Const(false), pin.span)
+                    } else {
+                        self.val(
+                            Val::Leaf {
+                                op: Operand::literal(Literal {
+                                    kind: LiteralKind::Int(0),
+                                    type_prefix: None,
+                                    span: pin.span,
+                                }),
+                                neg: false,
+                            },
+                            pin.span,
+                        )
+                    })
+                }
+                (v, _) => v,
+            };
             let Some(mut v) = v else {
                 if !pin.wires.is_empty() {
                     // Fed only by elements that could not be lowered (already reported).

@@ -71,6 +71,7 @@ pub mod lsp;
 pub mod motion_in_struct;
 pub mod motion_link;
 pub mod nc_axes;
+pub mod openplc_v4;
 pub mod output;
 pub mod pipeline;
 pub mod plot;

@@ -269,9 +269,13 @@ impl Session {
         let mut twincat_failed: Vec<String> = Vec::new();
         let mut references = None;
         let mut library_projects = Vec::new();
+        // OpenPLC Editor v4: a folder holding project.json stands for its POU files, and its
+        // configuration (tasks, instances, globals) is read as one more ST text below
+        let mut v4_configs = Vec::new();
+        let paths = crate::openplc_v4::expand(self, paths, &mut v4_configs, &mut expand_diags);
         let paths = crate::twincat::expand(
             self,
-            paths,
+            &paths,
             &mut defines,
             &mut twincat_failed,
             &mut references,
@@ -593,6 +597,20 @@ impl Session {
             }
         }
         crate::text_lists::name_text_lists(&mut units, &text_lists);
+        for c in v4_configs {
+            let file = self.map.add_file_owned(c.name, c.text);
+            let mut local = Diagnostics::new();
+            let (unit, bodies, _) = il_frontend::st::file::parse_text(
+                file,
+                &self.map.get(file).text,
+                "configuration",
+                Lang::St,
+                &mut local,
+            );
+            self.diags.extend(local);
+            units.push(unit);
+            pending.extend(bodies);
+        }
         self.add_additional_blocks(&mut units, &mut pending);
         if !twincat_units.is_empty() || !twincat_tasks.is_empty() {
             self.task_cycle_ms = crate::twincat::configure(

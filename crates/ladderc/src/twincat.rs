@@ -44,6 +44,12 @@ pub fn expand(
 ) -> Vec<PathBuf> {
     let mut out = Vec::new();
     for p in paths {
+        // a Visual Studio solution (`.sln`) or TwinCAT system project (`.tsproj`) stands for the
+        // folder that holds it: its PLC project is looked for there, as for a folder
+        let holder = (has_extension(p, "sln") || has_extension(p, "tsproj"))
+            .then(|| p.parent().unwrap_or(Path::new(".")).to_path_buf())
+            .filter(|d| session.disk && d.is_dir());
+        let p = holder.as_ref().unwrap_or(p);
         let project = if has_extension(p, "plcproj") {
             Some(p.clone())
         } else if session.disk && p.is_dir() && !p.join("plc.xml").is_file() {
@@ -229,6 +235,27 @@ fn missing_object(file: FileId, path: &Path, include: (usize, usize)) -> Diagnos
 /// The object files a `.plcproj` lists (`<Compile Include="POUs\MAIN.TcPOU">`), relative to its
 /// folder, in its order, each with the byte range of its `Include` value in `text`; the other items
 /// (visualisations, text lists) are left out.
+/// `text` with MSBuild's `%XX` escapes (two hexadecimal digits, a byte) decoded; other text as it
+/// is (a `%` not followed by two hexadecimal digits stays).
+fn msbuild_unescape(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut out = Vec::with_capacity(b.len());
+    let mut k = 0;
+    while k < b.len() {
+        let hex = |c: u8| (c as char).to_digit(16);
+        if b[k] == b'%' && k + 2 < b.len() {
+            if let (Some(h), Some(l)) = (hex(b[k + 1]), hex(b[k + 2])) {
+                out.push((h * 16 + l) as u8);
+                k += 3;
+                continue;
+            }
+        }
+        out.push(b[k]);
+        k += 1;
+    }
+    String::from_utf8(out).unwrap_or_else(|_| text.to_string())
+}
+
 pub(crate) fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, usize))> {
     let dir = project.parent().unwrap_or(Path::new(""));
     let arena = ladder_compiler::xml::Arena::new();
@@ -244,6 +271,8 @@ pub(crate) fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, 
         let Some((include, range)) = el.attr_and_range("Include") else {
             continue;
         };
+        // MSBuild escapes special characters in item paths (`XTS %28Do Not Edit%29\\X.TcPOU`)
+        let include = msbuild_unescape(include);
         let rel: PathBuf = include.split(['\\', '/']).collect();
         if is_twincat_file(&rel) && !has_extension(&rel, "plcproj") {
             out.push((dir.join(rel), range));

@@ -480,7 +480,8 @@ fn unknown_interface_bases(interfaces: &HashMap<String, &InterfaceOop>, diags: &
     for i in all {
         for base in &i.extends {
             let key = base.key();
-            if interfaces.contains_key(&key) || key.starts_with("__SYSTEM.") {
+            // (`_SYSTEM.IQueryInterface` with one underscore is found in TwinCAT projects too)
+            if interfaces.contains_key(&key) || key.trim_start_matches('_').starts_with("SYSTEM.") {
                 continue;
             }
             diags.push(

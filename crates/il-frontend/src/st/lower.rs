@@ -2306,6 +2306,45 @@ impl<'d> PouLowering<'d> {
         }
     }
 
+    /// A formal call of a standard function that leaves inputs out (`MOVE(EN := go, ENO => ok)`,
+    /// as Beremiz writes an LD `MOVE` whose `IN` pin is open): the arguments with each input left
+    /// out given its type's initial value, `0` (`FALSE` for a BOOL input), the untyped literal
+    /// taking the call's type (IEC 61131-3 ed. 3, 6.6.1.2; matiec compiles it so). `None` when
+    /// nothing is left out, or the call is not formal.
+    fn omitted_standard_inputs(&self, name: &Ident, args: &[Arg]) -> Option<Vec<Arg>> {
+        if self.decls.pou(&name.name).is_some() || args.is_empty() {
+            return None;
+        }
+        let f = stdlib::function(&name.name)?;
+        if f.extensible || args.iter().any(|a| a.name.is_none()) {
+            return None;
+        }
+        let given = |p: &str| {
+            args.iter()
+                .any(|a| a.name.as_ref().is_some_and(|n| n.is(p)))
+        };
+        let missing: Vec<&stdlib::Param> = f.params.iter().filter(|p| !given(p.name)).collect();
+        if missing.is_empty() {
+            return None;
+        }
+        let at = name.span;
+        let mut with = args.to_vec();
+        with.extend(missing.into_iter().map(|p| Arg {
+            name: Some(Ident::new(p.name, at)),
+            dir: ArgDir::Input,
+            value: Expr::literal(
+                if matches!(p.ty, ParamTy::Fixed(crate::sema::Elementary::Bool)) {
+                    LiteralKind::Bool(false)
+                } else {
+                    LiteralKind::Int(0)
+                },
+                at,
+            ),
+            span: at,
+        }));
+        Some(with)
+    }
+
     fn function_call(
         &mut self,
         name: &Ident,
@@ -2356,6 +2395,14 @@ impl<'d> PouLowering<'d> {
             Some(n) => {
                 with_names = n;
                 &with_names[..]
+            }
+            None => args,
+        };
+        let with_defaults;
+        let args = match self.omitted_standard_inputs(name, args) {
+            Some(a) => {
+                with_defaults = a;
+                &with_defaults[..]
             }
             None => args,
         };
