@@ -309,7 +309,8 @@ fn an_array_written_as_a_derived_name_is_the_array() {
 
 /// An OpenPLC Editor v4 project folder runs: its POU files under `pous/`, its task (T#50ms: the
 /// program runs every fifth 10 ms cycle), its instance name and its global variable; an entry that
-/// could carry text of its own (an initial value with `;`) is one E1074 and is left out.
+/// could carry text of its own (an initial value with `;`) is one E1074 and is left out; data
+/// types declared in the JSON are named by W1440.
 #[test]
 fn an_openplc_editor_v4_project_folder_runs() {
     let dir = tempfile::tempdir().unwrap();
@@ -346,7 +347,7 @@ fn an_openplc_editor_v4_project_folder_runs() {
 
     std::fs::write(
         root.join("project.json"),
-        r#"{"meta":{"name":"garage","type":"plc-project"},"data":{"dataTypes":[],"pous":[],
+        r#"{"meta":{"name":"garage","type":"plc-project"},"data":{"dataTypes":[{"name":"E_Door","derivation":{"type":"enumerated","values":["OPEN","SHUT"]}}],"pous":[],
         "configuration":{"resource":{"tasks":[],"instances":[],
         "globalVariables":[{"name":"step","type":{"definition":"base-type","value":"INT"},"location":"","initialValue":"3; END_VAR"}]}}}}"#,
     )
@@ -362,6 +363,11 @@ fn an_openplc_editor_v4_project_folder_runs() {
     assert!(
         errors[0].contains("error[E1074]")
             && errors[0].contains("the initial value `3; END_VAR` of `step` is not read"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("warning[W1440]")
+            && stderr.contains("the data types it declares are not read (E_Door)"),
         "{stderr}"
     );
     // the variable left out: `step` is then undeclared where the program names it

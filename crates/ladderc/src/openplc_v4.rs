@@ -10,7 +10,7 @@
 //! Invariants: never panics; nothing from `project.json` reaches the text unless it is a name, a
 //! duration, an integer, a direct address or a literal of a closed set of characters (anything
 //! else is one E1074 naming the entry, and the entry is left out); data types declared in
-//! `project.json` are not read (one W1436 names them); nothing is written.
+//! `project.json` are not read (one W1440 names them); nothing is written.
 
 use crate::pipeline::Session;
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
@@ -208,7 +208,7 @@ fn configuration(json: &Value, file: &Path, diags: &mut Diagnostics) -> Option<S
             .collect();
         diags.push(
             Diagnostic::new(
-                code::W1436,
+                code::W1440,
                 Severity::Warning,
                 format!(
                     "{shown}: the data types it declares are not read ({})",
