@@ -16,7 +16,9 @@
 //! - a TwinCAT solution given as its `.sln` or `.tsproj` (before: the `.sln` read as IL, 227-332
 //!   errors on real solutions; the `.tsproj` E3002), and MSBuild's `%28`/`%29` escapes in a
 //!   `.plcproj`'s paths (Beckhoff's XTS_Base: `XTS %28Do Not Edit%29\...`; before: E1079, 25 files
-//!   missing).
+//!   missing);
+//! - an element of an `ARRAY [*]` given to an ANY input: one located E1068 (before: the compiler
+//!   overflowed its stack and aborted, exit 134), and the element copied first runs.
 
 mod common;
 use common::{check_text, column, run_traced};
@@ -443,4 +445,47 @@ fn a_twincat_solution_and_escaped_project_paths_are_read() {
         );
         assert!(!stderr.contains("error["), "{stderr}");
     }
+}
+
+/// `Take(Arr[0])` with `Arr : ARRAY [*] OF REAL` and `Take`'s input ANY is one E1068 at the
+/// argument (before: an endless rewrite, the compiler's stack overflowed); copied into a REAL
+/// first, the call runs and `A.diSize` is the REAL's 4 bytes.
+#[test]
+fn an_element_of_a_variable_length_array_given_to_any_is_one_error() {
+    let src = "FUNCTION Take : DINT
+VAR_INPUT A : ANY; END_VAR
+Take := A.diSize;
+END_FUNCTION
+
+FUNCTION UseIt : DINT
+VAR_IN_OUT Arr : ARRAY[*] OF REAL; END_VAR
+UseIt := Take(Arr[0]);
+END_FUNCTION
+
+PROGRAM main
+VAR xs : ARRAY[0..2] OF REAL; n : DINT; END_VAR
+n := UseIt(xs);
+END_PROGRAM
+";
+    let (code, lines) = check_text("any_vla.st", src);
+    assert_eq!(code, Some(1));
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].starts_with(
+            "any_vla.st:8:15: error[E1068]: an element of the `ARRAY [*]` `Arr` given to the ANY input `A` of `Take`"
+        ),
+        "{lines:?}"
+    );
+    let fixed = src
+        .replace(
+            "VAR_IN_OUT Arr : ARRAY[*] OF REAL; END_VAR",
+            "VAR_IN_OUT Arr : ARRAY[*] OF REAL; END_VAR\nVAR tmp : REAL; END_VAR",
+        )
+        .replace(
+            "UseIt := Take(Arr[0]);",
+            "tmp := Arr[0];\nUseIt := Take(tmp);",
+        );
+    let (trace, stderr) = run_text("any_vla_fixed.st", &fixed, 1, "main.n");
+    assert_eq!(column(&trace, "main.n"), [4.0], "{stderr}");
 }

@@ -853,7 +853,6 @@ impl Rewrite<'_, '_> {
             };
             let (input, generic, class_input) =
                 (input.clone(), generic.clone(), class_input.clone());
-            self.changed = true;
             let ExprKind::Place(place) = &a.value.kind else {
                 self.refuse(
                     a.value.span,
@@ -865,6 +864,7 @@ impl Rewrite<'_, '_> {
                 continue;
             };
             if let Some(hidden) = self.forwarded(f, place, &input, &generic, &class_input) {
+                self.changed = true;
                 // an ANY input of the caller passed on: its own hidden inputs
                 out.extend(hidden.into_iter().map(|(name, value)| Arg {
                     name: Some(Ident::new(name, a.span)),
@@ -875,10 +875,32 @@ impl Rewrite<'_, '_> {
                 continue;
             }
             let Some(ty) = (self.type_of)(&a.value) else {
-                // (an undeclared name: its own error comes from the lowering of the argument)
+                // (an undeclared name: its own error comes from the lowering of the argument;
+                // an element of an `ARRAY [*]`, typed once `varlen` has rewritten it: the
+                // argument is left as it is, not counted as a change)
+                let vla = match &place.base {
+                    PlaceBase::Name(n) => {
+                        let key = format!("{}{}", n.key(), super::varlen::ADDRESS);
+                        (!place.accessors.is_empty() && self.env.vars.contains_key(&key))
+                            .then(|| n.name.clone())
+                    }
+                    _ => None,
+                };
+                if let Some(array) = vla {
+                    self.refuse(
+                        a.value.span,
+                        format!(
+                            "an element of the `ARRAY [*]` `{array}` given to the ANY input `{input}` of `{}`",
+                            f.name
+                        ),
+                        "its type is known only at run time here",
+                        "copy the element into a variable of its type first, and pass that variable",
+                    );
+                }
                 out.push(a);
                 continue;
             };
+            self.changed = true;
             if let Some(allowed) = family(&generic).flatten() {
                 let elementary = self.env.elementary(&ty).map(|e| e.name().to_string());
                 if !elementary

@@ -83,6 +83,9 @@ pub struct PouLowering<'d> {
     /// Some FUNCTION of the project has an ANY input (`any_inputs`): its calls and uses are
     /// rewritten before they are lowered.
     any_inputs: bool,
+    /// How many times in a row the ANY-input rewrite has rewritten the statement being lowered
+    /// (bounded: a rewrite that never settles is one E1068, not an endless recursion).
+    any_passes: u8,
     /// Some POU of the project has a variable-length in-out (`varlen`): its calls and uses are
     /// rewritten.
     varlen: bool,
@@ -235,6 +238,7 @@ impl<'d> PouLowering<'d> {
                 .flatten()
                 .any(|m| super::property::is_accessor(&m.name)),
             any_inputs: super::any_inputs::in_project(decls),
+            any_passes: 0,
             varlen: super::varlen::in_project(decls),
             types: RefCell::new(TypeCache::new()),
             nested: 0,
@@ -695,6 +699,7 @@ impl<'d> PouLowering<'d> {
             // `p := __NEW(FB_Item);`: one E0351 each, the statement dropped (dynamic_memory)
             return true;
         }
+        let passes = std::mem::take(&mut self.any_passes);
         let type_of = |e: &Expr| self.expression_type(e);
         let any = if self.any_inputs {
             super::any_inputs::rewrite(&self.env(), &type_of, s, diags)
@@ -702,8 +707,25 @@ impl<'d> PouLowering<'d> {
             None
         };
         match any {
+            // a rewrite that does not settle (an `ARRAY [*]` element given to an ANY input)
+            Some(Some(_)) if passes >= 4 => {
+                diags.push(
+                    Diagnostic::error(
+                        code::E1068,
+                        "an argument of an ANY input that ladderc cannot pass here",
+                    )
+                    .at(s.span)
+                    .with_primary_label("not compiled")
+                    .with_hint(
+                        "copy the value into a variable of its type first, and pass that variable",
+                    ),
+                );
+                self.poisoned = true;
+                return true;
+            }
             // `F(In := x)` of a function's ANY input `In`, `In.diSize` in it (any_inputs)
             Some(Some(s)) => {
+                self.any_passes = passes + 1;
                 self.stmt(&s, out, diags);
                 return true;
             }
