@@ -18,7 +18,9 @@
 //!   `.plcproj`'s paths (Beckhoff's XTS_Base: `XTS %28Do Not Edit%29\...`; before: E1079, 25 files
 //!   missing);
 //! - an element of an `ARRAY [*]` given to an ANY input: one located E1068 (before: the compiler
-//!   overflowed its stack and aborted, exit 134), and the element copied first runs.
+//!   overflowed its stack and aborted, exit 134), and the element copied first runs;
+//! - a POU's constant named above its declaration (`ARRAY[0..TABLESIZE - 1]`, `TON := (PT :=
+//!   DELAY)` above `VAR CONSTANT`: KimRo's Tc3_CRC, Roald87's SimRelay; before: E0022, E1025).
 
 mod common;
 use common::{check_text, column, run_traced};
@@ -488,4 +490,50 @@ END_PROGRAM
         );
     let (trace, stderr) = run_text("any_vla_fixed.st", &fixed, 1, "main.n");
     assert_eq!(column(&trace, "main.n"), [4.0], "{stderr}");
+}
+
+/// A bound and an instance's initial value name constants the POU declares below them: CODESYS
+/// and TwinCAT resolve them by name, so does ladderc; a name that is no constant anywhere stays
+/// E0022.
+#[test]
+fn constants_declared_below_their_use_in_a_pou_are_known() {
+    let src = "FUNCTION_BLOCK FB_Table
+VAR
+    table   : ARRAY[0..TABLESIZE - 1] OF UINT;
+    delayOn : TON := (PT := DELAY);
+    i       : UINT;
+    last    : UINT;
+END_VAR
+VAR CONSTANT
+    TABLESIZE : UINT := 4;
+    DELAY     : TIME := T#30MS;
+END_VAR
+FOR i := 0 TO TABLESIZE - 1 DO
+    table[i] := i * 10;
+END_FOR
+last := table[TABLESIZE - 1];
+delayOn(IN := TRUE);
+END_FUNCTION_BLOCK
+PROGRAM main
+VAR t : FB_Table; done : BOOL; last : UINT; END_VAR
+t();
+done := t.delayOn.Q;
+last := t.last;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("const_later.st", src, 5, "main.last,main.done");
+    assert!(!stderr.contains("error["), "{stderr}");
+    assert_eq!(column(&trace, "main.last"), [30.0; 5]);
+    assert_eq!(column(&trace, "main.done"), [0.0, 0.0, 0.0, 1.0, 1.0]);
+    let (code, lines) = check_text(
+        "const_none.st",
+        &src.replace("TABLESIZE - 1] OF", "TABLESIZ - 1] OF"),
+    );
+    assert_eq!(code, Some(1));
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with("const_none.st:3:24: error[E0022]") && l.contains("`TABLESIZ`")),
+        "{lines:?}"
+    );
 }

@@ -1561,6 +1561,14 @@ pub fn with_other_files_constants<R>(constants: Constants, parse: impl FnOnce() 
 /// or a constant expression that evaluated (one with an E0022 among `diags` is left out), by
 /// upper-case name, in their declared types. A POU's own `VAR CONSTANT` stays in its file.
 pub fn global_integer_constants(unit: &CompilationUnit, diags: &Diagnostics) -> Constants {
+    integer_constants(unit, diags, false)
+}
+
+/// The integer (and real, duration) constants of `unit` as [`global_integer_constants`], and with
+/// `pous` also those of its POUs' `VAR CONSTANT` blocks: a file's own constants, offered to its
+/// parse again when a bound named one declared after it (`ARRAY[0..TABLESIZE - 1]` above the
+/// POU's `VAR CONSTANT TABLESIZE`, as CODESYS and TwinCAT resolve names, not order).
+pub fn integer_constants(unit: &CompilationUnit, diags: &Diagnostics, pous: bool) -> Constants {
     let mut found = Constants::new();
     let failed = |span: Span| {
         diags.iter().any(|d| {
@@ -1571,7 +1579,9 @@ pub fn global_integer_constants(unit: &CompilationUnit, diags: &Diagnostics) -> 
         })
     };
     let mut add = |block: &VarBlock| {
-        if !block.constant || block.kind != VarKind::Global {
+        if !block.constant
+            || !(block.kind == VarKind::Global || pous && block.kind == VarKind::Local)
+        {
             return;
         }
         for v in &block.vars {
@@ -1600,6 +1610,7 @@ pub fn global_integer_constants(unit: &CompilationUnit, diags: &Diagnostics) -> 
                     _ => None,
                 }))
             }
+            LibraryElement::Pou(p) if pous => p.var_blocks.iter().for_each(&mut add),
             LibraryElement::Configuration(c) => {
                 c.globals.iter().for_each(&mut add);
                 c.resources

@@ -545,6 +545,7 @@ impl Session {
                         implicit: implicit.to_string(),
                         lang: file_lang,
                         text: v2_text.clone().or_else(|| tc_text.clone()),
+                        own: il_frontend::parser::integer_constants(&unit, &local, true),
                         diags: local,
                     });
                     units.push(unit);
@@ -721,7 +722,11 @@ impl Session {
             for (w, result) in waiting.iter_mut().zip(results.iter_mut()) {
                 let src = w.text.as_ref().unwrap_or(&self.map.get(w.file).text);
                 let mut local = Diagnostics::new();
-                let parsed = il_frontend::parser::with_other_files_constants(known.clone(), || {
+                let mut offered = known.clone();
+                for (k, v) in &w.own {
+                    offered.entry(k.clone()).or_insert(*v);
+                }
+                let parsed = il_frontend::parser::with_other_files_constants(offered, || {
                     il_frontend::st::with_other_files_names(names.clone(), || {
                         il_frontend::st::file::parse_text(
                             w.file,
@@ -1435,4 +1440,7 @@ struct WaitingFile {
     text: Option<String>,
     /// The diagnostics of its last parse.
     diags: Diagnostics,
+    /// The constants its first parse found in its own POUs' `VAR CONSTANT` blocks (a bound may
+    /// name one declared below it), offered to its parses again only.
+    own: il_frontend::parser::Constants,
 }

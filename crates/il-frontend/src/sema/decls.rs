@@ -730,6 +730,20 @@ impl Analyzer<'_> {
         // lists): found ignoring case without an upper-cased key per variable.
         let mut seen: HashMap<String, crate::name_index::NameIndex> = HashMap::new();
         let mut consts = consts.clone();
+        // a POU's own constants first: an initial value may name one declared below it (`tmr :
+        // TON := (PT := DELAY);` above `VAR CONSTANT DELAY : TIME := T#1S;`), as CODESYS and
+        // TwinCAT resolve names, not order (their errors, if any, are the same as below: shown once)
+        if pou.is_some() {
+            for d in blocks.iter().filter(|b| b.constant).flat_map(|b| &b.vars) {
+                let Some(i @ Initializer::Value(_)) = &d.init else {
+                    continue;
+                };
+                let ty = self.resolve_type(&d.ty);
+                if let Some(v) = self.const_init(i, &ty, &consts) {
+                    consts.insert(d.name.key(), (ty, v));
+                }
+            }
+        }
         for b in blocks {
             // the members of a named global variable list (CODESYS GVL) are seen per list: two
             // lists may both declare `x` (reached as GVL_A.x and GVL_B.x)
