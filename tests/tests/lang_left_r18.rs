@@ -139,7 +139,7 @@ fn sizeof_without_a_value_is_one_located_error_each() {
         [
             "bad.st:10:23: error[E0022]: constant expression `SIZEOF(FB_Worker)`: `FB_Worker` is a function block: the size of its instance is known in code (`SIZEOF(x)` in a body), not while declarations are read",
             "bad.st:11:25: error[E0022]: constant expression `SIZEOF(ST_Missing) - 1`: the size of `ST_Missing` is not known (no data type or variable of that name declared before, in this file or another given file)",
-            "bad.st:12:22: error[E0022]: constant expression `LEN(x)`: `LEN(...)` is a call: only `SIZEOF(T)` and `SIZEOF(v)` are computed in a constant expression",
+            "bad.st:12:22: error[E0022]: constant expression `LEN(x)`: `LEN(...)` is a call: only standard numeric functions of constants (SQRT, LOG, MAX, TO_REAL, ...) and SIZEOF are computed in a constant expression",
         ]
     );
 }

@@ -60,19 +60,32 @@ fn a_functions_computed_initial_value_is_assigned_at_each_call() {
     assert_eq!(column(&trace, "main.n"), [6.0, 7.0]);
 }
 
-/// A FUNCTION's input keeps its argument: an initial value calling a function there stays E0011,
-/// as in a VAR CONSTANT block (a constant's value is no run-time value).
+/// A FUNCTION's input and a constant initialised by a standard function of constants
+/// (`ABS(-3)`) take its value, computed while the declarations are read (issue #13's twentieth
+/// round; before: E0011, a call was no constant expression); a call of a user function there stays
+/// an error (E0022: not computed while declarations are read).
 #[test]
-fn a_functions_input_and_a_constant_keep_the_declarations_rule() {
+fn a_functions_input_and_a_constant_take_a_standard_function_of_constants() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("f.st");
+    std::fs::write(
+        &f,
+        "FUNCTION F : INT\nVAR_INPUT\n  a : INT := ABS(-3);\nEND_VAR\nF := a * 10;\nEND_FUNCTION\n\
+         PROGRAM main\nVAR CONSTANT\n  c : INT := ABS(-4);\nEND_VAR\nVAR\n  r : INT;\n  s : INT;\nEND_VAR\n\
+         r := F(a := c);\ns := F();\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (trace, _) = run_traced(&f, 1, "main.r,main.s");
+    assert_eq!(column(&trace, "main.r"), [40.0]);
+    assert_eq!(column(&trace, "main.s"), [30.0]);
     let heads = rejected_heads(
-        "f.st",
-        "FUNCTION F : INT\nVAR_INPUT\n  a : INT := ABS(-3);\nEND_VAR\nF := a;\nEND_FUNCTION\n\
-         PROGRAM main\nVAR CONSTANT\n  c : INT := ABS(-3);\nEND_VAR\nVAR\n  r : INT;\nEND_VAR\n\
-         r := F(a := c);\nEND_PROGRAM\n",
+        "g.st",
+        "FUNCTION G : INT\nVAR_INPUT x : INT; END_VAR\nG := x;\nEND_FUNCTION\n\
+         PROGRAM main\nVAR CONSTANT\n  c : INT := G(3);\nEND_VAR\nVAR\n  r : INT;\nEND_VAR\n\
+         r := c;\nEND_PROGRAM\n",
     );
-    assert_eq!(heads.len(), 2, "{heads:?}");
-    assert!(heads[0].starts_with("f.st:3:18: error[E0011]"), "{heads:?}");
-    assert!(heads[1].starts_with("f.st:9:18: error[E0011]"), "{heads:?}");
+    assert_eq!(heads.len(), 1, "{heads:?}");
+    assert!(heads[0].starts_with("g.st:7:14: error[E0022]"), "{heads:?}");
 }
 
 /// `a : UDINT := n / 25;` names a variable declared before it (was E0022 "not a constant"); the

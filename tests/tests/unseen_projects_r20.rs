@@ -20,7 +20,10 @@
 //! - an element of an `ARRAY [*]` given to an ANY input: one located E1068 (before: the compiler
 //!   overflowed its stack and aborted, exit 134), and the element copied first runs;
 //! - a POU's constant named above its declaration (`ARRAY[0..TABLESIZE - 1]`, `TON := (PT :=
-//!   DELAY)` above `VAR CONSTANT`: KimRo's Tc3_CRC, Roald87's SimRelay; before: E0022, E1025).
+//!   DELAY)` above `VAR CONSTANT`: KimRo's Tc3_CRC, Roald87's SimRelay; before: E0022, E1025);
+//! - `SHL(1, 1)` in a constant, `[N(7)]` with a named repeat count, TwinCAT's `BIT`, `r REF= 0;`,
+//!   `bExecute;` (W1431), and a call chain on a variable of a library's block type (one E1003 for
+//!   the type; before: E0349 "is no method", the type never named).
 
 mod common;
 use common::{check_text, column, run_traced};
@@ -534,6 +537,81 @@ END_PROGRAM
         lines
             .iter()
             .any(|l| l.starts_with("const_none.st:3:24: error[E0022]") && l.contains("`TABLESIZ`")),
+        "{lines:?}"
+    );
+}
+
+/// Forms of CODESYS and TwinCAT programs of round 20, each as those compilers take it.
+#[test]
+fn codesys_forms_of_round_20_run() {
+    let src = "VAR_GLOBAL CONSTANT
+    N          : INT := 3;
+    CHUNK_END  : DWORD := SHL(1, 4) + SHR(16#8, 3);
+END_VAR
+TYPE ST_Buttons :
+STRUCT
+    Start : BIT;
+    Back  : BIT;
+END_STRUCT;
+END_TYPE
+FUNCTION_BLOCK FB_Holder
+VAR
+    target : INT;
+    r : REFERENCE TO INT;
+    valid_before : BOOL;
+END_VAR
+VAR_OUTPUT invalid_after : BOOL; END_VAR
+r REF= target;
+valid_before := __ISVALIDREF(r);
+r REF= 0;
+invalid_after := valid_before AND NOT __ISVALIDREF(r);
+END_FUNCTION_BLOCK
+PROGRAM main
+VAR
+    a : ARRAY[1..N] OF INT := [N(7)];
+    d : DWORD;
+    b : ST_Buttons;
+    n : INT;
+    h : FB_Holder;
+    ok : BOOL;
+    sum : INT;
+END_VAR
+d := CHUNK_END;
+b.Start := TRUE;
+IF b.Start AND NOT b.Back THEN
+    n := n + 1;
+END_IF
+h();
+ok;
+ok := h.invalid_after;
+sum := a[1] + a[2] + a[3];
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("forms20.st", src, 2, "main.d,main.n,main.ok,main.sum");
+    assert_eq!(column(&trace, "main.d"), [17.0, 17.0], "{stderr}");
+    assert_eq!(column(&trace, "main.n"), [1.0, 2.0]);
+    assert_eq!(column(&trace, "main.ok"), [1.0, 1.0]);
+    assert_eq!(column(&trace, "main.sum"), [21.0, 21.0]);
+    let warnings: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("warning[W1431]"))
+        .collect();
+    assert_eq!(warnings.len(), 1, "{stderr}");
+    assert!(
+        warnings[0].contains("forms20.st:39:1: warning[W1431]: `ok;` has no effect"),
+        "{stderr}"
+    );
+
+    let (code, lines) = check_text(
+        "chain.st",
+        "PROGRAM main\nVAR\n    fbAlarm : FB_TcAlarm;\nEND_VAR\n\
+         fbAlarm.ipArguments.Clear().AddString('Alice');\nfbAlarm.Raise(0);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].starts_with("chain.st:3:15: error[E1003]: unknown type `FB_TcAlarm`"),
         "{lines:?}"
     );
 }

@@ -150,6 +150,9 @@ fn eval_at(e: &BoundExpr, consts: &Known, depth: u32) -> Result<ConstNum, String
             binary(*op, a, b)
         }
         BoundExpr::Call(f, args, _) => {
+            if !computed(&f.name) {
+                return Err(not_computed(&f.name));
+            }
             let args = args
                 .iter()
                 .map(|a| eval_at(a, consts, depth + 1))
@@ -233,12 +236,55 @@ fn call(f: &str, args: &[ConstNum]) -> Result<ConstNum, String> {
             let lo = call("MAX", &args[..2])?;
             call("MIN", &[lo, args[2]])
         }
+        "SHL" | "SHR" | "ROL" | "ROR" => {
+            arity(2)?;
+            let (ConstNum::Int(v), ConstNum::Int(n)) = (args[0], args[1]) else {
+                return Err(format!("`{f}` shifts an integer by an integer"));
+            };
+            if !(0..=63).contains(&n) || v < 0 {
+                return Err(format!("`{f}` of this value is computed at run time"));
+            }
+            // (the bits beyond the constant's type are dropped where the value is stored)
+            let v = v as u64;
+            let n = n as u32;
+            int(Some(i128::from(match upper.as_str() {
+                "SHL" => v.checked_shl(n).unwrap_or(0),
+                "SHR" => v >> n,
+                "ROL" if v <= u64::from(u32::MAX) => u64::from((v as u32).rotate_left(n % 32)),
+                "ROR" if v <= u64::from(u32::MAX) => u64::from((v as u32).rotate_right(n % 32)),
+                _ => return Err(format!("`{f}` of this value is computed at run time")),
+            })))
+        }
         "TRUNC" => {
             arity(1)?;
             to_int(real_arg(0)?.trunc(), f).map(ConstNum::Int)
         }
         _ => convert(&upper, f, args),
     }
+}
+
+/// Whether [`call`] computes the function named `f` (its arguments are evaluated first only then:
+/// `LEN(x)` is reported as a call, not as `x`).
+fn computed(f: &str) -> bool {
+    const NAMES: [&str; 21] = [
+        "SQRT", "LN", "LOG", "EXP", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "ATAN2", "EXPT",
+        "ABS", "MIN", "MAX", "LIMIT", "TRUNC", "SHL", "SHR", "ROL", "ROR",
+    ];
+    let up = f.to_ascii_uppercase();
+    NAMES.contains(&up.as_str())
+        || up
+            .rsplit_once("_TO_")
+            .map(|(_, t)| t)
+            .or_else(|| up.strip_prefix("TO_"))
+            .and_then(Elementary::from_name)
+            .is_some()
+}
+
+fn not_computed(f: &str) -> String {
+    format!(
+        "`{f}(...)` is a call: only standard numeric functions of constants (SQRT, LOG, MAX, \
+         TO_REAL, ...) and SIZEOF are computed in a constant expression"
+    )
 }
 
 /// A type conversion `X_TO_Y(v)`, `TO_Y(v)` (CODESYS, TwinCAT) or `Y_TRUNC(v)` of a number to a
@@ -250,10 +296,7 @@ fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> 
         .map(|(_, t)| t)
         .or_else(|| upper.strip_prefix("TO_"));
     let Some(e) = target.and_then(Elementary::from_name) else {
-        return Err(format!(
-            "`{f}(...)` is a call: only standard numeric functions of constants (SQRT, LOG, MAX, \
-             TO_REAL, ...) and SIZEOF are computed in a constant expression"
-        ));
+        return Err(not_computed(f));
     };
     if args.len() != 1 {
         return Err(format!("`{f}` takes 1 argument, {} given", args.len()));

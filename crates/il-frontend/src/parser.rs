@@ -894,6 +894,35 @@ impl<'s> Ctx<'s> {
         }))
     }
 
+    /// An element of an array initialiser written as a constant expression at `l..r`: `N(7)`,
+    /// where `N` is an integer constant declared before, is `N` repetitions of 7 (CODESYS and
+    /// TwinCAT name the count so); any other expression is one element (see [`Ctx::init_expr`]).
+    pub fn array_element(&mut self, e: BoundExpr, l: usize, r: usize) -> ArrayInitElement {
+        let count = match &e {
+            BoundExpr::Call(name, args, _) if args.len() == 1 => {
+                match self.consts.get(&name.name.to_ascii_uppercase()) {
+                    Some(ConstNum::Int(n)) => u32::try_from(*n).ok(),
+                    _ => None,
+                }
+            }
+            _ => None,
+        };
+        let (repeat, value) = match (count, e) {
+            (Some(n), mut e) => {
+                let arg = match &mut e {
+                    BoundExpr::Call(_, args, _) => args.pop(),
+                    _ => None,
+                };
+                (Some(n), arg.unwrap_or(BoundExpr::Int(0, self.span(l, r))))
+            }
+            (None, e) => (None, e),
+        };
+        ArrayInitElement {
+            repeat,
+            value: self.init_expr(value, l, r),
+        }
+    }
+
     /// Evaluates `e` (see [`Ctx::bound`]); `dint`: the value must fit a DINT (a bound, a length),
     /// else a LINT.
     fn const_expr(&mut self, e: BoundExpr, l: usize, r: usize, dint: bool) -> Option<i128> {

@@ -1714,6 +1714,30 @@ impl<'d> PouLowering<'d> {
                             },
                         ..
                     }] => p,
+                    // `r REF= 0;` (TwinCAT): the reference refers to nothing (`__ISVALIDREF(r)`
+                    // is FALSE), as a pointer set to 0
+                    [Arg {
+                        name: None,
+                        value:
+                            Expr {
+                                kind:
+                                    ExprKind::Literal(crate::ast::Literal {
+                                        kind: LiteralKind::Int(0),
+                                        type_prefix: None,
+                                        ..
+                                    }),
+                                ..
+                            },
+                        ..
+                    }] if name.is(super::refs::REF_ASSIGN)
+                        || name.is(super::refs::REF_ASSIGN_CALL) =>
+                    {
+                        return Some(Operand::Ref(Box::new(il::RefOperand {
+                            of: None,
+                            span: e.span,
+                            call_scoped: false,
+                        })));
+                    }
                     [Arg {
                         name: None,
                         value:
@@ -2339,6 +2363,14 @@ impl<'d> PouLowering<'d> {
         }
         let f = stdlib::function(&name.name)?;
         if f.extensible || args.iter().any(|a| a.name.is_none()) {
+            return None;
+        }
+        // a vendor's input names (`LEFT(STR := s, SIZE := 3)`, CODESYS): mapped later, not here
+        if args.iter().any(|a| {
+            a.name
+                .as_ref()
+                .is_some_and(|n| !n.is("EN") && !n.is("ENO") && f.param_index(&n.name).is_none())
+        }) {
             return None;
         }
         let given = |p: &str| {

@@ -800,6 +800,20 @@ impl<'s, 'd> Parser<'s, 'd> {
             {
                 None
             }
+            // `bExecute;` (CODESYS, TwinCAT: "the code has no effect", C0139): a warning, the
+            // statement does nothing
+            Tok::Semi => {
+                self.diags.push(
+                    Diagnostic::warning(
+                        code::W1431,
+                        format!("`{};` has no effect: it names a value and does nothing with it", self.place_text(&target)),
+                    )
+                    .at(target.span)
+                    .with_primary_label("no assignment, no call")
+                    .with_hint("assign it (`y := x;`), call it (`inst();`), or delete the statement (CODESYS and TwinCAT compile it with the same message)"),
+                );
+                Some(StmtKind::Empty)
+            }
             _ => {
                 let found = self.describe_current();
                 self.error_here(

@@ -41,7 +41,9 @@ impl PouLowering<'_> {
     /// The type name of `callee`'s instance (`uut` of `uut.M`) when no declaration of the project
     /// and no standard block has it (sema reports it E1003).
     fn undeclared_block_type(&self, callee: &Place) -> Option<Ident> {
-        let (PlaceBase::Name(n), [Accessor::Field(_)]) =
+        // (`uut.M()`, and deeper: `fbAlarm.ipArguments.Clear()` with `fbAlarm` of a library's
+        // block ladderc does not have)
+        let (PlaceBase::Name(n), [Accessor::Field(_), ..]) =
             (&callee.base, callee.accessors.as_slice())
         else {
             return None;
