@@ -23,7 +23,10 @@
 //!   DELAY)` above `VAR CONSTANT`: KimRo's Tc3_CRC, Roald87's SimRelay; before: E0022, E1025);
 //! - `SHL(1, 1)` in a constant, `[N(7)]` with a named repeat count, TwinCAT's `BIT`, `r REF= 0;`,
 //!   `bExecute;` (W1431), and a call chain on a variable of a library's block type (one E1003 for
-//!   the type; before: E0349 "is no method", the type never named).
+//!   the type; before: E0349 "is no method", the type never named);
+//! - an unknown function's call is one E1019 (before: also a W1001 "result never used" with IL's
+//!   hint, even in ST: 52 in round 20's OpenPLC files), and `TON` called as an IL operator says
+//!   it is a block type.
 
 mod common;
 use common::{check_text, column, run_traced};
@@ -614,4 +617,34 @@ END_PROGRAM
         errors[0].starts_with("chain.st:3:15: error[E1003]: unknown type `FB_TcAlarm`"),
         "{lines:?}"
     );
+}
+
+/// `PRINT('hello');` (a runtime's function ladderc does not have) is one E1019 and nothing more;
+/// `TON T1, T#5s` in IL names TON a function block type with the way to call one.
+#[test]
+fn an_unknown_function_is_one_error_and_a_block_type_is_named_so() {
+    let (code, lines) = check_text(
+        "print.st",
+        "PROGRAM main\nVAR\n  x : INT;\nEND_VAR\n  PRINT('hello');\n  x := x + 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("print.st:5:3: error[E1019]: unknown function `PRINT`"),
+        "{lines:?}"
+    );
+    let (code, lines) = check_text(
+        "ton.il",
+        "PROGRAM main\nVAR\n  run : BOOL;\n  pump : BOOL;\n  T1 : TON;\nEND_VAR\n  LD   run\n  TON  T1, T#5s\n  ST   pump\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    let e: Vec<&String> = lines.iter().filter(|l| l.contains("E1019")).collect();
+    assert_eq!(e.len(), 1, "{lines:?}");
+    assert!(
+        e[0].starts_with(
+            "ton.il:8:3: error[E1019]: `TON` is a function block type, not a function"
+        ) && e[0].contains("`CAL T1(...)` in IL"),
+        "{lines:?}"
+    );
+    assert!(!lines.iter().any(|l| l.contains("W1001")), "{lines:?}");
 }

@@ -662,7 +662,12 @@ impl Body<'_, '_> {
 
     /// Replaces the CR by a new value (warns when the old one was never used).
     pub(super) fn load(&mut self, st: &mut State, ty: Ty, at: Span) {
-        if let Some(f) = st.cr.fresh {
+        // (not after a value that is already an error: an unknown function's E1019 says it all)
+        if let Some(f) = st
+            .cr
+            .fresh
+            .filter(|_| !st.cr.ty.as_ref().is_some_and(Ty::is_error))
+        {
             self.a
                 .warning(code::W1001, f, "this result is never used")
                 .label("computed here")

@@ -481,6 +481,19 @@ impl Body<'_, '_> {
                 st.cr.fresh = None;
                 st.cr.ty = Some(Ty::ERROR);
                 return;
+            } else if let Some(Type::Fb(_)) = self.a.model.type_named(&name.name) {
+                // `TON T1, T#5s` (a simulator's IL): a block type called as a function
+                self.a
+                    .error(
+                        code::E1019,
+                        name.span,
+                        format!("`{}` is a function block type, not a function", name.name),
+                    )
+                    .label("called as a function")
+                    .hint(format!(
+                        "declare an instance (`T1 : {};`) and call it with its inputs: `CAL T1(...)` in IL, `T1(...);` in ST",
+                        name.name
+                    ));
             } else {
                 self.a
                     .error(code::E1019, name.span, format!("unknown function `{}`", name.name))
