@@ -385,6 +385,37 @@ fn an_openplc_editor_v4_project_folder_runs() {
         errors.iter().skip(1).all(|e| e.contains("step")),
         "{stderr}"
     );
+
+    // a graphical POU of the folder (declarations, JSON, then `END_PROGRAM`, as yaseralie's
+    // `main.ld`): one E1073 at the JSON (before: 7,649 errors, one per JSON line)
+    std::fs::remove_file(root.join("pous/programs/main.st")).unwrap();
+    std::fs::write(
+        root.join("pous/programs/main.ld"),
+        "PROGRAM main\nVAR\n\tLED1 : bool AT %QX100.0;\nEND_VAR\n\n{\n  \"name\": \"main\",\n  \
+         \"rungs\": [\n    {\n      \"id\": \"rung_1\",\n      \"nodes\": []\n    }\n  ]\n}\nEND_PROGRAM",
+    )
+    .unwrap();
+    let out = common::ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&root)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert!(
+        errors.iter().filter(|e| e.contains("E1073")).count() == 1
+            && errors
+                .iter()
+                .all(|e| e.contains("E1073") || e.contains("E1074")),
+        "{stderr}"
+    );
+    assert!(
+        errors
+            .iter()
+            .any(|e| e.contains("main.ld:6:1: error[E1073]")),
+        "{stderr}"
+    );
 }
 
 /// A TwinCAT project given as its solution (`.sln`), its system project (`.tsproj`) or its
@@ -578,6 +609,7 @@ VAR
     h : FB_Holder;
     ok : BOOL;
     sum : INT;
+    bit : INT;
 END_VAR
 d := CHUNK_END;
 b.Start := TRUE;
@@ -588,6 +620,7 @@ h();
 ok;
 ok := h.invalid_after;
 sum := a[1] + a[2] + a[3];
+bit := sum;
 END_PROGRAM
 ";
     let (trace, stderr) = run_text("forms20.st", src, 2, "main.d,main.n,main.ok,main.sum");
@@ -601,7 +634,7 @@ END_PROGRAM
         .collect();
     assert_eq!(warnings.len(), 1, "{stderr}");
     assert!(
-        warnings[0].contains("forms20.st:39:1: warning[W1431]: `ok;` has no effect"),
+        warnings[0].contains("forms20.st:40:1: warning[W1431]: `ok;` has no effect"),
         "{stderr}"
     );
 

@@ -841,6 +841,16 @@ impl<'s> Ctx<'s> {
         BoundExpr::Bin(b'+', Box::new(a), Box::new(b))
     }
 
+    /// A type written as a name: TwinCAT's `BIT` (a structure's or block's one-bit member) is
+    /// read as BOOL, which holds the same values (stored in a byte: SIZEOF of such a structure
+    /// differs from TwinCAT's); a variable may still be named `bit`.
+    pub fn named_type(&self, name: Ident) -> TypeRef {
+        if name.name.eq_ignore_ascii_case("BIT") {
+            return TypeRef::Named(Ident::new("BOOL", name.span));
+        }
+        TypeRef::Named(name)
+    }
+
     /// A call `F(args)` written at `l..r` in a constant expression, `F` at `l..n`. `SIZEOF(x)`: the
     /// bytes of the variable `x` declared before (in this POU, or a global of the text), else of
     /// the data type `x`, in the generated C ([`crate::type_sizes`]); `x` must be a name. Another

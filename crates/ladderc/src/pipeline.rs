@@ -1402,7 +1402,15 @@ fn openplc_v4_json_body(src: &str) -> Option<usize> {
     let end_var = upper.rfind("END_VAR")? + "END_VAR".len();
     let rest = &src[end_var..];
     let start = end_var + (rest.len() - rest.trim_start().len());
-    let body = src[start..].trim_end();
+    let mut body = src[start..].trim_end();
+    // the editor closes the POU after the JSON (`}` then `END_PROGRAM`)
+    for end in ["END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION"] {
+        let cut = body.len().saturating_sub(end.len());
+        if body.get(cut..).is_some_and(|t| t.eq_ignore_ascii_case(end)) {
+            body = body[..cut].trim_end();
+            break;
+        }
+    }
     let json = body.starts_with('{')
         && body.ends_with('}')
         && ["\"rungs\"", "\"nodes\"", "\"blocks\""]

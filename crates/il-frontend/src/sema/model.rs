@@ -126,11 +126,7 @@ impl Elementary {
         if name.eq_ignore_ascii_case("DATE_AND_TIME") {
             return Some(E::Dt);
         }
-        // TwinCAT's BIT (a structure's or block's one-bit member) holds what a BOOL holds; ladderc
-        // stores it as a BOOL (one byte: SIZEOF of such a structure differs from TwinCAT's)
-        if name.eq_ignore_ascii_case("BIT") {
-            return Some(E::Bool);
-        }
+
         Elementary::ALL
             .into_iter()
             .find(|e| e.name().eq_ignore_ascii_case(name))

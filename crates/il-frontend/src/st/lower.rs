@@ -2365,7 +2365,7 @@ impl<'d> PouLowering<'d> {
         if f.extensible || args.iter().any(|a| a.name.is_none()) {
             return None;
         }
-        // a vendor's input names (`LEFT(STR := s, SIZE := 3)`, CODESYS): mapped later, not here
+        // a name that is no input of the function: its own error, nothing added here
         if args.iter().any(|a| {
             a.name
                 .as_ref()
@@ -2373,11 +2373,18 @@ impl<'d> PouLowering<'d> {
         }) {
             return None;
         }
-        let given = |p: &str| {
-            args.iter()
-                .any(|a| a.name.as_ref().is_some_and(|n| n.is(p)))
-        };
-        let missing: Vec<&stdlib::Param> = f.params.iter().filter(|p| !given(p.name)).collect();
+        // (an input given under a vendor's name, `LEFT(STR := s, SIZE := 3)`, counts as given)
+        let given: Vec<usize> = args
+            .iter()
+            .filter_map(|a| a.name.as_ref().and_then(|n| f.param_index(&n.name)))
+            .collect();
+        let missing: Vec<&stdlib::Param> = f
+            .params
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| !given.contains(k))
+            .map(|(_, p)| p)
+            .collect();
         if missing.is_empty() {
             return None;
         }
