@@ -638,6 +638,18 @@ END_PROGRAM
         "{stderr}"
     );
 
+    // a declaration written among the statements stays an error, not a statement "with no effect"
+    let (code, lines) = check_text(
+        "stray.st",
+        "PROGRAM main\nVAR a : INT; END_VAR\na := 1;\nb : MyType;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert!(!lines.iter().any(|l| l.contains("W1431")), "{lines:?}");
+    assert!(
+        lines.iter().any(|l| l.starts_with("stray.st:4:")),
+        "{lines:?}"
+    );
+
     let (code, lines) = check_text(
         "chain.st",
         "PROGRAM main\nVAR\n    fbAlarm : FB_TcAlarm;\nEND_VAR\n\

@@ -801,8 +801,9 @@ impl<'s, 'd> Parser<'s, 'd> {
                 None
             }
             // `bExecute;` (CODESYS, TwinCAT: "the code has no effect", C0139): a warning, the
-            // statement does nothing
-            Tok::Semi => {
+            // statement does nothing (only where a statement begins: after `;`, a keyword or at
+            // the start; `x : T;` read as statements after an error stays an error)
+            Tok::Semi if self.starts_statement(&target) => {
                 self.diags.push(
                     Diagnostic::warning(
                         code::W1431,
@@ -824,6 +825,16 @@ impl<'s, 'd> Parser<'s, 'd> {
                 None
             }
         }
+    }
+
+    /// Whether `p` begins where a statement begins: the first token, or one after `;` or a
+    /// keyword (`THEN`, `ELSE`, `DO`, `END_IF` ...).
+    fn starts_statement(&self, p: &Place) -> bool {
+        let start = (p.span.start as usize).saturating_sub(self.base);
+        let Some(k) = self.toks.iter().position(|t| t.range.start == start) else {
+            return false;
+        };
+        k == 0 || matches!(self.toks[k - 1].tok, Tok::Semi | Tok::Kw(_))
     }
 
     fn place_text(&self, p: &Place) -> &'s str {
