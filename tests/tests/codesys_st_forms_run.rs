@@ -12,14 +12,7 @@
 //!   E0340).
 
 mod common;
-use common::{check_text, column, run_traced};
-
-fn run_text(name: &str, src: &str, cycles: u32, watch: &str) -> (String, String) {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join(name);
-    std::fs::write(&file, src).unwrap();
-    run_traced(&file, cycles, watch)
-}
+use common::{check_text, column, run_text};
 
 /// A label before a statement and `JMP` back to it (a loop), `JMP` out of a FOR loop and over
 /// statements: the values CODESYS gives; one W1426 per POU.

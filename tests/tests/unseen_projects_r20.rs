@@ -29,14 +29,7 @@
 //!   it is a block type.
 
 mod common;
-use common::{check_text, column, run_traced};
-
-fn run_text(name: &str, src: &str, cycles: u32, watch: &str) -> (String, String) {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join(name);
-    std::fs::write(&file, src).unwrap();
-    run_traced(&file, cycles, watch)
-}
+use common::{check_text, column, run_text, run_traced};
 
 /// `d.itf.Get()` runs the method of the instance that `d` put in its output `itf`, and writing
 /// the output itself from outside stays E1015.

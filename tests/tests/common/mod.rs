@@ -336,6 +336,14 @@ pub fn run_traced_files(files: &[&Path], cycles: u32, watch: &str) -> (String, S
     (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
 }
 
+/// [`run_traced`] of `src` written to a temporary `name`.
+pub fn run_text(name: &str, src: &str, cycles: u32, watch: &str) -> (String, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join(name);
+    std::fs::write(&file, src).unwrap();
+    run_traced(&file, cycles, watch)
+}
+
 /// `ladderc check` of `src` written to `dir/name`: exit code and the diagnostic lines (short
 /// format), with the temporary folder left out.
 pub fn check_text(name: &str, src: &str) -> (Option<i32>, Vec<String>) {
