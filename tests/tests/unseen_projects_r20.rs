@@ -26,10 +26,12 @@
 //!   the type; before: E0349 "is no method", the type never named);
 //! - an unknown function's call is one E1019 (before: also a W1001 "result never used" with IL's
 //!   hint, even in ST: 52 in round 20's OpenPLC files), and `TON` called as an IL operator says
-//!   it is a block type.
+//!   it is a block type;
+//! - corpus: FraBenni/FactoryIO-PLC's Fischertechnik test-bed cell (MIT), its ST export and its
+//!   Beremiz XML, which run to the same trace.
 
 mod common;
-use common::{check_text, column, run_text, run_traced};
+use common::{check_text, column, run_stimulated_files, run_text, run_traced};
 
 /// `d.itf.Get()` runs the method of the instance that `d` put in its output `itf`, and writing
 /// the output itself from outside stays E1015.
@@ -685,4 +687,34 @@ fn an_unknown_function_is_one_error_and_a_block_type_is_named_so() {
         "{lines:?}"
     );
     assert!(!lines.iter().any(|l| l.contains("W1001")), "{lines:?}");
+}
+
+/// FraBenni/FactoryIO-PLC's test-bed cell (MIT, `tests/corpus/FraBenni_FactoryIO-PLC_FT_con01.*`):
+/// its ST export and its Beremiz PLCopen XML give the same trace, cycle by cycle (50 ms scans):
+/// the start sensor (active low) starts the conveyor (`%QX0.4` low: on), the end sensor marks the
+/// part in transit, and 1 s (TON) later the robot moves forward and the conveyor stops.
+#[test]
+fn frabenni_test_bed_cell_runs_the_same_from_st_and_xml() {
+    let stimulus = "1,%IX0.5,FALSE\n2,%IX0.5,TRUE\n5,%IX0.4,FALSE\n6,%IX0.4,TRUE\n";
+    let watch = "%MD1,%MD3,%MD4,%QX0.2,%QX0.4";
+    let traces: Vec<String> = ["st", "xml"]
+        .iter()
+        .map(|ext| {
+            let file = common::repo_root().join(format!(
+                "tests/corpus/FraBenni_FactoryIO-PLC_FT_con01.{ext}"
+            ));
+            run_stimulated_files(&[file], &["--cycle-ms", "50"], 28, stimulus, watch).0
+        })
+        .collect();
+    assert_eq!(traces[0], traces[1]);
+    let t = &traces[0];
+    // the conveyor runs from cycle 1 (C1_working), the part is in transit from cycle 5
+    assert_eq!(column(t, "%MD1")[1], 1.0);
+    assert_eq!(column(t, "%QX0.4")[..2], [1.0, 0.0]);
+    assert_eq!(column(t, "%MD3")[4..6], [0.0, 1.0]);
+    // TON 1000 ms from cycle 5 (250 ms): done at cycle 25 (1,250 ms)
+    assert_eq!(column(t, "%MD4")[24..26], [0.0, 1.0]);
+    assert_eq!(column(t, "%QX0.2")[24..26], [1.0, 0.0]);
+    assert_eq!(column(t, "%MD1")[25], 0.0);
+    assert_eq!(column(t, "%QX0.4")[25..27], [0.0, 1.0]);
 }
