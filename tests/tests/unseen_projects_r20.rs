@@ -27,6 +27,8 @@
 //! - an unknown function's call is one E1019 (before: also a W1001 "result never used" with IL's
 //!   hint, even in ST: 52 in round 20's OpenPLC files), and `TON` called as an IL operator says
 //!   it is a block type;
+//! - a FUNCTION written inside a PROGRAM's body (Bentusi/STVM's test files): one E0106 per
+//!   nested POU, its text skipped (before: one error per line, 2,362 in one file);
 //! - corpus: FraBenni/FactoryIO-PLC's Fischertechnik test-bed cell (MIT), its ST export and its
 //!   Beremiz XML, which run to the same trace.
 
@@ -411,6 +413,8 @@ fn an_openplc_editor_v4_project_folder_runs() {
             .any(|e| e.contains("main.ld:6:1: error[E1073]")),
         "{stderr}"
     );
+    // (no note that the file was "read as IL": it was not read)
+    assert!(!stderr.contains("W0302"), "{stderr}");
 }
 
 /// A TwinCAT project given as its solution (`.sln`), its system project (`.tsproj`) or its
@@ -717,4 +721,22 @@ fn frabenni_test_bed_cell_runs_the_same_from_st_and_xml() {
     assert_eq!(column(t, "%QX0.2")[24..26], [1.0, 0.0]);
     assert_eq!(column(t, "%MD1")[25], 0.0);
     assert_eq!(column(t, "%QX0.4")[25..27], [0.0, 1.0]);
+}
+
+/// A FUNCTION written inside a PROGRAM's body is one E0106 naming it, and nothing more of it.
+#[test]
+fn a_pou_declared_inside_a_body_is_one_error() {
+    let (code, lines) = check_text(
+        "nested.st",
+        "PROGRAM main\nVAR\n    r : INT;\nEND_VAR\n\nFUNCTION Add : INT\nVAR_INPUT\n    a : INT;\n    b : INT;\nEND_VAR\n\
+         \x20   Add := a + b;\nEND_FUNCTION\n\n    r := 3;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with(
+            "nested.st:6:1: error[E0106]: FUNCTION `Add` is declared inside another POU's body"
+        ),
+        "{lines:?}"
+    );
 }

@@ -430,7 +430,8 @@ impl Session {
             }
             // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
             let src = &self.map.get(file).text;
-            if detected {
+            // (not for an OpenPLC Editor v4 graphical POU: its E1073 below says what it is)
+            if detected && openplc_v4_json_body(src).is_none() {
                 self.diags.push(
                     Diagnostic::new(
                         code::W0302,

@@ -616,6 +616,16 @@ impl<'s, 'd> Parser<'s, 'd> {
                 Some(StmtKind::Return)
             }
             Tok::Ident if self.try_word() == Some("__TRY") => self.try_stmt(),
+            // `FUNCTION Add : INT ... END_FUNCTION` written inside another POU's body (some
+            // simulators' dialects): one error, the nested text skipped to its end
+            Tok::Ident
+                if matches!(self.peek_at(1), Tok::Ident)
+                    && ["FUNCTION", "FUNCTION_BLOCK", "PROGRAM"]
+                        .iter()
+                        .any(|k| self.text(self.cur()).eq_ignore_ascii_case(k)) =>
+            {
+                return self.nested_pou(start);
+            }
             // `START:` (a jump label, CODESYS and TwinCAT): a statement of its own, no `;`
             Tok::Ident if matches!(self.peek_at(1), Tok::Colon) => {
                 let label = self.ident(self.cur());
@@ -691,6 +701,34 @@ impl<'s, 'd> Parser<'s, 'd> {
         }
         Some(Stmt {
             kind,
+            span: self.span(start, self.prev_end()),
+        })
+    }
+
+    /// A POU declared inside a body, its keyword the current token: one E0106 at the keyword,
+    /// then every token up to its `END_...` (or the end of the text) skipped; an empty statement.
+    fn nested_pou(&mut self, start: usize) -> Option<Stmt> {
+        let kw = self.text(self.cur()).to_ascii_uppercase();
+        let name = self
+            .text(&self.toks[(self.pos + 1).min(self.toks.len() - 1)])
+            .to_string();
+        self.error_here(
+            code::E0106,
+            format!("{kw} `{name}` is declared inside another POU's body"),
+            "IEC 61131-3 declares POUs one after the other: move it after the END_... of the POU that holds it",
+        );
+        let end = format!("END_{kw}");
+        while !self.at(&Tok::Eof) {
+            let t = self.bump();
+            if self.text(&t).eq_ignore_ascii_case(&end) {
+                break;
+            }
+        }
+        if self.at(&Tok::Semi) {
+            self.bump();
+        }
+        Some(Stmt {
+            kind: StmtKind::Empty,
             span: self.span(start, self.prev_end()),
         })
     }
