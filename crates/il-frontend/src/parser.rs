@@ -178,7 +178,7 @@ pub struct Ctx<'s> {
     /// The declarations being read are in a `CONSTANT` block (their integer values go to `consts`).
     pub in_constant_block: bool,
     /// The types of the variables declared so far in the POU being read, by upper-case name: what
-    /// `SIZEOF(v)` in a constant expression measures ([`Ctx::size_of`]).
+    /// `SIZEOF(v)` in a constant expression measures ([`Ctx::const_call`]).
     pub sized_vars: HashMap<String, TypeRef>,
     /// The same for the global variables declared so far in the text (kept from POU to POU).
     pub sized_globals: HashMap<String, TypeRef>,
