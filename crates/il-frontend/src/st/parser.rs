@@ -715,7 +715,7 @@ impl<'s, 'd> Parser<'s, 'd> {
         self.error_here(
             code::E0106,
             format!("{kw} `{name}` is declared inside another POU's body"),
-            "IEC 61131-3 declares POUs one after the other: move it after the END_... of the POU that holds it",
+            "IEC 61131-3 declares POUs one after the other: close the POU before it (its END_PROGRAM, END_FUNCTION_BLOCK or END_FUNCTION), or move this one after that end",
         );
         let end = format!("END_{kw}");
         while !self.at(&Tok::Eof) {
