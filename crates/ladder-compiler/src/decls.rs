@@ -108,11 +108,6 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                     span,
                 })
             }
-            // `ARRAY [0..4999] OF INT`, as OpenPLC Editor v4 writes an array variable of an ST
-            // POU into its build's plc.xml (its own compiler, matiec, reads the text as ST)
-            Some(n) if array_text(ctx, n, ctx.attr_span(t, "name")).is_some() => {
-                array_text(ctx, n, ctx.attr_span(t, "name"))
-            }
             // a type written out as the name (`ARRAY[1..N] OF T`, `STRING[20]`), as a script may
             // generate it for Beremiz, which copies the text into its ST: named in the message
             Some(n)
@@ -120,6 +115,11 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                     && n.trim().chars().count() <= 80
                     && !n.chars().any(char::is_control) =>
             {
+                // `ARRAY [0..4999] OF INT`, as OpenPLC Editor v4 writes an array variable of an
+                // ST POU into its build's plc.xml (its own compiler, matiec, reads the text as ST)
+                if let Some(array) = array_text(ctx, n, ctx.attr_span(t, "name")) {
+                    return Some(array);
+                }
                 let n = n.trim();
                 let msg = format!("<derived> type name `{n}` is not a type name");
                 let hint = if n.to_ascii_uppercase().starts_with("ARRAY") {
