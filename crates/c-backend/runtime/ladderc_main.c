@@ -656,7 +656,7 @@ int main(int argc, char **argv) {
     free(watch_copy);
     free(columns);
     if (ladderc_errors & LADDERC_ERR_DIV_ZERO) fprintf(stderr, "runtime: integer division by zero (result 0)\n");
-    if (ladderc_errors & LADDERC_ERR_RANGE) fprintf(stderr, "runtime: conversion out of range (saturated)\n");
+    if (ladderc_errors & LADDERC_ERR_RANGE) fprintf(stderr, "runtime: conversion out of range or value outside a subrange (saturated)\n");
     if (ladderc_errors & LADDERC_ERR_BOUNDS) fprintf(stderr, "runtime: array index out of range\n");
     if (ladderc_errors & LADDERC_ERR_STRING) fprintf(stderr, "runtime: string truncated\n");
     if (ladderc_errors & LADDERC_ERR_STRPOS) fprintf(stderr, "runtime: string length or position out of range\n");

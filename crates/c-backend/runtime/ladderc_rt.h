@@ -82,7 +82,7 @@ typedef struct {
 
 /* ------------------------------------------------------------------ runtime state */
 #define LADDERC_ERR_DIV_ZERO 1u /* integer DIV or MOD by zero: result 0 */
-#define LADDERC_ERR_RANGE 2u    /* REAL to integer conversion out of range or NaN: saturated */
+#define LADDERC_ERR_RANGE 2u    /* REAL to integer conversion out of range or NaN, or a value outside a subrange stored into it: saturated */
 #define LADDERC_ERR_BOUNDS 4u   /* array index out of its declared range: element 0 used instead */
 #define LADDERC_ERR_STRING 8u   /* string truncated to its capacity */
 #define LADDERC_ERR_STRPOS 16u  /* string function length or position out of range (ladderc_strings.c) */
@@ -123,6 +123,20 @@ extern uint8_t ladderc_M[LADDERC_M_SIZE];
 #define LADDERC_TM (ladderc_M + LADDERC_TM_OFFSET)
 
 /* ------------------------------------------------------------------ integer helpers (no UB) */
+/* A value stored into a subrange variable (`n : UINT(1..4)`) from anything but a value of that
+ * subrange: IEC 61131-3 makes a value outside the range an error; it is saturated to the nearer
+ * bound and sets LADDERC_ERR_RANGE. */
+static inline int64_t ladderc_subrange_i(int64_t v, int64_t lo, int64_t hi) {
+    if (v < lo) { ladderc_errors |= LADDERC_ERR_RANGE; return lo; }
+    if (v > hi) { ladderc_errors |= LADDERC_ERR_RANGE; return hi; }
+    return v;
+}
+static inline uint64_t ladderc_subrange_u(uint64_t v, uint64_t lo, uint64_t hi) {
+    if (v < lo) { ladderc_errors |= LADDERC_ERR_RANGE; return lo; }
+    if (v > hi) { ladderc_errors |= LADDERC_ERR_RANGE; return hi; }
+    return v;
+}
+
 static inline int8_t ladderc_wrap_i8(uint64_t u) {
     u &= 0xFFu;
     return u <= 0x7Fu ? (int8_t)u : (int8_t)((int)u - 256);

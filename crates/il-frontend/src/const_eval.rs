@@ -384,6 +384,10 @@ fn binary(op: u8, a: ConstNum, b: ConstNum) -> Result<ConstNum, String> {
             b'+' => int(a.checked_add(b)),
             b'-' => int(a.checked_sub(b)),
             b'*' => int(a.checked_mul(b)),
+            // AND, OR, XOR of a data type's named values (`White := Red OR Green`)
+            b'&' => int(Some(a & b)),
+            b'|' => int(Some(a | b)),
+            b'^' => int(Some(a ^ b)),
             _ if b == 0 => by_zero(),
             b'/' => int(a.checked_div(b)),
             _ => int(a.checked_rem(b)),
@@ -414,6 +418,7 @@ fn binary(op: u8, a: ConstNum, b: ConstNum) -> Result<ConstNum, String> {
                 b'*' => real(a * b),
                 b'/' if b == 0.0 => by_zero(),
                 b'/' => real(a / b),
+                b'&' | b'|' | b'^' => Err("AND, OR and XOR take integers".into()),
                 _ => Err("MOD takes integers".into()),
             }
         }

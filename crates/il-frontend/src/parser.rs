@@ -1139,6 +1139,43 @@ impl<'s> Ctx<'s> {
         })
     }
 
+    /// The values of an enumeration or of a data type with named values, in order: a value given
+    /// as a constant expression is evaluated with the values named before it known by their names
+    /// (`White := Red OR Green OR Blue`, IEC 61131-3 ed. 3, Table 11), and with the constants
+    /// declared before; one that has no value is E0022 (and numbered as if it were left out).
+    pub fn enum_values(
+        &mut self,
+        raw: Vec<(Ident, Option<(BoundExpr, usize, usize)>)>,
+    ) -> Vec<EnumValue> {
+        let mut values: Vec<EnumValue> = Vec::with_capacity(raw.len());
+        // the constants the values shadow while the list is read, restored after it
+        let mut shadowed: Vec<(String, Option<ConstNum>)> = Vec::new();
+        let mut next = 0i128;
+        for (name, expr) in raw {
+            let value = match expr {
+                None => None,
+                Some((BoundExpr::Int(v, _), _, _)) => Some(v),
+                Some((e, l, r)) => self.const_expr(e, l, r, false),
+            };
+            let number = value.unwrap_or(next);
+            next = number.saturating_add(1);
+            let key = name.name.to_ascii_uppercase();
+            if !shadowed.iter().any(|(k, _)| *k == key) {
+                let before = self.consts.get(&key).copied();
+                shadowed.push((key.clone(), before));
+            }
+            self.consts.insert(key, ConstNum::Int(number));
+            values.push(EnumValue { name, value });
+        }
+        for (key, before) in shadowed {
+            match before {
+                Some(v) => self.consts.insert(key, v),
+                None => self.consts.remove(&key),
+            };
+        }
+        values
+    }
+
     /// Checks the base type of an edition-3 data type with named values (`INT (Low := 1, High := 100)`,
     /// IEC 61131-3 6.4.4.3): it must be an elementary integer or bit-string type, else error E0011 at
     /// the base type's name. The values are kept as an enumeration's; the base type is not.

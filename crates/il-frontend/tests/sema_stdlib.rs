@@ -41,7 +41,9 @@ fn the_catalogue_lists_the_iec_functions() {
 
 #[test]
 fn every_standard_function_is_callable_on_its_class() {
-    for f in stdlib::FUNCTIONS {
+    // `TIME()`, without inputs, is called in ST (tests/tests/unseen_projects_r21.rs): an IL call
+    // gives the current result as the first input
+    for f in stdlib::FUNCTIONS.iter().filter(|f| !f.params.is_empty()) {
         let mut vars = String::new();
         let mut args = Vec::new();
         let mut first = None;

@@ -418,6 +418,7 @@ impl<'a> Gen<'a> {
                 } else {
                     convert(&cr, ty, place.ty())
                 };
+                let v = into_subrange(v, ty, place.ty());
                 self.store_line(b, &place, &v);
             }
             Op::S | Op::R => {
@@ -877,5 +878,32 @@ fn lower_op(name: &str) -> std::borrow::Cow<'static, str> {
     match known.iter().find(|(n, _)| *n == name) {
         Some((_, l)) => (*l).into(),
         None => name.to_ascii_lowercase().into(),
+    }
+}
+
+/// A value of type `from` stored into a place of type `to`: when `to` is a subrange and `from` is
+/// not that subrange (`n := n * 5`, a UINT result into a `UINT(1..4)`), the value saturated to the
+/// range with the runtime's range flag (IEC 61131-3 makes a value outside a subrange an error); a
+/// value of the subrange itself (a literal checked against it, another variable of it) stays.
+fn into_subrange(v: String, from: &Type, to: &Type) -> String {
+    let Type::Subrange { base, lower, upper } = to else {
+        return v;
+    };
+    if from == to {
+        return v;
+    }
+    let ct = ctypes::elementary(*base);
+    if base.is_signed() {
+        cfmt!(
+            "(({ct})ladderc_subrange_i((int64_t)({v}), INT64_C({}), INT64_C({})))",
+            **lower,
+            **upper
+        )
+    } else {
+        cfmt!(
+            "(({ct})ladderc_subrange_u((uint64_t)({v}), UINT64_C({}), UINT64_C({})))",
+            **lower,
+            **upper
+        )
     }
 }

@@ -81,6 +81,13 @@ impl Body<'_, '_> {
                         Ty::Known(t) if c == Class::AnyReal => {
                             known.push((implicit_real(&t).unwrap_or(t), *span))
                         }
+                        // IEC 61131-3 (ed. 3, 6.4.4.2): a subrange value takes part in an
+                        // operation as its base type, so a literal beside it (`n * 5` of a
+                        // UINT(1..4)) is a UINT, not a value of the subrange; MOVE, SEL and MUX
+                        // (ANY) keep the subrange
+                        Ty::Known(Type::Subrange { base, .. }) if c != Class::Any => {
+                            known.push((Type::Elementary(base), *span))
+                        }
                         Ty::Known(t) => known.push((t, *span)),
                         Ty::Lit(v) => lit_args.push((v, *span)),
                     }
@@ -814,10 +821,21 @@ impl Body<'_, '_> {
                     ins.len() != n
                 };
                 if bad {
-                    let cr_note = if formal {
+                    let cr_note = if formal || n == 0 {
                         ""
                     } else {
                         " (the current result is the first)"
+                    };
+                    let hint = if n == 0 {
+                        format!("call it without inputs: `{}()`", f.name)
+                    } else {
+                        format!(
+                            "inputs: {}",
+                            (0..n)
+                                .map(|i| f.param_name(i))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        )
                     };
                     self.a
                         .error(
@@ -831,13 +849,7 @@ impl Body<'_, '_> {
                             ),
                         )
                         .label("wrong number of inputs")
-                        .hint(format!(
-                            "inputs: {}",
-                            (0..n)
-                                .map(|i| f.param_name(i))
-                                .collect::<Vec<_>>()
-                                .join(", ")
-                        ));
+                        .hint(hint);
                     return Ty::ERROR;
                 }
                 ins

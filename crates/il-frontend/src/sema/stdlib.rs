@@ -277,6 +277,9 @@ pub static FUNCTIONS: &[StdFunction] = &[
     f("DIV_TIME", TIME_NUM, false, Ret::Fixed(E::Time), "TIME / ANY_NUM (0 for a zero divisor)"),
     f("DIV_LTIME", LTIME_NUM, false, Ret::Fixed(E::Ltime), "LTIME / ANY_NUM (0 for a zero divisor)"),
     f("CONCAT_DATE_TOD", &fx2(E::Date, E::Tod), false, Ret::Fixed(E::Dt), "the DT of a DATE at a TOD"),
+    // CODESYS and TwinCAT: `TIME()` is the time since the controller started (here the scan
+    // clock, the time of the current cycle, as the timers read it)
+    f("TIME", &[], false, Ret::Fixed(E::Time), "the time since start (the scan clock; CODESYS, TwinCAT)"),
     // edition 3 (Table 37): dates and times from their parts; an invalid part gives 0 and the range flag
     f(
         "CONCAT_DATE",
