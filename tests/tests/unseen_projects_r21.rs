@@ -8,10 +8,27 @@
 //!   "unknown function `TIME`"): the scan clock, as the timers read it;
 //! - a data type with named values whose values are constant expressions of the values before
 //!   them (IEC 61131-3 ed. 3, Table 11's own `White := Red OR Green OR Blue`; KrystianOlszowy's
-//!   test.st; before: E0011 "unexpected `Red`, expected a number").
+//!   test.st; before: E0011 "unexpected `Red`, expected a number");
+//! - an index that mixes integer types (`a[i - lb]` of an INT and a DINT), as the index of an
+//!   `ARRAY [*]` in-out always does (`Park[i]` with `i : INT`: TomF777's CarPark3D; before: a false
+//!   E1006 "cannot store DINT into INT");
+//! - a TwinCAT PROPERTY whose declaration ends in a `//` comment (`PROPERTY P_Free : INT // number
+//!   of free places`, TomF777's CarPark3D; before: E0100 "this PROPERTY cannot be read", the
+//!   `GET` that ladderc writes after the declaration landed inside the comment);
+//! - `{attribute 'hide'}` among a METHOD's `VAR_INST` declarations (CHALET_Base; before: E0001
+//!   "unexpected character `{`", the declarations after it lost);
+//! - `TO_TIME(0)`, `UDINT_TO_TIME(1000)`, `TIME_TO_DINT(T#1S500MS)` in a constant (before:
+//!   E0022 "computed at run time");
+//! - `[N(FALSE)]`, a named repeat count of a BOOL or a string (Mem1; before: E0011);
+//! - a TwinCAT PROGRAM with an ACTION written before a METHOD (ISIS DrivePLC; before: E1019
+//!   "unknown function" at each call of the method);
+//! - a program's action named as a global of a `qualified_only` list (`AXES();` beside
+//!   `GVL.axes`), an enumeration named as such a global (`MachineMode.Auto` beside
+//!   `GVL.machineMode`), and a method called through a list (`GVL.fbA.SignalEnable(...)`)
+//!   (SWTest, ISIS; before: E1018, E1021, E1011).
 
 mod common;
-use common::{rejected_heads, run_text};
+use common::{rejected_heads, run_text, run_traced_files};
 
 /// Operations on a subrange value take its base type: the literals beside it are not checked
 /// against the range, the results are exact, and a result stored back into the subrange that
@@ -148,4 +165,247 @@ END_PROGRAM
         heads,
         ["bad.st:1:28: error[E0022]: constant expression `A OR x`: `x` is not an integer constant declared before"]
     );
+}
+
+/// An index computed from an INT and a DINT is a DINT (the wider type), in a declared array, a
+/// pointer and an `ARRAY [*]` in-out indexed by an INT variable.
+#[test]
+fn an_index_of_mixed_integer_types_takes_the_wider_type() {
+    let src = "FUNCTION_BLOCK FB_Park
+VAR_IN_OUT Park : ARRAY[*] OF INT; END_VAR
+VAR_OUTPUT v : INT; END_VAR
+VAR i : INT := 2; END_VAR
+v := Park[i];
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR
+  a : ARRAY[0..3] OF INT := [1, 2, 3, 4];
+  lot : ARRAY[1..2] OF INT := [5, 6];
+  p : POINTER TO INT;
+  i : INT := 2;
+  lb : DINT := 1;
+  x : INT;
+  y : INT;
+  fb : FB_Park;
+END_VAR
+p := ADR(a);
+x := a[i - lb] + p[i + lb];
+fb(Park := lot);
+y := fb.v;
+END_PROGRAM
+";
+    let (trace, _) = run_text("index.st", src, 1, "Main.x,Main.y");
+    assert_eq!(trace, "cycle,time_ms,Main.x,Main.y\n0,0,6,6\n");
+}
+
+/// A TwinCAT property's declaration that ends in a `//` comment: the accessor is read, and
+/// `park.P_Free` gives 10 - 3.
+#[test]
+fn a_property_declaration_may_end_in_a_line_comment() {
+    let dir = tempfile::tempdir().unwrap();
+    let fb = dir.path().join("FB_Park.TcPOU");
+    std::fs::write(
+        &fb,
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1" ProductVersion="3.1.4022.18">
+  <POU Name="FB_Park" Id="{11111111-1111-1111-1111-111111111111}" SpecialFunc="None">
+    <Declaration><![CDATA[FUNCTION_BLOCK FB_Park
+VAR
+	Used : INT := 3;
+END_VAR
+]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[]]></ST>
+    </Implementation>
+    <Property Name="P_Free" Id="{22222222-2222-2222-2222-222222222222}">
+      <Declaration><![CDATA[PROPERTY P_Free : INT // number of free places (* not closed here]]></Declaration>
+      <Get Name="Get" Id="{33333333-3333-3333-3333-333333333333}">
+        <Declaration><![CDATA[VAR // none
+END_VAR
+]]></Declaration>
+        <Implementation>
+          <ST><![CDATA[P_Free := 10 - Used; // 'quoted' text]]></ST>
+        </Implementation>
+      </Get>
+    </Property>
+  </POU>
+</TcPlcObject>"#,
+    )
+    .unwrap();
+    let main = dir.path().join("MAIN.TcPOU");
+    std::fs::write(
+        &main,
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1" ProductVersion="3.1.4022.18">
+  <POU Name="MAIN" Id="{44444444-4444-4444-4444-444444444444}" SpecialFunc="None">
+    <Declaration><![CDATA[PROGRAM MAIN
+VAR
+	park : FB_Park;
+	free : INT;
+END_VAR
+]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[free := park.P_Free; // read the property]]></ST>
+    </Implementation>
+  </POU>
+</TcPlcObject>"#,
+    )
+    .unwrap();
+    let (trace, _) = run_traced_files(&[&fb, &main], 1, "MAIN.free");
+    assert_eq!(trace, "cycle,time_ms,MAIN.free\n0,0,7\n");
+}
+
+/// `{attribute 'hide'}` above a METHOD's VAR_INST variable: a note, and the variable is kept in
+/// the instance (the method counts 1, 2).
+#[test]
+fn a_pragma_among_a_methods_declarations_is_a_note() {
+    let src = "FUNCTION_BLOCK FB_A
+METHOD M : INT
+VAR_INST
+\t{attribute 'hide'}
+\tk : INT;
+END_VAR
+k := k + 1;
+M := k;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : FB_A; r : INT; END_VAR
+r := a.M();
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("hide.st", src, 2, "Main.r");
+    assert_eq!(trace, "cycle,time_ms,Main.r\n0,0,1\n1,10,2\n");
+    assert!(
+        stderr.contains("hide.st:4:2: note[W0301]: pragma `{attribute 'hide'}` is informational"),
+        "{stderr}"
+    );
+}
+
+/// Conversions to and from TIME in constants count milliseconds, as at run time.
+#[test]
+fn time_conversions_are_computed_in_constants() {
+    let src = "VAR_GLOBAL CONSTANT
+\tcMinTime : TIME := TO_TIME(0);
+\tcMinL : LTIME := TO_LTIME(2);
+\tcT : TIME := UDINT_TO_TIME(1000);
+\tcR : TIME := REAL_TO_TIME(2.5);
+\tcMs : DINT := TIME_TO_DINT(T#1S500MS);
+\tcSec : REAL := TIME_TO_REAL(T#250MS) / 1000.0;
+END_VAR
+PROGRAM Main
+VAR same : BOOL; END_VAR
+same := cT = UDINT_TO_TIME(1000) AND cR = REAL_TO_TIME(2.5) AND cMs = TIME_TO_DINT(T#1S500MS);
+END_PROGRAM
+";
+    let (trace, _) = run_text("consts.st", src, 1, "cMinTime,cMinL,cT,cR,cMs,cSec,Main.same");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,cMinTime,cMinL,cT,cR,cMs,cSec,Main.same\n0,0,T#0ms,T#2ms,T#1000ms,T#2500us,1500,0.25,1\n"
+    );
+}
+
+/// `[N(TRUE)]` and `[N('ab')]` repeat a BOOL and a string N times, N a named constant.
+#[test]
+fn a_named_repeat_count_repeats_a_bool_or_a_string() {
+    let src = "PROGRAM Main
+VAR CONSTANT
+  N : INT := 3;
+END_VAR
+VAR
+  a : ARRAY [1..N] OF BOOL := [N(TRUE)];
+  s : ARRAY [1..N] OF STRING(4) := [N('ab')];
+  b : ARRAY [1..4] OF BOOL := [N(FALSE), TRUE];
+  c : INT;
+END_VAR
+c := BOOL_TO_INT(a[1]) + BOOL_TO_INT(a[3]) + LEN(s[3]) + BOOL_TO_INT(b[4]) * 10 + BOOL_TO_INT(b[3]) * 100;
+END_PROGRAM
+";
+    let (trace, _) = run_text("repeat.st", src, 1, "Main.c");
+    assert_eq!(trace, "cycle,time_ms,Main.c\n0,0,14\n");
+}
+
+/// A TwinCAT PROGRAM whose ACTION comes before its METHOD: the action and the program's body
+/// both call the method (n counts 1 + 2 a cycle).
+#[test]
+fn a_programs_action_may_come_before_its_method() {
+    let dir = tempfile::tempdir().unwrap();
+    let main = dir.path().join("MAIN.TcPOU");
+    std::fs::write(
+        &main,
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1" ProductVersion="3.1.4022.12">
+  <POU Name="MAIN" Id="{00000000-0000-0000-0000-000000000001}" SpecialFunc="None">
+    <Declaration><![CDATA[PROGRAM MAIN
+VAR
+	n : INT;
+END_VAR]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[DOIT();
+Bump(2);]]></ST>
+    </Implementation>
+    <Action Name="DOIT" Id="{00000000-0000-0000-0000-000000000002}">
+      <Implementation>
+        <ST><![CDATA[Bump(1);]]></ST>
+      </Implementation>
+    </Action>
+    <Method Name="Bump" Id="{00000000-0000-0000-0000-000000000003}">
+      <Declaration><![CDATA[METHOD Bump : BOOL
+VAR_INPUT
+	d : INT;
+END_VAR]]></Declaration>
+      <Implementation>
+        <ST><![CDATA[n := n + d;]]></ST>
+      </Implementation>
+    </Method>
+  </POU>
+</TcPlcObject>"#,
+    )
+    .unwrap();
+    let (trace, _) = run_traced_files(&[&main], 2, "MAIN.n");
+    assert_eq!(trace, "cycle,time_ms,MAIN.n\n0,0,3\n1,10,6\n");
+}
+
+/// Names a `qualified_only` list shares with a program's action and with an enumeration: the
+/// action runs (`AXES();`), the enumerated value is read (`MachineMode.Auto`), and a method is
+/// called through the list (`GVL.fbA.SignalEnable(...)`).
+#[test]
+fn names_of_a_qualified_only_list_leave_actions_enumerations_and_methods_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let gvl = dir.path().join("GVL.st");
+    std::fs::write(
+        &gvl,
+        "{attribute 'qualified_only'}\nVAR_GLOBAL\n  axes : ARRAY [1..2] OF INT;\n  fbA : FB_Sig;\n  machineMode : MachineMode;\nEND_VAR\n",
+    )
+    .unwrap();
+    let main = dir.path().join("main.st");
+    std::fs::write(
+        &main,
+        "FUNCTION_BLOCK FB_Sig
+VAR_OUTPUT bOut : BOOL; END_VAR
+METHOD SignalEnable : BOOL
+VAR_INPUT bEn : BOOL; END_VAR
+bOut := bEn;
+SignalEnable := TRUE;
+END_METHOD
+END_FUNCTION_BLOCK
+TYPE MachineMode : (Manual, Auto); END_TYPE
+PROGRAM Main
+VAR n : INT; ok : BOOL; END_VAR
+AXES();
+GVL.axes[1] := n;
+GVL.fbA.SignalEnable(bEn := n > 1);
+GVL.machineMode := MachineMode.Auto;
+ok := GVL.fbA.bOut AND GVL.machineMode = MachineMode.Auto;
+END_PROGRAM
+ACTIONS
+ACTION AXES:
+n := n + 1;
+END_ACTION
+END_ACTIONS
+",
+    )
+    .unwrap();
+    let (trace, _) = run_traced_files(&[&gvl, &main], 2, "GVL.axes[1],Main.ok");
+    assert_eq!(trace, "cycle,time_ms,GVL.axes[1],Main.ok\n0,0,1,0\n1,10,2,1\n");
 }

@@ -61,6 +61,8 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
     // every POU's variables (upper-case names): `Table.Motor.Stop` walks into instances
     let mut pou_vars: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
     let mut globals: HashMap<String, TypeRef> = HashMap::new();
+    // the names of the named global variable lists (`GVL.fbA.M()`)
+    let mut lists: std::collections::HashSet<String> = std::collections::HashSet::new();
     // the instances of each program (upper-case type name -> instance names); without a
     // configuration every program runs as its one implicit instance
     let mut instances: HashMap<String, Vec<Ident>> = HashMap::new();
@@ -68,6 +70,9 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
         let mut add = |b: &VarBlock| {
             for v in &b.vars {
                 globals.insert(v.name.key(), v.ty.clone());
+            }
+            if let Some(list) = &b.name {
+                lists.insert(list.key());
             }
         };
         match item {
@@ -130,6 +135,7 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             let scope = Scope {
                 locals: &locals,
                 globals: &globals,
+                lists: &lists,
                 pou_vars: &pou_vars,
                 kinds: &kinds,
                 actions: &actions,
@@ -232,6 +238,8 @@ fn flag_name(action: &Ident) -> String {
 struct Scope<'a> {
     locals: &'a HashMap<String, TypeRef>,
     globals: &'a HashMap<String, TypeRef>,
+    /// The names of the named global variable lists (upper-case).
+    lists: &'a std::collections::HashSet<String>,
     /// Every POU's variables by upper-case POU and variable name.
     pou_vars: &'a HashMap<String, HashMap<String, TypeRef>>,
     kinds: &'a HashMap<String, PouKind>,
@@ -250,7 +258,15 @@ impl Scope<'_> {
             return None;
         };
         let key = instance.base.key();
-        let mut ty = self.locals.get(&key).or_else(|| self.globals.get(&key))?;
+        let (mut ty, prefix) = match self.locals.get(&key).or_else(|| self.globals.get(&key)) {
+            Some(t) => (t, prefix),
+            // `GVL.fbA.Act`: an instance of a named global variable list
+            None if self.lists.contains(&key) => match prefix.split_first()? {
+                (Accessor::Field(m), rest) => (self.globals.get(&m.key())?, rest),
+                _ => return None,
+            },
+            None => return None,
+        };
         for a in prefix {
             match (a, ty) {
                 (Accessor::Index(_), TypeRef::Array { element, .. }) => ty = element,

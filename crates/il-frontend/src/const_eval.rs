@@ -301,7 +301,13 @@ fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> 
     if args.len() != 1 {
         return Err(format!("`{f}` takes 1 argument, {} given", args.len()));
     }
-    let v = args[0];
+    // a duration to a number counts its milliseconds, as the run time converts (truncated toward
+    // zero for an integer: TIME_TO_DINT(T#1500US) = 1)
+    let v = match (args[0], e.is_duration()) {
+        (ConstNum::Duration(d), false) if e.is_real() => ConstNum::Real(d as f64 / 1e6),
+        (ConstNum::Duration(d), false) => ConstNum::Int(d / 1_000_000),
+        (v, _) => v,
+    };
     if e.is_real() {
         let x = number(v).ok_or_else(|| format!("`{f}` converts a number, not a duration"))?;
         return Ok(ConstNum::Real(if e == Elementary::Real {
@@ -309,6 +315,18 @@ fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> 
         } else {
             x
         }));
+    }
+    // a number to TIME or LTIME counts milliseconds, as the run time converts (`TO_TIME(0)`,
+    // `UDINT_TO_TIME(1000)` = T#1S); a duration stays
+    if e.is_duration() {
+        return match v {
+            ConstNum::Int(i) => duration(i.checked_mul(1_000_000)),
+            ConstNum::Real(x) => {
+                let ns = (x * 1e6).round_ties_even();
+                to_int(ns, f).and_then(|n| duration(Some(n)))
+            }
+            ConstNum::Duration(d) => duration(Some(d)),
+        };
     }
     if !(e.is_integer() || e.is_bit()) {
         return Err(format!(

@@ -933,6 +933,15 @@ impl<'s> Ctx<'s> {
         }
     }
 
+    /// `N(value)` in an array's initial value, `N` (at `l..r`) an integer constant declared
+    /// before: `N` repetitions of `value`; another name is E0022 (one element then).
+    pub fn named_repeat(&mut self, l: usize, r: usize, value: Initializer) -> ArrayInitElement {
+        let name = self.ident(l, r);
+        let repeat = self.const_expr(BoundExpr::Name(name), l, r, true);
+        let repeat = repeat.and_then(|n| u32::try_from(n).ok());
+        ArrayInitElement { repeat, value }
+    }
+
     /// Evaluates `e` (see [`Ctx::bound`]); `dint`: the value must fit a DINT (a bound, a length),
     /// else a LINT.
     fn const_expr(&mut self, e: BoundExpr, l: usize, r: usize, dint: bool) -> Option<i128> {

@@ -188,6 +188,37 @@ fn unreadable(file: FileId, el: &Element, msg: String) -> Box<Diagnostic> {
     )
 }
 
+/// Whether `line` (the start of a line) ends inside a `//` comment: a `//` outside string literals
+/// and `(* *)` comments.
+fn line_comment_open(line: &[u8]) -> bool {
+    let mut quote = None;
+    let mut block = false;
+    let mut i = 0;
+    while i < line.len() {
+        let (c, next) = (line[i], line.get(i + 1).copied());
+        match quote {
+            Some(_) if c == b'$' => i += 1, // an escape: `$'` stays in the literal
+            Some(q) if c == q => quote = None,
+            Some(_) => {}
+            None if block => {
+                if c == b'*' && next == Some(b')') {
+                    block = false;
+                    i += 1;
+                }
+            }
+            None if c == b'(' && next == Some(b'*') => {
+                block = true;
+                i += 1;
+            }
+            None if c == b'/' && next == Some(b'/') => return true,
+            None if c == b'\'' || c == b'"' => quote = Some(c),
+            None => {}
+        }
+        i += 1;
+    }
+    false
+}
+
 /// The file's text being turned into source: bytes outside the copied texts are blank.
 pub(crate) struct Source {
     bytes: Vec<u8>,
@@ -228,9 +259,21 @@ impl Source {
 
     /// Writes ` keyword` into the first blank stretch of one line between `from` and `to`; returns
     /// the offset after it, or `None` when there is no room.
+    /// A `//` comment open at `from` (a TwinCAT declaration `PROPERTY P : INT // free places`
+    /// ends so) puts the keyword on a later line.
     pub(crate) fn place(&mut self, from: usize, to: usize, keyword: &str) -> Option<usize> {
         let need = keyword.len() + 2;
         let to = to.min(self.bytes.len());
+        let from = from.min(to);
+        let line_start = self.bytes[..from]
+            .iter()
+            .rposition(|&b| b == b'\n')
+            .map_or(0, |i| i + 1);
+        let from = if line_comment_open(&self.bytes[line_start..from]) {
+            from + self.bytes[from..to].iter().position(|&b| b == b'\n')?
+        } else {
+            from
+        };
         let mut run = 0;
         for i in from..to {
             if self.bytes[i] == b' ' {

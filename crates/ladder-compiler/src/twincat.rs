@@ -401,8 +401,8 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
         ));
     };
     let header = decl.text_ref();
-    let (end_keyword, is_fb) = match first_keyword(&header).as_str() {
-        "PROGRAM" => ("END_PROGRAM", false),
+    let (end_keyword, has_methods) = match first_keyword(&header).as_str() {
+        "PROGRAM" => ("END_PROGRAM", true),
         "FUNCTION_BLOCK" => ("END_FUNCTION_BLOCK", true),
         "FUNCTION" => ("END_FUNCTION", false),
         _ => {
@@ -426,8 +426,9 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
         .iter()
         .filter(|c| matches!(c.name(), "Method" | "Action" | "Property"))
         .collect();
-    // an action that comes before a method of a function block is written as a method without
-    // parameters (the block's end must follow its last method); else actions follow the POU's end
+    // an action that comes before a method of a function block or a program is written as a
+    // method without parameters (the POU's end must follow its last method); else actions follow
+    // the POU's end
     let last_method = members
         .iter()
         .rposition(|m| m.name() != "Action")
@@ -450,7 +451,7 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                 let body = body_of(file, m, &what, false)?;
                 // the keywords go into the markup before the body's text
                 let limit = body.as_ref().map_or(next, Body::tag_end);
-                if k >= last_method || !is_fb {
+                if k >= last_method || !has_methods {
                     if !in_actions {
                         at = out
                             .place(at, limit, end_keyword)

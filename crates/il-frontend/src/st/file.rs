@@ -619,7 +619,19 @@ pub(super) fn read_member_var_blocks(
     base: usize,
     diags: &mut Diagnostics,
 ) -> (Vec<crate::ast::VarBlock>, Vec<String>) {
-    let (decls, inst_at) = var_inst_as_var(text);
+    let (mut decls, inst_at) = var_inst_as_var(text);
+    // a pragma among the declarations (`{attribute 'hide'}` above a variable): reported and
+    // blanked, as in a POU's declarations
+    for pr in lex(text).1 {
+        if let Problem::Pragma(r) = pr {
+            let pragma = text.get(r.clone()).unwrap_or("{}");
+            diags.push(pragma_diagnostic(
+                pragma,
+                Span::new(file, base + r.start, base + r.end),
+            ));
+            decls.replace_range(r.clone(), &" ".repeat(r.len()));
+        }
+    }
     let blocks = read_var_blocks(file, &decls, base, diags);
     let inst = blocks
         .iter()

@@ -102,7 +102,12 @@ impl Env<'_> {
         let (PlaceBase::Name(n), [Accessor::Field(v)]) = (&p.base, p.accessors.as_slice()) else {
             return None;
         };
-        if self.var_type(n).is_some() || self.decls.global_lists.contains_key(&n.key()) {
+        // a POU's own variable hides the type; a global of the type's name does not, where the
+        // type declares the value (TwinCAT: `MachineMode.Auto` beside a `qualified_only` list's
+        // `MachineMode`, reached as `GVL.MachineMode`)
+        let own = self.vars.contains_key(&n.key())
+            || (self.pou_kind == PouKind::Function && n == self.pou_name);
+        if own || self.decls.global_lists.contains_key(&n.key()) {
             return None;
         }
         let decl = self.decls.types.get(&n.key())?;
@@ -391,6 +396,19 @@ impl Env<'_> {
         }
     }
 
+    /// The type of an operation on `l` and `r`: of two elementary types, the one the other widens
+    /// to (`i - lb` of an INT and a DINT is a DINT, as sema types it); else as [`unify`].
+    fn common(&self, l: Ty, r: Ty) -> Ty {
+        if let (Ty::Known(a), Ty::Known(b)) = (&l, &r) {
+            if let (Some(ea), Some(eb)) = (self.elementary(a), self.elementary(b)) {
+                if ea != eb && crate::sema::typing::widens(ea, eb) {
+                    return r;
+                }
+            }
+        }
+        unify(l, r)
+    }
+
     fn binary(&self, op: BinaryOp, l: Ty, r: Ty, span: Span) -> Ty {
         use BinaryOp::*;
         match op {
@@ -415,9 +433,9 @@ impl Env<'_> {
                         }
                     }
                 }
-                unify(l, r)
+                self.common(l, r)
             }
-            Mod | And | Or | Xor => unify(l, r),
+            Mod | And | Or | Xor => self.common(l, r),
             AndThen | OrElse => Ty::Known(elem_ref(Elementary::Bool, span)),
         }
     }

@@ -332,7 +332,12 @@ impl<'d> PouLowering<'d> {
             Some(b) => ActionBody::St(b.clone()),
             None => ActionBody::Il(self.il_actions.get(&n.key())?.clone()),
         };
-        if self.env().var_type(n).is_some() || self.decls.pou(&n.name).is_some() {
+        // the POU's own variables and the POUs hide the action; a global does not (the action
+        // is the POU's own name: a TwinCAT program's action `AXES` beside a `qualified_only`
+        // list's `axes`)
+        let own = self.vars.contains_key(&n.key())
+            || (self.kind == PouKind::Function && n.is(&self.pou.name));
+        if own || self.decls.pou(&n.name).is_some() {
             return None;
         }
         Some((n.key(), body))
