@@ -25,10 +25,15 @@
 //! - a program's action named as a global of a `qualified_only` list (`AXES();` beside
 //!   `GVL.axes`), an enumeration named as such a global (`MachineMode.Auto` beside
 //!   `GVL.machineMode`), and a method called through a list (`GVL.fbA.SignalEnable(...)`)
-//!   (SWTest, ISIS; before: E1018, E1021, E1011).
+//!   (SWTest, ISIS; before: E1018, E1021, E1011);
+//! - a PLCopen block call that leaves out a required input another call of the instance binds
+//!   (`rst(Axis := ax);` then `rst(Axis := ax, Execute := go);`; before: E4023 at the first);
+//! - `check Demo.sln` from the solution's own folder (before: the `.sln` read as ST, 44 errors),
+//!   and a solution whose PLC project is missing: one E1079 at the `PrjFilePath` that names it
+//!   (robinruys/NLR_internship; before: an unlocated E9001 about the folder, exit 2).
 
 mod common;
-use common::{rejected_heads, run_text, run_traced_files};
+use common::{ladderc, rejected_heads, run_text, run_traced_files};
 
 /// Operations on a subrange value take its base type: the literals beside it are not checked
 /// against the range, the results are exact, and a result stored back into the subrange that
@@ -298,7 +303,12 @@ VAR same : BOOL; END_VAR
 same := cT = UDINT_TO_TIME(1000) AND cR = REAL_TO_TIME(2.5) AND cMs = TIME_TO_DINT(T#1S500MS);
 END_PROGRAM
 ";
-    let (trace, _) = run_text("consts.st", src, 1, "cMinTime,cMinL,cT,cR,cMs,cSec,Main.same");
+    let (trace, _) = run_text(
+        "consts.st",
+        src,
+        1,
+        "cMinTime,cMinL,cT,cR,cMs,cSec,Main.same",
+    );
     assert_eq!(
         trace,
         "cycle,time_ms,cMinTime,cMinL,cT,cR,cMs,cSec,Main.same\n0,0,T#0ms,T#2ms,T#1000ms,T#2500us,1500,0.25,1\n"
@@ -407,5 +417,115 @@ END_ACTIONS
     )
     .unwrap();
     let (trace, _) = run_traced_files(&[&gvl, &main], 2, "GVL.axes[1],Main.ok");
-    assert_eq!(trace, "cycle,time_ms,GVL.axes[1],Main.ok\n0,0,1,0\n1,10,2,1\n");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,GVL.axes[1],Main.ok\n0,0,1,0\n1,10,2,1\n"
+    );
+}
+
+/// A required input (MC_Reset's `Execute`) left out of one call of an instance and bound in
+/// another: the input keeps its value between calls, so the project checks; left out of every
+/// call it is E4023 at each.
+#[test]
+fn a_required_input_may_be_bound_by_another_call_of_the_instance() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("reset.axes.json"),
+        r#"{ "cycle_ms": 10, "axes": [ { "name": "X", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0, "link": "MAIN.ax" } ] }"#,
+    )
+    .unwrap();
+    let src = |second: &str| {
+        format!(
+            "PROGRAM MAIN\nVAR\n    ax : AXIS_REF;\n    rst : MC_Reset;\n    go : BOOL;\n    st : INT;\nEND_VAR\n\
+             rst(Axis := ax);\nCASE st OF\n0: {second}\n   IF rst.Done THEN st := 1; END_IF\nEND_CASE\nEND_PROGRAM\n"
+        )
+    };
+    let check = |text: String| {
+        let f = dir.path().join("reset.st");
+        std::fs::write(&f, text).unwrap();
+        let out = ladderc()
+            .args(["--message-format", "short", "check"])
+            .arg(&f)
+            .output()
+            .unwrap();
+        let stderr =
+            String::from_utf8_lossy(&out.stderr).replace(&format!("{}/", dir.path().display()), "");
+        (out.status.code(), stderr)
+    };
+    let (code, stderr) = check(src("rst(Axis := ax, Execute := go);"));
+    assert_eq!((code, stderr.as_str()), (Some(0), ""));
+    let (code, stderr) = check(src("rst(Axis := ax);"));
+    assert_eq!(code, Some(1), "{stderr}");
+    let heads: Vec<&str> = stderr
+        .lines()
+        .map(|l| l.split(" (hint").next().unwrap())
+        .collect();
+    assert_eq!(
+        heads,
+        [
+            "reset.st:8:1: error[E4023]: required input `Execute` of `MC_Reset` (instance `rst`) is not bound",
+            "reset.st:10:4: error[E4023]: required input `Execute` of `MC_Reset` (instance `rst`) is not bound",
+        ]
+    );
+}
+
+/// A solution given by its bare name from its own folder reads its PLC project; a solution whose
+/// PLC project is not there is one located E1079 naming it (exit 1), for the `.sln` and the
+/// `.tsproj`.
+#[test]
+fn a_solution_is_read_from_its_own_folder_and_a_missing_plc_project_is_located() {
+    let dir = tempfile::tempdir().unwrap();
+    let sln = "\nMicrosoft Visual Studio Solution File, Format Version 12.00\n\
+               Project(\"{B1E792BE-AA5F-4E3C-8C82-674BF9C0715B}\") = \"Demo\", \"Demo.tsproj\", \"{47B55B41-E449-41DF-B79A-0A3C932F2E52}\"\nEndProject\n";
+    let tsproj = "<?xml version=\"1.0\"?>\n<TcSmProject TcSmVersion=\"1.0\" TcVersion=\"3.1.4022.30\">\n\t<Project>\n\t\t<Plc>\n\t\t\t<Project Name=\"PLC\" PrjFilePath=\"PLC\\PLC.plcproj\" AmsPort=\"851\"/>\n\t\t</Plc>\n\t</Project>\n</TcSmProject>\n";
+    std::fs::write(dir.path().join("Demo.sln"), sln).unwrap();
+    std::fs::write(dir.path().join("Demo.tsproj"), tsproj).unwrap();
+    let check = |input: &str| {
+        let out = ladderc()
+            .current_dir(dir.path())
+            .args(["--message-format", "short", "check", input])
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    for input in ["Demo.sln", "Demo.tsproj"] {
+        let (code, stderr) = check(input);
+        assert_eq!(code, Some(1), "{stderr}");
+        assert_eq!(
+            stderr.lines().map(|l| l.split(" (hint").next().unwrap()).collect::<Vec<_>>(),
+            ["Demo.tsproj:5:37: error[E1079]: the solution lists PLC\\PLC.plcproj, which is not there"],
+            "{input}"
+        );
+    }
+    std::fs::create_dir(dir.path().join("PLC")).unwrap();
+    std::fs::write(
+        dir.path().join("PLC/PLC.plcproj"),
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<Project xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\n  <ItemGroup>\n    <Compile Include=\"MAIN.TcPOU\"><SubType>Code</SubType></Compile>\n  </ItemGroup>\n</Project>\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("PLC/MAIN.TcPOU"),
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  <POU Name=\"MAIN\" Id=\"{576e9352-28e5-424b-9181-de377b879873}\" SpecialFunc=\"None\">\n    <Declaration><![CDATA[PROGRAM MAIN\nVAR\n\tn : INT;\nEND_VAR\n]]></Declaration>\n    <Implementation>\n      <ST><![CDATA[n := n + 1;]]></ST>\n    </Implementation>\n  </POU>\n</TcPlcObject>\n",
+    )
+    .unwrap();
+    for input in ["Demo.sln", "Demo.tsproj"] {
+        let out = ladderc()
+            .current_dir(dir.path())
+            .args(["run", input, "--cycles", "2", "--trace", "-"])
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert_eq!(
+            String::from_utf8_lossy(&out.stdout),
+            "cycle,time_ms,MAIN.n\n0,0,1\n1,10,2\n"
+        );
+    }
 }

@@ -46,9 +46,14 @@ pub fn expand(
     for p in paths {
         // a Visual Studio solution (`.sln`) or TwinCAT system project (`.tsproj`) stands for the
         // folder that holds it: its PLC project is looked for there, as for a folder
+        // (`Demo.sln` given from its own folder has the empty path as its parent)
         let holder = (has_extension(p, "sln") || has_extension(p, "tsproj"))
-            .then(|| p.parent().unwrap_or(Path::new(".")).to_path_buf())
+            .then(|| match p.parent() {
+                Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+                _ => PathBuf::from("."),
+            })
             .filter(|d| session.disk && d.is_dir());
+        let input = p;
         let p = holder.as_ref().unwrap_or(p);
         let project = if has_extension(p, "plcproj") {
             Some(p.clone())
@@ -121,10 +126,87 @@ pub fn expand(
                 // reading it as an input reports the error
                 Err(_) => out.push(project),
             },
-            None => out.push(p.clone()),
+            None => {
+                // a solution whose PLC project is not there: E1079 at each `PrjFilePath` of its
+                // system projects that names no file
+                if let Some(dir) = &holder {
+                    if missing_plc_projects(session, paths_given(input, dir), dir, diags) {
+                        continue;
+                    }
+                }
+                out.push(p.clone())
+            }
         }
     }
     out
+}
+
+/// The `.tsproj` files a solution input stands for: the input itself, or those a `.sln` names.
+fn paths_given(input: &Path, dir: &Path) -> Vec<PathBuf> {
+    if has_extension(input, "tsproj") {
+        return vec![input.to_path_buf()];
+    }
+    let Ok(text) = std::fs::read_to_string(input) else {
+        return Vec::new();
+    };
+    text.split('"')
+        .filter(|part| part.to_ascii_lowercase().ends_with(".tsproj"))
+        .map(|part| {
+            let part = part.replace('\\', "/");
+            if dir == Path::new(".") {
+                PathBuf::from(part)
+            } else {
+                dir.join(part)
+            }
+        })
+        .collect()
+}
+
+/// Reports (E1079) each PLC project (`<Project ... PrjFilePath="PLC\PLC.plcproj">`) that the
+/// system projects `tsprojs` name and that is not in `dir`; whether one was reported.
+fn missing_plc_projects(
+    session: &mut Session,
+    tsprojs: Vec<PathBuf>,
+    dir: &Path,
+    diags: &mut Diagnostics,
+) -> bool {
+    let mut reported = false;
+    for ts in tsprojs {
+        let Ok(text) = std::fs::read_to_string(&ts) else {
+            continue;
+        };
+        let key = "PrjFilePath=\"";
+        let mut file = None;
+        let mut from = 0;
+        while let Some(k) = text[from..].find(key) {
+            let start = from + k + key.len();
+            let Some(len) = text[start..].find('"') else {
+                break;
+            };
+            from = start + len;
+            let listed = &text[start..start + len];
+            let path = dir.join(listed.replace('\\', "/"));
+            if !has_extension(&path, "plcproj") || path.is_file() {
+                continue;
+            }
+            let file = *file.get_or_insert_with(|| {
+                session
+                    .map
+                    .add_file_owned(ts.display().to_string(), text.clone())
+            });
+            diags.push(
+                Diagnostic::error(
+                    code::E1079,
+                    format!("the solution lists {listed}, which is not there"),
+                )
+                .at(Span::new(file, start, start + len))
+                .with_primary_label("listed here")
+                .with_hint("restore the PLC project (e.g. from version control), or give its .plcproj file"),
+            );
+            reported = true;
+        }
+    }
+    reported
 }
 
 /// Whether a `.plcproj` is a library's project: TwinCAT writes the library's properties

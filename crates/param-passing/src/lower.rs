@@ -568,7 +568,8 @@ fn check_call(
             );
         }
     }
-    // A required input must be bound in the call or stored into the instance beforehand (`ST mv.Position`).
+    // A required input must be bound in the call, in another call of the instance, or stored into
+    // the instance (`ST mv.Position`).
     let stored = stored_fields(&pou.body, &instance.base);
     for p in t.params.iter().filter(|p| p.required) {
         let bound = formal.iter().any(|a| a.name.is(&p.name));
@@ -588,7 +589,8 @@ fn check_call(
     }
 }
 
-/// The fields of instance `inst` that `body` stores into (whole, or an element of an array field).
+/// The fields of instance `inst` that `body` stores into (whole, or an element of an array field)
+/// or binds in a call of it.
 fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
     let mut out = Vec::new();
     for s in body {
@@ -611,6 +613,18 @@ fn stored_fields(body: &[IlStmt], inst: &Ident) -> Vec<String> {
                     out.push(f.name.clone());
                 }
             }
+            // another call of the instance that binds the input: an input a call leaves out keeps
+            // the value the last call gave it (IEC 61131-3, 6.6.3.4: `rst(Axis := ax);` before
+            // `rst(Axis := ax, Execute := go);`)
+            InstrKind::Call {
+                instance,
+                args: CallArgs::Formal(f),
+                ..
+            } if instance.base == *inst => out.extend(
+                f.iter()
+                    .filter(|a| a.dir == ArgDir::Input)
+                    .map(|a| a.name.name.clone()),
+            ),
             InstrKind::Deferred { body, .. } => out.extend(stored_fields(body, inst)),
             _ => {}
         }
